@@ -1,0 +1,48 @@
+# qdot: thin wrapper over CMake.  `make demo` and `make test` do all set-up.
+PREFIX ?= /usr/local
+JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE  ?= cmake
+
+.PHONY: all deps build demo test test-asan bench install clean
+
+all: build
+
+build/Makefile:
+	./scripts/deps.sh build
+	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=ON
+
+build: build/Makefile
+	$(CMAKE) --build build -j $(JOBS)
+
+demo:
+	./scripts/deps.sh build
+	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=OFF
+	$(CMAKE) --build build -j $(JOBS) --target qdot_cli
+	./build/qdot tour
+
+# Every test twice: a normal build, then AddressSanitizer + UBSan (any report fails).
+test:
+	./scripts/deps.sh test
+	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=ON
+	$(CMAKE) --build build -j $(JOBS)
+	cd build && ctest --output-on-failure -j $(JOBS)
+	$(MAKE) test-asan
+
+test-asan:
+	$(CMAKE) -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DQDOT_SANITIZE=ON -DQDOT_TESTS=ON
+	$(CMAKE) --build build-asan -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --output-on-failure -j $(JOBS) -LE nosan
+
+bench:
+	./scripts/deps.sh bench
+	$(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DQDOT_TESTS=OFF -DQDOT_BENCH=ON
+	$(CMAKE) --build build-bench -j $(JOBS)
+	./bench/run_kernel.sh build-bench
+
+install: build
+	$(CMAKE) --install build --prefix $(PREFIX)
+
+clean:
+	rm -rf build build-asan build-bench

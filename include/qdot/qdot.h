@@ -1,0 +1,15 @@
+/*
+ * qdot/qdot.h - everything of libqdot in one include.
+ */
+#ifndef QDOT_QDOT_H
+#define QDOT_QDOT_H
+
+#include "status.h"
+#include "expr.h"
+#include "print.h"
+#include "read.h"
+#include "eval.h"
+
+#define QDOT_VERSION "0.1.0"
+
+#endif

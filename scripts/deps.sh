@@ -1,0 +1,30 @@
+#!/bin/sh
+# Install the Debian packages qdot builds, tests and benchmarks with.
+# Usage: scripts/deps.sh [build|test|bench]   (each includes the ones before)
+# As root it runs apt-get; otherwise it prints the one line to run.
+set -e
+what=${1:-build}
+pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev"
+case $what in
+  test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy" ;;
+esac
+case $what in
+  bench) pkgs="$pkgs g++ libginac-dev" ;;
+esac
+
+missing=""
+for p in $pkgs; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "qdot needs these Debian packages:$missing" >&2
+  echo "run: sudo apt-get install -y$missing" >&2
+  exit 1
+fi
+echo "installing:$missing"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+# shellcheck disable=SC2086
+apt-get install -y -qq --no-install-recommends $missing >/dev/null

@@ -1,0 +1,50 @@
+/* src/base/arena.c - see arena.h. */
+#include "arena.h"
+
+#include <stdlib.h>
+#include <stdalign.h>
+#include <stdint.h>
+
+#define QD_ARENA_BLOCK (64u * 1024u)
+
+struct qd_arena_block {
+    qd_arena_block *next;
+    size_t cap;
+    alignas(max_align_t) unsigned char data[];
+};
+
+void qd_arena_init(qd_arena *a) {
+    a->head = NULL;
+    a->used = 0;
+    a->total = 0;
+}
+
+void *qd_arena_alloc(qd_arena *a, size_t size) {
+    const size_t align = alignof(max_align_t);
+    size = (size + align - 1) & ~(align - 1);
+    if (!a->head || a->head->cap - a->used < size) {
+        /* Oversized requests get a block of their own size. */
+        size_t cap = size > QD_ARENA_BLOCK ? size : QD_ARENA_BLOCK;
+        qd_arena_block *b = malloc(sizeof *b + cap);
+        if (!b)
+            return NULL;
+        b->cap = cap;
+        b->next = a->head;
+        a->head = b;
+        a->used = 0;
+    }
+    void *p = a->head->data + a->used;
+    a->used += size;
+    a->total += size;
+    return p;
+}
+
+void qd_arena_free(qd_arena *a) {
+    qd_arena_block *b = a->head;
+    while (b) {
+        qd_arena_block *next = b->next;
+        free(b);
+        b = next;
+    }
+    qd_arena_init(a);
+}

@@ -1,0 +1,25 @@
+/*
+ * src/base/arena.h - a bump allocator: many small allocations, one free.
+ *
+ * The symbolic context puts every node here; nodes live as long as the
+ * context, so there is no per-node free and no fragmentation.
+ */
+#ifndef QD_BASE_ARENA_H
+#define QD_BASE_ARENA_H
+
+#include <stddef.h>
+
+typedef struct qd_arena_block qd_arena_block;
+
+typedef struct qd_arena {
+    qd_arena_block *head;
+    size_t used;       /* bytes used in head */
+    size_t total;      /* bytes handed out over all blocks */
+} qd_arena;
+
+void qd_arena_init(qd_arena *a);
+/* size bytes aligned for any object; NULL when out of memory. */
+void *qd_arena_alloc(qd_arena *a, size_t size);
+void qd_arena_free(qd_arena *a);
+
+#endif

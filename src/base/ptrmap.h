@@ -1,0 +1,35 @@
+/*
+ * src/base/ptrmap.h - a hash map from pointers to pointers.
+ *
+ * The memo of every DAG walk (derivative, substitution, evaluation,
+ * printing): each shared node is visited once because its result is found
+ * here the second time.
+ */
+#ifndef QD_BASE_PTRMAP_H
+#define QD_BASE_PTRMAP_H
+
+#include <stddef.h>
+#include <stdbool.h>
+
+typedef struct qd_ptrmap_slot {
+    const void *key;
+    void *val;
+} qd_ptrmap_slot;
+
+typedef struct qd_ptrmap {
+    qd_ptrmap_slot *slots;
+    size_t cap;   /* a power of two, or 0 */
+    size_t len;
+} qd_ptrmap;
+
+#define QD_PTRMAP_INIT {NULL, 0, 0}
+
+void qd_ptrmap_free(qd_ptrmap *m);
+void qd_ptrmap_clear(qd_ptrmap *m);
+/* The value stored for key, or NULL (keys must not be NULL). */
+void *qd_ptrmap_get(const qd_ptrmap *m, const void *key);
+bool qd_ptrmap_has(const qd_ptrmap *m, const void *key);
+/* Insert or replace; false when out of memory. */
+bool qd_ptrmap_put(qd_ptrmap *m, const void *key, void *val);
+
+#endif

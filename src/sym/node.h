@@ -1,0 +1,129 @@
+/*
+ * src/sym/node.h - the expression node and the kernel's internal interface.
+ *
+ * Only src/sym/ and the modules built on it include this; everyone else sees
+ * the opaque qd_expr of include/qdot/expr.h.
+ *
+ * Node layout: a fixed header (hash, kind, a small per-kind tag, argument
+ * count), a per-kind payload, and the arguments inline after it.  Nodes are
+ * allocated from the context's arena and interned in its unique table
+ * (intern.c), so a node is never copied and never freed alone.
+ *
+ * Canonical forms, enforced by the constructors in add.c, mul.c, pow.c and
+ * func.c (docs/design.md has them with examples):
+ *   ADD  args = [c?] t1 ... tn   n >= 1, c a nonzero number first when
+ *        present; n + (c?) >= 2; no ti is a number or an ADD; ti sorted by
+ *        term key (the factors of ti without its numeric coefficient);
+ *        no two ti have the same key.
+ *   MUL  args = [c?] f1 ... fn   n >= 1, c a number != 1 first when present;
+ *        no fi is a number, a MUL; fi sorted by base, no two with one base;
+ *        never c * (single ADD) with c rational (that is distributed).
+ *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e);
+ *        not (MUL b, integer e); not (POW b, integer e).
+ */
+#ifndef QD_SYM_NODE_H
+#define QD_SYM_NODE_H
+
+#include <gmp.h>
+#include <stdarg.h>
+#include "qdot/expr.h"
+#include "../base/arena.h"
+#include "../base/ptrmap.h"
+
+struct qd_expr {
+    uint64_t hash;
+    uint8_t kind;       /* qd_kind */
+    uint8_t tag;        /* QD_FUNC: qd_func; QD_SYMBOL: qd_role; QD_CONSTANT: qd_constant */
+    uint16_t order;     /* QD_SYMBOL with role COORD: jet order */
+    uint32_t nargs;
+    union {
+        mpq_t q;        /* QD_RATIONAL */
+        double f;       /* QD_FLOAT */
+        struct {        /* QD_SYMBOL */
+            const char *name;
+            const qd_expr *coord;      /* order-0 coordinate, or the symbol itself */
+            const qd_expr *next;       /* the next jet symbol once made, else NULL */
+        } sym;
+        struct {        /* QD_UFUNC, QD_UDERIV */
+            const char *name;
+            const unsigned *slots;     /* QD_UDERIV: sorted slot list */
+            uint32_t nslots;
+        } fn;
+    } u;
+    const qd_expr *args[];
+};
+
+typedef struct qd_symtab_entry {
+    const char *name;
+    const qd_expr *sym;
+} qd_symtab_entry;
+
+struct qd_ctx {
+    qd_arena arena;
+    /* unique table: open addressing over node pointers */
+    const qd_expr **table;
+    size_t table_cap, table_len;
+    /* symbols by name */
+    qd_ptrmap symtab;            /* interned name -> its symbol */
+    const char **names;          /* interned names, open addressing */
+    size_t names_cap, names_len;
+    /* rational nodes, for mpq_clear at the end */
+    qd_expr **rationals;
+    size_t nrat, rat_cap;
+    /* a few nodes every operation uses */
+    const qd_expr *zero, *one, *minus_one, *half, *t;
+    qd_status status;
+    char message[256];
+};
+
+/* ---- intern.c --------------------------------------------------------- */
+/* Intern a node of the given kind/tag with args; the payload is compared and
+ * hashed by the kind's rules.  proto carries the payload (only the union and
+ * tag/order are read). */
+const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
+                          const qd_expr *const *args);
+const char *qd__intern_name(qd_ctx *ctx, const char *name);
+const char *qd__find_name(const qd_ctx *ctx, const char *name); /* NULL if never interned */
+void *qd__alloc(qd_ctx *ctx, size_t size);
+void qd__oom(qd_ctx *ctx);
+uint64_t qd__hash_mix(uint64_t h, uint64_t v);
+
+/* ---- number.c --------------------------------------------------------- */
+const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q);
+const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+/* a^e for numbers; NULL result with *exact=false when it does not fold. */
+const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded);
+int qd__num_cmp(const qd_expr *a, const qd_expr *b);
+bool qd__is_rational(const qd_expr *e);
+bool qd__is_float(const qd_expr *e);
+
+/* ---- cmp.c --------------------------------------------------------------- */
+/* Natural-order comparison of names: theta2 < theta10. */
+int qd__name_cmp(const char *a, const char *b);
+/* Compare two factor sequences (term keys of sums). */
+int qd__seq_cmp(const qd_expr *const *a, size_t na, const qd_expr *const *b, size_t nb);
+
+/* ---- add.c / mul.c ------------------------------------------------------ */
+/* Split a term of a sum into numeric coefficient and the factors after it. */
+const qd_expr *qd__term_coeff(qd_ctx *ctx, const qd_expr *t, const qd_expr *const **rest,
+                              size_t *nrest);
+/* Intern a product from an already canonical factor list (trusted: no checks);
+ * coeff NULL for none. */
+const qd_expr *qd__mul_raw(qd_ctx *ctx, const qd_expr *coeff, size_t n,
+                           const qd_expr *const *factors);
+/* Could -e be written more simply than e (negative coefficient leading)? */
+bool qd__has_minus(const qd_expr *e);
+
+/* ---- subs.c / evaltree.c ---------------------------------------------------- */
+/* Rebuild e with new arguments through the constructor of its kind. */
+const qd_expr *qd__rebuild(qd_ctx *ctx, const qd_expr *e, const qd_expr *const *args);
+double qd__func_value(qd_func f, double a, double b);  /* b: atan2's x */
+double qd__pow_value(double b, double e);
+
+/* ---- small helpers used across the kernel ------------------------------- */
+static inline bool qd__is_num(const qd_expr *e) {
+    return e->kind == QD_RATIONAL || e->kind == QD_FLOAT;
+}
+
+#endif
