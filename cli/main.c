@@ -1,3 +1,45 @@
-#include <stdio.h>
-#include "qdot/qdot.h"
-int main(void) { printf("qdot %s\n", QDOT_VERSION); return 0; }
+/*
+ * cli/main.c - the qdot program: finds the command and runs it.
+ */
+#include "cli.h"
+
+#include <string.h>
+
+static const qd_cmd commands[] = {
+    {"tour", "", "a one-minute tour of the symbolic kernel", qd_cmd_tour},
+    {"diff", "EXPR VAR [VAR...] [--format F]", "partial derivative (repeated for each VAR)",
+     qd_cmd_diff},
+    {"expand", "EXPR [--format F]", "distribute products and powers of sums", qd_cmd_expand},
+    {"simplify", "EXPR [--format F]", "expand, trigonometric identities, cancel, factor",
+     qd_cmd_simplify},
+    {"print", "EXPR [--format F]", "print an expression in canonical form", qd_cmd_print},
+};
+#define NCOMMANDS (sizeof commands / sizeof commands[0])
+
+static void usage(FILE *out) {
+    fprintf(out, "usage: qdot COMMAND [ARGS]\n\ncommands:\n");
+    for (size_t i = 0; i < NCOMMANDS; i++)
+        fprintf(out, "  %-9s %-32s %s\n", commands[i].name, commands[i].args, commands[i].summary);
+    fprintf(out, "\nformats (--format): text (default), latex, c, sympy\n"
+                 "Expressions use the model language's syntax: x^2*sin(q) + q'/2.\n");
+}
+
+int main(int argc, char **argv) {
+    if (argc < 2) {
+        usage(stderr);
+        return QD_EXIT_USAGE;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage(stdout);
+        return QD_EXIT_OK;
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("qdot %s\n", QDOT_VERSION);
+        return QD_EXIT_OK;
+    }
+    for (size_t i = 0; i < NCOMMANDS; i++)
+        if (!strcmp(argv[1], commands[i].name))
+            return commands[i].run(argc - 2, argv + 2);
+    qd_diag_error("unknown command '%s' (try 'qdot --help')", argv[1]);
+    return QD_EXIT_USAGE;
+}

@@ -1,0 +1,40 @@
+/*
+ * cli/cli.h - what the command files of the qdot program share.
+ *
+ * Only the program prints or exits; every command returns an exit status:
+ * 0 success, 1 failure (numerical or internal), 2 bad input or usage.
+ */
+#ifndef QDOT_CLI_H
+#define QDOT_CLI_H
+
+#include <stdio.h>
+#include "qdot/qdot.h"
+
+enum { QD_EXIT_OK = 0, QD_EXIT_FAIL = 1, QD_EXIT_USAGE = 2 };
+
+typedef struct qd_cmd {
+    const char *name;
+    const char *args;     /* usage after the name */
+    const char *summary;
+    int (*run)(int argc, char **argv);
+} qd_cmd;
+
+/* Diagnostics (diag.c): "qdot: error: ..." and the caret under a source span. */
+void qd_diag_error(const char *fmt, ...)
+#ifdef __GNUC__
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+void qd_diag_read(const char *file, const char *text, const qd_read_error *err);
+int qd_diag_ctx(const qd_ctx *ctx); /* prints the context's error, returns the exit status */
+
+/* Parse "--format NAME" values; false for an unknown name. */
+bool qd_cli_format(const char *name, qd_format *out);
+
+int qd_cmd_tour(int argc, char **argv);
+int qd_cmd_diff(int argc, char **argv);
+int qd_cmd_expand(int argc, char **argv);
+int qd_cmd_simplify(int argc, char **argv);
+int qd_cmd_print(int argc, char **argv);
+
+#endif
