@@ -83,10 +83,37 @@ static bool push(term **v, size_t *n, size_t *cap, const qd_expr *node, const qd
     return true;
 }
 
-static bool is_sorted(const term *v, size_t n) {
+/* The first i with v[i-1] > v[i], or n when v is sorted. */
+static size_t sorted_prefix(const term *v, size_t n) {
     for (size_t i = 1; i < n; i++)
         if (term_cmp(&v[i - 1], &v[i]) > 0)
-            return false;
+            return i;
+    return n;
+}
+
+/* Put v in order.  Adding a term to a long sum is the common case (sums are
+ * built one term at a time): that is two sorted runs, merged in linear time
+ * instead of sorted again. */
+static bool sort_terms(term *v, size_t n) {
+    size_t k = sorted_prefix(v, n);
+    if (k == n)
+        return true;
+    if (sorted_prefix(v + k, n - k) != n - k) {
+        qsort(v, n, sizeof *v, term_cmp);
+        return true;
+    }
+    term *tmp = malloc(n * sizeof *tmp);
+    if (!tmp)
+        return false;
+    size_t i = 0, j = k, m = 0;
+    while (i < k && j < n)
+        tmp[m++] = term_cmp(&v[j], &v[i]) < 0 ? v[j++] : v[i++];
+    while (i < k)
+        tmp[m++] = v[i++];
+    while (j < n)
+        tmp[m++] = v[j++];
+    memcpy(v, tmp, n * sizeof *v);
+    free(tmp);
     return true;
 }
 
@@ -129,8 +156,11 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
             qd__oom(ctx);
         return NULL;
     }
-    if (!is_sorted(v, len))
-        qsort(v, len, sizeof *v, term_cmp);
+    if (!sort_terms(v, len)) {
+        free(v);
+        qd__oom(ctx);
+        return NULL;
+    }
 
     /* Merge runs of one key, rebuild, drop zeros; write in place. */
     const qd_expr **out = malloc((len + 1) * sizeof *out);
