@@ -1,0 +1,84 @@
+/*
+ * qdot/model.h - the model language: a system described as on a textbook page.
+ *
+ *   coordinates theta1, theta2
+ *   parameters m1 = 1, l1 = 1, g = 9.81
+ *   x1 = l1*sin(theta1)
+ *   T = m1/2*(x1'^2 + y1'^2)
+ *   V = m1*g*y1
+ *
+ * qd_model_parse reads such a text (docs/language.md has the whole language)
+ * into a qd_model: the coordinates and parameters as kernel symbols, and the
+ * mechanical content (T, V, U, L, the dissipation function, the generalized
+ * forces) as kernel expressions in the caller's context.  The model is owned
+ * by the caller (qd_model_free); its expressions belong to the context.
+ */
+#ifndef QDOT_MODEL_H
+#define QDOT_MODEL_H
+
+#include <stddef.h>
+#include "expr.h"
+#include "print.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A located error in a model file. */
+typedef struct qd_diag {
+    size_t line, col;     /* 1-based; col counts bytes */
+    size_t offset;        /* byte offset in the text */
+    size_t length;        /* bytes the caret spans (>= 1) */
+    char message[256];
+    char hint[256];       /* "" when there is none */
+} qd_diag;
+
+/* "FILE:LINE:COL: error: MESSAGE", the source line, a caret line under the
+ * span, and "  hint: ..." when there is a hint; appended to out. */
+void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf *out);
+
+typedef struct qd_model qd_model;
+
+/* Parse a model.  NULL on error with *diag filled (diag may be NULL); a model
+ * that parses is complete and consistent (T or L given, every name known,
+ * every parameter valued).  text must stay alive while the model is used. */
+qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag);
+void qd_model_free(qd_model *m);
+
+size_t qd_model_ncoords(const qd_model *m);
+const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in declaration order */
+size_t qd_model_nparams(const qd_model *m);
+const qd_expr *qd_model_param(const qd_model *m, size_t i);
+const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its number */
+/* Give a parameter another value (the command line's --set); QD_ERR_ARG for
+ * an unknown name, with the nearest known name in the context's message. */
+qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value);
+
+/* The mechanical content; NULL where the model gives none.  lagrangian is
+ * L as given, or T - V - U. */
+const qd_expr *qd_model_kinetic(const qd_model *m);      /* T (particles, bodies and T = ...) */
+const qd_expr *qd_model_potential(const qd_model *m);    /* V */
+const qd_expr *qd_model_gen_potential(const qd_model *m);/* U, velocity-dependent */
+const qd_expr *qd_model_lagrangian(const qd_model *m);   /* L */
+bool qd_model_lagrangian_given(const qd_model *m);       /* L = ... in the text */
+const qd_expr *qd_model_dissipation(const qd_model *m);  /* Rayleigh's D */
+const qd_expr *qd_model_force(const qd_model *m, size_t i); /* Q_i (never NULL: 0 when none) */
+
+/* Initial values: the value of a coordinate (order 0) or velocity (order 1)
+ * named in `initial`, or NULL. */
+const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);
+
+/* A named definition (`x1 = ...`): its scalar value, or NULL when the name
+ * is not defined or is a vector. */
+const qd_expr *qd_model_definition(const qd_model *m, const char *name);
+
+/* Where a statement of the model stands, for errors found after parsing
+ * ("the mass matrix is singular" points at the T line).  what: "T", "V", "L",
+ * "U", "dissipation", "coordinates", or a coordinate's name.  false when the
+ * model has no such statement. */
+bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,160 @@
+/*
+ * src/model/model.c - the parsed model: storage and accessors.
+ */
+#include "parser.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+bool model_push(void **arr, size_t *n, size_t size, const void *item) {
+    /* grow by doubling; capacity is implied by n (powers of two) */
+    size_t cap = 1;
+    while (cap < *n)
+        cap *= 2;
+    if (*n == 0 || *n == cap) {
+        void *a = realloc(*arr, (*n ? 2 * cap : 4) * size);
+        if (!a)
+            return false;
+        *arr = a;
+    }
+    memcpy((char *)*arr + *n * size, item, size);
+    (*n)++;
+    return true;
+}
+
+const def *model_find_def(const qd_model *m, const char *name, size_t n) {
+    for (size_t i = m->ndefs; i-- > 0;)
+        if (strlen(m->defs[i].name) == n && memcmp(m->defs[i].name, name, n) == 0)
+            return &m->defs[i];
+    return NULL;
+}
+
+bool model_add_def(qd_model *m, const char *name, value v, size_t off, size_t len) {
+    char *copy = malloc(strlen(name) + 1);
+    if (!copy)
+        return false;
+    strcpy(copy, name);
+    def d = {copy, v, off, len};
+    if (!model_push((void **)&m->defs, &m->ndefs, sizeof d, &d)) {
+        free(copy);
+        return false;
+    }
+    return true;
+}
+
+bool model_add_where(qd_model *m, const char *what, size_t off, size_t len) {
+    where w;
+    snprintf(w.what, sizeof w.what, "%s", what);
+    w.off = off;
+    w.len = len;
+    return model_push((void **)&m->wheres, &m->nwheres, sizeof w, &w);
+}
+
+int model_coord_index(const qd_model *m, const qd_expr *sym) {
+    for (size_t i = 0; i < m->ncoords; i++)
+        if (m->coords[i] == sym)
+            return (int)i;
+    return -1;
+}
+
+void qd_model_free(qd_model *m) {
+    if (!m)
+        return;
+    for (size_t i = 0; i < m->ndefs; i++)
+        free((char *)m->defs[i].name);
+    for (size_t i = 0; i < m->nfuncs; i++)
+        free((char *)m->funcs[i]);
+    free(m->coords);
+    free(m->params);
+    free(m->pvals);
+    free(m->funcs);
+    free(m->defs);
+    free(m->Q);
+    free(m->init);
+    free(m->wheres);
+    free(m);
+}
+
+size_t qd_model_ncoords(const qd_model *m) { return m->ncoords; }
+const qd_expr *qd_model_coord(const qd_model *m, size_t i) {
+    return i < m->ncoords ? m->coords[i] : NULL;
+}
+size_t qd_model_nparams(const qd_model *m) { return m->nparams; }
+const qd_expr *qd_model_param(const qd_model *m, size_t i) {
+    return i < m->nparams ? m->params[i] : NULL;
+}
+const qd_expr *qd_model_param_value(const qd_model *m, size_t i) {
+    return i < m->nparams ? m->pvals[i] : NULL;
+}
+
+qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value) {
+    const char **names = malloc((m->nparams + 1) * sizeof *names);
+    if (!names) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return QD_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < m->nparams; i++) {
+        names[i] = qd_expr_name(m->params[i]);
+        if (!strcmp(names[i], name)) {
+            free(names);
+            if (!value || !qd_is_number(value)) {
+                qd_ctx_error(ctx, QD_ERR_ARG, "the value of '%s' must be a number", name);
+                return QD_ERR_ARG;
+            }
+            m->pvals[i] = value;
+            return QD_OK;
+        }
+    }
+    const char *near = nearest(name, strlen(name), names, m->nparams);
+    if (near)
+        qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'; did you mean '%s'?", name, near);
+    else
+        qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'", name);
+    free(names);
+    return QD_ERR_ARG;
+}
+
+const qd_expr *qd_model_kinetic(const qd_model *m) { return m->T; }
+const qd_expr *qd_model_potential(const qd_model *m) { return m->V; }
+const qd_expr *qd_model_gen_potential(const qd_model *m) { return m->U; }
+const qd_expr *qd_model_lagrangian(const qd_model *m) { return m->L; }
+const qd_expr *qd_model_dissipation(const qd_model *m) { return m->D; }
+
+bool qd_model_lagrangian_given(const qd_model *m) { return qd_model_where(m, "L", NULL); }
+
+const qd_expr *qd_model_force(const qd_model *m, size_t i) {
+    return i < m->ncoords ? m->Q[i] : NULL;
+}
+
+const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order) {
+    return coord < m->ncoords && order < 2 ? m->init[2 * coord + order] : NULL;
+}
+
+const qd_expr *qd_model_definition(const qd_model *m, const char *name) {
+    const def *d = model_find_def(m, name, strlen(name));
+    return d && !d->v.vec ? d->v.c[0] : NULL;
+}
+
+bool qd_model_where(const qd_model *m, const char *what, qd_diag *out) {
+    for (size_t i = 0; i < m->nwheres; i++) {
+        const where *w = &m->wheres[i];
+        if (strcmp(w->what, what) != 0)
+            continue;
+        if (out) {
+            memset(out, 0, sizeof *out);
+            out->offset = w->off;
+            out->length = w->len;
+            out->line = 1;
+            size_t start = 0;
+            for (size_t k = 0; k < w->off && m->text[k]; k++)
+                if (m->text[k] == '\n') {
+                    out->line++;
+                    start = k + 1;
+                }
+            out->col = w->off - start + 1;
+        }
+        return true;
+    }
+    return false;
+}

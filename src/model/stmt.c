@@ -1,0 +1,445 @@
+/*
+ * src/model/stmt.c - statements of the model language, one per line.
+ *
+ *   coordinates NAME, ...
+ *   parameters NAME = VALUE, ...
+ *   functions NAME, ...                 user-named functions: V(r)
+ *   NAME = EXPR                         a definition; T V L U dissipation are reserved
+ *   particle MASS at POSITION           adds MASS/2 |POSITION'|^2 to T
+ *   force F at POSITION                 adds Q_j = F . dPOSITION/dq_j
+ *   Q[COORD] = EXPR                     adds to the generalized force on COORD
+ *   initial NAME = VALUE, NAME' = VALUE, ...
+ */
+#include "parser.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const keywords[] = {
+    "coordinates", "parameters", "functions", "particle", "force", "initial",
+};
+#define NKEYWORDS (sizeof keywords / sizeof keywords[0])
+
+static const char *const reserved[] = {"T", "V", "L", "U", "dissipation"};
+
+static qd_ctx *C(parser *p) { return p->ctx; }
+
+static void tok_text(const parser *p, char *buf, size_t cap) {
+    size_t n = p->lx.tok.len < cap - 1 ? p->lx.tok.len : cap - 1;
+    memcpy(buf, p->lx.src + p->lx.tok.off, n);
+    buf[n] = '\0';
+}
+
+static bool end_of_statement(parser *p) {
+    tk_kind k = p->lx.tok.kind;
+    if (k == TK_NEWLINE || k == TK_EOF)
+        return true;
+    if (k == TK_RPAREN || k == TK_RBRACK)
+        return perr_tok(p, "remove it, or add the '(' it should close", "unmatched %s",
+                        tk_name(k));
+    return perr_tok(p, "one statement per line", "unexpected %s after the statement",
+                    tk_name(k));
+}
+
+/* A name not yet used for anything else. */
+static bool fresh_name(parser *p, const char *what) {
+    char name[128];
+    tok_text(p, name, sizeof name);
+    const qd_model *m = p->m;
+    const char *kind = NULL;
+    for (size_t i = 0; i < m->ncoords && !kind; i++)
+        if (!strcmp(name, qd_expr_name(m->coords[i])))
+            kind = "coordinate";
+    for (size_t i = 0; i < m->nparams && !kind; i++)
+        if (!strcmp(name, qd_expr_name(m->params[i])))
+            kind = "parameter";
+    for (size_t i = 0; i < m->nfuncs && !kind; i++)
+        if (!strcmp(name, m->funcs[i]))
+            kind = "function";
+    if (!kind && model_find_def(m, name, strlen(name)))
+        kind = "definition";
+    qd_func f;
+    if (!kind && (qd_func_from_name(name, &f) || !strcmp(name, "sqrt") || !strcmp(name, "t") ||
+                  !strcmp(name, "pi")))
+        kind = "built-in name";
+    for (size_t i = 0; i < sizeof reserved / sizeof reserved[0] && !kind; i++)
+        if (!strcmp(name, reserved[i]))
+            kind = "reserved name";
+    if (!kind)
+        return true;
+    char hint[128];
+    snprintf(hint, sizeof hint, "choose another name for the %s", what);
+    return perr_tok(p, hint, "'%s' is already a %s", name, kind);
+}
+
+/* coordinates NAME (',' NAME)* */
+static bool stmt_coordinates(parser *p) {
+    do {
+        lex_next(&p->lx);
+        if (p->lx.tok.kind != TK_IDENT)
+            return perr_tok(p, NULL, "expected a coordinate name, found %s",
+                            tk_name(p->lx.tok.kind));
+        char name[128];
+        tok_text(p, name, sizeof name);
+        for (size_t i = 0; i < p->m->ncoords; i++)
+            if (!strcmp(name, qd_expr_name(p->m->coords[i])))
+                return perr_tok(p, "each coordinate is declared once",
+                                "coordinate '%s' is declared twice", name);
+        if (!fresh_name(p, "coordinate"))
+            return false;
+        const qd_expr *q = qd_coord(C(p), name);
+        if (!q)
+            return perr_tok(p, NULL, "%s", qd_ctx_message(C(p)));
+        /* the generalized force and initial values grow with the coordinates */
+        qd_model *m = p->m;
+        const qd_expr *zero = qd_int(C(p), 0), *none = NULL;
+        size_t n = m->ncoords, nq = m->ncoords, ni = 2 * m->ncoords;
+        if (!model_push((void **)&m->coords, &n, sizeof q, &q) ||
+            !model_push((void **)&m->Q, &nq, sizeof zero, &zero) ||
+            !model_push((void **)&m->init, &ni, sizeof none, &none) ||
+            !model_push((void **)&m->init, &ni, sizeof none, &none) ||
+            !model_add_where(m, name, p->lx.tok.off, p->lx.tok.len))
+            return perr_tok(p, NULL, "out of memory");
+        m->ncoords = n;
+        lex_next(&p->lx);
+    } while (p->lx.tok.kind == TK_COMMA);
+    return end_of_statement(p);
+}
+
+/* A constant: an expression of numbers, constants and parameters, with the
+ * parameters' values put in. */
+static bool parse_constant(parser *p, const qd_expr **out, const char *what) {
+    size_t off = p->lx.tok.off;
+    if (!parse_scalar(p, out, what))
+        return false;
+    const qd_model *m = p->m;
+    *out = qd_subs(C(p), *out, m->nparams, m->params, m->pvals);
+    const qd_expr *sym;
+    if (*out && qd_free_symbols(C(p), *out, &sym, 1) > 0)
+        return perr(p, off, p->lx.tok.off - off, "a value is a number, e.g. 9.81 or pi/4",
+                    "%s must be a number, but it depends on '%s'", what, qd_expr_name(sym));
+    return *out != NULL || perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
+}
+
+/* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */
+static bool stmt_parameters(parser *p) {
+    do {
+        lex_next(&p->lx);
+        if (p->lx.tok.kind != TK_IDENT)
+            return perr_tok(p, NULL, "expected a parameter name, found %s",
+                            tk_name(p->lx.tok.kind));
+        char name[128], hint[192];
+        tok_text(p, name, sizeof name);
+        token at = p->lx.tok;
+        if (!fresh_name(p, "parameter"))
+            return false;
+        lex_next(&p->lx);
+        if (p->lx.tok.kind != TK_EQ) {
+            snprintf(hint, sizeof hint, "give a default value: %.40s = 1 (--set %.40s=... overrides it)",
+                     name, name);
+            return perr(p, at.off, at.len, hint, "parameter '%s' has no value", name);
+        }
+        lex_next(&p->lx);
+        const qd_expr *v, *sym;
+        if (!parse_constant(p, &v, "a parameter's value"))
+            return false;
+        sym = qd_param(C(p), name);
+        if (!sym)
+            return perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
+        size_t n = p->m->nparams;
+        if (!model_push((void **)&p->m->params, &n, sizeof sym, &sym) ||
+            !model_push((void **)&p->m->pvals, &p->m->nparams, sizeof v, &v))
+            return perr_tok(p, NULL, "out of memory");
+    } while (p->lx.tok.kind == TK_COMMA);
+    return end_of_statement(p);
+}
+
+/* functions NAME (',' NAME)* */
+static bool stmt_functions(parser *p) {
+    do {
+        lex_next(&p->lx);
+        if (p->lx.tok.kind != TK_IDENT)
+            return perr_tok(p, NULL, "expected a function name, found %s", tk_name(p->lx.tok.kind));
+        char name[128];
+        tok_text(p, name, sizeof name);
+        if (!fresh_name(p, "function"))
+            return false;
+        qd_func f;
+        if (qd_func_from_name(name, &f))
+            return perr_tok(p, NULL, "'%s' is a built-in function", name);
+        char *copy = malloc(strlen(name) + 1);
+        if (!copy || !model_push((void **)&p->m->funcs, &p->m->nfuncs, sizeof copy, &copy)) {
+            free(copy);
+            return perr_tok(p, NULL, "out of memory");
+        }
+        strcpy(copy, name);
+        lex_next(&p->lx);
+    } while (p->lx.tok.kind == TK_COMMA);
+    return end_of_statement(p);
+}
+
+static bool parse_vector(parser *p, value *v, const char *what) {
+    if (!parse_expr(p, v))
+        return false;
+    if (!v->vec)
+        return perr(p, v->off, v->len, "write a position as (x, y, z) or (x, y)",
+                    "a scalar where a vector is needed: %s is a vector", what);
+    return true;
+}
+
+static bool expect_at(parser *p, const char *stmt) {
+    if (lex_is(&p->lx, "at")) {
+        lex_next(&p->lx);
+        return true;
+    }
+    char hint[96];
+    snprintf(hint, sizeof hint, "write: %s", stmt);
+    return perr_tok(p, hint, "expected 'at', found %s", tk_name(p->lx.tok.kind));
+}
+
+/* particle MASS at POSITION */
+static bool stmt_particle(parser *p) {
+    lex_next(&p->lx);
+    const qd_expr *mass;
+    value r;
+    if (!parse_scalar(p, &mass, "a mass") || !expect_at(p, "particle m at (x, y, z)") ||
+        !parse_vector(p, &r, "a position"))
+        return false;
+    qd_ctx *ctx = C(p);
+    const qd_expr *v2 = ctx ? qd_int(ctx, 0) : NULL;
+    for (int i = 0; i < 3; i++)
+        v2 = qd_add(ctx, v2, qd_powi(ctx, qd_dt(ctx, r.c[i]), 2));
+    const qd_expr *t = qd_mul_n(ctx, 3, (const qd_expr *[]){qd_rat(ctx, 1, 2), mass, v2});
+    p->m->T = p->m->T ? qd_add(ctx, p->m->T, t) : t;
+    if (!p->m->T)
+        return perr(p, r.off, r.len, NULL, "%s", qd_ctx_message(ctx));
+    return end_of_statement(p);
+}
+
+/* force F at POSITION: Q_j += F . dr/dq_j (virtual work at frozen time) */
+static bool stmt_force(parser *p) {
+    lex_next(&p->lx);
+    value F, r;
+    if (!parse_vector(p, &F, "a force") || !expect_at(p, "force (Fx, Fy, Fz) at (x, y, z)") ||
+        !parse_vector(p, &r, "a position"))
+        return false;
+    qd_ctx *ctx = C(p);
+    qd_model *m = p->m;
+    for (size_t j = 0; j < m->ncoords; j++) {
+        const qd_expr *w = qd_int(ctx, 0);
+        for (int i = 0; i < 3; i++)
+            w = qd_add(ctx, w, qd_mul(ctx, F.c[i], qd_diff(ctx, r.c[i], m->coords[j])));
+        m->Q[j] = qd_add(ctx, m->Q[j], w);
+        if (!m->Q[j])
+            return perr(p, F.off, F.len, NULL, "%s", qd_ctx_message(ctx));
+    }
+    return end_of_statement(p);
+}
+
+static int coord_named(parser *p) {
+    for (size_t i = 0; i < p->m->ncoords; i++)
+        if (name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, qd_expr_name(p->m->coords[i])))
+            return (int)i;
+    return -1;
+}
+
+static bool no_such_coordinate(parser *p) {
+    char name[128], hint[192] = "";
+    tok_text(p, name, sizeof name);
+    const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
+    for (size_t i = 0; names && i < p->m->ncoords; i++)
+        names[i] = qd_expr_name(p->m->coords[i]);
+    const char *near = names ? nearest(name, strlen(name), names, p->m->ncoords) : NULL;
+    if (near)
+        snprintf(hint, sizeof hint, "did you mean '%s'?", near);
+    free(names);
+    return perr_tok(p, hint, "'%s' is not a coordinate", name);
+}
+
+/* Q '[' COORD ']' '=' EXPR */
+static bool stmt_genforce(parser *p) {
+    lex_next(&p->lx); /* Q */
+    lex_next(&p->lx); /* [ */
+    int j = coord_named(p);
+    if (p->lx.tok.kind != TK_IDENT || j < 0)
+        return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
+                                          : perr_tok(p, NULL, "expected a coordinate name");
+    lex_next(&p->lx);
+    if (p->lx.tok.kind != TK_RBRACK)
+        return perr_tok(p, "write Q[coordinate] = expression", "expected ']'");
+    lex_next(&p->lx);
+    if (p->lx.tok.kind != TK_EQ)
+        return perr_tok(p, "write Q[coordinate] = expression", "expected '='");
+    lex_next(&p->lx);
+    const qd_expr *q;
+    if (!parse_scalar(p, &q, "a generalized force"))
+        return false;
+    p->m->Q[j] = qd_add(C(p), p->m->Q[j], q);
+    return end_of_statement(p);
+}
+
+/* initial NAME ['] = VALUE (',' ...)* */
+static bool stmt_initial(parser *p) {
+    do {
+        lex_next(&p->lx);
+        int j = coord_named(p);
+        if (p->lx.tok.kind != TK_IDENT || j < 0)
+            return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
+                                              : perr_tok(p, NULL, "expected a coordinate name");
+        lex_next(&p->lx);
+        unsigned order = 0;
+        for (; p->lx.tok.kind == TK_PRIME; lex_next(&p->lx))
+            order++;
+        if (order > 1)
+            return perr_tok(p, "give positions and velocities: q = ..., q' = ...",
+                            "an initial value is for a coordinate or its velocity");
+        if (p->lx.tok.kind != TK_EQ)
+            return perr_tok(p, "write: initial q = 0.5, q' = 0", "expected '='");
+        lex_next(&p->lx);
+        const qd_expr *v;
+        if (!parse_constant(p, &v, "an initial value"))
+            return false;
+        p->m->init[2 * (size_t)j + order] = v;
+    } while (p->lx.tok.kind == TK_COMMA);
+    return end_of_statement(p);
+}
+
+static const qd_expr **reserved_slot(qd_model *m, const char *name) {
+    if (!strcmp(name, "T")) return &m->T;
+    if (!strcmp(name, "V")) return &m->V;
+    if (!strcmp(name, "L")) return &m->L;
+    if (!strcmp(name, "U")) return &m->U;
+    if (!strcmp(name, "dissipation")) return &m->D;
+    return NULL;
+}
+
+/* NAME '=' EXPR */
+static bool stmt_definition(parser *p) {
+    char name[128];
+    tok_text(p, name, sizeof name);
+    token at = p->lx.tok;
+    const qd_expr **slot = reserved_slot(p->m, name);
+    bool explicit_T = slot == &p->m->T;
+    if (!slot && !fresh_name(p, "definition"))
+        return false;
+    if (slot && (explicit_T ? qd_model_where(p->m, "T", NULL) : *slot != NULL)) {
+        qd_diag first;
+        qd_model_where(p->m, name, &first);
+        return perr(p, at.off, at.len, "give it once; add the parts in one expression",
+                    "%s is given twice (first on line %zu)", name, first.line);
+    }
+    lex_next(&p->lx); /* '=' */
+    lex_next(&p->lx);
+    p->defining = name;
+    value v;
+    bool ok = parse_expr(p, &v);
+    p->defining = NULL;
+    if (!ok)
+        return false;
+    if (slot) {
+        if (v.vec)
+            return perr(p, v.off, v.len, "an energy is a scalar: use dot(v, v) for |v|^2",
+                        "a vector where a scalar is needed: %s is a scalar", name);
+        /* particle lines and T = ... add up */
+        *slot = explicit_T && *slot ? qd_add(C(p), *slot, v.c[0]) : v.c[0];
+    } else if (!model_add_def(p->m, name, v, at.off, at.len)) {
+        return perr(p, at.off, at.len, NULL, "out of memory");
+    }
+    if (!model_add_where(p->m, name, at.off, at.len))
+        return perr(p, at.off, at.len, NULL, "out of memory");
+    return end_of_statement(p);
+}
+
+static bool unknown_statement(parser *p) {
+    char word[128], hint[192] = "";
+    tok_text(p, word, sizeof word);
+    const char *near = nearest(word, strlen(word), keywords, NKEYWORDS);
+    if (near)
+        snprintf(hint, sizeof hint, "did you mean '%s'?", near);
+    else
+        snprintf(hint, sizeof hint, "a statement starts with a keyword (coordinates, parameters, "
+                 "particle, force, initial, functions) or is a definition NAME = ...");
+    return perr_tok(p, hint, "unknown statement '%s'", word);
+}
+
+static bool statement(parser *p) {
+    lexer *lx = &p->lx;
+    if (lx->tok.kind != TK_IDENT) {
+        if (lx->tok.kind == TK_RPAREN || lx->tok.kind == TK_RBRACK)
+            return end_of_statement(p);
+        return perr_tok(p, NULL, "expected a statement, found %s", tk_name(lx->tok.kind));
+    }
+    if (lex_is(lx, "coordinates"))
+        return stmt_coordinates(p);
+    if (lex_is(lx, "parameters"))
+        return stmt_parameters(p);
+    if (lex_is(lx, "functions"))
+        return stmt_functions(p);
+    if (lex_is(lx, "particle"))
+        return stmt_particle(p);
+    if (lex_is(lx, "force"))
+        return stmt_force(p);
+    if (lex_is(lx, "initial"))
+        return stmt_initial(p);
+    /* NAME '=' or Q '[': look one token ahead without consuming */
+    lexer save = *lx;
+    lex_next(lx);
+    tk_kind next = lx->tok.kind;
+    *lx = save;
+    if (next == TK_EQ)
+        return stmt_definition(p);
+    if (next == TK_LBRACK && lex_is(lx, "Q"))
+        return stmt_genforce(p);
+    return unknown_statement(p);
+}
+
+/* After the last line: the Lagrangian and the checks that need the whole file. */
+static bool finish(parser *p) {
+    qd_model *m = p->m;
+    qd_ctx *ctx = C(p);
+    if (m->ncoords == 0)
+        return perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
+    if (!m->L && !m->T)
+        return perr(p, p->lx.tok.off, 1,
+                    "give the kinetic energy T = ... (and V = ...), or particles, or L = ...",
+                    "neither T nor L is given");
+    if (!m->L) {
+        const qd_expr *zero = qd_int(ctx, 0);
+        m->L = qd_sub(ctx, qd_sub(ctx, m->T, m->V ? m->V : zero), m->U ? m->U : zero);
+    }
+    if (!m->L)
+        return perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
+    return true;
+}
+
+qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
+    qd_model *m = calloc(1, sizeof *m);
+    if (!m) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    m->ctx = ctx;
+    m->text = text;
+    parser p = {ctx, {0}, m, diag, false, NULL};
+    lex_init(&p.lx, text);
+    while (!p.failed && p.lx.tok.kind != TK_EOF) {
+        if (p.lx.tok.kind == TK_NEWLINE) {
+            lex_next(&p.lx);
+            continue;
+        }
+        if (statement(&p) && p.lx.tok.kind == TK_NEWLINE)
+            lex_next(&p.lx);
+    }
+    if (!p.failed && p.lx.depth > 0) {
+        size_t open = p.lx.open[p.lx.depth - 1 < LEX_MAX_DEPTH ? p.lx.depth - 1 : 0];
+        perr(&p, open, 1, "every bracket opened must be closed", "unclosed '%c'", text[open]);
+    }
+    if (!p.failed)
+        finish(&p);
+    if (p.failed) {
+        qd_model_free(m);
+        return NULL;
+    }
+    return m;
+}
