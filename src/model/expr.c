@@ -2,10 +2,10 @@
  * src/model/expr.c - expressions of the model language, lowered to kernel
  * nodes as they are read.
  *
- *   sum      := product (('+' | '-') product)*
- *   product  := unary (('*' | '/') unary)*
- *   unary    := ('-' | '+') unary | power
- *   power    := postfix ('^' unary)?            right-associative: -x^2 = -(x^2)
+ *   sum      := ('-' | '+')? product (('+' | '-') product)*
+ *   product  := factor (('*' | '/') factor)*   a leading sign covers the product
+ *   factor   := ('-' | '+') factor | power
+ *   power    := postfix ('^' factor)?           right-associative: -x^2 = -(x^2)
  *   postfix  := primary ("'" | '.' ('x' | 'y' | 'z'))*
  *   primary  := number | name | name '(' args ')' | '(' sum (',' sum){0,2} ')'
  *
@@ -21,7 +21,7 @@
 #include <string.h>
 
 static bool parse_sum(parser *p, value *out);
-static bool parse_unary(parser *p, value *out);
+static bool parse_factor(parser *p, value *out);
 
 static qd_ctx *C(parser *p) { return p->ctx; }
 
@@ -79,23 +79,6 @@ static bool add_values(parser *p, value *a, const value *b, bool minus) {
     for (int i = 0; i < (a->vec ? 3 : 1); i++)
         a->c[i] = minus ? qd_sub(C(p), a->c[i], b->c[i]) : qd_add(C(p), a->c[i], b->c[i]);
     span(a, a, b);
-    return kernel_ok(p, a);
-}
-
-static bool mul_values(parser *p, value *a, const value *b, bool divide) {
-    if (divide && !need_scalar(p, b, "as a divisor"))
-        return false;
-    if (a->vec && b->vec)
-        return perr(p, b->off, b->len, "use dot(a, b) or cross(a, b)",
-                    "a vector where a scalar is needed: cannot multiply two vectors");
-    value r = a->vec || !b->vec ? *a : *b;
-    const qd_expr *s = a->vec ? b->c[0] : a->c[0];
-    for (int i = 0; i < (r.vec ? 3 : 1); i++) {
-        const qd_expr *x = r.vec ? r.c[i] : a->c[0], *y = r.vec ? s : b->c[0];
-        r.c[i] = divide ? qd_div(C(p), x, y) : qd_mul(C(p), x, y);
-    }
-    span(&r, a, b);
-    *a = r;
     return kernel_ok(p, a);
 }
 
@@ -414,7 +397,7 @@ static bool parse_postfix(parser *p, value *out) {
     }
 }
 
-/* power := postfix ('^' unary)? */
+/* power := postfix ('^' factor)? */
 static bool parse_power(parser *p, value *out) {
     if (!parse_postfix(p, out))
         return false;
@@ -422,7 +405,7 @@ static bool parse_power(parser *p, value *out) {
         return true;
     lex_next(&p->lx);
     value e;
-    if (!parse_unary(p, &e))
+    if (!parse_factor(p, &e))
         return false;
     if (!need_scalar(p, out, "as a base; |r|^2 is dot(r, r)") || !need_scalar(p, &e, "as an exponent"))
         return false;
@@ -431,41 +414,90 @@ static bool parse_power(parser *p, value *out) {
     return kernel_ok(p, out);
 }
 
-/* unary := ('-' | '+') unary | power */
-static bool parse_unary(parser *p, value *out) {
-    if (p->lx.tok.kind == TK_MINUS || p->lx.tok.kind == TK_PLUS) {
-        bool neg = p->lx.tok.kind == TK_MINUS;
-        size_t off = p->lx.tok.off;
-        lex_next(&p->lx);
-        if (!parse_unary(p, out))
-            return false;
-        for (int i = 0; neg && i < (out->vec ? 3 : 1); i++)
-            out->c[i] = qd_neg(C(p), out->c[i]);
-        out->len += out->off - off;
-        out->off = off;
-        return kernel_ok(p, out);
-    }
-    return parse_power(p, out);
+static void negate(parser *p, value *v) {
+    for (int i = 0; i < (v->vec ? 3 : 1); i++)
+        v->c[i] = qd_neg(C(p), v->c[i]);
 }
 
-/* product := unary (('*' | '/') unary)* */
-static bool parse_product(parser *p, value *out) {
-    if (!parse_unary(p, out))
+/* factor := ('-' | '+') factor | power */
+static bool parse_factor(parser *p, value *out) {
+    if (p->lx.tok.kind != TK_MINUS && p->lx.tok.kind != TK_PLUS)
+        return parse_power(p, out);
+    bool neg = p->lx.tok.kind == TK_MINUS;
+    size_t off = p->lx.tok.off;
+    lex_next(&p->lx);
+    if (!parse_factor(p, out))
         return false;
+    if (neg)
+        negate(p, out);
+    out->len += out->off - off;
+    out->off = off;
+    return kernel_ok(p, out);
+}
+
+#define MAX_FACTORS 64
+
+/* product := factor (('*' | '/') factor)*
+ * The scalar factors are multiplied in one call, as the kernel's reader does,
+ * so that 2*(a + b)*x is one product and reads back to the node it printed
+ * from (pairwise, 2*(a + b) would be distributed first). */
+static bool parse_product(parser *p, value *out) {
+    if (!parse_factor(p, out))
+        return false;
+    const qd_expr *fs[MAX_FACTORS];
+    size_t n = 0;
+    value vec = *out, first = *out;
+    bool have_vec = out->vec;
+    if (!out->vec)
+        fs[n++] = out->c[0];
     while (p->lx.tok.kind == TK_STAR || p->lx.tok.kind == TK_SLASH) {
         bool divide = p->lx.tok.kind == TK_SLASH;
         lex_next(&p->lx);
         value b;
-        if (!parse_unary(p, &b) || !mul_values(p, out, &b, divide))
+        if (!parse_factor(p, &b))
             return false;
+        if (divide && !need_scalar(p, &b, "as a divisor"))
+            return false;
+        if (b.vec && have_vec)
+            return perr(p, b.off, b.len, "use dot(a, b) or cross(a, b)",
+                        "a vector where a scalar is needed: cannot multiply two vectors");
+        if (b.vec) {
+            vec = b;
+            have_vec = true;
+        } else if (n == MAX_FACTORS) {
+            fs[0] = qd_mul_n(C(p), n, fs); /* fold, and go on */
+            n = 1;
+        }
+        if (!b.vec)
+            fs[n++] = divide ? qd_pow(C(p), b.c[0], qd_int(C(p), -1)) : b.c[0];
+        span(out, &first, &b);
     }
-    return true;
+    const qd_expr *s = qd_mul_n(C(p), n, fs);
+    value r = have_vec ? vec : *out;
+    r.vec = have_vec;
+    for (int i = 0; i < (have_vec ? 3 : 1); i++)
+        r.c[i] = have_vec ? qd_mul(C(p), s, vec.c[i]) : s;
+    r.off = out->off;
+    r.len = out->len;
+    *out = r;
+    return kernel_ok(p, out);
 }
 
-/* sum := product (('+' | '-') product)* */
+/* sum := ('-' | '+')? product (('+' | '-') product)*
+ * A leading sign applies to the whole product: -x^2*y is -(x^2*y). */
 static bool parse_sum(parser *p, value *out) {
+    bool neg = false;
+    size_t off = p->lx.tok.off;
+    if (p->lx.tok.kind == TK_MINUS || p->lx.tok.kind == TK_PLUS) {
+        neg = p->lx.tok.kind == TK_MINUS;
+        lex_next(&p->lx);
+    }
     if (!parse_product(p, out))
         return false;
+    if (neg)
+        negate(p, out);
+    out->len += out->off - off;
+    out->off = off;
     while (p->lx.tok.kind == TK_PLUS || p->lx.tok.kind == TK_MINUS) {
         bool minus = p->lx.tok.kind == TK_MINUS;
         lex_next(&p->lx);

@@ -79,7 +79,8 @@ static bool half_pi_multiple(qd_ctx *ctx, const qd_expr *a, long *k) {
     return true;
 }
 
-static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a) {
+/* The exact value of f(a) when there is a simple one; *err for log(0). */
+static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool *err) {
     if (qd_is_zero(a) && a->kind == QD_RATIONAL) {
         switch (f) {
         case QD_SIN: case QD_TAN: case QD_ASIN: case QD_ATAN: case QD_SINH:
@@ -91,6 +92,7 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a) {
             return qd_mul(ctx, ctx->half, qd_const(ctx, QD_PI));
         case QD_LOG:
             qd_ctx_error(ctx, QD_ERR_DIVZERO, "log(0) is not a number");
+            *err = true;
             return NULL;
         default:
             return NULL;
@@ -131,8 +133,9 @@ const qd_expr *qd_fn(qd_ctx *ctx, qd_func f, const qd_expr *a) {
     }
     if (a->kind == QD_FLOAT)
         return qd_float(ctx, eval1(f, a->u.f));
-    const qd_expr *v = exact_value(ctx, f, a);
-    if (v || ctx->status != QD_OK)
+    bool err = false;
+    const qd_expr *v = exact_value(ctx, f, a, &err);
+    if (v || err)
         return v;
     if (qd__has_minus(a) && (is_odd(f) || is_even(f))) {
         const qd_expr *r = qd_fn(ctx, f, qd_neg(ctx, a));

@@ -224,6 +224,39 @@ static void formatted(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* The kernel's text printer speaks the model language: 1000 random
+ * expressions printed and read back as a definition are the same node. */
+static void printed_text_reads_back(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *q = qd_coord(ctx, "q");
+    const qd_expr *syms[5] = {q, qd_jet(ctx, q, 1), qd_param(ctx, "a"), qd_param(ctx, "b"),
+                              qd_time(ctx)};
+    qt_rng r = {424242};
+    qd_buf text = QD_BUF_INIT, b = QD_BUF_INIT;
+    for (int i = 0; i < 1000; i++) {
+        const qd_expr *e = qt_random_expr(ctx, &r, syms, 5, 5, QT_ALL & ~QT_FLOAT);
+        if (i % 3 == 0)
+            e = qd_dt(ctx, e);
+        qd_buf_clear(&b);
+        assert_int_equal(qd_print(ctx, e, QD_FMT_TEXT, &b), QD_OK);
+        qd_buf_clear(&text);
+        qd_buf_printf(&text, "coordinates q\nparameters a = 1, b = 2\nE = %s\nT = q'^2\n",
+                      qd_buf_str(&b));
+        qd_diag d;
+        qd_model *m = qd_model_parse(ctx, qd_buf_str(&text), &d);
+        if (!m)
+            fail_msg("case %d: %s does not read: %zu:%zu %s", i, qd_buf_str(&b), d.line, d.col,
+                     d.message);
+        if (qd_model_definition(m, "E") != e)
+            fail_msg("case %d: %s reads back as another node", i, qd_buf_str(&b));
+        qd_model_free(m);
+    }
+    qd_buf_free(&text);
+    qd_buf_free(&b);
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(double_pendulum_meaning),
@@ -231,6 +264,7 @@ int main(void) {
         cmocka_unit_test(time_dependent),
         cmocka_unit_test(diagnostics),
         cmocka_unit_test(formatted),
+        cmocka_unit_test(printed_text_reads_back),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
