@@ -36,5 +36,7 @@ int qd_cmd_diff(int argc, char **argv);
 int qd_cmd_expand(int argc, char **argv);
 int qd_cmd_simplify(int argc, char **argv);
 int qd_cmd_print(int argc, char **argv);
+int qd_cmd_eom(int argc, char **argv);   /* cmd_eom.c */
+int qd_cmd_check(int argc, char **argv); /* cmd_check.c */
 
 #endif

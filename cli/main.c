@@ -13,6 +13,9 @@ static const qd_cmd commands[] = {
     {"simplify", "EXPR [--format F]", "expand, trigonometric identities, cancel, factor",
      qd_cmd_simplify},
     {"print", "EXPR [--format F]", "print an expression in canonical form", qd_cmd_print},
+    {"eom", "FILE [--format F] [OPTIONS]",
+     "Lagrange's equations of a model, M q'' = f", qd_cmd_eom},
+    {"check", "FILE", "validate a model and summarize it", qd_cmd_check},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

@@ -45,8 +45,9 @@ typedef enum qd_format {
 qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out);
 
 /* C for a block of n expressions: every subexpression used more than once is
- * hoisted into a `const double tK = ...;` temporary, then each output is
- * assigned as `<lhs[i]> = ...;`.  Symbols are printed by their names with
+ * hoisted into a `const double qd_tK = ...;` temporary (the prefix keeps them
+ * apart from the model's names), then each output is assigned as
+ * `<lhs[i]> = ...;`.  Symbols are printed by their names with
  * primes spelled _d, _dd (theta'' becomes theta_dd). */
 qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
                            const char *const *lhs, qd_buf *out);

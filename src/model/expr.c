@@ -444,7 +444,7 @@ static bool parse_factor(parser *p, value *out) {
 static bool parse_product(parser *p, value *out) {
     if (!parse_factor(p, out))
         return false;
-    const qd_expr *fs[MAX_FACTORS];
+    const qd_expr *fs[MAX_FACTORS] = {NULL};
     size_t n = 0;
     value vec = *out, first = *out;
     bool have_vec = out->vec;
@@ -464,12 +464,13 @@ static bool parse_product(parser *p, value *out) {
         if (b.vec) {
             vec = b;
             have_vec = true;
-        } else if (n == MAX_FACTORS) {
-            fs[0] = qd_mul_n(C(p), n, fs); /* fold, and go on */
-            n = 1;
-        }
-        if (!b.vec)
+        } else {
+            if (n == MAX_FACTORS) {
+                fs[0] = qd_mul_n(C(p), n, fs); /* fold, and go on */
+                n = 1;
+            }
             fs[n++] = divide ? qd_pow(C(p), b.c[0], qd_int(C(p), -1)) : b.c[0];
+        }
         span(out, &first, &b);
     }
     const qd_expr *s = qd_mul_n(C(p), n, fs);

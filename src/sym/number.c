@@ -281,9 +281,19 @@ int qd_number_sign(const qd_expr *e) {
     return 0;
 }
 
+/* The double nearest to a rational.  mpq_get_d truncates (981/100 would be
+ * 9.809999999999999); when numerator and denominator are exact doubles one
+ * IEEE division rounds correctly, which covers every number a user types. */
+static double rational_value(const mpq_t q) {
+    mpz_srcptr n = mpq_numref(q), d = mpq_denref(q);
+    if (mpz_sizeinbase(n, 2) <= 53 && mpz_sizeinbase(d, 2) <= 53)
+        return mpz_get_d(n) / mpz_get_d(d);
+    return mpq_get_d(q);
+}
+
 double qd_number_value(const qd_expr *e) {
     if (e->kind == QD_RATIONAL)
-        return mpq_get_d(e->u.q);
+        return rational_value(e->u.q);
     if (e->kind == QD_FLOAT)
         return e->u.f;
     return NAN;

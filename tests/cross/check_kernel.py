@@ -8,33 +8,87 @@ qdot's answer must simplify to zero.
 """
 import argparse
 import os
+import random
+import signal
 import subprocess
 import sys
 
 import sympy
-from sympy import Function, Symbol, diff, expand, simplify
+from sympy import Function, Symbol, diff, expand, simplify, sympify
 
 
 def namespace(header):
     ns = {name: getattr(sympy, name) for name in dir(sympy) if not name.startswith('_')}
-    t = Symbol('t')
+    # Everything is real, as in mechanics: Abs and sign then differentiate
+    # as qdot does (d|u| = sign(u) du).
+    t = Symbol('t', real=True)
     for kind, names in header:
         for n in names:
-            ns[n] = Function(n) if kind == 'coordinates' else Symbol(n)
+            ns[n] = Function(n, real=True) if kind == 'coordinates' else Symbol(n, real=True)
     ns['t'] = t
     return ns, t
 
 
-def is_zero(d):
+def even_form(e):
+    """|u| = |-u|: qdot stores abs and sign with the sign of u chosen
+    canonically, SymPy keeps u as it came.  Write |u| as sqrt(expand(u^2)) and
+    sign(u) as u/|u| so that both meet."""
+    e = e.replace(sympy.sign, lambda u: u / sympy.sqrt(expand(u**2)))
+    return e.replace(sympy.Abs, lambda u: sympy.sqrt(expand(u**2)))
+
+
+class Timeout(Exception):
+    pass
+
+
+def _alarm(signum, frame):
+    raise Timeout()
+
+
+def numerically_zero(d, free):
+    """d at three random real points, to 30 digits: ~0 everywhere?"""
+    rng = random.Random(7)
+    for _ in range(3):
+        point = {s: sympy.Rational(rng.randint(-900, 900), 1000) for s in free}
+        try:
+            v = complex(d.subs(point).evalf(30))
+        except (TypeError, ValueError, ZeroDivisionError):
+            return False
+        if abs(v) > 1e-20:
+            return False
+    return True
+
+
+def verdict(d, seconds=10):
+    """'proven' when SymPy reduces d to 0, 'numeric' when it could not in
+    time but d vanishes numerically, else 'failed'."""
     if d == 0 or expand(d) == 0:
-        return True
-    return simplify(d) == 0
+        return 'proven'
+    d = even_form(d)
+    if expand(d) == 0:
+        return 'proven'
+    # A cheap look first: a nonzero difference is not worth simplifying.
+    # Derivatives become symbols before the functions they differentiate.
+    derivs = sorted(d.atoms(sympy.Derivative), key=lambda x: -x.derivative_count)
+    funcs = list(d.atoms(sympy.core.function.AppliedUndef))
+    flat = d.subs([(f, Symbol('_f%d' % i, real=True)) for i, f in enumerate(derivs + funcs)])
+    if not numerically_zero(flat, flat.free_symbols):
+        return 'failed'
+    signal.signal(signal.SIGALRM, _alarm)
+    signal.alarm(seconds)
+    try:
+        return 'proven' if simplify(d) == 0 else 'numeric'
+    except Timeout:
+        return 'numeric'
+    finally:
+        signal.alarm(0)
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
     ap.add_argument('-n', type=int, default=250)
+    ap.add_argument('--need', type=int, default=200)
     ap.add_argument('--seed', type=int, default=2026)
     args = ap.parse_args()
     gen = os.path.join(args.build, 'tests', 'gen_kernel')
@@ -43,29 +97,39 @@ def main():
     header = [(l.split()[0], l.split()[1:]) for l in out[:2]]
     ns, t = namespace(header)
     q = ns['q']
-    cases, failures = 0, []
+    cases, proven, failures = 0, 0, []
     i = 2
     while i < len(out):
         assert out[i].startswith('case '), out[i]
         var = out[i + 1].split()[1]
         fields = dict(l.split(' ', 1) for l in out[i + 2:i + 6])
         i += 6
-        e = eval(fields['expr'], ns)
+        e = sympify(eval(fields['expr'], ns))
         # A partial derivative on the jet treats q and q' as independent
         # symbols: replace q' (first) and q by dummies, differentiate, put back.
-        Q, QD = Symbol('_q'), Symbol('_qd')
+        Q, QD = Symbol('_q', real=True), Symbol('_qd', real=True)
         flat = e.subs(q(t).diff(t), QD).subs(q(t), Q)
         v = {'q': Q, "q'": QD}.get(var) or ns[var]
         sympy_diff = diff(flat, v).subs(Q, q(t)).subs(QD, q(t).diff(t))
         checks = [('diff', sympy_diff), ('dt', diff(e, t)), ('expand', expand(e))]
+        results = []
         for name, ref in checks:
-            got = eval(fields[name], ns)
-            if not is_zero(got - ref):
-                failures.append('case %s %s wrt %s\n  expr   %s\n  qdot   %s\n  sympy  %s'
+            got = sympify(eval(fields[name], ns))
+            r = verdict(got - ref)
+            results.append(r)
+            if r == 'failed':
+                failures.append('%s %s wrt %s\n  expr   %s\n  qdot   %s\n  sympy  %s'
                                 % (out[i - 6], name, var, fields['expr'], fields[name], ref))
+        proven += all(r == 'proven' for r in results)
         cases += 1
     for f in failures[:10]:
         print(f)
+    # The issue asks for at least 200 expressions whose derivatives and
+    # expansion SymPy proves equal; the rest must at least agree numerically.
+    print('%d of %d expressions proven equal by SymPy (%d needed); the others '
+          'agree numerically where SymPy gave up' % (proven, cases, args.need))
+    if proven < args.need:
+        failures.append('only %d expressions proven' % proven)
     print('%d passed, %d failed' % (cases * 3 - len(failures), len(failures)))
     return 1 if failures else 0
 

@@ -1,0 +1,193 @@
+/*
+ * cli/cmd_check.c - `qdot check FILE`: validate a model and summarize it.
+ *
+ * Valid means it parses (every name known, every parameter valued, T or L
+ * given) and its equations can be derived (the mass matrix is not
+ * identically singular).  The summary says what each energy depends on, which
+ * coordinates are cyclic and whether time appears explicitly: a coordinate
+ * q_j is cyclic when L does not contain it, and its momentum p_j = dL/dq'_j
+ * is conserved when moreover Q_j = 0 and D does not contain q'_j, since
+ * Lagrange's equation then reads dp_j/dt = 0.
+ */
+#include "cli.h"
+
+#include <string.h>
+#include "model_file.h"
+#include "state.h"
+#include "qdot/mech.h"
+
+typedef struct check {
+    qd_ctx *ctx;
+    const qd_model *m;
+    qd_buf out;
+} check;
+
+static void put_expr(check *c, const qd_expr *e) { qd_print(c->ctx, e, QD_FMT_TEXT, &c->out); }
+
+/* One group of "depends on": the symbols of the group that x contains. */
+static bool group(check *c, const qd_expr *x, const char *label, bool first, size_t n,
+                  const qd_expr *(*sym)(check *, size_t)) {
+    bool any = false;
+    for (size_t i = 0; i < n; i++) {
+        const qd_expr *s = sym(c, i);
+        if (!qd_has(x, s))
+            continue;
+        qd_buf_puts(&c->out, any ? ", " : first ? " " : "; ");
+        if (!any)
+            qd_buf_printf(&c->out, "%s ", label);
+        put_expr(c, s);
+        any = true;
+    }
+    return any;
+}
+
+static const qd_expr *coord_at(check *c, size_t i) { return qd_model_coord(c->m, i); }
+static const qd_expr *vel_at(check *c, size_t i) {
+    return qd_jet(c->ctx, qd_model_coord(c->m, i), 1);
+}
+static const qd_expr *param_at(check *c, size_t i) { return qd_model_param(c->m, i); }
+static const qd_expr *time_at(check *c, size_t i) { (void)i; return qd_time(c->ctx); }
+
+/* x simplified: an unsimplified energy can hide that a symbol cancels
+ * (cos(w*t)^2 + sin(w*t)^2 has no t). */
+static void depends(check *c, const char *name, const qd_expr *x) {
+    if (!x || !(x = qd_simplify(c->ctx, x)))
+        return;
+    size_t nq = qd_model_ncoords(c->m);
+    qd_buf_printf(&c->out, "%-12s", name);
+    bool any = group(c, x, "coordinates", true, nq, coord_at);
+    any |= group(c, x, "velocities", !any, nq, vel_at);
+    any |= group(c, x, "time", !any, 1, time_at);
+    any |= group(c, x, "parameters", !any, qd_model_nparams(c->m), param_at);
+    qd_buf_puts(&c->out, any ? "\n" : " constant\n");
+}
+
+static void header(check *c, const char *path) {
+    const qd_model *m = c->m;
+    size_t nq = qd_model_ncoords(m);
+    qd_buf_printf(&c->out, "%s: ok\ncoordinates:", path);
+    for (size_t i = 0; i < nq; i++)
+        qd_buf_printf(&c->out, "%s %s", i ? "," : "", qd_expr_name(qd_model_coord(m, i)));
+    qd_buf_printf(&c->out, "\ndegrees of freedom: %zu\nparameters:", nq);
+    for (size_t i = 0; i < qd_model_nparams(m); i++) {
+        qd_buf_printf(&c->out, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
+        qd_state_put_double(&c->out, qd_state_value(qd_model_param_value(m, i)));
+    }
+    qd_buf_puts(&c->out, qd_model_nparams(m) ? "\n" : " none\n");
+}
+
+static void forces(check *c) {
+    for (size_t j = 0; j < qd_model_ncoords(c->m); j++) {
+        const qd_expr *Q = qd_simplify(c->ctx, qd_model_force(c->m, j));
+        if (!Q || qd_is_zero(Q))
+            continue;
+        qd_buf_printf(&c->out, "generalized force Q[%s] = ", qd_expr_name(qd_model_coord(c->m, j)));
+        put_expr(c, Q);
+        qd_buf_puts(&c->out, "\n");
+    }
+}
+
+/* Cyclic coordinates, with their conserved momenta. */
+static void cyclic(check *c, const qd_expr *L) {
+    const qd_expr *D = qd_model_dissipation(c->m);
+    bool any = false;
+    qd_buf_puts(&c->out, "cyclic coordinates:");
+    for (size_t j = 0; j < qd_model_ncoords(c->m); j++) {
+        const qd_expr *q = qd_model_coord(c->m, j), *qd = qd_jet(c->ctx, q, 1);
+        if (qd_has(L, q))
+            continue;
+        const qd_expr *dD = D ? qd_diff(c->ctx, D, qd) : NULL;
+        const qd_expr *Q = qd_simplify(c->ctx, qd_model_force(c->m, j));
+        dD = dD ? qd_simplify(c->ctx, dD) : NULL;
+        bool conserved = Q && qd_is_zero(Q) && (!dD || qd_is_zero(dD));
+        qd_buf_printf(&c->out, "%s %s", any ? "," : "", qd_expr_name(q));
+        if (conserved) {
+            qd_buf_printf(&c->out, " (p_%s = ", qd_expr_name(q));
+            put_expr(c, qd_simplify(c->ctx, qd_diff(c->ctx, L, qd)));
+            qd_buf_puts(&c->out, " is conserved)");
+        } else {
+            qd_buf_puts(&c->out, " (but a force or dissipation acts on it)");
+        }
+        any = true;
+    }
+    qd_buf_puts(&c->out, any ? "\n" : " none\n");
+}
+
+/* Forces or dissipation present: then h is not conserved in general. */
+static bool nonconservative(check *c) {
+    const qd_expr *D = qd_model_dissipation(c->m);
+    if (D && !qd_is_zero(qd_simplify(c->ctx, D)))
+        return true;
+    for (size_t j = 0; j < qd_model_ncoords(c->m); j++) {
+        const qd_expr *Q = qd_simplify(c->ctx, qd_model_force(c->m, j));
+        if (!Q || !qd_is_zero(Q))
+            return true;
+    }
+    return false;
+}
+
+static void time_dependence(check *c, const qd_eom *e, const qd_expr *L) {
+    bool explicit_t = qd_has(L, qd_time(c->ctx));
+    qd_buf_printf(&c->out, "explicit time dependence: %s\n",
+                  explicit_t ? "L depends on t explicitly"
+                             : "none (L does not contain t)");
+    if (!explicit_t && !nonconservative(c))
+        qd_buf_puts(&c->out, "energy integral: h = sum_j q'_j dL/dq'_j - L is conserved\n");
+    if (e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0)))
+        qd_buf_puts(&c->out,
+                    "kinetic energy: T = T2 + T1 + T0 (rheonomic: T1 or T0 is not zero)\n");
+    else if (e->T2)
+        qd_buf_puts(&c->out, "kinetic energy: T = T2, quadratic in the velocities\n");
+}
+
+static int summarize(check *c, const qd_model_file *mf) {
+    qd_eom *e = qd_eom_derive(c->ctx, c->m);
+    if (!e) {
+        if (qd_ctx_status(c->ctx) != QD_ERR_SINGULAR)
+            return qd_diag_ctx(c->ctx);
+        qd_model_file_error(mf, qd_model_lagrangian_given(c->m) ? "L" : "T",
+                            qd_ctx_message(c->ctx),
+                            "every coordinate needs inertia: its velocity must appear "
+                            "quadratically in T (or L)");
+        return QD_EXIT_USAGE;
+    }
+    header(c, mf->path);
+    depends(c, "T:", qd_model_kinetic(c->m));
+    depends(c, "V:", qd_model_potential(c->m));
+    depends(c, "U:", qd_model_gen_potential(c->m));
+    depends(c, "dissipation:", qd_model_dissipation(c->m));
+    depends(c, "L:", qd_model_lagrangian(c->m));
+    forces(c);
+    const qd_expr *L = qd_simplify(c->ctx, qd_model_lagrangian(c->m));
+    if (L) {
+        cyclic(c, L);
+        time_dependence(c, e, L);
+    }
+    qd_buf_printf(&c->out, "mass matrix: %zu x %zu, not identically singular\n", e->n, e->n);
+    qd_eom_free(e);
+    return qd_ctx_status(c->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(c->ctx);
+}
+
+int qd_cmd_check(int argc, char **argv) {
+    if (argc != 1 || (argv[0][0] == '-' && argv[0][1])) {
+        qd_diag_error("usage: qdot check FILE");
+        return QD_EXIT_USAGE;
+    }
+    check c = {.ctx = qd_ctx_new(), .out = QD_BUF_INIT};
+    if (!c.ctx) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    qd_model_file mf;
+    int rc = qd_model_file_load(c.ctx, argv[0], &mf);
+    if (rc == QD_EXIT_OK) {
+        c.m = mf.model;
+        rc = summarize(&c, &mf);
+    }
+    if (rc == QD_EXIT_OK)
+        fputs(qd_buf_str(&c.out), stdout);
+    qd_buf_free(&c.out);
+    qd_model_file_free(&mf);
+    qd_ctx_free(c.ctx);
+    return rc;
+}

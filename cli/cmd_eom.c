@@ -1,0 +1,290 @@
+/*
+ * cli/cmd_eom.c - `qdot eom FILE`: Lagrange's equations of a model,
+ *
+ *     d/dt(dL/dq'_j) - dL/dq_j + dD/dq'_j = Q_j,   written   M q'' = f,
+ *
+ * derived by libqdot (qd_eom_derive), with parameters replaced by the values
+ * given with --set, solved for q'' with --solve, or evaluated at a state with
+ * --at.  The pipeline is here; the output formats are in eom_out.c.
+ */
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include "eom_out.h"
+
+/* Symbolic accelerations larger than this (count_ops, per entry) are not
+ * worth printing: M and f say the same in far less space. */
+#define SOLVE_MAX_OPS 2000
+#define MAX_SETS 64
+
+typedef struct eom_args {
+    const char *file;
+    qd_eom_format fmt;
+    bool solve;
+    const char *sets[MAX_SETS];
+    size_t nsets;
+    const char *at;
+} eom_args;
+
+typedef struct eom_run {
+    qd_ctx *ctx;
+    qd_model_file mf;
+    qd_eom *e;
+    qd_state st;
+    const qd_expr *from[MAX_SETS], *to[MAX_SETS]; /* --set substitutions */
+    size_t nsubs;
+    const qd_expr **numbers;                      /* numeric mode: M, f, acc as nodes */
+    qd_eom_view view;
+} eom_run;
+
+static const char usage_text[] =
+    "usage: qdot eom FILE [--format text|latex|json|sympy|c] [--solve] [--set NAME=VALUE]... "
+    "[--at \"q=VALUE, q'=VALUE, t=VALUE\"]";
+
+/* The value of an option given as "--opt VALUE" or "--opt=VALUE", or NULL. */
+static const char *option(int argc, char **argv, int *i, const char *opt) {
+    size_t len = strlen(opt);
+    if (strncmp(argv[*i], opt, len))
+        return NULL;
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (argv[*i][len] || *i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
+}
+
+static int parse_option(int argc, char **argv, int *i, eom_args *a) {
+    const char *v;
+    if (!strcmp(argv[*i], "--solve")) {
+        a->solve = true;
+    } else if ((v = option(argc, argv, i, "--format"))) {
+        if (!qd_eom_format_from_name(v, &a->fmt)) {
+            qd_diag_error("--format takes text, latex, json, sympy or c, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+    } else if ((v = option(argc, argv, i, "--set"))) {
+        if (a->nsets == MAX_SETS) {
+            qd_diag_error("at most %d --set options", MAX_SETS);
+            return QD_EXIT_USAGE;
+        }
+        a->sets[a->nsets++] = v;
+    } else if ((v = option(argc, argv, i, "--at"))) {
+        if (a->at) {
+            qd_diag_error("--at is given twice; name every value in one list");
+            return QD_EXIT_USAGE;
+        }
+        a->at = v;
+    } else {
+        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int parse_args(int argc, char **argv, eom_args *a) {
+    *a = (eom_args){.fmt = QD_EOM_TEXT};
+    for (int i = 0; i < argc; i++) {
+        if (argv[i][0] == '-' && argv[i][1]) {
+            int rc = parse_option(argc, argv, &i, a);
+            if (rc != QD_EXIT_OK)
+                return rc;
+        } else if (!a->file) {
+            a->file = argv[i];
+        } else {
+            qd_diag_error("'eom' takes one FILE; unexpected '%s'\n%s", argv[i], usage_text);
+            return QD_EXIT_USAGE;
+        }
+    }
+    if (!a->file) {
+        qd_diag_error("%s", usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+/* --set: new parameter values in the model, and substitutions for the equations. */
+static int apply_sets(eom_run *r, const eom_args *a) {
+    for (size_t i = 0; i < a->nsets; i++) {
+        const qd_expr *p, *v;
+        int rc = qd_state_set(r->ctx, r->mf.model, a->sets[i], &p, &v);
+        if (rc != QD_EXIT_OK)
+            return rc;
+        size_t k = 0;
+        while (k < r->nsubs && r->from[k] != p)
+            k++;
+        r->from[k] = p;  /* the last --set of a name wins */
+        r->to[k] = v;
+        r->nsubs += k == r->nsubs;
+    }
+    return QD_EXIT_OK;
+}
+
+static int derive(eom_run *r) {
+    r->e = qd_eom_derive(r->ctx, r->mf.model);
+    if (r->e)
+        return QD_EXIT_OK;
+    if (qd_ctx_status(r->ctx) != QD_ERR_SINGULAR)
+        return qd_diag_ctx(r->ctx);
+    const qd_model *m = r->mf.model;
+    qd_model_file_error(&r->mf, qd_model_lagrangian_given(m) ? "L" : "T", qd_ctx_message(r->ctx),
+                        "every coordinate needs inertia: its velocity must appear "
+                        "quadratically in T (or L)");
+    return QD_EXIT_USAGE;
+}
+
+/* x with the --set parameters replaced by their values, re-simplified. */
+static const qd_expr *subs(eom_run *r, const qd_expr *x) {
+    if (!x || !r->nsubs)
+        return x;
+    const qd_expr *y = qd_subs(r->ctx, x, r->nsubs, r->from, r->to);
+    return y == x ? x : qd_simplify(r->ctx, y);
+}
+
+static int substitute(eom_run *r) {
+    qd_eom *e = r->e;
+    for (size_t i = 0; i < e->n * e->n; i++)
+        e->M[i] = subs(r, e->M[i]);
+    for (size_t i = 0; i < e->n; i++)
+        e->f[i] = subs(r, e->f[i]);
+    e->T2 = subs(r, e->T2);
+    e->T1 = subs(r, e->T1);
+    e->T0 = subs(r, e->T0);
+    e->L = subs(r, e->L);
+    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(r->ctx);
+}
+
+static int solve(eom_run *r) {
+    qd_status st = qd_eom_solve(r->ctx, r->e, SOLVE_MAX_OPS);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    if (st == QD_ERR_TOOBIG) {
+        fprintf(stderr, "qdot: note: the solved accelerations exceed %d operations; "
+                        "printing M and f instead (use --at for numbers)\n", SOLVE_MAX_OPS);
+        qd_ctx_clear_error(r->ctx);
+        return QD_EXIT_OK;
+    }
+    if (st == QD_ERR_SINGULAR) {
+        qd_diag_error("cannot solve for the accelerations: %s", qd_ctx_message(r->ctx));
+        return QD_EXIT_FAIL;
+    }
+    return qd_diag_ctx(r->ctx);
+}
+
+static void singular_at(const eom_run *r) {
+    qd_buf b = QD_BUF_INIT;
+    for (size_t i = 0; i < 2 * r->e->n + 1; i++) {
+        qd_buf_puts(&b, i ? ", " : "");
+        qd_print(r->ctx, r->st.syms[i], QD_FMT_TEXT, &b);
+        qd_buf_printf(&b, "=%.17g", r->st.vals[i]);
+    }
+    qd_diag_error("the mass matrix is singular at %s: the accelerations are not determined there",
+                  qd_buf_str(&b));
+    qd_buf_free(&b);
+}
+
+/* x evaluated at the state, as a number node; NULL (and a message) on failure. */
+static const qd_expr *at_state(eom_run *r, const qd_expr *x) {
+    double v;
+    if (!x || qd_eval(r->ctx, x, r->st.n, r->st.syms, r->st.vals, &v) != QD_OK)
+        return NULL;
+    return qd_float(r->ctx, v);
+}
+
+/* --at: M, f and q'' as numbers (qd_eom_eval), kept as number nodes so that
+ * every format prints them. */
+static int evaluate(eom_run *r, const char *at) {
+    size_t n = r->e->n;
+    int rc = qd_state_init(r->ctx, r->mf.model, &r->st);
+    if (rc == QD_EXIT_OK)
+        rc = qd_state_parse(r->ctx, r->mf.model, at, &r->st);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    double *num = malloc((n * n + 2 * n) * sizeof *num);
+    r->numbers = malloc((n * n + 2 * n) * sizeof *r->numbers);
+    if (!num || !r->numbers) {
+        free(num);
+        return QD_EXIT_FAIL;
+    }
+    qd_status st = qd_eom_eval(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, num, num + n * n,
+                               num + n * n + n);
+    for (size_t i = 0; st == QD_OK && i < n * n + 2 * n; i++)
+        if (!(r->numbers[i] = qd_float(r->ctx, num[i])))
+            st = QD_ERR_NUMERIC;
+    free(num);
+    if (st == QD_ERR_SINGULAR) {
+        singular_at(r);
+        return QD_EXIT_FAIL;
+    }
+    if (st != QD_OK) {
+        qd_diag_error("cannot evaluate the equations at this state: %s",
+                      qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
+        return QD_EXIT_FAIL;
+    }
+    return QD_EXIT_OK;
+}
+
+static int make_view(eom_run *r) {
+    qd_eom_view *v = &r->view;
+    qd_eom *e = r->e;
+    size_t n = e->n;
+    *v = (qd_eom_view){.ctx = r->ctx, .mf = &r->mf, .e = e, .M = e->M, .f = e->f, .acc = e->acc,
+                       .T = {e->T2, e->T1, e->T0}};
+    v->split = e->T2 && e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0));
+    if (!r->numbers)
+        return QD_EXIT_OK;
+    v->numeric = true;
+    v->st = &r->st;
+    v->M = r->numbers;
+    v->f = r->numbers + n * n;
+    v->acc = r->numbers + n * n + n;
+    for (size_t i = 0; i < 3 && v->T[0]; i++)
+        if (!(v->T[i] = at_state(r, v->T[i])))
+            return qd_diag_ctx(r->ctx);
+    return QD_EXIT_OK;
+}
+
+static int emit(eom_run *r, qd_eom_format fmt) {
+    int rc = make_view(r);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_buf b = QD_BUF_INIT;
+    qd_status st = qd_eom_write(&r->view, fmt, &b);
+    if (st == QD_OK && !b.failed)
+        fputs(qd_buf_str(&b), stdout);
+    else
+        qd_diag_error("cannot print the equations: %s",
+                      qd_status_str(b.failed ? QD_ERR_NOMEM : st));
+    qd_buf_free(&b);
+    return st == QD_OK && !b.failed ? QD_EXIT_OK : QD_EXIT_FAIL;
+}
+
+int qd_cmd_eom(int argc, char **argv) {
+    eom_args a;
+    int rc = parse_args(argc, argv, &a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    eom_run r = {.ctx = qd_ctx_new()};
+    if (!r.ctx) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = qd_model_file_load(r.ctx, a.file, &r.mf);
+    if (rc == QD_EXIT_OK)
+        rc = apply_sets(&r, &a);
+    if (rc == QD_EXIT_OK)
+        rc = derive(&r);
+    if (rc == QD_EXIT_OK)
+        rc = substitute(&r);
+    if (rc == QD_EXIT_OK)
+        rc = a.at ? evaluate(&r, a.at) : a.solve ? solve(&r) : QD_EXIT_OK;
+    if (rc == QD_EXIT_OK)
+        rc = emit(&r, a.fmt);
+    free(r.numbers);
+    qd_state_free(&r.st);
+    if (r.e)
+        qd_eom_free(r.e);
+    qd_model_file_free(&r.mf);
+    qd_ctx_free(r.ctx);
+    return rc;
+}

@@ -1,0 +1,123 @@
+/*
+ * cli/json.c - the JSON writer of json.h (RFC 8259: strings, numbers,
+ * objects, arrays, true, false, null).
+ */
+#include "json.h"
+
+#include <math.h>
+
+void qd_json_init(qd_json *j, qd_buf *out) {
+    *j = (qd_json){.out = out};
+}
+
+static void indent(qd_json *j) {
+    qd_buf_puts(j->out, "\n");
+    for (unsigned i = 0; i < j->depth; i++)
+        qd_buf_puts(j->out, "  ");
+}
+
+/* Separator before a value (or a key): a comma after an earlier item, and a
+ * new line inside objects.  A value right after its key needs neither. */
+static void before_item(qd_json *j) {
+    if (j->after_key) {
+        j->after_key = false;
+        return;
+    }
+    if (j->depth == 0)
+        return;
+    uint32_t bit = 1u << (j->depth - 1);
+    if (j->has_items & bit)
+        qd_buf_puts(j->out, (j->is_object & bit) ? "," : ", ");
+    j->has_items |= bit;
+    if (j->is_object & bit)
+        indent(j);
+}
+
+static void open_container(qd_json *j, const char *bracket, bool object) {
+    before_item(j);
+    if (j->depth >= QD_JSON_MAX_DEPTH) {
+        j->failed = true;
+        return;
+    }
+    qd_buf_puts(j->out, bracket);
+    uint32_t bit = 1u << j->depth;
+    j->has_items &= ~bit;
+    j->is_object = object ? (j->is_object | bit) : (j->is_object & ~bit);
+    j->depth++;
+}
+
+static void close_container(qd_json *j, const char *bracket) {
+    if (j->depth == 0) {
+        j->failed = true;
+        return;
+    }
+    uint32_t bit = 1u << (j->depth - 1);
+    bool lines = (j->is_object & bit) && (j->has_items & bit);
+    j->depth--;
+    if (lines)
+        indent(j);
+    qd_buf_puts(j->out, bracket);
+}
+
+void qd_json_begin_object(qd_json *j) { open_container(j, "{", true); }
+void qd_json_end_object(qd_json *j) { close_container(j, "}"); }
+void qd_json_begin_array(qd_json *j) { open_container(j, "[", false); }
+void qd_json_end_array(qd_json *j) { close_container(j, "]"); }
+
+static void put_string(qd_buf *b, const char *s) {
+    qd_buf_puts(b, "\"");
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        switch (*p) {
+        case '"': qd_buf_puts(b, "\\\""); break;
+        case '\\': qd_buf_puts(b, "\\\\"); break;
+        case '\n': qd_buf_puts(b, "\\n"); break;
+        case '\r': qd_buf_puts(b, "\\r"); break;
+        case '\t': qd_buf_puts(b, "\\t"); break;
+        case '\b': qd_buf_puts(b, "\\b"); break;
+        case '\f': qd_buf_puts(b, "\\f"); break;
+        default:
+            if (*p < 0x20)
+                qd_buf_printf(b, "\\u%04x", *p);
+            else
+                qd_buf_putn(b, (const char *)p, 1);
+        }
+    }
+    qd_buf_puts(b, "\"");
+}
+
+void qd_json_key(qd_json *j, const char *key) {
+    before_item(j);
+    put_string(j->out, key);
+    qd_buf_puts(j->out, ": ");
+    j->after_key = true;
+}
+
+void qd_json_string(qd_json *j, const char *s) {
+    before_item(j);
+    put_string(j->out, s);
+}
+
+bool qd_json_number(qd_json *j, double v) {
+    if (!isfinite(v)) {
+        j->failed = true;
+        return false;
+    }
+    before_item(j);
+    /* -0 is valid JSON but surprises readers; it equals 0 anyway */
+    qd_buf_printf(j->out, "%.17g", v == 0 ? 0.0 : v);
+    return true;
+}
+
+void qd_json_bool(qd_json *j, bool v) {
+    before_item(j);
+    qd_buf_puts(j->out, v ? "true" : "false");
+}
+
+void qd_json_null(qd_json *j) {
+    before_item(j);
+    qd_buf_puts(j->out, "null");
+}
+
+bool qd_json_ok(const qd_json *j) {
+    return !j->failed && !j->out->failed && j->depth == 0 && !j->after_key;
+}

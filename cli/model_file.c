@@ -1,0 +1,115 @@
+/*
+ * cli/model_file.c - reading a model file and showing its errors: the
+ * library locates an error (qd_diag), the program prints it.
+ */
+#include "model_file.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+
+/* The whole stream in one NUL-terminated block; NULL with errno set. */
+static char *slurp(FILE *fp, size_t *len) {
+    size_t cap = 4096, n = 0;
+    char *s = malloc(cap);
+    while (s) {
+        n += fread(s + n, 1, cap - n - 1, fp);
+        if (ferror(fp) || feof(fp))
+            break;
+        char *t = cap > SIZE_MAX / 2 ? NULL : realloc(s, cap * 2);
+        if (!t) {
+            free(s);
+            errno = ENOMEM;
+            return NULL;
+        }
+        s = t;
+        cap *= 2;
+    }
+    if (s && ferror(fp)) {
+        int saved = errno ? errno : EIO;
+        free(s);
+        errno = saved;
+        return NULL;
+    }
+    if (s) {
+        s[n] = '\0';
+        *len = n;
+    }
+    return s;
+}
+
+static int read_text(const char *path, qd_model_file *mf) {
+    bool std_in = !strcmp(path, "-");
+    mf->path = std_in ? "<stdin>" : path;
+    FILE *fp = std_in ? stdin : fopen(path, "rb");
+    if (!fp) {
+        qd_diag_error("cannot open '%s': %s", path, strerror(errno));
+        return QD_EXIT_USAGE;
+    }
+    errno = 0;
+    mf->text = slurp(fp, &mf->len);
+    int err = errno;
+    if (!std_in)
+        fclose(fp);
+    if (!mf->text) {
+        qd_diag_error("cannot read '%s': %s", mf->path, strerror(err ? err : EIO));
+        return QD_EXIT_USAGE;
+    }
+    /* the parser reads up to the first NUL: the rest would be ignored silently */
+    if (strlen(mf->text) != mf->len) {
+        qd_diag_error("%s: the file contains a NUL byte at offset %zu (not a text file?)",
+                      mf->path, strlen(mf->text));
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static void print_diag(const qd_model_file *mf, const qd_diag *d) {
+    qd_buf b = QD_BUF_INIT;
+    qd_diag_format(d, mf->path, mf->text, &b);
+    fputs(qd_buf_str(&b), stderr);
+    if (b.len && b.s[b.len - 1] != '\n')
+        fputc('\n', stderr);
+    qd_buf_free(&b);
+}
+
+int qd_model_file_load(qd_ctx *ctx, const char *path, qd_model_file *mf) {
+    *mf = (qd_model_file){0};
+    int rc = read_text(path, mf);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_diag d;
+    memset(&d, 0, sizeof d);
+    mf->model = qd_model_parse(ctx, mf->text, &d);
+    if (mf->model)
+        return QD_EXIT_OK;
+    if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+        qd_diag_error("out of memory while reading '%s'", mf->path);
+        return QD_EXIT_FAIL;
+    }
+    print_diag(mf, &d);
+    return QD_EXIT_USAGE;
+}
+
+void qd_model_file_free(qd_model_file *mf) {
+    if (mf->model)
+        qd_model_free(mf->model);
+    free(mf->text);
+    *mf = (qd_model_file){0};
+}
+
+void qd_model_file_error(const qd_model_file *mf, const char *what, const char *message,
+                         const char *hint) {
+    qd_diag d;
+    memset(&d, 0, sizeof d);
+    if (!qd_model_where(mf->model, what, &d)) {
+        fprintf(stderr, "%s: error: %s\n", mf->path, message);
+        if (hint && hint[0])
+            fprintf(stderr, "  hint: %s\n", hint);
+        return;
+    }
+    snprintf(d.message, sizeof d.message, "%s", message);
+    snprintf(d.hint, sizeof d.hint, "%s", hint ? hint : "");
+    print_diag(mf, &d);
+}

@@ -1,0 +1,240 @@
+/*
+ * cli/state.c - --set and --at: names resolved against the model, values
+ * read as expressions and required to evaluate to finite numbers.
+ */
+#include "state.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+
+double qd_state_value(const qd_expr *number) {
+    long p, q;
+    /* both exact in a double, so the one division rounds correctly */
+    if (qd_rational_get(number, &p, &q) && fabs((double)p) <= 0x1p53 && (double)q <= 0x1p53)
+        return (double)p / (double)q;
+    return qd_number_value(number);
+}
+
+void qd_state_put_double(qd_buf *b, double x) {
+    char s[40];
+    if (x == 0) {
+        qd_buf_puts(b, "0");
+        return;
+    }
+    for (int p = 1; p <= 17; p++) {
+        snprintf(s, sizeof s, "%.*g", p, x);
+        if (strtod(s, NULL) == x)
+            break;
+    }
+    qd_buf_puts(b, s);
+}
+
+int qd_state_init(qd_ctx *ctx, const qd_model *m, qd_state *st) {
+    size_t nq = qd_model_ncoords(m), np = qd_model_nparams(m), n = 2 * nq + 1 + np;
+    st->n = n;
+    st->syms = calloc(n, sizeof *st->syms);
+    st->vals = calloc(n, sizeof *st->vals);
+    if (!st->syms || !st->vals) {
+        qd_state_free(st);
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    for (size_t i = 0; i < nq; i++) {
+        st->syms[i] = qd_model_coord(m, i);
+        st->syms[nq + i] = qd_jet(ctx, qd_model_coord(m, i), 1);
+    }
+    st->syms[2 * nq] = qd_time(ctx);
+    for (size_t i = 0; i < np; i++) {
+        const qd_expr *v = qd_model_param_value(m, i);
+        st->syms[2 * nq + 1 + i] = qd_model_param(m, i);
+        if (v && qd_is_number(v))
+            st->vals[2 * nq + 1 + i] = qd_state_value(v);
+        else if (!v || qd_eval(ctx, v, 0, st->syms, st->vals, &st->vals[2 * nq + 1 + i]) != QD_OK)
+            return qd_diag_ctx(ctx);
+    }
+    return QD_EXIT_OK;
+}
+
+void qd_state_free(qd_state *st) {
+    free(st->syms);
+    free(st->vals);
+    st->syms = NULL;
+    st->vals = NULL;
+    st->n = 0;
+}
+
+/* The value text[start, start+len) of a NAME=VALUE in the option `label`;
+ * errors are shown against the whole option text. */
+static int read_value(qd_ctx *ctx, const char *label, const char *what, const char *text,
+                      size_t start, size_t len, const qd_expr **exact, double *val) {
+    char *copy = malloc(len + 1);
+    if (!copy)
+        return QD_EXIT_FAIL;
+    memcpy(copy, text + start, len);
+    copy[len] = '\0';
+    qd_read_error err;
+    const qd_read_opts opts = {.new_symbols = false};
+    const qd_expr *e = qd_read(ctx, copy, &opts, &err);
+    int rc = QD_EXIT_OK;
+    if (!e) {
+        err.offset += start;
+        qd_diag_read(label, text, &err);
+        rc = QD_EXIT_USAGE;
+    } else if (qd_is_number(e)) {
+        *val = qd_state_value(e);
+        *exact = e;
+    } else if (qd_eval(ctx, e, 0, &e, val, val) != QD_OK || !isfinite(*val)) {
+        qd_ctx_clear_error(ctx);
+        qd_diag_error("%s: '%s' does not evaluate to a finite number", what, copy);
+        rc = QD_EXIT_USAGE;
+    } else {
+        *exact = qd_is_number(e) ? e : qd_float(ctx, *val);
+    }
+    free(copy);
+    return rc;
+}
+
+int qd_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_expr **exact,
+                    double *val) {
+    return read_value(ctx, what, what, text, 0, strlen(text), exact, val);
+}
+
+int qd_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
+                 const qd_expr **value) {
+    const char *eq = strchr(arg, '=');
+    if (!eq || eq == arg) {
+        qd_diag_error("--set takes NAME=VALUE, not '%s'", arg);
+        return QD_EXIT_USAGE;
+    }
+    char name[128];
+    size_t n = (size_t)(eq - arg);
+    while (n && isspace((unsigned char)arg[n - 1]))
+        n--;
+    if (n >= sizeof name) {
+        qd_diag_error("--set: the name in '%s' is too long", arg);
+        return QD_EXIT_USAGE;
+    }
+    memcpy(name, arg, n);
+    name[n] = '\0';
+    double v;
+    int rc = read_value(ctx, "--set", "--set", arg, (size_t)(eq + 1 - arg), strlen(eq + 1),
+                        value, &v);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (qd_model_set_param(ctx, m, name, *value) != QD_OK) {
+        qd_diag_error("--set %s: %s", name, qd_ctx_message(ctx));
+        return QD_EXIT_USAGE;
+    }
+    *param = qd_lookup(ctx, name);
+    return QD_EXIT_OK;
+}
+
+/* ---- --at ------------------------------------------------------------------ */
+
+static void list_coords(const qd_model *m, char *out, size_t cap) {
+    size_t used = 0;
+    out[0] = '\0';
+    for (size_t i = 0; i < qd_model_ncoords(m) && used < cap; i++)
+        used += (size_t)snprintf(out + used, cap - used, "%s%s", i ? ", " : "",
+                                 qd_expr_name(qd_model_coord(m, i)));
+}
+
+/* The slot of NAME (a coordinate, a velocity NAME', t or a parameter) in st. */
+static int find_slot(qd_ctx *ctx, const qd_model *m, const qd_state *st, const char *name,
+                     size_t *slot) {
+    size_t len = strlen(name), primes = 0;
+    while (len && name[len - 1] == '\'') {
+        len--;
+        primes++;
+    }
+    size_t nq = qd_model_ncoords(m);
+    for (size_t i = 0; i < nq; i++) {
+        const char *q = qd_expr_name(qd_model_coord(m, i));
+        if (strlen(q) != len || strncmp(q, name, len))
+            continue;
+        if (primes > 1) {
+            qd_diag_error("--at: '%s' is an acceleration: qdot computes it; give %.*s and %.*s'",
+                          name, (int)len, name, (int)len, name);
+            return QD_EXIT_USAGE;
+        }
+        *slot = primes ? nq + i : i;
+        return QD_EXIT_OK;
+    }
+    for (size_t i = 2 * nq; i < st->n && !primes; i++)
+        if (!strcmp(qd_expr_name(st->syms[i]), name)) {
+            *slot = i;
+            return QD_EXIT_OK;
+        }
+    char known[512];
+    list_coords(m, known, sizeof known);
+    (void)ctx;
+    qd_diag_error("--at: unknown name '%s' (the coordinates are %s; velocities are written "
+                  "with a prime, and t is the time)", name, known);
+    return QD_EXIT_USAGE;
+}
+
+/* End of the item starting at i: the next comma outside brackets. */
+static size_t item_end(const char *text, size_t i) {
+    int depth = 0;
+    for (; text[i]; i++) {
+        if (text[i] == '(' || text[i] == '[')
+            depth++;
+        else if ((text[i] == ')' || text[i] == ']') && depth > 0)
+            depth--;
+        else if (text[i] == ',' && depth == 0)
+            break;
+    }
+    return i;
+}
+
+/* One NAME=VALUE in text[a, b). */
+static int parse_item(qd_ctx *ctx, const qd_model *m, const char *text, size_t a, size_t b,
+                      qd_state *st, bool *given) {
+    const char *eq = memchr(text + a, '=', b - a);
+    size_t na = a, nb = eq ? (size_t)(eq - text) : b;
+    while (na < nb && isspace((unsigned char)text[na]))
+        na++;
+    while (nb > na && isspace((unsigned char)text[nb - 1]))
+        nb--;
+    if (!eq || na == nb || nb - na >= 128) {
+        qd_diag_error("--at: expected NAME=VALUE, not '%.*s'", (int)(b - a), text + a);
+        return QD_EXIT_USAGE;
+    }
+    char name[128], what[160];
+    memcpy(name, text + na, nb - na);
+    name[nb - na] = '\0';
+    size_t slot;
+    int rc = find_slot(ctx, m, st, name, &slot);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (given[slot]) {
+        qd_diag_error("--at: '%s' is given twice", name);
+        return QD_EXIT_USAGE;
+    }
+    given[slot] = true;
+    snprintf(what, sizeof what, "--at %s", name);
+    size_t v = (size_t)(eq + 1 - text);
+    const qd_expr *exact;
+    return read_value(ctx, "--at", what, text, v, b - v, &exact, &st->vals[slot]);
+}
+
+int qd_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, qd_state *st) {
+    bool *given = calloc(st->n ? st->n : 1, sizeof *given);
+    if (!given)
+        return QD_EXIT_FAIL;
+    int rc = QD_EXIT_OK;
+    for (size_t i = 0; text[i] && rc == QD_EXIT_OK;) {
+        size_t end = item_end(text, i);
+        size_t k = i;
+        while (k < end && isspace((unsigned char)text[k]))
+            k++;
+        if (k < end)  /* empty items ("a=1,") are allowed */
+            rc = parse_item(ctx, m, text, i, end, st, given);
+        i = text[end] ? end + 1 : end;
+    }
+    free(given);
+    return rc;
+}

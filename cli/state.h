@@ -1,0 +1,46 @@
+/*
+ * cli/state.h - numbers from the command line: `--set NAME=VALUE` and
+ * `--at "theta1=0.3, theta2'=0.5, t=0"`.
+ *
+ * A value is any expression that evaluates to a finite number (2, -1e-3,
+ * pi/4, sqrt(2)/2); it is read with qd_read, so it has the model language's
+ * syntax.  Every function here prints its own diagnostics and returns an exit
+ * status (QD_EXIT_OK to go on).
+ */
+#ifndef QDOT_CLI_STATE_H
+#define QDOT_CLI_STATE_H
+
+#include "qdot/model.h"
+
+/* A point of the state space: a value for each coordinate q_j, velocity q'_j,
+ * the time t and each parameter, in that order. */
+typedef struct qd_state {
+    size_t n;
+    const qd_expr **syms;
+    double *vals;
+} qd_state;
+
+/* A number node as the nearest double: an exact rational p/q that fits is
+ * computed as (double)p/q, correctly rounded (9.81 stays 9.81). */
+double qd_state_value(const qd_expr *number);
+
+/* x in its shortest %g form that reads back to the same double. */
+void qd_state_put_double(qd_buf *b, double x);
+
+/* Every coordinate, velocity and t at 0, every parameter at its value. */
+int qd_state_init(qd_ctx *ctx, const qd_model *m, qd_state *st);
+void qd_state_free(qd_state *st);
+/* Apply an --at list; an unknown name is an error naming the coordinates. */
+int qd_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, qd_state *st);
+
+/* Read a number.  what names the value in messages ("--set m1").  *exact is
+ * the expression when it is an exact or float number, else a float of *val. */
+int qd_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_expr **exact,
+                    double *val);
+
+/* Apply one --set NAME=VALUE to the model; *param and *value tell which
+ * parameter now has which value (for substituting it into the equations). */
+int qd_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
+                 const qd_expr **value);
+
+#endif

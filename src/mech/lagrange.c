@@ -1,0 +1,217 @@
+/*
+ * src/mech/lagrange.c - Lagrange's equations of a model, M q'' = f.
+ *
+ * For each coordinate q_j the residual
+ *     E_j = d/dt(dL/dq'_j) - dL/dq_j + dD/dq'_j - Q_j
+ * is linear in the accelerations (d/dt only brings q'' in through the chain
+ * rule on dL/dq'_j); its coefficients are row j of M and f_j is minus the
+ * rest.  M_jk = d^2L/dq'_j dq'_k is symmetric, so only j <= k is simplified
+ * unless D or Q bring accelerations of their own.  L is grouped by
+ * velocity monomials, each coefficient simplified (split.c), before it is
+ * differentiated: the trigonometric sums of a chain of links collapse there
+ * (x'^2 + y'^2 of a link is a sum of cos(q_j - q_k) q'_j q'_k), and every
+ * derivative inherits the short form.  f is grouped the same way.
+ */
+#include "mech.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stdlib.h>
+
+static qd_eom *eom_alloc(size_t n) {
+    qd_eom *e = calloc(1, sizeof *e);
+    if (!e)
+        return NULL;
+    e->n = n;
+    e->q = calloc(n ? n : 1, sizeof *e->q);
+    e->qd = calloc(n ? n : 1, sizeof *e->qd);
+    e->qdd = calloc(n ? n : 1, sizeof *e->qdd);
+    e->M = calloc(n ? n * n : 1, sizeof *e->M);
+    e->f = calloc(n ? n : 1, sizeof *e->f);
+    e->priv = calloc(1, sizeof(qd__eom_num));
+    if (!e->q || !e->qd || !e->qdd || !e->M || !e->f || !e->priv) {
+        qd_eom_free(e);
+        return NULL;
+    }
+    return e;
+}
+
+void qd_eom_free(qd_eom *e) {
+    if (!e)
+        return;
+    qd__eom_num_free(e->priv);
+    free(e->priv);
+    free(e->q);
+    free(e->qd);
+    free(e->qdd);
+    free(e->M);
+    free(e->f);
+    free(e->acc);
+    free(e);
+}
+
+static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
+    for (size_t i = 0; x && i < n; i++)
+        if (qd_has(x, syms[i]))
+            return true;
+    return false;
+}
+
+#ifndef NDEBUG
+/* Debug builds: the simplified M_jk must equal the raw coefficient of q''_j
+ * in row k (symmetry and a sound simplifier at once), at one state. */
+static void check_symmetric(qd_ctx *ctx, const qd_eom *e, size_t j, const qd_expr *raw_kj,
+                            size_t k) {
+    const qd_expr *syms[64];
+    double vals[64], a, b;
+    const qd_expr *diff = qd_sub(ctx, e->M[j * e->n + k], raw_kj);
+    size_t ns = qd_free_symbols(ctx, diff, syms, 64);
+    if (ns > 64)
+        return;
+    for (size_t i = 0; i < ns; i++)
+        vals[i] = 0.37 + 0.61 * (double)((i * 7919 + 13) % 101) / 101.0;
+    if (qd_eval(ctx, e->M[j * e->n + k], ns, syms, vals, &a) != QD_OK ||
+        qd_eval(ctx, raw_kj, ns, syms, vals, &b) != QD_OK) {
+        qd_ctx_clear_error(ctx);
+        return;
+    }
+    if (isfinite(a) && isfinite(b))
+        assert(fabs(a - b) <= 1e-8 * (1 + fabs(a) + fabs(b)));
+}
+#endif
+
+/* x grouped by velocity monomials where it is a polynomial in them (the
+ * common case), else as it is. */
+static const qd_expr *grouped(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
+    qd__vsum v;
+    qd_status st = qd__by_velocity(ctx, x, e->n, e->qd, &v);
+    return st == QD_OK ? v.all : st == QD_ERR_NONLINEAR ? x : NULL;
+}
+
+/* Row j: the coefficients of every acceleration (coeffs, n of them) and
+ * f_j. */
+static qd_status derive_row(qd_ctx *ctx, qd_eom *e, const qd_expr *L, const qd_expr *D,
+                            const qd_expr *Q, size_t j, const qd_expr **coeffs) {
+    const qd_expr *p = qd_diff(ctx, L, e->qd[j]);
+    const qd_expr *E = qd_sub(ctx, qd_dt(ctx, p), qd_diff(ctx, L, e->q[j]));
+    if (D)
+        E = qd_add(ctx, E, qd_diff(ctx, D, e->qd[j]));
+    E = qd_sub(ctx, E, Q);
+    if (!E)
+        return qd_ctx_status(ctx);
+    const qd_expr *rest = NULL;
+    qd_status st = qd_linear_coeffs(ctx, E, e->n, e->qdd, coeffs, &rest);
+    if (st != QD_OK) {
+        if (st == QD_ERR_NONLINEAR)
+            qd_ctx_error(ctx, st, "the equation of %s is not linear in the accelerations",
+                         qd_expr_name(e->q[j]));
+        return st;
+    }
+    e->f[j] = qd_simplify(ctx, grouped(ctx, e, qd_neg(ctx, rest)));
+    return e->f[j] ? QD_OK : qd_ctx_status(ctx);
+}
+
+/* Fill M's row j from its coefficients: k >= j only when M is known to be
+ * symmetric (the lower part is mirrored from earlier rows). */
+static qd_status fill_row(qd_ctx *ctx, qd_eom *e, size_t j, const qd_expr **coeffs, bool sym) {
+    size_t n = e->n;
+    for (size_t k = sym ? j : 0; k < n; k++) {
+        e->M[j * n + k] = qd_simplify(ctx, coeffs[k]);
+        if (!e->M[j * n + k])
+            return qd_ctx_status(ctx);
+        if (sym)
+            e->M[k * n + j] = e->M[j * n + k];
+    }
+#ifndef NDEBUG
+    for (size_t k = 0; sym && k < j; k++)
+        check_symmetric(ctx, e, k, coeffs[k], j);
+#endif
+    return QD_OK;
+}
+
+static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd_model *m, const qd_expr *L) {
+    const qd_expr *D = qd_model_dissipation(m);
+    bool sym = !has_any(D, e->n, e->qdd);
+    for (size_t j = 0; j < e->n; j++)
+        sym = sym && !has_any(qd_model_force(m, j), e->n, e->qdd);
+    const qd_expr **coeffs = calloc(e->n, sizeof *coeffs);
+    if (!coeffs)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_OK;
+    for (size_t j = 0; j < e->n && st == QD_OK; j++) {
+        st = derive_row(ctx, e, L, D, qd_model_force(m, j), j, coeffs);
+        if (st == QD_OK)
+            st = fill_row(ctx, e, j, coeffs, sym);
+    }
+    free(coeffs);
+    return st;
+}
+
+static qd_status set_coords(qd_ctx *ctx, qd_eom *e, const qd_model *m) {
+    for (size_t j = 0; j < e->n; j++) {
+        e->q[j] = qd_model_coord(m, j);
+        e->qd[j] = qd_jet(ctx, e->q[j], 1);
+        e->qdd[j] = qd_jet(ctx, e->q[j], 2);
+        if (!e->qd[j] || !e->qdd[j])
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
+}
+
+/* L grouped by velocity monomials; when L is T - V - U, T's grouping is
+ * reused and only V + U is grouped. */
+static const qd_expr *grouped_lagrangian(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                         const qd_expr *Tg) {
+    const qd_expr *L = qd_model_lagrangian(m), *V = qd_model_potential(m);
+    const qd_expr *U = qd_model_gen_potential(m), *zero = qd_int(ctx, 0);
+    const qd_expr *Lg = NULL;
+    if (Tg && !qd_model_lagrangian_given(m))
+        Lg = qd_sub(ctx, Tg, grouped(ctx, e, qd_add(ctx, V ? V : zero, U ? U : zero)));
+    else
+        Lg = grouped(ctx, e, L);
+    return Lg == L ? qd_simplify(ctx, L) : Lg;
+}
+
+static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd_model *m) {
+    qd_status st = set_coords(ctx, e, m);
+    const qd_expr *T = qd_model_kinetic(m);
+    qd__vsum vt = {NULL, {NULL, NULL, NULL}, 0, NULL};
+    if (st != QD_OK)
+        return st;
+    if (!qd_model_lagrangian(m)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the model gives neither T nor L");
+        return QD_ERR_ARG;
+    }
+    if (T && (st = qd__split_kinetic(ctx, T, e->n, e->qd, &vt)) != QD_OK)
+        return st;
+    if (T && vt.top <= 2) {
+        e->T2 = vt.deg[2];
+        e->T1 = vt.deg[1];
+        e->T0 = vt.deg[0];
+    }
+    e->L = grouped_lagrangian(ctx, e, m, vt.all);
+    if (!e->L)
+        return qd_ctx_status(ctx);
+    st = derive_all(ctx, e, m, e->L);
+    if (st == QD_OK)
+        st = qd__check_singular(ctx, e, T);
+    return st;
+}
+
+qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) {
+    if (!ctx || !m)
+        return NULL;
+    qd_eom *e = eom_alloc(qd_model_ncoords(m));
+    if (!e) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
+        return NULL;
+    }
+    qd_status st = derive(ctx, e, m);
+    if (st != QD_OK) {
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "deriving the equations of motion failed");
+        qd_eom_free(e);
+        return NULL;
+    }
+    return e;
+}

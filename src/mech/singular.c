@@ -1,0 +1,159 @@
+/*
+ * src/mech/singular.c - is the mass matrix singular for every state?
+ *
+ * A row of zeros is the common case (T does not depend on one velocity) and
+ * is read off the symbols.  Otherwise det M is not formed symbolically (a
+ * dense n = 16 determinant is out of reach): M is evaluated at a few random
+ * states, and one state where it has full rank proves det M is not
+ * identically 0.  Rank deficiency at every state means M is singular; the
+ * null space at the last state names the accelerations left undetermined.
+ * Only when M cannot be compiled (a user function in it) is det M built by
+ * fraction-free elimination.
+ */
+#include "mech.h"
+
+#include "qdot/print.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#define NSTATES 3
+#define RANK_TOL 1e-9
+
+static void name_list(qd_buf *b, const qd_eom *e, const bool *pick, const char *suffix) {
+    bool first = true;
+    for (size_t j = 0; j < e->n; j++) {
+        if (!pick[j])
+            continue;
+        qd_buf_printf(b, "%s%s%s", first ? "" : ", ", qd_expr_name(e->q[j]), suffix);
+        first = false;
+    }
+}
+
+/* Rows of zeros: the Lagrangian is at most linear in those velocities. */
+static bool zero_rows(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick) {
+    bool any = false, absent = true;
+    for (size_t j = 0; j < e->n; j++) {
+        pick[j] = true;
+        for (size_t k = 0; k < e->n; k++)
+            pick[j] = pick[j] && qd_is_zero(e->M[j * e->n + k]);
+        any = any || pick[j];
+        if (pick[j])
+            absent = absent && !qd_has(T ? T : e->L, e->qd[j]);
+    }
+    if (!any)
+        return false;
+    qd_buf b = QD_BUF_INIT;
+    name_list(&b, e, pick, "'");
+    if (absent)
+        qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                     "the mass matrix is singular: the %s does not depend on %s",
+                     T ? "kinetic energy" : "Lagrangian", qd_buf_str(&b));
+    else
+        qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                     "the mass matrix is singular: the Lagrangian is at most linear in %s",
+                     qd_buf_str(&b));
+    qd_buf_free(&b);
+    return true;
+}
+
+static void report_null(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, const double *null,
+                        bool *pick) {
+    double top = 0;
+    for (size_t j = 0; j < e->n; j++)
+        top = fmax(top, fabs(null[j]));
+    for (size_t j = 0; j < e->n; j++)
+        pick[j] = fabs(null[j]) > 1e-6 * top;
+    qd_buf b = QD_BUF_INIT;
+    name_list(&b, e, pick, "''");
+    qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                 "the mass matrix is singular: the accelerations %s are not determined (the "
+                 "%s depends on their velocities only through a combination)",
+                 qd_buf_str(&b), T ? "kinetic energy" : "Lagrangian");
+    qd_buf_free(&b);
+}
+
+static void random_state(size_t nin, double *in, unsigned k) {
+    uint64_t s = 0x9e3779b97f4a7c15u * (k + 1);
+    for (size_t i = 0; i < nin; i++) {
+        s = s * 6364136223846793005u + 1442695040888963407u;
+        in[i] = 0.2 + 1.6 * (double)(s >> 11) / 9007199254740992.0;
+    }
+}
+
+static bool all_finite(size_t n, const double *x) {
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(x[i]))
+            return false;
+    return true;
+}
+
+static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, qd_prog *p,
+                               size_t nin, bool *pick) {
+    size_t n = e->n;
+    double *w = malloc((nin + 3 * n * n + 2 * n) * sizeof *w + n * (sizeof(size_t) + 1));
+    if (!w)
+        return QD_ERR_NOMEM;
+    /* scratch layout: in[nin], out[n*n + n], null[n], pc[n], free_col[n] */
+    double *in = w, *out = w + nin, *null = out + n * n + n;
+    size_t *pc = (size_t *)(null + n);
+    bool *free_col = (bool *)(pc + n);
+    int sing = 0, tried = 0;
+    for (unsigned k = 0; k < NSTATES && !(tried && !sing); k++) {
+        random_state(nin, in, k);
+        qd_prog_run(p, in, out);
+        if (!all_finite(n * n, out))
+            continue;
+        tried++;
+        sing = qd__gauss(n, out, NULL, RANK_TOL, pc, free_col, null) < n;
+    }
+    if (tried && sing)
+        report_null(ctx, e, T, null, pick);
+    free(w);
+    return tried && sing ? QD_ERR_SINGULAR : QD_OK;
+}
+
+/* Only for a matrix that cannot be compiled: det M by elimination, for the
+ * few rows where that stays cheap. */
+static qd_status symbolic_check(qd_ctx *ctx, const qd_eom *e) {
+    if (e->n > 4)
+        return QD_OK;
+    const qd_expr *det = qd_simplify(ctx, qd__det(ctx, e->n, e->M));
+    if (!det)
+        return qd_ctx_status(ctx);
+    if (!qd_is_zero(det))
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_SINGULAR, "the mass matrix is singular: det M = 0 for every state");
+    return QD_ERR_SINGULAR;
+}
+
+static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick) {
+    qd__eom_num *num = e->priv;
+    if (qd__eom_compile(ctx, e) == QD_OK)
+        return numeric_check(ctx, e, T, num->prog, num->nin, pick);
+    qd_ctx_clear_error(ctx);
+    size_t nin, nn = e->n * e->n;
+    const qd_expr **in = qd__inputs(ctx, nn, e->M, &nin);
+    qd_prog *p = in ? qd_prog_new(ctx, nin, in, nn, e->M) : NULL;
+    qd_status st;
+    if (p) {
+        st = numeric_check(ctx, e, T, p, nin, pick);
+    } else {
+        qd_ctx_clear_error(ctx);
+        st = symbolic_check(ctx, e);
+    }
+    qd_prog_free(p);
+    free(in);
+    return st;
+}
+
+qd_status qd__check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T) {
+    bool *pick = calloc(e->n ? e->n : 1, sizeof *pick);
+    if (!pick)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_ERR_SINGULAR;
+    if (!zero_rows(ctx, e, T, pick))
+        st = check_by_value(ctx, e, T, pick);
+    free(pick);
+    return st;
+}

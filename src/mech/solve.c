@@ -1,0 +1,322 @@
+/*
+ * src/mech/solve.c - M q'' = f solved: symbolically by fraction-free
+ * elimination, numerically by a compiled program and a dense solver.
+ *
+ * Fraction-free (Bareiss) elimination: after step k every entry is a
+ * determinant of the original entries, so the division by the previous
+ * pivot is exact as polynomials in the entries' generators (Bareiss, Math.
+ * Comp. 22 (1968) 565).  Each step is expanded and cancelled, which keeps
+ * the entries polynomial; only the finished accelerations are simplified.
+ * The solution is x_i = N_i / det M with N_i (Cramer's numerators) found by
+ * a fraction-free back substitution.
+ */
+#include "mech.h"
+
+#include "base/ptrmap.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* Intermediate entries beyond this many operations times the caller's
+ * limit stop the elimination early: the result would not fit either. */
+#define GROWTH 32
+
+typedef struct elim {
+    qd_ctx *ctx;
+    size_t n, w;       /* rows, columns (n, or n + 1 with f) */
+    const qd_expr **A; /* row-major, n*w */
+    size_t limit;      /* operations per entry, 0 for none */
+    int sign;          /* of the row permutation */
+} elim;
+
+static const qd_expr *exact_div(qd_ctx *ctx, const qd_expr *num, const qd_expr *den) {
+    num = qd_expand(ctx, num);
+    if (qd_is_one(den) || !num)
+        return num;
+    return qd_cancel(ctx, qd_div(ctx, num, den));
+}
+
+/* Move a row with an entry that does not simplify to 0 in column k to row
+ * k; false when there is none. */
+static bool find_pivot(elim *el, size_t k) {
+    for (size_t r = k; r < el->n; r++) {
+        const qd_expr *x = qd_simplify(el->ctx, el->A[r * el->w + k]);
+        if (!x || qd_is_zero(x))
+            continue;
+        for (size_t j = 0; r != k && j < el->w; j++) {
+            const qd_expr *t = el->A[r * el->w + j];
+            el->A[r * el->w + j] = el->A[k * el->w + j];
+            el->A[k * el->w + j] = t;
+        }
+        el->sign = r != k ? -el->sign : el->sign;
+        return true;
+    }
+    return false;
+}
+
+static qd_status step(elim *el, size_t k, const qd_expr *prev) {
+    qd_ctx *ctx = el->ctx;
+    const qd_expr *const *A = el->A, *pk = A[k * el->w + k];
+    for (size_t i = k + 1; i < el->n; i++) {
+        for (size_t j = k + 1; j < el->w; j++) {
+            const qd_expr *x = qd_sub(ctx, qd_mul(ctx, pk, A[i * el->w + j]),
+                                      qd_mul(ctx, A[i * el->w + k], A[k * el->w + j]));
+            x = exact_div(ctx, x, prev);
+            if (!x)
+                return qd_ctx_status(ctx);
+            if (el->limit && qd_count_ops(x) > el->limit)
+                return QD_ERR_TOOBIG;
+            el->A[i * el->w + j] = x;
+        }
+        el->A[i * el->w + k] = qd_int(ctx, 0);
+    }
+    return QD_OK;
+}
+
+/* Forward elimination; QD_ERR_SINGULAR when a column has no pivot. */
+static qd_status bareiss(elim *el) {
+    const qd_expr *prev = qd_int(el->ctx, 1);
+    el->sign = 1;
+    for (size_t k = 0; k < el->n; k++) {
+        if (!find_pivot(el, k))
+            return QD_ERR_SINGULAR;
+        qd_status st = step(el, k, prev);
+        if (st != QD_OK)
+            return st;
+        prev = el->A[k * el->w + k];
+    }
+    return QD_OK;
+}
+
+const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
+    const qd_expr **A = malloc((n ? n * n : 1) * sizeof *A);
+    if (!A)
+        return NULL;
+    for (size_t i = 0; i < n * n; i++)
+        A[i] = M[i];
+    elim el = {ctx, n, n, A, 0, 1};
+    qd_status st = n ? bareiss(&el) : QD_OK;
+    const qd_expr *det = st == QD_ERR_SINGULAR ? qd_int(ctx, 0)
+                         : st != QD_OK         ? NULL
+                         : n                   ? A[n * n - 1]
+                                               : qd_int(ctx, 1);
+    if (det && el.sign < 0)
+        det = qd_neg(ctx, det);
+    free(A);
+    return det;
+}
+
+/* Cramer's numerators N (det times the solution) from the echelon form. */
+static qd_status back_substitute(elim *el, const qd_expr *det, const qd_expr **N) {
+    qd_ctx *ctx = el->ctx;
+    size_t n = el->n, w = el->w;
+    for (size_t i = n; i-- > 0;) {
+        const qd_expr *x = qd_mul(ctx, det, el->A[i * w + n]);
+        for (size_t j = i + 1; j < n; j++)
+            x = qd_sub(ctx, x, qd_mul(ctx, el->A[i * w + j], N[j]));
+        N[i] = exact_div(ctx, x, el->A[i * w + i]);
+        if (!N[i])
+            return qd_ctx_status(ctx);
+        if (el->limit && qd_count_ops(N[i]) > el->limit)
+            return QD_ERR_TOOBIG;
+    }
+    return QD_OK;
+}
+
+/* The shorter of N/det simplified as a whole and as two parts. */
+static const qd_expr *quotient(qd_ctx *ctx, const qd_expr *N, const qd_expr *det_s) {
+    const qd_expr *a = qd_simplify(ctx, qd_div(ctx, N, det_s));
+    const qd_expr *b = qd_div(ctx, qd_simplify(ctx, N), det_s);
+    if (!a || !b)
+        return NULL;
+    return qd_count_ops(b) < qd_count_ops(a) ? b : a;
+}
+
+static qd_status solve_entries(elim *el, const qd_expr **acc, size_t max_ops) {
+    qd_ctx *ctx = el->ctx;
+    qd_status st = bareiss(el);
+    const qd_expr *det = el->A[el->n * el->w - 2];
+    if (st != QD_OK)
+        return st;
+    st = back_substitute(el, det, acc);
+    const qd_expr *det_s = qd_simplify(ctx, det);
+    if (st != QD_OK || !det_s)
+        return st != QD_OK ? st : qd_ctx_status(ctx);
+    if (qd_is_zero(det_s))
+        return QD_ERR_SINGULAR;
+    for (size_t i = 0; i < el->n; i++) {
+        acc[i] = quotient(ctx, acc[i], det_s);
+        if (!acc[i])
+            return qd_ctx_status(ctx);
+        if (qd_count_ops(acc[i]) > max_ops)
+            return QD_ERR_TOOBIG;
+    }
+    return QD_OK;
+}
+
+static void solve_error(qd_ctx *ctx, qd_status st, size_t max_ops) {
+    if (qd_ctx_status(ctx) != QD_OK)
+        return;
+    if (st == QD_ERR_TOOBIG)
+        qd_ctx_error(ctx, st, "the explicit accelerations exceed %zu operations; keep M q'' = f",
+                     max_ops);
+    else if (st == QD_ERR_SINGULAR)
+        qd_ctx_error(ctx, st, "the mass matrix is singular: det M = 0 for every state");
+    else
+        qd_ctx_error(ctx, st, "solving M q'' = f failed");
+}
+
+qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
+    size_t n = e->n, w = n + 1;
+    const qd_expr **A = malloc((n * w + 1) * sizeof *A), **acc = calloc(n + 1, sizeof *acc);
+    qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;
+    for (size_t i = 0; st == QD_OK && i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            A[i * w + j] = e->M[i * n + j];
+        A[i * w + n] = e->f[i];
+    }
+    elim el = {ctx, n, w, A, max_ops * GROWTH + 4096, 1};
+    if (st == QD_OK && n)
+        st = solve_entries(&el, acc, max_ops);
+    free(A);
+    if (st != QD_OK) {
+        free(acc);
+        solve_error(ctx, st, max_ops);
+        return st;
+    }
+    free(e->acc);
+    e->acc = acc;
+    return QD_OK;
+}
+
+/* ---- numbers ------------------------------------------------------------ */
+
+static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const qd_expr ***all,
+                         size_t *len, size_t *cap) {
+    size_t k = qd_free_symbols(ctx, x, NULL, 0);
+    const qd_expr **syms = malloc((k ? k : 1) * sizeof *syms);
+    if (!syms)
+        return false;
+    qd_free_symbols(ctx, x, syms, k);
+    bool ok = true;
+    for (size_t i = 0; ok && i < k; i++) {
+        if (qd_ptrmap_has(seen, syms[i]))
+            continue;
+        if (*len == *cap) {
+            *cap = *cap ? 2 * *cap : 16;
+            const qd_expr **grown = realloc(*all, *cap * sizeof *grown);
+            ok = grown != NULL;
+            *all = grown ? grown : *all;
+        }
+        ok = ok && qd_ptrmap_put(seen, syms[i], (void *)syms[i]);
+        if (ok)
+            (*all)[(*len)++] = syms[i];
+    }
+    free(syms);
+    return ok;
+}
+
+const qd_expr **qd__inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin) {
+    qd_ptrmap seen = QD_PTRMAP_INIT;
+    const qd_expr **all = NULL;
+    size_t len = 0, cap = 0;
+    bool ok = true;
+    for (size_t i = 0; ok && i < n; i++)
+        ok = push_symbols(ctx, exprs[i], &seen, &all, &len, &cap);
+    qd_ptrmap_free(&seen);
+    if (ok && !all)
+        all = malloc(sizeof *all);
+    if (!ok || !all) {
+        free(all);
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory compiling the equations of motion");
+        return NULL;
+    }
+    *nin = len;
+    return all;
+}
+
+void qd__eom_num_free(qd__eom_num *num) {
+    if (!num)
+        return;
+    qd_prog_free(num->prog);
+    free(num->inputs);
+    free(num->in);
+    free(num->out);
+    num->prog = NULL;
+    num->inputs = NULL;
+    num->in = num->out = NULL;
+}
+
+qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
+    qd__eom_num *num = e->priv;
+    size_t n = e->n, nout = n * n + n;
+    if (num->prog)
+        return QD_OK;
+    const qd_expr **outs = malloc((nout + 1) * sizeof *outs);
+    if (!outs)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < n * n; i++)
+        outs[i] = e->M[i];
+    for (size_t i = 0; i < n; i++)
+        outs[n * n + i] = e->f[i];
+    num->inputs = qd__inputs(ctx, nout, outs, &num->nin);
+    if (num->inputs)
+        num->prog = qd_prog_new(ctx, num->nin, num->inputs, nout, outs);
+    free(outs);
+    num->in = malloc((num->nin + 1) * sizeof *num->in);
+    num->out = malloc((nout + 1) * sizeof *num->out);
+    if (!num->prog || !num->in || !num->out) {
+        qd__eom_num_free(num);
+        return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+    }
+    return QD_OK;
+}
+
+/* The inputs in the program's order; symbols M and f do not have are
+ * ignored, and the ones not given stay 0. */
+static void fill_inputs(qd__eom_num *num, size_t nvals, const qd_expr *const *syms,
+                        const double *vals) {
+    for (size_t i = 0; i < num->nin; i++) {
+        num->in[i] = 0;
+        for (size_t k = 0; k < nvals; k++)
+            if (syms[k] == num->inputs[i])
+                num->in[i] = vals[k];
+    }
+}
+
+static qd_status solve_numeric(qd_ctx *ctx, const qd_eom *e, const double *Mv, const double *fv,
+                               double *qdd) {
+    size_t n = e->n;
+    double *A = malloc((n * n + 1) * sizeof *A);
+    size_t *pc = malloc((n + 1) * sizeof *pc);
+    qd_status st = A && pc ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK) {
+        for (size_t i = 0; i < n * n; i++)
+            A[i] = Mv[i];
+        for (size_t i = 0; i < n; i++)
+            qdd[i] = fv[i];
+        if (qd__gauss(n, A, qdd, 1e-12 * (double)n, pc, NULL, NULL) < n) {
+            st = QD_ERR_SINGULAR;
+            qd_ctx_error(ctx, st, "the mass matrix is singular at this state");
+        }
+    }
+    free(A);
+    free(pc);
+    return st;
+}
+
+qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
+                      const double *vals, double *M, double *f, double *qdd) {
+    qd__eom_num *num = e->priv;
+    qd_status st = qd__eom_compile(ctx, e);
+    if (st != QD_OK)
+        return st;
+    size_t n = e->n;
+    fill_inputs(num, nvals, syms, vals);
+    qd_prog_run(num->prog, num->in, num->out);
+    for (size_t i = 0; M && i < n * n; i++)
+        M[i] = num->out[i];
+    for (size_t i = 0; f && i < n; i++)
+        f[i] = num->out[n * n + i];
+    return qdd ? solve_numeric(ctx, e, num->out, num->out + n * n, qdd) : QD_OK;
+}

@@ -1,0 +1,608 @@
+/*
+ * src/sym/poly.c - sparse Laurent polynomials (see poly.h).
+ *
+ * Sums and products accumulate into a hash table keyed by monomial: the
+ * product of a p-term and a q-term polynomial costs p*q monomial merges and
+ * table probes, whatever the number of like terms; no expression node is
+ * made until the result is converted back.
+ */
+#include "poly.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A coefficient as a value: q points into a polynomial or a scratch mpq. */
+typedef struct cval {
+    uint32_t kind;
+    int64_t i;
+    double f;
+    mpq_srcptr q;
+} cval;
+
+/* ---- memory ----------------------------------------------------------------- */
+
+void qd_poly_free(qd_poly *p) {
+    if (!p)
+        return;
+    for (size_t i = 0; i < p->nbig; i++) {
+        mpq_clear(p->bigs[i]);
+        free(p->bigs[i]);
+    }
+    free(p->bigs);
+    free(p->terms);
+    free(p->pool);
+    free(p);
+}
+
+qd_poly *qd_poly_zero(qd_ctx *ctx) {
+    qd_poly *p = calloc(1, sizeof *p);
+    if (!p)
+        qd__oom(ctx);
+    return p;
+}
+
+static bool grow(void **v, size_t *cap, size_t need, size_t size) {
+    if (need <= *cap)
+        return true;
+    size_t c = *cap ? *cap : 8;
+    while (c < need)
+        c *= 2;
+    void *nv = realloc(*v, c * size);
+    if (!nv)
+        return false;
+    *v = nv;
+    *cap = c;
+    return true;
+}
+
+/* A new rational owned by p; its index, or -1. */
+static long new_big(qd_poly *p) {
+    if (!grow((void **)&p->bigs, &p->bigcap, p->nbig + 1, sizeof *p->bigs))
+        return -1;
+    mpq_ptr q = malloc(sizeof *q);
+    if (!q)
+        return -1;
+    mpq_init(q);
+    p->bigs[p->nbig] = q;
+    return (long)p->nbig++;
+}
+
+/* ---- coefficients ---------------------------------------------------------- */
+
+static void mpz_set_i64(mpz_ptr z, int64_t v) {
+    uint64_t u = v < 0 ? -(uint64_t)v : (uint64_t)v;
+    mpz_import(z, 1, 1, sizeof u, 0, 0, &u);
+    if (v < 0)
+        mpz_neg(z, z);
+}
+
+static void mpq_set_i64(mpq_ptr q, int64_t v) {
+    mpz_set_i64(mpq_numref(q), v);
+    mpz_set_ui(mpq_denref(q), 1);
+}
+
+static cval cv_get(const qd_poly *p, const qd_coef *c) {
+    cval v = {c->kind, 0, 0.0, NULL};
+    if (c->kind == QD_COEF_INT)
+        v.i = c->v.i;
+    else if (c->kind == QD_COEF_FLT)
+        v.f = c->v.f;
+    else
+        v.q = p->bigs[c->v.big];
+    return v;
+}
+
+static double cv_double(cval v) {
+    if (v.kind == QD_COEF_INT)
+        return (double)v.i;
+    return v.kind == QD_COEF_FLT ? v.f : mpq_get_d(v.q);
+}
+
+/* v as a rational in tmp (or v's own). */
+static mpq_srcptr cv_mpq(cval v, mpq_ptr tmp) {
+    if (v.kind == QD_COEF_BIG)
+        return v.q;
+    mpq_set_i64(tmp, v.i);
+    return tmp;
+}
+
+/* a*b; a rational result lives in out (two scratch rationals needed). */
+static cval cv_mul(cval a, cval b, mpq_ptr out, mpq_ptr tmp) {
+    cval r = {QD_COEF_INT, 0, 0.0, NULL};
+    if (a.kind == QD_COEF_FLT || b.kind == QD_COEF_FLT) {
+        r.kind = QD_COEF_FLT;
+        r.f = cv_double(a) * cv_double(b);
+        return r;
+    }
+    if (a.kind == QD_COEF_INT && b.kind == QD_COEF_INT &&
+        !__builtin_mul_overflow(a.i, b.i, &r.i))
+        return r;
+    mpq_srcptr qa = cv_mpq(a, out);
+    mpq_srcptr qb = cv_mpq(b, tmp);
+    mpq_mul(out, qa, qb);
+    r.kind = QD_COEF_BIG;
+    r.q = out;
+    return r;
+}
+
+static bool coef_store(qd_poly *p, qd_coef *c, cval v) {
+    c->kind = v.kind;
+    if (v.kind == QD_COEF_INT)
+        c->v.i = v.i;
+    else if (v.kind == QD_COEF_FLT)
+        c->v.f = v.f;
+    else {
+        long k = new_big(p);
+        if (k < 0)
+            return false;
+        mpq_set(p->bigs[k], v.q);
+        c->v.big = (uint32_t)k;
+    }
+    return true;
+}
+
+/* c += v, c stored in p; tmp is scratch. */
+static bool coef_acc(qd_poly *p, qd_coef *c, cval v, mpq_ptr tmp) {
+    int64_t sum;
+    if (c->kind == QD_COEF_INT && v.kind == QD_COEF_INT &&
+        !__builtin_add_overflow(c->v.i, v.i, &sum)) {
+        c->v.i = sum;
+        return true;
+    }
+    if (c->kind == QD_COEF_FLT || v.kind == QD_COEF_FLT) {
+        double x = cv_double(cv_get(p, c)) + cv_double(v);
+        c->kind = QD_COEF_FLT;
+        c->v.f = x;
+        return true;
+    }
+    if (c->kind == QD_COEF_INT) {
+        long k = new_big(p);
+        if (k < 0)
+            return false;
+        mpq_set_i64(p->bigs[k], c->v.i);
+        c->kind = QD_COEF_BIG;
+        c->v.big = (uint32_t)k;
+    }
+    mpq_ptr q = p->bigs[c->v.big];
+    mpq_add(q, q, cv_mpq(v, tmp));
+    return true;
+}
+
+static bool coef_zero(const qd_poly *p, const qd_coef *c) {
+    if (c->kind == QD_COEF_INT)
+        return c->v.i == 0;
+    if (c->kind == QD_COEF_FLT)
+        return c->v.f == 0.0;
+    return mpq_sgn(p->bigs[c->v.big]) == 0;
+}
+
+bool qd_poly_coef_is_zero(const qd_poly *p, size_t t) { return coef_zero(p, &p->terms[t].c); }
+
+bool qd_poly_coef_is_one(const qd_poly *p, size_t t) {
+    const qd_coef *c = &p->terms[t].c;
+    if (c->kind == QD_COEF_INT)
+        return c->v.i == 1;
+    return c->kind == QD_COEF_BIG && mpq_cmp_si(p->bigs[c->v.big], 1, 1) == 0;
+}
+
+const qd_expr *qd_poly_coef_node(qd_ctx *ctx, const qd_poly *p, size_t t) {
+    cval v = cv_get(p, &p->terms[t].c);
+    if (v.kind == QD_COEF_FLT)
+        return qd_float(ctx, v.f);
+    if (v.kind == QD_COEF_BIG)
+        return qd__rat_mpq(ctx, v.q);
+    if (v.i >= -1000000000 && v.i <= 1000000000)
+        return qd_int(ctx, (long)v.i);
+    mpq_t q;
+    mpq_init(q);
+    mpq_set_i64(q, v.i);
+    const qd_expr *r = qd__rat_mpq(ctx, q);
+    mpq_clear(q);
+    return r;
+}
+
+/* ---- monomials ---------------------------------------------------------------- */
+
+static uint64_t pair_hash(uint32_t var, int32_t exp) {
+    uint64_t z = ((uint64_t)var << 32 | (uint32_t)exp) + 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+/* The product of two monomials into out; its length, or -1 on overflow. */
+static long mono_mul(qd_pvar *out, const qd_pvar *a, uint32_t na, const qd_pvar *b,
+                     uint32_t nb, uint64_t *hash) {
+    uint32_t i = 0, j = 0;
+    long n = 0;
+    uint64_t h = 0;
+    while (i < na || j < nb) {
+        qd_pvar v;
+        if (j == nb || (i < na && a[i].var < b[j].var))
+            v = a[i++];
+        else if (i == na || b[j].var < a[i].var)
+            v = b[j++];
+        else {
+            v.var = a[i].var;
+            if (__builtin_add_overflow(a[i].exp, b[j].exp, &v.exp))
+                return -1;
+            i++, j++;
+            if (v.exp == 0)
+                continue; /* x * x^-1 */
+        }
+        out[n++] = v;
+        h += pair_hash(v.var, v.exp);
+    }
+    *hash = h;
+    return n;
+}
+
+static bool mono_eq(const qd_pvar *a, const qd_pvar *b, uint32_t len) {
+    for (uint32_t i = 0; i < len; i++)
+        if (a[i].var != b[i].var || a[i].exp != b[i].exp)
+            return false;
+    return true;
+}
+
+/* ---- the accumulating builder ------------------------------------------------- */
+
+typedef struct pbuild {
+    qd_ctx *ctx;
+    qd_poly *out;
+    uint32_t *slot; /* term index + 1; 0 is empty */
+    size_t mask;
+    mpq_t tmp, prod, tmp2;
+} pbuild;
+
+static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
+    size_t cap = 16;
+    while (cap < 2 * expect && cap < ((size_t)1 << 26))
+        cap *= 2;
+    b->ctx = ctx;
+    b->out = calloc(1, sizeof *b->out);
+    b->slot = calloc(cap, sizeof *b->slot);
+    b->mask = cap - 1;
+    mpq_inits(b->tmp, b->prod, b->tmp2, NULL);
+    if (!b->out || !b->slot) {
+        qd__oom(ctx);
+        return false;
+    }
+    return true;
+}
+
+static void pb_release(pbuild *b) {
+    free(b->slot);
+    b->slot = NULL;
+    mpq_clears(b->tmp, b->prod, b->tmp2, NULL);
+}
+
+static void pb_fail(pbuild *b) {
+    pb_release(b);
+    qd_poly_free(b->out);
+    b->out = NULL;
+}
+
+static bool pb_rehash(pbuild *b) {
+    size_t cap = (b->mask + 1) * 2;
+    uint32_t *slot = calloc(cap, sizeof *slot);
+    if (!slot)
+        return false;
+    for (size_t t = 0; t < b->out->n; t++) {
+        size_t i = b->out->terms[t].hash & (cap - 1);
+        while (slot[i])
+            i = (i + 1) & (cap - 1);
+        slot[i] = (uint32_t)t + 1;
+    }
+    free(b->slot);
+    b->slot = slot;
+    b->mask = cap - 1;
+    return true;
+}
+
+static bool pb_new_term(pbuild *b, size_t i, const qd_pvar *m, uint32_t len, uint64_t h,
+                        cval c) {
+    qd_poly *p = b->out;
+    if (p->n >= QD_POLY_MAX_TERMS) {
+        qd_ctx_error(b->ctx, QD_ERR_TOOBIG, "expansion beyond %u terms", QD_POLY_MAX_TERMS);
+        return false;
+    }
+    if (!grow((void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
+        !grow((void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool))
+        goto oom;
+    qd_pterm *t = &p->terms[p->n];
+    t->hash = h;
+    t->off = (uint32_t)p->plen;
+    t->len = len;
+    if (len)
+        memcpy(p->pool + p->plen, m, len * sizeof *m);
+    p->plen += len;
+    if (!coef_store(p, &t->c, c))
+        goto oom;
+    b->slot[i] = (uint32_t)++p->n;
+    if (2 * p->n > b->mask && !pb_rehash(b))
+        goto oom;
+    return true;
+oom:
+    qd__oom(b->ctx);
+    return false;
+}
+
+/* Add c times the monomial m. */
+static bool pb_add(pbuild *b, const qd_pvar *m, uint32_t len, uint64_t h, cval c) {
+    size_t i = h & b->mask;
+    for (uint32_t s; (s = b->slot[i]) != 0; i = (i + 1) & b->mask) {
+        qd_pterm *t = &b->out->terms[s - 1];
+        if (t->hash == h && t->len == len && mono_eq(b->out->pool + t->off, m, len)) {
+            if (coef_acc(b->out, &t->c, c, b->tmp))
+                return true;
+            qd__oom(b->ctx);
+            return false;
+        }
+    }
+    return pb_new_term(b, i, m, len, h, c);
+}
+
+/* The result, without the terms that cancelled. */
+static qd_poly *pb_finish(pbuild *b) {
+    qd_poly *p = b->out;
+    size_t m = 0;
+    for (size_t t = 0; t < p->n; t++)
+        if (!coef_zero(p, &p->terms[t].c))
+            p->terms[m++] = p->terms[t];
+    p->n = m;
+    pb_release(b);
+    return p;
+}
+
+/* ---- arithmetic ------------------------------------------------------------------ */
+
+static qd_poly *single(qd_ctx *ctx, const qd_pvar *m, uint32_t len, cval c) {
+    pbuild b;
+    uint64_t h = 0;
+    for (uint32_t i = 0; i < len; i++)
+        h += pair_hash(m[i].var, m[i].exp);
+    if (!pb_init(&b, ctx, 1) || !pb_add(&b, m, len, h, c)) {
+        pb_fail(&b);
+        return NULL;
+    }
+    return pb_finish(&b);
+}
+
+qd_poly *qd_poly_number(qd_ctx *ctx, const qd_expr *num) {
+    cval c = {QD_COEF_FLT, 0, 0.0, NULL};
+    if (num->kind == QD_FLOAT) {
+        c.f = num->u.f;
+    } else if (mpz_cmp_ui(mpq_denref(num->u.q), 1) == 0 &&
+               mpz_sizeinbase(mpq_numref(num->u.q), 2) < 62) {
+        c.kind = QD_COEF_INT;
+        c.i = mpz_get_si(mpq_numref(num->u.q));
+    } else {
+        c.kind = QD_COEF_BIG;
+        c.q = num->u.q;
+    }
+    return single(ctx, NULL, 0, c);
+}
+
+qd_poly *qd_poly_var(qd_ctx *ctx, uint32_t var, int32_t exp) {
+    qd_pvar v = {var, exp};
+    cval one = {QD_COEF_INT, 1, 0.0, NULL};
+    return single(ctx, &v, exp ? 1 : 0, one);
+}
+
+qd_poly *qd_poly_add_n(qd_ctx *ctx, size_t n, const qd_poly *const *ps) {
+    size_t total = 0;
+    for (size_t k = 0; k < n; k++)
+        total += ps[k]->n;
+    pbuild b;
+    if (!pb_init(&b, ctx, total))
+        goto fail;
+    for (size_t k = 0; k < n; k++) {
+        const qd_poly *p = ps[k];
+        for (size_t t = 0; t < p->n; t++) {
+            const qd_pterm *pt = &p->terms[t];
+            if (!pb_add(&b, p->pool + pt->off, pt->len, pt->hash, cv_get(p, &pt->c)))
+                goto fail;
+        }
+    }
+    return pb_finish(&b);
+fail:
+    pb_fail(&b);
+    return NULL;
+}
+
+static size_t max_len(const qd_poly *p) {
+    size_t m = 0;
+    for (size_t t = 0; t < p->n; t++)
+        if (p->terms[t].len > m)
+            m = p->terms[t].len;
+    return m;
+}
+
+static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) {
+    for (size_t i = 0; i < x->n; i++) {
+        const qd_pterm *s = &x->terms[i];
+        cval cs = cv_get(x, &s->c);
+        for (size_t j = 0; j < y->n; j++) {
+            const qd_pterm *t = &y->terms[j];
+            uint64_t h;
+            long len = mono_mul(m, x->pool + s->off, s->len, y->pool + t->off, t->len, &h);
+            if (len < 0) {
+                qd_ctx_error(b->ctx, QD_ERR_TOOBIG, "exponent overflow in expansion");
+                return false;
+            }
+            cval c = cv_mul(cs, cv_get(y, &t->c), b->prod, b->tmp2);
+            if (!pb_add(b, m, (uint32_t)len, h, c))
+                return false;
+        }
+    }
+    return true;
+}
+
+qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
+    bool done;
+    qd_poly *fast = qd_poly_mul_packed(ctx, x, y, &done);
+    if (done)
+        return fast;
+    /* Like terms usually merge, and a small table stays in cache; it grows
+     * when they do not. */
+    size_t expect = x->n > y->n ? x->n : y->n;
+    qd_pvar stack[64];
+    size_t need = max_len(x) + max_len(y);
+    pbuild b;
+    if (!pb_init(&b, ctx, expect)) {
+        pb_fail(&b);
+        return NULL;
+    }
+    qd_pvar *m = need <= 64 ? stack : malloc(need * sizeof *m);
+    if (!m)
+        qd__oom(ctx);
+    bool ok = m && mul_into(&b, x, y, m);
+    if (m != stack)
+        free(m);
+    if (!ok) {
+        pb_fail(&b);
+        return NULL;
+    }
+    return pb_finish(&b);
+}
+
+/* c^n for a single term, exactly (or in floating point when c is a float). */
+static cval cv_pow(cval c, long n, mpq_ptr out) {
+    cval r = c;
+    if (c.kind == QD_COEF_FLT) {
+        r.f = pow(c.f, (double)n);
+        return r;
+    }
+    if (c.kind == QD_COEF_INT && (c.i == 1 || c.i == -1)) {
+        r.i = (n % 2 == 0) ? 1 : c.i;
+        return r;
+    }
+    unsigned long an = n < 0 ? (unsigned long)-n : (unsigned long)n;
+    mpq_set(out, cv_mpq(c, out));
+    mpz_pow_ui(mpq_numref(out), mpq_numref(out), an);
+    mpz_pow_ui(mpq_denref(out), mpq_denref(out), an);
+    if (n < 0)
+        mpq_inv(out, out);
+    r.kind = QD_COEF_BIG;
+    r.q = out;
+    return r;
+}
+
+static qd_poly *mono_pow(qd_ctx *ctx, const qd_poly *a, long n) {
+    const qd_pterm *t = &a->terms[0];
+    qd_pvar stack[64];
+    qd_pvar *m = t->len <= 64 ? stack : malloc(t->len * sizeof *m);
+    if (!m) {
+        qd__oom(ctx);
+        return NULL;
+    }
+    qd_poly *r = NULL;
+    bool ok = n <= INT32_MAX && n >= -INT32_MAX;
+    for (uint32_t i = 0; ok && i < t->len; i++) {
+        m[i] = a->pool[t->off + i];
+        ok = !__builtin_mul_overflow(m[i].exp, (int32_t)n, &m[i].exp);
+    }
+    if (ok) {
+        mpq_t q;
+        mpq_init(q);
+        r = single(ctx, m, t->len, cv_pow(cv_get(a, &t->c), n, q));
+        mpq_clear(q);
+    } else {
+        qd_ctx_error(ctx, QD_ERR_TOOBIG, "exponent overflow in expansion");
+    }
+    if (m != stack)
+        free(m);
+    return r;
+}
+
+qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
+    if (n == 0) {
+        cval one = {QD_COEF_INT, 1, 0.0, NULL};
+        return single(ctx, NULL, 0, one);
+    }
+    if (a->n == 0)
+        return n > 0 ? qd_poly_zero(ctx) : NULL;
+    if (a->n == 1)
+        return mono_pow(ctx, a, n);
+    if (n < 0) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "negative power of a polynomial with %zu terms", a->n);
+        return NULL;
+    }
+    bool done;
+    qd_poly *fast = qd_poly_pow_packed(ctx, a, n, &done);
+    if (done)
+        return fast;
+    /* Repeated multiplication by the (small) base beats squaring here: the
+     * last squaring alone costs |a^(n/2)|^2, more than all n steps. */
+    qd_poly *acc = qd_poly_mul(ctx, a, a);
+    for (long k = 2; acc && k < n; k++) {
+        qd_poly *next = qd_poly_mul(ctx, acc, a);
+        qd_poly_free(acc);
+        acc = next;
+    }
+    return acc;
+}
+
+int32_t qd_poly_exp(const qd_poly *p, size_t t, uint32_t var) {
+    const qd_pterm *pt = &p->terms[t];
+    for (uint32_t i = 0; i < pt->len; i++)
+        if (p->pool[pt->off + i].var == var)
+            return p->pool[pt->off + i].exp;
+    return 0;
+}
+
+bool qd_poly_append(qd_ctx *ctx, qd_poly *dst, const qd_poly *src, size_t t, uint32_t var) {
+    const qd_pterm *st = &src->terms[t];
+    if (!grow((void **)&dst->terms, &dst->cap, dst->n + 1, sizeof *dst->terms) ||
+        !grow((void **)&dst->pool, &dst->pcap, dst->plen + st->len, sizeof *dst->pool))
+        goto oom;
+    qd_pterm *dt = &dst->terms[dst->n];
+    dt->off = (uint32_t)dst->plen;
+    dt->hash = 0;
+    for (uint32_t i = 0; i < st->len; i++) {
+        qd_pvar v = src->pool[st->off + i];
+        if (v.var == var)
+            continue;
+        dst->pool[dst->plen++] = v;
+        dt->hash += pair_hash(v.var, v.exp);
+    }
+    dt->len = (uint32_t)(dst->plen - dt->off);
+    if (!coef_store(dst, &dt->c, cv_get(src, &st->c)))
+        goto oom;
+    dst->n++;
+    return true;
+oom:
+    qd__oom(ctx);
+    return false;
+}
+
+bool qd_poly_push_int(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, int64_t c) {
+    if (!grow((void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
+        !grow((void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool)) {
+        qd__oom(ctx);
+        return false;
+    }
+    qd_pterm *t = &p->terms[p->n++];
+    t->off = (uint32_t)p->plen;
+    t->len = len;
+    t->hash = 0;
+    t->c.kind = QD_COEF_INT;
+    t->c.v.i = c;
+    for (uint32_t i = 0; i < len; i++) {
+        p->pool[p->plen++] = m[i];
+        t->hash += pair_hash(m[i].var, m[i].exp);
+    }
+    return true;
+}
+
+qd_poly *qd_poly_slice(qd_ctx *ctx, const qd_poly *p, uint32_t var, int32_t exp) {
+    qd_poly *r = qd_poly_zero(ctx);
+    for (size_t t = 0; r && t < p->n; t++) {
+        if (qd_poly_exp(p, t, var) == exp && !qd_poly_append(ctx, r, p, t, var)) {
+            qd_poly_free(r);
+            r = NULL;
+        }
+    }
+    return r;
+}

@@ -1,0 +1,114 @@
+/*
+ * src/sym/poly.h - sparse Laurent polynomials over generators, and the
+ * expansion session built on them.
+ *
+ * A generator is a maximal non-polynomial subexpression (a symbol, a call,
+ * a power with a non-integer exponent, the inverse of a sum, pi, ...),
+ * known by its index in the session.  A polynomial is a list of terms; a
+ * term is a numeric coefficient and a monomial, the (generator, exponent)
+ * pairs sorted by generator with nonzero signed exponents, so x * x^-1
+ * cancels like any other exponent.
+ *
+ * Coefficients are int64 while they fit, GMP rationals after an overflow or
+ * a division, and doubles as soon as a float takes part (a float coefficient
+ * makes its term float, as in the constructors).
+ *
+ * Errors (out of memory, an exponent or a size beyond the limits) are
+ * recorded in the context and reported as a NULL polynomial.
+ */
+#ifndef QD_SYM_POLY_H
+#define QD_SYM_POLY_H
+
+#include "node.h"
+
+enum { QD_COEF_INT, QD_COEF_BIG, QD_COEF_FLT };
+
+/* A polynomial may not grow beyond this many terms (QD_ERR_TOOBIG). */
+#define QD_POLY_MAX_TERMS 20000000u
+
+typedef struct qd_coef {
+    uint32_t kind;
+    union {
+        int64_t i;
+        double f;
+        uint32_t big; /* index into the owning polynomial's bigs */
+    } v;
+} qd_coef;
+
+typedef struct qd_pvar {
+    uint32_t var;
+    int32_t exp;
+} qd_pvar;
+
+typedef struct qd_pterm {
+    uint64_t hash;     /* of the monomial alone */
+    uint32_t off, len; /* the monomial: pool[off .. off+len) */
+    qd_coef c;
+} qd_pterm;
+
+typedef struct qd_poly {
+    qd_pterm *terms;
+    size_t n, cap;
+    qd_pvar *pool;
+    size_t plen, pcap;
+    mpq_ptr *bigs;
+    size_t nbig, bigcap;
+} qd_poly;
+
+void qd_poly_free(qd_poly *p);
+qd_poly *qd_poly_zero(qd_ctx *ctx);
+qd_poly *qd_poly_number(qd_ctx *ctx, const qd_expr *num); /* a rational or float node */
+qd_poly *qd_poly_var(qd_ctx *ctx, uint32_t var, int32_t exp);
+qd_poly *qd_poly_add_n(qd_ctx *ctx, size_t n, const qd_poly *const *ps);
+qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *a, const qd_poly *b);
+/* a^n for n >= 0; negative n only for a single term (its inverse). */
+qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n);
+/* The terms of p in which var has exponent exp, with var removed. */
+qd_poly *qd_poly_slice(qd_ctx *ctx, const qd_poly *p, uint32_t var, int32_t exp);
+/* Append term t of src to dst, leaving out var (UINT32_MAX for none); the
+ * caller keeps monomials distinct. */
+bool qd_poly_append(qd_ctx *ctx, qd_poly *dst, const qd_poly *src, size_t t, uint32_t var);
+/* Append a term with an integer coefficient; m sorted, its exponents nonzero,
+ * and distinct from the monomials already in p. */
+bool qd_poly_push_int(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, int64_t c);
+/* x*y by packed monomials (poly_pack.c) when both fit; *done false when they
+ * do not (nothing recorded, NULL), else the result (NULL on error). */
+qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done);
+/* a^n (n >= 2) the same way. */
+qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done);
+/* The exponent of var in term t of p (0 when absent). */
+int32_t qd_poly_exp(const qd_poly *p, size_t t, uint32_t var);
+/* The coefficient of term t as a number node. */
+const qd_expr *qd_poly_coef_node(qd_ctx *ctx, const qd_poly *p, size_t t);
+bool qd_poly_coef_is_one(const qd_poly *p, size_t t);
+bool qd_poly_coef_is_zero(const qd_poly *p, size_t t);
+
+/* ---- expand.c: the expansion session ------------------------------------ */
+
+typedef struct qd_xsess {
+    qd_ctx *ctx;
+    qd_ptrmap polys;    /* node -> its qd_poly (owned) */
+    qd_ptrmap exprs;    /* node -> its expansion */
+    qd_ptrmap genix;    /* generator node -> index + 1 */
+    const qd_expr **gens;
+    size_t ngens, gcap;
+    qd_poly **owned;
+    size_t nowned, ocap;
+    struct qd_powslot *pows; /* cache of generator^k nodes */
+    size_t powcap, powlen;
+} qd_xsess;
+
+void qd__xs_init(qd_xsess *s, qd_ctx *ctx);
+void qd__xs_free(qd_xsess *s);
+/* The polynomial of e (owned by the session), NULL on error. */
+const qd_poly *qd__xs_poly(qd_xsess *s, const qd_expr *e);
+/* The canonical node of p, itself fully expanded. */
+const qd_expr *qd__xs_expr(qd_xsess *s, const qd_poly *p);
+/* Keep p alive until the session ends (and free it then). */
+bool qd__xs_own(qd_xsess *s, qd_poly *p);
+/* The index of generator g, adding it when new; -1 on error. */
+long qd__xs_gen(qd_xsess *s, const qd_expr *g);
+/* The expansion of e. */
+const qd_expr *qd__xs_expand(qd_xsess *s, const qd_expr *e);
+
+#endif

@@ -1,0 +1,68 @@
+/*
+ * src/sym/simplify.c - the simplifier the mechanics layer runs on every
+ * equation entry.
+ *
+ * A pipeline, expand -> trigsimp -> cancel (only where there is a
+ * denominator) -> factor_terms, and a shorter path that skips the expansion
+ * (trigsimp -> factor_terms on the input as it is).  Every stage keeps the
+ * value where the input is defined; the result is the candidate with the
+ * fewest operations by qd_count_ops, the input itself among them, so the
+ * simplifier never makes an expression longer.  On ties the later, more
+ * processed candidate wins.
+ */
+#include "node.h"
+
+/* A negative numeric power anywhere: a quotient cancel may shorten. */
+static bool has_quotient(const qd_expr *e, qd_ptrmap *seen) {
+    if (!e->nargs || qd_ptrmap_has(seen, e))
+        return false;
+    if (e->kind == QD_POW && qd__is_num(e->args[1]) && qd_number_sign(e->args[1]) < 0)
+        return true;
+    for (size_t i = 0; i < e->nargs; i++)
+        if (has_quotient(e->args[i], seen))
+            return true;
+    qd_ptrmap_put(seen, e, (void *)e);
+    return false;
+}
+
+typedef struct best {
+    const qd_expr *e;
+    size_t ops;
+    bool failed;
+} best;
+
+static void consider(best *b, const qd_expr *cand) {
+    if (!cand) {
+        b->failed = true;
+        return;
+    }
+    size_t n = qd_count_ops(cand);
+    if (n <= b->ops) {
+        b->e = cand;
+        b->ops = n;
+    }
+}
+
+const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
+    if (!e)
+        return NULL;
+    best b = {e, qd_count_ops(e), false};
+    const qd_expr *t = qd_trigsimp(ctx, e);
+    consider(&b, t);
+    consider(&b, qd_factor_terms(ctx, t));
+
+    const qd_expr *x = qd_expand(ctx, e);
+    consider(&b, x);
+    x = qd_trigsimp(ctx, x);
+    consider(&b, x);
+    qd_ptrmap seen = QD_PTRMAP_INIT;
+    bool quotient = x && has_quotient(x, &seen);
+    qd_ptrmap_free(&seen);
+    if (quotient) {
+        const qd_expr *c = qd_cancel(ctx, x);
+        consider(&b, c);
+        consider(&b, qd_factor_terms(ctx, qd_trigsimp(ctx, c)));
+    }
+    consider(&b, qd_factor_terms(ctx, x));
+    return b.failed ? NULL : b.e;
+}

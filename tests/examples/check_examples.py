@@ -1,0 +1,425 @@
+#!/usr/bin/env python3
+"""Check every model in examples/ against its textbook equations of motion.
+
+For each example, at several random states (fixed seed) run
+
+    qdot eom FILE --at "q=..., q'=..., t=..." --format json
+
+and compare the accelerations qdot reports with the textbook formula for the
+accelerations, written out below with the math module, one function per
+example (each cites its seed, chapter and equation; the reference notes are
+in /work/shared/reference/).  The formulas are independent of qdot: they are
+the books' results, not something derived from qdot's output.  Parameters take
+the example's defaults (read from its `parameters` line), and once more values
+given with --set.
+
+Usage: check_examples.py --build BUILD_DIR --examples EXAMPLES_DIR
+Prints "N passed, N failed" and exits 1 on any failure.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import re
+import subprocess
+import sys
+
+from math import sin, cos, sqrt, pi
+
+REL_TOL = 1e-9
+STATES = 5
+SEED = 20260503
+
+EXAMPLES = {}
+
+
+def example(name, coords, ranges=None, vel=1.5, t=(0.0, 3.0)):
+    """Register the textbook accelerations of examples/NAME.qd.
+
+    ranges maps a coordinate to the interval its random values come from
+    (default [-1.5, 1.5]); velocities come from [-vel, vel], t from t."""
+    def wrap(fn):
+        EXAMPLES[name] = dict(coords=coords, ranges=ranges or {}, vel=vel, t=t, acc=fn)
+        return fn
+    return wrap
+
+
+def solve(M, f):
+    """M x = f by Gaussian elimination with partial pivoting (small n)."""
+    n = len(f)
+    a = [list(map(float, M[i])) + [float(f[i])] for i in range(n)]
+    for c in range(n):
+        p = max(range(c, n), key=lambda r: abs(a[r][c]))
+        a[c], a[p] = a[p], a[c]
+        for r in range(c + 1, n):
+            k = a[r][c] / a[c][c]
+            for j in range(c, n + 1):
+                a[r][j] -= k * a[c][j]
+    x = [0.0] * n
+    for i in reversed(range(n)):
+        x[i] = (a[i][n] - sum(a[i][j] * x[j] for j in range(i + 1, n))) / a[i][i]
+    return x
+
+
+# ---------------------------------------------------------------------------
+# The textbook formulas.  Each gets q (coordinates), v (velocities), t and p
+# (parameters), all by name, and returns the accelerations in coordinate order.
+
+@example('double_pendulum', ['theta1', 'theta2'])
+def _(q, v, t, p):
+    # Goldstein ch. 1 Exercise 22; reference seed-goldstein-britannica.md G13:
+    # (m1+m2) l1 th1'' + m2 l2 th2'' cos(d) + m2 l2 th2'^2 sin(d) + (m1+m2) g sin th1 = 0
+    # l2 th2'' + l1 th1'' cos(d) - l1 th1'^2 sin(d) + g sin th2 = 0,  d = th1 - th2
+    m1, m2, l1, l2, g = p['m1'], p['m2'], p['l1'], p['l2'], p['g']
+    th1, th2, w1, w2 = q['theta1'], q['theta2'], v['theta1'], v['theta2']
+    d = th1 - th2
+    M = [[(m1 + m2) * l1, m2 * l2 * cos(d)], [l1 * cos(d), l2]]
+    f = [-m2 * l2 * w2**2 * sin(d) - (m1 + m2) * g * sin(th1),
+         l1 * w1**2 * sin(d) - g * sin(th2)]
+    return solve(M, f)
+
+
+@example('free_particle_spherical', ['r', 'theta', 'phi'],
+         ranges={'r': (0.5, 2.0), 'theta': (0.3, 2.8)})
+def _(q, v, t, p):
+    # Desloge ch. 48 Ex. 1; Byerly Art. 15a; seed-byerly.md TC01 with no force:
+    # r'' = r (th'^2 + sin^2 th ph'^2); (1/r) d/dt(r^2 th') = r sin th cos th ph'^2;
+    # d/dt(r^2 sin^2 th ph') = 0
+    r, th = q['r'], q['theta']
+    rd, thd, phd = v['r'], v['theta'], v['phi']
+    return [r * (thd**2 + sin(th)**2 * phd**2),
+            sin(th) * cos(th) * phd**2 - 2 * rd * thd / r,
+            -2 * rd * phd / r - 2 * cos(th) / sin(th) * thd * phd]
+
+
+@example('atwood', ['x'])
+def _(q, v, t, p):
+    # Goldstein sec. 1.6 example 2: (M1 + M2) x'' = (M1 - M2) g
+    return [(p['M1'] - p['M2']) / (p['M1'] + p['M2']) * p['g']]
+
+
+@example('compound_atwood', ['x', 'y'])
+def _(q, v, t, p):
+    # Byerly Art. 8b, p. 19; seed-byerly.md TC11: x'' = g/23, y'' = 8 g/23
+    return [p['g'] / 23, 8 * p['g'] / 23]
+
+
+@example('bead_rotating_wire', ['r'], ranges={'r': (0.1, 2.0)})
+def _(q, v, t, p):
+    # Goldstein sec. 1.6 example 3 (G03, pitfall P2): r'' = omega^2 r
+    return [p['omega']**2 * q['r']]
+
+
+@example('bead_spinning_hoop', ['theta'])
+def _(q, v, t, p):
+    # Desloge ch. 50 Ex. 1 eq. 39: th'' - w^2 sin th cos th + (g/a) sin th = 0
+    th = q['theta']
+    return [p['omega']**2 * sin(th) * cos(th) - p['g'] / p['a'] * sin(th)]
+
+
+def lorentz(q, v, p):
+    # Goldstein eqs. 1.60-1.66; Desloge ch. 53 Ex. 1 (T35): m r'' = q (E + v x B)
+    vx, vy, vz = v['x'], v['y'], v['z']
+    Bx, By, Bz = p['Bx'], p['By'], p['Bz']
+    k = p['q'] / p['m']
+    return [k * (p['Ex'] + vy * Bz - vz * By),
+            k * (p['Ey'] + vz * Bx - vx * Bz),
+            k * (p['Ez'] + vx * By - vy * Bx)]
+
+
+@example('charged_particle_EB', ['x', 'y', 'z'])
+def _(q, v, t, p):
+    return lorentz(q, v, p)
+
+
+@example('charged_particle_gauge', ['x', 'y', 'z'])
+def _(q, v, t, p):
+    # Goldstein Derivation 9 (G05): a gauge transformation leaves the Lorentz force
+    return lorentz(q, v, p)
+
+
+@example('rotating_frame', ['x', 'y'])
+def _(q, v, t, p):
+    # Byerly Art. 6 Ex. 2 (TC09); Britannica sec. 3 eqs. 9-15 (B05):
+    # m (x'' - 2 w y' - w^2 x) = -mu (x - a),  m (y'' + 2 w x' - w^2 y) = -mu y
+    w, mu, m, a = p['w'], p['mu'], p['m'], p['a']
+    x, y, xd, yd = q['x'], q['y'], v['x'], v['y']
+    return [2 * w * yd + w**2 * x - mu / m * (x - a),
+            -2 * w * xd + w**2 * y - mu / m * y]
+
+
+@example('damped_pendulum', ['theta'])
+def _(q, v, t, p):
+    # Goldstein eqs. 1.67-1.70: m l^2 th'' + k l^2 th' + m g l sin th = 0
+    return [-p['g'] / p['l'] * sin(q['theta']) - p['k'] / p['m'] * v['theta']]
+
+
+@example('spring_pendulum', ['r', 'theta'], ranges={'r': (0.5, 2.0)})
+def _(q, v, t, p):
+    # Goldstein ch. 1 Exercise 24:
+    # m r'' = m r th'^2 + m g cos th - k (r - l0);  r th'' + 2 r' th' + g sin th = 0
+    r, th, rd, thd = q['r'], q['theta'], v['r'], v['theta']
+    g = p['g']
+    return [r * thd**2 + g * cos(th) - p['k'] / p['m'] * (r - p['l0']),
+            -(2 * rd * thd + g * sin(th)) / r]
+
+
+@example('two_particles_interaction', ['x1', 'y1', 'x2', 'y2'],
+         ranges={'x1': (-1.5, -0.3), 'x2': (0.3, 1.5)})
+def _(q, v, t, p):
+    # Goldstein eq. 1.36, Desloge ch. 47 P2 (T03): pair force along r1 - r2,
+    # V12 = k/2 (rho - d)^2, V12' = k (rho - d); gravity -g on each
+    dx, dy = q['x1'] - q['x2'], q['y1'] - q['y2']
+    rho = math.hypot(dx, dy)
+    f = p['k'] * (rho - p['d']) / rho          # force on 1 is -f (r1 - r2)
+    m1, m2, g = p['m1'], p['m2'], p['g']
+    return [-f * dx / m1, -g - f * dy / m1, f * dx / m2, -g + f * dy / m2]
+
+
+@example('driven_pendulum_vertical', ['theta'])
+def _(q, v, t, p):
+    # Desloge ch. 54 P1 method (T39) with the support at (0, a cos wt):
+    # b th'' + (g - a w^2 cos wt) sin th = 0
+    a, w, b, g = p['a'], p['w'], p['b'], p['g']
+    return [-(g - a * w**2 * cos(w * t)) * sin(q['theta']) / b]
+
+
+@example('pendulum_support_circle', ['theta'])
+def _(q, v, t, p):
+    # Desloge ch. 54 P1 (T39): b th'' + g sin th - a w^2 cos(th - w t) = 0
+    a, w, b, g = p['a'], p['w'], p['b'], p['g']
+    th = q['theta']
+    return [(a * w**2 * cos(th - w * t) - g * sin(th)) / b]
+
+
+@example('total_derivative_potential', ['x', 'y'])
+def _(q, v, t, p):
+    # Desloge ch. 54 eqs. 5-9, P7 (T45): a total time derivative in U exerts no
+    # force, so m x'' = -K x, m y'' = -K y (the free oscillator)
+    k = p['K'] / p['m']
+    return [-k * q['x'], -k * q['y']]
+
+
+@example('cylindrical_force', ['rho', 'ph', 'z'], ranges={'rho': (0.3, 2.0)})
+def _(q, v, t, p):
+    # Desloge ch. 48 P1 (T05):  m (rho'' - rho ph'^2) = F_rho,
+    # m (rho ph'' + 2 rho' ph') = F_ph,  m z'' = Fz
+    rho, ph, rhod, phd = q['rho'], q['ph'], v['rho'], v['ph']
+    m = p['m']
+    Frho = p['Fx'] * cos(ph) + p['Fy'] * sin(ph)
+    Fph = -p['Fx'] * sin(ph) + p['Fy'] * cos(ph)
+    return [rho * phd**2 + Frho / m, (Fph / m - 2 * rhod * phd) / rho, p['Fz'] / m]
+
+
+@example('polar_generalized_force', ['r', 'theta'], ranges={'r': (0.3, 2.0)})
+def _(q, v, t, p):
+    # Goldstein sec. 1.6 example 1(b) (G01): m r'' - m r th'^2 = F_r,
+    # m r^2 th'' + 2 m r r' th' = r F_th
+    r, rd, thd, m = q['r'], v['r'], v['theta'], p['m']
+    return [r * thd**2 + p['Fr'] / m, (p['Fth'] / m - 2 * rd * thd) / r]
+
+
+@example('paraboloid', ['rho', 'ph'], ranges={'rho': (0.2, 2.0)})
+def _(q, v, t, p):
+    # Desloge ch. 72 P2 (C T19), z = c rho^2:
+    # (1 + 4c^2 rho^2) rho'' + 4 c^2 rho rho'^2 - rho ph'^2 + 2 g c rho = 0;  d/dt(rho^2 ph') = 0
+    rho, rhod, phd = q['rho'], v['rho'], v['ph']
+    c, g = p['c'], p['g']
+    return [(rho * phd**2 - 4 * c**2 * rho * rhod**2 - 2 * g * c * rho) / (1 + 4 * c**2 * rho**2),
+            -2 * rhod * phd / rho]
+
+
+@example('spherical_pendulum', ['theta', 'phi'], ranges={'theta': (0.3, 2.8)})
+def _(q, v, t, p):
+    # Byerly Art. 5 Ex. 3 (TC05): th'' - sin th cos th ph'^2 + (g/a) sin th = 0,
+    # sin^2 th ph' = C
+    th, thd, phd = q['theta'], v['theta'], v['phi']
+    return [sin(th) * cos(th) * phd**2 - p['g'] / p['a'] * sin(th),
+            -2 * cos(th) / sin(th) * thd * phd]
+
+
+@example('kepler_polar', ['r', 'theta'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58-59 (B T13): m (r'' - r th'^2) = -k/r^2;  d/dt(m r^2 th') = 0
+    r, rd, thd = q['r'], v['r'], v['theta']
+    return [r * thd**2 - p['k'] / (p['m'] * r**2), -2 * rd * thd / r]
+
+
+@example('table_hanging_mass', ['r', 'theta'], ranges={'r': (0.3, 1.8)})
+def _(q, v, t, p):
+    # Goldstein ch. 1 Exercise 21 (G11): (m1 + m2) r'' - m1 r th'^2 + m2 g = 0;
+    # d/dt(m1 r^2 th') = 0
+    r, rd, thd = q['r'], v['r'], v['theta']
+    m1, m2 = p['m1'], p['m2']
+    return [(m1 * r * thd**2 - m2 * p['g']) / (m1 + m2), -2 * rd * thd / r]
+
+
+@example('sphere_on_wedge', ['x', 'y'])
+def _(q, v, t, p):
+    # Byerly Art. 9 Ex. 3 (TC19):
+    # y'' = a^2 (M+m) g sin al / ((M+m)(a^2+k^2) - m a^2 cos^2 al), (M+m) x'' = m y'' cos al
+    M, m, a, k, al, g = p['M'], p['m'], p['a'], p['kg'], p['alpha'], p['g']
+    ydd = a**2 * (M + m) * g * sin(al) / ((M + m) * (a**2 + k**2) - m * a**2 * cos(al)**2)
+    return [m * ydd * cos(al) / (M + m), ydd]
+
+
+@example('spring_supported_pendulum', ['y', 'theta'])
+def _(q, v, t, p):
+    # Desloge ch. 53 P2 (T37):
+    # m (y'' - b th'' sin th - b th'^2 cos th) + k y + c (y' - b th' sin th) = 0
+    # m b^2 th'' - m b y'' sin th + m g b sin th + c (b^2 th' - b y' sin th) = 0
+    m, b, k, c, g = p['m'], p['b'], p['k'], p['c'], p['g']
+    y, th, yd, thd = q['y'], q['theta'], v['y'], v['theta']
+    s, co = sin(th), cos(th)
+    M = [[m, -m * b * s], [-m * b * s, m * b**2]]
+    f = [m * b * thd**2 * co - k * y - c * (yd - b * thd * s),
+         -m * g * b * s - c * (b**2 * thd - b * yd * s)]
+    return solve(M, f)
+
+
+@example('double_pendulum_force', ['theta1', 'theta2'])
+def _(q, v, t, p):
+    # Goldstein Exercise 22 (G13) with Desloge ch. 50 P1 (T13):
+    # Q_th1 = F l1 cos th1, Q_th2 = F l2 cos th2
+    m1, m2, l1, l2, g, F = p['m1'], p['m2'], p['l1'], p['l2'], p['g'], p['F']
+    th1, th2, w1, w2 = q['theta1'], q['theta2'], v['theta1'], v['theta2']
+    d = th1 - th2
+    M = [[(m1 + m2) * l1**2, m2 * l1 * l2 * cos(d)], [m2 * l1 * l2 * cos(d), m2 * l2**2]]
+    f = [-m2 * l1 * l2 * w2**2 * sin(d) - (m1 + m2) * g * l1 * sin(th1) + F * l1 * cos(th1),
+         m2 * l1 * l2 * w1**2 * sin(d) - m2 * g * l2 * sin(th2) + F * l2 * cos(th2)]
+    return solve(M, f)
+
+
+@example('tethered_spinning_disk', ['theta'])
+def _(q, v, t, p):
+    # Desloge ch. 50 P5 (T17): th'' + (b w^2/a) sin th = 0
+    return [-p['b'] * p['w']**2 / p['a'] * sin(q['theta'])]
+
+
+@example('bead_helix', ['ph'])
+def _(q, v, t, p):
+    # Desloge ch. 51 Ex. 1 (T15), gravity along -z: (a^2 + b^2) ph'' = -g b
+    a, b = p['a'], p['b']
+    return [-p['g'] * b / (a**2 + b**2)]
+
+
+# ---------------------------------------------------------------------------
+
+def read_parameters(path):
+    """The defaults on the example's `parameters` lines: {name: value}."""
+    params = {}
+    with open(path) as fh:
+        for line in fh:
+            line = line.split('#', 1)[0].strip()
+            if not line.startswith('parameters '):
+                continue
+            for item in line[len('parameters '):].split(','):
+                name, value = item.split('=')
+                params[name.strip()] = float(eval(value, {'sqrt': sqrt, 'pi': pi}))
+    return params
+
+
+def run_qdot(qdot, path, state, sets):
+    at = ', '.join('%s=%r' % kv for kv in state.items())
+    cmd = [qdot, 'eom', path, '--at', at, '--format', 'json']
+    for name, value in sets.items():
+        cmd += ['--set', '%s=%r' % (name, value)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
+    if proc.returncode != 0:
+        raise RuntimeError('exit %d: %s' % (proc.returncode, proc.stderr.strip()[:400]))
+    return json.loads(proc.stdout), cmd
+
+
+def flat(m):
+    out = []
+    for x in m:
+        out.extend(flat(x) if isinstance(x, list) else [x])
+    return out
+
+
+def qdot_accelerations(data, n):
+    if 'accelerations' not in data:
+        raise KeyError('no "accelerations" in the JSON output')
+    acc = [float(a) for a in data['accelerations']]
+    # M q'' = f must hold too, with the M and f printed beside q''.
+    M = [float(x) for x in flat(data['mass_matrix'])]
+    f = [float(x) for x in data['forcing']]
+    Mq = [sum(M[i * n + j] * acc[j] for j in range(n)) for i in range(n)]
+    if not close(Mq, f):
+        raise ValueError('M q\'\' = %r but f = %r' % (Mq, f))
+    return acc
+
+
+def close(got, want):
+    scale = max([1.0] + [abs(w) for w in want])
+    return len(got) == len(want) and all(
+        abs(g - w) <= REL_TOL * max(abs(w), 1e-300) or abs(g - w) <= REL_TOL * scale
+        for g, w in zip(got, want))
+
+
+def check_one(qdot, path, spec, rng, sets, defaults):
+    params = dict(defaults)
+    params.update(sets)
+    q = {c: rng.uniform(*spec['ranges'].get(c, (-1.5, 1.5))) for c in spec['coords']}
+    v = {c: rng.uniform(-spec['vel'], spec['vel']) for c in spec['coords']}
+    t = rng.uniform(*spec['t'])
+    state = dict(q)
+    state.update({c + "'": x for c, x in v.items()})
+    state['t'] = t
+    data, cmd = run_qdot(qdot, path, state, sets)
+    if data.get('coordinates') != spec['coords']:
+        return 'coordinates %r, expected %r' % (data.get('coordinates'), spec['coords']), cmd
+    want = spec['acc'](q, v, t, params)
+    got = qdot_accelerations(data, len(spec['coords']))
+    if not close(got, want):
+        return 'accelerations %r, textbook %r' % (got, want), cmd
+    return None, cmd
+
+
+def perturbed(defaults, rng):
+    return {k: float('%.6g' % (x * rng.uniform(0.6, 1.4))) for k, x in defaults.items()}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--build', required=True)
+    ap.add_argument('--examples', required=True)
+    ap.add_argument('--states', type=int, default=STATES)
+    ap.add_argument('--seed', type=int, default=SEED)
+    ap.add_argument('--only', help='comma-separated example names')
+    args = ap.parse_args()
+    qdot = os.path.join(args.build, 'qdot')
+    rng = random.Random(args.seed)
+    files = sorted(f[:-3] for f in os.listdir(args.examples) if f.endswith('.qd'))
+    if args.only:
+        files = [f for f in files if f in args.only.split(',')]
+    passed = failed = 0
+    for name in files:
+        path = os.path.join(args.examples, name + '.qd')
+        spec = EXAMPLES.get(name)
+        if spec is None:
+            print('FAIL %s: no textbook formula in check_examples.py' % name)
+            failed += 1
+            continue
+        defaults = read_parameters(path)
+        runs = [{}] * args.states + [perturbed(defaults, rng)]
+        for sets in runs:
+            try:
+                err, cmd = check_one(qdot, path, spec, rng, sets, defaults)
+            except Exception as exc:     # a crash, bad JSON, a timeout
+                err, cmd = '%s: %s' % (type(exc).__name__, exc), None
+            if err:
+                failed += 1
+                print('FAIL %s: %s' % (name, err))
+                if cmd:
+                    print('  ' + ' '.join("'%s'" % c if ' ' in c else c for c in cmd))
+            else:
+                passed += 1
+        print('%-28s checked' % name)
+    print('%d passed, %d failed' % (passed, failed))
+    return 1 if failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

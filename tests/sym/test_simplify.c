@@ -1,0 +1,217 @@
+/*
+ * tests/sym/test_simplify.c - the simplifier: the planar n-link pendulum's
+ * mass matrix, factor_terms, and a property test over random expressions.
+ *
+ * Pendulum: point masses m_i on massless rods l_i, angles q_i from the
+ * downward vertical; x_i = sum_{k<=i} l_k sin q_k, y_i = -sum_{k<=i} l_k cos q_k,
+ * T = sum_i m_i/2 (x_i'^2 + y_i'^2).  Then d^2T/dq_j'dq_k' is
+ *   (m_max(j,k) + ... + m_n) l_j l_k cos(q_j - q_k)
+ * (the sum of m_i l_j l_k (cos q_j cos q_k + sin q_j sin q_k) over i >= j, k).
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <time.h>
+
+#include "qdot/qdot.h"
+#include "util/randexpr.h"
+
+#define MAXN 8
+
+typedef struct pendulum {
+    const qd_expr *q[MAXN], *qd[MAXN], *m[MAXN], *l[MAXN], *T;
+} pendulum;
+
+static void build_pendulum(qd_ctx *ctx, int n, pendulum *p) {
+    char name[16];
+    const qd_expr *x = qd_int(ctx, 0), *y = qd_int(ctx, 0), *T = qd_int(ctx, 0);
+    for (int i = 0; i < n; i++) {
+        snprintf(name, sizeof name, "q%d", i + 1);
+        p->q[i] = qd_coord(ctx, name);
+        p->qd[i] = qd_jet(ctx, p->q[i], 1);
+        snprintf(name, sizeof name, "m%d", i + 1);
+        p->m[i] = qd_param(ctx, name);
+        snprintf(name, sizeof name, "l%d", i + 1);
+        p->l[i] = qd_param(ctx, name);
+        x = qd_add(ctx, x, qd_mul(ctx, p->l[i], qd_fn(ctx, QD_SIN, p->q[i])));
+        y = qd_sub(ctx, y, qd_mul(ctx, p->l[i], qd_fn(ctx, QD_COS, p->q[i])));
+        const qd_expr *v2 = qd_add(ctx, qd_powi(ctx, qd_dt(ctx, x), 2),
+                                   qd_powi(ctx, qd_dt(ctx, y), 2));
+        T = qd_add(ctx, T, qd_mul(ctx, qd_mul(ctx, qd_rat(ctx, 1, 2), p->m[i]), v2));
+    }
+    p->T = T;
+}
+
+static const qd_expr *expected_entry(qd_ctx *ctx, const pendulum *p, int n, int j, int k) {
+    const qd_expr *msum = qd_add_n(ctx, (size_t)(n - (j > k ? j : k)), p->m + (j > k ? j : k));
+    if (j == k)
+        return qd_mul(ctx, msum, qd_powi(ctx, p->l[j], 2));
+    const qd_expr *c = qd_fn(ctx, QD_COS, qd_sub(ctx, p->q[j], p->q[k]));
+    return qd_mul_n(ctx, 4, (const qd_expr *[]){msum, p->l[j], p->l[k], c});
+}
+
+static void pendulum_mass_matrix(void **state) {
+    (void)state;
+    for (int n = 1; n <= 6; n++) {
+        qd_ctx *ctx = qd_ctx_new();
+        pendulum p;
+        build_pendulum(ctx, n, &p);
+        for (int j = 0; j < n; j++)
+            for (int k = 0; k < n; k++) {
+                const qd_expr *M = qd_diff(ctx, qd_diff(ctx, p.T, p.qd[j]), p.qd[k]);
+                const qd_expr *s = qd_simplify(ctx, M);
+                if (s != expected_entry(ctx, &p, n, j, k))
+                    fail_msg("n = %d: M[%d][%d] not simplified", n, j + 1, k + 1);
+            }
+        qd_ctx_free(ctx);
+    }
+}
+
+/* Spherical pendulum: T = m l^2/2 (theta'^2 + sin^2 theta phi'^2), which needs
+ * sin^2 + cos^2 = 1 twice over (first in phi, then in theta). */
+static void spherical_pendulum(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *th = qd_coord(ctx, "theta"), *ph = qd_coord(ctx, "phi");
+    const qd_expr *m = qd_param(ctx, "m"), *l = qd_param(ctx, "l");
+    const qd_expr *st = qd_fn(ctx, QD_SIN, th), *ct = qd_fn(ctx, QD_COS, th);
+    const qd_expr *sp = qd_fn(ctx, QD_SIN, ph), *cp = qd_fn(ctx, QD_COS, ph);
+    const qd_expr *pos[3] = {qd_mul_n(ctx, 3, (const qd_expr *[]){l, st, cp}),
+                             qd_mul_n(ctx, 3, (const qd_expr *[]){l, st, sp}),
+                             qd_neg(ctx, qd_mul(ctx, l, ct))};
+    const qd_expr *v2 = qd_int(ctx, 0);
+    for (int i = 0; i < 3; i++)
+        v2 = qd_add(ctx, v2, qd_powi(ctx, qd_dt(ctx, pos[i]), 2));
+    const qd_expr *T = qd_mul_n(ctx, 3, (const qd_expr *[]){qd_rat(ctx, 1, 2), m, v2});
+    const qd_expr *inner = qd_add(ctx, qd_powi(ctx, qd_jet(ctx, th, 1), 2),
+                                  qd_mul(ctx, qd_powi(ctx, st, 2),
+                                         qd_powi(ctx, qd_jet(ctx, ph, 1), 2)));
+    const qd_expr *want =
+        qd_mul_n(ctx, 4, (const qd_expr *[]){qd_rat(ctx, 1, 2), m, qd_powi(ctx, l, 2), inner});
+    assert_ptr_equal(qd_simplify(ctx, T), want);
+    qd_ctx_free(ctx);
+}
+
+/* Not a pass/fail test: the time to simplify the n = 8 mass matrix. */
+static void pendulum_timing(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    pendulum p;
+    clock_t t0 = clock();
+    build_pendulum(ctx, MAXN, &p);
+    const qd_expr *M[MAXN][MAXN];
+    for (int j = 0; j < MAXN; j++)
+        for (int k = 0; k < MAXN; k++)
+            M[j][k] = qd_diff(ctx, qd_diff(ctx, p.T, p.qd[j]), p.qd[k]);
+    clock_t t1 = clock();
+    for (int j = 0; j < MAXN; j++)
+        for (int k = 0; k < MAXN; k++)
+            assert_ptr_equal(qd_simplify(ctx, M[j][k]), expected_entry(ctx, &p, MAXN, j, k));
+    clock_t t2 = clock();
+    print_message("n = 8 pendulum: build + diff %.1f ms, simplify 64 entries %.1f ms\n",
+                  1e3 * (double)(t1 - t0) / CLOCKS_PER_SEC,
+                  1e3 * (double)(t2 - t1) / CLOCKS_PER_SEC);
+    qd_ctx_free(ctx);
+}
+
+static void factor_terms(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *a = qd_symbol(ctx, "a"), *x = qd_symbol(ctx, "x"), *y = qd_symbol(ctx, "y");
+    const qd_expr *two = qd_int(ctx, 2);
+    /* 2*a*x + 4*a*y = 2*a*(x + 2*y) */
+    const qd_expr *e = qd_add(ctx, qd_mul_n(ctx, 3, (const qd_expr *[]){two, a, x}),
+                              qd_mul_n(ctx, 3, (const qd_expr *[]){qd_int(ctx, 4), a, y}));
+    const qd_expr *want = qd_mul_n(ctx, 3, (const qd_expr *[]){two, a,
+                                   qd_add(ctx, x, qd_mul(ctx, two, y))});
+    assert_ptr_equal(qd_factor_terms(ctx, e), want);
+    /* the sign follows the first term: -a*x - a*y = -a*(x + y) */
+    e = qd_neg(ctx, qd_add(ctx, qd_mul(ctx, a, x), qd_mul(ctx, a, y)));
+    assert_ptr_equal(qd_factor_terms(ctx, e), qd_mul(ctx, qd_neg(ctx, a), qd_add(ctx, x, y)));
+    /* smallest exponents, negative ones too: x^-1 + x^-2 = x^-2 (x + 1) */
+    e = qd_add(ctx, qd_powi(ctx, x, -1), qd_powi(ctx, x, -2));
+    assert_ptr_equal(qd_factor_terms(ctx, e),
+                     qd_mul(ctx, qd_powi(ctx, x, -2), qd_add(ctx, x, qd_int(ctx, 1))));
+    /* a^2 x^3 + a^3 x^2 y = a^2 x^2 (x + a y), inside a function too */
+    e = qd_add(ctx, qd_mul(ctx, qd_powi(ctx, a, 2), qd_powi(ctx, x, 3)),
+               qd_mul_n(ctx, 3, (const qd_expr *[]){qd_powi(ctx, a, 3), qd_powi(ctx, x, 2), y}));
+    want = qd_mul_n(ctx, 3, (const qd_expr *[]){qd_powi(ctx, a, 2), qd_powi(ctx, x, 2),
+                                                qd_add(ctx, x, qd_mul(ctx, a, y))});
+    assert_ptr_equal(qd_factor_terms(ctx, qd_fn(ctx, QD_SIN, e)), qd_fn(ctx, QD_SIN, want));
+    /* nothing in common: unchanged */
+    e = qd_add(ctx, x, y);
+    assert_ptr_equal(qd_factor_terms(ctx, e), e);
+    qd_ctx_free(ctx);
+}
+
+/* A random expression; with `planted`, times an identity worth 1 and plus a
+ * product that expands to sums of sines and cosines of two angles. */
+static const qd_expr *random_case(qd_ctx *ctx, qt_rng *r, const qd_expr *const *syms,
+                                  unsigned flags, bool planted) {
+    const qd_expr *e = qt_random_expr(ctx, r, syms, 3, 5, flags);
+    if (!planted)
+        return e;
+    const qd_expr *u = qt_random_expr(ctx, r, syms, 3, 2, QT_POLY);
+    const qd_expr *v = qt_random_expr(ctx, r, syms, 3, 2, QT_POLY);
+    const qd_expr *one = qd_add(ctx, qd_powi(ctx, qd_fn(ctx, QD_SIN, u), 2),
+                                qd_powi(ctx, qd_fn(ctx, QD_COS, u), 2));
+    const qd_expr *a = qd_add(ctx, qd_mul(ctx, syms[0], qd_fn(ctx, QD_COS, u)),
+                              qd_mul(ctx, syms[1], qd_fn(ctx, QD_SIN, u)));
+    const qd_expr *b = qd_add(ctx, qd_mul(ctx, syms[0], qd_fn(ctx, QD_COS, v)),
+                              qd_mul(ctx, syms[1], qd_fn(ctx, QD_SIN, v)));
+    return qd_add(ctx, qd_mul(ctx, e, one), qd_mul(ctx, a, b));
+}
+
+static void check_random(qd_ctx *ctx, qt_rng *r, unsigned flags, int count, uint64_t seed) {
+    const qd_expr *syms[3] = {qd_symbol(ctx, "x"), qd_symbol(ctx, "y"), qd_symbol(ctx, "z")};
+    for (int n = 0; n < count; n++) {
+        const qd_expr *e = random_case(ctx, r, syms, flags, n % 4 == 3);
+        const qd_expr *s = qd_simplify(ctx, e);
+        qd_buf b = QD_BUF_INIT;
+        qd_print(ctx, e, QD_FMT_TEXT, &b);
+        if (!s)
+            fail_msg("seed %llu case %d: simplify failed on %s: %s", (unsigned long long)seed,
+                     n, qd_buf_str(&b), qd_ctx_message(ctx));
+        if (qd_count_ops(s) > qd_count_ops(e))
+            fail_msg("seed %llu case %d: longer after simplify: %s", (unsigned long long)seed,
+                     n, qd_buf_str(&b));
+        for (int k = 0; k < 3; k++) {
+            double v[3], ve, vs;
+            for (int i = 0; i < 3; i++)
+                v[i] = qt_uniform(r, -1, 1);
+            if (qd_eval(ctx, e, 3, syms, v, &ve) != QD_OK || !isfinite(ve))
+                continue;
+            assert_int_equal(qd_eval(ctx, s, 3, syms, v, &vs), QD_OK);
+            if (fabs(ve - vs) > 1e-8 * (1 + fabs(ve)))
+                fail_msg("seed %llu case %d: %.17g != %.17g for %s", (unsigned long long)seed,
+                         n, ve, vs, qd_buf_str(&b));
+        }
+        qd_buf_free(&b);
+    }
+}
+
+static void keeps_value(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qt_rng r = {31337};
+    check_random(ctx, &r, QT_TRIG | QT_POLY | QT_DIV, 800, 31337);
+    r.s = 4242;
+    check_random(ctx, &r, QT_ALL, 600, 4242);
+    qd_ctx_free(ctx);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(factor_terms),
+        cmocka_unit_test(pendulum_mass_matrix),
+        cmocka_unit_test(spherical_pendulum),
+        cmocka_unit_test(keeps_value),
+        cmocka_unit_test(pendulum_timing),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

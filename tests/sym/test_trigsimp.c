@@ -1,0 +1,142 @@
+/*
+ * tests/sym/test_trigsimp.c - trigonometric identities.
+ *
+ * Each identity is checked by building both sides with the constructors and
+ * asserting one node; larger sums check that the rules find their pairs
+ * among unrelated terms, and random sums of products are compared by value.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+
+#include "qdot/qdot.h"
+#include "util/randexpr.h"
+
+typedef struct fix {
+    qd_ctx *ctx;
+    const qd_expr *x, *y, *z, *a, *b;
+} fix;
+
+static int setup(void **state) {
+    static fix f;
+    f.ctx = qd_ctx_new();
+    f.x = qd_symbol(f.ctx, "x");
+    f.y = qd_symbol(f.ctx, "y");
+    f.z = qd_symbol(f.ctx, "z");
+    f.a = qd_symbol(f.ctx, "a");
+    f.b = qd_symbol(f.ctx, "b");
+    *state = &f;
+    return f.ctx ? 0 : -1;
+}
+
+static int teardown(void **state) {
+    qd_ctx_free(((fix *)*state)->ctx);
+    return 0;
+}
+
+#define C (((fix *)*state)->ctx)
+#define X (((fix *)*state)->x)
+#define Y (((fix *)*state)->y)
+#define Z (((fix *)*state)->z)
+#define A (((fix *)*state)->a)
+#define B (((fix *)*state)->b)
+#define I(n) qd_int(C, n)
+#define SIN(u) qd_fn(C, QD_SIN, u)
+#define COS(u) qd_fn(C, QD_COS, u)
+#define SQ(u) qd_powi(C, u, 2)
+#define MUL(...) qd_mul_n(C, sizeof((const qd_expr *[]){__VA_ARGS__}) / sizeof(void *), \
+                          (const qd_expr *[]){__VA_ARGS__})
+#define ADD(...) qd_add_n(C, sizeof((const qd_expr *[]){__VA_ARGS__}) / sizeof(void *), \
+                          (const qd_expr *[]){__VA_ARGS__})
+
+static void pythagoras(void **state) {
+    assert_ptr_equal(qd_trigsimp(C, ADD(SQ(SIN(X)), SQ(COS(X)))), I(1));
+    /* c*A*sin^2 + c*A*cos^2 = c*A */
+    const qd_expr *ca = MUL(qd_rat(C, -3, 2), A, qd_powi(C, B, 3));
+    assert_ptr_equal(qd_trigsimp(C, ADD(MUL(ca, SQ(SIN(X))), MUL(ca, SQ(COS(X))))), ca);
+    /* a compound angle, and higher powers: s^4 c + s^2 c^3 = s^2 c */
+    const qd_expr *u = qd_add(C, X, qd_mul(C, I(2), Y));
+    assert_ptr_equal(qd_trigsimp(C, ADD(MUL(A, SQ(SIN(u))), MUL(A, SQ(COS(u))))), A);
+    assert_ptr_equal(qd_trigsimp(C, ADD(MUL(qd_powi(C, SIN(X), 4), COS(X)),
+                                        MUL(SQ(SIN(X)), qd_powi(C, COS(X), 3)))),
+                     MUL(SQ(SIN(X)), COS(X)));
+    /* 1 - sin^2 = cos^2, a - a*cos^2 = a*sin^2 */
+    assert_ptr_equal(qd_trigsimp(C, qd_sub(C, I(1), SQ(SIN(X)))), SQ(COS(X)));
+    assert_ptr_equal(qd_trigsimp(C, qd_sub(C, A, MUL(A, SQ(COS(X))))), MUL(A, SQ(SIN(X))));
+    /* different coefficients or angles: nothing to do */
+    const qd_expr *e = ADD(MUL(I(2), SQ(SIN(X))), SQ(COS(X)));
+    assert_ptr_equal(qd_trigsimp(C, e), e);
+    e = ADD(SQ(SIN(X)), SQ(COS(Y)));
+    assert_ptr_equal(qd_trigsimp(C, e), e);
+}
+
+static void angle_sums(void **state) {
+    const qd_expr *k = MUL(I(5), A, B);
+    const qd_expr *cc = MUL(k, COS(X), COS(Y)), *ss = MUL(k, SIN(X), SIN(Y));
+    const qd_expr *sc = MUL(k, SIN(X), COS(Y)), *cs = MUL(k, COS(X), SIN(Y));
+    assert_ptr_equal(qd_trigsimp(C, qd_add(C, cc, ss)), MUL(k, COS(qd_sub(C, X, Y))));
+    assert_ptr_equal(qd_trigsimp(C, qd_sub(C, cc, ss)), MUL(k, COS(qd_add(C, X, Y))));
+    assert_ptr_equal(qd_trigsimp(C, qd_add(C, sc, cs)), MUL(k, SIN(qd_add(C, X, Y))));
+    assert_ptr_equal(qd_trigsimp(C, qd_sub(C, sc, cs)), MUL(k, SIN(qd_sub(C, X, Y))));
+    assert_ptr_equal(qd_trigsimp(C, qd_sub(C, cs, sc)), MUL(k, SIN(qd_sub(C, Y, X))));
+    /* the same rules on compound angles, and repeated: cos(x-y)cos z + sin(x-y)sin z */
+    const qd_expr *u = qd_sub(C, X, Y);
+    assert_ptr_equal(qd_trigsimp(C, ADD(MUL(COS(u), COS(Z)), MUL(SIN(u), SIN(Z)))),
+                     COS(ADD(X, qd_neg(C, Y), qd_neg(C, Z))));
+    /* a rule that fires, then one that fires on its result:
+     * cos x cos y cos z - sin x sin y cos z - sin(x+y) sin z = cos(x+y+z) */
+    const qd_expr *e = ADD(MUL(COS(X), COS(Y), COS(Z)), qd_neg(C, MUL(SIN(X), SIN(Y), COS(Z))),
+                           qd_neg(C, MUL(SIN(qd_add(C, X, Y)), SIN(Z))));
+    assert_ptr_equal(qd_trigsimp(C, e), COS(ADD(X, Y, Z)));
+}
+
+static void inside_bigger_sums(void **state) {
+    /* sin^2 + cos^2 among many unrelated terms, and inside a function and a product */
+    const qd_expr *rest[40];
+    for (int i = 0; i < 40; i++)
+        rest[i] = MUL(qd_int(C, i + 1), qd_powi(C, X, i), SIN(qd_mul(C, qd_int(C, i), Y)));
+    const qd_expr *others = qd_add_n(C, 40, rest);
+    const qd_expr *e = ADD(others, MUL(A, Z, SQ(SIN(Y))), MUL(A, Z, SQ(COS(Y))), I(3));
+    assert_ptr_equal(qd_trigsimp(C, e), ADD(others, MUL(A, Z), I(3)));
+    const qd_expr *p = MUL(B, ADD(SQ(SIN(X)), SQ(COS(X)), A));
+    assert_ptr_equal(qd_trigsimp(C, qd_fn(C, QD_EXP, p)), qd_fn(C, QD_EXP, MUL(B, ADD(I(1), A))));
+}
+
+/* Random sums of products of sines, cosines and symbols: same value after. */
+static void keeps_value(void **state) {
+    qt_rng r = {20240611};
+    const qd_expr *syms[3] = {X, Y, Z};
+    const qd_expr *trig[6] = {SIN(X), COS(X), SIN(Y), COS(Y), SIN(Z), COS(Z)};
+    for (int n = 0; n < 300; n++) {
+        const qd_expr *terms[8];
+        for (int i = 0; i < 8; i++) {
+            const qd_expr *t = qd_int(C, (long)qt_below(&r, 3) + 1);
+            for (unsigned k = qt_below(&r, 4); k > 0; k--)
+                t = qd_mul(C, t, trig[qt_below(&r, 6)]);
+            terms[i] = qd_mul(C, t, syms[qt_below(&r, 3)]);
+        }
+        const qd_expr *e = qd_add_n(C, 8, terms), *s = qd_trigsimp(C, e);
+        assert_non_null(s);
+        assert_true(qd_count_ops(s) <= qd_count_ops(e));
+        double v[3] = {qt_uniform(&r, -2, 2), qt_uniform(&r, -2, 2), qt_uniform(&r, -2, 2)};
+        double ve, vs;
+        assert_int_equal(qd_eval(C, e, 3, syms, v, &ve), QD_OK);
+        assert_int_equal(qd_eval(C, s, 3, syms, v, &vs), QD_OK);
+        if (fabs(ve - vs) > 1e-9 * (1 + fabs(ve)))
+            fail_msg("case %d (seed 20240611): %g != %g", n, ve, vs);
+    }
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(pythagoras, setup, teardown),
+        cmocka_unit_test_setup_teardown(angle_sums, setup, teardown),
+        cmocka_unit_test_setup_teardown(inside_bigger_sums, setup, teardown),
+        cmocka_unit_test_setup_teardown(keeps_value, setup, teardown),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
