@@ -18,7 +18,7 @@ demo:
 	./scripts/deps.sh build
 	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=OFF
 	$(CMAKE) --build build -j $(JOBS) --target qdot_cli
-	./build/qdot tour
+	./build/qdot eom examples/double_pendulum.qd
 
 # Every test twice: a normal build, then AddressSanitizer + UBSan (any report fails).
 test:

@@ -54,12 +54,14 @@ int qd_cmd_tour(int argc, char **argv) {
     show(ctx, "x2' =", vx, QD_FMT_TEXT);
     show(ctx, "y2' =", vy, QD_FMT_TEXT);
 
-    printf("\n3. Kinetic energy T = m1/2 (l1 theta1')^2 + m2/2 (x2'^2 + y2'^2), expanded:\n");
+    printf("\n3. Kinetic energy T = m1/2 (l1 theta1')^2 + m2/2 (x2'^2 + y2'^2), expanded, "
+           "then simplified:\n");
     const qd_expr *m2 = qd_lookup(ctx, "m2");
     T = qd_add(ctx, T, qd_mul_n(ctx, 3, (const qd_expr *[]){qd_rat(ctx, 1, 2), m2,
         qd_add(ctx, qd_powi(ctx, vx, 2), qd_powi(ctx, vy, 2))}));
     T = qd_expand(ctx, T);
     show(ctx, "T =", T, QD_FMT_TEXT);
+    show(ctx, "T =", qd_simplify(ctx, T), QD_FMT_TEXT);
 
     printf("\n4. Mass matrix M_jk = d^2T/dtheta_j' dtheta_k', simplified "
            "(sin a sin b + cos a cos b = cos(a - b)):\n");

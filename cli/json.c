@@ -5,6 +5,8 @@
 #include "json.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 void qd_json_init(qd_json *j, qd_buf *out) {
     *j = (qd_json){.out = out};
@@ -104,7 +106,17 @@ bool qd_json_number(qd_json *j, double v) {
     }
     before_item(j);
     /* -0 is valid JSON but surprises readers; it equals 0 anyway */
-    qd_buf_printf(j->out, "%.17g", v == 0 ? 0.0 : v);
+    if (v == 0)
+        v = 0.0;
+    /* the shortest digits that read back as the same double: 9.81, not
+     * 9.8100000000000005 */
+    char digits[32];
+    for (int prec = 15; prec <= 17; prec++) {
+        snprintf(digits, sizeof digits, "%.*g", prec, v);
+        if (strtod(digits, NULL) == v)
+            break;
+    }
+    qd_buf_puts(j->out, digits);
     return true;
 }
 

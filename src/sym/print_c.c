@@ -355,7 +355,7 @@ static void hoist(cp *p, const uses *u) {
         const qd_expr *e = u->order[i];
         if ((uintptr_t)qd_ptrmap_get(&u->count, e) < 2)
             continue;
-        qd_buf_printf(p->b, "const double t%lu = ", ++k);
+        qd_buf_printf(p->b, "const double qd_t%lu = ", ++k);
         expr(p, e);
         qd_buf_puts(p->b, ";\n");
         if (!qd_ptrmap_put(p->temps, e, (void *)(uintptr_t)k))

@@ -202,7 +202,7 @@ static void test_c_block_shares(void **state) {
     assert_int_equal(occurrences(str, "sin("), 1);    /* computed once */
     assert_int_equal(occurrences(str, "x + 1.0"), 1); /* the squared base too */
     assert_int_equal(occurrences(str, "pow("), 0);
-    assert_int_equal(occurrences(str, "const double t"), 2);
+    assert_int_equal(occurrences(str, "const double qd_t"), 2);
     qd_buf_clear(&b);
     assert_int_equal(qd_c_name(qd_jet(c, w->syms[2], 2), &b), QD_OK);
     assert_string_equal(qd_buf_str(&b), "theta1_dd"); /* the documented spelling */
