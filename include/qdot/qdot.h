@@ -9,6 +9,8 @@
 #include "print.h"
 #include "read.h"
 #include "eval.h"
+#include "model.h"
+#include "mech.h"
 
 #define QDOT_VERSION "0.1.0"
 

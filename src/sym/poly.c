@@ -7,6 +7,8 @@
  * made until the result is converted back.
  */
 #include "poly.h"
+qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done);
+qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done);
 
 #include <math.h>
 #include <stdlib.h>
@@ -440,8 +442,10 @@ static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) 
 }
 
 qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
-    bool done;
-    qd_poly *fast = qd_poly_mul_packed(ctx, x, y, &done);
+    bool done = false;
+    const char *eng = getenv("QDX");
+    qd_poly *fast = !eng || eng[0] == 'f' ? qd_poly_mul_flint(ctx, x, y, &done)
+                    : eng[0] == 'p' ? qd_poly_mul_packed(ctx, x, y, &done) : NULL;
     if (done)
         return fast;
     /* Like terms usually merge, and a small table stays in cache; it grows
@@ -529,8 +533,10 @@ qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
         qd_ctx_error(ctx, QD_ERR_ARG, "negative power of a polynomial with %zu terms", a->n);
         return NULL;
     }
-    bool done;
-    qd_poly *fast = qd_poly_pow_packed(ctx, a, n, &done);
+    bool done = false;
+    const char *eng = getenv("QDX");
+    qd_poly *fast = !eng || eng[0] == 'f' ? qd_poly_pow_flint(ctx, a, n, &done)
+                    : eng[0] == 'p' ? qd_poly_pow_packed(ctx, a, n, &done) : NULL;
     if (done)
         return fast;
     /* Repeated multiplication by the (small) base beats squaring here: the
@@ -577,9 +583,10 @@ oom:
     return false;
 }
 
-bool qd_poly_push_int(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, int64_t c) {
+static bool push(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, cval c) {
     if (!grow((void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
-        !grow((void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool)) {
+        !grow((void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool) ||
+        !coef_store(p, &p->terms[p->n].c, c)) {
         qd__oom(ctx);
         return false;
     }
@@ -587,13 +594,25 @@ bool qd_poly_push_int(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, i
     t->off = (uint32_t)p->plen;
     t->len = len;
     t->hash = 0;
-    t->c.kind = QD_COEF_INT;
-    t->c.v.i = c;
     for (uint32_t i = 0; i < len; i++) {
         p->pool[p->plen++] = m[i];
         t->hash += pair_hash(m[i].var, m[i].exp);
     }
     return true;
+}
+
+bool qd_poly_push_int(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, int64_t c) {
+    cval v = {QD_COEF_INT, c, 0.0, NULL};
+    return push(ctx, p, m, len, v);
+}
+
+bool qd_poly_push_mpq(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, mpq_srcptr c) {
+    cval v = {QD_COEF_BIG, 0, 0.0, c};
+    if (mpz_cmp_ui(mpq_denref(c), 1) == 0 && mpz_sizeinbase(mpq_numref(c), 2) < 63) {
+        v.kind = QD_COEF_INT;
+        v.i = mpz_get_si(mpq_numref(c));
+    }
+    return push(ctx, p, m, len, v);
 }
 
 qd_poly *qd_poly_slice(qd_ctx *ctx, const qd_poly *p, uint32_t var, int32_t exp) {

@@ -71,11 +71,13 @@ bool qd_poly_append(qd_ctx *ctx, qd_poly *dst, const qd_poly *src, size_t t, uin
 /* Append a term with an integer coefficient; m sorted, its exponents nonzero,
  * and distinct from the monomials already in p. */
 bool qd_poly_push_int(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, int64_t c);
-/* x*y by packed monomials (poly_pack.c) when both fit; *done false when they
- * do not (nothing recorded, NULL), else the result (NULL on error). */
-qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done);
+/* The same with a rational coefficient (stored as an int64 when it is one). */
+bool qd_poly_push_mpq(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, mpq_srcptr c);
+/* x*y by FLINT (poly_flint.c) when that is the faster way; *done false when
+ * it is not (nothing recorded, NULL), else the result (NULL on error). */
+qd_poly *qd_poly_mul_flint(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done);
 /* a^n (n >= 2) the same way. */
-qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done);
+qd_poly *qd_poly_pow_flint(qd_ctx *ctx, const qd_poly *a, long n, bool *done);
 /* The exponent of var in term t of p (0 when absent). */
 int32_t qd_poly_exp(const qd_poly *p, size_t t, uint32_t var);
 /* The coefficient of term t as a number node. */
