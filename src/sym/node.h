@@ -115,10 +115,16 @@ const qd_expr *qd__mul_raw(qd_ctx *ctx, const qd_expr *coeff, size_t n,
 /* Could -e be written more simply than e (negative coefficient leading)? */
 bool qd__has_minus(const qd_expr *e);
 
-/* ---- subs.c / evaltree.c ---------------------------------------------------- */
+/* ---- map.c / evaltree.c --------------------------------------------------- */
 /* Rebuild e with new arguments through the constructor of its kind. */
 const qd_expr *qd__rebuild(qd_ctx *ctx, const qd_expr *e, const qd_expr *const *args);
 double qd__func_value(qd_func f, double a, double b);  /* b: atan2's x */
+
+/* ---- map.c ---------------------------------------------------------------- */
+/* Rewrite e bottom-up (map.c has the contract); post may be NULL. */
+typedef const qd_expr *(*qd__post_fn)(qd_ctx *ctx, const qd_expr *e, void *data);
+const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_fn post,
+                       void *data);
 double qd__pow_value(double b, double e);
 
 /* ---- small helpers used across the kernel ------------------------------- */

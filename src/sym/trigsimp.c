@@ -360,43 +360,16 @@ static const qd_expr *simp_sum(qd_ctx *ctx, const qd_expr *s) {
 
 /* ---- the walk ------------------------------------------------------------------ */
 
-static const qd_expr *ts_rec(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo) {
-    if (!e->nargs)
-        return e;
-    const qd_expr *r = qd_ptrmap_get(memo, e);
-    if (r)
-        return r;
-    const qd_expr *stack[8];
-    const qd_expr **args = e->nargs <= 8 ? stack : malloc(e->nargs * sizeof *args);
-    if (!args) {
-        qd__oom(ctx);
-        return NULL;
-    }
-    bool changed = false;
-    for (size_t i = 0; i < e->nargs; i++) {
-        args[i] = ts_rec(ctx, e->args[i], memo);
-        if (!args[i])
-            goto done;
-        changed |= args[i] != e->args[i];
-    }
-    r = changed ? qd__rebuild(ctx, e, args) : e;
-    if (r && r->kind == QD_ADD)
-        r = simp_sum(ctx, r);
-    if (r && !qd_ptrmap_put(memo, e, (void *)r)) {
-        qd__oom(ctx);
-        r = NULL;
-    }
-done:
-    if (args != stack)
-        free(args);
-    return r;
+static const qd_expr *post_trig(qd_ctx *ctx, const qd_expr *e, void *data) {
+    (void)data;
+    return e->kind == QD_ADD ? simp_sum(ctx, e) : e;
 }
 
 const qd_expr *qd_trigsimp(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
     qd_ptrmap memo = QD_PTRMAP_INIT;
-    const qd_expr *r = ts_rec(ctx, e, &memo);
+    const qd_expr *r = qd__map(ctx, e, &memo, post_trig, NULL);
     qd_ptrmap_free(&memo);
     return r;
 }
