@@ -64,6 +64,13 @@ bool qd_model_lagrangian_given(const qd_model *m);       /* L = ... in the text 
 const qd_expr *qd_model_dissipation(const qd_model *m);  /* Rayleigh's D */
 const qd_expr *qd_model_force(const qd_model *m, size_t i); /* Q_i (never NULL: 0 when none) */
 
+/* Constraints (`constraint NAME: lhs = rhs`), in the order given: the
+ * expression lhs - rhs, which the motion keeps at zero, and the name (given,
+ * or "c1", "c2", ... for unnamed ones).  They may contain velocities. */
+size_t qd_model_nconstraints(const qd_model *m);
+const char *qd_model_constraint_name(const qd_model *m, size_t i);
+const qd_expr *qd_model_constraint(const qd_model *m, size_t i);
+
 /* Initial values: the value of a coordinate (order 0) or velocity (order 1)
  * named in `initial`, or NULL. */
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);

@@ -65,6 +65,10 @@ void qd_model_free(qd_model *m) {
         free((char *)m->defs[i].name);
     for (size_t i = 0; i < m->nfuncs; i++)
         free((char *)m->funcs[i]);
+    for (size_t i = 0; i < m->ncons; i++)
+        free((char *)m->con_names[i]);
+    free(m->con_names);
+    free(m->cons);
     free(m->coords);
     free(m->params);
     free(m->pvals);
@@ -125,6 +129,14 @@ bool qd_model_lagrangian_given(const qd_model *m) { return qd_model_where(m, "L"
 
 const qd_expr *qd_model_force(const qd_model *m, size_t i) {
     return i < m->ncoords ? m->Q[i] : NULL;
+}
+
+size_t qd_model_nconstraints(const qd_model *m) { return m->ncons; }
+const char *qd_model_constraint_name(const qd_model *m, size_t i) {
+    return i < m->ncons ? m->con_names[i] : NULL;
+}
+const qd_expr *qd_model_constraint(const qd_model *m, size_t i) {
+    return i < m->ncons ? m->cons[i] : NULL;
 }
 
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order) {

@@ -46,6 +46,9 @@ struct qd_model {
     const qd_expr **init;      /* per coordinate: [2*i] value, [2*i+1] velocity */
     where *wheres;
     size_t nwheres;
+    const char **con_names;    /* owned copies */
+    const qd_expr **cons;      /* lhs - rhs */
+    size_t ncons;
 };
 
 typedef struct parser {

@@ -9,6 +9,7 @@
  *   force F at POSITION                 adds Q_j = F . dPOSITION/dq_j
  *   Q[COORD] = EXPR                     adds to the generalized force on COORD
  *   initial NAME = VALUE, NAME' = VALUE, ...
+ *   constraint [NAME:] LHS [= RHS]       kept at zero: LHS - RHS = 0
  */
 #include "parser.h"
 
@@ -17,7 +18,7 @@
 #include <string.h>
 
 static const char *const keywords[] = {
-    "coordinates", "parameters", "functions", "particle", "force", "initial",
+    "coordinates", "parameters", "functions", "particle", "force", "initial", "constraint",
 };
 #define NKEYWORDS (sizeof keywords / sizeof keywords[0])
 
@@ -305,6 +306,69 @@ static bool stmt_initial(parser *p) {
     return end_of_statement(p);
 }
 
+static bool constraint_named(const qd_model *m, const char *name) {
+    for (size_t i = 0; i < m->ncons; i++)
+        if (!strcmp(m->con_names[i], name))
+            return true;
+    return false;
+}
+
+static bool add_constraint_where(qd_model *m, const char *name, token at) {
+    char what[80];
+    snprintf(what, sizeof what, "constraint:%s", name);
+    return model_add_where(m, what, at.off, at.len);
+}
+
+/* constraint [NAME ':'] LHS ['=' RHS] */
+static bool stmt_constraint(parser *p) {
+    qd_model *m = p->m;
+    lex_next(&p->lx);
+    char name[64];
+    token at = p->lx.tok;
+    lexer save = p->lx;
+    lex_next(&p->lx);
+    bool named = at.kind == TK_IDENT && p->lx.tok.kind == TK_COLON;
+    if (named) {
+        snprintf(name, sizeof name, "%.*s", (int)(at.len < 63 ? at.len : 63), p->lx.src + at.off);
+        if (constraint_named(m, name))
+            return perr(p, at.off, at.len, "give each constraint its own name",
+                        "constraint '%s' is named twice", name);
+        lex_next(&p->lx);
+    } else {
+        p->lx = save;
+        size_t k = m->ncons + 1;
+        do
+            snprintf(name, sizeof name, "c%zu", k++);
+        while (constraint_named(m, name));
+    }
+    size_t off = p->lx.tok.off;
+    const qd_expr *lhs, *rhs = NULL;
+    if (!parse_scalar(p, &lhs, "a constraint"))
+        return false;
+    if (p->lx.tok.kind == TK_EQ) {
+        lex_next(&p->lx);
+        if (!parse_scalar(p, &rhs, "a constraint"))
+            return false;
+    }
+    const qd_expr *c = rhs ? qd_sub(C(p), lhs, rhs) : lhs;
+    if (!c)
+        return perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
+    if (qd_is_number(c))
+        return perr(p, off, p->lx.tok.off - off, "a constraint relates coordinates or velocities",
+                    qd_is_zero(c) ? "this constraint always holds" : "this constraint can never hold");
+    char *copy = malloc(strlen(name) + 1);
+    if (copy)
+        strcpy(copy, name);
+    size_t n = m->ncons;
+    if (!copy || !model_push((void **)&m->con_names, &n, sizeof copy, &copy) ||
+        !model_push((void **)&m->cons, &m->ncons, sizeof c, &c) ||
+        !add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1})) {
+        free(copy);
+        return perr(p, off, 1, NULL, "out of memory");
+    }
+    return end_of_statement(p);
+}
+
 static const qd_expr **reserved_slot(qd_model *m, const char *name) {
     if (!strcmp(name, "T")) return &m->T;
     if (!strcmp(name, "V")) return &m->V;
@@ -382,6 +446,8 @@ static bool statement(parser *p) {
         return stmt_force(p);
     if (lex_is(lx, "initial"))
         return stmt_initial(p);
+    if (lex_is(lx, "constraint"))
+        return stmt_constraint(p);
     /* NAME '=' or Q '[': look one token ahead without consuming */
     lexer save = *lx;
     lex_next(lx);

@@ -119,6 +119,34 @@ static void language_features(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* Constraints: named or numbered, stored as lhs - rhs, located. */
+static void constraints(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const char *text = "coordinates x1, x2, y\nparameters l = 3\nT = x1'^2 + x2'^2 + y'^2\n"
+                       "constraint rope: x1 + x2 = l\n"
+                       "constraint y' = x1*x2'\n"
+                       "constraint x1*t\n";
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, text, &d);
+    if (!m)
+        fail_msg("%zu:%zu: %s", d.line, d.col, d.message);
+    assert_int_equal(qd_model_nconstraints(m), 3);
+    assert_string_equal(qd_model_constraint_name(m, 0), "rope");
+    assert_string_equal(qd_model_constraint_name(m, 1), "c2");
+    assert_string_equal(qd_model_constraint_name(m, 2), "c3");
+    const qd_expr *x1 = qd_model_coord(m, 0), *x2 = qd_model_coord(m, 1), *y = qd_model_coord(m, 2);
+    assert_ptr_equal(qd_model_constraint(m, 0),
+                     qd_sub(ctx, qd_add(ctx, x1, x2), qd_lookup(ctx, "l")));
+    assert_ptr_equal(qd_model_constraint(m, 1),
+                     qd_sub(ctx, qd_jet(ctx, y, 1), qd_mul(ctx, x1, qd_jet(ctx, x2, 1))));
+    assert_true(qd_model_where(m, "constraint:rope", &d));
+    assert_int_equal(d.line, 4);
+    assert_int_equal(d.col, 12);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* A rheonomic model: a bead on a wire turning as omega*t. */
 static void time_dependent(void **state) {
     (void)state;
@@ -186,6 +214,12 @@ static const bad bad_models[] = {
     {"coordinates sin\n", 1, 13, "'sin' is already a built-in name", NULL},
     {"coordinates q\nT = q'^2\ninitial p = 1\n", 3, 9, "'p' is not a coordinate", NULL},
     {"", 1, 1, "no coordinates are declared", NULL},
+    /* constraints */
+    {"coordinates x, y\nT = x'^2 + y'^2\nconstraint a: x = y\nconstraint a: x' = 0\n", 4, 12,
+     "constraint 'a' is named twice", NULL},
+    {"coordinates x\nT = x'^2\nconstraint 1 = 1\n", 3, 12, "this constraint always holds", NULL},
+    {"coordinates x\nT = x'^2\nconstraint r: (x, 0) = 0\n", 3, 15,
+     "a vector where a scalar is needed", NULL},
 };
 
 static void diagnostics(void **state) {
@@ -262,6 +296,7 @@ int main(void) {
         cmocka_unit_test(double_pendulum_meaning),
         cmocka_unit_test(language_features),
         cmocka_unit_test(time_dependent),
+        cmocka_unit_test(constraints),
         cmocka_unit_test(diagnostics),
         cmocka_unit_test(formatted),
         cmocka_unit_test(printed_text_reads_back),
