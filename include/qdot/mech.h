@@ -20,6 +20,34 @@
 extern "C" {
 #endif
 
+/* A constraint of the model, classified.
+ *
+ *   holonomic       phi(q, t) = 0, no velocities.  a_j = dphi/dq_j, a0 = dphi/dt,
+ *                   so that phi' = sum_j a_j q'_j + a0.
+ *   Pfaffian        sum_j a_j(q, t) q'_j + a0(q, t) = 0: integrable when it is
+ *                   exact after multiplying by an integrating factor (then
+ *                   `integral` = const along the motion and `factor` is that
+ *                   factor, 1 when exact), otherwise nonholonomic.
+ *   nonlinear       velocities enter nonlinearly: not supported (an error).
+ */
+typedef enum qd_con_kind {
+    QD_CON_HOLONOMIC,
+    QD_CON_INTEGRABLE,     /* Pfaffian, integrable */
+    QD_CON_NONHOLONOMIC    /* Pfaffian, not integrable */
+} qd_con_kind;
+
+typedef struct qd_con {
+    const char *name;            /* the model's name for it (owned by the model) */
+    qd_con_kind kind;
+    const qd_expr *expr;         /* as the model gives it (= 0) */
+    const qd_expr **a;           /* n coefficients of the velocities */
+    const qd_expr *a0;           /* the velocity-free part */
+    const qd_expr *integral;     /* QD_CON_INTEGRABLE: phi(q, t), constant along the motion;
+                                    NULL when integrable but not found in closed form */
+    const qd_expr *factor;       /* the integrating factor used, or NULL */
+    const qd_expr *lambda;       /* the multiplier, a plain symbol lambda_<name> */
+} qd_con;
+
 typedef struct qd_eom {
     size_t n;                    /* degrees of freedom */
     const qd_expr **q;           /* coordinates q_j */
@@ -33,6 +61,12 @@ typedef struct qd_eom {
      * without T. */
     const qd_expr *T2, *T1, *T0;
     const qd_expr **acc;         /* n symbolic accelerations after qd_eom_solve, else NULL */
+    /* Constraints: M q'' = f + A^T lambda, closed by A q'' = b (each
+     * holonomic constraint differentiated twice, each Pfaffian once).
+     * A is ncon*n row-major (A_kj = con[k].a[j]); b is ncon. */
+    size_t ncon;
+    qd_con *con;
+    const qd_expr **A, **b;
     void *priv;                  /* the library's: the compiled numeric program */
 } qd_eom;
 
