@@ -40,6 +40,7 @@ bench:
 	$(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DQDOT_TESTS=OFF -DQDOT_BENCH=ON
 	$(CMAKE) --build build-bench -j $(JOBS)
 	./bench/run_kernel.sh build-bench
+	/usr/bin/python3 bench/run_pendulum.py build-bench
 
 install: build
 	$(CMAKE) --install build --prefix $(PREFIX)

@@ -1,7 +1,7 @@
 /*
- * src/sym/evaltree.c - direct numeric evaluation by one walk of the DAG, and
- * size measures.  The slow, simple path: tests and one-off values use it;
- * anything repeated compiles a qd_prog (prog.c).
+ * src/sym/evaltree.c - direct numeric evaluation by one walk of the DAG.
+ * The slow, simple path: tests and one-off values use it; anything repeated
+ * compiles a qd_prog (prog.c).
  */
 #include "node.h"
 
@@ -130,67 +130,4 @@ qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const 
     if (w.st == QD_ERR_NOMEM)
         qd__oom(ctx);
     return w.st;
-}
-
-/* ---- sizes ---------------------------------------------------------------- */
-
-/* SymPy's count_ops: an n-ary sum or product counts n-1 operations, a
- * subtraction or division counts as one too (x - y is one SUB, x/y one DIV),
- * a negation of a term counts one NEG, each function call and power one. */
-static size_t ops(const qd_expr *e) {
-    size_t n = 0;
-    switch ((qd_kind)e->kind) {
-    case QD_RATIONAL:
-        return mpz_cmp_ui(mpq_denref(e->u.q), 1) != 0 ? 1 : (mpq_sgn(e->u.q) < 0 ? 1 : 0);
-    case QD_FLOAT:
-        return e->u.f < 0;
-    case QD_CONSTANT:
-    case QD_SYMBOL:
-        return 0;
-    case QD_ADD:
-        for (size_t i = 0; i < e->nargs; i++)
-            n += ops(e->args[i]);
-        return n + e->nargs - 1;
-    case QD_MUL: {
-        size_t i = 0;
-        if (qd__is_num(e->args[0])) {
-            n += ops(e->args[0]) + (qd_is_one(e->args[0]) ? 0 : 0);
-            i = 1;
-            n += 1; /* the coefficient's multiplication (or negation) */
-        }
-        for (size_t j = i; j < e->nargs; j++)
-            n += ops(e->args[j]);
-        return n + e->nargs - i - 1;
-    }
-    case QD_POW:
-        return 1 + ops(e->args[0]) + ops(e->args[1]);
-    case QD_FUNC:
-    case QD_UFUNC:
-    case QD_UDERIV:
-        for (size_t i = 0; i < e->nargs; i++)
-            n += ops(e->args[i]);
-        return n + 1;
-    }
-    return n;
-}
-
-size_t qd_count_ops(const qd_expr *e) { return e ? ops(e) : 0; }
-
-static void count_dag(const qd_expr *e, qd_ptrmap *seen) {
-    if (qd_ptrmap_has(seen, e))
-        return;
-    qd_ptrmap_put(seen, e, (void *)e);
-    for (size_t i = 0; i < e->nargs; i++)
-        count_dag(e->args[i], seen);
-}
-
-size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e) {
-    (void)ctx;
-    if (!e)
-        return 0;
-    qd_ptrmap seen = QD_PTRMAP_INIT;
-    count_dag(e, &seen);
-    size_t n = seen.len;
-    qd_ptrmap_free(&seen);
-    return n;
 }

@@ -98,12 +98,13 @@ def main():
     ns, t = namespace(header)
     q = ns['q']
     cases, proven, failures = 0, 0, []
+    ops_equal, ops_diff = 0, []
     i = 2
     while i < len(out):
         assert out[i].startswith('case '), out[i]
         var = out[i + 1].split()[1]
-        fields = dict(l.split(' ', 1) for l in out[i + 2:i + 6])
-        i += 6
+        fields = dict(l.split(' ', 1) for l in out[i + 2:i + 7])
+        i += 7
         e = sympify(eval(fields['expr'], ns))
         # A partial derivative on the jet treats q and q' as independent
         # symbols: replace q' (first) and q by dummies, differentiate, put back.
@@ -119,17 +120,31 @@ def main():
             results.append(r)
             if r == 'failed':
                 failures.append('%s %s wrt %s\n  expr   %s\n  qdot   %s\n  sympy  %s'
-                                % (out[i - 6], name, var, fields['expr'], fields[name], ref))
+                                % (out[i - 7], name, var, fields['expr'], fields[name], ref))
         proven += all(r == 'proven' for r in results)
+        # qd_count_ops counts as SymPy's count_ops does (with q, q' as symbols)
+        if int(fields['ops']) == sympy.count_ops(e.subs(q(t).diff(t), QD).subs(q(t), Q)):
+            ops_equal += 1
+        elif len(ops_diff) < 5:
+            ops_diff.append('%s: qdot %s, sympy %s' % (fields['expr'], fields['ops'],
+                            sympy.count_ops(e.subs(q(t).diff(t), QD).subs(q(t), Q))))
         cases += 1
     for f in failures[:10]:
         print(f)
     # The issue asks for at least 200 expressions whose derivatives and
     # expansion SymPy proves equal; the rest must at least agree numerically.
+    print('count_ops agrees with SymPy on %d of %d expressions' % (ops_equal, cases))
+    for d in ops_diff:
+        print('  ' + d)
     print('%d of %d expressions proven equal by SymPy (%d needed); the others '
           'agree numerically where SymPy gave up' % (proven, cases, args.need))
     if proven < args.need:
         failures.append('only %d expressions proven' % proven)
+    # SymPy evaluates some inputs further on reading them (atan2 with a
+    # positive x, Abs of a positive sum), so its count can differ; on most
+    # expressions the two measures must be the same.
+    if ops_equal < 0.7 * cases:
+        failures.append('count_ops agrees on only %d of %d' % (ops_equal, cases))
     print('%d passed, %d failed' % (cases * 3 - len(failures), len(failures)))
     return 1 if failures else 0
 

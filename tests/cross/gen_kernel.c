@@ -6,6 +6,7 @@
  * coordinate q(t) with its velocity, and t, prints qdot's partial derivative,
  * total time derivative and expansion, all in SymPy syntax, one per line:
  *   expr <e>   var <name>   diff <de/dvar>   dt <de/dt>   expand <expand(e)>
+ *   ops <qd_count_ops(e)>
  * Usage: gen_kernel N SEED
  */
 #include <stdio.h>
@@ -47,6 +48,7 @@ int main(int argc, char **argv) {
         bad |= line(ctx, "diff", qd_diff(ctx, e, v));
         bad |= line(ctx, "dt", qd_dt(ctx, e));
         bad |= line(ctx, "expand", qd_expand(ctx, e));
+        printf("ops %zu\n", qd_count_ops(e));
     }
     qd_ctx_free(ctx);
     return bad;
