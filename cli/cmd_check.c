@@ -8,10 +8,16 @@
  * q_j is cyclic when L does not contain it, and its momentum p_j = dL/dq'_j
  * is conserved when moreover Q_j = 0 and D does not contain q'_j, since
  * Lagrange's equation then reads dp_j/dt = 0.
+ *
+ * Constraints are listed with their kind (holonomic, integrable with its
+ * integral, nonholonomic) and the degrees of freedom are counted as in
+ * Desloge ch. 49: configurational = coordinates - holonomic - integrable,
+ * motional = configurational - nonholonomic.
  */
 #include "cli.h"
 
 #include <string.h>
+#include "eom_out.h"
 #include "model_file.h"
 #include "state.h"
 #include "qdot/mech.h"
@@ -62,18 +68,63 @@ static void depends(check *c, const char *name, const qd_expr *x) {
     qd_buf_puts(&c->out, any ? "\n" : " constant\n");
 }
 
-static void header(check *c, const char *path) {
+static void dof(check *c, const qd_eom *e) {
+    size_t count[3] = {0, 0, 0};
+    for (size_t k = 0; k < e->ncon; k++)
+        count[e->con[k].kind]++;
+    if (!e->ncon) {
+        qd_buf_printf(&c->out, "degrees of freedom: %zu\n", e->n);
+        return;
+    }
+    size_t nq = e->n + e->nelim, conf = nq - e->nelim - count[QD_CON_HOLONOMIC] -
+                                         count[QD_CON_INTEGRABLE];
+    qd_buf_printf(&c->out,
+                  "degrees of freedom: %zu configurational, %zu motional (%zu coordinates; "
+                  "constraints: %zu holonomic, %zu integrable, %zu nonholonomic)\n",
+                  conf, conf - count[QD_CON_NONHOLONOMIC], nq, count[QD_CON_HOLONOMIC],
+                  count[QD_CON_INTEGRABLE], count[QD_CON_NONHOLONOMIC]);
+}
+
+static void header(check *c, const char *path, const qd_eom *e) {
     const qd_model *m = c->m;
     size_t nq = qd_model_ncoords(m);
     qd_buf_printf(&c->out, "%s: ok\ncoordinates:", path);
     for (size_t i = 0; i < nq; i++)
         qd_buf_printf(&c->out, "%s %s", i ? "," : "", qd_expr_name(qd_model_coord(m, i)));
-    qd_buf_printf(&c->out, "\ndegrees of freedom: %zu\nparameters:", nq);
+    qd_buf_puts(&c->out, "\n");
+    dof(c, e);
+    qd_buf_puts(&c->out, "parameters:");
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         qd_buf_printf(&c->out, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
         qd_state_put_double(&c->out, qd_state_value(qd_model_param_value(m, i)));
     }
     qd_buf_puts(&c->out, qd_model_nparams(m) ? "\n" : " none\n");
+}
+
+static void constraints(check *c, const qd_eom *e) {
+    for (size_t k = 0; k < e->ncon; k++) {
+        const qd_con *con = &e->con[k];
+        qd_buf_printf(&c->out, "constraint %s: ", con->name);
+        put_expr(c, con->expr);
+        qd_buf_puts(&c->out, " = 0, ");
+        if (con->kind == QD_CON_HOLONOMIC) {
+            qd_buf_puts(&c->out, "holonomic\n");
+        } else if (con->kind == QD_CON_NONHOLONOMIC) {
+            qd_buf_puts(&c->out, "nonholonomic (Pfaffian, not integrable)\n");
+        } else if (!con->integral) {
+            qd_buf_puts(&c->out, "integrable (Pfaffian; integral not found in closed form)\n");
+        } else {
+            qd_buf_puts(&c->out, "integrable: ");
+            put_expr(c, con->integral);
+            qd_buf_puts(&c->out, " = const");
+            if (con->factor && !qd_is_one(con->factor)) {
+                qd_buf_puts(&c->out, " (integrating factor ");
+                put_expr(c, con->factor);
+                qd_buf_puts(&c->out, ")");
+            }
+            qd_buf_puts(&c->out, "\n");
+        }
+    }
 }
 
 static void forces(check *c) {
@@ -87,8 +138,17 @@ static void forces(check *c) {
     }
 }
 
+/* Does a constraint act on coordinate j (a nonzero A_kj)? */
+static bool constrained(const qd_eom *e, const qd_expr *q) {
+    for (size_t j = 0; j < e->n; j++)
+        for (size_t k = 0; e->q[j] == q && k < e->ncon; k++)
+            if (!qd_is_zero(e->A[k * e->n + j]))
+                return true;
+    return false;
+}
+
 /* Cyclic coordinates, with their conserved momenta. */
-static void cyclic(check *c, const qd_expr *L) {
+static void cyclic(check *c, const qd_eom *e, const qd_expr *L) {
     const qd_expr *D = qd_model_dissipation(c->m);
     bool any = false;
     qd_buf_puts(&c->out, "cyclic coordinates:");
@@ -101,7 +161,9 @@ static void cyclic(check *c, const qd_expr *L) {
         dD = dD ? qd_simplify(c->ctx, dD) : NULL;
         bool conserved = Q && qd_is_zero(Q) && (!dD || qd_is_zero(dD));
         qd_buf_printf(&c->out, "%s %s", any ? "," : "", qd_expr_name(q));
-        if (conserved) {
+        if (conserved && constrained(e, q)) {
+            qd_buf_puts(&c->out, " (but a constraint acts on it)");
+        } else if (conserved) {
             qd_buf_printf(&c->out, " (p_%s = ", qd_expr_name(q));
             put_expr(c, qd_simplify(c->ctx, qd_diff(c->ctx, L, qd)));
             qd_buf_puts(&c->out, " is conserved)");
@@ -113,8 +175,13 @@ static void cyclic(check *c, const qd_expr *L) {
     qd_buf_puts(&c->out, any ? "\n" : " none\n");
 }
 
-/* Forces or dissipation present: then h is not conserved in general. */
-static bool nonconservative(check *c) {
+/* Forces, dissipation or constraints that work (a0 != 0: the power of the
+ * constraint forces is R . q' = -sum_k lambda_k a0_k) present: then h is
+ * not conserved in general. */
+static bool nonconservative(check *c, const qd_eom *e) {
+    for (size_t k = 0; k < e->ncon; k++)
+        if (!qd_is_zero(e->con[k].a0))
+            return true;
     const qd_expr *D = qd_model_dissipation(c->m);
     if (D && !qd_is_zero(qd_simplify(c->ctx, D)))
         return true;
@@ -131,7 +198,11 @@ static void time_dependence(check *c, const qd_eom *e, const qd_expr *L) {
     qd_buf_printf(&c->out, "explicit time dependence: %s\n",
                   explicit_t ? "L depends on t explicitly"
                              : "none (L does not contain t)");
-    if (!explicit_t && !nonconservative(c))
+    for (size_t k = 0; k < e->ncon; k++)
+        if (qd_has(e->con[k].expr, qd_time(c->ctx)))
+            qd_buf_printf(&c->out, "rheonomic constraint: %s depends on t explicitly\n",
+                          e->con[k].name);
+    if (!explicit_t && !nonconservative(c, e))
         qd_buf_puts(&c->out, "energy integral: h = sum_j q'_j dL/dq'_j - L is conserved\n");
     if (e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0)))
         qd_buf_puts(&c->out,
@@ -142,28 +213,28 @@ static void time_dependence(check *c, const qd_eom *e, const qd_expr *L) {
 
 static int summarize(check *c, const qd_model_file *mf) {
     qd_eom *e = qd_eom_derive(c->ctx, c->m);
-    if (!e) {
-        if (qd_ctx_status(c->ctx) != QD_ERR_SINGULAR)
-            return qd_diag_ctx(c->ctx);
-        qd_model_file_error(mf, qd_model_lagrangian_given(c->m) ? "L" : "T",
-                            qd_ctx_message(c->ctx),
-                            "every coordinate needs inertia: its velocity must appear "
-                            "quadratically in T (or L)");
-        return QD_EXIT_USAGE;
-    }
-    header(c, mf->path);
+    if (!e)
+        return qd_eom_derive_error(c->ctx, mf);
+    header(c, mf->path, e);
     depends(c, "T:", qd_model_kinetic(c->m));
     depends(c, "V:", qd_model_potential(c->m));
     depends(c, "U:", qd_model_gen_potential(c->m));
     depends(c, "dissipation:", qd_model_dissipation(c->m));
     depends(c, "L:", qd_model_lagrangian(c->m));
     forces(c);
+    constraints(c, e);
     const qd_expr *L = qd_simplify(c->ctx, qd_model_lagrangian(c->m));
     if (L) {
-        cyclic(c, L);
+        cyclic(c, e, L);
         time_dependence(c, e, L);
     }
-    qd_buf_printf(&c->out, "mass matrix: %zu x %zu, not identically singular\n", e->n, e->n);
+    if (e->ncon)
+        qd_buf_printf(&c->out,
+                      "equations: [M -A^T; A 0] is %zu x %zu, not identically singular\n",
+                      e->n + e->ncon, e->n + e->ncon);
+    else
+        qd_buf_printf(&c->out, "mass matrix: %zu x %zu, not identically singular\n", e->n,
+                      e->n);
     qd_eom_free(e);
     return qd_ctx_status(c->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(c->ctx);
 }

@@ -5,7 +5,10 @@
  *
  * derived by libqdot (qd_eom_derive), with parameters replaced by the values
  * given with --set, solved for q'' with --solve, or evaluated at a state with
- * --at.  The pipeline is here; the output formats are in eom_out.c.
+ * --at.  Constraints add multipliers, M q'' = f + A^T lambda with A q'' = b;
+ * --eliminate substitutes the holonomic ones that can be solved for a
+ * coordinate instead.  The pipeline is here; the output formats are in
+ * eom_out.c.
  */
 #include "cli.h"
 
@@ -21,7 +24,7 @@
 typedef struct eom_args {
     const char *file;
     qd_eom_format fmt;
-    bool solve;
+    bool solve, eliminate;
     const char *sets[MAX_SETS];
     size_t nsets;
     const char *at;
@@ -34,13 +37,14 @@ typedef struct eom_run {
     qd_state st;
     const qd_expr *from[MAX_SETS], *to[MAX_SETS]; /* --set substitutions */
     size_t nsubs;
-    const qd_expr **numbers;                      /* numeric mode: M, f, acc as nodes */
+    const qd_expr **numbers;                      /* numeric mode: M, f, acc, A, b,
+                                                     lambda, R as nodes */
     qd_eom_view view;
 } eom_run;
 
 static const char usage_text[] =
-    "usage: qdot eom FILE [--format text|latex|json|sympy|c] [--solve] [--set NAME=VALUE]... "
-    "[--at \"q=VALUE, q'=VALUE, t=VALUE\"]";
+    "usage: qdot eom FILE [--format text|latex|json|sympy|c] [--solve] [--eliminate] "
+    "[--set NAME=VALUE]... [--at \"q=VALUE, q'=VALUE, t=VALUE\"]";
 
 /* The value of an option given as "--opt VALUE" or "--opt=VALUE", or NULL. */
 static const char *option(int argc, char **argv, int *i, const char *opt) {
@@ -58,6 +62,8 @@ static int parse_option(int argc, char **argv, int *i, eom_args *a) {
     const char *v;
     if (!strcmp(argv[*i], "--solve")) {
         a->solve = true;
+    } else if (!strcmp(argv[*i], "--eliminate")) {
+        a->eliminate = true;
     } else if ((v = option(argc, argv, i, "--format"))) {
         if (!qd_eom_format_from_name(v, &a->fmt)) {
             qd_diag_error("--format takes text, latex, json, sympy or c, not '%s'", v);
@@ -120,17 +126,10 @@ static int apply_sets(eom_run *r, const eom_args *a) {
     return QD_EXIT_OK;
 }
 
-static int derive(eom_run *r) {
-    r->e = qd_eom_derive(r->ctx, r->mf.model);
-    if (r->e)
-        return QD_EXIT_OK;
-    if (qd_ctx_status(r->ctx) != QD_ERR_SINGULAR)
-        return qd_diag_ctx(r->ctx);
-    const qd_model *m = r->mf.model;
-    qd_model_file_error(&r->mf, qd_model_lagrangian_given(m) ? "L" : "T", qd_ctx_message(r->ctx),
-                        "every coordinate needs inertia: its velocity must appear "
-                        "quadratically in T (or L)");
-    return QD_EXIT_USAGE;
+static int derive(eom_run *r, bool eliminate) {
+    qd_eom_opts opts = {.eliminate = eliminate};
+    r->e = qd_eom_derive_opts(r->ctx, r->mf.model, &opts);
+    return r->e ? QD_EXIT_OK : qd_eom_derive_error(r->ctx, &r->mf);
 }
 
 /* x with the --set parameters replaced by their values, re-simplified. */
@@ -147,6 +146,17 @@ static int substitute(eom_run *r) {
         e->M[i] = subs(r, e->M[i]);
     for (size_t i = 0; i < e->n; i++)
         e->f[i] = subs(r, e->f[i]);
+    for (size_t i = 0; i < e->ncon * e->n; i++)
+        e->A[i] = subs(r, e->A[i]);
+    for (size_t k = 0; k < e->ncon; k++) {
+        e->b[k] = subs(r, e->b[k]);
+        e->con[k].expr = subs(r, e->con[k].expr);
+        e->con[k].a0 = subs(r, e->con[k].a0);
+        e->con[k].integral = subs(r, e->con[k].integral);
+        e->con[k].factor = subs(r, e->con[k].factor);
+    }
+    for (size_t k = 0; k < e->nelim; k++)
+        e->elim[k].value = subs(r, e->elim[k].value);
     e->T2 = subs(r, e->T2);
     e->T1 = subs(r, e->T1);
     e->T0 = subs(r, e->T0);
@@ -173,13 +183,16 @@ static int solve(eom_run *r) {
 
 static void singular_at(const eom_run *r) {
     qd_buf b = QD_BUF_INIT;
-    for (size_t i = 0; i < 2 * r->e->n + 1; i++) {
+    for (size_t i = 0; i < 2 * qd_model_ncoords(r->mf.model) + 1; i++) {
         qd_buf_puts(&b, i ? ", " : "");
         qd_print(r->ctx, r->st.syms[i], QD_FMT_TEXT, &b);
         qd_buf_printf(&b, "=%.17g", r->st.vals[i]);
     }
-    qd_diag_error("the mass matrix is singular at %s: the accelerations are not determined there",
-                  qd_buf_str(&b));
+    if (r->e->ncon)
+        qd_diag_error("at %s: %s", qd_buf_str(&b), qd_ctx_message(r->ctx));
+    else
+        qd_diag_error("the mass matrix is singular at %s: the accelerations are not determined "
+                      "there", qd_buf_str(&b));
     qd_buf_free(&b);
 }
 
@@ -191,24 +204,45 @@ static const qd_expr *at_state(eom_run *r, const qd_expr *x) {
     return qd_float(r->ctx, v);
 }
 
-/* --at: M, f and q'' as numbers (qd_eom_eval), kept as number nodes so that
- * every format prints them. */
+/* How many numbers --at computes: M, f, q'', A, b, lambda, R. */
+static size_t count_numbers(const qd_eom *e) {
+    size_t n = e->n, m = e->ncon;
+    return n * n + 2 * n + m * n + 2 * m + n;
+}
+
+/* A and b at the state (the compiled program has them, but not as an
+ * interface: qd_eval per entry is plenty for one state). */
+static qd_status constraint_rows(eom_run *r, double *Ab) {
+    const qd_eom *e = r->e;
+    qd_status st = QD_OK;
+    for (size_t i = 0; st == QD_OK && i < e->ncon * e->n + e->ncon; i++) {
+        const qd_expr *x = i < e->ncon * e->n ? e->A[i] : e->b[i - e->ncon * e->n];
+        st = qd_eval(r->ctx, x, r->st.n, r->st.syms, r->st.vals, &Ab[i]);
+    }
+    return st;
+}
+
+/* --at: M, f, q'', the multipliers and the constraint forces as numbers
+ * (qd_eom_eval), kept as number nodes so that every format prints them. */
 static int evaluate(eom_run *r, const char *at) {
-    size_t n = r->e->n;
+    size_t n = r->e->n, m = r->e->ncon, total = count_numbers(r->e);
     int rc = qd_state_init(r->ctx, r->mf.model, &r->st);
     if (rc == QD_EXIT_OK)
         rc = qd_state_parse(r->ctx, r->mf.model, at, &r->st);
     if (rc != QD_EXIT_OK)
         return rc;
-    double *num = malloc((n * n + 2 * n) * sizeof *num);
-    r->numbers = malloc((n * n + 2 * n) * sizeof *r->numbers);
+    double *num = calloc(total + 1, sizeof *num);
+    r->numbers = malloc((total + 1) * sizeof *r->numbers);
     if (!num || !r->numbers) {
         free(num);
         return QD_EXIT_FAIL;
     }
+    double *A = num + n * n + 2 * n, *lambda = A + m * n + m;
     qd_status st = qd_eom_eval(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, num, num + n * n,
-                               num + n * n + n);
-    for (size_t i = 0; st == QD_OK && i < n * n + 2 * n; i++)
+                               num + n * n + n, lambda, lambda + m);
+    if (st == QD_OK)
+        st = constraint_rows(r, A);
+    for (size_t i = 0; st == QD_OK && i < total; i++)
         if (!(r->numbers[i] = qd_float(r->ctx, num[i])))
             st = QD_ERR_NUMERIC;
     free(num);
@@ -229,7 +263,7 @@ static int make_view(eom_run *r) {
     qd_eom *e = r->e;
     size_t n = e->n;
     *v = (qd_eom_view){.ctx = r->ctx, .mf = &r->mf, .e = e, .M = e->M, .f = e->f, .acc = e->acc,
-                       .T = {e->T2, e->T1, e->T0}};
+                       .A = e->A, .b = e->b, .lambda = e->mult, .T = {e->T2, e->T1, e->T0}};
     v->split = e->T2 && e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0));
     if (!r->numbers)
         return QD_EXIT_OK;
@@ -238,6 +272,10 @@ static int make_view(eom_run *r) {
     v->M = r->numbers;
     v->f = r->numbers + n * n;
     v->acc = r->numbers + n * n + n;
+    v->A = v->acc + n;
+    v->b = v->A + e->ncon * n;
+    v->lambda = v->b + e->ncon;
+    v->R = v->lambda + e->ncon;
     for (size_t i = 0; i < 3 && v->T[0]; i++)
         if (!(v->T[i] = at_state(r, v->T[i])))
             return qd_diag_ctx(r->ctx);
@@ -273,7 +311,7 @@ int qd_cmd_eom(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = apply_sets(&r, &a);
     if (rc == QD_EXIT_OK)
-        rc = derive(&r);
+        rc = derive(&r, a.eliminate);
     if (rc == QD_EXIT_OK)
         rc = substitute(&r);
     if (rc == QD_EXIT_OK)

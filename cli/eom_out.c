@@ -76,7 +76,7 @@ static void text_header(const qd_eom_view *v, qd_buf *b) {
     if (!v->numeric)
         return;
     qd_buf_puts(b, "at:");
-    for (size_t i = 0; i < 2 * v->e->n + 1; i++) {
+    for (size_t i = 0; i < 2 * qd_model_ncoords(m) + 1; i++) {
         qd_buf_puts(b, i ? ", " : " ");
         qd_print(v->ctx, v->st->syms[i], QD_FMT_TEXT, b);
         qd_buf_puts(b, " = ");
@@ -85,10 +85,110 @@ static void text_header(const qd_eom_view *v, qd_buf *b) {
     qd_buf_puts(b, "\n");
 }
 
+static const char *kind_name(qd_con_kind k) {
+    return k == QD_CON_HOLONOMIC ? "holonomic" : k == QD_CON_INTEGRABLE ? "integrable"
+                                                                        : "nonholonomic";
+}
+
+/* Row j of M q'' = f + A^T lambda, by names: the nonzero entries of M,
+ * and lambda_k*(A_kj) for the nonzero A_kj. */
+static qd_status text_row(const qd_eom_view *v, qd_buf *b, size_t j) {
+    size_t n = v->e->n;
+    bool any = false;
+    qd_status st = QD_OK;
+    qd_buf_printf(b, "  %s: ", qname(v, j));
+    for (size_t k = 0; k < n; k++) {
+        if (qd_is_zero(v->M[j * n + k]))
+            continue;
+        qd_buf_printf(b, "%sM[%s,%s]*%s''", any ? " + " : "", qname(v, j < k ? j : k),
+                      qname(v, j < k ? k : j), qname(v, k));
+        any = true;
+    }
+    qd_buf_printf(b, "%s = f[%s]", any ? "" : "0", qname(v, j));
+    for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
+        const qd_expr *a = v->A[k * n + j];
+        if (qd_is_zero(a))
+            continue;
+        qd_buf_printf(b, " + %s*(", qd_expr_name(v->e->con[k].lambda));
+        st = put(v, b, a, QD_FMT_TEXT);
+        qd_buf_puts(b, ")");
+    }
+    qd_buf_puts(b, "\n");
+    return st;
+}
+
+static qd_status text_constraint(const qd_eom_view *v, qd_buf *b, size_t k) {
+    const qd_con *c = &v->e->con[k];
+    size_t n = v->e->n;
+    qd_buf_printf(b, "  %s (%s): ", c->name, kind_name(c->kind));
+    qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, b);
+    qd_buf_puts(b, " = 0\n");
+    if (st == QD_OK && c->integral) {
+        qd_buf_puts(b, "    integral: ");
+        st = qd_print(v->ctx, c->integral, QD_FMT_TEXT, b);
+        qd_buf_puts(b, " = const\n");
+    }
+    for (size_t j = 0; j < n && st == QD_OK; j++) {
+        qd_buf_printf(b, "    A[%s,%s] = ", c->name, qname(v, j));
+        st = put(v, b, v->A[k * n + j], QD_FMT_TEXT);
+        qd_buf_puts(b, "\n");
+    }
+    if (st == QD_OK) {
+        qd_buf_printf(b, "    b[%s] = ", c->name);
+        st = put(v, b, v->b[k], QD_FMT_TEXT);
+        qd_buf_puts(b, "\n");
+    }
+    return st;
+}
+
+static qd_status text_constraints(const qd_eom_view *v, qd_buf *b) {
+    qd_status st = QD_OK;
+    qd_buf_puts(b, "\nwith the constraints' multipliers, M q'' = f + A^T lambda:\n");
+    for (size_t j = 0; j < v->e->n && st == QD_OK; j++)
+        st = text_row(v, b, j);
+    qd_buf_puts(b, "\nconstraints, closed by A q'' = b (holonomic ones differentiated twice, "
+                   "Pfaffian ones once):\n");
+    for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++)
+        st = text_constraint(v, b, k);
+    return st;
+}
+
+static qd_status text_forces(const qd_eom_view *v, qd_buf *b) {
+    qd_status st = QD_OK;
+    qd_buf_puts(b, "\nmultipliers:\n");
+    for (size_t k = 0; v->lambda && k < v->e->ncon && st == QD_OK; k++) {
+        qd_buf_printf(b, "  %s = ", qd_expr_name(v->e->con[k].lambda));
+        st = put(v, b, v->lambda[k], QD_FMT_TEXT);
+        qd_buf_puts(b, "\n");
+    }
+    if (!v->R)
+        return st;
+    qd_buf_puts(b, "\ngeneralized constraint forces R = A^T lambda:\n");
+    for (size_t j = 0; j < v->e->n && st == QD_OK; j++) {
+        qd_buf_printf(b, "  R[%s] = ", qname(v, j));
+        st = put(v, b, v->R[j], QD_FMT_TEXT);
+        qd_buf_puts(b, "\n");
+    }
+    return st;
+}
+
+static qd_status text_eliminated(const qd_eom_view *v, qd_buf *b) {
+    qd_status st = QD_OK;
+    qd_buf_puts(b, "\neliminated with holonomic constraints (substituted before deriving):\n");
+    for (size_t i = 0; i < v->e->nelim && st == QD_OK; i++) {
+        qd_buf_printf(b, "  %s = ", qd_expr_name(v->e->elim[i].q));
+        st = qd_print(v->ctx, v->e->elim[i].value, QD_FMT_TEXT, b);
+        qd_buf_printf(b, " (constraint %s)\n", v->e->elim[i].con);
+    }
+    return st;
+}
+
 static qd_status write_text(const qd_eom_view *v, qd_buf *b) {
     size_t n = v->e->n;
     qd_status st = QD_OK;
     text_header(v, b);
+    if (v->e->nelim)
+        st = text_eliminated(v, b);
     if (v->split) {
         static const char *const parts[] = {"T2", "T1", "T0"};
         qd_buf_puts(b, "\nkinetic energy T = T2 + T1 + T0 (T2 quadratic in the velocities, "
@@ -111,14 +211,18 @@ static qd_status write_text(const qd_eom_view *v, qd_buf *b) {
         st = put(v, b, v->f[j], QD_FMT_TEXT);
         qd_buf_puts(b, "\n");
     }
+    if (st == QD_OK && v->e->ncon)
+        st = text_constraints(v, b);
     if (v->acc) {
-        qd_buf_puts(b, "\naccelerations q'' = M^-1 f:\n");
+        qd_buf_puts(b, v->e->ncon ? "\naccelerations:\n" : "\naccelerations q'' = M^-1 f:\n");
         for (size_t j = 0; j < n && st == QD_OK; j++) {
             qd_buf_printf(b, "  %s'' = ", qname(v, j));
             st = put(v, b, v->acc[j], QD_FMT_TEXT);
             qd_buf_puts(b, "\n");
         }
     }
+    if (st == QD_OK && v->e->ncon && (v->lambda || v->R))
+        st = text_forces(v, b);
     return st;
 }
 
@@ -144,6 +248,26 @@ static qd_status latex_row(const qd_eom_view *v, size_t j, qd_buf *lhs) {
     return qd_print(v->ctx, sum, QD_FMT_LATEX, lhs);
 }
 
+/* f_j + sum_k lambda_k A_kj. */
+static const qd_expr *with_multipliers(const qd_eom_view *v, size_t j) {
+    const qd_expr *x = v->f[j];
+    for (size_t k = 0; k < v->e->ncon; k++)
+        x = qd_add(v->ctx, x, qd_mul(v->ctx, v->e->con[k].lambda, v->A[k * v->e->n + j]));
+    return x;
+}
+
+/* sum_j A_kj q''_j in LaTeX, into lhs. */
+static qd_status latex_constraint_row(const qd_eom_view *v, size_t k, qd_buf *lhs) {
+    size_t n = v->e->n;
+    const qd_expr *sum = qd_int(v->ctx, 0);
+    for (size_t j = 0; j < n; j++)
+        sum = qd_add(v->ctx, sum, qd_mul(v->ctx, v->A[k * n + j], v->e->qdd[j]));
+    if (!sum)
+        return qd_ctx_status(v->ctx);
+    qd_buf_clear(lhs);
+    return qd_print(v->ctx, sum, QD_FMT_LATEX, lhs);
+}
+
 static qd_status write_latex(const qd_eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T_2", "T_1", "T_0"};
     size_t n = v->e->n;
@@ -156,7 +280,12 @@ static qd_status write_latex(const qd_eom_view *v, qd_buf *b) {
     for (size_t j = 0; j < n && st == QD_OK; j++) {
         st = latex_row(v, j, &lhs);
         if (st == QD_OK)
-            st = latex_line(v, b, &first, qd_buf_str(&lhs), v->f[j]);
+            st = latex_line(v, b, &first, qd_buf_str(&lhs), with_multipliers(v, j));
+    }
+    for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
+        st = latex_constraint_row(v, k, &lhs);
+        if (st == QD_OK)
+            st = latex_line(v, b, &first, qd_buf_str(&lhs), v->b[k]);
     }
     for (size_t j = 0; v->acc && j < n && st == QD_OK; j++) {
         qd_buf_clear(&lhs);
@@ -213,13 +342,91 @@ static void json_header(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
         return;
     qd_json_key(j, "state");
     qd_json_begin_object(j);
-    for (size_t i = 0; i < 2 * v->e->n + 1; i++) {
+    for (size_t i = 0; i < 2 * qd_model_ncoords(m) + 1; i++) {
         qd_buf_clear(tmp);
         qd_print(v->ctx, v->st->syms[i], QD_FMT_TEXT, tmp);
         qd_json_key(j, qd_buf_str(tmp));
         qd_json_number(j, v->st->vals[i]);
     }
     qd_json_end_object(j);
+}
+
+static qd_status json_constraint(const qd_eom_view *v, qd_json *j, size_t k, qd_buf *tmp) {
+    const qd_con *c = &v->e->con[k];
+    qd_json_begin_object(j);
+    qd_json_key(j, "name");
+    qd_json_string(j, c->name);
+    qd_json_key(j, "kind");
+    qd_json_string(j, kind_name(c->kind));
+    qd_json_key(j, "expression");
+    qd_buf_clear(tmp);
+    qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, tmp);
+    qd_json_string(j, qd_buf_str(tmp));
+    if (st == QD_OK && c->integral) {
+        qd_json_key(j, "integral");
+        qd_buf_clear(tmp);
+        st = qd_print(v->ctx, c->integral, QD_FMT_TEXT, tmp);
+        qd_json_string(j, qd_buf_str(tmp));
+    }
+    qd_json_key(j, "multiplier");
+    qd_json_string(j, qd_expr_name(c->lambda));
+    if (st == QD_OK)
+        st = json_vector(v, j, "A", v->A + k * v->e->n, v->e->n, tmp);
+    if (st == QD_OK) {
+        qd_json_key(j, "b");
+        st = json_entry(v, j, v->b[k], tmp);
+    }
+    qd_json_end_object(j);
+    return st;
+}
+
+/* "constraints" (each with its row of A and b), then the multipliers by
+ * constraint name and the constraint forces by coordinate name when known. */
+static qd_status json_constraints(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
+    qd_status st = QD_OK;
+    qd_json_key(j, "constraints");
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++)
+        st = json_constraint(v, j, k, tmp);
+    qd_json_end_array(j);
+    if (v->lambda) {
+        qd_json_key(j, "multipliers");
+        qd_json_begin_object(j);
+        for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
+            qd_json_key(j, v->e->con[k].name);
+            st = json_entry(v, j, v->lambda[k], tmp);
+        }
+        qd_json_end_object(j);
+    }
+    if (v->R) {
+        qd_json_key(j, "constraint_forces");
+        qd_json_begin_object(j);
+        for (size_t i = 0; i < v->e->n && st == QD_OK; i++) {
+            qd_json_key(j, qname(v, i));
+            st = json_entry(v, j, v->R[i], tmp);
+        }
+        qd_json_end_object(j);
+    }
+    return st;
+}
+
+static qd_status json_eliminated(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
+    qd_status st = QD_OK;
+    qd_json_key(j, "eliminated");
+    qd_json_begin_object(j);
+    for (size_t i = 0; i < v->e->nelim && st == QD_OK; i++) {
+        qd_json_key(j, qd_expr_name(v->e->elim[i].q));
+        qd_json_begin_object(j);
+        qd_json_key(j, "constraint");
+        qd_json_string(j, v->e->elim[i].con);
+        qd_json_key(j, "value");
+        qd_buf_clear(tmp);
+        st = qd_print(v->ctx, v->e->elim[i].value, QD_FMT_TEXT, tmp);
+        qd_json_string(j, qd_buf_str(tmp));
+        qd_json_end_object(j);
+    }
+    qd_json_end_object(j);
+    return st;
 }
 
 static qd_status write_json(const qd_eom_view *v, qd_buf *b) {
@@ -248,6 +455,10 @@ static qd_status write_json(const qd_eom_view *v, qd_buf *b) {
         st = json_vector(v, &j, "forcing", v->f, n, &tmp);
     if (st == QD_OK && v->acc)
         st = json_vector(v, &j, "accelerations", v->acc, n, &tmp);
+    if (st == QD_OK && v->e->nelim)
+        st = json_eliminated(v, &j, &tmp);
+    if (st == QD_OK && v->e->ncon)
+        st = json_constraints(v, &j, &tmp);
     qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);
@@ -287,6 +498,25 @@ static qd_status sympy_assign(const qd_eom_view *v, qd_buf *b, const char *name,
     return st;
 }
 
+/* A, b and the multipliers: M*q'' = f + A.T*lam and A*q'' = b. */
+static qd_status sympy_constraints(const qd_eom_view *v, qd_buf *b) {
+    size_t n = v->e->n, m = v->e->ncon;
+    out_name A = pick(v, "A"), bb = pick(v, "b"), lam = pick(v, "lam"), M = pick(v, "M");
+    out_name f = pick(v, "f"), q = pick(v, "q");
+    qd_buf_printf(b, "# constraints: %s*%s.diff(t, 2) = %s + %s.T*%s and %s*%s.diff(t, 2) = %s\n",
+                  M.s, q.s, f.s, A.s, lam.s, A.s, q.s, bb.s);
+    qd_buf_printf(b, "%s = Matrix([", lam.s);
+    for (size_t k = 0; k < m; k++)
+        qd_buf_printf(b, "%sSymbol('%s')", k ? ", " : "", qd_expr_name(v->e->con[k].lambda));
+    qd_buf_puts(b, "])\n");
+    qd_status st = sympy_assign(v, b, A.s, v->A, m, n);
+    if (st == QD_OK)
+        st = sympy_assign(v, b, bb.s, v->b, m, 1);
+    if (st == QD_OK && v->lambda)
+        st = sympy_assign(v, b, pick(v, "lam_value").s, v->lambda, m, 1);
+    return st;
+}
+
 static qd_status write_sympy(const qd_eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T2", "T1", "T0"};
     const qd_model *m = v->mf->model;
@@ -312,6 +542,8 @@ static qd_status write_sympy(const qd_eom_view *v, qd_buf *b) {
         st = sympy_assign(v, b, f.s, v->f, n, 1);
     if (st == QD_OK && v->acc)
         st = sympy_assign(v, b, qdd.s, v->acc, n, 1);
+    if (st == QD_OK && v->e->ncon)
+        st = sympy_constraints(v, b);
     return st;
 }
 
@@ -333,35 +565,107 @@ static void c_inputs(const qd_eom_view *v, qd_buf *b) {
     qd_buf_puts(b, " */\n");
 }
 
-static qd_status write_c(const qd_eom_view *v, qd_buf *b) {
-    size_t n = v->e->n, nout = n * n + n + (v->acc ? n : 0);
-    const qd_expr **out = malloc(nout * sizeof *out);
-    char (*names)[96] = malloc(nout * sizeof *names);
-    const char **lhs = malloc(nout * sizeof *lhs);
-    qd_status st = QD_ERR_NOMEM;
+/* The C outputs: M, f, q'' (when solved), A, b; names and expressions. */
+typedef struct c_outs {
+    size_t n;
+    const qd_expr **x;
+    char (*names)[96];
+    const char **lhs;
+} c_outs;
+
+static void c_add(c_outs *o, const qd_expr *x, const char *fmt, const char *base, size_t i,
+                  size_t j, bool two) {
+    if (two)
+        snprintf(o->names[o->n], sizeof o->names[0], fmt, base, i, j);
+    else
+        snprintf(o->names[o->n], sizeof o->names[0], fmt, base, i);
+    o->x[o->n] = x;
+    o->lhs[o->n] = o->names[o->n];
+    o->n++;
+}
+
+static void c_fill(const qd_eom_view *v, c_outs *o) {
+    size_t n = v->e->n, m = v->e->ncon;
     out_name M = pick(v, "M"), f = pick(v, "f"), qdd = pick(v, "qdd");
-    if (out && names && lhs) {
-        for (size_t i = 0; i < nout; i++) {
-            if (i < n * n)
-                snprintf(names[i], sizeof names[i], "%s[%zu][%zu]", M.s, i / n, i % n);
-            else if (i < n * n + n)
-                snprintf(names[i], sizeof names[i], "%s[%zu]", f.s, i - n * n);
-            else
-                snprintf(names[i], sizeof names[i], "%s[%zu]", qdd.s, i - n * n - n);
-            out[i] = i < n * n ? v->M[i] : i < n * n + n ? v->f[i - n * n] : v->acc[i - n * n - n];
-            lhs[i] = names[i];
-        }
+    out_name A = pick(v, "A"), b = pick(v, "b");
+    for (size_t i = 0; i < n * n; i++)
+        c_add(o, v->M[i], "%s[%zu][%zu]", M.s, i / n, i % n, true);
+    for (size_t i = 0; i < n; i++)
+        c_add(o, v->f[i], "%s[%zu]", f.s, i, 0, false);
+    for (size_t i = 0; v->acc && i < n; i++)
+        c_add(o, v->acc[i], "%s[%zu]", qdd.s, i, 0, false);
+    for (size_t i = 0; i < m * n; i++)
+        c_add(o, v->A[i], "%s[%zu][%zu]", A.s, i / n, i % n, true);
+    for (size_t k = 0; k < m; k++)
+        c_add(o, v->b[k], "%s[%zu]", b.s, k, 0, false);
+}
+
+static qd_status write_c(const qd_eom_view *v, qd_buf *b) {
+    size_t n = v->e->n, m = v->e->ncon, nout = n * n + 2 * n + m * n + m;
+    c_outs o = {0, malloc(nout * sizeof *o.x), malloc(nout * sizeof *o.names),
+                malloc(nout * sizeof *o.lhs)};
+    qd_status st = QD_ERR_NOMEM;
+    out_name M = pick(v, "M"), f = pick(v, "f"), qdd = pick(v, "qdd"), A = pick(v, "A");
+    if (o.x && o.names && o.lhs) {
+        c_fill(v, &o);
         qd_buf_printf(b, "/* qdot eom %s: %s q'' = %s", v->mf->path, M.s, f.s);
-        if (v->acc)
+        if (m)
+            qd_buf_printf(b, " + %s^T lambda, %s q'' = %s", A.s, A.s, pick(v, "b").s);
+        if (v->acc && m)
+            qd_buf_printf(b, ", and %s the accelerations that solve them", qdd.s);
+        else if (v->acc)
             qd_buf_printf(b, ", and %s = %s^-1 %s", qdd.s, M.s, f.s);
         qd_buf_puts(b, " */\n");
         c_inputs(v, b);
-        st = qd_print_c_block(v->ctx, nout, out, lhs, b);
+        st = qd_print_c_block(v->ctx, o.n, o.x, o.lhs, b);
     }
-    free(out);
-    free(names);
-    free(lhs);
+    free(o.x);
+    free(o.names);
+    free(o.lhs);
     return st;
+}
+
+/* ---- derivation errors ------------------------------------------------------ */
+
+/* The constraint an error message names, for the caret: the first model
+ * constraint whose name appears in it as a word. */
+static const char *named_constraint(const qd_model *m, const char *msg) {
+    for (size_t k = 0; k < qd_model_nconstraints(m); k++) {
+        const char *name = qd_model_constraint_name(m, k);
+        size_t len = strlen(name);
+        for (const char *p = strstr(msg, name); p; p = strstr(p + 1, name))
+            if ((p == msg || p[-1] == ' ') && (p[len] == ' ' || p[len] == ':' || !p[len]))
+                return name;
+    }
+    return NULL;
+}
+
+static const char *constraint_hint(const char *msg) {
+    if (strstr(msg, "inconsistent"))
+        return "the constraints contradict each other: correct or remove one";
+    if (strstr(msg, "redundant") || strstr(msg, "degenerate"))
+        return "remove the constraints that repeat what the others say";
+    if (strstr(msg, "velocities"))
+        return "write the constraint as sum_j a_j(q, t) q'_j + a0(q, t) = 0";
+    return "";
+}
+
+int qd_eom_derive_error(const qd_ctx *ctx, const qd_model_file *mf) {
+    const qd_model *m = mf->model;
+    const char *msg = qd_ctx_message(ctx);
+    const char *con = named_constraint(m, msg);
+    if (con && !strncmp(msg, "constraint", 10)) {
+        char what[160];
+        snprintf(what, sizeof what, "constraint:%s", con);
+        qd_model_file_error(mf, what, msg, constraint_hint(msg));
+        return QD_EXIT_USAGE;
+    }
+    if (qd_ctx_status(ctx) != QD_ERR_SINGULAR)
+        return qd_diag_ctx(ctx);
+    qd_model_file_error(mf, qd_model_lagrangian_given(m) ? "L" : "T", msg,
+                        "every coordinate needs inertia: its velocity must appear "
+                        "quadratically in T (or L)");
+    return QD_EXIT_USAGE;
 }
 
 qd_status qd_eom_write(const qd_eom_view *v, qd_eom_format fmt, qd_buf *out) {

@@ -1,6 +1,8 @@
 /*
  * cli/eom_out.h - `qdot eom` output: the equations M q'' = f of a model in
- * one of five formats (text, latex, json, sympy, c).
+ * one of five formats (text, latex, json, sympy, c); with constraints
+ * M q'' = f + A^T lambda and A q'' = b, the multipliers named
+ * lambda_<constraint>.
  */
 #ifndef QDOT_CLI_EOM_OUT_H
 #define QDOT_CLI_EOM_OUT_H
@@ -12,14 +14,18 @@
 typedef enum qd_eom_format { QD_EOM_TEXT, QD_EOM_LATEX, QD_EOM_JSON, QD_EOM_SYMPY, QD_EOM_C }
     qd_eom_format;
 
-/* What is printed.  In numeric mode (--at) every entry of M, f, acc and T is
- * a number node (qd_float) and st is the state they were evaluated at. */
+/* What is printed.  In numeric mode (--at) every entry of M, f, acc, A, b,
+ * lambda, R and T is a number node (qd_float) and st is the state they were
+ * evaluated at. */
 typedef struct qd_eom_view {
     qd_ctx *ctx;
     const qd_model_file *mf;
     const qd_eom *e;                /* n, q, qd, qdd */
     const qd_expr **M, **f;         /* n*n row-major, n */
     const qd_expr **acc;            /* n, or NULL when not solved */
+    const qd_expr **A, **b;         /* ncon*n row-major, ncon: A q'' = b */
+    const qd_expr **lambda;         /* ncon multipliers (numbers, or solved), or NULL */
+    const qd_expr **R;              /* n constraint forces A^T lambda (numeric mode), or NULL */
     const qd_expr *T[3];            /* T2, T1, T0; NULL when L was given without T */
     bool split;                     /* T1 or T0 is not identically zero */
     bool numeric;
@@ -29,5 +35,10 @@ typedef struct qd_eom_view {
 bool qd_eom_format_from_name(const char *name, qd_eom_format *out);
 /* Append the view to out; QD_OK, or the status of a printer that failed. */
 qd_status qd_eom_write(const qd_eom_view *v, qd_eom_format fmt, qd_buf *out);
+
+/* Print why qd_eom_derive failed, at the model statement to blame (a
+ * constraint the message names, or T/L for a singular mass matrix); returns
+ * the exit status. */
+int qd_eom_derive_error(const qd_ctx *ctx, const qd_model_file *mf);
 
 #endif

@@ -205,6 +205,15 @@ size_t qd_count_ops(const qd_expr *e);
 /* Number of distinct nodes of the DAG under e. */
 size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e);
 
+/* An antiderivative of e with respect to the symbol x (no constant added).
+ * Integrates sums term by term and products of factors free of x with one
+ * of: x^n and (a x + b)^n for a number n (n = -1 gives log(a x + b)/a, a
+ * logarithm of the argument, not of its absolute value), c^(a x + b) with c
+ * free of x, and sin, cos, exp, sinh, cosh of (a x + b); a and b free of x.
+ * An input that fits only once expanded (x (x + 1)) is expanded.  Anything
+ * else returns NULL with QD_ERR_ARG. */
+const qd_expr *qd_integrate(qd_ctx *ctx, const qd_expr *e, const qd_expr *x);
+
 /* ---- simple numeric evaluation ---------------------------------------------
  * Evaluates e with the n symbols syms[i] set to vals[i], walking the DAG once
  * (each shared node once).  QD_ERR_UNBOUND when a symbol has no value.  For

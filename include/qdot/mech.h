@@ -8,6 +8,16 @@
  * are linear in the accelerations and are written M(q, q', t) q'' = f(q, q', t):
  * M_jk = d^2 L / dq'_j dq'_k (the mass matrix, symmetric), and f the rest
  * moved to the right-hand side.  Every entry is simplified.
+ *
+ * Constraints (`constraint NAME: ...` in the model) add Lagrange multipliers:
+ *
+ *     M q'' = f + A^T lambda,      A q'' = b,
+ *
+ * A_kj the coefficient of q'_j in constraint k (holonomic: dphi_k/dq_j),
+ * lambda_k a plain symbol `lambda_<name>`, and R_j = sum_k lambda_k A_kj the
+ * generalized constraint force on q_j (Desloge ch. 49 thm 1, ch. 52 thm 1).
+ * The second block closes the system: each holonomic constraint
+ * differentiated twice, each Pfaffian one once.
  */
 #ifndef QDOT_MECH_H
 #define QDOT_MECH_H
@@ -48,6 +58,14 @@ typedef struct qd_con {
     const qd_expr *lambda;       /* the multiplier, a plain symbol lambda_<name> */
 } qd_con;
 
+/* A coordinate eliminated with a holonomic constraint (qd_eom_opts.eliminate):
+ * q = value along the motion, value in the remaining coordinates and t. */
+typedef struct qd_elim {
+    const char *con;             /* the constraint used (owned by the model) */
+    const qd_expr *q;
+    const qd_expr *value;
+} qd_elim;
+
 typedef struct qd_eom {
     size_t n;                    /* degrees of freedom */
     const qd_expr **q;           /* coordinates q_j */
@@ -67,6 +85,10 @@ typedef struct qd_eom {
     size_t ncon;
     qd_con *con;
     const qd_expr **A, **b;
+    const qd_expr **mult;        /* ncon symbolic multipliers after qd_eom_solve, else NULL */
+    /* Coordinates eliminated before deriving (not among q): nelim of them. */
+    size_t nelim;
+    qd_elim *elim;
     void *priv;                  /* the library's: the compiled numeric program */
 } qd_eom;
 
@@ -76,19 +98,42 @@ typedef struct qd_eom {
 qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m);
 void qd_eom_free(qd_eom *e);
 
+/* Options of the derivation.  eliminate: every holonomic constraint that is
+ * linear in one of its coordinates with a coefficient free of coordinates
+ * and time (x1 + x2 = l, r = a) is solved for that coordinate (the last one
+ * declared that qualifies), which is substituted with its velocity and
+ * acceleration into T, V, U, L, D, Q (Q_i += Q_j dq_j/dq_i) and the other
+ * constraints before Lagrange's equations are formed (Desloge ch. 50).
+ * Pfaffian constraints are never substituted: that gives wrong equations;
+ * they keep their multipliers. */
+typedef struct qd_eom_opts {
+    bool eliminate;
+} qd_eom_opts;
+
+/* qd_eom_derive with options (opts may be NULL: the defaults, all false). */
+qd_eom *qd_eom_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom_opts *opts);
+
 /* Solve M q'' = f symbolically for q'' (fraction-free elimination, each entry
- * simplified).  QD_ERR_TOOBIG when the result would exceed max_ops operations
- * (count_ops) in some entry: the caller then keeps M and f. */
+ * simplified); with constraints, the saddle-point system
+ * [M -A^T; A 0] [q''; lambda] = [f; b], the multipliers going to e->mult.
+ * QD_ERR_TOOBIG when the result would exceed max_ops operations (count_ops)
+ * in some entry: the caller then keeps M and f. */
 qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops);
 
 /* Numbers: M, f and q'' at one state.  vals gives the value of each symbol in
  * syms (coordinates, velocities, t, parameters); symbols not given are 0.
- * M is n*n row-major; M, f or qdd may be NULL when not wanted.
- * QD_ERR_SINGULAR when M is singular at that state (M and f are still
- * filled).  M and f are compiled on the first call and kept in e, so one
- * qd_eom must not be evaluated on two threads at once. */
+ * M is n*n row-major; M, f or qdd may be NULL when not wanted.  With
+ * constraints, q'' and the multipliers lambda (ncon) solve
+ * [M -A^T; A 0] [q''; lambda] = [f; b], and R (n) = A^T lambda is the
+ * generalized constraint force; lambda and R may be NULL (R is 0 without
+ * constraints).  QD_ERR_SINGULAR when M (or the saddle-point matrix) is
+ * singular at that state, with a message naming the constraints when they
+ * are redundant or inconsistent there (M and f are still filled).  The
+ * entries are compiled on the first call and kept in e, so one qd_eom must
+ * not be evaluated on two threads at once. */
 qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
-                      const double *vals, double *M, double *f, double *qdd);
+                      const double *vals, double *M, double *f, double *qdd, double *lambda,
+                      double *R);
 
 #ifdef __cplusplus
 }

@@ -71,6 +71,22 @@ size_t qd_model_nconstraints(const qd_model *m);
 const char *qd_model_constraint_name(const qd_model *m, size_t i);
 const qd_expr *qd_model_constraint(const qd_model *m, size_t i);
 
+/* Rigid bodies (`body NAME mass M inertia I at r orientation R`), in the
+ * order given.  Components are indexed 0..2 (x, y, z); matrices by row and
+ * column 0..2.  The inertia tensor is about the centre of mass in body axes;
+ * the rotation maps body components to space components (identity when no
+ * orientation is given); the angular velocity w is in body axes (from
+ * R^T R') and omega_space = R w, both simplified.  Every getter returns NULL
+ * for an index out of range. */
+size_t qd_model_nbodies(const qd_model *m);
+const char *qd_model_body_name(const qd_model *m, size_t i);
+const qd_expr *qd_model_body_mass(const qd_model *m, size_t i);
+const qd_expr *qd_model_body_inertia(const qd_model *m, size_t i, unsigned row, unsigned col);
+const qd_expr *qd_model_body_position(const qd_model *m, size_t i, unsigned k);
+const qd_expr *qd_model_body_rotation(const qd_model *m, size_t i, unsigned row, unsigned col);
+const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k);
+const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k);
+
 /* Initial values: the value of a coordinate (order 0) or velocity (order 1)
  * named in `initial`, or NULL. */
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);
@@ -81,7 +97,8 @@ const qd_expr *qd_model_definition(const qd_model *m, const char *name);
 
 /* Where a statement of the model stands, for errors found after parsing
  * ("the mass matrix is singular" points at the T line).  what: "T", "V", "L",
- * "U", "dissipation", "coordinates", or a coordinate's name.  false when the
+ * "U", "dissipation", "coordinates", a coordinate's name, "constraint:NAME"
+ * or "body:NAME" (the body's name on its line).  false when the
  * model has no such statement. */
 bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
 

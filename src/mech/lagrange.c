@@ -11,6 +11,8 @@
  * differentiated: the trigonometric sums of a chain of links collapse there
  * (x'^2 + y'^2 of a link is a sum of cos(q_j - q_k) q'_j q'_k), and every
  * derivative inherits the short form.  f is grouped the same way.
+ * Constraints add their rows afterwards (constraints.c); with
+ * --eliminate some are substituted first (eliminate.c).
  */
 #include "mech.h"
 
@@ -47,6 +49,11 @@ void qd_eom_free(qd_eom *e) {
     free(e->M);
     free(e->f);
     free(e->acc);
+    free(e->mult);
+    free(e->con);
+    free(e->A);
+    free(e->b);
+    free(e->elim);
     free(e);
 }
 
@@ -129,17 +136,16 @@ static qd_status fill_row(qd_ctx *ctx, qd_eom *e, size_t j, const qd_expr **coef
     return QD_OK;
 }
 
-static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd_model *m, const qd_expr *L) {
-    const qd_expr *D = qd_model_dissipation(m);
-    bool sym = !has_any(D, e->n, e->qdd);
+static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L) {
+    bool sym = !has_any(s->D, e->n, e->qdd);
     for (size_t j = 0; j < e->n; j++)
-        sym = sym && !has_any(qd_model_force(m, j), e->n, e->qdd);
-    const qd_expr **coeffs = calloc(e->n, sizeof *coeffs);
+        sym = sym && !has_any(s->Q[j], e->n, e->qdd);
+    const qd_expr **coeffs = calloc(e->n ? e->n : 1, sizeof *coeffs);
     if (!coeffs)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
     for (size_t j = 0; j < e->n && st == QD_OK; j++) {
-        st = derive_row(ctx, e, L, D, qd_model_force(m, j), j, coeffs);
+        st = derive_row(ctx, e, L, s->D, s->Q[j], j, coeffs);
         if (st == QD_OK)
             st = fill_row(ctx, e, j, coeffs, sym);
     }
@@ -147,9 +153,9 @@ static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd_model *m, const qd_
     return st;
 }
 
-static qd_status set_coords(qd_ctx *ctx, qd_eom *e, const qd_model *m) {
+static qd_status set_coords(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     for (size_t j = 0; j < e->n; j++) {
-        e->q[j] = qd_model_coord(m, j);
+        e->q[j] = s->q[j];
         e->qd[j] = qd_jet(ctx, e->q[j], 1);
         e->qdd[j] = qd_jet(ctx, e->q[j], 2);
         if (!e->qd[j] || !e->qdd[j])
@@ -160,53 +166,70 @@ static qd_status set_coords(qd_ctx *ctx, qd_eom *e, const qd_model *m) {
 
 /* L grouped by velocity monomials; when L is T - V - U, T's grouping is
  * reused and only V + U is grouped. */
-static const qd_expr *grouped_lagrangian(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+static const qd_expr *grouped_lagrangian(qd_ctx *ctx, const qd_eom *e, const qd__sys *s,
                                          const qd_expr *Tg) {
-    const qd_expr *L = qd_model_lagrangian(m), *V = qd_model_potential(m);
-    const qd_expr *U = qd_model_gen_potential(m), *zero = qd_int(ctx, 0);
-    const qd_expr *Lg = NULL;
-    if (Tg && !qd_model_lagrangian_given(m))
-        Lg = qd_sub(ctx, Tg, grouped(ctx, e, qd_add(ctx, V ? V : zero, U ? U : zero)));
+    const qd_expr *zero = qd_int(ctx, 0), *Lg = NULL;
+    if (Tg && !s->L_given)
+        Lg = qd_sub(ctx, Tg, grouped(ctx, e, qd_add(ctx, s->V ? s->V : zero, s->U ? s->U : zero)));
     else
-        Lg = grouped(ctx, e, L);
-    return Lg == L ? qd_simplify(ctx, L) : Lg;
+        Lg = grouped(ctx, e, s->L);
+    return Lg == s->L ? qd_simplify(ctx, s->L) : Lg;
 }
 
-static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd_model *m) {
-    qd_status st = set_coords(ctx, e, m);
-    const qd_expr *T = qd_model_kinetic(m);
+static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
+    qd_status st = set_coords(ctx, e, s);
     qd__vsum vt = {NULL, {NULL, NULL, NULL}, 0, NULL};
     if (st != QD_OK)
         return st;
-    if (!qd_model_lagrangian(m)) {
+    if (!s->L) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the model gives neither T nor L");
         return QD_ERR_ARG;
     }
-    if (T && (st = qd__split_kinetic(ctx, T, e->n, e->qd, &vt)) != QD_OK)
+    if (s->T && (st = qd__split_kinetic(ctx, s->T, e->n, e->qd, &vt)) != QD_OK)
         return st;
-    if (T && vt.top <= 2) {
+    if (s->T && vt.top <= 2) {
         e->T2 = vt.deg[2];
         e->T1 = vt.deg[1];
         e->T0 = vt.deg[0];
     }
-    e->L = grouped_lagrangian(ctx, e, m, vt.all);
+    e->L = grouped_lagrangian(ctx, e, s, vt.all);
     if (!e->L)
         return qd_ctx_status(ctx);
-    st = derive_all(ctx, e, m, e->L);
+    st = derive_all(ctx, e, s, e->L);
     if (st == QD_OK)
-        st = qd__check_singular(ctx, e, T);
+        st = qd__con_setup(ctx, e, s);
+    if (st == QD_OK)
+        st = qd__check_singular(ctx, e, s->T);
     return st;
 }
 
-qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) {
+static qd_status derive_sys(qd_ctx *ctx, qd__sys *s, const qd_model *m, const qd_eom_opts *opts,
+                            qd_eom **out) {
+    qd_elim *elim = NULL;
+    size_t nelim = 0;
+    qd_status st = qd__sys_from_model(ctx, m, s);
+    if (st == QD_OK && opts && opts->eliminate)
+        st = qd__eliminate(ctx, s, &elim, &nelim);
+    if (st == QD_OK && !(*out = eom_alloc(s->n))) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
+        st = QD_ERR_NOMEM;
+    }
+    if (st != QD_OK) {
+        free(elim);
+        return st;
+    }
+    (*out)->elim = elim;
+    (*out)->nelim = nelim;
+    return derive(ctx, *out, s);
+}
+
+qd_eom *qd_eom_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom_opts *opts) {
     if (!ctx || !m)
         return NULL;
-    qd_eom *e = eom_alloc(qd_model_ncoords(m));
-    if (!e) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
-        return NULL;
-    }
-    qd_status st = derive(ctx, e, m);
+    qd__sys s;
+    qd_eom *e = NULL;
+    qd_status st = derive_sys(ctx, &s, m, opts, &e);
+    qd__sys_free(&s);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "deriving the equations of motion failed");
@@ -214,4 +237,43 @@ qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) {
         return NULL;
     }
     return e;
+}
+
+qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) { return qd_eom_derive_opts(ctx, m, NULL); }
+
+/* ---- the system a model describes ---------------------------------------- */
+
+void qd__sys_free(qd__sys *s) {
+    free(s->q);
+    free(s->Q);
+    free(s->con_name);
+    free(s->con_expr);
+    *s = (qd__sys){0};
+}
+
+qd_status qd__sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s) {
+    size_t n = qd_model_ncoords(m), nc = qd_model_nconstraints(m);
+    *s = (qd__sys){.n = n, .ncon = nc, .L_given = qd_model_lagrangian_given(m)};
+    s->q = malloc((n + 1) * sizeof *s->q);
+    s->Q = malloc((n + 1) * sizeof *s->Q);
+    s->con_name = malloc((nc + 1) * sizeof *s->con_name);
+    s->con_expr = malloc((nc + 1) * sizeof *s->con_expr);
+    if (!s->q || !s->Q || !s->con_name || !s->con_expr) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
+        return QD_ERR_NOMEM;
+    }
+    for (size_t j = 0; j < n; j++) {
+        s->q[j] = qd_model_coord(m, j);
+        s->Q[j] = qd_model_force(m, j);
+    }
+    for (size_t k = 0; k < nc; k++) {
+        s->con_name[k] = qd_model_constraint_name(m, k);
+        s->con_expr[k] = qd_model_constraint(m, k);
+    }
+    s->T = qd_model_kinetic(m);
+    s->V = qd_model_potential(m);
+    s->U = qd_model_gen_potential(m);
+    s->L = qd_model_lagrangian(m);
+    s->D = qd_model_dissipation(m);
+    return QD_OK;
 }

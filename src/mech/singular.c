@@ -8,7 +8,9 @@
  * identically 0.  Rank deficiency at every state means M is singular; the
  * null space at the last state names the accelerations left undetermined.
  * Only when M cannot be compiled (a user function in it) is det M built by
- * fraction-free elimination.
+ * fraction-free elimination.  With constraints the matrix to check is
+ * [M -A^T; A 0]; when it is singular at every state, rank-deficient rows A
+ * name the redundant (or inconsistent) constraints.
  */
 #include "mech.h"
 
@@ -88,29 +90,86 @@ static bool all_finite(size_t n, const double *x) {
     return true;
 }
 
+/* Is the matrix to solve singular at the outputs out?  [M -A^T; A 0] with
+ * constraints (M alone may then be singular: a massless coordinate that a
+ * constraint carries), else M; null gets M's null vector. */
+static bool singular_at(const qd_eom *e, double *out, double *K, size_t *pc, bool *free_col,
+                        double *null) {
+    size_t n = e->n, s = n + e->ncon;
+    if (!e->ncon)
+        return qd__gauss(n, out, NULL, RANK_TOL, pc, free_col, null) < n;
+    for (size_t i = 0; i < s * s; i++)
+        K[i] = 0;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++)
+            K[i * s + j] = out[i * n + j];
+    for (size_t k = 0; k < e->ncon; k++)
+        for (size_t j = 0; j < n; j++) {
+            K[j * s + n + k] = -out[qd__out_A(e) + k * n + j];
+            K[(n + k) * s + j] = out[qd__out_A(e) + k * n + j];
+        }
+    return qd__gauss(s, K, NULL, RANK_TOL, pc, free_col, NULL) < s;
+}
+
+/* The constraints' part of a singular saddle-point matrix, at the outputs
+ * out of a state where it is singular; QD_OK when A has full rank. */
+static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *out) {
+    size_t m = e->ncon;
+    double *mu = malloc((m + 1) * sizeof *mu);
+    if (!mu)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_OK;
+    if (qd__con_deficient(e->n, m, out + qd__out_A(e), RANK_TOL, mu)) {
+        /* the constraints themselves (not their derivatives) decide
+         * consistency: x = 1 and x = 2 have the same rows A */
+        const double *g = out + qd__out_g(e);
+        double s = 0, top = 0;
+        for (size_t k = 0; k < m; k++) {
+            s += mu[k] * g[k];
+            top = fmax(top, fabs(g[k]));
+        }
+        st = qd__con_report(ctx, e, mu, fabs(s) > 1e-9 * (1 + top), "");
+    }
+    free(mu);
+    return st;
+}
+
 static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, qd_prog *p,
-                               size_t nin, bool *pick) {
-    size_t n = e->n;
-    double *w = malloc((nin + 3 * n * n + 2 * n) * sizeof *w + n * (sizeof(size_t) + 1));
+                               size_t nin, size_t nout, bool *pick) {
+    size_t n = e->n, s = n + e->ncon;
+    double *w = malloc((nin + nout + s * s + s) * sizeof *w + s * (sizeof(size_t) + 1));
     if (!w)
         return QD_ERR_NOMEM;
-    /* scratch layout: in[nin], out[n*n + n], null[n], pc[n], free_col[n] */
-    double *in = w, *out = w + nin, *null = out + n * n + n;
-    size_t *pc = (size_t *)(null + n);
-    bool *free_col = (bool *)(pc + n);
+    /* scratch layout: in[nin], out[nout], K[s*s], null[s], pc[s], free_col[s] */
+    double *in = w, *out = w + nin, *K = out + nout, *null = K + s * s;
+    size_t *pc = (size_t *)(null + s);
+    bool *free_col = (bool *)(pc + s);
     int sing = 0, tried = 0;
     for (unsigned k = 0; k < NSTATES && !(tried && !sing); k++) {
         random_state(nin, in, k);
         qd_prog_run(p, in, out);
-        if (!all_finite(n * n, out))
+        if (!all_finite(nout, out))
             continue;
         tried++;
-        sing = qd__gauss(n, out, NULL, RANK_TOL, pc, free_col, null) < n;
+        sing = singular_at(e, out, K, pc, free_col, null);
     }
-    if (tried && sing)
+    qd_status st = tried && sing ? QD_ERR_SINGULAR : QD_OK;
+    if (st != QD_OK && e->ncon) {
+        st = constraint_check(ctx, e, out);
+        if (st == QD_OK && !zero_rows(ctx, e, T, pick)) {
+            qd_prog_run(p, in, out); /* M again: singular_at overwrote it */
+            if (qd__gauss(n, out, NULL, RANK_TOL, pc, free_col, null) < n)
+                report_null(ctx, e, T, null, pick);
+            else
+                qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                             "the mass matrix is singular on the motions the constraints allow");
+        }
+        st = QD_ERR_SINGULAR;
+    } else if (st != QD_OK) {
         report_null(ctx, e, T, null, pick);
+    }
     free(w);
-    return tried && sing ? QD_ERR_SINGULAR : QD_OK;
+    return st;
 }
 
 /* Only for a matrix that cannot be compiled: det M by elimination, for the
@@ -130,14 +189,14 @@ static qd_status symbolic_check(qd_ctx *ctx, const qd_eom *e) {
 static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick) {
     qd__eom_num *num = e->priv;
     if (qd__eom_compile(ctx, e) == QD_OK)
-        return numeric_check(ctx, e, T, num->prog, num->nin, pick);
+        return numeric_check(ctx, e, T, num->prog, num->nin, num->nout, pick);
     qd_ctx_clear_error(ctx);
     size_t nin, nn = e->n * e->n;
     const qd_expr **in = qd__inputs(ctx, nn, e->M, &nin);
     qd_prog *p = in ? qd_prog_new(ctx, nin, in, nn, e->M) : NULL;
     qd_status st;
     if (p) {
-        st = numeric_check(ctx, e, T, p, nin, pick);
+        st = e->ncon ? QD_OK : numeric_check(ctx, e, T, p, nin, nn, pick);
     } else {
         qd_ctx_clear_error(ctx);
         st = symbolic_check(ctx, e);
@@ -152,7 +211,7 @@ qd_status qd__check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T) {
     if (!pick)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
-    if (!zero_rows(ctx, e, T, pick))
+    if (e->ncon || !zero_rows(ctx, e, T, pick))
         st = check_by_value(ctx, e, T, pick);
     free(pick);
     return st;

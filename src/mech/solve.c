@@ -8,7 +8,8 @@
  * Comp. 22 (1968) 565).  Each step is expanded and cancelled, which keeps
  * the entries polynomial; only the finished accelerations are simplified.
  * The solution is x_i = N_i / det M with N_i (Cramer's numerators) found by
- * a fraction-free back substitution.
+ * a fraction-free back substitution.  With constraints the same elimination
+ * runs on the saddle-point matrix [M -A^T; A 0] (saddle.c has its numbers).
  */
 #include "mech.h"
 
@@ -154,38 +155,74 @@ static qd_status solve_entries(elim *el, const qd_expr **acc, size_t max_ops) {
     return QD_OK;
 }
 
-static void solve_error(qd_ctx *ctx, qd_status st, size_t max_ops) {
+static void solve_error(qd_ctx *ctx, qd_status st, size_t ncon, size_t max_ops) {
     if (qd_ctx_status(ctx) != QD_OK)
         return;
     if (st == QD_ERR_TOOBIG)
         qd_ctx_error(ctx, st, "the explicit accelerations exceed %zu operations; keep M q'' = f",
                      max_ops);
+    else if (st == QD_ERR_SINGULAR && ncon)
+        qd_ctx_error(ctx, st, "the matrix [M -A^T; A 0] of the constrained equations is "
+                              "singular for every state");
     else if (st == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "the mass matrix is singular: det M = 0 for every state");
     else
         qd_ctx_error(ctx, st, "solving M q'' = f failed");
 }
 
-qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
-    size_t n = e->n, w = n + 1;
-    const qd_expr **A = malloc((n * w + 1) * sizeof *A), **acc = calloc(n + 1, sizeof *acc);
-    qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;
-    for (size_t i = 0; st == QD_OK && i < n; i++) {
+/* The augmented saddle-point matrix [M -A^T f; A 0 b] ((n+m) rows). */
+static void augmented(qd_ctx *ctx, const qd_eom *e, const qd_expr **A) {
+    size_t n = e->n, m = e->ncon, N = n + m, w = N + 1;
+    const qd_expr *zero = qd_int(ctx, 0);
+    for (size_t i = 0; i < N * w; i++)
+        A[i] = zero;
+    for (size_t i = 0; i < n; i++) {
         for (size_t j = 0; j < n; j++)
             A[i * w + j] = e->M[i * n + j];
-        A[i * w + n] = e->f[i];
+        A[i * w + N] = e->f[i];
     }
-    elim el = {ctx, n, w, A, max_ops * GROWTH + 4096, 1};
-    if (st == QD_OK && n)
-        st = solve_entries(&el, acc, max_ops);
-    free(A);
-    if (st != QD_OK) {
-        free(acc);
-        solve_error(ctx, st, max_ops);
-        return st;
+    for (size_t k = 0; k < m; k++) {
+        for (size_t j = 0; j < n; j++) {
+            A[j * w + n + k] = qd_neg(ctx, e->A[k * n + j]);
+            A[(n + k) * w + j] = e->A[k * n + j];
+        }
+        A[(n + k) * w + N] = e->b[k];
+    }
+}
+
+static qd_status keep(qd_eom *e, const qd_expr **x) {
+    const qd_expr **mult = NULL;
+    if (e->ncon) {
+        mult = malloc(e->ncon * sizeof *mult);
+        if (!mult)
+            return QD_ERR_NOMEM;
+        for (size_t k = 0; k < e->ncon; k++)
+            mult[k] = x[e->n + k];
     }
     free(e->acc);
-    e->acc = acc;
+    free(e->mult);
+    e->acc = x;
+    e->mult = mult;
+    return QD_OK;
+}
+
+qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
+    size_t N = e->n + e->ncon, w = N + 1;
+    const qd_expr **A = malloc((N * w + 1) * sizeof *A), **acc = calloc(N + 1, sizeof *acc);
+    qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK)
+        augmented(ctx, e, A);
+    elim el = {ctx, N, w, A, max_ops * GROWTH + 4096, 1};
+    if (st == QD_OK && N)
+        st = solve_entries(&el, acc, max_ops);
+    free(A);
+    if (st == QD_OK)
+        st = keep(e, acc);
+    if (st != QD_OK) {
+        free(acc);
+        solve_error(ctx, st, e->ncon, max_ops);
+        return st;
+    }
     return QD_OK;
 }
 
@@ -247,18 +284,34 @@ void qd__eom_num_free(qd__eom_num *num) {
     num->in = num->out = NULL;
 }
 
-qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
-    qd__eom_num *num = e->priv;
-    size_t n = e->n, nout = n * n + n;
-    if (num->prog)
-        return QD_OK;
+/* Every output of the program, in the order of qd__out_*. */
+static const qd_expr **outputs(const qd_eom *e, size_t nout) {
+    size_t n = e->n, m = e->ncon;
     const qd_expr **outs = malloc((nout + 1) * sizeof *outs);
     if (!outs)
-        return QD_ERR_NOMEM;
+        return NULL;
     for (size_t i = 0; i < n * n; i++)
         outs[i] = e->M[i];
     for (size_t i = 0; i < n; i++)
         outs[n * n + i] = e->f[i];
+    for (size_t i = 0; i < m * n; i++)
+        outs[qd__out_A(e) + i] = e->A[i];
+    for (size_t k = 0; k < m; k++) {
+        outs[qd__out_b(e) + k] = e->b[k];
+        outs[qd__out_g(e) + k] = e->con[k].expr;
+    }
+    return outs;
+}
+
+qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
+    qd__eom_num *num = e->priv;
+    size_t nout = qd__out_len(e);
+    if (num->prog)
+        return QD_OK;
+    const qd_expr **outs = outputs(e, nout);
+    if (!outs)
+        return QD_ERR_NOMEM;
+    num->nout = nout;
     num->inputs = qd__inputs(ctx, nout, outs, &num->nin);
     if (num->inputs)
         num->prog = qd_prog_new(ctx, num->nin, num->inputs, nout, outs);
@@ -306,7 +359,8 @@ static qd_status solve_numeric(qd_ctx *ctx, const qd_eom *e, const double *Mv, c
 }
 
 qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
-                      const double *vals, double *M, double *f, double *qdd) {
+                      const double *vals, double *M, double *f, double *qdd, double *lambda,
+                      double *R) {
     qd__eom_num *num = e->priv;
     qd_status st = qd__eom_compile(ctx, e);
     if (st != QD_OK)
@@ -318,5 +372,9 @@ qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr 
         M[i] = num->out[i];
     for (size_t i = 0; f && i < n; i++)
         f[i] = num->out[n * n + i];
+    if (e->ncon)
+        return qdd || lambda || R ? qd__saddle_solve(ctx, e, num->out, qdd, lambda, R) : QD_OK;
+    for (size_t i = 0; R && i < n; i++)
+        R[i] = 0;
     return qdd ? solve_numeric(ctx, e, num->out, num->out + n * n, qdd) : QD_OK;
 }

@@ -125,7 +125,13 @@ const char *nearest(const char *word, size_t n, const char *const *names, size_t
 
 const char **known_names(const parser *p, size_t *count) {
     const qd_model *m = p->m;
-    size_t cap = m->ncoords + m->nparams + m->ndefs + m->nfuncs + QD_FUNC_COUNT + 8, n = 0;
+    static const char *const extra[] = {
+        "t", "pi", "sqrt", "dot", "cross", "norm", "transpose", "rot_x", "rot_y", "rot_z",
+        "euler", "euler_zyz", "tait_bryan", "rod", "ring", "disk", "sphere", "shell", "cylinder",
+        "cone", "box", "omega", "omega_space", "point", "rotation", "position",
+    };
+    size_t nextra = sizeof extra / sizeof extra[0];
+    size_t cap = m->ncoords + m->nparams + m->ndefs + m->nfuncs + QD_FUNC_COUNT + nextra, n = 0;
     const char **v = malloc(cap * sizeof *v);
     if (!v) {
         *count = 0;
@@ -141,8 +147,7 @@ const char **known_names(const parser *p, size_t *count) {
         v[n++] = m->funcs[i];
     for (int f = 0; f < QD_FUNC_COUNT; f++)
         v[n++] = qd_func_name((qd_func)f);
-    static const char *const extra[] = {"t", "pi", "sqrt", "dot", "cross", "norm"};
-    for (size_t i = 0; i < sizeof extra / sizeof extra[0]; i++)
+    for (size_t i = 0; i < nextra; i++)
         v[n++] = extra[i];
     *count = n;
     return v;

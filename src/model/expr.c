@@ -8,10 +8,14 @@
  *   power    := postfix ('^' factor)?           right-associative: -x^2 = -(x^2)
  *   postfix  := primary ("'" | '.' ('x' | 'y' | 'z'))*
  *   primary  := number | name | name '(' args ')' | '(' sum (',' sum){0,2} ')'
+ *             | '[' row ',' row ',' row ']'       row := '[' sum ',' sum ',' sum ']'
  *
- * Values are scalars or 3-vectors ((x, y) is (x, y, 0)); '+' and '-' need two
- * of a kind, '*' at most one vector, '/' a scalar divisor, and functions
- * other than dot, cross and norm take scalars.
+ * Values are scalars, 3-vectors ((x, y) is (x, y, 0)) or 3x3 matrices; '+'
+ * and '-' need two of a kind; in a product the scalars commute and the rest
+ * multiply left to right (matrix*matrix, matrix*vector, at most one vector,
+ * last); '/' needs a scalar divisor.  Functions other than dot, cross, norm
+ * and the matrix, body and inertia calls (rot.c, body.c, inertia.c) take
+ * scalars.
  */
 #include "parser.h"
 
@@ -31,19 +35,40 @@ static void span(value *v, const value *a, const value *b) {
 }
 
 static value scalar(const qd_expr *e, size_t off, size_t len) {
-    value v = {false, {e, NULL, NULL}, off, len};
+    value v = {VK_SCALAR, {e}, off, len};
     return v;
 }
 
-static bool need_scalar(parser *p, const value *v, const char *where) {
-    if (!v->vec)
-        return true;
-    return perr(p, v->off, v->len, "take a component (r.x), norm(r) or dot(a, b)",
-                "a vector where a scalar is needed%s%s", where ? " " : "", where ? where : "");
+int value_ncomp(const value *v) { return v->kind == VK_MATRIX ? 9 : v->kind == VK_VECTOR ? 3 : 1; }
+
+const char *vkind_name(vkind k) {
+    return k == VK_MATRIX ? "matrix" : k == VK_VECTOR ? "vector" : "scalar";
 }
 
-static bool kernel_ok(parser *p, const value *v) {
-    int n = v->vec ? 3 : 1;
+static const char *kind_hint(vkind have, vkind want) {
+    if (want == VK_SCALAR)
+        return have == VK_VECTOR ? "take a component (r.x), norm(r) or dot(a, b)"
+                                 : "a matrix acts on a vector: R*(x, y, z)";
+    if (want == VK_VECTOR)
+        return have == VK_SCALAR ? "write a vector as (x, y, z) or (x, y)"
+                                 : "multiply the matrix by a vector: R*(x, y, z)";
+    return "write a matrix as [[a, b, c], [d, e, f], [g, h, i]], or use rot_z(a), "
+           "euler(phi, theta, psi)";
+}
+
+bool need_kind(parser *p, const value *v, vkind want, const char *where) {
+    if (v->kind == want)
+        return true;
+    return perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed%s%s",
+                vkind_name(v->kind), vkind_name(want), where ? " " : "", where ? where : "");
+}
+
+static bool need_scalar(parser *p, const value *v, const char *where) {
+    return need_kind(p, v, VK_SCALAR, where);
+}
+
+bool kernel_ok(parser *p, const value *v) {
+    int n = value_ncomp(v);
     for (int i = 0; i < n; i++)
         if (!v->c[i])
             return perr(p, v->off, v->len, NULL, "%s", qd_ctx_message(p->ctx)[0]
@@ -52,10 +77,11 @@ static bool kernel_ok(parser *p, const value *v) {
     return true;
 }
 
-/* The ')' closing the '(' at open.  Newlines do not end a statement inside
- * brackets, so a missing ')' is found late: point at the '(' instead. */
-static bool expect_close(parser *p, size_t open) {
-    if (p->lx.tok.kind == TK_RPAREN) {
+/* The ')' or ']' closing the bracket at open.  Newlines do not end a
+ * statement inside brackets, so a missing ')' is found late: point at the
+ * '(' instead. */
+static bool expect_closing(parser *p, size_t open, tk_kind close) {
+    if (p->lx.tok.kind == close) {
         lex_next(&p->lx);
         return true;
     }
@@ -64,26 +90,29 @@ static bool expect_close(parser *p, size_t open) {
     for (size_t i = 0; i < p->lx.tok.off; i++)
         line += s[i] == '\n';
     char hint[160];
-    snprintf(hint, sizeof hint, "a ')' is missing: found %s on line %zu",
+    char c = close == TK_RPAREN ? ')' : ']';
+    snprintf(hint, sizeof hint, "a '%c' is missing: found %s on line %zu", c,
              tk_name(p->lx.tok.kind), line);
-    return perr(p, open, 1, hint, "unclosed '('");
+    return perr(p, open, 1, hint, "unclosed '%c'", s[open]);
 }
+
+bool expect_close(parser *p, size_t open) { return expect_closing(p, open, TK_RPAREN); }
 
 /* ---- operators ------------------------------------------------------------ */
 
 static bool add_values(parser *p, value *a, const value *b, bool minus) {
-    if (a->vec != b->vec)
-        return perr(p, b->off, b->len, "both sides of + and - must be scalars, or both vectors",
-                    "cannot add a %s to a %s", b->vec ? "vector" : "scalar",
-                    a->vec ? "vector" : "scalar");
-    for (int i = 0; i < (a->vec ? 3 : 1); i++)
+    if (a->kind != b->kind)
+        return perr(p, b->off, b->len,
+                    "both sides of + and - must be of one kind: scalars, vectors or matrices",
+                    "cannot add a %s to a %s", vkind_name(b->kind), vkind_name(a->kind));
+    for (int i = 0; i < value_ncomp(a); i++)
         a->c[i] = minus ? qd_sub(C(p), a->c[i], b->c[i]) : qd_add(C(p), a->c[i], b->c[i]);
     span(a, a, b);
     return kernel_ok(p, a);
 }
 
 static void dt_value(parser *p, value *v) {
-    for (int i = 0; i < (v->vec ? 3 : 1); i++)
+    for (int i = 0; i < value_ncomp(v); i++)
         v->c[i] = qd_dt(C(p), v->c[i]);
 }
 
@@ -195,6 +224,10 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
         *out = scalar(k, off, n);
         return true;
     }
+    const body *b = model_find_body(m, s + off, n);
+    if (b)
+        return perr(p, off, n, "use position(b), rotation(b), omega(b) or point(b, (x, y, z))",
+                    "'%s' is a body, not a value", b->name);
     return unknown_name(p, off, n, false);
 }
 
@@ -223,7 +256,7 @@ static bool parse_args(parser *p, value *args, size_t *nargs) {
     }
 }
 
-static bool arity(parser *p, const char *name, size_t got, size_t want, size_t off, size_t len) {
+bool check_arity(parser *p, const char *name, size_t got, size_t want, size_t off, size_t len) {
     if (got == want)
         return true;
     return perr(p, off, len, NULL, "%s takes %zu argument%s, not %zu", name, want,
@@ -234,15 +267,15 @@ static bool vector_call(parser *p, const char *name, value *a, size_t n, value *
                         size_t len) {
     qd_ctx *ctx = C(p);
     bool two = strcmp(name, "norm") != 0;
-    if (!arity(p, name, n, two ? 2 : 1, off, len))
+    if (!check_arity(p, name, n, two ? 2 : 1, off, len))
         return false;
     for (size_t i = 0; i < n; i++)
-        if (!a[i].vec)
-            return perr(p, a[i].off, a[i].len, "write a vector as (x, y, z) or (x, y)",
-                        "%s needs vectors; this is a scalar", name);
+        if (a[i].kind != VK_VECTOR)
+            return perr(p, a[i].off, a[i].len, kind_hint(a[i].kind, VK_VECTOR),
+                        "%s needs vectors; this is a %s", name, vkind_name(a[i].kind));
     value r = scalar(NULL, off, len);
     if (!strcmp(name, "cross")) {
-        r.vec = true;
+        r.kind = VK_VECTOR;
         for (int i = 0; i < 3; i++) {
             int j = (i + 1) % 3, k = (i + 2) % 3;
             r.c[i] = qd_sub(ctx, qd_mul(ctx, a[0].c[j], a[1].c[k]), qd_mul(ctx, a[0].c[k], a[1].c[j]));
@@ -265,9 +298,27 @@ static const char *user_function(parser *p, size_t off, size_t n) {
     return NULL;
 }
 
+/* Is the name a coordinate, parameter or definition (which a body call such
+ * as omega(...) must not hide when its argument is not a body)? */
+static bool names_a_value(parser *p, const char *name) {
+    qd_model *m = p->m;
+    if (model_find_def(m, name, strlen(name)))
+        return true;
+    for (size_t i = 0; i < m->ncoords; i++)
+        if (!strcmp(name, qd_expr_name(m->coords[i])))
+            return true;
+    for (size_t i = 0; i < m->nparams; i++)
+        if (!strcmp(name, qd_expr_name(m->params[i])))
+            return true;
+    return false;
+}
+
 static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     char name[64];
     snprintf(name, sizeof name, "%.*s", (int)(n < 63 ? n : 63), p->lx.src + off);
+    const char *uf = user_function(p, off, n);
+    if (!uf && is_body_call(name) && (body_call_ahead(p) || !names_a_value(p, name)))
+        return body_call(p, name, off, out);
     value a[MAX_ARGS];
     size_t na;
     if (!parse_args(p, a, &na))
@@ -275,6 +326,10 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     size_t len = p->lx.tok.off - off;
     if (!strcmp(name, "dot") || !strcmp(name, "cross") || !strcmp(name, "norm"))
         return vector_call(p, name, a, na, out, off, len);
+    if (!uf && is_rot_call(name))
+        return rot_call(p, name, a, na, out, off, len);
+    if (!uf && is_inertia_call(name))
+        return inertia_call(p, name, a, na, out, off, len);
     const qd_expr *args[MAX_ARGS];
     for (size_t i = 0; i < na; i++) {
         if (!need_scalar(p, &a[i], "as a function argument"))
@@ -282,16 +337,15 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
         args[i] = a[i].c[0];
     }
     qd_func f;
-    const char *uf = user_function(p, off, n);
     const qd_expr *e;
     if (uf) {
         e = qd_ufunc(C(p), uf, na, args);
     } else if (!strcmp(name, "sqrt")) {
-        if (!arity(p, name, na, 1, off, len))
+        if (!check_arity(p, name, na, 1, off, len))
             return false;
         e = qd_sqrt(C(p), args[0]);
     } else if (qd_func_from_name(name, &f)) {
-        if (!arity(p, name, na, f == QD_ATAN2 ? 2 : 1, off, len))
+        if (!check_arity(p, name, na, f == QD_ATAN2 ? 2 : 1, off, len))
             return false;
         e = f == QD_ATAN2 ? qd_fn2(C(p), f, args[0], args[1]) : qd_fn(C(p), f, args[0]);
     } else {
@@ -336,7 +390,56 @@ static bool parse_paren(parser *p, value *out) {
         out->len = end - off;
         return true;
     }
-    value v = {true, {c[0].c[0], c[1].c[0], n == 3 ? c[2].c[0] : qd_int(C(p), 0)}, off, end - off};
+    value v = {VK_VECTOR, {c[0].c[0], c[1].c[0], n == 3 ? c[2].c[0] : qd_int(C(p), 0)}, off,
+               end - off};
+    *out = v;
+    return true;
+}
+
+/* '[' sum ',' sum ',' sum ']': one row of a matrix literal, into c[0..2] */
+static bool parse_row(parser *p, const qd_expr **c) {
+    size_t off = p->lx.tok.off;
+    if (p->lx.tok.kind != TK_LBRACK)
+        return perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
+                        "expected a row '[a, b, c]', found %s", tk_name(p->lx.tok.kind));
+    lex_next(&p->lx);
+    for (int i = 0; i < 3; i++) {
+        value v;
+        if (i > 0 && p->lx.tok.kind != TK_COMMA)
+            return perr_tok(p, NULL, "a row of a matrix has three entries; found %s after %d",
+                            tk_name(p->lx.tok.kind), i);
+        if (i > 0)
+            lex_next(&p->lx);
+        if (!parse_sum(p, &v) || !need_scalar(p, &v, "as a matrix entry"))
+            return false;
+        c[i] = v.c[0];
+    }
+    if (p->lx.tok.kind == TK_COMMA)
+        return perr_tok(p, NULL, "a row of a matrix has three entries, not more");
+    return expect_closing(p, off, TK_RBRACK);
+}
+
+/* '[' row ',' row ',' row ']' */
+static bool parse_matrix(parser *p, value *out) {
+    size_t off = p->lx.tok.off;
+    lex_next(&p->lx);
+    value v = {VK_MATRIX, {NULL}, off, 0};
+    for (int i = 0; i < 3; i++) {
+        if (i > 0 && p->lx.tok.kind != TK_COMMA)
+            return perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
+                            "a matrix has three rows; found %s after %d", tk_name(p->lx.tok.kind),
+                            i);
+        if (i > 0)
+            lex_next(&p->lx);
+        if (!parse_row(p, &v.c[3 * i]))
+            return false;
+    }
+    if (p->lx.tok.kind == TK_COMMA)
+        return perr_tok(p, NULL, "a matrix has three rows, not more");
+    size_t end = p->lx.tok.off + p->lx.tok.len;
+    if (!expect_closing(p, off, TK_RBRACK))
+        return false;
+    v.len = end - off;
     *out = v;
     return true;
 }
@@ -365,17 +468,28 @@ static bool parse_primary(parser *p, value *out) {
         return lookup_name(p, t.off, t.len, out);
     case TK_LPAREN:
         return parse_paren(p, out);
+    case TK_LBRACK:
+        return parse_matrix(p, out);
     default:
         return perr_tok(p, NULL, "expected an expression, found %s", tk_name(t.kind));
     }
 }
 
+/* Each prime differentiates the whole expression again, and the size of
+ * d^n/dt^n of a composite grows fast with n: a mechanical model needs q''
+ * at most, so a long run of primes is a typo (or a fuzzer), not physics. */
+#define MAX_PRIMES 4
+
 /* postfix := primary ("'" | '.' component)* */
 static bool parse_postfix(parser *p, value *out) {
     if (!parse_primary(p, out))
         return false;
+    int primes = 0;
     for (;;) {
         if (p->lx.tok.kind == TK_PRIME) {
+            if (++primes > MAX_PRIMES)
+                return perr_tok(p, "Lagrange's equations need velocities and accelerations only",
+                                "a time derivative of order above %d", MAX_PRIMES);
             dt_value(p, out);
             out->len = p->lx.tok.off + 1 - out->off;
             lex_next(&p->lx);
@@ -386,9 +500,11 @@ static bool parse_postfix(parser *p, value *out) {
             int k = lex_is(&p->lx, "x") ? 0 : lex_is(&p->lx, "y") ? 1 : lex_is(&p->lx, "z") ? 2 : -1;
             if (k < 0)
                 return perr_tok(p, "components are .x, .y and .z", "expected a component name");
-            if (!out->vec)
-                return perr(p, out->off, out->len, "only a vector has components",
-                            "a scalar where a vector is needed");
+            if (out->kind != VK_VECTOR)
+                return perr(p, out->off, out->len,
+                            out->kind == VK_SCALAR ? "only a vector has components"
+                                                   : "R*(1, 0, 0) is the first column of R",
+                            "a %s where a vector is needed", vkind_name(out->kind));
             *out = scalar(out->c[k], out->off, p->lx.tok.off + 1 - out->off);
             lex_next(&p->lx);
         } else {
@@ -407,7 +523,8 @@ static bool parse_power(parser *p, value *out) {
     value e;
     if (!parse_factor(p, &e))
         return false;
-    if (!need_scalar(p, out, "as a base; |r|^2 is dot(r, r)") || !need_scalar(p, &e, "as an exponent"))
+    const char *base = out->kind == VK_VECTOR ? "as a base; |r|^2 is dot(r, r)" : "as a base";
+    if (!need_scalar(p, out, base) || !need_scalar(p, &e, "as an exponent"))
         return false;
     out->c[0] = qd_pow(C(p), out->c[0], e.c[0]);
     span(out, out, &e);
@@ -415,7 +532,7 @@ static bool parse_power(parser *p, value *out) {
 }
 
 static void negate(parser *p, value *v) {
-    for (int i = 0; i < (v->vec ? 3 : 1); i++)
+    for (int i = 0; i < value_ncomp(v); i++)
         v->c[i] = qd_neg(C(p), v->c[i]);
 }
 
@@ -437,18 +554,38 @@ static bool parse_factor(parser *p, value *out) {
 
 #define MAX_FACTORS 64
 
+/* acc * b for two values that are not scalars: matrix*matrix is a matrix,
+ * matrix*vector a vector; a vector can only come last. */
+static bool mul_nonscalar(parser *p, value *acc, const value *b) {
+    if (acc->kind == VK_VECTOR && b->kind == VK_VECTOR)
+        return perr(p, b->off, b->len, "use dot(a, b) or cross(a, b)",
+                    "a vector where a scalar is needed: cannot multiply two vectors");
+    if (acc->kind == VK_VECTOR)
+        return perr(p, b->off, b->len, "write transpose(R)*v for the row vector v^T R",
+                    "a matrix cannot multiply a vector from the right");
+    const qd_expr *c[9];
+    if (b->kind == VK_MATRIX)
+        mat_mul(C(p), acc->c, b->c, c);
+    else
+        mat_vec(C(p), acc->c, b->c, c);
+    acc->kind = b->kind;
+    memcpy(acc->c, c, sizeof c);
+    return true;
+}
+
 /* product := factor (('*' | '/') factor)*
  * The scalar factors are multiplied in one call, as the kernel's reader does,
  * so that 2*(a + b)*x is one product and reads back to the node it printed
- * from (pairwise, 2*(a + b) would be distributed first). */
+ * from (pairwise, 2*(a + b) would be distributed first).  Scalars commute,
+ * so the vectors and matrices are multiplied apart from them, in order. */
 static bool parse_product(parser *p, value *out) {
     if (!parse_factor(p, out))
         return false;
     const qd_expr *fs[MAX_FACTORS] = {NULL};
     size_t n = 0;
-    value vec = *out, first = *out;
-    bool have_vec = out->vec;
-    if (!out->vec)
+    value acc = *out, first = *out; /* acc: the product of the non-scalars */
+    bool have = out->kind != VK_SCALAR;
+    if (!have)
         fs[n++] = out->c[0];
     while (p->lx.tok.kind == TK_STAR || p->lx.tok.kind == TK_SLASH) {
         bool divide = p->lx.tok.kind == TK_SLASH;
@@ -458,12 +595,12 @@ static bool parse_product(parser *p, value *out) {
             return false;
         if (divide && !need_scalar(p, &b, "as a divisor"))
             return false;
-        if (b.vec && have_vec)
-            return perr(p, b.off, b.len, "use dot(a, b) or cross(a, b)",
-                        "a vector where a scalar is needed: cannot multiply two vectors");
-        if (b.vec) {
-            vec = b;
-            have_vec = true;
+        if (b.kind != VK_SCALAR) {
+            if (have && !mul_nonscalar(p, &acc, &b))
+                return false;
+            if (!have)
+                acc = b;
+            have = true;
         } else {
             if (n == MAX_FACTORS) {
                 fs[0] = qd_mul_n(C(p), n, fs); /* fold, and go on */
@@ -474,10 +611,9 @@ static bool parse_product(parser *p, value *out) {
         span(out, &first, &b);
     }
     const qd_expr *s = qd_mul_n(C(p), n, fs);
-    value r = have_vec ? vec : *out;
-    r.vec = have_vec;
-    for (int i = 0; i < (have_vec ? 3 : 1); i++)
-        r.c[i] = have_vec ? qd_mul(C(p), s, vec.c[i]) : s;
+    value r = have ? acc : *out;
+    for (int i = 0; i < value_ncomp(&r); i++)
+        r.c[i] = have ? (n ? qd_mul(C(p), s, acc.c[i]) : acc.c[i]) : s;
     r.off = out->off;
     r.len = out->len;
     *out = r;
@@ -515,13 +651,27 @@ bool parse_expr(parser *p, value *out) {
     return parse_sum(p, out);
 }
 
+static bool parse_kind(parser *p, value *v, vkind want, const char *what) {
+    if (!parse_expr(p, v))
+        return false;
+    if (v->kind == want)
+        return true;
+    return perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed: %s is a %s",
+                vkind_name(v->kind), vkind_name(want), what, vkind_name(want));
+}
+
 bool parse_scalar(parser *p, const qd_expr **out, const char *what) {
     value v;
-    if (!parse_expr(p, &v))
+    if (!parse_kind(p, &v, VK_SCALAR, what))
         return false;
-    if (v.vec)
-        return perr(p, v.off, v.len, "take a component (r.x), norm(r) or dot(a, b)",
-                    "a vector where a scalar is needed: %s is a scalar", what);
     *out = v.c[0];
     return true;
+}
+
+bool parse_vector(parser *p, value *v, const char *what) {
+    return parse_kind(p, v, VK_VECTOR, what);
+}
+
+bool parse_matrix_value(parser *p, value *v, const char *what) {
+    return parse_kind(p, v, VK_MATRIX, what);
 }

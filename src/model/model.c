@@ -67,6 +67,9 @@ void qd_model_free(qd_model *m) {
         free((char *)m->funcs[i]);
     for (size_t i = 0; i < m->ncons; i++)
         free((char *)m->con_names[i]);
+    for (size_t i = 0; i < m->nbodies; i++)
+        free((char *)m->bodies[i].name);
+    free(m->bodies);
     free(m->con_names);
     free(m->cons);
     free(m->coords);
@@ -139,13 +142,54 @@ const qd_expr *qd_model_constraint(const qd_model *m, size_t i) {
     return i < m->ncons ? m->cons[i] : NULL;
 }
 
+size_t qd_model_nbodies(const qd_model *m) { return m->nbodies; }
+
+static const body *body_at(const qd_model *m, size_t i) {
+    return i < m->nbodies ? &m->bodies[i] : NULL;
+}
+
+const char *qd_model_body_name(const qd_model *m, size_t i) {
+    const body *b = body_at(m, i);
+    return b ? b->name : NULL;
+}
+
+const qd_expr *qd_model_body_mass(const qd_model *m, size_t i) {
+    const body *b = body_at(m, i);
+    return b ? b->mass : NULL;
+}
+
+const qd_expr *qd_model_body_inertia(const qd_model *m, size_t i, unsigned row, unsigned col) {
+    const body *b = body_at(m, i);
+    return b && row < 3 && col < 3 ? b->I[3 * row + col] : NULL;
+}
+
+const qd_expr *qd_model_body_position(const qd_model *m, size_t i, unsigned k) {
+    const body *b = body_at(m, i);
+    return b && k < 3 ? b->r[k] : NULL;
+}
+
+const qd_expr *qd_model_body_rotation(const qd_model *m, size_t i, unsigned row, unsigned col) {
+    const body *b = body_at(m, i);
+    return b && row < 3 && col < 3 ? b->R[3 * row + col] : NULL;
+}
+
+const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k) {
+    const body *b = body_at(m, i);
+    return b && k < 3 ? b->w[k] : NULL;
+}
+
+const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k) {
+    const body *b = body_at(m, i);
+    return b && k < 3 ? b->ws[k] : NULL;
+}
+
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order) {
     return coord < m->ncoords && order < 2 ? m->init[2 * coord + order] : NULL;
 }
 
 const qd_expr *qd_model_definition(const qd_model *m, const char *name) {
     const def *d = model_find_def(m, name, strlen(name));
-    return d && !d->v.vec ? d->v.c[0] : NULL;
+    return d && d->v.kind == VK_SCALAR ? d->v.c[0] : NULL;
 }
 
 bool qd_model_where(const qd_model *m, const char *what, qd_diag *out) {

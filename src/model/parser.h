@@ -12,12 +12,27 @@
 #include "qdot/model.h"
 #include "lex.h"
 
-/* A value of the language: a scalar, or a vector of three components. */
+/* A value of the language: a scalar, a vector of three components, or a
+ * 3x3 matrix (a rotation, an inertia tensor), stored by rows. */
+typedef enum vkind { VK_SCALAR, VK_VECTOR, VK_MATRIX } vkind;
+
 typedef struct value {
-    bool vec;
-    const qd_expr *c[3];   /* c[0] alone for a scalar */
+    vkind kind;
+    const qd_expr *c[9];   /* c[0] alone for a scalar, c[0..2] for a vector */
     size_t off, len;       /* the source span it came from */
 } value;
+
+/* A rigid body (`body NAME mass M inertia I at r orientation R`): every
+ * part in space components except I and w, which are in body axes. */
+typedef struct body {
+    const char *name;      /* owned copy */
+    const qd_expr *mass;
+    const qd_expr *I[9];   /* inertia tensor about the centre of mass, body axes */
+    const qd_expr *r[3];   /* centre of mass */
+    const qd_expr *R[9];   /* body components -> space components */
+    const qd_expr *w[3];   /* angular velocity, body axes (simplified) */
+    const qd_expr *ws[3];  /* angular velocity, space axes: R w (simplified) */
+} body;
 
 typedef struct def {
     const char *name;      /* interned by the kernel */
@@ -49,6 +64,8 @@ struct qd_model {
     const char **con_names;    /* owned copies */
     const qd_expr **cons;      /* lhs - rhs */
     size_t ncons;
+    body *bodies;
+    size_t nbodies;
 };
 
 typedef struct parser {
@@ -63,6 +80,47 @@ typedef struct parser {
 /* expr.c */
 bool parse_expr(parser *p, value *out);
 bool parse_scalar(parser *p, const qd_expr **out, const char *what);
+bool parse_vector(parser *p, value *v, const char *what);  /* what: "a position" */
+bool parse_matrix_value(parser *p, value *v, const char *what);
+/* v must be of kind want; else "a vector where a scalar is needed WHERE". */
+bool need_kind(parser *p, const value *v, vkind want, const char *where);
+int value_ncomp(const value *v);           /* 1, 3 or 9 */
+const char *vkind_name(vkind k);           /* "scalar", "vector", "matrix" */
+/* Every component built (no NULL from the kernel); else the context's error. */
+bool kernel_ok(parser *p, const value *v);
+/* The ')' closing the '(' at open (a missing one is reported at the '('). */
+bool expect_close(parser *p, size_t open);
+/* "NAME takes WANT arguments, not GOT" at the call when got != want. */
+bool check_arity(parser *p, const char *name, size_t got, size_t want, size_t off, size_t len);
+
+/* rot.c: 3x3 matrices by rows, rotation matrices, and their calls. */
+void mat_identity(qd_ctx *ctx, const qd_expr *out[9]);
+void mat_mul(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const b[9],
+             const qd_expr *out[9]);
+void mat_vec(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const v[3],
+             const qd_expr *out[3]);
+void mat_transpose(const qd_expr *const a[9], const qd_expr *out[9]);
+bool is_rot_call(const char *name);        /* rot_x ... tait_bryan, transpose */
+bool rot_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
+              size_t len);
+
+/* inertia.c: principal moments of common solids, as vectors. */
+bool is_inertia_call(const char *name);
+bool inertia_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
+                  size_t len);
+
+/* body.c */
+bool stmt_body(parser *p);
+bool stmt_torque(parser *p);
+const body *model_find_body(const qd_model *m, const char *name, size_t n);
+bool is_body_call(const char *name);       /* omega, omega_space, point, rotation, position */
+/* The call's '(' is the current token; the first argument names a body. */
+bool body_call_ahead(const parser *p);
+bool body_call(parser *p, const char *name, size_t off, value *out);
+
+/* stmt.c: shared by the statements in body.c */
+bool end_of_statement(parser *p);
+bool fresh_name(parser *p, const char *what);
 
 /* error.c: record the first error at a span. */
 bool perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, ...)

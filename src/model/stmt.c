@@ -10,6 +10,8 @@
  *   Q[COORD] = EXPR                     adds to the generalized force on COORD
  *   initial NAME = VALUE, NAME' = VALUE, ...
  *   constraint [NAME:] LHS [= RHS]       kept at zero: LHS - RHS = 0
+ *   body NAME mass M inertia I at r [orientation R]    (body.c)
+ *   torque G on NAME                                    (body.c)
  */
 #include "parser.h"
 
@@ -19,6 +21,7 @@
 
 static const char *const keywords[] = {
     "coordinates", "parameters", "functions", "particle", "force", "initial", "constraint",
+    "body", "torque",
 };
 #define NKEYWORDS (sizeof keywords / sizeof keywords[0])
 
@@ -32,7 +35,7 @@ static void tok_text(const parser *p, char *buf, size_t cap) {
     buf[n] = '\0';
 }
 
-static bool end_of_statement(parser *p) {
+bool end_of_statement(parser *p) {
     tk_kind k = p->lx.tok.kind;
     if (k == TK_NEWLINE || k == TK_EOF)
         return true;
@@ -44,7 +47,7 @@ static bool end_of_statement(parser *p) {
 }
 
 /* A name not yet used for anything else. */
-static bool fresh_name(parser *p, const char *what) {
+bool fresh_name(parser *p, const char *what) {
     char name[128];
     tok_text(p, name, sizeof name);
     const qd_model *m = p->m;
@@ -60,6 +63,8 @@ static bool fresh_name(parser *p, const char *what) {
             kind = "function";
     if (!kind && model_find_def(m, name, strlen(name)))
         kind = "definition";
+    if (!kind && model_find_body(m, name, strlen(name)))
+        kind = "body";
     qd_func f;
     if (!kind && (qd_func_from_name(name, &f) || !strcmp(name, "sqrt") || !strcmp(name, "t") ||
                   !strcmp(name, "pi")))
@@ -178,15 +183,6 @@ static bool stmt_functions(parser *p) {
         lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     return end_of_statement(p);
-}
-
-static bool parse_vector(parser *p, value *v, const char *what) {
-    if (!parse_expr(p, v))
-        return false;
-    if (!v->vec)
-        return perr(p, v->off, v->len, "write a position as (x, y, z) or (x, y)",
-                    "a scalar where a vector is needed: %s is a vector", what);
-    return true;
 }
 
 static bool expect_at(parser *p, const char *stmt) {
@@ -402,9 +398,11 @@ static bool stmt_definition(parser *p) {
     if (!ok)
         return false;
     if (slot) {
-        if (v.vec)
-            return perr(p, v.off, v.len, "an energy is a scalar: use dot(v, v) for |v|^2",
-                        "a vector where a scalar is needed: %s is a scalar", name);
+        if (v.kind != VK_SCALAR)
+            return perr(p, v.off, v.len, v.kind == VK_VECTOR
+                            ? "an energy is a scalar: use dot(v, v) for |v|^2"
+                            : "an energy is a scalar",
+                        "a %s where a scalar is needed: %s is a scalar", vkind_name(v.kind), name);
         /* particle lines and T = ... add up */
         *slot = explicit_T && *slot ? qd_add(C(p), *slot, v.c[0]) : v.c[0];
     } else if (!model_add_def(p->m, name, v, at.off, at.len)) {
@@ -423,7 +421,8 @@ static bool unknown_statement(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else
         snprintf(hint, sizeof hint, "a statement starts with a keyword (coordinates, parameters, "
-                 "particle, force, initial, functions) or is a definition NAME = ...");
+                 "particle, body, force, torque, initial, functions, constraint) or is a "
+                 "definition NAME = ...");
     return perr_tok(p, hint, "unknown statement '%s'", word);
 }
 
@@ -453,6 +452,11 @@ static bool statement(parser *p) {
     lex_next(lx);
     tk_kind next = lx->tok.kind;
     *lx = save;
+    /* the newer keywords stay usable as names defined before they existed */
+    if (lex_is(lx, "body") && next != TK_EQ)
+        return stmt_body(p);
+    if (lex_is(lx, "torque") && next != TK_EQ)
+        return stmt_torque(p);
     if (next == TK_EQ)
         return stmt_definition(p);
     if (next == TK_LBRACK && lex_is(lx, "Q"))

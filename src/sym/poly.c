@@ -7,8 +7,6 @@
  * made until the result is converted back.
  */
 #include "poly.h"
-qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done);
-qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done);
 
 #include <math.h>
 #include <stdlib.h>
@@ -442,10 +440,10 @@ static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) 
 }
 
 qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
-    bool done = false;
-    const char *eng = getenv("QDX");
-    qd_poly *fast = !eng || eng[0] == 'f' ? qd_poly_mul_flint(ctx, x, y, &done)
-                    : eng[0] == 'p' ? qd_poly_mul_packed(ctx, x, y, &done) : NULL;
+    bool done;
+    qd_poly *fast = qd_poly_mul_flint(ctx, x, y, &done);
+    if (!done)
+        fast = qd_poly_mul_packed(ctx, x, y, &done);
     if (done)
         return fast;
     /* Like terms usually merge, and a small table stays in cache; it grows
@@ -533,10 +531,10 @@ qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
         qd_ctx_error(ctx, QD_ERR_ARG, "negative power of a polynomial with %zu terms", a->n);
         return NULL;
     }
-    bool done = false;
-    const char *eng = getenv("QDX");
-    qd_poly *fast = !eng || eng[0] == 'f' ? qd_poly_pow_flint(ctx, a, n, &done)
-                    : eng[0] == 'p' ? qd_poly_pow_packed(ctx, a, n, &done) : NULL;
+    bool done;
+    qd_poly *fast = qd_poly_pow_flint(ctx, a, n, &done);
+    if (!done)
+        fast = qd_poly_pow_packed(ctx, a, n, &done);
     if (done)
         return fast;
     /* Repeated multiplication by the (small) base beats squaring here: the

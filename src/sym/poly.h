@@ -78,6 +78,11 @@ bool qd_poly_push_mpq(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, m
 qd_poly *qd_poly_mul_flint(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done);
 /* a^n (n >= 2) the same way. */
 qd_poly *qd_poly_pow_flint(qd_ctx *ctx, const qd_poly *a, long n, bool *done);
+/* x*y by packed monomials (poly_pack.c), for the sizes between the general
+ * loop and FLINT, when both fit; *done as above. */
+qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done);
+/* a^n (n >= 2) the same way. */
+qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done);
 /* The exponent of var in term t of p (0 when absent). */
 int32_t qd_poly_exp(const qd_poly *p, size_t t, uint32_t var);
 /* The coefficient of term t as a number node. */

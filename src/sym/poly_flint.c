@@ -1,10 +1,11 @@
 /*
  * src/sym/poly_flint.c - large exact products and powers by FLINT.
  *
- * fmpz_mpoly multiplies (Johnson's heap, dense arrays when they pay) and
- * powers (Monagan-Pearce) faster than our hash-table loop once the operands
- * have a few dozen terms, conversion included (docs/design.md, "Expansion:
- * our engine and FLINT").  Only the generators that occur get a FLINT
+ * fmpz_mpoly multiplies (dense arrays or Johnson's heap) and powers
+ * (Monagan-Pearce) faster than our hash-table loops once there are tens of
+ * thousands of term pairs over a few generators, conversion included
+ * (docs/design.md, "Expansion: our engine and FLINT").  FLINT aborts when
+ * memory runs out, as in cancel.c, instead of reporting QD_ERR_NOMEM.  Only the generators that occur get a FLINT
  * variable, in increasing index so monomials come back sorted.  Laurent
  * monomials are shifted by the least exponent of each generator (times n
  * for a power) and shifted back; rational coefficients are scaled to
@@ -16,11 +17,17 @@
 
 #include <flint/fmpz_mpoly.h>
 #include <stdlib.h>
-#include <stdio.h>
 
-#ifndef FLINT_MUL_MIN
-#define FLINT_MUL_MIN 1
-#endif
+/* Where FLINT pays, conversion included (measured, see the design note):
+ * products of at least this many term pairs over at most MUL_MAX_VARS
+ * generators, and powers over at most POW_MAX_VARS generators worth at
+ * least POW_MIN_WORK (terms of the base times a bound on the terms of the
+ * result).  Below, the hash-table loops win; with more generators FLINT's
+ * dense exponent vectors cost more than our sparse monomials. */
+#define MUL_MIN_PAIRS 16384
+#define MUL_MAX_VARS 8
+#define POW_MIN_WORK 3000
+#define POW_MAX_VARS 4
 
 typedef struct fplan {
     slong nv;
@@ -204,13 +211,33 @@ static double pow_terms(size_t t, long n) {
     return b;
 }
 
-/* x*y, or x^n when y is NULL. */
-static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, bool *done) {
+/* den * (x*y) in c (or den^n * x^n when y is NULL); den becomes the
+ * result's denominator. */
+static void compute(fmpz_mpoly_t c, fplan *pl, const qd_poly *x, const qd_poly *y, long n,
+                    ulong *e) {
+    fmpz_mpoly_t a, b;
+    fmpz_mpoly_init(a, pl->m);
+    fmpz_mpoly_init(b, pl->m);
+    to_flint(a, pl, x, 0, e);
+    if (y) {
+        to_flint(b, pl, y, 1, e);
+        fmpz_mpoly_mul(c, a, b, pl->m);
+        mpz_mul(pl->den[0], pl->den[0], pl->den[1]);
+    } else {
+        fmpz_mpoly_pow_ui(c, a, (ulong)n, pl->m);
+        mpz_pow_ui(pl->den[0], pl->den[0], (unsigned long)n);
+    }
+    fmpz_mpoly_clear(a, pl->m);
+    fmpz_mpoly_clear(b, pl->m);
+}
+
+/* x*y, or x^n when y is NULL, when there are at most max_vars generators. */
+static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, slong max_vars,
+                    bool *done) {
     fplan pl;
-    *done = false;
     int st = plan_make(&pl, x, y);
-    if (getenv("QDLOG"))
-        fprintf(stderr, "%s %zu %zu n=%ld nv=%ld\n", y ? "mul" : "pow", x->n, y ? y->n : 0, n, (long)pl.nv);
+    if (st > 0 && pl.nv > max_vars)
+        st = 0;
     int64_t *shift = st > 0 ? malloc((size_t)pl.nv * sizeof *shift) : NULL;
     ulong *e = shift ? malloc((size_t)pl.nv * sizeof *e) : NULL;
     qd_pvar *m = e ? malloc((size_t)pl.nv * sizeof *m) : NULL;
@@ -219,22 +246,10 @@ static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, boo
         st = -1;
     double terms = y ? (double)x->n * (double)y->n : pow_terms(x->n, n);
     if (st > 0 && result_range(&pl, y ? 0 : n, terms, shift)) {
-        fmpz_mpoly_t a, b, c;
-        fmpz_mpoly_init(a, pl.m);
-        fmpz_mpoly_init(b, pl.m);
+        fmpz_mpoly_t c;
         fmpz_mpoly_init(c, pl.m);
-        to_flint(a, &pl, x, 0, e);
-        if (y) {
-            to_flint(b, &pl, y, 1, e);
-            fmpz_mpoly_mul(c, a, b, pl.m);
-            mpz_mul(pl.den[0], pl.den[0], pl.den[1]);
-        } else {
-            fmpz_mpoly_pow_ui(c, a, (ulong)n, pl.m);
-            mpz_pow_ui(pl.den[0], pl.den[0], (unsigned long)n);
-        }
+        compute(c, &pl, x, y, n, e);
         r = from_flint(ctx, &pl, c, shift, pl.den[0], e, m);
-        fmpz_mpoly_clear(a, pl.m);
-        fmpz_mpoly_clear(b, pl.m);
         fmpz_mpoly_clear(c, pl.m);
         *done = true;
     } else if (st < 0) {
@@ -248,16 +263,14 @@ static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, boo
 
 qd_poly *qd_poly_mul_flint(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done) {
     *done = false;
-    const char *th = getenv("QDT");
-    if (x->n < 2 || y->n < 2 || x->n * y->n < (th ? (size_t)atol(th) : FLINT_MUL_MIN))
+    if ((double)x->n * (double)y->n < MUL_MIN_PAIRS)
         return NULL;
-    return run(ctx, x, y, 0, done);
+    return run(ctx, x, y, 0, MUL_MAX_VARS, done);
 }
 
 qd_poly *qd_poly_pow_flint(qd_ctx *ctx, const qd_poly *a, long n, bool *done) {
     *done = false;
-    const char *th = getenv("QDP");
-    if (a->n < 2 || n < 2 || pow_terms(a->n, n) < (th ? atof(th) : 0))
+    if (a->n < 2 || n < 2 || (double)a->n * pow_terms(a->n, n) < POW_MIN_WORK)
         return NULL;
-    return run(ctx, a, NULL, n, done);
+    return run(ctx, a, NULL, n, POW_MAX_VARS, done);
 }

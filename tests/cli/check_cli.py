@@ -486,6 +486,138 @@ def test_check(r, dp):
             "L depends on t" not in p.stdout, p.stdout)
 
 
+# ---- constraints -----------------------------------------------------------------
+#
+# Atwood machine (Goldstein sec. 1.6): x1, x2 down from the pulley, rope
+# x1 + x2 = l; the tension is 2 m1 m2 g/(m1 + m2) and pulls each mass up, so
+# with R_j = lambda a_j (docs/design.md) lambda_rope = -tension.  Bead on a
+# wire turning at omega (seed-goldstein-britannica G03): the wire's force is
+# 2 m omega r' across the wire.  Particle on a sphere from rest at the top
+# (seed-desloge-A T27): N = m g (3 cos th - 2).
+
+ATWOOD = """\
+coordinates x1, x2
+parameters m1 = 2, m2 = 1, g = 9.81, l = 5
+T = m1/2*x1'^2 + m2/2*x2'^2
+V = -m1*g*x1 - m2*g*x2
+constraint rope: x1 + x2 = l
+"""
+
+BEAD = """\
+coordinates x, y
+parameters m = 1.5, omega = 2
+T = m/2*(x'^2 + y'^2)
+constraint wire: y*cos(omega*t) - x*sin(omega*t) = 0
+"""
+
+SPHERE = """\
+coordinates r, theta
+parameters m = 1, g = 9.81, a = 2
+T = m/2*(r'^2 + r^2*theta'^2)
+V = m*g*r*cos(theta)
+constraint surface: r = a
+"""
+
+KNIFE = """\
+coordinates x, y, z
+parameters m = 1
+T = m/2*(x'^2 + y'^2 + z'^2)
+constraint knife: y' = z*x'
+constraint hyper: x*y' + y*x' = 0
+"""
+
+
+def test_constraints(r, rng):
+    atwood = r.model("atwood.qd", ATWOOD)
+    for i in range(3):
+        m1, m2, g = rng.uniform(0.5, 3), rng.uniform(0.5, 3), rng.uniform(1, 10)
+        x1, v = rng.uniform(0, 5), rng.uniform(-1, 1)
+        d, err = eom_json(r, atwood, "--set", "m1=%r" % m1, "--set", "m2=%r" % m2,
+                          "--set", "g=%r" % g, "--at", "x1=%r, x2=%r, x1'=%r, x2'=%r" %
+                          (x1, 5 - x1, v, -v))
+        if not r.check("atwood --at runs (%d)" % i, d is not None, err):
+            continue
+        tension = 2 * m1 * m2 * g / (m1 + m2)
+        a = (m1 - m2) * g / (m1 + m2)
+        r.check("atwood tension (%d)" % i, close(d["multipliers"]["rope"], -tension),
+                repr(d.get("multipliers")))
+        r.check("atwood constraint forces (%d)" % i,
+                all_close([d["constraint_forces"]["x1"], d["constraint_forces"]["x2"]],
+                          [-tension, -tension]), repr(d.get("constraint_forces")))
+        r.check("atwood accelerations (%d)" % i, all_close(d["accelerations"], [a, -a]))
+    p = r.run("eom", atwood)
+    r.check("atwood text names the multiplier",
+            p.returncode == 0 and "x1: M[x1,x1]*x1'' = f[x1] + lambda_rope*(1)" in p.stdout,
+            p.stdout + p.stderr)
+    p = r.run("eom", atwood, "--at", "x1=1, x2=4")
+    r.check("atwood text multipliers", p.returncode == 0 and
+            re.search(r"lambda_rope = -13\.08\b", p.stdout) is not None, p.stdout + p.stderr)
+    # --eliminate: (m1 + m2) x1'' = (m1 - m2) g
+    d, err = eom_json(r, atwood, "--eliminate")
+    ok = d is not None and d["coordinates"] == ["x1"]
+    if r.check("atwood --eliminate", ok, err + repr(d)):
+        vals = {"m1": 2.0, "m2": 1.0, "g": 9.81, "l": 5.0, "x1": 0.7}
+        s = {"x1": 0.7}
+        M = eval_text(d["mass_matrix"][0][0], s, vals)
+        f = eval_text(d["forcing"][0], s, vals)
+        r.check("atwood --eliminate equation", close(M, 3.0) and close(f, 9.81),
+                "%r %r" % (M, f))
+        r.check("atwood --eliminate records x2", "x2" in d.get("eliminated", {}), repr(d))
+
+    bead = r.model("bead.qd", BEAD)
+    for i in range(3):
+        m, w = 1.5, 2.0
+        t, rho, rd = rng.uniform(-2, 2), rng.uniform(0.1, 2), rng.uniform(-2, 2)
+        c, sn = math.cos(w * t), math.sin(w * t)
+        st = "x=%r, y=%r, x'=%r, y'=%r, t=%r" % (rho * c, rho * sn, rd * c - rho * w * sn,
+                                                 rd * sn + rho * w * c, t)
+        d, err = eom_json(r, bead, "--at", st)
+        if not r.check("bead --at runs (%d)" % i, d is not None, err):
+            continue
+        R = d["constraint_forces"]
+        r.check("bead force 2 m omega r' (%d)" % i,
+                close(-R["x"] * sn + R["y"] * c, 2 * m * w * rd) and
+                close(R["x"] * c + R["y"] * sn, 0), repr(R))
+
+    sphere = r.model("sphere.qd", SPHERE)
+    for th in (0.3, math.acos(2 / 3) - 0.01, math.acos(2 / 3) + 0.01, 1.2):
+        thd = math.sqrt(2 * 9.81 * (1 - math.cos(th)) / 2)
+        d, err = eom_json(r, sphere, "--at", "r=2, theta=%r, theta'=%r" % (th, thd))
+        ok = d is not None and close(d["multipliers"]["surface"], 9.81 * (3 * math.cos(th) - 2))
+        r.check("sphere normal force at theta=%.3f" % th, ok, err + repr(d))
+
+
+def test_constraint_errors(r):
+    text = ATWOOD + "constraint rope2: 2*x1 + 2*x2 = 2*l\n"
+    p = r.run("eom", r.model("ropes.qd", text))
+    r.check("redundant constraints named",
+            p.returncode == 2 and "constraints rope and rope2 are redundant" in p.stderr and
+            "ropes.qd:5:12:" in p.stderr, p.stderr)
+    p = r.run("eom", r.model("ropes2.qd", text.replace("= 2*l", "= 2*l + 1")))
+    r.check("inconsistent constraints named",
+            p.returncode == 2 and "rope and rope2 are inconsistent" in p.stderr, p.stderr)
+    p = r.run("eom", r.model("speed.qd", BEAD + "constraint speed: x'^2 + y'^2 = 1\n"))
+    r.check("nonlinear velocity constraint", p.returncode == 2 and "speed" in p.stderr and
+            "not linear in the velocities" in p.stderr, p.stderr)
+
+
+def test_check_constraints(r):
+    p = r.run("check", r.model("atwood.qd", ATWOOD))
+    r.check("check atwood: holonomic rope, 1 degree of freedom",
+            p.returncode == 0 and "constraint rope: " in p.stdout and
+            line_of(p.stdout, "constraint rope").endswith("holonomic") and
+            "degrees of freedom: 1 configurational, 1 motional" in p.stdout, p.stdout)
+    r.check("check atwood: x1 not conserved",
+            "p_x1" not in line_of(p.stdout, "cyclic coordinates:"), p.stdout)
+    p = r.run("check", r.model("knife.qd", KNIFE))
+    out = p.stdout
+    r.check("check knife: kinds and degrees of freedom",
+            p.returncode == 0 and "nonholonomic" in line_of(out, "constraint knife") and
+            "integrable" in line_of(out, "constraint hyper") and
+            "x*y = const" in line_of(out, "constraint hyper") and
+            "degrees of freedom: 2 configurational, 1 motional" in out, out + p.stderr)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--build", required=True, help="the build directory holding qdot")
@@ -504,6 +636,9 @@ def main():
             test(r, dp, rng)
         test_rheonomic(r, rng)
         test_name_clash(r)
+        test_constraints(r, rng)
+        test_constraint_errors(r)
+        test_check_constraints(r)
     print("%d passed, %d failed (seed %d)" % (r.passed, r.failed, args.seed))
     return 1 if r.failed else 0
 

@@ -302,7 +302,7 @@ static void test_double_pendulum(void **state) {
     for (int k = 0; k < NSTATES; k++) {
         double M[4], f[2], qdd[2], Mt[4], ft[2];
         random_state(fx, &r, &s);
-        assert_int_equal(qd_eom_eval(c, fx->eom, s.n, s.syms, s.vals, M, f, qdd), QD_OK);
+        assert_int_equal(qd_eom_eval(c, fx->eom, s.n, s.syms, s.vals, M, f, qdd, NULL, NULL), QD_OK);
         textbook(fx, &s, Mt, ft);
         for (int i = 0; i < 4; i++)
             if (!close_to(M[i], Mt[i]))
@@ -380,7 +380,7 @@ static void test_chain(void **state) {
     for (int k = 0; k < NSTATES; k++) {
         double M[N * N], f[N], Mt[N * N], ft[N];
         random_state(fx, &r, &s);
-        assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, s.n, s.syms, s.vals, M, f, NULL), QD_OK);
+        assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, s.n, s.syms, s.vals, M, f, NULL, NULL, NULL), QD_OK);
         chain_textbook(fx, &s, N, Mt, ft);
         for (int i = 0; i < N * N; i++)
             if (!close_to(M[i], Mt[i]))
@@ -401,7 +401,7 @@ static void test_double_pendulum_solve(void **state) {
     for (int k = 0; k < NSTATES; k++) {
         double qdd[2];
         random_state(fx, &r, &s);
-        assert_int_equal(qd_eom_eval(c, fx->eom, s.n, s.syms, s.vals, NULL, NULL, qdd), QD_OK);
+        assert_int_equal(qd_eom_eval(c, fx->eom, s.n, s.syms, s.vals, NULL, NULL, qdd, NULL, NULL), QD_OK);
         for (int i = 0; i < 2; i++) {
             double a = value(fx, &s, fx->eom->acc[i]);
             if (!close_to(a, qdd[i]))
@@ -418,7 +418,7 @@ static void test_eval_defaults(void **state) {
     fixture *fx = derive(state, double_pendulum);
     const qd_expr *syms[] = {S(fx, "m1"), S(fx, "m2"), S(fx, "l1"), S(fx, "l2"), S(fx, "g")};
     double vals[] = {1, 2, 3, 4, 9.81}, M[4], f[2], qdd[2];
-    assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, 5, syms, vals, M, f, qdd), QD_OK);
+    assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, 5, syms, vals, M, f, qdd, NULL, NULL), QD_OK);
     assert_true(close_to(M[0], 27) && close_to(M[1], 24) && close_to(M[3], 32));
     assert_true(f[0] == 0 && f[1] == 0 && qdd[0] == 0 && qdd[1] == 0);
 }
@@ -460,9 +460,9 @@ static void test_singular_state(void **state) {
     fixture *fx = derive(state, "coordinates x\nT = x^2*x'^2/2\nV = x^2/2\n");
     const qd_expr *x = S(fx, "x");
     double one = 1, zero = 0, qdd;
-    assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, 1, &x, &one, NULL, NULL, &qdd), QD_OK);
+    assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, 1, &x, &one, NULL, NULL, &qdd, NULL, NULL), QD_OK);
     assert_true(close_to(qdd, -1)); /* x^2 x'' + x x'^2 = -x */
-    assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, 1, &x, &zero, NULL, NULL, &qdd),
+    assert_int_equal(qd_eom_eval(fx->ctx, fx->eom, 1, &x, &zero, NULL, NULL, &qdd, NULL, NULL),
                      QD_ERR_SINGULAR);
 }
 
