@@ -23,8 +23,10 @@ static void usage(FILE *out) {
     fprintf(out, "usage: qdot COMMAND [ARGS]\n\ncommands:\n");
     for (size_t i = 0; i < NCOMMANDS; i++)
         fprintf(out, "  %-9s %-32s %s\n", commands[i].name, commands[i].args, commands[i].summary);
-    fprintf(out, "\nformats (--format): text (default), latex, c, sympy\n"
-                 "Expressions use the model language's syntax: x^2*sin(q) + q'/2.\n");
+    fprintf(out, "\nformats (--format): text (default), latex, c, sympy; eom also json\n"
+                 "eom options: --solve, --eliminate, --set NAME=VALUE, --at \"q=..., q'=..., t=...\"\n"
+                 "Expressions use the model language's syntax: x^2*sin(q) + q'/2.\n"
+                 "See docs/cli.md and docs/language.md.\n");
 }
 
 int main(int argc, char **argv) {
