@@ -7,7 +7,8 @@
  * given with --set, solved for q'' with --solve, or evaluated at a state with
  * --at.  Constraints add multipliers, M q'' = f + A^T lambda with A q'' = b;
  * --eliminate substitutes the holonomic ones that can be solved for a
- * coordinate instead.  The pipeline is here; the output formats are in
+ * coordinate instead.  With --at, the model's `reaction` statements give
+ * the Cartesian force of a constraint at a point (qd_eom_reaction).  The pipeline is here; the output formats are in
  * eom_out.c.
  */
 #include "cli.h"
@@ -39,6 +40,10 @@ typedef struct eom_run {
     size_t nsubs;
     const qd_expr **numbers;                      /* numeric mode: M, f, acc, A, b,
                                                      lambda, R as nodes */
+    size_t nreact;                                /* numeric mode: reactions computed */
+    const char **react_name;
+    const qd_expr **react;                        /* 3 per reaction */
+    double *react_res;
     qd_eom_view view;
 } eom_run;
 
@@ -222,6 +227,50 @@ static qd_status constraint_rows(eom_run *r, double *Ab) {
     return st;
 }
 
+/* One `reaction` statement at the state: its force as three number nodes
+ * appended to r->react.  A reaction that cannot be had (its constraint was
+ * eliminated) is a note, not an error: the rest of the output stands. */
+static qd_status reaction_at(eom_run *r, size_t i, const double *lambda) {
+    const qd_model *m = r->mf.model;
+    const qd_expr *pt[3];
+    double F[3], res;
+    for (unsigned k = 0; k < 3; k++)
+        pt[k] = subs(r, qd_model_reaction_point(m, i, k));
+    qd_status st = qd_eom_reaction(r->ctx, r->e, qd_model_reaction_constraint(m, i), pt,
+                                   r->st.n, r->st.syms, r->st.vals, lambda, F, &res);
+    if (st == QD_ERR_ARG) {
+        fprintf(stderr, "qdot: note: reaction %s: %s\n", qd_model_reaction_name(m, i),
+                qd_ctx_message(r->ctx));
+        qd_ctx_clear_error(r->ctx);
+        return QD_OK;
+    }
+    size_t j = r->nreact;
+    for (unsigned k = 0; st == QD_OK && k < 3; k++)
+        if (!(r->react[3 * j + k] = qd_float(r->ctx, F[k])))
+            st = QD_ERR_NUMERIC;
+    if (st == QD_OK) {
+        r->react_name[j] = qd_model_reaction_name(m, i);
+        r->react_res[j] = res;
+        r->nreact++;
+    }
+    return st;
+}
+
+static qd_status reactions(eom_run *r, const double *lambda) {
+    size_t nr = qd_model_nreactions(r->mf.model);
+    if (!nr)
+        return QD_OK;
+    r->react_name = malloc(nr * sizeof *r->react_name);
+    r->react = malloc(3 * nr * sizeof *r->react);
+    r->react_res = malloc(nr * sizeof *r->react_res);
+    if (!r->react_name || !r->react || !r->react_res)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_OK;
+    for (size_t i = 0; i < nr && st == QD_OK; i++)
+        st = reaction_at(r, i, lambda);
+    return st;
+}
+
 /* --at: M, f, q'', the multipliers and the constraint forces as numbers
  * (qd_eom_eval), kept as number nodes so that every format prints them. */
 static int evaluate(eom_run *r, const char *at) {
@@ -242,6 +291,8 @@ static int evaluate(eom_run *r, const char *at) {
                                num + n * n + n, lambda, lambda + m);
     if (st == QD_OK)
         st = constraint_rows(r, A);
+    if (st == QD_OK)
+        st = reactions(r, lambda);
     for (size_t i = 0; st == QD_OK && i < total; i++)
         if (!(r->numbers[i] = qd_float(r->ctx, num[i])))
             st = QD_ERR_NUMERIC;
@@ -276,6 +327,10 @@ static int make_view(eom_run *r) {
     v->b = v->A + e->ncon * n;
     v->lambda = v->b + e->ncon;
     v->R = v->lambda + e->ncon;
+    v->nreact = r->nreact;
+    v->react_name = r->react_name;
+    v->react = r->react;
+    v->react_res = r->react_res;
     for (size_t i = 0; i < 3 && v->T[0]; i++)
         if (!(v->T[i] = at_state(r, v->T[i])))
             return qd_diag_ctx(r->ctx);
@@ -319,6 +374,9 @@ int qd_cmd_eom(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = emit(&r, a.fmt);
     free(r.numbers);
+    free(r.react_name);
+    free(r.react);
+    free(r.react_res);
     qd_state_free(&r.st);
     if (r.e)
         qd_eom_free(r.e);

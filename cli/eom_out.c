@@ -172,6 +172,30 @@ static qd_status text_forces(const qd_eom_view *v, qd_buf *b) {
     return st;
 }
 
+/* A reaction whose equations J^T F = R are not consistent: the constraint
+ * acts elsewhere too (include/qdot/mech.h, qd_eom_reaction). */
+#define REACTION_EXACT 1e-9
+
+static qd_status text_reactions(const qd_eom_view *v, qd_buf *b) {
+    qd_status st = QD_OK;
+    qd_buf_puts(b, "\nreactions (the force a constraint exerts at a point, Cartesian):\n");
+    for (size_t i = 0; i < v->nreact && st == QD_OK; i++) {
+        qd_buf_printf(b, "  %s = (", v->react_name[i]);
+        for (int k = 0; k < 3 && st == QD_OK; k++) {
+            qd_buf_puts(b, k ? ", " : "");
+            st = put(v, b, v->react[3 * i + k], QD_FMT_TEXT);
+        }
+        qd_buf_puts(b, ")\n");
+        if (v->react_res[i] > REACTION_EXACT) {
+            qd_buf_puts(b, "    (least squares: the constraint also acts elsewhere; relative "
+                           "residual ");
+            qd_state_put_double(b, v->react_res[i]);
+            qd_buf_puts(b, ")\n");
+        }
+    }
+    return st;
+}
+
 static qd_status text_eliminated(const qd_eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\neliminated with holonomic constraints (substituted before deriving):\n");
@@ -223,6 +247,8 @@ static qd_status write_text(const qd_eom_view *v, qd_buf *b) {
     }
     if (st == QD_OK && v->e->ncon && (v->lambda || v->R))
         st = text_forces(v, b);
+    if (st == QD_OK && v->nreact)
+        st = text_reactions(v, b);
     return st;
 }
 
@@ -314,7 +340,8 @@ static qd_status json_entry(const qd_eom_view *v, qd_json *j, const qd_expr *x, 
 static qd_status json_vector(const qd_eom_view *v, qd_json *j, const char *key,
                              const qd_expr *const *x, size_t n, qd_buf *tmp) {
     qd_status st = QD_OK;
-    qd_json_key(j, key);
+    if (key)
+        qd_json_key(j, key);
     qd_json_begin_array(j);
     for (size_t i = 0; i < n && st == QD_OK; i++)
         st = json_entry(v, j, x[i], tmp);
@@ -410,6 +437,26 @@ static qd_status json_constraints(const qd_eom_view *v, qd_json *j, qd_buf *tmp)
     return st;
 }
 
+/* "reactions": name -> [Fx, Fy, Fz]; "reaction_residuals": name -> residual. */
+static qd_status json_reactions(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
+    qd_status st = QD_OK;
+    qd_json_key(j, "reactions");
+    qd_json_begin_object(j);
+    for (size_t i = 0; i < v->nreact && st == QD_OK; i++) {
+        qd_json_key(j, v->react_name[i]);
+        st = json_vector(v, j, NULL, v->react + 3 * i, 3, tmp);
+    }
+    qd_json_end_object(j);
+    qd_json_key(j, "reaction_residuals");
+    qd_json_begin_object(j);
+    for (size_t i = 0; i < v->nreact; i++) {
+        qd_json_key(j, v->react_name[i]);
+        qd_json_number(j, v->react_res[i]);
+    }
+    qd_json_end_object(j);
+    return st;
+}
+
 static qd_status json_eliminated(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
     qd_json_key(j, "eliminated");
@@ -459,6 +506,8 @@ static qd_status write_json(const qd_eom_view *v, qd_buf *b) {
         st = json_eliminated(v, &j, &tmp);
     if (st == QD_OK && v->e->ncon)
         st = json_constraints(v, &j, &tmp);
+    if (st == QD_OK && v->numeric && qd_model_nreactions(v->mf->model))
+        st = json_reactions(v, &j, &tmp);
     qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);

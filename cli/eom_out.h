@@ -30,6 +30,13 @@ typedef struct qd_eom_view {
     bool split;                     /* T1 or T0 is not identically zero */
     bool numeric;
     const qd_state *st;             /* numeric mode only */
+    /* Numeric mode: the reactions of the model's `reaction` statements that
+     * could be computed (qd_eom_reaction): nreact names, 3 components each
+     * as number nodes, and the relative residual of each. */
+    size_t nreact;
+    const char **react_name;
+    const qd_expr **react;
+    const double *react_res;
 } qd_eom_view;
 
 bool qd_eom_format_from_name(const char *name, qd_eom_format *out);

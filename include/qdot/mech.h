@@ -135,6 +135,29 @@ qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr 
                       const double *vals, double *M, double *f, double *qdd, double *lambda,
                       double *R);
 
+/* The Cartesian force F that constraint `con` (by name) exerts at the point
+ * r (r[0..2] in the model's coordinates, parameters and t), at one state
+ * (syms, vals as for qd_eom_eval) with the multipliers lambda (ncon, from
+ * qd_eom_eval).  Virtual work at frozen time: the constraint's generalized
+ * force R_j = lambda_k A_kj must be F . dr/dq_j for every coordinate j, n
+ * equations for 3 unknowns, solved in the least-squares sense with the
+ * smallest |F|.  When the constraint depends on the coordinates only through
+ * r (g = G(r)) the equations are consistent and F = lambda_k grad_r G
+ * exactly; *residual (may be NULL) is |J^T F - R| / |R|, 0 then, and not 0
+ * when the constraint also acts elsewhere (a rope on its other mass: F is
+ * then the part of R that works through r).  Only the components of F along
+ * the directions r can move in (the span of dr/dq_j) are determined: when
+ * those span fewer than 3 dimensions (a point kept in a plane, on a circle
+ * by the choice of coordinates), the component normal to them is the force
+ * of the constraints built into the coordinates and is reported as 0.
+ * Eliminated coordinates (qd_eom.elim) are substituted into r; a constraint
+ * used for elimination has no multiplier: QD_ERR_ARG, as for an unknown
+ * name. */
+qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
+                          const qd_expr *const r[3], size_t nvals, const qd_expr *const *syms,
+                          const double *vals, const double *lambda, double F[3],
+                          double *residual);
+
 #ifdef __cplusplus
 }
 #endif

@@ -71,6 +71,16 @@ size_t qd_model_nconstraints(const qd_model *m);
 const char *qd_model_constraint_name(const qd_model *m, size_t i);
 const qd_expr *qd_model_constraint(const qd_model *m, size_t i);
 
+/* Reactions (`reaction [LABEL:] CON on r`), in the order given: the
+ * Cartesian force that constraint CON exerts at the point r (a position,
+ * free of velocities) is wanted; qd_eom_reaction computes it.  The name is
+ * the label, or the constraint's name when there is none; NULL / 0 for an
+ * index (or component k > 2) out of range. */
+size_t qd_model_nreactions(const qd_model *m);
+const char *qd_model_reaction_name(const qd_model *m, size_t i);
+const char *qd_model_reaction_constraint(const qd_model *m, size_t i);
+const qd_expr *qd_model_reaction_point(const qd_model *m, size_t i, unsigned k);
+
 /* Rigid bodies (`body NAME mass M inertia I at r orientation R`), in the
  * order given.  Components are indexed 0..2 (x, y, z); matrices by row and
  * column 0..2.  The inertia tensor is about the centre of mass in body axes;

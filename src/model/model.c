@@ -70,6 +70,9 @@ void qd_model_free(qd_model *m) {
     for (size_t i = 0; i < m->nbodies; i++)
         free((char *)m->bodies[i].name);
     free(m->bodies);
+    for (size_t i = 0; i < m->nreactions; i++)
+        free((char *)m->reactions[i].name);
+    free(m->reactions);
     free(m->con_names);
     free(m->cons);
     free(m->coords);

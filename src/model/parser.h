@@ -34,6 +34,14 @@ typedef struct body {
     const qd_expr *ws[3];  /* angular velocity, space axes: R w (simplified) */
 } body;
 
+/* `reaction [LABEL:] CON on r`: the force of constraint con at the point r
+ * (reaction.c). */
+typedef struct reaction {
+    const char *name;      /* owned copy: the label, or the constraint's name */
+    size_t con;            /* index into the model's constraints */
+    const qd_expr *r[3];
+} reaction;
+
 typedef struct def {
     const char *name;      /* interned by the kernel */
     value v;
@@ -66,6 +74,8 @@ struct qd_model {
     size_t ncons;
     body *bodies;
     size_t nbodies;
+    reaction *reactions;
+    size_t nreactions;
 };
 
 typedef struct parser {
@@ -117,6 +127,10 @@ bool is_body_call(const char *name);       /* omega, omega_space, point, rotatio
 /* The call's '(' is the current token; the first argument names a body. */
 bool body_call_ahead(const parser *p);
 bool body_call(parser *p, const char *name, size_t off, value *out);
+
+/* reaction.c */
+bool stmt_rolls(parser *p);     /* roll.c */
+bool stmt_reaction(parser *p);
 
 /* stmt.c: shared by the statements in body.c */
 bool end_of_statement(parser *p);

@@ -12,6 +12,7 @@
  *   constraint [NAME:] LHS [= RHS]       kept at zero: LHS - RHS = 0
  *   body NAME mass M inertia I at r [orientation R]    (body.c)
  *   torque G on NAME                                    (body.c)
+ *   rolls NAME on SURFACE as SHAPE                      (roll.c)
  */
 #include "parser.h"
 
@@ -21,9 +22,11 @@
 
 static const char *const keywords[] = {
     "coordinates", "parameters", "functions", "particle", "force", "initial", "constraint",
-    "body", "torque",
+    "reaction",
+    "body", "torque", "rolls",
 };
 #define NKEYWORDS (sizeof keywords / sizeof keywords[0])
+
 
 static const char *const reserved[] = {"T", "V", "L", "U", "dissipation"};
 
@@ -457,6 +460,10 @@ static bool statement(parser *p) {
         return stmt_body(p);
     if (lex_is(lx, "torque") && next != TK_EQ)
         return stmt_torque(p);
+    if (lex_is(lx, "rolls") && next != TK_EQ)
+        return stmt_rolls(p);
+    if (lex_is(lx, "reaction") && next != TK_EQ)
+        return stmt_reaction(p);
     if (next == TK_EQ)
         return stmt_definition(p);
     if (next == TK_LBRACK && lex_is(lx, "Q"))

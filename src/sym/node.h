@@ -127,6 +127,11 @@ const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_
                        void *data);
 double qd__pow_value(double b, double e);
 
+/* ---- trigeven.c ------------------------------------------------------------ */
+/* The sum with even powers of sin and cos reduced modulo sin^2 + cos^2 = 1
+ * where that is shorter; the sum itself otherwise, NULL on error. */
+const qd_expr *qd__trig_even(qd_ctx *ctx, const qd_expr *sum);
+
 /* ---- small helpers used across the kernel ------------------------------- */
 static inline bool qd__is_num(const qd_expr *e) {
     return e->kind == QD_RATIONAL || e->kind == QD_FLOAT;

@@ -4,14 +4,15 @@
  * fmpz_mpoly multiplies (dense arrays or Johnson's heap) and powers
  * (Monagan-Pearce) faster than our hash-table loops once there are tens of
  * thousands of term pairs over a few generators, conversion included
- * (docs/design.md, "Expansion: our engine and FLINT").  FLINT aborts when
- * memory runs out, as in cancel.c, instead of reporting QD_ERR_NOMEM.  Only the generators that occur get a FLINT
- * variable, in increasing index so monomials come back sorted.  Laurent
- * monomials are shifted by the least exponent of each generator (times n
- * for a power) and shifted back; rational coefficients are scaled to
- * integers by the lcm of their denominators and divided back.  Float
- * coefficients, and anything whose exponents or size could overflow our
- * limits, stay on the general path in poly.c (*done false).
+ * (docs/design.md, "Expansion: our engine and FLINT").  Only the generators
+ * that occur get a FLINT variable, in increasing index so monomials come
+ * back sorted.  Laurent monomials are shifted by the least exponent of each
+ * generator (times n for a power) and shifted back; rational coefficients
+ * are scaled to integers by the lcm of their denominators and divided back.
+ * Float coefficients, and anything whose exponents or size could overflow
+ * our limits, stay on the general path in poly.c (*done false).  FLINT
+ * aborts when memory runs out, as in cancel.c, instead of reporting
+ * QD_ERR_NOMEM.
  */
 #include "poly.h"
 

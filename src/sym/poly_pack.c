@@ -5,9 +5,10 @@
  * degree, every monomial packs into one 64-bit word (a bit field per
  * generator, exponents biased to be nonnegative), the product of two
  * monomials is the sum of their words, and the accumulator is a flat table
- * of (word, coefficient).  This is the inner loop of expand((x+y+z+w)^15 *
- * ...); anything else (an overflow, a rational or float coefficient, many
- * generators) goes the general way in poly.c.
+ * of (word, coefficient).  It serves the middle sizes: large products over
+ * few generators go to FLINT first (poly_flint.c), and anything else (an
+ * overflow, a rational or float coefficient, many generators) goes the
+ * general way in poly.c.
  */
 #include "poly.h"
 

@@ -351,11 +351,35 @@ done:
     return r;
 }
 
-static const qd_expr *simp_sum(qd_ctx *ctx, const qd_expr *s) {
+static const qd_expr *pair_rounds(qd_ctx *ctx, const qd_expr *s) {
     bool changed = true;
     for (int round = 0; round < MAX_ROUNDS && changed && s && s->kind == QD_ADD; round++)
         s = one_pass(ctx, s, &changed);
     return s;
+}
+
+/* The pair rules, and the reduction of even powers (trigeven.c) before them
+ * or after: the angle-sum rules take away products that the reduction
+ * needs, while the reduction can leave new pairs.  The shortest wins, the
+ * pair rules alone on a tie. */
+static const qd_expr *simp_sum(qd_ctx *ctx, const qd_expr *s) {
+    const qd_expr *best = pair_rounds(ctx, s), *from[2] = {s, best};
+    size_t ops = best ? qd_count_ops(best) : 0;
+    for (int k = 0; k < 2 && best; k++) {
+        if (k == 1 && from[1] == s)
+            break;
+        const qd_expr *x = qd__trig_even(ctx, from[k]);
+        if (x && x != from[k])
+            x = pair_rounds(ctx, x);
+        if (!x)
+            return NULL;
+        size_t o = qd_count_ops(x);
+        if (o < ops) {
+            best = x;
+            ops = o;
+        }
+    }
+    return best;
 }
 
 /* ---- the walk ------------------------------------------------------------------ */

@@ -32,6 +32,10 @@ Besides the numbers: the kind qdot gives each constraint (holonomic,
 integrable, nonholonomic; from the JSON) and the configurational and motional
 degrees of freedom `qdot check` reports, against the books.
 
+Models written with `rolls` that have a hand-written twin in the same
+coordinates (EQUIVALENT) are also run against the twin state by state: the
+same accelerations, multipliers (renamed) and constraint forces.
+
 Checks listed in EXPECTED_TO_FAIL (by example, or example:kinds,
 example:dof) wait for a feature; their failures are reported as XFAIL, not
 counted as passes or failures.
@@ -58,11 +62,6 @@ MARKER = '# checked by check_constrained.py'
 
 # name -> the feature it waits for (reported, not counted)
 EXPECTED_TO_FAIL = {
-    # roll alone (r dtheta - b dphi) is not integrable; with contact (dr = 0) the pair is
-    'cylinder_on_cylinder:kinds': 'integrability is tested for several constraints together '
-                                  '(Frobenius), issue 4',
-    'cylinder_on_cylinder:dof': 'integrability is tested for several constraints together '
-                                '(Frobenius), issue 4',
 }
 
 EXAMPLES = {}
@@ -551,6 +550,257 @@ def _(q, v, t, p, label=None):
 
 
 # ---------------------------------------------------------------------------
+# Rolling written by `rolls` (src/model/roll.c): the same books, and where a hand-written model
+# of the same system exists, the same numbers as that model (EQUIVALENT below).
+
+def renamed(name, names):
+    """The book function of example `name` with its multipliers renamed (old -> new)."""
+    book = EXAMPLES[name]['book']
+
+    def fn(q, v, t, p, label=None):
+        out = book(q, v, t, p, label)
+        return dict(acc=out['acc'], mult={names[k]: x for k, x in out['mult'].items()},
+                    grad={names[k]: x for k, x in out['grad'].items()})
+    return fn
+
+
+# examples whose rolls model must give, state by state, the accelerations, multipliers (renamed)
+# and constraint forces of a hand-written model in the same coordinates
+EQUIVALENT = {
+    'rolling_disk_rolls': ('rolling_disk', {'disk_roll1': 'roll1', 'disk_roll2': 'roll2'}),
+    'sphere_turntable_rolls': ('sphere_turntable', {'ball_roll1': 'roll_x', 'ball_roll2': 'roll_y'}),
+}
+
+example('rolling_disk_rolls', ['x1', 'x2', 'ph', 'psi'], disk_state,
+        kinds={'disk_roll1': 'nonholonomic', 'disk_roll2': 'nonholonomic'}, dof=(4, 2),
+        sets=[{'f1': 0.7, 'f2': -1.3}, {'f1': -2.1, 'f2': 0.4}],
+        energy=disk_energy, power=disk_power)(
+    renamed('rolling_disk', {'roll1': 'disk_roll1', 'roll2': 'disk_roll2'}))
+
+example('sphere_turntable_rolls', ['x', 'y', 'phi', 'theta', 'psi'], turntable_state,
+        kinds={'ball_roll1': 'nonholonomic', 'ball_roll2': 'nonholonomic'}, dof=(5, 3))(
+    renamed('sphere_turntable', {'roll_x': 'ball_roll1', 'roll_y': 'ball_roll2'}))
+
+
+def euler_matrix(ph, th, ps):
+    """rot_z(ph) rot_x(th) rot_z(ps), body -> space (Desloge ch. 63, seed-desloge-B.md C8)."""
+    def rz(a):
+        return [[cos(a), -sin(a), 0], [sin(a), cos(a), 0], [0, 0, 1]]
+
+    def rx(a):
+        return [[1, 0, 0], [0, cos(a), -sin(a)], [0, sin(a), cos(a)]]
+
+    def mul(A, B):
+        return [[sum(A[i][k] * B[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+    return mul(mul(rz(ph), rx(th)), rz(ps))
+
+
+def euler_accelerations(wd, q, v):
+    """(phi'', theta'', psi'') from the space angular acceleration wd: w = J(q) (phi', theta',
+    psi''), w' = J q_ang'' + J' q_ang'."""
+    ph, th = q['phi'], q['theta']
+    phd, thd, psd = v['phi'], v['theta'], v['psi']
+    J = [[0, cos(ph), sin(ph) * sin(th)],
+         [0, sin(ph), -cos(ph) * sin(th)],
+         [1, 0, cos(th)]]
+    Jdot_v = [-thd * sin(ph) * phd + psd * (cos(ph) * sin(th) * phd + sin(ph) * cos(th) * thd),
+              thd * cos(ph) * phd + psd * (sin(ph) * sin(th) * phd - cos(ph) * cos(th) * thd),
+              -psd * sin(th) * thd]
+    return solve(J, [wd[i] - Jdot_v[i] for i in range(3)])
+
+
+def body_rates(q, v):
+    return omega_space(q['phi'], q['theta'], v['phi'], v['theta'], v['psi'])
+
+
+def contact_velocity_grad(coords, q, rho, tangent):
+    """d(tangent . v_p)/dq'_j, v_p = c' + w x rho, by linearity in the velocities."""
+    out = []
+    for c in coords:
+        e = {k: float(k == c) for k in coords}
+        w = body_rates(q, e)
+        vp = [e['x'] + cross(w, rho)[0], e['y'] + cross(w, rho)[1], e['z'] + cross(w, rho)[2]]
+        out.append(dot(tangent, vp))
+    return out
+
+
+def rigid_energy(m, I_body, q, v, V):
+    R = euler_matrix(q['phi'], q['theta'], q['psi'])
+    w = body_rates(q, v)
+    wb = [sum(R[k][i] * w[k] for k in range(3)) for i in range(3)]
+    return (m / 2 * (v['x']**2 + v['y']**2 + v['z']**2)
+            + sum(I_body[i] * wb[i]**2 for i in range(3)) / 2 + V)
+
+
+# ---------------------------------------------------------------------------
+# Rolling coin: a thin disk rolling and leaning on a horizontal plane
+
+TILT_COORDS = ['x', 'y', 'z', 'phi', 'theta', 'psi']
+
+
+def coin_rho(a, ph, th):
+    """p - c = -a (e_z - cos(th) k)/sin(th): the rim point lowest along e_z (k the axis)."""
+    k = [sin(th) * sin(ph), -sin(th) * cos(ph), cos(th)]
+    return [-a * ((i == 2) - cos(th) * k[i]) / sin(th) for i in range(3)]
+
+
+def coin_rho_dot(a, ph, th, phd, thd, w):
+    k = [sin(th) * sin(ph), -sin(th) * cos(ph), cos(th)]
+    kd = cross(w, k)
+    s, c = sin(th), cos(th)
+    return [-a * ((s * thd * k[i] - c * kd[i]) / s - ((i == 2) - c * k[i]) * c * thd / (s * s))
+            for i in range(3)]
+
+
+def coin_state(rng, p):
+    a = p['a']
+    th = u(rng, 0.4, 2.7)
+    q = {'x': u(rng), 'y': u(rng), 'z': a * sin(th), 'phi': u(rng, -3, 3), 'theta': th,
+         'psi': u(rng, -3, 3)}
+    v = {'phi': u(rng, -3, 3), 'theta': u(rng, -2, 2), 'psi': u(rng, -6, 6)}
+    spin = cross(body_rates(q, v), coin_rho(a, q['phi'], th))
+    v['x'], v['y'], v['z'] = -spin[0], -spin[1], -spin[2]
+    assert abs(v['z'] - a * cos(th) * v['theta']) < 1e-12
+    return q, v, u(rng, 0, 3)
+
+
+def coin_energy(q, v, t, p):
+    m, a = p['m'], p['a']
+    return rigid_energy(m, [m * a * a / 4, m * a * a / 4, m * a * a / 2], q, v, m * p['g'] * q['z'])
+
+
+def newton_euler(m, I_space, w, rho, rho_dot, gravity):
+    """Solve m c'' = F + m gravity, I w' + w x I w = rho x F, c'' + w' x rho + w x rho' = 0
+    for (c'', w', F) (Byerly Art. 10a: friction unknown, contact point at rest)."""
+    A, b = [], []
+    Iw = [sum(I_space[i][j] * w[j] for j in range(3)) for i in range(3)]
+    gyro = cross(w, Iw)
+    wrd = cross(w, rho_dot)
+    for i in range(3):      # m c''_i - F_i = m g_i
+        A.append([m * (j == i) for j in range(3)] + [0] * 3 + [-(j == i) for j in range(3)])
+        b.append(m * gravity[i])
+    for i in range(3):      # I w' - rho x F = -w x I w
+        row = [0] * 3 + [I_space[i][j] for j in range(3)]
+        row += [-cross(rho, [float(j == k) for k in range(3)])[i] for j in range(3)]
+        A.append(row)
+        b.append(-gyro[i])
+    for i in range(3):      # c'' + w' x rho = -w x rho'
+        row = [float(j == i) for j in range(3)]
+        row += [cross([float(j == k) for k in range(3)], rho)[i] for j in range(3)]
+        A.append(row + [0] * 3)
+        b.append(-wrd[i])
+    x = solve(A, b)
+    return x[0:3], x[3:6], x[6:9]
+
+
+def inertia_in_space(q, I_body):
+    R = euler_matrix(q['phi'], q['theta'], q['psi'])
+    return [[sum(R[i][k] * I_body[k] * R[j][k] for k in range(3)) for j in range(3)]
+            for i in range(3)]
+
+
+@example('rolling_disk_tilted', TILT_COORDS, coin_state, energy=coin_energy,
+         kinds={'disk_roll1': 'nonholonomic', 'disk_roll2': 'nonholonomic',
+                'disk_contact': 'holonomic'}, dof=(5, 3))
+def _(q, v, t, p, label=None):
+    # Newton-Euler with the contact force unknown (Byerly Art. 10a); the rolling constraints of
+    # Desloge ch. 49 Ex. 1 (T09) at theta = pi/2, here for any lean.
+    m, a, g = p['m'], p['a'], p['g']
+    ph, th = q['phi'], q['theta']
+    w = body_rates(q, v)
+    rho = coin_rho(a, ph, th)
+    rho_dot = coin_rho_dot(a, ph, th, v['phi'], v['theta'], w)
+    I = inertia_in_space(q, [m * a * a / 4, m * a * a / 4, m * a * a / 2])
+    cdd, wd, F = newton_euler(m, I, w, rho, rho_dot, [0, 0, -g])
+    grads = {'disk_roll1': contact_velocity_grad(TILT_COORDS, q, rho, [1, 0, 0]),
+             'disk_roll2': contact_velocity_grad(TILT_COORDS, q, rho, [0, 1, 0]),
+             'disk_contact': [0, 0, 1, 0, -a * cos(th), 0]}
+    return dict(acc=cdd + euler_accelerations(wd, q, v),
+                mult={'disk_roll1': F[0], 'disk_roll2': F[1], 'disk_contact': F[2]},
+                grad=grads)
+
+
+# ---------------------------------------------------------------------------
+# Sphere rolling on an incline (horizontal axes, the plane's normal tilted)
+
+def incline_sphere_state(rng, p):
+    a, al = p['a'], p['al']
+    n = [sin(al), 0.0, cos(al)]
+    x = u(rng)
+    q = {'x': x, 'y': u(rng), 'z': (a - x * sin(al)) / cos(al), 'phi': u(rng, -3, 3),
+         'theta': u(rng, 0.3, 2.8), 'psi': u(rng, -3, 3)}
+    v = {'phi': u(rng, -3, 3), 'theta': u(rng, -3, 3), 'psi': u(rng, -3, 3)}
+    spin = cross(body_rates(q, v), [-a * c for c in n])
+    v['x'], v['y'], v['z'] = -spin[0], -spin[1], -spin[2]
+    return q, v, u(rng, 0, 3)
+
+
+def incline_sphere_energy(q, v, t, p):
+    m, a = p['m'], p['a']
+    I = 2 / 5 * m * a * a
+    return rigid_energy(m, [I, I, I], q, v, m * p['g'] * q['z'])
+
+
+@example('sphere_incline_rolls', TILT_COORDS, incline_sphere_state, energy=incline_sphere_energy,
+         kinds={'ball_roll1': 'nonholonomic', 'ball_roll2': 'nonholonomic',
+                'ball_contact': 'holonomic'}, dof=(5, 3))
+def _(q, v, t, p, label=None):
+    # Byerly Art. 10a exercise (TC19 note): c'' = (5/7) g sin(al) down the slope; friction
+    # (2/7) m g sin(al) up it, normal force m g cos(al); I w' = (-a n) x F.
+    m, a, g, al = p['m'], p['a'], p['g'], p['al']
+    n, down = [sin(al), 0.0, cos(al)], [cos(al), 0.0, -sin(al)]
+    cdd = [5 / 7 * g * sin(al) * d for d in down]
+    F = [m * cdd[i] + m * g * (i == 2) for i in range(3)]
+    rho = [-a * c for c in n]
+    wd = [x / (2 / 5 * m * a * a) for x in cross(rho, F)]
+    return dict(acc=cdd + euler_accelerations(wd, q, v),
+                mult={'ball_roll1': -2 / 7 * m * g * sin(al), 'ball_roll2': 0.0,
+                      'ball_contact': m * g * cos(al)},
+                grad={'ball_roll1': contact_velocity_grad(TILT_COORDS, q, rho, down),
+                      'ball_roll2': contact_velocity_grad(TILT_COORDS, q, rho, [0, 1, 0]),
+                      'ball_contact': [sin(al), 0, cos(al), 0, 0, 0]})
+
+
+# ---------------------------------------------------------------------------
+# Cylinder rolling inside a fixed cylinder
+
+def cyl_in_state(rng, p, th=None, thd=None):
+    R, b = p['R'], p['b']
+    th = u(rng, -1.5, 1.5) if th is None else th
+    thd = u(rng) if thd is None else thd
+    return ({'r': R - b, 'theta': th, 'phi': u(rng, -3, 3)},
+            {'r': 0.0, 'theta': thd, 'phi': -(R - b) * thd / b}, u(rng, 0, 3))
+
+
+def cyl_in_energy(q, v, t, p):
+    m, b = p['m'], p['b']
+    return (m / 2 * (v['r']**2 + q['r']**2 * v['theta']**2) + m * b**2 / 4 * v['phi']**2
+            - m * p['g'] * q['r'] * cos(q['theta']))
+
+
+def cyl_in_bottom(rng, p):
+    """At the bottom, moving: theta'' = 0, the normal force m g + m (R - b) theta'^2."""
+    return cyl_in_state(rng, p, th=0.0)
+
+
+@example('cylinder_in_cylinder', ['r', 'theta', 'phi'], cyl_in_state, energy=cyl_in_energy,
+         kinds={'wheel_contact': 'holonomic', 'wheel_roll1': 'integrable'}, dof=(1, 1),
+         special=[('at the bottom', cyl_in_bottom)])
+def _(q, v, t, p, label=None):
+    # Byerly Art. 9c (TC17, k^2 = b^2/2) inside a circle: (3/2) m (R - b) th'' = -m g sin th;
+    # friction m g sin th/3 along increasing theta; N = m g cos th + m (R - b) th'^2.
+    m, R, b, g = p['m'], p['R'], p['b'], p['g']
+    th, thd = q['theta'], v['theta']
+    thdd = -2 * g * sin(th) / (3 * (R - b))
+    if label:
+        assert th == 0.0
+    return dict(acc=[0.0, thdd, -(R - b) * thdd / b],
+                mult={'wheel_contact': m * g * cos(th) + m * (R - b) * thd**2,
+                      'wheel_roll1': m * g * sin(th) / 3},
+                grad={'wheel_contact': [-1, 0, 0], 'wheel_roll1': [0, q['r'], b]})
+
+
+# ---------------------------------------------------------------------------
 # Compound pendulum with a pivot
 
 def compound_state(rng, p):
@@ -845,10 +1095,47 @@ def check_dof(qdot, path, spec):
     return []
 
 
+def check_equivalent(qdot, path, name, spec, rng, nstates):
+    """The rolls model and the hand-written one (EQUIVALENT) at the same states: the same
+    accelerations, multipliers (by the renaming) and constraint forces."""
+    other, names = EQUIVALENT[name]
+    other_path = os.path.join(os.path.dirname(path), other + '.qd')
+    defaults = read_parameters(path)
+    passed, errors = 0, []
+    for _, sets in runs_of(spec, defaults, rng, nstates):
+        params = dict(defaults)
+        params.update(sets)
+        q, v, t = spec['state'](rng, params)
+        state = dict(q)
+        state.update({c + "'": x for c, x in v.items()})
+        state['t'] = t
+        try:
+            mine, cmd = run_qdot(qdot, path, state, sets)
+            theirs, _ = run_qdot(qdot, other_path, state, sets)
+        except Exception as exc:
+            errors.append('%s: %s' % (type(exc).__name__, exc))
+            continue
+        got = [float(x) for x in mine['accelerations']]
+        want = [float(x) for x in theirs['accelerations']]
+        lam = [float(mine['multipliers'][k]) for k in sorted(names)]
+        lam_want = [float(theirs['multipliers'][names[k]]) for k in sorted(names)]
+        R = [float(mine['constraint_forces'][c]) for c in spec['coords']]
+        R_want = [float(theirs['constraint_forces'][c]) for c in spec['coords']]
+        if not (close(got, want) and close(lam, lam_want) and close(R, R_want)):
+            errors.append('differs from %s.qd: accelerations %r vs %r, multipliers %r vs %r\n  %s'
+                          % (other, got, want, lam, lam_want, ' '.join(cmd)))
+        else:
+            passed += 1
+    return passed, errors
+
+
 def aspects(qdot, path, name, spec, rng, nstates):
     """(key, passed, errors) for the equations, the constraint kinds, the counts."""
     ok, errors = check_example(qdot, path, name, spec, rng, nstates)
     out = [(name, ok, errors)]
+    if name in EQUIVALENT:
+        out.append(('%s:equivalent' % name,) + check_equivalent(qdot, path, name, spec, rng,
+                                                                 nstates))
     for key, fn, want in (('kinds', check_kinds, spec['kinds']),
                           ('dof', check_dof, spec['dof'])):
         if want is None:

@@ -97,6 +97,80 @@ static void spherical_pendulum(void **state) {
     qd_ctx_free(ctx);
 }
 
+typedef struct mat3 {
+    const qd_expr *m[3][3];
+} mat3;
+
+/* The rotation by u about the z axis (z = true) or the x axis. */
+static mat3 rotation(qd_ctx *ctx, const qd_expr *u, bool z) {
+    const qd_expr *c = qd_fn(ctx, QD_COS, u), *s = qd_fn(ctx, QD_SIN, u);
+    const qd_expr *o = qd_int(ctx, 0), *one = qd_int(ctx, 1), *ms = qd_neg(ctx, s);
+    mat3 rz = {{{c, ms, o}, {s, c, o}, {o, o, one}}};
+    mat3 rx = {{{one, o, o}, {o, c, ms}, {o, s, c}}};
+    return z ? rz : rx;
+}
+
+static mat3 matmul(qd_ctx *ctx, const mat3 *a, const mat3 *b, bool transpose_a) {
+    mat3 r;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const qd_expr *t[3];
+            for (int k = 0; k < 3; k++)
+                t[k] = qd_mul(ctx, transpose_a ? a->m[k][i] : a->m[i][k], b->m[k][j]);
+            r.m[i][j] = qd_add_n(ctx, 3, t);
+        }
+    return r;
+}
+
+/* The rule of Sarrus. */
+static const qd_expr *det3(qd_ctx *ctx, const mat3 *a) {
+    const qd_expr *t[6];
+    for (int k = 0; k < 3; k++) {
+        t[k] = qd_mul_n(ctx, 3, (const qd_expr *[]){a->m[0][k], a->m[1][(k + 1) % 3],
+                                                    a->m[2][(k + 2) % 3]});
+        t[k + 3] = qd_neg(ctx, qd_mul_n(ctx, 3, (const qd_expr *[]){a->m[0][k],
+                                                                    a->m[1][(k + 2) % 3],
+                                                                    a->m[2][(k + 1) % 3]}));
+    }
+    return qd_add_n(ctx, 6, t);
+}
+
+/* det R = 1 and R^T R = I for R = Rz(a1) Rx(a2) Rz(a3) Rx(a4) Rz(a5), which
+ * need sin^2 + cos^2 = 1 in several angles at once; with an angle repeated
+ * (a4 = a1, a5 = a2) the expansion holds sin^4 + 2 sin^2 cos^2 + cos^4. */
+static void check_rotation_product(const char *const names[5]) {
+    qd_ctx *ctx = qd_ctx_new();
+    mat3 R = rotation(ctx, qd_symbol(ctx, names[0]), true);
+    for (int i = 1; i < 5; i++) {
+        mat3 f = rotation(ctx, qd_symbol(ctx, names[i]), i % 2 == 0);
+        R = matmul(ctx, &R, &f, false);
+    }
+    /* the entries as they come, and simplified first (sines and cosines of
+     * sums of angles, as the model language hands them over) */
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1)
+            for (int i = 0; i < 9; i++)
+                R.m[i / 3][i % 3] = qd_simplify(ctx, R.m[i / 3][i % 3]);
+        if (qd_simplify(ctx, det3(ctx, &R)) != qd_int(ctx, 1))
+            fail_msg("%s%s%s%s%s pass %d: det R not simplified to 1", names[0], names[1],
+                     names[2], names[3], names[4], pass);
+        mat3 RtR = matmul(ctx, &R, &R, true);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                if (qd_simplify(ctx, RtR.m[i][j]) != qd_int(ctx, i == j))
+                    fail_msg("%s%s%s%s%s pass %d: (R^T R)[%d][%d] not simplified", names[0],
+                             names[1], names[2], names[3], names[4], pass, i, j);
+    }
+    qd_ctx_free(ctx);
+}
+
+static void rotation_product(void **state) {
+    (void)state;
+    check_rotation_product((const char *const[]){"a", "b", "c", "d", "e"});
+    check_rotation_product((const char *const[]){"a", "b", "c", "a", "b"});
+    check_rotation_product((const char *const[]){"a", "a", "a", "a", "a"});
+}
+
 /* Not a pass/fail test: the time to simplify the n = 8 mass matrix. */
 static void pendulum_timing(void **state) {
     (void)state;
@@ -210,6 +284,7 @@ int main(void) {
         cmocka_unit_test(factor_terms),
         cmocka_unit_test(pendulum_mass_matrix),
         cmocka_unit_test(spherical_pendulum),
+        cmocka_unit_test(rotation_product),
         cmocka_unit_test(keeps_value),
         cmocka_unit_test(pendulum_timing),
     };

@@ -67,8 +67,11 @@ static void pythagoras(void **state) {
     /* 1 - sin^2 = cos^2, a - a*cos^2 = a*sin^2 */
     assert_ptr_equal(qd_trigsimp(C, qd_sub(C, I(1), SQ(SIN(X)))), SQ(COS(X)));
     assert_ptr_equal(qd_trigsimp(C, qd_sub(C, A, MUL(A, SQ(COS(X))))), MUL(A, SQ(SIN(X))));
-    /* different coefficients or angles: nothing to do */
-    const qd_expr *e = ADD(MUL(I(2), SQ(SIN(X))), SQ(COS(X)));
+    /* different coefficients: 2 sin^2 + cos^2 = 1 + sin^2 */
+    assert_ptr_equal(qd_trigsimp(C, ADD(MUL(I(2), SQ(SIN(X))), SQ(COS(X)))),
+                     ADD(I(1), SQ(SIN(X))));
+    /* a symbolic coefficient on one side only, or different angles: nothing to do */
+    const qd_expr *e = ADD(MUL(A, SQ(SIN(X))), SQ(COS(X)));
     assert_ptr_equal(qd_trigsimp(C, e), e);
     e = ADD(SQ(SIN(X)), SQ(COS(Y)));
     assert_ptr_equal(qd_trigsimp(C, e), e);
@@ -106,6 +109,69 @@ static void inside_bigger_sums(void **state) {
     assert_ptr_equal(qd_trigsimp(C, qd_fn(C, QD_EXP, p)), qd_fn(C, QD_EXP, MUL(B, ADD(I(1), A))));
 }
 
+#define POW(u, k) qd_powi(C, u, k)
+
+/* Even powers of one angle, reduced modulo sin^2 + cos^2 = 1. */
+static void even_powers(void **state) {
+    const qd_expr *s = SIN(X), *c = COS(X);
+    /* (sin^2 + cos^2)^2 = 1, and cubed */
+    const qd_expr *e = ADD(POW(s, 4), MUL(I(2), SQ(s), SQ(c)), POW(c, 4));
+    assert_ptr_equal(qd_trigsimp(C, e), I(1));
+    assert_ptr_equal(qd_simplify(C, e), I(1));
+    e = qd_expand(C, POW(ADD(SQ(s), SQ(c)), 3));
+    assert_int_equal(qd_expr_kind(e), QD_ADD);
+    assert_ptr_equal(qd_trigsimp(C, e), I(1));
+    /* sin^4 - cos^4 = (sin^2 - cos^2)(sin^2 + cos^2) = 2 sin^2 - 1 = 1 - 2 cos^2 */
+    e = qd_sub(C, POW(s, 4), POW(c, 4));
+    const qd_expr *forms[3] = {qd_sub(C, SQ(s), SQ(c)), qd_sub(C, MUL(I(2), SQ(s)), I(1)),
+                               qd_sub(C, I(1), MUL(I(2), SQ(c)))};
+    const qd_expr *r = qd_trigsimp(C, e), *rs = qd_simplify(C, e);
+    assert_true(r == forms[0] || r == forms[1] || r == forms[2]);
+    assert_true(rs == forms[0] || rs == forms[1] || rs == forms[2]);
+    assert_true(qd_count_ops(r) <= qd_count_ops(forms[0]));
+    /* with a common factor, other terms and a compound angle */
+    const qd_expr *u = qd_add(C, X, Y), *k = MUL(A, qd_powi(C, B, 3));
+    e = qd_expand(C, ADD(MUL(k, POW(ADD(SQ(SIN(u)), SQ(COS(u))), 2)), Z));
+    assert_ptr_equal(qd_trigsimp(C, e), ADD(k, Z));
+    /* sin^4 cos^2 + sin^2 cos^4 = sin^2 cos^2 (odd factors ride along too) */
+    e = ADD(MUL(POW(s, 5), SQ(c)), MUL(POW(s, 3), POW(c, 4)));
+    assert_ptr_equal(qd_trigsimp(C, e), MUL(POW(s, 3), SQ(c)));
+    /* negative powers are other factors: left alone, value kept */
+    e = ADD(POW(s, -2), MUL(POW(c, 2), POW(s, -2)));
+    assert_ptr_equal(qd_trigsimp(C, e), e);
+}
+
+/* A random polynomial in x, y and the sines and cosines of x and y. */
+static const qd_expr *random_poly(void **state, qt_rng *r, int nterms) {
+    const qd_expr *atoms[6] = {X, Y, SIN(X), COS(X), SIN(Y), COS(Y)};
+    const qd_expr *e = I(0);
+    for (int i = 0; i < nterms; i++) {
+        const qd_expr *t = qd_int(C, (long)qt_below(r, 7) - 3);
+        for (unsigned k = qt_below(r, 5); k > 0; k--)
+            t = qd_mul(C, t, atoms[qt_below(r, 6)]);
+        e = qd_add(C, e, t);
+    }
+    return e;
+}
+
+/* Anything times (sin^2 + cos^2 - 1), expanded, is 0: the reduction finds
+ * the normal form, whichever angles and powers the multipliers bring. */
+static void ideal_vanishes(void **state) {
+    qt_rng r = {977};
+    const qd_expr *one_x = ADD(SQ(SIN(X)), SQ(COS(X)), I(-1));
+    const qd_expr *one_y = ADD(SQ(SIN(Y)), SQ(COS(Y)), I(-1));
+    for (int n = 0; n < 200; n++) {
+        const qd_expr *p = random_poly(state, &r, 6), *q = random_poly(state, &r, 4);
+        const qd_expr *e = qd_expand(C, qd_add(C, qd_mul(C, p, one_x), qd_mul(C, q, one_y)));
+        const qd_expr *s = qd_trigsimp(C, e);
+        if (s != I(0)) {
+            qd_buf b = QD_BUF_INIT;
+            qd_print(C, e, QD_FMT_TEXT, &b);
+            fail_msg("case %d (seed 977): not 0: %s", n, qd_buf_str(&b));
+        }
+    }
+}
+
 /* Random sums of products of sines, cosines and symbols: same value after. */
 static void keeps_value(void **state) {
     qt_rng r = {20240611};
@@ -137,6 +203,8 @@ int main(void) {
         cmocka_unit_test_setup_teardown(angle_sums, setup, teardown),
         cmocka_unit_test_setup_teardown(inside_bigger_sums, setup, teardown),
         cmocka_unit_test_setup_teardown(keeps_value, setup, teardown),
+        cmocka_unit_test_setup_teardown(even_powers, setup, teardown),
+        cmocka_unit_test_setup_teardown(ideal_vanishes, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
