@@ -299,7 +299,7 @@ static void constraint_names(const qd_model *m, const char *body, char names[3][
 static bool add_constraint(parser *p, const rolling *r, const char *name, E e) {
     qd_model *m = p->m;
     char what[96];
-    snprintf(what, sizeof what, "constraint:%s", name);
+    snprintf(what, sizeof what, "constraint:%.80s", name);
     char *copy = malloc(strlen(name) + 1);
     if (copy)
         strcpy(copy, name);

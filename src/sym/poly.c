@@ -238,6 +238,12 @@ static long mono_mul(qd_pvar *out, const qd_pvar *a, uint32_t na, const qd_pvar 
     return n;
 }
 
+/* The monomial of term t.  A constant term's is empty, and a polynomial of
+ * constants has no pool at all: NULL + 0 is undefined in C, so NULL. */
+static const qd_pvar *mono_of(const qd_poly *p, const qd_pterm *t) {
+    return t->len ? p->pool + t->off : NULL;
+}
+
 static bool mono_eq(const qd_pvar *a, const qd_pvar *b, uint32_t len) {
     for (uint32_t i = 0; i < len; i++)
         if (a[i].var != b[i].var || a[i].exp != b[i].exp)
@@ -333,7 +339,7 @@ static bool pb_add(pbuild *b, const qd_pvar *m, uint32_t len, uint64_t h, cval c
     size_t i = h & b->mask;
     for (uint32_t s; (s = b->slot[i]) != 0; i = (i + 1) & b->mask) {
         qd_pterm *t = &b->out->terms[s - 1];
-        if (t->hash == h && t->len == len && mono_eq(b->out->pool + t->off, m, len)) {
+        if (t->hash == h && t->len == len && mono_eq(mono_of(b->out, t), m, len)) {
             if (coef_acc(b->out, &t->c, c, b->tmp))
                 return true;
             qd__oom(b->ctx);
@@ -401,7 +407,7 @@ qd_poly *qd_poly_add_n(qd_ctx *ctx, size_t n, const qd_poly *const *ps) {
         const qd_poly *p = ps[k];
         for (size_t t = 0; t < p->n; t++) {
             const qd_pterm *pt = &p->terms[t];
-            if (!pb_add(&b, p->pool + pt->off, pt->len, pt->hash, cv_get(p, &pt->c)))
+            if (!pb_add(&b, mono_of(p, pt), pt->len, pt->hash, cv_get(p, &pt->c)))
                 goto fail;
         }
     }
@@ -426,7 +432,7 @@ static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) 
         for (size_t j = 0; j < y->n; j++) {
             const qd_pterm *t = &y->terms[j];
             uint64_t h;
-            long len = mono_mul(m, x->pool + s->off, s->len, y->pool + t->off, t->len, &h);
+            long len = mono_mul(m, mono_of(x, s), s->len, mono_of(y, t), t->len, &h);
             if (len < 0) {
                 qd_ctx_error(b->ctx, QD_ERR_TOOBIG, "exponent overflow in expansion");
                 return false;

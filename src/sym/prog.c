@@ -646,7 +646,9 @@ void qd_prog_run(qd_prog *p, const double *in, double *out) {
         memcpy(r, in, p->nin * sizeof *r);
 #define X r[i->arg[0]]
 #define Y r[i->arg[1]]
-    for (const instr *i = p->code, *end = i + p->ncode; i < end; i++) {
+    /* (no pointer arithmetic on an empty program's NULL code) */
+    const instr *end = p->ncode ? p->code + p->ncode : p->code;
+    for (const instr *i = p->code; i < end; i++) {
         switch ((op)i->op) {
         case OP_ADD: r[i->dst] = X + Y; break;
         case OP_SUB: r[i->dst] = X - Y; break;

@@ -367,29 +367,49 @@ typedef struct elim {
     long keep_exp, drop, rest;
 } elim;
 
-/* The term t with every square of drop_base eliminated, its terms appended
- * to out: the product over its angles of the binomial expansions. */
+/* The squares term t has to lose (one elim per angle), at most nf of them. */
+static size_t squares(const qd_expr *const *fs, size_t nf, const angle *g, size_t ng, way w,
+                      elim *e) {
+    size_t ne = 0;
+    for (size_t i = 0; i < nf; i++) {
+        const qd_expr *base = fs[i]->kind == QD_POW ? fs[i]->args[0] : fs[i];
+        if (base->kind != QD_FUNC || (base->tag != QD_SIN && base->tag != QD_COS))
+            continue;
+        size_t j = 0;
+        while (j < ng && g[j].s != base && g[j].c != base)
+            j++;
+        size_t seen = 0;
+        while (seen < ne && e[seen].keep != g[j].s && e[seen].keep != g[j].c)
+            seen++;
+        long a, b;
+        if (j < ng && seen == ne && exponents(fs, nf, &g[j], &a, &b) &&
+            (w == ELIM_COS ? b : a) >= 2)
+            e[ne++] = w == ELIM_COS ? (elim){g[j].s, g[j].c, a, b / 2, b % 2}
+                                    : (elim){g[j].c, g[j].s, b, a / 2, a % 2};
+    }
+    return ne;
+}
+
+/* The term *slot with every square of one function eliminated, its terms
+ * appended to out: the product over its angles of the binomial expansions. */
 static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, size_t ng, way w,
                     vec *out) {
     const qd_expr *coeff, *const *fs;
-    size_t nf, ne = 0, combos = 1;
+    size_t nf, ne, combos = 1;
     factors(slot, &coeff, &fs, &nf, ctx->one);
-    elim *e = malloc((ng ? ng : 1) * sizeof *e);
-    const qd_expr **buf = malloc((nf + 2 * ng + 1) * sizeof *buf);
-    bool ok = e && buf;
-    for (size_t i = 0; ok && i < ng; i++) {
-        long a, b;
-        if (!exponents(fs, nf, &g[i], &a, &b) || (w == ELIM_COS ? b : a) < 2)
-            continue;
-        e[ne++] = w == ELIM_COS ? (elim){g[i].s, g[i].c, a, b / 2, b % 2}
-                                : (elim){g[i].c, g[i].s, b, a / 2, a % 2};
-        combos *= (size_t)e[ne - 1].drop + 1;
+    elim *e = malloc((nf ? nf : 1) * sizeof *e);
+    if (!e)
+        return false;
+    ne = squares(fs, nf, g, ng, w, e);
+    for (size_t i = 0; i < ne; i++)
+        combos *= (size_t)e[i].drop + 1;
+    if (ne == 0 || combos > 4096) {
+        free(e);
+        return push(out, *slot);
     }
-    if (ok && (ne == 0 || combos > 4096)) {
-        ok = push(out, *slot);
-        ne = 0;
-    }
-    for (size_t k = 0; ok && ne && k < combos; k++) {
+    const qd_expr **buf = malloc((nf + 2 * ne + 1) * sizeof *buf);
+    bool ok = buf != NULL;
+    for (size_t k = 0; ok && k < combos; k++) {
         size_t m = 1, r = k;
         const qd_expr *c = coeff;
         for (size_t i = 0; i < nf; i++) {
@@ -400,7 +420,7 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
             if (j == ne)
                 buf[m++] = fs[i];
         }
-        for (size_t i = 0; ok && i < ne; i++, r /= (size_t)e[i - 1].drop + 1) {
+        for (size_t i = 0; ok && i < ne; r /= (size_t)e[i].drop + 1, i++) {
             long j = (long)(r % ((size_t)e[i].drop + 1));
             const qd_expr *bj = qd_int(ctx, (j % 2 ? -1 : 1) * binom(e[i].drop, j));
             c = bj ? qd__num_mul(ctx, c, bj) : NULL;

@@ -9,7 +9,10 @@
  *   c A s^a k^b - c A s^a k^(b-2)      = -c A s^(a+2) k^(b-2)      1 - cos^2 = sin^2
  *   c A cos u cos v +- c A sin u sin v =  c A cos(u -+ v)
  *   c A sin u cos v +- c A cos u sin v =  c A sin(u +- v)
- * Each rule turns two terms into one, so it always shortens the sum.
+ * Each rule turns two terms into one, so it always shortens the sum.  What
+ * pairs cannot reach (sin^4 - cos^4, several angles at once) is left to the
+ * reduction of even powers modulo sin^2 + cos^2 = 1 (trigeven.c), tried
+ * when squares remain after the pairs.
  *
  * Finding partners without comparing all pairs: a term is indexed by a
  * commutative hash of its factor list (a sum of per-factor hashes of (base,
@@ -358,14 +361,32 @@ static const qd_expr *pair_rounds(qd_ctx *ctx, const qd_expr *s) {
     return s;
 }
 
+/* Is there a sin^k or cos^k, k >= 2 even or odd, among the terms of s? */
+static bool has_square(const qd_expr *s) {
+    for (size_t i = 0; s->kind == QD_ADD && i < s->nargs; i++) {
+        const qd_expr *t = s->args[i];
+        size_t nf = t->kind == QD_MUL ? t->nargs : 1;
+        for (size_t j = 0; j < nf; j++) {
+            long k;
+            if (is_trig(factor_base(t->kind == QD_MUL ? t->args[j] : t, &k)) && k >= 2)
+                return true;
+        }
+    }
+    return false;
+}
+
 /* The pair rules, and the reduction of even powers (trigeven.c) before them
  * or after: the angle-sum rules take away products that the reduction
  * needs, while the reduction can leave new pairs.  The shortest wins, the
- * pair rules alone on a tie. */
+ * pair rules alone on a tie.  When the pair rules leave no square, the
+ * reduction is not tried: that keeps the common case (the pendulum's
+ * sin^2 + cos^2 pairs) at the cost of the pair rules alone. */
 static const qd_expr *simp_sum(qd_ctx *ctx, const qd_expr *s) {
     const qd_expr *best = pair_rounds(ctx, s), *from[2] = {s, best};
-    size_t ops = best ? qd_count_ops(best) : 0;
-    for (int k = 0; k < 2 && best; k++) {
+    if (!best || !has_square(best))
+        return best;
+    size_t ops = qd_count_ops(best);
+    for (int k = 0; k < 2; k++) {
         if (k == 1 && from[1] == s)
             break;
         const qd_expr *x = qd__trig_even(ctx, from[k]);

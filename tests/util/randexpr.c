@@ -19,8 +19,11 @@ static const qd_expr *leaf(qd_ctx *ctx, qt_rng *r, const qd_expr *const *syms, s
     unsigned k = qt_below(r, 10);
     if (k < 6 && nsyms)
         return syms[qt_below(r, (unsigned)nsyms)];
-    if (k < 9 || !(flags & QT_FLOAT))
-        return qd_rat(ctx, (long)qt_below(r, 11) - 5, (long)qt_below(r, 3) + 1);
+    if (k < 9 || !(flags & QT_FLOAT)) {
+        long num = (long)qt_below(r, 11) - 5;
+        long den = (long)qt_below(r, 3) + 1;
+        return qd_rat(ctx, num, den);
+    }
     return qd_float(ctx, qt_uniform(r, -3, 3));
 }
 
@@ -36,14 +39,21 @@ const qd_expr *qt_random_expr(qd_ctx *ctx, qt_rng *r, const qd_expr *const *syms
     if (depth <= 0 || qt_below(r, 5) == 0)
         return leaf(ctx, r, syms, nsyms, flags);
     const qd_expr *a = qt_random_expr(ctx, r, syms, nsyms, depth - 1, flags);
+    /* Every draw from r happens in a statement of its own: the order in which
+     * a compiler evaluates function arguments is unspecified, and the same
+     * seed must give the same expression with gcc and clang. */
     for (;;) {
+        const qd_expr *b;
+        unsigned k;
         switch (qt_below(r, 9)) {
         case 0:
         case 1:
-            return qd_add(ctx, a, qt_random_expr(ctx, r, syms, nsyms, depth - 1, flags));
+            b = qt_random_expr(ctx, r, syms, nsyms, depth - 1, flags);
+            return qd_add(ctx, a, b);
         case 2:
         case 3:
-            return qd_mul(ctx, a, qt_random_expr(ctx, r, syms, nsyms, depth - 1, flags));
+            b = qt_random_expr(ctx, r, syms, nsyms, depth - 1, flags);
+            return qd_mul(ctx, a, b);
         case 4:
             return qd_powi(ctx, a, (long)qt_below(r, 3) + 2);
         case 5:
@@ -53,10 +63,13 @@ const qd_expr *qt_random_expr(qd_ctx *ctx, qt_rng *r, const qd_expr *const *syms
         case 6:
             if (!(flags & QT_DIV))
                 continue;
-            if (qt_below(r, 2))
-                return qd_div(ctx, qt_random_expr(ctx, r, syms, nsyms, depth - 1, flags),
-                              positive(ctx, r, a));
-            return qd_pow(ctx, positive(ctx, r, a), qd_rat(ctx, -(long)qt_below(r, 3) - 1, 2));
+            if (qt_below(r, 2)) {
+                b = qt_random_expr(ctx, r, syms, nsyms, depth - 1, flags);
+                return qd_div(ctx, b, positive(ctx, r, a));
+            }
+            b = positive(ctx, r, a);
+            k = qt_below(r, 3);
+            return qd_pow(ctx, b, qd_rat(ctx, -(long)k - 1, 2));
         case 7:
             if (!(flags & QT_FLOAT))
                 continue;
@@ -70,7 +83,7 @@ const qd_expr *qt_random_expr(qd_ctx *ctx, qt_rng *r, const qd_expr *const *syms
             case 1: return qd_fn(ctx, QD_ASIN, half_sin);
             case 2: return qd_fn(ctx, QD_ACOS, half_sin);
             case 3: return qd_fn(ctx, QD_ATAN, a);
-            case 4: return qd_fn2(ctx, QD_ATAN2, a, positive(ctx, r, a));
+            case 4: b = positive(ctx, r, a); return qd_fn2(ctx, QD_ATAN2, a, b);
             case 5: return qd_fn(ctx, QD_SINH, half_sin);
             case 6: return qd_fn(ctx, QD_COSH, half_sin);
             case 7: return qd_fn(ctx, QD_TANH, a);
