@@ -28,57 +28,25 @@
 #include "qdot/mech.h"
 #include "qdot/model.h"
 #include "util/randexpr.h"
+#include "util/system.h"
 
 #define SEED 20240617u
 #define NSTATES 20
 #define MAXSYM 32
 
-typedef struct fixture {
-    qd_ctx *ctx;
-    qd_model *model;
-    qd_eom *eom;
-} fixture;
+typedef qt_system fixture;
 
-static int teardown(void **state) {
-    fixture *fx = *state;
-    if (!fx)
-        return 0;
-    qd_eom_free(fx->eom);
-    qd_model_free(fx->model);
-    qd_ctx_free(fx->ctx);
-    free(fx);
-    *state = NULL;
-    return 0;
-}
+static int teardown(void **state) { return qt_system_teardown(state); }
 
-static fixture *setup(void **state, const char *text) {
-    fixture *fx = calloc(1, sizeof *fx);
-    qd_diag d;
-    *state = fx;
-    fx->ctx = qd_ctx_new();
-    fx->model = qd_model_parse(fx->ctx, text, &d);
-    if (!fx->model)
-        fail_msg("model does not parse: %zu:%zu: %s\n%s", d.line, d.col, d.message, text);
-    return fx;
-}
+static fixture *setup(void **state, const char *text) { return qt_system_parse(state, text); }
 
 static fixture *derive_opts(void **state, const char *text, bool eliminate) {
-    fixture *fx = setup(state, text);
-    qd_eom_opts opts = {.eliminate = eliminate};
-    fx->eom = qd_eom_derive_opts(fx->ctx, fx->model, &opts);
-    if (!fx->eom)
-        fail_msg("derivation failed: %s", qd_ctx_message(fx->ctx));
-    return fx;
+    return qt_system_derive(state, text, eliminate);
 }
 
 static fixture *derive(void **state, const char *text) { return derive_opts(state, text, false); }
 
-static const qd_expr *S(fixture *fx, const char *name) {
-    const qd_expr *s = qd_lookup(fx->ctx, name);
-    if (!s)
-        fail_msg("no symbol %s", name);
-    return s;
-}
+static const qd_expr *S(fixture *fx, const char *name) { return qt_symbol(fx, name); }
 
 static bool close_to(double a, double b) { return fabs(a - b) <= 1e-9 * (1 + fabs(a) + fabs(b)); }
 

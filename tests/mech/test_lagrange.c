@@ -18,56 +18,20 @@
 #include "qdot/mech.h"
 #include "qdot/model.h"
 #include "util/randexpr.h"
+#include "util/system.h"
 
 #define SEED 20240612u
 #define NSTATES 20
 #define MAXSYM 64
 
-typedef struct fixture {
-    qd_ctx *ctx;
-    qd_model *model;
-    qd_eom *eom;
-} fixture;
+typedef qt_system fixture;
 
-static int teardown(void **state) {
-    fixture *fx = *state;
-    if (!fx)
-        return 0;
-    qd_eom_free(fx->eom);
-    qd_model_free(fx->model);
-    qd_ctx_free(fx->ctx);
-    free(fx);
-    *state = NULL;
-    return 0;
-}
-
-static qd_model *parse(qd_ctx *ctx, const char *text) {
-    qd_diag d;
-    qd_model *m = qd_model_parse(ctx, text, &d);
-    if (!m)
-        fail_msg("model does not parse: %zu:%zu: %s (%s)\n%s", d.line, d.col, d.message, d.hint,
-                 text);
-    return m;
-}
+static int teardown(void **state) { return qt_system_teardown(state); }
 
 /* Parse and derive; the fixture is torn down by the test's teardown. */
-static fixture *derive(void **state, const char *text) {
-    fixture *fx = calloc(1, sizeof *fx);
-    *state = fx;
-    fx->ctx = qd_ctx_new();
-    fx->model = parse(fx->ctx, text);
-    fx->eom = qd_eom_derive(fx->ctx, fx->model);
-    if (!fx->eom)
-        fail_msg("derivation failed: %s", qd_ctx_message(fx->ctx));
-    return fx;
-}
+static fixture *derive(void **state, const char *text) { return qt_system_derive(state, text, false); }
 
-static const qd_expr *S(fixture *fx, const char *name) {
-    const qd_expr *s = qd_lookup(fx->ctx, name);
-    if (!s)
-        fail_msg("no symbol %s", name);
-    return s;
-}
+static const qd_expr *S(fixture *fx, const char *name) { return qt_symbol(fx, name); }
 
 static bool close_to(double a, double b) { return fabs(a - b) <= 1e-9 * (1 + fabs(a) + fabs(b)); }
 
@@ -426,10 +390,7 @@ static void test_eval_defaults(void **state) {
 /* ---- what cannot be solved --------------------------------------------------- */
 
 static void expect_error(void **state, const char *text, qd_status st, const char *needle) {
-    fixture *fx = calloc(1, sizeof *fx);
-    *state = fx;
-    fx->ctx = qd_ctx_new();
-    fx->model = parse(fx->ctx, text);
+    fixture *fx = qt_system_parse(state, text);
     fx->eom = qd_eom_derive(fx->ctx, fx->model);
     assert_null(fx->eom);
     assert_int_equal(qd_ctx_status(fx->ctx), st);
