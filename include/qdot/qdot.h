@@ -11,6 +11,7 @@
 #include "eval.h"
 #include "model.h"
 #include "mech.h"
+#include "canonical.h"
 
 #define QDOT_VERSION "0.1.0"
 

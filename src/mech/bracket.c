@@ -1,0 +1,91 @@
+/*
+ * src/mech/bracket.c - Poisson brackets and the canonicity test by the
+ * fundamental brackets (Goldstein ch. 9.5; Desloge ch. 80 Thm 2).
+ */
+#include <stdlib.h>
+#include "qdot/canonical.h"
+
+const qd_expr *qd_bracket(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                          const qd_expr *const *p, const qd_expr *F, const qd_expr *G) {
+    if (!F || !G)
+        return NULL;
+    const qd_expr *sum = qd_int(ctx, 0);
+    for (size_t j = 0; j < n; j++) {
+        const qd_expr *a = qd_mul(ctx, qd_diff(ctx, F, q[j]), qd_diff(ctx, G, p[j]));
+        const qd_expr *b = qd_mul(ctx, qd_diff(ctx, F, p[j]), qd_diff(ctx, G, q[j]));
+        sum = qd_add(ctx, sum, qd_sub(ctx, a, b));
+    }
+    return qd_simplify(ctx, sum);
+}
+
+static void set_fail(qd_canon_verdict *v, qd_bracket_pair pair, size_t i, size_t j,
+                     const qd_expr *value) {
+    v->kind = QD_CANON_NO;
+    v->scale = NULL;
+    v->pair = pair;
+    v->i = i;
+    v->j = j;
+    v->value = value;
+}
+
+/* Free of every old variable and of t: a scale that may be a parameter. */
+static bool is_constant(size_t n, const qd_expr *const *q, const qd_expr *const *p,
+                        const qd_expr *t, const qd_expr *c) {
+    for (size_t k = 0; k < n; k++)
+        if (qd_has(c, q[k]) || qd_has(c, p[k]))
+            return false;
+    return !t || !qd_has(c, t);
+}
+
+/* [A_i, B_j] for all pairs (i < j when same, else all i != j) must vanish. */
+static qd_status check_zero(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                            const qd_expr *const *p, const qd_expr *const *A,
+                            const qd_expr *const *B, bool same, qd_bracket_pair pair,
+                            qd_canon_verdict *v) {
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = same ? i + 1 : 0; j < n; j++) {
+            if (!same && i == j)
+                continue;
+            const qd_expr *b = qd_bracket(ctx, n, q, p, A[i], B[j]);
+            if (!b)
+                return qd_ctx_status(ctx);
+            if (!qd_is_zero(b)) {
+                set_fail(v, pair, i, j, b);
+                return QD_OK;
+            }
+        }
+    return QD_OK;
+}
+
+qd_status qd_canonical_check(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                             const qd_expr *const *p, const qd_expr *const *Q,
+                             const qd_expr *const *P, const qd_expr *t, qd_canon_verdict *v) {
+    if (!v || !q || !p || !Q || !P) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "canonical check: missing argument");
+        return QD_ERR_ARG;
+    }
+    *v = (qd_canon_verdict){QD_CANON_YES, NULL, QD_PAIR_NONE, 0, 0, NULL};
+    qd_status st = check_zero(ctx, n, q, p, Q, Q, true, QD_PAIR_QQ, v);
+    if (st == QD_OK && v->kind == QD_CANON_YES)
+        st = check_zero(ctx, n, q, p, P, P, true, QD_PAIR_PP, v);
+    if (st == QD_OK && v->kind == QD_CANON_YES)
+        st = check_zero(ctx, n, q, p, Q, P, false, QD_PAIR_QP, v);
+    if (st != QD_OK || v->kind != QD_CANON_YES)
+        return st;
+    const qd_expr *c = NULL;
+    for (size_t i = 0; i < n; i++) {
+        const qd_expr *b = qd_bracket(ctx, n, q, p, Q[i], P[i]);
+        if (!b)
+            return qd_ctx_status(ctx);
+        /* hash-consing: the same scale everywhere is the same node */
+        bool ok = c ? b == c : !qd_is_zero(b) && is_constant(n, q, p, t, b);
+        if (!ok) {
+            set_fail(v, QD_PAIR_QP, i, i, b);
+            return QD_OK;
+        }
+        c = b;
+    }
+    v->scale = c ? c : qd_int(ctx, 1);
+    v->kind = qd_is_one(v->scale) ? QD_CANON_YES : QD_CANON_SCALED;
+    return QD_OK;
+}
