@@ -38,5 +38,25 @@ int qd_cmd_simplify(int argc, char **argv);
 int qd_cmd_print(int argc, char **argv);
 int qd_cmd_eom(int argc, char **argv);   /* cmd_eom.c */
 int qd_cmd_check(int argc, char **argv); /* cmd_check.c */
+int qd_cmd_hamiltonian(int argc, char **argv); /* cmd_hamiltonian.c */
+int qd_cmd_bracket(int argc, char **argv);   /* cmd_bracket.c */
+int qd_cmd_canonical(int argc, char **argv); /* cmd_canonical.c */
+
+/* A model file with its canonical variables: the coordinates q_j and the
+ * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */
+typedef struct qd_phase {
+    qd_ctx *ctx;
+    struct qd_model_file *mf;
+    size_t n;
+    const qd_expr **q, **p;
+    qd_eom *e;  /* set by qd_phase_ham */
+    qd_ham *h;
+} qd_phase;
+int qd_phase_load(const char *file, qd_phase *ph);
+/* Read text (an expression in q, p, t and the parameters; what names it in
+ * diagnostics); unknown names and velocities are errors (exit 2). */
+int qd_phase_read(qd_phase *ph, const char *what, const char *text, const qd_expr **out);
+int qd_phase_ham(qd_phase *ph); /* H from hamilton.h */
+void qd_phase_free(qd_phase *ph);
 
 #endif

@@ -16,6 +16,11 @@ static const qd_cmd commands[] = {
     {"eom", "FILE [--format F] [OPTIONS]",
      "Lagrange's equations of a model, M q'' = f", qd_cmd_eom},
     {"check", "FILE", "validate a model and summarize it", qd_cmd_check},
+    {"hamiltonian", "FILE [--format F] [--at ...]", "momenta, H and Hamilton's equations",
+     qd_cmd_hamiltonian},
+    {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", qd_cmd_bracket},
+    {"canonical", "FILE --Q ... --P ... | --generator", "canonical transformations, K = H + dF/dt",
+     qd_cmd_canonical},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

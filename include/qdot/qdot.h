@@ -12,6 +12,7 @@
 #include "model.h"
 #include "mech.h"
 #include "canonical.h"
+#include "hamilton.h"
 
 #define QDOT_VERSION "0.1.0"
 

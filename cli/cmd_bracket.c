@@ -1,0 +1,267 @@
+/*
+ * cli/cmd_bracket.c - `qdot bracket FILE F G`: the Poisson bracket [F, G]
+ * (qd_bracket) in the model's canonical variables, the coordinates q_j and
+ * the momenta p_<q_j> named as hamilton.h names them; `--dt F` gives
+ *
+ *     dF/dt = [F, H] + dF/dt|explicit + sum_j dF/dp_j extra_j,
+ *
+ * the last sum being the generalized forces and dissipation that Hamilton's
+ * equations carry beyond -dH/dq (zero for a conservative model).  Also the
+ * model-and-variables helpers (qd_phase) that `qdot canonical` shares.
+ */
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include "eom_out.h"
+#include "json.h"
+#include "model_file.h"
+
+typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX } br_fmt;
+
+static const char usage_text[] =
+    "usage: qdot bracket FILE F G [--format text|json|latex]\n"
+    "       qdot bracket FILE --dt F [--format text|json|latex]";
+
+/* ---- the canonical variables ---------------------------------------------- */
+
+static int momenta(qd_phase *ph) {
+    const qd_model *m = ph->mf->model;
+    ph->n = qd_model_ncoords(m);
+    ph->q = calloc(ph->n + 1, sizeof *ph->q);
+    ph->p = calloc(ph->n + 1, sizeof *ph->p);
+    if (!ph->q || !ph->p) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    for (size_t j = 0; j < ph->n; j++) {
+        char name[256];
+        ph->q[j] = qd_model_coord(m, j);
+        snprintf(name, sizeof name, "p_%s", qd_expr_name(ph->q[j]));
+        /* a parameter already named p_x cannot also be the momentum */
+        if (!(ph->p[j] = qd_symbol(ph->ctx, name)))
+            return qd_diag_ctx(ph->ctx);
+    }
+    return QD_EXIT_OK;
+}
+
+int qd_phase_load(const char *file, qd_phase *ph) {
+    *ph = (qd_phase){.ctx = qd_ctx_new(), .mf = calloc(1, sizeof *ph->mf)};
+    if (!ph->ctx || !ph->mf) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    int rc = qd_model_file_load(ph->ctx, file, ph->mf);
+    return rc == QD_EXIT_OK ? momenta(ph) : rc;
+}
+
+/* Velocities have no place in a function on phase space. */
+static int no_velocity(qd_phase *ph, const char *what, const qd_expr *x) {
+    for (size_t j = 0; j < ph->n; j++)
+        for (unsigned k = 1; k <= 2; k++) {
+            const qd_expr *v = qd_jet(ph->ctx, ph->q[j], k);
+            if (v && qd_has(x, v)) {
+                qd_diag_error("%s contains the velocity %s: write functions of %s and p_%s",
+                              what, qd_expr_name(v), qd_expr_name(ph->q[j]),
+                              qd_expr_name(ph->q[j]));
+                return QD_EXIT_USAGE;
+            }
+        }
+    return QD_EXIT_OK;
+}
+
+int qd_phase_read(qd_phase *ph, const char *what, const char *text, const qd_expr **out) {
+    qd_read_opts opts = {.new_symbols = false};
+    qd_read_error err;
+    *out = qd_read(ph->ctx, text, &opts, &err);
+    if (!*out) {
+        qd_diag_read(what, text, &err);
+        return QD_EXIT_USAGE;
+    }
+    return no_velocity(ph, what, *out);
+}
+
+int qd_phase_ham(qd_phase *ph) {
+    if (!(ph->e = qd_eom_derive(ph->ctx, ph->mf->model)))
+        return qd_eom_derive_error(ph->ctx, ph->mf);
+    if (!(ph->h = qd_ham_derive(ph->ctx, ph->mf->model, ph->e)))
+        return qd_diag_ctx(ph->ctx);
+    for (size_t j = 0; j < ph->n; j++)
+        if (ph->h->p[j] != ph->p[j]) {
+            qd_diag_error("the Hamiltonian names its momentum %s, not %s",
+                          qd_expr_name(ph->h->p[j]), qd_expr_name(ph->p[j]));
+            return QD_EXIT_FAIL;
+        }
+    return QD_EXIT_OK;
+}
+
+void qd_phase_free(qd_phase *ph) {
+    qd_ham_free(ph->h);
+    if (ph->e)
+        qd_eom_free(ph->e);
+    if (ph->mf)
+        qd_model_file_free(ph->mf);
+    free(ph->mf);
+    free(ph->q);
+    free(ph->p);
+    qd_ctx_free(ph->ctx);
+    *ph = (qd_phase){0};
+}
+
+/* ---- the command ------------------------------------------------------------ */
+
+typedef struct br_args {
+    const char *file, *F, *G;
+    bool dt;
+    br_fmt fmt;
+} br_args;
+
+static int parse_format(const char *v, br_fmt *f) {
+    static const char *const names[] = {"text", "json", "latex"};
+    for (int i = 0; i < 3; i++)
+        if (!strcmp(v, names[i])) {
+            *f = (br_fmt)i;
+            return QD_EXIT_OK;
+        }
+    qd_diag_error("--format takes text, json or latex, not '%s'", v);
+    return QD_EXIT_USAGE;
+}
+
+static int positional(br_args *a, const char *s) {
+    const char **slot = !a->file ? &a->file : !a->F ? &a->F : !a->G && !a->dt ? &a->G : NULL;
+    if (!slot) {
+        qd_diag_error("unexpected argument '%s'\n%s", s, usage_text);
+        return QD_EXIT_USAGE;
+    }
+    *slot = s;
+    return QD_EXIT_OK;
+}
+
+static int parse_args(int argc, char **argv, br_args *a) {
+    *a = (br_args){.fmt = FMT_TEXT};
+    int rc = QD_EXIT_OK;
+    for (int i = 0; rc == QD_EXIT_OK && i < argc; i++) {
+        if (!strcmp(argv[i], "--dt"))
+            a->dt = true;
+        else if (!strncmp(argv[i], "--format=", 9))
+            rc = parse_format(argv[i] + 9, &a->fmt);
+        else if (!strcmp(argv[i], "--format") && i + 1 < argc)
+            rc = parse_format(argv[++i], &a->fmt);
+        else if (argv[i][0] == '-' && argv[i][1] && (argv[i][1] < '0' || argv[i][1] > '9')) {
+            qd_diag_error("unknown option or missing value: '%s'\n%s", argv[i], usage_text);
+            rc = QD_EXIT_USAGE;
+        } else
+            rc = positional(a, argv[i]);
+    }
+    if (rc == QD_EXIT_OK && (!a->F || (!a->dt && !a->G) || (a->dt && a->G))) {
+        qd_diag_error("%s", usage_text);
+        rc = QD_EXIT_USAGE;
+    }
+    return rc;
+}
+
+/* dF/dt along the motion: [F, H] + dF/dt explicit + sum dF/dp_j extra_j. */
+static const qd_expr *time_derivative(qd_phase *ph, const qd_expr *F) {
+    qd_ctx *ctx = ph->ctx;
+    const qd_ham *h = ph->h;
+    const qd_expr *d = qd_bracket(ctx, ph->n, ph->q, ph->p, F, h->H);
+    d = qd_add(ctx, d, qd_diff(ctx, F, qd_time(ctx)));
+    for (size_t j = 0; j < ph->n; j++)
+        if (!qd_is_zero(h->extra[j]))
+            d = qd_add(ctx, d, qd_mul(ctx, qd_diff(ctx, F, ph->p[j]), h->extra[j]));
+    return d ? qd_simplify(ctx, d) : NULL;
+}
+
+static void json_expr(qd_ctx *ctx, qd_json *j, const char *key, const qd_expr *x) {
+    qd_buf s = QD_BUF_INIT;
+    qd_print(ctx, x, QD_FMT_TEXT, &s);
+    qd_json_key(j, key);
+    qd_json_string(j, qd_buf_str(&s));
+    qd_buf_free(&s);
+}
+
+static void write_json(qd_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
+                       const qd_expr *r, qd_buf *b) {
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "momenta");
+    qd_json_begin_array(&j);
+    for (size_t k = 0; k < ph->n; k++)
+        qd_json_string(&j, qd_expr_name(ph->p[k]));
+    qd_json_end_array(&j);
+    json_expr(ph->ctx, &j, "F", F);
+    if (a->dt) {
+        json_expr(ph->ctx, &j, "H", ph->h->H);
+        json_expr(ph->ctx, &j, "dF_dt", r);
+    } else {
+        json_expr(ph->ctx, &j, "G", G);
+        json_expr(ph->ctx, &j, "bracket", r);
+    }
+    qd_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+    b->failed = b->failed || !qd_json_ok(&j);
+}
+
+static void write_line(qd_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
+                       const qd_expr *r, qd_buf *b) {
+    qd_format f = a->fmt == FMT_LATEX ? QD_FMT_LATEX : QD_FMT_TEXT;
+    bool tex = a->fmt == FMT_LATEX;
+    if (a->dt) {
+        qd_buf_puts(b, tex ? "\\frac{d}{dt}\\left(" : "d/dt(");
+        qd_print(ph->ctx, F, f, b);
+        qd_buf_puts(b, tex ? "\\right) = " : ") = ");
+    } else {
+        qd_buf_puts(b, tex ? "\\left\\{" : "[");
+        qd_print(ph->ctx, F, f, b);
+        qd_buf_puts(b, ", ");
+        qd_print(ph->ctx, G, f, b);
+        qd_buf_puts(b, tex ? "\\right\\} = " : "] = ");
+    }
+    qd_print(ph->ctx, r, f, b);
+    qd_buf_puts(b, "\n");
+}
+
+static int emit(qd_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
+                const qd_expr *r) {
+    qd_buf b = QD_BUF_INIT;
+    if (a->fmt == FMT_JSON)
+        write_json(ph, a, F, G, r, &b);
+    else
+        write_line(ph, a, F, G, r, &b);
+    bool ok = !b.failed;
+    if (ok)
+        fputs(qd_buf_str(&b), stdout);
+    else
+        qd_diag_error("cannot print the bracket");
+    qd_buf_free(&b);
+    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+}
+
+static int run(qd_phase *ph, const br_args *a) {
+    const qd_expr *F, *G = NULL, *r;
+    int rc = qd_phase_read(ph, "F", a->F, &F);
+    if (rc == QD_EXIT_OK && !a->dt)
+        rc = qd_phase_read(ph, "G", a->G, &G);
+    if (rc == QD_EXIT_OK && a->dt)
+        rc = qd_phase_ham(ph);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    r = a->dt ? time_derivative(ph, F) : qd_bracket(ph->ctx, ph->n, ph->q, ph->p, F, G);
+    if (!r)
+        return qd_diag_ctx(ph->ctx);
+    return emit(ph, a, F, G, r);
+}
+
+int qd_cmd_bracket(int argc, char **argv) {
+    br_args a;
+    int rc = parse_args(argc, argv, &a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_phase ph;
+    rc = qd_phase_load(a.file, &ph);
+    if (rc == QD_EXIT_OK)
+        rc = run(&ph, &a);
+    qd_phase_free(&ph);
+    return rc;
+}

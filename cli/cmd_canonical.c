@@ -1,0 +1,336 @@
+/*
+ * cli/cmd_canonical.c - `qdot canonical FILE --Q "..." --P "..."`: is the
+ * change of variables (q, p) -> (Q, P) canonical (qd_canonical_check)?  The
+ * verdict - canonical, canonical up to a scale c, or not canonical with the
+ * first failing fundamental bracket - is an answer, so all three exit 0.
+ * `--generator F1..F4 EXPR` instead gives the transformation a generating
+ * function defines and K = H + dF/dt (qd_generate, H from hamilton.h).
+ * The new variables are Q, P for a model with one coordinate and Q1..Qn,
+ * P1..Pn otherwise: both in the verdict's brackets and in a generator.
+ */
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include "json.h"
+#include "model_file.h"
+
+typedef struct can_args {
+    const char *file, *Q, *P, *gen_type, *gen;
+    bool json;
+} can_args;
+
+typedef struct can_run {
+    qd_phase ph;
+    const qd_expr **Q, **P; /* expressions (--Q/--P) or the new symbols (--generator) */
+    const qd_expr **newQ, **newP;
+    char **names;           /* 2n names of the new variables */
+} can_run;
+
+static const char usage_text[] =
+    "usage: qdot canonical FILE --Q \"Q1, ...\" --P \"P1, ...\" [--format text|json]\n"
+    "       qdot canonical FILE --generator F1|F2|F3|F4 EXPR [--format text|json]";
+
+static const char *option(int argc, char **argv, int *i, const char *opt) {
+    size_t len = strlen(opt);
+    if (strncmp(argv[*i], opt, len))
+        return NULL;
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (argv[*i][len] || *i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
+}
+
+static int parse_option(int argc, char **argv, int *i, can_args *a) {
+    const char *v;
+    if ((v = option(argc, argv, i, "--Q")) && !a->Q)
+        a->Q = v;
+    else if ((v = option(argc, argv, i, "--P")) && !a->P)
+        a->P = v;
+    else if ((v = option(argc, argv, i, "--format")) && (!strcmp(v, "text") || !strcmp(v, "json")))
+        a->json = !strcmp(v, "json");
+    else if (!strcmp(argv[*i], "--generator") && *i + 2 < argc && !a->gen) {
+        a->gen_type = argv[++*i];
+        a->gen = argv[++*i];
+    } else {
+        qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int parse_args(int argc, char **argv, can_args *a) {
+    *a = (can_args){0};
+    for (int i = 0; i < argc; i++) {
+        int rc = QD_EXIT_OK;
+        if (argv[i][0] == '-' && argv[i][1])
+            rc = parse_option(argc, argv, &i, a);
+        else if (!a->file)
+            a->file = argv[i];
+        else {
+            qd_diag_error("'canonical' takes one FILE; unexpected '%s'\n%s", argv[i], usage_text);
+            rc = QD_EXIT_USAGE;
+        }
+        if (rc != QD_EXIT_OK)
+            return rc;
+    }
+    const char *why = !a->file                     ? "FILE is missing"
+                      : a->gen && (a->Q || a->P)   ? "give either --Q and --P or --generator"
+                      : !a->gen && !a->Q           ? "--Q is missing"
+                      : !a->gen && !a->P           ? "--P is missing"
+                                                   : NULL;
+    if (why) {
+        qd_diag_error("%s\n%s", why, usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+/* The new variables' names and symbols: Q, P or Q1.., P1... */
+static int new_symbols(can_run *r) {
+    size_t n = r->ph.n;
+    r->names = calloc(2 * n, sizeof *r->names);
+    r->newQ = calloc(n + 1, sizeof *r->newQ);
+    r->newP = calloc(n + 1, sizeof *r->newP);
+    if (!r->names || !r->newQ || !r->newP)
+        return QD_EXIT_FAIL;
+    for (size_t k = 0; k < 2 * n; k++) {
+        if (!(r->names[k] = malloc(32)))
+            return QD_EXIT_FAIL;
+        snprintf(r->names[k], 32, n == 1 ? "%c" : "%c%zu", k < n ? 'Q' : 'P', k % n + 1);
+    }
+    return QD_EXIT_OK;
+}
+
+static int make_symbols(can_run *r) {
+    for (size_t k = 0; k < 2 * r->ph.n; k++) {
+        const qd_expr *s = qd_symbol(r->ph.ctx, r->names[k]);
+        if (!s)
+            return qd_diag_ctx(r->ph.ctx);
+        (k < r->ph.n ? r->newQ : r->newP)[k % r->ph.n] = s;
+    }
+    return QD_EXIT_OK;
+}
+
+/* One comma-separated item of --Q or --P; out[k] gets it. */
+static int read_item(can_run *r, const char *what, const char *s, size_t len,
+                     const qd_expr **out) {
+    char *text = malloc(len + 1);
+    if (!text)
+        return QD_EXIT_FAIL;
+    memcpy(text, s, len);
+    text[len] = '\0';
+    int rc = qd_phase_read(&r->ph, what, text, out);
+    free(text);
+    return rc;
+}
+
+/* "e1, e2, ..." split at the commas outside parentheses: exactly n items. */
+static int read_list(can_run *r, const char *what, const char *s, const qd_expr **out) {
+    size_t k = 0, start = 0, i = 0;
+    int depth = 0, rc = QD_EXIT_OK;
+    for (;; i++) {
+        depth += (s[i] == '(') - (s[i] == ')');
+        if (s[i] && (s[i] != ',' || depth))
+            continue;
+        if (k == r->ph.n) {
+            k++;
+            break;
+        }
+        if ((rc = read_item(r, what, s + start, i - start, &out[k++])) != QD_EXIT_OK || !s[i])
+            break;
+        start = i + 1;
+    }
+    if (rc == QD_EXIT_OK && k != r->ph.n) {
+        qd_diag_error("%s needs %zu expression%s, one per coordinate", what, r->ph.n,
+                      r->ph.n == 1 ? "" : "s");
+        rc = QD_EXIT_USAGE;
+    }
+    return rc;
+}
+
+/* ---- output ------------------------------------------------------------------ */
+
+static char *text_of(qd_ctx *ctx, const qd_expr *x) {
+    qd_buf b = QD_BUF_INIT;
+    qd_print(ctx, x, QD_FMT_TEXT, &b);
+    size_t len = b.failed ? 0 : strlen(qd_buf_str(&b));
+    char *s = b.failed ? NULL : malloc(len + 1);
+    if (s)
+        memcpy(s, qd_buf_str(&b), len + 1);
+    qd_buf_free(&b);
+    return s;
+}
+
+static void put_expr(qd_ctx *ctx, qd_json *j, qd_buf *b, const char *key, const qd_expr *x) {
+    char *s = x ? text_of(ctx, x) : NULL;
+    if (j) {
+        qd_json_key(j, key);
+        if (s)
+            qd_json_string(j, s);
+        else
+            qd_json_null(j);
+    } else if (s) {
+        qd_buf_printf(b, "  %s = %s\n", key, s);
+    }
+    free(s);
+}
+
+static int flush(qd_buf *b, qd_json *j) {
+    if (j) {
+        qd_json_end_object(j);
+        qd_buf_puts(b, "\n");
+        b->failed = b->failed || !qd_json_ok(j);
+    }
+    bool ok = !b->failed;
+    if (ok)
+        fputs(qd_buf_str(b), stdout);
+    else
+        qd_diag_error("cannot print the result");
+    qd_buf_free(b);
+    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+}
+
+/* "[Q1, P2]" for the failing bracket of a verdict. */
+static void pair_name(const can_run *r, const qd_canon_verdict *v, char *out, size_t size) {
+    size_t n = r->ph.n;
+    const char *a = r->names[v->pair == QD_PAIR_PP ? n + v->i : v->i];
+    const char *b = r->names[v->pair == QD_PAIR_QQ ? v->j : n + v->j];
+    snprintf(out, size, "[%s, %s]", a, b);
+}
+
+static int write_verdict(can_run *r, const qd_canon_verdict *v, bool json) {
+    qd_ctx *ctx = r->ph.ctx;
+    static const char *const kind[] = {"canonical", "scaled", "not canonical"};
+    qd_buf b = QD_BUF_INIT;
+    qd_json j;
+    char pair[128] = "";
+    if (v->kind == QD_CANON_NO)
+        pair_name(r, v, pair, sizeof pair);
+    if (json) {
+        qd_json_init(&j, &b);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "verdict");
+        qd_json_string(&j, kind[v->kind]);
+        put_expr(ctx, &j, &b, "scale", v->kind == QD_CANON_NO ? NULL : v->scale);
+        qd_json_key(&j, "bracket");
+        if (pair[0])
+            qd_json_string(&j, pair);
+        else
+            qd_json_null(&j);
+        put_expr(ctx, &j, &b, "value", pair[0] ? v->value : NULL);
+        return flush(&b, &j);
+    }
+    char *s = text_of(ctx, v->kind == QD_CANON_NO ? v->value : v->scale);
+    if (v->kind == QD_CANON_YES)
+        qd_buf_puts(&b, "canonical\n");
+    else if (v->kind == QD_CANON_SCALED)
+        qd_buf_printf(&b, "canonical up to scale %s: [Q_i, P_i] = %s\n", s ? s : "?", s ? s : "?");
+    else
+        qd_buf_printf(&b, "not canonical: %s = %s (should be %s)\n", pair, s ? s : "?",
+                      v->pair == QD_PAIR_QP && v->i == v->j ? "1" : "0");
+    free(s);
+    return flush(&b, NULL);
+}
+
+/* ---- the two modes -------------------------------------------------------------- */
+
+static int check(can_run *r, const can_args *a, bool json) {
+    size_t n = r->ph.n;
+    r->Q = calloc(n + 1, sizeof *r->Q);
+    r->P = calloc(n + 1, sizeof *r->P);
+    if (!r->Q || !r->P)
+        return QD_EXIT_FAIL;
+    int rc = read_list(r, "--Q", a->Q, r->Q);
+    if (rc == QD_EXIT_OK)
+        rc = read_list(r, "--P", a->P, r->P);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_canon_verdict v;
+    if (qd_canonical_check(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, qd_time(r->ph.ctx), &v) !=
+        QD_OK)
+        return qd_diag_ctx(r->ph.ctx);
+    return write_verdict(r, &v, json);
+}
+
+static int gen_type(const char *s, qd_gen_type *t) {
+    if ((s[0] == 'F' || s[0] == 'f') && s[1] >= '1' && s[1] <= '4' && !s[2]) {
+        *t = (qd_gen_type)(s[1] - '0');
+        return QD_EXIT_OK;
+    }
+    qd_diag_error("--generator takes a type F1, F2, F3 or F4, not '%s'\n%s", s, usage_text);
+    return QD_EXIT_USAGE;
+}
+
+static int write_generated(can_run *r, const can_args *a, const qd_expr *F,
+                           const qd_gen_result *g) {
+    qd_ctx *ctx = r->ph.ctx;
+    size_t n = r->ph.n;
+    qd_buf b = QD_BUF_INIT;
+    qd_json j, *jp = a->json ? &j : NULL;
+    if (jp) {
+        qd_json_init(jp, &b);
+        qd_json_begin_object(jp);
+        qd_json_key(jp, "type");
+        qd_json_string(jp, a->gen_type);
+    } else {
+        qd_buf_printf(&b, "generating function %s\n", a->gen_type);
+    }
+    put_expr(ctx, jp, &b, "F", F);
+    if (!jp)
+        qd_buf_puts(&b, "transformation (in q, p, t)\n");
+    for (size_t k = 0; k < 2 * n; k++)
+        put_expr(ctx, jp, &b, r->names[k], k < n ? g->Q[k] : g->P[k - n]);
+    if (!jp)
+        qd_buf_puts(&b, "new Hamiltonian K = H + dF/dt\n");
+    put_expr(ctx, jp, &b, jp ? "K_old" : "K(q, p, t)", g->K_old);
+    put_expr(ctx, jp, &b, jp ? "K_new" : "K(Q, P, t)", g->K_new);
+    return flush(&b, jp);
+}
+
+static int generate(can_run *r, const can_args *a) {
+    qd_gen_type type;
+    const qd_expr *F;
+    int rc = gen_type(a->gen_type, &type);
+    if (rc == QD_EXIT_OK)
+        rc = make_symbols(r);
+    if (rc == QD_EXIT_OK)
+        rc = qd_phase_read(&r->ph, "generator", a->gen, &F);
+    if (rc == QD_EXIT_OK)
+        rc = qd_phase_ham(&r->ph);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_gen_result g = {0};
+    qd_status st = qd_generate(r->ph.ctx, type, r->ph.n, r->ph.q, r->ph.p, r->newQ, r->newP, F,
+                               qd_time(r->ph.ctx), r->ph.h->H, &g);
+    rc = st == QD_OK ? write_generated(r, a, F, &g) : qd_diag_ctx(r->ph.ctx);
+    qd_gen_result_free(&g);
+    return rc;
+}
+
+static void can_free(can_run *r) {
+    for (size_t k = 0; r->names && k < 2 * r->ph.n; k++)
+        free(r->names[k]);
+    free(r->names);
+    free(r->newQ);
+    free(r->newP);
+    free(r->Q);
+    free(r->P);
+    qd_phase_free(&r->ph);
+}
+
+int qd_cmd_canonical(int argc, char **argv) {
+    can_args a;
+    int rc = parse_args(argc, argv, &a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    can_run r = {0};
+    rc = qd_phase_load(a.file, &r.ph);
+    if (rc == QD_EXIT_OK && (rc = new_symbols(&r)) != QD_EXIT_OK)
+        qd_diag_error("out of memory");
+    if (rc == QD_EXIT_OK)
+        rc = a.gen ? generate(&r, &a) : check(&r, &a, a.json);
+    can_free(&r);
+    return rc;
+}

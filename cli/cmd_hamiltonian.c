@@ -1,0 +1,451 @@
+/*
+ * cli/cmd_hamiltonian.c - `qdot hamiltonian FILE`: the momenta, H(q, p, t)
+ * and Hamilton's equations of a model (qd_ham_derive), with the verdicts
+ * H = T + V? and H conserved?  --set replaces parameters; --at evaluates H
+ * and the equations at a point (q, p, t): momenta are named there as they
+ * are printed (p_r=0.3), everything else goes to the state parser.
+ */
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include "eom_out.h"
+#include "json.h"
+#include "model_file.h"
+#include "state.h"
+
+#define MAX_SETS 64
+#define MAX_AT 1024
+
+typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } ham_fmt;
+
+typedef struct ham_run {
+    qd_ctx *ctx;
+    qd_model_file mf;
+    qd_eom *e;
+    qd_ham *h;
+    ham_fmt fmt;
+    const char *file, *at, *sets[MAX_SETS];
+    size_t nsets, nsubs;
+    const qd_expr *from[MAX_SETS], *to[MAX_SETS];
+    qd_state st;
+    const qd_expr **syms; /* the state's symbols, then the momenta */
+    double *vals;
+    size_t nsyms;
+} ham_run;
+
+static const char usage_text[] =
+    "usage: qdot hamiltonian FILE [--format text|json|latex|sympy] [--set NAME=VALUE]... "
+    "[--at \"q=VALUE, p_q=VALUE, t=VALUE\"]";
+
+static const char *option(int argc, char **argv, int *i, const char *opt) {
+    size_t len = strlen(opt);
+    if (strncmp(argv[*i], opt, len))
+        return NULL;
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (argv[*i][len] || *i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
+}
+
+static int parse_format(const char *v, ham_fmt *f) {
+    static const char *const names[] = {"text", "json", "latex", "sympy"};
+    for (int i = 0; i < 4; i++)
+        if (!strcmp(v, names[i])) {
+            *f = (ham_fmt)i;
+            return QD_EXIT_OK;
+        }
+    qd_diag_error("--format takes text, json, latex or sympy, not '%s'", v);
+    return QD_EXIT_USAGE;
+}
+
+static int parse_option(int argc, char **argv, int *i, ham_run *r) {
+    const char *v;
+    if ((v = option(argc, argv, i, "--format")))
+        return parse_format(v, &r->fmt);
+    if ((v = option(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
+        r->sets[r->nsets++] = v;
+        return QD_EXIT_OK;
+    }
+    if ((v = option(argc, argv, i, "--at")) && !r->at) {
+        r->at = v;
+        return QD_EXIT_OK;
+    }
+    qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
+    return QD_EXIT_USAGE;
+}
+
+static int parse_args(int argc, char **argv, ham_run *r) {
+    for (int i = 0; i < argc; i++) {
+        if (argv[i][0] == '-' && argv[i][1]) {
+            int rc = parse_option(argc, argv, &i, r);
+            if (rc != QD_EXIT_OK)
+                return rc;
+        } else if (!r->file) {
+            r->file = argv[i];
+        } else {
+            qd_diag_error("'hamiltonian' takes one FILE; unexpected '%s'\n%s", argv[i], usage_text);
+            return QD_EXIT_USAGE;
+        }
+    }
+    if (!r->file) {
+        qd_diag_error("%s", usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int apply_sets(ham_run *r) {
+    for (size_t i = 0; i < r->nsets; i++) {
+        const qd_expr *p, *v;
+        int rc = qd_state_set(r->ctx, r->mf.model, r->sets[i], &p, &v);
+        if (rc != QD_EXIT_OK)
+            return rc;
+        size_t k = 0;
+        while (k < r->nsubs && r->from[k] != p)
+            k++;
+        r->from[k] = p;
+        r->to[k] = v;
+        r->nsubs += k == r->nsubs;
+    }
+    return QD_EXIT_OK;
+}
+
+static const qd_expr *subs(ham_run *r, const qd_expr *x) {
+    if (!x || !r->nsubs)
+        return x;
+    const qd_expr *y = qd_subs(r->ctx, x, r->nsubs, r->from, r->to);
+    return y == x ? x : qd_simplify(r->ctx, y);
+}
+
+static int substitute(ham_run *r) {
+    qd_ham *h = r->h;
+    for (size_t j = 0; j < h->n; j++) {
+        h->pdef[j] = subs(r, h->pdef[j]);
+        h->vel[j] = subs(r, h->vel[j]);
+        h->dq[j] = subs(r, h->dq[j]);
+        h->dp[j] = subs(r, h->dp[j]);
+    }
+    h->H = subs(r, h->H);
+    h->H_minus_E = subs(r, h->H_minus_E);
+    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(r->ctx);
+}
+
+/* ---- --at ------------------------------------------------------------------ */
+
+static long momentum_index(const ham_run *r, const char *item, size_t len) {
+    while (len && item[len - 1] == ' ')
+        len--;
+    for (size_t j = 0; j < r->h->n; j++) {
+        const char *name = qd_expr_name(r->h->p[j]);
+        if (strlen(name) == len && !strncmp(name, item, len))
+            return (long)j;
+    }
+    return -1;
+}
+
+/* One "NAME=VALUE" of the list: a momentum is read here, the rest is
+ * appended to rest for qd_state_parse. */
+static int at_item(ham_run *r, const char *s, size_t len, char *rest) {
+    while (len && *s == ' ')
+        s++, len--;
+    const char *eq = memchr(s, '=', len);
+    long j = eq ? momentum_index(r, s, (size_t)(eq - s)) : -1;
+    if (j < 0) {
+        if (rest[0])
+            strcat(rest, ",");
+        strncat(rest, s, len);
+        return QD_EXIT_OK;
+    }
+    char value[MAX_AT];
+    size_t vl = len - (size_t)(eq + 1 - s);
+    memcpy(value, eq + 1, vl);
+    value[vl] = '\0';
+    const qd_expr *exact;
+    return qd_state_number(r->ctx, qd_expr_name(r->h->p[j]), value, &exact,
+                           &r->vals[r->st.n + (size_t)j]);
+}
+
+static int split_at(ham_run *r, char *rest) {
+    const char *s = r->at;
+    int depth = 0, rc = QD_EXIT_OK;
+    size_t start = 0, i = 0;
+    rest[0] = '\0';
+    for (; rc == QD_EXIT_OK && s[i]; i++) {
+        depth += (s[i] == '(') - (s[i] == ')');
+        if (s[i] == ',' && !depth) {
+            rc = at_item(r, s + start, i - start, rest);
+            start = i + 1;
+        }
+    }
+    return rc == QD_EXIT_OK ? at_item(r, s + start, i - start, rest) : rc;
+}
+
+static int state_at(ham_run *r) {
+    if (strlen(r->at) >= MAX_AT) {
+        qd_diag_error("--at is too long");
+        return QD_EXIT_USAGE;
+    }
+    int rc = qd_state_init(r->ctx, r->mf.model, &r->st);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    r->nsyms = r->st.n + r->h->n;
+    r->syms = calloc(r->nsyms, sizeof *r->syms);
+    r->vals = calloc(r->nsyms, sizeof *r->vals);
+    if (!r->syms || !r->vals)
+        return QD_EXIT_FAIL;
+    char rest[MAX_AT];
+    rc = split_at(r, rest);
+    if (rc == QD_EXIT_OK && rest[0])
+        rc = qd_state_parse(r->ctx, r->mf.model, rest, &r->st);
+    memcpy(r->syms, r->st.syms, r->st.n * sizeof *r->syms);
+    memcpy(r->vals, r->st.vals, r->st.n * sizeof *r->vals);
+    memcpy(r->syms + r->st.n, r->h->p, r->h->n * sizeof *r->syms);
+    return rc;
+}
+
+/* x at the --at point as a number node. */
+static const qd_expr *number(ham_run *r, const qd_expr *x) {
+    double v;
+    if (qd_eval(r->ctx, x, r->nsyms, r->syms, r->vals, &v) != QD_OK)
+        return NULL;
+    return qd_float(r->ctx, v);
+}
+
+static int evaluate(ham_run *r) {
+    qd_ham *h = r->h;
+    int rc = state_at(r);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    h->H = number(r, h->H);
+    for (size_t j = 0; h->H && j < h->n; j++)
+        if (!(h->dq[j] = number(r, h->dq[j])) || !(h->dp[j] = number(r, h->dp[j])))
+            break;
+    if (qd_ctx_status(r->ctx) != QD_OK) {
+        qd_diag_error("cannot evaluate at this point: %s", qd_ctx_message(r->ctx));
+        return QD_EXIT_FAIL;
+    }
+    return QD_EXIT_OK;
+}
+
+/* ---- output ---------------------------------------------------------------- */
+
+static qd_format expr_format(ham_fmt f) {
+    return f == FMT_LATEX ? QD_FMT_LATEX : f == FMT_SYMPY ? QD_FMT_SYMPY : QD_FMT_TEXT;
+}
+
+static void put(const ham_run *r, qd_buf *b, const qd_expr *x) {
+    qd_print(r->ctx, x, expr_format(r->fmt), b);
+}
+
+/* "  lhs = rhs" (LaTeX rows end in \\). */
+static void line(const ham_run *r, qd_buf *b, const qd_expr *lhs_x, const char *lhs,
+                 const qd_expr *rhs) {
+    qd_buf_puts(b, "  ");
+    if (lhs_x)
+        put(r, b, lhs_x);
+    qd_buf_printf(b, "%s = ", lhs);
+    put(r, b, rhs);
+    qd_buf_puts(b, r->fmt == FMT_LATEX ? " \\\\\n" : "\n");
+}
+
+static void verdicts(const ham_run *r, qd_buf *b, const char *cmt) {
+    const qd_ham *h = r->h;
+    if (h->H_minus_E) {
+        qd_buf_printf(b, "%sH = T + V: %s", cmt, h->is_energy ? "yes" : "no, H - (T + V) = ");
+        if (!h->is_energy)
+            qd_print(r->ctx, h->H_minus_E, QD_FMT_TEXT, b);
+        qd_buf_puts(b, "\n");
+    } else {
+        qd_buf_printf(b, "%sH = T + V: unknown (the model gives L, not T and V)\n", cmt);
+    }
+    qd_buf_printf(b, "%sH conserved: %s\n", cmt,
+                  h->conserved ? "yes" : "no (explicit t, generalized forces or dissipation)");
+}
+
+static void write_lines(const ham_run *r, qd_buf *b) {
+    const qd_ham *h = r->h;
+    const char *cmt = r->fmt == FMT_LATEX ? "% " : "";
+    qd_buf_printf(b, "%sqdot hamiltonian %s\n%smomenta%s\n", cmt, r->mf.path, cmt,
+                  r->at ? "" : " and velocities");
+    for (size_t j = 0; j < h->n; j++) {
+        line(r, b, h->p[j], "", h->pdef[j]);
+        if (!r->at)
+            line(r, b, r->e->qd[j], "", h->vel[j]);
+    }
+    qd_buf_printf(b, "%sHamiltonian%s\n", cmt, r->at ? " at the point" : "");
+    line(r, b, NULL, "H", h->H);
+    qd_buf_printf(b, "%sHamilton's equations\n", cmt);
+    for (size_t j = 0; j < h->n; j++) {
+        qd_buf_printf(b, "  d%s/dt = ", qd_expr_name(h->q[j]));
+        put(r, b, h->dq[j]);
+        qd_buf_printf(b, "%s  d%s/dt = ", r->fmt == FMT_LATEX ? " \\\\\n" : "\n",
+                      qd_expr_name(h->p[j]));
+        put(r, b, h->dp[j]);
+        qd_buf_puts(b, r->fmt == FMT_LATEX ? " \\\\\n" : "\n");
+    }
+    verdicts(r, b, cmt);
+}
+
+static void sympy_list(const ham_run *r, qd_buf *b, const char *name, const qd_expr *const *x) {
+    qd_buf_printf(b, "%s = [", name);
+    for (size_t j = 0; j < r->h->n; j++) {
+        qd_buf_puts(b, j ? ", " : "");
+        put(r, b, x[j]);
+    }
+    qd_buf_puts(b, "]\n");
+}
+
+/* Python that defines momenta, pdef (dL/dq'), H, dq_dt and dp_dt; the
+ * coordinates are functions of t as in `eom --format sympy`. */
+static void write_sympy(const ham_run *r, qd_buf *b) {
+    const qd_ham *h = r->h;
+    const qd_model *m = r->mf.model;
+    qd_buf_printf(b, "# qdot hamiltonian %s\nfrom sympy import *\n\nt = Symbol('t')\n", r->mf.path);
+    for (size_t j = 0; j < h->n; j++)
+        qd_buf_printf(b, "%s = Function('%s')\n%s = Symbol('%s')\n", qd_expr_name(h->q[j]),
+                      qd_expr_name(h->q[j]), qd_expr_name(h->p[j]), qd_expr_name(h->p[j]));
+    for (size_t i = 0; i < qd_model_nparams(m); i++)
+        qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(qd_model_param(m, i)),
+                      qd_expr_name(qd_model_param(m, i)));
+    sympy_list(r, b, "momenta", h->p);
+    sympy_list(r, b, "pdef", h->pdef);
+    sympy_list(r, b, "velocities", h->vel);
+    qd_buf_puts(b, "H = ");
+    put(r, b, h->H);
+    qd_buf_puts(b, "\n");
+    sympy_list(r, b, "dq_dt", h->dq);
+    sympy_list(r, b, "dp_dt", h->dp);
+    verdicts(r, b, "# ");
+}
+
+/* A string of x, or its number with --at. */
+static void json_expr(const ham_run *r, qd_json *j, const qd_expr *x) {
+    if (r->at && qd_is_number(x)) {
+        qd_json_number(j, qd_state_value(x));
+        return;
+    }
+    qd_buf s = QD_BUF_INIT;
+    qd_print(r->ctx, x, QD_FMT_TEXT, &s);
+    qd_json_string(j, qd_buf_str(&s));
+    qd_buf_free(&s);
+}
+
+static void json_list(const ham_run *r, qd_json *j, const char *key, const qd_expr *const *x) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < r->h->n; k++)
+        json_expr(r, j, x[k]);
+    qd_json_end_array(j);
+}
+
+static void json_point(const ham_run *r, qd_json *j) {
+    qd_json_key(j, "at");
+    qd_json_begin_object(j);
+    size_t nq = r->h->n;
+    for (size_t i = 0; i < r->nsyms; i++)
+        if (i < nq || i == 2 * nq || i >= r->st.n) {
+            qd_json_key(j, qd_expr_name(r->syms[i]));
+            qd_json_number(j, r->vals[i]);
+        }
+    qd_json_end_object(j);
+}
+
+static void write_json(const ham_run *r, qd_buf *b) {
+    const qd_ham *h = r->h;
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "file");
+    qd_json_string(&j, r->mf.path);
+    qd_json_key(&j, "coordinates");
+    qd_json_begin_array(&j);
+    for (size_t k = 0; k < h->n; k++)
+        qd_json_string(&j, qd_expr_name(h->q[k]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "momenta");
+    qd_json_begin_array(&j);
+    for (size_t k = 0; k < h->n; k++)
+        qd_json_string(&j, qd_expr_name(h->p[k]));
+    qd_json_end_array(&j);
+    json_list(r, &j, "definitions", h->pdef);
+    json_list(r, &j, "velocities", h->vel);
+    if (r->at)
+        json_point(r, &j);
+    qd_json_key(&j, "H");
+    json_expr(r, &j, h->H);
+    json_list(r, &j, "dq_dt", h->dq);
+    json_list(r, &j, "dp_dt", h->dp);
+    qd_json_key(&j, "H_is_energy");
+    if (h->H_minus_E)
+        qd_json_bool(&j, h->is_energy);
+    else
+        qd_json_null(&j);
+    qd_json_key(&j, "H_minus_energy");
+    if (h->H_minus_E) {
+        qd_buf s = QD_BUF_INIT;
+        qd_print(r->ctx, h->H_minus_E, QD_FMT_TEXT, &s);
+        qd_json_string(&j, qd_buf_str(&s));
+        qd_buf_free(&s);
+    } else {
+        qd_json_null(&j);
+    }
+    qd_json_key(&j, "conserved");
+    qd_json_bool(&j, h->conserved);
+    qd_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+    b->failed = b->failed || !qd_json_ok(&j);
+}
+
+static int emit(ham_run *r) {
+    qd_buf b = QD_BUF_INIT;
+    if (r->fmt == FMT_JSON)
+        write_json(r, &b);
+    else if (r->fmt == FMT_SYMPY)
+        write_sympy(r, &b);
+    else
+        write_lines(r, &b);
+    bool ok = !b.failed;
+    if (ok)
+        fputs(qd_buf_str(&b), stdout);
+    else
+        qd_diag_error("cannot print the Hamiltonian");
+    qd_buf_free(&b);
+    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+}
+
+static int run(ham_run *r) {
+    int rc = qd_model_file_load(r->ctx, r->file, &r->mf);
+    if (rc == QD_EXIT_OK)
+        rc = apply_sets(r);
+    if (rc == QD_EXIT_OK && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
+        rc = qd_eom_derive_error(r->ctx, &r->mf);
+    if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->ctx, r->mf.model, r->e)))
+        rc = qd_diag_ctx(r->ctx);
+    if (rc == QD_EXIT_OK)
+        rc = substitute(r);
+    if (rc == QD_EXIT_OK && r->at)
+        rc = evaluate(r);
+    return rc == QD_EXIT_OK ? emit(r) : rc;
+}
+
+int qd_cmd_hamiltonian(int argc, char **argv) {
+    ham_run r = {.fmt = FMT_TEXT};
+    int rc = parse_args(argc, argv, &r);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (!(r.ctx = qd_ctx_new())) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = run(&r);
+    free(r.syms);
+    free(r.vals);
+    qd_state_free(&r.st);
+    qd_ham_free(r.h);
+    qd_eom_free(r.e);
+    qd_model_file_free(&r.mf);
+    qd_ctx_free(r.ctx);
+    return rc;
+}

@@ -1,0 +1,219 @@
+/*
+ * src/mech/hamilton.c - the Legendre transform: momenta, velocities in
+ * terms of the momenta, H and Hamilton's equations (qdot/hamilton.h).
+ *
+ * p = M q' + b is read off dL/dq' with qd_linear_coeffs (so a Lagrangian
+ * that is not quadratic in the velocities is refused there), and solved by
+ * Gaussian elimination with pivots that simplify to nonzero: M is small
+ * and often diagonal, so plain elimination beats a fraction-free scheme.
+ */
+#include "qdot/hamilton.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "qdot/print.h"
+
+static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+
+void qd_ham_free(qd_ham *h) {
+    if (!h)
+        return;
+    free(h->p);
+    free(h->pdef);
+    free(h->vel);
+    free(h->dq);
+    free(h->dp);
+    free(h->extra);
+    free(h);
+}
+
+static qd_ham *ham_alloc(size_t n) {
+    qd_ham *h = calloc(1, sizeof *h);
+    if (!h)
+        return NULL;
+    h->n = n;
+    h->p = arr(n);
+    h->pdef = arr(n);
+    h->vel = arr(n);
+    h->dq = arr(n);
+    h->dp = arr(n);
+    h->extra = arr(n);
+    if (!h->p || !h->pdef || !h->vel || !h->dq || !h->dp || !h->extra) {
+        qd_ham_free(h);
+        return NULL;
+    }
+    return h;
+}
+
+static qd_status momenta(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
+    for (size_t j = 0; j < e->n; j++) {
+        char name[256];
+        snprintf(name, sizeof name, "p_%s", qd_expr_name(e->q[j]));
+        h->p[j] = qd_symbol(ctx, name);
+        h->pdef[j] = qd_simplify(ctx, qd_diff(ctx, e->L, e->qd[j]));
+        if (!h->p[j] || !h->pdef[j])
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
+}
+
+/* Forward elimination on the augmented n x (n+1) matrix A, row-major. */
+static qd_status eliminate(qd_ctx *ctx, size_t n, const qd_expr **A) {
+    size_t w = n + 1;
+    for (size_t k = 0; k < n; k++) {
+        size_t piv = k;
+        while (piv < n && qd_is_zero(A[piv * w + k] = qd_simplify(ctx, A[piv * w + k])))
+            piv++;
+        if (piv == n) {
+            qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                         "the mass matrix is singular: the momenta do not determine the velocities");
+            return QD_ERR_SINGULAR;
+        }
+        for (size_t c = 0; piv != k && c < w; c++) {
+            const qd_expr *t = A[k * w + c];
+            A[k * w + c] = A[piv * w + c];
+            A[piv * w + c] = t;
+        }
+        for (size_t r = k + 1; r < n; r++) {
+            const qd_expr *f = qd_div(ctx, A[r * w + k], A[k * w + k]);
+            for (size_t c = k; c < w; c++)
+                A[r * w + c] = qd_sub(ctx, A[r * w + c], qd_mul(ctx, f, A[k * w + c]));
+        }
+        if (qd_ctx_status(ctx) != QD_OK)
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
+}
+
+static qd_status back_substitute(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x) {
+    size_t w = n + 1;
+    for (size_t k = n; k-- > 0;) {
+        const qd_expr *s = A[k * w + n];
+        for (size_t c = k + 1; c < n; c++)
+            s = qd_sub(ctx, s, qd_mul(ctx, A[k * w + c], x[c]));
+        x[k] = qd_simplify(ctx, qd_div(ctx, s, A[k * w + k]));
+        if (!x[k])
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
+}
+
+/* Row j of [M | p - b] from p_j = dL/dq'_j. */
+static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, const qd_expr **A) {
+    const qd_expr *b = NULL;
+    qd_status st = qd_linear_coeffs(ctx, h->pdef[j], e->n, e->qd, A, &b);
+    if (st == QD_ERR_NONLINEAR) {
+        qd_ctx_error(ctx, st, "the momentum of %s is not linear in the velocities "
+                              "(L is not quadratic in them)", qd_expr_name(e->q[j]));
+        return st;
+    }
+    if (st != QD_OK)
+        return st;
+    A[e->n] = qd_sub(ctx, h->p[j], b);
+    return A[e->n] ? QD_OK : qd_ctx_status(ctx);
+}
+
+static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
+    size_t n = e->n;
+    const qd_expr **A = arr(n * (n + 1));
+    if (!A)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_OK;
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        st = row(ctx, e, h, j, A + j * (n + 1));
+    if (st == QD_OK)
+        st = eliminate(ctx, n, A);
+    if (st == QD_OK)
+        st = back_substitute(ctx, n, A, h->vel);
+    free(A);
+    return st;
+}
+
+static const qd_expr *in_qp(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, const qd_expr *x) {
+    return qd_simplify(ctx, qd_subs(ctx, x, e->n, e->qd, h->vel));
+}
+
+static qd_status hamiltonian(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
+    const qd_expr *s = qd_neg(ctx, e->L);
+    for (size_t j = 0; j < e->n; j++)
+        s = qd_add(ctx, s, qd_mul(ctx, h->p[j], e->qd[j]));
+    h->H = in_qp(ctx, e, h, s);
+    return h->H ? QD_OK : qd_ctx_status(ctx);
+}
+
+static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
+    const qd_expr *D = qd_model_dissipation(m);
+    h->conserved = !qd_has(h->H, qd_time(ctx)) && (!D || qd_is_zero(D));
+    for (size_t j = 0; j < e->n; j++) {
+        const qd_expr *Q = qd_model_force(m, j), *x = Q ? Q : qd_int(ctx, 0);
+        if (D)
+            x = qd_sub(ctx, x, qd_diff(ctx, D, e->qd[j]));
+        h->conserved = h->conserved && (!Q || qd_is_zero(Q));
+        h->extra[j] = in_qp(ctx, e, h, x);
+        h->dq[j] = qd_simplify(ctx, qd_diff(ctx, h->H, h->p[j]));
+        h->dp[j] = qd_simplify(ctx, qd_add(ctx, qd_neg(ctx, qd_diff(ctx, h->H, e->q[j])),
+                                           h->extra[j]));
+        if (!h->extra[j] || !h->dq[j] || !h->dp[j])
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
+}
+
+/* H - (T + V + U0), U0 = U at q' = 0. */
+static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
+    const qd_expr *T = qd_model_kinetic(m), *V = qd_model_potential(m), *U = qd_model_gen_potential(m);
+    if (!T || qd_model_lagrangian_given(m))
+        return QD_OK;
+    const qd_expr *E = qd_add(ctx, T, V ? V : qd_int(ctx, 0));
+    if (U) {
+        const qd_expr **zero = arr(e->n);
+        if (!zero)
+            return QD_ERR_NOMEM;
+        for (size_t j = 0; j < e->n; j++)
+            zero[j] = qd_int(ctx, 0);
+        E = qd_add(ctx, E, qd_subs(ctx, U, e->n, e->qd, zero));
+        free(zero);
+    }
+    h->H_minus_E = qd_simplify(ctx, qd_sub(ctx, h->H, qd_subs(ctx, E, e->n, e->qd, h->vel)));
+    if (!h->H_minus_E)
+        return qd_ctx_status(ctx);
+    h->is_energy = qd_is_zero(h->H_minus_E);
+    return QD_OK;
+}
+
+static qd_status derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
+    qd_status st = momenta(ctx, e, h);
+    if (st == QD_OK)
+        st = velocities(ctx, e, h);
+    if (st == QD_OK)
+        st = hamiltonian(ctx, e, h);
+    if (st == QD_OK)
+        st = equations(ctx, m, e, h);
+    if (st == QD_OK)
+        st = energy(ctx, m, e, h);
+    return st;
+}
+
+qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    if (!ctx || !m || !e)
+        return NULL;
+    if (e->ncon || e->nelim) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "Hamilton's equations with constraints are not supported yet");
+        return NULL;
+    }
+    qd_ham *h = ham_alloc(e->n);
+    if (!h) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Hamiltonian");
+        return NULL;
+    }
+    h->q = e->q;
+    qd_status st = derive(ctx, m, e, h);
+    if (st != QD_OK) {
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "forming the Hamiltonian failed");
+        qd_ham_free(h);
+        return NULL;
+    }
+    return h;
+}

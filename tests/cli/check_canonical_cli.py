@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""Tests of `qdot bracket` and `qdot canonical`, run against the built program.
+
+    python3 tests/cli/check_canonical_cli.py --build BUILD_DIR
+
+Expected values are textbook mathematics (Goldstein ch. 9): the angular
+momentum algebra [L_x, L_y] = L_z of a free particle; Q = q^(1/2) cos(2p),
+P = q^(1/2) sin(2p) canonical, while b = 1 scales [Q, P] to 1/2; the F2
+generator q*P is the identity with K = H.  Results are compared with SymPy
+where they are expressions.  Prints "N passed, N failed"; exit 1 on failure.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+import sympy as sp
+
+FREE = "coordinates x, y, z\nparameters m = 1\nparticle m at (x, y, z)\n"
+ONE = "coordinates q\nparameters m = 1, k = 2\nT = m/2*q'^2\nV = k/2*q^2\n"
+
+results = {"passed": 0, "failed": 0}
+
+
+def check(name, ok, detail=""):
+    results["passed" if ok else "failed"] += 1
+    if not ok:
+        print(f"FAIL {name} {detail}")
+
+
+def run(qdot, *args):
+    p = subprocess.run([qdot, *args], capture_output=True, text=True, timeout=60)
+    return p.returncode, p.stdout, p.stderr
+
+
+def same(a, b, names):
+    syms = {n: sp.Symbol(n) for n in names}
+    return sp.simplify(sp.sympify(a.replace("^", "**"), locals=syms)
+                       - sp.sympify(b, locals=syms)) == 0
+
+
+def test_bracket(qdot, free):
+    names = ["x", "y", "z", "p_x", "p_y", "p_z", "m"]
+    Lx, Ly, Lz = "y*p_z - z*p_y", "z*p_x - x*p_z", "x*p_y - y*p_x"
+    rc, out, err = run(qdot, "bracket", free, Lx, Ly, "--format", "json")
+    check("bracket rc", rc == 0, err)
+    if rc == 0:
+        check("[Lx, Ly] = Lz", same(json.loads(out)["bracket"], Lz, names), out)
+    rc, out, err = run(qdot, "bracket", free, "x", "p_x")
+    check("[x, p_x] = 1", rc == 0 and out.strip().endswith("= 1"), out + err)
+    # Poisson's theorem: Lx, Ly integrals, so their bracket is one: d/dt Lz = 0
+    rc, out, err = run(qdot, "bracket", free, "--dt", Lz, "--format", "json")
+    check("dLz/dt = 0", rc == 0 and same(json.loads(out)["dF_dt"], "0", names), out + err)
+    # d/dt (x p_x) = [x p_x, p^2/2m] = p_x^2/m
+    rc, out, err = run(qdot, "bracket", free, "--dt", "x*p_x", "--format", "json")
+    check("d(x p_x)/dt", rc == 0 and same(json.loads(out)["dF_dt"], "p_x**2/m", names), out + err)
+    rc, out, err = run(qdot, "bracket", free, "w*x", "p_x")
+    check("unknown name exit 2", rc == 2 and "unknown name" in err, err)
+    rc, out, err = run(qdot, "bracket", free, "x'", "p_x")
+    check("velocity exit 2", rc == 2 and "velocity" in err, err)
+
+
+def verdict(qdot, one, Q, P):
+    rc, out, err = run(qdot, "canonical", one, "--Q", Q, "--P", P, "--format", "json")
+    return rc, (json.loads(out) if rc == 0 else err)
+
+
+def test_canonical(qdot, one, free):
+    rc, v = verdict(qdot, one, "q^(1/2)*cos(2*p_q)", "q^(1/2)*sin(2*p_q)")
+    check("a=1/2 b=2 canonical", rc == 0 and v["verdict"] == "canonical", str(v))
+    rc, v = verdict(qdot, one, "q^(1/2)*cos(p_q)", "q^(1/2)*sin(p_q)")
+    check("b=1 scaled 1/2", rc == 0 and v["verdict"] == "scaled"
+          and same(v["scale"], "1/2", []), str(v))
+    rc, v = verdict(qdot, one, "q*cos(2*p_q)", "q*sin(2*p_q)")
+    check("a=1 not canonical", rc == 0 and v["verdict"] == "not canonical"
+          and v["bracket"] == "[Q, P]" and same(v["value"], "2*q", ["q"]), str(v))
+    rc, out, err = run(qdot, "canonical", one, "--Q", "q*cos(2*p_q)", "--P", "q*sin(2*p_q)")
+    check("text verdict", rc == 0 and out.startswith("not canonical: [Q, P] = "), out + err)
+    # linear map Q = A q, P = B p canonical iff B = (A^-1)^T
+    rc, out, err = run(qdot, "canonical", free, "--Q", "x + y, y, z",
+                       "--P", "p_x, p_y - p_x, p_z", "--format", "json")
+    check("linear map canonical", rc == 0 and json.loads(out)["verdict"] == "canonical", out + err)
+    rc, out, err = run(qdot, "canonical", free, "--Q", "x + y, y, z",
+                       "--P", "p_x, p_y + p_x, p_z", "--format", "json")
+    check("linear map not canonical", rc == 0
+          and json.loads(out)["verdict"] == "not canonical", out + err)
+    rc, out, err = run(qdot, "canonical", one, "--Q", "q")
+    check("missing --P exit 2", rc == 2 and "--P is missing" in err, err)
+    rc, out, err = run(qdot, "canonical", one, "--Q", "q, p_q", "--P", "p_q")
+    check("wrong count exit 2", rc == 2 and "needs 1" in err, err)
+    rc, out, err = run(qdot, "canonical", one, "--Q", "zz*q", "--P", "p_q")
+    check("unknown name in --Q exit 2", rc == 2 and "unknown name" in err, err)
+
+
+def test_generator(qdot, one):
+    names = ["q", "p_q", "Q", "P", "m", "k"]
+    rc, out, err = run(qdot, "canonical", one, "--generator", "F2", "q*P", "--format", "json")
+    ok = rc == 0
+    g = json.loads(out) if ok else {}
+    check("F2 identity", ok and same(g["Q"], "q", names) and same(g["P"], "p_q", names), out + err)
+    check("F2 K = H", ok and same(g["K_new"], "P**2/(2*m) + k*Q**2/2", names), out)
+    # F2 = q*P + t*P: Q = q + t, P = p, K = H + P
+    rc, out, err = run(qdot, "canonical", one, "--generator", "F2", "q*P + t*P", "--format", "json")
+    ok = rc == 0
+    g = json.loads(out) if ok else {}
+    check("F2 time-dependent", ok and same(g["Q"], "q + t", names + ["t"])
+          and same(g["K_old"], "p_q**2/(2*m) + k*q**2/2 + p_q", names), out + err)
+    rc, out, err = run(qdot, "canonical", one, "--generator", "F7", "q*P")
+    check("bad generator type exit 2", rc == 2, err)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", required=True)
+    qdot = os.path.join(ap.parse_args().build, "qdot")
+    with tempfile.TemporaryDirectory() as d:
+        free, one = os.path.join(d, "free.qd"), os.path.join(d, "one.qd")
+        with open(free, "w") as f:
+            f.write(FREE)
+        with open(one, "w") as f:
+            f.write(ONE)
+        test_bracket(qdot, free)
+        test_canonical(qdot, one, free)
+        test_generator(qdot, one)
+    print(f"{results['passed']} passed, {results['failed']} failed")
+    return 1 if results["failed"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
