@@ -28,6 +28,12 @@ void qd_diag_error(const char *fmt, ...)
 void qd_diag_read(const char *file, const char *text, const qd_read_error *err);
 int qd_diag_ctx(const qd_ctx *ctx); /* prints the context's error, returns the exit status */
 
+/* FILE and options (args.c): every argument starting with '-' goes to opt,
+ * which may take a value by advancing *i; exactly one other is the FILE. */
+typedef int (*qd_cli_option)(int argc, char **argv, int *i, void *data);
+int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
+                     const char **file, qd_cli_option opt, void *data);
+
 /* Parse "--format NAME" values; false for an unknown name. */
 bool qd_cli_format(const char *name, qd_format *out);
 

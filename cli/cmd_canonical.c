@@ -42,7 +42,8 @@ static const char *option(int argc, char **argv, int *i, const char *opt) {
     return argv[++*i];
 }
 
-static int parse_option(int argc, char **argv, int *i, can_args *a) {
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    can_args *a = data;
     const char *v;
     if ((v = option(argc, argv, i, "--Q")) && !a->Q)
         a->Q = v;
@@ -62,24 +63,13 @@ static int parse_option(int argc, char **argv, int *i, can_args *a) {
 
 static int parse_args(int argc, char **argv, can_args *a) {
     *a = (can_args){0};
-    for (int i = 0; i < argc; i++) {
-        int rc = QD_EXIT_OK;
-        if (argv[i][0] == '-' && argv[i][1])
-            rc = parse_option(argc, argv, &i, a);
-        else if (!a->file)
-            a->file = argv[i];
-        else {
-            qd_diag_error("'canonical' takes one FILE; unexpected '%s'\n%s", argv[i], usage_text);
-            rc = QD_EXIT_USAGE;
-        }
-        if (rc != QD_EXIT_OK)
-            return rc;
-    }
-    const char *why = !a->file                     ? "FILE is missing"
-                      : a->gen && (a->Q || a->P)   ? "give either --Q and --P or --generator"
-                      : !a->gen && !a->Q           ? "--Q is missing"
-                      : !a->gen && !a->P           ? "--P is missing"
-                                                   : NULL;
+    int rc = qd_cli_file_args(argc, argv, "canonical", usage_text, &a->file, parse_option, a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    const char *why = a->gen && (a->Q || a->P) ? "give either --Q and --P or --generator"
+                      : !a->gen && !a->Q       ? "--Q is missing"
+                      : !a->gen && !a->P       ? "--P is missing"
+                                               : NULL;
     if (why) {
         qd_diag_error("%s\n%s", why, usage_text);
         return QD_EXIT_USAGE;

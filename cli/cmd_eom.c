@@ -63,7 +63,8 @@ static const char *option(int argc, char **argv, int *i, const char *opt) {
     return argv[++*i];
 }
 
-static int parse_option(int argc, char **argv, int *i, eom_args *a) {
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    eom_args *a = data;
     const char *v;
     if (!strcmp(argv[*i], "--solve")) {
         a->solve = true;
@@ -95,23 +96,7 @@ static int parse_option(int argc, char **argv, int *i, eom_args *a) {
 
 static int parse_args(int argc, char **argv, eom_args *a) {
     *a = (eom_args){.fmt = QD_EOM_TEXT};
-    for (int i = 0; i < argc; i++) {
-        if (argv[i][0] == '-' && argv[i][1]) {
-            int rc = parse_option(argc, argv, &i, a);
-            if (rc != QD_EXIT_OK)
-                return rc;
-        } else if (!a->file) {
-            a->file = argv[i];
-        } else {
-            qd_diag_error("'eom' takes one FILE; unexpected '%s'\n%s", argv[i], usage_text);
-            return QD_EXIT_USAGE;
-        }
-    }
-    if (!a->file) {
-        qd_diag_error("%s", usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
+    return qd_cli_file_args(argc, argv, "eom", usage_text, &a->file, parse_option, a);
 }
 
 /* --set: new parameter values in the model, and substitutions for the equations. */

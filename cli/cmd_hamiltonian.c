@@ -60,7 +60,8 @@ static int parse_format(const char *v, ham_fmt *f) {
     return QD_EXIT_USAGE;
 }
 
-static int parse_option(int argc, char **argv, int *i, ham_run *r) {
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    ham_run *r = data;
     const char *v;
     if ((v = option(argc, argv, i, "--format")))
         return parse_format(v, &r->fmt);
@@ -77,23 +78,7 @@ static int parse_option(int argc, char **argv, int *i, ham_run *r) {
 }
 
 static int parse_args(int argc, char **argv, ham_run *r) {
-    for (int i = 0; i < argc; i++) {
-        if (argv[i][0] == '-' && argv[i][1]) {
-            int rc = parse_option(argc, argv, &i, r);
-            if (rc != QD_EXIT_OK)
-                return rc;
-        } else if (!r->file) {
-            r->file = argv[i];
-        } else {
-            qd_diag_error("'hamiltonian' takes one FILE; unexpected '%s'\n%s", argv[i], usage_text);
-            return QD_EXIT_USAGE;
-        }
-    }
-    if (!r->file) {
-        qd_diag_error("%s", usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
+    return qd_cli_file_args(argc, argv, "hamiltonian", usage_text, &r->file, parse_option, r);
 }
 
 static int apply_sets(ham_run *r) {

@@ -1,0 +1,27 @@
+/*
+ * cli/args.c - the argument loop the commands on a model file share:
+ * one FILE, and options handed to the command's own parser.
+ */
+#include "cli.h"
+
+int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
+                     const char **file, qd_cli_option opt, void *data) {
+    for (int i = 0; i < argc; i++) {
+        int rc = QD_EXIT_OK;
+        if (argv[i][0] == '-' && argv[i][1])
+            rc = opt(argc, argv, &i, data);
+        else if (!*file)
+            *file = argv[i];
+        else {
+            qd_diag_error("'%s' takes one FILE; unexpected '%s'\n%s", cmd, argv[i], usage);
+            rc = QD_EXIT_USAGE;
+        }
+        if (rc != QD_EXIT_OK)
+            return rc;
+    }
+    if (!*file) {
+        qd_diag_error("FILE is missing\n%s", usage);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
