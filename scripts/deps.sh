@@ -4,7 +4,7 @@
 # As root it runs apt-get; otherwise it prints the one line to run.
 set -e
 what=${1:-build}
-pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev"
+pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev liblapack-dev libsundials-dev"
 case $what in
   test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy" ;;
 esac
