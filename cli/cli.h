@@ -47,6 +47,14 @@ int qd_cmd_check(int argc, char **argv); /* cmd_check.c */
 int qd_cmd_hamiltonian(int argc, char **argv); /* cmd_hamiltonian.c */
 int qd_cmd_bracket(int argc, char **argv);   /* cmd_bracket.c */
 int qd_cmd_canonical(int argc, char **argv); /* cmd_canonical.c */
+int qd_cmd_routh(int argc, char **argv);      /* cmd_routh.c */
+int qd_cmd_integrals(int argc, char **argv);  /* cmd_integrals.c */
+int qd_cmd_simulate(int argc, char **argv);   /* cmd_simulate.c */
+int qd_cmd_poincare(int argc, char **argv);   /* cmd_poincare.c */
+int qd_cmd_codegen(int argc, char **argv);    /* cmd_codegen.c */
+int qd_cmd_equilibria(int argc, char **argv); /* cmd_equilibria.c */
+int qd_cmd_modes(int argc, char **argv);      /* cmd_modes.c */
+int qd_cmd_stability(int argc, char **argv);  /* cmd_stability.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the
  * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */

@@ -21,13 +21,25 @@ static const qd_cmd commands[] = {
     {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", qd_cmd_bracket},
     {"canonical", "FILE --Q ... --P ... | --generator", "canonical transformations, K = H + dF/dt",
      qd_cmd_canonical},
+    {"routh", "FILE --ignore Q[,Q...]", "the Routhian and the reduced equations", qd_cmd_routh},
+    {"integrals", "FILE", "integrals of motion: cyclic, Jacobi, Noether, proposed",
+     qd_cmd_integrals},
+    {"simulate", "FILE --t-end T [OPTIONS]", "integrate the motion; CSV or JSON", qd_cmd_simulate},
+    {"poincare", "FILE --section ... --n N", "a Poincare surface of section", qd_cmd_poincare},
+    {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", qd_cmd_codegen},
+    {"equilibria", "FILE [--near ...|--box ...]", "equilibria and their kind",
+     qd_cmd_equilibria},
+    {"modes", "FILE [--about ...]", "small oscillations: frequencies and mode shapes",
+     qd_cmd_modes},
+    {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
+     qd_cmd_stability},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
 static void usage(FILE *out) {
     fprintf(out, "usage: qdot COMMAND [ARGS]\n\ncommands:\n");
     for (size_t i = 0; i < NCOMMANDS; i++)
-        fprintf(out, "  %-9s %-32s %s\n", commands[i].name, commands[i].args, commands[i].summary);
+        fprintf(out, "  %-11s %-34s %s\n", commands[i].name, commands[i].args, commands[i].summary);
     fprintf(out, "\nformats (--format): text (default), latex, c, sympy; eom also json\n"
                  "eom options: --solve, --eliminate, --set NAME=VALUE, --at \"q=..., q'=..., t=...\"\n"
                  "Expressions use the model language's syntax: x^2*sin(q) + q'/2.\n"

@@ -13,6 +13,8 @@
 #include "mech.h"
 #include "canonical.h"
 #include "hamilton.h"
+#include "equilibria.h"
+#include "modes.h"
 
 #define QDOT_VERSION "0.1.0"
 

@@ -1,0 +1,504 @@
+/*
+ * cli/cmd_modes.c - `qdot modes FILE`: small oscillations about an
+ * equilibrium (or any point at rest given with --about).  libqdot
+ * linearizes (qd_linear_about: M0 q'' + (C0 + G0) q' + K0 q = 0) and solves
+ * the eigenproblem (qd_modes_solve: K0 a = w^2 M0 a, or the state-space
+ * eigenvalues when there is damping or a gyroscopic term); with 1 or 2
+ * degrees of freedom about an exact equilibrium, w^2 is also printed as an
+ * expression of the parameters.  --initial gives the motion from initial
+ * values through the normal coordinates Q = a^T M0 (q - q0).
+ */
+#include "linear_cli.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "json.h"
+
+static const double PI = 3.14159265358979323846;
+
+typedef struct modes_args {
+    const char *file, *about, *initial;
+    long at_eq;   /* 1-based; 0: the first minimum, else the first */
+    const char *sets[QD_LIN_MAX_SETS];
+    size_t nsets;
+    bool json;
+} modes_args;
+
+typedef struct modes_run {
+    qd_lin_run lr;
+    qd_equilibria eq;
+    const qd_equilibrium *pt;   /* NULL with --about */
+    double *q0;
+    qd_linear lin;
+    qd_modes_result res;
+    const qd_expr *w2sym[2];
+    bool have_sym;
+    double residual;
+    double *Q, *Qd;             /* --initial: normal coordinates at t = 0 */
+} modes_run;
+
+static const char usage_text[] =
+    "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
+    "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--set NAME=VALUE]... [--format text|json]";
+
+static const char *option(int argc, char **argv, int *i, const char *opt) {
+    size_t len = strlen(opt);
+    if (strncmp(argv[*i], opt, len))
+        return NULL;
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (argv[*i][len] || *i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
+}
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    modes_args *a = data;
+    const char *v;
+    if ((v = option(argc, argv, i, "--format"))) {
+        if (strcmp(v, "text") && strcmp(v, "json")) {
+            qd_diag_error("--format takes text or json, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+        a->json = !strcmp(v, "json");
+    } else if ((v = option(argc, argv, i, "--at-equilibrium"))) {
+        char *end;
+        a->at_eq = strtol(v, &end, 10);
+        if (*end || a->at_eq < 1) {
+            qd_diag_error("--at-equilibrium takes a number 1, 2, ... (as `qdot equilibria` "
+                          "lists them), not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+    } else if ((v = option(argc, argv, i, "--about"))) {
+        a->about = v;
+    } else if ((v = option(argc, argv, i, "--initial"))) {
+        a->initial = v;
+    } else if ((v = option(argc, argv, i, "--set"))) {
+        if (a->nsets == QD_LIN_MAX_SETS) {
+            qd_diag_error("at most %d --set options", QD_LIN_MAX_SETS);
+            return QD_EXIT_USAGE;
+        }
+        a->sets[a->nsets++] = v;
+    } else {
+        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int choose_point(modes_run *r, const modes_args *a) {
+    size_t n = r->lr.e->n;
+    r->q0 = calloc(n + 1, sizeof *r->q0);
+    if (!r->q0)
+        return QD_EXIT_FAIL;
+    if (a->about)
+        return qd_lin_coords(&r->lr, "--about", a->about, r->q0);
+    int rc = qd_lin_equilibria(&r->lr, NULL, NULL, &r->eq);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (r->eq.count == 0) {
+        qd_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
+                      "--about");
+        return QD_EXIT_FAIL;
+    }
+    size_t k = 0;
+    if (a->at_eq) {
+        if ((size_t)a->at_eq > r->eq.count) {
+            qd_diag_error("--at-equilibrium %ld: there are %zu equilibria", a->at_eq, r->eq.count);
+            return QD_EXIT_USAGE;
+        }
+        k = (size_t)a->at_eq - 1;
+    } else {
+        while (k < r->eq.count && r->eq.pts[k].kind != QD_EQ_MINIMUM)
+            k++;
+        if (k == r->eq.count)
+            k = 0;
+    }
+    r->pt = &r->eq.pts[k];
+    memcpy(r->q0, r->pt->q, n * sizeof *r->q0);
+    return QD_EXIT_OK;
+}
+
+/* The state at q0, at rest; the residual of the equations there. */
+static int linearize(modes_run *r) {
+    qd_lin_run *lr = &r->lr;
+    size_t n = lr->e->n;
+    for (size_t j = 0; j < n; j++) {
+        lr->st.vals[j] = r->q0[j];
+        lr->st.vals[n + j] = 0;
+    }
+    double *f = calloc(n + 1, sizeof *f), *M = calloc(n * n + 1, sizeof *M);
+    if (f && M && qd_eom_eval(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals, M, f, NULL,
+                              NULL, NULL) == QD_OK)
+        for (size_t j = 0; j < n; j++)
+            r->residual = fmax(r->residual, fabs(f[j]));
+    qd_ctx_clear_error(lr->ctx);
+    free(f);
+    free(M);
+    if (qd_linear_about(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
+                        &r->lin) != QD_OK ||
+        qd_modes_solve(lr->ctx, &r->lin, &r->res) != QD_OK) {
+        qd_diag_error("%s", qd_ctx_message(lr->ctx));
+        return QD_EXIT_FAIL;
+    }
+    if (r->pt && r->pt->exact && n <= 2 && r->res.conservative) {
+        const qd_expr *K[4], *Mx[4];
+        if (qd_linear_symbolic(lr->ctx, lr->e, r->pt->exact, K, Mx) == QD_OK &&
+            qd_modes_symbolic_omega2(lr->ctx, n, K, Mx, r->w2sym) == QD_OK)
+            r->have_sym = true;
+        qd_ctx_clear_error(lr->ctx);
+    }
+    return QD_EXIT_OK;
+}
+
+static int initial(modes_run *r, const char *text) {
+    qd_lin_run *lr = &r->lr;
+    size_t n = lr->e->n;
+    if (!r->res.conservative) {
+        qd_diag_error("--initial: the motion through normal coordinates needs a conservative "
+                      "system without gyroscopic terms");
+        return QD_EXIT_USAGE;
+    }
+    qd_state s;
+    int rc = qd_state_init(lr->ctx, lr->mf.model, &s);
+    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++)
+        s.vals[j] = r->q0[j];
+    if (rc == QD_EXIT_OK)
+        rc = qd_state_parse(lr->ctx, lr->mf.model, text, &s);
+    r->Q = calloc(n + 1, sizeof *r->Q);
+    r->Qd = calloc(n + 1, sizeof *r->Qd);
+    if (rc == QD_EXIT_OK && (!r->Q || !r->Qd))
+        rc = QD_EXIT_FAIL;
+    /* Q_j = a_j^T M0 (q - q0) */
+    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++)
+        for (size_t i = 0; i < n; i++)
+            for (size_t k = 0; k < n; k++) {
+                double w = r->res.shapes[i * n + j] * r->lin.M[i * n + k];
+                r->Q[j] += w * (s.vals[k] - r->q0[k]);
+                r->Qd[j] += w * s.vals[n + k];
+            }
+    qd_state_free(&s);
+    return rc;
+}
+
+/* ---- text ------------------------------------------------------------------ */
+
+static void put_matrix(qd_buf *b, const char *name, size_t n, const double *A) {
+    qd_buf_printf(b, "%s = [", name);
+    for (size_t i = 0; i < n; i++) {
+        qd_buf_puts(b, i ? ", [" : "[");
+        for (size_t j = 0; j < n; j++) {
+            qd_buf_puts(b, j ? ", " : "");
+            qd_state_put_double(b, fabs(A[i * n + j]) < 1e-14 ? 0 : A[i * n + j]);
+        }
+        qd_buf_puts(b, "]");
+    }
+    qd_buf_puts(b, "]\n");
+}
+
+static bool all_zero(size_t nn, const double *A) {
+    for (size_t i = 0; i < nn; i++)
+        if (A[i] != 0)
+            return false;
+    return true;
+}
+
+static size_t multiplicity(const qd_modes_result *res, size_t j) {
+    size_t c = 0;
+    double big = 0;
+    for (size_t k = 0; k < res->n; k++)
+        big = fmax(big, fabs(res->omega2[k]));
+    for (size_t k = 0; k < res->n; k++)
+        if (fabs(res->omega2[k] - res->omega2[j]) <= 1e-7 * big)
+            c++;
+    return c;
+}
+
+static void put_point(modes_run *r, qd_buf *b) {
+    const qd_eom *e = r->lr.e;
+    qd_buf_puts(b, r->pt ? "equilibrium: " : "about: ");
+    for (size_t j = 0; j < e->n; j++) {
+        qd_buf_printf(b, "%s%s = ", j ? ", " : "", qd_expr_name(e->q[j]));
+        if (r->pt)
+            qd_lin_put_value(&r->lr, r->pt, j, b);
+        else
+            qd_state_put_double(b, r->q0[j]);
+    }
+    if (r->pt)
+        qd_buf_printf(b, " (%s of the potential)", qd_eq_kind_name(r->pt->kind));
+    qd_buf_printf(b, "\n");
+    if (r->residual > 1e-8)
+        qd_buf_printf(b, "note: not an equilibrium: the generalized forces at rest are %.3g "
+                         "there; the linearization drops them\n", r->residual);
+}
+
+static void put_conservative(modes_run *r, qd_buf *b) {
+    const qd_eom *e = r->lr.e;
+    const qd_modes_result *res = &r->res;
+    size_t n = res->n;
+    qd_buf_puts(b, "conservative, no gyroscopic terms: K0 a = w^2 M0 a, a^T M0 a = 1\n");
+    for (size_t j = 0; j < n; j++) {
+        double w2 = res->omega2[j], w = sqrt(fabs(w2));
+        qd_buf_printf(b, "mode %zu: w^2 = ", j + 1);
+        qd_state_put_double(b, w2);
+        if (w2 > 0)
+            qd_buf_printf(b, ", w = %.10g rad/s, period = %.10g s", w, 2 * PI / w);
+        else if (w2 == 0)
+            qd_buf_puts(b, ", zero frequency (neutral: the normal coordinate drifts, Q(0) + "
+                           "Q'(0) t)");
+        else
+            qd_buf_printf(b, ", unstable direction: growth rate %.10g 1/s", w);
+        size_t mult = multiplicity(res, j);
+        if (mult > 1)
+            qd_buf_printf(b, " [repeated x%zu: the shapes are one M0-orthonormal basis of the "
+                             "eigenspace]", mult);
+        qd_buf_puts(b, "\n  shape: ");
+        for (size_t i = 0; i < n; i++) {
+            qd_buf_printf(b, "%s%s = ", i ? ", " : "", qd_expr_name(e->q[i]));
+            double v = res->shapes[i * n + j];
+            qd_state_put_double(b, fabs(v) < 1e-13 ? 0 : v);
+        }
+        qd_buf_puts(b, "\n");
+    }
+    if (r->have_sym) {
+        for (size_t j = 0; j < n; j++) {
+            qd_buf_printf(b, "w^2 (exact, mode %zu) = ", j + 1);
+            qd_print(r->lr.ctx, r->w2sym[j], QD_FMT_TEXT, b);
+            qd_buf_puts(b, "\n");
+        }
+    }
+    qd_buf_puts(b, "normal coordinates: Q_j = a_j^T M0 (q - q0), Q_j'' + w_j^2 Q_j = 0\n");
+}
+
+static void put_solution(modes_run *r, qd_buf *b) {
+    const qd_eom *e = r->lr.e;
+    size_t n = e->n;
+    qd_buf_puts(b, "motion from the initial values: q(t) = q0 + sum_j a_j Q_j(t)\n");
+    for (size_t j = 0; j < n; j++) {
+        double w2 = r->res.omega2[j], w = sqrt(fabs(w2));
+        qd_buf_printf(b, "  Q_%zu(t) = ", j + 1);
+        if (w2 > 0)
+            qd_buf_printf(b, "%.10g*cos(%.10g*t) + %.10g*sin(%.10g*t)\n", r->Q[j], w, r->Qd[j] / w,
+                          w);
+        else if (w2 == 0)
+            qd_buf_printf(b, "%.10g + %.10g*t\n", r->Q[j], r->Qd[j]);
+        else
+            qd_buf_printf(b, "%.10g*cosh(%.10g*t) + %.10g*sinh(%.10g*t)\n", r->Q[j], w,
+                          r->Qd[j] / w, w);
+    }
+}
+
+static void put_state_space(modes_run *r, qd_buf *b) {
+    const qd_modes_result *res = &r->res;
+    qd_buf_puts(b, "damped or gyroscopic: state-space eigenvalues s of "
+                   "det(s^2 M0 + s (C0 + G0) + K0) = 0\n");
+    for (size_t i = 0; i < res->neig; i++) {
+        double re = res->eig_re[i], im = res->eig_im[i], mod = hypot(re, im);
+        qd_buf_printf(b, "  s = %.10g %s %.10gi", re, im < 0 ? "-" : "+", fabs(im));
+        if (mod > 0 && im > 0)
+            qd_buf_printf(b, "  (frequency %.10g rad/s, damping ratio %.6g)", im, -re / mod);
+        qd_buf_puts(b, "\n");
+    }
+}
+
+static const char *verdict(int s) {
+    return s == 1 ? "stable" : s == 0 ? "unstable" : "borderline";
+}
+
+static void put_text(modes_run *r, qd_buf *b) {
+    size_t n = r->lin.n;
+    put_point(r, b);
+    put_matrix(b, "M0", n, r->lin.M);
+    if (!all_zero(n * n, r->lin.C))
+        put_matrix(b, "C0", n, r->lin.C);
+    if (!all_zero(n * n, r->lin.G))
+        put_matrix(b, "G0", n, r->lin.G);
+    put_matrix(b, "K0", n, r->lin.K);
+    if (r->res.conservative)
+        put_conservative(r, b);
+    else
+        put_state_space(r, b);
+    if (r->Q)
+        put_solution(r, b);
+    qd_buf_printf(b, "%s", verdict(r->res.stable));
+    if (r->res.stable == -1)
+        qd_buf_puts(b, r->res.conservative ? " (zero-frequency modes: the linear test is not "
+                                             "decisive)" : " (roots on the imaginary axis that "
+                                                           "are zero or repeated)");
+    if (r->pt && r->pt->kind == QD_EQ_MAXIMUM && r->res.stable == 1)
+        qd_buf_puts(b, " (a maximum of the potential, stabilized by the gyroscopic terms)");
+    qd_buf_puts(b, "\n");
+}
+
+/* ---- json ------------------------------------------------------------------ */
+
+static void json_matrix(qd_json *j, const char *key, size_t n, const double *A) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < n; i++) {
+        qd_json_begin_array(j);
+        for (size_t k = 0; k < n; k++)
+            qd_json_number(j, A[i * n + k]);
+        qd_json_end_array(j);
+    }
+    qd_json_end_array(j);
+}
+
+/* The frequencies: w of every mode (conservative; unstable ones left out),
+ * or the positive imaginary parts of the state-space eigenvalues. */
+static void json_frequencies(modes_run *r, qd_json *j) {
+    const qd_modes_result *res = &r->res;
+    qd_json_key(j, "frequencies");
+    qd_json_begin_array(j);
+    if (res->conservative) {
+        for (size_t k = 0; k < res->n; k++)
+            if (res->omega2[k] >= 0)
+                qd_json_number(j, sqrt(res->omega2[k]));
+    } else {
+        double *w = malloc((res->neig + 1) * sizeof *w);
+        size_t nw = 0;
+        for (size_t k = 0; w && k < res->neig; k++)
+            if (res->eig_im[k] > 0)
+                w[nw++] = res->eig_im[k];
+        for (size_t a = 0; a < nw; a++)
+            for (size_t c = a + 1; c < nw; c++)
+                if (w[c] < w[a]) {
+                    double t = w[a];
+                    w[a] = w[c];
+                    w[c] = t;
+                }
+        for (size_t k = 0; k < nw; k++)
+            qd_json_number(j, w[k]);
+        free(w);
+    }
+    qd_json_end_array(j);
+}
+
+static void put_json(modes_run *r, qd_buf *b) {
+    const qd_eom *e = r->lr.e;
+    const qd_modes_result *res = &r->res;
+    size_t n = e->n;
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "equilibrium");
+    qd_json_begin_object(&j);
+    for (size_t k = 0; k < n; k++) {
+        qd_json_key(&j, qd_expr_name(e->q[k]));
+        qd_json_number(&j, r->q0[k]);
+    }
+    qd_json_end_object(&j);
+    qd_json_key(&j, "residual");
+    qd_json_number(&j, r->residual);
+    qd_json_key(&j, "conservative");
+    qd_json_bool(&j, res->conservative);
+    json_matrix(&j, "M", n, r->lin.M);
+    json_matrix(&j, "C", n, r->lin.C);
+    json_matrix(&j, "G", n, r->lin.G);
+    json_matrix(&j, "K", n, r->lin.K);
+    json_frequencies(r, &j);
+    qd_json_key(&j, "modes");
+    qd_json_begin_array(&j);
+    for (size_t k = 0; res->conservative && k < n; k++) {
+        double w2 = res->omega2[k];
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "omega2");
+        qd_json_number(&j, w2);
+        qd_json_key(&j, "omega");
+        if (w2 >= 0)
+            qd_json_number(&j, sqrt(w2));
+        else
+            qd_json_null(&j);
+        qd_json_key(&j, "period");
+        if (w2 > 0)
+            qd_json_number(&j, 2 * PI / sqrt(w2));
+        else
+            qd_json_null(&j);
+        qd_json_key(&j, "multiplicity");
+        qd_json_number(&j, (double)multiplicity(res, k));
+        qd_json_key(&j, "shape");
+        qd_json_begin_object(&j);
+        for (size_t i = 0; i < n; i++) {
+            qd_json_key(&j, qd_expr_name(e->q[i]));
+            qd_json_number(&j, res->shapes[i * n + k]);
+        }
+        qd_json_end_object(&j);
+        if (r->have_sym) {
+            qd_buf t = QD_BUF_INIT;
+            qd_print(r->lr.ctx, r->w2sym[k], QD_FMT_TEXT, &t);
+            qd_json_key(&j, "omega2_exact");
+            qd_json_string(&j, qd_buf_str(&t));
+            qd_buf_free(&t);
+        }
+        if (r->Q) {
+            qd_json_key(&j, "Q0");
+            qd_json_number(&j, r->Q[k]);
+            qd_json_key(&j, "Q0_dot");
+            qd_json_number(&j, r->Qd[k]);
+        }
+        qd_json_end_object(&j);
+    }
+    qd_json_end_array(&j);
+    qd_json_key(&j, "eigenvalues");
+    qd_json_begin_array(&j);
+    for (size_t k = 0; k < res->neig; k++) {
+        qd_json_begin_array(&j);
+        qd_json_number(&j, res->eig_re[k]);
+        qd_json_number(&j, res->eig_im[k]);
+        qd_json_end_array(&j);
+    }
+    qd_json_end_array(&j);
+    qd_json_key(&j, "stable");
+    if (res->stable == -1)
+        qd_json_null(&j);
+    else
+        qd_json_bool(&j, res->stable == 1);
+    qd_json_key(&j, "verdict");
+    qd_json_string(&j, verdict(res->stable));
+    qd_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+}
+
+int qd_cmd_modes(int argc, char **argv) {
+    modes_args a = {0};
+    int rc = qd_cli_file_args(argc, argv, "modes", usage_text, &a.file, parse_option, &a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (a.about && a.at_eq) {
+        qd_diag_error("give either --at-equilibrium or --about, not both\n%s", usage_text);
+        return QD_EXIT_USAGE;
+    }
+    modes_run r = {.lr = {.ctx = qd_ctx_new()}};
+    if (!r.lr.ctx) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = qd_lin_load(&r.lr, a.file, a.sets, a.nsets);
+    if (rc == QD_EXIT_OK)
+        rc = choose_point(&r, &a);
+    if (rc == QD_EXIT_OK)
+        rc = linearize(&r);
+    if (rc == QD_EXIT_OK && a.initial)
+        rc = initial(&r, a.initial);
+    if (rc == QD_EXIT_OK) {
+        qd_buf b = QD_BUF_INIT;
+        (a.json ? put_json : put_text)(&r, &b);
+        if (b.failed) {
+            qd_diag_error("cannot print the modes");
+            rc = QD_EXIT_FAIL;
+        } else {
+            fputs(qd_buf_str(&b), stdout);
+        }
+        qd_buf_free(&b);
+    }
+    free(r.q0);
+    free(r.Q);
+    free(r.Qd);
+    qd_linear_free(&r.lin);
+    qd_modes_result_free(&r.res);
+    qd_equilibria_free(&r.eq);
+    qd_lin_free(&r.lr);
+    qd_ctx_free(r.lr.ctx);
+    return rc;
+}

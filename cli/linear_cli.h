@@ -1,0 +1,37 @@
+/*
+ * cli/linear_cli.h - what `qdot equilibria` and `qdot modes` share: a model
+ * loaded with its --set values, its equations derived (holonomic
+ * constraints eliminated), the state of the parameters, and the --near /
+ * --box / --about lists read against the coordinates.
+ */
+#ifndef QDOT_CLI_LINEAR_CLI_H
+#define QDOT_CLI_LINEAR_CLI_H
+
+#include "cli.h"
+#include "model_file.h"
+#include "qdot/equilibria.h"
+#include "qdot/modes.h"
+#include "state.h"
+
+#define QD_LIN_MAX_SETS 64
+
+typedef struct qd_lin_run {
+    qd_ctx *ctx;
+    qd_model_file mf;
+    qd_eom *e;
+    qd_state st;       /* coordinates 0, parameters at their values */
+} qd_lin_run;
+
+/* Load FILE, apply the --set list, derive, fill the state. */
+int qd_lin_load(qd_lin_run *r, const char *file, const char *const *sets, size_t nsets);
+void qd_lin_free(qd_lin_run *r);
+/* "q1=VALUE, ..." (what: "--near"): n coordinate values (unnamed ones 0). */
+int qd_lin_coords(qd_lin_run *r, const char *what, const char *text, double *q);
+/* "q1=A..B, ...": the box; unnamed coordinates keep lo/hi as given. */
+int qd_lin_box(qd_lin_run *r, const char *text, double *lo, double *hi);
+/* Equilibria with the options (near, box may be NULL). */
+int qd_lin_equilibria(qd_lin_run *r, const char *near, const char *box, qd_equilibria *out);
+/* One exact or numeric coordinate value, as text. */
+void qd_lin_put_value(qd_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b);
+
+#endif

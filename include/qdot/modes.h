@@ -1,0 +1,107 @@
+/*
+ * qdot/modes.h - small oscillations: the linearization of Lagrange's
+ * equations about a state and its eigen-analysis.
+ *
+ * About a point q0 at rest (q' = 0; an equilibrium, or a steady motion
+ * written in coordinates where it is at rest), with x = q - q0,
+ *
+ *     M0 x'' + (C0 + G0) x' + K0 x = 0,
+ *
+ *   M0 = M(q0)                  the mass matrix (d^2 T2 / dq'_j dq'_k),
+ *   C0 = d^2 D / dq'_j dq'_k    symmetric damping, from Rayleigh's D,
+ *   G0 = skew part of d/dq'_k (-f_j) at rest: gyroscopic, from T1 and from
+ *        the velocity-linear part of U (G0_jk = d(dL1/dq'_j)/dq_k -
+ *        d(dL1/dq'_k)/dq_j with L1 the velocity-linear part of L),
+ *   K0 = -df_j/dq_k at rest     the Hessian of V - T0 (+ the velocity-free
+ *        part of U) minus dQ_j/dq_k.
+ *
+ * Every entry is an exact symbolic second derivative evaluated at the point:
+ * with q' = 0, f_j(q, 0) is the generalized force at rest, so K0 = -df/dq
+ * and C0 + G0 = -df/dq' (its symmetric and skew parts).  The symmetric part
+ * of -df/dq' is C0 and its skew part G0 (for a Lagrangian system the
+ * symmetric part comes only from D, up to a term vanishing at rest).
+ */
+#ifndef QDOT_MODES_H
+#define QDOT_MODES_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "mech.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The linearization about a state: M q'' + (C + G) q' + K q = 0 (n*n
+ * row-major numbers each, malloc'd; qd_linear_free). */
+typedef struct qd_linear {
+    size_t n;
+    double *M, *C, *G, *K;
+} qd_linear;
+
+/* The eigen-analysis of a qd_linear.
+ *
+ * Conservative (C = 0 and G = 0, to 1e-12 relative): K a = w^2 M a solved by
+ * LAPACK dsygvd; omega2 ascending, shapes column j = mode j with
+ * a^T M a = 1.  w^2 < 0 is an unstable direction.
+ *
+ * Otherwise the 2n eigenvalues s of the state-space system
+ *     [0 I; -M^-1 K  -M^-1 (C + G)]
+ * (dgeev; dggev on the pencil when M is ill-conditioned).  omega2 and shapes
+ * are NULL then.  The state-space eigenvalues are filled in both cases
+ * (conservative: s = +-i w for w^2 >= 0, +-sqrt(-w^2) for w^2 < 0).
+ *
+ * stable: 1 when every motion stays bounded (conservative: every w^2 > 0;
+ * otherwise every Re s < 0, or Re s = 0 only on simple purely imaginary
+ * pairs of an undamped gyroscopic system), 0 when some motion grows
+ * exponentially (w^2 < 0, Re s > 0), -1 borderline: zero-frequency modes
+ * (w^2 = 0: the linear motion may drift), or repeated roots on the
+ * imaginary axis of a non-conservative system. */
+typedef struct qd_modes_result {
+    size_t n;
+    bool conservative;     /* C = 0 and G = 0 */
+    double *omega2;        /* n, ascending (conservative case), w^2 < 0 unstable */
+    double *shapes;        /* n*n, column j = mode j, a^T M a = 1 (row-major: shapes[i*n+j]) */
+    size_t neig;           /* 2n */
+    double *eig_re, *eig_im; /* state-space eigenvalues, sorted by Re descending then Im */
+    int stable;            /* 1 stable, 0 unstable, -1 borderline */
+} qd_modes_result;
+
+/* Relative size under which a w^2 (against the largest |w^2|) or a real
+ * part (against the largest |s|) counts as zero. */
+#define QD_MODES_ZERO_TOL 1e-9
+
+/* Linearize e (from qd_eom_derive on m) about the state syms/vals (as for
+ * qd_eom_eval: coordinates, t and parameters; velocities are taken as 0
+ * whatever vals says).  Models with constraints (multipliers) are
+ * QD_ERR_ARG: derive with eliminate, or choose independent coordinates.
+ * The symbolic derivatives are computed once per e and kept in a cache
+ * private to this call (each call recomputes them: cheap for small n). */
+qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                          const qd_expr *const *syms, const double *vals, qd_linear *out);
+
+/* Eigen-analysis of lin (see qd_modes_result).  QD_ERR_SINGULAR when M is
+ * not positive definite, QD_ERR_NUMERIC when LAPACK fails. */
+qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out);
+
+void qd_linear_free(qd_linear *l);
+void qd_modes_result_free(qd_modes_result *r);
+
+/* The symbolic stiffness and mass matrices at a point given symbolically:
+ * K_jk = -df_j/dq_k and M_jk with q = q0[j] (expressions, e.g. 0 or pi) and
+ * q' = 0, each simplified; parameters stay symbols.  Kout, Mout: n*n. */
+qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr *const *q0,
+                             const qd_expr **Kout, const qd_expr **Mout);
+
+/* For n = 1 or 2: the roots w^2 of det(K - w^2 M) = 0 as expressions in
+ * the parameters (n = 2: the quadratic's two roots, the one with the minus
+ * sign of the square root first), simplified.  QD_ERR_ARG for n > 2. */
+qd_status qd_modes_symbolic_omega2(qd_ctx *ctx, size_t n, const qd_expr *const *K,
+                                   const qd_expr *const *M, const qd_expr **w2);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

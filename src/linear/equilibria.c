@@ -1,0 +1,632 @@
+/*
+ * src/linear/equilibria.c - configurations of rest: exact where the
+ * equations come apart one unknown at a time, numerical otherwise, each
+ * classified by K = -dF/dq (qdot/equilibria.h has the method).
+ */
+#include "qdot/equilibria.h"
+
+#include "base/ptrmap.h"
+#include "linear.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const double PI = 3.14159265358979323846;
+
+/* Exact solutions beyond this many are not enumerated (the numeric search
+ * takes over). */
+#define MAX_EXACT 256
+
+const char *qd_eq_kind_name(qd_eq_kind k) {
+    switch (k) {
+    case QD_EQ_MINIMUM: return "minimum";
+    case QD_EQ_MAXIMUM: return "maximum";
+    case QD_EQ_SADDLE: return "saddle";
+    default: return "degenerate";
+    }
+}
+
+/* ---- which coordinates are angles ------------------------------------------ */
+
+static void mark_angles(const qd_expr *x, const qd_eom *e, bool *angle, qd_ptrmap *seen) {
+    if (!x || qd_ptrmap_has(seen, x))
+        return;
+    qd_ptrmap_put(seen, x, (void *)x);
+    if (qd_expr_kind(x) == QD_FUNC &&
+        (qd_expr_func(x) == QD_SIN || qd_expr_func(x) == QD_COS || qd_expr_func(x) == QD_TAN)) {
+        for (size_t j = 0; j < e->n; j++)
+            if (qd_has(qd_expr_arg(x, 0), e->q[j]))
+                angle[j] = true;
+        return;
+    }
+    for (size_t i = 0; i < qd_expr_nargs(x); i++)
+        mark_angles(qd_expr_arg(x, i), e, angle, seen);
+}
+
+qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
+                                    double *lo, double *hi) {
+    (void)ctx;
+    qd_ptrmap seen = QD_PTRMAP_INIT;
+    for (size_t j = 0; j < e->n; j++)
+        angle[j] = false;
+    for (size_t j = 0; j < e->n; j++)
+        mark_angles(e->f[j], e, angle, &seen);
+    mark_angles(e->L, e, angle, &seen);
+    if (m) {
+        mark_angles(qd_model_kinetic(m), e, angle, &seen);
+        mark_angles(qd_model_potential(m), e, angle, &seen);
+    }
+    qd_ptrmap_free(&seen);
+    for (size_t j = 0; lo && hi && j < e->n; j++) {
+        lo[j] = angle[j] ? -PI : -10;
+        hi[j] = angle[j] ? PI : 10;
+    }
+    return QD_OK;
+}
+
+/* ---- exact solutions ------------------------------------------------------- */
+
+typedef struct exact {
+    qd_ctx *ctx;
+    size_t n;
+    const qd_expr *const *q;
+    const bool *angle;
+    const qd_expr **val;        /* n: the current assignment */
+    const qd_expr **sols;       /* nsol * n */
+    size_t nsol;
+    bool failed;                /* the equations do not come apart: go numeric */
+    bool continuum;
+    const qd_expr *z;           /* a scratch symbol */
+} exact;
+
+static bool value_of(qd_ctx *ctx, const qd_expr *x, double *v) {
+    if (qd_eval(ctx, x, 0, NULL, NULL, v) != QD_OK) {
+        qd_ctx_clear_error(ctx);
+        return false;
+    }
+    return isfinite(*v);
+}
+
+/* The unknowns (unassigned coordinates) in x: how many, the last one. */
+static size_t unknowns(const exact *x, const qd_expr *e, size_t *which) {
+    size_t c = 0;
+    for (size_t j = 0; j < x->n; j++)
+        if (!x->val[j] && qd_has(e, x->q[j])) {
+            c++;
+            *which = j;
+        }
+    return c;
+}
+
+/* The factors of e that may vanish: a product's factors, a power's base
+ * (positive exponent); a negative power never vanishes. */
+static size_t factors(const qd_expr *e, const qd_expr **out, size_t cap) {
+    size_t nf = qd_expr_kind(e) == QD_MUL ? qd_expr_nargs(e) : 1, k = 0;
+    for (size_t i = 0; i < nf && k < cap; i++) {
+        const qd_expr *f = qd_expr_kind(e) == QD_MUL ? qd_expr_arg(e, i) : e;
+        if (qd_expr_kind(f) == QD_POW) {
+            const qd_expr *ex = qd_expr_arg(f, 1);
+            if (qd_is_number(ex) && qd_number_sign(ex) < 0)
+                continue;
+            f = qd_expr_arg(f, 0);
+        }
+        out[k++] = f;
+    }
+    return k;
+}
+
+/* Add root r (exact) when it is real, folding angles into (-pi, pi]. */
+static void push_root(exact *x, size_t u, const qd_expr *r, const qd_expr **roots, size_t *nr) {
+    double v;
+    if (!r || !value_of(x->ctx, r, &v) || *nr >= 16)
+        return;
+    if (x->angle[u]) {
+        while (v > PI + 1e-12) {
+            r = qd_simplify(x->ctx, qd_sub(x->ctx, r, qd_mul(x->ctx, qd_int(x->ctx, 2),
+                                                             qd_const(x->ctx, QD_PI))));
+            v -= 2 * PI;
+        }
+        while (v <= -PI + 1e-12) {
+            r = qd_simplify(x->ctx, qd_add(x->ctx, r, qd_mul(x->ctx, qd_int(x->ctx, 2),
+                                                             qd_const(x->ctx, QD_PI))));
+            v += 2 * PI;
+        }
+    }
+    for (size_t i = 0; i < *nr; i++) {
+        double w;
+        if (value_of(x->ctx, roots[i], &w) && fabs(w - v) <= 1e-12 * (1 + fabs(v)))
+            return;
+    }
+    roots[(*nr)++] = r;
+}
+
+/* Roots of c2 z^2 + c1 z + c0 (numbers), exact. */
+static size_t poly_roots(exact *x, const qd_expr *c0, const qd_expr *c1, const qd_expr *c2,
+                         const qd_expr **z) {
+    qd_ctx *ctx = x->ctx;
+    double a, b, c;
+    if (!value_of(ctx, c2, &a) || !value_of(ctx, c1, &b) || !value_of(ctx, c0, &c))
+        return SIZE_MAX;
+    if (a == 0 && b == 0)
+        return c == 0 ? SIZE_MAX : 0;
+    if (a == 0) {
+        z[0] = qd_simplify(ctx, qd_neg(ctx, qd_div(ctx, c0, c1)));
+        return 1;
+    }
+    double d = b * b - 4 * a * c;
+    if (d < -1e-13 * (b * b + fabs(4 * a * c)))
+        return 0;
+    const qd_expr *disc = qd_simplify(ctx, qd_sub(ctx, qd_mul(ctx, c1, c1),
+                                                  qd_mul(ctx, qd_int(ctx, 4), qd_mul(ctx, c2, c0))));
+    const qd_expr *den = qd_mul(ctx, qd_int(ctx, 2), c2);
+    if (fabs(d) <= 1e-13 * (b * b + fabs(4 * a * c))) {
+        z[0] = qd_simplify(ctx, qd_div(ctx, qd_neg(ctx, c1), den));
+        return 1;
+    }
+    const qd_expr *s = qd_sqrt(ctx, disc);
+    z[0] = qd_simplify(ctx, qd_div(ctx, qd_sub(ctx, qd_neg(ctx, c1), s), den));
+    z[1] = qd_simplify(ctx, qd_div(ctx, qd_add(ctx, qd_neg(ctx, c1), s), den));
+    return 2;
+}
+
+/* f as a polynomial of degree <= 2 in the node s (u must not remain). */
+static size_t roots_in(exact *x, const qd_expr *f, const qd_expr *s, const qd_expr *u,
+                       const qd_expr **z) {
+    qd_ctx *ctx = x->ctx;
+    const qd_expr *g = qd_expand(ctx, qd_subs(ctx, f, 1, &s, &x->z));
+    if (!g || qd_has(g, u))
+        return SIZE_MAX;
+    const qd_expr *c0 = qd_coeff(ctx, g, x->z, 0), *c1 = qd_coeff(ctx, g, x->z, 1),
+                  *c2 = qd_coeff(ctx, g, x->z, 2);
+    const qd_expr *back = qd_add_n(ctx, 3, (const qd_expr *[]){
+        c0, qd_mul(ctx, c1, x->z), qd_mul(ctx, c2, qd_mul(ctx, x->z, x->z))});
+    const qd_expr *diff = qd_expand(ctx, qd_sub(ctx, g, back));
+    if (!diff || !qd_is_zero(diff) || qd_has(c0, x->z) || qd_has(c1, x->z) || qd_has(c2, x->z))
+        return SIZE_MAX;
+    return poly_roots(x, c0, c1, c2, z);
+}
+
+static const qd_expr *inverse_trig(qd_ctx *ctx, qd_func f, const qd_expr *z, bool other) {
+    /* the branches the kernel does not fold itself */
+    long p, d;
+    const qd_expr *pi = qd_const(ctx, QD_PI);
+    if (qd_rational_get(z, &p, &d) && d == 1 && (p == 1 || p == -1)) {
+        if (f == QD_ASIN)
+            return qd_mul(ctx, qd_rat(ctx, p, 2), pi);
+        return p == 1 ? qd_int(ctx, 0) : pi;
+    }
+    const qd_expr *r = qd_simplify(ctx, qd_fn(ctx, f, z));
+    if (!other)
+        return r;
+    return f == QD_ASIN ? qd_simplify(ctx, qd_sub(ctx, pi, r)) : qd_simplify(ctx, qd_neg(ctx, r));
+}
+
+/* Roots of one factor in the unknown u; SIZE_MAX when it cannot be solved. */
+static size_t factor_roots(exact *x, const qd_expr *f, size_t u, const qd_expr **roots) {
+    qd_ctx *ctx = x->ctx;
+    const qd_expr *q = x->q[u], *z[2];
+    size_t nr = 0, k;
+    /* sin(a q + b), cos(a q + b) with numbers a, b */
+    if (qd_expr_kind(f) == QD_FUNC && (qd_expr_func(f) == QD_SIN || qd_expr_func(f) == QD_COS)) {
+        const qd_expr *arg = qd_expr_arg(f, 0), *a = qd_simplify(ctx, qd_diff(ctx, arg, q));
+        const qd_expr *zero = qd_int(ctx, 0);
+        const qd_expr *b = qd_simplify(ctx, qd_subs(ctx, arg, 1, &q, &zero));
+        double av, bv;
+        if (a && b && !qd_has(a, q) && value_of(ctx, a, &av) && av != 0 && value_of(ctx, b, &bv)) {
+            double off = qd_expr_func(f) == QD_COS ? 0.5 : 0;
+            long k0 = (long)floor(((-PI) * fabs(av) + bv) / PI - off) - 1;
+            long k1 = (long)ceil((PI * fabs(av) + bv) / PI - off) + 1;
+            for (long kk = k0; kk <= k1 && k1 - k0 < 64; kk++) {
+                const qd_expr *r = qd_div(ctx, qd_sub(ctx, qd_mul(ctx, qd_add(ctx, qd_int(ctx, kk),
+                                          qd_rat(ctx, off == 0 ? 0 : 1, 2)), qd_const(ctx, QD_PI)), b), a);
+                double v;
+                r = qd_simplify(ctx, r);
+                if (r && value_of(ctx, r, &v) && v > -PI + 1e-12 && v <= PI + 1e-12)
+                    push_root(x, u, r, roots, &nr);
+            }
+            return nr;
+        }
+    }
+    /* polynomial in q, in sin q or in cos q */
+    if ((k = roots_in(x, f, q, q, z)) != SIZE_MAX) {
+        for (size_t i = 0; i < k; i++)
+            push_root(x, u, z[i], roots, &nr);
+        return nr;
+    }
+    for (int trig = 0; trig < 2; trig++) {
+        qd_func fn = trig ? QD_COS : QD_SIN, inv = trig ? QD_ACOS : QD_ASIN;
+        if ((k = roots_in(x, f, qd_fn(ctx, fn, q), q, z)) == SIZE_MAX)
+            continue;
+        for (size_t i = 0; i < k; i++) {
+            double v;
+            if (!value_of(ctx, z[i], &v) || fabs(v) > 1 + 1e-14)
+                continue;
+            push_root(x, u, inverse_trig(ctx, inv, z[i], false), roots, &nr);
+            push_root(x, u, inverse_trig(ctx, inv, z[i], true), roots, &nr);
+        }
+        return nr;
+    }
+    return SIZE_MAX;
+}
+
+static void record(exact *x) {
+    if (x->nsol >= MAX_EXACT) {
+        x->failed = true;
+        return;
+    }
+    memcpy(x->sols + x->nsol * x->n, x->val, x->n * sizeof *x->val);
+    x->nsol++;
+}
+
+static void solve_rec(exact *x, const qd_expr **eqs, size_t neq);
+
+/* Try equation i: every factor in one unknown at most.  false when it does
+ * not qualify. */
+static bool branch_on(exact *x, const qd_expr **eqs, size_t neq, size_t i) {
+    const qd_expr *fs[32], *roots[16];
+    size_t nf = factors(eqs[i], fs, 32), var[32];
+    for (size_t k = 0; k < nf; k++) {
+        size_t u = SIZE_MAX, c = unknowns(x, fs[k], &u);
+        if (c > 1)
+            return false;
+        var[k] = c ? u : SIZE_MAX;
+    }
+    const qd_expr **rest = malloc((neq + 1) * sizeof *rest);
+    if (!rest) {
+        x->failed = true;
+        return true;
+    }
+    for (size_t k = 0; k < nf && !x->failed; k++) {
+        if (var[k] == SIZE_MAX)
+            continue;
+        size_t u = var[k], nr = factor_roots(x, fs[k], u, roots);
+        if (nr == SIZE_MAX) {
+            x->failed = true;
+            break;
+        }
+        for (size_t r = 0; r < nr && !x->failed; r++) {
+            x->val[u] = roots[r];
+            size_t m = 0;
+            for (size_t j = 0; j < neq; j++)
+                if (j != i)
+                    rest[m++] = qd_simplify(x->ctx, qd_subs(x->ctx, eqs[j], 1, &x->q[u], &roots[r]));
+            solve_rec(x, rest, m);
+            x->val[u] = NULL;
+        }
+    }
+    free(rest);
+    return true;
+}
+
+static void solve_rec(exact *x, const qd_expr **eqs, size_t neq) {
+    size_t live = 0, u;
+    const qd_expr **keep = malloc((neq + 1) * sizeof *keep);
+    if (!keep) {
+        x->failed = true;
+        return;
+    }
+    for (size_t i = 0; i < neq && !x->failed; i++) {
+        if (!eqs[i]) {
+            x->failed = true;
+        } else if (unknowns(x, eqs[i], &u) == 0) {
+            double v;
+            if (!value_of(x->ctx, eqs[i], &v))
+                x->failed = true;
+            else if (fabs(v) > 1e-9) /* inconsistent: no root on this branch */
+                live = SIZE_MAX;
+        } else if (live != SIZE_MAX) {
+            keep[live++] = eqs[i];
+        }
+        if (live == SIZE_MAX)
+            break;
+    }
+    if (!x->failed && live != SIZE_MAX) {
+        bool all = true;
+        for (size_t j = 0; j < x->n; j++)
+            all = all && x->val[j];
+        if (live == 0) {
+            if (all)
+                record(x);
+            else
+                x->failed = x->continuum = true;
+        } else {
+            bool done = false;
+            for (size_t i = 0; i < live && !done && !x->failed; i++)
+                done = branch_on(x, keep, live, i);
+            if (!done)
+                x->failed = true;
+        }
+    }
+    free(keep);
+}
+
+/* The exact attempt: sols (nsol * n) or false. */
+static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const qd__lin *L,
+                        const bool *angle, exact *x) {
+    size_t n = e->n, np = qd_model_nparams(m);
+    const qd_expr **from = malloc((np + 1) * sizeof *from), **to = malloc((np + 1) * sizeof *to);
+    const qd_expr **eqs = malloc((n + 1) * sizeof *eqs);
+    *x = (exact){.ctx = ctx, .n = n, .q = e->q, .angle = angle,
+                 .val = calloc(n + 1, sizeof *x->val),
+                 .sols = calloc(MAX_EXACT * n + 1, sizeof *x->sols),
+                 .z = qd_symbol(ctx, "qd__eq_z")};
+    bool ok = from && to && eqs && x->val && x->sols && x->z;
+    for (size_t i = 0; ok && i < np; i++) {
+        from[i] = qd_model_param(m, i);
+        to[i] = qd_model_param_value(m, i);
+        ok = to[i] != NULL;
+    }
+    for (size_t j = 0; ok && j < n; j++) {
+        eqs[j] = qd_simplify(ctx, qd_subs(ctx, L->F[j], np, from, to));
+        ok = eqs[j] && !qd_has(eqs[j], qd_time(ctx));
+    }
+    if (ok)
+        solve_rec(x, eqs, n);
+    ok = ok && !x->failed;
+    if (qd_ctx_status(ctx) != QD_OK && qd_ctx_status(ctx) != QD_ERR_NOMEM)
+        qd_ctx_clear_error(ctx);
+    free(from);
+    free(to);
+    free(eqs);
+    return ok;
+}
+
+/* ---- classification and assembly ------------------------------------------ */
+
+static qd_status classify(qd__lin *L, qd_equilibrium *p) {
+    size_t n = L->n;
+    double *K = malloc((n * n + 1) * sizeof *K), *w = malloc((n + 1) * sizeof *w);
+    if (!K || !w) {
+        free(K);
+        free(w);
+        return QD_ERR_NOMEM;
+    }
+    qd__lin_run(L, p->q);
+    const double *J = qd__lin_J(L);
+    double big = 0, asym = 0;
+    for (size_t i = 0; i < n * n; i++) {
+        K[i] = -J[i];
+        big = fmax(big, fabs(K[i]));
+    }
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++)
+            asym = fmax(asym, fabs(K[i * n + j] - K[j * n + i]));
+    p->symmetric = asym <= 1e-9 * big;
+    p->residual = 0;
+    for (size_t j = 0; j < n; j++)
+        p->residual = fmax(p->residual, fabs(qd__lin_F(L)[j]));
+    bool ok = qd__sym_eig(n, K, w, NULL);
+    double wmax = 0;
+    for (size_t j = 0; ok && j < n; j++)
+        wmax = fmax(wmax, fabs(w[j]));
+    p->npos = p->nneg = p->nzero = 0;
+    for (size_t j = 0; ok && j < n; j++) {
+        if (fabs(w[j]) <= 1e-9 * wmax || wmax == 0)
+            p->nzero++;
+        else if (w[j] > 0)
+            p->npos++;
+        else
+            p->nneg++;
+    }
+    p->kind = p->nzero ? QD_EQ_DEGENERATE
+            : p->nneg == 0 ? QD_EQ_MINIMUM
+            : p->npos == 0 ? QD_EQ_MAXIMUM : QD_EQ_SADDLE;
+    free(K);
+    free(w);
+    return ok ? QD_OK : QD_ERR_NUMERIC;
+}
+
+void qd_equilibria_free(qd_equilibria *r) {
+    if (!r)
+        return;
+    for (size_t i = 0; i < r->count; i++) {
+        free(r->pts[i].q);
+        free(r->pts[i].exact);
+    }
+    free(r->pts);
+    memset(r, 0, sizeof *r);
+}
+
+static size_t g_n; /* for the comparison below (single-threaded qsort) */
+static int by_q(const void *pa, const void *pb) {
+    const qd_equilibrium *a = pa, *b = pb;
+    for (size_t j = 0; j < g_n; j++) {
+        double d = a->q[j] - b->q[j];
+        if (fabs(d) > 1e-9 * (1 + fabs(a->q[j])))
+            return d < 0 ? -1 : 1;
+    }
+    return 0;
+}
+
+/* A null direction of J along which F stays 0: not an isolated root. */
+static bool on_continuum(qd__lin *L, const double *q, double ftol) {
+    size_t n = L->n;
+    double *w = malloc((n + 1) * sizeof *w), *v = malloc((n * n + 1) * sizeof *v);
+    double *JtJ = malloc((n * n + 1) * sizeof *JtJ), *t = malloc((n + 1) * sizeof *t);
+    bool cont = false;
+    if (w && v && JtJ && t) {
+        qd__lin_run(L, q);
+        const double *J = qd__lin_J(L);
+        for (size_t i = 0; i < n; i++)
+            for (size_t j = 0; j < n; j++) {
+                double s = 0;
+                for (size_t k = 0; k < n; k++)
+                    s += J[k * n + i] * J[k * n + j];
+                JtJ[i * n + j] = s;
+            }
+        if (qd__sym_eig(n, JtJ, w, v) && w[n - 1] > 0 && w[0] <= 1e-14 * w[n - 1]) {
+            double h = 1e-3 * (1 + fabs(q[0]));
+            for (size_t i = 0; i < n; i++)
+                t[i] = q[i] + h * v[i];
+            qd__lin_run(L, t);
+            double r = 0;
+            for (size_t i = 0; i < n; i++)
+                r = fmax(r, fabs(qd__lin_F(L)[i]));
+            cont = r <= 1e3 * ftol;
+        }
+    }
+    free(w);
+    free(v);
+    free(JtJ);
+    free(t);
+    return cont;
+}
+
+static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const exact *x,
+                          double ftol, qd_equilibria *out) {
+    size_t n = L->n, cnt = x ? x->nsol : roots->count;
+    out->pts = calloc(cnt + 1, sizeof *out->pts);
+    if (!out->pts)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < cnt; i++) {
+        qd_equilibrium *p = &out->pts[out->count++];
+        p->q = malloc((n + 1) * sizeof *p->q);
+        if (!p->q)
+            return QD_ERR_NOMEM;
+        if (x) {
+            p->exact = malloc((n + 1) * sizeof *p->exact);
+            if (!p->exact)
+                return QD_ERR_NOMEM;
+            for (size_t j = 0; j < n; j++) {
+                p->exact[j] = x->sols[i * n + j];
+                if (!value_of(ctx, p->exact[j], &p->q[j]))
+                    return QD_ERR_NUMERIC;
+            }
+        } else {
+            double res;
+            memcpy(p->q, roots->q + i * n, n * sizeof *p->q);
+            qd__lm_solve(L, p->q, 0, 8, &res); /* a few more steps: only improves */
+        }
+        qd_status st = classify(L, p);
+        if (st != QD_OK)
+            return st;
+        if (!out->continuum && p->nzero && on_continuum(L, p->q, ftol))
+            out->continuum = true;
+    }
+    g_n = n;
+    qsort(out->pts, out->count, sizeof *out->pts, by_q);
+    return QD_OK;
+}
+
+/* Exact roots must also be roots numerically: each is checked. */
+static bool exact_verified(qd_ctx *ctx, qd__lin *L, const exact *x, double ftol) {
+    size_t n = L->n;
+    double *q = malloc((n + 1) * sizeof *q);
+    bool ok = q != NULL;
+    for (size_t i = 0; ok && i < x->nsol; i++) {
+        for (size_t j = 0; ok && j < n; j++)
+            ok = value_of(ctx, x->sols[i * n + j], &q[j]);
+        qd__lin_run(L, q);
+        for (size_t j = 0; ok && j < n; j++)
+            ok = fabs(qd__lin_F(L)[j]) <= ftol;
+    }
+    free(q);
+    return ok;
+}
+
+qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                             const qd_expr *const *syms, const double *vals,
+                             const qd_equilibria_opts *opts, qd_equilibria *out) {
+    memset(out, 0, sizeof *out);
+    qd_equilibria_opts o = opts ? *opts : (qd_equilibria_opts){0};
+    size_t n = e->n;
+    out->n = n;
+    qd__lin L;
+    qd_status st = qd__lin_init(ctx, e, &L);
+    if (st != QD_OK)
+        return st;
+    qd__lin_bind(&L, nvals, syms, vals);
+    bool *angle = calloc(n + 1, sizeof *angle);
+    double *lo = malloc((n + 1) * sizeof *lo), *hi = malloc((n + 1) * sizeof *hi);
+    double *q = malloc((n + 1) * sizeof *q);
+    qd__roots roots = {.n = n};
+    exact x = {0};
+    if (!angle || !lo || !hi || !q) {
+        st = QD_ERR_NOMEM;
+        goto done;
+    }
+    qd_equilibria_default_box(ctx, e, m, angle, lo, hi);
+    if (o.lo && o.hi) {
+        memcpy(lo, o.lo, n * sizeof *lo);
+        memcpy(hi, o.hi, n * sizeof *hi);
+    }
+    /* the force scale: the median of the scales at spread points */
+    double scales[9];
+    for (int s = 0; s < 9; s++) {
+        for (size_t j = 0; j < n; j++)
+            q[j] = lo[j] + (hi[j] - lo[j]) * (0.1 + 0.1 * ((s + 3 * (int)j) % 9));
+        scales[s] = qd__lin_scale(&L, q);
+    }
+    for (int a = 0; a < 9; a++)
+        for (int b = a + 1; b < 9; b++)
+            if (scales[b] < scales[a]) {
+                double t = scales[a];
+                scales[a] = scales[b];
+                scales[b] = t;
+            }
+    double fscale = isfinite(scales[4]) && scales[4] > 0 ? scales[4] : 1;
+    double ftol = 1e-11 * fscale;
+    if (o.near) {
+        memcpy(q, o.near, n * sizeof *q);
+        double res;
+        out->method = "newton";
+        if (!qd__lm_solve(&L, q, ftol, 500, &res)) {
+            qd_ctx_error(ctx, QD_ERR_NUMERIC,
+                         "no convergence: Newton's method from the guess stopped with residual "
+                         "%.3g (force scale %.3g)", res, fscale);
+            st = QD_ERR_NUMERIC;
+            goto done;
+        }
+        qd__wrap_angles(n, q, angle);
+        if (!qd__roots_add(&roots, q, res, angle))
+            st = QD_ERR_NOMEM;
+    } else if (!o.numeric_only && solve_exact(ctx, e, m, &L, angle, &x) &&
+               exact_verified(ctx, &L, &x, 1e-8 * fscale)) {
+        out->method = "exact";
+        out->exact = true;
+    } else {
+        if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+            st = QD_ERR_NOMEM;
+            goto done;
+        }
+        x.nsol = 0;
+        out->method = "multistart";
+        size_t starts = o.starts ? o.starts : 40 * n + 40;
+        if (!qd__multistart(&L, lo, hi, angle, starts, ftol, &roots))
+            st = QD_ERR_NOMEM;
+        /* only the roots in the box (Newton may leave it) */
+        size_t kept = 0;
+        for (size_t i = 0; i < roots.count; i++) {
+            bool in = true;
+            for (size_t j = 0; j < n; j++) {
+                double v = roots.q[i * n + j], pad = 1e-9 * (1 + fabs(v));
+                if (fabs(v) < 1e-15)
+                    roots.q[i * n + j] = v = 0;
+                in = in && v >= lo[j] - pad && v <= hi[j] + pad;
+            }
+            if (in) {
+                memmove(roots.q + kept * n, roots.q + i * n, n * sizeof *roots.q);
+                roots.res[kept++] = roots.res[i];
+            }
+        }
+        roots.count = kept;
+    }
+    if (st == QD_OK)
+        st = assemble(ctx, &L, &roots, out->exact ? &x : NULL, ftol, out);
+done:
+    if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, st, st == QD_ERR_NOMEM ? "out of memory finding equilibria"
+                                                 : "finding equilibria failed");
+    if (st != QD_OK)
+        qd_equilibria_free(out);
+    free(x.val);
+    free(x.sols);
+    qd__roots_free(&roots);
+    free(angle);
+    free(lo);
+    free(hi);
+    free(q);
+    qd__lin_free(&L);
+    return st;
+}

@@ -1,0 +1,79 @@
+/*
+ * src/linear/linear.h - what the small-oscillation files share: the
+ * equations at rest and their first derivatives, compiled once, and the
+ * dense LAPACK calls.
+ */
+#ifndef QD_LINEAR_LINEAR_H
+#define QD_LINEAR_LINEAR_H
+
+#include "qdot/eval.h"
+#include "qdot/mech.h"
+#include "qdot/modes.h"
+
+/* The equations of e at rest, F(q) = f(q, q' = 0), with
+ *   J = dF/dq (n*n), B = df/dq' at q' = 0 (n*n), M at q' = 0 (n*n),
+ * so that about a point x = q - q0:  M x'' = F(q0) + J x + B x'.
+ * The symbolic entries are kept; the numbers come from one compiled
+ * program whose inputs are every free symbol (missing ones are 0). */
+typedef struct qd__lin {
+    size_t n;
+    const qd_expr *const *q;           /* e's coordinates (borrowed) */
+    const qd_expr **F, **J, **B, **M;  /* malloc'd arrays of nodes */
+    qd_prog *prog;
+    size_t nin;
+    const qd_expr **inputs;
+    size_t *qslot;                     /* n: the input index of q_j, or SIZE_MAX */
+    double *in, *out;                  /* nin; n + 3 n^2 */
+} qd__lin;
+
+/* Build the derivatives and compile.  QD_ERR_ARG for a model with
+ * multipliers (constraints kept). */
+qd_status qd__lin_init(qd_ctx *ctx, const qd_eom *e, qd__lin *L);
+void qd__lin_free(qd__lin *L);
+/* Set every input from syms/vals (the rest 0). */
+void qd__lin_bind(qd__lin *L, size_t nvals, const qd_expr *const *syms, const double *vals);
+/* Evaluate at q (n values; NULL keeps the bound ones): L->out then holds
+ * F (n), J, B, M (n*n each, row-major). */
+void qd__lin_run(qd__lin *L, const double *q);
+static inline const double *qd__lin_F(const qd__lin *L) { return L->out; }
+static inline const double *qd__lin_J(const qd__lin *L) { return L->out + L->n; }
+static inline const double *qd__lin_B(const qd__lin *L) { return L->out + L->n + L->n * L->n; }
+static inline const double *qd__lin_M(const qd__lin *L) {
+    return L->out + L->n + 2 * L->n * L->n;
+}
+
+/* Eigenvalues (ascending) and, when vecs is not NULL, orthonormal
+ * eigenvectors (column-major, vecs[i + j n] = component i of vector j) of
+ * the symmetric n*n matrix A (row-major; only its symmetric part is used).
+ * false when LAPACK fails. */
+bool qd__sym_eig(size_t n, const double *A, double *w, double *vecs);
+
+#endif
+
+/* ---- numeric root finding (newton.c, multistart.c) ------------------------ */
+
+/* A force scale at q: |F|_inf + |J|_inf (1 + |q|_inf); residuals are judged
+ * against it. */
+double qd__lin_scale(qd__lin *L, const double *q);
+
+/* Damped Newton (Levenberg-Marquardt on |F|^2) from q, in place.  true when
+ * max |F_j| <= ftol; *res is max |F_j| at the final q. */
+bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res);
+
+/* A found root, angles wrapped into (-pi, pi]. */
+typedef struct qd__roots {
+    size_t n, count, cap;
+    double *q;      /* count * n */
+    double *res;    /* count */
+} qd__roots;
+
+/* Add q unless it duplicates a root already there (the better residual is
+ * kept); false when out of memory. */
+bool qd__roots_add(qd__roots *r, const double *q, double res, const bool *angle);
+void qd__roots_free(qd__roots *r);
+void qd__wrap_angles(size_t n, double *q, const bool *angle);
+
+/* The multi-start search over [lo, hi] (quasi-random starts and axis scans
+ * through the centre); roots with max |F| <= ftol go to out. */
+bool qd__multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
+                    size_t starts, double ftol, qd__roots *out);

@@ -1,0 +1,173 @@
+/*
+ * src/linear/multistart.c - every equilibrium in a box, numerically.
+ *
+ * Two kinds of starting points for the damped Newton solver:
+ *   - a Halton sequence over the box (deterministic, evenly spread);
+ *   - scans along each coordinate axis through the box centre: F_i sampled
+ *     at 400 points, every sign change bracketed and bisected, then
+ *     polished.  A sign change across a pole (F_i -> +-inf, e.g. at a
+ *     primary of the restricted three-body problem) bisects onto the pole;
+ *     its residual does not fall and it is dropped.  This finds the
+ *     collinear Lagrange points robustly: one root in each interval
+ *     between the poles (Desloge ch. 62; seed-desloge-B.md pitfall 8).
+ * Roots closer than 1e-6 (relative) are one root; angles are compared
+ * modulo 2 pi.
+ */
+#include "linear.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const double PI = 3.14159265358979323846;
+
+void qd__wrap_angles(size_t n, double *q, const bool *angle) {
+    for (size_t j = 0; angle && j < n; j++)
+        if (angle[j] && isfinite(q[j])) {
+            double x = fmod(q[j], 2 * PI);
+            if (x <= -PI)
+                x += 2 * PI;
+            else if (x > PI)
+                x -= 2 * PI;
+            if (fabs(x + PI) < 1e-12)
+                x = PI;
+            q[j] = x;
+        }
+}
+
+static bool same(size_t n, const double *a, const double *b, const bool *angle) {
+    double big = 1;
+    for (size_t j = 0; j < n; j++)
+        big = fmax(big, fmax(fabs(a[j]), fabs(b[j])));
+    for (size_t j = 0; j < n; j++) {
+        double d = fabs(a[j] - b[j]);
+        if (angle && angle[j])
+            d = fmin(d, fabs(2 * PI - d));
+        if (d > 1e-6 * big)
+            return false;
+    }
+    return true;
+}
+
+bool qd__roots_add(qd__roots *r, const double *q, double res, const bool *angle) {
+    size_t n = r->n;
+    for (size_t i = 0; i < r->count; i++)
+        if (same(n, r->q + i * n, q, angle)) {
+            if (res < r->res[i]) {
+                memcpy(r->q + i * n, q, n * sizeof *q);
+                r->res[i] = res;
+            }
+            return true;
+        }
+    if (r->count == r->cap) {
+        size_t cap = r->cap ? 2 * r->cap : 16;
+        double *nq = realloc(r->q, (cap * n + 1) * sizeof *nq);
+        if (!nq)
+            return false;
+        r->q = nq;
+        double *nr = realloc(r->res, cap * sizeof *nr);
+        if (!nr)
+            return false;
+        r->res = nr;
+        r->cap = cap;
+    }
+    memcpy(r->q + r->count * n, q, n * sizeof *q);
+    r->res[r->count++] = res;
+    return true;
+}
+
+void qd__roots_free(qd__roots *r) {
+    free(r->q);
+    free(r->res);
+    r->q = r->res = NULL;
+    r->count = r->cap = 0;
+}
+
+static double halton(size_t i, unsigned base) {
+    double f = 1, x = 0;
+    for (size_t k = i; k; k /= base) {
+        f /= base;
+        x += f * (double)(k % base);
+    }
+    return x;
+}
+
+static const unsigned primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
+
+static bool polish(qd__lin *L, double *q, const bool *angle, double ftol, qd__roots *out) {
+    double res;
+    if (qd__lm_solve(L, q, ftol, 200, &res)) {
+        qd__wrap_angles(L->n, q, angle);
+        return qd__roots_add(out, q, res, angle);
+    }
+    return true;
+}
+
+/* F_i along axis i through c, brackets bisected, then polished. */
+static bool scan_axis(qd__lin *L, size_t i, const double *c, const double *lo, const double *hi,
+                      const bool *angle, double ftol, double *q, qd__roots *out) {
+    enum { N = 400 };
+    size_t n = L->n;
+    double prev = NAN, xprev = 0;
+    memcpy(q, c, n * sizeof *q);
+    for (int s = 0; s <= N; s++) {
+        double x = lo[i] + (hi[i] - lo[i]) * s / N;
+        q[i] = x;
+        qd__lin_run(L, q);
+        double f = qd__lin_F(L)[i];
+        if (isfinite(f) && isfinite(prev) && ((f < 0) != (prev < 0) || f == 0)) {
+            double a = xprev, b = x, fa = prev;
+            for (int it = 0; it < 80 && f != 0; it++) {
+                double m = (a + b) / 2;
+                q[i] = m;
+                qd__lin_run(L, q);
+                double fm = qd__lin_F(L)[i];
+                if (!isfinite(fm))
+                    break;
+                if ((fm < 0) == (fa < 0)) {
+                    a = m;
+                    fa = fm;
+                } else {
+                    b = m;
+                }
+            }
+            q[i] = f == 0 ? x : (a + b) / 2;
+            if (!polish(L, q, angle, ftol, out))
+                return false;
+            memcpy(q, c, n * sizeof *q);
+        }
+        prev = f;
+        xprev = x;
+    }
+    return true;
+}
+
+bool qd__multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
+                    size_t starts, double ftol, qd__roots *out) {
+    size_t n = L->n;
+    double *q = malloc((n + 1) * sizeof *q), *c = malloc((n + 1) * sizeof *c);
+    bool ok = q && c;
+    for (size_t j = 0; ok && j < n; j++)
+        c[j] = lo[j] <= 0 && hi[j] >= 0 ? 0 : (lo[j] + hi[j]) / 2;
+    for (size_t i = 0; ok && i < n; i++)
+        ok = scan_axis(L, i, c, lo, hi, angle, ftol, q, out);
+    unsigned long long seed = 88172645463325252ULL;
+    for (size_t s = 0; ok && s < starts; s++) {
+        for (size_t j = 0; j < n; j++) {
+            double u;
+            if (j < sizeof primes / sizeof *primes) {
+                u = halton(s + 1, primes[j]);
+            } else {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                u = (double)(seed >> 11) / 9007199254740992.0;
+            }
+            q[j] = lo[j] + (hi[j] - lo[j]) * u;
+        }
+        ok = polish(L, q, angle, ftol, out);
+    }
+    free(q);
+    free(c);
+    return ok;
+}

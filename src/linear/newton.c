@@ -1,0 +1,123 @@
+/*
+ * src/linear/newton.c - F(q) = 0 by damped Newton steps.
+ *
+ * Levenberg-Marquardt: (J^T J + lambda diag(J^T J)) d = -J^T F, lambda
+ * lowered after a step that reduces |F| and raised after one that does
+ * not.  Near a regular root it is Newton's method (quadratic convergence);
+ * far from one, or where J is singular (a continuum of equilibria, a
+ * symmetric configuration), it still takes descent steps instead of
+ * jumping across the configuration space as a bare Newton or secant step
+ * does (seed-desloge-B.md pitfall 8: a secant from a naive guess jumped
+ * from L1 to L2).
+ */
+#include "linear.h"
+
+#include "mech/mech.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double norm_inf(size_t n, const double *v) {
+    double m = 0;
+    for (size_t i = 0; i < n; i++)
+        m = fmax(m, fabs(v[i]));
+    return m;
+}
+
+static double norm2sq(size_t n, const double *v) {
+    double s = 0;
+    for (size_t i = 0; i < n; i++)
+        s += v[i] * v[i];
+    return s;
+}
+
+static bool all_finite(size_t n, const double *v) {
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return false;
+    return true;
+}
+
+double qd__lin_scale(qd__lin *L, const double *q) {
+    size_t n = L->n;
+    qd__lin_run(L, q);
+    const double *F = qd__lin_F(L), *J = qd__lin_J(L);
+    double jn = 0;
+    for (size_t i = 0; i < n; i++) {
+        double row = 0;
+        for (size_t k = 0; k < n; k++)
+            row += fabs(J[i * n + k]);
+        jn = fmax(jn, row);
+    }
+    double s = norm_inf(n, F) + jn * (1 + norm_inf(n, q));
+    return isfinite(s) ? s : INFINITY;
+}
+
+bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
+    size_t n = L->n;
+    double *F = malloc((n + 1) * sizeof *F), *J = malloc((n * n + 1) * sizeof *J);
+    double *A = malloc((n * n + 1) * sizeof *A), *g = malloc((n + 1) * sizeof *g);
+    double *t = malloc((n + 1) * sizeof *t);
+    size_t *pc = malloc((n + 1) * sizeof *pc);
+    bool ok = false;
+    *res = INFINITY;
+    if (!F || !J || !A || !g || !t || !pc)
+        goto done;
+    qd__lin_run(L, q);
+    memcpy(F, qd__lin_F(L), n * sizeof *F);
+    memcpy(J, qd__lin_J(L), n * n * sizeof *J);
+    if (!all_finite(n, F) || !all_finite(n * n, J))
+        goto done;
+    double lambda = 1e-3, f2 = norm2sq(n, F);
+    for (int it = 0; it < maxit; it++) {
+        *res = norm_inf(n, F);
+        if (*res <= ftol) {
+            ok = true;
+            break;
+        }
+        for (size_t i = 0; i < n; i++) {
+            g[i] = 0;
+            for (size_t k = 0; k < n; k++)
+                g[i] -= J[k * n + i] * F[k];
+            for (size_t j = 0; j < n; j++) {
+                double s = 0;
+                for (size_t k = 0; k < n; k++)
+                    s += J[k * n + i] * J[k * n + j];
+                A[i * n + j] = s;
+            }
+        }
+        for (size_t i = 0; i < n; i++)
+            A[i * n + i] += lambda * (A[i * n + i] + 1e-12 * (1 + A[i * n + i]));
+        if (qd__gauss(n, A, g, 1e-15, pc, NULL, NULL) < n) {
+            lambda *= 10;
+            continue;
+        }
+        for (size_t i = 0; i < n; i++)
+            t[i] = q[i] + g[i];
+        qd__lin_run(L, t);
+        const double *Ft = qd__lin_F(L);
+        double ft2 = norm2sq(n, Ft);
+        if (all_finite(n, Ft) && all_finite(n * n, qd__lin_J(L)) && ft2 < f2) {
+            memcpy(q, t, n * sizeof *q);
+            memcpy(F, Ft, n * sizeof *F);
+            memcpy(J, qd__lin_J(L), n * n * sizeof *J);
+            f2 = ft2;
+            lambda = fmax(lambda / 4, 1e-12);
+        } else {
+            lambda *= 8;
+            if (lambda > 1e16)
+                break;
+        }
+    }
+    *res = norm_inf(n, F);
+    ok = *res <= ftol;
+done:
+    free(F);
+    free(J);
+    free(A);
+    free(g);
+    free(t);
+    free(pc);
+    return ok;
+}

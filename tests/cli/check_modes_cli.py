@@ -1,0 +1,185 @@
+#!/usr/bin/env python3
+"""End-to-end checks of `qdot equilibria` and `qdot modes`.
+
+    python3 tests/cli/check_modes_cli.py --build BUILD_DIR
+
+Expected values are textbook results, not output of the code under test:
+  - double pendulum, equal masses and lengths (Goldstein ch. 6, seed 002;
+    examples/double_pendulum.qd): w^2 = (g/l)(2 -+ sqrt 2), shapes
+    theta2/theta1 = +-sqrt 2; equilibria (0,0) minimum, (pi,pi) maximum and
+    two saddles; the exact w^2 (printed as an expression) is checked with
+    SymPy against the roots of det(K - w^2 M) = 0 for general parameters;
+  - three equal masses in a ring of springs (Desloge ch. 66, seed-desloge-D.md
+    T33): w^2 = 0 (x3), 3k/2m (x2), 3k/m;
+  - rod on an elastic string (Desloge ch. 65 P11, seed-desloge-B.md T59):
+    g/w^2 = 7a/3, a/6, a/6 about r = 7a/6;
+  - restricted three-body problem (Desloge ch. 62): five equilibria; L4 stable
+    for mu = 0.01, unstable for mu = 0.1 (27 mu (1 - mu) < 1);
+  - the motion from --initial for the double pendulum: q(t) from the normal
+    coordinates equals the closed-form superposition.
+Prints "N passed, N failed"; exit 1 on failure.
+"""
+import argparse
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import sympy as sp
+
+EX = Path(__file__).resolve().parents[2] / "examples"
+results = {"passed": 0, "failed": 0}
+
+
+def check(name, ok, detail=""):
+    results["passed" if ok else "failed"] += 1
+    if not ok:
+        print(f"FAIL {name} {detail}")
+
+
+def run(qdot, *args):
+    p = subprocess.run([str(qdot), *args], capture_output=True, text=True, timeout=60)
+    return p.returncode, p.stdout, p.stderr
+
+
+def close(a, b, tol=1e-9):
+    return abs(a - b) <= tol * (1 + abs(b))
+
+
+def double_pendulum(qdot):
+    rc, out, err = run(qdot, "modes", str(EX / "double_pendulum.qd"), "--format", "json")
+    check("dp rc", rc == 0, err)
+    if rc:
+        return
+    d = json.loads(out)
+    g = 9.81
+    w = d["frequencies"]
+    check("dp w1", close(w[0], math.sqrt(g * (2 - math.sqrt(2)))), str(w))
+    check("dp w2", close(w[1], math.sqrt(g * (2 + math.sqrt(2)))), str(w))
+    s1, s2 = d["modes"][0]["shape"], d["modes"][1]["shape"]
+    check("dp shape1", close(s1["theta2"] / s1["theta1"], math.sqrt(2)), str(s1))
+    check("dp shape2", close(s2["theta2"] / s2["theta1"], -math.sqrt(2)), str(s2))
+    check("dp stable", d["stable"] is True)
+    check("dp equilibrium", d["equilibrium"] == {"theta1": 0, "theta2": 0}, str(d["equilibrium"]))
+    # the exact w^2 against SymPy's roots of det(K - x M) for general parameters
+    m1, m2, l1, l2, g_, x = sp.symbols("m1 m2 l1 l2 g x", positive=True)
+    M = sp.Matrix([[(m1 + m2) * l1**2, m2 * l1 * l2], [m2 * l1 * l2, m2 * l2**2]])
+    K = sp.Matrix([[(m1 + m2) * g_ * l1, 0], [0, m2 * g_ * l2]])
+    roots = sorted(sp.solve(sp.Eq((K - x * M).det(), 0), x), key=lambda r: float(
+        r.subs({m1: 1.3, m2: 0.7, l1: 0.9, l2: 1.6, g_: 9.81})))
+    vals = {m1: 1.3, m2: 0.7, l1: 0.9, l2: 1.6, g_: 9.81}
+    for k in range(2):
+        text = d["modes"][k].get("omega2_exact")
+        check(f"dp exact {k}", text is not None)
+        if text is None:
+            continue
+        e = sp.sympify(text, locals={"g": g_, "m1": m1, "m2": m2, "l1": l1, "l2": l2})
+        check(f"dp exact value {k}", close(float(e.subs(vals)), float(roots[k].subs(vals)), 1e-10),
+              text)
+    rc, out, err = run(qdot, "equilibria", str(EX / "double_pendulum.qd"), "--format", "json")
+    d = json.loads(out)
+    kinds = [(round(p["equilibrium"]["theta1"], 12), round(p["equilibrium"]["theta2"], 12),
+              p["kind"]) for p in d["equilibria"]]
+    pi = round(math.pi, 12)
+    check("dp equilibria", d["exact"] and kinds == [(0, 0, "minimum"), (0, pi, "saddle"),
+                                                    (pi, 0, "saddle"), (pi, pi, "maximum")],
+          str(kinds))
+    check("dp exact pi", d["equilibria"][3]["exact"] == {"theta1": "pi", "theta2": "pi"})
+    # --initial: theta1(0) = 0.01 at rest; q(t) = sum_j a_j Q_j cos(w_j t)
+    rc, out, err = run(qdot, "modes", str(EX / "double_pendulum.qd"), "--initial",
+                       "theta1=0.01", "--format", "json")
+    d = json.loads(out)
+    # textbook: with M = [[2,1],[1,1]] (l = m = 1), x(0) = (0.01, 0) splits into the
+    # modes (1, sqrt2) and (1, -sqrt2) with weights 0.005 each
+    t = 0.7
+    w1, w2 = math.sqrt(g * (2 - math.sqrt(2))), math.sqrt(g * (2 + math.sqrt(2)))
+    th2 = 0.005 * math.sqrt(2) * (math.cos(w1 * t) - math.cos(w2 * t))
+    got = sum(m["shape"]["theta2"] * m["Q0"] * math.cos(m["omega"] * t) for m in d["modes"])
+    check("dp initial", close(got, th2, 1e-9), f"{got} {th2}")
+
+
+def ring(qdot):
+    rc, out, err = run(qdot, "modes", str(EX / "ring_three_masses.qd"), "--about",
+                       "x1=0, y1=0, x2=1, y2=0, x3=0.5, y3=sqrt(3)/2", "--set", "k=3",
+                       "--set", "m=2", "--format", "json")
+    check("ring rc", rc == 0, err)
+    if rc:
+        return
+    d = json.loads(out)
+    w2 = [m["omega2"] for m in d["modes"]]
+    want = [0, 0, 0, 1.5 * 3 / 2, 1.5 * 3 / 2, 3 * 3 / 2]
+    check("ring w2", all(abs(a - b) < 1e-9 for a, b in zip(w2, want)), str(w2))
+    check("ring multiplicity", [m["multiplicity"] for m in d["modes"]] == [3, 3, 3, 2, 2, 1])
+    check("ring verdict", d["stable"] is None and d["verdict"] == "borderline")
+
+
+def rod(qdot):
+    rc, out, err = run(qdot, "modes", str(EX / "rod_elastic_string.qd"), "--set", "a=2",
+                       "--format", "json")
+    check("rod rc", rc == 0, err)
+    if rc:
+        return
+    d = json.loads(out)
+    a, g = 2, 9.81
+    check("rod r0", close(d["equilibrium"]["r"], 7 * a / 6), str(d["equilibrium"]))
+    lengths = [g / m["omega2"] for m in d["modes"]]
+    want = [7 * a / 3, a / 6, a / 6]
+    check("rod lengths", all(close(x, y) for x, y in zip(lengths, want)), str(lengths))
+
+
+def three_body(qdot):
+    f = str(EX / "restricted_three_body.qd")
+    rc, out, err = run(qdot, "equilibria", f, "--format", "json")
+    check("3b rc", rc == 0, err)
+    if rc:
+        return
+    d = json.loads(out)
+    pts = [p["equilibrium"] for p in d["equilibria"]]
+    check("3b five", len(pts) == 5, str(pts))
+    mu = 0.01
+    l4 = [i for i, p in enumerate(pts) if p["y"] > 0.5]
+    check("3b L4", len(l4) == 1 and close(pts[l4[0]]["x"], 0.5 - mu, 1e-10) and
+          close(pts[l4[0]]["y"], math.sqrt(3) / 2, 1e-10), str(pts))
+    # collinear points: F_x = 0 on the axis, checked from the formula directly
+    for p in pts:
+        if abs(p["y"]) < 1e-12:
+            x = p["x"]
+            fx = x - (1 - mu) * (x + mu) / abs(x + mu)**3 - mu * (x - 1 + mu) / abs(x - 1 + mu)**3
+            check("3b collinear root", abs(fx) < 1e-10, str(x))
+    n = l4[0] + 1
+    for mu_, want in (("0.01", True), ("0.1", False)):
+        rc, out, err = run(qdot, "modes", f, "--set", f"mu={mu_}", "--about",
+                           f"x={0.5 - float(mu_)}, y=sqrt(3)/2", "--format", "json")
+        d = json.loads(out)
+        check(f"3b L4 mu={mu_}", rc == 0 and d["stable"] is want and not d["conservative"],
+              out + err)
+    rc, out, err = run(qdot, "modes", f, "--at-equilibrium", str(n))
+    check("3b text", rc == 0 and "stabilized by the gyroscopic terms" in out, out + err)
+
+
+def usage(qdot):
+    rc, out, err = run(qdot, "modes", str(EX / "double_pendulum.qd"), "--about", "nope=1")
+    check("usage about", rc == 2 and "unknown name" in err, err)
+    rc, out, err = run(qdot, "modes", str(EX / "double_pendulum.qd"), "--at-equilibrium", "9")
+    check("usage eq index", rc == 2, err)
+    rc, out, err = run(qdot, "equilibria", str(EX / "rod_elastic_string.qd"), "--near",
+                       "r=1.1, phi=0.1, theta=0.1")
+    check("near", rc == 0 and "r = 1.1666666666" in out, out + err)
+    rc, out, err = run(qdot, "equilibria", str(EX / "double_pendulum.qd"), "--box",
+                       "theta1=1..2")
+    check("box", rc == 0 and out.startswith("0 equilibria"), out + err)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", required=True)
+    qdot = Path(ap.parse_args().build) / "qdot"
+    for f in (double_pendulum, ring, rod, three_body, usage):
+        f(qdot)
+    print(f"{results['passed']} passed, {results['failed']} failed")
+    sys.exit(1 if results["failed"] else 0)
+
+
+if __name__ == "__main__":
+    main()
