@@ -19,6 +19,7 @@ demo:
 	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=OFF
 	$(CMAKE) --build build -j $(JOBS) --target qdot_cli
 	./build/qdot eom examples/double_pendulum.qd
+	./build/qdot modes examples/double_pendulum.qd
 
 # Every test twice: a normal build, then AddressSanitizer + UBSan (any report fails).
 test:
@@ -41,6 +42,8 @@ bench:
 	$(CMAKE) --build build-bench -j $(JOBS)
 	./bench/run_kernel.sh build-bench
 	/usr/bin/python3 bench/run_pendulum.py build-bench
+	/usr/bin/python3 bench/run_rhs.py build-bench
+	/usr/bin/python3 bench/run_simulate.py build-bench
 
 install: build
 	$(CMAKE) --install build --prefix $(PREFIX)

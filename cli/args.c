@@ -4,6 +4,8 @@
  */
 #include "cli.h"
 
+#include <string.h>
+
 int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
                      const char **file, qd_cli_option opt, void *data) {
     for (int i = 0; i < argc; i++) {
@@ -24,4 +26,15 @@ int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
+}
+
+const char *qd_cli_value(int argc, char **argv, int *i, const char *opt) {
+    size_t len = strlen(opt);
+    if (strncmp(argv[*i], opt, len))
+        return NULL;
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (argv[*i][len] || *i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
 }

@@ -34,6 +34,11 @@ typedef int (*qd_cli_option)(int argc, char **argv, int *i, void *data);
 int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
                      const char **file, qd_cli_option opt, void *data);
 
+/* The value of option opt given as "--opt VALUE" or "--opt=VALUE" at
+ * argv[*i] (advancing *i past a separate VALUE), or NULL when argv[*i] is
+ * another option or VALUE is missing. */
+const char *qd_cli_value(int argc, char **argv, int *i, const char *opt);
+
 /* Parse "--format NAME" values; false for an unknown name. */
 bool qd_cli_format(const char *name, qd_format *out);
 

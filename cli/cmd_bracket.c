@@ -38,8 +38,10 @@ static int momenta(qd_phase *ph) {
         char name[256];
         ph->q[j] = qd_model_coord(m, j);
         snprintf(name, sizeof name, "p_%s", qd_expr_name(ph->q[j]));
-        /* a parameter already named p_x cannot also be the momentum */
-        if (!(ph->p[j] = qd_symbol(ph->ctx, name)))
+        /* the model's own name (`momenta`), else p_<q>; a parameter already
+         * named p_x cannot also be the momentum */
+        const qd_expr *named = qd_model_momentum(m, j);
+        if (!(ph->p[j] = named ? named : qd_symbol(ph->ctx, name)))
             return qd_diag_ctx(ph->ctx);
     }
     return QD_EXIT_OK;
@@ -82,7 +84,9 @@ int qd_phase_read(qd_phase *ph, const char *what, const char *text, const qd_exp
 }
 
 int qd_phase_ham(qd_phase *ph) {
-    if (!(ph->e = qd_eom_derive(ph->ctx, ph->mf->model)))
+    /* a model given by H needs no equations of motion for its brackets */
+    if (!qd_model_hamiltonian_given(ph->mf->model) &&
+        !(ph->e = qd_eom_derive(ph->ctx, ph->mf->model)))
         return qd_eom_derive_error(ph->ctx, ph->mf);
     if (!(ph->h = qd_ham_derive(ph->ctx, ph->mf->model, ph->e)))
         return qd_diag_ctx(ph->ctx);

@@ -31,25 +31,14 @@ static const char usage_text[] =
     "usage: qdot canonical FILE --Q \"Q1, ...\" --P \"P1, ...\" [--format text|json]\n"
     "       qdot canonical FILE --generator F1|F2|F3|F4 EXPR [--format text|json]";
 
-static const char *option(int argc, char **argv, int *i, const char *opt) {
-    size_t len = strlen(opt);
-    if (strncmp(argv[*i], opt, len))
-        return NULL;
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (argv[*i][len] || *i + 1 >= argc)
-        return NULL;
-    return argv[++*i];
-}
-
 static int parse_option(int argc, char **argv, int *i, void *data) {
     can_args *a = data;
     const char *v;
-    if ((v = option(argc, argv, i, "--Q")) && !a->Q)
+    if ((v = qd_cli_value(argc, argv, i, "--Q")) && !a->Q)
         a->Q = v;
-    else if ((v = option(argc, argv, i, "--P")) && !a->P)
+    else if ((v = qd_cli_value(argc, argv, i, "--P")) && !a->P)
         a->P = v;
-    else if ((v = option(argc, argv, i, "--format")) && (!strcmp(v, "text") || !strcmp(v, "json")))
+    else if ((v = qd_cli_value(argc, argv, i, "--format")) && (!strcmp(v, "text") || !strcmp(v, "json")))
         a->json = !strcmp(v, "json");
     else if (!strcmp(argv[*i], "--generator") && *i + 2 < argc && !a->gen) {
         a->gen_type = argv[++*i];

@@ -16,10 +16,12 @@
  */
 #include "cli.h"
 
+#include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
 #include "model_file.h"
 #include "state.h"
+#include "qdot/integrals.h"
 #include "qdot/mech.h"
 
 typedef struct check {
@@ -138,41 +140,29 @@ static void forces(check *c) {
     }
 }
 
-/* Does a constraint act on coordinate j (a nonzero A_kj)? */
-static bool constrained(const qd_eom *e, const qd_expr *q) {
-    for (size_t j = 0; j < e->n; j++)
-        for (size_t k = 0; e->q[j] == q && k < e->ncon; k++)
-            if (!qd_is_zero(e->A[k * e->n + j]))
-                return true;
-    return false;
-}
-
-/* Cyclic coordinates, with their conserved momenta. */
-static void cyclic(check *c, const qd_eom *e, const qd_expr *L) {
-    const qd_expr *D = qd_model_dissipation(c->m);
-    bool any = false;
+/* Cyclic coordinates, with their conserved momenta (qd_integrals_cyclic;
+ * `qdot integrals` says more). */
+static void cyclic(check *c, const qd_eom *e) {
+    qd_int_cyclic *cyc = calloc(e->n ? e->n : 1, sizeof *cyc);
+    size_t nc = 0;
+    if (!cyc || qd_integrals_cyclic(c->ctx, c->m, e, cyc, &nc) != QD_OK)
+        nc = 0;
     qd_buf_puts(&c->out, "cyclic coordinates:");
-    for (size_t j = 0; j < qd_model_ncoords(c->m); j++) {
-        const qd_expr *q = qd_model_coord(c->m, j), *qd = qd_jet(c->ctx, q, 1);
-        if (qd_has(L, q))
-            continue;
-        const qd_expr *dD = D ? qd_diff(c->ctx, D, qd) : NULL;
-        const qd_expr *Q = qd_simplify(c->ctx, qd_model_force(c->m, j));
-        dD = dD ? qd_simplify(c->ctx, dD) : NULL;
-        bool conserved = Q && qd_is_zero(Q) && (!dD || qd_is_zero(dD));
-        qd_buf_printf(&c->out, "%s %s", any ? "," : "", qd_expr_name(q));
-        if (conserved && constrained(e, q)) {
-            qd_buf_puts(&c->out, " (but a constraint acts on it)");
-        } else if (conserved) {
-            qd_buf_printf(&c->out, " (p_%s = ", qd_expr_name(q));
-            put_expr(c, qd_simplify(c->ctx, qd_diff(c->ctx, L, qd)));
+    for (size_t i = 0; i < nc; i++) {
+        const char *q = qd_expr_name(e->q[cyc[i].coord]);
+        qd_buf_printf(&c->out, "%s %s", i ? "," : "", q);
+        if (cyc[i].conserved) {
+            qd_buf_printf(&c->out, " (p_%s = ", q);
+            put_expr(c, cyc[i].momentum);
             qd_buf_puts(&c->out, " is conserved)");
+        } else if (!strcmp(cyc[i].obstruction, "a constraint acts on it")) {
+            qd_buf_puts(&c->out, " (but a constraint acts on it)");
         } else {
             qd_buf_puts(&c->out, " (but a force or dissipation acts on it)");
         }
-        any = true;
     }
-    qd_buf_puts(&c->out, any ? "\n" : " none\n");
+    qd_buf_puts(&c->out, nc ? "\n" : " none\n");
+    free(cyc);
 }
 
 /* Forces, dissipation or constraints that work (a0 != 0: the power of the
@@ -220,12 +210,14 @@ static int summarize(check *c, const qd_model_file *mf) {
     depends(c, "V:", qd_model_potential(c->m));
     depends(c, "U:", qd_model_gen_potential(c->m));
     depends(c, "dissipation:", qd_model_dissipation(c->m));
-    depends(c, "L:", qd_model_lagrangian(c->m));
+    /* a model given by H has its L from the inverse Legendre transform */
+    const qd_expr *Lm = qd_model_hamiltonian_given(c->m) ? e->L : qd_model_lagrangian(c->m);
+    depends(c, "L:", Lm);
     forces(c);
     constraints(c, e);
-    const qd_expr *L = qd_simplify(c->ctx, qd_model_lagrangian(c->m));
+    const qd_expr *L = qd_simplify(c->ctx, Lm);
     if (L) {
-        cyclic(c, e, L);
+        cyclic(c, e);
         time_dependence(c, e, L);
     }
     if (e->ncon)

@@ -1,9 +1,145 @@
-/* cli/cmd_codegen.c - placeholder while `qdot codegen` is being written. */
+/*
+ * cli/cmd_codegen.c - `qdot codegen FILE [-o DIR] [--prefix NAME] [--set
+ * NAME=VALUE]... [--eliminate]`: the equations of motion as self-contained C
+ * (qd_codegen_c), written to DIR/NAME.c and DIR/NAME.h.  NAME defaults to
+ * the file's base name made into a C identifier, DIR to the current
+ * directory.  --set changes the default parameter values written into the
+ * file (parameters stay arguments of the functions).
+ */
 #include "cli.h"
 
+#include <ctype.h>
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include "qdot/codegen.h"
+#include "eom_out.h"
+#include "model_file.h"
+#include "state.h"
+
+#define MAX_SETS 64
+#define MAX_NAME 64
+
+typedef struct cg_run {
+    const char *file, *dir, *prefix, *sets[MAX_SETS];
+    size_t nsets;
+    bool eliminate;
+    char name[MAX_NAME];
+} cg_run;
+
+static const char usage_text[] =
+    "usage: qdot codegen FILE [-o DIR] [--prefix NAME] [--set NAME=VALUE]... [--eliminate]";
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    cg_run *r = data;
+    const char *v;
+    if (!strcmp(argv[*i], "--eliminate")) {
+        r->eliminate = true;
+        return QD_EXIT_OK;
+    }
+    if (!r->dir && (v = qd_cli_value(argc, argv, i, "-o"))) {
+        r->dir = v;
+        return QD_EXIT_OK;
+    }
+    if (!r->prefix && (v = qd_cli_value(argc, argv, i, "--prefix"))) {
+        r->prefix = v;
+        return QD_EXIT_OK;
+    }
+    if ((v = qd_cli_value(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
+        r->sets[r->nsets++] = v;
+        return QD_EXIT_OK;
+    }
+    qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
+    return QD_EXIT_USAGE;
+}
+
+/* The file's base name without extension, as a C identifier. */
+static void default_name(cg_run *r) {
+    const char *base = strrchr(r->file, '/');
+    base = base ? base + 1 : r->file;
+    if (!strcmp(r->file, "-"))
+        base = "model";
+    size_t k = 0;
+    if (!isalpha((unsigned char)*base) && *base != '_')
+        r->name[k++] = 'm';
+    for (; *base && *base != '.' && k + 1 < MAX_NAME; base++)
+        r->name[k++] = isalnum((unsigned char)*base) ? *base : '_';
+    r->name[k] = '\0';
+}
+
+static bool valid_name(const char *s) {
+    if (!*s || strlen(s) >= MAX_NAME || !(isalpha((unsigned char)*s) || *s == '_'))
+        return false;
+    for (; *s; s++)
+        if (!isalnum((unsigned char)*s) && *s != '_')
+            return false;
+    return true;
+}
+
+static int write_text(const char *dir, const char *name, const char *ext, const qd_buf *b) {
+    size_t len = strlen(dir) + strlen(name) + 8;
+    char *path = malloc(len);
+    if (!path)
+        return QD_EXIT_FAIL;
+    snprintf(path, len, "%s/%s.%s", dir, name, ext);
+    FILE *f = fopen(path, "w");
+    bool ok = f && fputs(qd_buf_str(b), f) >= 0;
+    if (f && fclose(f) != 0)
+        ok = false;
+    if (!ok)
+        qd_diag_error("cannot write %s: %s", path, strerror(errno));
+    else
+        printf("wrote %s\n", path);
+    free(path);
+    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+}
+
+static int run(qd_ctx *ctx, cg_run *r) {
+    qd_model_file mf = {0};
+    qd_eom *e = NULL;
+    qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
+    int rc = qd_model_file_load(ctx, r->file, &mf);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < r->nsets; i++) {
+        const qd_expr *p, *v;
+        rc = qd_state_set(ctx, mf.model, r->sets[i], &p, &v);
+    }
+    qd_eom_opts opts = {r->eliminate};
+    if (rc == QD_EXIT_OK && !(e = qd_eom_derive_opts(ctx, mf.model, &opts)))
+        rc = qd_eom_derive_error(ctx, &mf);
+    if (rc == QD_EXIT_OK && qd_codegen_c(ctx, mf.model, e, r->name, &c, &h) != QD_OK)
+        rc = qd_diag_ctx(ctx);
+    if (rc == QD_EXIT_OK)
+        rc = write_text(r->dir, r->name, "c", &c);
+    if (rc == QD_EXIT_OK)
+        rc = write_text(r->dir, r->name, "h", &h);
+    qd_buf_free(&c);
+    qd_buf_free(&h);
+    qd_eom_free(e);
+    qd_model_file_free(&mf);
+    return rc;
+}
+
 int qd_cmd_codegen(int argc, char **argv) {
-    (void)argc;
-    (void)argv;
-    qd_diag_error("'codegen' is not built yet");
-    return QD_EXIT_FAIL;
+    cg_run r = {0};
+    int rc = qd_cli_file_args(argc, argv, "codegen", usage_text, &r.file, parse_option, &r);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (r.prefix) {
+        if (!valid_name(r.prefix)) {
+            qd_diag_error("--prefix takes a C identifier, not '%s'", r.prefix);
+            return QD_EXIT_USAGE;
+        }
+        strcpy(r.name, r.prefix);
+    } else {
+        default_name(&r);
+    }
+    r.dir = r.dir ? r.dir : ".";
+    qd_ctx *ctx = qd_ctx_new();
+    if (!ctx) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = run(ctx, &r);
+    qd_ctx_free(ctx);
+    return rc;
 }

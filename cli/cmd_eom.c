@@ -51,18 +51,6 @@ static const char usage_text[] =
     "usage: qdot eom FILE [--format text|latex|json|sympy|c] [--solve] [--eliminate] "
     "[--set NAME=VALUE]... [--at \"q=VALUE, q'=VALUE, t=VALUE\"]";
 
-/* The value of an option given as "--opt VALUE" or "--opt=VALUE", or NULL. */
-static const char *option(int argc, char **argv, int *i, const char *opt) {
-    size_t len = strlen(opt);
-    if (strncmp(argv[*i], opt, len))
-        return NULL;
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (argv[*i][len] || *i + 1 >= argc)
-        return NULL;
-    return argv[++*i];
-}
-
 static int parse_option(int argc, char **argv, int *i, void *data) {
     eom_args *a = data;
     const char *v;
@@ -70,18 +58,18 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         a->solve = true;
     } else if (!strcmp(argv[*i], "--eliminate")) {
         a->eliminate = true;
-    } else if ((v = option(argc, argv, i, "--format"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--format"))) {
         if (!qd_eom_format_from_name(v, &a->fmt)) {
             qd_diag_error("--format takes text, latex, json, sympy or c, not '%s'", v);
             return QD_EXIT_USAGE;
         }
-    } else if ((v = option(argc, argv, i, "--set"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--set"))) {
         if (a->nsets == MAX_SETS) {
             qd_diag_error("at most %d --set options", MAX_SETS);
             return QD_EXIT_USAGE;
         }
         a->sets[a->nsets++] = v;
-    } else if ((v = option(argc, argv, i, "--at"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--at"))) {
         if (a->at) {
             qd_diag_error("--at is given twice; name every value in one list");
             return QD_EXIT_USAGE;

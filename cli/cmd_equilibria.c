@@ -180,31 +180,20 @@ static const char usage_text[] =
     "usage: qdot equilibria FILE [--near \"q1=VALUE, ...\"] [--box \"q1=LOW..HIGH, ...\"] "
     "[--set NAME=VALUE]... [--format text|json]";
 
-static const char *option(int argc, char **argv, int *i, const char *opt) {
-    size_t len = strlen(opt);
-    if (strncmp(argv[*i], opt, len))
-        return NULL;
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (argv[*i][len] || *i + 1 >= argc)
-        return NULL;
-    return argv[++*i];
-}
-
 static int parse_option(int argc, char **argv, int *i, void *data) {
     eq_args *a = data;
     const char *v;
-    if ((v = option(argc, argv, i, "--format"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
         if (strcmp(v, "text") && strcmp(v, "json")) {
             qd_diag_error("--format takes text or json, not '%s'", v);
             return QD_EXIT_USAGE;
         }
         a->json = !strcmp(v, "json");
-    } else if ((v = option(argc, argv, i, "--near"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--near"))) {
         a->near = v;
-    } else if ((v = option(argc, argv, i, "--box"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--box"))) {
         a->box = v;
-    } else if ((v = option(argc, argv, i, "--set"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--set"))) {
         if (a->nsets == QD_LIN_MAX_SETS) {
             qd_diag_error("at most %d --set options", QD_LIN_MAX_SETS);
             return QD_EXIT_USAGE;

@@ -4,6 +4,9 @@
  * H = T + V? and H conserved?  --set replaces parameters; --at evaluates H
  * and the equations at a point (q, p, t): momenta are named there as they
  * are printed (p_r=0.3), everything else goes to the state parser.
+ * A model given by H (`momenta ...`, `H = ...`) skips Lagrange's equations:
+ * its equations come from H, and the Lagrangian printed is the inverse
+ * Legendre transform (or the reason there is none).
  */
 #include "cli.h"
 
@@ -38,17 +41,6 @@ static const char usage_text[] =
     "usage: qdot hamiltonian FILE [--format text|json|latex|sympy] [--set NAME=VALUE]... "
     "[--at \"q=VALUE, p_q=VALUE, t=VALUE\"]";
 
-static const char *option(int argc, char **argv, int *i, const char *opt) {
-    size_t len = strlen(opt);
-    if (strncmp(argv[*i], opt, len))
-        return NULL;
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (argv[*i][len] || *i + 1 >= argc)
-        return NULL;
-    return argv[++*i];
-}
-
 static int parse_format(const char *v, ham_fmt *f) {
     static const char *const names[] = {"text", "json", "latex", "sympy"};
     for (int i = 0; i < 4; i++)
@@ -63,13 +55,13 @@ static int parse_format(const char *v, ham_fmt *f) {
 static int parse_option(int argc, char **argv, int *i, void *data) {
     ham_run *r = data;
     const char *v;
-    if ((v = option(argc, argv, i, "--format")))
+    if ((v = qd_cli_value(argc, argv, i, "--format")))
         return parse_format(v, &r->fmt);
-    if ((v = option(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
+    if ((v = qd_cli_value(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
         r->sets[r->nsets++] = v;
         return QD_EXIT_OK;
     }
-    if ((v = option(argc, argv, i, "--at")) && !r->at) {
+    if ((v = qd_cli_value(argc, argv, i, "--at")) && !r->at) {
         r->at = v;
         return QD_EXIT_OK;
     }
@@ -106,6 +98,7 @@ static const qd_expr *subs(ham_run *r, const qd_expr *x) {
 
 static int substitute(ham_run *r) {
     qd_ham *h = r->h;
+    h->L_from_H = subs(r, h->L_from_H);
     for (size_t j = 0; j < h->n; j++) {
         h->pdef[j] = subs(r, h->pdef[j]);
         h->vel[j] = subs(r, h->vel[j]);
@@ -243,7 +236,8 @@ static void verdicts(const ham_run *r, qd_buf *b, const char *cmt) {
             qd_print(r->ctx, h->H_minus_E, QD_FMT_TEXT, b);
         qd_buf_puts(b, "\n");
     } else {
-        qd_buf_printf(b, "%sH = T + V: unknown (the model gives L, not T and V)\n", cmt);
+        qd_buf_printf(b, "%sH = T + V: unknown (the model gives %s, not T and V)\n", cmt,
+                      h->H_given ? "H" : "L");
     }
     qd_buf_printf(b, "%sH conserved: %s\n", cmt,
                   h->conserved ? "yes" : "no (explicit t, generalized forces or dissipation)");
@@ -255,12 +249,20 @@ static void write_lines(const ham_run *r, qd_buf *b) {
     qd_buf_printf(b, "%sqdot hamiltonian %s\n%smomenta%s\n", cmt, r->mf.path, cmt,
                   r->at ? "" : " and velocities");
     for (size_t j = 0; j < h->n; j++) {
-        line(r, b, h->p[j], "", h->pdef[j]);
+        if (h->pdef[j])
+            line(r, b, h->p[j], "", h->pdef[j]);
         if (!r->at)
-            line(r, b, r->e->qd[j], "", h->vel[j]);
+            line(r, b, h->qd[j], "", h->vel[j]);
     }
     qd_buf_printf(b, "%sHamiltonian%s\n", cmt, r->at ? " at the point" : "");
     line(r, b, NULL, "H", h->H);
+    if (h->H_given && !r->at) {
+        qd_buf_printf(b, "%sLagrangian (inverse Legendre transform)\n", cmt);
+        if (h->L_from_H)
+            line(r, b, NULL, "L", h->L_from_H);
+        else
+            qd_buf_printf(b, "%s  none: %s\n", cmt, h->L_why);
+    }
     qd_buf_printf(b, "%sHamilton's equations\n", cmt);
     for (size_t j = 0; j < h->n; j++) {
         qd_buf_printf(b, "  d%s/dt = ", qd_expr_name(h->q[j]));
@@ -295,11 +297,22 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
         qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(qd_model_param(m, i)),
                       qd_expr_name(qd_model_param(m, i)));
     sympy_list(r, b, "momenta", h->p);
-    sympy_list(r, b, "pdef", h->pdef);
+    if (h->pdef[0] || !h->n)
+        sympy_list(r, b, "pdef", h->pdef);
+    else
+        qd_buf_puts(b, "pdef = None\n");
     sympy_list(r, b, "velocities", h->vel);
     qd_buf_puts(b, "H = ");
     put(r, b, h->H);
     qd_buf_puts(b, "\n");
+    if (h->H_given) {
+        qd_buf_puts(b, "L = ");
+        if (h->L_from_H)
+            put(r, b, h->L_from_H);
+        else
+            qd_buf_puts(b, "None");
+        qd_buf_puts(b, "\n");
+    }
     sympy_list(r, b, "dq_dt", h->dq);
     sympy_list(r, b, "dp_dt", h->dp);
     verdicts(r, b, "# ");
@@ -321,7 +334,10 @@ static void json_list(const ham_run *r, qd_json *j, const char *key, const qd_ex
     qd_json_key(j, key);
     qd_json_begin_array(j);
     for (size_t k = 0; k < r->h->n; k++)
-        json_expr(r, j, x[k]);
+        if (x[k])
+            json_expr(r, j, x[k]);
+        else
+            qd_json_null(j);
     qd_json_end_array(j);
 }
 
@@ -378,6 +394,20 @@ static void write_json(const ham_run *r, qd_buf *b) {
     }
     qd_json_key(&j, "conserved");
     qd_json_bool(&j, h->conserved);
+    qd_json_key(&j, "H_given");
+    qd_json_bool(&j, h->H_given);
+    if (h->H_given && !r->at) { /* the inverse Legendre transform, or why there is none */
+        qd_json_key(&j, "L");
+        if (h->L_from_H)
+            json_expr(r, &j, h->L_from_H);
+        else
+            qd_json_null(&j);
+        qd_json_key(&j, "L_error");
+        if (h->L_from_H)
+            qd_json_null(&j);
+        else
+            qd_json_string(&j, h->L_why);
+    }
     qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
     b->failed = b->failed || !qd_json_ok(&j);
@@ -404,7 +434,8 @@ static int run(ham_run *r) {
     int rc = qd_model_file_load(r->ctx, r->file, &r->mf);
     if (rc == QD_EXIT_OK)
         rc = apply_sets(r);
-    if (rc == QD_EXIT_OK && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
+    bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
+    if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
         rc = qd_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->ctx, r->mf.model, r->e)))
         rc = qd_diag_ctx(r->ctx);

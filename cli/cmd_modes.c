@@ -42,27 +42,16 @@ static const char usage_text[] =
     "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
     "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--set NAME=VALUE]... [--format text|json]";
 
-static const char *option(int argc, char **argv, int *i, const char *opt) {
-    size_t len = strlen(opt);
-    if (strncmp(argv[*i], opt, len))
-        return NULL;
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (argv[*i][len] || *i + 1 >= argc)
-        return NULL;
-    return argv[++*i];
-}
-
 static int parse_option(int argc, char **argv, int *i, void *data) {
     modes_args *a = data;
     const char *v;
-    if ((v = option(argc, argv, i, "--format"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
         if (strcmp(v, "text") && strcmp(v, "json")) {
             qd_diag_error("--format takes text or json, not '%s'", v);
             return QD_EXIT_USAGE;
         }
         a->json = !strcmp(v, "json");
-    } else if ((v = option(argc, argv, i, "--at-equilibrium"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--at-equilibrium"))) {
         char *end;
         a->at_eq = strtol(v, &end, 10);
         if (*end || a->at_eq < 1) {
@@ -70,11 +59,11 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
                           "lists them), not '%s'", v);
             return QD_EXIT_USAGE;
         }
-    } else if ((v = option(argc, argv, i, "--about"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--about"))) {
         a->about = v;
-    } else if ((v = option(argc, argv, i, "--initial"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--initial"))) {
         a->initial = v;
-    } else if ((v = option(argc, argv, i, "--set"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--set"))) {
         if (a->nsets == QD_LIN_MAX_SETS) {
             qd_diag_error("at most %d --set options", QD_LIN_MAX_SETS);
             return QD_EXIT_USAGE;

@@ -1,9 +1,130 @@
-/* cli/cmd_poincare.c - placeholder while `qdot poincare` is being written. */
+/*
+ * cli/cmd_poincare.c - `qdot poincare FILE --section "q1 = 0, q1' > 0"
+ * --n N`: a Poincare surface of section.  The motion is integrated
+ * (qdot/sim.h, dop853 at --rtol by default) and the state at each of the
+ * first N crossings of the section, located to round-off by the
+ * integrator's event machinery, is printed as CSV.
+ */
 #include "cli.h"
 
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim_cli.h"
+
+static const char usage_text[] =
+    "usage: qdot poincare FILE --section \"EXPR = EXPR[, EXPR > EXPR]\" --n N "
+    "[--method M] [--rtol TOL | --dt H] [--atol TOL] [--t-end T_MAX] [--out FILE] "
+    "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... [--native]";
+
+#define DEFAULT_T_MAX 1e6
+
+typedef struct pc_args {
+    qd_sim_args a;
+    const char *section;
+    double n;
+} pc_args;
+
+typedef struct pc_out {
+    FILE *f;
+    size_t ncols, want, got;
+    const char **names; /* the header, written once the run is under way */
+    bool header;
+} pc_out;
+
+static int sink(void *data, int event, const double *row) {
+    pc_out *o = data;
+    if (!o->header) {
+        for (size_t i = 0; i < o->ncols; i++)
+            fprintf(o->f, "%s%s", i ? "," : "", o->names[i]);
+        fputc('\n', o->f);
+        o->header = true;
+    }
+    if (event < 0)
+        return 0;
+    char num[QD_SIM_NUMBER_MAX];
+    for (size_t i = 0; i < o->ncols; i++) {
+        if (i)
+            fputc(',', o->f);
+        fwrite(num, 1, qd_sim_cli_format(num, row[i]), o->f);
+    }
+    fputc('\n', o->f);
+    return ++o->got >= o->want;
+}
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    pc_args *p = data;
+    int rc = qd_sim_cli_option(argc, argv, i, &p->a);
+    if (rc == 1)
+        return QD_EXIT_OK;
+    if (rc > 100)
+        return rc - 100;
+    const char *v;
+    if ((v = qd_sim_cli_value(argc, argv, i, "--section"))) {
+        p->section = v;
+    } else if ((v = qd_sim_cli_value(argc, argv, i, "--n"))) {
+        char *end;
+        p->n = strtod(v, &end);
+        if (end == v || *end || !(p->n >= 1) || p->n > 1e9 || p->n != (double)(size_t)p->n) {
+            qd_diag_error("--n takes a positive whole number, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+    } else {
+        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
 int qd_cmd_poincare(int argc, char **argv) {
-    (void)argc;
-    (void)argv;
-    qd_diag_error("'poincare' is not built yet");
-    return QD_EXIT_FAIL;
+    pc_args p = {.n = 0};
+    int rc = qd_cli_file_args(argc, argv, "poincare", usage_text, &p.a.file, parse_option, &p);
+    if (rc == QD_EXIT_OK && (!p.section || !(p.n >= 1))) {
+        qd_diag_error("%s is missing\n%s", p.section ? "--n" : "--section", usage_text);
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (!p.a.has_t_end) {
+        p.a.t_end = DEFAULT_T_MAX;
+        p.a.has_t_end = true;
+    }
+    p.a.events[0] = p.section;
+    p.a.event_stop[0] = false;
+    p.a.nevents = 1;
+    qd_sim_cli c = {0};
+    rc = qd_sim_cli_setup(&c, &p.a);
+    /* a fixed-step method given --dt: rows only at crossings, so any method works */
+    size_t ncols = rc == QD_EXIT_OK ? qd_sim_columns(c.s, c.opts.method, NULL, 0) : 0;
+    const char **names = rc == QD_EXIT_OK ? malloc((ncols + 1) * sizeof *names) : NULL;
+    FILE *f = NULL;
+    if (rc == QD_EXIT_OK && p.a.out && !(f = fopen(p.a.out, "w"))) {
+        qd_diag_error("cannot write '%s'", p.a.out);
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK && names) {
+        qd_sim_columns(c.s, c.opts.method, names, ncols);
+        pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = (size_t)p.n, .names = names};
+        qd_sim_stats st;
+        qd_status s = qd_sim_run(c.s, &c.opts, sink, &o, &st, NULL);
+        if (s != QD_OK) {
+            rc = qd_sim_cli_fail(&c, s);
+        } else {
+            fprintf(stderr, "qdot: poincare: %s, %zu crossings by t = %g: %zu steps, %zu "
+                            "evaluations, %zu rejected; energy error %.3g\n",
+                    qd_sim_method_name(c.opts.method), o.got, st.t, st.steps, st.evals,
+                    st.rejected, st.energy_error_max);
+            if (o.got < o.want)
+                fprintf(stderr, "qdot: poincare: note: only %zu of %zu crossings before "
+                                "t = %g (raise --t-end)\n", o.got, o.want, st.t);
+        }
+    } else if (rc == QD_EXIT_OK) {
+        rc = QD_EXIT_FAIL;
+    }
+    if (f)
+        fclose(f);
+    free(names);
+    qd_sim_cli_free(&c);
+    return rc;
 }

@@ -1,9 +1,463 @@
-/* cli/cmd_routh.c - placeholder while `qdot routh` is being written. */
+/*
+ * cli/cmd_routh.c - `qdot routh FILE --ignore phi[,psi...]`: Routh's
+ * reduction (qd_routh_derive): the Routhian R = sum p q' - L of the ignored
+ * coordinates (Goldstein's sign) split by degree in the kept velocities, the
+ * effective potential V_eff = R0, the quadratures that give the ignored
+ * velocities back, and the reduced equations M q'' = f of the kept
+ * coordinates with their gyroscopic matrix.  --set replaces parameters.
+ */
 #include "cli.h"
 
+#include <stdlib.h>
+#include <string.h>
+#include "eom_out.h"
+#include "json.h"
+#include "model_file.h"
+#include "qdot/routh.h"
+#include "state.h"
+
+#define MAX_SETS 64
+#define MAX_IGN 32
+
+typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } routh_fmt;
+
+typedef struct routh_run {
+    qd_ctx *ctx;
+    qd_model_file mf;
+    qd_eom *e;
+    qd_routh *r;
+    routh_fmt fmt;
+    const char *file, *ignore, *sets[MAX_SETS];
+    size_t nsets, nsubs, nign;
+    const qd_expr *from[MAX_SETS], *to[MAX_SETS], *ign[MAX_IGN];
+} routh_run;
+
+static const char usage_text[] =
+    "usage: qdot routh FILE --ignore q[,q...] [--format text|json|latex|sympy] "
+    "[--set NAME=VALUE]...";
+
+static int parse_format(const char *v, routh_fmt *f) {
+    static const char *const names[] = {"text", "json", "latex", "sympy"};
+    for (int i = 0; i < 4; i++)
+        if (!strcmp(v, names[i])) {
+            *f = (routh_fmt)i;
+            return QD_EXIT_OK;
+        }
+    qd_diag_error("--format takes text, json, latex or sympy, not '%s'", v);
+    return QD_EXIT_USAGE;
+}
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    routh_run *r = data;
+    const char *v;
+    if ((v = qd_cli_value(argc, argv, i, "--format")))
+        return parse_format(v, &r->fmt);
+    if ((v = qd_cli_value(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
+        r->sets[r->nsets++] = v;
+        return QD_EXIT_OK;
+    }
+    if ((v = qd_cli_value(argc, argv, i, "--ignore")) && !r->ignore) {
+        r->ignore = v;
+        return QD_EXIT_OK;
+    }
+    qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
+    return QD_EXIT_USAGE;
+}
+
+static int parse_args(int argc, char **argv, routh_run *r) {
+    int rc = qd_cli_file_args(argc, argv, "routh", usage_text, &r->file, parse_option, r);
+    if (rc == QD_EXIT_OK && !r->ignore) {
+        qd_diag_error("routh needs --ignore with the cyclic coordinates to ignore\n%s",
+                      usage_text);
+        rc = QD_EXIT_USAGE;
+    }
+    return rc;
+}
+
+static int apply_sets(routh_run *r) {
+    for (size_t i = 0; i < r->nsets; i++) {
+        const qd_expr *p, *v;
+        int rc = qd_state_set(r->ctx, r->mf.model, r->sets[i], &p, &v);
+        if (rc != QD_EXIT_OK)
+            return rc;
+        size_t k = 0;
+        while (k < r->nsubs && r->from[k] != p)
+            k++;
+        r->from[k] = p;
+        r->to[k] = v;
+        r->nsubs += k == r->nsubs;
+    }
+    return QD_EXIT_OK;
+}
+
+/* ---- --ignore ---------------------------------------------------------------- */
+
+static int lookup(routh_run *r, const char *s, size_t len) {
+    char name[128];
+    while (len && (*s == ' ' || s[len - 1] == ' '))
+        s += *s == ' ', len -= 1;
+    if (!len || len >= sizeof name || r->nign == MAX_IGN) {
+        qd_diag_error("--ignore takes a comma-separated list of coordinates, not '%s'", r->ignore);
+        return QD_EXIT_USAGE;
+    }
+    memcpy(name, s, len);
+    name[len] = '\0';
+    const qd_expr *c = qd_routh_lookup(r->ctx, r->mf.model, name);
+    if (!c) {
+        qd_diag_error("--ignore: %s", qd_ctx_message(r->ctx));
+        return QD_EXIT_USAGE;
+    }
+    r->ign[r->nign++] = c;
+    return QD_EXIT_OK;
+}
+
+static int parse_ignore(routh_run *r) {
+    const char *s = r->ignore;
+    int rc = QD_EXIT_OK;
+    while (rc == QD_EXIT_OK) {
+        const char *comma = strchr(s, ',');
+        size_t len = comma ? (size_t)(comma - s) : strlen(s);
+        rc = lookup(r, s, len);
+        if (!comma)
+            break;
+        s = comma + 1;
+    }
+    return rc;
+}
+
+/* A coordinate that is not cyclic, shown at the statement that makes it so. */
+static int check_cyclic(routh_run *r) {
+    for (size_t i = 0; i < r->nign; i++)
+        for (size_t j = 0; j < r->e->n; j++) {
+            const char *why = NULL, *where = NULL;
+            if (r->e->q[j] != r->ign[i] ||
+                !(where = qd_routh_not_cyclic(r->ctx, r->mf.model, r->e, j, &why)))
+                continue;
+            char msg[512];
+            snprintf(msg, sizeof msg, "%s cannot be ignored: %s", qd_expr_name(r->ign[i]), why);
+            qd_model_file_error(&r->mf, where, msg,
+                                "only cyclic coordinates can be ignored: absent from L, with no "
+                                "generalized force and no dissipation");
+            return QD_EXIT_USAGE;
+        }
+    return QD_EXIT_OK;
+}
+
+/* ---- --set ------------------------------------------------------------------- */
+
+static const qd_expr *subs(routh_run *r, const qd_expr *x) {
+    if (!x || !r->nsubs)
+        return x;
+    const qd_expr *y = qd_subs(r->ctx, x, r->nsubs, r->from, r->to);
+    return y == x ? x : qd_simplify(r->ctx, y);
+}
+
+static void subs_all(routh_run *r, size_t n, const qd_expr **x) {
+    for (size_t i = 0; i < n; i++)
+        x[i] = subs(r, x[i]);
+}
+
+static int substitute(routh_run *r) {
+    qd_routh *h = r->r;
+    size_t nk = h->nkeep;
+    subs_all(r, h->nign, h->ignvel);
+    subs_all(r, h->nign, h->pdef);
+    subs_all(r, nk * nk, h->M);
+    subs_all(r, nk, h->f);
+    subs_all(r, nk * nk, h->G);
+    h->R = subs(r, h->R);
+    h->R2 = subs(r, h->R2);
+    h->R1 = subs(r, h->R1);
+    h->R0 = subs(r, h->R0);
+    h->Veff = subs(r, h->Veff);
+    h->h = subs(r, h->h);
+    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(r->ctx);
+}
+
+/* ---- output ---------------------------------------------------------------- */
+
+static qd_format expr_format(routh_fmt f) {
+    return f == FMT_LATEX ? QD_FMT_LATEX : f == FMT_SYMPY ? QD_FMT_SYMPY : QD_FMT_TEXT;
+}
+
+static void put(const routh_run *r, qd_buf *b, const qd_expr *x) {
+    qd_print(r->ctx, x, expr_format(r->fmt), b);
+}
+
+static const char *eol(const routh_run *r) { return r->fmt == FMT_LATEX ? " \\\\\n" : "\n"; }
+
+/* "  lhs = rhs" with lhs printed from a symbol (may be NULL) and a suffix. */
+static void line(const routh_run *r, qd_buf *b, const qd_expr *lhs_x, const char *lhs,
+                 const qd_expr *rhs) {
+    qd_buf_puts(b, "  ");
+    if (lhs_x)
+        put(r, b, lhs_x);
+    qd_buf_printf(b, "%s = ", lhs);
+    put(r, b, rhs);
+    qd_buf_puts(b, eol(r));
+}
+
+static void name_list(qd_buf *b, size_t n, const qd_expr *const *x) {
+    for (size_t i = 0; i < n; i++)
+        qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(x[i]));
+}
+
+static void matrix_lines(const routh_run *r, qd_buf *b, const char *name, const qd_expr **A,
+                         bool upper) {
+    size_t nk = r->r->nkeep;
+    for (size_t i = 0; i < nk; i++)
+        for (size_t j = upper ? i : 0; j < nk; j++) {
+            qd_buf_printf(b, "  %s[%s,%s] = ", name, qd_expr_name(r->r->keep[i]),
+                          qd_expr_name(r->r->keep[j]));
+            put(r, b, A[i * nk + j]);
+            qd_buf_puts(b, eol(r));
+        }
+}
+
+static void write_lines(const routh_run *r, qd_buf *b) {
+    const qd_routh *h = r->r;
+    const char *c = r->fmt == FMT_LATEX ? "% " : "";
+    qd_buf_printf(b, "%smodel: %s\n%signored: ", c, r->mf.path, c);
+    name_list(b, h->nign, h->ign);
+    qd_buf_printf(b, " (momenta, constant: ");
+    name_list(b, h->nign, h->beta);
+    qd_buf_printf(b, ")\n%skept: ", c);
+    name_list(b, h->nkeep, h->keep);
+    qd_buf_printf(b, "\n\n%smomenta and quadratures (the ignored velocities):\n", c);
+    for (size_t i = 0; i < h->nign; i++) {
+        line(r, b, h->beta[i], "", h->pdef[i]);
+        line(r, b, r->e->qd[h->ign_index[i]], "", h->ignvel[i]);
+    }
+    qd_buf_printf(b, "\n%sRouthian R = sum p q' - L (Goldstein's sign), by degree in the kept "
+                     "velocities:\n", c);
+    line(r, b, NULL, "R", h->R);
+    line(r, b, NULL, "R2", h->R2);
+    line(r, b, NULL, "R1", h->R1);
+    line(r, b, NULL, "R0", h->R0);
+    qd_buf_printf(b, "\n%seffective potential V_eff = R0:\n", c);
+    line(r, b, NULL, "V_eff", h->Veff);
+    qd_buf_printf(b, "\n%sreduced equations M q'' = f (Lagrange's equations of -R; M is "
+                     "symmetric: entries with j <= k):\n", c);
+    matrix_lines(r, b, "M", h->M, true);
+    for (size_t k = 0; k < h->nkeep; k++) {
+        qd_buf_printf(b, "  f[%s] = ", qd_expr_name(h->keep[k]));
+        put(r, b, h->f[k]);
+        qd_buf_puts(b, eol(r));
+    }
+    if (h->nkeep > 1) {
+        qd_buf_printf(b, "\n%sgyroscopic matrix G (skew; f contains G q'):\n", c);
+        matrix_lines(r, b, "G", h->G, false);
+    }
+    qd_buf_printf(b, "\n%sJacobi integral of -R:\n", c);
+    line(r, b, NULL, "R0 - R2", h->h);
+    qd_buf_printf(b, "%sconserved: %s\n", c,
+                  h->conserved ? "yes" : "no (explicit t, generalized forces or dissipation)");
+}
+
+static void sympy_list(const routh_run *r, qd_buf *b, const char *name, size_t n,
+                       const qd_expr *const *x) {
+    qd_buf_printf(b, "%s = [", name);
+    for (size_t j = 0; j < n; j++) {
+        qd_buf_puts(b, j ? ", " : "");
+        put(r, b, x[j]);
+    }
+    qd_buf_puts(b, "]\n");
+}
+
+static void sympy_matrix(const routh_run *r, qd_buf *b, const char *name, const qd_expr **A) {
+    size_t nk = r->r->nkeep;
+    qd_buf_printf(b, "%s = Matrix([\n", name);
+    for (size_t i = 0; i < nk; i++) {
+        qd_buf_puts(b, "    [");
+        for (size_t j = 0; j < nk; j++) {
+            qd_buf_puts(b, j ? ", " : "");
+            put(r, b, A[i * nk + j]);
+        }
+        qd_buf_puts(b, "],\n");
+    }
+    qd_buf_puts(b, "])\n");
+}
+
+/* Python defining routh_ignored, routh_kept, routh_momenta, routh_pdef,
+ * routh_quadratures, routh_R, routh_R2, routh_R1, routh_R0, routh_V_eff,
+ * routh_jacobi, routh_M, routh_f, routh_G (prefixed: a model's parameters
+ * are often named M, R or h); coordinates are functions of t. */
+static void write_sympy(const routh_run *r, qd_buf *b) {
+    const qd_routh *h = r->r;
+    const qd_model *m = r->mf.model;
+    qd_buf_printf(b, "# qdot routh %s: routh_M*q.diff(t, 2) = routh_f for the kept coordinates q\n"
+                     "from sympy import *\n\nt = Symbol('t')\n", r->mf.path);
+    for (size_t j = 0; j < r->e->n; j++)
+        qd_buf_printf(b, "%s = Function('%s')\n", qd_expr_name(r->e->q[j]),
+                      qd_expr_name(r->e->q[j]));
+    for (size_t i = 0; i < h->nign; i++)
+        qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(h->beta[i]),
+                      qd_expr_name(h->beta[i]));
+    for (size_t i = 0; i < qd_model_nparams(m); i++)
+        qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(qd_model_param(m, i)),
+                      qd_expr_name(qd_model_param(m, i)));
+    sympy_list(r, b, "routh_ignored", h->nign, h->ign);
+    sympy_list(r, b, "routh_kept", h->nkeep, h->keep);
+    sympy_list(r, b, "routh_momenta", h->nign, h->beta);
+    sympy_list(r, b, "routh_pdef", h->nign, h->pdef);
+    sympy_list(r, b, "routh_quadratures", h->nign, h->ignvel);
+    const char *names[] = {"R", "R2", "R1", "R0", "V_eff", "jacobi"};
+    const qd_expr *vals[] = {h->R, h->R2, h->R1, h->R0, h->Veff, h->h};
+    for (int i = 0; i < 6; i++) {
+        qd_buf_printf(b, "routh_%s = ", names[i]);
+        put(r, b, vals[i]);
+        qd_buf_puts(b, "\n");
+    }
+    sympy_matrix(r, b, "routh_M", h->M);
+    qd_buf_puts(b, "routh_f = Matrix([");
+    for (size_t k = 0; k < h->nkeep; k++) {
+        qd_buf_puts(b, k ? ", " : "");
+        put(r, b, h->f[k]);
+    }
+    qd_buf_puts(b, "])\n");
+    sympy_matrix(r, b, "routh_G", h->G);
+    qd_buf_printf(b, "routh_conserved = %s\n", h->conserved ? "True" : "False");
+}
+
+static void json_expr(const routh_run *r, qd_json *j, const qd_expr *x) {
+    qd_buf s = QD_BUF_INIT;
+    qd_print(r->ctx, x, QD_FMT_TEXT, &s);
+    qd_json_string(j, qd_buf_str(&s));
+    qd_buf_free(&s);
+}
+
+static void json_list(const routh_run *r, qd_json *j, const char *key, size_t n,
+                      const qd_expr *const *x) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < n; k++)
+        json_expr(r, j, x[k]);
+    qd_json_end_array(j);
+}
+
+static void json_names(qd_json *j, const char *key, size_t n, const qd_expr *const *x) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < n; k++)
+        qd_json_string(j, qd_expr_name(x[k]));
+    qd_json_end_array(j);
+}
+
+static void json_matrix(const routh_run *r, qd_json *j, const char *key, const qd_expr **A) {
+    size_t nk = r->r->nkeep;
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < nk; i++) {
+        qd_json_begin_array(j);
+        for (size_t k = 0; k < nk; k++)
+            json_expr(r, j, A[i * nk + k]);
+        qd_json_end_array(j);
+    }
+    qd_json_end_array(j);
+}
+
+/* The equations by kept coordinate: {"q": name, "M": [row], "f": f}. */
+static void json_equations(const routh_run *r, qd_json *j) {
+    const qd_routh *h = r->r;
+    qd_json_key(j, "equations");
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < h->nkeep; k++) {
+        qd_json_begin_object(j);
+        qd_json_key(j, "q");
+        qd_json_string(j, qd_expr_name(h->keep[k]));
+        json_list(r, j, "M", h->nkeep, h->M + k * h->nkeep);
+        qd_json_key(j, "f");
+        json_expr(r, j, h->f[k]);
+        qd_json_end_object(j);
+    }
+    qd_json_end_array(j);
+}
+
+static void json_quadratures(const routh_run *r, qd_json *j) {
+    const qd_routh *h = r->r;
+    qd_json_key(j, "quadratures");
+    qd_json_begin_object(j);
+    for (size_t i = 0; i < h->nign; i++) {
+        qd_json_key(j, qd_expr_name(r->e->qd[h->ign_index[i]]));
+        json_expr(r, j, h->ignvel[i]);
+    }
+    qd_json_end_object(j);
+}
+
+static void write_json(const routh_run *r, qd_buf *b) {
+    const qd_routh *h = r->r;
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "file");
+    qd_json_string(&j, r->mf.path);
+    json_names(&j, "ignored", h->nign, h->ign);
+    json_names(&j, "momenta", h->nign, h->beta);
+    json_names(&j, "kept", h->nkeep, h->keep);
+    json_list(r, &j, "momentum_definitions", h->nign, h->pdef);
+    const char *names[] = {"R", "R2", "R1", "R0", "effective_potential", "jacobi_integral"};
+    const qd_expr *vals[] = {h->R, h->R2, h->R1, h->R0, h->Veff, h->h};
+    for (int i = 0; i < 6; i++) {
+        qd_json_key(&j, names[i]);
+        json_expr(r, &j, vals[i]);
+    }
+    json_equations(r, &j);
+    json_matrix(r, &j, "gyroscopic", h->G);
+    json_quadratures(r, &j);
+    qd_json_key(&j, "conserved");
+    qd_json_bool(&j, h->conserved);
+    qd_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+    b->failed = b->failed || !qd_json_ok(&j);
+}
+
+static int emit(routh_run *r) {
+    qd_buf b = QD_BUF_INIT;
+    if (r->fmt == FMT_JSON)
+        write_json(r, &b);
+    else if (r->fmt == FMT_SYMPY)
+        write_sympy(r, &b);
+    else
+        write_lines(r, &b);
+    bool ok = !b.failed;
+    if (ok)
+        fputs(qd_buf_str(&b), stdout);
+    else
+        qd_diag_error("cannot print the Routhian");
+    qd_buf_free(&b);
+    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+}
+
+static int run(routh_run *r) {
+    int rc = qd_model_file_load(r->ctx, r->file, &r->mf);
+    if (rc == QD_EXIT_OK)
+        rc = apply_sets(r);
+    if (rc == QD_EXIT_OK)
+        rc = parse_ignore(r);
+    if (rc == QD_EXIT_OK && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
+        rc = qd_eom_derive_error(r->ctx, &r->mf);
+    if (rc == QD_EXIT_OK)
+        rc = check_cyclic(r);
+    if (rc == QD_EXIT_OK && !(r->r = qd_routh_derive(r->ctx, r->mf.model, r->e, r->nign, r->ign)))
+        rc = qd_diag_ctx(r->ctx);
+    if (rc == QD_EXIT_OK)
+        rc = substitute(r);
+    return rc == QD_EXIT_OK ? emit(r) : rc;
+}
+
 int qd_cmd_routh(int argc, char **argv) {
-    (void)argc;
-    (void)argv;
-    qd_diag_error("'routh' is not built yet");
-    return QD_EXIT_FAIL;
+    routh_run r = {.fmt = FMT_TEXT};
+    int rc = parse_args(argc, argv, &r);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (!(r.ctx = qd_ctx_new())) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = run(&r);
+    qd_routh_free(r.r);
+    qd_eom_free(r.e);
+    qd_model_file_free(&r.mf);
+    qd_ctx_free(r.ctx);
+    return rc;
 }

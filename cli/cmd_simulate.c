@@ -1,9 +1,252 @@
-/* cli/cmd_simulate.c - placeholder while `qdot simulate` is being written. */
+/*
+ * cli/cmd_simulate.c - `qdot simulate FILE --t-end T`: integrate the
+ * equations of motion (qdot/sim.h) and write the trajectory as CSV (t, the
+ * coordinates, velocities, momenta for the symplectic methods, the energy,
+ * constraint residuals, --output columns), with a summary on stderr; with
+ * --format json a JSON document on stdout (summary, final state, and the
+ * rows unless --out takes them).
+ */
+#define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "json.h"
+#include "sim_cli.h"
+
+static const char usage_text[] =
+    "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--atol TOL] "
+    "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf] "
+    "[--out FILE] [--output \"EXPR, ...\"] [--event \"EXPR = 0, EXPR > 0\"]... "
+    "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
+    "[--format csv|json] [--native] [--no-project] [--max-steps N]";
+
+typedef struct sim_out {
+    FILE *csv;            /* rows as CSV, or NULL */
+    qd_json *json;        /* rows into the JSON document, or NULL */
+    size_t ncols, rows;
+    bool events;          /* an `event` column */
+    double t0, t_end;
+    struct timespec start;
+    bool progress, shown;
+    size_t calls;
+    const char **names;   /* the CSV header, written with the first row */
+    bool header;
+    char *line;           /* one CSV row */
+} sim_out;
+
+static double elapsed(const struct timespec *start) {
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - start->tv_sec) + 1e-9 * (double)(now.tv_nsec - start->tv_nsec);
+}
+
+static void progress(sim_out *o, double t) {
+    if (!o->progress || ++o->calls % 256)
+        return;
+    double w = elapsed(&o->start);
+    if (w < 1)
+        return;
+    double frac = (t - o->t0) / (o->t_end - o->t0);
+    int bar = (int)(frac * 30);
+    fprintf(stderr, "\rqdot: simulate [%-30.*s] %3.0f%%  t = %-12.6g", bar,
+            "##############################", 100 * frac, t);
+    o->shown = true;
+}
+
+static void write_header(sim_out *o) {
+    for (size_t i = 0; i < o->ncols; i++)
+        fprintf(o->csv, "%s%s", i ? "," : "", o->names[i]);
+    fputs(o->events ? ",event\n" : "\n", o->csv);
+    o->header = true;
+}
+
+static int sink(void *data, int event, const double *row) {
+    sim_out *o = data;
+    o->rows++;
+    if (o->csv) {
+        /* the header only once the run is under way: a refused run prints nothing */
+        if (!o->header)
+            write_header(o);
+        size_t k = 0;
+        for (size_t i = 0; i < o->ncols; i++) {
+            if (i)
+                o->line[k++] = ',';
+            k += qd_sim_cli_format(o->line + k, row[i]);
+        }
+        if (o->events)
+            k += (size_t)snprintf(o->line + k, 16, ",%d", event + 1);
+        o->line[k++] = '\n';
+        fwrite(o->line, 1, k, o->csv);
+    } else if (o->json) {
+        qd_json_begin_array(o->json);
+        for (size_t i = 0; i < o->ncols; i++)
+            qd_json_number(o->json, row[i]);
+        if (o->events)
+            qd_json_number(o->json, event + 1);
+        qd_json_end_array(o->json);
+    }
+    progress(o, row[0]);
+    return 0;
+}
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    qd_sim_args *a = data;
+    int rc = qd_sim_cli_option(argc, argv, i, a);
+    if (rc == 1)
+        return QD_EXIT_OK;
+    if (rc > 100)
+        return rc - 100;
+    const char *v;
+    bool stop;
+    if ((v = qd_sim_cli_value(argc, argv, i, "--format"))) {
+        if (strcmp(v, "csv") && strcmp(v, "json")) {
+            qd_diag_error("--format takes csv or json, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+        a->json = !strcmp(v, "json");
+    } else if ((v = qd_sim_cli_value(argc, argv, i, "--output"))) {
+        a->output = v;
+    } else if ((stop = !strncmp(argv[*i], "--stop-at", 9), 0) ||
+               (v = qd_sim_cli_value(argc, argv, i, "--event")) ||
+               (v = qd_sim_cli_value(argc, argv, i, "--stop-at"))) {
+        if (a->nevents == QD_SIM_MAX_LIST) {
+            qd_diag_error("at most %d events", QD_SIM_MAX_LIST);
+            return QD_EXIT_USAGE;
+        }
+        a->event_stop[a->nevents] = stop;
+        a->events[a->nevents++] = v;
+    } else {
+        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static void summary_json(qd_json *j, const qd_sim_cli *c, const qd_sim_stats *st, double wall,
+                         const char **names, size_t ncols, const double *final) {
+    qd_json_key(j, "method");
+    qd_json_string(j, qd_sim_method_name(c->opts.method));
+    qd_json_key(j, "steps");
+    qd_json_number(j, (double)st->steps);
+    qd_json_key(j, "evaluations");
+    qd_json_number(j, (double)st->evals);
+    qd_json_key(j, "rejected");
+    qd_json_number(j, (double)st->rejected);
+    qd_json_key(j, "wall_s");
+    qd_json_number(j, wall);
+    qd_json_key(j, "energy_error_max");
+    qd_json_number(j, st->energy_error_max);
+    qd_json_key(j, "constraint_error_max");
+    qd_json_number(j, st->constraint_error_max);
+    qd_json_key(j, "events");
+    qd_json_number(j, (double)st->events);
+    qd_json_key(j, "final");
+    qd_json_begin_object(j);
+    for (size_t i = 0; i < ncols; i++) {
+        qd_json_key(j, names[i]);
+        qd_json_number(j, final[i]);
+    }
+    qd_json_end_object(j);
+}
+
+static int run(qd_sim_cli *c, const qd_sim_args *a) {
+    size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
+    const char **names = malloc((ncols + 1) * sizeof *names);
+    double *final = malloc((ncols + 1) * sizeof *final);
+    char *line = malloc((ncols + 1) * (QD_SIM_NUMBER_MAX + 1) + 16);
+    if (!names || !final || !line) {
+        free(names);
+        free(final);
+        free(line);
+        return QD_EXIT_FAIL;
+    }
+    qd_sim_columns(c->s, c->opts.method, names, ncols);
+    sim_out o = {.ncols = ncols, .events = a->nevents > 0, .t0 = c->opts.t0,
+                 .t_end = c->opts.t_end, .progress = isatty(2), .names = names, .line = line};
+    FILE *file = NULL;
+    if (a->out && !(file = fopen(a->out, "w"))) {
+        qd_diag_error("cannot write '%s'", a->out);
+        free(names);
+        free(final);
+        free(line);
+        return QD_EXIT_USAGE;
+    }
+    qd_buf jb = QD_BUF_INIT;
+    qd_json j;
+    qd_json_init(&j, &jb);
+    if (a->json)
+        qd_json_begin_object(&j);
+    o.csv = file ? file : a->json ? NULL : stdout;
+    if (!o.csv) {
+        qd_json_key(&j, "columns");
+        qd_json_begin_array(&j);
+        for (size_t i = 0; i < ncols; i++)
+            qd_json_string(&j, names[i]);
+        if (o.events)
+            qd_json_string(&j, "event");
+        qd_json_end_array(&j);
+        qd_json_key(&j, "rows");
+        qd_json_begin_array(&j);
+        o.json = &j;
+    }
+    clock_gettime(CLOCK_MONOTONIC, &o.start);
+    qd_sim_stats st;
+    qd_status s = qd_sim_run(c->s, &c->opts, sink, &o, &st, final);
+    double wall = elapsed(&o.start);
+    if (o.shown)
+        fprintf(stderr, "\r%70s\r", "");
+    if (o.json)
+        qd_json_end_array(&j);
+    if (file)
+        fclose(file);
+    int rc = QD_EXIT_OK;
+    if (s != QD_OK) {
+        rc = qd_sim_cli_fail(c, s);
+    } else {
+        fprintf(stderr,
+                "qdot: simulate: %s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, "
+                "%.3g s; energy error %.3g, constraint error %.3g%s\n",
+                qd_sim_method_name(c->opts.method), c->opts.t0, st.t, st.steps, st.evals,
+                st.rejected, wall, st.energy_error_max, st.constraint_error_max,
+                qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
+        if (st.events)
+            fprintf(stderr, "qdot: simulate: %zu events\n", st.events);
+        if (a->json) {
+            summary_json(&j, c, &st, wall, names, ncols, final);
+            qd_json_end_object(&j);
+            if (qd_json_ok(&j) && !jb.failed)
+                printf("%s\n", qd_buf_str(&jb));
+            else {
+                qd_diag_error("the result has a non-finite number; JSON cannot hold it");
+                rc = QD_EXIT_FAIL;
+            }
+        }
+    }
+    qd_buf_free(&jb);
+    free(names);
+    free(final);
+    free(line);
+    return rc;
+}
+
 int qd_cmd_simulate(int argc, char **argv) {
-    (void)argc;
-    (void)argv;
-    qd_diag_error("'simulate' is not built yet");
-    return QD_EXIT_FAIL;
+    qd_sim_args a = {0};
+    int rc = qd_cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &a);
+    if (rc == QD_EXIT_OK && !a.has_t_end) {
+        qd_diag_error("--t-end is missing\n%s", usage_text);
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_sim_cli c = {0};
+    rc = qd_sim_cli_setup(&c, &a);
+    if (rc == QD_EXIT_OK)
+        rc = run(&c, &a);
+    qd_sim_cli_free(&c);
+    return rc;
 }

@@ -711,6 +711,13 @@ int qd_eom_derive_error(const qd_ctx *ctx, const qd_model_file *mf) {
     }
     if (qd_ctx_status(ctx) != QD_ERR_SINGULAR)
         return qd_diag_ctx(ctx);
+    if (qd_model_hamiltonian_given(m)) {
+        qd_model_file_error(mf, "H", msg,
+                            "a Lagrangian needs H quadratic in the momenta with d^2H/dp^2 "
+                            "invertible; Hamilton's equations are still given by "
+                            "`qdot hamiltonian`");
+        return QD_EXIT_USAGE;
+    }
     qd_model_file_error(mf, qd_model_lagrangian_given(m) ? "L" : "T", msg,
                         "every coordinate needs inertia: its velocity must appear "
                         "quadratically in T (or L)");

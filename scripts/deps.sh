@@ -9,7 +9,7 @@ case $what in
   test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy" ;;
 esac
 case $what in
-  bench) pkgs="$pkgs g++ libginac-dev" ;;
+  bench) pkgs="$pkgs g++ libginac-dev python3-scipy libgsl-dev" ;;
 esac
 
 missing=""

@@ -10,7 +10,12 @@
  *     dq_j/dt = dH/dp_j
  *     dp_j/dt = -dH/dq_j + Q_j - dD/dq'_j          (the last two: extra_j)
  *
- * The momenta are plain symbols named p_<coordinate>.  The energy compared
+ * A model given by its Hamiltonian (`momenta ...` and `H = ...`) is taken as
+ * it is: Hamilton's equations come from H directly, and the Lagrangian from
+ * the inverse Legendre transform (qd_legendre_inverse) when H is regular.
+ *
+ * The momenta are plain symbols named p_<coordinate>, or as the model's
+ * `momenta` line names them.  The energy compared
  * with H is E = T + V + U0, U0 the velocity-free part of the generalized
  * potential U (q phi for a charge): H = E unless the kinetic energy has
  * parts T1, T0 linear in or free of the velocities (rheonomic coordinates).
@@ -30,9 +35,11 @@ extern "C" {
 
 typedef struct qd_ham {
     size_t n;
-    const qd_expr **q;      /* the coordinates (the eom's) */
+    const qd_expr **q;      /* the coordinates (the eom's, or the model's for an H model) */
+    const qd_expr **qd;     /* their velocities q'_j */
     const qd_expr **p;      /* the momenta, symbols p_<q> */
-    const qd_expr **pdef;   /* dL/dq'_j in q, q', t */
+    const qd_expr **pdef;   /* dL/dq'_j in q, q', t (for an H model: p_j solved from
+                               q' = dH/dp, NULL entries when H is not regular) */
     const qd_expr **vel;    /* q'_j in q, p, t */
     const qd_expr *H;       /* in q, p, t, simplified */
     const qd_expr **dq;     /* dH/dp_j */
@@ -42,14 +49,32 @@ typedef struct qd_ham {
                                  when the model gives L and no T */
     bool is_energy;         /* H_minus_E simplified to 0 */
     bool conserved;         /* no explicit t in H, every Q_j 0 and no D */
+    bool H_given;           /* the model gives H (qd_model_hamiltonian_given) */
+    const qd_expr *L_from_H; /* H models: L = sum p q' - H in q, q', t, simplified;
+                                NULL when H is not regular (then L_why says why) */
+    char L_why[256];
 } qd_ham;
 
 /* The Hamiltonian of model m from its derived equations e (qd_eom_derive).
  * Constraints (or eliminated coordinates) are QD_ERR_ARG, momenta that are
  * not linear in the velocities QD_ERR_NONLINEAR, a singular mass matrix
- * QD_ERR_SINGULAR.  NULL on failure, reason in the context. */
+ * QD_ERR_SINGULAR.  NULL on failure, reason in the context.
+ * For a model given by H, e is not used (it may be NULL): the equations are
+ * dq_j/dt = dH/dp_j, dp_j/dt = -dH/dq_j + Q_j - dD/dq'_j (q' = dH/dp), and
+ * L_from_H is filled when H is regular; constraints are QD_ERR_ARG. */
 qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
 void qd_ham_free(qd_ham *h);
+
+/* The inverse Legendre transform of a model given by H (Desloge ch. 71,
+ * Appendix 22): q' = dH/dp solved for p, L = sum p q' - H, simplified, in
+ * q, q', t.  H quadratic in the momenta gives a linear system; otherwise
+ * QD_ERR_NONLINEAR.  A singular d^2H/dp^2 (H = p_x) is QD_ERR_SINGULAR
+ * naming the momentum that q' does not determine; a model not given by H is
+ * QD_ERR_ARG.  NULL on failure, reason in the context.  pdef (n entries, may
+ * be NULL) receives p_j(q, q', t). */
+const qd_expr *qd_legendre_inverse(qd_ctx *ctx, const qd_model *m);
+qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **pdef,
+                                const qd_expr **L);
 
 #ifdef __cplusplus
 }

@@ -40,8 +40,9 @@ void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf
 typedef struct qd_model qd_model;
 
 /* Parse a model.  NULL on error with *diag filled (diag may be NULL); a model
- * that parses is complete and consistent (T or L given, every name known,
- * every parameter valued).  text must stay alive while the model is used. */
+ * that parses is complete and consistent (T, L or momenta and H given, every
+ * name known, every parameter valued).  text must stay alive while the model
+ * is used. */
 qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag);
 void qd_model_free(qd_model *m);
 
@@ -55,7 +56,8 @@ const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its number 
 qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value);
 
 /* The mechanical content; NULL where the model gives none.  lagrangian is
- * L as given, or T - V - U. */
+ * L as given, or T - V - U; NULL for a model given by H (its L is the
+ * mechanics layer's inverse Legendre transform, qd_legendre_inverse). */
 const qd_expr *qd_model_kinetic(const qd_model *m);      /* T (particles, bodies and T = ...) */
 const qd_expr *qd_model_potential(const qd_model *m);    /* V */
 const qd_expr *qd_model_gen_potential(const qd_model *m);/* U, velocity-dependent */
@@ -97,6 +99,24 @@ const qd_expr *qd_model_body_rotation(const qd_model *m, size_t i, unsigned row,
 const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k);
 const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k);
 
+/* Hamiltonian models (`momenta p_r, ...` and `H = ...`).  The momenta are
+ * plain symbols; `momenta` with T or L (no H) only names them. */
+bool qd_model_hamiltonian_given(const qd_model *m);
+const qd_expr *qd_model_hamiltonian(const qd_model *m);       /* H as given, or NULL */
+const qd_expr *qd_model_momentum(const qd_model *m, size_t i); /* the symbol named in `momenta`
+                                                                   for coordinate i, or NULL */
+/* Symmetries (`symmetry [NAME:] ...`): q_j -> q_j + eps xi_j, xi in q and t
+ * (from a finite form: d/deps at eps = 0, simplified).  Unnamed: s1, s2, ... */
+size_t qd_model_nsymmetries(const qd_model *m);
+const char *qd_model_symmetry_name(const qd_model *m, size_t i);
+const qd_expr *qd_model_symmetry_field(const qd_model *m, size_t i, size_t coord); /* xi_j (0 when
+                                                                   not moved); NULL out of range */
+/* Proposed integrals (`integral [NAME:] expr`): in q, q', t (in q, the
+ * momenta, t for a model given by H).  Unnamed: I1, I2, ... */
+size_t qd_model_nintegrals(const qd_model *m);
+const char *qd_model_integral_name(const qd_model *m, size_t i);
+const qd_expr *qd_model_integral(const qd_model *m, size_t i);
+
 /* Initial values: the value of a coordinate (order 0) or velocity (order 1)
  * named in `initial`, or NULL. */
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);
@@ -107,9 +127,10 @@ const qd_expr *qd_model_definition(const qd_model *m, const char *name);
 
 /* Where a statement of the model stands, for errors found after parsing
  * ("the mass matrix is singular" points at the T line).  what: "T", "V", "L",
- * "U", "dissipation", "coordinates", a coordinate's name, "constraint:NAME"
- * or "body:NAME" (the body's name on its line).  false when the
- * model has no such statement. */
+ * "U", "H", "dissipation", "coordinates", "momenta", a coordinate's name,
+ * "constraint:NAME", "body:NAME" (the body's name on its line),
+ * "symmetry:NAME" or "integral:NAME" (the label, or the statement's first
+ * item when unnamed).  false when the model has no such statement. */
 bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
 
 #ifdef __cplusplus

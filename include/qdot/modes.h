@@ -61,7 +61,7 @@ typedef struct qd_linear {
  * imaginary axis of a non-conservative system. */
 typedef struct qd_modes_result {
     size_t n;
-    bool conservative;     /* C = 0 and G = 0 */
+    bool conservative;     /* C = 0, G = 0 and K symmetric */
     double *omega2;        /* n, ascending (conservative case), w^2 < 0 unstable */
     double *shapes;        /* n*n, column j = mode j, a^T M a = 1 (row-major: shapes[i*n+j]) */
     size_t neig;           /* 2n */

@@ -13,8 +13,13 @@
 #include "mech.h"
 #include "canonical.h"
 #include "hamilton.h"
+#include "integrals.h"
+#include "sim.h"
+#include "codegen.h"
 #include "equilibria.h"
 #include "modes.h"
+#include "routh.h"
+#include "stability.h"
 
 #define QDOT_VERSION "0.1.0"
 

@@ -24,7 +24,8 @@ typedef enum qd_status {
     QD_ERR_UNBOUND,    /* numeric evaluation met a symbol with no value */
     QD_ERR_SINGULAR,   /* a singular matrix */
     QD_ERR_NUMERIC,    /* numerical failure: overflow, step size underflow, no convergence */
-    QD_ERR_TOOBIG      /* a result would exceed a documented size limit */
+    QD_ERR_TOOBIG,     /* a result would exceed a documented size limit */
+    QD_ERR_UNSUPPORTED /* the platform lacks something needed (no C compiler for native code) */
 } qd_status;
 
 /* A short English name of the status ("division by zero"); never NULL. */

@@ -272,7 +272,14 @@ qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out
     }
     double scale = sqrt(max_abs(nn, lin->K) * max_abs(nn, lin->M));
     double cg = fmax(max_abs(nn, lin->C), max_abs(nn, lin->G));
-    out->conservative = cg == 0 || cg <= 1e-12 * scale;
+    /* Circulatory forces (Q depending on q, not from a potential) make K
+     * unsymmetric: dsygvd would read only one triangle and answer wrongly,
+     * so such a K goes to the state-space problem like damping does. */
+    double skew = 0;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < i; j++)
+            skew = fmax(skew, fabs(lin->K[i * n + j] - lin->K[j * n + i]));
+    out->conservative = (cg == 0 || cg <= 1e-12 * scale) && skew <= 1e-12 * max_abs(nn, lin->K);
     qd_status st;
     if (out->conservative) {
         out->omega2 = calloc(n + 1, sizeof *out->omega2);

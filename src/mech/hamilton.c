@@ -8,6 +8,7 @@
  * and often diagonal, so plain elimination beats a fraction-free scheme.
  */
 #include "qdot/hamilton.h"
+#include "legendre.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,6 +20,9 @@ static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_
 void qd_ham_free(qd_ham *h) {
     if (!h)
         return;
+    if (h->H_given)
+        free(h->q);
+    free(h->qd);
     free(h->p);
     free(h->pdef);
     free(h->vel);
@@ -39,61 +43,22 @@ static qd_ham *ham_alloc(size_t n) {
     h->dq = arr(n);
     h->dp = arr(n);
     h->extra = arr(n);
-    if (!h->p || !h->pdef || !h->vel || !h->dq || !h->dp || !h->extra) {
+    h->qd = arr(n);
+    if (!h->qd || !h->p || !h->pdef || !h->vel || !h->dq || !h->dp || !h->extra) {
         qd_ham_free(h);
         return NULL;
     }
     return h;
 }
 
-static qd_status momenta(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
+static qd_status momenta(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
     for (size_t j = 0; j < e->n; j++) {
         char name[256];
         snprintf(name, sizeof name, "p_%s", qd_expr_name(e->q[j]));
-        h->p[j] = qd_symbol(ctx, name);
+        h->qd[j] = e->qd[j];
+        h->p[j] = qd_model_momentum(m, j) ? qd_model_momentum(m, j) : qd_symbol(ctx, name);
         h->pdef[j] = qd_simplify(ctx, qd_diff(ctx, e->L, e->qd[j]));
         if (!h->p[j] || !h->pdef[j])
-            return qd_ctx_status(ctx);
-    }
-    return QD_OK;
-}
-
-/* Forward elimination on the augmented n x (n+1) matrix A, row-major. */
-static qd_status eliminate(qd_ctx *ctx, size_t n, const qd_expr **A) {
-    size_t w = n + 1;
-    for (size_t k = 0; k < n; k++) {
-        size_t piv = k;
-        while (piv < n && qd_is_zero(A[piv * w + k] = qd_simplify(ctx, A[piv * w + k])))
-            piv++;
-        if (piv == n) {
-            qd_ctx_error(ctx, QD_ERR_SINGULAR,
-                         "the mass matrix is singular: the momenta do not determine the velocities");
-            return QD_ERR_SINGULAR;
-        }
-        for (size_t c = 0; piv != k && c < w; c++) {
-            const qd_expr *t = A[k * w + c];
-            A[k * w + c] = A[piv * w + c];
-            A[piv * w + c] = t;
-        }
-        for (size_t r = k + 1; r < n; r++) {
-            const qd_expr *f = qd_div(ctx, A[r * w + k], A[k * w + k]);
-            for (size_t c = k; c < w; c++)
-                A[r * w + c] = qd_sub(ctx, A[r * w + c], qd_mul(ctx, f, A[k * w + c]));
-        }
-        if (qd_ctx_status(ctx) != QD_OK)
-            return qd_ctx_status(ctx);
-    }
-    return QD_OK;
-}
-
-static qd_status back_substitute(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x) {
-    size_t w = n + 1;
-    for (size_t k = n; k-- > 0;) {
-        const qd_expr *s = A[k * w + n];
-        for (size_t c = k + 1; c < n; c++)
-            s = qd_sub(ctx, s, qd_mul(ctx, A[k * w + c], x[c]));
-        x[k] = qd_simplify(ctx, qd_div(ctx, s, A[k * w + k]));
-        if (!x[k])
             return qd_ctx_status(ctx);
     }
     return QD_OK;
@@ -122,10 +87,12 @@ static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
     qd_status st = QD_OK;
     for (size_t j = 0; st == QD_OK && j < n; j++)
         st = row(ctx, e, h, j, A + j * (n + 1));
+    size_t bad = 0;
     if (st == QD_OK)
-        st = eliminate(ctx, n, A);
-    if (st == QD_OK)
-        st = back_substitute(ctx, n, A, h->vel);
+        st = qd__gauss_solve(ctx, n, A, h->vel, &bad);
+    if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, st, "the mass matrix is singular: the momenta do not determine the "
+                              "velocities");
     free(A);
     return st;
 }
@@ -183,7 +150,7 @@ static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
 }
 
 static qd_status derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
-    qd_status st = momenta(ctx, e, h);
+    qd_status st = momenta(ctx, m, e, h);
     if (st == QD_OK)
         st = velocities(ctx, e, h);
     if (st == QD_OK)
@@ -196,8 +163,21 @@ static qd_status derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
 }
 
 qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
-    if (!ctx || !m || !e)
+    if (!ctx || !m || (!e && !qd_model_hamiltonian_given(m)))
         return NULL;
+    if (qd_model_hamiltonian_given(m)) {
+        qd_ham *h = ham_alloc(qd_model_ncoords(m));
+        if (!h) {
+            qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Hamiltonian");
+            return NULL;
+        }
+        h->H_given = true;
+        if (qd__ham_from_H(ctx, m, h) != QD_OK) {
+            qd_ham_free(h);
+            return NULL;
+        }
+        return h;
+    }
     if (e->ncon || e->nelim) {
         qd_ctx_error(ctx, QD_ERR_ARG, "Hamilton's equations with constraints are not supported yet");
         return NULL;

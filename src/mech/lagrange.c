@@ -15,6 +15,7 @@
  * --eliminate some are substituted first (eliminate.c).
  */
 #include "mech.h"
+#include "qdot/hamilton.h"
 
 #include <assert.h>
 #include <math.h>
@@ -273,7 +274,10 @@ qd_status qd__sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s) {
     s->T = qd_model_kinetic(m);
     s->V = qd_model_potential(m);
     s->U = qd_model_gen_potential(m);
-    s->L = qd_model_lagrangian(m);
+    /* a model given by H: its Lagrangian by the inverse Legendre transform */
+    s->L = qd_model_hamiltonian_given(m) ? qd_legendre_inverse(ctx, m) : qd_model_lagrangian(m);
+    if (!s->L && qd_model_hamiltonian_given(m))
+        return qd_ctx_status(ctx);
     s->D = qd_model_dissipation(m);
     return QD_OK;
 }

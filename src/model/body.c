@@ -204,6 +204,8 @@ static bool body_build(parser *p, body *b, value v[NCLAUSES], bool has_R) {
 }
 
 bool stmt_body(parser *p) {
+    if (!no_hamiltonian_yet(p, "a body", p->lx.tok.off, p->lx.tok.len))
+        return false;
     lex_next(&p->lx);
     if (p->lx.tok.kind != TK_IDENT)
         return perr_tok(p, body_usage, "expected a body name, found %s", tk_name(p->lx.tok.kind));

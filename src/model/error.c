@@ -131,7 +131,8 @@ const char **known_names(const parser *p, size_t *count) {
         "cone", "box", "omega", "omega_space", "point", "rotation", "position",
     };
     size_t nextra = sizeof extra / sizeof extra[0];
-    size_t cap = m->ncoords + m->nparams + m->ndefs + m->nfuncs + QD_FUNC_COUNT + nextra, n = 0;
+    size_t cap = 2 * m->ncoords + m->nparams + m->ndefs + m->nfuncs + QD_FUNC_COUNT + nextra + 1,
+           n = 0;
     const char **v = malloc(cap * sizeof *v);
     if (!v) {
         *count = 0;
@@ -141,6 +142,10 @@ const char **known_names(const parser *p, size_t *count) {
         v[n++] = qd_expr_name(m->coords[i]);
     for (size_t i = 0; i < m->nparams; i++)
         v[n++] = qd_expr_name(m->params[i]);
+    for (size_t i = 0; m->mom && i < m->ncoords; i++)
+        v[n++] = qd_expr_name(m->mom[i]);
+    if (p->eps_ok)
+        v[n++] = "eps";
     for (size_t i = 0; i < m->ndefs; i++)
         v[n++] = m->defs[i].name;
     for (size_t i = 0; i < m->nfuncs; i++)

@@ -213,8 +213,19 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
             *out = scalar(m->params[i], off, n);
             return true;
         }
+    const qd_expr *mom = model_find_momentum(m, s + off, n);
+    if (mom && !p->momenta_ok)
+        return perr(p, off, n, "use the momenta in H = ... or in an integral; elsewhere write "
+                    "the velocities", "'%s' is a momentum, which means nothing here",
+                    qd_expr_name(mom));
+    if (mom) {
+        *out = scalar(mom, off, n);
+        return true;
+    }
     const qd_expr *k = NULL;
-    if (name_is(s, off, n, "t"))
+    if (p->eps_ok && name_is(s, off, n, "eps"))
+        k = eps_symbol(C(p));
+    else if (name_is(s, off, n, "t"))
         k = qd_time(C(p));
     else if (name_is(s, off, n, "pi"))
         k = qd_const(C(p), QD_PI);

@@ -73,6 +73,15 @@ void qd_model_free(qd_model *m) {
     for (size_t i = 0; i < m->nreactions; i++)
         free((char *)m->reactions[i].name);
     free(m->reactions);
+    for (size_t i = 0; i < m->nsyms; i++) {
+        free((char *)m->syms[i].name);
+        free(m->syms[i].xi);
+    }
+    free(m->syms);
+    for (size_t i = 0; i < m->nints; i++)
+        free((char *)m->ints[i].name);
+    free(m->ints);
+    free(m->mom);
     free(m->con_names);
     free(m->cons);
     free(m->coords);
@@ -184,6 +193,35 @@ const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k) {
 const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k) {
     const body *b = body_at(m, i);
     return b && k < 3 ? b->ws[k] : NULL;
+}
+
+bool qd_model_hamiltonian_given(const qd_model *m) { return m->H != NULL; }
+const qd_expr *qd_model_hamiltonian(const qd_model *m) { return m->H; }
+const qd_expr *qd_model_momentum(const qd_model *m, size_t i) {
+    return m->mom && i < m->ncoords ? m->mom[i] : NULL;
+}
+
+size_t qd_model_nsymmetries(const qd_model *m) { return m->nsyms; }
+const char *qd_model_symmetry_name(const qd_model *m, size_t i) {
+    return i < m->nsyms ? m->syms[i].name : NULL;
+}
+const qd_expr *qd_model_symmetry_field(const qd_model *m, size_t i, size_t coord) {
+    return i < m->nsyms && coord < m->ncoords ? m->syms[i].xi[coord] : NULL;
+}
+
+size_t qd_model_nintegrals(const qd_model *m) { return m->nints; }
+const char *qd_model_integral_name(const qd_model *m, size_t i) {
+    return i < m->nints ? m->ints[i].name : NULL;
+}
+const qd_expr *qd_model_integral(const qd_model *m, size_t i) {
+    return i < m->nints ? m->ints[i].expr : NULL;
+}
+
+const qd_expr *model_find_momentum(const qd_model *m, const char *name, size_t n) {
+    for (size_t i = 0; m->mom && i < m->ncoords; i++)
+        if (m->mom[i] && name_is(name, 0, n, qd_expr_name(m->mom[i])))
+            return m->mom[i];
+    return NULL;
 }
 
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order) {

@@ -42,6 +42,19 @@ typedef struct reaction {
     const qd_expr *r[3];
 } reaction;
 
+/* `symmetry [NAME:] ...`: the vector field xi_j, one per coordinate
+ * (symmetry.c). */
+typedef struct symmetry {
+    const char *name;      /* owned copy */
+    const qd_expr **xi;    /* ncoords entries, 0 where the coordinate is not moved */
+} symmetry;
+
+/* `integral [NAME:] expr` (symmetry.c). */
+typedef struct integral {
+    const char *name;      /* owned copy */
+    const qd_expr *expr;
+} integral;
+
 typedef struct def {
     const char *name;      /* interned by the kernel */
     value v;
@@ -76,6 +89,12 @@ struct qd_model {
     size_t nbodies;
     reaction *reactions;
     size_t nreactions;
+    const qd_expr *H;          /* `H = ...`, in q, the momenta, t */
+    const qd_expr **mom;       /* `momenta ...`: per coordinate, NULL when not given */
+    symmetry *syms;
+    size_t nsyms;
+    integral *ints;
+    size_t nints;
 };
 
 typedef struct parser {
@@ -85,6 +104,8 @@ typedef struct parser {
     qd_diag *diag;
     bool failed;
     const char *defining;      /* the name whose definition is being read */
+    bool momenta_ok;           /* the momenta may be used (H, integral) */
+    bool eps_ok;               /* eps may be used (a symmetry's finite form) */
 } parser;
 
 /* expr.c */
@@ -127,6 +148,21 @@ bool is_body_call(const char *name);       /* omega, omega_space, point, rotatio
 /* The call's '(' is the current token; the first argument names a body. */
 bool body_call_ahead(const parser *p);
 bool body_call(parser *p, const char *name, size_t off, value *out);
+
+/* hamstmt.c: `momenta ...` and `H = ...` */
+bool stmt_momenta(parser *p);
+bool stmt_hamiltonian(parser *p);
+/* An energy statement (T, V, U, L, particle, body) after H: an error at
+ * off..off+len when the model already gives H. */
+bool no_hamiltonian_yet(parser *p, const char *what, size_t off, size_t len);
+/* The momentum named at src[off..off+n), or NULL. */
+const qd_expr *model_find_momentum(const qd_model *m, const char *name, size_t n);
+
+/* symmetry.c */
+bool stmt_symmetry(parser *p);
+bool stmt_integral(parser *p);
+const qd_expr *eps_symbol(qd_ctx *ctx);
+bool check_integrals(parser *p);   /* after the last line */
 
 /* reaction.c */
 bool stmt_rolls(parser *p);     /* roll.c */

@@ -13,6 +13,8 @@
  *   body NAME mass M inertia I at r [orientation R]    (body.c)
  *   torque G on NAME                                    (body.c)
  *   rolls NAME on SURFACE as SHAPE                      (roll.c)
+ *   momenta NAME, ...   and   H = EXPR                  (hamstmt.c)
+ *   symmetry [NAME:] ...   and   integral [NAME:] EXPR  (symmetry.c)
  */
 #include "parser.h"
 
@@ -23,12 +25,12 @@
 static const char *const keywords[] = {
     "coordinates", "parameters", "functions", "particle", "force", "initial", "constraint",
     "reaction",
-    "body", "torque", "rolls",
+    "body", "torque", "rolls", "momenta", "symmetry", "integral",
 };
 #define NKEYWORDS (sizeof keywords / sizeof keywords[0])
 
 
-static const char *const reserved[] = {"T", "V", "L", "U", "dissipation"};
+static const char *const reserved[] = {"T", "V", "L", "U", "H", "dissipation"};
 
 static qd_ctx *C(parser *p) { return p->ctx; }
 
@@ -68,6 +70,8 @@ bool fresh_name(parser *p, const char *what) {
         kind = "definition";
     if (!kind && model_find_body(m, name, strlen(name)))
         kind = "body";
+    if (!kind && model_find_momentum(m, name, strlen(name)))
+        kind = "momentum";
     qd_func f;
     if (!kind && (qd_func_from_name(name, &f) || !strcmp(name, "sqrt") || !strcmp(name, "t") ||
                   !strcmp(name, "pi")))
@@ -84,6 +88,9 @@ bool fresh_name(parser *p, const char *what) {
 
 /* coordinates NAME (',' NAME)* */
 static bool stmt_coordinates(parser *p) {
+    if (p->m->mom)
+        return perr_tok(p, "declare every coordinate before the momenta",
+                        "coordinates after the momenta");
     do {
         lex_next(&p->lx);
         if (p->lx.tok.kind != TK_IDENT)
@@ -200,6 +207,8 @@ static bool expect_at(parser *p, const char *stmt) {
 
 /* particle MASS at POSITION */
 static bool stmt_particle(parser *p) {
+    if (!no_hamiltonian_yet(p, "a particle", p->lx.tok.off, p->lx.tok.len))
+        return false;
     lex_next(&p->lx);
     const qd_expr *mass;
     value r;
@@ -384,6 +393,8 @@ static bool stmt_definition(parser *p) {
     token at = p->lx.tok;
     const qd_expr **slot = reserved_slot(p->m, name);
     bool explicit_T = slot == &p->m->T;
+    if (slot && slot != &p->m->D && !no_hamiltonian_yet(p, name, at.off, at.len))
+        return false;
     if (!slot && !fresh_name(p, "definition"))
         return false;
     if (slot && (explicit_T ? qd_model_where(p->m, "T", NULL) : *slot != NULL)) {
@@ -424,8 +435,8 @@ static bool unknown_statement(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else
         snprintf(hint, sizeof hint, "a statement starts with a keyword (coordinates, parameters, "
-                 "particle, body, force, torque, initial, functions, constraint) or is a "
-                 "definition NAME = ...");
+                 "particle, body, force, torque, initial, functions, constraint, momenta, "
+                 "symmetry, integral) or is a definition NAME = ...");
     return perr_tok(p, hint, "unknown statement '%s'", word);
 }
 
@@ -464,6 +475,14 @@ static bool statement(parser *p) {
         return stmt_rolls(p);
     if (lex_is(lx, "reaction") && next != TK_EQ)
         return stmt_reaction(p);
+    if (lex_is(lx, "momenta") && next != TK_EQ)
+        return stmt_momenta(p);
+    if (lex_is(lx, "symmetry") && next != TK_EQ)
+        return stmt_symmetry(p);
+    if (lex_is(lx, "integral") && next != TK_EQ)
+        return stmt_integral(p);
+    if (lex_is(lx, "H") && next == TK_EQ)
+        return stmt_hamiltonian(p);
     if (next == TK_EQ)
         return stmt_definition(p);
     if (next == TK_LBRACK && lex_is(lx, "Q"))
@@ -477,9 +496,14 @@ static bool finish(parser *p) {
     qd_ctx *ctx = C(p);
     if (m->ncoords == 0)
         return perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
+    if (!check_integrals(p))
+        return false;
+    if (m->H)
+        return true; /* the Lagrangian, if any, is the mechanics layer's inverse Legendre */
     if (!m->L && !m->T)
         return perr(p, p->lx.tok.off, 1,
-                    "give the kinetic energy T = ... (and V = ...), or particles, or L = ...",
+                    "give the kinetic energy T = ... (and V = ...), or particles, or L = ..., "
+                    "or momenta and H = ...",
                     "neither T nor L is given");
     if (!m->L) {
         const qd_expr *zero = qd_int(ctx, 0);
@@ -498,7 +522,7 @@ qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
     }
     m->ctx = ctx;
     m->text = text;
-    parser p = {ctx, {0}, m, diag, false, NULL};
+    parser p = {ctx, {0}, m, diag, false, NULL, false, false};
     lex_init(&p.lx, text);
     while (!p.failed && p.lx.tok.kind != TK_EOF) {
         if (p.lx.tok.kind == TK_NEWLINE) {

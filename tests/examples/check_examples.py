@@ -118,6 +118,14 @@ def _(q, v, t, p):
     return [p['omega']**2 * sin(th) * cos(th) - p['g'] / p['a'] * sin(th)]
 
 
+@example('power_law_orbit', ['r', 'theta'], ranges={'r': (0.3, 2.0)})
+def _(q, v, t, p):
+    # Britannica sec. 5-6 (reference B08); Desloge ch. 59 eq. 1:
+    # m r'' - m r th'^2 = -k r^n,  d/dt(m r^2 th') = 0
+    r, rd, thd = q['r'], v['r'], v['theta']
+    return [r * thd**2 - p['k'] / p['m'] * r**p['n'], -2 * rd * thd / r]
+
+
 def lorentz(q, v, p):
     # Goldstein eqs. 1.60-1.66; Desloge ch. 53 Ex. 1 (T35): m r'' = q (E + v x B)
     vx, vy, vz = v['x'], v['y'], v['z']
@@ -306,6 +314,93 @@ def _(q, v, t, p):
 
 # ---------------------------------------------------------------------------
 
+
+
+# Desloge ch. 71 Problems 1-10 (seed 000, pp. 741-743; reference seed-desloge-C.md T7, T9,
+# T11, T13, T15): the accelerations from each problem's own Lagrangian, written out by hand.
+
+@example('desloge71_p1', ['rho', 'phi', 'z'], ranges={'rho': (0.3, 2.0)})
+def _(q, v, t, p):
+    # T7: rho'' = rho phi'^2 + 2 a rho phi';  d/dt(rho^2 phi' + a rho^2) = 0;  z'' = 0
+    rho, rd, pd, a = q['rho'], v['rho'], v['phi'], p['a']
+    return [rho * pd**2 + 2 * a * rho * pd, -2 * rd * (pd + a) / rho, 0.0]
+
+
+@example('desloge71_p2', ['r', 'phi'], ranges={'r': (0.3, 2.0)})
+def _(q, v, t, p):
+    # P2, unit mass, V = k cos(phi)/r^2: r'' = r phi'^2 + 2k cos(phi)/r^3,
+    # d/dt(r^2 phi') = k sin(phi)/r^2
+    r, ph, rd, pd, k = q['r'], q['phi'], v['r'], v['phi'], p['k']
+    return [r * pd**2 + 2 * k * cos(ph) / r**3, (k * sin(ph) / r**2 - 2 * r * rd * pd) / r**2]
+
+
+@example('desloge71_p3', ['r', 'phi'], ranges={'r': (0.3, 2.0)})
+def _(q, v, t, p):
+    # T9, V = 2 lam r - mu^2/(2 r^2): r'' = r phi'^2 - 2 lam - mu^2/r^3;  d/dt(r^2 phi') = 0
+    r, rd, pd = q['r'], v['r'], v['phi']
+    return [r * pd**2 - 2 * p['lam'] - p['mu']**2 / r**3, -2 * rd * pd / r]
+
+
+def _spherical(r, th, rd, thd, phd, mass, k):
+    """m (r'' - r th'^2 - r sin^2 th ph'^2) = -k/r^2, d/dt(m r^2 th') = m r^2 sin cos ph'^2,
+    d/dt(m r^2 sin^2 th ph') = 0."""
+    return [r * thd**2 + r * sin(th)**2 * phd**2 - k / (mass * r**2),
+            sin(th) * cos(th) * phd**2 - 2 * rd * thd / r,
+            -2 * rd * phd / r - 2 * cos(th) / sin(th) * thd * phd]
+
+
+@example('desloge71_p4', ['r', 'theta', 'phi'], ranges={'r': (0.3, 2.0), 'theta': (0.3, 2.8)})
+def _(q, v, t, p):
+    # P4 with V(r) = -k/r
+    return _spherical(q['r'], q['theta'], v['r'], v['theta'], v['phi'], p['m'], p['k'])
+
+
+@example('desloge71_p5', ['X', 'Y', 'Z', 'r', 'theta', 'phi'],
+         ranges={'r': (0.3, 2.0), 'theta': (0.3, 2.8)})
+def _(q, v, t, p):
+    # T11: the centre of mass moves uniformly; r, theta, phi as one body of mass
+    # mu = m M/(m + M) in V(r) = -k/r
+    mu = p['m'] * p['M'] / (p['m'] + p['M'])
+    return [0.0, 0.0, 0.0] + _spherical(q['r'], q['theta'], v['r'], v['theta'], v['phi'], mu,
+                                        p['k'])
+
+
+@example('desloge71_p6', ['theta'], t=(0.0, 3.0))
+def _(q, v, t, p):
+    # P6, l = l0 - a t: d/dt(m l^2 th') = -m g l sin th, so th'' = (2 a th' - g sin th)/l
+    l = p['l0'] - p['a'] * t
+    return [(2 * p['a'] * v['theta'] - p['g'] * sin(q['theta'])) / l]
+
+
+@example('desloge71_p7', ['theta', 'phi'], ranges={'theta': (0.3, 2.8)})
+def _(q, v, t, p):
+    # T13 with R = R0 + c t: th'' = sin cos ph'^2 + g sin th/R - 2 R' th'/R,
+    # d/dt(R^2 sin^2 th ph') = 0
+    R, c, th, thd, phd = p['R0'] + p['c'] * t, p['c'], q['theta'], v['theta'], v['phi']
+    return [sin(th) * cos(th) * phd**2 + p['g'] * sin(th) / R - 2 * c * thd / R,
+            -2 * c * phd / R - 2 * cos(th) / sin(th) * thd * phd]
+
+
+@example('desloge71_p8', ['x'], ranges={'x': (0.3, 2.0)})
+def _(q, v, t, p):
+    # P8: m x'' = (k/x^2) exp(-t/tau)
+    return [p['k'] / q['x']**2 * math.exp(-t / p['tau']) / p['m']]
+
+
+@example('desloge71_p9', ['r', 'theta'], ranges={'r': (2.5, 4.0)})
+def _(q, v, t, p):
+    # T15, U = (1 + r'^2)/r: (1 - 2/r) r'' = r th'^2 + (1 - r'^2)/r^2;  d/dt(r^2 th') = 0
+    r, rd, thd = q['r'], v['r'], v['theta']
+    return [(r * thd**2 + (1 - rd**2) / r**2) / (1 - 2 / r), -2 * rd * thd / r]
+
+
+@example('desloge71_p10', ['x1', 'x2', 'x3'])
+def _(q, v, t, p):
+    # P10, earth turning at w about e3: x'' = -2 w e3 x x' - w e3 x (w e3 x r) - g e3
+    w = p['w']
+    return [2 * w * v['x2'] + w**2 * q['x1'], -2 * w * v['x1'] + w**2 * q['x2'], -p['g']]
+
+
 def read_parameters(path):
     """The defaults on the example's `parameters` lines: {name: value}."""
     params = {}
@@ -321,9 +416,10 @@ def read_parameters(path):
 
 
 def constrained(path):
-    """Does the model's header say `# checked by check_constrained.py`?"""
+    """Does the model's header say `# checked by check_<x>`: another test
+    checks it (constrained systems, steady motions, ...)?"""
     with open(path) as fh:
-        return any(line.strip() == '# checked by check_constrained.py' for line in fh)
+        return any(line.strip().startswith('# checked by check_') for line in fh)
 
 
 def run_qdot(qdot, path, state, sets):
@@ -385,6 +481,110 @@ def check_one(qdot, path, spec, rng, sets, defaults):
 
 def perturbed(defaults, rng):
     return {k: float('%.6g' % (x * rng.uniform(0.6, 1.4))) for k, x in defaults.items()}
+
+
+@example('damped_oscillator', ['x'])
+def _(q, v, t, p):
+    # Goldstein sec. 1.5, eqs. 1.67-1.70: m x'' + b x' + k x = 0
+    return [-(p['k'] * q['x'] + p['b'] * v['x']) / p['m']]
+
+
+@example('kepler_cartesian', ['x', 'y'], ranges={'x': (0.4, 2.0), 'y': (0.4, 2.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58-59 (B C3): m r'' = -k r / |r|^3
+    r3 = (q['x']**2 + q['y']**2)**1.5
+    return [-p['k'] * q['x'] / (p['m'] * r3), -p['k'] * q['y'] / (p['m'] * r3)]
+
+
+@example('two_masses_spring', ['x1', 'x2'])
+def _(q, v, t, p):
+    # Desloge ch. 56 thm 5; Goldstein sec. 1.2: m1 x1'' = k (x2 - x1 - d) = -m2 x2''
+    f = p['k'] * (q['x2'] - q['x1'] - p['d'])
+    return [f / p['m1'], -f / p['m2']]
+
+
+@example('two_particles_spring_2d', ['x1', 'y1', 'x2', 'y2'])
+def _(q, v, t, p):
+    # Goldstein sec. 1.2 eq. 1.36 without gravity: m1 r1'' = -k (rho - d)(r1 - r2)/rho = -m2 r2''
+    dx, dy = q['x1'] - q['x2'], q['y1'] - q['y2']
+    rho = sqrt(dx * dx + dy * dy)
+    s = -p['k'] * (rho - p['d']) / rho
+    return [s * dx / p['m1'], s * dy / p['m1'], -s * dx / p['m2'], -s * dy / p['m2']]
+
+
+@example('charged_particle_landau', ['x', 'y', 'z'])
+def _(q, v, t, p):
+    # Goldstein eqs. 1.60-1.66, B along z, no E: m r'' = q r' x B
+    k = p['q'] * p['B'] / p['m']
+    return [k * v['y'], -k * v['x'], 0.0]
+
+
+@example('wire_curve_x4', ['x', 'phi'], ranges={'x': (0.3, 1.5)})
+def _(q, v, t, p):
+    # Desloge ch. 54 P6 (A pitfall 7, T42/T44): T = m/2 (x'^2 (1 + 16 x^6/a^6) + x^2 phi'^2),
+    # V = m g x^4/a^3:  (1 + 16 x^6/a^6) x'' + 48 x^5 x'^2/a^6 - x phi'^2 + 4 g x^3/a^3 = 0;
+    # d/dt(x^2 phi') = 0
+    x, xd, phd = q['x'], v['x'], v['phi']
+    a, g = p['a'], p['g']
+    return [(x * phd**2 - 48 * x**5 * xd**2 / a**6 - 4 * g * x**3 / a**3) / (1 + 16 * x**6 / a**6),
+            -2 * xd * phd / x]
+
+
+@example('wire_curve_x4_driven', ['x'], ranges={'x': (0.3, 1.5)})
+def _(q, v, t, p):
+    # Desloge ch. 54 P6, the wire driven at phi' = Omega:
+    # (1 + 16 x^6/a^6) x'' + 48 x^5 x'^2/a^6 - x Omega^2 + 4 g x^3/a^3 = 0
+    x, xd = q['x'], v['x']
+    a, g, w = p['a'], p['g'], p['Omega']
+    return [(x * w**2 - 48 * x**5 * xd**2 / a**6 - 4 * g * x**3 / a**3) / (1 + 16 * x**6 / a**6)]
+
+
+@example('restricted_three_body', ['x', 'y'], ranges={'x': (0.1, 0.8), 'y': (0.3, 1.5)})
+def _(q, v, t, p):
+    # Desloge ch. 62 (rotating frame, unit angular velocity): x'' - 2 y' = -dU/dx,
+    # y'' + 2 x' = -dU/dy, U = -(x^2 + y^2)/2 - (1 - mu)/rho1 - mu/rho2
+    x, y, mu = q['x'], q['y'], p['mu']
+    r1 = ((x + mu)**2 + y**2)**1.5
+    r2 = ((x - 1 + mu)**2 + y**2)**1.5
+    return [2 * v['y'] + x - (1 - mu) * (x + mu) / r1 - mu * (x - 1 + mu) / r2,
+            -2 * v['x'] + y - (1 - mu) * y / r1 - mu * y / r2]
+
+
+@example('ring_three_masses', ['x1', 'y1', 'x2', 'y2', 'x3', 'y3'])
+def _(q, v, t, p):
+    # Desloge ch. 66: each spring pulls its ends together with k (d - a) along the line
+    # joining them: m r_i'' = -k sum_j (d_ij - a)(r_i - r_j)/d_ij
+    pts = [(q['x1'], q['y1']), (q['x2'], q['y2']), (q['x3'], q['y3'])]
+    acc = []
+    for i in range(3):
+        fx = fy = 0.0
+        for j in range(3):
+            if j != i:
+                dx, dy = pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]
+                d = sqrt(dx * dx + dy * dy)
+                fx -= p['k'] * (d - p['a']) * dx / d
+                fy -= p['k'] * (d - p['a']) * dy / d
+        acc += [fx / p['m'], fy / p['m']]
+    return acc
+
+
+@example('rod_elastic_string', ['r', 'phi', 'theta'], ranges={'r': (0.5, 2.0)})
+def _(q, v, t, p):
+    # Desloge ch. 65 P11: rod centre G = r (sin phi, -cos phi) + a (sin th, -cos th),
+    # T = M/2 |G'|^2 + M a^2 th'^2/6, V = M g G_y + 3 M g (r - a)^2/a; Lagrange's
+    # equations worked by hand (c = cos(phi - th), s = sin(phi - th)):
+    #   r'' + a s th'' = r phi'^2 + a th'^2 c + g cos phi - 6 g (r - a)/a
+    #   r^2 phi'' + a r c th'' = -2 r r' phi' - a r th'^2 s - g r sin phi
+    #   a s r'' + a r c phi'' + 4 a^2 th''/3 = -2 a r' phi' c + a r phi'^2 s - g a sin th
+    r, ph, th = q['r'], q['phi'], q['theta']
+    rd, phd, thd = v['r'], v['phi'], v['theta']
+    a, g = p['a'], p['g']
+    c, s = cos(ph - th), sin(ph - th)
+    M = [[1, 0, a * s], [0, r * r, a * r * c], [a * s, a * r * c, 4 * a * a / 3]]
+    f = [r * phd**2 + a * thd**2 * c + g * cos(ph) - 6 * g * (r - a) / a,
+         -2 * r * rd * phd - a * r * thd**2 * s - g * r * sin(ph),
+         -2 * a * rd * phd * c + a * r * phd**2 * s - g * a * sin(th)]
+    return solve(M, f)
 
 
 def main():

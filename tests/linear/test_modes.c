@@ -236,6 +236,29 @@ static void test_damped(void **state) {
     qd_modes_result_free(&r);
 }
 
+/* A follower (circulatory) force Q = -c (y, -x) with no damping: K is not
+ * symmetric and s^2 = -k -+ i c, so one root of each pair has Re s > 0
+ * (flutter; Ziegler's paradox, Bolotin, Nonconservative Problems ch. 1).
+ * Read as a symmetric problem it would look stable. */
+static void test_circulatory(void **state) {
+    qt_system *s = qt_system_derive(state, "coordinates x, y\nparameters m = 1, k = 4, c = 1\n"
+                                           "T = m/2*(x'^2 + y'^2)\nV = k/2*(x^2 + y^2)\n"
+                                           "Q[x] = -c*y\nQ[y] = c*x\n", false);
+    qd_linear lin;
+    qd_modes_result r;
+    modes_at(s, NULL, &lin, &r);
+    assert_false(r.conservative);
+    assert_int_equal(r.stable, 0);
+    double maxre = 0;
+    for (size_t i = 0; i < r.neig; i++)
+        maxre = fmax(maxre, r.eig_re[i]);
+    /* sqrt(-4 - i) = 0.2462 - 2.0308i up to sign: Re s = +-0.24615... */
+    double want = sqrt((sqrt(17.0) - 4) / 2);
+    assert_true(fabs(maxre - want) < 1e-12);
+    qd_linear_free(&lin);
+    qd_modes_result_free(&r);
+}
+
 /* Newton from a guess, and a nonconvergent one: the error is named. */
 static void test_newton(void **state) {
     qt_system *s = qt_system_derive(state, ROD, false);
@@ -261,6 +284,7 @@ int main(void) {
         cmocka_unit_test_teardown(test_three_body_unstable, qt_system_teardown),
         cmocka_unit_test_teardown(test_damped, qt_system_teardown),
         cmocka_unit_test_teardown(test_newton, qt_system_teardown),
+        cmocka_unit_test_teardown(test_circulatory, qt_system_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

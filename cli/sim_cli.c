@@ -1,0 +1,481 @@
+/*
+ * cli/sim_cli.c - the setup `qdot simulate` and `qdot poincare` share.
+ *
+ * Expressions on the command line (--output, --event) are read in the model
+ * language; a name the reader does not know is looked up among the model's
+ * definitions (x2 = x1 + l2*sin(theta2)) and replaced by its value, and a
+ * definition's name with a prime (x2') is its time derivative.
+ */
+#include "sim_cli.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "eom_out.h"
+#include "qdot/codegen.h"
+
+const char *qd_sim_cli_value(int argc, char **argv, int *i, const char *opt) {
+    size_t len = strlen(opt);
+    if (strncmp(argv[*i], opt, len))
+        return NULL;
+    if (argv[*i][len] == '=')
+        return argv[*i] + len + 1;
+    if (argv[*i][len] || *i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
+}
+
+static int number(const char *opt, const char *v, double *out, bool positive) {
+    char *end;
+    double x = strtod(v, &end);
+    if (end == v || *end || !isfinite(x) || (positive && !(x > 0))) {
+        qd_diag_error("%s takes a %snumber, not '%s'", opt, positive ? "positive " : "", v);
+        return QD_EXIT_USAGE + 100;
+    }
+    *out = x;
+    return 1;
+}
+
+static int push(const char **list, size_t *n, const char *v, const char *opt) {
+    if (*n == QD_SIM_MAX_LIST) {
+        qd_diag_error("at most %d %s options", QD_SIM_MAX_LIST, opt);
+        return QD_EXIT_USAGE + 100;
+    }
+    list[(*n)++] = v;
+    return 1;
+}
+
+int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a) {
+    const char *v;
+    int save = *i;
+    if (!strcmp(argv[*i], "--native")) {
+        a->native = true;
+        return 1;
+    }
+    if (!strcmp(argv[*i], "--no-project")) {
+        a->no_project = true;
+        return 1;
+    }
+    if ((v = qd_sim_cli_value(argc, argv, i, "--t-end"))) {
+        a->has_t_end = true;
+        return number("--t-end", v, &a->t_end, false);
+    }
+    if ((v = qd_sim_cli_value(argc, argv, i, "--dt"))) {
+        a->has_dt = true;
+        return number("--dt", v, &a->dt, true);
+    }
+    if ((v = qd_sim_cli_value(argc, argv, i, "--rtol"))) {
+        a->has_rtol = true;
+        return number("--rtol", v, &a->rtol, true);
+    }
+    if ((v = qd_sim_cli_value(argc, argv, i, "--atol")))
+        return number("--atol", v, &a->atol, true);
+    if ((v = qd_sim_cli_value(argc, argv, i, "--max-steps"))) {
+        double x = 0;
+        int rc = number("--max-steps", v, &x, true);
+        a->max_steps = rc == 1 ? (size_t)x : 0;
+        return rc;
+    }
+    if ((v = qd_sim_cli_value(argc, argv, i, "--method"))) {
+        qd_sim_method m;
+        if (!qd_sim_method_from_name(v, &m)) {
+            qd_diag_error("--method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
+                          "yoshida6, yoshida8 or bdf, not '%s'", v);
+            return QD_EXIT_USAGE + 100;
+        }
+        a->method_name = v;
+        return 1;
+    }
+    if ((v = qd_sim_cli_value(argc, argv, i, "--initial"))) {
+        if (a->initial) {
+            qd_diag_error("--initial is given twice; name every value in one list");
+            return QD_EXIT_USAGE + 100;
+        }
+        a->initial = v;
+        return 1;
+    }
+    if ((v = qd_sim_cli_value(argc, argv, i, "--set")))
+        return push(a->sets, &a->nsets, v, "--set");
+    if ((v = qd_sim_cli_value(argc, argv, i, "--out"))) {
+        a->out = v;
+        return 1;
+    }
+    *i = save;
+    return 0;
+}
+
+/* ---- numbers ------------------------------------------------------------- */
+
+__extension__ typedef unsigned __int128 u128;
+
+/* The digits of |x| = m 2^-s rounded to p = k + 1 + e10 significant digits
+ * into *D: 1 when lo <= D < hi and D reads back to x, -1 when D >= hi (the
+ * decimal exponent is one more), 0 otherwise.  With 10^k = 5^k 2^k, D is
+ * m 5^k / 2^(s - k) rounded (ties to even, as printf), and it reads back
+ * when |D 10^-k - x| < ulp/2, i.e. |2 D 2^(s-k) - 2 m 5^k| < 5^k: all in
+ * exact 128-bit integers while k <= 31 and s - k <= 69. */
+static int digits_roundtrip(uint64_t m, int s, int k, uint64_t lo, uint64_t hi, uint64_t *D) {
+    static u128 pow5[32];
+    int sh = s - k;
+    if (k < 0 || k > 31 || sh < 1 || sh > 69)
+        return 0;
+    if (!pow5[0])
+        for (int i = 0; i < 32; i++)
+            pow5[i] = i ? 5 * pow5[i - 1] : 1;
+    u128 p5 = pow5[k];
+    u128 N = (u128)m * p5, half = (u128)1 << (sh - 1), rem = N & (((u128)1 << sh) - 1);
+    u128 d = N >> sh;
+    d += rem > half || (rem == half && (d & 1));
+    if (d >= hi)
+        return -1;
+    if (d < lo)
+        return 0;
+    u128 a = d << (sh + 1), b = N << 1;
+    u128 diff = a > b ? a - b : b - a;
+    *D = (uint64_t)d;
+    return diff < p5;
+}
+
+/* |x| in [1e-12, 1e15) as %.pg prints it with the shortest p of 15, 16, 17
+ * that reads back; 0 outside that range or when unsure. */
+static size_t fast_number(char *out, double x) {
+    static const uint64_t pow10[18] = {
+        UINT64_C(1), UINT64_C(10), UINT64_C(100), UINT64_C(1000), UINT64_C(10000),
+        UINT64_C(100000), UINT64_C(1000000), UINT64_C(10000000), UINT64_C(100000000),
+        UINT64_C(1000000000), UINT64_C(10000000000), UINT64_C(100000000000),
+        UINT64_C(1000000000000), UINT64_C(10000000000000), UINT64_C(100000000000000),
+        UINT64_C(1000000000000000), UINT64_C(10000000000000000),
+        UINT64_C(100000000000000000)};
+    double ax = fabs(x);
+    if (!(ax >= 1e-12 && ax < 1e15))
+        return 0;
+    uint64_t bits;
+    memcpy(&bits, &ax, sizeof bits);
+    uint64_t frac = bits & ((UINT64_C(1) << 52) - 1);
+    int be = (int)(bits >> 52);            /* normal here: ax = m 2^-s */
+    if (frac == 0)                         /* a power of 2: the gap below is half */
+        return 0;
+    uint64_t m = frac | (UINT64_C(1) << 52);
+    int s = 1075 - be;
+    /* 2^(e2-1) <= ax < 2^e2: floor(log10 ax) is this or one more */
+    int est = (int)floor((double)(be - 1023) * 0.30102999566398120);
+    for (int p = 15; p <= 17; p++) {
+        uint64_t D = 0;
+        int e10 = est;
+        int r = digits_roundtrip(m, s, p - 1 - e10, pow10[p - 1], pow10[p], &D);
+        if (r < 0) {
+            e10++;
+            r = digits_roundtrip(m, s, p - 1 - e10, pow10[p - 1], pow10[p], &D);
+        }
+        if (r < 0 || e10 < -12 || e10 > 14)
+            return 0;
+        if (!r)
+            continue;
+        char dig[20];
+        for (int i = p - 1; i >= 0; i--, D /= 10)
+            dig[i] = (char)('0' + D % 10);
+        int nd = p;
+        while (nd > 1 && dig[nd - 1] == '0')
+            nd--;
+        size_t n = 0;
+        if (x < 0)
+            out[n++] = '-';
+        if (e10 < -4) {                    /* d.ddde-XX */
+            out[n++] = dig[0];
+            if (nd > 1)
+                out[n++] = '.';
+            for (int i = 1; i < nd; i++)
+                out[n++] = dig[i];
+            out[n++] = 'e';
+            out[n++] = '-';
+            out[n++] = (char)('0' + -e10 / 10);
+            out[n++] = (char)('0' + -e10 % 10);
+        } else if (e10 >= 0) {
+            for (int i = 0; i <= e10; i++)
+                out[n++] = i < nd ? dig[i] : '0';
+            if (nd > e10 + 1) {
+                out[n++] = '.';
+                for (int i = e10 + 1; i < nd; i++)
+                    out[n++] = dig[i];
+            }
+        } else {
+            out[n++] = '0';
+            out[n++] = '.';
+            for (int i = 0; i < -e10 - 1; i++)
+                out[n++] = '0';
+            for (int i = 0; i < nd; i++)
+                out[n++] = dig[i];
+        }
+        out[n] = '\0';
+        return n;
+    }
+    return 0;
+}
+
+size_t qd_sim_cli_format(char *out, double x) {
+    size_t n = fast_number(out, x);
+    if (n)
+        return n;
+    for (int p = 15; p <= 17; p++) {
+        snprintf(out, QD_SIM_NUMBER_MAX, "%.*g", p, x);
+        if (p == 17 || strtod(out, NULL) == x)
+            break;
+    }
+    return strlen(out);
+}
+
+/* ---- expressions ---------------------------------------------------------- */
+
+static void trim(const char **a, const char **b) {
+    while (*a < *b && isspace((unsigned char)**a))
+        (*a)++;
+    while (*b > *a && isspace((unsigned char)(*b)[-1]))
+        (*b)--;
+}
+
+/* Read text[a, b) against the model: definitions substituted. */
+static const qd_expr *read_expr(qd_sim_cli *c, const char *what, const char *a, const char *b) {
+    trim(&a, &b);
+    size_t len = (size_t)(b - a);
+    char *text = malloc(len + 1);
+    if (!text)
+        return NULL;
+    memcpy(text, a, len);
+    text[len] = '\0';
+    const qd_expr *x = NULL;
+    /* NAME' of a definition: its time derivative */
+    if (len > 1 && text[len - 1] == '\'') {
+        text[len - 1] = '\0';
+        const qd_expr *d = qd_model_definition(c->mf.model, text);
+        text[len - 1] = '\'';
+        if (d)
+            x = qd_dt(c->ctx, d);
+    }
+    qd_read_error err;
+    const qd_read_opts opts = {.new_symbols = true};
+    if (!x)
+        x = qd_read(c->ctx, text, &opts, &err);
+    if (!x) {
+        qd_diag_read(what, text, &err);
+        free(text);
+        return NULL;
+    }
+    size_t k = qd_free_symbols(c->ctx, x, NULL, 0);
+    const qd_expr **syms = malloc((k + 1) * sizeof *syms);
+    qd_free_symbols(c->ctx, x, syms, k);
+    for (size_t i = 0; x && i < k; i++) {
+        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN)
+            continue;
+        const qd_expr *d = qd_model_definition(c->mf.model, qd_expr_name(syms[i]));
+        if (!d) {
+            qd_diag_error("%s: unknown name '%s' in '%s' (use coordinates, velocities q', t, "
+                          "parameters and the model's definitions)",
+                          what, qd_expr_name(syms[i]), text);
+            x = NULL;
+            break;
+        }
+        x = qd_subs(c->ctx, x, 1, &syms[i], &d);
+    }
+    free(syms);
+    free(text);
+    return x;
+}
+
+/* End of the item at p: the next comma outside brackets. */
+static const char *item_end(const char *p) {
+    int depth = 0;
+    for (; *p; p++) {
+        if (*p == '(' || *p == '[')
+            depth++;
+        else if ((*p == ')' || *p == ']') && depth > 0)
+            depth--;
+        else if (*p == ',' && depth == 0)
+            break;
+    }
+    return p;
+}
+
+static int add_outputs(qd_sim_cli *c, const char *list) {
+    for (const char *p = list; *p;) {
+        const char *end = item_end(p), *a = p, *b = end;
+        trim(&a, &b);
+        if (a < b) {
+            const qd_expr *x = read_expr(c, "--output", a, b);
+            if (!x)
+                return QD_EXIT_USAGE;
+            char name[128];
+            snprintf(name, sizeof name, "%.*s", (int)(b - a), a);
+            if (qd_sim_add_output(c->s, name, x) != QD_OK)
+                return qd_diag_ctx(c->ctx);
+        }
+        p = *end ? end + 1 : end;
+    }
+    return QD_EXIT_OK;
+}
+
+/* "g1 = g2, guard > 0, guard < 0, ...": g = g1 - g2, guards as a - b > 0. */
+static int add_event(qd_sim_cli *c, const char *text, bool stop) {
+    const char *what = stop ? "--stop-at" : "--event";
+    const qd_expr *g = NULL, *guards[QD_SIM_MAX_LIST];
+    size_t ng = 0;
+    for (const char *p = text; *p;) {
+        const char *end = item_end(p);
+        const char *op = p;
+        while (op < end && *op != '=' && *op != '>' && *op != '<')
+            op++;
+        if (op == end || (g == NULL) != (*op == '=') || ng == QD_SIM_MAX_LIST) {
+            qd_diag_error("%s takes \"EXPR = EXPR[, EXPR > EXPR]...\" (the crossing first, "
+                          "then conditions with > or <), not '%s'", what, text);
+            return QD_EXIT_USAGE;
+        }
+        const qd_expr *l = read_expr(c, what, p, op), *r = read_expr(c, what, op + 1, end);
+        if (!l || !r)
+            return QD_EXIT_USAGE;
+        if (*op == '=')
+            g = qd_sub(c->ctx, l, r);
+        else
+            guards[ng++] = *op == '>' ? qd_sub(c->ctx, l, r) : qd_sub(c->ctx, r, l);
+        p = *end ? end + 1 : end;
+    }
+    if (!g) {
+        qd_diag_error("%s: no crossing 'EXPR = EXPR' in '%s'", what, text);
+        return QD_EXIT_USAGE;
+    }
+    if (qd_sim_add_event(c->s, g, ng, guards, stop) != QD_OK)
+        return qd_diag_ctx(c->ctx);
+    return QD_EXIT_OK;
+}
+
+/* ---- setup ----------------------------------------------------------------- */
+
+static int initial_values(qd_sim_cli *c, const qd_sim_args *a) {
+    const qd_model *m = c->mf.model;
+    size_t n = qd_model_ncoords(m);
+    int rc = qd_state_init(c->ctx, m, &c->st);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    for (size_t i = 0; i < n; i++)
+        for (unsigned o = 0; o < 2; o++) {
+            const qd_expr *v = qd_model_initial(m, i, o);
+            if (v && qd_eval(c->ctx, v, c->st.n, c->st.syms, c->st.vals,
+                             &c->st.vals[o * n + i]) != QD_OK)
+                return qd_diag_ctx(c->ctx);
+        }
+    if (a->initial && (rc = qd_state_parse(c->ctx, m, a->initial, &c->st)) != QD_EXIT_OK)
+        return rc;
+    /* the equations' coordinates are the model's, in its order */
+    c->q0 = malloc((2 * n + 1) * sizeof *c->q0);
+    if (!c->q0)
+        return QD_EXIT_FAIL;
+    c->qd0 = c->q0 + n;
+    for (size_t j = 0; j < n; j++) {
+        size_t i = 0;
+        while (i < n && qd_model_coord(m, i) != c->e->q[j])
+            i++;
+        c->q0[j] = c->st.vals[i];
+        c->qd0[j] = c->st.vals[n + i];
+    }
+    return QD_EXIT_OK;
+}
+
+static int choose_method(qd_sim_cli *c, const qd_sim_args *a) {
+    qd_sim_opts *o = &c->opts;
+    if (a->has_dt && a->has_rtol && !a->method_name) {
+        qd_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method");
+        return QD_EXIT_USAGE;
+    }
+    if (a->method_name)
+        qd_sim_method_from_name(a->method_name, &o->method);
+    else
+        o->method = qd_sim_default_method(c->s, a->has_dt);
+    o->dt = a->has_dt ? a->dt : 0;
+    o->rtol = a->has_rtol ? a->rtol : 0;
+    o->atol = a->atol;
+    o->no_project = a->no_project;
+    o->max_steps = a->max_steps;
+    o->t0 = c->st.vals[2 * qd_model_ncoords(c->mf.model)];
+    o->t_end = a->t_end;
+    o->q0 = c->q0;
+    o->qd0 = c->qd0;
+    if (!qd_sim_method_adaptive(o->method) && !a->has_dt) {
+        qd_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
+        return QD_EXIT_USAGE;
+    }
+    if (!(o->t_end > o->t0)) {
+        qd_diag_error("--t-end must be after the start time (%g)", o->t0);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int load_native(qd_sim_cli *c) {
+    qd_native *nat = calloc(1, sizeof *nat);
+    if (!nat)
+        return QD_EXIT_FAIL;
+    if (qd_native_load(c->ctx, c->mf.model, c->e, NULL, nat) != QD_OK) {
+        fprintf(stderr, "qdot: note: --native unavailable (%s); using the compiled programs\n",
+                qd_ctx_message(c->ctx));
+        qd_ctx_clear_error(c->ctx);
+        free(nat);
+        return QD_EXIT_OK;
+    }
+    c->native = nat;
+    qd_sim_set_native(c->s, nat->rhs);
+    return QD_EXIT_OK;
+}
+
+int qd_sim_cli_setup(qd_sim_cli *c, const qd_sim_args *a) {
+    c->ctx = qd_ctx_new();
+    if (!c->ctx) {
+        qd_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    int rc = qd_model_file_load(c->ctx, a->file, &c->mf);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < a->nsets; i++) {
+        const qd_expr *p, *v;
+        rc = qd_state_set(c->ctx, c->mf.model, a->sets[i], &p, &v);
+    }
+    if (rc != QD_EXIT_OK)
+        return rc;
+    c->e = qd_eom_derive(c->ctx, c->mf.model);
+    if (!c->e)
+        return qd_eom_derive_error(c->ctx, &c->mf);
+    c->s = qd_sim_new(c->ctx, c->mf.model, c->e);
+    if (!c->s)
+        return qd_diag_ctx(c->ctx);
+    rc = initial_values(c, a);
+    if (rc == QD_EXIT_OK && a->output)
+        rc = add_outputs(c, a->output);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < a->nevents; i++)
+        rc = add_event(c, a->events[i], a->event_stop[i]);
+    if (rc == QD_EXIT_OK)
+        rc = choose_method(c, a);
+    if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
+        rc = load_native(c);
+    return rc;
+}
+
+void qd_sim_cli_free(qd_sim_cli *c) {
+    if (c->native)
+        qd_native_unload(c->native);
+    free(c->native);
+    free(c->q0);
+    qd_sim_free(c->s);
+    qd_state_free(&c->st);
+    if (c->e)
+        qd_eom_free(c->e);
+    qd_model_file_free(&c->mf);
+    qd_ctx_free(c->ctx);
+}
+
+int qd_sim_cli_fail(qd_sim_cli *c, qd_status st) {
+    const char *msg = qd_ctx_message(c->ctx);
+    qd_diag_error("%s", msg[0] ? msg : qd_status_str(st));
+    /* options were checked before the run: what fails now is the system's */
+    return QD_EXIT_FAIL;
+}

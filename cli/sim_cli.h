@@ -1,0 +1,60 @@
+/*
+ * cli/sim_cli.h - what `qdot simulate` and `qdot poincare` share: their
+ * common options, the model compiled for simulation (qdot/sim.h), initial
+ * values, --output expressions and event conditions read against the model.
+ */
+#ifndef QDOT_CLI_SIM_CLI_H
+#define QDOT_CLI_SIM_CLI_H
+
+#include <stdbool.h>
+#include "qdot/sim.h"
+#include "model_file.h"
+#include "state.h"
+
+#define QD_SIM_MAX_LIST 64
+
+typedef struct qd_sim_args {
+    const char *file, *initial, *output, *out, *method_name;
+    const char *sets[QD_SIM_MAX_LIST];
+    size_t nsets;
+    const char *events[QD_SIM_MAX_LIST];
+    bool event_stop[QD_SIM_MAX_LIST];
+    size_t nevents;
+    double t_end, dt, rtol, atol;
+    bool has_t_end, has_dt, has_rtol, native, no_project, json;
+    size_t max_steps;
+} qd_sim_args;
+
+typedef struct qd_sim_cli {
+    qd_ctx *ctx;
+    qd_model_file mf;
+    qd_eom *e;
+    qd_sim *s;
+    qd_state st;
+    void *native;      /* qd_native, when --native loaded one */
+    qd_sim_opts opts;
+    double *q0, *qd0;
+} qd_sim_cli;
+
+/* One option shared by both commands at argv[*i]: 1 when it was one (and
+ * taken), 0 when it is not, or an exit status (QD_EXIT_USAGE) + 100. */
+int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a);
+/* The value of "--opt VALUE" or "--opt=VALUE", or NULL. */
+const char *qd_sim_cli_value(int argc, char **argv, int *i, const char *opt);
+
+/* x as the shortest of 15, 16, 17 significant digits (%g style) that reads
+ * back to x, into out (QD_SIM_NUMBER_MAX bytes); returns the length.  A row
+ * per step of a long run makes this the CLI's hot spot: exact integer
+ * digits for the common range, snprintf/strtod otherwise. */
+#define QD_SIM_NUMBER_MAX 40
+size_t qd_sim_cli_format(char *out, double x);
+
+/* Load, --set, derive, compile, initial values, outputs and events, the
+ * method and options.  Returns an exit status; prints its diagnostics. */
+int qd_sim_cli_setup(qd_sim_cli *c, const qd_sim_args *a);
+void qd_sim_cli_free(qd_sim_cli *c);
+
+/* Print a failed run's message; exit status 1. */
+int qd_sim_cli_fail(qd_sim_cli *c, qd_status st);
+
+#endif

@@ -1,0 +1,74 @@
+/*
+ * qdot/codegen.h - equations of motion as self-contained C, and native loading.
+ *
+ * qd_codegen_c writes a C11 translation unit (and its header) that needs
+ * nothing but <math.h>: for a model with n coordinates and npar parameters,
+ * prefix P,
+ *
+ *   P_N, P_NPAR                       macros (and the constants P_n, P_npar)
+ *   P_coord_names[], P_param_names[]  names in model order
+ *   P_par_default[]                   the model's parameter values
+ *   void   P_mass(t, q, par, M)       M n*n row-major
+ *   void   P_forcing(t, q, qd, par, f)
+ *   int    P_rhs(t, y, par, dydt)     y = (q, q'), dydt = (q', q''); nonzero
+ *                                     when M (or the saddle matrix) is singular
+ *   double P_energy(t, y, par)        T + V, or the Jacobi integral
+ *                                     h = T2 - T0 + V when T has T1 or T0 terms
+ *   void   P_jacobian(t, y, par, J)   2n x 2n row-major d(dydt)/dy, analytic
+ *
+ * Parameters are passed in `par` in model order, so changing a value needs
+ * no regeneration.  With constraints, P_rhs solves [M -A^T; A 0] [q''; l] =
+ * [f; b] (LU, partial pivoting) and P_jacobian differentiates that system.
+ *
+ * qd_native_load compiles that C with the system compiler ($CC, else cc;
+ * `-O2 -shared -fPIC`) into cache_dir/<prefix>-<FNV-1a 64 of the text>.so,
+ * reusing the file when it is already there, and dlopens it.  When no
+ * compiler runs or compilation fails it returns QD_ERR_UNSUPPORTED with the reason
+ * (and the compiler's first lines of output) in the context, so the caller
+ * can fall back to qd_eom_eval.
+ */
+#ifndef QDOT_CODEGEN_H
+#define QDOT_CODEGEN_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "print.h"
+#include "model.h"
+#include "mech.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef int (*qd_native_rhs)(double t, const double *y, const double *par, double *dydt);
+
+typedef struct qd_native {
+    void *handle;              /* dlopen handle */
+    size_t n, npar;
+    qd_native_rhs rhs;
+    void (*mass)(double, const double *, const double *, double *);
+    void (*forcing)(double, const double *, const double *, const double *, double *);
+    double (*energy)(double, const double *, const double *);
+    void (*jacobian)(double, const double *, const double *, double *);
+    const double *par_default; /* npar values from the model */
+    char path[4096];           /* the .so used */
+    bool cached;               /* true when the .so was already there */
+} qd_native;
+
+/* The C text (c_text) and header text (h_text) of e's equations, with every
+ * name prefixed by `prefix` (a C identifier; NULL means "qdot_model").  The
+ * .c includes "<prefix>.h".  h_text may be NULL when not wanted. */
+qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
+                       qd_buf *c_text, qd_buf *h_text);
+
+/* Generate, compile (or reuse) and load.  cache_dir NULL: $XDG_CACHE_HOME/qdot,
+ * else $HOME/.cache/qdot (created when missing).  On failure *out is zeroed. */
+qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache_dir,
+                         qd_native *out);
+void qd_native_unload(qd_native *nat);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

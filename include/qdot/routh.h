@@ -1,0 +1,108 @@
+/*
+ * qdot/routh.h - Routh's reduction: ignoring cyclic coordinates.
+ *
+ * Split the coordinates of an unconstrained model into ignored ones c
+ * (cyclic: absent from L, no generalized force, no dissipation through c')
+ * and kept ones k.  The momenta of the ignored coordinates are constant,
+ * p_c = dL/dc' = beta (plain symbols named p_<c>), which is linear in c'
+ * because L is quadratic in the velocities:
+ *
+ *     c' = A^-1 (beta - B k' - b_c)            (ignvel: the quadratures'
+ *                                               integrands, c = int c' dt)
+ *     R(k, k', beta, t) = sum_c beta_c c' - L   (c' substituted everywhere,
+ *                                               the p c' term included)
+ *
+ * This is Goldstein's and Landau's sign, and Desloge's (ch. 72 thm 2, who
+ * notes that the opposite sign is common).  Byerly's "modified Lagrangian"
+ * M = T - sum p q' (Art. 17, V kept apart as forces) and the Britannica
+ * article's R = T - sum kappa chi' are of the opposite sign, M - V = -R:
+ * mixing the two flips the centrifugal and gyroscopic terms.
+
+ * -R is a Lagrangian for the kept coordinates: the reduced equations are
+ *
+ *     d/dt d(-R)/dk'_j - d(-R)/dk_j = Q_j - dD/dk'_j,
+ *
+ * i.e. d/dt dR/dk' - dR/dk = -(Q - dD/dk'), written M k'' = f with
+ * M = d^2(-R)/dk'dk' (positive definite for a positive T) and everything
+ * else in f.  Putting p_c = beta into L and using L as the Lagrangian
+ * instead is the classic error: it flips the sign of the centrifugal term
+ * (and drops the gyroscopic one's factor).
+ *
+ * R splits by degree in the kept velocities, R = R2 + R1 + R0.  The
+ * effective potential is the velocity-free part with R's sign,
+ *
+ *     V_eff = R0 = -(velocity-free part of -R),
+ *
+ * so that -R = -R2 - R1 - V_eff looks like T - V: for a particle in a
+ * central potential (or a spherical pendulum) V_eff = V + p^2/(2 m r^2),
+ * a positive centrifugal barrier.  Steady motions with constant beta are
+ * the stationary points of V_eff when R1 has no explicit t.
+ *
+ * R1 = sum_j g_j k'_j gives the gyroscopic force G k' in f, with
+ * G_ij = dg_i/dk_j - dg_j/dk_i (skew; 0 with one kept coordinate).
+ */
+#ifndef QDOT_ROUTH_H
+#define QDOT_ROUTH_H
+
+#include <stddef.h>
+#include "expr.h"
+#include "mech.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qd_routh {
+    size_t n, nign, nkeep;
+    const qd_expr **ign;      /* ignored coordinates (cyclic) */
+    const qd_expr **beta;     /* their constant momenta: plain symbols p_<q> */
+    const qd_expr **keep;     /* the remaining coordinates, in model order */
+    const qd_expr **keepd;    /* their velocities */
+    const qd_expr **keepdd;   /* their accelerations */
+    const qd_expr **ignvel;   /* q'_ign in keep, keep', beta, t (the quadratures' integrands) */
+    const qd_expr **pdef;     /* dL/dq'_ign in q, q', t: what beta stands for */
+    const qd_expr *R;         /* Routhian, Goldstein sign, in keep, keep', beta, t */
+    const qd_expr *R2, *R1, *R0;  /* parts of degree 2, 1, 0 in keep' */
+    const qd_expr *Veff;      /* effective potential (velocity-free): V_eff = R0 */
+    const qd_expr **M, **f;   /* reduced equations M keep'' = f (M nkeep*nkeep row-major,
+                                 f nkeep), from -R as Lagrangian, plus generalized
+                                 forces/dissipation of kept coordinates */
+    const qd_expr **G;        /* nkeep*nkeep gyroscopic matrix from R1 (skew), row-major:
+                                 the force G k' is part of f */
+    const qd_expr *h;         /* Jacobi integral of -R: R0 - R2 (E = T + V when scleronomic);
+                                 conserved when `conserved` */
+    bool conserved;           /* no explicit t in R, no Q and no D on kept coordinates */
+    size_t *ign_index;        /* position of each ignored coordinate in the eom's q */
+    size_t *keep_index;       /* position of each kept coordinate in the eom's q */
+} qd_routh;
+
+/* Reduce the model m (derived as e by qd_eom_derive) by ignoring the nign
+ * coordinates ign (coordinate symbols of the model).  QD_ERR_ARG with a
+ * message naming the coordinate when one is not a coordinate, is repeated,
+ * appears in L, has a generalized force or enters the dissipation through
+ * its velocity (it is then not cyclic), when every coordinate is ignored,
+ * and for models with constraints or eliminated coordinates;
+ * QD_ERR_NONLINEAR when L is not quadratic in the velocities and
+ * QD_ERR_SINGULAR when the ignored momenta do not determine the ignored
+ * velocities.  NULL on failure, reason in the context. */
+qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                          size_t nign, const qd_expr *const *ign);
+void qd_routh_free(qd_routh *r);
+
+/* The coordinate of m named name; NULL with QD_ERR_ARG and a message
+ * ("unknown coordinate 'phy'; did you mean 'phi'?", "'g' is a parameter,
+ * not a coordinate") otherwise. */
+const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name);
+
+/* Why coordinate j of e (index into e->q) cannot be ignored: NULL when it
+ * is cyclic; else the statement to point at (for qd_model_where: "L", "T",
+ * "V", "U", "dissipation" or a coordinate's name for its generalized
+ * force), with *why set to the reason in words. */
+const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j,
+                                const char **why);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

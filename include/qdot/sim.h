@@ -1,0 +1,139 @@
+/*
+ * qdot/sim.h - numerical integration of a model's equations of motion.
+ *
+ * A qd_sim is a model compiled into a first-order system (qd_prog programs,
+ * no tree walking per step, no allocation per step):
+ *
+ *   Lagrangian form  y = (q, q'),  M(q, q', t) q'' = f(q, q', t)
+ *                    (with constraints the saddle-point system of qdot/mech.h)
+ *   canonical form   y = (q, p),   p = M q' + b,  q' = M^-1 (p - b),
+ *                    dp/dt = dL/dq + Q - dD/dq'   (= -dH/dq + extra; used by
+ *                    the Gauss-Legendre and splitting methods, so that they
+ *                    are symplectic also for a non-separable H)
+ *
+ * The methods: explicit Runge-Kutta pairs with step control and dense output
+ * (Dormand-Prince 5(4), DOP853 8(5,3)), implicit Gauss-Legendre collocation
+ * with s = 1, 2, 3 stages (orders 2, 4, 6; symplectic), Stormer-Verlet and
+ * Yoshida's compositions of it (orders 4, 6, 8; only for H = T(p) + V(q)), and
+ * BDF (SUNDIALS CVODE) for stiff systems.  docs/design.md (simulation) has
+ * the details.
+ */
+#ifndef QDOT_SIM_H
+#define QDOT_SIM_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "mech.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum qd_sim_method {
+    QD_SIM_DOPRI5,
+    QD_SIM_DOP853,
+    QD_SIM_GL2,       /* Gauss-Legendre, 1 stage (implicit midpoint), order 2 */
+    QD_SIM_GL4,       /* 2 stages, order 4 */
+    QD_SIM_GL6,       /* 3 stages, order 6 */
+    QD_SIM_VERLET,    /* Stormer-Verlet, order 2 */
+    QD_SIM_YOSHIDA4,  /* Yoshida compositions of Verlet, orders 4, 6, 8 */
+    QD_SIM_YOSHIDA6,
+    QD_SIM_YOSHIDA8,
+    QD_SIM_BDF,       /* CVODE, variable-order BDF */
+    QD_SIM_METHOD_COUNT
+} qd_sim_method;
+
+const char *qd_sim_method_name(qd_sim_method m);            /* "dop853" */
+bool qd_sim_method_from_name(const char *name, qd_sim_method *m);
+int qd_sim_method_order(qd_sim_method m);                   /* nominal order (BDF: 5) */
+bool qd_sim_method_adaptive(qd_sim_method m);               /* step size control */
+
+typedef struct qd_sim qd_sim;
+
+/* Compile the equations e of model m (e from qd_eom_derive, without
+ * eliminated coordinates; parameters at the model's values, so apply --set
+ * to the model first).  e and m must outlive the qd_sim.  NULL on failure,
+ * reason in ctx. */
+qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
+void qd_sim_free(qd_sim *s);
+
+/* Extra output columns: an expression in the coordinates, velocities, t and
+ * the parameters, under the column name `name` (copied).  Before the first
+ * qd_sim_run. */
+qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x);
+
+/* An event: the times where g(q, q', t) crosses zero (in either direction)
+ * and every guard expression is > 0 there, located to round-off (dense
+ * output, then the method's own step to the root).  stop: end the run at
+ * the first such time.  Before the first qd_sim_run. */
+qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
+                           const qd_expr *const *guard, bool stop);
+
+/* A compiled right-hand side for the Lagrangian form, y = (q, q'),
+ * dydt = (q', q''), par the parameters in model order, nonzero when M is
+ * singular there (qdot/codegen.h's P_rhs, loaded with qd_native_load).
+ * Used instead of the qd_prog programs by the methods that integrate
+ * (q, q'); NULL returns to them. */
+typedef int (*qd_sim_native_rhs)(double t, const double *y, const double *par, double *dydt);
+void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs);
+
+/* What the system is (known after qd_sim_new). */
+size_t qd_sim_ndof(const qd_sim *s);
+size_t qd_sim_ncon(const qd_sim *s);
+bool qd_sim_canonical(const qd_sim *s);   /* (q, p) form available */
+bool qd_sim_separable(const qd_sim *s);   /* H = T(p) + V(q), p-free forces */
+bool qd_sim_conservative(const qd_sim *s);/* no t in L, no forces, no dissipation */
+/* dop853 for tolerance runs; gl4 with a fixed step for unconstrained
+ * conservative systems, dop853 otherwise. */
+qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step);
+
+typedef struct qd_sim_opts {
+    qd_sim_method method;
+    double t0, t_end;
+    /* Fixed-step methods: the step (required).  Adaptive methods: the output
+     * grid (0: a row at every accepted step), unless fixed is set. */
+    double dt;
+    bool fixed;          /* dopri5/dop853 with the constant step dt, no control */
+    double rtol, atol;   /* adaptive methods; 0 gives 1e-10, 1e-12 */
+    bool no_project;     /* constrained systems: skip the projection */
+    size_t max_steps;    /* 0: no limit */
+    const double *q0, *qd0; /* n initial coordinates and velocities */
+} qd_sim_opts;
+
+typedef struct qd_sim_stats {
+    size_t steps, evals, rejected;
+    double energy_error_max;     /* max |E(t) - E(0)| / max(|E(0)|, max T) */
+    double constraint_error_max; /* max |residual| of every constraint (and of
+                                    the holonomic ones differentiated) */
+    double E0;                   /* the Jacobi integral h = sum q' dL/dq' - L at t0 */
+    size_t events;
+    double t;                    /* where the run ended */
+} qd_sim_stats;
+
+/* The columns of a run with method: t, the coordinates, the velocities
+ * (name'), the momenta (p_name, canonical-form methods only), energy (the
+ * Jacobi integral h, = T + V for natural systems), one residual per
+ * constraint (res_NAME), then the outputs.  names may be NULL; returns the
+ * count; names[i] are owned by s. */
+size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
+
+/* Receives every row (event -1: a sample; else the index of the event in
+ * the order added).  Returning nonzero ends the run early (QD_OK). */
+typedef int (*qd_sim_sink)(void *data, int event, const double *row);
+
+/* Integrate from opts->t0 to opts->t_end.  Rows at t0, at the output grid
+ * (or every step) and at the end, and at every event.  final (may be NULL)
+ * receives the last row.  Failures (QD_ERR_NUMERIC, QD_ERR_SINGULAR, with
+ * the time in the message): step size underflow, no convergence of the
+ * Gauss-Legendre iteration, a mass matrix singular at a state, a constraint
+ * that projection cannot satisfy; a non-separable H for verlet/yoshida, a
+ * missing step or a method that cannot take the system is QD_ERR_ARG. */
+qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *opts, qd_sim_sink sink, void *data,
+                     qd_sim_stats *stats, double *final);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,133 @@
+/*
+ * qdot/stability.h - steady motions (relative equilibria) of systems with
+ * cyclic coordinates, and their stability.
+ *
+ * A steady motion keeps the other ("kept", palpable) coordinates x at rest,
+ * x = x0, while each cyclic coordinate c turns at a constant rate c' = w_c.
+ * Two situations differ (Britannica 1911 "Dynamics" sec. 6, seed 004; Routh):
+ *
+ *   free      (--ignore c) the momenta p_c = dL/dc' are constant and
+ *             free: the kept coordinates move under the Routhian (qdot/routh.h),
+ *             V_eff = V + K = R0 (Goldstein sign: R = sum p c' - L), with the
+ *             gyroscopic matrix G from R's part linear in x'.
+ *   driven    (--driven "c' = Omega") the rate is imposed by an external agency
+ *             (a rheonomic constraint): the kept coordinates move under
+ *             L(x, x', c' = Omega), V_eff = V - T0, T0 the part of T free of x'.
+ *
+ * Both V_eff have the same gradient (dT0/dx = -dK/dx at corresponding p and
+ * w), so the steady motions are the same: x0 solves f_k(x0, x' = 0, c' = w) = 0
+ * for the kept rows of Lagrange's equations M q'' = f with c'' = 0.  Their
+ * Hessians differ, and so do the verdicts: circular orbits under -k r^n are
+ * stable for n > -3 with free angular momentum, a bead on a wire driven round
+ * at the same rate only for n > 1 (reference seed-goldstein-britannica.md,
+ * B08/B09 and pitfall P4).
+ *
+ * About the steady motion the kept equations linearize to
+ *     M0 x'' + (C0 + G0) x' + K0 x = 0          (qdot/modes.h's qd_linear)
+ * and two stabilities are reported:
+ *   ordinary  the roots of det(M0 s^2 + G0 s + K0) = 0 without dissipation:
+ *             stable when every root is a simple imaginary pair (gyroscopic
+ *             terms can stabilise a maximum of V_eff: the sleeping top);
+ *   secular   Thomson and Tait: with dissipation acting on every kept
+ *             coordinate the steady motion is stable iff V_eff is a minimum
+ *             (Hessian positive definite); any damping destroys gyroscopic
+ *             stabilisation.
+ * When the model has a dissipation function (or forces) the roots with C0
+ * are also given.  Borderline cases (a zero or a double frequency, a
+ * semidefinite Hessian) are flagged as such (-1), never classified.
+ */
+#ifndef QDOT_STABILITY_H
+#define QDOT_STABILITY_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "mech.h"
+#include "model.h"
+#include "modes.h"
+#include "routh.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The symbolic side, prepared once per model and choice of cyclic
+ * coordinates. */
+typedef struct qd_steady {
+    bool driven;
+    size_t nkeep, ncyc;
+    const qd_expr **keep, **keepd;  /* kept coordinates and velocities, model order */
+    const qd_expr **cyc, **cycd;    /* cyclic (ignored or driven) coordinates, velocities */
+    const qd_expr **beta;           /* free: the momentum symbols p_<c>; driven: NULL */
+    const qd_expr **mom;            /* ncyc: p_c = dL/dc' at x' = 0, in x, c', parameters, t */
+    const qd_expr **res;            /* nkeep: f_k at x' = 0, c'' = 0: zero at a steady motion,
+                                       in x, c', parameters, t */
+    const qd_expr *Veff;            /* free: R0 in x and beta; driven: V - T0 in x and c' */
+    const qd_expr **M, **f;         /* reduced equations M x'' = f in x, x' and beta (free)
+                                       or c' (driven); M nkeep*nkeep row-major */
+    qd_routh *routh;                /* free: the reduction used; driven: NULL */
+} qd_steady;
+
+/* Prepare the steady-motion analysis of model m (derived as e) with the
+ * ncyc coordinates cyc ignored (driven false) or driven (driven true).
+ * QD_ERR_ARG (NULL, message naming the coordinate) when one is not a
+ * coordinate, is repeated, is not cyclic (appears in L, D, the forces) or
+ * when every coordinate is listed, and for models with constraints; the
+ * errors of qd_routh_derive for the free case. */
+qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t ncyc,
+                            const qd_expr *const *cyc, bool driven);
+void qd_steady_free(qd_steady *s);
+
+/* A steady motion: kept coordinates x (nkeep), rates w (ncyc, c') and
+ * momenta p (ncyc). */
+typedef struct qd_steady_point {
+    double *x, *w, *p;
+} qd_steady_point;
+
+/* Find a steady motion.  On entry pt holds the given values and the starting
+ * guesses; xfix[j] keeps x_j, wfix[c] keeps w_c, pfix[c] keeps p_c (at most
+ * one of wfix, pfix per c).  The rest are unknowns, solved by Gauss-Newton
+ * (Levenberg-Marquardt damped) on the kept residuals and the given momenta:
+ * there must be no more unknowns than equations (QD_ERR_ARG, saying what to
+ * give).  nvals/syms/vals give the parameters and t (other symbols in syms
+ * are ignored).  QD_ERR_NUMERIC when no steady motion is found from the
+ * guesses (or the given values are not one: an over-determined residual that
+ * does not vanish), QD_ERR_SINGULAR when the equations are not defined there
+ * (a coordinate singularity: 0/0).  On success every entry of pt is set and
+ * *residual (may be NULL) is the largest final residual. */
+qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+                         const qd_expr *const *syms, const double *vals, const bool *xfix,
+                         const bool *wfix, const bool *pfix, qd_steady_point *pt,
+                         double *residual);
+
+/* The stability of a steady motion. */
+typedef struct qd_stability {
+    size_t n;                 /* kept coordinates */
+    qd_linear lin;            /* M0, C0, G0, K0 about the steady motion */
+    double *hessian;          /* n*n: the Hessian of V_eff */
+    qd_modes_result ordinary; /* M0 s^2 + G0 s + K0 (no dissipation) */
+    qd_modes_result secular;  /* K = Hessian, C = G = 0: omega2's signs are its inertia */
+    bool dissipative;         /* C0 != 0: the model's damping acts */
+    qd_modes_result damped;   /* M0 s^2 + (C0 + G0) s + K0 when dissipative */
+    int ordinary_stable;      /* 1 stable, 0 unstable, -1 borderline */
+    int secular_stable;       /* 1 V_eff minimum, 0 not a minimum, -1 semidefinite */
+    int damped_stable;        /* as ordinary_stable, for `damped` (when dissipative) */
+    size_t nfreq;
+    double *freq;             /* ordinary small-oscillation frequencies (> 0), ascending,
+                                 each oscillation once (one per imaginary pair) */
+    const char *verdict;      /* a sentence (static storage) */
+} qd_stability;
+
+/* Linearize the reduced equations about the steady motion pt and analyse
+ * them (qdot/modes.h's qd_modes_solve).  nvals/syms/vals as for
+ * qd_steady_find.  QD_ERR_SINGULAR when the equations are not defined there
+ * or M0 is not positive definite. */
+qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+                               const qd_expr *const *syms, const double *vals,
+                               const qd_steady_point *pt, qd_stability *out);
+void qd_stability_free(qd_stability *st);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,500 @@
+/*
+ * src/linear/steady.c - steady motions of a system with cyclic coordinates:
+ * the symbolic preparation (qd_steady_derive) and the search
+ * (qd_steady_find).
+ *
+ * The search works on the full equations, not on V_eff: the kept rows of
+ * M q'' = f at x' = 0, c'' = 0 vanish exactly at a steady motion, whether
+ * the rates are free or driven (the two effective potentials have the same
+ * gradient), and in that form a given momentum is one more equation
+ * p_c = dL/dc' while a given point (--at) leaves the rate unknown.  So one
+ * Gauss-Newton solve covers "p given, find x", "x given, find w or p" and
+ * "w given, find x".
+ */
+#include "steady.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+
+void qd_steady_free(qd_steady *s) {
+    if (!s)
+        return;
+    free(s->keep);
+    free(s->keepd);
+    free(s->cyc);
+    free(s->cycd);
+    free(s->mom);
+    free(s->res);
+    if (s->driven) {
+        free(s->M);
+        free(s->f);
+    }
+    qd_routh_free(s->routh);
+    free(s);
+}
+
+/* Is coordinate c cyclic for the purpose `what`?  Reports the first place
+ * it appears. */
+static bool cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const qd_expr *c) {
+    const char *where = NULL;
+    const qd_expr *D = qd_model_dissipation(m);
+    if (qd_has(e->L, c))
+        where = "the Lagrangian";
+    else if (D && qd_has(D, c))
+        where = "the dissipation function";
+    for (size_t j = 0; !where && j < e->n; j++)
+        if (qd_has(e->f[j], c) || qd_has(qd_model_force(m, j), c))
+            where = "the equations of motion";
+    if (where)
+        qd_ctx_error(ctx, QD_ERR_ARG,
+                     "%s is not cyclic: it appears in %s, so it cannot turn steadily while the "
+                     "others stay at rest", qd_expr_name(c), where);
+    return !where;
+}
+
+/* Sort the coordinates into kept and cyclic. */
+static qd_status split_coords(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_steady *s,
+                              size_t ncyc, const qd_expr *const *cyc) {
+    size_t n = e->n, nk = 0;
+    for (size_t c = 0; c < ncyc; c++) {
+        size_t j = 0;
+        while (j < n && e->q[j] != cyc[c])
+            j++;
+        if (j == n) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "%s is not a coordinate of the model",
+                         cyc[c] ? qd_expr_name(cyc[c]) : "(null)");
+            return QD_ERR_ARG;
+        }
+        for (size_t k = 0; k < c; k++)
+            if (cyc[k] == cyc[c]) {
+                qd_ctx_error(ctx, QD_ERR_ARG, "%s is listed twice", qd_expr_name(cyc[c]));
+                return QD_ERR_ARG;
+            }
+        if (!cyclic(ctx, m, e, cyc[c]))
+            return QD_ERR_ARG;
+        s->cyc[c] = cyc[c];
+        s->cycd[c] = e->qd[j];
+    }
+    for (size_t j = 0; j < n; j++) {
+        bool ign = false;
+        for (size_t c = 0; c < ncyc; c++)
+            ign = ign || cyc[c] == e->q[j];
+        if (!ign) {
+            s->keep[nk] = e->q[j];
+            s->keepd[nk++] = e->qd[j];
+        }
+    }
+    return QD_OK;
+}
+
+/* x with every kept velocity set to 0. */
+static const qd_expr *at_rest(qd_ctx *ctx, const qd_steady *s, const qd_expr *x) {
+    const qd_expr **zero = arr(s->nkeep);
+    if (!zero)
+        return NULL;
+    for (size_t j = 0; j < s->nkeep; j++)
+        zero[j] = qd_int(ctx, 0);
+    const qd_expr *y = qd_subs(ctx, x, s->nkeep, s->keepd, zero);
+    free(zero);
+    return y ? qd_simplify(ctx, y) : NULL;
+}
+
+static size_t index_of(const qd_eom *e, const qd_expr *q) {
+    size_t j = 0;
+    while (j < e->n && e->q[j] != q)
+        j++;
+    return j;
+}
+
+static qd_status driven_equations(qd_ctx *ctx, const qd_eom *e, qd_steady *s) {
+    size_t nk = s->nkeep;
+    s->M = arr(nk * nk);
+    s->f = arr(nk);
+    if (!s->M || !s->f)
+        return QD_ERR_NOMEM;
+    for (size_t a = 0; a < nk; a++) {
+        size_t i = index_of(e, s->keep[a]);
+        s->f[a] = e->f[i];
+        for (size_t b = 0; b < nk; b++)
+            s->M[a * nk + b] = e->M[i * e->n + index_of(e, s->keep[b])];
+    }
+    /* V - T0 = -(L with the kept velocities at rest), U's velocity-free part
+     * included. */
+    s->Veff = at_rest(ctx, s, qd_neg(ctx, e->L));
+    return s->Veff ? QD_OK : qd_ctx_status(ctx);
+}
+
+static qd_status free_equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_steady *s) {
+    s->routh = qd_routh_derive(ctx, m, e, s->ncyc, s->cyc);
+    if (!s->routh)
+        return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_ARG;
+    s->beta = s->routh->beta;
+    s->M = s->routh->M;
+    s->f = s->routh->f;
+    s->Veff = s->routh->Veff;
+    return QD_OK;
+}
+
+qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t ncyc,
+                            const qd_expr *const *cyc, bool driven) {
+    if (!e || !m || (ncyc && !cyc)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "qd_steady_derive: missing argument");
+        return NULL;
+    }
+    if (ncyc == 0 || ncyc >= e->n) {
+        qd_ctx_error(ctx, QD_ERR_ARG, ncyc ? "every coordinate is listed as cyclic: nothing is "
+                                             "left to be steady" : "no cyclic coordinate given");
+        return NULL;
+    }
+    if (e->ncon || e->nelim) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "steady motions of models with constraints are not "
+                                      "supported: choose independent coordinates");
+        return NULL;
+    }
+    qd_steady *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    s->driven = driven;
+    s->ncyc = ncyc;
+    s->nkeep = e->n - ncyc;
+    s->keep = arr(s->nkeep);
+    s->keepd = arr(s->nkeep);
+    s->cyc = arr(ncyc);
+    s->cycd = arr(ncyc);
+    s->mom = arr(ncyc);
+    s->res = arr(s->nkeep);
+    qd_status st = s->keep && s->keepd && s->cyc && s->cycd && s->mom && s->res ? QD_OK
+                                                                                : QD_ERR_NOMEM;
+    if (st == QD_OK)
+        st = split_coords(ctx, m, e, s, ncyc, cyc);
+    for (size_t c = 0; st == QD_OK && c < ncyc; c++)
+        if (!(s->mom[c] = at_rest(ctx, s, qd_diff(ctx, e->L, s->cycd[c]))))
+            st = qd_ctx_status(ctx);
+    for (size_t a = 0; st == QD_OK && a < s->nkeep; a++)
+        if (!(s->res[a] = at_rest(ctx, s, e->f[index_of(e, s->keep[a])])))
+            st = qd_ctx_status(ctx);
+    if (st == QD_OK)
+        st = driven ? driven_equations(ctx, e, s) : free_equations(ctx, m, e, s);
+    if (st != QD_OK) {
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "cannot prepare the steady-motion analysis");
+        qd_steady_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+/* ---- evaluation environment ------------------------------------------------ */
+
+qd_status qd__steady_env_init(const qd_steady *s, size_t nvals, const qd_expr *const *syms,
+                              const double *vals, qd__steady_env *env) {
+    size_t nb = s->beta ? s->ncyc : 0;
+    size_t cap = nvals + 2 * s->nkeep + s->ncyc + nb;
+    env->syms = calloc(cap ? cap : 1, sizeof *env->syms);
+    env->vals = calloc(cap ? cap : 1, sizeof *env->vals);
+    if (!env->syms || !env->vals) {
+        qd__steady_env_free(env);
+        return QD_ERR_NOMEM;
+    }
+    size_t n = 0;
+    for (size_t i = 0; i < nvals; i++) {
+        qd_role r = qd_expr_kind(syms[i]) == QD_SYMBOL ? qd_symbol_role(syms[i]) : QD_ROLE_COORD;
+        if (r == QD_ROLE_PARAM || r == QD_ROLE_TIME || r == QD_ROLE_PLAIN) {
+            env->syms[n] = syms[i];
+            env->vals[n++] = vals[i];
+        }
+    }
+    env->x = n;
+    for (size_t j = 0; j < s->nkeep; j++)
+        env->syms[n++] = s->keep[j];
+    env->xd = n;
+    for (size_t j = 0; j < s->nkeep; j++)
+        env->syms[n++] = s->keepd[j];
+    env->w = n;
+    for (size_t c = 0; c < s->ncyc; c++)
+        env->syms[n++] = s->cycd[c];
+    env->p = n;
+    for (size_t c = 0; c < nb; c++)
+        env->syms[n++] = s->beta[c];
+    env->n = n;
+    return QD_OK;
+}
+
+void qd__steady_env_free(qd__steady_env *env) {
+    free(env->syms);
+    free(env->vals);
+    env->syms = NULL;
+    env->vals = NULL;
+}
+
+qd_status qd__steady_eval(qd_ctx *ctx, const qd__steady_env *env, const qd_expr *x, double *out) {
+    qd_status st = qd_eval(ctx, x, env->n, env->syms, env->vals, out);
+    if (st == QD_OK && !isfinite(*out)) {
+        qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                     "the equations are not defined at this steady motion (a division by zero: "
+                     "a singular point of the coordinates? choose coordinates regular there)");
+        return QD_ERR_SINGULAR;
+    }
+    return st;
+}
+
+/* ---- the search ----------------------------------------------------------- */
+
+typedef struct search {
+    qd_ctx *ctx;
+    const qd_steady *s;
+    qd__steady_env env;
+    size_t nu, neq;
+    size_t *uslot;             /* nu: env slot of each unknown */
+    const qd_expr **F;         /* neq: residual expressions (momenta minus their values) */
+    double *pgiven;            /* neq: subtracted from F (0 for the kept rows) */
+    const qd_expr **dF;        /* neq*nu */
+} search;
+
+static void search_free(search *S) {
+    qd__steady_env_free(&S->env);
+    free(S->uslot);
+    free(S->F);
+    free(S->pgiven);
+    free(S->dF);
+}
+
+static qd_status residual(search *S, const double *u, double *F, double *J) {
+    for (size_t i = 0; i < S->nu; i++)
+        S->env.vals[S->uslot[i]] = u[i];
+    qd_status st = QD_OK;
+    for (size_t k = 0; st == QD_OK && k < S->neq; k++) {
+        st = qd__steady_eval(S->ctx, &S->env, S->F[k], &F[k]);
+        F[k] -= S->pgiven[k];
+        for (size_t i = 0; st == QD_OK && J && i < S->nu; i++)
+            st = qd__steady_eval(S->ctx, &S->env, S->dF[k * S->nu + i], &J[k * S->nu + i]);
+    }
+    return st;
+}
+
+static double norm2(const double *v, size_t n) {
+    double s = 0;
+    for (size_t i = 0; i < n; i++)
+        s += v[i] * v[i];
+    return s;
+}
+
+/* Solve the nu x nu system A d = b (Gaussian elimination, partial
+ * pivoting); false when singular. */
+static bool solve_small(size_t n, double *A, double *b) {
+    for (size_t k = 0; k < n; k++) {
+        size_t p = k;
+        for (size_t i = k + 1; i < n; i++)
+            if (fabs(A[i * n + k]) > fabs(A[p * n + k]))
+                p = i;
+        if (A[p * n + k] == 0)
+            return false;
+        for (size_t j = 0; j < n; j++) {
+            double t = A[k * n + j];
+            A[k * n + j] = A[p * n + j];
+            A[p * n + j] = t;
+        }
+        double t = b[k];
+        b[k] = b[p];
+        b[p] = t;
+        for (size_t i = k + 1; i < n; i++) {
+            double l = A[i * n + k] / A[k * n + k];
+            for (size_t j = k; j < n; j++)
+                A[i * n + j] -= l * A[k * n + j];
+            b[i] -= l * b[k];
+        }
+    }
+    for (size_t k = n; k-- > 0;) {
+        for (size_t j = k + 1; j < n; j++)
+            b[k] -= A[k * n + j] * b[j];
+        b[k] /= A[k * n + k];
+    }
+    return true;
+}
+
+/* One Levenberg-Marquardt step from u: d solves (J^T J + mu diag(J^T J)) d = -J^T F. */
+static bool lm_step(const search *S, const double *F, const double *J, double mu, double *A,
+                    double *d) {
+    size_t nu = S->nu;
+    for (size_t i = 0; i < nu; i++) {
+        d[i] = 0;
+        for (size_t k = 0; k < S->neq; k++)
+            d[i] -= J[k * nu + i] * F[k];
+        for (size_t j = 0; j < nu; j++) {
+            double a = 0;
+            for (size_t k = 0; k < S->neq; k++)
+                a += J[k * nu + i] * J[k * nu + j];
+            A[i * nu + j] = a;
+        }
+        A[i * nu + i] *= 1 + mu;
+        if (A[i * nu + i] == 0)
+            A[i * nu + i] = mu;
+    }
+    return solve_small(nu, A, d);
+}
+
+/* The scale of residual k, so that "zero" is relative to the size of the
+ * terms that cancel: the sum of its expanded terms' sizes, the given
+ * momentum, and |J_k| (|u| + 1) for how far a step could move it. */
+static double scale_of(const search *S, const double *J, const double *u, size_t k) {
+    double s = fabs(S->pgiven[k]), t;
+    for (size_t i = 0; i < S->nu; i++)
+        s += fabs(J[k * S->nu + i]) * (fabs(u[i]) + 1);
+    const qd_expr *ex = qd_expand(S->ctx, S->F[k]);
+    size_t nt = ex && qd_expr_kind(ex) == QD_ADD ? qd_expr_nargs(ex) : ex ? 1 : 0;
+    for (size_t i = 0; i < nt; i++)
+        if (qd_eval(S->ctx, nt > 1 ? qd_expr_arg(ex, i) : ex, S->env.n, S->env.syms,
+                    S->env.vals, &t) == QD_OK && isfinite(t))
+            s += fabs(t);
+    qd_ctx_clear_error(S->ctx);
+    return s > 0 ? s : 1;
+}
+
+static qd_status iterate(search *S, double *u, double *res_out) {
+    size_t nu = S->nu, neq = S->neq;
+    double *F = calloc(neq + 1, sizeof *F), *J = calloc(neq * nu + 1, sizeof *J);
+    double *A = calloc(nu * nu + 1, sizeof *A), *d = calloc(nu + 1, sizeof *d);
+    double *u2 = calloc(nu + 1, sizeof *u2), *F2 = calloc(neq + 1, sizeof *F2);
+    qd_status st = F && J && A && d && u2 && F2 ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK)
+        st = residual(S, u, F, J);
+    double mu = 1e-3, f0 = st == QD_OK ? norm2(F, neq) : 0;
+    bool done = false;
+    for (int it = 0; st == QD_OK && !done && it < 200 && nu > 0; it++) {
+        if (!lm_step(S, F, J, mu, A, d)) {
+            mu *= 10;
+            continue;
+        }
+        for (size_t i = 0; i < nu; i++)
+            u2[i] = u[i] + d[i];
+        qd_status s2 = residual(S, u2, F2, NULL);
+        if (s2 == QD_ERR_SINGULAR) {  /* stepped onto a singular point: shorter steps */
+            qd_ctx_clear_error(S->ctx);
+            mu *= 10;
+            continue;
+        }
+        if ((st = s2) != QD_OK)
+            break;
+        double f2 = norm2(F2, neq);
+        if (f2 <= f0) {
+            memcpy(u, u2, nu * sizeof *u);
+            double du = sqrt(norm2(d, nu)), un = sqrt(norm2(u, nu));
+            done = du <= 1e-14 * (1 + un) || f2 == 0;
+            f0 = f2;
+            mu = mu > 1e-12 ? mu / 10 : mu;
+            st = residual(S, u, F, J);
+        } else {
+            mu *= 10;
+            done = mu > 1e12;
+        }
+    }
+    if (st == QD_OK)
+        st = residual(S, u, F, J);
+    double worst = 0;
+    for (size_t k = 0; st == QD_OK && k < neq; k++) {
+        double r = fabs(F[k]) / scale_of(S, J, u, k);
+        worst = r > worst ? r : worst;
+    }
+    if (res_out)
+        *res_out = worst;
+    if (st == QD_OK && worst > 1e-8) {
+        qd_ctx_error(S->ctx, QD_ERR_NUMERIC,
+                     nu ? "no steady motion found from these starting values (no convergence: "
+                          "relative residual %.3g); give other values with --at"
+                        : "the values given are not a steady motion (relative residual %.3g)",
+                     worst);
+        st = QD_ERR_NUMERIC;
+    }
+    free(F);
+    free(J);
+    free(A);
+    free(d);
+    free(u2);
+    free(F2);
+    return st;
+}
+
+/* Count and check the unknowns and equations. */
+static qd_status setup(search *S, const bool *xfix, const bool *wfix, const bool *pfix,
+                       const qd_steady_point *pt) {
+    const qd_steady *s = S->s;
+    S->nu = S->neq = 0;
+    for (size_t j = 0; j < s->nkeep; j++)
+        S->nu += !xfix[j];
+    for (size_t c = 0; c < s->ncyc; c++) {
+        if (wfix[c] && pfix[c]) {
+            qd_ctx_error(S->ctx, QD_ERR_ARG, "give either the rate %s or the momentum of %s, "
+                         "not both", qd_expr_name(s->cycd[c]), qd_expr_name(s->cyc[c]));
+            return QD_ERR_ARG;
+        }
+        S->nu += !wfix[c];
+        S->neq += pfix[c];
+    }
+    S->neq += s->nkeep;
+    if (S->nu > S->neq) {
+        qd_ctx_error(S->ctx, QD_ERR_ARG,
+                     "%zu unknowns for %zu equations: give the value of %zu more (a kept "
+                     "coordinate's value, a rate or a momentum)", S->nu, S->neq, S->nu - S->neq);
+        return QD_ERR_ARG;
+    }
+    S->uslot = calloc(S->nu + 1, sizeof *S->uslot);
+    S->F = arr(S->neq);
+    S->pgiven = calloc(S->neq + 1, sizeof *S->pgiven);
+    S->dF = arr(S->neq * S->nu);
+    if (!S->uslot || !S->F || !S->pgiven || !S->dF)
+        return QD_ERR_NOMEM;
+    size_t u = 0, k = 0;
+    for (size_t j = 0; j < s->nkeep; j++) {
+        S->env.vals[S->env.x + j] = pt->x[j];
+        if (!xfix[j])
+            S->uslot[u++] = S->env.x + j;
+    }
+    for (size_t c = 0; c < s->ncyc; c++) {
+        S->env.vals[S->env.w + c] = pt->w[c];
+        if (!wfix[c])
+            S->uslot[u++] = S->env.w + c;
+    }
+    for (size_t a = 0; a < s->nkeep; a++)
+        S->F[k++] = s->res[a];
+    for (size_t c = 0; c < s->ncyc; c++)
+        if (pfix[c]) {
+            S->pgiven[k] = pt->p[c];
+            S->F[k++] = s->mom[c];
+        }
+    for (size_t i = 0; i < S->neq; i++)
+        for (size_t j = 0; j < S->nu; j++)
+            if (!(S->dF[i * S->nu + j] = qd_diff(S->ctx, S->F[i], S->env.syms[S->uslot[j]])))
+                return qd_ctx_status(S->ctx);
+    return QD_OK;
+}
+
+qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+                         const qd_expr *const *syms, const double *vals, const bool *xfix,
+                         const bool *wfix, const bool *pfix, qd_steady_point *pt,
+                         double *residual_out) {
+    search S = {.ctx = ctx, .s = s};
+    qd_status st = qd__steady_env_init(s, nvals, syms, vals, &S.env);
+    if (st == QD_OK)
+        st = setup(&S, xfix, wfix, pfix, pt);
+    double *u = st == QD_OK ? calloc(S.nu + 1, sizeof *u) : NULL;
+    if (st == QD_OK && !u)
+        st = QD_ERR_NOMEM;
+    for (size_t i = 0; st == QD_OK && i < S.nu; i++)
+        u[i] = S.env.vals[S.uslot[i]];
+    if (st == QD_OK)
+        st = iterate(&S, u, residual_out);
+    if (st == QD_OK) {
+        for (size_t j = 0; j < s->nkeep; j++)
+            pt->x[j] = S.env.vals[S.env.x + j];
+        for (size_t c = 0; c < s->ncyc && st == QD_OK; c++) {
+            pt->w[c] = S.env.vals[S.env.w + c];
+            st = qd__steady_eval(ctx, &S.env, s->mom[c], &pt->p[c]);
+        }
+    }
+    free(u);
+    search_free(&S);
+    return st;
+}

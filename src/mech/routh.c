@@ -1,0 +1,399 @@
+/*
+ * src/mech/routh.c - Routh's reduction (qdot/routh.h): the ignored
+ * velocities from the constant momenta, the Routhian, its split by degree
+ * and the reduced equations of the kept coordinates.
+ *
+ * The reduced equations are derived afresh from -R as a Lagrangian rather
+ * than by rewriting the full equations: that is the point of the method,
+ * and it is what the cross-check against the full equations (tests) can
+ * then confirm independently.
+ */
+#include "qdot/routh.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mech.h"
+#include "model/parser.h"
+
+static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+
+void qd_routh_free(qd_routh *r) {
+    if (!r)
+        return;
+    free(r->ign);
+    free(r->beta);
+    free(r->keep);
+    free(r->keepd);
+    free(r->keepdd);
+    free(r->ignvel);
+    free(r->pdef);
+    free(r->M);
+    free(r->f);
+    free(r->G);
+    free(r->ign_index);
+    free(r->keep_index);
+    free(r);
+}
+
+static qd_routh *routh_alloc(size_t n, size_t nign) {
+    qd_routh *r = calloc(1, sizeof *r);
+    if (!r)
+        return NULL;
+    size_t nk = n - nign;
+    r->n = n;
+    r->nign = nign;
+    r->nkeep = nk;
+    r->ign = arr(nign);
+    r->beta = arr(nign);
+    r->ignvel = arr(nign);
+    r->pdef = arr(nign);
+    r->keep = arr(nk);
+    r->keepd = arr(nk);
+    r->keepdd = arr(nk);
+    r->M = arr(nk * nk);
+    r->f = arr(nk);
+    r->G = arr(nk * nk);
+    r->ign_index = calloc(nign ? nign : 1, sizeof *r->ign_index);
+    r->keep_index = calloc(nk ? nk : 1, sizeof *r->keep_index);
+    if (!r->ign || !r->beta || !r->ignvel || !r->pdef || !r->keep || !r->keepd || !r->keepdd ||
+        !r->M || !r->f || !r->G || !r->ign_index || !r->keep_index) {
+        qd_routh_free(r);
+        return NULL;
+    }
+    return r;
+}
+
+/* ---- names and cyclicity ---------------------------------------------------- */
+
+const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name) {
+    size_t nc = qd_model_ncoords(m);
+    const char **names = malloc((nc ? nc : 1) * sizeof *names);
+    if (!names) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    for (size_t i = 0; i < nc; i++) {
+        names[i] = qd_expr_name(qd_model_coord(m, i));
+        if (!strcmp(names[i], name)) {
+            free(names);
+            return qd_model_coord(m, i);
+        }
+    }
+    bool param = false;
+    for (size_t i = 0; i < qd_model_nparams(m); i++)
+        param = param || !strcmp(qd_expr_name(qd_model_param(m, i)), name);
+    const char *near = nearest(name, strlen(name), names, nc);
+    if (param)
+        qd_ctx_error(ctx, QD_ERR_ARG, "'%s' is a parameter, not a coordinate", name);
+    else if (near)
+        qd_ctx_error(ctx, QD_ERR_ARG, "unknown coordinate '%s'; did you mean '%s'?", name, near);
+    else
+        qd_ctx_error(ctx, QD_ERR_ARG, "unknown coordinate '%s'", name);
+    free(names);
+    return NULL;
+}
+
+static bool has(const qd_expr *x, const qd_expr *s) { return x && qd_has(x, s); }
+
+/* The statement that makes coordinate index j of e not cyclic, or NULL. */
+const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j,
+                                const char **why) {
+    const qd_expr *c = e->q[j], *cd = e->qd[j], *D = qd_model_dissipation(m);
+    const qd_expr *Q = qd_model_force(m, j);
+    (void)ctx;
+    *why = "it appears in the Lagrangian";
+    if (has(e->L, c)) {
+        if (qd_model_lagrangian_given(m))
+            return "L";
+        *why = "it appears in the potential energy";
+        if (has(qd_model_potential(m), c))
+            return "V";
+        *why = "it appears in the generalized potential";
+        if (has(qd_model_gen_potential(m), c))
+            return "U";
+        *why = "it appears in the kinetic energy";
+        return "T";
+    }
+    *why = "it has a generalized force, so its momentum is not constant";
+    if (Q && !qd_is_zero(Q))
+        return qd_expr_name(c);
+    *why = "the dissipation function depends on it, so its momentum is not constant";
+    if (has(D, c) || has(D, cd))
+        return "dissipation";
+    for (size_t k = 0; k < e->n; k++) {
+        const qd_expr *Qk = qd_model_force(m, k);
+        *why = "the generalized force on another coordinate depends on it";
+        if (k != j && has(Qk, c))
+            return qd_expr_name(e->q[k]);
+    }
+    return NULL;
+}
+
+/* ---- the ignored velocities ------------------------------------------------- */
+
+/* Forward elimination on the augmented n x (n+1) matrix A, pivots that
+ * simplify to nonzero (as in hamilton.c). */
+static qd_status eliminate(qd_ctx *ctx, size_t n, const qd_expr **A) {
+    size_t w = n + 1;
+    for (size_t k = 0; k < n; k++) {
+        size_t piv = k;
+        while (piv < n && qd_is_zero(A[piv * w + k] = qd_simplify(ctx, A[piv * w + k])))
+            piv++;
+        if (piv == n) {
+            qd_ctx_error(ctx, QD_ERR_SINGULAR, "the momenta of the ignored coordinates do not "
+                                               "determine their velocities");
+            return QD_ERR_SINGULAR;
+        }
+        for (size_t c = 0; piv != k && c < w; c++) {
+            const qd_expr *t = A[k * w + c];
+            A[k * w + c] = A[piv * w + c];
+            A[piv * w + c] = t;
+        }
+        for (size_t r = k + 1; r < n; r++) {
+            const qd_expr *f = qd_div(ctx, A[r * w + k], A[k * w + k]);
+            for (size_t c = k; c < w; c++)
+                A[r * w + c] = qd_sub(ctx, A[r * w + c], qd_mul(ctx, f, A[k * w + c]));
+        }
+        if (qd_ctx_status(ctx) != QD_OK)
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
+}
+
+static qd_status back_substitute(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x) {
+    size_t w = n + 1;
+    for (size_t k = n; k-- > 0;) {
+        const qd_expr *s = A[k * w + n];
+        for (size_t c = k + 1; c < n; c++)
+            s = qd_sub(ctx, s, qd_mul(ctx, A[k * w + c], x[c]));
+        x[k] = qd_simplify(ctx, qd_div(ctx, s, A[k * w + k]));
+        if (!x[k])
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
+}
+
+/* beta_i = dL/dc'_i = sum_j A_ij c'_j + (the rest, in k' and q): the row
+ * [A_i | beta_i - rest]. */
+static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t i,
+                              const qd_expr **row) {
+    const qd_expr **co = arr(e->n);
+    if (!co)
+        return QD_ERR_NOMEM;
+    const qd_expr *rest = NULL;
+    qd_status st = qd_linear_coeffs(ctx, r->pdef[i], e->n, e->qd, co, &rest);
+    if (st == QD_ERR_NONLINEAR)
+        qd_ctx_error(ctx, st, "the momentum of %s is not linear in the velocities "
+                              "(L is not quadratic in them)", qd_expr_name(r->ign[i]));
+    if (st == QD_OK) {
+        for (size_t k = 0; k < r->nkeep; k++)
+            rest = qd_add(ctx, rest, qd_mul(ctx, co[r->keep_index[k]], r->keepd[k]));
+        for (size_t j = 0; j < r->nign; j++)
+            row[j] = co[r->ign_index[j]];
+        row[r->nign] = qd_sub(ctx, r->beta[i], rest);
+        st = row[r->nign] ? QD_OK : qd_ctx_status(ctx);
+    }
+    free(co);
+    return st;
+}
+
+static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
+    size_t ni = r->nign, w = ni + 1;
+    const qd_expr **A = arr(ni * w);
+    if (!A)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_OK;
+    for (size_t i = 0; st == QD_OK && i < ni; i++) {
+        char name[256];
+        snprintf(name, sizeof name, "p_%s", qd_expr_name(r->ign[i]));
+        r->beta[i] = qd_symbol(ctx, name);
+        r->pdef[i] = qd_simplify(ctx, qd_diff(ctx, e->L, e->qd[r->ign_index[i]]));
+        st = r->beta[i] && r->pdef[i] ? momentum_row(ctx, e, r, i, A + i * w)
+                                       : qd_ctx_status(ctx);
+    }
+    if (st == QD_OK)
+        st = eliminate(ctx, ni, A);
+    if (st == QD_OK)
+        st = back_substitute(ctx, ni, A, r->ignvel);
+    free(A);
+    return st;
+}
+
+/* ---- the Routhian and the reduced equations --------------------------------- */
+
+/* x with the ignored velocities replaced by the quadratures' integrands. */
+static const qd_expr *reduce(qd_ctx *ctx, const qd_eom *e, const qd_routh *r,
+                             const qd_expr *x) {
+    const qd_expr **from = arr(r->nign);
+    if (!from)
+        return NULL;
+    for (size_t i = 0; i < r->nign; i++)
+        from[i] = e->qd[r->ign_index[i]];
+    const qd_expr *y = qd_subs(ctx, x, r->nign, from, r->ignvel);
+    free(from);
+    return y;
+}
+
+static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
+    const qd_expr *s = qd_neg(ctx, e->L);
+    for (size_t i = 0; i < r->nign; i++)
+        s = qd_add(ctx, s, qd_mul(ctx, r->beta[i], e->qd[r->ign_index[i]]));
+    s = reduce(ctx, e, r, s);
+    if (!s)
+        return qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+    qd__vsum v;
+    qd_status st = qd__by_velocity(ctx, s, r->nkeep, r->keepd, &v);
+    if (st == QD_OK && v.top > 2)
+        st = QD_ERR_NONLINEAR;
+    if (st == QD_ERR_NONLINEAR)
+        qd_ctx_error(ctx, st, "the Routhian is not quadratic in the kept velocities");
+    if (st != QD_OK)
+        return st;
+    const qd_expr *zero = qd_int(ctx, 0);
+    r->R2 = qd_simplify(ctx, v.deg[2] ? v.deg[2] : zero);
+    r->R1 = qd_simplify(ctx, v.deg[1] ? v.deg[1] : zero);
+    r->R0 = qd_simplify(ctx, v.deg[0] ? v.deg[0] : zero);
+    r->R = qd_add(ctx, qd_add(ctx, r->R2, r->R1), r->R0);
+    r->Veff = r->R0;
+    r->h = qd_simplify(ctx, qd_sub(ctx, r->R0, r->R2));
+    return r->R && r->h ? QD_OK : qd_ctx_status(ctx);
+}
+
+/* G_ij = dg_i/dk_j - dg_j/dk_i with R1 = sum g_j k'_j. */
+static qd_status gyroscopic(qd_ctx *ctx, qd_routh *r) {
+    size_t nk = r->nkeep;
+    const qd_expr **g = arr(nk);
+    if (!g)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < nk; i++)
+        g[i] = qd_diff(ctx, r->R1, r->keepd[i]);
+    for (size_t i = 0; i < nk; i++)
+        for (size_t j = 0; j < nk; j++)
+            r->G[i * nk + j] = i == j ? qd_int(ctx, 0)
+                                      : qd_simplify(ctx, qd_sub(ctx, qd_diff(ctx, g[i], r->keep[j]),
+                                                                qd_diff(ctx, g[j], r->keep[i])));
+    free(g);
+    return qd_ctx_status(ctx);
+}
+
+/* The generalized force on kept coordinate k, dissipation included, with
+ * the ignored velocities replaced. */
+static const qd_expr *extra(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const qd_routh *r,
+                            size_t k) {
+    size_t j = r->keep_index[k];
+    const qd_expr *Q = qd_model_force(m, j), *D = qd_model_dissipation(m);
+    const qd_expr *x = Q ? Q : qd_int(ctx, 0);
+    if (D)
+        x = qd_sub(ctx, x, qd_diff(ctx, D, e->qd[j]));
+    return reduce(ctx, e, r, x);
+}
+
+static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh *r) {
+    size_t nk = r->nkeep;
+    const qd_expr *lag = qd_neg(ctx, r->R), *D = qd_model_dissipation(m);
+    const qd_expr **co = arr(nk);
+    if (!co)
+        return QD_ERR_NOMEM;
+    r->conserved = !qd_has(r->R, qd_time(ctx)) && (!D || qd_is_zero(D));
+    qd_status st = QD_OK;
+    for (size_t k = 0; st == QD_OK && k < nk; k++) {
+        const qd_expr *Q = extra(ctx, m, e, r, k), *rest = NULL;
+        r->conserved = r->conserved && Q && qd_is_zero(qd_simplify(ctx, Q));
+        const qd_expr *E = qd_sub(ctx, qd_sub(ctx, qd_dt(ctx, qd_diff(ctx, lag, r->keepd[k])),
+                                              qd_diff(ctx, lag, r->keep[k])),
+                                  Q);
+        if (!E) {
+            st = qd_ctx_status(ctx);
+            break;
+        }
+        st = qd_linear_coeffs(ctx, E, nk, r->keepdd, co, &rest);
+        if (st == QD_ERR_NONLINEAR)
+            qd_ctx_error(ctx, st, "the reduced equation of %s is not linear in the accelerations",
+                         qd_expr_name(r->keep[k]));
+        for (size_t j = 0; st == QD_OK && j < nk; j++)
+            if (!(r->M[k * nk + j] = qd_simplify(ctx, co[j])))
+                st = qd_ctx_status(ctx);
+        if (st == QD_OK && !(r->f[k] = qd_simplify(ctx, qd_neg(ctx, rest))))
+            st = qd_ctx_status(ctx);
+    }
+    free(co);
+    return st;
+}
+
+/* ---- the whole reduction ---------------------------------------------------- */
+
+static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh *r,
+                       const qd_expr *const *ign) {
+    bool *is_ign = calloc(e->n ? e->n : 1, sizeof *is_ign);
+    if (!is_ign)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_OK;
+    for (size_t i = 0; st == QD_OK && i < r->nign; i++) {
+        size_t j = 0;
+        while (j < e->n && e->q[j] != ign[i])
+            j++;
+        const char *why = NULL;
+        if (j == e->n) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "'%s' is not a coordinate of the model",
+                         ign[i] ? qd_expr_name(ign[i]) : "(null)");
+            st = QD_ERR_ARG;
+        } else if (is_ign[j]) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "%s is ignored twice", qd_expr_name(ign[i]));
+            st = QD_ERR_ARG;
+        } else if (qd_routh_not_cyclic(ctx, m, e, j, &why)) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "%s cannot be ignored: %s", qd_expr_name(ign[i]), why);
+            st = QD_ERR_ARG;
+        } else {
+            is_ign[j] = true;
+            r->ign[i] = e->q[j];
+            r->ign_index[i] = j;
+        }
+    }
+    for (size_t j = 0, k = 0; st == QD_OK && j < e->n; j++)
+        if (!is_ign[j]) {
+            r->keep_index[k] = j;
+            r->keep[k] = e->q[j];
+            r->keepd[k] = e->qd[j];
+            r->keepdd[k++] = e->qdd[j];
+        }
+    free(is_ign);
+    return st;
+}
+
+qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t nign,
+                          const qd_expr *const *ign) {
+    if (!ctx || !m || !e || (nign && !ign))
+        return NULL;
+    if (e->ncon || e->nelim) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "Routh's reduction with constraints is not supported");
+        return NULL;
+    }
+    if (!nign || nign >= e->n) {
+        qd_ctx_error(ctx, QD_ERR_ARG, nign ? "every coordinate is ignored: nothing is left to reduce to"
+                                           : "no coordinate to ignore");
+        return NULL;
+    }
+    qd_routh *r = routh_alloc(e->n, nign);
+    if (!r) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Routhian");
+        return NULL;
+    }
+    qd_status st = split(ctx, m, e, r, ign);
+    if (st == QD_OK)
+        st = ignored_velocities(ctx, e, r);
+    if (st == QD_OK)
+        st = routhian(ctx, e, r);
+    if (st == QD_OK)
+        st = gyroscopic(ctx, r);
+    if (st == QD_OK)
+        st = equations(ctx, m, e, r);
+    if (st != QD_OK) {
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "forming the Routhian failed");
+        qd_routh_free(r);
+        return NULL;
+    }
+    return r;
+}

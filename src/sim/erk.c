@@ -1,0 +1,212 @@
+/*
+ * src/sim/erk.c - the engine of the explicit Runge-Kutta pairs (dopri5.c,
+ * dop853.c hold the tableaux): stages, the step size controller and the
+ * first step (Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4).  The
+ * controller is that of Hairer's dopri5.f/dop853.f: factors bounded by
+ * fac1, fac2, safety 0.9, and for dopri5 the Lund stabilization (a PI
+ * controller, sec. IV.2) with beta = 0.04, which keeps the step sequence
+ * smooth and rejections rare.
+ */
+#include "simint.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct erk {
+    const qd__erk *tab;
+    double **K, **Kr;     /* stages of the last step; of a redo */
+    double *ytmp, *ynew, *coef;
+    double *mem;          /* everything above (K rows are swapped) */
+    bool dense_ready;
+    double facold;        /* error of the last accepted step (>= 1e-4) */
+    bool reject;          /* the last attempt was rejected */
+} erk;
+
+double qd__err_rms(const qd__integ *it, const double *err, const double *ynew) {
+    double sum = 0;
+    for (size_t i = 0; i < it->dim; i++) {
+        double sc = it->atol + it->rtol * fmax(fabs(it->y[i]), fabs(ynew[i]));
+        sum += (err[i] / sc) * (err[i] / sc);
+    }
+    return sqrt(sum / (double)it->dim);
+}
+
+qd_status qd__underflow(qd__integ *it, double h) {
+    qd_ctx_error(it->s->ctx, QD_ERR_NUMERIC,
+                 "step size underflow at t = %.17g (h = %.3g): the solution is not smooth "
+                 "there or the tolerance is below round-off", it->t, h);
+    return QD_ERR_NUMERIC;
+}
+
+static double rms(const qd__integ *it, const double *v) {
+    double sum = 0;
+    for (size_t i = 0; i < it->dim; i++) {
+        double sc = it->atol + it->rtol * fabs(it->y[i]);
+        sum += (v[i] / sc) * (v[i] / sc);
+    }
+    return sqrt(sum / (double)it->dim);
+}
+
+/* Hairer's starting step: h0 from |y| / |f|, then from an estimate of the
+ * second derivative. */
+static qd_status initial_step(qd__integ *it, erk *r) {
+    size_t d = it->dim;
+    double *f0 = r->K[0], *y1 = r->ytmp, *f1 = r->ynew;
+    double d0 = rms(it, it->y), d1 = rms(it, f0);
+    double h0 = d0 < 1e-5 || d1 < 1e-5 ? 1e-6 : 0.01 * d0 / d1;
+    h0 = fmin(h0, fabs(it->tend - it->t));
+    for (size_t i = 0; i < d; i++)
+        y1[i] = it->y[i] + h0 * f0[i];
+    qd_status st = qd__rhs(it->s, it->form, it->t + h0, y1, f1);
+    if (st != QD_OK)
+        return st;
+    for (size_t i = 0; i < d; i++)
+        y1[i] = (f1[i] - f0[i]);
+    double d2 = rms(it, y1) / h0, dm = fmax(d1, d2);
+    double h1 = dm <= 1e-15 ? fmax(1e-6, h0 * 1e-3) : pow(0.01 / dm, 1.0 / (r->tab->order + 1));
+    it->h = fmin(100 * h0, h1);
+    return QD_OK;
+}
+
+qd_status qd__erk_init(qd__integ *it, const qd__erk *tab) {
+    size_t d = it->dim, rows = (size_t)(tab->s + 1 + tab->nextra);
+    erk *r = calloc(1, sizeof *r);
+    if (!r)
+        return QD_ERR_NOMEM;
+    it->priv = r;
+    r->tab = tab;
+    r->facold = 1e-4;
+    r->K = calloc(2 * rows, sizeof *r->K);
+    double *mem = malloc((2 * rows * d + 2 * d + (size_t)tab->ndense * d + 1) * sizeof *mem);
+    if (!r->K || !mem) {
+        free(mem);
+        return QD_ERR_NOMEM;
+    }
+    r->mem = mem;
+    r->Kr = r->K + rows;
+    for (size_t i = 0; i < 2 * rows; i++)
+        r->K[i] = mem + i * d;
+    r->ytmp = mem + 2 * rows * d;
+    r->ynew = r->ytmp + d;
+    r->coef = r->ynew + d;
+    qd_status st = qd__rhs(it->s, it->form, it->t, it->y, r->K[0]);
+    it->y_changed = false;
+    if (st == QD_OK && !it->fixed && !(it->h > 0))
+        st = initial_step(it, r);
+    return st;
+}
+
+void qd__erk_free(qd__integ *it) {
+    erk *r = it->priv;
+    if (!r)
+        return;
+    free(r->mem);
+    free(r->K);
+    free(r);
+    it->priv = NULL;
+}
+
+/* The stages from (t0, y0) with K[0] = f(t0, y0) given; y1 and K[s] =
+ * f(t0 + h, y1). */
+static qd_status stages(qd__integ *it, const qd__erk *tab, double t0, const double *y0, double h,
+                        double **K, double *ytmp, double *y1) {
+    size_t d = it->dim;
+    int s = tab->s;
+    qd_status st = QD_OK;
+    /* the tableaux are half zeros: skip them (same sums, same order) */
+    for (int k = 1; k < s && st == QD_OK; k++) {
+        const double *a = tab->a + k * s;
+        for (size_t i = 0; i < d; i++)
+            ytmp[i] = 0;
+        for (int j = 0; j < k; j++)
+            if (a[j] != 0)
+                for (size_t i = 0; i < d; i++)
+                    ytmp[i] += a[j] * K[j][i];
+        for (size_t i = 0; i < d; i++)
+            ytmp[i] = y0[i] + h * ytmp[i];
+        st = qd__rhs(it->s, it->form, t0 + tab->c[k] * h, ytmp, K[k]);
+    }
+    if (st != QD_OK)
+        return st;
+    for (size_t i = 0; i < d; i++)
+        y1[i] = 0;
+    for (int j = 0; j < s; j++)
+        if (tab->b[j] != 0)
+            for (size_t i = 0; i < d; i++)
+                y1[i] += tab->b[j] * K[j][i];
+    for (size_t i = 0; i < d; i++)
+        y1[i] = y0[i] + h * y1[i];
+    return qd__rhs(it->s, it->form, t0 + h, y1, K[s]);
+}
+
+qd_status qd__erk_step(qd__integ *it) {
+    erk *r = it->priv;
+    const qd__erk *tab = r->tab;
+    size_t d = it->dim;
+    qd_status st = QD_OK;
+    if (it->y_changed)
+        st = qd__rhs(it->s, it->form, it->t, it->y, r->K[0]);
+    else if (it->steps) {
+        /* first same as last: K[s] of the last step is K[0] of this one */
+        double *k0 = r->K[0];
+        r->K[0] = r->K[tab->s];
+        r->K[tab->s] = k0;
+    }
+    it->y_changed = false;
+    const double facc1 = 1 / tab->fac1, facc2 = 1 / tab->fac2;
+    for (;;) {
+        double h = it->h;
+        if (st != QD_OK)
+            return st;
+        if (!(fabs(h) > 10 * fabs(nextafter(it->t, INFINITY) - it->t)))
+            return qd__underflow(it, h);
+        st = stages(it, tab, it->t, it->y, h, r->K, r->ytmp, r->ynew);
+        if (st != QD_OK)
+            return st;
+        double err = it->fixed ? 0 : tab->err(it, (const double *const *)r->K, h, r->ynew);
+        if (!isfinite(err))
+            err = 1e10;
+        double fac11 = pow(err, tab->expo);
+        if (err <= 1) {
+            double fac = tab->beta > 0 ? fac11 / pow(r->facold, tab->beta) : fac11;
+            fac = fmax(facc2, fmin(facc1, fac / tab->safe));
+            double hnew = h / fac;
+            if (r->reject)
+                hnew = fmin(hnew, h);
+            r->facold = fmax(err, 1e-4);
+            r->reject = false;
+            it->told = it->t;
+            memcpy(it->yold, it->y, d * sizeof *it->y);
+            it->t += h;
+            memcpy(it->y, r->ynew, d * sizeof *it->y);
+            if (!it->fixed)
+                it->h = hnew;
+            r->dense_ready = false;
+            return QD_OK;
+        }
+        it->rejected++;
+        r->reject = true;
+        it->h = h / fmin(facc1, fac11 / tab->safe);
+    }
+}
+
+void qd__erk_dense(qd__integ *it, double t, double *y) {
+    erk *r = it->priv;
+    if (!r->dense_ready) {
+        if (r->tab->dense_prep(it, r->K, r->coef) != QD_OK) {
+            /* the extra stages failed (a singular state): fall back to the ends */
+            memcpy(y, t - it->told < it->t - t ? it->yold : it->y, it->dim * sizeof *y);
+            return;
+        }
+        r->dense_ready = true;
+    }
+    double h = it->t - it->told;
+    r->tab->dense_eval(it, r->coef, h > 0 ? (t - it->told) / h : 1, y);
+}
+
+qd_status qd__erk_redo(qd__integ *it, double h, double *y) {
+    erk *r = it->priv;
+    memcpy(r->Kr[0], r->K[0], it->dim * sizeof **r->K);
+    return stages(it, r->tab, it->told, it->yold, h, r->Kr, r->ytmp, y);
+}

@@ -1,0 +1,128 @@
+/*
+ * src/sim/events.c - zero crossings of event functions g(q, q', t) inside
+ * a step, located to round-off.
+ *
+ * A sign change of g between the ends of an accepted step brackets a root;
+ * the root of g along the dense output (the method's own interpolant, or a
+ * cubic Hermite from the end slopes) is found by the Illinois variant of
+ * regula falsi down to adjacent doubles, then refined by secant iteration
+ * on the method's own step from the step's start, so that the event state is
+ * the discrete solution at that time (not the interpolant's approximation).
+ * The guards (theta1' > 0) are tested at the root.
+ */
+#include "simint.h"
+
+#include <math.h>
+#include <string.h>
+
+#define MAX_ROOT_ITER 200
+#define MAX_SECANT 10
+
+/* g_k at the dense state at t. */
+static qd_status g_dense(qd__run *r, size_t k, double t, double *gk) {
+    qd_status st = qd__run_dense(r, t, r->ytmp);
+    if (st == QD_OK)
+        st = qd__run_velocity(r, t, r->ytmp);
+    if (st != QD_OK)
+        return st;
+    qd_sim *s = r->s;
+    qd__aux_eval(s, t, r->ytmp, r->qd);
+    *gk = s->aux_out[qd__aux_ev(s) + k];
+    return QD_OK;
+}
+
+/* g_k after the method's own step of size tau from (told, yold); state in y. */
+static qd_status g_redo(qd__run *r, size_t k, double tau, double *y, double *gk) {
+    qd__integ *it = r->it;
+    qd_status st = it->ops->redo(it, tau, y);
+    if (st == QD_OK)
+        st = qd__run_velocity(r, it->told + tau, y);
+    if (st != QD_OK)
+        return st;
+    qd_sim *s = r->s;
+    qd__aux_eval(s, it->told + tau, y, r->qd);
+    *gk = s->aux_out[qd__aux_ev(s) + k];
+    return QD_OK;
+}
+
+/* Illinois: regula falsi with the stale end's value halved. */
+static qd_status root_dense(qd__run *r, size_t k, double a, double ga, double b, double gb,
+                            double *root) {
+    int side = 0;
+    for (int i = 0; i < MAX_ROOT_ITER; i++) {
+        if (nextafter(a, b) == b || ga == 0 || gb == 0)
+            break;
+        double c = (a * gb - b * ga) / (gb - ga);
+        if (!(c > fmin(a, b) && c < fmax(a, b)))
+            c = 0.5 * (a + b);
+        double gc;
+        qd_status st = g_dense(r, k, c, &gc);
+        if (st != QD_OK)
+            return st;
+        if ((gc > 0) == (gb > 0) && gc != 0) {
+            b = c;
+            gb = gc;
+            if (side == -1)
+                ga *= 0.5;
+            side = -1;
+        } else {
+            a = c;
+            ga = gc;
+            if (side == 1)
+                gb *= 0.5;
+            side = 1;
+        }
+    }
+    *root = fabs(ga) <= fabs(gb) ? a : b;
+    return QD_OK;
+}
+
+/* Secant on the method's step; keeps the dense root when it does not settle. */
+static qd_status polish(qd__run *r, size_t k, double troot, double *y) {
+    qd__integ *it = r->it;
+    double h = it->t - it->told, t0 = troot - it->told;
+    double t1 = t0 + h * 1e-7 * (t0 < 0.5 * h ? 1 : -1), g0, g1;
+    qd_status st = g_redo(r, k, t0, y, &g0);
+    if (st == QD_OK)
+        st = g_redo(r, k, t1, y, &g1);
+    for (int i = 0; st == QD_OK && i < MAX_SECANT && g1 != g0 && g1 != 0; i++) {
+        double t2 = t1 - g1 * (t1 - t0) / (g1 - g0);
+        if (!(t2 > -0.01 * h && t2 < 1.01 * h))
+            break;
+        t0 = t1;
+        g0 = g1;
+        t1 = t2;
+        st = g_redo(r, k, t1, y, &g1);
+        if (fabs(t1 - t0) <= 2e-16 * fabs(it->told + t1))
+            break;
+    }
+    if (st != QD_OK)
+        return st;
+    r->ev_t[k] = it->told + t1;
+    return g_redo(r, k, t1, y, &g1);
+}
+
+qd_status qd__events_locate(qd__run *r) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    for (size_t k = 0; k < s->nev; k++) {
+        r->ev_hit[k] = false;
+        double ga = r->gold[k], gb = r->gnew[k];
+        if (ga == 0 || !((ga > 0) != (gb > 0) || gb == 0))
+            continue;
+        double root = it->t;
+        qd_status st = gb == 0 ? QD_OK : root_dense(r, k, it->told, ga, it->t, gb, &root);
+        double *y = r->ev_y + k * it->dim;
+        r->ev_t[k] = root;
+        if (st == QD_OK && it->ops->redo && root > it->told && root < it->t)
+            st = polish(r, k, root, y);
+        else if (st == QD_OK)
+            st = qd__run_dense(r, root, y);
+        if (st == QD_OK)
+            st = qd__run_events_at(r, r->ev_t[k], y, NULL, r->ev_ok);
+        if (st != QD_OK)
+            return st;
+        r->ev_hit[k] = r->ev_ok[k];
+    }
+    return QD_OK;
+}

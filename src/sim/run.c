@@ -1,0 +1,419 @@
+/*
+ * src/sim/run.c - the integration loop: initial state, steps, projection
+ * onto the constraints, rows at the output grid, events, and the error
+ * measures every method reports.
+ */
+#include "simint.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const qd__method *const method_ops[QD_SIM_METHOD_COUNT] = {
+    [QD_SIM_DOPRI5] = &qd__dopri5,     [QD_SIM_DOP853] = &qd__dop853,
+    [QD_SIM_GL2] = &qd__gauss2,        [QD_SIM_GL4] = &qd__gauss4,
+    [QD_SIM_GL6] = &qd__gauss6,        [QD_SIM_VERLET] = &qd__verlet,
+    [QD_SIM_YOSHIDA4] = &qd__yoshida4, [QD_SIM_YOSHIDA6] = &qd__yoshida6,
+    [QD_SIM_YOSHIDA8] = &qd__yoshida8, [QD_SIM_BDF] = &qd__bdf,
+};
+
+static bool symplectic(qd_sim_method m) { return m >= QD_SIM_GL2 && m <= QD_SIM_YOSHIDA8; }
+static bool splitting(qd_sim_method m) { return m >= QD_SIM_VERLET && m <= QD_SIM_YOSHIDA8; }
+
+qd_status qd__run_velocity(qd__run *r, double t, const double *y) {
+    size_t n = r->s->n;
+    if (r->it->form == QD__LAG) {
+        memcpy(r->qd, y + n, n * sizeof *r->qd);
+        return QD_OK;
+    }
+    return qd__velocity(r->s, t, y, y + n, r->qd);
+}
+
+qd_status qd__run_dense(qd__run *r, double t, double *y) {
+    qd__integ *it = r->it;
+    if (it->ops->dense) {
+        it->ops->dense(it, t, y);
+        return QD_OK;
+    }
+    size_t d = it->dim;
+    if (!r->slopes) {
+        qd_status st = qd__rhs(r->s, it->form, it->told, it->yold, r->fa);
+        if (st == QD_OK)
+            st = qd__rhs(r->s, it->form, it->t, it->y, r->fb);
+        if (st != QD_OK)
+            return st;
+        r->slopes = true;
+    }
+    double h = it->t - it->told, x = (t - it->told) / h;
+    double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
+    double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
+    for (size_t i = 0; i < d; i++)
+        y[i] = h00 * it->yold[i] + h10 * h * r->fa[i] + h01 * it->y[i] + h11 * h * r->fb[i];
+    return QD_OK;
+}
+
+qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bool *ok) {
+    qd_sim *s = r->s;
+    qd_status st = qd__run_velocity(r, t, y);
+    if (st != QD_OK)
+        return st;
+    qd__aux_eval(s, t, y, r->qd);
+    const double *gv = s->aux_out + qd__aux_ev(s), *guard = s->aux_out + qd__aux_guard(s);
+    for (size_t k = 0, gi = 0; k < s->nev; k++) {
+        if (g)
+            g[k] = gv[k];
+        bool pass = true;
+        for (size_t j = 0; j < s->ev[k].nguard; j++, gi++)
+            pass = pass && guard[gi] > 0;
+        if (ok)
+            ok[k] = pass;
+    }
+    return QD_OK;
+}
+
+typedef struct measure {
+    double E0, dEmax, Tmax, cmax;
+} measure;
+
+/* The error measures at state y, t; q' in r->qd.  aux: s->aux_out holds
+ * this state's values (a row was just made), else only h and T are
+ * evaluated. */
+static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool aux) {
+    qd_sim *s = r->s;
+    size_t n = s->n;
+    const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, r->qd);
+    ms->dEmax = fmax(ms->dEmax, fabs(hT[0] - ms->E0));
+    ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
+    if (!s->m)
+        return;
+    qd__con_eval(s, t, y, r->qd);
+    const double *A = s->con_out, *a0 = A + s->m * n, *g = a0 + s->m;
+    for (size_t c = 0; c < s->m; c++) {
+        double v = a0[c];
+        for (size_t j = 0; j < n; j++)
+            v += A[c * n + j] * r->qd[j];
+        ms->cmax = fmax(ms->cmax, fabs(v));
+        if (s->holonomic[c])
+            ms->cmax = fmax(ms->cmax, fabs(g[c]));
+    }
+}
+
+/* The row of state y at t, and (ms not NULL) the error measures there;
+ * ms without a row: only the measures. */
+static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, double *row) {
+    qd_sim *s = r->s;
+    size_t n = s->n, k = 0;
+    qd_status st = qd__run_velocity(r, t, y);
+    if (st != QD_OK)
+        return st;
+    if (!row) {
+        measure_at(r, ms, t, y, false);
+        return QD_OK;
+    }
+    qd__aux_eval(s, t, y, r->qd);
+    const double *aux = s->aux_out;
+    row[k++] = t;
+    for (size_t j = 0; j < n; j++)
+        row[k++] = y[j];
+    for (size_t j = 0; j < n; j++)
+        row[k++] = r->qd[j];
+    if (r->it->form == QD__HAM)
+        for (size_t j = 0; j < n; j++)
+            row[k++] = y[n + j];
+    row[k++] = aux[0];
+    for (size_t c = 0; c < s->m; c++)
+        row[k++] = aux[2 + c];
+    for (size_t i = 0; i < s->nout; i++)
+        row[k++] = aux[qd__aux_out(s) + i];
+    if (ms)
+        measure_at(r, ms, t, y, true);
+    return QD_OK;
+}
+
+static qd_status check_opts(qd_sim *s, const qd_sim_opts *o) {
+    qd_ctx *ctx = s->ctx;
+    const char *name = qd_sim_method_name(o->method);
+    if (o->method >= QD_SIM_METHOD_COUNT) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "unknown integration method");
+        return QD_ERR_ARG;
+    }
+    if (!isfinite(o->t0) || !(o->t_end > o->t0)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the end time must be after the start time");
+        return QD_ERR_ARG;
+    }
+    bool needs_dt = !qd_sim_method_adaptive(o->method) || o->fixed;
+    if (needs_dt && !(o->dt > 0 && isfinite(o->dt))) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "%s takes fixed steps: give the step (--dt)", name);
+        return QD_ERR_ARG;
+    }
+    if (o->fixed && o->method == QD_SIM_BDF) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "bdf chooses its own steps");
+        return QD_ERR_ARG;
+    }
+    if (splitting(o->method) && !s->m && !s->separable) {
+        qd_ctx_error(ctx, QD_ERR_ARG,
+                     "%s needs a separable Hamiltonian H = T(p) + V(q) (constant mass "
+                     "matrix, no velocity- or time-dependent forces); this H is not "
+                     "separable: use gl2, gl4 or gl6", name);
+        return QD_ERR_ARG;
+    }
+    if (splitting(o->method) && s->m) {
+        qd_ctx_error(ctx, QD_ERR_ARG,
+                     "%s cannot integrate a constrained system: use dop853 or gl4", name);
+        return QD_ERR_ARG;
+    }
+    if (o->rtol < 0 || o->atol < 0 || !isfinite(o->rtol) || !isfinite(o->atol)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "tolerances must be positive");
+        return QD_ERR_ARG;
+    }
+    return QD_OK;
+}
+
+static void run_free(qd__run *r, qd__integ *it) {
+    if (it->ops && it->priv)
+        it->ops->free(it);
+    free(it->y);
+    free(r->row);
+    free(r->ev_hit);
+}
+
+static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
+    qd_sim *s = r->s;
+    size_t d = it->dim, ne = s->nev;
+    it->y = malloc((2 * d + 1) * sizeof *it->y);
+    r->row = malloc((2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
+    r->ev_hit = calloc(2 * ne + 1, sizeof *r->ev_hit);
+    if (!it->y || !r->row || !r->ev_hit)
+        return QD_ERR_NOMEM;
+    it->yold = it->y + d;
+    r->qd = r->row + 2 * ncols;
+    r->ytmp = r->qd + s->n;
+    r->fa = r->ytmp + d;
+    r->fb = r->fa + d;
+    r->gold = r->fb + d;
+    r->gnew = r->gold + ne;
+    r->ev_y = r->gnew + ne;
+    r->ev_t = r->ev_y + ne * d;
+    r->ev_ok = r->ev_hit + ne;
+    return QD_OK;
+}
+
+/* y0 from q0, q'0: projected onto the constraints, then (q, p) if canonical. */
+static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    size_t n = s->n;
+    double *q = it->y, *qd = r->qd;
+    memcpy(q, o->q0, n * sizeof *q);
+    memcpy(qd, o->qd0, n * sizeof *qd);
+    qd_status st = s->m && !o->no_project ? qd__project(s, o->t0, q, qd) : QD_OK;
+    if (st != QD_OK)
+        return st;
+    if (it->form == QD__HAM)
+        qd__momentum(s, o->t0, q, qd, it->y + n);
+    else
+        memcpy(it->y + n, qd, n * sizeof *qd);
+    return QD_OK;
+}
+
+typedef struct emitter {
+    qd_sim_sink sink;
+    void *data;
+    bool stopped;
+    double last_t;
+    bool any;
+} emitter;
+
+static void emit(emitter *em, int event, const double *row) {
+    if (em->stopped)
+        return;
+    em->last_t = row[0];
+    em->any = true;
+    if (em->sink && em->sink(em->data, event, row))
+        em->stopped = true;
+}
+
+/* Rows of the output grid inside (told, t], and the events of the step in
+ * time order; *stop when a stopping event happened (the state is then
+ * moved to it). */
+static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, measure *ms, emitter *em,
+                              size_t *grid, bool *stop, size_t *nevents) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    double tstop = it->t;
+    size_t first = s->nev;
+    if (s->nev) {
+        qd_status st = qd__events_locate(r);
+        if (st != QD_OK)
+            return st;
+        for (size_t k = 0; k < s->nev; k++)
+            if (r->ev_hit[k] && s->ev[k].stop && r->ev_t[k] <= tstop) {
+                tstop = r->ev_t[k];
+                first = k;
+            }
+    }
+    bool grid_rows = qd_sim_method_adaptive(o->method) && !o->fixed && o->dt > 0;
+    /* merge grid rows and event rows by time */
+    for (;;) {
+        double tg = INFINITY, te = INFINITY;
+        size_t ke = s->nev;
+        if (grid_rows) {
+            double t = o->t0 + (double)*grid * o->dt;
+            if (t <= tstop && t < o->t_end)
+                tg = t;
+        }
+        for (size_t k = 0; k < s->nev; k++)
+            if (r->ev_hit[k] && r->ev_t[k] <= tstop && r->ev_t[k] < te) {
+                te = r->ev_t[k];
+                ke = k;
+            }
+        if (tg == INFINITY && te == INFINITY)
+            break;
+        qd_status st;
+        if (tg <= te) {
+            st = qd__run_dense(r, tg, r->ytmp);
+            if (st == QD_OK)
+                st = make_row(r, NULL, tg, r->ytmp, r->row);
+            (*grid)++;
+            if (st == QD_OK)
+                emit(em, -1, r->row);
+        } else {
+            st = make_row(r, NULL, te, r->ev_y + ke * it->dim, r->row);
+            r->ev_hit[ke] = false;
+            (*nevents)++;
+            if (st == QD_OK)
+                emit(em, (int)ke, r->row);
+        }
+        if (st != QD_OK)
+            return st;
+    }
+    if (first < s->nev) {
+        *stop = true;
+        it->t = r->ev_t[first];
+        memcpy(it->y, r->ev_y + first * it->dim, it->dim * sizeof *it->y);
+    }
+    (void)ms;
+    return QD_OK;
+}
+
+static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measure *ms,
+                           qd_sim_stats *stats) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    bool fixed = !qd_sim_method_adaptive(o->method) || o->fixed;
+    bool every = fixed || !(o->dt > 0);
+    bool project = s->m && !o->no_project && o->method != QD_SIM_BDF;
+    size_t N = fixed ? (size_t)ceil((o->t_end - o->t0) / o->dt - 1e-9) : 0, grid = 1;
+    qd_status st = make_row(r, ms, it->t, it->y, r->row);
+    if (st != QD_OK)
+        return st;
+    emit(em, -1, r->row);
+    if (s->nev && (st = qd__run_events_at(r, it->t, it->y, r->gold, NULL)) != QD_OK)
+        return st;
+    bool stop = false;
+    while (!stop && !em->stopped && it->t < o->t_end) {
+        if (o->max_steps && it->steps >= o->max_steps) {
+            qd_ctx_error(s->ctx, QD_ERR_NUMERIC, "more than %zu steps before t = %.17g",
+                         o->max_steps, o->t_end);
+            return QD_ERR_NUMERIC;
+        }
+        bool last;
+        if (fixed) {
+            last = it->steps + 1 >= N;
+            it->h = last ? o->t_end - it->t : o->dt;
+        } else {
+            /* as dop853.f: no sliver of a step left before the end */
+            last = it->t + 1.01 * it->h >= o->t_end;
+            if (last)
+                it->h = o->t_end - it->t;
+        }
+        s->tnow = it->t;
+        double hkeep = it->h;
+        st = it->ops->step(it);
+        if (st != QD_OK)
+            return st;
+        it->steps++;
+        r->slopes = false;
+        if (fixed)
+            it->t = last ? o->t_end : o->t0 + (double)it->steps * o->dt;
+        else if (last && fabs(it->t - o->t_end) <= 4e-16 * fabs(o->t_end) + 1e-300)
+            it->t = o->t_end;
+        (void)hkeep;
+        if (project) {
+            size_t n = s->n;
+            st = qd__run_velocity(r, it->t, it->y);
+            if (st == QD_OK)
+                st = qd__project(s, it->t, it->y, r->qd);
+            if (st != QD_OK)
+                return st;
+            memcpy(it->y + n, r->qd, n * sizeof *r->qd);
+            it->y_changed = true;
+        }
+        if (s->nev && (st = qd__run_events_at(r, it->t, it->y, r->gnew, NULL)) != QD_OK)
+            return st;
+        st = step_outputs(r, o, ms, em, &grid, &stop, &stats->events);
+        if (st != QD_OK)
+            return st;
+        /* a row only when it is written; the energy measure at every step */
+        bool row = !stop && (every || it->t >= o->t_end);
+        st = make_row(r, ms, it->t, it->y, row ? r->row : NULL);
+        if (st != QD_OK)
+            return st;
+        if (row)
+            emit(em, -1, r->row);
+        if (s->nev)
+            memcpy(r->gold, r->gnew, s->nev * sizeof *r->gold);
+    }
+    /* the final row: the state where the run ended */
+    return make_row(r, NULL, it->t, it->y, r->row);
+}
+
+qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
+                     qd_sim_stats *stats, double *final) {
+    qd_sim_stats dummy;
+    stats = stats ? stats : &dummy;
+    *stats = (qd_sim_stats){0};
+    qd_status st = check_opts(s, o);
+    if (st == QD_OK)
+        st = qd__aux_compile(s);
+    if (st != QD_OK)
+        return st;
+    qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
+                    .dim = 2 * s->n, .t = o->t0, .tend = o->t_end,
+                    .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
+                    .fixed = o->fixed, .h = o->fixed ? o->dt : 0};
+    it.form = symplectic(o->method) && s->canonical ? QD__HAM : QD__LAG;
+    qd__run r = {.s = s, .it = &it};
+    size_t ncols = qd_sim_columns(s, o->method, NULL, 0);
+    s->evals = 0;
+    st = run_alloc(&r, &it, ncols);
+    if (st == QD_OK)
+        st = initial_state(&r, o);
+    if (st == QD_OK)
+        st = it.ops->init(&it);
+    measure ms = {0};
+    if (st == QD_OK) {
+        st = qd__run_velocity(&r, it.t, it.y);
+        if (st == QD_OK) {
+            qd__aux_eval(s, it.t, it.y, r.qd);
+            ms.E0 = s->aux_out[0];
+        }
+    }
+    emitter em = {.sink = sink, .data = data};
+    if (st == QD_OK)
+        st = integrate(&r, o, &em, &ms, stats);
+    stats->steps = it.steps;
+    stats->evals = s->evals;
+    stats->rejected = it.rejected;
+    stats->E0 = ms.E0;
+    double den = fmax(fabs(ms.E0), ms.Tmax);
+    stats->energy_error_max = den > 0 ? ms.dEmax / den : ms.dEmax;
+    stats->constraint_error_max = ms.cmax;
+    stats->t = it.t;
+    if (st == QD_OK && final)
+        memcpy(final, r.row, ncols * sizeof *final);
+    if (st != QD_OK && qd_ctx_status(s->ctx) == QD_OK)
+        qd_ctx_error(s->ctx, st, "the integration failed: %s", qd_status_str(st));
+    run_free(&r, &it);
+    return st;
+}

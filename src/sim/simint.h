@@ -1,0 +1,170 @@
+/*
+ * src/sim/simint.h - what the simulation files share: the compiled system
+ * (system.c), the integrator interface every method implements, and the
+ * projection onto the constraints (project.c).
+ */
+#ifndef QD_SIM_SIMINT_H
+#define QD_SIM_SIMINT_H
+
+#include "qdot/eval.h"
+#include "qdot/sim.h"
+
+typedef enum qd__form { QD__LAG, QD__HAM } qd__form;
+
+typedef struct qd__event {
+    bool stop;
+    size_t nguard;
+} qd__event;
+
+/* Inputs of every program: q (n), q' (n), t, parameters (np). */
+struct qd_sim {
+    qd_ctx *ctx;
+    const qd_model *model;
+    const qd_eom *e;
+    size_t n, m, np, nin;
+    const qd_expr **in_syms;
+    double *in;
+    qd_prog *acc;   /* M (n*n), f (n), A (m*n), b (m) */
+    double *acc_out;
+    qd_prog *con;   /* A (m*n), a0 (m), g (m) */
+    double *con_out;
+    qd_prog *mom;   /* canonical: M (n*n), b (n) = dL/dq' at q' = 0 */
+    double *mom_out;
+    qd_prog *force; /* canonical: dL/dq + Q - dD/dq' (n) */
+    double *force_out;
+    qd_prog *aux;   /* h, T, g (m), velocity residuals' a0 (m), outputs, events, guards */
+    double *aux_out;
+    qd_prog *en;    /* h, T alone (the per-step energy measure), when aux has more */
+    double *en_out;
+    bool canonical, separable, conservative, has_T;
+    const qd_expr *h_expr, *T_expr;
+    const qd_expr **b_expr, **force_expr;
+    bool *holonomic;  /* m */
+    /* outputs and events, compiled into aux at the first run */
+    size_t nout, nev, nguard, cap_out, cap_ev, cap_guard;
+    char **out_name;
+    const qd_expr **out_expr, **ev_expr, **guard_expr;
+    qd__event *ev;
+    bool aux_ready;
+    /* column names of the fixed part: t, q, q', p_q, energy, res_c */
+    char **names;
+    /* scratch for the linear solves */
+    double *K, *rhs, *tmp;
+    size_t *pc;
+    size_t evals;
+    qd_sim_native_rhs native;
+    double tnow;  /* for messages */
+};
+
+/* Offsets in aux_out. */
+static inline size_t qd__aux_out(const qd_sim *s) { return 2 + s->m; }
+static inline size_t qd__aux_ev(const qd_sim *s) { return 2 + s->m + s->nout; }
+static inline size_t qd__aux_guard(const qd_sim *s) { return 2 + s->m + s->nout + s->nev; }
+
+/* y' = F(t, y) in either form; QD_ERR_SINGULAR (message with the time)
+ * when M or the saddle matrix is singular. */
+qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy);
+/* q' from (q, p) at t (canonical form). */
+qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, double *qd);
+/* p from (q, q'). */
+void qd__momentum(qd_sim *s, double t, const double *q, const double *qd, double *p);
+/* The force dL/dq + Q - dD/dq' at (q, q', t) (canonical form). */
+void qd__force(qd_sim *s, double t, const double *q, const double *qd, double *F);
+/* q' = M^-1 p for a separable system (constant M). */
+qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd);
+/* Compile the outputs and events (once). */
+qd_status qd__aux_compile(qd_sim *s);
+/* Evaluate aux at (q, q', t) into s->aux_out. */
+void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd);
+/* h and T at (q, q', t): the first two entries of the result. */
+const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd);
+/* Evaluate con at (q, q', t) into s->con_out. */
+void qd__con_eval(qd_sim *s, double t, const double *q, const double *qd);
+
+/* ---- integrators ----------------------------------------------------------- */
+
+typedef struct qd__integ qd__integ;
+
+typedef struct qd__method {
+    qd_status (*init)(qd__integ *it);
+    /* One accepted step from (t, y) with it->h (the driver caps it at the
+     * end); sets told, yold and t, y, and (adaptive) the next it->h. */
+    qd_status (*step)(qd__integ *it);
+    /* y at t in [told, t]; NULL: cubic Hermite from the derivatives. */
+    void (*dense)(qd__integ *it, double t, double *y);
+    /* One step of size h from (told, yold) into y (events); NULL: none. */
+    qd_status (*redo)(qd__integ *it, double h, double *y);
+    void (*free)(qd__integ *it);
+} qd__method;
+
+struct qd__integ {
+    qd_sim *s;
+    const qd__method *ops;
+    qd_sim_method method;
+    qd__form form;  /* LAG, or HAM for the symplectic methods when canonical */
+    size_t dim;
+    double t, told, h, tend, rtol, atol;
+    double *y, *yold;
+    bool fixed, y_changed; /* y_changed: the driver projected y after the step */
+    size_t steps, rejected;
+    void *priv;
+};
+
+extern const qd__method qd__dopri5, qd__dop853, qd__gauss2, qd__gauss4, qd__gauss6,
+    qd__verlet, qd__yoshida4, qd__yoshida6, qd__yoshida8, qd__bdf;
+
+/* An explicit Runge-Kutta pair (erk.c runs it): s stages, the last one's
+ * value at t + h the first of the next step (FSAL); err is the error norm
+ * of the step (1 = the tolerance), dense_prep the interpolant's
+ * coefficients from the stages of the last step. */
+typedef struct qd__erk {
+    int s, order, nextra, ndense;
+    const double *c, *a, *b; /* a: s*s row-major */
+    /* step size control of Hairer's dopri5.f/dop853.f: h_new = h / fac with
+     * fac = err^expo / facold^beta / safe kept in [1/fac2, 1/fac1], facold
+     * the error of the last accepted step (Lund stabilization, beta > 0) */
+    double fac1, fac2, safe, beta, expo;
+    double (*err)(const qd__integ *it, const double *const *K, double h, const double *ynew);
+    qd_status (*dense_prep)(qd__integ *it, double **K, double *coef);
+    void (*dense_eval)(const qd__integ *it, const double *coef, double x, double *y);
+} qd__erk;
+qd_status qd__erk_init(qd__integ *it, const qd__erk *tab);
+qd_status qd__erk_step(qd__integ *it);
+void qd__erk_dense(qd__integ *it, double t, double *y);
+qd_status qd__erk_redo(qd__integ *it, double h, double *y);
+void qd__erk_free(qd__integ *it);
+/* sqrt(mean((e_i / (atol + rtol max(|y_i|, |ynew_i|)))^2)) */
+double qd__err_rms(const qd__integ *it, const double *err, const double *ynew);
+qd_status qd__underflow(qd__integ *it, double h);
+
+/* ---- a run (run.c) and its events (events.c) ------------------------------- */
+
+typedef struct qd__run {
+    qd_sim *s;
+    qd__integ *it;
+    double *row, *qd, *ytmp, *fa, *fb; /* row; q' scratch; state scratch; Hermite slopes */
+    double *gold, *gnew;               /* event functions at told and t */
+    double *ev_t, *ev_y;               /* located events of a step: nev times, nev*dim */
+    bool *ev_hit, *ev_ok;
+    bool slopes;                       /* fa, fb valid for this step */
+} qd__run;
+
+/* q' of state y (q, q' or q, p) at t into r->qd. */
+qd_status qd__run_velocity(qd__run *r, double t, const double *y);
+/* The state at t in [told, t] (dense output or cubic Hermite). */
+qd_status qd__run_dense(qd__run *r, double t, double *y);
+/* Event functions at (t, y) into g (nev, may be NULL); ok[k] (may be NULL):
+ * every guard of event k is > 0. */
+qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bool *ok);
+/* Locate the events that changed sign in the last step: r->ev_hit[k],
+ * r->ev_t[k], r->ev_y + k*dim for each that happened (guards true). */
+qd_status qd__events_locate(qd__run *r);
+
+/* ---- constraints (project.c) ----------------------------------------------- */
+
+/* Move q onto the holonomic constraints phi(q, t) = 0 (Gauss-Newton with the
+ * constraint Jacobian) and q' onto A q' + a0 = 0.  QD_ERR_NUMERIC naming the
+ * constraint when positions cannot be brought to it. */
+qd_status qd__project(qd_sim *s, double t, double *q, double *qd);
+
+#endif

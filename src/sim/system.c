@@ -1,0 +1,581 @@
+/*
+ * src/sim/system.c - a model compiled into a first-order system.
+ *
+ * Every program takes the same input vector (q, q', t, parameters), kept in
+ * the qd_sim, so a right-hand side is a copy of the state into it, one or two
+ * qd_prog runs and a small dense solve in preallocated scratch: no tree
+ * walking and no allocation per step.  The canonical form needs no symbolic
+ * inverse of M: q' = M^-1 (p - b) is solved numerically, and
+ * -dH/dq|_p = dL/dq|_q' (the Legendre transform's identity, Goldstein
+ * sec. 8.1), so dp/dt = dL/dq + Q - dD/dq' at the solved q'.
+ */
+#include "simint.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mech/mech.h"
+
+static double param_value(qd_ctx *ctx, const qd_expr *v) {
+    long p, q;
+    double x = 0;
+    if (v && qd_rational_get(v, &p, &q) && fabs((double)p) <= 0x1p53 && (double)q <= 0x1p53)
+        return (double)p / (double)q;
+    if (v && qd_is_number(v))
+        return qd_number_value(v);
+    if (v && qd_eval(ctx, v, 0, NULL, NULL, &x) != QD_OK)
+        x = NAN;
+    return x;
+}
+
+static char *dup_printf(const char *a, const char *b, const char *c) {
+    size_t len = strlen(a) + strlen(b) + strlen(c) + 1;
+    char *s = malloc(len);
+    if (s)
+        snprintf(s, len, "%s%s%s", a, b, c);
+    return s;
+}
+
+static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
+    for (size_t i = 0; i < n; i++)
+        if (qd_has(x, syms[i]))
+            return true;
+    return false;
+}
+
+static qd_prog *compile(qd_sim *s, size_t nout, const qd_expr *const *outs, double **out) {
+    qd_prog *p = qd_prog_new(s->ctx, s->nin, s->in_syms, nout, outs);
+    *out = malloc((nout + 1) * sizeof **out);
+    if (!*out && p) {
+        qd_prog_free(p);
+        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
+        return NULL;
+    }
+    return p;
+}
+
+static qd_status setup_inputs(qd_sim *s) {
+    const qd_eom *e = s->e;
+    size_t n = s->n;
+    s->np = qd_model_nparams(s->model);
+    s->nin = 2 * n + 1 + s->np;
+    s->in_syms = malloc(s->nin * sizeof *s->in_syms);
+    s->in = calloc(s->nin, sizeof *s->in);
+    if (!s->in_syms || !s->in)
+        return QD_ERR_NOMEM;
+    for (size_t j = 0; j < n; j++) {
+        s->in_syms[j] = e->q[j];
+        s->in_syms[n + j] = e->qd[j];
+    }
+    s->in_syms[2 * n] = qd_time(s->ctx);
+    for (size_t i = 0; i < s->np; i++) {
+        s->in_syms[2 * n + 1 + i] = qd_model_param(s->model, i);
+        s->in[2 * n + 1 + i] = param_value(s->ctx, qd_model_param_value(s->model, i));
+        if (!isfinite(s->in[2 * n + 1 + i])) {
+            qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
+                         qd_expr_name(s->in_syms[2 * n + 1 + i]));
+            return QD_ERR_ARG;
+        }
+    }
+    return QD_OK;
+}
+
+static qd_status compile_acc(qd_sim *s) {
+    const qd_eom *e = s->e;
+    size_t n = s->n, m = s->m, k = 0;
+    const qd_expr **outs = malloc((n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
+    if (!outs)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < n * n; i++)
+        outs[k++] = e->M[i];
+    for (size_t i = 0; i < n; i++)
+        outs[k++] = e->f[i];
+    for (size_t i = 0; i < m * n; i++)
+        outs[k++] = e->A[i];
+    for (size_t i = 0; i < m; i++)
+        outs[k++] = e->b[i];
+    s->acc = compile(s, k, outs, &s->acc_out);
+    k = 0;
+    for (size_t i = 0; i < m * n; i++)
+        outs[k++] = e->A[i];
+    for (size_t i = 0; i < m; i++)
+        outs[k++] = e->con[i].a0;
+    for (size_t i = 0; i < m; i++)
+        outs[k++] = e->con[i].expr;
+    if (s->acc && m)
+        s->con = compile(s, k, outs, &s->con_out);
+    free(outs);
+    return s->acc && (!m || s->con) ? QD_OK : qd_ctx_status(s->ctx);
+}
+
+static size_t model_index(const qd_sim *s, const qd_expr *q) {
+    for (size_t i = 0; i < qd_model_ncoords(s->model); i++)
+        if (qd_model_coord(s->model, i) == q)
+            return i;
+    return (size_t)-1;
+}
+
+/* h = sum q' dL/dq' - L, T, the canonical pieces and what the system is. */
+static qd_status analyse(qd_sim *s) {
+    qd_ctx *ctx = s->ctx;
+    const qd_eom *e = s->e;
+    size_t n = s->n;
+    const qd_expr *L = e->L, *D = qd_model_dissipation(s->model), *t = qd_time(ctx);
+    const qd_expr **zeros = malloc((n + 1) * sizeof *zeros);
+    s->b_expr = calloc(n + 1, sizeof *s->b_expr);
+    s->force_expr = calloc(n + 1, sizeof *s->force_expr);
+    if (!zeros || !s->b_expr || !s->force_expr) {
+        free(zeros);
+        return QD_ERR_NOMEM;
+    }
+    for (size_t j = 0; j < n; j++)
+        zeros[j] = qd_int(ctx, 0);
+    const qd_expr *h = qd_neg(ctx, L);
+    bool forces = false;
+    s->canonical = s->m == 0 && e->nelim == 0;
+    s->separable = s->canonical;
+    for (size_t j = 0; j < n; j++) {
+        const qd_expr *pdef = qd_diff(ctx, L, e->qd[j]);
+        h = qd_add(ctx, h, qd_mul(ctx, e->qd[j], pdef));
+        s->b_expr[j] = qd_simplify(ctx, qd_subs(ctx, pdef, n, e->qd, zeros));
+        size_t mi = model_index(s, e->q[j]);
+        const qd_expr *Q = mi != (size_t)-1 ? qd_model_force(s->model, mi) : qd_int(ctx, 0);
+        forces = forces || (Q && !qd_is_zero(Q));
+        const qd_expr *F = qd_add(ctx, qd_diff(ctx, L, e->q[j]), Q);
+        if (D)
+            F = qd_sub(ctx, F, qd_diff(ctx, D, e->qd[j]));
+        s->force_expr[j] = F;
+        if (!s->b_expr[j] || !F)
+            break;
+        s->separable = s->separable && qd_is_zero(s->b_expr[j]) && !has_any(F, n, e->qd) &&
+                       !qd_has(F, t);
+        for (size_t k = 0; k < n; k++) {
+            const qd_expr *Mjk = e->M[j * n + k];
+            s->canonical = s->canonical && !has_any(Mjk, n, e->qd);
+            s->separable = s->separable && !has_any(Mjk, n, e->q) && !qd_has(Mjk, t);
+        }
+    }
+    s->separable = s->separable && s->canonical;
+    s->h_expr = qd_simplify(ctx, h);
+    s->has_T = e->T2 != NULL;
+    s->T_expr = s->has_T ? qd_add(ctx, qd_add(ctx, e->T2, e->T1), e->T0) : qd_int(ctx, 0);
+    s->conservative = !qd_has(L, t) && !forces && !(D && !qd_is_zero(D));
+    free(zeros);
+    return qd_ctx_status(ctx) == QD_OK && s->h_expr ? QD_OK : qd_ctx_status(ctx);
+}
+
+static qd_status compile_canonical(qd_sim *s) {
+    size_t n = s->n;
+    if (!s->canonical)
+        return QD_OK;
+    const qd_expr **outs = malloc((n * n + n) * sizeof *outs);
+    if (!outs)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < n * n; i++)
+        outs[i] = s->e->M[i];
+    for (size_t i = 0; i < n; i++)
+        outs[n * n + i] = s->b_expr[i];
+    s->mom = compile(s, n * n + n, outs, &s->mom_out);
+    free(outs);
+    if (s->mom)
+        s->force = compile(s, n, s->force_expr, &s->force_out);
+    return s->mom && s->force ? QD_OK : qd_ctx_status(s->ctx);
+}
+
+static qd_status make_names(qd_sim *s) {
+    size_t n = s->n, k = 0;
+    s->names = calloc(3 * n + 2 + s->m, sizeof *s->names);
+    s->holonomic = calloc(s->m + 1, sizeof *s->holonomic);
+    if (!s->names || !s->holonomic)
+        return QD_ERR_NOMEM;
+    s->names[k++] = dup_printf("t", "", "");
+    for (size_t j = 0; j < n; j++)
+        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "", "");
+    for (size_t j = 0; j < n; j++)
+        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "'", "");
+    for (size_t j = 0; j < n; j++)
+        s->names[k++] = dup_printf("p_", qd_expr_name(s->e->q[j]), "");
+    s->names[k++] = dup_printf("energy", "", "");
+    for (size_t c = 0; c < s->m; c++) {
+        s->names[k++] = dup_printf("res_", s->e->con[c].name, "");
+        s->holonomic[c] = s->e->con[c].kind == QD_CON_HOLONOMIC;
+    }
+    for (size_t i = 0; i < k; i++)
+        if (!s->names[i])
+            return QD_ERR_NOMEM;
+    return QD_OK;
+}
+
+qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    if (e->nelim) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "simulation needs the equations without eliminated "
+                                      "coordinates");
+        return NULL;
+    }
+    qd_sim *s = calloc(1, sizeof *s);
+    if (!s) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    *s = (qd_sim){.ctx = ctx, .model = m, .e = e, .n = e->n, .m = e->ncon};
+    size_t N = s->n + s->m;
+    s->K = malloc((N * N + 2 * N + 4 * s->n + 1) * sizeof *s->K);
+    s->pc = malloc((N + 1) * sizeof *s->pc);
+    qd_status st = s->K && s->pc ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK) {
+        s->rhs = s->K + N * N;
+        s->tmp = s->rhs + N;
+    }
+    if (st == QD_OK)
+        st = setup_inputs(s);
+    if (st == QD_OK)
+        st = compile_acc(s);
+    if (st == QD_OK)
+        st = analyse(s);
+    if (st == QD_OK)
+        st = compile_canonical(s);
+    if (st == QD_OK)
+        st = make_names(s);
+    if (st != QD_OK) {
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "cannot compile the equations for simulation");
+        qd_sim_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+void qd_sim_free(qd_sim *s) {
+    if (!s)
+        return;
+    qd_prog_free(s->acc);
+    qd_prog_free(s->con);
+    qd_prog_free(s->mom);
+    qd_prog_free(s->force);
+    qd_prog_free(s->aux);
+    qd_prog_free(s->en);
+    free(s->en_out);
+    free(s->acc_out);
+    free(s->con_out);
+    free(s->mom_out);
+    free(s->force_out);
+    free(s->aux_out);
+    free(s->in_syms);
+    free(s->in);
+    free(s->b_expr);
+    free(s->force_expr);
+    free(s->holonomic);
+    for (size_t i = 0; s->names && i < 3 * s->n + 2 + s->m; i++)
+        free(s->names[i]);
+    free(s->names);
+    for (size_t i = 0; i < s->nout; i++)
+        free(s->out_name[i]);
+    free(s->out_name);
+    free(s->out_expr);
+    free(s->ev_expr);
+    free(s->guard_expr);
+    free(s->ev);
+    free(s->K);
+    free(s->pc);
+    free(s);
+}
+
+size_t qd_sim_ndof(const qd_sim *s) { return s->n; }
+size_t qd_sim_ncon(const qd_sim *s) { return s->m; }
+bool qd_sim_canonical(const qd_sim *s) { return s->canonical; }
+bool qd_sim_separable(const qd_sim *s) { return s->separable; }
+bool qd_sim_conservative(const qd_sim *s) { return s->conservative; }
+
+qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step) {
+    return fixed_step && s->m == 0 && s->conservative ? QD_SIM_GL4 : QD_SIM_DOP853;
+}
+
+/* ---- outputs and events ---------------------------------------------------- */
+
+static bool grow(void **p, size_t *cap, size_t need, size_t size) {
+    if (need <= *cap)
+        return true;
+    size_t c = *cap ? 2 * *cap : 8;
+    while (c < need)
+        c *= 2;
+    void *q = realloc(*p, c * size);
+    if (!q)
+        return false;
+    *p = q;
+    *cap = c;
+    return true;
+}
+
+qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x) {
+    if (s->aux_ready || !x || !name) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "outputs are added before the first run");
+        return QD_ERR_ARG;
+    }
+    size_t cap = s->cap_out;
+    bool ok = grow((void **)&s->out_expr, &cap, s->nout + 1, sizeof *s->out_expr);
+    cap = s->cap_out;
+    ok = ok && grow((void **)&s->out_name, &cap, s->nout + 1, sizeof *s->out_name);
+    s->cap_out = ok ? cap : s->cap_out;
+    char *copy = ok ? dup_printf(name, "", "") : NULL;
+    if (!copy) {
+        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
+        return QD_ERR_NOMEM;
+    }
+    s->out_expr[s->nout] = x;
+    s->out_name[s->nout++] = copy;
+    return QD_OK;
+}
+
+qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
+                           const qd_expr *const *guard, bool stop) {
+    if (s->aux_ready || !g) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "events are added before the first run");
+        return QD_ERR_ARG;
+    }
+    size_t cap = s->cap_ev;
+    bool ok = grow((void **)&s->ev_expr, &cap, s->nev + 1, sizeof *s->ev_expr);
+    cap = s->cap_ev;
+    ok = ok && grow((void **)&s->ev, &cap, s->nev + 1, sizeof *s->ev);
+    s->cap_ev = ok ? cap : s->cap_ev;
+    ok = ok && grow((void **)&s->guard_expr, &s->cap_guard, s->nguard + nguard + 1,
+                    sizeof *s->guard_expr);
+    if (!ok) {
+        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
+        return QD_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < nguard; i++)
+        s->guard_expr[s->nguard++] = guard[i];
+    s->ev_expr[s->nev] = g;
+    s->ev[s->nev++] = (qd__event){.stop = stop, .nguard = nguard};
+    return QD_OK;
+}
+
+qd_status qd__aux_compile(qd_sim *s) {
+    if (s->aux_ready)
+        return QD_OK;
+    qd_prog_free(s->aux);
+    qd_prog_free(s->en);
+    free(s->aux_out);
+    free(s->en_out);
+    s->aux = s->en = NULL;
+    s->aux_out = s->en_out = NULL;
+    size_t total = qd__aux_guard(s) + s->nguard, k = 0;
+    const qd_expr **outs = malloc((total + 1) * sizeof *outs);
+    if (!outs)
+        return QD_ERR_NOMEM;
+    outs[k++] = s->h_expr;
+    outs[k++] = s->T_expr;
+    for (size_t c = 0; c < s->m; c++)
+        outs[k++] = s->e->con[c].expr;
+    for (size_t i = 0; i < s->nout; i++)
+        outs[k++] = s->out_expr[i];
+    for (size_t i = 0; i < s->nev; i++)
+        outs[k++] = s->ev_expr[i];
+    for (size_t i = 0; i < s->nguard; i++)
+        outs[k++] = s->guard_expr[i];
+    s->aux = compile(s, k, outs, &s->aux_out);
+    /* outputs and events are needed at rows and event checks only; the
+     * energy measure at every step */
+    if (s->aux && k > 2 + s->m)
+        s->en = compile(s, 2, outs, &s->en_out);
+    free(outs);
+    s->aux_ready = s->aux != NULL && (k == 2 + s->m || s->en != NULL);
+    return s->aux_ready ? QD_OK : qd_ctx_status(s->ctx);
+}
+
+size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap) {
+    size_t n = s->n, k = 0;
+    bool ham = (method >= QD_SIM_GL2 && method <= QD_SIM_YOSHIDA8) && s->canonical;
+    for (size_t i = 0; i < 1 + 3 * n + 1 + s->m; i++) {
+        if (i >= 1 + 2 * n && i < 1 + 3 * n && !ham)
+            continue;
+        if (names && k < cap)
+            names[k] = s->names[i];
+        k++;
+    }
+    for (size_t i = 0; i < s->nout; i++, k++)
+        if (names && k < cap)
+            names[k] = s->out_name[i];
+    return k;
+}
+
+/* ---- evaluation ------------------------------------------------------------ */
+
+static void set_state(qd_sim *s, double t, const double *q, const double *qd) {
+    size_t n = s->n;
+    /* a few numbers: a loop, not a call to memcpy */
+    for (size_t i = 0; i < n; i++)
+        s->in[i] = q[i];
+    for (size_t i = 0; qd && i < n; i++)
+        s->in[n + i] = qd[i];
+    s->in[2 * n] = t;
+}
+
+void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
+    set_state(s, t, q, qd);
+    qd_prog_run(s->aux, s->in, s->aux_out);
+}
+
+const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd) {
+    set_state(s, t, q, qd);
+    if (!s->en) {
+        qd_prog_run(s->aux, s->in, s->aux_out);
+        return s->aux_out;
+    }
+    qd_prog_run(s->en, s->in, s->en_out);
+    return s->en_out;
+}
+
+void qd__con_eval(qd_sim *s, double t, const double *q, const double *qd) {
+    set_state(s, t, q, qd);
+    qd_prog_run(s->con, s->in, s->con_out);
+}
+
+static qd_status singular(qd_sim *s, double t) {
+    if (s->m)
+        qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
+                     "singular mass matrix at t = %.17g: the constrained equations "
+                     "[M -A^T; A 0] cannot be solved for the accelerations there", t);
+    else
+        qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
+                     "singular mass matrix at t = %.17g: the accelerations are not "
+                     "determined there", t);
+    return QD_ERR_SINGULAR;
+}
+
+/* A x = b in place for a few unknowns: Gaussian elimination with partial
+ * pivoting, singular when a pivot is below tol |A|_inf (the criterion of
+ * qd__gauss, src/mech/lu.c, without its rank bookkeeping: this runs at
+ * every evaluation). */
+static bool dense_solve(size_t n, double *A, double *b, double tol) {
+    double norm = 0;
+    for (size_t i = 0; i < n; i++) {
+        double sum = 0;
+        for (size_t j = 0; j < n; j++)
+            sum += fabs(A[i * n + j]);
+        norm = fmax(norm, sum);
+    }
+    double eps = tol * norm;
+    for (size_t c = 0; c < n; c++) {
+        size_t p = c;
+        for (size_t i = c + 1; i < n; i++)
+            if (fabs(A[i * n + c]) > fabs(A[p * n + c]))
+                p = i;
+        if (!(fabs(A[p * n + c]) > eps))
+            return false;
+        if (p != c) {
+            for (size_t j = c; j < n; j++) {
+                double tmp = A[c * n + j];
+                A[c * n + j] = A[p * n + j];
+                A[p * n + j] = tmp;
+            }
+            double tmp = b[c];
+            b[c] = b[p];
+            b[p] = tmp;
+        }
+        double inv = 1 / A[c * n + c];
+        for (size_t i = c + 1; i < n; i++) {
+            double l = A[i * n + c] * inv;
+            for (size_t j = c + 1; j < n; j++)
+                A[i * n + j] -= l * A[c * n + j];
+            b[i] -= l * b[c];
+        }
+    }
+    for (size_t i = n; i-- > 0;) {
+        double sum = b[i];
+        for (size_t j = i + 1; j < n; j++)
+            sum -= A[i * n + j] * b[j];
+        b[i] = sum / A[i * n + i];
+    }
+    return true;
+}
+
+/* Solve the n*n matrix M x = r in scratch; x may alias r. */
+static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *r, double *x) {
+    size_t n = s->n;
+    for (size_t i = 0; i < n * n; i++)
+        s->K[i] = M[i];
+    for (size_t i = 0; x != r && i < n; i++)
+        x[i] = r[i];
+    if (!dense_solve(n, s->K, x, 1e-13 * (double)n))
+        return singular(s, t);
+    return QD_OK;
+}
+
+void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs) { s->native = rhs; }
+
+static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
+    size_t n = s->n, m = s->m, N = n + m;
+    if (s->native)
+        return s->native(t, y, s->in + 2 * n + 1, dy) ? singular(s, t) : QD_OK;
+    set_state(s, t, y, y + n);
+    qd_prog_run(s->acc, s->in, s->acc_out);
+    for (size_t i = 0; i < n; i++)
+        dy[i] = y[n + i];
+    const double *M = s->acc_out, *f = M + n * n;
+    if (!m)
+        return solve_mass(s, t, M, f, dy + n);
+    const double *A = f + n, *b = A + m * n;
+    double *K = s->K, *r = s->rhs;
+    memset(K, 0, N * N * sizeof *K);
+    for (size_t i = 0; i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            K[i * N + j] = M[i * n + j];
+        r[i] = f[i];
+    }
+    for (size_t k = 0; k < m; k++) {
+        for (size_t j = 0; j < n; j++) {
+            K[j * N + n + k] = -A[k * n + j];
+            K[(n + k) * N + j] = A[k * n + j];
+        }
+        r[n + k] = b[k];
+    }
+    if (!dense_solve(N, K, r, 1e-13 * (double)N))
+        return singular(s, t);
+    memcpy(dy + n, r, n * sizeof *dy);
+    return QD_OK;
+}
+
+qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, double *qd) {
+    size_t n = s->n;
+    set_state(s, t, q, NULL);
+    qd_prog_run(s->mom, s->in, s->mom_out);
+    for (size_t j = 0; j < n; j++)
+        qd[j] = p[j] - s->mom_out[n * n + j];
+    return solve_mass(s, t, s->mom_out, qd, qd);
+}
+
+void qd__momentum(qd_sim *s, double t, const double *q, const double *qd, double *p) {
+    size_t n = s->n;
+    set_state(s, t, q, qd);
+    qd_prog_run(s->mom, s->in, s->mom_out);
+    for (size_t i = 0; i < n; i++) {
+        p[i] = s->mom_out[n * n + i];
+        for (size_t j = 0; j < n; j++)
+            p[i] += s->mom_out[i * n + j] * qd[j];
+    }
+}
+
+void qd__force(qd_sim *s, double t, const double *q, const double *qd, double *F) {
+    set_state(s, t, q, qd);
+    qd_prog_run(s->force, s->in, F);
+}
+
+qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd) {
+    /* M is constant: its value at the current inputs is the value */
+    qd_prog_run(s->mom, s->in, s->mom_out);
+    return solve_mass(s, s->tnow, s->mom_out, p, qd);
+}
+
+qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy) {
+    s->evals++;
+    if (form == QD__LAG)
+        return lag_rhs(s, t, y, dy);
+    size_t n = s->n;
+    qd_status st = qd__velocity(s, t, y, y + n, dy);
+    if (st == QD_OK)
+        qd__force(s, t, y, dy, dy + n);
+    return st;
+}

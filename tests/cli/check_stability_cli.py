@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""End-to-end checks of `qdot stability` against the textbooks' closed forms.
+
+Sources: Britannica 1911 "Dynamics" sec. 5-6 (seed 004_89e868a35cdf1de6.txt) with the
+reference notes seed-goldstein-britannica.md (B08/B09 power-law orbits free versus driven,
+B11 sleeping top, B13 rotating bowl with friction, B15 ellipsoidal bowl, pitfalls P4-P6);
+Byerly Art. 5 Ex. 3 (the spherical pendulum, seed 001) for the conical pendulum.
+Run: python3 check_stability_cli.py --build BUILD_DIR
+"""
+import argparse
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
+FAILED = []
+
+
+def run(qdot, *args):
+    p = subprocess.run([qdot, 'stability', *args], capture_output=True, text=True, timeout=60)
+    return p.returncode, p.stdout, p.stderr
+
+
+def js(qdot, model, *args):
+    rc, out, err = run(qdot, str(EXAMPLES / model), *args, '--format', 'json')
+    if rc != 0:
+        raise AssertionError('exit %d: %s' % (rc, err.strip()))
+    return json.loads(out)
+
+
+def check(name, cond, detail=''):
+    if not cond:
+        FAILED.append(name)
+        print('FAIL %s %s' % (name, detail))
+
+
+def close(a, b, tol=1e-8):
+    return abs(a - b) <= tol * (1 + abs(b))
+
+
+def power_law(qdot):
+    # B08/B09: m = k = 1, circle r0 = 1: free stable iff n > -3, frequency^2 = (n + 3);
+    # driven stable iff n > 1, frequency^2 = (n - 1).
+    for n in (-2, 0, 2):
+        d = js(qdot, 'power_law_orbit.qd', '--ignore', 'theta', '--at', 'r=1', '--set', 'n=%d' % n)
+        check('free n=%d stable' % n, d['stable'] is True and d['secular'] is True, d['verdict'])
+        check('free n=%d frequency' % n, close(d['frequencies'][0] ** 2, n + 3), d['frequencies'])
+        check('free n=%d p' % n, close(d['steady']['p_theta'], 1.0))
+        d = js(qdot, 'power_law_orbit.qd', '--driven', 'theta', '--at', 'r=1', '--set', 'n=%d' % n)
+        check('driven n=%d verdict' % n, d['stable'] is (n > 1), d['verdict'])
+        if n > 1:
+            check('driven n=%d frequency' % n, close(d['frequencies'][0] ** 2, n - 1))
+    d = js(qdot, 'power_law_orbit.qd', '--ignore', 'theta', '--at', 'r=1', '--set', 'n=-3')
+    check('free n=-3 borderline', d['stable'] is None and 'borderline' in d['verdict'], d)
+    d = js(qdot, 'power_law_orbit.qd', '--ignore', 'theta', '--at', 'r=1', '--set', 'n=-4')
+    check('free n=-4 unstable', d['stable'] is False, d['verdict'])
+    # the momentum given instead: p = 2 with n = 2 gives r0 = p^(2/5) (m r0^4 w^2 = p^2/r0^... )
+    d = js(qdot, 'power_law_orbit.qd', '--ignore', 'theta', '--momentum', 'p_theta=2',
+           '--guess', 'r=1')
+    # m r0 w^2 = k r0^2 and p = m r0^2 w  =>  p^2 = m k r0^5
+    check('momentum given', close(d['steady']['r'], 2 ** 0.4), d['steady'])
+    # the driven rate given: m Omega^2 r0 = k r0^2 => r0 = Omega^2
+    d = js(qdot, 'power_law_orbit.qd', '--driven', "theta' = 1.5", '--guess', 'r=2')
+    check('rate given', close(d['steady']['r'], 2.25), d['steady'])
+
+
+def conical(qdot):
+    # Conical pendulum (spherical_pendulum.qd: m = 1.1, a = 0.9, g = 9.81):
+    # phi'^2 = g/(a cos th0), Omega_osc^2 = (g/(a cos th0)) (1 + 3 cos^2 th0).
+    g, a = 9.81, 0.9
+    for th in (math.pi / 3, 0.4):
+        d = js(qdot, 'spherical_pendulum.qd', '--ignore', 'phi', '--at', 'theta=%r' % th)
+        c = math.cos(th)
+        check('conical rate %g' % th, close(d['steady']["phi'"] ** 2, g / (a * c)), d['steady'])
+        check('conical frequency %g' % th,
+              close(d['frequencies'][0] ** 2, g / (a * c) * (1 + 3 * c * c)), d['frequencies'])
+        check('conical stable %g' % th, d['stable'] is True and d['secular'] is True)
+    # the same rate given through --omega finds theta0 = pi/3 back
+    w = math.sqrt(g / (a * 0.5))
+    d = js(qdot, 'spherical_pendulum.qd', '--ignore', 'phi', '--omega', "phi'=%r" % w,
+           '--guess', 'theta=1')
+    check('conical from omega', close(d['steady']['theta'], math.pi / 3), d['steady'])
+
+
+def top(qdot):
+    # B11: A = 1, M g h = 1; nu = 3: frequencies 0.3819660 and 2.6180340, gyroscopic
+    # (V_eff a maximum): ordinarily stable, secularly unstable.  nu = 2: double root.
+    d = js(qdot, 'sleeping_top.qd', '--ignore', 'psi', '--momentum', 'p_psi=3')
+    f = d['frequencies']
+    check('top frequencies', len(f) == 2 and close(f[0], (3 - 5 ** 0.5) / 2)
+          and close(f[1], (3 + 5 ** 0.5) / 2), f)
+    check('top ordinary', d['stable'] is True and d['secular'] is False, d['verdict'])
+    check('top verdict', 'ordinarily stable but secularly unstable' in d['verdict'])
+    d = js(qdot, 'sleeping_top.qd', '--ignore', 'psi', '--momentum', 'p_psi=2')
+    check('top borderline', d['stable'] is None and 'repeated' in d['verdict'], d['verdict'])
+    d = js(qdot, 'sleeping_top.qd', '--ignore', 'psi', '--momentum', 'p_psi=1.5')
+    check('top unstable', d['stable'] is False, d['verdict'])
+    d = js(qdot, 'sleeping_top.qd', '--ignore', 'psi', '--momentum', 'p_psi=3', '--set', 'k=0.1')
+    check('top damped', d['dissipation']['stable'] is False and d['dissipation']['max_re'] > 0)
+
+
+def heavy_top(qdot):
+    # Steady precession of the heavy top in Euler angles (heavy_top.qd: M = 1.2, h = 0.3,
+    # A = 0.5, C = 0.8, g = 9.81), Britannica sec. 5 (29)-(30), the model's header:
+    # M g h = phi' (C w3 - A phi' cos theta), with C w3 = p_psi.
+    d = js(qdot, 'heavy_top.qd', '--ignore', 'phi,psi', '--at', 'theta=0.5',
+           '--momentum', 'p_psi=24')
+    w = d['steady']["phi'"]
+    check('precession', close(1.2 * 9.81 * 0.3, w * (24 - 0.5 * w * math.cos(0.5))), d['steady'])
+    # upright in Euler angles: a coordinate singularity, named (exit 1)
+    rc, _, err = run(qdot, str(EXAMPLES / 'heavy_top.qd'), '--ignore', 'phi,psi', '--at',
+                     'theta=0', '--momentum', 'p_psi=24, p_phi=24')
+    check('euler singular', rc == 1 and 'not defined' in err, err)
+
+
+def bowl(qdot):
+    # B13: p = 1; omega = 0.5 stable; omega = 2 ordinarily stable, secularly unstable; with
+    # k = 0.1 max Re s = -0.024976544 and +0.049630741.
+    for om, re in ((0.5, -0.024976544), (2.0, 0.049630741)):
+        d = js(qdot, 'rotating_bowl.qd', '--driven', "phi' = %r" % om)
+        check('bowl %g ordinary' % om, d['stable'] is True, d['verdict'])
+        check('bowl %g secular' % om, d['secular'] is (om < 1), d['verdict'])
+        check('bowl %g no dissipation' % om, 'dissipation' not in d)
+        check('bowl %g frequencies' % om, close(d['frequencies'][0], abs(1 - om))
+              and close(d['frequencies'][1], 1 + om), d['frequencies'])
+        d = js(qdot, 'rotating_bowl.qd', '--driven', "phi' = %r" % om, '--set', 'k=0.1')
+        check('bowl %g friction' % om, close(d['dissipation']['max_re'], re, 1e-7),
+              d['dissipation'])
+        check('bowl %g friction verdict' % om, d['dissipation']['stable'] is (om < 1))
+    # B15: ellipsoidal bowl p1 = 1, p2 = 2
+    d = js(qdot, 'ellipsoidal_bowl.qd', '--driven', "phi' = 3", '--set', 'k=0.05')
+    f = d['frequencies']
+    check('ellipsoid frequencies', close(f[0], 1.37670, 1e-5) and close(f[1], 4.59398, 1e-5), f)
+    check('ellipsoid friction', close(d['dissipation']['max_re'], 0.0218379, 1e-6))
+    d = js(qdot, 'ellipsoidal_bowl.qd', '--driven', "phi' = 1.5")
+    check('ellipsoid unstable', d['stable'] is False)
+
+
+def errors(qdot):
+    pl = str(EXAMPLES / 'power_law_orbit.qd')
+    rc, _, err = run(qdot, pl)
+    check('no cyclic option exits 2', rc == 2, err)
+    rc, _, err = run(qdot, pl, '--ignore', 'r', '--at', 'theta=1')
+    check('not cyclic exits 2', rc == 2 and 'not cyclic' in err, err)
+    rc, _, err = run(qdot, pl, '--ignore', 'zeta')
+    check('unknown coordinate exits 2', rc == 2 and 'zeta' in err, err)
+    rc, _, err = run(qdot, pl, '--ignore', 'theta')
+    check('underdetermined exits 2', rc == 2 and 'unknowns' in err, err)
+    rc, _, err = run(qdot, pl, '--driven', "theta' = 1", '--momentum', 'p_theta=1')
+    check('momentum with driven exits 2', rc == 2, err)
+    rc, _, err = run(qdot, pl, '--driven', "theta' = 1", '--at', 'r=3')
+    check('not steady exits 1', rc == 1 and 'not a steady motion' in err, err)
+    rc, out, err = run(qdot, pl, '--ignore', 'theta', '--at', 'r=1')
+    check('text output', rc == 0 and 'verdict: stable' in out and 'frequencies: 2.236' in out,
+          out + err)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--build', required=True)
+    qdot = str(Path(ap.parse_args().build) / 'qdot')
+    for fn in (power_law, conical, top, heavy_top, bowl, errors):
+        try:
+            fn(qdot)
+        except Exception as exc:  # a crash or bad JSON
+            FAILED.append(fn.__name__)
+            print('FAIL %s: %s: %s' % (fn.__name__, type(exc).__name__, exc))
+    print('%d failed' % len(FAILED))
+    return 1 if FAILED else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,82 @@
+/*
+ * tests/sim/test_errors.c - every failure the integrators name: a
+ * non-separable H for the splitting methods, no convergence of the
+ * Gauss-Legendre iteration, a mass matrix singular at a state, step size
+ * underflow at a finite-time blow-up (x'' = 4 x^3 from x = 1, v = 0 reaches
+ * infinity at t = integral dx / sqrt(2 (x^4 - 1)) < 1), a constraint that
+ * projection cannot satisfy, and a missing step.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "sim_fixture.h"
+
+static void expect(const char *text, qd_sim_method m, double t_end, double dt, double rtol,
+                   qd_status want, const char *words) {
+    sim_fix *f = sf_load(text);
+    assert_non_null(f);
+    qd_sim_opts o = {.method = m, .t_end = t_end, .dt = dt, .rtol = rtol, .q0 = f->q0,
+                     .qd0 = f->qd0};
+    qd_status st = qd_sim_run(f->s, &o, NULL, NULL, NULL, NULL);
+    if (st != want || !strstr(qd_ctx_message(f->ctx), words))
+        fail_msg("%s: status %d, message '%s'", qd_sim_method_name(m), (int)st,
+                 qd_ctx_message(f->ctx));
+    sf_free(f);
+}
+
+static const char dp[] =
+    "coordinates a, b\nparameters g = 9.81\n"
+    "T = a'^2 + b'^2/2 + a'*b'*cos(a - b)\nV = -2*g*cos(a) - g*cos(b)\n"
+    "initial a = 1, b = 1\n";
+
+static void test_not_separable(void **state) {
+    (void)state;
+    expect(dp, QD_SIM_VERLET, 1, 0.01, 0, QD_ERR_ARG, "not separable");
+    expect(dp, QD_SIM_YOSHIDA8, 1, 0.01, 0, QD_ERR_ARG, "not separable");
+}
+
+static void test_gauss_divergence(void **state) {
+    (void)state;
+    static const char stiff[] = "coordinates x\nparameters k = 1e6\nT = x'^2/2\n"
+                                "V = k/2*x^2\ninitial x = 1\n";
+    expect(stiff, QD_SIM_GL4, 1, 0.1, 0, QD_ERR_NUMERIC, "Gauss-Legendre");
+}
+
+static void test_singular(void **state) {
+    (void)state;
+    /* M = x^2 vanishes at x = 0 */
+    static const char sing[] = "coordinates x\nT = x^2*x'^2/2\nV = x\ninitial x = 0\n";
+    expect(sing, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_SINGULAR, "singular mass matrix");
+}
+
+static void test_underflow(void **state) {
+    (void)state;
+    static const char blow[] = "coordinates x\nT = x'^2/2\nV = -x^4\ninitial x = 1\n";
+    expect(blow, QD_SIM_DOP853, 5, 0, 1e-10, QD_ERR_NUMERIC, "step size underflow");
+}
+
+static void test_projection(void **state) {
+    (void)state;
+    /* at the origin the rod constraint's gradient vanishes: no direction to move in */
+    static const char rod[] = "coordinates x, y\nparameters l = 1.4\nparticle 1 at (x, y)\n"
+                              "V = 9.81*y\nconstraint rod: x^2 + y^2 = l^2\n"
+                              "initial x = 0, y = 0\n";
+    expect(rod, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "cannot be satisfied");
+}
+
+static void test_missing_step(void **state) {
+    (void)state;
+    expect(dp, QD_SIM_GL4, 1, 0, 0, QD_ERR_ARG, "--dt");
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_not_separable), cmocka_unit_test(test_gauss_divergence),
+        cmocka_unit_test(test_singular),      cmocka_unit_test(test_underflow),
+        cmocka_unit_test(test_projection),    cmocka_unit_test(test_missing_step),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
