@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "codegen/cg.h"
 #include "mech/mech.h"
 
 static double param_value(qd_ctx *ctx, const qd_expr *v) {
@@ -45,8 +46,22 @@ static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
     return false;
 }
 
+/* The outputs compiled into one program.  Sines and cosines of angle sums
+ * are expanded first when that saves calls to the maths library (the
+ * pendulum chain's cos(theta_j - theta_k): see src/codegen/angles.c), the
+ * rewrite the generated C uses, so both paths compute the same formulas. */
 static qd_prog *compile(qd_sim *s, size_t nout, const qd_expr *const *outs, double **out) {
-    qd_prog *p = qd_prog_new(s->ctx, s->nin, s->in_syms, nout, outs);
+    const qd_expr **x = malloc((nout + 1) * sizeof *x);
+    bool applied;
+    qd_prog *p = NULL;
+    if (x) {
+        memcpy(x, outs, nout * sizeof *x);
+        if (qd__cg_angle_sums(s->ctx, nout, x, &applied) == QD_OK)
+            p = qd_prog_new(s->ctx, s->nin, s->in_syms, nout, x);
+        free(x);
+    } else {
+        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
+    }
     *out = malloc((nout + 1) * sizeof **out);
     if (!*out && p) {
         qd_prog_free(p);
