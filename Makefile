@@ -20,6 +20,7 @@ demo:
 	$(CMAKE) --build build -j $(JOBS) --target qdot_cli
 	./build/qdot eom examples/double_pendulum.qd
 	./build/qdot modes examples/double_pendulum.qd
+	./build/qdot simulate examples/double_pendulum.qd --t-end 1000 --rtol 1e-12 --initial "theta1=pi/2, theta2=pi/2" --out /dev/null
 
 # Every test twice: a normal build, then AddressSanitizer + UBSan (any report fails).
 test:
