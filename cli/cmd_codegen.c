@@ -6,18 +6,18 @@
  * directory.  --set changes the default parameter values written into the
  * file (parameters stay arguments of the functions).
  */
+#define _POSIX_C_SOURCE 200809L /* mkdir */
 #include "cli.h"
 
 #include <ctype.h>
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "qdot/codegen.h"
-#include "eom_out.h"
-#include "model_file.h"
-#include "state.h"
+#include "model_cli.h"
 
-#define MAX_SETS 64
+#define MAX_SETS QD_CLI_MAX_LIST
 #define MAX_NAME 64
 
 typedef struct cg_run {
@@ -37,20 +37,13 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         r->eliminate = true;
         return QD_EXIT_OK;
     }
-    if (!r->dir && (v = qd_cli_value(argc, argv, i, "-o"))) {
-        r->dir = v;
-        return QD_EXIT_OK;
-    }
-    if (!r->prefix && (v = qd_cli_value(argc, argv, i, "--prefix"))) {
-        r->prefix = v;
-        return QD_EXIT_OK;
-    }
-    if ((v = qd_cli_value(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
-        r->sets[r->nsets++] = v;
-        return QD_EXIT_OK;
-    }
-    qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
-    return QD_EXIT_USAGE;
+    if ((v = qd_cli_value(argc, argv, i, "-o")))
+        return qd_cli_once("-o", &r->dir, v);
+    if ((v = qd_cli_value(argc, argv, i, "--prefix")))
+        return qd_cli_once("--prefix", &r->prefix, v);
+    if ((v = qd_cli_value(argc, argv, i, "--set")))
+        return qd_cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
+    return qd_cli_bad_option(argv[*i], usage_text);
 }
 
 /* The file's base name without extension, as a C identifier. */
@@ -98,16 +91,15 @@ static int run(qd_ctx *ctx, cg_run *r) {
     qd_model_file mf = {0};
     qd_eom *e = NULL;
     qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
-    int rc = qd_model_file_load(ctx, r->file, &mf);
-    for (size_t i = 0; rc == QD_EXIT_OK && i < r->nsets; i++) {
-        const qd_expr *p, *v;
-        rc = qd_state_set(ctx, mf.model, r->sets[i], &p, &v);
-    }
     qd_eom_opts opts = {r->eliminate};
-    if (rc == QD_EXIT_OK && !(e = qd_eom_derive_opts(ctx, mf.model, &opts)))
-        rc = qd_eom_derive_error(ctx, &mf);
+    int rc = qd_cli_load_derive(ctx, r->file, r->nsets, r->sets, NULL, &opts, &mf, &e);
     if (rc == QD_EXIT_OK && qd_codegen_c(ctx, mf.model, e, r->name, &c, &h) != QD_OK)
         rc = qd_diag_ctx(ctx);
+    /* -o names the directory to write into: made when missing (not its parents) */
+    if (rc == QD_EXIT_OK && mkdir(r->dir, 0777) != 0 && errno != EEXIST) {
+        qd_diag_error("cannot create the directory %s: %s", r->dir, strerror(errno));
+        rc = QD_EXIT_FAIL;
+    }
     if (rc == QD_EXIT_OK)
         rc = write_text(r->dir, r->name, "c", &c);
     if (rc == QD_EXIT_OK)
@@ -132,6 +124,10 @@ int qd_cmd_codegen(int argc, char **argv) {
         strcpy(r.name, r.prefix);
     } else {
         default_name(&r);
+    }
+    if (r.dir && !r.dir[0]) {  /* "" would write to "/NAME.c" */
+        qd_diag_error("-o takes a directory, not an empty name");
+        return QD_EXIT_USAGE;
     }
     r.dir = r.dir ? r.dir : ".";
     qd_ctx *ctx = qd_ctx_new();

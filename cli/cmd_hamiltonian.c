@@ -12,12 +12,13 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "eom_out.h"
 #include "json.h"
+#include "eom_out.h"
+#include "model_cli.h"
 #include "model_file.h"
 #include "state.h"
 
-#define MAX_SETS 64
+#define MAX_SETS QD_CLI_MAX_LIST
 #define MAX_AT 1024
 
 typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } ham_fmt;
@@ -29,8 +30,8 @@ typedef struct ham_run {
     qd_ham *h;
     ham_fmt fmt;
     const char *file, *at, *sets[MAX_SETS];
-    size_t nsets, nsubs;
-    const qd_expr *from[MAX_SETS], *to[MAX_SETS];
+    size_t nsets;
+    qd_cli_subs subs;
     qd_state st;
     const qd_expr **syms; /* the state's symbols, then the momenta */
     double *vals;
@@ -41,59 +42,30 @@ static const char usage_text[] =
     "usage: qdot hamiltonian FILE [--format text|json|latex|sympy] [--set NAME=VALUE]... "
     "[--at \"q=VALUE, p_q=VALUE, t=VALUE\"]";
 
-static int parse_format(const char *v, ham_fmt *f) {
-    static const char *const names[] = {"text", "json", "latex", "sympy"};
-    for (int i = 0; i < 4; i++)
-        if (!strcmp(v, names[i])) {
-            *f = (ham_fmt)i;
-            return QD_EXIT_OK;
-        }
-    qd_diag_error("--format takes text, json, latex or sympy, not '%s'", v);
-    return QD_EXIT_USAGE;
-}
+static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     ham_run *r = data;
     const char *v;
-    if ((v = qd_cli_value(argc, argv, i, "--format")))
-        return parse_format(v, &r->fmt);
-    if ((v = qd_cli_value(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
-        r->sets[r->nsets++] = v;
-        return QD_EXIT_OK;
+    int f;
+    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
+        int rc = qd_cli_choice("--format", v, formats, &f);
+        r->fmt = (ham_fmt)f;
+        return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--at")) && !r->at) {
-        r->at = v;
-        return QD_EXIT_OK;
-    }
-    qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
-    return QD_EXIT_USAGE;
+    if ((v = qd_cli_value(argc, argv, i, "--set")))
+        return qd_cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
+    if ((v = qd_cli_value(argc, argv, i, "--at")))
+        return qd_cli_once("--at", &r->at, v);
+    return qd_cli_bad_option(argv[*i], usage_text);
 }
 
 static int parse_args(int argc, char **argv, ham_run *r) {
     return qd_cli_file_args(argc, argv, "hamiltonian", usage_text, &r->file, parse_option, r);
 }
 
-static int apply_sets(ham_run *r) {
-    for (size_t i = 0; i < r->nsets; i++) {
-        const qd_expr *p, *v;
-        int rc = qd_state_set(r->ctx, r->mf.model, r->sets[i], &p, &v);
-        if (rc != QD_EXIT_OK)
-            return rc;
-        size_t k = 0;
-        while (k < r->nsubs && r->from[k] != p)
-            k++;
-        r->from[k] = p;
-        r->to[k] = v;
-        r->nsubs += k == r->nsubs;
-    }
-    return QD_EXIT_OK;
-}
-
 static const qd_expr *subs(ham_run *r, const qd_expr *x) {
-    if (!x || !r->nsubs)
-        return x;
-    const qd_expr *y = qd_subs(r->ctx, x, r->nsubs, r->from, r->to);
-    return y == x ? x : qd_simplify(r->ctx, y);
+    return qd_cli_subst(r->ctx, &r->subs, x);
 }
 
 static int substitute(ham_run *r) {
@@ -320,14 +292,10 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
 
 /* A string of x, or its number with --at. */
 static void json_expr(const ham_run *r, qd_json *j, const qd_expr *x) {
-    if (r->at && qd_is_number(x)) {
+    if (r->at && x && qd_is_number(x))
         qd_json_number(j, qd_state_value(x));
-        return;
-    }
-    qd_buf s = QD_BUF_INIT;
-    qd_print(r->ctx, x, QD_FMT_TEXT, &s);
-    qd_json_string(j, qd_buf_str(&s));
-    qd_buf_free(&s);
+    else
+        qd_json_expr(j, r->ctx, x);
 }
 
 static void json_list(const ham_run *r, qd_json *j, const char *key, const qd_expr *const *x) {
@@ -384,24 +352,14 @@ static void write_json(const ham_run *r, qd_buf *b) {
     else
         qd_json_null(&j);
     qd_json_key(&j, "H_minus_energy");
-    if (h->H_minus_E) {
-        qd_buf s = QD_BUF_INIT;
-        qd_print(r->ctx, h->H_minus_E, QD_FMT_TEXT, &s);
-        qd_json_string(&j, qd_buf_str(&s));
-        qd_buf_free(&s);
-    } else {
-        qd_json_null(&j);
-    }
+    qd_json_expr(&j, r->ctx, h->H_minus_E);
     qd_json_key(&j, "conserved");
     qd_json_bool(&j, h->conserved);
     qd_json_key(&j, "H_given");
     qd_json_bool(&j, h->H_given);
     if (h->H_given && !r->at) { /* the inverse Legendre transform, or why there is none */
         qd_json_key(&j, "L");
-        if (h->L_from_H)
-            json_expr(r, &j, h->L_from_H);
-        else
-            qd_json_null(&j);
+        json_expr(r, &j, h->L_from_H);
         qd_json_key(&j, "L_error");
         if (h->L_from_H)
             qd_json_null(&j);
@@ -421,19 +379,13 @@ static int emit(ham_run *r) {
         write_sympy(r, &b);
     else
         write_lines(r, &b);
-    bool ok = !b.failed;
-    if (ok)
-        fputs(qd_buf_str(&b), stdout);
-    else
-        qd_diag_error("cannot print the Hamiltonian");
-    qd_buf_free(&b);
-    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+    return qd_cli_emit(&b, "Hamiltonian");
 }
 
 static int run(ham_run *r) {
     int rc = qd_model_file_load(r->ctx, r->file, &r->mf);
     if (rc == QD_EXIT_OK)
-        rc = apply_sets(r);
+        rc = qd_cli_apply_sets(r->ctx, r->mf.model, r->nsets, r->sets, &r->subs);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
     if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
         rc = qd_eom_derive_error(r->ctx, &r->mf);

@@ -11,17 +11,15 @@
  */
 #include "cli.h"
 
-#include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
-#include "eom_out.h"
 #include "json.h"
+#include "model_cli.h"
 #include "model_file.h"
 #include "state.h"
 #include "qdot/integrals.h"
 
-#define MAX_OPT 64
-#define MAX_TEXT 1024
+#define MAX_OPT QD_CLI_MAX_LIST
 
 typedef struct given {
     char name[64];
@@ -36,8 +34,8 @@ typedef struct int_run {
     qd_integrals *I;
     bool json, search;
     const char *file, *sets[MAX_OPT], *syms[MAX_OPT], *ints[MAX_OPT];
-    size_t nsets, nsymopt, nintopt, nsubs;
-    const qd_expr *from[MAX_OPT], *to[MAX_OPT];
+    size_t nsets, nsymopt, nintopt;
+    qd_cli_subs subs;
     size_t nnoether, nproposed;
     qd_noether *noether;
     qd_int_proposed *proposed;
@@ -49,172 +47,55 @@ static const char usage_text[] =
     "[--symmetry \"[NAME:] x -> x + eps, ...\" | \"[NAME:] delta x = -y, ...\"]... "
     "[--integral \"[NAME:] EXPR\"]... [--no-search]";
 
+static const char *const formats[] = {"text", "json", NULL};
+
 static int parse_option(int argc, char **argv, int *i, void *data) {
     int_run *r = data;
     const char *v;
+    int f;
     if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        if (strcmp(v, "text") && strcmp(v, "json")) {
-            qd_diag_error("--format takes text or json, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        r->json = !strcmp(v, "json");
-        return QD_EXIT_OK;
+        int rc = qd_cli_choice("--format", v, formats, &f);
+        r->json = f == 1;
+        return rc;
     }
     if (!strcmp(argv[*i], "--no-search")) {
         r->search = false;
         return QD_EXIT_OK;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--set")) && r->nsets < MAX_OPT) {
-        r->sets[r->nsets++] = v;
-        return QD_EXIT_OK;
-    }
-    if ((v = qd_cli_value(argc, argv, i, "--symmetry")) && r->nsymopt < MAX_OPT) {
-        r->syms[r->nsymopt++] = v;
-        return QD_EXIT_OK;
-    }
-    if ((v = qd_cli_value(argc, argv, i, "--integral")) && r->nintopt < MAX_OPT) {
-        r->ints[r->nintopt++] = v;
-        return QD_EXIT_OK;
-    }
-    qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
-    return QD_EXIT_USAGE;
-}
-
-static int apply_sets(int_run *r) {
-    for (size_t i = 0; i < r->nsets; i++) {
-        const qd_expr *p, *v;
-        int rc = qd_state_set(r->ctx, r->mf.model, r->sets[i], &p, &v);
-        if (rc != QD_EXIT_OK)
-            return rc;
-        size_t k = 0;
-        while (k < r->nsubs && r->from[k] != p)
-            k++;
-        r->from[k] = p;
-        r->to[k] = v;
-        r->nsubs += k == r->nsubs;
-    }
-    return QD_EXIT_OK;
+    if ((v = qd_cli_value(argc, argv, i, "--set")))
+        return qd_cli_push("--set", r->sets, &r->nsets, MAX_OPT, v);
+    if ((v = qd_cli_value(argc, argv, i, "--symmetry")))
+        return qd_cli_push("--symmetry", r->syms, &r->nsymopt, MAX_OPT, v);
+    if ((v = qd_cli_value(argc, argv, i, "--integral")))
+        return qd_cli_push("--integral", r->ints, &r->nintopt, MAX_OPT, v);
+    return qd_cli_bad_option(argv[*i], usage_text);
 }
 
 /* ---- --symmetry and --integral ------------------------------------------- */
 
-/* "NAME:" at the start of s: copied to name (else name gets dflt), and
- * the text after it returned. */
-static const char *label(const char *s, char *name, size_t cap, const char *dflt, size_t k) {
-    const char *c = s;
-    while (isspace((unsigned char)*c))
-        c++;
-    const char *id = c;
-    while (isalnum((unsigned char)*c) || *c == '_')
-        c++;
-    const char *end = c;
-    while (isspace((unsigned char)*c))
-        c++;
-    if (end > id && *c == ':' && (size_t)(end - id) < cap) {
-        memcpy(name, id, (size_t)(end - id));
-        name[end - id] = '\0';
-        return c + 1;
-    }
-    snprintf(name, cap, "%s%zu", dflt, k + 1);
-    return s;
-}
-
-static int read_expr(int_run *r, const char *what, const char *text, const qd_expr **out) {
-    qd_read_opts opts = {.new_symbols = false};
-    qd_read_error err;
-    *out = qd_read(r->ctx, text, &opts, &err);
-    if (!*out) {
-        qd_diag_read(what, text, &err);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
-static long coord_index(int_run *r, const char *name, size_t len) {
-    for (size_t j = 0; j < r->e->n; j++) {
-        const char *nm = qd_expr_name(r->e->q[j]);
-        if (strlen(nm) == len && !strncmp(nm, name, len))
-            return (long)j;
-    }
-    return -1;
-}
-
-/* One item "q -> EXPR" or "delta q = EXPR" into xi. */
-static int sym_item(int_run *r, const char *item, const qd_expr **xi) {
-    const char *c = item;
-    while (isspace((unsigned char)*c))
-        c++;
-    bool delta = !strncmp(c, "delta", 5) && isspace((unsigned char)c[5]);
-    if (delta)
-        c += 5;
-    while (isspace((unsigned char)*c))
-        c++;
-    const char *id = c;
-    while (isalnum((unsigned char)*c) || *c == '_')
-        c++;
-    long j = coord_index(r, id, (size_t)(c - id));
-    while (isspace((unsigned char)*c))
-        c++;
-    const char *sep = delta ? "=" : "->";
-    if (j < 0 || strncmp(c, sep, strlen(sep))) {
-        qd_diag_error("--symmetry: cannot read '%s': write \"x -> x + eps, y -> y\" or "
-                      "\"delta x = -y, delta y = x\" with coordinates of the model", item);
-        return QD_EXIT_USAGE;
-    }
-    const qd_expr *rhs;
-    int rc = read_expr(r, "--symmetry", c + strlen(sep), &rhs);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (!delta) {
-        const qd_expr *eps = qd_symbol(r->ctx, "eps"), *z = qd_int(r->ctx, 0);
-        const qd_expr *at0 = qd_simplify(r->ctx, qd_subs(r->ctx, rhs, 1, &eps, &z));
-        if (at0 && !qd_is_zero(qd_simplify(r->ctx, qd_sub(r->ctx, at0, r->e->q[j])))) {
-            qd_diag_error("--symmetry: at eps = 0, '%s' is not the identity", item);
-            return QD_EXIT_USAGE;
-        }
-        rhs = qd_subs(r->ctx, qd_diff(r->ctx, rhs, eps), 1, &eps, &z);
-    }
-    xi[j] = qd_simplify(r->ctx, rhs);
-    return xi[j] ? QD_EXIT_OK : qd_diag_ctx(r->ctx);
-}
-
-static int parse_symmetry(int_run *r, size_t k, given *g) {
-    char text[MAX_TEXT];
-    if (strlen(r->syms[k]) >= MAX_TEXT) {
-        qd_diag_error("--symmetry is too long");
-        return QD_EXIT_USAGE;
-    }
-    strcpy(text, label(r->syms[k], g->name, sizeof g->name, "S", k));
-    g->xi = calloc(r->e->n ? r->e->n : 1, sizeof *g->xi);
-    if (!g->xi)
-        return QD_EXIT_FAIL;
-    qd_symbol(r->ctx, "eps");
-    int depth = 0, rc = QD_EXIT_OK;
-    char *start = text;
-    for (char *c = text;; c++) {
-        depth += (*c == '(') - (*c == ')');
-        if ((*c == ',' && !depth) || !*c) {
-            bool end = !*c;
-            *c = '\0';
-            if ((rc = sym_item(r, start, g->xi)) != QD_EXIT_OK || end)
-                break;
-            start = c + 1;
-        }
-    }
-    return rc;
-}
-
+/* Read by the model's own parser, as `symmetry` and `integral` statements
+ * would be; unnamed ones are S1, S2, ... and J1, J2, ... */
 static int parse_given(int_run *r) {
     r->gsym = calloc(r->nsymopt + 1, sizeof *r->gsym);
     r->gint = calloc(r->nintopt + 1, sizeof *r->gint);
     if (!r->gsym || !r->gint)
         return QD_EXIT_FAIL;
+    size_t n = qd_model_ncoords(r->mf.model);
     int rc = QD_EXIT_OK;
-    for (size_t k = 0; rc == QD_EXIT_OK && k < r->nsymopt; k++)
-        rc = parse_symmetry(r, k, &r->gsym[k]);
+    char label[32];
+    for (size_t k = 0; rc == QD_EXIT_OK && k < r->nsymopt; k++) {
+        given *g = &r->gsym[k];
+        if (!(g->xi = calloc(n + 1, sizeof *g->xi)))
+            return QD_EXIT_FAIL;
+        snprintf(label, sizeof label, "S%zu", k + 1);
+        rc = qd_cli_symmetry(r->ctx, &r->mf, "--symmetry", r->syms[k], label, g->name,
+                             sizeof g->name, g->xi);
+    }
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->nintopt; k++) {
-        const char *text = label(r->ints[k], r->gint[k].name, sizeof r->gint[k].name, "J", k);
-        rc = read_expr(r, "--integral", text, &r->gint[k].expr);
+        given *g = &r->gint[k];
+        snprintf(label, sizeof label, "J%zu", k + 1);
+        rc = qd_cli_integral(r->ctx, &r->mf, "--integral", r->ints[k], label, g->name,
+                             sizeof g->name, &g->expr);
     }
     return rc;
 }
@@ -450,14 +331,7 @@ static void write_text(const int_run *r, qd_buf *b) {
 
 static void jexpr(const int_run *r, qd_json *j, const char *key, const qd_expr *x) {
     qd_json_key(j, key);
-    if (!x) {
-        qd_json_null(j);
-        return;
-    }
-    qd_buf s = QD_BUF_INIT;
-    put(r, &s, x);
-    qd_json_string(j, qd_buf_str(&s));
-    qd_buf_free(&s);
+    qd_json_expr(j, r->ctx, x);
 }
 
 static void jbool(qd_json *j, const char *key, bool v) {
@@ -599,24 +473,16 @@ static int emit(int_run *r) {
         write_json(r, &b);
     else
         write_text(r, &b);
-    bool ok = !b.failed;
-    if (ok)
-        fputs(qd_buf_str(&b), stdout);
-    else
-        qd_diag_error("cannot print the integrals");
-    qd_buf_free(&b);
-    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+    return qd_cli_emit(&b, "integrals");
 }
 
 static int run(int_run *r) {
-    int rc = qd_model_file_load(r->ctx, r->file, &r->mf);
-    if (rc == QD_EXIT_OK)
-        rc = apply_sets(r);
-    if (rc == QD_EXIT_OK && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
-        rc = qd_eom_derive_error(r->ctx, &r->mf);
+    int rc = qd_cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
+                                &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_given(r);
-    qd_integrals_opts o = {.nsubs = r->nsubs, .from = r->from, .to = r->to, .search = r->search};
+    qd_integrals_opts o = {.nsubs = r->subs.n, .from = r->subs.from, .to = r->subs.to,
+                           .search = r->search};
     if (rc == QD_EXIT_OK && !(r->I = qd_integrals_derive(r->ctx, r->mf.model, r->e, &o)))
         rc = failed(r);
     if (rc == QD_EXIT_OK)

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "json.h"
+#include "model_cli.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -42,38 +43,38 @@ static const char usage_text[] =
     "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
     "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--set NAME=VALUE]... [--format text|json]";
 
+static const char *const formats[] = {"text", "json", NULL};
+
 static int parse_option(int argc, char **argv, int *i, void *data) {
     modes_args *a = data;
     const char *v;
+    int f;
     if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        if (strcmp(v, "text") && strcmp(v, "json")) {
-            qd_diag_error("--format takes text or json, not '%s'", v);
+        int rc = qd_cli_choice("--format", v, formats, &f);
+        a->json = f == 1;
+        return rc;
+    }
+    if ((v = qd_cli_value(argc, argv, i, "--at-equilibrium"))) {
+        char *end;
+        if (a->at_eq) {
+            qd_diag_error("--at-equilibrium is given twice; give it once");
             return QD_EXIT_USAGE;
         }
-        a->json = !strcmp(v, "json");
-    } else if ((v = qd_cli_value(argc, argv, i, "--at-equilibrium"))) {
-        char *end;
         a->at_eq = strtol(v, &end, 10);
         if (*end || a->at_eq < 1) {
             qd_diag_error("--at-equilibrium takes a number 1, 2, ... (as `qdot equilibria` "
                           "lists them), not '%s'", v);
             return QD_EXIT_USAGE;
         }
-    } else if ((v = qd_cli_value(argc, argv, i, "--about"))) {
-        a->about = v;
-    } else if ((v = qd_cli_value(argc, argv, i, "--initial"))) {
-        a->initial = v;
-    } else if ((v = qd_cli_value(argc, argv, i, "--set"))) {
-        if (a->nsets == QD_LIN_MAX_SETS) {
-            qd_diag_error("at most %d --set options", QD_LIN_MAX_SETS);
-            return QD_EXIT_USAGE;
-        }
-        a->sets[a->nsets++] = v;
-    } else {
-        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
+        return QD_EXIT_OK;
     }
-    return QD_EXIT_OK;
+    if ((v = qd_cli_value(argc, argv, i, "--about")))
+        return qd_cli_once("--about", &a->about, v);
+    if ((v = qd_cli_value(argc, argv, i, "--initial")))
+        return qd_cli_once("--initial", &a->initial, v);
+    if ((v = qd_cli_value(argc, argv, i, "--set")))
+        return qd_cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
+    return qd_cli_bad_option(argv[*i], usage_text);
 }
 
 static int choose_point(modes_run *r, const modes_args *a) {
@@ -94,7 +95,9 @@ static int choose_point(modes_run *r, const modes_args *a) {
     size_t k = 0;
     if (a->at_eq) {
         if ((size_t)a->at_eq > r->eq.count) {
-            qd_diag_error("--at-equilibrium %ld: there are %zu equilibria", a->at_eq, r->eq.count);
+            qd_diag_error("--at-equilibrium %ld: there %s %zu equilibri%s", a->at_eq,
+                          r->eq.count == 1 ? "is" : "are", r->eq.count,
+                          r->eq.count == 1 ? "um" : "a");
             return QD_EXIT_USAGE;
         }
         k = (size_t)a->at_eq - 1;
@@ -113,10 +116,7 @@ static int choose_point(modes_run *r, const modes_args *a) {
 static int linearize(modes_run *r) {
     qd_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
-    for (size_t j = 0; j < n; j++) {
-        lr->st.vals[j] = r->q0[j];
-        lr->st.vals[n + j] = 0;
-    }
+    qd_lin_set_state(lr, r->q0, NULL);
     double *f = calloc(n + 1, sizeof *f), *M = calloc(n * n + 1, sizeof *M);
     if (f && M && qd_eom_eval(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals, M, f, NULL,
                               NULL, NULL) == QD_OK)
@@ -149,25 +149,24 @@ static int initial(modes_run *r, const char *text) {
                       "system without gyroscopic terms");
         return QD_EXIT_USAGE;
     }
-    qd_state s;
-    int rc = qd_state_init(lr->ctx, lr->mf.model, &s);
-    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++)
-        s.vals[j] = r->q0[j];
-    if (rc == QD_EXIT_OK)
-        rc = qd_state_parse(lr->ctx, lr->mf.model, text, &s);
+    double *q = calloc(n + 1, sizeof *q), *qd = calloc(n + 1, sizeof *qd);
     r->Q = calloc(n + 1, sizeof *r->Q);
     r->Qd = calloc(n + 1, sizeof *r->Qd);
-    if (rc == QD_EXIT_OK && (!r->Q || !r->Qd))
-        rc = QD_EXIT_FAIL;
+    int rc = q && qd && r->Q && r->Qd ? QD_EXIT_OK : QD_EXIT_FAIL;
+    if (rc == QD_EXIT_OK) {
+        memcpy(q, r->q0, n * sizeof *q);
+        rc = qd_lin_point(lr, "--initial", text, q, qd);
+    }
     /* Q_j = a_j^T M0 (q - q0) */
     for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++)
         for (size_t i = 0; i < n; i++)
             for (size_t k = 0; k < n; k++) {
                 double w = r->res.shapes[i * n + j] * r->lin.M[i * n + k];
-                r->Q[j] += w * (s.vals[k] - r->q0[k]);
-                r->Qd[j] += w * s.vals[n + k];
+                r->Q[j] += w * (q[k] - r->q0[k]);
+                r->Qd[j] += w * qd[k];
             }
-    qd_state_free(&s);
+    free(q);
+    free(qd);
     return rc;
 }
 
@@ -179,7 +178,7 @@ static void put_matrix(qd_buf *b, const char *name, size_t n, const double *A) {
         qd_buf_puts(b, i ? ", [" : "[");
         for (size_t j = 0; j < n; j++) {
             qd_buf_puts(b, j ? ", " : "");
-            qd_state_put_double(b, fabs(A[i * n + j]) < 1e-14 ? 0 : A[i * n + j]);
+            qd_state_put_result(b, A[i * n + j]);
         }
         qd_buf_puts(b, "]");
     }
@@ -212,7 +211,7 @@ static void put_point(modes_run *r, qd_buf *b) {
         if (r->pt)
             qd_lin_put_value(&r->lr, r->pt, j, b);
         else
-            qd_state_put_double(b, r->q0[j]);
+            qd_state_put_result(b, r->q0[j]);
     }
     if (r->pt)
         qd_buf_printf(b, " (%s of the potential)", qd_eq_kind_name(r->pt->kind));
@@ -230,7 +229,7 @@ static void put_conservative(modes_run *r, qd_buf *b) {
     for (size_t j = 0; j < n; j++) {
         double w2 = res->omega2[j], w = sqrt(fabs(w2));
         qd_buf_printf(b, "mode %zu: w^2 = ", j + 1);
-        qd_state_put_double(b, w2);
+        qd_state_put_result(b, w2);
         if (w2 > 0)
             qd_buf_printf(b, ", w = %.10g rad/s, period = %.10g s", w, 2 * PI / w);
         else if (w2 == 0)
@@ -246,7 +245,7 @@ static void put_conservative(modes_run *r, qd_buf *b) {
         for (size_t i = 0; i < n; i++) {
             qd_buf_printf(b, "%s%s = ", i ? ", " : "", qd_expr_name(e->q[i]));
             double v = res->shapes[i * n + j];
-            qd_state_put_double(b, fabs(v) < 1e-13 ? 0 : v);
+            qd_state_put_result(b, v);
         }
         qd_buf_puts(b, "\n");
     }
@@ -284,9 +283,11 @@ static void put_state_space(modes_run *r, qd_buf *b) {
                    "det(s^2 M0 + s (C0 + G0) + K0) = 0\n");
     for (size_t i = 0; i < res->neig; i++) {
         double re = res->eig_re[i], im = res->eig_im[i], mod = hypot(re, im);
+        if (fabs(re) <= 1e-12 * mod)
+            re = 0; /* round-off off the imaginary axis: the verdict already knows */
         qd_buf_printf(b, "  s = %.10g %s %.10gi", re, im < 0 ? "-" : "+", fabs(im));
         if (mod > 0 && im > 0)
-            qd_buf_printf(b, "  (frequency %.10g rad/s, damping ratio %.6g)", im, -re / mod);
+            qd_buf_printf(b, "  (frequency %.10g rad/s, damping ratio %.6g)", im, re == 0 ? 0 : -re / mod);
         qd_buf_puts(b, "\n");
     }
 }
@@ -364,6 +365,53 @@ static void json_frequencies(modes_run *r, qd_json *j) {
     qd_json_end_array(j);
 }
 
+/* The conservative modes: w^2, w, period, multiplicity, shape, and the
+ * exact w^2 and the initial normal coordinates when there are any. */
+static void json_modes(modes_run *r, qd_json *j) {
+    const qd_eom *e = r->lr.e;
+    const qd_modes_result *res = &r->res;
+    size_t n = e->n;
+    qd_json_key(j, "modes");
+    qd_json_begin_array(j);
+    for (size_t k = 0; res->conservative && k < n; k++) {
+        double w2 = res->omega2[k];
+        qd_json_begin_object(j);
+        qd_json_key(j, "omega2");
+        qd_json_number(j, w2);
+        qd_json_key(j, "omega");
+        if (w2 >= 0)
+            qd_json_number(j, sqrt(w2));
+        else
+            qd_json_null(j);
+        qd_json_key(j, "period");
+        if (w2 > 0)
+            qd_json_number(j, 2 * PI / sqrt(w2));
+        else
+            qd_json_null(j);
+        qd_json_key(j, "multiplicity");
+        qd_json_number(j, (double)multiplicity(res, k));
+        qd_json_key(j, "shape");
+        qd_json_begin_object(j);
+        for (size_t i = 0; i < n; i++) {
+            qd_json_key(j, qd_expr_name(e->q[i]));
+            qd_json_number(j, res->shapes[i * n + k]);
+        }
+        qd_json_end_object(j);
+        if (r->have_sym) {
+            qd_json_key(j, "omega2_exact");
+            qd_json_expr(j, r->lr.ctx, r->w2sym[k]);
+        }
+        if (r->Q) {
+            qd_json_key(j, "Q0");
+            qd_json_number(j, r->Q[k]);
+            qd_json_key(j, "Q0_dot");
+            qd_json_number(j, r->Qd[k]);
+        }
+        qd_json_end_object(j);
+    }
+    qd_json_end_array(j);
+}
+
 static void put_json(modes_run *r, qd_buf *b) {
     const qd_eom *e = r->lr.e;
     const qd_modes_result *res = &r->res;
@@ -387,48 +435,7 @@ static void put_json(modes_run *r, qd_buf *b) {
     json_matrix(&j, "G", n, r->lin.G);
     json_matrix(&j, "K", n, r->lin.K);
     json_frequencies(r, &j);
-    qd_json_key(&j, "modes");
-    qd_json_begin_array(&j);
-    for (size_t k = 0; res->conservative && k < n; k++) {
-        double w2 = res->omega2[k];
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "omega2");
-        qd_json_number(&j, w2);
-        qd_json_key(&j, "omega");
-        if (w2 >= 0)
-            qd_json_number(&j, sqrt(w2));
-        else
-            qd_json_null(&j);
-        qd_json_key(&j, "period");
-        if (w2 > 0)
-            qd_json_number(&j, 2 * PI / sqrt(w2));
-        else
-            qd_json_null(&j);
-        qd_json_key(&j, "multiplicity");
-        qd_json_number(&j, (double)multiplicity(res, k));
-        qd_json_key(&j, "shape");
-        qd_json_begin_object(&j);
-        for (size_t i = 0; i < n; i++) {
-            qd_json_key(&j, qd_expr_name(e->q[i]));
-            qd_json_number(&j, res->shapes[i * n + k]);
-        }
-        qd_json_end_object(&j);
-        if (r->have_sym) {
-            qd_buf t = QD_BUF_INIT;
-            qd_print(r->lr.ctx, r->w2sym[k], QD_FMT_TEXT, &t);
-            qd_json_key(&j, "omega2_exact");
-            qd_json_string(&j, qd_buf_str(&t));
-            qd_buf_free(&t);
-        }
-        if (r->Q) {
-            qd_json_key(&j, "Q0");
-            qd_json_number(&j, r->Q[k]);
-            qd_json_key(&j, "Q0_dot");
-            qd_json_number(&j, r->Qd[k]);
-        }
-        qd_json_end_object(&j);
-    }
-    qd_json_end_array(&j);
+    json_modes(r, &j);
     qd_json_key(&j, "eigenvalues");
     qd_json_begin_array(&j);
     for (size_t k = 0; k < res->neig; k++) {
@@ -447,6 +454,7 @@ static void put_json(modes_run *r, qd_buf *b) {
     qd_json_string(&j, verdict(res->stable));
     qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 int qd_cmd_modes(int argc, char **argv) {
@@ -473,13 +481,7 @@ int qd_cmd_modes(int argc, char **argv) {
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
         (a.json ? put_json : put_text)(&r, &b);
-        if (b.failed) {
-            qd_diag_error("cannot print the modes");
-            rc = QD_EXIT_FAIL;
-        } else {
-            fputs(qd_buf_str(&b), stdout);
-        }
-        qd_buf_free(&b);
+        rc = qd_cli_emit(&b, "modes");
     }
     free(r.q0);
     free(r.Q);

@@ -61,9 +61,9 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     if (rc > 100)
         return rc - 100;
     const char *v;
-    if ((v = qd_sim_cli_value(argc, argv, i, "--section"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--section"))) {
         p->section = v;
-    } else if ((v = qd_sim_cli_value(argc, argv, i, "--n"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--n"))) {
         char *end;
         p->n = strtod(v, &end);
         if (end == v || *end || !(p->n >= 1) || p->n > 1e9 || p->n != (double)(size_t)p->n) {

@@ -10,13 +10,13 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "eom_out.h"
 #include "json.h"
+#include "model_cli.h"
 #include "model_file.h"
 #include "qdot/routh.h"
 #include "state.h"
 
-#define MAX_SETS 64
+#define MAX_SETS QD_CLI_MAX_LIST
 #define MAX_IGN 32
 
 typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } routh_fmt;
@@ -28,40 +28,31 @@ typedef struct routh_run {
     qd_routh *r;
     routh_fmt fmt;
     const char *file, *ignore, *sets[MAX_SETS];
-    size_t nsets, nsubs, nign;
-    const qd_expr *from[MAX_SETS], *to[MAX_SETS], *ign[MAX_IGN];
+    size_t nsets, nign;
+    qd_cli_subs subs;
+    const qd_expr *ign[MAX_IGN];
 } routh_run;
 
 static const char usage_text[] =
     "usage: qdot routh FILE --ignore q[,q...] [--format text|json|latex|sympy] "
     "[--set NAME=VALUE]...";
 
-static int parse_format(const char *v, routh_fmt *f) {
-    static const char *const names[] = {"text", "json", "latex", "sympy"};
-    for (int i = 0; i < 4; i++)
-        if (!strcmp(v, names[i])) {
-            *f = (routh_fmt)i;
-            return QD_EXIT_OK;
-        }
-    qd_diag_error("--format takes text, json, latex or sympy, not '%s'", v);
-    return QD_EXIT_USAGE;
-}
+static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     routh_run *r = data;
     const char *v;
-    if ((v = qd_cli_value(argc, argv, i, "--format")))
-        return parse_format(v, &r->fmt);
-    if ((v = qd_cli_value(argc, argv, i, "--set")) && r->nsets < MAX_SETS) {
-        r->sets[r->nsets++] = v;
-        return QD_EXIT_OK;
+    int f;
+    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
+        int rc = qd_cli_choice("--format", v, formats, &f);
+        r->fmt = (routh_fmt)f;
+        return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--ignore")) && !r->ignore) {
-        r->ignore = v;
-        return QD_EXIT_OK;
-    }
-    qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
-    return QD_EXIT_USAGE;
+    if ((v = qd_cli_value(argc, argv, i, "--set")))
+        return qd_cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
+    if ((v = qd_cli_value(argc, argv, i, "--ignore")))
+        return qd_cli_once("--ignore", &r->ignore, v);
+    return qd_cli_bad_option(argv[*i], usage_text);
 }
 
 static int parse_args(int argc, char **argv, routh_run *r) {
@@ -72,22 +63,6 @@ static int parse_args(int argc, char **argv, routh_run *r) {
         rc = QD_EXIT_USAGE;
     }
     return rc;
-}
-
-static int apply_sets(routh_run *r) {
-    for (size_t i = 0; i < r->nsets; i++) {
-        const qd_expr *p, *v;
-        int rc = qd_state_set(r->ctx, r->mf.model, r->sets[i], &p, &v);
-        if (rc != QD_EXIT_OK)
-            return rc;
-        size_t k = 0;
-        while (k < r->nsubs && r->from[k] != p)
-            k++;
-        r->from[k] = p;
-        r->to[k] = v;
-        r->nsubs += k == r->nsubs;
-    }
-    return QD_EXIT_OK;
 }
 
 /* ---- --ignore ---------------------------------------------------------------- */
@@ -107,6 +82,11 @@ static int lookup(routh_run *r, const char *s, size_t len) {
         qd_diag_error("--ignore: %s", qd_ctx_message(r->ctx));
         return QD_EXIT_USAGE;
     }
+    for (size_t k = 0; k < r->nign; k++)
+        if (r->ign[k] == c) {
+            qd_diag_error("--ignore: %s is listed twice", name);
+            return QD_EXIT_USAGE;
+        }
     r->ign[r->nign++] = c;
     return QD_EXIT_OK;
 }
@@ -146,10 +126,7 @@ static int check_cyclic(routh_run *r) {
 /* ---- --set ------------------------------------------------------------------- */
 
 static const qd_expr *subs(routh_run *r, const qd_expr *x) {
-    if (!x || !r->nsubs)
-        return x;
-    const qd_expr *y = qd_subs(r->ctx, x, r->nsubs, r->from, r->to);
-    return y == x ? x : qd_simplify(r->ctx, y);
+    return qd_cli_subst(r->ctx, &r->subs, x);
 }
 
 static void subs_all(routh_run *r, size_t n, const qd_expr **x) {
@@ -319,19 +296,12 @@ static void write_sympy(const routh_run *r, qd_buf *b) {
     qd_buf_printf(b, "routh_conserved = %s\n", h->conserved ? "True" : "False");
 }
 
-static void json_expr(const routh_run *r, qd_json *j, const qd_expr *x) {
-    qd_buf s = QD_BUF_INIT;
-    qd_print(r->ctx, x, QD_FMT_TEXT, &s);
-    qd_json_string(j, qd_buf_str(&s));
-    qd_buf_free(&s);
-}
-
 static void json_list(const routh_run *r, qd_json *j, const char *key, size_t n,
                       const qd_expr *const *x) {
     qd_json_key(j, key);
     qd_json_begin_array(j);
     for (size_t k = 0; k < n; k++)
-        json_expr(r, j, x[k]);
+        qd_json_expr(j, r->ctx, x[k]);
     qd_json_end_array(j);
 }
 
@@ -350,7 +320,7 @@ static void json_matrix(const routh_run *r, qd_json *j, const char *key, const q
     for (size_t i = 0; i < nk; i++) {
         qd_json_begin_array(j);
         for (size_t k = 0; k < nk; k++)
-            json_expr(r, j, A[i * nk + k]);
+            qd_json_expr(j, r->ctx, A[i * nk + k]);
         qd_json_end_array(j);
     }
     qd_json_end_array(j);
@@ -367,7 +337,7 @@ static void json_equations(const routh_run *r, qd_json *j) {
         qd_json_string(j, qd_expr_name(h->keep[k]));
         json_list(r, j, "M", h->nkeep, h->M + k * h->nkeep);
         qd_json_key(j, "f");
-        json_expr(r, j, h->f[k]);
+        qd_json_expr(j, r->ctx, h->f[k]);
         qd_json_end_object(j);
     }
     qd_json_end_array(j);
@@ -379,7 +349,7 @@ static void json_quadratures(const routh_run *r, qd_json *j) {
     qd_json_begin_object(j);
     for (size_t i = 0; i < h->nign; i++) {
         qd_json_key(j, qd_expr_name(r->e->qd[h->ign_index[i]]));
-        json_expr(r, j, h->ignvel[i]);
+        qd_json_expr(j, r->ctx, h->ignvel[i]);
     }
     qd_json_end_object(j);
 }
@@ -399,7 +369,7 @@ static void write_json(const routh_run *r, qd_buf *b) {
     const qd_expr *vals[] = {h->R, h->R2, h->R1, h->R0, h->Veff, h->h};
     for (int i = 0; i < 6; i++) {
         qd_json_key(&j, names[i]);
-        json_expr(r, &j, vals[i]);
+        qd_json_expr(&j, r->ctx, vals[i]);
     }
     json_equations(r, &j);
     json_matrix(r, &j, "gyroscopic", h->G);
@@ -419,23 +389,14 @@ static int emit(routh_run *r) {
         write_sympy(r, &b);
     else
         write_lines(r, &b);
-    bool ok = !b.failed;
-    if (ok)
-        fputs(qd_buf_str(&b), stdout);
-    else
-        qd_diag_error("cannot print the Routhian");
-    qd_buf_free(&b);
-    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+    return qd_cli_emit(&b, "Routhian");
 }
 
 static int run(routh_run *r) {
-    int rc = qd_model_file_load(r->ctx, r->file, &r->mf);
-    if (rc == QD_EXIT_OK)
-        rc = apply_sets(r);
+    int rc = qd_cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
+                                &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_ignore(r);
-    if (rc == QD_EXIT_OK && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
-        rc = qd_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK)
         rc = check_cyclic(r);
     if (rc == QD_EXIT_OK && !(r->r = qd_routh_derive(r->ctx, r->mf.model, r->e, r->nign, r->ign)))

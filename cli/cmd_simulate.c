@@ -103,17 +103,17 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return rc - 100;
     const char *v;
     bool stop;
-    if ((v = qd_sim_cli_value(argc, argv, i, "--format"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
         if (strcmp(v, "csv") && strcmp(v, "json")) {
             qd_diag_error("--format takes csv or json, not '%s'", v);
             return QD_EXIT_USAGE;
         }
         a->json = !strcmp(v, "json");
-    } else if ((v = qd_sim_cli_value(argc, argv, i, "--output"))) {
+    } else if ((v = qd_cli_value(argc, argv, i, "--output"))) {
         a->output = v;
     } else if ((stop = !strncmp(argv[*i], "--stop-at", 9), 0) ||
-               (v = qd_sim_cli_value(argc, argv, i, "--event")) ||
-               (v = qd_sim_cli_value(argc, argv, i, "--stop-at"))) {
+               (v = qd_cli_value(argc, argv, i, "--event")) ||
+               (v = qd_cli_value(argc, argv, i, "--stop-at"))) {
         if (a->nevents == QD_SIM_MAX_LIST) {
             qd_diag_error("at most %d events", QD_SIM_MAX_LIST);
             return QD_EXIT_USAGE;

@@ -18,13 +18,13 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "eom_out.h"
 #include "json.h"
+#include "model_cli.h"
 #include "model_file.h"
 #include "qdot/stability.h"
 #include "state.h"
 
-#define MAX_SETS 64
+#define MAX_SETS QD_CLI_MAX_LIST
 #define MAX_LIST 16
 
 typedef struct stab_args {
@@ -43,6 +43,7 @@ typedef struct stab_run {
     size_t ncyc;
     const qd_expr *cyc[MAX_LIST];
     bool *xfix, wfix[MAX_LIST], pfix[MAX_LIST];
+    bool *xseen;                     /* named in the --guess or --at being read */
     qd_steady_point pt;
     double res;
     qd_stability an;
@@ -53,51 +54,32 @@ static const char usage_text[] =
     " | --driven \"Q' = VALUE\"...) [--at \"q=VALUE, ...\"] [--guess \"q=VALUE, ...\"] "
     "[--set NAME=VALUE]... [--format text|json]";
 
-static int once(const char **slot, const char *v, const char *name) {
-    if (*slot) {
-        qd_diag_error("%s is given twice; list every value in one", name);
-        return QD_EXIT_USAGE;
-    }
-    *slot = v;
-    return QD_EXIT_OK;
-}
+static const char *const formats[] = {"text", "json", NULL};
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     stab_args *a = data;
     const char *v;
+    int f;
     if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        if (strcmp(v, "text") && strcmp(v, "json")) {
-            qd_diag_error("--format takes text or json, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        a->json = !strcmp(v, "json");
-    } else if ((v = qd_cli_value(argc, argv, i, "--set"))) {
-        if (a->nsets == MAX_SETS) {
-            qd_diag_error("at most %d --set options", MAX_SETS);
-            return QD_EXIT_USAGE;
-        }
-        a->sets[a->nsets++] = v;
-    } else if ((v = qd_cli_value(argc, argv, i, "--driven"))) {
-        if (a->ndriven == MAX_LIST) {
-            qd_diag_error("at most %d --driven options", MAX_LIST);
-            return QD_EXIT_USAGE;
-        }
-        a->driven[a->ndriven++] = v;
-    } else if ((v = qd_cli_value(argc, argv, i, "--ignore"))) {
-        return once(&a->ignore, v, "--ignore");
-    } else if ((v = qd_cli_value(argc, argv, i, "--momentum"))) {
-        return once(&a->momentum, v, "--momentum");
-    } else if ((v = qd_cli_value(argc, argv, i, "--omega"))) {
-        return once(&a->omega, v, "--omega");
-    } else if ((v = qd_cli_value(argc, argv, i, "--at"))) {
-        return once(&a->at, v, "--at");
-    } else if ((v = qd_cli_value(argc, argv, i, "--guess"))) {
-        return once(&a->guess, v, "--guess");
-    } else {
-        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
+        int rc = qd_cli_choice("--format", v, formats, &f);
+        a->json = f == 1;
+        return rc;
     }
-    return QD_EXIT_OK;
+    if ((v = qd_cli_value(argc, argv, i, "--set")))
+        return qd_cli_push("--set", a->sets, &a->nsets, MAX_SETS, v);
+    if ((v = qd_cli_value(argc, argv, i, "--driven")))
+        return qd_cli_push("--driven", a->driven, &a->ndriven, MAX_LIST, v);
+    if ((v = qd_cli_value(argc, argv, i, "--ignore")))
+        return qd_cli_once("--ignore", &a->ignore, v);
+    if ((v = qd_cli_value(argc, argv, i, "--momentum")))
+        return qd_cli_once("--momentum", &a->momentum, v);
+    if ((v = qd_cli_value(argc, argv, i, "--omega")))
+        return qd_cli_once("--omega", &a->omega, v);
+    if ((v = qd_cli_value(argc, argv, i, "--at")))
+        return qd_cli_once("--at", &a->at, v);
+    if ((v = qd_cli_value(argc, argv, i, "--guess")))
+        return qd_cli_once("--guess", &a->guess, v);
+    return qd_cli_bad_option(argv[*i], usage_text);
 }
 
 static int parse_args(int argc, char **argv, stab_args *a) {
@@ -138,11 +120,14 @@ static int value_of(stab_run *r, const char *what, const char *a, const char *b,
     qd_read_error err;
     const qd_read_opts opts = {.new_symbols = false};
     const qd_expr *e = qd_read(r->ctx, text, &opts, &err);
+    /* the parameters only: st's coordinates, velocities and t are 0 there */
+    size_t skip = 2 * qd_model_ncoords(r->mf.model) + 1;
     int rc = QD_EXIT_OK;
     if (!e) {
         qd_diag_read(what, text, &err);
         rc = QD_EXIT_USAGE;
-    } else if (qd_eval(r->ctx, e, r->st.n, r->st.syms, r->st.vals, out) != QD_OK ||
+    } else if (qd_eval(r->ctx, e, r->st.n - skip, r->st.syms + skip, r->st.vals + skip, out) !=
+                   QD_OK ||
                !isfinite(*out)) {
         qd_ctx_clear_error(r->ctx);
         qd_diag_error("%s: '%s' is not a number (only parameters may appear in it)", what, text);
@@ -173,6 +158,11 @@ static int add_cyclic(stab_run *r, const char *what, const char *a, const char *
     int i = coord_index(r, a, b);
     if (i < 0)
         return unknown_coord(what, a, b);
+    for (size_t c = 0; c < r->ncyc; c++)
+        if (r->cyc[c] == qd_model_coord(r->mf.model, (size_t)i)) {
+            qd_diag_error("%s: %.*s is listed twice", what, (int)(b - a), a);
+            return QD_EXIT_USAGE;
+        }
     if (r->ncyc == MAX_LIST) {
         qd_diag_error("at most %d cyclic coordinates", MAX_LIST);
         return QD_EXIT_USAGE;
@@ -260,6 +250,10 @@ static int rate_item(stab_run *r, const char *what, const char *na, const char *
     }
     if (!va)
         return QD_EXIT_OK;
+    if (r->wfix[c]) {
+        qd_diag_error("%s: the rate %.*s' is given twice", what, (int)(q_end - na), na);
+        return QD_EXIT_USAGE;
+    }
     r->wfix[c] = true;
     return value_of(r, what, va, vb, &r->pt.w[c]);
 }
@@ -269,6 +263,10 @@ static int momentum_item(stab_run *r, const char *what, const char *na, const ch
     for (size_t c = 0; c < r->ncyc; c++) {
         const char *p = qd_expr_name(r->s->beta[c]);
         if (strlen(p) == (size_t)(nb - na) && !strncmp(p, na, (size_t)(nb - na))) {
+            if (r->pfix[c]) {
+                qd_diag_error("%s: %s is given twice", what, p);
+                return QD_EXIT_USAGE;
+            }
             r->pfix[c] = true;
             return value_of(r, what, va, vb, &r->pt.p[c]);
         }
@@ -297,24 +295,20 @@ static int at_item(stab_run *r, const char *what, const char *na, const char *nb
                    const char *va, const char *vb) {
     size_t j = 0;
     int rc = kept_slot(r, what, na, nb, &j);
-    if (rc == QD_EXIT_OK)
+    if (rc == QD_EXIT_OK && r->xseen[j]) {
+        qd_diag_error("%s: %.*s is given twice", what, (int)(nb - na), na);
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK) {
+        r->xseen[j] = true;
         rc = value_of(r, what, va, vb, &r->pt.x[j]);
+    }
     if (rc == QD_EXIT_OK)
         r->xfix[j] = !strcmp(what, "--at");
     return rc;
 }
 
 /* ---- the pipeline ---------------------------------------------------------- */
-
-static int apply_sets(stab_run *r, const stab_args *a) {
-    for (size_t i = 0; i < a->nsets; i++) {
-        const qd_expr *p, *v;
-        int rc = qd_state_set(r->ctx, r->mf.model, a->sets[i], &p, &v);
-        if (rc != QD_EXIT_OK)
-            return rc;
-    }
-    return QD_EXIT_OK;
-}
 
 /* The starting values: the model's `initial` values, else 0 for coordinates
  * and 1 for rates. */
@@ -357,10 +351,11 @@ static int prepare(stab_run *r, const stab_args *a) {
     }
     size_t nk = r->s->nkeep;
     r->xfix = calloc(nk + 1, sizeof *r->xfix);
+    r->xseen = calloc(nk + 1, sizeof *r->xseen);
     r->pt.x = calloc(nk + 1, sizeof *r->pt.x);
     r->pt.w = calloc(MAX_LIST, sizeof *r->pt.w);
     r->pt.p = calloc(MAX_LIST, sizeof *r->pt.p);
-    if (!r->xfix || !r->pt.x || !r->pt.w || !r->pt.p)
+    if (!r->xfix || !r->xseen || !r->pt.x || !r->pt.w || !r->pt.p)
         return QD_EXIT_FAIL;
     rc = initial_guesses(r);
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->ndriven; i++)
@@ -371,6 +366,7 @@ static int prepare(stab_run *r, const stab_args *a) {
         rc = each_item(r, "--momentum", a->momentum, false, momentum_item);
     if (rc == QD_EXIT_OK && a->guess)
         rc = each_item(r, "--guess", a->guess, false, at_item);
+    memset(r->xseen, 0, (nk + 1) * sizeof *r->xseen);
     if (rc == QD_EXIT_OK && a->at)
         rc = each_item(r, "--at", a->at, false, at_item);
     return rc;
@@ -389,7 +385,7 @@ static int solve(stab_run *r) {
 
 /* ---- output ------------------------------------------------------------------ */
 
-static void put_num(qd_buf *b, double x) { qd_state_put_double(b, fabs(x) < 1e-300 ? 0 : x); }
+static void put_num(qd_buf *b, double x) { qd_state_put_result(b, x); }
 
 static void put_matrix(qd_buf *b, const char *name, const double *A, size_t n) {
     qd_buf_printf(b, "  %s = [", name);
@@ -544,11 +540,8 @@ static void json_out(stab_run *r, qd_buf *b) {
     qd_json_end_object(&j);
     qd_json_key(&j, "residual");
     qd_json_number(&j, r->res);
-    qd_buf vb = QD_BUF_INIT;
-    qd_print(r->ctx, s->Veff, QD_FMT_TEXT, &vb);
     qd_json_key(&j, "Veff");
-    qd_json_string(&j, qd_buf_str(&vb));
-    qd_buf_free(&vb);
+    qd_json_expr(&j, r->ctx, s->Veff);
     json_matrix(&j, "M", an->lin.M, an->n);
     json_matrix(&j, "C", an->lin.C, an->n);
     json_matrix(&j, "G", an->lin.G, an->n);
@@ -588,15 +581,7 @@ static int emit(stab_run *r, bool json) {
         json_out(r, &b);
     else
         text_out(r, &b);
-    int rc = QD_EXIT_OK;
-    if (b.failed) {
-        qd_diag_error("cannot print the result (a number that is not finite?)");
-        rc = QD_EXIT_FAIL;
-    } else {
-        fputs(qd_buf_str(&b), stdout);
-    }
-    qd_buf_free(&b);
-    return rc;
+    return qd_cli_emit(&b, "result (a number that is not finite?)");
 }
 
 int qd_cmd_stability(int argc, char **argv) {
@@ -609,13 +594,7 @@ int qd_cmd_stability(int argc, char **argv) {
         qd_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = qd_model_file_load(r.ctx, a.file, &r.mf);
-    if (rc == QD_EXIT_OK)
-        rc = apply_sets(&r, &a);
-    if (rc == QD_EXIT_OK) {
-        r.e = qd_eom_derive(r.ctx, r.mf.model);
-        rc = r.e ? QD_EXIT_OK : qd_eom_derive_error(r.ctx, &r.mf);
-    }
+    rc = qd_cli_load_derive(r.ctx, a.file, a.nsets, a.sets, NULL, NULL, &r.mf, &r.e);
     if (rc == QD_EXIT_OK)
         rc = qd_state_init(r.ctx, r.mf.model, &r.st);
     if (rc == QD_EXIT_OK)
@@ -626,6 +605,7 @@ int qd_cmd_stability(int argc, char **argv) {
         rc = emit(&r, a.json);
     qd_stability_free(&r.an);
     free(r.xfix);
+    free(r.xseen);
     free(r.pt.x);
     free(r.pt.w);
     free(r.pt.p);

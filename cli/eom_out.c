@@ -709,6 +709,13 @@ int qd_eom_derive_error(const qd_ctx *ctx, const qd_model_file *mf) {
         qd_model_file_error(mf, what, msg, constraint_hint(msg));
         return QD_EXIT_USAGE;
     }
+    if (qd_model_hamiltonian_given(m) && qd_ctx_status(ctx) == QD_ERR_NONLINEAR) {
+        qd_model_file_error(mf, "H", msg,
+                            "the equations of motion need the Lagrangian, which needs H quadratic "
+                            "in the momenta; Hamilton's equations are still given by "
+                            "`qdot hamiltonian`");
+        return QD_EXIT_USAGE;
+    }
     if (qd_ctx_status(ctx) != QD_ERR_SINGULAR)
         return qd_diag_ctx(ctx);
     if (qd_model_hamiltonian_given(m)) {

@@ -130,6 +130,19 @@ void qd_json_null(qd_json *j) {
     qd_buf_puts(j->out, "null");
 }
 
+void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x) {
+    if (!x) {
+        qd_json_null(j);
+        return;
+    }
+    qd_buf s = QD_BUF_INIT;
+    qd_print(ctx, x, QD_FMT_TEXT, &s);
+    if (s.failed)
+        j->failed = true;
+    qd_json_string(j, qd_buf_str(&s));
+    qd_buf_free(&s);
+}
+
 bool qd_json_ok(const qd_json *j) {
     return !j->failed && !j->out->failed && j->depth == 0 && !j->after_key;
 }

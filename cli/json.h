@@ -36,6 +36,8 @@ void qd_json_string(qd_json *j, const char *s);
 bool qd_json_number(qd_json *j, double v); /* false for NaN and infinities */
 void qd_json_bool(qd_json *j, bool v);
 void qd_json_null(qd_json *j);
+/* An expression as a string in the text format; null for NULL. */
+void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x);
 /* The document is complete, nothing was refused and no memory ran out. */
 bool qd_json_ok(const qd_json *j);
 

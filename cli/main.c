@@ -60,8 +60,16 @@ int main(int argc, char **argv) {
         return QD_EXIT_OK;
     }
     for (size_t i = 0; i < NCOMMANDS; i++)
-        if (!strcmp(argv[1], commands[i].name))
+        if (!strcmp(argv[1], commands[i].name)) {
+            /* `qdot CMD --help`: the command's line of the table, and where to read more */
+            for (int a = 2; a < argc; a++)
+                if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) {
+                    printf("usage: qdot %s %s\n%s\nSee docs/cli.md.\n", commands[i].name,
+                           commands[i].args, commands[i].summary);
+                    return QD_EXIT_OK;
+                }
             return commands[i].run(argc - 2, argv + 2);
+        }
     qd_diag_error("unknown command '%s' (try 'qdot --help')", argv[1]);
     return QD_EXIT_USAGE;
 }

@@ -19,17 +19,6 @@
 #include "eom_out.h"
 #include "qdot/codegen.h"
 
-const char *qd_sim_cli_value(int argc, char **argv, int *i, const char *opt) {
-    size_t len = strlen(opt);
-    if (strncmp(argv[*i], opt, len))
-        return NULL;
-    if (argv[*i][len] == '=')
-        return argv[*i] + len + 1;
-    if (argv[*i][len] || *i + 1 >= argc)
-        return NULL;
-    return argv[++*i];
-}
-
 static int number(const char *opt, const char *v, double *out, bool positive) {
     char *end;
     double x = strtod(v, &end);
@@ -61,27 +50,27 @@ int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a) {
         a->no_project = true;
         return 1;
     }
-    if ((v = qd_sim_cli_value(argc, argv, i, "--t-end"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--t-end"))) {
         a->has_t_end = true;
         return number("--t-end", v, &a->t_end, false);
     }
-    if ((v = qd_sim_cli_value(argc, argv, i, "--dt"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--dt"))) {
         a->has_dt = true;
         return number("--dt", v, &a->dt, true);
     }
-    if ((v = qd_sim_cli_value(argc, argv, i, "--rtol"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--rtol"))) {
         a->has_rtol = true;
         return number("--rtol", v, &a->rtol, true);
     }
-    if ((v = qd_sim_cli_value(argc, argv, i, "--atol")))
+    if ((v = qd_cli_value(argc, argv, i, "--atol")))
         return number("--atol", v, &a->atol, true);
-    if ((v = qd_sim_cli_value(argc, argv, i, "--max-steps"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--max-steps"))) {
         double x = 0;
         int rc = number("--max-steps", v, &x, true);
         a->max_steps = rc == 1 ? (size_t)x : 0;
         return rc;
     }
-    if ((v = qd_sim_cli_value(argc, argv, i, "--method"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--method"))) {
         qd_sim_method m;
         if (!qd_sim_method_from_name(v, &m)) {
             qd_diag_error("--method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
@@ -91,7 +80,7 @@ int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a) {
         a->method_name = v;
         return 1;
     }
-    if ((v = qd_sim_cli_value(argc, argv, i, "--initial"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--initial"))) {
         if (a->initial) {
             qd_diag_error("--initial is given twice; name every value in one list");
             return QD_EXIT_USAGE + 100;
@@ -99,9 +88,9 @@ int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a) {
         a->initial = v;
         return 1;
     }
-    if ((v = qd_sim_cli_value(argc, argv, i, "--set")))
+    if ((v = qd_cli_value(argc, argv, i, "--set")))
         return push(a->sets, &a->nsets, v, "--set");
-    if ((v = qd_sim_cli_value(argc, argv, i, "--out"))) {
+    if ((v = qd_cli_value(argc, argv, i, "--out"))) {
         a->out = v;
         return 1;
     }

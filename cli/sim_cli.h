@@ -39,8 +39,6 @@ typedef struct qd_sim_cli {
 /* One option shared by both commands at argv[*i]: 1 when it was one (and
  * taken), 0 when it is not, or an exit status (QD_EXIT_USAGE) + 100. */
 int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a);
-/* The value of "--opt VALUE" or "--opt=VALUE", or NULL. */
-const char *qd_sim_cli_value(int argc, char **argv, int *i, const char *opt);
 
 /* x as the shortest of 15, 16, 17 significant digits (%g style) that reads
  * back to x, into out (QD_SIM_NUMBER_MAX bytes); returns the length.  A row

@@ -32,6 +32,16 @@ void qd_state_put_double(qd_buf *b, double x) {
     qd_buf_puts(b, s);
 }
 
+void qd_state_put_result(qd_buf *b, double x) {
+    char s[40];
+    if (fabs(x) < 1e-13) {
+        qd_buf_puts(b, "0");
+        return;
+    }
+    snprintf(s, sizeof s, "%.12g", x);
+    qd_buf_puts(b, s);
+}
+
 int qd_state_init(qd_ctx *ctx, const qd_model *m, qd_state *st) {
     size_t nq = qd_model_ncoords(m), np = qd_model_nparams(m), n = 2 * nq + 1 + np;
     st->n = n;
@@ -83,9 +93,13 @@ static int read_value(qd_ctx *ctx, const char *label, const char *what, const ch
         err.offset += start;
         qd_diag_read(label, text, &err);
         rc = QD_EXIT_USAGE;
-    } else if (qd_is_number(e)) {
+    } else if (qd_is_number(e) && isfinite(qd_state_value(e))) {
         *val = qd_state_value(e);
         *exact = e;
+    } else if (qd_is_number(e)) {
+        /* exact, but beyond a double (1e400): no command can compute with it */
+        qd_diag_error("%s: '%s' is too large to compute with", what, copy);
+        rc = QD_EXIT_USAGE;
     } else if (qd_eval(ctx, e, 0, &e, val, val) != QD_OK || !isfinite(*val)) {
         qd_ctx_clear_error(ctx);
         qd_diag_error("%s: '%s' does not evaluate to a finite number", what, copy);
@@ -143,7 +157,7 @@ static void list_coords(const qd_model *m, char *out, size_t cap) {
 }
 
 /* The slot of NAME (a coordinate, a velocity NAME', t or a parameter) in st. */
-static int find_slot(qd_ctx *ctx, const qd_model *m, const qd_state *st, const char *name,
+static int find_slot(const char *opt, const qd_model *m, const qd_state *st, const char *name,
                      size_t *slot) {
     size_t len = strlen(name), primes = 0;
     while (len && name[len - 1] == '\'') {
@@ -156,8 +170,8 @@ static int find_slot(qd_ctx *ctx, const qd_model *m, const qd_state *st, const c
         if (strlen(q) != len || strncmp(q, name, len))
             continue;
         if (primes > 1) {
-            qd_diag_error("--at: '%s' is an acceleration: qdot computes it; give %.*s and %.*s'",
-                          name, (int)len, name, (int)len, name);
+            qd_diag_error("%s: '%s' is an acceleration: qdot computes it; give %.*s and %.*s'",
+                          opt, name, (int)len, name, (int)len, name);
             return QD_EXIT_USAGE;
         }
         *slot = primes ? nq + i : i;
@@ -170,9 +184,8 @@ static int find_slot(qd_ctx *ctx, const qd_model *m, const qd_state *st, const c
         }
     char known[512];
     list_coords(m, known, sizeof known);
-    (void)ctx;
-    qd_diag_error("--at: unknown name '%s' (the coordinates are %s; velocities are written "
-                  "with a prime, and t is the time)", name, known);
+    qd_diag_error("%s: unknown name '%s' (the coordinates are %s; velocities are written "
+                  "with a prime, and t is the time)", opt, name, known);
     return QD_EXIT_USAGE;
 }
 
@@ -191,8 +204,8 @@ static size_t item_end(const char *text, size_t i) {
 }
 
 /* One NAME=VALUE in text[a, b). */
-static int parse_item(qd_ctx *ctx, const qd_model *m, const char *text, size_t a, size_t b,
-                      qd_state *st, bool *given) {
+static int parse_item(qd_ctx *ctx, const char *opt, const qd_model *m, const char *text,
+                      size_t a, size_t b, qd_state *st, bool *given) {
     const char *eq = memchr(text + a, '=', b - a);
     size_t na = a, nb = eq ? (size_t)(eq - text) : b;
     while (na < nb && isspace((unsigned char)text[na]))
@@ -200,28 +213,33 @@ static int parse_item(qd_ctx *ctx, const qd_model *m, const char *text, size_t a
     while (nb > na && isspace((unsigned char)text[nb - 1]))
         nb--;
     if (!eq || na == nb || nb - na >= 128) {
-        qd_diag_error("--at: expected NAME=VALUE, not '%.*s'", (int)(b - a), text + a);
+        qd_diag_error("%s: expected NAME=VALUE, not '%.*s'", opt, (int)(b - a), text + a);
         return QD_EXIT_USAGE;
     }
     char name[128], what[160];
     memcpy(name, text + na, nb - na);
     name[nb - na] = '\0';
     size_t slot;
-    int rc = find_slot(ctx, m, st, name, &slot);
+    int rc = find_slot(opt, m, st, name, &slot);
     if (rc != QD_EXIT_OK)
         return rc;
     if (given[slot]) {
-        qd_diag_error("--at: '%s' is given twice", name);
+        qd_diag_error("%s: '%s' is given twice", opt, name);
         return QD_EXIT_USAGE;
     }
     given[slot] = true;
-    snprintf(what, sizeof what, "--at %s", name);
+    snprintf(what, sizeof what, "%s %s", opt, name);
     size_t v = (size_t)(eq + 1 - text);
     const qd_expr *exact;
-    return read_value(ctx, "--at", what, text, v, b - v, &exact, &st->vals[slot]);
+    return read_value(ctx, opt, what, text, v, b - v, &exact, &st->vals[slot]);
 }
 
 int qd_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, qd_state *st) {
+    return qd_state_parse_as(ctx, m, "--at", text, st);
+}
+
+int qd_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const char *text,
+                      qd_state *st) {
     bool *given = calloc(st->n ? st->n : 1, sizeof *given);
     if (!given)
         return QD_EXIT_FAIL;
@@ -232,7 +250,7 @@ int qd_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, qd_state *s
         while (k < end && isspace((unsigned char)text[k]))
             k++;
         if (k < end)  /* empty items ("a=1,") are allowed */
-            rc = parse_item(ctx, m, text, i, end, st, given);
+            rc = parse_item(ctx, what, m, text, i, end, st, given);
         i = text[end] ? end + 1 : end;
     }
     free(given);

@@ -26,12 +26,20 @@ double qd_state_value(const qd_expr *number);
 
 /* x in its shortest %g form that reads back to the same double. */
 void qd_state_put_double(qd_buf *b, double x);
+/* A computed result for a reader (text output of equilibria, modes,
+ * stability): 12 significant digits, and 0 below 1e-13, so that a root
+ * found by iteration reads 0.49, not 0.48999999999999927.  JSON keeps every
+ * digit (qd_state_put_double). */
+void qd_state_put_result(qd_buf *b, double x);
 
 /* Every coordinate, velocity and t at 0, every parameter at its value. */
 int qd_state_init(qd_ctx *ctx, const qd_model *m, qd_state *st);
 void qd_state_free(qd_state *st);
 /* Apply an --at list; an unknown name is an error naming the coordinates. */
 int qd_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, qd_state *st);
+/* The same for another option (what: "--near"), named so in the errors. */
+int qd_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const char *text,
+                      qd_state *st);
 
 /* Read a number.  what names the value in messages ("--set m1").  *exact is
  * the expression when it is an exact or float number, else a float of *val. */

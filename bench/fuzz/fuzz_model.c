@@ -28,7 +28,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     qd_model *m = qd_model_parse(ctx, text, &d);
     qd_buf b = QD_BUF_INIT;
     if (m) {
-        qd_print(ctx, qd_model_lagrangian(m), QD_FMT_TEXT, &b);
+        /* a model given by H has no L; its symmetries and integrals are printed too */
+        const qd_expr *L = qd_model_lagrangian(m);
+        qd_print(ctx, L ? L : qd_model_hamiltonian(m), QD_FMT_TEXT, &b);
+        for (size_t i = 0; i < qd_model_nsymmetries(m); i++)
+            for (size_t j = 0; j < qd_model_ncoords(m); j++)
+                qd_print(ctx, qd_model_symmetry_field(m, i, j), QD_FMT_TEXT, &b);
+        for (size_t i = 0; i < qd_model_nintegrals(m); i++)
+            qd_print(ctx, qd_model_integral(m, i), QD_FMT_TEXT, &b);
         qd_model_free(m);
     } else {
         qd_diag_format(&d, "fuzz.qd", text, &b);

@@ -455,7 +455,8 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                     s += J[k * n + i] * J[k * n + j];
                 JtJ[i * n + j] = s;
             }
-        if (qd__sym_eig(n, JtJ, w, v) && w[n - 1] > 0 && w[0] <= 1e-14 * w[n - 1]) {
+        /* J = 0 (no force anywhere near: a free particle) is singular too */
+        if (qd__sym_eig(n, JtJ, w, v) && w[0] <= 1e-14 * w[n - 1]) {
             double h = 1e-3 * (1 + fabs(q[0]));
             for (size_t i = 0; i < n; i++)
                 t[i] = q[i] + h * v[i];

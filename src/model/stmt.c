@@ -18,6 +18,7 @@
  */
 #include "parser.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -135,7 +136,17 @@ static bool parse_constant(parser *p, const qd_expr **out, const char *what) {
     if (*out && qd_free_symbols(C(p), *out, &sym, 1) > 0)
         return perr(p, off, p->lx.tok.off - off, "a value is a number, e.g. 9.81 or pi/4",
                     "%s must be a number, but it depends on '%s'", what, qd_expr_name(sym));
-    return *out != NULL || perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
+    if (!*out)
+        return perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
+    /* every command computes with it: 1e400 or sqrt(-1) would be inf or NaN there */
+    double x;
+    if (qd_eval(C(p), *out, 0, NULL, NULL, &x) != QD_OK || !isfinite(x)) {
+        qd_ctx_clear_error(C(p));
+        return perr(p, off, p->lx.tok.off > off ? p->lx.tok.off - off : 1,
+                    "give a real number within the range of a double",
+                    "%s must be a finite real number", what);
+    }
+    return true;
 }
 
 /* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */

@@ -30,7 +30,7 @@ double qd__func_value(qd_func f, double a, double b) {
 
 /* Integer powers by multiplication: faster and exact where pow() may not be. */
 double qd__pow_value(double b, double e) {
-    if (e == (double)(long)e && fabs(e) <= 64) {
+    if (fabs(e) <= 64 && e == (double)(long)e) { /* the range first: (long)e is undefined beyond it */
         long n = (long)e;
         unsigned long k = (unsigned long)(n < 0 ? -n : n);
         double r = 1, x = b;
