@@ -188,9 +188,10 @@ const qd_expr *qd_collect(qd_ctx *ctx, const qd_expr *e, const qd_expr *x);
 
 /* The simplifier: expansion, trigonometric identities (sin^2 + cos^2 = 1,
  * products of sines and cosines to sines and cosines of sums and differences
- * where that is shorter), common factors pulled out of sums, and common
- * polynomial factors cancelled in quotients.  Keeps the value everywhere the
- * input is defined. */
+ * where that is shorter), common factors pulled out of sums, common
+ * polynomial factors cancelled in quotients, and sums (or the groups of their
+ * terms over one denominator) factored over the integers where that is
+ * shorter.  Keeps the value everywhere the input is defined. */
 const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e);
 const qd_expr *qd_trigsimp(qd_ctx *ctx, const qd_expr *e);
 /* Put a rational expression over a common denominator and cancel the

@@ -9,8 +9,14 @@
  * fewest operations by qd_count_ops, the input itself among them, so the
  * simplifier never makes an expression longer.  On ties the later, more
  * processed candidate wins.
+ *
+ * Then polynomial factorization (factor_poly.c) of the sums in the expanded
+ * form, in the cancelled quotient and in the best candidate so far: a
+ * factored candidate must be strictly shorter, since factoring is not
+ * "more processed" in any sense a reader prefers on a tie ((a - b)*(a + b)
+ * against a^2 - b^2).
  */
-#include "node.h"
+#include "factor_poly.h"
 
 /* A negative numeric power anywhere: a quotient cancel may shorten. */
 static bool has_quotient(const qd_expr *e, qd_ptrmap *seen) {
@@ -31,16 +37,22 @@ typedef struct best {
     bool failed;
 } best;
 
-static void consider(best *b, const qd_expr *cand) {
+static void consider_if(best *b, const qd_expr *cand, bool strict) {
     if (!cand) {
         b->failed = true;
         return;
     }
+    if (cand == b->e)
+        return;
     size_t n = qd_count_ops(cand);
-    if (n <= b->ops) {
+    if (n < b->ops || (!strict && n == b->ops)) {
         b->e = cand;
         b->ops = n;
     }
+}
+
+static void consider(best *b, const qd_expr *cand) {
+    consider_if(b, cand, false);
 }
 
 const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
@@ -58,11 +70,22 @@ const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
     qd_ptrmap seen = QD_PTRMAP_INIT;
     bool quotient = x && has_quotient(x, &seen);
     qd_ptrmap_free(&seen);
+    const qd_expr *c = NULL;
     if (quotient) {
-        const qd_expr *c = qd_cancel(ctx, x);
+        c = qd_cancel(ctx, x);
         consider(&b, c);
         consider(&b, qd_factor_terms(ctx, qd_trigsimp(ctx, c)));
     }
     consider(&b, qd_factor_terms(ctx, x));
+    if (b.failed)
+        return NULL;
+
+    qd_ptrmap memo = QD_PTRMAP_INIT;
+    if (c) {
+        consider_if(&b, qd__factor_polys(ctx, x, &memo), true);
+        consider_if(&b, qd__factor_polys(ctx, c, &memo), true);
+    }
+    consider_if(&b, qd__factor_polys(ctx, b.e, &memo), true);
+    qd_ptrmap_free(&memo);
     return b.failed ? NULL : b.e;
 }

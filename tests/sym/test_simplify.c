@@ -1,6 +1,7 @@
 /*
  * tests/sym/test_simplify.c - the simplifier: the planar n-link pendulum's
- * mass matrix, factor_terms, and a property test over random expressions.
+ * mass matrix, factor_terms, and property tests over random expressions (with
+ * planted factorizable sums among them).
  *
  * Pendulum: point masses m_i on massless rods l_i, angles q_i from the
  * downward vertical; x_i = sum_{k<=i} l_k sin q_k, y_i = -sum_{k<=i} l_k cos q_k,
@@ -279,6 +280,39 @@ static void keeps_value(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* Planted factorizations: (u - v)^2 and u^2 - v^2 expanded, over a shared
+ * denominator w, plus a random rest; the simplifier's polynomial factoring
+ * must keep the value and never lengthen. */
+static void keeps_value_factorable(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qt_rng r = {9001};
+    const qd_expr *syms[3] = {qd_symbol(ctx, "x"), qd_symbol(ctx, "y"), qd_symbol(ctx, "z")};
+    for (int n = 0; n < 300; n++) {
+        const qd_expr *u = qt_random_expr(ctx, &r, syms, 3, 2, QT_POLY | QT_TRIG);
+        const qd_expr *v = qt_random_expr(ctx, &r, syms, 3, 2, QT_POLY | QT_TRIG);
+        const qd_expr *w = qd_add(ctx, qd_int(ctx, 1), qd_powi(ctx, syms[n % 3], 2));
+        const qd_expr *sq = n % 2 ? qd_powi(ctx, qd_sub(ctx, u, v), 2)
+                                  : qd_mul(ctx, qd_sub(ctx, u, v), qd_add(ctx, u, v));
+        const qd_expr *rest = qt_random_expr(ctx, &r, syms, 3, 3, QT_ALL & ~QT_FLOAT);
+        const qd_expr *e = qd_add(ctx, qd_expand(ctx, qd_div(ctx, sq, w)), rest);
+        const qd_expr *s = qd_simplify(ctx, e);
+        assert_non_null(s);
+        assert_true(qd_count_ops(s) <= qd_count_ops(e));
+        for (int k = 0; k < 3; k++) {
+            double val[3], ve, vs;
+            for (int i = 0; i < 3; i++)
+                val[i] = qt_uniform(&r, -1, 1);
+            if (qd_eval(ctx, e, 3, syms, val, &ve) != QD_OK || !isfinite(ve))
+                continue;
+            assert_int_equal(qd_eval(ctx, s, 3, syms, val, &vs), QD_OK);
+            if (fabs(ve - vs) > 1e-8 * (1 + fabs(ve)))
+                fail_msg("case %d: %.17g != %.17g", n, ve, vs);
+        }
+    }
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(factor_terms),
@@ -286,6 +320,7 @@ int main(void) {
         cmocka_unit_test(spherical_pendulum),
         cmocka_unit_test(rotation_product),
         cmocka_unit_test(keeps_value),
+        cmocka_unit_test(keeps_value_factorable),
         cmocka_unit_test(pendulum_timing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
