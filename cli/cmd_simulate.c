@@ -215,7 +215,7 @@ static int run(qd_sim_cli *c, const qd_sim_args *a) {
                 st.rejected, wall, st.energy_error_max, st.constraint_error_max,
                 qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
         if (st.events)
-            fprintf(stderr, "qdot: simulate: %zu events\n", st.events);
+            fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
         if (a->json) {
             summary_json(&j, c, &st, wall, names, ncols, final);
             qd_json_end_object(&j);

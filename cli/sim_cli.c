@@ -227,6 +227,15 @@ static void trim(const char **a, const char **b) {
         (*b)--;
 }
 
+/* A constraint's multiplier: outputs and events may use it ("when does the
+ * particle leave the sphere": lambda_sphere = 0). */
+static bool is_multiplier(const qd_sim_cli *c, const qd_expr *x) {
+    for (size_t k = 0; c->e && k < c->e->ncon; k++)
+        if (c->e->con[k].lambda == x)
+            return true;
+    return false;
+}
+
 /* Read text[a, b) against the model: definitions substituted. */
 static const qd_expr *read_expr(qd_sim_cli *c, const char *what, const char *a, const char *b) {
     trim(&a, &b);
@@ -258,12 +267,13 @@ static const qd_expr *read_expr(qd_sim_cli *c, const char *what, const char *a, 
     const qd_expr **syms = malloc((k + 1) * sizeof *syms);
     qd_free_symbols(c->ctx, x, syms, k);
     for (size_t i = 0; x && i < k; i++) {
-        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN)
+        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]))
             continue;
         const qd_expr *d = qd_model_definition(c->mf.model, qd_expr_name(syms[i]));
         if (!d) {
             qd_diag_error("%s: unknown name '%s' in '%s' (use coordinates, velocities q', t, "
-                          "parameters and the model's definitions)",
+                          "parameters, the model's definitions and the multipliers "
+                          "lambda_<constraint>)",
                           what, qd_expr_name(syms[i]), text);
             x = NULL;
             break;

@@ -16,7 +16,9 @@ typedef struct qd__event {
     size_t nguard;
 } qd__event;
 
-/* Inputs of every program: q (n), q' (n), t, parameters (np). */
+/* Inputs of every program: q (n), q' (n), t, parameters (np), and the
+ * constraints' multipliers (m), which only outputs and events read: they are
+ * solved for at the state when one of those uses them (aux_lambda). */
 struct qd_sim {
     qd_ctx *ctx;
     const qd_model *model;
@@ -45,7 +47,7 @@ struct qd_sim {
     char **out_name;
     const qd_expr **out_expr, **ev_expr, **guard_expr;
     qd__event *ev;
-    bool aux_ready;
+    bool aux_ready, aux_lambda;
     /* column names of the fixed part: t, q, q', p_q, energy, res_c */
     char **names;
     /* scratch for the linear solves */

@@ -75,7 +75,7 @@ static qd_status setup_inputs(qd_sim *s) {
     const qd_eom *e = s->e;
     size_t n = s->n;
     s->np = qd_model_nparams(s->model);
-    s->nin = 2 * n + 1 + s->np;
+    s->nin = 2 * n + 1 + s->np + s->m;
     s->in_syms = malloc(s->nin * sizeof *s->in_syms);
     s->in = calloc(s->nin, sizeof *s->in);
     if (!s->in_syms || !s->in)
@@ -94,6 +94,8 @@ static qd_status setup_inputs(qd_sim *s) {
             return QD_ERR_ARG;
         }
     }
+    for (size_t k = 0; k < s->m; k++)
+        s->in_syms[2 * n + 1 + s->np + k] = e->con[k].lambda;
     return QD_OK;
 }
 
@@ -391,6 +393,10 @@ qd_status qd__aux_compile(qd_sim *s) {
     for (size_t i = 0; i < s->nguard; i++)
         outs[k++] = s->guard_expr[i];
     s->aux = compile(s, k, outs, &s->aux_out);
+    s->aux_lambda = false;
+    for (size_t i = 2 + s->m; i < k; i++)
+        for (size_t c = 0; c < s->m; c++)
+            s->aux_lambda = s->aux_lambda || qd_has(outs[i], s->e->con[c].lambda);
     /* outputs and events are needed at rows and event checks only; the
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
@@ -428,8 +434,18 @@ static void set_state(qd_sim *s, double t, const double *q, const double *qd) {
     s->in[2 * n] = t;
 }
 
+static bool saddle_solve(qd_sim *s, double t, const double *y);
+
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
+    if (s->aux_lambda) {
+        /* the multipliers at this state: the saddle-point solve of the
+         * right-hand side; NaN where it is singular */
+        double *lambda = s->in + 2 * s->n + 1 + s->np;
+        bool ok = saddle_solve(s, t, NULL);
+        for (size_t k = 0; k < s->m; k++)
+            lambda[k] = ok ? s->rhs[s->n + k] : NAN;
+    }
     qd_prog_run(s->aux, s->in, s->aux_out);
 }
 
@@ -521,17 +537,14 @@ static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *
 
 void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs) { s->native = rhs; }
 
-static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
+/* [M -A^T; A 0] [q''; lambda] = [f; b] at the state in s->in (y, when not
+ * NULL, is set first), solved into s->rhs; false when singular. */
+static bool saddle_solve(qd_sim *s, double t, const double *y) {
     size_t n = s->n, m = s->m, N = n + m;
-    if (s->native)
-        return s->native(t, y, s->in + 2 * n + 1, dy) ? singular(s, t) : QD_OK;
-    set_state(s, t, y, y + n);
+    if (y)
+        set_state(s, t, y, y + n);
     qd_prog_run(s->acc, s->in, s->acc_out);
-    for (size_t i = 0; i < n; i++)
-        dy[i] = y[n + i];
     const double *M = s->acc_out, *f = M + n * n;
-    if (!m)
-        return solve_mass(s, t, M, f, dy + n);
     const double *A = f + n, *b = A + m * n;
     double *K = s->K, *r = s->rhs;
     memset(K, 0, N * N * sizeof *K);
@@ -547,10 +560,25 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         }
         r[n + k] = b[k];
     }
-    if (!dense_solve(N, K, r, 1e-13 * (double)N))
-        return singular(s, t);
-    memcpy(dy + n, r, n * sizeof *dy);
-    return QD_OK;
+    return dense_solve(N, K, r, 1e-13 * (double)N);
+}
+
+static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
+    size_t n = s->n;
+    if (s->native)
+        return s->native(t, y, s->in + 2 * n + 1, dy) ? singular(s, t) : QD_OK;
+    for (size_t i = 0; i < n; i++)
+        dy[i] = y[n + i];
+    if (s->m) {
+        if (!saddle_solve(s, t, y))
+            return singular(s, t);
+        memcpy(dy + n, s->rhs, n * sizeof *dy);
+        return QD_OK;
+    }
+    set_state(s, t, y, y + n);
+    qd_prog_run(s->acc, s->in, s->acc_out);
+    const double *M = s->acc_out, *f = M + n * n;
+    return solve_mass(s, t, M, f, dy + n);
 }
 
 qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, double *qd) {

@@ -126,6 +126,22 @@ def main():
     if rc == 0:
         check(json.loads(out)['constraint_error_max'] < 1e-12, 'constraint residual')
 
+    # an event on a constraint force: the particle leaves the sphere where the
+    # multiplier (the normal force / 2a) vanishes.  From rest at height z0 on a
+    # smooth sphere, v^2 = 2 g (z0 - z) and N = m (g z - v^2)/a = 0 at z = 2 z0/3
+    # (Goldstein sec. 1.3; Desloge ch. 51 P6: cos theta = 2/3 from the top).
+    rc, out, err = run(qdot, 'simulate', EX / 'particle_leaving_sphere.qd', '--t-end', 10,
+                       '--rtol', '1e-12', '--stop-at', 'lambda_sphere = 0',
+                       '--output', 'lambda_sphere')
+    check(rc == 0, f'leaving the sphere: {rc} {err}')
+    if rc == 0:
+        head, data = rows(out)
+        z, lam = head.index('z'), head.index('lambda_sphere')
+        z0, zl = data[0][z], data[-1][z]
+        check(data[-1][-1] == 1 and abs(data[-1][lam]) < 1e-9, 'stopped at lambda = 0')
+        check(abs(zl - 2 * z0 / 3) < 1e-9, f'leaves at z = 2 z0/3: {zl} vs {2 * z0 / 3}')
+        check(data[0][lam] > 0, 'the sphere pushes outward before (lambda > 0)')
+
     # poincare: n crossings of theta1 = 0 upward
     rc, out, err = run(qdot, 'poincare', dp, '--section', "theta1 = 0, theta1' > 0", '--n', 4,
                        '--initial', 'theta1=1, theta2=0.5')
