@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "legendre.h"
 #include "mech.h"
 #include "model/parser.h"
 
@@ -133,48 +134,6 @@ const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
 
 /* ---- the ignored velocities ------------------------------------------------- */
 
-/* Forward elimination on the augmented n x (n+1) matrix A, pivots that
- * simplify to nonzero (as in hamilton.c). */
-static qd_status eliminate(qd_ctx *ctx, size_t n, const qd_expr **A) {
-    size_t w = n + 1;
-    for (size_t k = 0; k < n; k++) {
-        size_t piv = k;
-        while (piv < n && qd_is_zero(A[piv * w + k] = qd_simplify(ctx, A[piv * w + k])))
-            piv++;
-        if (piv == n) {
-            qd_ctx_error(ctx, QD_ERR_SINGULAR, "the momenta of the ignored coordinates do not "
-                                               "determine their velocities");
-            return QD_ERR_SINGULAR;
-        }
-        for (size_t c = 0; piv != k && c < w; c++) {
-            const qd_expr *t = A[k * w + c];
-            A[k * w + c] = A[piv * w + c];
-            A[piv * w + c] = t;
-        }
-        for (size_t r = k + 1; r < n; r++) {
-            const qd_expr *f = qd_div(ctx, A[r * w + k], A[k * w + k]);
-            for (size_t c = k; c < w; c++)
-                A[r * w + c] = qd_sub(ctx, A[r * w + c], qd_mul(ctx, f, A[k * w + c]));
-        }
-        if (qd_ctx_status(ctx) != QD_OK)
-            return qd_ctx_status(ctx);
-    }
-    return QD_OK;
-}
-
-static qd_status back_substitute(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x) {
-    size_t w = n + 1;
-    for (size_t k = n; k-- > 0;) {
-        const qd_expr *s = A[k * w + n];
-        for (size_t c = k + 1; c < n; c++)
-            s = qd_sub(ctx, s, qd_mul(ctx, A[k * w + c], x[c]));
-        x[k] = qd_simplify(ctx, qd_div(ctx, s, A[k * w + k]));
-        if (!x[k])
-            return qd_ctx_status(ctx);
-    }
-    return QD_OK;
-}
-
 /* beta_i = dL/dc'_i = sum_j A_ij c'_j + (the rest, in k' and q): the row
  * [A_i | beta_i - rest]. */
 static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t i,
@@ -213,10 +172,10 @@ static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
         st = r->beta[i] && r->pdef[i] ? momentum_row(ctx, e, r, i, A + i * w)
                                        : qd_ctx_status(ctx);
     }
-    if (st == QD_OK)
-        st = eliminate(ctx, ni, A);
-    if (st == QD_OK)
-        st = back_substitute(ctx, ni, A, r->ignvel);
+    size_t bad;
+    if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, r->ignvel, &bad)) == QD_ERR_SINGULAR)
+        qd_ctx_error(ctx, st, "the momenta of the ignored coordinates do not determine their "
+                              "velocities (no pivot for %s')", qd_expr_name(r->ign[bad]));
     free(A);
     return st;
 }
