@@ -4,12 +4,18 @@
  */
 #include "cli.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
                      const char **file, qd_cli_option opt, void *data) {
     for (int i = 0; i < argc; i++) {
         int rc = QD_EXIT_OK;
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            /* the command's own usage, on stdout: asked for, not an error */
+            printf("%s\n", usage);
+            exit(QD_EXIT_OK);
+        }
         if (argv[i][0] == '-' && argv[i][1])
             rc = opt(argc, argv, &i, data);
         else if (!*file)

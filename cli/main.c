@@ -36,11 +36,19 @@ static const qd_cmd commands[] = {
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
+/* The commands whose arguments go through qd_cli_file_args (args.c). */
+static bool qd_cli_takes_file(int (*run)(int, char **)) {
+    return run != qd_cmd_tour && run != qd_cmd_diff && run != qd_cmd_expand &&
+           run != qd_cmd_simplify && run != qd_cmd_print && run != qd_cmd_bracket &&
+           run != qd_cmd_check;
+}
+
 static void usage(FILE *out) {
     fprintf(out, "usage: qdot COMMAND [ARGS]\n\ncommands:\n");
     for (size_t i = 0; i < NCOMMANDS; i++)
         fprintf(out, "  %-11s %-34s %s\n", commands[i].name, commands[i].args, commands[i].summary);
-    fprintf(out, "\nformats (--format): text (default), latex, c, sympy; eom also json\n"
+    fprintf(out, "\nformats (--format): text (default), json, latex, sympy, c, csv: each command\n"
+                 "takes the ones that fit it (qdot COMMAND --help)\n"
                  "eom options: --solve, --eliminate, --set NAME=VALUE, --at \"q=..., q'=..., t=...\"\n"
                  "Expressions use the model language's syntax: x^2*sin(q) + q'/2.\n"
                  "See docs/cli.md and docs/language.md.\n");
@@ -61,8 +69,9 @@ int main(int argc, char **argv) {
     }
     for (size_t i = 0; i < NCOMMANDS; i++)
         if (!strcmp(argv[1], commands[i].name)) {
-            /* `qdot CMD --help`: the command's line of the table, and where to read more */
-            for (int a = 2; a < argc; a++)
+            /* `qdot CMD --help`: the commands on a model file print their own
+             * usage (args.c); the others their line of the table */
+            for (int a = 2; a < argc && !qd_cli_takes_file(commands[i].run); a++)
                 if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) {
                     printf("usage: qdot %s %s\n%s\nSee docs/cli.md.\n", commands[i].name,
                            commands[i].args, commands[i].summary);
