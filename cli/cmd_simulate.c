@@ -143,6 +143,13 @@ static void summary_json(qd_json *j, const qd_sim_cli *c, const qd_sim_stats *st
     qd_json_number(j, st->energy_error_max);
     qd_json_key(j, "constraint_error_max");
     qd_json_number(j, st->constraint_error_max);
+    qd_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
+    qd_json_begin_object(j);
+    for (size_t k = 0; k < c->e->ncon; k++) {
+        qd_json_key(j, c->e->con[k].name);
+        qd_json_number(j, qd_sim_constraint_error(c->s, k));
+    }
+    qd_json_end_object(j);
     qd_json_key(j, "events");
     qd_json_number(j, (double)st->events);
     qd_json_key(j, "final");

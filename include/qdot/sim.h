@@ -112,6 +112,12 @@ typedef struct qd_sim_stats {
     double t;                    /* where the run ended */
 } qd_sim_stats;
 
+/* The worst residual of constraint c (in the model's order of the
+ * constraints kept by the equations) over the last run: |phi| for a
+ * holonomic one and its velocity form, |A q' + a0| for a Pfaffian one; 0 for
+ * c out of range.  stats.constraint_error_max is the largest of these. */
+double qd_sim_constraint_error(const qd_sim *s, size_t c);
+
 /* The columns of a run with method: t, the coordinates, the velocities
  * (name'), the momenta (p_name, canonical-form methods only), energy (the
  * Jacobi integral h, = T + V for natural systems), one residual per

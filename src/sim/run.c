@@ -92,9 +92,11 @@ static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool 
         double v = a0[c];
         for (size_t j = 0; j < n; j++)
             v += A[c * n + j] * r->qd[j];
-        ms->cmax = fmax(ms->cmax, fabs(v));
+        double err = fabs(v);
         if (s->holonomic[c])
-            ms->cmax = fmax(ms->cmax, fabs(g[c]));
+            err = fmax(err, fabs(g[c]));
+        s->con_err[c] = fmax(s->con_err[c], err);
+        ms->cmax = fmax(ms->cmax, err);
     }
 }
 
@@ -392,6 +394,8 @@ qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     if (st == QD_OK)
         st = it.ops->init(&it);
     measure ms = {0};
+    for (size_t c = 0; c < s->m; c++)
+        s->con_err[c] = 0;
     if (st == QD_OK) {
         st = qd__run_velocity(&r, it.t, it.y);
         if (st == QD_OK) {

@@ -42,6 +42,7 @@ struct qd_sim {
     const qd_expr *h_expr, *T_expr;
     const qd_expr **b_expr, **force_expr;
     bool *holonomic;  /* m */
+    double *con_err;  /* m: the worst residual of each constraint in the last run */
     /* outputs and events, compiled into aux at the first run */
     size_t nout, nev, nguard, cap_out, cap_ev, cap_guard;
     char **out_name;

@@ -205,7 +205,8 @@ static qd_status make_names(qd_sim *s) {
     size_t n = s->n, k = 0;
     s->names = calloc(3 * n + 2 + s->m, sizeof *s->names);
     s->holonomic = calloc(s->m + 1, sizeof *s->holonomic);
-    if (!s->names || !s->holonomic)
+    s->con_err = calloc(s->m + 1, sizeof *s->con_err);
+    if (!s->names || !s->holonomic || !s->con_err)
         return QD_ERR_NOMEM;
     s->names[k++] = dup_printf("t", "", "");
     for (size_t j = 0; j < n; j++)
@@ -267,6 +268,7 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
 void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
+    free(s->con_err);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);
@@ -302,6 +304,7 @@ void qd_sim_free(qd_sim *s) {
 size_t qd_sim_ndof(const qd_sim *s) { return s->n; }
 size_t qd_sim_ncon(const qd_sim *s) { return s->m; }
 bool qd_sim_canonical(const qd_sim *s) { return s->canonical; }
+double qd_sim_constraint_error(const qd_sim *s, size_t c) { return c < s->m ? s->con_err[c] : 0; }
 bool qd_sim_separable(const qd_sim *s) { return s->separable; }
 bool qd_sim_conservative(const qd_sim *s) { return s->conservative; }
 

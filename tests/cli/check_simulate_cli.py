@@ -124,7 +124,11 @@ def main():
                        '--format', 'json', '--out', '/dev/null')
     check(rc == 0, f'constrained run: {rc} {err}')
     if rc == 0:
-        check(json.loads(out)['constraint_error_max'] < 1e-12, 'constraint residual')
+        js = json.loads(out)
+        check(js['constraint_error_max'] < 1e-12, 'constraint residual')
+        per = js['constraint_errors']
+        check(list(per) == ['rod'] and per['rod'] == js['constraint_error_max'],
+              f'the residual of each constraint, by name: {per}')
 
     # an event on a constraint force: the particle leaves the sphere where the
     # multiplier (the normal force / 2a) vanishes.  From rest at height z0 on a
