@@ -8,6 +8,8 @@
   SciPy    solve_ivp(method='DOP853') on a SymPy-lambdified rhs
            (bench/rhs_sympy.py's derivation, cse=True)
   GSL      gsl_odeiv2 rk8pd with the hand-written rhs (bench/sim_gsl.c)
+  CVODE    SUNDIALS CVODE, Adams with fixed-point iteration, the same rhs
+           (bench/sim_cvode.c)
 
 Usage: run_simulate.py BUILD_DIR [--t-end T] [--no-scipy] [--scipy-limit S]
 
@@ -57,13 +59,13 @@ def qdot_run(build, t_end, native, rows=True):
             'note': p.stderr.strip().splitlines()[0] if p.stderr.strip() else ''}
 
 
-def gsl_run(build, t_end):
-    exe = os.path.join(build, 'bench', 'sim_gsl')
+def gsl_run(build, t_end, prog='sim_gsl'):
+    exe = os.path.join(build, 'bench', prog)
     t0 = time.perf_counter()
     p = subprocess.run([exe, str(t_end), str(TOL), str(TOL)], capture_output=True, text=True)
     wall = time.perf_counter() - t0
     if p.returncode != 0:
-        raise RuntimeError('sim_gsl: %s' % p.stderr[:400])
+        raise RuntimeError('%s: %s' % (prog, p.stderr[:400]))
     kv = dict(line.split(' ', 1) for line in p.stdout.splitlines())
     return {'wall': wall, 'int_s': float(kv['wall_s']), 'steps': int(kv['steps']),
             'evals': int(kv['evaluations']), 'rejected': int(kv['rejected']),
@@ -125,6 +127,8 @@ def main():
     log('running GSL rk8pd')
     gsl = gsl_run(a.build, a.t_end)
     rows.append(('GSL rk8pd, hand-written C rhs', gsl))
+    log('running SUNDIALS CVODE (Adams)')
+    rows.append(('CVODE Adams, hand-written C rhs', gsl_run(a.build, a.t_end, 'sim_cvode')))
     if not a.no_scipy:
         log('running SciPy DOP853 (limit %g s)' % a.scipy_limit)
         try:
