@@ -17,6 +17,7 @@ typedef struct qd_cmd {
     const char *args;     /* usage after the name */
     const char *summary;
     int (*run)(int argc, char **argv);
+    bool own_help; /* answers --help with its full usage (qd_cli_file_args) */
 } qd_cmd;
 
 /* Diagnostics (diag.c): "qdot: error: ..." and the caret under a source span. */

@@ -16,11 +16,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
+#include "model_cli.h"
 
 /* Symbolic accelerations larger than this (count_ops, per entry) are not
  * worth printing: M and f say the same in far less space. */
 #define SOLVE_MAX_OPS 2000
-#define MAX_SETS 64
+#define MAX_SETS QD_CLI_MAX_LIST
 
 typedef struct eom_args {
     const char *file;
@@ -36,8 +37,7 @@ typedef struct eom_run {
     qd_model_file mf;
     qd_eom *e;
     qd_state st;
-    const qd_expr *from[MAX_SETS], *to[MAX_SETS]; /* --set substitutions */
-    size_t nsubs;
+    qd_cli_subs subs;                             /* --set substitutions */
     const qd_expr **numbers;                      /* numeric mode: M, f, acc, A, b,
                                                      lambda, R as nodes */
     size_t nreact;                                /* numeric mode: reactions computed */
@@ -87,36 +87,8 @@ static int parse_args(int argc, char **argv, eom_args *a) {
     return qd_cli_file_args(argc, argv, "eom", usage_text, &a->file, parse_option, a);
 }
 
-/* --set: new parameter values in the model, and substitutions for the equations. */
-static int apply_sets(eom_run *r, const eom_args *a) {
-    for (size_t i = 0; i < a->nsets; i++) {
-        const qd_expr *p, *v;
-        int rc = qd_state_set(r->ctx, r->mf.model, a->sets[i], &p, &v);
-        if (rc != QD_EXIT_OK)
-            return rc;
-        size_t k = 0;
-        while (k < r->nsubs && r->from[k] != p)
-            k++;
-        r->from[k] = p;  /* the last --set of a name wins */
-        r->to[k] = v;
-        r->nsubs += k == r->nsubs;
-    }
-    return QD_EXIT_OK;
-}
-
-static int derive(eom_run *r, bool eliminate) {
-    qd_eom_opts opts = {.eliminate = eliminate};
-    r->e = qd_eom_derive_opts(r->ctx, r->mf.model, &opts);
-    return r->e ? QD_EXIT_OK : qd_eom_derive_error(r->ctx, &r->mf);
-}
-
 /* x with the --set parameters replaced by their values, re-simplified. */
-static const qd_expr *subs(eom_run *r, const qd_expr *x) {
-    if (!x || !r->nsubs)
-        return x;
-    const qd_expr *y = qd_subs(r->ctx, x, r->nsubs, r->from, r->to);
-    return y == x ? x : qd_simplify(r->ctx, y);
-}
+static const qd_expr *subs(eom_run *r, const qd_expr *x) { return qd_cli_subst(r->ctx, &r->subs, x); }
 
 static int substitute(eom_run *r) {
     qd_eom *e = r->e;
@@ -335,11 +307,8 @@ int qd_cmd_eom(int argc, char **argv) {
         qd_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = qd_model_file_load(r.ctx, a.file, &r.mf);
-    if (rc == QD_EXIT_OK)
-        rc = apply_sets(&r, &a);
-    if (rc == QD_EXIT_OK)
-        rc = derive(&r, a.eliminate);
+    qd_eom_opts opts = {.eliminate = a.eliminate};
+    rc = qd_cli_load_derive(r.ctx, a.file, a.nsets, a.sets, &r.subs, &opts, &r.mf, &r.e);
     if (rc == QD_EXIT_OK)
         rc = substitute(&r);
     if (rc == QD_EXIT_OK)

@@ -6,42 +6,35 @@
 #include <string.h>
 
 static const qd_cmd commands[] = {
-    {"tour", "", "a one-minute tour of the symbolic kernel", qd_cmd_tour},
+    {"tour", "", "a one-minute tour of the symbolic kernel", qd_cmd_tour, false},
     {"diff", "EXPR VAR [VAR...] [--format F]", "partial derivative (repeated for each VAR)",
-     qd_cmd_diff},
-    {"expand", "EXPR [--format F]", "distribute products and powers of sums", qd_cmd_expand},
+     qd_cmd_diff, false},
+    {"expand", "EXPR [--format F]", "distribute products and powers of sums", qd_cmd_expand, false},
     {"simplify", "EXPR [--format F]", "expand, trigonometric identities, cancel, factor",
-     qd_cmd_simplify},
-    {"print", "EXPR [--format F]", "print an expression in canonical form", qd_cmd_print},
+     qd_cmd_simplify, false},
+    {"print", "EXPR [--format F]", "print an expression in canonical form", qd_cmd_print, false},
     {"eom", "FILE [--format F] [OPTIONS]",
-     "Lagrange's equations of a model, M q'' = f", qd_cmd_eom},
-    {"check", "FILE", "validate a model and summarize it", qd_cmd_check},
+     "Lagrange's equations of a model, M q'' = f", qd_cmd_eom, true},
+    {"check", "FILE", "validate a model and summarize it", qd_cmd_check, false},
     {"hamiltonian", "FILE [--format F] [--at ...]", "momenta, H and Hamilton's equations",
-     qd_cmd_hamiltonian},
-    {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", qd_cmd_bracket},
+     qd_cmd_hamiltonian, true},
+    {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", qd_cmd_bracket, false},
     {"canonical", "FILE --Q ... --P ... | --generator", "canonical transformations, K = H + dF/dt",
-     qd_cmd_canonical},
-    {"routh", "FILE --ignore Q[,Q...]", "the Routhian and the reduced equations", qd_cmd_routh},
+     qd_cmd_canonical, true},
+    {"routh", "FILE --ignore Q[,Q...]", "the Routhian and the reduced equations", qd_cmd_routh, true},
     {"integrals", "FILE", "integrals of motion: cyclic, Jacobi, Noether, proposed",
-     qd_cmd_integrals},
-    {"simulate", "FILE --t-end T [OPTIONS]", "integrate the motion; CSV or JSON", qd_cmd_simulate},
-    {"poincare", "FILE --section ... --n N", "a Poincare surface of section", qd_cmd_poincare},
-    {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", qd_cmd_codegen},
+     qd_cmd_integrals, true},
+    {"simulate", "FILE --t-end T [OPTIONS]", "integrate the motion; CSV or JSON", qd_cmd_simulate, true},
+    {"poincare", "FILE --section ... --n N", "a Poincare surface of section", qd_cmd_poincare, true},
+    {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", qd_cmd_codegen, true},
     {"equilibria", "FILE [--near ...|--box ...]", "equilibria and their kind",
-     qd_cmd_equilibria},
+     qd_cmd_equilibria, true},
     {"modes", "FILE [--about ...]", "small oscillations: frequencies and mode shapes",
-     qd_cmd_modes},
+     qd_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
-     qd_cmd_stability},
+     qd_cmd_stability, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
-
-/* The commands whose arguments go through qd_cli_file_args (args.c). */
-static bool qd_cli_takes_file(int (*run)(int, char **)) {
-    return run != qd_cmd_tour && run != qd_cmd_diff && run != qd_cmd_expand &&
-           run != qd_cmd_simplify && run != qd_cmd_print && run != qd_cmd_bracket &&
-           run != qd_cmd_check;
-}
 
 static void usage(FILE *out) {
     fprintf(out, "usage: qdot COMMAND [ARGS]\n\ncommands:\n");
@@ -71,7 +64,7 @@ int main(int argc, char **argv) {
         if (!strcmp(argv[1], commands[i].name)) {
             /* `qdot CMD --help`: the commands on a model file print their own
              * usage (args.c); the others their line of the table */
-            for (int a = 2; a < argc && !qd_cli_takes_file(commands[i].run); a++)
+            for (int a = 2; a < argc && !commands[i].own_help; a++)
                 if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) {
                     printf("usage: qdot %s %s\n%s\nSee docs/cli.md.\n", commands[i].name,
                            commands[i].args, commands[i].summary);
