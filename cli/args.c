@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
-                     const char **file, qd_cli_option opt, void *data) {
+int cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
+                     const char **file, cli_option opt, void *data) {
     for (int i = 0; i < argc; i++) {
         int rc = QD_EXIT_OK;
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -21,20 +21,20 @@ int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
         else if (!*file)
             *file = argv[i];
         else {
-            qd_diag_error("'%s' takes one FILE; unexpected '%s'\n%s", cmd, argv[i], usage);
+            cli_diag_error("'%s' takes one FILE; unexpected '%s'\n%s", cmd, argv[i], usage);
             rc = QD_EXIT_USAGE;
         }
         if (rc != QD_EXIT_OK)
             return rc;
     }
     if (!*file) {
-        qd_diag_error("FILE is missing\n%s", usage);
+        cli_diag_error("FILE is missing\n%s", usage);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
 }
 
-const char *qd_cli_value(int argc, char **argv, int *i, const char *opt) {
+const char *cli_value(int argc, char **argv, int *i, const char *opt) {
     size_t len = strlen(opt);
     if (strncmp(argv[*i], opt, len))
         return NULL;

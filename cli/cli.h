@@ -12,71 +12,71 @@
 
 enum { QD_EXIT_OK = 0, QD_EXIT_FAIL = 1, QD_EXIT_USAGE = 2 };
 
-typedef struct qd_cmd {
+typedef struct cli_cmd {
     const char *name;
     const char *args;     /* usage after the name */
     const char *summary;
     int (*run)(int argc, char **argv);
-    bool own_help; /* answers --help with its full usage (qd_cli_file_args) */
-} qd_cmd;
+    bool own_help; /* answers --help with its full usage (cli_file_args) */
+} cli_cmd;
 
 /* Diagnostics (diag.c): "qdot: error: ..." and the caret under a source span. */
-void qd_diag_error(const char *fmt, ...)
+void cli_diag_error(const char *fmt, ...)
 #ifdef __GNUC__
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
-void qd_diag_read(const char *file, const char *text, const qd_read_error *err);
-int qd_diag_ctx(const qd_ctx *ctx); /* prints the context's error, returns the exit status */
+void cli_diag_read(const char *file, const char *text, const qd_read_error *err);
+int cli_diag_ctx(const qd_ctx *ctx); /* prints the context's error, returns the exit status */
 
 /* FILE and options (args.c): every argument starting with '-' goes to opt,
  * which may take a value by advancing *i; exactly one other is the FILE. */
-typedef int (*qd_cli_option)(int argc, char **argv, int *i, void *data);
-int qd_cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
-                     const char **file, qd_cli_option opt, void *data);
+typedef int (*cli_option)(int argc, char **argv, int *i, void *data);
+int cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
+                     const char **file, cli_option opt, void *data);
 
 /* The value of option opt given as "--opt VALUE" or "--opt=VALUE" at
  * argv[*i] (advancing *i past a separate VALUE), or NULL when argv[*i] is
  * another option or VALUE is missing. */
-const char *qd_cli_value(int argc, char **argv, int *i, const char *opt);
+const char *cli_value(int argc, char **argv, int *i, const char *opt);
 
 /* Parse "--format NAME" values; false for an unknown name. */
-bool qd_cli_format(const char *name, qd_format *out);
+bool cli_format(const char *name, qd_format *out);
 
-int qd_cmd_tour(int argc, char **argv);
-int qd_cmd_diff(int argc, char **argv);
-int qd_cmd_expand(int argc, char **argv);
-int qd_cmd_simplify(int argc, char **argv);
-int qd_cmd_print(int argc, char **argv);
-int qd_cmd_eom(int argc, char **argv);   /* cmd_eom.c */
-int qd_cmd_check(int argc, char **argv); /* cmd_check.c */
-int qd_cmd_hamiltonian(int argc, char **argv); /* cmd_hamiltonian.c */
-int qd_cmd_bracket(int argc, char **argv);   /* cmd_bracket.c */
-int qd_cmd_canonical(int argc, char **argv); /* cmd_canonical.c */
-int qd_cmd_routh(int argc, char **argv);      /* cmd_routh.c */
-int qd_cmd_integrals(int argc, char **argv);  /* cmd_integrals.c */
-int qd_cmd_simulate(int argc, char **argv);   /* cmd_simulate.c */
-int qd_cmd_poincare(int argc, char **argv);   /* cmd_poincare.c */
-int qd_cmd_codegen(int argc, char **argv);    /* cmd_codegen.c */
-int qd_cmd_equilibria(int argc, char **argv); /* cmd_equilibria.c */
-int qd_cmd_modes(int argc, char **argv);      /* cmd_modes.c */
-int qd_cmd_stability(int argc, char **argv);  /* cmd_stability.c */
+int cli_cmd_tour(int argc, char **argv);
+int cli_cmd_diff(int argc, char **argv);
+int cli_cmd_expand(int argc, char **argv);
+int cli_cmd_simplify(int argc, char **argv);
+int cli_cmd_print(int argc, char **argv);
+int cli_cmd_eom(int argc, char **argv);   /* cmd_eom.c */
+int cli_cmd_check(int argc, char **argv); /* cmd_check.c */
+int cli_cmd_hamiltonian(int argc, char **argv); /* cmd_hamiltonian.c */
+int cli_cmd_bracket(int argc, char **argv);   /* cmd_bracket.c */
+int cli_cmd_canonical(int argc, char **argv); /* cmd_canonical.c */
+int cli_cmd_routh(int argc, char **argv);      /* cmd_routh.c */
+int cli_cmd_integrals(int argc, char **argv);  /* cmd_integrals.c */
+int cli_cmd_simulate(int argc, char **argv);   /* cmd_simulate.c */
+int cli_cmd_poincare(int argc, char **argv);   /* cmd_poincare.c */
+int cli_cmd_codegen(int argc, char **argv);    /* cmd_codegen.c */
+int cli_cmd_equilibria(int argc, char **argv); /* cmd_equilibria.c */
+int cli_cmd_modes(int argc, char **argv);      /* cmd_modes.c */
+int cli_cmd_stability(int argc, char **argv);  /* cmd_stability.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the
  * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */
-typedef struct qd_phase {
+typedef struct cli_phase {
     qd_ctx *ctx;
-    struct qd_model_file *mf;
+    struct cli_model_file *mf;
     size_t n;
     const qd_expr **q, **p;
-    qd_eom *e;  /* set by qd_phase_ham */
+    qd_eom *e;  /* set by cli_phase_ham */
     qd_ham *h;
-} qd_phase;
-int qd_phase_load(const char *file, qd_phase *ph);
+} cli_phase;
+int cli_phase_load(const char *file, cli_phase *ph);
 /* Read text (an expression in q, p, t and the parameters; what names it in
  * diagnostics); unknown names and velocities are errors (exit 2). */
-int qd_phase_read(qd_phase *ph, const char *what, const char *text, const qd_expr **out);
-int qd_phase_ham(qd_phase *ph); /* H from hamilton.h */
-void qd_phase_free(qd_phase *ph);
+int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out);
+int cli_phase_ham(cli_phase *ph); /* H from hamilton.h */
+void cli_phase_free(cli_phase *ph);
 
 #endif

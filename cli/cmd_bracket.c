@@ -7,7 +7,7 @@
  *
  * the last sum being the generalized forces and dissipation that Hamilton's
  * equations carry beyond -dH/dq (zero for a conservative model).  Also the
- * model-and-variables helpers (qd_phase) that `qdot canonical` shares.
+ * model-and-variables helpers (cli_phase) that `qdot canonical` shares.
  */
 #include "cli.h"
 
@@ -25,13 +25,13 @@ static const char usage_text[] =
 
 /* ---- the canonical variables ---------------------------------------------- */
 
-static int momenta(qd_phase *ph) {
+static int momenta(cli_phase *ph) {
     const qd_model *m = ph->mf->model;
     ph->n = qd_model_ncoords(m);
     ph->q = calloc(ph->n + 1, sizeof *ph->q);
     ph->p = calloc(ph->n + 1, sizeof *ph->p);
     if (!ph->q || !ph->p) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     for (size_t j = 0; j < ph->n; j++) {
@@ -42,28 +42,28 @@ static int momenta(qd_phase *ph) {
          * named p_x cannot also be the momentum */
         const qd_expr *named = qd_model_momentum(m, j);
         if (!(ph->p[j] = named ? named : qd_symbol(ph->ctx, name)))
-            return qd_diag_ctx(ph->ctx);
+            return cli_diag_ctx(ph->ctx);
     }
     return QD_EXIT_OK;
 }
 
-int qd_phase_load(const char *file, qd_phase *ph) {
-    *ph = (qd_phase){.ctx = qd_ctx_new(), .mf = calloc(1, sizeof *ph->mf)};
+int cli_phase_load(const char *file, cli_phase *ph) {
+    *ph = (cli_phase){.ctx = qd_ctx_new(), .mf = calloc(1, sizeof *ph->mf)};
     if (!ph->ctx || !ph->mf) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    int rc = qd_model_file_load(ph->ctx, file, ph->mf);
+    int rc = cli_model_file_load(ph->ctx, file, ph->mf);
     return rc == QD_EXIT_OK ? momenta(ph) : rc;
 }
 
 /* Velocities have no place in a function on phase space. */
-static int no_velocity(qd_phase *ph, const char *what, const qd_expr *x) {
+static int no_velocity(cli_phase *ph, const char *what, const qd_expr *x) {
     for (size_t j = 0; j < ph->n; j++)
         for (unsigned k = 1; k <= 2; k++) {
             const qd_expr *v = qd_jet(ph->ctx, ph->q[j], k);
             if (v && qd_has(x, v)) {
-                qd_diag_error("%s contains the velocity %s: write functions of %s and p_%s",
+                cli_diag_error("%s contains the velocity %s: write functions of %s and p_%s",
                               what, qd_expr_name(v), qd_expr_name(ph->q[j]),
                               qd_expr_name(ph->q[j]));
                 return QD_EXIT_USAGE;
@@ -72,44 +72,44 @@ static int no_velocity(qd_phase *ph, const char *what, const qd_expr *x) {
     return QD_EXIT_OK;
 }
 
-int qd_phase_read(qd_phase *ph, const char *what, const char *text, const qd_expr **out) {
+int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out) {
     qd_read_opts opts = {.new_symbols = false};
     qd_read_error err;
     *out = qd_read(ph->ctx, text, &opts, &err);
     if (!*out) {
-        qd_diag_read(what, text, &err);
+        cli_diag_read(what, text, &err);
         return QD_EXIT_USAGE;
     }
     return no_velocity(ph, what, *out);
 }
 
-int qd_phase_ham(qd_phase *ph) {
+int cli_phase_ham(cli_phase *ph) {
     /* a model given by H needs no equations of motion for its brackets */
     if (!qd_model_hamiltonian_given(ph->mf->model) &&
         !(ph->e = qd_eom_derive(ph->ctx, ph->mf->model)))
-        return qd_eom_derive_error(ph->ctx, ph->mf);
+        return cli_eom_derive_error(ph->ctx, ph->mf);
     if (!(ph->h = qd_ham_derive(ph->ctx, ph->mf->model, ph->e)))
-        return qd_diag_ctx(ph->ctx);
+        return cli_diag_ctx(ph->ctx);
     for (size_t j = 0; j < ph->n; j++)
         if (ph->h->p[j] != ph->p[j]) {
-            qd_diag_error("the Hamiltonian names its momentum %s, not %s",
+            cli_diag_error("the Hamiltonian names its momentum %s, not %s",
                           qd_expr_name(ph->h->p[j]), qd_expr_name(ph->p[j]));
             return QD_EXIT_FAIL;
         }
     return QD_EXIT_OK;
 }
 
-void qd_phase_free(qd_phase *ph) {
+void cli_phase_free(cli_phase *ph) {
     qd_ham_free(ph->h);
     if (ph->e)
         qd_eom_free(ph->e);
     if (ph->mf)
-        qd_model_file_free(ph->mf);
+        cli_model_file_free(ph->mf);
     free(ph->mf);
     free(ph->q);
     free(ph->p);
     qd_ctx_free(ph->ctx);
-    *ph = (qd_phase){0};
+    *ph = (cli_phase){0};
 }
 
 /* ---- the command ------------------------------------------------------------ */
@@ -127,14 +127,14 @@ static int parse_format(const char *v, br_fmt *f) {
             *f = (br_fmt)i;
             return QD_EXIT_OK;
         }
-    qd_diag_error("--format takes text, json or latex, not '%s'", v);
+    cli_diag_error("--format takes text, json or latex, not '%s'", v);
     return QD_EXIT_USAGE;
 }
 
 static int positional(br_args *a, const char *s) {
     const char **slot = !a->file ? &a->file : !a->F ? &a->F : !a->G && !a->dt ? &a->G : NULL;
     if (!slot) {
-        qd_diag_error("unexpected argument '%s'\n%s", s, usage_text);
+        cli_diag_error("unexpected argument '%s'\n%s", s, usage_text);
         return QD_EXIT_USAGE;
     }
     *slot = s;
@@ -152,20 +152,20 @@ static int parse_args(int argc, char **argv, br_args *a) {
         else if (!strcmp(argv[i], "--format") && i + 1 < argc)
             rc = parse_format(argv[++i], &a->fmt);
         else if (argv[i][0] == '-' && argv[i][1] && (argv[i][1] < '0' || argv[i][1] > '9')) {
-            qd_diag_error("unknown option or missing value: '%s'\n%s", argv[i], usage_text);
+            cli_diag_error("unknown option or missing value: '%s'\n%s", argv[i], usage_text);
             rc = QD_EXIT_USAGE;
         } else
             rc = positional(a, argv[i]);
     }
     if (rc == QD_EXIT_OK && (!a->F || (!a->dt && !a->G) || (a->dt && a->G))) {
-        qd_diag_error("%s", usage_text);
+        cli_diag_error("%s", usage_text);
         rc = QD_EXIT_USAGE;
     }
     return rc;
 }
 
 /* dF/dt along the motion: [F, H] + dF/dt explicit + sum dF/dp_j extra_j. */
-static const qd_expr *time_derivative(qd_phase *ph, const qd_expr *F) {
+static const qd_expr *time_derivative(cli_phase *ph, const qd_expr *F) {
     qd_ctx *ctx = ph->ctx;
     const qd_ham *h = ph->h;
     const qd_expr *d = qd_bracket(ctx, ph->n, ph->q, ph->p, F, h->H);
@@ -176,24 +176,24 @@ static const qd_expr *time_derivative(qd_phase *ph, const qd_expr *F) {
     return d ? qd_simplify(ctx, d) : NULL;
 }
 
-static void json_expr(qd_ctx *ctx, qd_json *j, const char *key, const qd_expr *x) {
+static void json_expr(qd_ctx *ctx, cli_json *j, const char *key, const qd_expr *x) {
     qd_buf s = QD_BUF_INIT;
     qd_print(ctx, x, QD_FMT_TEXT, &s);
-    qd_json_key(j, key);
-    qd_json_string(j, qd_buf_str(&s));
+    cli_json_key(j, key);
+    cli_json_string(j, qd_buf_str(&s));
     qd_buf_free(&s);
 }
 
-static void write_json(qd_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
+static void write_json(cli_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
                        const qd_expr *r, qd_buf *b) {
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "momenta");
-    qd_json_begin_array(&j);
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "momenta");
+    cli_json_begin_array(&j);
     for (size_t k = 0; k < ph->n; k++)
-        qd_json_string(&j, qd_expr_name(ph->p[k]));
-    qd_json_end_array(&j);
+        cli_json_string(&j, qd_expr_name(ph->p[k]));
+    cli_json_end_array(&j);
     json_expr(ph->ctx, &j, "F", F);
     if (a->dt) {
         json_expr(ph->ctx, &j, "H", ph->h->H);
@@ -202,12 +202,12 @@ static void write_json(qd_phase *ph, const br_args *a, const qd_expr *F, const q
         json_expr(ph->ctx, &j, "G", G);
         json_expr(ph->ctx, &j, "bracket", r);
     }
-    qd_json_end_object(&j);
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    b->failed = b->failed || !cli_json_ok(&j);
 }
 
-static void write_line(qd_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
+static void write_line(cli_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
                        const qd_expr *r, qd_buf *b) {
     qd_format f = a->fmt == FMT_LATEX ? QD_FMT_LATEX : QD_FMT_TEXT;
     bool tex = a->fmt == FMT_LATEX;
@@ -226,7 +226,7 @@ static void write_line(qd_phase *ph, const br_args *a, const qd_expr *F, const q
     qd_buf_puts(b, "\n");
 }
 
-static int emit(qd_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
+static int emit(cli_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
                 const qd_expr *r) {
     qd_buf b = QD_BUF_INIT;
     if (a->fmt == FMT_JSON)
@@ -237,35 +237,35 @@ static int emit(qd_phase *ph, const br_args *a, const qd_expr *F, const qd_expr 
     if (ok)
         fputs(qd_buf_str(&b), stdout);
     else
-        qd_diag_error("cannot print the bracket");
+        cli_diag_error("cannot print the bracket");
     qd_buf_free(&b);
     return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
-static int run(qd_phase *ph, const br_args *a) {
+static int run(cli_phase *ph, const br_args *a) {
     const qd_expr *F, *G = NULL, *r;
-    int rc = qd_phase_read(ph, "F", a->F, &F);
+    int rc = cli_phase_read(ph, "F", a->F, &F);
     if (rc == QD_EXIT_OK && !a->dt)
-        rc = qd_phase_read(ph, "G", a->G, &G);
+        rc = cli_phase_read(ph, "G", a->G, &G);
     if (rc == QD_EXIT_OK && a->dt)
-        rc = qd_phase_ham(ph);
+        rc = cli_phase_ham(ph);
     if (rc != QD_EXIT_OK)
         return rc;
     r = a->dt ? time_derivative(ph, F) : qd_bracket(ph->ctx, ph->n, ph->q, ph->p, F, G);
     if (!r)
-        return qd_diag_ctx(ph->ctx);
+        return cli_diag_ctx(ph->ctx);
     return emit(ph, a, F, G, r);
 }
 
-int qd_cmd_bracket(int argc, char **argv) {
+int cli_cmd_bracket(int argc, char **argv) {
     br_args a;
     int rc = parse_args(argc, argv, &a);
     if (rc != QD_EXIT_OK)
         return rc;
-    qd_phase ph;
-    rc = qd_phase_load(a.file, &ph);
+    cli_phase ph;
+    rc = cli_phase_load(a.file, &ph);
     if (rc == QD_EXIT_OK)
         rc = run(&ph, &a);
-    qd_phase_free(&ph);
+    cli_phase_free(&ph);
     return rc;
 }

@@ -21,7 +21,7 @@ typedef struct can_args {
 } can_args;
 
 typedef struct can_run {
-    qd_phase ph;
+    cli_phase ph;
     const qd_expr **Q, **P; /* expressions (--Q/--P) or the new symbols (--generator) */
     const qd_expr **newQ, **newP;
     char **names;           /* 2n names of the new variables */
@@ -34,17 +34,17 @@ static const char usage_text[] =
 static int parse_option(int argc, char **argv, int *i, void *data) {
     can_args *a = data;
     const char *v;
-    if ((v = qd_cli_value(argc, argv, i, "--Q")) && !a->Q)
+    if ((v = cli_value(argc, argv, i, "--Q")) && !a->Q)
         a->Q = v;
-    else if ((v = qd_cli_value(argc, argv, i, "--P")) && !a->P)
+    else if ((v = cli_value(argc, argv, i, "--P")) && !a->P)
         a->P = v;
-    else if ((v = qd_cli_value(argc, argv, i, "--format")) && (!strcmp(v, "text") || !strcmp(v, "json")))
+    else if ((v = cli_value(argc, argv, i, "--format")) && (!strcmp(v, "text") || !strcmp(v, "json")))
         a->json = !strcmp(v, "json");
     else if (!strcmp(argv[*i], "--generator") && *i + 2 < argc && !a->gen) {
         a->gen_type = argv[++*i];
         a->gen = argv[++*i];
     } else {
-        qd_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
+        cli_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -52,7 +52,7 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 
 static int parse_args(int argc, char **argv, can_args *a) {
     *a = (can_args){0};
-    int rc = qd_cli_file_args(argc, argv, "canonical", usage_text, &a->file, parse_option, a);
+    int rc = cli_file_args(argc, argv, "canonical", usage_text, &a->file, parse_option, a);
     if (rc != QD_EXIT_OK)
         return rc;
     const char *why = a->gen && (a->Q || a->P) ? "give either --Q and --P or --generator"
@@ -60,7 +60,7 @@ static int parse_args(int argc, char **argv, can_args *a) {
                       : !a->gen && !a->P       ? "--P is missing"
                                                : NULL;
     if (why) {
-        qd_diag_error("%s\n%s", why, usage_text);
+        cli_diag_error("%s\n%s", why, usage_text);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -86,7 +86,7 @@ static int make_symbols(can_run *r) {
     for (size_t k = 0; k < 2 * r->ph.n; k++) {
         const qd_expr *s = qd_symbol(r->ph.ctx, r->names[k]);
         if (!s)
-            return qd_diag_ctx(r->ph.ctx);
+            return cli_diag_ctx(r->ph.ctx);
         (k < r->ph.n ? r->newQ : r->newP)[k % r->ph.n] = s;
     }
     return QD_EXIT_OK;
@@ -100,7 +100,7 @@ static int read_item(can_run *r, const char *what, const char *s, size_t len,
         return QD_EXIT_FAIL;
     memcpy(text, s, len);
     text[len] = '\0';
-    int rc = qd_phase_read(&r->ph, what, text, out);
+    int rc = cli_phase_read(&r->ph, what, text, out);
     free(text);
     return rc;
 }
@@ -122,7 +122,7 @@ static int read_list(can_run *r, const char *what, const char *s, const qd_expr 
         start = i + 1;
     }
     if (rc == QD_EXIT_OK && k != r->ph.n) {
-        qd_diag_error("%s needs %zu expression%s, one per coordinate", what, r->ph.n,
+        cli_diag_error("%s needs %zu expression%s, one per coordinate", what, r->ph.n,
                       r->ph.n == 1 ? "" : "s");
         rc = QD_EXIT_USAGE;
     }
@@ -142,31 +142,31 @@ static char *text_of(qd_ctx *ctx, const qd_expr *x) {
     return s;
 }
 
-static void put_expr(qd_ctx *ctx, qd_json *j, qd_buf *b, const char *key, const qd_expr *x) {
+static void put_expr(qd_ctx *ctx, cli_json *j, qd_buf *b, const char *key, const qd_expr *x) {
     char *s = x ? text_of(ctx, x) : NULL;
     if (j) {
-        qd_json_key(j, key);
+        cli_json_key(j, key);
         if (s)
-            qd_json_string(j, s);
+            cli_json_string(j, s);
         else
-            qd_json_null(j);
+            cli_json_null(j);
     } else if (s) {
         qd_buf_printf(b, "  %s = %s\n", key, s);
     }
     free(s);
 }
 
-static int flush(qd_buf *b, qd_json *j) {
+static int flush(qd_buf *b, cli_json *j) {
     if (j) {
-        qd_json_end_object(j);
+        cli_json_end_object(j);
         qd_buf_puts(b, "\n");
-        b->failed = b->failed || !qd_json_ok(j);
+        b->failed = b->failed || !cli_json_ok(j);
     }
     bool ok = !b->failed;
     if (ok)
         fputs(qd_buf_str(b), stdout);
     else
-        qd_diag_error("cannot print the result");
+        cli_diag_error("cannot print the result");
     qd_buf_free(b);
     return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
@@ -183,21 +183,21 @@ static int write_verdict(can_run *r, const qd_canon_verdict *v, bool json) {
     qd_ctx *ctx = r->ph.ctx;
     static const char *const kind[] = {"canonical", "scaled", "not canonical"};
     qd_buf b = QD_BUF_INIT;
-    qd_json j;
+    cli_json j;
     char pair[128] = "";
     if (v->kind == QD_CANON_NO)
         pair_name(r, v, pair, sizeof pair);
     if (json) {
-        qd_json_init(&j, &b);
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "verdict");
-        qd_json_string(&j, kind[v->kind]);
+        cli_json_init(&j, &b);
+        cli_json_begin_object(&j);
+        cli_json_key(&j, "verdict");
+        cli_json_string(&j, kind[v->kind]);
         put_expr(ctx, &j, &b, "scale", v->kind == QD_CANON_NO ? NULL : v->scale);
-        qd_json_key(&j, "bracket");
+        cli_json_key(&j, "bracket");
         if (pair[0])
-            qd_json_string(&j, pair);
+            cli_json_string(&j, pair);
         else
-            qd_json_null(&j);
+            cli_json_null(&j);
         put_expr(ctx, &j, &b, "value", pair[0] ? v->value : NULL);
         return flush(&b, &j);
     }
@@ -229,7 +229,7 @@ static int check(can_run *r, const can_args *a, bool json) {
     qd_canon_verdict v;
     if (qd_canonical_check(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, qd_time(r->ph.ctx), &v) !=
         QD_OK)
-        return qd_diag_ctx(r->ph.ctx);
+        return cli_diag_ctx(r->ph.ctx);
     return write_verdict(r, &v, json);
 }
 
@@ -238,7 +238,7 @@ static int gen_type(const char *s, qd_gen_type *t) {
         *t = (qd_gen_type)(s[1] - '0');
         return QD_EXIT_OK;
     }
-    qd_diag_error("--generator takes a type F1, F2, F3 or F4, not '%s'\n%s", s, usage_text);
+    cli_diag_error("--generator takes a type F1, F2, F3 or F4, not '%s'\n%s", s, usage_text);
     return QD_EXIT_USAGE;
 }
 
@@ -247,12 +247,12 @@ static int write_generated(can_run *r, const can_args *a, const qd_expr *F,
     qd_ctx *ctx = r->ph.ctx;
     size_t n = r->ph.n;
     qd_buf b = QD_BUF_INIT;
-    qd_json j, *jp = a->json ? &j : NULL;
+    cli_json j, *jp = a->json ? &j : NULL;
     if (jp) {
-        qd_json_init(jp, &b);
-        qd_json_begin_object(jp);
-        qd_json_key(jp, "type");
-        qd_json_string(jp, a->gen_type);
+        cli_json_init(jp, &b);
+        cli_json_begin_object(jp);
+        cli_json_key(jp, "type");
+        cli_json_string(jp, a->gen_type);
     } else {
         qd_buf_printf(&b, "generating function %s\n", a->gen_type);
     }
@@ -275,15 +275,15 @@ static int generate(can_run *r, const can_args *a) {
     if (rc == QD_EXIT_OK)
         rc = make_symbols(r);
     if (rc == QD_EXIT_OK)
-        rc = qd_phase_read(&r->ph, "generator", a->gen, &F);
+        rc = cli_phase_read(&r->ph, "generator", a->gen, &F);
     if (rc == QD_EXIT_OK)
-        rc = qd_phase_ham(&r->ph);
+        rc = cli_phase_ham(&r->ph);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_gen_result g = {0};
     qd_status st = qd_generate(r->ph.ctx, type, r->ph.n, r->ph.q, r->ph.p, r->newQ, r->newP, F,
                                qd_time(r->ph.ctx), r->ph.h->H, &g);
-    rc = st == QD_OK ? write_generated(r, a, F, &g) : qd_diag_ctx(r->ph.ctx);
+    rc = st == QD_OK ? write_generated(r, a, F, &g) : cli_diag_ctx(r->ph.ctx);
     qd_gen_result_free(&g);
     return rc;
 }
@@ -296,18 +296,18 @@ static void can_free(can_run *r) {
     free(r->newP);
     free(r->Q);
     free(r->P);
-    qd_phase_free(&r->ph);
+    cli_phase_free(&r->ph);
 }
 
-int qd_cmd_canonical(int argc, char **argv) {
+int cli_cmd_canonical(int argc, char **argv) {
     can_args a;
     int rc = parse_args(argc, argv, &a);
     if (rc != QD_EXIT_OK)
         return rc;
     can_run r = {0};
-    rc = qd_phase_load(a.file, &r.ph);
+    rc = cli_phase_load(a.file, &r.ph);
     if (rc == QD_EXIT_OK && (rc = new_symbols(&r)) != QD_EXIT_OK)
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
     if (rc == QD_EXIT_OK)
         rc = a.gen ? generate(&r, &a) : check(&r, &a, a.json);
     can_free(&r);

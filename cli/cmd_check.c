@@ -98,7 +98,7 @@ static void header(check *c, const char *path, const qd_eom *e) {
     qd_buf_puts(&c->out, "parameters:");
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         qd_buf_printf(&c->out, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        qd_state_put_double(&c->out, qd_state_value(qd_model_param_value(m, i)));
+        cli_state_put_double(&c->out, cli_state_value(qd_model_param_value(m, i)));
     }
     qd_buf_puts(&c->out, qd_model_nparams(m) ? "\n" : " none\n");
 }
@@ -201,10 +201,10 @@ static void time_dependence(check *c, const qd_eom *e, const qd_expr *L) {
         qd_buf_puts(&c->out, "kinetic energy: T = T2, quadratic in the velocities\n");
 }
 
-static int summarize(check *c, const qd_model_file *mf) {
+static int summarize(check *c, const cli_model_file *mf) {
     qd_eom *e = qd_eom_derive(c->ctx, c->m);
     if (!e)
-        return qd_eom_derive_error(c->ctx, mf);
+        return cli_eom_derive_error(c->ctx, mf);
     header(c, mf->path, e);
     depends(c, "T:", qd_model_kinetic(c->m));
     depends(c, "V:", qd_model_potential(c->m));
@@ -228,21 +228,21 @@ static int summarize(check *c, const qd_model_file *mf) {
         qd_buf_printf(&c->out, "mass matrix: %zu x %zu, not identically singular\n", e->n,
                       e->n);
     qd_eom_free(e);
-    return qd_ctx_status(c->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(c->ctx);
+    return qd_ctx_status(c->ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
 }
 
-int qd_cmd_check(int argc, char **argv) {
+int cli_cmd_check(int argc, char **argv) {
     if (argc != 1 || (argv[0][0] == '-' && argv[0][1])) {
-        qd_diag_error("usage: qdot check FILE");
+        cli_diag_error("usage: qdot check FILE");
         return QD_EXIT_USAGE;
     }
     check c = {.ctx = qd_ctx_new(), .out = QD_BUF_INIT};
     if (!c.ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    qd_model_file mf;
-    int rc = qd_model_file_load(c.ctx, argv[0], &mf);
+    cli_model_file mf;
+    int rc = cli_model_file_load(c.ctx, argv[0], &mf);
     if (rc == QD_EXIT_OK) {
         c.m = mf.model;
         rc = summarize(&c, &mf);
@@ -250,7 +250,7 @@ int qd_cmd_check(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         fputs(qd_buf_str(&c.out), stdout);
     qd_buf_free(&c.out);
-    qd_model_file_free(&mf);
+    cli_model_file_free(&mf);
     qd_ctx_free(c.ctx);
     return rc;
 }

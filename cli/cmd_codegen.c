@@ -37,13 +37,13 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         r->eliminate = true;
         return QD_EXIT_OK;
     }
-    if ((v = qd_cli_value(argc, argv, i, "-o")))
-        return qd_cli_once("-o", &r->dir, v);
-    if ((v = qd_cli_value(argc, argv, i, "--prefix")))
-        return qd_cli_once("--prefix", &r->prefix, v);
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
-        return qd_cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    return qd_cli_bad_option(argv[*i], usage_text);
+    if ((v = cli_value(argc, argv, i, "-o")))
+        return cli_once("-o", &r->dir, v);
+    if ((v = cli_value(argc, argv, i, "--prefix")))
+        return cli_once("--prefix", &r->prefix, v);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
+    return cli_bad_option(argv[*i], usage_text);
 }
 
 /* The file's base name without extension, as a C identifier. */
@@ -80,7 +80,7 @@ static int write_text(const char *dir, const char *name, const char *ext, const 
     if (f && fclose(f) != 0)
         ok = false;
     if (!ok)
-        qd_diag_error("cannot write %s: %s", path, strerror(errno));
+        cli_diag_error("cannot write %s: %s", path, strerror(errno));
     else
         printf("wrote %s\n", path);
     free(path);
@@ -88,16 +88,16 @@ static int write_text(const char *dir, const char *name, const char *ext, const 
 }
 
 static int run(qd_ctx *ctx, cg_run *r) {
-    qd_model_file mf = {0};
+    cli_model_file mf = {0};
     qd_eom *e = NULL;
     qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
     qd_eom_opts opts = {r->eliminate};
-    int rc = qd_cli_load_derive(ctx, r->file, r->nsets, r->sets, NULL, &opts, &mf, &e);
+    int rc = cli_load_derive(ctx, r->file, r->nsets, r->sets, NULL, &opts, &mf, &e);
     if (rc == QD_EXIT_OK && qd_codegen_c(ctx, mf.model, e, r->name, &c, &h) != QD_OK)
-        rc = qd_diag_ctx(ctx);
+        rc = cli_diag_ctx(ctx);
     /* -o names the directory to write into: made when missing (not its parents) */
     if (rc == QD_EXIT_OK && mkdir(r->dir, 0777) != 0 && errno != EEXIST) {
-        qd_diag_error("cannot create the directory %s: %s", r->dir, strerror(errno));
+        cli_diag_error("cannot create the directory %s: %s", r->dir, strerror(errno));
         rc = QD_EXIT_FAIL;
     }
     if (rc == QD_EXIT_OK)
@@ -107,18 +107,18 @@ static int run(qd_ctx *ctx, cg_run *r) {
     qd_buf_free(&c);
     qd_buf_free(&h);
     qd_eom_free(e);
-    qd_model_file_free(&mf);
+    cli_model_file_free(&mf);
     return rc;
 }
 
-int qd_cmd_codegen(int argc, char **argv) {
+int cli_cmd_codegen(int argc, char **argv) {
     cg_run r = {0};
-    int rc = qd_cli_file_args(argc, argv, "codegen", usage_text, &r.file, parse_option, &r);
+    int rc = cli_file_args(argc, argv, "codegen", usage_text, &r.file, parse_option, &r);
     if (rc != QD_EXIT_OK)
         return rc;
     if (r.prefix) {
         if (!valid_name(r.prefix)) {
-            qd_diag_error("--prefix takes a C identifier, not '%s'", r.prefix);
+            cli_diag_error("--prefix takes a C identifier, not '%s'", r.prefix);
             return QD_EXIT_USAGE;
         }
         strcpy(r.name, r.prefix);
@@ -126,13 +126,13 @@ int qd_cmd_codegen(int argc, char **argv) {
         default_name(&r);
     }
     if (r.dir && !r.dir[0]) {  /* "" would write to "/NAME.c" */
-        qd_diag_error("-o takes a directory, not an empty name");
+        cli_diag_error("-o takes a directory, not an empty name");
         return QD_EXIT_USAGE;
     }
     r.dir = r.dir ? r.dir : ".";
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     rc = run(ctx, &r);

@@ -25,7 +25,7 @@
 
 typedef struct eom_args {
     const char *file;
-    qd_eom_format fmt;
+    cli_eom_format fmt;
     bool solve, eliminate;
     const char *sets[MAX_SETS];
     size_t nsets;
@@ -34,17 +34,17 @@ typedef struct eom_args {
 
 typedef struct eom_run {
     qd_ctx *ctx;
-    qd_model_file mf;
+    cli_model_file mf;
     qd_eom *e;
-    qd_state st;
-    qd_cli_subs subs;                             /* --set substitutions */
+    cli_state st;
+    cli_subs subs;                             /* --set substitutions */
     const qd_expr **numbers;                      /* numeric mode: M, f, acc, A, b,
                                                      lambda, R as nodes */
     size_t nreact;                                /* numeric mode: reactions computed */
     const char **react_name;
     const qd_expr **react;                        /* 3 per reaction */
     double *react_res;
-    qd_eom_view view;
+    cli_eom_view view;
 } eom_run;
 
 static const char usage_text[] =
@@ -58,25 +58,25 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         a->solve = true;
     } else if (!strcmp(argv[*i], "--eliminate")) {
         a->eliminate = true;
-    } else if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        if (!qd_eom_format_from_name(v, &a->fmt)) {
-            qd_diag_error("--format takes text, latex, json, sympy or c, not '%s'", v);
+    } else if ((v = cli_value(argc, argv, i, "--format"))) {
+        if (!cli_eom_format_from_name(v, &a->fmt)) {
+            cli_diag_error("--format takes text, latex, json, sympy or c, not '%s'", v);
             return QD_EXIT_USAGE;
         }
-    } else if ((v = qd_cli_value(argc, argv, i, "--set"))) {
+    } else if ((v = cli_value(argc, argv, i, "--set"))) {
         if (a->nsets == MAX_SETS) {
-            qd_diag_error("at most %d --set options", MAX_SETS);
+            cli_diag_error("at most %d --set options", MAX_SETS);
             return QD_EXIT_USAGE;
         }
         a->sets[a->nsets++] = v;
-    } else if ((v = qd_cli_value(argc, argv, i, "--at"))) {
+    } else if ((v = cli_value(argc, argv, i, "--at"))) {
         if (a->at) {
-            qd_diag_error("--at is given twice; name every value in one list");
+            cli_diag_error("--at is given twice; name every value in one list");
             return QD_EXIT_USAGE;
         }
         a->at = v;
     } else {
-        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -84,11 +84,11 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 
 static int parse_args(int argc, char **argv, eom_args *a) {
     *a = (eom_args){.fmt = QD_EOM_TEXT};
-    return qd_cli_file_args(argc, argv, "eom", usage_text, &a->file, parse_option, a);
+    return cli_file_args(argc, argv, "eom", usage_text, &a->file, parse_option, a);
 }
 
 /* x with the --set parameters replaced by their values, re-simplified. */
-static const qd_expr *subs(eom_run *r, const qd_expr *x) { return qd_cli_subst(r->ctx, &r->subs, x); }
+static const qd_expr *subs(eom_run *r, const qd_expr *x) { return cli_subst(r->ctx, &r->subs, x); }
 
 static int substitute(eom_run *r) {
     qd_eom *e = r->e;
@@ -111,7 +111,7 @@ static int substitute(eom_run *r) {
     e->T1 = subs(r, e->T1);
     e->T0 = subs(r, e->T0);
     e->L = subs(r, e->L);
-    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(r->ctx);
+    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->ctx);
 }
 
 static int solve(eom_run *r) {
@@ -125,10 +125,10 @@ static int solve(eom_run *r) {
         return QD_EXIT_OK;
     }
     if (st == QD_ERR_SINGULAR) {
-        qd_diag_error("cannot solve for the accelerations: %s", qd_ctx_message(r->ctx));
+        cli_diag_error("cannot solve for the accelerations: %s", qd_ctx_message(r->ctx));
         return QD_EXIT_FAIL;
     }
-    return qd_diag_ctx(r->ctx);
+    return cli_diag_ctx(r->ctx);
 }
 
 static void singular_at(const eom_run *r) {
@@ -139,9 +139,9 @@ static void singular_at(const eom_run *r) {
         qd_buf_printf(&b, "=%.17g", r->st.vals[i]);
     }
     if (r->e->ncon)
-        qd_diag_error("at %s: %s", qd_buf_str(&b), qd_ctx_message(r->ctx));
+        cli_diag_error("at %s: %s", qd_buf_str(&b), qd_ctx_message(r->ctx));
     else
-        qd_diag_error("the mass matrix is singular at %s: the accelerations are not determined "
+        cli_diag_error("the mass matrix is singular at %s: the accelerations are not determined "
                       "there", qd_buf_str(&b));
     qd_buf_free(&b);
 }
@@ -220,9 +220,9 @@ static qd_status reactions(eom_run *r, const double *lambda) {
  * (qd_eom_eval), kept as number nodes so that every format prints them. */
 static int evaluate(eom_run *r, const char *at) {
     size_t n = r->e->n, m = r->e->ncon, total = count_numbers(r->e);
-    int rc = qd_state_init(r->ctx, r->mf.model, &r->st);
+    int rc = cli_state_init(r->ctx, r->mf.model, &r->st);
     if (rc == QD_EXIT_OK)
-        rc = qd_state_parse(r->ctx, r->mf.model, at, &r->st);
+        rc = cli_state_parse(r->ctx, r->mf.model, at, &r->st);
     if (rc != QD_EXIT_OK)
         return rc;
     double *num = calloc(total + 1, sizeof *num);
@@ -247,7 +247,7 @@ static int evaluate(eom_run *r, const char *at) {
         return QD_EXIT_FAIL;
     }
     if (st != QD_OK) {
-        qd_diag_error("cannot evaluate the equations at this state: %s",
+        cli_diag_error("cannot evaluate the equations at this state: %s",
                       qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
         return QD_EXIT_FAIL;
     }
@@ -255,10 +255,10 @@ static int evaluate(eom_run *r, const char *at) {
 }
 
 static int make_view(eom_run *r) {
-    qd_eom_view *v = &r->view;
+    cli_eom_view *v = &r->view;
     qd_eom *e = r->e;
     size_t n = e->n;
-    *v = (qd_eom_view){.ctx = r->ctx, .mf = &r->mf, .e = e, .M = e->M, .f = e->f, .acc = e->acc,
+    *v = (cli_eom_view){.ctx = r->ctx, .mf = &r->mf, .e = e, .M = e->M, .f = e->f, .acc = e->acc,
                        .A = e->A, .b = e->b, .lambda = e->mult, .T = {e->T2, e->T1, e->T0}};
     v->split = e->T2 && e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0));
     if (!r->numbers)
@@ -278,37 +278,37 @@ static int make_view(eom_run *r) {
     v->react_res = r->react_res;
     for (size_t i = 0; i < 3 && v->T[0]; i++)
         if (!(v->T[i] = at_state(r, v->T[i])))
-            return qd_diag_ctx(r->ctx);
+            return cli_diag_ctx(r->ctx);
     return QD_EXIT_OK;
 }
 
-static int emit(eom_run *r, qd_eom_format fmt) {
+static int emit(eom_run *r, cli_eom_format fmt) {
     int rc = make_view(r);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_buf b = QD_BUF_INIT;
-    qd_status st = qd_eom_write(&r->view, fmt, &b);
+    qd_status st = cli_eom_write(&r->view, fmt, &b);
     if (st == QD_OK && !b.failed)
         fputs(qd_buf_str(&b), stdout);
     else
-        qd_diag_error("cannot print the equations: %s",
+        cli_diag_error("cannot print the equations: %s",
                       qd_status_str(b.failed ? QD_ERR_NOMEM : st));
     qd_buf_free(&b);
     return st == QD_OK && !b.failed ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
-int qd_cmd_eom(int argc, char **argv) {
+int cli_cmd_eom(int argc, char **argv) {
     eom_args a;
     int rc = parse_args(argc, argv, &a);
     if (rc != QD_EXIT_OK)
         return rc;
     eom_run r = {.ctx = qd_ctx_new()};
     if (!r.ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     qd_eom_opts opts = {.eliminate = a.eliminate};
-    rc = qd_cli_load_derive(r.ctx, a.file, a.nsets, a.sets, &r.subs, &opts, &r.mf, &r.e);
+    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, &r.subs, &opts, &r.mf, &r.e);
     if (rc == QD_EXIT_OK)
         rc = substitute(&r);
     if (rc == QD_EXIT_OK)
@@ -319,10 +319,10 @@ int qd_cmd_eom(int argc, char **argv) {
     free(r.react_name);
     free(r.react);
     free(r.react_res);
-    qd_state_free(&r.st);
+    cli_state_free(&r.st);
     if (r.e)
         qd_eom_free(r.e);
-    qd_model_file_free(&r.mf);
+    cli_model_file_free(&r.mf);
     qd_ctx_free(r.ctx);
     return rc;
 }

@@ -30,23 +30,23 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     eq_args *a = data;
     const char *v;
     int f;
-    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        int rc = qd_cli_choice("--format", v, formats, &f);
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
         a->json = f == 1;
         return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--near")))
-        return qd_cli_once("--near", &a->near, v);
-    if ((v = qd_cli_value(argc, argv, i, "--box")))
-        return qd_cli_once("--box", &a->box, v);
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
-        return qd_cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
-    return qd_cli_bad_option(argv[*i], usage_text);
+    if ((v = cli_value(argc, argv, i, "--near")))
+        return cli_once("--near", &a->near, v);
+    if ((v = cli_value(argc, argv, i, "--box")))
+        return cli_once("--box", &a->box, v);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
+    return cli_bad_option(argv[*i], usage_text);
 }
 
 enum { MAX_FAMILY_SHOWN = 10 };
 
-static void put_text(qd_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
+static void put_text(cli_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
     const qd_eom *e = r->e;
     qd_buf_printf(b, "%zu equilibri%s (%s%s)\n", eq->count, eq->count == 1 ? "um" : "a",
                   eq->method, eq->exact ? ": the complete set, angles in (-pi, pi]" : "");
@@ -57,10 +57,10 @@ static void put_text(qd_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
         qd_buf_printf(b, "%3zu  ", i + 1);
         for (size_t j = 0; j < e->n; j++) {
             qd_buf_printf(b, "%s%s = ", j ? ", " : "", qd_expr_name(e->q[j]));
-            qd_lin_put_value(r, p, j, b);
+            cli_lin_put_value(r, p, j, b);
             if (p->exact && !qd_is_number(p->exact[j])) {
                 qd_buf_puts(b, " (");
-                qd_state_put_result(b, p->q[j]);
+                cli_state_put_result(b, p->q[j]);
                 qd_buf_puts(b, ")");
             }
         }
@@ -83,79 +83,79 @@ static void put_text(qd_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
                        "neutral direction); the points listed are samples of it\n");
 }
 
-static void put_json(qd_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
+static void put_json(cli_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
     const qd_eom *e = r->e;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "method");
-    qd_json_string(&j, eq->method);
-    qd_json_key(&j, "exact");
-    qd_json_bool(&j, eq->exact);
-    qd_json_key(&j, "continuum");
-    qd_json_bool(&j, eq->continuum);
-    qd_json_key(&j, "equilibria");
-    qd_json_begin_array(&j);
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "method");
+    cli_json_string(&j, eq->method);
+    cli_json_key(&j, "exact");
+    cli_json_bool(&j, eq->exact);
+    cli_json_key(&j, "continuum");
+    cli_json_bool(&j, eq->continuum);
+    cli_json_key(&j, "equilibria");
+    cli_json_begin_array(&j);
     for (size_t i = 0; i < eq->count; i++) {
         const qd_equilibrium *p = &eq->pts[i];
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "equilibrium");
-        qd_json_begin_object(&j);
+        cli_json_begin_object(&j);
+        cli_json_key(&j, "equilibrium");
+        cli_json_begin_object(&j);
         for (size_t k = 0; k < e->n; k++) {
-            qd_json_key(&j, qd_expr_name(e->q[k]));
-            qd_json_number(&j, p->q[k]);
+            cli_json_key(&j, qd_expr_name(e->q[k]));
+            cli_json_number(&j, p->q[k]);
         }
-        qd_json_end_object(&j);
+        cli_json_end_object(&j);
         if (p->exact) {
-            qd_json_key(&j, "exact");
-            qd_json_begin_object(&j);
+            cli_json_key(&j, "exact");
+            cli_json_begin_object(&j);
             for (size_t k = 0; k < e->n; k++) {
-                qd_json_key(&j, qd_expr_name(e->q[k]));
-                qd_json_expr(&j, r->ctx, p->exact[k]);
+                cli_json_key(&j, qd_expr_name(e->q[k]));
+                cli_json_expr(&j, r->ctx, p->exact[k]);
             }
-            qd_json_end_object(&j);
+            cli_json_end_object(&j);
         }
-        qd_json_key(&j, "kind");
-        qd_json_string(&j, qd_eq_kind_name(p->kind));
-        qd_json_key(&j, "hessian_signs");
-        qd_json_begin_array(&j);
-        qd_json_number(&j, (double)p->npos);
-        qd_json_number(&j, (double)p->nneg);
-        qd_json_number(&j, (double)p->nzero);
-        qd_json_end_array(&j);
-        qd_json_key(&j, "symmetric");
-        qd_json_bool(&j, p->symmetric);
-        qd_json_key(&j, "residual");
-        qd_json_number(&j, p->residual);
-        qd_json_end_object(&j);
+        cli_json_key(&j, "kind");
+        cli_json_string(&j, qd_eq_kind_name(p->kind));
+        cli_json_key(&j, "hessian_signs");
+        cli_json_begin_array(&j);
+        cli_json_number(&j, (double)p->npos);
+        cli_json_number(&j, (double)p->nneg);
+        cli_json_number(&j, (double)p->nzero);
+        cli_json_end_array(&j);
+        cli_json_key(&j, "symmetric");
+        cli_json_bool(&j, p->symmetric);
+        cli_json_key(&j, "residual");
+        cli_json_number(&j, p->residual);
+        cli_json_end_object(&j);
     }
-    qd_json_end_array(&j);
-    qd_json_end_object(&j);
+    cli_json_end_array(&j);
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    b->failed = b->failed || !cli_json_ok(&j);
 }
 
-int qd_cmd_equilibria(int argc, char **argv) {
+int cli_cmd_equilibria(int argc, char **argv) {
     eq_args a = {0};
-    int rc = qd_cli_file_args(argc, argv, "equilibria", usage_text, &a.file, parse_option, &a);
+    int rc = cli_file_args(argc, argv, "equilibria", usage_text, &a.file, parse_option, &a);
     if (rc != QD_EXIT_OK)
         return rc;
-    qd_lin_run r = {.ctx = qd_ctx_new()};
+    cli_lin_run r = {.ctx = qd_ctx_new()};
     if (!r.ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     qd_equilibria eq = {0};
-    rc = qd_lin_load(&r, a.file, a.sets, a.nsets);
+    rc = cli_lin_load(&r, a.file, a.sets, a.nsets);
     if (rc == QD_EXIT_OK)
-        rc = qd_lin_equilibria(&r, a.near, a.box, &eq);
+        rc = cli_lin_equilibria(&r, a.near, a.box, &eq);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
         (a.json ? put_json : put_text)(&r, &eq, &b);
-        rc = qd_cli_emit(&b, "equilibria");
+        rc = cli_emit(&b, "equilibria");
     }
     qd_equilibria_free(&eq);
-    qd_lin_free(&r);
+    cli_lin_free(&r);
     qd_ctx_free(r.ctx);
     return rc;
 }

@@ -21,8 +21,8 @@ static int parse_args(int argc, char **argv, expr_args *a, size_t min_vars, cons
     a->fmt = QD_FMT_TEXT;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--format")) {
-            if (i + 1 >= argc || !qd_cli_format(argv[i + 1], &a->fmt)) {
-                qd_diag_error("--format takes text, latex, c or sympy");
+            if (i + 1 >= argc || !cli_format(argv[i + 1], &a->fmt)) {
+                cli_diag_error("--format takes text, latex, c or sympy");
                 return QD_EXIT_USAGE;
             }
             i++;
@@ -31,16 +31,16 @@ static int parse_args(int argc, char **argv, expr_args *a, size_t min_vars, cons
         } else if (a->nvars < 16) {
             a->vars[a->nvars++] = argv[i];
         } else {
-            qd_diag_error("too many arguments to '%s'", cmd);
+            cli_diag_error("too many arguments to '%s'", cmd);
             return QD_EXIT_USAGE;
         }
     }
     if (!a->text || a->nvars < min_vars) {
-        qd_diag_error("usage: qdot %s EXPR%s [--format F]", cmd, min_vars ? " VAR [VAR...]" : "");
+        cli_diag_error("usage: qdot %s EXPR%s [--format F]", cmd, min_vars ? " VAR [VAR...]" : "");
         return QD_EXIT_USAGE;
     }
     if (!min_vars && a->nvars) {
-        qd_diag_error("'%s' takes one expression; unexpected '%s'", cmd, a->vars[0]);
+        cli_diag_error("'%s' takes one expression; unexpected '%s'", cmd, a->vars[0]);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -48,13 +48,13 @@ static int parse_args(int argc, char **argv, expr_args *a, size_t min_vars, cons
 
 static int emit(qd_ctx *ctx, const qd_expr *e, qd_format fmt) {
     if (!e)
-        return qd_diag_ctx(ctx);
+        return cli_diag_ctx(ctx);
     qd_buf b = QD_BUF_INIT;
     qd_status st = qd_print(ctx, e, fmt, &b);
     if (st == QD_OK)
         printf("%s\n", qd_buf_str(&b));
     else
-        qd_diag_error("cannot print: %s", qd_status_str(st));
+        cli_diag_error("cannot print: %s", qd_status_str(st));
     qd_buf_free(&b);
     return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
@@ -68,20 +68,20 @@ static int run(int argc, char **argv, const char *cmd, size_t min_vars, unary_op
         return rc;
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     qd_read_error err;
     const qd_expr *e = qd_read(ctx, a.text, NULL, &err);
     if (!e) {
-        qd_diag_read("<expression>", a.text, &err);
+        cli_diag_read("<expression>", a.text, &err);
         qd_ctx_free(ctx);
         return QD_EXIT_USAGE;
     }
     for (size_t i = 0; i < a.nvars && e; i++) {
         const qd_expr *v = qd_lookup(ctx, a.vars[i]);
         if (!v) {
-            qd_diag_error("'%s' does not occur in the expression", a.vars[i]);
+            cli_diag_error("'%s' does not occur in the expression", a.vars[i]);
             qd_ctx_free(ctx);
             return QD_EXIT_USAGE;
         }
@@ -94,7 +94,7 @@ static int run(int argc, char **argv, const char *cmd, size_t min_vars, unary_op
     return rc;
 }
 
-int qd_cmd_diff(int argc, char **argv) { return run(argc, argv, "diff", 1, NULL); }
-int qd_cmd_expand(int argc, char **argv) { return run(argc, argv, "expand", 0, qd_expand); }
-int qd_cmd_simplify(int argc, char **argv) { return run(argc, argv, "simplify", 0, qd_simplify); }
-int qd_cmd_print(int argc, char **argv) { return run(argc, argv, "print", 0, NULL); }
+int cli_cmd_diff(int argc, char **argv) { return run(argc, argv, "diff", 1, NULL); }
+int cli_cmd_expand(int argc, char **argv) { return run(argc, argv, "expand", 0, qd_expand); }
+int cli_cmd_simplify(int argc, char **argv) { return run(argc, argv, "simplify", 0, qd_simplify); }
+int cli_cmd_print(int argc, char **argv) { return run(argc, argv, "print", 0, NULL); }

@@ -25,14 +25,14 @@ typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } ham_fmt;
 
 typedef struct ham_run {
     qd_ctx *ctx;
-    qd_model_file mf;
+    cli_model_file mf;
     qd_eom *e;
     qd_ham *h;
     ham_fmt fmt;
     const char *file, *at, *sets[MAX_SETS];
     size_t nsets;
-    qd_cli_subs subs;
-    qd_state st;
+    cli_subs subs;
+    cli_state st;
     const qd_expr **syms; /* the state's symbols, then the momenta */
     double *vals;
     size_t nsyms;
@@ -48,24 +48,24 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     ham_run *r = data;
     const char *v;
     int f;
-    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        int rc = qd_cli_choice("--format", v, formats, &f);
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
         r->fmt = (ham_fmt)f;
         return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
-        return qd_cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    if ((v = qd_cli_value(argc, argv, i, "--at")))
-        return qd_cli_once("--at", &r->at, v);
-    return qd_cli_bad_option(argv[*i], usage_text);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
+    if ((v = cli_value(argc, argv, i, "--at")))
+        return cli_once("--at", &r->at, v);
+    return cli_bad_option(argv[*i], usage_text);
 }
 
 static int parse_args(int argc, char **argv, ham_run *r) {
-    return qd_cli_file_args(argc, argv, "hamiltonian", usage_text, &r->file, parse_option, r);
+    return cli_file_args(argc, argv, "hamiltonian", usage_text, &r->file, parse_option, r);
 }
 
 static const qd_expr *subs(ham_run *r, const qd_expr *x) {
-    return qd_cli_subst(r->ctx, &r->subs, x);
+    return cli_subst(r->ctx, &r->subs, x);
 }
 
 static int substitute(ham_run *r) {
@@ -79,7 +79,7 @@ static int substitute(ham_run *r) {
     }
     h->H = subs(r, h->H);
     h->H_minus_E = subs(r, h->H_minus_E);
-    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(r->ctx);
+    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->ctx);
 }
 
 /* ---- --at ------------------------------------------------------------------ */
@@ -96,7 +96,7 @@ static long momentum_index(const ham_run *r, const char *item, size_t len) {
 }
 
 /* One "NAME=VALUE" of the list: a momentum is read here, the rest is
- * appended to rest for qd_state_parse. */
+ * appended to rest for cli_state_parse. */
 static int at_item(ham_run *r, const char *s, size_t len, char *rest) {
     while (len && *s == ' ')
         s++, len--;
@@ -113,7 +113,7 @@ static int at_item(ham_run *r, const char *s, size_t len, char *rest) {
     memcpy(value, eq + 1, vl);
     value[vl] = '\0';
     const qd_expr *exact;
-    return qd_state_number(r->ctx, qd_expr_name(r->h->p[j]), value, &exact,
+    return cli_state_number(r->ctx, qd_expr_name(r->h->p[j]), value, &exact,
                            &r->vals[r->st.n + (size_t)j]);
 }
 
@@ -134,10 +134,10 @@ static int split_at(ham_run *r, char *rest) {
 
 static int state_at(ham_run *r) {
     if (strlen(r->at) >= MAX_AT) {
-        qd_diag_error("--at is too long");
+        cli_diag_error("--at is too long");
         return QD_EXIT_USAGE;
     }
-    int rc = qd_state_init(r->ctx, r->mf.model, &r->st);
+    int rc = cli_state_init(r->ctx, r->mf.model, &r->st);
     if (rc != QD_EXIT_OK)
         return rc;
     r->nsyms = r->st.n + r->h->n;
@@ -148,7 +148,7 @@ static int state_at(ham_run *r) {
     char rest[MAX_AT];
     rc = split_at(r, rest);
     if (rc == QD_EXIT_OK && rest[0])
-        rc = qd_state_parse(r->ctx, r->mf.model, rest, &r->st);
+        rc = cli_state_parse(r->ctx, r->mf.model, rest, &r->st);
     memcpy(r->syms, r->st.syms, r->st.n * sizeof *r->syms);
     memcpy(r->vals, r->st.vals, r->st.n * sizeof *r->vals);
     memcpy(r->syms + r->st.n, r->h->p, r->h->n * sizeof *r->syms);
@@ -173,7 +173,7 @@ static int evaluate(ham_run *r) {
         if (!(h->dq[j] = number(r, h->dq[j])) || !(h->dp[j] = number(r, h->dp[j])))
             break;
     if (qd_ctx_status(r->ctx) != QD_OK) {
-        qd_diag_error("cannot evaluate at this point: %s", qd_ctx_message(r->ctx));
+        cli_diag_error("cannot evaluate at this point: %s", qd_ctx_message(r->ctx));
         return QD_EXIT_FAIL;
     }
     return QD_EXIT_OK;
@@ -291,84 +291,84 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
 }
 
 /* A string of x, or its number with --at. */
-static void json_expr(const ham_run *r, qd_json *j, const qd_expr *x) {
+static void json_expr(const ham_run *r, cli_json *j, const qd_expr *x) {
     if (r->at && x && qd_is_number(x))
-        qd_json_number(j, qd_state_value(x));
+        cli_json_number(j, cli_state_value(x));
     else
-        qd_json_expr(j, r->ctx, x);
+        cli_json_expr(j, r->ctx, x);
 }
 
-static void json_list(const ham_run *r, qd_json *j, const char *key, const qd_expr *const *x) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
+static void json_list(const ham_run *r, cli_json *j, const char *key, const qd_expr *const *x) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t k = 0; k < r->h->n; k++)
         if (x[k])
             json_expr(r, j, x[k]);
         else
-            qd_json_null(j);
-    qd_json_end_array(j);
+            cli_json_null(j);
+    cli_json_end_array(j);
 }
 
-static void json_point(const ham_run *r, qd_json *j) {
-    qd_json_key(j, "at");
-    qd_json_begin_object(j);
+static void json_point(const ham_run *r, cli_json *j) {
+    cli_json_key(j, "at");
+    cli_json_begin_object(j);
     size_t nq = r->h->n;
     for (size_t i = 0; i < r->nsyms; i++)
         if (i < nq || i == 2 * nq || i >= r->st.n) {
-            qd_json_key(j, qd_expr_name(r->syms[i]));
-            qd_json_number(j, r->vals[i]);
+            cli_json_key(j, qd_expr_name(r->syms[i]));
+            cli_json_number(j, r->vals[i]);
         }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
 }
 
 static void write_json(const ham_run *r, qd_buf *b) {
     const qd_ham *h = r->h;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "file");
-    qd_json_string(&j, r->mf.path);
-    qd_json_key(&j, "coordinates");
-    qd_json_begin_array(&j);
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "file");
+    cli_json_string(&j, r->mf.path);
+    cli_json_key(&j, "coordinates");
+    cli_json_begin_array(&j);
     for (size_t k = 0; k < h->n; k++)
-        qd_json_string(&j, qd_expr_name(h->q[k]));
-    qd_json_end_array(&j);
-    qd_json_key(&j, "momenta");
-    qd_json_begin_array(&j);
+        cli_json_string(&j, qd_expr_name(h->q[k]));
+    cli_json_end_array(&j);
+    cli_json_key(&j, "momenta");
+    cli_json_begin_array(&j);
     for (size_t k = 0; k < h->n; k++)
-        qd_json_string(&j, qd_expr_name(h->p[k]));
-    qd_json_end_array(&j);
+        cli_json_string(&j, qd_expr_name(h->p[k]));
+    cli_json_end_array(&j);
     json_list(r, &j, "definitions", h->pdef);
     json_list(r, &j, "velocities", h->vel);
     if (r->at)
         json_point(r, &j);
-    qd_json_key(&j, "H");
+    cli_json_key(&j, "H");
     json_expr(r, &j, h->H);
     json_list(r, &j, "dq_dt", h->dq);
     json_list(r, &j, "dp_dt", h->dp);
-    qd_json_key(&j, "H_is_energy");
+    cli_json_key(&j, "H_is_energy");
     if (h->H_minus_E)
-        qd_json_bool(&j, h->is_energy);
+        cli_json_bool(&j, h->is_energy);
     else
-        qd_json_null(&j);
-    qd_json_key(&j, "H_minus_energy");
-    qd_json_expr(&j, r->ctx, h->H_minus_E);
-    qd_json_key(&j, "conserved");
-    qd_json_bool(&j, h->conserved);
-    qd_json_key(&j, "H_given");
-    qd_json_bool(&j, h->H_given);
+        cli_json_null(&j);
+    cli_json_key(&j, "H_minus_energy");
+    cli_json_expr(&j, r->ctx, h->H_minus_E);
+    cli_json_key(&j, "conserved");
+    cli_json_bool(&j, h->conserved);
+    cli_json_key(&j, "H_given");
+    cli_json_bool(&j, h->H_given);
     if (h->H_given && !r->at) { /* the inverse Legendre transform, or why there is none */
-        qd_json_key(&j, "L");
+        cli_json_key(&j, "L");
         json_expr(r, &j, h->L_from_H);
-        qd_json_key(&j, "L_error");
+        cli_json_key(&j, "L_error");
         if (h->L_from_H)
-            qd_json_null(&j);
+            cli_json_null(&j);
         else
-            qd_json_string(&j, h->L_why);
+            cli_json_string(&j, h->L_why);
     }
-    qd_json_end_object(&j);
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    b->failed = b->failed || !cli_json_ok(&j);
 }
 
 static int emit(ham_run *r) {
@@ -379,18 +379,18 @@ static int emit(ham_run *r) {
         write_sympy(r, &b);
     else
         write_lines(r, &b);
-    return qd_cli_emit(&b, "Hamiltonian");
+    return cli_emit(&b, "Hamiltonian");
 }
 
 static int run(ham_run *r) {
-    int rc = qd_model_file_load(r->ctx, r->file, &r->mf);
+    int rc = cli_model_file_load(r->ctx, r->file, &r->mf);
     if (rc == QD_EXIT_OK)
-        rc = qd_cli_apply_sets(r->ctx, r->mf.model, r->nsets, r->sets, &r->subs);
+        rc = cli_apply_sets(r->ctx, r->mf.model, r->nsets, r->sets, &r->subs);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
     if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
-        rc = qd_eom_derive_error(r->ctx, &r->mf);
+        rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->ctx, r->mf.model, r->e)))
-        rc = qd_diag_ctx(r->ctx);
+        rc = cli_diag_ctx(r->ctx);
     if (rc == QD_EXIT_OK)
         rc = substitute(r);
     if (rc == QD_EXIT_OK && r->at)
@@ -398,22 +398,22 @@ static int run(ham_run *r) {
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 
-int qd_cmd_hamiltonian(int argc, char **argv) {
+int cli_cmd_hamiltonian(int argc, char **argv) {
     ham_run r = {.fmt = FMT_TEXT};
     int rc = parse_args(argc, argv, &r);
     if (rc != QD_EXIT_OK)
         return rc;
     if (!(r.ctx = qd_ctx_new())) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     rc = run(&r);
     free(r.syms);
     free(r.vals);
-    qd_state_free(&r.st);
+    cli_state_free(&r.st);
     qd_ham_free(r.h);
     qd_eom_free(r.e);
-    qd_model_file_free(&r.mf);
+    cli_model_file_free(&r.mf);
     qd_ctx_free(r.ctx);
     return rc;
 }

@@ -29,13 +29,13 @@ typedef struct given {
 
 typedef struct int_run {
     qd_ctx *ctx;
-    qd_model_file mf;
+    cli_model_file mf;
     qd_eom *e;
     qd_integrals *I;
     bool json, search;
     const char *file, *sets[MAX_OPT], *syms[MAX_OPT], *ints[MAX_OPT];
     size_t nsets, nsymopt, nintopt;
-    qd_cli_subs subs;
+    cli_subs subs;
     size_t nnoether, nproposed;
     qd_noether *noether;
     qd_int_proposed *proposed;
@@ -53,8 +53,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     int_run *r = data;
     const char *v;
     int f;
-    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        int rc = qd_cli_choice("--format", v, formats, &f);
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
         r->json = f == 1;
         return rc;
     }
@@ -62,13 +62,13 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         r->search = false;
         return QD_EXIT_OK;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
-        return qd_cli_push("--set", r->sets, &r->nsets, MAX_OPT, v);
-    if ((v = qd_cli_value(argc, argv, i, "--symmetry")))
-        return qd_cli_push("--symmetry", r->syms, &r->nsymopt, MAX_OPT, v);
-    if ((v = qd_cli_value(argc, argv, i, "--integral")))
-        return qd_cli_push("--integral", r->ints, &r->nintopt, MAX_OPT, v);
-    return qd_cli_bad_option(argv[*i], usage_text);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", r->sets, &r->nsets, MAX_OPT, v);
+    if ((v = cli_value(argc, argv, i, "--symmetry")))
+        return cli_push("--symmetry", r->syms, &r->nsymopt, MAX_OPT, v);
+    if ((v = cli_value(argc, argv, i, "--integral")))
+        return cli_push("--integral", r->ints, &r->nintopt, MAX_OPT, v);
+    return cli_bad_option(argv[*i], usage_text);
 }
 
 /* ---- --symmetry and --integral ------------------------------------------- */
@@ -88,13 +88,13 @@ static int parse_given(int_run *r) {
         if (!(g->xi = calloc(n + 1, sizeof *g->xi)))
             return QD_EXIT_FAIL;
         snprintf(label, sizeof label, "S%zu", k + 1);
-        rc = qd_cli_symmetry(r->ctx, &r->mf, "--symmetry", r->syms[k], label, g->name,
+        rc = cli_symmetry(r->ctx, &r->mf, "--symmetry", r->syms[k], label, g->name,
                              sizeof g->name, g->xi);
     }
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->nintopt; k++) {
         given *g = &r->gint[k];
         snprintf(label, sizeof label, "J%zu", k + 1);
-        rc = qd_cli_integral(r->ctx, &r->mf, "--integral", r->ints[k], label, g->name,
+        rc = cli_integral(r->ctx, &r->mf, "--integral", r->ints[k], label, g->name,
                              sizeof g->name, &g->expr);
     }
     return rc;
@@ -104,10 +104,10 @@ static int parse_given(int_run *r) {
 
 static int failed(int_run *r) {
     if (qd_ctx_status(r->ctx) == QD_ERR_ARG) {
-        qd_diag_error("%s", qd_ctx_message(r->ctx));
+        cli_diag_error("%s", qd_ctx_message(r->ctx));
         return QD_EXIT_USAGE;
     }
-    return qd_diag_ctx(r->ctx);
+    return cli_diag_ctx(r->ctx);
 }
 
 static int noether_all(int_run *r) {
@@ -329,33 +329,33 @@ static void write_text(const int_run *r, qd_buf *b) {
 
 /* ---- JSON ---------------------------------------------------------------------- */
 
-static void jexpr(const int_run *r, qd_json *j, const char *key, const qd_expr *x) {
-    qd_json_key(j, key);
-    qd_json_expr(j, r->ctx, x);
+static void jexpr(const int_run *r, cli_json *j, const char *key, const qd_expr *x) {
+    cli_json_key(j, key);
+    cli_json_expr(j, r->ctx, x);
 }
 
-static void jbool(qd_json *j, const char *key, bool v) {
-    qd_json_key(j, key);
-    qd_json_bool(j, v);
+static void jbool(cli_json *j, const char *key, bool v) {
+    cli_json_key(j, key);
+    cli_json_bool(j, v);
 }
 
-static void jstr(qd_json *j, const char *key, const char *v) {
-    qd_json_key(j, key);
+static void jstr(cli_json *j, const char *key, const char *v) {
+    cli_json_key(j, key);
     if (v)
-        qd_json_string(j, v);
+        cli_json_string(j, v);
     else
-        qd_json_null(j);
+        cli_json_null(j);
 }
 
-static void json_noether(const int_run *r, qd_json *j, const qd_noether *nt) {
-    qd_json_begin_object(j);
+static void json_noether(const int_run *r, cli_json *j, const qd_noether *nt) {
+    cli_json_begin_object(j);
     jstr(j, "name", nt->name);
-    qd_json_key(j, "field");
-    qd_json_begin_object(j);
+    cli_json_key(j, "field");
+    cli_json_begin_object(j);
     for (size_t k = 0; k < r->e->n; k++)
         if (!qd_is_zero(nt->xi[k]))
             jexpr(r, j, qname(r, k), nt->xi[k]);
-    qd_json_end_object(j);
+    cli_json_end_object(j);
     jbool(j, "invariant", nt->invariant);
     jexpr(r, j, "dL_deps", nt->dL);
     jexpr(r, j, "F", nt->F);
@@ -364,48 +364,48 @@ static void json_noether(const int_run *r, qd_json *j, const qd_noether *nt) {
     jbool(j, "conserved", nt->conserved);
     jexpr(r, j, "dIdt", nt->remainder);
     jbool(j, "numeric", nt->numeric);
-    qd_json_end_object(j);
+    cli_json_end_object(j);
 }
 
-static void json_cyclic(const int_run *r, qd_json *j) {
-    qd_json_key(j, "cyclic");
-    qd_json_begin_array(j);
+static void json_cyclic(const int_run *r, cli_json *j) {
+    cli_json_key(j, "cyclic");
+    cli_json_begin_array(j);
     for (size_t i = 0; i < r->I->ncyclic; i++) {
         const qd_int_cyclic *c = &r->I->cyclic[i];
-        qd_json_begin_object(j);
+        cli_json_begin_object(j);
         jstr(j, "coordinate", qname(r, c->coord));
         jexpr(r, j, "momentum", c->momentum);
         jbool(j, "conserved", c->conserved);
         jstr(j, "obstruction", c->obstruction);
-        qd_json_end_object(j);
+        cli_json_end_object(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
-static void json_jacobi(const int_run *r, qd_json *j) {
+static void json_jacobi(const int_run *r, cli_json *j) {
     const qd_int_jacobi *J = &r->I->jacobi;
-    qd_json_key(j, "jacobi");
-    qd_json_begin_object(j);
+    cli_json_key(j, "jacobi");
+    cli_json_begin_object(j);
     jexpr(r, j, "h", J->h);
     jbool(j, "explicit_t", J->explicit_t);
     jbool(j, "conserved", J->conserved);
     jstr(j, "not_conserved", J->not_conserved);
     jexpr(r, j, "energy", J->energy);
-    qd_json_key(j, "equals_energy");
+    cli_json_key(j, "equals_energy");
     if (J->equals_energy < 0)
-        qd_json_null(j);
+        cli_json_null(j);
     else
-        qd_json_bool(j, J->equals_energy == 1);
+        cli_json_bool(j, J->equals_energy == 1);
     jexpr(r, j, "h_minus_energy", J->h_minus_E);
     jstr(j, "reason", J->reason);
     jbool(j, "numeric", J->numeric);
-    qd_json_end_object(j);
+    cli_json_end_object(j);
 }
 
-static void json_balance(const int_run *r, qd_json *j) {
+static void json_balance(const int_run *r, cli_json *j) {
     const qd_int_balance *B = &r->I->balance;
-    qd_json_key(j, "energy_balance");
-    qd_json_begin_object(j);
+    cli_json_key(j, "energy_balance");
+    cli_json_begin_object(j);
     jexpr(r, j, "dhdt", B->dhdt);
     jstr(j, "formula", B->formula);
     jexpr(r, j, "expected", B->expected);
@@ -413,58 +413,58 @@ static void json_balance(const int_run *r, qd_json *j) {
     jbool(j, "verified", B->verified);
     jbool(j, "numeric", B->numeric);
     jexpr(r, j, "remainder", B->remainder);
-    qd_json_end_object(j);
+    cli_json_end_object(j);
 }
 
-static void json_lists(const int_run *r, qd_json *j) {
-    qd_json_key(j, "found");
-    qd_json_begin_array(j);
+static void json_lists(const int_run *r, cli_json *j) {
+    cli_json_key(j, "found");
+    cli_json_begin_array(j);
     for (size_t i = 0; i < r->I->nfound; i++)
         json_noether(r, j, &r->I->found[i]);
-    qd_json_end_array(j);
-    qd_json_key(j, "tested");
-    qd_json_begin_array(j);
+    cli_json_end_array(j);
+    cli_json_key(j, "tested");
+    cli_json_begin_array(j);
     for (size_t i = 0; i < r->I->ntested; i++)
-        qd_json_string(j, r->I->tested[i]);
-    qd_json_end_array(j);
-    qd_json_key(j, "noether");
-    qd_json_begin_array(j);
+        cli_json_string(j, r->I->tested[i]);
+    cli_json_end_array(j);
+    cli_json_key(j, "noether");
+    cli_json_begin_array(j);
     for (size_t i = 0; i < r->nnoether; i++)
         json_noether(r, j, &r->noether[i]);
-    qd_json_end_array(j);
-    qd_json_key(j, "proposed");
-    qd_json_begin_array(j);
+    cli_json_end_array(j);
+    cli_json_key(j, "proposed");
+    cli_json_begin_array(j);
     for (size_t i = 0; i < r->nproposed; i++) {
         const qd_int_proposed *p = &r->proposed[i];
-        qd_json_begin_object(j);
+        cli_json_begin_object(j);
         jstr(j, "name", p->name);
         jexpr(r, j, "expr", p->expr);
         jbool(j, "conserved", p->conserved);
         jexpr(r, j, "remainder", p->remainder);
         jbool(j, "numeric", p->numeric);
-        qd_json_end_object(j);
+        cli_json_end_object(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
 static void write_json(const int_run *r, qd_buf *b) {
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
     jstr(&j, "file", r->mf.path);
-    qd_json_key(&j, "coordinates");
-    qd_json_begin_array(&j);
+    cli_json_key(&j, "coordinates");
+    cli_json_begin_array(&j);
     for (size_t k = 0; k < r->e->n; k++)
-        qd_json_string(&j, qname(r, k));
-    qd_json_end_array(&j);
+        cli_json_string(&j, qname(r, k));
+    cli_json_end_array(&j);
     jexpr(r, &j, "L", r->I->L);
     json_cyclic(r, &j);
     json_jacobi(r, &j);
     json_balance(r, &j);
     json_lists(r, &j);
-    qd_json_end_object(&j);
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    b->failed = b->failed || !cli_json_ok(&j);
 }
 
 static int emit(int_run *r) {
@@ -473,11 +473,11 @@ static int emit(int_run *r) {
         write_json(r, &b);
     else
         write_text(r, &b);
-    return qd_cli_emit(&b, "integrals");
+    return cli_emit(&b, "integrals");
 }
 
 static int run(int_run *r) {
-    int rc = qd_cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
+    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
                                 &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_given(r);
@@ -492,13 +492,13 @@ static int run(int_run *r) {
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 
-int qd_cmd_integrals(int argc, char **argv) {
+int cli_cmd_integrals(int argc, char **argv) {
     int_run r = {.search = true};
-    int rc = qd_cli_file_args(argc, argv, "integrals", usage_text, &r.file, parse_option, &r);
+    int rc = cli_file_args(argc, argv, "integrals", usage_text, &r.file, parse_option, &r);
     if (rc != QD_EXIT_OK)
         return rc;
     if (!(r.ctx = qd_ctx_new())) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     rc = run(&r);
@@ -512,7 +512,7 @@ int qd_cmd_integrals(int argc, char **argv) {
     free(r.gint);
     qd_integrals_free(r.I);
     qd_eom_free(r.e);
-    qd_model_file_free(&r.mf);
+    cli_model_file_free(&r.mf);
     qd_ctx_free(r.ctx);
     return rc;
 }

@@ -27,7 +27,7 @@ typedef struct modes_args {
 } modes_args;
 
 typedef struct modes_run {
-    qd_lin_run lr;
+    cli_lin_run lr;
     qd_equilibria eq;
     const qd_equilibrium *pt;   /* NULL with --about */
     double *q0;
@@ -49,32 +49,32 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     modes_args *a = data;
     const char *v;
     int f;
-    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        int rc = qd_cli_choice("--format", v, formats, &f);
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
         a->json = f == 1;
         return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--at-equilibrium"))) {
+    if ((v = cli_value(argc, argv, i, "--at-equilibrium"))) {
         char *end;
         if (a->at_eq) {
-            qd_diag_error("--at-equilibrium is given twice; give it once");
+            cli_diag_error("--at-equilibrium is given twice; give it once");
             return QD_EXIT_USAGE;
         }
         a->at_eq = strtol(v, &end, 10);
         if (*end || a->at_eq < 1) {
-            qd_diag_error("--at-equilibrium takes a number 1, 2, ... (as `qdot equilibria` "
+            cli_diag_error("--at-equilibrium takes a number 1, 2, ... (as `qdot equilibria` "
                           "lists them), not '%s'", v);
             return QD_EXIT_USAGE;
         }
         return QD_EXIT_OK;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--about")))
-        return qd_cli_once("--about", &a->about, v);
-    if ((v = qd_cli_value(argc, argv, i, "--initial")))
-        return qd_cli_once("--initial", &a->initial, v);
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
-        return qd_cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
-    return qd_cli_bad_option(argv[*i], usage_text);
+    if ((v = cli_value(argc, argv, i, "--about")))
+        return cli_once("--about", &a->about, v);
+    if ((v = cli_value(argc, argv, i, "--initial")))
+        return cli_once("--initial", &a->initial, v);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
+    return cli_bad_option(argv[*i], usage_text);
 }
 
 static int choose_point(modes_run *r, const modes_args *a) {
@@ -83,19 +83,19 @@ static int choose_point(modes_run *r, const modes_args *a) {
     if (!r->q0)
         return QD_EXIT_FAIL;
     if (a->about)
-        return qd_lin_coords(&r->lr, "--about", a->about, r->q0);
-    int rc = qd_lin_equilibria(&r->lr, NULL, NULL, &r->eq);
+        return cli_lin_coords(&r->lr, "--about", a->about, r->q0);
+    int rc = cli_lin_equilibria(&r->lr, NULL, NULL, &r->eq);
     if (rc != QD_EXIT_OK)
         return rc;
     if (r->eq.count == 0) {
-        qd_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
+        cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
                       "--about");
         return QD_EXIT_FAIL;
     }
     size_t k = 0;
     if (a->at_eq) {
         if ((size_t)a->at_eq > r->eq.count) {
-            qd_diag_error("--at-equilibrium %ld: there %s %zu equilibri%s", a->at_eq,
+            cli_diag_error("--at-equilibrium %ld: there %s %zu equilibri%s", a->at_eq,
                           r->eq.count == 1 ? "is" : "are", r->eq.count,
                           r->eq.count == 1 ? "um" : "a");
             return QD_EXIT_USAGE;
@@ -114,9 +114,9 @@ static int choose_point(modes_run *r, const modes_args *a) {
 
 /* The state at q0, at rest; the residual of the equations there. */
 static int linearize(modes_run *r) {
-    qd_lin_run *lr = &r->lr;
+    cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
-    qd_lin_set_state(lr, r->q0, NULL);
+    cli_lin_set_state(lr, r->q0, NULL);
     double *f = calloc(n + 1, sizeof *f), *M = calloc(n * n + 1, sizeof *M);
     if (f && M && qd_eom_eval(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals, M, f, NULL,
                               NULL, NULL) == QD_OK)
@@ -128,7 +128,7 @@ static int linearize(modes_run *r) {
     if (qd_linear_about(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
                         &r->lin) != QD_OK ||
         qd_modes_solve(lr->ctx, &r->lin, &r->res) != QD_OK) {
-        qd_diag_error("%s", qd_ctx_message(lr->ctx));
+        cli_diag_error("%s", qd_ctx_message(lr->ctx));
         return QD_EXIT_FAIL;
     }
     if (r->pt && r->pt->exact && n <= 2 && r->res.conservative) {
@@ -142,10 +142,10 @@ static int linearize(modes_run *r) {
 }
 
 static int initial(modes_run *r, const char *text) {
-    qd_lin_run *lr = &r->lr;
+    cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
     if (!r->res.conservative) {
-        qd_diag_error("--initial: the motion through normal coordinates needs a conservative "
+        cli_diag_error("--initial: the motion through normal coordinates needs a conservative "
                       "system without gyroscopic terms");
         return QD_EXIT_USAGE;
     }
@@ -155,7 +155,7 @@ static int initial(modes_run *r, const char *text) {
     int rc = q && qd && r->Q && r->Qd ? QD_EXIT_OK : QD_EXIT_FAIL;
     if (rc == QD_EXIT_OK) {
         memcpy(q, r->q0, n * sizeof *q);
-        rc = qd_lin_point(lr, "--initial", text, q, qd);
+        rc = cli_lin_point(lr, "--initial", text, q, qd);
     }
     /* Q_j = a_j^T M0 (q - q0) */
     for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++)
@@ -178,7 +178,7 @@ static void put_matrix(qd_buf *b, const char *name, size_t n, const double *A) {
         qd_buf_puts(b, i ? ", [" : "[");
         for (size_t j = 0; j < n; j++) {
             qd_buf_puts(b, j ? ", " : "");
-            qd_state_put_result(b, A[i * n + j]);
+            cli_state_put_result(b, A[i * n + j]);
         }
         qd_buf_puts(b, "]");
     }
@@ -209,9 +209,9 @@ static void put_point(modes_run *r, qd_buf *b) {
     for (size_t j = 0; j < e->n; j++) {
         qd_buf_printf(b, "%s%s = ", j ? ", " : "", qd_expr_name(e->q[j]));
         if (r->pt)
-            qd_lin_put_value(&r->lr, r->pt, j, b);
+            cli_lin_put_value(&r->lr, r->pt, j, b);
         else
-            qd_state_put_result(b, r->q0[j]);
+            cli_state_put_result(b, r->q0[j]);
     }
     if (r->pt)
         qd_buf_printf(b, " (%s of the potential)", qd_eq_kind_name(r->pt->kind));
@@ -229,7 +229,7 @@ static void put_conservative(modes_run *r, qd_buf *b) {
     for (size_t j = 0; j < n; j++) {
         double w2 = res->omega2[j], w = sqrt(fabs(w2));
         qd_buf_printf(b, "mode %zu: w^2 = ", j + 1);
-        qd_state_put_result(b, w2);
+        cli_state_put_result(b, w2);
         if (w2 > 0)
             qd_buf_printf(b, ", w = %.10g rad/s, period = %.10g s", w, 2 * PI / w);
         else if (w2 == 0)
@@ -245,7 +245,7 @@ static void put_conservative(modes_run *r, qd_buf *b) {
         for (size_t i = 0; i < n; i++) {
             qd_buf_printf(b, "%s%s = ", i ? ", " : "", qd_expr_name(e->q[i]));
             double v = res->shapes[i * n + j];
-            qd_state_put_result(b, v);
+            cli_state_put_result(b, v);
         }
         qd_buf_puts(b, "\n");
     }
@@ -323,28 +323,28 @@ static void put_text(modes_run *r, qd_buf *b) {
 
 /* ---- json ------------------------------------------------------------------ */
 
-static void json_matrix(qd_json *j, const char *key, size_t n, const double *A) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
+static void json_matrix(cli_json *j, const char *key, size_t n, const double *A) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
-        qd_json_begin_array(j);
+        cli_json_begin_array(j);
         for (size_t k = 0; k < n; k++)
-            qd_json_number(j, A[i * n + k]);
-        qd_json_end_array(j);
+            cli_json_number(j, A[i * n + k]);
+        cli_json_end_array(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
 /* The frequencies: w of every mode (conservative; unstable ones left out),
  * or the positive imaginary parts of the state-space eigenvalues. */
-static void json_frequencies(modes_run *r, qd_json *j) {
+static void json_frequencies(modes_run *r, cli_json *j) {
     const qd_modes_result *res = &r->res;
-    qd_json_key(j, "frequencies");
-    qd_json_begin_array(j);
+    cli_json_key(j, "frequencies");
+    cli_json_begin_array(j);
     if (res->conservative) {
         for (size_t k = 0; k < res->n; k++)
             if (res->omega2[k] >= 0)
-                qd_json_number(j, sqrt(res->omega2[k]));
+                cli_json_number(j, sqrt(res->omega2[k]));
     } else {
         double *w = malloc((res->neig + 1) * sizeof *w);
         size_t nw = 0;
@@ -359,119 +359,119 @@ static void json_frequencies(modes_run *r, qd_json *j) {
                     w[c] = t;
                 }
         for (size_t k = 0; k < nw; k++)
-            qd_json_number(j, w[k]);
+            cli_json_number(j, w[k]);
         free(w);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
 /* The conservative modes: w^2, w, period, multiplicity, shape, and the
  * exact w^2 and the initial normal coordinates when there are any. */
-static void json_modes(modes_run *r, qd_json *j) {
+static void json_modes(modes_run *r, cli_json *j) {
     const qd_eom *e = r->lr.e;
     const qd_modes_result *res = &r->res;
     size_t n = e->n;
-    qd_json_key(j, "modes");
-    qd_json_begin_array(j);
+    cli_json_key(j, "modes");
+    cli_json_begin_array(j);
     for (size_t k = 0; res->conservative && k < n; k++) {
         double w2 = res->omega2[k];
-        qd_json_begin_object(j);
-        qd_json_key(j, "omega2");
-        qd_json_number(j, w2);
-        qd_json_key(j, "omega");
+        cli_json_begin_object(j);
+        cli_json_key(j, "omega2");
+        cli_json_number(j, w2);
+        cli_json_key(j, "omega");
         if (w2 >= 0)
-            qd_json_number(j, sqrt(w2));
+            cli_json_number(j, sqrt(w2));
         else
-            qd_json_null(j);
-        qd_json_key(j, "period");
+            cli_json_null(j);
+        cli_json_key(j, "period");
         if (w2 > 0)
-            qd_json_number(j, 2 * PI / sqrt(w2));
+            cli_json_number(j, 2 * PI / sqrt(w2));
         else
-            qd_json_null(j);
-        qd_json_key(j, "multiplicity");
-        qd_json_number(j, (double)multiplicity(res, k));
-        qd_json_key(j, "shape");
-        qd_json_begin_object(j);
+            cli_json_null(j);
+        cli_json_key(j, "multiplicity");
+        cli_json_number(j, (double)multiplicity(res, k));
+        cli_json_key(j, "shape");
+        cli_json_begin_object(j);
         for (size_t i = 0; i < n; i++) {
-            qd_json_key(j, qd_expr_name(e->q[i]));
-            qd_json_number(j, res->shapes[i * n + k]);
+            cli_json_key(j, qd_expr_name(e->q[i]));
+            cli_json_number(j, res->shapes[i * n + k]);
         }
-        qd_json_end_object(j);
+        cli_json_end_object(j);
         if (r->have_sym) {
-            qd_json_key(j, "omega2_exact");
-            qd_json_expr(j, r->lr.ctx, r->w2sym[k]);
+            cli_json_key(j, "omega2_exact");
+            cli_json_expr(j, r->lr.ctx, r->w2sym[k]);
         }
         if (r->Q) {
-            qd_json_key(j, "Q0");
-            qd_json_number(j, r->Q[k]);
-            qd_json_key(j, "Q0_dot");
-            qd_json_number(j, r->Qd[k]);
+            cli_json_key(j, "Q0");
+            cli_json_number(j, r->Q[k]);
+            cli_json_key(j, "Q0_dot");
+            cli_json_number(j, r->Qd[k]);
         }
-        qd_json_end_object(j);
+        cli_json_end_object(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
 static void put_json(modes_run *r, qd_buf *b) {
     const qd_eom *e = r->lr.e;
     const qd_modes_result *res = &r->res;
     size_t n = e->n;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "equilibrium");
-    qd_json_begin_object(&j);
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "equilibrium");
+    cli_json_begin_object(&j);
     for (size_t k = 0; k < n; k++) {
-        qd_json_key(&j, qd_expr_name(e->q[k]));
-        qd_json_number(&j, r->q0[k]);
+        cli_json_key(&j, qd_expr_name(e->q[k]));
+        cli_json_number(&j, r->q0[k]);
     }
-    qd_json_end_object(&j);
-    qd_json_key(&j, "residual");
-    qd_json_number(&j, r->residual);
-    qd_json_key(&j, "conservative");
-    qd_json_bool(&j, res->conservative);
+    cli_json_end_object(&j);
+    cli_json_key(&j, "residual");
+    cli_json_number(&j, r->residual);
+    cli_json_key(&j, "conservative");
+    cli_json_bool(&j, res->conservative);
     json_matrix(&j, "M", n, r->lin.M);
     json_matrix(&j, "C", n, r->lin.C);
     json_matrix(&j, "G", n, r->lin.G);
     json_matrix(&j, "K", n, r->lin.K);
     json_frequencies(r, &j);
     json_modes(r, &j);
-    qd_json_key(&j, "eigenvalues");
-    qd_json_begin_array(&j);
+    cli_json_key(&j, "eigenvalues");
+    cli_json_begin_array(&j);
     for (size_t k = 0; k < res->neig; k++) {
-        qd_json_begin_array(&j);
-        qd_json_number(&j, res->eig_re[k]);
-        qd_json_number(&j, res->eig_im[k]);
-        qd_json_end_array(&j);
+        cli_json_begin_array(&j);
+        cli_json_number(&j, res->eig_re[k]);
+        cli_json_number(&j, res->eig_im[k]);
+        cli_json_end_array(&j);
     }
-    qd_json_end_array(&j);
-    qd_json_key(&j, "stable");
+    cli_json_end_array(&j);
+    cli_json_key(&j, "stable");
     if (res->stable == -1)
-        qd_json_null(&j);
+        cli_json_null(&j);
     else
-        qd_json_bool(&j, res->stable == 1);
-    qd_json_key(&j, "verdict");
-    qd_json_string(&j, verdict(res->stable));
-    qd_json_end_object(&j);
+        cli_json_bool(&j, res->stable == 1);
+    cli_json_key(&j, "verdict");
+    cli_json_string(&j, verdict(res->stable));
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    b->failed = b->failed || !cli_json_ok(&j);
 }
 
-int qd_cmd_modes(int argc, char **argv) {
+int cli_cmd_modes(int argc, char **argv) {
     modes_args a = {0};
-    int rc = qd_cli_file_args(argc, argv, "modes", usage_text, &a.file, parse_option, &a);
+    int rc = cli_file_args(argc, argv, "modes", usage_text, &a.file, parse_option, &a);
     if (rc != QD_EXIT_OK)
         return rc;
     if (a.about && a.at_eq) {
-        qd_diag_error("give either --at-equilibrium or --about, not both\n%s", usage_text);
+        cli_diag_error("give either --at-equilibrium or --about, not both\n%s", usage_text);
         return QD_EXIT_USAGE;
     }
     modes_run r = {.lr = {.ctx = qd_ctx_new()}};
     if (!r.lr.ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = qd_lin_load(&r.lr, a.file, a.sets, a.nsets);
+    rc = cli_lin_load(&r.lr, a.file, a.sets, a.nsets);
     if (rc == QD_EXIT_OK)
         rc = choose_point(&r, &a);
     if (rc == QD_EXIT_OK)
@@ -481,7 +481,7 @@ int qd_cmd_modes(int argc, char **argv) {
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
         (a.json ? put_json : put_text)(&r, &b);
-        rc = qd_cli_emit(&b, "modes");
+        rc = cli_emit(&b, "modes");
     }
     free(r.q0);
     free(r.Q);
@@ -489,7 +489,7 @@ int qd_cmd_modes(int argc, char **argv) {
     qd_linear_free(&r.lin);
     qd_modes_result_free(&r.res);
     qd_equilibria_free(&r.eq);
-    qd_lin_free(&r.lr);
+    cli_lin_free(&r.lr);
     qd_ctx_free(r.lr.ctx);
     return rc;
 }

@@ -21,7 +21,7 @@ static const char usage_text[] =
 #define DEFAULT_T_MAX 1e6
 
 typedef struct pc_args {
-    qd_sim_args a;
+    cli_sim_args a;
     const char *section;
     double n;
 } pc_args;
@@ -47,7 +47,7 @@ static int sink(void *data, int event, const double *row) {
     for (size_t i = 0; i < o->ncols; i++) {
         if (i)
             fputc(',', o->f);
-        fwrite(num, 1, qd_sim_cli_format(num, row[i]), o->f);
+        fwrite(num, 1, cli_sim_format(num, row[i]), o->f);
     }
     fputc('\n', o->f);
     return ++o->got >= o->want;
@@ -55,33 +55,33 @@ static int sink(void *data, int event, const double *row) {
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     pc_args *p = data;
-    int rc = qd_sim_cli_option(argc, argv, i, &p->a);
+    int rc = cli_sim_option(argc, argv, i, &p->a);
     if (rc == 1)
         return QD_EXIT_OK;
     if (rc > 100)
         return rc - 100;
     const char *v;
-    if ((v = qd_cli_value(argc, argv, i, "--section"))) {
+    if ((v = cli_value(argc, argv, i, "--section"))) {
         p->section = v;
-    } else if ((v = qd_cli_value(argc, argv, i, "--n"))) {
+    } else if ((v = cli_value(argc, argv, i, "--n"))) {
         char *end;
         p->n = strtod(v, &end);
         if (end == v || *end || !(p->n >= 1) || p->n > 1e9 || p->n != (double)(size_t)p->n) {
-            qd_diag_error("--n takes a positive whole number, not '%s'", v);
+            cli_diag_error("--n takes a positive whole number, not '%s'", v);
             return QD_EXIT_USAGE;
         }
     } else {
-        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
 }
 
-int qd_cmd_poincare(int argc, char **argv) {
+int cli_cmd_poincare(int argc, char **argv) {
     pc_args p = {.n = 0};
-    int rc = qd_cli_file_args(argc, argv, "poincare", usage_text, &p.a.file, parse_option, &p);
+    int rc = cli_file_args(argc, argv, "poincare", usage_text, &p.a.file, parse_option, &p);
     if (rc == QD_EXIT_OK && (!p.section || !(p.n >= 1))) {
-        qd_diag_error("%s is missing\n%s", p.section ? "--n" : "--section", usage_text);
+        cli_diag_error("%s is missing\n%s", p.section ? "--n" : "--section", usage_text);
         rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
@@ -93,14 +93,14 @@ int qd_cmd_poincare(int argc, char **argv) {
     p.a.events[0] = p.section;
     p.a.event_stop[0] = false;
     p.a.nevents = 1;
-    qd_sim_cli c = {0};
-    rc = qd_sim_cli_setup(&c, &p.a);
+    cli_sim c = {0};
+    rc = cli_sim_setup(&c, &p.a);
     /* a fixed-step method given --dt: rows only at crossings, so any method works */
     size_t ncols = rc == QD_EXIT_OK ? qd_sim_columns(c.s, c.opts.method, NULL, 0) : 0;
     const char **names = rc == QD_EXIT_OK ? malloc((ncols + 1) * sizeof *names) : NULL;
     FILE *f = NULL;
     if (rc == QD_EXIT_OK && p.a.out && !(f = fopen(p.a.out, "w"))) {
-        qd_diag_error("cannot write '%s'", p.a.out);
+        cli_diag_error("cannot write '%s'", p.a.out);
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK && names) {
@@ -109,7 +109,7 @@ int qd_cmd_poincare(int argc, char **argv) {
         qd_sim_stats st;
         qd_status s = qd_sim_run(c.s, &c.opts, sink, &o, &st, NULL);
         if (s != QD_OK) {
-            rc = qd_sim_cli_fail(&c, s);
+            rc = cli_sim_fail(&c, s);
         } else {
             fprintf(stderr, "qdot: poincare: %s, %zu crossings by t = %g: %zu steps, %zu "
                             "evaluations, %zu rejected; energy error %.3g\n",
@@ -125,6 +125,6 @@ int qd_cmd_poincare(int argc, char **argv) {
     if (f)
         fclose(f);
     free(names);
-    qd_sim_cli_free(&c);
+    cli_sim_free(&c);
     return rc;
 }

@@ -23,13 +23,13 @@ typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } routh_fmt;
 
 typedef struct routh_run {
     qd_ctx *ctx;
-    qd_model_file mf;
+    cli_model_file mf;
     qd_eom *e;
     qd_routh *r;
     routh_fmt fmt;
     const char *file, *ignore, *sets[MAX_SETS];
     size_t nsets, nign;
-    qd_cli_subs subs;
+    cli_subs subs;
     const qd_expr *ign[MAX_IGN];
 } routh_run;
 
@@ -43,22 +43,22 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     routh_run *r = data;
     const char *v;
     int f;
-    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        int rc = qd_cli_choice("--format", v, formats, &f);
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
         r->fmt = (routh_fmt)f;
         return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
-        return qd_cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    if ((v = qd_cli_value(argc, argv, i, "--ignore")))
-        return qd_cli_once("--ignore", &r->ignore, v);
-    return qd_cli_bad_option(argv[*i], usage_text);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
+    if ((v = cli_value(argc, argv, i, "--ignore")))
+        return cli_once("--ignore", &r->ignore, v);
+    return cli_bad_option(argv[*i], usage_text);
 }
 
 static int parse_args(int argc, char **argv, routh_run *r) {
-    int rc = qd_cli_file_args(argc, argv, "routh", usage_text, &r->file, parse_option, r);
+    int rc = cli_file_args(argc, argv, "routh", usage_text, &r->file, parse_option, r);
     if (rc == QD_EXIT_OK && !r->ignore) {
-        qd_diag_error("routh needs --ignore with the cyclic coordinates to ignore\n%s",
+        cli_diag_error("routh needs --ignore with the cyclic coordinates to ignore\n%s",
                       usage_text);
         rc = QD_EXIT_USAGE;
     }
@@ -72,19 +72,19 @@ static int lookup(routh_run *r, const char *s, size_t len) {
     while (len && (*s == ' ' || s[len - 1] == ' '))
         s += *s == ' ', len -= 1;
     if (!len || len >= sizeof name || r->nign == MAX_IGN) {
-        qd_diag_error("--ignore takes a comma-separated list of coordinates, not '%s'", r->ignore);
+        cli_diag_error("--ignore takes a comma-separated list of coordinates, not '%s'", r->ignore);
         return QD_EXIT_USAGE;
     }
     memcpy(name, s, len);
     name[len] = '\0';
     const qd_expr *c = qd_routh_lookup(r->ctx, r->mf.model, name);
     if (!c) {
-        qd_diag_error("--ignore: %s", qd_ctx_message(r->ctx));
+        cli_diag_error("--ignore: %s", qd_ctx_message(r->ctx));
         return QD_EXIT_USAGE;
     }
     for (size_t k = 0; k < r->nign; k++)
         if (r->ign[k] == c) {
-            qd_diag_error("--ignore: %s is listed twice", name);
+            cli_diag_error("--ignore: %s is listed twice", name);
             return QD_EXIT_USAGE;
         }
     r->ign[r->nign++] = c;
@@ -115,7 +115,7 @@ static int check_cyclic(routh_run *r) {
                 continue;
             char msg[512];
             snprintf(msg, sizeof msg, "%s cannot be ignored: %s", qd_expr_name(r->ign[i]), why);
-            qd_model_file_error(&r->mf, where, msg,
+            cli_model_file_error(&r->mf, where, msg,
                                 "only cyclic coordinates can be ignored: absent from L, with no "
                                 "generalized force and no dissipation");
             return QD_EXIT_USAGE;
@@ -126,7 +126,7 @@ static int check_cyclic(routh_run *r) {
 /* ---- --set ------------------------------------------------------------------- */
 
 static const qd_expr *subs(routh_run *r, const qd_expr *x) {
-    return qd_cli_subst(r->ctx, &r->subs, x);
+    return cli_subst(r->ctx, &r->subs, x);
 }
 
 static void subs_all(routh_run *r, size_t n, const qd_expr **x) {
@@ -148,7 +148,7 @@ static int substitute(routh_run *r) {
     h->R0 = subs(r, h->R0);
     h->Veff = subs(r, h->Veff);
     h->h = subs(r, h->h);
-    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : qd_diag_ctx(r->ctx);
+    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->ctx);
 }
 
 /* ---- output ---------------------------------------------------------------- */
@@ -296,71 +296,71 @@ static void write_sympy(const routh_run *r, qd_buf *b) {
     qd_buf_printf(b, "routh_conserved = %s\n", h->conserved ? "True" : "False");
 }
 
-static void json_list(const routh_run *r, qd_json *j, const char *key, size_t n,
+static void json_list(const routh_run *r, cli_json *j, const char *key, size_t n,
                       const qd_expr *const *x) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t k = 0; k < n; k++)
-        qd_json_expr(j, r->ctx, x[k]);
-    qd_json_end_array(j);
+        cli_json_expr(j, r->ctx, x[k]);
+    cli_json_end_array(j);
 }
 
-static void json_names(qd_json *j, const char *key, size_t n, const qd_expr *const *x) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
+static void json_names(cli_json *j, const char *key, size_t n, const qd_expr *const *x) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t k = 0; k < n; k++)
-        qd_json_string(j, qd_expr_name(x[k]));
-    qd_json_end_array(j);
+        cli_json_string(j, qd_expr_name(x[k]));
+    cli_json_end_array(j);
 }
 
-static void json_matrix(const routh_run *r, qd_json *j, const char *key, const qd_expr **A) {
+static void json_matrix(const routh_run *r, cli_json *j, const char *key, const qd_expr **A) {
     size_t nk = r->r->nkeep;
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t i = 0; i < nk; i++) {
-        qd_json_begin_array(j);
+        cli_json_begin_array(j);
         for (size_t k = 0; k < nk; k++)
-            qd_json_expr(j, r->ctx, A[i * nk + k]);
-        qd_json_end_array(j);
+            cli_json_expr(j, r->ctx, A[i * nk + k]);
+        cli_json_end_array(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
 /* The equations by kept coordinate: {"q": name, "M": [row], "f": f}. */
-static void json_equations(const routh_run *r, qd_json *j) {
+static void json_equations(const routh_run *r, cli_json *j) {
     const qd_routh *h = r->r;
-    qd_json_key(j, "equations");
-    qd_json_begin_array(j);
+    cli_json_key(j, "equations");
+    cli_json_begin_array(j);
     for (size_t k = 0; k < h->nkeep; k++) {
-        qd_json_begin_object(j);
-        qd_json_key(j, "q");
-        qd_json_string(j, qd_expr_name(h->keep[k]));
+        cli_json_begin_object(j);
+        cli_json_key(j, "q");
+        cli_json_string(j, qd_expr_name(h->keep[k]));
         json_list(r, j, "M", h->nkeep, h->M + k * h->nkeep);
-        qd_json_key(j, "f");
-        qd_json_expr(j, r->ctx, h->f[k]);
-        qd_json_end_object(j);
+        cli_json_key(j, "f");
+        cli_json_expr(j, r->ctx, h->f[k]);
+        cli_json_end_object(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
-static void json_quadratures(const routh_run *r, qd_json *j) {
+static void json_quadratures(const routh_run *r, cli_json *j) {
     const qd_routh *h = r->r;
-    qd_json_key(j, "quadratures");
-    qd_json_begin_object(j);
+    cli_json_key(j, "quadratures");
+    cli_json_begin_object(j);
     for (size_t i = 0; i < h->nign; i++) {
-        qd_json_key(j, qd_expr_name(r->e->qd[h->ign_index[i]]));
-        qd_json_expr(j, r->ctx, h->ignvel[i]);
+        cli_json_key(j, qd_expr_name(r->e->qd[h->ign_index[i]]));
+        cli_json_expr(j, r->ctx, h->ignvel[i]);
     }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
 }
 
 static void write_json(const routh_run *r, qd_buf *b) {
     const qd_routh *h = r->r;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "file");
-    qd_json_string(&j, r->mf.path);
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "file");
+    cli_json_string(&j, r->mf.path);
     json_names(&j, "ignored", h->nign, h->ign);
     json_names(&j, "momenta", h->nign, h->beta);
     json_names(&j, "kept", h->nkeep, h->keep);
@@ -368,17 +368,17 @@ static void write_json(const routh_run *r, qd_buf *b) {
     const char *names[] = {"R", "R2", "R1", "R0", "effective_potential", "jacobi_integral"};
     const qd_expr *vals[] = {h->R, h->R2, h->R1, h->R0, h->Veff, h->h};
     for (int i = 0; i < 6; i++) {
-        qd_json_key(&j, names[i]);
-        qd_json_expr(&j, r->ctx, vals[i]);
+        cli_json_key(&j, names[i]);
+        cli_json_expr(&j, r->ctx, vals[i]);
     }
     json_equations(r, &j);
     json_matrix(r, &j, "gyroscopic", h->G);
     json_quadratures(r, &j);
-    qd_json_key(&j, "conserved");
-    qd_json_bool(&j, h->conserved);
-    qd_json_end_object(&j);
+    cli_json_key(&j, "conserved");
+    cli_json_bool(&j, h->conserved);
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    b->failed = b->failed || !cli_json_ok(&j);
 }
 
 static int emit(routh_run *r) {
@@ -389,36 +389,36 @@ static int emit(routh_run *r) {
         write_sympy(r, &b);
     else
         write_lines(r, &b);
-    return qd_cli_emit(&b, "Routhian");
+    return cli_emit(&b, "Routhian");
 }
 
 static int run(routh_run *r) {
-    int rc = qd_cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
+    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
                                 &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_ignore(r);
     if (rc == QD_EXIT_OK)
         rc = check_cyclic(r);
     if (rc == QD_EXIT_OK && !(r->r = qd_routh_derive(r->ctx, r->mf.model, r->e, r->nign, r->ign)))
-        rc = qd_diag_ctx(r->ctx);
+        rc = cli_diag_ctx(r->ctx);
     if (rc == QD_EXIT_OK)
         rc = substitute(r);
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 
-int qd_cmd_routh(int argc, char **argv) {
+int cli_cmd_routh(int argc, char **argv) {
     routh_run r = {.fmt = FMT_TEXT};
     int rc = parse_args(argc, argv, &r);
     if (rc != QD_EXIT_OK)
         return rc;
     if (!(r.ctx = qd_ctx_new())) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     rc = run(&r);
     qd_routh_free(r.r);
     qd_eom_free(r.e);
-    qd_model_file_free(&r.mf);
+    cli_model_file_free(&r.mf);
     qd_ctx_free(r.ctx);
     return rc;
 }

@@ -27,7 +27,7 @@ static const char usage_text[] =
 
 typedef struct sim_out {
     FILE *csv;            /* rows as CSV, or NULL */
-    qd_json *json;        /* rows into the JSON document, or NULL */
+    cli_json *json;        /* rows into the JSON document, or NULL */
     size_t ncols, rows;
     bool events;          /* an `event` column */
     double t0, t_end;
@@ -76,92 +76,92 @@ static int sink(void *data, int event, const double *row) {
         for (size_t i = 0; i < o->ncols; i++) {
             if (i)
                 o->line[k++] = ',';
-            k += qd_sim_cli_format(o->line + k, row[i]);
+            k += cli_sim_format(o->line + k, row[i]);
         }
         if (o->events)
             k += (size_t)snprintf(o->line + k, 16, ",%d", event + 1);
         o->line[k++] = '\n';
         fwrite(o->line, 1, k, o->csv);
     } else if (o->json) {
-        qd_json_begin_array(o->json);
+        cli_json_begin_array(o->json);
         for (size_t i = 0; i < o->ncols; i++)
-            qd_json_number(o->json, row[i]);
+            cli_json_number(o->json, row[i]);
         if (o->events)
-            qd_json_number(o->json, event + 1);
-        qd_json_end_array(o->json);
+            cli_json_number(o->json, event + 1);
+        cli_json_end_array(o->json);
     }
     progress(o, row[0]);
     return 0;
 }
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
-    qd_sim_args *a = data;
-    int rc = qd_sim_cli_option(argc, argv, i, a);
+    cli_sim_args *a = data;
+    int rc = cli_sim_option(argc, argv, i, a);
     if (rc == 1)
         return QD_EXIT_OK;
     if (rc > 100)
         return rc - 100;
     const char *v;
     bool stop;
-    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
+    if ((v = cli_value(argc, argv, i, "--format"))) {
         if (strcmp(v, "csv") && strcmp(v, "json")) {
-            qd_diag_error("--format takes csv or json, not '%s'", v);
+            cli_diag_error("--format takes csv or json, not '%s'", v);
             return QD_EXIT_USAGE;
         }
         a->json = !strcmp(v, "json");
-    } else if ((v = qd_cli_value(argc, argv, i, "--output"))) {
+    } else if ((v = cli_value(argc, argv, i, "--output"))) {
         a->output = v;
     } else if ((stop = !strncmp(argv[*i], "--stop-at", 9), 0) ||
-               (v = qd_cli_value(argc, argv, i, "--event")) ||
-               (v = qd_cli_value(argc, argv, i, "--stop-at"))) {
+               (v = cli_value(argc, argv, i, "--event")) ||
+               (v = cli_value(argc, argv, i, "--stop-at"))) {
         if (a->nevents == QD_SIM_MAX_LIST) {
-            qd_diag_error("at most %d events", QD_SIM_MAX_LIST);
+            cli_diag_error("at most %d events", QD_SIM_MAX_LIST);
             return QD_EXIT_USAGE;
         }
         a->event_stop[a->nevents] = stop;
         a->events[a->nevents++] = v;
     } else {
-        qd_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
 }
 
-static void summary_json(qd_json *j, const qd_sim_cli *c, const qd_sim_stats *st, double wall,
+static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, double wall,
                          const char **names, size_t ncols, const double *final) {
-    qd_json_key(j, "method");
-    qd_json_string(j, qd_sim_method_name(c->opts.method));
-    qd_json_key(j, "steps");
-    qd_json_number(j, (double)st->steps);
-    qd_json_key(j, "evaluations");
-    qd_json_number(j, (double)st->evals);
-    qd_json_key(j, "rejected");
-    qd_json_number(j, (double)st->rejected);
-    qd_json_key(j, "wall_s");
-    qd_json_number(j, wall);
-    qd_json_key(j, "energy_error_max");
-    qd_json_number(j, st->energy_error_max);
-    qd_json_key(j, "constraint_error_max");
-    qd_json_number(j, st->constraint_error_max);
-    qd_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
-    qd_json_begin_object(j);
+    cli_json_key(j, "method");
+    cli_json_string(j, qd_sim_method_name(c->opts.method));
+    cli_json_key(j, "steps");
+    cli_json_number(j, (double)st->steps);
+    cli_json_key(j, "evaluations");
+    cli_json_number(j, (double)st->evals);
+    cli_json_key(j, "rejected");
+    cli_json_number(j, (double)st->rejected);
+    cli_json_key(j, "wall_s");
+    cli_json_number(j, wall);
+    cli_json_key(j, "energy_error_max");
+    cli_json_number(j, st->energy_error_max);
+    cli_json_key(j, "constraint_error_max");
+    cli_json_number(j, st->constraint_error_max);
+    cli_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
+    cli_json_begin_object(j);
     for (size_t k = 0; k < c->e->ncon; k++) {
-        qd_json_key(j, c->e->con[k].name);
-        qd_json_number(j, qd_sim_constraint_error(c->s, k));
+        cli_json_key(j, c->e->con[k].name);
+        cli_json_number(j, qd_sim_constraint_error(c->s, k));
     }
-    qd_json_end_object(j);
-    qd_json_key(j, "events");
-    qd_json_number(j, (double)st->events);
-    qd_json_key(j, "final");
-    qd_json_begin_object(j);
+    cli_json_end_object(j);
+    cli_json_key(j, "events");
+    cli_json_number(j, (double)st->events);
+    cli_json_key(j, "final");
+    cli_json_begin_object(j);
     for (size_t i = 0; i < ncols; i++) {
-        qd_json_key(j, names[i]);
-        qd_json_number(j, final[i]);
+        cli_json_key(j, names[i]);
+        cli_json_number(j, final[i]);
     }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
 }
 
-static int run(qd_sim_cli *c, const qd_sim_args *a) {
+static int run(cli_sim *c, const cli_sim_args *a) {
     size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
     const char **names = malloc((ncols + 1) * sizeof *names);
     double *final = malloc((ncols + 1) * sizeof *final);
@@ -177,28 +177,28 @@ static int run(qd_sim_cli *c, const qd_sim_args *a) {
                  .t_end = c->opts.t_end, .progress = isatty(2), .names = names, .line = line};
     FILE *file = NULL;
     if (a->out && !(file = fopen(a->out, "w"))) {
-        qd_diag_error("cannot write '%s'", a->out);
+        cli_diag_error("cannot write '%s'", a->out);
         free(names);
         free(final);
         free(line);
         return QD_EXIT_USAGE;
     }
     qd_buf jb = QD_BUF_INIT;
-    qd_json j;
-    qd_json_init(&j, &jb);
+    cli_json j;
+    cli_json_init(&j, &jb);
     if (a->json)
-        qd_json_begin_object(&j);
+        cli_json_begin_object(&j);
     o.csv = file ? file : a->json ? NULL : stdout;
     if (!o.csv) {
-        qd_json_key(&j, "columns");
-        qd_json_begin_array(&j);
+        cli_json_key(&j, "columns");
+        cli_json_begin_array(&j);
         for (size_t i = 0; i < ncols; i++)
-            qd_json_string(&j, names[i]);
+            cli_json_string(&j, names[i]);
         if (o.events)
-            qd_json_string(&j, "event");
-        qd_json_end_array(&j);
-        qd_json_key(&j, "rows");
-        qd_json_begin_array(&j);
+            cli_json_string(&j, "event");
+        cli_json_end_array(&j);
+        cli_json_key(&j, "rows");
+        cli_json_begin_array(&j);
         o.json = &j;
     }
     clock_gettime(CLOCK_MONOTONIC, &o.start);
@@ -208,12 +208,12 @@ static int run(qd_sim_cli *c, const qd_sim_args *a) {
     if (o.shown)
         fprintf(stderr, "\r%70s\r", "");
     if (o.json)
-        qd_json_end_array(&j);
+        cli_json_end_array(&j);
     if (file)
         fclose(file);
     int rc = QD_EXIT_OK;
     if (s != QD_OK) {
-        rc = qd_sim_cli_fail(c, s);
+        rc = cli_sim_fail(c, s);
     } else {
         fprintf(stderr,
                 "qdot: simulate: %s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, "
@@ -225,11 +225,11 @@ static int run(qd_sim_cli *c, const qd_sim_args *a) {
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
         if (a->json) {
             summary_json(&j, c, &st, wall, names, ncols, final);
-            qd_json_end_object(&j);
-            if (qd_json_ok(&j) && !jb.failed)
+            cli_json_end_object(&j);
+            if (cli_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));
             else {
-                qd_diag_error("the result has a non-finite number; JSON cannot hold it");
+                cli_diag_error("the result has a non-finite number; JSON cannot hold it");
                 rc = QD_EXIT_FAIL;
             }
         }
@@ -241,19 +241,19 @@ static int run(qd_sim_cli *c, const qd_sim_args *a) {
     return rc;
 }
 
-int qd_cmd_simulate(int argc, char **argv) {
-    qd_sim_args a = {0};
-    int rc = qd_cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &a);
+int cli_cmd_simulate(int argc, char **argv) {
+    cli_sim_args a = {0};
+    int rc = cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &a);
     if (rc == QD_EXIT_OK && !a.has_t_end) {
-        qd_diag_error("--t-end is missing\n%s", usage_text);
+        cli_diag_error("--t-end is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
-    qd_sim_cli c = {0};
-    rc = qd_sim_cli_setup(&c, &a);
+    cli_sim c = {0};
+    rc = cli_sim_setup(&c, &a);
     if (rc == QD_EXIT_OK)
         rc = run(&c, &a);
-    qd_sim_cli_free(&c);
+    cli_sim_free(&c);
     return rc;
 }

@@ -36,10 +36,10 @@ typedef struct stab_args {
 
 typedef struct stab_run {
     qd_ctx *ctx;
-    qd_model_file mf;
+    cli_model_file mf;
     qd_eom *e;
     qd_steady *s;
-    qd_state st;                     /* parameters (and t) for evaluation */
+    cli_state st;                     /* parameters (and t) for evaluation */
     size_t ncyc;
     const qd_expr *cyc[MAX_LIST];
     bool *xfix, wfix[MAX_LIST], pfix[MAX_LIST];
@@ -60,40 +60,40 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     stab_args *a = data;
     const char *v;
     int f;
-    if ((v = qd_cli_value(argc, argv, i, "--format"))) {
-        int rc = qd_cli_choice("--format", v, formats, &f);
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
         a->json = f == 1;
         return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
-        return qd_cli_push("--set", a->sets, &a->nsets, MAX_SETS, v);
-    if ((v = qd_cli_value(argc, argv, i, "--driven")))
-        return qd_cli_push("--driven", a->driven, &a->ndriven, MAX_LIST, v);
-    if ((v = qd_cli_value(argc, argv, i, "--ignore")))
-        return qd_cli_once("--ignore", &a->ignore, v);
-    if ((v = qd_cli_value(argc, argv, i, "--momentum")))
-        return qd_cli_once("--momentum", &a->momentum, v);
-    if ((v = qd_cli_value(argc, argv, i, "--omega")))
-        return qd_cli_once("--omega", &a->omega, v);
-    if ((v = qd_cli_value(argc, argv, i, "--at")))
-        return qd_cli_once("--at", &a->at, v);
-    if ((v = qd_cli_value(argc, argv, i, "--guess")))
-        return qd_cli_once("--guess", &a->guess, v);
-    return qd_cli_bad_option(argv[*i], usage_text);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", a->sets, &a->nsets, MAX_SETS, v);
+    if ((v = cli_value(argc, argv, i, "--driven")))
+        return cli_push("--driven", a->driven, &a->ndriven, MAX_LIST, v);
+    if ((v = cli_value(argc, argv, i, "--ignore")))
+        return cli_once("--ignore", &a->ignore, v);
+    if ((v = cli_value(argc, argv, i, "--momentum")))
+        return cli_once("--momentum", &a->momentum, v);
+    if ((v = cli_value(argc, argv, i, "--omega")))
+        return cli_once("--omega", &a->omega, v);
+    if ((v = cli_value(argc, argv, i, "--at")))
+        return cli_once("--at", &a->at, v);
+    if ((v = cli_value(argc, argv, i, "--guess")))
+        return cli_once("--guess", &a->guess, v);
+    return cli_bad_option(argv[*i], usage_text);
 }
 
 static int parse_args(int argc, char **argv, stab_args *a) {
     *a = (stab_args){.json = false};
-    int rc = qd_cli_file_args(argc, argv, "stability", usage_text, &a->file, parse_option, a);
+    int rc = cli_file_args(argc, argv, "stability", usage_text, &a->file, parse_option, a);
     if (rc != QD_EXIT_OK)
         return rc;
     if (!a->ignore == !a->ndriven) {
-        qd_diag_error("give the cyclic coordinates with either --ignore (free momenta) or "
+        cli_diag_error("give the cyclic coordinates with either --ignore (free momenta) or "
                       "--driven (maintained rates)\n%s", usage_text);
         return QD_EXIT_USAGE;
     }
     if (a->ndriven && (a->momentum || a->omega)) {
-        qd_diag_error("--momentum and --omega go with --ignore; a driven rate is given as "
+        cli_diag_error("--momentum and --omega go with --ignore; a driven rate is given as "
                       "--driven \"q' = VALUE\"");
         return QD_EXIT_USAGE;
     }
@@ -124,13 +124,13 @@ static int value_of(stab_run *r, const char *what, const char *a, const char *b,
     size_t skip = 2 * qd_model_ncoords(r->mf.model) + 1;
     int rc = QD_EXIT_OK;
     if (!e) {
-        qd_diag_read(what, text, &err);
+        cli_diag_read(what, text, &err);
         rc = QD_EXIT_USAGE;
     } else if (qd_eval(r->ctx, e, r->st.n - skip, r->st.syms + skip, r->st.vals + skip, out) !=
                    QD_OK ||
                !isfinite(*out)) {
         qd_ctx_clear_error(r->ctx);
-        qd_diag_error("%s: '%s' is not a number (only parameters may appear in it)", what, text);
+        cli_diag_error("%s: '%s' is not a number (only parameters may appear in it)", what, text);
         rc = QD_EXIT_USAGE;
     }
     free(text);
@@ -148,7 +148,7 @@ static int coord_index(const stab_run *r, const char *a, const char *b) {
 }
 
 static int unknown_coord(const char *what, const char *a, const char *b) {
-    qd_diag_error("%s: '%.*s' is not a coordinate of the model", what, (int)(b - a), a);
+    cli_diag_error("%s: '%.*s' is not a coordinate of the model", what, (int)(b - a), a);
     return QD_EXIT_USAGE;
 }
 
@@ -160,11 +160,11 @@ static int add_cyclic(stab_run *r, const char *what, const char *a, const char *
         return unknown_coord(what, a, b);
     for (size_t c = 0; c < r->ncyc; c++)
         if (r->cyc[c] == qd_model_coord(r->mf.model, (size_t)i)) {
-            qd_diag_error("%s: %.*s is listed twice", what, (int)(b - a), a);
+            cli_diag_error("%s: %.*s is listed twice", what, (int)(b - a), a);
             return QD_EXIT_USAGE;
         }
     if (r->ncyc == MAX_LIST) {
-        qd_diag_error("at most %d cyclic coordinates", MAX_LIST);
+        cli_diag_error("at most %d cyclic coordinates", MAX_LIST);
         return QD_EXIT_USAGE;
     }
     r->cyc[r->ncyc++] = qd_model_coord(r->mf.model, (size_t)i);
@@ -187,7 +187,7 @@ static int each_item(stab_run *r, const char *what, const char *text, bool bare,
         trim(&na, &nb);
         if (na < nb) {
             if (!eq && !bare) {
-                qd_diag_error("%s: expected NAME=VALUE, not '%.*s'", what, (int)(end - p), p);
+                cli_diag_error("%s: expected NAME=VALUE, not '%.*s'", what, (int)(end - p), p);
                 return QD_EXIT_USAGE;
             }
             int rc = fn(r, what, na, nb, eq ? eq + 1 : NULL, end);
@@ -235,7 +235,7 @@ static int rate_item(stab_run *r, const char *what, const char *na, const char *
     while (q_end > na && q_end[-1] == '\'')
         q_end--;
     if (va && q_end == nb) {
-        qd_diag_error("%s: a rate is written with a prime, %.*s' = VALUE", what,
+        cli_diag_error("%s: a rate is written with a prime, %.*s' = VALUE", what,
                       (int)(nb - na), na);
         return QD_EXIT_USAGE;
     }
@@ -244,14 +244,14 @@ static int rate_item(stab_run *r, const char *what, const char *na, const char *
         return unknown_coord(what, na, q_end);
     size_t c = cyc_slot(r, qd_model_coord(r->mf.model, (size_t)i));
     if (c == r->ncyc) {  /* only --omega can name another coordinate */
-        qd_diag_error("--omega: %.*s is not among the --ignore coordinates", (int)(q_end - na),
+        cli_diag_error("--omega: %.*s is not among the --ignore coordinates", (int)(q_end - na),
                       na);
         return QD_EXIT_USAGE;
     }
     if (!va)
         return QD_EXIT_OK;
     if (r->wfix[c]) {
-        qd_diag_error("%s: the rate %.*s' is given twice", what, (int)(q_end - na), na);
+        cli_diag_error("%s: the rate %.*s' is given twice", what, (int)(q_end - na), na);
         return QD_EXIT_USAGE;
     }
     r->wfix[c] = true;
@@ -264,14 +264,14 @@ static int momentum_item(stab_run *r, const char *what, const char *na, const ch
         const char *p = qd_expr_name(r->s->beta[c]);
         if (strlen(p) == (size_t)(nb - na) && !strncmp(p, na, (size_t)(nb - na))) {
             if (r->pfix[c]) {
-                qd_diag_error("%s: %s is given twice", what, p);
+                cli_diag_error("%s: %s is given twice", what, p);
                 return QD_EXIT_USAGE;
             }
             r->pfix[c] = true;
             return value_of(r, what, va, vb, &r->pt.p[c]);
         }
     }
-    qd_diag_error("%s: '%.*s' is not the momentum of an ignored coordinate (they are p_<q>)",
+    cli_diag_error("%s: '%.*s' is not the momentum of an ignored coordinate (they are p_<q>)",
                   what, (int)(nb - na), na);
     return QD_EXIT_USAGE;
 }
@@ -286,7 +286,7 @@ static int kept_slot(const stab_run *r, const char *what, const char *na, const 
             *slot = j;
             return QD_EXIT_OK;
         }
-    qd_diag_error("%s: %.*s is cyclic here; give its rate with --driven or --omega", what,
+    cli_diag_error("%s: %.*s is cyclic here; give its rate with --driven or --omega", what,
                   (int)(nb - na), na);
     return QD_EXIT_USAGE;
 }
@@ -296,7 +296,7 @@ static int at_item(stab_run *r, const char *what, const char *na, const char *nb
     size_t j = 0;
     int rc = kept_slot(r, what, na, nb, &j);
     if (rc == QD_EXIT_OK && r->xseen[j]) {
-        qd_diag_error("%s: %.*s is given twice", what, (int)(nb - na), na);
+        cli_diag_error("%s: %.*s is given twice", what, (int)(nb - na), na);
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK) {
@@ -346,7 +346,7 @@ static int prepare(stab_run *r, const stab_args *a) {
         return rc;
     r->s = qd_steady_derive(r->ctx, r->mf.model, r->e, r->ncyc, r->cyc, a->ndriven > 0);
     if (!r->s) {
-        qd_diag_error("%s", qd_ctx_message(r->ctx));
+        cli_diag_error("%s", qd_ctx_message(r->ctx));
         return qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
     }
     size_t nk = r->s->nkeep;
@@ -379,13 +379,13 @@ static int solve(stab_run *r) {
         st = qd_stability_analyze(r->ctx, r->s, r->st.n, r->st.syms, r->st.vals, &r->pt, &r->an);
     if (st == QD_OK)
         return QD_EXIT_OK;
-    qd_diag_error("%s", qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
+    cli_diag_error("%s", qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
     return st == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
 }
 
 /* ---- output ------------------------------------------------------------------ */
 
-static void put_num(qd_buf *b, double x) { qd_state_put_result(b, x); }
+static void put_num(qd_buf *b, double x) { cli_state_put_result(b, x); }
 
 static void put_matrix(qd_buf *b, const char *name, const double *A, size_t n) {
     qd_buf_printf(b, "  %s = [", name);
@@ -482,96 +482,96 @@ static void text_out(stab_run *r, qd_buf *b) {
     qd_buf_printf(b, "verdict: %s\n", an->verdict);
 }
 
-static void json_tri(qd_json *j, int v) {
+static void json_tri(cli_json *j, int v) {
     if (v < 0)
-        qd_json_null(j);
+        cli_json_null(j);
     else
-        qd_json_bool(j, v == 1);
+        cli_json_bool(j, v == 1);
 }
 
-static void json_matrix(qd_json *j, const char *key, const double *A, size_t n) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
+static void json_matrix(cli_json *j, const char *key, const double *A, size_t n) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
-        qd_json_begin_array(j);
+        cli_json_begin_array(j);
         for (size_t k = 0; k < n; k++)
-            qd_json_number(j, A[i * n + k]);
-        qd_json_end_array(j);
+            cli_json_number(j, A[i * n + k]);
+        cli_json_end_array(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
-static void json_roots(qd_json *j, const char *key, const qd_modes_result *m) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
+static void json_roots(cli_json *j, const char *key, const qd_modes_result *m) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t i = 0; i < m->neig; i++) {
-        qd_json_begin_array(j);
-        qd_json_number(j, shown(m, m->eig_re[i]));
-        qd_json_number(j, shown(m, m->eig_im[i]));
-        qd_json_end_array(j);
+        cli_json_begin_array(j);
+        cli_json_number(j, shown(m, m->eig_re[i]));
+        cli_json_number(j, shown(m, m->eig_im[i]));
+        cli_json_end_array(j);
     }
-    qd_json_end_array(j);
+    cli_json_end_array(j);
 }
 
 static void json_out(stab_run *r, qd_buf *b) {
     const qd_steady *s = r->s;
     const qd_stability *an = &r->an;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "model");
-    qd_json_string(&j, r->mf.path);
-    qd_json_key(&j, "kind");
-    qd_json_string(&j, s->driven ? "driven" : "free");
-    qd_json_key(&j, "steady");
-    qd_json_begin_object(&j);
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "model");
+    cli_json_string(&j, r->mf.path);
+    cli_json_key(&j, "kind");
+    cli_json_string(&j, s->driven ? "driven" : "free");
+    cli_json_key(&j, "steady");
+    cli_json_begin_object(&j);
     for (size_t k = 0; k < s->nkeep; k++) {
-        qd_json_key(&j, qd_expr_name(s->keep[k]));
-        qd_json_number(&j, r->pt.x[k]);
+        cli_json_key(&j, qd_expr_name(s->keep[k]));
+        cli_json_number(&j, r->pt.x[k]);
     }
     for (size_t c = 0; c < s->ncyc; c++) {
-        qd_json_key(&j, qd_expr_name(s->cycd[c]));
-        qd_json_number(&j, r->pt.w[c]);
+        cli_json_key(&j, qd_expr_name(s->cycd[c]));
+        cli_json_number(&j, r->pt.w[c]);
         char name[160];
         snprintf(name, sizeof name, "p_%s", qd_expr_name(s->cyc[c]));
-        qd_json_key(&j, name);
-        qd_json_number(&j, r->pt.p[c]);
+        cli_json_key(&j, name);
+        cli_json_number(&j, r->pt.p[c]);
     }
-    qd_json_end_object(&j);
-    qd_json_key(&j, "residual");
-    qd_json_number(&j, r->res);
-    qd_json_key(&j, "Veff");
-    qd_json_expr(&j, r->ctx, s->Veff);
+    cli_json_end_object(&j);
+    cli_json_key(&j, "residual");
+    cli_json_number(&j, r->res);
+    cli_json_key(&j, "Veff");
+    cli_json_expr(&j, r->ctx, s->Veff);
     json_matrix(&j, "M", an->lin.M, an->n);
     json_matrix(&j, "C", an->lin.C, an->n);
     json_matrix(&j, "G", an->lin.G, an->n);
     json_matrix(&j, "K", an->lin.K, an->n);
     json_matrix(&j, "hessian", an->hessian, an->n);
-    qd_json_key(&j, "frequencies");
-    qd_json_begin_array(&j);
+    cli_json_key(&j, "frequencies");
+    cli_json_begin_array(&j);
     for (size_t i = 0; i < an->nfreq; i++)
-        qd_json_number(&j, an->freq[i]);
-    qd_json_end_array(&j);
+        cli_json_number(&j, an->freq[i]);
+    cli_json_end_array(&j);
     json_roots(&j, "roots", &an->ordinary);
-    qd_json_key(&j, "stable");
+    cli_json_key(&j, "stable");
     json_tri(&j, an->ordinary_stable);
-    qd_json_key(&j, "secular");
+    cli_json_key(&j, "secular");
     json_tri(&j, an->secular_stable);
     if (an->dissipative) {
-        qd_json_key(&j, "dissipation");
-        qd_json_begin_object(&j);
+        cli_json_key(&j, "dissipation");
+        cli_json_begin_object(&j);
         json_roots(&j, "roots", &an->damped);
-        qd_json_key(&j, "stable");
+        cli_json_key(&j, "stable");
         json_tri(&j, an->damped_stable);
-        qd_json_key(&j, "max_re");
-        qd_json_number(&j, max_re(&an->damped));
-        qd_json_end_object(&j);
+        cli_json_key(&j, "max_re");
+        cli_json_number(&j, max_re(&an->damped));
+        cli_json_end_object(&j);
     }
-    qd_json_key(&j, "verdict");
-    qd_json_string(&j, an->verdict);
-    qd_json_end_object(&j);
+    cli_json_key(&j, "verdict");
+    cli_json_string(&j, an->verdict);
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    if (!qd_json_ok(&j))
+    if (!cli_json_ok(&j))
         b->failed = true;
 }
 
@@ -581,22 +581,22 @@ static int emit(stab_run *r, bool json) {
         json_out(r, &b);
     else
         text_out(r, &b);
-    return qd_cli_emit(&b, "result (a number that is not finite?)");
+    return cli_emit(&b, "result (a number that is not finite?)");
 }
 
-int qd_cmd_stability(int argc, char **argv) {
+int cli_cmd_stability(int argc, char **argv) {
     stab_args a;
     int rc = parse_args(argc, argv, &a);
     if (rc != QD_EXIT_OK)
         return rc;
     stab_run r = {.ctx = qd_ctx_new()};
     if (!r.ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = qd_cli_load_derive(r.ctx, a.file, a.nsets, a.sets, NULL, NULL, &r.mf, &r.e);
+    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, NULL, NULL, &r.mf, &r.e);
     if (rc == QD_EXIT_OK)
-        rc = qd_state_init(r.ctx, r.mf.model, &r.st);
+        rc = cli_state_init(r.ctx, r.mf.model, &r.st);
     if (rc == QD_EXIT_OK)
         rc = prepare(&r, &a);
     if (rc == QD_EXIT_OK)
@@ -610,10 +610,10 @@ int qd_cmd_stability(int argc, char **argv) {
     free(r.pt.w);
     free(r.pt.p);
     qd_steady_free(r.s);
-    qd_state_free(&r.st);
+    cli_state_free(&r.st);
     if (r.e)
         qd_eom_free(r.e);
-    qd_model_file_free(&r.mf);
+    cli_model_file_free(&r.mf);
     qd_ctx_free(r.ctx);
     return rc;
 }

@@ -20,14 +20,14 @@ static const qd_expr *read_expr(qd_ctx *ctx, const char *text) {
     qd_read_error err;
     const qd_expr *e = qd_read(ctx, text, NULL, &err);
     if (!e)
-        qd_diag_read("<tour>", text, &err);
+        cli_diag_read("<tour>", text, &err);
     return e;
 }
 
-int qd_cmd_tour(int argc, char **argv) {
+int cli_cmd_tour(int argc, char **argv) {
     (void)argv;
     if (argc) {
-        qd_diag_error("'tour' takes no arguments");
+        cli_diag_error("'tour' takes no arguments");
         return QD_EXIT_USAGE;
     }
     qd_ctx *ctx = qd_ctx_new();
@@ -71,7 +71,7 @@ int qd_cmd_tour(int argc, char **argv) {
         for (int k = 0; k < 2; k++)
             M[2 * j + k] = qd_simplify(ctx, qd_diff(ctx, qd_diff(ctx, T, v[j]), v[k]));
     if (qd_ctx_status(ctx) != QD_OK) {
-        int rc = qd_diag_ctx(ctx);
+        int rc = cli_diag_ctx(ctx);
         qd_ctx_free(ctx);
         return rc;
     }
@@ -95,7 +95,7 @@ int qd_cmd_tour(int argc, char **argv) {
                             qd_lookup(ctx, "l2")};
     qd_prog *p = qd_prog_new(ctx, 6, in, 3, outs);
     if (!p) {
-        int rc = qd_diag_ctx(ctx);
+        int rc = cli_diag_ctx(ctx);
         qd_ctx_free(ctx);
         return rc;
     }

@@ -7,7 +7,7 @@
 #include <stdarg.h>
 #include <string.h>
 
-void qd_diag_error(const char *fmt, ...) {
+void cli_diag_error(const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
     fputs("qdot: error: ", stderr);
@@ -28,7 +28,7 @@ static void locate(const char *text, size_t off, size_t *line, size_t *col, cons
     *col = (size_t)(text + off - *start) + 1;
 }
 
-void qd_diag_read(const char *file, const char *text, const qd_read_error *err) {
+void cli_diag_read(const char *file, const char *text, const qd_read_error *err) {
     size_t line, col;
     const char *start;
     size_t len = strlen(text), off = err->offset <= len ? err->offset : len;
@@ -46,9 +46,9 @@ void qd_diag_read(const char *file, const char *text, const qd_read_error *err) 
         fprintf(stderr, "  hint: %s\n", err->hint);
 }
 
-int qd_diag_ctx(const qd_ctx *ctx) {
+int cli_diag_ctx(const qd_ctx *ctx) {
     qd_status st = qd_ctx_status(ctx);
-    qd_diag_error("%s", qd_ctx_message(ctx)[0] ? qd_ctx_message(ctx) : qd_status_str(st));
+    cli_diag_error("%s", qd_ctx_message(ctx)[0] ? qd_ctx_message(ctx) : qd_status_str(st));
     /* a bad argument or an exact division by zero is the input's fault */
     return st == QD_ERR_ARG || st == QD_ERR_DIVZERO || st == QD_ERR_PARSE ||
                    st == QD_ERR_UNBOUND || st == QD_ERR_NONLINEAR
@@ -56,7 +56,7 @@ int qd_diag_ctx(const qd_ctx *ctx) {
                : QD_EXIT_FAIL;
 }
 
-bool qd_cli_format(const char *name, qd_format *out) {
+bool cli_format(const char *name, qd_format *out) {
     static const struct { const char *name; qd_format f; } fmts[] = {
         {"text", QD_FMT_TEXT}, {"latex", QD_FMT_LATEX}, {"c", QD_FMT_C}, {"sympy", QD_FMT_SYMPY},
     };

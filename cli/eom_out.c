@@ -14,32 +14,32 @@
 #include "cli.h"
 #include "json.h"
 
-bool qd_eom_format_from_name(const char *name, qd_eom_format *out) {
+bool cli_eom_format_from_name(const char *name, cli_eom_format *out) {
     static const char *const names[] = {"text", "latex", "json", "sympy", "c"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcmp(name, names[i])) {
-            *out = (qd_eom_format)i;
+            *out = (cli_eom_format)i;
             return true;
         }
     return false;
 }
 
-static qd_status put(const qd_eom_view *v, qd_buf *b, const qd_expr *x, qd_format fmt) {
+static qd_status put(const cli_eom_view *v, qd_buf *b, const qd_expr *x, qd_format fmt) {
     if (v->numeric && fmt == QD_FMT_TEXT && qd_is_number(x)) {
-        qd_state_put_double(b, qd_number_value(x));
+        cli_state_put_double(b, qd_number_value(x));
         return QD_OK;
     }
     return qd_print(v->ctx, x, fmt, b);
 }
 
-static const char *qname(const qd_eom_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
+static const char *qname(const cli_eom_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
 
 /* The name of an output (M, f, qdd, ...) in SymPy and C: base, with
  * underscores appended while the model uses the name for a coordinate or a
  * parameter (a wedge of mass M must not be overwritten by the matrix). */
 typedef struct out_name { char s[32]; } out_name;
 
-static bool model_name(const qd_eom_view *v, const char *name) {
+static bool model_name(const cli_eom_view *v, const char *name) {
     const qd_model *m = v->mf->model;
     for (size_t i = 0; i < v->e->n; i++)
         if (!strcmp(qname(v, i), name))
@@ -50,7 +50,7 @@ static bool model_name(const qd_eom_view *v, const char *name) {
     return !strcmp(name, "t");
 }
 
-static out_name pick(const qd_eom_view *v, const char *base) {
+static out_name pick(const cli_eom_view *v, const char *base) {
     out_name n;
     snprintf(n.s, sizeof n.s, "%s", base);
     for (size_t len = strlen(n.s); model_name(v, n.s) && len + 1 < sizeof n.s; len++)
@@ -60,7 +60,7 @@ static out_name pick(const qd_eom_view *v, const char *base) {
 
 /* ---- text ------------------------------------------------------------------ */
 
-static void text_header(const qd_eom_view *v, qd_buf *b) {
+static void text_header(const cli_eom_view *v, qd_buf *b) {
     const qd_model *m = v->mf->model;
     qd_buf_printf(b, "model: %s\ncoordinates:", v->mf->path);
     for (size_t j = 0; j < v->e->n; j++)
@@ -68,7 +68,7 @@ static void text_header(const qd_eom_view *v, qd_buf *b) {
     qd_buf_puts(b, "\nparameters:");
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         qd_buf_printf(b, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        qd_state_put_double(b, qd_state_value(qd_model_param_value(m, i)));
+        cli_state_put_double(b, cli_state_value(qd_model_param_value(m, i)));
     }
     if (!qd_model_nparams(m))
         qd_buf_puts(b, " none");
@@ -80,7 +80,7 @@ static void text_header(const qd_eom_view *v, qd_buf *b) {
         qd_buf_puts(b, i ? ", " : " ");
         qd_print(v->ctx, v->st->syms[i], QD_FMT_TEXT, b);
         qd_buf_puts(b, " = ");
-        qd_state_put_double(b, v->st->vals[i]);
+        cli_state_put_double(b, v->st->vals[i]);
     }
     qd_buf_puts(b, "\n");
 }
@@ -92,7 +92,7 @@ static const char *kind_name(qd_con_kind k) {
 
 /* Row j of M q'' = f + A^T lambda, by names: the nonzero entries of M,
  * and lambda_k*(A_kj) for the nonzero A_kj. */
-static qd_status text_row(const qd_eom_view *v, qd_buf *b, size_t j) {
+static qd_status text_row(const cli_eom_view *v, qd_buf *b, size_t j) {
     size_t n = v->e->n;
     bool any = false;
     qd_status st = QD_OK;
@@ -117,7 +117,7 @@ static qd_status text_row(const qd_eom_view *v, qd_buf *b, size_t j) {
     return st;
 }
 
-static qd_status text_constraint(const qd_eom_view *v, qd_buf *b, size_t k) {
+static qd_status text_constraint(const cli_eom_view *v, qd_buf *b, size_t k) {
     const qd_con *c = &v->e->con[k];
     size_t n = v->e->n;
     qd_buf_printf(b, "  %s (%s): ", c->name, kind_name(c->kind));
@@ -141,7 +141,7 @@ static qd_status text_constraint(const qd_eom_view *v, qd_buf *b, size_t k) {
     return st;
 }
 
-static qd_status text_constraints(const qd_eom_view *v, qd_buf *b) {
+static qd_status text_constraints(const cli_eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\nwith the constraints' multipliers, M q'' = f + A^T lambda:\n");
     for (size_t j = 0; j < v->e->n && st == QD_OK; j++)
@@ -153,7 +153,7 @@ static qd_status text_constraints(const qd_eom_view *v, qd_buf *b) {
     return st;
 }
 
-static qd_status text_forces(const qd_eom_view *v, qd_buf *b) {
+static qd_status text_forces(const cli_eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\nmultipliers:\n");
     for (size_t k = 0; v->lambda && k < v->e->ncon && st == QD_OK; k++) {
@@ -176,7 +176,7 @@ static qd_status text_forces(const qd_eom_view *v, qd_buf *b) {
  * acts elsewhere too (include/qdot/mech.h, qd_eom_reaction). */
 #define REACTION_EXACT 1e-9
 
-static qd_status text_reactions(const qd_eom_view *v, qd_buf *b) {
+static qd_status text_reactions(const cli_eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\nreactions (the force a constraint exerts at a point, Cartesian):\n");
     for (size_t i = 0; i < v->nreact && st == QD_OK; i++) {
@@ -189,14 +189,14 @@ static qd_status text_reactions(const qd_eom_view *v, qd_buf *b) {
         if (v->react_res[i] > REACTION_EXACT) {
             qd_buf_puts(b, "    (least squares: the constraint also acts elsewhere; relative "
                            "residual ");
-            qd_state_put_double(b, v->react_res[i]);
+            cli_state_put_double(b, v->react_res[i]);
             qd_buf_puts(b, ")\n");
         }
     }
     return st;
 }
 
-static qd_status text_eliminated(const qd_eom_view *v, qd_buf *b) {
+static qd_status text_eliminated(const cli_eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\neliminated with holonomic constraints (substituted before deriving):\n");
     for (size_t i = 0; i < v->e->nelim && st == QD_OK; i++) {
@@ -207,7 +207,7 @@ static qd_status text_eliminated(const qd_eom_view *v, qd_buf *b) {
     return st;
 }
 
-static qd_status write_text(const qd_eom_view *v, qd_buf *b) {
+static qd_status write_text(const cli_eom_view *v, qd_buf *b) {
     size_t n = v->e->n;
     qd_status st = QD_OK;
     text_header(v, b);
@@ -254,7 +254,7 @@ static qd_status write_text(const qd_eom_view *v, qd_buf *b) {
 
 /* ---- LaTeX ----------------------------------------------------------------- */
 
-static qd_status latex_line(const qd_eom_view *v, qd_buf *b, bool *first, const char *lhs,
+static qd_status latex_line(const cli_eom_view *v, qd_buf *b, bool *first, const char *lhs,
                             const qd_expr *rhs) {
     qd_buf_puts(b, *first ? "  " : " \\\\\n  ");
     *first = false;
@@ -263,7 +263,7 @@ static qd_status latex_line(const qd_eom_view *v, qd_buf *b, bool *first, const 
 }
 
 /* sum_k M_jk q''_k in LaTeX, into lhs. */
-static qd_status latex_row(const qd_eom_view *v, size_t j, qd_buf *lhs) {
+static qd_status latex_row(const cli_eom_view *v, size_t j, qd_buf *lhs) {
     size_t n = v->e->n;
     const qd_expr *sum = qd_int(v->ctx, 0);
     for (size_t k = 0; k < n; k++)
@@ -275,7 +275,7 @@ static qd_status latex_row(const qd_eom_view *v, size_t j, qd_buf *lhs) {
 }
 
 /* f_j + sum_k lambda_k A_kj. */
-static const qd_expr *with_multipliers(const qd_eom_view *v, size_t j) {
+static const qd_expr *with_multipliers(const cli_eom_view *v, size_t j) {
     const qd_expr *x = v->f[j];
     for (size_t k = 0; k < v->e->ncon; k++)
         x = qd_add(v->ctx, x, qd_mul(v->ctx, v->e->con[k].lambda, v->A[k * v->e->n + j]));
@@ -283,7 +283,7 @@ static const qd_expr *with_multipliers(const qd_eom_view *v, size_t j) {
 }
 
 /* sum_j A_kj q''_j in LaTeX, into lhs. */
-static qd_status latex_constraint_row(const qd_eom_view *v, size_t k, qd_buf *lhs) {
+static qd_status latex_constraint_row(const cli_eom_view *v, size_t k, qd_buf *lhs) {
     size_t n = v->e->n;
     const qd_expr *sum = qd_int(v->ctx, 0);
     for (size_t j = 0; j < n; j++)
@@ -294,7 +294,7 @@ static qd_status latex_constraint_row(const qd_eom_view *v, size_t k, qd_buf *lh
     return qd_print(v->ctx, sum, QD_FMT_LATEX, lhs);
 }
 
-static qd_status write_latex(const qd_eom_view *v, qd_buf *b) {
+static qd_status write_latex(const cli_eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T_2", "T_1", "T_0"};
     size_t n = v->e->n;
     bool first = true;
@@ -326,178 +326,178 @@ static qd_status write_latex(const qd_eom_view *v, qd_buf *b) {
 
 /* ---- JSON ------------------------------------------------------------------ */
 
-static qd_status json_entry(const qd_eom_view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
+static qd_status json_entry(const cli_eom_view *v, cli_json *j, const qd_expr *x, qd_buf *tmp) {
     if (v->numeric) {
-        qd_json_number(j, qd_number_value(x));
+        cli_json_number(j, qd_number_value(x));
         return QD_OK;
     }
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
+    cli_json_string(j, qd_buf_str(tmp));
     return st;
 }
 
-static qd_status json_vector(const qd_eom_view *v, qd_json *j, const char *key,
+static qd_status json_vector(const cli_eom_view *v, cli_json *j, const char *key,
                              const qd_expr *const *x, size_t n, qd_buf *tmp) {
     qd_status st = QD_OK;
     if (key)
-        qd_json_key(j, key);
-    qd_json_begin_array(j);
+        cli_json_key(j, key);
+    cli_json_begin_array(j);
     for (size_t i = 0; i < n && st == QD_OK; i++)
         st = json_entry(v, j, x[i], tmp);
-    qd_json_end_array(j);
+    cli_json_end_array(j);
     return st;
 }
 
-static void json_header(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
+static void json_header(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
     const qd_model *m = v->mf->model;
-    qd_json_key(j, "model");
-    qd_json_string(j, v->mf->path);
-    qd_json_key(j, "coordinates");
-    qd_json_begin_array(j);
+    cli_json_key(j, "model");
+    cli_json_string(j, v->mf->path);
+    cli_json_key(j, "coordinates");
+    cli_json_begin_array(j);
     for (size_t i = 0; i < v->e->n; i++)
-        qd_json_string(j, qname(v, i));
-    qd_json_end_array(j);
-    qd_json_key(j, "parameters");
-    qd_json_begin_object(j);
+        cli_json_string(j, qname(v, i));
+    cli_json_end_array(j);
+    cli_json_key(j, "parameters");
+    cli_json_begin_object(j);
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        qd_json_key(j, qd_expr_name(qd_model_param(m, i)));
-        qd_json_number(j, qd_state_value(qd_model_param_value(m, i)));
+        cli_json_key(j, qd_expr_name(qd_model_param(m, i)));
+        cli_json_number(j, cli_state_value(qd_model_param_value(m, i)));
     }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
     if (!v->numeric)
         return;
-    qd_json_key(j, "state");
-    qd_json_begin_object(j);
+    cli_json_key(j, "state");
+    cli_json_begin_object(j);
     for (size_t i = 0; i < 2 * qd_model_ncoords(m) + 1; i++) {
         qd_buf_clear(tmp);
         qd_print(v->ctx, v->st->syms[i], QD_FMT_TEXT, tmp);
-        qd_json_key(j, qd_buf_str(tmp));
-        qd_json_number(j, v->st->vals[i]);
+        cli_json_key(j, qd_buf_str(tmp));
+        cli_json_number(j, v->st->vals[i]);
     }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
 }
 
-static qd_status json_constraint(const qd_eom_view *v, qd_json *j, size_t k, qd_buf *tmp) {
+static qd_status json_constraint(const cli_eom_view *v, cli_json *j, size_t k, qd_buf *tmp) {
     const qd_con *c = &v->e->con[k];
-    qd_json_begin_object(j);
-    qd_json_key(j, "name");
-    qd_json_string(j, c->name);
-    qd_json_key(j, "kind");
-    qd_json_string(j, kind_name(c->kind));
-    qd_json_key(j, "expression");
+    cli_json_begin_object(j);
+    cli_json_key(j, "name");
+    cli_json_string(j, c->name);
+    cli_json_key(j, "kind");
+    cli_json_string(j, kind_name(c->kind));
+    cli_json_key(j, "expression");
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
+    cli_json_string(j, qd_buf_str(tmp));
     if (st == QD_OK && c->integral) {
-        qd_json_key(j, "integral");
+        cli_json_key(j, "integral");
         qd_buf_clear(tmp);
         st = qd_print(v->ctx, c->integral, QD_FMT_TEXT, tmp);
-        qd_json_string(j, qd_buf_str(tmp));
+        cli_json_string(j, qd_buf_str(tmp));
     }
-    qd_json_key(j, "multiplier");
-    qd_json_string(j, qd_expr_name(c->lambda));
+    cli_json_key(j, "multiplier");
+    cli_json_string(j, qd_expr_name(c->lambda));
     if (st == QD_OK)
         st = json_vector(v, j, "A", v->A + k * v->e->n, v->e->n, tmp);
     if (st == QD_OK) {
-        qd_json_key(j, "b");
+        cli_json_key(j, "b");
         st = json_entry(v, j, v->b[k], tmp);
     }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
     return st;
 }
 
 /* "constraints" (each with its row of A and b), then the multipliers by
  * constraint name and the constraint forces by coordinate name when known. */
-static qd_status json_constraints(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_constraints(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    qd_json_key(j, "constraints");
-    qd_json_begin_array(j);
+    cli_json_key(j, "constraints");
+    cli_json_begin_array(j);
     for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++)
         st = json_constraint(v, j, k, tmp);
-    qd_json_end_array(j);
+    cli_json_end_array(j);
     if (v->lambda) {
-        qd_json_key(j, "multipliers");
-        qd_json_begin_object(j);
+        cli_json_key(j, "multipliers");
+        cli_json_begin_object(j);
         for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
-            qd_json_key(j, v->e->con[k].name);
+            cli_json_key(j, v->e->con[k].name);
             st = json_entry(v, j, v->lambda[k], tmp);
         }
-        qd_json_end_object(j);
+        cli_json_end_object(j);
     }
     if (v->R) {
-        qd_json_key(j, "constraint_forces");
-        qd_json_begin_object(j);
+        cli_json_key(j, "constraint_forces");
+        cli_json_begin_object(j);
         for (size_t i = 0; i < v->e->n && st == QD_OK; i++) {
-            qd_json_key(j, qname(v, i));
+            cli_json_key(j, qname(v, i));
             st = json_entry(v, j, v->R[i], tmp);
         }
-        qd_json_end_object(j);
+        cli_json_end_object(j);
     }
     return st;
 }
 
 /* "reactions": name -> [Fx, Fy, Fz]; "reaction_residuals": name -> residual. */
-static qd_status json_reactions(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_reactions(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    qd_json_key(j, "reactions");
-    qd_json_begin_object(j);
+    cli_json_key(j, "reactions");
+    cli_json_begin_object(j);
     for (size_t i = 0; i < v->nreact && st == QD_OK; i++) {
-        qd_json_key(j, v->react_name[i]);
+        cli_json_key(j, v->react_name[i]);
         st = json_vector(v, j, NULL, v->react + 3 * i, 3, tmp);
     }
-    qd_json_end_object(j);
-    qd_json_key(j, "reaction_residuals");
-    qd_json_begin_object(j);
+    cli_json_end_object(j);
+    cli_json_key(j, "reaction_residuals");
+    cli_json_begin_object(j);
     for (size_t i = 0; i < v->nreact; i++) {
-        qd_json_key(j, v->react_name[i]);
-        qd_json_number(j, v->react_res[i]);
+        cli_json_key(j, v->react_name[i]);
+        cli_json_number(j, v->react_res[i]);
     }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
     return st;
 }
 
-static qd_status json_eliminated(const qd_eom_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_eliminated(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    qd_json_key(j, "eliminated");
-    qd_json_begin_object(j);
+    cli_json_key(j, "eliminated");
+    cli_json_begin_object(j);
     for (size_t i = 0; i < v->e->nelim && st == QD_OK; i++) {
-        qd_json_key(j, qd_expr_name(v->e->elim[i].q));
-        qd_json_begin_object(j);
-        qd_json_key(j, "constraint");
-        qd_json_string(j, v->e->elim[i].con);
-        qd_json_key(j, "value");
+        cli_json_key(j, qd_expr_name(v->e->elim[i].q));
+        cli_json_begin_object(j);
+        cli_json_key(j, "constraint");
+        cli_json_string(j, v->e->elim[i].con);
+        cli_json_key(j, "value");
         qd_buf_clear(tmp);
         st = qd_print(v->ctx, v->e->elim[i].value, QD_FMT_TEXT, tmp);
-        qd_json_string(j, qd_buf_str(tmp));
-        qd_json_end_object(j);
+        cli_json_string(j, qd_buf_str(tmp));
+        cli_json_end_object(j);
     }
-    qd_json_end_object(j);
+    cli_json_end_object(j);
     return st;
 }
 
-static qd_status write_json(const qd_eom_view *v, qd_buf *b) {
+static qd_status write_json(const cli_eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T2", "T1", "T0"};
     size_t n = v->e->n;
     qd_buf tmp = QD_BUF_INIT;
-    qd_json j;
+    cli_json j;
     qd_status st = QD_OK;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
     json_header(v, &j, &tmp);
     for (size_t i = 0; v->T[0] && i < 3 && st == QD_OK; i++) {
-        qd_json_key(&j, parts[i]);
+        cli_json_key(&j, parts[i]);
         st = json_entry(v, &j, v->T[i], &tmp);
     }
-    qd_json_key(&j, "mass_matrix");
-    qd_json_begin_array(&j);
+    cli_json_key(&j, "mass_matrix");
+    cli_json_begin_array(&j);
     for (size_t r = 0; r < n && st == QD_OK; r++) {
-        qd_json_begin_array(&j);
+        cli_json_begin_array(&j);
         for (size_t k = 0; k < n && st == QD_OK; k++)
             st = json_entry(v, &j, v->M[r * n + k], &tmp);
-        qd_json_end_array(&j);
+        cli_json_end_array(&j);
     }
-    qd_json_end_array(&j);
+    cli_json_end_array(&j);
     if (st == QD_OK)
         st = json_vector(v, &j, "forcing", v->f, n, &tmp);
     if (st == QD_OK && v->acc)
@@ -508,10 +508,10 @@ static qd_status write_json(const qd_eom_view *v, qd_buf *b) {
         st = json_constraints(v, &j, &tmp);
     if (st == QD_OK && v->numeric && qd_model_nreactions(v->mf->model))
         st = json_reactions(v, &j, &tmp);
-    qd_json_end_object(&j);
+    cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);
-    if (st == QD_OK && !qd_json_ok(&j))
+    if (st == QD_OK && !cli_json_ok(&j))
         st = b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
     return st;
 }
@@ -520,7 +520,7 @@ static qd_status write_json(const qd_eom_view *v, qd_buf *b) {
 
 /* Bind name to Symbol or Function when the printer prints it bare (a name
  * that would shadow Python or SymPy is printed self-contained instead). */
-static void sympy_bind(const qd_eom_view *v, qd_buf *b, const qd_expr *sym, bool fn) {
+static void sympy_bind(const cli_eom_view *v, qd_buf *b, const qd_expr *sym, bool fn) {
     qd_buf tmp = QD_BUF_INIT;
     const char *name = qd_expr_name(sym);
     qd_print(v->ctx, sym, QD_FMT_SYMPY, &tmp);
@@ -531,7 +531,7 @@ static void sympy_bind(const qd_eom_view *v, qd_buf *b, const qd_expr *sym, bool
     qd_buf_free(&tmp);
 }
 
-static qd_status sympy_assign(const qd_eom_view *v, qd_buf *b, const char *name,
+static qd_status sympy_assign(const cli_eom_view *v, qd_buf *b, const char *name,
                               const qd_expr *const *x, size_t rows, size_t cols) {
     qd_status st = QD_OK;
     qd_buf_printf(b, "%s = Matrix([", name);
@@ -548,7 +548,7 @@ static qd_status sympy_assign(const qd_eom_view *v, qd_buf *b, const char *name,
 }
 
 /* A, b and the multipliers: M*q'' = f + A.T*lam and A*q'' = b. */
-static qd_status sympy_constraints(const qd_eom_view *v, qd_buf *b) {
+static qd_status sympy_constraints(const cli_eom_view *v, qd_buf *b) {
     size_t n = v->e->n, m = v->e->ncon;
     out_name A = pick(v, "A"), bb = pick(v, "b"), lam = pick(v, "lam"), M = pick(v, "M");
     out_name f = pick(v, "f"), q = pick(v, "q");
@@ -566,7 +566,7 @@ static qd_status sympy_constraints(const qd_eom_view *v, qd_buf *b) {
     return st;
 }
 
-static qd_status write_sympy(const qd_eom_view *v, qd_buf *b) {
+static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T2", "T1", "T0"};
     const qd_model *m = v->mf->model;
     size_t n = v->e->n;
@@ -598,7 +598,7 @@ static qd_status write_sympy(const qd_eom_view *v, qd_buf *b) {
 
 /* ---- C --------------------------------------------------------------------- */
 
-static void c_inputs(const qd_eom_view *v, qd_buf *b) {
+static void c_inputs(const cli_eom_view *v, qd_buf *b) {
     const qd_model *m = v->mf->model;
     const qd_eom *e = v->e;
     qd_buf_puts(b, "/* inputs (doubles in scope):");
@@ -633,7 +633,7 @@ static void c_add(c_outs *o, const qd_expr *x, const char *fmt, const char *base
     o->n++;
 }
 
-static void c_fill(const qd_eom_view *v, c_outs *o) {
+static void c_fill(const cli_eom_view *v, c_outs *o) {
     size_t n = v->e->n, m = v->e->ncon;
     out_name M = pick(v, "M"), f = pick(v, "f"), qdd = pick(v, "qdd");
     out_name A = pick(v, "A"), b = pick(v, "b");
@@ -649,7 +649,7 @@ static void c_fill(const qd_eom_view *v, c_outs *o) {
         c_add(o, v->b[k], "%s[%zu]", b.s, k, 0, false);
 }
 
-static qd_status write_c(const qd_eom_view *v, qd_buf *b) {
+static qd_status write_c(const cli_eom_view *v, qd_buf *b) {
     size_t n = v->e->n, m = v->e->ncon, nout = n * n + 2 * n + m * n + m;
     c_outs o = {0, malloc(nout * sizeof *o.x), malloc(nout * sizeof *o.names),
                 malloc(nout * sizeof *o.lhs)};
@@ -699,39 +699,39 @@ static const char *constraint_hint(const char *msg) {
     return "";
 }
 
-int qd_eom_derive_error(const qd_ctx *ctx, const qd_model_file *mf) {
+int cli_eom_derive_error(const qd_ctx *ctx, const cli_model_file *mf) {
     const qd_model *m = mf->model;
     const char *msg = qd_ctx_message(ctx);
     const char *con = named_constraint(m, msg);
     if (con && !strncmp(msg, "constraint", 10)) {
         char what[160];
         snprintf(what, sizeof what, "constraint:%s", con);
-        qd_model_file_error(mf, what, msg, constraint_hint(msg));
+        cli_model_file_error(mf, what, msg, constraint_hint(msg));
         return QD_EXIT_USAGE;
     }
     if (qd_model_hamiltonian_given(m) && qd_ctx_status(ctx) == QD_ERR_NONLINEAR) {
-        qd_model_file_error(mf, "H", msg,
+        cli_model_file_error(mf, "H", msg,
                             "the equations of motion need the Lagrangian, which needs H quadratic "
                             "in the momenta; Hamilton's equations are still given by "
                             "`qdot hamiltonian`");
         return QD_EXIT_USAGE;
     }
     if (qd_ctx_status(ctx) != QD_ERR_SINGULAR)
-        return qd_diag_ctx(ctx);
+        return cli_diag_ctx(ctx);
     if (qd_model_hamiltonian_given(m)) {
-        qd_model_file_error(mf, "H", msg,
+        cli_model_file_error(mf, "H", msg,
                             "a Lagrangian needs H quadratic in the momenta with d^2H/dp^2 "
                             "invertible; Hamilton's equations are still given by "
                             "`qdot hamiltonian`");
         return QD_EXIT_USAGE;
     }
-    qd_model_file_error(mf, qd_model_lagrangian_given(m) ? "L" : "T", msg,
+    cli_model_file_error(mf, qd_model_lagrangian_given(m) ? "L" : "T", msg,
                         "every coordinate needs inertia: its velocity must appear "
                         "quadratically in T (or L)");
     return QD_EXIT_USAGE;
 }
 
-qd_status qd_eom_write(const qd_eom_view *v, qd_eom_format fmt, qd_buf *out) {
+qd_status cli_eom_write(const cli_eom_view *v, cli_eom_format fmt, qd_buf *out) {
     switch (fmt) {
     case QD_EOM_LATEX: return write_latex(v, out);
     case QD_EOM_JSON: return write_json(v, out);

@@ -11,15 +11,15 @@
 #include "model_file.h"
 #include "state.h"
 
-typedef enum qd_eom_format { QD_EOM_TEXT, QD_EOM_LATEX, QD_EOM_JSON, QD_EOM_SYMPY, QD_EOM_C }
-    qd_eom_format;
+typedef enum cli_eom_format { QD_EOM_TEXT, QD_EOM_LATEX, QD_EOM_JSON, QD_EOM_SYMPY, QD_EOM_C }
+    cli_eom_format;
 
 /* What is printed.  In numeric mode (--at) every entry of M, f, acc, A, b,
  * lambda, R and T is a number node (qd_float) and st is the state they were
  * evaluated at. */
-typedef struct qd_eom_view {
+typedef struct cli_eom_view {
     qd_ctx *ctx;
-    const qd_model_file *mf;
+    const cli_model_file *mf;
     const qd_eom *e;                /* n, q, qd, qdd */
     const qd_expr **M, **f;         /* n*n row-major, n */
     const qd_expr **acc;            /* n, or NULL when not solved */
@@ -29,7 +29,7 @@ typedef struct qd_eom_view {
     const qd_expr *T[3];            /* T2, T1, T0; NULL when L was given without T */
     bool split;                     /* T1 or T0 is not identically zero */
     bool numeric;
-    const qd_state *st;             /* numeric mode only */
+    const cli_state *st;             /* numeric mode only */
     /* Numeric mode: the reactions of the model's `reaction` statements that
      * could be computed (qd_eom_reaction): nreact names, 3 components each
      * as number nodes, and the relative residual of each. */
@@ -37,15 +37,15 @@ typedef struct qd_eom_view {
     const char **react_name;
     const qd_expr **react;
     const double *react_res;
-} qd_eom_view;
+} cli_eom_view;
 
-bool qd_eom_format_from_name(const char *name, qd_eom_format *out);
+bool cli_eom_format_from_name(const char *name, cli_eom_format *out);
 /* Append the view to out; QD_OK, or the status of a printer that failed. */
-qd_status qd_eom_write(const qd_eom_view *v, qd_eom_format fmt, qd_buf *out);
+qd_status cli_eom_write(const cli_eom_view *v, cli_eom_format fmt, qd_buf *out);
 
 /* Print why qd_eom_derive failed, at the model statement to blame (a
  * constraint the message names, or T/L for a singular mass matrix); returns
  * the exit status. */
-int qd_eom_derive_error(const qd_ctx *ctx, const qd_model_file *mf);
+int cli_eom_derive_error(const qd_ctx *ctx, const cli_model_file *mf);
 
 #endif

@@ -8,11 +8,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-void qd_json_init(qd_json *j, qd_buf *out) {
-    *j = (qd_json){.out = out};
+void cli_json_init(cli_json *j, qd_buf *out) {
+    *j = (cli_json){.out = out};
 }
 
-static void indent(qd_json *j) {
+static void indent(cli_json *j) {
     qd_buf_puts(j->out, "\n");
     for (unsigned i = 0; i < j->depth; i++)
         qd_buf_puts(j->out, "  ");
@@ -20,7 +20,7 @@ static void indent(qd_json *j) {
 
 /* Separator before a value (or a key): a comma after an earlier item, and a
  * new line inside objects.  A value right after its key needs neither. */
-static void before_item(qd_json *j) {
+static void before_item(cli_json *j) {
     if (j->after_key) {
         j->after_key = false;
         return;
@@ -35,7 +35,7 @@ static void before_item(qd_json *j) {
         indent(j);
 }
 
-static void open_container(qd_json *j, const char *bracket, bool object) {
+static void open_container(cli_json *j, const char *bracket, bool object) {
     before_item(j);
     if (j->depth >= QD_JSON_MAX_DEPTH) {
         j->failed = true;
@@ -48,7 +48,7 @@ static void open_container(qd_json *j, const char *bracket, bool object) {
     j->depth++;
 }
 
-static void close_container(qd_json *j, const char *bracket) {
+static void close_container(cli_json *j, const char *bracket) {
     if (j->depth == 0) {
         j->failed = true;
         return;
@@ -61,10 +61,10 @@ static void close_container(qd_json *j, const char *bracket) {
     qd_buf_puts(j->out, bracket);
 }
 
-void qd_json_begin_object(qd_json *j) { open_container(j, "{", true); }
-void qd_json_end_object(qd_json *j) { close_container(j, "}"); }
-void qd_json_begin_array(qd_json *j) { open_container(j, "[", false); }
-void qd_json_end_array(qd_json *j) { close_container(j, "]"); }
+void cli_json_begin_object(cli_json *j) { open_container(j, "{", true); }
+void cli_json_end_object(cli_json *j) { close_container(j, "}"); }
+void cli_json_begin_array(cli_json *j) { open_container(j, "[", false); }
+void cli_json_end_array(cli_json *j) { close_container(j, "]"); }
 
 static void put_string(qd_buf *b, const char *s) {
     qd_buf_puts(b, "\"");
@@ -87,19 +87,19 @@ static void put_string(qd_buf *b, const char *s) {
     qd_buf_puts(b, "\"");
 }
 
-void qd_json_key(qd_json *j, const char *key) {
+void cli_json_key(cli_json *j, const char *key) {
     before_item(j);
     put_string(j->out, key);
     qd_buf_puts(j->out, ": ");
     j->after_key = true;
 }
 
-void qd_json_string(qd_json *j, const char *s) {
+void cli_json_string(cli_json *j, const char *s) {
     before_item(j);
     put_string(j->out, s);
 }
 
-bool qd_json_number(qd_json *j, double v) {
+bool cli_json_number(cli_json *j, double v) {
     if (!isfinite(v)) {
         j->failed = true;
         return false;
@@ -120,29 +120,29 @@ bool qd_json_number(qd_json *j, double v) {
     return true;
 }
 
-void qd_json_bool(qd_json *j, bool v) {
+void cli_json_bool(cli_json *j, bool v) {
     before_item(j);
     qd_buf_puts(j->out, v ? "true" : "false");
 }
 
-void qd_json_null(qd_json *j) {
+void cli_json_null(cli_json *j) {
     before_item(j);
     qd_buf_puts(j->out, "null");
 }
 
-void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x) {
+void cli_json_expr(cli_json *j, qd_ctx *ctx, const qd_expr *x) {
     if (!x) {
-        qd_json_null(j);
+        cli_json_null(j);
         return;
     }
     qd_buf s = QD_BUF_INIT;
     qd_print(ctx, x, QD_FMT_TEXT, &s);
     if (s.failed)
         j->failed = true;
-    qd_json_string(j, qd_buf_str(&s));
+    cli_json_string(j, qd_buf_str(&s));
     qd_buf_free(&s);
 }
 
-bool qd_json_ok(const qd_json *j) {
+bool cli_json_ok(const cli_json *j) {
     return !j->failed && !j->out->failed && j->depth == 0 && !j->after_key;
 }

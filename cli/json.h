@@ -6,7 +6,7 @@
  * control characters); numbers are written with %.17g so that they read back
  * to the same double.  JSON has no NaN or infinity, so a non-finite number is
  * refused: the writer then marks itself failed and the caller must not print
- * the document (qd_json_ok).
+ * the document (cli_json_ok).
  */
 #ifndef QDOT_CLI_JSON_H
 #define QDOT_CLI_JSON_H
@@ -17,28 +17,28 @@
 
 #define QD_JSON_MAX_DEPTH 32
 
-typedef struct qd_json {
+typedef struct cli_json {
     qd_buf *out;
     unsigned depth;
     uint32_t has_items;  /* bit d: the container at depth d has a value already */
     uint32_t is_object;  /* bit d: the container at depth d is an object */
     bool after_key;      /* the next value completes a member */
     bool failed;         /* a non-finite number or nesting beyond QD_JSON_MAX_DEPTH */
-} qd_json;
+} cli_json;
 
-void qd_json_init(qd_json *j, qd_buf *out);
-void qd_json_begin_object(qd_json *j);
-void qd_json_end_object(qd_json *j);
-void qd_json_begin_array(qd_json *j);
-void qd_json_end_array(qd_json *j);
-void qd_json_key(qd_json *j, const char *key);
-void qd_json_string(qd_json *j, const char *s);
-bool qd_json_number(qd_json *j, double v); /* false for NaN and infinities */
-void qd_json_bool(qd_json *j, bool v);
-void qd_json_null(qd_json *j);
+void cli_json_init(cli_json *j, qd_buf *out);
+void cli_json_begin_object(cli_json *j);
+void cli_json_end_object(cli_json *j);
+void cli_json_begin_array(cli_json *j);
+void cli_json_end_array(cli_json *j);
+void cli_json_key(cli_json *j, const char *key);
+void cli_json_string(cli_json *j, const char *s);
+bool cli_json_number(cli_json *j, double v); /* false for NaN and infinities */
+void cli_json_bool(cli_json *j, bool v);
+void cli_json_null(cli_json *j);
 /* An expression as a string in the text format; null for NULL. */
-void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x);
+void cli_json_expr(cli_json *j, qd_ctx *ctx, const qd_expr *x);
 /* The document is complete, nothing was refused and no memory ran out. */
-bool qd_json_ok(const qd_json *j);
+bool cli_json_ok(const cli_json *j);
 
 #endif

@@ -15,25 +15,25 @@
 #include <string.h>
 #include "model_cli.h"
 
-int qd_lin_load(qd_lin_run *r, const char *file, const char *const *sets, size_t nsets) {
+int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size_t nsets) {
     qd_eom_opts opts = {.eliminate = true};
-    int rc = qd_cli_load_derive(r->ctx, file, nsets, sets, NULL, &opts, &r->mf, &r->e);
+    int rc = cli_load_derive(r->ctx, file, nsets, sets, NULL, &opts, &r->mf, &r->e);
     if (rc != QD_EXIT_OK)
         return rc;
     if (r->e->ncon) {
-        qd_diag_error("the model keeps %zu constraint%s with multipliers after elimination: "
+        cli_diag_error("the model keeps %zu constraint%s with multipliers after elimination: "
                       "equilibria and modes need independent coordinates", r->e->ncon,
                       r->e->ncon == 1 ? "" : "s");
         return QD_EXIT_USAGE;
     }
-    rc = qd_state_init(r->ctx, r->mf.model, &r->st);
+    rc = cli_state_init(r->ctx, r->mf.model, &r->st);
     if (rc != QD_EXIT_OK)
         return rc;
     /* the slot of each independent coordinate in the model's state */
     size_t nq = qd_model_ncoords(r->mf.model);
     r->slot = malloc((r->e->n + 1) * sizeof *r->slot);
     if (!r->slot) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     for (size_t j = 0; j < r->e->n; j++) {
@@ -42,7 +42,7 @@ int qd_lin_load(qd_lin_run *r, const char *file, const char *const *sets, size_t
             if (r->st.syms[i] == r->e->q[j])
                 r->slot[j] = i;
         if (r->slot[j] == SIZE_MAX) {
-            qd_diag_error("internal error: coordinate %s of the equations is not in the model",
+            cli_diag_error("internal error: coordinate %s of the equations is not in the model",
                           qd_expr_name(r->e->q[j]));
             return QD_EXIT_FAIL;
         }
@@ -50,17 +50,17 @@ int qd_lin_load(qd_lin_run *r, const char *file, const char *const *sets, size_t
     return QD_EXIT_OK;
 }
 
-void qd_lin_free(qd_lin_run *r) {
-    qd_state_free(&r->st);
+void cli_lin_free(cli_lin_run *r) {
+    cli_state_free(&r->st);
     free(r->slot);
     r->slot = NULL;
     if (r->e)
         qd_eom_free(r->e);
     r->e = NULL;
-    qd_model_file_free(&r->mf);
+    cli_model_file_free(&r->mf);
 }
 
-void qd_lin_set_state(qd_lin_run *r, const double *q, const double *qd) {
+void cli_lin_set_state(cli_lin_run *r, const double *q, const double *qd) {
     size_t nq = qd_model_ncoords(r->mf.model);
     for (size_t j = 0; j < r->e->n; j++) {
         r->st.vals[r->slot[j]] = q[j];
@@ -69,7 +69,7 @@ void qd_lin_set_state(qd_lin_run *r, const double *q, const double *qd) {
 }
 
 /* "theta, phi": the independent coordinates, for messages. */
-static void independent_names(const qd_lin_run *r, char *out, size_t cap) {
+static void independent_names(const cli_lin_run *r, char *out, size_t cap) {
     size_t used = 0;
     out[0] = '\0';
     for (size_t j = 0; j < r->e->n && used < cap; j++)
@@ -79,40 +79,40 @@ static void independent_names(const qd_lin_run *r, char *out, size_t cap) {
 
 /* The index in e->q of the model's coordinate i, or e->n when a constraint
  * eliminated it. */
-static size_t eom_index(const qd_lin_run *r, size_t i) {
+static size_t eom_index(const cli_lin_run *r, size_t i) {
     size_t j = 0;
     while (j < r->e->n && r->slot[j] != i)
         j++;
     return j;
 }
 
-static int eliminated(const qd_lin_run *r, const char *what, const char *name) {
+static int eliminated(const cli_lin_run *r, const char *what, const char *name) {
     char names[512];
     independent_names(r, names, sizeof names);
-    qd_diag_error("%s: %s is not an independent coordinate here (a constraint eliminates it); "
+    cli_diag_error("%s: %s is not an independent coordinate here (a constraint eliminates it); "
                   "give values of %s", what, name, names);
     return QD_EXIT_USAGE;
 }
 
-int qd_lin_point(qd_lin_run *r, const char *what, const char *text, double *q, double *qd) {
+int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q, double *qd) {
     const qd_model *m = r->mf.model;
     size_t nq = qd_model_ncoords(m);
-    qd_state s;
-    int rc = qd_state_init(r->ctx, m, &s);
+    cli_state s;
+    int rc = cli_state_init(r->ctx, m, &s);
     if (rc != QD_EXIT_OK)
         return rc;
     /* NaN marks what the text does not give: every value read is finite */
     for (size_t i = 0; i <= 2 * nq; i++)
         s.vals[i] = NAN;
-    rc = qd_state_parse_as(r->ctx, m, what, text, &s);
+    rc = cli_state_parse_as(r->ctx, m, what, text, &s);
     if (rc == QD_EXIT_OK && !isnan(s.vals[2 * nq])) {
-        qd_diag_error("%s: give coordinates%s only, not the time t", what,
+        cli_diag_error("%s: give coordinates%s only, not the time t", what,
                       qd ? " and velocities" : "");
         rc = QD_EXIT_USAGE;
     }
     for (size_t i = 2 * nq + 1; rc == QD_EXIT_OK && i < s.n; i++)
         if (s.vals[i] != r->st.vals[i]) {
-            qd_diag_error("%s: %s is a parameter: give it with --set", what,
+            cli_diag_error("%s: %s is a parameter: give it with --set", what,
                           qd_expr_name(s.syms[i]));
             rc = QD_EXIT_USAGE;
         }
@@ -123,7 +123,7 @@ int qd_lin_point(qd_lin_run *r, const char *what, const char *text, double *q, d
         if ((given_q || given_v) && j == r->e->n)
             rc = eliminated(r, what, name);
         else if (given_v && !qd) {
-            qd_diag_error("%s: give coordinates only (a point at rest), not %s'", what, name);
+            cli_diag_error("%s: give coordinates only (a point at rest), not %s'", what, name);
             rc = QD_EXIT_USAGE;
         } else {
             if (given_q)
@@ -132,14 +132,14 @@ int qd_lin_point(qd_lin_run *r, const char *what, const char *text, double *q, d
                 qd[j] = s.vals[nq + i];
         }
     }
-    qd_state_free(&s);
+    cli_state_free(&s);
     return rc;
 }
 
-int qd_lin_coords(qd_lin_run *r, const char *what, const char *text, double *q) {
+int cli_lin_coords(cli_lin_run *r, const char *what, const char *text, double *q) {
     for (size_t j = 0; j < r->e->n; j++)
         q[j] = 0;
-    return qd_lin_point(r, what, text, q, NULL);
+    return cli_lin_point(r, what, text, q, NULL);
 }
 
 /* ---- --box ------------------------------------------------------------------ */
@@ -157,10 +157,10 @@ static size_t item_end(const char *t, size_t i) {
     return i;
 }
 
-static int box_item(qd_lin_run *r, const char *item, double *lo, double *hi, bool *seen) {
+static int box_item(cli_lin_run *r, const char *item, double *lo, double *hi, bool *seen) {
     const char *eq = strchr(item, '='), *dots = eq ? strstr(eq, "..") : NULL;
     if (!eq || !dots) {
-        qd_diag_error("--box takes NAME=LOW..HIGH items, not '%s'", item);
+        cli_diag_error("--box takes NAME=LOW..HIGH items, not '%s'", item);
         return QD_EXIT_USAGE;
     }
     char name[128], a[256], b[256];
@@ -172,7 +172,7 @@ static int box_item(qd_lin_run *r, const char *item, double *lo, double *hi, boo
         s++;
     if (nl - s >= sizeof name || (size_t)(dots - eq - 1) >= sizeof a ||
         strlen(dots + 2) >= sizeof b) {
-        qd_diag_error("--box: item too long: '%s'", item);
+        cli_diag_error("--box: item too long: '%s'", item);
         return QD_EXIT_USAGE;
     }
     memcpy(name, item + s, nl - s);
@@ -184,29 +184,29 @@ static int box_item(qd_lin_run *r, const char *item, double *lo, double *hi, boo
     while (i < nq && strcmp(qd_expr_name(qd_model_coord(r->mf.model, i)), name))
         i++;
     if (i == nq) {
-        qd_diag_error("--box: '%s' is not a coordinate", name);
+        cli_diag_error("--box: '%s' is not a coordinate", name);
         return QD_EXIT_USAGE;
     }
     size_t j = eom_index(r, i);
     if (j == r->e->n)
         return eliminated(r, "--box", name);
     if (seen[j]) {
-        qd_diag_error("--box: %s is given twice", name);
+        cli_diag_error("--box: %s is given twice", name);
         return QD_EXIT_USAGE;
     }
     seen[j] = true;
     const qd_expr *x;
-    int rc = qd_state_number(r->ctx, "--box", a, &x, &lo[j]);
+    int rc = cli_state_number(r->ctx, "--box", a, &x, &lo[j]);
     if (rc == QD_EXIT_OK)
-        rc = qd_state_number(r->ctx, "--box", b, &x, &hi[j]);
+        rc = cli_state_number(r->ctx, "--box", b, &x, &hi[j]);
     if (rc == QD_EXIT_OK && !(lo[j] < hi[j])) {
-        qd_diag_error("--box: the range of %s is empty", name);
+        cli_diag_error("--box: the range of %s is empty", name);
         rc = QD_EXIT_USAGE;
     }
     return rc;
 }
 
-int qd_lin_box(qd_lin_run *r, const char *text, double *lo, double *hi) {
+int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi) {
     char item[512];
     bool *seen = calloc(r->e->n + 1, sizeof *seen);
     if (!seen)
@@ -215,7 +215,7 @@ int qd_lin_box(qd_lin_run *r, const char *text, double *lo, double *hi) {
     for (size_t i = 0; text[i] && rc == QD_EXIT_OK;) {
         size_t end = item_end(text, i);
         if (end - i >= sizeof item) {
-            qd_diag_error("--box: item too long");
+            cli_diag_error("--box: item too long");
             rc = QD_EXIT_USAGE;
             break;
         }
@@ -231,7 +231,7 @@ int qd_lin_box(qd_lin_run *r, const char *text, double *lo, double *hi) {
 
 /* ---- the search -------------------------------------------------------------- */
 
-int qd_lin_equilibria(qd_lin_run *r, const char *near, const char *box, qd_equilibria *out) {
+int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out) {
     size_t n = r->e->n;
     double *q = malloc((n + 1) * sizeof *q), *lo = malloc((n + 1) * sizeof *lo);
     double *hi = malloc((n + 1) * sizeof *hi);
@@ -240,10 +240,10 @@ int qd_lin_equilibria(qd_lin_run *r, const char *near, const char *box, qd_equil
     qd_equilibria_opts o = {0};
     if (rc == QD_EXIT_OK &&
         qd_equilibria_default_box(r->ctx, r->e, r->mf.model, angle, lo, hi) != QD_OK)
-        rc = qd_diag_ctx(r->ctx);
-    if (rc == QD_EXIT_OK && near && (rc = qd_lin_coords(r, "--near", near, q)) == QD_EXIT_OK)
+        rc = cli_diag_ctx(r->ctx);
+    if (rc == QD_EXIT_OK && near && (rc = cli_lin_coords(r, "--near", near, q)) == QD_EXIT_OK)
         o.near = q;
-    if (rc == QD_EXIT_OK && box && (rc = qd_lin_box(r, box, lo, hi)) == QD_EXIT_OK) {
+    if (rc == QD_EXIT_OK && box && (rc = cli_lin_box(r, box, lo, hi)) == QD_EXIT_OK) {
         o.lo = lo;
         o.hi = hi;
         o.numeric_only = true;
@@ -251,7 +251,7 @@ int qd_lin_equilibria(qd_lin_run *r, const char *near, const char *box, qd_equil
     if (rc == QD_EXIT_OK &&
         qd_equilibria_find(r->ctx, r->e, r->mf.model, r->st.n, r->st.syms, r->st.vals, &o,
                            out) != QD_OK) {
-        qd_diag_error("%s", qd_ctx_message(r->ctx));
+        cli_diag_error("%s", qd_ctx_message(r->ctx));
         rc = QD_EXIT_FAIL;
     }
     free(q);
@@ -261,9 +261,9 @@ int qd_lin_equilibria(qd_lin_run *r, const char *near, const char *box, qd_equil
     return rc;
 }
 
-void qd_lin_put_value(qd_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b) {
+void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b) {
     if (p->exact && p->exact[j])
         qd_print(r->ctx, p->exact[j], QD_FMT_TEXT, b);
     else
-        qd_state_put_result(b, p->q[j]);
+        cli_state_put_result(b, p->q[j]);
 }

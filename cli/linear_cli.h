@@ -15,32 +15,32 @@
 
 #define QD_LIN_MAX_SETS 64
 
-typedef struct qd_lin_run {
+typedef struct cli_lin_run {
     qd_ctx *ctx;
-    qd_model_file mf;
+    cli_model_file mf;
     qd_eom *e;
-    qd_state st;       /* the model's state: coordinates 0, parameters at their values */
+    cli_state st;       /* the model's state: coordinates 0, parameters at their values */
     size_t *slot;      /* e->n: the slot in st of each coordinate of the equations */
-} qd_lin_run;
+} cli_lin_run;
 
 /* Load FILE, apply the --set list, derive, fill the state. */
-int qd_lin_load(qd_lin_run *r, const char *file, const char *const *sets, size_t nsets);
-void qd_lin_free(qd_lin_run *r);
+int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size_t nsets);
+void cli_lin_free(cli_lin_run *r);
 /* The equations' coordinates may be fewer than the model's (constraints
  * eliminated): arrays of values here have e->n entries in the order of e->q.
  * "q1=VALUE, q1'=VALUE, ..." (what: "--initial"): the values named go to q
  * and qd (the others keep theirs); velocities are refused when qd is NULL,
  * and so are t, parameters and eliminated coordinates. */
-int qd_lin_point(qd_lin_run *r, const char *what, const char *text, double *q, double *qd);
+int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q, double *qd);
 /* "q1=VALUE, ..." (what: "--near"): coordinate values (unnamed ones 0). */
-int qd_lin_coords(qd_lin_run *r, const char *what, const char *text, double *q);
+int cli_lin_coords(cli_lin_run *r, const char *what, const char *text, double *q);
 /* Put q and qd (NULL: at rest) into st at the coordinates' slots. */
-void qd_lin_set_state(qd_lin_run *r, const double *q, const double *qd);
+void cli_lin_set_state(cli_lin_run *r, const double *q, const double *qd);
 /* "q1=A..B, ...": the box; unnamed coordinates keep lo/hi as given. */
-int qd_lin_box(qd_lin_run *r, const char *text, double *lo, double *hi);
+int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi);
 /* Equilibria with the options (near, box may be NULL). */
-int qd_lin_equilibria(qd_lin_run *r, const char *near, const char *box, qd_equilibria *out);
+int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out);
 /* One exact or numeric coordinate value, as text. */
-void qd_lin_put_value(qd_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b);
+void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b);
 
 #endif

@@ -5,34 +5,34 @@
 
 #include <string.h>
 
-static const qd_cmd commands[] = {
-    {"tour", "", "a one-minute tour of the symbolic kernel", qd_cmd_tour, false},
+static const cli_cmd commands[] = {
+    {"tour", "", "a one-minute tour of the symbolic kernel", cli_cmd_tour, false},
     {"diff", "EXPR VAR [VAR...] [--format F]", "partial derivative (repeated for each VAR)",
-     qd_cmd_diff, false},
-    {"expand", "EXPR [--format F]", "distribute products and powers of sums", qd_cmd_expand, false},
+     cli_cmd_diff, false},
+    {"expand", "EXPR [--format F]", "distribute products and powers of sums", cli_cmd_expand, false},
     {"simplify", "EXPR [--format F]", "expand, trigonometric identities, cancel, factor",
-     qd_cmd_simplify, false},
-    {"print", "EXPR [--format F]", "print an expression in canonical form", qd_cmd_print, false},
+     cli_cmd_simplify, false},
+    {"print", "EXPR [--format F]", "print an expression in canonical form", cli_cmd_print, false},
     {"eom", "FILE [--format F] [OPTIONS]",
-     "Lagrange's equations of a model, M q'' = f", qd_cmd_eom, true},
-    {"check", "FILE", "validate a model and summarize it", qd_cmd_check, false},
+     "Lagrange's equations of a model, M q'' = f", cli_cmd_eom, true},
+    {"check", "FILE", "validate a model and summarize it", cli_cmd_check, false},
     {"hamiltonian", "FILE [--format F] [--at ...]", "momenta, H and Hamilton's equations",
-     qd_cmd_hamiltonian, true},
-    {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", qd_cmd_bracket, false},
+     cli_cmd_hamiltonian, true},
+    {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", cli_cmd_bracket, false},
     {"canonical", "FILE --Q ... --P ... | --generator", "canonical transformations, K = H + dF/dt",
-     qd_cmd_canonical, true},
-    {"routh", "FILE --ignore Q[,Q...]", "the Routhian and the reduced equations", qd_cmd_routh, true},
+     cli_cmd_canonical, true},
+    {"routh", "FILE --ignore Q[,Q...]", "the Routhian and the reduced equations", cli_cmd_routh, true},
     {"integrals", "FILE", "integrals of motion: cyclic, Jacobi, Noether, proposed",
-     qd_cmd_integrals, true},
-    {"simulate", "FILE --t-end T [OPTIONS]", "integrate the motion; CSV or JSON", qd_cmd_simulate, true},
-    {"poincare", "FILE --section ... --n N", "a Poincare surface of section", qd_cmd_poincare, true},
-    {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", qd_cmd_codegen, true},
+     cli_cmd_integrals, true},
+    {"simulate", "FILE --t-end T [OPTIONS]", "integrate the motion; CSV or JSON", cli_cmd_simulate, true},
+    {"poincare", "FILE --section ... --n N", "a Poincare surface of section", cli_cmd_poincare, true},
+    {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", cli_cmd_codegen, true},
     {"equilibria", "FILE [--near ...|--box ...]", "equilibria and their kind",
-     qd_cmd_equilibria, true},
+     cli_cmd_equilibria, true},
     {"modes", "FILE [--about ...]", "small oscillations: frequencies and mode shapes",
-     qd_cmd_modes, true},
+     cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
-     qd_cmd_stability, true},
+     cli_cmd_stability, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
@@ -72,6 +72,6 @@ int main(int argc, char **argv) {
                 }
             return commands[i].run(argc - 2, argv + 2);
         }
-    qd_diag_error("unknown command '%s' (try 'qdot --help')", argv[1]);
+    cli_diag_error("unknown command '%s' (try 'qdot --help')", argv[1]);
     return QD_EXIT_USAGE;
 }

@@ -11,25 +11,25 @@
 #include "qdot/read.h"
 #include "state.h"
 
-int qd_cli_once(const char *opt, const char **slot, const char *value) {
+int cli_once(const char *opt, const char **slot, const char *value) {
     if (*slot) {
-        qd_diag_error("%s is given twice; give it once", opt);
+        cli_diag_error("%s is given twice; give it once", opt);
         return QD_EXIT_USAGE;
     }
     *slot = value;
     return QD_EXIT_OK;
 }
 
-int qd_cli_push(const char *opt, const char **list, size_t *n, size_t cap, const char *value) {
+int cli_push(const char *opt, const char **list, size_t *n, size_t cap, const char *value) {
     if (*n >= cap) {
-        qd_diag_error("at most %zu %s options", cap, opt);
+        cli_diag_error("at most %zu %s options", cap, opt);
         return QD_EXIT_USAGE;
     }
     list[(*n)++] = value;
     return QD_EXIT_OK;
 }
 
-int qd_cli_choice(const char *opt, const char *value, const char *const *names, int *out) {
+int cli_choice(const char *opt, const char *value, const char *const *names, int *out) {
     size_t k = 0;
     for (; names[k]; k++)
         if (!strcmp(value, names[k])) {
@@ -42,20 +42,20 @@ int qd_cli_choice(const char *opt, const char *value, const char *const *names, 
     for (size_t i = 0; i < k && used < sizeof list; i++)
         used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
                                  i == 0 ? "" : i + 1 == k ? " or " : ", ", names[i]);
-    qd_diag_error("%s takes %s, not '%s'", opt, list, value);
+    cli_diag_error("%s takes %s, not '%s'", opt, list, value);
     return QD_EXIT_USAGE;
 }
 
-int qd_cli_bad_option(const char *arg, const char *usage) {
-    qd_diag_error("unknown option or missing value: '%s'\n%s", arg, usage);
+int cli_bad_option(const char *arg, const char *usage) {
+    cli_diag_error("unknown option or missing value: '%s'\n%s", arg, usage);
     return QD_EXIT_USAGE;
 }
 
-int qd_cli_apply_sets(qd_ctx *ctx, qd_model *m, size_t nsets, const char *const *sets,
-                      qd_cli_subs *subs) {
+int cli_apply_sets(qd_ctx *ctx, qd_model *m, size_t nsets, const char *const *sets,
+                      cli_subs *subs) {
     for (size_t i = 0; i < nsets; i++) {
         const qd_expr *p, *v;
-        int rc = qd_state_set(ctx, m, sets[i], &p, &v);
+        int rc = cli_state_set(ctx, m, sets[i], &p, &v);
         if (rc != QD_EXIT_OK)
             return rc;
         if (!subs)
@@ -64,7 +64,7 @@ int qd_cli_apply_sets(qd_ctx *ctx, qd_model *m, size_t nsets, const char *const 
         while (k < subs->n && subs->from[k] != p)
             k++;
         if (k == QD_CLI_MAX_LIST) {
-            qd_diag_error("at most %d parameters can be set", QD_CLI_MAX_LIST);
+            cli_diag_error("at most %d parameters can be set", QD_CLI_MAX_LIST);
             return QD_EXIT_USAGE;
         }
         subs->from[k] = p;
@@ -74,31 +74,31 @@ int qd_cli_apply_sets(qd_ctx *ctx, qd_model *m, size_t nsets, const char *const 
     return QD_EXIT_OK;
 }
 
-int qd_cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
-                       qd_cli_subs *subs, const qd_eom_opts *opts, qd_model_file *mf,
+int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
+                       cli_subs *subs, const qd_eom_opts *opts, cli_model_file *mf,
                        qd_eom **e) {
     *e = NULL;
-    int rc = qd_model_file_load(ctx, file, mf);
+    int rc = cli_model_file_load(ctx, file, mf);
     if (rc == QD_EXIT_OK)
-        rc = qd_cli_apply_sets(ctx, mf->model, nsets, sets, subs);
+        rc = cli_apply_sets(ctx, mf->model, nsets, sets, subs);
     if (rc == QD_EXIT_OK && !(*e = qd_eom_derive_opts(ctx, mf->model, opts)))
-        rc = qd_eom_derive_error(ctx, mf);
+        rc = cli_eom_derive_error(ctx, mf);
     return rc;
 }
 
-const qd_expr *qd_cli_subst(qd_ctx *ctx, const qd_cli_subs *subs, const qd_expr *x) {
+const qd_expr *cli_subst(qd_ctx *ctx, const cli_subs *subs, const qd_expr *x) {
     if (!x || !subs->n)
         return x;
     const qd_expr *y = qd_subs(ctx, x, subs->n, subs->from, subs->to);
     return y == x ? x : qd_simplify(ctx, y);
 }
 
-int qd_cli_emit(qd_buf *b, const char *what) {
+int cli_emit(qd_buf *b, const char *what) {
     bool ok = !b->failed;
     if (ok)
         fputs(qd_buf_str(b), stdout);
     else
-        qd_diag_error("cannot print the %s", what);
+        cli_diag_error("cannot print the %s", what);
     qd_buf_free(b);
     return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
@@ -116,7 +116,7 @@ static void statement_diag(const qd_diag *d, const char *opt, const char *text, 
     /* the parser's messages are short: cut at the reader's size */
     memcpy(err.message, d->message, sizeof err.message - 1);
     memcpy(err.hint, d->hint, sizeof err.hint - 1);
-    qd_diag_read(opt, text, &err);
+    cli_diag_read(opt, text, &err);
 }
 
 /* The text starts with a label "NAME:". */
@@ -134,11 +134,11 @@ static bool has_label(const char *s) {
 
 /* "KEYWORD [LABEL: ]TEXT" appended to the file's text and parsed again; the
  * model (and *all, the text it points into) for the caller to free. */
-static int reparse(qd_ctx *ctx, const qd_model_file *mf, const char *opt, const char *keyword,
+static int reparse(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *keyword,
                    const char *label, const char *text, qd_model **out, char **all) {
     *out = NULL;
     if (strchr(text, '\n') || strchr(text, '#')) {
-        qd_diag_error("%s takes one statement on one line, without comments", opt);
+        cli_diag_error("%s takes one statement on one line, without comments", opt);
         return QD_EXIT_USAGE;
     }
     char lab[80] = "";
@@ -146,7 +146,7 @@ static int reparse(qd_ctx *ctx, const qd_model_file *mf, const char *opt, const 
         snprintf(lab, sizeof lab, "%s: ", label);
     size_t cap = strlen(mf->text) + strlen(keyword) + strlen(lab) + strlen(text) + 4;
     if (!(*all = malloc(cap))) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     int base = snprintf(*all, cap, "%s\n%s %s", mf->text, keyword, lab);
@@ -157,14 +157,14 @@ static int reparse(qd_ctx *ctx, const qd_model_file *mf, const char *opt, const 
     if (*out)
         return QD_EXIT_OK;
     if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     statement_diag(&d, opt, text, (size_t)base);
     return QD_EXIT_USAGE;
 }
 
-int qd_cli_symmetry(qd_ctx *ctx, const qd_model_file *mf, const char *opt, const char *text,
+int cli_symmetry(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *text,
                     const char *label, char *name, size_t cap, const qd_expr **xi) {
     qd_model *m;
     char *all = NULL;
@@ -180,7 +180,7 @@ int qd_cli_symmetry(qd_ctx *ctx, const qd_model_file *mf, const char *opt, const
     return rc;
 }
 
-int qd_cli_integral(qd_ctx *ctx, const qd_model_file *mf, const char *opt, const char *text,
+int cli_integral(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *text,
                     const char *label, char *name, size_t cap, const qd_expr **expr) {
     qd_model *m;
     char *all = NULL;

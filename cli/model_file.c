@@ -39,12 +39,12 @@ static char *slurp(FILE *fp, size_t *len) {
     return s;
 }
 
-static int read_text(const char *path, qd_model_file *mf) {
+static int read_text(const char *path, cli_model_file *mf) {
     bool std_in = !strcmp(path, "-");
     mf->path = std_in ? "<stdin>" : path;
     FILE *fp = std_in ? stdin : fopen(path, "rb");
     if (!fp) {
-        qd_diag_error("cannot open '%s': %s", path, strerror(errno));
+        cli_diag_error("cannot open '%s': %s", path, strerror(errno));
         return QD_EXIT_USAGE;
     }
     errno = 0;
@@ -53,19 +53,19 @@ static int read_text(const char *path, qd_model_file *mf) {
     if (!std_in)
         fclose(fp);
     if (!mf->text) {
-        qd_diag_error("cannot read '%s': %s", mf->path, strerror(err ? err : EIO));
+        cli_diag_error("cannot read '%s': %s", mf->path, strerror(err ? err : EIO));
         return QD_EXIT_USAGE;
     }
     /* the parser reads up to the first NUL: the rest would be ignored silently */
     if (strlen(mf->text) != mf->len) {
-        qd_diag_error("%s: the file contains a NUL byte at offset %zu (not a text file?)",
+        cli_diag_error("%s: the file contains a NUL byte at offset %zu (not a text file?)",
                       mf->path, strlen(mf->text));
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
 }
 
-static void print_diag(const qd_model_file *mf, const qd_diag *d) {
+static void print_diag(const cli_model_file *mf, const qd_diag *d) {
     qd_buf b = QD_BUF_INIT;
     qd_diag_format(d, mf->path, mf->text, &b);
     fputs(qd_buf_str(&b), stderr);
@@ -74,8 +74,8 @@ static void print_diag(const qd_model_file *mf, const qd_diag *d) {
     qd_buf_free(&b);
 }
 
-int qd_model_file_load(qd_ctx *ctx, const char *path, qd_model_file *mf) {
-    *mf = (qd_model_file){0};
+int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {
+    *mf = (cli_model_file){0};
     int rc = read_text(path, mf);
     if (rc != QD_EXIT_OK)
         return rc;
@@ -85,21 +85,21 @@ int qd_model_file_load(qd_ctx *ctx, const char *path, qd_model_file *mf) {
     if (mf->model)
         return QD_EXIT_OK;
     if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
-        qd_diag_error("out of memory while reading '%s'", mf->path);
+        cli_diag_error("out of memory while reading '%s'", mf->path);
         return QD_EXIT_FAIL;
     }
     print_diag(mf, &d);
     return QD_EXIT_USAGE;
 }
 
-void qd_model_file_free(qd_model_file *mf) {
+void cli_model_file_free(cli_model_file *mf) {
     if (mf->model)
         qd_model_free(mf->model);
     free(mf->text);
-    *mf = (qd_model_file){0};
+    *mf = (cli_model_file){0};
 }
 
-void qd_model_file_error(const qd_model_file *mf, const char *what, const char *message,
+void cli_model_file_error(const cli_model_file *mf, const char *what, const char *message,
                          const char *hint) {
     qd_diag d;
     memset(&d, 0, sizeof d);

@@ -23,7 +23,7 @@ static int number(const char *opt, const char *v, double *out, bool positive) {
     char *end;
     double x = strtod(v, &end);
     if (end == v || *end || !isfinite(x) || (positive && !(x > 0))) {
-        qd_diag_error("%s takes a %snumber, not '%s'", opt, positive ? "positive " : "", v);
+        cli_diag_error("%s takes a %snumber, not '%s'", opt, positive ? "positive " : "", v);
         return QD_EXIT_USAGE + 100;
     }
     *out = x;
@@ -32,14 +32,14 @@ static int number(const char *opt, const char *v, double *out, bool positive) {
 
 static int push(const char **list, size_t *n, const char *v, const char *opt) {
     if (*n == QD_SIM_MAX_LIST) {
-        qd_diag_error("at most %d %s options", QD_SIM_MAX_LIST, opt);
+        cli_diag_error("at most %d %s options", QD_SIM_MAX_LIST, opt);
         return QD_EXIT_USAGE + 100;
     }
     list[(*n)++] = v;
     return 1;
 }
 
-int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a) {
+int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     const char *v;
     int save = *i;
     if (!strcmp(argv[*i], "--native")) {
@@ -50,47 +50,47 @@ int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a) {
         a->no_project = true;
         return 1;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--t-end"))) {
+    if ((v = cli_value(argc, argv, i, "--t-end"))) {
         a->has_t_end = true;
         return number("--t-end", v, &a->t_end, false);
     }
-    if ((v = qd_cli_value(argc, argv, i, "--dt"))) {
+    if ((v = cli_value(argc, argv, i, "--dt"))) {
         a->has_dt = true;
         return number("--dt", v, &a->dt, true);
     }
-    if ((v = qd_cli_value(argc, argv, i, "--rtol"))) {
+    if ((v = cli_value(argc, argv, i, "--rtol"))) {
         a->has_rtol = true;
         return number("--rtol", v, &a->rtol, true);
     }
-    if ((v = qd_cli_value(argc, argv, i, "--atol")))
+    if ((v = cli_value(argc, argv, i, "--atol")))
         return number("--atol", v, &a->atol, true);
-    if ((v = qd_cli_value(argc, argv, i, "--max-steps"))) {
+    if ((v = cli_value(argc, argv, i, "--max-steps"))) {
         double x = 0;
         int rc = number("--max-steps", v, &x, true);
         a->max_steps = rc == 1 ? (size_t)x : 0;
         return rc;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--method"))) {
+    if ((v = cli_value(argc, argv, i, "--method"))) {
         qd_sim_method m;
         if (!qd_sim_method_from_name(v, &m)) {
-            qd_diag_error("--method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
+            cli_diag_error("--method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
                           "yoshida6, yoshida8 or bdf, not '%s'", v);
             return QD_EXIT_USAGE + 100;
         }
         a->method_name = v;
         return 1;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--initial"))) {
+    if ((v = cli_value(argc, argv, i, "--initial"))) {
         if (a->initial) {
-            qd_diag_error("--initial is given twice; name every value in one list");
+            cli_diag_error("--initial is given twice; name every value in one list");
             return QD_EXIT_USAGE + 100;
         }
         a->initial = v;
         return 1;
     }
-    if ((v = qd_cli_value(argc, argv, i, "--set")))
+    if ((v = cli_value(argc, argv, i, "--set")))
         return push(a->sets, &a->nsets, v, "--set");
-    if ((v = qd_cli_value(argc, argv, i, "--out"))) {
+    if ((v = cli_value(argc, argv, i, "--out"))) {
         a->out = v;
         return 1;
     }
@@ -206,7 +206,7 @@ static size_t fast_number(char *out, double x) {
     return 0;
 }
 
-size_t qd_sim_cli_format(char *out, double x) {
+size_t cli_sim_format(char *out, double x) {
     size_t n = fast_number(out, x);
     if (n)
         return n;
@@ -229,7 +229,7 @@ static void trim(const char **a, const char **b) {
 
 /* A constraint's multiplier: outputs and events may use it ("when does the
  * particle leave the sphere": lambda_sphere = 0). */
-static bool is_multiplier(const qd_sim_cli *c, const qd_expr *x) {
+static bool is_multiplier(const cli_sim *c, const qd_expr *x) {
     for (size_t k = 0; c->e && k < c->e->ncon; k++)
         if (c->e->con[k].lambda == x)
             return true;
@@ -237,7 +237,7 @@ static bool is_multiplier(const qd_sim_cli *c, const qd_expr *x) {
 }
 
 /* Read text[a, b) against the model: definitions substituted. */
-static const qd_expr *read_expr(qd_sim_cli *c, const char *what, const char *a, const char *b) {
+static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
     trim(&a, &b);
     size_t len = (size_t)(b - a);
     char *text = malloc(len + 1);
@@ -259,7 +259,7 @@ static const qd_expr *read_expr(qd_sim_cli *c, const char *what, const char *a, 
     if (!x)
         x = qd_read(c->ctx, text, &opts, &err);
     if (!x) {
-        qd_diag_read(what, text, &err);
+        cli_diag_read(what, text, &err);
         free(text);
         return NULL;
     }
@@ -271,7 +271,7 @@ static const qd_expr *read_expr(qd_sim_cli *c, const char *what, const char *a, 
             continue;
         const qd_expr *d = qd_model_definition(c->mf.model, qd_expr_name(syms[i]));
         if (!d) {
-            qd_diag_error("%s: unknown name '%s' in '%s' (use coordinates, velocities q', t, "
+            cli_diag_error("%s: unknown name '%s' in '%s' (use coordinates, velocities q', t, "
                           "parameters, the model's definitions and the multipliers "
                           "lambda_<constraint>)",
                           what, qd_expr_name(syms[i]), text);
@@ -299,7 +299,7 @@ static const char *item_end(const char *p) {
     return p;
 }
 
-static int add_outputs(qd_sim_cli *c, const char *list) {
+static int add_outputs(cli_sim *c, const char *list) {
     for (const char *p = list; *p;) {
         const char *end = item_end(p), *a = p, *b = end;
         trim(&a, &b);
@@ -310,7 +310,7 @@ static int add_outputs(qd_sim_cli *c, const char *list) {
             char name[128];
             snprintf(name, sizeof name, "%.*s", (int)(b - a), a);
             if (qd_sim_add_output(c->s, name, x) != QD_OK)
-                return qd_diag_ctx(c->ctx);
+                return cli_diag_ctx(c->ctx);
         }
         p = *end ? end + 1 : end;
     }
@@ -318,7 +318,7 @@ static int add_outputs(qd_sim_cli *c, const char *list) {
 }
 
 /* "g1 = g2, guard > 0, guard < 0, ...": g = g1 - g2, guards as a - b > 0. */
-static int add_event(qd_sim_cli *c, const char *text, bool stop) {
+static int add_event(cli_sim *c, const char *text, bool stop) {
     const char *what = stop ? "--stop-at" : "--event";
     const qd_expr *g = NULL, *guards[QD_SIM_MAX_LIST];
     size_t ng = 0;
@@ -328,7 +328,7 @@ static int add_event(qd_sim_cli *c, const char *text, bool stop) {
         while (op < end && *op != '=' && *op != '>' && *op != '<')
             op++;
         if (op == end || (g == NULL) != (*op == '=') || ng == QD_SIM_MAX_LIST) {
-            qd_diag_error("%s takes \"EXPR = EXPR[, EXPR > EXPR]...\" (the crossing first, "
+            cli_diag_error("%s takes \"EXPR = EXPR[, EXPR > EXPR]...\" (the crossing first, "
                           "then conditions with > or <), not '%s'", what, text);
             return QD_EXIT_USAGE;
         }
@@ -342,20 +342,20 @@ static int add_event(qd_sim_cli *c, const char *text, bool stop) {
         p = *end ? end + 1 : end;
     }
     if (!g) {
-        qd_diag_error("%s: no crossing 'EXPR = EXPR' in '%s'", what, text);
+        cli_diag_error("%s: no crossing 'EXPR = EXPR' in '%s'", what, text);
         return QD_EXIT_USAGE;
     }
     if (qd_sim_add_event(c->s, g, ng, guards, stop) != QD_OK)
-        return qd_diag_ctx(c->ctx);
+        return cli_diag_ctx(c->ctx);
     return QD_EXIT_OK;
 }
 
 /* ---- setup ----------------------------------------------------------------- */
 
-static int initial_values(qd_sim_cli *c, const qd_sim_args *a) {
+static int initial_values(cli_sim *c, const cli_sim_args *a) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m);
-    int rc = qd_state_init(c->ctx, m, &c->st);
+    int rc = cli_state_init(c->ctx, m, &c->st);
     if (rc != QD_EXIT_OK)
         return rc;
     for (size_t i = 0; i < n; i++)
@@ -363,9 +363,9 @@ static int initial_values(qd_sim_cli *c, const qd_sim_args *a) {
             const qd_expr *v = qd_model_initial(m, i, o);
             if (v && qd_eval(c->ctx, v, c->st.n, c->st.syms, c->st.vals,
                              &c->st.vals[o * n + i]) != QD_OK)
-                return qd_diag_ctx(c->ctx);
+                return cli_diag_ctx(c->ctx);
         }
-    if (a->initial && (rc = qd_state_parse(c->ctx, m, a->initial, &c->st)) != QD_EXIT_OK)
+    if (a->initial && (rc = cli_state_parse(c->ctx, m, a->initial, &c->st)) != QD_EXIT_OK)
         return rc;
     /* the equations' coordinates are the model's, in its order */
     c->q0 = malloc((2 * n + 1) * sizeof *c->q0);
@@ -382,10 +382,10 @@ static int initial_values(qd_sim_cli *c, const qd_sim_args *a) {
     return QD_EXIT_OK;
 }
 
-static int choose_method(qd_sim_cli *c, const qd_sim_args *a) {
+static int choose_method(cli_sim *c, const cli_sim_args *a) {
     qd_sim_opts *o = &c->opts;
     if (a->has_dt && a->has_rtol && !a->method_name) {
-        qd_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method");
+        cli_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method");
         return QD_EXIT_USAGE;
     }
     if (a->method_name)
@@ -402,17 +402,17 @@ static int choose_method(qd_sim_cli *c, const qd_sim_args *a) {
     o->q0 = c->q0;
     o->qd0 = c->qd0;
     if (!qd_sim_method_adaptive(o->method) && !a->has_dt) {
-        qd_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
+        cli_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
         return QD_EXIT_USAGE;
     }
     if (!(o->t_end > o->t0)) {
-        qd_diag_error("--t-end must be after the start time (%g)", o->t0);
+        cli_diag_error("--t-end must be after the start time (%g)", o->t0);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
 }
 
-static int load_native(qd_sim_cli *c) {
+static int load_native(cli_sim *c) {
     qd_native *nat = calloc(1, sizeof *nat);
     if (!nat)
         return QD_EXIT_FAIL;
@@ -428,25 +428,25 @@ static int load_native(qd_sim_cli *c) {
     return QD_EXIT_OK;
 }
 
-int qd_sim_cli_setup(qd_sim_cli *c, const qd_sim_args *a) {
+int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     c->ctx = qd_ctx_new();
     if (!c->ctx) {
-        qd_diag_error("out of memory");
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    int rc = qd_model_file_load(c->ctx, a->file, &c->mf);
+    int rc = cli_model_file_load(c->ctx, a->file, &c->mf);
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->nsets; i++) {
         const qd_expr *p, *v;
-        rc = qd_state_set(c->ctx, c->mf.model, a->sets[i], &p, &v);
+        rc = cli_state_set(c->ctx, c->mf.model, a->sets[i], &p, &v);
     }
     if (rc != QD_EXIT_OK)
         return rc;
     c->e = qd_eom_derive(c->ctx, c->mf.model);
     if (!c->e)
-        return qd_eom_derive_error(c->ctx, &c->mf);
+        return cli_eom_derive_error(c->ctx, &c->mf);
     c->s = qd_sim_new(c->ctx, c->mf.model, c->e);
     if (!c->s)
-        return qd_diag_ctx(c->ctx);
+        return cli_diag_ctx(c->ctx);
     rc = initial_values(c, a);
     if (rc == QD_EXIT_OK && a->output)
         rc = add_outputs(c, a->output);
@@ -459,22 +459,22 @@ int qd_sim_cli_setup(qd_sim_cli *c, const qd_sim_args *a) {
     return rc;
 }
 
-void qd_sim_cli_free(qd_sim_cli *c) {
+void cli_sim_free(cli_sim *c) {
     if (c->native)
         qd_native_unload(c->native);
     free(c->native);
     free(c->q0);
     qd_sim_free(c->s);
-    qd_state_free(&c->st);
+    cli_state_free(&c->st);
     if (c->e)
         qd_eom_free(c->e);
-    qd_model_file_free(&c->mf);
+    cli_model_file_free(&c->mf);
     qd_ctx_free(c->ctx);
 }
 
-int qd_sim_cli_fail(qd_sim_cli *c, qd_status st) {
+int cli_sim_fail(cli_sim *c, qd_status st) {
     const char *msg = qd_ctx_message(c->ctx);
-    qd_diag_error("%s", msg[0] ? msg : qd_status_str(st));
+    cli_diag_error("%s", msg[0] ? msg : qd_status_str(st));
     /* options were checked before the run: what fails now is the system's */
     return QD_EXIT_FAIL;
 }

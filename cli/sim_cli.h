@@ -13,7 +13,7 @@
 
 #define QD_SIM_MAX_LIST 64
 
-typedef struct qd_sim_args {
+typedef struct cli_sim_args {
     const char *file, *initial, *output, *out, *method_name;
     const char *sets[QD_SIM_MAX_LIST];
     size_t nsets;
@@ -23,36 +23,36 @@ typedef struct qd_sim_args {
     double t_end, dt, rtol, atol;
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
     size_t max_steps;
-} qd_sim_args;
+} cli_sim_args;
 
-typedef struct qd_sim_cli {
+typedef struct cli_sim {
     qd_ctx *ctx;
-    qd_model_file mf;
+    cli_model_file mf;
     qd_eom *e;
     qd_sim *s;
-    qd_state st;
+    cli_state st;
     void *native;      /* qd_native, when --native loaded one */
     qd_sim_opts opts;
     double *q0, *qd0;
-} qd_sim_cli;
+} cli_sim;
 
 /* One option shared by both commands at argv[*i]: 1 when it was one (and
  * taken), 0 when it is not, or an exit status (QD_EXIT_USAGE) + 100. */
-int qd_sim_cli_option(int argc, char **argv, int *i, qd_sim_args *a);
+int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a);
 
 /* x as the shortest of 15, 16, 17 significant digits (%g style) that reads
  * back to x, into out (QD_SIM_NUMBER_MAX bytes); returns the length.  A row
  * per step of a long run makes this the CLI's hot spot: exact integer
  * digits for the common range, snprintf/strtod otherwise. */
 #define QD_SIM_NUMBER_MAX 40
-size_t qd_sim_cli_format(char *out, double x);
+size_t cli_sim_format(char *out, double x);
 
 /* Load, --set, derive, compile, initial values, outputs and events, the
  * method and options.  Returns an exit status; prints its diagnostics. */
-int qd_sim_cli_setup(qd_sim_cli *c, const qd_sim_args *a);
-void qd_sim_cli_free(qd_sim_cli *c);
+int cli_sim_setup(cli_sim *c, const cli_sim_args *a);
+void cli_sim_free(cli_sim *c);
 
 /* Print a failed run's message; exit status 1. */
-int qd_sim_cli_fail(qd_sim_cli *c, qd_status st);
+int cli_sim_fail(cli_sim *c, qd_status st);
 
 #endif

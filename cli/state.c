@@ -10,7 +10,7 @@
 #include <string.h>
 #include "cli.h"
 
-double qd_state_value(const qd_expr *number) {
+double cli_state_value(const qd_expr *number) {
     long p, q;
     /* both exact in a double, so the one division rounds correctly */
     if (qd_rational_get(number, &p, &q) && fabs((double)p) <= 0x1p53 && (double)q <= 0x1p53)
@@ -18,7 +18,7 @@ double qd_state_value(const qd_expr *number) {
     return qd_number_value(number);
 }
 
-void qd_state_put_double(qd_buf *b, double x) {
+void cli_state_put_double(qd_buf *b, double x) {
     char s[40];
     if (x == 0) {
         qd_buf_puts(b, "0");
@@ -32,7 +32,7 @@ void qd_state_put_double(qd_buf *b, double x) {
     qd_buf_puts(b, s);
 }
 
-void qd_state_put_result(qd_buf *b, double x) {
+void cli_state_put_result(qd_buf *b, double x) {
     char s[40];
     if (fabs(x) < 1e-13) {
         qd_buf_puts(b, "0");
@@ -42,14 +42,14 @@ void qd_state_put_result(qd_buf *b, double x) {
     qd_buf_puts(b, s);
 }
 
-int qd_state_init(qd_ctx *ctx, const qd_model *m, qd_state *st) {
+int cli_state_init(qd_ctx *ctx, const qd_model *m, cli_state *st) {
     size_t nq = qd_model_ncoords(m), np = qd_model_nparams(m), n = 2 * nq + 1 + np;
     st->n = n;
     st->syms = calloc(n, sizeof *st->syms);
     st->vals = calloc(n, sizeof *st->vals);
     if (!st->syms || !st->vals) {
-        qd_state_free(st);
-        qd_diag_error("out of memory");
+        cli_state_free(st);
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     for (size_t i = 0; i < nq; i++) {
@@ -61,14 +61,14 @@ int qd_state_init(qd_ctx *ctx, const qd_model *m, qd_state *st) {
         const qd_expr *v = qd_model_param_value(m, i);
         st->syms[2 * nq + 1 + i] = qd_model_param(m, i);
         if (v && qd_is_number(v))
-            st->vals[2 * nq + 1 + i] = qd_state_value(v);
+            st->vals[2 * nq + 1 + i] = cli_state_value(v);
         else if (!v || qd_eval(ctx, v, 0, st->syms, st->vals, &st->vals[2 * nq + 1 + i]) != QD_OK)
-            return qd_diag_ctx(ctx);
+            return cli_diag_ctx(ctx);
     }
     return QD_EXIT_OK;
 }
 
-void qd_state_free(qd_state *st) {
+void cli_state_free(cli_state *st) {
     free(st->syms);
     free(st->vals);
     st->syms = NULL;
@@ -91,18 +91,18 @@ static int read_value(qd_ctx *ctx, const char *label, const char *what, const ch
     int rc = QD_EXIT_OK;
     if (!e) {
         err.offset += start;
-        qd_diag_read(label, text, &err);
+        cli_diag_read(label, text, &err);
         rc = QD_EXIT_USAGE;
-    } else if (qd_is_number(e) && isfinite(qd_state_value(e))) {
-        *val = qd_state_value(e);
+    } else if (qd_is_number(e) && isfinite(cli_state_value(e))) {
+        *val = cli_state_value(e);
         *exact = e;
     } else if (qd_is_number(e)) {
         /* exact, but beyond a double (1e400): no command can compute with it */
-        qd_diag_error("%s: '%s' is too large to compute with", what, copy);
+        cli_diag_error("%s: '%s' is too large to compute with", what, copy);
         rc = QD_EXIT_USAGE;
     } else if (qd_eval(ctx, e, 0, &e, val, val) != QD_OK || !isfinite(*val)) {
         qd_ctx_clear_error(ctx);
-        qd_diag_error("%s: '%s' does not evaluate to a finite number", what, copy);
+        cli_diag_error("%s: '%s' does not evaluate to a finite number", what, copy);
         rc = QD_EXIT_USAGE;
     } else {
         *exact = qd_is_number(e) ? e : qd_float(ctx, *val);
@@ -111,16 +111,16 @@ static int read_value(qd_ctx *ctx, const char *label, const char *what, const ch
     return rc;
 }
 
-int qd_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_expr **exact,
+int cli_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_expr **exact,
                     double *val) {
     return read_value(ctx, what, what, text, 0, strlen(text), exact, val);
 }
 
-int qd_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
+int cli_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
                  const qd_expr **value) {
     const char *eq = strchr(arg, '=');
     if (!eq || eq == arg) {
-        qd_diag_error("--set takes NAME=VALUE, not '%s'", arg);
+        cli_diag_error("--set takes NAME=VALUE, not '%s'", arg);
         return QD_EXIT_USAGE;
     }
     char name[128];
@@ -128,7 +128,7 @@ int qd_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **para
     while (n && isspace((unsigned char)arg[n - 1]))
         n--;
     if (n >= sizeof name) {
-        qd_diag_error("--set: the name in '%s' is too long", arg);
+        cli_diag_error("--set: the name in '%s' is too long", arg);
         return QD_EXIT_USAGE;
     }
     memcpy(name, arg, n);
@@ -139,7 +139,7 @@ int qd_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **para
     if (rc != QD_EXIT_OK)
         return rc;
     if (qd_model_set_param(ctx, m, name, *value) != QD_OK) {
-        qd_diag_error("--set %s: %s", name, qd_ctx_message(ctx));
+        cli_diag_error("--set %s: %s", name, qd_ctx_message(ctx));
         return QD_EXIT_USAGE;
     }
     *param = qd_lookup(ctx, name);
@@ -157,7 +157,7 @@ static void list_coords(const qd_model *m, char *out, size_t cap) {
 }
 
 /* The slot of NAME (a coordinate, a velocity NAME', t or a parameter) in st. */
-static int find_slot(const char *opt, const qd_model *m, const qd_state *st, const char *name,
+static int find_slot(const char *opt, const qd_model *m, const cli_state *st, const char *name,
                      size_t *slot) {
     size_t len = strlen(name), primes = 0;
     while (len && name[len - 1] == '\'') {
@@ -170,7 +170,7 @@ static int find_slot(const char *opt, const qd_model *m, const qd_state *st, con
         if (strlen(q) != len || strncmp(q, name, len))
             continue;
         if (primes > 1) {
-            qd_diag_error("%s: '%s' is an acceleration: qdot computes it; give %.*s and %.*s'",
+            cli_diag_error("%s: '%s' is an acceleration: qdot computes it; give %.*s and %.*s'",
                           opt, name, (int)len, name, (int)len, name);
             return QD_EXIT_USAGE;
         }
@@ -184,7 +184,7 @@ static int find_slot(const char *opt, const qd_model *m, const qd_state *st, con
         }
     char known[512];
     list_coords(m, known, sizeof known);
-    qd_diag_error("%s: unknown name '%s' (the coordinates are %s; velocities are written "
+    cli_diag_error("%s: unknown name '%s' (the coordinates are %s; velocities are written "
                   "with a prime, and t is the time)", opt, name, known);
     return QD_EXIT_USAGE;
 }
@@ -205,7 +205,7 @@ static size_t item_end(const char *text, size_t i) {
 
 /* One NAME=VALUE in text[a, b). */
 static int parse_item(qd_ctx *ctx, const char *opt, const qd_model *m, const char *text,
-                      size_t a, size_t b, qd_state *st, bool *given) {
+                      size_t a, size_t b, cli_state *st, bool *given) {
     const char *eq = memchr(text + a, '=', b - a);
     size_t na = a, nb = eq ? (size_t)(eq - text) : b;
     while (na < nb && isspace((unsigned char)text[na]))
@@ -213,7 +213,7 @@ static int parse_item(qd_ctx *ctx, const char *opt, const qd_model *m, const cha
     while (nb > na && isspace((unsigned char)text[nb - 1]))
         nb--;
     if (!eq || na == nb || nb - na >= 128) {
-        qd_diag_error("%s: expected NAME=VALUE, not '%.*s'", opt, (int)(b - a), text + a);
+        cli_diag_error("%s: expected NAME=VALUE, not '%.*s'", opt, (int)(b - a), text + a);
         return QD_EXIT_USAGE;
     }
     char name[128], what[160];
@@ -224,7 +224,7 @@ static int parse_item(qd_ctx *ctx, const char *opt, const qd_model *m, const cha
     if (rc != QD_EXIT_OK)
         return rc;
     if (given[slot]) {
-        qd_diag_error("%s: '%s' is given twice", opt, name);
+        cli_diag_error("%s: '%s' is given twice", opt, name);
         return QD_EXIT_USAGE;
     }
     given[slot] = true;
@@ -234,12 +234,12 @@ static int parse_item(qd_ctx *ctx, const char *opt, const qd_model *m, const cha
     return read_value(ctx, opt, what, text, v, b - v, &exact, &st->vals[slot]);
 }
 
-int qd_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, qd_state *st) {
-    return qd_state_parse_as(ctx, m, "--at", text, st);
+int cli_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, cli_state *st) {
+    return cli_state_parse_as(ctx, m, "--at", text, st);
 }
 
-int qd_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const char *text,
-                      qd_state *st) {
+int cli_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const char *text,
+                      cli_state *st) {
     bool *given = calloc(st->n ? st->n : 1, sizeof *given);
     if (!given)
         return QD_EXIT_FAIL;

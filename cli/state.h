@@ -14,41 +14,41 @@
 
 /* A point of the state space: a value for each coordinate q_j, velocity q'_j,
  * the time t and each parameter, in that order. */
-typedef struct qd_state {
+typedef struct cli_state {
     size_t n;
     const qd_expr **syms;
     double *vals;
-} qd_state;
+} cli_state;
 
 /* A number node as the nearest double: an exact rational p/q that fits is
  * computed as (double)p/q, correctly rounded (9.81 stays 9.81). */
-double qd_state_value(const qd_expr *number);
+double cli_state_value(const qd_expr *number);
 
 /* x in its shortest %g form that reads back to the same double. */
-void qd_state_put_double(qd_buf *b, double x);
+void cli_state_put_double(qd_buf *b, double x);
 /* A computed result for a reader (text output of equilibria, modes,
  * stability): 12 significant digits, and 0 below 1e-13, so that a root
  * found by iteration reads 0.49, not 0.48999999999999927.  JSON keeps every
- * digit (qd_state_put_double). */
-void qd_state_put_result(qd_buf *b, double x);
+ * digit (cli_state_put_double). */
+void cli_state_put_result(qd_buf *b, double x);
 
 /* Every coordinate, velocity and t at 0, every parameter at its value. */
-int qd_state_init(qd_ctx *ctx, const qd_model *m, qd_state *st);
-void qd_state_free(qd_state *st);
+int cli_state_init(qd_ctx *ctx, const qd_model *m, cli_state *st);
+void cli_state_free(cli_state *st);
 /* Apply an --at list; an unknown name is an error naming the coordinates. */
-int qd_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, qd_state *st);
+int cli_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, cli_state *st);
 /* The same for another option (what: "--near"), named so in the errors. */
-int qd_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const char *text,
-                      qd_state *st);
+int cli_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const char *text,
+                      cli_state *st);
 
 /* Read a number.  what names the value in messages ("--set m1").  *exact is
  * the expression when it is an exact or float number, else a float of *val. */
-int qd_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_expr **exact,
+int cli_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_expr **exact,
                     double *val);
 
 /* Apply one --set NAME=VALUE to the model; *param and *value tell which
  * parameter now has which value (for substituting it into the equations). */
-int qd_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
+int cli_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
                  const qd_expr **value);
 
 #endif

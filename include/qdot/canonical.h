@@ -19,7 +19,7 @@ extern "C" {
 
 /* The Poisson bracket [F, G] = sum_j dF/dq_j dG/dp_j - dF/dp_j dG/dq_j,
  * simplified; NULL on failure (reason in ctx). */
-const qd_expr *qd_bracket(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+QD_API const qd_expr *qd_bracket(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                           const qd_expr *const *p, const qd_expr *F, const qd_expr *G);
 
 typedef enum qd_canon_kind {
@@ -48,7 +48,7 @@ typedef struct qd_canon_verdict {
  * when it is the same for every i and free of q, p and of t (t may be NULL):
  * Q = c(t) q, P = p keeps no Hamiltonian form in general.  Returns QD_OK
  * with the verdict in *v, or an error (reason in ctx). */
-qd_status qd_canonical_check(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+QD_API qd_status qd_canonical_check(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                              const qd_expr *const *p, const qd_expr *const *Q,
                              const qd_expr *const *P, const qd_expr *t, qd_canon_verdict *v);
 
@@ -75,18 +75,18 @@ typedef struct qd_gen_result {
  * otherwise; QD_ERR_SINGULAR when det d^2F/dx dy = 0, no transformation).
  * H may be NULL (then K is not computed).  out->Q and out->P are malloc'd:
  * release them with qd_gen_result_free. */
-qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *const *old_q,
+QD_API qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *const *old_q,
                       const qd_expr *const *old_p, const qd_expr *const *new_Q,
                       const qd_expr *const *new_P, const qd_expr *F, const qd_expr *t,
                       const qd_expr *H, qd_gen_result *out);
 
 /* qd_generate for type F2, F = F2(q, P, t). */
-qd_status qd_generate_f2(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+QD_API qd_status qd_generate_f2(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                          const qd_expr *const *p, const qd_expr *const *Q,
                          const qd_expr *const *P, const qd_expr *F2, const qd_expr *t,
                          const qd_expr *H, qd_gen_result *out);
 
-void qd_gen_result_free(qd_gen_result *r);
+QD_API void qd_gen_result_free(qd_gen_result *r);
 
 #ifdef __cplusplus
 }

@@ -59,14 +59,14 @@ typedef struct qd_native {
 /* The C text (c_text) and header text (h_text) of e's equations, with every
  * name prefixed by `prefix` (a C identifier; NULL means "qdot_model").  The
  * .c includes "<prefix>.h".  h_text may be NULL when not wanted. */
-qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
+QD_API qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                        qd_buf *c_text, qd_buf *h_text);
 
 /* Generate, compile (or reuse) and load.  cache_dir NULL: $XDG_CACHE_HOME/qdot,
  * else $HOME/.cache/qdot (created when missing).  On failure *out is zeroed. */
-qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache_dir,
+QD_API qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache_dir,
                          qd_native *out);
-void qd_native_unload(qd_native *nat);
+QD_API void qd_native_unload(qd_native *nat);
 
 #ifdef __cplusplus
 }

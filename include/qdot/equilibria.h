@@ -48,7 +48,7 @@ typedef enum qd_eq_kind {
     QD_EQ_DEGENERATE  /* K singular (a zero eigenvalue): the quadratic test says nothing */
 } qd_eq_kind;
 
-const char *qd_eq_kind_name(qd_eq_kind k); /* "minimum", "maximum", "saddle", "degenerate" */
+QD_API const char *qd_eq_kind_name(qd_eq_kind k); /* "minimum", "maximum", "saddle", "degenerate" */
 
 typedef struct qd_equilibrium {
     double *q;               /* n values */
@@ -79,16 +79,16 @@ typedef struct qd_equilibria_opts {
 
 /* Which coordinates are angles (appear inside sin or cos of f at rest, T or
  * V), and the default box: angles [-pi, pi], others [-10, 10]. */
-qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
+QD_API qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi);
 
 /* Find the equilibria of e (derived from m; no multipliers) with the
  * parameters at syms/vals (as for qd_eom_eval; exact values from the model
  * for the exact attempt).  opts may be NULL.  count may be 0 (QD_OK). */
-qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+QD_API qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                              const qd_expr *const *syms, const double *vals,
                              const qd_equilibria_opts *opts, qd_equilibria *out);
-void qd_equilibria_free(qd_equilibria *r);
+QD_API void qd_equilibria_free(qd_equilibria *r);
 
 #ifdef __cplusplus
 }

@@ -33,19 +33,19 @@ typedef struct qd_expr qd_expr; /* always handled as const qd_expr * */
 
 /* ---- contexts ---------------------------------------------------------- */
 
-qd_ctx *qd_ctx_new(void);                /* NULL when out of memory */
-void qd_ctx_free(qd_ctx *ctx);           /* frees every expression; NULL is fine */
+QD_API qd_ctx *qd_ctx_new(void);                /* NULL when out of memory */
+QD_API void qd_ctx_free(qd_ctx *ctx);           /* frees every expression; NULL is fine */
 
-qd_status qd_ctx_status(const qd_ctx *ctx);     /* first error since the last clear */
-const char *qd_ctx_message(const qd_ctx *ctx);  /* its message, "" when none */
-void qd_ctx_clear_error(qd_ctx *ctx);
+QD_API qd_status qd_ctx_status(const qd_ctx *ctx);     /* first error since the last clear */
+QD_API const char *qd_ctx_message(const qd_ctx *ctx);  /* its message, "" when none */
+QD_API void qd_ctx_clear_error(qd_ctx *ctx);
 /* Record an error (used by the library's own modules; first error wins). */
-void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...)
+QD_API void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...)
 #ifdef __GNUC__
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-size_t qd_ctx_node_count(const qd_ctx *ctx);    /* distinct nodes made so far */
+QD_API size_t qd_ctx_node_count(const qd_ctx *ctx);    /* distinct nodes made so far */
 
 /* ---- node kinds --------------------------------------------------------- */
 
@@ -79,12 +79,12 @@ typedef enum qd_role {
 
 /* ---- numbers and constants --------------------------------------------- */
 
-const qd_expr *qd_int(qd_ctx *ctx, long v);
-const qd_expr *qd_rat(qd_ctx *ctx, long num, long den);  /* den == 0: QD_ERR_DIVZERO */
+QD_API const qd_expr *qd_int(qd_ctx *ctx, long v);
+QD_API const qd_expr *qd_rat(qd_ctx *ctx, long num, long den);  /* den == 0: QD_ERR_DIVZERO */
 /* An exact number from text: "12", "-3/4", "2.5" (= 5/2), "1e-3" (= 1/1000). */
-const qd_expr *qd_rat_str(qd_ctx *ctx, const char *text);
-const qd_expr *qd_float(qd_ctx *ctx, double v);          /* NaN and infinities refused */
-const qd_expr *qd_const(qd_ctx *ctx, qd_constant c);
+QD_API const qd_expr *qd_rat_str(qd_ctx *ctx, const char *text);
+QD_API const qd_expr *qd_float(qd_ctx *ctx, double v);          /* NaN and infinities refused */
+QD_API const qd_expr *qd_const(qd_ctx *ctx, qd_constant c);
 
 /* ---- symbols -------------------------------------------------------------
  * A name belongs to one symbol per context: asking again for the same name
@@ -92,99 +92,99 @@ const qd_expr *qd_const(qd_ctx *ctx, qd_constant c);
  * Coordinates are functions of the time; their derivatives are symbols of
  * their own (the jet), named with primes: qd_jet(ctx, q, 2) is "q''".
  */
-const qd_expr *qd_symbol(qd_ctx *ctx, const char *name);
-const qd_expr *qd_param(qd_ctx *ctx, const char *name);
-const qd_expr *qd_time(qd_ctx *ctx);                         /* the symbol "t" */
-const qd_expr *qd_coord(qd_ctx *ctx, const char *name);
-const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order);
-const qd_expr *qd_lookup(const qd_ctx *ctx, const char *name); /* NULL when unknown */
+QD_API const qd_expr *qd_symbol(qd_ctx *ctx, const char *name);
+QD_API const qd_expr *qd_param(qd_ctx *ctx, const char *name);
+QD_API const qd_expr *qd_time(qd_ctx *ctx);                         /* the symbol "t" */
+QD_API const qd_expr *qd_coord(qd_ctx *ctx, const char *name);
+QD_API const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order);
+QD_API const qd_expr *qd_lookup(const qd_ctx *ctx, const char *name); /* NULL when unknown */
 
 /* ---- arithmetic (all return canonical forms) ---------------------------- */
 
-const qd_expr *qd_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
-const qd_expr *qd_sub(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
-const qd_expr *qd_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
-const qd_expr *qd_div(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
-const qd_expr *qd_neg(qd_ctx *ctx, const qd_expr *a);
-const qd_expr *qd_pow(qd_ctx *ctx, const qd_expr *base, const qd_expr *exponent);
-const qd_expr *qd_powi(qd_ctx *ctx, const qd_expr *base, long exponent);
-const qd_expr *qd_sqrt(qd_ctx *ctx, const qd_expr *a);   /* a^(1/2) */
-const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *terms);
-const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *factors);
+QD_API const qd_expr *qd_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+QD_API const qd_expr *qd_sub(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+QD_API const qd_expr *qd_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+QD_API const qd_expr *qd_div(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+QD_API const qd_expr *qd_neg(qd_ctx *ctx, const qd_expr *a);
+QD_API const qd_expr *qd_pow(qd_ctx *ctx, const qd_expr *base, const qd_expr *exponent);
+QD_API const qd_expr *qd_powi(qd_ctx *ctx, const qd_expr *base, long exponent);
+QD_API const qd_expr *qd_sqrt(qd_ctx *ctx, const qd_expr *a);   /* a^(1/2) */
+QD_API const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *terms);
+QD_API const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *factors);
 
 /* Built-in functions: one argument, or two for QD_ATAN2 (y, x). */
-const qd_expr *qd_fn(qd_ctx *ctx, qd_func f, const qd_expr *a);
-const qd_expr *qd_fn2(qd_ctx *ctx, qd_func f, const qd_expr *a, const qd_expr *b);
-const char *qd_func_name(qd_func f);                 /* "sin", "atan2", ... */
-bool qd_func_from_name(const char *name, qd_func *out); /* also accepts nothing else */
+QD_API const qd_expr *qd_fn(qd_ctx *ctx, qd_func f, const qd_expr *a);
+QD_API const qd_expr *qd_fn2(qd_ctx *ctx, qd_func f, const qd_expr *a, const qd_expr *b);
+QD_API const char *qd_func_name(qd_func f);                 /* "sin", "atan2", ... */
+QD_API bool qd_func_from_name(const char *name, qd_func *out); /* also accepts nothing else */
 
 /* A user-named function f(args...): an unknown function of its arguments. */
-const qd_expr *qd_ufunc(qd_ctx *ctx, const char *name, size_t n, const qd_expr *const *args);
+QD_API const qd_expr *qd_ufunc(qd_ctx *ctx, const char *name, size_t n, const qd_expr *const *args);
 /* The partial derivative of f with respect to argument slots (0-based, sorted
  * on construction; nslots >= 1), evaluated at args: d^k f / d x_s1 ... d x_sk. */
-const qd_expr *qd_uderiv(qd_ctx *ctx, const char *name, size_t nslots, const unsigned *slots,
+QD_API const qd_expr *qd_uderiv(qd_ctx *ctx, const char *name, size_t nslots, const unsigned *slots,
                          size_t n, const qd_expr *const *args);
 
 /* ---- inspection ---------------------------------------------------------- */
 
-qd_kind qd_expr_kind(const qd_expr *e);
-size_t qd_expr_nargs(const qd_expr *e);
-const qd_expr *qd_expr_arg(const qd_expr *e, size_t i);
-uint64_t qd_expr_hash(const qd_expr *e);  /* deterministic: the same in every run */
+QD_API qd_kind qd_expr_kind(const qd_expr *e);
+QD_API size_t qd_expr_nargs(const qd_expr *e);
+QD_API const qd_expr *qd_expr_arg(const qd_expr *e, size_t i);
+QD_API uint64_t qd_expr_hash(const qd_expr *e);  /* deterministic: the same in every run */
 /* The canonical total order (<0, 0, >0); 0 only for the same node. */
-int qd_expr_cmp(const qd_expr *a, const qd_expr *b);
+QD_API int qd_expr_cmp(const qd_expr *a, const qd_expr *b);
 
-const char *qd_expr_name(const qd_expr *e);  /* symbol, user function or derivative name */
-qd_role qd_symbol_role(const qd_expr *e);
-unsigned qd_symbol_order(const qd_expr *e);           /* 0 for q, 1 for q', ... */
-const qd_expr *qd_symbol_coord(const qd_expr *e);     /* q for q'' (coordinates only) */
-qd_func qd_expr_func(const qd_expr *e);
-qd_constant qd_expr_constant(const qd_expr *e);
-size_t qd_uderiv_nslots(const qd_expr *e);
-unsigned qd_uderiv_slot(const qd_expr *e, size_t i);
+QD_API const char *qd_expr_name(const qd_expr *e);  /* symbol, user function or derivative name */
+QD_API qd_role qd_symbol_role(const qd_expr *e);
+QD_API unsigned qd_symbol_order(const qd_expr *e);           /* 0 for q, 1 for q', ... */
+QD_API const qd_expr *qd_symbol_coord(const qd_expr *e);     /* q for q'' (coordinates only) */
+QD_API qd_func qd_expr_func(const qd_expr *e);
+QD_API qd_constant qd_expr_constant(const qd_expr *e);
+QD_API size_t qd_uderiv_nslots(const qd_expr *e);
+QD_API unsigned qd_uderiv_slot(const qd_expr *e, size_t i);
 
-bool qd_is_number(const qd_expr *e);        /* rational or float */
-bool qd_is_zero(const qd_expr *e);          /* exact 0 or 0.0 */
-bool qd_is_one(const qd_expr *e);           /* exact 1 */
-bool qd_is_integer(const qd_expr *e);       /* exact integer */
-int qd_number_sign(const qd_expr *e);       /* -1, 0, 1 for numbers */
-double qd_number_value(const qd_expr *e);   /* numbers only */
+QD_API bool qd_is_number(const qd_expr *e);        /* rational or float */
+QD_API bool qd_is_zero(const qd_expr *e);          /* exact 0 or 0.0 */
+QD_API bool qd_is_one(const qd_expr *e);           /* exact 1 */
+QD_API bool qd_is_integer(const qd_expr *e);       /* exact integer */
+QD_API int qd_number_sign(const qd_expr *e);       /* -1, 0, 1 for numbers */
+QD_API double qd_number_value(const qd_expr *e);   /* numbers only */
 /* An exact rational that fits: num/den in lowest terms, den > 0. */
-bool qd_rational_get(const qd_expr *e, long *num, long *den);
+QD_API bool qd_rational_get(const qd_expr *e, long *num, long *den);
 /* Decimal text of a rational, "p" or "p/q", in a string owned by the context. */
-const char *qd_rational_str(qd_ctx *ctx, const qd_expr *e);
+QD_API const char *qd_rational_str(qd_ctx *ctx, const qd_expr *e);
 
 /* Does e contain the node x anywhere? */
-bool qd_has(const qd_expr *e, const qd_expr *x);
+QD_API bool qd_has(const qd_expr *e, const qd_expr *x);
 /* The symbols in e, in canonical order, written to out (at most cap); returns
  * how many there are (which may exceed cap). */
-size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_t cap);
+QD_API size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_t cap);
 
 /* ---- operations ----------------------------------------------------------- */
 
 /* Partial derivative with respect to a symbol of any role. */
-const qd_expr *qd_diff(qd_ctx *ctx, const qd_expr *e, const qd_expr *sym);
-const qd_expr *qd_diff_n(qd_ctx *ctx, const qd_expr *e, const qd_expr *sym, unsigned n);
+QD_API const qd_expr *qd_diff(qd_ctx *ctx, const qd_expr *e, const qd_expr *sym);
+QD_API const qd_expr *qd_diff_n(qd_ctx *ctx, const qd_expr *e, const qd_expr *sym, unsigned n);
 /* Total time derivative over the jet: d/dt = d/dt|explicit + sum q' d/dq + q'' d/dq' + ... */
-const qd_expr *qd_dt(qd_ctx *ctx, const qd_expr *e);
+QD_API const qd_expr *qd_dt(qd_ctx *ctx, const qd_expr *e);
 
 /* Simultaneous substitution of n nodes (usually symbols) by expressions. */
-const qd_expr *qd_subs(qd_ctx *ctx, const qd_expr *e, size_t n,
+QD_API const qd_expr *qd_subs(qd_ctx *ctx, const qd_expr *e, size_t n,
                        const qd_expr *const *from, const qd_expr *const *to);
 
 /* Distribute products over sums and expand integer powers of sums, also
  * inside function arguments. */
-const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e);
+QD_API const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e);
 
 /* For e linear in the n symbols xs: e = sum_i coeffs[i]*xs[i] + *rest, with no
  * xs left in coeffs or rest.  QD_ERR_NONLINEAR (and NULLs) otherwise.  This is
  * how a mass matrix is read off the accelerations. */
-qd_status qd_linear_coeffs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *xs,
+QD_API qd_status qd_linear_coeffs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *xs,
                            const qd_expr **coeffs, const qd_expr **rest);
 /* The coefficient of x^k in the expansion of e (k may be 0). */
-const qd_expr *qd_coeff(qd_ctx *ctx, const qd_expr *e, const qd_expr *x, long k);
+QD_API const qd_expr *qd_coeff(qd_ctx *ctx, const qd_expr *e, const qd_expr *x, long k);
 /* e written as a polynomial in x: sum_k c_k x^k with each c_k gathered. */
-const qd_expr *qd_collect(qd_ctx *ctx, const qd_expr *e, const qd_expr *x);
+QD_API const qd_expr *qd_collect(qd_ctx *ctx, const qd_expr *e, const qd_expr *x);
 
 /* The simplifier: expansion, trigonometric identities (sin^2 + cos^2 = 1,
  * products of sines and cosines to sines and cosines of sums and differences
@@ -192,19 +192,19 @@ const qd_expr *qd_collect(qd_ctx *ctx, const qd_expr *e, const qd_expr *x);
  * polynomial factors cancelled in quotients, and sums (or the groups of their
  * terms over one denominator) factored over the integers where that is
  * shorter.  Keeps the value everywhere the input is defined. */
-const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e);
-const qd_expr *qd_trigsimp(qd_ctx *ctx, const qd_expr *e);
+QD_API const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e);
+QD_API const qd_expr *qd_trigsimp(qd_ctx *ctx, const qd_expr *e);
 /* Put a rational expression over a common denominator and cancel the
  * greatest common divisor of numerator and denominator. */
-const qd_expr *qd_cancel(qd_ctx *ctx, const qd_expr *e);
+QD_API const qd_expr *qd_cancel(qd_ctx *ctx, const qd_expr *e);
 /* Pull the common numeric and symbolic factors out of a sum. */
-const qd_expr *qd_factor_terms(qd_ctx *ctx, const qd_expr *e);
+QD_API const qd_expr *qd_factor_terms(qd_ctx *ctx, const qd_expr *e);
 
 /* Number of operations (additions, multiplications, powers, function calls)
  * in the tree, counted the way SymPy's count_ops(visual=False) does. */
-size_t qd_count_ops(const qd_expr *e);
+QD_API size_t qd_count_ops(const qd_expr *e);
 /* Number of distinct nodes of the DAG under e. */
-size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e);
+QD_API size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e);
 
 /* An antiderivative of e with respect to the symbol x (no constant added).
  * Integrates sums term by term and products of factors free of x with one
@@ -213,14 +213,14 @@ size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e);
  * free of x, and sin, cos, exp, sinh, cosh of (a x + b); a and b free of x.
  * An input that fits only once expanded (x (x + 1)) is expanded.  Anything
  * else returns NULL with QD_ERR_ARG. */
-const qd_expr *qd_integrate(qd_ctx *ctx, const qd_expr *e, const qd_expr *x);
+QD_API const qd_expr *qd_integrate(qd_ctx *ctx, const qd_expr *e, const qd_expr *x);
 
 /* ---- simple numeric evaluation ---------------------------------------------
  * Evaluates e with the n symbols syms[i] set to vals[i], walking the DAG once
  * (each shared node once).  QD_ERR_UNBOUND when a symbol has no value.  For
  * repeated evaluation compile a qd_prog (qdot/eval.h), which is much faster.
  */
-qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *syms,
+QD_API qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *syms,
                   const double *vals, double *out);
 
 #ifdef __cplusplus

@@ -62,8 +62,8 @@ typedef struct qd_ham {
  * For a model given by H, e is not used (it may be NULL): the equations are
  * dq_j/dt = dH/dp_j, dp_j/dt = -dH/dq_j + Q_j - dD/dq'_j (q' = dH/dp), and
  * L_from_H is filled when H is regular; constraints are QD_ERR_ARG. */
-qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
-void qd_ham_free(qd_ham *h);
+QD_API qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
+QD_API void qd_ham_free(qd_ham *h);
 
 /* The inverse Legendre transform of a model given by H (Desloge ch. 71,
  * Appendix 22): q' = dH/dp solved for p, L = sum p q' - H, simplified, in
@@ -72,8 +72,8 @@ void qd_ham_free(qd_ham *h);
  * naming the momentum that q' does not determine; a model not given by H is
  * QD_ERR_ARG.  NULL on failure, reason in the context.  pdef (n entries, may
  * be NULL) receives p_j(q, q', t). */
-const qd_expr *qd_legendre_inverse(qd_ctx *ctx, const qd_model *m);
-qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **pdef,
+QD_API const qd_expr *qd_legendre_inverse(qd_ctx *ctx, const qd_model *m);
+QD_API qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **pdef,
                                 const qd_expr **L);
 
 #ifdef __cplusplus

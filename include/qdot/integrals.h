@@ -161,25 +161,25 @@ typedef struct qd_integrals {
  * Models with constraints: cyclic and Jacobi only (Noether and proposed
  * integrals need a state on the constraint manifold: QD_ERR_ARG from those).
  * NULL on failure, reason in ctx. */
-qd_integrals *qd_integrals_derive(qd_ctx *ctx, const qd_model *m, qd_eom *e,
+QD_API qd_integrals *qd_integrals_derive(qd_ctx *ctx, const qd_model *m, qd_eom *e,
                                   const qd_integrals_opts *opts);
-void qd_integrals_free(qd_integrals *I);
+QD_API void qd_integrals_free(qd_integrals *I);
 
 /* Only the cyclic coordinates of m (equations e, not solved here): out has
  * room for e->n entries, *ncyclic receives how many there are.  Cheap: no
  * accelerations are needed (qdot check uses it). */
-qd_status qd_integrals_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+QD_API qd_status qd_integrals_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                               qd_int_cyclic *out, size_t *ncyclic);
 
 /* Noether's integral of the field xi (n components in q and t; NULL entries
  * are 0).  out->xi is malloc'd: qd_noether_clear frees it. */
-qd_status qd_integrals_noether(qd_ctx *ctx, qd_integrals *I, const char *name,
+QD_API qd_status qd_integrals_noether(qd_ctx *ctx, qd_integrals *I, const char *name,
                                const qd_expr *const *xi, qd_noether *out);
-void qd_noether_clear(qd_noether *nt);
+QD_API void qd_noether_clear(qd_noether *nt);
 
 /* Is expr (in q, q', t and the parameters) conserved?  QD_ERR_ARG for an
  * expression with accelerations. */
-qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *name,
+QD_API qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *name,
                              const qd_expr *expr, qd_int_proposed *out);
 
 #ifdef __cplusplus

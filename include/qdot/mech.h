@@ -95,8 +95,8 @@ typedef struct qd_eom {
 /* Derive the equations of a model.  Parameters stay symbolic.  A mass matrix
  * that is singular (identically: det M simplifies to 0) is QD_ERR_SINGULAR.
  * NULL on failure, reason in the context. */
-qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m);
-void qd_eom_free(qd_eom *e);
+QD_API qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m);
+QD_API void qd_eom_free(qd_eom *e);
 
 /* Options of the derivation.  eliminate: every holonomic constraint that is
  * linear in one of its coordinates with a coefficient free of coordinates
@@ -111,14 +111,14 @@ typedef struct qd_eom_opts {
 } qd_eom_opts;
 
 /* qd_eom_derive with options (opts may be NULL: the defaults, all false). */
-qd_eom *qd_eom_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom_opts *opts);
+QD_API qd_eom *qd_eom_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom_opts *opts);
 
 /* Solve M q'' = f symbolically for q'' (fraction-free elimination, each entry
  * simplified); with constraints, the saddle-point system
  * [M -A^T; A 0] [q''; lambda] = [f; b], the multipliers going to e->mult.
  * QD_ERR_TOOBIG when the result would exceed max_ops operations (count_ops)
  * in some entry: the caller then keeps M and f. */
-qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops);
+QD_API qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops);
 
 /* Numbers: M, f and q'' at one state.  vals gives the value of each symbol in
  * syms (coordinates, velocities, t, parameters); symbols not given are 0.
@@ -131,7 +131,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops);
  * are redundant or inconsistent there (M and f are still filled).  The
  * entries are compiled on the first call and kept in e, so one qd_eom must
  * not be evaluated on two threads at once. */
-qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
+QD_API qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
                       const double *vals, double *M, double *f, double *qdd, double *lambda,
                       double *R);
 
@@ -153,7 +153,7 @@ qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr 
  * Eliminated coordinates (qd_eom.elim) are substituted into r; a constraint
  * used for elimination has no multiplier: QD_ERR_ARG, as for an unknown
  * name. */
-qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
+QD_API qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
                           const qd_expr *const r[3], size_t nvals, const qd_expr *const *syms,
                           const double *vals, const double *lambda, double F[3],
                           double *residual);

@@ -35,7 +35,7 @@ typedef struct qd_diag {
 
 /* "FILE:LINE:COL: error: MESSAGE", the source line, a caret line under the
  * span, and "  hint: ..." when there is a hint; appended to out. */
-void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf *out);
+QD_API void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf *out);
 
 typedef struct qd_model qd_model;
 
@@ -43,45 +43,45 @@ typedef struct qd_model qd_model;
  * that parses is complete and consistent (T, L or momenta and H given, every
  * name known, every parameter valued).  text must stay alive while the model
  * is used. */
-qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag);
-void qd_model_free(qd_model *m);
+QD_API qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag);
+QD_API void qd_model_free(qd_model *m);
 
-size_t qd_model_ncoords(const qd_model *m);
-const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in declaration order */
-size_t qd_model_nparams(const qd_model *m);
-const qd_expr *qd_model_param(const qd_model *m, size_t i);
-const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its number */
+QD_API size_t qd_model_ncoords(const qd_model *m);
+QD_API const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in declaration order */
+QD_API size_t qd_model_nparams(const qd_model *m);
+QD_API const qd_expr *qd_model_param(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its number */
 /* Give a parameter another value (the command line's --set); QD_ERR_ARG for
  * an unknown name, with the nearest known name in the context's message. */
-qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value);
+QD_API qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value);
 
 /* The mechanical content; NULL where the model gives none.  lagrangian is
  * L as given, or T - V - U; NULL for a model given by H (its L is the
  * mechanics layer's inverse Legendre transform, qd_legendre_inverse). */
-const qd_expr *qd_model_kinetic(const qd_model *m);      /* T (particles, bodies and T = ...) */
-const qd_expr *qd_model_potential(const qd_model *m);    /* V */
-const qd_expr *qd_model_gen_potential(const qd_model *m);/* U, velocity-dependent */
-const qd_expr *qd_model_lagrangian(const qd_model *m);   /* L */
-bool qd_model_lagrangian_given(const qd_model *m);       /* L = ... in the text */
-const qd_expr *qd_model_dissipation(const qd_model *m);  /* Rayleigh's D */
-const qd_expr *qd_model_force(const qd_model *m, size_t i); /* Q_i (never NULL: 0 when none) */
+QD_API const qd_expr *qd_model_kinetic(const qd_model *m);      /* T (particles, bodies and T = ...) */
+QD_API const qd_expr *qd_model_potential(const qd_model *m);    /* V */
+QD_API const qd_expr *qd_model_gen_potential(const qd_model *m);/* U, velocity-dependent */
+QD_API const qd_expr *qd_model_lagrangian(const qd_model *m);   /* L */
+QD_API bool qd_model_lagrangian_given(const qd_model *m);       /* L = ... in the text */
+QD_API const qd_expr *qd_model_dissipation(const qd_model *m);  /* Rayleigh's D */
+QD_API const qd_expr *qd_model_force(const qd_model *m, size_t i); /* Q_i (never NULL: 0 when none) */
 
 /* Constraints (`constraint NAME: lhs = rhs`), in the order given: the
  * expression lhs - rhs, which the motion keeps at zero, and the name (given,
  * or "c1", "c2", ... for unnamed ones).  They may contain velocities. */
-size_t qd_model_nconstraints(const qd_model *m);
-const char *qd_model_constraint_name(const qd_model *m, size_t i);
-const qd_expr *qd_model_constraint(const qd_model *m, size_t i);
+QD_API size_t qd_model_nconstraints(const qd_model *m);
+QD_API const char *qd_model_constraint_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_constraint(const qd_model *m, size_t i);
 
 /* Reactions (`reaction [LABEL:] CON on r`), in the order given: the
  * Cartesian force that constraint CON exerts at the point r (a position,
  * free of velocities) is wanted; qd_eom_reaction computes it.  The name is
  * the label, or the constraint's name when there is none; NULL / 0 for an
  * index (or component k > 2) out of range. */
-size_t qd_model_nreactions(const qd_model *m);
-const char *qd_model_reaction_name(const qd_model *m, size_t i);
-const char *qd_model_reaction_constraint(const qd_model *m, size_t i);
-const qd_expr *qd_model_reaction_point(const qd_model *m, size_t i, unsigned k);
+QD_API size_t qd_model_nreactions(const qd_model *m);
+QD_API const char *qd_model_reaction_name(const qd_model *m, size_t i);
+QD_API const char *qd_model_reaction_constraint(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_reaction_point(const qd_model *m, size_t i, unsigned k);
 
 /* Rigid bodies (`body NAME mass M inertia I at r orientation R`), in the
  * order given.  Components are indexed 0..2 (x, y, z); matrices by row and
@@ -90,40 +90,40 @@ const qd_expr *qd_model_reaction_point(const qd_model *m, size_t i, unsigned k);
  * orientation is given); the angular velocity w is in body axes (from
  * R^T R') and omega_space = R w, both simplified.  Every getter returns NULL
  * for an index out of range. */
-size_t qd_model_nbodies(const qd_model *m);
-const char *qd_model_body_name(const qd_model *m, size_t i);
-const qd_expr *qd_model_body_mass(const qd_model *m, size_t i);
-const qd_expr *qd_model_body_inertia(const qd_model *m, size_t i, unsigned row, unsigned col);
-const qd_expr *qd_model_body_position(const qd_model *m, size_t i, unsigned k);
-const qd_expr *qd_model_body_rotation(const qd_model *m, size_t i, unsigned row, unsigned col);
-const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k);
-const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k);
+QD_API size_t qd_model_nbodies(const qd_model *m);
+QD_API const char *qd_model_body_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_body_mass(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_body_inertia(const qd_model *m, size_t i, unsigned row, unsigned col);
+QD_API const qd_expr *qd_model_body_position(const qd_model *m, size_t i, unsigned k);
+QD_API const qd_expr *qd_model_body_rotation(const qd_model *m, size_t i, unsigned row, unsigned col);
+QD_API const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k);
+QD_API const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k);
 
 /* Hamiltonian models (`momenta p_r, ...` and `H = ...`).  The momenta are
  * plain symbols; `momenta` with T or L (no H) only names them. */
-bool qd_model_hamiltonian_given(const qd_model *m);
-const qd_expr *qd_model_hamiltonian(const qd_model *m);       /* H as given, or NULL */
-const qd_expr *qd_model_momentum(const qd_model *m, size_t i); /* the symbol named in `momenta`
+QD_API bool qd_model_hamiltonian_given(const qd_model *m);
+QD_API const qd_expr *qd_model_hamiltonian(const qd_model *m);       /* H as given, or NULL */
+QD_API const qd_expr *qd_model_momentum(const qd_model *m, size_t i); /* the symbol named in `momenta`
                                                                    for coordinate i, or NULL */
 /* Symmetries (`symmetry [NAME:] ...`): q_j -> q_j + eps xi_j, xi in q and t
  * (from a finite form: d/deps at eps = 0, simplified).  Unnamed: s1, s2, ... */
-size_t qd_model_nsymmetries(const qd_model *m);
-const char *qd_model_symmetry_name(const qd_model *m, size_t i);
-const qd_expr *qd_model_symmetry_field(const qd_model *m, size_t i, size_t coord); /* xi_j (0 when
+QD_API size_t qd_model_nsymmetries(const qd_model *m);
+QD_API const char *qd_model_symmetry_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_symmetry_field(const qd_model *m, size_t i, size_t coord); /* xi_j (0 when
                                                                    not moved); NULL out of range */
 /* Proposed integrals (`integral [NAME:] expr`): in q, q', t (in q, the
  * momenta, t for a model given by H).  Unnamed: I1, I2, ... */
-size_t qd_model_nintegrals(const qd_model *m);
-const char *qd_model_integral_name(const qd_model *m, size_t i);
-const qd_expr *qd_model_integral(const qd_model *m, size_t i);
+QD_API size_t qd_model_nintegrals(const qd_model *m);
+QD_API const char *qd_model_integral_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_integral(const qd_model *m, size_t i);
 
 /* Initial values: the value of a coordinate (order 0) or velocity (order 1)
  * named in `initial`, or NULL. */
-const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);
+QD_API const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);
 
 /* A named definition (`x1 = ...`): its scalar value, or NULL when the name
  * is not defined or is a vector. */
-const qd_expr *qd_model_definition(const qd_model *m, const char *name);
+QD_API const qd_expr *qd_model_definition(const qd_model *m, const char *name);
 
 /* Where a statement of the model stands, for errors found after parsing
  * ("the mass matrix is singular" points at the T line).  what: "T", "V", "L",
@@ -131,7 +131,7 @@ const qd_expr *qd_model_definition(const qd_model *m, const char *name);
  * "constraint:NAME", "body:NAME" (the body's name on its line),
  * "symmetry:NAME" or "integral:NAME" (the label, or the statement's first
  * item when unnamed).  false when the model has no such statement. */
-bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
+QD_API bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
 
 #ifdef __cplusplus
 }

@@ -79,26 +79,26 @@ typedef struct qd_modes_result {
  * QD_ERR_ARG: derive with eliminate, or choose independent coordinates.
  * The symbolic derivatives are computed once per e and kept in a cache
  * private to this call (each call recomputes them: cheap for small n). */
-qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+QD_API qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                           const qd_expr *const *syms, const double *vals, qd_linear *out);
 
 /* Eigen-analysis of lin (see qd_modes_result).  QD_ERR_SINGULAR when M is
  * not positive definite, QD_ERR_NUMERIC when LAPACK fails. */
-qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out);
+QD_API qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out);
 
-void qd_linear_free(qd_linear *l);
-void qd_modes_result_free(qd_modes_result *r);
+QD_API void qd_linear_free(qd_linear *l);
+QD_API void qd_modes_result_free(qd_modes_result *r);
 
 /* The symbolic stiffness and mass matrices at a point given symbolically:
  * K_jk = -df_j/dq_k and M_jk with q = q0[j] (expressions, e.g. 0 or pi) and
  * q' = 0, each simplified; parameters stay symbols.  Kout, Mout: n*n. */
-qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr *const *q0,
+QD_API qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr *const *q0,
                              const qd_expr **Kout, const qd_expr **Mout);
 
 /* For n = 1 or 2: the roots w^2 of det(K - w^2 M) = 0 as expressions in
  * the parameters (n = 2: the quadratic's two roots, the one with the minus
  * sign of the square root first), simplified.  QD_ERR_ARG for n > 2. */
-qd_status qd_modes_symbolic_omega2(qd_ctx *ctx, size_t n, const qd_expr *const *K,
+QD_API qd_status qd_modes_symbolic_omega2(qd_ctx *ctx, size_t n, const qd_expr *const *K,
                                    const qd_expr *const *M, const qd_expr **w2);
 
 #ifdef __cplusplus

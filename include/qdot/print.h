@@ -23,16 +23,16 @@ typedef struct qd_buf {
 
 #define QD_BUF_INIT {NULL, 0, 0, false}
 
-void qd_buf_free(qd_buf *b);
-void qd_buf_clear(qd_buf *b);          /* empties it, keeps the memory */
-void qd_buf_puts(qd_buf *b, const char *s);
-void qd_buf_putn(qd_buf *b, const char *s, size_t n);
-void qd_buf_printf(qd_buf *b, const char *fmt, ...)
+QD_API void qd_buf_free(qd_buf *b);
+QD_API void qd_buf_clear(qd_buf *b);          /* empties it, keeps the memory */
+QD_API void qd_buf_puts(qd_buf *b, const char *s);
+QD_API void qd_buf_putn(qd_buf *b, const char *s, size_t n);
+QD_API void qd_buf_printf(qd_buf *b, const char *fmt, ...)
 #ifdef __GNUC__
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
-const char *qd_buf_str(const qd_buf *b); /* "" when empty */
+QD_API const char *qd_buf_str(const qd_buf *b); /* "" when empty */
 
 typedef enum qd_format {
     QD_FMT_TEXT,  /* the model language's syntax; qd_parse reads it back to the same node */
@@ -42,18 +42,18 @@ typedef enum qd_format {
 } qd_format;
 
 /* Append e in the given format. */
-qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out);
+QD_API qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out);
 
 /* C for a block of n expressions: every subexpression used more than once is
  * hoisted into a `const double qd_tK = ...;` temporary (the prefix keeps them
  * apart from the model's names), then each output is assigned as
  * `<lhs[i]> = ...;`.  Symbols are printed by their names with
  * primes spelled _d, _dd (theta'' becomes theta_dd). */
-qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
+QD_API qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
                            const char *const *lhs, qd_buf *out);
 
 /* The C identifier qdot uses for a symbol (theta' -> theta_d). */
-qd_status qd_c_name(const qd_expr *sym, qd_buf *out);
+QD_API qd_status qd_c_name(const qd_expr *sym, qd_buf *out);
 
 #ifdef __cplusplus
 }

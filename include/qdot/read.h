@@ -30,7 +30,7 @@ typedef struct qd_read_opts {
 
 /* Read text into an expression; NULL with *err filled on failure (err may be
  * NULL).  opts may be NULL: unknown names then become plain symbols. */
-const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
+QD_API const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
                        qd_read_error *err);
 
 #ifdef __cplusplus

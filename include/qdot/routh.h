@@ -86,20 +86,20 @@ typedef struct qd_routh {
  * QD_ERR_NONLINEAR when L is not quadratic in the velocities and
  * QD_ERR_SINGULAR when the ignored momenta do not determine the ignored
  * velocities.  NULL on failure, reason in the context. */
-qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+QD_API qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                           size_t nign, const qd_expr *const *ign);
-void qd_routh_free(qd_routh *r);
+QD_API void qd_routh_free(qd_routh *r);
 
 /* The coordinate of m named name; NULL with QD_ERR_ARG and a message
  * ("unknown coordinate 'phy'; did you mean 'phi'?", "'g' is a parameter,
  * not a coordinate") otherwise. */
-const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name);
+QD_API const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name);
 
 /* Why coordinate j of e (index into e->q) cannot be ignored: NULL when it
  * is cyclic; else the statement to point at (for qd_model_where: "L", "T",
  * "V", "U", "dissipation" or a coordinate's name for its generalized
  * force), with *why set to the reason in words. */
-const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j,
+QD_API const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j,
                                 const char **why);
 
 #ifdef __cplusplus

@@ -45,10 +45,10 @@ typedef enum qd_sim_method {
     QD_SIM_METHOD_COUNT
 } qd_sim_method;
 
-const char *qd_sim_method_name(qd_sim_method m);            /* "dop853" */
-bool qd_sim_method_from_name(const char *name, qd_sim_method *m);
-int qd_sim_method_order(qd_sim_method m);                   /* nominal order (BDF: 5) */
-bool qd_sim_method_adaptive(qd_sim_method m);               /* step size control */
+QD_API const char *qd_sim_method_name(qd_sim_method m);            /* "dop853" */
+QD_API bool qd_sim_method_from_name(const char *name, qd_sim_method *m);
+QD_API int qd_sim_method_order(qd_sim_method m);                   /* nominal order (BDF: 5) */
+QD_API bool qd_sim_method_adaptive(qd_sim_method m);               /* step size control */
 
 typedef struct qd_sim qd_sim;
 
@@ -56,19 +56,19 @@ typedef struct qd_sim qd_sim;
  * eliminated coordinates; parameters at the model's values, so apply --set
  * to the model first).  e and m must outlive the qd_sim.  NULL on failure,
  * reason in ctx. */
-qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
-void qd_sim_free(qd_sim *s);
+QD_API qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
+QD_API void qd_sim_free(qd_sim *s);
 
 /* Extra output columns: an expression in the coordinates, velocities, t and
  * the parameters, under the column name `name` (copied).  Before the first
  * qd_sim_run. */
-qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x);
+QD_API qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x);
 
 /* An event: the times where g(q, q', t) crosses zero (in either direction)
  * and every guard expression is > 0 there, located to round-off (dense
  * output, then the method's own step to the root).  stop: end the run at
  * the first such time.  Before the first qd_sim_run. */
-qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
+QD_API qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
                            const qd_expr *const *guard, bool stop);
 
 /* A compiled right-hand side for the Lagrangian form, y = (q, q'),
@@ -77,17 +77,17 @@ qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
  * Used instead of the qd_prog programs by the methods that integrate
  * (q, q'); NULL returns to them. */
 typedef int (*qd_sim_native_rhs)(double t, const double *y, const double *par, double *dydt);
-void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs);
+QD_API void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs);
 
 /* What the system is (known after qd_sim_new). */
-size_t qd_sim_ndof(const qd_sim *s);
-size_t qd_sim_ncon(const qd_sim *s);
-bool qd_sim_canonical(const qd_sim *s);   /* (q, p) form available */
-bool qd_sim_separable(const qd_sim *s);   /* H = T(p) + V(q), p-free forces */
-bool qd_sim_conservative(const qd_sim *s);/* no t in L, no forces, no dissipation */
+QD_API size_t qd_sim_ndof(const qd_sim *s);
+QD_API size_t qd_sim_ncon(const qd_sim *s);
+QD_API bool qd_sim_canonical(const qd_sim *s);   /* (q, p) form available */
+QD_API bool qd_sim_separable(const qd_sim *s);   /* H = T(p) + V(q), p-free forces */
+QD_API bool qd_sim_conservative(const qd_sim *s);/* no t in L, no forces, no dissipation */
 /* dop853 for tolerance runs; gl4 with a fixed step for unconstrained
  * conservative systems, dop853 otherwise. */
-qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step);
+QD_API qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step);
 
 typedef struct qd_sim_opts {
     qd_sim_method method;
@@ -116,14 +116,14 @@ typedef struct qd_sim_stats {
  * constraints kept by the equations) over the last run: |phi| for a
  * holonomic one and its velocity form, |A q' + a0| for a Pfaffian one; 0 for
  * c out of range.  stats.constraint_error_max is the largest of these. */
-double qd_sim_constraint_error(const qd_sim *s, size_t c);
+QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
 
 /* The columns of a run with method: t, the coordinates, the velocities
  * (name'), the momenta (p_name, canonical-form methods only), energy (the
  * Jacobi integral h, = T + V for natural systems), one residual per
  * constraint (res_NAME), then the outputs.  names may be NULL; returns the
  * count; names[i] are owned by s. */
-size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
+QD_API size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
 
 /* Receives every row (event -1: a sample; else the index of the event in
  * the order added).  Returning nonzero ends the run early (QD_OK). */
@@ -136,7 +136,7 @@ typedef int (*qd_sim_sink)(void *data, int event, const double *row);
  * Gauss-Legendre iteration, a mass matrix singular at a state, a constraint
  * that projection cannot satisfy; a non-separable H for verlet/yoshida, a
  * missing step or a method that cannot take the system is QD_ERR_ARG. */
-qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *opts, qd_sim_sink sink, void *data,
+QD_API qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *opts, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final);
 
 #ifdef __cplusplus

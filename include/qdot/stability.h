@@ -74,9 +74,9 @@ typedef struct qd_steady {
  * coordinate, is repeated, is not cyclic (appears in L, D, the forces) or
  * when every coordinate is listed, and for models with constraints; the
  * errors of qd_routh_derive for the free case. */
-qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t ncyc,
+QD_API qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t ncyc,
                             const qd_expr *const *cyc, bool driven);
-void qd_steady_free(qd_steady *s);
+QD_API void qd_steady_free(qd_steady *s);
 
 /* A steady motion: kept coordinates x (nkeep), rates w (ncyc, c') and
  * momenta p (ncyc). */
@@ -95,7 +95,7 @@ typedef struct qd_steady_point {
  * does not vanish), QD_ERR_SINGULAR when the equations are not defined there
  * (a coordinate singularity: 0/0).  On success every entry of pt is set and
  * *residual (may be NULL) is the largest final residual. */
-qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+QD_API qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                          const qd_expr *const *syms, const double *vals, const bool *xfix,
                          const bool *wfix, const bool *pfix, qd_steady_point *pt,
                          double *residual);
@@ -122,10 +122,10 @@ typedef struct qd_stability {
  * them (qdot/modes.h's qd_modes_solve).  nvals/syms/vals as for
  * qd_steady_find.  QD_ERR_SINGULAR when the equations are not defined there
  * or M0 is not positive definite. */
-qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+QD_API qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                                const qd_expr *const *syms, const double *vals,
                                const qd_steady_point *pt, qd_stability *out);
-void qd_stability_free(qd_stability *st);
+QD_API void qd_stability_free(qd_stability *st);
 
 #ifdef __cplusplus
 }

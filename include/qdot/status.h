@@ -10,6 +10,14 @@
 #ifndef QDOT_STATUS_H
 #define QDOT_STATUS_H
 
+/* QD_API marks what libqdot exports: the shared library is built with
+ * -fvisibility=hidden, so a function without it stays internal. */
+#if defined(QDOT_BUILD) && defined(__GNUC__)
+#define QD_API __attribute__((visibility("default")))
+#else
+#define QD_API
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -29,7 +37,7 @@ typedef enum qd_status {
 } qd_status;
 
 /* A short English name of the status ("division by zero"); never NULL. */
-const char *qd_status_str(qd_status st);
+QD_API const char *qd_status_str(qd_status st);
 
 #ifdef __cplusplus
 }

@@ -26,7 +26,7 @@
 
 static qd_ctx *C(parser *p) { return p->ctx; }
 
-const body *model_find_body(const qd_model *m, const char *name, size_t n) {
+const body *qd__mdl_find_body(const qd_model *m, const char *name, size_t n) {
     for (size_t i = 0; i < m->nbodies; i++)
         if (strlen(m->bodies[i].name) == n && memcmp(m->bodies[i].name, name, n) == 0)
             return &m->bodies[i];
@@ -41,7 +41,7 @@ static bool check_symmetric(parser *p, const value *I) {
             const qd_expr *a = I->c[3 * i + j], *b = I->c[3 * j + i];
             if (a == b || qd_is_zero(qd_simplify(C(p), qd_sub(C(p), a, b))))
                 continue;
-            return perr(p, I->off, I->len, "an inertia tensor is symmetric: I_ij = I_ji",
+            return qd__mdl_perr(p, I->off, I->len, "an inertia tensor is symmetric: I_ij = I_ji",
                         "the inertia tensor is not symmetric: row %d, column %d differs from "
                         "row %d, column %d", i + 1, j + 1, j + 1, i + 1);
         }
@@ -100,12 +100,12 @@ static void angular_velocity(qd_ctx *ctx, body *b) {
     const qd_expr *Rt[9], *Rd[9], *W[9];
     for (int i = 0; i < 9; i++)
         Rd[i] = qd_dt(ctx, b->R[i]);
-    mat_transpose(b->R, Rt);
-    mat_mul(ctx, Rt, Rd, W);
+    qd__mdl_mat_transpose(b->R, Rt);
+    qd__mdl_mat_mul(ctx, Rt, Rd, W);
     b->w[0] = qd_simplify(ctx, W[7]);
     b->w[1] = qd_simplify(ctx, W[2]);
     b->w[2] = qd_simplify(ctx, W[3]);
-    mat_vec(ctx, b->R, b->w, b->ws);
+    qd__mdl_mat_vec(ctx, b->R, b->w, b->ws);
     for (int i = 0; i < 3; i++)
         b->ws[i] = qd_simplify(ctx, b->ws[i]);
 }
@@ -129,7 +129,7 @@ static const char *const clauses[] = {"mass", "inertia", "at", "orientation"};
 
 static int clause_index(const parser *p) {
     for (int i = 0; i < NCLAUSES; i++)
-        if (lex_is(&p->lx, clauses[i]))
+        if (qd__lex_is(&p->lx, clauses[i]))
             return i;
     return -1;
 }
@@ -141,12 +141,12 @@ static bool unknown_clause(parser *p) {
     char word[64], hint[128];
     size_t n = p->lx.tok.len < 63 ? p->lx.tok.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + p->lx.tok.off);
-    const char *near = p->lx.tok.kind == TK_IDENT ? nearest(word, n, clauses, NCLAUSES) : NULL;
+    const char *near = p->lx.tok.kind == TK_IDENT ? qd__mdl_nearest(word, n, clauses, NCLAUSES) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
-    return perr_tok(p, near ? hint : body_usage,
+    return qd__mdl_perr_tok(p, near ? hint : body_usage,
                     "expected 'mass', 'inertia', 'at' or 'orientation', found %s",
-                    p->lx.tok.kind == TK_IDENT ? word : tk_name(p->lx.tok.kind));
+                    p->lx.tok.kind == TK_IDENT ? word : qd__lex_tk_name(p->lx.tok.kind));
 }
 
 /* The clauses in any order, each once; v[k] is clause k's value. */
@@ -156,23 +156,23 @@ static bool body_clauses(parser *p, value v[NCLAUSES], bool seen[NCLAUSES]) {
         if (k < 0)
             return unknown_clause(p);
         if (seen[k])
-            return perr_tok(p, body_usage, "'%s' is given twice", clauses[k]);
+            return qd__mdl_perr_tok(p, body_usage, "'%s' is given twice", clauses[k]);
         seen[k] = true;
-        lex_next(&p->lx);
-        bool ok = k == 0 ? parse_expr(p, &v[k]) && need_kind(p, &v[k], VK_SCALAR, "as a mass")
-                : k == 1 ? parse_expr(p, &v[k])
-                : k == 2 ? parse_vector(p, &v[k], "a position")
-                         : parse_matrix_value(p, &v[k], "an orientation");
+        qd__lex_next(&p->lx);
+        bool ok = k == 0 ? qd__mdl_parse_expr(p, &v[k]) && qd__mdl_need_kind(p, &v[k], VK_SCALAR, "as a mass")
+                : k == 1 ? qd__mdl_parse_expr(p, &v[k])
+                : k == 2 ? qd__mdl_parse_vector(p, &v[k], "a position")
+                         : qd__mdl_parse_matrix_value(p, &v[k], "an orientation");
         if (!ok)
             return false;
         if (k == 1 && v[k].kind == VK_SCALAR)
-            return perr(p, v[k].off, v[k].len,
+            return qd__mdl_perr(p, v[k].off, v[k].len,
                         "give the principal moments (A, B, C) or the tensor [[..], [..], [..]]",
                         "a scalar where a vector or matrix is needed: an inertia is three "
                         "moments or a tensor");
     }
     return p->lx.tok.kind == TK_NEWLINE || p->lx.tok.kind == TK_EOF ||
-           (p->lx.tok.kind == TK_NUMBER ? unknown_clause(p) : end_of_statement(p));
+           (p->lx.tok.kind == TK_NUMBER ? unknown_clause(p) : qd__mdl_end_of_statement(p));
 }
 
 /* Fill b from the clauses' values; the rotation is checked numerically. */
@@ -191,28 +191,28 @@ static bool body_build(parser *p, body *b, value v[NCLAUSES], bool has_R) {
     if (has_R)
         memcpy(b->R, v[3].c, sizeof b->R);
     else
-        mat_identity(ctx, b->R);
+        qd__mdl_mat_identity(ctx, b->R);
     if (has_R && !numerically_rotation(p, b->R))
-        return perr(p, v[3].off, v[3].len, "use rot_x, rot_y, rot_z, euler(phi, theta, psi) "
+        return qd__mdl_perr(p, v[3].off, v[3].len, "use rot_x, rot_y, rot_z, euler(phi, theta, psi) "
                     "or their products", "the orientation is not a rotation "
                     "(R^T R = 1 and det R = 1 fail)");
     angular_velocity(ctx, b);
     for (int i = 0; i < 3; i++)
         if (!b->w[i] || !b->ws[i])
-            return perr(p, v[3].off, v[3].len, NULL, "%s", qd_ctx_message(ctx));
+            return qd__mdl_perr(p, v[3].off, v[3].len, NULL, "%s", qd_ctx_message(ctx));
     return true;
 }
 
-bool stmt_body(parser *p) {
-    if (!no_hamiltonian_yet(p, "a body", p->lx.tok.off, p->lx.tok.len))
+bool qd__mdl_stmt_body(parser *p) {
+    if (!qd__mdl_no_hamiltonian_yet(p, "a body", p->lx.tok.off, p->lx.tok.len))
         return false;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     if (p->lx.tok.kind != TK_IDENT)
-        return perr_tok(p, body_usage, "expected a body name, found %s", tk_name(p->lx.tok.kind));
+        return qd__mdl_perr_tok(p, body_usage, "expected a body name, found %s", qd__lex_tk_name(p->lx.tok.kind));
     token at = p->lx.tok;
-    if (!fresh_name(p, "body"))
+    if (!qd__mdl_fresh_name(p, "body"))
         return false;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     value v[NCLAUSES];
     bool seen[NCLAUSES] = {false};
     body b;
@@ -221,7 +221,7 @@ bool stmt_body(parser *p) {
         return false;
     for (int k = 0; k < 3; k++)
         if (!seen[k])
-            return perr(p, at.off, at.len, body_usage, "body '%.*s' has no %s", (int)at.len,
+            return qd__mdl_perr(p, at.off, at.len, body_usage, "body '%.*s' has no %s", (int)at.len,
                         p->lx.src + at.off, k == 2 ? "position ('at')" : clauses[k]);
     if (!body_build(p, &b, v, seen[3]))
         return false;
@@ -229,19 +229,19 @@ bool stmt_body(parser *p) {
     const qd_expr *T = body_kinetic(C(p), &b);
     m->T = m->T ? qd_add(C(p), m->T, T) : T;
     if (!m->T)
-        return perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
+        return qd__mdl_perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
     char *name = malloc(at.len + 1), what[80];
     if (name)
         snprintf(name, at.len + 1, "%.*s", (int)at.len, p->lx.src + at.off);
     b.name = name;
     snprintf(what, sizeof what, "body:%.70s", name ? name : "");
-    if (!name || !model_push((void **)&m->bodies, &m->nbodies, sizeof b, &b)) {
+    if (!name || !qd__mdl_push((void **)&m->bodies, &m->nbodies, sizeof b, &b)) {
         free(name);
-        return perr(p, at.off, at.len, NULL, "out of memory");
+        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     }
-    if (!model_add_where(m, what, at.off, at.len))
-        return perr(p, at.off, at.len, NULL, "out of memory");
-    return end_of_statement(p);
+    if (!qd__mdl_add_where(m, what, at.off, at.len))
+        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
+    return qd__mdl_end_of_statement(p);
 }
 
 /* ---- body names in calls and torques ---------------------------------------- */
@@ -251,12 +251,12 @@ bool stmt_body(parser *p) {
 static const body *expect_body(parser *p, const char *what) {
     const qd_model *m = p->m;
     if (p->lx.tok.kind != TK_IDENT) {
-        perr_tok(p, body_usage, "%s needs a body's name, found %s", what, tk_name(p->lx.tok.kind));
+        qd__mdl_perr_tok(p, body_usage, "%s needs a body's name, found %s", what, qd__lex_tk_name(p->lx.tok.kind));
         return NULL;
     }
-    const body *b = model_find_body(m, p->lx.src + p->lx.tok.off, p->lx.tok.len);
+    const body *b = qd__mdl_find_body(m, p->lx.src + p->lx.tok.off, p->lx.tok.len);
     if (b) {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         return b;
     }
     char word[64], hint[128];
@@ -265,39 +265,39 @@ static const body *expect_body(parser *p, const char *what) {
     const char **names = malloc((m->nbodies + 1) * sizeof *names);
     for (size_t i = 0; names && i < m->nbodies; i++)
         names[i] = m->bodies[i].name;
-    const char *near = names ? nearest(word, n, names, m->nbodies) : NULL;
+    const char *near = names ? qd__mdl_nearest(word, n, names, m->nbodies) : NULL;
     snprintf(hint, sizeof hint, near ? "did you mean '%s'?" : "%s", near ? near : body_usage);
     free(names);
-    perr_tok(p, hint, "'%s' is not a body", word);
+    qd__mdl_perr_tok(p, hint, "'%s' is not a body", word);
     return NULL;
 }
 
 static const char *const body_calls[] = {"omega", "omega_space", "point", "rotation", "position"};
 
-bool is_body_call(const char *name) {
+bool qd__mdl_is_body_call(const char *name) {
     for (size_t i = 0; i < sizeof body_calls / sizeof body_calls[0]; i++)
         if (!strcmp(name, body_calls[i]))
             return true;
     return false;
 }
 
-bool body_call_ahead(const parser *p) {
+bool qd__mdl_body_call_ahead(const parser *p) {
     lexer lx = p->lx;
-    lex_next(&lx);
-    return lx.tok.kind == TK_IDENT && model_find_body(p->m, lx.src + lx.tok.off, lx.tok.len);
+    qd__lex_next(&lx);
+    return lx.tok.kind == TK_IDENT && qd__mdl_find_body(p->m, lx.src + lx.tok.off, lx.tok.len);
 }
 
 /* point(NAME, a) = r + R a: the body-fixed point a (body axes) in space. */
 static bool body_point(parser *p, const body *b, value *out) {
     if (p->lx.tok.kind != TK_COMMA)
-        return perr_tok(p, "write point(body, (x, y, z)) with (x, y, z) in body axes",
+        return qd__mdl_perr_tok(p, "write point(body, (x, y, z)) with (x, y, z) in body axes",
                         "point takes 2 arguments: a body and a point in body axes");
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     value a;
-    if (!parse_expr(p, &a) || !need_kind(p, &a, VK_VECTOR, "as a point in body axes"))
+    if (!qd__mdl_parse_expr(p, &a) || !qd__mdl_need_kind(p, &a, VK_VECTOR, "as a point in body axes"))
         return false;
     out->kind = VK_VECTOR;
-    mat_vec(C(p), b->R, a.c, out->c);
+    qd__mdl_mat_vec(C(p), b->R, a.c, out->c);
     for (int i = 0; i < 3; i++)
         out->c[i] = qd_add(C(p), b->r[i], out->c[i]);
     return true;
@@ -305,9 +305,9 @@ static bool body_point(parser *p, const body *b, value *out) {
 
 /* omega(NAME), omega_space(NAME), rotation(NAME), position(NAME),
  * point(NAME, (x, y, z)); the current token is the '('. */
-bool body_call(parser *p, const char *name, size_t off, value *out) {
+bool qd__mdl_body_call(parser *p, const char *name, size_t off, value *out) {
     size_t open = p->lx.tok.off;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     const body *b = expect_body(p, name);
     if (!b)
         return false;
@@ -316,7 +316,7 @@ bool body_call(parser *p, const char *name, size_t off, value *out) {
         if (!body_point(p, b, &r))
             return false;
     } else if (p->lx.tok.kind == TK_COMMA) {
-        return perr_tok(p, NULL, "%s takes 1 argument, a body's name", name);
+        return qd__mdl_perr_tok(p, NULL, "%s takes 1 argument, a body's name", name);
     } else if (!strcmp(name, "rotation")) {
         r.kind = VK_MATRIX;
         memcpy(r.c, b->R, sizeof b->R);
@@ -326,23 +326,23 @@ bool body_call(parser *p, const char *name, size_t off, value *out) {
                                                                    : b->r;
         memcpy(r.c, src, 3 * sizeof *src);
     }
-    if (!expect_close(p, open))
+    if (!qd__mdl_expect_close(p, open))
         return false;
     r.len = p->lx.tok.off - off;
     *out = r;
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }
 
 /* torque G on NAME: Q_j += G . d(omega_space)/dq'_j */
-bool stmt_torque(parser *p) {
-    lex_next(&p->lx);
+bool qd__mdl_stmt_torque(parser *p) {
+    qd__lex_next(&p->lx);
     value G;
-    if (!parse_vector(p, &G, "a torque"))
+    if (!qd__mdl_parse_vector(p, &G, "a torque"))
         return false;
-    if (!lex_is(&p->lx, "on"))
-        return perr_tok(p, "write: torque (Gx, Gy, Gz) on BODY", "expected 'on', found %s",
-                        tk_name(p->lx.tok.kind));
-    lex_next(&p->lx);
+    if (!qd__lex_is(&p->lx, "on"))
+        return qd__mdl_perr_tok(p, "write: torque (Gx, Gy, Gz) on BODY", "expected 'on', found %s",
+                        qd__lex_tk_name(p->lx.tok.kind));
+    qd__lex_next(&p->lx);
     const body *b = expect_body(p, "torque");
     if (!b)
         return false;
@@ -354,7 +354,7 @@ bool stmt_torque(parser *p) {
             w = qd_add(ctx, w, qd_mul(ctx, G.c[i], qd_diff(ctx, b->ws[i], qd)));
         m->Q[j] = qd_add(ctx, m->Q[j], w);
         if (!m->Q[j])
-            return perr(p, G.off, G.len, NULL, "%s", qd_ctx_message(ctx));
+            return qd__mdl_perr(p, G.off, G.len, NULL, "%s", qd_ctx_message(ctx));
     }
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }

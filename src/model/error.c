@@ -39,7 +39,7 @@ static bool vperr(parser *p, size_t off, size_t len, const char *hint, const cha
     return false;
 }
 
-bool perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, ...) {
+bool qd__mdl_perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
     vperr(p, off, len, hint, fmt, ap);
@@ -47,7 +47,7 @@ bool perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, 
     return false;
 }
 
-bool perr_tok(parser *p, const char *hint, const char *fmt, ...) {
+bool qd__mdl_perr_tok(parser *p, const char *hint, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
     vperr(p, p->lx.tok.off, p->lx.tok.len, hint, fmt, ap);
@@ -105,7 +105,7 @@ static size_t edit_distance(const char *a, size_t na, const char *b) {
     return row[nb];
 }
 
-const char *nearest(const char *word, size_t n, const char *const *names, size_t count) {
+const char *qd__mdl_nearest(const char *word, size_t n, const char *const *names, size_t count) {
     const char *best = NULL;
     size_t bestd = (size_t)-1;
     size_t limit = n <= 3 ? 1 : n <= 6 ? 2 : 3; /* a close name, not any name */
@@ -123,7 +123,7 @@ const char *nearest(const char *word, size_t n, const char *const *names, size_t
     return best;
 }
 
-const char **known_names(const parser *p, size_t *count) {
+const char **qd__mdl_known_names(const parser *p, size_t *count) {
     const qd_model *m = p->m;
     static const char *const extra[] = {
         "t", "pi", "sqrt", "dot", "cross", "norm", "transpose", "rot_x", "rot_y", "rot_z",
@@ -158,6 +158,6 @@ const char **known_names(const parser *p, size_t *count) {
     return v;
 }
 
-bool name_is(const char *src, size_t off, size_t n, const char *word) {
+bool qd__mdl_name_is(const char *src, size_t off, size_t n, const char *word) {
     return strlen(word) == n && memcmp(src + off, word, n) == 0;
 }

@@ -39,9 +39,9 @@ static value scalar(const qd_expr *e, size_t off, size_t len) {
     return v;
 }
 
-int value_ncomp(const value *v) { return v->kind == VK_MATRIX ? 9 : v->kind == VK_VECTOR ? 3 : 1; }
+int qd__mdl_value_ncomp(const value *v) { return v->kind == VK_MATRIX ? 9 : v->kind == VK_VECTOR ? 3 : 1; }
 
-const char *vkind_name(vkind k) {
+const char *qd__mdl_vkind_name(vkind k) {
     return k == VK_MATRIX ? "matrix" : k == VK_VECTOR ? "vector" : "scalar";
 }
 
@@ -56,22 +56,22 @@ static const char *kind_hint(vkind have, vkind want) {
            "euler(phi, theta, psi)";
 }
 
-bool need_kind(parser *p, const value *v, vkind want, const char *where) {
+bool qd__mdl_need_kind(parser *p, const value *v, vkind want, const char *where) {
     if (v->kind == want)
         return true;
-    return perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed%s%s",
-                vkind_name(v->kind), vkind_name(want), where ? " " : "", where ? where : "");
+    return qd__mdl_perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed%s%s",
+                qd__mdl_vkind_name(v->kind), qd__mdl_vkind_name(want), where ? " " : "", where ? where : "");
 }
 
 static bool need_scalar(parser *p, const value *v, const char *where) {
-    return need_kind(p, v, VK_SCALAR, where);
+    return qd__mdl_need_kind(p, v, VK_SCALAR, where);
 }
 
-bool kernel_ok(parser *p, const value *v) {
-    int n = value_ncomp(v);
+bool qd__mdl_kernel_ok(parser *p, const value *v) {
+    int n = qd__mdl_value_ncomp(v);
     for (int i = 0; i < n; i++)
         if (!v->c[i])
-            return perr(p, v->off, v->len, NULL, "%s", qd_ctx_message(p->ctx)[0]
+            return qd__mdl_perr(p, v->off, v->len, NULL, "%s", qd_ctx_message(p->ctx)[0]
                                                              ? qd_ctx_message(p->ctx)
                                                              : "this expression cannot be built");
     return true;
@@ -82,7 +82,7 @@ bool kernel_ok(parser *p, const value *v) {
  * '(' instead. */
 static bool expect_closing(parser *p, size_t open, tk_kind close) {
     if (p->lx.tok.kind == close) {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         return true;
     }
     const char *s = p->lx.src;
@@ -92,27 +92,27 @@ static bool expect_closing(parser *p, size_t open, tk_kind close) {
     char hint[160];
     char c = close == TK_RPAREN ? ')' : ']';
     snprintf(hint, sizeof hint, "a '%c' is missing: found %s on line %zu", c,
-             tk_name(p->lx.tok.kind), line);
-    return perr(p, open, 1, hint, "unclosed '%c'", s[open]);
+             qd__lex_tk_name(p->lx.tok.kind), line);
+    return qd__mdl_perr(p, open, 1, hint, "unclosed '%c'", s[open]);
 }
 
-bool expect_close(parser *p, size_t open) { return expect_closing(p, open, TK_RPAREN); }
+bool qd__mdl_expect_close(parser *p, size_t open) { return expect_closing(p, open, TK_RPAREN); }
 
 /* ---- operators ------------------------------------------------------------ */
 
 static bool add_values(parser *p, value *a, const value *b, bool minus) {
     if (a->kind != b->kind)
-        return perr(p, b->off, b->len,
+        return qd__mdl_perr(p, b->off, b->len,
                     "both sides of + and - must be of one kind: scalars, vectors or matrices",
-                    "cannot add a %s to a %s", vkind_name(b->kind), vkind_name(a->kind));
-    for (int i = 0; i < value_ncomp(a); i++)
+                    "cannot add a %s to a %s", qd__mdl_vkind_name(b->kind), qd__mdl_vkind_name(a->kind));
+    for (int i = 0; i < qd__mdl_value_ncomp(a); i++)
         a->c[i] = minus ? qd_sub(C(p), a->c[i], b->c[i]) : qd_add(C(p), a->c[i], b->c[i]);
     span(a, a, b);
-    return kernel_ok(p, a);
+    return qd__mdl_kernel_ok(p, a);
 }
 
 static void dt_value(parser *p, value *v) {
-    for (int i = 0; i < value_ncomp(v); i++)
+    for (int i = 0; i < qd__mdl_value_ncomp(v); i++)
         v->c[i] = qd_dt(C(p), v->c[i]);
 }
 
@@ -171,16 +171,16 @@ static bool unknown_name(parser *p, size_t off, size_t n, bool call) {
     if (later >= 0) {
         size_t line = line_of(s, (size_t)later);
         if (p->defining && line_mentions(s, (size_t)later, p->defining))
-            return perr(p, off, n, "define each name from names defined before it",
+            return qd__mdl_perr(p, off, n, "define each name from names defined before it",
                         "circular definition: '%s' uses '%s', which is defined on line %zu "
                         "in terms of '%s'", p->defining, name, line, p->defining);
         snprintf(hint, sizeof hint, "move the definition of '%s' (line %zu) above this line",
                  name, line);
-        return perr(p, off, n, hint, "'%s' is used before it is defined", name);
+        return qd__mdl_perr(p, off, n, hint, "'%s' is used before it is defined", name);
     }
     size_t count;
-    const char **names = known_names(p, &count);
-    const char *near = names ? nearest(name, strlen(name), names, count) : NULL;
+    const char **names = qd__mdl_known_names(p, &count);
+    const char *near = names ? qd__mdl_nearest(name, strlen(name), names, count) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else if (call)
@@ -190,13 +190,13 @@ static bool unknown_name(parser *p, size_t off, size_t n, bool call) {
         snprintf(hint, sizeof hint, "declare it under 'coordinates' or 'parameters', or define "
                  "it with '%s = ...'", name);
     free(names);
-    return perr(p, off, n, hint, call ? "unknown function '%s'" : "unknown name '%s'", name);
+    return qd__mdl_perr(p, off, n, hint, call ? "unknown function '%s'" : "unknown name '%s'", name);
 }
 
 static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
     const char *s = p->lx.src;
     qd_model *m = p->m;
-    const def *d = model_find_def(m, s + off, n);
+    const def *d = qd__mdl_find_def(m, s + off, n);
     if (d) {
         *out = d->v;
         out->off = off;
@@ -204,18 +204,18 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
         return true;
     }
     for (size_t i = 0; i < m->ncoords; i++)
-        if (name_is(s, off, n, qd_expr_name(m->coords[i]))) {
+        if (qd__mdl_name_is(s, off, n, qd_expr_name(m->coords[i]))) {
             *out = scalar(m->coords[i], off, n);
             return true;
         }
     for (size_t i = 0; i < m->nparams; i++)
-        if (name_is(s, off, n, qd_expr_name(m->params[i]))) {
+        if (qd__mdl_name_is(s, off, n, qd_expr_name(m->params[i]))) {
             *out = scalar(m->params[i], off, n);
             return true;
         }
-    const qd_expr *mom = model_find_momentum(m, s + off, n);
+    const qd_expr *mom = qd__mdl_find_momentum(m, s + off, n);
     if (mom && !p->momenta_ok)
-        return perr(p, off, n, "use the momenta in H = ... or in an integral; elsewhere write "
+        return qd__mdl_perr(p, off, n, "use the momenta in H = ... or in an integral; elsewhere write "
                     "the velocities", "'%s' is a momentum, which means nothing here",
                     qd_expr_name(mom));
     if (mom) {
@@ -223,21 +223,21 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
         return true;
     }
     const qd_expr *k = NULL;
-    if (p->eps_ok && name_is(s, off, n, "eps"))
-        k = eps_symbol(C(p));
-    else if (name_is(s, off, n, "t"))
+    if (p->eps_ok && qd__mdl_name_is(s, off, n, "eps"))
+        k = qd__mdl_eps_symbol(C(p));
+    else if (qd__mdl_name_is(s, off, n, "t"))
         k = qd_time(C(p));
-    else if (name_is(s, off, n, "pi"))
+    else if (qd__mdl_name_is(s, off, n, "pi"))
         k = qd_const(C(p), QD_PI);
-    else if (name_is(s, off, n, "e"))
+    else if (qd__mdl_name_is(s, off, n, "e"))
         k = qd_const(C(p), QD_E); /* unless a parameter named e, found above */
     if (k) {
         *out = scalar(k, off, n);
         return true;
     }
-    const body *b = model_find_body(m, s + off, n);
+    const body *b = qd__mdl_find_body(m, s + off, n);
     if (b)
-        return perr(p, off, n, "use position(b), rotation(b), omega(b) or point(b, (x, y, z))",
+        return qd__mdl_perr(p, off, n, "use position(b), rotation(b), omega(b) or point(b, (x, y, z))",
                     "'%s' is a body, not a value", b->name);
     return unknown_name(p, off, n, false);
 }
@@ -249,28 +249,28 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
 static bool parse_args(parser *p, value *args, size_t *nargs) {
     *nargs = 0;
     size_t open = p->lx.tok.off;
-    lex_next(&p->lx); /* '(' */
+    qd__lex_next(&p->lx); /* '(' */
     if (p->lx.tok.kind == TK_RPAREN) {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         return true;
     }
     for (;;) {
         if (*nargs == MAX_ARGS)
-            return perr_tok(p, NULL, "too many arguments (at most %d)", MAX_ARGS);
+            return qd__mdl_perr_tok(p, NULL, "too many arguments (at most %d)", MAX_ARGS);
         if (!parse_sum(p, &args[(*nargs)++]))
             return false;
         if (p->lx.tok.kind == TK_COMMA) {
-            lex_next(&p->lx);
+            qd__lex_next(&p->lx);
             continue;
         }
-        return expect_close(p, open);
+        return qd__mdl_expect_close(p, open);
     }
 }
 
-bool check_arity(parser *p, const char *name, size_t got, size_t want, size_t off, size_t len) {
+bool qd__mdl_check_arity(parser *p, const char *name, size_t got, size_t want, size_t off, size_t len) {
     if (got == want)
         return true;
-    return perr(p, off, len, NULL, "%s takes %zu argument%s, not %zu", name, want,
+    return qd__mdl_perr(p, off, len, NULL, "%s takes %zu argument%s, not %zu", name, want,
                 want == 1 ? "" : "s", got);
 }
 
@@ -278,12 +278,12 @@ static bool vector_call(parser *p, const char *name, value *a, size_t n, value *
                         size_t len) {
     qd_ctx *ctx = C(p);
     bool two = strcmp(name, "norm") != 0;
-    if (!check_arity(p, name, n, two ? 2 : 1, off, len))
+    if (!qd__mdl_check_arity(p, name, n, two ? 2 : 1, off, len))
         return false;
     for (size_t i = 0; i < n; i++)
         if (a[i].kind != VK_VECTOR)
-            return perr(p, a[i].off, a[i].len, kind_hint(a[i].kind, VK_VECTOR),
-                        "%s needs vectors; this is a %s", name, vkind_name(a[i].kind));
+            return qd__mdl_perr(p, a[i].off, a[i].len, kind_hint(a[i].kind, VK_VECTOR),
+                        "%s needs vectors; this is a %s", name, qd__mdl_vkind_name(a[i].kind));
     value r = scalar(NULL, off, len);
     if (!strcmp(name, "cross")) {
         r.kind = VK_VECTOR;
@@ -299,12 +299,12 @@ static bool vector_call(parser *p, const char *name, value *a, size_t n, value *
             r.c[0] = qd_sqrt(ctx, r.c[0]);
     }
     *out = r;
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }
 
 static const char *user_function(parser *p, size_t off, size_t n) {
     for (size_t i = 0; i < p->m->nfuncs; i++)
-        if (name_is(p->lx.src, off, n, p->m->funcs[i]))
+        if (qd__mdl_name_is(p->lx.src, off, n, p->m->funcs[i]))
             return p->m->funcs[i];
     return NULL;
 }
@@ -313,7 +313,7 @@ static const char *user_function(parser *p, size_t off, size_t n) {
  * as omega(...) must not hide when its argument is not a body)? */
 static bool names_a_value(parser *p, const char *name) {
     qd_model *m = p->m;
-    if (model_find_def(m, name, strlen(name)))
+    if (qd__mdl_find_def(m, name, strlen(name)))
         return true;
     for (size_t i = 0; i < m->ncoords; i++)
         if (!strcmp(name, qd_expr_name(m->coords[i])))
@@ -328,8 +328,8 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     char name[64];
     snprintf(name, sizeof name, "%.*s", (int)(n < 63 ? n : 63), p->lx.src + off);
     const char *uf = user_function(p, off, n);
-    if (!uf && is_body_call(name) && (body_call_ahead(p) || !names_a_value(p, name)))
-        return body_call(p, name, off, out);
+    if (!uf && qd__mdl_is_body_call(name) && (qd__mdl_body_call_ahead(p) || !names_a_value(p, name)))
+        return qd__mdl_body_call(p, name, off, out);
     value a[MAX_ARGS];
     size_t na;
     if (!parse_args(p, a, &na))
@@ -337,10 +337,10 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     size_t len = p->lx.tok.off - off;
     if (!strcmp(name, "dot") || !strcmp(name, "cross") || !strcmp(name, "norm"))
         return vector_call(p, name, a, na, out, off, len);
-    if (!uf && is_rot_call(name))
-        return rot_call(p, name, a, na, out, off, len);
-    if (!uf && is_inertia_call(name))
-        return inertia_call(p, name, a, na, out, off, len);
+    if (!uf && qd__mdl_is_rot_call(name))
+        return qd__mdl_rot_call(p, name, a, na, out, off, len);
+    if (!uf && qd__mdl_is_inertia_call(name))
+        return qd__mdl_inertia_call(p, name, a, na, out, off, len);
     const qd_expr *args[MAX_ARGS];
     for (size_t i = 0; i < na; i++) {
         if (!need_scalar(p, &a[i], "as a function argument"))
@@ -352,23 +352,23 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     if (uf) {
         e = qd_ufunc(C(p), uf, na, args);
     } else if (!strcmp(name, "sqrt")) {
-        if (!check_arity(p, name, na, 1, off, len))
+        if (!qd__mdl_check_arity(p, name, na, 1, off, len))
             return false;
         e = qd_sqrt(C(p), args[0]);
     } else if (qd_func_from_name(name, &f)) {
-        if (!check_arity(p, name, na, f == QD_ATAN2 ? 2 : 1, off, len))
+        if (!qd__mdl_check_arity(p, name, na, f == QD_ATAN2 ? 2 : 1, off, len))
             return false;
         e = f == QD_ATAN2 ? qd_fn2(C(p), f, args[0], args[1]) : qd_fn(C(p), f, args[0]);
     } else {
         value dummy;
         if (lookup_name(p, off, n, &dummy))
-            return perr(p, off, n, "write a product with '*': m*(a + b)", "'%s' is not a function",
+            return qd__mdl_perr(p, off, n, "write a product with '*': m*(a + b)", "'%s' is not a function",
                         name);
         p->failed = false; /* replace the lookup's message with the call's */
         return unknown_name(p, off, n, true);
     }
     *out = scalar(e, off, len);
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }
 
 /* ---- grammar ------------------------------------------------------------------- */
@@ -376,7 +376,7 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
 /* '(' sum (',' sum){0,2} ')': a parenthesized scalar or a vector */
 static bool parse_paren(parser *p, value *out) {
     size_t off = p->lx.tok.off;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     value c[3];
     size_t n = 0;
     for (;;) {
@@ -386,14 +386,14 @@ static bool parse_paren(parser *p, value *out) {
         if (p->lx.tok.kind != TK_COMMA)
             break;
         if (n == 3)
-            return perr_tok(p, NULL, "a vector has at most three components");
-        lex_next(&p->lx);
+            return qd__mdl_perr_tok(p, NULL, "a vector has at most three components");
+        qd__lex_next(&p->lx);
     }
     for (size_t i = 0; n > 1 && i < n; i++)
         if (!need_scalar(p, &c[i], "as a vector component"))
             return false;
     size_t end = p->lx.tok.off + p->lx.tok.len;
-    if (!expect_close(p, off))
+    if (!qd__mdl_expect_close(p, off))
         return false;
     if (n == 1) {
         *out = c[0];
@@ -411,42 +411,42 @@ static bool parse_paren(parser *p, value *out) {
 static bool parse_row(parser *p, const qd_expr **c) {
     size_t off = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LBRACK)
-        return perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
-                        "expected a row '[a, b, c]', found %s", tk_name(p->lx.tok.kind));
-    lex_next(&p->lx);
+        return qd__mdl_perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
+                        "expected a row '[a, b, c]', found %s", qd__lex_tk_name(p->lx.tok.kind));
+    qd__lex_next(&p->lx);
     for (int i = 0; i < 3; i++) {
         value v;
         if (i > 0 && p->lx.tok.kind != TK_COMMA)
-            return perr_tok(p, NULL, "a row of a matrix has three entries; found %s after %d",
-                            tk_name(p->lx.tok.kind), i);
+            return qd__mdl_perr_tok(p, NULL, "a row of a matrix has three entries; found %s after %d",
+                            qd__lex_tk_name(p->lx.tok.kind), i);
         if (i > 0)
-            lex_next(&p->lx);
+            qd__lex_next(&p->lx);
         if (!parse_sum(p, &v) || !need_scalar(p, &v, "as a matrix entry"))
             return false;
         c[i] = v.c[0];
     }
     if (p->lx.tok.kind == TK_COMMA)
-        return perr_tok(p, NULL, "a row of a matrix has three entries, not more");
+        return qd__mdl_perr_tok(p, NULL, "a row of a matrix has three entries, not more");
     return expect_closing(p, off, TK_RBRACK);
 }
 
 /* '[' row ',' row ',' row ']' */
 static bool parse_matrix(parser *p, value *out) {
     size_t off = p->lx.tok.off;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     value v = {VK_MATRIX, {NULL}, off, 0};
     for (int i = 0; i < 3; i++) {
         if (i > 0 && p->lx.tok.kind != TK_COMMA)
-            return perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
-                            "a matrix has three rows; found %s after %d", tk_name(p->lx.tok.kind),
+            return qd__mdl_perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
+                            "a matrix has three rows; found %s after %d", qd__lex_tk_name(p->lx.tok.kind),
                             i);
         if (i > 0)
-            lex_next(&p->lx);
+            qd__lex_next(&p->lx);
         if (!parse_row(p, &v.c[3 * i]))
             return false;
     }
     if (p->lx.tok.kind == TK_COMMA)
-        return perr_tok(p, NULL, "a matrix has three rows, not more");
+        return qd__mdl_perr_tok(p, NULL, "a matrix has three rows, not more");
     size_t end = p->lx.tok.off + p->lx.tok.len;
     if (!expect_closing(p, off, TK_RBRACK))
         return false;
@@ -462,18 +462,18 @@ static bool parse_primary(parser *p, value *out) {
     case TK_NUMBER: {
         char buf[128];
         if (t.len >= sizeof buf)
-            return perr_tok(p, NULL, "number too long");
+            return qd__mdl_perr_tok(p, NULL, "number too long");
         memcpy(buf, p->lx.src + t.off, t.len);
         buf[t.len] = '\0';
         const qd_expr *e = qd_rat_str(C(p), buf);
         if (!e)
-            return perr_tok(p, "write numbers as 12, 0.5, 3/4 or 1e-3", "'%s' is not a number", buf);
-        lex_next(&p->lx);
+            return qd__mdl_perr_tok(p, "write numbers as 12, 0.5, 3/4 or 1e-3", "'%s' is not a number", buf);
+        qd__lex_next(&p->lx);
         *out = scalar(e, t.off, t.len);
         return true;
     }
     case TK_IDENT:
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         if (p->lx.tok.kind == TK_LPAREN)
             return parse_call(p, t.off, t.len, out);
         return lookup_name(p, t.off, t.len, out);
@@ -482,7 +482,7 @@ static bool parse_primary(parser *p, value *out) {
     case TK_LBRACK:
         return parse_matrix(p, out);
     default:
-        return perr_tok(p, NULL, "expected an expression, found %s", tk_name(t.kind));
+        return qd__mdl_perr_tok(p, NULL, "expected an expression, found %s", qd__lex_tk_name(t.kind));
     }
 }
 
@@ -499,25 +499,25 @@ static bool parse_postfix(parser *p, value *out) {
     for (;;) {
         if (p->lx.tok.kind == TK_PRIME) {
             if (++primes > MAX_PRIMES)
-                return perr_tok(p, "Lagrange's equations need velocities and accelerations only",
+                return qd__mdl_perr_tok(p, "Lagrange's equations need velocities and accelerations only",
                                 "a time derivative of order above %d", MAX_PRIMES);
             dt_value(p, out);
             out->len = p->lx.tok.off + 1 - out->off;
-            lex_next(&p->lx);
-            if (!kernel_ok(p, out))
+            qd__lex_next(&p->lx);
+            if (!qd__mdl_kernel_ok(p, out))
                 return false;
         } else if (p->lx.tok.kind == TK_DOT) {
-            lex_next(&p->lx);
-            int k = lex_is(&p->lx, "x") ? 0 : lex_is(&p->lx, "y") ? 1 : lex_is(&p->lx, "z") ? 2 : -1;
+            qd__lex_next(&p->lx);
+            int k = qd__lex_is(&p->lx, "x") ? 0 : qd__lex_is(&p->lx, "y") ? 1 : qd__lex_is(&p->lx, "z") ? 2 : -1;
             if (k < 0)
-                return perr_tok(p, "components are .x, .y and .z", "expected a component name");
+                return qd__mdl_perr_tok(p, "components are .x, .y and .z", "expected a component name");
             if (out->kind != VK_VECTOR)
-                return perr(p, out->off, out->len,
+                return qd__mdl_perr(p, out->off, out->len,
                             out->kind == VK_SCALAR ? "only a vector has components"
                                                    : "R*(1, 0, 0) is the first column of R",
-                            "a %s where a vector is needed", vkind_name(out->kind));
+                            "a %s where a vector is needed", qd__mdl_vkind_name(out->kind));
             *out = scalar(out->c[k], out->off, p->lx.tok.off + 1 - out->off);
-            lex_next(&p->lx);
+            qd__lex_next(&p->lx);
         } else {
             return true;
         }
@@ -530,7 +530,7 @@ static bool parse_power(parser *p, value *out) {
         return false;
     if (p->lx.tok.kind != TK_CARET)
         return true;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     value e;
     if (!parse_factor(p, &e))
         return false;
@@ -539,11 +539,11 @@ static bool parse_power(parser *p, value *out) {
         return false;
     out->c[0] = qd_pow(C(p), out->c[0], e.c[0]);
     span(out, out, &e);
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }
 
 static void negate(parser *p, value *v) {
-    for (int i = 0; i < value_ncomp(v); i++)
+    for (int i = 0; i < qd__mdl_value_ncomp(v); i++)
         v->c[i] = qd_neg(C(p), v->c[i]);
 }
 
@@ -553,14 +553,14 @@ static bool parse_factor(parser *p, value *out) {
         return parse_power(p, out);
     bool neg = p->lx.tok.kind == TK_MINUS;
     size_t off = p->lx.tok.off;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     if (!parse_factor(p, out))
         return false;
     if (neg)
         negate(p, out);
     out->len += out->off - off;
     out->off = off;
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }
 
 #define MAX_FACTORS 64
@@ -569,16 +569,16 @@ static bool parse_factor(parser *p, value *out) {
  * matrix*vector a vector; a vector can only come last. */
 static bool mul_nonscalar(parser *p, value *acc, const value *b) {
     if (acc->kind == VK_VECTOR && b->kind == VK_VECTOR)
-        return perr(p, b->off, b->len, "use dot(a, b) or cross(a, b)",
+        return qd__mdl_perr(p, b->off, b->len, "use dot(a, b) or cross(a, b)",
                     "a vector where a scalar is needed: cannot multiply two vectors");
     if (acc->kind == VK_VECTOR)
-        return perr(p, b->off, b->len, "write transpose(R)*v for the row vector v^T R",
+        return qd__mdl_perr(p, b->off, b->len, "write transpose(R)*v for the row vector v^T R",
                     "a matrix cannot multiply a vector from the right");
     const qd_expr *c[9];
     if (b->kind == VK_MATRIX)
-        mat_mul(C(p), acc->c, b->c, c);
+        qd__mdl_mat_mul(C(p), acc->c, b->c, c);
     else
-        mat_vec(C(p), acc->c, b->c, c);
+        qd__mdl_mat_vec(C(p), acc->c, b->c, c);
     acc->kind = b->kind;
     memcpy(acc->c, c, sizeof c);
     return true;
@@ -600,7 +600,7 @@ static bool parse_product(parser *p, value *out) {
         fs[n++] = out->c[0];
     while (p->lx.tok.kind == TK_STAR || p->lx.tok.kind == TK_SLASH) {
         bool divide = p->lx.tok.kind == TK_SLASH;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         value b;
         if (!parse_factor(p, &b))
             return false;
@@ -623,12 +623,12 @@ static bool parse_product(parser *p, value *out) {
     }
     const qd_expr *s = qd_mul_n(C(p), n, fs);
     value r = have ? acc : *out;
-    for (int i = 0; i < value_ncomp(&r); i++)
+    for (int i = 0; i < qd__mdl_value_ncomp(&r); i++)
         r.c[i] = have ? (n ? qd_mul(C(p), s, acc.c[i]) : acc.c[i]) : s;
     r.off = out->off;
     r.len = out->len;
     *out = r;
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }
 
 /* sum := ('-' | '+')? product (('+' | '-') product)*
@@ -638,7 +638,7 @@ static bool parse_sum(parser *p, value *out) {
     size_t off = p->lx.tok.off;
     if (p->lx.tok.kind == TK_MINUS || p->lx.tok.kind == TK_PLUS) {
         neg = p->lx.tok.kind == TK_MINUS;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
     }
     if (!parse_product(p, out))
         return false;
@@ -648,7 +648,7 @@ static bool parse_sum(parser *p, value *out) {
     out->off = off;
     while (p->lx.tok.kind == TK_PLUS || p->lx.tok.kind == TK_MINUS) {
         bool minus = p->lx.tok.kind == TK_MINUS;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         value b;
         if (!parse_product(p, &b) || !add_values(p, out, &b, minus))
             return false;
@@ -656,22 +656,22 @@ static bool parse_sum(parser *p, value *out) {
     return true;
 }
 
-bool parse_expr(parser *p, value *out) {
+bool qd__mdl_parse_expr(parser *p, value *out) {
     if (p->lx.too_deep)
-        return perr_tok(p, NULL, "brackets nested too deeply");
+        return qd__mdl_perr_tok(p, NULL, "brackets nested too deeply");
     return parse_sum(p, out);
 }
 
 static bool parse_kind(parser *p, value *v, vkind want, const char *what) {
-    if (!parse_expr(p, v))
+    if (!qd__mdl_parse_expr(p, v))
         return false;
     if (v->kind == want)
         return true;
-    return perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed: %s is a %s",
-                vkind_name(v->kind), vkind_name(want), what, vkind_name(want));
+    return qd__mdl_perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed: %s is a %s",
+                qd__mdl_vkind_name(v->kind), qd__mdl_vkind_name(want), what, qd__mdl_vkind_name(want));
 }
 
-bool parse_scalar(parser *p, const qd_expr **out, const char *what) {
+bool qd__mdl_parse_scalar(parser *p, const qd_expr **out, const char *what) {
     value v;
     if (!parse_kind(p, &v, VK_SCALAR, what))
         return false;
@@ -679,10 +679,10 @@ bool parse_scalar(parser *p, const qd_expr **out, const char *what) {
     return true;
 }
 
-bool parse_vector(parser *p, value *v, const char *what) {
+bool qd__mdl_parse_vector(parser *p, value *v, const char *what) {
     return parse_kind(p, v, VK_VECTOR, what);
 }
 
-bool parse_matrix_value(parser *p, value *v, const char *what) {
+bool qd__mdl_parse_matrix_value(parser *p, value *v, const char *what) {
     return parse_kind(p, v, VK_MATRIX, what);
 }

@@ -25,60 +25,60 @@ static void momenta_hint(const qd_model *m, const char *prefix, char *buf, size_
 }
 
 /* momenta NAME (',' NAME)* */
-bool stmt_momenta(parser *p) {
+bool qd__mdl_stmt_momenta(parser *p) {
     qd_model *m = p->m;
     token kw = p->lx.tok;
     if (m->mom) {
         qd_diag first;
         qd_model_where(m, "momenta", &first);
-        return perr(p, kw.off, kw.len, "give all the momenta on one line",
+        return qd__mdl_perr(p, kw.off, kw.len, "give all the momenta on one line",
                     "momenta are declared twice (first on line %zu)", first.line);
     }
     if (m->ncoords == 0)
-        return perr(p, kw.off, kw.len, "declare the coordinates first: coordinates q1, q2",
+        return qd__mdl_perr(p, kw.off, kw.len, "declare the coordinates first: coordinates q1, q2",
                     "momenta before any coordinates");
     const qd_expr **mom = calloc(m->ncoords, sizeof *mom);
     if (!mom)
-        return perr(p, kw.off, kw.len, NULL, "out of memory");
+        return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     size_t n = 0;
     token last = kw;
     bool ok = true;
     do {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         token at = p->lx.tok;
         if (at.kind != TK_IDENT) {
-            ok = perr_tok(p, "write: momenta p_q1, p_q2", "expected a momentum's name, found %s",
-                          tk_name(at.kind));
+            ok = qd__mdl_perr_tok(p, "write: momenta p_q1, p_q2", "expected a momentum's name, found %s",
+                          qd__lex_tk_name(at.kind));
             break;
         }
         if (n == m->ncoords) {
             char hint[160];
             snprintf(hint, sizeof hint, "one momentum per coordinate: there %s %zu coordinate%s",
                      m->ncoords == 1 ? "is" : "are", m->ncoords, m->ncoords == 1 ? "" : "s");
-            ok = perr(p, at.off, at.len, hint, "more momenta than coordinates");
+            ok = qd__mdl_perr(p, at.off, at.len, hint, "more momenta than coordinates");
             break;
         }
         char name[128];
         snprintf(name, sizeof name, "%.*s", (int)(at.len < 127 ? at.len : 127), p->lx.src + at.off);
         for (size_t i = 0; i < n && ok; i++)
             if (!strcmp(qd_expr_name(mom[i]), name))
-                ok = perr_tok(p, "each coordinate has its own momentum",
+                ok = qd__mdl_perr_tok(p, "each coordinate has its own momentum",
                               "momentum '%s' is named twice", name);
-        if (!ok || !(ok = fresh_name(p, "momentum")))
+        if (!ok || !(ok = qd__mdl_fresh_name(p, "momentum")))
             break;
         mom[n] = qd_symbol(p->ctx, name);
         if (!mom[n]) {
-            ok = perr_tok(p, "choose another name", "%s", qd_ctx_message(p->ctx));
+            ok = qd__mdl_perr_tok(p, "choose another name", "%s", qd_ctx_message(p->ctx));
             break;
         }
         n++;
         last = at;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     if (ok && n < m->ncoords) {
         char hint[256];
         momenta_hint(m, "one momentum per coordinate, in coordinate order: ", hint, sizeof hint);
-        ok = perr(p, last.off, last.len, hint, "%zu moment%s for %zu coordinates", n,
+        ok = qd__mdl_perr(p, last.off, last.len, hint, "%zu moment%s for %zu coordinates", n,
                   n == 1 ? "um" : "a", m->ncoords);
     }
     if (!ok) {
@@ -86,9 +86,9 @@ bool stmt_momenta(parser *p) {
         return false;
     }
     m->mom = mom;
-    if (!model_add_where(m, "momenta", kw.off, kw.len))
-        return perr(p, kw.off, kw.len, NULL, "out of memory");
-    return end_of_statement(p);
+    if (!qd__mdl_add_where(m, "momenta", kw.off, kw.len))
+        return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
+    return qd__mdl_end_of_statement(p);
 }
 
 /* The first of T, L, V, U the model gives ("T" also for particles and
@@ -99,12 +99,12 @@ static const char *energy_given(const qd_model *m) {
     return m->L ? "L" : m->V ? "V" : m->U ? "U" : NULL;
 }
 
-bool no_hamiltonian_yet(parser *p, const char *what, size_t off, size_t len) {
+bool qd__mdl_no_hamiltonian_yet(parser *p, const char *what, size_t off, size_t len) {
     if (!p->m->H)
         return true;
     qd_diag h;
     qd_model_where(p->m, "H", &h);
-    return perr(p, off, len, "a model gives either H (with momenta) or its energies T and V (or L)",
+    return qd__mdl_perr(p, off, len, "a model gives either H (with momenta) or its energies T and V (or L)",
                 "%s cannot be given with H (line %zu)", what, h.line);
 }
 
@@ -120,32 +120,32 @@ static const qd_expr *velocity_in(parser *p, const qd_expr *x) {
 }
 
 /* H '=' EXPR */
-bool stmt_hamiltonian(parser *p) {
+bool qd__mdl_stmt_hamiltonian(parser *p) {
     qd_model *m = p->m;
     token at = p->lx.tok;
     if (m->H) {
         qd_diag first;
         qd_model_where(m, "H", &first);
-        return perr(p, at.off, at.len, "give it once; add the parts in one expression",
+        return qd__mdl_perr(p, at.off, at.len, "give it once; add the parts in one expression",
                     "H is given twice (first on line %zu)", first.line);
     }
     const char *e = energy_given(m);
     if (e)
-        return perr(p, at.off, at.len,
+        return qd__mdl_perr(p, at.off, at.len,
                     "a model gives either H (with momenta) or its energies T and V (or L)",
                     "H cannot be given with %s", e);
     if (!m->mom) {
         char hint[256];
         momenta_hint(m, "declare one momentum per coordinate first: ", hint, sizeof hint);
-        return perr(p, at.off, at.len, m->ncoords ? hint : "declare the coordinates and momenta "
+        return qd__mdl_perr(p, at.off, at.len, m->ncoords ? hint : "declare the coordinates and momenta "
                     "first", "H is given before the momenta");
     }
-    lex_next(&p->lx); /* '=' */
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx); /* '=' */
+    qd__lex_next(&p->lx);
     size_t off = p->lx.tok.off;
     p->momenta_ok = true;
     const qd_expr *H;
-    bool ok = parse_scalar(p, &H, "H");
+    bool ok = qd__mdl_parse_scalar(p, &H, "H");
     p->momenta_ok = false;
     if (!ok)
         return false;
@@ -154,11 +154,11 @@ bool stmt_hamiltonian(parser *p) {
         char hint[256];
         snprintf(hint, sizeof hint, "write H in the coordinates, the momenta (%s, ...), the "
                  "parameters and t", qd_expr_name(m->mom[0]));
-        return perr(p, off, p->lx.tok.off - off, hint, "H depends on the velocity %s",
+        return qd__mdl_perr(p, off, p->lx.tok.off - off, hint, "H depends on the velocity %s",
                     qd_expr_name(v));
     }
     m->H = H;
-    if (!model_add_where(m, "H", at.off, at.len))
-        return perr(p, at.off, at.len, NULL, "out of memory");
-    return end_of_statement(p);
+    if (!qd__mdl_add_where(m, "H", at.off, at.len))
+        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
+    return qd__mdl_end_of_statement(p);
 }

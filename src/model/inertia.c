@@ -35,7 +35,7 @@ static const solid *find_solid(const char *name) {
     return NULL;
 }
 
-bool is_inertia_call(const char *name) { return find_solid(name) != NULL; }
+bool qd__mdl_is_inertia_call(const char *name) { return find_solid(name) != NULL; }
 
 /* k m x^2 */
 static const qd_expr *kmx2(qd_ctx *ctx, long num, long den, const qd_expr *m, const qd_expr *x) {
@@ -78,19 +78,19 @@ static void moments(qd_ctx *ctx, const char *name, const qd_expr *const *x, cons
     I[2] = axial;
 }
 
-bool inertia_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
+bool qd__mdl_inertia_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
                   size_t len) {
     const solid *s = find_solid(name);
-    if (!check_arity(p, name, n, s->nargs, off, len))
+    if (!qd__mdl_check_arity(p, name, n, s->nargs, off, len))
         return false;
     const qd_expr *x[4];
     for (size_t i = 0; i < n; i++) {
-        if (!need_kind(p, &a[i], VK_SCALAR, i ? "as a length" : "as a mass"))
+        if (!qd__mdl_need_kind(p, &a[i], VK_SCALAR, i ? "as a length" : "as a mass"))
             return false;
         x[i] = a[i].c[0];
     }
     value r = {VK_VECTOR, {NULL}, off, len};
     moments(p->ctx, name, x, r.c);
     *out = r;
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }

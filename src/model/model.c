@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-bool model_push(void **arr, size_t *n, size_t size, const void *item) {
+bool qd__mdl_push(void **arr, size_t *n, size_t size, const void *item) {
     /* grow by doubling; capacity is implied by n (powers of two) */
     size_t cap = 1;
     while (cap < *n)
@@ -23,35 +23,35 @@ bool model_push(void **arr, size_t *n, size_t size, const void *item) {
     return true;
 }
 
-const def *model_find_def(const qd_model *m, const char *name, size_t n) {
+const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n) {
     for (size_t i = m->ndefs; i-- > 0;)
         if (strlen(m->defs[i].name) == n && memcmp(m->defs[i].name, name, n) == 0)
             return &m->defs[i];
     return NULL;
 }
 
-bool model_add_def(qd_model *m, const char *name, value v, size_t off, size_t len) {
+bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len) {
     char *copy = malloc(strlen(name) + 1);
     if (!copy)
         return false;
     strcpy(copy, name);
     def d = {copy, v, off, len};
-    if (!model_push((void **)&m->defs, &m->ndefs, sizeof d, &d)) {
+    if (!qd__mdl_push((void **)&m->defs, &m->ndefs, sizeof d, &d)) {
         free(copy);
         return false;
     }
     return true;
 }
 
-bool model_add_where(qd_model *m, const char *what, size_t off, size_t len) {
+bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len) {
     where w;
     snprintf(w.what, sizeof w.what, "%s", what);
     w.off = off;
     w.len = len;
-    return model_push((void **)&m->wheres, &m->nwheres, sizeof w, &w);
+    return qd__mdl_push((void **)&m->wheres, &m->nwheres, sizeof w, &w);
 }
 
-int model_coord_index(const qd_model *m, const qd_expr *sym) {
+int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym) {
     for (size_t i = 0; i < m->ncoords; i++)
         if (m->coords[i] == sym)
             return (int)i;
@@ -125,7 +125,7 @@ qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const q
             return QD_OK;
         }
     }
-    const char *near = nearest(name, strlen(name), names, m->nparams);
+    const char *near = qd__mdl_nearest(name, strlen(name), names, m->nparams);
     if (near)
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'; did you mean '%s'?", name, near);
     else
@@ -217,9 +217,9 @@ const qd_expr *qd_model_integral(const qd_model *m, size_t i) {
     return i < m->nints ? m->ints[i].expr : NULL;
 }
 
-const qd_expr *model_find_momentum(const qd_model *m, const char *name, size_t n) {
+const qd_expr *qd__mdl_find_momentum(const qd_model *m, const char *name, size_t n) {
     for (size_t i = 0; m->mom && i < m->ncoords; i++)
-        if (m->mom[i] && name_is(name, 0, n, qd_expr_name(m->mom[i])))
+        if (m->mom[i] && qd__mdl_name_is(name, 0, n, qd_expr_name(m->mom[i])))
             return m->mom[i];
     return NULL;
 }
@@ -229,7 +229,7 @@ const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order)
 }
 
 const qd_expr *qd_model_definition(const qd_model *m, const char *name) {
-    const def *d = model_find_def(m, name, strlen(name));
+    const def *d = qd__mdl_find_def(m, name, strlen(name));
     return d && d->v.kind == VK_SCALAR ? d->v.c[0] : NULL;
 }
 

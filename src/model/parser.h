@@ -109,93 +109,93 @@ typedef struct parser {
 } parser;
 
 /* expr.c */
-bool parse_expr(parser *p, value *out);
-bool parse_scalar(parser *p, const qd_expr **out, const char *what);
-bool parse_vector(parser *p, value *v, const char *what);  /* what: "a position" */
-bool parse_matrix_value(parser *p, value *v, const char *what);
+bool qd__mdl_parse_expr(parser *p, value *out);
+bool qd__mdl_parse_scalar(parser *p, const qd_expr **out, const char *what);
+bool qd__mdl_parse_vector(parser *p, value *v, const char *what);  /* what: "a position" */
+bool qd__mdl_parse_matrix_value(parser *p, value *v, const char *what);
 /* v must be of kind want; else "a vector where a scalar is needed WHERE". */
-bool need_kind(parser *p, const value *v, vkind want, const char *where);
-int value_ncomp(const value *v);           /* 1, 3 or 9 */
-const char *vkind_name(vkind k);           /* "scalar", "vector", "matrix" */
+bool qd__mdl_need_kind(parser *p, const value *v, vkind want, const char *where);
+int qd__mdl_value_ncomp(const value *v);           /* 1, 3 or 9 */
+const char *qd__mdl_vkind_name(vkind k);           /* "scalar", "vector", "matrix" */
 /* Every component built (no NULL from the kernel); else the context's error. */
-bool kernel_ok(parser *p, const value *v);
+bool qd__mdl_kernel_ok(parser *p, const value *v);
 /* The ')' closing the '(' at open (a missing one is reported at the '('). */
-bool expect_close(parser *p, size_t open);
+bool qd__mdl_expect_close(parser *p, size_t open);
 /* "NAME takes WANT arguments, not GOT" at the call when got != want. */
-bool check_arity(parser *p, const char *name, size_t got, size_t want, size_t off, size_t len);
+bool qd__mdl_check_arity(parser *p, const char *name, size_t got, size_t want, size_t off, size_t len);
 
 /* rot.c: 3x3 matrices by rows, rotation matrices, and their calls. */
-void mat_identity(qd_ctx *ctx, const qd_expr *out[9]);
-void mat_mul(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const b[9],
+void qd__mdl_mat_identity(qd_ctx *ctx, const qd_expr *out[9]);
+void qd__mdl_mat_mul(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const b[9],
              const qd_expr *out[9]);
-void mat_vec(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const v[3],
+void qd__mdl_mat_vec(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const v[3],
              const qd_expr *out[3]);
-void mat_transpose(const qd_expr *const a[9], const qd_expr *out[9]);
-bool is_rot_call(const char *name);        /* rot_x ... tait_bryan, transpose */
-bool rot_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
+void qd__mdl_mat_transpose(const qd_expr *const a[9], const qd_expr *out[9]);
+bool qd__mdl_is_rot_call(const char *name);        /* rot_x ... tait_bryan, transpose */
+bool qd__mdl_rot_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
               size_t len);
 
 /* inertia.c: principal moments of common solids, as vectors. */
-bool is_inertia_call(const char *name);
-bool inertia_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
+bool qd__mdl_is_inertia_call(const char *name);
+bool qd__mdl_inertia_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
                   size_t len);
 
 /* body.c */
-bool stmt_body(parser *p);
-bool stmt_torque(parser *p);
-const body *model_find_body(const qd_model *m, const char *name, size_t n);
-bool is_body_call(const char *name);       /* omega, omega_space, point, rotation, position */
+bool qd__mdl_stmt_body(parser *p);
+bool qd__mdl_stmt_torque(parser *p);
+const body *qd__mdl_find_body(const qd_model *m, const char *name, size_t n);
+bool qd__mdl_is_body_call(const char *name);       /* omega, omega_space, point, rotation, position */
 /* The call's '(' is the current token; the first argument names a body. */
-bool body_call_ahead(const parser *p);
-bool body_call(parser *p, const char *name, size_t off, value *out);
+bool qd__mdl_body_call_ahead(const parser *p);
+bool qd__mdl_body_call(parser *p, const char *name, size_t off, value *out);
 
 /* hamstmt.c: `momenta ...` and `H = ...` */
-bool stmt_momenta(parser *p);
-bool stmt_hamiltonian(parser *p);
+bool qd__mdl_stmt_momenta(parser *p);
+bool qd__mdl_stmt_hamiltonian(parser *p);
 /* An energy statement (T, V, U, L, particle, body) after H: an error at
  * off..off+len when the model already gives H. */
-bool no_hamiltonian_yet(parser *p, const char *what, size_t off, size_t len);
+bool qd__mdl_no_hamiltonian_yet(parser *p, const char *what, size_t off, size_t len);
 /* The momentum named at src[off..off+n), or NULL. */
-const qd_expr *model_find_momentum(const qd_model *m, const char *name, size_t n);
+const qd_expr *qd__mdl_find_momentum(const qd_model *m, const char *name, size_t n);
 
 /* symmetry.c */
-bool stmt_symmetry(parser *p);
-bool stmt_integral(parser *p);
-const qd_expr *eps_symbol(qd_ctx *ctx);
-bool check_integrals(parser *p);   /* after the last line */
+bool qd__mdl_stmt_symmetry(parser *p);
+bool qd__mdl_stmt_integral(parser *p);
+const qd_expr *qd__mdl_eps_symbol(qd_ctx *ctx);
+bool qd__mdl_check_integrals(parser *p);   /* after the last line */
 
 /* reaction.c */
-bool stmt_rolls(parser *p);     /* roll.c */
-bool stmt_reaction(parser *p);
+bool qd__mdl_stmt_rolls(parser *p);     /* roll.c */
+bool qd__mdl_stmt_reaction(parser *p);
 
 /* stmt.c: shared by the statements in body.c */
-bool end_of_statement(parser *p);
-bool fresh_name(parser *p, const char *what);
+bool qd__mdl_end_of_statement(parser *p);
+bool qd__mdl_fresh_name(parser *p, const char *what);
 
 /* error.c: record the first error at a span. */
-bool perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, ...)
+bool qd__mdl_perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, ...)
 #ifdef __GNUC__
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
-bool perr_tok(parser *p, const char *hint, const char *fmt, ...)
+bool qd__mdl_perr_tok(parser *p, const char *hint, const char *fmt, ...)
 #ifdef __GNUC__
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
 /* The known name nearest to word (edit distance), or NULL if none is close. */
-const char *nearest(const char *word, size_t n, const char *const *names, size_t count);
+const char *qd__mdl_nearest(const char *word, size_t n, const char *const *names, size_t count);
 /* Every name usable in an expression (for suggestions); caller frees. */
-const char **known_names(const parser *p, size_t *count);
+const char **qd__mdl_known_names(const parser *p, size_t *count);
 
 /* model.c */
-const def *model_find_def(const qd_model *m, const char *name, size_t n);
-bool model_add_def(qd_model *m, const char *name, value v, size_t off, size_t len);
-bool model_add_where(qd_model *m, const char *what, size_t off, size_t len);
-int model_coord_index(const qd_model *m, const qd_expr *sym);
-bool model_push(void **arr, size_t *n, size_t size, const void *item);
+const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n);
+bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len);
+bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len);
+int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym);
+bool qd__mdl_push(void **arr, size_t *n, size_t size, const void *item);
 
 /* Is the name at src[off..off+n) equal to word? */
-bool name_is(const char *src, size_t off, size_t n, const char *word);
+bool qd__mdl_name_is(const char *src, size_t off, size_t n, const char *word);
 
 #endif

@@ -31,20 +31,20 @@ static long expect_constraint(parser *p) {
     const qd_model *m = p->m;
     token at = p->lx.tok;
     if (at.kind != TK_IDENT) {
-        perr_tok(p, "write: reaction CONSTRAINT on (x, y, z)",
-                 "expected a constraint's name, found %s", tk_name(at.kind));
+        qd__mdl_perr_tok(p, "write: reaction CONSTRAINT on (x, y, z)",
+                 "expected a constraint's name, found %s", qd__lex_tk_name(at.kind));
         return -1;
     }
     for (size_t k = 0; k < m->ncons; k++)
-        if (name_is(p->lx.src, at.off, at.len, m->con_names[k])) {
-            lex_next(&p->lx);
+        if (qd__mdl_name_is(p->lx.src, at.off, at.len, m->con_names[k])) {
+            qd__lex_next(&p->lx);
             return (long)k;
         }
     char hint[160] = "declare the constraint (constraint NAME: ...) before its reaction";
-    const char *near = nearest(p->lx.src + at.off, at.len, m->con_names, m->ncons);
+    const char *near = qd__mdl_nearest(p->lx.src + at.off, at.len, m->con_names, m->ncons);
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
-    perr_tok(p, hint, "'%.*s' is not a constraint", (int)(at.len < 64 ? at.len : 64),
+    qd__mdl_perr_tok(p, hint, "'%.*s' is not a constraint", (int)(at.len < 64 ? at.len : 64),
              p->lx.src + at.off);
     return -1;
 }
@@ -57,7 +57,7 @@ static bool velocity_free(parser *p, const value *r) {
             const qd_expr *v = qd_jet(ctx, p->m->coords[j], order);
             for (int i = 0; i < 3; i++)
                 if (v && qd_has(r->c[i], v))
-                    return perr(p, r->off, r->len, "give the point's position, e.g. (x, y, 0)",
+                    return qd__mdl_perr(p, r->off, r->len, "give the point's position, e.g. (x, y, 0)",
                                 "the point of a reaction depends on %s%s",
                                 qd_expr_name(p->m->coords[j]), order == 1 ? "'" : "''");
         }
@@ -69,13 +69,13 @@ static void label(parser *p, char *name, size_t cap, token *at) {
     lexer save = p->lx;
     *at = p->lx.tok;
     name[0] = '\0';
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     if (at->kind != TK_IDENT || p->lx.tok.kind != TK_COLON) {
         p->lx = save;
         return;
     }
     snprintf(name, cap, "%.*s", (int)(at->len < cap - 1 ? at->len : cap - 1), p->lx.src + at->off);
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
 }
 
 static bool add(parser *p, const char *name, size_t con, const value *r, token at) {
@@ -85,20 +85,20 @@ static bool add(parser *p, const char *name, size_t con, const value *r, token a
     if (x.name)
         strcpy((char *)x.name, name);
     snprintf(what, sizeof what, "reaction:%s", name);
-    if (!x.name || !model_push((void **)&m->reactions, &m->nreactions, sizeof x, &x)) {
+    if (!x.name || !qd__mdl_push((void **)&m->reactions, &m->nreactions, sizeof x, &x)) {
         free((char *)x.name);
-        return perr(p, at.off, at.len, NULL, "out of memory");
+        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     }
-    if (!model_add_where(m, what, at.off, at.len))
-        return perr(p, at.off, at.len, NULL, "out of memory");
+    if (!qd__mdl_add_where(m, what, at.off, at.len))
+        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     return true;
 }
 
 /* reaction [LABEL ':'] CON 'on' POSITION */
-bool stmt_reaction(parser *p) {
+bool qd__mdl_stmt_reaction(parser *p) {
     char name[64];
     token at;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     label(p, name, sizeof name, &at);
     token con_at = p->lx.tok;
     long k = expect_constraint(p);
@@ -109,17 +109,17 @@ bool stmt_reaction(parser *p) {
         at = con_at;
     }
     if (reaction_named(p->m, name))
-        return perr(p, at.off, at.len, "label it: reaction NAME: CONSTRAINT on (x, y, z)",
+        return qd__mdl_perr(p, at.off, at.len, "label it: reaction NAME: CONSTRAINT on (x, y, z)",
                     "a reaction named '%s' is already given", name);
-    if (!lex_is(&p->lx, "on"))
-        return perr_tok(p, "write: reaction CONSTRAINT on (x, y, z)", "expected 'on', found %s",
-                        tk_name(p->lx.tok.kind));
-    lex_next(&p->lx);
+    if (!qd__lex_is(&p->lx, "on"))
+        return qd__mdl_perr_tok(p, "write: reaction CONSTRAINT on (x, y, z)", "expected 'on', found %s",
+                        qd__lex_tk_name(p->lx.tok.kind));
+    qd__lex_next(&p->lx);
     value r;
-    if (!parse_vector(p, &r, "a position") || !velocity_free(p, &r) ||
+    if (!qd__mdl_parse_vector(p, &r, "a position") || !velocity_free(p, &r) ||
         !add(p, name, (size_t)k, &r, at))
         return false;
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 size_t qd_model_nreactions(const qd_model *m) { return m->nreactions; }

@@ -180,14 +180,14 @@ static bool contact_point(parser *p, const rolling *r, E const m[3], contact *ct
     if (r->sh == DISK && !qd_is_zero(mk)) {
         E w[3], w2 = qd_simplify(c, qd_sub(c, qd_int(c, 1), qd_powi(c, mk, 2)));
         if (qd_is_zero(w2))
-            return perr(p, r->shape_at.off, r->shape_at.len, "a disk rolls on its rim: tilt it",
+            return qd__mdl_perr(p, r->shape_at.off, r->shape_at.len, "a disk rolls on its rim: tilt it",
                         "the disk lies flat on the surface (its axis is along the normal)");
         axpy(c, m, qd_neg(c, mk), k, w);
         E len = root(c, w2);
         scale(c, qd_pow(c, len, qd_int(c, -1)), w, u);
         *reach = qd_mul(c, r->a, len);
     } else if (r->sh == CYLINDER && !qd_is_zero(mk)) {
-        return perr(p, r->shape_at.off, r->shape_at.len,
+        return qd__mdl_perr(p, r->shape_at.off, r->shape_at.len,
                     "a cylinder rolls on its side, body z along the surface; for a tilted one "
                     "touching on its rim edge write: as disk(a)",
                     "the cylinder's axis (body z) is not parallel to the surface");
@@ -221,7 +221,7 @@ static bool parallel_axis(parser *p, const rolling *r, E const d[3]) {
     cross(C(p), k, d, x);
     if (r->sh == SPHERE || is_zero_vec(C(p), x))
         return true;
-    return perr(p, r->shape_at.off, r->shape_at.len,
+    return qd__mdl_perr(p, r->shape_at.off, r->shape_at.len,
                 "on a cylinder the rolling disk or cylinder turns about an axis parallel to "
                 "the fixed one",
                 "the %s's axis (body z) is not parallel to the cylinder's axis",
@@ -238,7 +238,7 @@ static bool cylinder_contact(parser *p, const rolling *r, contact *ct) {
     axpy(c, rel, qd_neg(c, dot(c, rel, d)), d, rho);
     E dist = root(c, dot(c, rho, rho));
     if (qd_is_zero(dist))
-        return perr(p, r->name.off, r->name.len, NULL,
+        return qd__mdl_perr(p, r->name.off, r->name.len, NULL,
                     "the body's centre is on the cylinder's axis: it cannot touch the surface");
     scale(c, qd_pow(c, dist, qd_int(c, -1)), rho, e);
     bool inside = r->surf == IN_CYLINDER;
@@ -304,17 +304,17 @@ static bool add_constraint(parser *p, const rolling *r, const char *name, E e) {
     if (copy)
         strcpy(copy, name);
     size_t n = m->ncons;
-    if (!copy || !model_push((void **)&m->con_names, &n, sizeof copy, &copy)) {
+    if (!copy || !qd__mdl_push((void **)&m->con_names, &n, sizeof copy, &copy)) {
         free(copy);
-        return perr(p, r->name.off, r->name.len, NULL, "out of memory");
+        return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
     }
-    if (!model_push((void **)&m->cons, &m->ncons, sizeof e, &e)) {
+    if (!qd__mdl_push((void **)&m->cons, &m->ncons, sizeof e, &e)) {
         m->con_names[n - 1] = NULL;
         free(copy);
-        return perr(p, r->name.off, r->name.len, NULL, "out of memory");
+        return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
     }
-    if (!model_add_where(m, what, r->name.off, r->name.len))
-        return perr(p, r->name.off, r->name.len, NULL, "out of memory");
+    if (!qd__mdl_add_where(m, what, r->name.off, r->name.len))
+        return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
     return true;
 }
 
@@ -331,14 +331,14 @@ static bool generate(parser *p, const rolling *r) {
     e[2] = qd_simplify(c, ct.gap);
     for (int i = 0; i < 3; i++)
         if (!e[i])
-            return perr(p, r->name.off, r->name.len, NULL, "%s", qd_ctx_message(c));
+            return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "%s", qd_ctx_message(c));
     char names[3][80];
     constraint_names(p->m, r->b->name, names);
     for (int i = 0; i < 3; i++) {
         if (qd_is_zero(e[i]))
             continue;
         if (qd_is_number(e[i]))
-            return perr(p, r->name.off, r->name.len, "check the surface and the body's position",
+            return qd__mdl_perr(p, r->name.off, r->name.len, "check the surface and the body's position",
                         "the body can never touch the surface: the gap is %g",
                         qd_number_value(e[i]));
         if (!add_constraint(p, r, names[i], e[i]))
@@ -351,18 +351,18 @@ static bool generate(parser *p, const rolling *r) {
 
 static bool expect_comma(parser *p, const char *hint) {
     if (p->lx.tok.kind == TK_COMMA) {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         return true;
     }
-    return perr_tok(p, hint, "expected ',', found %s", tk_name(p->lx.tok.kind));
+    return qd__mdl_perr_tok(p, hint, "expected ',', found %s", qd__lex_tk_name(p->lx.tok.kind));
 }
 
 /* An optional label before an argument: plane(normal n, through r0). */
 static void skip_label(parser *p, const char *word) {
-    if (!lex_is(&p->lx, word))
+    if (!qd__lex_is(&p->lx, word))
         return;
     lexer ahead = p->lx;
-    lex_next(&ahead);
+    qd__lex_next(&ahead);
     tk_kind k = ahead.tok.kind;
     if (k == TK_LPAREN || k == TK_IDENT || k == TK_NUMBER || k == TK_MINUS)
         p->lx = ahead;
@@ -373,17 +373,17 @@ static bool parse_plane(parser *p, rolling *r) {
     static const char *hint = "write: plane((0, 0, 1), (0, 0, 0)), the normal and a point";
     size_t open = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LPAREN)
-        return perr_tok(p, hint, "expected '(' after 'plane'");
-    lex_next(&p->lx);
+        return qd__mdl_perr_tok(p, hint, "expected '(' after 'plane'");
+    qd__lex_next(&p->lx);
     value n, r0;
     skip_label(p, "normal");
-    if (!parse_vector(p, &n, "a plane's normal") || !expect_comma(p, hint))
+    if (!qd__mdl_parse_vector(p, &n, "a plane's normal") || !expect_comma(p, hint))
         return false;
     skip_label(p, "through");
-    if (!parse_vector(p, &r0, "a point of the plane") || !expect_close(p, open))
+    if (!qd__mdl_parse_vector(p, &r0, "a point of the plane") || !qd__mdl_expect_close(p, open))
         return false;
     if (is_zero_vec(C(p), n.c))
-        return perr(p, n.off, n.len, hint, "the plane's normal is zero");
+        return qd__mdl_perr(p, n.off, n.len, hint, "the plane's normal is zero");
     memcpy(r->n, n.c, sizeof r->n);
     memcpy(r->r0, r0.c, sizeof r->r0);
     return true;
@@ -395,15 +395,15 @@ static bool parse_cylinder(parser *p, rolling *r) {
                               "of the axis and its direction";
     size_t open = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LPAREN)
-        return perr_tok(p, hint, "expected '(' after 'cylinder'");
-    lex_next(&p->lx);
+        return qd__mdl_perr_tok(p, hint, "expected '(' after 'cylinder'");
+    qd__lex_next(&p->lx);
     value P0, d;
-    if (!parse_scalar(p, &r->radius, "a radius") || !expect_comma(p, hint) ||
-        !parse_vector(p, &P0, "a point of the axis") || !expect_comma(p, hint) ||
-        !parse_vector(p, &d, "the axis direction") || !expect_close(p, open))
+    if (!qd__mdl_parse_scalar(p, &r->radius, "a radius") || !expect_comma(p, hint) ||
+        !qd__mdl_parse_vector(p, &P0, "a point of the axis") || !expect_comma(p, hint) ||
+        !qd__mdl_parse_vector(p, &d, "the axis direction") || !qd__mdl_expect_close(p, open))
         return false;
     if (is_zero_vec(C(p), d.c))
-        return perr(p, d.off, d.len, hint, "the cylinder's axis direction is zero");
+        return qd__mdl_perr(p, d.off, d.len, hint, "the cylinder's axis direction is zero");
     memcpy(r->n, d.c, sizeof r->n);
     memcpy(r->r0, P0.c, sizeof r->r0);
     return true;
@@ -411,30 +411,30 @@ static bool parse_cylinder(parser *p, rolling *r) {
 
 /* (on | inside) (plane | cylinder) '(' ... ')' */
 static bool parse_surface(parser *p, rolling *r) {
-    bool inside = lex_is(&p->lx, "inside");
-    if (!inside && !lex_is(&p->lx, "on"))
-        return perr_tok(p, usage, "expected 'on' or 'inside', found %s", tk_name(p->lx.tok.kind));
-    lex_next(&p->lx);
-    if (lex_is(&p->lx, "plane") && !inside) {
+    bool inside = qd__lex_is(&p->lx, "inside");
+    if (!inside && !qd__lex_is(&p->lx, "on"))
+        return qd__mdl_perr_tok(p, usage, "expected 'on' or 'inside', found %s", qd__lex_tk_name(p->lx.tok.kind));
+    qd__lex_next(&p->lx);
+    if (qd__lex_is(&p->lx, "plane") && !inside) {
         r->surf = ON_PLANE;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         return parse_plane(p, r);
     }
-    if (lex_is(&p->lx, "cylinder")) {
+    if (qd__lex_is(&p->lx, "cylinder")) {
         r->surf = inside ? IN_CYLINDER : ON_CYLINDER;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         return parse_cylinder(p, r);
     }
-    if (lex_is(&p->lx, "plane"))
-        return perr_tok(p, "a body rolls on a plane, not inside it: rolls BODY on plane(n, r0)",
+    if (qd__lex_is(&p->lx, "plane"))
+        return qd__mdl_perr_tok(p, "a body rolls on a plane, not inside it: rolls BODY on plane(n, r0)",
                         "'inside' a plane");
-    return perr_tok(p, "the surfaces are plane(n, r0) and cylinder(R, P0, d)",
+    return qd__mdl_perr_tok(p, "the surfaces are plane(n, r0) and cylinder(R, P0, d)",
                     "unknown surface: expected 'plane' or 'cylinder'");
 }
 
 static int shape_index(const parser *p) {
     for (int i = 0; i < NSHAPES; i++)
-        if (lex_is(&p->lx, shape_names[i]))
+        if (qd__lex_is(&p->lx, shape_names[i]))
             return i;
     return -1;
 }
@@ -443,7 +443,7 @@ static bool unknown_shape(parser *p) {
     char word[64], hint[160];
     size_t n = p->lx.tok.len < 63 ? p->lx.tok.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + p->lx.tok.off);
-    const char *near = nearest(word, n, shape_names, NSHAPES);
+    const char *near = qd__mdl_nearest(word, n, shape_names, NSHAPES);
     if (!strcmp(word, "ring") || !strcmp(word, "hoop"))
         near = "disk";
     else if (!strcmp(word, "shell") || !strcmp(word, "ball"))
@@ -452,7 +452,7 @@ static bool unknown_shape(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'? (it touches as %s(a) does)", near, near);
     else
         snprintf(hint, sizeof hint, "the shapes are sphere(a), disk(a) and cylinder(a)");
-    return perr_tok(p, hint, "unknown rolling shape '%s'", word);
+    return qd__mdl_perr_tok(p, hint, "unknown rolling shape '%s'", word);
 }
 
 /* as (sphere | disk | cylinder) '(' a ')' */
@@ -460,16 +460,16 @@ static bool parse_shape(parser *p, rolling *r) {
     int k = p->lx.tok.kind == TK_IDENT ? shape_index(p) : -1;
     if (k < 0)
         return p->lx.tok.kind == TK_IDENT ? unknown_shape(p)
-                                          : perr_tok(p, usage, "expected a shape, found %s",
-                                                     tk_name(p->lx.tok.kind));
+                                          : qd__mdl_perr_tok(p, usage, "expected a shape, found %s",
+                                                     qd__lex_tk_name(p->lx.tok.kind));
     size_t off = p->lx.tok.off;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     size_t open = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LPAREN)
-        return perr_tok(p, "give its radius: sphere(a)", "expected '(' after '%s'",
+        return qd__mdl_perr_tok(p, "give its radius: sphere(a)", "expected '(' after '%s'",
                         shape_names[k]);
-    lex_next(&p->lx);
-    if (!parse_scalar(p, &r->a, "a radius") || !expect_close(p, open))
+    qd__lex_next(&p->lx);
+    if (!qd__mdl_parse_scalar(p, &r->a, "a radius") || !qd__mdl_expect_close(p, open))
         return false;
     r->sh = (shape)k;
     r->has_shape = true;
@@ -481,20 +481,20 @@ static bool parse_shape(parser *p, rolling *r) {
 /* (moving V | turning W | as SHAPE)*, each once */
 static bool parse_clauses(parser *p, rolling *r) {
     while (p->lx.tok.kind == TK_IDENT) {
-        bool moving = lex_is(&p->lx, "moving"), turning = lex_is(&p->lx, "turning");
-        bool as = lex_is(&p->lx, "as");
+        bool moving = qd__lex_is(&p->lx, "moving"), turning = qd__lex_is(&p->lx, "turning");
+        bool as = qd__lex_is(&p->lx, "as");
         if (!moving && !turning && !as)
-            return perr_tok(p, "after the surface: as SHAPE, moving (vx, vy, vz) or turning W",
+            return qd__mdl_perr_tok(p, "after the surface: as SHAPE, moving (vx, vy, vz) or turning W",
                             "expected 'as', 'moving' or 'turning'");
         if ((moving || turning) && (r->moving || r->turning))
-            return perr_tok(p, "give the surface's motion once: moving V or turning W",
+            return qd__mdl_perr_tok(p, "give the surface's motion once: moving V or turning W",
                             "the surface's motion is given twice");
         if (as && r->has_shape)
-            return perr_tok(p, usage, "the shape is given twice");
-        lex_next(&p->lx);
+            return qd__mdl_perr_tok(p, usage, "the shape is given twice");
+        qd__lex_next(&p->lx);
         value v;
-        bool ok = moving  ? parse_vector(p, &v, "the surface's velocity")
-                : turning ? parse_scalar(p, &r->rate, "a rate of turn")
+        bool ok = moving  ? qd__mdl_parse_vector(p, &v, "the surface's velocity")
+                : turning ? qd__mdl_parse_scalar(p, &r->rate, "a rate of turn")
                           : parse_shape(p, r);
         if (!ok)
             return false;
@@ -510,9 +510,9 @@ static bool parse_clauses(parser *p, rolling *r) {
 static bool parse_body(parser *p, rolling *r) {
     qd_model *m = p->m;
     if (p->lx.tok.kind != TK_IDENT)
-        return perr_tok(p, usage, "expected a body's name, found %s", tk_name(p->lx.tok.kind));
+        return qd__mdl_perr_tok(p, usage, "expected a body's name, found %s", qd__lex_tk_name(p->lx.tok.kind));
     r->name = p->lx.tok;
-    r->b = model_find_body(m, p->lx.src + r->name.off, r->name.len);
+    r->b = qd__mdl_find_body(m, p->lx.src + r->name.off, r->name.len);
     char word[64], hint[160];
     size_t n = r->name.len < 63 ? r->name.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + r->name.off);
@@ -520,30 +520,30 @@ static bool parse_body(parser *p, rolling *r) {
         const char **names = malloc((m->nbodies + 1) * sizeof *names);
         for (size_t i = 0; names && i < m->nbodies; i++)
             names[i] = m->bodies[i].name;
-        const char *near = names ? nearest(word, n, names, m->nbodies) : NULL;
+        const char *near = names ? qd__mdl_nearest(word, n, names, m->nbodies) : NULL;
         snprintf(hint, sizeof hint, near ? "did you mean '%s'?" : "%s",
                  near ? near : "declare it first: body NAME mass M inertia I at r orientation R");
         free(names);
-        return perr_tok(p, hint, "'%s' is not a body", word);
+        return qd__mdl_perr_tok(p, hint, "'%s' is not a body", word);
     }
     if (is_zero_vec(C(p), r->b->ws))
-        return perr_tok(p, "give it an orientation that turns: orientation euler(phi, theta, psi)",
+        return qd__mdl_perr_tok(p, "give it an orientation that turns: orientation euler(phi, theta, psi)",
                         "body '%s' has no orientation (it cannot turn), so it cannot roll", word);
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     return true;
 }
 
-bool stmt_rolls(parser *p) {
-    lex_next(&p->lx);
+bool qd__mdl_stmt_rolls(parser *p) {
+    qd__lex_next(&p->lx);
     rolling r;
     memset(&r, 0, sizeof r);
     if (!parse_body(p, &r) || !parse_surface(p, &r) || !parse_clauses(p, &r))
         return false;
     if (!r.has_shape)
-        return perr(p, r.name.off, r.name.len,
+        return qd__mdl_perr(p, r.name.off, r.name.len,
                     "add the body's shape: as sphere(a), as disk(a) or as cylinder(a)",
                     "rolls needs the shape that touches the surface");
-    if (!end_of_statement(p))
+    if (!qd__mdl_end_of_statement(p))
         return false;
     return generate(p, &r);
 }

@@ -24,12 +24,12 @@
 
 #include <string.h>
 
-void mat_identity(qd_ctx *ctx, const qd_expr *out[9]) {
+void qd__mdl_mat_identity(qd_ctx *ctx, const qd_expr *out[9]) {
     for (int i = 0; i < 9; i++)
         out[i] = qd_int(ctx, i % 4 == 0);
 }
 
-void mat_mul(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const b[9],
+void qd__mdl_mat_mul(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const b[9],
              const qd_expr *out[9]) {
     const qd_expr *r[9];
     for (int i = 0; i < 3; i++)
@@ -40,7 +40,7 @@ void mat_mul(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const b[9],
     memcpy(out, r, sizeof r); /* out may be a or b */
 }
 
-void mat_vec(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const v[3],
+void qd__mdl_mat_vec(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const v[3],
              const qd_expr *out[3]) {
     const qd_expr *r[3];
     for (int i = 0; i < 3; i++)
@@ -49,7 +49,7 @@ void mat_vec(qd_ctx *ctx, const qd_expr *const a[9], const qd_expr *const v[3],
     memcpy(out, r, sizeof r);
 }
 
-void mat_transpose(const qd_expr *const a[9], const qd_expr *out[9]) {
+void qd__mdl_mat_transpose(const qd_expr *const a[9], const qd_expr *out[9]) {
     const qd_expr *r[9];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -94,37 +94,37 @@ static const rot_fn *find_rot(const char *name) {
     return NULL;
 }
 
-bool is_rot_call(const char *name) { return find_rot(name) || !strcmp(name, "transpose"); }
+bool qd__mdl_is_rot_call(const char *name) { return find_rot(name) || !strcmp(name, "transpose"); }
 
 static bool transpose_call(parser *p, const value *a, size_t n, value *out, size_t off,
                            size_t len) {
-    if (!check_arity(p, "transpose", n, 1, off, len) ||
-        !need_kind(p, &a[0], VK_MATRIX, "as the argument of transpose"))
+    if (!qd__mdl_check_arity(p, "transpose", n, 1, off, len) ||
+        !qd__mdl_need_kind(p, &a[0], VK_MATRIX, "as the argument of transpose"))
         return false;
     value r = {VK_MATRIX, {NULL}, off, len};
-    mat_transpose(a[0].c, r.c);
+    qd__mdl_mat_transpose(a[0].c, r.c);
     *out = r;
     return true;
 }
 
-bool rot_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
+bool qd__mdl_rot_call(parser *p, const char *name, const value *a, size_t n, value *out, size_t off,
               size_t len) {
     if (!strcmp(name, "transpose"))
         return transpose_call(p, a, n, out, off, len);
     const rot_fn *f = find_rot(name);
     size_t want = f->axes[1] < 0 ? 1 : 3;
-    if (!check_arity(p, name, n, want, off, len))
+    if (!qd__mdl_check_arity(p, name, n, want, off, len))
         return false;
     for (size_t i = 0; i < n; i++)
-        if (!need_kind(p, &a[i], VK_SCALAR, "as an angle"))
+        if (!qd__mdl_need_kind(p, &a[i], VK_SCALAR, "as an angle"))
             return false;
     value r = {VK_MATRIX, {NULL}, off, len};
     rot_axis(p->ctx, f->axes[0], a[0].c[0], r.c);
     for (size_t i = 1; i < want; i++) {
         const qd_expr *m[9];
         rot_axis(p->ctx, f->axes[i], a[i].c[0], m);
-        mat_mul(p->ctx, r.c, m, r.c);
+        qd__mdl_mat_mul(p->ctx, r.c, m, r.c);
     }
     *out = r;
-    return kernel_ok(p, out);
+    return qd__mdl_kernel_ok(p, out);
 }

@@ -41,19 +41,19 @@ static void tok_text(const parser *p, char *buf, size_t cap) {
     buf[n] = '\0';
 }
 
-bool end_of_statement(parser *p) {
+bool qd__mdl_end_of_statement(parser *p) {
     tk_kind k = p->lx.tok.kind;
     if (k == TK_NEWLINE || k == TK_EOF)
         return true;
     if (k == TK_RPAREN || k == TK_RBRACK)
-        return perr_tok(p, "remove it, or add the '(' it should close", "unmatched %s",
-                        tk_name(k));
-    return perr_tok(p, "one statement per line", "unexpected %s after the statement",
-                    tk_name(k));
+        return qd__mdl_perr_tok(p, "remove it, or add the '(' it should close", "unmatched %s",
+                        qd__lex_tk_name(k));
+    return qd__mdl_perr_tok(p, "one statement per line", "unexpected %s after the statement",
+                    qd__lex_tk_name(k));
 }
 
 /* A name not yet used for anything else. */
-bool fresh_name(parser *p, const char *what) {
+bool qd__mdl_fresh_name(parser *p, const char *what) {
     char name[128];
     tok_text(p, name, sizeof name);
     const qd_model *m = p->m;
@@ -67,11 +67,11 @@ bool fresh_name(parser *p, const char *what) {
     for (size_t i = 0; i < m->nfuncs && !kind; i++)
         if (!strcmp(name, m->funcs[i]))
             kind = "function";
-    if (!kind && model_find_def(m, name, strlen(name)))
+    if (!kind && qd__mdl_find_def(m, name, strlen(name)))
         kind = "definition";
-    if (!kind && model_find_body(m, name, strlen(name)))
+    if (!kind && qd__mdl_find_body(m, name, strlen(name)))
         kind = "body";
-    if (!kind && model_find_momentum(m, name, strlen(name)))
+    if (!kind && qd__mdl_find_momentum(m, name, strlen(name)))
         kind = "momentum";
     qd_func f;
     if (!kind && (qd_func_from_name(name, &f) || !strcmp(name, "sqrt") || !strcmp(name, "t") ||
@@ -84,65 +84,65 @@ bool fresh_name(parser *p, const char *what) {
         return true;
     char hint[128];
     snprintf(hint, sizeof hint, "choose another name for the %s", what);
-    return perr_tok(p, hint, "'%s' is already a %s", name, kind);
+    return qd__mdl_perr_tok(p, hint, "'%s' is already a %s", name, kind);
 }
 
 /* coordinates NAME (',' NAME)* */
 static bool stmt_coordinates(parser *p) {
     if (p->m->mom)
-        return perr_tok(p, "declare every coordinate before the momenta",
+        return qd__mdl_perr_tok(p, "declare every coordinate before the momenta",
                         "coordinates after the momenta");
     do {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         if (p->lx.tok.kind != TK_IDENT)
-            return perr_tok(p, NULL, "expected a coordinate name, found %s",
-                            tk_name(p->lx.tok.kind));
+            return qd__mdl_perr_tok(p, NULL, "expected a coordinate name, found %s",
+                            qd__lex_tk_name(p->lx.tok.kind));
         char name[128];
         tok_text(p, name, sizeof name);
         for (size_t i = 0; i < p->m->ncoords; i++)
             if (!strcmp(name, qd_expr_name(p->m->coords[i])))
-                return perr_tok(p, "each coordinate is declared once",
+                return qd__mdl_perr_tok(p, "each coordinate is declared once",
                                 "coordinate '%s' is declared twice", name);
-        if (!fresh_name(p, "coordinate"))
+        if (!qd__mdl_fresh_name(p, "coordinate"))
             return false;
         const qd_expr *q = qd_coord(C(p), name);
         if (!q)
-            return perr_tok(p, NULL, "%s", qd_ctx_message(C(p)));
+            return qd__mdl_perr_tok(p, NULL, "%s", qd_ctx_message(C(p)));
         /* the generalized force and initial values grow with the coordinates */
         qd_model *m = p->m;
         const qd_expr *zero = qd_int(C(p), 0), *none = NULL;
         size_t n = m->ncoords, nq = m->ncoords, ni = 2 * m->ncoords;
-        if (!model_push((void **)&m->coords, &n, sizeof q, &q) ||
-            !model_push((void **)&m->Q, &nq, sizeof zero, &zero) ||
-            !model_push((void **)&m->init, &ni, sizeof none, &none) ||
-            !model_push((void **)&m->init, &ni, sizeof none, &none) ||
-            !model_add_where(m, name, p->lx.tok.off, p->lx.tok.len))
-            return perr_tok(p, NULL, "out of memory");
+        if (!qd__mdl_push((void **)&m->coords, &n, sizeof q, &q) ||
+            !qd__mdl_push((void **)&m->Q, &nq, sizeof zero, &zero) ||
+            !qd__mdl_push((void **)&m->init, &ni, sizeof none, &none) ||
+            !qd__mdl_push((void **)&m->init, &ni, sizeof none, &none) ||
+            !qd__mdl_add_where(m, name, p->lx.tok.off, p->lx.tok.len))
+            return qd__mdl_perr_tok(p, NULL, "out of memory");
         m->ncoords = n;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 /* A constant: an expression of numbers, constants and parameters, with the
  * parameters' values put in. */
 static bool parse_constant(parser *p, const qd_expr **out, const char *what) {
     size_t off = p->lx.tok.off;
-    if (!parse_scalar(p, out, what))
+    if (!qd__mdl_parse_scalar(p, out, what))
         return false;
     const qd_model *m = p->m;
     *out = qd_subs(C(p), *out, m->nparams, m->params, m->pvals);
     const qd_expr *sym;
     if (*out && qd_free_symbols(C(p), *out, &sym, 1) > 0)
-        return perr(p, off, p->lx.tok.off - off, "a value is a number, e.g. 9.81 or pi/4",
+        return qd__mdl_perr(p, off, p->lx.tok.off - off, "a value is a number, e.g. 9.81 or pi/4",
                     "%s must be a number, but it depends on '%s'", what, qd_expr_name(sym));
     if (!*out)
-        return perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
+        return qd__mdl_perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
     /* every command computes with it: 1e400 or sqrt(-1) would be inf or NaN there */
     double x;
     if (qd_eval(C(p), *out, 0, NULL, NULL, &x) != QD_OK || !isfinite(x)) {
         qd_ctx_clear_error(C(p));
-        return perr(p, off, p->lx.tok.off > off ? p->lx.tok.off - off : 1,
+        return qd__mdl_perr(p, off, p->lx.tok.off > off ? p->lx.tok.off - off : 1,
                     "give a real number within the range of a double",
                     "%s must be a finite real number", what);
     }
@@ -152,79 +152,79 @@ static bool parse_constant(parser *p, const qd_expr **out, const char *what) {
 /* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */
 static bool stmt_parameters(parser *p) {
     do {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         if (p->lx.tok.kind != TK_IDENT)
-            return perr_tok(p, NULL, "expected a parameter name, found %s",
-                            tk_name(p->lx.tok.kind));
+            return qd__mdl_perr_tok(p, NULL, "expected a parameter name, found %s",
+                            qd__lex_tk_name(p->lx.tok.kind));
         char name[128], hint[192];
         tok_text(p, name, sizeof name);
         token at = p->lx.tok;
-        if (!fresh_name(p, "parameter"))
+        if (!qd__mdl_fresh_name(p, "parameter"))
             return false;
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         if (p->lx.tok.kind != TK_EQ) {
             snprintf(hint, sizeof hint, "give a default value: %.40s = 1 (--set %.40s=... overrides it)",
                      name, name);
-            return perr(p, at.off, at.len, hint, "parameter '%s' has no value", name);
+            return qd__mdl_perr(p, at.off, at.len, hint, "parameter '%s' has no value", name);
         }
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         const qd_expr *v, *sym;
         if (!parse_constant(p, &v, "a parameter's value"))
             return false;
         sym = qd_param(C(p), name);
         if (!sym)
-            return perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
+            return qd__mdl_perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
         size_t n = p->m->nparams;
-        if (!model_push((void **)&p->m->params, &n, sizeof sym, &sym) ||
-            !model_push((void **)&p->m->pvals, &p->m->nparams, sizeof v, &v))
-            return perr_tok(p, NULL, "out of memory");
+        if (!qd__mdl_push((void **)&p->m->params, &n, sizeof sym, &sym) ||
+            !qd__mdl_push((void **)&p->m->pvals, &p->m->nparams, sizeof v, &v))
+            return qd__mdl_perr_tok(p, NULL, "out of memory");
     } while (p->lx.tok.kind == TK_COMMA);
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 /* functions NAME (',' NAME)* */
 static bool stmt_functions(parser *p) {
     do {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         if (p->lx.tok.kind != TK_IDENT)
-            return perr_tok(p, NULL, "expected a function name, found %s", tk_name(p->lx.tok.kind));
+            return qd__mdl_perr_tok(p, NULL, "expected a function name, found %s", qd__lex_tk_name(p->lx.tok.kind));
         char name[128];
         tok_text(p, name, sizeof name);
-        if (!fresh_name(p, "function"))
+        if (!qd__mdl_fresh_name(p, "function"))
             return false;
         qd_func f;
         if (qd_func_from_name(name, &f))
-            return perr_tok(p, NULL, "'%s' is a built-in function", name);
+            return qd__mdl_perr_tok(p, NULL, "'%s' is a built-in function", name);
         char *copy = malloc(strlen(name) + 1);
-        if (!copy || !model_push((void **)&p->m->funcs, &p->m->nfuncs, sizeof copy, &copy)) {
+        if (!copy || !qd__mdl_push((void **)&p->m->funcs, &p->m->nfuncs, sizeof copy, &copy)) {
             free(copy);
-            return perr_tok(p, NULL, "out of memory");
+            return qd__mdl_perr_tok(p, NULL, "out of memory");
         }
         strcpy(copy, name);
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 static bool expect_at(parser *p, const char *stmt) {
-    if (lex_is(&p->lx, "at")) {
-        lex_next(&p->lx);
+    if (qd__lex_is(&p->lx, "at")) {
+        qd__lex_next(&p->lx);
         return true;
     }
     char hint[96];
     snprintf(hint, sizeof hint, "write: %s", stmt);
-    return perr_tok(p, hint, "expected 'at', found %s", tk_name(p->lx.tok.kind));
+    return qd__mdl_perr_tok(p, hint, "expected 'at', found %s", qd__lex_tk_name(p->lx.tok.kind));
 }
 
 /* particle MASS at POSITION */
 static bool stmt_particle(parser *p) {
-    if (!no_hamiltonian_yet(p, "a particle", p->lx.tok.off, p->lx.tok.len))
+    if (!qd__mdl_no_hamiltonian_yet(p, "a particle", p->lx.tok.off, p->lx.tok.len))
         return false;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     const qd_expr *mass;
     value r;
-    if (!parse_scalar(p, &mass, "a mass") || !expect_at(p, "particle m at (x, y, z)") ||
-        !parse_vector(p, &r, "a position"))
+    if (!qd__mdl_parse_scalar(p, &mass, "a mass") || !expect_at(p, "particle m at (x, y, z)") ||
+        !qd__mdl_parse_vector(p, &r, "a position"))
         return false;
     qd_ctx *ctx = C(p);
     const qd_expr *v2 = ctx ? qd_int(ctx, 0) : NULL;
@@ -233,16 +233,16 @@ static bool stmt_particle(parser *p) {
     const qd_expr *t = qd_mul_n(ctx, 3, (const qd_expr *[]){qd_rat(ctx, 1, 2), mass, v2});
     p->m->T = p->m->T ? qd_add(ctx, p->m->T, t) : t;
     if (!p->m->T)
-        return perr(p, r.off, r.len, NULL, "%s", qd_ctx_message(ctx));
-    return end_of_statement(p);
+        return qd__mdl_perr(p, r.off, r.len, NULL, "%s", qd_ctx_message(ctx));
+    return qd__mdl_end_of_statement(p);
 }
 
 /* force F at POSITION: Q_j += F . dr/dq_j (virtual work at frozen time) */
 static bool stmt_force(parser *p) {
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     value F, r;
-    if (!parse_vector(p, &F, "a force") || !expect_at(p, "force (Fx, Fy, Fz) at (x, y, z)") ||
-        !parse_vector(p, &r, "a position"))
+    if (!qd__mdl_parse_vector(p, &F, "a force") || !expect_at(p, "force (Fx, Fy, Fz) at (x, y, z)") ||
+        !qd__mdl_parse_vector(p, &r, "a position"))
         return false;
     qd_ctx *ctx = C(p);
     qd_model *m = p->m;
@@ -252,14 +252,14 @@ static bool stmt_force(parser *p) {
             w = qd_add(ctx, w, qd_mul(ctx, F.c[i], qd_diff(ctx, r.c[i], m->coords[j])));
         m->Q[j] = qd_add(ctx, m->Q[j], w);
         if (!m->Q[j])
-            return perr(p, F.off, F.len, NULL, "%s", qd_ctx_message(ctx));
+            return qd__mdl_perr(p, F.off, F.len, NULL, "%s", qd_ctx_message(ctx));
     }
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 static int coord_named(parser *p) {
     for (size_t i = 0; i < p->m->ncoords; i++)
-        if (name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, qd_expr_name(p->m->coords[i])))
+        if (qd__mdl_name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, qd_expr_name(p->m->coords[i])))
             return (int)i;
     return -1;
 }
@@ -270,59 +270,59 @@ static bool no_such_coordinate(parser *p) {
     const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
-    const char *near = names ? nearest(name, strlen(name), names, p->m->ncoords) : NULL;
+    const char *near = names ? qd__mdl_nearest(name, strlen(name), names, p->m->ncoords) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     free(names);
-    return perr_tok(p, hint, "'%s' is not a coordinate", name);
+    return qd__mdl_perr_tok(p, hint, "'%s' is not a coordinate", name);
 }
 
 /* Q '[' COORD ']' '=' EXPR */
 static bool stmt_genforce(parser *p) {
-    lex_next(&p->lx); /* Q */
-    lex_next(&p->lx); /* [ */
+    qd__lex_next(&p->lx); /* Q */
+    qd__lex_next(&p->lx); /* [ */
     int j = coord_named(p);
     if (p->lx.tok.kind != TK_IDENT || j < 0)
         return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
-                                          : perr_tok(p, NULL, "expected a coordinate name");
-    lex_next(&p->lx);
+                                          : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
+    qd__lex_next(&p->lx);
     if (p->lx.tok.kind != TK_RBRACK)
-        return perr_tok(p, "write Q[coordinate] = expression", "expected ']'");
-    lex_next(&p->lx);
+        return qd__mdl_perr_tok(p, "write Q[coordinate] = expression", "expected ']'");
+    qd__lex_next(&p->lx);
     if (p->lx.tok.kind != TK_EQ)
-        return perr_tok(p, "write Q[coordinate] = expression", "expected '='");
-    lex_next(&p->lx);
+        return qd__mdl_perr_tok(p, "write Q[coordinate] = expression", "expected '='");
+    qd__lex_next(&p->lx);
     const qd_expr *q;
-    if (!parse_scalar(p, &q, "a generalized force"))
+    if (!qd__mdl_parse_scalar(p, &q, "a generalized force"))
         return false;
     p->m->Q[j] = qd_add(C(p), p->m->Q[j], q);
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 /* initial NAME ['] = VALUE (',' ...)* */
 static bool stmt_initial(parser *p) {
     do {
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
         int j = coord_named(p);
         if (p->lx.tok.kind != TK_IDENT || j < 0)
             return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
-                                              : perr_tok(p, NULL, "expected a coordinate name");
-        lex_next(&p->lx);
+                                              : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
+        qd__lex_next(&p->lx);
         unsigned order = 0;
-        for (; p->lx.tok.kind == TK_PRIME; lex_next(&p->lx))
+        for (; p->lx.tok.kind == TK_PRIME; qd__lex_next(&p->lx))
             order++;
         if (order > 1)
-            return perr_tok(p, "give positions and velocities: q = ..., q' = ...",
+            return qd__mdl_perr_tok(p, "give positions and velocities: q = ..., q' = ...",
                             "an initial value is for a coordinate or its velocity");
         if (p->lx.tok.kind != TK_EQ)
-            return perr_tok(p, "write: initial q = 0.5, q' = 0", "expected '='");
-        lex_next(&p->lx);
+            return qd__mdl_perr_tok(p, "write: initial q = 0.5, q' = 0", "expected '='");
+        qd__lex_next(&p->lx);
         const qd_expr *v;
         if (!parse_constant(p, &v, "an initial value"))
             return false;
         p->m->init[2 * (size_t)j + order] = v;
     } while (p->lx.tok.kind == TK_COMMA);
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 static bool constraint_named(const qd_model *m, const char *name) {
@@ -335,24 +335,24 @@ static bool constraint_named(const qd_model *m, const char *name) {
 static bool add_constraint_where(qd_model *m, const char *name, token at) {
     char what[80];
     snprintf(what, sizeof what, "constraint:%s", name);
-    return model_add_where(m, what, at.off, at.len);
+    return qd__mdl_add_where(m, what, at.off, at.len);
 }
 
 /* constraint [NAME ':'] LHS ['=' RHS] */
 static bool stmt_constraint(parser *p) {
     qd_model *m = p->m;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     char name[64];
     token at = p->lx.tok;
     lexer save = p->lx;
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx);
     bool named = at.kind == TK_IDENT && p->lx.tok.kind == TK_COLON;
     if (named) {
         snprintf(name, sizeof name, "%.*s", (int)(at.len < 63 ? at.len : 63), p->lx.src + at.off);
         if (constraint_named(m, name))
-            return perr(p, at.off, at.len, "give each constraint its own name",
+            return qd__mdl_perr(p, at.off, at.len, "give each constraint its own name",
                         "constraint '%s' is named twice", name);
-        lex_next(&p->lx);
+        qd__lex_next(&p->lx);
     } else {
         p->lx = save;
         size_t k = m->ncons + 1;
@@ -362,30 +362,30 @@ static bool stmt_constraint(parser *p) {
     }
     size_t off = p->lx.tok.off;
     const qd_expr *lhs, *rhs = NULL;
-    if (!parse_scalar(p, &lhs, "a constraint"))
+    if (!qd__mdl_parse_scalar(p, &lhs, "a constraint"))
         return false;
     if (p->lx.tok.kind == TK_EQ) {
-        lex_next(&p->lx);
-        if (!parse_scalar(p, &rhs, "a constraint"))
+        qd__lex_next(&p->lx);
+        if (!qd__mdl_parse_scalar(p, &rhs, "a constraint"))
             return false;
     }
     const qd_expr *c = rhs ? qd_sub(C(p), lhs, rhs) : lhs;
     if (!c)
-        return perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
+        return qd__mdl_perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
     if (qd_is_number(c))
-        return perr(p, off, p->lx.tok.off - off, "a constraint relates coordinates or velocities",
+        return qd__mdl_perr(p, off, p->lx.tok.off - off, "a constraint relates coordinates or velocities",
                     qd_is_zero(c) ? "this constraint always holds" : "this constraint can never hold");
     char *copy = malloc(strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
     size_t n = m->ncons;
-    if (!copy || !model_push((void **)&m->con_names, &n, sizeof copy, &copy) ||
-        !model_push((void **)&m->cons, &m->ncons, sizeof c, &c) ||
+    if (!copy || !qd__mdl_push((void **)&m->con_names, &n, sizeof copy, &copy) ||
+        !qd__mdl_push((void **)&m->cons, &m->ncons, sizeof c, &c) ||
         !add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1})) {
         free(copy);
-        return perr(p, off, 1, NULL, "out of memory");
+        return qd__mdl_perr(p, off, 1, NULL, "out of memory");
     }
-    return end_of_statement(p);
+    return qd__mdl_end_of_statement(p);
 }
 
 static const qd_expr **reserved_slot(qd_model *m, const char *name) {
@@ -404,99 +404,99 @@ static bool stmt_definition(parser *p) {
     token at = p->lx.tok;
     const qd_expr **slot = reserved_slot(p->m, name);
     bool explicit_T = slot == &p->m->T;
-    if (slot && slot != &p->m->D && !no_hamiltonian_yet(p, name, at.off, at.len))
+    if (slot && slot != &p->m->D && !qd__mdl_no_hamiltonian_yet(p, name, at.off, at.len))
         return false;
-    if (!slot && !fresh_name(p, "definition"))
+    if (!slot && !qd__mdl_fresh_name(p, "definition"))
         return false;
     if (slot && (explicit_T ? qd_model_where(p->m, "T", NULL) : *slot != NULL)) {
         qd_diag first;
         qd_model_where(p->m, name, &first);
-        return perr(p, at.off, at.len, "give it once; add the parts in one expression",
+        return qd__mdl_perr(p, at.off, at.len, "give it once; add the parts in one expression",
                     "%s is given twice (first on line %zu)", name, first.line);
     }
-    lex_next(&p->lx); /* '=' */
-    lex_next(&p->lx);
+    qd__lex_next(&p->lx); /* '=' */
+    qd__lex_next(&p->lx);
     p->defining = name;
     value v;
-    bool ok = parse_expr(p, &v);
+    bool ok = qd__mdl_parse_expr(p, &v);
     p->defining = NULL;
     if (!ok)
         return false;
     if (slot) {
         if (v.kind != VK_SCALAR)
-            return perr(p, v.off, v.len, v.kind == VK_VECTOR
+            return qd__mdl_perr(p, v.off, v.len, v.kind == VK_VECTOR
                             ? "an energy is a scalar: use dot(v, v) for |v|^2"
                             : "an energy is a scalar",
-                        "a %s where a scalar is needed: %s is a scalar", vkind_name(v.kind), name);
+                        "a %s where a scalar is needed: %s is a scalar", qd__mdl_vkind_name(v.kind), name);
         /* particle lines and T = ... add up */
         *slot = explicit_T && *slot ? qd_add(C(p), *slot, v.c[0]) : v.c[0];
-    } else if (!model_add_def(p->m, name, v, at.off, at.len)) {
-        return perr(p, at.off, at.len, NULL, "out of memory");
+    } else if (!qd__mdl_add_def(p->m, name, v, at.off, at.len)) {
+        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     }
-    if (!model_add_where(p->m, name, at.off, at.len))
-        return perr(p, at.off, at.len, NULL, "out of memory");
-    return end_of_statement(p);
+    if (!qd__mdl_add_where(p->m, name, at.off, at.len))
+        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
+    return qd__mdl_end_of_statement(p);
 }
 
 static bool unknown_statement(parser *p) {
     char word[128], hint[192] = "";
     tok_text(p, word, sizeof word);
-    const char *near = nearest(word, strlen(word), keywords, NKEYWORDS);
+    const char *near = qd__mdl_nearest(word, strlen(word), keywords, NKEYWORDS);
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else
         snprintf(hint, sizeof hint, "a statement starts with a keyword (coordinates, parameters, "
                  "particle, body, force, torque, initial, functions, constraint, momenta, "
                  "symmetry, integral) or is a definition NAME = ...");
-    return perr_tok(p, hint, "unknown statement '%s'", word);
+    return qd__mdl_perr_tok(p, hint, "unknown statement '%s'", word);
 }
 
 static bool statement(parser *p) {
     lexer *lx = &p->lx;
     if (lx->tok.kind != TK_IDENT) {
         if (lx->tok.kind == TK_RPAREN || lx->tok.kind == TK_RBRACK)
-            return end_of_statement(p);
-        return perr_tok(p, NULL, "expected a statement, found %s", tk_name(lx->tok.kind));
+            return qd__mdl_end_of_statement(p);
+        return qd__mdl_perr_tok(p, NULL, "expected a statement, found %s", qd__lex_tk_name(lx->tok.kind));
     }
-    if (lex_is(lx, "coordinates"))
+    if (qd__lex_is(lx, "coordinates"))
         return stmt_coordinates(p);
-    if (lex_is(lx, "parameters"))
+    if (qd__lex_is(lx, "parameters"))
         return stmt_parameters(p);
-    if (lex_is(lx, "functions"))
+    if (qd__lex_is(lx, "functions"))
         return stmt_functions(p);
-    if (lex_is(lx, "particle"))
+    if (qd__lex_is(lx, "particle"))
         return stmt_particle(p);
-    if (lex_is(lx, "force"))
+    if (qd__lex_is(lx, "force"))
         return stmt_force(p);
-    if (lex_is(lx, "initial"))
+    if (qd__lex_is(lx, "initial"))
         return stmt_initial(p);
-    if (lex_is(lx, "constraint"))
+    if (qd__lex_is(lx, "constraint"))
         return stmt_constraint(p);
     /* NAME '=' or Q '[': look one token ahead without consuming */
     lexer save = *lx;
-    lex_next(lx);
+    qd__lex_next(lx);
     tk_kind next = lx->tok.kind;
     *lx = save;
     /* the newer keywords stay usable as names defined before they existed */
-    if (lex_is(lx, "body") && next != TK_EQ)
-        return stmt_body(p);
-    if (lex_is(lx, "torque") && next != TK_EQ)
-        return stmt_torque(p);
-    if (lex_is(lx, "rolls") && next != TK_EQ)
-        return stmt_rolls(p);
-    if (lex_is(lx, "reaction") && next != TK_EQ)
-        return stmt_reaction(p);
-    if (lex_is(lx, "momenta") && next != TK_EQ)
-        return stmt_momenta(p);
-    if (lex_is(lx, "symmetry") && next != TK_EQ)
-        return stmt_symmetry(p);
-    if (lex_is(lx, "integral") && next != TK_EQ)
-        return stmt_integral(p);
-    if (lex_is(lx, "H") && next == TK_EQ)
-        return stmt_hamiltonian(p);
+    if (qd__lex_is(lx, "body") && next != TK_EQ)
+        return qd__mdl_stmt_body(p);
+    if (qd__lex_is(lx, "torque") && next != TK_EQ)
+        return qd__mdl_stmt_torque(p);
+    if (qd__lex_is(lx, "rolls") && next != TK_EQ)
+        return qd__mdl_stmt_rolls(p);
+    if (qd__lex_is(lx, "reaction") && next != TK_EQ)
+        return qd__mdl_stmt_reaction(p);
+    if (qd__lex_is(lx, "momenta") && next != TK_EQ)
+        return qd__mdl_stmt_momenta(p);
+    if (qd__lex_is(lx, "symmetry") && next != TK_EQ)
+        return qd__mdl_stmt_symmetry(p);
+    if (qd__lex_is(lx, "integral") && next != TK_EQ)
+        return qd__mdl_stmt_integral(p);
+    if (qd__lex_is(lx, "H") && next == TK_EQ)
+        return qd__mdl_stmt_hamiltonian(p);
     if (next == TK_EQ)
         return stmt_definition(p);
-    if (next == TK_LBRACK && lex_is(lx, "Q"))
+    if (next == TK_LBRACK && qd__lex_is(lx, "Q"))
         return stmt_genforce(p);
     return unknown_statement(p);
 }
@@ -506,13 +506,13 @@ static bool finish(parser *p) {
     qd_model *m = p->m;
     qd_ctx *ctx = C(p);
     if (m->ncoords == 0)
-        return perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
-    if (!check_integrals(p))
+        return qd__mdl_perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
+    if (!qd__mdl_check_integrals(p))
         return false;
     if (m->H)
         return true; /* the Lagrangian, if any, is the mechanics layer's inverse Legendre */
     if (!m->L && !m->T)
-        return perr(p, p->lx.tok.off, 1,
+        return qd__mdl_perr(p, p->lx.tok.off, 1,
                     "give the kinetic energy T = ... (and V = ...), or particles, or L = ..., "
                     "or momenta and H = ...",
                     "neither T nor L is given");
@@ -521,7 +521,7 @@ static bool finish(parser *p) {
         m->L = qd_sub(ctx, qd_sub(ctx, m->T, m->V ? m->V : zero), m->U ? m->U : zero);
     }
     if (!m->L)
-        return perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
+        return qd__mdl_perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
     return true;
 }
 
@@ -534,18 +534,18 @@ qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
     m->ctx = ctx;
     m->text = text;
     parser p = {ctx, {0}, m, diag, false, NULL, false, false};
-    lex_init(&p.lx, text);
+    qd__lex_init(&p.lx, text);
     while (!p.failed && p.lx.tok.kind != TK_EOF) {
         if (p.lx.tok.kind == TK_NEWLINE) {
-            lex_next(&p.lx);
+            qd__lex_next(&p.lx);
             continue;
         }
         if (statement(&p) && p.lx.tok.kind == TK_NEWLINE)
-            lex_next(&p.lx);
+            qd__lex_next(&p.lx);
     }
     if (!p.failed && p.lx.depth > 0) {
         size_t open = p.lx.open[p.lx.depth - 1 < LEX_MAX_DEPTH ? p.lx.depth - 1 : 0];
-        perr(&p, open, 1, "every bracket opened must be closed", "unclosed '%c'", text[open]);
+        qd__mdl_perr(&p, open, 1, "every bracket opened must be closed", "unclosed '%c'", text[open]);
     }
     if (!p.failed)
         finish(&p);
