@@ -26,8 +26,14 @@ void cli_diag_error(const char *fmt, ...)
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
-void cli_diag_read(const char *file, const char *text, const qd_read_error *err);
+/* An error record shown through the library's one renderer: located ones as
+ * FILE:LINE:COL, the line of text and a caret, then the hint. */
+void cli_diag_show(const char *file, const char *text, const qd_diag *d);
+void cli_diag_read(const char *file, const char *text, const qd_diag *err); /* a reader's */
 int cli_diag_ctx(const qd_ctx *ctx); /* prints the context's error, returns the exit status */
+/* The context's error after a derivation from model m read from file: at the
+ * statement, constraint or coordinate it is about, with its hint. */
+int cli_diag_model(const qd_ctx *ctx, const char *file, const char *text, const qd_model *m);
 
 /* FILE and options (args.c): every argument starting with '-' goes to opt,
  * which may take a value by advancing *i; exactly one other is the FILE. */

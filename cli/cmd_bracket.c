@@ -89,7 +89,7 @@ int cli_phase_ham(cli_phase *ph) {
         !(ph->e = qd_eom_derive(ph->ctx, ph->mf->model)))
         return cli_eom_derive_error(ph->ctx, ph->mf);
     if (!(ph->h = qd_ham_derive(ph->ctx, ph->mf->model, ph->e)))
-        return cli_diag_ctx(ph->ctx);
+        return cli_eom_derive_error(ph->ctx, ph->mf);
     for (size_t j = 0; j < ph->n; j++)
         if (ph->h->p[j] != ph->p[j]) {
             cli_diag_error("the Hamiltonian names its momentum %s, not %s",

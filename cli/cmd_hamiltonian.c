@@ -390,7 +390,7 @@ static int run(ham_run *r) {
     if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
         rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->ctx, r->mf.model, r->e)))
-        rc = cli_diag_ctx(r->ctx);
+        rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK)
         rc = substitute(r);
     if (rc == QD_EXIT_OK && r->at)

@@ -16,44 +16,41 @@ void cli_diag_error(const char *fmt, ...) {
     va_end(ap);
 }
 
-/* Line and column (1-based, in bytes) of an offset into text. */
-static void locate(const char *text, size_t off, size_t *line, size_t *col, const char **start) {
-    *line = 1;
-    *start = text;
-    for (size_t i = 0; i < off && text[i]; i++)
-        if (text[i] == '\n') {
-            (*line)++;
-            *start = text + i + 1;
-        }
-    *col = (size_t)(text + off - *start) + 1;
+/* The library's renderer (qd_diag_format) for every kind of input. */
+void cli_diag_show(const char *file, const char *text, const qd_diag *d) {
+    qd_buf b = QD_BUF_INIT;
+    qd_diag_format(d, file, text, &b);
+    fputs(b.failed ? d->message : qd_buf_str(&b), stderr);
+    qd_buf_free(&b);
 }
 
-void cli_diag_read(const char *file, const char *text, const qd_read_error *err) {
-    size_t line, col;
-    const char *start;
-    size_t len = strlen(text), off = err->offset <= len ? err->offset : len;
-    locate(text, off, &line, &col, &start);
-    fprintf(stderr, "%s:%zu:%zu: error: %s\n", file, line, col, err->message);
-    size_t n = strcspn(start, "\n");
-    fprintf(stderr, "  %.*s\n  ", (int)n, start);
-    for (size_t i = 1; i < col; i++)
-        fputc(start[i - 1] == '\t' ? '\t' : ' ', stderr);
-    size_t w = err->length ? err->length : 1;
-    for (size_t i = 0; i < w && col - 1 + i <= n; i++)
-        fputc(i ? '~' : '^', stderr);
-    fputc('\n', stderr);
-    if (err->hint[0])
-        fprintf(stderr, "  hint: %s\n", err->hint);
+void cli_diag_read(const char *file, const char *text, const qd_diag *err) {
+    qd_diag d = *err;
+    d.located = true; /* a reader's record always points into its text */
+    cli_diag_show(file, text, &d);
 }
 
-int cli_diag_ctx(const qd_ctx *ctx) {
-    qd_status st = qd_ctx_status(ctx);
-    cli_diag_error("%s", qd_ctx_message(ctx)[0] ? qd_ctx_message(ctx) : qd_status_str(st));
-    /* a bad argument or an exact division by zero is the input's fault */
+/* a bad argument or an exact division by zero is the input's fault */
+static int exit_status(qd_status st) {
     return st == QD_ERR_ARG || st == QD_ERR_DIVZERO || st == QD_ERR_PARSE ||
                    st == QD_ERR_UNBOUND || st == QD_ERR_NONLINEAR
                ? QD_EXIT_USAGE
                : QD_EXIT_FAIL;
+}
+
+int cli_diag_ctx(const qd_ctx *ctx) {
+    const qd_diag *d = qd_ctx_diag(ctx);
+    cli_diag_show("qdot", NULL, d);
+    return exit_status(qd_ctx_status(ctx));
+}
+
+int cli_diag_model(const qd_ctx *ctx, const char *file, const char *text, const qd_model *m) {
+    qd_diag d = *qd_ctx_diag(ctx);
+    if (d.subject == QD_SUBJECT_NONE || d.subject == QD_SUBJECT_TEXT)
+        return cli_diag_ctx(ctx);
+    qd_model_locate(m, &d); /* else shown without a caret */
+    cli_diag_show(file, text, &d);
+    return QD_EXIT_USAGE;
 }
 
 bool cli_format(const char *name, qd_format *out) {

@@ -676,59 +676,10 @@ static qd_status write_c(const cli_eom_view *v, qd_buf *b) {
 
 /* ---- derivation errors ------------------------------------------------------ */
 
-/* The constraint an error message names, for the caret: the first model
- * constraint whose name appears in it as a word. */
-static const char *named_constraint(const qd_model *m, const char *msg) {
-    for (size_t k = 0; k < qd_model_nconstraints(m); k++) {
-        const char *name = qd_model_constraint_name(m, k);
-        size_t len = strlen(name);
-        for (const char *p = strstr(msg, name); p; p = strstr(p + 1, name))
-            if ((p == msg || p[-1] == ' ') && (p[len] == ' ' || p[len] == ':' || !p[len]))
-                return name;
-    }
-    return NULL;
-}
-
-static const char *constraint_hint(const char *msg) {
-    if (strstr(msg, "inconsistent"))
-        return "the constraints contradict each other: correct or remove one";
-    if (strstr(msg, "redundant") || strstr(msg, "degenerate"))
-        return "remove the constraints that repeat what the others say";
-    if (strstr(msg, "velocities"))
-        return "write the constraint as sum_j a_j(q, t) q'_j + a0(q, t) = 0";
-    return "";
-}
-
+/* The derivation recorded what failed (a constraint, the statement giving
+ * the inertia) and a hint: shown at that statement of the file. */
 int cli_eom_derive_error(const qd_ctx *ctx, const cli_model_file *mf) {
-    const qd_model *m = mf->model;
-    const char *msg = qd_ctx_message(ctx);
-    const char *con = named_constraint(m, msg);
-    if (con && !strncmp(msg, "constraint", 10)) {
-        char what[160];
-        snprintf(what, sizeof what, "constraint:%s", con);
-        cli_model_file_error(mf, what, msg, constraint_hint(msg));
-        return QD_EXIT_USAGE;
-    }
-    if (qd_model_hamiltonian_given(m) && qd_ctx_status(ctx) == QD_ERR_NONLINEAR) {
-        cli_model_file_error(mf, "H", msg,
-                            "the equations of motion need the Lagrangian, which needs H quadratic "
-                            "in the momenta; Hamilton's equations are still given by "
-                            "`qdot hamiltonian`");
-        return QD_EXIT_USAGE;
-    }
-    if (qd_ctx_status(ctx) != QD_ERR_SINGULAR)
-        return cli_diag_ctx(ctx);
-    if (qd_model_hamiltonian_given(m)) {
-        cli_model_file_error(mf, "H", msg,
-                            "a Lagrangian needs H quadratic in the momenta with d^2H/dp^2 "
-                            "invertible; Hamilton's equations are still given by "
-                            "`qdot hamiltonian`");
-        return QD_EXIT_USAGE;
-    }
-    cli_model_file_error(mf, qd_model_lagrangian_given(m) ? "L" : "T", msg,
-                        "every coordinate needs inertia: its velocity must appear "
-                        "quadratically in T (or L)");
-    return QD_EXIT_USAGE;
+    return cli_diag_model(ctx, mf->path, mf->text, mf->model);
 }
 
 qd_status cli_eom_write(const cli_eom_view *v, cli_eom_format fmt, qd_buf *out) {

@@ -38,6 +38,7 @@ QD_API void qd_ctx_free(qd_ctx *ctx);           /* frees every expression; NULL 
 
 QD_API qd_status qd_ctx_status(const qd_ctx *ctx);     /* first error since the last clear */
 QD_API const char *qd_ctx_message(const qd_ctx *ctx);  /* its message, "" when none */
+QD_API const qd_diag *qd_ctx_diag(const qd_ctx *ctx);  /* its whole record (status.h) */
 QD_API void qd_ctx_clear_error(qd_ctx *ctx);
 /* Record an error (used by the library's own modules; first error wins). */
 QD_API void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...)
@@ -45,6 +46,13 @@ QD_API void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
+/* Say what the error just recorded is about, and what to do (hint may be
+ * NULL); name may be NULL.  Only the first error's first subject is kept. */
+QD_API void qd_ctx_error_about(qd_ctx *ctx, qd_subject subject, size_t index, const char *name,
+                               qd_reason why, const char *hint);
+/* Locate the error just recorded at text[offset, offset + length), when it is
+ * not located yet. */
+QD_API void qd_ctx_error_at(qd_ctx *ctx, const char *text, size_t offset, size_t length);
 QD_API size_t qd_ctx_node_count(const qd_ctx *ctx);    /* distinct nodes made so far */
 
 /* ---- node kinds --------------------------------------------------------- */

@@ -19,27 +19,19 @@
 #include <stddef.h>
 #include "expr.h"
 #include "print.h"
+#include "read.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* A located error in a model file. */
-typedef struct qd_diag {
-    size_t line, col;     /* 1-based; col counts bytes */
-    size_t offset;        /* byte offset in the text */
-    size_t length;        /* bytes the caret spans (>= 1) */
-    char message[256];
-    char hint[256];       /* "" when there is none */
-} qd_diag;
-
-/* "FILE:LINE:COL: error: MESSAGE", the source line, a caret line under the
- * span, and "  hint: ..." when there is a hint; appended to out. */
-QD_API void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf *out);
+/* Errors in a model file are error records (qd_diag, status.h), shown with
+ * qd_diag_format (read.h). */
 
 typedef struct qd_model qd_model;
 
-/* Parse a model.  NULL on error with *diag filled (diag may be NULL); a model
+/* Parse a model.  NULL on error, with the context's error record located in
+ * text and a copy in *diag (diag may be NULL); a model
  * that parses is complete and consistent (T, L or momenta and H given, every
  * name known, every parameter valued).  text must stay alive while the model
  * is used. */
@@ -132,6 +124,12 @@ QD_API const qd_expr *qd_model_definition(const qd_model *m, const char *name);
  * "symmetry:NAME" or "integral:NAME" (the label, or the statement's first
  * item when unnamed).  false when the model has no such statement. */
 QD_API bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
+
+/* Locate an error record found after parsing (a derivation's) in the model
+ * text: the statement, constraint, coordinate or parameter it is about.
+ * false when it has no such subject or the model no such statement; d is
+ * then unchanged. */
+QD_API bool qd_model_locate(const qd_model *m, qd_diag *d);
 
 #ifdef __cplusplus
 }

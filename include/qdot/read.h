@@ -12,26 +12,39 @@
 
 #include <stddef.h>
 #include "expr.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-typedef struct qd_read_error {
-    size_t offset;      /* byte offset of the offending spot in the text */
-    size_t length;      /* bytes it spans (at least 1 unless at the end) */
-    char message[160];  /* what is wrong */
-    char hint[160];     /* what to do, or "" */
-} qd_read_error;
+/* The reader's errors are error records (status.h) located in the text;
+ * the old name stays for callers written against it. */
+typedef qd_diag qd_read_error;
 
 typedef struct qd_read_opts {
     bool new_symbols;   /* unknown names become plain symbols (else an error) */
 } qd_read_opts;
 
-/* Read text into an expression; NULL with *err filled on failure (err may be
- * NULL).  opts may be NULL: unknown names then become plain symbols. */
+/* Read text into an expression; NULL on failure, with the context's error
+ * record located in text (subject QD_SUBJECT_TEXT) and a copy in *err (err
+ * may be NULL).  opts may be NULL: unknown names then become plain symbols. */
 QD_API const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
                        qd_read_error *err);
+
+/* The one renderer of error records, for every kind of input (a model
+ * file, a state string, an expression on the command line):
+ *
+ *   FILE:LINE:COL: error: MESSAGE
+ *     the source line
+ *     ^~~~ under the byte range
+ *     hint: HINT
+ *
+ * appended to out.  file names the input ("model.qd", "--at"); text is the
+ * input the range points into.  A record that is not located (or text NULL)
+ * gives "FILE: error: MESSAGE" and the hint.  Line and column are counted
+ * from text, so a record may be shown against a part of what was parsed. */
+QD_API void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf *out);
 
 #ifdef __cplusplus
 }

@@ -1,11 +1,15 @@
 /*
- * qdot/status.h - the status codes every fallible libqdot call returns.
+ * qdot/status.h - the status codes every fallible libqdot call returns, and
+ * the error record that says what an error is about.
  *
  * The library never prints and never exits: a call that fails returns one of
- * these codes (or NULL), and the context keeps a message the caller can show
- * (qd_ctx_message).  Errors are sticky: once a context holds an error, every
- * constructor that is handed the resulting NULL returns NULL too, so a long
- * chain of calls needs a single check at its end.
+ * these codes (or NULL), and the context keeps an error record (qd_ctx_diag):
+ * the status, a message, what the error is about (a statement, a constraint,
+ * a coordinate ... by index and name), the byte range in the text read when
+ * it is known, and a hint.  A caller shows it with qd_diag_format; it never
+ * has to search the message.  Errors are sticky: once a context holds an
+ * error, every constructor that is handed the resulting NULL returns NULL
+ * too, so a long chain of calls needs a single check at its end.
  */
 #ifndef QDOT_STATUS_H
 #define QDOT_STATUS_H
@@ -17,6 +21,9 @@
 #else
 #define QD_API
 #endif
+
+#include <stdbool.h>
+#include <stddef.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -35,6 +42,53 @@ typedef enum qd_status {
     QD_ERR_TOOBIG,     /* a result would exceed a documented size limit */
     QD_ERR_UNSUPPORTED /* the platform lacks something needed (no C compiler for native code) */
 } qd_status;
+
+/* What an error is about.  index counts from 0 in the model's order (its
+ * coordinates, its constraints, its parameters); name is the subject's own
+ * name ("T", "roll1", "theta"), so a caller can find it without the index. */
+typedef enum qd_subject {
+    QD_SUBJECT_NONE,       /* nothing in particular (out of memory, a bad argument) */
+    QD_SUBJECT_TEXT,       /* a spot in text being read: see offset and length */
+    QD_SUBJECT_STATEMENT,  /* a statement of the model: name is "T", "V", "L", "H", ... */
+    QD_SUBJECT_CONSTRAINT, /* constraint number index */
+    QD_SUBJECT_COORD,      /* coordinate number index (its velocity, its equation) */
+    QD_SUBJECT_PARAM       /* parameter number index */
+} qd_subject;
+
+/* Why, when the subject alone does not say it: lets a caller (or a test)
+ * tell an inconsistent constraint set from a redundant one without reading
+ * English. */
+typedef enum qd_reason {
+    QD_REASON_NONE,
+    QD_REASON_INCONSISTENT,  /* constraints no motion satisfies together */
+    QD_REASON_REDUNDANT,     /* constraints that repeat others: multipliers not unique */
+    QD_REASON_DEGENERATE,    /* a constraint whose coefficients all vanish */
+    QD_REASON_NOT_PFAFFIAN,  /* a constraint not linear in the velocities, or with none */
+    QD_REASON_NOT_QUADRATIC, /* a velocity (momentum) enters T, L (H) beyond the square */
+    QD_REASON_SINGULAR_MASS, /* the mass matrix is singular */
+    QD_REASON_TOO_DEEP,      /* text nested beyond the readers' limit (QD_MAX_NEST) */
+    QD_REASON_BAD_BYTE       /* a byte or character the language does not allow there */
+} qd_reason;
+
+/* Brackets and signs nest at most this deep in any text libqdot reads, so a
+ * hostile input cannot exhaust the stack. */
+#define QD_MAX_NEST 256
+
+/* An error record.  line and col (1-based, col in bytes) and offset/length
+ * (bytes) locate the error in the text read when located is true. */
+typedef struct qd_diag {
+    qd_status status;
+    qd_subject subject;
+    size_t index;          /* which constraint, coordinate, parameter */
+    char name[64];         /* the subject's name, "" when none */
+    qd_reason reason;
+    bool located;
+    size_t line, col;
+    size_t offset;         /* byte offset in the text */
+    size_t length;         /* bytes the caret spans (>= 1 when located) */
+    char message[256];
+    char hint[256];        /* what to do, "" when there is nothing to add */
+} qd_diag;
 
 /* A short English name of the status ("division by zero"); never NULL. */
 QD_API const char *qd_status_str(qd_status st);

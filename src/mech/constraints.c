@@ -45,6 +45,8 @@ static const qd_expr *tidy(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
     return qd_simplify(ctx, st == QD_OK ? v.all : x);
 }
 
+#define PFAFFIAN_HINT "write the constraint as sum_j a_j(q, t) q'_j + a0(q, t) = 0"
+
 /* c->a, c->a0 and kind; the constraint differentiated once more than
  * needed for its velocity form goes to *closing. */
 static qd_status split(qd_ctx *ctx, const qd_eom *e, qd_con *c, const qd_expr **closing) {
@@ -53,6 +55,8 @@ static qd_status split(qd_ctx *ctx, const qd_eom *e, qd_con *c, const qd_expr **
         qd_ctx_error(ctx, QD_ERR_ARG,
                      "constraint %s contains accelerations: a constraint relates coordinates, "
                      "velocities and t", c->name);
+        qd_ctx_error_about(ctx, QD_SUBJECT_CONSTRAINT, (size_t)(c - e->con), c->name,
+                           QD_REASON_NOT_PFAFFIAN, PFAFFIAN_HINT);
         return QD_ERR_ARG;
     }
     if (!has_any(c->expr, n, e->qd)) {
@@ -71,6 +75,8 @@ static qd_status split(qd_ctx *ctx, const qd_eom *e, qd_con *c, const qd_expr **
                      "constraint %s is not linear in the velocities (%s enters nonlinearly): "
                      "qdot handles holonomic and Pfaffian constraints",
                      c->name, nonlinear_velocity(ctx, e, c->expr));
+        qd_ctx_error_about(ctx, QD_SUBJECT_CONSTRAINT, (size_t)(c - e->con), c->name,
+                           QD_REASON_NOT_PFAFFIAN, PFAFFIAN_HINT);
         return st;
     }
     *closing = st == QD_OK ? qd_dt(ctx, c->expr) : NULL;

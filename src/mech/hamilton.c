@@ -64,13 +64,40 @@ static qd_status momenta(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham
     return QD_OK;
 }
 
+/* The velocity that enters p = dL/dq' nonlinearly: one whose derivative
+ * still holds a velocity. */
+static size_t nonlinear_velocity(qd_ctx *ctx, const qd_eom *e, const qd_expr *p, size_t j) {
+    for (size_t k = 0; k < e->n; k++) {
+        const qd_expr *d = qd_diff(ctx, p, e->qd[k]);
+        for (size_t i = 0; d && i < e->n; i++)
+            if (qd_has(d, e->qd[i]))
+                return k;
+    }
+    return j;
+}
+
+/* The momenta must be linear in the velocities to be solved for them: say
+ * so at the statement giving L (stmt: "L" or "T"), naming the velocity. */
+static void not_quadratic(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j,
+                          const char *stmt) {
+    size_t k = nonlinear_velocity(ctx, e, h->pdef[j], j);
+    char hint[256];
+    qd_ctx_clear_error(ctx); /* the kernel's "not linear in x'" says neither where nor why */
+    qd_ctx_error(ctx, QD_ERR_NONLINEAR, "the momentum of %s is not linear in the velocities "
+                 "(L is not quadratic in them)", qd_expr_name(e->q[j]));
+    snprintf(hint, sizeof hint, "%s enters %s beyond its square, so the momenta do not "
+             "determine the velocities; a Hamiltonian needs %s quadratic in the velocities",
+             qd_expr_name(e->qd[k]), stmt, stmt);
+    qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, k, stmt, QD_REASON_NOT_QUADRATIC, hint);
+}
+
 /* Row j of [M | p - b] from p_j = dL/dq'_j. */
-static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, const qd_expr **A) {
+static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, const qd_expr **A,
+                     const char *stmt) {
     const qd_expr *b = NULL;
     qd_status st = qd_linear_coeffs(ctx, h->pdef[j], e->n, e->qd, A, &b);
     if (st == QD_ERR_NONLINEAR) {
-        qd_ctx_error(ctx, st, "the momentum of %s is not linear in the velocities "
-                              "(L is not quadratic in them)", qd_expr_name(e->q[j]));
+        not_quadratic(ctx, e, h, j, stmt);
         return st;
     }
     if (st != QD_OK)
@@ -79,14 +106,14 @@ static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, co
     return A[e->n] ? QD_OK : qd_ctx_status(ctx);
 }
 
-static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
+static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char *stmt) {
     size_t n = e->n;
     const qd_expr **A = arr(n * (n + 1));
     if (!A)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
     for (size_t j = 0; st == QD_OK && j < n; j++)
-        st = row(ctx, e, h, j, A + j * (n + 1));
+        st = row(ctx, e, h, j, A + j * (n + 1), stmt);
     size_t bad = 0;
     if (st == QD_OK)
         st = qd__gauss_solve(ctx, n, A, h->vel, &bad);
@@ -152,7 +179,7 @@ static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
 static qd_status derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
     qd_status st = momenta(ctx, m, e, h);
     if (st == QD_OK)
-        st = velocities(ctx, e, h);
+        st = velocities(ctx, e, h, qd_model_lagrangian_given(m) ? "L" : "T");
     if (st == QD_OK)
         st = hamiltonian(ctx, e, h);
     if (st == QD_OK)

@@ -110,9 +110,12 @@ static qd_status derive_row(qd_ctx *ctx, qd_eom *e, const qd_expr *L, const qd_e
     const qd_expr *rest = NULL;
     qd_status st = qd_linear_coeffs(ctx, E, e->n, e->qdd, coeffs, &rest);
     if (st != QD_OK) {
-        if (st == QD_ERR_NONLINEAR)
-            qd_ctx_error(ctx, st, "the equation of %s is not linear in the accelerations",
-                         qd_expr_name(e->q[j]));
+        if (st != QD_ERR_NONLINEAR)
+            return st;
+        qd_ctx_clear_error(ctx); /* the kernel's message names an acceleration, not the equation */
+        qd_ctx_error(ctx, st, "the equation of %s is not linear in the accelerations",
+                     qd_expr_name(e->q[j]));
+        qd_ctx_error_about(ctx, QD_SUBJECT_COORD, j, qd_expr_name(e->q[j]), QD_REASON_NONE, NULL);
         return st;
     }
     e->f[j] = qd_simplify(ctx, grouped(ctx, e, qd_neg(ctx, rest)));
@@ -199,8 +202,11 @@ static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     st = derive_all(ctx, e, s, e->L);
     if (st == QD_OK)
         st = qd__con_setup(ctx, e, s);
-    if (st == QD_OK)
-        st = qd__check_singular(ctx, e, s->T);
+    if (st == QD_OK && (st = qd__check_singular(ctx, e, s->T)) == QD_ERR_SINGULAR)
+        qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, 0, s->L_given ? "L" : "T",
+                           QD_REASON_SINGULAR_MASS,
+                           "every coordinate needs inertia: its velocity must appear "
+                           "quadratically in T (or L)");
     return st;
 }
 

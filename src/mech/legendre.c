@@ -99,6 +99,10 @@ static qd_status row(qd_ctx *ctx, const hsys *s, const qd_expr *H, size_t j, con
         qd_ctx_error(ctx, st, "H is not quadratic in the momenta: dH/d%s is not linear in them, "
                               "so q' = dH/dp cannot be solved for the momenta in closed form "
                               "(no Lagrangian)", qd_expr_name(s->p[j]));
+        qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, j, "H", QD_REASON_NOT_QUADRATIC,
+                           "the equations of motion need the Lagrangian, which needs H "
+                           "quadratic in the momenta; Hamilton's equations are still given by "
+                           "`qdot hamiltonian`");
         return st;
     }
     if (st != QD_OK)
@@ -122,9 +126,14 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
     if (st == QD_OK)
         st = qd__gauss_solve(ctx, n, A, pdef, &bad);
     free(A);
-    if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
+    if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK) {
         qd_ctx_error(ctx, st, "d^2H/dp^2 is singular (H is not regular): q' = dH/dp does not "
                               "determine %s, so H has no Lagrangian", qd_expr_name(s->p[bad]));
+        qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, bad, "H", QD_REASON_SINGULAR_MASS,
+                           "a Lagrangian needs H quadratic in the momenta with d^2H/dp^2 "
+                           "invertible; Hamilton's equations are still given by "
+                           "`qdot hamiltonian`");
+    }
     if (st != QD_OK)
         return st;
     const qd_expr *sum = qd_neg(ctx, H);

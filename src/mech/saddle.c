@@ -75,6 +75,15 @@ qd_status qd__con_report(qd_ctx *ctx, const qd_eom *e, const double *mu, bool in
                      "constraints %s are redundant%s: their multipliers are not unique",
                      qd_buf_str(&names), where);
     qd_buf_free(&names);
+    size_t first = 0;
+    while (first < e->ncon && !(fabs(mu[first]) > 1e-6))
+        first++;
+    qd_reason why = count == 1 ? QD_REASON_DEGENERATE
+                    : inconsistent ? QD_REASON_INCONSISTENT : QD_REASON_REDUNDANT;
+    qd_ctx_error_about(ctx, QD_SUBJECT_CONSTRAINT, first, first < e->ncon ? e->con[first].name : NULL,
+                       why, why == QD_REASON_INCONSISTENT
+                                ? "the constraints contradict each other: correct or remove one"
+                                : "remove the constraints that repeat what the others say");
     return QD_ERR_SINGULAR;
 }
 

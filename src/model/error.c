@@ -1,41 +1,45 @@
 /*
  * src/model/error.c - located errors and suggestions.
  *
- * The parser records the first error (message, hint, byte span) and stops,
- * SQLite-style; qd_diag_format turns the span into FILE:LINE:COL, the source
- * line and a caret, for the caller to show.
+ * The parser records the first error (message, hint, byte span) in the
+ * context's error record and stops, SQLite-style; qd_diag_format (base/diag.c)
+ * shows it.  qd_model_locate places a derivation's error in the model text.
  */
 #include "parser.h"
+#include "base/diag.h"
 
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static void line_col(const char *text, size_t off, size_t *line, size_t *col) {
-    *line = 1;
-    size_t start = 0;
-    for (size_t i = 0; i < off && text[i]; i++)
-        if (text[i] == '\n') {
-            (*line)++;
-            start = i + 1;
-        }
-    *col = off - start + 1;
-}
-
+/* Record the parser's first error in the context (SQLite's way: code,
+ * message and byte range, and stop) and copy it for qd_model_parse's caller.
+ * An error at a byte the lexer could not read names that byte instead, in
+ * plain words, whatever the statement expected there. */
 static bool vperr(parser *p, size_t off, size_t len, const char *hint, const char *fmt,
                   va_list ap) {
     if (p->failed)
         return false;
     p->failed = true;
-    if (!p->diag)
-        return false;
-    qd_diag *d = p->diag;
-    d->offset = off;
-    d->length = len ? len : 1;
-    line_col(p->lx.src, off, &d->line, &d->col);
-    vsnprintf(d->message, sizeof d->message, fmt, ap);
-    snprintf(d->hint, sizeof d->hint, "%s", hint ? hint : "");
+    char msg[256];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    qd_reason why = QD_REASON_NONE;
+    if (p->lx.tok.kind == TK_BAD && off == p->lx.tok.off) {
+        len = qd__diag_bad_char(p->lx.src + off, msg, sizeof msg, &hint);
+        why = QD_REASON_BAD_BYTE;
+    } else if (p->lx.too_deep || p->nest > QD_MAX_NEST) {
+        why = QD_REASON_TOO_DEEP;
+    }
+    qd_ctx *ctx = p->ctx;
+    qd_status st = qd_ctx_status(ctx);
+    /* a kernel error met while parsing is reported at the parser's spot */
+    qd_ctx_clear_error(ctx);
+    qd_ctx_error(ctx, st != QD_OK ? st : QD_ERR_PARSE, "%s", msg);
+    qd_ctx_error_about(ctx, QD_SUBJECT_TEXT, 0, NULL, why, hint);
+    qd_ctx_error_at(ctx, p->lx.src, off, len);
+    if (p->diag)
+        *p->diag = *qd_ctx_diag(ctx);
     return false;
 }
 
@@ -55,27 +59,42 @@ bool qd__mdl_perr_tok(parser *p, const char *hint, const char *fmt, ...) {
     return false;
 }
 
-void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf *out) {
-    qd_buf_printf(out, "%s:%zu:%zu: error: %s\n", file, d->line, d->col, d->message);
-    size_t len = strlen(text), off = d->offset <= len ? d->offset : len;
-    size_t start = off;
-    while (start > 0 && text[start - 1] != '\n')
-        start--;
-    size_t end = start + strcspn(text + start, "\n");
-    qd_buf_puts(out, "  ");
-    qd_buf_putn(out, text + start, end - start);
-    qd_buf_puts(out, "\n  ");
-    for (size_t i = start; i < off; i++)
-        qd_buf_putn(out, text[i] == '\t' ? "\t" : " ", 1);
-    size_t w = d->length ? d->length : 1;
-    if (off + w > end && end > off)
-        w = end - off; /* the caret stays on the line shown */
-    qd_buf_puts(out, "^");
-    for (size_t i = 1; i < w; i++)
-        qd_buf_puts(out, "~");
-    qd_buf_puts(out, "\n");
-    if (d->hint[0])
-        qd_buf_printf(out, "  hint: %s\n", d->hint);
+/* "constraint:NAME", "T", a coordinate's name: the key qd_model_where
+ * knows the subject's statement by. */
+static bool where_key(const qd_model *m, const qd_diag *d, char *key, size_t cap) {
+    const char *name = d->name[0] ? d->name : NULL;
+    switch (d->subject) {
+    case QD_SUBJECT_STATEMENT:
+        break;
+    case QD_SUBJECT_CONSTRAINT:
+        if (!name && d->index < m->ncons)
+            name = m->con_names[d->index];
+        return name && snprintf(key, cap, "constraint:%s", name) < (int)cap;
+    case QD_SUBJECT_COORD:
+        if (!name && d->index < m->ncoords)
+            name = qd_expr_name(m->coords[d->index]);
+        break;
+    case QD_SUBJECT_PARAM:
+        if (!name && d->index < m->nparams)
+            name = qd_expr_name(m->params[d->index]);
+        break;
+    default:
+        return false;
+    }
+    return name && snprintf(key, cap, "%s", name) < (int)cap;
+}
+
+bool qd_model_locate(const qd_model *m, qd_diag *d) {
+    char key[96];
+    qd_diag w;
+    if (!m || !d || !where_key(m, d, key, sizeof key) || !qd_model_where(m, key, &w))
+        return false;
+    d->located = true;
+    d->offset = w.offset;
+    d->length = w.length;
+    d->line = w.line;
+    d->col = w.col;
+    return true;
 }
 
 /* ---- suggestions --------------------------------------------------------- */

@@ -18,6 +18,7 @@
  * scalars.
  */
 #include "parser.h"
+#include "base/diag.h"
 
 #include <ctype.h>
 #include <stdio.h>
@@ -26,6 +27,7 @@
 
 static bool parse_sum(parser *p, value *out);
 static bool parse_factor(parser *p, value *out);
+static bool parse_signed(parser *p, value *out);
 
 static qd_ctx *C(parser *p) { return p->ctx; }
 
@@ -547,8 +549,21 @@ static void negate(parser *p, value *v) {
         v->c[i] = qd_neg(C(p), v->c[i]);
 }
 
-/* factor := ('-' | '+') factor | power */
+/* factor := ('-' | '+') factor | power
+ * Every bracket, sign and exponent nests one factor inside another: the
+ * count bounds the recursion (and the stack) as the kernel's reader does. */
 static bool parse_factor(parser *p, value *out) {
+    if (p->nest >= QD_MAX_NEST) {
+        p->nest++; /* tells the error record why */
+        return qd__mdl_perr_tok(p, QD_NEST_HINT, "expression nested too deeply");
+    }
+    p->nest++;
+    bool ok = parse_signed(p, out);
+    p->nest--;
+    return ok;
+}
+
+static bool parse_signed(parser *p, value *out) {
     if (p->lx.tok.kind != TK_MINUS && p->lx.tok.kind != TK_PLUS)
         return parse_power(p, out);
     bool neg = p->lx.tok.kind == TK_MINUS;
@@ -658,7 +673,7 @@ static bool parse_sum(parser *p, value *out) {
 
 bool qd__mdl_parse_expr(parser *p, value *out) {
     if (p->lx.too_deep)
-        return qd__mdl_perr_tok(p, NULL, "brackets nested too deeply");
+        return qd__mdl_perr_tok(p, QD_NEST_HINT, "expression nested too deeply");
     return parse_sum(p, out);
 }
 

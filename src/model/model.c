@@ -240,6 +240,7 @@ bool qd_model_where(const qd_model *m, const char *what, qd_diag *out) {
             continue;
         if (out) {
             memset(out, 0, sizeof *out);
+            out->located = true;
             out->offset = w->off;
             out->length = w->len;
             out->line = 1;

@@ -106,6 +106,7 @@ typedef struct parser {
     const char *defining;      /* the name whose definition is being read */
     bool momenta_ok;           /* the momenta may be used (H, integral) */
     bool eps_ok;               /* eps may be used (a symmetry's finite form) */
+    int nest;                  /* open brackets and signs: at most QD_MAX_NEST */
 } parser;
 
 /* expr.c */

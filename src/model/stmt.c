@@ -23,14 +23,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const keywords[] = {
-    "coordinates", "parameters", "functions", "particle", "force", "initial", "constraint",
-    "reaction",
-    "body", "torque", "rolls", "momenta", "symmetry", "integral",
-};
-#define NKEYWORDS (sizeof keywords / sizeof keywords[0])
-
-
 static const char *const reserved[] = {"T", "V", "L", "U", "H", "dissipation"};
 
 static qd_ctx *C(parser *p) { return p->ctx; }
@@ -438,17 +430,49 @@ static bool stmt_definition(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
+/* The statements that open with a keyword, in the order the hint lists
+ * them.  A newer one stays usable as a name defined before it existed
+ * (`body = 2` is a definition), so it is a statement only when no '='
+ * follows. */
+static const struct stmt_kw {
+    const char *word;
+    bool (*parse)(parser *p);
+    bool newer;
+} statements[] = {
+    {"coordinates", stmt_coordinates, false},   {"parameters", stmt_parameters, false},
+    {"functions", stmt_functions, false},       {"particle", stmt_particle, false},
+    {"force", stmt_force, false},               {"initial", stmt_initial, false},
+    {"constraint", stmt_constraint, false},     {"body", qd__mdl_stmt_body, true},
+    {"torque", qd__mdl_stmt_torque, true},      {"rolls", qd__mdl_stmt_rolls, true},
+    {"reaction", qd__mdl_stmt_reaction, true},  {"momenta", qd__mdl_stmt_momenta, true},
+    {"symmetry", qd__mdl_stmt_symmetry, true},  {"integral", qd__mdl_stmt_integral, true},
+};
+#define NSTATEMENTS (sizeof statements / sizeof statements[0])
+
 static bool unknown_statement(parser *p) {
-    char word[128], hint[192] = "";
+    char word[128], hint[256];
+    const char *words[NSTATEMENTS];
     tok_text(p, word, sizeof word);
-    const char *near = qd__mdl_nearest(word, strlen(word), keywords, NKEYWORDS);
+    for (size_t i = 0; i < NSTATEMENTS; i++)
+        words[i] = statements[i].word;
+    const char *near = qd__mdl_nearest(word, strlen(word), words, NSTATEMENTS);
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
-    else
-        snprintf(hint, sizeof hint, "a statement starts with a keyword (coordinates, parameters, "
-                 "particle, body, force, torque, initial, functions, constraint, momenta, "
-                 "symmetry, integral) or is a definition NAME = ...");
+    else {
+        size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
+        for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
+            n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? ", " : "", words[i]);
+        if (n < sizeof hint)
+            snprintf(hint + n, sizeof hint - n, ") or is a definition NAME = ...");
+    }
     return qd__mdl_perr_tok(p, hint, "unknown statement '%s'", word);
+}
+
+static const struct stmt_kw *keyword_statement(const lexer *lx, bool newer) {
+    for (size_t i = 0; i < NSTATEMENTS; i++)
+        if (statements[i].newer == newer && qd__lex_is(lx, statements[i].word))
+            return &statements[i];
+    return NULL;
 }
 
 static bool statement(parser *p) {
@@ -458,40 +482,16 @@ static bool statement(parser *p) {
             return qd__mdl_end_of_statement(p);
         return qd__mdl_perr_tok(p, NULL, "expected a statement, found %s", qd__lex_tk_name(lx->tok.kind));
     }
-    if (qd__lex_is(lx, "coordinates"))
-        return stmt_coordinates(p);
-    if (qd__lex_is(lx, "parameters"))
-        return stmt_parameters(p);
-    if (qd__lex_is(lx, "functions"))
-        return stmt_functions(p);
-    if (qd__lex_is(lx, "particle"))
-        return stmt_particle(p);
-    if (qd__lex_is(lx, "force"))
-        return stmt_force(p);
-    if (qd__lex_is(lx, "initial"))
-        return stmt_initial(p);
-    if (qd__lex_is(lx, "constraint"))
-        return stmt_constraint(p);
+    const struct stmt_kw *kw = keyword_statement(lx, false);
+    if (kw)
+        return kw->parse(p);
     /* NAME '=' or Q '[': look one token ahead without consuming */
     lexer save = *lx;
     qd__lex_next(lx);
     tk_kind next = lx->tok.kind;
     *lx = save;
-    /* the newer keywords stay usable as names defined before they existed */
-    if (qd__lex_is(lx, "body") && next != TK_EQ)
-        return qd__mdl_stmt_body(p);
-    if (qd__lex_is(lx, "torque") && next != TK_EQ)
-        return qd__mdl_stmt_torque(p);
-    if (qd__lex_is(lx, "rolls") && next != TK_EQ)
-        return qd__mdl_stmt_rolls(p);
-    if (qd__lex_is(lx, "reaction") && next != TK_EQ)
-        return qd__mdl_stmt_reaction(p);
-    if (qd__lex_is(lx, "momenta") && next != TK_EQ)
-        return qd__mdl_stmt_momenta(p);
-    if (qd__lex_is(lx, "symmetry") && next != TK_EQ)
-        return qd__mdl_stmt_symmetry(p);
-    if (qd__lex_is(lx, "integral") && next != TK_EQ)
-        return qd__mdl_stmt_integral(p);
+    if (next != TK_EQ && (kw = keyword_statement(lx, true)))
+        return kw->parse(p);
     if (qd__lex_is(lx, "H") && next == TK_EQ)
         return qd__mdl_stmt_hamiltonian(p);
     if (next == TK_EQ)
@@ -533,7 +533,7 @@ qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
     }
     m->ctx = ctx;
     m->text = text;
-    parser p = {ctx, {0}, m, diag, false, NULL, false, false};
+    parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0};
     qd__lex_init(&p.lx, text);
     while (!p.failed && p.lx.tok.kind != TK_EOF) {
         if (p.lx.tok.kind == TK_NEWLINE) {

@@ -259,22 +259,58 @@ void qd_ctx_free(qd_ctx *ctx) {
 }
 
 qd_status qd_ctx_status(const qd_ctx *ctx) { return ctx->status; }
-const char *qd_ctx_message(const qd_ctx *ctx) { return ctx->message; }
+const char *qd_ctx_message(const qd_ctx *ctx) { return ctx->diag.message; }
+const qd_diag *qd_ctx_diag(const qd_ctx *ctx) { return &ctx->diag; }
 size_t qd_ctx_node_count(const qd_ctx *ctx) { return ctx->table_len; }
 
 void qd_ctx_clear_error(qd_ctx *ctx) {
     ctx->status = QD_OK;
-    ctx->message[0] = '\0';
+    memset(&ctx->diag, 0, sizeof ctx->diag);
 }
 
 void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...) {
     if (ctx->status != QD_OK)
         return; /* the first error is the one that explains the rest */
     ctx->status = st;
+    memset(&ctx->diag, 0, sizeof ctx->diag);
+    ctx->diag.status = st;
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(ctx->message, sizeof ctx->message, fmt, ap);
+    vsnprintf(ctx->diag.message, sizeof ctx->diag.message, fmt, ap);
     va_end(ap);
+}
+
+void qd_ctx_error_about(qd_ctx *ctx, qd_subject subject, size_t index, const char *name,
+                        qd_reason why, const char *hint) {
+    qd_diag *d = &ctx->diag;
+    if (ctx->status == QD_OK || (d->subject != QD_SUBJECT_NONE && d->subject != QD_SUBJECT_TEXT))
+        return; /* no error to qualify, or it already says what it is about */
+    d->subject = subject;
+    d->index = index;
+    snprintf(d->name, sizeof d->name, "%s", name ? name : "");
+    d->reason = why;
+    if (hint)
+        snprintf(d->hint, sizeof d->hint, "%s", hint);
+}
+
+void qd_ctx_error_at(qd_ctx *ctx, const char *text, size_t offset, size_t length) {
+    qd_diag *d = &ctx->diag;
+    if (ctx->status == QD_OK || d->located || !text)
+        return;
+    size_t n = strlen(text);
+    d->located = true;
+    d->offset = offset < n ? offset : n;
+    d->length = length ? length : 1;
+    d->line = 1;
+    size_t start = 0;
+    for (size_t i = 0; i < d->offset; i++)
+        if (text[i] == '\n') {
+            d->line++;
+            start = i + 1;
+        }
+    d->col = d->offset - start + 1;
+    if (d->subject == QD_SUBJECT_NONE)
+        d->subject = QD_SUBJECT_TEXT;
 }
 
 const char *qd_status_str(qd_status st) {

@@ -73,7 +73,7 @@ struct qd_ctx {
     /* a few nodes every operation uses */
     const qd_expr *zero, *one, *minus_one, *half, *t;
     qd_status status;
-    char message[256];
+    qd_diag diag;                /* the first error's record; diag.status == status */
 };
 
 /* ---- intern.c --------------------------------------------------------- */

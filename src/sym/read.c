@@ -31,13 +31,14 @@
  */
 #include "qdot/read.h"
 #include "node.h"
+#include "base/diag.h"
 
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_NEST 256  /* bounds the recursion on ((((...)))) and - - - x */
+#define MAX_NEST QD_MAX_NEST  /* bounds the recursion on ((((...)))) and - - - x */
 #define MAX_NAME 256
 
 enum tok { T_EOF, T_NUM, T_NAME, T_PRIME, T_LPAR, T_RPAR, T_LBRK, T_RBRK, T_COMMA,
@@ -76,18 +77,25 @@ static const qd_expr *fail(rd *p, size_t off, size_t len, const char *hint, cons
     if (p->failed)
         return NULL;
     p->failed = true;
-    char msg[160];
+    char msg[256];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    if (p->err) {
-        p->err->offset = off;
-        p->err->length = len;
-        snprintf(p->err->message, sizeof p->err->message, "%s", msg);
-        snprintf(p->err->hint, sizeof p->err->hint, "%s", hint ? hint : "");
+    qd_reason why = p->nest > MAX_NEST ? QD_REASON_TOO_DEEP : QD_REASON_NONE;
+    unsigned char c = (unsigned char)p->s[off];
+    if (p->tok == T_BAD && off == p->tpos && (c >= 0x7F || c < 0x20)) {
+        len = qd__diag_bad_char(p->s + off, msg, sizeof msg, &hint);
+        why = QD_REASON_BAD_BYTE;
     }
-    qd_ctx_error(p->ctx, QD_ERR_PARSE, "at byte %zu: %s", off, msg);
+    /* a constructor's error (check) is reported at the reader's spot */
+    qd_status st = p->ctx->status;
+    qd_ctx_clear_error(p->ctx);
+    qd_ctx_error(p->ctx, st != QD_OK ? st : QD_ERR_PARSE, "%s", msg);
+    qd_ctx_error_about(p->ctx, QD_SUBJECT_TEXT, 0, NULL, why, hint);
+    qd_ctx_error_at(p->ctx, p->s, off, len);
+    if (p->err)
+        *p->err = p->ctx->diag;
     return NULL;
 }
 
@@ -473,7 +481,7 @@ static const qd_expr *signed_(rd *p, const qd_expr *(*f)(rd *)) {
     bool minus = p->tok == T_MINUS;
     size_t off = p->tpos;
     if (++p->nest > MAX_NEST)
-        return fail(p, off, 1, NULL, "expression nested too deeply");
+        return fail(p, off, 1, QD_NEST_HINT, "expression nested too deeply");
     next(p);
     if (p->tok == T_EOF || p->tok == T_NEWLINE)
         return unexpected(p, "an operand", "the sign needs something after it");
@@ -521,7 +529,7 @@ static const qd_expr *term(rd *p) { return signed_(p, product); }
 /* sum := term { ('+' | '-') term } */
 static const qd_expr *sum(rd *p) {
     if (++p->nest > MAX_NEST)
-        return fail(p, p->tpos, p->tlen, NULL, "expression nested too deeply");
+        return fail(p, p->tpos, p->tlen, QD_NEST_HINT, "expression nested too deeply");
     vec v = {0};
     const qd_expr *e = term(p), *r = NULL;
     bool ok = e && push(p, &v, e);

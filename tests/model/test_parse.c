@@ -210,7 +210,7 @@ static const bad bad_models[] = {
      "did you mean 'sin'?"},
     {"coordinates q\nparameters k = q\nT = q'^2\n", 2, 16, "a parameter's value must be a number",
      NULL},
-    {"coordinates q\nT = q'^2 $\n", 2, 10, "unexpected an unexpected character", NULL},
+    {"coordinates q\nT = q'^2 $\n", 2, 10, "unexpected character '$'", NULL},
     {"coordinates sin\n", 1, 13, "'sin' is already a built-in name", NULL},
     {"coordinates q\nT = q'^2\ninitial p = 1\n", 3, 9, "'p' is not a coordinate", NULL},
     {"", 1, 1, "no coordinates are declared", NULL},
