@@ -1,6 +1,7 @@
 /*
  * cli/args.c - the argument loop the commands on a model file share:
- * one FILE, and options handed to the command's own parser.
+ * one FILE, and options handed to the command's own parser; and what counts
+ * as an option where a command also takes expressions ("-x" is one).
  */
 #include "cli.h"
 
@@ -32,6 +33,10 @@ int cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
+}
+
+bool cli_is_option(const char *arg) {
+    return (arg[0] == '-' && arg[1] == '-' && arg[2]) || !strcmp(arg, "-h");
 }
 
 const char *cli_value(int argc, char **argv, int *i, const char *opt) {

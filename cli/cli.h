@@ -41,6 +41,10 @@ typedef int (*cli_option)(int argc, char **argv, int *i, void *data);
 int cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
                      const char **file, cli_option opt, void *data);
 
+/* Is arg an option ("--NAME", "--NAME=V", "-h") where a command also takes
+ * expressions?  "-x", "-p_x*2" and "-1" are expressions, not options. */
+bool cli_is_option(const char *arg);
+
 /* The value of option opt given as "--opt VALUE" or "--opt=VALUE" at
  * argv[*i] (advancing *i past a separate VALUE), or NULL when argv[*i] is
  * another option or VALUE is missing. */

@@ -144,18 +144,22 @@ static int positional(br_args *a, const char *s) {
 static int parse_args(int argc, char **argv, br_args *a) {
     *a = (br_args){.fmt = FMT_TEXT};
     int rc = QD_EXIT_OK;
+    bool options = true; /* until "--": after it every argument is an expression */
     for (int i = 0; rc == QD_EXIT_OK && i < argc; i++) {
-        if (!strcmp(argv[i], "--dt"))
+        if (options && !strcmp(argv[i], "--"))
+            options = false;
+        else if (!options || !cli_is_option(argv[i]))
+            rc = positional(a, argv[i]); /* -x and -p_x are expressions */
+        else if (!strcmp(argv[i], "--dt"))
             a->dt = true;
         else if (!strncmp(argv[i], "--format=", 9))
             rc = parse_format(argv[i] + 9, &a->fmt);
         else if (!strcmp(argv[i], "--format") && i + 1 < argc)
             rc = parse_format(argv[++i], &a->fmt);
-        else if (argv[i][0] == '-' && argv[i][1] && (argv[i][1] < '0' || argv[i][1] > '9')) {
+        else {
             cli_diag_error("unknown option or missing value: '%s'\n%s", argv[i], usage_text);
             rc = QD_EXIT_USAGE;
-        } else
-            rc = positional(a, argv[i]);
+        }
     }
     if (rc == QD_EXIT_OK && (!a->F || (!a->dt && !a->G) || (a->dt && a->G))) {
         cli_diag_error("%s", usage_text);

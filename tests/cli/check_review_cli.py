@@ -40,6 +40,8 @@ MODELS = {
     'bigparam.qd': "coordinates x\nparameters a = 1.5^(1.5e31)\nT = a*x'^2/2\n",
     'nanparam.qd': "coordinates x\nparameters a = sqrt(-1)\nT = x'^2/2\n",
     'badinit.qd': "coordinates x\nT = x'^2/2\nV = x^2/2\ninitial x = 1e400\n",
+    'deep.qd': "coordinates x\nT = x'^2/2\nV = " + '(' * 10000 + 'x' + ')' * 10000 + '\n',
+    'deepsign.qd': "coordinates x\nT = x'^2/2\nV = " + '-' * 10000 + 'x\n',
 }
 
 KEPLER = str(EXAMPLES / 'kepler_polar.qd')
@@ -144,6 +146,11 @@ CASES = [
     (['modes', 'nanparam.qd'], USAGE, 'nanparam.qd:2:16:'),
     # was: simulate ran from x = inf and printed inf and nan with exit 0
     (['check', 'badinit.qd'], USAGE, 'badinit.qd:4:13: error: an initial value must be a finite'),
+    # 10,000 nested brackets or signs: the kernel reader's limit and message
+    # (was: a segmentation fault, the model parser recursing without limit)
+    (['eom', 'deep.qd'], USAGE, 'deep.qd:3:261: error: expression nested too deeply'),
+    (['check', 'deepsign.qd'], USAGE, 'deepsign.qd:3:262: error: expression nested too deeply'),
+    (['modes', 'deep.qd'], USAGE, 'hint: brackets and signs nest at most 256 deep'),
     # empty model, constraints where unsupported
     (['modes', 'empty.qd'], USAGE, 'no coordinates are declared'),
     (['routh', str(EXAMPLES / 'pendulum_cartesian.qd'), '--ignore', 'x'], USAGE,
