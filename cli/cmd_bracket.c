@@ -74,7 +74,7 @@ static int no_velocity(cli_phase *ph, const char *what, const qd_expr *x) {
 
 int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out) {
     qd_read_opts opts = {.new_symbols = false};
-    qd_read_error err;
+    qd_diag err;
     *out = qd_read(ph->ctx, text, &opts, &err);
     if (!*out) {
         cli_diag_read(what, text, &err);

@@ -71,7 +71,7 @@ static int run(int argc, char **argv, const char *cmd, size_t min_vars, unary_op
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    qd_read_error err;
+    qd_diag err;
     const qd_expr *e = qd_read(ctx, a.text, NULL, &err);
     if (!e) {
         cli_diag_read("<expression>", a.text, &err);

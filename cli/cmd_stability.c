@@ -117,7 +117,7 @@ static int value_of(stab_run *r, const char *what, const char *a, const char *b,
         return QD_EXIT_FAIL;
     memcpy(text, a, (size_t)(b - a));
     text[b - a] = '\0';
-    qd_read_error err;
+    qd_diag err;
     const qd_read_opts opts = {.new_symbols = false};
     const qd_expr *e = qd_read(r->ctx, text, &opts, &err);
     /* the parameters only: st's coordinates, velocities and t are 0 there */

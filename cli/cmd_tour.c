@@ -17,7 +17,7 @@ static void show(qd_ctx *ctx, const char *label, const qd_expr *e, qd_format fmt
 }
 
 static const qd_expr *read_expr(qd_ctx *ctx, const char *text) {
-    qd_read_error err;
+    qd_diag err;
     const qd_expr *e = qd_read(ctx, text, NULL, &err);
     if (!e)
         cli_diag_read("<tour>", text, &err);

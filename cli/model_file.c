@@ -65,15 +65,6 @@ static int read_text(const char *path, cli_model_file *mf) {
     return QD_EXIT_OK;
 }
 
-static void print_diag(const cli_model_file *mf, const qd_diag *d) {
-    qd_buf b = QD_BUF_INIT;
-    qd_diag_format(d, mf->path, mf->text, &b);
-    fputs(qd_buf_str(&b), stderr);
-    if (b.len && b.s[b.len - 1] != '\n')
-        fputc('\n', stderr);
-    qd_buf_free(&b);
-}
-
 int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {
     *mf = (cli_model_file){0};
     int rc = read_text(path, mf);
@@ -88,7 +79,7 @@ int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {
         cli_diag_error("out of memory while reading '%s'", mf->path);
         return QD_EXIT_FAIL;
     }
-    print_diag(mf, &d);
+    cli_diag_show(mf->path, mf->text, &d);
     return QD_EXIT_USAGE;
 }
 
@@ -102,14 +93,9 @@ void cli_model_file_free(cli_model_file *mf) {
 void cli_model_file_error(const cli_model_file *mf, const char *what, const char *message,
                          const char *hint) {
     qd_diag d;
-    memset(&d, 0, sizeof d);
-    if (!qd_model_where(mf->model, what, &d)) {
-        fprintf(stderr, "%s: error: %s\n", mf->path, message);
-        if (hint && hint[0])
-            fprintf(stderr, "  hint: %s\n", hint);
-        return;
-    }
+    if (!qd_model_where(mf->model, what, &d))
+        memset(&d, 0, sizeof d); /* shown without a caret */
     snprintf(d.message, sizeof d.message, "%s", message);
     snprintf(d.hint, sizeof d.hint, "%s", hint ? hint : "");
-    print_diag(mf, &d);
+    cli_diag_show(mf->path, mf->text, &d);
 }

@@ -254,7 +254,7 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
         if (d)
             x = qd_dt(c->ctx, d);
     }
-    qd_read_error err;
+    qd_diag err;
     const qd_read_opts opts = {.new_symbols = true};
     if (!x)
         x = qd_read(c->ctx, text, &opts, &err);

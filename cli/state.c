@@ -85,7 +85,7 @@ static int read_value(qd_ctx *ctx, const char *label, const char *what, const ch
         return QD_EXIT_FAIL;
     memcpy(copy, text + start, len);
     copy[len] = '\0';
-    qd_read_error err;
+    qd_diag err;
     const qd_read_opts opts = {.new_symbols = false};
     const qd_expr *e = qd_read(ctx, copy, &opts, &err);
     int rc = QD_EXIT_OK;
