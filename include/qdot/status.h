@@ -79,7 +79,9 @@ typedef enum qd_reason {
 typedef struct qd_diag {
     qd_status status;
     qd_subject subject;
-    size_t index;          /* which constraint, coordinate, parameter */
+    size_t index;          /* which constraint, coordinate, parameter; for a
+                            * statement, the coordinate it concerns (whose
+                            * velocity enters L beyond the square), else 0 */
     char name[64];         /* the subject's name, "" when none */
     qd_reason reason;
     bool located;
