@@ -15,6 +15,7 @@
 #include <string.h>
 #include "eom_out.h"
 #include "json.h"
+#include "model_cli.h"
 #include "model_file.h"
 
 typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX } br_fmt;
@@ -47,13 +48,13 @@ static int momenta(cli_phase *ph) {
     return QD_EXIT_OK;
 }
 
-int cli_phase_load(const char *file, cli_phase *ph) {
+int cli_phase_load(const char *file, size_t nsets, const char *const *sets, cli_phase *ph) {
     *ph = (cli_phase){.ctx = qd_ctx_new(), .mf = calloc(1, sizeof *ph->mf)};
     if (!ph->ctx || !ph->mf) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    int rc = cli_model_file_load(ph->ctx, file, ph->mf);
+    int rc = cli_load(ph->ctx, file, nsets, sets, true, ph->mf);
     return rc == QD_EXIT_OK ? momenta(ph) : rc;
 }
 
@@ -263,7 +264,7 @@ int cli_cmd_bracket(int argc, char **argv) {
     if (rc != QD_EXIT_OK)
         return rc;
     cli_phase ph;
-    rc = cli_phase_load(a.file, &ph);
+    rc = cli_phase_load(a.file, 0, NULL, &ph);
     if (rc == QD_EXIT_OK)
         rc = run(&ph, &a);
     cli_phase_free(&ph);
