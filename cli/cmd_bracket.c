@@ -73,6 +73,18 @@ static int no_velocity(cli_phase *ph, const char *what, const qd_expr *x) {
     return QD_EXIT_OK;
 }
 
+/* A parameter the model was read with --set has its number in the model's
+ * expressions: the same in what the user writes beside them. */
+static const qd_expr *fixed_values(cli_phase *ph, const qd_expr *x) {
+    const qd_model *m = ph->mf->model;
+    for (size_t i = 0; x && i < qd_model_nparams(m); i++)
+        if (qd_model_param_fixed(m, i)) {
+            const qd_expr *p = qd_model_param(m, i), *v = qd_model_param_value(m, i);
+            x = qd_subs(ph->ctx, x, 1, &p, &v);
+        }
+    return x;
+}
+
 int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out) {
     qd_read_opts opts = {.new_symbols = false};
     qd_read_error err;
@@ -81,6 +93,9 @@ int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_e
         cli_diag_read(what, text, &err);
         return QD_EXIT_USAGE;
     }
+    *out = fixed_values(ph, *out);
+    if (!*out)
+        return cli_diag_ctx(ph->ctx);
     return no_velocity(ph, what, *out);
 }
 

@@ -59,10 +59,11 @@ typedef struct qd_param_value {
 typedef struct qd_model_opts {
     const qd_param_value *params;
     size_t nparams;
-    /* true: each parameter given here is a constant of this model, its
-     * number written into every expression in place of its name (equations
-     * print with the value; qd_model_set_param refuses it); false: it stays
-     * a symbol with this value (generated code keeps it adjustable). */
+    /* true: each parameter given here, and each defined from one, is a
+     * constant of this model, its number written into every expression in
+     * place of its name (equations print with the value; qd_model_set_param
+     * refuses it); false: it stays a symbol with this value (generated code
+     * keeps it adjustable). */
     bool fix_params;
 } qd_model_opts;
 
@@ -90,6 +91,9 @@ QD_API const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its 
 /* The parameter as written: an expression of the earlier parameters
  * (`m = 2*k` gives 2*k), or the number that replaced it. */
 QD_API const qd_expr *qd_model_param_definition(const qd_model *m, size_t i);
+/* Fixed by qd_model_opts (given with fix_params, or defined from a fixed
+ * one): its number, not its symbol, stands in the model's expressions. */
+QD_API bool qd_model_param_fixed(const qd_model *m, size_t i);
 /* Give a parameter another value after parsing; the parameters defined from
  * it and the initial values follow.  QD_ERR_ARG for an unknown name (with
  * the nearest known name in the context's message), a value that is not a

@@ -119,6 +119,8 @@ const qd_expr *qd_model_param_definition(const qd_model *m, size_t i) {
     return i < m->nparams ? m->pdefs[i] : NULL;
 }
 
+bool qd_model_param_fixed(const qd_model *m, size_t i) { return i < m->nparams && m->pfixed[i]; }
+
 /* x with the values of the first n parameters put in. */
 static const qd_expr *valued(const qd_model *m, const qd_expr *x, size_t n) {
     return x ? qd_subs(m->ctx, x, n, m->params, m->pvals) : NULL;

@@ -73,7 +73,7 @@ qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts
     }
     m->ctx = ctx;
     m->text = m->src = text;
-    parser p = {ctx, {0}, m, diag, false, NULL, false, false, opts, used};
+    parser p = {ctx, {0}, m, diag, false, NULL, false, false, opts, used, false};
     qd__lex_init(&p.lx, text);
     if (check_given(&p, false))
         read_statements(&p);
@@ -215,7 +215,7 @@ qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
     bool ok = qd__mdl_push((void **)&m->added, &nadded, sizeof copy, &copy);
     if (ok) {
         m->src = copy;
-        parser p = {ctx, {0}, m, diag, false, NULL, false, false, NULL, NULL};
+        parser p = {ctx, {0}, m, diag, false, NULL, false, false, NULL, NULL, false};
         qd__lex_init(&p.lx, copy);
         read_one(&p);
         if (!p.failed)

@@ -118,6 +118,7 @@ typedef struct parser {
     bool eps_ok;               /* eps may be used (a symmetry's finite form) */
     const qd_model_opts *opts; /* parameter values given from outside, or NULL */
     bool *set_used;            /* per opts->params entry: a parameter took it */
+    bool met_fixed;            /* a fixed parameter was written in as its number */
 } parser;
 
 /* expr.c */

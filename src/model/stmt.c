@@ -204,12 +204,15 @@ static bool stmt_parameters(parser *p) {
         }
         qd__lex_next(&p->lx);
         const qd_expr *given = given_value(p, name), *def, *v, *sym;
+        p->met_fixed = false;
         if (!parse_constant(p, given, &def, &v, "a parameter's value"))
             return false;
+        /* defined from a fixed parameter: a number of this model too */
+        bool fixed = (given && p->opts->fix_params) || (!given && p->met_fixed);
         sym = qd_param(C(p), name);
         if (!sym)
             return qd__mdl_perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
-        if (!push_param(p, sym, def, v, given && p->opts->fix_params))
+        if (!push_param(p, sym, def, v, fixed))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
