@@ -1,7 +1,7 @@
 /*
  * cli/cmd_hamiltonian.c - `qdot hamiltonian FILE`: the momenta, H(q, p, t)
  * and Hamilton's equations of a model (qd_ham_derive), with the verdicts
- * H = T + V? and H conserved?  --set replaces parameters; --at evaluates H
+ * H = T + V? and H conserved?  --set gives parameters values; --at evaluates H
  * and the equations at a point (q, p, t): momenta are named there as they
  * are printed (p_r=0.3), everything else goes to the state parser.
  * A model given by H (`momenta ...`, `H = ...`) skips Lagrange's equations:

@@ -4,7 +4,7 @@
  * coordinates (Goldstein's sign) split by degree in the kept velocities, the
  * effective potential V_eff = R0, the quadratures that give the ignored
  * velocities back, and the reduced equations M q'' = f of the kept
- * coordinates with their gyroscopic matrix.  --set replaces parameters.
+ * coordinates with their gyroscopic matrix.  --set gives parameters values.
  */
 #include "cli.h"
 
