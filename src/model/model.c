@@ -136,7 +136,7 @@ bool qd__mdl_eval_params(qd_model *m) {
     return true;
 }
 
-static qd_status unknown_param(qd_ctx *ctx, const qd_model *m, const char *name) {
+qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name) {
     const char **names = malloc((m->nparams + 1) * sizeof *names);
     if (!names) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
@@ -158,7 +158,7 @@ qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const q
     while (i < m->nparams && strcmp(qd_expr_name(m->params[i]), name) != 0)
         i++;
     if (i == m->nparams)
-        return unknown_param(ctx, m, name);
+        return qd__mdl_unknown_param(ctx, m, name);
     if (!value || !qd_is_number(value)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the value of '%s' must be a number", name);
         return QD_ERR_ARG;

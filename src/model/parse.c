@@ -52,9 +52,8 @@ static bool check_given(parser *p, bool after) {
             return false;
         }
         if (after && !p->set_used[k]) {
-            qd_status st = qd_model_set_param(p->ctx, p->m, v->name, v->value);
-            unlocated(p, qd_ctx_message(p->ctx)); /* the unknown name, with the nearest */
-            (void)st;
+            qd__mdl_unknown_param(p->ctx, p->m, v->name);
+            unlocated(p, qd_ctx_message(p->ctx));
             return false;
         }
     }

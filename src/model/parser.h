@@ -209,6 +209,8 @@ bool qd__mdl_finish(parser *p);
 /* Every parameter's and initial value's number from the definitions:
  * pvals[i] = pdefs[i] with the earlier values put in. */
 bool qd__mdl_eval_params(qd_model *m);
+/* QD_ERR_ARG with "unknown parameter 'NAME'; did you mean ...?" in the context. */
+qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name);
 const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n);
 bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len);
 bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len);

@@ -445,7 +445,11 @@ static bool stmt_definition(parser *p) {
         return false;
     if (!slot && !qd__mdl_fresh_name(p, "definition"))
         return false;
-    if (slot && (explicit_T ? qd_model_where(p->m, "T", NULL) : *slot != NULL)) {
+    /* T adds to the particles'; L is made from T - V - U when not given */
+    bool twice = explicit_T        ? qd_model_where(p->m, "T", NULL)
+                 : slot == &p->m->L ? qd_model_lagrangian_given(p->m)
+                                    : slot && *slot;
+    if (slot && twice) {
         qd_diag first;
         qd_model_where(p->m, name, &first);
         return qd__mdl_perr(p, at.off, at.len, "give it once; add the parts in one expression",

@@ -218,6 +218,12 @@ static void add_statements(void **state) {
     assert_int_equal(qd_model_add_statement(m, "V = m*x^2", &d), QD_OK);
     const qd_expr *want = qd_sub(ctx, qd_model_kinetic(m), qd_model_potential(m));
     assert_true(qd_is_zero(qd_simplify(ctx, qd_sub(ctx, qd_model_lagrangian(m), want))));
+    /* L made from T - V is not "given": L = ... may still be added, once */
+    assert_false(qd_model_lagrangian_given(m));
+    assert_int_equal(qd_model_add_statement(m, "L = m*x'^2", &d), QD_OK);
+    assert_true(qd_model_lagrangian_given(m));
+    assert_int_equal(qd_model_add_statement(m, "L = x'^2", &d), QD_ERR_PARSE);
+    assert_string_equal(d.message, "L is given twice (first on line 1)");
     qd_model_free(m);
     qd_ctx_free(ctx);
 }
