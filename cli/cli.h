@@ -82,7 +82,8 @@ typedef struct cli_phase {
     qd_eom *e;  /* set by cli_phase_ham */
     qd_ham *h;
 } cli_phase;
-int cli_phase_load(const char *file, cli_phase *ph);
+/* FILE read with the --set list (the values fixed into the expressions). */
+int cli_phase_load(const char *file, size_t nsets, const char *const *sets, cli_phase *ph);
 /* Read text (an expression in q, p, t and the parameters; what names it in
  * diagnostics); unknown names and velocities are errors (exit 2). */
 int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out);

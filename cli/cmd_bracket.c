@@ -15,6 +15,7 @@
 #include <string.h>
 #include "eom_out.h"
 #include "json.h"
+#include "model_cli.h"
 #include "model_file.h"
 
 typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX } br_fmt;
@@ -47,13 +48,13 @@ static int momenta(cli_phase *ph) {
     return QD_EXIT_OK;
 }
 
-int cli_phase_load(const char *file, cli_phase *ph) {
+int cli_phase_load(const char *file, size_t nsets, const char *const *sets, cli_phase *ph) {
     *ph = (cli_phase){.ctx = qd_ctx_new(), .mf = calloc(1, sizeof *ph->mf)};
     if (!ph->ctx || !ph->mf) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    int rc = cli_model_file_load(ph->ctx, file, ph->mf);
+    int rc = cli_load(ph->ctx, file, nsets, sets, true, ph->mf);
     return rc == QD_EXIT_OK ? momenta(ph) : rc;
 }
 
@@ -72,6 +73,18 @@ static int no_velocity(cli_phase *ph, const char *what, const qd_expr *x) {
     return QD_EXIT_OK;
 }
 
+/* A parameter the model was read with --set has its number in the model's
+ * expressions: the same in what the user writes beside them. */
+static const qd_expr *fixed_values(cli_phase *ph, const qd_expr *x) {
+    const qd_model *m = ph->mf->model;
+    for (size_t i = 0; x && i < qd_model_nparams(m); i++)
+        if (qd_model_param_fixed(m, i)) {
+            const qd_expr *p = qd_model_param(m, i), *v = qd_model_param_value(m, i);
+            x = qd_subs(ph->ctx, x, 1, &p, &v);
+        }
+    return x;
+}
+
 int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out) {
     qd_read_opts opts = {.new_symbols = false};
     qd_diag err;
@@ -80,6 +93,9 @@ int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_e
         cli_diag_read(what, text, &err);
         return QD_EXIT_USAGE;
     }
+    *out = fixed_values(ph, *out);
+    if (!*out)
+        return cli_diag_ctx(ph->ctx);
     return no_velocity(ph, what, *out);
 }
 
@@ -267,7 +283,7 @@ int cli_cmd_bracket(int argc, char **argv) {
     if (rc != QD_EXIT_OK)
         return rc;
     cli_phase ph;
-    rc = cli_phase_load(a.file, &ph);
+    rc = cli_phase_load(a.file, 0, NULL, &ph);
     if (rc == QD_EXIT_OK)
         rc = run(&ph, &a);
     cli_phase_free(&ph);

@@ -13,11 +13,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include "json.h"
+#include "model_cli.h"
 #include "model_file.h"
 
 typedef struct can_args {
     const char *file, *Q, *P, *gen_type, *gen;
     bool json;
+    const char *sets[QD_CLI_MAX_LIST];
+    size_t nsets;
 } can_args;
 
 typedef struct can_run {
@@ -28,12 +31,16 @@ typedef struct can_run {
 } can_run;
 
 static const char usage_text[] =
-    "usage: qdot canonical FILE --Q \"Q1, ...\" --P \"P1, ...\" [--format text|json]\n"
-    "       qdot canonical FILE --generator F1|F2|F3|F4 EXPR [--format text|json]";
+    "usage: qdot canonical FILE --Q \"Q1, ...\" --P \"P1, ...\" [--format text|json] "
+    "[--set NAME=VALUE]...\n"
+    "       qdot canonical FILE --generator F1|F2|F3|F4 EXPR [--format text|json] "
+    "[--set NAME=VALUE]...";
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     can_args *a = data;
     const char *v;
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
     if ((v = cli_value(argc, argv, i, "--Q")) && !a->Q)
         a->Q = v;
     else if ((v = cli_value(argc, argv, i, "--P")) && !a->P)
@@ -305,7 +312,7 @@ int cli_cmd_canonical(int argc, char **argv) {
     if (rc != QD_EXIT_OK)
         return rc;
     can_run r = {0};
-    rc = cli_phase_load(a.file, &r.ph);
+    rc = cli_phase_load(a.file, a.nsets, a.sets, &r.ph);
     if (rc == QD_EXIT_OK && (rc = new_symbols(&r)) != QD_EXIT_OK)
         cli_diag_error("out of memory");
     if (rc == QD_EXIT_OK)

@@ -92,7 +92,7 @@ static int run(qd_ctx *ctx, cg_run *r) {
     qd_eom *e = NULL;
     qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
     qd_eom_opts opts = {r->eliminate};
-    int rc = cli_load_derive(ctx, r->file, r->nsets, r->sets, NULL, &opts, &mf, &e);
+    int rc = cli_load_derive(ctx, r->file, r->nsets, r->sets, false, &opts, &mf, &e);
     if (rc == QD_EXIT_OK && qd_codegen_c(ctx, mf.model, e, r->name, &c, &h) != QD_OK)
         rc = cli_diag_ctx(ctx);
     /* -o names the directory to write into: made when missing (not its parents) */

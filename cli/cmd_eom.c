@@ -3,8 +3,8 @@
  *
  *     d/dt(dL/dq'_j) - dL/dq_j + dD/dq'_j = Q_j,   written   M q'' = f,
  *
- * derived by libqdot (qd_eom_derive), with parameters replaced by the values
- * given with --set, solved for q'' with --solve, or evaluated at a state with
+ * derived by libqdot (qd_eom_derive) from the model read with the --set
+ * values in place of its parameters', solved for q'' with --solve, or evaluated at a state with
  * --at.  Constraints add multipliers, M q'' = f + A^T lambda with A q'' = b;
  * --eliminate substitutes the holonomic ones that can be solved for a
  * coordinate instead.  With --at, the model's `reaction` statements give
@@ -37,7 +37,6 @@ typedef struct eom_run {
     cli_model_file mf;
     qd_eom *e;
     cli_state st;
-    cli_subs subs;                             /* --set substitutions */
     const qd_expr **numbers;                      /* numeric mode: M, f, acc, A, b,
                                                      lambda, R as nodes */
     size_t nreact;                                /* numeric mode: reactions computed */
@@ -85,33 +84,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 static int parse_args(int argc, char **argv, eom_args *a) {
     *a = (eom_args){.fmt = QD_EOM_TEXT};
     return cli_file_args(argc, argv, "eom", usage_text, &a->file, parse_option, a);
-}
-
-/* x with the --set parameters replaced by their values, re-simplified. */
-static const qd_expr *subs(eom_run *r, const qd_expr *x) { return cli_subst(r->ctx, &r->subs, x); }
-
-static int substitute(eom_run *r) {
-    qd_eom *e = r->e;
-    for (size_t i = 0; i < e->n * e->n; i++)
-        e->M[i] = subs(r, e->M[i]);
-    for (size_t i = 0; i < e->n; i++)
-        e->f[i] = subs(r, e->f[i]);
-    for (size_t i = 0; i < e->ncon * e->n; i++)
-        e->A[i] = subs(r, e->A[i]);
-    for (size_t k = 0; k < e->ncon; k++) {
-        e->b[k] = subs(r, e->b[k]);
-        e->con[k].expr = subs(r, e->con[k].expr);
-        e->con[k].a0 = subs(r, e->con[k].a0);
-        e->con[k].integral = subs(r, e->con[k].integral);
-        e->con[k].factor = subs(r, e->con[k].factor);
-    }
-    for (size_t k = 0; k < e->nelim; k++)
-        e->elim[k].value = subs(r, e->elim[k].value);
-    e->T2 = subs(r, e->T2);
-    e->T1 = subs(r, e->T1);
-    e->T0 = subs(r, e->T0);
-    e->L = subs(r, e->L);
-    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->ctx);
 }
 
 static int solve(eom_run *r) {
@@ -180,7 +152,7 @@ static qd_status reaction_at(eom_run *r, size_t i, const double *lambda) {
     const qd_expr *pt[3];
     double F[3], res;
     for (unsigned k = 0; k < 3; k++)
-        pt[k] = subs(r, qd_model_reaction_point(m, i, k));
+        pt[k] = qd_model_reaction_point(m, i, k);
     qd_status st = qd_eom_reaction(r->ctx, r->e, qd_model_reaction_constraint(m, i), pt,
                                    r->st.n, r->st.syms, r->st.vals, lambda, F, &res);
     if (st == QD_ERR_ARG) {
@@ -308,9 +280,7 @@ int cli_cmd_eom(int argc, char **argv) {
         return QD_EXIT_FAIL;
     }
     qd_eom_opts opts = {.eliminate = a.eliminate};
-    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, &r.subs, &opts, &r.mf, &r.e);
-    if (rc == QD_EXIT_OK)
-        rc = substitute(&r);
+    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, true, &opts, &r.mf, &r.e);
     if (rc == QD_EXIT_OK)
         rc = a.at ? evaluate(&r, a.at) : a.solve ? solve(&r) : QD_EXIT_OK;
     if (rc == QD_EXIT_OK)

@@ -1,7 +1,7 @@
 /*
  * cli/cmd_hamiltonian.c - `qdot hamiltonian FILE`: the momenta, H(q, p, t)
  * and Hamilton's equations of a model (qd_ham_derive), with the verdicts
- * H = T + V? and H conserved?  --set replaces parameters; --at evaluates H
+ * H = T + V? and H conserved?  --set gives parameters values; --at evaluates H
  * and the equations at a point (q, p, t): momenta are named there as they
  * are printed (p_r=0.3), everything else goes to the state parser.
  * A model given by H (`momenta ...`, `H = ...`) skips Lagrange's equations:
@@ -31,7 +31,6 @@ typedef struct ham_run {
     ham_fmt fmt;
     const char *file, *at, *sets[MAX_SETS];
     size_t nsets;
-    cli_subs subs;
     cli_state st;
     const qd_expr **syms; /* the state's symbols, then the momenta */
     double *vals;
@@ -62,24 +61,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 
 static int parse_args(int argc, char **argv, ham_run *r) {
     return cli_file_args(argc, argv, "hamiltonian", usage_text, &r->file, parse_option, r);
-}
-
-static const qd_expr *subs(ham_run *r, const qd_expr *x) {
-    return cli_subst(r->ctx, &r->subs, x);
-}
-
-static int substitute(ham_run *r) {
-    qd_ham *h = r->h;
-    h->L_from_H = subs(r, h->L_from_H);
-    for (size_t j = 0; j < h->n; j++) {
-        h->pdef[j] = subs(r, h->pdef[j]);
-        h->vel[j] = subs(r, h->vel[j]);
-        h->dq[j] = subs(r, h->dq[j]);
-        h->dp[j] = subs(r, h->dp[j]);
-    }
-    h->H = subs(r, h->H);
-    h->H_minus_E = subs(r, h->H_minus_E);
-    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->ctx);
 }
 
 /* ---- --at ------------------------------------------------------------------ */
@@ -383,16 +364,12 @@ static int emit(ham_run *r) {
 }
 
 static int run(ham_run *r) {
-    int rc = cli_model_file_load(r->ctx, r->file, &r->mf);
-    if (rc == QD_EXIT_OK)
-        rc = cli_apply_sets(r->ctx, r->mf.model, r->nsets, r->sets, &r->subs);
+    int rc = cli_load(r->ctx, r->file, r->nsets, r->sets, true, &r->mf);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
     if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
         rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->ctx, r->mf.model, r->e)))
         rc = cli_eom_derive_error(r->ctx, &r->mf);
-    if (rc == QD_EXIT_OK)
-        rc = substitute(r);
     if (rc == QD_EXIT_OK && r->at)
         rc = evaluate(r);
     return rc == QD_EXIT_OK ? emit(r) : rc;

@@ -21,12 +21,6 @@
 
 #define MAX_OPT QD_CLI_MAX_LIST
 
-typedef struct given {
-    char name[64];
-    const qd_expr **xi; /* symmetries: n components */
-    const qd_expr *expr; /* integrals */
-} given;
-
 typedef struct int_run {
     qd_ctx *ctx;
     cli_model_file mf;
@@ -35,11 +29,9 @@ typedef struct int_run {
     bool json, search;
     const char *file, *sets[MAX_OPT], *syms[MAX_OPT], *ints[MAX_OPT];
     size_t nsets, nsymopt, nintopt;
-    cli_subs subs;
     size_t nnoether, nproposed;
     qd_noether *noether;
     qd_int_proposed *proposed;
-    given *gsym, *gint;
 } int_run;
 
 static const char usage_text[] =
@@ -73,29 +65,18 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 
 /* ---- --symmetry and --integral ------------------------------------------- */
 
-/* Read by the model's own parser, as `symmetry` and `integral` statements
- * would be; unnamed ones are S1, S2, ... and J1, J2, ... */
+/* Added to the model as its own `symmetry` and `integral` statements (after
+ * the file's); unnamed ones are S1, S2, ... and J1, J2, ... */
 static int parse_given(int_run *r) {
-    r->gsym = calloc(r->nsymopt + 1, sizeof *r->gsym);
-    r->gint = calloc(r->nintopt + 1, sizeof *r->gint);
-    if (!r->gsym || !r->gint)
-        return QD_EXIT_FAIL;
-    size_t n = qd_model_ncoords(r->mf.model);
     int rc = QD_EXIT_OK;
     char label[32];
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->nsymopt; k++) {
-        given *g = &r->gsym[k];
-        if (!(g->xi = calloc(n + 1, sizeof *g->xi)))
-            return QD_EXIT_FAIL;
         snprintf(label, sizeof label, "S%zu", k + 1);
-        rc = cli_symmetry(r->ctx, &r->mf, "--symmetry", r->syms[k], label, g->name,
-                             sizeof g->name, g->xi);
+        rc = cli_symmetry(&r->mf, "--symmetry", r->syms[k], label);
     }
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->nintopt; k++) {
-        given *g = &r->gint[k];
         snprintf(label, sizeof label, "J%zu", k + 1);
-        rc = cli_integral(r->ctx, &r->mf, "--integral", r->ints[k], label, g->name,
-                             sizeof g->name, &g->expr);
+        rc = cli_integral(&r->mf, "--integral", r->ints[k], label);
     }
     return rc;
 }
@@ -113,17 +94,17 @@ static int failed(int_run *r) {
 static int noether_all(int_run *r) {
     const qd_model *m = r->mf.model;
     size_t nm = qd_model_nsymmetries(m), n = r->e->n;
-    r->noether = calloc(nm + r->nsymopt + 1, sizeof *r->noether);
+    r->noether = calloc(nm + 1, sizeof *r->noether);
     const qd_expr **xi = calloc(n ? n : 1, sizeof *xi);
     if (!r->noether || !xi) {
         free(xi);
         return QD_EXIT_FAIL;
     }
     int rc = QD_EXIT_OK;
-    for (size_t i = 0; rc == QD_EXIT_OK && i < nm + r->nsymopt; i++) {
-        const char *name = i < nm ? qd_model_symmetry_name(m, i) : r->gsym[i - nm].name;
+    for (size_t i = 0; rc == QD_EXIT_OK && i < nm; i++) {
+        const char *name = qd_model_symmetry_name(m, i);
         for (size_t j = 0; j < n; j++)
-            xi[j] = i < nm ? qd_model_symmetry_field(m, i, j) : r->gsym[i - nm].xi[j];
+            xi[j] = qd_model_symmetry_field(m, i, j);
         if (qd_integrals_noether(r->ctx, r->I, name, xi, &r->noether[i]) != QD_OK)
             rc = failed(r);
         r->nnoether = i + 1;
@@ -135,12 +116,12 @@ static int noether_all(int_run *r) {
 static int proposed_all(int_run *r) {
     const qd_model *m = r->mf.model;
     size_t nm = qd_model_nintegrals(m);
-    r->proposed = calloc(nm + r->nintopt + 1, sizeof *r->proposed);
+    r->proposed = calloc(nm + 1, sizeof *r->proposed);
     if (!r->proposed)
         return QD_EXIT_FAIL;
-    for (size_t i = 0; i < nm + r->nintopt; i++) {
-        const char *name = i < nm ? qd_model_integral_name(m, i) : r->gint[i - nm].name;
-        const qd_expr *x = i < nm ? qd_model_integral(m, i) : r->gint[i - nm].expr;
+    for (size_t i = 0; i < nm; i++) {
+        const char *name = qd_model_integral_name(m, i);
+        const qd_expr *x = qd_model_integral(m, i);
         if (qd_integrals_check(r->ctx, r->I, name, x, &r->proposed[i]) != QD_OK)
             return failed(r);
         r->nproposed = i + 1;
@@ -477,12 +458,10 @@ static int emit(int_run *r) {
 }
 
 static int run(int_run *r) {
-    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
-                                &r->e);
+    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, true, NULL, &r->mf, &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_given(r);
-    qd_integrals_opts o = {.nsubs = r->subs.n, .from = r->subs.from, .to = r->subs.to,
-                           .search = r->search};
+    qd_integrals_opts o = {.search = r->search};
     if (rc == QD_EXIT_OK && !(r->I = qd_integrals_derive(r->ctx, r->mf.model, r->e, &o)))
         rc = failed(r);
     if (rc == QD_EXIT_OK)
@@ -506,10 +485,6 @@ int cli_cmd_integrals(int argc, char **argv) {
         qd_noether_clear(&r.noether[i]);
     free(r.noether);
     free(r.proposed);
-    for (size_t k = 0; r.gsym && k < r.nsymopt; k++)
-        free(r.gsym[k].xi);
-    free(r.gsym);
-    free(r.gint);
     qd_integrals_free(r.I);
     qd_eom_free(r.e);
     cli_model_file_free(&r.mf);

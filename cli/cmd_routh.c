@@ -4,7 +4,7 @@
  * coordinates (Goldstein's sign) split by degree in the kept velocities, the
  * effective potential V_eff = R0, the quadratures that give the ignored
  * velocities back, and the reduced equations M q'' = f of the kept
- * coordinates with their gyroscopic matrix.  --set replaces parameters.
+ * coordinates with their gyroscopic matrix.  --set gives parameters values.
  */
 #include "cli.h"
 
@@ -29,7 +29,6 @@ typedef struct routh_run {
     routh_fmt fmt;
     const char *file, *ignore, *sets[MAX_SETS];
     size_t nsets, nign;
-    cli_subs subs;
     const qd_expr *ign[MAX_IGN];
 } routh_run;
 
@@ -121,34 +120,6 @@ static int check_cyclic(routh_run *r) {
             return QD_EXIT_USAGE;
         }
     return QD_EXIT_OK;
-}
-
-/* ---- --set ------------------------------------------------------------------- */
-
-static const qd_expr *subs(routh_run *r, const qd_expr *x) {
-    return cli_subst(r->ctx, &r->subs, x);
-}
-
-static void subs_all(routh_run *r, size_t n, const qd_expr **x) {
-    for (size_t i = 0; i < n; i++)
-        x[i] = subs(r, x[i]);
-}
-
-static int substitute(routh_run *r) {
-    qd_routh *h = r->r;
-    size_t nk = h->nkeep;
-    subs_all(r, h->nign, h->ignvel);
-    subs_all(r, h->nign, h->pdef);
-    subs_all(r, nk * nk, h->M);
-    subs_all(r, nk, h->f);
-    subs_all(r, nk * nk, h->G);
-    h->R = subs(r, h->R);
-    h->R2 = subs(r, h->R2);
-    h->R1 = subs(r, h->R1);
-    h->R0 = subs(r, h->R0);
-    h->Veff = subs(r, h->Veff);
-    h->h = subs(r, h->h);
-    return qd_ctx_status(r->ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->ctx);
 }
 
 /* ---- output ---------------------------------------------------------------- */
@@ -393,16 +364,13 @@ static int emit(routh_run *r) {
 }
 
 static int run(routh_run *r) {
-    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, &r->subs, NULL, &r->mf,
-                                &r->e);
+    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, true, NULL, &r->mf, &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_ignore(r);
     if (rc == QD_EXIT_OK)
         rc = check_cyclic(r);
     if (rc == QD_EXIT_OK && !(r->r = qd_routh_derive(r->ctx, r->mf.model, r->e, r->nign, r->ign)))
         rc = cli_diag_ctx(r->ctx);
-    if (rc == QD_EXIT_OK)
-        rc = substitute(r);
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 

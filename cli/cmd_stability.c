@@ -594,7 +594,7 @@ int cli_cmd_stability(int argc, char **argv) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, NULL, NULL, &r.mf, &r.e);
+    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, false, NULL, &r.mf, &r.e);
     if (rc == QD_EXIT_OK)
         rc = cli_state_init(r.ctx, r.mf.model, &r.st);
     if (rc == QD_EXIT_OK)

@@ -17,7 +17,7 @@
 
 int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size_t nsets) {
     qd_eom_opts opts = {.eliminate = true};
-    int rc = cli_load_derive(r->ctx, file, nsets, sets, NULL, &opts, &r->mf, &r->e);
+    int rc = cli_load_derive(r->ctx, file, nsets, sets, false, &opts, &r->mf, &r->e);
     if (rc != QD_EXIT_OK)
         return rc;
     if (r->e->ncon) {

@@ -51,46 +51,32 @@ int cli_bad_option(const char *arg, const char *usage) {
     return QD_EXIT_USAGE;
 }
 
-int cli_apply_sets(qd_ctx *ctx, qd_model *m, size_t nsets, const char *const *sets,
-                      cli_subs *subs) {
+int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets, bool fix,
+             cli_model_file *mf) {
+    char names[QD_CLI_MAX_LIST][128];
+    qd_param_value given[QD_CLI_MAX_LIST];
+    *mf = (cli_model_file){0};
+    if (nsets > QD_CLI_MAX_LIST) {
+        cli_diag_error("at most %d parameters can be set", QD_CLI_MAX_LIST);
+        return QD_EXIT_USAGE;
+    }
     for (size_t i = 0; i < nsets; i++) {
-        const qd_expr *p, *v;
-        int rc = cli_state_set(ctx, m, sets[i], &p, &v);
+        int rc = cli_state_read_set(ctx, sets[i], names[i], sizeof names[i], &given[i].value);
         if (rc != QD_EXIT_OK)
             return rc;
-        if (!subs)
-            continue;
-        size_t k = 0;
-        while (k < subs->n && subs->from[k] != p)
-            k++;
-        if (k == QD_CLI_MAX_LIST) {
-            cli_diag_error("at most %d parameters can be set", QD_CLI_MAX_LIST);
-            return QD_EXIT_USAGE;
-        }
-        subs->from[k] = p;
-        subs->to[k] = v;
-        subs->n += k == subs->n;
+        given[i].name = names[i];
     }
-    return QD_EXIT_OK;
+    qd_model_opts opts = {.params = given, .nparams = nsets, .fix_params = fix};
+    return cli_model_file_load_opts(ctx, file, &opts, mf);
 }
 
 int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
-                       cli_subs *subs, const qd_eom_opts *opts, cli_model_file *mf,
-                       qd_eom **e) {
+                    bool fix, const qd_eom_opts *opts, cli_model_file *mf, qd_eom **e) {
     *e = NULL;
-    int rc = cli_model_file_load(ctx, file, mf);
-    if (rc == QD_EXIT_OK)
-        rc = cli_apply_sets(ctx, mf->model, nsets, sets, subs);
+    int rc = cli_load(ctx, file, nsets, sets, fix, mf);
     if (rc == QD_EXIT_OK && !(*e = qd_eom_derive_opts(ctx, mf->model, opts)))
         rc = cli_eom_derive_error(ctx, mf);
     return rc;
-}
-
-const qd_expr *cli_subst(qd_ctx *ctx, const cli_subs *subs, const qd_expr *x) {
-    if (!x || !subs->n)
-        return x;
-    const qd_expr *y = qd_subs(ctx, x, subs->n, subs->from, subs->to);
-    return y == x ? x : qd_simplify(ctx, y);
 }
 
 int cli_emit(qd_buf *b, const char *what) {
@@ -132,11 +118,9 @@ static bool has_label(const char *s) {
     return *s == ':';
 }
 
-/* "KEYWORD [LABEL: ]TEXT" appended to the file's text and parsed again; the
- * model (and *all, the text it points into) for the caller to free. */
-static int reparse(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *keyword,
-                   const char *label, const char *text, qd_model **out, char **all) {
-    *out = NULL;
+/* "KEYWORD [LABEL: ]TEXT" added to the model as one more statement. */
+static int add_statement(cli_model_file *mf, const char *opt, const char *keyword,
+                         const char *label, const char *text) {
     if (strchr(text, '\n') || strchr(text, '#')) {
         cli_diag_error("%s takes one statement on one line, without comments", opt);
         return QD_EXIT_USAGE;
@@ -144,53 +128,30 @@ static int reparse(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const
     char lab[80] = "";
     if (!has_label(text))
         snprintf(lab, sizeof lab, "%s: ", label);
-    size_t cap = strlen(mf->text) + strlen(keyword) + strlen(lab) + strlen(text) + 4;
-    if (!(*all = malloc(cap))) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    int base = snprintf(*all, cap, "%s\n%s %s", mf->text, keyword, lab);
-    snprintf(*all + base, cap - (size_t)base, "%s\n", text);
+    qd_buf stmt = QD_BUF_INIT;
+    qd_buf_printf(&stmt, "%s %s", keyword, lab);
+    size_t base = stmt.len;
+    qd_buf_puts(&stmt, text);
     qd_diag d;
     memset(&d, 0, sizeof d);
-    *out = qd_model_parse(ctx, *all, &d);
-    if (*out)
+    qd_status st = stmt.failed ? QD_ERR_NOMEM : qd_model_add_statement(mf->model, qd_buf_str(&stmt), &d);
+    qd_buf_free(&stmt);
+    if (st == QD_OK)
         return QD_EXIT_OK;
-    if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+    if (st == QD_ERR_NOMEM) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    statement_diag(&d, opt, text, (size_t)base);
+    statement_diag(&d, opt, text, base);
     return QD_EXIT_USAGE;
 }
 
-int cli_symmetry(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *text,
-                    const char *label, char *name, size_t cap, const qd_expr **xi) {
-    qd_model *m;
-    char *all = NULL;
-    int rc = reparse(ctx, mf, opt, "symmetry", label, text, &m, &all);
-    if (rc == QD_EXIT_OK) {
-        size_t k = qd_model_nsymmetries(m) - 1;
-        snprintf(name, cap, "%s", qd_model_symmetry_name(m, k));
-        for (size_t j = 0; j < qd_model_ncoords(m); j++)
-            xi[j] = qd_model_symmetry_field(m, k, j);
-        qd_model_free(m);
-    }
-    free(all);
-    return rc;
+int cli_symmetry(cli_model_file *mf, const char *opt, const char *text,
+                 const char *label) {
+    return add_statement(mf, opt, "symmetry", label, text);
 }
 
-int cli_integral(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *text,
-                    const char *label, char *name, size_t cap, const qd_expr **expr) {
-    qd_model *m;
-    char *all = NULL;
-    int rc = reparse(ctx, mf, opt, "integral", label, text, &m, &all);
-    if (rc == QD_EXIT_OK) {
-        size_t k = qd_model_nintegrals(m) - 1;
-        snprintf(name, cap, "%s", qd_model_integral_name(m, k));
-        *expr = qd_model_integral(m, k);
-        qd_model_free(m);
-    }
-    free(all);
-    return rc;
+int cli_integral(cli_model_file *mf, const char *opt, const char *text,
+                 const char *label) {
+    return add_statement(mf, opt, "integral", label, text);
 }

@@ -1,8 +1,8 @@
 /*
  * cli/model_cli.h - what the commands on a model file share beyond the
  * argument loop of args.c: options given once or repeated, a --format chosen
- * from a list, the --set list applied to the model (and kept as
- * substitutions), the errors of deriving the equations, and extra
+ * from a list, the model read with the --set list as its parameter values,
+ * the errors of deriving the equations, and extra
  * statements given on the command line (--symmetry, --integral) read by the
  * model language's own parser.  Every function prints its diagnostics and
  * returns an exit status (QD_EXIT_OK to go on).
@@ -25,25 +25,19 @@ int cli_choice(const char *opt, const char *value, const char *const *names, int
 /* The error for argv[i], an unknown option or one without its value. */
 int cli_bad_option(const char *arg, const char *usage);
 
-/* --set substitutions: each parameter once, with the value of its last --set. */
-typedef struct cli_subs {
-    size_t n;
-    const qd_expr *from[QD_CLI_MAX_LIST], *to[QD_CLI_MAX_LIST];
-} cli_subs;
+/* FILE read and parsed with the --set list as parameter values (qd_model_opts:
+ * parameters defined from a set one follow it); fix: the set parameters
+ * are written into the expressions as numbers (the symbolic commands print
+ * the equations with the values), else they stay symbols with the new
+ * values (numeric commands, generated code). */
+int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets, bool fix,
+             cli_model_file *mf);
 
-/* Apply the --set list to m in order; subs (may be NULL) receives them. */
-int cli_apply_sets(qd_ctx *ctx, qd_model *m, size_t nsets, const char *const *sets,
-                      cli_subs *subs);
-
-/* What most commands start with: FILE read and parsed, the --set list
- * applied (subs may be NULL), the equations derived with opts (NULL: the
- * defaults).  mf and *e belong to the caller, also on error. */
+/* What most commands start with: cli_load, then the equations derived
+ * with opts (NULL: the defaults).  mf and *e belong to the caller, also on
+ * error. */
 int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
-                       cli_subs *subs, const qd_eom_opts *opts, cli_model_file *mf,
-                       qd_eom **e);
-
-/* x with the substitutions made and simplified (x itself when none applies). */
-const qd_expr *cli_subst(qd_ctx *ctx, const cli_subs *subs, const qd_expr *x);
+                    bool fix, const qd_eom_opts *opts, cli_model_file *mf, qd_eom **e);
 
 /* Print b on standard output, or, when building it failed, "cannot print
  * the WHAT"; b is freed. */
@@ -51,15 +45,14 @@ int cli_emit(qd_buf *b, const char *what);
 
 
 /* A symmetry or an integral given on the command line (--symmetry, --integral:
- * what follows the keyword of the statement): the text is appended to the
- * file's as "KEYWORD [label: ]TEXT" and the whole parsed again, so the model
+ * what follows the keyword of the statement), added to the model as the
+ * statement "KEYWORD [label: ]TEXT" (qd_model_add_statement), so the model
  * language's own parser checks it as it would in the file; errors point into
  * text under the option's name opt.  label names it when text has no
- * "NAME:" of its own; name receives the name.  xi gets one component per
- * coordinate (0 for those not moved). */
-int cli_symmetry(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *text,
-                    const char *label, char *name, size_t cap, const qd_expr **xi);
-int cli_integral(qd_ctx *ctx, const cli_model_file *mf, const char *opt, const char *text,
-                    const char *label, char *name, size_t cap, const qd_expr **expr);
+ * "NAME:" of its own.  It is then the model's last symmetry or integral. */
+int cli_symmetry(cli_model_file *mf, const char *opt, const char *text,
+                 const char *label);
+int cli_integral(cli_model_file *mf, const char *opt, const char *text,
+                 const char *label);
 
 #endif

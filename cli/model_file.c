@@ -65,22 +65,30 @@ static int read_text(const char *path, cli_model_file *mf) {
     return QD_EXIT_OK;
 }
 
-int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {
+int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts *opts,
+                             cli_model_file *mf) {
     *mf = (cli_model_file){0};
     int rc = read_text(path, mf);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_diag d;
     memset(&d, 0, sizeof d);
-    mf->model = qd_model_parse(ctx, mf->text, &d);
+    mf->model = qd_model_parse_opts(ctx, mf->text, opts, &d);
     if (mf->model)
         return QD_EXIT_OK;
     if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
         cli_diag_error("out of memory while reading '%s'", mf->path);
         return QD_EXIT_FAIL;
     }
-    cli_diag_show(mf->path, mf->text, &d);
+    if (!d.located) /* not in the text: a value given on the command line */
+        cli_diag_error("--set: %s", d.message);
+    else
+        cli_diag_show(mf->path, mf->text, &d);
     return QD_EXIT_USAGE;
+}
+
+int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {
+    return cli_model_file_load_opts(ctx, path, NULL, mf);
 }
 
 void cli_model_file_free(cli_model_file *mf) {

@@ -18,6 +18,10 @@ typedef struct cli_model_file {
  * returns the exit status: QD_EXIT_USAGE for a file that cannot be read or a
  * model with an error, QD_EXIT_OK with mf->model set otherwise. */
 int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf);
+/* The same, read with the parameter values of opts (the --set list; an
+ * unknown name is reported as --set's error). */
+int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts *opts,
+                             cli_model_file *mf);
 void cli_model_file_free(cli_model_file *mf);
 
 /* An error found after parsing (a singular mass matrix), shown at the

@@ -17,6 +17,7 @@
 
 #include "cli.h"
 #include "eom_out.h"
+#include "model_cli.h"
 #include "qdot/codegen.h"
 
 static int number(const char *opt, const char *v, double *out, bool positive) {
@@ -434,11 +435,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    int rc = cli_model_file_load(c->ctx, a->file, &c->mf);
-    for (size_t i = 0; rc == QD_EXIT_OK && i < a->nsets; i++) {
-        const qd_expr *p, *v;
-        rc = cli_state_set(c->ctx, c->mf.model, a->sets[i], &p, &v);
-    }
+    int rc = cli_load(c->ctx, a->file, a->nsets, a->sets, false, &c->mf);
     if (rc != QD_EXIT_OK)
         return rc;
     c->e = qd_eom_derive(c->ctx, c->mf.model);

@@ -116,34 +116,25 @@ int cli_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_e
     return read_value(ctx, what, what, text, 0, strlen(text), exact, val);
 }
 
-int cli_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
-                 const qd_expr **value) {
+int cli_state_read_set(qd_ctx *ctx, const char *arg, char *name, size_t cap,
+                       const qd_expr **value) {
     const char *eq = strchr(arg, '=');
     if (!eq || eq == arg) {
         cli_diag_error("--set takes NAME=VALUE, not '%s'", arg);
         return QD_EXIT_USAGE;
     }
-    char name[128];
     size_t n = (size_t)(eq - arg);
     while (n && isspace((unsigned char)arg[n - 1]))
         n--;
-    if (n >= sizeof name) {
+    if (n >= cap) {
         cli_diag_error("--set: the name in '%s' is too long", arg);
         return QD_EXIT_USAGE;
     }
     memcpy(name, arg, n);
     name[n] = '\0';
     double v;
-    int rc = read_value(ctx, "--set", "--set", arg, (size_t)(eq + 1 - arg), strlen(eq + 1),
-                        value, &v);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (qd_model_set_param(ctx, m, name, *value) != QD_OK) {
-        cli_diag_error("--set %s: %s", name, qd_ctx_message(ctx));
-        return QD_EXIT_USAGE;
-    }
-    *param = qd_lookup(ctx, name);
-    return QD_EXIT_OK;
+    return read_value(ctx, "--set", "--set", arg, (size_t)(eq + 1 - arg), strlen(eq + 1), value,
+                      &v);
 }
 
 /* ---- --at ------------------------------------------------------------------ */

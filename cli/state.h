@@ -46,9 +46,9 @@ int cli_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const c
 int cli_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_expr **exact,
                     double *val);
 
-/* Apply one --set NAME=VALUE to the model; *param and *value tell which
- * parameter now has which value (for substituting it into the equations). */
-int cli_state_set(qd_ctx *ctx, qd_model *m, const char *arg, const qd_expr **param,
-                 const qd_expr **value);
+/* Read one --set NAME=VALUE: name (cap bytes) and the number, for the
+ * model's parse (qd_model_opts); the name is checked there. */
+int cli_state_read_set(qd_ctx *ctx, const char *arg, char *name, size_t cap,
+                       const qd_expr **value);
 
 #endif

@@ -120,9 +120,6 @@ typedef struct qd_int_proposed {
 } qd_int_proposed;
 
 typedef struct qd_integrals_opts {
-    /* Parameters (or any symbols) replaced before anything is computed. */
-    size_t nsubs;
-    const qd_expr *const *from, *const *to;
     /* Largest solved acceleration (count_ops) substituted symbolically;
      * 0: 4000.  Bigger ones are used only numerically. */
     size_t max_ops;

@@ -36,6 +36,43 @@ typedef struct qd_model qd_model;
  * name known, every parameter valued).  text must stay alive while the model
  * is used. */
 QD_API qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag);
+
+/* A parameter's value given from outside the text (the command line's
+ * --set NAME=VALUE). */
+typedef struct qd_param_value {
+    const char *name;
+    const qd_expr *value;         /* a number */
+} qd_param_value;
+
+/* How to read a model.  Parameter values given here are input to the
+ * parse: the text is read as if `parameters NAME = VALUE` stood in it, so a
+ * parameter defined from NAME (m = 2*k), an initial value and everything
+ * derived later follow.  Of two values for one name the last wins. */
+typedef struct qd_model_opts {
+    const qd_param_value *params;
+    size_t nparams;
+    /* true: each parameter given here, and each defined from one, is a
+     * constant of this model, its number written into every expression in
+     * place of its name (equations print with the value; qd_model_set_param
+     * refuses it); false: it stays a symbol with this value (generated code
+     * keeps it adjustable). */
+    bool fix_params;
+} qd_model_opts;
+
+/* qd_model_parse with options (opts may be NULL).  A name in opts that no
+ * parameter has is an error not in the text: NULL, QD_ERR_ARG in the
+ * context, and diag->line == 0 with "unknown parameter 'kk'; did you mean
+ * 'k'?" in diag->message. */
+QD_API qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
+                                     qd_diag *diag);
+
+/* Add one statement (a line of the language, without comments) to a parsed
+ * model as if it ended the text: a `symmetry`, an `integral`, a constraint,
+ * a definition ...; not `coordinates` or `momenta`, which would change the
+ * model's shape.  The model keeps a copy of text.  QD_OK; else QD_ERR_PARSE
+ * with *diag located in text (line 1 is its first line) and the model as it
+ * was, or QD_ERR_NOMEM. */
+QD_API qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag);
 QD_API void qd_model_free(qd_model *m);
 
 QD_API size_t qd_model_ncoords(const qd_model *m);
@@ -43,8 +80,16 @@ QD_API const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in decla
 QD_API size_t qd_model_nparams(const qd_model *m);
 QD_API const qd_expr *qd_model_param(const qd_model *m, size_t i);
 QD_API const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its number */
-/* Give a parameter another value (the command line's --set); QD_ERR_ARG for
- * an unknown name, with the nearest known name in the context's message. */
+/* The parameter as written: an expression of the earlier parameters
+ * (`m = 2*k` gives 2*k), or the number that replaced it. */
+QD_API const qd_expr *qd_model_param_definition(const qd_model *m, size_t i);
+/* Fixed by qd_model_opts (given with fix_params, or defined from a fixed
+ * one): its number, not its symbol, stands in the model's expressions. */
+QD_API bool qd_model_param_fixed(const qd_model *m, size_t i);
+/* Give a parameter another value after parsing; the parameters defined from
+ * it and the initial values follow.  QD_ERR_ARG for an unknown name (with
+ * the nearest known name in the context's message), a value that is not a
+ * number, or a parameter fixed by qd_model_opts. */
 QD_API qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value);
 
 /* The mechanical content; NULL where the model gives none.  lagrangian is
@@ -122,7 +167,8 @@ QD_API const qd_expr *qd_model_definition(const qd_model *m, const char *name);
  * "U", "H", "dissipation", "coordinates", "momenta", a coordinate's name,
  * "constraint:NAME", "body:NAME" (the body's name on its line),
  * "symmetry:NAME" or "integral:NAME" (the label, or the statement's first
- * item when unnamed).  false when the model has no such statement. */
+ * item when unnamed).  false when the model has no such statement.  For a
+ * statement added by qd_model_add_statement the place is in its text. */
 QD_API bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
 
 /* Locate an error record found after parsing (a derivation's) in the model

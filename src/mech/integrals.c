@@ -29,11 +29,6 @@ static const qd_expr *zero(qd_ctx *ctx) { return qd_int(ctx, 0); }
 static qd_status sys_init(qd_ctx *ctx, const qd_model *m, qd_eom *e, const qd_integrals_opts *o,
                           qd__intsys *s) {
     *s = (qd__intsys){.m = m, .e = e, .n = e->n};
-    if (o) {
-        s->nsubs = o->nsubs;
-        s->from = o->from;
-        s->to = o->to;
-    }
     if (e->nelim) {
         qd_ctx_error(ctx, QD_ERR_ARG, "first integrals of a model with eliminated coordinates "
                                       "are not supported: derive without elimination");
@@ -43,18 +38,18 @@ static qd_status sys_init(qd_ctx *ctx, const qd_model *m, qd_eom *e, const qd_in
         qd_ctx_error(ctx, QD_ERR_ARG, "first integrals need a Lagrangian");
         return QD_ERR_ARG;
     }
-    s->L = qd_simplify(ctx, qd__int_subs(ctx, s, e->L));
-    s->T = qd_model_lagrangian_given(m) ? NULL : qd__int_subs(ctx, s, qd_model_kinetic(m));
-    s->V = qd__int_subs(ctx, s, qd_model_potential(m));
-    s->U = qd__int_subs(ctx, s, qd_model_gen_potential(m));
-    s->D = qd__int_subs(ctx, s, qd_model_dissipation(m));
+    s->L = qd_simplify(ctx, e->L);
+    s->T = qd_model_lagrangian_given(m) ? NULL : qd_model_kinetic(m);
+    s->V = qd_model_potential(m);
+    s->U = qd_model_gen_potential(m);
+    s->D = qd_model_dissipation(m);
     s->Q = calloc(s->n ? s->n : 1, sizeof *s->Q);
     s->p = calloc(s->n ? s->n : 1, sizeof *s->p);
     if (!s->Q || !s->p)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < s->n; j++) {
         const qd_expr *Q = qd_model_force(m, j);
-        s->Q[j] = qd_simplify(ctx, Q ? qd__int_subs(ctx, s, Q) : zero(ctx));
+        s->Q[j] = Q ? qd_simplify(ctx, Q) : zero(ctx);
         s->p[j] = qd_simplify(ctx, qd_diff(ctx, s->L, e->qd[j]));
     }
     if (qd_ctx_status(ctx) != QD_OK)
@@ -161,7 +156,7 @@ static const qd_expr *manifold_term(qd_ctx *ctx, const qd__intsys *s) {
             row = qd_add(ctx, row, qd_mul(ctx, e->A[k * e->n + j], e->qd[j]));
         c = qd_add(ctx, c, qd_mul(ctx, e->con[k].lambda, row));
     }
-    return qd__int_subs(ctx, s, c);
+    return c;
 }
 
 /* E = T + V + U0, U0 = U at zero velocities. */
@@ -292,7 +287,7 @@ static qd_status balance(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
                           : "sum_j Q_j q'_j - dL/dt";
     }
     if (e->ncon) {
-        expected = qd_add(ctx, expected, qd__int_subs(ctx, s, cpower));
+        expected = qd_add(ctx, expected, cpower);
         B->formula = "sum_j Q_j q'_j - sum_j q'_j dD/dq'_j - dL/dt - sum_k lambda_k a0_k";
     }
     B->expected = qd_simplify(ctx, expected);
@@ -339,7 +334,7 @@ qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *name, con
     qd_status st = along_motion_ok(ctx, s, "checking a proposed integral");
     if (st != QD_OK)
         return st;
-    out->expr = qd_simplify(ctx, qd__int_subs(ctx, s, expr));
+    out->expr = qd_simplify(ctx, expr);
     if (!out->expr)
         return qd_ctx_status(ctx);
     if (has_acceleration(s, out->expr)) {

@@ -12,16 +12,11 @@ typedef struct qd__intsys {
     const qd_model *m;
     qd_eom *e;
     size_t n;
-    const qd_expr *L, *T, *V, *U, *D; /* substituted; NULL where the model has none */
+    const qd_expr *L, *T, *V, *U, *D; /* NULL where the model has none */
     const qd_expr **Q;                /* n, never NULL entries */
     const qd_expr **p;                /* n momenta dL/dq'_j, simplified */
     bool solved;                      /* e->acc (and e->mult) usable symbolically */
-    size_t nsubs;
-    const qd_expr *const *from, *const *to;
 } qd__intsys;
-
-/* x with the caller's substitutions made (x may be NULL). */
-const qd_expr *qd__int_subs(qd_ctx *ctx, const qd__intsys *s, const qd_expr *x);
 
 /* Does X (in q, q', q'', t, parameters and the multipliers lambda_k)
  * vanish along the motion?  *shown receives X with the solved

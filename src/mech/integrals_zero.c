@@ -22,12 +22,6 @@
 #define MIN_DEFINED 6
 #define REL_TOL 1e-8
 
-const qd_expr *qd__int_subs(qd_ctx *ctx, const qd__intsys *s, const qd_expr *x) {
-    if (!x || !s->nsubs)
-        return x;
-    return qd_subs(ctx, x, s->nsubs, s->from, s->to);
-}
-
 static uint64_t splitmix(uint64_t *z0) {
     uint64_t z = (*z0 += 0x9e3779b97f4a7c15u);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
@@ -139,18 +133,6 @@ static qd_status points_init(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
     return QD_OK;
 }
 
-/* The substituted symbols take their substituted values, so that the
- * equations of motion (derived before substituting) see the same numbers. */
-static void apply_subs(qd_ctx *ctx, const qd__intsys *s, points *p) {
-    for (size_t i = 0; i < s->nsubs; i++)
-        for (size_t k = 0; k < p->nstate; k++)
-            if (p->syms[k] == s->from[i]) {
-                double v;
-                if (value(ctx, s->to[i], p->nstate, p->syms, p->vals, &v))
-                    p->vals[k] = v;
-            }
-}
-
 /* 1 vanishes, -1 counterexample, 0 undecided. */
 static int numeric_along(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X, points *p) {
     uint64_t seed = qd_expr_hash(X);
@@ -159,7 +141,6 @@ static int numeric_along(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X, poi
     for (int k = 0; k < MAX_TRIES && defined < NPOINTS; k++) {
         for (size_t i = 0; i < p->nstate; i++)
             p->vals[i] = draw(s, p->syms[i], &seed, k);
-        apply_subs(ctx, s, p);
         double *qdd = p->vals + p->nstate, *lam = qdd + n;
         if (qd_eom_eval(ctx, s->e, p->nstate, p->syms, p->vals, NULL, NULL, qdd,
                         s->e->ncon ? lam : NULL, NULL) != QD_OK) {
@@ -185,11 +166,11 @@ static const qd_expr *solved(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X)
     if (from && to) {
         for (size_t j = 0; j < n; j++) {
             from[j] = e->qdd[j];
-            to[j] = qd__int_subs(ctx, s, e->acc[j]);
+            to[j] = e->acc[j];
         }
         for (size_t k = 0; k < m; k++) {
             from[n + k] = e->con[k].lambda;
-            to[n + k] = qd__int_subs(ctx, s, e->mult[k]);
+            to[n + k] = e->mult[k];
         }
         r = qd_subs(ctx, X, n + m, from, to);
     } else {

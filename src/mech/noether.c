@@ -78,7 +78,7 @@ static qd_status field(qd_ctx *ctx, const qd__intsys *s, const qd_expr *const *x
     if (!out->xi)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < s->n; j++) {
-        const qd_expr *x = xi && xi[j] ? qd__int_subs(ctx, s, xi[j]) : qd_int(ctx, 0);
+        const qd_expr *x = xi && xi[j] ? xi[j] : qd_int(ctx, 0);
         out->xi[j] = qd_simplify(ctx, x);
         if (!out->xi[j])
             return qd_ctx_status(ctx);

@@ -212,7 +212,9 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
         }
     for (size_t i = 0; i < m->nparams; i++)
         if (qd__mdl_name_is(s, off, n, qd_expr_name(m->params[i]))) {
-            *out = scalar(m->params[i], off, n);
+            /* a parameter fixed from outside is its number (qd_model_opts) */
+            *out = scalar(m->pfixed[i] ? m->pvals[i] : m->params[i], off, n);
+            p->met_fixed = p->met_fixed || m->pfixed[i];
             return true;
         }
     const qd_expr *mom = qd__mdl_find_momentum(m, s + off, n);

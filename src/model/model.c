@@ -3,6 +3,7 @@
  */
 #include "parser.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,6 +47,7 @@ bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t 
 bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len) {
     where w;
     snprintf(w.what, sizeof w.what, "%s", what);
+    w.src = m->src;
     w.off = off;
     w.len = len;
     return qd__mdl_push((void **)&m->wheres, &m->nwheres, sizeof w, &w);
@@ -86,11 +88,17 @@ void qd_model_free(qd_model *m) {
     free(m->cons);
     free(m->coords);
     free(m->params);
+    free(m->pdefs);
     free(m->pvals);
+    free(m->pfixed);
+    for (size_t i = 0; i < m->nadded; i++)
+        free(m->added[i]);
+    free(m->added);
     free(m->funcs);
     free(m->defs);
     free(m->Q);
     free(m->init);
+    free(m->init_defs);
     free(m->wheres);
     free(m);
 }
@@ -107,24 +115,35 @@ const qd_expr *qd_model_param_value(const qd_model *m, size_t i) {
     return i < m->nparams ? m->pvals[i] : NULL;
 }
 
-qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value) {
+const qd_expr *qd_model_param_definition(const qd_model *m, size_t i) {
+    return i < m->nparams ? m->pdefs[i] : NULL;
+}
+
+bool qd_model_param_fixed(const qd_model *m, size_t i) { return i < m->nparams && m->pfixed[i]; }
+
+/* x with the values of the first n parameters put in. */
+static const qd_expr *valued(const qd_model *m, const qd_expr *x, size_t n) {
+    return x ? qd_subs(m->ctx, x, n, m->params, m->pvals) : NULL;
+}
+
+bool qd__mdl_eval_params(qd_model *m) {
+    for (size_t i = 0; i < m->nparams; i++)
+        if (!(m->pvals[i] = valued(m, m->pdefs[i], i)))
+            return false;
+    for (size_t j = 0; j < 2 * m->ncoords; j++)
+        if (m->init_defs[j] && !(m->init[j] = valued(m, m->init_defs[j], m->nparams)))
+            return false;
+    return true;
+}
+
+qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name) {
     const char **names = malloc((m->nparams + 1) * sizeof *names);
     if (!names) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
     }
-    for (size_t i = 0; i < m->nparams; i++) {
+    for (size_t i = 0; i < m->nparams; i++)
         names[i] = qd_expr_name(m->params[i]);
-        if (!strcmp(names[i], name)) {
-            free(names);
-            if (!value || !qd_is_number(value)) {
-                qd_ctx_error(ctx, QD_ERR_ARG, "the value of '%s' must be a number", name);
-                return QD_ERR_ARG;
-            }
-            m->pvals[i] = value;
-            return QD_OK;
-        }
-    }
     const char *near = qd__mdl_nearest(name, strlen(name), names, m->nparams);
     if (near)
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'; did you mean '%s'?", name, near);
@@ -132,6 +151,43 @@ qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const q
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'", name);
     free(names);
     return QD_ERR_ARG;
+}
+
+qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value) {
+    size_t i = 0;
+    while (i < m->nparams && strcmp(qd_expr_name(m->params[i]), name) != 0)
+        i++;
+    if (i == m->nparams)
+        return qd__mdl_unknown_param(ctx, m, name);
+    if (!value || !qd_is_number(value)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the value of '%s' must be a number", name);
+        return QD_ERR_ARG;
+    }
+    if (m->pfixed[i]) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "'%s' is fixed in this model: it was given when the model "
+                     "was read", name);
+        return QD_ERR_ARG;
+    }
+    const qd_expr *old = m->pdefs[i];
+    m->pdefs[i] = value;
+    const char *bad = NULL;
+    qd_status st = qd__mdl_eval_params(m) ? QD_OK : QD_ERR_NOMEM;
+    for (size_t j = i; st == QD_OK && j < m->nparams && !bad; j++) {
+        double x;
+        if (qd_eval(ctx, m->pvals[j], 0, NULL, NULL, &x) != QD_OK || !isfinite(x))
+            bad = qd_expr_name(m->params[j]);
+    }
+    if (st == QD_OK && !bad)
+        return QD_OK;
+    m->pdefs[i] = old; /* back to the values before */
+    qd__mdl_eval_params(m);
+    if (bad) {
+        qd_ctx_clear_error(ctx);
+        qd_ctx_error(ctx, QD_ERR_ARG, "with this value of '%s', '%s' is not a finite number",
+                     name, bad);
+        return QD_ERR_ARG;
+    }
+    return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
 }
 
 const qd_expr *qd_model_kinetic(const qd_model *m) { return m->T; }
@@ -245,8 +301,8 @@ bool qd_model_where(const qd_model *m, const char *what, qd_diag *out) {
             out->length = w->len;
             out->line = 1;
             size_t start = 0;
-            for (size_t k = 0; k < w->off && m->text[k]; k++)
-                if (m->text[k] == '\n') {
+            for (size_t k = 0; k < w->off && w->src[k]; k++)
+                if (w->src[k] == '\n') {
                     out->line++;
                     start = k + 1;
                 }

@@ -63,6 +63,7 @@ typedef struct def {
 
 typedef struct where {
     char what[64];
+    const char *src;       /* the text off counts in: the model's, or an added statement's */
     size_t off, len;
 } where;
 
@@ -71,7 +72,12 @@ struct qd_model {
     const char *text;
     const qd_expr **coords;
     size_t ncoords;
-    const qd_expr **params, **pvals;
+    /* A parameter is an expression of the earlier ones, as written (pdefs:
+     * m = 2*k), or the number given in its place (qd_model_opts); pvals
+     * holds the numbers, every pdefs[i] evaluated with the pvals before it,
+     * so a parameter follows those it is defined from. */
+    const qd_expr **params, **pdefs, **pvals;
+    bool *pfixed;              /* its number stands in the expressions, not its symbol */
     size_t nparams;
     const char **funcs;        /* declared user functions */
     size_t nfuncs;
@@ -80,6 +86,7 @@ struct qd_model {
     const qd_expr *T, *V, *U, *L, *D;
     const qd_expr **Q;         /* per coordinate */
     const qd_expr **init;      /* per coordinate: [2*i] value, [2*i+1] velocity */
+    const qd_expr **init_defs; /* the same as written, in the parameters */
     where *wheres;
     size_t nwheres;
     const char **con_names;    /* owned copies */
@@ -95,6 +102,9 @@ struct qd_model {
     size_t nsyms;
     integral *ints;
     size_t nints;
+    const char *src;           /* the text being read (the model's or an added statement) */
+    char **added;              /* owned copies of the statements added after the parse */
+    size_t nadded;
 };
 
 typedef struct parser {
@@ -107,6 +117,9 @@ typedef struct parser {
     bool momenta_ok;           /* the momenta may be used (H, integral) */
     bool eps_ok;               /* eps may be used (a symmetry's finite form) */
     int nest;                  /* open brackets and signs: at most QD_MAX_NEST */
+    const qd_model_opts *opts; /* parameter values given from outside, or NULL */
+    bool *set_used;            /* per opts->params entry: a parameter took it */
+    bool met_fixed;            /* a fixed parameter was written in as its number */
 } parser;
 
 /* expr.c */
@@ -189,7 +202,16 @@ const char *qd__mdl_nearest(const char *word, size_t n, const char *const *names
 /* Every name usable in an expression (for suggestions); caller frees. */
 const char **qd__mdl_known_names(const parser *p, size_t *count);
 
+/* stmt.c: one statement at the lexer's token; the checks after the last line */
+bool qd__mdl_statement(parser *p);
+bool qd__mdl_finish(parser *p);
+
 /* model.c */
+/* Every parameter's and initial value's number from the definitions:
+ * pvals[i] = pdefs[i] with the earlier values put in. */
+bool qd__mdl_eval_params(qd_model *m);
+/* QD_ERR_ARG with "unknown parameter 'NAME'; did you mean ...?" in the context. */
+qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name);
 const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n);
 bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len);
 bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len);

@@ -69,7 +69,12 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
     if (!kind && (qd_func_from_name(name, &f) || !strcmp(name, "sqrt") || !strcmp(name, "t") ||
                   !strcmp(name, "pi")))
         kind = "built-in name";
-    for (size_t i = 0; i < sizeof reserved / sizeof reserved[0] && !kind; i++)
+    /* `L = ...` always gives the Lagrangian and a name in an expression is
+     * never an energy, so a parameter L or a function V (V = V(r)) is told
+     * apart by the grammar; a coordinate is not, as it names a statement's
+     * place (qd_model_where) */
+    bool value_name = !strcmp(what, "parameter") || !strcmp(what, "function");
+    for (size_t i = 0; i < sizeof reserved / sizeof reserved[0] && !kind && !value_name; i++)
         if (!strcmp(name, reserved[i]))
             kind = "reserved name";
     if (!kind)
@@ -103,11 +108,13 @@ static bool stmt_coordinates(parser *p) {
         /* the generalized force and initial values grow with the coordinates */
         qd_model *m = p->m;
         const qd_expr *zero = qd_int(C(p), 0), *none = NULL;
-        size_t n = m->ncoords, nq = m->ncoords, ni = 2 * m->ncoords;
+        size_t n = m->ncoords, nq = m->ncoords, ni = 2 * m->ncoords, nd = 2 * m->ncoords;
         if (!qd__mdl_push((void **)&m->coords, &n, sizeof q, &q) ||
             !qd__mdl_push((void **)&m->Q, &nq, sizeof zero, &zero) ||
             !qd__mdl_push((void **)&m->init, &ni, sizeof none, &none) ||
             !qd__mdl_push((void **)&m->init, &ni, sizeof none, &none) ||
+            !qd__mdl_push((void **)&m->init_defs, &nd, sizeof none, &none) ||
+            !qd__mdl_push((void **)&m->init_defs, &nd, sizeof none, &none) ||
             !qd__mdl_add_where(m, name, p->lx.tok.off, p->lx.tok.len))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         m->ncoords = n;
@@ -116,17 +123,36 @@ static bool stmt_coordinates(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
-/* A constant: an expression of numbers, constants and parameters, with the
+/* The value given from outside for the parameter name (the last of its
+ * name wins), or NULL. */
+static const qd_expr *given_value(parser *p, const char *name) {
+    const qd_model_opts *o = p->opts;
+    for (size_t k = o ? o->nparams : 0; k-- > 0;)
+        if (o->params[k].name && !strcmp(o->params[k].name, name)) {
+            for (size_t j = 0; j < o->nparams; j++)
+                if (o->params[j].name && !strcmp(o->params[j].name, name))
+                    p->set_used[j] = true;
+            return o->params[k].value;
+        }
+    return NULL;
+}
+
+/* A constant: an expression of numbers, constants and parameters.  *def is
+ * it as written (or given, when given is not NULL), *out its number with the
  * parameters' values put in. */
-static bool parse_constant(parser *p, const qd_expr **out, const char *what) {
+static bool parse_constant(parser *p, const qd_expr *given, const qd_expr **def,
+                           const qd_expr **out, const char *what) {
     size_t off = p->lx.tok.off;
-    if (!qd__mdl_parse_scalar(p, out, what))
+    if (!qd__mdl_parse_scalar(p, def, what))
         return false;
+    size_t len = p->lx.tok.off > off ? p->lx.tok.off - off : 1;
+    if (given)
+        *def = given;
     const qd_model *m = p->m;
-    *out = qd_subs(C(p), *out, m->nparams, m->params, m->pvals);
+    *out = qd_subs(C(p), *def, m->nparams, m->params, m->pvals);
     const qd_expr *sym;
     if (*out && qd_free_symbols(C(p), *out, &sym, 1) > 0)
-        return qd__mdl_perr(p, off, p->lx.tok.off - off, "a value is a number, e.g. 9.81 or pi/4",
+        return qd__mdl_perr(p, off, len, "a value is a number, e.g. 9.81 or pi/4",
                     "%s must be a number, but it depends on '%s'", what, qd_expr_name(sym));
     if (!*out)
         return qd__mdl_perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
@@ -134,11 +160,20 @@ static bool parse_constant(parser *p, const qd_expr **out, const char *what) {
     double x;
     if (qd_eval(C(p), *out, 0, NULL, NULL, &x) != QD_OK || !isfinite(x)) {
         qd_ctx_clear_error(C(p));
-        return qd__mdl_perr(p, off, p->lx.tok.off > off ? p->lx.tok.off - off : 1,
-                    "give a real number within the range of a double",
+        return qd__mdl_perr(p, off, len, "give a real number within the range of a double",
                     "%s must be a finite real number", what);
     }
     return true;
+}
+
+static bool push_param(parser *p, const qd_expr *sym, const qd_expr *def, const qd_expr *v,
+                       bool fixed) {
+    qd_model *m = p->m;
+    size_t n1 = m->nparams, n2 = m->nparams, n3 = m->nparams;
+    return qd__mdl_push((void **)&m->params, &n1, sizeof sym, &sym) &&
+           qd__mdl_push((void **)&m->pdefs, &n2, sizeof def, &def) &&
+           qd__mdl_push((void **)&m->pfixed, &n3, sizeof fixed, &fixed) &&
+           qd__mdl_push((void **)&m->pvals, &m->nparams, sizeof v, &v);
 }
 
 /* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */
@@ -160,15 +195,16 @@ static bool stmt_parameters(parser *p) {
             return qd__mdl_perr(p, at.off, at.len, hint, "parameter '%s' has no value", name);
         }
         qd__lex_next(&p->lx);
-        const qd_expr *v, *sym;
-        if (!parse_constant(p, &v, "a parameter's value"))
+        const qd_expr *given = given_value(p, name), *def, *v, *sym;
+        p->met_fixed = false;
+        if (!parse_constant(p, given, &def, &v, "a parameter's value"))
             return false;
+        /* defined from a fixed parameter: a number of this model too */
+        bool fixed = (given && p->opts->fix_params) || (!given && p->met_fixed);
         sym = qd_param(C(p), name);
         if (!sym)
             return qd__mdl_perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
-        size_t n = p->m->nparams;
-        if (!qd__mdl_push((void **)&p->m->params, &n, sizeof sym, &sym) ||
-            !qd__mdl_push((void **)&p->m->pvals, &p->m->nparams, sizeof v, &v))
+        if (!push_param(p, sym, def, v, fixed))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
@@ -309,9 +345,10 @@ static bool stmt_initial(parser *p) {
         if (p->lx.tok.kind != TK_EQ)
             return qd__mdl_perr_tok(p, "write: initial q = 0.5, q' = 0", "expected '='");
         qd__lex_next(&p->lx);
-        const qd_expr *v;
-        if (!parse_constant(p, &v, "an initial value"))
+        const qd_expr *def, *v;
+        if (!parse_constant(p, NULL, &def, &v, "an initial value"))
             return false;
+        p->m->init_defs[2 * (size_t)j + order] = def;
         p->m->init[2 * (size_t)j + order] = v;
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
@@ -400,7 +437,11 @@ static bool stmt_definition(parser *p) {
         return false;
     if (!slot && !qd__mdl_fresh_name(p, "definition"))
         return false;
-    if (slot && (explicit_T ? qd_model_where(p->m, "T", NULL) : *slot != NULL)) {
+    /* T adds to the particles'; L is made from T - V - U when not given */
+    bool twice = explicit_T        ? qd_model_where(p->m, "T", NULL)
+                 : slot == &p->m->L ? qd_model_lagrangian_given(p->m)
+                                    : slot && *slot;
+    if (slot && twice) {
         qd_diag first;
         qd_model_where(p->m, name, &first);
         return qd__mdl_perr(p, at.off, at.len, "give it once; add the parts in one expression",
@@ -475,7 +516,7 @@ static const struct stmt_kw *keyword_statement(const lexer *lx, bool newer) {
     return NULL;
 }
 
-static bool statement(parser *p) {
+bool qd__mdl_statement(parser *p) {
     lexer *lx = &p->lx;
     if (lx->tok.kind != TK_IDENT) {
         if (lx->tok.kind == TK_RPAREN || lx->tok.kind == TK_RBRACK)
@@ -502,7 +543,7 @@ static bool statement(parser *p) {
 }
 
 /* After the last line: the Lagrangian and the checks that need the whole file. */
-static bool finish(parser *p) {
+bool qd__mdl_finish(parser *p) {
     qd_model *m = p->m;
     qd_ctx *ctx = C(p);
     if (m->ncoords == 0)
@@ -516,7 +557,7 @@ static bool finish(parser *p) {
                     "give the kinetic energy T = ... (and V = ...), or particles, or L = ..., "
                     "or momenta and H = ...",
                     "neither T nor L is given");
-    if (!m->L) {
+    if (!qd_model_lagrangian_given(m)) {
         const qd_expr *zero = qd_int(ctx, 0);
         m->L = qd_sub(ctx, qd_sub(ctx, m->T, m->V ? m->V : zero), m->U ? m->U : zero);
     }
@@ -525,33 +566,3 @@ static bool finish(parser *p) {
     return true;
 }
 
-qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
-    qd_model *m = calloc(1, sizeof *m);
-    if (!m) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
-        return NULL;
-    }
-    m->ctx = ctx;
-    m->text = text;
-    parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0};
-    qd__lex_init(&p.lx, text);
-    while (!p.failed && p.lx.tok.kind != TK_EOF) {
-        if (p.lx.tok.kind == TK_NEWLINE) {
-            qd__lex_next(&p.lx);
-            continue;
-        }
-        if (statement(&p) && p.lx.tok.kind == TK_NEWLINE)
-            qd__lex_next(&p.lx);
-    }
-    if (!p.failed && p.lx.depth > 0) {
-        size_t open = p.lx.open[p.lx.depth - 1 < LEX_MAX_DEPTH ? p.lx.depth - 1 : 0];
-        qd__mdl_perr(&p, open, 1, "every bracket opened must be closed", "unclosed '%c'", text[open]);
-    }
-    if (!p.failed)
-        finish(&p);
-    if (p.failed) {
-        qd_model_free(m);
-        return NULL;
-    }
-    return m;
-}

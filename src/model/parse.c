@@ -1,0 +1,238 @@
+/*
+ * src/model/parse.c - reading a model: the whole text (qd_model_parse, with
+ * parameter values given from outside), and one more statement added to a
+ * parsed model (qd_model_add_statement).
+ *
+ * Parameter values from outside are input to the parse, not a patch on its
+ * results: `parameters k = 1, m = 2*k` read with k = 5 gives m = 10, and
+ * everything derived from the model sees both.
+ */
+#include "parser.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Statements one per line until the end of the text, then the unclosed
+ * brackets. */
+static void read_statements(parser *p) {
+    while (!p->failed && p->lx.tok.kind != TK_EOF) {
+        if (p->lx.tok.kind == TK_NEWLINE) {
+            qd__lex_next(&p->lx);
+            continue;
+        }
+        if (qd__mdl_statement(p) && p->lx.tok.kind == TK_NEWLINE)
+            qd__lex_next(&p->lx);
+    }
+    if (!p->failed && p->lx.depth > 0) {
+        size_t open = p->lx.open[p->lx.depth - 1 < LEX_MAX_DEPTH ? p->lx.depth - 1 : 0];
+        qd__mdl_perr(p, open, 1, "every bracket opened must be closed", "unclosed '%c'",
+                     p->lx.src[open]);
+    }
+}
+
+/* An error that is not in the text (a value given from outside): not located. */
+static void unlocated(parser *p, const char *message) {
+    p->failed = true;
+    if (!p->diag)
+        return;
+    *p->diag = *qd_ctx_diag(p->ctx); /* the record qd_ctx_error made, with no range */
+    if (!p->diag->message[0])
+        snprintf(p->diag->message, sizeof p->diag->message, "%s", message);
+}
+
+/* Every value given from outside is a number and names a parameter. */
+static bool check_given(parser *p, bool after) {
+    const qd_model_opts *o = p->opts;
+    for (size_t k = 0; o && k < o->nparams; k++) {
+        const qd_param_value *v = &o->params[k];
+        if (!after && (!v->name || !v->value || !qd_is_number(v->value))) {
+            qd_ctx_error(p->ctx, QD_ERR_ARG, "the value of '%s' must be a number",
+                         v->name ? v->name : "(null)");
+            unlocated(p, qd_ctx_message(p->ctx));
+            return false;
+        }
+        if (after && !p->set_used[k]) {
+            qd__mdl_unknown_param(p->ctx, p->m, v->name);
+            unlocated(p, qd_ctx_message(p->ctx));
+            return false;
+        }
+    }
+    return true;
+}
+
+qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
+                              qd_diag *diag) {
+    qd_model *m = calloc(1, sizeof *m);
+    bool *used = opts && opts->nparams ? calloc(opts->nparams, sizeof *used) : NULL;
+    if (!m || (opts && opts->nparams && !used)) {
+        free(m);
+        free(used);
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    m->ctx = ctx;
+    m->text = m->src = text;
+    parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, opts, used, false};
+    qd__lex_init(&p.lx, text);
+    if (check_given(&p, false))
+        read_statements(&p);
+    if (!p.failed)
+        qd__mdl_finish(&p);
+    if (!p.failed)
+        check_given(&p, true);
+    free(used);
+    if (p.failed) {
+        qd_model_free(m);
+        return NULL;
+    }
+    return m;
+}
+
+qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
+    return qd_model_parse_opts(ctx, text, NULL, diag);
+}
+
+/* ---- adding a statement ------------------------------------------------- */
+
+/* What a statement may change, to put the model back when it fails: the
+ * lists only grow (their counts are kept), the energies and the per
+ * coordinate forces and initial values are replaced (copies are kept). */
+typedef struct mark {
+    qd_model m;
+    const qd_expr **percoord; /* Q, then init, then init_defs */
+} mark;
+
+static bool mark_take(const qd_model *m, mark *k) {
+    size_t n = m->ncoords;
+    k->m = *m;
+    k->percoord = malloc((5 * n + 1) * sizeof *k->percoord);
+    if (!k->percoord)
+        return false;
+    memcpy(k->percoord, m->Q, n * sizeof *m->Q);
+    memcpy(k->percoord + n, m->init, 2 * n * sizeof *m->init);
+    memcpy(k->percoord + 3 * n, m->init_defs, 2 * n * sizeof *m->init_defs);
+    return true;
+}
+
+/* Free what the failed statement added and restore the rest. */
+static void mark_restore(qd_model *m, const mark *k) {
+    const qd_model *b = &k->m;
+    for (size_t i = b->ndefs; i < m->ndefs; i++)
+        free((char *)m->defs[i].name);
+    for (size_t i = b->nfuncs; i < m->nfuncs; i++)
+        free((char *)m->funcs[i]);
+    for (size_t i = b->ncons; i < m->ncons; i++)
+        free((char *)m->con_names[i]);
+    for (size_t i = b->nbodies; i < m->nbodies; i++)
+        free((char *)m->bodies[i].name);
+    for (size_t i = b->nreactions; i < m->nreactions; i++)
+        free((char *)m->reactions[i].name);
+    for (size_t i = b->nsyms; i < m->nsyms; i++) {
+        free((char *)m->syms[i].name);
+        free(m->syms[i].xi);
+    }
+    for (size_t i = b->nints; i < m->nints; i++)
+        free((char *)m->ints[i].name);
+    m->nparams = b->nparams;
+    m->nfuncs = b->nfuncs;
+    m->ndefs = b->ndefs;
+    m->nwheres = b->nwheres;
+    m->ncons = b->ncons;
+    m->nbodies = b->nbodies;
+    m->nreactions = b->nreactions;
+    m->nsyms = b->nsyms;
+    m->nints = b->nints;
+    m->T = b->T;
+    m->V = b->V;
+    m->U = b->U;
+    m->L = b->L;
+    m->D = b->D;
+    m->H = b->H;
+    size_t n = m->ncoords;
+    memcpy(m->Q, k->percoord, n * sizeof *m->Q);
+    memcpy(m->init, k->percoord + n, 2 * n * sizeof *m->init);
+    memcpy(m->init_defs, k->percoord + 3 * n, 2 * n * sizeof *m->init_defs);
+}
+
+/* The statements that would change the number of coordinates or momenta,
+ * which every list of the model is sized by. */
+static bool shape_statement(parser *p) {
+    if (p->lx.tok.kind != TK_IDENT)
+        return false;
+    const char *what = qd__lex_is(&p->lx, "coordinates") ? "coordinates"
+                       : qd__lex_is(&p->lx, "momenta")   ? "momenta"
+                                                         : NULL;
+    if (!what)
+        return false;
+    lexer save = p->lx;
+    qd__lex_next(&p->lx);
+    bool eq = p->lx.tok.kind == TK_EQ; /* a definition of that name, not the statement */
+    p->lx = save;
+    if (eq)
+        return false;
+    qd__mdl_perr_tok(p, "declare them in the model's text",
+                     "%s cannot be added to a model already read", what);
+    return true;
+}
+
+static char *copy_text(const char *text) {
+    size_t n = strlen(text);
+    char *c = malloc(n + 1);
+    if (c)
+        memcpy(c, text, n + 1);
+    return c;
+}
+
+/* One statement of text, with nothing after it but blank lines. */
+static void read_one(parser *p) {
+    while (p->lx.tok.kind == TK_NEWLINE)
+        qd__lex_next(&p->lx);
+    if (p->lx.tok.kind == TK_EOF) {
+        qd__mdl_perr(p, 0, 1, "give a statement, e.g. integral m*x'", "no statement to add");
+        return;
+    }
+    if (shape_statement(p) || !qd__mdl_statement(p))
+        return;
+    while (p->lx.tok.kind == TK_NEWLINE)
+        qd__lex_next(&p->lx);
+    if (p->lx.tok.kind != TK_EOF)
+        qd__mdl_perr_tok(p, "add one statement at a time", "a second statement");
+    else if (p->lx.depth > 0)
+        read_statements(p); /* reports the unclosed bracket */
+}
+
+qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
+    qd_ctx *ctx = m->ctx;
+    char *copy = copy_text(text);
+    mark k;
+    if (!copy || !mark_take(m, &k)) {
+        free(copy);
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return QD_ERR_NOMEM;
+    }
+    size_t nadded = m->nadded;
+    bool ok = qd__mdl_push((void **)&m->added, &nadded, sizeof copy, &copy);
+    if (ok) {
+        m->src = copy;
+        parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, NULL, NULL, false};
+        qd__lex_init(&p.lx, copy);
+        read_one(&p);
+        if (!p.failed)
+            qd__mdl_finish(&p);
+        ok = !p.failed;
+        m->src = m->text;
+    }
+    if (ok)
+        m->nadded = nadded;
+    else {
+        mark_restore(m, &k);
+        free(copy);
+    }
+    free(k.percoord);
+    if (ok)
+        return QD_OK;
+    if (qd_ctx_status(ctx) == QD_ERR_NOMEM)
+        return QD_ERR_NOMEM;
+    return QD_ERR_PARSE;
+}
