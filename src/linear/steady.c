@@ -243,16 +243,7 @@ qd_status qd__steady_eval(qd_ctx *ctx, const qd__steady_env *env, const qd_expr 
 
 /* ---- the search ----------------------------------------------------------- */
 
-typedef struct search {
-    qd_ctx *ctx;
-    const qd_steady *s;
-    qd__steady_env env;
-    size_t nu, neq;
-    size_t *uslot;             /* nu: env slot of each unknown */
-    const qd_expr **F;         /* neq: residual expressions (momenta minus their values) */
-    double *pgiven;            /* neq: subtracted from F (0 for the kept rows) */
-    const qd_expr **dF;        /* neq*nu */
-} search;
+typedef qd__steady_search search;
 
 static void search_free(search *S) {
     qd__steady_env_free(&S->env);
@@ -337,19 +328,15 @@ static bool lm_step(const search *S, const double *F, const double *J, double mu
 }
 
 /* The scale of residual k, so that "zero" is relative to the size of the
- * terms that cancel: the sum of its expanded terms' sizes, the given
+ * terms that cancel: the sizes of its terms (qd__steady_magnitude), the given
  * momentum, and |J_k| (|u| + 1) for how far a step could move it. */
 static double scale_of(const search *S, const double *J, const double *u, size_t k) {
-    double s = fabs(S->pgiven[k]), t;
+    double s = fabs(S->pgiven[k]);
     for (size_t i = 0; i < S->nu; i++)
         s += fabs(J[k * S->nu + i]) * (fabs(u[i]) + 1);
-    const qd_expr *ex = qd_expand(S->ctx, S->F[k]);
-    size_t nt = ex && qd_expr_kind(ex) == QD_ADD ? qd_expr_nargs(ex) : ex ? 1 : 0;
-    for (size_t i = 0; i < nt; i++)
-        if (qd_eval(S->ctx, nt > 1 ? qd_expr_arg(ex, i) : ex, S->env.n, S->env.syms,
-                    S->env.vals, &t) == QD_OK && isfinite(t))
-            s += fabs(t);
-    qd_ctx_clear_error(S->ctx);
+    double m = qd__steady_magnitude(S->ctx, &S->env, S->F[k]);
+    if (isfinite(m))
+        s += m;
     return s > 0 ? s : 1;
 }
 
@@ -498,3 +485,20 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     search_free(&S);
     return st;
 }
+
+/* ---- what steady_all.c shares ---------------------------------------------- */
+
+qd_status qd__steady_search_init(search *S, const bool *xfix, const bool *wfix, const bool *pfix,
+                                 const qd_steady_point *pt, size_t nvals,
+                                 const qd_expr *const *syms, const double *vals) {
+    qd_status st = qd__steady_env_init(S->s, nvals, syms, vals, &S->env);
+    return st == QD_OK ? setup(S, xfix, wfix, pfix, pt) : st;
+}
+
+void qd__steady_search_free(search *S) { search_free(S); }
+
+qd_status qd__steady_residual(search *S, const double *u, double *F, double *J) {
+    return residual(S, u, F, J);
+}
+
+qd_status qd__steady_iterate(search *S, double *u, double *res) { return iterate(S, u, res); }
