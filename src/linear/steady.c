@@ -340,12 +340,46 @@ static double scale_of(const search *S, const double *J, const double *u, size_t
     return s > 0 ? s : 1;
 }
 
+static double abs_sum(const double *v, size_t n) {
+    double s = 0;
+    for (size_t i = 0; i < n; i++)
+        s += fabs(v[i]);
+    return s;
+}
+
+/* Levenberg-Marquardt creeps up on a root at 0 (a rate that must vanish, as
+ * for a free particle) and stops at round-off, 1e-15, not 0; a "steady
+ * motion" turning at 1e-15 rad/s then has a stiffness of order 1e-30 whose
+ * sign is noise.  An unknown that tiny is set to 0 when the residual there is
+ * no larger. */
+static qd_status snap_zeros(search *S, double *u, const double *u0, double *F, double *F2) {
+    qd_status st = residual(S, u, F, NULL);
+    for (size_t i = 0; st == QD_OK && i < S->nu; i++) {
+        if (u[i] == 0 || fabs(u[i]) > 1e-10 * fmax(1, fabs(u0[i])))
+            continue;
+        double keep = u[i], r = abs_sum(F, S->neq);
+        u[i] = 0;
+        qd_status s2 = residual(S, u, F2, NULL);
+        if (s2 == QD_OK && abs_sum(F2, S->neq) <= r) {
+            memcpy(F, F2, S->neq * sizeof *F);
+            continue;
+        }
+        qd_ctx_clear_error(S->ctx);
+        u[i] = keep;
+        st = residual(S, u, F, NULL);
+    }
+    return st;
+}
+
 static qd_status iterate(search *S, double *u, double *res_out) {
     size_t nu = S->nu, neq = S->neq;
     double *F = calloc(neq + 1, sizeof *F), *J = calloc(neq * nu + 1, sizeof *J);
     double *A = calloc(nu * nu + 1, sizeof *A), *d = calloc(nu + 1, sizeof *d);
     double *u2 = calloc(nu + 1, sizeof *u2), *F2 = calloc(neq + 1, sizeof *F2);
-    qd_status st = F && J && A && d && u2 && F2 ? QD_OK : QD_ERR_NOMEM;
+    double *u0 = calloc(nu + 1, sizeof *u0);
+    qd_status st = F && J && A && d && u2 && F2 && u0 ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK)
+        memcpy(u0, u, nu * sizeof *u0);
     if (st == QD_OK)
         st = residual(S, u, F, J);
     double mu = 1e-3, f0 = st == QD_OK ? norm2(F, neq) : 0;
@@ -378,6 +412,8 @@ static qd_status iterate(search *S, double *u, double *res_out) {
             done = mu > 1e12;
         }
     }
+    if (st == QD_OK && nu > 0)
+        st = snap_zeros(S, u, u0, F, F2);
     if (st == QD_OK)
         st = residual(S, u, F, J);
     double worst = 0;
@@ -401,6 +437,7 @@ static qd_status iterate(search *S, double *u, double *res_out) {
     free(d);
     free(u2);
     free(F2);
+    free(u0);
     return st;
 }
 
