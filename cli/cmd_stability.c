@@ -329,7 +329,8 @@ static int guess_item(stab_run *r, const char *what, const char *na, const char 
                    !strncmp(na + 2, q, len);
         if (!rate && !mom)
             continue;
-        if (r->wfix[c] || r->pfix[c]) {
+        if (r->wfix[c] || (mom && r->pfix[c])) {   /* a rate whose momentum is given is
+                                                       still unknown: guessing it is fine */
             cli_diag_error("%s: %.*s is given (--omega, --momentum or --driven): a guess "
                            "cannot change it", what, (int)(nb - na), na);
             return QD_EXIT_USAGE;
