@@ -94,7 +94,11 @@ typedef struct qd_steady_point {
  * guesses (or the given values are not one: an over-determined residual that
  * does not vanish), QD_ERR_SINGULAR when the equations are not defined there
  * (a coordinate singularity: 0/0).  On success every entry of pt is set and
- * *residual (may be NULL) is the largest final residual. */
+ * *residual (may be NULL) is the largest final residual, each relative to the
+ * size of the terms that make it up (sin and cos counted as 1, their bound:
+ * at th = pi a residual whose every term carries sin(pi) = 1.2e-16 is zero).
+ * An unknown the search leaves at round-off (|u| <= 1e-10 of its start) is
+ * set to an exact 0 when the residual there is no larger. */
 QD_API qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                          const qd_expr *const *syms, const double *vals, const bool *xfix,
                          const bool *wfix, const bool *pfix, qd_steady_point *pt,
