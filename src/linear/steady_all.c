@@ -585,23 +585,86 @@ void qd_steady_set_free(qd_steady_set *set) {
     memset(set, 0, sizeof *set);
 }
 
+/* The search from the start, last: its message is the one left when nothing
+ * is found; a failure is no error once the structured search found some. */
+static qd_status from_start(qd__steady_search *S, found *f, const double *u0, double *u) {
+    memcpy(u, u0, S->nu * sizeof *u);
+    double res = 0;
+    qd_status st = qd__steady_iterate(S, u, &res);
+    if (st == QD_OK || ((st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) && f->count)) {
+        qd_ctx_clear_error(S->ctx);
+        st = st == QD_OK ? polish_add(S, f, u) : QD_OK;
+    }
+    if ((st == QD_OK || st == QD_ERR_NUMERIC) && f->count == 0 && f->nsingular) {
+        qd_ctx_clear_error(S->ctx);
+        qd_ctx_error(S->ctx, QD_ERR_SINGULAR, "the only steady motion%s found %s at a singular "
+                     "point of the coordinates (a cyclic coordinate that moves nothing there): "
+                     "choose coordinates regular there", f->nsingular > 1 ? "s" : "",
+                     f->nsingular > 1 ? "are" : "is");
+        st = QD_ERR_SINGULAR;
+    }
+    return st;
+}
+
+/* The unknowns' starting values and which are angles; each cyclic
+ * coordinate's inertia dp_c/dc'. */
+static qd_status prepare_found(qd__steady_search *S, found *f, double *u0, bool *angle) {
+    const qd_steady *s = S->s;
+    for (size_t i = 0; i < S->nu; i++) {
+        u0[i] = S->env.vals[S->uslot[i]];
+        angle[i] = !unknown_is_rate(S, i) && is_angle(s, S->uslot[i] - S->env.x);
+    }
+    *f = (found){.nu = S->nu, .angle = angle, .mcc = calloc(s->ncyc + 1, sizeof *f->mcc)};
+    if (!f->mcc)
+        return QD_ERR_NOMEM;
+    for (size_t c = 0; c < s->ncyc; c++)
+        if (!(f->mcc[c] = qd_diff(S->ctx, s->mom[c], s->cycd[c])))
+            return qd_ctx_status(S->ctx);
+    return QD_OK;
+}
+
+/* out from the motions found, nearest the start first. */
+static qd_status ordered(qd__steady_search *S, const found *f, const qd_steady_point *start,
+                         const bool *xfix, const bool *wfix, const bool *pfix,
+                         const bool *pguess, qd_steady_set *out) {
+    const qd_steady *s = S->s;
+    bool *xangle = calloc(s->nkeep + 1, sizeof *xangle);
+    if (!xangle)
+        return QD_ERR_NOMEM;
+    for (size_t j = 0; j < s->nkeep; j++)
+        xangle[j] = is_angle(s, j);
+    qd_status st = fill(S, f, out);
+    if (st == QD_OK) {
+        order_key o = {s, start, xfix, wfix, pfix, pguess, xangle};
+        by_distance(&o, out);
+    }
+    out->nsingular = f->nsingular;
+    free(xangle);
+    return st;
+}
+
+static qd_steady_point copy_point(const qd_steady *s, const qd_steady_point *from) {
+    qd_steady_point p = {calloc(s->nkeep + 1, sizeof *p.x), calloc(s->ncyc + 1, sizeof *p.w),
+                         calloc(s->ncyc + 1, sizeof *p.p)};
+    if (p.x && p.w && p.p) {
+        memcpy(p.x, from->x, s->nkeep * sizeof *p.x);
+        memcpy(p.w, from->w, s->ncyc * sizeof *p.w);
+        memcpy(p.p, from->p, s->ncyc * sizeof *p.p);
+    }
+    return p;
+}
+
 qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                              const qd_expr *const *syms, const double *vals, const bool *xfix,
                              const bool *wfix, const bool *pfix, const bool *pguess,
                              const qd_steady_point *start, qd_steady_set *out) {
     memset(out, 0, sizeof *out);
-    qd_steady_point pt = {calloc(s->nkeep + 1, sizeof(double)), calloc(s->ncyc + 1, sizeof(double)),
-                          calloc(s->ncyc + 1, sizeof(double))};
+    qd_steady_point pt = copy_point(s, start);
     qd__steady_search S = {.ctx = ctx, .s = s};
     found f = {0};
     double *u0 = NULL, *u = NULL;
     bool *angle = NULL, any_guess = false;
     qd_status st = pt.x && pt.w && pt.p ? QD_OK : QD_ERR_NOMEM;
-    if (st == QD_OK) {
-        memcpy(pt.x, start->x, s->nkeep * sizeof *pt.x);
-        memcpy(pt.w, start->w, s->ncyc * sizeof *pt.w);
-        memcpy(pt.p, start->p, s->ncyc * sizeof *pt.p);
-    }
     for (size_t c = 0; pguess && c < s->ncyc; c++)
         any_guess = any_guess || pguess[c];
     if (st == QD_OK && any_guess)
@@ -612,50 +675,14 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
         u0 = calloc(S.nu + 1, sizeof *u0);
         u = calloc(S.nu + 1, sizeof *u);
         angle = calloc(S.nu + 1, sizeof *angle);
-        st = u0 && u && angle ? QD_OK : QD_ERR_NOMEM;
+        st = u0 && u && angle ? prepare_found(&S, &f, u0, angle) : QD_ERR_NOMEM;
     }
-    for (size_t i = 0; st == QD_OK && i < S.nu; i++) {
-        u0[i] = S.env.vals[S.uslot[i]];
-        angle[i] = !unknown_is_rate(&S, i) && is_angle(s, S.uslot[i] - S.env.x);
-    }
-    f = (found){.nu = S.nu, .angle = angle, .mcc = calloc(s->ncyc + 1, sizeof *f.mcc)};
-    if (st == QD_OK && !f.mcc)
-        st = QD_ERR_NOMEM;
-    for (size_t c = 0; st == QD_OK && c < s->ncyc; c++)
-        if (!(f.mcc[c] = qd_diff(ctx, s->mom[c], s->cycd[c])))
-            st = qd_ctx_status(ctx);
     if (st == QD_OK && S.nu)
         st = structured(&S, pfix, angle, &f, u0, &out->complete);
-    /* the search from the start last: its message is the one left when
-     * nothing is found */
-    if (st == QD_OK) {
-        memcpy(u, u0, S.nu * sizeof *u);
-        double res = 0;
-        st = qd__steady_iterate(&S, u, &res);
-        if (st == QD_OK || (st == QD_ERR_NUMERIC && f.count)) {
-            qd_ctx_clear_error(ctx);
-            st = st == QD_OK ? polish_add(&S, &f, u) : QD_OK;
-        }
-    }
-    if ((st == QD_OK || st == QD_ERR_NUMERIC) && f.count == 0 && f.nsingular) {
-        qd_ctx_clear_error(ctx);
-        qd_ctx_error(ctx, QD_ERR_SINGULAR, "the only steady motion%s found %s at a singular "
-                     "point of the coordinates (a cyclic coordinate that moves nothing there): "
-                     "choose coordinates regular there", f.nsingular > 1 ? "s" : "",
-                     f.nsingular > 1 ? "are" : "is");
-        st = QD_ERR_SINGULAR;
-    }
-    bool *xangle = st == QD_OK ? calloc(s->nkeep + 1, sizeof *xangle) : NULL;
-    for (size_t j = 0; xangle && j < s->nkeep; j++)
-        xangle[j] = is_angle(s, j);
     if (st == QD_OK)
-        st = xangle ? fill(&S, &f, out) : QD_ERR_NOMEM;
-    if (st == QD_OK) {
-        order_key o = {s, &pt, xfix, wfix, pfix, pguess, xangle};
-        by_distance(&o, out);
-    }
-    free(xangle);
-    out->nsingular = f.nsingular;
+        st = from_start(&S, &f, u0, u);
+    if (st == QD_OK)
+        st = ordered(&S, &f, &pt, xfix, wfix, pfix, pguess, out);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "out of memory finding the steady motions");
