@@ -396,15 +396,30 @@ static qd_status bisect(line *L, found *f, double *u, size_t k, double a, double
     return on_line(L, (a + b) / 2, u) ? polish_add(L->S, f, u) : QD_OK;
 }
 
+/* Is kept residual k at round-off, against the size of its terms? */
+static bool at_noise(line *L, size_t k) {
+    double m = qd__steady_magnitude(L->S->ctx, &L->S->env, L->S->F[k]);
+    return fabs(L->F[k]) <= COEFF_TOL * (isfinite(m) ? m : 0);
+}
+
+static qd_status family(line *L) {
+    const qd_expr *q = L->S->env.syms[L->S->uslot[L->ifree]];
+    qd_ctx_error(L->S->ctx, QD_ERR_ARG,
+                 "every value of %s is a steady motion here (the kept equations vanish "
+                 "whatever it is): give %s with --at", qd_expr_name(q), qd_expr_name(q));
+    return QD_ERR_ARG;
+}
+
 static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool angle,
                             bool *complete) {
     qd__steady_search *S = L->S;
-    size_t nk = S->s->nkeep;
+    size_t nk = S->s->nkeep, nsamples = 0, nzero = 0;
     double g = fabs(u0[L->ifree]), lo = angle ? -PI : -10 * fmax(1, g);
     double step = (angle ? 2 * PI : 20 * fmax(1, g)) / SCAN_POINTS;
     double *prev = calloc(nk + 1, sizeof *prev), tp = 0;
+    bool *pzero = calloc(nk + 1, sizeof *pzero), *zero = calloc(nk + 1, sizeof *zero);
     bool have = false;
-    qd_status st = prev ? QD_OK : QD_ERR_NOMEM;
+    qd_status st = prev && pzero && zero ? QD_OK : QD_ERR_NOMEM;
     memcpy(u, u0, S->nu * sizeof *u);
     /* half a step off the grid, one past the end: a root at an end of an
      * angle's range (th = pi) is crossed, not sampled */
@@ -414,17 +429,28 @@ static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool
             have = false;
             continue;
         }
+        bool all = true;
+        for (size_t k = 0; k < nk; k++)
+            all = (zero[k] = at_noise(L, k)) && all;
+        nsamples++;
+        nzero += all;
+        /* a sign change between two values at round-off is noise, not a root */
         for (size_t k = 0; have && st == QD_OK && k < nk; k++)
-            if ((prev[k] < 0) != (L->F[k] < 0)) {
+            if ((prev[k] < 0) != (L->F[k] < 0) && !(pzero[k] && zero[k])) {
                 st = bisect(L, f, u, k, tp, t, prev[k]);
                 on_line(L, t, u);   /* L->F back to the sample at t */
             }
         memcpy(prev, L->F, nk * sizeof *prev);
+        memcpy(pzero, zero, nk * sizeof *pzero);
         tp = t;
         have = true;
     }
+    if (st == QD_OK && nsamples > 1 && nzero == nsamples)
+        st = family(L);
     *complete = angle;
     free(prev);
+    free(pzero);
+    free(zero);
     return st;
 }
 

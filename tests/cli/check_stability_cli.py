@@ -244,6 +244,10 @@ def errors(qdot):
     check('momentum with driven exits 2', rc == 2, err)
     rc, _, err = run(qdot, pl, '--driven', "theta' = 1", '--at', 'r=3')
     check('not steady exits 1', rc == 1 and 'not a steady motion' in err, err)
+    # n = 1 driven at m Omega^2 = k: every radius is steady (B09's borderline), a family
+    # said as such rather than one radius picked by the starting value (or many by noise)
+    rc, _, err = run(qdot, pl, '--driven', "theta' = 1", '--set', 'n=1', '--guess', 'r=2')
+    check('driven family exits 2', rc == 2 and 'every value of r' in err, err)
     rc, out, err = run(qdot, pl, '--ignore', 'theta', '--at', 'r=1')
     check('text output', rc == 0 and 'verdict: stable' in out and 'frequencies: 2.236' in out,
           out + err)
