@@ -9,7 +9,12 @@
  *   --omega "phi'=2"            free case: the steady rate instead of p
  *   --at "theta=pi/3"           kept coordinates held at these values: the rate
  *                               (or momentum) that makes them steady is found
- *   --guess "r=1"               starting values of the search, not held
+ *   --guess "r=1"               starting values of the search, not held: kept
+ *                               coordinates, rates ("phi'=2") or momenta
+ *                               ("p_phi=3", turned into rates at the start)
+ * Every steady motion for the values given is found (qd_steady_find_all:
+ * the two precessions of a top) and each is analysed; the first printed is
+ * the one nearest the starting values.
  * Values are expressions in the parameters (--set applies first).
  */
 #include "cli.h"
@@ -43,10 +48,12 @@ typedef struct stab_run {
     size_t ncyc;
     const qd_expr *cyc[MAX_LIST];
     bool *xfix, wfix[MAX_LIST], pfix[MAX_LIST];
+    bool pguess[MAX_LIST], wguess[MAX_LIST];  /* --guess gave p_Q or Q' */
     bool *xseen;                     /* named in the --guess or --at being read */
-    qd_steady_point pt;
-    double res;
-    qd_stability an;
+    qd_steady_point pt;              /* the given values and the starting guesses */
+    qd_steady_set set;               /* every steady motion found */
+    qd_stability *an;                /* set.count analyses */
+    size_t nsingular;                /* motions left out: singular coordinates there */
 } stab_run;
 
 static const char usage_text[] =
@@ -308,6 +315,41 @@ static int at_item(stab_run *r, const char *what, const char *na, const char *nb
     return rc;
 }
 
+/* --guess: a kept coordinate, a rate "Q'" or a momentum "p_Q", none held. */
+static int guess_item(stab_run *r, const char *what, const char *na, const char *nb,
+                      const char *va, const char *vb) {
+    const char *q_end = nb;
+    while (q_end > na && q_end[-1] == '\'')
+        q_end--;
+    for (size_t c = 0; c < r->ncyc; c++) {
+        const char *q = qd_expr_name(r->cyc[c]);
+        size_t len = strlen(q);
+        bool rate = q_end < nb && (size_t)(q_end - na) == len && !strncmp(q, na, len);
+        bool mom = q_end == nb && (size_t)(nb - na) == len + 2 && !strncmp(na, "p_", 2) &&
+                   !strncmp(na + 2, q, len);
+        if (!rate && !mom)
+            continue;
+        if (r->wfix[c] || (mom && r->pfix[c])) {   /* a rate whose momentum is given is
+                                                       still unknown: guessing it is fine */
+            cli_diag_error("%s: %.*s is given (--omega, --momentum or --driven): a guess "
+                           "cannot change it", what, (int)(nb - na), na);
+            return QD_EXIT_USAGE;
+        }
+        if (r->wguess[c] || r->pguess[c]) {
+            cli_diag_error("%s: a starting value for %s is given twice", what, q);
+            return QD_EXIT_USAGE;
+        }
+        *(rate ? &r->wguess[c] : &r->pguess[c]) = true;
+        return value_of(r, what, va, vb, rate ? &r->pt.w[c] : &r->pt.p[c]);
+    }
+    if (q_end < nb || (coord_index(r, na, nb) < 0 && !strncmp(na, "p_", 2))) {
+        cli_diag_error("%s: %.*s is not the rate or momentum of a cyclic coordinate (the kept "
+                       "coordinates are at rest)", what, (int)(nb - na), na);
+        return QD_EXIT_USAGE;
+    }
+    return at_item(r, what, na, nb, va, vb);
+}
+
 /* ---- the pipeline ---------------------------------------------------------- */
 
 /* The starting values: the model's `initial` values, else 0 for coordinates
@@ -365,22 +407,55 @@ static int prepare(stab_run *r, const stab_args *a) {
     if (rc == QD_EXIT_OK && a->momentum)
         rc = each_item(r, "--momentum", a->momentum, false, momentum_item);
     if (rc == QD_EXIT_OK && a->guess)
-        rc = each_item(r, "--guess", a->guess, false, at_item);
+        rc = each_item(r, "--guess", a->guess, false, guess_item);
     memset(r->xseen, 0, (nk + 1) * sizeof *r->xseen);
     if (rc == QD_EXIT_OK && a->at)
         rc = each_item(r, "--at", a->at, false, at_item);
     return rc;
 }
 
-static int solve(stab_run *r) {
-    qd_status st = qd_steady_find(r->ctx, r->s, r->st.n, r->st.syms, r->st.vals, r->xfix,
-                                  r->wfix, r->pfix, &r->pt, &r->res);
-    if (st == QD_OK)
-        st = qd_stability_analyze(r->ctx, r->s, r->st.n, r->st.syms, r->st.vals, &r->pt, &r->an);
-    if (st == QD_OK)
-        return QD_EXIT_OK;
+static int fail(stab_run *r, qd_status st) {
     cli_diag_error("%s", qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
     return st == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+}
+
+/* Every steady motion and its analysis; motions where the coordinates are
+ * singular (the analysis cannot be made) are left out and counted, unless
+ * there is no other. */
+static int solve(stab_run *r) {
+    qd_status st = qd_steady_find_all(r->ctx, r->s, r->st.n, r->st.syms, r->st.vals, r->xfix,
+                                      r->wfix, r->pfix, r->pguess, &r->pt, &r->set);
+    if (st != QD_OK)
+        return fail(r, st);
+    r->nsingular = r->set.nsingular;
+    r->an = calloc(r->set.count + 1, sizeof *r->an);
+    if (!r->an)
+        return QD_EXIT_FAIL;
+    size_t kept = 0;
+    for (size_t k = 0; k < r->set.count; k++) {
+        st = qd_stability_analyze(r->ctx, r->s, r->st.n, r->st.syms, r->st.vals, &r->set.pts[k],
+                                  &r->an[kept]);
+        if (st == QD_ERR_SINGULAR && (kept > 0 || k + 1 < r->set.count)) {
+            qd_ctx_clear_error(r->ctx);
+            r->nsingular++;
+            continue;
+        }
+        if (st != QD_OK)
+            return fail(r, st);
+        qd_steady_point t = r->set.pts[kept];
+        r->set.pts[kept] = r->set.pts[k];
+        r->set.pts[k] = t;
+        r->set.residual[kept++] = r->set.residual[k];
+    }
+    if (kept == 0)   /* every one singular: the last error stands */
+        return fail(r, qd_ctx_status(r->ctx) != QD_OK ? qd_ctx_status(r->ctx) : QD_ERR_SINGULAR);
+    for (size_t k = kept; k < r->set.count; k++) {
+        free(r->set.pts[k].x);
+        free(r->set.pts[k].w);
+        free(r->set.pts[k].p);
+    }
+    r->set.count = kept;
+    return QD_EXIT_OK;
 }
 
 /* ---- output ------------------------------------------------------------------ */
@@ -430,22 +505,41 @@ static void put_roots(qd_buf *b, const qd_modes_result *m) {
     }
 }
 
-static void text_out(stab_run *r, qd_buf *b) {
+/* How many motions, said once before them when there is more than one (or
+ * some were left out). */
+static void text_count(stab_run *r, qd_buf *b) {
+    size_t n = r->set.count;
+    if (n > 1)
+        qd_buf_printf(b, "%zu steady motions for these values%s; the first is the one nearest "
+                         "the starting values\n", n, r->set.complete ? "" : " (found from the "
+                         "starting values: there may be others)");
+    if (r->nsingular)
+        qd_buf_printf(b, "(%zu more at singular points of the coordinates, left out)\n",
+                      r->nsingular);
+}
+
+static void text_motion(stab_run *r, qd_buf *b, size_t k) {
     const qd_steady *s = r->s;
-    const qd_stability *an = &r->an;
-    qd_buf_printf(b, "model: %s\n", r->mf.path);
-    qd_buf_printf(b, "steady motion (%s):\n", s->driven ? "rates maintained: V_eff = V - T0"
-                                                        : "momenta free: V_eff = V + K, Routhian");
+    const qd_stability *an = &r->an[k];
+    const qd_steady_point *pt = &r->set.pts[k];
+    if (r->set.count > 1)
+        qd_buf_printf(b, "steady motion %zu of %zu (%s):\n", k + 1, r->set.count,
+                      s->driven ? "rates maintained: V_eff = V - T0"
+                                : "momenta free: V_eff = V + K, Routhian");
+    else
+        qd_buf_printf(b, "steady motion (%s):\n", s->driven ? "rates maintained: V_eff = V - T0"
+                                                            : "momenta free: V_eff = V + K, "
+                                                              "Routhian");
     for (size_t j = 0; j < s->nkeep; j++) {
         qd_buf_printf(b, "  %s = ", qd_expr_name(s->keep[j]));
-        put_num(b, r->pt.x[j]);
+        put_num(b, pt->x[j]);
         qd_buf_puts(b, r->xfix[j] ? "  (given)\n" : "\n");
     }
     for (size_t c = 0; c < s->ncyc; c++) {
         qd_buf_printf(b, "  %s = ", qd_expr_name(s->cycd[c]));
-        put_num(b, r->pt.w[c]);
+        put_num(b, pt->w[c]);
         qd_buf_printf(b, "%s, p_%s = ", r->wfix[c] ? " (given)" : "", qd_expr_name(s->cyc[c]));
-        put_num(b, r->pt.p[c]);
+        put_num(b, pt->p[c]);
         qd_buf_puts(b, r->pfix[c] ? " (given)\n" : "\n");
     }
     qd_buf_puts(b, "effective potential: V_eff = ");
@@ -482,6 +576,15 @@ static void text_out(stab_run *r, qd_buf *b) {
     qd_buf_printf(b, "verdict: %s\n", an->verdict);
 }
 
+static void text_out(stab_run *r, qd_buf *b) {
+    qd_buf_printf(b, "model: %s\n", r->mf.path);
+    text_count(r, b);
+    for (size_t k = 0; k < r->set.count; k++) {
+        qd_buf_puts(b, k ? "\n" : "");
+        text_motion(r, b, k);
+    }
+}
+
 static void json_tri(cli_json *j, int v) {
     if (v < 0)
         cli_json_null(j);
@@ -513,9 +616,56 @@ static void json_roots(cli_json *j, const char *key, const qd_modes_result *m) {
     cli_json_end_array(j);
 }
 
+static void json_steady(cli_json *j, const qd_steady *s, const qd_steady_point *pt) {
+    cli_json_key(j, "steady");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < s->nkeep; k++) {
+        cli_json_key(j, qd_expr_name(s->keep[k]));
+        cli_json_number(j, pt->x[k]);
+    }
+    for (size_t c = 0; c < s->ncyc; c++) {
+        cli_json_key(j, qd_expr_name(s->cycd[c]));
+        cli_json_number(j, pt->w[c]);
+        char name[160];
+        snprintf(name, sizeof name, "p_%s", qd_expr_name(s->cyc[c]));
+        cli_json_key(j, name);
+        cli_json_number(j, pt->p[c]);
+    }
+    cli_json_end_object(j);
+}
+
+/* Every motion in short: where it is, its frequencies and verdicts. */
+static void json_all(cli_json *j, stab_run *r) {
+    cli_json_key(j, "steady_motions");
+    cli_json_begin_array(j);
+    for (size_t k = 0; k < r->set.count; k++) {
+        const qd_stability *an = &r->an[k];
+        cli_json_begin_object(j);
+        json_steady(j, r->s, &r->set.pts[k]);
+        cli_json_key(j, "residual");
+        cli_json_number(j, r->set.residual[k]);
+        cli_json_key(j, "frequencies");
+        cli_json_begin_array(j);
+        for (size_t i = 0; i < an->nfreq; i++)
+            cli_json_number(j, an->freq[i]);
+        cli_json_end_array(j);
+        json_roots(j, "roots", &an->ordinary);
+        cli_json_key(j, "stable");
+        json_tri(j, an->ordinary_stable);
+        cli_json_key(j, "secular");
+        json_tri(j, an->secular_stable);
+        cli_json_key(j, "verdict");
+        cli_json_string(j, an->verdict);
+        cli_json_end_object(j);
+    }
+    cli_json_end_array(j);
+    cli_json_key(j, "complete");
+    cli_json_bool(j, r->set.complete);
+}
+
 static void json_out(stab_run *r, qd_buf *b) {
     const qd_steady *s = r->s;
-    const qd_stability *an = &r->an;
+    const qd_stability *an = &r->an[0];
     cli_json j;
     cli_json_init(&j, b);
     cli_json_begin_object(&j);
@@ -523,23 +673,9 @@ static void json_out(stab_run *r, qd_buf *b) {
     cli_json_string(&j, r->mf.path);
     cli_json_key(&j, "kind");
     cli_json_string(&j, s->driven ? "driven" : "free");
-    cli_json_key(&j, "steady");
-    cli_json_begin_object(&j);
-    for (size_t k = 0; k < s->nkeep; k++) {
-        cli_json_key(&j, qd_expr_name(s->keep[k]));
-        cli_json_number(&j, r->pt.x[k]);
-    }
-    for (size_t c = 0; c < s->ncyc; c++) {
-        cli_json_key(&j, qd_expr_name(s->cycd[c]));
-        cli_json_number(&j, r->pt.w[c]);
-        char name[160];
-        snprintf(name, sizeof name, "p_%s", qd_expr_name(s->cyc[c]));
-        cli_json_key(&j, name);
-        cli_json_number(&j, r->pt.p[c]);
-    }
-    cli_json_end_object(&j);
+    json_steady(&j, s, &r->set.pts[0]);
     cli_json_key(&j, "residual");
-    cli_json_number(&j, r->res);
+    cli_json_number(&j, r->set.residual[0]);
     cli_json_key(&j, "Veff");
     cli_json_expr(&j, r->ctx, s->Veff);
     json_matrix(&j, "M", an->lin.M, an->n);
@@ -569,6 +705,7 @@ static void json_out(stab_run *r, qd_buf *b) {
     }
     cli_json_key(&j, "verdict");
     cli_json_string(&j, an->verdict);
+    json_all(&j, r);
     cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
     if (!cli_json_ok(&j))
@@ -603,7 +740,10 @@ int cli_cmd_stability(int argc, char **argv) {
         rc = solve(&r);
     if (rc == QD_EXIT_OK)
         rc = emit(&r, a.json);
-    qd_stability_free(&r.an);
+    for (size_t k = 0; r.an && k < r.set.count; k++)
+        qd_stability_free(&r.an[k]);
+    free(r.an);
+    qd_steady_set_free(&r.set);
     free(r.xfix);
     free(r.xseen);
     free(r.pt.x);

@@ -94,11 +94,53 @@ typedef struct qd_steady_point {
  * guesses (or the given values are not one: an over-determined residual that
  * does not vanish), QD_ERR_SINGULAR when the equations are not defined there
  * (a coordinate singularity: 0/0).  On success every entry of pt is set and
- * *residual (may be NULL) is the largest final residual. */
+ * *residual (may be NULL) is the largest final residual, each relative to the
+ * size of the terms that make it up (sin and cos counted as 1, their bound:
+ * at th = pi a residual whose every term carries sin(pi) = 1.2e-16 is zero).
+ * An unknown the search leaves at round-off (|u| <= 1e-10 of its start) is
+ * set to an exact 0 when the residual there is no larger. */
 QD_API qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                          const qd_expr *const *syms, const double *vals, const bool *xfix,
                          const bool *wfix, const bool *pfix, qd_steady_point *pt,
                          double *residual);
+
+/* Every steady motion for the given values, found from the structure of
+ * the equations: when one unknown is left free once the given momenta fix
+ * the other rates (linearly), the kept residuals along it are
+ *   - a polynomial of degree <= 2 when the free unknown is a rate (T is
+ *     quadratic in the velocities): its real roots, every one (the fast and
+ *     the slow precession of a top);
+ *   - a function of the free coordinate otherwise: every sign change over
+ *     its range ((-pi, pi] for an angle, else [-10, 10] widened to the
+ *     guess), bisected;
+ * each polished by the search of qd_steady_find and checked by its relative
+ * residual.  The search from the starting values is added too, so nothing
+ * qd_steady_find would find is lost.  xfix, wfix, pfix as for
+ * qd_steady_find; start holds the given values and the starting guesses;
+ * pguess (may be NULL) marks momenta in start->p that are starting values
+ * for the rates of those coordinates (converted at the starting point), not
+ * held.  The motions come nearest the start first.  Motions where a cyclic
+ * coordinate moves nothing (dp_c/dc' = 0: theta = 0 of spherical
+ * coordinates) are left out and counted; QD_ERR_SINGULAR when only such are
+ * found.  QD_ERR_NUMERIC when
+ * there is none (the message of the search from the start), QD_ERR_ARG when
+ * every value of the free rate is steady (a family: give it). */
+typedef struct qd_steady_set {
+    size_t count;
+    qd_steady_point *pts;     /* count points; x, w, p malloc'd each */
+    double *residual;         /* count: each one's largest relative residual */
+    bool complete;            /* the structured search applied: every motion is listed
+                                 (within the range, for a coordinate that is not an angle) */
+    size_t nsingular;         /* motions left out: at a singular point of the coordinates,
+                                 where a cyclic coordinate moves nothing (dp_c/dc' = 0) */
+} qd_steady_set;
+
+QD_API qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+                                    const qd_expr *const *syms, const double *vals,
+                                    const bool *xfix, const bool *wfix, const bool *pfix,
+                                    const bool *pguess, const qd_steady_point *start,
+                                    qd_steady_set *out);
+QD_API void qd_steady_set_free(qd_steady_set *set);
 
 /* The stability of a steady motion. */
 typedef struct qd_stability {

@@ -147,14 +147,23 @@ static qd_status frequencies(qd_stability *out) {
     return QD_OK;
 }
 
-/* Does the undamped problem have a root at zero? */
+/* Does the undamped problem have a root at zero?  A double root s = 0 (the
+ * drift of a free particle) may come out of the eigen-solver split into
+ * +-delta with delta of order sqrt(eps): a pair that close to 0 and to each
+ * other is that double root. */
 static bool zero_root(const qd_modes_result *r) {
     double big = 0;
     for (size_t i = 0; i < r->neig; i++)
         big = fmax(big, hypot(r->eig_re[i], r->eig_im[i]));
-    for (size_t i = 0; i < r->neig; i++)
-        if (hypot(r->eig_re[i], r->eig_im[i]) <= QD_MODES_ZERO_TOL * (big > 0 ? big : 1))
+    big = big > 0 ? big : 1;
+    for (size_t i = 0; i < r->neig; i++) {
+        double m = hypot(r->eig_re[i], r->eig_im[i]);
+        if (m <= QD_MODES_ZERO_TOL * big)
             return true;
+        for (size_t j = 0; j < r->neig && m <= 1e-6 * big; j++)
+            if (j != i && hypot(r->eig_re[j], r->eig_im[j]) <= 1e-6 * big)
+                return true;
+    }
     return false;
 }
 
@@ -194,8 +203,10 @@ static const char *verdict(const qd_stability *st) {
     if (o == 0)
         return "unstable: a small disturbance grows exponentially";
     if (zero_root(&st->ordinary))
-        return "borderline: a zero frequency (V_eff's Hessian is singular); linear theory "
-               "cannot decide, higher-order terms or a neighbouring steady motion do";
+        return "borderline (neutral): a zero frequency, a double root s = 0 (V_eff's Hessian "
+               "is singular): a disturbance can drift, growing linearly as a free particle "
+               "does, not exponentially; linear theory cannot decide, higher-order terms or a "
+               "neighbouring steady motion do";
     return "borderline: a repeated frequency (double root, secular growth at linear order); "
            "linear theory cannot decide";
 }

@@ -243,16 +243,7 @@ qd_status qd__steady_eval(qd_ctx *ctx, const qd__steady_env *env, const qd_expr 
 
 /* ---- the search ----------------------------------------------------------- */
 
-typedef struct search {
-    qd_ctx *ctx;
-    const qd_steady *s;
-    qd__steady_env env;
-    size_t nu, neq;
-    size_t *uslot;             /* nu: env slot of each unknown */
-    const qd_expr **F;         /* neq: residual expressions (momenta minus their values) */
-    double *pgiven;            /* neq: subtracted from F (0 for the kept rows) */
-    const qd_expr **dF;        /* neq*nu */
-} search;
+typedef qd__steady_search search;
 
 static void search_free(search *S) {
     qd__steady_env_free(&S->env);
@@ -337,20 +328,47 @@ static bool lm_step(const search *S, const double *F, const double *J, double mu
 }
 
 /* The scale of residual k, so that "zero" is relative to the size of the
- * terms that cancel: the sum of its expanded terms' sizes, the given
+ * terms that cancel: the sizes of its terms (qd__steady_magnitude), the given
  * momentum, and |J_k| (|u| + 1) for how far a step could move it. */
 static double scale_of(const search *S, const double *J, const double *u, size_t k) {
-    double s = fabs(S->pgiven[k]), t;
+    double s = fabs(S->pgiven[k]);
     for (size_t i = 0; i < S->nu; i++)
         s += fabs(J[k * S->nu + i]) * (fabs(u[i]) + 1);
-    const qd_expr *ex = qd_expand(S->ctx, S->F[k]);
-    size_t nt = ex && qd_expr_kind(ex) == QD_ADD ? qd_expr_nargs(ex) : ex ? 1 : 0;
-    for (size_t i = 0; i < nt; i++)
-        if (qd_eval(S->ctx, nt > 1 ? qd_expr_arg(ex, i) : ex, S->env.n, S->env.syms,
-                    S->env.vals, &t) == QD_OK && isfinite(t))
-            s += fabs(t);
-    qd_ctx_clear_error(S->ctx);
+    double m = qd__steady_magnitude(S->ctx, &S->env, S->F[k]);
+    if (isfinite(m))
+        s += m;
     return s > 0 ? s : 1;
+}
+
+static double abs_sum(const double *v, size_t n) {
+    double s = 0;
+    for (size_t i = 0; i < n; i++)
+        s += fabs(v[i]);
+    return s;
+}
+
+/* Levenberg-Marquardt creeps up on a root at 0 (a rate that must vanish, as
+ * for a free particle) and stops at round-off, 1e-15, not 0; a "steady
+ * motion" turning at 1e-15 rad/s then has a stiffness of order 1e-30 whose
+ * sign is noise.  An unknown that tiny is set to 0 when the residual there is
+ * no larger. */
+static qd_status snap_zeros(search *S, double *u, const double *u0, double *F, double *F2) {
+    qd_status st = residual(S, u, F, NULL);
+    for (size_t i = 0; st == QD_OK && i < S->nu; i++) {
+        if (u[i] == 0 || fabs(u[i]) > 1e-10 * fmax(1, fabs(u0[i])))
+            continue;
+        double keep = u[i], r = abs_sum(F, S->neq);
+        u[i] = 0;
+        qd_status s2 = residual(S, u, F2, NULL);
+        if (s2 == QD_OK && abs_sum(F2, S->neq) <= r) {
+            memcpy(F, F2, S->neq * sizeof *F);
+            continue;
+        }
+        qd_ctx_clear_error(S->ctx);
+        u[i] = keep;
+        st = residual(S, u, F, NULL);
+    }
+    return st;
 }
 
 static qd_status iterate(search *S, double *u, double *res_out) {
@@ -358,7 +376,10 @@ static qd_status iterate(search *S, double *u, double *res_out) {
     double *F = calloc(neq + 1, sizeof *F), *J = calloc(neq * nu + 1, sizeof *J);
     double *A = calloc(nu * nu + 1, sizeof *A), *d = calloc(nu + 1, sizeof *d);
     double *u2 = calloc(nu + 1, sizeof *u2), *F2 = calloc(neq + 1, sizeof *F2);
-    qd_status st = F && J && A && d && u2 && F2 ? QD_OK : QD_ERR_NOMEM;
+    double *u0 = calloc(nu + 1, sizeof *u0);
+    qd_status st = F && J && A && d && u2 && F2 && u0 ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK)
+        memcpy(u0, u, nu * sizeof *u0);
     if (st == QD_OK)
         st = residual(S, u, F, J);
     double mu = 1e-3, f0 = st == QD_OK ? norm2(F, neq) : 0;
@@ -391,6 +412,8 @@ static qd_status iterate(search *S, double *u, double *res_out) {
             done = mu > 1e12;
         }
     }
+    if (st == QD_OK && nu > 0)
+        st = snap_zeros(S, u, u0, F, F2);
     if (st == QD_OK)
         st = residual(S, u, F, J);
     double worst = 0;
@@ -414,6 +437,7 @@ static qd_status iterate(search *S, double *u, double *res_out) {
     free(d);
     free(u2);
     free(F2);
+    free(u0);
     return st;
 }
 
@@ -498,3 +522,20 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     search_free(&S);
     return st;
 }
+
+/* ---- what steady_all.c shares ---------------------------------------------- */
+
+qd_status qd__steady_search_init(search *S, const bool *xfix, const bool *wfix, const bool *pfix,
+                                 const qd_steady_point *pt, size_t nvals,
+                                 const qd_expr *const *syms, const double *vals) {
+    qd_status st = qd__steady_env_init(S->s, nvals, syms, vals, &S->env);
+    return st == QD_OK ? setup(S, xfix, wfix, pfix, pt) : st;
+}
+
+void qd__steady_search_free(search *S) { search_free(S); }
+
+qd_status qd__steady_residual(search *S, const double *u, double *F, double *J) {
+    return residual(S, u, F, J);
+}
+
+qd_status qd__steady_iterate(search *S, double *u, double *res) { return iterate(S, u, res); }

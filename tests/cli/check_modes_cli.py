@@ -16,7 +16,13 @@ Expected values are textbook results, not output of the code under test:
   - restricted three-body problem (Desloge ch. 62): five equilibria; L4 stable
     for mu = 0.01, unstable for mu = 0.1 (27 mu (1 - mu) < 1);
   - the motion from --initial for the double pendulum: q(t) from the normal
-    coordinates equals the closed-form superposition.
+    coordinates equals the closed-form superposition;
+  - the ring with no --about: the equilibrium chosen is the equilateral one
+    (from the model's initial state, or of lowest V without one), its w^2
+    from SymPy's Hessian, and the choice is said;
+  - the bead on a spinning hoop (Desloge ch. 50 Ex. 1 eq. 39): w^2 =
+    omega^2 sin^2 th0, labelled exact only at the parameters' values when th0
+    = acos(g/(a omega^2)) is numeric, g/a - omega^2 in the parameters at 0.
 Prints "N passed, N failed"; exit 1 on failure.
 """
 import argparse
@@ -24,6 +30,7 @@ import json
 import math
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import sympy as sp
@@ -114,6 +121,78 @@ def ring(qdot):
     check("ring verdict", d["stable"] is None and d["verdict"] == "borderline")
 
 
+def ring_sympy_omega2(k, m, a):
+    """w^2 of the spring triangle about the equilateral configuration, from SymPy: the
+    Hessian of V = (k/2) sum (d_ij - a)^2 at side a, divided by m (Desloge ch. 66)."""
+    xs = sp.symbols("x1 y1 x2 y2 x3 y3", real=True)
+    K_, A_ = sp.symbols("k a", positive=True)
+    P = [(xs[0], xs[1]), (xs[2], xs[3]), (xs[4], xs[5])]
+    V = sum(K_ / 2 * (sp.sqrt((P[i][0] - P[j][0])**2 + (P[i][1] - P[j][1])**2) - A_)**2
+            for i, j in ((0, 1), (1, 2), (2, 0)))
+    at = dict(zip(xs, (0, 0, A_, 0, A_ / 2, sp.sqrt(3) * A_ / 2)))
+    H = sp.hessian(V, xs).subs(at).subs({K_: k, A_: a})
+    return sorted(float(sp.nsimplify(ev)) / m for ev, mult in H.eigenvals().items()
+                  for _ in range(mult))
+
+
+def ring_auto(qdot, tmp):
+    # No --about: the model's initial state (nearly equilateral) leads to the equilateral
+    # triangle, a minimum of V up to the rigid motions; before, the first of the listed
+    # equilibria was taken: a collinear one with w^2 = -1.5 (unstable).
+    want = ring_sympy_omega2(3, 2, 1)
+    check("ring sympy", all(abs(x - y) < 1e-12 for x, y in
+                            zip(want, [0, 0, 0, 9 / 4, 9 / 4, 9 / 2])), str(want))
+    model = EX / "ring_three_masses.qd"
+    no_init = tmp / "ring_no_initial.qd"
+    no_init.write_text("".join(l for l in model.read_text().splitlines(True)
+                               if not l.startswith("initial")))
+    for f, why in ((model, "nearest the model's initial state"), (no_init, "lowest V")):
+        rc, out, err = run(qdot, "modes", str(f), "--set", "k=3", "--set", "m=2",
+                           "--format", "json")
+        check(f"ring auto rc {f.name}", rc == 0, err)
+        if rc:
+            continue
+        d = json.loads(out)
+        w2 = [m["omega2"] for m in d["modes"]]
+        check(f"ring auto w2 {f.name}", all(abs(x - y) < 1e-9 for x, y in zip(w2, want)),
+              str(w2))
+        q = d["equilibrium"]
+        sides = [math.dist((q[f"x{i}"], q[f"y{i}"]), (q[f"x{j}"], q[f"y{j}"]))
+                 for i, j in ((1, 2), (2, 3), (3, 1))]
+        check(f"ring auto equilateral {f.name}", all(close(x, 1) for x in sides), str(sides))
+        c = d.get("choice", {})
+        check(f"ring auto choice {f.name}", why in c.get("reason", "") and c.get("others", 0) > 0,
+              str(c))
+    rc, out, err = run(qdot, "modes", str(model))
+    check("ring auto note", rc == 0 and "qdot: note: modes about" in err and
+          "other equilibria" in err and "w^2 = 3," in out, err)
+
+
+def exact_label(qdot):
+    # Bead on a hoop spinning at omega (Desloge ch. 50 Ex. 1 eq. 39): about cos th0 =
+    # g/(a omega^2) the frequency^2 is omega^2 sin^2 th0.  That equilibrium is acos of a
+    # number made of the parameters' values, so w^2 is exact only at these values; about
+    # th = 0 (omega^2 < g/a) it is g/a - omega^2 in the parameters.
+    f = str(EX / "bead_spinning_hoop.qd")
+    rc, out, err = run(qdot, "modes", f)
+    check("hoop label", rc == 0 and "w^2 (exact, mode" not in out and
+          "w^2 (exact at these parameter values, mode 1)" in out, out + err)
+    rc, out, err = run(qdot, "modes", f, "--format", "json")
+    d = json.loads(out)
+    g, a, om = 9.81, 0.8, 4.0
+    want = om**2 * (1 - (g / (a * om**2))**2)
+    mode = d["modes"][0]
+    check("hoop w2", close(mode["omega2"], want), str(mode))
+    check("hoop exact value", mode.get("omega2_exact_in_parameters") is False and
+          close(float(sp.sympify(mode["omega2_exact"])), want, 1e-12), str(mode))
+    rc, out, err = run(qdot, "modes", f, "--set", "omega=2", "--format", "json")
+    mode = json.loads(out)["modes"][0]
+    G, A, W = sp.symbols("g a omega", positive=True)
+    e = sp.sympify(mode.get("omega2_exact", "0"), locals={"g": G, "a": A, "omega": W})
+    check("hoop symbolic", mode.get("omega2_exact_in_parameters") is True and
+          sp.simplify(e - (G / A - W**2)) == 0, str(mode))
+
+
 def rod(qdot):
     rc, out, err = run(qdot, "modes", str(EX / "rod_elastic_string.qd"), "--set", "a=2",
                        "--format", "json")
@@ -175,8 +254,10 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     qdot = Path(ap.parse_args().build) / "qdot"
-    for f in (double_pendulum, ring, rod, three_body, usage):
+    for f in (double_pendulum, ring, rod, three_body, usage, exact_label):
         f(qdot)
+    with tempfile.TemporaryDirectory() as tmp:
+        ring_auto(qdot, Path(tmp))
     print(f"{results['passed']} passed, {results['failed']} failed")
     sys.exit(1 if results["failed"] else 0)
 

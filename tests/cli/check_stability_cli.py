@@ -115,6 +115,98 @@ def heavy_top(qdot):
     check('euler singular', rc == 1 and 'not defined' in err, err)
 
 
+def torus(qdot):
+    # examples/torus.qd (m = 1, R = 2, a = 1/2): both equators steady at any rate w; free
+    # p_phi: V_eff'' = +-m a w^2 (R +- a), so about the outer equator frequency^2 =
+    # w^2 (R + a)/a and about the inner one s^2 = +w^2 (R - a)/a (Britannica sec. 5-6).
+    R, a, w = 2.0, 0.5, 2.0
+    d = js(qdot, 'torus.qd', '--ignore', 'phi', '--at', 'th=pi', '--omega', "phi'=2")
+    check('torus inner steady', close(d['steady']['p_phi'], (R - a) ** 2 * w), d['steady'])
+    check('torus inner unstable', d['stable'] is False and d['secular'] is False, d['verdict'])
+    check('torus inner growth', close(max(re for re, _ in d['roots']), w * ((R - a) / a) ** 0.5),
+          d['roots'])
+    d = js(qdot, 'torus.qd', '--ignore', 'phi', '--at', 'th=pi', '--momentum', 'p_phi=3')
+    check('torus inner from p', close(d['steady']["phi'"], 3 / (R - a) ** 2), d['steady'])
+    # a false steady motion still fails, at th = 1 and just off the inner equator
+    for th in ('1', 'pi + 1e-6'):
+        rc, _, err = run(qdot, str(EXAMPLES / 'torus.qd'), '--ignore', 'phi', '--at',
+                         'th=%s' % th, '--omega', "phi'=2")
+        check('torus th=%s refused' % th, rc == 1 and 'not a steady motion' in err, err)
+    # the rate given, th free: both equators, every sign change over (-pi, pi]
+    d = js(qdot, 'torus.qd', '--ignore', 'phi', '--omega', "phi'=2")
+    ths = sorted(abs(m['steady']['th']) for m in d['steady_motions'])
+    check('torus both equators', len(ths) == 2 and close(ths[0] + 1, 1) and
+          close(ths[1], math.pi) and d['complete'] is True, d['steady_motions'])
+    outer = [m for m in d['steady_motions'] if abs(m['steady']['th']) < 1][0]
+    check('torus outer', outer['stable'] is True and
+          close(outer['frequencies'][0] ** 2, w * w * (R + a) / a), outer)
+    # no rate at the inner equator: every rate is steady there (a family), exit 2
+    rc, _, err = run(qdot, str(EXAMPLES / 'torus.qd'), '--ignore', 'phi', '--at', 'th=pi')
+    check('torus family', rc == 2 and "every value of phi'" in err, err)
+
+
+def precessions(qdot):
+    # The heavy top (heavy_top.qd: M = 1.2, h = 0.3, A = 0.5, C = 0.8, g = 9.81) at theta0 =
+    # 0.5 with C n = p_psi = 24: A cos(th) phi'^2 - C n phi' + M g h = 0 (Goldstein 3rd ed.
+    # sec. 5.7; Britannica sec. 5 (29)-(30), seed 004): the slow and the fast precession.
+    A, C, Mgh, th, Cn = 0.5, 0.8, 1.2 * 9.81 * 0.3, 0.5, 24.0
+    a, b, c = A * math.cos(th), -Cn, Mgh
+    disc = math.sqrt(b * b - 4 * a * c)
+    slow, fast = (-b - disc) / (2 * a), (-b + disc) / (2 * a)
+    d = js(qdot, 'heavy_top.qd', '--ignore', 'phi,psi', '--at', 'theta=0.5',
+           '--momentum', 'p_psi=24')
+    rates = sorted(m['steady']["phi'"] for m in d['steady_motions'])
+    check('two precessions', len(rates) == 2 and close(rates[0], slow) and
+          close(rates[1], fast), (rates, slow, fast))
+    check('precessions complete', d['complete'] is True)
+    check('slow first', close(d['steady']["phi'"], slow), d['steady'])
+    for m in d['steady_motions']:   # n = w3 = psi' + phi' cos th is C n / C for both
+        s = m['steady']
+        check('spin kept', close(s["psi'"] + s["phi'"] * math.cos(th), Cn / C), s)
+    rc, out, err = run(qdot, str(EXAMPLES / 'heavy_top.qd'), '--ignore', 'phi,psi', '--at',
+                       'theta=0.5', '--momentum', 'p_psi=24')
+    check('precessions text', rc == 0 and out.count('steady motion ') == 2 and
+          '2 steady motions' in out, out + err)
+    # the rate of spin given instead: (A - C) cos(th) phi'^2 - C psi' phi' + M g h = 0
+    d = js(qdot, 'heavy_top.qd', '--ignore', 'phi,psi', '--at', 'theta=0.5', '--omega',
+           "psi'=30")
+    a2, b2 = (A - C) * math.cos(th), -C * 30
+    d2 = math.sqrt(b2 * b2 - 4 * a2 * c)
+    want = sorted(((-b2 - d2) / (2 * a2), (-b2 + d2) / (2 * a2)))
+    rates = sorted(m['steady']["phi'"] for m in d['steady_motions'])
+    check('precessions from the spin rate', len(rates) == 2 and close(rates[0], want[0]) and
+          close(rates[1], want[1]), (rates, want))
+    # --guess orders them: a rate or a momentum near the fast precession puts it first
+    for g in ("phi'=50", 'p_phi=27'):
+        d = js(qdot, 'heavy_top.qd', '--ignore', 'phi,psi', '--at', 'theta=0.5',
+               '--momentum', 'p_psi=24', '--guess', g)
+        check('guess %s' % g, close(d['steady']["phi'"], fast), d['steady'])
+    # a kept coordinate and a rate guessed together: theta found from both momenta
+    p_phi = A * slow * math.sin(th) ** 2 + Cn * math.cos(th)
+    d = js(qdot, 'heavy_top.qd', '--ignore', 'phi,psi', '--momentum',
+           'p_phi=%r, p_psi=24' % p_phi, '--guess', "theta=0.45, phi'=0.15")
+    check('guess theta and rate', close(d['steady']['theta'], th) and
+          close(d['steady']["phi'"], slow), d['steady'])
+    rc, _, err = run(qdot, str(EXAMPLES / 'heavy_top.qd'), '--ignore', 'phi,psi', '--at',
+                     'theta=0.5', '--momentum', 'p_psi=24', '--guess', 'p_psi=3')
+    check('guess of a given value exits 2', rc == 2 and 'given' in err, err)
+
+
+def free_particle(qdot):
+    # A free particle at rest on r = 1: phi' = 0 is a double root of m r sin^2 phi'^2 = 0, the
+    # linearization has a double zero root (linear drift): borderline, neither "stable" nor
+    # "grows exponentially" (docs: borderline for zero roots).
+    for extra in ((), ('--momentum', 'p_phi=0')):
+        d = js(qdot, 'free_particle_spherical.qd', '--ignore', 'phi', '--at',
+               'r=1, theta=pi/2', *extra)
+        check('free particle rate 0 %s' % (extra,), d['steady']["phi'"] == 0, d['steady'])
+        check('free particle borderline %s' % (extra,), d['stable'] is None and
+              'linearly' in d['verdict'], d['verdict'])
+    d = js(qdot, 'torus.qd', '--ignore', 'phi', '--at', 'th=pi', '--momentum', 'p_phi=0')
+    check('torus at rest borderline', d['stable'] is None and 'grows exponentially' not in
+          d['verdict'], d['verdict'])
+
+
 def bowl(qdot):
     # B13: p = 1; omega = 0.5 stable; omega = 2 ordinarily stable, secularly unstable; with
     # k = 0.1 max Re s = -0.024976544 and +0.049630741.
@@ -152,6 +244,10 @@ def errors(qdot):
     check('momentum with driven exits 2', rc == 2, err)
     rc, _, err = run(qdot, pl, '--driven', "theta' = 1", '--at', 'r=3')
     check('not steady exits 1', rc == 1 and 'not a steady motion' in err, err)
+    # n = 1 driven at m Omega^2 = k: every radius is steady (B09's borderline), a family
+    # said as such rather than one radius picked by the starting value (or many by noise)
+    rc, _, err = run(qdot, pl, '--driven', "theta' = 1", '--set', 'n=1', '--guess', 'r=2')
+    check('driven family exits 2', rc == 2 and 'every value of r' in err, err)
     rc, out, err = run(qdot, pl, '--ignore', 'theta', '--at', 'r=1')
     check('text output', rc == 0 and 'verdict: stable' in out and 'frequencies: 2.236' in out,
           out + err)
@@ -161,7 +257,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
     qdot = str(Path(ap.parse_args().build) / 'qdot')
-    for fn in (power_law, conical, top, heavy_top, bowl, errors):
+    for fn in (power_law, conical, top, heavy_top, torus, precessions, free_particle, bowl,
+               errors):
         try:
             fn(qdot)
         except Exception as exc:  # a crash or bad JSON

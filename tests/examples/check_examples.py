@@ -247,6 +247,17 @@ def _(q, v, t, p):
             -2 * cos(th) / sin(th) * thd * phd]
 
 
+@example('torus', ['th', 'phi'])
+def _(q, v, t, p):
+    # A bead on a torus (derived in the model's header): from T = (m/2)(a^2 th'^2 + rho^2 phi'^2),
+    # rho = R + a cos th: m a^2 th'' = -m a rho sin th phi'^2,
+    # d/dt(m rho^2 phi') = 0  =>  phi'' = 2 a sin th th' phi'/rho
+    R, a = p['R'], p['a']
+    th, thd, phd = q['th'], v['th'], v['phi']
+    rho = R + a * cos(th)
+    return [-rho * sin(th) * phd**2 / a, 2 * a * sin(th) * thd * phd / rho]
+
+
 @example('kepler_polar', ['r', 'theta'], ranges={'r': (0.3, 3.0)})
 def _(q, v, t, p):
     # Desloge ch. 58-59 (B T13): m (r'' - r th'^2) = -k/r^2;  d/dt(m r^2 th') = 0

@@ -409,6 +409,115 @@ static void test_ellipsoidal_bowl(void **state) {
     }
 }
 
+/* ---- a bead on a torus: both equators are steady at any rate --------------------------- */
+
+/* examples/torus.qd: m a^2 th'' = -m a (R + a cos th) sin th phi'^2, so th = 0 and th = pi
+ * are steady for every phi' = w; free p_phi: V_eff'' = +-m a w^2 (R +- a) (Britannica
+ * "Dynamics" sec. 5-6, seed 004: stable where V + K is a minimum). */
+static const char torus[] =
+    "coordinates th, phi\n"
+    "parameters m = 3/2, R = 2, a = 1/2\n"
+    "particle m at ((R + a*cos(th))*cos(phi), (R + a*cos(th))*sin(phi), a*sin(th))\n";
+
+/* At th = pi every term of the th residual carries sin(pi) = 1.2e-16: the residual must be
+ * judged against the terms' sizes with sin counted as 1, not against themselves (the
+ * "relative residual 0.5" that refused the inner equator). */
+static void test_torus_inner_equator(void **state) {
+    const double m = 1.5, R = 2, a = 0.5, w = 2;
+    run r;
+    start(state, &r, torus, "phi", false);
+    r.x[0] = QT_PI;
+    r.w[0] = w;
+    r.xfix[0] = r.wfix[0] = true;
+    analyze(&r);
+    CLOSE(r.p[0], m * (R - a) * (R - a) * w, 1e-12);
+    CLOSE(r.an.lin.K[0], -m * a * w * w * (R - a), 1e-12);
+    CLOSE(r.an.ordinary.eig_re[0], w * sqrt((R - a) / a), 1e-12);
+    assert_int_equal(r.an.ordinary_stable, 0);
+    qd_stability_free(&r.an);
+    /* th = 1 is not steady at that rate, and must still be refused */
+    r.x[0] = 1;
+    assert_int_equal(qd_steady_find(r.sys->ctx, r.s, r.nvals, r.syms, r.vals, r.xfix, r.wfix,
+                                    r.pfix, &r.pt, NULL), QD_ERR_NUMERIC);
+    qd_ctx_clear_error(r.sys->ctx);
+    /* th = pi + 1e-6: no more steady than th = 1 */
+    r.x[0] = QT_PI + 1e-6;
+    assert_int_equal(qd_steady_find(r.sys->ctx, r.s, r.nvals, r.syms, r.vals, r.xfix, r.wfix,
+                                    r.pfix, &r.pt, NULL), QD_ERR_NUMERIC);
+    finish(state, &r);
+}
+
+/* The rate given, th unknown: every sign change of the th residual over (-pi, pi] is found,
+ * both equators, the outer stable (w^2 (R + a)/a), the inner not. */
+static void test_torus_all(void **state) {
+    const double R = 2, a = 0.5, w = 2;
+    run r;
+    start(state, &r, torus, "phi", false);
+    r.x[0] = 0.3;
+    r.w[0] = w;
+    r.wfix[0] = true;
+    qd_steady_set set;
+    assert_int_equal(qd_steady_find_all(r.sys->ctx, r.s, r.nvals, r.syms, r.vals, r.xfix,
+                                        r.wfix, r.pfix, NULL, &r.pt, &set), QD_OK);
+    assert_int_equal(set.count, 2);
+    assert_true(set.complete);
+    CLOSE(set.pts[0].x[0], 0, 1e-12);          /* nearest the start th = 0.3 first */
+    CLOSE(set.pts[1].x[0], QT_PI, 1e-12);
+    assert_int_equal(qd_stability_analyze(r.sys->ctx, r.s, r.nvals, r.syms, r.vals, &set.pts[0],
+                                          &r.an), QD_OK);
+    assert_int_equal(r.an.ordinary_stable, 1);
+    CLOSE(r.an.freq[0] * r.an.freq[0], w * w * (R + a) / a, 1e-12);
+    qd_steady_set_free(&set);
+    finish(state, &r);
+}
+
+/* At th = pi with no rate given every phi' is steady (the kept equation vanishes
+ * identically there): a family, said as such, not one member picked by round-off. */
+static void test_torus_family(void **state) {
+    run r;
+    start(state, &r, torus, "phi", false);
+    r.x[0] = QT_PI;
+    r.xfix[0] = true;
+    qd_steady_set set;
+    assert_int_equal(qd_steady_find_all(r.sys->ctx, r.s, r.nvals, r.syms, r.vals, r.xfix,
+                                        r.wfix, r.pfix, NULL, &r.pt, &set), QD_ERR_ARG);
+    assert_non_null(strstr(qd_ctx_message(r.sys->ctx), "every value of phi'"));
+    finish(state, &r);
+}
+
+/* A free particle on the circle r = 1 at rest: the only steady rate is phi' = 0 (a double
+ * root of m r sin^2(th) phi'^2 = 0), exactly, and the verdict is borderline: the
+ * disturbance drifts linearly (a double zero root), it neither oscillates nor grows
+ * exponentially.  Levenberg-Marquardt alone stopped at phi' = 1e-14, whose stiffness of
+ * 1e-28 made it "stable" (and the torus's inner equator at p_phi = 0 "unstable"). */
+static void test_free_particle_borderline(void **state) {
+    run r;
+    start(state, &r, "coordinates r, th, phi\nparameters m = 5/2\n"
+                     "particle m at (r*sin(th)*cos(phi), r*sin(th)*sin(phi), r*cos(th))\n",
+          "phi", false);
+    r.x[0] = 1;
+    r.x[1] = QT_PI / 2;
+    r.xfix[0] = r.xfix[1] = true;
+    qd_steady_set set;
+    assert_int_equal(qd_steady_find_all(r.sys->ctx, r.s, r.nvals, r.syms, r.vals, r.xfix,
+                                        r.wfix, r.pfix, NULL, &r.pt, &set), QD_OK);
+    assert_int_equal(set.count, 1);
+    assert_true(set.pts[0].w[0] == 0);
+    assert_int_equal(qd_stability_analyze(r.sys->ctx, r.s, r.nvals, r.syms, r.vals, &set.pts[0],
+                                          &r.an), QD_OK);
+    assert_int_equal(r.an.ordinary_stable, -1);
+    assert_non_null(strstr(r.an.verdict, "borderline"));
+    qd_steady_set_free(&set);
+    qd_stability_free(&r.an);
+    /* the momentum given as 0: the same, through the given-momentum equation */
+    r.pfix[0] = true;
+    r.p[0] = 0;
+    analyze(&r);
+    assert_true(r.w[0] == 0);
+    assert_int_equal(r.an.ordinary_stable, -1);
+    finish(state, &r);
+}
+
 /* ---- errors ----------------------------------------------------------------------------- */
 
 static void test_errors(void **state) {
@@ -446,6 +555,10 @@ int main(void) {
         cmocka_unit_test_teardown(test_rotating_bowl, qt_system_teardown),
         cmocka_unit_test_teardown(test_rotating_bowl_eccentric, qt_system_teardown),
         cmocka_unit_test_teardown(test_ellipsoidal_bowl, qt_system_teardown),
+        cmocka_unit_test_teardown(test_torus_inner_equator, qt_system_teardown),
+        cmocka_unit_test_teardown(test_torus_all, qt_system_teardown),
+        cmocka_unit_test_teardown(test_torus_family, qt_system_teardown),
+        cmocka_unit_test_teardown(test_free_particle_borderline, qt_system_teardown),
         cmocka_unit_test_teardown(test_errors, qt_system_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
