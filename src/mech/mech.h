@@ -131,4 +131,11 @@ qd_status qd__con_classify(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_co
 qd_status qd__con_frobenius(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *const *cs,
                             size_t m, bool *integrable);
 
+/* The m constraints c together (closure.c): *rank, the number of independent
+ * forms w_k = sum_j a_kj dq_j + a_k0 dt, and *relations, the number of
+ * independent phi(q, t) = const they imply (n + 1 minus the dimension of
+ * the involutive closure of their kernel, at random points). */
+qd_status qd__con_closure(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *c,
+                          size_t m, size_t *rank, size_t *relations);
+
 #endif
