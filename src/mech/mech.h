@@ -131,6 +131,18 @@ qd_status qd__con_classify(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_co
 qd_status qd__con_frobenius(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *const *cs,
                             size_t m, bool *integrable);
 
+/* Solve the n equations eq_i = 0 for the unknowns xs (isolate.c): each
+ * unknown isolated where it occurs once or can be made to (see the head
+ * comment), one equation with one unknown at a time, on principal branches.
+ * QD_ERR_NONLINEAR, with ctx clean, when some equation could not be solved:
+ * *failed is its index. */
+qd_status qd__isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq, const qd_expr *const *xs,
+                      const qd_expr **sol, size_t *failed);
+
+/* e with every sin, cos or tan of an asin, acos or atan written without the
+ * inverse (sin(atan(u)) = u/sqrt(1 + u^2)), simplified (isolate.c). */
+const qd_expr *qd__untrig(qd_ctx *ctx, const qd_expr *e);
+
 /* The m constraints c together (closure.c): *rank, the number of independent
  * forms w_k = sum_j a_kj dq_j + a_k0 dt, and *relations, the number of
  * independent phi(q, t) = const they imply (n + 1 minus the dimension of
