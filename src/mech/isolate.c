@@ -11,8 +11,8 @@
  * inside copies of one subexpression g(y) (exp(p) twice), solved for
  * u = g(y) and then g(y) = u; or sin(y) and cos(y) only as a ratio
  * (cos(Q)/sin(Q)), solved for u = tan(y) after sin(y) -> u cos(y) cancels
- * cos(y).  Inverses are principal branches (asin, acos, atan in
- * [-pi/2, pi], the positive root, the real log), as a generating function's
+ * cos(y).  Inverses are principal branches (asin and atan in [-pi/2, pi/2],
+ * acos in [0, pi], the positive root, the real log), as a generating function's
  * map is meant near a point: Goldstein writes Q = atan(m w q / p).  A trig
  * function of an inverse one is then written without it
  * (sin(atan(u)) = u/sqrt(1 + u^2)), so that P = (p^2 + m^2 w^2 q^2)/(2 m w)
