@@ -84,7 +84,7 @@ static void dof(check *c, const qd_eom *e) {
     qd_dof d;
     if (qd_eom_dof(c->ctx, e, &d) != QD_OK) { /* a coefficient with no value: one by one */
         qd_ctx_clear_error(c->ctx);
-        d = (qd_dof){e->n, e->ncon, one_by_one, e->n - one_by_one, e->n - e->ncon};
+        d = (qd_dof){e->n, e->ncon, one_by_one, e->n - one_by_one, e->n - e->ncon, 0, {NULL}};
     }
     qd_buf_printf(&c->out,
                   "degrees of freedom: %zu configurational, %zu motional (%zu coordinates; "
@@ -97,6 +97,11 @@ static void dof(check *c, const qd_eom *e) {
                       "relation%s among the coordinates that none gives alone)\n",
                       d.relations - one_by_one, d.relations - one_by_one,
                       d.relations - one_by_one == 1 ? "" : "s");
+    for (size_t i = 0; i < d.ncombined; i++) {
+        qd_buf_puts(&c->out, "  integral of a combination: ");
+        put_expr(c, d.combined[i]);
+        qd_buf_puts(&c->out, " = const\n");
+    }
 }
 
 static void header(check *c, const char *path, const qd_eom *e) {

@@ -167,12 +167,18 @@ QD_API qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
  * contains the constraints' kernel in (q, t) (Frobenius), at random points,
  * for generic parameter values.  configurational = n - relations,
  * motional = n - independent (the rank of the constraint rows). */
+#define QD_DOF_MAXCOMB 4
 typedef struct qd_dof {
     size_t coordinates;          /* e->n (eliminated ones not counted) */
     size_t independent;          /* independent constraints */
     size_t relations;            /* independent integrable combinations */
     size_t configurational;
     size_t motional;
+    /* phi = const for the relations that are combinations of two or more
+     * constraints with constant coefficients (th - a (p1 - p2)/(2b) on the
+     * axle, up to a factor), where found in closed form: ncombined of them */
+    size_t ncombined;
+    const qd_expr *combined[QD_DOF_MAXCOMB];
 } qd_dof;
 
 /* Fill d for e.  QD_ERR_UNBOUND when a constraint coefficient cannot be

@@ -50,6 +50,7 @@ typedef struct closure {
     const qd_expr *kept[MAXV][MAXV];
     double basis[NPTS][MAXV][MAXV]; /* orthonormal basis of the kept fields at each point */
     size_t rank[NPTS];
+    size_t nrows, rows[MAXV];     /* the independent forms */
 } closure;
 
 static uint64_t splitmix(uint64_t *s) {
@@ -291,7 +292,8 @@ static qd_status kernel(closure *c, const qd_con *con, size_t m, size_t *rank) {
         return QD_ERR_TOOBIG;
     if (!pivots(c, con, m, rows, cols, &r))
         return QD_ERR_UNBOUND;
-    *rank = r;
+    *rank = c->nrows = r;
+    memcpy(c->rows, rows, r * sizeof rows[0]);
     c->base = malloc((c->N - r) * c->N * sizeof *c->base + 1);
     if (!c->base)
         return QD_ERR_NOMEM;
@@ -326,9 +328,165 @@ static qd_status close_up(closure *c) {
     return QD_OK;
 }
 
+/* ---- the relations themselves ------------------------------------------------ *
+ *
+ * A relation's differential is a combination sum_i c_i w_i of the forms that
+ * vanishes on the closure.  At each point the c of all relations span the
+ * null space of (w_i . Y_b) over the independent forms i and the closure's
+ * basis Y_b; its reduced echelon basis is unique, so when it is the same at
+ * every point (to 1e-9) and rational, the combinations have constant
+ * coefficients (roll1 - roll2 on the axle) and are integrated as one form.
+ * Combinations with varying coefficients are counted but not written. */
+
+/* Reduced row echelon form of the rows x cols matrix A, in place; the pivot
+ * column of each row into piv; its rank. */
+static size_t rref(double *A, size_t rows, size_t cols, size_t *piv) {
+    size_t r = 0;
+    double big = 0;
+    for (size_t i = 0; i < rows * cols; i++)
+        big = fmax(big, fabs(A[i]));
+    for (size_t j = 0; j < cols && r < rows; j++) {
+        size_t p = r;
+        for (size_t i = r + 1; i < rows; i++)
+            if (fabs(A[i * cols + j]) > fabs(A[p * cols + j]))
+                p = i;
+        if (fabs(A[p * cols + j]) <= 1e-9 * big)
+            continue;
+        for (size_t k = 0; k < cols; k++) {
+            double t = A[r * cols + k];
+            A[r * cols + k] = A[p * cols + k];
+            A[p * cols + k] = t;
+        }
+        double d = A[r * cols + j];
+        for (size_t k = 0; k < cols; k++)
+            A[r * cols + k] = k == j ? 1 : A[r * cols + k] / d;
+        for (size_t i = 0; i < rows; i++) {
+            double f = A[i * cols + j];
+            for (size_t k = 0; i != r && k < cols; k++)
+                A[i * cols + k] -= f * A[r * cols + k];
+        }
+        piv[r++] = j;
+    }
+    return r;
+}
+
+/* The null space of the forms against the closure at point k, as
+ * nrel vectors of nrows coefficients in reduced form; false when the
+ * point is degenerate or the dimensions disagree. */
+static bool null_space(closure *c, const qd_con *con, int k, size_t nrel, double *out) {
+    size_t r = c->nrows, d = c->rank[k], piv[MAXV];
+    double G[MAXV * MAXV], w[MAXV];
+    if (d != generic_rank(c) || r - nrel > d)
+        return false;
+    for (size_t i = 0; i < r; i++) {
+        for (size_t j = 0; j < c->N; j++)
+            if (!value_at(c, coef(c, con, c->rows[i], j), k, &w[j]))
+                return false;
+        for (size_t b = 0; b < d; b++) {
+            double dot = 0;
+            for (size_t j = 0; j < c->N; j++)
+                dot += c->basis[k][b][j] * w[j];
+            G[b * r + i] = dot;
+        }
+    }
+    if (r - rref(G, d, r, piv) != nrel)
+        return false;
+    for (size_t f = 0, v = 0; f < r; f++) {
+        bool pivot = false;
+        for (size_t i = 0; i < r - nrel; i++)
+            pivot |= piv[i] == f;
+        if (pivot)
+            continue;
+        for (size_t i = 0; i < r; i++)
+            out[v * r + i] = i == f ? 1 : 0;
+        for (size_t i = 0; i < r - nrel; i++)
+            out[v * r + piv[i]] = -G[i * r + f];
+        v++;
+    }
+    return true;
+}
+
+/* x as a fraction with a denominator up to 1000, or false. */
+static bool rational(double x, long *num, long *den) {
+    for (long d = 1; d <= 1000; d++) {
+        double n = round(x * (double)d);
+        if (fabs(n - x * (double)d) <= 1e-8 * (double)d * (1 + fabs(x)) && fabs(n) < 1e9) {
+            *num = (long)n;
+            *den = d;
+            return true;
+        }
+    }
+    return false;
+}
+
+/* The integral of the combination coef (nrows numbers) of the forms, or
+ * NULL; only combinations of two or more constraints. */
+static const qd_expr *integrate_combination(closure *c, const qd_con *con, const double *coef_) {
+    qd_ctx *ctx = c->ctx;
+    const qd_expr *a[MAXV], *a0 = qd_int(ctx, 0);
+    size_t n = c->N - 1, used = 0;
+    for (size_t j = 0; j < n; j++)
+        a[j] = qd_int(ctx, 0);
+    for (size_t i = 0; i < c->nrows; i++) {
+        long num, den;
+        if (!rational(coef_[i], &num, &den))
+            return NULL;
+        if (num == 0)
+            continue;
+        used++;
+        const qd_expr *k = qd_rat(ctx, num, den);
+        for (size_t j = 0; j < n; j++)
+            a[j] = qd_add(ctx, a[j], qd_mul(ctx, k, coef(c, con, c->rows[i], j)));
+        a0 = qd_add(ctx, a0, qd_mul(ctx, k, coef(c, con, c->rows[i], n)));
+    }
+    if (used < 2)
+        return NULL;
+    for (size_t j = 0; j < n; j++)
+        a[j] = qd_simplify(ctx, a[j]);
+    qd_con sum = {.name = "combination", .a = a, .a0 = qd_simplify(ctx, a0)};
+    const qd_expr *phi = qd__con_integral(ctx, n, c->x, &sum);
+    if (!phi && qd_ctx_status(ctx) != QD_ERR_NOMEM)
+        qd_ctx_clear_error(ctx);
+    return phi;
+}
+
+/* The integrals of the constant combinations of two or more constraints,
+ * into out (at most cap); their number. */
+static size_t combinations(closure *c, const qd_con *con, size_t nrel, const qd_expr **out,
+                           size_t cap) {
+    double v[NPTS][MAXV * MAXV];
+    size_t r = c->nrows, found = 0;
+    if (nrel == 0 || nrel > r)
+        return 0;
+    int good = -1;
+    for (int k = 0; k < NPTS; k++) {
+        if (!null_space(c, con, k, nrel, v[k]))
+            continue;
+        if (good < 0)
+            good = k;
+        for (size_t i = 0; i < nrel * r; i++)
+            if (fabs(v[k][i] - v[good][i]) > 1e-9 * (1 + fabs(v[good][i])))
+                return 0; /* coefficients that vary */
+    }
+    for (size_t b = 0; good >= 0 && b < nrel && found < cap; b++) {
+        const qd_expr *phi = integrate_combination(c, con, v[good] + b * r);
+        if (phi)
+            out[found++] = phi;
+    }
+    return found;
+}
+
 qd_status qd__con_closure(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *con,
                           size_t m, size_t *rank, size_t *relations) {
+    return qd__con_relations(ctx, n, q, con, m, rank, relations, NULL, 0, NULL);
+}
+
+qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *con,
+                            size_t m, size_t *rank, size_t *relations, const qd_expr **integrals,
+                            size_t cap, size_t *nintegrals) {
     *rank = *relations = 0;
+    if (nintegrals)
+        *nintegrals = 0;
     if (qd_ctx_status(ctx) != QD_OK)
         return qd_ctx_status(ctx);
     if (m == 0)
@@ -344,6 +502,10 @@ qd_status qd__con_closure(qd_ctx *ctx, size_t n, const qd_expr *const *q, const 
         st = close_up(c);
     if (st == QD_OK)
         *relations = c->N - generic_rank(c);
+    if (st == QD_OK && nintegrals)
+        *nintegrals = combinations(c, con, *relations, integrals, cap);
+    if (st == QD_OK && qd_ctx_status(ctx) != QD_OK)
+        st = qd_ctx_status(ctx);
     free(c->base);
     free(c);
     if (st == QD_ERR_TOOBIG && qd_ctx_status(ctx) == QD_OK)
@@ -358,15 +520,19 @@ qd_status qd__con_closure(qd_ctx *ctx, size_t n, const qd_expr *const *q, const 
 }
 
 qd_status qd_eom_dof(qd_ctx *ctx, const qd_eom *e, qd_dof *d) {
-    size_t rank, rel;
-    *d = (qd_dof){e->n, 0, 0, e->n, e->n};
-    qd_status st = qd__con_closure(ctx, e->n, e->q, e->con, e->ncon, &rank, &rel);
+    size_t rank, rel, nint;
+    const qd_expr *found[QD_DOF_MAXCOMB];
+    *d = (qd_dof){e->n, 0, 0, e->n, e->n, 0, {NULL}};
+    qd_status st = qd__con_relations(ctx, e->n, e->q, e->con, e->ncon, &rank, &rel, found,
+                                     QD_DOF_MAXCOMB, &nint);
     if (st != QD_OK)
         return st;
     if (rel > e->n || rank > e->n) { /* they would fix t: refused when derived */
         qd_ctx_error(ctx, QD_ERR_ARG, "the constraints leave no motion");
         return QD_ERR_ARG;
     }
-    *d = (qd_dof){e->n, rank, rel, e->n - rel, e->n - rank};
+    *d = (qd_dof){e->n, rank, rel, e->n - rel, e->n - rank, nint, {NULL}};
+    for (size_t i = 0; i < nint; i++)
+        d->combined[i] = found[i];
     return QD_OK;
 }

@@ -34,6 +34,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+import sympy as sp
+
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 DOUBLE_PENDULUM = """\
@@ -631,6 +633,18 @@ def test_check_constraints(r):
             p.returncode == 0 and "degrees of freedom: 4 configurational, 2 motional (5 "
             "coordinates; constraints: 0 holonomic, 0 integrable, 3 nonholonomic)" in out and
             "integrable combinations: 1 " in out, out + p.stderr)
+    # the relation, up to a factor: a (phi - psi) - 2 b th (Goldstein ch. 1 Derivation 5:
+    # th = C - (a/b)(phi - phi') for an axle of length b; the sign is the angles' convention)
+    line = line_of(out, "  integral of a combination: ")
+    syms = {n: sp.Symbol(n) for n in ("a", "b", "th", "phi", "psi")}
+    ok = line.endswith(" = const")
+    if ok:
+        phi = sp.sympify(line.split(": ", 1)[1][:-len(" = const")].replace("^", "**"),
+                         locals=syms)
+        ratio = sp.simplify(phi / (syms["a"] * (syms["phi"] - syms["psi"]) - 2 * syms["b"] *
+                                   syms["th"]))
+        ok = ratio.is_number and ratio != 0
+    r.check("check two disks on an axle: the relation th - a (phi - psi)/(2b)", ok, out)
     # Desloge ch. 49 Example 1 (p. 536): the rolling disk, 4 and 2, nothing integrable
     p = r.run("check", str(EXAMPLES / "rolling_disk.qd"))
     r.check("check rolling disk: 4 configurational, 2 motional",

@@ -340,6 +340,21 @@ static void test_closure_axle(void **state) {
     assert_int_equal(classify(s, con(s, 2, "roll2", roll2, z))->kind, QD_CON_NONHOLONOMIC);
     closure(s, 3, 3, 1);
     closure(s, 2, 2, 0); /* side and one wheel: nothing integrates */
+    /* the relation itself: phi with d phi proportional to roll1 - roll2,
+     * 2b dth - a dp1 + a dp2 (Goldstein's th = C - (a/b)(phi - phi') for an
+     * axle of length b) */
+    size_t r, rel, nint;
+    const qd_expr *phi[2];
+    assert_int_equal(qd__con_relations(ctx, 5, s->q, s->con, 3, &r, &rel, phi, 2, &nint), QD_OK);
+    assert_int_equal(nint, 1);
+    const qd_expr *d[5];
+    for (int j = 0; j < 5; j++)
+        d[j] = qd_diff(ctx, phi[0], s->q[j]);
+    assert_true(qd_is_zero(qd_simplify(ctx, d[0])) && qd_is_zero(qd_simplify(ctx, d[1])));
+    assert_false(qd_is_zero(qd_simplify(ctx, d[3])));
+    assert_true(qd_is_zero(qd_simplify(ctx, qd_add(ctx, d[3], d[4]))));
+    assert_true(qd_is_zero(qd_simplify(ctx, qd_add(ctx, qd_mul(ctx, a, d[2]),
+                                                   qd_mul(ctx, qd_mul(ctx, I(s, 2), b), d[3])))));
 }
 
 /* The upright rolling disk (Desloge ch. 49 Ex. 1, p. 536): 2 forms, no
