@@ -165,7 +165,7 @@ QD_API qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
  * is integrable (two wheels on an axle: th - a (p1 - p2)/(2b)); found as
  * n + 1 minus the dimension of the smallest involutive distribution that
  * contains the constraints' kernel in (q, t) (Frobenius), at random points,
- * for generic parameter values.  configurational = n - relations,
+ * for generic parameter values and user functions.  configurational = n - relations,
  * motional = n - independent (the rank of the constraint rows). */
 #define QD_DOF_MAXCOMB 4
 typedef struct qd_dof {
@@ -182,8 +182,8 @@ typedef struct qd_dof {
 } qd_dof;
 
 /* Fill d for e.  QD_ERR_UNBOUND when a constraint coefficient cannot be
- * evaluated (a function without a definition), QD_ERR_TOOBIG beyond 31
- * coordinates and symbols; d then counts no constraint. */
+ * evaluated (a derivative of a user function written in it), QD_ERR_TOOBIG
+ * beyond 31 coordinates and symbols; d then counts no constraint. */
 QD_API qd_status qd_eom_dof(qd_ctx *ctx, const qd_eom *e, qd_dof *d);
 
 #ifdef __cplusplus

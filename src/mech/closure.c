@@ -24,7 +24,8 @@
  * leaves of it exceeds RANK_TOL of its size, and a component counts as 0
  * when it simplifies to 0 or is below RANK_TOL of the terms it adds (round
  * off in an identity the simplifier missed).  Parameters take random values
- * too: the count holds for generic values.
+ * too, and user functions stand-ins (generic()): the count holds for generic
+ * values and functions.
  */
 #include "mech.h"
 
@@ -51,6 +52,7 @@ typedef struct closure {
     double basis[NPTS][MAXV][MAXV]; /* orthonormal basis of the kept fields at each point */
     size_t rank[NPTS];
     size_t nrows, rows[MAXV];     /* the independent forms */
+    const qd_expr **w;            /* m * N coefficients, user functions made generic */
 } closure;
 
 static uint64_t splitmix(uint64_t *s) {
@@ -157,10 +159,58 @@ static const qd_expr *coef(closure *c, const qd_con *con, size_t k, size_t j) {
     return con[k].a0 ? con[k].a0 : qd_int(c->ctx, 0);
 }
 
+/* The same with each user function f(u1, ...) replaced by a fixed random
+ * analytic one, 11/10 + sin(k0 + k1 u1 + ...)/2: the count is for generic
+ * functions as it is for generic parameters (f(y) = const could make a
+ * combination integrable that generically is not). */
+static const qd_expr *generic(const closure *c, size_t k, size_t j) { return c->w[k * c->N + j]; }
+
+static size_t user_functions(const qd_expr *e, const qd_expr **out, size_t n, size_t cap) {
+    if (qd_expr_kind(e) == QD_UFUNC) {
+        for (size_t i = 0; i < n; i++)
+            if (out[i] == e)
+                return n;
+        if (n < cap)
+            out[n++] = e;
+    }
+    for (size_t i = 0; i < qd_expr_nargs(e); i++)
+        n = user_functions(qd_expr_arg(e, i), out, n, cap);
+    return n;
+}
+
+static const qd_expr *stand_in(qd_ctx *ctx, const qd_expr *call) {
+    uint64_t h = 0;
+    for (const char *s = qd_expr_name(call); *s; s++)
+        h = h * 131u + (unsigned char)*s;
+    const qd_expr *arg = qd_rat(ctx, (long)(h % 7u) + 1, 5);
+    for (size_t i = 0; i < qd_expr_nargs(call); i++)
+        arg = qd_add(ctx, arg, qd_mul(ctx, qd_rat(ctx, (long)((h >> (3 * i + 3)) % 9u) + 3, 7),
+                                      qd_expr_arg(call, i)));
+    return qd_add(ctx, qd_rat(ctx, 11, 10), qd_mul(ctx, qd_rat(ctx, 1, 2), qd_fn(ctx, QD_SIN, arg)));
+}
+
+static qd_status make_generic(closure *c, const qd_con *con, size_t m) {
+    const qd_expr *calls[16], *repl[16];
+    c->w = malloc(m * c->N * sizeof *c->w + 1);
+    if (!c->w)
+        return QD_ERR_NOMEM;
+    for (size_t k = 0; k < m; k++)
+        for (size_t j = 0; j < c->N; j++) {
+            const qd_expr *e = coef(c, con, k, j);
+            size_t nf = user_functions(e, calls, 0, 16);
+            for (size_t i = 0; i < nf; i++)
+                repl[i] = stand_in(c->ctx, calls[i]);
+            c->w[k * c->N + j] = nf ? qd_subs(c->ctx, e, nf, calls, repl) : e;
+            if (!c->w[k * c->N + j])
+                return qd_ctx_status(c->ctx) != QD_OK ? qd_ctx_status(c->ctx) : QD_ERR_NOMEM;
+        }
+    return QD_OK;
+}
+
 /* Gaussian elimination with partial pivoting on the m x N matrix at point
  * 0: its rank, the independent rows and the pivot columns.  false when an
  * entry has no value there. */
-static bool pivots(closure *c, const qd_con *con, size_t m, size_t *rows, size_t *cols,
+static bool pivots(closure *c, size_t m, size_t *rows, size_t *cols,
                    size_t *rank) {
     double *A = malloc((m ? m : 1) * c->N * sizeof *A);
     size_t *row_of = malloc((m ? m : 1) * sizeof *row_of), r = 0;
@@ -168,7 +218,7 @@ static bool pivots(closure *c, const qd_con *con, size_t m, size_t *rows, size_t
     for (size_t k = 0; ok && k < m; k++) {
         row_of[k] = k;
         for (size_t j = 0; ok && j < c->N; j++)
-            ok = value_at(c, coef(c, con, k, j), 0, &A[k * c->N + j]);
+            ok = value_at(c, generic(c, k, j), 0, &A[k * c->N + j]);
     }
     double big = 0;
     for (size_t i = 0; ok && i < m * c->N; i++)
@@ -211,7 +261,7 @@ static bool is_pivot(const size_t *cols, size_t r, size_t j) {
 
 /* The kernel field of the free column j: det B e_j - sum_i det(B with
  * column i replaced by the column j) e_{cols[i]}, B the pivot block. */
-static qd_status kernel_field(closure *c, const qd_con *con, const size_t *rows,
+static qd_status kernel_field(closure *c, const size_t *rows,
                               const size_t *cols, size_t r, size_t j, const qd_expr **f) {
     qd_ctx *ctx = c->ctx;
     const qd_expr *B[MAXV * MAXV];
@@ -219,13 +269,13 @@ static qd_status kernel_field(closure *c, const qd_con *con, const size_t *rows,
         f[i] = qd_int(ctx, 0);
     for (size_t a = 0; a < r; a++)
         for (size_t b = 0; b < r; b++)
-            B[a * r + b] = coef(c, con, rows[a], cols[b]);
+            B[a * r + b] = generic(c, rows[a], cols[b]);
     f[j] = qd_simplify(ctx, qd__det(ctx, r, B));
     for (size_t i = 0; i < r; i++) {
         const qd_expr *Bi[MAXV * MAXV];
         for (size_t a = 0; a < r; a++)
             for (size_t b = 0; b < r; b++)
-                Bi[a * r + b] = b == i ? coef(c, con, rows[a], j) : B[a * r + b];
+                Bi[a * r + b] = b == i ? generic(c, rows[a], j) : B[a * r + b];
         f[cols[i]] = qd_simplify(ctx, qd_neg(ctx, qd__det(ctx, r, Bi)));
     }
     for (size_t i = 0; i < c->N; i++)
@@ -258,6 +308,9 @@ static qd_status bracket(closure *c, const qd_expr *const *X, const qd_expr *con
 static qd_status setup(closure *c, size_t n, const qd_expr *const *q, const qd_con *con,
                        size_t m) {
     c->N = n + 1;
+    qd_status st = make_generic(c, con, m);
+    if (st != QD_OK)
+        return st;
     for (size_t j = 0; j < n; j++)
         c->x[j] = c->syms[j] = q[j];
     c->x[n] = c->syms[n] = qd_time(c->ctx);
@@ -265,7 +318,7 @@ static qd_status setup(closure *c, size_t n, const qd_expr *const *q, const qd_c
     for (size_t k = 0; k < m; k++)
         for (size_t j = 0; j < c->N; j++) {
             const qd_expr *s[MAXV];
-            size_t ns = qd_free_symbols(c->ctx, coef(c, con, k, j), s, MAXV);
+            size_t ns = qd_free_symbols(c->ctx, generic(c, k, j), s, MAXV);
             if (ns > MAXV)
                 return QD_ERR_TOOBIG;
             for (size_t i = 0; i < ns; i++) {
@@ -286,11 +339,11 @@ static qd_status setup(closure *c, size_t n, const qd_expr *const *q, const qd_c
 }
 
 /* D_0: the kernel of the independent forms. */
-static qd_status kernel(closure *c, const qd_con *con, size_t m, size_t *rank) {
+static qd_status kernel(closure *c, size_t m, size_t *rank) {
     size_t rows[MAXV], cols[MAXV], r;
     if (m > MAXV)
         return QD_ERR_TOOBIG;
-    if (!pivots(c, con, m, rows, cols, &r))
+    if (!pivots(c, m, rows, cols, &r))
         return QD_ERR_UNBOUND;
     *rank = c->nrows = r;
     memcpy(c->rows, rows, r * sizeof rows[0]);
@@ -301,7 +354,7 @@ static qd_status kernel(closure *c, const qd_con *con, size_t m, size_t *rank) {
         if (is_pivot(cols, r, j))
             continue;
         const qd_expr **f = c->base + c->nbase * c->N;
-        qd_status st = kernel_field(c, con, rows, cols, r, j, f);
+        qd_status st = kernel_field(c, rows, cols, r, j, f);
         if (st != QD_OK)
             return st;
         c->nbase++;
@@ -373,14 +426,14 @@ static size_t rref(double *A, size_t rows, size_t cols, size_t *piv) {
 /* The null space of the forms against the closure at point k, as
  * nrel vectors of nrows coefficients in reduced form; false when the
  * point is degenerate or the dimensions disagree. */
-static bool null_space(closure *c, const qd_con *con, int k, size_t nrel, double *out) {
+static bool null_space(closure *c, int k, size_t nrel, double *out) {
     size_t r = c->nrows, d = c->rank[k], piv[MAXV];
     double G[MAXV * MAXV], w[MAXV];
     if (d != generic_rank(c) || r - nrel > d)
         return false;
     for (size_t i = 0; i < r; i++) {
         for (size_t j = 0; j < c->N; j++)
-            if (!value_at(c, coef(c, con, c->rows[i], j), k, &w[j]))
+            if (!value_at(c, generic(c, c->rows[i], j), k, &w[j]))
                 return false;
         for (size_t b = 0; b < d; b++) {
             double dot = 0;
@@ -460,7 +513,7 @@ static size_t combinations(closure *c, const qd_con *con, size_t nrel, const qd_
         return 0;
     int good = -1;
     for (int k = 0; k < NPTS; k++) {
-        if (!null_space(c, con, k, nrel, v[k]))
+        if (!null_space(c, k, nrel, v[k]))
             continue;
         if (good < 0)
             good = k;
@@ -497,7 +550,7 @@ qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, cons
     c->ctx = ctx;
     qd_status st = n + 1 > MAXV ? QD_ERR_TOOBIG : setup(c, n, q, con, m);
     if (st == QD_OK)
-        st = kernel(c, con, m, rank);
+        st = kernel(c, m, rank);
     if (st == QD_OK)
         st = close_up(c);
     if (st == QD_OK)
@@ -507,6 +560,7 @@ qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, cons
     if (st == QD_OK && qd_ctx_status(ctx) != QD_OK)
         st = qd_ctx_status(ctx);
     free(c->base);
+    free(c->w);
     free(c);
     if (st == QD_ERR_TOOBIG && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "integrability of the constraints together: at most %d "

@@ -424,6 +424,29 @@ static void test_closure_time(void **state) {
     closure(s, 1, 1, 1);
 }
 
+/* User functions count as generic ones: x' = f(y) z', y' = z x' in three
+ * coordinates allow one direction, so 2 relations whatever f is; the
+ * rolling disk with cos and sin replaced by f(ph), g(ph) keeps none. */
+static void test_closure_user_functions(void **state) {
+    static const char *names[] = {"x", "y", "z", "u"};
+    sys *s = sys_new(state, 4, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *y = s->q[1], *z = s->q[2], *o = I(s, 0);
+    s->n = 3;
+    const qd_expr *fy = qd_ufunc(ctx, "f", 1, &y);
+    const qd_expr *c1[3] = {I(s, 1), o, qd_neg(ctx, fy)}, *c2[3] = {qd_neg(ctx, z), I(s, 1), o};
+    con(s, 0, "c1", c1, o);
+    con(s, 1, "c2", c2, o);
+    closure(s, 2, 2, 2);
+    /* (x, y, z, u) = (x1, x2, ph, psi) */
+    s->n = 4;
+    const qd_expr *fz = qd_ufunc(ctx, "f", 1, &z), *gz = qd_ufunc(ctx, "g", 1, &z);
+    const qd_expr *r1[4] = {I(s, 1), o, o, fz}, *r2[4] = {o, I(s, 1), o, gz};
+    con(s, 0, "roll1", r1, o);
+    con(s, 1, "roll2", r2, o);
+    closure(s, 2, 2, 0);
+}
+
 /* Random relations hidden in combinations: phi1, phi2 random in (q3, q4,
  * t) and the contact form dq5 - q1 dq2; three constraints w = G (dphi1,
  * dphi2, dq5 - q1 dq2) with G a random integer matrix, so that no single
@@ -538,6 +561,7 @@ int main(void) {
         cmocka_unit_test_teardown(test_closure_split, teardown),
         cmocka_unit_test_teardown(test_closure_time, teardown),
         cmocka_unit_test_teardown(test_closure_random, teardown),
+        cmocka_unit_test_teardown(test_closure_user_functions, teardown),
         cmocka_unit_test_teardown(test_no_velocity, teardown),
         cmocka_unit_test_teardown(test_random_integrable, teardown),
     };
