@@ -62,6 +62,17 @@ static const qd_expr *inverse(qd_ctx *ctx, qd_func f, const qd_expr *r) {
     }
 }
 
+/* b^x = r solved for b: r^(1/x), the positive root; an odd integer power
+ * is inverted on the whole line, sign(r) |r|^(1/x), since r^(1/3) of a
+ * negative r has no real value. */
+static const qd_expr *root(qd_ctx *ctx, const qd_expr *r, const qd_expr *x) {
+    long num, den;
+    const qd_expr *inv = qd_div(ctx, qd_int(ctx, 1), x);
+    if (!qd_rational_get(x, &num, &den) || den != 1 || num % 2 == 0 || num == 1 || num == -1)
+        return qd_pow(ctx, r, inv);
+    return qd_mul(ctx, qd_fn(ctx, QD_SIGN, r), qd_pow(ctx, qd_fn(ctx, QD_ABS, r), inv));
+}
+
 /* The arguments of e other than the one containing y, combined by ADD or
  * MUL; *with gets the one containing y. */
 static const qd_expr *others(qd_ctx *ctx, const qd_expr *e, const qd_expr *y,
@@ -97,7 +108,7 @@ static const qd_expr *undo(qd_ctx *ctx, const qd_expr *lhs, const qd_expr *rhs,
             const qd_expr *b = qd_expr_arg(lhs, 0), *x = qd_expr_arg(lhs, 1);
             if (qd_has(b, y) && qd_is_number(x)) {
                 inner = b;
-                rhs = qd_pow(ctx, rhs, qd_div(ctx, qd_int(ctx, 1), x));
+                rhs = root(ctx, rhs, x);
             } else if (qd_has(x, y) && !qd_has(b, y)) {
                 inner = x;
                 rhs = qd_div(ctx, qd_fn(ctx, QD_LOG, rhs), qd_fn(ctx, QD_LOG, b));
