@@ -1,8 +1,11 @@
 /*
  * cli/cmd_canonical.c - `qdot canonical FILE --Q "..." --P "..."`: is the
  * change of variables (q, p) -> (Q, P) canonical (qd_canonical_check)?  The
- * verdict - canonical, canonical up to a scale c, or not canonical with the
- * first failing fundamental bracket - is an answer, so all three exit 0.
+ * verdict answers a yes/no question, so the status carries the answer:
+ * canonical exits 0; a scaled map ([Q_i, P_i] = c, c != 1: Goldstein's
+ * extended canonical transformation, not a canonical one) and a map with a
+ * failing fundamental bracket exit EXIT_NOT_CANONICAL, with the verdict
+ * printed as usual (a failure prints nothing on standard output).
  * `--generator F1..F4 EXPR` instead gives the transformation a generating
  * function defines and K = H + dF/dt (qd_generate, H from hamilton.h).
  * The new variables are Q, P for a model with one coordinate and Q1..Qn,
@@ -15,6 +18,9 @@
 #include "json.h"
 #include "model_cli.h"
 #include "model_file.h"
+
+/* The answer "no"; a failure prints nothing on standard output. */
+enum { EXIT_NOT_CANONICAL = QD_EXIT_FAIL };
 
 typedef struct can_args {
     const char *file, *Q, *P, *gen_type, *gen;
@@ -186,6 +192,11 @@ static void pair_name(const can_run *r, const qd_canon_verdict *v, char *out, si
     snprintf(out, size, "[%s, %s]", a, b);
 }
 
+/* The exit status of a printed verdict. */
+static int answer(const qd_canon_verdict *v, int printed) {
+    return printed == QD_EXIT_OK && v->kind != QD_CANON_YES ? EXIT_NOT_CANONICAL : printed;
+}
+
 static int write_verdict(can_run *r, const qd_canon_verdict *v, bool json) {
     qd_ctx *ctx = r->ph.ctx;
     static const char *const kind[] = {"canonical", "scaled", "not canonical"};
@@ -206,18 +217,19 @@ static int write_verdict(can_run *r, const qd_canon_verdict *v, bool json) {
         else
             cli_json_null(&j);
         put_expr(ctx, &j, &b, "value", pair[0] ? v->value : NULL);
-        return flush(&b, &j);
+        return answer(v, flush(&b, &j));
     }
     char *s = text_of(ctx, v->kind == QD_CANON_NO ? v->value : v->scale);
     if (v->kind == QD_CANON_YES)
         qd_buf_puts(&b, "canonical\n");
     else if (v->kind == QD_CANON_SCALED)
-        qd_buf_printf(&b, "canonical up to scale %s: [Q_i, P_i] = %s\n", s ? s : "?", s ? s : "?");
+        qd_buf_printf(&b, "not canonical (a scaled canonical map, c = %s): [Q_i, P_i] = %s\n",
+                      s ? s : "?", s ? s : "?");
     else
         qd_buf_printf(&b, "not canonical: %s = %s (should be %s)\n", pair, s ? s : "?",
                       v->pair == QD_PAIR_QP && v->i == v->j ? "1" : "0");
     free(s);
-    return flush(&b, NULL);
+    return answer(v, flush(&b, NULL));
 }
 
 /* ---- the two modes -------------------------------------------------------------- */

@@ -11,8 +11,10 @@
  *
  * Constraints are listed with their kind (holonomic, integrable with its
  * integral, nonholonomic) and the degrees of freedom are counted as in
- * Desloge ch. 49: configurational = coordinates - holonomic - integrable,
- * motional = configurational - nonholonomic.
+ * Desloge ch. 49: configurational = coordinates - the relations among them
+ * the constraints imply together (qd_eom_dof: more than the holonomic and
+ * integrable ones when a combination of Pfaffian constraints integrates,
+ * as on the two-wheel axle), motional = coordinates - constraints.
  */
 #include "cli.h"
 
@@ -78,13 +80,28 @@ static void dof(check *c, const qd_eom *e) {
         qd_buf_printf(&c->out, "degrees of freedom: %zu\n", e->n);
         return;
     }
-    size_t nq = e->n + e->nelim, conf = nq - e->nelim - count[QD_CON_HOLONOMIC] -
-                                         count[QD_CON_INTEGRABLE];
+    size_t one_by_one = count[QD_CON_HOLONOMIC] + count[QD_CON_INTEGRABLE];
+    qd_dof d;
+    if (qd_eom_dof(c->ctx, e, &d) != QD_OK) { /* a coefficient with no value: one by one */
+        qd_ctx_clear_error(c->ctx);
+        d = (qd_dof){e->n, e->ncon, one_by_one, e->n - one_by_one, e->n - e->ncon, 0, {NULL}};
+    }
     qd_buf_printf(&c->out,
                   "degrees of freedom: %zu configurational, %zu motional (%zu coordinates; "
                   "constraints: %zu holonomic, %zu integrable, %zu nonholonomic)\n",
-                  conf, conf - count[QD_CON_NONHOLONOMIC], nq, count[QD_CON_HOLONOMIC],
+                  d.configurational, d.motional, e->n + e->nelim, count[QD_CON_HOLONOMIC],
                   count[QD_CON_INTEGRABLE], count[QD_CON_NONHOLONOMIC]);
+    if (d.relations > one_by_one)
+        qd_buf_printf(&c->out,
+                      "integrable combinations: %zu (the constraints together imply %zu "
+                      "relation%s among the coordinates that none gives alone)\n",
+                      d.relations - one_by_one, d.relations - one_by_one,
+                      d.relations - one_by_one == 1 ? "" : "s");
+    for (size_t i = 0; i < d.ncombined; i++) {
+        qd_buf_puts(&c->out, "  integral of a combination: ");
+        put_expr(c, d.combined[i]);
+        qd_buf_puts(&c->out, " = const\n");
+    }
 }
 
 static void header(check *c, const char *path, const qd_eom *e) {

@@ -71,8 +71,11 @@ typedef struct qd_gen_result {
  * canonical symbols; new_Q, new_P: the new ones (the two arrays F does not
  * use are needed only to write K_new).  The relation between the old
  * variables and F's derivative with respect to its old argument is solved
- * for F's new argument, which must enter it linearly (QD_ERR_NONLINEAR
- * otherwise; QD_ERR_SINGULAR when det d^2F/dx dy = 0, no transformation).
+ * for F's new argument: by Cramer's rule when linear in it (QD_ERR_SINGULAR
+ * when det d^2F/dx dy = 0, no transformation), else by isolating it on
+ * principal branches (atan, asin, acos, the positive root, the real log:
+ * F1 = m w q^2 cot(Q)/2 gives Q = atan(m w q/p)); QD_ERR_NONLINEAR, with a
+ * message naming the relation, when it cannot be solved in closed form.
  * H may be NULL (then K is not computed).  out->Q and out->P are malloc'd:
  * release them with qd_gen_result_free. */
 QD_API qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *const *old_q,

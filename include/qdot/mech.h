@@ -158,6 +158,34 @@ QD_API qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
                           const double *vals, const double *lambda, double F[3],
                           double *residual);
 
+/* The degrees of freedom of e's coordinates under its constraints taken
+ * together (Desloge ch. 49).  relations: the independent relations
+ * phi(q, t) = const the constraints imply, the holonomic ones and the
+ * integrable combinations of Pfaffian ones, even when no single constraint
+ * is integrable (two wheels on an axle: th - a (p1 - p2)/(2b)); found as
+ * n + 1 minus the dimension of the smallest involutive distribution that
+ * contains the constraints' kernel in (q, t) (Frobenius), at random points,
+ * for generic parameter values and user functions.  configurational = n - relations,
+ * motional = n - independent (the rank of the constraint rows). */
+#define QD_DOF_MAXCOMB 4
+typedef struct qd_dof {
+    size_t coordinates;          /* e->n (eliminated ones not counted) */
+    size_t independent;          /* independent constraints */
+    size_t relations;            /* independent integrable combinations */
+    size_t configurational;
+    size_t motional;
+    /* phi = const for the relations that are combinations of two or more
+     * constraints with constant coefficients (th - a (p1 - p2)/(2b) on the
+     * axle, up to a factor), where found in closed form: ncombined of them */
+    size_t ncombined;
+    const qd_expr *combined[QD_DOF_MAXCOMB];
+} qd_dof;
+
+/* Fill d for e.  QD_ERR_UNBOUND when a constraint coefficient cannot be
+ * evaluated (a derivative of a user function written in it), QD_ERR_TOOBIG
+ * beyond 31 coordinates and symbols; d then counts no constraint. */
+QD_API qd_status qd_eom_dof(qd_ctx *ctx, const qd_eom *e, qd_dof *d);
+
 #ifdef __cplusplus
 }
 #endif

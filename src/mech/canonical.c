@@ -4,9 +4,12 @@
  *
  * Every type is one pattern: F(x, y, t) with x an old variable (q or p), y
  * a new one (Q or P), cx = sx dF/dx the old conjugate of x and cy = sy dF/dy
- * the new conjugate of y.  Solving the first relation for y (linear in y)
- * gives y(q, p, t) and then cy(q, p, t); solving the second for x gives the
- * inverse map that K(Q, P, t) needs.
+ * the new conjugate of y.  Solving the first relation for y gives y(q, p, t)
+ * and then cy(q, p, t); solving the second for x gives the inverse map that
+ * K(Q, P, t) needs.  A relation linear in the unknowns is solved by
+ * Cramer's rule; otherwise the unknowns are isolated (isolate.c), which
+ * takes the harmonic oscillator's F1 = m w q^2 cot(Q)/2 (Goldstein ch. 9.3):
+ * p = m w q cot(Q) gives Q = atan(m w q/p).
  */
 #include <stdlib.h>
 #include "qdot/canonical.h"
@@ -55,6 +58,31 @@ static qd_status solve_linear(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
     return st;
 }
 
+/* The n relations eq = 0 solved for xs: by Cramer's rule when linear, else
+ * by isolation (QD_ERR_NONLINEAR with ctx clean and *failed the relation
+ * when that fails too). */
+static qd_status solve_for(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
+                           const qd_expr *const *xs, const qd_expr **sol, size_t *failed) {
+    *failed = 0;
+    qd_status st = solve_linear(ctx, n, eq, xs, sol);
+    if (st != QD_ERR_NONLINEAR)
+        return st;
+    qd_ctx_clear_error(ctx);
+    return qd__isolate(ctx, n, eq, xs, sol, failed);
+}
+
+/* The forward relation cx_k = sx dF/dx_k could not be solved for y. */
+static void unsolved(qd_ctx *ctx, const gen_shape *s, const qd_expr *const *x,
+                     const qd_expr *const *cx, const qd_expr *const *y, size_t n, size_t k) {
+    const char *ys = n == 1 ? qd_expr_name(y[0]) : s->y_is_Q ? "Q1..Qn" : "P1..Pn";
+    qd_ctx_error(ctx, QD_ERR_NONLINEAR,
+                 "cannot solve %s = %sdF/d%s for %s in closed form: qdot isolates a new "
+                 "variable that occurs once (through sums, products, powers, sin, cos, tan, "
+                 "exp, log and their inverses), sin and cos of it as a ratio, or one "
+                 "subexpression of it repeated",
+                 qd_expr_name(cx[k]), s->sx < 0 ? "-" : "", qd_expr_name(x[k]), ys);
+}
+
 /* rel_j = c_j - s dF/dv_j for the n variables v: zero along the map. */
 static void relations(qd_ctx *ctx, size_t n, const qd_expr *F, const qd_expr *const *v,
                       const qd_expr *const *c, int s, const qd_expr **rel) {
@@ -78,8 +106,9 @@ static const qd_expr *new_hamiltonian(qd_ctx *ctx, size_t n, const gen_shape *s,
                                       const qd_expr *const *cy, const qd_expr *K,
                                       const qd_expr **w) {
     const qd_expr **rel = w, **xs = w + n, **from = w + 2 * n, **to = w + 4 * n;
+    size_t failed;
     relations(ctx, n, F, y, cy, s->sy, rel);
-    qd_status st = solve_linear(ctx, n, rel, x, xs);
+    qd_status st = solve_for(ctx, n, rel, x, xs, &failed);
     if (st == QD_ERR_NONLINEAR || st == QD_ERR_SINGULAR) {
         qd_ctx_clear_error(ctx);
         return NULL;
@@ -93,7 +122,7 @@ static const qd_expr *new_hamiltonian(qd_ctx *ctx, size_t n, const gen_shape *s,
         to[n + j] = qd_mul(ctx, qd_int(ctx, s->sx), qd_diff(ctx, F, x[j]));
     }
     subs_all(ctx, n, to + n, n, x, xs);
-    return qd_simplify(ctx, qd_subs(ctx, K, 2 * n, from, to));
+    return qd__untrig(ctx, qd_simplify(ctx, qd_subs(ctx, K, 2 * n, from, to)));
 }
 
 qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *const *old_q,
@@ -119,15 +148,20 @@ qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *co
         return QD_ERR_NOMEM;
     }
     const qd_expr **ys = s->y_is_Q ? res : res + n, **cys = s->y_is_Q ? res + n : res;
+    size_t failed;
     relations(ctx, n, F, x, cx, s->sx, w);
-    qd_status st = solve_linear(ctx, n, w, y, ys);
+    qd_status st = solve_for(ctx, n, w, y, ys, &failed);
+    if (st == QD_ERR_NONLINEAR && qd_ctx_status(ctx) == QD_OK)
+        unsolved(ctx, s, x, cx, y, n, failed);
     if (st == QD_OK) {
         for (size_t j = 0; j < n; j++)
             cys[j] = qd_mul(ctx, qd_int(ctx, s->sy), qd_diff(ctx, F, y[j]));
         subs_all(ctx, n, cys, n, y, ys);
+        for (size_t j = 0; j < n; j++) /* sin(atan(..)) from an isolated y */
+            cys[j] = qd__untrig(ctx, cys[j]);
         const qd_expr *K = H && t ? qd_add(ctx, H, qd_diff(ctx, F, t)) : H;
         if (K) {
-            out->K_old = qd_simplify(ctx, qd_subs(ctx, K, n, y, ys));
+            out->K_old = qd__untrig(ctx, qd_simplify(ctx, qd_subs(ctx, K, n, y, ys)));
             out->K_new = new_hamiltonian(ctx, n, s, F, x, cx, y, cy, K, w);
         }
         st = qd_ctx_status(ctx);

@@ -463,6 +463,16 @@ qd_status qd__con_classify(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_co
     return st != QD_OK && qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : st;
 }
 
+const qd_expr *qd__con_integral(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                               const qd_con *c) {
+    forms f;
+    const qd_expr *phi = NULL;
+    if (forms_init(&f, ctx, n, q, &c, 1) == QD_OK && f.nv > 0)
+        phi = potential(&f, f.w);
+    forms_free(&f);
+    return phi;
+}
+
 qd_status qd__con_frobenius(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *const *cs,
                             size_t m, bool *integrable) {
     *integrable = true;

@@ -131,4 +131,36 @@ qd_status qd__con_classify(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_co
 qd_status qd__con_frobenius(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *const *cs,
                             size_t m, bool *integrable);
 
+/* Solve the n equations eq_i = 0 for the unknowns xs (isolate.c): each
+ * unknown isolated where it occurs once or can be made to (see the head
+ * comment), one equation with one unknown at a time, on principal branches.
+ * QD_ERR_NONLINEAR, with ctx clean, when some equation could not be solved:
+ * *failed is its index. */
+qd_status qd__isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq, const qd_expr *const *xs,
+                      const qd_expr **sol, size_t *failed);
+
+/* e with every sin, cos or tan of an asin, acos or atan written without the
+ * inverse (sin(atan(u)) = u/sqrt(1 + u^2)), simplified (isolate.c). */
+const qd_expr *qd__untrig(qd_ctx *ctx, const qd_expr *e);
+
+/* phi(q, t) with d phi = sum_j c->a_j dq_j + c->a0 dt, when that form is
+ * exact and phi is found in closed form (checked); NULL otherwise
+ * (classify.c). */
+const qd_expr *qd__con_integral(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                               const qd_con *c);
+
+/* The m constraints c together (closure.c): *rank, the number of independent
+ * forms w_k = sum_j a_kj dq_j + a_k0 dt, and *relations, the number of
+ * independent phi(q, t) = const they imply (n + 1 minus the dimension of
+ * the involutive closure of their kernel, at random points). */
+qd_status qd__con_closure(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *c,
+                          size_t m, size_t *rank, size_t *relations);
+
+/* qd__con_closure, and the integrals (up to cap, *nintegrals of them) of
+ * the relations that are combinations with constant coefficients of two or
+ * more constraints (roll1 - roll2 on the axle), where found in closed form. */
+qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *c,
+                            size_t m, size_t *rank, size_t *relations, const qd_expr **integrals,
+                            size_t cap, size_t *nintegrals);
+
 #endif

@@ -32,6 +32,11 @@ import shutil
 import subprocess
 import sys
 import tempfile
+from pathlib import Path
+
+import sympy as sp
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 DOUBLE_PENDULUM = """\
 # Double pendulum
@@ -615,7 +620,44 @@ def test_check_constraints(r):
             p.returncode == 0 and "nonholonomic" in line_of(out, "constraint knife") and
             "integrable" in line_of(out, "constraint hyper") and
             "x*y = const" in line_of(out, "constraint hyper") and
-            "degrees of freedom: 2 configurational, 1 motional" in out, out + p.stderr)
+            "degrees of freedom: 1 configurational, 1 motional" in out, out + p.stderr)
+    # together the knife and x y = const leave only z free (x' = y' = 0 where y + x z != 0):
+    # 2 relations among x, y, z, though one constraint alone is nonholonomic
+    r.check("check knife: the constraints together fix x and y",
+            "integrable combinations: 1 " in out, out)
+    # Desloge ch. 52 Problem 5 (p. 557): "four degrees of configurational freedom and two
+    # degrees of motional freedom"; no constraint alone is integrable, their difference is
+    p = r.run("check", str(EXAMPLES / "two_disks_axle.qd"))
+    out = p.stdout
+    r.check("check two disks on an axle: 4 configurational, 2 motional",
+            p.returncode == 0 and "degrees of freedom: 4 configurational, 2 motional (5 "
+            "coordinates; constraints: 0 holonomic, 0 integrable, 3 nonholonomic)" in out and
+            "integrable combinations: 1 " in out, out + p.stderr)
+    # the relation, up to a factor: a (phi - psi) - 2 b th (Goldstein ch. 1 Derivation 5:
+    # th = C - (a/b)(phi - phi') for an axle of length b; the sign is the angles' convention)
+    line = line_of(out, "  integral of a combination: ")
+    syms = {n: sp.Symbol(n) for n in ("a", "b", "th", "phi", "psi")}
+    ok = line.endswith(" = const")
+    if ok:
+        phi = sp.sympify(line.split(": ", 1)[1][:-len(" = const")].replace("^", "**"),
+                         locals=syms)
+        ratio = sp.simplify(phi / (syms["a"] * (syms["phi"] - syms["psi"]) - 2 * syms["b"] *
+                                   syms["th"]))
+        ok = ratio.is_number and ratio != 0
+    r.check("check two disks on an axle: the relation th - a (phi - psi)/(2b)", ok, out)
+    # Desloge ch. 49 Example 1 (p. 536): the rolling disk, 4 and 2, nothing integrable
+    p = r.run("check", str(EXAMPLES / "rolling_disk.qd"))
+    r.check("check rolling disk: 4 configurational, 2 motional",
+            p.returncode == 0 and "degrees of freedom: 4 configurational, 2 motional" in p.stdout
+            and "integrable combinations" not in p.stdout, p.stdout + p.stderr)
+    # x' - y' = 0 split across two nonholonomic constraints (u' - v w' is a contact form)
+    split = ("coordinates x, y, u, v, w\nparameters m = 1\n"
+             "T = m/2*(x'^2 + y'^2 + u'^2 + v'^2 + w'^2)\n"
+             "constraint c1: x' - y' + u' - v*w' = 0\nconstraint c2: u' - v*w' = 0\n")
+    p = r.run("check", r.model("split.qd", split))
+    r.check("check split x' = y': 4 configurational, 3 motional",
+            p.returncode == 0 and "degrees of freedom: 4 configurational, 3 motional" in p.stdout
+            and "integrable combinations: 1 " in p.stdout, p.stdout + p.stderr)
 
 
 def main():

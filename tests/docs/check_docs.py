@@ -6,7 +6,8 @@
 - Every fenced block in docs/cli.md and README.md is replayed as a shell
   session: `$ cat NAME` followed by text creates that file; `$ qdot ...` runs
   the command (in a scratch directory where examples/ is the repository's)
-  and must exit 0 (or 2 when the text shows an `error:`); the lines shown
+  and must exit 0 (or 2 when the text shows an `error:`, or N when the
+  command line ends with a comment `  # exit N`); the lines shown
   after it, when there are any, must be what the command prints (stdout, then
   stderr), where a line `...` stands for any number of lines.
 - Every command `qdot --help` lists has a section in docs/cli.md with at
@@ -96,7 +97,8 @@ def check_sessions(name, text, qdot, work, failed):
                 continue
             r = subprocess.run([qdot] + words[1:], capture_output=True, text=True, cwd=work,
                                timeout=120)
-            want = 2 if any('error:' in s for s in shown) else 0
+            note = re.search(r'  # exit (\d+)\s*$', cmd)
+            want = int(note.group(1)) if note else 2 if any('error:' in s for s in shown) else 0
             got = (r.stdout + r.stderr).splitlines()
             where = '%s: $ %s' % (name, cmd)
             if r.returncode != want:

@@ -501,6 +501,45 @@ def _(q, v, t, p, label=None):
 
 
 # ---------------------------------------------------------------------------
+# Two disks on an axle
+
+def axle_state(rng, p):
+    """A rolling state: forward speed w along n = (-sin th, cos th), turning rate om."""
+    a, b = p['a'], p['b']
+    th, w, om = u(rng, -3, 3), u(rng), u(rng)
+    q = {'x': u(rng), 'y': u(rng), 'th': th, 'phi': u(rng, -3, 3), 'psi': u(rng, -3, 3)}
+    v = {'x': -w * sin(th), 'y': w * cos(th), 'th': om, 'phi': (w + b * om) / a,
+         'psi': (w - b * om) / a}
+    return q, v, u(rng, 0, 3)
+
+
+def axle_energy(q, v, t, p):
+    m, a, b = p['m'], p['a'], p['b']
+    return (m * (v['x']**2 + v['y']**2) + (m * b * b + m * a * a / 4) * v['th']**2
+            + m * a * a / 4 * (v['phi']**2 + v['psi']**2))
+
+
+@example('two_disks_axle', ['x', 'y', 'th', 'phi', 'psi'], axle_state, energy=axle_energy,
+         kinds={'side': 'nonholonomic', 'roll1': 'nonholonomic', 'roll2': 'nonholonomic'},
+         dof=(4, 2))
+def _(q, v, t, p, label=None):
+    # Desloge ch. 52 P5 (p. 557; 4 configurational, 2 motional degrees of freedom).  Derived
+    # by d'Alembert with the admissible displacements (d sigma along n, d theta): with
+    # w = -x' sin th + y' cos th, the sigma equation is 2 (m + 2J/a^2) w' = 0 and the theta
+    # equation 2 (I + 2 J b^2/a^2) th'' = 0 (J = m a^2/4, I = m b^2 + J): the axle keeps its
+    # speed and turning rate, x'' = -w th' cos th, y'' = -w th' sin th, and the wheels their
+    # rates.  The multipliers: the th and phi rows give lambda_roll1 = lambda_roll2 = 0, and
+    # the side force is the centripetal force of the mass 2m, lambda_side = -2 m w th'.
+    m, a, b, th = p['m'], p['a'], p['b'], q['th']
+    w, om = -v['x'] * sin(th) + v['y'] * cos(th), v['th']
+    c, s = cos(th), sin(th)
+    return dict(acc=[-w * om * c, -w * om * s, 0.0, 0.0, 0.0],
+                mult={'side': -2 * m * w * om, 'roll1': 0.0, 'roll2': 0.0},
+                grad={'side': [c, s, 0, 0, 0], 'roll1': [-s, c, b, -a, 0],
+                      'roll2': [-s, c, -b, 0, -a]})
+
+
+# ---------------------------------------------------------------------------
 # Sphere on a turntable
 
 def omega_space(ph, th, phd, thd, psd):

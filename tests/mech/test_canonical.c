@@ -9,6 +9,8 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <math.h>
+
 #include "qdot/qdot.h"
 #include "qdot/canonical.h"
 
@@ -252,13 +254,19 @@ static void test_f2_point_transformation(void **state) {
     assert_int_equal(check(ctx, 2, x.q, x.p, r.Q, r.P).kind, QD_CANON_YES);
     const qd_expr *K = qd_add(ctx, qd_add(ctx, qd_powi(ctx, r.P[0], 2), r.P[1]), qd_powi(ctx, r.Q[1], 2));
     assert_true(same(ctx, r.K_old, K));
-    assert_null(r.K_new);
+    /* q1 = sqrt(Q1) (the positive root) is isolated: K = P1^2 + P2 + Q2^2 */
+    assert_non_null(r.K_new);
+    const qd_expr *Knew = qd_add(ctx, qd_add(ctx, qd_powi(ctx, x.P[0], 2), x.P[1]),
+                                 qd_powi(ctx, x.Q[1], 2));
+    assert_true(same(ctx, r.K_new, Knew));
     assert_int_equal(qd_ctx_status(ctx), QD_OK);
     qd_gen_result_free(&r);
     qd_ctx_free(ctx);
 }
 
-/* F2 = q^2 has no P: the map is not defined (singular mixed Hessian). */
+/* F2 = q^2 has no P: the map is not defined (singular mixed Hessian).
+ * F2 = q (P + e^P) gives p = P + e^P, which has no closed-form inverse
+ * (Lambert's W): a named error, not a wrong answer. */
 static void test_f2_degenerate(void **state) {
     (void)state;
     qd_ctx *ctx = qd_ctx_new();
@@ -268,8 +276,119 @@ static void test_f2_degenerate(void **state) {
                      QD_ERR_SINGULAR);
     assert_null(r.Q);
     qd_ctx_clear_error(ctx);
-    const qd_expr *F = qd_mul(ctx, x.q[0], qd_powi(ctx, x.P[0], 2));
+    const qd_expr *F = qd_mul(ctx, x.q[0], qd_add(ctx, x.P[0], qd_fn(ctx, QD_EXP, x.P[0])));
     assert_int_equal(qd_generate_f2(ctx, 1, x.q, x.p, x.Q, x.P, F, x.t, NULL, &r), QD_ERR_NONLINEAR);
+    assert_null(r.Q);
+    assert_string_equal(qd_ctx_message(ctx),
+                        "cannot solve p = dF/dq for P in closed form: qdot isolates a new "
+                        "variable that occurs once (through sums, products, powers, sin, cos, "
+                        "tan, exp, log and their inverses), sin and cos of it as a ratio, or one "
+                        "subexpression of it repeated");
+    qd_ctx_free(ctx);
+}
+
+/* |a - b| small at random points of the symbols (q, p positive). */
+static void assert_close_at(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
+    const qd_expr *syms[16];
+    double vals[16], va, vb;
+    size_t ns = qd_free_symbols(ctx, a, syms, 8);
+    assert_true(ns <= 8);
+    ns += qd_free_symbols(ctx, b, syms + ns, 8);
+    assert_true(ns <= 16);
+    for (int k = 0; k < 5; k++) {
+        for (size_t i = 0; i < ns; i++) /* by symbol, so that a repeated one agrees */
+            vals[i] = 0.4 + 0.3 * (double)((qd_expr_hash(syms[i]) + 7u * (unsigned)k) % 5u);
+        assert_int_equal(qd_eval(ctx, a, ns, syms, vals, &va), QD_OK);
+        assert_int_equal(qd_eval(ctx, b, ns, syms, vals, &vb), QD_OK);
+        assert_true(fabs(va - vb) <= 1e-12 * (1 + fabs(va)));
+    }
+}
+
+/* The harmonic oscillator's F1 = (m w q^2/2) cot Q (Goldstein ch. 9, the
+ * harmonic oscillator; Desloge ch. 76 P7, seed-desloge-C.md T39): Q enters
+ * p = m w q cot Q nonlinearly.  Q = atan(m w q/p), P = (p^2 + m^2 w^2 q^2)
+ * / (2 m w) = E/w, canonical, and H = p^2/2m + m w^2 q^2/2 becomes K = w P.
+ * cot is written cos/sin, and 1/tan. */
+static void test_f1_oscillator(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    vars x = mkvars(ctx, 1);
+    const qd_expr *q = x.q[0], *p = x.p[0], *Q = x.Q[0], *P = x.P[0];
+    const qd_expr *m = qd_param(ctx, "m"), *w = qd_param(ctx, "w"), *two = qd_int(ctx, 2);
+    const qd_expr *mw = qd_mul(ctx, m, w);
+    const qd_expr *H = qd_add(ctx, qd_div(ctx, qd_powi(ctx, p, 2), qd_mul(ctx, two, m)),
+                              qd_mul(ctx, qd_div(ctx, qd_mul(ctx, m, qd_powi(ctx, w, 2)), two),
+                                     qd_powi(ctx, q, 2)));
+    const qd_expr *half = qd_div(ctx, qd_mul(ctx, mw, qd_powi(ctx, q, 2)), two);
+    const qd_expr *cot[2] = {qd_div(ctx, qd_fn(ctx, QD_COS, Q), qd_fn(ctx, QD_SIN, Q)),
+                             qd_powi(ctx, qd_fn(ctx, QD_TAN, Q), -1)};
+    for (int k = 0; k < 2; k++) {
+        qd_gen_result r;
+        const qd_expr *F = qd_mul(ctx, half, cot[k]);
+        if (qd_generate(ctx, QD_GEN_F1, 1, x.q, x.p, x.Q, x.P, F, x.t, H, &r) != QD_OK)
+            fail_msg("F1 oscillator %d: %s", k, qd_ctx_message(ctx));
+        assert_close_at(ctx, qd_fn(ctx, QD_TAN, r.Q[0]), qd_div(ctx, qd_mul(ctx, mw, q), p));
+        const qd_expr *E = qd_div(ctx, qd_add(ctx, qd_powi(ctx, p, 2),
+                                              qd_mul(ctx, qd_powi(ctx, mw, 2), qd_powi(ctx, q, 2))),
+                                  qd_mul(ctx, two, mw));
+        assert_true(same(ctx, r.P[0], E));
+        assert_int_equal(check(ctx, 1, x.q, x.p, r.Q, r.P).kind, QD_CANON_YES);
+        assert_true(same(ctx, r.K_old, H));
+        assert_non_null(r.K_new);
+        assert_true(same(ctx, r.K_new, qd_mul(ctx, w, P)));
+        assert_false(qd_has(r.K_new, Q)); /* Q cyclic: P = E/w conserved */
+        qd_gen_result_free(&r);
+    }
+    qd_ctx_free(ctx);
+}
+
+/* F3 = -(e^p - 1) tan Q: q = -dF3/dp = e^p tan Q, so Q = atan(q e^-p), and
+ * P = -dF3/dQ = (e^p - 1)/cos^2 Q = (e^p - 1)(1 + q^2 e^-2p); canonical.
+ * Back: e^p = 1 + P cos^2 Q, q = (1 + P cos^2 Q) tan Q. */
+static void test_f3_exp_tan(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    vars x = mkvars(ctx, 1);
+    const qd_expr *q = x.q[0], *p = x.p[0], *Q = x.Q[0], *P = x.P[0], *one = qd_int(ctx, 1);
+    const qd_expr *ep = qd_fn(ctx, QD_EXP, p);
+    const qd_expr *F = qd_neg(ctx, qd_mul(ctx, qd_sub(ctx, ep, one), qd_fn(ctx, QD_TAN, Q)));
+    const qd_expr *H = qd_div(ctx, qd_add(ctx, qd_powi(ctx, p, 2), qd_powi(ctx, q, 2)), qd_int(ctx, 2));
+    qd_gen_result r;
+    if (qd_generate(ctx, QD_GEN_F3, 1, x.q, x.p, x.Q, x.P, F, x.t, H, &r) != QD_OK)
+        fail_msg("F3: %s", qd_ctx_message(ctx));
+    assert_close_at(ctx, qd_fn(ctx, QD_TAN, r.Q[0]), qd_div(ctx, q, ep));
+    assert_close_at(ctx, r.P[0], qd_mul(ctx, qd_sub(ctx, ep, one),
+                                        qd_add(ctx, one, qd_div(ctx, qd_powi(ctx, q, 2),
+                                                                qd_powi(ctx, ep, 2)))));
+    assert_int_equal(check(ctx, 1, x.q, x.p, r.Q, r.P).kind, QD_CANON_YES);
+    /* K(Q, P) = H(q(Q, P), p(Q, P)) */
+    const qd_expr *e = qd_add(ctx, one, qd_mul(ctx, P, qd_powi(ctx, qd_fn(ctx, QD_COS, Q), 2)));
+    const qd_expr *qb = qd_mul(ctx, e, qd_fn(ctx, QD_TAN, Q)), *pb = qd_fn(ctx, QD_LOG, e);
+    assert_non_null(r.K_new);
+    assert_close_at(ctx, r.K_new, qd_div(ctx, qd_add(ctx, qd_powi(ctx, pb, 2), qd_powi(ctx, qb, 2)),
+                                         qd_int(ctx, 2)));
+    qd_gen_result_free(&r);
+    qd_ctx_free(ctx);
+}
+
+/* Two oscillators at once, F1 = sum q_i^2 cot(Q_i)/2: each relation has
+ * its own unknown; canonical, K = P1 + P2 for H = sum (p_i^2 + q_i^2)/2. */
+static void test_f1_two_oscillators(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    vars x = mkvars(ctx, 2);
+    const qd_expr *F = qd_int(ctx, 0), *H = qd_int(ctx, 0), *h = qd_rat(ctx, 1, 2);
+    for (int i = 0; i < 2; i++) {
+        const qd_expr *cot = qd_div(ctx, qd_fn(ctx, QD_COS, x.Q[i]), qd_fn(ctx, QD_SIN, x.Q[i]));
+        F = qd_add(ctx, F, qd_mul(ctx, qd_mul(ctx, h, qd_powi(ctx, x.q[i], 2)), cot));
+        H = qd_add(ctx, H, qd_mul(ctx, h, qd_add(ctx, qd_powi(ctx, x.p[i], 2), qd_powi(ctx, x.q[i], 2))));
+    }
+    qd_gen_result r;
+    if (qd_generate(ctx, QD_GEN_F1, 2, x.q, x.p, x.Q, x.P, F, x.t, H, &r) != QD_OK)
+        fail_msg("two oscillators: %s", qd_ctx_message(ctx));
+    assert_int_equal(check(ctx, 2, x.q, x.p, r.Q, r.P).kind, QD_CANON_YES);
+    assert_true(same(ctx, r.K_new, qd_add(ctx, x.P[0], x.P[1])));
+    qd_gen_result_free(&r);
     qd_ctx_free(ctx);
 }
 
@@ -283,6 +402,9 @@ int main(void) {
         cmocka_unit_test(test_f2_examples),
         cmocka_unit_test(test_f2_point_transformation),
         cmocka_unit_test(test_f2_degenerate),
+        cmocka_unit_test(test_f1_oscillator),
+        cmocka_unit_test(test_f3_exp_tan),
+        cmocka_unit_test(test_f1_two_oscillators),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

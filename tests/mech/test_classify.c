@@ -307,6 +307,195 @@ static void test_frobenius_system(void **state) {
     assert_false(ok);
 }
 
+/* ---- the constraints together: relations among the coordinates --------------- */
+
+/* qd__con_closure on the first m constraints of s: the number of
+ * independent forms and of relations phi(q, t) = const they imply. */
+static void closure(sys *s, size_t m, size_t rank, size_t relations) {
+    size_t r, rel;
+    if (qd__con_closure(s->ctx, s->n, s->q, s->con, m, &r, &rel) != QD_OK)
+        fail_msg("closure: %s", qd_ctx_message(s->ctx));
+    if (r != rank || rel != relations)
+        fail_msg("closure: %zu forms and %zu relations, expected %zu and %zu", r, rel, rank,
+                 relations);
+}
+
+/* The two-wheel axle as Desloge ch. 52 Problem 5 (p. 557) gives it (seed
+ * 000; examples/two_disks_axle.qd): no side slip, and each wheel rolling,
+ * -x' sin th + y' cos th +- b th' - a p' = 0.  No constraint is integrable
+ * alone, but roll1 - roll2 is: 3 independent forms, 1 relation (4
+ * configurational, 2 motional degrees of freedom, as the book says; counted
+ * one constraint at a time it was 5). */
+static void test_closure_axle(void **state) {
+    static const char *names[] = {"x", "y", "th", "p1", "p2"};
+    sys *s = sys_new(state, 5, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *a = P(s, "a"), *b = P(s, "b"), *th = s->q[2], *z = I(s, 0);
+    const qd_expr *S = qd_fn(ctx, QD_SIN, th), *C = qd_fn(ctx, QD_COS, th);
+    const qd_expr *side[5] = {C, S, z, z, z};
+    const qd_expr *roll1[5] = {qd_neg(ctx, S), C, b, qd_neg(ctx, a), z};
+    const qd_expr *roll2[5] = {qd_neg(ctx, S), C, qd_neg(ctx, b), z, qd_neg(ctx, a)};
+    assert_int_equal(classify(s, con(s, 0, "side", side, z))->kind, QD_CON_NONHOLONOMIC);
+    assert_int_equal(classify(s, con(s, 1, "roll1", roll1, z))->kind, QD_CON_NONHOLONOMIC);
+    assert_int_equal(classify(s, con(s, 2, "roll2", roll2, z))->kind, QD_CON_NONHOLONOMIC);
+    closure(s, 3, 3, 1);
+    closure(s, 2, 2, 0); /* side and one wheel: nothing integrates */
+    /* the relation itself: phi with d phi proportional to roll1 - roll2,
+     * 2b dth - a dp1 + a dp2 (Goldstein's th = C - (a/b)(phi - phi') for an
+     * axle of length b) */
+    size_t r, rel, nint;
+    const qd_expr *phi[2];
+    assert_int_equal(qd__con_relations(ctx, 5, s->q, s->con, 3, &r, &rel, phi, 2, &nint), QD_OK);
+    assert_int_equal(nint, 1);
+    const qd_expr *d[5];
+    for (int j = 0; j < 5; j++)
+        d[j] = qd_diff(ctx, phi[0], s->q[j]);
+    assert_true(qd_is_zero(qd_simplify(ctx, d[0])) && qd_is_zero(qd_simplify(ctx, d[1])));
+    assert_false(qd_is_zero(qd_simplify(ctx, d[3])));
+    assert_true(qd_is_zero(qd_simplify(ctx, qd_add(ctx, d[3], d[4]))));
+    assert_true(qd_is_zero(qd_simplify(ctx, qd_add(ctx, qd_mul(ctx, a, d[2]),
+                                                   qd_mul(ctx, qd_mul(ctx, I(s, 2), b), d[3])))));
+}
+
+/* The upright rolling disk (Desloge ch. 49 Ex. 1, p. 536): 2 forms, no
+ * relation: 4 configurational and 2 motional degrees of freedom. */
+static void test_closure_rolling_disk(void **state) {
+    static const char *names[] = {"x1", "x2", "ph", "psi"};
+    sys *s = sys_new(state, 4, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *a = P(s, "a"), *ph = s->q[2], *z = I(s, 0);
+    const qd_expr *w1[4] = {I(s, 1), z, z, qd_mul(ctx, a, qd_fn(ctx, QD_COS, ph))};
+    const qd_expr *w2[4] = {z, I(s, 1), z, qd_mul(ctx, a, qd_fn(ctx, QD_SIN, ph))};
+    con(s, 0, "roll1", w1, z);
+    con(s, 1, "roll2", w2, z);
+    closure(s, 2, 2, 0);
+}
+
+/* One constraint integrable alone and one not, in separate variables:
+ * y' = z x' (Desloge ch. 49's knife edge form) and x u' + u x' = 0
+ * (x u = const): exactly 1 relation, 3 configurational degrees of freedom
+ * as one at a time gives.  In three coordinates instead, y' = z x' with
+ * x y' + y x' = 0 leaves only z free (x' = y' = 0 where y + x z != 0):
+ * 2 relations, though one constraint alone is nonholonomic. */
+static void test_closure_one_integrable(void **state) {
+    static const char *names[] = {"x", "y", "z", "u"};
+    sys *s = sys_new(state, 4, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *x = s->q[0], *y = s->q[1], *z = s->q[2], *u = s->q[3], *o = I(s, 0);
+    const qd_expr *knife[4] = {qd_neg(ctx, z), I(s, 1), o, o};
+    const qd_expr *hyper[4] = {u, o, o, x}, *hyper3[4] = {y, x, o, o};
+    assert_int_equal(classify(s, con(s, 0, "knife", knife, o))->kind, QD_CON_NONHOLONOMIC);
+    assert_int_equal(classify(s, con(s, 1, "hyper", hyper, o))->kind, QD_CON_INTEGRABLE);
+    closure(s, 2, 2, 1);
+    con(s, 1, "hyper3", hyper3, o);
+    s->n = 3;
+    closure(s, 2, 2, 2);
+}
+
+/* x' - y' = 0 split across two constraints, each nonholonomic:
+ * c1 = x' - y' + u' - v w', c2 = u' - v w' (u' - v w' is Heisenberg's
+ * contact form, never integrable): 1 relation, x - y = const. */
+static void test_closure_split(void **state) {
+    static const char *names[] = {"x", "y", "u", "v", "w"};
+    sys *s = sys_new(state, 5, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *v = s->q[3], *o = I(s, 0), *one = I(s, 1);
+    const qd_expr *c1[5] = {one, qd_neg(ctx, one), one, o, qd_neg(ctx, v)};
+    const qd_expr *c2[5] = {o, o, one, o, qd_neg(ctx, v)};
+    assert_int_equal(classify(s, con(s, 0, "c1", c1, o))->kind, QD_CON_NONHOLONOMIC);
+    assert_int_equal(classify(s, con(s, 1, "c2", c2, o))->kind, QD_CON_NONHOLONOMIC);
+    closure(s, 2, 2, 1);
+}
+
+/* Time (Goldstein ch. 1 Derivation 6, seed 002): a velocity always
+ * pointing at (t, 0), (x - t) y' - y x' = 0, is nonholonomic: no relation;
+ * x' - y' - w cos(w t) = 0 is exact in (x, y, t): x - y - sin(w t) = const,
+ * 1 relation. */
+static void test_closure_time(void **state) {
+    static const char *names[] = {"x", "y"};
+    sys *s = sys_new(state, 2, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *x = s->q[0], *y = s->q[1], *t = qd_time(ctx), *w = P(s, "w");
+    const qd_expr *aim[2] = {qd_neg(ctx, y), qd_sub(ctx, x, t)};
+    con(s, 0, "aim", aim, I(s, 0));
+    closure(s, 1, 1, 0);
+    const qd_expr *drive[2] = {I(s, 1), I(s, -1)};
+    con(s, 0, "drive", drive, qd_neg(ctx, qd_mul(ctx, w, qd_fn(ctx, QD_COS, qd_mul(ctx, w, t)))));
+    closure(s, 1, 1, 1);
+}
+
+/* User functions count as generic ones: x' = f(y) z', y' = z x' in three
+ * coordinates allow one direction, so 2 relations whatever f is; the
+ * rolling disk with cos and sin replaced by f(ph), g(ph) keeps none. */
+static void test_closure_user_functions(void **state) {
+    static const char *names[] = {"x", "y", "z", "u"};
+    sys *s = sys_new(state, 4, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *y = s->q[1], *z = s->q[2], *o = I(s, 0);
+    s->n = 3;
+    const qd_expr *fy = qd_ufunc(ctx, "f", 1, &y);
+    const qd_expr *c1[3] = {I(s, 1), o, qd_neg(ctx, fy)}, *c2[3] = {qd_neg(ctx, z), I(s, 1), o};
+    con(s, 0, "c1", c1, o);
+    con(s, 1, "c2", c2, o);
+    closure(s, 2, 2, 2);
+    /* (x, y, z, u) = (x1, x2, ph, psi) */
+    s->n = 4;
+    const qd_expr *fz = qd_ufunc(ctx, "f", 1, &z), *gz = qd_ufunc(ctx, "g", 1, &z);
+    const qd_expr *r1[4] = {I(s, 1), o, o, fz}, *r2[4] = {o, I(s, 1), o, gz};
+    con(s, 0, "roll1", r1, o);
+    con(s, 1, "roll2", r2, o);
+    closure(s, 2, 2, 0);
+}
+
+/* Random relations hidden in combinations: phi1, phi2 random in (q3, q4,
+ * t) and the contact form dq5 - q1 dq2; three constraints w = G (dphi1,
+ * dphi2, dq5 - q1 dq2) with G a random integer matrix, so that no single
+ * one need be integrable: always 3 forms and 2 relations. */
+static void test_closure_random(void **state) {
+    static const char *names[] = {"q1", "q2", "q3", "q4", "q5"};
+    sys *s = sys_new(state, 5, names);
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *vars[6] = {s->q[0], s->q[1], s->q[2], s->q[3], s->q[4], qd_time(ctx)};
+    const qd_expr *own[3] = {s->q[2], s->q[3], qd_time(ctx)};
+    qt_rng r = {SEED};
+    int ran = 0;
+    for (int i = 0; i < 6; i++) {
+        const qd_expr *th[3][6];
+        for (int f = 0; f < 2; f++) {
+            const qd_expr *phi = qt_random_expr(ctx, &r, own, 3, 3, QT_POLY | QT_TRIG);
+            for (int j = 0; j < 6; j++)
+                th[f][j] = qd_diff(ctx, phi, vars[j]);
+        }
+        for (int j = 0; j < 6; j++)
+            th[2][j] = j == 4 ? I(s, 1) : j == 1 ? qd_neg(ctx, s->q[0]) : I(s, 0);
+        long G[3][3];
+        for (int k = 0; k < 9; k++)
+            G[k / 3][k % 3] = (long)qt_uniform(&r, -3, 4);
+        G[0][0] = G[1][1] = G[2][2] = 5; /* diagonally dominant: invertible */
+        for (int k = 0; k < 3; k++) {
+            const qd_expr *w[6];
+            for (int j = 0; j < 6; j++) {
+                w[j] = I(s, 0);
+                for (int f = 0; f < 3; f++)
+                    w[j] = qd_add(ctx, w[j], qd_mul(ctx, I(s, G[k][f]), th[f][j]));
+            }
+            con(s, (size_t)k, "random", w, w[5]);
+        }
+        if (qd_is_zero(th[0][2]) && qd_is_zero(th[0][3]))
+            continue; /* phi1 of t alone: not a relation among the coordinates */
+        if (qd_is_zero(th[1][2]) && qd_is_zero(th[1][3]))
+            continue;
+        size_t rank, rel;
+        if (qd__con_closure(ctx, 5, s->q, s->con, 3, &rank, &rel) != QD_OK)
+            fail_msg("case %d (seed %u): %s", i, SEED, qd_ctx_message(ctx));
+        if (rank != 3 || rel != 2)
+            fail_msg("case %d (seed %u): %zu forms, %zu relations; expected 3 and 2", i, SEED,
+                     rank, rel);
+        ran++;
+    }
+    assert_true(ran >= 3);
+}
+
 /* ---- errors and properties -------------------------------------------------- */
 
 static void test_no_velocity(void **state) {
@@ -366,6 +555,13 @@ int main(void) {
         cmocka_unit_test_teardown(test_rolling_disk, teardown),
         cmocka_unit_test_teardown(test_axle, teardown),
         cmocka_unit_test_teardown(test_frobenius_system, teardown),
+        cmocka_unit_test_teardown(test_closure_axle, teardown),
+        cmocka_unit_test_teardown(test_closure_rolling_disk, teardown),
+        cmocka_unit_test_teardown(test_closure_one_integrable, teardown),
+        cmocka_unit_test_teardown(test_closure_split, teardown),
+        cmocka_unit_test_teardown(test_closure_time, teardown),
+        cmocka_unit_test_teardown(test_closure_random, teardown),
+        cmocka_unit_test_teardown(test_closure_user_functions, teardown),
         cmocka_unit_test_teardown(test_no_velocity, teardown),
         cmocka_unit_test_teardown(test_random_integrable, teardown),
     };
