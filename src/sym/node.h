@@ -43,6 +43,7 @@ struct qd_expr {
             const char *name;
             const qd_expr *coord;      /* order-0 coordinate, or the symbol itself */
             const qd_expr *next;       /* the next jet symbol once made, else NULL */
+            bool positive;             /* qd_symbol_positive; not part of its identity */
         } sym;
         struct {        /* QD_UFUNC, QD_UDERIV */
             const char *name;
@@ -126,6 +127,10 @@ typedef const qd_expr *(*qd__post_fn)(qd_ctx *ctx, const qd_expr *e, void *data)
 const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_fn post,
                        void *data);
 double qd__pow_value(double b, double e);
+
+/* ---- pow.c ----------------------------------------------------------------- */
+/* Known to be >= 0 wherever it is defined (every symbol is real)? */
+bool qd__nonneg(const qd_expr *e);
 
 /* ---- trigeven.c ------------------------------------------------------------ */
 /* The sum with even powers of sin and cos reduced modulo sin^2 + cos^2 = 1
