@@ -19,7 +19,14 @@
  *        no fi is a number, a MUL; fi sorted by base, no two with one base;
  *        never c * (single ADD) with c rational (that is distributed).
  *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e);
- *        not (MUL b, integer e); not (POW b, integer e).
+ *        not (MUL b, integer e); not (POW b, integer e); not (abs(x) b, even
+ *        integer e); for a fraction e: not (POW b with an even integer
+ *        exponent or a base known >= 0); not (MUL b with a rational
+ *        coefficient whose |c|^e is rational, or with such a POW factor).
+ *   FUNC sin, cos, tan: the argument is not K*pi with K outside [0, 1/2]
+ *        nor with a known value (K*6 or K*4 an integer); a sum's pi term
+ *        K*pi has 0 <= K < 1/2.  abs: the argument is not known >= 0.
+ *        Odd and even functions: the argument has no leading minus.
  */
 #ifndef QD_SYM_NODE_H
 #define QD_SYM_NODE_H
