@@ -100,7 +100,9 @@ static const qd_expr *split_root(qd_ctx *ctx, const qd_expr *prod, const qd_expr
         if (!folded)
             in[nin++] = f;
     }
-    if (!nout)
+    /* (-x^2)^(1/3): -1 alone under the root would fold to the real cube
+     * root, -1, where (-x^2)^(1/3) itself is SymPy's principal root */
+    if (!nout || (nin == 1 && in[0] == ctx->minus_one))
         return NULL;
     out[nout++] = nin ? qd_pow(ctx, qd_mul_n(ctx, nin, in), r) : ctx->one;
     return qd_mul_n(ctx, nout, out);
