@@ -22,7 +22,8 @@
  *        not (MUL b, integer e); not (POW b, integer e); not (abs(x) b, even
  *        integer e); for a fraction e: not (POW b with an even integer
  *        exponent or a base known >= 0); not (MUL b with a rational
- *        coefficient whose |c|^e is rational, or with such a POW factor).
+ *        coefficient whose |c|^e is rational, or with such a POW factor,
+ *        unless what would stay under the root is -1).
  *   FUNC sin, cos, tan: the argument is not K*pi with K outside [0, 1/2]
  *        nor with a known value (K*6 or K*4 an integer); a sum's pi term
  *        K*pi has 0 <= K < 1/2.  abs: the argument is not known >= 0.

@@ -11,7 +11,9 @@
  *   |u|, exp(u), a sum of such...);
  *   (c*F*R)^r = |c|^r * F^r * (sign(c)*R)^r when |c|^r is rational and F
  *   are the factors above (even powers, powers of nonnegative bases):
- *   sqrt(9*a^6*g^2*m^4) = 3*|a|^3*|g|*m^2, sqrt(4*x) = 2*sqrt(x).
+ *   sqrt(9*a^6*g^2*m^4) = 3*|a|^3*|g|*m^2, sqrt(4*x) = 2*sqrt(x); but not
+ *   when sign(c)*R would be -1, whose odd roots fold to the real root
+ *   ((-1)^(1/3) = -1) where (-x^2)^(1/3) is the principal one.
  * Other factors stay under the root (sqrt(2*g*l) is not split), as do
  * floats.  The checks look only at the base's own factors, so they cost a
  * pass over a product only when a product is raised to a fraction.
