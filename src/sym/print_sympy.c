@@ -298,7 +298,7 @@ qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *const *
     fn_names c = {QD_PTRMAP_INIT, QD_PTRMAP_INIT, NULL, 0, 0, false};
     for (size_t i = 0; i < n; i++)
         collect_names(&c, exprs[i]);
-    if (!c.oom) {
+    if (!c.oom && c.n) {
         qsort(c.list, c.n, sizeof *c.list, name_order);
         for (size_t i = 0; i < c.n; i++)
             qd_buf_printf(out, "%s = Function('%s')\n", c.list[i], c.list[i]);
