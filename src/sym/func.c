@@ -69,13 +69,14 @@ static bool is_even(qd_func f) { return f == QD_COS || f == QD_COSH || f == QD_A
 
 /* K = num/den when t is K*pi with K rational and small enough that the
  * reductions below cannot overflow a long. */
-static bool pi_coeff(qd_ctx *ctx, const qd_expr *t, long *num, long *den) {
-    const qd_expr *pi = qd_const(ctx, QD_PI);
-    if (t == pi) {
+static bool is_pi(const qd_expr *e) { return e->kind == QD_CONSTANT && e->tag == QD_PI; }
+
+static bool pi_coeff(const qd_expr *t, long *num, long *den) {
+    if (is_pi(t)) {
         *num = *den = 1;
         return true;
     }
-    if (t->kind != QD_MUL || t->nargs != 2 || t->args[1] != pi ||
+    if (t->kind != QD_MUL || t->nargs != 2 || !is_pi(t->args[1]) ||
         !qd_rational_get(t->args[0], num, den))
         return false;
     return labs(*num) < (1L << 40) && *den < (1L << 20);
@@ -129,9 +130,9 @@ static const qd_expr *pi_multiple(qd_ctx *ctx, qd_func f, long n, long d) {
 
 /* The term K*pi of a sum, when there is one (constants sort first, so it is
  * the first term after the number). */
-static const qd_expr *pi_term(qd_ctx *ctx, const qd_expr *s, long *num, long *den) {
+static const qd_expr *pi_term(const qd_expr *s, long *num, long *den) {
     for (size_t i = 0; i < s->nargs && i < 2; i++)
-        if (pi_coeff(ctx, s->args[i], num, den))
+        if (pi_coeff(s->args[i], num, den))
             return s->args[i];
     return NULL;
 }
@@ -141,7 +142,7 @@ static const qd_expr *pi_term(qd_ctx *ctx, const qd_expr *s, long *num, long *de
  * tan(x + pi/2) = -1/tan x; NULL when there are none. */
 static const qd_expr *peel_pi(qd_ctx *ctx, qd_func f, const qd_expr *s) {
     long n, d;
-    const qd_expr *t = pi_term(ctx, s, &n, &d);
+    const qd_expr *t = pi_term(s, &n, &d);
     long q = t ? floor_div(2 * n, d) : 0;
     if (q == 0)
         return NULL;
@@ -188,7 +189,7 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool
         return NULL;
     }
     long num, den;
-    if (is_circular(f) && pi_coeff(ctx, a, &num, &den))
+    if (is_circular(f) && pi_coeff(a, &num, &den))
         return pi_multiple(ctx, f, num, den);
     if (f == QD_LOG && a->kind == QD_CONSTANT && a->tag == QD_E)
         return ctx->one;
