@@ -67,10 +67,10 @@ static bool is_even(qd_func f) { return f == QD_COS || f == QD_COSH || f == QD_A
 
 /* ---- sin, cos and tan at rational multiples of pi ------------------------- */
 
-/* K = num/den when t is K*pi with K rational and small enough that the
- * reductions below cannot overflow a long. */
 static bool is_pi(const qd_expr *e) { return e->kind == QD_CONSTANT && e->tag == QD_PI; }
 
+/* K = num/den when t is K*pi with K rational and small enough that the
+ * reductions below cannot overflow a long. */
 static bool pi_coeff(const qd_expr *t, long *num, long *den) {
     if (is_pi(t)) {
         *num = *den = 1;
@@ -93,16 +93,14 @@ static const qd_expr *surd(qd_ctx *ctx, long x, long cn, long cd) {
  * r = 0, 1/6, 1/4, 1/3, 1/2 (cos(r pi) = sin((1/2 - r) pi) runs the list
  * backwards), else the call itself; tan(pi/2) stays as it is. */
 static const qd_expr *first_quadrant(qd_ctx *ctx, qd_func f, long n, long d) {
-    static const long sin_sq[5] = {0, 1, 2, 3, 4}; /* sin(r pi) = sqrt(sin_sq)/2 */
     static const long tan_x[4] = {0, 3, 1, 3}, tan_d[4] = {1, 3, 1, 1};
     int k = n == 0 ? 0 : d == 6 ? 1 : d == 4 ? 2 : d == 3 ? 3 : d == 2 ? 4 : -1;
     if (k >= 0 && f == QD_COS) {
         f = QD_SIN;
         k = 4 - k;
     }
-    if (k >= 0 && f == QD_SIN)
-        return k == 0 || k == 4 ? qd_int(ctx, k / 4) : k == 1 ? qd_rat(ctx, 1, 2)
-                                                           : surd(ctx, sin_sq[k], 1, 2);
+    if (k >= 0 && f == QD_SIN) /* sqrt(k)/2: 0, 1/2, sqrt(2)/2, sqrt(3)/2, 1 */
+        return surd(ctx, k, 1, 2);
     if (k >= 0 && k < 4 && f == QD_TAN)
         return k == 0 ? ctx->zero : k == 2 ? ctx->one : surd(ctx, tan_x[k], 1, tan_d[k]);
     const qd_expr *arg = qd_mul(ctx, qd_rat(ctx, n, d), qd_const(ctx, QD_PI));
