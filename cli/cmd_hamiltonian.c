@@ -237,6 +237,25 @@ static void sympy_list(const ham_run *r, qd_buf *b, const char *name, const qd_e
     qd_buf_puts(b, "]\n");
 }
 
+/* W = Function('W') for the user functions in H, L and the lists. */
+static void sympy_functions(const ham_run *r, qd_buf *b) {
+    const qd_ham *h = r->h;
+    const qd_expr *const *lists[4] = {h->pdef, h->vel, h->dq, h->dp};
+    const qd_expr **all = malloc((2 + 4 * h->n) * sizeof *all);
+    if (!all) {
+        b->failed = true;
+        return;
+    }
+    size_t k = 0;
+    all[k++] = h->H;
+    all[k++] = h->L_from_H;
+    for (size_t i = 0; i < 4; i++)
+        for (size_t j = 0; j < h->n; j++)
+            all[k++] = lists[i][j];
+    qd_print_sympy_functions(r->ctx, k, all, b);
+    free(all);
+}
+
 /* Python that defines momenta, pdef (dL/dq'), H, dq_dt and dp_dt; the
  * coordinates are functions of t as in `eom --format sympy`. */
 static void write_sympy(const ham_run *r, qd_buf *b) {
@@ -249,6 +268,7 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(qd_model_param(m, i)),
                       qd_expr_name(qd_model_param(m, i)));
+    sympy_functions(r, b);
     sympy_list(r, b, "momenta", h->p);
     if (h->pdef[0] || !h->n)
         sympy_list(r, b, "pdef", h->pdef);

@@ -226,6 +226,31 @@ static void sympy_matrix(const routh_run *r, qd_buf *b, const char *name, const 
     qd_buf_puts(b, "])\n");
 }
 
+/* W = Function('W') for the user functions in R, h and the lists. */
+static void sympy_functions(const routh_run *r, qd_buf *b) {
+    const qd_routh *h = r->r;
+    size_t nk = h->nkeep, k = 0;
+    const qd_expr **all = malloc((2 + 2 * h->nign + 2 * nk * nk + nk) * sizeof *all);
+    if (!all) {
+        b->failed = true;
+        return;
+    }
+    all[k++] = h->R;
+    all[k++] = h->h;
+    for (size_t i = 0; i < h->nign; i++) {
+        all[k++] = h->pdef[i];
+        all[k++] = h->ignvel[i];
+    }
+    for (size_t i = 0; i < nk * nk; i++) {
+        all[k++] = h->M[i];
+        all[k++] = h->G[i];
+    }
+    for (size_t i = 0; i < nk; i++)
+        all[k++] = h->f[i];
+    qd_print_sympy_functions(r->ctx, k, all, b);
+    free(all);
+}
+
 /* Python defining routh_ignored, routh_kept, routh_momenta, routh_pdef,
  * routh_quadratures, routh_R, routh_R2, routh_R1, routh_R0, routh_V_eff,
  * routh_jacobi, routh_M, routh_f, routh_G (prefixed: a model's parameters
@@ -244,6 +269,7 @@ static void write_sympy(const routh_run *r, qd_buf *b) {
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(qd_model_param(m, i)),
                       qd_expr_name(qd_model_param(m, i)));
+    sympy_functions(r, b);
     sympy_list(r, b, "routh_ignored", h->nign, h->ign);
     sympy_list(r, b, "routh_kept", h->nkeep, h->keep);
     sympy_list(r, b, "routh_momenta", h->nign, h->beta);

@@ -566,6 +566,22 @@ static qd_status sympy_constraints(const cli_eom_view *v, qd_buf *b) {
     return st;
 }
 
+/* W = Function('W') for the user functions in everything printed below. */
+static qd_status sympy_functions(const cli_eom_view *v, qd_buf *b) {
+    size_t n = v->e->n, m = v->e->ncon, k = 0;
+    const qd_expr *const *groups[] = {v->T, v->M, v->f, v->acc, v->A, v->b, v->lambda};
+    const size_t sizes[] = {3, n * n, n, n, m * n, m, m};
+    const qd_expr **all = malloc((3 + n * n + 2 * n + m * n + 2 * m) * sizeof *all);
+    if (!all)
+        return QD_ERR_NOMEM;
+    for (size_t g = 0; g < sizeof sizes / sizeof sizes[0]; g++)
+        for (size_t i = 0; groups[g] && i < sizes[g]; i++)
+            all[k++] = groups[g][i];
+    qd_status st = qd_print_sympy_functions(v->ctx, k, all, b);
+    free(all);
+    return st;
+}
+
 static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T2", "T1", "T0"};
     const qd_model *m = v->mf->model;
@@ -578,8 +594,10 @@ static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
         sympy_bind(v, b, v->e->q[j], true);
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         sympy_bind(v, b, qd_model_param(m, i), false);
+    st = sympy_functions(v, b);
     qd_buf_puts(b, "\n");
-    st = sympy_assign(v, b, q.s, v->e->q, n, 1);
+    if (st == QD_OK)
+        st = sympy_assign(v, b, q.s, v->e->q, n, 1);
     for (size_t i = 0; v->T[0] && i < 3 && st == QD_OK; i++) {
         qd_buf_printf(b, "%s = ", pick(v, parts[i]).s);
         st = qd_print(v->ctx, v->T[i], QD_FMT_SYMPY, b);

@@ -102,6 +102,13 @@ QD_API const qd_expr *qd_const(qd_ctx *ctx, qd_constant c);
  */
 QD_API const qd_expr *qd_symbol(qd_ctx *ctx, const char *name);
 QD_API const qd_expr *qd_param(qd_ctx *ctx, const char *name);
+/* A plain symbol (role QD_ROLE_PLAIN) or parameter (QD_ROLE_PARAM) assumed
+ * positive: abs(m) is m, sqrt(m^2) is m.  Symbols are otherwise real of either
+ * sign.  The assumption is fixed when the symbol is made: asking for it later
+ * by name with qd_symbol or qd_param finds it, while assuming positive a
+ * symbol already made without it is QD_ERR_ARG. */
+QD_API const qd_expr *qd_symbol_positive(qd_ctx *ctx, const char *name, qd_role role);
+QD_API bool qd_symbol_is_positive(const qd_expr *e);
 QD_API const qd_expr *qd_time(qd_ctx *ctx);                         /* the symbol "t" */
 QD_API const qd_expr *qd_coord(qd_ctx *ctx, const char *name);
 QD_API const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order);

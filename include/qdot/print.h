@@ -44,6 +44,14 @@ typedef enum qd_format {
 /* Append e in the given format. */
 QD_API qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out);
 
+/* The lines a SymPy script needs before expressions printed with
+ * QD_FMT_SYMPY that call user-named functions: `V = Function('V')` once per
+ * name found in the n expressions (NULL entries are skipped), in name order.
+ * A name the printer spells self-contained (Function('E')) needs none.
+ * Symbols are the caller's to bind: it knows the coordinates and parameters. */
+QD_API qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
+                                          qd_buf *out);
+
 /* C for a block of n expressions: every subexpression used more than once is
  * hoisted into a `const double qd_tK = ...;` temporary (the prefix keeps them
  * apart from the model's names), then each output is assigned as

@@ -1,10 +1,14 @@
 /*
  * src/sym/func.c - built-in and user-named functions.
  *
- * On construction: exact values at 0, 1 and multiples of pi/2 where they are
- * rational; a float argument is evaluated; odd functions take a leading minus
- * sign out (sin(-x) = -sin(x)) and even ones drop it (cos(b - a) = cos(a - b)),
- * so that equal values meet as one node; exp and log cancel.
+ * On construction: exact values at 0 and 1; sin, cos and tan of rational
+ * multiples of pi reduced to the first quadrant, with exact values at
+ * multiples of pi/6 and pi/4 (sin(pi/6) = 1/2, tan(pi/3) = sqrt(3)); whole
+ * quarter turns taken out of a sum's pi term (sin(pi/2 - x) = cos(x),
+ * sin(x + 2 pi) = sin(x)), as SymPy does on construction; a float argument
+ * is evaluated; odd functions take a leading minus sign out (sin(-x) =
+ * -sin(x)) and even ones drop it (cos(b - a) = cos(a - b)), so that equal
+ * values meet as one node; exp and log cancel; |x| = x for x known >= 0.
  */
 #include "node.h"
 
@@ -61,23 +65,98 @@ static bool is_odd(qd_func f) {
 
 static bool is_even(qd_func f) { return f == QD_COS || f == QD_COSH || f == QD_ABS; }
 
-/* If a = k*pi/2 with integer k, set *k (mod 4) and return true. */
-static bool half_pi_multiple(qd_ctx *ctx, const qd_expr *a, long *k) {
-    const qd_expr *pi = qd_const(ctx, QD_PI);
-    long num, den;
-    if (a == pi) {
-        *k = 2;
+/* ---- sin, cos and tan at rational multiples of pi ------------------------- */
+
+static bool is_pi(const qd_expr *e) { return e->kind == QD_CONSTANT && e->tag == QD_PI; }
+
+/* K = num/den when t is K*pi with K rational and small enough that the
+ * reductions below cannot overflow a long. */
+static bool pi_coeff(const qd_expr *t, long *num, long *den) {
+    if (is_pi(t)) {
+        *num = *den = 1;
         return true;
     }
-    if (a->kind != QD_MUL || a->nargs != 2 || a->args[1] != pi ||
-        !qd_rational_get(a->args[0], &num, &den))
+    if (t->kind != QD_MUL || t->nargs != 2 || !is_pi(t->args[1]) ||
+        !qd_rational_get(t->args[0], num, den))
         return false;
-    if (den != 1 && den != 2)
-        return false;
-    long twice = den == 1 ? 2 * (num % 4) : num % 4;
-    *k = ((twice % 4) + 4) % 4;
-    return true;
+    return labs(*num) < (1L << 40) && *den < (1L << 20);
 }
+
+static long floor_div(long a, long b) { return a / b - (a % b != 0 && (a < 0) != (b < 0)); }
+
+/* x^(1/2) * c: the surds in the exact values. */
+static const qd_expr *surd(qd_ctx *ctx, long x, long cn, long cd) {
+    return qd_mul(ctx, qd_rat(ctx, cn, cd), qd_sqrt(ctx, qd_int(ctx, x)));
+}
+
+/* f(r*pi) for r = n/d in [0, 1/2] in lowest terms: the exact values at
+ * r = 0, 1/6, 1/4, 1/3, 1/2 (cos(r pi) = sin((1/2 - r) pi) runs the list
+ * backwards), else the call itself; tan(pi/2) stays as it is. */
+static const qd_expr *first_quadrant(qd_ctx *ctx, qd_func f, long n, long d) {
+    static const long tan_x[4] = {0, 3, 1, 3}, tan_d[4] = {1, 3, 1, 1};
+    int k = n == 0 ? 0 : d == 6 ? 1 : d == 4 ? 2 : d == 3 ? 3 : d == 2 ? 4 : -1;
+    if (k >= 0 && f == QD_COS) {
+        f = QD_SIN;
+        k = 4 - k;
+    }
+    if (k >= 0 && f == QD_SIN) /* sqrt(k)/2: 0, 1/2, sqrt(2)/2, sqrt(3)/2, 1 */
+        return surd(ctx, k, 1, 2);
+    if (k >= 0 && k < 4 && f == QD_TAN)
+        return k == 0 ? ctx->zero : k == 2 ? ctx->one : surd(ctx, tan_x[k], 1, tan_d[k]);
+    const qd_expr *arg = qd_mul(ctx, qd_rat(ctx, n, d), qd_const(ctx, QD_PI));
+    return arg ? call_node(ctx, f, 1, &arg) : NULL;
+}
+
+/* f(K*pi) reduced by periodicity and symmetry to +-g(r*pi), r in [0, 1/2]:
+ * sin(pi + x) = -sin x, sin(pi - x) = sin x, cos(2 pi - x) = cos x,
+ * cos(pi - x) = -cos x, tan(pi - x) = -tan x. */
+static const qd_expr *pi_multiple(qd_ctx *ctx, qd_func f, long n, long d) {
+    long period = f == QD_TAN ? d : 2 * d;
+    n -= floor_div(n, period) * period; /* K mod 2 (tan: mod 1), now 0 <= n < period */
+    bool neg = false;
+    if (f == QD_SIN && n >= d)
+        n -= d, neg = true;
+    if (f == QD_COS && n > d)
+        n = 2 * d - n;
+    if (2 * n > d) {
+        n = d - n;
+        neg ^= f != QD_SIN;
+    }
+    const qd_expr *v = first_quadrant(ctx, f, n, d);
+    return neg ? qd_neg(ctx, v) : v;
+}
+
+/* The term K*pi of a sum, when there is one (constants sort first, so it is
+ * the first term after the number). */
+static const qd_expr *pi_term(const qd_expr *s, long *num, long *den) {
+    for (size_t i = 0; i < s->nargs && i < 2; i++)
+        if (pi_coeff(s->args[i], num, den))
+            return s->args[i];
+    return NULL;
+}
+
+/* f(x + K*pi) with the whole quarter turns taken out of K (what is left is
+ * in [0, pi/2)): sin(x + pi/2) = cos x, cos(x + pi) = -cos x,
+ * tan(x + pi/2) = -1/tan x; NULL when there are none. */
+static const qd_expr *peel_pi(qd_ctx *ctx, qd_func f, const qd_expr *s) {
+    long n, d;
+    const qd_expr *t = pi_term(s, &n, &d);
+    long q = t ? floor_div(2 * n, d) : 0;
+    if (q == 0)
+        return NULL;
+    const qd_expr *rest = qd_sub(ctx, s, qd_mul(ctx, qd_rat(ctx, q, 2), qd_const(ctx, QD_PI)));
+    q = ((q % 4) + 4) % 4;
+    if (f == QD_TAN) {
+        const qd_expr *v = qd_fn(ctx, QD_TAN, rest);
+        return q % 2 ? qd_neg(ctx, qd_pow(ctx, v, ctx->minus_one)) : v;
+    }
+    /* sin(y + q pi/2) and cos(y + q pi/2) = sin(y + (q + 1) pi/2) */
+    q = (q + (f == QD_COS)) % 4;
+    const qd_expr *v = qd_fn(ctx, q % 2 ? QD_COS : QD_SIN, rest);
+    return q >= 2 ? qd_neg(ctx, v) : v;
+}
+
+static bool is_circular(qd_func f) { return f == QD_SIN || f == QD_COS || f == QD_TAN; }
 
 /* The exact value of f(a) when there is a simple one; *err for log(0). */
 static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool *err) {
@@ -107,18 +186,16 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool
             return ctx->zero;
         return NULL;
     }
-    long k;
-    if ((f == QD_SIN || f == QD_COS) && half_pi_multiple(ctx, a, &k)) {
-        static const int sin4[4] = {0, 1, 0, -1};
-        return qd_int(ctx, f == QD_SIN ? sin4[k] : sin4[(k + 1) % 4]);
-    }
+    long num, den;
+    if (is_circular(f) && pi_coeff(a, &num, &den))
+        return pi_multiple(ctx, f, num, den);
     if (f == QD_LOG && a->kind == QD_CONSTANT && a->tag == QD_E)
         return ctx->one;
     if (f == QD_LOG && a->kind == QD_FUNC && a->tag == QD_EXP)
         return a->args[0];
     if (f == QD_EXP && a->kind == QD_FUNC && a->tag == QD_LOG)
         return a->args[0];
-    if (f == QD_ABS && a->kind == QD_FUNC && a->tag == QD_ABS)
+    if (f == QD_ABS && qd__nonneg(a)) /* |x^2| = x^2, |1 + y^2| = 1 + y^2, |m| = m for m > 0 */
         return a;
     return NULL;
 }
@@ -141,6 +218,8 @@ const qd_expr *qd_fn(qd_ctx *ctx, qd_func f, const qd_expr *a) {
         const qd_expr *r = qd_fn(ctx, f, qd_neg(ctx, a));
         return is_odd(f) ? qd_neg(ctx, r) : r;
     }
+    if (a->kind == QD_ADD && is_circular(f) && (v = peel_pi(ctx, f, a)))
+        return v;
     return call_node(ctx, f, 1, &a);
 }
 

@@ -19,7 +19,15 @@
  *        no fi is a number, a MUL; fi sorted by base, no two with one base;
  *        never c * (single ADD) with c rational (that is distributed).
  *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e);
- *        not (MUL b, integer e); not (POW b, integer e).
+ *        not (MUL b, integer e); not (POW b, integer e); not (abs(x) b, even
+ *        integer e); for a fraction e: not (POW b with an even integer
+ *        exponent or a base known >= 0); not (MUL b with a rational
+ *        coefficient whose |c|^e is rational, or with such a POW factor,
+ *        unless what would stay under the root is -1).
+ *   FUNC sin, cos, tan: the argument is not K*pi with K outside [0, 1/2]
+ *        nor with a known value (K*6 or K*4 an integer); a sum's pi term
+ *        K*pi has 0 <= K < 1/2.  abs: the argument is not known >= 0.
+ *        Odd and even functions: the argument has no leading minus.
  */
 #ifndef QD_SYM_NODE_H
 #define QD_SYM_NODE_H
@@ -43,6 +51,7 @@ struct qd_expr {
             const char *name;
             const qd_expr *coord;      /* order-0 coordinate, or the symbol itself */
             const qd_expr *next;       /* the next jet symbol once made, else NULL */
+            bool positive;             /* qd_symbol_positive; not part of its identity */
         } sym;
         struct {        /* QD_UFUNC, QD_UDERIV */
             const char *name;
@@ -126,6 +135,10 @@ typedef const qd_expr *(*qd__post_fn)(qd_ctx *ctx, const qd_expr *e, void *data)
 const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_fn post,
                        void *data);
 double qd__pow_value(double b, double e);
+
+/* ---- pow.c ----------------------------------------------------------------- */
+/* Known to be >= 0 wherever it is defined (every symbol is real)? */
+bool qd__nonneg(const qd_expr *e);
 
 /* ---- trigeven.c ------------------------------------------------------------ */
 /* The sum with even powers of sin and cos reduced modulo sin^2 + cos^2 = 1

@@ -18,6 +18,9 @@
  * prints bare; shadowing a SymPy name the printer never emits (beta, gamma,
  * S, N, I, ...) is harmless.
  *
+ * qd_print_sympy_functions writes the preamble's user-function lines for a
+ * set of expressions, so a script that prints them runs as it is.
+ *
  * Numbers: integers bare except as the base of a power (Integer(2)**x, so
  * that Python never divides or powers two ints), other rationals as
  * Rational(p, q), floats as Float(<shortest round-trip literal>).
@@ -25,6 +28,7 @@
 #include "prec.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const char *const reserved[] = {
@@ -244,4 +248,67 @@ qd_status qd__print_sympy(qd_ctx *ctx, const qd_expr *e, qd_buf *out) {
     sp p = {ctx, out};
     expr(&p, e);
     return out->failed ? QD_ERR_NOMEM : QD_OK;
+}
+
+/* ---- the user functions a script must define ------------------------------ */
+
+typedef struct fn_names {
+    qd_ptrmap seen;     /* nodes visited */
+    qd_ptrmap named;    /* interned names listed */
+    const char **list;
+    size_t n, cap;
+    bool oom;
+} fn_names;
+
+static void add_name(fn_names *c, const char *n) {
+    if (is_reserved(n) || qd_ptrmap_has(&c->named, n))
+        return;
+    if (c->n == c->cap) {
+        size_t cap = c->cap ? 2 * c->cap : 8;
+        const char **l = realloc(c->list, cap * sizeof *l);
+        if (!l) {
+            c->oom = true;
+            return;
+        }
+        c->list = l;
+        c->cap = cap;
+    }
+    c->list[c->n++] = n;
+    c->oom |= !qd_ptrmap_put(&c->named, n, (void *)n);
+}
+
+static void collect_names(fn_names *c, const qd_expr *e) {
+    if (!e || !e->nargs || c->oom || qd_ptrmap_has(&c->seen, e))
+        return;
+    if (e->kind == QD_UFUNC || e->kind == QD_UDERIV)
+        add_name(c, e->u.fn.name);
+    for (size_t i = 0; i < e->nargs; i++)
+        collect_names(c, e->args[i]);
+    c->oom |= !qd_ptrmap_put(&c->seen, e, (void *)e);
+}
+
+static int name_order(const void *a, const void *b) {
+    return qd__name_cmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
+                                   qd_buf *out) {
+    if (!ctx || !out || (n && !exprs))
+        return QD_ERR_ARG;
+    fn_names c = {QD_PTRMAP_INIT, QD_PTRMAP_INIT, NULL, 0, 0, false};
+    for (size_t i = 0; i < n; i++)
+        collect_names(&c, exprs[i]);
+    if (!c.oom && c.n) {
+        qsort(c.list, c.n, sizeof *c.list, name_order);
+        for (size_t i = 0; i < c.n; i++)
+            qd_buf_printf(out, "%s = Function('%s')\n", c.list[i], c.list[i]);
+    }
+    qd_ptrmap_free(&c.seen);
+    qd_ptrmap_free(&c.named);
+    free(c.list);
+    if (c.oom || out->failed) {
+        qd__oom(ctx);
+        return QD_ERR_NOMEM;
+    }
+    return QD_OK;
 }

@@ -4,6 +4,10 @@
  * One name, one symbol per context.  A coordinate q is a function of the
  * time; its derivatives q', q'', ... are symbols of their own (the jet), made
  * on demand and chained from q so that d/dt can step along the chain.
+ *
+ * Every symbol is real.  A plain symbol or a parameter may also be made
+ * positive (qd_symbol_positive), like SymPy's Symbol('m', positive=True):
+ * then |m| = m and sqrt(m^2) = m on construction.
  */
 #include "node.h"
 
@@ -22,7 +26,7 @@ static const char *role_name(qd_role r) {
 }
 
 static const qd_expr *make_symbol(qd_ctx *ctx, const char *name, qd_role role, unsigned order,
-                                  const qd_expr *coord) {
+                                  const qd_expr *coord, bool positive) {
     if (!name || !*name) {
         qd_ctx_error(ctx, QD_ERR_ARG, "a symbol needs a name");
         return NULL;
@@ -37,6 +41,13 @@ static const qd_expr *make_symbol(qd_ctx *ctx, const char *name, qd_role role, u
                          role_name((qd_role)old->tag));
             return NULL;
         }
+        /* The assumption is part of the symbol from its birth: expressions
+         * already made with it could not take it into account. */
+        if (positive && !old->u.sym.positive) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "'%s' is already a %s not assumed positive", name,
+                         role_name((qd_role)old->tag));
+            return NULL;
+        }
         return old;
     }
     qd_expr proto = {0};
@@ -44,6 +55,7 @@ static const qd_expr *make_symbol(qd_ctx *ctx, const char *name, qd_role role, u
     proto.tag = (uint8_t)role;
     proto.order = (uint16_t)order;
     proto.u.sym.name = iname;
+    proto.u.sym.positive = positive;
     qd_expr *e = (qd_expr *)qd__intern(ctx, &proto, 0, NULL);
     if (!e)
         return NULL;
@@ -57,21 +69,33 @@ static const qd_expr *make_symbol(qd_ctx *ctx, const char *name, qd_role role, u
 }
 
 const qd_expr *qd_symbol(qd_ctx *ctx, const char *name) {
-    return make_symbol(ctx, name, QD_ROLE_PLAIN, 0, NULL);
+    return make_symbol(ctx, name, QD_ROLE_PLAIN, 0, NULL, false);
 }
 
 const qd_expr *qd_param(qd_ctx *ctx, const char *name) {
-    return make_symbol(ctx, name, QD_ROLE_PARAM, 0, NULL);
+    return make_symbol(ctx, name, QD_ROLE_PARAM, 0, NULL, false);
 }
 
-const qd_expr *qd_time(qd_ctx *ctx) { return make_symbol(ctx, "t", QD_ROLE_TIME, 0, NULL); }
+const qd_expr *qd_symbol_positive(qd_ctx *ctx, const char *name, qd_role role) {
+    if (role != QD_ROLE_PLAIN && role != QD_ROLE_PARAM) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "only a plain symbol or a parameter can be assumed positive");
+        return NULL;
+    }
+    return make_symbol(ctx, name, role, 0, NULL, true);
+}
+
+bool qd_symbol_is_positive(const qd_expr *e) {
+    return e && e->kind == QD_SYMBOL && e->u.sym.positive;
+}
+
+const qd_expr *qd_time(qd_ctx *ctx) { return make_symbol(ctx, "t", QD_ROLE_TIME, 0, NULL, false); }
 
 const qd_expr *qd_coord(qd_ctx *ctx, const char *name) {
     if (name && strchr(name, '\'')) {
         qd_ctx_error(ctx, QD_ERR_ARG, "a coordinate name cannot contain a prime: '%s'", name);
         return NULL;
     }
-    return make_symbol(ctx, name, QD_ROLE_COORD, 0, NULL);
+    return make_symbol(ctx, name, QD_ROLE_COORD, 0, NULL, false);
 }
 
 const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order) {
@@ -97,7 +121,7 @@ const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order) {
             memcpy(name, base, n);
             memset(name + n, '\'', k);
             name[n + k] = '\0';
-            const qd_expr *s = make_symbol(ctx, name, QD_ROLE_COORD, k, q->u.sym.coord);
+            const qd_expr *s = make_symbol(ctx, name, QD_ROLE_COORD, k, q->u.sym.coord, false);
             if (!s)
                 return NULL;
             ((qd_expr *)q)->u.sym.next = s;

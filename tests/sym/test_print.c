@@ -282,11 +282,35 @@ static void test_sympy(void **state) {
     qd_buf_free(&b);
 }
 
+/* The preamble lines for user functions: each name once (V and its
+ * derivative V' are one function), in natural name order, none for a name
+ * the printer spells self-contained (E), NULL entries skipped. */
+static void test_sympy_functions(void **state) {
+    world *w = *state;
+    qd_ctx *c = w->ctx;
+    const qd_expr *x = qd_symbol(c, "x"), *y = qd_symbol(c, "y");
+    const qd_expr *xy[2] = {x, y};
+    unsigned slot = 0;
+    const qd_expr *V = qd_ufunc(c, "V", 1, &x), *dV = qd_uderiv(c, "V", 1, &slot, 1, &y);
+    const qd_expr *f10 = qd_ufunc(c, "f10", 2, xy), *f2 = qd_ufunc(c, "f2", 1, &V);
+    const qd_expr *E = qd_ufunc(c, "E", 1, &x);
+    const qd_expr *exprs[5] = {qd_add(c, V, f10), NULL, qd_mul(c, dV, E), qd_fn(c, QD_SIN, f2), x};
+    qd_buf b = QD_BUF_INIT;
+    assert_int_equal(qd_print_sympy_functions(c, 5, exprs, &b), QD_OK);
+    assert_string_equal(qd_buf_str(&b), "V = Function('V')\nf2 = Function('f2')\n"
+                                        "f10 = Function('f10')\n");
+    qd_buf_clear(&b);
+    assert_int_equal(qd_print_sympy_functions(c, 1, &x, &b), QD_OK);
+    assert_string_equal(qd_buf_str(&b), "");
+    qd_buf_free(&b);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_null),        cmocka_unit_test(test_c_compiles_and_agrees),
         cmocka_unit_test(test_c_block_shares), cmocka_unit_test(test_latex),
         cmocka_unit_test(test_text_shape),  cmocka_unit_test(test_sympy),
+        cmocka_unit_test(test_sympy_functions),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
