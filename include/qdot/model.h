@@ -89,7 +89,10 @@ QD_API bool qd_model_param_fixed(const qd_model *m, size_t i);
 /* Give a parameter another value after parsing; the parameters defined from
  * it and the initial values follow.  QD_ERR_ARG for an unknown name (with
  * the nearest known name in the context's message), a value that is not a
- * number, or a parameter fixed by qd_model_opts. */
+ * number, a parameter fixed by qd_model_opts, or a value that would make a
+ * parameter assumed positive zero or negative.  A parameter whose value is
+ * positive when the model is read is assumed positive (sqrt(g^2) is g), so
+ * a change of sign must be given as input to the parse (qd_model_opts). */
 QD_API qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value);
 
 /* The mechanical content; NULL where the model gives none.  lagrangian is

@@ -172,10 +172,13 @@ qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const q
     m->pdefs[i] = value;
     const char *bad = NULL;
     qd_status st = qd__mdl_eval_params(m) ? QD_OK : QD_ERR_NOMEM;
+    bool sign = false; /* a parameter assumed positive would become <= 0 */
     for (size_t j = i; st == QD_OK && j < m->nparams && !bad; j++) {
         double x;
         if (qd_eval(ctx, m->pvals[j], 0, NULL, NULL, &x) != QD_OK || !isfinite(x))
             bad = qd_expr_name(m->params[j]);
+        else if (x <= 0 && qd_symbol_is_positive(m->params[j]))
+            bad = qd_expr_name(m->params[j]), sign = true;
     }
     if (st == QD_OK && !bad)
         return QD_OK;
@@ -183,8 +186,14 @@ qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const q
     qd__mdl_eval_params(m);
     if (bad) {
         qd_ctx_clear_error(ctx);
-        qd_ctx_error(ctx, QD_ERR_ARG, "with this value of '%s', '%s' is not a finite number",
-                     name, bad);
+        if (sign)
+            qd_ctx_error(ctx, QD_ERR_ARG, "with this value of '%s', '%s' would be zero or "
+                         "negative, but it was positive when the model was read and the "
+                         "equations assume so; give the value when reading the model "
+                         "(--set)", name, bad);
+        else
+            qd_ctx_error(ctx, QD_ERR_ARG, "with this value of '%s', '%s' is not a finite number",
+                         name, bad);
         return QD_ERR_ARG;
     }
     return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;

@@ -177,6 +177,27 @@ static bool push_param(parser *p, const qd_expr *sym, const qd_expr *def, const 
 }
 
 /* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */
+/* A parameter whose value is positive (after --set) is assumed positive, so
+ * that sqrt(g^2*l^2) is g*l, as a physicist writes it; qd_model_set_param
+ * later refuses to make it zero or negative.  A context keeps one symbol
+ * per name: a name assumed positive by an earlier model cannot take a value
+ * <= 0 here (the earlier simplifications would be wrong for it). */
+static const qd_expr *param_symbol(parser *p, const char *name, const qd_expr *v, token at) {
+    double x = 0;
+    if (qd_eval(C(p), v, 0, NULL, NULL, &x) != QD_OK)
+        return NULL;
+    const qd_expr *old = qd_lookup(C(p), name);
+    if (x > 0 && (!old || qd_symbol_is_positive(old)))
+        return qd_symbol_positive(C(p), name, QD_ROLE_PARAM);
+    if (x <= 0 && old && qd_symbol_is_positive(old)) {
+        qd__mdl_perr(p, at.off, at.len, "read this model in a context of its own",
+                     "'%s' was assumed positive by a model read earlier in this context, "
+                     "but its value here is %g", name, x);
+        return NULL;
+    }
+    return qd_param(C(p), name);
+}
+
 static bool stmt_parameters(parser *p) {
     do {
         qd__lex_next(&p->lx);
@@ -201,7 +222,9 @@ static bool stmt_parameters(parser *p) {
             return false;
         /* defined from a fixed parameter: a number of this model too */
         bool fixed = (given && p->opts->fix_params) || (!given && p->met_fixed);
-        sym = qd_param(C(p), name);
+        sym = param_symbol(p, name, v, at);
+        if (!sym && p->failed)
+            return false;
         if (!sym)
             return qd__mdl_perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
         if (!push_param(p, sym, def, v, fixed))

@@ -253,6 +253,50 @@ static void energy_names(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* A parameter positive when read is assumed positive: the double pendulum's
+ * w^2 has sqrt(g^2*l1^2*l2^2*m2^2*...) (Desloge ch. 64), which must read
+ * g*l1*l2*m2*sqrt(...) as in the books, not abs(g)*abs(l1)*...  A parameter
+ * read as negative (a charge) stays real; a later change of sign is refused. */
+static void positive_parameters(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse(ctx, "coordinates x\nparameters k = 4, m = 1\n"
+                             "T = m/2*x'^2\nV = sqrt(k^2*m^2)/(2*m)*x^2\n", NULL);
+    const qd_expr *k = qd_lookup(ctx, "k"), *x = qd_lookup(ctx, "x");
+    assert_true(qd_symbol_is_positive(k));
+    /* V = k x^2 / 2 exactly: the spring's potential */
+    const qd_expr *want = qd_mul(ctx, qd_mul(ctx, qd_rat(ctx, 1, 2), k), qd_pow(ctx, x, qd_int(ctx, 2)));
+    assert_ptr_equal(qd_model_potential(m), want);
+    /* k = 4 -> -4 would break that: refused, nothing changed */
+    assert_int_equal(qd_model_set_param(ctx, m, "k", qd_int(ctx, -4)), QD_ERR_ARG);
+    assert_non_null(strstr(qd_ctx_message(ctx), "positive"));
+    qd_ctx_clear_error(ctx);
+    assert_ptr_equal(qd_model_param_value(m, 0), qd_int(ctx, 4));
+    assert_int_equal(qd_model_set_param(ctx, m, "k", qd_int(ctx, 9)), QD_OK);
+    qd_model_free(m);
+    /* the same name read as negative in the same context: a located error */
+    qd_diag d;
+    memset(&d, 0, sizeof d);
+    assert_null(qd_model_parse(ctx, "coordinates x\nparameters k = -4\nT = x'^2\n", &d));
+    assert_true(d.located);
+    assert_int_equal(d.line, 2);
+    assert_int_equal(d.col, 12);
+    qd_ctx_free(ctx);
+    /* in a context of its own, a negative value is real of either sign */
+    ctx = qd_ctx_new();
+    qd_model_opts o = {(qd_param_value[]){{"k", qd_int(ctx, -4)}}, 1, false};
+    m = parse(ctx, "coordinates x\nparameters k = 4, m = 1\n"
+                   "T = m/2*x'^2\nV = sqrt(k^2*m^2)/(2*m)*x^2\n", &o);
+    k = qd_lookup(ctx, "k");
+    x = qd_lookup(ctx, "x");
+    assert_false(qd_symbol_is_positive(k));
+    want = qd_mul(ctx, qd_mul(ctx, qd_rat(ctx, 1, 2), qd_fn(ctx, QD_ABS, k)),
+                  qd_pow(ctx, x, qd_int(ctx, 2)));
+    assert_ptr_equal(qd_model_potential(m), want);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(derived_follows_given),
@@ -261,6 +305,7 @@ int main(void) {
         cmocka_unit_test(given_errors),
         cmocka_unit_test(add_statements),
         cmocka_unit_test(energy_names),
+        cmocka_unit_test(positive_parameters),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
