@@ -52,6 +52,15 @@ QD_API bool qd_sim_method_adaptive(qd_sim_method m);               /* step size 
 
 typedef struct qd_sim qd_sim;
 
+/* Thread safety.  Building a qd_sim (qd_sim_new, qd_sim_add_output,
+ * qd_sim_add_event, qd_sim_set_native) and qd_sim_compile happen on one
+ * thread.  After qd_sim_compile the qd_sim is immutable: any number of
+ * threads may run it at once with qd_sim_run_with, each passing its own
+ * context (messages) and getting its own workspace; the model, e and the
+ * context the qd_sim was made with are only read.  qd_sim_run is the
+ * one-thread convenience: it compiles when needed and records the
+ * per-constraint residuals in s (qd_sim_constraint_error). */
+
 /* Compile the equations e of model m (e from qd_eom_derive, without
  * eliminated coordinates; parameters at the model's values, so apply --set
  * to the model first).  e and m must outlive the qd_sim.  NULL on failure,
@@ -125,6 +134,11 @@ QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
  * count; names[i] are owned by s. */
 QD_API size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
 
+/* Compile the outputs and events (after the last add): from here on s is
+ * immutable.  Idempotent.  A failure is recorded in s's context. */
+QD_API qd_status qd_sim_compile(qd_sim *s);
+QD_API bool qd_sim_compiled(const qd_sim *s);
+
 /* Receives every row (event -1: a sample; else the index of the event in
  * the order added).  Returning nonzero ends the run early (QD_OK). */
 typedef int (*qd_sim_sink)(void *data, int event, const double *row);
@@ -138,6 +152,13 @@ typedef int (*qd_sim_sink)(void *data, int event, const double *row);
  * missing step or a method that cannot take the system is QD_ERR_ARG. */
 QD_API qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *opts, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final);
+
+/* qd_sim_run on a compiled s (QD_ERR_ARG if not compiled) that other
+ * threads may be running at the same time; failures are recorded in ctx,
+ * which is this thread's own.  The sink runs on the calling thread. */
+QD_API qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *opts,
+                                 qd_sim_sink sink, void *data, qd_sim_stats *stats,
+                                 double *final);
 
 #ifdef __cplusplus
 }

@@ -370,14 +370,10 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
     return make_row(r, NULL, it->t, it->y, r->row);
 }
 
-qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
+/* The run on s, a copy of the compiled system with its own workspace. */
+static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
-    qd_sim_stats dummy;
-    stats = stats ? stats : &dummy;
-    *stats = (qd_sim_stats){0};
     qd_status st = check_opts(s, o);
-    if (st == QD_OK)
-        st = qd__aux_compile(s);
     if (st != QD_OK)
         return st;
     qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
@@ -387,15 +383,12 @@ qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     it.form = symplectic(o->method) && s->canonical ? QD__HAM : QD__LAG;
     qd__run r = {.s = s, .it = &it};
     size_t ncols = qd_sim_columns(s, o->method, NULL, 0);
-    s->evals = 0;
     st = run_alloc(&r, &it, ncols);
     if (st == QD_OK)
         st = initial_state(&r, o);
     if (st == QD_OK)
         st = it.ops->init(&it);
     measure ms = {0};
-    for (size_t c = 0; c < s->m; c++)
-        s->con_err[c] = 0;
     if (st == QD_OK) {
         st = qd__run_velocity(&r, it.t, it.y);
         if (st == QD_OK) {
@@ -420,4 +413,43 @@ qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         qd_ctx_error(s->ctx, st, "the integration failed: %s", qd_status_str(st));
     run_free(&r, &it);
     return st;
+}
+
+/* A run on a copy of the compiled system s with its own workspace;
+ * con_err (may be NULL) receives the per-constraint residuals. */
+static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
+                          void *data, qd_sim_stats *stats, double *final, double *con_err) {
+    qd_sim_stats dummy;
+    stats = stats ? stats : &dummy;
+    *stats = (qd_sim_stats){0};
+    qd_sim w = *s;
+    qd_status st = qd__sim_ws_alloc(&w, ctx);
+    if (st == QD_OK)
+        st = run(&w, o, sink, data, stats, final);
+    else
+        qd_ctx_error(ctx, st, "out of memory starting the simulation");
+    for (size_t c = 0; con_err && w.con_err && c < s->m; c++)
+        con_err[c] = w.con_err[c];
+    qd__sim_ws_free(&w);
+    return st;
+}
+
+qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
+                          void *data, qd_sim_stats *stats, double *final) {
+    if (!s->aux_ready) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "a shared simulation is compiled first (qd_sim_compile)");
+        return QD_ERR_ARG;
+    }
+    return run_copy(ctx, s, o, sink, data, stats, final, NULL);
+}
+
+qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
+                     qd_sim_stats *stats, double *final) {
+    qd_status st = qd_sim_compile(s);
+    if (st != QD_OK) {
+        if (stats)
+            *stats = (qd_sim_stats){0};
+        return st;
+    }
+    return run_copy(s->ctx, s, o, sink, data, stats, final, s->con_err_last);
 }
