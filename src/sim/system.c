@@ -17,7 +17,7 @@
 #include <string.h>
 
 #include "codegen/cg.h"
-#include "mech/mech.h"
+#include "num/num.h"
 
 static double param_value(qd_ctx *ctx, const qd_expr *v) {
     long p, q;
@@ -507,53 +507,6 @@ static qd_status singular(qd_sim *s, double t) {
     return QD_ERR_SINGULAR;
 }
 
-/* A x = b in place for a few unknowns: Gaussian elimination with partial
- * pivoting, singular when a pivot is below tol |A|_inf (the criterion of
- * qd__gauss, src/mech/lu.c, without its rank bookkeeping: this runs at
- * every evaluation). */
-static bool dense_solve(size_t n, double *A, double *b, double tol) {
-    double norm = 0;
-    for (size_t i = 0; i < n; i++) {
-        double sum = 0;
-        for (size_t j = 0; j < n; j++)
-            sum += fabs(A[i * n + j]);
-        norm = fmax(norm, sum);
-    }
-    double eps = tol * norm;
-    for (size_t c = 0; c < n; c++) {
-        size_t p = c;
-        for (size_t i = c + 1; i < n; i++)
-            if (fabs(A[i * n + c]) > fabs(A[p * n + c]))
-                p = i;
-        if (!(fabs(A[p * n + c]) > eps))
-            return false;
-        if (p != c) {
-            for (size_t j = c; j < n; j++) {
-                double tmp = A[c * n + j];
-                A[c * n + j] = A[p * n + j];
-                A[p * n + j] = tmp;
-            }
-            double tmp = b[c];
-            b[c] = b[p];
-            b[p] = tmp;
-        }
-        double inv = 1 / A[c * n + c];
-        for (size_t i = c + 1; i < n; i++) {
-            double l = A[i * n + c] * inv;
-            for (size_t j = c + 1; j < n; j++)
-                A[i * n + j] -= l * A[c * n + j];
-            b[i] -= l * b[c];
-        }
-    }
-    for (size_t i = n; i-- > 0;) {
-        double sum = b[i];
-        for (size_t j = i + 1; j < n; j++)
-            sum -= A[i * n + j] * b[j];
-        b[i] = sum / A[i * n + i];
-    }
-    return true;
-}
-
 /* Solve the n*n matrix M x = r in scratch; x may alias r. */
 static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *r, double *x) {
     size_t n = s->n;
@@ -561,7 +514,7 @@ static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *
         s->K[i] = M[i];
     for (size_t i = 0; x != r && i < n; i++)
         x[i] = r[i];
-    if (!dense_solve(n, s->K, x, 1e-13 * (double)n))
+    if (!qd__num_solve(n, s->K, x, 1e-13 * (double)n))
         return singular(s, t);
     return QD_OK;
 }
@@ -577,21 +530,8 @@ static bool saddle_solve(qd_sim *s, double t, const double *y) {
     qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
     const double *M = s->acc_out, *f = M + n * n;
     const double *A = f + n, *b = A + m * n;
-    double *K = s->K, *r = s->rhs;
-    memset(K, 0, N * N * sizeof *K);
-    for (size_t i = 0; i < n; i++) {
-        for (size_t j = 0; j < n; j++)
-            K[i * N + j] = M[i * n + j];
-        r[i] = f[i];
-    }
-    for (size_t k = 0; k < m; k++) {
-        for (size_t j = 0; j < n; j++) {
-            K[j * N + n + k] = -A[k * n + j];
-            K[(n + k) * N + j] = A[k * n + j];
-        }
-        r[n + k] = b[k];
-    }
-    return dense_solve(N, K, r, 1e-13 * (double)N);
+    qd__num_saddle(n, m, M, f, A, b, s->K, s->rhs);
+    return qd__num_solve(N, s->K, s->rhs, 1e-13 * (double)N);
 }
 
 static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
