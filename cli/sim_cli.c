@@ -67,7 +67,12 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     if ((v = cli_value(argc, argv, i, "--max-steps"))) {
         double x = 0;
         int rc = number("--max-steps", v, &x, true);
-        a->max_steps = rc == 1 ? (size_t)x : 0;
+        if (rc == 1 && x != floor(x)) {
+            cli_diag_error("--max-steps takes a whole number, not '%s'", v);
+            return QD_EXIT_USAGE + 100;
+        }
+        /* (size_t)x is undefined beyond SIZE_MAX: clamp first */
+        a->max_steps = rc != 1 ? 0 : x >= 0x1p63 ? (size_t)-1 : (size_t)x;
         return rc;
     }
     if ((v = cli_value(argc, argv, i, "--method"))) {
@@ -409,6 +414,9 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
         cli_diag_error("--t-end must be after the start time (%g)", o->t0);
         return QD_EXIT_USAGE;
     }
+    /* before any output file is opened: a refused run writes nothing */
+    if (qd_sim_check_opts(c->ctx, o) != QD_OK)
+        return cli_diag_ctx(c->ctx);
     return QD_EXIT_OK;
 }
 

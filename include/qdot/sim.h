@@ -98,6 +98,8 @@ QD_API bool qd_sim_conservative(const qd_sim *s);/* no t in L, no forces, no dis
  * conservative systems, dop853 otherwise. */
 QD_API qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step);
 
+#define QD_SIM_MAX_STEPS ((size_t)100000000) /* 1e8: the default of max_steps */
+
 typedef struct qd_sim_opts {
     qd_sim_method method;
     double t0, t_end;
@@ -107,7 +109,11 @@ typedef struct qd_sim_opts {
     bool fixed;          /* dopri5/dop853 with the constant step dt, no control */
     double rtol, atol;   /* adaptive methods; 0 gives 1e-10, 1e-12 */
     bool no_project;     /* constrained systems: skip the projection */
-    size_t max_steps;    /* 0: no limit */
+    /* The most steps a run may take, 0 for QD_SIM_MAX_STEPS.  A fixed step
+     * that needs more steps from t0 to t_end (or an output grid dt with
+     * more rows) is refused before the run (QD_ERR_ARG, naming the count);
+     * an adaptive run that reaches it stops with QD_ERR_NUMERIC. */
+    size_t max_steps;
     const double *q0, *qd0; /* n initial coordinates and velocities */
 } qd_sim_opts;
 
@@ -133,6 +139,12 @@ QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
  * constraint (res_NAME), then the outputs.  names may be NULL; returns the
  * count; names[i] are owned by s. */
 QD_API size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
+
+/* QD_OK when opts are valid on their own: method, times, the step, the
+ * step count against max_steps, tolerances; else QD_ERR_ARG with the
+ * reason in ctx.  qd_sim_run checks the same, then whether the method can
+ * take the system, before it starts. */
+QD_API qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *opts);
 
 /* Compile the outputs and events (after the last add): from here on s is
  * immutable.  Idempotent.  A failure is recorded in s's context. */

@@ -132,8 +132,24 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
     return QD_OK;
 }
 
-static qd_status check_opts(qd_sim *s, const qd_sim_opts *o) {
-    qd_ctx *ctx = s->ctx;
+static size_t max_steps(const qd_sim_opts *o) {
+    return o->max_steps ? o->max_steps : QD_SIM_MAX_STEPS;
+}
+
+/* A fixed step dt (or an output grid dt) from t0 to t_end: no more steps
+ * (rows) than the maximum, counted in doubles before any loop starts. */
+static qd_status check_count(qd_ctx *ctx, const qd_sim_opts *o, bool fixed) {
+    double count = ceil((o->t_end - o->t0) / o->dt);
+    if (!(o->dt > 0) || !(count > (double)max_steps(o)))
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_ARG,
+                 "%s %.17g from t = %.17g to %.17g asks for %.3g %s, more than the maximum "
+                 "of %zu (raise it with --max-steps)", fixed ? "the step" : "the output step",
+                 o->dt, o->t0, o->t_end, count, fixed ? "steps" : "rows", max_steps(o));
+    return QD_ERR_ARG;
+}
+
+qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
     const char *name = qd_sim_method_name(o->method);
     if (o->method >= QD_SIM_METHOD_COUNT) {
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown integration method");
@@ -152,20 +168,26 @@ static qd_status check_opts(qd_sim *s, const qd_sim_opts *o) {
         qd_ctx_error(ctx, QD_ERR_ARG, "bdf chooses its own steps");
         return QD_ERR_ARG;
     }
+    if (o->rtol < 0 || o->atol < 0 || !isfinite(o->rtol) || !isfinite(o->atol)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "tolerances must be positive");
+        return QD_ERR_ARG;
+    }
+    return check_count(ctx, o, needs_dt);
+}
+
+/* Can the method take this system? */
+static qd_status check_system(const qd_sim *s, const qd_sim_opts *o) {
+    const char *name = qd_sim_method_name(o->method);
     if (splitting(o->method) && !s->m && !s->separable) {
-        qd_ctx_error(ctx, QD_ERR_ARG,
+        qd_ctx_error(s->ctx, QD_ERR_ARG,
                      "%s needs a separable Hamiltonian H = T(p) + V(q) (constant mass "
                      "matrix, no velocity- or time-dependent forces); this H is not "
                      "separable: use gl2, gl4 or gl6", name);
         return QD_ERR_ARG;
     }
     if (splitting(o->method) && s->m) {
-        qd_ctx_error(ctx, QD_ERR_ARG,
+        qd_ctx_error(s->ctx, QD_ERR_ARG,
                      "%s cannot integrate a constrained system: use dop853 or gl4", name);
-        return QD_ERR_ARG;
-    }
-    if (o->rtol < 0 || o->atol < 0 || !isfinite(o->rtol) || !isfinite(o->atol)) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "tolerances must be positive");
         return QD_ERR_ARG;
     }
     return QD_OK;
@@ -314,9 +336,10 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
         return st;
     bool stop = false;
     while (!stop && !em->stopped && it->t < o->t_end) {
-        if (o->max_steps && it->steps >= o->max_steps) {
-            qd_ctx_error(s->ctx, QD_ERR_NUMERIC, "more than %zu steps before t = %.17g",
-                         o->max_steps, o->t_end);
+        if (it->steps >= max_steps(o)) {
+            qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
+                         "more than %zu steps before t = %.17g (at t = %.17g; raise the "
+                         "maximum with --max-steps)", max_steps(o), o->t_end, it->t);
             return QD_ERR_NUMERIC;
         }
         bool last;
@@ -373,7 +396,9 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
 /* The run on s, a copy of the compiled system with its own workspace. */
 static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
-    qd_status st = check_opts(s, o);
+    qd_status st = qd_sim_check_opts(s->ctx, o);
+    if (st == QD_OK)
+        st = check_system(s, o);
     if (st != QD_OK)
         return st;
     qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],

@@ -175,6 +175,25 @@ def main():
     rc, out, err = run(qdot, 'poincare', dp, '--n', 3)
     check(rc == 2, f'poincare without --section: {rc}')
 
+    # a step count past --max-steps (default 1e8) is refused before the run,
+    # naming the count: --dt 1e-300 over t = 0..1 is 1e300 steps, and an
+    # output grid of 1e300 rows likewise (these used to run forever)
+    for args, what in ((['--method', 'gl6', '--dt', '1e-300'], '1e+300 steps'),
+                       (['--method', 'dop853', '--dt', '1e-300'], '1e+300 rows'),
+                       (['--method', 'gl4', '--dt', 0.001, '--max-steps', 999], '1e+03 steps')):
+        rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, *args, '--out', '/dev/null')
+        check(rc == 2 and what in err and 'max-steps' in err, f'max steps {args}: {rc} {err}')
+    rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, '--method', 'gl4', '--dt', 0.001,
+                       '--max-steps', 1000, '--out', '/dev/null')
+    check(rc == 0, f'exactly --max-steps steps: {rc} {err}')
+    # an adaptive run stops at the bound with a failure (exit 1)
+    rc, out, err = run(qdot, 'simulate', dp, '--t-end', 100, '--max-steps', 50, '--out',
+                       '/dev/null')
+    check(rc == 1 and 'more than 50 steps' in err, f'adaptive max steps: {rc} {err}')
+    for bad in ('2.5', '0', 'x'):
+        rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, '--max-steps', bad)
+        check(rc == 2, f'--max-steps {bad}: {rc} {err}')
+
     for f in failures:
         print('FAIL:', f)
     print(f'{len(failures)} failures')
