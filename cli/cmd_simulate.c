@@ -145,7 +145,7 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_number(j, st->constraint_error_max);
     cli_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
     cli_json_begin_object(j);
-    for (size_t k = 0; k < c->e->ncon; k++) {
+    for (size_t k = 0; c->e && k < c->e->ncon; k++) {
         cli_json_key(j, c->e->con[k].name);
         cli_json_number(j, qd_sim_constraint_error(c->s, k));
     }

@@ -357,6 +357,23 @@ static int add_event(cli_sim *c, const char *text, bool stop) {
 
 /* ---- setup ----------------------------------------------------------------- */
 
+/* A model given by H: the momenta when --initial names any (those not
+ * named are 0), else the library finds them from the velocities. */
+static int initial_momenta(cli_sim *c) {
+    size_t n = qd_model_ncoords(c->mf.model), at = c->st.n - n;
+    bool any = false;
+    for (size_t j = 0; j < n; j++)
+        any = any || !isnan(c->st.vals[at + j]);
+    if (!any)
+        return QD_EXIT_OK;
+    c->p0 = malloc((n + 1) * sizeof *c->p0);
+    if (!c->p0)
+        return QD_EXIT_FAIL;
+    for (size_t j = 0; j < n; j++)
+        c->p0[j] = isnan(c->st.vals[at + j]) ? 0 : c->st.vals[at + j];
+    return QD_EXIT_OK;
+}
+
 static int initial_values(cli_sim *c, const cli_sim_args *a) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m);
@@ -378,13 +395,13 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_FAIL;
     c->qd0 = c->q0 + n;
     for (size_t j = 0; j < n; j++) {
-        size_t i = 0;
-        while (i < n && qd_model_coord(m, i) != c->e->q[j])
+        size_t i = c->e ? 0 : j;
+        while (c->e && i < n && qd_model_coord(m, i) != c->e->q[j])
             i++;
         c->q0[j] = c->st.vals[i];
         c->qd0[j] = c->st.vals[n + i];
     }
-    return QD_EXIT_OK;
+    return c->e ? QD_EXIT_OK : initial_momenta(c);
 }
 
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
@@ -406,6 +423,7 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     o->t_end = a->t_end;
     o->q0 = c->q0;
     o->qd0 = c->qd0;
+    o->p0 = c->p0;
     if (!qd_sim_method_adaptive(o->method) && !a->has_dt) {
         cli_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
         return QD_EXIT_USAGE;
@@ -449,10 +467,17 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     }
     if (rc != QD_EXIT_OK)
         return rc;
-    c->e = qd_eom_derive(c->ctx, c->mf.model);
-    if (!c->e)
-        return cli_eom_derive_error(c->ctx, &c->mf);
-    c->s = qd_sim_new(c->ctx, c->mf.model, c->e);
+    if (qd_model_hamiltonian_given(c->mf.model)) {
+        /* Hamilton's equations as given: no Lagrangian needed */
+        c->s = qd_sim_new_hamilton(c->ctx, c->mf.model);
+        if (!c->s)
+            return cli_diag_ctx(c->ctx);
+    } else {
+        c->e = qd_eom_derive(c->ctx, c->mf.model);
+        if (!c->e)
+            return cli_eom_derive_error(c->ctx, &c->mf);
+        c->s = qd_sim_new(c->ctx, c->mf.model, c->e);
+    }
     if (!c->s)
         return cli_diag_ctx(c->ctx);
     rc = initial_values(c, a);
@@ -462,7 +487,10 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = add_event(c, a->events[i], a->event_stop[i]);
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
-    if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
+    if (rc == QD_EXIT_OK && a->native && !c->e)
+        fprintf(stderr, "qdot: note: --native takes models given by T and V or L; using the "
+                        "compiled programs\n");
+    else if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
         rc = load_native(c);
     return rc;
 }
@@ -472,6 +500,7 @@ void cli_sim_free(cli_sim *c) {
         qd_native_unload(c->native);
     free(c->native);
     free(c->q0);
+    free(c->p0);
     qd_sim_free(c->s);
     cli_state_free(&c->st);
     if (c->e)

@@ -34,6 +34,7 @@ typedef struct cli_sim {
     void *native;      /* qd_native, when --native loaded one */
     qd_sim_opts opts;
     double *q0, *qd0;
+    double *p0;        /* a model given by H: momenta from --initial, or NULL */
 } cli_sim;
 
 /* One option shared by both commands at argv[*i]: 1 when it was one (and

@@ -66,6 +66,19 @@ typedef struct qd_sim qd_sim;
  * to the model first).  e and m must outlive the qd_sim.  NULL on failure,
  * reason in ctx. */
 QD_API qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
+
+/* Compile the Hamilton's equations of a model given by H (`momenta`,
+ * `H = ...`) directly, y = (q, p):
+ *
+ *     q' = dH/dp,   p' = -dH/dq + Q - dD/dq'  (D at q' = dH/dp),
+ *
+ * which need no Lagrangian, so H need not be regular (d^2H/dp^2 may be
+ * singular: H = p x, H = c |p|).  Every method integrates (q, p); the
+ * columns are those of qd_sim_columns, the momenta under their names in
+ * `momenta`, the energy H.  Outputs and events are expressions in q, the
+ * momenta, t and the parameters.  m must outlive the qd_sim; NULL on
+ * failure (a model not given by H, constraints), reason in ctx. */
+QD_API qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m);
 QD_API void qd_sim_free(qd_sim *s);
 
 /* Extra output columns: an expression in the coordinates, velocities, t and
@@ -115,6 +128,10 @@ typedef struct qd_sim_opts {
      * an adaptive run that reaches it stops with QD_ERR_NUMERIC. */
     size_t max_steps;
     const double *q0, *qd0; /* n initial coordinates and velocities */
+    /* A system made from H (qd_sim_new_hamilton): n initial momenta, or
+     * NULL to find them from qd0 (dH/dp = q', solved by Newton's method:
+     * QD_ERR_SINGULAR when d^2H/dp^2 is singular, as for H = p x). */
+    const double *p0;
 } qd_sim_opts;
 
 typedef struct qd_sim_stats {

@@ -50,11 +50,15 @@ static void swap_rows(size_t n, double *A, double *b, size_t r, size_t p, size_t
     }
 }
 
-/* Eliminate column c below row r. */
-static void eliminate(size_t n, double *A, double *b, size_t r, size_t c) {
-    double inv = 1 / A[r * n + c];
+/* Eliminate column c below row r.  The multipliers are A_ic / A_rc; the
+ * solver (recip) takes one reciprocal per column instead of a division per
+ * row, the rank-revealing form divides.  Both are Golub & Van Loan's
+ * algorithm; the two roundings keep the results each caller had before
+ * the solvers were merged (printed eigenvalue orders depend on them). */
+static void eliminate(size_t n, double *A, double *b, size_t r, size_t c, bool recip) {
+    double piv = A[r * n + c], inv = 1 / piv;
     for (size_t i = r + 1; i < n; i++) {
-        double l = A[i * n + c] * inv;
+        double l = recip ? A[i * n + c] * inv : A[i * n + c] / piv;
         A[i * n + c] = 0;
         for (size_t j = c + 1; j < n; j++)
             A[i * n + j] -= l * A[r * n + j];
@@ -83,7 +87,7 @@ bool qd__num_solve(size_t n, double *A, double *b, double tol) {
         if (!(fabs(A[p * n + c]) > eps))
             return false;
         swap_rows(n, A, b, c, p, c);
-        eliminate(n, A, b, c, c);
+        eliminate(n, A, b, c, c, true);
     }
     back_substitute(n, A, n, NULL, b);
     return true;
@@ -112,7 +116,7 @@ size_t qd__num_rank(size_t n, double *A, double *b, double tol, size_t *pc, bool
         if (skip)
             continue;
         swap_rows(n, A, b, r, p, 0);
-        eliminate(n, A, b, r, c);
+        eliminate(n, A, b, r, c, false);
         pc[r++] = c;
     }
     if (r == n && b)

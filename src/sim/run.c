@@ -57,7 +57,7 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
     qd_status st = qd__run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    qd__aux_eval(s, t, y, r->qd);
+    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
     const double *gv = s->aux_out + qd__aux_ev(s), *guard = s->aux_out + qd__aux_guard(s);
     for (size_t k = 0, gi = 0; k < s->nev; k++) {
         if (g)
@@ -81,7 +81,7 @@ typedef struct measure {
 static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool aux) {
     qd_sim *s = r->s;
     size_t n = s->n;
-    const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, r->qd);
+    const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
     ms->dEmax = fmax(ms->dEmax, fabs(hT[0] - ms->E0));
     ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
     if (!s->m)
@@ -112,7 +112,7 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
         measure_at(r, ms, t, y, false);
         return QD_OK;
     }
-    qd__aux_eval(s, t, y, r->qd);
+    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
     const double *aux = s->aux_out;
     row[k++] = t;
     for (size_t j = 0; j < n; j++)
@@ -229,6 +229,14 @@ static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
     size_t n = s->n;
     double *q = it->y, *qd = r->qd;
     memcpy(q, o->q0, n * sizeof *q);
+    if (s->hamilton) {
+        /* Hamilton's equations need the momenta: given, or from q' */
+        if (o->p0) {
+            memcpy(it->y + n, o->p0, n * sizeof *q);
+            return QD_OK;
+        }
+        return qd__hamilton_momenta(s, o->t0, q, o->qd0, it->y + n);
+    }
     memcpy(qd, o->qd0, n * sizeof *qd);
     qd_status st = s->m && !o->no_project ? qd__project(s, o->t0, q, qd) : QD_OK;
     if (st != QD_OK)
@@ -405,7 +413,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
                     .dim = 2 * s->n, .t = o->t0, .tend = o->t_end,
                     .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
                     .fixed = o->fixed, .h = o->fixed ? o->dt : 0};
-    it.form = symplectic(o->method) && s->canonical ? QD__HAM : QD__LAG;
+    it.form = s->hamilton || (symplectic(o->method) && s->canonical) ? QD__HAM : QD__LAG;
     qd__run r = {.s = s, .it = &it};
     size_t ncols = qd_sim_columns(s, o->method, NULL, 0);
     st = run_alloc(&r, &it, ncols);
@@ -417,7 +425,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     if (st == QD_OK) {
         st = qd__run_velocity(&r, it.t, it.y);
         if (st == QD_OK) {
-            qd__aux_eval(s, it.t, it.y, r.qd);
+            qd__aux_eval(s, it.t, it.y, qd__second(s, it.y, r.qd));
             ms.E0 = s->aux_out[0];
         }
     }

@@ -40,6 +40,9 @@ struct qd_sim {
     qd_prog *en;    /* h, T alone (the per-step energy measure), when aux has more */
     size_t acc_n, con_n, mom_n, force_n, aux_n, en_n; /* output counts */
     bool canonical, separable, conservative, has_T;
+    bool hamilton;  /* made from H (hamilton.c): e is NULL, the inputs' second
+                       block holds the momenta, mom gives q' = dH/dp, acc
+                       dH/dp and d^2H/dp^2 (initial momenta from velocities) */
     const qd_expr *h_expr, *T_expr;
     const qd_expr **b_expr, **force_expr;
     bool *holonomic;  /* m */
@@ -65,6 +68,22 @@ struct qd_sim {
     double *con_err;  /* m: the worst residual of each constraint in this run */
     double tnow;  /* for messages */
 };
+
+/* The state's second half as the programs take it: the momenta (y + n)
+ * for a system made from H, the velocities qd otherwise. */
+static inline const double *qd__second(const qd_sim *s, const double *y, const double *qd) {
+    return s->hamilton ? y + s->n : qd;
+}
+
+/* Compile outs into a program over s's inputs (angle sums expanded as the
+ * generated C does); *count = nout.  NULL on failure, reason in ctx. */
+qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count);
+/* The column names and the per-constraint arrays. */
+qd_status qd__sim_names(qd_sim *s);
+/* A system made from H: p at t0 from the velocities qd (Newton on
+ * dH/dp = qd); QD_ERR_SINGULAR when d^2H/dp^2 is singular there. */
+qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const double *qd,
+                               double *p);
 
 /* Give the run copy w (a struct copy of a compiled system) its own
  * workspace, messages going to ctx; QD_ERR_NOMEM (nothing recorded). */

@@ -50,7 +50,7 @@ static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
  * are expanded first when that saves calls to the maths library (the
  * pendulum chain's cos(theta_j - theta_k): see src/codegen/angles.c), the
  * rewrite the generated C uses, so both paths compute the same formulas. */
-static qd_prog *compile(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count) {
+qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count) {
     const qd_expr **x = malloc((nout + 1) * sizeof *x);
     bool applied;
     qd_prog *p = NULL;
@@ -108,7 +108,7 @@ static qd_status compile_acc(qd_sim *s) {
         outs[k++] = e->A[i];
     for (size_t i = 0; i < m; i++)
         outs[k++] = e->b[i];
-    s->acc = compile(s, k, outs, &s->acc_n);
+    s->acc = qd__sim_prog(s, k, outs, &s->acc_n);
     k = 0;
     for (size_t i = 0; i < m * n; i++)
         outs[k++] = e->A[i];
@@ -117,7 +117,7 @@ static qd_status compile_acc(qd_sim *s) {
     for (size_t i = 0; i < m; i++)
         outs[k++] = e->con[i].expr;
     if (s->acc && m)
-        s->con = compile(s, k, outs, &s->con_n);
+        s->con = qd__sim_prog(s, k, outs, &s->con_n);
     free(outs);
     return s->acc && (!m || s->con) ? QD_OK : qd_ctx_status(s->ctx);
 }
@@ -189,14 +189,26 @@ static qd_status compile_canonical(qd_sim *s) {
         outs[i] = s->e->M[i];
     for (size_t i = 0; i < n; i++)
         outs[n * n + i] = s->b_expr[i];
-    s->mom = compile(s, n * n + n, outs, &s->mom_n);
+    s->mom = qd__sim_prog(s, n * n + n, outs, &s->mom_n);
     free(outs);
     if (s->mom)
-        s->force = compile(s, n, s->force_expr, &s->force_n);
+        s->force = qd__sim_prog(s, n, s->force_expr, &s->force_n);
     return s->mom && s->force ? QD_OK : qd_ctx_status(s->ctx);
 }
 
-static qd_status make_names(qd_sim *s) {
+/* Coordinate j and its momentum's column name (p_q, or the name given in
+ * `momenta` for a model given by H). */
+static const qd_expr *coord(const qd_sim *s, size_t j) {
+    return s->e ? s->e->q[j] : qd_model_coord(s->model, j);
+}
+
+static char *momentum_name(const qd_sim *s, size_t j) {
+    if (s->hamilton)
+        return dup_printf(qd_expr_name(qd_model_momentum(s->model, j)), "", "");
+    return dup_printf("p_", qd_expr_name(coord(s, j)), "");
+}
+
+qd_status qd__sim_names(qd_sim *s) {
     size_t n = s->n, k = 0;
     s->names = calloc(3 * n + 2 + s->m, sizeof *s->names);
     s->holonomic = calloc(s->m + 1, sizeof *s->holonomic);
@@ -205,11 +217,11 @@ static qd_status make_names(qd_sim *s) {
         return QD_ERR_NOMEM;
     s->names[k++] = dup_printf("t", "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "", "");
+        s->names[k++] = dup_printf(qd_expr_name(coord(s, j)), "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "'", "");
+        s->names[k++] = dup_printf(qd_expr_name(coord(s, j)), "'", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf("p_", qd_expr_name(s->e->q[j]), "");
+        s->names[k++] = momentum_name(s, j);
     s->names[k++] = dup_printf("energy", "", "");
     for (size_t c = 0; c < s->m; c++) {
         s->names[k++] = dup_printf("res_", s->e->con[c].name, "");
@@ -241,7 +253,7 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     if (st == QD_OK)
         st = compile_canonical(s);
     if (st == QD_OK)
-        st = make_names(s);
+        st = qd__sim_names(s);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "cannot compile the equations for simulation");
@@ -372,7 +384,7 @@ qd_status qd__aux_compile(qd_sim *s) {
         outs[k++] = s->ev_expr[i];
     for (size_t i = 0; i < s->nguard; i++)
         outs[k++] = s->guard_expr[i];
-    s->aux = compile(s, k, outs, &s->aux_n);
+    s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
     s->aux_lambda = false;
     for (size_t i = 2 + s->m; i < k; i++)
         for (size_t c = 0; c < s->m; c++)
@@ -380,7 +392,7 @@ qd_status qd__aux_compile(qd_sim *s) {
     /* outputs and events are needed at rows and event checks only; the
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
-        s->en = compile(s, 2, outs, &s->en_n);
+        s->en = qd__sim_prog(s, 2, outs, &s->en_n);
     free(outs);
     s->aux_ready = s->aux != NULL && (k == 2 + s->m || s->en != NULL);
     return s->aux_ready ? QD_OK : qd_ctx_status(s->ctx);
@@ -439,7 +451,8 @@ void qd__sim_ws_free(qd_sim *w) {
 
 size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap) {
     size_t n = s->n, k = 0;
-    bool ham = (method >= QD_SIM_GL2 && method <= QD_SIM_YOSHIDA8) && s->canonical;
+    bool ham = s->hamilton || ((method >= QD_SIM_GL2 && method <= QD_SIM_YOSHIDA8) &&
+                               s->canonical);
     for (size_t i = 0; i < 1 + 3 * n + 1 + s->m; i++) {
         if (i >= 1 + 2 * n && i < 1 + 3 * n && !ham)
             continue;
@@ -554,6 +567,11 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
 
 qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, double *qd) {
     size_t n = s->n;
+    if (s->hamilton) {
+        set_state(s, t, q, p);
+        qd_prog_eval(s->mom, s->mom_w, s->in, qd);
+        return QD_OK;
+    }
     set_state(s, t, q, NULL);
     qd_prog_eval(s->mom, s->mom_w, s->in, s->mom_out);
     for (size_t j = 0; j < n; j++)
@@ -578,6 +596,13 @@ void qd__force(qd_sim *s, double t, const double *q, const double *qd, double *F
 }
 
 qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd) {
+    if (s->hamilton) {
+        /* separable: dH/dp depends on p alone */
+        for (size_t j = 0; j < s->n; j++)
+            s->in[s->n + j] = p[j];
+        qd_prog_eval(s->mom, s->mom_w, s->in, qd);
+        return QD_OK;
+    }
     /* M is constant: its value at the current inputs is the value */
     qd_prog_eval(s->mom, s->mom_w, s->in, s->mom_out);
     return solve_mass(s, s->tnow, s->mom_out, p, qd);
@@ -590,6 +615,6 @@ qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *d
     size_t n = s->n;
     qd_status st = qd__velocity(s, t, y, y + n, dy);
     if (st == QD_OK)
-        qd__force(s, t, y, dy, dy + n);
+        qd__force(s, t, y, qd__second(s, y, dy), dy + n);
     return st;
 }
