@@ -76,7 +76,7 @@ static int sink(void *data, int event, const double *row) {
         for (size_t i = 0; i < o->ncols; i++) {
             if (i)
                 o->line[k++] = ',';
-            k += cli_sim_format(o->line + k, row[i]);
+            k += qd_double_format(o->line + k, row[i]);
         }
         if (o->events)
             k += (size_t)snprintf(o->line + k, 16, ",%d", event + 1);
@@ -165,7 +165,7 @@ static int run(cli_sim *c, const cli_sim_args *a) {
     size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
     const char **names = malloc((ncols + 1) * sizeof *names);
     double *final = malloc((ncols + 1) * sizeof *final);
-    char *line = malloc((ncols + 1) * (QD_SIM_NUMBER_MAX + 1) + 16);
+    char *line = malloc((ncols + 1) * (QD_DOUBLE_MAX + 1) + 16);
     if (!names || !final || !line) {
         free(names);
         free(final);
