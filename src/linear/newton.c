@@ -12,7 +12,6 @@
  */
 #include "linear.h"
 
-#include "mech/mech.h"
 #include "num/num.h"
 
 #include <math.h>

@@ -52,7 +52,7 @@ qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e) {
     }
     p->e = e;
     p->nout = nout;
-    p->inputs = qd__inputs(ctx, nout, outs, &p->nin);
+    p->inputs = qd__num_inputs(ctx, nout, outs, &p->nin);
     if (p->inputs)
         p->prog = qd_prog_new(ctx, p->nin, p->inputs, nout, outs);
     free(outs);

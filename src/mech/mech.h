@@ -35,10 +35,6 @@ typedef struct qd__eom_num {
     qd_eom_work *work;
 } qd__eom_num;
 
-/* Every free symbol of exprs[0..n), each once, in a malloc'd array (NULL
- * on failure). */
-const qd_expr **qd__inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin);
-
 /* Offsets of the compiled outputs (see qd_eom_prog). */
 static inline size_t qd__out_A(const qd_eom *e) { return e->n * e->n + e->n; }
 static inline size_t qd__out_b(const qd_eom *e) { return qd__out_A(e) + e->ncon * e->n; }

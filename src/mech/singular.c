@@ -184,7 +184,7 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
         return numeric_check(ctx, e, T, num->prog->prog, num->prog->nin, num->prog->nout, pick);
     qd_ctx_clear_error(ctx);
     size_t nin, nn = e->n * e->n;
-    const qd_expr **in = qd__inputs(ctx, nn, e->M, &nin);
+    const qd_expr **in = qd__num_inputs(ctx, nn, e->M, &nin);
     qd_prog *p = in ? qd_prog_new(ctx, nin, in, nn, e->M) : NULL;
     qd_status st;
     if (p) {

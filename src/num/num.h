@@ -1,16 +1,27 @@
 /*
  * src/num/num.h - the numerics home: the one dense linear solver and the
  * one saddle-point assembly every module uses (mech, sim, linear), and the
- * shortest round-trip printing of doubles.  Prefix qd__num_.
+ * inputs of compiled programs (the shortest round-trip printing of doubles
+ * is public: qd_double_format, shortest.c).  Prefix qd__num_.
  *
- * Matrices are row-major double arrays; nothing here allocates, so a
- * caller's workspace makes every call thread-safe.
+ * This is the module's interface to the others (docs/design.md, the
+ * numerics home); the other modules' own headers (mech/mech.h,
+ * sim/simint.h, ...) stay inside their module.  Matrices are row-major
+ * double arrays; the solvers do not allocate, so a caller's workspace
+ * makes every call thread-safe.
  */
 #ifndef QD_NUM_NUM_H
 #define QD_NUM_NUM_H
 
 #include <stdbool.h>
 #include <stddef.h>
+
+#include "qdot/expr.h"
+
+/* Every free symbol of exprs[0..n), each once, in a malloc'd array (NULL
+ * on failure, recorded in ctx): the inputs of a program compiled from
+ * them (inputs.c). */
+const qd_expr **qd__num_inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin);
 
 /* Solve A x = b in place (A n*n destroyed, b becomes x) by Gaussian
  * elimination with partial pivoting (Golub & Van Loan, alg. 3.4.1).

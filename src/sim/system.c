@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "codegen/cg.h"
+#include "codegen/angles.h"
 #include "num/num.h"
 
 static double param_value(qd_ctx *ctx, const qd_expr *v) {
