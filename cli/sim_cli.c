@@ -121,6 +121,15 @@ static bool is_multiplier(const cli_sim *c, const qd_expr *x) {
     return false;
 }
 
+/* A momentum of a model given by H: its outputs and events may use them. */
+static bool is_momentum(const cli_sim *c, const qd_expr *x) {
+    const qd_model *m = c->mf.model;
+    for (size_t j = 0; qd_model_hamiltonian_given(m) && j < qd_model_ncoords(m); j++)
+        if (qd_model_momentum(m, j) == x)
+            return true;
+    return false;
+}
+
 /* Read text[a, b) against the model: definitions substituted. */
 static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
     trim(&a, &b);
@@ -152,7 +161,8 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
     const qd_expr **syms = malloc((k + 1) * sizeof *syms);
     qd_free_symbols(c->ctx, x, syms, k);
     for (size_t i = 0; x && i < k; i++) {
-        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]))
+        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]) ||
+            is_momentum(c, syms[i]))
             continue;
         const qd_expr *d = qd_model_definition(c->mf.model, qd_expr_name(syms[i]));
         if (!d) {

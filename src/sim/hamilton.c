@@ -85,6 +85,10 @@ static qd_status equations(qd_sim *s, const qd_expr **v, const qd_expr **F, cons
     free(qd);
     s->h_expr = H;
     s->T_expr = qd_int(ctx, 0);
+    s->b_expr = calloc(n + 1, sizeof *s->b_expr);
+    if (!s->b_expr)
+        return QD_ERR_NOMEM;
+    memcpy(s->b_expr, v, n * sizeof *v); /* q' = dH/dp, for the outputs */
     s->conservative = !qd_has(H, t) && !forces && !(D && !qd_is_zero(D));
     return qd_ctx_status(ctx);
 }
@@ -106,6 +110,16 @@ static qd_status compile(qd_sim *s) {
         s->acc = qd__sim_prog(s, n + n * n, x, &s->acc_n);
     free(x);
     return st == QD_OK && s->acc ? QD_OK : qd_ctx_status(s->ctx);
+}
+
+void qd__hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x) {
+    const qd_expr **qd = malloc((s->n + 1) * sizeof *qd);
+    for (size_t j = 0; qd && j < s->n; j++)
+        qd[j] = qd_jet(s->ctx, s->in_syms[j], 1);
+    /* out of memory: the velocities stay, and compiling names them */
+    for (size_t i = 0; qd && i < n; i++)
+        x[i] = qd_subs(s->ctx, x[i], s->n, qd, s->b_expr);
+    free(qd);
 }
 
 qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m) {

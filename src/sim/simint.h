@@ -80,6 +80,9 @@ static inline const double *qd__second(const qd_sim *s, const double *y, const d
 qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count);
 /* The column names and the per-constraint arrays. */
 qd_status qd__sim_names(qd_sim *s);
+/* A system made from H: the velocities in x[0..n) replaced by dH/dp, so
+ * that outputs and events may use them. */
+void qd__hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x);
 /* A system made from H: p at t0 from the velocities qd (Newton on
  * dH/dp = qd); QD_ERR_SINGULAR when d^2H/dp^2 is singular there. */
 qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const double *qd,

@@ -384,6 +384,8 @@ qd_status qd__aux_compile(qd_sim *s) {
         outs[k++] = s->ev_expr[i];
     for (size_t i = 0; i < s->nguard; i++)
         outs[k++] = s->guard_expr[i];
+    if (s->hamilton)
+        qd__hamilton_velocities(s, k - 2, outs + 2);
     s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
     s->aux_lambda = false;
     for (size_t i = 2 + s->m; i < k; i++)

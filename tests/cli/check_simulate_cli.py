@@ -193,6 +193,18 @@ def main():
               and abs(p - 2 / math.e) < 1e-9 and abs(e - 2) < 1e-9, f'H = p x: {data[-1]}')
     rc, out, err = run(qdot, 'simulate', hm, '--t-end', 1)
     check(rc == 1 and 'give the momenta' in err and out == '', f'H = p x, no p: {rc} {err}')
+    # the oscillator H = (p^2 + x^2)/2 from x = 1, x' = 0 (p from x' = dH/dp):
+    # x' = 0 again with x < 0 at t = pi; outputs and events may use q' and p
+    ho = Path(tmp) / 'h_osc.qd'
+    ho.write_text('coordinates x\nmomenta p\nH = p^2/2 + x^2/2\ninitial x = 1\n')
+    rc, out, err = run(qdot, 'simulate', ho, '--t-end', 4, '--rtol', 1e-12, '--output',
+                       "x' - p", '--stop-at', "x' = 0, x < 0")
+    check(rc == 0, f'H oscillator: {rc} {err}')
+    if rc == 0:
+        head, data = rows(out)
+        last = data[-1]
+        check(abs(last[0] - math.pi) < 1e-9 and abs(last[1] + 1) < 1e-9, f'half period {last}')
+        check(all(r[head.index("x' - p")] == 0 for r in data), "x' = dH/dp = p")
 
     # a step count past --max-steps (default 1e8) is refused before the run,
     # naming the count: --dt 1e-300 over t = 0..1 is 1e300 steps, and an
