@@ -76,8 +76,9 @@ QD_API qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
  * singular: H = p x, H = c |p|).  Every method integrates (q, p); the
  * columns are those of qd_sim_columns, the momenta under their names in
  * `momenta`, the energy H.  Outputs and events are expressions in q, the
- * momenta, the velocities (replaced by dH/dp), t and the parameters.  m must outlive the qd_sim; NULL on
- * failure (a model not given by H, constraints), reason in ctx. */
+ * momenta, the velocities (replaced by dH/dp), t and the parameters.  m
+ * must outlive the qd_sim; NULL on failure (a model not given by H,
+ * constraints), reason in ctx. */
 QD_API qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m);
 QD_API void qd_sim_free(qd_sim *s);
 

@@ -5,9 +5,10 @@
  * Reference: the shortest %.Ng, N = 15..17 (N = 1..17 for a subnormal),
  * whose strtod is x (C11 7.21.6.1 for %g; a double needs at most 17
  * digits, IEEE 754-2008 5.12.2), and no more significant digits than the
- * shortest %.Ng of any N.  Checked on textbook cases (0.1 + 0.2, 9.81, the extremes of the fast path and
- * beyond it, subnormals, powers of 2 whose lower gap is half) and on
- * 200,000 doubles with random bits, which also must read back exactly.
+ * shortest %.Ng of any N.  Checked on textbook cases (0.1 + 0.2, 9.81,
+ * the extremes of the fast path and beyond it, subnormals, powers of 2
+ * whose lower gap is half) and on 200,000 doubles with random bits, which
+ * also must read back exactly.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -73,7 +74,8 @@ static void test_cases(void **state) {
     double cases[] = {1, -1, 0.5, 1.0 / 3, 2.0 / 3, 1e-12, 9.999999999999999e-13, 1e15,
                       999999999999999.9, 123456789012345.6, 5e-324, 2.2250738585072014e-308,
                       1.7976931348623157e308, 0x1p53, 0x1p-20, 4503599627370497.0, 3.14159265358979,
-                      3.141592653589793, -2.718281828459045, 1e-5, 1e-4, 0.00012345678901234567, 100, 1e14 + 0.5};
+                      3.141592653589793, -2.718281828459045, 1e-5, 1e-4,
+                      0.00012345678901234567, 100, 1e14 + 0.5};
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++)
         check(cases[i]);
     for (int e = -330; e <= 310; e++)

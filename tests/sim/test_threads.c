@@ -68,8 +68,8 @@ static void test_eom_two_threads(void **state) {
     assert_non_null(f);
     qd_eom_prog *prog = qd_eom_compile(f->ctx, f->e);
     assert_non_null(prog);
-    const qd_expr *syms[6] = {f->e->q[0],           f->e->q[1],           f->e->qd[0],
-                              f->e->qd[1],          qd_model_param(f->m, 0), qd_model_param(f->m, 1)};
+    const qd_expr *syms[6] = {f->e->q[0],  f->e->q[1],  f->e->qd[0],
+                              f->e->qd[1], qd_model_param(f->m, 0), qd_model_param(f->m, 1)};
     static double vals[NSTATES][6];
     for (size_t k = 0; k < NSTATES; k++) {
         /* on the circle of radius l, moving along it */
