@@ -264,10 +264,32 @@ static int initial_momenta(cli_sim *c) {
     return QD_EXIT_OK;
 }
 
+/* A model given by H: its momenta after the state's other names, so that
+ * --initial takes them (NaN until given). */
+static int add_momenta(cli_sim *c) {
+    const qd_model *m = c->mf.model;
+    size_t n = qd_model_ncoords(m), at = c->st.n;
+    const qd_expr **syms = realloc(c->st.syms, (at + n) * sizeof *syms);
+    if (syms)
+        c->st.syms = syms;
+    double *vals = syms ? realloc(c->st.vals, (at + n) * sizeof *vals) : NULL;
+    if (!vals)
+        return QD_EXIT_FAIL;
+    c->st.vals = vals;
+    for (size_t j = 0; j < n; j++) {
+        c->st.syms[at + j] = qd_model_momentum(m, j);
+        c->st.vals[at + j] = NAN;
+    }
+    c->st.n += n;
+    return QD_EXIT_OK;
+}
+
 static int initial_values(cli_sim *c, const cli_sim_args *a) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m);
     int rc = cli_state_init(c->ctx, m, &c->st);
+    if (rc == QD_EXIT_OK && !c->e)
+        rc = add_momenta(c);
     if (rc != QD_EXIT_OK)
         return rc;
     for (size_t i = 0; i < n; i++)

@@ -34,8 +34,6 @@ void cli_state_put_result(qd_buf *b, double x) {
 
 int cli_state_init(qd_ctx *ctx, const qd_model *m, cli_state *st) {
     size_t nq = qd_model_ncoords(m), np = qd_model_nparams(m), n = 2 * nq + 1 + np;
-    size_t nmom = qd_model_hamiltonian_given(m) ? nq : 0;
-    n += nmom;
     st->n = n;
     st->syms = calloc(n, sizeof *st->syms);
     st->vals = calloc(n, sizeof *st->vals);
@@ -56,11 +54,6 @@ int cli_state_init(qd_ctx *ctx, const qd_model *m, cli_state *st) {
             st->vals[2 * nq + 1 + i] = cli_state_value(v);
         else if (!v || qd_eval(ctx, v, 0, st->syms, st->vals, &st->vals[2 * nq + 1 + i]) != QD_OK)
             return cli_diag_ctx(ctx);
-    }
-    /* a model given by H: its momenta last, NaN until given */
-    for (size_t i = 0; i < nmom; i++) {
-        st->syms[2 * nq + 1 + np + i] = qd_model_momentum(m, i);
-        st->vals[2 * nq + 1 + np + i] = NAN;
     }
     return QD_EXIT_OK;
 }
