@@ -140,12 +140,12 @@ QD_API qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const q
  * threads may then call qd_eom_prog_eval on it at once, each with its own
  * workspace (qd_eom_work_new, used by one thread at a time) and its own
  * context for messages.  qd_eom_prog_eval is qd_eom_eval's computation.
- * NULL on failure (reason in ctx; qd_eom_work_new: out of memory). */
+ * NULL on failure, reason in ctx (the thread's own for qd_eom_work_new). */
 typedef struct qd_eom_prog qd_eom_prog;
 typedef struct qd_eom_work qd_eom_work;
 QD_API qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e);
 QD_API void qd_eom_prog_free(qd_eom_prog *p);
-QD_API qd_eom_work *qd_eom_work_new(const qd_eom_prog *p);
+QD_API qd_eom_work *qd_eom_work_new(qd_ctx *ctx, const qd_eom_prog *p);
 QD_API void qd_eom_work_free(qd_eom_work *w);
 QD_API qd_status qd_eom_prog_eval(qd_ctx *ctx, const qd_eom_prog *p, qd_eom_work *w,
                                   size_t nvals, const qd_expr *const *syms, const double *vals,

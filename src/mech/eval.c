@@ -70,15 +70,18 @@ void qd_eom_work_free(qd_eom_work *w) {
     free(w);
 }
 
-qd_eom_work *qd_eom_work_new(const qd_eom_prog *p) {
+qd_eom_work *qd_eom_work_new(qd_ctx *ctx, const qd_eom_prog *p) {
     qd_eom_work *w = calloc(1, sizeof *w);
-    if (!w)
+    if (!w) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory for an evaluation workspace");
         return NULL;
+    }
     size_t s = p->e->n + p->e->ncon, nregs = qd_prog_work_size(p->prog);
     /* one block: in, out, the registers, K (s*s) and its right-hand side */
     w->in = malloc((p->nin + p->nout + nregs + s * s + s + 1) * sizeof *w->in);
     if (!w->in) {
         free(w);
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory for an evaluation workspace");
         return NULL;
     }
     w->p = p;
@@ -154,7 +157,7 @@ qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
     if (num->prog)
         return QD_OK;
     num->prog = qd_eom_compile(ctx, e);
-    num->work = num->prog ? qd_eom_work_new(num->prog) : NULL;
+    num->work = num->prog ? qd_eom_work_new(ctx, num->prog) : NULL;
     if (num->work)
         return QD_OK;
     qd__eom_num_free(num);

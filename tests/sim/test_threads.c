@@ -51,7 +51,7 @@ typedef struct eval_job {
 static void *eval_all(void *arg) {
     eval_job *j = arg;
     qd_ctx *ctx = qd_ctx_new();
-    qd_eom_work *w = qd_eom_work_new(j->prog);
+    qd_eom_work *w = ctx ? qd_eom_work_new(ctx, j->prog) : NULL;
     j->st = ctx && w ? QD_OK : QD_ERR_NOMEM;
     for (int r = 0; r < REPEAT && j->st == QD_OK; r++)
         for (size_t k = 0; k < NSTATES && j->st == QD_OK; k++)
