@@ -3,7 +3,7 @@ PREFIX ?= /usr/local
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE  ?= cmake
 
-.PHONY: all deps build demo test test-asan bench install clean
+.PHONY: all deps build demo test test-asan test-tsan bench install clean
 
 all: build
 
@@ -29,6 +29,7 @@ test:
 	$(CMAKE) --build build -j $(JOBS)
 	cd build && ctest --output-on-failure -j $(JOBS)
 	$(MAKE) test-asan
+	$(MAKE) test-tsan
 
 test-asan:
 	$(CMAKE) -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DQDOT_SANITIZE=ON -DQDOT_TESTS=ON
@@ -36,6 +37,13 @@ test-asan:
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --output-on-failure -j $(JOBS) -LE nosan
+
+# Two threads sharing one compiled system under ThreadSanitizer (any report
+# fails): only the library and that test are built.
+test-tsan:
+	$(CMAKE) -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TSAN=ON -DQDOT_TESTS=ON
+	$(CMAKE) --build build-tsan -j $(JOBS) --target sim_test_threads
+	TSAN_OPTIONS=halt_on_error=1:exitcode=66 ./build-tsan/tests/sim_test_threads
 
 bench:
 	./scripts/deps.sh bench
@@ -50,4 +58,4 @@ install: build
 	$(CMAKE) --install build --prefix $(PREFIX)
 
 clean:
-	rm -rf build build-asan build-bench
+	rm -rf build build-asan build-tsan build-bench

@@ -369,17 +369,6 @@ static bool all_zero(size_t nn, const double *A) {
     return true;
 }
 
-static size_t multiplicity(const qd_modes_result *res, size_t j) {
-    size_t c = 0;
-    double big = 0;
-    for (size_t k = 0; k < res->n; k++)
-        big = fmax(big, fabs(res->omega2[k]));
-    for (size_t k = 0; k < res->n; k++)
-        if (fabs(res->omega2[k] - res->omega2[j]) <= 1e-7 * big)
-            c++;
-    return c;
-}
-
 static void put_point(modes_run *r, qd_buf *b) {
     const qd_eom *e = r->lr.e;
     qd_buf_puts(b, r->pt ? "equilibrium: " : "about: ");
@@ -414,7 +403,7 @@ static void put_conservative(modes_run *r, qd_buf *b) {
                            "Q'(0) t)");
         else
             qd_buf_printf(b, ", unstable direction: growth rate %.10g 1/s", w);
-        size_t mult = multiplicity(res, j);
+        size_t mult = qd_modes_multiplicity(res, j);
         if (mult > 1)
             qd_buf_printf(b, " [repeated x%zu: the shapes are one M0-orthonormal basis of the "
                              "eigenspace]", mult);
@@ -568,7 +557,7 @@ static void json_modes(modes_run *r, cli_json *j) {
         else
             cli_json_null(j);
         cli_json_key(j, "multiplicity");
-        cli_json_number(j, (double)multiplicity(res, k));
+        cli_json_number(j, (double)qd_modes_multiplicity(res, k));
         cli_json_key(j, "shape");
         cli_json_begin_object(j);
         for (size_t i = 0; i < n; i++) {

@@ -43,11 +43,11 @@ static int sink(void *data, int event, const double *row) {
     }
     if (event < 0)
         return 0;
-    char num[QD_SIM_NUMBER_MAX];
+    char num[QD_DOUBLE_MAX];
     for (size_t i = 0; i < o->ncols; i++) {
         if (i)
             fputc(',', o->f);
-        fwrite(num, 1, cli_sim_format(num, row[i]), o->f);
+        fwrite(num, 1, qd_double_format(num, row[i]), o->f);
     }
     fputc('\n', o->f);
     return ++o->got >= o->want;

@@ -76,7 +76,7 @@ static int sink(void *data, int event, const double *row) {
         for (size_t i = 0; i < o->ncols; i++) {
             if (i)
                 o->line[k++] = ',';
-            k += cli_sim_format(o->line + k, row[i]);
+            k += qd_double_format(o->line + k, row[i]);
         }
         if (o->events)
             k += (size_t)snprintf(o->line + k, 16, ",%d", event + 1);
@@ -145,7 +145,7 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_number(j, st->constraint_error_max);
     cli_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
     cli_json_begin_object(j);
-    for (size_t k = 0; k < c->e->ncon; k++) {
+    for (size_t k = 0; c->e && k < c->e->ncon; k++) {
         cli_json_key(j, c->e->con[k].name);
         cli_json_number(j, qd_sim_constraint_error(c->s, k));
     }
@@ -165,7 +165,7 @@ static int run(cli_sim *c, const cli_sim_args *a) {
     size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
     const char **names = malloc((ncols + 1) * sizeof *names);
     double *final = malloc((ncols + 1) * sizeof *final);
-    char *line = malloc((ncols + 1) * (QD_SIM_NUMBER_MAX + 1) + 16);
+    char *line = malloc((ncols + 1) * (QD_DOUBLE_MAX + 1) + 16);
     if (!names || !final || !line) {
         free(names);
         free(final);

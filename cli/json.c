@@ -110,13 +110,7 @@ bool cli_json_number(cli_json *j, double v) {
         v = 0.0;
     /* the shortest digits that read back as the same double: 9.81, not
      * 9.8100000000000005 */
-    char digits[32];
-    for (int prec = 15; prec <= 17; prec++) {
-        snprintf(digits, sizeof digits, "%.*g", prec, v);
-        if (strtod(digits, NULL) == v)
-            break;
-    }
-    qd_buf_puts(j->out, digits);
+    qd_buf_put_double(j->out, v);
     return true;
 }
 

@@ -68,7 +68,12 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     if ((v = cli_value(argc, argv, i, "--max-steps"))) {
         double x = 0;
         int rc = number("--max-steps", v, &x, true);
-        a->max_steps = rc == 1 ? (size_t)x : 0;
+        if (rc == 1 && x != floor(x)) {
+            cli_diag_error("--max-steps takes a whole number, not '%s'", v);
+            return QD_EXIT_USAGE + 100;
+        }
+        /* (size_t)x is undefined beyond SIZE_MAX: clamp first */
+        a->max_steps = rc != 1 ? 0 : x >= 0x1p63 ? (size_t)-1 : (size_t)x;
         return rc;
     }
     if ((v = cli_value(argc, argv, i, "--method"))) {
@@ -99,126 +104,6 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     return 0;
 }
 
-/* ---- numbers ------------------------------------------------------------- */
-
-__extension__ typedef unsigned __int128 u128;
-
-/* The digits of |x| = m 2^-s rounded to p = k + 1 + e10 significant digits
- * into *D: 1 when lo <= D < hi and D reads back to x, -1 when D >= hi (the
- * decimal exponent is one more), 0 otherwise.  With 10^k = 5^k 2^k, D is
- * m 5^k / 2^(s - k) rounded (ties to even, as printf), and it reads back
- * when |D 10^-k - x| < ulp/2, i.e. |2 D 2^(s-k) - 2 m 5^k| < 5^k: all in
- * exact 128-bit integers while k <= 31 and s - k <= 69. */
-static int digits_roundtrip(uint64_t m, int s, int k, uint64_t lo, uint64_t hi, uint64_t *D) {
-    static u128 pow5[32];
-    int sh = s - k;
-    if (k < 0 || k > 31 || sh < 1 || sh > 69)
-        return 0;
-    if (!pow5[0])
-        for (int i = 0; i < 32; i++)
-            pow5[i] = i ? 5 * pow5[i - 1] : 1;
-    u128 p5 = pow5[k];
-    u128 N = (u128)m * p5, half = (u128)1 << (sh - 1), rem = N & (((u128)1 << sh) - 1);
-    u128 d = N >> sh;
-    d += rem > half || (rem == half && (d & 1));
-    if (d >= hi)
-        return -1;
-    if (d < lo)
-        return 0;
-    u128 a = d << (sh + 1), b = N << 1;
-    u128 diff = a > b ? a - b : b - a;
-    *D = (uint64_t)d;
-    return diff < p5;
-}
-
-/* |x| in [1e-12, 1e15) as %.pg prints it with the shortest p of 15, 16, 17
- * that reads back; 0 outside that range or when unsure. */
-static size_t fast_number(char *out, double x) {
-    static const uint64_t pow10[18] = {
-        UINT64_C(1), UINT64_C(10), UINT64_C(100), UINT64_C(1000), UINT64_C(10000),
-        UINT64_C(100000), UINT64_C(1000000), UINT64_C(10000000), UINT64_C(100000000),
-        UINT64_C(1000000000), UINT64_C(10000000000), UINT64_C(100000000000),
-        UINT64_C(1000000000000), UINT64_C(10000000000000), UINT64_C(100000000000000),
-        UINT64_C(1000000000000000), UINT64_C(10000000000000000),
-        UINT64_C(100000000000000000)};
-    double ax = fabs(x);
-    if (!(ax >= 1e-12 && ax < 1e15))
-        return 0;
-    uint64_t bits;
-    memcpy(&bits, &ax, sizeof bits);
-    uint64_t frac = bits & ((UINT64_C(1) << 52) - 1);
-    int be = (int)(bits >> 52);            /* normal here: ax = m 2^-s */
-    if (frac == 0)                         /* a power of 2: the gap below is half */
-        return 0;
-    uint64_t m = frac | (UINT64_C(1) << 52);
-    int s = 1075 - be;
-    /* 2^(e2-1) <= ax < 2^e2: floor(log10 ax) is this or one more */
-    int est = (int)floor((double)(be - 1023) * 0.30102999566398120);
-    for (int p = 15; p <= 17; p++) {
-        uint64_t D = 0;
-        int e10 = est;
-        int r = digits_roundtrip(m, s, p - 1 - e10, pow10[p - 1], pow10[p], &D);
-        if (r < 0) {
-            e10++;
-            r = digits_roundtrip(m, s, p - 1 - e10, pow10[p - 1], pow10[p], &D);
-        }
-        if (r < 0 || e10 < -12 || e10 > 14)
-            return 0;
-        if (!r)
-            continue;
-        char dig[20];
-        for (int i = p - 1; i >= 0; i--, D /= 10)
-            dig[i] = (char)('0' + D % 10);
-        int nd = p;
-        while (nd > 1 && dig[nd - 1] == '0')
-            nd--;
-        size_t n = 0;
-        if (x < 0)
-            out[n++] = '-';
-        if (e10 < -4) {                    /* d.ddde-XX */
-            out[n++] = dig[0];
-            if (nd > 1)
-                out[n++] = '.';
-            for (int i = 1; i < nd; i++)
-                out[n++] = dig[i];
-            out[n++] = 'e';
-            out[n++] = '-';
-            out[n++] = (char)('0' + -e10 / 10);
-            out[n++] = (char)('0' + -e10 % 10);
-        } else if (e10 >= 0) {
-            for (int i = 0; i <= e10; i++)
-                out[n++] = i < nd ? dig[i] : '0';
-            if (nd > e10 + 1) {
-                out[n++] = '.';
-                for (int i = e10 + 1; i < nd; i++)
-                    out[n++] = dig[i];
-            }
-        } else {
-            out[n++] = '0';
-            out[n++] = '.';
-            for (int i = 0; i < -e10 - 1; i++)
-                out[n++] = '0';
-            for (int i = 0; i < nd; i++)
-                out[n++] = dig[i];
-        }
-        out[n] = '\0';
-        return n;
-    }
-    return 0;
-}
-
-size_t cli_sim_format(char *out, double x) {
-    size_t n = fast_number(out, x);
-    if (n)
-        return n;
-    for (int p = 15; p <= 17; p++) {
-        snprintf(out, QD_SIM_NUMBER_MAX, "%.*g", p, x);
-        if (p == 17 || strtod(out, NULL) == x)
-            break;
-    }
-    return strlen(out);
-}
-
 /* ---- expressions ---------------------------------------------------------- */
 
 static void trim(const char **a, const char **b) {
@@ -233,6 +118,15 @@ static void trim(const char **a, const char **b) {
 static bool is_multiplier(const cli_sim *c, const qd_expr *x) {
     for (size_t k = 0; c->e && k < c->e->ncon; k++)
         if (c->e->con[k].lambda == x)
+            return true;
+    return false;
+}
+
+/* A momentum of a model given by H: its outputs and events may use them. */
+static bool is_momentum(const cli_sim *c, const qd_expr *x) {
+    const qd_model *m = c->mf.model;
+    for (size_t j = 0; qd_model_hamiltonian_given(m) && j < qd_model_ncoords(m); j++)
+        if (qd_model_momentum(m, j) == x)
             return true;
     return false;
 }
@@ -268,7 +162,8 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
     const qd_expr **syms = malloc((k + 1) * sizeof *syms);
     qd_free_symbols(c->ctx, x, syms, k);
     for (size_t i = 0; x && i < k; i++) {
-        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]))
+        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]) ||
+            is_momentum(c, syms[i]))
             continue;
         const qd_expr *d = qd_model_definition(c->mf.model, qd_expr_name(syms[i]));
         if (!d) {
@@ -353,10 +248,49 @@ static int add_event(cli_sim *c, const char *text, bool stop) {
 
 /* ---- setup ----------------------------------------------------------------- */
 
+/* A model given by H: the momenta when --initial names any (those not
+ * named are 0), else the library finds them from the velocities. */
+static int initial_momenta(cli_sim *c) {
+    size_t n = qd_model_ncoords(c->mf.model), at = c->st.n - n;
+    bool any = false;
+    for (size_t j = 0; j < n; j++)
+        any = any || !isnan(c->st.vals[at + j]);
+    if (!any)
+        return QD_EXIT_OK;
+    c->p0 = malloc((n + 1) * sizeof *c->p0);
+    if (!c->p0)
+        return QD_EXIT_FAIL;
+    for (size_t j = 0; j < n; j++)
+        c->p0[j] = isnan(c->st.vals[at + j]) ? 0 : c->st.vals[at + j];
+    return QD_EXIT_OK;
+}
+
+/* A model given by H: its momenta after the state's other names, so that
+ * --initial takes them (NaN until given). */
+static int add_momenta(cli_sim *c) {
+    const qd_model *m = c->mf.model;
+    size_t n = qd_model_ncoords(m), at = c->st.n;
+    const qd_expr **syms = realloc(c->st.syms, (at + n) * sizeof *syms);
+    if (syms)
+        c->st.syms = syms;
+    double *vals = syms ? realloc(c->st.vals, (at + n) * sizeof *vals) : NULL;
+    if (!vals)
+        return QD_EXIT_FAIL;
+    c->st.vals = vals;
+    for (size_t j = 0; j < n; j++) {
+        c->st.syms[at + j] = qd_model_momentum(m, j);
+        c->st.vals[at + j] = NAN;
+    }
+    c->st.n += n;
+    return QD_EXIT_OK;
+}
+
 static int initial_values(cli_sim *c, const cli_sim_args *a) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m);
     int rc = cli_state_init(c->ctx, m, &c->st);
+    if (rc == QD_EXIT_OK && !c->e)
+        rc = add_momenta(c);
     if (rc != QD_EXIT_OK)
         return rc;
     for (size_t i = 0; i < n; i++)
@@ -374,13 +308,13 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_FAIL;
     c->qd0 = c->q0 + n;
     for (size_t j = 0; j < n; j++) {
-        size_t i = 0;
-        while (i < n && qd_model_coord(m, i) != c->e->q[j])
+        size_t i = c->e ? 0 : j;
+        while (c->e && i < n && qd_model_coord(m, i) != c->e->q[j])
             i++;
         c->q0[j] = c->st.vals[i];
         c->qd0[j] = c->st.vals[n + i];
     }
-    return QD_EXIT_OK;
+    return c->e ? QD_EXIT_OK : initial_momenta(c);
 }
 
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
@@ -402,6 +336,7 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     o->t_end = a->t_end;
     o->q0 = c->q0;
     o->qd0 = c->qd0;
+    o->p0 = c->p0;
     if (!qd_sim_method_adaptive(o->method) && !a->has_dt) {
         cli_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
         return QD_EXIT_USAGE;
@@ -410,6 +345,9 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
         cli_diag_error("--t-end must be after the start time (%g)", o->t0);
         return QD_EXIT_USAGE;
     }
+    /* before any output file is opened: a refused run writes nothing */
+    if (qd_sim_check_opts(c->ctx, o) != QD_OK)
+        return cli_diag_ctx(c->ctx);
     return QD_EXIT_OK;
 }
 
@@ -438,10 +376,17 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     int rc = cli_load(c->ctx, a->file, a->nsets, a->sets, false, &c->mf);
     if (rc != QD_EXIT_OK)
         return rc;
-    c->e = qd_eom_derive(c->ctx, c->mf.model);
-    if (!c->e)
-        return cli_eom_derive_error(c->ctx, &c->mf);
-    c->s = qd_sim_new(c->ctx, c->mf.model, c->e);
+    if (qd_model_hamiltonian_given(c->mf.model)) {
+        /* Hamilton's equations as given: no Lagrangian needed */
+        c->s = qd_sim_new_hamilton(c->ctx, c->mf.model);
+        if (!c->s)
+            return cli_diag_ctx(c->ctx);
+    } else {
+        c->e = qd_eom_derive(c->ctx, c->mf.model);
+        if (!c->e)
+            return cli_eom_derive_error(c->ctx, &c->mf);
+        c->s = qd_sim_new(c->ctx, c->mf.model, c->e);
+    }
     if (!c->s)
         return cli_diag_ctx(c->ctx);
     rc = initial_values(c, a);
@@ -451,7 +396,10 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = add_event(c, a->events[i], a->event_stop[i]);
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
-    if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
+    if (rc == QD_EXIT_OK && a->native && !c->e)
+        fprintf(stderr, "qdot: note: --native takes models given by T and V or L; using the "
+                        "compiled programs\n");
+    else if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
         rc = load_native(c);
     return rc;
 }
@@ -461,6 +409,7 @@ void cli_sim_free(cli_sim *c) {
         qd_native_unload(c->native);
     free(c->native);
     free(c->q0);
+    free(c->p0);
     qd_sim_free(c->s);
     cli_state_free(&c->st);
     if (c->e)

@@ -34,18 +34,13 @@ typedef struct cli_sim {
     void *native;      /* qd_native, when --native loaded one */
     qd_sim_opts opts;
     double *q0, *qd0;
+    double *p0;        /* a model given by H: momenta from --initial, or NULL */
 } cli_sim;
 
 /* One option shared by both commands at argv[*i]: 1 when it was one (and
  * taken), 0 when it is not, or an exit status (QD_EXIT_USAGE) + 100. */
 int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a);
 
-/* x as the shortest of 15, 16, 17 significant digits (%g style) that reads
- * back to x, into out (QD_SIM_NUMBER_MAX bytes); returns the length.  A row
- * per step of a long run makes this the CLI's hot spot: exact integer
- * digits for the common range, snprintf/strtod otherwise. */
-#define QD_SIM_NUMBER_MAX 40
-size_t cli_sim_format(char *out, double x);
 
 /* Load, --set, derive, compile, initial values, outputs and events, the
  * method and options.  Returns an exit status; prints its diagnostics. */

@@ -19,17 +19,7 @@ double cli_state_value(const qd_expr *number) {
 }
 
 void cli_state_put_double(qd_buf *b, double x) {
-    char s[40];
-    if (x == 0) {
-        qd_buf_puts(b, "0");
-        return;
-    }
-    for (int p = 1; p <= 17; p++) {
-        snprintf(s, sizeof s, "%.*g", p, x);
-        if (strtod(s, NULL) == x)
-            break;
-    }
-    qd_buf_puts(b, s);
+    qd_buf_put_double(b, x == 0 ? 0.0 : x); /* -0 reads "0" */
 }
 
 void cli_state_put_result(qd_buf *b, double x) {

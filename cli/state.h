@@ -13,7 +13,8 @@
 #include "qdot/model.h"
 
 /* A point of the state space: a value for each coordinate q_j, velocity q'_j,
- * the time t and each parameter, in that order. */
+ * the time t and each parameter, in that order (simulate appends the
+ * momenta of a model given by H). */
 typedef struct cli_state {
     size_t n;
     const qd_expr **syms;

@@ -25,9 +25,17 @@ QD_API qd_prog *qd_prog_new(qd_ctx *ctx, size_t nin, const qd_expr *const *input
                      size_t nout, const qd_expr *const *outputs);
 QD_API void qd_prog_free(qd_prog *p);
 
-/* out[i] = outputs[i](in).  The program keeps its scratch space, so one
- * program must not run on two threads at once. */
+/* out[i] = outputs[i](in).  The program keeps its own scratch space, so
+ * one program must not run on two threads at once through this call. */
 QD_API void qd_prog_run(qd_prog *p, const double *in, double *out);
+
+/* Thread safety: a compiled program is immutable.  Any number of threads
+ * may evaluate it at once with qd_prog_eval, each with its own workspace
+ * of qd_prog_work_size(p) doubles, prepared once by qd_prog_work_init
+ * (it holds the program's constants and intermediate values). */
+QD_API size_t qd_prog_work_size(const qd_prog *p);
+QD_API void qd_prog_work_init(const qd_prog *p, double *work);
+QD_API void qd_prog_eval(const qd_prog *p, double *work, const double *in, double *out);
 
 QD_API size_t qd_prog_ninstr(const qd_prog *p);  /* instructions after sharing */
 

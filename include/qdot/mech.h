@@ -129,11 +129,27 @@ QD_API qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops);
  * constraints).  QD_ERR_SINGULAR when M (or the saddle-point matrix) is
  * singular at that state, with a message naming the constraints when they
  * are redundant or inconsistent there (M and f are still filled).  The
- * entries are compiled on the first call and kept in e, so one qd_eom must
- * not be evaluated on two threads at once. */
+ * entries are compiled on the first call and kept in e with one workspace,
+ * so qd_eom_eval is for one thread; threads use qd_eom_prog_eval. */
 QD_API qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
                       const double *vals, double *M, double *f, double *qdd, double *lambda,
                       double *R);
+
+/* Thread safety: compile once, evaluate anywhere.  qd_eom_compile makes an
+ * immutable program (e must outlive it and not change); any number of
+ * threads may then call qd_eom_prog_eval on it at once, each with its own
+ * workspace (qd_eom_work_new, used by one thread at a time) and its own
+ * context for messages.  qd_eom_prog_eval is qd_eom_eval's computation.
+ * NULL on failure, reason in ctx (the thread's own for qd_eom_work_new). */
+typedef struct qd_eom_prog qd_eom_prog;
+typedef struct qd_eom_work qd_eom_work;
+QD_API qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e);
+QD_API void qd_eom_prog_free(qd_eom_prog *p);
+QD_API qd_eom_work *qd_eom_work_new(qd_ctx *ctx, const qd_eom_prog *p);
+QD_API void qd_eom_work_free(qd_eom_work *w);
+QD_API qd_status qd_eom_prog_eval(qd_ctx *ctx, const qd_eom_prog *p, qd_eom_work *w,
+                                  size_t nvals, const qd_expr *const *syms, const double *vals,
+                                  double *M, double *f, double *qdd, double *lambda, double *R);
 
 /* The Cartesian force F that constraint `con` (by name) exerts at the point
  * r (r[0..2] in the model's coordinates, parameters and t), at one state

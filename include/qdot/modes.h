@@ -89,6 +89,18 @@ QD_API qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_resu
 QD_API void qd_linear_free(qd_linear *l);
 QD_API void qd_modes_result_free(qd_modes_result *r);
 
+/* Relative distance (against the largest |w^2|) under which two w^2 of a
+ * conservative result are one repeated eigenvalue: LAPACK's symmetric
+ * solver returns a k-fold w^2 as k values that differ by round-off (the
+ * ring of three masses: 3k/2m twice, 0 three times). */
+#define QD_MODES_REPEAT_TOL 1e-7
+
+/* The multiplicity of mode j's w^2: how many of r->omega2 (j included)
+ * are the same eigenvalue; their shapes span its eigenspace (one
+ * M-orthonormal basis of it, not unique).  0 for j out of range or a
+ * result that is not conservative. */
+QD_API size_t qd_modes_multiplicity(const qd_modes_result *r, size_t j);
+
 /* The symbolic stiffness and mass matrices at a point given symbolically:
  * K_jk = -df_j/dq_k and M_jk with q = q0[j] (expressions, e.g. 0 or pi) and
  * q' = 0, each simplified; parameters stay symbols.  Kout, Mout: n*n. */

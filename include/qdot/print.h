@@ -34,6 +34,16 @@ QD_API void qd_buf_printf(qd_buf *b, const char *fmt, ...)
     ;
 QD_API const char *qd_buf_str(const qd_buf *b); /* "" when empty */
 
+/* x in the fewest significant digits that read back to the same double
+ * (9.81, not 9.8100000000000005; 0.1 + 0.2 is 0.30000000000000004): the
+ * shortest of %.15g, %.16g, %.17g (for a subnormal of any %.Ng), into
+ * out (QD_DOUBLE_MAX bytes with the NUL); returns the length.  -0 is "-0",
+ * infinities and NaN as printf writes them.  Pure: any thread may call it. */
+#define QD_DOUBLE_MAX 40
+QD_API size_t qd_double_format(char *out, double x);
+/* The same appended to b. */
+QD_API void qd_buf_put_double(qd_buf *b, double x);
+
 typedef enum qd_format {
     QD_FMT_TEXT,  /* the model language's syntax; qd_parse reads it back to the same node */
     QD_FMT_LATEX, /* q' as \dot{q}, q'' as \ddot{q} */

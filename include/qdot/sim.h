@@ -52,11 +52,34 @@ QD_API bool qd_sim_method_adaptive(qd_sim_method m);               /* step size 
 
 typedef struct qd_sim qd_sim;
 
+/* Thread safety.  Building a qd_sim (qd_sim_new, qd_sim_add_output,
+ * qd_sim_add_event, qd_sim_set_native) and qd_sim_compile happen on one
+ * thread.  After qd_sim_compile the qd_sim is immutable: any number of
+ * threads may run it at once with qd_sim_run_with, each passing its own
+ * context (messages) and getting its own workspace; the model, e and the
+ * context the qd_sim was made with are only read.  qd_sim_run is the
+ * one-thread convenience: it compiles when needed and records the
+ * per-constraint residuals in s (qd_sim_constraint_error). */
+
 /* Compile the equations e of model m (e from qd_eom_derive, without
  * eliminated coordinates; parameters at the model's values, so apply --set
  * to the model first).  e and m must outlive the qd_sim.  NULL on failure,
  * reason in ctx. */
 QD_API qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
+
+/* Compile the Hamilton's equations of a model given by H (`momenta`,
+ * `H = ...`) directly, y = (q, p):
+ *
+ *     q' = dH/dp,   p' = -dH/dq + Q - dD/dq'  (D at q' = dH/dp),
+ *
+ * which need no Lagrangian, so H need not be regular (d^2H/dp^2 may be
+ * singular: H = p x, H = c |p|).  Every method integrates (q, p); the
+ * columns are those of qd_sim_columns, the momenta under their names in
+ * `momenta`, the energy H.  Outputs and events are expressions in q, the
+ * momenta, the velocities (replaced by dH/dp), t and the parameters.  m
+ * must outlive the qd_sim; NULL on failure (a model not given by H,
+ * constraints), reason in ctx. */
+QD_API qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m);
 QD_API void qd_sim_free(qd_sim *s);
 
 /* Extra output columns: an expression in the coordinates, velocities, t and
@@ -89,6 +112,8 @@ QD_API bool qd_sim_conservative(const qd_sim *s);/* no t in L, no forces, no dis
  * conservative systems, dop853 otherwise. */
 QD_API qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step);
 
+#define QD_SIM_MAX_STEPS ((size_t)100000000) /* 1e8: the default of max_steps */
+
 typedef struct qd_sim_opts {
     qd_sim_method method;
     double t0, t_end;
@@ -98,8 +123,16 @@ typedef struct qd_sim_opts {
     bool fixed;          /* dopri5/dop853 with the constant step dt, no control */
     double rtol, atol;   /* adaptive methods; 0 gives 1e-10, 1e-12 */
     bool no_project;     /* constrained systems: skip the projection */
-    size_t max_steps;    /* 0: no limit */
+    /* The most steps a run may take, 0 for QD_SIM_MAX_STEPS.  A fixed step
+     * that needs more steps from t0 to t_end (or an output grid dt with
+     * more rows) is refused before the run (QD_ERR_ARG, naming the count);
+     * an adaptive run that reaches it stops with QD_ERR_NUMERIC. */
+    size_t max_steps;
     const double *q0, *qd0; /* n initial coordinates and velocities */
+    /* A system made from H (qd_sim_new_hamilton): n initial momenta, or
+     * NULL to find them from qd0 (dH/dp = q', solved by Newton's method:
+     * QD_ERR_SINGULAR when d^2H/dp^2 is singular, as for H = p x). */
+    const double *p0;
 } qd_sim_opts;
 
 typedef struct qd_sim_stats {
@@ -125,6 +158,17 @@ QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
  * count; names[i] are owned by s. */
 QD_API size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
 
+/* QD_OK when opts are valid on their own: method, times, the step, the
+ * step count against max_steps, tolerances; else QD_ERR_ARG with the
+ * reason in ctx.  qd_sim_run checks the same, then whether the method can
+ * take the system, before it starts. */
+QD_API qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *opts);
+
+/* Compile the outputs and events (after the last add): from here on s is
+ * immutable.  Idempotent.  A failure is recorded in s's context. */
+QD_API qd_status qd_sim_compile(qd_sim *s);
+QD_API bool qd_sim_compiled(const qd_sim *s);
+
 /* Receives every row (event -1: a sample; else the index of the event in
  * the order added).  Returning nonzero ends the run early (QD_OK). */
 typedef int (*qd_sim_sink)(void *data, int event, const double *row);
@@ -138,6 +182,13 @@ typedef int (*qd_sim_sink)(void *data, int event, const double *row);
  * missing step or a method that cannot take the system is QD_ERR_ARG. */
 QD_API qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *opts, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final);
+
+/* qd_sim_run on a compiled s (QD_ERR_ARG if not compiled) that other
+ * threads may be running at the same time; failures are recorded in ctx,
+ * which is this thread's own.  The sink runs on the calling thread. */
+QD_API qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *opts,
+                                 qd_sim_sink sink, void *data, qd_sim_stats *stats,
+                                 double *final);
 
 #ifdef __cplusplus
 }

@@ -4,6 +4,7 @@
 #ifndef QD_CODEGEN_CG_H
 #define QD_CODEGEN_CG_H
 
+#include "angles.h"
 #include "qdot/codegen.h"
 
 /* The C of e's equations.  embed: one self-contained file (the header's
@@ -11,12 +12,6 @@
  * it; otherwise c includes "<prefix>.h" and h (not NULL) receives it. */
 qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                       bool embed, qd_buf *c, qd_buf *h);
-
-/* Rewrite sin/cos of a difference or sum of two coordinates,
- * sin(a - b) = sin a cos b - cos a sin b, over the outputs exprs[0..n) in
- * place, when that leaves fewer sine and cosine calls in the whole set (the
- * n-link pendulum: n(n-1) calls become 2n).  *applied says whether it did. */
-qd_status qd__cg_angle_sums(qd_ctx *ctx, size_t n, const qd_expr **exprs, bool *applied);
 
 /* The generated file's dense solvers (LU with partial pivoting, Cholesky
  * with an LU fallback), for nk unknowns; appended to out. */

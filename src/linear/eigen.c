@@ -258,6 +258,22 @@ done:
     return st;
 }
 
+size_t qd_modes_multiplicity(const qd_modes_result *r, size_t j) {
+    if (!r->conservative || j >= r->n)
+        return 0;
+    double big = 0;
+    for (size_t k = 0; k < r->n; k++)
+        big = fmax(big, fabs(r->omega2[k]));
+    /* omega2 ascends, so a repeated eigenvalue is a run of neighbours: walk
+     * out from j while each next value is within the tolerance of j's */
+    size_t lo = j, hi = j;
+    while (lo > 0 && fabs(r->omega2[lo - 1] - r->omega2[j]) <= QD_MODES_REPEAT_TOL * big)
+        lo--;
+    while (hi + 1 < r->n && fabs(r->omega2[hi + 1] - r->omega2[j]) <= QD_MODES_REPEAT_TOL * big)
+        hi++;
+    return hi - lo + 1;
+}
+
 qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out) {
     memset(out, 0, sizeof *out);
     size_t n = lin->n, nn = n * n;

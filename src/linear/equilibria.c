@@ -428,15 +428,25 @@ void qd_equilibria_free(qd_equilibria *r) {
     memset(r, 0, sizeof *r);
 }
 
-static size_t g_n; /* for the comparison below (single-threaded qsort) */
-static int by_q(const void *pa, const void *pb) {
-    const qd_equilibrium *a = pa, *b = pb;
-    for (size_t j = 0; j < g_n; j++) {
+static int by_q(size_t n, const qd_equilibrium *a, const qd_equilibrium *b) {
+    for (size_t j = 0; j < n; j++) {
         double d = a->q[j] - b->q[j];
         if (fabs(d) > 1e-9 * (1 + fabs(a->q[j])))
             return d < 0 ? -1 : 1;
     }
     return 0;
+}
+
+/* Stable insertion sort by q: a few points, and qsort's comparison would
+ * need n in a global, which two threads would share. */
+static void sort_by_q(size_t n, qd_equilibrium *pts, size_t count) {
+    for (size_t i = 1; i < count; i++) {
+        qd_equilibrium x = pts[i];
+        size_t k = i;
+        for (; k > 0 && by_q(n, &pts[k - 1], &x) > 0; k--)
+            pts[k] = pts[k - 1];
+        pts[k] = x;
+    }
 }
 
 /* A null direction of J along which F stays 0: not an isolated root. */
@@ -505,8 +515,7 @@ static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const
         if (!out->continuum && p->nzero && on_continuum(L, p->q, ftol))
             out->continuum = true;
     }
-    g_n = n;
-    qsort(out->pts, out->count, sizeof *out->pts, by_q);
+    sort_by_q(n, out->pts, out->count);
     return QD_OK;
 }
 

@@ -13,7 +13,7 @@
  */
 #include "linear.h"
 
-#include "mech/mech.h"
+#include "num/num.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -65,7 +65,7 @@ static qd_status compile(qd_ctx *ctx, qd__lin *L) {
     memcpy(all + n, L->J, n * n * sizeof *all);
     memcpy(all + n + n * n, L->B, n * n * sizeof *all);
     memcpy(all + n + 2 * n * n, L->M, n * n * sizeof *all);
-    L->inputs = qd__inputs(ctx, nout, all, &L->nin);
+    L->inputs = qd__num_inputs(ctx, nout, all, &L->nin);
     if (L->inputs)
         L->prog = qd_prog_new(ctx, L->nin, L->inputs, nout, all);
     free(all);

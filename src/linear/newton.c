@@ -12,7 +12,7 @@
  */
 #include "linear.h"
 
-#include "mech/mech.h"
+#include "num/num.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -89,7 +89,7 @@ bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
         }
         for (size_t i = 0; i < n; i++)
             A[i * n + i] += lambda * (A[i * n + i] + 1e-12 * (1 + A[i * n + i]));
-        if (qd__gauss(n, A, g, 1e-15, pc, NULL, NULL) < n) {
+        if (qd__num_rank(n, A, g, 1e-15, pc, NULL, NULL) < n) {
             lambda *= 10;
             continue;
         }

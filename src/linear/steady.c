@@ -13,6 +13,8 @@
  */
 #include "steady.h"
 
+#include "num/num.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -273,39 +275,6 @@ static double norm2(const double *v, size_t n) {
     return s;
 }
 
-/* Solve the nu x nu system A d = b (Gaussian elimination, partial
- * pivoting); false when singular. */
-static bool solve_small(size_t n, double *A, double *b) {
-    for (size_t k = 0; k < n; k++) {
-        size_t p = k;
-        for (size_t i = k + 1; i < n; i++)
-            if (fabs(A[i * n + k]) > fabs(A[p * n + k]))
-                p = i;
-        if (A[p * n + k] == 0)
-            return false;
-        for (size_t j = 0; j < n; j++) {
-            double t = A[k * n + j];
-            A[k * n + j] = A[p * n + j];
-            A[p * n + j] = t;
-        }
-        double t = b[k];
-        b[k] = b[p];
-        b[p] = t;
-        for (size_t i = k + 1; i < n; i++) {
-            double l = A[i * n + k] / A[k * n + k];
-            for (size_t j = k; j < n; j++)
-                A[i * n + j] -= l * A[k * n + j];
-            b[i] -= l * b[k];
-        }
-    }
-    for (size_t k = n; k-- > 0;) {
-        for (size_t j = k + 1; j < n; j++)
-            b[k] -= A[k * n + j] * b[j];
-        b[k] /= A[k * n + k];
-    }
-    return true;
-}
-
 /* One Levenberg-Marquardt step from u: d solves (J^T J + mu diag(J^T J)) d = -J^T F. */
 static bool lm_step(const search *S, const double *F, const double *J, double mu, double *A,
                     double *d) {
@@ -324,7 +293,7 @@ static bool lm_step(const search *S, const double *F, const double *J, double mu
         if (A[i * nu + i] == 0)
             A[i * nu + i] = mu;
     }
-    return solve_small(nu, A, d);
+    return qd__num_solve(nu, A, d, 0);
 }
 
 /* The scale of residual k, so that "zero" is relative to the size of the

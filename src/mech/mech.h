@@ -9,23 +9,33 @@
 #include "qdot/eval.h"
 #include "qdot/mech.h"
 
-/* The private part of a qd_eom (its priv field): M and f compiled once,
- * with every free symbol of M and f as an input, so a state that leaves a
- * symbol out gives it the value 0. */
-typedef struct qd__eom_num {
+/* A compiled qd_eom (eval.c): immutable once made.  M and f compiled
+ * once, with every free symbol of M and f as an input, so a state that
+ * leaves a symbol out gives it the value 0. */
+struct qd_eom_prog {
+    const qd_eom *e;
     qd_prog *prog; /* outputs: M (n*n, row-major), f (n), then with m
                       constraints A (m*n), b (m) and the constraints' own
                       expressions g (m): qd__out_* give the offsets */
     size_t nin, nout;
     const qd_expr **inputs;
-    double *in, *out; /* nin and n*n + n doubles */
+};
+
+/* One thread's workspace for a qd_eom_prog: one block of doubles. */
+struct qd_eom_work {
+    const qd_eom_prog *p;
+    double *in, *out, *regs; /* nin, nout, the program's registers */
+    double *K;               /* (n+m)^2 + (n+m): the solver's */
+};
+
+/* The private part of a qd_eom (its priv field): qd_eom_eval's compiled
+ * program and workspace, made on first use (one thread). */
+typedef struct qd__eom_num {
+    qd_eom_prog *prog;
+    qd_eom_work *work;
 } qd__eom_num;
 
-/* Every free symbol of exprs[0..n), each once, in a malloc'd array (NULL
- * on failure). */
-const qd_expr **qd__inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin);
-
-/* Offsets of the compiled outputs (see qd__eom_num). */
+/* Offsets of the compiled outputs (see qd_eom_prog). */
 static inline size_t qd__out_A(const qd_eom *e) { return e->n * e->n + e->n; }
 static inline size_t qd__out_b(const qd_eom *e) { return qd__out_A(e) + e->ncon * e->n; }
 static inline size_t qd__out_g(const qd_eom *e) { return qd__out_b(e) + e->ncon; }
@@ -65,15 +75,6 @@ qd_status qd__check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T);
  * step cancelled; NULL on failure (reason in ctx). */
 const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *A);
 
-/* Gaussian elimination with partial pivoting on A (n*n, row-major, in
- * place); pc is scratch for n indices.  A column whose best pivot is not
- * above tol times the matrix norm is skipped and marked in free_col (may be
- * NULL).  Returns the rank; when it is n and b is not NULL, b is overwritten
- * by the solution of A x = b.  With a deficient rank and null and free_col
- * not NULL, null receives a vector of the null space. */
-size_t qd__gauss(size_t n, double *A, double *b, double tol, size_t *pc, bool *free_col,
-                 double *null);
-
 /* ---- constraints ---------------------------------------------------------- */
 
 /* What Lagrange's equations are derived from: a model's content, or that
@@ -112,11 +113,12 @@ bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *
 qd_status qd__con_report(qd_ctx *ctx, const qd_eom *e, const double *mu, bool inconsistent,
                          const char *where);
 
-/* Solve [M -A^T; A 0] [x; lambda] = [f; b] from the compiled outputs out;
- * x (n) and lambda (m) may be NULL, R (n) = A^T lambda may be NULL.
- * QD_ERR_SINGULAR with a message when the matrix is singular. */
-qd_status qd__saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, double *x,
-                           double *lambda, double *R);
+/* Solve [M -A^T; A 0] [x; lambda] = [f; b] from the compiled outputs out,
+ * in the scratch K ((n+m)^2 + n+m doubles); x (n) and lambda (m) may be
+ * NULL, R (n) = A^T lambda may be NULL.  QD_ERR_SINGULAR with a message
+ * when the matrix is singular. */
+qd_status qd__saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, double *K,
+                           double *x, double *lambda, double *R);
 
 /* Classify one Pfaffian constraint sum_j a_j q'_j + a0 = 0 from c->a[0..n)
  * and c->a0 (q the coordinates, t = qd_time): set c->kind

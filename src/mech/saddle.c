@@ -5,7 +5,8 @@
  *     [ M  -A^T ] [ q''    ]   [ f ]
  *     [ A   0   ] [ lambda ] = [ b ]
  *
- * (Desloge, seed C5), solved by the dense solver of lu.c, and the diagnosis
+ * (Desloge, seed C5), assembled and solved by the numerics home (src/num),
+ * and the diagnosis
  * when it is singular.  For M positive definite on the motions A allows, the
  * matrix is singular exactly when A has a rank below its row count: some
  * combination mu of the constraint rows vanishes (A^T mu = 0), so the
@@ -15,6 +16,7 @@
  */
 #include "mech.h"
 
+#include "num/num.h"
 #include "qdot/print.h"
 
 #include <math.h>
@@ -35,7 +37,7 @@ bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *
         for (size_t i = 0; i < n; i++)
             for (size_t k = 0; k < m; k++)
                 S[i * s + k] = A[k * n + i];
-        deficient = qd__gauss(s, S, NULL, tol, pc, free_col, null) < m;
+        deficient = qd__num_rank(s, S, NULL, tol, pc, free_col, null) < m;
         double top = 0;
         for (size_t k = 0; deficient && k < m; k++)
             top = fmax(top, fabs(null[k]));
@@ -98,22 +100,8 @@ static bool combination_nonzero(size_t m, const double *mu, const double *v) {
 }
 
 static void build(const qd_eom *e, const double *out, double *K, double *rhs) {
-    size_t n = e->n, m = e->ncon, s = n + m;
-    const double *M = out, *f = out + n * n, *A = out + qd__out_A(e), *b = out + qd__out_b(e);
-    for (size_t i = 0; i < s * s; i++)
-        K[i] = 0;
-    for (size_t i = 0; i < n; i++) {
-        for (size_t j = 0; j < n; j++)
-            K[i * s + j] = M[i * n + j];
-        rhs[i] = f[i];
-    }
-    for (size_t k = 0; k < m; k++) {
-        for (size_t j = 0; j < n; j++) {
-            K[j * s + n + k] = -A[k * n + j];
-            K[(n + k) * s + j] = A[k * n + j];
-        }
-        rhs[n + k] = b[k];
-    }
+    qd__num_saddle(e->n, e->ncon, out, out + e->n * e->n, out + qd__out_A(e), out + qd__out_b(e),
+                   K, rhs);
 }
 
 static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
@@ -133,28 +121,21 @@ static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
     return st;
 }
 
-qd_status qd__saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, double *x,
-                           double *lambda, double *R) {
+qd_status qd__saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, double *K,
+                           double *x, double *lambda, double *R) {
     size_t n = e->n, m = e->ncon, s = n + m;
-    double *K = malloc((s * s + s + 1) * sizeof *K);
-    size_t *pc = malloc((s + 1) * sizeof *pc);
-    qd_status st = K && pc ? QD_OK : QD_ERR_NOMEM;
-    if (st == QD_OK) {
-        double *rhs = K + s * s;
-        build(e, out, K, rhs);
-        if (qd__gauss(s, K, rhs, SOLVE_TOL * (double)s, pc, NULL, NULL) < s)
-            st = singular(ctx, e, out);
-        for (size_t i = 0; st == QD_OK && x && i < n; i++)
-            x[i] = rhs[i];
-        for (size_t k = 0; st == QD_OK && lambda && k < m; k++)
-            lambda[k] = rhs[n + k];
-        for (size_t j = 0; st == QD_OK && R && j < n; j++) {
-            R[j] = 0;
-            for (size_t k = 0; k < m; k++)
-                R[j] += out[qd__out_A(e) + k * n + j] * rhs[n + k];
-        }
+    double *rhs = K + s * s;
+    build(e, out, K, rhs);
+    if (!qd__num_solve(s, K, rhs, SOLVE_TOL * (double)s))
+        return singular(ctx, e, out);
+    for (size_t i = 0; x && i < n; i++)
+        x[i] = rhs[i];
+    for (size_t k = 0; lambda && k < m; k++)
+        lambda[k] = rhs[n + k];
+    for (size_t j = 0; R && j < n; j++) {
+        R[j] = 0;
+        for (size_t k = 0; k < m; k++)
+            R[j] += out[qd__out_A(e) + k * n + j] * rhs[n + k];
     }
-    free(K);
-    free(pc);
-    return st;
+    return QD_OK;
 }

@@ -14,6 +14,7 @@
  */
 #include "mech.h"
 
+#include "num/num.h"
 #include "qdot/print.h"
 
 #include <math.h>
@@ -97,18 +98,9 @@ static bool singular_at(const qd_eom *e, double *out, double *K, size_t *pc, boo
                         double *null) {
     size_t n = e->n, s = n + e->ncon;
     if (!e->ncon)
-        return qd__gauss(n, out, NULL, RANK_TOL, pc, free_col, null) < n;
-    for (size_t i = 0; i < s * s; i++)
-        K[i] = 0;
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < n; j++)
-            K[i * s + j] = out[i * n + j];
-    for (size_t k = 0; k < e->ncon; k++)
-        for (size_t j = 0; j < n; j++) {
-            K[j * s + n + k] = -out[qd__out_A(e) + k * n + j];
-            K[(n + k) * s + j] = out[qd__out_A(e) + k * n + j];
-        }
-    return qd__gauss(s, K, NULL, RANK_TOL, pc, free_col, NULL) < s;
+        return qd__num_rank(n, out, NULL, RANK_TOL, pc, free_col, null) < n;
+    qd__num_saddle(n, e->ncon, out, NULL, out + qd__out_A(e), NULL, K, NULL);
+    return qd__num_rank(s, K, NULL, RANK_TOL, pc, free_col, NULL) < s;
 }
 
 /* The constraints' part of a singular saddle-point matrix, at the outputs
@@ -158,7 +150,7 @@ static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, q
         st = constraint_check(ctx, e, out);
         if (st == QD_OK && !zero_rows(ctx, e, T, pick)) {
             qd_prog_run(p, in, out); /* M again: singular_at overwrote it */
-            if (qd__gauss(n, out, NULL, RANK_TOL, pc, free_col, null) < n)
+            if (qd__num_rank(n, out, NULL, RANK_TOL, pc, free_col, null) < n)
                 report_null(ctx, e, T, null, pick);
             else
                 qd_ctx_error(ctx, QD_ERR_SINGULAR,
@@ -189,10 +181,10 @@ static qd_status symbolic_check(qd_ctx *ctx, const qd_eom *e) {
 static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick) {
     qd__eom_num *num = e->priv;
     if (qd__eom_compile(ctx, e) == QD_OK)
-        return numeric_check(ctx, e, T, num->prog, num->nin, num->nout, pick);
+        return numeric_check(ctx, e, T, num->prog->prog, num->prog->nin, num->prog->nout, pick);
     qd_ctx_clear_error(ctx);
     size_t nin, nn = e->n * e->n;
-    const qd_expr **in = qd__inputs(ctx, nn, e->M, &nin);
+    const qd_expr **in = qd__num_inputs(ctx, nn, e->M, &nin);
     qd_prog *p = in ? qd_prog_new(ctx, nin, in, nn, e->M) : NULL;
     qd_status st;
     if (p) {

@@ -1,6 +1,6 @@
 /*
  * src/mech/solve.c - M q'' = f solved: symbolically by fraction-free
- * elimination, numerically by a compiled program and a dense solver.
+ * elimination (numerically: eval.c).
  *
  * Fraction-free (Bareiss) elimination: after step k every entry is a
  * determinant of the original entries, so the division by the previous
@@ -9,11 +9,10 @@
  * the entries polynomial; only the finished accelerations are simplified.
  * The solution is x_i = N_i / det M with N_i (Cramer's numerators) found by
  * a fraction-free back substitution.  With constraints the same elimination
- * runs on the saddle-point matrix [M -A^T; A 0] (saddle.c has its numbers).
+ * runs on the saddle-point matrix [M -A^T; A 0] (eval.c and saddle.c have
+ * its numbers).
  */
 #include "mech.h"
-
-#include "base/ptrmap.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -224,157 +223,4 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
         return st;
     }
     return QD_OK;
-}
-
-/* ---- numbers ------------------------------------------------------------ */
-
-static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const qd_expr ***all,
-                         size_t *len, size_t *cap) {
-    size_t k = qd_free_symbols(ctx, x, NULL, 0);
-    const qd_expr **syms = malloc((k ? k : 1) * sizeof *syms);
-    if (!syms)
-        return false;
-    qd_free_symbols(ctx, x, syms, k);
-    bool ok = true;
-    for (size_t i = 0; ok && i < k; i++) {
-        if (qd_ptrmap_has(seen, syms[i]))
-            continue;
-        if (*len == *cap) {
-            *cap = *cap ? 2 * *cap : 16;
-            const qd_expr **grown = realloc(*all, *cap * sizeof *grown);
-            ok = grown != NULL;
-            *all = grown ? grown : *all;
-        }
-        ok = ok && qd_ptrmap_put(seen, syms[i], (void *)syms[i]);
-        if (ok)
-            (*all)[(*len)++] = syms[i];
-    }
-    free(syms);
-    return ok;
-}
-
-const qd_expr **qd__inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin) {
-    qd_ptrmap seen = QD_PTRMAP_INIT;
-    const qd_expr **all = NULL;
-    size_t len = 0, cap = 0;
-    bool ok = true;
-    for (size_t i = 0; ok && i < n; i++)
-        ok = push_symbols(ctx, exprs[i], &seen, &all, &len, &cap);
-    qd_ptrmap_free(&seen);
-    if (ok && !all)
-        all = malloc(sizeof *all);
-    if (!ok || !all) {
-        free(all);
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory compiling the equations of motion");
-        return NULL;
-    }
-    *nin = len;
-    return all;
-}
-
-void qd__eom_num_free(qd__eom_num *num) {
-    if (!num)
-        return;
-    qd_prog_free(num->prog);
-    free(num->inputs);
-    free(num->in);
-    free(num->out);
-    num->prog = NULL;
-    num->inputs = NULL;
-    num->in = num->out = NULL;
-}
-
-/* Every output of the program, in the order of qd__out_*. */
-static const qd_expr **outputs(const qd_eom *e, size_t nout) {
-    size_t n = e->n, m = e->ncon;
-    const qd_expr **outs = malloc((nout + 1) * sizeof *outs);
-    if (!outs)
-        return NULL;
-    for (size_t i = 0; i < n * n; i++)
-        outs[i] = e->M[i];
-    for (size_t i = 0; i < n; i++)
-        outs[n * n + i] = e->f[i];
-    for (size_t i = 0; i < m * n; i++)
-        outs[qd__out_A(e) + i] = e->A[i];
-    for (size_t k = 0; k < m; k++) {
-        outs[qd__out_b(e) + k] = e->b[k];
-        outs[qd__out_g(e) + k] = e->con[k].expr;
-    }
-    return outs;
-}
-
-qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
-    qd__eom_num *num = e->priv;
-    size_t nout = qd__out_len(e);
-    if (num->prog)
-        return QD_OK;
-    const qd_expr **outs = outputs(e, nout);
-    if (!outs)
-        return QD_ERR_NOMEM;
-    num->nout = nout;
-    num->inputs = qd__inputs(ctx, nout, outs, &num->nin);
-    if (num->inputs)
-        num->prog = qd_prog_new(ctx, num->nin, num->inputs, nout, outs);
-    free(outs);
-    num->in = malloc((num->nin + 1) * sizeof *num->in);
-    num->out = malloc((nout + 1) * sizeof *num->out);
-    if (!num->prog || !num->in || !num->out) {
-        qd__eom_num_free(num);
-        return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-    }
-    return QD_OK;
-}
-
-/* The inputs in the program's order; symbols M and f do not have are
- * ignored, and the ones not given stay 0. */
-static void fill_inputs(qd__eom_num *num, size_t nvals, const qd_expr *const *syms,
-                        const double *vals) {
-    for (size_t i = 0; i < num->nin; i++) {
-        num->in[i] = 0;
-        for (size_t k = 0; k < nvals; k++)
-            if (syms[k] == num->inputs[i])
-                num->in[i] = vals[k];
-    }
-}
-
-static qd_status solve_numeric(qd_ctx *ctx, const qd_eom *e, const double *Mv, const double *fv,
-                               double *qdd) {
-    size_t n = e->n;
-    double *A = malloc((n * n + 1) * sizeof *A);
-    size_t *pc = malloc((n + 1) * sizeof *pc);
-    qd_status st = A && pc ? QD_OK : QD_ERR_NOMEM;
-    if (st == QD_OK) {
-        for (size_t i = 0; i < n * n; i++)
-            A[i] = Mv[i];
-        for (size_t i = 0; i < n; i++)
-            qdd[i] = fv[i];
-        if (qd__gauss(n, A, qdd, 1e-12 * (double)n, pc, NULL, NULL) < n) {
-            st = QD_ERR_SINGULAR;
-            qd_ctx_error(ctx, st, "the mass matrix is singular at this state");
-        }
-    }
-    free(A);
-    free(pc);
-    return st;
-}
-
-qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
-                      const double *vals, double *M, double *f, double *qdd, double *lambda,
-                      double *R) {
-    qd__eom_num *num = e->priv;
-    qd_status st = qd__eom_compile(ctx, e);
-    if (st != QD_OK)
-        return st;
-    size_t n = e->n;
-    fill_inputs(num, nvals, syms, vals);
-    qd_prog_run(num->prog, num->in, num->out);
-    for (size_t i = 0; M && i < n * n; i++)
-        M[i] = num->out[i];
-    for (size_t i = 0; f && i < n; i++)
-        f[i] = num->out[n * n + i];
-    if (e->ncon)
-        return qdd || lambda || R ? qd__saddle_solve(ctx, e, num->out, qdd, lambda, R) : QD_OK;
-    for (size_t i = 0; R && i < n; i++)
-        R[i] = 0;
-    return qdd ? solve_numeric(ctx, e, num->out, num->out + n * n, qdd) : QD_OK;
 }

@@ -30,7 +30,8 @@ typedef struct bdf {
 
 static int rhs(realtype t, N_Vector y, N_Vector ydot, void *data) {
     bdf *b = data;
-    qd_status st = qd__rhs(b->it->s, QD__LAG, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    qd_status st =
+        qd__rhs(b->it->s, b->it->form, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
     if (st == QD_OK)
         return 0;
     /* a singular state may be an overshooting trial: let CVODE retry smaller */

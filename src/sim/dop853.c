@@ -138,7 +138,7 @@ static qd_status dense_prep(qd__integ *it, double **K, double *coef) {
                 acc += AX[k][j] * K[j][i];
             ytmp[i] = it->yold[i] + h * acc;
         }
-        qd_status st = qd__rhs(it->s, QD__LAG, it->told + C[13 + k] * h, ytmp, K[13 + k]);
+        qd_status st = qd__rhs(it->s, it->form, it->told + C[13 + k] * h, ytmp, K[13 + k]);
         if (st != QD_OK)
             return st;
     }

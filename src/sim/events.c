@@ -26,7 +26,7 @@ static qd_status g_dense(qd__run *r, size_t k, double t, double *gk) {
     if (st != QD_OK)
         return st;
     qd_sim *s = r->s;
-    qd__aux_eval(s, t, r->ytmp, r->qd);
+    qd__aux_eval(s, t, r->ytmp, qd__second(s, r->ytmp, r->qd));
     *gk = s->aux_out[qd__aux_ev(s) + k];
     return QD_OK;
 }
@@ -40,7 +40,7 @@ static qd_status g_redo(qd__run *r, size_t k, double tau, double *y, double *gk)
     if (st != QD_OK)
         return st;
     qd_sim *s = r->s;
-    qd__aux_eval(s, it->told + tau, y, r->qd);
+    qd__aux_eval(s, it->told + tau, y, qd__second(s, y, r->qd));
     *gk = s->aux_out[qd__aux_ev(s) + k];
     return QD_OK;
 }

@@ -14,7 +14,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/mech.h"
+#include "num/num.h"
 
 #define MAX_ITER 30
 
@@ -33,7 +33,7 @@ static bool normal_solve(qd_sim *s, const double *A, const bool *use, double *r)
     for (size_t i = 0; use && i < m; i++)
         if (!use[i])
             r[i] = 0;
-    return qd__gauss(m, G, r, 1e-13 * (double)m, s->pc, NULL, NULL) == m;
+    return qd__num_rank(m, G, r, 1e-13 * (double)m, s->pc, NULL, NULL) == m;
 }
 
 static qd_status fail(qd_sim *s, double t, const char *what, double res) {

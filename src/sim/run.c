@@ -57,7 +57,7 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
     qd_status st = qd__run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    qd__aux_eval(s, t, y, r->qd);
+    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
     const double *gv = s->aux_out + qd__aux_ev(s), *guard = s->aux_out + qd__aux_guard(s);
     for (size_t k = 0, gi = 0; k < s->nev; k++) {
         if (g)
@@ -81,7 +81,7 @@ typedef struct measure {
 static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool aux) {
     qd_sim *s = r->s;
     size_t n = s->n;
-    const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, r->qd);
+    const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
     ms->dEmax = fmax(ms->dEmax, fabs(hT[0] - ms->E0));
     ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
     if (!s->m)
@@ -112,7 +112,7 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
         measure_at(r, ms, t, y, false);
         return QD_OK;
     }
-    qd__aux_eval(s, t, y, r->qd);
+    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
     const double *aux = s->aux_out;
     row[k++] = t;
     for (size_t j = 0; j < n; j++)
@@ -132,8 +132,24 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
     return QD_OK;
 }
 
-static qd_status check_opts(qd_sim *s, const qd_sim_opts *o) {
-    qd_ctx *ctx = s->ctx;
+static size_t max_steps(const qd_sim_opts *o) {
+    return o->max_steps ? o->max_steps : QD_SIM_MAX_STEPS;
+}
+
+/* A fixed step dt (or an output grid dt) from t0 to t_end: no more steps
+ * (rows) than the maximum, counted in doubles before any loop starts. */
+static qd_status check_count(qd_ctx *ctx, const qd_sim_opts *o, bool fixed) {
+    double count = ceil((o->t_end - o->t0) / o->dt);
+    if (!(o->dt > 0) || !(count > (double)max_steps(o)))
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_ARG,
+                 "%s %.17g from t = %.17g to %.17g asks for %.3g %s, more than the maximum "
+                 "of %zu (raise it with --max-steps)", fixed ? "the step" : "the output step",
+                 o->dt, o->t0, o->t_end, count, fixed ? "steps" : "rows", max_steps(o));
+    return QD_ERR_ARG;
+}
+
+qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
     const char *name = qd_sim_method_name(o->method);
     if (o->method >= QD_SIM_METHOD_COUNT) {
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown integration method");
@@ -152,20 +168,26 @@ static qd_status check_opts(qd_sim *s, const qd_sim_opts *o) {
         qd_ctx_error(ctx, QD_ERR_ARG, "bdf chooses its own steps");
         return QD_ERR_ARG;
     }
+    if (o->rtol < 0 || o->atol < 0 || !isfinite(o->rtol) || !isfinite(o->atol)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "tolerances must be positive");
+        return QD_ERR_ARG;
+    }
+    return check_count(ctx, o, needs_dt);
+}
+
+/* Can the method take this system? */
+static qd_status check_system(const qd_sim *s, const qd_sim_opts *o) {
+    const char *name = qd_sim_method_name(o->method);
     if (splitting(o->method) && !s->m && !s->separable) {
-        qd_ctx_error(ctx, QD_ERR_ARG,
+        qd_ctx_error(s->ctx, QD_ERR_ARG,
                      "%s needs a separable Hamiltonian H = T(p) + V(q) (constant mass "
                      "matrix, no velocity- or time-dependent forces); this H is not "
                      "separable: use gl2, gl4 or gl6", name);
         return QD_ERR_ARG;
     }
     if (splitting(o->method) && s->m) {
-        qd_ctx_error(ctx, QD_ERR_ARG,
+        qd_ctx_error(s->ctx, QD_ERR_ARG,
                      "%s cannot integrate a constrained system: use dop853 or gl4", name);
-        return QD_ERR_ARG;
-    }
-    if (o->rtol < 0 || o->atol < 0 || !isfinite(o->rtol) || !isfinite(o->atol)) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "tolerances must be positive");
         return QD_ERR_ARG;
     }
     return QD_OK;
@@ -207,6 +229,14 @@ static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
     size_t n = s->n;
     double *q = it->y, *qd = r->qd;
     memcpy(q, o->q0, n * sizeof *q);
+    if (s->hamilton) {
+        /* Hamilton's equations need the momenta: given, or from q' */
+        if (o->p0) {
+            memcpy(it->y + n, o->p0, n * sizeof *q);
+            return QD_OK;
+        }
+        return qd__hamilton_momenta(s, o->t0, q, o->qd0, it->y + n);
+    }
     memcpy(qd, o->qd0, n * sizeof *qd);
     qd_status st = s->m && !o->no_project ? qd__project(s, o->t0, q, qd) : QD_OK;
     if (st != QD_OK)
@@ -314,9 +344,10 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
         return st;
     bool stop = false;
     while (!stop && !em->stopped && it->t < o->t_end) {
-        if (o->max_steps && it->steps >= o->max_steps) {
-            qd_ctx_error(s->ctx, QD_ERR_NUMERIC, "more than %zu steps before t = %.17g",
-                         o->max_steps, o->t_end);
+        if (it->steps >= max_steps(o)) {
+            qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
+                         "more than %zu steps before t = %.17g (at t = %.17g; raise the "
+                         "maximum with --max-steps)", max_steps(o), o->t_end, it->t);
             return QD_ERR_NUMERIC;
         }
         bool last;
@@ -370,36 +401,31 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
     return make_row(r, NULL, it->t, it->y, r->row);
 }
 
-qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
+/* The run on s, a copy of the compiled system with its own workspace. */
+static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
-    qd_sim_stats dummy;
-    stats = stats ? stats : &dummy;
-    *stats = (qd_sim_stats){0};
-    qd_status st = check_opts(s, o);
+    qd_status st = qd_sim_check_opts(s->ctx, o);
     if (st == QD_OK)
-        st = qd__aux_compile(s);
+        st = check_system(s, o);
     if (st != QD_OK)
         return st;
     qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
                     .dim = 2 * s->n, .t = o->t0, .tend = o->t_end,
                     .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
                     .fixed = o->fixed, .h = o->fixed ? o->dt : 0};
-    it.form = symplectic(o->method) && s->canonical ? QD__HAM : QD__LAG;
+    it.form = s->hamilton || (symplectic(o->method) && s->canonical) ? QD__HAM : QD__LAG;
     qd__run r = {.s = s, .it = &it};
     size_t ncols = qd_sim_columns(s, o->method, NULL, 0);
-    s->evals = 0;
     st = run_alloc(&r, &it, ncols);
     if (st == QD_OK)
         st = initial_state(&r, o);
     if (st == QD_OK)
         st = it.ops->init(&it);
     measure ms = {0};
-    for (size_t c = 0; c < s->m; c++)
-        s->con_err[c] = 0;
     if (st == QD_OK) {
         st = qd__run_velocity(&r, it.t, it.y);
         if (st == QD_OK) {
-            qd__aux_eval(s, it.t, it.y, r.qd);
+            qd__aux_eval(s, it.t, it.y, qd__second(s, it.y, r.qd));
             ms.E0 = s->aux_out[0];
         }
     }
@@ -420,4 +446,43 @@ qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         qd_ctx_error(s->ctx, st, "the integration failed: %s", qd_status_str(st));
     run_free(&r, &it);
     return st;
+}
+
+/* A run on a copy of the compiled system s with its own workspace;
+ * con_err (may be NULL) receives the per-constraint residuals. */
+static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
+                          void *data, qd_sim_stats *stats, double *final, double *con_err) {
+    qd_sim_stats dummy;
+    stats = stats ? stats : &dummy;
+    *stats = (qd_sim_stats){0};
+    qd_sim w = *s;
+    qd_status st = qd__sim_ws_alloc(&w, ctx);
+    if (st == QD_OK)
+        st = run(&w, o, sink, data, stats, final);
+    else
+        qd_ctx_error(ctx, st, "out of memory starting the simulation");
+    for (size_t c = 0; con_err && w.con_err && c < s->m; c++)
+        con_err[c] = w.con_err[c];
+    qd__sim_ws_free(&w);
+    return st;
+}
+
+qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
+                          void *data, qd_sim_stats *stats, double *final) {
+    if (!s->aux_ready) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "a shared simulation is compiled first (qd_sim_compile)");
+        return QD_ERR_ARG;
+    }
+    return run_copy(ctx, s, o, sink, data, stats, final, NULL);
+}
+
+qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
+                     qd_sim_stats *stats, double *final) {
+    qd_status st = qd_sim_compile(s);
+    if (st != QD_OK) {
+        if (stats)
+            *stats = (qd_sim_stats){0};
+        return st;
+    }
+    return run_copy(s->ctx, s, o, sink, data, stats, final, s->con_err_last);
 }

@@ -18,32 +18,35 @@ typedef struct qd__event {
 
 /* Inputs of every program: q (n), q' (n), t, parameters (np), and the
  * constraints' multipliers (m), which only outputs and events read: they are
- * solved for at the state when one of those uses them (aux_lambda). */
+ * solved for at the state when one of those uses them (aux_lambda).
+ *
+ * Two parts.  The compiled system (programs, expressions, names, flags) is
+ * immutable once qd_sim_compile has run: concurrent runs share it.  A run
+ * works on a copy of the struct whose workspace part (qd__sim_ws_alloc:
+ * inputs, outputs and workspaces of the programs, solver scratch, counters,
+ * the context for messages) is its own. */
 struct qd_sim {
-    qd_ctx *ctx;
+    /* ---- compiled ---- */
     const qd_model *model;
     const qd_eom *e;
     size_t n, m, np, nin;
     const qd_expr **in_syms;
-    double *in;
+    double *par;    /* np parameter values */
     qd_prog *acc;   /* M (n*n), f (n), A (m*n), b (m) */
-    double *acc_out;
     qd_prog *con;   /* A (m*n), a0 (m), g (m) */
-    double *con_out;
     qd_prog *mom;   /* canonical: M (n*n), b (n) = dL/dq' at q' = 0 */
-    double *mom_out;
     qd_prog *force; /* canonical: dL/dq + Q - dD/dq' (n) */
-    double *force_out;
-    qd_prog *aux;   /* h, T, g (m), velocity residuals' a0 (m), outputs, events, guards */
-    double *aux_out;
+    qd_prog *aux;   /* h, T, g (m), outputs, events, guards */
     qd_prog *en;    /* h, T alone (the per-step energy measure), when aux has more */
-    double *en_out;
+    size_t acc_n, con_n, mom_n, force_n, aux_n, en_n; /* output counts */
     bool canonical, separable, conservative, has_T;
+    bool hamilton;  /* made from H (hamilton.c): e is NULL, the inputs' second
+                       block holds the momenta, mom gives q' = dH/dp, acc
+                       dH/dp and d^2H/dp^2 (initial momenta from velocities) */
     const qd_expr *h_expr, *T_expr;
     const qd_expr **b_expr, **force_expr;
     bool *holonomic;  /* m */
-    double *con_err;  /* m: the worst residual of each constraint in the last run */
-    /* outputs and events, compiled into aux at the first run */
+    /* outputs and events, compiled into aux by qd_sim_compile */
     size_t nout, nev, nguard, cap_out, cap_ev, cap_guard;
     char **out_name;
     const qd_expr **out_expr, **ev_expr, **guard_expr;
@@ -51,13 +54,44 @@ struct qd_sim {
     bool aux_ready, aux_lambda;
     /* column names of the fixed part: t, q, q', p_q, energy, res_c */
     char **names;
+    qd_sim_native_rhs native;
+    double *con_err_last; /* m: qd_sim_run's last per-constraint residuals */
+    /* ---- a run's own ---- */
+    qd_ctx *ctx;
+    double *in;
+    double *acc_out, *con_out, *mom_out, *force_out, *aux_out, *en_out;
+    double *acc_w, *con_w, *mom_w, *force_w, *aux_w, *en_w;
     /* scratch for the linear solves */
     double *K, *rhs, *tmp;
     size_t *pc;
     size_t evals;
-    qd_sim_native_rhs native;
+    double *con_err;  /* m: the worst residual of each constraint in this run */
     double tnow;  /* for messages */
 };
+
+/* The state's second half as the programs take it: the momenta (y + n)
+ * for a system made from H, the velocities qd otherwise. */
+static inline const double *qd__second(const qd_sim *s, const double *y, const double *qd) {
+    return s->hamilton ? y + s->n : qd;
+}
+
+/* Compile outs into a program over s's inputs (angle sums expanded as the
+ * generated C does); *count = nout.  NULL on failure, reason in ctx. */
+qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count);
+/* The column names and the per-constraint arrays. */
+qd_status qd__sim_names(qd_sim *s);
+/* A system made from H: the velocities in x[0..n) replaced by dH/dp, so
+ * that outputs and events may use them. */
+void qd__hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x);
+/* A system made from H: p at t0 from the velocities qd (Newton on
+ * dH/dp = qd); QD_ERR_SINGULAR when d^2H/dp^2 is singular there. */
+qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const double *qd,
+                               double *p);
+
+/* Give the run copy w (a struct copy of a compiled system) its own
+ * workspace, messages going to ctx; QD_ERR_NOMEM (nothing recorded). */
+qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx);
+void qd__sim_ws_free(qd_sim *w);
 
 /* Offsets in aux_out. */
 static inline size_t qd__aux_out(const qd_sim *s) { return 2 + s->m; }

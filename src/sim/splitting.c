@@ -19,6 +19,8 @@ typedef struct split {
     const double *w;  /* 2m+1 weights in the order applied */
     size_t nw;
     double *F, *v, *qd; /* force at the current q (valid flag), velocity, scratch */
+    double wbuf[15];    /* the symmetric sequences of Y6, Y8: per run, as runs may
+                           share nothing mutable (docs/design.md, thread safety) */
     bool F_valid;
 } split;
 
@@ -30,7 +32,6 @@ static const double Y6[3] = {-1.17767998417887, 0.235573213359357, 0.78451361047
 static const double Y8[7] = {0.102799849391985, -1.96061023297549, 1.93813913762276,
                              -0.158240635368243, -1.44485223686048, 0.253693336566229,
                              0.914844246229740};
-static double W6[7], W8[15];
 
 /* m weights w_1..w_m into the symmetric sequence w_m .. w_1 w_0 w_1 .. w_m */
 static void symmetric(const double *y, size_t m, double *out) {
@@ -131,14 +132,18 @@ static qd_status split_redo(qd__integ *it, double h, double *y) {
 
 static qd_status init2(qd__integ *it) { return init_w(it, W2, 1); }
 static qd_status init4(qd__integ *it) { return init_w(it, W4, 3); }
-static qd_status init6(qd__integ *it) {
-    symmetric(Y6, 3, W6);
-    return init_w(it, W6, 7);
+/* The weights w_m .. w_0 .. w_m from Yoshida's m into the run's own buffer. */
+static qd_status init_yoshida(qd__integ *it, const double *y, size_t m) {
+    qd_status st = init_w(it, NULL, 2 * m + 1);
+    if (st == QD_OK) {
+        split *sp = it->priv;
+        symmetric(y, m, sp->wbuf);
+        sp->w = sp->wbuf;
+    }
+    return st;
 }
-static qd_status init8(qd__integ *it) {
-    symmetric(Y8, 7, W8);
-    return init_w(it, W8, 15);
-}
+static qd_status init6(qd__integ *it) { return init_yoshida(it, Y6, 3); }
+static qd_status init8(qd__integ *it) { return init_yoshida(it, Y8, 7); }
 
 const qd__method qd__verlet = {init2, split_step, NULL, split_redo, split_free};
 const qd__method qd__yoshida4 = {init4, split_step, NULL, split_redo, split_free};

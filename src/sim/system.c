@@ -16,8 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "codegen/cg.h"
-#include "mech/mech.h"
+#include "codegen/angles.h"
+#include "num/num.h"
 
 static double param_value(qd_ctx *ctx, const qd_expr *v) {
     long p, q;
@@ -50,7 +50,7 @@ static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
  * are expanded first when that saves calls to the maths library (the
  * pendulum chain's cos(theta_j - theta_k): see src/codegen/angles.c), the
  * rewrite the generated C uses, so both paths compute the same formulas. */
-static qd_prog *compile(qd_sim *s, size_t nout, const qd_expr *const *outs, double **out) {
+qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count) {
     const qd_expr **x = malloc((nout + 1) * sizeof *x);
     bool applied;
     qd_prog *p = NULL;
@@ -62,12 +62,7 @@ static qd_prog *compile(qd_sim *s, size_t nout, const qd_expr *const *outs, doub
     } else {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
     }
-    *out = malloc((nout + 1) * sizeof **out);
-    if (!*out && p) {
-        qd_prog_free(p);
-        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
-        return NULL;
-    }
+    *count = nout;
     return p;
 }
 
@@ -77,8 +72,8 @@ static qd_status setup_inputs(qd_sim *s) {
     s->np = qd_model_nparams(s->model);
     s->nin = 2 * n + 1 + s->np + s->m;
     s->in_syms = malloc(s->nin * sizeof *s->in_syms);
-    s->in = calloc(s->nin, sizeof *s->in);
-    if (!s->in_syms || !s->in)
+    s->par = calloc(s->np + 1, sizeof *s->par);
+    if (!s->in_syms || !s->par)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
         s->in_syms[j] = e->q[j];
@@ -87,8 +82,8 @@ static qd_status setup_inputs(qd_sim *s) {
     s->in_syms[2 * n] = qd_time(s->ctx);
     for (size_t i = 0; i < s->np; i++) {
         s->in_syms[2 * n + 1 + i] = qd_model_param(s->model, i);
-        s->in[2 * n + 1 + i] = param_value(s->ctx, qd_model_param_value(s->model, i));
-        if (!isfinite(s->in[2 * n + 1 + i])) {
+        s->par[i] = param_value(s->ctx, qd_model_param_value(s->model, i));
+        if (!isfinite(s->par[i])) {
             qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
                          qd_expr_name(s->in_syms[2 * n + 1 + i]));
             return QD_ERR_ARG;
@@ -113,7 +108,7 @@ static qd_status compile_acc(qd_sim *s) {
         outs[k++] = e->A[i];
     for (size_t i = 0; i < m; i++)
         outs[k++] = e->b[i];
-    s->acc = compile(s, k, outs, &s->acc_out);
+    s->acc = qd__sim_prog(s, k, outs, &s->acc_n);
     k = 0;
     for (size_t i = 0; i < m * n; i++)
         outs[k++] = e->A[i];
@@ -122,7 +117,7 @@ static qd_status compile_acc(qd_sim *s) {
     for (size_t i = 0; i < m; i++)
         outs[k++] = e->con[i].expr;
     if (s->acc && m)
-        s->con = compile(s, k, outs, &s->con_out);
+        s->con = qd__sim_prog(s, k, outs, &s->con_n);
     free(outs);
     return s->acc && (!m || s->con) ? QD_OK : qd_ctx_status(s->ctx);
 }
@@ -194,27 +189,39 @@ static qd_status compile_canonical(qd_sim *s) {
         outs[i] = s->e->M[i];
     for (size_t i = 0; i < n; i++)
         outs[n * n + i] = s->b_expr[i];
-    s->mom = compile(s, n * n + n, outs, &s->mom_out);
+    s->mom = qd__sim_prog(s, n * n + n, outs, &s->mom_n);
     free(outs);
     if (s->mom)
-        s->force = compile(s, n, s->force_expr, &s->force_out);
+        s->force = qd__sim_prog(s, n, s->force_expr, &s->force_n);
     return s->mom && s->force ? QD_OK : qd_ctx_status(s->ctx);
 }
 
-static qd_status make_names(qd_sim *s) {
+/* Coordinate j and its momentum's column name (p_q, or the name given in
+ * `momenta` for a model given by H). */
+static const qd_expr *coord(const qd_sim *s, size_t j) {
+    return s->e ? s->e->q[j] : qd_model_coord(s->model, j);
+}
+
+static char *momentum_name(const qd_sim *s, size_t j) {
+    if (s->hamilton)
+        return dup_printf(qd_expr_name(qd_model_momentum(s->model, j)), "", "");
+    return dup_printf("p_", qd_expr_name(coord(s, j)), "");
+}
+
+qd_status qd__sim_names(qd_sim *s) {
     size_t n = s->n, k = 0;
     s->names = calloc(3 * n + 2 + s->m, sizeof *s->names);
     s->holonomic = calloc(s->m + 1, sizeof *s->holonomic);
-    s->con_err = calloc(s->m + 1, sizeof *s->con_err);
-    if (!s->names || !s->holonomic || !s->con_err)
+    s->con_err_last = calloc(s->m + 1, sizeof *s->con_err_last);
+    if (!s->names || !s->holonomic || !s->con_err_last)
         return QD_ERR_NOMEM;
     s->names[k++] = dup_printf("t", "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "", "");
+        s->names[k++] = dup_printf(qd_expr_name(coord(s, j)), "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "'", "");
+        s->names[k++] = dup_printf(qd_expr_name(coord(s, j)), "'", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf("p_", qd_expr_name(s->e->q[j]), "");
+        s->names[k++] = momentum_name(s, j);
     s->names[k++] = dup_printf("energy", "", "");
     for (size_t c = 0; c < s->m; c++) {
         s->names[k++] = dup_printf("res_", s->e->con[c].name, "");
@@ -238,16 +245,7 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
         return NULL;
     }
     *s = (qd_sim){.ctx = ctx, .model = m, .e = e, .n = e->n, .m = e->ncon};
-    size_t N = s->n + s->m;
-    s->K = malloc((N * N + 2 * N + 4 * s->n + 1) * sizeof *s->K);
-    s->pc = malloc((N + 1) * sizeof *s->pc);
-    qd_status st = s->K && s->pc ? QD_OK : QD_ERR_NOMEM;
-    if (st == QD_OK) {
-        s->rhs = s->K + N * N;
-        s->tmp = s->rhs + N;
-    }
-    if (st == QD_OK)
-        st = setup_inputs(s);
+    qd_status st = setup_inputs(s);
     if (st == QD_OK)
         st = compile_acc(s);
     if (st == QD_OK)
@@ -255,7 +253,7 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     if (st == QD_OK)
         st = compile_canonical(s);
     if (st == QD_OK)
-        st = make_names(s);
+        st = qd__sim_names(s);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "cannot compile the equations for simulation");
@@ -268,21 +266,15 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
 void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
-    free(s->con_err);
+    free(s->con_err_last);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);
     qd_prog_free(s->force);
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
-    free(s->en_out);
-    free(s->acc_out);
-    free(s->con_out);
-    free(s->mom_out);
-    free(s->force_out);
-    free(s->aux_out);
     free(s->in_syms);
-    free(s->in);
+    free(s->par);
     free(s->b_expr);
     free(s->force_expr);
     free(s->holonomic);
@@ -296,15 +288,15 @@ void qd_sim_free(qd_sim *s) {
     free(s->ev_expr);
     free(s->guard_expr);
     free(s->ev);
-    free(s->K);
-    free(s->pc);
     free(s);
 }
 
 size_t qd_sim_ndof(const qd_sim *s) { return s->n; }
 size_t qd_sim_ncon(const qd_sim *s) { return s->m; }
 bool qd_sim_canonical(const qd_sim *s) { return s->canonical; }
-double qd_sim_constraint_error(const qd_sim *s, size_t c) { return c < s->m ? s->con_err[c] : 0; }
+double qd_sim_constraint_error(const qd_sim *s, size_t c) {
+    return c < s->m ? s->con_err_last[c] : 0;
+}
 bool qd_sim_separable(const qd_sim *s) { return s->separable; }
 bool qd_sim_conservative(const qd_sim *s) { return s->conservative; }
 
@@ -377,10 +369,7 @@ qd_status qd__aux_compile(qd_sim *s) {
         return QD_OK;
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
-    free(s->aux_out);
-    free(s->en_out);
     s->aux = s->en = NULL;
-    s->aux_out = s->en_out = NULL;
     size_t total = qd__aux_guard(s) + s->nguard, k = 0;
     const qd_expr **outs = malloc((total + 1) * sizeof *outs);
     if (!outs)
@@ -395,7 +384,9 @@ qd_status qd__aux_compile(qd_sim *s) {
         outs[k++] = s->ev_expr[i];
     for (size_t i = 0; i < s->nguard; i++)
         outs[k++] = s->guard_expr[i];
-    s->aux = compile(s, k, outs, &s->aux_out);
+    if (s->hamilton)
+        qd__hamilton_velocities(s, k - 2, outs + 2);
+    s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
     s->aux_lambda = false;
     for (size_t i = 2 + s->m; i < k; i++)
         for (size_t c = 0; c < s->m; c++)
@@ -403,15 +394,67 @@ qd_status qd__aux_compile(qd_sim *s) {
     /* outputs and events are needed at rows and event checks only; the
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
-        s->en = compile(s, 2, outs, &s->en_out);
+        s->en = qd__sim_prog(s, 2, outs, &s->en_n);
     free(outs);
     s->aux_ready = s->aux != NULL && (k == 2 + s->m || s->en != NULL);
     return s->aux_ready ? QD_OK : qd_ctx_status(s->ctx);
 }
 
+qd_status qd_sim_compile(qd_sim *s) { return qd__aux_compile(s); }
+
+bool qd_sim_compiled(const qd_sim *s) { return s->aux_ready; }
+
+/* ---- a run's workspace ------------------------------------------------------ */
+
+/* One program's output buffer and workspace; *out and *work NULL when the
+ * program is (the missing programs of a system without them). */
+static bool prog_ws(const qd_prog *p, size_t nout, double **out, double **work) {
+    *out = *work = NULL;
+    if (!p)
+        return true;
+    *out = malloc((nout + 1) * sizeof **out);
+    *work = malloc(qd_prog_work_size(p) * sizeof **work);
+    if (*work)
+        qd_prog_work_init(p, *work);
+    return *out && *work;
+}
+
+qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
+    size_t n = w->n, N = n + w->m;
+    w->ctx = ctx;
+    w->in = calloc(w->nin + 1, sizeof *w->in);
+    w->K = malloc((N * N + 2 * N + 4 * n + 1) * sizeof *w->K);
+    w->pc = malloc((N + 1) * sizeof *w->pc);
+    w->con_err = calloc(w->m + 1, sizeof *w->con_err);
+    bool ok = prog_ws(w->acc, w->acc_n, &w->acc_out, &w->acc_w);
+    ok = prog_ws(w->con, w->con_n, &w->con_out, &w->con_w) && ok;
+    ok = prog_ws(w->mom, w->mom_n, &w->mom_out, &w->mom_w) && ok;
+    ok = prog_ws(w->force, w->force_n, &w->force_out, &w->force_w) && ok;
+    ok = prog_ws(w->aux, w->aux_n, &w->aux_out, &w->aux_w) && ok;
+    ok = prog_ws(w->en, w->en_n, &w->en_out, &w->en_w) && ok;
+    if (!ok || !w->in || !w->K || !w->pc || !w->con_err)
+        return QD_ERR_NOMEM;
+    w->rhs = w->K + N * N;
+    w->tmp = w->rhs + N;
+    for (size_t i = 0; i < w->np; i++)
+        w->in[2 * n + 1 + i] = w->par[i];
+    w->evals = 0;
+    return QD_OK;
+}
+
+void qd__sim_ws_free(qd_sim *w) {
+    double *bufs[] = {w->in, w->K, w->con_err, w->acc_out, w->acc_w, w->con_out, w->con_w,
+                      w->mom_out, w->mom_w, w->force_out, w->force_w, w->aux_out, w->aux_w,
+                      w->en_out, w->en_w};
+    for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
+        free(bufs[i]);
+    free(w->pc);
+}
+
 size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap) {
     size_t n = s->n, k = 0;
-    bool ham = (method >= QD_SIM_GL2 && method <= QD_SIM_YOSHIDA8) && s->canonical;
+    bool ham = s->hamilton || ((method >= QD_SIM_GL2 && method <= QD_SIM_YOSHIDA8) &&
+                               s->canonical);
     for (size_t i = 0; i < 1 + 3 * n + 1 + s->m; i++) {
         if (i >= 1 + 2 * n && i < 1 + 3 * n && !ham)
             continue;
@@ -449,22 +492,22 @@ void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
         for (size_t k = 0; k < s->m; k++)
             lambda[k] = ok ? s->rhs[s->n + k] : NAN;
     }
-    qd_prog_run(s->aux, s->in, s->aux_out);
+    qd_prog_eval(s->aux, s->aux_w, s->in, s->aux_out);
 }
 
 const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
     if (!s->en) {
-        qd_prog_run(s->aux, s->in, s->aux_out);
+        qd_prog_eval(s->aux, s->aux_w, s->in, s->aux_out);
         return s->aux_out;
     }
-    qd_prog_run(s->en, s->in, s->en_out);
+    qd_prog_eval(s->en, s->en_w, s->in, s->en_out);
     return s->en_out;
 }
 
 void qd__con_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
-    qd_prog_run(s->con, s->in, s->con_out);
+    qd_prog_eval(s->con, s->con_w, s->in, s->con_out);
 }
 
 static qd_status singular(qd_sim *s, double t) {
@@ -479,53 +522,6 @@ static qd_status singular(qd_sim *s, double t) {
     return QD_ERR_SINGULAR;
 }
 
-/* A x = b in place for a few unknowns: Gaussian elimination with partial
- * pivoting, singular when a pivot is below tol |A|_inf (the criterion of
- * qd__gauss, src/mech/lu.c, without its rank bookkeeping: this runs at
- * every evaluation). */
-static bool dense_solve(size_t n, double *A, double *b, double tol) {
-    double norm = 0;
-    for (size_t i = 0; i < n; i++) {
-        double sum = 0;
-        for (size_t j = 0; j < n; j++)
-            sum += fabs(A[i * n + j]);
-        norm = fmax(norm, sum);
-    }
-    double eps = tol * norm;
-    for (size_t c = 0; c < n; c++) {
-        size_t p = c;
-        for (size_t i = c + 1; i < n; i++)
-            if (fabs(A[i * n + c]) > fabs(A[p * n + c]))
-                p = i;
-        if (!(fabs(A[p * n + c]) > eps))
-            return false;
-        if (p != c) {
-            for (size_t j = c; j < n; j++) {
-                double tmp = A[c * n + j];
-                A[c * n + j] = A[p * n + j];
-                A[p * n + j] = tmp;
-            }
-            double tmp = b[c];
-            b[c] = b[p];
-            b[p] = tmp;
-        }
-        double inv = 1 / A[c * n + c];
-        for (size_t i = c + 1; i < n; i++) {
-            double l = A[i * n + c] * inv;
-            for (size_t j = c + 1; j < n; j++)
-                A[i * n + j] -= l * A[c * n + j];
-            b[i] -= l * b[c];
-        }
-    }
-    for (size_t i = n; i-- > 0;) {
-        double sum = b[i];
-        for (size_t j = i + 1; j < n; j++)
-            sum -= A[i * n + j] * b[j];
-        b[i] = sum / A[i * n + i];
-    }
-    return true;
-}
-
 /* Solve the n*n matrix M x = r in scratch; x may alias r. */
 static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *r, double *x) {
     size_t n = s->n;
@@ -533,7 +529,7 @@ static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *
         s->K[i] = M[i];
     for (size_t i = 0; x != r && i < n; i++)
         x[i] = r[i];
-    if (!dense_solve(n, s->K, x, 1e-13 * (double)n))
+    if (!qd__num_solve(n, s->K, x, 1e-13 * (double)n))
         return singular(s, t);
     return QD_OK;
 }
@@ -546,24 +542,11 @@ static bool saddle_solve(qd_sim *s, double t, const double *y) {
     size_t n = s->n, m = s->m, N = n + m;
     if (y)
         set_state(s, t, y, y + n);
-    qd_prog_run(s->acc, s->in, s->acc_out);
+    qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
     const double *M = s->acc_out, *f = M + n * n;
     const double *A = f + n, *b = A + m * n;
-    double *K = s->K, *r = s->rhs;
-    memset(K, 0, N * N * sizeof *K);
-    for (size_t i = 0; i < n; i++) {
-        for (size_t j = 0; j < n; j++)
-            K[i * N + j] = M[i * n + j];
-        r[i] = f[i];
-    }
-    for (size_t k = 0; k < m; k++) {
-        for (size_t j = 0; j < n; j++) {
-            K[j * N + n + k] = -A[k * n + j];
-            K[(n + k) * N + j] = A[k * n + j];
-        }
-        r[n + k] = b[k];
-    }
-    return dense_solve(N, K, r, 1e-13 * (double)N);
+    qd__num_saddle(n, m, M, f, A, b, s->K, s->rhs);
+    return qd__num_solve(N, s->K, s->rhs, 1e-13 * (double)N);
 }
 
 static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
@@ -579,15 +562,20 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         return QD_OK;
     }
     set_state(s, t, y, y + n);
-    qd_prog_run(s->acc, s->in, s->acc_out);
+    qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
     const double *M = s->acc_out, *f = M + n * n;
     return solve_mass(s, t, M, f, dy + n);
 }
 
 qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, double *qd) {
     size_t n = s->n;
+    if (s->hamilton) {
+        set_state(s, t, q, p);
+        qd_prog_eval(s->mom, s->mom_w, s->in, qd);
+        return QD_OK;
+    }
     set_state(s, t, q, NULL);
-    qd_prog_run(s->mom, s->in, s->mom_out);
+    qd_prog_eval(s->mom, s->mom_w, s->in, s->mom_out);
     for (size_t j = 0; j < n; j++)
         qd[j] = p[j] - s->mom_out[n * n + j];
     return solve_mass(s, t, s->mom_out, qd, qd);
@@ -596,7 +584,7 @@ qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, do
 void qd__momentum(qd_sim *s, double t, const double *q, const double *qd, double *p) {
     size_t n = s->n;
     set_state(s, t, q, qd);
-    qd_prog_run(s->mom, s->in, s->mom_out);
+    qd_prog_eval(s->mom, s->mom_w, s->in, s->mom_out);
     for (size_t i = 0; i < n; i++) {
         p[i] = s->mom_out[n * n + i];
         for (size_t j = 0; j < n; j++)
@@ -606,12 +594,19 @@ void qd__momentum(qd_sim *s, double t, const double *q, const double *qd, double
 
 void qd__force(qd_sim *s, double t, const double *q, const double *qd, double *F) {
     set_state(s, t, q, qd);
-    qd_prog_run(s->force, s->in, F);
+    qd_prog_eval(s->force, s->force_w, s->in, F);
 }
 
 qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd) {
+    if (s->hamilton) {
+        /* separable: dH/dp depends on p alone */
+        for (size_t j = 0; j < s->n; j++)
+            s->in[s->n + j] = p[j];
+        qd_prog_eval(s->mom, s->mom_w, s->in, qd);
+        return QD_OK;
+    }
     /* M is constant: its value at the current inputs is the value */
-    qd_prog_run(s->mom, s->in, s->mom_out);
+    qd_prog_eval(s->mom, s->mom_w, s->in, s->mom_out);
     return solve_mass(s, s->tnow, s->mom_out, p, qd);
 }
 
@@ -622,6 +617,6 @@ qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *d
     size_t n = s->n;
     qd_status st = qd__velocity(s, t, y, y + n, dy);
     if (st == QD_OK)
-        qd__force(s, t, y, dy, dy + n);
+        qd__force(s, t, y, qd__second(s, y, dy), dy + n);
     return st;
 }

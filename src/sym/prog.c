@@ -52,7 +52,9 @@ struct qd_prog {
     size_t nin, nout, ncode, nreg;
     instr *code;
     uint32_t *opnd; /* operand lists of ADD3, MUL3, SUMN and PRODN */
-    double *regs;
+    double *regs;   /* qd_prog_run's workspace */
+    double *consts; /* nconst constants, registers nin .. nin + nconst */
+    size_t nconst;
     uint32_t *out;
 };
 
@@ -570,8 +572,10 @@ static qd_prog *assemble(comp *c, size_t nout, const qd_expr *const *outputs) {
         qd_prog_free(p);
         return NULL;
     }
-    if (c->nconst)
-        memcpy(p->regs + c->nin, c->consts, c->nconst * sizeof *p->regs);
+    p->nconst = c->nconst;
+    p->consts = c->consts;
+    c->consts = NULL;
+    qd_prog_work_init(p, p->regs);
     return p;
 }
 
@@ -605,6 +609,7 @@ void qd_prog_free(qd_prog *p) {
     free(p->code);
     free(p->opnd);
     free(p->regs);
+    free(p->consts);
     free(p->out);
     free(p);
 }
@@ -636,11 +641,29 @@ static double prodn(const double *r, const uint32_t *a) {
     return m / d;
 }
 
-/* The hot loop: one switch per instruction, the common operations inline. */
-void qd_prog_run(qd_prog *p, const double *in, double *out) {
+size_t qd_prog_work_size(const qd_prog *p) { return p && p->nreg ? p->nreg : 1; }
+
+/* The constants sit in the registers after the inputs, which no
+ * instruction overwrites (reuse_registers keeps them fixed): copying them
+ * once makes the workspace ready for any number of runs. */
+void qd_prog_work_init(const qd_prog *p, double *work) {
     if (!p)
         return;
-    double *r = p->regs;
+    memset(work, 0, qd_prog_work_size(p) * sizeof *work);
+    if (p->nconst)
+        memcpy(work + p->nin, p->consts, p->nconst * sizeof *work);
+}
+
+void qd_prog_run(qd_prog *p, const double *in, double *out) {
+    if (p)
+        qd_prog_eval(p, p->regs, in, out);
+}
+
+/* The hot loop: one switch per instruction, the common operations inline. */
+void qd_prog_eval(const qd_prog *p, double *work, const double *in, double *out) {
+    if (!p)
+        return;
+    double *r = work;
     const uint32_t *opnd = p->opnd;
     if (p->nin)
         memcpy(r, in, p->nin * sizeof *r);

@@ -13,8 +13,10 @@ import csv
 import io
 import json
 import math
+import shutil
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 EX = Path(__file__).resolve().parents[2] / 'examples'
@@ -43,6 +45,7 @@ def main():
     ap.add_argument('--build', required=True)
     qdot = Path(ap.parse_args().build).resolve() / 'qdot'
     failures = []
+    tmp = tempfile.mkdtemp(prefix='qdot-simulate-')
 
     def check(cond, what):
         if not cond:
@@ -175,6 +178,54 @@ def main():
     rc, out, err = run(qdot, 'poincare', dp, '--n', 3)
     check(rc == 2, f'poincare without --section: {rc}')
 
+    # a model given by H with d^2H/dp^2 singular (H = p x: no Lagrangian):
+    # Hamilton's equations integrated as given, x = e^t, p = 2 e^-t from
+    # the momentum in --initial; velocities alone cannot give p (exit 1)
+    hm = Path(tmp) / 'h_px.qd'
+    hm.write_text('coordinates x\nmomenta p\nH = p*x\ninitial x = 1\n')
+    rc, out, err = run(qdot, 'simulate', hm, '--t-end', 1, '--initial', 'p = 2')
+    check(rc == 0, f'H = p x: {rc} {err}')
+    if rc == 0:
+        head, data = rows(out)
+        check(head == ['t', 'x', "x'", 'p', 'energy'], f'H = p x columns {head}')
+        t, x, xd, p, e = data[-1]
+        check(t == 1 and abs(x - math.e) < 1e-9 and abs(xd - x) < 1e-15
+              and abs(p - 2 / math.e) < 1e-9 and abs(e - 2) < 1e-9, f'H = p x: {data[-1]}')
+    rc, out, err = run(qdot, 'simulate', hm, '--t-end', 1)
+    check(rc == 1 and 'give the momenta' in err and out == '', f'H = p x, no p: {rc} {err}')
+    # the oscillator H = (p^2 + x^2)/2 from x = 1, x' = 0 (p from x' = dH/dp):
+    # x' = 0 again with x < 0 at t = pi; outputs and events may use q' and p
+    ho = Path(tmp) / 'h_osc.qd'
+    ho.write_text('coordinates x\nmomenta p\nH = p^2/2 + x^2/2\ninitial x = 1\n')
+    rc, out, err = run(qdot, 'simulate', ho, '--t-end', 4, '--rtol', 1e-12, '--output',
+                       "x' - p", '--stop-at', "x' = 0, x < 0")
+    check(rc == 0, f'H oscillator: {rc} {err}')
+    if rc == 0:
+        head, data = rows(out)
+        last = data[-1]
+        check(abs(last[0] - math.pi) < 1e-9 and abs(last[1] + 1) < 1e-9, f'half period {last}')
+        check(all(r[head.index("x' - p")] == 0 for r in data), "x' = dH/dp = p")
+
+    # a step count past --max-steps (default 1e8) is refused before the run,
+    # naming the count: --dt 1e-300 over t = 0..1 is 1e300 steps, and an
+    # output grid of 1e300 rows likewise (these used to run forever)
+    for args, what in ((['--method', 'gl6', '--dt', '1e-300'], '1e+300 steps'),
+                       (['--method', 'dop853', '--dt', '1e-300'], '1e+300 rows'),
+                       (['--method', 'gl4', '--dt', 0.001, '--max-steps', 999], '1e+03 steps')):
+        rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, *args, '--out', '/dev/null')
+        check(rc == 2 and what in err and 'max-steps' in err, f'max steps {args}: {rc} {err}')
+    rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, '--method', 'gl4', '--dt', 0.001,
+                       '--max-steps', 1000, '--out', '/dev/null')
+    check(rc == 0, f'exactly --max-steps steps: {rc} {err}')
+    # an adaptive run stops at the bound with a failure (exit 1)
+    rc, out, err = run(qdot, 'simulate', dp, '--t-end', 100, '--max-steps', 50, '--out',
+                       '/dev/null')
+    check(rc == 1 and 'more than 50 steps' in err, f'adaptive max steps: {rc} {err}')
+    for bad in ('2.5', '0', 'x'):
+        rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, '--max-steps', bad)
+        check(rc == 2, f'--max-steps {bad}: {rc} {err}')
+
+    shutil.rmtree(tmp, ignore_errors=True)
     for f in failures:
         print('FAIL:', f)
     print(f'{len(failures)} failures')
