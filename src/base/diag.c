@@ -113,3 +113,48 @@ size_t qd__diag_bad_char(const char *s, char *msg, size_t cap, const char **hint
     *hint = "names are ASCII letters, digits and _; operators are + - * / ^ and '";
     return 1;
 }
+
+/* ---- suggestions: "did you mean ...?" ---------------------------------- */
+
+static size_t edit_distance(const char *a, size_t na, const char *b) {
+    size_t nb = strlen(b);
+    if (na > 64 || nb > 64)
+        return (size_t)-1;
+    size_t row[65];
+    for (size_t j = 0; j <= nb; j++)
+        row[j] = j;
+    for (size_t i = 1; i <= na; i++) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= nb; j++) {
+            size_t up = row[j];
+            size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            size_t best = diag + cost;
+            if (row[j] + 1 < best)
+                best = row[j] + 1;
+            if (row[j - 1] + 1 < best)
+                best = row[j - 1] + 1;
+            row[j] = best;
+            diag = up;
+        }
+    }
+    return row[nb];
+}
+
+const char *qd__diag_nearest(const char *word, size_t n, const char *const *names, size_t count) {
+    const char *best = NULL;
+    size_t bestd = (size_t)-1;
+    size_t limit = n <= 3 ? 1 : n <= 6 ? 2 : 3; /* a close name, not any name */
+    if (n < 2)
+        return NULL; /* every one-letter name is one edit from every other */
+    for (size_t i = 0; i < count; i++) {
+        if (strlen(names[i]) < 2)
+            continue;
+        size_t d = edit_distance(word, n, names[i]);
+        if (d <= limit && d < bestd) {
+            bestd = d;
+            best = names[i];
+        }
+    }
+    return best;
+}

@@ -15,4 +15,9 @@ size_t qd__diag_bad_char(const char *s, char *msg, size_t cap, const char **hint
 /* The hint of "expression nested too deeply", the same in both readers. */
 #define QD_NEST_HINT "brackets and signs nest at most 256 deep; name a part with a definition"
 
+/* The name in names[0..count) nearest to word[0..n) by edit distance, when
+ * it is close (1 edit for short words, up to 3 for long ones), else NULL:
+ * the "did you mean" of every unknown-name error. */
+const char *qd__diag_nearest(const char *word, size_t n, const char *const *names, size_t count);
+
 #endif

@@ -16,7 +16,7 @@
 
 #include "legendre.h"
 #include "mech.h"
-#include "model/parser.h"
+#include "base/diag.h"
 
 static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
 
@@ -85,7 +85,7 @@ const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name)
     bool param = false;
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         param = param || !strcmp(qd_expr_name(qd_model_param(m, i)), name);
-    const char *near = qd__mdl_nearest(name, strlen(name), names, nc);
+    const char *near = qd__diag_nearest(name, strlen(name), names, nc);
     if (param)
         qd_ctx_error(ctx, QD_ERR_ARG, "'%s' is a parameter, not a coordinate", name);
     else if (near)

@@ -141,7 +141,7 @@ static bool unknown_clause(parser *p) {
     char word[64], hint[128];
     size_t n = p->lx.tok.len < 63 ? p->lx.tok.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + p->lx.tok.off);
-    const char *near = p->lx.tok.kind == TK_IDENT ? qd__mdl_nearest(word, n, clauses, NCLAUSES) : NULL;
+    const char *near = p->lx.tok.kind == TK_IDENT ? qd__diag_nearest(word, n, clauses, NCLAUSES) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     return qd__mdl_perr_tok(p, near ? hint : body_usage,
@@ -265,7 +265,7 @@ static const body *expect_body(parser *p, const char *what) {
     const char **names = malloc((m->nbodies + 1) * sizeof *names);
     for (size_t i = 0; names && i < m->nbodies; i++)
         names[i] = m->bodies[i].name;
-    const char *near = names ? qd__mdl_nearest(word, n, names, m->nbodies) : NULL;
+    const char *near = names ? qd__diag_nearest(word, n, names, m->nbodies) : NULL;
     snprintf(hint, sizeof hint, near ? "did you mean '%s'?" : "%s", near ? near : body_usage);
     free(names);
     qd__mdl_perr_tok(p, hint, "'%s' is not a body", word);

@@ -182,7 +182,7 @@ static bool unknown_name(parser *p, size_t off, size_t n, bool call) {
     }
     size_t count;
     const char **names = qd__mdl_known_names(p, &count);
-    const char *near = names ? qd__mdl_nearest(name, strlen(name), names, count) : NULL;
+    const char *near = names ? qd__diag_nearest(name, strlen(name), names, count) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else if (call)

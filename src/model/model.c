@@ -144,7 +144,7 @@ qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name
     }
     for (size_t i = 0; i < m->nparams; i++)
         names[i] = qd_expr_name(m->params[i]);
-    const char *near = qd__mdl_nearest(name, strlen(name), names, m->nparams);
+    const char *near = qd__diag_nearest(name, strlen(name), names, m->nparams);
     if (near)
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'; did you mean '%s'?", name, near);
     else

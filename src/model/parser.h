@@ -11,6 +11,7 @@
 
 #include "qdot/model.h"
 #include "lex.h"
+#include "base/diag.h" /* qd__diag_nearest: "did you mean" */
 
 /* A value of the language: a scalar, a vector of three components, or a
  * 3x3 matrix (a rotation, an inertia tensor), stored by rows. */
@@ -197,8 +198,6 @@ bool qd__mdl_perr_tok(parser *p, const char *hint, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-/* The known name nearest to word (edit distance), or NULL if none is close. */
-const char *qd__mdl_nearest(const char *word, size_t n, const char *const *names, size_t count);
 /* Every name usable in an expression (for suggestions); caller frees. */
 const char **qd__mdl_known_names(const parser *p, size_t *count);
 

@@ -41,7 +41,7 @@ static long expect_constraint(parser *p) {
             return (long)k;
         }
     char hint[160] = "declare the constraint (constraint NAME: ...) before its reaction";
-    const char *near = qd__mdl_nearest(p->lx.src + at.off, at.len, m->con_names, m->ncons);
+    const char *near = qd__diag_nearest(p->lx.src + at.off, at.len, m->con_names, m->ncons);
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     qd__mdl_perr_tok(p, hint, "'%.*s' is not a constraint", (int)(at.len < 64 ? at.len : 64),

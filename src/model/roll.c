@@ -443,7 +443,7 @@ static bool unknown_shape(parser *p) {
     char word[64], hint[160];
     size_t n = p->lx.tok.len < 63 ? p->lx.tok.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + p->lx.tok.off);
-    const char *near = qd__mdl_nearest(word, n, shape_names, NSHAPES);
+    const char *near = qd__diag_nearest(word, n, shape_names, NSHAPES);
     if (!strcmp(word, "ring") || !strcmp(word, "hoop"))
         near = "disk";
     else if (!strcmp(word, "shell") || !strcmp(word, "ball"))
@@ -520,7 +520,7 @@ static bool parse_body(parser *p, rolling *r) {
         const char **names = malloc((m->nbodies + 1) * sizeof *names);
         for (size_t i = 0; names && i < m->nbodies; i++)
             names[i] = m->bodies[i].name;
-        const char *near = names ? qd__mdl_nearest(word, n, names, m->nbodies) : NULL;
+        const char *near = names ? qd__diag_nearest(word, n, names, m->nbodies) : NULL;
         snprintf(hint, sizeof hint, near ? "did you mean '%s'?" : "%s",
                  near ? near : "declare it first: body NAME mass M inertia I at r orientation R");
         free(names);

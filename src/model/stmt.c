@@ -321,7 +321,7 @@ static bool no_such_coordinate(parser *p) {
     const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
-    const char *near = names ? qd__mdl_nearest(name, strlen(name), names, p->m->ncoords) : NULL;
+    const char *near = names ? qd__diag_nearest(name, strlen(name), names, p->m->ncoords) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     free(names);
@@ -519,7 +519,7 @@ static bool unknown_statement(parser *p) {
     tok_text(p, word, sizeof word);
     for (size_t i = 0; i < NSTATEMENTS; i++)
         words[i] = statements[i].word;
-    const char *near = qd__mdl_nearest(word, strlen(word), words, NSTATEMENTS);
+    const char *near = qd__diag_nearest(word, strlen(word), words, NSTATEMENTS);
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {

@@ -104,7 +104,7 @@ static bool not_a_coordinate(parser *p) {
     const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
-    const char *near = names ? qd__mdl_nearest(p->lx.src + t.off, t.len, names, p->m->ncoords) : NULL;
+    const char *near = names ? qd__diag_nearest(p->lx.src + t.off, t.len, names, p->m->ncoords) : NULL;
     char hint[160] = "a symmetry moves the coordinates";
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
