@@ -36,6 +36,23 @@ typedef struct qd_expr qd_expr; /* always handled as const qd_expr * */
 QD_API qd_ctx *qd_ctx_new(void);                /* NULL when out of memory */
 QD_API void qd_ctx_free(qd_ctx *ctx);           /* frees every expression; NULL is fine */
 
+/* The memory a context and everything made in it come from (SQLite's
+ * sqlite3_mem_methods, but per context: no global state).  Every allocation
+ * of the library goes through these three functions; one that fails makes the
+ * call in progress return QD_ERR_NOMEM, with nothing leaked.  realloc_fn and
+ * free_fn are never given NULL.  The allocator must outlive the context and
+ * every object made with it (results are freed through it, after the context
+ * if need be).  GMP, FLINT and LAPACK allocate on their own (docs/design.md,
+ * "Allocation and out-of-memory"). */
+typedef struct qd_allocator {
+    void *(*malloc_fn)(void *user, size_t size);
+    void *(*realloc_fn)(void *user, void *p, size_t size);
+    void (*free_fn)(void *user, void *p);
+    void *user;
+} qd_allocator;
+
+QD_API qd_ctx *qd_ctx_new_with(const qd_allocator *a); /* a NULL: the C library's */
+
 QD_API qd_status qd_ctx_status(const qd_ctx *ctx);     /* first error since the last clear */
 QD_API const char *qd_ctx_message(const qd_ctx *ctx);  /* its message, "" when none */
 QD_API void qd_ctx_clear_error(qd_ctx *ctx);

@@ -19,9 +19,10 @@ typedef struct qd_buf {
     size_t len;
     size_t cap;
     bool failed;  /* sticky: an append ran out of memory */
+    const qd_allocator *alloc; /* NULL: the C library's (set before the first append) */
 } qd_buf;
 
-#define QD_BUF_INIT {NULL, 0, 0, false}
+#define QD_BUF_INIT {NULL, 0, 0, false, NULL}
 
 QD_API void qd_buf_free(qd_buf *b);
 QD_API void qd_buf_clear(qd_buf *b);          /* empties it, keeps the memory */

@@ -12,28 +12,29 @@
  * "w given, find x".
  */
 #include "steady.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(size_t n) { return qd__mem_calloc(NULL, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_steady_free(qd_steady *s) {
     if (!s)
         return;
-    free(s->keep);
-    free(s->keepd);
-    free(s->cyc);
-    free(s->cycd);
-    free(s->mom);
-    free(s->res);
+    qd__free(s->keep);
+    qd__free(s->keepd);
+    qd__free(s->cyc);
+    qd__free(s->cycd);
+    qd__free(s->mom);
+    qd__free(s->res);
     if (s->driven) {
-        free(s->M);
-        free(s->f);
+        qd__free(s->M);
+        qd__free(s->f);
     }
     qd_routh_free(s->routh);
-    free(s);
+    qd__free(s);
 }
 
 /* Is coordinate c cyclic for the purpose `what`?  Reports the first place
@@ -98,7 +99,7 @@ static const qd_expr *at_rest(qd_ctx *ctx, const qd_steady *s, const qd_expr *x)
     for (size_t j = 0; j < s->nkeep; j++)
         zero[j] = qd_int(ctx, 0);
     const qd_expr *y = qd_subs(ctx, x, s->nkeep, s->keepd, zero);
-    free(zero);
+    qd__free(zero);
     return y ? qd_simplify(ctx, y) : NULL;
 }
 
@@ -154,7 +155,7 @@ qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, siz
                                       "supported: choose independent coordinates");
         return NULL;
     }
-    qd_steady *s = calloc(1, sizeof *s);
+    qd_steady *s = qd__calloc(ctx, 1, sizeof *s);
     if (!s)
         return NULL;
     s->driven = driven;
@@ -193,8 +194,8 @@ qd_status qd__steady_env_init(const qd_steady *s, size_t nvals, const qd_expr *c
                               const double *vals, qd__steady_env *env) {
     size_t nb = s->beta ? s->ncyc : 0;
     size_t cap = nvals + 2 * s->nkeep + s->ncyc + nb;
-    env->syms = calloc(cap ? cap : 1, sizeof *env->syms);
-    env->vals = calloc(cap ? cap : 1, sizeof *env->vals);
+    env->syms = qd__mem_calloc(NULL, cap ? cap : 1, sizeof *env->syms);
+    env->vals = qd__mem_calloc(NULL, cap ? cap : 1, sizeof *env->vals);
     if (!env->syms || !env->vals) {
         qd__steady_env_free(env);
         return QD_ERR_NOMEM;
@@ -224,8 +225,8 @@ qd_status qd__steady_env_init(const qd_steady *s, size_t nvals, const qd_expr *c
 }
 
 void qd__steady_env_free(qd__steady_env *env) {
-    free(env->syms);
-    free(env->vals);
+    qd__free(env->syms);
+    qd__free(env->vals);
     env->syms = NULL;
     env->vals = NULL;
 }
@@ -256,10 +257,10 @@ typedef struct search {
 
 static void search_free(search *S) {
     qd__steady_env_free(&S->env);
-    free(S->uslot);
-    free(S->F);
-    free(S->pgiven);
-    free(S->dF);
+    qd__free(S->uslot);
+    qd__free(S->F);
+    qd__free(S->pgiven);
+    qd__free(S->dF);
 }
 
 static qd_status residual(search *S, const double *u, double *F, double *J) {
@@ -355,9 +356,9 @@ static double scale_of(const search *S, const double *J, const double *u, size_t
 
 static qd_status iterate(search *S, double *u, double *res_out) {
     size_t nu = S->nu, neq = S->neq;
-    double *F = calloc(neq + 1, sizeof *F), *J = calloc(neq * nu + 1, sizeof *J);
-    double *A = calloc(nu * nu + 1, sizeof *A), *d = calloc(nu + 1, sizeof *d);
-    double *u2 = calloc(nu + 1, sizeof *u2), *F2 = calloc(neq + 1, sizeof *F2);
+    double *F = qd__mem_calloc(NULL, neq + 1, sizeof *F), *J = qd__mem_calloc(NULL, neq * nu + 1, sizeof *J);
+    double *A = qd__mem_calloc(NULL, nu * nu + 1, sizeof *A), *d = qd__mem_calloc(NULL, nu + 1, sizeof *d);
+    double *u2 = qd__mem_calloc(NULL, nu + 1, sizeof *u2), *F2 = qd__mem_calloc(NULL, neq + 1, sizeof *F2);
     qd_status st = F && J && A && d && u2 && F2 ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = residual(S, u, F, J);
@@ -408,12 +409,12 @@ static qd_status iterate(search *S, double *u, double *res_out) {
                      worst);
         st = QD_ERR_NUMERIC;
     }
-    free(F);
-    free(J);
-    free(A);
-    free(d);
-    free(u2);
-    free(F2);
+    qd__free(F);
+    qd__free(J);
+    qd__free(A);
+    qd__free(d);
+    qd__free(u2);
+    qd__free(F2);
     return st;
 }
 
@@ -440,9 +441,9 @@ static qd_status setup(search *S, const bool *xfix, const bool *wfix, const bool
                      "coordinate's value, a rate or a momentum)", S->nu, S->neq, S->nu - S->neq);
         return QD_ERR_ARG;
     }
-    S->uslot = calloc(S->nu + 1, sizeof *S->uslot);
+    S->uslot = qd__calloc(S->ctx, S->nu + 1, sizeof *S->uslot);
     S->F = arr(S->neq);
-    S->pgiven = calloc(S->neq + 1, sizeof *S->pgiven);
+    S->pgiven = qd__calloc(S->ctx, S->neq + 1, sizeof *S->pgiven);
     S->dF = arr(S->neq * S->nu);
     if (!S->uslot || !S->F || !S->pgiven || !S->dF)
         return QD_ERR_NOMEM;
@@ -479,7 +480,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     qd_status st = qd__steady_env_init(s, nvals, syms, vals, &S.env);
     if (st == QD_OK)
         st = setup(&S, xfix, wfix, pfix, pt);
-    double *u = st == QD_OK ? calloc(S.nu + 1, sizeof *u) : NULL;
+    double *u = st == QD_OK ? qd__calloc(ctx, S.nu + 1, sizeof *u) : NULL;
     if (st == QD_OK && !u)
         st = QD_ERR_NOMEM;
     for (size_t i = 0; st == QD_OK && i < S.nu; i++)
@@ -494,7 +495,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
             st = qd__steady_eval(ctx, &S.env, s->mom[c], &pt->p[c]);
         }
     }
-    free(u);
+    qd__free(u);
     search_free(&S);
     return st;
 }

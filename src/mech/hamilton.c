@@ -14,26 +14,27 @@
 #include <stdlib.h>
 
 #include "qdot/print.h"
+#include "../base/mem.h"
 
-static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(size_t n) { return qd__mem_calloc(NULL, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_ham_free(qd_ham *h) {
     if (!h)
         return;
     if (h->H_given)
-        free(h->q);
-    free(h->qd);
-    free(h->p);
-    free(h->pdef);
-    free(h->vel);
-    free(h->dq);
-    free(h->dp);
-    free(h->extra);
-    free(h);
+        qd__free(h->q);
+    qd__free(h->qd);
+    qd__free(h->p);
+    qd__free(h->pdef);
+    qd__free(h->vel);
+    qd__free(h->dq);
+    qd__free(h->dp);
+    qd__free(h->extra);
+    qd__free(h);
 }
 
 static qd_ham *ham_alloc(size_t n) {
-    qd_ham *h = calloc(1, sizeof *h);
+    qd_ham *h = qd__mem_calloc(NULL, 1, sizeof *h);
     if (!h)
         return NULL;
     h->n = n;
@@ -93,7 +94,7 @@ static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "the mass matrix is singular: the momenta do not determine the "
                               "velocities");
-    free(A);
+    qd__free(A);
     return st;
 }
 
@@ -140,7 +141,7 @@ static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
         for (size_t j = 0; j < e->n; j++)
             zero[j] = qd_int(ctx, 0);
         E = qd_add(ctx, E, qd_subs(ctx, U, e->n, e->qd, zero));
-        free(zero);
+        qd__free(zero);
     }
     h->H_minus_E = qd_simplify(ctx, qd_sub(ctx, h->H, qd_subs(ctx, E, e->n, e->qd, h->vel)));
     if (!h->H_minus_E)

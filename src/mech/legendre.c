@@ -14,12 +14,13 @@
  * only leaves L_from_H empty.
  */
 #include "legendre.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(size_t n) { return qd__mem_calloc(NULL, n ? n : 1, sizeof(const qd_expr *)); }
 
 qd_status qd__gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
                           size_t *bad) {
@@ -83,9 +84,9 @@ static qd_status hsys_init(qd_ctx *ctx, const qd_model *m, hsys *s) {
 }
 
 static void hsys_free(hsys *s) {
-    free(s->q);
-    free(s->qd);
-    free(s->p);
+    qd__free(s->q);
+    qd__free(s->qd);
+    qd__free(s->p);
 }
 
 /* Row j of [W | q'_j - c_j] from q'_j = dH/dp_j = sum_k W_jk p_k + c_j. */
@@ -121,7 +122,7 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
         st = row(ctx, s, H, j, A + j * (n + 1));
     if (st == QD_OK)
         st = qd__gauss_solve(ctx, n, A, pdef, &bad);
-    free(A);
+    qd__free(A);
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "d^2H/dp^2 is singular (H is not regular): q' = dH/dp does not "
                               "determine %s, so H has no Lagrangian", qd_expr_name(s->p[bad]));
@@ -153,7 +154,7 @@ qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **
     if (st == QD_OK)
         st = inverse(ctx, m, &s, p, L);
     if (p != pdef)
-        free(p);
+        qd__free(p);
     hsys_free(&s);
     return st;
 }

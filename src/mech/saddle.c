@@ -16,6 +16,7 @@
 #include "mech.h"
 
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -26,9 +27,9 @@ bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *
     /* A^T (n x m) padded with zeros to a square: padded columns come last,
      * so the first column without a pivot is a genuine one when any is. */
     size_t s = n > m ? n : m;
-    double *S = calloc(s * s + 2 * s, sizeof *S);
-    size_t *pc = malloc(s * sizeof *pc);
-    bool *free_col = malloc(s * sizeof *free_col);
+    double *S = qd__mem_calloc(NULL, s * s + 2 * s, sizeof *S);
+    size_t *pc = qd__mem_malloc(NULL, s * sizeof *pc);
+    bool *free_col = qd__mem_malloc(NULL, s * sizeof *free_col);
     bool deficient = false;
     if (S && pc && free_col) {
         double *null = S + s * s;
@@ -42,9 +43,9 @@ bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *
         for (size_t k = 0; deficient && k < m; k++)
             mu[k] = top > 0 ? null[k] / top : 0;
     }
-    free(S);
-    free(pc);
-    free(free_col);
+    qd__free(S);
+    qd__free(pc);
+    qd__free(free_col);
     return deficient;
 }
 
@@ -109,7 +110,7 @@ static void build(const qd_eom *e, const double *out, double *K, double *rhs) {
 
 static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
     size_t m = e->ncon;
-    double *mu = malloc((m + 1) * sizeof *mu);
+    double *mu = qd__malloc(ctx, (m + 1) * sizeof *mu);
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
@@ -120,15 +121,15 @@ static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
         qd_ctx_error(ctx, st,
                      "the mass matrix is singular on the motions the constraints allow at this "
                      "state");
-    free(mu);
+    qd__free(mu);
     return st;
 }
 
 qd_status qd__saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, double *x,
                            double *lambda, double *R) {
     size_t n = e->n, m = e->ncon, s = n + m;
-    double *K = malloc((s * s + s + 1) * sizeof *K);
-    size_t *pc = malloc((s + 1) * sizeof *pc);
+    double *K = qd__malloc(ctx, (s * s + s + 1) * sizeof *K);
+    size_t *pc = qd__malloc(ctx, (s + 1) * sizeof *pc);
     qd_status st = K && pc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK) {
         double *rhs = K + s * s;
@@ -145,7 +146,7 @@ qd_status qd__saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, doub
                 R[j] += out[qd__out_A(e) + k * n + j] * rhs[n + k];
         }
     }
-    free(K);
-    free(pc);
+    qd__free(K);
+    qd__free(pc);
     return st;
 }

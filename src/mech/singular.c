@@ -15,6 +15,7 @@
 #include "mech.h"
 
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -115,7 +116,7 @@ static bool singular_at(const qd_eom *e, double *out, double *K, size_t *pc, boo
  * out of a state where it is singular; QD_OK when A has full rank. */
 static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *out) {
     size_t m = e->ncon;
-    double *mu = malloc((m + 1) * sizeof *mu);
+    double *mu = qd__malloc(ctx, (m + 1) * sizeof *mu);
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -130,14 +131,14 @@ static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *ou
         }
         st = qd__con_report(ctx, e, mu, fabs(s) > 1e-9 * (1 + top), "");
     }
-    free(mu);
+    qd__free(mu);
     return st;
 }
 
 static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, qd_prog *p,
                                size_t nin, size_t nout, bool *pick) {
     size_t n = e->n, s = n + e->ncon;
-    double *w = malloc((nin + nout + s * s + s) * sizeof *w + s * (sizeof(size_t) + 1));
+    double *w = qd__malloc(ctx, (nin + nout + s * s + s) * sizeof *w + s * (sizeof(size_t) + 1));
     if (!w)
         return QD_ERR_NOMEM;
     /* scratch layout: in[nin], out[nout], K[s*s], null[s], pc[s], free_col[s] */
@@ -168,7 +169,7 @@ static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, q
     } else if (st != QD_OK) {
         report_null(ctx, e, T, null, pick);
     }
-    free(w);
+    qd__free(w);
     return st;
 }
 
@@ -202,17 +203,17 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
         st = symbolic_check(ctx, e);
     }
     qd_prog_free(p);
-    free(in);
+    qd__free(in);
     return st;
 }
 
 qd_status qd__check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T) {
-    bool *pick = calloc(e->n ? e->n : 1, sizeof *pick);
+    bool *pick = qd__calloc(ctx, e->n ? e->n : 1, sizeof *pick);
     if (!pick)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
     if (e->ncon || !zero_rows(ctx, e, T, pick))
         st = check_by_value(ctx, e, T, pick);
-    free(pick);
+    qd__free(pick);
     return st;
 }

@@ -14,6 +14,7 @@
 #include "mech.h"
 
 #include "base/ptrmap.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -90,7 +91,7 @@ static qd_status bareiss(elim *el) {
 }
 
 const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
-    const qd_expr **A = malloc((n ? n * n : 1) * sizeof *A);
+    const qd_expr **A = qd__malloc(ctx, (n ? n * n : 1) * sizeof *A);
     if (!A)
         return NULL;
     for (size_t i = 0; i < n * n; i++)
@@ -103,7 +104,7 @@ const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
                                                : qd_int(ctx, 1);
     if (det && el.sign < 0)
         det = qd_neg(ctx, det);
-    free(A);
+    qd__free(A);
     return det;
 }
 
@@ -193,14 +194,14 @@ static void augmented(qd_ctx *ctx, const qd_eom *e, const qd_expr **A) {
 static qd_status keep(qd_eom *e, const qd_expr **x) {
     const qd_expr **mult = NULL;
     if (e->ncon) {
-        mult = malloc(e->ncon * sizeof *mult);
+        mult = qd__mem_malloc(NULL, e->ncon * sizeof *mult);
         if (!mult)
             return QD_ERR_NOMEM;
         for (size_t k = 0; k < e->ncon; k++)
             mult[k] = x[e->n + k];
     }
-    free(e->acc);
-    free(e->mult);
+    qd__free(e->acc);
+    qd__free(e->mult);
     e->acc = x;
     e->mult = mult;
     return QD_OK;
@@ -208,18 +209,18 @@ static qd_status keep(qd_eom *e, const qd_expr **x) {
 
 qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
     size_t N = e->n + e->ncon, w = N + 1;
-    const qd_expr **A = malloc((N * w + 1) * sizeof *A), **acc = calloc(N + 1, sizeof *acc);
+    const qd_expr **A = qd__malloc(ctx, (N * w + 1) * sizeof *A), **acc = qd__calloc(ctx, N + 1, sizeof *acc);
     qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         augmented(ctx, e, A);
     elim el = {ctx, N, w, A, max_ops * GROWTH + 4096, 1};
     if (st == QD_OK && N)
         st = solve_entries(&el, acc, max_ops);
-    free(A);
+    qd__free(A);
     if (st == QD_OK)
         st = keep(e, acc);
     if (st != QD_OK) {
-        free(acc);
+        qd__free(acc);
         solve_error(ctx, st, e->ncon, max_ops);
         return st;
     }
@@ -231,7 +232,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
 static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const qd_expr ***all,
                          size_t *len, size_t *cap) {
     size_t k = qd_free_symbols(ctx, x, NULL, 0);
-    const qd_expr **syms = malloc((k ? k : 1) * sizeof *syms);
+    const qd_expr **syms = qd__malloc(ctx, (k ? k : 1) * sizeof *syms);
     if (!syms)
         return false;
     qd_free_symbols(ctx, x, syms, k);
@@ -241,7 +242,7 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
             continue;
         if (*len == *cap) {
             *cap = *cap ? 2 * *cap : 16;
-            const qd_expr **grown = realloc(*all, *cap * sizeof *grown);
+            const qd_expr **grown = qd__realloc(ctx, *all, *cap * sizeof *grown);
             ok = grown != NULL;
             *all = grown ? grown : *all;
         }
@@ -249,7 +250,7 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
         if (ok)
             (*all)[(*len)++] = syms[i];
     }
-    free(syms);
+    qd__free(syms);
     return ok;
 }
 
@@ -262,9 +263,9 @@ const qd_expr **qd__inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, s
         ok = push_symbols(ctx, exprs[i], &seen, &all, &len, &cap);
     qd_ptrmap_free(&seen);
     if (ok && !all)
-        all = malloc(sizeof *all);
+        all = qd__malloc(ctx, sizeof *all);
     if (!ok || !all) {
-        free(all);
+        qd__free(all);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory compiling the equations of motion");
         return NULL;
     }
@@ -276,9 +277,9 @@ void qd__eom_num_free(qd__eom_num *num) {
     if (!num)
         return;
     qd_prog_free(num->prog);
-    free(num->inputs);
-    free(num->in);
-    free(num->out);
+    qd__free(num->inputs);
+    qd__free(num->in);
+    qd__free(num->out);
     num->prog = NULL;
     num->inputs = NULL;
     num->in = num->out = NULL;
@@ -287,7 +288,7 @@ void qd__eom_num_free(qd__eom_num *num) {
 /* Every output of the program, in the order of qd__out_*. */
 static const qd_expr **outputs(const qd_eom *e, size_t nout) {
     size_t n = e->n, m = e->ncon;
-    const qd_expr **outs = malloc((nout + 1) * sizeof *outs);
+    const qd_expr **outs = qd__mem_malloc(NULL, (nout + 1) * sizeof *outs);
     if (!outs)
         return NULL;
     for (size_t i = 0; i < n * n; i++)
@@ -315,9 +316,9 @@ qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
     num->inputs = qd__inputs(ctx, nout, outs, &num->nin);
     if (num->inputs)
         num->prog = qd_prog_new(ctx, num->nin, num->inputs, nout, outs);
-    free(outs);
-    num->in = malloc((num->nin + 1) * sizeof *num->in);
-    num->out = malloc((nout + 1) * sizeof *num->out);
+    qd__free(outs);
+    num->in = qd__malloc(ctx, (num->nin + 1) * sizeof *num->in);
+    num->out = qd__malloc(ctx, (nout + 1) * sizeof *num->out);
     if (!num->prog || !num->in || !num->out) {
         qd__eom_num_free(num);
         return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
@@ -340,8 +341,8 @@ static void fill_inputs(qd__eom_num *num, size_t nvals, const qd_expr *const *sy
 static qd_status solve_numeric(qd_ctx *ctx, const qd_eom *e, const double *Mv, const double *fv,
                                double *qdd) {
     size_t n = e->n;
-    double *A = malloc((n * n + 1) * sizeof *A);
-    size_t *pc = malloc((n + 1) * sizeof *pc);
+    double *A = qd__malloc(ctx, (n * n + 1) * sizeof *A);
+    size_t *pc = qd__malloc(ctx, (n + 1) * sizeof *pc);
     qd_status st = A && pc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK) {
         for (size_t i = 0; i < n * n; i++)
@@ -353,8 +354,8 @@ static qd_status solve_numeric(qd_ctx *ctx, const qd_eom *e, const double *Mv, c
             qd_ctx_error(ctx, st, "the mass matrix is singular at this state");
         }
     }
-    free(A);
-    free(pc);
+    qd__free(A);
+    qd__free(pc);
     return st;
 }
 

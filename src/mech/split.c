@@ -14,6 +14,7 @@
 
 #include "base/ptrmap.h"
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <stdlib.h>
 
@@ -131,9 +132,9 @@ static const qd_expr *group(qd_ctx *ctx, const vterm *terms, const size_t *order
 
 /* Sort terms by bucket (counting sort), then sum each bucket. */
 static qd_status gather(qd_ctx *ctx, const vterm *terms, size_t nt, size_t nb, qd__vsum *v) {
-    size_t *start = calloc(nb + 1, sizeof *start), *order = malloc(nt * sizeof *order);
-    const qd_expr **scratch = malloc(nt * sizeof *scratch), **groups = malloc(nb * sizeof *groups);
-    const qd_expr **bydeg = malloc(3 * nb * sizeof *bydeg);
+    size_t *start = qd__calloc(ctx, nb + 1, sizeof *start), *order = qd__malloc(ctx, nt * sizeof *order);
+    const qd_expr **scratch = qd__malloc(ctx, nt * sizeof *scratch), **groups = qd__malloc(ctx, nb * sizeof *groups);
+    const qd_expr **bydeg = qd__malloc(ctx, 3 * nb * sizeof *bydeg);
     size_t nd[3] = {0, 0, 0};
     qd_status st = start && order && scratch && groups && bydeg ? QD_OK : QD_ERR_NOMEM;
     for (size_t i = 0; st == QD_OK && i < nt; i++)
@@ -154,11 +155,11 @@ static qd_status gather(qd_ctx *ctx, const vterm *terms, size_t nt, size_t nb, q
             v->deg[d] = qd_add_n(ctx, nd[d], bydeg + d * nb);
         st = v->all && v->deg[0] && v->deg[1] && v->deg[2] ? QD_OK : qd_ctx_status(ctx);
     }
-    free(start);
-    free(order);
-    free(scratch);
-    free(groups);
-    free(bydeg);
+    qd__free(start);
+    qd__free(order);
+    qd__free(scratch);
+    qd__free(groups);
+    qd__free(bydeg);
     return st;
 }
 
@@ -180,8 +181,8 @@ qd_status qd__by_velocity(qd_ctx *ctx, const qd_expr *x, size_t n, const qd_expr
     if (!x)
         return qd_ctx_status(ctx);
     size_t nt = qd_expr_kind(x) == QD_ADD ? qd_expr_nargs(x) : 1, mf = max_factors(x, nt);
-    vterm *terms = malloc(nt * sizeof *terms);
-    sorter s = {ctx, n, qd, malloc(mf * sizeof *s.mono), malloc(mf * sizeof *s.coef)};
+    vterm *terms = qd__malloc(ctx, nt * sizeof *terms);
+    sorter s = {ctx, n, qd, qd__malloc(ctx, mf * sizeof *s.mono), qd__malloc(ctx, mf * sizeof *s.coef)};
     qd_status st = terms && s.mono && s.coef ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = sort_terms(&s, x, nt, terms, v);
@@ -189,9 +190,9 @@ qd_status qd__by_velocity(qd_ctx *ctx, const qd_expr *x, size_t n, const qd_expr
     size_t nb = st == QD_OK ? number_buckets(terms, nt, &ok) : 0;
     if (st == QD_OK)
         st = ok ? gather(ctx, terms, nt, nb, v) : QD_ERR_NOMEM;
-    free(terms);
-    free(s.mono);
-    free(s.coef);
+    qd__free(terms);
+    qd__free(s.mono);
+    qd__free(s.coef);
     return st;
 }
 

@@ -17,6 +17,7 @@
  *   symmetry [NAME:] ...   and   integral [NAME:] EXPR  (symmetry.c)
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -195,9 +196,9 @@ static bool stmt_functions(parser *p) {
         qd_func f;
         if (qd_func_from_name(name, &f))
             return qd__mdl_perr_tok(p, NULL, "'%s' is a built-in function", name);
-        char *copy = malloc(strlen(name) + 1);
+        char *copy = qd__mem_malloc(NULL, strlen(name) + 1);
         if (!copy || !qd__mdl_push((void **)&p->m->funcs, &p->m->nfuncs, sizeof copy, &copy)) {
-            free(copy);
+            qd__free(copy);
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         }
         strcpy(copy, name);
@@ -267,13 +268,13 @@ static int coord_named(parser *p) {
 static bool no_such_coordinate(parser *p) {
     char name[128], hint[192] = "";
     tok_text(p, name, sizeof name);
-    const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
+    const char **names = qd__mem_malloc(NULL, (p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
     const char *near = names ? qd__mdl_nearest(name, strlen(name), names, p->m->ncoords) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
-    free(names);
+    qd__free(names);
     return qd__mdl_perr_tok(p, hint, "'%s' is not a coordinate", name);
 }
 
@@ -375,14 +376,14 @@ static bool stmt_constraint(parser *p) {
     if (qd_is_number(c))
         return qd__mdl_perr(p, off, p->lx.tok.off - off, "a constraint relates coordinates or velocities",
                     qd_is_zero(c) ? "this constraint always holds" : "this constraint can never hold");
-    char *copy = malloc(strlen(name) + 1);
+    char *copy = qd__mem_malloc(NULL, strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
     size_t n = m->ncons;
     if (!copy || !qd__mdl_push((void **)&m->con_names, &n, sizeof copy, &copy) ||
         !qd__mdl_push((void **)&m->cons, &m->ncons, sizeof c, &c) ||
         !add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1})) {
-        free(copy);
+        qd__free(copy);
         return qd__mdl_perr(p, off, 1, NULL, "out of memory");
     }
     return qd__mdl_end_of_statement(p);
@@ -526,7 +527,7 @@ static bool finish(parser *p) {
 }
 
 qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
-    qd_model *m = calloc(1, sizeof *m);
+    qd_model *m = qd__calloc(ctx, 1, sizeof *m);
     if (!m) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return NULL;

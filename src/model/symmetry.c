@@ -13,6 +13,7 @@
  * proposals; checking them is the mechanics layer's job.
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,7 +73,7 @@ static bool add_where(qd_model *m, const char *kind, const char *name, token at)
 }
 
 static char *copy_of(const char *s) {
-    char *c = malloc(strlen(s) + 1);
+    char *c = qd__mem_malloc(NULL, strlen(s) + 1);
     if (c)
         strcpy(c, s);
     return c;
@@ -101,14 +102,14 @@ static bool not_a_coordinate(parser *p) {
     if (t.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, "write: symmetry x -> x + eps, or symmetry delta x = 1",
                         "expected a coordinate, found %s", qd__lex_tk_name(t.kind));
-    const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
+    const char **names = qd__mem_malloc(NULL, (p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
     const char *near = names ? qd__mdl_nearest(p->lx.src + t.off, t.len, names, p->m->ncoords) : NULL;
     char hint[160] = "a symmetry moves the coordinates";
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
-    free(names);
+    qd__free(names);
     return qd__mdl_perr_tok(p, hint, "'%.*s' is not a coordinate", (int)(t.len < 64 ? t.len : 64),
                     p->lx.src + t.off);
 }
@@ -219,7 +220,7 @@ bool qd__mdl_stmt_symmetry(parser *p) {
     p->lx = save;
     if (finite && !eps_free(p, kw))
         return false;
-    const qd_expr **xi = calloc(m->ncoords, sizeof *xi);
+    const qd_expr **xi = qd__mem_calloc(NULL, m->ncoords, sizeof *xi);
     if (!xi)
         return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     bool ok = true;
@@ -242,11 +243,11 @@ bool qd__mdl_stmt_symmetry(parser *p) {
     if (ok && !(s.name = copy_of(name)))
         ok = qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     if (ok && !qd__mdl_push((void **)&m->syms, &m->nsyms, sizeof s, &s)) {
-        free((char *)s.name);
+        qd__free((char *)s.name);
         ok = qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     }
     if (!ok) {
-        free(xi);
+        qd__free(xi);
         return false;
     }
     if (!add_where(m, "symmetry", name, lab.kind == TK_IDENT ? lab : first))
@@ -279,7 +280,7 @@ bool qd__mdl_stmt_integral(parser *p) {
                     "this integral is a constant");
     integral in = {copy_of(name), I};
     if (!in.name || !qd__mdl_push((void **)&m->ints, &m->nints, sizeof in, &in)) {
-        free((char *)in.name);
+        qd__free((char *)in.name);
         return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     }
     if (!add_where(m, "integral", name, lab.kind == TK_IDENT ? lab : (token){TK_EOF, off, len}))

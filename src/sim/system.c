@@ -18,6 +18,7 @@
 
 #include "codegen/cg.h"
 #include "mech/mech.h"
+#include "../base/mem.h"
 
 static double param_value(qd_ctx *ctx, const qd_expr *v) {
     long p, q;
@@ -33,7 +34,7 @@ static double param_value(qd_ctx *ctx, const qd_expr *v) {
 
 static char *dup_printf(const char *a, const char *b, const char *c) {
     size_t len = strlen(a) + strlen(b) + strlen(c) + 1;
-    char *s = malloc(len);
+    char *s = qd__mem_malloc(NULL, len);
     if (s)
         snprintf(s, len, "%s%s%s", a, b, c);
     return s;
@@ -51,18 +52,18 @@ static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
  * pendulum chain's cos(theta_j - theta_k): see src/codegen/angles.c), the
  * rewrite the generated C uses, so both paths compute the same formulas. */
 static qd_prog *compile(qd_sim *s, size_t nout, const qd_expr *const *outs, double **out) {
-    const qd_expr **x = malloc((nout + 1) * sizeof *x);
+    const qd_expr **x = qd__mem_malloc(NULL, (nout + 1) * sizeof *x);
     bool applied;
     qd_prog *p = NULL;
     if (x) {
         memcpy(x, outs, nout * sizeof *x);
         if (qd__cg_angle_sums(s->ctx, nout, x, &applied) == QD_OK)
             p = qd_prog_new(s->ctx, s->nin, s->in_syms, nout, x);
-        free(x);
+        qd__free(x);
     } else {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
     }
-    *out = malloc((nout + 1) * sizeof **out);
+    *out = qd__malloc(s->ctx, (nout + 1) * sizeof **out);
     if (!*out && p) {
         qd_prog_free(p);
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
@@ -76,8 +77,8 @@ static qd_status setup_inputs(qd_sim *s) {
     size_t n = s->n;
     s->np = qd_model_nparams(s->model);
     s->nin = 2 * n + 1 + s->np + s->m;
-    s->in_syms = malloc(s->nin * sizeof *s->in_syms);
-    s->in = calloc(s->nin, sizeof *s->in);
+    s->in_syms = qd__mem_malloc(NULL, s->nin * sizeof *s->in_syms);
+    s->in = qd__mem_calloc(NULL, s->nin, sizeof *s->in);
     if (!s->in_syms || !s->in)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
@@ -102,7 +103,7 @@ static qd_status setup_inputs(qd_sim *s) {
 static qd_status compile_acc(qd_sim *s) {
     const qd_eom *e = s->e;
     size_t n = s->n, m = s->m, k = 0;
-    const qd_expr **outs = malloc((n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
+    const qd_expr **outs = qd__mem_malloc(NULL, (n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n * n; i++)
@@ -123,7 +124,7 @@ static qd_status compile_acc(qd_sim *s) {
         outs[k++] = e->con[i].expr;
     if (s->acc && m)
         s->con = compile(s, k, outs, &s->con_out);
-    free(outs);
+    qd__free(outs);
     return s->acc && (!m || s->con) ? QD_OK : qd_ctx_status(s->ctx);
 }
 
@@ -140,11 +141,11 @@ static qd_status analyse(qd_sim *s) {
     const qd_eom *e = s->e;
     size_t n = s->n;
     const qd_expr *L = e->L, *D = qd_model_dissipation(s->model), *t = qd_time(ctx);
-    const qd_expr **zeros = malloc((n + 1) * sizeof *zeros);
-    s->b_expr = calloc(n + 1, sizeof *s->b_expr);
-    s->force_expr = calloc(n + 1, sizeof *s->force_expr);
+    const qd_expr **zeros = qd__malloc(ctx, (n + 1) * sizeof *zeros);
+    s->b_expr = qd__calloc(ctx, n + 1, sizeof *s->b_expr);
+    s->force_expr = qd__calloc(ctx, n + 1, sizeof *s->force_expr);
     if (!zeros || !s->b_expr || !s->force_expr) {
-        free(zeros);
+        qd__free(zeros);
         return QD_ERR_NOMEM;
     }
     for (size_t j = 0; j < n; j++)
@@ -179,7 +180,7 @@ static qd_status analyse(qd_sim *s) {
     s->has_T = e->T2 != NULL;
     s->T_expr = s->has_T ? qd_add(ctx, qd_add(ctx, e->T2, e->T1), e->T0) : qd_int(ctx, 0);
     s->conservative = !qd_has(L, t) && !forces && !(D && !qd_is_zero(D));
-    free(zeros);
+    qd__free(zeros);
     return qd_ctx_status(ctx) == QD_OK && s->h_expr ? QD_OK : qd_ctx_status(ctx);
 }
 
@@ -187,7 +188,7 @@ static qd_status compile_canonical(qd_sim *s) {
     size_t n = s->n;
     if (!s->canonical)
         return QD_OK;
-    const qd_expr **outs = malloc((n * n + n) * sizeof *outs);
+    const qd_expr **outs = qd__mem_malloc(NULL, (n * n + n) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n * n; i++)
@@ -195,7 +196,7 @@ static qd_status compile_canonical(qd_sim *s) {
     for (size_t i = 0; i < n; i++)
         outs[n * n + i] = s->b_expr[i];
     s->mom = compile(s, n * n + n, outs, &s->mom_out);
-    free(outs);
+    qd__free(outs);
     if (s->mom)
         s->force = compile(s, n, s->force_expr, &s->force_out);
     return s->mom && s->force ? QD_OK : qd_ctx_status(s->ctx);
@@ -203,9 +204,9 @@ static qd_status compile_canonical(qd_sim *s) {
 
 static qd_status make_names(qd_sim *s) {
     size_t n = s->n, k = 0;
-    s->names = calloc(3 * n + 2 + s->m, sizeof *s->names);
-    s->holonomic = calloc(s->m + 1, sizeof *s->holonomic);
-    s->con_err = calloc(s->m + 1, sizeof *s->con_err);
+    s->names = qd__mem_calloc(NULL, 3 * n + 2 + s->m, sizeof *s->names);
+    s->holonomic = qd__mem_calloc(NULL, s->m + 1, sizeof *s->holonomic);
+    s->con_err = qd__mem_calloc(NULL, s->m + 1, sizeof *s->con_err);
     if (!s->names || !s->holonomic || !s->con_err)
         return QD_ERR_NOMEM;
     s->names[k++] = dup_printf("t", "", "");
@@ -232,15 +233,15 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
                                       "coordinates");
         return NULL;
     }
-    qd_sim *s = calloc(1, sizeof *s);
+    qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
     if (!s) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return NULL;
     }
     *s = (qd_sim){.ctx = ctx, .model = m, .e = e, .n = e->n, .m = e->ncon};
     size_t N = s->n + s->m;
-    s->K = malloc((N * N + 2 * N + 4 * s->n + 1) * sizeof *s->K);
-    s->pc = malloc((N + 1) * sizeof *s->pc);
+    s->K = qd__malloc(ctx, (N * N + 2 * N + 4 * s->n + 1) * sizeof *s->K);
+    s->pc = qd__malloc(ctx, (N + 1) * sizeof *s->pc);
     qd_status st = s->K && s->pc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK) {
         s->rhs = s->K + N * N;
@@ -268,37 +269,37 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
 void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
-    free(s->con_err);
+    qd__free(s->con_err);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);
     qd_prog_free(s->force);
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
-    free(s->en_out);
-    free(s->acc_out);
-    free(s->con_out);
-    free(s->mom_out);
-    free(s->force_out);
-    free(s->aux_out);
-    free(s->in_syms);
-    free(s->in);
-    free(s->b_expr);
-    free(s->force_expr);
-    free(s->holonomic);
+    qd__free(s->en_out);
+    qd__free(s->acc_out);
+    qd__free(s->con_out);
+    qd__free(s->mom_out);
+    qd__free(s->force_out);
+    qd__free(s->aux_out);
+    qd__free(s->in_syms);
+    qd__free(s->in);
+    qd__free(s->b_expr);
+    qd__free(s->force_expr);
+    qd__free(s->holonomic);
     for (size_t i = 0; s->names && i < 3 * s->n + 2 + s->m; i++)
-        free(s->names[i]);
-    free(s->names);
+        qd__free(s->names[i]);
+    qd__free(s->names);
     for (size_t i = 0; i < s->nout; i++)
-        free(s->out_name[i]);
-    free(s->out_name);
-    free(s->out_expr);
-    free(s->ev_expr);
-    free(s->guard_expr);
-    free(s->ev);
-    free(s->K);
-    free(s->pc);
-    free(s);
+        qd__free(s->out_name[i]);
+    qd__free(s->out_name);
+    qd__free(s->out_expr);
+    qd__free(s->ev_expr);
+    qd__free(s->guard_expr);
+    qd__free(s->ev);
+    qd__free(s->K);
+    qd__free(s->pc);
+    qd__free(s);
 }
 
 size_t qd_sim_ndof(const qd_sim *s) { return s->n; }
@@ -320,7 +321,7 @@ static bool grow(void **p, size_t *cap, size_t need, size_t size) {
     size_t c = *cap ? 2 * *cap : 8;
     while (c < need)
         c *= 2;
-    void *q = realloc(*p, c * size);
+    void *q = qd__mem_realloc(NULL, *p, c * size);
     if (!q)
         return false;
     *p = q;
@@ -377,12 +378,12 @@ qd_status qd__aux_compile(qd_sim *s) {
         return QD_OK;
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
-    free(s->aux_out);
-    free(s->en_out);
+    qd__free(s->aux_out);
+    qd__free(s->en_out);
     s->aux = s->en = NULL;
     s->aux_out = s->en_out = NULL;
     size_t total = qd__aux_guard(s) + s->nguard, k = 0;
-    const qd_expr **outs = malloc((total + 1) * sizeof *outs);
+    const qd_expr **outs = qd__mem_malloc(NULL, (total + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     outs[k++] = s->h_expr;
@@ -404,7 +405,7 @@ qd_status qd__aux_compile(qd_sim *s) {
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
         s->en = compile(s, 2, outs, &s->en_out);
-    free(outs);
+    qd__free(outs);
     s->aux_ready = s->aux != NULL && (k == 2 + s->m || s->en != NULL);
     return s->aux_ready ? QD_OK : qd_ctx_status(s->ctx);
 }

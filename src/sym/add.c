@@ -71,7 +71,7 @@ static const qd_expr *with_coeff(qd_ctx *ctx, const term *t, const qd_expr *c) {
 static bool push(term **v, size_t *n, size_t *cap, const qd_expr *node, const qd_expr *coeff) {
     if (*n == *cap) {
         size_t c = *cap ? *cap * 2 : 16;
-        term *nv = realloc(*v, c * sizeof *nv);
+        term *nv = qd__mem_realloc(NULL, *v, c * sizeof *nv);
         if (!nv)
             return false;
         *v = nv;
@@ -102,7 +102,7 @@ static bool sort_terms(term *v, size_t n) {
         qsort(v, n, sizeof *v, term_cmp);
         return true;
     }
-    term *tmp = malloc(n * sizeof *tmp);
+    term *tmp = qd__mem_malloc(NULL, n * sizeof *tmp);
     if (!tmp)
         return false;
     size_t i = 0, j = k, m = 0;
@@ -113,7 +113,7 @@ static bool sort_terms(term *v, size_t n) {
     while (j < n)
         tmp[m++] = v[j++];
     memcpy(v, tmp, n * sizeof *v);
-    free(tmp);
+    qd__free(tmp);
     return true;
 }
 
@@ -151,21 +151,21 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
         }
     }
     if (!ok) {
-        free(v);
+        qd__free(v);
         if (ctx->status == QD_OK)
             qd__oom(ctx);
         return NULL;
     }
     if (!sort_terms(v, len)) {
-        free(v);
+        qd__free(v);
         qd__oom(ctx);
         return NULL;
     }
 
     /* Merge runs of one key, rebuild, drop zeros; write in place. */
-    const qd_expr **out = malloc((len + 1) * sizeof *out);
+    const qd_expr **out = qd__malloc(ctx, (len + 1) * sizeof *out);
     if (!out) {
-        free(v);
+        qd__free(v);
         qd__oom(ctx);
         return NULL;
     }
@@ -197,8 +197,8 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
             r = qd__intern(ctx, &proto, m, out);
         }
     }
-    free(out);
-    free(v);
+    qd__free(out);
+    qd__free(v);
     return r;
 }
 

@@ -59,7 +59,7 @@ static double value(walk *w, const qd_expr *e);
 static double remember(walk *w, const qd_expr *e, double v) {
     if (w->n == w->cap) {
         size_t cap = w->cap ? 2 * w->cap : 256;
-        double *s = realloc(w->store, cap * sizeof *s);
+        double *s = qd__mem_realloc(NULL, w->store, cap * sizeof *s);
         if (!s) {
             w->st = QD_ERR_NOMEM;
             return v;
@@ -126,7 +126,7 @@ qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const 
         remember(&w, syms[i], vals[i]);
     *out = value(&w, e);
     qd_ptrmap_free(&w.vals);
-    free(w.store);
+    qd__free(w.store);
     if (w.st == QD_ERR_NOMEM)
         qd__oom(ctx);
     return w.st;

@@ -29,6 +29,7 @@
 #include "qdot/expr.h"
 #include "../base/arena.h"
 #include "../base/ptrmap.h"
+#include "../base/mem.h"
 
 struct qd_expr {
     uint64_t hash;
@@ -59,6 +60,7 @@ typedef struct qd_symtab_entry {
 } qd_symtab_entry;
 
 struct qd_ctx {
+    const qd_allocator *alloc;   /* NULL: the C library's (mem.h) */
     qd_arena arena;
     /* unique table: open addressing over node pointers */
     const qd_expr **table;

@@ -7,6 +7,7 @@
  * made until the result is converted back.
  */
 #include "poly.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -27,16 +28,16 @@ void qd_poly_free(qd_poly *p) {
         return;
     for (size_t i = 0; i < p->nbig; i++) {
         mpq_clear(p->bigs[i]);
-        free(p->bigs[i]);
+        qd__free(p->bigs[i]);
     }
-    free(p->bigs);
-    free(p->terms);
-    free(p->pool);
-    free(p);
+    qd__free(p->bigs);
+    qd__free(p->terms);
+    qd__free(p->pool);
+    qd__free(p);
 }
 
 qd_poly *qd_poly_zero(qd_ctx *ctx) {
-    qd_poly *p = calloc(1, sizeof *p);
+    qd_poly *p = qd__calloc(ctx, 1, sizeof *p);
     if (!p)
         qd__oom(ctx);
     return p;
@@ -48,7 +49,7 @@ static bool grow(void **v, size_t *cap, size_t need, size_t size) {
     size_t c = *cap ? *cap : 8;
     while (c < need)
         c *= 2;
-    void *nv = realloc(*v, c * size);
+    void *nv = qd__mem_realloc(NULL, *v, c * size);
     if (!nv)
         return false;
     *v = nv;
@@ -60,7 +61,7 @@ static bool grow(void **v, size_t *cap, size_t need, size_t size) {
 static long new_big(qd_poly *p) {
     if (!grow((void **)&p->bigs, &p->bigcap, p->nbig + 1, sizeof *p->bigs))
         return -1;
-    mpq_ptr q = malloc(sizeof *q);
+    mpq_ptr q = qd__mem_malloc(NULL, sizeof *q);
     if (!q)
         return -1;
     mpq_init(q);
@@ -266,8 +267,8 @@ static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
     while (cap < 2 * expect && cap < ((size_t)1 << 26))
         cap *= 2;
     b->ctx = ctx;
-    b->out = calloc(1, sizeof *b->out);
-    b->slot = calloc(cap, sizeof *b->slot);
+    b->out = qd__calloc(ctx, 1, sizeof *b->out);
+    b->slot = qd__calloc(ctx, cap, sizeof *b->slot);
     b->mask = cap - 1;
     mpq_inits(b->tmp, b->prod, b->tmp2, NULL);
     if (!b->out || !b->slot) {
@@ -278,7 +279,7 @@ static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
 }
 
 static void pb_release(pbuild *b) {
-    free(b->slot);
+    qd__free(b->slot);
     b->slot = NULL;
     mpq_clears(b->tmp, b->prod, b->tmp2, NULL);
 }
@@ -291,7 +292,7 @@ static void pb_fail(pbuild *b) {
 
 static bool pb_rehash(pbuild *b) {
     size_t cap = (b->mask + 1) * 2;
-    uint32_t *slot = calloc(cap, sizeof *slot);
+    uint32_t *slot = qd__mem_calloc(NULL, cap, sizeof *slot);
     if (!slot)
         return false;
     for (size_t t = 0; t < b->out->n; t++) {
@@ -300,7 +301,7 @@ static bool pb_rehash(pbuild *b) {
             i = (i + 1) & (cap - 1);
         slot[i] = (uint32_t)t + 1;
     }
-    free(b->slot);
+    qd__free(b->slot);
     b->slot = slot;
     b->mask = cap - 1;
     return true;
@@ -462,12 +463,12 @@ qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
         pb_fail(&b);
         return NULL;
     }
-    qd_pvar *m = need <= 64 ? stack : malloc(need * sizeof *m);
+    qd_pvar *m = need <= 64 ? stack : qd__malloc(ctx, need * sizeof *m);
     if (!m)
         qd__oom(ctx);
     bool ok = m && mul_into(&b, x, y, m);
     if (m != stack)
-        free(m);
+        qd__free(m);
     if (!ok) {
         pb_fail(&b);
         return NULL;
@@ -500,7 +501,7 @@ static cval cv_pow(cval c, long n, mpq_ptr out) {
 static qd_poly *mono_pow(qd_ctx *ctx, const qd_poly *a, long n) {
     const qd_pterm *t = &a->terms[0];
     qd_pvar stack[64];
-    qd_pvar *m = t->len <= 64 ? stack : malloc(t->len * sizeof *m);
+    qd_pvar *m = t->len <= 64 ? stack : qd__malloc(ctx, t->len * sizeof *m);
     if (!m) {
         qd__oom(ctx);
         return NULL;
@@ -520,7 +521,7 @@ static qd_poly *mono_pow(qd_ctx *ctx, const qd_poly *a, long n) {
         qd_ctx_error(ctx, QD_ERR_TOOBIG, "exponent overflow in expansion");
     }
     if (m != stack)
-        free(m);
+        qd__free(m);
     return r;
 }
 

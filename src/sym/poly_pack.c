@@ -11,6 +11,7 @@
  * general way in poly.c.
  */
 #include "poly.h"
+#include "../base/mem.h"
 
 #include <stdlib.h>
 
@@ -114,8 +115,8 @@ static size_t home(const table *tb, uint64_t w) {
 }
 
 static bool tb_init(table *tb, size_t cap) {
-    tb->key = malloc(cap * sizeof *tb->key);
-    tb->coef = malloc(cap * sizeof *tb->coef);
+    tb->key = qd__mem_malloc(NULL, cap * sizeof *tb->key);
+    tb->coef = qd__mem_malloc(NULL, cap * sizeof *tb->coef);
     tb->mask = cap - 1;
     tb->len = 0;
     tb->shift = 64;
@@ -129,8 +130,8 @@ static bool tb_init(table *tb, size_t cap) {
 }
 
 static void tb_free(table *tb) {
-    free(tb->key);
-    free(tb->coef);
+    qd__free(tb->key);
+    qd__free(tb->coef);
 }
 
 static bool tb_grow(table *tb) {
@@ -202,8 +203,8 @@ static qd_poly *unpack(qd_ctx *ctx, const plan *pl, const table *tb) {
 }
 
 static bool pack_all(const plan *pl, const qd_poly *p, int side, uint64_t **w, int64_t **c) {
-    *w = malloc((p->n + 1) * sizeof **w);
-    *c = malloc((p->n + 1) * sizeof **c);
+    *w = qd__mem_malloc(NULL, (p->n + 1) * sizeof **w);
+    *c = qd__mem_malloc(NULL, (p->n + 1) * sizeof **c);
     if (!*w || !*c)
         return false;
     for (size_t t = 0; t < p->n; t++) {
@@ -233,17 +234,17 @@ qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, boo
     else if (st < 0)
         qd__oom(ctx);
     *done = st != 0;
-    free(wx), free(wy), free(cx), free(cy);
+    qd__free(wx), qd__free(wy), qd__free(cx), qd__free(cy);
     tb_free(&tb);
     return r;
 }
 
 /* The nonzero entries of tb as arrays (for the next multiplication). */
 static bool harvest(const table *tb, uint64_t **w, int64_t **c, size_t *n) {
-    free(*w);
-    free(*c);
-    *w = malloc((tb->len + 1) * sizeof **w);
-    *c = malloc((tb->len + 1) * sizeof **c);
+    qd__free(*w);
+    qd__free(*c);
+    *w = qd__mem_malloc(NULL, (tb->len + 1) * sizeof **w);
+    *c = qd__mem_malloc(NULL, (tb->len + 1) * sizeof **c);
     if (!*w || !*c)
         return false;
     *n = 0;
@@ -282,7 +283,7 @@ qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done) {
     else if (st < 0)
         qd__oom(ctx);
     *done = st != 0;
-    free(wa), free(wx), free(ca), free(cx);
+    qd__free(wa), qd__free(wx), qd__free(ca), qd__free(cx);
     tb_free(&tb);
     return r;
 }
