@@ -164,7 +164,7 @@ static void indent(qd_buf *out, const char *text) {
  * lhs_fmt % index. */
 static qd_status block(gen *g, const src *s, size_t nout, const qd_expr *const *out,
                        const char *lhs_fmt) {
-    walk w = {QD_PTRMAP_INIT, NULL, 0, 0, NULL, false};
+    walk w = {QD_PTRMAP_AL(qd__ctx_allocator(g->ctx)), NULL, 0, 0, NULL, false};
     qd_buf text = QD_BUF_INIT;
     for (size_t i = 0; i < nout; i++)
         collect(&w, out[i]);

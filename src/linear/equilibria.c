@@ -48,7 +48,7 @@ static void mark_angles(const qd_expr *x, const qd_eom *e, bool *angle, qd_ptrma
 qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi) {
     (void)ctx;
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     for (size_t j = 0; j < e->n; j++)
         angle[j] = false;
     for (size_t j = 0; j < e->n; j++)

@@ -255,7 +255,7 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
 }
 
 const qd_expr **qd__inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin) {
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr **all = NULL;
     size_t len = 0, cap = 0;
     bool ok = true;

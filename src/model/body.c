@@ -231,12 +231,12 @@ bool qd__mdl_stmt_body(parser *p) {
     m->T = m->T ? qd_add(C(p), m->T, T) : T;
     if (!m->T)
         return qd__mdl_perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
-    char *name = qd__mem_malloc(NULL, at.len + 1), what[80];
+    char *name = qd__malloc(p->ctx, at.len + 1), what[80];
     if (name)
         snprintf(name, at.len + 1, "%.*s", (int)at.len, p->lx.src + at.off);
     b.name = name;
     snprintf(what, sizeof what, "body:%.70s", name ? name : "");
-    if (!name || !qd__mdl_push((void **)&m->bodies, &m->nbodies, sizeof b, &b)) {
+    if (!name || !qd__mdl_push(m->ctx, (void **)&m->bodies, &m->nbodies, sizeof b, &b)) {
         qd__free(name);
         return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     }
@@ -263,7 +263,7 @@ static const body *expect_body(parser *p, const char *what) {
     char word[64], hint[128];
     size_t n = p->lx.tok.len < 63 ? p->lx.tok.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + p->lx.tok.off);
-    const char **names = qd__mem_malloc(NULL, (m->nbodies + 1) * sizeof *names);
+    const char **names = qd__malloc(p->ctx, (m->nbodies + 1) * sizeof *names);
     for (size_t i = 0; names && i < m->nbodies; i++)
         names[i] = m->bodies[i].name;
     const char *near = names ? qd__mdl_nearest(word, n, names, m->nbodies) : NULL;

@@ -38,7 +38,7 @@ bool qd__mdl_stmt_momenta(parser *p) {
     if (m->ncoords == 0)
         return qd__mdl_perr(p, kw.off, kw.len, "declare the coordinates first: coordinates q1, q2",
                     "momenta before any coordinates");
-    const qd_expr **mom = qd__mem_calloc(NULL, m->ncoords, sizeof *mom);
+    const qd_expr **mom = qd__calloc(p->ctx, m->ncoords, sizeof *mom);
     if (!mom)
         return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     size_t n = 0;

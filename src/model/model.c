@@ -8,13 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-bool qd__mdl_push(void **arr, size_t *n, size_t size, const void *item) {
+bool qd__mdl_push(qd_ctx *ctx, void **arr, size_t *n, size_t size, const void *item) {
     /* grow by doubling; capacity is implied by n (powers of two) */
     size_t cap = 1;
     while (cap < *n)
         cap *= 2;
     if (*n == 0 || *n == cap) {
-        void *a = qd__mem_realloc(NULL, *arr, (*n ? 2 * cap : 4) * size);
+        void *a = qd__realloc(ctx, *arr, (*n ? 2 * cap : 4) * size);
         if (!a)
             return false;
         *arr = a;
@@ -32,12 +32,12 @@ const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n) {
 }
 
 bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len) {
-    char *copy = qd__mem_malloc(NULL, strlen(name) + 1);
+    char *copy = qd__malloc(m->ctx, strlen(name) + 1);
     if (!copy)
         return false;
     strcpy(copy, name);
     def d = {copy, v, off, len};
-    if (!qd__mdl_push((void **)&m->defs, &m->ndefs, sizeof d, &d)) {
+    if (!qd__mdl_push(m->ctx, (void **)&m->defs, &m->ndefs, sizeof d, &d)) {
         qd__free(copy);
         return false;
     }
@@ -49,7 +49,7 @@ bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len) {
     snprintf(w.what, sizeof w.what, "%s", what);
     w.off = off;
     w.len = len;
-    return qd__mdl_push((void **)&m->wheres, &m->nwheres, sizeof w, &w);
+    return qd__mdl_push(m->ctx, (void **)&m->wheres, &m->nwheres, sizeof w, &w);
 }
 
 int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym) {

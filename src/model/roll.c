@@ -301,15 +301,15 @@ static bool add_constraint(parser *p, const rolling *r, const char *name, E e) {
     qd_model *m = p->m;
     char what[96];
     snprintf(what, sizeof what, "constraint:%.80s", name);
-    char *copy = qd__mem_malloc(NULL, strlen(name) + 1);
+    char *copy = qd__malloc(p->ctx, strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
     size_t n = m->ncons;
-    if (!copy || !qd__mdl_push((void **)&m->con_names, &n, sizeof copy, &copy)) {
+    if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy)) {
         qd__free(copy);
         return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
     }
-    if (!qd__mdl_push((void **)&m->cons, &m->ncons, sizeof e, &e)) {
+    if (!qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof e, &e)) {
         m->con_names[n - 1] = NULL;
         qd__free(copy);
         return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
@@ -518,7 +518,7 @@ static bool parse_body(parser *p, rolling *r) {
     size_t n = r->name.len < 63 ? r->name.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + r->name.off);
     if (!r->b) {
-        const char **names = qd__mem_malloc(NULL, (m->nbodies + 1) * sizeof *names);
+        const char **names = qd__malloc(p->ctx, (m->nbodies + 1) * sizeof *names);
         for (size_t i = 0; names && i < m->nbodies; i++)
             names[i] = m->bodies[i].name;
         const char *near = names ? qd__mdl_nearest(word, n, names, m->nbodies) : NULL;

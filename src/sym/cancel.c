@@ -85,7 +85,7 @@ static bool collect(cc *c, const qd_expr *e) {
         return true;
     if (c->ngens == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 16;
-        const qd_expr **v = qd__mem_realloc(NULL, c->gens, cap * sizeof *v);
+        const qd_expr **v = qd__realloc(c->ctx, c->gens, cap * sizeof *v);
         if (!v)
             return false;
         c->gens = v;
@@ -214,9 +214,9 @@ static bool to_frac(cc *c, const qd_expr *e, frac *f) {
 
 static const qd_expr *from_poly(cc *c, const fmpz_mpoly_t p) {
     slong len = fmpz_mpoly_length(p, c->m);
-    const qd_expr **terms = qd__mem_malloc(NULL, ((size_t)len + 1) * sizeof *terms);
-    const qd_expr **fs = qd__mem_malloc(NULL, (c->ngens + 1) * sizeof *fs);
-    slong *exps = qd__mem_malloc(NULL, c->ngens * sizeof *exps);
+    const qd_expr **terms = qd__malloc(c->ctx, ((size_t)len + 1) * sizeof *terms);
+    const qd_expr **fs = qd__malloc(c->ctx, (c->ngens + 1) * sizeof *fs);
+    slong *exps = qd__malloc(c->ctx, c->ngens * sizeof *exps);
     const qd_expr *r = NULL;
     if (!terms || !fs || !exps) {
         qd__oom(c->ctx);
@@ -343,7 +343,7 @@ static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo
 const qd_expr *qd_cancel(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_INIT;
+    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = cancel_expr(ctx, e, &memo);
     qd_ptrmap_free(&memo);
     return r;

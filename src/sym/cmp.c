@@ -222,7 +222,7 @@ static int cmp_ptr(const void *a, const void *b) {
 size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_t cap) {
     if (!e)
         return 0;
-    qd_ptrmap seen = QD_PTRMAP_INIT, syms = QD_PTRMAP_INIT;
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx)), syms = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     symbols_rec(e, &seen, &syms);
     size_t n = 0;
     const qd_expr **all = syms.len ? qd__alloc(ctx, syms.len * sizeof *all) : NULL;

@@ -98,8 +98,8 @@ static qd_status place_term(lin *L, const qd_poly *p, size_t t, const qd_expr *c
 static qd_status lin_setup(lin *L, qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
     qd__xs_init(&L->s, ctx);
     L->n = n;
-    L->marked = (qd_ptrmap)QD_PTRMAP_INIT;
-    L->memo = (qd_ptrmap)QD_PTRMAP_INIT;
+    L->marked = (qd_ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    L->memo = (qd_ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     L->slot = NULL;
     L->parts = qd__calloc(ctx, n + 1, sizeof *L->parts);
     L->xvar = qd__malloc(ctx, (n + 1) * sizeof *L->xvar);

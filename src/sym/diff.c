@@ -175,7 +175,7 @@ static const qd_expr *d(deriv *dv, const qd_expr *e) {
 static const qd_expr *derive(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
     if (!e)
         return NULL;
-    deriv dv = {ctx, x, QD_PTRMAP_INIT};
+    deriv dv = {ctx, x, QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
     const qd_expr *r = d(&dv, e);
     qd_ptrmap_free(&dv.memo);
     return r;

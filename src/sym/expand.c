@@ -44,13 +44,13 @@ void qd__xs_free(qd_xsess *s) {
     qd_ptrmap_free(&s->genix);
 }
 
-static bool grow(void **v, size_t *cap, size_t need, size_t size) {
+static bool grow(qd_ctx *ctx, void **v, size_t *cap, size_t need, size_t size) {
     if (need <= *cap)
         return true;
     size_t c = *cap ? *cap * 2 : 16;
     while (c < need)
         c *= 2;
-    void *nv = qd__mem_realloc(NULL, *v, c * size);
+    void *nv = qd__realloc(ctx, *v, c * size);
     if (!nv)
         return false;
     *v = nv;
@@ -61,7 +61,7 @@ static bool grow(void **v, size_t *cap, size_t need, size_t size) {
 bool qd__xs_own(qd_xsess *s, qd_poly *p) {
     if (!p)
         return false;
-    if (!grow((void **)&s->owned, &s->ocap, s->nowned + 1, sizeof *s->owned)) {
+    if (!grow(s->ctx, (void **)&s->owned, &s->ocap, s->nowned + 1, sizeof *s->owned)) {
         qd_poly_free(p);
         qd__oom(s->ctx);
         return false;
@@ -74,7 +74,7 @@ long qd__xs_gen(qd_xsess *s, const qd_expr *g) {
     void *v = qd_ptrmap_get(&s->genix, g);
     if (v)
         return (long)((uintptr_t)v - 1);
-    if (!grow((void **)&s->gens, &s->gcap, s->ngens + 1, sizeof *s->gens) ||
+    if (!grow(s->ctx, (void **)&s->gens, &s->gcap, s->ngens + 1, sizeof *s->gens) ||
         !qd_ptrmap_put(&s->genix, g, (void *)(uintptr_t)(s->ngens + 1))) {
         qd__oom(s->ctx);
         return -1;
@@ -104,7 +104,7 @@ static qd_poly *gen_poly(qd_xsess *s, const qd_expr *g, long k) {
 }
 
 static const qd_poly *sum_poly(qd_xsess *s, const qd_expr *e) {
-    const qd_poly **ps = qd__mem_malloc(NULL, e->nargs * sizeof *ps);
+    const qd_poly **ps = qd__malloc(s->ctx, e->nargs * sizeof *ps);
     qd_poly *r = NULL;
     if (!ps) {
         qd__oom(s->ctx);
@@ -192,7 +192,7 @@ static const qd_poly *pow_poly(qd_xsess *s, const qd_expr *e) {
 /* A call: a generator once its arguments are expanded. */
 static const qd_poly *call_poly(qd_xsess *s, const qd_expr *e) {
     const qd_expr *stack[8];
-    const qd_expr **args = e->nargs <= 8 ? stack : qd__mem_malloc(NULL, e->nargs * sizeof *args);
+    const qd_expr **args = e->nargs <= 8 ? stack : qd__malloc(s->ctx, e->nargs * sizeof *args);
     if (!args) {
         qd__oom(s->ctx);
         return NULL;
@@ -244,7 +244,7 @@ static const qd_expr *gen_pow(qd_xsess *s, uint32_t var, int32_t exp) {
     uint64_t key = (uint64_t)var << 32 | (uint32_t)exp;
     if (2 * (s->powlen + 1) > s->powcap) {
         size_t cap = s->powcap ? 2 * s->powcap : 64;
-        qd_powslot *ns = qd__mem_calloc(NULL, cap, sizeof *ns);
+        qd_powslot *ns = qd__calloc(s->ctx, cap, sizeof *ns);
         if (!ns) {
             qd__oom(s->ctx);
             return NULL;
@@ -358,8 +358,8 @@ static int node_cmp(const void *a, const void *b) {
  * constant: then factors compare by generator, then numerically by
  * exponent, exactly as qd_expr_cmp orders g^k. */
 static uint32_t *gen_ranks(qd_xsess *s, const qd_poly *p) {
-    uint32_t *rank = qd__mem_malloc(NULL, (s->ngens + 1) * sizeof *rank), nused = 0;
-    const qd_expr **used = qd__mem_malloc(NULL, (s->ngens + 1) * sizeof *used);
+    uint32_t *rank = qd__malloc(s->ctx, (s->ngens + 1) * sizeof *rank), nused = 0;
+    const qd_expr **used = qd__malloc(s->ctx, (s->ngens + 1) * sizeof *used);
     if (!rank || !used)
         goto fail;
     for (size_t g = 0; g < s->ngens; g++)
@@ -385,10 +385,10 @@ fail:
 /* The terms of p in canonical order (when it can be read off cheaply), so
  * that qd_add_n finds them sorted; else in table order. */
 static uint32_t *term_order(qd_xsess *s, const qd_poly *p) {
-    uint32_t *order = qd__mem_malloc(NULL, p->n * sizeof *order);
+    uint32_t *order = qd__malloc(s->ctx, p->n * sizeof *order);
     uint32_t *rank = order ? gen_ranks(s, p) : NULL;
-    tkey *keys = rank ? qd__mem_malloc(NULL, p->n * sizeof *keys) : NULL;
-    qd_pvar *buf = keys ? qd__mem_malloc(NULL, (p->plen + 1) * sizeof *buf) : NULL;
+    tkey *keys = rank ? qd__malloc(s->ctx, p->n * sizeof *keys) : NULL;
+    qd_pvar *buf = keys ? qd__malloc(s->ctx, (p->plen + 1) * sizeof *buf) : NULL;
     for (size_t t = 0; order && t < p->n; t++)
         order[t] = (uint32_t)t;
     if (buf) {

@@ -162,7 +162,7 @@ static const qd_expr *post_factor(qd_ctx *ctx, const qd_expr *e, void *data) {
 const qd_expr *qd_factor_terms(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_INIT;
+    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = qd__map(ctx, e, &memo, post_factor, NULL);
     qd_ptrmap_free(&memo);
     return r;

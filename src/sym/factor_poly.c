@@ -119,12 +119,12 @@ typedef struct gens {
     size_t n, cap;
 } gens;
 
-static bool gens_add(gens *g, const qd_expr *x) {
+static bool gens_add(qd_ctx *ctx, gens *g, const qd_expr *x) {
     if (qd_ptrmap_has(&g->idx, x))
         return true;
     if (g->n == g->cap) {
         size_t cap = g->cap ? 2 * g->cap : 16;
-        const qd_expr **v = qd__mem_realloc(NULL, g->v, cap * sizeof *v);
+        const qd_expr **v = qd__realloc(ctx, g->v, cap * sizeof *v);
         if (!v)
             return false;
         g->v = v;
@@ -182,7 +182,7 @@ static bool build_poly(fsum *s, const size_t *sel, size_t k, gens *g, fmpz_mpoly
     mpz_set_ui(lcm, 1);
     for (size_t i = 0; i < k; i++)
         mpz_lcm(lcm, lcm, mpq_denref(s->t[sel[i]].coeff->u.q));
-    ulong *exps = qd__mem_calloc(NULL, g->n ? g->n : 1, sizeof *exps);
+    ulong *exps = qd__calloc(s->ctx, g->n ? g->n : 1, sizeof *exps);
     if (!exps)
         return false;
     fmpz_t c;
@@ -221,9 +221,9 @@ static bool build_poly(fsum *s, const size_t *sel, size_t k, gens *g, fmpz_mpoly
  * monomial, which q (no monomial content) does not have.  (Most sums in
  * derivations are of this kind, and FLINT's factorization over dozens of
  * generators is not cheap.) */
-static bool plainly_irreducible(const fmpz_mpoly_t q, const fmpz_mpoly_ctx_t m, size_t nvars) {
+static bool plainly_irreducible(qd_ctx *ctx, const fmpz_mpoly_t q, const fmpz_mpoly_ctx_t m, size_t nvars) {
     slong len = fmpz_mpoly_length(q, m);
-    slong *degs = qd__mem_malloc(NULL, nvars * sizeof *degs);
+    slong *degs = qd__malloc(ctx, nvars * sizeof *degs);
     if (!degs)
         return false;
     fmpz_mpoly_degrees_si(degs, q, m);
@@ -275,7 +275,7 @@ static bool factor_poly(qd_ctx *ctx, const gens *g, const fmpz_mpoly_t p,
     fmpz_mpoly_divides(q, p, c, m);
     bool trivial = fmpz_mpoly_is_one(c, m);
     bool split = fmpz_mpoly_total_degree_si(q, m) >= 2 && fmpz_mpoly_length(q, m) >= 2 &&
-                 !plainly_irreducible(q, m, g->n) && fmpz_mpoly_factor(f, q, m);
+                 !plainly_irreducible(ctx, q, m, g->n) && fmpz_mpoly_factor(f, q, m);
     slong len = split ? fmpz_mpoly_factor_length(f, m) : 0, mult = 0;
     for (slong i = 0; i < len; i++)
         mult += fmpz_mpoly_factor_get_exp_si(f, i, m);
@@ -340,7 +340,7 @@ static bool ops_with(fsum *s, const size_t *sel, size_t k, const qd_expr *r, siz
     if (!r)
         return true;
     size_t n = 0;
-    const qd_expr **v = qd__mem_malloc(NULL, (s->n + s->nextra + 1) * sizeof *v);
+    const qd_expr **v = qd__malloc(s->ctx, (s->n + s->nextra + 1) * sizeof *v);
     if (!v)
         return false;
     for (size_t i = 0; i < s->n; i++) {
@@ -380,8 +380,8 @@ static bool accept(fsum *s, const size_t *sel, size_t k, const qd_expr *a, const
 
 /* Parts of sel that share no generator, each tried on its own. */
 static bool try_parts(fsum *s, size_t *sel, size_t k, const qd_expr *den, gens *g, int depth) {
-    size_t *root = qd__mem_malloc(NULL, g->n * sizeof *root), *gen_of_term = qd__mem_malloc(NULL, k * sizeof *gen_of_term);
-    size_t *part = qd__mem_malloc(NULL, k * sizeof *part);
+    size_t *root = qd__malloc(s->ctx, g->n * sizeof *root), *gen_of_term = qd__malloc(s->ctx, k * sizeof *gen_of_term);
+    size_t *part = qd__malloc(s->ctx, k * sizeof *part);
     bool ok = root && gen_of_term && part;
     if (!ok)
         goto done;
@@ -436,7 +436,7 @@ done:
 
 /* Factor the terms sel[0..k) over their shared denominator den. */
 static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int depth) {
-    gens g = {QD_PTRMAP_INIT, NULL, 0, 0};
+    gens g = {QD_PTRMAP_AL(qd__ctx_allocator(s->ctx)), NULL, 0, 0};
     bool ok = true;
     for (size_t i = 0; i < k && ok; i++) {
         const fterm *t = &s->t[sel[i]];
@@ -445,7 +445,7 @@ static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int dept
             const qd_expr *f = factor_at(node, t, j);
             long e;
             if (!neg_power(f))
-                ok = gens_add(&g, gen_of(f, &e));
+                ok = gens_add(s->ctx, &g, gen_of(f, &e));
         }
     }
     if (!ok || g.n == 0)
@@ -504,7 +504,7 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
     s.ops = qd_count_ops(e);
     /* each group: the exact, bounded terms over one denominator, chained
      * through next[] from the group's first term */
-    qd_ptrmap last = QD_PTRMAP_INIT; /* den -> its latest term + 1 */
+    qd_ptrmap last = QD_PTRMAP_AL(qd__ctx_allocator(ctx)); /* den -> its latest term + 1 */
     for (size_t i = 0; i < n; i++) {
         next[i] = SIZE_MAX;
         if (!s.t[i].ok)

@@ -65,10 +65,10 @@ static const qd_expr *distribute(qd_ctx *ctx, const qd_expr *c, const qd_expr *s
     return r;
 }
 
-static bool push(factor **v, size_t *n, size_t *cap, const qd_expr *e) {
+static bool push(qd_ctx *ctx, factor **v, size_t *n, size_t *cap, const qd_expr *e) {
     if (*n == *cap) {
         size_t c = *cap ? *cap * 2 : 16;
-        factor *nv = qd__mem_realloc(NULL, *v, c * sizeof *nv);
+        factor *nv = qd__realloc(ctx, *v, c * sizeof *nv);
         if (!nv)
             return false;
         *v = nv;
@@ -91,12 +91,12 @@ static bool gather(qd_ctx *ctx, size_t n, const qd_expr *const *xs, const qd_exp
                 if (qd__is_num(x->args[j])) {
                     if (!(*coeff = qd__num_mul(ctx, *coeff, x->args[j])))
                         return false;
-                } else if (!push(v, len, cap, x->args[j])) {
+                } else if (!push(ctx, v, len, cap, x->args[j])) {
                     qd__oom(ctx);
                     return false;
                 }
             }
-        } else if (!push(v, len, cap, x)) {
+        } else if (!push(ctx, v, len, cap, x)) {
             qd__oom(ctx);
             return false;
         }

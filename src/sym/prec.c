@@ -75,7 +75,7 @@ void qd__split_free(qd_split *s) {
 void qd__put_mpz(qd_buf *b, mpz_srcptr z) {
     char stack[64];
     size_t n = mpz_sizeinbase(z, 10) + 2;
-    char *s = n <= sizeof stack ? stack : qd__mem_malloc(NULL, n);
+    char *s = n <= sizeof stack ? stack : qd__mem_malloc(b->alloc, n);
     if (!s) {
         b->failed = true;
         return;

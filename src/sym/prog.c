@@ -97,7 +97,7 @@ static void *grow(comp *c, void *arr, size_t *cap, size_t need, size_t size) {
     size_t n = *cap ? 2 * *cap : 64;
     while (n < need)
         n *= 2;
-    void *p = qd__mem_realloc(NULL, arr, n * size);
+    void *p = qd__realloc(c->ctx, arr, n * size);
     if (!p) {
         c->oom = true;
         return NULL;
@@ -485,9 +485,9 @@ static void reassign(qd_prog *p, uint32_t nfixed, size_t *last, uint32_t *map, u
     p->nreg = top;
 }
 
-static bool reuse_registers(qd_prog *p, uint32_t nfixed) {
-    size_t n = p->nreg, *last = qd__mem_calloc(NULL, n, sizeof *last);
-    uint32_t *map = qd__mem_malloc(NULL, n * sizeof *map), *freel = qd__mem_malloc(NULL, n * sizeof *freel);
+static bool reuse_registers(qd_ctx *ctx, qd_prog *p, uint32_t nfixed) {
+    size_t n = p->nreg, *last = qd__calloc(ctx, n, sizeof *last);
+    uint32_t *map = qd__malloc(ctx, n * sizeof *map), *freel = qd__malloc(ctx, n * sizeof *freel);
     bool ok = last && map && freel;
     if (ok) {
         for (size_t j = 0; j < p->ncode; j++) {
@@ -549,7 +549,7 @@ static bool compile(comp *c, size_t nin, const qd_expr *const *inputs, size_t no
 }
 
 static qd_prog *assemble(comp *c, size_t nout, const qd_expr *const *outputs) {
-    qd_prog *p = qd__mem_calloc(NULL, 1, sizeof *p);
+    qd_prog *p = qd__calloc(c->ctx, 1, sizeof *p);
     if (!p)
         return NULL;
     p->nin = c->nin;
@@ -560,13 +560,13 @@ static qd_prog *assemble(comp *c, size_t nout, const qd_expr *const *outputs) {
     c->code = NULL;
     p->opnd = c->opnd;
     c->opnd = NULL;
-    p->out = qd__mem_malloc(NULL, (nout ? nout : 1) * sizeof *p->out);
+    p->out = qd__malloc(c->ctx, (nout ? nout : 1) * sizeof *p->out);
     if (p->out)
         for (size_t k = 0; k < nout; k++)
             p->out[k] = info(c, outputs[k])->val;
     uint32_t nfixed = (uint32_t)(c->nin + c->nconst);
-    if (!p->out || !reuse_registers(p, nfixed) ||
-        !(p->regs = qd__mem_calloc(NULL, p->nreg ? p->nreg : 1, sizeof *p->regs))) {
+    if (!p->out || !reuse_registers(c->ctx, p, nfixed) ||
+        !(p->regs = qd__calloc(c->ctx, p->nreg ? p->nreg : 1, sizeof *p->regs))) {
         qd_prog_free(p);
         return NULL;
     }
@@ -583,7 +583,7 @@ qd_prog *qd_prog_new(qd_ctx *ctx, size_t nin, const qd_expr *const *inputs, size
         qd_ctx_error(ctx, QD_ERR_ARG, "a program needs its input and output arrays");
         return NULL;
     }
-    comp c = {.ctx = ctx, .index = QD_PTRMAP_INIT, .nin = nin};
+    comp c = {.ctx = ctx, .index = QD_PTRMAP_AL(qd__ctx_allocator(ctx)), .nin = nin};
     qd_prog *p = NULL;
     if (compile(&c, nin, inputs, nout, outputs))
         p = assemble(&c, nout, outputs);

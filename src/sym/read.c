@@ -112,7 +112,7 @@ static size_t column(const rd *p, size_t off) {
 static bool push(rd *p, vec *v, const qd_expr *e) {
     if (v->n == v->cap) {
         size_t cap = v->cap ? 2 * v->cap : 8;
-        const qd_expr **nv = qd__mem_realloc(NULL, v->v, cap * sizeof *nv);
+        const qd_expr **nv = qd__realloc(p->ctx, v->v, cap * sizeof *nv);
         if (!nv) {
             qd__oom(p->ctx);
             fail(p, p->tpos, p->tlen, NULL, "out of memory");

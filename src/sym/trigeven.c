@@ -47,12 +47,12 @@ typedef struct angle {
     const qd_expr *s, *c;
 } angle;
 
-static bool push(vec *v, const qd_expr *e) {
+static bool push(qd_ctx *ctx, vec *v, const qd_expr *e) {
     if (!e)
         return false;
     if (v->n == v->cap) {
         size_t cap = v->cap ? 2 * v->cap : 16;
-        const qd_expr **nv = qd__mem_realloc(NULL, v->v, cap * sizeof *nv);
+        const qd_expr **nv = qd__realloc(ctx, v->v, cap * sizeof *nv);
         if (!nv)
             return false;
         v->v = nv;
@@ -176,7 +176,7 @@ static bool form_terms(qd_ctx *ctx, eterm *const *g, size_t n, way w, const angl
                        long deg, vec *out) {
     if (w == KEEP) {
         for (size_t i = 0; i < n; i++)
-            if (!push(out, g[i]->node))
+            if (!push(ctx, out, g[i]->node))
                 return false;
         return true;
     }
@@ -190,7 +190,7 @@ static bool form_terms(qd_ctx *ctx, eterm *const *g, size_t n, way w, const angl
         for (size_t i = 0; i < g[0]->nkey; i++)
             fs[i + 1] = g[0]->key[i];
         fs[g[0]->nkey + 1] = qd_powi(ctx, w == ELIM_COS ? a->s : a->c, 2 * d);
-        ok = fs[g[0]->nkey + 1] && push(out, qd_mul_n(ctx, g[0]->nkey + 2, fs));
+        ok = fs[g[0]->nkey + 1] && push(ctx, out, qd_mul_n(ctx, g[0]->nkey + 2, fs));
     }
     qd__free(fs);
     return ok;
@@ -311,7 +311,7 @@ static const qd_expr *reduce_angle(qd_ctx *ctx, const qd_expr *sum, const angle 
     }
     for (size_t i = 0; ok && changed && i < n; i++)
         if (!t[i].used)
-            ok = push(&out, t[i].node);
+            ok = push(ctx, &out, t[i].node);
     const qd_expr *r = !ok        ? NULL
                        : !changed ? sum
                        : out.n    ? qd_add_n(ctx, out.n, out.v)
@@ -405,7 +405,7 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
         combos *= (size_t)e[i].drop + 1;
     if (ne == 0 || combos > 4096) {
         qd__free(e);
-        return push(out, *slot);
+        return push(ctx, out, *slot);
     }
     const qd_expr **buf = qd__malloc(ctx, (nf + 2 * ne + 1) * sizeof *buf);
     bool ok = buf != NULL;
@@ -429,7 +429,7 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
             ok = c && buf[m - 1] && buf[m - 2];
         }
         buf[0] = c;
-        ok = ok && push(out, qd_mul_n(ctx, m, buf));
+        ok = ok && push(ctx, out, qd_mul_n(ctx, m, buf));
     }
     qd__free(e);
     qd__free(buf);

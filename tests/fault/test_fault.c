@@ -87,14 +87,16 @@ static loop_stats fault_loop(const char *what, body_fn body) {
         qd_allocator a = {f_malloc, f_realloc, f_free, &f};
         qd_ctx *ctx = qd_ctx_new_with(&a);
         qd_status st = ctx ? body(ctx, &f) : QD_ERR_NOMEM;
+        char why[256];
+        snprintf(why, sizeof why, "%s", ctx ? qd_ctx_message(ctx) : "");
         qd_ctx_free(ctx);
         ls.runs++;
         if (f.live != 0)
             fail_msg("%s, allocation %ld failed: %ld blocks leaked", what, n, f.live);
         if (st != QD_OK) {
             if (st != QD_ERR_NOMEM || !f.failed)
-                fail_msg("%s, allocation %ld failed: status %s instead of out of memory",
-                         what, n, qd_status_str(st));
+                fail_msg("%s, allocation %ld failed: status %s instead of out of memory (%s)",
+                         what, n, qd_status_str(st), why);
             ls.nomem++;
         }
         if (!f.failed) {
