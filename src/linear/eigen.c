@@ -160,10 +160,10 @@ static int by_re_desc(const void *pa, const void *pb) {
     return a->im < b->im ? 1 : a->im > b->im ? -1 : 0;
 }
 
-static void sort_eigs(qd_modes_result *r) {
-    cplx *c = qd__mem_malloc(NULL, (r->neig + 1) * sizeof *c);
+static qd_status sort_eigs(qd_ctx *ctx, qd_modes_result *r) {
+    cplx *c = qd__malloc(ctx, (r->neig + 1) * sizeof *c);
     if (!c)
-        return;
+        return QD_ERR_NOMEM; /* unsorted would break the documented order */
     for (size_t i = 0; i < r->neig; i++)
         c[i] = (cplx){r->eig_re[i], r->eig_im[i]};
     qsort(c, r->neig, sizeof *c, by_re_desc);
@@ -172,6 +172,7 @@ static void sort_eigs(qd_modes_result *r) {
         r->eig_im[i] = c[i].im;
     }
     qd__free(c);
+    return QD_OK;
 }
 
 /* Stable when every Re s < 0, or Re s = 0 only on simple nonzero roots. */
@@ -246,8 +247,8 @@ static qd_status state_space(qd_ctx *ctx, const qd_linear *lin, qd_modes_result 
         r->eig_re[i] = ar[i] / beta[i];
         r->eig_im[i] = ai[i] / beta[i];
     }
-    sort_eigs(r);
-    r->stable = verdict(r);
+    if ((st = sort_eigs(ctx, r)) == QD_OK)
+        r->stable = verdict(r);
 done:
     qd__free(a);
     qd__free(b);
@@ -287,7 +288,7 @@ qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out
         out->shapes = qd__calloc(ctx, nn + 1, sizeof *out->shapes);
         st = out->omega2 && out->shapes ? conservative(ctx, lin, out) : QD_ERR_NOMEM;
         if (st == QD_OK)
-            sort_eigs(out);
+            st = sort_eigs(ctx, out);
     } else {
         st = state_space(ctx, lin, out);
     }

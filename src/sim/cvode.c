@@ -67,7 +67,7 @@ static void bdf_free(qd__integ *it) {
 }
 
 static qd_status bdf_init(qd__integ *it) {
-    bdf *b = qd__mem_calloc(NULL, 1, sizeof *b);
+    bdf *b = qd__calloc(it->s->ctx, 1, sizeof *b);
     if (!b)
         return QD_ERR_NOMEM;
     it->priv = b;

@@ -72,14 +72,14 @@ static qd_status initial_step(qd__integ *it, erk *r) {
 
 qd_status qd__erk_init(qd__integ *it, const qd__erk *tab) {
     size_t d = it->dim, rows = (size_t)(tab->s + 1 + tab->nextra);
-    erk *r = qd__mem_calloc(NULL, 1, sizeof *r);
+    erk *r = qd__calloc(it->s->ctx, 1, sizeof *r);
     if (!r)
         return QD_ERR_NOMEM;
     it->priv = r;
     r->tab = tab;
     r->facold = 1e-4;
-    r->K = qd__mem_calloc(NULL, 2 * rows, sizeof *r->K);
-    double *mem = qd__mem_malloc(NULL, (2 * rows * d + 2 * d + (size_t)tab->ndense * d + 1) * sizeof *mem);
+    r->K = qd__calloc(it->s->ctx, 2 * rows, sizeof *r->K);
+    double *mem = qd__malloc(it->s->ctx, (2 * rows * d + 2 * d + (size_t)tab->ndense * d + 1) * sizeof *mem);
     if (!r->K || !mem) {
         qd__free(mem);
         return QD_ERR_NOMEM;

@@ -45,8 +45,8 @@ static const gl_tab gl3 = {3, {0.5 - R15 / 10, 0.5, 0.5 + R15 / 10},
 
 static qd_status init_tab(qd__integ *it, const gl_tab *tab) {
     size_t d = it->dim, s = (size_t)tab->s;
-    gl *g = qd__mem_calloc(NULL, 1, sizeof *g);
-    double *mem = qd__mem_malloc(NULL, (4 * s * d + 2 * d + 1) * sizeof *mem);
+    gl *g = qd__calloc(it->s->ctx, 1, sizeof *g);
+    double *mem = qd__malloc(it->s->ctx, (4 * s * d + 2 * d + 1) * sizeof *mem);
     if (!g || !mem) {
         qd__free(g);
         qd__free(mem);

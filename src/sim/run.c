@@ -183,9 +183,9 @@ static void run_free(qd__run *r, qd__integ *it) {
 static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     qd_sim *s = r->s;
     size_t d = it->dim, ne = s->nev;
-    it->y = qd__mem_malloc(NULL, (2 * d + 1) * sizeof *it->y);
-    r->row = qd__mem_malloc(NULL, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
-    r->ev_hit = qd__mem_calloc(NULL, 2 * ne + 1, sizeof *r->ev_hit);
+    it->y = qd__malloc(s->ctx, (2 * d + 1) * sizeof *it->y);
+    r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
+    r->ev_hit = qd__calloc(s->ctx, 2 * ne + 1, sizeof *r->ev_hit);
     if (!it->y || !r->row || !r->ev_hit)
         return QD_ERR_NOMEM;
     it->yold = it->y + d;

@@ -32,9 +32,9 @@ static double param_value(qd_ctx *ctx, const qd_expr *v) {
     return x;
 }
 
-static char *dup_printf(const char *a, const char *b, const char *c) {
+static char *dup_printf(qd_ctx *ctx, const char *a, const char *b, const char *c) {
     size_t len = strlen(a) + strlen(b) + strlen(c) + 1;
-    char *s = qd__mem_malloc(NULL, len);
+    char *s = qd__malloc(ctx, len);
     if (s)
         snprintf(s, len, "%s%s%s", a, b, c);
     return s;
@@ -52,7 +52,7 @@ static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
  * pendulum chain's cos(theta_j - theta_k): see src/codegen/angles.c), the
  * rewrite the generated C uses, so both paths compute the same formulas. */
 static qd_prog *compile(qd_sim *s, size_t nout, const qd_expr *const *outs, double **out) {
-    const qd_expr **x = qd__mem_malloc(NULL, (nout + 1) * sizeof *x);
+    const qd_expr **x = qd__malloc(s->ctx, (nout + 1) * sizeof *x);
     bool applied;
     qd_prog *p = NULL;
     if (x) {
@@ -77,8 +77,8 @@ static qd_status setup_inputs(qd_sim *s) {
     size_t n = s->n;
     s->np = qd_model_nparams(s->model);
     s->nin = 2 * n + 1 + s->np + s->m;
-    s->in_syms = qd__mem_malloc(NULL, s->nin * sizeof *s->in_syms);
-    s->in = qd__mem_calloc(NULL, s->nin, sizeof *s->in);
+    s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);
+    s->in = qd__calloc(s->ctx, s->nin, sizeof *s->in);
     if (!s->in_syms || !s->in)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
@@ -103,7 +103,7 @@ static qd_status setup_inputs(qd_sim *s) {
 static qd_status compile_acc(qd_sim *s) {
     const qd_eom *e = s->e;
     size_t n = s->n, m = s->m, k = 0;
-    const qd_expr **outs = qd__mem_malloc(NULL, (n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(s->ctx, (n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n * n; i++)
@@ -188,7 +188,7 @@ static qd_status compile_canonical(qd_sim *s) {
     size_t n = s->n;
     if (!s->canonical)
         return QD_OK;
-    const qd_expr **outs = qd__mem_malloc(NULL, (n * n + n) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(s->ctx, (n * n + n) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n * n; i++)
@@ -204,21 +204,21 @@ static qd_status compile_canonical(qd_sim *s) {
 
 static qd_status make_names(qd_sim *s) {
     size_t n = s->n, k = 0;
-    s->names = qd__mem_calloc(NULL, 3 * n + 2 + s->m, sizeof *s->names);
-    s->holonomic = qd__mem_calloc(NULL, s->m + 1, sizeof *s->holonomic);
-    s->con_err = qd__mem_calloc(NULL, s->m + 1, sizeof *s->con_err);
+    s->names = qd__calloc(s->ctx, 3 * n + 2 + s->m, sizeof *s->names);
+    s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
+    s->con_err = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err);
     if (!s->names || !s->holonomic || !s->con_err)
         return QD_ERR_NOMEM;
-    s->names[k++] = dup_printf("t", "", "");
+    s->names[k++] = dup_printf(s->ctx, "t", "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "", "");
+        s->names[k++] = dup_printf(s->ctx, qd_expr_name(s->e->q[j]), "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(s->e->q[j]), "'", "");
+        s->names[k++] = dup_printf(s->ctx, qd_expr_name(s->e->q[j]), "'", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf("p_", qd_expr_name(s->e->q[j]), "");
-    s->names[k++] = dup_printf("energy", "", "");
+        s->names[k++] = dup_printf(s->ctx, "p_", qd_expr_name(s->e->q[j]), "");
+    s->names[k++] = dup_printf(s->ctx, "energy", "", "");
     for (size_t c = 0; c < s->m; c++) {
-        s->names[k++] = dup_printf("res_", s->e->con[c].name, "");
+        s->names[k++] = dup_printf(s->ctx, "res_", s->e->con[c].name, "");
         s->holonomic[c] = s->e->con[c].kind == QD_CON_HOLONOMIC;
     }
     for (size_t i = 0; i < k; i++)
@@ -315,13 +315,13 @@ qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step) {
 
 /* ---- outputs and events ---------------------------------------------------- */
 
-static bool grow(void **p, size_t *cap, size_t need, size_t size) {
+static bool grow(qd_ctx *ctx, void **p, size_t *cap, size_t need, size_t size) {
     if (need <= *cap)
         return true;
     size_t c = *cap ? 2 * *cap : 8;
     while (c < need)
         c *= 2;
-    void *q = qd__mem_realloc(NULL, *p, c * size);
+    void *q = qd__realloc(ctx, *p, c * size);
     if (!q)
         return false;
     *p = q;
@@ -335,11 +335,11 @@ qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x) {
         return QD_ERR_ARG;
     }
     size_t cap = s->cap_out;
-    bool ok = grow((void **)&s->out_expr, &cap, s->nout + 1, sizeof *s->out_expr);
+    bool ok = grow(s->ctx, (void **)&s->out_expr, &cap, s->nout + 1, sizeof *s->out_expr);
     cap = s->cap_out;
-    ok = ok && grow((void **)&s->out_name, &cap, s->nout + 1, sizeof *s->out_name);
+    ok = ok && grow(s->ctx, (void **)&s->out_name, &cap, s->nout + 1, sizeof *s->out_name);
     s->cap_out = ok ? cap : s->cap_out;
-    char *copy = ok ? dup_printf(name, "", "") : NULL;
+    char *copy = ok ? dup_printf(s->ctx, name, "", "") : NULL;
     if (!copy) {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -356,11 +356,11 @@ qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
         return QD_ERR_ARG;
     }
     size_t cap = s->cap_ev;
-    bool ok = grow((void **)&s->ev_expr, &cap, s->nev + 1, sizeof *s->ev_expr);
+    bool ok = grow(s->ctx, (void **)&s->ev_expr, &cap, s->nev + 1, sizeof *s->ev_expr);
     cap = s->cap_ev;
-    ok = ok && grow((void **)&s->ev, &cap, s->nev + 1, sizeof *s->ev);
+    ok = ok && grow(s->ctx, (void **)&s->ev, &cap, s->nev + 1, sizeof *s->ev);
     s->cap_ev = ok ? cap : s->cap_ev;
-    ok = ok && grow((void **)&s->guard_expr, &s->cap_guard, s->nguard + nguard + 1,
+    ok = ok && grow(s->ctx, (void **)&s->guard_expr, &s->cap_guard, s->nguard + nguard + 1,
                     sizeof *s->guard_expr);
     if (!ok) {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
@@ -383,7 +383,7 @@ qd_status qd__aux_compile(qd_sim *s) {
     s->aux = s->en = NULL;
     s->aux_out = s->en_out = NULL;
     size_t total = qd__aux_guard(s) + s->nguard, k = 0;
-    const qd_expr **outs = qd__mem_malloc(NULL, (total + 1) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(s->ctx, (total + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     outs[k++] = s->h_expr;

@@ -312,6 +312,14 @@ static qd_status modes_body(qd_ctx *ctx, faulty *f) {
         assert_true(fabs(r.omega2[0] - g * (2 - sqrt(2))) < 1e-10);
         assert_true(fabs(r.omega2[1] - g * (2 + sqrt(2))) < 1e-10);
         assert_true(fabs(r.shapes[2] / r.shapes[0] - sqrt(2)) < 1e-10); /* th2/th1 of mode 1 */
+        /* s = +-i w, sorted by Im descending: w2, w1, -w1, -w2 */
+        assert_int_equal(r.neig, 4);
+        for (size_t i = 0; i < 4; i++)
+            assert_true(fabs(r.eig_re[i]) < 1e-12);
+        assert_true(fabs(r.eig_im[0] - sqrt(r.omega2[1])) < 1e-10);
+        assert_true(fabs(r.eig_im[1] - sqrt(r.omega2[0])) < 1e-10);
+        assert_true(fabs(r.eig_im[2] + sqrt(r.omega2[0])) < 1e-10);
+        assert_true(fabs(r.eig_im[3] + sqrt(r.omega2[1])) < 1e-10);
     }
     qd_modes_result_free(&r);
     qd_linear_free(&lin);
