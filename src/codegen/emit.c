@@ -70,7 +70,7 @@ static void collect(walk *w, const qd_expr *e) {
     if (e->kind == QD_SYMBOL) {
         if (w->n == w->cap) {
             size_t cap = w->cap ? 2 * w->cap : 32;
-            const qd_expr **v = qd__mem_realloc(NULL, w->syms, cap * sizeof *v);
+            const qd_expr **v = qd__mem_realloc(w->seen.al, w->syms, cap * sizeof *v);
             if (!v) {
                 w->oom = true;
                 return;
@@ -439,7 +439,7 @@ static qd_status fn_forcing(gen *g) {
  * K is computed once. */
 static qd_status system_block(gen *g, const src *s) {
     size_t nk = g->nk;
-    const qd_expr **out = qd__mem_malloc(NULL, (nk * nk + nk) * sizeof *out);
+    const qd_expr **out = qd__malloc(g->ctx, (nk * nk + nk) * sizeof *out);
     if (!out) {
         qd__oom(g->ctx);
         return QD_ERR_NOMEM;

@@ -32,11 +32,11 @@ extern void dggev_(const char *jobvl, const char *jobvr, const int *n, double *a
                    double *vl, const int *ldvl, double *vr, const int *ldvr, double *work,
                    const int *lwork, int *info);
 
-bool qd__sym_eig(size_t n, const double *A, double *w, double *vecs) {
+bool qd__sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs) {
     int ni = (int)n, info = 0, lwork = -1;
     if (n == 0)
         return true;
-    double *a = qd__mem_malloc(NULL, n * n * sizeof *a), q;
+    double *a = qd__malloc(ctx, n * n * sizeof *a), q;
     if (!a)
         return false;
     for (size_t i = 0; i < n; i++)
@@ -45,7 +45,7 @@ bool qd__sym_eig(size_t n, const double *A, double *w, double *vecs) {
     const char *jobz = vecs ? "V" : "N";
     dsyev_(jobz, "U", &ni, a, &ni, w, &q, &lwork, &info);
     lwork = info == 0 ? (int)q : 0;
-    double *work = lwork > 0 ? qd__mem_malloc(NULL, (size_t)lwork * sizeof *work) : NULL;
+    double *work = lwork > 0 ? qd__malloc(ctx, (size_t)lwork * sizeof *work) : NULL;
     if (work)
         dsyev_(jobz, "U", &ni, a, &ni, w, work, &lwork, &info);
     bool ok = work && info == 0;

@@ -273,7 +273,7 @@ static bool branch_on(exact *x, const qd_expr **eqs, size_t neq, size_t i) {
             return false;
         var[k] = c ? u : SIZE_MAX;
     }
-    const qd_expr **rest = qd__mem_malloc(NULL, (neq + 1) * sizeof *rest);
+    const qd_expr **rest = qd__malloc(x->ctx, (neq + 1) * sizeof *rest);
     if (!rest) {
         x->failed = true;
         return true;
@@ -302,7 +302,7 @@ static bool branch_on(exact *x, const qd_expr **eqs, size_t neq, size_t i) {
 
 static void solve_rec(exact *x, const qd_expr **eqs, size_t neq) {
     size_t live = 0, u;
-    const qd_expr **keep = qd__mem_malloc(NULL, (neq + 1) * sizeof *keep);
+    const qd_expr **keep = qd__malloc(x->ctx, (neq + 1) * sizeof *keep);
     if (!keep) {
         x->failed = true;
         return;
@@ -377,7 +377,7 @@ static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
 
 static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     size_t n = L->n;
-    double *K = qd__mem_malloc(NULL, (n * n + 1) * sizeof *K), *w = qd__mem_malloc(NULL, (n + 1) * sizeof *w);
+    double *K = qd__malloc(L->ctx, (n * n + 1) * sizeof *K), *w = qd__malloc(L->ctx, (n + 1) * sizeof *w);
     if (!K || !w) {
         qd__free(K);
         qd__free(w);
@@ -397,7 +397,7 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     p->residual = 0;
     for (size_t j = 0; j < n; j++)
         p->residual = fmax(p->residual, fabs(qd__lin_F(L)[j]));
-    bool ok = qd__sym_eig(n, K, w, NULL);
+    bool ok = qd__sym_eig(L->ctx, n, K, w, NULL);
     double wmax = 0;
     for (size_t j = 0; ok && j < n; j++)
         wmax = fmax(wmax, fabs(w[j]));
@@ -443,8 +443,8 @@ static int by_q(const void *pa, const void *pb) {
 /* A null direction of J along which F stays 0: not an isolated root. */
 static bool on_continuum(qd__lin *L, const double *q, double ftol) {
     size_t n = L->n;
-    double *w = qd__mem_malloc(NULL, (n + 1) * sizeof *w), *v = qd__mem_malloc(NULL, (n * n + 1) * sizeof *v);
-    double *JtJ = qd__mem_malloc(NULL, (n * n + 1) * sizeof *JtJ), *t = qd__mem_malloc(NULL, (n + 1) * sizeof *t);
+    double *w = qd__malloc(L->ctx, (n + 1) * sizeof *w), *v = qd__malloc(L->ctx, (n * n + 1) * sizeof *v);
+    double *JtJ = qd__malloc(L->ctx, (n * n + 1) * sizeof *JtJ), *t = qd__malloc(L->ctx, (n + 1) * sizeof *t);
     bool cont = false;
     if (w && v && JtJ && t) {
         qd__lin_run(L, q);
@@ -457,7 +457,7 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                 JtJ[i * n + j] = s;
             }
         /* J = 0 (no force anywhere near: a free particle) is singular too */
-        if (qd__sym_eig(n, JtJ, w, v) && w[0] <= 1e-14 * w[n - 1]) {
+        if (qd__sym_eig(L->ctx, n, JtJ, w, v) && w[0] <= 1e-14 * w[n - 1]) {
             double h = 1e-3 * (1 + fabs(q[0]));
             for (size_t i = 0; i < n; i++)
                 t[i] = q[i] + h * v[i];
@@ -581,7 +581,7 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
             goto done;
         }
         qd__wrap_angles(n, q, angle);
-        if (!qd__roots_add(&roots, q, res, angle))
+        if (!qd__roots_add(ctx, &roots, q, res, angle))
             st = QD_ERR_NOMEM;
     } else if (!o.numeric_only && solve_exact(ctx, e, m, &L, angle, &x) &&
                exact_verified(ctx, &L, &x, 1e-8 * fscale)) {

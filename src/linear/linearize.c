@@ -88,6 +88,7 @@ static qd_status compile(qd_ctx *ctx, qd__lin *L) {
 
 qd_status qd__lin_init(qd_ctx *ctx, const qd_eom *e, qd__lin *L) {
     memset(L, 0, sizeof *L);
+    L->ctx = ctx;
     if (e->ncon) {
         qd_ctx_error(ctx, QD_ERR_ARG,
                      "the model keeps %zu constraint%s with multipliers: small oscillations need "

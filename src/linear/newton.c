@@ -57,10 +57,10 @@ double qd__lin_scale(qd__lin *L, const double *q) {
 
 bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
     size_t n = L->n;
-    double *F = qd__mem_malloc(NULL, (n + 1) * sizeof *F), *J = qd__mem_malloc(NULL, (n * n + 1) * sizeof *J);
-    double *A = qd__mem_malloc(NULL, (n * n + 1) * sizeof *A), *g = qd__mem_malloc(NULL, (n + 1) * sizeof *g);
-    double *t = qd__mem_malloc(NULL, (n + 1) * sizeof *t);
-    size_t *pc = qd__mem_malloc(NULL, (n + 1) * sizeof *pc);
+    double *F = qd__malloc(L->ctx, (n + 1) * sizeof *F), *J = qd__malloc(L->ctx, (n * n + 1) * sizeof *J);
+    double *A = qd__malloc(L->ctx, (n * n + 1) * sizeof *A), *g = qd__malloc(L->ctx, (n + 1) * sizeof *g);
+    double *t = qd__malloc(L->ctx, (n + 1) * sizeof *t);
+    size_t *pc = qd__malloc(L->ctx, (n + 1) * sizeof *pc);
     bool ok = false;
     *res = INFINITY;
     if (!F || !J || !A || !g || !t || !pc)

@@ -121,9 +121,9 @@ static int cmp_double(const void *a, const void *b) {
 /* The oscillation frequencies of the undamped problem: sqrt(w^2) for the
  * positive w^2 of a conservative one, else the positive imaginary parts of
  * the roots on the imaginary axis. */
-static qd_status frequencies(qd_stability *out) {
+static qd_status frequencies(qd_ctx *ctx, qd_stability *out) {
     const qd_modes_result *r = &out->ordinary;
-    out->freq = qd__mem_calloc(NULL, r->neig + r->n + 1, sizeof *out->freq);
+    out->freq = qd__calloc(ctx, r->neig + r->n + 1, sizeof *out->freq);
     if (!out->freq)
         return QD_ERR_NOMEM;
     double big = 0;
@@ -239,7 +239,7 @@ qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     if (st == QD_OK && out->dissipative)
         st = solve_modes(ctx, &out->lin, out->lin.C, out->lin.K, &out->damped);
     if (st == QD_OK)
-        st = frequencies(out);
+        st = frequencies(ctx, out);
     if (st != QD_OK) {
         qd_stability_free(out);
         return st;

@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const qd_expr **arr(size_t n) { return qd__mem_calloc(NULL, n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_steady_free(qd_steady *s) {
     if (!s)
@@ -93,7 +93,7 @@ static qd_status split_coords(qd_ctx *ctx, const qd_model *m, const qd_eom *e, q
 
 /* x with every kept velocity set to 0. */
 static const qd_expr *at_rest(qd_ctx *ctx, const qd_steady *s, const qd_expr *x) {
-    const qd_expr **zero = arr(s->nkeep);
+    const qd_expr **zero = arr(ctx, s->nkeep);
     if (!zero)
         return NULL;
     for (size_t j = 0; j < s->nkeep; j++)
@@ -112,8 +112,8 @@ static size_t index_of(const qd_eom *e, const qd_expr *q) {
 
 static qd_status driven_equations(qd_ctx *ctx, const qd_eom *e, qd_steady *s) {
     size_t nk = s->nkeep;
-    s->M = arr(nk * nk);
-    s->f = arr(nk);
+    s->M = arr(ctx, nk * nk);
+    s->f = arr(ctx, nk);
     if (!s->M || !s->f)
         return QD_ERR_NOMEM;
     for (size_t a = 0; a < nk; a++) {
@@ -161,12 +161,12 @@ qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, siz
     s->driven = driven;
     s->ncyc = ncyc;
     s->nkeep = e->n - ncyc;
-    s->keep = arr(s->nkeep);
-    s->keepd = arr(s->nkeep);
-    s->cyc = arr(ncyc);
-    s->cycd = arr(ncyc);
-    s->mom = arr(ncyc);
-    s->res = arr(s->nkeep);
+    s->keep = arr(ctx, s->nkeep);
+    s->keepd = arr(ctx, s->nkeep);
+    s->cyc = arr(ctx, ncyc);
+    s->cycd = arr(ctx, ncyc);
+    s->mom = arr(ctx, ncyc);
+    s->res = arr(ctx, s->nkeep);
     qd_status st = s->keep && s->keepd && s->cyc && s->cycd && s->mom && s->res ? QD_OK
                                                                                 : QD_ERR_NOMEM;
     if (st == QD_OK)
@@ -356,9 +356,9 @@ static double scale_of(const search *S, const double *J, const double *u, size_t
 
 static qd_status iterate(search *S, double *u, double *res_out) {
     size_t nu = S->nu, neq = S->neq;
-    double *F = qd__mem_calloc(NULL, neq + 1, sizeof *F), *J = qd__mem_calloc(NULL, neq * nu + 1, sizeof *J);
-    double *A = qd__mem_calloc(NULL, nu * nu + 1, sizeof *A), *d = qd__mem_calloc(NULL, nu + 1, sizeof *d);
-    double *u2 = qd__mem_calloc(NULL, nu + 1, sizeof *u2), *F2 = qd__mem_calloc(NULL, neq + 1, sizeof *F2);
+    double *F = qd__calloc(S->ctx, neq + 1, sizeof *F), *J = qd__calloc(S->ctx, neq * nu + 1, sizeof *J);
+    double *A = qd__calloc(S->ctx, nu * nu + 1, sizeof *A), *d = qd__calloc(S->ctx, nu + 1, sizeof *d);
+    double *u2 = qd__calloc(S->ctx, nu + 1, sizeof *u2), *F2 = qd__calloc(S->ctx, neq + 1, sizeof *F2);
     qd_status st = F && J && A && d && u2 && F2 ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = residual(S, u, F, J);
@@ -442,9 +442,9 @@ static qd_status setup(search *S, const bool *xfix, const bool *wfix, const bool
         return QD_ERR_ARG;
     }
     S->uslot = qd__calloc(S->ctx, S->nu + 1, sizeof *S->uslot);
-    S->F = arr(S->neq);
+    S->F = arr(S->ctx, S->neq);
     S->pgiven = qd__calloc(S->ctx, S->neq + 1, sizeof *S->pgiven);
-    S->dF = arr(S->neq * S->nu);
+    S->dF = arr(S->ctx, S->neq * S->nu);
     if (!S->uslot || !S->F || !S->pgiven || !S->dF)
         return QD_ERR_NOMEM;
     size_t u = 0, k = 0;

@@ -387,7 +387,7 @@ static bool has_log(const qd_expr *e) {
  * integral free of logarithms (x y, not log(x) + log(y)), else the first
  * that gives one, else the first that makes the form exact, else none. */
 static qd_status search_factor(const forms *f, qd_con *c) {
-    cands *cs = qd__mem_malloc(NULL, sizeof *cs);
+    cands *cs = qd__malloc(f->ctx, sizeof *cs);
     qd_status st = QD_OK;
     if (!cs)
         return QD_ERR_NOMEM;

@@ -235,13 +235,13 @@ static qd_status surface_row(qd_ctx *ctx, surface *sf, size_t i) {
     return qd_ctx_status(ctx);
 }
 
-static qd_status surface_copy(const qd_eom *e, const qd__sys *s, surface *sf) {
+static qd_status surface_copy(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, surface *sf) {
     size_t n = e->n, m = s->ncon;
     sf->sys = (qd__sys){.n = n, .ncon = m};
-    sf->sys.q = qd__mem_malloc(NULL, (n + 1) * sizeof *sf->sys.q);
-    sf->sys.Q = qd__mem_malloc(NULL, (n + 1) * sizeof *sf->sys.Q);
-    sf->sys.con_name = qd__mem_malloc(NULL, (m + 1) * sizeof *sf->sys.con_name);
-    sf->sys.con_expr = qd__mem_malloc(NULL, (m + 1) * sizeof *sf->sys.con_expr);
+    sf->sys.q = qd__malloc(ctx, (n + 1) * sizeof *sf->sys.q);
+    sf->sys.Q = qd__malloc(ctx, (n + 1) * sizeof *sf->sys.Q);
+    sf->sys.con_name = qd__malloc(ctx, (m + 1) * sizeof *sf->sys.con_name);
+    sf->sys.con_expr = qd__malloc(ctx, (m + 1) * sizeof *sf->sys.con_expr);
     if (!sf->sys.q || !sf->sys.Q || !sf->sys.con_name || !sf->sys.con_expr)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++)
@@ -260,7 +260,7 @@ static qd_status surface_init(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, su
                               bool *ok) {
     *sf = (surface){0};
     *ok = false;
-    qd_status st = surface_copy(e, s, sf);
+    qd_status st = surface_copy(ctx, e, s, sf);
     for (size_t j = 0; st == QD_OK && j < e->n; j++)
         if (!(sf->sys.Q[j] = qd_int(ctx, 0)))
             st = qd_ctx_status(ctx);

@@ -16,7 +16,7 @@
 #include "qdot/print.h"
 #include "../base/mem.h"
 
-static const qd_expr **arr(size_t n) { return qd__mem_calloc(NULL, n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_ham_free(qd_ham *h) {
     if (!h)
@@ -33,18 +33,18 @@ void qd_ham_free(qd_ham *h) {
     qd__free(h);
 }
 
-static qd_ham *ham_alloc(size_t n) {
-    qd_ham *h = qd__mem_calloc(NULL, 1, sizeof *h);
+static qd_ham *ham_alloc(qd_ctx *ctx, size_t n) {
+    qd_ham *h = qd__calloc(ctx, 1, sizeof *h);
     if (!h)
         return NULL;
     h->n = n;
-    h->p = arr(n);
-    h->pdef = arr(n);
-    h->vel = arr(n);
-    h->dq = arr(n);
-    h->dp = arr(n);
-    h->extra = arr(n);
-    h->qd = arr(n);
+    h->p = arr(ctx, n);
+    h->pdef = arr(ctx, n);
+    h->vel = arr(ctx, n);
+    h->dq = arr(ctx, n);
+    h->dp = arr(ctx, n);
+    h->extra = arr(ctx, n);
+    h->qd = arr(ctx, n);
     if (!h->qd || !h->p || !h->pdef || !h->vel || !h->dq || !h->dp || !h->extra) {
         qd_ham_free(h);
         return NULL;
@@ -82,7 +82,7 @@ static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, co
 
 static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
     size_t n = e->n;
-    const qd_expr **A = arr(n * (n + 1));
+    const qd_expr **A = arr(ctx, n * (n + 1));
     if (!A)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -135,7 +135,7 @@ static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
         return QD_OK;
     const qd_expr *E = qd_add(ctx, T, V ? V : qd_int(ctx, 0));
     if (U) {
-        const qd_expr **zero = arr(e->n);
+        const qd_expr **zero = arr(ctx, e->n);
         if (!zero)
             return QD_ERR_NOMEM;
         for (size_t j = 0; j < e->n; j++)
@@ -167,7 +167,7 @@ qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     if (!ctx || !m || (!e && !qd_model_hamiltonian_given(m)))
         return NULL;
     if (qd_model_hamiltonian_given(m)) {
-        qd_ham *h = ham_alloc(qd_model_ncoords(m));
+        qd_ham *h = ham_alloc(ctx, qd_model_ncoords(m));
         if (!h) {
             qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Hamiltonian");
             return NULL;
@@ -183,7 +183,7 @@ qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
         qd_ctx_error(ctx, QD_ERR_ARG, "Hamilton's equations with constraints are not supported yet");
         return NULL;
     }
-    qd_ham *h = ham_alloc(e->n);
+    qd_ham *h = ham_alloc(ctx, e->n);
     if (!h) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Hamiltonian");
         return NULL;

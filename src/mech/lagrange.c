@@ -22,17 +22,17 @@
 #include <math.h>
 #include <stdlib.h>
 
-static qd_eom *eom_alloc(size_t n) {
-    qd_eom *e = qd__mem_calloc(NULL, 1, sizeof *e);
+static qd_eom *eom_alloc(qd_ctx *ctx, size_t n) {
+    qd_eom *e = qd__calloc(ctx, 1, sizeof *e);
     if (!e)
         return NULL;
     e->n = n;
-    e->q = qd__mem_calloc(NULL, n ? n : 1, sizeof *e->q);
-    e->qd = qd__mem_calloc(NULL, n ? n : 1, sizeof *e->qd);
-    e->qdd = qd__mem_calloc(NULL, n ? n : 1, sizeof *e->qdd);
-    e->M = qd__mem_calloc(NULL, n ? n * n : 1, sizeof *e->M);
-    e->f = qd__mem_calloc(NULL, n ? n : 1, sizeof *e->f);
-    e->priv = qd__mem_calloc(NULL, 1, sizeof(qd__eom_num));
+    e->q = qd__calloc(ctx, n ? n : 1, sizeof *e->q);
+    e->qd = qd__calloc(ctx, n ? n : 1, sizeof *e->qd);
+    e->qdd = qd__calloc(ctx, n ? n : 1, sizeof *e->qdd);
+    e->M = qd__calloc(ctx, n ? n * n : 1, sizeof *e->M);
+    e->f = qd__calloc(ctx, n ? n : 1, sizeof *e->f);
+    e->priv = qd__calloc(ctx, 1, sizeof(qd__eom_num));
     if (!e->q || !e->qd || !e->qdd || !e->M || !e->f || !e->priv) {
         qd_eom_free(e);
         return NULL;
@@ -212,7 +212,7 @@ static qd_status derive_sys(qd_ctx *ctx, qd__sys *s, const qd_model *m, const qd
     qd_status st = qd__sys_from_model(ctx, m, s);
     if (st == QD_OK && opts && opts->eliminate)
         st = qd__eliminate(ctx, s, &elim, &nelim);
-    if (st == QD_OK && !(*out = eom_alloc(s->n))) {
+    if (st == QD_OK && !(*out = eom_alloc(ctx, s->n))) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
         st = QD_ERR_NOMEM;
     }

@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const qd_expr **arr(size_t n) { return qd__mem_calloc(NULL, n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 qd_status qd__gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
                           size_t *bad) {
@@ -66,9 +66,9 @@ typedef struct hsys {
 
 static qd_status hsys_init(qd_ctx *ctx, const qd_model *m, hsys *s) {
     s->n = qd_model_ncoords(m);
-    s->q = arr(s->n);
-    s->qd = arr(s->n);
-    s->p = arr(s->n);
+    s->q = arr(ctx, s->n);
+    s->qd = arr(ctx, s->n);
+    s->p = arr(ctx, s->n);
     if (!s->q || !s->qd || !s->p) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -112,7 +112,7 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
                          const qd_expr **L) {
     const qd_expr *H = qd_model_hamiltonian(m);
     size_t n = s->n, bad = 0;
-    const qd_expr **A = arr(n * (n + 1));
+    const qd_expr **A = arr(ctx, n * (n + 1));
     if (!A) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -146,7 +146,7 @@ qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **
     }
     hsys s = {0};
     qd_status st = hsys_init(ctx, m, &s);
-    const qd_expr **p = pdef ? pdef : arr(s.n);
+    const qd_expr **p = pdef ? pdef : arr(ctx, s.n);
     if (st == QD_OK && !p) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         st = QD_ERR_NOMEM;

@@ -19,7 +19,7 @@
 #include "model/parser.h"
 #include "../base/mem.h"
 
-static const qd_expr **arr(size_t n) { return qd__mem_calloc(NULL, n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_routh_free(qd_routh *r) {
     if (!r)
@@ -39,26 +39,26 @@ void qd_routh_free(qd_routh *r) {
     qd__free(r);
 }
 
-static qd_routh *routh_alloc(size_t n, size_t nign) {
-    qd_routh *r = qd__mem_calloc(NULL, 1, sizeof *r);
+static qd_routh *routh_alloc(qd_ctx *ctx, size_t n, size_t nign) {
+    qd_routh *r = qd__calloc(ctx, 1, sizeof *r);
     if (!r)
         return NULL;
     size_t nk = n - nign;
     r->n = n;
     r->nign = nign;
     r->nkeep = nk;
-    r->ign = arr(nign);
-    r->beta = arr(nign);
-    r->ignvel = arr(nign);
-    r->pdef = arr(nign);
-    r->keep = arr(nk);
-    r->keepd = arr(nk);
-    r->keepdd = arr(nk);
-    r->M = arr(nk * nk);
-    r->f = arr(nk);
-    r->G = arr(nk * nk);
-    r->ign_index = qd__mem_calloc(NULL, nign ? nign : 1, sizeof *r->ign_index);
-    r->keep_index = qd__mem_calloc(NULL, nk ? nk : 1, sizeof *r->keep_index);
+    r->ign = arr(ctx, nign);
+    r->beta = arr(ctx, nign);
+    r->ignvel = arr(ctx, nign);
+    r->pdef = arr(ctx, nign);
+    r->keep = arr(ctx, nk);
+    r->keepd = arr(ctx, nk);
+    r->keepdd = arr(ctx, nk);
+    r->M = arr(ctx, nk * nk);
+    r->f = arr(ctx, nk);
+    r->G = arr(ctx, nk * nk);
+    r->ign_index = qd__calloc(ctx, nign ? nign : 1, sizeof *r->ign_index);
+    r->keep_index = qd__calloc(ctx, nk ? nk : 1, sizeof *r->keep_index);
     if (!r->ign || !r->beta || !r->ignvel || !r->pdef || !r->keep || !r->keepd || !r->keepdd ||
         !r->M || !r->f || !r->G || !r->ign_index || !r->keep_index) {
         qd_routh_free(r);
@@ -139,7 +139,7 @@ const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
  * [A_i | beta_i - rest]. */
 static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t i,
                               const qd_expr **row) {
-    const qd_expr **co = arr(e->n);
+    const qd_expr **co = arr(ctx, e->n);
     if (!co)
         return QD_ERR_NOMEM;
     const qd_expr *rest = NULL;
@@ -161,7 +161,7 @@ static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t 
 
 static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
     size_t ni = r->nign, w = ni + 1;
-    const qd_expr **A = arr(ni * w);
+    const qd_expr **A = arr(ctx, ni * w);
     if (!A)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -186,7 +186,7 @@ static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
 /* x with the ignored velocities replaced by the quadratures' integrands. */
 static const qd_expr *reduce(qd_ctx *ctx, const qd_eom *e, const qd_routh *r,
                              const qd_expr *x) {
-    const qd_expr **from = arr(r->nign);
+    const qd_expr **from = arr(ctx, r->nign);
     if (!from)
         return NULL;
     for (size_t i = 0; i < r->nign; i++)
@@ -224,7 +224,7 @@ static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
 /* G_ij = dg_i/dk_j - dg_j/dk_i with R1 = sum g_j k'_j. */
 static qd_status gyroscopic(qd_ctx *ctx, qd_routh *r) {
     size_t nk = r->nkeep;
-    const qd_expr **g = arr(nk);
+    const qd_expr **g = arr(ctx, nk);
     if (!g)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < nk; i++)
@@ -253,7 +253,7 @@ static const qd_expr *extra(qd_ctx *ctx, const qd_model *m, const qd_eom *e, con
 static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh *r) {
     size_t nk = r->nkeep;
     const qd_expr *lag = qd_neg(ctx, r->R), *D = qd_model_dissipation(m);
-    const qd_expr **co = arr(nk);
+    const qd_expr **co = arr(ctx, nk);
     if (!co)
         return QD_ERR_NOMEM;
     r->conserved = !qd_has(r->R, qd_time(ctx)) && (!D || qd_is_zero(D));
@@ -335,7 +335,7 @@ qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_
                                            : "no coordinate to ignore");
         return NULL;
     }
-    qd_routh *r = routh_alloc(e->n, nign);
+    qd_routh *r = routh_alloc(ctx, e->n, nign);
     if (!r) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Routhian");
         return NULL;

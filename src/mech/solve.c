@@ -191,10 +191,10 @@ static void augmented(qd_ctx *ctx, const qd_eom *e, const qd_expr **A) {
     }
 }
 
-static qd_status keep(qd_eom *e, const qd_expr **x) {
+static qd_status keep(qd_ctx *ctx, qd_eom *e, const qd_expr **x) {
     const qd_expr **mult = NULL;
     if (e->ncon) {
-        mult = qd__mem_malloc(NULL, e->ncon * sizeof *mult);
+        mult = qd__malloc(ctx, e->ncon * sizeof *mult);
         if (!mult)
             return QD_ERR_NOMEM;
         for (size_t k = 0; k < e->ncon; k++)
@@ -218,7 +218,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
         st = solve_entries(&el, acc, max_ops);
     qd__free(A);
     if (st == QD_OK)
-        st = keep(e, acc);
+        st = keep(ctx, e, acc);
     if (st != QD_OK) {
         qd__free(acc);
         solve_error(ctx, st, e->ncon, max_ops);
@@ -286,9 +286,9 @@ void qd__eom_num_free(qd__eom_num *num) {
 }
 
 /* Every output of the program, in the order of qd__out_*. */
-static const qd_expr **outputs(const qd_eom *e, size_t nout) {
+static const qd_expr **outputs(qd_ctx *ctx, const qd_eom *e, size_t nout) {
     size_t n = e->n, m = e->ncon;
-    const qd_expr **outs = qd__mem_malloc(NULL, (nout + 1) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(ctx, (nout + 1) * sizeof *outs);
     if (!outs)
         return NULL;
     for (size_t i = 0; i < n * n; i++)
@@ -309,7 +309,7 @@ qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
     size_t nout = qd__out_len(e);
     if (num->prog)
         return QD_OK;
-    const qd_expr **outs = outputs(e, nout);
+    const qd_expr **outs = outputs(ctx, e, nout);
     if (!outs)
         return QD_ERR_NOMEM;
     num->nout = nout;
