@@ -23,6 +23,7 @@ typedef struct qd_buf {
 } qd_buf;
 
 #define QD_BUF_INIT {NULL, 0, 0, false, NULL}
+#define QD_BUF_WITH(a) {NULL, 0, 0, false, (a)}  /* memory from the allocator a */
 
 QD_API void qd_buf_free(qd_buf *b);
 QD_API void qd_buf_clear(qd_buf *b);          /* empties it, keeps the memory */

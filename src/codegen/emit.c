@@ -165,7 +165,7 @@ static void indent(qd_buf *out, const char *text) {
 static qd_status block(gen *g, const src *s, size_t nout, const qd_expr *const *out,
                        const char *lhs_fmt) {
     walk w = {QD_PTRMAP_AL(qd__ctx_allocator(g->ctx)), NULL, 0, 0, NULL, false};
-    qd_buf text = QD_BUF_INIT;
+    qd_buf text = QD_BUF_WITH(qd__ctx_allocator(g->ctx));
     for (size_t i = 0; i < nout; i++)
         collect(&w, out[i]);
     qd_status st = w.oom ? QD_ERR_NOMEM : QD_OK;
@@ -572,7 +572,7 @@ qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const cha
 
 qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                        qd_buf *c_text, qd_buf *h_text) {
-    qd_buf scratch = QD_BUF_INIT;
+    qd_buf scratch = QD_BUF_WITH(qd__ctx_allocator(ctx));
     qd_status st = qd__codegen(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
     qd_buf_free(&scratch);
     return st;

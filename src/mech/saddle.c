@@ -51,7 +51,7 @@ bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *
 
 qd_status qd__con_report(qd_ctx *ctx, const qd_eom *e, const double *mu, bool inconsistent,
                          const char *where) {
-    qd_buf names = QD_BUF_INIT;
+    qd_buf names = QD_BUF_WITH(qd__ctx_allocator(ctx));
     size_t count = 0, last = 0;
     for (size_t k = 0; k < e->ncon; k++)
         if (fabs(mu[k]) > 1e-6)

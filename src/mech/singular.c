@@ -46,7 +46,7 @@ static bool zero_rows(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick
     }
     if (!any)
         return false;
-    qd_buf b = QD_BUF_INIT;
+    qd_buf b = QD_BUF_WITH(qd__ctx_allocator(ctx));
     name_list(&b, e, pick, "'");
     if (absent)
         qd_ctx_error(ctx, QD_ERR_SINGULAR,
@@ -67,7 +67,7 @@ static void report_null(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, const do
         top = fmax(top, fabs(null[j]));
     for (size_t j = 0; j < e->n; j++)
         pick[j] = fabs(null[j]) > 1e-6 * top;
-    qd_buf b = QD_BUF_INIT;
+    qd_buf b = QD_BUF_WITH(qd__ctx_allocator(ctx));
     name_list(&b, e, pick, "''");
     qd_ctx_error(ctx, QD_ERR_SINGULAR,
                  "the mass matrix is singular: the accelerations %s are not determined (the "

@@ -201,7 +201,7 @@ static void report_nonpoly(qd_ctx *ctx, const qd_expr *bad, size_t n, const qd_e
     for (size_t i = 0; i < n; i++)
         if (qd_has(bad, qd[i]))
             v = qd_expr_name(qd[i]);
-    qd_buf b = QD_BUF_INIT;
+    qd_buf b = QD_BUF_WITH(qd__ctx_allocator(ctx));
     qd_print(ctx, bad, QD_FMT_TEXT, &b);
     qd_ctx_error(ctx, QD_ERR_NONLINEAR,
                  "the kinetic energy is not a polynomial in the velocities: %s appears in %s", v,

@@ -9,6 +9,7 @@
  */
 #include "node.h"
 
+#include <assert.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -155,6 +156,7 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
     for (; ctx->table[i]; i = (i + 1) & (ctx->table_cap - 1))
         if (node_equal(ctx->table[i], proto, h, nargs, args))
             return ctx->table[i];
+    assert(qd__is_canonical(proto, nargs, args));
 
     qd_expr *e = qd__alloc(ctx, sizeof *e + nargs * sizeof e->args[0]);
     if (!e)

@@ -89,6 +89,9 @@ const char *qd__find_name(const qd_ctx *ctx, const char *name); /* NULL if never
 void *qd__alloc(qd_ctx *ctx, size_t size);
 void qd__oom(qd_ctx *ctx);
 uint64_t qd__hash_mix(uint64_t h, uint64_t v);
+/* The forms listed at the top of this file (canon.c); qd__intern asserts it
+ * on every new node unless NDEBUG is defined. */
+bool qd__is_canonical(const qd_expr *proto, size_t nargs, const qd_expr *const *args);
 
 /* ---- number.c --------------------------------------------------------- */
 const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q);
