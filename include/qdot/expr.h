@@ -37,12 +37,14 @@ QD_API qd_ctx *qd_ctx_new(void);                /* NULL when out of memory */
 QD_API void qd_ctx_free(qd_ctx *ctx);           /* frees every expression; NULL is fine */
 
 /* The memory a context and everything made in it come from (SQLite's
- * sqlite3_mem_methods, but per context: no global state).  Every allocation
- * of the library goes through these three functions; one that fails makes the
+ * sqlite3_mem_methods, but per context: no global state).  The library's
+ * allocations go through these three functions (docs/design.md lists the few
+ * that cannot reach a context); one that fails makes the
  * call in progress return QD_ERR_NOMEM, with nothing leaked.  realloc_fn and
  * free_fn are never given NULL.  The allocator must outlive the context and
  * every object made with it (results are freed through it, after the context
- * if need be).  GMP, FLINT and LAPACK allocate on their own (docs/design.md,
+ * if need be); what malloc_fn and realloc_fn return must be aligned as
+ * malloc's.  GMP, FLINT and LAPACK allocate on their own (docs/design.md,
  * "Allocation and out-of-memory"). */
 typedef struct qd_allocator {
     void *(*malloc_fn)(void *user, size_t size);
