@@ -5,7 +5,7 @@
  * the allocator it came from, so it can be resized or freed by whoever holds
  * it, with or without its context at hand: qd__free needs only the pointer.
  * A NULL allocator is the C library's.  Memory from this path must be freed
- * by qd__free, never by qd__free(), and the other way round.
+ * by qd__free, never by free(), and the other way round.
  *
  * The qd_ctx forms record QD_ERR_NOMEM in the context when they fail; they
  * are what the library's modules call.  The qd__mem_ forms are for the base

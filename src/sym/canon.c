@@ -12,7 +12,8 @@
  *   ADD [y, x]         invalid (unsorted); ADD [x, 3*x] invalid (one key twice);
  *   MUL [3, x, y^2]    valid;   MUL [1, x, y] invalid;  MUL [2, x + y] invalid
  *                      (distributed);  MUL [x, x^2] invalid (one base twice);
- *   POW [x, 2]         valid;   POW [2, 3] invalid (folds);  POW [x*y, 2] invalid;
+ *   POW [x, 2]         valid;   POW [2, 3] invalid (folds), POW [2, 10^6] valid
+ *                      (too large to fold);  POW [x*y, 2] invalid;
  *                      POW [x^a, 2] invalid;  POW [x, 1] invalid.
  */
 #include "node.h"
@@ -24,6 +25,11 @@ static bool is_exact(const qd_expr *e, long v) {
 
 static bool is_int(const qd_expr *e) {
     return e->kind == QD_RATIONAL && mpz_cmp_ui(mpq_denref(e->u.q), 1) == 0;
+}
+
+/* An integer exponent qd__num_pow folds a rational base to (number.c). */
+static bool folds(const qd_expr *e) {
+    return is_int(e) && mpz_cmpabs_ui(mpq_numref(e->u.q), QD_MAX_FOLD_EXP) <= 0;
 }
 
 /* The factors of a term without its numeric coefficient (add.c's term key). */
@@ -77,7 +83,9 @@ static bool mul_canonical(size_t n, const qd_expr *const *a) {
 static bool pow_canonical(const qd_expr *b, const qd_expr *e) {
     if (is_exact(e, 0) || is_exact(e, 1) || is_exact(b, 0) || is_exact(b, 1))
         return false;
-    if (is_int(e) && (b->kind == QD_RATIONAL || b->kind == QD_MUL || b->kind == QD_POW))
+    if (b->kind == QD_RATIONAL && folds(e))
+        return false;
+    if (is_int(e) && (b->kind == QD_MUL || b->kind == QD_POW))
         return false;
     return true;
 }

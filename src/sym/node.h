@@ -18,7 +18,8 @@
  *   MUL  args = [c?] f1 ... fn   n >= 1, c a number != 1 first when present;
  *        no fi is a number, a MUL; fi sorted by base, no two with one base;
  *        never c * (single ADD) with c rational (that is distributed).
- *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e);
+ *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e
+ *        with |e| <= QD_MAX_FOLD_EXP: larger powers are not worked out);
  *        not (MUL b, integer e); not (POW b, integer e).
  */
 #ifndef QD_SYM_NODE_H
@@ -94,6 +95,7 @@ uint64_t qd__hash_mix(uint64_t h, uint64_t v);
 bool qd__is_canonical(const qd_expr *proto, size_t nargs, const qd_expr *const *args);
 
 /* ---- number.c --------------------------------------------------------- */
+#define QD_MAX_FOLD_EXP 100000UL /* a rational to a larger integer power stays a power */
 const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q);
 const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
 const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);

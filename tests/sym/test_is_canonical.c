@@ -76,6 +76,11 @@ static void test_rejects(void **state) {
     assert_false(form(QD_POW, 2, (const qd_expr *[]){x, one}));
     assert_false(form(QD_POW, 2, (const qd_expr *[]){x, zero}));
     assert_false(form(QD_POW, 2, (const qd_expr *[]){two, three}));        /* folds */
+    /* too large to fold: stays a power (bigparam.qd of tests/cli/check_review_cli.py,
+     * 1.5^(1.5e31), failed the assertion before QD_MAX_FOLD_EXP was part of the form) */
+    const qd_expr *big = qd_pow(ctx, qd_rat(ctx, 3, 2), qd_int(ctx, 1000000));
+    assert_int_equal(qd_expr_kind(big), QD_POW);
+    assert_true(canonical(big));
     assert_false(form(QD_POW, 2, (const qd_expr *[]){xy, two}));           /* (x*y)^2 */
     assert_false(form(QD_POW, 2, (const qd_expr *[]){xa, two}));           /* (x^a)^2 */
     assert_false(form(QD_POW, 2, (const qd_expr *[]){one, x}));
