@@ -93,8 +93,8 @@ static size_t max_factors(const qd_expr *x, size_t nt) {
 }
 
 /* Number the distinct monomials of terms[0..nt). */
-static size_t number_buckets(vterm *terms, size_t nt, bool *ok) {
-    qd_ptrmap ids = QD_PTRMAP_INIT;
+static size_t number_buckets(qd_ctx *ctx, vterm *terms, size_t nt, bool *ok) {
+    qd_ptrmap ids = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     size_t nb = 0;
     for (size_t i = 0; *ok && i < nt; i++) {
         size_t id = (size_t)(uintptr_t)qd_ptrmap_get(&ids, terms[i].mono);
@@ -105,6 +105,8 @@ static size_t number_buckets(vterm *terms, size_t nt, bool *ok) {
         terms[i].bucket = id - 1;
     }
     qd_ptrmap_free(&ids);
+    if (!*ok) /* the map cannot say so itself */
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
     return nb;
 }
 
@@ -187,7 +189,7 @@ qd_status qd__by_velocity(qd_ctx *ctx, const qd_expr *x, size_t n, const qd_expr
     if (st == QD_OK)
         st = sort_terms(&s, x, nt, terms, v);
     bool ok = true;
-    size_t nb = st == QD_OK ? number_buckets(terms, nt, &ok) : 0;
+    size_t nb = st == QD_OK ? number_buckets(ctx, terms, nt, &ok) : 0;
     if (st == QD_OK)
         st = ok ? gather(ctx, terms, nt, nb, v) : QD_ERR_NOMEM;
     qd__free(terms);

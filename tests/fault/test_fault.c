@@ -252,7 +252,7 @@ static qd_status sim_run(qd_ctx *ctx, faulty *f, double *final) {
     f->fail_at = f->count + armed;
     qd_sim *s = qd_sim_new(ctx, m, e);
     if (!s) {
-        st = qd_ctx_status(ctx);
+        st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_ARG; /* NULL says why */
     } else {
         double q0 = 1.2, qd0 = 0.3;
         qd_sim_opts o = {.method = QD_SIM_DOP853, .t0 = 0, .t_end = 1, .dt = 0.25,
