@@ -39,11 +39,13 @@ static const qd_expr *exact_div(qd_ctx *ctx, const qd_expr *num, const qd_expr *
 }
 
 /* Move a row with an entry that does not simplify to 0 in column k to row
- * k; false when there is none. */
-static bool find_pivot(elim *el, size_t k) {
+ * k; QD_ERR_SINGULAR when there is none. */
+static qd_status find_pivot(elim *el, size_t k) {
     for (size_t r = k; r < el->n; r++) {
         const qd_expr *x = qd_simplify(el->ctx, el->A[r * el->w + k]);
-        if (!x || qd_is_zero(x))
+        if (!x) /* not a zero: the simplifier failed (out of memory) */
+            return qd_ctx_status(el->ctx) != QD_OK ? qd_ctx_status(el->ctx) : QD_ERR_NOMEM;
+        if (qd_is_zero(x))
             continue;
         for (size_t j = 0; r != k && j < el->w; j++) {
             const qd_expr *t = el->A[r * el->w + j];
@@ -51,9 +53,9 @@ static bool find_pivot(elim *el, size_t k) {
             el->A[k * el->w + j] = t;
         }
         el->sign = r != k ? -el->sign : el->sign;
-        return true;
+        return QD_OK;
     }
-    return false;
+    return QD_ERR_SINGULAR;
 }
 
 static qd_status step(elim *el, size_t k, const qd_expr *prev) {
@@ -80,9 +82,9 @@ static qd_status bareiss(elim *el) {
     const qd_expr *prev = qd_int(el->ctx, 1);
     el->sign = 1;
     for (size_t k = 0; k < el->n; k++) {
-        if (!find_pivot(el, k))
-            return QD_ERR_SINGULAR;
-        qd_status st = step(el, k, prev);
+        qd_status st = find_pivot(el, k);
+        if (st == QD_OK)
+            st = step(el, k, prev);
         if (st != QD_OK)
             return st;
         prev = el->A[k * el->w + k];

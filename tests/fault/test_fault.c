@@ -221,6 +221,57 @@ static void test_derivation(void **state) {
     assert_true(ls.allocs > 10);
 }
 
+/* ---- a constrained derivation, solved --------------------------------------------- */
+
+#define CARTESIAN_PENDULUM                                                                     \
+    "coordinates x, y\nparameters m = 0.6, l = 1.4, g = 9.81\n"                                \
+    "particle m at (x, y)\nV = m*g*y\nconstraint rod: x^2 + y^2 = l^2\n"
+
+/* A pendulum in Cartesian coordinates (examples/pendulum_cartesian.qd):
+ * m r'' = -m g e_y + 2 lambda r with x x'' + y y'' + v^2 = 0 give
+ * r'' = -g e_y + r (g y - v^2) / l^2. */
+static qd_status check_cartesian(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    const double l = 1.4, g = 9.81, th = 0.8, w = 1.7;
+    const double x[4] = {l * sin(th), -l * cos(th), w * l * cos(th), w * l * sin(th)};
+    env v = {0, {0}, {0}};
+    for (size_t j = 0; j < 2; j++) {
+        v.syms[v.n] = e->q[j], v.vals[v.n++] = x[j];
+        v.syms[v.n] = e->qd[j], v.vals[v.n++] = x[2 + j];
+    }
+    env_params(ctx, m, &v);
+    double acc[2], k = (g * x[1] - x[2] * x[2] - x[3] * x[3]) / (l * l);
+    for (size_t j = 0; j < 2; j++) {
+        qd_status st = qd_eval(ctx, e->acc[j], v.n, v.syms, v.vals, &acc[j]);
+        if (st != QD_OK)
+            return st;
+    }
+    assert_true(fabs(acc[0] - x[0] * k) < 1e-12);
+    assert_true(fabs(acc[1] - (-g + x[1] * k)) < 1e-12);
+    return QD_OK;
+}
+
+static qd_status constrained_body(qd_ctx *ctx, faulty *f) {
+    (void)f;
+    qd_model *m;
+    qd_eom *e;
+    qd_status st = derive(ctx, CARTESIAN_PENDULUM, &m, &e);
+    if (st == QD_OK) {
+        assert_int_equal(e->ncon, 1);
+        st = qd_eom_solve(ctx, e, 100000);
+    }
+    if (st == QD_OK)
+        st = check_cartesian(ctx, m, e);
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_constrained(void **state) {
+    (void)state;
+    loop_stats ls = fault_loop("constrained derivation", constrained_body);
+    assert_true(ls.allocs > 10);
+}
+
 /* ---- simulation -------------------------------------------------------------- */
 
 /* th'' = -(g/l) sin th by classical RK4, h = 1e-4: error ~1e-14 over 1 s. */
@@ -337,6 +388,7 @@ static void test_modes(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_derivation),
+        cmocka_unit_test(test_constrained),
         cmocka_unit_test(test_simulation),
         cmocka_unit_test(test_modes),
     };
