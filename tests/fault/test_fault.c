@@ -13,6 +13,9 @@
  *   derivation: parse and Lagrange equations of the double pendulum; the
  *     accelerations M^-1 f at a state against Goldstein ch. 1 Exercise 22
  *     (seed 002; examples/double_pendulum.qd has the textbook equations);
+ *   constrained derivation: a pendulum in Cartesian coordinates with its rod
+ *     as a constraint, solved for q'' and the multiplier (qd_eom_solve); the
+ *     accelerations against r'' = -g e_y + r (g y - v^2) / l^2;
  *   simulation: a pendulum, dop853 over 1 s, the final state against a
  *     classical RK4 of th'' = -(g/l) sin th written here, energy conserved;
  *   modes: the double pendulum with equal masses and lengths about th = 0,
