@@ -176,7 +176,8 @@ QD_API const char *qd_rational_str(qd_ctx *ctx, const qd_expr *e);
 /* Does e contain the node x anywhere? */
 QD_API bool qd_has(const qd_expr *e, const qd_expr *x);
 /* The symbols in e, in canonical order, written to out (at most cap); returns
- * how many there are (which may exceed cap). */
+ * how many there are (which may exceed cap); 0 with QD_ERR_NOMEM in the
+ * context when out of memory. */
 QD_API size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_t cap);
 
 /* ---- operations ----------------------------------------------------------- */

@@ -235,8 +235,10 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
                          size_t *len, size_t *cap) {
     size_t k = qd_free_symbols(ctx, x, NULL, 0);
     const qd_expr **syms = qd__malloc(ctx, (k ? k : 1) * sizeof *syms);
-    if (!syms)
+    if (!syms || qd_ctx_status(ctx) == QD_ERR_NOMEM) { /* 0 symbols may mean out of memory */
+        qd__free(syms);
         return false;
+    }
     qd_free_symbols(ctx, x, syms, k);
     bool ok = true;
     for (size_t i = 0; ok && i < k; i++) {
