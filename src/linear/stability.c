@@ -219,7 +219,7 @@ qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     memset(out, 0, sizeof *out);
     out->n = s->nkeep;
     qd__steady_env env;
-    qd_status st = qd__steady_env_init(s, nvals, syms, vals, &env);
+    qd_status st = qd__steady_env_init(ctx, s, nvals, syms, vals, &env);
     if (st != QD_OK)
         return st;
     for (size_t j = 0; j < s->nkeep; j++)

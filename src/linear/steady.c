@@ -190,12 +190,12 @@ qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, siz
 
 /* ---- evaluation environment ------------------------------------------------ */
 
-qd_status qd__steady_env_init(const qd_steady *s, size_t nvals, const qd_expr *const *syms,
+qd_status qd__steady_env_init(qd_ctx *ctx, const qd_steady *s, size_t nvals, const qd_expr *const *syms,
                               const double *vals, qd__steady_env *env) {
     size_t nb = s->beta ? s->ncyc : 0;
     size_t cap = nvals + 2 * s->nkeep + s->ncyc + nb;
-    env->syms = qd__mem_calloc(NULL, cap ? cap : 1, sizeof *env->syms);
-    env->vals = qd__mem_calloc(NULL, cap ? cap : 1, sizeof *env->vals);
+    env->syms = qd__calloc(ctx, cap ? cap : 1, sizeof *env->syms);
+    env->vals = qd__calloc(ctx, cap ? cap : 1, sizeof *env->vals);
     if (!env->syms || !env->vals) {
         qd__steady_env_free(env);
         return QD_ERR_NOMEM;
@@ -477,7 +477,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                          const bool *wfix, const bool *pfix, qd_steady_point *pt,
                          double *residual_out) {
     search S = {.ctx = ctx, .s = s};
-    qd_status st = qd__steady_env_init(s, nvals, syms, vals, &S.env);
+    qd_status st = qd__steady_env_init(ctx, s, nvals, syms, vals, &S.env);
     if (st == QD_OK)
         st = setup(&S, xfix, wfix, pfix, pt);
     double *u = st == QD_OK ? qd__calloc(ctx, S.nu + 1, sizeof *u) : NULL;

@@ -23,13 +23,13 @@
 
 #define SOLVE_TOL 1e-12
 
-bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *mu) {
+bool qd__con_deficient(qd_ctx *ctx, size_t n, size_t m, const double *A, double tol, double *mu) {
     /* A^T (n x m) padded with zeros to a square: padded columns come last,
      * so the first column without a pivot is a genuine one when any is. */
     size_t s = n > m ? n : m;
-    double *S = qd__mem_calloc(NULL, s * s + 2 * s, sizeof *S);
-    size_t *pc = qd__mem_malloc(NULL, s * sizeof *pc);
-    bool *free_col = qd__mem_malloc(NULL, s * sizeof *free_col);
+    double *S = qd__calloc(ctx, s * s + 2 * s, sizeof *S);
+    size_t *pc = qd__malloc(ctx, s * sizeof *pc);
+    bool *free_col = qd__malloc(ctx, s * sizeof *free_col);
     bool deficient = false;
     if (S && pc && free_col) {
         double *null = S + s * s;
@@ -114,9 +114,11 @@ static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
-    if (qd__con_deficient(e->n, m, out + qd__out_A(e), SOLVE_TOL * 1e3, mu))
+    if (qd__con_deficient(ctx, e->n, m, out + qd__out_A(e), SOLVE_TOL * 1e3, mu))
         qd__con_report(ctx, e, mu, combination_nonzero(m, mu, out + qd__out_b(e)),
                        " at this state");
+    else if (qd_ctx_status(ctx) == QD_ERR_NOMEM) /* no verdict: its scratch ran out */
+        st = QD_ERR_NOMEM;
     else
         qd_ctx_error(ctx, st,
                      "the mass matrix is singular on the motions the constraints allow at this "

@@ -120,7 +120,7 @@ static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *ou
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
-    if (qd__con_deficient(e->n, m, out + qd__out_A(e), RANK_TOL, mu)) {
+    if (qd__con_deficient(ctx, e->n, m, out + qd__out_A(e), RANK_TOL, mu)) {
         /* the constraints themselves (not their derivatives) decide
          * consistency: x = 1 and x = 2 have the same rows A */
         const double *g = out + qd__out_g(e);
@@ -130,6 +130,8 @@ static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *ou
             top = fmax(top, fabs(g[k]));
         }
         st = qd__con_report(ctx, e, mu, fabs(s) > 1e-9 * (1 + top), "");
+    } else if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+        st = QD_ERR_NOMEM; /* no verdict on A: its scratch ran out */
     }
     qd__free(mu);
     return st;
