@@ -92,6 +92,7 @@ static loop_stats fault_loop(const char *what, body_fn body) {
         qd_status st = ctx ? body(ctx, &f) : QD_ERR_NOMEM;
         char why[256];
         snprintf(why, sizeof why, "%s", ctx ? qd_ctx_message(ctx) : "");
+        qd_status recorded = ctx ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
         qd_ctx_free(ctx);
         ls.runs++;
         if (f.live != 0)
@@ -100,6 +101,9 @@ static loop_stats fault_loop(const char *what, body_fn body) {
             if (st != QD_ERR_NOMEM || !f.failed)
                 fail_msg("%s, allocation %ld failed: status %s instead of out of memory (%s)",
                          what, n, qd_status_str(st), why);
+            if (recorded != QD_ERR_NOMEM) /* the context must say why, too */
+                fail_msg("%s, allocation %ld failed: out of memory, but the context says %s",
+                         what, n, qd_status_str(recorded));
             ls.nomem++;
         }
         if (!f.failed) {
