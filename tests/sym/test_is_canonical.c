@@ -81,6 +81,12 @@ static void test_rejects(void **state) {
     const qd_expr *big = qd_pow(ctx, qd_rat(ctx, 3, 2), qd_int(ctx, 1000000));
     assert_int_equal(qd_expr_kind(big), QD_POW);
     assert_true(canonical(big));
+    /* 0 to such a power is 0, and to minus it a division by zero (was: NULL, no error) */
+    const qd_expr *huge = qd_int(ctx, 1000000);
+    assert_ptr_equal(qd_pow(ctx, zero, huge), zero);
+    assert_null(qd_pow(ctx, zero, qd_neg(ctx, huge)));
+    assert_int_equal(qd_ctx_status(ctx), QD_ERR_DIVZERO);
+    qd_ctx_clear_error(ctx);
     assert_false(form(QD_POW, 2, (const qd_expr *[]){xy, two}));           /* (x*y)^2 */
     assert_false(form(QD_POW, 2, (const qd_expr *[]){xa, two}));           /* (x^a)^2 */
     assert_false(form(QD_POW, 2, (const qd_expr *[]){one, x}));
