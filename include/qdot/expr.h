@@ -36,6 +36,25 @@ typedef struct qd_expr qd_expr; /* always handled as const qd_expr * */
 QD_API qd_ctx *qd_ctx_new(void);                /* NULL when out of memory */
 QD_API void qd_ctx_free(qd_ctx *ctx);           /* frees every expression; NULL is fine */
 
+/* The memory a context and everything made in it come from (SQLite's
+ * sqlite3_mem_methods, but per context: no global state).  The library's
+ * allocations go through these three functions (docs/design.md lists the few
+ * that cannot reach a context); one that fails makes the
+ * call in progress return QD_ERR_NOMEM, with nothing leaked.  realloc_fn and
+ * free_fn are never given NULL.  The allocator must outlive the context and
+ * every object made with it (results are freed through it, after the context
+ * if need be); what malloc_fn and realloc_fn return must be aligned as
+ * malloc's.  GMP, FLINT and LAPACK allocate on their own (docs/design.md,
+ * "Allocation and out-of-memory"). */
+typedef struct qd_allocator {
+    void *(*malloc_fn)(void *user, size_t size);
+    void *(*realloc_fn)(void *user, void *p, size_t size);
+    void (*free_fn)(void *user, void *p);
+    void *user;
+} qd_allocator;
+
+QD_API qd_ctx *qd_ctx_new_with(const qd_allocator *a); /* a NULL: the C library's */
+
 QD_API qd_status qd_ctx_status(const qd_ctx *ctx);     /* first error since the last clear */
 QD_API const char *qd_ctx_message(const qd_ctx *ctx);  /* its message, "" when none */
 QD_API const qd_diag *qd_ctx_diag(const qd_ctx *ctx);  /* its whole record (status.h) */
@@ -172,7 +191,8 @@ QD_API const char *qd_rational_str(qd_ctx *ctx, const qd_expr *e);
 /* Does e contain the node x anywhere? */
 QD_API bool qd_has(const qd_expr *e, const qd_expr *x);
 /* The symbols in e, in canonical order, written to out (at most cap); returns
- * how many there are (which may exceed cap). */
+ * how many there are (which may exceed cap); 0 with QD_ERR_NOMEM in the
+ * context when out of memory. */
 QD_API size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_t cap);
 
 /* ---- operations ----------------------------------------------------------- */

@@ -19,9 +19,11 @@ typedef struct qd_buf {
     size_t len;
     size_t cap;
     bool failed;  /* sticky: an append ran out of memory */
+    const qd_allocator *alloc; /* NULL: the C library's (set before the first append) */
 } qd_buf;
 
-#define QD_BUF_INIT {NULL, 0, 0, false}
+#define QD_BUF_INIT {NULL, 0, 0, false, NULL}
+#define QD_BUF_WITH(a) {NULL, 0, 0, false, (a)}  /* memory from the allocator a */
 
 QD_API void qd_buf_free(qd_buf *b);
 QD_API void qd_buf_clear(qd_buf *b);          /* empties it, keeps the memory */

@@ -13,7 +13,8 @@ struct qd_arena_block {
     alignas(max_align_t) unsigned char data[];
 };
 
-void qd_arena_init(qd_arena *a) {
+void qd_arena_init(qd_arena *a, const qd_allocator *al) {
+    a->al = al;
     a->head = NULL;
     a->used = 0;
     a->total = 0;
@@ -25,7 +26,7 @@ void *qd_arena_alloc(qd_arena *a, size_t size) {
     if (!a->head || a->head->cap - a->used < size) {
         /* Oversized requests get a block of their own size. */
         size_t cap = size > QD_ARENA_BLOCK ? size : QD_ARENA_BLOCK;
-        qd_arena_block *b = malloc(sizeof *b + cap);
+        qd_arena_block *b = cap > SIZE_MAX - sizeof *b ? NULL : qd__mem_malloc(a->al, sizeof *b + cap);
         if (!b)
             return NULL;
         b->cap = cap;
@@ -43,8 +44,8 @@ void qd_arena_free(qd_arena *a) {
     qd_arena_block *b = a->head;
     while (b) {
         qd_arena_block *next = b->next;
-        free(b);
+        qd__free(b);
         b = next;
     }
-    qd_arena_init(a);
+    qd_arena_init(a, a->al);
 }

@@ -8,6 +8,7 @@
 #define QD_BASE_ARENA_H
 
 #include <stddef.h>
+#include "mem.h"
 
 typedef struct qd_arena_block qd_arena_block;
 
@@ -15,9 +16,10 @@ typedef struct qd_arena {
     qd_arena_block *head;
     size_t used;       /* bytes used in head */
     size_t total;      /* bytes handed out over all blocks */
+    const qd_allocator *al; /* where blocks come from (mem.h) */
 } qd_arena;
 
-void qd_arena_init(qd_arena *a);
+void qd_arena_init(qd_arena *a, const qd_allocator *al);
 /* size bytes aligned for any object; NULL when out of memory. */
 void *qd_arena_alloc(qd_arena *a, size_t size);
 void qd_arena_free(qd_arena *a);

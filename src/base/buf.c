@@ -1,5 +1,6 @@
 /* src/base/buf.c - the growable string of qdot/print.h. */
 #include "qdot/print.h"
+#include "mem.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -7,7 +8,7 @@
 #include <string.h>
 
 void qd_buf_free(qd_buf *b) {
-    free(b->s);
+    qd__free(b->s);
     b->s = NULL;
     b->len = b->cap = 0;
     b->failed = false;
@@ -28,7 +29,7 @@ static bool reserve(qd_buf *b, size_t extra) {
     size_t cap = b->cap ? b->cap : 64;
     while (cap < b->len + extra + 1)
         cap *= 2;
-    char *s = realloc(b->s, cap);
+    char *s = qd__mem_realloc(b->alloc, b->s, cap);
     if (!s) {
         b->failed = true;
         return false;

@@ -13,7 +13,7 @@ static size_t slot_of(const void *key, size_t cap) {
 }
 
 void qd_ptrmap_free(qd_ptrmap *m) {
-    free(m->slots);
+    qd__free(m->slots);
     m->slots = NULL;
     m->cap = m->len = 0;
 }
@@ -45,7 +45,7 @@ bool qd_ptrmap_has(const qd_ptrmap *m, const void *key) {
 
 static bool grow(qd_ptrmap *m) {
     size_t cap = m->cap ? m->cap * 2 : 64;
-    qd_ptrmap_slot *slots = calloc(cap, sizeof *slots);
+    qd_ptrmap_slot *slots = qd__mem_calloc(m->al, cap, sizeof *slots);
     if (!slots)
         return false;
     for (size_t i = 0; i < m->cap; i++) {
@@ -56,7 +56,7 @@ static bool grow(qd_ptrmap *m) {
             j = (j + 1) & (cap - 1);
         slots[j] = m->slots[i];
     }
-    free(m->slots);
+    qd__free(m->slots);
     m->slots = slots;
     m->cap = cap;
     return true;

@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 #include <stdbool.h>
+#include "mem.h"
 
 typedef struct qd_ptrmap_slot {
     const void *key;
@@ -20,9 +21,11 @@ typedef struct qd_ptrmap {
     qd_ptrmap_slot *slots;
     size_t cap;   /* a power of two, or 0 */
     size_t len;
+    const qd_allocator *al; /* where slots come from (mem.h) */
 } qd_ptrmap;
 
-#define QD_PTRMAP_INIT {NULL, 0, 0}
+#define QD_PTRMAP_INIT {NULL, 0, 0, NULL}      /* the C library's memory */
+#define QD_PTRMAP_AL(a) {NULL, 0, 0, (a)}       /* a context's: qd__ctx_allocator(ctx) */
 
 void qd_ptrmap_free(qd_ptrmap *m);
 void qd_ptrmap_clear(qd_ptrmap *m);

@@ -108,13 +108,13 @@ static const qd_expr *rewrite(qd_ctx *ctx, const qd_expr *e, void *data) {
 }
 
 qd_status qd__cg_angle_sums(qd_ctx *ctx, size_t n, const qd_expr **exprs, bool *applied) {
-    census c = {QD_PTRMAP_INIT, QD_PTRMAP_INIT, QD_PTRMAP_INIT, 0, 0, 0, false};
+    census c = {QD_PTRMAP_AL(qd__ctx_allocator(ctx)), QD_PTRMAP_AL(qd__ctx_allocator(ctx)), QD_PTRMAP_AL(qd__ctx_allocator(ctx)), 0, 0, 0, false};
     *applied = false;
     for (size_t i = 0; i < n && !c.oom; i++)
         visit(&c, exprs[i]);
     qd_status st = c.oom ? QD_ERR_NOMEM : QD_OK;
     if (st == QD_OK && c.npair && calls_after(ctx, &c) < c.nsingle + c.npair) {
-        qd_ptrmap memo = QD_PTRMAP_INIT;
+        qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
         for (size_t i = 0; i < n && st == QD_OK; i++) {
             exprs[i] = qd__map(ctx, exprs[i], &memo, rewrite, NULL);
             if (!exprs[i])

@@ -70,7 +70,7 @@ static void collect(walk *w, const qd_expr *e) {
     if (e->kind == QD_SYMBOL) {
         if (w->n == w->cap) {
             size_t cap = w->cap ? 2 * w->cap : 32;
-            const qd_expr **v = realloc(w->syms, cap * sizeof *v);
+            const qd_expr **v = qd__mem_realloc(w->seen.al, w->syms, cap * sizeof *v);
             if (!v) {
                 w->oom = true;
                 return;
@@ -164,8 +164,8 @@ static void indent(qd_buf *out, const char *text) {
  * lhs_fmt % index. */
 static qd_status block(gen *g, const src *s, size_t nout, const qd_expr *const *out,
                        const char *lhs_fmt) {
-    walk w = {QD_PTRMAP_INIT, NULL, 0, 0, NULL, false};
-    qd_buf text = QD_BUF_INIT;
+    walk w = {QD_PTRMAP_AL(qd__ctx_allocator(g->ctx)), NULL, 0, 0, NULL, false};
+    qd_buf text = QD_BUF_WITH(qd__ctx_allocator(g->ctx));
     for (size_t i = 0; i < nout; i++)
         collect(&w, out[i]);
     qd_status st = w.oom ? QD_ERR_NOMEM : QD_OK;
@@ -175,9 +175,9 @@ static qd_status block(gen *g, const src *s, size_t nout, const qd_expr *const *
                      qd_expr_name(w.bad));
         st = QD_ERR_ARG;
     }
-    bound *vs = st == QD_OK ? malloc((w.n ? w.n : 1) * sizeof *vs) : NULL;
-    char(*names)[40] = st == QD_OK ? malloc((nout ? nout : 1) * sizeof *names) : NULL;
-    const char **lhs = st == QD_OK ? malloc((nout ? nout : 1) * sizeof *lhs) : NULL;
+    bound *vs = st == QD_OK ? qd__malloc(g->ctx, (w.n ? w.n : 1) * sizeof *vs) : NULL;
+    char(*names)[40] = st == QD_OK ? qd__malloc(g->ctx, (nout ? nout : 1) * sizeof *names) : NULL;
+    const char **lhs = st == QD_OK ? qd__malloc(g->ctx, (nout ? nout : 1) * sizeof *lhs) : NULL;
     if (st == QD_OK && (!vs || !names || !lhs))
         st = QD_ERR_NOMEM;
     for (size_t i = 0; i < w.n && st == QD_OK; i++)
@@ -197,10 +197,10 @@ static qd_status block(gen *g, const src *s, size_t nout, const qd_expr *const *
     if (st == QD_ERR_NOMEM)
         qd__oom(g->ctx);
     qd_ptrmap_free(&w.seen);
-    free(w.syms);
-    free(vs);
-    free(names);
-    free(lhs);
+    qd__free(w.syms);
+    qd__free(vs);
+    qd__free(names);
+    qd__free(lhs);
     return st;
 }
 
@@ -249,10 +249,10 @@ static qd_status build(gen *g) {
     const qd_eom *e = g->e;
     size_t n = g->n, nc = g->nc, nk = g->nk;
     g->nall = n * n + n + nc * n + nc + 1 + 2 * n * nk;
-    g->all = malloc(g->nall * sizeof *g->all);
-    const qd_expr **terms = malloc((1 + n + nc) * sizeof *terms);
+    g->all = qd__malloc(ctx, g->nall * sizeof *g->all);
+    const qd_expr **terms = qd__malloc(ctx, (1 + n + nc) * sizeof *terms);
     if (!g->all || !terms) {
-        free(terms);
+        qd__free(terms);
         qd__oom(ctx);
         return QD_ERR_NOMEM;
     }
@@ -273,7 +273,7 @@ static qd_status build(gen *g) {
         for (size_t i = 0; i < nk; i++)
             g->R[k * nk + i] = jac_entry(g, i, y, terms);
     }
-    free(terms);
+    qd__free(terms);
     if (qd_ctx_status(ctx) != QD_OK)
         return qd_ctx_status(ctx);
     for (size_t i = 0; i < n * n; i++)
@@ -439,7 +439,7 @@ static qd_status fn_forcing(gen *g) {
  * K is computed once. */
 static qd_status system_block(gen *g, const src *s) {
     size_t nk = g->nk;
-    const qd_expr **out = malloc((nk * nk + nk) * sizeof *out);
+    const qd_expr **out = qd__malloc(g->ctx, (nk * nk + nk) * sizeof *out);
     if (!out) {
         qd__oom(g->ctx);
         return QD_ERR_NOMEM;
@@ -447,7 +447,7 @@ static qd_status system_block(gen *g, const src *s) {
     qd_status st = system_outputs(g, out);
     if (st == QD_OK)
         st = block(g, s, nk * nk + nk, out, "qd_K[%zu]");
-    free(out);
+    qd__free(out);
     return st;
 }
 
@@ -562,7 +562,7 @@ qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const cha
         st = fn_energy(&g);
     if (st == QD_OK)
         st = fn_jacobian(&g);
-    free(g.all);
+    qd__free(g.all);
     if (st == QD_OK && (c->failed || (h && h->failed))) {
         qd__oom(ctx);
         st = QD_ERR_NOMEM;
@@ -572,7 +572,7 @@ qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const cha
 
 qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                        qd_buf *c_text, qd_buf *h_text) {
-    qd_buf scratch = QD_BUF_INIT;
+    qd_buf scratch = QD_BUF_WITH(qd__ctx_allocator(ctx));
     qd_status st = qd__codegen(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
     qd_buf_free(&scratch);
     return st;

@@ -13,6 +13,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "cg.h"
+#include "../base/mem.h"
 
 #include <dlfcn.h>
 #include <errno.h>
@@ -198,7 +199,7 @@ qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const 
     memset(out, 0, sizeof *out);
     if (!ctx || !m || !e)
         return QD_ERR_ARG;
-    qd_buf text = QD_BUF_INIT;
+    qd_buf text = QD_BUF_WITH(qd__ctx_allocator(ctx));
     char dir[4000];
     qd_status st = qd__codegen(ctx, m, e, PREFIX, true, &text, NULL);
     if (st == QD_OK)

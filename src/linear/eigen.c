@@ -14,6 +14,7 @@
  * (Desloge ch. 62; seed-desloge-B.md pitfall 3).
  */
 #include "linear.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -31,11 +32,11 @@ extern void dggev_(const char *jobvl, const char *jobvr, const int *n, double *a
                    double *vl, const int *ldvl, double *vr, const int *ldvr, double *work,
                    const int *lwork, int *info);
 
-bool qd__sym_eig(size_t n, const double *A, double *w, double *vecs) {
+bool qd__sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs) {
     int ni = (int)n, info = 0, lwork = -1;
     if (n == 0)
         return true;
-    double *a = malloc(n * n * sizeof *a), q;
+    double *a = qd__malloc(ctx, n * n * sizeof *a), q;
     if (!a)
         return false;
     for (size_t i = 0; i < n; i++)
@@ -44,24 +45,24 @@ bool qd__sym_eig(size_t n, const double *A, double *w, double *vecs) {
     const char *jobz = vecs ? "V" : "N";
     dsyev_(jobz, "U", &ni, a, &ni, w, &q, &lwork, &info);
     lwork = info == 0 ? (int)q : 0;
-    double *work = lwork > 0 ? malloc((size_t)lwork * sizeof *work) : NULL;
+    double *work = lwork > 0 ? qd__malloc(ctx, (size_t)lwork * sizeof *work) : NULL;
     if (work)
         dsyev_(jobz, "U", &ni, a, &ni, w, work, &lwork, &info);
     bool ok = work && info == 0;
     if (ok && vecs)
         memcpy(vecs, a, n * n * sizeof *a);
-    free(work);
-    free(a);
+    qd__free(work);
+    qd__free(a);
     return ok;
 }
 
 void qd_modes_result_free(qd_modes_result *r) {
     if (!r)
         return;
-    free(r->omega2);
-    free(r->shapes);
-    free(r->eig_re);
-    free(r->eig_im);
+    qd__free(r->omega2);
+    qd__free(r->shapes);
+    qd__free(r->eig_re);
+    qd__free(r->eig_im);
     memset(r, 0, sizeof *r);
 }
 
@@ -88,10 +89,10 @@ static void fix_signs(size_t n, double *shapes) {
 static qd_status conservative(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *r) {
     size_t n = lin->n;
     int ni = (int)n, itype = 1, info = 0, lwork = -1, liwork = -1, iq = 0;
-    double *a = malloc(n * n * sizeof *a), *b = malloc(n * n * sizeof *b), q = 0;
+    double *a = qd__malloc(ctx, n * n * sizeof *a), *b = qd__malloc(ctx, n * n * sizeof *b), q = 0;
     if (!a || !b) {
-        free(a);
-        free(b);
+        qd__free(a);
+        qd__free(b);
         return QD_ERR_NOMEM;
     }
     for (size_t i = 0; i < n; i++)
@@ -102,8 +103,8 @@ static qd_status conservative(qd_ctx *ctx, const qd_linear *lin, qd_modes_result
     dsygvd_(&itype, "V", "U", &ni, a, &ni, b, &ni, r->omega2, &q, &lwork, &iq, &liwork, &info);
     lwork = (int)q;
     liwork = iq;
-    double *work = malloc(((size_t)lwork + 1) * sizeof *work);
-    int *iwork = malloc(((size_t)liwork + 1) * sizeof *iwork);
+    double *work = qd__malloc(ctx, ((size_t)lwork + 1) * sizeof *work);
+    int *iwork = qd__malloc(ctx, ((size_t)liwork + 1) * sizeof *iwork);
     if (work && iwork && info == 0)
         dsygvd_(&itype, "V", "U", &ni, a, &ni, b, &ni, r->omega2, work, &lwork, iwork, &liwork,
                 &info);
@@ -122,10 +123,10 @@ static qd_status conservative(qd_ctx *ctx, const qd_linear *lin, qd_modes_result
     for (size_t i = 0; st == QD_OK && i < n; i++)
         for (size_t j = 0; j < n; j++)
             r->shapes[i * n + j] = a[i + j * n];
-    free(work);
-    free(iwork);
-    free(a);
-    free(b);
+    qd__free(work);
+    qd__free(iwork);
+    qd__free(a);
+    qd__free(b);
     if (st != QD_OK)
         return st;
     fix_signs(n, r->shapes);
@@ -159,10 +160,10 @@ static int by_re_desc(const void *pa, const void *pb) {
     return a->im < b->im ? 1 : a->im > b->im ? -1 : 0;
 }
 
-static void sort_eigs(qd_modes_result *r) {
-    cplx *c = malloc((r->neig + 1) * sizeof *c);
+static qd_status sort_eigs(qd_ctx *ctx, qd_modes_result *r) {
+    cplx *c = qd__malloc(ctx, (r->neig + 1) * sizeof *c);
     if (!c)
-        return;
+        return QD_ERR_NOMEM; /* unsorted would break the documented order */
     for (size_t i = 0; i < r->neig; i++)
         c[i] = (cplx){r->eig_re[i], r->eig_im[i]};
     qsort(c, r->neig, sizeof *c, by_re_desc);
@@ -170,7 +171,8 @@ static void sort_eigs(qd_modes_result *r) {
         r->eig_re[i] = c[i].re;
         r->eig_im[i] = c[i].im;
     }
-    free(c);
+    qd__free(c);
+    return QD_OK;
 }
 
 /* Stable when every Re s < 0, or Re s = 0 only on simple nonzero roots. */
@@ -201,9 +203,9 @@ static int verdict(const qd_modes_result *r) {
 static qd_status state_space(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *r) {
     size_t n = lin->n, N = 2 * n;
     int Ni = (int)N, info = 0, lwork = -1, one = 1;
-    double *a = calloc(N * N, sizeof *a), *b = calloc(N * N, sizeof *b);
-    double *ar = malloc(N * sizeof *ar), *ai = malloc(N * sizeof *ai);
-    double *beta = malloc(N * sizeof *beta), q = 0, dummy = 0;
+    double *a = qd__calloc(ctx, N * N, sizeof *a), *b = qd__calloc(ctx, N * N, sizeof *b);
+    double *ar = qd__malloc(ctx, N * sizeof *ar), *ai = qd__malloc(ctx, N * sizeof *ai);
+    double *beta = qd__malloc(ctx, N * sizeof *beta), q = 0, dummy = 0;
     qd_status st = QD_OK;
     if (!a || !b || !ar || !ai || !beta) {
         st = QD_ERR_NOMEM;
@@ -221,14 +223,14 @@ static qd_status state_space(qd_ctx *ctx, const qd_linear *lin, qd_modes_result 
     dggev_("N", "N", &Ni, a, &Ni, b, &Ni, ar, ai, beta, &dummy, &one, &dummy, &one, &q, &lwork,
            &info);
     lwork = (int)q;
-    double *work = malloc(((size_t)lwork + 1) * sizeof *work);
+    double *work = qd__malloc(ctx, ((size_t)lwork + 1) * sizeof *work);
     if (!work) {
         st = QD_ERR_NOMEM;
         goto done;
     }
     dggev_("N", "N", &Ni, a, &Ni, b, &Ni, ar, ai, beta, &dummy, &one, &dummy, &one, work, &lwork,
            &info);
-    free(work);
+    qd__free(work);
     if (info != 0) {
         qd_ctx_error(ctx, QD_ERR_NUMERIC, "the eigen-solver (dggev) failed: info %d", info);
         st = QD_ERR_NUMERIC;
@@ -245,14 +247,14 @@ static qd_status state_space(qd_ctx *ctx, const qd_linear *lin, qd_modes_result 
         r->eig_re[i] = ar[i] / beta[i];
         r->eig_im[i] = ai[i] / beta[i];
     }
-    sort_eigs(r);
-    r->stable = verdict(r);
+    if ((st = sort_eigs(ctx, r)) == QD_OK)
+        r->stable = verdict(r);
 done:
-    free(a);
-    free(b);
-    free(ar);
-    free(ai);
-    free(beta);
+    qd__free(a);
+    qd__free(b);
+    qd__free(ar);
+    qd__free(ai);
+    qd__free(beta);
     if (st == QD_ERR_NOMEM)
         qd_ctx_error(ctx, st, "out of memory in the eigen-analysis");
     return st;
@@ -279,8 +281,8 @@ qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out
     size_t n = lin->n, nn = n * n;
     out->n = n;
     out->neig = 2 * n;
-    out->eig_re = calloc(2 * n + 1, sizeof *out->eig_re);
-    out->eig_im = calloc(2 * n + 1, sizeof *out->eig_im);
+    out->eig_re = qd__calloc(ctx, 2 * n + 1, sizeof *out->eig_re);
+    out->eig_im = qd__calloc(ctx, 2 * n + 1, sizeof *out->eig_im);
     if (!out->eig_re || !out->eig_im) {
         qd_modes_result_free(out);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory in the eigen-analysis");
@@ -298,11 +300,11 @@ qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out
     out->conservative = (cg == 0 || cg <= 1e-12 * scale) && skew <= 1e-12 * max_abs(nn, lin->K);
     qd_status st;
     if (out->conservative) {
-        out->omega2 = calloc(n + 1, sizeof *out->omega2);
-        out->shapes = calloc(nn + 1, sizeof *out->shapes);
+        out->omega2 = qd__calloc(ctx, n + 1, sizeof *out->omega2);
+        out->shapes = qd__calloc(ctx, nn + 1, sizeof *out->shapes);
         st = out->omega2 && out->shapes ? conservative(ctx, lin, out) : QD_ERR_NOMEM;
         if (st == QD_OK)
-            sort_eigs(out);
+            st = sort_eigs(ctx, out);
     } else {
         st = state_space(ctx, lin, out);
     }

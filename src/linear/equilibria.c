@@ -7,6 +7,7 @@
 
 #include "base/ptrmap.h"
 #include "linear.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -47,7 +48,7 @@ static void mark_angles(const qd_expr *x, const qd_eom *e, bool *angle, qd_ptrma
 qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi) {
     (void)ctx;
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     for (size_t j = 0; j < e->n; j++)
         angle[j] = false;
     for (size_t j = 0; j < e->n; j++)
@@ -272,7 +273,7 @@ static bool branch_on(exact *x, const qd_expr **eqs, size_t neq, size_t i) {
             return false;
         var[k] = c ? u : SIZE_MAX;
     }
-    const qd_expr **rest = malloc((neq + 1) * sizeof *rest);
+    const qd_expr **rest = qd__malloc(x->ctx, (neq + 1) * sizeof *rest);
     if (!rest) {
         x->failed = true;
         return true;
@@ -295,13 +296,13 @@ static bool branch_on(exact *x, const qd_expr **eqs, size_t neq, size_t i) {
             x->val[u] = NULL;
         }
     }
-    free(rest);
+    qd__free(rest);
     return true;
 }
 
 static void solve_rec(exact *x, const qd_expr **eqs, size_t neq) {
     size_t live = 0, u;
-    const qd_expr **keep = malloc((neq + 1) * sizeof *keep);
+    const qd_expr **keep = qd__malloc(x->ctx, (neq + 1) * sizeof *keep);
     if (!keep) {
         x->failed = true;
         return;
@@ -338,18 +339,18 @@ static void solve_rec(exact *x, const qd_expr **eqs, size_t neq) {
                 x->failed = true;
         }
     }
-    free(keep);
+    qd__free(keep);
 }
 
 /* The exact attempt: sols (nsol * n) or false. */
 static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const qd__lin *L,
                         const bool *angle, exact *x) {
     size_t n = e->n, np = qd_model_nparams(m);
-    const qd_expr **from = malloc((np + 1) * sizeof *from), **to = malloc((np + 1) * sizeof *to);
-    const qd_expr **eqs = malloc((n + 1) * sizeof *eqs);
+    const qd_expr **from = qd__malloc(ctx, (np + 1) * sizeof *from), **to = qd__malloc(ctx, (np + 1) * sizeof *to);
+    const qd_expr **eqs = qd__malloc(ctx, (n + 1) * sizeof *eqs);
     *x = (exact){.ctx = ctx, .n = n, .q = e->q, .angle = angle,
-                 .val = calloc(n + 1, sizeof *x->val),
-                 .sols = calloc(MAX_EXACT * n + 1, sizeof *x->sols),
+                 .val = qd__calloc(ctx, n + 1, sizeof *x->val),
+                 .sols = qd__calloc(ctx, MAX_EXACT * n + 1, sizeof *x->sols),
                  .z = qd_symbol(ctx, "qd__eq_z")};
     bool ok = from && to && eqs && x->val && x->sols && x->z;
     for (size_t i = 0; ok && i < np; i++) {
@@ -366,9 +367,9 @@ static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
     ok = ok && !x->failed;
     if (qd_ctx_status(ctx) != QD_OK && qd_ctx_status(ctx) != QD_ERR_NOMEM)
         qd_ctx_clear_error(ctx);
-    free(from);
-    free(to);
-    free(eqs);
+    qd__free(from);
+    qd__free(to);
+    qd__free(eqs);
     return ok;
 }
 
@@ -376,10 +377,10 @@ static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
 
 static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     size_t n = L->n;
-    double *K = malloc((n * n + 1) * sizeof *K), *w = malloc((n + 1) * sizeof *w);
+    double *K = qd__malloc(L->ctx, (n * n + 1) * sizeof *K), *w = qd__malloc(L->ctx, (n + 1) * sizeof *w);
     if (!K || !w) {
-        free(K);
-        free(w);
+        qd__free(K);
+        qd__free(w);
         return QD_ERR_NOMEM;
     }
     qd__lin_run(L, p->q);
@@ -396,7 +397,7 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     p->residual = 0;
     for (size_t j = 0; j < n; j++)
         p->residual = fmax(p->residual, fabs(qd__lin_F(L)[j]));
-    bool ok = qd__sym_eig(n, K, w, NULL);
+    bool ok = qd__sym_eig(L->ctx, n, K, w, NULL);
     double wmax = 0;
     for (size_t j = 0; ok && j < n; j++)
         wmax = fmax(wmax, fabs(w[j]));
@@ -412,8 +413,8 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     p->kind = p->nzero ? QD_EQ_DEGENERATE
             : p->nneg == 0 ? QD_EQ_MINIMUM
             : p->npos == 0 ? QD_EQ_MAXIMUM : QD_EQ_SADDLE;
-    free(K);
-    free(w);
+    qd__free(K);
+    qd__free(w);
     return ok ? QD_OK : QD_ERR_NUMERIC;
 }
 
@@ -421,10 +422,10 @@ void qd_equilibria_free(qd_equilibria *r) {
     if (!r)
         return;
     for (size_t i = 0; i < r->count; i++) {
-        free(r->pts[i].q);
-        free(r->pts[i].exact);
+        qd__free(r->pts[i].q);
+        qd__free(r->pts[i].exact);
     }
-    free(r->pts);
+    qd__free(r->pts);
     memset(r, 0, sizeof *r);
 }
 
@@ -452,8 +453,8 @@ static void sort_by_q(size_t n, qd_equilibrium *pts, size_t count) {
 /* A null direction of J along which F stays 0: not an isolated root. */
 static bool on_continuum(qd__lin *L, const double *q, double ftol) {
     size_t n = L->n;
-    double *w = malloc((n + 1) * sizeof *w), *v = malloc((n * n + 1) * sizeof *v);
-    double *JtJ = malloc((n * n + 1) * sizeof *JtJ), *t = malloc((n + 1) * sizeof *t);
+    double *w = qd__malloc(L->ctx, (n + 1) * sizeof *w), *v = qd__malloc(L->ctx, (n * n + 1) * sizeof *v);
+    double *JtJ = qd__malloc(L->ctx, (n * n + 1) * sizeof *JtJ), *t = qd__malloc(L->ctx, (n + 1) * sizeof *t);
     bool cont = false;
     if (w && v && JtJ && t) {
         qd__lin_run(L, q);
@@ -466,7 +467,7 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                 JtJ[i * n + j] = s;
             }
         /* J = 0 (no force anywhere near: a free particle) is singular too */
-        if (qd__sym_eig(n, JtJ, w, v) && w[0] <= 1e-14 * w[n - 1]) {
+        if (qd__sym_eig(L->ctx, n, JtJ, w, v) && w[0] <= 1e-14 * w[n - 1]) {
             double h = 1e-3 * (1 + fabs(q[0]));
             for (size_t i = 0; i < n; i++)
                 t[i] = q[i] + h * v[i];
@@ -477,26 +478,26 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
             cont = r <= 1e3 * ftol;
         }
     }
-    free(w);
-    free(v);
-    free(JtJ);
-    free(t);
+    qd__free(w);
+    qd__free(v);
+    qd__free(JtJ);
+    qd__free(t);
     return cont;
 }
 
 static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const exact *x,
                           double ftol, qd_equilibria *out) {
     size_t n = L->n, cnt = x ? x->nsol : roots->count;
-    out->pts = calloc(cnt + 1, sizeof *out->pts);
+    out->pts = qd__calloc(ctx, cnt + 1, sizeof *out->pts);
     if (!out->pts)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < cnt; i++) {
         qd_equilibrium *p = &out->pts[out->count++];
-        p->q = malloc((n + 1) * sizeof *p->q);
+        p->q = qd__malloc(ctx, (n + 1) * sizeof *p->q);
         if (!p->q)
             return QD_ERR_NOMEM;
         if (x) {
-            p->exact = malloc((n + 1) * sizeof *p->exact);
+            p->exact = qd__malloc(ctx, (n + 1) * sizeof *p->exact);
             if (!p->exact)
                 return QD_ERR_NOMEM;
             for (size_t j = 0; j < n; j++) {
@@ -522,7 +523,7 @@ static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const
 /* Exact roots must also be roots numerically: each is checked. */
 static bool exact_verified(qd_ctx *ctx, qd__lin *L, const exact *x, double ftol) {
     size_t n = L->n;
-    double *q = malloc((n + 1) * sizeof *q);
+    double *q = qd__malloc(ctx, (n + 1) * sizeof *q);
     bool ok = q != NULL;
     for (size_t i = 0; ok && i < x->nsol; i++) {
         for (size_t j = 0; ok && j < n; j++)
@@ -531,7 +532,7 @@ static bool exact_verified(qd_ctx *ctx, qd__lin *L, const exact *x, double ftol)
         for (size_t j = 0; ok && j < n; j++)
             ok = fabs(qd__lin_F(L)[j]) <= ftol;
     }
-    free(q);
+    qd__free(q);
     return ok;
 }
 
@@ -547,9 +548,9 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
     if (st != QD_OK)
         return st;
     qd__lin_bind(&L, nvals, syms, vals);
-    bool *angle = calloc(n + 1, sizeof *angle);
-    double *lo = malloc((n + 1) * sizeof *lo), *hi = malloc((n + 1) * sizeof *hi);
-    double *q = malloc((n + 1) * sizeof *q);
+    bool *angle = qd__calloc(ctx, n + 1, sizeof *angle);
+    double *lo = qd__malloc(ctx, (n + 1) * sizeof *lo), *hi = qd__malloc(ctx, (n + 1) * sizeof *hi);
+    double *q = qd__malloc(ctx, (n + 1) * sizeof *q);
     qd__roots roots = {.n = n};
     exact x = {0};
     if (!angle || !lo || !hi || !q) {
@@ -589,7 +590,7 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
             goto done;
         }
         qd__wrap_angles(n, q, angle);
-        if (!qd__roots_add(&roots, q, res, angle))
+        if (!qd__roots_add(ctx, &roots, q, res, angle))
             st = QD_ERR_NOMEM;
     } else if (!o.numeric_only && solve_exact(ctx, e, m, &L, angle, &x) &&
                exact_verified(ctx, &L, &x, 1e-8 * fscale)) {
@@ -630,13 +631,13 @@ done:
                                                  : "finding equilibria failed");
     if (st != QD_OK)
         qd_equilibria_free(out);
-    free(x.val);
-    free(x.sols);
+    qd__free(x.val);
+    qd__free(x.sols);
     qd__roots_free(&roots);
-    free(angle);
-    free(lo);
-    free(hi);
-    free(q);
+    qd__free(angle);
+    qd__free(lo);
+    qd__free(hi);
+    qd__free(q);
     qd__lin_free(&L);
     return st;
 }

@@ -16,6 +16,7 @@
  * The symbolic entries are kept; the numbers come from one compiled
  * program whose inputs are every free symbol (missing ones are 0). */
 typedef struct qd__lin {
+    qd_ctx *ctx;                       /* where the arrays come from */
     size_t n;
     const qd_expr *const *q;           /* e's coordinates (borrowed) */
     const qd_expr **F, **J, **B, **M;  /* malloc'd arrays of nodes */
@@ -46,7 +47,7 @@ static inline const double *qd__lin_M(const qd__lin *L) {
  * eigenvectors (column-major, vecs[i + j n] = component i of vector j) of
  * the symmetric n*n matrix A (row-major; only its symmetric part is used).
  * false when LAPACK fails. */
-bool qd__sym_eig(size_t n, const double *A, double *w, double *vecs);
+bool qd__sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs);
 
 #endif
 
@@ -69,7 +70,7 @@ typedef struct qd__roots {
 
 /* Add q unless it duplicates a root already there (the better residual is
  * kept); false when out of memory. */
-bool qd__roots_add(qd__roots *r, const double *q, double res, const bool *angle);
+bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle);
 void qd__roots_free(qd__roots *r);
 void qd__wrap_angles(size_t n, double *q, const bool *angle);
 

@@ -14,6 +14,7 @@
 #include "linear.h"
 
 #include "num/num.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -23,21 +24,21 @@
 void qd__lin_free(qd__lin *L) {
     if (!L)
         return;
-    free(L->F);
-    free(L->J);
-    free(L->B);
-    free(L->M);
+    qd__free(L->F);
+    qd__free(L->J);
+    qd__free(L->B);
+    qd__free(L->M);
     qd_prog_free(L->prog);
-    free(L->inputs);
-    free(L->qslot);
-    free(L->in);
-    free(L->out);
+    qd__free(L->inputs);
+    qd__free(L->qslot);
+    qd__free(L->in);
+    qd__free(L->out);
     memset(L, 0, sizeof *L);
 }
 
 static qd_status build(qd_ctx *ctx, const qd_eom *e, qd__lin *L) {
     size_t n = e->n, nn = n * n;
-    const qd_expr **zeros = malloc((n + 1) * sizeof *zeros);
+    const qd_expr **zeros = qd__malloc(ctx, (n + 1) * sizeof *zeros);
     if (!zeros)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++)
@@ -52,13 +53,13 @@ static qd_status build(qd_ctx *ctx, const qd_eom *e, qd__lin *L) {
         }
     for (size_t i = 0; i < nn; i++)
         L->M[i] = qd_subs(ctx, e->M[i], n, qd, zeros);
-    free(zeros);
+    qd__free(zeros);
     return qd_ctx_status(ctx) == QD_OK ? QD_OK : qd_ctx_status(ctx);
 }
 
 static qd_status compile(qd_ctx *ctx, qd__lin *L) {
     size_t n = L->n, nout = n + 3 * n * n;
-    const qd_expr **all = malloc((nout + 1) * sizeof *all);
+    const qd_expr **all = qd__malloc(ctx, (nout + 1) * sizeof *all);
     if (!all)
         return QD_ERR_NOMEM;
     memcpy(all, L->F, n * sizeof *all);
@@ -68,12 +69,12 @@ static qd_status compile(qd_ctx *ctx, qd__lin *L) {
     L->inputs = qd__num_inputs(ctx, nout, all, &L->nin);
     if (L->inputs)
         L->prog = qd_prog_new(ctx, L->nin, L->inputs, nout, all);
-    free(all);
+    qd__free(all);
     if (!L->prog)
         return qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-    L->in = calloc(L->nin + 1, sizeof *L->in);
-    L->out = calloc(nout + 1, sizeof *L->out);
-    L->qslot = malloc((n + 1) * sizeof *L->qslot);
+    L->in = qd__calloc(ctx, L->nin + 1, sizeof *L->in);
+    L->out = qd__calloc(ctx, nout + 1, sizeof *L->out);
+    L->qslot = qd__malloc(ctx, (n + 1) * sizeof *L->qslot);
     if (!L->in || !L->out || !L->qslot)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
@@ -87,6 +88,7 @@ static qd_status compile(qd_ctx *ctx, qd__lin *L) {
 
 qd_status qd__lin_init(qd_ctx *ctx, const qd_eom *e, qd__lin *L) {
     memset(L, 0, sizeof *L);
+    L->ctx = ctx;
     if (e->ncon) {
         qd_ctx_error(ctx, QD_ERR_ARG,
                      "the model keeps %zu constraint%s with multipliers: small oscillations need "
@@ -97,10 +99,10 @@ qd_status qd__lin_init(qd_ctx *ctx, const qd_eom *e, qd__lin *L) {
     size_t n = e->n, nn = n * n;
     L->n = n;
     L->q = e->q;
-    L->F = calloc(n + 1, sizeof *L->F);
-    L->J = calloc(nn + 1, sizeof *L->J);
-    L->B = calloc(nn + 1, sizeof *L->B);
-    L->M = calloc(nn + 1, sizeof *L->M);
+    L->F = qd__calloc(ctx, n + 1, sizeof *L->F);
+    L->J = qd__calloc(ctx, nn + 1, sizeof *L->J);
+    L->B = qd__calloc(ctx, nn + 1, sizeof *L->B);
+    L->M = qd__calloc(ctx, nn + 1, sizeof *L->M);
     qd_status st = L->F && L->J && L->B && L->M ? build(ctx, e, L) : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = compile(ctx, L);
@@ -133,10 +135,10 @@ void qd__lin_run(qd__lin *L, const double *q) {
 void qd_linear_free(qd_linear *l) {
     if (!l)
         return;
-    free(l->M);
-    free(l->C);
-    free(l->G);
-    free(l->K);
+    qd__free(l->M);
+    qd__free(l->C);
+    qd__free(l->G);
+    qd__free(l->K);
     memset(l, 0, sizeof *l);
 }
 
@@ -154,10 +156,10 @@ qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
     qd__lin_bind(&L, nvals, syms, vals);
     qd__lin_run(&L, NULL);
     out->n = n;
-    out->M = malloc((nn + 1) * sizeof *out->M);
-    out->C = malloc((nn + 1) * sizeof *out->C);
-    out->G = malloc((nn + 1) * sizeof *out->G);
-    out->K = malloc((nn + 1) * sizeof *out->K);
+    out->M = qd__malloc(ctx, (nn + 1) * sizeof *out->M);
+    out->C = qd__malloc(ctx, (nn + 1) * sizeof *out->C);
+    out->G = qd__malloc(ctx, (nn + 1) * sizeof *out->G);
+    out->K = qd__malloc(ctx, (nn + 1) * sizeof *out->K);
     if (!out->M || !out->C || !out->G || !out->K) {
         qd__lin_free(&L);
         qd_linear_free(out);
@@ -189,11 +191,11 @@ qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
 qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr *const *q0,
                              const qd_expr **Kout, const qd_expr **Mout) {
     size_t n = e->n;
-    const qd_expr **from = malloc((2 * n + 1) * sizeof *from);
-    const qd_expr **to = malloc((2 * n + 1) * sizeof *to);
+    const qd_expr **from = qd__malloc(ctx, (2 * n + 1) * sizeof *from);
+    const qd_expr **to = qd__malloc(ctx, (2 * n + 1) * sizeof *to);
     if (!from || !to) {
-        free(from);
-        free(to);
+        qd__free(from);
+        qd__free(to);
         return QD_ERR_NOMEM;
     }
     for (size_t j = 0; j < n; j++) {
@@ -210,7 +212,7 @@ qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr *const 
             Mout[j * n + k] = qd_simplify(ctx, qd_subs(ctx, e->M[j * n + k], 2 * n, from, to));
         }
     }
-    free(from);
-    free(to);
+    qd__free(from);
+    qd__free(to);
     return qd_ctx_status(ctx);
 }

@@ -14,6 +14,7 @@
  * modulo 2 pi.
  */
 #include "linear.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -49,7 +50,7 @@ static bool same(size_t n, const double *a, const double *b, const bool *angle) 
     return true;
 }
 
-bool qd__roots_add(qd__roots *r, const double *q, double res, const bool *angle) {
+bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle) {
     size_t n = r->n;
     for (size_t i = 0; i < r->count; i++)
         if (same(n, r->q + i * n, q, angle)) {
@@ -61,11 +62,11 @@ bool qd__roots_add(qd__roots *r, const double *q, double res, const bool *angle)
         }
     if (r->count == r->cap) {
         size_t cap = r->cap ? 2 * r->cap : 16;
-        double *nq = realloc(r->q, (cap * n + 1) * sizeof *nq);
+        double *nq = qd__realloc(ctx, r->q, (cap * n + 1) * sizeof *nq);
         if (!nq)
             return false;
         r->q = nq;
-        double *nr = realloc(r->res, cap * sizeof *nr);
+        double *nr = qd__realloc(ctx, r->res, cap * sizeof *nr);
         if (!nr)
             return false;
         r->res = nr;
@@ -77,8 +78,8 @@ bool qd__roots_add(qd__roots *r, const double *q, double res, const bool *angle)
 }
 
 void qd__roots_free(qd__roots *r) {
-    free(r->q);
-    free(r->res);
+    qd__free(r->q);
+    qd__free(r->res);
     r->q = r->res = NULL;
     r->count = r->cap = 0;
 }
@@ -98,7 +99,7 @@ static bool polish(qd__lin *L, double *q, const bool *angle, double ftol, qd__ro
     double res;
     if (qd__lm_solve(L, q, ftol, 200, &res)) {
         qd__wrap_angles(L->n, q, angle);
-        return qd__roots_add(out, q, res, angle);
+        return qd__roots_add(L->ctx, out, q, res, angle);
     }
     return true;
 }
@@ -145,7 +146,7 @@ static bool scan_axis(qd__lin *L, size_t i, const double *c, const double *lo, c
 bool qd__multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
                     size_t starts, double ftol, qd__roots *out) {
     size_t n = L->n;
-    double *q = malloc((n + 1) * sizeof *q), *c = malloc((n + 1) * sizeof *c);
+    double *q = qd__malloc(L->ctx, (n + 1) * sizeof *q), *c = qd__malloc(L->ctx, (n + 1) * sizeof *c);
     bool ok = q && c;
     for (size_t j = 0; ok && j < n; j++)
         c[j] = lo[j] <= 0 && hi[j] >= 0 ? 0 : (lo[j] + hi[j]) / 2;
@@ -167,7 +168,7 @@ bool qd__multistart(qd__lin *L, const double *lo, const double *hi, const bool *
         }
         ok = polish(L, q, angle, ftol, out);
     }
-    free(q);
-    free(c);
+    qd__free(q);
+    qd__free(c);
     return ok;
 }

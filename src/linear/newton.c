@@ -13,6 +13,7 @@
 #include "linear.h"
 
 #include "num/num.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -56,10 +57,10 @@ double qd__lin_scale(qd__lin *L, const double *q) {
 
 bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
     size_t n = L->n;
-    double *F = malloc((n + 1) * sizeof *F), *J = malloc((n * n + 1) * sizeof *J);
-    double *A = malloc((n * n + 1) * sizeof *A), *g = malloc((n + 1) * sizeof *g);
-    double *t = malloc((n + 1) * sizeof *t);
-    size_t *pc = malloc((n + 1) * sizeof *pc);
+    double *F = qd__malloc(L->ctx, (n + 1) * sizeof *F), *J = qd__malloc(L->ctx, (n * n + 1) * sizeof *J);
+    double *A = qd__malloc(L->ctx, (n * n + 1) * sizeof *A), *g = qd__malloc(L->ctx, (n + 1) * sizeof *g);
+    double *t = qd__malloc(L->ctx, (n + 1) * sizeof *t);
+    size_t *pc = qd__malloc(L->ctx, (n + 1) * sizeof *pc);
     bool ok = false;
     *res = INFINITY;
     if (!F || !J || !A || !g || !t || !pc)
@@ -113,11 +114,11 @@ bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
     *res = norm_inf(n, F);
     ok = *res <= ftol;
 done:
-    free(F);
-    free(J);
-    free(A);
-    free(g);
-    free(t);
-    free(pc);
+    qd__free(F);
+    qd__free(J);
+    qd__free(A);
+    qd__free(g);
+    qd__free(t);
+    qd__free(pc);
     return ok;
 }

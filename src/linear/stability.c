@@ -17,6 +17,7 @@
  * mode iff the Hessian is positive definite (M0 being so).
  */
 #include "steady.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -26,8 +27,8 @@ void qd_stability_free(qd_stability *st) {
     if (!st)
         return;
     qd_linear_free(&st->lin);
-    free(st->hessian);
-    free(st->freq);
+    qd__free(st->hessian);
+    qd__free(st->freq);
     qd_modes_result_free(&st->ordinary);
     qd_modes_result_free(&st->secular);
     qd_modes_result_free(&st->damped);
@@ -72,12 +73,12 @@ static qd_status linearize(qd_ctx *ctx, const qd_steady *s, const qd__steady_env
     size_t n = s->nkeep;
     qd_linear *l = &out->lin;
     l->n = n;
-    l->M = calloc(n * n, sizeof *l->M);
-    l->C = calloc(n * n, sizeof *l->C);
-    l->G = calloc(n * n, sizeof *l->G);
-    l->K = calloc(n * n, sizeof *l->K);
-    out->hessian = calloc(n * n, sizeof *out->hessian);
-    double *B = calloc(n * n, sizeof *B);
+    l->M = qd__calloc(ctx, n * n, sizeof *l->M);
+    l->C = qd__calloc(ctx, n * n, sizeof *l->C);
+    l->G = qd__calloc(ctx, n * n, sizeof *l->G);
+    l->K = qd__calloc(ctx, n * n, sizeof *l->K);
+    out->hessian = qd__calloc(ctx, n * n, sizeof *out->hessian);
+    double *B = qd__calloc(ctx, n * n, sizeof *B);
     qd_status st = l->M && l->C && l->G && l->K && out->hessian && B ? QD_OK : QD_ERR_NOMEM;
     for (size_t a = 0; st == QD_OK && a < n; a++)
         for (size_t b = 0; st == QD_OK && b < n; b++) {
@@ -97,7 +98,7 @@ static qd_status linearize(qd_ctx *ctx, const qd_steady *s, const qd__steady_env
             l->C[a * n + b] = (B[a * n + b] + B[b * n + a]) / 2;
             l->G[a * n + b] = (B[a * n + b] - B[b * n + a]) / 2;
         }
-    free(B);
+    qd__free(B);
     return st;
 }
 
@@ -120,9 +121,9 @@ static int cmp_double(const void *a, const void *b) {
 /* The oscillation frequencies of the undamped problem: sqrt(w^2) for the
  * positive w^2 of a conservative one, else the positive imaginary parts of
  * the roots on the imaginary axis. */
-static qd_status frequencies(qd_stability *out) {
+static qd_status frequencies(qd_ctx *ctx, qd_stability *out) {
     const qd_modes_result *r = &out->ordinary;
-    out->freq = calloc(r->neig + r->n + 1, sizeof *out->freq);
+    out->freq = qd__calloc(ctx, r->neig + r->n + 1, sizeof *out->freq);
     if (!out->freq)
         return QD_ERR_NOMEM;
     double big = 0;
@@ -214,12 +215,12 @@ static const char *verdict(const qd_stability *st) {
 static qd_status solve_modes(qd_ctx *ctx, const qd_linear *l, const double *C, const double *K,
                              qd_modes_result *r) {
     size_t n = l->n;
-    double *zero = calloc(n * n + 1, sizeof *zero);
+    double *zero = qd__calloc(ctx, n * n + 1, sizeof *zero);
     if (!zero)
         return QD_ERR_NOMEM;
     qd_linear v = {n, l->M, C ? (double *)C : zero, K == l->K ? l->G : zero, (double *)K};
     qd_status st = qd_modes_solve(ctx, &v, r);
-    free(zero);
+    qd__free(zero);
     return st;
 }
 
@@ -229,7 +230,7 @@ qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     memset(out, 0, sizeof *out);
     out->n = s->nkeep;
     qd__steady_env env;
-    qd_status st = qd__steady_env_init(s, nvals, syms, vals, &env);
+    qd_status st = qd__steady_env_init(ctx, s, nvals, syms, vals, &env);
     if (st != QD_OK)
         return st;
     for (size_t j = 0; j < s->nkeep; j++)
@@ -249,7 +250,7 @@ qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     if (st == QD_OK && out->dissipative)
         st = solve_modes(ctx, &out->lin, out->lin.C, out->lin.K, &out->damped);
     if (st == QD_OK)
-        st = frequencies(out);
+        st = frequencies(ctx, out);
     if (st != QD_OK) {
         qd_stability_free(out);
         return st;

@@ -12,6 +12,7 @@
  * "w given, find x".
  */
 #include "steady.h"
+#include "../base/mem.h"
 
 #include "num/num.h"
 
@@ -19,23 +20,23 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_steady_free(qd_steady *s) {
     if (!s)
         return;
-    free(s->keep);
-    free(s->keepd);
-    free(s->cyc);
-    free(s->cycd);
-    free(s->mom);
-    free(s->res);
+    qd__free(s->keep);
+    qd__free(s->keepd);
+    qd__free(s->cyc);
+    qd__free(s->cycd);
+    qd__free(s->mom);
+    qd__free(s->res);
     if (s->driven) {
-        free(s->M);
-        free(s->f);
+        qd__free(s->M);
+        qd__free(s->f);
     }
     qd_routh_free(s->routh);
-    free(s);
+    qd__free(s);
 }
 
 /* Is coordinate c cyclic for the purpose `what`?  Reports the first place
@@ -94,13 +95,13 @@ static qd_status split_coords(qd_ctx *ctx, const qd_model *m, const qd_eom *e, q
 
 /* x with every kept velocity set to 0. */
 static const qd_expr *at_rest(qd_ctx *ctx, const qd_steady *s, const qd_expr *x) {
-    const qd_expr **zero = arr(s->nkeep);
+    const qd_expr **zero = arr(ctx, s->nkeep);
     if (!zero)
         return NULL;
     for (size_t j = 0; j < s->nkeep; j++)
         zero[j] = qd_int(ctx, 0);
     const qd_expr *y = qd_subs(ctx, x, s->nkeep, s->keepd, zero);
-    free(zero);
+    qd__free(zero);
     return y ? qd_simplify(ctx, y) : NULL;
 }
 
@@ -113,8 +114,8 @@ static size_t index_of(const qd_eom *e, const qd_expr *q) {
 
 static qd_status driven_equations(qd_ctx *ctx, const qd_eom *e, qd_steady *s) {
     size_t nk = s->nkeep;
-    s->M = arr(nk * nk);
-    s->f = arr(nk);
+    s->M = arr(ctx, nk * nk);
+    s->f = arr(ctx, nk);
     if (!s->M || !s->f)
         return QD_ERR_NOMEM;
     for (size_t a = 0; a < nk; a++) {
@@ -156,18 +157,18 @@ qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, siz
                                       "supported: choose independent coordinates");
         return NULL;
     }
-    qd_steady *s = calloc(1, sizeof *s);
+    qd_steady *s = qd__calloc(ctx, 1, sizeof *s);
     if (!s)
         return NULL;
     s->driven = driven;
     s->ncyc = ncyc;
     s->nkeep = e->n - ncyc;
-    s->keep = arr(s->nkeep);
-    s->keepd = arr(s->nkeep);
-    s->cyc = arr(ncyc);
-    s->cycd = arr(ncyc);
-    s->mom = arr(ncyc);
-    s->res = arr(s->nkeep);
+    s->keep = arr(ctx, s->nkeep);
+    s->keepd = arr(ctx, s->nkeep);
+    s->cyc = arr(ctx, ncyc);
+    s->cycd = arr(ctx, ncyc);
+    s->mom = arr(ctx, ncyc);
+    s->res = arr(ctx, s->nkeep);
     qd_status st = s->keep && s->keepd && s->cyc && s->cycd && s->mom && s->res ? QD_OK
                                                                                 : QD_ERR_NOMEM;
     if (st == QD_OK)
@@ -191,12 +192,12 @@ qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, siz
 
 /* ---- evaluation environment ------------------------------------------------ */
 
-qd_status qd__steady_env_init(const qd_steady *s, size_t nvals, const qd_expr *const *syms,
+qd_status qd__steady_env_init(qd_ctx *ctx, const qd_steady *s, size_t nvals, const qd_expr *const *syms,
                               const double *vals, qd__steady_env *env) {
     size_t nb = s->beta ? s->ncyc : 0;
     size_t cap = nvals + 2 * s->nkeep + s->ncyc + nb;
-    env->syms = calloc(cap ? cap : 1, sizeof *env->syms);
-    env->vals = calloc(cap ? cap : 1, sizeof *env->vals);
+    env->syms = qd__calloc(ctx, cap ? cap : 1, sizeof *env->syms);
+    env->vals = qd__calloc(ctx, cap ? cap : 1, sizeof *env->vals);
     if (!env->syms || !env->vals) {
         qd__steady_env_free(env);
         return QD_ERR_NOMEM;
@@ -226,8 +227,8 @@ qd_status qd__steady_env_init(const qd_steady *s, size_t nvals, const qd_expr *c
 }
 
 void qd__steady_env_free(qd__steady_env *env) {
-    free(env->syms);
-    free(env->vals);
+    qd__free(env->syms);
+    qd__free(env->vals);
     env->syms = NULL;
     env->vals = NULL;
 }
@@ -249,10 +250,10 @@ typedef qd__steady_search search;
 
 static void search_free(search *S) {
     qd__steady_env_free(&S->env);
-    free(S->uslot);
-    free(S->F);
-    free(S->pgiven);
-    free(S->dF);
+    qd__free(S->uslot);
+    qd__free(S->F);
+    qd__free(S->pgiven);
+    qd__free(S->dF);
 }
 
 static qd_status residual(search *S, const double *u, double *F, double *J) {
@@ -342,10 +343,10 @@ static qd_status snap_zeros(search *S, double *u, const double *u0, double *F, d
 
 static qd_status iterate(search *S, double *u, double *res_out) {
     size_t nu = S->nu, neq = S->neq;
-    double *F = calloc(neq + 1, sizeof *F), *J = calloc(neq * nu + 1, sizeof *J);
-    double *A = calloc(nu * nu + 1, sizeof *A), *d = calloc(nu + 1, sizeof *d);
-    double *u2 = calloc(nu + 1, sizeof *u2), *F2 = calloc(neq + 1, sizeof *F2);
-    double *u0 = calloc(nu + 1, sizeof *u0);
+    double *F = qd__calloc(S->ctx, neq + 1, sizeof *F), *J = qd__calloc(S->ctx, neq * nu + 1, sizeof *J);
+    double *A = qd__calloc(S->ctx, nu * nu + 1, sizeof *A), *d = qd__calloc(S->ctx, nu + 1, sizeof *d);
+    double *u2 = qd__calloc(S->ctx, nu + 1, sizeof *u2), *F2 = qd__calloc(S->ctx, neq + 1, sizeof *F2);
+    double *u0 = qd__calloc(S->ctx, nu + 1, sizeof *u0);
     qd_status st = F && J && A && d && u2 && F2 && u0 ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         memcpy(u0, u, nu * sizeof *u0);
@@ -400,13 +401,13 @@ static qd_status iterate(search *S, double *u, double *res_out) {
                      worst);
         st = QD_ERR_NUMERIC;
     }
-    free(F);
-    free(J);
-    free(A);
-    free(d);
-    free(u2);
-    free(F2);
-    free(u0);
+    qd__free(F);
+    qd__free(J);
+    qd__free(A);
+    qd__free(d);
+    qd__free(u2);
+    qd__free(F2);
+    qd__free(u0);
     return st;
 }
 
@@ -433,10 +434,10 @@ static qd_status setup(search *S, const bool *xfix, const bool *wfix, const bool
                      "coordinate's value, a rate or a momentum)", S->nu, S->neq, S->nu - S->neq);
         return QD_ERR_ARG;
     }
-    S->uslot = calloc(S->nu + 1, sizeof *S->uslot);
-    S->F = arr(S->neq);
-    S->pgiven = calloc(S->neq + 1, sizeof *S->pgiven);
-    S->dF = arr(S->neq * S->nu);
+    S->uslot = qd__calloc(S->ctx, S->nu + 1, sizeof *S->uslot);
+    S->F = arr(S->ctx, S->neq);
+    S->pgiven = qd__calloc(S->ctx, S->neq + 1, sizeof *S->pgiven);
+    S->dF = arr(S->ctx, S->neq * S->nu);
     if (!S->uslot || !S->F || !S->pgiven || !S->dF)
         return QD_ERR_NOMEM;
     size_t u = 0, k = 0;
@@ -469,10 +470,10 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                          const bool *wfix, const bool *pfix, qd_steady_point *pt,
                          double *residual_out) {
     search S = {.ctx = ctx, .s = s};
-    qd_status st = qd__steady_env_init(s, nvals, syms, vals, &S.env);
+    qd_status st = qd__steady_env_init(ctx, s, nvals, syms, vals, &S.env);
     if (st == QD_OK)
         st = setup(&S, xfix, wfix, pfix, pt);
-    double *u = st == QD_OK ? calloc(S.nu + 1, sizeof *u) : NULL;
+    double *u = st == QD_OK ? qd__calloc(ctx, S.nu + 1, sizeof *u) : NULL;
     if (st == QD_OK && !u)
         st = QD_ERR_NOMEM;
     for (size_t i = 0; st == QD_OK && i < S.nu; i++)
@@ -487,7 +488,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
             st = qd__steady_eval(ctx, &S.env, s->mom[c], &pt->p[c]);
         }
     }
-    free(u);
+    qd__free(u);
     search_free(&S);
     return st;
 }
@@ -497,7 +498,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
 qd_status qd__steady_search_init(search *S, const bool *xfix, const bool *wfix, const bool *pfix,
                                  const qd_steady_point *pt, size_t nvals,
                                  const qd_expr *const *syms, const double *vals) {
-    qd_status st = qd__steady_env_init(S->s, nvals, syms, vals, &S->env);
+    qd_status st = qd__steady_env_init(S->ctx, S->s, nvals, syms, vals, &S->env);
     return st == QD_OK ? setup(S, xfix, wfix, pfix, pt) : st;
 }
 

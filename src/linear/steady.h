@@ -18,7 +18,7 @@ typedef struct qd__steady_env {
 
 /* Parameters, t and plain symbols are taken from syms/vals; every other slot
  * starts at 0. */
-qd_status qd__steady_env_init(const qd_steady *s, size_t nvals, const qd_expr *const *syms,
+qd_status qd__steady_env_init(qd_ctx *ctx, const qd_steady *s, size_t nvals, const qd_expr *const *syms,
                               const double *vals, qd__steady_env *env);
 void qd__steady_env_free(qd__steady_env *env);
 /* x at the environment; QD_ERR_SINGULAR (with a message) when not finite. */

@@ -19,6 +19,7 @@
 #include "steady.h"
 
 #include "base/ptrmap.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -90,7 +91,7 @@ static double size_of(sizes *z, const qd_expr *x) {
     double s = size_uncached(z, x);
     if (z->n == z->cap) {
         size_t cap = z->cap ? 2 * z->cap : 64;
-        double *nv = realloc(z->val, cap * sizeof *nv);
+        double *nv = qd__mem_realloc(NULL, z->val, cap * sizeof *nv);
         if (!nv)
             return s;
         z->val = nv;
@@ -106,7 +107,7 @@ double qd__steady_magnitude(qd_ctx *ctx, const qd__steady_env *env, const qd_exp
     sizes z = {.ctx = ctx, .env = env, .memo = QD_PTRMAP_INIT};
     double s = x ? size_of(&z, x) : NAN;
     qd_ptrmap_free(&z.memo);
-    free(z.val);
+    qd__free(z.val);
     return s;
 }
 
@@ -166,8 +167,8 @@ static qd_status sub_search(qd__steady_search *S, const bool *bound, qd__steady_
     size_t nk = S->s->nkeep, nb = S->neq - nk, b = 0;
     *sub = (qd__steady_search){.ctx = S->ctx, .s = S->s, .env = S->env, .nu = nb, .neq = nb,
                                .F = S->F + nk, .pgiven = S->pgiven + nk};
-    sub->uslot = calloc(nb + 1, sizeof *sub->uslot);
-    sub->dF = calloc(nb * nb + 1, sizeof *sub->dF);
+    sub->uslot = qd__calloc(S->ctx, nb + 1, sizeof *sub->uslot);
+    sub->dF = qd__calloc(S->ctx, nb * nb + 1, sizeof *sub->dF);
     if (!sub->uslot || !sub->dF)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < S->nu; i++) {
@@ -184,8 +185,8 @@ static qd_status sub_search(qd__steady_search *S, const bool *bound, qd__steady_
 }
 
 static void sub_free(qd__steady_search *sub) {
-    free(sub->uslot);
-    free(sub->dF);
+    qd__free(sub->uslot);
+    qd__free(sub->dF);
 }
 
 /* u with the free unknown at t and the bound rates solving the given momenta;
@@ -269,11 +270,11 @@ static qd_status polish_add(qd__steady_search *S, found *f, double *u) {
             return QD_OK;
     if (f->count == f->cap) {
         size_t cap = f->cap ? 2 * f->cap : 8;
-        double *nu = realloc(f->u, (cap * f->nu + 1) * sizeof *nu);
+        double *nu = qd__realloc(S->ctx, f->u, (cap * f->nu + 1) * sizeof *nu);
         if (!nu)
             return QD_ERR_NOMEM;
         f->u = nu;
-        double *nr = realloc(f->res, cap * sizeof *nr);
+        double *nr = qd__realloc(S->ctx, f->res, cap * sizeof *nr);
         if (!nr)
             return QD_ERR_NOMEM;
         f->res = nr;
@@ -316,7 +317,7 @@ static int row_quadratics(line *L, double *u, double h, double *c) {
     qd__steady_search *S = L->S;
     size_t nk = S->s->nkeep;
     const double ts[4] = {-h, 0, h, 2 * h};
-    double *f = calloc(4 * nk + 1, sizeof *f), *scale = calloc(nk + 1, sizeof *scale);
+    double *f = qd__calloc(S->ctx, 4 * nk + 1, sizeof *f), *scale = qd__calloc(S->ctx, nk + 1, sizeof *scale);
     int rc = f && scale ? 1 : -1;
     for (int p = 0; rc != -1 && p < 4; p++) {
         if (!on_line(L, ts[p], u)) {
@@ -342,15 +343,15 @@ static int row_quadratics(line *L, double *u, double h, double *c) {
         if (ck[0] != 0 || ck[1] != 0 || ck[2] != 0)
             rc = rc == 1 ? 0 : rc;
     }
-    free(f);
-    free(scale);
+    qd__free(f);
+    qd__free(scale);
     return rc;
 }
 
 static qd_status free_rate(line *L, found *f, double *u, const double *u0, bool *complete) {
     size_t nk = L->S->s->nkeep;
     double h = fmax(1, fabs(u0[L->ifree]));
-    double *c = calloc(3 * nk + 1, sizeof *c);
+    double *c = qd__calloc(L->S->ctx, 3 * nk + 1, sizeof *c);
     if (!c)
         return QD_ERR_NOMEM;
     memcpy(u, u0, L->S->nu * sizeof *u);
@@ -373,7 +374,7 @@ static qd_status free_rate(line *L, found *f, double *u, const double *u0, bool 
                 st = polish_add(L->S, f, u);
     }
     *complete = rc == 0;
-    free(c);
+    qd__free(c);
     return st;
 }
 
@@ -416,8 +417,8 @@ static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool
     size_t nk = S->s->nkeep, nsamples = 0, nzero = 0;
     double g = fabs(u0[L->ifree]), lo = angle ? -PI : -10 * fmax(1, g);
     double step = (angle ? 2 * PI : 20 * fmax(1, g)) / SCAN_POINTS;
-    double *prev = calloc(nk + 1, sizeof *prev), tp = 0;
-    bool *pzero = calloc(nk + 1, sizeof *pzero), *zero = calloc(nk + 1, sizeof *zero);
+    double *prev = qd__mem_calloc(NULL, nk + 1, sizeof *prev), tp = 0;
+    bool *pzero = qd__mem_calloc(NULL, nk + 1, sizeof *pzero), *zero = qd__mem_calloc(NULL, nk + 1, sizeof *zero);
     bool have = false;
     qd_status st = prev && pzero && zero ? QD_OK : QD_ERR_NOMEM;
     memcpy(u, u0, S->nu * sizeof *u);
@@ -448,9 +449,9 @@ static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool
     if (st == QD_OK && nsamples > 1 && nzero == nsamples)
         st = family(L);
     *complete = angle;
-    free(prev);
-    free(pzero);
-    free(zero);
+    qd__free(prev);
+    qd__free(pzero);
+    qd__free(zero);
     return st;
 }
 
@@ -460,8 +461,8 @@ static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool
 static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                                     const qd_expr *const *syms, const double *vals,
                                     const bool *pguess, qd_steady_point *pt) {
-    bool *xf = calloc(s->nkeep + 1, sizeof *xf), *wf = calloc(s->ncyc + 1, sizeof *wf);
-    bool *all = calloc(s->ncyc + 1, sizeof *all);
+    bool *xf = qd__calloc(ctx, s->nkeep + 1, sizeof *xf), *wf = qd__calloc(ctx, s->ncyc + 1, sizeof *wf);
+    bool *all = qd__calloc(ctx, s->ncyc + 1, sizeof *all);
     qd__steady_search S = {.ctx = ctx, .s = s}, sub = {0};
     qd_status st = xf && wf && all ? QD_OK : QD_ERR_NOMEM;
     for (size_t j = 0; st == QD_OK && j < s->nkeep; j++)
@@ -474,7 +475,7 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
         all[i] = true;
     if (st == QD_OK)
         st = sub_search(&S, all, &sub);
-    double *u = st == QD_OK ? calloc(S.nu + 1, sizeof *u) : NULL;
+    double *u = st == QD_OK ? qd__calloc(ctx, S.nu + 1, sizeof *u) : NULL;
     for (size_t i = 0; u && i < S.nu; i++)
         u[i] = S.env.vals[S.uslot[i]];
     if (st == QD_OK)
@@ -485,12 +486,12 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
     if (st != QD_OK && st != QD_ERR_NOMEM)
         qd_ctx_error(ctx, st, "the momenta given with --guess do not fix the rates at the "
                               "starting point: %s", qd_ctx_message(ctx));
-    free(u);
+    qd__free(u);
     sub_free(&sub);
     qd__steady_search_free(&S);
-    free(xf);
-    free(wf);
-    free(all);
+    qd__free(xf);
+    qd__free(wf);
+    qd__free(all);
     return st;
 }
 
@@ -498,7 +499,7 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
 static qd_status structured(qd__steady_search *S, const bool *pfix, const bool *angle,
                             found *f, const double *u0, bool *complete) {
     size_t nfree = 0, ifree = 0;
-    bool *bound = calloc(S->nu + 1, sizeof *bound);
+    bool *bound = qd__mem_calloc(NULL, S->nu + 1, sizeof *bound);
     if (!bound)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < S->nu; i++) {
@@ -511,19 +512,19 @@ static qd_status structured(qd__steady_search *S, const bool *pfix, const bool *
     line L = {.S = S, .ifree = ifree, .rate = nfree == 1 && unknown_is_rate(S, ifree)};
     qd_status st = QD_OK;
     if (nfree == 1) {
-        L.usub = calloc(S->nu + 1, sizeof *L.usub);
-        L.F = calloc(S->neq + 1, sizeof *L.F);
-        double *u = calloc(S->nu + 1, sizeof *u);
+        L.usub = qd__mem_calloc(NULL, S->nu + 1, sizeof *L.usub);
+        L.F = qd__mem_calloc(NULL, S->neq + 1, sizeof *L.F);
+        double *u = qd__mem_calloc(NULL, S->nu + 1, sizeof *u);
         st = L.usub && L.F && u ? sub_search(S, bound, &L.sub) : QD_ERR_NOMEM;
         if (st == QD_OK)
             st = L.rate ? free_rate(&L, f, u, u0, complete)
                         : free_coord(&L, f, u, u0, angle[ifree], complete);
         sub_free(&L.sub);
-        free(L.usub);
-        free(L.F);
-        free(u);
+        qd__free(L.usub);
+        qd__free(L.F);
+        qd__free(u);
     }
-    free(bound);
+    qd__free(bound);
     return st;
 }
 
@@ -570,16 +571,16 @@ static void by_distance(const order_key *o, qd_steady_set *out) {
 
 static qd_status fill(qd__steady_search *S, const found *f, qd_steady_set *out) {
     const qd_steady *s = S->s;
-    out->pts = calloc(f->count + 1, sizeof *out->pts);
-    out->residual = calloc(f->count + 1, sizeof *out->residual);
+    out->pts = qd__calloc(S->ctx, f->count + 1, sizeof *out->pts);
+    out->residual = qd__calloc(S->ctx, f->count + 1, sizeof *out->residual);
     if (!out->pts || !out->residual)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
     for (size_t k = 0; st == QD_OK && k < f->count; k++) {
         qd_steady_point *p = &out->pts[out->count++];
-        p->x = calloc(s->nkeep + 1, sizeof *p->x);
-        p->w = calloc(s->ncyc + 1, sizeof *p->w);
-        p->p = calloc(s->ncyc + 1, sizeof *p->p);
+        p->x = qd__calloc(S->ctx, s->nkeep + 1, sizeof *p->x);
+        p->w = qd__calloc(S->ctx, s->ncyc + 1, sizeof *p->w);
+        p->p = qd__calloc(S->ctx, s->ncyc + 1, sizeof *p->p);
         if (!p->x || !p->w || !p->p) {
             st = QD_ERR_NOMEM;
             break;
@@ -602,12 +603,12 @@ void qd_steady_set_free(qd_steady_set *set) {
     if (!set)
         return;
     for (size_t k = 0; k < set->count; k++) {
-        free(set->pts[k].x);
-        free(set->pts[k].w);
-        free(set->pts[k].p);
+        qd__free(set->pts[k].x);
+        qd__free(set->pts[k].w);
+        qd__free(set->pts[k].p);
     }
-    free(set->pts);
-    free(set->residual);
+    qd__free(set->pts);
+    qd__free(set->residual);
     memset(set, 0, sizeof *set);
 }
 
@@ -640,7 +641,7 @@ static qd_status prepare_found(qd__steady_search *S, found *f, double *u0, bool 
         u0[i] = S->env.vals[S->uslot[i]];
         angle[i] = !unknown_is_rate(S, i) && is_angle(s, S->uslot[i] - S->env.x);
     }
-    *f = (found){.nu = S->nu, .angle = angle, .mcc = calloc(s->ncyc + 1, sizeof *f->mcc)};
+    *f = (found){.nu = S->nu, .angle = angle, .mcc = qd__calloc(S->ctx, s->ncyc + 1, sizeof *f->mcc)};
     if (!f->mcc)
         return QD_ERR_NOMEM;
     for (size_t c = 0; c < s->ncyc; c++)
@@ -654,7 +655,7 @@ static qd_status ordered(qd__steady_search *S, const found *f, const qd_steady_p
                          const bool *xfix, const bool *wfix, const bool *pfix,
                          const bool *pguess, qd_steady_set *out) {
     const qd_steady *s = S->s;
-    bool *xangle = calloc(s->nkeep + 1, sizeof *xangle);
+    bool *xangle = qd__mem_calloc(NULL, s->nkeep + 1, sizeof *xangle);
     if (!xangle)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < s->nkeep; j++)
@@ -665,13 +666,13 @@ static qd_status ordered(qd__steady_search *S, const found *f, const qd_steady_p
         by_distance(&o, out);
     }
     out->nsingular = f->nsingular;
-    free(xangle);
+    qd__free(xangle);
     return st;
 }
 
 static qd_steady_point copy_point(const qd_steady *s, const qd_steady_point *from) {
-    qd_steady_point p = {calloc(s->nkeep + 1, sizeof *p.x), calloc(s->ncyc + 1, sizeof *p.w),
-                         calloc(s->ncyc + 1, sizeof *p.p)};
+    qd_steady_point p = {qd__mem_calloc(NULL, s->nkeep + 1, sizeof *p.x), qd__mem_calloc(NULL, s->ncyc + 1, sizeof *p.w),
+                         qd__mem_calloc(NULL, s->ncyc + 1, sizeof *p.p)};
     if (p.x && p.w && p.p) {
         memcpy(p.x, from->x, s->nkeep * sizeof *p.x);
         memcpy(p.w, from->w, s->ncyc * sizeof *p.w);
@@ -698,9 +699,9 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     if (st == QD_OK)
         st = qd__steady_search_init(&S, xfix, wfix, pfix, &pt, nvals, syms, vals);
     if (st == QD_OK) {
-        u0 = calloc(S.nu + 1, sizeof *u0);
-        u = calloc(S.nu + 1, sizeof *u);
-        angle = calloc(S.nu + 1, sizeof *angle);
+        u0 = qd__calloc(ctx, S.nu + 1, sizeof *u0);
+        u = qd__calloc(ctx, S.nu + 1, sizeof *u);
+        angle = qd__calloc(ctx, S.nu + 1, sizeof *angle);
         st = u0 && u && angle ? prepare_found(&S, &f, u0, angle) : QD_ERR_NOMEM;
     }
     if (st == QD_OK && S.nu)
@@ -714,15 +715,15 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
             qd_ctx_error(ctx, st, "out of memory finding the steady motions");
         qd_steady_set_free(out);
     }
-    free(f.u);
-    free(f.res);
-    free(f.mcc);
-    free(u0);
-    free(u);
-    free(angle);
-    free(pt.x);
-    free(pt.w);
-    free(pt.p);
+    qd__free(f.u);
+    qd__free(f.res);
+    qd__free(f.mcc);
+    qd__free(u0);
+    qd__free(u);
+    qd__free(angle);
+    qd__free(pt.x);
+    qd__free(pt.w);
+    qd__free(pt.p);
     qd__steady_search_free(&S);
     return st;
 }

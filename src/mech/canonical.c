@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include "qdot/canonical.h"
 #include "mech/mech.h"
+#include "../base/mem.h"
 
 typedef struct gen_shape {
     bool x_is_q, y_is_Q;
@@ -31,7 +32,7 @@ static const gen_shape shapes[] = {
  * (n).  QD_ERR_NONLINEAR or QD_ERR_SINGULAR, with the reason in ctx. */
 static qd_status solve_linear(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
                               const qd_expr *const *xs, const qd_expr **sol) {
-    const qd_expr **A = malloc(2 * n * n * sizeof *A + n * sizeof *A);
+    const qd_expr **A = qd__malloc(ctx, 2 * n * n * sizeof *A + n * sizeof *A);
     if (!A) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -54,7 +55,7 @@ static qd_status solve_linear(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
         if (!sol[k])
             st = qd_ctx_status(ctx);
     }
-    free(A);
+    qd__free(A);
     return st;
 }
 
@@ -140,10 +141,10 @@ qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *co
     const gen_shape *s = &shapes[type];
     const qd_expr *const *x = s->x_is_q ? old_q : old_p, *const *cx = s->x_is_q ? old_p : old_q;
     const qd_expr *const *y = s->y_is_Q ? new_Q : new_P, *const *cy = s->y_is_Q ? new_P : new_Q;
-    const qd_expr **res = malloc(2 * n * sizeof *res), **w = malloc(6 * n * sizeof *w);
+    const qd_expr **res = qd__malloc(ctx, 2 * n * sizeof *res), **w = qd__malloc(ctx, 6 * n * sizeof *w);
     if (!res || !w) {
-        free(res);
-        free(w);
+        qd__free(res);
+        qd__free(w);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
     }
@@ -166,9 +167,9 @@ qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *co
         }
         st = qd_ctx_status(ctx);
     }
-    free(w);
+    qd__free(w);
     if (st != QD_OK) {
-        free(res);
+        qd__free(res);
         return st;
     }
     out->Q = res;
@@ -186,6 +187,6 @@ qd_status qd_generate_f2(qd_ctx *ctx, size_t n, const qd_expr *const *q,
 void qd_gen_result_free(qd_gen_result *r) {
     if (!r)
         return;
-    free(r->Q); /* P lives in the same block */
+    qd__free(r->Q); /* P lives in the same block */
     *r = (qd_gen_result){NULL, NULL, NULL, NULL};
 }

@@ -26,6 +26,7 @@
  * multiplier, the reverse would eliminate a coordinate wrongly.
  */
 #include "mech.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -100,12 +101,12 @@ static qd_status vanishes(qd_ctx *ctx, const qd_expr *e, bool *zero) {
         return QD_OK;
     }
     size_t ns = qd_free_symbols(ctx, e, NULL, 0);
-    const qd_expr **syms = malloc((ns ? ns : 1) * sizeof *syms);
+    const qd_expr **syms = qd__malloc(ctx, (ns ? ns : 1) * sizeof *syms);
     if (!syms)
         return QD_ERR_NOMEM;
     qd_free_symbols(ctx, e, syms, ns);
     int num = numeric_zero(ctx, e, syms, ns);
-    free(syms);
+    qd__free(syms);
     if (num < 0)
         return QD_OK;
     const qd_expr *s = qd_simplify(ctx, e);
@@ -143,13 +144,13 @@ static bool occurs(const qd_expr *const *w, size_t m, size_t stride, size_t i,
 static qd_status forms_init(forms *f, qd_ctx *ctx, size_t n, const qd_expr *const *q,
                             const qd_con *const *cs, size_t m) {
     size_t nx = n + 1;
-    const qd_expr **all = malloc(m * nx * sizeof *all), **xs = malloc(nx * sizeof *xs);
+    const qd_expr **all = qd__malloc(ctx, m * nx * sizeof *all), **xs = qd__malloc(ctx, nx * sizeof *xs);
     *f = (forms){ctx, 0, m, NULL, NULL};
-    f->x = malloc(nx * sizeof *f->x);
-    f->w = malloc(m * nx * sizeof *f->w);
+    f->x = qd__malloc(ctx, nx * sizeof *f->x);
+    f->w = qd__malloc(ctx, m * nx * sizeof *f->w);
     if (!all || !xs || !f->x || !f->w) {
-        free(all);
-        free(xs);
+        qd__free(all);
+        qd__free(xs);
         return QD_ERR_NOMEM;
     }
     for (size_t j = 0; j < nx; j++)
@@ -167,14 +168,14 @@ static qd_status forms_init(forms *f, qd_ctx *ctx, size_t n, const qd_expr *cons
     for (size_t k = 0; k < m; k++) /* close the gaps: rows of stride nv */
         for (size_t j = 0; j < f->nv; j++)
             f->w[k * f->nv + j] = f->w[k * nx + j];
-    free(all);
-    free(xs);
+    qd__free(all);
+    qd__free(xs);
     return QD_OK;
 }
 
 static void forms_free(forms *f) {
-    free(f->x);
-    free(f->w);
+    qd__free(f->x);
+    qd__free(f->w);
 }
 
 /* (d w)_ij = d w_j / d x_i - d w_i / d x_j for the row w. */
@@ -386,7 +387,7 @@ static bool has_log(const qd_expr *e) {
  * integral free of logarithms (x y, not log(x) + log(y)), else the first
  * that gives one, else the first that makes the form exact, else none. */
 static qd_status search_factor(const forms *f, qd_con *c) {
-    cands *cs = malloc(sizeof *cs);
+    cands *cs = qd__malloc(f->ctx, sizeof *cs);
     qd_status st = QD_OK;
     if (!cs)
         return QD_ERR_NOMEM;
@@ -405,7 +406,7 @@ static qd_status search_factor(const forms *f, qd_con *c) {
         if (phi && !has_log(phi))
             break;
     }
-    free(cs);
+    qd__free(cs);
     return st;
 }
 

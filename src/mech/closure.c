@@ -28,6 +28,7 @@
  * values and functions.
  */
 #include "mech.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -191,7 +192,7 @@ static const qd_expr *stand_in(qd_ctx *ctx, const qd_expr *call) {
 
 static qd_status make_generic(closure *c, const qd_con *con, size_t m) {
     const qd_expr *calls[16], *repl[16];
-    c->w = malloc(m * c->N * sizeof *c->w + 1);
+    c->w = qd__malloc(c->ctx, m * c->N * sizeof *c->w + 1);
     if (!c->w)
         return QD_ERR_NOMEM;
     for (size_t k = 0; k < m; k++)
@@ -212,8 +213,8 @@ static qd_status make_generic(closure *c, const qd_con *con, size_t m) {
  * entry has no value there. */
 static bool pivots(closure *c, size_t m, size_t *rows, size_t *cols,
                    size_t *rank) {
-    double *A = malloc((m ? m : 1) * c->N * sizeof *A);
-    size_t *row_of = malloc((m ? m : 1) * sizeof *row_of), r = 0;
+    double *A = qd__mem_malloc(NULL, (m ? m : 1) * c->N * sizeof *A);
+    size_t *row_of = qd__mem_malloc(NULL, (m ? m : 1) * sizeof *row_of), r = 0;
     bool ok = A && row_of;
     for (size_t k = 0; ok && k < m; k++) {
         row_of[k] = k;
@@ -247,8 +248,8 @@ static bool pivots(closure *c, size_t m, size_t *rows, size_t *cols,
         cols[r++] = j;
     }
     *rank = r;
-    free(A);
-    free(row_of);
+    qd__free(A);
+    qd__free(row_of);
     return ok;
 }
 
@@ -347,7 +348,7 @@ static qd_status kernel(closure *c, size_t m, size_t *rank) {
         return QD_ERR_UNBOUND;
     *rank = c->nrows = r;
     memcpy(c->rows, rows, r * sizeof rows[0]);
-    c->base = malloc((c->N - r) * c->N * sizeof *c->base + 1);
+    c->base = qd__mem_malloc(NULL, (c->N - r) * c->N * sizeof *c->base + 1);
     if (!c->base)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < c->N; j++) {
@@ -544,7 +545,7 @@ qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, cons
         return qd_ctx_status(ctx);
     if (m == 0)
         return QD_OK;
-    closure *c = calloc(1, sizeof *c);
+    closure *c = qd__calloc(ctx, 1, sizeof *c);
     if (!c)
         return QD_ERR_NOMEM;
     c->ctx = ctx;
@@ -559,9 +560,9 @@ qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, cons
         *nintegrals = combinations(c, con, *relations, integrals, cap);
     if (st == QD_OK && qd_ctx_status(ctx) != QD_OK)
         st = qd_ctx_status(ctx);
-    free(c->base);
-    free(c->w);
-    free(c);
+    qd__free(c->base);
+    qd__free(c->w);
+    qd__free(c);
     if (st == QD_ERR_TOOBIG && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "integrability of the constraints together: at most %d "
                      "coordinates and symbols", MAXV - 1);

@@ -15,6 +15,7 @@
 #include "mech.h"
 
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -211,10 +212,10 @@ typedef struct surface {
 
 static void surface_free(surface *sf) {
     qd__sys_free(&sf->sys);
-    free(sf->elim);
-    free(sf->con);
-    free(sf->a);
-    free(sf->qd);
+    qd__free(sf->elim);
+    qd__free(sf->con);
+    qd__free(sf->a);
+    qd__free(sf->qd);
 }
 
 /* Constraint i of the reduced system: its coefficients and kind (a
@@ -240,13 +241,13 @@ static qd_status surface_row(qd_ctx *ctx, surface *sf, size_t i) {
     return qd_ctx_status(ctx);
 }
 
-static qd_status surface_copy(const qd_eom *e, const qd__sys *s, surface *sf) {
+static qd_status surface_copy(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, surface *sf) {
     size_t n = e->n, m = s->ncon;
     sf->sys = (qd__sys){.n = n, .ncon = m};
-    sf->sys.q = malloc((n + 1) * sizeof *sf->sys.q);
-    sf->sys.Q = malloc((n + 1) * sizeof *sf->sys.Q);
-    sf->sys.con_name = malloc((m + 1) * sizeof *sf->sys.con_name);
-    sf->sys.con_expr = malloc((m + 1) * sizeof *sf->sys.con_expr);
+    sf->sys.q = qd__malloc(ctx, (n + 1) * sizeof *sf->sys.q);
+    sf->sys.Q = qd__malloc(ctx, (n + 1) * sizeof *sf->sys.Q);
+    sf->sys.con_name = qd__malloc(ctx, (m + 1) * sizeof *sf->sys.con_name);
+    sf->sys.con_expr = qd__malloc(ctx, (m + 1) * sizeof *sf->sys.con_expr);
     if (!sf->sys.q || !sf->sys.Q || !sf->sys.con_name || !sf->sys.con_expr)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++)
@@ -265,7 +266,7 @@ static qd_status surface_init(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, su
                               bool *ok) {
     *sf = (surface){0};
     *ok = false;
-    qd_status st = surface_copy(e, s, sf);
+    qd_status st = surface_copy(ctx, e, s, sf);
     for (size_t j = 0; st == QD_OK && j < e->n; j++)
         if (!(sf->sys.Q[j] = qd_int(ctx, 0)))
             st = qd_ctx_status(ctx);
@@ -278,9 +279,9 @@ static qd_status surface_init(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, su
         return QD_OK;
     }
     size_t n = sf->sys.n, m = sf->sys.ncon;
-    sf->con = calloc(m + 1, sizeof *sf->con);
-    sf->a = calloc(m * n + 1, sizeof *sf->a);
-    sf->qd = calloc(n + 1, sizeof *sf->qd);
+    sf->con = qd__calloc(ctx, m + 1, sizeof *sf->con);
+    sf->a = qd__calloc(ctx, m * n + 1, sizeof *sf->a);
+    sf->qd = qd__calloc(ctx, n + 1, sizeof *sf->qd);
     if (!sf->con || !sf->a || !sf->qd)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++)
@@ -360,10 +361,10 @@ static qd_status classify_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
 qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     size_t n = e->n, m = s->ncon;
     e->ncon = m;
-    e->con = calloc(m ? m : 1, sizeof *e->con);
-    e->A = calloc(m * n + 1, sizeof *e->A);
-    e->b = calloc(m ? m : 1, sizeof *e->b);
-    const qd_expr **scratch = calloc(n ? n : 1, sizeof *scratch);
+    e->con = qd__calloc(ctx, m ? m : 1, sizeof *e->con);
+    e->A = qd__calloc(ctx, m * n + 1, sizeof *e->A);
+    e->b = qd__calloc(ctx, m ? m : 1, sizeof *e->b);
+    const qd_expr **scratch = qd__calloc(ctx, n ? n : 1, sizeof *scratch);
     qd_status st = e->con && e->A && e->b && scratch ? QD_OK : QD_ERR_NOMEM;
     for (size_t k = 0; st == QD_OK && k < m; k++) {
         e->con[k] = (qd_con){.name = s->con_name[k], .expr = s->con_expr[k], .a = e->A + k * n};
@@ -373,7 +374,7 @@ qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     }
     if (st == QD_OK)
         st = classify_all(ctx, e, s);
-    free(scratch);
+    qd__free(scratch);
     if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "out of memory deriving the constraints");
     return st;

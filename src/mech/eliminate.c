@@ -16,6 +16,7 @@
 #include "mech.h"
 
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <stdlib.h>
 
@@ -131,7 +132,7 @@ static qd_status eliminate_one(qd_ctx *ctx, qd__sys *s, size_t k, size_t j, cons
 }
 
 qd_status qd__eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *nelim) {
-    qd_elim *rec = malloc((s->ncon + 1) * sizeof *rec);
+    qd_elim *rec = qd__malloc(ctx, (s->ncon + 1) * sizeof *rec);
     size_t nrec = 0, k = 0;
     qd_status st = rec ? QD_OK : QD_ERR_NOMEM;
     while (st == QD_OK && k < s->ncon) {
@@ -143,7 +144,7 @@ qd_status qd__eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *nelim) 
             k++;
     }
     if (st != QD_OK) {
-        free(rec);
+        qd__free(rec);
         if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "out of memory eliminating coordinates");
         return st;

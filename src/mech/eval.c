@@ -11,13 +11,14 @@
 #include "mech.h"
 
 #include "num/num.h"
+#include "base/mem.h"
 
 #include <stdlib.h>
 
 /* Every output of the program, in the order of qd__out_*. */
 static const qd_expr **outputs(const qd_eom *e, size_t nout) {
     size_t n = e->n, m = e->ncon;
-    const qd_expr **outs = malloc((nout + 1) * sizeof *outs);
+    const qd_expr **outs = qd__mem_malloc(NULL, (nout + 1) * sizeof *outs);
     if (!outs)
         return NULL;
     for (size_t i = 0; i < n * n; i++)
@@ -37,16 +38,16 @@ void qd_eom_prog_free(qd_eom_prog *p) {
     if (!p)
         return;
     qd_prog_free(p->prog);
-    free(p->inputs);
-    free(p);
+    qd__free(p->inputs);
+    qd__free(p);
 }
 
 qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e) {
-    qd_eom_prog *p = calloc(1, sizeof *p);
+    qd_eom_prog *p = qd__calloc(ctx, 1, sizeof *p);
     size_t nout = qd__out_len(e);
     const qd_expr **outs = p ? outputs(e, nout) : NULL;
     if (!outs) {
-        free(p);
+        qd__free(p);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory compiling the equations of motion");
         return NULL;
     }
@@ -55,7 +56,7 @@ qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e) {
     p->inputs = qd__num_inputs(ctx, nout, outs, &p->nin);
     if (p->inputs)
         p->prog = qd_prog_new(ctx, p->nin, p->inputs, nout, outs);
-    free(outs);
+    qd__free(outs);
     if (!p->prog) {
         qd_eom_prog_free(p);
         return NULL;
@@ -66,21 +67,21 @@ qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e) {
 void qd_eom_work_free(qd_eom_work *w) {
     if (!w)
         return;
-    free(w->in);
-    free(w);
+    qd__free(w->in);
+    qd__free(w);
 }
 
 qd_eom_work *qd_eom_work_new(qd_ctx *ctx, const qd_eom_prog *p) {
-    qd_eom_work *w = calloc(1, sizeof *w);
+    qd_eom_work *w = qd__calloc(ctx, 1, sizeof *w);
     if (!w) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory for an evaluation workspace");
         return NULL;
     }
     size_t s = p->e->n + p->e->ncon, nregs = qd_prog_work_size(p->prog);
     /* one block: in, out, the registers, K (s*s) and its right-hand side */
-    w->in = malloc((p->nin + p->nout + nregs + s * s + s + 1) * sizeof *w->in);
+    w->in = qd__malloc(ctx, (p->nin + p->nout + nregs + s * s + s + 1) * sizeof *w->in);
     if (!w->in) {
-        free(w);
+        qd__free(w);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory for an evaluation workspace");
         return NULL;
     }

@@ -14,36 +14,37 @@
 #include <stdlib.h>
 
 #include "qdot/print.h"
+#include "../base/mem.h"
 
-static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_ham_free(qd_ham *h) {
     if (!h)
         return;
     if (h->H_given)
-        free(h->q);
-    free(h->qd);
-    free(h->p);
-    free(h->pdef);
-    free(h->vel);
-    free(h->dq);
-    free(h->dp);
-    free(h->extra);
-    free(h);
+        qd__free(h->q);
+    qd__free(h->qd);
+    qd__free(h->p);
+    qd__free(h->pdef);
+    qd__free(h->vel);
+    qd__free(h->dq);
+    qd__free(h->dp);
+    qd__free(h->extra);
+    qd__free(h);
 }
 
-static qd_ham *ham_alloc(size_t n) {
-    qd_ham *h = calloc(1, sizeof *h);
+static qd_ham *ham_alloc(qd_ctx *ctx, size_t n) {
+    qd_ham *h = qd__calloc(ctx, 1, sizeof *h);
     if (!h)
         return NULL;
     h->n = n;
-    h->p = arr(n);
-    h->pdef = arr(n);
-    h->vel = arr(n);
-    h->dq = arr(n);
-    h->dp = arr(n);
-    h->extra = arr(n);
-    h->qd = arr(n);
+    h->p = arr(ctx, n);
+    h->pdef = arr(ctx, n);
+    h->vel = arr(ctx, n);
+    h->dq = arr(ctx, n);
+    h->dp = arr(ctx, n);
+    h->extra = arr(ctx, n);
+    h->qd = arr(ctx, n);
     if (!h->qd || !h->p || !h->pdef || !h->vel || !h->dq || !h->dp || !h->extra) {
         qd_ham_free(h);
         return NULL;
@@ -108,7 +109,7 @@ static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, co
 
 static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char *stmt) {
     size_t n = e->n;
-    const qd_expr **A = arr(n * (n + 1));
+    const qd_expr **A = arr(ctx, n * (n + 1));
     if (!A)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -120,7 +121,7 @@ static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char 
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "the mass matrix is singular: the momenta do not determine the "
                               "velocities");
-    free(A);
+    qd__free(A);
     return st;
 }
 
@@ -161,13 +162,13 @@ static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
         return QD_OK;
     const qd_expr *E = qd_add(ctx, T, V ? V : qd_int(ctx, 0));
     if (U) {
-        const qd_expr **zero = arr(e->n);
+        const qd_expr **zero = arr(ctx, e->n);
         if (!zero)
             return QD_ERR_NOMEM;
         for (size_t j = 0; j < e->n; j++)
             zero[j] = qd_int(ctx, 0);
         E = qd_add(ctx, E, qd_subs(ctx, U, e->n, e->qd, zero));
-        free(zero);
+        qd__free(zero);
     }
     h->H_minus_E = qd_simplify(ctx, qd_sub(ctx, h->H, qd_subs(ctx, E, e->n, e->qd, h->vel)));
     if (!h->H_minus_E)
@@ -193,7 +194,7 @@ qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     if (!ctx || !m || (!e && !qd_model_hamiltonian_given(m)))
         return NULL;
     if (qd_model_hamiltonian_given(m)) {
-        qd_ham *h = ham_alloc(qd_model_ncoords(m));
+        qd_ham *h = ham_alloc(ctx, qd_model_ncoords(m));
         if (!h) {
             qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Hamiltonian");
             return NULL;
@@ -209,7 +210,7 @@ qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
         qd_ctx_error(ctx, QD_ERR_ARG, "Hamilton's equations with constraints are not supported yet");
         return NULL;
     }
-    qd_ham *h = ham_alloc(e->n);
+    qd_ham *h = ham_alloc(ctx, e->n);
     if (!h) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Hamiltonian");
         return NULL;

@@ -19,6 +19,7 @@
 #include <stdlib.h>
 
 #include "mech.h"
+#include "../base/mem.h"
 
 #define DEFAULT_MAX_OPS 4000
 
@@ -43,8 +44,8 @@ static qd_status sys_init(qd_ctx *ctx, const qd_model *m, qd_eom *e, const qd_in
     s->V = qd_model_potential(m);
     s->U = qd_model_gen_potential(m);
     s->D = qd_model_dissipation(m);
-    s->Q = calloc(s->n ? s->n : 1, sizeof *s->Q);
-    s->p = calloc(s->n ? s->n : 1, sizeof *s->p);
+    s->Q = qd__calloc(ctx, s->n ? s->n : 1, sizeof *s->Q);
+    s->p = qd__calloc(ctx, s->n ? s->n : 1, sizeof *s->p);
     if (!s->Q || !s->p)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < s->n; j++) {
@@ -69,9 +70,9 @@ static qd_status sys_init(qd_ctx *ctx, const qd_model *m, qd_eom *e, const qd_in
 static void sys_free(qd__intsys *s) {
     if (!s)
         return;
-    free(s->Q);
-    free(s->p);
-    free(s);
+    qd__free(s->Q);
+    qd__free(s->p);
+    qd__free(s);
 }
 
 /* ---- cyclic coordinates -------------------------------------------------- */
@@ -113,7 +114,7 @@ static void cyclic_list(qd_ctx *ctx, const qd_eom *e, const qd_expr *L, const qd
 }
 
 static qd_status cyclic(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
-    I->cyclic = calloc(s->n ? s->n : 1, sizeof *I->cyclic);
+    I->cyclic = qd__calloc(ctx, s->n ? s->n : 1, sizeof *I->cyclic);
     if (!I->cyclic)
         return QD_ERR_NOMEM;
     cyclic_list(ctx, s->e, s->L, s->Q, s->D, s->p, I->cyclic, &I->ncyclic);
@@ -130,7 +131,7 @@ qd_status qd_integrals_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                       "and a Lagrangian");
         return QD_ERR_ARG;
     }
-    const qd_expr **Q = calloc(e->n ? e->n : 1, sizeof *Q);
+    const qd_expr **Q = qd__calloc(ctx, e->n ? e->n : 1, sizeof *Q);
     if (!Q)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < e->n; j++) {
@@ -140,7 +141,7 @@ qd_status qd_integrals_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
     const qd_expr *L = qd_simplify(ctx, e->L);
     if (L)
         cyclic_list(ctx, e, L, Q, qd_model_dissipation(m), NULL, out, ncyclic);
-    free(Q);
+    qd__free(Q);
     return qd_ctx_status(ctx);
 }
 
@@ -165,13 +166,13 @@ static const qd_expr *energy(qd_ctx *ctx, const qd__intsys *s) {
         return NULL;
     const qd_expr *E = qd_add(ctx, s->T, s->V ? s->V : zero(ctx));
     if (s->U) {
-        const qd_expr **z = malloc((s->n ? s->n : 1) * sizeof *z);
+        const qd_expr **z = qd__malloc(ctx, (s->n ? s->n : 1) * sizeof *z);
         if (!z)
             return NULL;
         for (size_t j = 0; j < s->n; j++)
             z[j] = zero(ctx);
         E = qd_add(ctx, E, qd_subs(ctx, s->U, s->n, s->e->qd, z));
-        free(z);
+        qd__free(z);
     }
     return qd_simplify(ctx, E);
 }
@@ -353,22 +354,22 @@ void qd_integrals_free(qd_integrals *I) {
         return;
     for (size_t i = 0; i < I->nfound; i++)
         qd_noether_clear(&I->found[i]);
-    free(I->found);
-    free(I->tested);
-    free(I->cyclic);
+    qd__free(I->found);
+    qd__free(I->tested);
+    qd__free(I->cyclic);
     sys_free(I->priv);
-    free(I);
+    qd__free(I);
 }
 
 qd_integrals *qd_integrals_derive(qd_ctx *ctx, const qd_model *m, qd_eom *e,
                                   const qd_integrals_opts *opts) {
     if (!ctx || !m || !e)
         return NULL;
-    qd_integrals *I = calloc(1, sizeof *I);
-    qd__intsys *s = calloc(1, sizeof *s);
+    qd_integrals *I = qd__calloc(ctx, 1, sizeof *I);
+    qd__intsys *s = qd__calloc(ctx, 1, sizeof *s);
     if (!I || !s) {
-        free(I);
-        free(s);
+        qd__free(I);
+        qd__free(s);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory finding first integrals");
         return NULL;
     }

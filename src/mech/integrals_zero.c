@@ -12,6 +12,7 @@
  * seeded by the expression's hash, so every run gives the same verdict.
  */
 #include "integrals_priv.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -105,12 +106,12 @@ static bool is_motion_symbol(const qd__intsys *s, const qd_expr *x) {
 static qd_status points_init(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X, points *p) {
     size_t nx = qd_free_symbols(ctx, X, NULL, 0), np = qd_model_nparams(s->m);
     size_t cap = 3 * s->n + 1 + np + nx + s->e->ncon;
-    const qd_expr **xs = malloc((nx ? nx : 1) * sizeof *xs);
-    p->syms = malloc(cap * sizeof *p->syms);
-    p->vals = calloc(cap, sizeof *p->vals);
+    const qd_expr **xs = qd__malloc(ctx, (nx ? nx : 1) * sizeof *xs);
+    p->syms = qd__malloc(ctx, cap * sizeof *p->syms);
+    p->vals = qd__calloc(ctx, cap, sizeof *p->vals);
     p->ns = 0;
     if (!xs || !p->syms || !p->vals) {
-        free(xs);
+        qd__free(xs);
         return QD_ERR_NOMEM;
     }
     qd_free_symbols(ctx, X, xs, nx);
@@ -129,7 +130,7 @@ static qd_status points_init(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
         p->syms[p->ns++] = s->e->qdd[j];
     for (size_t k = 0; k < s->e->ncon; k++)
         p->syms[p->ns++] = s->e->con[k].lambda;
-    free(xs);
+    qd__free(xs);
     return QD_OK;
 }
 
@@ -160,8 +161,8 @@ static const qd_expr *solved(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X)
     if (!s->solved)
         return X;
     size_t n = e->n, m = e->ncon;
-    const qd_expr **from = malloc((n + m + 1) * sizeof *from);
-    const qd_expr **to = malloc((n + m + 1) * sizeof *to);
+    const qd_expr **from = qd__malloc(ctx, (n + m + 1) * sizeof *from);
+    const qd_expr **to = qd__malloc(ctx, (n + m + 1) * sizeof *to);
     const qd_expr *r = NULL;
     if (from && to) {
         for (size_t j = 0; j < n; j++) {
@@ -176,8 +177,8 @@ static const qd_expr *solved(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X)
     } else {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory testing an integral");
     }
-    free(from);
-    free(to);
+    qd__free(from);
+    qd__free(to);
     return r;
 }
 
@@ -198,8 +199,8 @@ qd_status qd__int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
         *zero = r > 0;
         *numeric = r >= 0; /* with *zero false: undecided */
     }
-    free(p.syms);
-    free(p.vals);
+    qd__free(p.syms);
+    qd__free(p.vals);
     return st;
 }
 
@@ -214,11 +215,11 @@ qd_status qd__int_identically_zero(qd_ctx *ctx, const qd__intsys *s, const qd_ex
         return QD_OK;
     }
     size_t ns = qd_free_symbols(ctx, X, NULL, 0);
-    const qd_expr **syms = malloc((ns ? ns : 1) * sizeof *syms);
-    double *vals = malloc((ns ? ns : 1) * sizeof *vals);
+    const qd_expr **syms = qd__malloc(ctx, (ns ? ns : 1) * sizeof *syms);
+    double *vals = qd__malloc(ctx, (ns ? ns : 1) * sizeof *vals);
     if (!syms || !vals) {
-        free(syms);
-        free(vals);
+        qd__free(syms);
+        qd__free(vals);
         return QD_ERR_NOMEM;
     }
     qd_free_symbols(ctx, X, syms, ns);
@@ -232,7 +233,7 @@ qd_status qd__int_identically_zero(qd_ctx *ctx, const qd__intsys *s, const qd_ex
     }
     *zero = r <= 0 && defined >= MIN_DEFINED;
     *numeric = r <= 0; /* with *zero false: undecided */
-    free(syms);
-    free(vals);
+    qd__free(syms);
+    qd__free(vals);
     return QD_OK;
 }

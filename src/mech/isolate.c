@@ -22,6 +22,7 @@
  * into the rest, until all are solved.
  */
 #include "mech.h"
+#include "base/mem.h"
 
 #include <stdlib.h>
 
@@ -274,11 +275,11 @@ static size_t single_unknown(const qd_expr *e, size_t n, const qd_expr *const *x
 
 qd_status qd__isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq, const qd_expr *const *xs,
                       const qd_expr **sol, size_t *failed) {
-    const qd_expr **e = malloc((2 * n + 1) * sizeof *e);
-    bool *done = calloc(2 * n + 1, sizeof *done), *used = done + n;
+    const qd_expr **e = qd__malloc(ctx, (2 * n + 1) * sizeof *e);
+    bool *done = qd__calloc(ctx, 2 * n + 1, sizeof *done), *used = done + n;
     if (!e || !done) {
-        free(e);
-        free(done);
+        qd__free(e);
+        qd__free(done);
         return QD_ERR_NOMEM;
     }
     for (size_t i = 0; i < n; i++)
@@ -305,8 +306,8 @@ qd_status qd__isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq, const qd_
             *failed = i;
     for (size_t j = 0; j < n && solved == n; j++)
         sol[j] = qd__untrig(ctx, sol[j]);
-    free(e);
-    free(done);
+    qd__free(e);
+    qd__free(done);
     if (qd_ctx_status(ctx) != QD_OK)
         return qd_ctx_status(ctx);
     return solved == n ? QD_OK : QD_ERR_NONLINEAR;

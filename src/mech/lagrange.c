@@ -16,22 +16,23 @@
  */
 #include "mech.h"
 #include "qdot/hamilton.h"
+#include "../base/mem.h"
 
 #include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 
-static qd_eom *eom_alloc(size_t n) {
-    qd_eom *e = calloc(1, sizeof *e);
+static qd_eom *eom_alloc(qd_ctx *ctx, size_t n) {
+    qd_eom *e = qd__calloc(ctx, 1, sizeof *e);
     if (!e)
         return NULL;
     e->n = n;
-    e->q = calloc(n ? n : 1, sizeof *e->q);
-    e->qd = calloc(n ? n : 1, sizeof *e->qd);
-    e->qdd = calloc(n ? n : 1, sizeof *e->qdd);
-    e->M = calloc(n ? n * n : 1, sizeof *e->M);
-    e->f = calloc(n ? n : 1, sizeof *e->f);
-    e->priv = calloc(1, sizeof(qd__eom_num));
+    e->q = qd__calloc(ctx, n ? n : 1, sizeof *e->q);
+    e->qd = qd__calloc(ctx, n ? n : 1, sizeof *e->qd);
+    e->qdd = qd__calloc(ctx, n ? n : 1, sizeof *e->qdd);
+    e->M = qd__calloc(ctx, n ? n * n : 1, sizeof *e->M);
+    e->f = qd__calloc(ctx, n ? n : 1, sizeof *e->f);
+    e->priv = qd__calloc(ctx, 1, sizeof(qd__eom_num));
     if (!e->q || !e->qd || !e->qdd || !e->M || !e->f || !e->priv) {
         qd_eom_free(e);
         return NULL;
@@ -43,19 +44,19 @@ void qd_eom_free(qd_eom *e) {
     if (!e)
         return;
     qd__eom_num_free(e->priv);
-    free(e->priv);
-    free(e->q);
-    free(e->qd);
-    free(e->qdd);
-    free(e->M);
-    free(e->f);
-    free(e->acc);
-    free(e->mult);
-    free(e->con);
-    free(e->A);
-    free(e->b);
-    free(e->elim);
-    free(e);
+    qd__free(e->priv);
+    qd__free(e->q);
+    qd__free(e->qd);
+    qd__free(e->qdd);
+    qd__free(e->M);
+    qd__free(e->f);
+    qd__free(e->acc);
+    qd__free(e->mult);
+    qd__free(e->con);
+    qd__free(e->A);
+    qd__free(e->b);
+    qd__free(e->elim);
+    qd__free(e);
 }
 
 static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
@@ -144,7 +145,7 @@ static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_e
     bool sym = !has_any(s->D, e->n, e->qdd);
     for (size_t j = 0; j < e->n; j++)
         sym = sym && !has_any(s->Q[j], e->n, e->qdd);
-    const qd_expr **coeffs = calloc(e->n ? e->n : 1, sizeof *coeffs);
+    const qd_expr **coeffs = qd__calloc(ctx, e->n ? e->n : 1, sizeof *coeffs);
     if (!coeffs)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -153,7 +154,7 @@ static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_e
         if (st == QD_OK)
             st = fill_row(ctx, e, j, coeffs, sym);
     }
-    free(coeffs);
+    qd__free(coeffs);
     return st;
 }
 
@@ -217,12 +218,12 @@ static qd_status derive_sys(qd_ctx *ctx, qd__sys *s, const qd_model *m, const qd
     qd_status st = qd__sys_from_model(ctx, m, s);
     if (st == QD_OK && opts && opts->eliminate)
         st = qd__eliminate(ctx, s, &elim, &nelim);
-    if (st == QD_OK && !(*out = eom_alloc(s->n))) {
+    if (st == QD_OK && !(*out = eom_alloc(ctx, s->n))) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
         st = QD_ERR_NOMEM;
     }
     if (st != QD_OK) {
-        free(elim);
+        qd__free(elim);
         return st;
     }
     (*out)->elim = elim;
@@ -251,20 +252,20 @@ qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) { return qd_eom_derive_opt
 /* ---- the system a model describes ---------------------------------------- */
 
 void qd__sys_free(qd__sys *s) {
-    free(s->q);
-    free(s->Q);
-    free(s->con_name);
-    free(s->con_expr);
+    qd__free(s->q);
+    qd__free(s->Q);
+    qd__free(s->con_name);
+    qd__free(s->con_expr);
     *s = (qd__sys){0};
 }
 
 qd_status qd__sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s) {
     size_t n = qd_model_ncoords(m), nc = qd_model_nconstraints(m);
     *s = (qd__sys){.n = n, .ncon = nc, .L_given = qd_model_lagrangian_given(m)};
-    s->q = malloc((n + 1) * sizeof *s->q);
-    s->Q = malloc((n + 1) * sizeof *s->Q);
-    s->con_name = malloc((nc + 1) * sizeof *s->con_name);
-    s->con_expr = malloc((nc + 1) * sizeof *s->con_expr);
+    s->q = qd__malloc(ctx, (n + 1) * sizeof *s->q);
+    s->Q = qd__malloc(ctx, (n + 1) * sizeof *s->Q);
+    s->con_name = qd__malloc(ctx, (nc + 1) * sizeof *s->con_name);
+    s->con_expr = qd__malloc(ctx, (nc + 1) * sizeof *s->con_expr);
     if (!s->q || !s->Q || !s->con_name || !s->con_expr) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
         return QD_ERR_NOMEM;

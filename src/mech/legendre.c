@@ -14,12 +14,13 @@
  * only leaves L_from_H empty.
  */
 #include "legendre.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 qd_status qd__gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
                           size_t *bad) {
@@ -65,9 +66,9 @@ typedef struct hsys {
 
 static qd_status hsys_init(qd_ctx *ctx, const qd_model *m, hsys *s) {
     s->n = qd_model_ncoords(m);
-    s->q = arr(s->n);
-    s->qd = arr(s->n);
-    s->p = arr(s->n);
+    s->q = arr(ctx, s->n);
+    s->qd = arr(ctx, s->n);
+    s->p = arr(ctx, s->n);
     if (!s->q || !s->qd || !s->p) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -83,9 +84,9 @@ static qd_status hsys_init(qd_ctx *ctx, const qd_model *m, hsys *s) {
 }
 
 static void hsys_free(hsys *s) {
-    free(s->q);
-    free(s->qd);
-    free(s->p);
+    qd__free(s->q);
+    qd__free(s->qd);
+    qd__free(s->p);
 }
 
 /* Row j of [W | q'_j - c_j] from q'_j = dH/dp_j = sum_k W_jk p_k + c_j. */
@@ -115,7 +116,7 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
                          const qd_expr **L) {
     const qd_expr *H = qd_model_hamiltonian(m);
     size_t n = s->n, bad = 0;
-    const qd_expr **A = arr(n * (n + 1));
+    const qd_expr **A = arr(ctx, n * (n + 1));
     if (!A) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -125,7 +126,7 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
         st = row(ctx, s, H, j, A + j * (n + 1));
     if (st == QD_OK)
         st = qd__gauss_solve(ctx, n, A, pdef, &bad);
-    free(A);
+    qd__free(A);
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK) {
         qd_ctx_error(ctx, st, "d^2H/dp^2 is singular (H is not regular): q' = dH/dp does not "
                               "determine %s, so H has no Lagrangian", qd_expr_name(s->p[bad]));
@@ -154,7 +155,7 @@ qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **
     }
     hsys s = {0};
     qd_status st = hsys_init(ctx, m, &s);
-    const qd_expr **p = pdef ? pdef : arr(s.n);
+    const qd_expr **p = pdef ? pdef : arr(ctx, s.n);
     if (st == QD_OK && !p) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         st = QD_ERR_NOMEM;
@@ -162,7 +163,7 @@ qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **
     if (st == QD_OK)
         st = inverse(ctx, m, &s, p, L);
     if (p != pdef)
-        free(p);
+        qd__free(p);
     hsys_free(&s);
     return st;
 }

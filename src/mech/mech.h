@@ -105,7 +105,7 @@ qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s);
 
 /* Is A (m*n, row-major) of rank below m?  Then mu (m) receives a vector
  * with A^T mu = 0, largest entry 1 in magnitude.  tol is relative. */
-bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *mu);
+bool qd__con_deficient(qd_ctx *ctx, size_t n, size_t m, const double *A, double tol, double *mu);
 
 /* Report rank-deficient constraints: those with a weight in mu, named;
  * inconsistent when some combination mu of the constraints (g, or b at the

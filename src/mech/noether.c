@@ -13,6 +13,7 @@
  * leaves the field reported as not a symmetry, with dL/deps shown.
  */
 #include "integrals_priv.h"
+#include "../base/mem.h"
 
 #include <ctype.h>
 #include <stdlib.h>
@@ -21,7 +22,7 @@
 void qd_noether_clear(qd_noether *nt) {
     if (!nt)
         return;
-    free(nt->xi);
+    qd__free(nt->xi);
     nt->xi = NULL;
 }
 
@@ -35,12 +36,12 @@ static bool has_velocity(const qd__intsys *s, const qd_expr *x) {
 /* F(q, t) with dF/dt = dL (affine in the velocities), or NULL. */
 static const qd_expr *gauge(qd_ctx *ctx, const qd__intsys *s, const qd_expr *dL) {
     size_t n = s->n;
-    const qd_expr **c = calloc(n + 1, sizeof *c), *c0 = NULL, *F = qd_int(ctx, 0);
+    const qd_expr **c = qd__calloc(ctx, n + 1, sizeof *c), *c0 = NULL, *F = qd_int(ctx, 0);
     if (!c)
         return NULL;
     if (qd_linear_coeffs(ctx, dL, n, s->e->qd, c, &c0) != QD_OK) {
         qd_ctx_clear_error(ctx);
-        free(c);
+        qd__free(c);
         return NULL;
     }
     c[n] = c0;
@@ -61,7 +62,7 @@ static const qd_expr *gauge(qd_ctx *ctx, const qd__intsys *s, const qd_expr *dL)
         }
         F = qd_add(ctx, F, g);
     }
-    free(c);
+    qd__free(c);
     if (!F)
         return NULL;
     F = qd_simplify(ctx, F);
@@ -74,7 +75,7 @@ static const qd_expr *gauge(qd_ctx *ctx, const qd__intsys *s, const qd_expr *dL)
 
 static qd_status field(qd_ctx *ctx, const qd__intsys *s, const qd_expr *const *xi,
                        qd_noether *out) {
-    out->xi = calloc(s->n ? s->n : 1, sizeof *out->xi);
+    out->xi = qd__calloc(ctx, s->n ? s->n : 1, sizeof *out->xi);
     if (!out->xi)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < s->n; j++) {
@@ -207,11 +208,11 @@ static qd_status rotation(qd_ctx *ctx, qd_integrals *I, char a, char b, const ch
 
 qd_status qd__int_search(qd_ctx *ctx, qd_integrals *I) {
     qd__intsys *s = I->priv;
-    const qd_expr **xi = calloc(s->n ? s->n : 1, sizeof *xi);
-    I->found = calloc(6, sizeof *I->found);
-    I->tested = calloc(6, sizeof *I->tested);
+    const qd_expr **xi = qd__calloc(ctx, s->n ? s->n : 1, sizeof *xi);
+    I->found = qd__calloc(ctx, 6, sizeof *I->found);
+    I->tested = qd__calloc(ctx, 6, sizeof *I->tested);
     if (!xi || !I->found || !I->tested) {
-        free(xi);
+        qd__free(xi);
         return QD_ERR_NOMEM;
     }
     qd_status st = translation(ctx, I, 'x', "linear momentum along x", xi);
@@ -225,6 +226,6 @@ qd_status qd__int_search(qd_ctx *ctx, qd_integrals *I) {
         st = rotation(ctx, I, 'z', 'x', "angular momentum about y", xi);
     if (st == QD_OK)
         st = rotation(ctx, I, 'x', 'y', "angular momentum about z", xi);
-    free(xi);
+    qd__free(xi);
     return st;
 }

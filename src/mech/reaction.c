@@ -23,6 +23,7 @@
 #include "mech.h"
 
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -148,7 +149,7 @@ qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
     qd_status st = find(ctx, e, con, &k);
     if (st != QD_OK)
         return st;
-    double *J = malloc((4 * n + 1) * sizeof *J);
+    double *J = qd__malloc(ctx, (4 * n + 1) * sizeof *J);
     if (!J) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory computing a reaction");
         return QD_ERR_NOMEM;
@@ -160,6 +161,6 @@ qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
         if (residual)
             *residual = residual_of(n, J, R, F);
     }
-    free(J);
+    qd__free(J);
     return st;
 }

@@ -17,47 +17,48 @@
 #include "legendre.h"
 #include "mech.h"
 #include "base/diag.h"
+#include "base/mem.h"
 
-static const qd_expr **arr(size_t n) { return calloc(n ? n : 1, sizeof(const qd_expr *)); }
+static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
 void qd_routh_free(qd_routh *r) {
     if (!r)
         return;
-    free(r->ign);
-    free(r->beta);
-    free(r->keep);
-    free(r->keepd);
-    free(r->keepdd);
-    free(r->ignvel);
-    free(r->pdef);
-    free(r->M);
-    free(r->f);
-    free(r->G);
-    free(r->ign_index);
-    free(r->keep_index);
-    free(r);
+    qd__free(r->ign);
+    qd__free(r->beta);
+    qd__free(r->keep);
+    qd__free(r->keepd);
+    qd__free(r->keepdd);
+    qd__free(r->ignvel);
+    qd__free(r->pdef);
+    qd__free(r->M);
+    qd__free(r->f);
+    qd__free(r->G);
+    qd__free(r->ign_index);
+    qd__free(r->keep_index);
+    qd__free(r);
 }
 
-static qd_routh *routh_alloc(size_t n, size_t nign) {
-    qd_routh *r = calloc(1, sizeof *r);
+static qd_routh *routh_alloc(qd_ctx *ctx, size_t n, size_t nign) {
+    qd_routh *r = qd__calloc(ctx, 1, sizeof *r);
     if (!r)
         return NULL;
     size_t nk = n - nign;
     r->n = n;
     r->nign = nign;
     r->nkeep = nk;
-    r->ign = arr(nign);
-    r->beta = arr(nign);
-    r->ignvel = arr(nign);
-    r->pdef = arr(nign);
-    r->keep = arr(nk);
-    r->keepd = arr(nk);
-    r->keepdd = arr(nk);
-    r->M = arr(nk * nk);
-    r->f = arr(nk);
-    r->G = arr(nk * nk);
-    r->ign_index = calloc(nign ? nign : 1, sizeof *r->ign_index);
-    r->keep_index = calloc(nk ? nk : 1, sizeof *r->keep_index);
+    r->ign = arr(ctx, nign);
+    r->beta = arr(ctx, nign);
+    r->ignvel = arr(ctx, nign);
+    r->pdef = arr(ctx, nign);
+    r->keep = arr(ctx, nk);
+    r->keepd = arr(ctx, nk);
+    r->keepdd = arr(ctx, nk);
+    r->M = arr(ctx, nk * nk);
+    r->f = arr(ctx, nk);
+    r->G = arr(ctx, nk * nk);
+    r->ign_index = qd__calloc(ctx, nign ? nign : 1, sizeof *r->ign_index);
+    r->keep_index = qd__calloc(ctx, nk ? nk : 1, sizeof *r->keep_index);
     if (!r->ign || !r->beta || !r->ignvel || !r->pdef || !r->keep || !r->keepd || !r->keepdd ||
         !r->M || !r->f || !r->G || !r->ign_index || !r->keep_index) {
         qd_routh_free(r);
@@ -70,7 +71,7 @@ static qd_routh *routh_alloc(size_t n, size_t nign) {
 
 const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name) {
     size_t nc = qd_model_ncoords(m);
-    const char **names = malloc((nc ? nc : 1) * sizeof *names);
+    const char **names = qd__malloc(ctx, (nc ? nc : 1) * sizeof *names);
     if (!names) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return NULL;
@@ -78,7 +79,7 @@ const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name)
     for (size_t i = 0; i < nc; i++) {
         names[i] = qd_expr_name(qd_model_coord(m, i));
         if (!strcmp(names[i], name)) {
-            free(names);
+            qd__free(names);
             return qd_model_coord(m, i);
         }
     }
@@ -92,7 +93,7 @@ const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name)
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown coordinate '%s'; did you mean '%s'?", name, near);
     else
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown coordinate '%s'", name);
-    free(names);
+    qd__free(names);
     return NULL;
 }
 
@@ -138,7 +139,7 @@ const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
  * [A_i | beta_i - rest]. */
 static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t i,
                               const qd_expr **row) {
-    const qd_expr **co = arr(e->n);
+    const qd_expr **co = arr(ctx, e->n);
     if (!co)
         return QD_ERR_NOMEM;
     const qd_expr *rest = NULL;
@@ -154,13 +155,13 @@ static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t 
         row[r->nign] = qd_sub(ctx, r->beta[i], rest);
         st = row[r->nign] ? QD_OK : qd_ctx_status(ctx);
     }
-    free(co);
+    qd__free(co);
     return st;
 }
 
 static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
     size_t ni = r->nign, w = ni + 1;
-    const qd_expr **A = arr(ni * w);
+    const qd_expr **A = arr(ctx, ni * w);
     if (!A)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -176,7 +177,7 @@ static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
     if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, r->ignvel, &bad)) == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "the momenta of the ignored coordinates do not determine their "
                               "velocities (no pivot for %s')", qd_expr_name(r->ign[bad]));
-    free(A);
+    qd__free(A);
     return st;
 }
 
@@ -185,13 +186,13 @@ static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
 /* x with the ignored velocities replaced by the quadratures' integrands. */
 static const qd_expr *reduce(qd_ctx *ctx, const qd_eom *e, const qd_routh *r,
                              const qd_expr *x) {
-    const qd_expr **from = arr(r->nign);
+    const qd_expr **from = arr(ctx, r->nign);
     if (!from)
         return NULL;
     for (size_t i = 0; i < r->nign; i++)
         from[i] = e->qd[r->ign_index[i]];
     const qd_expr *y = qd_subs(ctx, x, r->nign, from, r->ignvel);
-    free(from);
+    qd__free(from);
     return y;
 }
 
@@ -223,7 +224,7 @@ static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
 /* G_ij = dg_i/dk_j - dg_j/dk_i with R1 = sum g_j k'_j. */
 static qd_status gyroscopic(qd_ctx *ctx, qd_routh *r) {
     size_t nk = r->nkeep;
-    const qd_expr **g = arr(nk);
+    const qd_expr **g = arr(ctx, nk);
     if (!g)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < nk; i++)
@@ -233,7 +234,7 @@ static qd_status gyroscopic(qd_ctx *ctx, qd_routh *r) {
             r->G[i * nk + j] = i == j ? qd_int(ctx, 0)
                                       : qd_simplify(ctx, qd_sub(ctx, qd_diff(ctx, g[i], r->keep[j]),
                                                                 qd_diff(ctx, g[j], r->keep[i])));
-    free(g);
+    qd__free(g);
     return qd_ctx_status(ctx);
 }
 
@@ -252,7 +253,7 @@ static const qd_expr *extra(qd_ctx *ctx, const qd_model *m, const qd_eom *e, con
 static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh *r) {
     size_t nk = r->nkeep;
     const qd_expr *lag = qd_neg(ctx, r->R), *D = qd_model_dissipation(m);
-    const qd_expr **co = arr(nk);
+    const qd_expr **co = arr(ctx, nk);
     if (!co)
         return QD_ERR_NOMEM;
     r->conserved = !qd_has(r->R, qd_time(ctx)) && (!D || qd_is_zero(D));
@@ -277,7 +278,7 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_r
         if (st == QD_OK && !(r->f[k] = qd_simplify(ctx, qd_neg(ctx, rest))))
             st = qd_ctx_status(ctx);
     }
-    free(co);
+    qd__free(co);
     return st;
 }
 
@@ -285,7 +286,7 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_r
 
 static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh *r,
                        const qd_expr *const *ign) {
-    bool *is_ign = calloc(e->n ? e->n : 1, sizeof *is_ign);
+    bool *is_ign = qd__calloc(ctx, e->n ? e->n : 1, sizeof *is_ign);
     if (!is_ign)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -317,7 +318,7 @@ static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh
             r->keepd[k] = e->qd[j];
             r->keepdd[k++] = e->qdd[j];
         }
-    free(is_ign);
+    qd__free(is_ign);
     return st;
 }
 
@@ -334,7 +335,7 @@ qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_
                                            : "no coordinate to ignore");
         return NULL;
     }
-    qd_routh *r = routh_alloc(e->n, nign);
+    qd_routh *r = routh_alloc(ctx, e->n, nign);
     if (!r) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Routhian");
         return NULL;

@@ -18,19 +18,20 @@
 
 #include "num/num.h"
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
 
 #define SOLVE_TOL 1e-12
 
-bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *mu) {
+bool qd__con_deficient(qd_ctx *ctx, size_t n, size_t m, const double *A, double tol, double *mu) {
     /* A^T (n x m) padded with zeros to a square: padded columns come last,
      * so the first column without a pivot is a genuine one when any is. */
     size_t s = n > m ? n : m;
-    double *S = calloc(s * s + 2 * s, sizeof *S);
-    size_t *pc = malloc(s * sizeof *pc);
-    bool *free_col = malloc(s * sizeof *free_col);
+    double *S = qd__calloc(ctx, s * s + 2 * s, sizeof *S);
+    size_t *pc = qd__malloc(ctx, s * sizeof *pc);
+    bool *free_col = qd__malloc(ctx, s * sizeof *free_col);
     bool deficient = false;
     if (S && pc && free_col) {
         double *null = S + s * s;
@@ -44,15 +45,15 @@ bool qd__con_deficient(size_t n, size_t m, const double *A, double tol, double *
         for (size_t k = 0; deficient && k < m; k++)
             mu[k] = top > 0 ? null[k] / top : 0;
     }
-    free(S);
-    free(pc);
-    free(free_col);
+    qd__free(S);
+    qd__free(pc);
+    qd__free(free_col);
     return deficient;
 }
 
 qd_status qd__con_report(qd_ctx *ctx, const qd_eom *e, const double *mu, bool inconsistent,
                          const char *where) {
-    qd_buf names = QD_BUF_INIT;
+    qd_buf names = QD_BUF_WITH(qd__ctx_allocator(ctx));
     size_t count = 0, last = 0;
     for (size_t k = 0; k < e->ncon; k++)
         if (fabs(mu[k]) > 1e-6)
@@ -106,18 +107,20 @@ static void build(const qd_eom *e, const double *out, double *K, double *rhs) {
 
 static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
     size_t m = e->ncon;
-    double *mu = malloc((m + 1) * sizeof *mu);
+    double *mu = qd__malloc(ctx, (m + 1) * sizeof *mu);
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
-    if (qd__con_deficient(e->n, m, out + qd__out_A(e), SOLVE_TOL * 1e3, mu))
+    if (qd__con_deficient(ctx, e->n, m, out + qd__out_A(e), SOLVE_TOL * 1e3, mu))
         qd__con_report(ctx, e, mu, combination_nonzero(m, mu, out + qd__out_b(e)),
                        " at this state");
+    else if (qd_ctx_status(ctx) == QD_ERR_NOMEM) /* no verdict: its scratch ran out */
+        st = QD_ERR_NOMEM;
     else
         qd_ctx_error(ctx, st,
                      "the mass matrix is singular on the motions the constraints allow at this "
                      "state");
-    free(mu);
+    qd__free(mu);
     return st;
 }
 

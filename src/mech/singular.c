@@ -16,6 +16,7 @@
 
 #include "num/num.h"
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -46,7 +47,7 @@ static bool zero_rows(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick
     }
     if (!any)
         return false;
-    qd_buf b = QD_BUF_INIT;
+    qd_buf b = QD_BUF_WITH(qd__ctx_allocator(ctx));
     name_list(&b, e, pick, "'");
     if (absent)
         qd_ctx_error(ctx, QD_ERR_SINGULAR,
@@ -67,7 +68,7 @@ static void report_null(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, const do
         top = fmax(top, fabs(null[j]));
     for (size_t j = 0; j < e->n; j++)
         pick[j] = fabs(null[j]) > 1e-6 * top;
-    qd_buf b = QD_BUF_INIT;
+    qd_buf b = QD_BUF_WITH(qd__ctx_allocator(ctx));
     name_list(&b, e, pick, "''");
     qd_ctx_error(ctx, QD_ERR_SINGULAR,
                  "the mass matrix is singular: the accelerations %s are not determined (the "
@@ -107,11 +108,11 @@ static bool singular_at(const qd_eom *e, double *out, double *K, size_t *pc, boo
  * out of a state where it is singular; QD_OK when A has full rank. */
 static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *out) {
     size_t m = e->ncon;
-    double *mu = malloc((m + 1) * sizeof *mu);
+    double *mu = qd__malloc(ctx, (m + 1) * sizeof *mu);
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
-    if (qd__con_deficient(e->n, m, out + qd__out_A(e), RANK_TOL, mu)) {
+    if (qd__con_deficient(ctx, e->n, m, out + qd__out_A(e), RANK_TOL, mu)) {
         /* the constraints themselves (not their derivatives) decide
          * consistency: x = 1 and x = 2 have the same rows A */
         const double *g = out + qd__out_g(e);
@@ -121,15 +122,17 @@ static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *ou
             top = fmax(top, fabs(g[k]));
         }
         st = qd__con_report(ctx, e, mu, fabs(s) > 1e-9 * (1 + top), "");
+    } else if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+        st = QD_ERR_NOMEM; /* no verdict on A: its scratch ran out */
     }
-    free(mu);
+    qd__free(mu);
     return st;
 }
 
 static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, qd_prog *p,
                                size_t nin, size_t nout, bool *pick) {
     size_t n = e->n, s = n + e->ncon;
-    double *w = malloc((nin + nout + s * s + s) * sizeof *w + s * (sizeof(size_t) + 1));
+    double *w = qd__malloc(ctx, (nin + nout + s * s + s) * sizeof *w + s * (sizeof(size_t) + 1));
     if (!w)
         return QD_ERR_NOMEM;
     /* scratch layout: in[nin], out[nout], K[s*s], null[s], pc[s], free_col[s] */
@@ -160,7 +163,7 @@ static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, q
     } else if (st != QD_OK) {
         report_null(ctx, e, T, null, pick);
     }
-    free(w);
+    qd__free(w);
     return st;
 }
 
@@ -194,17 +197,17 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
         st = symbolic_check(ctx, e);
     }
     qd_prog_free(p);
-    free(in);
+    qd__free(in);
     return st;
 }
 
 qd_status qd__check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T) {
-    bool *pick = calloc(e->n ? e->n : 1, sizeof *pick);
+    bool *pick = qd__calloc(ctx, e->n ? e->n : 1, sizeof *pick);
     if (!pick)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
     if (e->ncon || !zero_rows(ctx, e, T, pick))
         st = check_by_value(ctx, e, T, pick);
-    free(pick);
+    qd__free(pick);
     return st;
 }

@@ -14,6 +14,7 @@
  */
 #include "mech.h"
 
+#include "base/mem.h"
 #include <math.h>
 #include <stdlib.h>
 
@@ -37,11 +38,13 @@ static const qd_expr *exact_div(qd_ctx *ctx, const qd_expr *num, const qd_expr *
 }
 
 /* Move a row with an entry that does not simplify to 0 in column k to row
- * k; false when there is none. */
-static bool find_pivot(elim *el, size_t k) {
+ * k; QD_ERR_SINGULAR when there is none. */
+static qd_status find_pivot(elim *el, size_t k) {
     for (size_t r = k; r < el->n; r++) {
         const qd_expr *x = qd_simplify(el->ctx, el->A[r * el->w + k]);
-        if (!x || qd_is_zero(x))
+        if (!x) /* not a zero: the simplifier failed (out of memory) */
+            return qd_ctx_status(el->ctx) != QD_OK ? qd_ctx_status(el->ctx) : QD_ERR_NOMEM;
+        if (qd_is_zero(x))
             continue;
         for (size_t j = 0; r != k && j < el->w; j++) {
             const qd_expr *t = el->A[r * el->w + j];
@@ -49,9 +52,9 @@ static bool find_pivot(elim *el, size_t k) {
             el->A[k * el->w + j] = t;
         }
         el->sign = r != k ? -el->sign : el->sign;
-        return true;
+        return QD_OK;
     }
-    return false;
+    return QD_ERR_SINGULAR;
 }
 
 static qd_status step(elim *el, size_t k, const qd_expr *prev) {
@@ -78,9 +81,9 @@ static qd_status bareiss(elim *el) {
     const qd_expr *prev = qd_int(el->ctx, 1);
     el->sign = 1;
     for (size_t k = 0; k < el->n; k++) {
-        if (!find_pivot(el, k))
-            return QD_ERR_SINGULAR;
-        qd_status st = step(el, k, prev);
+        qd_status st = find_pivot(el, k);
+        if (st == QD_OK)
+            st = step(el, k, prev);
         if (st != QD_OK)
             return st;
         prev = el->A[k * el->w + k];
@@ -89,7 +92,7 @@ static qd_status bareiss(elim *el) {
 }
 
 const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
-    const qd_expr **A = malloc((n ? n * n : 1) * sizeof *A);
+    const qd_expr **A = qd__malloc(ctx, (n ? n * n : 1) * sizeof *A);
     if (!A)
         return NULL;
     for (size_t i = 0; i < n * n; i++)
@@ -102,7 +105,7 @@ const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
                                                : qd_int(ctx, 1);
     if (det && el.sign < 0)
         det = qd_neg(ctx, det);
-    free(A);
+    qd__free(A);
     return det;
 }
 
@@ -189,17 +192,17 @@ static void augmented(qd_ctx *ctx, const qd_eom *e, const qd_expr **A) {
     }
 }
 
-static qd_status keep(qd_eom *e, const qd_expr **x) {
+static qd_status keep(qd_ctx *ctx, qd_eom *e, const qd_expr **x) {
     const qd_expr **mult = NULL;
     if (e->ncon) {
-        mult = malloc(e->ncon * sizeof *mult);
+        mult = qd__malloc(ctx, e->ncon * sizeof *mult);
         if (!mult)
             return QD_ERR_NOMEM;
         for (size_t k = 0; k < e->ncon; k++)
             mult[k] = x[e->n + k];
     }
-    free(e->acc);
-    free(e->mult);
+    qd__free(e->acc);
+    qd__free(e->mult);
     e->acc = x;
     e->mult = mult;
     return QD_OK;
@@ -207,18 +210,18 @@ static qd_status keep(qd_eom *e, const qd_expr **x) {
 
 qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
     size_t N = e->n + e->ncon, w = N + 1;
-    const qd_expr **A = malloc((N * w + 1) * sizeof *A), **acc = calloc(N + 1, sizeof *acc);
+    const qd_expr **A = qd__malloc(ctx, (N * w + 1) * sizeof *A), **acc = qd__calloc(ctx, N + 1, sizeof *acc);
     qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         augmented(ctx, e, A);
     elim el = {ctx, N, w, A, max_ops * GROWTH + 4096, 1};
     if (st == QD_OK && N)
         st = solve_entries(&el, acc, max_ops);
-    free(A);
+    qd__free(A);
     if (st == QD_OK)
-        st = keep(e, acc);
+        st = keep(ctx, e, acc);
     if (st != QD_OK) {
-        free(acc);
+        qd__free(acc);
         solve_error(ctx, st, e->ncon, max_ops);
         return st;
     }

@@ -14,6 +14,7 @@
 
 #include "base/ptrmap.h"
 #include "qdot/print.h"
+#include "../base/mem.h"
 
 #include <stdlib.h>
 
@@ -92,8 +93,8 @@ static size_t max_factors(const qd_expr *x, size_t nt) {
 }
 
 /* Number the distinct monomials of terms[0..nt). */
-static size_t number_buckets(vterm *terms, size_t nt, bool *ok) {
-    qd_ptrmap ids = QD_PTRMAP_INIT;
+static size_t number_buckets(qd_ctx *ctx, vterm *terms, size_t nt, bool *ok) {
+    qd_ptrmap ids = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     size_t nb = 0;
     for (size_t i = 0; *ok && i < nt; i++) {
         size_t id = (size_t)(uintptr_t)qd_ptrmap_get(&ids, terms[i].mono);
@@ -104,6 +105,8 @@ static size_t number_buckets(vterm *terms, size_t nt, bool *ok) {
         terms[i].bucket = id - 1;
     }
     qd_ptrmap_free(&ids);
+    if (!*ok) /* the map cannot say so itself */
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
     return nb;
 }
 
@@ -131,9 +134,9 @@ static const qd_expr *group(qd_ctx *ctx, const vterm *terms, const size_t *order
 
 /* Sort terms by bucket (counting sort), then sum each bucket. */
 static qd_status gather(qd_ctx *ctx, const vterm *terms, size_t nt, size_t nb, qd__vsum *v) {
-    size_t *start = calloc(nb + 1, sizeof *start), *order = malloc(nt * sizeof *order);
-    const qd_expr **scratch = malloc(nt * sizeof *scratch), **groups = malloc(nb * sizeof *groups);
-    const qd_expr **bydeg = malloc(3 * nb * sizeof *bydeg);
+    size_t *start = qd__calloc(ctx, nb + 1, sizeof *start), *order = qd__malloc(ctx, nt * sizeof *order);
+    const qd_expr **scratch = qd__malloc(ctx, nt * sizeof *scratch), **groups = qd__malloc(ctx, nb * sizeof *groups);
+    const qd_expr **bydeg = qd__malloc(ctx, 3 * nb * sizeof *bydeg);
     size_t nd[3] = {0, 0, 0};
     qd_status st = start && order && scratch && groups && bydeg ? QD_OK : QD_ERR_NOMEM;
     for (size_t i = 0; st == QD_OK && i < nt; i++)
@@ -154,11 +157,11 @@ static qd_status gather(qd_ctx *ctx, const vterm *terms, size_t nt, size_t nb, q
             v->deg[d] = qd_add_n(ctx, nd[d], bydeg + d * nb);
         st = v->all && v->deg[0] && v->deg[1] && v->deg[2] ? QD_OK : qd_ctx_status(ctx);
     }
-    free(start);
-    free(order);
-    free(scratch);
-    free(groups);
-    free(bydeg);
+    qd__free(start);
+    qd__free(order);
+    qd__free(scratch);
+    qd__free(groups);
+    qd__free(bydeg);
     return st;
 }
 
@@ -180,18 +183,18 @@ qd_status qd__by_velocity(qd_ctx *ctx, const qd_expr *x, size_t n, const qd_expr
     if (!x)
         return qd_ctx_status(ctx);
     size_t nt = qd_expr_kind(x) == QD_ADD ? qd_expr_nargs(x) : 1, mf = max_factors(x, nt);
-    vterm *terms = malloc(nt * sizeof *terms);
-    sorter s = {ctx, n, qd, malloc(mf * sizeof *s.mono), malloc(mf * sizeof *s.coef)};
+    vterm *terms = qd__malloc(ctx, nt * sizeof *terms);
+    sorter s = {ctx, n, qd, qd__malloc(ctx, mf * sizeof *s.mono), qd__malloc(ctx, mf * sizeof *s.coef)};
     qd_status st = terms && s.mono && s.coef ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = sort_terms(&s, x, nt, terms, v);
     bool ok = true;
-    size_t nb = st == QD_OK ? number_buckets(terms, nt, &ok) : 0;
+    size_t nb = st == QD_OK ? number_buckets(ctx, terms, nt, &ok) : 0;
     if (st == QD_OK)
         st = ok ? gather(ctx, terms, nt, nb, v) : QD_ERR_NOMEM;
-    free(terms);
-    free(s.mono);
-    free(s.coef);
+    qd__free(terms);
+    qd__free(s.mono);
+    qd__free(s.coef);
     return st;
 }
 
@@ -200,7 +203,7 @@ static void report_nonpoly(qd_ctx *ctx, const qd_expr *bad, size_t n, const qd_e
     for (size_t i = 0; i < n; i++)
         if (qd_has(bad, qd[i]))
             v = qd_expr_name(qd[i]);
-    qd_buf b = QD_BUF_INIT;
+    qd_buf b = QD_BUF_WITH(qd__ctx_allocator(ctx));
     qd_print(ctx, bad, QD_FMT_TEXT, &b);
     qd_ctx_error(ctx, QD_ERR_NONLINEAR,
                  "the kinetic energy is not a polynomial in the velocities: %s appears in %s", v,

@@ -18,6 +18,7 @@
  * Q_j = G . d(omega_space)/dq'_j (Desloge ch. 64 eqs. 18-20).
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -230,13 +231,13 @@ bool qd__mdl_stmt_body(parser *p) {
     m->T = m->T ? qd_add(C(p), m->T, T) : T;
     if (!m->T)
         return qd__mdl_perr(p, at.off, at.len, NULL, "%s", qd_ctx_message(C(p)));
-    char *name = malloc(at.len + 1), what[80];
+    char *name = qd__malloc(p->ctx, at.len + 1), what[80];
     if (name)
         snprintf(name, at.len + 1, "%.*s", (int)at.len, p->lx.src + at.off);
     b.name = name;
     snprintf(what, sizeof what, "body:%.70s", name ? name : "");
-    if (!name || !qd__mdl_push((void **)&m->bodies, &m->nbodies, sizeof b, &b)) {
-        free(name);
+    if (!name || !qd__mdl_push(m->ctx, (void **)&m->bodies, &m->nbodies, sizeof b, &b)) {
+        qd__free(name);
         return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     }
     if (!qd__mdl_add_where(m, what, at.off, at.len))
@@ -262,12 +263,12 @@ static const body *expect_body(parser *p, const char *what) {
     char word[64], hint[128];
     size_t n = p->lx.tok.len < 63 ? p->lx.tok.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + p->lx.tok.off);
-    const char **names = malloc((m->nbodies + 1) * sizeof *names);
+    const char **names = qd__malloc(p->ctx, (m->nbodies + 1) * sizeof *names);
     for (size_t i = 0; names && i < m->nbodies; i++)
         names[i] = m->bodies[i].name;
     const char *near = names ? qd__diag_nearest(word, n, names, m->nbodies) : NULL;
     snprintf(hint, sizeof hint, near ? "did you mean '%s'?" : "%s", near ? near : body_usage);
-    free(names);
+    qd__free(names);
     qd__mdl_perr_tok(p, hint, "'%s' is not a body", word);
     return NULL;
 }

@@ -7,6 +7,7 @@
  */
 #include "parser.h"
 #include "base/diag.h"
+#include "base/mem.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -109,7 +110,7 @@ const char **qd__mdl_known_names(const parser *p, size_t *count) {
     size_t nextra = sizeof extra / sizeof extra[0];
     size_t cap = 2 * m->ncoords + m->nparams + m->ndefs + m->nfuncs + QD_FUNC_COUNT + nextra + 1,
            n = 0;
-    const char **v = malloc(cap * sizeof *v);
+    const char **v = qd__malloc(p->ctx, cap * sizeof *v);
     if (!v) {
         *count = 0;
         return NULL;

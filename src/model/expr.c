@@ -19,6 +19,7 @@
  */
 #include "parser.h"
 #include "base/diag.h"
+#include "base/mem.h"
 
 #include <ctype.h>
 #include <stdio.h>
@@ -191,7 +192,7 @@ static bool unknown_name(parser *p, size_t off, size_t n, bool call) {
     else
         snprintf(hint, sizeof hint, "declare it under 'coordinates' or 'parameters', or define "
                  "it with '%s = ...'", name);
-    free(names);
+    qd__free(names);
     return qd__mdl_perr(p, off, n, hint, call ? "unknown function '%s'" : "unknown name '%s'", name);
 }
 

@@ -11,6 +11,7 @@
  * H and in `integral` (parser.momenta_ok), since elsewhere they mean nothing.
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,7 +38,7 @@ bool qd__mdl_stmt_momenta(parser *p) {
     if (m->ncoords == 0)
         return qd__mdl_perr(p, kw.off, kw.len, "declare the coordinates first: coordinates q1, q2",
                     "momenta before any coordinates");
-    const qd_expr **mom = calloc(m->ncoords, sizeof *mom);
+    const qd_expr **mom = qd__calloc(p->ctx, m->ncoords, sizeof *mom);
     if (!mom)
         return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     size_t n = 0;
@@ -82,7 +83,7 @@ bool qd__mdl_stmt_momenta(parser *p) {
                   n == 1 ? "um" : "a", m->ncoords);
     }
     if (!ok) {
-        free(mom);
+        qd__free(mom);
         return false;
     }
     m->mom = mom;

@@ -2,19 +2,20 @@
  * src/model/model.c - the parsed model: storage and accessors.
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-bool qd__mdl_push(void **arr, size_t *n, size_t size, const void *item) {
+bool qd__mdl_push(qd_ctx *ctx, void **arr, size_t *n, size_t size, const void *item) {
     /* grow by doubling; capacity is implied by n (powers of two) */
     size_t cap = 1;
     while (cap < *n)
         cap *= 2;
     if (*n == 0 || *n == cap) {
-        void *a = realloc(*arr, (*n ? 2 * cap : 4) * size);
+        void *a = qd__realloc(ctx, *arr, (*n ? 2 * cap : 4) * size);
         if (!a)
             return false;
         *arr = a;
@@ -32,13 +33,13 @@ const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n) {
 }
 
 bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len) {
-    char *copy = malloc(strlen(name) + 1);
+    char *copy = qd__malloc(m->ctx, strlen(name) + 1);
     if (!copy)
         return false;
     strcpy(copy, name);
     def d = {copy, v, off, len};
-    if (!qd__mdl_push((void **)&m->defs, &m->ndefs, sizeof d, &d)) {
-        free(copy);
+    if (!qd__mdl_push(m->ctx, (void **)&m->defs, &m->ndefs, sizeof d, &d)) {
+        qd__free(copy);
         return false;
     }
     return true;
@@ -50,7 +51,7 @@ bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len) {
     w.src = m->src;
     w.off = off;
     w.len = len;
-    return qd__mdl_push((void **)&m->wheres, &m->nwheres, sizeof w, &w);
+    return qd__mdl_push(m->ctx, (void **)&m->wheres, &m->nwheres, sizeof w, &w);
 }
 
 int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym) {
@@ -64,43 +65,43 @@ void qd_model_free(qd_model *m) {
     if (!m)
         return;
     for (size_t i = 0; i < m->ndefs; i++)
-        free((char *)m->defs[i].name);
+        qd__free((char *)m->defs[i].name);
     for (size_t i = 0; i < m->nfuncs; i++)
-        free((char *)m->funcs[i]);
+        qd__free((char *)m->funcs[i]);
     for (size_t i = 0; i < m->ncons; i++)
-        free((char *)m->con_names[i]);
+        qd__free((char *)m->con_names[i]);
     for (size_t i = 0; i < m->nbodies; i++)
-        free((char *)m->bodies[i].name);
-    free(m->bodies);
+        qd__free((char *)m->bodies[i].name);
+    qd__free(m->bodies);
     for (size_t i = 0; i < m->nreactions; i++)
-        free((char *)m->reactions[i].name);
-    free(m->reactions);
+        qd__free((char *)m->reactions[i].name);
+    qd__free(m->reactions);
     for (size_t i = 0; i < m->nsyms; i++) {
-        free((char *)m->syms[i].name);
-        free(m->syms[i].xi);
+        qd__free((char *)m->syms[i].name);
+        qd__free(m->syms[i].xi);
     }
-    free(m->syms);
+    qd__free(m->syms);
     for (size_t i = 0; i < m->nints; i++)
-        free((char *)m->ints[i].name);
-    free(m->ints);
-    free(m->mom);
-    free(m->con_names);
-    free(m->cons);
-    free(m->coords);
-    free(m->params);
-    free(m->pdefs);
-    free(m->pvals);
-    free(m->pfixed);
+        qd__free((char *)m->ints[i].name);
+    qd__free(m->ints);
+    qd__free(m->mom);
+    qd__free(m->con_names);
+    qd__free(m->cons);
+    qd__free(m->coords);
+    qd__free(m->params);
+    qd__free(m->pdefs);
+    qd__free(m->pvals);
+    qd__free(m->pfixed);
     for (size_t i = 0; i < m->nadded; i++)
-        free(m->added[i]);
-    free(m->added);
-    free(m->funcs);
-    free(m->defs);
-    free(m->Q);
-    free(m->init);
-    free(m->init_defs);
-    free(m->wheres);
-    free(m);
+        qd__free(m->added[i]);
+    qd__free(m->added);
+    qd__free(m->funcs);
+    qd__free(m->defs);
+    qd__free(m->Q);
+    qd__free(m->init);
+    qd__free(m->init_defs);
+    qd__free(m->wheres);
+    qd__free(m);
 }
 
 size_t qd_model_ncoords(const qd_model *m) { return m->ncoords; }
@@ -137,7 +138,7 @@ bool qd__mdl_eval_params(qd_model *m) {
 }
 
 qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name) {
-    const char **names = malloc((m->nparams + 1) * sizeof *names);
+    const char **names = qd__malloc(ctx, (m->nparams + 1) * sizeof *names);
     if (!names) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -149,7 +150,7 @@ qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'; did you mean '%s'?", name, near);
     else
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown parameter '%s'", name);
-    free(names);
+    qd__free(names);
     return QD_ERR_ARG;
 }
 

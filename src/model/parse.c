@@ -8,6 +8,7 @@
  * everything derived from the model sees both.
  */
 #include "parser.h"
+#include "base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -63,11 +64,11 @@ static bool check_given(parser *p, bool after) {
 
 qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
                               qd_diag *diag) {
-    qd_model *m = calloc(1, sizeof *m);
-    bool *used = opts && opts->nparams ? calloc(opts->nparams, sizeof *used) : NULL;
+    qd_model *m = qd__calloc(ctx, 1, sizeof *m);
+    bool *used = opts && opts->nparams ? qd__calloc(ctx, opts->nparams, sizeof *used) : NULL;
     if (!m || (opts && opts->nparams && !used)) {
-        free(m);
-        free(used);
+        qd__free(m);
+        qd__free(used);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return NULL;
     }
@@ -81,7 +82,7 @@ qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts
         qd__mdl_finish(&p);
     if (!p.failed)
         check_given(&p, true);
-    free(used);
+    qd__free(used);
     if (p.failed) {
         qd_model_free(m);
         return NULL;
@@ -106,7 +107,7 @@ typedef struct mark {
 static bool mark_take(const qd_model *m, mark *k) {
     size_t n = m->ncoords;
     k->m = *m;
-    k->percoord = malloc((5 * n + 1) * sizeof *k->percoord);
+    k->percoord = qd__mem_malloc(NULL, (5 * n + 1) * sizeof *k->percoord);
     if (!k->percoord)
         return false;
     memcpy(k->percoord, m->Q, n * sizeof *m->Q);
@@ -119,21 +120,21 @@ static bool mark_take(const qd_model *m, mark *k) {
 static void mark_restore(qd_model *m, const mark *k) {
     const qd_model *b = &k->m;
     for (size_t i = b->ndefs; i < m->ndefs; i++)
-        free((char *)m->defs[i].name);
+        qd__free((char *)m->defs[i].name);
     for (size_t i = b->nfuncs; i < m->nfuncs; i++)
-        free((char *)m->funcs[i]);
+        qd__free((char *)m->funcs[i]);
     for (size_t i = b->ncons; i < m->ncons; i++)
-        free((char *)m->con_names[i]);
+        qd__free((char *)m->con_names[i]);
     for (size_t i = b->nbodies; i < m->nbodies; i++)
-        free((char *)m->bodies[i].name);
+        qd__free((char *)m->bodies[i].name);
     for (size_t i = b->nreactions; i < m->nreactions; i++)
-        free((char *)m->reactions[i].name);
+        qd__free((char *)m->reactions[i].name);
     for (size_t i = b->nsyms; i < m->nsyms; i++) {
-        free((char *)m->syms[i].name);
-        free(m->syms[i].xi);
+        qd__free((char *)m->syms[i].name);
+        qd__free(m->syms[i].xi);
     }
     for (size_t i = b->nints; i < m->nints; i++)
-        free((char *)m->ints[i].name);
+        qd__free((char *)m->ints[i].name);
     m->nparams = b->nparams;
     m->nfuncs = b->nfuncs;
     m->ndefs = b->ndefs;
@@ -178,7 +179,7 @@ static bool shape_statement(parser *p) {
 
 static char *copy_text(const char *text) {
     size_t n = strlen(text);
-    char *c = malloc(n + 1);
+    char *c = qd__mem_malloc(NULL, n + 1);
     if (c)
         memcpy(c, text, n + 1);
     return c;
@@ -207,12 +208,12 @@ qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
     char *copy = copy_text(text);
     mark k;
     if (!copy || !mark_take(m, &k)) {
-        free(copy);
+        qd__free(copy);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
     }
     size_t nadded = m->nadded;
-    bool ok = qd__mdl_push((void **)&m->added, &nadded, sizeof copy, &copy);
+    bool ok = qd__mdl_push(m->ctx, (void **)&m->added, &nadded, sizeof copy, &copy);
     if (ok) {
         m->src = copy;
         parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, NULL, NULL, false};
@@ -227,9 +228,9 @@ qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
         m->nadded = nadded;
     else {
         mark_restore(m, &k);
-        free(copy);
+        qd__free(copy);
     }
-    free(k.percoord);
+    qd__free(k.percoord);
     if (ok)
         return QD_OK;
     if (qd_ctx_status(ctx) == QD_ERR_NOMEM)

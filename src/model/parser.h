@@ -215,7 +215,7 @@ const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n);
 bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len);
 bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len);
 int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym);
-bool qd__mdl_push(void **arr, size_t *n, size_t size, const void *item);
+bool qd__mdl_push(qd_ctx *ctx, void **arr, size_t *n, size_t size, const void *item);
 
 /* Is the name at src[off..off+n) equal to word? */
 bool qd__mdl_name_is(const char *src, size_t off, size_t n, const char *word);

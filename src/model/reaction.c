@@ -12,6 +12,7 @@
  * the constraint.
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -81,12 +82,12 @@ static void label(parser *p, char *name, size_t cap, token *at) {
 static bool add(parser *p, const char *name, size_t con, const value *r, token at) {
     qd_model *m = p->m;
     char what[80];
-    reaction x = {malloc(strlen(name) + 1), con, {r->c[0], r->c[1], r->c[2]}};
+    reaction x = {qd__malloc(p->ctx, strlen(name) + 1), con, {r->c[0], r->c[1], r->c[2]}};
     if (x.name)
         strcpy((char *)x.name, name);
     snprintf(what, sizeof what, "reaction:%s", name);
-    if (!x.name || !qd__mdl_push((void **)&m->reactions, &m->nreactions, sizeof x, &x)) {
-        free((char *)x.name);
+    if (!x.name || !qd__mdl_push(m->ctx, (void **)&m->reactions, &m->nreactions, sizeof x, &x)) {
+        qd__free((char *)x.name);
         return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     }
     if (!qd__mdl_add_where(m, what, at.off, at.len))

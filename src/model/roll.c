@@ -34,6 +34,7 @@
  * leans, 0 < theta < pi), and |rho| for a centre at r (sin q, cos q) is r.
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -300,17 +301,17 @@ static bool add_constraint(parser *p, const rolling *r, const char *name, E e) {
     qd_model *m = p->m;
     char what[96];
     snprintf(what, sizeof what, "constraint:%.80s", name);
-    char *copy = malloc(strlen(name) + 1);
+    char *copy = qd__malloc(p->ctx, strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
     size_t n = m->ncons;
-    if (!copy || !qd__mdl_push((void **)&m->con_names, &n, sizeof copy, &copy)) {
-        free(copy);
+    if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy)) {
+        qd__free(copy);
         return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
     }
-    if (!qd__mdl_push((void **)&m->cons, &m->ncons, sizeof e, &e)) {
+    if (!qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof e, &e)) {
         m->con_names[n - 1] = NULL;
-        free(copy);
+        qd__free(copy);
         return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
     }
     if (!qd__mdl_add_where(m, what, r->name.off, r->name.len))
@@ -517,13 +518,13 @@ static bool parse_body(parser *p, rolling *r) {
     size_t n = r->name.len < 63 ? r->name.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + r->name.off);
     if (!r->b) {
-        const char **names = malloc((m->nbodies + 1) * sizeof *names);
+        const char **names = qd__malloc(p->ctx, (m->nbodies + 1) * sizeof *names);
         for (size_t i = 0; names && i < m->nbodies; i++)
             names[i] = m->bodies[i].name;
         const char *near = names ? qd__diag_nearest(word, n, names, m->nbodies) : NULL;
         snprintf(hint, sizeof hint, near ? "did you mean '%s'?" : "%s",
                  near ? near : "declare it first: body NAME mass M inertia I at r orientation R");
-        free(names);
+        qd__free(names);
         return qd__mdl_perr_tok(p, hint, "'%s' is not a body", word);
     }
     if (is_zero_vec(C(p), r->b->ws))

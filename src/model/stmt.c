@@ -17,6 +17,7 @@
  *   symmetry [NAME:] ...   and   integral [NAME:] EXPR  (symmetry.c)
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -109,12 +110,12 @@ static bool stmt_coordinates(parser *p) {
         qd_model *m = p->m;
         const qd_expr *zero = qd_int(C(p), 0), *none = NULL;
         size_t n = m->ncoords, nq = m->ncoords, ni = 2 * m->ncoords, nd = 2 * m->ncoords;
-        if (!qd__mdl_push((void **)&m->coords, &n, sizeof q, &q) ||
-            !qd__mdl_push((void **)&m->Q, &nq, sizeof zero, &zero) ||
-            !qd__mdl_push((void **)&m->init, &ni, sizeof none, &none) ||
-            !qd__mdl_push((void **)&m->init, &ni, sizeof none, &none) ||
-            !qd__mdl_push((void **)&m->init_defs, &nd, sizeof none, &none) ||
-            !qd__mdl_push((void **)&m->init_defs, &nd, sizeof none, &none) ||
+        if (!qd__mdl_push(m->ctx, (void **)&m->coords, &n, sizeof q, &q) ||
+            !qd__mdl_push(m->ctx, (void **)&m->Q, &nq, sizeof zero, &zero) ||
+            !qd__mdl_push(m->ctx, (void **)&m->init, &ni, sizeof none, &none) ||
+            !qd__mdl_push(m->ctx, (void **)&m->init, &ni, sizeof none, &none) ||
+            !qd__mdl_push(m->ctx, (void **)&m->init_defs, &nd, sizeof none, &none) ||
+            !qd__mdl_push(m->ctx, (void **)&m->init_defs, &nd, sizeof none, &none) ||
             !qd__mdl_add_where(m, name, p->lx.tok.off, p->lx.tok.len))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         m->ncoords = n;
@@ -170,10 +171,10 @@ static bool push_param(parser *p, const qd_expr *sym, const qd_expr *def, const 
                        bool fixed) {
     qd_model *m = p->m;
     size_t n1 = m->nparams, n2 = m->nparams, n3 = m->nparams;
-    return qd__mdl_push((void **)&m->params, &n1, sizeof sym, &sym) &&
-           qd__mdl_push((void **)&m->pdefs, &n2, sizeof def, &def) &&
-           qd__mdl_push((void **)&m->pfixed, &n3, sizeof fixed, &fixed) &&
-           qd__mdl_push((void **)&m->pvals, &m->nparams, sizeof v, &v);
+    return qd__mdl_push(m->ctx, (void **)&m->params, &n1, sizeof sym, &sym) &&
+           qd__mdl_push(m->ctx, (void **)&m->pdefs, &n2, sizeof def, &def) &&
+           qd__mdl_push(m->ctx, (void **)&m->pfixed, &n3, sizeof fixed, &fixed) &&
+           qd__mdl_push(m->ctx, (void **)&m->pvals, &m->nparams, sizeof v, &v);
 }
 
 /* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */
@@ -246,9 +247,9 @@ static bool stmt_functions(parser *p) {
         qd_func f;
         if (qd_func_from_name(name, &f))
             return qd__mdl_perr_tok(p, NULL, "'%s' is a built-in function", name);
-        char *copy = malloc(strlen(name) + 1);
-        if (!copy || !qd__mdl_push((void **)&p->m->funcs, &p->m->nfuncs, sizeof copy, &copy)) {
-            free(copy);
+        char *copy = qd__malloc(p->ctx, strlen(name) + 1);
+        if (!copy || !qd__mdl_push(p->ctx, (void **)&p->m->funcs, &p->m->nfuncs, sizeof copy, &copy)) {
+            qd__free(copy);
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         }
         strcpy(copy, name);
@@ -318,13 +319,13 @@ static int coord_named(parser *p) {
 static bool no_such_coordinate(parser *p) {
     char name[128], hint[192] = "";
     tok_text(p, name, sizeof name);
-    const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
+    const char **names = qd__malloc(p->ctx, (p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
     const char *near = names ? qd__diag_nearest(name, strlen(name), names, p->m->ncoords) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
-    free(names);
+    qd__free(names);
     return qd__mdl_perr_tok(p, hint, "'%s' is not a coordinate", name);
 }
 
@@ -427,14 +428,14 @@ static bool stmt_constraint(parser *p) {
     if (qd_is_number(c))
         return qd__mdl_perr(p, off, p->lx.tok.off - off, "a constraint relates coordinates or velocities",
                     qd_is_zero(c) ? "this constraint always holds" : "this constraint can never hold");
-    char *copy = malloc(strlen(name) + 1);
+    char *copy = qd__malloc(p->ctx, strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
     size_t n = m->ncons;
-    if (!copy || !qd__mdl_push((void **)&m->con_names, &n, sizeof copy, &copy) ||
-        !qd__mdl_push((void **)&m->cons, &m->ncons, sizeof c, &c) ||
+    if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy) ||
+        !qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof c, &c) ||
         !add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1})) {
-        free(copy);
+        qd__free(copy);
         return qd__mdl_perr(p, off, 1, NULL, "out of memory");
     }
     return qd__mdl_end_of_statement(p);

@@ -13,6 +13,7 @@
  * proposals; checking them is the mechanics layer's job.
  */
 #include "parser.h"
+#include "../base/mem.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,8 +72,8 @@ static bool add_where(qd_model *m, const char *kind, const char *name, token at)
     return qd__mdl_add_where(m, what, at.off, at.len);
 }
 
-static char *copy_of(const char *s) {
-    char *c = malloc(strlen(s) + 1);
+static char *copy_of(qd_ctx *ctx, const char *s) {
+    char *c = qd__malloc(ctx, strlen(s) + 1);
     if (c)
         strcpy(c, s);
     return c;
@@ -101,14 +102,14 @@ static bool not_a_coordinate(parser *p) {
     if (t.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, "write: symmetry x -> x + eps, or symmetry delta x = 1",
                         "expected a coordinate, found %s", qd__lex_tk_name(t.kind));
-    const char **names = malloc((p->m->ncoords + 1) * sizeof *names);
+    const char **names = qd__malloc(p->ctx, (p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
     const char *near = names ? qd__diag_nearest(p->lx.src + t.off, t.len, names, p->m->ncoords) : NULL;
     char hint[160] = "a symmetry moves the coordinates";
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
-    free(names);
+    qd__free(names);
     return qd__mdl_perr_tok(p, hint, "'%.*s' is not a coordinate", (int)(t.len < 64 ? t.len : 64),
                     p->lx.src + t.off);
 }
@@ -219,7 +220,7 @@ bool qd__mdl_stmt_symmetry(parser *p) {
     p->lx = save;
     if (finite && !eps_free(p, kw))
         return false;
-    const qd_expr **xi = calloc(m->ncoords, sizeof *xi);
+    const qd_expr **xi = qd__calloc(p->ctx, m->ncoords, sizeof *xi);
     if (!xi)
         return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     bool ok = true;
@@ -239,14 +240,14 @@ bool qd__mdl_stmt_symmetry(parser *p) {
                                             : "give a field that is not zero: delta x = 1",
                   "this symmetry moves nothing");
     symmetry s = {NULL, xi};
-    if (ok && !(s.name = copy_of(name)))
+    if (ok && !(s.name = copy_of(p->ctx, name)))
         ok = qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
-    if (ok && !qd__mdl_push((void **)&m->syms, &m->nsyms, sizeof s, &s)) {
-        free((char *)s.name);
+    if (ok && !qd__mdl_push(m->ctx, (void **)&m->syms, &m->nsyms, sizeof s, &s)) {
+        qd__free((char *)s.name);
         ok = qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     }
     if (!ok) {
-        free(xi);
+        qd__free(xi);
         return false;
     }
     if (!add_where(m, "symmetry", name, lab.kind == TK_IDENT ? lab : first))
@@ -277,9 +278,9 @@ bool qd__mdl_stmt_integral(parser *p) {
     if (qd_is_number(I))
         return qd__mdl_perr(p, off, len, "propose a function of the coordinates and velocities",
                     "this integral is a constant");
-    integral in = {copy_of(name), I};
-    if (!in.name || !qd__mdl_push((void **)&m->ints, &m->nints, sizeof in, &in)) {
-        free((char *)in.name);
+    integral in = {copy_of(p->ctx, name), I};
+    if (!in.name || !qd__mdl_push(m->ctx, (void **)&m->ints, &m->nints, sizeof in, &in)) {
+        qd__free((char *)in.name);
         return qd__mdl_perr(p, kw.off, kw.len, NULL, "out of memory");
     }
     if (!add_where(m, "integral", name, lab.kind == TK_IDENT ? lab : (token){TK_EOF, off, len}))

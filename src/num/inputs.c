@@ -8,15 +8,18 @@
 
 #include "base/ptrmap.h"
 #include "qdot/expr.h"
+#include "base/mem.h"
 
 #include <stdlib.h>
 
 static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const qd_expr ***all,
                          size_t *len, size_t *cap) {
     size_t k = qd_free_symbols(ctx, x, NULL, 0);
-    const qd_expr **syms = malloc((k ? k : 1) * sizeof *syms);
-    if (!syms)
+    const qd_expr **syms = qd__malloc(ctx, (k ? k : 1) * sizeof *syms);
+    if (!syms || qd_ctx_status(ctx) == QD_ERR_NOMEM) { /* 0 symbols may mean out of memory */
+        qd__free(syms);
         return false;
+    }
     qd_free_symbols(ctx, x, syms, k);
     bool ok = true;
     for (size_t i = 0; ok && i < k; i++) {
@@ -24,7 +27,7 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
             continue;
         if (*len == *cap) {
             *cap = *cap ? 2 * *cap : 16;
-            const qd_expr **grown = realloc(*all, *cap * sizeof *grown);
+            const qd_expr **grown = qd__realloc(ctx, *all, *cap * sizeof *grown);
             ok = grown != NULL;
             *all = grown ? grown : *all;
         }
@@ -32,12 +35,12 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
         if (ok)
             (*all)[(*len)++] = syms[i];
     }
-    free(syms);
+    qd__free(syms);
     return ok;
 }
 
 const qd_expr **qd__num_inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin) {
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr **all = NULL;
     size_t len = 0, cap = 0;
     bool ok = true;
@@ -45,9 +48,9 @@ const qd_expr **qd__num_inputs(qd_ctx *ctx, size_t n, const qd_expr *const *expr
         ok = push_symbols(ctx, exprs[i], &seen, &all, &len, &cap);
     qd_ptrmap_free(&seen);
     if (ok && !all)
-        all = malloc(sizeof *all);
+        all = qd__malloc(ctx, sizeof *all);
     if (!ok || !all) {
-        free(all);
+        qd__free(all);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory compiling the equations of motion");
         return NULL;
     }

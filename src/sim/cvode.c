@@ -6,6 +6,7 @@
  * into the context instead of being printed.
  */
 #include "simint.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -62,12 +63,12 @@ static void bdf_free(qd__integ *it) {
         N_VDestroy(b->tmp);
     if (b->sctx)
         SUNContext_Free(&b->sctx);
-    free(b);
+    qd__free(b);
     it->priv = NULL;
 }
 
 static qd_status bdf_init(qd__integ *it) {
-    bdf *b = calloc(1, sizeof *b);
+    bdf *b = qd__calloc(it->s->ctx, 1, sizeof *b);
     if (!b)
         return QD_ERR_NOMEM;
     it->priv = b;

@@ -8,6 +8,7 @@
  * smooth and rejections rare.
  */
 #include "simint.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -71,16 +72,16 @@ static qd_status initial_step(qd__integ *it, erk *r) {
 
 qd_status qd__erk_init(qd__integ *it, const qd__erk *tab) {
     size_t d = it->dim, rows = (size_t)(tab->s + 1 + tab->nextra);
-    erk *r = calloc(1, sizeof *r);
+    erk *r = qd__calloc(it->s->ctx, 1, sizeof *r);
     if (!r)
         return QD_ERR_NOMEM;
     it->priv = r;
     r->tab = tab;
     r->facold = 1e-4;
-    r->K = calloc(2 * rows, sizeof *r->K);
-    double *mem = malloc((2 * rows * d + 2 * d + (size_t)tab->ndense * d + 1) * sizeof *mem);
+    r->K = qd__calloc(it->s->ctx, 2 * rows, sizeof *r->K);
+    double *mem = qd__malloc(it->s->ctx, (2 * rows * d + 2 * d + (size_t)tab->ndense * d + 1) * sizeof *mem);
     if (!r->K || !mem) {
-        free(mem);
+        qd__free(mem);
         return QD_ERR_NOMEM;
     }
     r->mem = mem;
@@ -101,9 +102,9 @@ void qd__erk_free(qd__integ *it) {
     erk *r = it->priv;
     if (!r)
         return;
-    free(r->mem);
-    free(r->K);
-    free(r);
+    qd__free(r->mem);
+    qd__free(r->K);
+    qd__free(r);
     it->priv = NULL;
 }
 

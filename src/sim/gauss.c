@@ -11,6 +11,7 @@
  * sec. VIII.5).
  */
 #include "simint.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -44,11 +45,11 @@ static const gl_tab gl3 = {3, {0.5 - R15 / 10, 0.5, 0.5 + R15 / 10},
 
 static qd_status init_tab(qd__integ *it, const gl_tab *tab) {
     size_t d = it->dim, s = (size_t)tab->s;
-    gl *g = calloc(1, sizeof *g);
-    double *mem = malloc((4 * s * d + 2 * d + 1) * sizeof *mem);
+    gl *g = qd__calloc(it->s->ctx, 1, sizeof *g);
+    double *mem = qd__malloc(it->s->ctx, (4 * s * d + 2 * d + 1) * sizeof *mem);
     if (!g || !mem) {
-        free(g);
-        free(mem);
+        qd__free(g);
+        qd__free(mem);
         return QD_ERR_NOMEM;
     }
     g->tab = tab;
@@ -66,8 +67,8 @@ static qd_status init_tab(qd__integ *it, const gl_tab *tab) {
 static void gl_free(qd__integ *it) {
     gl *g = it->priv;
     if (g)
-        free(g->Z);
-    free(g);
+        qd__free(g->Z);
+    qd__free(g);
     it->priv = NULL;
 }
 

@@ -17,13 +17,14 @@
 #include <string.h>
 
 #include "num/num.h"
+#include "base/mem.h"
 
 static qd_status inputs(qd_sim *s) {
     size_t n = s->n;
     s->np = qd_model_nparams(s->model);
     s->nin = 2 * n + 1 + s->np;
-    s->in_syms = malloc(s->nin * sizeof *s->in_syms);
-    s->par = calloc(s->np + 1, sizeof *s->par);
+    s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);
+    s->par = qd__calloc(s->ctx, s->np + 1, sizeof *s->par);
     if (!s->in_syms || !s->par)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
@@ -61,7 +62,7 @@ static qd_status equations(qd_sim *s, const qd_expr **v, const qd_expr **F, cons
     const qd_expr *H = qd_model_hamiltonian(s->model), *t = qd_time(ctx);
     const qd_expr *D = qd_model_dissipation(s->model);
     const qd_expr *const *q = s->in_syms, *const *p = s->in_syms + n;
-    const qd_expr **qd = malloc((n + 1) * sizeof *qd);
+    const qd_expr **qd = qd__malloc(ctx, (n + 1) * sizeof *qd);
     if (!qd)
         return QD_ERR_NOMEM;
     bool forces = false;
@@ -82,10 +83,10 @@ static qd_status equations(qd_sim *s, const qd_expr **v, const qd_expr **F, cons
         s->separable = s->separable && F[j] && v[j] && !has_any(F[j], n, p) &&
                        !has_any(v[j], n, q) && !qd_has(F[j], t);
     }
-    free(qd);
+    qd__free(qd);
     s->h_expr = H;
     s->T_expr = qd_int(ctx, 0);
-    s->b_expr = calloc(n + 1, sizeof *s->b_expr);
+    s->b_expr = qd__calloc(ctx, n + 1, sizeof *s->b_expr);
     if (!s->b_expr)
         return QD_ERR_NOMEM;
     memcpy(s->b_expr, v, n * sizeof *v); /* q' = dH/dp, for the outputs */
@@ -95,7 +96,7 @@ static qd_status equations(qd_sim *s, const qd_expr **v, const qd_expr **F, cons
 
 static qd_status compile(qd_sim *s) {
     size_t n = s->n;
-    const qd_expr **x = calloc(2 * n + n * n + 1, sizeof *x);
+    const qd_expr **x = qd__calloc(s->ctx, 2 * n + n * n + 1, sizeof *x);
     if (!x)
         return QD_ERR_NOMEM;
     const qd_expr **v = x, **F = x + n, **J = x + 2 * n;
@@ -108,18 +109,18 @@ static qd_status compile(qd_sim *s) {
     memmove(x + n, J, n * n * sizeof *x);
     if (s->force)
         s->acc = qd__sim_prog(s, n + n * n, x, &s->acc_n);
-    free(x);
+    qd__free(x);
     return st == QD_OK && s->acc ? QD_OK : qd_ctx_status(s->ctx);
 }
 
 void qd__hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x) {
-    const qd_expr **qd = malloc((s->n + 1) * sizeof *qd);
+    const qd_expr **qd = qd__malloc(s->ctx, (s->n + 1) * sizeof *qd);
     for (size_t j = 0; qd && j < s->n; j++)
         qd[j] = qd_jet(s->ctx, s->in_syms[j], 1);
     /* out of memory: the velocities stay, and compiling names them */
     for (size_t i = 0; qd && i < n; i++)
         x[i] = qd_subs(s->ctx, x[i], s->n, qd, s->b_expr);
-    free(qd);
+    qd__free(qd);
 }
 
 qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m) {
@@ -132,7 +133,7 @@ qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m) {
                      "constraints on a model given by H are not simulated: give T and V");
         return NULL;
     }
-    qd_sim *s = calloc(1, sizeof *s);
+    qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
     if (!s) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return NULL;

@@ -4,6 +4,7 @@
  * measures every method reports.
  */
 #include "simint.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -196,17 +197,17 @@ static qd_status check_system(const qd_sim *s, const qd_sim_opts *o) {
 static void run_free(qd__run *r, qd__integ *it) {
     if (it->ops && it->priv)
         it->ops->free(it);
-    free(it->y);
-    free(r->row);
-    free(r->ev_hit);
+    qd__free(it->y);
+    qd__free(r->row);
+    qd__free(r->ev_hit);
 }
 
 static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     qd_sim *s = r->s;
     size_t d = it->dim, ne = s->nev;
-    it->y = malloc((2 * d + 1) * sizeof *it->y);
-    r->row = malloc((2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
-    r->ev_hit = calloc(2 * ne + 1, sizeof *r->ev_hit);
+    it->y = qd__malloc(s->ctx, (2 * d + 1) * sizeof *it->y);
+    r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
+    r->ev_hit = qd__calloc(s->ctx, 2 * ne + 1, sizeof *r->ev_hit);
     if (!it->y || !r->row || !r->ev_hit)
         return QD_ERR_NOMEM;
     it->yold = it->y + d;

@@ -10,6 +10,7 @@
  * half kick of one substep and the first of the next use the same F.
  */
 #include "simint.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -55,11 +56,11 @@ static qd_status init_w(qd__integ *it, const double *w, size_t nw) {
         return QD_ERR_ARG;
     }
     size_t n = s->n;
-    split *sp = calloc(1, sizeof *sp);
-    double *mem = malloc((3 * n + 1) * sizeof *mem);
+    split *sp = qd__calloc(s->ctx, 1, sizeof *sp);
+    double *mem = qd__malloc(s->ctx, (3 * n + 1) * sizeof *mem);
     if (!sp || !mem) {
-        free(sp);
-        free(mem);
+        qd__free(sp);
+        qd__free(mem);
         return QD_ERR_NOMEM;
     }
     sp->w = w;
@@ -74,8 +75,8 @@ static qd_status init_w(qd__integ *it, const double *w, size_t nw) {
 static void split_free(qd__integ *it) {
     split *sp = it->priv;
     if (sp)
-        free(sp->F);
-    free(sp);
+        qd__free(sp->F);
+    qd__free(sp);
     it->priv = NULL;
 }
 

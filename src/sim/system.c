@@ -18,6 +18,7 @@
 
 #include "codegen/angles.h"
 #include "num/num.h"
+#include "base/mem.h"
 
 static double param_value(qd_ctx *ctx, const qd_expr *v) {
     long p, q;
@@ -31,9 +32,9 @@ static double param_value(qd_ctx *ctx, const qd_expr *v) {
     return x;
 }
 
-static char *dup_printf(const char *a, const char *b, const char *c) {
+static char *dup_printf(qd_ctx *ctx, const char *a, const char *b, const char *c) {
     size_t len = strlen(a) + strlen(b) + strlen(c) + 1;
-    char *s = malloc(len);
+    char *s = qd__malloc(ctx, len);
     if (s)
         snprintf(s, len, "%s%s%s", a, b, c);
     return s;
@@ -51,14 +52,14 @@ static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
  * pendulum chain's cos(theta_j - theta_k): see src/codegen/angles.c), the
  * rewrite the generated C uses, so both paths compute the same formulas. */
 qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count) {
-    const qd_expr **x = malloc((nout + 1) * sizeof *x);
+    const qd_expr **x = qd__malloc(s->ctx, (nout + 1) * sizeof *x);
     bool applied;
     qd_prog *p = NULL;
     if (x) {
         memcpy(x, outs, nout * sizeof *x);
         if (qd__cg_angle_sums(s->ctx, nout, x, &applied) == QD_OK)
             p = qd_prog_new(s->ctx, s->nin, s->in_syms, nout, x);
-        free(x);
+        qd__free(x);
     } else {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
     }
@@ -71,8 +72,8 @@ static qd_status setup_inputs(qd_sim *s) {
     size_t n = s->n;
     s->np = qd_model_nparams(s->model);
     s->nin = 2 * n + 1 + s->np + s->m;
-    s->in_syms = malloc(s->nin * sizeof *s->in_syms);
-    s->par = calloc(s->np + 1, sizeof *s->par);
+    s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);
+    s->par = qd__calloc(s->ctx, s->np + 1, sizeof *s->par);
     if (!s->in_syms || !s->par)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
@@ -97,7 +98,7 @@ static qd_status setup_inputs(qd_sim *s) {
 static qd_status compile_acc(qd_sim *s) {
     const qd_eom *e = s->e;
     size_t n = s->n, m = s->m, k = 0;
-    const qd_expr **outs = malloc((n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(s->ctx, (n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n * n; i++)
@@ -118,7 +119,7 @@ static qd_status compile_acc(qd_sim *s) {
         outs[k++] = e->con[i].expr;
     if (s->acc && m)
         s->con = qd__sim_prog(s, k, outs, &s->con_n);
-    free(outs);
+    qd__free(outs);
     return s->acc && (!m || s->con) ? QD_OK : qd_ctx_status(s->ctx);
 }
 
@@ -135,11 +136,11 @@ static qd_status analyse(qd_sim *s) {
     const qd_eom *e = s->e;
     size_t n = s->n;
     const qd_expr *L = e->L, *D = qd_model_dissipation(s->model), *t = qd_time(ctx);
-    const qd_expr **zeros = malloc((n + 1) * sizeof *zeros);
-    s->b_expr = calloc(n + 1, sizeof *s->b_expr);
-    s->force_expr = calloc(n + 1, sizeof *s->force_expr);
+    const qd_expr **zeros = qd__malloc(ctx, (n + 1) * sizeof *zeros);
+    s->b_expr = qd__calloc(ctx, n + 1, sizeof *s->b_expr);
+    s->force_expr = qd__calloc(ctx, n + 1, sizeof *s->force_expr);
     if (!zeros || !s->b_expr || !s->force_expr) {
-        free(zeros);
+        qd__free(zeros);
         return QD_ERR_NOMEM;
     }
     for (size_t j = 0; j < n; j++)
@@ -174,7 +175,7 @@ static qd_status analyse(qd_sim *s) {
     s->has_T = e->T2 != NULL;
     s->T_expr = s->has_T ? qd_add(ctx, qd_add(ctx, e->T2, e->T1), e->T0) : qd_int(ctx, 0);
     s->conservative = !qd_has(L, t) && !forces && !(D && !qd_is_zero(D));
-    free(zeros);
+    qd__free(zeros);
     return qd_ctx_status(ctx) == QD_OK && s->h_expr ? QD_OK : qd_ctx_status(ctx);
 }
 
@@ -182,7 +183,7 @@ static qd_status compile_canonical(qd_sim *s) {
     size_t n = s->n;
     if (!s->canonical)
         return QD_OK;
-    const qd_expr **outs = malloc((n * n + n) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(s->ctx, (n * n + n) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n * n; i++)
@@ -190,7 +191,7 @@ static qd_status compile_canonical(qd_sim *s) {
     for (size_t i = 0; i < n; i++)
         outs[n * n + i] = s->b_expr[i];
     s->mom = qd__sim_prog(s, n * n + n, outs, &s->mom_n);
-    free(outs);
+    qd__free(outs);
     if (s->mom)
         s->force = qd__sim_prog(s, n, s->force_expr, &s->force_n);
     return s->mom && s->force ? QD_OK : qd_ctx_status(s->ctx);
@@ -204,27 +205,27 @@ static const qd_expr *coord(const qd_sim *s, size_t j) {
 
 static char *momentum_name(const qd_sim *s, size_t j) {
     if (s->hamilton)
-        return dup_printf(qd_expr_name(qd_model_momentum(s->model, j)), "", "");
-    return dup_printf("p_", qd_expr_name(coord(s, j)), "");
+        return dup_printf(s->ctx, qd_expr_name(qd_model_momentum(s->model, j)), "", "");
+    return dup_printf(s->ctx, "p_", qd_expr_name(coord(s, j)), "");
 }
 
 qd_status qd__sim_names(qd_sim *s) {
     size_t n = s->n, k = 0;
-    s->names = calloc(3 * n + 2 + s->m, sizeof *s->names);
-    s->holonomic = calloc(s->m + 1, sizeof *s->holonomic);
-    s->con_err_last = calloc(s->m + 1, sizeof *s->con_err_last);
+    s->names = qd__calloc(s->ctx, 3 * n + 2 + s->m, sizeof *s->names);
+    s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
+    s->con_err_last = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err_last);
     if (!s->names || !s->holonomic || !s->con_err_last)
         return QD_ERR_NOMEM;
-    s->names[k++] = dup_printf("t", "", "");
+    s->names[k++] = dup_printf(s->ctx, "t", "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(coord(s, j)), "", "");
+        s->names[k++] = dup_printf(s->ctx, qd_expr_name(coord(s, j)), "", "");
     for (size_t j = 0; j < n; j++)
-        s->names[k++] = dup_printf(qd_expr_name(coord(s, j)), "'", "");
+        s->names[k++] = dup_printf(s->ctx, qd_expr_name(coord(s, j)), "'", "");
     for (size_t j = 0; j < n; j++)
         s->names[k++] = momentum_name(s, j);
-    s->names[k++] = dup_printf("energy", "", "");
+    s->names[k++] = dup_printf(s->ctx, "energy", "", "");
     for (size_t c = 0; c < s->m; c++) {
-        s->names[k++] = dup_printf("res_", s->e->con[c].name, "");
+        s->names[k++] = dup_printf(s->ctx, "res_", s->e->con[c].name, "");
         s->holonomic[c] = s->e->con[c].kind == QD_CON_HOLONOMIC;
     }
     for (size_t i = 0; i < k; i++)
@@ -239,7 +240,7 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
                                       "coordinates");
         return NULL;
     }
-    qd_sim *s = calloc(1, sizeof *s);
+    qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
     if (!s) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return NULL;
@@ -266,29 +267,29 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
 void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
-    free(s->con_err_last);
+    qd__free(s->con_err_last);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);
     qd_prog_free(s->force);
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
-    free(s->in_syms);
-    free(s->par);
-    free(s->b_expr);
-    free(s->force_expr);
-    free(s->holonomic);
+    qd__free(s->in_syms);
+    qd__free(s->par);
+    qd__free(s->b_expr);
+    qd__free(s->force_expr);
+    qd__free(s->holonomic);
     for (size_t i = 0; s->names && i < 3 * s->n + 2 + s->m; i++)
-        free(s->names[i]);
-    free(s->names);
+        qd__free(s->names[i]);
+    qd__free(s->names);
     for (size_t i = 0; i < s->nout; i++)
-        free(s->out_name[i]);
-    free(s->out_name);
-    free(s->out_expr);
-    free(s->ev_expr);
-    free(s->guard_expr);
-    free(s->ev);
-    free(s);
+        qd__free(s->out_name[i]);
+    qd__free(s->out_name);
+    qd__free(s->out_expr);
+    qd__free(s->ev_expr);
+    qd__free(s->guard_expr);
+    qd__free(s->ev);
+    qd__free(s);
 }
 
 size_t qd_sim_ndof(const qd_sim *s) { return s->n; }
@@ -306,13 +307,13 @@ qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step) {
 
 /* ---- outputs and events ---------------------------------------------------- */
 
-static bool grow(void **p, size_t *cap, size_t need, size_t size) {
+static bool grow(qd_ctx *ctx, void **p, size_t *cap, size_t need, size_t size) {
     if (need <= *cap)
         return true;
     size_t c = *cap ? 2 * *cap : 8;
     while (c < need)
         c *= 2;
-    void *q = realloc(*p, c * size);
+    void *q = qd__realloc(ctx, *p, c * size);
     if (!q)
         return false;
     *p = q;
@@ -326,11 +327,11 @@ qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x) {
         return QD_ERR_ARG;
     }
     size_t cap = s->cap_out;
-    bool ok = grow((void **)&s->out_expr, &cap, s->nout + 1, sizeof *s->out_expr);
+    bool ok = grow(s->ctx, (void **)&s->out_expr, &cap, s->nout + 1, sizeof *s->out_expr);
     cap = s->cap_out;
-    ok = ok && grow((void **)&s->out_name, &cap, s->nout + 1, sizeof *s->out_name);
+    ok = ok && grow(s->ctx, (void **)&s->out_name, &cap, s->nout + 1, sizeof *s->out_name);
     s->cap_out = ok ? cap : s->cap_out;
-    char *copy = ok ? dup_printf(name, "", "") : NULL;
+    char *copy = ok ? dup_printf(s->ctx, name, "", "") : NULL;
     if (!copy) {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
         return QD_ERR_NOMEM;
@@ -347,11 +348,11 @@ qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
         return QD_ERR_ARG;
     }
     size_t cap = s->cap_ev;
-    bool ok = grow((void **)&s->ev_expr, &cap, s->nev + 1, sizeof *s->ev_expr);
+    bool ok = grow(s->ctx, (void **)&s->ev_expr, &cap, s->nev + 1, sizeof *s->ev_expr);
     cap = s->cap_ev;
-    ok = ok && grow((void **)&s->ev, &cap, s->nev + 1, sizeof *s->ev);
+    ok = ok && grow(s->ctx, (void **)&s->ev, &cap, s->nev + 1, sizeof *s->ev);
     s->cap_ev = ok ? cap : s->cap_ev;
-    ok = ok && grow((void **)&s->guard_expr, &s->cap_guard, s->nguard + nguard + 1,
+    ok = ok && grow(s->ctx, (void **)&s->guard_expr, &s->cap_guard, s->nguard + nguard + 1,
                     sizeof *s->guard_expr);
     if (!ok) {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
@@ -371,7 +372,7 @@ qd_status qd__aux_compile(qd_sim *s) {
     qd_prog_free(s->en);
     s->aux = s->en = NULL;
     size_t total = qd__aux_guard(s) + s->nguard, k = 0;
-    const qd_expr **outs = malloc((total + 1) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(s->ctx, (total + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
     outs[k++] = s->h_expr;
@@ -395,7 +396,7 @@ qd_status qd__aux_compile(qd_sim *s) {
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
         s->en = qd__sim_prog(s, 2, outs, &s->en_n);
-    free(outs);
+    qd__free(outs);
     s->aux_ready = s->aux != NULL && (k == 2 + s->m || s->en != NULL);
     return s->aux_ready ? QD_OK : qd_ctx_status(s->ctx);
 }
@@ -408,12 +409,12 @@ bool qd_sim_compiled(const qd_sim *s) { return s->aux_ready; }
 
 /* One program's output buffer and workspace; *out and *work NULL when the
  * program is (the missing programs of a system without them). */
-static bool prog_ws(const qd_prog *p, size_t nout, double **out, double **work) {
+static bool prog_ws(qd_ctx *ctx, const qd_prog *p, size_t nout, double **out, double **work) {
     *out = *work = NULL;
     if (!p)
         return true;
-    *out = malloc((nout + 1) * sizeof **out);
-    *work = malloc(qd_prog_work_size(p) * sizeof **work);
+    *out = qd__malloc(ctx, (nout + 1) * sizeof **out);
+    *work = qd__malloc(ctx, qd_prog_work_size(p) * sizeof **work);
     if (*work)
         qd_prog_work_init(p, *work);
     return *out && *work;
@@ -422,16 +423,16 @@ static bool prog_ws(const qd_prog *p, size_t nout, double **out, double **work) 
 qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     size_t n = w->n, N = n + w->m;
     w->ctx = ctx;
-    w->in = calloc(w->nin + 1, sizeof *w->in);
-    w->K = malloc((N * N + 2 * N + 4 * n + 1) * sizeof *w->K);
-    w->pc = malloc((N + 1) * sizeof *w->pc);
-    w->con_err = calloc(w->m + 1, sizeof *w->con_err);
-    bool ok = prog_ws(w->acc, w->acc_n, &w->acc_out, &w->acc_w);
-    ok = prog_ws(w->con, w->con_n, &w->con_out, &w->con_w) && ok;
-    ok = prog_ws(w->mom, w->mom_n, &w->mom_out, &w->mom_w) && ok;
-    ok = prog_ws(w->force, w->force_n, &w->force_out, &w->force_w) && ok;
-    ok = prog_ws(w->aux, w->aux_n, &w->aux_out, &w->aux_w) && ok;
-    ok = prog_ws(w->en, w->en_n, &w->en_out, &w->en_w) && ok;
+    w->in = qd__calloc(ctx, w->nin + 1, sizeof *w->in);
+    w->K = qd__malloc(ctx, (N * N + 2 * N + 4 * n + 1) * sizeof *w->K);
+    w->pc = qd__malloc(ctx, (N + 1) * sizeof *w->pc);
+    w->con_err = qd__calloc(ctx, w->m + 1, sizeof *w->con_err);
+    bool ok = prog_ws(ctx, w->acc, w->acc_n, &w->acc_out, &w->acc_w);
+    ok = prog_ws(ctx, w->con, w->con_n, &w->con_out, &w->con_w) && ok;
+    ok = prog_ws(ctx, w->mom, w->mom_n, &w->mom_out, &w->mom_w) && ok;
+    ok = prog_ws(ctx, w->force, w->force_n, &w->force_out, &w->force_w) && ok;
+    ok = prog_ws(ctx, w->aux, w->aux_n, &w->aux_out, &w->aux_w) && ok;
+    ok = prog_ws(ctx, w->en, w->en_n, &w->en_out, &w->en_w) && ok;
     if (!ok || !w->in || !w->K || !w->pc || !w->con_err)
         return QD_ERR_NOMEM;
     w->rhs = w->K + N * N;
@@ -447,8 +448,8 @@ void qd__sim_ws_free(qd_sim *w) {
                       w->mom_out, w->mom_w, w->force_out, w->force_w, w->aux_out, w->aux_w,
                       w->en_out, w->en_w};
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
-        free(bufs[i]);
-    free(w->pc);
+        qd__free(bufs[i]);
+    qd__free(w->pc);
 }
 
 size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap) {

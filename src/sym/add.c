@@ -68,10 +68,10 @@ static const qd_expr *with_coeff(qd_ctx *ctx, const term *t, const qd_expr *c) {
     return qd__mul_raw(ctx, c, n, key);
 }
 
-static bool push(term **v, size_t *n, size_t *cap, const qd_expr *node, const qd_expr *coeff) {
+static bool push(qd_ctx *ctx, term **v, size_t *n, size_t *cap, const qd_expr *node, const qd_expr *coeff) {
     if (*n == *cap) {
         size_t c = *cap ? *cap * 2 : 16;
-        term *nv = realloc(*v, c * sizeof *nv);
+        term *nv = qd__realloc(ctx, *v, c * sizeof *nv);
         if (!nv)
             return false;
         *v = nv;
@@ -94,7 +94,7 @@ static size_t sorted_prefix(const term *v, size_t n) {
 /* Put v in order.  Adding a term to a long sum is the common case (sums are
  * built one term at a time): that is two sorted runs, merged in linear time
  * instead of sorted again. */
-static bool sort_terms(term *v, size_t n) {
+static bool sort_terms(qd_ctx *ctx, term *v, size_t n) {
     size_t k = sorted_prefix(v, n);
     if (k == n)
         return true;
@@ -102,7 +102,7 @@ static bool sort_terms(term *v, size_t n) {
         qsort(v, n, sizeof *v, term_cmp);
         return true;
     }
-    term *tmp = malloc(n * sizeof *tmp);
+    term *tmp = qd__malloc(ctx, n * sizeof *tmp);
     if (!tmp)
         return false;
     size_t i = 0, j = k, m = 0;
@@ -113,7 +113,7 @@ static bool sort_terms(term *v, size_t n) {
     while (j < n)
         tmp[m++] = v[j++];
     memcpy(v, tmp, n * sizeof *v);
-    free(tmp);
+    qd__free(tmp);
     return true;
 }
 
@@ -145,27 +145,27 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
                 j0 = 1;
             }
             for (size_t j = j0; j < x->nargs && ok; j++)
-                ok = push(&v, &len, &cap, x->args[j], qd__term_coeff(ctx, x->args[j], NULL, NULL));
+                ok = push(ctx, &v, &len, &cap, x->args[j], qd__term_coeff(ctx, x->args[j], NULL, NULL));
         } else {
-            ok = push(&v, &len, &cap, x, qd__term_coeff(ctx, x, NULL, NULL));
+            ok = push(ctx, &v, &len, &cap, x, qd__term_coeff(ctx, x, NULL, NULL));
         }
     }
     if (!ok) {
-        free(v);
+        qd__free(v);
         if (ctx->status == QD_OK)
             qd__oom(ctx);
         return NULL;
     }
-    if (!sort_terms(v, len)) {
-        free(v);
+    if (!sort_terms(ctx, v, len)) {
+        qd__free(v);
         qd__oom(ctx);
         return NULL;
     }
 
     /* Merge runs of one key, rebuild, drop zeros; write in place. */
-    const qd_expr **out = malloc((len + 1) * sizeof *out);
+    const qd_expr **out = qd__malloc(ctx, (len + 1) * sizeof *out);
     if (!out) {
-        free(v);
+        qd__free(v);
         qd__oom(ctx);
         return NULL;
     }
@@ -197,8 +197,8 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
             r = qd__intern(ctx, &proto, m, out);
         }
     }
-    free(out);
-    free(v);
+    qd__free(out);
+    qd__free(v);
     return r;
 }
 

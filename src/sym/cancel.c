@@ -85,7 +85,7 @@ static bool collect(cc *c, const qd_expr *e) {
         return true;
     if (c->ngens == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 16;
-        const qd_expr **v = realloc(c->gens, cap * sizeof *v);
+        const qd_expr **v = qd__realloc(c->ctx, c->gens, cap * sizeof *v);
         if (!v)
             return false;
         c->gens = v;
@@ -214,9 +214,9 @@ static bool to_frac(cc *c, const qd_expr *e, frac *f) {
 
 static const qd_expr *from_poly(cc *c, const fmpz_mpoly_t p) {
     slong len = fmpz_mpoly_length(p, c->m);
-    const qd_expr **terms = malloc(((size_t)len + 1) * sizeof *terms);
-    const qd_expr **fs = malloc((c->ngens + 1) * sizeof *fs);
-    slong *exps = malloc(c->ngens * sizeof *exps);
+    const qd_expr **terms = qd__malloc(c->ctx, ((size_t)len + 1) * sizeof *terms);
+    const qd_expr **fs = qd__malloc(c->ctx, (c->ngens + 1) * sizeof *fs);
+    slong *exps = qd__malloc(c->ctx, c->ngens * sizeof *exps);
     const qd_expr *r = NULL;
     if (!terms || !fs || !exps) {
         qd__oom(c->ctx);
@@ -242,9 +242,9 @@ static const qd_expr *from_poly(cc *c, const fmpz_mpoly_t p) {
     mpq_clear(q);
     r = qd_add_n(c->ctx, (size_t)len, terms);
 done:
-    free(terms);
-    free(fs);
-    free(exps);
+    qd__free(terms);
+    qd__free(fs);
+    qd__free(exps);
     return r;
 }
 
@@ -294,7 +294,7 @@ static const qd_expr *cancel_frac(cc *c, const qd_expr *e) {
 
 static const qd_expr *rebuild_args(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo) {
     const qd_expr *stack[8];
-    const qd_expr **args = e->nargs <= 8 ? stack : malloc(e->nargs * sizeof *args);
+    const qd_expr **args = e->nargs <= 8 ? stack : qd__malloc(ctx, e->nargs * sizeof *args);
     if (!args) {
         qd__oom(ctx);
         return NULL;
@@ -311,7 +311,7 @@ static const qd_expr *rebuild_args(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *mem
     if (r && changed)
         r = qd__rebuild(ctx, e, args);
     if (args != stack)
-        free(args);
+        qd__free(args);
     return r;
 }
 
@@ -327,7 +327,7 @@ static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo
         r = cancel_frac(&c, e);
         qd_ptrmap_free(&c.atoms);
         qd_ptrmap_free(&c.gidx);
-        free(c.gens);
+        qd__free(c.gens);
         if (c.failed && !r)
             r = rebuild_args(ctx, e, memo);
     } else {
@@ -343,7 +343,7 @@ static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo
 const qd_expr *qd_cancel(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_INIT;
+    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = cancel_expr(ctx, e, &memo);
     qd_ptrmap_free(&memo);
     return r;

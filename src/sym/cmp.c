@@ -205,14 +205,16 @@ bool qd_has(const qd_expr *e, const qd_expr *x) {
     return r;
 }
 
-static void symbols_rec(const qd_expr *e, qd_ptrmap *seen, qd_ptrmap *syms) {
+/* false when out of memory: a symbol may be missing from syms */
+static bool symbols_rec(const qd_expr *e, qd_ptrmap *seen, qd_ptrmap *syms) {
     if (qd_ptrmap_has(seen, e))
-        return;
-    qd_ptrmap_put(seen, e, (void *)e);
+        return true;
+    bool ok = qd_ptrmap_put(seen, e, (void *)e);
     if (e->kind == QD_SYMBOL)
-        qd_ptrmap_put(syms, e, (void *)e);
-    for (uint32_t i = 0; i < e->nargs; i++)
-        symbols_rec(e->args[i], seen, syms);
+        ok = qd_ptrmap_put(syms, e, (void *)e) && ok;
+    for (uint32_t i = 0; ok && i < e->nargs; i++)
+        ok = symbols_rec(e->args[i], seen, syms);
+    return ok;
 }
 
 static int cmp_ptr(const void *a, const void *b) {
@@ -222,10 +224,12 @@ static int cmp_ptr(const void *a, const void *b) {
 size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_t cap) {
     if (!e)
         return 0;
-    qd_ptrmap seen = QD_PTRMAP_INIT, syms = QD_PTRMAP_INIT;
-    symbols_rec(e, &seen, &syms);
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx)), syms = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    bool ok = symbols_rec(e, &seen, &syms);
+    if (!ok)
+        qd__oom(ctx);
     size_t n = 0;
-    const qd_expr **all = syms.len ? qd__alloc(ctx, syms.len * sizeof *all) : NULL;
+    const qd_expr **all = ok && syms.len ? qd__alloc(ctx, syms.len * sizeof *all) : NULL;
     for (size_t i = 0; all && i < syms.cap; i++)
         if (syms.slots[i].key)
             all[n++] = syms.slots[i].key;
@@ -233,7 +237,7 @@ size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_
         qsort(all, n, sizeof *all, cmp_ptr);
     for (size_t i = 0; i < n && i < cap; i++)
         out[i] = all[i];
-    size_t total = syms.len;
+    size_t total = all ? syms.len : 0; /* 0 and the error in ctx when out of memory */
     qd_ptrmap_free(&seen);
     qd_ptrmap_free(&syms);
     return total;

@@ -7,6 +7,7 @@
  * off Lagrange's equations: the coefficients of the accelerations q''.
  */
 #include "poly.h"
+#include "../base/mem.h"
 
 #include <stdlib.h>
 
@@ -97,11 +98,11 @@ static qd_status place_term(lin *L, const qd_poly *p, size_t t, const qd_expr *c
 static qd_status lin_setup(lin *L, qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
     qd__xs_init(&L->s, ctx);
     L->n = n;
-    L->marked = (qd_ptrmap)QD_PTRMAP_INIT;
-    L->memo = (qd_ptrmap)QD_PTRMAP_INIT;
+    L->marked = (qd_ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    L->memo = (qd_ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     L->slot = NULL;
-    L->parts = calloc(n + 1, sizeof *L->parts);
-    L->xvar = malloc((n + 1) * sizeof *L->xvar);
+    L->parts = qd__calloc(ctx, n + 1, sizeof *L->parts);
+    L->xvar = qd__malloc(ctx, (n + 1) * sizeof *L->xvar);
     if (!L->parts || !L->xvar)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i <= n; i++)
@@ -128,7 +129,7 @@ static qd_status lin_split(lin *L, const qd_expr *e, const qd_expr *const *xs) {
     const qd_poly *p = qd__xs_poly(&L->s, e);
     if (!p)
         return L->s.ctx->status ? L->s.ctx->status : QD_ERR_NOMEM;
-    L->slot = malloc((L->s.ngens + 1) * sizeof *L->slot);
+    L->slot = qd__malloc(L->s.ctx, (L->s.ngens + 1) * sizeof *L->slot);
     if (!L->slot)
         return QD_ERR_NOMEM;
     for (size_t v = 0; v < L->s.ngens; v++)
@@ -165,9 +166,9 @@ qd_status qd_linear_coeffs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_exp
             coeffs[i] = NULL;
         *rest = NULL;
     }
-    free(L.slot);
-    free(L.parts);
-    free(L.xvar);
+    qd__free(L.slot);
+    qd__free(L.parts);
+    qd__free(L.xvar);
     qd_ptrmap_free(&L.marked);
     qd_ptrmap_free(&L.memo);
     qd__xs_free(&L.s);
@@ -225,9 +226,9 @@ static size_t bucket(const int32_t *ks, size_t m, int32_t k) {
 /* sum_k c_k x^k from the buckets of p by the exponent of var. */
 static const qd_expr *gather(qd_xsess *s, const qd_poly *p, uint32_t var, const qd_expr *x) {
     qd_ctx *ctx = s->ctx;
-    int32_t *ks = malloc((p->n + 1) * sizeof *ks);
-    const qd_expr **terms = malloc((p->n + 1) * sizeof *terms);
-    qd_poly **parts = malloc((p->n + 1) * sizeof *parts);
+    int32_t *ks = qd__malloc(ctx, (p->n + 1) * sizeof *ks);
+    const qd_expr **terms = qd__malloc(ctx, (p->n + 1) * sizeof *terms);
+    qd_poly **parts = qd__malloc(ctx, (p->n + 1) * sizeof *parts);
     const qd_expr *r = NULL;
     if (!ks || !terms || !parts)
         goto done;
@@ -246,9 +247,9 @@ static const qd_expr *gather(qd_xsess *s, const qd_poly *p, uint32_t var, const 
 done:
     if ((!ks || !terms || !parts) && ctx->status == QD_OK)
         qd__oom(ctx);
-    free(ks);
-    free(terms);
-    free(parts);
+    qd__free(ks);
+    qd__free(terms);
+    qd__free(parts);
     return r;
 }
 

@@ -123,7 +123,7 @@ size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e) {
     (void)ctx;
     if (!e)
         return 0;
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     count_dag(e, &seen);
     size_t n = seen.len;
     qd_ptrmap_free(&seen);

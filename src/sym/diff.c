@@ -35,7 +35,7 @@ static const qd_expr *d_symbol(deriv *dv, const qd_expr *s) {
 static const qd_expr *d_mul(deriv *dv, const qd_expr *e) {
     qd_ctx *ctx = dv->ctx;
     size_t n = e->nargs;
-    const qd_expr **terms = malloc(n * sizeof *terms), **fs = malloc(n * sizeof *fs);
+    const qd_expr **terms = qd__malloc(ctx, n * sizeof *terms), **fs = qd__malloc(ctx, n * sizeof *fs);
     const qd_expr *r = NULL;
     if (!terms || !fs) {
         qd__oom(ctx);
@@ -54,8 +54,8 @@ static const qd_expr *d_mul(deriv *dv, const qd_expr *e) {
     }
     r = qd_add_n(ctx, m, terms);
 done:
-    free(terms);
-    free(fs);
+    qd__free(terms);
+    qd__free(fs);
     return r;
 }
 
@@ -148,7 +148,7 @@ static const qd_expr *d(deriv *dv, const qd_expr *e) {
     case QD_SYMBOL:
         return d_symbol(dv, e);
     case QD_ADD: {
-        const qd_expr **ts = malloc(e->nargs * sizeof *ts);
+        const qd_expr **ts = qd__malloc(ctx, e->nargs * sizeof *ts);
         if (!ts) {
             qd__oom(ctx);
             return NULL;
@@ -156,7 +156,7 @@ static const qd_expr *d(deriv *dv, const qd_expr *e) {
         for (size_t i = 0; i < e->nargs; i++)
             ts[i] = d(dv, e->args[i]);
         r = qd_add_n(ctx, e->nargs, ts);
-        free(ts);
+        qd__free(ts);
         break;
     }
     case QD_MUL: r = d_mul(dv, e); break;
@@ -175,7 +175,7 @@ static const qd_expr *d(deriv *dv, const qd_expr *e) {
 static const qd_expr *derive(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
     if (!e)
         return NULL;
-    deriv dv = {ctx, x, QD_PTRMAP_INIT};
+    deriv dv = {ctx, x, QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
     const qd_expr *r = d(&dv, e);
     qd_ptrmap_free(&dv.memo);
     return r;

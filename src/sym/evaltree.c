@@ -59,7 +59,7 @@ static double value(walk *w, const qd_expr *e);
 static double remember(walk *w, const qd_expr *e, double v) {
     if (w->n == w->cap) {
         size_t cap = w->cap ? 2 * w->cap : 256;
-        double *s = realloc(w->store, cap * sizeof *s);
+        double *s = qd__realloc(w->ctx, w->store, cap * sizeof *s);
         if (!s) {
             w->st = QD_ERR_NOMEM;
             return v;
@@ -86,9 +86,10 @@ static double value(walk *w, const qd_expr *e) {
     case QD_CONSTANT:
         return e->tag == QD_PI ? 3.14159265358979323846 : 2.71828182845904523536;
     case QD_SYMBOL:
-        if (w->st == QD_OK)
+        if (w->st == QD_OK) { /* after running out of memory, a binding may be missing */
             qd_ctx_error(w->ctx, QD_ERR_UNBOUND, "'%s' has no value", e->u.sym.name);
-        w->st = QD_ERR_UNBOUND;
+            w->st = QD_ERR_UNBOUND;
+        }
         return NAN;
     case QD_ADD:
         for (size_t i = 0; i < e->nargs; i++)
@@ -108,10 +109,11 @@ static double value(walk *w, const qd_expr *e) {
         break;
     case QD_UFUNC:
     case QD_UDERIV:
-        if (w->st == QD_OK)
+        if (w->st == QD_OK) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the function '%s' has no numeric definition",
                          e->u.fn.name);
-        w->st = QD_ERR_ARG;
+            w->st = QD_ERR_ARG;
+        }
         return NAN;
     }
     return remember(w, e, v);
@@ -121,12 +123,12 @@ qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const 
                   const double *vals, double *out) {
     if (!e)
         return ctx->status != QD_OK ? ctx->status : QD_ERR_ARG;
-    walk w = {ctx, QD_PTRMAP_INIT, NULL, 0, 0, QD_OK};
+    walk w = {ctx, QD_PTRMAP_AL(qd__ctx_allocator(ctx)), NULL, 0, 0, QD_OK};
     for (size_t i = 0; i < n; i++)
         remember(&w, syms[i], vals[i]);
     *out = value(&w, e);
     qd_ptrmap_free(&w.vals);
-    free(w.store);
+    qd__free(w.store);
     if (w.st == QD_ERR_NOMEM)
         qd__oom(ctx);
     return w.st;

@@ -14,6 +14,7 @@
  * again.
  */
 #include "poly.h"
+#include "../base/mem.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -35,21 +36,21 @@ void qd__xs_init(qd_xsess *s, qd_ctx *ctx) {
 void qd__xs_free(qd_xsess *s) {
     for (size_t i = 0; i < s->nowned; i++)
         qd_poly_free(s->owned[i]);
-    free(s->owned);
-    free(s->gens);
-    free(s->pows);
+    qd__free(s->owned);
+    qd__free(s->gens);
+    qd__free(s->pows);
     qd_ptrmap_free(&s->polys);
     qd_ptrmap_free(&s->exprs);
     qd_ptrmap_free(&s->genix);
 }
 
-static bool grow(void **v, size_t *cap, size_t need, size_t size) {
+static bool grow(qd_ctx *ctx, void **v, size_t *cap, size_t need, size_t size) {
     if (need <= *cap)
         return true;
     size_t c = *cap ? *cap * 2 : 16;
     while (c < need)
         c *= 2;
-    void *nv = realloc(*v, c * size);
+    void *nv = qd__realloc(ctx, *v, c * size);
     if (!nv)
         return false;
     *v = nv;
@@ -60,7 +61,7 @@ static bool grow(void **v, size_t *cap, size_t need, size_t size) {
 bool qd__xs_own(qd_xsess *s, qd_poly *p) {
     if (!p)
         return false;
-    if (!grow((void **)&s->owned, &s->ocap, s->nowned + 1, sizeof *s->owned)) {
+    if (!grow(s->ctx, (void **)&s->owned, &s->ocap, s->nowned + 1, sizeof *s->owned)) {
         qd_poly_free(p);
         qd__oom(s->ctx);
         return false;
@@ -73,7 +74,7 @@ long qd__xs_gen(qd_xsess *s, const qd_expr *g) {
     void *v = qd_ptrmap_get(&s->genix, g);
     if (v)
         return (long)((uintptr_t)v - 1);
-    if (!grow((void **)&s->gens, &s->gcap, s->ngens + 1, sizeof *s->gens) ||
+    if (!grow(s->ctx, (void **)&s->gens, &s->gcap, s->ngens + 1, sizeof *s->gens) ||
         !qd_ptrmap_put(&s->genix, g, (void *)(uintptr_t)(s->ngens + 1))) {
         qd__oom(s->ctx);
         return -1;
@@ -103,7 +104,7 @@ static qd_poly *gen_poly(qd_xsess *s, const qd_expr *g, long k) {
 }
 
 static const qd_poly *sum_poly(qd_xsess *s, const qd_expr *e) {
-    const qd_poly **ps = malloc(e->nargs * sizeof *ps);
+    const qd_poly **ps = qd__malloc(s->ctx, e->nargs * sizeof *ps);
     qd_poly *r = NULL;
     if (!ps) {
         qd__oom(s->ctx);
@@ -114,7 +115,7 @@ static const qd_poly *sum_poly(qd_xsess *s, const qd_expr *e) {
         ;
     if (i == e->nargs)
         r = qd_poly_add_n(s->ctx, i, (const qd_poly *const *)ps);
-    free(ps);
+    qd__free(ps);
     return r ? own_as(s, e, r) : NULL;
 }
 
@@ -191,7 +192,7 @@ static const qd_poly *pow_poly(qd_xsess *s, const qd_expr *e) {
 /* A call: a generator once its arguments are expanded. */
 static const qd_poly *call_poly(qd_xsess *s, const qd_expr *e) {
     const qd_expr *stack[8];
-    const qd_expr **args = e->nargs <= 8 ? stack : malloc(e->nargs * sizeof *args);
+    const qd_expr **args = e->nargs <= 8 ? stack : qd__malloc(s->ctx, e->nargs * sizeof *args);
     if (!args) {
         qd__oom(s->ctx);
         return NULL;
@@ -203,7 +204,7 @@ static const qd_poly *call_poly(qd_xsess *s, const qd_expr *e) {
     }
     const qd_expr *r = !ok ? NULL : changed ? qd__rebuild(s->ctx, e, args) : e;
     if (args != stack)
-        free(args);
+        qd__free(args);
     if (!r)
         return NULL;
     if (r->kind == QD_FUNC || r->kind == QD_UFUNC || r->kind == QD_UDERIV)
@@ -243,7 +244,7 @@ static const qd_expr *gen_pow(qd_xsess *s, uint32_t var, int32_t exp) {
     uint64_t key = (uint64_t)var << 32 | (uint32_t)exp;
     if (2 * (s->powlen + 1) > s->powcap) {
         size_t cap = s->powcap ? 2 * s->powcap : 64;
-        qd_powslot *ns = calloc(cap, sizeof *ns);
+        qd_powslot *ns = qd__calloc(s->ctx, cap, sizeof *ns);
         if (!ns) {
             qd__oom(s->ctx);
             return NULL;
@@ -257,7 +258,7 @@ static const qd_expr *gen_pow(qd_xsess *s, uint32_t var, int32_t exp) {
                 j = (j + 1) & (cap - 1);
             ns[j] = s->pows[i];
         }
-        free(s->pows);
+        qd__free(s->pows);
         s->pows = ns;
         s->powcap = cap;
     }
@@ -303,7 +304,7 @@ static const qd_expr *term_expr(qd_xsess *s, const qd_poly *p, size_t t) {
     const qd_expr *c = qd_poly_coef_is_one(p, t) ? NULL : qd_poly_coef_node(s->ctx, p, t);
     if (pt->len == 0)
         return c ? c : s->ctx->one;
-    const qd_expr *stack[17], **f = pt->len < 17 ? stack : malloc((pt->len + 1) * sizeof *f);
+    const qd_expr *stack[17], **f = pt->len < 17 ? stack : qd__malloc(s->ctx, (pt->len + 1) * sizeof *f);
     if (!f) {
         qd__oom(s->ctx);
         return NULL;
@@ -328,7 +329,7 @@ static const qd_expr *term_expr(qd_xsess *s, const qd_poly *p, size_t t) {
         r = qd__xs_expand(s, qd_mul_n(s->ctx, pt->len, fs));
 done:
     if (f != stack)
-        free(f);
+        qd__free(f);
     return r;
 }
 
@@ -357,8 +358,8 @@ static int node_cmp(const void *a, const void *b) {
  * constant: then factors compare by generator, then numerically by
  * exponent, exactly as qd_expr_cmp orders g^k. */
 static uint32_t *gen_ranks(qd_xsess *s, const qd_poly *p) {
-    uint32_t *rank = malloc((s->ngens + 1) * sizeof *rank), nused = 0;
-    const qd_expr **used = malloc((s->ngens + 1) * sizeof *used);
+    uint32_t *rank = qd__malloc(s->ctx, (s->ngens + 1) * sizeof *rank), nused = 0;
+    const qd_expr **used = qd__malloc(s->ctx, (s->ngens + 1) * sizeof *used);
     if (!rank || !used)
         goto fail;
     for (size_t g = 0; g < s->ngens; g++)
@@ -373,21 +374,21 @@ static uint32_t *gen_ranks(qd_xsess *s, const qd_poly *p) {
     qsort(used, nused, sizeof *used, node_cmp);
     for (uint32_t i = 0; i < nused; i++)
         rank[(uintptr_t)qd_ptrmap_get(&s->genix, used[i]) - 1] = i;
-    free(used);
+    qd__free(used);
     return rank;
 fail:
-    free(rank);
-    free(used);
+    qd__free(rank);
+    qd__free(used);
     return NULL;
 }
 
 /* The terms of p in canonical order (when it can be read off cheaply), so
  * that qd_add_n finds them sorted; else in table order. */
 static uint32_t *term_order(qd_xsess *s, const qd_poly *p) {
-    uint32_t *order = malloc(p->n * sizeof *order);
+    uint32_t *order = qd__malloc(s->ctx, p->n * sizeof *order);
     uint32_t *rank = order ? gen_ranks(s, p) : NULL;
-    tkey *keys = rank ? malloc(p->n * sizeof *keys) : NULL;
-    qd_pvar *buf = keys ? malloc((p->plen + 1) * sizeof *buf) : NULL;
+    tkey *keys = rank ? qd__malloc(s->ctx, p->n * sizeof *keys) : NULL;
+    qd_pvar *buf = keys ? qd__malloc(s->ctx, (p->plen + 1) * sizeof *buf) : NULL;
     for (size_t t = 0; order && t < p->n; t++)
         order[t] = (uint32_t)t;
     if (buf) {
@@ -407,9 +408,9 @@ static uint32_t *term_order(qd_xsess *s, const qd_poly *p) {
         for (size_t t = 0; t < p->n; t++)
             order[t] = keys[t].term;
     }
-    free(buf);
-    free(keys);
-    free(rank);
+    qd__free(buf);
+    qd__free(keys);
+    qd__free(rank);
     return order;
 }
 
@@ -420,7 +421,7 @@ const qd_expr *qd__xs_expr(qd_xsess *s, const qd_poly *p) {
         return s->ctx->zero;
     if (p->n == 1)
         return term_expr(s, p, 0);
-    const qd_expr **terms = malloc(p->n * sizeof *terms);
+    const qd_expr **terms = qd__malloc(s->ctx, p->n * sizeof *terms);
     uint32_t *order = terms ? term_order(s, p) : NULL;
     const qd_expr *r = NULL;
     size_t t = 0;
@@ -430,8 +431,8 @@ const qd_expr *qd__xs_expr(qd_xsess *s, const qd_poly *p) {
         qd__oom(s->ctx);
     else if (t == p->n)
         r = qd_add_n(s->ctx, t, terms);
-    free(terms);
-    free(order);
+    qd__free(terms);
+    qd__free(order);
     return r;
 }
 

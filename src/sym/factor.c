@@ -104,7 +104,7 @@ static const qd_expr *divide_term(qd_ctx *ctx, const qd_expr *const *slot, const
     size_t n;
     const qd_expr *c = qd__is_num(*slot) ? *slot : qd__term_coeff(ctx, *slot, NULL, NULL);
     const qd_expr *const *fs = factors(slot, &n);
-    const qd_expr **out = malloc((n + 1) * sizeof *out);
+    const qd_expr **out = qd__malloc(ctx, (n + 1) * sizeof *out);
     if (!out) {
         qd__oom(ctx);
         return NULL;
@@ -118,7 +118,7 @@ static const qd_expr *divide_term(qd_ctx *ctx, const qd_expr *const *slot, const
                 out[i + 1] = qd_pow(ctx, b, qd_sub(ctx, e, cm[k].exp));
     }
     const qd_expr *r = qd_mul_n(ctx, n + 1, out);
-    free(out);
+    qd__free(out);
     return r;
 }
 
@@ -128,8 +128,8 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *s) {
     const qd_expr *g = content(ctx, s);
     if (!g)
         g = ctx->one;
-    common *cm = malloc((n0 + 1) * sizeof *cm);
-    const qd_expr **parts = malloc((s->nargs + n0 + 1) * sizeof *parts);
+    common *cm = qd__malloc(ctx, (n0 + 1) * sizeof *cm);
+    const qd_expr **parts = qd__malloc(ctx, (s->nargs + n0 + 1) * sizeof *parts);
     const qd_expr *r = NULL;
     if (!cm || !parts) {
         qd__oom(ctx);
@@ -149,8 +149,8 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *s) {
         parts[k + 2] = qd_pow(ctx, cm[k].base, cm[k].exp);
     r = qd_mul_n(ctx, m + 2, parts);
 done:
-    free(cm);
-    free(parts);
+    qd__free(cm);
+    qd__free(parts);
     return r;
 }
 
@@ -162,7 +162,7 @@ static const qd_expr *post_factor(qd_ctx *ctx, const qd_expr *e, void *data) {
 const qd_expr *qd_factor_terms(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_INIT;
+    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = qd__map(ctx, e, &memo, post_factor, NULL);
     qd_ptrmap_free(&memo);
     return r;

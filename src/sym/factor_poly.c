@@ -26,6 +26,7 @@
  * is kept wherever the input is defined.
  */
 #include "factor_poly.h"
+#include "../base/mem.h"
 
 #include <flint/fmpz_mpoly.h>
 #include <flint/fmpz_mpoly_factor.h>
@@ -118,12 +119,12 @@ typedef struct gens {
     size_t n, cap;
 } gens;
 
-static bool gens_add(gens *g, const qd_expr *x) {
+static bool gens_add(qd_ctx *ctx, gens *g, const qd_expr *x) {
     if (qd_ptrmap_has(&g->idx, x))
         return true;
     if (g->n == g->cap) {
         size_t cap = g->cap ? 2 * g->cap : 16;
-        const qd_expr **v = realloc(g->v, cap * sizeof *v);
+        const qd_expr **v = qd__realloc(ctx, g->v, cap * sizeof *v);
         if (!v)
             return false;
         g->v = v;
@@ -140,9 +141,9 @@ static int cmp_gen(const void *a, const void *b) {
 static const qd_expr *from_poly(qd_ctx *ctx, const gens *g, const fmpz_mpoly_t p,
                                 const fmpz_mpoly_ctx_t m) {
     slong len = fmpz_mpoly_length(p, m);
-    const qd_expr **terms = malloc(((size_t)len + 1) * sizeof *terms);
-    const qd_expr **fs = malloc((g->n + 1) * sizeof *fs);
-    ulong *exps = malloc(g->n * sizeof *exps);
+    const qd_expr **terms = qd__malloc(ctx, ((size_t)len + 1) * sizeof *terms);
+    const qd_expr **fs = qd__malloc(ctx, (g->n + 1) * sizeof *fs);
+    ulong *exps = qd__malloc(ctx, g->n * sizeof *exps);
     const qd_expr *r = NULL;
     if (!terms || !fs || !exps) {
         qd__oom(ctx);
@@ -168,9 +169,9 @@ static const qd_expr *from_poly(qd_ctx *ctx, const gens *g, const fmpz_mpoly_t p
     mpq_clear(q);
     r = qd_add_n(ctx, (size_t)len, terms);
 done:
-    free(terms);
-    free(fs);
-    free(exps);
+    qd__free(terms);
+    qd__free(fs);
+    qd__free(exps);
     return r;
 }
 
@@ -181,7 +182,7 @@ static bool build_poly(fsum *s, const size_t *sel, size_t k, gens *g, fmpz_mpoly
     mpz_set_ui(lcm, 1);
     for (size_t i = 0; i < k; i++)
         mpz_lcm(lcm, lcm, mpq_denref(s->t[sel[i]].coeff->u.q));
-    ulong *exps = calloc(g->n ? g->n : 1, sizeof *exps);
+    ulong *exps = qd__calloc(s->ctx, g->n ? g->n : 1, sizeof *exps);
     if (!exps)
         return false;
     fmpz_t c;
@@ -210,7 +211,7 @@ static bool build_poly(fsum *s, const size_t *sel, size_t k, gens *g, fmpz_mpoly
     fmpz_mpoly_combine_like_terms(p, m);
     fmpz_clear(c);
     mpz_clear(z);
-    free(exps);
+    qd__free(exps);
     return true;
 }
 
@@ -220,9 +221,9 @@ static bool build_poly(fsum *s, const size_t *sel, size_t k, gens *g, fmpz_mpoly
  * monomial, which q (no monomial content) does not have.  (Most sums in
  * derivations are of this kind, and FLINT's factorization over dozens of
  * generators is not cheap.) */
-static bool plainly_irreducible(const fmpz_mpoly_t q, const fmpz_mpoly_ctx_t m, size_t nvars) {
+static bool plainly_irreducible(qd_ctx *ctx, const fmpz_mpoly_t q, const fmpz_mpoly_ctx_t m, size_t nvars) {
     slong len = fmpz_mpoly_length(q, m);
-    slong *degs = malloc(nvars * sizeof *degs);
+    slong *degs = qd__malloc(ctx, nvars * sizeof *degs);
     if (!degs)
         return false;
     fmpz_mpoly_degrees_si(degs, q, m);
@@ -235,7 +236,7 @@ static bool plainly_irreducible(const fmpz_mpoly_t q, const fmpz_mpoly_ctx_t m, 
             with += fmpz_mpoly_get_term_var_exp_si(q, i, (slong)v, m) != 0;
         yes = with == 1 || with == len - 1;
     }
-    free(degs);
+    qd__free(degs);
     return yes;
 }
 
@@ -274,12 +275,12 @@ static bool factor_poly(qd_ctx *ctx, const gens *g, const fmpz_mpoly_t p,
     fmpz_mpoly_divides(q, p, c, m);
     bool trivial = fmpz_mpoly_is_one(c, m);
     bool split = fmpz_mpoly_total_degree_si(q, m) >= 2 && fmpz_mpoly_length(q, m) >= 2 &&
-                 !plainly_irreducible(q, m, g->n) && fmpz_mpoly_factor(f, q, m);
+                 !plainly_irreducible(ctx, q, m, g->n) && fmpz_mpoly_factor(f, q, m);
     slong len = split ? fmpz_mpoly_factor_length(f, m) : 0, mult = 0;
     for (slong i = 0; i < len; i++)
         mult += fmpz_mpoly_factor_get_exp_si(f, i, m);
     split = split && mult >= 2;
-    parts = malloc(((size_t)len + 4) * sizeof *parts);
+    parts = qd__malloc(ctx, ((size_t)len + 4) * sizeof *parts);
     mpq_t k;
     mpq_init(k);
     if (!parts) {
@@ -322,7 +323,7 @@ static bool factor_poly(qd_ctx *ctx, const gens *g, const fmpz_mpoly_t p,
     }
 done:
     mpq_clear(k);
-    free(parts);
+    qd__free(parts);
     fmpz_mpoly_factor_clear(f, m);
     fmpz_mpoly_clear(c, m);
     fmpz_mpoly_clear(q, m);
@@ -339,7 +340,7 @@ static bool ops_with(fsum *s, const size_t *sel, size_t k, const qd_expr *r, siz
     if (!r)
         return true;
     size_t n = 0;
-    const qd_expr **v = malloc((s->n + s->nextra + 1) * sizeof *v);
+    const qd_expr **v = qd__malloc(s->ctx, (s->n + s->nextra + 1) * sizeof *v);
     if (!v)
         return false;
     for (size_t i = 0; i < s->n; i++) {
@@ -353,7 +354,7 @@ static bool ops_with(fsum *s, const size_t *sel, size_t k, const qd_expr *r, siz
         v[n++] = s->extra[i];
     v[n++] = r;
     const qd_expr *x = qd_add_n(s->ctx, n, v);
-    free(v);
+    qd__free(v);
     if (!x)
         return false;
     *ops = qd_count_ops(x);
@@ -379,8 +380,8 @@ static bool accept(fsum *s, const size_t *sel, size_t k, const qd_expr *a, const
 
 /* Parts of sel that share no generator, each tried on its own. */
 static bool try_parts(fsum *s, size_t *sel, size_t k, const qd_expr *den, gens *g, int depth) {
-    size_t *root = malloc(g->n * sizeof *root), *gen_of_term = malloc(k * sizeof *gen_of_term);
-    size_t *part = malloc(k * sizeof *part);
+    size_t *root = qd__malloc(s->ctx, g->n * sizeof *root), *gen_of_term = qd__malloc(s->ctx, k * sizeof *gen_of_term);
+    size_t *part = qd__malloc(s->ctx, k * sizeof *part);
     bool ok = root && gen_of_term && part;
     if (!ok)
         goto done;
@@ -427,15 +428,15 @@ static bool try_parts(fsum *s, size_t *sel, size_t k, const qd_expr *den, gens *
             ok = try_sel(s, part, m, den, depth + 1);
     }
 done:
-    free(root);
-    free(gen_of_term);
-    free(part);
+    qd__free(root);
+    qd__free(gen_of_term);
+    qd__free(part);
     return ok;
 }
 
 /* Factor the terms sel[0..k) over their shared denominator den. */
 static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int depth) {
-    gens g = {QD_PTRMAP_INIT, NULL, 0, 0};
+    gens g = {QD_PTRMAP_AL(qd__ctx_allocator(s->ctx)), NULL, 0, 0};
     bool ok = true;
     for (size_t i = 0; i < k && ok; i++) {
         const fterm *t = &s->t[sel[i]];
@@ -444,7 +445,7 @@ static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int dept
             const qd_expr *f = factor_at(node, t, j);
             long e;
             if (!neg_power(f))
-                ok = gens_add(&g, gen_of(f, &e));
+                ok = gens_add(s->ctx, &g, gen_of(f, &e));
         }
     }
     if (!ok || g.n == 0)
@@ -475,7 +476,7 @@ static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int dept
         ok = try_parts(s, sel, k, den, &g, depth);
 out:
     qd_ptrmap_free(&g.idx);
-    free(g.v);
+    qd__free(g.v);
     return ok;
 }
 
@@ -484,12 +485,12 @@ out:
 static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
     size_t n = e->nargs;
     fsum s = {ctx, NULL, NULL, n, NULL, 0, 0, e};
-    s.cur = malloc(n * sizeof *s.cur);
-    s.t = malloc(n * sizeof *s.t);
-    s.extra = malloc(n * sizeof *s.extra);
-    size_t *sel = malloc(n * sizeof *sel);
-    bool *done = calloc(n, sizeof *done);
-    size_t *next = malloc(n * sizeof *next);
+    s.cur = qd__malloc(ctx, n * sizeof *s.cur);
+    s.t = qd__malloc(ctx, n * sizeof *s.t);
+    s.extra = qd__malloc(ctx, n * sizeof *s.extra);
+    size_t *sel = qd__malloc(ctx, n * sizeof *sel);
+    bool *done = qd__calloc(ctx, n, sizeof *done);
+    size_t *next = qd__malloc(ctx, n * sizeof *next);
     const qd_expr *r = NULL;
     if (!s.cur || !s.t || !s.extra || !sel || !done || !next) {
         qd__oom(ctx);
@@ -503,7 +504,7 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
     s.ops = qd_count_ops(e);
     /* each group: the exact, bounded terms over one denominator, chained
      * through next[] from the group's first term */
-    qd_ptrmap last = QD_PTRMAP_INIT; /* den -> its latest term + 1 */
+    qd_ptrmap last = QD_PTRMAP_AL(qd__ctx_allocator(ctx)); /* den -> its latest term + 1 */
     for (size_t i = 0; i < n; i++) {
         next[i] = SIZE_MAX;
         if (!s.t[i].ok)
@@ -543,7 +544,7 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
         for (size_t i = 0; i < n; i++)
             if (s.cur[i])
                 sel[m++] = i;
-        const qd_expr **v = malloc((m + s.nextra) * sizeof *v);
+        const qd_expr **v = qd__malloc(ctx, (m + s.nextra) * sizeof *v);
         if (!v) {
             qd__oom(ctx);
             r = NULL;
@@ -554,15 +555,15 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
         for (size_t i = 0; i < s.nextra; i++)
             v[m + i] = s.extra[i];
         r = qd_add_n(ctx, m + s.nextra, v);
-        free(v);
+        qd__free(v);
     }
 out:
-    free(s.cur);
-    free(s.t);
-    free(s.extra);
-    free(sel);
-    free(done);
-    free(next);
+    qd__free(s.cur);
+    qd__free(s.t);
+    qd__free(s.extra);
+    qd__free(sel);
+    qd__free(done);
+    qd__free(next);
     return r;
 }
 

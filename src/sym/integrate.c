@@ -100,7 +100,7 @@ static const qd_expr *int_expr(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) 
     if (e->kind != QD_ADD)
         return int_factor(ctx, e, x);
     size_t n = e->nargs;
-    const qd_expr **parts = malloc(n * sizeof *parts), *r = NULL;
+    const qd_expr **parts = qd__malloc(ctx, n * sizeof *parts), *r = NULL;
     if (!parts) {
         qd__oom(ctx);
         return NULL;
@@ -111,7 +111,7 @@ static const qd_expr *int_expr(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) 
             break;
     if (i == n)
         r = qd_add_n(ctx, n, parts);
-    free(parts);
+    qd__free(parts);
     return r;
 }
 

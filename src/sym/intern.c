@@ -9,6 +9,7 @@
  */
 #include "node.h"
 
+#include <assert.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -110,7 +111,7 @@ void *qd__alloc(qd_ctx *ctx, size_t size) {
 
 static bool table_grow(qd_ctx *ctx) {
     size_t cap = ctx->table_cap ? ctx->table_cap * 2 : 4096;
-    const qd_expr **t = calloc(cap, sizeof *t);
+    const qd_expr **t = qd__mem_calloc(ctx->alloc, cap, sizeof *t);
     if (!t)
         return false;
     for (size_t i = 0; i < ctx->table_cap; i++) {
@@ -122,7 +123,7 @@ static bool table_grow(qd_ctx *ctx) {
             j = (j + 1) & (cap - 1);
         t[j] = e;
     }
-    free(ctx->table);
+    qd__free(ctx->table);
     ctx->table = t;
     ctx->table_cap = cap;
     return true;
@@ -131,7 +132,7 @@ static bool table_grow(qd_ctx *ctx) {
 static bool remember_rational(qd_ctx *ctx, qd_expr *e) {
     if (ctx->nrat == ctx->rat_cap) {
         size_t cap = ctx->rat_cap ? ctx->rat_cap * 2 : 256;
-        qd_expr **r = realloc(ctx->rationals, cap * sizeof *r);
+        qd_expr **r = qd__mem_realloc(ctx->alloc, ctx->rationals, cap * sizeof *r);
         if (!r)
             return false;
         ctx->rationals = r;
@@ -155,6 +156,7 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
     for (; ctx->table[i]; i = (i + 1) & (ctx->table_cap - 1))
         if (node_equal(ctx->table[i], proto, h, nargs, args))
             return ctx->table[i];
+    assert(qd__is_canonical(proto, nargs, args));
 
     qd_expr *e = qd__alloc(ctx, sizeof *e + nargs * sizeof e->args[0]);
     if (!e)
@@ -187,7 +189,7 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
 const char *qd__intern_name(qd_ctx *ctx, const char *name) {
     if ((ctx->names_len + 1) * 2 > ctx->names_cap) {
         size_t cap = ctx->names_cap ? ctx->names_cap * 2 : 256;
-        const char **t = calloc(cap, sizeof *t);
+        const char **t = qd__mem_calloc(ctx->alloc, cap, sizeof *t);
         if (!t) {
             qd__oom(ctx);
             return NULL;
@@ -200,7 +202,7 @@ const char *qd__intern_name(qd_ctx *ctx, const char *name) {
                 j = (j + 1) & (cap - 1);
             t[j] = ctx->names[i];
         }
-        free(ctx->names);
+        qd__free(ctx->names);
         ctx->names = t;
         ctx->names_cap = cap;
     }
@@ -228,11 +230,15 @@ const char *qd__find_name(const qd_ctx *ctx, const char *name) {
     return NULL;
 }
 
-qd_ctx *qd_ctx_new(void) {
-    qd_ctx *ctx = calloc(1, sizeof *ctx);
+qd_ctx *qd_ctx_new(void) { return qd_ctx_new_with(NULL); }
+
+qd_ctx *qd_ctx_new_with(const qd_allocator *a) {
+    qd_ctx *ctx = qd__mem_calloc(a, 1, sizeof *ctx);
     if (!ctx)
         return NULL;
-    qd_arena_init(&ctx->arena);
+    ctx->alloc = a;
+    ctx->symtab.al = a;
+    qd_arena_init(&ctx->arena, a);
     ctx->zero = qd_int(ctx, 0);
     ctx->one = qd_int(ctx, 1);
     ctx->minus_one = qd_int(ctx, -1);
@@ -250,12 +256,45 @@ void qd_ctx_free(qd_ctx *ctx) {
         return;
     for (size_t i = 0; i < ctx->nrat; i++)
         mpq_clear(ctx->rationals[i]->u.q);
-    free(ctx->rationals);
-    free(ctx->table);
-    free(ctx->names);
+    qd__free(ctx->rationals);
+    qd__free(ctx->table);
+    qd__free(ctx->names);
     qd_ptrmap_free(&ctx->symtab);
     qd_arena_free(&ctx->arena);
-    free(ctx);
+    qd__free(ctx);
+}
+
+/* ---- the context's allocation path (mem.h) ------------------------------ */
+
+const qd_allocator *qd__ctx_allocator(const qd_ctx *ctx) { return ctx->alloc; }
+
+void *qd__malloc(qd_ctx *ctx, size_t size) {
+    void *p = qd__mem_malloc(ctx->alloc, size);
+    if (!p)
+        qd__oom(ctx);
+    return p;
+}
+
+void *qd__calloc(qd_ctx *ctx, size_t n, size_t size) {
+    void *p = qd__mem_calloc(ctx->alloc, n, size);
+    if (!p)
+        qd__oom(ctx);
+    return p;
+}
+
+void *qd__realloc(qd_ctx *ctx, void *p, size_t size) {
+    void *q = qd__mem_realloc(ctx->alloc, p, size);
+    if (!q)
+        qd__oom(ctx);
+    return q;
+}
+
+char *qd__strdup(qd_ctx *ctx, const char *s) {
+    size_t n = strlen(s) + 1;
+    char *d = qd__malloc(ctx, n);
+    if (d)
+        memcpy(d, s, n);
+    return d;
 }
 
 qd_status qd_ctx_status(const qd_ctx *ctx) { return ctx->status; }

@@ -34,7 +34,7 @@ const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_
     if (r || !e->nargs)
         return r ? r : e;
     const qd_expr *stack[8];
-    const qd_expr **args = e->nargs <= 8 ? stack : malloc(e->nargs * sizeof *args);
+    const qd_expr **args = e->nargs <= 8 ? stack : qd__malloc(ctx, e->nargs * sizeof *args);
     if (!args) {
         qd__oom(ctx);
         return NULL;
@@ -55,6 +55,6 @@ const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_
     }
 done:
     if (args != stack)
-        free(args);
+        qd__free(args);
     return r;
 }

@@ -38,7 +38,7 @@ const qd_expr *qd__mul_raw(qd_ctx *ctx, const qd_expr *coeff, size_t n,
     if (!coeff)
         return qd__intern(ctx, &proto, n, factors);
     const qd_expr *stack[16];
-    const qd_expr **args = n + 1 <= 16 ? stack : malloc((n + 1) * sizeof *args);
+    const qd_expr **args = n + 1 <= 16 ? stack : qd__malloc(ctx, (n + 1) * sizeof *args);
     if (!args) {
         qd__oom(ctx);
         return NULL;
@@ -48,12 +48,12 @@ const qd_expr *qd__mul_raw(qd_ctx *ctx, const qd_expr *coeff, size_t n,
         args[i + 1] = factors[i];
     const qd_expr *r = qd__intern(ctx, &proto, n + 1, args);
     if (args != stack)
-        free(args);
+        qd__free(args);
     return r;
 }
 
 static const qd_expr *distribute(qd_ctx *ctx, const qd_expr *c, const qd_expr *sum) {
-    const qd_expr **terms = malloc(sum->nargs * sizeof *terms);
+    const qd_expr **terms = qd__malloc(ctx, sum->nargs * sizeof *terms);
     if (!terms) {
         qd__oom(ctx);
         return NULL;
@@ -61,14 +61,14 @@ static const qd_expr *distribute(qd_ctx *ctx, const qd_expr *c, const qd_expr *s
     for (size_t i = 0; i < sum->nargs; i++)
         terms[i] = qd_mul(ctx, c, sum->args[i]);
     const qd_expr *r = qd_add_n(ctx, sum->nargs, terms);
-    free(terms);
+    qd__free(terms);
     return r;
 }
 
-static bool push(factor **v, size_t *n, size_t *cap, const qd_expr *e) {
+static bool push(qd_ctx *ctx, factor **v, size_t *n, size_t *cap, const qd_expr *e) {
     if (*n == *cap) {
         size_t c = *cap ? *cap * 2 : 16;
-        factor *nv = realloc(*v, c * sizeof *nv);
+        factor *nv = qd__realloc(ctx, *v, c * sizeof *nv);
         if (!nv)
             return false;
         *v = nv;
@@ -91,12 +91,12 @@ static bool gather(qd_ctx *ctx, size_t n, const qd_expr *const *xs, const qd_exp
                 if (qd__is_num(x->args[j])) {
                     if (!(*coeff = qd__num_mul(ctx, *coeff, x->args[j])))
                         return false;
-                } else if (!push(v, len, cap, x->args[j])) {
+                } else if (!push(ctx, v, len, cap, x->args[j])) {
                     qd__oom(ctx);
                     return false;
                 }
             }
-        } else if (!push(v, len, cap, x)) {
+        } else if (!push(ctx, v, len, cap, x)) {
             qd__oom(ctx);
             return false;
         }
@@ -126,7 +126,7 @@ const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
     if (len > 1)
         qsort(v, len, sizeof *v, factor_cmp);
 
-    out = malloc((len + 1) * sizeof *out);
+    out = qd__malloc(ctx, (len + 1) * sizeof *out);
     if (!out) {
         qd__oom(ctx);
         goto done;
@@ -164,8 +164,8 @@ const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
     else
         r = qd__mul_raw(ctx, qd_is_one(coeff) ? NULL : coeff, m, out);
 done:
-    free(out);
-    free(v);
+    qd__free(out);
+    qd__free(v);
     return r;
 }
 

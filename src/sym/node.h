@@ -18,7 +18,8 @@
  *   MUL  args = [c?] f1 ... fn   n >= 1, c a number != 1 first when present;
  *        no fi is a number, a MUL; fi sorted by base, no two with one base;
  *        never c * (single ADD) with c rational (that is distributed).
- *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e);
+ *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e
+ *        with |e| <= QD_MAX_FOLD_EXP: larger powers are not worked out);
  *        not (MUL b, integer e); not (POW b, integer e); not (abs(x) b, even
  *        integer e); for a fraction e: not (POW b with an even integer
  *        exponent or a base known >= 0); not (MUL b with a rational
@@ -37,6 +38,7 @@
 #include "qdot/expr.h"
 #include "../base/arena.h"
 #include "../base/ptrmap.h"
+#include "../base/mem.h"
 
 struct qd_expr {
     uint64_t hash;
@@ -68,6 +70,7 @@ typedef struct qd_symtab_entry {
 } qd_symtab_entry;
 
 struct qd_ctx {
+    const qd_allocator *alloc;   /* NULL: the C library's (mem.h) */
     qd_arena arena;
     /* unique table: open addressing over node pointers */
     const qd_expr **table;
@@ -96,8 +99,12 @@ const char *qd__find_name(const qd_ctx *ctx, const char *name); /* NULL if never
 void *qd__alloc(qd_ctx *ctx, size_t size);
 void qd__oom(qd_ctx *ctx);
 uint64_t qd__hash_mix(uint64_t h, uint64_t v);
+/* The forms listed at the top of this file (canon.c); qd__intern asserts it
+ * on every new node unless NDEBUG is defined. */
+bool qd__is_canonical(const qd_expr *proto, size_t nargs, const qd_expr *const *args);
 
 /* ---- number.c --------------------------------------------------------- */
+#define QD_MAX_FOLD_EXP 100000UL /* a rational to a larger integer power stays a power */
 const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q);
 const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
 const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);

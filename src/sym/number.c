@@ -181,7 +181,6 @@ static bool exact_root(mpz_t out, const mpz_t z, unsigned long k) {
 
 /* Largest exponent we fold exactly: beyond it the number is astronomically
  * large and almost surely a modelling mistake; keep it as a power. */
-#define QD_MAX_FOLD_EXP 100000UL
 
 const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded) {
     *folded = false;

@@ -7,6 +7,7 @@
  * made until the result is converted back.
  */
 #include "poly.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -27,28 +28,28 @@ void qd_poly_free(qd_poly *p) {
         return;
     for (size_t i = 0; i < p->nbig; i++) {
         mpq_clear(p->bigs[i]);
-        free(p->bigs[i]);
+        qd__free(p->bigs[i]);
     }
-    free(p->bigs);
-    free(p->terms);
-    free(p->pool);
-    free(p);
+    qd__free(p->bigs);
+    qd__free(p->terms);
+    qd__free(p->pool);
+    qd__free(p);
 }
 
 qd_poly *qd_poly_zero(qd_ctx *ctx) {
-    qd_poly *p = calloc(1, sizeof *p);
+    qd_poly *p = qd__calloc(ctx, 1, sizeof *p);
     if (!p)
         qd__oom(ctx);
     return p;
 }
 
-static bool grow(void **v, size_t *cap, size_t need, size_t size) {
+static bool grow(qd_ctx *ctx, void **v, size_t *cap, size_t need, size_t size) {
     if (need <= *cap)
         return true;
     size_t c = *cap ? *cap : 8;
     while (c < need)
         c *= 2;
-    void *nv = realloc(*v, c * size);
+    void *nv = qd__realloc(ctx, *v, c * size);
     if (!nv)
         return false;
     *v = nv;
@@ -57,10 +58,10 @@ static bool grow(void **v, size_t *cap, size_t need, size_t size) {
 }
 
 /* A new rational owned by p; its index, or -1. */
-static long new_big(qd_poly *p) {
-    if (!grow((void **)&p->bigs, &p->bigcap, p->nbig + 1, sizeof *p->bigs))
+static long new_big(qd_ctx *ctx, qd_poly *p) {
+    if (!grow(ctx, (void **)&p->bigs, &p->bigcap, p->nbig + 1, sizeof *p->bigs))
         return -1;
-    mpq_ptr q = malloc(sizeof *q);
+    mpq_ptr q = qd__malloc(ctx, sizeof *q);
     if (!q)
         return -1;
     mpq_init(q);
@@ -126,14 +127,14 @@ static cval cv_mul(cval a, cval b, mpq_ptr out, mpq_ptr tmp) {
     return r;
 }
 
-static bool coef_store(qd_poly *p, qd_coef *c, cval v) {
+static bool coef_store(qd_ctx *ctx, qd_poly *p, qd_coef *c, cval v) {
     c->kind = v.kind;
     if (v.kind == QD_COEF_INT)
         c->v.i = v.i;
     else if (v.kind == QD_COEF_FLT)
         c->v.f = v.f;
     else {
-        long k = new_big(p);
+        long k = new_big(ctx, p);
         if (k < 0)
             return false;
         mpq_set(p->bigs[k], v.q);
@@ -143,7 +144,7 @@ static bool coef_store(qd_poly *p, qd_coef *c, cval v) {
 }
 
 /* c += v, c stored in p; tmp is scratch. */
-static bool coef_acc(qd_poly *p, qd_coef *c, cval v, mpq_ptr tmp) {
+static bool coef_acc(qd_ctx *ctx, qd_poly *p, qd_coef *c, cval v, mpq_ptr tmp) {
     int64_t sum;
     if (c->kind == QD_COEF_INT && v.kind == QD_COEF_INT &&
         !__builtin_add_overflow(c->v.i, v.i, &sum)) {
@@ -157,7 +158,7 @@ static bool coef_acc(qd_poly *p, qd_coef *c, cval v, mpq_ptr tmp) {
         return true;
     }
     if (c->kind == QD_COEF_INT) {
-        long k = new_big(p);
+        long k = new_big(ctx, p);
         if (k < 0)
             return false;
         mpq_set_i64(p->bigs[k], c->v.i);
@@ -266,8 +267,8 @@ static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
     while (cap < 2 * expect && cap < ((size_t)1 << 26))
         cap *= 2;
     b->ctx = ctx;
-    b->out = calloc(1, sizeof *b->out);
-    b->slot = calloc(cap, sizeof *b->slot);
+    b->out = qd__calloc(ctx, 1, sizeof *b->out);
+    b->slot = qd__calloc(ctx, cap, sizeof *b->slot);
     b->mask = cap - 1;
     mpq_inits(b->tmp, b->prod, b->tmp2, NULL);
     if (!b->out || !b->slot) {
@@ -278,7 +279,7 @@ static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
 }
 
 static void pb_release(pbuild *b) {
-    free(b->slot);
+    qd__free(b->slot);
     b->slot = NULL;
     mpq_clears(b->tmp, b->prod, b->tmp2, NULL);
 }
@@ -291,7 +292,7 @@ static void pb_fail(pbuild *b) {
 
 static bool pb_rehash(pbuild *b) {
     size_t cap = (b->mask + 1) * 2;
-    uint32_t *slot = calloc(cap, sizeof *slot);
+    uint32_t *slot = qd__calloc(b->ctx, cap, sizeof *slot);
     if (!slot)
         return false;
     for (size_t t = 0; t < b->out->n; t++) {
@@ -300,7 +301,7 @@ static bool pb_rehash(pbuild *b) {
             i = (i + 1) & (cap - 1);
         slot[i] = (uint32_t)t + 1;
     }
-    free(b->slot);
+    qd__free(b->slot);
     b->slot = slot;
     b->mask = cap - 1;
     return true;
@@ -313,8 +314,8 @@ static bool pb_new_term(pbuild *b, size_t i, const qd_pvar *m, uint32_t len, uin
         qd_ctx_error(b->ctx, QD_ERR_TOOBIG, "expansion beyond %u terms", QD_POLY_MAX_TERMS);
         return false;
     }
-    if (!grow((void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
-        !grow((void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool))
+    if (!grow(b->ctx, (void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
+        !grow(b->ctx, (void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool))
         goto oom;
     qd_pterm *t = &p->terms[p->n];
     t->hash = h;
@@ -323,7 +324,7 @@ static bool pb_new_term(pbuild *b, size_t i, const qd_pvar *m, uint32_t len, uin
     if (len)
         memcpy(p->pool + p->plen, m, len * sizeof *m);
     p->plen += len;
-    if (!coef_store(p, &t->c, c))
+    if (!coef_store(b->ctx, p, &t->c, c))
         goto oom;
     b->slot[i] = (uint32_t)++p->n;
     if (2 * p->n > b->mask && !pb_rehash(b))
@@ -340,7 +341,7 @@ static bool pb_add(pbuild *b, const qd_pvar *m, uint32_t len, uint64_t h, cval c
     for (uint32_t s; (s = b->slot[i]) != 0; i = (i + 1) & b->mask) {
         qd_pterm *t = &b->out->terms[s - 1];
         if (t->hash == h && t->len == len && mono_eq(mono_of(b->out, t), m, len)) {
-            if (coef_acc(b->out, &t->c, c, b->tmp))
+            if (coef_acc(b->ctx, b->out, &t->c, c, b->tmp))
                 return true;
             qd__oom(b->ctx);
             return false;
@@ -462,12 +463,12 @@ qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
         pb_fail(&b);
         return NULL;
     }
-    qd_pvar *m = need <= 64 ? stack : malloc(need * sizeof *m);
+    qd_pvar *m = need <= 64 ? stack : qd__malloc(ctx, need * sizeof *m);
     if (!m)
         qd__oom(ctx);
     bool ok = m && mul_into(&b, x, y, m);
     if (m != stack)
-        free(m);
+        qd__free(m);
     if (!ok) {
         pb_fail(&b);
         return NULL;
@@ -500,7 +501,7 @@ static cval cv_pow(cval c, long n, mpq_ptr out) {
 static qd_poly *mono_pow(qd_ctx *ctx, const qd_poly *a, long n) {
     const qd_pterm *t = &a->terms[0];
     qd_pvar stack[64];
-    qd_pvar *m = t->len <= 64 ? stack : malloc(t->len * sizeof *m);
+    qd_pvar *m = t->len <= 64 ? stack : qd__malloc(ctx, t->len * sizeof *m);
     if (!m) {
         qd__oom(ctx);
         return NULL;
@@ -520,7 +521,7 @@ static qd_poly *mono_pow(qd_ctx *ctx, const qd_poly *a, long n) {
         qd_ctx_error(ctx, QD_ERR_TOOBIG, "exponent overflow in expansion");
     }
     if (m != stack)
-        free(m);
+        qd__free(m);
     return r;
 }
 
@@ -564,8 +565,8 @@ int32_t qd_poly_exp(const qd_poly *p, size_t t, uint32_t var) {
 
 bool qd_poly_append(qd_ctx *ctx, qd_poly *dst, const qd_poly *src, size_t t, uint32_t var) {
     const qd_pterm *st = &src->terms[t];
-    if (!grow((void **)&dst->terms, &dst->cap, dst->n + 1, sizeof *dst->terms) ||
-        !grow((void **)&dst->pool, &dst->pcap, dst->plen + st->len, sizeof *dst->pool))
+    if (!grow(ctx, (void **)&dst->terms, &dst->cap, dst->n + 1, sizeof *dst->terms) ||
+        !grow(ctx, (void **)&dst->pool, &dst->pcap, dst->plen + st->len, sizeof *dst->pool))
         goto oom;
     qd_pterm *dt = &dst->terms[dst->n];
     dt->off = (uint32_t)dst->plen;
@@ -578,7 +579,7 @@ bool qd_poly_append(qd_ctx *ctx, qd_poly *dst, const qd_poly *src, size_t t, uin
         dt->hash += pair_hash(v.var, v.exp);
     }
     dt->len = (uint32_t)(dst->plen - dt->off);
-    if (!coef_store(dst, &dt->c, cv_get(src, &st->c)))
+    if (!coef_store(ctx, dst, &dt->c, cv_get(src, &st->c)))
         goto oom;
     dst->n++;
     return true;
@@ -588,9 +589,9 @@ oom:
 }
 
 static bool push(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, cval c) {
-    if (!grow((void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
-        !grow((void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool) ||
-        !coef_store(p, &p->terms[p->n].c, c)) {
+    if (!grow(ctx, (void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
+        !grow(ctx, (void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool) ||
+        !coef_store(ctx, p, &p->terms[p->n].c, c)) {
         qd__oom(ctx);
         return false;
     }

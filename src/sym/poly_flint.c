@@ -15,6 +15,7 @@
  * QD_ERR_NOMEM.
  */
 #include "poly.h"
+#include "../base/mem.h"
 
 #include <flint/fmpz_mpoly.h>
 #include <stdlib.h>
@@ -73,10 +74,10 @@ static void scan_exps(fplan *pl, const qd_poly *p, int side) {
 }
 
 static void plan_free(fplan *pl) {
-    free(pl->var);
-    free(pl->slot);
-    free(pl->lo);
-    free(pl->hi);
+    qd__free(pl->var);
+    qd__free(pl->slot);
+    qd__free(pl->lo);
+    qd__free(pl->hi);
     mpz_clears(pl->den[0], pl->den[1], NULL);
     if (pl->has_m)
         fmpz_mpoly_ctx_clear(pl->m);
@@ -84,7 +85,7 @@ static void plan_free(fplan *pl) {
 
 /* Slots, exponent ranges and denominators of x and y (y NULL for a power);
  * -1 out of memory, 0 not for FLINT, 1 ready. */
-static int plan_make(fplan *pl, const qd_poly *x, const qd_poly *y) {
+static int plan_make(qd_ctx *ctx, fplan *pl, const qd_poly *x, const qd_poly *y) {
     uint32_t mv = max_var(x);
     if (y && max_var(y) > mv)
         mv = max_var(y);
@@ -92,8 +93,8 @@ static int plan_make(fplan *pl, const qd_poly *x, const qd_poly *y) {
     mpz_inits(pl->den[0], pl->den[1], NULL);
     if (!scan_coefs(x, pl->den[0]) || (y && !scan_coefs(y, pl->den[1])))
         return 0;
-    pl->slot = calloc((size_t)mv + 1, sizeof *pl->slot);
-    pl->var = malloc(((size_t)mv + 1) * sizeof *pl->var);
+    pl->slot = qd__calloc(ctx, (size_t)mv + 1, sizeof *pl->slot);
+    pl->var = qd__malloc(ctx, ((size_t)mv + 1) * sizeof *pl->var);
     if (!pl->slot || !pl->var)
         return -1;
     for (int s = 0; s < 2; s++) {
@@ -106,8 +107,8 @@ static int plan_make(fplan *pl, const qd_poly *x, const qd_poly *y) {
             pl->var[pl->nv] = v;
             pl->slot[v] = (uint32_t)++pl->nv;
         }
-    pl->lo = calloc(2 * (size_t)pl->nv + 2, sizeof *pl->lo);
-    pl->hi = calloc(2 * (size_t)pl->nv + 2, sizeof *pl->hi);
+    pl->lo = qd__calloc(ctx, 2 * (size_t)pl->nv + 2, sizeof *pl->lo);
+    pl->hi = qd__calloc(ctx, 2 * (size_t)pl->nv + 2, sizeof *pl->hi);
     if (!pl->lo || !pl->hi)
         return -1;
     scan_exps(pl, x, 0);
@@ -236,12 +237,12 @@ static void compute(fmpz_mpoly_t c, fplan *pl, const qd_poly *x, const qd_poly *
 static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, slong max_vars,
                     bool *done) {
     fplan pl;
-    int st = plan_make(&pl, x, y);
+    int st = plan_make(ctx, &pl, x, y);
     if (st > 0 && pl.nv > max_vars)
         st = 0;
-    int64_t *shift = st > 0 ? malloc((size_t)pl.nv * sizeof *shift) : NULL;
-    ulong *e = shift ? malloc((size_t)pl.nv * sizeof *e) : NULL;
-    qd_pvar *m = e ? malloc((size_t)pl.nv * sizeof *m) : NULL;
+    int64_t *shift = st > 0 ? qd__malloc(ctx, (size_t)pl.nv * sizeof *shift) : NULL;
+    ulong *e = shift ? qd__malloc(ctx, (size_t)pl.nv * sizeof *e) : NULL;
+    qd_pvar *m = e ? qd__malloc(ctx, (size_t)pl.nv * sizeof *m) : NULL;
     qd_poly *r = NULL;
     if (st > 0 && !m)
         st = -1;
@@ -257,7 +258,7 @@ static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, slo
         qd__oom(ctx);
         *done = true;
     }
-    free(shift), free(e), free(m);
+    qd__free(shift), qd__free(e), qd__free(m);
     plan_free(&pl);
     return r;
 }

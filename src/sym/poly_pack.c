@@ -11,6 +11,7 @@
  * general way in poly.c.
  */
 #include "poly.h"
+#include "../base/mem.h"
 
 #include <stdlib.h>
 
@@ -113,9 +114,9 @@ static size_t home(const table *tb, uint64_t w) {
     return (size_t)((w * 0x9e3779b97f4a7c15ULL) >> tb->shift);
 }
 
-static bool tb_init(table *tb, size_t cap) {
-    tb->key = malloc(cap * sizeof *tb->key);
-    tb->coef = malloc(cap * sizeof *tb->coef);
+static bool tb_init(qd_ctx *ctx, table *tb, size_t cap) {
+    tb->key = qd__malloc(ctx, cap * sizeof *tb->key);
+    tb->coef = qd__malloc(ctx, cap * sizeof *tb->coef);
     tb->mask = cap - 1;
     tb->len = 0;
     tb->shift = 64;
@@ -129,13 +130,13 @@ static bool tb_init(table *tb, size_t cap) {
 }
 
 static void tb_free(table *tb) {
-    free(tb->key);
-    free(tb->coef);
+    qd__free(tb->key);
+    qd__free(tb->coef);
 }
 
-static bool tb_grow(table *tb) {
+static bool tb_grow(qd_ctx *ctx, table *tb) {
     table nt;
-    if (!tb_init(&nt, 2 * (tb->mask + 1))) {
+    if (!tb_init(ctx, &nt, 2 * (tb->mask + 1))) {
         tb_free(&nt);
         return false;
     }
@@ -155,7 +156,7 @@ static bool tb_grow(table *tb) {
 }
 
 /* 1 done, 0 an int64 overflow (try the general way), -1 out of memory. */
-static int accumulate(table *tb, const uint64_t *wx, const int64_t *cx, size_t nx,
+static int accumulate(qd_ctx *ctx, table *tb, const uint64_t *wx, const int64_t *cx, size_t nx,
                       const uint64_t *wy, const int64_t *cy, size_t ny) {
     for (size_t i = 0; i < nx; i++) {
         for (size_t j = 0; j < ny; j++) {
@@ -173,7 +174,7 @@ static int accumulate(table *tb, const uint64_t *wx, const int64_t *cx, size_t n
             }
             tb->key[s] = w;
             tb->coef[s] = c;
-            if (2 * ++tb->len > tb->mask && !tb_grow(tb))
+            if (2 * ++tb->len > tb->mask && !tb_grow(ctx, tb))
                 return -1;
         }
     }
@@ -201,9 +202,9 @@ static qd_poly *unpack(qd_ctx *ctx, const plan *pl, const table *tb) {
     return r;
 }
 
-static bool pack_all(const plan *pl, const qd_poly *p, int side, uint64_t **w, int64_t **c) {
-    *w = malloc((p->n + 1) * sizeof **w);
-    *c = malloc((p->n + 1) * sizeof **c);
+static bool pack_all(qd_ctx *ctx, const plan *pl, const qd_poly *p, int side, uint64_t **w, int64_t **c) {
+    *w = qd__malloc(ctx, (p->n + 1) * sizeof **w);
+    *c = qd__malloc(ctx, (p->n + 1) * sizeof **c);
     if (!*w || !*c)
         return false;
     for (size_t t = 0; t < p->n; t++) {
@@ -226,24 +227,24 @@ qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, boo
     while (cap < 2 * (x->n > y->n ? x->n : y->n))
         cap *= 2;
     int st = -1;
-    if (pack_all(&pl, x, 0, &wx, &cx) && pack_all(&pl, y, 1, &wy, &cy) && tb_init(&tb, cap))
-        st = accumulate(&tb, wx, cx, x->n, wy, cy, y->n);
+    if (pack_all(ctx, &pl, x, 0, &wx, &cx) && pack_all(ctx, &pl, y, 1, &wy, &cy) && tb_init(ctx, &tb, cap))
+        st = accumulate(ctx, &tb, wx, cx, x->n, wy, cy, y->n);
     if (st > 0)
         r = unpack(ctx, &pl, &tb);
     else if (st < 0)
         qd__oom(ctx);
     *done = st != 0;
-    free(wx), free(wy), free(cx), free(cy);
+    qd__free(wx), qd__free(wy), qd__free(cx), qd__free(cy);
     tb_free(&tb);
     return r;
 }
 
 /* The nonzero entries of tb as arrays (for the next multiplication). */
-static bool harvest(const table *tb, uint64_t **w, int64_t **c, size_t *n) {
-    free(*w);
-    free(*c);
-    *w = malloc((tb->len + 1) * sizeof **w);
-    *c = malloc((tb->len + 1) * sizeof **c);
+static bool harvest(qd_ctx *ctx, const table *tb, uint64_t **w, int64_t **c, size_t *n) {
+    qd__free(*w);
+    qd__free(*c);
+    *w = qd__malloc(ctx, (tb->len + 1) * sizeof **w);
+    *c = qd__malloc(ctx, (tb->len + 1) * sizeof **c);
     if (!*w || !*c)
         return false;
     *n = 0;
@@ -267,14 +268,14 @@ qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done) {
     size_t nx = a->n;
     table tb = {0};
     qd_poly *r = NULL;
-    int st = pack_all(&pl, a, 0, &wa, &ca) && pack_all(&pl, a, 0, &wx, &cx) ? 1 : -1;
+    int st = pack_all(ctx, &pl, a, 0, &wa, &ca) && pack_all(ctx, &pl, a, 0, &wx, &cx) ? 1 : -1;
     for (long k = 1; st > 0 && k < n; k++) {
         size_t cap = 64;
         while (cap < 2 * nx)
             cap *= 2;
         tb_free(&tb);
-        st = tb_init(&tb, cap) ? accumulate(&tb, wx, cx, nx, wa, ca, a->n) : -1;
-        if (st > 0 && k + 1 < n && !harvest(&tb, &wx, &cx, &nx))
+        st = tb_init(ctx, &tb, cap) ? accumulate(ctx, &tb, wx, cx, nx, wa, ca, a->n) : -1;
+        if (st > 0 && k + 1 < n && !harvest(ctx, &tb, &wx, &cx, &nx))
             st = -1;
     }
     if (st > 0)
@@ -282,7 +283,7 @@ qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done) {
     else if (st < 0)
         qd__oom(ctx);
     *done = st != 0;
-    free(wa), free(wx), free(ca), free(cx);
+    qd__free(wa), qd__free(wx), qd__free(ca), qd__free(cx);
     tb_free(&tb);
     return r;
 }

@@ -139,7 +139,13 @@ const qd_expr *qd_pow(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
         const qd_expr *r = qd__num_pow(ctx, b, e, &folded);
         if (folded)
             return r;
-        return qd_is_zero(b) ? NULL : pow_node(ctx, b, e);
+        if (!qd_is_zero(b))
+            return pow_node(ctx, b, e);
+        if (b->kind != QD_RATIONAL) { /* 0.0 to a negative power: inf */
+            qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero: 0 to a negative power");
+            return NULL;
+        }
+        /* exact 0 to a power too large to fold (QD_MAX_FOLD_EXP): below */
     }
     if (qd_is_zero(b) && b->kind == QD_RATIONAL) {
         if (qd__is_num(e) && qd_number_sign(e) > 0)

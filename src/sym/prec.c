@@ -3,6 +3,7 @@
  * printers (see prec.h), and exact spelling of numbers.
  */
 #include "prec.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -43,8 +44,8 @@ bool qd__split(qd_ctx *ctx, const qd_expr *e, qd_split *s) {
     memset(s, 0, sizeof *s);
     size_t n = e->kind == QD_MUL ? e->nargs : 1;
     const qd_expr *const *f = e->kind == QD_MUL ? e->args : &e;
-    s->num = malloc(n * sizeof *s->num);
-    s->den = malloc(n * sizeof *s->den);
+    s->num = qd__malloc(ctx, n * sizeof *s->num);
+    s->den = qd__malloc(ctx, n * sizeof *s->den);
     if (!s->num || !s->den) {
         qd__split_free(s);
         qd__oom(ctx);
@@ -66,15 +67,15 @@ bool qd__split(qd_ctx *ctx, const qd_expr *e, qd_split *s) {
 }
 
 void qd__split_free(qd_split *s) {
-    free(s->num);
-    free(s->den);
+    qd__free(s->num);
+    qd__free(s->den);
     s->num = s->den = NULL;
 }
 
 void qd__put_mpz(qd_buf *b, mpz_srcptr z) {
     char stack[64];
     size_t n = mpz_sizeinbase(z, 10) + 2;
-    char *s = n <= sizeof stack ? stack : malloc(n);
+    char *s = n <= sizeof stack ? stack : qd__mem_malloc(b->alloc, n);
     if (!s) {
         b->failed = true;
         return;
@@ -82,7 +83,7 @@ void qd__put_mpz(qd_buf *b, mpz_srcptr z) {
     mpz_get_str(s, 10, z);
     qd_buf_puts(b, s[0] == '-' ? s + 1 : s);
     if (s != stack)
-        free(s);
+        qd__free(s);
 }
 
 void qd__put_double(qd_buf *b, double v) {

@@ -23,6 +23,7 @@
  * they count as used twice: a compound base becomes a temporary, t1*t1.
  */
 #include "prec.h"
+#include "../base/mem.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -338,7 +339,7 @@ static void count(uses *u, const qd_expr *e) {
         count(u, e->args[0]);
     if (u->n == u->cap) {
         size_t cap = u->cap ? 2 * u->cap : 64;
-        const qd_expr **v = realloc(u->order, cap * sizeof *v);
+        const qd_expr **v = qd__mem_realloc(u->count.al, u->order, cap * sizeof *v);
         if (!v) {
             u->oom = true;
             return;
@@ -373,8 +374,8 @@ qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
             return QD_ERR_ARG;
         }
     }
-    uses u = {QD_PTRMAP_INIT, NULL, 0, 0, false};
-    qd_ptrmap temps = QD_PTRMAP_INIT;
+    uses u = {QD_PTRMAP_AL(qd__ctx_allocator(ctx)), NULL, 0, 0, false};
+    qd_ptrmap temps = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     cp p = {ctx, out, &temps};
     for (size_t i = 0; i < n; i++)
         count(&u, exprs[i]);
@@ -389,7 +390,7 @@ qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
     }
     qd_ptrmap_free(&u.count);
     qd_ptrmap_free(&temps);
-    free(u.order);
+    qd__free(u.order);
     if (out->failed) {
         qd__oom(ctx);
         return QD_ERR_NOMEM;

@@ -86,7 +86,7 @@ static void operand(lp *p, const qd_expr *e, int need) {
 
 static void magnitude_number(lp *p, const qd_expr *e) {
     if (e->kind == QD_FLOAT) {
-        qd_buf tmp = QD_BUF_INIT;
+        qd_buf tmp = QD_BUF_WITH(p->b->alloc);
         qd__put_double(&tmp, fabs(e->u.f));
         const char *s = qd_buf_str(&tmp), *x = strchr(s, 'e');
         qd_buf_putn(p->b, s, x ? (size_t)(x - s) : strlen(s));

@@ -26,6 +26,7 @@
  * Rational(p, q), floats as Float(<shortest round-trip literal>).
  */
 #include "prec.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -265,7 +266,7 @@ static void add_name(fn_names *c, const char *n) {
         return;
     if (c->n == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 8;
-        const char **l = realloc(c->list, cap * sizeof *l);
+        const char **l = qd__mem_realloc(NULL, c->list, cap * sizeof *l);
         if (!l) {
             c->oom = true;
             return;
@@ -305,7 +306,7 @@ qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *const *
     }
     qd_ptrmap_free(&c.seen);
     qd_ptrmap_free(&c.named);
-    free(c.list);
+    qd__free(c.list);
     if (c.oom || out->failed) {
         qd__oom(ctx);
         return QD_ERR_NOMEM;

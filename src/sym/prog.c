@@ -22,6 +22,7 @@
  */
 #include "node.h"
 #include "qdot/eval.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -99,7 +100,7 @@ static void *grow(comp *c, void *arr, size_t *cap, size_t need, size_t size) {
     size_t n = *cap ? 2 * *cap : 64;
     while (n < need)
         n *= 2;
-    void *p = realloc(arr, n * size);
+    void *p = qd__realloc(c->ctx, arr, n * size);
     if (!p) {
         c->oom = true;
         return NULL;
@@ -184,7 +185,7 @@ static bool walk(comp *c, const qd_expr *root) {
         n--;
         ok = add_node(c, e, is_leaf_kind(e) ? LEAF_NUMBER : INNER);
     }
-    free(st);
+    qd__free(st);
     return ok;
 }
 
@@ -487,9 +488,9 @@ static void reassign(qd_prog *p, uint32_t nfixed, size_t *last, uint32_t *map, u
     p->nreg = top;
 }
 
-static bool reuse_registers(qd_prog *p, uint32_t nfixed) {
-    size_t n = p->nreg, *last = calloc(n, sizeof *last);
-    uint32_t *map = malloc(n * sizeof *map), *freel = malloc(n * sizeof *freel);
+static bool reuse_registers(qd_ctx *ctx, qd_prog *p, uint32_t nfixed) {
+    size_t n = p->nreg, *last = qd__calloc(ctx, n, sizeof *last);
+    uint32_t *map = qd__malloc(ctx, n * sizeof *map), *freel = qd__malloc(ctx, n * sizeof *freel);
     bool ok = last && map && freel;
     if (ok) {
         for (size_t j = 0; j < p->ncode; j++) {
@@ -503,9 +504,9 @@ static bool reuse_registers(qd_prog *p, uint32_t nfixed) {
             last[p->out[k]] = SIZE_MAX;
         reassign(p, nfixed, last, map, freel);
     }
-    free(last);
-    free(map);
-    free(freel);
+    qd__free(last);
+    qd__free(map);
+    qd__free(freel);
     return ok;
 }
 
@@ -551,7 +552,7 @@ static bool compile(comp *c, size_t nin, const qd_expr *const *inputs, size_t no
 }
 
 static qd_prog *assemble(comp *c, size_t nout, const qd_expr *const *outputs) {
-    qd_prog *p = calloc(1, sizeof *p);
+    qd_prog *p = qd__calloc(c->ctx, 1, sizeof *p);
     if (!p)
         return NULL;
     p->nin = c->nin;
@@ -562,13 +563,13 @@ static qd_prog *assemble(comp *c, size_t nout, const qd_expr *const *outputs) {
     c->code = NULL;
     p->opnd = c->opnd;
     c->opnd = NULL;
-    p->out = malloc((nout ? nout : 1) * sizeof *p->out);
+    p->out = qd__malloc(c->ctx, (nout ? nout : 1) * sizeof *p->out);
     if (p->out)
         for (size_t k = 0; k < nout; k++)
             p->out[k] = info(c, outputs[k])->val;
     uint32_t nfixed = (uint32_t)(c->nin + c->nconst);
-    if (!p->out || !reuse_registers(p, nfixed) ||
-        !(p->regs = calloc(p->nreg ? p->nreg : 1, sizeof *p->regs))) {
+    if (!p->out || !reuse_registers(c->ctx, p, nfixed) ||
+        !(p->regs = qd__calloc(c->ctx, p->nreg ? p->nreg : 1, sizeof *p->regs))) {
         qd_prog_free(p);
         return NULL;
     }
@@ -587,31 +588,31 @@ qd_prog *qd_prog_new(qd_ctx *ctx, size_t nin, const qd_expr *const *inputs, size
         qd_ctx_error(ctx, QD_ERR_ARG, "a program needs its input and output arrays");
         return NULL;
     }
-    comp c = {.ctx = ctx, .index = QD_PTRMAP_INIT, .nin = nin};
+    comp c = {.ctx = ctx, .index = QD_PTRMAP_AL(qd__ctx_allocator(ctx)), .nin = nin};
     qd_prog *p = NULL;
     if (compile(&c, nin, inputs, nout, outputs))
         p = assemble(&c, nout, outputs);
     if (!p && (c.oom || ctx->status == QD_OK))
         qd__oom(ctx);
     qd_ptrmap_free(&c.index);
-    free(c.nodes);
-    free(c.code);
-    free(c.opnd);
-    free(c.consts);
-    free(c.pos.r);
-    free(c.neg.r);
+    qd__free(c.nodes);
+    qd__free(c.code);
+    qd__free(c.opnd);
+    qd__free(c.consts);
+    qd__free(c.pos.r);
+    qd__free(c.neg.r);
     return p;
 }
 
 void qd_prog_free(qd_prog *p) {
     if (!p)
         return;
-    free(p->code);
-    free(p->opnd);
-    free(p->regs);
-    free(p->consts);
-    free(p->out);
-    free(p);
+    qd__free(p->code);
+    qd__free(p->opnd);
+    qd__free(p->regs);
+    qd__free(p->consts);
+    qd__free(p->out);
+    qd__free(p);
 }
 
 size_t qd_prog_ninstr(const qd_prog *p) { return p ? p->ncode : 0; }

@@ -120,7 +120,7 @@ static size_t column(const rd *p, size_t off) {
 static bool push(rd *p, vec *v, const qd_expr *e) {
     if (v->n == v->cap) {
         size_t cap = v->cap ? 2 * v->cap : 8;
-        const qd_expr **nv = realloc(v->v, cap * sizeof *nv);
+        const qd_expr **nv = qd__realloc(p->ctx, v->v, cap * sizeof *nv);
         if (!nv) {
             qd__oom(p->ctx);
             fail(p, p->tpos, p->tlen, NULL, "out of memory");
@@ -379,7 +379,7 @@ static const qd_expr *uderiv(rd *p, const char *name, size_t off, size_t nprime)
         if (!p->failed)
             r = check(p, qd_uderiv(p->ctx, name, ns, sl, v.n, v.v), off, len);
     }
-    free(v.v);
+    qd__free(v.v);
     return r;
 }
 
@@ -396,7 +396,7 @@ static const qd_expr *call(rd *p, const char *name, size_t off) {
         r = known ? builtin(p, name, off, len, &v)
                   : check(p, qd_ufunc(p->ctx, name, v.n, v.v), off, len);
     }
-    free(v.v);
+    qd__free(v.v);
     return r;
 }
 
@@ -519,7 +519,7 @@ static const qd_expr *product(rd *p) {
     }
     if (ok && !p->failed)
         r = check(p, qd_mul_n(p->ctx, v.n, v.v), p->tpos, 0);
-    free(v.v);
+    qd__free(v.v);
     return r;
 }
 
@@ -550,7 +550,7 @@ static const qd_expr *sum(rd *p) {
     }
     if (ok && !p->failed)
         r = check(p, qd_add_n(p->ctx, v.n, v.v), p->tpos, 0);
-    free(v.v);
+    qd__free(v.v);
     p->nest--;
     return r;
 }

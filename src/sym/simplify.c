@@ -67,7 +67,7 @@ const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
     consider(&b, x);
     x = qd_trigsimp(ctx, x);
     consider(&b, x);
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     bool quotient = x && has_quotient(x, &seen);
     qd_ptrmap_free(&seen);
     const qd_expr *c = NULL;
@@ -80,7 +80,7 @@ const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
     if (b.failed)
         return NULL;
 
-    qd_ptrmap memo = QD_PTRMAP_INIT;
+    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     if (c) {
         consider_if(&b, qd__factor_polys(ctx, x, &memo), true);
         consider_if(&b, qd__factor_polys(ctx, c, &memo), true);

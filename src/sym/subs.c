@@ -13,7 +13,7 @@ const qd_expr *qd_subs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *c
                        const qd_expr *const *to) {
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_INIT;
+    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = e;
     for (size_t i = 0; i < n; i++) {
         if (!from[i] || !to[i]) {

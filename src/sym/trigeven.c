@@ -47,12 +47,12 @@ typedef struct angle {
     const qd_expr *s, *c;
 } angle;
 
-static bool push(vec *v, const qd_expr *e) {
+static bool push(qd_ctx *ctx, vec *v, const qd_expr *e) {
     if (!e)
         return false;
     if (v->n == v->cap) {
         size_t cap = v->cap ? 2 * v->cap : 16;
-        const qd_expr **nv = realloc(v->v, cap * sizeof *nv);
+        const qd_expr **nv = qd__realloc(ctx, v->v, cap * sizeof *nv);
         if (!nv)
             return false;
         v->v = nv;
@@ -124,7 +124,7 @@ static bool split(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, eterm
         return true;
     et->al = a / 2;
     et->be = b / 2;
-    if (!(et->own = malloc(nf * sizeof *et->own)))
+    if (!(et->own = qd__malloc(ctx, nf * sizeof *et->own)))
         return false;
     size_t m = 0;
     for (size_t i = 0; i < nf; i++) {
@@ -176,12 +176,12 @@ static bool form_terms(qd_ctx *ctx, eterm *const *g, size_t n, way w, const angl
                        long deg, vec *out) {
     if (w == KEEP) {
         for (size_t i = 0; i < n; i++)
-            if (!push(out, g[i]->node))
+            if (!push(ctx, out, g[i]->node))
                 return false;
         return true;
     }
     const qd_expr *p[MAX_DEGREE + 1];
-    const qd_expr **fs = malloc((g[0]->nkey + 2) * sizeof *fs);
+    const qd_expr **fs = qd__malloc(ctx, (g[0]->nkey + 2) * sizeof *fs);
     bool ok = fs && poly_form(ctx, g, n, w == ELIM_COS, p, deg);
     for (long d = 0; ok && d <= deg; d++) {
         if (qd_is_zero(p[d]))
@@ -190,9 +190,9 @@ static bool form_terms(qd_ctx *ctx, eterm *const *g, size_t n, way w, const angl
         for (size_t i = 0; i < g[0]->nkey; i++)
             fs[i + 1] = g[0]->key[i];
         fs[g[0]->nkey + 1] = qd_powi(ctx, w == ELIM_COS ? a->s : a->c, 2 * d);
-        ok = fs[g[0]->nkey + 1] && push(out, qd_mul_n(ctx, g[0]->nkey + 2, fs));
+        ok = fs[g[0]->nkey + 1] && push(ctx, out, qd_mul_n(ctx, g[0]->nkey + 2, fs));
     }
-    free(fs);
+    qd__free(fs);
     return ok;
 }
 
@@ -220,7 +220,7 @@ static cost form_cost(qd_ctx *ctx, eterm *const *g, size_t n, way w, const angle
     const qd_expr *s = NULL;
     if (form_terms(ctx, g, n, w, a, deg, &v))
         s = v.n ? qd_add_n(ctx, v.n, v.v) : ctx->zero;
-    free(v.v);
+    qd__free(v.v);
     *ok = *ok && s;
     return s ? cost_of(s) : (cost){0, 0};
 }
@@ -265,7 +265,7 @@ static eterm *find_plain(const qd_expr *sum, eterm *t, const eterm *e) {
  * its shortest form, appended to out; their terms are marked used. */
 static bool rewrite_groups(qd_ctx *ctx, const qd_expr *sum, eterm *t, eterm **act, size_t nact,
                            const angle *a, vec *out, bool *changed) {
-    eterm **grp = malloc((nact + 1) * sizeof *grp);
+    eterm **grp = qd__malloc(ctx, (nact + 1) * sizeof *grp);
     bool ok = grp != NULL;
     for (size_t i = 0, j; ok && i < nact; i = j) {
         long deg = 0;
@@ -286,7 +286,7 @@ static bool rewrite_groups(qd_ctx *ctx, const qd_expr *sum, eterm *t, eterm **ac
             grp[k]->used = true;
         ok = form_terms(ctx, grp, m, f, a, deg, out);
     }
-    free(grp);
+    qd__free(grp);
     return ok;
 }
 
@@ -296,8 +296,8 @@ static const qd_expr *reduce_angle(qd_ctx *ctx, const qd_expr *sum, const angle 
     if (sum->kind != QD_ADD)
         return sum;
     size_t n = sum->nargs, nact = 0;
-    eterm *t = calloc(n, sizeof *t);
-    eterm **act = malloc(n * sizeof *act);
+    eterm *t = qd__calloc(ctx, n, sizeof *t);
+    eterm **act = qd__malloc(ctx, n * sizeof *act);
     vec out = {NULL, 0, 0};
     bool ok = t && act, changed = false;
     for (size_t i = 0; ok && i < n; i++) {
@@ -311,7 +311,7 @@ static const qd_expr *reduce_angle(qd_ctx *ctx, const qd_expr *sum, const angle 
     }
     for (size_t i = 0; ok && changed && i < n; i++)
         if (!t[i].used)
-            ok = push(&out, t[i].node);
+            ok = push(ctx, &out, t[i].node);
     const qd_expr *r = !ok        ? NULL
                        : !changed ? sum
                        : out.n    ? qd_add_n(ctx, out.n, out.v)
@@ -319,10 +319,10 @@ static const qd_expr *reduce_angle(qd_ctx *ctx, const qd_expr *sum, const angle 
     if (!ok && ctx->status == QD_OK)
         qd__oom(ctx);
     for (size_t i = 0; t && i < n; i++)
-        free(t[i].own);
-    free(t);
-    free(act);
-    free(out.v);
+        qd__free(t[i].own);
+    qd__free(t);
+    qd__free(act);
+    qd__free(out.v);
     return r;
 }
 
@@ -345,7 +345,7 @@ static bool collect_angles(qd_ctx *ctx, const qd_expr *sum, angle **out, size_t 
                 continue;
             if (*n == cap) {
                 cap = cap ? 2 * cap : 4;
-                angle *na = realloc(*out, cap * sizeof *na);
+                angle *na = qd__realloc(ctx, *out, cap * sizeof *na);
                 if (!na)
                     return false;
                 *out = na;
@@ -397,17 +397,17 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
     const qd_expr *coeff, *const *fs;
     size_t nf, ne, combos = 1;
     factors(slot, &coeff, &fs, &nf, ctx->one);
-    elim *e = malloc((nf ? nf : 1) * sizeof *e);
+    elim *e = qd__malloc(ctx, (nf ? nf : 1) * sizeof *e);
     if (!e)
         return false;
     ne = squares(fs, nf, g, ng, w, e);
     for (size_t i = 0; i < ne; i++)
         combos *= (size_t)e[i].drop + 1;
     if (ne == 0 || combos > 4096) {
-        free(e);
-        return push(out, *slot);
+        qd__free(e);
+        return push(ctx, out, *slot);
     }
-    const qd_expr **buf = malloc((nf + 2 * ne + 1) * sizeof *buf);
+    const qd_expr **buf = qd__malloc(ctx, (nf + 2 * ne + 1) * sizeof *buf);
     bool ok = buf != NULL;
     for (size_t k = 0; ok && k < combos; k++) {
         size_t m = 1, r = k;
@@ -429,10 +429,10 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
             ok = c && buf[m - 1] && buf[m - 2];
         }
         buf[0] = c;
-        ok = ok && push(out, qd_mul_n(ctx, m, buf));
+        ok = ok && push(ctx, out, qd_mul_n(ctx, m, buf));
     }
-    free(e);
-    free(buf);
+    qd__free(e);
+    qd__free(buf);
     return ok;
 }
 
@@ -448,7 +448,7 @@ static const qd_expr *normal_form(qd_ctx *ctx, const qd_expr *sum, const angle *
     const qd_expr *r = !ok                                  ? NULL
                        : out.n > MAX_GROWTH * sum->nargs + 64 ? sum
                                                               : qd_add_n(ctx, out.n, out.v);
-    free(out.v);
+    qd__free(out.v);
     return r;
 }
 
@@ -467,7 +467,7 @@ const qd_expr *qd__trig_even(qd_ctx *ctx, const qd_expr *sum) {
     if (sum->kind != QD_ADD)
         return sum;
     if (!collect_angles(ctx, sum, &g, &n)) {
-        free(g);
+        qd__free(g);
         if (ctx->status == QD_OK)
             qd__oom(ctx);
         return NULL;
@@ -488,6 +488,6 @@ const qd_expr *qd__trig_even(qd_ctx *ctx, const qd_expr *sum) {
         else if (x != best)
             keep_cheaper(x, &best, &c);
     }
-    free(g);
+    qd__free(g);
     return best;
 }

@@ -165,7 +165,7 @@ static long find_partner(const pass *p, size_t i, const change *ch, size_t nch) 
 static bool emit(pass *p, size_t i, size_t j, const qd_expr *coeff, const change *ch,
                  size_t nch, const qd_expr *extra) {
     const term *t = &p->t[i];
-    const qd_expr **fs = malloc((t->nf + nch + 2) * sizeof *fs);
+    const qd_expr **fs = qd__malloc(p->ctx, (t->nf + nch + 2) * sizeof *fs);
     if (!fs) {
         qd__oom(p->ctx);
         return false;
@@ -183,7 +183,7 @@ static bool emit(pass *p, size_t i, size_t j, const qd_expr *coeff, const change
     if (extra)
         fs[m++] = extra;
     p->out[p->nout] = qd_mul_n(p->ctx, m, fs);
-    free(fs);
+    qd__free(fs);
     p->t[i].dead = p->t[j].dead = true;
     return p->out[p->nout++] != NULL;
 }
@@ -298,9 +298,9 @@ static int try_term(pass *p, size_t i) {
 /* Every argument is a term, the constant too (no factors: 1 - sin^2 = cos^2). */
 static bool load(pass *p, const qd_expr *s) {
     p->n = s->nargs;
-    p->t = calloc(p->n, sizeof *p->t);
-    p->index = malloc(p->n * sizeof *p->index);
-    p->out = malloc((p->n + 1) * sizeof *p->out);
+    p->t = qd__calloc(p->ctx, p->n, sizeof *p->t);
+    p->index = qd__malloc(p->ctx, p->n * sizeof *p->index);
+    p->out = qd__malloc(p->ctx, (p->n + 1) * sizeof *p->out);
     if (!p->t || !p->index || !p->out)
         return false;
     for (size_t i = 0; i < p->n; i++) {
@@ -348,9 +348,9 @@ static const qd_expr *one_pass(qd_ctx *ctx, const qd_expr *s, bool *changed) {
             p.out[p.nout++] = s->args[i];
     r = qd_add_n(ctx, p.nout, p.out);
 done:
-    free(p.t);
-    free(p.index);
-    free(p.out);
+    qd__free(p.t);
+    qd__free(p.index);
+    qd__free(p.out);
     return r;
 }
 
@@ -413,7 +413,7 @@ static const qd_expr *post_trig(qd_ctx *ctx, const qd_expr *e, void *data) {
 const qd_expr *qd_trigsimp(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_INIT;
+    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = qd__map(ctx, e, &memo, post_trig, NULL);
     qd_ptrmap_free(&memo);
     return r;

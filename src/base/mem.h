@@ -1,0 +1,33 @@
+/*
+ * src/base/mem.h - the library's one allocation path (SQLite's malloc.c).
+ *
+ * Every block the library allocates carries, in a small header before it,
+ * the allocator it came from, so it can be resized or freed by whoever holds
+ * it, with or without its context at hand: qd__free needs only the pointer.
+ * A NULL allocator is the C library's.  Memory from this path must be freed
+ * by qd__free, never by free(), and the other way round.
+ *
+ * The qd_ctx forms record QD_ERR_NOMEM in the context when they fail; they
+ * are what the library's modules call.  The qd__mem_ forms are for the base
+ * containers (arena, ptrmap, buf), which know an allocator but no context.
+ */
+#ifndef QD_BASE_MEM_H
+#define QD_BASE_MEM_H
+
+#include <stddef.h>
+#include "qdot/expr.h"
+#include "mem.h"
+
+void *qd__mem_malloc(const qd_allocator *a, size_t size);
+void *qd__mem_calloc(const qd_allocator *a, size_t n, size_t size);
+/* p NULL: a fresh block from a; otherwise p's own allocator (a unused). */
+void *qd__mem_realloc(const qd_allocator *a, void *p, size_t size);
+void qd__free(void *p);  /* NULL is fine */
+
+const qd_allocator *qd__ctx_allocator(const qd_ctx *ctx);
+void *qd__malloc(qd_ctx *ctx, size_t size);
+void *qd__calloc(qd_ctx *ctx, size_t n, size_t size);
+void *qd__realloc(qd_ctx *ctx, void *p, size_t size);
+char *qd__strdup(qd_ctx *ctx, const char *s);
+
+#endif
