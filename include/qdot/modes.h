@@ -113,6 +113,17 @@ QD_API qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr 
 QD_API qd_status qd_modes_symbolic_omega2(qd_ctx *ctx, size_t n, const qd_expr *const *K,
                                    const qd_expr *const *M, const qd_expr **w2);
 
+/* The exact w^2 of the n = 1 or 2 modes about an exact point q0 (an
+ * equilibrium's exact values): in the parameters (*in_params true) when q0
+ * is an equilibrium whatever their values
+ * (qd_equilibrium_exact_in_parameters), else exact numbers with every
+ * parameter at its exact value.  syms/vals: the parameters' values, for
+ * that test.  QD_ERR_ARG for n > 2 or q0 NULL. */
+QD_API qd_status qd_modes_exact_omega2(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                       size_t nvals, const qd_expr *const *syms,
+                                       const double *vals, const qd_expr *const *q0,
+                                       const qd_expr **w2, bool *in_params);
+
 #ifdef __cplusplus
 }
 #endif
