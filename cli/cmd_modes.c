@@ -11,12 +11,9 @@
  * Q = a^T M0 (q - q0).
  *
  * Without --about or --at-equilibrium libqdot chooses the equilibrium
- * (qd_equilibria_choose): Newton from
- * the model's `initial` state when it has one, and among that point and
- * every equilibrium found, a minimum of the potential (no negative
- * direction; rigid motions give zero ones) nearest the initial state, or of
- * lowest V without one.  The choice and how many others there are is said
- * (stderr in text; JSON "choice").
+ * (qd_equilibria_choose: a minimum of the potential nearest the model's
+ * `initial` state, or of lowest V without one); this file says which and
+ * how many others there are (stderr in text; JSON "choice").
  */
 #include "linear_cli.h"
 

@@ -9,8 +9,9 @@
  * must oscillate about the equilateral triangle, not about the first (a
  * collinear, unstable) configuration in the sorted list.
  *
- * Allocations (for the context allocator): work_init (calloc x3),
- * exact_in_parameters (calloc x3); each freed before return.
+ * Allocations (for the context allocator): work_init (calloc x2),
+ * qd_equilibria_choose (calloc x2), qd_equilibrium_exact_in_parameters
+ * (calloc x3); each freed before return.
  */
 #include "qdot/equilibria.h"
 
@@ -27,6 +28,8 @@
 /* The equations at an exact point vanish when |F| is this small against
  * the sum of its terms' sizes. */
 #define ZERO_TOL 1e-9
+
+static const double PI = 3.14159265358979323846;
 
 /* The caller's values with the equations' coordinates movable: the slot in
  * syms of each q_j and q'_j (SIZE_MAX when absent). */
@@ -108,25 +111,31 @@ static double potential_at(qd_ctx *ctx, const qd_model *m, work *w, const double
     return v;
 }
 
-static double dist2(size_t n, const double *a, const double *b) {
-    double d = 0;
-    for (size_t j = 0; j < n; j++)
-        d += (a[j] - b[j]) * (a[j] - b[j]);
-    return d;
-}
-
 typedef struct chooser {
     qd_ctx *ctx;
     const qd_model *m;
     work w;
     const double *init;   /* NULL: the model gives no initial state */
+    bool *angle;          /* n: angles are compared modulo 2 pi */
 } chooser;
+
+/* a_j - b_j, angles modulo 2 pi: Newton from th = 3 stops at pi + 1e-16,
+ * which wraps to -pi + 1e-16, the same point as the listed pi. */
+static double gap(const chooser *c, size_t j, double a, double b) {
+    return c->angle[j] ? remainder(a - b, 2 * PI) : a - b;
+}
+
+static double dist2(const chooser *c, const double *a, const double *b) {
+    double d = 0;
+    for (size_t j = 0; j < c->w.n; j++)
+        d += gap(c, j, a[j], b[j]) * gap(c, j, a[j], b[j]);
+    return d;
+}
 
 /* a better than b: nearer the initial state, or lower V without one. */
 static bool better(chooser *c, const qd_equilibrium *a, const qd_equilibrium *b) {
-    size_t n = c->w.n;
     if (c->init)
-        return dist2(n, a->q, c->init) < dist2(n, b->q, c->init) * (1 - TIE_TOL);
+        return dist2(c, a->q, c->init) < dist2(c, b->q, c->init) * (1 - TIE_TOL);
     double vb = potential_at(c->ctx, c->m, &c->w, b->q);
     return potential_at(c->ctx, c->m, &c->w, a->q) < vb - TIE_TOL * fabs(vb);
 }
@@ -139,14 +148,15 @@ static bool minimum_like(const qd_equilibrium *p) {
 
 /* The listed equilibrium that Newton from the initial state reached, if
  * it is one of them (it carries the exact values), else Newton's point. */
-static const qd_equilibrium *reached(const qd_equilibrium_choice *ch) {
+static const qd_equilibrium *reached(const chooser *c, const qd_equilibrium_choice *ch) {
     if (!ch->from_initial.count)
         return NULL;
     const qd_equilibrium *p = &ch->from_initial.pts[0];
     for (size_t k = 0; k < ch->found.count; k++) {
         bool same = true;
         for (size_t j = 0; j < ch->found.n && same; j++)
-            same = fabs(ch->found.pts[k].q[j] - p->q[j]) <= SAME_TOL * (1 + fabs(p->q[j]));
+            same = fabs(gap(c, j, ch->found.pts[k].q[j], p->q[j])) <=
+                   SAME_TOL * (1 + fabs(p->q[j]));
         if (same)
             return &ch->found.pts[k];
     }
@@ -155,7 +165,7 @@ static const qd_equilibrium *reached(const qd_equilibrium_choice *ch) {
 
 static void pick(chooser *c, qd_equilibrium_choice *ch) {
     const qd_equilibria *eq = &ch->found;
-    const qd_equilibrium *best = NULL, *start = reached(ch);
+    const qd_equilibrium *best = NULL, *start = reached(c, ch);
     if (start && minimum_like(start))
         best = start;
     for (size_t k = 0; k < eq->count; k++)
@@ -182,12 +192,18 @@ qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, 
     if (st != QD_OK)
         return st;
     chooser c = {.ctx = ctx, .m = m};
-    double *init = calloc(e->n + 1, sizeof *init);
-    if (!init || !work_init(&c.w, e, nvals, syms, vals)) {
+    size_t n = e->n;
+    /* init, then the box qd_equilibria_default_box fills beside the angle flags */
+    double *init = calloc(3 * n + 1, sizeof *init);
+    c.angle = calloc(n + 1, sizeof *c.angle);
+    if (!init || !c.angle || !work_init(&c.w, e, nvals, syms, vals)) {
         free(init);
+        free(c.angle);
         work_free(&c.w);
         return QD_ERR_NOMEM;
     }
+    if (qd_equilibria_default_box(ctx, e, m, c.angle, init + n, init + 2 * n) != QD_OK)
+        qd_ctx_clear_error(ctx); /* no angles known: plain distances */
     if (initial_state(ctx, e, m, &c.w, init)) {
         c.init = init;
         qd_equilibria_opts o = {.near = init};
@@ -196,6 +212,7 @@ qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, 
     }
     pick(&c, out);
     free(init);
+    free(c.angle);
     work_free(&c.w);
     return QD_OK;
 }
