@@ -155,14 +155,9 @@ static int linearize(modes_run *r) {
     cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
     cli_lin_set_state(lr, r->q0, NULL);
-    double *f = calloc(n + 1, sizeof *f), *M = calloc(n * n + 1, sizeof *M);
-    if (f && M && qd_eom_eval(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals, M, f, NULL,
-                              NULL, NULL) == QD_OK)
-        for (size_t j = 0; j < n; j++)
-            r->residual = fmax(r->residual, fabs(f[j]));
-    qd_ctx_clear_error(lr->ctx);
-    free(f);
-    free(M);
+    if (qd_eom_rest_residual(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals,
+                             &r->residual) != QD_OK)
+        qd_ctx_clear_error(lr->ctx);
     if (qd_linear_about(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
                         &r->lin) != QD_OK ||
         qd_modes_solve(lr->ctx, &r->lin, &r->res) != QD_OK) {
@@ -194,14 +189,8 @@ static int initial(modes_run *r, const char *text) {
         memcpy(q, r->q0, n * sizeof *q);
         rc = cli_lin_point(lr, "--initial", text, q, qd);
     }
-    /* Q_j = a_j^T M0 (q - q0) */
-    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++)
-        for (size_t i = 0; i < n; i++)
-            for (size_t k = 0; k < n; k++) {
-                double w = r->res.shapes[i * n + j] * r->lin.M[i * n + k];
-                r->Q[j] += w * (q[k] - r->q0[k]);
-                r->Qd[j] += w * qd[k];
-            }
+    if (rc == QD_EXIT_OK)
+        qd_modes_normal_coords(&r->lin, &r->res, r->q0, q, qd, r->Q, r->Qd);
     free(q);
     free(qd);
     return rc;
@@ -369,27 +358,11 @@ static void json_frequencies(modes_run *r, cli_json *j) {
     const qd_modes_result *res = &r->res;
     cli_json_key(j, "frequencies");
     cli_json_begin_array(j);
-    if (res->conservative) {
-        for (size_t k = 0; k < res->n; k++)
-            if (res->omega2[k] >= 0)
-                cli_json_number(j, sqrt(res->omega2[k]));
-    } else {
-        double *w = malloc((res->neig + 1) * sizeof *w);
-        size_t nw = 0;
-        for (size_t k = 0; w && k < res->neig; k++)
-            if (res->eig_im[k] > 0)
-                w[nw++] = res->eig_im[k];
-        for (size_t a = 0; a < nw; a++)
-            for (size_t c = a + 1; c < nw; c++)
-                if (w[c] < w[a]) {
-                    double t = w[a];
-                    w[a] = w[c];
-                    w[c] = t;
-                }
-        for (size_t k = 0; k < nw; k++)
-            cli_json_number(j, w[k]);
-        free(w);
-    }
+    double *w = malloc((res->neig + 1) * sizeof *w);
+    size_t nw = w ? qd_modes_frequencies(res, w) : 0;
+    for (size_t k = 0; k < nw; k++)
+        cli_json_number(j, w[k]);
+    free(w);
     cli_json_end_array(j);
 }
 

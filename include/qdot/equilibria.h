@@ -129,6 +129,14 @@ QD_API qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_mod
                                       const double *vals, qd_equilibrium_choice *out);
 QD_API void qd_equilibrium_choice_free(qd_equilibrium_choice *c);
 
+/* max_j |f_j| at the state syms/vals (as for qd_eom_eval; give the
+ * velocities as 0 for a point at rest): how far the point is from an
+ * equilibrium, in generalized-force units.  Fails as qd_eom_eval does (a
+ * singular M too), *res 0 then. */
+QD_API qd_status qd_eom_rest_residual(qd_ctx *ctx, const qd_eom *e, size_t nvals,
+                                      const qd_expr *const *syms, const double *vals,
+                                      double *res);
+
 /* Is the exact point q0 (n expressions, e.g. an equilibrium's exact
  * values) an equilibrium whatever the parameters' values?  theta = 0 of a
  * bead on a spinning hoop is; cos theta = g/(a w^2) solved at g = 9.81 is
