@@ -10,12 +10,10 @@
  * gives the motion from initial values through the normal coordinates
  * Q = a^T M0 (q - q0).
  *
- * Without --about or --at-equilibrium the equilibrium is chosen: Newton from
- * the model's `initial` state when it has one, and among that point and
- * every equilibrium found, a minimum of the potential (no negative
- * direction; rigid motions give zero ones) nearest the initial state, or of
- * lowest V without one.  The choice and how many others there are is said
- * (stderr in text; JSON "choice").
+ * Without --about or --at-equilibrium libqdot chooses the equilibrium
+ * (qd_equilibria_choose: a minimum of the potential nearest the model's
+ * `initial` state, or of lowest V without one); this file says which and
+ * how many others there are (stderr in text; JSON "choice").
  */
 #include "linear_cli.h"
 
@@ -37,11 +35,9 @@ typedef struct modes_args {
 
 typedef struct modes_run {
     cli_lin_run lr;
-    qd_equilibria eq;
-    qd_equilibria eq_init;      /* Newton from the model's initial state */
+    qd_equilibrium_choice ch;   /* found: the list (--at-equilibrium, automatic choice) */
     const qd_equilibrium *pt;   /* NULL with --about */
     const char *why;            /* how pt was chosen (automatic choice only) */
-    size_t others;              /* other equilibria found then */
     bool sym_exact;             /* w2sym is in the parameters (else exact numbers) */
     double *q0;
     qd_linear lin;
@@ -90,200 +86,68 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     return cli_bad_option(argv[*i], usage_text);
 }
 
-/* The model's initial values of the equations' coordinates; false when it
- * gives none. */
-static bool initial_state(modes_run *r, double *q) {
+/* What the library's automatic choice means, for the note and JSON. */
+static const char *chosen_why(qd_eq_chosen c) {
+    switch (c) {
+    case QD_EQ_CHOSEN_NEAREST_MINIMUM:
+        return "the minimum of the potential nearest the model's initial state";
+    case QD_EQ_CHOSEN_LOWEST_MINIMUM:
+        return "the minimum of the potential with the lowest V";
+    case QD_EQ_CHOSEN_NEWTON_FROM_INITIAL:
+        return "no minimum of the potential was found: the equilibrium reached by Newton's "
+               "method from the model's initial state";
+    default:
+        return "no minimum of the potential was found: the first equilibrium listed";
+    }
+}
+
+static int no_equilibrium(void) {
+    cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
+                  "--about");
+    return QD_EXIT_FAIL;
+}
+
+static int choose_auto(modes_run *r) {
     cli_lin_run *lr = &r->lr;
-    bool any = false;
-    for (size_t j = 0; j < lr->e->n; j++) {
-        const qd_expr *x = qd_model_initial(lr->mf.model, lr->slot[j], 0);
-        q[j] = 0;
-        if (x && qd_eval(lr->ctx, x, lr->st.n, lr->st.syms, lr->st.vals, &q[j]) == QD_OK &&
-            isfinite(q[j]))
-            any = true;
-        else
-            q[j] = 0;
-        qd_ctx_clear_error(lr->ctx);
+    if (qd_equilibria_choose(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
+                             &r->ch) != QD_OK) {
+        cli_diag_error("%s", qd_ctx_message(lr->ctx));
+        return QD_EXIT_FAIL;
     }
-    return any;
+    if (!r->ch.pt)
+        return no_equilibrium();
+    r->pt = r->ch.pt;
+    r->why = chosen_why(r->ch.reason);
+    return QD_EXIT_OK;
 }
 
-static double potential_at(modes_run *r, const double *q) {
-    cli_lin_run *lr = &r->lr;
-    const qd_expr *V = qd_model_potential(lr->mf.model);
-    double v = 0;
-    cli_lin_set_state(lr, q, NULL);
-    if (!V || qd_eval(lr->ctx, V, lr->st.n, lr->st.syms, lr->st.vals, &v) != QD_OK ||
-        !isfinite(v))
-        v = 0;
-    qd_ctx_clear_error(lr->ctx);
-    return v;
-}
-
-static double dist2(size_t n, const double *a, const double *b) {
-    double d = 0;
-    for (size_t j = 0; j < n; j++)
-        d += (a[j] - b[j]) * (a[j] - b[j]);
-    return d;
-}
-
-/* The better of two minima: nearer the initial state, or lower V. */
-static bool better(modes_run *r, const qd_equilibrium *a, const qd_equilibrium *b,
-                   const double *init) {
-    size_t n = r->lr.e->n;
-    if (init)
-        return dist2(n, a->q, init) < dist2(n, b->q, init) * (1 - 1e-12);
-    return potential_at(r, a->q) < potential_at(r, b->q) - 1e-12 * fabs(potential_at(r, b->q));
-}
-
-/* A minimum of the potential up to directions of zero stiffness (rigid
- * motions of a free system): no negative direction, some positive one. */
-static bool minimum_like(const qd_equilibrium *p) {
-    return p->nneg == 0 && (p->npos > 0 || p->nzero == 0);
-}
-
-/* The automatic choice (see the head comment). */
-/* The listed equilibrium that Newton from the initial state reached, if it
- * is one of them (it carries the exact values). */
-static const qd_equilibrium *reached(modes_run *r) {
-    if (!r->eq_init.count)
-        return NULL;
-    const qd_equilibrium *p = &r->eq_init.pts[0];
-    size_t n = r->lr.e->n;
-    for (size_t k = 0; k < r->eq.count; k++) {
-        bool same = true;
-        for (size_t j = 0; j < n && same; j++)
-            same = fabs(r->eq.pts[k].q[j] - p->q[j]) <= 1e-7 * (1 + fabs(p->q[j]));
-        if (same)
-            return &r->eq.pts[k];
+static int choose_listed(modes_run *r, long k) {
+    const qd_equilibria *eq = &r->ch.found;
+    int rc = cli_lin_equilibria(&r->lr, NULL, NULL, &r->ch.found);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (eq->count == 0)
+        return no_equilibrium();
+    if ((size_t)k > eq->count) {
+        cli_diag_error("--at-equilibrium %ld: there %s %zu equilibri%s", k,
+                      eq->count == 1 ? "is" : "are", eq->count, eq->count == 1 ? "um" : "a");
+        return QD_EXIT_USAGE;
     }
-    return p;
-}
-
-static void choose_auto(modes_run *r, const double *init) {
-    const qd_equilibrium *best = NULL, *start = reached(r);
-    if (start && minimum_like(start))
-        best = start;
-    for (size_t k = 0; k < r->eq.count; k++)
-        if (minimum_like(&r->eq.pts[k]) && (!best || better(r, &r->eq.pts[k], best, init)))
-            best = &r->eq.pts[k];
-    if (best) {
-        r->why = init ? "the minimum of the potential nearest the model's initial state"
-                      : "the minimum of the potential with the lowest V";
-    } else if (start) {
-        best = start;
-        r->why = "no minimum of the potential was found: the equilibrium reached by Newton's "
-                 "method from the model's initial state";
-    } else {
-        best = &r->eq.pts[0];
-        r->why = "no minimum of the potential was found: the first equilibrium listed";
-    }
-    r->pt = best;
-    r->others = r->eq.count - (best >= r->eq.pts && best < r->eq.pts + r->eq.count);
+    r->pt = &eq->pts[k - 1];
+    return QD_EXIT_OK;
 }
 
 static int choose_point(modes_run *r, const modes_args *a) {
     size_t n = r->lr.e->n;
     r->q0 = calloc(n + 1, sizeof *r->q0);
-    double *init = calloc(n + 1, sizeof *init);
-    if (!r->q0 || !init) {
-        free(init);
+    if (!r->q0)
         return QD_EXIT_FAIL;
-    }
-    int rc = QD_EXIT_OK;
-    if (a->about) {
-        rc = cli_lin_coords(&r->lr, "--about", a->about, r->q0);
-        free(init);
-        return rc;
-    }
-    rc = cli_lin_equilibria(&r->lr, NULL, NULL, &r->eq);
-    bool have_init = rc == QD_EXIT_OK && !a->at_eq && initial_state(r, init);
-    if (have_init) {
-        qd_equilibria_opts o = {.near = init};
-        if (qd_equilibria_find(r->lr.ctx, r->lr.e, r->lr.mf.model, r->lr.st.n, r->lr.st.syms,
-                               r->lr.st.vals, &o, &r->eq_init) != QD_OK)
-            qd_ctx_clear_error(r->lr.ctx);
-    }
-    if (rc == QD_EXIT_OK && r->eq.count == 0 && r->eq_init.count == 0) {
-        cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
-                      "--about");
-        rc = QD_EXIT_FAIL;
-    } else if (rc == QD_EXIT_OK && a->at_eq) {
-        if ((size_t)a->at_eq > r->eq.count) {
-            cli_diag_error("--at-equilibrium %ld: there %s %zu equilibri%s", a->at_eq,
-                          r->eq.count == 1 ? "is" : "are", r->eq.count,
-                          r->eq.count == 1 ? "um" : "a");
-            rc = QD_EXIT_USAGE;
-        } else {
-            r->pt = &r->eq.pts[a->at_eq - 1];
-        }
-    } else if (rc == QD_EXIT_OK) {
-        choose_auto(r, have_init ? init : NULL);
-    }
+    if (a->about)
+        return cli_lin_coords(&r->lr, "--about", a->about, r->q0);
+    int rc = a->at_eq ? choose_listed(r, a->at_eq) : choose_auto(r);
     if (rc == QD_EXIT_OK)
         memcpy(r->q0, r->pt->q, n * sizeof *r->q0);
-    free(init);
     return rc;
-}
-
-/* Is the exact equilibrium free of the parameters' values (theta = 0, pi),
- * so that w^2 is a formula in the parameters?  acos(g/(a w^2)) taken at
- * g = 9.81 is not: F(q0) stays 0 when the parameters change only in the
- * first case. */
-static bool exact_in_parameters(modes_run *r) {
-    cli_lin_run *lr = &r->lr;
-    const qd_eom *e = lr->e;
-    size_t n = e->n, nq = qd_model_ncoords(lr->mf.model);
-    const qd_expr **from = calloc(2 * n + 1, sizeof *from), **to = calloc(2 * n + 1, sizeof *to);
-    double *saved = malloc((lr->st.n + 1) * sizeof *saved);
-    bool ok = from && to && saved;
-    for (size_t j = 0; ok && j < n; j++) {
-        from[j] = e->q[j];
-        to[j] = r->pt->exact[j];
-        from[n + j] = e->qd[j];
-        to[n + j] = qd_int(lr->ctx, 0);
-    }
-    if (ok)
-        memcpy(saved, lr->st.vals, lr->st.n * sizeof *saved);
-    /* the parameters (after the coordinates, velocities and t) moved off their values */
-    for (size_t i = 2 * nq + 1; ok && i < lr->st.n; i++)
-        lr->st.vals[i] = lr->st.vals[i] * 1.37 + 0.11;
-    for (size_t j = 0; ok && j < n; j++) {
-        const qd_expr *f = qd_expand(lr->ctx, qd_subs(lr->ctx, e->f[j], 2 * n, from, to));
-        double v = 0, size = 0, t;
-        ok = f && qd_eval(lr->ctx, f, lr->st.n, lr->st.syms, lr->st.vals, &v) == QD_OK;
-        size_t nt = f && qd_expr_kind(f) == QD_ADD ? qd_expr_nargs(f) : 1;
-        for (size_t k = 0; ok && k < nt; k++)
-            if (qd_eval(lr->ctx, nt > 1 ? qd_expr_arg(f, k) : f, lr->st.n, lr->st.syms,
-                        lr->st.vals, &t) == QD_OK)
-                size += fabs(t);
-        ok = ok && fabs(v) <= 1e-9 * size;
-    }
-    qd_ctx_clear_error(lr->ctx);
-    if (saved)
-        memcpy(lr->st.vals, saved, lr->st.n * sizeof *saved);
-    free(from);
-    free(to);
-    free(saved);
-    return ok;
-}
-
-/* w^2 at the parameters' values, simplified: an exact number. */
-static const qd_expr *at_values(modes_run *r, const qd_expr *w2) {
-    const qd_model *m = r->lr.mf.model;
-    size_t np = qd_model_nparams(m);
-    const qd_expr **from = calloc(np + 1, sizeof *from), **to = calloc(np + 1, sizeof *to);
-    const qd_expr *out = NULL;
-    bool ok = from && to;
-    for (size_t i = 0; ok && i < np; i++) {
-        from[i] = qd_model_param(m, i);
-        ok = (to[i] = qd_model_param_value(m, i)) != NULL;
-    }
-    if (ok)
-        out = qd_simplify(r->lr.ctx, qd_subs(r->lr.ctx, w2, np, from, to));
-    free(from);
-    free(to);
-    return out;
 }
 
 /* The state at q0, at rest; the residual of the equations there. */
@@ -291,14 +155,9 @@ static int linearize(modes_run *r) {
     cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
     cli_lin_set_state(lr, r->q0, NULL);
-    double *f = calloc(n + 1, sizeof *f), *M = calloc(n * n + 1, sizeof *M);
-    if (f && M && qd_eom_eval(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals, M, f, NULL,
-                              NULL, NULL) == QD_OK)
-        for (size_t j = 0; j < n; j++)
-            r->residual = fmax(r->residual, fabs(f[j]));
-    qd_ctx_clear_error(lr->ctx);
-    free(f);
-    free(M);
+    if (qd_eom_rest_residual(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals,
+                             &r->residual) != QD_OK)
+        qd_ctx_clear_error(lr->ctx);
     if (qd_linear_about(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
                         &r->lin) != QD_OK ||
         qd_modes_solve(lr->ctx, &r->lin, &r->res) != QD_OK) {
@@ -306,13 +165,9 @@ static int linearize(modes_run *r) {
         return QD_EXIT_FAIL;
     }
     if (r->pt && r->pt->exact && n <= 2 && r->res.conservative) {
-        const qd_expr *K[4], *Mx[4];
-        if (qd_linear_symbolic(lr->ctx, lr->e, r->pt->exact, K, Mx) == QD_OK &&
-            qd_modes_symbolic_omega2(lr->ctx, n, K, Mx, r->w2sym) == QD_OK)
-            r->have_sym = true;
-        r->sym_exact = r->have_sym && exact_in_parameters(r);
-        for (size_t j = 0; r->have_sym && !r->sym_exact && j < n; j++)
-            r->have_sym = (r->w2sym[j] = at_values(r, r->w2sym[j])) != NULL;
+        r->have_sym = qd_modes_exact_omega2(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms,
+                                            lr->st.vals, r->pt->exact, r->w2sym,
+                                            &r->sym_exact) == QD_OK;
         qd_ctx_clear_error(lr->ctx);
     }
     return QD_EXIT_OK;
@@ -334,14 +189,8 @@ static int initial(modes_run *r, const char *text) {
         memcpy(q, r->q0, n * sizeof *q);
         rc = cli_lin_point(lr, "--initial", text, q, qd);
     }
-    /* Q_j = a_j^T M0 (q - q0) */
-    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++)
-        for (size_t i = 0; i < n; i++)
-            for (size_t k = 0; k < n; k++) {
-                double w = r->res.shapes[i * n + j] * r->lin.M[i * n + k];
-                r->Q[j] += w * (q[k] - r->q0[k]);
-                r->Qd[j] += w * qd[k];
-            }
+    if (rc == QD_EXIT_OK)
+        qd_modes_normal_coords(&r->lin, &r->res, r->q0, q, qd, r->Q, r->Qd);
     free(q);
     free(qd);
     return rc;
@@ -509,27 +358,11 @@ static void json_frequencies(modes_run *r, cli_json *j) {
     const qd_modes_result *res = &r->res;
     cli_json_key(j, "frequencies");
     cli_json_begin_array(j);
-    if (res->conservative) {
-        for (size_t k = 0; k < res->n; k++)
-            if (res->omega2[k] >= 0)
-                cli_json_number(j, sqrt(res->omega2[k]));
-    } else {
-        double *w = malloc((res->neig + 1) * sizeof *w);
-        size_t nw = 0;
-        for (size_t k = 0; w && k < res->neig; k++)
-            if (res->eig_im[k] > 0)
-                w[nw++] = res->eig_im[k];
-        for (size_t a = 0; a < nw; a++)
-            for (size_t c = a + 1; c < nw; c++)
-                if (w[c] < w[a]) {
-                    double t = w[a];
-                    w[a] = w[c];
-                    w[c] = t;
-                }
-        for (size_t k = 0; k < nw; k++)
-            cli_json_number(j, w[k]);
-        free(w);
-    }
+    double *w = malloc((res->neig + 1) * sizeof *w);
+    size_t nw = w ? qd_modes_frequencies(res, w) : 0;
+    for (size_t k = 0; k < nw; k++)
+        cli_json_number(j, w[k]);
+    free(w);
     cli_json_end_array(j);
 }
 
@@ -604,7 +437,7 @@ static void put_json(modes_run *r, qd_buf *b) {
         cli_json_key(&j, "reason");
         cli_json_string(&j, r->why);
         cli_json_key(&j, "others");
-        cli_json_number(&j, (double)r->others);
+        cli_json_number(&j, (double)r->ch.others);
         cli_json_end_object(&j);
     }
     cli_json_key(&j, "conservative");
@@ -642,10 +475,11 @@ static void note_choice(const modes_run *r) {
     for (size_t j = 0; j < r->lr.e->n; j++)
         fprintf(stderr, "%s%s = %.12g", j ? ", " : "", qd_expr_name(r->lr.e->q[j]), r->pt->q[j]);
     fprintf(stderr, ", %s", r->why);
-    if (r->others)
+    size_t others = r->ch.others;
+    if (others)
         fprintf(stderr, "; %zu other equilibri%s found%s (qdot equilibria lists them; choose with "
-                "--at-equilibrium N or --about)", r->others, r->others == 1 ? "um" : "a",
-                r->eq.continuum ? ", not isolated" : "");
+                "--at-equilibrium N or --about)", others, others == 1 ? "um" : "a",
+                r->ch.found.continuum ? ", not isolated" : "");
     fprintf(stderr, "\n");
 }
 
@@ -683,8 +517,7 @@ int cli_cmd_modes(int argc, char **argv) {
     free(r.Qd);
     qd_linear_free(&r.lin);
     qd_modes_result_free(&r.res);
-    qd_equilibria_free(&r.eq);
-    qd_equilibria_free(&r.eq_init);
+    qd_equilibrium_choice_free(&r.ch);
     cli_lin_free(&r.lr);
     qd_ctx_free(r.lr.ctx);
     return rc;

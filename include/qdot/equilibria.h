@@ -90,6 +90,62 @@ QD_API qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model
                              const qd_equilibria_opts *opts, qd_equilibria *out);
 QD_API void qd_equilibria_free(qd_equilibria *r);
 
+/* Which equilibrium to use when the caller names none (small oscillations
+ * with no point given).  Among the equilibria found (qd_equilibria_find with
+ * default options) and the point Newton reaches from the model's `initial`
+ * state (when it has one), a minimum of the potential up to rigid motions
+ * (no negative stiffness direction; zero ones allowed when some are
+ * positive) is preferred:
+ *   QD_EQ_CHOSEN_NEAREST_MINIMUM      the minimum nearest the initial state;
+ *   QD_EQ_CHOSEN_LOWEST_MINIMUM       no initial state: the minimum of lowest V;
+ *   QD_EQ_CHOSEN_NEWTON_FROM_INITIAL  no minimum: where Newton from the
+ *                                     initial state went;
+ *   QD_EQ_CHOSEN_FIRST_LISTED         no minimum, no initial state: found.pts[0].
+ * Ties (relative 1e-12) keep the first listed.  Newton's point is replaced
+ * by the listed equilibrium it matches (relative 1e-7), which carries the
+ * exact values. */
+typedef enum qd_eq_chosen {
+    QD_EQ_CHOSEN_NEAREST_MINIMUM,
+    QD_EQ_CHOSEN_LOWEST_MINIMUM,
+    QD_EQ_CHOSEN_NEWTON_FROM_INITIAL,
+    QD_EQ_CHOSEN_FIRST_LISTED
+} qd_eq_chosen;
+
+typedef struct qd_equilibrium_choice {
+    qd_equilibria found;        /* every equilibrium found */
+    qd_equilibria from_initial; /* Newton from the initial state (count 0: none or failed) */
+    const qd_equilibrium *pt;   /* the choice, into found or from_initial; NULL when both
+                                   are empty */
+    qd_eq_chosen reason;
+    size_t others;              /* how many of found are not pt */
+} qd_equilibrium_choice;
+
+/* Find and choose (see qd_equilibrium_choice); syms/vals as for
+ * qd_equilibria_find (the initial values are evaluated with them).  QD_OK
+ * with pt NULL when there is no equilibrium; a failure of the search is
+ * returned.  Free with qd_equilibrium_choice_free (also after a failure). */
+QD_API qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                      size_t nvals, const qd_expr *const *syms,
+                                      const double *vals, qd_equilibrium_choice *out);
+QD_API void qd_equilibrium_choice_free(qd_equilibrium_choice *c);
+
+/* max_j |f_j| at the state syms/vals (as for qd_eom_eval; give the
+ * velocities as 0 for a point at rest): how far the point is from an
+ * equilibrium, in generalized-force units.  Fails as qd_eom_eval does (a
+ * singular M too), *res 0 then. */
+QD_API qd_status qd_eom_rest_residual(qd_ctx *ctx, const qd_eom *e, size_t nvals,
+                                      const qd_expr *const *syms, const double *vals,
+                                      double *res);
+
+/* Is the exact point q0 (n expressions, e.g. an equilibrium's exact
+ * values) an equilibrium whatever the parameters' values?  theta = 0 of a
+ * bead on a spinning hoop is; cos theta = g/(a w^2) solved at g = 9.81 is
+ * not.  Tested numerically: every model parameter in syms is moved off its
+ * value in vals and F(q0) must stay 0 (relative 1e-9 against its terms). */
+QD_API bool qd_equilibrium_exact_in_parameters(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                               size_t nvals, const qd_expr *const *syms,
+                                               const double *vals, const qd_expr *const *q0);
+
 #ifdef __cplusplus
 }
 #endif

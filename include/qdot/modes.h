@@ -113,6 +113,30 @@ QD_API qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr 
 QD_API qd_status qd_modes_symbolic_omega2(qd_ctx *ctx, size_t n, const qd_expr *const *K,
                                    const qd_expr *const *M, const qd_expr **w2);
 
+/* The exact w^2 of the n = 1 or 2 modes about an exact point q0 (an
+ * equilibrium's exact values): in the parameters (*in_params true) when q0
+ * is an equilibrium whatever their values
+ * (qd_equilibrium_exact_in_parameters), else exact numbers with every
+ * parameter at its exact value.  syms/vals: the parameters' values, for
+ * that test.  QD_ERR_ARG for n > 2 or q0 NULL. */
+/* The normal coordinates of the state q, q' (n each) about q0 for a
+ * conservative result r of lin: Q_j = a_j^T M0 (q - q0) and
+ * Q_j' = a_j^T M0 q', so that q = q0 + sum_j a_j Q_j with each
+ * Q_j'' + w_j^2 Q_j = 0.  QD_ERR_ARG when r is not conservative. */
+QD_API qd_status qd_modes_normal_coords(const qd_linear *lin, const qd_modes_result *r,
+                                        const double *q0, const double *q, const double *qd,
+                                        double *Q, double *Qd);
+
+/* The frequencies, ascending, into w (room for r->neig): w = sqrt(w^2) of
+ * every mode with w^2 >= 0 (conservative), else the positive imaginary
+ * parts of the state-space eigenvalues.  Returns how many. */
+QD_API size_t qd_modes_frequencies(const qd_modes_result *r, double *w);
+
+QD_API qd_status qd_modes_exact_omega2(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                       size_t nvals, const qd_expr *const *syms,
+                                       const double *vals, const qd_expr *const *q0,
+                                       const qd_expr **w2, bool *in_params);
+
 #ifdef __cplusplus
 }
 #endif

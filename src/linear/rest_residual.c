@@ -1,0 +1,26 @@
+/*
+ * src/linear/rest_residual.c - how far a point at rest is from an
+ * equilibrium: the largest generalized force there (qdot/equilibria.h).
+ *
+ * Allocations (for the context allocator): qd_eom_rest_residual (calloc x2),
+ * freed before return.
+ */
+#include "qdot/equilibria.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+qd_status qd_eom_rest_residual(qd_ctx *ctx, const qd_eom *e, size_t nvals,
+                               const qd_expr *const *syms, const double *vals, double *res) {
+    size_t n = e->n;
+    /* M is wanted too: qd_eom_eval fills f beside it */
+    double *f = calloc(n + 1, sizeof *f), *M = calloc(n * n + 1, sizeof *M);
+    qd_status st = f && M ? qd_eom_eval(ctx, e, nvals, syms, vals, M, f, NULL, NULL, NULL)
+                          : QD_ERR_NOMEM;
+    *res = 0;
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        *res = fmax(*res, fabs(f[j]));
+    free(f);
+    free(M);
+    return st;
+}
