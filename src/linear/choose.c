@@ -14,6 +14,7 @@
  * (calloc x3); each freed before return.
  */
 #include "qdot/equilibria.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -47,11 +48,11 @@ static size_t slot_of(size_t nvals, const qd_expr *const *syms, const qd_expr *x
     return SIZE_MAX;
 }
 
-static bool work_init(work *w, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
+static bool work_init(qd_ctx *ctx, work *w, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
                       const double *vals) {
     *w = (work){.n = e->n, .nvals = nvals, .syms = syms};
-    w->vals = calloc(nvals + 1, sizeof *w->vals);
-    w->qslot = calloc(2 * e->n + 1, sizeof *w->qslot);
+    w->vals = qd__calloc(ctx, nvals + 1, sizeof *w->vals);
+    w->qslot = qd__calloc(ctx, 2 * e->n + 1, sizeof *w->qslot);
     if (!w->vals || !w->qslot)
         return false;
     w->vslot = w->qslot + e->n;
@@ -65,8 +66,8 @@ static bool work_init(work *w, const qd_eom *e, size_t nvals, const qd_expr *con
 }
 
 static void work_free(work *w) {
-    free(w->vals);
-    free(w->qslot);
+    qd__free(w->vals);
+    qd__free(w->qslot);
 }
 
 /* At q (n values), at rest. */
@@ -194,11 +195,11 @@ qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, 
     chooser c = {.ctx = ctx, .m = m};
     size_t n = e->n;
     /* init, then the box qd_equilibria_default_box fills beside the angle flags */
-    double *init = calloc(3 * n + 1, sizeof *init);
-    c.angle = calloc(n + 1, sizeof *c.angle);
-    if (!init || !c.angle || !work_init(&c.w, e, nvals, syms, vals)) {
-        free(init);
-        free(c.angle);
+    double *init = qd__calloc(ctx, 3 * n + 1, sizeof *init);
+    c.angle = qd__calloc(ctx, n + 1, sizeof *c.angle);
+    if (!init || !c.angle || !work_init(ctx, &c.w, e, nvals, syms, vals)) {
+        qd__free(init);
+        qd__free(c.angle);
         work_free(&c.w);
         return QD_ERR_NOMEM;
     }
@@ -211,8 +212,8 @@ qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, 
             qd_ctx_clear_error(ctx); /* Newton failing from there only leaves the list */
     }
     pick(&c, out);
-    free(init);
-    free(c.angle);
+    qd__free(init);
+    qd__free(c.angle);
     work_free(&c.w);
     return QD_OK;
 }
@@ -247,8 +248,8 @@ bool qd_equilibrium_exact_in_parameters(qd_ctx *ctx, const qd_eom *e, const qd_m
                                         size_t nvals, const qd_expr *const *syms,
                                         const double *vals, const qd_expr *const *q0) {
     size_t n = e->n, np = qd_model_nparams(m);
-    const qd_expr **from = calloc(2 * n + 1, sizeof *from), **to = calloc(2 * n + 1, sizeof *to);
-    double *moved = calloc(nvals + 1, sizeof *moved);
+    const qd_expr **from = qd__calloc(ctx, 2 * n + 1, sizeof *from), **to = qd__calloc(ctx, 2 * n + 1, sizeof *to);
+    double *moved = qd__calloc(ctx, nvals + 1, sizeof *moved);
     bool ok = from && to && moved && q0;
     for (size_t j = 0; ok && j < n; j++) {
         from[j] = e->q[j];
@@ -267,8 +268,8 @@ bool qd_equilibrium_exact_in_parameters(qd_ctx *ctx, const qd_eom *e, const qd_m
         ok = vanishes(ctx, qd_expand(ctx, qd_subs(ctx, e->f[j], 2 * n, from, to)), nvals, syms,
                       moved);
     qd_ctx_clear_error(ctx);
-    free(from);
-    free(to);
-    free(moved);
+    qd__free(from);
+    qd__free(to);
+    qd__free(moved);
     return ok;
 }

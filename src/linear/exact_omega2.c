@@ -12,13 +12,14 @@
  */
 #include "qdot/equilibria.h"
 #include "qdot/modes.h"
+#include "base/mem.h"
 
 #include <stdlib.h>
 
 /* w2 with every parameter at its exact value, simplified. */
 static const qd_expr *at_values(qd_ctx *ctx, const qd_model *m, const qd_expr *w2) {
     size_t np = qd_model_nparams(m);
-    const qd_expr **from = calloc(np + 1, sizeof *from), **to = calloc(np + 1, sizeof *to);
+    const qd_expr **from = qd__calloc(ctx, np + 1, sizeof *from), **to = qd__calloc(ctx, np + 1, sizeof *to);
     const qd_expr *out = NULL;
     bool ok = from && to;
     for (size_t i = 0; ok && i < np; i++) {
@@ -27,8 +28,8 @@ static const qd_expr *at_values(qd_ctx *ctx, const qd_model *m, const qd_expr *w
     }
     if (ok)
         out = qd_simplify(ctx, qd_subs(ctx, w2, np, from, to));
-    free(from);
-    free(to);
+    qd__free(from);
+    qd__free(to);
     return out;
 }
 

@@ -6,6 +6,7 @@
  * freed before return.
  */
 #include "qdot/equilibria.h"
+#include "base/mem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -14,13 +15,13 @@ qd_status qd_eom_rest_residual(qd_ctx *ctx, const qd_eom *e, size_t nvals,
                                const qd_expr *const *syms, const double *vals, double *res) {
     size_t n = e->n;
     /* M is wanted too: qd_eom_eval fills f beside it */
-    double *f = calloc(n + 1, sizeof *f), *M = calloc(n * n + 1, sizeof *M);
+    double *f = qd__calloc(ctx, n + 1, sizeof *f), *M = qd__calloc(ctx, n * n + 1, sizeof *M);
     qd_status st = f && M ? qd_eom_eval(ctx, e, nvals, syms, vals, M, f, NULL, NULL, NULL)
                           : QD_ERR_NOMEM;
     *res = 0;
     for (size_t j = 0; st == QD_OK && j < n; j++)
         *res = fmax(*res, fabs(f[j]));
-    free(f);
-    free(M);
+    qd__free(f);
+    qd__free(M);
     return st;
 }
