@@ -91,7 +91,7 @@ static double size_of(sizes *z, const qd_expr *x) {
     double s = size_uncached(z, x);
     if (z->n == z->cap) {
         size_t cap = z->cap ? 2 * z->cap : 64;
-        double *nv = qd__mem_realloc(NULL, z->val, cap * sizeof *nv);
+        double *nv = qd__realloc(z->ctx, z->val, cap * sizeof *nv);
         if (!nv)
             return s;
         z->val = nv;
@@ -417,8 +417,8 @@ static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool
     size_t nk = S->s->nkeep, nsamples = 0, nzero = 0;
     double g = fabs(u0[L->ifree]), lo = angle ? -PI : -10 * fmax(1, g);
     double step = (angle ? 2 * PI : 20 * fmax(1, g)) / SCAN_POINTS;
-    double *prev = qd__mem_calloc(NULL, nk + 1, sizeof *prev), tp = 0;
-    bool *pzero = qd__mem_calloc(NULL, nk + 1, sizeof *pzero), *zero = qd__mem_calloc(NULL, nk + 1, sizeof *zero);
+    double *prev = qd__calloc(L->S->ctx, nk + 1, sizeof *prev), tp = 0;
+    bool *pzero = qd__calloc(L->S->ctx, nk + 1, sizeof *pzero), *zero = qd__calloc(L->S->ctx, nk + 1, sizeof *zero);
     bool have = false;
     qd_status st = prev && pzero && zero ? QD_OK : QD_ERR_NOMEM;
     memcpy(u, u0, S->nu * sizeof *u);
@@ -499,7 +499,7 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
 static qd_status structured(qd__steady_search *S, const bool *pfix, const bool *angle,
                             found *f, const double *u0, bool *complete) {
     size_t nfree = 0, ifree = 0;
-    bool *bound = qd__mem_calloc(NULL, S->nu + 1, sizeof *bound);
+    bool *bound = qd__calloc(S->ctx, S->nu + 1, sizeof *bound);
     if (!bound)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < S->nu; i++) {
@@ -512,9 +512,9 @@ static qd_status structured(qd__steady_search *S, const bool *pfix, const bool *
     line L = {.S = S, .ifree = ifree, .rate = nfree == 1 && unknown_is_rate(S, ifree)};
     qd_status st = QD_OK;
     if (nfree == 1) {
-        L.usub = qd__mem_calloc(NULL, S->nu + 1, sizeof *L.usub);
-        L.F = qd__mem_calloc(NULL, S->neq + 1, sizeof *L.F);
-        double *u = qd__mem_calloc(NULL, S->nu + 1, sizeof *u);
+        L.usub = qd__calloc(S->ctx, S->nu + 1, sizeof *L.usub);
+        L.F = qd__calloc(S->ctx, S->neq + 1, sizeof *L.F);
+        double *u = qd__calloc(S->ctx, S->nu + 1, sizeof *u);
         st = L.usub && L.F && u ? sub_search(S, bound, &L.sub) : QD_ERR_NOMEM;
         if (st == QD_OK)
             st = L.rate ? free_rate(&L, f, u, u0, complete)
@@ -655,7 +655,7 @@ static qd_status ordered(qd__steady_search *S, const found *f, const qd_steady_p
                          const bool *xfix, const bool *wfix, const bool *pfix,
                          const bool *pguess, qd_steady_set *out) {
     const qd_steady *s = S->s;
-    bool *xangle = qd__mem_calloc(NULL, s->nkeep + 1, sizeof *xangle);
+    bool *xangle = qd__calloc(S->ctx, s->nkeep + 1, sizeof *xangle);
     if (!xangle)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < s->nkeep; j++)
@@ -670,9 +670,9 @@ static qd_status ordered(qd__steady_search *S, const found *f, const qd_steady_p
     return st;
 }
 
-static qd_steady_point copy_point(const qd_steady *s, const qd_steady_point *from) {
-    qd_steady_point p = {qd__mem_calloc(NULL, s->nkeep + 1, sizeof *p.x), qd__mem_calloc(NULL, s->ncyc + 1, sizeof *p.w),
-                         qd__mem_calloc(NULL, s->ncyc + 1, sizeof *p.p)};
+static qd_steady_point copy_point(qd_ctx *ctx, const qd_steady *s, const qd_steady_point *from) {
+    qd_steady_point p = {qd__calloc(ctx, s->nkeep + 1, sizeof *p.x), qd__calloc(ctx, s->ncyc + 1, sizeof *p.w),
+                         qd__calloc(ctx, s->ncyc + 1, sizeof *p.p)};
     if (p.x && p.w && p.p) {
         memcpy(p.x, from->x, s->nkeep * sizeof *p.x);
         memcpy(p.w, from->w, s->ncyc * sizeof *p.w);
@@ -686,7 +686,7 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                              const bool *wfix, const bool *pfix, const bool *pguess,
                              const qd_steady_point *start, qd_steady_set *out) {
     memset(out, 0, sizeof *out);
-    qd_steady_point pt = copy_point(s, start);
+    qd_steady_point pt = copy_point(ctx, s, start);
     qd__steady_search S = {.ctx = ctx, .s = s};
     found f = {0};
     double *u0 = NULL, *u = NULL;

@@ -213,8 +213,8 @@ static qd_status make_generic(closure *c, const qd_con *con, size_t m) {
  * entry has no value there. */
 static bool pivots(closure *c, size_t m, size_t *rows, size_t *cols,
                    size_t *rank) {
-    double *A = qd__mem_malloc(NULL, (m ? m : 1) * c->N * sizeof *A);
-    size_t *row_of = qd__mem_malloc(NULL, (m ? m : 1) * sizeof *row_of), r = 0;
+    double *A = qd__malloc(c->ctx, (m ? m : 1) * c->N * sizeof *A);
+    size_t *row_of = qd__malloc(c->ctx, (m ? m : 1) * sizeof *row_of), r = 0;
     bool ok = A && row_of;
     for (size_t k = 0; ok && k < m; k++) {
         row_of[k] = k;
@@ -348,7 +348,7 @@ static qd_status kernel(closure *c, size_t m, size_t *rank) {
         return QD_ERR_UNBOUND;
     *rank = c->nrows = r;
     memcpy(c->rows, rows, r * sizeof rows[0]);
-    c->base = qd__mem_malloc(NULL, (c->N - r) * c->N * sizeof *c->base + 1);
+    c->base = qd__malloc(c->ctx, (c->N - r) * c->N * sizeof *c->base + 1);
     if (!c->base)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < c->N; j++) {

@@ -16,9 +16,9 @@
 #include <stdlib.h>
 
 /* Every output of the program, in the order of qd__out_*. */
-static const qd_expr **outputs(const qd_eom *e, size_t nout) {
+static const qd_expr **outputs(qd_ctx *ctx, const qd_eom *e, size_t nout) {
     size_t n = e->n, m = e->ncon;
-    const qd_expr **outs = qd__mem_malloc(NULL, (nout + 1) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(ctx, (nout + 1) * sizeof *outs);
     if (!outs)
         return NULL;
     for (size_t i = 0; i < n * n; i++)
@@ -45,7 +45,7 @@ void qd_eom_prog_free(qd_eom_prog *p) {
 qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e) {
     qd_eom_prog *p = qd__calloc(ctx, 1, sizeof *p);
     size_t nout = qd__out_len(e);
-    const qd_expr **outs = p ? outputs(e, nout) : NULL;
+    const qd_expr **outs = p ? outputs(ctx, e, nout) : NULL;
     if (!outs) {
         qd__free(p);
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory compiling the equations of motion");

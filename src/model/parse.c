@@ -107,7 +107,7 @@ typedef struct mark {
 static bool mark_take(const qd_model *m, mark *k) {
     size_t n = m->ncoords;
     k->m = *m;
-    k->percoord = qd__mem_malloc(NULL, (5 * n + 1) * sizeof *k->percoord);
+    k->percoord = qd__malloc(m->ctx, (5 * n + 1) * sizeof *k->percoord);
     if (!k->percoord)
         return false;
     memcpy(k->percoord, m->Q, n * sizeof *m->Q);
@@ -177,9 +177,9 @@ static bool shape_statement(parser *p) {
     return true;
 }
 
-static char *copy_text(const char *text) {
+static char *copy_text(qd_ctx *ctx, const char *text) {
     size_t n = strlen(text);
-    char *c = qd__mem_malloc(NULL, n + 1);
+    char *c = qd__malloc(ctx, n + 1);
     if (c)
         memcpy(c, text, n + 1);
     return c;
@@ -205,7 +205,7 @@ static void read_one(parser *p) {
 
 qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
     qd_ctx *ctx = m->ctx;
-    char *copy = copy_text(text);
+    char *copy = copy_text(ctx, text);
     mark k;
     if (!copy || !mark_take(m, &k)) {
         qd__free(copy);

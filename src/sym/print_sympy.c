@@ -259,6 +259,7 @@ typedef struct fn_names {
     const char **list;
     size_t n, cap;
     bool oom;
+    qd_ctx *ctx;
 } fn_names;
 
 static void add_name(fn_names *c, const char *n) {
@@ -266,7 +267,7 @@ static void add_name(fn_names *c, const char *n) {
         return;
     if (c->n == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 8;
-        const char **l = qd__mem_realloc(NULL, c->list, cap * sizeof *l);
+        const char **l = qd__realloc(c->ctx, c->list, cap * sizeof *l);
         if (!l) {
             c->oom = true;
             return;
@@ -296,7 +297,7 @@ qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *const *
                                    qd_buf *out) {
     if (!ctx || !out || (n && !exprs))
         return QD_ERR_ARG;
-    fn_names c = {QD_PTRMAP_INIT, QD_PTRMAP_INIT, NULL, 0, 0, false};
+    fn_names c = {QD_PTRMAP_AL(qd__ctx_allocator(ctx)), QD_PTRMAP_AL(qd__ctx_allocator(ctx)), NULL, 0, 0, false, ctx};
     for (size_t i = 0; i < n; i++)
         collect_names(&c, exprs[i]);
     if (!c.oom && c.n) {
