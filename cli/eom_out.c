@@ -35,8 +35,9 @@ static qd_status put(const cli_eom_view *v, qd_buf *b, const qd_expr *x, qd_form
 static const char *qname(const cli_eom_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
 
 /* The name of an output (M, f, qdd, ...) in SymPy and C: base, with
- * underscores appended while the model uses the name for a coordinate or a
- * parameter (a wedge of mass M must not be overwritten by the matrix). */
+ * underscores appended while the model uses the name for a coordinate, a
+ * parameter or a function (a wedge of mass M must not be overwritten by the
+ * matrix, nor a force law f(r) by the vector f). */
 typedef struct out_name { char s[32]; } out_name;
 
 static bool model_name(const cli_eom_view *v, const char *name) {
@@ -46,6 +47,9 @@ static bool model_name(const cli_eom_view *v, const char *name) {
             return true;
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         if (!strcmp(qd_expr_name(qd_model_param(m, i)), name))
+            return true;
+    for (size_t i = 0; i < qd_model_nfunctions(m); i++)
+        if (!strcmp(qd_model_function_name(m, i), name))
             return true;
     return !strcmp(name, "t");
 }

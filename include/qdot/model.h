@@ -78,6 +78,9 @@ QD_API void qd_model_free(qd_model *m);
 QD_API size_t qd_model_ncoords(const qd_model *m);
 QD_API const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in declaration order */
 QD_API size_t qd_model_nparams(const qd_model *m);
+/* The user functions the model declares (`functions W, h`), in order. */
+QD_API size_t qd_model_nfunctions(const qd_model *m);
+QD_API const char *qd_model_function_name(const qd_model *m, size_t i); /* NULL out of range */
 QD_API const qd_expr *qd_model_param(const qd_model *m, size_t i);
 QD_API const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its number */
 /* The parameter as written: an expression of the earlier parameters

@@ -109,6 +109,10 @@ const qd_expr *qd_model_coord(const qd_model *m, size_t i) {
     return i < m->ncoords ? m->coords[i] : NULL;
 }
 size_t qd_model_nparams(const qd_model *m) { return m->nparams; }
+size_t qd_model_nfunctions(const qd_model *m) { return m->nfuncs; }
+const char *qd_model_function_name(const qd_model *m, size_t i) {
+    return i < m->nfuncs ? m->funcs[i] : NULL;
+}
 const qd_expr *qd_model_param(const qd_model *m, size_t i) {
     return i < m->nparams ? m->params[i] : NULL;
 }

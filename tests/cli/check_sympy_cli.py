@@ -35,6 +35,16 @@ T = m/2*(r'^2 + r^2*phi'^2)
 V = W(r)
 """
 
+# A cart of mass M on a spring of unknown law f(x), with a pendulum (Desloge
+# ch. 59's cart and pendulum): the names M and f are the model's, so the
+# script must name its matrix and vector otherwise and still be right.
+CART = """coordinates x, th
+parameters M = 2, m = 1, l = 1, g = 981/100
+functions f
+T = M/2*x'^2 + m/2*((x' + l*cos(th)*th')^2 + (l*sin(th)*th')^2)
+V = f(x) - m*g*l*cos(th)
+"""
+
 WIRE = """coordinates x, y
 parameters m = 1, g = 981/100
 functions h
@@ -76,12 +86,16 @@ def lagrange(L, qs, t):
     return Matrix([sympy.diff(L.diff(q.diff(t)), t) - L.diff(q) for q in qs])
 
 
-def check_eom(qdot, path, L_of, name):
+def check_eom(qdot, path, L_of, name, Mname='M', fname='f'):
     ns = script(qdot, path, 'eom')
     if ns is None:
         return
     t, qs = ns['t'], list(ns['q'])
-    lhs = ns['M'] * Matrix([q.diff(t, 2) for q in qs]) - ns['f']
+    check('%s names its matrix %s and vector %s' % (name, Mname, fname),
+          isinstance(ns.get(Mname), sympy.MatrixBase) and isinstance(ns.get(fname), sympy.MatrixBase))
+    if not isinstance(ns.get(Mname), sympy.MatrixBase) or not isinstance(ns.get(fname), sympy.MatrixBase):
+        return
+    lhs = ns[Mname] * Matrix([q.diff(t, 2) for q in qs]) - ns[fname]
     ref = lagrange(L_of(ns), qs, t)
     for k in range(len(qs)):
         check('%s eom row %d' % (name, k), zero(lhs[k] - ref[k]),
@@ -91,6 +105,15 @@ def check_eom(qdot, path, L_of, name):
 def central_L(ns):
     t, r, phi, m, W = ns['t'], ns['r'], ns['phi'], ns['m'], ns['W']
     return m / 2 * (r(t).diff(t)**2 + r(t)**2 * phi(t).diff(t)**2) - W(r(t))
+
+
+def cart_L(ns):
+    t, x, th = ns['t'], ns['x'], ns['th']
+    M, m, l, g, f = ns['M'], ns['m'], ns['l'], ns['g'], ns['f']
+    assert isinstance(M, sympy.Symbol), 'the parameter M was overwritten'
+    T = M / 2 * x(t).diff(t)**2 + m / 2 * ((x(t).diff(t) + l * sympy.cos(th(t)) * th(t).diff(t))**2
+                                          + (l * sympy.sin(th(t)) * th(t).diff(t))**2)
+    return T - f(x(t)) + m * g * l * sympy.cos(th(t))
 
 
 def wire_L(ns):
@@ -129,12 +152,16 @@ def main():
     qdot = os.path.join(args.build, 'qdot')
     with tempfile.TemporaryDirectory() as d:
         central, wire = os.path.join(d, 'central.qd'), os.path.join(d, 'wire.qd')
+        cart = os.path.join(d, 'cart.qd')
+        with open(cart, 'w') as fh:
+            fh.write(CART)
         with open(central, 'w') as fh:
             fh.write(CENTRAL)
         with open(wire, 'w') as fh:
             fh.write(WIRE)
         check_eom(qdot, central, central_L, 'central')
         check_eom(qdot, wire, wire_L, 'wire')
+        check_eom(qdot, cart, cart_L, 'cart', 'M_', 'f_')
         check_hamiltonian(qdot, central)
         check_routh(qdot, central)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
