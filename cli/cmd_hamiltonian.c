@@ -229,7 +229,7 @@ static void write_lines(const ham_run *r, qd_buf *b) {
 }
 
 static void sympy_list(const ham_run *r, qd_buf *b, const char *name, const qd_expr *const *x) {
-    qd_buf_printf(b, "%s = [", name);
+    qd_buf_printf(b, "%s = [", cli_script_name(r->mf.model, name).s);
     for (size_t j = 0; j < r->h->n; j++) {
         qd_buf_puts(b, j ? ", " : "");
         put(r, b, x[j]);
@@ -256,7 +256,8 @@ static void sympy_functions(const ham_run *r, qd_buf *b) {
     free(all);
 }
 
-/* Python that defines momenta, pdef (dL/dq'), H, dq_dt and dp_dt; the
+/* Python that defines momenta, pdef (dL/dq'), H, dq_dt and dp_dt (each with
+ * underscores appended when the model uses the name: a length L); the
  * coordinates are functions of t as in `eom --format sympy`. */
 static void write_sympy(const ham_run *r, qd_buf *b) {
     const qd_ham *h = r->h;
@@ -273,13 +274,13 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
     if (h->pdef[0] || !h->n)
         sympy_list(r, b, "pdef", h->pdef);
     else
-        qd_buf_puts(b, "pdef = None\n");
+        qd_buf_printf(b, "%s = None\n", cli_script_name(m, "pdef").s);
     sympy_list(r, b, "velocities", h->vel);
-    qd_buf_puts(b, "H = ");
+    qd_buf_printf(b, "%s = ", cli_script_name(m, "H").s);
     put(r, b, h->H);
     qd_buf_puts(b, "\n");
     if (h->H_given) {
-        qd_buf_puts(b, "L = ");
+        qd_buf_printf(b, "%s = ", cli_script_name(m, "L").s);
         if (h->L_from_H)
             put(r, b, h->L_from_H);
         else

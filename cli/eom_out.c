@@ -13,6 +13,7 @@
 #include <string.h>
 #include "cli.h"
 #include "json.h"
+#include "model_cli.h"
 
 bool cli_eom_format_from_name(const char *name, cli_eom_format *out) {
     static const char *const names[] = {"text", "latex", "json", "sympy", "c"};
@@ -34,32 +35,12 @@ static qd_status put(const cli_eom_view *v, qd_buf *b, const qd_expr *x, qd_form
 
 static const char *qname(const cli_eom_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
 
-/* The name of an output (M, f, qdd, ...) in SymPy and C: base, with
- * underscores appended while the model uses the name for a coordinate, a
- * parameter or a function (a wedge of mass M must not be overwritten by the
- * matrix, nor a force law f(r) by the vector f). */
-typedef struct out_name { char s[32]; } out_name;
-
-static bool model_name(const cli_eom_view *v, const char *name) {
-    const qd_model *m = v->mf->model;
-    for (size_t i = 0; i < v->e->n; i++)
-        if (!strcmp(qname(v, i), name))
-            return true;
-    for (size_t i = 0; i < qd_model_nparams(m); i++)
-        if (!strcmp(qd_expr_name(qd_model_param(m, i)), name))
-            return true;
-    for (size_t i = 0; i < qd_model_nfunctions(m); i++)
-        if (!strcmp(qd_model_function_name(m, i), name))
-            return true;
-    return !strcmp(name, "t");
-}
+/* The name of an output (M, f, qdd, ...) in SymPy and C: one the model does
+ * not use (cli_script_name). */
+typedef cli_name out_name;
 
 static out_name pick(const cli_eom_view *v, const char *base) {
-    out_name n;
-    snprintf(n.s, sizeof n.s, "%s", base);
-    for (size_t len = strlen(n.s); model_name(v, n.s) && len + 1 < sizeof n.s; len++)
-        n.s[len] = '_', n.s[len + 1] = '\0';
-    return n;
+    return cli_script_name(v->mf->model, base);
 }
 
 /* ---- text ------------------------------------------------------------------ */

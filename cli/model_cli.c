@@ -155,3 +155,24 @@ int cli_integral(cli_model_file *mf, const char *opt, const char *text,
                  const char *label) {
     return add_statement(mf, opt, "integral", label, text);
 }
+
+static bool model_uses(const qd_model *m, const char *name) {
+    for (size_t i = 0; i < qd_model_ncoords(m); i++)
+        if (!strcmp(qd_expr_name(qd_model_coord(m, i)), name))
+            return true;
+    for (size_t i = 0; i < qd_model_nparams(m); i++)
+        if (!strcmp(qd_expr_name(qd_model_param(m, i)), name))
+            return true;
+    for (size_t i = 0; i < qd_model_nfunctions(m); i++)
+        if (!strcmp(qd_model_function_name(m, i), name))
+            return true;
+    return !strcmp(name, "t");
+}
+
+cli_name cli_script_name(const qd_model *m, const char *base) {
+    cli_name n;
+    snprintf(n.s, sizeof n.s, "%s", base);
+    for (size_t len = strlen(n.s); model_uses(m, n.s) && len + 1 < sizeof n.s; len++)
+        n.s[len] = '_', n.s[len + 1] = '\0';
+    return n;
+}

@@ -55,4 +55,11 @@ int cli_symmetry(cli_model_file *mf, const char *opt, const char *text,
 int cli_integral(cli_model_file *mf, const char *opt, const char *text,
                  const char *label);
 
+/* The name of an output of a printed script (M, f, H, L, ...): base, with
+ * underscores appended while the model uses the name for a coordinate, a
+ * parameter or a function, or it is t (a cart of mass M must not be
+ * overwritten by the matrix, a length L by the Lagrangian). */
+typedef struct cli_name { char s[32]; } cli_name;
+cli_name cli_script_name(const qd_model *m, const char *base);
+
 #endif

@@ -45,6 +45,14 @@ T = M/2*x'^2 + m/2*((x' + l*cos(th)*th')^2 + (l*sin(th)*th')^2)
 V = f(x) - m*g*l*cos(th)
 """
 
+# A pendulum of length L given by its Hamiltonian (Goldstein sec. 8.1): the
+# script's Lagrangian must not take the parameter's name L.
+PENDULUM_H = """coordinates th
+momenta p_th
+parameters m = 1, L = 2, g = 981/100
+H = p_th^2/(2*m*L^2) - m*g*L*cos(th)
+"""
+
 WIRE = """coordinates x, y
 parameters m = 1, g = 981/100
 functions h
@@ -135,6 +143,19 @@ def check_hamiltonian(qdot, path):
     check('hamiltonian dp_r/dt', zero((dp - (-want.diff(r(t)))).doit()), str(dp))
 
 
+def check_hamiltonian_names(qdot, path):
+    ns = script(qdot, path, 'hamiltonian')
+    if ns is None:
+        return
+    t, th, m, L, g = ns['t'], ns['th'], ns['m'], ns['L'], ns['g']
+    check('hamiltonian keeps the parameter L', isinstance(L, sympy.Symbol), str(L))
+    want = m * L**2 * th(t).diff(t)**2 / 2 + m * g * L * sympy.cos(th(t))
+    check('hamiltonian Lagrangian L_', 'L_' in ns and zero(ns['L_'] - want), str(ns.get('L_')))
+    p_th = Symbol('p_th')
+    check('hamiltonian dq/dt uses the length', zero(ns['dq_dt'][0] - p_th / (m * L**2)),
+          str(ns['dq_dt'][0]))
+
+
 def check_routh(qdot, path):
     ns = script(qdot, path, 'routh', '--ignore', 'phi')
     if ns is None:
@@ -153,6 +174,9 @@ def main():
     with tempfile.TemporaryDirectory() as d:
         central, wire = os.path.join(d, 'central.qd'), os.path.join(d, 'wire.qd')
         cart = os.path.join(d, 'cart.qd')
+        pend_h = os.path.join(d, 'pendulum_h.qd')
+        with open(pend_h, 'w') as fh:
+            fh.write(PENDULUM_H)
         with open(cart, 'w') as fh:
             fh.write(CART)
         with open(central, 'w') as fh:
@@ -164,6 +188,7 @@ def main():
         check_eom(qdot, cart, cart_L, 'cart', 'M_', 'f_')
         check_hamiltonian(qdot, central)
         check_routh(qdot, central)
+        check_hamiltonian_names(qdot, pend_h)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
 
