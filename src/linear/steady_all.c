@@ -46,7 +46,7 @@ typedef struct sizes {
 static double value(sizes *z, const qd_expr *x) {
     double v;
     if (qd_eval(z->ctx, x, z->env->n, z->env->syms, z->env->vals, &v) != QD_OK) {
-        qd_ctx_clear_error(z->ctx);
+        qd__ctx_recover(z->ctx);
         return NAN;
     }
     return fabs(v);
@@ -208,7 +208,7 @@ static bool on_line(line *L, double t, double *u) {
             st = qd__steady_residual(S, u, L->F, NULL);
     }
     if (st != QD_OK)
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
     return st == QD_OK;
 }
 
@@ -229,7 +229,7 @@ static bool singular_here(qd__steady_search *S, const found *f) {
     for (size_t c = 0; c < S->s->ncyc; c++) {
         double v;
         if (qd__steady_eval(S->ctx, &S->env, f->mcc[c], &v) != QD_OK) {
-            qd_ctx_clear_error(S->ctx);
+            qd__ctx_recover(S->ctx);
             return true;
         }
         double m = qd__steady_magnitude(S->ctx, &S->env, f->mcc[c]);
@@ -255,7 +255,7 @@ static qd_status polish_add(qd__steady_search *S, found *f, double *u) {
     double res = 0;
     qd_status st = qd__steady_iterate(S, u, &res);
     if (st != QD_OK) {
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
         return st == QD_ERR_NOMEM ? st : QD_OK;
     }
     if (singular_here(S, f)) {
@@ -619,11 +619,11 @@ static qd_status from_start(qd__steady_search *S, found *f, const double *u0, do
     double res = 0;
     qd_status st = qd__steady_iterate(S, u, &res);
     if (st == QD_OK || ((st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) && f->count)) {
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
         st = st == QD_OK ? polish_add(S, f, u) : QD_OK;
     }
     if ((st == QD_OK || st == QD_ERR_NUMERIC) && f->count == 0 && f->nsingular) {
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
         qd_ctx_error(S->ctx, QD_ERR_SINGULAR, "the only steady motion%s found %s at a singular "
                      "point of the coordinates (a cyclic coordinate that moves nothing there): "
                      "choose coordinates regular there", f->nsingular > 1 ? "s" : "",

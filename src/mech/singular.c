@@ -185,7 +185,7 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
     qd__eom_num *num = e->priv;
     if (qd__eom_compile(ctx, e) == QD_OK)
         return numeric_check(ctx, e, T, num->prog->prog, num->prog->nin, num->prog->nout, pick);
-    qd_ctx_clear_error(ctx);
+    qd__ctx_recover(ctx);
     size_t nin, nn = e->n * e->n;
     const qd_expr **in = qd__num_inputs(ctx, nn, e->M, &nin);
     qd_prog *p = in ? qd_prog_new(ctx, nin, in, nn, e->M) : NULL;
@@ -193,7 +193,7 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
     if (p) {
         st = e->ncon ? QD_OK : numeric_check(ctx, e, T, p, nin, nn, pick);
     } else {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         st = symbolic_check(ctx, e);
     }
     qd_prog_free(p);
