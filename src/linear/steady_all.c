@@ -356,7 +356,7 @@ static qd_status free_rate(line *L, found *f, double *u, const double *u0, bool 
         return QD_ERR_NOMEM;
     memcpy(u, u0, L->S->nu * sizeof *u);
     int rc = row_quadratics(L, u, h, c);
-    qd_status st = QD_OK;
+    qd_status st = rc == -1 && qd__ctx_nomem(L->S->ctx) ? QD_ERR_NOMEM : QD_OK; /* not "no quadratic" */
     if (rc == 1) {
         const qd_steady *s = L->S->s;
         size_t cslot = L->S->uslot[L->ifree] - L->S->env.w;
@@ -686,6 +686,7 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                              const bool *wfix, const bool *pfix, const bool *pguess,
                              const qd_steady_point *start, qd_steady_set *out) {
     memset(out, 0, sizeof *out);
+    bool had_nomem = qd__ctx_nomem(ctx);
     qd_steady_point pt = copy_point(ctx, s, start);
     qd__steady_search S = {.ctx = ctx, .s = s};
     found f = {0};
@@ -710,6 +711,8 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
         st = from_start(&S, &f, u0, u);
     if (st == QD_OK)
         st = ordered(&S, &f, &pt, xfix, wfix, pfix, pguess, out);
+    if (st == QD_OK && !had_nomem && qd__ctx_nomem(ctx))
+        st = QD_ERR_NOMEM; /* a search that ran out was taken for "none there" */
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "out of memory finding the steady motions");

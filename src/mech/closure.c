@@ -346,8 +346,8 @@ static qd_status kernel(closure *c, size_t m, size_t *rank) {
     size_t rows[MAXV], cols[MAXV], r;
     if (m > MAXV)
         return QD_ERR_TOOBIG;
-    if (!pivots(c, m, rows, cols, &r))
-        return QD_ERR_UNBOUND;
+    if (!pivots(c, m, rows, cols, &r)) /* no value, or no memory for the matrix */
+        return qd__ctx_nomem(c->ctx) ? QD_ERR_NOMEM : QD_ERR_UNBOUND;
     *rank = c->nrows = r;
     memcpy(c->rows, rows, r * sizeof rows[0]);
     c->base = qd__malloc(c->ctx, (c->N - r) * c->N * sizeof *c->base + 1);
