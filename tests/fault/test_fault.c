@@ -24,6 +24,8 @@
  *   degrees of freedom (qdot check): the two disks on an axle
  *     (examples/two_disks_axle.qd), 4 configurational and 2 motional
  *     (Desloge ch. 52 Problem 5, seed 000), by qd_eom_dof;
+ *   heavy top derivation: a body with an orientation (the parser checks it is a
+ *     rotation), its mass matrix in Euler angles against Goldstein sec. 5.7;
  *   steady motions: the heavy top (examples/heavy_top.qd) at th = 0.5 with
  *     C n = p_psi = 24, both precession rates of
  *     A cos th phi'^2 - C n phi' + M g h = 0 (Goldstein sec. 5.7; Britannica
@@ -454,6 +456,39 @@ static void test_dof(void **state) {
     "h*(sin(theta)*sin(phi), -sin(theta)*cos(phi), cos(theta)) orientation euler(phi, theta, psi)\n" \
     "V = M*g*h*cos(theta)\n"
 
+/* A body's kinetic energy about a fixed point: with the Euler angles (phi, theta, psi),
+ * T = A/2 (th'^2 + phi'^2 sin^2 th) + C/2 (psi' + phi' cos th)^2 (Goldstein sec. 5.7), so
+ * M = [A s^2 + C c^2, 0, C c; 0, A, 0; C c, 0, C].  The parse checks that the orientation
+ * is a rotation (model/body.c), the derivation that M is symmetric (Debug). */
+static qd_status heavy_top_body(qd_ctx *ctx, faulty *f) {
+    (void)f;
+    qd_model *m;
+    qd_eom *e;
+    qd_status st = derive(ctx, HEAVY_TOP, &m, &e);
+    if (st == QD_OK) {
+        const double A = 0.5, C = 0.8, th = 0.7, c = cos(th), s = sin(th);
+        const double want[9] = {A * s * s + C * c * c, 0, C * c, 0, A, 0, C * c, 0, C};
+        env v = {0, {0}, {0}};
+        v.syms[v.n] = e->q[1], v.vals[v.n++] = th;
+        env_params(ctx, m, &v);
+        for (size_t k = 0; k < 9 && st == QD_OK; k++) {
+            double x;
+            st = qd_eval(ctx, e->M[k], v.n, v.syms, v.vals, &x);
+            if (st == QD_OK)
+                assert_true(fabs(x - want[k]) < 1e-12);
+        }
+    }
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_heavy_top(void **state) {
+    (void)state;
+    loop_stats ls = fault_loop("heavy top derivation", heavy_top_body, 4);
+    assert_true(ls.allocs > 10);
+}
+
 static void check_precessions(const qd_steady_set *set) {
     const double A = 0.5, C = 0.8, Mgh = 1.2 * 9.81 * 0.3, th = 0.5, Cn = 24;
     double a = A * cos(th), disc = sqrt(Cn * Cn - 4 * a * Mgh);
@@ -510,6 +545,7 @@ int main(void) {
         cmocka_unit_test(test_simulation),
         cmocka_unit_test(test_modes),
         cmocka_unit_test(test_dof),
+        cmocka_unit_test(test_heavy_top),
         cmocka_unit_test(test_steady),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
