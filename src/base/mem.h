@@ -14,6 +14,7 @@
 #ifndef QD_BASE_MEM_H
 #define QD_BASE_MEM_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "qdot/expr.h"
 #include "mem.h"
@@ -29,5 +30,12 @@ void *qd__malloc(qd_ctx *ctx, size_t size);
 void *qd__calloc(qd_ctx *ctx, size_t n, size_t size);
 void *qd__realloc(qd_ctx *ctx, void *p, size_t size);
 char *qd__strdup(qd_ctx *ctx, const char *s);
+
+/* Out of memory is the one error a caller must never clear on its way to a
+ * fallback (a fallback taken for want of memory gives a wrong answer, not a
+ * clean QD_ERR_NOMEM).  qd__ctx_recover clears any other error and returns
+ * true; with QD_ERR_NOMEM recorded it leaves it and returns false. */
+bool qd__ctx_nomem(const qd_ctx *ctx);
+bool qd__ctx_recover(qd_ctx *ctx);
 
 #endif

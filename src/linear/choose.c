@@ -96,7 +96,7 @@ static bool initial_state(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
             any = true;
         else
             q[j] = 0;
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
     }
     return any;
 }
@@ -108,7 +108,7 @@ static double potential_at(qd_ctx *ctx, const qd_model *m, work *w, const double
     work_set(w, q);
     if (!V || qd_eval(ctx, V, w->nvals, w->syms, w->vals, &v) != QD_OK || !isfinite(v))
         v = 0;
-    qd_ctx_clear_error(ctx);
+    qd__ctx_recover(ctx);
     return v;
 }
 
@@ -204,12 +204,12 @@ qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, 
         return QD_ERR_NOMEM;
     }
     if (qd_equilibria_default_box(ctx, e, m, c.angle, init + n, init + 2 * n) != QD_OK)
-        qd_ctx_clear_error(ctx); /* no angles known: plain distances */
+        qd__ctx_recover(ctx); /* no angles known: plain distances */
     if (initial_state(ctx, e, m, &c.w, init)) {
         c.init = init;
         qd_equilibria_opts o = {.near = init};
         if (qd_equilibria_find(ctx, e, m, nvals, syms, vals, &o, &out->from_initial) != QD_OK)
-            qd_ctx_clear_error(ctx); /* Newton failing from there only leaves the list */
+            qd__ctx_recover(ctx); /* Newton failing from there only leaves the list */
     }
     pick(&c, out);
     qd__free(init);
@@ -267,7 +267,7 @@ bool qd_equilibrium_exact_in_parameters(qd_ctx *ctx, const qd_eom *e, const qd_m
     for (size_t j = 0; ok && j < n; j++)
         ok = vanishes(ctx, qd_expand(ctx, qd_subs(ctx, e->f[j], 2 * n, from, to)), nvals, syms,
                       moved);
-    qd_ctx_clear_error(ctx);
+    qd__ctx_recover(ctx);
     qd__free(from);
     qd__free(to);
     qd__free(moved);

@@ -83,7 +83,7 @@ typedef struct exact {
 
 static bool value_of(qd_ctx *ctx, const qd_expr *x, double *v) {
     if (qd_eval(ctx, x, 0, NULL, NULL, v) != QD_OK) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         return false;
     }
     return isfinite(*v);
@@ -366,7 +366,7 @@ static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
         solve_rec(x, eqs, n);
     ok = ok && !x->failed;
     if (qd_ctx_status(ctx) != QD_OK && qd_ctx_status(ctx) != QD_ERR_NOMEM)
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
     qd__free(from);
     qd__free(to);
     qd__free(eqs);

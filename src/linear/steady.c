@@ -334,7 +334,7 @@ static qd_status snap_zeros(search *S, double *u, const double *u0, double *F, d
             memcpy(F, F2, S->neq * sizeof *F);
             continue;
         }
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
         u[i] = keep;
         st = residual(S, u, F, NULL);
     }
@@ -363,7 +363,7 @@ static qd_status iterate(search *S, double *u, double *res_out) {
             u2[i] = u[i] + d[i];
         qd_status s2 = residual(S, u2, F2, NULL);
         if (s2 == QD_ERR_SINGULAR) {  /* stepped onto a singular point: shorter steps */
-            qd_ctx_clear_error(S->ctx);
+            qd__ctx_recover(S->ctx);
             mu *= 10;
             continue;
         }

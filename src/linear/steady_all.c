@@ -46,7 +46,7 @@ typedef struct sizes {
 static double value(sizes *z, const qd_expr *x) {
     double v;
     if (qd_eval(z->ctx, x, z->env->n, z->env->syms, z->env->vals, &v) != QD_OK) {
-        qd_ctx_clear_error(z->ctx);
+        qd__ctx_recover(z->ctx);
         return NAN;
     }
     return fabs(v);
@@ -208,7 +208,7 @@ static bool on_line(line *L, double t, double *u) {
             st = qd__steady_residual(S, u, L->F, NULL);
     }
     if (st != QD_OK)
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
     return st == QD_OK;
 }
 
@@ -229,7 +229,7 @@ static bool singular_here(qd__steady_search *S, const found *f) {
     for (size_t c = 0; c < S->s->ncyc; c++) {
         double v;
         if (qd__steady_eval(S->ctx, &S->env, f->mcc[c], &v) != QD_OK) {
-            qd_ctx_clear_error(S->ctx);
+            qd__ctx_recover(S->ctx);
             return true;
         }
         double m = qd__steady_magnitude(S->ctx, &S->env, f->mcc[c]);
@@ -255,7 +255,7 @@ static qd_status polish_add(qd__steady_search *S, found *f, double *u) {
     double res = 0;
     qd_status st = qd__steady_iterate(S, u, &res);
     if (st != QD_OK) {
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
         return st == QD_ERR_NOMEM ? st : QD_OK;
     }
     if (singular_here(S, f)) {
@@ -356,7 +356,7 @@ static qd_status free_rate(line *L, found *f, double *u, const double *u0, bool 
         return QD_ERR_NOMEM;
     memcpy(u, u0, L->S->nu * sizeof *u);
     int rc = row_quadratics(L, u, h, c);
-    qd_status st = QD_OK;
+    qd_status st = rc == -1 && qd__ctx_nomem(L->S->ctx) ? QD_ERR_NOMEM : QD_OK; /* not "no quadratic" */
     if (rc == 1) {
         const qd_steady *s = L->S->s;
         size_t cslot = L->S->uslot[L->ifree] - L->S->env.w;
@@ -619,11 +619,11 @@ static qd_status from_start(qd__steady_search *S, found *f, const double *u0, do
     double res = 0;
     qd_status st = qd__steady_iterate(S, u, &res);
     if (st == QD_OK || ((st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) && f->count)) {
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
         st = st == QD_OK ? polish_add(S, f, u) : QD_OK;
     }
     if ((st == QD_OK || st == QD_ERR_NUMERIC) && f->count == 0 && f->nsingular) {
-        qd_ctx_clear_error(S->ctx);
+        qd__ctx_recover(S->ctx);
         qd_ctx_error(S->ctx, QD_ERR_SINGULAR, "the only steady motion%s found %s at a singular "
                      "point of the coordinates (a cyclic coordinate that moves nothing there): "
                      "choose coordinates regular there", f->nsingular > 1 ? "s" : "",
@@ -686,6 +686,7 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                              const bool *wfix, const bool *pfix, const bool *pguess,
                              const qd_steady_point *start, qd_steady_set *out) {
     memset(out, 0, sizeof *out);
+    bool had_nomem = qd__ctx_nomem(ctx);
     qd_steady_point pt = copy_point(ctx, s, start);
     qd__steady_search S = {.ctx = ctx, .s = s};
     found f = {0};
@@ -710,6 +711,8 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
         st = from_start(&S, &f, u0, u);
     if (st == QD_OK)
         st = ordered(&S, &f, &pt, xfix, wfix, pfix, pguess, out);
+    if (st == QD_OK && !had_nomem && qd__ctx_nomem(ctx))
+        st = QD_ERR_NOMEM; /* a search that ran out was taken for "none there" */
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "out of memory finding the steady motions");

@@ -68,7 +68,7 @@ static qd_status solve_for(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
     qd_status st = solve_linear(ctx, n, eq, xs, sol);
     if (st != QD_ERR_NONLINEAR)
         return st;
-    qd_ctx_clear_error(ctx);
+    qd__ctx_recover(ctx);
     return qd__isolate(ctx, n, eq, xs, sol, failed);
 }
 
@@ -111,7 +111,7 @@ static const qd_expr *new_hamiltonian(qd_ctx *ctx, size_t n, const gen_shape *s,
     relations(ctx, n, F, y, cy, s->sy, rel);
     qd_status st = solve_for(ctx, n, rel, x, xs, &failed);
     if (st == QD_ERR_NONLINEAR || st == QD_ERR_SINGULAR) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         return NULL;
     }
     if (st != QD_OK)

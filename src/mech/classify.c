@@ -60,7 +60,7 @@ static bool value_at(qd_ctx *ctx, const qd_expr *e, size_t ns, const qd_expr **s
                      const double *vals, double *out) {
     qd_status st = qd_eval(ctx, e, ns, syms, vals, out);
     if (st != QD_OK) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         return false;
     }
     return isfinite(*out);
@@ -102,9 +102,15 @@ static qd_status vanishes(qd_ctx *ctx, const qd_expr *e, bool *zero) {
     }
     size_t ns = qd_free_symbols(ctx, e, NULL, 0);
     const qd_expr **syms = qd__malloc(ctx, (ns ? ns : 1) * sizeof *syms);
-    if (!syms)
+    if (!syms || qd__ctx_nomem(ctx)) { /* 0 symbols may mean out of memory */
+        qd__free(syms);
         return QD_ERR_NOMEM;
+    }
     qd_free_symbols(ctx, e, syms, ns);
+    if (qd__ctx_nomem(ctx)) {
+        qd__free(syms);
+        return QD_ERR_NOMEM;
+    }
     int num = numeric_zero(ctx, e, syms, ns);
     qd__free(syms);
     if (num < 0)
@@ -291,7 +297,7 @@ static const qd_expr *potential_from(const forms *f, const qd_expr *const *w, si
     }
     if (!phi) {
         if (qd_ctx_status(ctx) == QD_ERR_ARG)
-            qd_ctx_clear_error(ctx);
+            qd__ctx_recover(ctx);
         return NULL;
     }
     phi = qd_simplify(ctx, phi);

@@ -75,7 +75,7 @@ static double random_value(uint64_t *s, int k) {
 /* e at point k; false when it has no finite value there. */
 static bool value_at(closure *c, const qd_expr *e, int k, double *out) {
     if (qd_eval(c->ctx, e, c->ns, c->syms, c->pt[k], out) != QD_OK) {
-        qd_ctx_clear_error(c->ctx);
+        qd__ctx_recover(c->ctx);
         return false;
     }
     return isfinite(*out);
@@ -320,6 +320,8 @@ static qd_status setup(closure *c, size_t n, const qd_expr *const *q, const qd_c
         for (size_t j = 0; j < c->N; j++) {
             const qd_expr *s[MAXV];
             size_t ns = qd_free_symbols(c->ctx, generic(c, k, j), s, MAXV);
+            if (qd__ctx_nomem(c->ctx)) /* 0 symbols may mean out of memory */
+                return QD_ERR_NOMEM;
             if (ns > MAXV)
                 return QD_ERR_TOOBIG;
             for (size_t i = 0; i < ns; i++) {
@@ -344,8 +346,8 @@ static qd_status kernel(closure *c, size_t m, size_t *rank) {
     size_t rows[MAXV], cols[MAXV], r;
     if (m > MAXV)
         return QD_ERR_TOOBIG;
-    if (!pivots(c, m, rows, cols, &r))
-        return QD_ERR_UNBOUND;
+    if (!pivots(c, m, rows, cols, &r)) /* no value, or no memory for the matrix */
+        return qd__ctx_nomem(c->ctx) ? QD_ERR_NOMEM : QD_ERR_UNBOUND;
     *rank = c->nrows = r;
     memcpy(c->rows, rows, r * sizeof rows[0]);
     c->base = qd__malloc(c->ctx, (c->N - r) * c->N * sizeof *c->base + 1);
@@ -500,7 +502,7 @@ static const qd_expr *integrate_combination(closure *c, const qd_con *con, const
     qd_con sum = {.name = "combination", .a = a, .a0 = qd_simplify(ctx, a0)};
     const qd_expr *phi = qd__con_integral(ctx, n, c->x, &sum);
     if (!phi && qd_ctx_status(ctx) != QD_ERR_NOMEM)
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
     return phi;
 }
 

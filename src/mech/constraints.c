@@ -71,7 +71,7 @@ static qd_status split(qd_ctx *ctx, const qd_eom *e, qd_con *c, const qd_expr **
     c->kind = QD_CON_NONHOLONOMIC;
     qd_status st = qd_linear_coeffs(ctx, c->expr, n, e->qd, c->a, &c->a0);
     if (st == QD_ERR_NONLINEAR) {
-        qd_ctx_clear_error(ctx); /* the kernel's message does not name the constraint */
+        qd__ctx_recover(ctx); /* the kernel's message does not name the constraint */
         qd_ctx_error(ctx, st,
                      "constraint %s is not linear in the velocities (%s enters nonlinearly): "
                      "qdot handles holonomic and Pfaffian constraints",
@@ -275,7 +275,7 @@ static qd_status surface_init(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, su
     if (st != QD_OK || sf->nelim == 0) {
         if (st == QD_ERR_NOMEM)
             return st;
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         return QD_OK;
     }
     size_t n = sf->sys.n, m = sf->sys.ncon;
@@ -290,7 +290,7 @@ static qd_status surface_init(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, su
         st = surface_row(ctx, sf, i);
     if (st == QD_ERR_NOMEM)
         return st;
-    qd_ctx_clear_error(ctx);
+    qd__ctx_recover(ctx);
     *ok = st == QD_OK;
     return QD_OK;
 }

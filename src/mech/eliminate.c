@@ -50,7 +50,7 @@ static bool solvable(qd_ctx *ctx, const qd__sys *s, size_t k, size_t *which,
         const qd_expr *c = NULL, *rest = NULL;
         if (!qd_has(phi, s->q[j]) ||
             qd_linear_coeffs(ctx, phi, 1, &s->q[j], &c, &rest) != QD_OK) {
-            qd_ctx_clear_error(ctx);
+            qd__ctx_recover(ctx);
             continue;
         }
         c = qd_simplify(ctx, c);
@@ -140,6 +140,8 @@ qd_status qd__eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *nelim) 
         const qd_expr *g;
         if (s->n > 1 && solvable(ctx, s, k, &j, &g))
             st = eliminate_one(ctx, s, k, j, g, rec, nrec++);
+        else if (qd__ctx_nomem(ctx)) /* "not solvable" may only mean out of memory */
+            st = QD_ERR_NOMEM;
         else
             k++;
     }

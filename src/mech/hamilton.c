@@ -83,7 +83,7 @@ static void not_quadratic(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t 
                           const char *stmt) {
     size_t k = nonlinear_velocity(ctx, e, h->pdef[j], j);
     char hint[256];
-    qd_ctx_clear_error(ctx); /* the kernel's "not linear in x'" says neither where nor why */
+    qd__ctx_recover(ctx); /* the kernel's "not linear in x'" says neither where nor why */
     qd_ctx_error(ctx, QD_ERR_NONLINEAR, "the momentum of %s is not linear in the velocities "
                  "(L is not quadratic in them)", qd_expr_name(e->q[j]));
     snprintf(hint, sizeof hint, "%s enters %s beyond its square, so the momenta do not "

@@ -59,7 +59,7 @@ static qd_status sys_init(qd_ctx *ctx, const qd_model *m, qd_eom *e, const qd_in
     if (!e->acc) {
         qd_status st = qd_eom_solve(ctx, e, max_ops);
         if (st == QD_ERR_TOOBIG)
-            qd_ctx_clear_error(ctx);
+            qd__ctx_recover(ctx);
         else if (st != QD_OK)
             return st;
     }
@@ -192,7 +192,7 @@ static const char *energy_reason(qd_ctx *ctx, const qd__intsys *s, bool equal) {
         qd_status st = qd__by_velocity(ctx, s->U, s->n, s->e->qd, &v);
         if (st != QD_OK || v.top > 1) {
             if (st != QD_OK)
-                qd_ctx_clear_error(ctx);
+                qd__ctx_recover(ctx);
             return "U is not at most linear in the velocities: its terms of degree k in them "
                    "enter h with the factor k - 1";
         }

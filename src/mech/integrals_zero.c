@@ -56,7 +56,7 @@ static double draw(const qd__intsys *s, const qd_expr *x, uint64_t *seed, int k)
 static bool value(qd_ctx *ctx, const qd_expr *x, size_t ns, const qd_expr *const *syms,
                   const double *vals, double *out) {
     if (qd_eval(ctx, x, ns, syms, vals, out) != QD_OK) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         return false;
     }
     return isfinite(*out);
@@ -110,11 +110,15 @@ static qd_status points_init(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
     p->syms = qd__malloc(ctx, cap * sizeof *p->syms);
     p->vals = qd__calloc(ctx, cap, sizeof *p->vals);
     p->ns = 0;
-    if (!xs || !p->syms || !p->vals) {
+    if (!xs || !p->syms || !p->vals || qd__ctx_nomem(ctx)) { /* 0 symbols may mean out of memory */
         qd__free(xs);
         return QD_ERR_NOMEM;
     }
     qd_free_symbols(ctx, X, xs, nx);
+    if (qd__ctx_nomem(ctx)) {
+        qd__free(xs);
+        return QD_ERR_NOMEM;
+    }
     for (size_t j = 0; j < s->n; j++)
         add(p, s->e->q[j]);
     for (size_t j = 0; j < s->n; j++)
@@ -145,7 +149,7 @@ static int numeric_along(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X, poi
         double *qdd = p->vals + p->nstate, *lam = qdd + n;
         if (qd_eom_eval(ctx, s->e, p->nstate, p->syms, p->vals, NULL, NULL, qdd,
                         s->e->ncon ? lam : NULL, NULL) != QD_OK) {
-            qd_ctx_clear_error(ctx);
+            qd__ctx_recover(ctx);
             continue;
         }
         int r = test_at(ctx, X, p->ns, p->syms, p->vals);
@@ -217,12 +221,13 @@ qd_status qd__int_identically_zero(qd_ctx *ctx, const qd__intsys *s, const qd_ex
     size_t ns = qd_free_symbols(ctx, X, NULL, 0);
     const qd_expr **syms = qd__malloc(ctx, (ns ? ns : 1) * sizeof *syms);
     double *vals = qd__malloc(ctx, (ns ? ns : 1) * sizeof *vals);
-    if (!syms || !vals) {
+    if (syms)
+        qd_free_symbols(ctx, X, syms, ns);
+    if (!syms || !vals || qd__ctx_nomem(ctx)) { /* 0 symbols may mean out of memory */
         qd__free(syms);
         qd__free(vals);
         return QD_ERR_NOMEM;
     }
-    qd_free_symbols(ctx, X, syms, ns);
     uint64_t seed = qd_expr_hash(X);
     int defined = 0, r = 0;
     for (int k = 0; k < MAX_TRIES && r <= 0 && defined < NPOINTS; k++) {

@@ -138,7 +138,7 @@ static const qd_expr *solve1(qd_ctx *ctx, const qd_expr *e, const qd_expr *y, in
 static const qd_expr *linear(qd_ctx *ctx, const qd_expr *e, const qd_expr *y) {
     const qd_expr *a, *b;
     if (qd_linear_coeffs(ctx, qd_expand(ctx, e), 1, &y, &a, &b) != QD_OK) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         return NULL;
     }
     a = qd_simplify(ctx, a);
@@ -205,7 +205,7 @@ static const qd_expr *solve1(qd_ctx *ctx, const qd_expr *e, const qd_expr *y, in
     if (!sol)
         sol = by_kernel(ctx, e, y, depth);
     if (!sol && qd_ctx_status(ctx) != QD_ERR_NOMEM)
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
     return sol;
 }
 

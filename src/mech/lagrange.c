@@ -75,13 +75,13 @@ static void check_symmetric(qd_ctx *ctx, const qd_eom *e, size_t j, const qd_exp
     double vals[64], a, b;
     const qd_expr *diff = qd_sub(ctx, e->M[j * e->n + k], raw_kj);
     size_t ns = qd_free_symbols(ctx, diff, syms, 64);
-    if (ns > 64)
+    if (!diff || ns > 64 || qd__ctx_nomem(ctx)) /* no verdict; the error stays recorded */
         return;
     for (size_t i = 0; i < ns; i++)
         vals[i] = 0.37 + 0.61 * (double)((i * 7919 + 13) % 101) / 101.0;
     if (qd_eval(ctx, e->M[j * e->n + k], ns, syms, vals, &a) != QD_OK ||
         qd_eval(ctx, raw_kj, ns, syms, vals, &b) != QD_OK) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         return;
     }
     if (isfinite(a) && isfinite(b))
@@ -113,7 +113,7 @@ static qd_status derive_row(qd_ctx *ctx, qd_eom *e, const qd_expr *L, const qd_e
     if (st != QD_OK) {
         if (st != QD_ERR_NONLINEAR)
             return st;
-        qd_ctx_clear_error(ctx); /* the kernel's message names an acceleration, not the equation */
+        qd__ctx_recover(ctx); /* the kernel's message names an acceleration, not the equation */
         qd_ctx_error(ctx, st, "the equation of %s is not linear in the accelerations",
                      qd_expr_name(e->q[j]));
         qd_ctx_error_about(ctx, QD_SUBJECT_COORD, j, qd_expr_name(e->q[j]), QD_REASON_NONE, NULL);

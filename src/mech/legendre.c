@@ -96,7 +96,7 @@ static qd_status row(qd_ctx *ctx, const hsys *s, const qd_expr *H, size_t j, con
         return qd_ctx_status(ctx);
     qd_status st = qd_linear_coeffs(ctx, v, s->n, s->p, A, &c);
     if (st == QD_ERR_NONLINEAR) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         qd_ctx_error(ctx, st, "H is not quadratic in the momenta: dH/d%s is not linear in them, "
                               "so q' = dH/dp cannot be solved for the momenta in closed form "
                               "(no Lagrangian)", qd_expr_name(s->p[j]));
@@ -219,7 +219,7 @@ qd_status qd__ham_from_H(qd_ctx *ctx, const qd_model *m, qd_ham *h) {
         st = inverse(ctx, m, &s, h->pdef, &h->L_from_H);
         if (st == QD_ERR_SINGULAR || st == QD_ERR_NONLINEAR) {
             snprintf(h->L_why, sizeof h->L_why, "%s", qd_ctx_message(ctx));
-            qd_ctx_clear_error(ctx);
+            qd__ctx_recover(ctx);
             h->L_from_H = NULL;
             for (size_t j = 0; j < s.n; j++)
                 h->pdef[j] = NULL;

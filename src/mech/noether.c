@@ -40,7 +40,7 @@ static const qd_expr *gauge(qd_ctx *ctx, const qd__intsys *s, const qd_expr *dL)
     if (!c)
         return NULL;
     if (qd_linear_coeffs(ctx, dL, n, s->e->qd, c, &c0) != QD_OK) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         qd__free(c);
         return NULL;
     }
@@ -56,7 +56,7 @@ static const qd_expr *gauge(qd_ctx *ctx, const qd__intsys *s, const qd_expr *dL)
             continue;
         const qd_expr *g = qd_integrate(ctx, r, x);
         if (!g) {
-            qd_ctx_clear_error(ctx);
+            qd__ctx_recover(ctx);
             F = NULL;
             break;
         }

@@ -185,15 +185,17 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
     qd__eom_num *num = e->priv;
     if (qd__eom_compile(ctx, e) == QD_OK)
         return numeric_check(ctx, e, T, num->prog->prog, num->prog->nin, num->prog->nout, pick);
-    qd_ctx_clear_error(ctx);
+    if (!qd__ctx_recover(ctx)) /* out of memory is no reason to check otherwise */
+        return QD_ERR_NOMEM;
     size_t nin, nn = e->n * e->n;
     const qd_expr **in = qd__num_inputs(ctx, nn, e->M, &nin);
     qd_prog *p = in ? qd_prog_new(ctx, nin, in, nn, e->M) : NULL;
     qd_status st;
     if (p) {
         st = e->ncon ? QD_OK : numeric_check(ctx, e, T, p, nin, nn, pick);
+    } else if (!qd__ctx_recover(ctx)) {
+        st = QD_ERR_NOMEM;
     } else {
-        qd_ctx_clear_error(ctx);
         st = symbolic_check(ctx, e);
     }
     qd_prog_free(p);

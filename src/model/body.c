@@ -62,6 +62,8 @@ static bool numerically_rotation(parser *p, const qd_expr *const R[9]) {
         e[i] = qd_subs(ctx, R[i], m->nparams, m->params, m->pvals);
         const qd_expr *s[MAX_SYMS];
         size_t k = qd_free_symbols(ctx, e[i], s, MAX_SYMS);
+        if (!e[i] || qd__ctx_nomem(ctx))
+            return true; /* no verdict; the caller sees the error */
         for (size_t a = 0; a < k && a < MAX_SYMS; a++) {
             size_t b = 0;
             while (b < ns && syms[b] != s[a])
@@ -76,7 +78,7 @@ static bool numerically_rotation(parser *p, const qd_expr *const R[9]) {
             v[i] = 0.3 + 0.77 * (double)((i * 7919 + 13 * (size_t)trial + 5) % 101) / 101.0;
         for (int i = 0; i < 9; i++)
             if (qd_eval(ctx, e[i], ns, syms, v, &r[i]) != QD_OK || !isfinite(r[i])) {
-                qd_ctx_clear_error(ctx);
+                qd__ctx_recover(ctx);
                 return true; /* outside its domain here: no verdict */
             }
         for (int i = 0; i < 3; i++)
@@ -193,7 +195,10 @@ static bool body_build(parser *p, body *b, value v[NCLAUSES], bool has_R) {
         memcpy(b->R, v[3].c, sizeof b->R);
     else
         qd__mdl_mat_identity(ctx, b->R);
-    if (has_R && !numerically_rotation(p, b->R))
+    bool rotation = !has_R || numerically_rotation(p, b->R);
+    if (qd__ctx_nomem(ctx)) /* the check's own failure is no verdict */
+        return qd__mdl_perr(p, v[3].off, v[3].len, NULL, "%s", qd_ctx_message(ctx));
+    if (!rotation)
         return qd__mdl_perr(p, v[3].off, v[3].len, "use rot_x, rot_y, rot_z, euler(phi, theta, psi) "
                     "or their products", "the orientation is not a rotation "
                     "(R^T R = 1 and det R = 1 fail)");

@@ -35,7 +35,7 @@ static bool vperr(parser *p, size_t off, size_t len, const char *hint, const cha
     qd_ctx *ctx = p->ctx;
     qd_status st = qd_ctx_status(ctx);
     /* a kernel error met while parsing is reported at the parser's spot */
-    qd_ctx_clear_error(ctx);
+    qd__ctx_recover(ctx);
     qd_ctx_error(ctx, st != QD_OK ? st : QD_ERR_PARSE, "%s", msg);
     qd_ctx_error_about(ctx, QD_SUBJECT_TEXT, 0, NULL, why, hint);
     qd_ctx_error_at(ctx, p->lx.src, off, len);

@@ -190,7 +190,7 @@ qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const q
     m->pdefs[i] = old; /* back to the values before */
     qd__mdl_eval_params(m);
     if (bad) {
-        qd_ctx_clear_error(ctx);
+        qd__ctx_recover(ctx);
         if (sign)
             qd_ctx_error(ctx, QD_ERR_ARG, "with this value of '%s', '%s' would be zero or "
                          "negative, but it was positive when the model was read and the "

@@ -152,7 +152,10 @@ static bool parse_constant(parser *p, const qd_expr *given, const qd_expr **def,
     const qd_model *m = p->m;
     *out = qd_subs(C(p), *def, m->nparams, m->params, m->pvals);
     const qd_expr *sym;
-    if (*out && qd_free_symbols(C(p), *out, &sym, 1) > 0)
+    size_t nsym = *out ? qd_free_symbols(C(p), *out, &sym, 1) : 0;
+    if (qd__ctx_nomem(C(p))) /* 0 symbols may mean out of memory */
+        return qd__mdl_perr(p, off, 1, NULL, "%s", qd_ctx_message(C(p)));
+    if (nsym > 0)
         return qd__mdl_perr(p, off, len, "a value is a number, e.g. 9.81 or pi/4",
                     "%s must be a number, but it depends on '%s'", what, qd_expr_name(sym));
     if (!*out)
@@ -160,7 +163,7 @@ static bool parse_constant(parser *p, const qd_expr *given, const qd_expr **def,
     /* every command computes with it: 1e400 or sqrt(-1) would be inf or NaN there */
     double x;
     if (qd_eval(C(p), *out, 0, NULL, NULL, &x) != QD_OK || !isfinite(x)) {
-        qd_ctx_clear_error(C(p));
+        qd__ctx_recover(C(p));
         return qd__mdl_perr(p, off, len, "give a real number within the range of a double",
                     "%s must be a finite real number", what);
     }

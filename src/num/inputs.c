@@ -21,6 +21,10 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
         return false;
     }
     qd_free_symbols(ctx, x, syms, k);
+    if (qd__ctx_nomem(ctx)) { /* the second pass can run out too: syms unwritten */
+        qd__free(syms);
+        return false;
+    }
     bool ok = true;
     for (size_t i = 0; ok && i < k; i++) {
         if (qd_ptrmap_has(seen, syms[i]))

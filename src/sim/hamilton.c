@@ -37,7 +37,7 @@ static qd_status inputs(qd_sim *s) {
         const qd_expr *v = qd_model_param_value(s->model, i);
         s->in_syms[2 * n + 1 + i] = qd_model_param(s->model, i);
         if (!v || qd_eval(s->ctx, v, 0, NULL, NULL, &x) != QD_OK || !isfinite(x)) {
-            qd_ctx_clear_error(s->ctx);
+            qd__ctx_recover(s->ctx);
             qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
                          qd_expr_name(s->in_syms[2 * n + 1 + i]));
             return QD_ERR_ARG;

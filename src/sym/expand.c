@@ -385,10 +385,13 @@ fail:
 /* The terms of p in canonical order (when it can be read off cheaply), so
  * that qd_add_n finds them sorted; else in table order. */
 static uint32_t *term_order(qd_xsess *s, const qd_poly *p) {
+    bool clean = qd_ctx_status(s->ctx) == QD_OK;
     uint32_t *order = qd__malloc(s->ctx, p->n * sizeof *order);
     uint32_t *rank = order ? gen_ranks(s, p) : NULL;
     tkey *keys = rank ? qd__malloc(s->ctx, p->n * sizeof *keys) : NULL;
     qd_pvar *buf = keys ? qd__malloc(s->ctx, (p->plen + 1) * sizeof *buf) : NULL;
+    if (order && !buf && clean && qd__ctx_nomem(s->ctx))
+        qd_ctx_clear_error(s->ctx); /* only this sort ran out: table order gives the same sum */
     for (size_t t = 0; order && t < p->n; t++)
         order[t] = (uint32_t)t;
     if (buf) {

@@ -223,9 +223,13 @@ static bool build_poly(fsum *s, const size_t *sel, size_t k, gens *g, fmpz_mpoly
  * generators is not cheap.) */
 static bool plainly_irreducible(qd_ctx *ctx, const fmpz_mpoly_t q, const fmpz_mpoly_ctx_t m, size_t nvars) {
     slong len = fmpz_mpoly_length(q, m);
+    bool clean = qd_ctx_status(ctx) == QD_OK;
     slong *degs = qd__malloc(ctx, nvars * sizeof *degs);
-    if (!degs)
+    if (!degs) {
+        if (clean) /* "not plainly" is a safe answer: FLINT factors it instead */
+            qd_ctx_clear_error(ctx);
         return false;
+    }
     fmpz_mpoly_degrees_si(degs, q, m);
     bool yes = false;
     for (size_t v = 0; v < nvars && !yes; v++) {
@@ -465,6 +469,8 @@ static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int dept
     pfact pf = {NULL, NULL};
     if (ok && fmpz_mpoly_length(p, m) >= 2)
         ok = factor_poly(s->ctx, &g, p, m, lcm, den, &pf);
+    if (qd__ctx_nomem(s->ctx)) /* a form not built for want of memory is no "no better form" */
+        ok = false;
     fmpz_mpoly_clear(p, m);
     fmpz_mpoly_ctx_clear(m);
     mpz_clear(lcm);

@@ -307,6 +307,15 @@ void qd_ctx_clear_error(qd_ctx *ctx) {
     memset(&ctx->diag, 0, sizeof ctx->diag);
 }
 
+bool qd__ctx_nomem(const qd_ctx *ctx) { return ctx->status == QD_ERR_NOMEM; }
+
+bool qd__ctx_recover(qd_ctx *ctx) {
+    if (ctx->status == QD_ERR_NOMEM)
+        return false;
+    qd_ctx_clear_error(ctx);
+    return true;
+}
+
 void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...) {
     if (ctx->status != QD_OK)
         return; /* the first error is the one that explains the rest */

@@ -90,7 +90,7 @@ static const qd_expr *fail(rd *p, size_t off, size_t len, const char *hint, cons
     }
     /* a constructor's error (check) is reported at the reader's spot */
     qd_status st = p->ctx->status;
-    qd_ctx_clear_error(p->ctx);
+    qd__ctx_recover(p->ctx);
     qd_ctx_error(p->ctx, st != QD_OK ? st : QD_ERR_PARSE, "%s", msg);
     qd_ctx_error_about(p->ctx, QD_SUBJECT_TEXT, 0, NULL, why, hint);
     qd_ctx_error_at(p->ctx, p->s, off, len);

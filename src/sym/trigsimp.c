@@ -290,6 +290,8 @@ static int try_term(pass *p, size_t i) {
         for (size_t y = 0; y < n && !r; y++)
             if (x != y)
                 r = try_sum(p, i, &g[x], &g[y]);
+    if (r == 0 && qd__ctx_nomem(p->ctx))
+        r = -1; /* a rewrite not built for want of memory is no "nothing to rewrite" */
     return r;
 }
 

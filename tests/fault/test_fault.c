@@ -20,8 +20,17 @@
  *     classical RK4 of th'' = -(g/l) sin th written here, energy conserved;
  *   modes: the double pendulum with equal masses and lengths about th = 0,
  *     w^2 = (g/l)(2 -+ sqrt 2) (Goldstein ch. 6, reference
- *     seed-goldstein-britannica.md).
- * The simulation and modes bodies derive first with the failures off, so
+ *     seed-goldstein-britannica.md);
+ *   degrees of freedom (qdot check): the two disks on an axle
+ *     (examples/two_disks_axle.qd), 4 configurational and 2 motional
+ *     (Desloge ch. 52 Problem 5, seed 000), by qd_eom_dof;
+ *   heavy top derivation: a body with an orientation (the parser checks it is a
+ *     rotation), its mass matrix in Euler angles against Goldstein sec. 5.7;
+ *   steady motions: the heavy top (examples/heavy_top.qd) at th = 0.5 with
+ *     C n = p_psi = 24, both precession rates of
+ *     A cos th phi'^2 - C n phi' + M g h = 0 (Goldstein sec. 5.7; Britannica
+ *     sec. 5 (29)-(30), seed 004), by qd_steady_find_all.
+ * The simulation, modes, degrees-of-freedom and steady bodies derive first with the failures off, so
  * their loops fail only the allocations of the run itself.
  */
 #include <stdarg.h>
@@ -82,10 +91,14 @@ typedef struct loop_stats {
     long runs, nomem, allocs; /* allocs: requests of the run that succeeded */
 } loop_stats;
 
-static loop_stats fault_loop(const char *what, body_fn body) {
+/* A run that succeeds must not leave QD_ERR_NOMEM recorded: the failure was cleared or
+ * ignored on the way to a fallback (whose answer may pass the check by luck).  stride:
+ * fail every stride-th allocation only, for the bodies whose every run re-derives a large
+ * model (kept within ~15 s under ASan). */
+static loop_stats fault_loop(const char *what, body_fn body, long stride) {
     loop_stats ls = {0, 0, 0};
     clock_t t0 = clock();
-    for (long n = 1;; n++) {
+    for (long n = 1;; n += stride) {
         faulty f = {0, n, 0, false};
         qd_allocator a = {f_malloc, f_realloc, f_free, &f};
         qd_ctx *ctx = qd_ctx_new_with(&a);
@@ -97,6 +110,10 @@ static loop_stats fault_loop(const char *what, body_fn body) {
         ls.runs++;
         if (f.live != 0)
             fail_msg("%s, allocation %ld failed: %ld blocks leaked", what, n, f.live);
+        /* a fallback taken for want of memory: the answer happened to pass, but an
+         * error was cleared on the way (or left behind a success) */
+        if (st == QD_OK && recorded == QD_ERR_NOMEM)
+            fail_msg("%s, allocation %ld failed: success, but out of memory recorded", what, n);
         if (st != QD_OK) {
             if (st != QD_ERR_NOMEM || !f.failed)
                 fail_msg("%s, allocation %ld failed: status %s instead of out of memory (%s)",
@@ -224,7 +241,7 @@ static qd_status derivation_body(qd_ctx *ctx, faulty *f) {
 
 static void test_derivation(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("derivation", derivation_body);
+    loop_stats ls = fault_loop("derivation", derivation_body, 1);
     assert_true(ls.allocs > 10);
 }
 
@@ -275,7 +292,7 @@ static qd_status constrained_body(qd_ctx *ctx, faulty *f) {
 
 static void test_constrained(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("constrained derivation", constrained_body);
+    loop_stats ls = fault_loop("constrained derivation", constrained_body, 1);
     assert_true(ls.allocs > 10);
 }
 
@@ -341,7 +358,7 @@ static qd_status sim_body(qd_ctx *ctx, faulty *f) {
 
 static void test_simulation(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("simulation", sim_body);
+    loop_stats ls = fault_loop("simulation", sim_body, 1);
     assert_true(ls.allocs > 10);
 }
 
@@ -388,7 +405,136 @@ static qd_status modes_body(qd_ctx *ctx, faulty *f) {
 
 static void test_modes(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("modes", modes_body);
+    loop_stats ls = fault_loop("modes", modes_body, 1);
+    assert_true(ls.allocs > 5);
+}
+
+/* ---- degrees of freedom ------------------------------------------------------------- */
+
+#define TWO_DISKS_AXLE                                                                         \
+    "coordinates x, y, th, phi, psi\nparameters m = 1.2, a = 0.3, b = 0.5\n"                    \
+    "T = m*(x'^2 + y'^2) + (m*b^2 + m*a^2/4)*th'^2 + m*a^2/4*(phi'^2 + psi'^2)\n"               \
+    "constraint side: x'*cos(th) + y'*sin(th) = 0\n"                                            \
+    "constraint roll1: -x'*sin(th) + y'*cos(th) + b*th' - a*phi' = 0\n"                         \
+    "constraint roll2: -x'*sin(th) + y'*cos(th) - b*th' - a*psi' = 0\n"
+
+/* No constraint is integrable alone, roll1 - roll2 is: 5 - 1 = 4 configurational, 5 - 3 = 2
+ * motional degrees of freedom (Desloge ch. 52 P5). */
+static qd_status dof_body(qd_ctx *ctx, faulty *f) {
+    qd_model *m;
+    qd_eom *e;
+    long armed = f->fail_at;
+    f->fail_at = 0;
+    qd_status st = derive(ctx, TWO_DISKS_AXLE, &m, &e);
+    assert_int_equal(st, QD_OK);
+    f->fail_at = f->count + armed;
+    qd_dof d;
+    st = qd_eom_dof(ctx, e, &d);
+    if (st == QD_OK) {
+        assert_int_equal(d.coordinates, 5);
+        assert_int_equal(d.independent, 3);
+        assert_int_equal(d.relations, 1);
+        assert_int_equal(d.configurational, 4);
+        assert_int_equal(d.motional, 2);
+    }
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_dof(void **state) {
+    (void)state;
+    loop_stats ls = fault_loop("degrees of freedom", dof_body, 7);
+    assert_true(ls.allocs > 5);
+}
+
+/* ---- steady motions ---------------------------------------------------------------- */
+
+#define HEAVY_TOP                                                                              \
+    "coordinates phi, theta, psi\nparameters M = 1.2, h = 0.3, A = 0.5, C = 0.8, g = 9.81\n"    \
+    "body top mass M inertia (A - M*h^2, A - M*h^2, C) at "                                     \
+    "h*(sin(theta)*sin(phi), -sin(theta)*cos(phi), cos(theta)) orientation euler(phi, theta, psi)\n" \
+    "V = M*g*h*cos(theta)\n"
+
+/* A body's kinetic energy about a fixed point: with the Euler angles (phi, theta, psi),
+ * T = A/2 (th'^2 + phi'^2 sin^2 th) + C/2 (psi' + phi' cos th)^2 (Goldstein sec. 5.7), so
+ * M = [A s^2 + C c^2, 0, C c; 0, A, 0; C c, 0, C].  The parse checks that the orientation
+ * is a rotation (model/body.c), the derivation that M is symmetric (Debug). */
+static qd_status heavy_top_body(qd_ctx *ctx, faulty *f) {
+    (void)f;
+    qd_model *m;
+    qd_eom *e;
+    qd_status st = derive(ctx, HEAVY_TOP, &m, &e);
+    if (st == QD_OK) {
+        const double A = 0.5, C = 0.8, th = 0.7, c = cos(th), s = sin(th);
+        const double want[9] = {A * s * s + C * c * c, 0, C * c, 0, A, 0, C * c, 0, C};
+        env v = {0, {0}, {0}};
+        v.syms[v.n] = e->q[1], v.vals[v.n++] = th;
+        env_params(ctx, m, &v);
+        for (size_t k = 0; k < 9 && st == QD_OK; k++) {
+            double x;
+            st = qd_eval(ctx, e->M[k], v.n, v.syms, v.vals, &x);
+            if (st == QD_OK)
+                assert_true(fabs(x - want[k]) < 1e-12);
+        }
+    }
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_heavy_top(void **state) {
+    (void)state;
+    loop_stats ls = fault_loop("heavy top derivation", heavy_top_body, 4);
+    assert_true(ls.allocs > 10);
+}
+
+static void check_precessions(const qd_steady_set *set) {
+    const double A = 0.5, C = 0.8, Mgh = 1.2 * 9.81 * 0.3, th = 0.5, Cn = 24;
+    double a = A * cos(th), disc = sqrt(Cn * Cn - 4 * a * Mgh);
+    double slow = (Cn - disc) / (2 * a), fast = (Cn + disc) / (2 * a);
+    assert_int_equal(set->count, 2);
+    assert_true(set->complete);
+    double r0 = set->pts[0].w[0], r1 = set->pts[1].w[0];
+    double lo = r0 < r1 ? r0 : r1, hi = r0 < r1 ? r1 : r0;
+    assert_true(fabs(lo - slow) < 1e-9 * (1 + slow));
+    assert_true(fabs(hi - fast) < 1e-9 * (1 + fast));
+    for (size_t k = 0; k < 2; k++) { /* the spin n = psi' + phi' cos th is C n / C for both */
+        assert_true(fabs(set->pts[k].x[0] - th) < 1e-12);
+        assert_true(fabs(set->pts[k].w[1] + set->pts[k].w[0] * cos(th) - Cn / C) < 1e-9);
+    }
+}
+
+static qd_status steady_body(qd_ctx *ctx, faulty *f) {
+    qd_model *m;
+    qd_eom *e;
+    long armed = f->fail_at;
+    f->fail_at = 0;
+    qd_status st = derive(ctx, HEAVY_TOP, &m, &e);
+    assert_int_equal(st, QD_OK);
+    const qd_expr *cyc[2] = {e->q[0], e->q[2]}; /* phi, psi */
+    qd_steady *s = qd_steady_derive(ctx, m, e, 2, cyc, false);
+    assert_non_null(s);
+    f->fail_at = f->count + armed;
+    env v = {0, {0}, {0}};
+    env_params(ctx, m, &v);
+    double x[1] = {0.5}, w[2] = {1, 1}, p[2] = {0, 24};
+    bool xfix[1] = {true}, wfix[2] = {false, false}, pfix[2] = {false, true};
+    qd_steady_point start = {x, w, p};
+    qd_steady_set set;
+    st = qd_steady_find_all(ctx, s, v.n, v.syms, v.vals, xfix, wfix, pfix, NULL, &start, &set);
+    if (st == QD_OK)
+        check_precessions(&set);
+    qd_steady_set_free(&set);
+    qd_steady_free(s);
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_steady(void **state) {
+    (void)state;
+    loop_stats ls = fault_loop("steady motions", steady_body, 2);
     assert_true(ls.allocs > 5);
 }
 
@@ -398,6 +544,9 @@ int main(void) {
         cmocka_unit_test(test_constrained),
         cmocka_unit_test(test_simulation),
         cmocka_unit_test(test_modes),
+        cmocka_unit_test(test_dof),
+        cmocka_unit_test(test_heavy_top),
+        cmocka_unit_test(test_steady),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
