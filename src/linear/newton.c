@@ -19,7 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static double norm_inf(size_t n, const double *v) {
+static double max_abs(size_t n, const double *v) {
     double m = 0;
     for (size_t i = 0; i < n; i++)
         m = fmax(m, fabs(v[i]));
@@ -44,14 +44,7 @@ double qd__lin_scale(qd__lin *L, const double *q) {
     size_t n = L->n;
     qd__lin_run(L, q);
     const double *F = qd__lin_F(L), *J = qd__lin_J(L);
-    double jn = 0;
-    for (size_t i = 0; i < n; i++) {
-        double row = 0;
-        for (size_t k = 0; k < n; k++)
-            row += fabs(J[i * n + k]);
-        jn = fmax(jn, row);
-    }
-    double s = norm_inf(n, F) + jn * (1 + norm_inf(n, q));
+    double s = max_abs(n, F) + qd__num_norm_inf(n, J) * (1 + max_abs(n, q));
     return isfinite(s) ? s : INFINITY;
 }
 
@@ -72,7 +65,7 @@ bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
         goto done;
     double lambda = 1e-3, f2 = norm2sq(n, F);
     for (int it = 0; it < maxit; it++) {
-        *res = norm_inf(n, F);
+        *res = max_abs(n, F);
         if (*res <= ftol) {
             ok = true;
             break;
@@ -111,7 +104,7 @@ bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
                 break;
         }
     }
-    *res = norm_inf(n, F);
+    *res = max_abs(n, F);
     ok = *res <= ftol;
 done:
     qd__free(F);

@@ -13,7 +13,7 @@
 
 #include <math.h>
 
-static double norm_inf(size_t n, const double *A) {
+double qd__num_norm_inf(size_t n, const double *A) {
     double norm = 0;
     for (size_t i = 0; i < n; i++) {
         double s = 0;
@@ -81,7 +81,7 @@ static void back_substitute(size_t n, const double *A, size_t rank, const size_t
 }
 
 bool qd__num_solve(size_t n, double *A, double *b, double tol) {
-    double eps = tol * norm_inf(n, A);
+    double eps = tol * qd__num_norm_inf(n, A);
     for (size_t c = 0; c < n; c++) {
         size_t p = pivot_row(n, A, c, c);
         if (!(fabs(A[p * n + c]) > eps))
@@ -106,7 +106,7 @@ static void null_vector(size_t n, const double *A, size_t rank, const size_t *pc
 
 size_t qd__num_rank(size_t n, double *A, double *b, double tol, size_t *pc, bool *free_col,
                     double *null) {
-    double eps = tol * norm_inf(n, A);
+    double eps = tol * qd__num_norm_inf(n, A);
     size_t r = 0;
     for (size_t c = 0; c < n; c++) {
         size_t p = r < n ? pivot_row(n, A, r, c) : r;

@@ -29,6 +29,8 @@ const qd_expr **qd__num_inputs(qd_ctx *ctx, size_t n, const qd_expr *const *expr
  * The per-evaluation solver of simulation and qd_eom_eval: hand-written
  * because reference LAPACK is 4-6x slower for the n <= 12 of mechanics
  * (docs/design.md, the numerics home). */
+/* max_i sum_j |A_ij| of an n x n row-major matrix: the scale of "zero" pivots. */
+double qd__num_norm_inf(size_t n, const double *A);
 bool qd__num_solve(size_t n, double *A, double *b, double tol);
 
 /* The same elimination, rank-revealing: a column whose best pivot is not
