@@ -160,9 +160,63 @@ QD_API size_t qd_model_nintegrals(const qd_model *m);
 QD_API const char *qd_model_integral_name(const qd_model *m, size_t i);
 QD_API const qd_expr *qd_model_integral(const qd_model *m, size_t i);
 
+/* Particles (`particle MASS at r`), in the order given; NULL / 0 out of
+ * range.  A particle has no name; its index is its name in messages. */
+QD_API size_t qd_model_nparticles(const qd_model *m);
+QD_API const qd_expr *qd_model_particle_mass(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_particle_position(const qd_model *m, size_t i, unsigned k);
+
+/* Impulsive motion (Desloge ch. 57, Byerly ch. III).  The configuration is
+ * frozen across an impulse; only the velocities jump.
+ *
+ * Blows, in the order given: `impulse J at r` (generalized impulse
+ * Qhat_j = J . dr/dq_j, the virtual work of J at frozen time), `impulse G on
+ * BODY` (an impulsive couple: Qhat_j = G . d(omega_space)/dq'_j) and
+ * `Qhat[q] = X` (given directly).  qd_model_blow is blow i's generalized
+ * impulse on coordinate j (0 where it does not act); its label is the
+ * statement's text ("impulse (0, -J, 0) at P").  qd_model_impulse is the
+ * sum over blows on coordinate j (never NULL: 0 without blows).  A blow
+ * whose generalized impulse is identically zero (its point does not move
+ * with the coordinates) is a parse error. */
+QD_API size_t qd_model_nblows(const qd_model *m);
+QD_API const char *qd_model_blow_label(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_blow(const qd_model *m, size_t i, size_t coord);
+QD_API const qd_expr *qd_model_impulse(const qd_model *m, size_t coord);
+
+/* Sudden constraints (`impact constraint NAME: lhs = rhs [restitution E]`),
+ * in the order given: lhs - rhs, holonomic or linear in the velocities,
+ * and E (a number or an expression in the parameters; 0 when not given).
+ * After the impact its velocity form c(q') = A q' + a0 takes the value
+ * -E c(q'-) (Newton's law; E = 0: it holds).  The multiplier is
+ * Lambda_NAME.  Unnamed ones are k1, k2, ...  They do not take part in
+ * qd_eom_derive. */
+QD_API size_t qd_model_nimpact_constraints(const qd_model *m);
+QD_API const char *qd_model_impact_constraint_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_impact_constraint(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_impact_constraint_restitution(const qd_model *m, size_t i);
+
+/* Unilateral contacts (`impact NAME: GAP >= 0 restitution E`), in the order
+ * given: GAP in q and t (no velocities), and E.  qd_sim applies Newton's
+ * impact law when GAP reaches 0 while decreasing. */
+QD_API size_t qd_model_nimpacts(const qd_model *m);
+QD_API const char *qd_model_impact_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_impact_gap(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_impact_restitution(const qd_model *m, size_t i);
+
+/* Prescribed velocities (`prescribe [NAME:] lhs = rhs, ...`, Thomson's
+ * problem): lhs - rhs, linear in the velocities, to hold just after the
+ * impulse.  Unnamed ones are v1, v2, ...; the impulse each needs is its
+ * multiplier Lambda_NAME. */
+QD_API size_t qd_model_nprescribed(const qd_model *m);
+QD_API const char *qd_model_prescribed_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_prescribed(const qd_model *m, size_t i);
+
 /* Initial values: the value of a coordinate (order 0) or velocity (order 1)
  * named in `initial`, or NULL. */
 QD_API const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);
+/* The same as written, an expression in the parameters (al, v/2, pi/6),
+ * or NULL. */
+QD_API const qd_expr *qd_model_initial_definition(const qd_model *m, size_t coord, unsigned order);
 
 /* A named definition (`x1 = ...`): its scalar value, or NULL when the name
  * is not defined or is a vector. */

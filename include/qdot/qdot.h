@@ -14,6 +14,7 @@
 #include "canonical.h"
 #include "hamilton.h"
 #include "integrals.h"
+#include "impulse.h"
 #include "sim.h"
 #include "codegen.h"
 #include "equilibria.h"

@@ -1,0 +1,128 @@
+/*
+ * qdot/impulse.h - impulsive motion: blows, sudden constraints, collisions
+ * (Desloge ch. 57 thm 1, Byerly ch. III arts. 26-37, the Britannica's
+ * "Dynamics" sec. "impulsive motion").
+ *
+ * Across an impulse the configuration q is frozen and only the velocities
+ * jump.  Integrating Lagrange's equations over the vanishing duration of
+ * the impulse leaves
+ *
+ *     M(q) (q'+ - q'-) = Qhat + A^T Lambda,
+ *
+ * M the mass matrix (d^2 T / dq' dq'), Qhat the generalized impulses of the
+ * model's blows (qd_model_blow), A the rows of the constraints that act
+ * through the impulse and Lambda their impulsive multipliers.  The rows are
+ * the velocity forms c(q') = a . q' + a0 of
+ *
+ *   - the ordinary constraints, which keep holding:       c(q'+) = 0,
+ *   - the sudden ones (`impact constraint`, Newton's law): c(q'+) = -E c(q'-),
+ *   - the prescriptions (`prescribe`, Thomson's problem):  c(q'+) = 0,
+ *
+ * a holonomic constraint phi(q, t) = 0 giving c = dphi/dq . q' + dphi/dt.
+ * The system is solved numerically always, and in closed form (in the
+ * parameters and the state as given) when asked and small enough.
+ */
+#ifndef QDOT_IMPULSE_H
+#define QDOT_IMPULSE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qd_impulse_opts {
+    /* The state just before: n coordinates and n velocities, expressions
+     * in the parameters (numbers, pi/6, al, v); t NULL for 0.  Evaluated at
+     * the model's parameter values for the numbers. */
+    const qd_expr *const *q;
+    const qd_expr *const *qd;
+    const qd_expr *t;
+    bool exact;        /* also solve in closed form */
+    size_t max_ops;    /* exact: give up when an entry exceeds this many
+                          operations (0: 4000); exact is then false */
+} qd_impulse_opts;
+
+/* A theorem of impulsive motion checked on the case at hand.
+ *
+ *   Carnot's: a sudden constraint (E = 0, no blows, constraints homogeneous
+ *     in the velocities) loses the kinetic energy of the velocity change:
+ *     a = energy lost, b = T(q'+ - q'-).
+ *   Bertrand's: with the same blows, the sudden constraints and
+ *     prescriptions lower the kinetic energy after, by the energy of the
+ *     difference of the two motions: a = T after without them, b = T after
+ *     with them, c = T(difference); holds when a >= b and a - b = c.
+ *   Thomson's (Kelvin's): among the motions in which the struck points have
+ *     the velocities (along each blow) that the blows give them, the actual
+ *     velocity change has the least energy: a = T(q'+ - q'-), b = the least
+ *     such energy, found by minimization; holds when a = b.
+ *
+ * applies: the theorem's hypotheses hold here; holds: it was verified
+ * numerically, to 1e-9 relative. */
+typedef struct qd_impulse_check {
+    bool applies, holds;
+    double a, b, c;
+} qd_impulse_check;
+
+/* Two bodies (particles or rigid bodies, the model's only two) meeting
+ * (Desloge ch. 61): the centre-of-mass velocity w is conserved; velocities
+ * are of the centres of mass; angles are measured from the relative
+ * velocity before, u = v1 - v2. */
+typedef struct qd_collision {
+    double m1, m2;
+    double w[3];                     /* centre-of-mass velocity */
+    double v1[2][3], v2[2][3];       /* lab velocities, before [0] and after [1] */
+    double u[2][3];                  /* relative velocity v1 - v2 */
+    double eps[2];                   /* relative kinetic energy m1 m2 |u|^2 / (2 (m1 + m2)) */
+    double theta_cm;                 /* deflection of u (CM angle of body 1), radians */
+    double theta_lab1, theta_lab2;   /* angles of v1 and v2 after from u before */
+    double gamma;                    /* |w| / s*, s* body 1's speed in the CM frame after;
+                                        tan theta_lab1 = sin theta / (cos theta + gamma)
+                                        when body 2 is at rest before (Desloge ch. 61) */
+} qd_collision;
+
+typedef struct qd_impulse {
+    size_t n;
+    const qd_expr *const *q;         /* the model's coordinates */
+    double *qd_before, *qd_after;    /* n */
+    double *Qhat;                    /* n: the blows' generalized impulses */
+    /* The impulsive multipliers: ordinary constraints, then sudden ones,
+     * then prescriptions, each named "Lambda_NAME" (owned by the result). */
+    size_t nmult;
+    const char **mult_name;
+    double *mult;
+    double *R;                       /* n: A^T Lambda, the constraints' generalized impulses */
+    /* Impulsive reactions at the points of the model's `reaction`
+     * statements (on any kind of constraint): Cartesian impulses. */
+    size_t nreact;
+    const char **react_name;         /* the reaction's name (owned by the model) */
+    double (*react)[3];
+    double T_before, T_after, energy_lost;   /* energy_lost = T_before - T_after */
+    /* Closed forms (exact true): in the parameters and the state as given. */
+    bool exact;
+    const qd_expr **qd_after_exact;  /* n */
+    const qd_expr **mult_exact;      /* nmult */
+    const qd_expr *energy_lost_exact;
+    qd_impulse_check carnot, bertrand, thomson;
+    bool collision;                  /* col is filled */
+    qd_collision col;
+} qd_impulse;
+
+/* Solve the impulse equations of m at the state in opts.  Errors:
+ * QD_ERR_ARG for a restitution outside [0, 1] (naming the constraint), a
+ * prescription or sudden constraint not linear in the velocities, a model
+ * with neither blows nor sudden constraints nor prescriptions;
+ * QD_ERR_SINGULAR when M is singular there or the rows are dependent or
+ * inconsistent (naming the constraints); QD_ERR_NONLINEAR when T is not
+ * quadratic in the velocities.  *out is zeroed on failure. */
+QD_API qd_status qd_impulse_solve(qd_ctx *ctx, const qd_model *m, const qd_impulse_opts *opts,
+                                  qd_impulse *out);
+QD_API void qd_impulse_free(qd_impulse *r);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
