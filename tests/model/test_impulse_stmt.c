@@ -206,6 +206,7 @@ static void errors(void **state) {
     expect_error("impact floor: x' >= 0", 15, "a contact cannot depend on x'");
     expect_error("impact floor: t >= 1", 15, "this contact does not depend on the coordinates");
     expect_error("impact floor: x = 0", 17, "expected '>=' or '<=', found '='");
+    expect_error("impact floor: x > 0", 17, "unexpected character '>'");
     expect_error("prescribe x = 1", 11, "a prescription gives velocities, but this has none");
     expect_error("prescribe x'", 13, "expected '=', found the end of the line");
     expect_error("Qhat[z] = 1", 6, "'z' is not a coordinate");
