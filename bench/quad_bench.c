@@ -13,6 +13,7 @@
  *   power      int_r1^r2 dr / (r^2 sqrt((r - r1)(r2 - r))) (a precessing
  *              orbit's advance integrand shape) = pi (r1 + r2)/(2 (r1 r2)^(3/2))
  */
+#define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <math.h>
