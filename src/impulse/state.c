@@ -68,13 +68,16 @@ qd_status qd__imp_state(qd__imp *s, const qd_impulse_opts *opts) {
     s->qd0 = qd__calloc(s->ctx, n + 1, sizeof *s->qd0);
     if (!s->syms || !s->vals || !s->q0 || !s->qd0)
         return nomem(s->ctx);
-    for (size_t i = 0; i < np; i++) {
+    qd_status st = QD_OK;
+    for (size_t i = 0; i < np && st == QD_OK; i++) { /* a value may be exact: pi/6 */
         s->syms[2 * n + 1 + i] = qd_model_param(s->m, i);
-        s->vals[2 * n + 1 + i] = qd_number_value(qd_model_param_value(s->m, i));
+        st = qd_eval(s->ctx, qd_model_param_value(s->m, i), 0, NULL, NULL,
+                     &s->vals[2 * n + 1 + i]);
     }
     s->syms[2 * n] = qd_time(s->ctx);
     s->t0 = opts && opts->t ? opts->t : qd_int(s->ctx, 0);
-    qd_status st = param_value(s, s->t0, &s->vals[2 * n]);
+    if (st == QD_OK)
+        st = param_value(s, s->t0, &s->vals[2 * n]);
     for (size_t j = 0; j < n && st == QD_OK; j++) {
         s->syms[j] = s->e->q[j];
         s->syms[n + j] = s->e->qd[j];
