@@ -94,7 +94,7 @@ qd_status qd__imp_exact(const qd__imp *s, size_t max_ops, qd_impulse *r) {
         from[n + j] = s->e->qd[j], sb.to[n + j] = s->qd0[j];
     }
     from[2 * n] = qd_time(ctx), sb.to[2 * n] = s->t0;
-    qd_eom e;
+    qd_eom e = {0};
     qd_status st = build_system(s, &sb, &e);
     if (st == QD_OK) {
         st = qd_eom_solve(ctx, &e, max_ops);
@@ -102,10 +102,10 @@ qd_status qd__imp_exact(const qd__imp *s, size_t max_ops, qd_impulse *r) {
             st = results(s, &sb, &e, r);
         else /* too big or singular in symbols: the numbers stand */
             st = qd__ctx_recover(ctx) ? QD_OK : QD_ERR_NOMEM;
-        qd__free(e.acc);
-        qd__free(e.mult);
-        qd__free(e.M);
     }
+    qd__free(e.acc);
+    qd__free(e.mult);
+    qd__free(e.M); /* the block of M, f, A and b */
     qd__free(from);
     if (st == QD_ERR_NOMEM && !qd__ctx_nomem(ctx))
         qd_ctx_error(ctx, st, "out of memory solving an impulse in closed form");
