@@ -336,6 +336,45 @@ static void square_locked(void **state) {
     }
 }
 
+/* T59 (Desloge ch. 57 P5, p. 592): two square plates ABCD and EFGH (m each,
+ * side s) linked by massless parallel rods DE and CF (length l), A, D, E, H
+ * and B, C, F, G collinear, at rest; a blow J at A along AB.  The energy is
+ * 7 J^2/(8m) whatever s and l, and the second plate's centre starts at
+ * rest.  The parallel rods keep the plates' orientations equal, so plate 2
+ * is placed from D by the rods' angle ps. */
+static void plates(void **state) {
+    (void)state;
+    const char *sizes[] = {"s = 1, l = 2", "s = 3, l = 1/2"};
+    for (int i = 0; i < 2; i++) {
+        qd_ctx *ctx = qd_ctx_new();
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "coordinates x, y, th, ps\n"
+                 "parameters m = 2, J = 3, %s\n"
+                 "G1 = (x, y, 0)\n"
+                 "A = G1 + rot_z(th)*(-s/2, s/2, 0)\n"
+                 "D = G1 + rot_z(th)*(s/2, s/2, 0)\n"
+                 "E = D + (l*cos(ps), l*sin(ps), 0)\n"
+                 "G2 = E + rot_z(th)*(s/2, -s/2, 0)\n"
+                 "g2x = dot(G2', (1, 0, 0))\n"
+                 "g2y = dot(G2', (0, 1, 0))\n"
+                 "T = m/2*dot(G1', G1') + m/2*dot(G2', G2') + 2*m*s^2/12*th'^2\n"
+                 "impulse rot_z(th)*(0, -J, 0) at A\n"
+                 "initial x = 0, y = 0, th = 0, ps = 0, x' = 0, y' = 0, th' = 0, ps' = 0\n",
+                 sizes[i]);
+        qd_model *m = parse_ok(ctx, text);
+        qd_impulse r;
+        solve_ok(ctx, m, false, &r);
+        near(r.T_after, 7.0 * 9 / (8 * 2), "KE = 7 J^2/(8m)");
+        double q[4] = {0, 0, 0, 0};
+        near(definition_at(ctx, m, "g2x", q, r.qd_after), 0, "plate 2 x");
+        near(definition_at(ctx, m, "g2y", q, r.qd_after), 0, "plate 2 y");
+        qd_impulse_free(&r);
+        qd_model_free(m);
+        qd_ctx_free(ctx);
+    }
+}
+
 /* ---- Byerly ch. III ------------------------------------------------------- */
 
 /* TC25 (art. 28a, pp. 63-64): a lamina (m, radius of gyration k) at rest
@@ -891,6 +930,7 @@ int main(void) {
         cmocka_unit_test(chain_bertrand),
         cmocka_unit_test(chain_kelvin),
         cmocka_unit_test(square_locked),
+        cmocka_unit_test(plates),
         cmocka_unit_test(lamina),
         cmocka_unit_test(lamina_thomson),
         cmocka_unit_test(pulley),
