@@ -35,7 +35,7 @@ typedef struct qd__imp {
     const qd_expr **syms;
     double *vals;
     const qd_expr **q0, **qd0, *t0;   /* the state as expressions */
-    /* Numbers at the state. */
+    /* Numbers at the state, in one block at M (qd__imp_numbers). */
     double *M;                 /* n*n */
     double *Qhat;              /* n */
     double *An, *a0n, *En;     /* nrow*n, nrow, nrow */
