@@ -208,6 +208,24 @@ static void chain_struck(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* A closed form past max_ops is given up without an error: exact false,
+ * the context clean, the numbers as before (the chain of B01 at 9/4). */
+static void exact_too_big(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse_ok(ctx, CHAIN "impulse (0, J, 0) at A\n");
+    qd_impulse r;
+    qd_impulse_opts o = {.exact = true, .max_ops = 1};
+    assert_int_equal(qd_impulse_solve(ctx, m, &o, &r), QD_OK);
+    assert_false(r.exact);
+    assert_null(r.qd_after_exact);
+    assert_int_equal(qd_ctx_status(ctx), QD_OK);
+    near(after(&r, "th1"), -9.0 / 4, "w1");
+    qd_impulse_free(&r);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* B03, Bertrand: the same blow with the joint made rigid (J^2/m) or the
  * hinge B held (3J^2/(2m)): less than the free chain's 7J^2/(4m), by the
  * energy of the difference motion. */
@@ -948,6 +966,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rhombus_wall),
         cmocka_unit_test(chain_struck),
+        cmocka_unit_test(exact_too_big),
         cmocka_unit_test(chain_bertrand),
         cmocka_unit_test(chain_kelvin),
         cmocka_unit_test(square_locked),
