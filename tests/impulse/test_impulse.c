@@ -5,7 +5,7 @@
  * of angular momentum about a suddenly fixed point, of momentum in a
  * collision), the theorems of Carnot, Bertrand and Thomson on random
  * systems, and every error.  Reference: /work/shared/reference
- * (seed-desloge-A.md T55-T61, seed-byerly.md TC25-TC35,
+ * (seed-desloge-A.md T55-T61, seed-byerly.md TC25-TC35 (TC31: Pfaffian rows),
  * seed-goldstein-britannica.md B01-B03, seed-desloge-B.md C5).
  */
 #include <stdarg.h>
@@ -521,6 +521,40 @@ static void elliptic_disk(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* TC31 (art. 34, pp. 74-75): a sphere (radius a, k^2 = 2a^2/5) spinning
+ * with (W1, W2, W3), centre at rest, set on a perfectly rough plane: the
+ * contact point is brought to rest at once (a Pfaffian sudden constraint,
+ * v + w x (0, 0, -a) = 0), w1 = 2 W1/7, w2 = 2 W2/7, w3 = W3,
+ * x' = a w2, y' = -a w1.  At zero angles tait_bryan's rates are the
+ * space components of w. */
+static void sphere_on_rough_plane(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse_ok(ctx,
+                           "coordinates x, y, yaw, pitch, roll\n"
+                           "parameters m = 2, a = 3/2, W1 = 3, W2 = -5, W3 = 7\n"
+                           "body ball mass m inertia sphere(m, a) at (x, y, a) "
+                           "orientation tait_bryan(yaw, pitch, roll)\n"
+                           "w = omega_space(ball)\n"
+                           "impact constraint rx: x' - a*w.y = 0\n"
+                           "impact constraint ry: y' + a*w.x = 0\n"
+                           "initial x = 0, y = 0, yaw = 0, pitch = 0, roll = 0, "
+                           "x' = 0, y' = 0, yaw' = W3, pitch' = W2, roll' = W1\n");
+    qd_impulse r;
+    solve_ok(ctx, m, true, &r);
+    exact_matches(ctx, m, &r);
+    double a = 1.5, W1 = 3, W2 = -5, W3 = 7;
+    near(after(&r, "roll"), 2 * W1 / 7, "w1");
+    near(after(&r, "pitch"), 2 * W2 / 7, "w2");
+    near(after(&r, "yaw"), W3, "w3");
+    near(after(&r, "x"), a * 2 * W2 / 7, "x'");
+    near(after(&r, "y"), -a * 2 * W1 / 7, "y'");
+    assert_true(r.carnot.applies && r.carnot.holds); /* the friction's impulse loses energy */
+    qd_impulse_free(&r);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* TC35 (art. 54a-b, pp. 106-108): two circuits, Byerly's T_el =
  * L y1'^2 + M y1' y2' + L y2'^2 beside the wire's x'.  (a) make: a current
  * i set up in wire 1, y2' = -M i/(2L) (-0.5 at L = 1, M = 0.5, i = 2);
@@ -975,6 +1009,7 @@ int main(void) {
         cmocka_unit_test(lamina_thomson),
         cmocka_unit_test(pulley),
         cmocka_unit_test(elliptic_disk),
+        cmocka_unit_test(sphere_on_rough_plane),
         cmocka_unit_test(circuits),
         cmocka_unit_test(rod_end_fixed),
         cmocka_unit_test(hoop_pivoted),
