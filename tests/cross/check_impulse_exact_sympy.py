@@ -25,7 +25,7 @@ parameter points in 30-digit arithmetic, and qdot's closed forms must
 agree there to 25 digits.  The numeric solve is compared at the model's
 values.
 
-Usage: check_impulse_sympy.py --build BUILD_DIR
+Usage: check_impulse_exact_sympy.py --build BUILD_DIR
 Prints "N passed, N failed"; exits 1 on any failure.
 """
 import argparse
