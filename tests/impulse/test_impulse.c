@@ -942,6 +942,86 @@ static void random_theorems(void **state) {
     }
 }
 
+/* The impulse equations and each row's law checked on the answer, for
+ * random systems with every kind of row at once: an ordinary holonomic
+ * constraint (keeps holding), a Pfaffian sudden constraint with
+ * restitution 3/10 (c(q'+) = -E c(q'-)), a prescription (c(q'+) = 1/2), a
+ * blow: M (q'+ - q'-) - Qhat - A^T Lambda = 0 with M, A, Qhat built here
+ * from the same random numbers (Desloge ch. 57 thm 1 eqs. 4-5). */
+static void random_residuals(void **state) {
+    (void)state;
+    qt_rng g = {977};
+    for (int trial = 0; trial < 20; trial++) {
+        rsys s;
+        random_system(&g, &s, 2, 1);
+        long h[RN], p[RN], v0[RN];
+        for (int j = 0; j < RN; j++) {
+            h[j] = (long)qt_below(&g, 21) - 10;
+            p[j] = (long)qt_below(&g, 21) - 10;
+            v0[j] = (long)qt_below(&g, 41) - 20;
+        }
+        char text[6144];
+        random_text(&s, v0, text, sizeof text);
+        size_t len = strlen(text);
+        len += (size_t)snprintf(text + len, sizeof text - len, "constraint h0: ");
+        for (int j = 0; j < RN; j++)
+            len += (size_t)snprintf(text + len, sizeof text - len, "%s%ld*q%d", j ? " + " : "",
+                                    h[j], j);
+        len += (size_t)snprintf(text + len, sizeof text - len, " = 0\nprescribe p0: ");
+        for (int j = 0; j < RN; j++)
+            len += (size_t)snprintf(text + len, sizeof text - len, "%s%ld*q%d'", j ? " + " : "",
+                                    p[j], j);
+        snprintf(text + len, sizeof text - len, " = 1/2\n");
+        /* the second sudden row takes a restitution */
+        char *k1 = strstr(text, "impact constraint k1:");
+        assert_non_null(k1);
+        char *eol = strchr(k1, '\n');
+        char tail[6144];
+        snprintf(tail, sizeof tail, "%s", eol);
+        snprintf(eol, sizeof text - (size_t)(eol - text), " restitution 3/10%s", tail);
+        qd_ctx *ctx = qd_ctx_new();
+        qd_model *m = parse_ok(ctx, text);
+        qd_impulse r;
+        solve_ok(ctx, m, false, &r);
+        /* rows in the multipliers' order: h0, k0, k1, p0 */
+        assert_int_equal(r.nmult, 4);
+        assert_string_equal(r.mult_name[0], "Lambda_h0");
+        assert_string_equal(r.mult_name[3], "Lambda_p0");
+        double A[4][RN], E[4] = {0, 0, 0.3, 0}, target[4];
+        for (int j = 0; j < RN; j++) {
+            A[0][j] = (double)h[j];
+            A[1][j] = (double)s.a[0][j] / 100;
+            A[2][j] = (double)s.a[1][j] / 100;
+            A[3][j] = (double)p[j];
+        }
+        for (int k = 0; k < 4; k++) {
+            double before = 0, now = 0;
+            for (int j = 0; j < RN; j++) {
+                before += A[k][j] * (double)v0[j] / 10;
+                now += A[k][j] * r.qd_after[j];
+            }
+            target[k] = k == 3 ? 0.5 : -E[k] * before;
+            near(now, target[k], "row law");
+        }
+        for (int i = 0; i < RN; i++) {
+            double res = -(double)s.w[0][i] / 10;
+            for (int j = 0; j < RN; j++)
+                res += s.M[i][j] * (r.qd_after[j] - (double)v0[j] / 10);
+            for (int k = 0; k < 4; k++)
+                res -= A[k][i] * r.mult[k];
+            near(res, 0, "impulse equation");
+            near(r.R[i], A[0][i] * r.mult[0] + A[1][i] * r.mult[1] + A[2][i] * r.mult[2] +
+                             A[3][i] * r.mult[3], "R = A^T Lambda");
+        }
+        assert_false(r.carnot.applies); /* a restitution, a blow, an inhomogeneous row */
+        assert_false(r.bertrand.applies);
+        assert_true(r.thomson.applies && r.thomson.holds);
+        qd_impulse_free(&r);
+        qd_model_free(m);
+        qd_ctx_free(ctx);
+    }
+}
+
 /* ---- errors ---------------------------------------------------------------- */
 
 static void expect_fail(const char *text, qd_status want, const char *needle) {
@@ -1017,6 +1097,7 @@ int main(void) {
         cmocka_unit_test(headon),
         cmocka_unit_test(oblique),
         cmocka_unit_test(random_theorems),
+        cmocka_unit_test(random_residuals),
         cmocka_unit_test(errors),
         cmocka_unit_test(restitution_range),
     };
