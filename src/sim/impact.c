@@ -1,0 +1,303 @@
+/*
+ * src/sim/impact.c - unilateral contacts in a simulation: the model's
+ * `impact NAME: GAP >= 0 restitution E`, Newton's law of restitution at
+ * the located impact, and the end of a run in contact when the impacts
+ * chatter.
+ *
+ * Across an impact q is frozen and only the velocities jump (Desloge
+ * ch. 57 thm 1; Byerly ch. III art. 26): integrating Lagrange's equations
+ * over the vanishing duration leaves M (q'+ - q'-) = A^T Lambda, A the rows
+ * of the ordinary constraints (which keep holding) and of the gap's
+ * gradient a = dGAP/dq, a0 = dGAP/dt.  Newton's law of restitution (Desloge
+ * ch. 61, Byerly art. 33) gives the gap's rate after as -E times the rate
+ * before, so q'+ solves the saddle system
+ *
+ *     [ M  -A^T ] [ q'+ - q'- ]   [ 0 ]
+ *     [ A   0   ] [ Lambda    ] = [ b ],
+ *
+ *     b_c = -(A_c q'- + a0_c)          (the constraints hold after),
+ *     b_gap = -(1 + E) (a q'- + a0)    (a q'+ + a0 = -E (a q'- + a0)).
+ *
+ * Chattering: with E < 1 a body dropped on a floor bounces infinitely often
+ * in a finite time (the flights shrink like E^n).  A rebound whose rate is
+ * below sqrt(rtol) times the contact's fastest approach rises (in a
+ * uniform field) to rtol of the first bounce's height, which the tolerance
+ * cannot resolve: the impact is then made plastic (E = 0) and the run ends
+ * in contact.  When the flight times have been shrinking in proportion to
+ * the rebound rates (a geometric series, ratio E for the ball), the rest of
+ * the series is summed and the run ends at the accumulation time
+ * t* = t_k + d_k rho / (1 - r), the positions moved along q'+ to it.
+ */
+#include "simint.h"
+#include "../base/mem.h"
+#include "num/num.h"
+
+#include <math.h>
+#include <string.h>
+
+/* ---- setup (qd_sim_new) -------------------------------------------------------- */
+
+static qd_status impact_error(qd_sim *s, size_t i, const char *what, double x) {
+    qd_ctx_error(s->ctx, QD_ERR_ARG, "impact '%s': %s%.6g%s", s->imp_name[i], what, x,
+                 strstr(what, "restitution") ? " is outside [0, 1]" : "");
+    return QD_ERR_ARG;
+}
+
+/* E from its expression in the parameters (their values in s->par). */
+static qd_status restitution(qd_sim *s, size_t i, const qd_expr *E) {
+    double x = 0;
+    if (E && qd_eval(s->ctx, E, s->np, s->in_syms + 2 * s->n + 1, s->par, &x) != QD_OK) {
+        qd_ctx_clear_error(s->ctx);
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "impact '%s': the restitution is not a number "
+                                         "(an expression in the parameters only)",
+                     s->imp_name[i]);
+        return QD_ERR_ARG;
+    }
+    if (!(x >= 0 && x <= 1))
+        return impact_error(s, i, "the restitution ", x);
+    s->imp_E[i] = x;
+    return QD_OK;
+}
+
+/* dGAP/dq_j (n), dGAP/dt of gap i into outs; QD_ERR_ARG when GAP has a
+ * velocity or does not move with the coordinates. */
+static qd_status gradient(qd_sim *s, size_t i, const qd_expr **outs) {
+    const qd_eom *e = s->e;
+    size_t n = s->n;
+    const qd_expr *gap = s->imp_gap[i];
+    bool moves = false;
+    for (size_t j = 0; j < n; j++) {
+        if (qd_has(gap, e->qd[j])) {
+            qd_ctx_error(s->ctx, QD_ERR_ARG, "impact '%s': the gap depends on %s; it is a "
+                                             "function of the coordinates and t only",
+                         s->imp_name[i], qd_expr_name(e->qd[j]));
+            return QD_ERR_ARG;
+        }
+        outs[j] = qd_diff(s->ctx, gap, e->q[j]);
+        moves = moves || (outs[j] && !qd_is_zero(outs[j]));
+    }
+    outs[n] = qd_diff(s->ctx, gap, qd_time(s->ctx));
+    if (qd_ctx_status(s->ctx) != QD_OK)
+        return qd_ctx_status(s->ctx);
+    if (!moves) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "impact '%s': the gap does not depend on the "
+                                         "coordinates, so no motion can close it",
+                     s->imp_name[i]);
+        return QD_ERR_ARG;
+    }
+    return QD_OK;
+}
+
+qd_status qd__impact_setup(qd_sim *s) {
+    size_t ni = qd_model_nimpacts(s->model), n = s->n;
+    if (!ni)
+        return QD_OK;
+    s->imp_name = qd__calloc(s->ctx, ni, sizeof *s->imp_name);
+    s->imp_gap = qd__calloc(s->ctx, ni, sizeof *s->imp_gap);
+    s->imp_E = qd__calloc(s->ctx, ni, sizeof *s->imp_E);
+    const qd_expr **outs = qd__malloc(s->ctx, ni * (n + 1) * sizeof *outs);
+    qd_status st = s->imp_name && s->imp_gap && s->imp_E && outs ? QD_OK : QD_ERR_NOMEM;
+    s->nimp = st == QD_OK ? ni : 0;
+    for (size_t i = 0; st == QD_OK && i < ni; i++) {
+        s->imp_name[i] = qd_model_impact_name(s->model, i);
+        s->imp_gap[i] = qd_model_impact_gap(s->model, i);
+        st = restitution(s, i, qd_model_impact_restitution(s->model, i));
+        if (st == QD_OK)
+            st = gradient(s, i, outs + i * (n + 1));
+    }
+    if (st == QD_OK) {
+        s->imp = qd__sim_prog(s, ni * (n + 1), outs, &s->imp_n);
+        st = s->imp ? QD_OK : qd_ctx_status(s->ctx);
+    }
+    qd__free(outs);
+    return st;
+}
+
+void qd__impact_free(qd_sim *s) {
+    qd_prog_free(s->imp);
+    qd__free(s->imp_name);
+    qd__free(s->imp_gap);
+    qd__free(s->imp_E);
+}
+
+/* ---- a run's contacts ---------------------------------------------------------- */
+
+qd_status qd__impacts_new(qd__run *r) {
+    qd_sim *s = r->s;
+    if (!s->nimp)
+        return QD_OK;
+    size_t n = s->n, N = n + s->m + 1;
+    qd__impacts *im = qd__calloc(s->ctx, 1, sizeof *im);
+    if (!im)
+        return QD_ERR_NOMEM;
+    r->imp = im;
+    im->c = qd__calloc(s->ctx, s->nimp, sizeof *im->c);
+    im->K = qd__calloc(s->ctx, N * N + N + (N - n) * n + (N - n) + n + r->it->dim, sizeof *im->K);
+    if (!im->c || !im->K)
+        return QD_ERR_NOMEM;
+    im->rhs = im->K + N * N;
+    im->A = im->rhs + N;
+    im->b = im->A + (N - n) * n;
+    im->zero = im->b + (N - n);
+    im->y_after = im->zero + n;
+    im->fresh = im->unresolved = s->nimp;
+    return QD_OK;
+}
+
+void qd__impacts_free(qd__run *r) {
+    if (!r->imp)
+        return;
+    qd__free(r->imp->c);
+    qd__free(r->imp->K);
+    qd__free(r->imp);
+    r->imp = NULL;
+}
+
+qd_status qd__impact_check_start(qd__run *r, double t, const double *y) {
+    qd_sim *s = r->s;
+    qd_status st = qd__run_events_at(r, t, y, r->gold, NULL);
+    for (size_t i = 0; st == QD_OK && i < s->nimp; i++) {
+        double g = r->gold[s->nev + i];
+        if (g < 0 || isnan(g)) {
+            qd_ctx_error(s->ctx, QD_ERR_ARG, "impact '%s': the gap is negative at t0 (%.6g): "
+                                             "the bodies start interpenetrating",
+                         s->imp_name[i], g);
+            return QD_ERR_ARG;
+        }
+    }
+    return st;
+}
+
+/* a = dGAP/dq and a0 = dGAP/dt of contact i at (t, q) into s->imp_out;
+ * returns a q' + a0 with q' in r->qd. */
+static double rate_here(qd__run *r, size_t i, double t, const double *q) {
+    qd_sim *s = r->s;
+    size_t n = s->n;
+    qd__prog_at(s, s->imp, s->imp_w, t, q, r->qd, s->imp_out);
+    const double *a = s->imp_out + i * (n + 1);
+    double v = a[n];
+    for (size_t j = 0; j < n; j++)
+        v += a[j] * r->qd[j];
+    return v;
+}
+
+double qd__impact_rate(qd__run *r, size_t i, double t, const double *y) {
+    if (qd__run_velocity(r, t, y) != QD_OK)
+        return NAN;
+    return rate_here(r, i, t, y);
+}
+
+/* The law's rows: the ordinary constraints, which hold after, and gap i,
+ * whose rate after is -E times its rate before (q' in r->qd). */
+static void law_rows(qd__run *r, size_t i, double t, const double *q, double E) {
+    qd_sim *s = r->s;
+    qd__impacts *im = r->imp;
+    size_t n = s->n, m = s->m;
+    if (m) {
+        qd__con_eval(s, t, q, r->qd);
+        const double *A = s->con_out, *a0 = A + m * n;
+        for (size_t c = 0; c < m; c++) {
+            double v = a0[c];
+            for (size_t j = 0; j < n; j++)
+                v += (im->A[c * n + j] = A[c * n + j]) * r->qd[j];
+            im->b[c] = -v;
+        }
+    }
+    double v = rate_here(r, i, t, q);
+    memcpy(im->A + m * n, s->imp_out + i * (n + 1), n * sizeof *im->A);
+    im->b[m] = -(1 + E) * v;
+}
+
+/* Newton's law with restitution E for contact i at (t, y): y gets the
+ * state after, r->qd its velocities, *lost the energy h lost. */
+static qd_status law(qd__run *r, size_t i, double t, double *y, double E, double *lost) {
+    qd_sim *s = r->s;
+    qd__impacts *im = r->imp;
+    size_t n = s->n, N = n + s->m + 1;
+    qd_status st = qd__run_velocity(r, t, y);
+    if (st != QD_OK)
+        return st;
+    double h_before = qd__energy_eval(s, t, y, qd__second(s, y, r->qd))[0];
+    law_rows(r, i, t, y, E);
+    qd__prog_at(s, s->acc, s->acc_w, t, y, r->qd, s->acc_out);
+    qd__num_saddle(n, s->m + 1, s->acc_out, im->zero, im->A, im->b, im->K, im->rhs);
+    if (!qd__num_solve(N, im->K, im->rhs, 1e-13 * (double)N)) {
+        qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
+                     "impact '%s' at t = %.17g: the impact equations are singular (the gap's "
+                     "gradient is a combination of the constraints' rows, or M is singular)",
+                     s->imp_name[i], t);
+        return QD_ERR_SINGULAR;
+    }
+    for (size_t j = 0; j < n; j++)
+        r->qd[j] += im->rhs[j];
+    if (r->it->form == QD__HAM)
+        qd__momentum(s, t, y, r->qd, y + n);
+    else
+        memcpy(y + n, r->qd, n * sizeof *y);
+    *lost = h_before - qd__energy_eval(s, t, y, qd__second(s, y, r->qd))[0];
+    return QD_OK;
+}
+
+/* The time the remaining bounces of contact c take: the geometric series
+ * of the flights when they have shrunk in proportion to the rebound rates
+ * (each flight d_k ~ vout_k, the ratio r = d_k / d_(k-1)); 0 otherwise. */
+static double remaining_bounces(const qd__contact *c) {
+    if (c->count < 3)
+        return 0;
+    double d1 = c->t[1] - c->t[0], d2 = c->t[2] - c->t[1];
+    if (!(d1 > 0 && d2 > 0 && c->vout[0] > 0 && c->vout[1] > 0))
+        return 0;
+    double ratio = d2 / d1, rho = c->vout[1] / c->vout[0];
+    if (!(ratio < 1 && fabs(ratio - rho) <= 0.1 * rho))
+        return 0;
+    return d2 * (c->vout[2] / c->vout[1]) / (1 - ratio);
+}
+
+/* After a plastic impact at (t, y), velocities in r->qd: at rest in contact
+ * from t plus the remaining bounces' time, the positions carried there. */
+static qd_status settle(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
+    qd_sim *s = r->s;
+    size_t n = s->n;
+    double dt = remaining_bounces(&r->imp->c[i]);
+    res->contact = true;
+    res->zeno = dt > 0;
+    res->t_rest = t + dt;
+    if (!(dt > 0))
+        return QD_OK;
+    for (size_t j = 0; j < n; j++)
+        y[j] += r->qd[j] * dt;
+    qd_status st = s->m ? qd__project(s, res->t_rest, y, r->qd) : QD_OK;
+    if (st != QD_OK)
+        return st;
+    if (r->it->form == QD__HAM)
+        qd__momentum(s, res->t_rest, y, r->qd, y + n);
+    else
+        memcpy(y + n, r->qd, n * sizeof *y);
+    return QD_OK;
+}
+
+qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
+    qd_sim *s = r->s;
+    qd__contact *c = &r->imp->c[i];
+    *res = (qd__impact_result){0};
+    double vin = qd__impact_rate(r, i, t, y), E = s->imp_E[i];
+    c->vmax = fmax(c->vmax, -vin);
+    for (int k = 0; k < 2; k++) {
+        c->t[k] = c->t[k + 1];
+        c->vout[k] = c->vout[k + 1];
+    }
+    c->t[2] = t;
+    c->vout[2] = -E * vin;
+    c->count++;
+    bool rest = !(c->vout[2] > sqrt(r->it->rtol) * c->vmax);
+    qd_status st = law(r, i, t, y, rest ? 0 : E, &res->lost);
+    if (st == QD_OK && rest)
+        st = settle(r, i, t, y, res);
+    return st;
+}
+
+qd_status qd__impact_rest(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
+    *res = (qd__impact_result){0};
+    qd_status st = law(r, i, t, y, 0, &res->lost);
+    return st == QD_OK ? settle(r, i, t, y, res) : st;
+}
