@@ -160,8 +160,10 @@ typedef struct qd_sim_stats {
      * at_rest: the run ended in contact with impact `contact` (its index
      * in the model's impacts) at t, before t_end: its rebounds fell below
      * what the tolerance resolves (rate below sqrt(rtol) times its fastest
-     * approach, or a landing inside the first step after the rebound that
-     * a step 16^6 times shorter still misses).  chattering: the flight
+     * approach, E = 0 included, with the motion pressing the gap shut
+     * after a plastic impact; or a landing inside the first step after the
+     * rebound that a step 16^6 times shorter still misses).  The impact is
+     * then plastic: the gap's rate is 0 after it.  chattering: the flight
      * times were shrinking geometrically (infinitely many impacts in a
      * finite time, the bouncing ball with E < 1), and t is the sum of the
      * series, the accumulation time; else t is the last impact's time. */

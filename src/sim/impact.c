@@ -22,8 +22,10 @@
  * in a finite time (the flights shrink like E^n).  A rebound whose rate is
  * below sqrt(rtol) times the contact's fastest approach rises (in a
  * uniform field) to rtol of the first bounce's height, which the tolerance
- * cannot resolve: the impact is then made plastic (E = 0) and the run ends
- * in contact.  When the flight times have been shrinking in proportion to
+ * cannot resolve: the impact is then made plastic (E = 0), and if the free
+ * motion presses the gap shut (d^2GAP/dt^2 <= 0 with the rate 0: the ball
+ * under gravity) the run ends in contact; otherwise the bodies part and
+ * the run goes on (E = 0 itself is the same case).  When the flight times have been shrinking in proportion to
  * the rebound rates (a geometric series, ratio E for the ball), the rest of
  * the series is summed and the run ends at the accumulation time
  * t* = t_k + d_k rho / (1 - r), the positions moved along q'+ to it.
@@ -59,8 +61,9 @@ static qd_status restitution(qd_sim *s, size_t i, const qd_expr *E) {
     return QD_OK;
 }
 
-/* dGAP/dq_j (n), dGAP/dt of gap i into outs; QD_ERR_ARG when GAP has a
- * velocity or does not move with the coordinates. */
+/* dGAP/dq_j (n), dGAP/dt and the part of d^2GAP/dt^2 without q'' (the
+ * rate's derivative at fixed q') of gap i into outs; QD_ERR_ARG when GAP
+ * has a velocity or does not move with the coordinates. */
 static qd_status gradient(qd_sim *s, size_t i, const qd_expr **outs) {
     const qd_eom *e = s->e;
     size_t n = s->n;
@@ -76,7 +79,15 @@ static qd_status gradient(qd_sim *s, size_t i, const qd_expr **outs) {
         outs[j] = qd_diff(s->ctx, gap, e->q[j]);
         moves = moves || (outs[j] && !qd_is_zero(outs[j]));
     }
-    outs[n] = qd_diff(s->ctx, gap, qd_time(s->ctx));
+    const qd_expr *t = qd_time(s->ctx);
+    outs[n] = qd_diff(s->ctx, gap, t);
+    const qd_expr *rate = outs[n], *acc = NULL;
+    for (size_t j = 0; j < n; j++)
+        rate = qd_add(s->ctx, rate, qd_mul(s->ctx, outs[j], e->qd[j]));
+    acc = qd_diff(s->ctx, rate, t);
+    for (size_t j = 0; j < n; j++)
+        acc = qd_add(s->ctx, acc, qd_mul(s->ctx, qd_diff(s->ctx, rate, e->q[j]), e->qd[j]));
+    outs[n + 1] = acc;
     if (qd_ctx_status(s->ctx) != QD_OK)
         return qd_ctx_status(s->ctx);
     if (!moves) {
@@ -95,7 +106,7 @@ qd_status qd__impact_setup(qd_sim *s) {
     s->imp_name = qd__calloc(s->ctx, ni, sizeof *s->imp_name);
     s->imp_gap = qd__calloc(s->ctx, ni, sizeof *s->imp_gap);
     s->imp_E = qd__calloc(s->ctx, ni, sizeof *s->imp_E);
-    const qd_expr **outs = qd__malloc(s->ctx, ni * (n + 1) * sizeof *outs);
+    const qd_expr **outs = qd__malloc(s->ctx, ni * (n + 2) * sizeof *outs);
     qd_status st = s->imp_name && s->imp_gap && s->imp_E && outs ? QD_OK : QD_ERR_NOMEM;
     s->nimp = st == QD_OK ? ni : 0;
     for (size_t i = 0; st == QD_OK && i < ni; i++) {
@@ -103,10 +114,10 @@ qd_status qd__impact_setup(qd_sim *s) {
         s->imp_gap[i] = qd_model_impact_gap(s->model, i);
         st = restitution(s, i, qd_model_impact_restitution(s->model, i));
         if (st == QD_OK)
-            st = gradient(s, i, outs + i * (n + 1));
+            st = gradient(s, i, outs + i * (n + 2));
     }
     if (st == QD_OK) {
-        s->imp = qd__sim_prog(s, ni * (n + 1), outs, &s->imp_n);
+        s->imp = qd__sim_prog(s, ni * (n + 2), outs, &s->imp_n);
         st = s->imp ? QD_OK : qd_ctx_status(s->ctx);
     }
     qd__free(outs);
@@ -132,7 +143,8 @@ qd_status qd__impacts_new(qd__run *r) {
         return QD_ERR_NOMEM;
     r->imp = im;
     im->c = qd__calloc(s->ctx, s->nimp, sizeof *im->c);
-    im->K = qd__calloc(s->ctx, N * N + N + (N - n) * n + (N - n) + n + r->it->dim, sizeof *im->K);
+    im->K = qd__calloc(s->ctx, N * N + N + (N - n) * n + (N - n) + n + 3 * r->it->dim,
+                       sizeof *im->K);
     if (!im->c || !im->K)
         return QD_ERR_NOMEM;
     im->rhs = im->K + N * N;
@@ -140,6 +152,8 @@ qd_status qd__impacts_new(qd__run *r) {
     im->b = im->A + (N - n) * n;
     im->zero = im->b + (N - n);
     im->y_after = im->zero + n;
+    im->ylag = im->y_after + r->it->dim;
+    im->dy = im->ylag + r->it->dim;
     im->fresh = im->unresolved = s->nimp;
     return QD_OK;
 }
@@ -174,7 +188,7 @@ static double rate_here(qd__run *r, size_t i, double t, const double *q) {
     qd_sim *s = r->s;
     size_t n = s->n;
     qd__prog_at(s, s->imp, s->imp_w, t, q, r->qd, s->imp_out);
-    const double *a = s->imp_out + i * (n + 1);
+    const double *a = s->imp_out + i * (n + 2);
     double v = a[n];
     for (size_t j = 0; j < n; j++)
         v += a[j] * r->qd[j];
@@ -204,7 +218,7 @@ static void law_rows(qd__run *r, size_t i, double t, const double *q, double E) 
         }
     }
     double v = rate_here(r, i, t, q);
-    memcpy(im->A + m * n, s->imp_out + i * (n + 1), n * sizeof *im->A);
+    memcpy(im->A + m * n, s->imp_out + i * (n + 2), n * sizeof *im->A);
     im->b[m] = -(1 + E) * v;
 }
 
@@ -276,6 +290,25 @@ static qd_status settle(qd__run *r, size_t i, double t, double *y, qd__impact_re
     return QD_OK;
 }
 
+/* d^2GAP/dt^2 of contact i at (t, y), q' in r->qd, with the free motion's
+ * q'' (the constraints' forces included, no contact force). */
+static qd_status gap_acceleration(qd__run *r, size_t i, double t, const double *y, double *gdd) {
+    qd_sim *s = r->s;
+    qd__impacts *im = r->imp;
+    size_t n = s->n;
+    memcpy(im->ylag, y, n * sizeof *y);
+    memcpy(im->ylag + n, r->qd, n * sizeof *y);
+    qd_status st = qd__rhs(s, QD__LAG, t, im->ylag, im->dy);
+    if (st != QD_OK)
+        return st;
+    qd__prog_at(s, s->imp, s->imp_w, t, y, r->qd, s->imp_out);
+    const double *a = s->imp_out + i * (n + 2);
+    *gdd = a[n + 1];
+    for (size_t j = 0; j < n; j++)
+        *gdd += a[j] * im->dy[n + j];
+    return QD_OK;
+}
+
 qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
     qd_sim *s = r->s;
     qd__contact *c = &r->imp->c[i];
@@ -291,7 +324,13 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
     c->count++;
     bool rest = !(c->vout[2] > sqrt(r->it->rtol) * c->vmax);
     qd_status st = law(r, i, t, y, rest ? 0 : E, &res->lost);
+    /* a plastic impact rests in contact only while the motion presses the
+     * gap shut; else (a rhombus hitting a wall, Desloge ch. 57 ex. 1) the
+     * bodies part again and the run goes on */
+    double gdd = 0;
     if (st == QD_OK && rest)
+        st = gap_acceleration(r, i, t, y, &gdd);
+    if (st == QD_OK && rest && !(gdd > 0))
         st = settle(r, i, t, y, res);
     return st;
 }

@@ -217,6 +217,7 @@ typedef struct qd__impacts {
     size_t fresh;     /* the contact whose impact the next step follows, or nimp */
     size_t unresolved;/* a contact whose landing the step missed, or nimp */
     double t_after, *y_after; /* the state just after the last impact (retries) */
+    double *ylag, *dy;        /* (q, q') and its derivative: the gap's acceleration */
     int retries;
 } qd__impacts;
 
