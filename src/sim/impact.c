@@ -272,7 +272,9 @@ static double remaining_bounces(const qd__contact *c) {
 static qd_status settle(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
     qd_sim *s = r->s;
     size_t n = s->n;
-    double dt = remaining_bounces(&r->imp->c[i]);
+    /* not past the end of the run: the bounces left there are below the
+     * tolerance anyway */
+    double dt = fmin(remaining_bounces(&r->imp->c[i]), r->it->tend - t);
     res->contact = true;
     res->zeno = dt > 0;
     res->t_rest = t + dt;
