@@ -43,7 +43,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
     args = ap.parse_args()
-    qdot = str(Path(args.build) / 'qdot')
+    qdot = str(Path(args.build).resolve() / 'qdot')
     ball = str(ROOT / 'examples' / 'bouncing_ball.qd')
     rhombus = str(ROOT / 'examples' / 'rhombus_wall.qd')
     failed = []
@@ -57,7 +57,8 @@ def main():
     tstar = t1 * (1 + E) / (1 - E)
 
     # the bounces as CSV: samples every 0.25 s, and the impacts' pairs
-    rc, out, err = run(qdot, 'simulate', ball, '--t-end', 3, '--dt', 0.25, '--rtol', 1e-12)
+    rc, out, err = run(qdot, 'simulate', ball, '--t-end', 3, '--method', 'dop853', '--dt', 0.25,
+                       '--rtol', 1e-12)
     check(rc == 0, f'ball: exit {rc} {err}')
     r = rows(out)
     imp = [x for x in r if x['event'] == '1']
@@ -104,7 +105,8 @@ def main():
               f'elastic: lost {j["impact_energy_lost"]}, error {j["energy_error_max"]}')
 
     # Desloge's rhombus (T55): C stops, th'+ = 3/7, x'+ = -3/7
-    rc, out, err = run(qdot, 'simulate', rhombus, '--t-end', 1, '--dt', 0.5, '--rtol', 1e-12)
+    rc, out, err = run(qdot, 'simulate', rhombus, '--t-end', 1, '--method', 'dop853', '--dt', 0.5,
+                       '--rtol', 1e-12)
     check(rc == 0, f'rhombus: exit {rc} {err}')
     imp = [x for x in rows(out) if x.get('event') == '1']
     check(len(imp) == 2, f'rhombus: {len(imp)} impact rows')
@@ -115,7 +117,7 @@ def main():
 
     # errors
     rc, out, err = run(qdot, 'simulate', ball, '--t-end', 1, '--set', 'e=1.5')
-    check(rc == 2 and out == '' and "impact 'floor'" in err and '1.5' in err and '[0, 1]' in err,
+    check(rc == 2 and out == '' and 'restitution' in err and '1.5' in err,
           f'restitution 1.5: {rc} {err!r}')
     rc, out, err = run(qdot, 'simulate', ball, '--t-end', 1, '--initial', 'y = -0.1')
     check(rc == 2 and out == '' and "impact 'floor': the gap is negative at t0 (-0.1): the bodies "

@@ -86,20 +86,20 @@ static sim_fix *ball(double E, double h) {
     return f;
 }
 
-/* Apexes (event 0: y' = 0 falling through) and impacts (event 1, pairs
- * before/after) against E^(2n) h and t1 (1 + 2E + ... + 2E^(n-1)). */
-static void check_bounces(const rows *r, double E, double h, size_t nmax, double tol) {
+/* Apexes (another event: y' = 0 falling through) and impacts (event
+ * imp_ev, pairs before/after) against E^(2n) h and t1 (1 + 2E + ... + 2E^(n-1)). */
+static void check_bounces(const rows *r, int imp_ev, double E, double h, size_t nmax,
+                          double tol) {
     double t1 = sqrt(2 * h / G), tn = t1, apex = h;
     size_t napex = 0, nimp = 0;
     for (size_t k = 0; k < r->n && nimp < nmax; k++) {
-        if (r->ev[k] == 0) {
+        if (r->ev[k] != imp_ev) {
             apex *= E * E;
             near(r->row[k][1], apex, 1e-8, "apex", ++napex);
             continue;
         }
         /* an impact: the row before, then the row after */
-        assert_int_equal(r->ev[k], 1);
-        assert_true(k + 1 < r->n && r->ev[k + 1] == 1);
+        assert_true(k + 1 < r->n && r->ev[k + 1] == imp_ev);
         nimp++;
         near(r->row[k][0], tn, tol, "impact time", nimp);
         assert_true(fabs(r->row[k][1]) < 1e-14 * h);
@@ -124,7 +124,7 @@ static void ball_chatters(void **state) {
     add_apex_event(f);
     rows r;
     assert_int_equal(run(f, QD_SIM_DOP853, 10, 0, rtol, &r), QD_OK);
-    check_bounces(&r, E, h, 12, 1e-12);
+    check_bounces(&r, 1, E, h, 12, 1e-12);
     double t1 = sqrt(2 * h / G), tstar = t1 * (1 + E) / (1 - E);
     assert_true(f->stats.at_rest && f->stats.chattering);
     assert_int_equal(f->stats.contact, 0);
@@ -149,7 +149,7 @@ static void ball_every_method(void **state) {
         rows r;
         assert_int_equal(run(f, method, 5, adaptive ? 0 : 1e-3, 1e-12, &r), QD_OK);
         double tol = method == QD_SIM_BDF ? 1e-7 : 1e-12;
-        check_bounces(&r, E, h, 8, method == QD_SIM_BDF ? 1e-9 : 1e-12);
+        check_bounces(&r, 0, E, h, 8, method == QD_SIM_BDF ? 1e-9 : 1e-12);
         if (!(f->stats.at_rest && rel(f->stats.t, tstar) <= tol))
             fail_msg("%s: at rest %d at t = %.17g, t* = %.17g", qd_sim_method_name(method),
                      f->stats.at_rest, f->stats.t, tstar);
@@ -166,7 +166,7 @@ static void ball_elastic(void **state) {
     add_apex_event(f);
     rows r;
     assert_int_equal(run(f, QD_SIM_DOP853, 24 * t1, 0, 1e-12, &r), QD_OK);
-    check_bounces(&r, 1, h, 12, 1e-12);
+    check_bounces(&r, 1, 1, h, 12, 1e-12);
     assert_false(f->stats.at_rest);
     assert_int_equal(f->stats.impacts, 12);
     assert_true(fabs(f->stats.impact_energy_lost) < 1e-13);
@@ -300,15 +300,17 @@ static void gap_negative_at_start(void **state) {
     sf_free(f);
 }
 
-/* E is checked where the parameters have their values: qd_sim_new. */
+/* E is checked where the parameters have their values, qd_sim_new: the
+ * parser refuses 3/2 in the text, but qd_model_set_param may set it after. */
 static void restitution_out_of_range(void **state) {
     (void)state;
     qd_ctx *ctx = qd_ctx_new();
     qd_diag d;
-    qd_model *m = qd_model_parse(ctx, "coordinates y\nparameters e = 3/2\n"
+    qd_model *m = qd_model_parse(ctx, "coordinates y\nparameters e = 1/2\n"
                                       "T = y'^2/2\nV = 9.81*y\n"
                                       "impact floor: y >= 0 restitution e\n", &d);
     assert_non_null(m);
+    assert_int_equal(qd_model_set_param(ctx, m, "e", qd_rat(ctx, 3, 2)), QD_OK);
     qd_eom *e = qd_eom_derive(ctx, m);
     assert_non_null(e);
     assert_null(qd_sim_new(ctx, m, e));
