@@ -6,7 +6,7 @@
  * --format json a JSON document on stdout (summary, final state, and the
  * rows unless --out takes them).  The model's impacts add two rows each
  * (before and after) and say on stderr how many there were, the energy
- * they took, and where a run ends at rest in contact.
+ * they took, and where a run ends in contact.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
@@ -135,8 +135,8 @@ static void impacts_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st) 
     cli_json_number(j, (double)st->impacts);
     cli_json_key(j, "impact_energy_lost");
     cli_json_number(j, st->impact_energy_lost);
-    cli_json_key(j, "at_rest");
-    if (!st->at_rest) {
+    cli_json_key(j, "contact");
+    if (!st->in_contact) {
         cli_json_null(j);
         return;
     }
@@ -147,20 +147,24 @@ static void impacts_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st) 
     cli_json_number(j, st->t);
     cli_json_key(j, "chattering");
     cli_json_bool(j, st->chattering);
+    cli_json_key(j, "at_rest");
+    cli_json_bool(j, st->at_rest);
     cli_json_end_object(j);
 }
 
 /* The impacts on stderr: how many, the energy they took, and where the run
- * came to rest in contact. */
+ * ended in contact. */
 static void impacts_summary(const cli_sim *c, const qd_sim_stats *st) {
     if (!qd_model_nimpacts(c->mf.model))
         return;
     fprintf(stderr, "qdot: simulate: %zu impact%s, energy lost %.6g\n", st->impacts,
             st->impacts == 1 ? "" : "s", st->impact_energy_lost);
-    if (st->at_rest)
-        fprintf(stderr, "qdot: simulate: impact '%s': %sat rest in contact from t = %.6g after "
-                        "%zu impact%s; the run ends there\n",
+    if (st->in_contact)
+        fprintf(stderr, "qdot: simulate: impact '%s': %s%s from t = %.6g after %zu impact%s; "
+                        "the run ends there\n",
                 qd_model_impact_name(c->mf.model, st->contact), st->chattering ? "chattering; " : "",
+                st->at_rest ? "at rest in contact"
+                            : "in sustained contact, still moving (not simulated)",
                 st->t, st->impacts, st->impacts == 1 ? "" : "s");
 }
 

@@ -157,19 +157,23 @@ typedef struct qd_sim_stats {
     /* Unilateral contacts (the model's `impact NAME: GAP >= 0 restitution
      * E`): the impacts applied and the energy h they took (E < 1), which
      * energy_error_max does not count (it measures |E(t) - (E(0) - lost)|).
-     * at_rest: the run ended in contact with impact `contact` (its index
+     * in_contact: the run ended in contact with impact `contact` (its index
      * in the model's impacts) at t, before t_end: its rebounds fell below
      * what the tolerance resolves (rate below sqrt(rtol) times its fastest
      * approach, E = 0 included, with the motion pressing the gap shut
      * after a plastic impact; or a landing inside the first step after the
      * rebound that a step 16^6 times shorter still misses).  The impact is
-     * then plastic: the gap's rate is 0 after it.  chattering: the flight
+     * then plastic: the gap's rate is 0 after it.  at_rest: nothing moves
+     * after it (T after <= rtol T before; the ball on the floor); else the
+     * bodies would move on in sustained contact (a rod pivoting on a
+     * ledge, a ball sliding along the floor), which is not simulated.
+     * chattering: the flight
      * times were shrinking geometrically (infinitely many impacts in a
      * finite time, the bouncing ball with E < 1), and t is the sum of the
      * series, the accumulation time; else t is the last impact's time. */
     size_t impacts;
     double impact_energy_lost;
-    bool at_rest, chattering;
+    bool in_contact, at_rest, chattering;
     size_t contact;
 } qd_sim_stats;
 
@@ -201,7 +205,7 @@ QD_API bool qd_sim_compiled(const qd_sim *s);
  * the order added).  Returning nonzero ends the run early (QD_OK).  An
  * impact of the model's contact i gives two rows with event nev + i (nev
  * the events added): the state just before it and the state just after
- * (at rest in contact: the resting state at the run's end time). */
+ * (ending in contact: the state at the run's end time). */
 typedef int (*qd_sim_sink)(void *data, int event, const double *row);
 
 /* Integrate from opts->t0 to opts->t_end.  Rows at t0, at the output grid

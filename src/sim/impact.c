@@ -223,15 +223,18 @@ static void law_rows(qd__run *r, size_t i, double t, const double *q, double E) 
 }
 
 /* Newton's law with restitution E for contact i at (t, y): y gets the
- * state after, r->qd its velocities, *lost the energy h lost. */
-static qd_status law(qd__run *r, size_t i, double t, double *y, double E, double *lost) {
+ * state after, r->qd its velocities, *lost the energy h lost; *still:
+ * T after <= rtol T before. */
+static qd_status law(qd__run *r, size_t i, double t, double *y, double E, double *lost,
+                     bool *still) {
     qd_sim *s = r->s;
     qd__impacts *im = r->imp;
     size_t n = s->n, N = n + s->m + 1;
     qd_status st = qd__run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    double h_before = qd__energy_eval(s, t, y, qd__second(s, y, r->qd))[0];
+    const double *hT = qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
+    double h_before = hT[0], T_before = hT[1];
     law_rows(r, i, t, y, E);
     qd__prog_at(s, s->acc, s->acc_w, t, y, r->qd, s->acc_out);
     qd__num_saddle(n, s->m + 1, s->acc_out, im->zero, im->A, im->b, im->K, im->rhs);
@@ -248,7 +251,9 @@ static qd_status law(qd__run *r, size_t i, double t, double *y, double E, double
         qd__momentum(s, t, y, r->qd, y + n);
     else
         memcpy(y + n, r->qd, n * sizeof *y);
-    *lost = h_before - qd__energy_eval(s, t, y, qd__second(s, y, r->qd))[0];
+    hT = qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
+    *lost = h_before - hT[0];
+    *still = !(fabs(hT[1]) > r->it->rtol * fabs(T_before));
     return QD_OK;
 }
 
@@ -325,7 +330,7 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
     c->vout[2] = -E * vin;
     c->count++;
     bool rest = !(c->vout[2] > sqrt(r->it->rtol) * c->vmax);
-    qd_status st = law(r, i, t, y, rest ? 0 : E, &res->lost);
+    qd_status st = law(r, i, t, y, rest ? 0 : E, &res->lost, &res->at_rest);
     /* a plastic impact rests in contact only while the motion presses the
      * gap shut; else (a rhombus hitting a wall, Desloge ch. 57 ex. 1) the
      * bodies part again and the run goes on */
@@ -339,6 +344,6 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
 
 qd_status qd__impact_rest(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
     *res = (qd__impact_result){0};
-    qd_status st = law(r, i, t, y, 0, &res->lost);
+    qd_status st = law(r, i, t, y, 0, &res->lost, &res->at_rest);
     return st == QD_OK ? settle(r, i, t, y, res) : st;
 }

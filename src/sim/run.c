@@ -379,7 +379,7 @@ static void back_to(qd__run *r, loop *L, double t, const double *y) {
         memcpy(it->y, y, it->dim * sizeof *it->y);
 }
 
-/* The row after contact i's impact; at rest in contact the run ends. */
+/* The row after contact i's impact; in contact the run ends. */
 static qd_status after_impact(qd__run *r, loop *L, size_t i, const qd__impact_result *res) {
     qd_sim *s = r->s;
     qd__integ *it = r->it;
@@ -389,7 +389,8 @@ static qd_status after_impact(qd__run *r, loop *L, size_t i, const qd__impact_re
     if (res->contact) {
         L->stop = true;
         it->t = res->t_rest;
-        L->stats->at_rest = true;
+        L->stats->in_contact = true;
+        L->stats->at_rest = res->at_rest;
         L->stats->contact = i;
         L->stats->chattering = res->zeno;
     }

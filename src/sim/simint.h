@@ -249,7 +249,8 @@ double qd__impact_rate(qd__run *r, size_t i, double t, const double *y);
 /* What an impact did, for the driver (run.c). */
 typedef struct qd__impact_result {
     double lost;      /* h before - h after */
-    bool contact;     /* the run ends: at rest in contact */
+    bool contact;     /* the run ends: in contact */
+    bool at_rest;     /* ... with nothing moving (T after <= rtol T before) */
     bool zeno;        /* the bounces' times were summed (chattering) */
     double t_rest;    /* from when (the accumulation time of the impacts) */
 } qd__impact_result;

@@ -7,7 +7,7 @@
   impact times are t1 (1 + 2e + ... + 2e^(n-1)), t1 = sqrt(2h/g); the run
   ends at rest in contact at t* = t1 (1+e)/(1-e) with the chattering
   message; JSON carries impacts, impact_energy_lost (= m g h: all of it)
-  and at_rest.
+  and contact.
 - --set e=1: no rest, the energy kept, every flight 2 t1.
 - examples/rhombus_wall.qd (Desloge ch. 57 ex. 1, reference T55): the row
   after the impact has x' = -3/7, th' = 3/7.
@@ -89,8 +89,8 @@ def main():
         check(j['impacts'] == 20, f'json impacts {j.get("impacts")}')
         check(abs(j['impact_energy_lost'] - G * H) <= 1e-12 * G * H,
               f'json energy lost {j.get("impact_energy_lost")}')
-        rest = j['at_rest']
-        check(rest and rest['impact'] == 'floor' and rest['chattering'] and
+        rest = j['contact']
+        check(rest and rest['impact'] == 'floor' and rest['chattering'] and rest['at_rest'] and
               abs(rest['t'] - tstar) <= 1e-12 * tstar, f'json at_rest {rest}')
         check(j['energy_error_max'] < 1e-12, f'json energy error {j["energy_error_max"]}')
 
@@ -100,7 +100,7 @@ def main():
     check(rc == 0, f'elastic: exit {rc} {err}')
     if rc == 0:
         j = json.loads(out)
-        check(j['impacts'] == 5 and j['at_rest'] is None, f'elastic: {j["impacts"]} {j["at_rest"]}')
+        check(j['impacts'] == 5 and j['contact'] is None, f'elastic: {j["impacts"]} {j["contact"]}')
         check(abs(j['impact_energy_lost']) < 1e-12 and j['energy_error_max'] < 1e-12,
               f'elastic: lost {j["impact_energy_lost"]}, error {j["energy_error_max"]}')
 

@@ -123,6 +123,12 @@ def _(q, v, t, p):
     return [0.0, 0.0]
 
 
+@example('rod_ledge', ['x', 'y', 'th'])
+def _(q, v, t, p):
+    # a free rod under gravity between impacts: x'' = 0, y'' = -g, th'' = 0
+    return [0.0, -p['g'], 0.0]
+
+
 @example('bead_rotating_wire', ['r'], ranges={'r': (0.1, 2.0)})
 def _(q, v, t, p):
     # Goldstein sec. 1.6 example 3 (G03, pitfall P2): r'' = omega^2 r

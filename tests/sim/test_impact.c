@@ -18,6 +18,8 @@
  *   - the rhombus of four rods hitting an inelastic wall (Desloge ch. 57
  *     ex. 1, reference T55): th'+ = 3/7, x'+ = -3/7 for al = 30 deg,
  *     a = v = 1, and the rhombus leaves the wall again;
+ *   - a rod falling flat onto a ledge: the angular momentum about the
+ *     ledge kept, and the run ending in sustained contact, still moving;
  *   - the errors: a gap negative at t0, a restitution outside [0, 1].
  *
  * The flights under constant gravity are quadratics, which every method
@@ -126,7 +128,7 @@ static void ball_chatters(void **state) {
     assert_int_equal(run(f, QD_SIM_DOP853, 10, 0, rtol, &r), QD_OK);
     check_bounces(&r, 1, E, h, 12, 1e-12);
     double t1 = sqrt(2 * h / G), tstar = t1 * (1 + E) / (1 - E);
-    assert_true(f->stats.at_rest && f->stats.chattering);
+    assert_true(f->stats.in_contact && f->stats.at_rest && f->stats.chattering);
     assert_int_equal(f->stats.contact, 0);
     near(f->stats.t, tstar, 1e-12, "accumulation time", 0);
     assert_true(f->last[0] == f->stats.t);
@@ -150,7 +152,7 @@ static void ball_every_method(void **state) {
         assert_int_equal(run(f, method, 5, adaptive ? 0 : 1e-3, 1e-12, &r), QD_OK);
         double tol = method == QD_SIM_BDF ? 1e-7 : 1e-12;
         check_bounces(&r, 0, E, h, 8, method == QD_SIM_BDF ? 1e-9 : 1e-12);
-        if (!(f->stats.at_rest && rel(f->stats.t, tstar) <= tol))
+        if (!(f->stats.in_contact && f->stats.at_rest && rel(f->stats.t, tstar) <= tol))
             fail_msg("%s: at rest %d at t = %.17g, t* = %.17g", qd_sim_method_name(method),
                      f->stats.at_rest, f->stats.t, tstar);
         assert_true(fabs(f->last[1]) < 1e-12);
@@ -167,7 +169,7 @@ static void ball_elastic(void **state) {
     rows r;
     assert_int_equal(run(f, QD_SIM_DOP853, 24 * t1, 0, 1e-12, &r), QD_OK);
     check_bounces(&r, 1, 1, h, 12, 1e-12);
-    assert_false(f->stats.at_rest);
+    assert_false(f->stats.in_contact);
     assert_int_equal(f->stats.impacts, 12);
     assert_true(fabs(f->stats.impact_energy_lost) < 1e-13);
     assert_true(f->stats.energy_error_max < 1e-12);
@@ -182,7 +184,7 @@ static void ball_plastic(void **state) {
     rows r;
     assert_int_equal(run(f, QD_SIM_DOP853, 3, 0, 1e-12, &r), QD_OK);
     assert_int_equal(f->stats.impacts, 1);
-    assert_true(f->stats.at_rest && !f->stats.chattering);
+    assert_true(f->stats.in_contact && f->stats.at_rest && !f->stats.chattering);
     near(f->stats.t, t1, 1e-14, "rest time", 0);
     assert_true(f->last[2] == 0);
     near(f->stats.impact_energy_lost, 2 * G * h, 1e-13, "energy lost", 0);
@@ -222,7 +224,7 @@ static void pendulum_wall(void **state) {
     }
     assert_int_equal(nimp, 4);
     assert_true(namp >= 3);
-    assert_false(f->stats.at_rest);
+    assert_false(f->stats.in_contact);
     sf_free(f);
 }
 
@@ -278,7 +280,7 @@ static void rhombus_wall(void **state) {
     rows r;
     assert_int_equal(run(f, QD_SIM_DOP853, 1.5, 0, 1e-12, &r), QD_OK);
     assert_int_equal(f->stats.impacts, 1);
-    assert_false(f->stats.at_rest);
+    assert_false(f->stats.in_contact);
     assert_int_equal(r.n, 2);
     near(r.row[0][0], 2 - sqrt(3), 1e-14, "impact time", 0);
     near(r.row[1][3], -3.0 / 7, 1e-13, "x'+", 0);
@@ -286,6 +288,39 @@ static void rhombus_wall(void **state) {
     near(f->stats.impact_energy_lost, 8.0 / 7, 1e-13, "energy lost", 0);
     /* C has left the wall by the end */
     assert_true(f->last[1] - 2 * cos(f->last[2]) > 1e-3);
+    sf_free(f);
+}
+
+/* A rod (m, 2a) falling flat onto a ledge at d from its centre, E = 0:
+ * the angular momentum about the ledge is kept across the impact (the
+ * impulse acts there), m v d = (m a^2/3 + m d^2) w, so w = 3 v d /
+ * (a^2 + 3 d^2), the centre's y' = -d w, and (m v^2/2) a^2/(a^2 + 3 d^2)
+ * is lost.  Gravity presses it onto the ledge, about which it turns: the
+ * run ends in sustained contact, not at rest. */
+static void rod_ledge(void **state) {
+    (void)state;
+    double a = 1, d = 0.5, h = 0.2, v = sqrt(2 * G * h), w = 3 * v * d / (a * a + 3 * d * d);
+    char text[512];
+    snprintf(text, sizeof text,
+             "coordinates x, y, th\nparameters m = 1, a = %.17g, d = %.17g, g = %.17g\n"
+             "T = m/2*(x'^2 + y'^2) + m*a^2/6*th'^2\nV = m*g*y\n"
+             "impact ledge: y*cos(th) - x*sin(th) >= 0 restitution 0\n"
+             "initial x = d, y = %.17g, th = 0\n", a, d, G, h);
+    sim_fix *f = sf_load(text);
+    assert_non_null(f);
+    rows r;
+    assert_int_equal(run(f, QD_SIM_DOP853, 1, 0, 1e-12, &r), QD_OK);
+    assert_int_equal(r.n, 2);
+    assert_int_equal(f->stats.impacts, 1);
+    assert_true(f->stats.in_contact && !f->stats.at_rest && !f->stats.chattering);
+    near(r.row[0][0], sqrt(2 * h / G), 1e-14, "impact time", 0);
+    /* columns t, x, y, th, x', y', th', energy */
+    assert_true(fabs(r.row[1][4]) < 1e-15);
+    near(r.row[1][6], -w, 1e-13, "th'+", 0);
+    near(r.row[1][5], -d * w, 1e-13, "y'+", 0);
+    near(f->stats.impact_energy_lost, 0.5 * v * v * a * a / (a * a + 3 * d * d), 1e-13,
+         "energy lost", 0);
+    assert_true(f->last[0] == r.row[0][0]);
     sf_free(f);
 }
 
@@ -327,7 +362,8 @@ int main(void) {
         cmocka_unit_test(ball_chatters),        cmocka_unit_test(ball_every_method),
         cmocka_unit_test(ball_elastic),         cmocka_unit_test(ball_plastic),
         cmocka_unit_test(pendulum_wall),        cmocka_unit_test(circle_stop),
-        cmocka_unit_test(rhombus_wall),         cmocka_unit_test(gap_negative_at_start),
+        cmocka_unit_test(rhombus_wall),         cmocka_unit_test(rod_ledge),
+        cmocka_unit_test(gap_negative_at_start),
         cmocka_unit_test(restitution_out_of_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
