@@ -24,10 +24,12 @@
  * uniform field) to rtol of the first bounce's height, which the tolerance
  * cannot resolve: the impact is then made plastic (E = 0), and if the free
  * motion presses the gap shut (d^2GAP/dt^2 <= 0 with the rate 0: the ball
- * under gravity) the run ends in contact; otherwise the bodies part and
- * the run goes on (E = 0 itself is the same case).  When the flight times have been shrinking in proportion to
- * the rebound rates (a geometric series, ratio E for the ball), the rest of
- * the series is summed and the run ends at the accumulation time
+ * under gravity) the run ends in contact (at rest, or still moving in a
+ * sustained contact that is not integrated: a rod pivoting on a ledge);
+ * otherwise the bodies part and the run goes on (E = 0 itself is the same
+ * case).  When the flight times have been shrinking in proportion to the
+ * rebound rates (a geometric series, ratio E for the ball), the rest of the
+ * series is summed and the run ends at the accumulation time
  * t* = t_k + d_k rho / (1 - r), the positions moved along q'+ to it.
  */
 #include "simint.h"
@@ -39,12 +41,6 @@
 
 /* ---- setup (qd_sim_new) -------------------------------------------------------- */
 
-static qd_status impact_error(qd_sim *s, size_t i, const char *what, double x) {
-    qd_ctx_error(s->ctx, QD_ERR_ARG, "impact '%s': %s%.6g%s", s->imp_name[i], what, x,
-                 strstr(what, "restitution") ? " is outside [0, 1]" : "");
-    return QD_ERR_ARG;
-}
-
 /* E from its expression in the parameters (their values in s->par). */
 static qd_status restitution(qd_sim *s, size_t i, const qd_expr *E) {
     double x = 0;
@@ -55,8 +51,12 @@ static qd_status restitution(qd_sim *s, size_t i, const qd_expr *E) {
                      s->imp_name[i]);
         return QD_ERR_ARG;
     }
-    if (!(x >= 0 && x <= 1))
-        return impact_error(s, i, "the restitution ", x);
+    if (!(x >= 0 && x <= 1)) {
+        /* the parser refuses such numbers; qd_model_set_param does not */
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "impact '%s': the restitution %.6g is outside [0, 1]",
+                     s->imp_name[i], x);
+        return QD_ERR_ARG;
+    }
     s->imp_E[i] = x;
     return QD_OK;
 }
