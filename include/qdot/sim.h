@@ -205,7 +205,9 @@ QD_API bool qd_sim_compiled(const qd_sim *s);
  * the order added).  Returning nonzero ends the run early (QD_OK).  An
  * impact of the model's contact i gives two rows with event nev + i (nev
  * the events added): the state just before it and the state just after
- * (ending in contact: the state at the run's end time). */
+ * (ending in contact: the state at the run's end time).  Contacts whose
+ * gaps close at the same instant (to round-off) are struck together, in
+ * one law: one pair of rows, under the index of the one located first. */
 typedef int (*qd_sim_sink)(void *data, int event, const double *row);
 
 /* Integrate from opts->t0 to opts->t_end.  Rows at t0, at the output grid

@@ -126,10 +126,11 @@ static qd_status positive_sample(qd__run *r, size_t k, double *a, double *ga) {
 
 /* Where contact i (event k) closes in the step: from above 0 to not above
  * it, or (its gap not positive at the start: just after its impact, or
- * touching at t0) from the last positive sample; a gap that only touches
- * at the start with no positive sample closes there.  *root is NAN when
- * the gap did not close; r->imp->unresolved = i when it is negative at the
- * end with no way to say where it closed. */
+ * touching at t0, or left at 0 by another contact's impact at the same
+ * instant) from the last positive sample; a gap not struck at the start
+ * with no positive sample closes there (*closed).  r->imp->unresolved = i
+ * when the step follows its impact and no sample is positive: the rebound
+ * and the landing both fell inside the step. */
 static qd_status impact_bracket(qd__run *r, size_t k, double *a, double *ga, bool *closed) {
     qd__integ *it = r->it;
     size_t i = k - r->s->nev;
@@ -140,7 +141,7 @@ static qd_status impact_bracket(qd__run *r, size_t k, double *a, double *ga, boo
     if (st != QD_OK || !isnan(*a))
         return st;
     *a = it->told;
-    if (*ga == 0 && r->imp->fresh != i) {
+    if (!r->imp->fresh[i]) {
         *closed = true;
         return QD_OK;
     }

@@ -137,24 +137,27 @@ qd_status qd__impacts_new(qd__run *r) {
     qd_sim *s = r->s;
     if (!s->nimp)
         return QD_OK;
-    size_t n = s->n, N = n + s->m + 1;
+    size_t n = s->n, N = n + s->m + s->nimp, d = r->it->dim;
     qd__impacts *im = qd__calloc(s->ctx, 1, sizeof *im);
     if (!im)
         return QD_ERR_NOMEM;
     r->imp = im;
     im->c = qd__calloc(s->ctx, s->nimp, sizeof *im->c);
-    im->K = qd__calloc(s->ctx, N * N + N + (N - n) * n + (N - n) + n + 3 * r->it->dim,
+    im->fresh = qd__calloc(s->ctx, 2 * s->nimp, sizeof *im->fresh);
+    im->K = qd__calloc(s->ctx, N * N + N + (N - n) * n + (N - n) + n + 3 * d + qd__nev_all(s),
                        sizeof *im->K);
-    if (!im->c || !im->K)
+    if (!im->c || !im->fresh || !im->K)
         return QD_ERR_NOMEM;
+    im->set = im->fresh + s->nimp;
     im->rhs = im->K + N * N;
     im->A = im->rhs + N;
     im->b = im->A + (N - n) * n;
     im->zero = im->b + (N - n);
     im->y_after = im->zero + n;
-    im->ylag = im->y_after + r->it->dim;
-    im->dy = im->ylag + r->it->dim;
-    im->fresh = im->unresolved = s->nimp;
+    im->ylag = im->y_after + d;
+    im->dy = im->ylag + d;
+    im->g = im->dy + d;
+    im->unresolved = s->nimp;
     return QD_OK;
 }
 
@@ -162,6 +165,7 @@ void qd__impacts_free(qd__run *r) {
     if (!r->imp)
         return;
     qd__free(r->imp->c);
+    qd__free(r->imp->fresh);
     qd__free(r->imp->K);
     qd__free(r->imp);
     r->imp = NULL;
@@ -201,12 +205,36 @@ double qd__impact_rate(qd__run *r, size_t i, double t, const double *y) {
     return rate_here(r, i, t, y);
 }
 
-/* The law's rows: the ordinary constraints, which hold after, and gap i,
- * whose rate after is -E times its rate before (q' in r->qd). */
-static void law_rows(qd__run *r, size_t i, double t, const double *q, double E) {
+/* The contacts struck with i at (t, y): i, and every other whose gap is 0
+ * to round-off and closing there (a rod falling flat on both ends), into
+ * im->set; their count.  Struck one after the other, the first impact
+ * would set the rod turning. */
+static size_t struck_with(qd__run *r, size_t i, double t, const double *y) {
     qd_sim *s = r->s;
     qd__impacts *im = r->imp;
-    size_t n = s->n, m = s->m;
+    size_t n = s->n, count = 0;
+    double qmax = 1;
+    for (size_t j = 0; j < n; j++)
+        qmax = fmax(qmax, fabs(y[j]));
+    if (qd__run_events_at(r, t, y, im->g, NULL) != QD_OK)
+        memset(im->g, 0, qd__nev_all(s) * sizeof *im->g);
+    for (size_t j = 0; j < s->nimp; j++) {
+        double rate = qd__impact_rate(r, j, t, y), amax = 1;
+        for (size_t k = 0; k <= n; k++)
+            amax = fmax(amax, fabs(s->imp_out[j * (n + 2) + k]));
+        im->set[j] = j == i || (fabs(im->g[s->nev + j]) <= 64 * 0x1p-52 * qmax * amax && rate < 0);
+        count += im->set[j];
+    }
+    return count;
+}
+
+/* The law's rows: the ordinary constraints, which hold after, and each
+ * contact of im->set, whose rate after is -E times its rate before (E = 0
+ * for them all when plastic); q' in r->qd. */
+static size_t law_rows(qd__run *r, double t, const double *q, bool plastic) {
+    qd_sim *s = r->s;
+    qd__impacts *im = r->imp;
+    size_t n = s->n, m = s->m, k = m;
     if (m) {
         qd__con_eval(s, t, q, r->qd);
         const double *A = s->con_out, *a0 = A + m * n;
@@ -217,27 +245,32 @@ static void law_rows(qd__run *r, size_t i, double t, const double *q, double E) 
             im->b[c] = -v;
         }
     }
-    double v = rate_here(r, i, t, q);
-    memcpy(im->A + m * n, s->imp_out + i * (n + 2), n * sizeof *im->A);
-    im->b[m] = -(1 + E) * v;
+    for (size_t i = 0; i < s->nimp; i++) {
+        if (!im->set[i])
+            continue;
+        double v = rate_here(r, i, t, q), E = plastic ? 0 : s->imp_E[i];
+        memcpy(im->A + k * n, s->imp_out + i * (n + 2), n * sizeof *im->A);
+        im->b[k++] = -(1 + E) * v;
+    }
+    return k;
 }
 
-/* Newton's law with restitution E for contact i at (t, y): y gets the
- * state after, r->qd its velocities, *lost the energy h lost; *still:
- * T after <= rtol T before. */
-static qd_status law(qd__run *r, size_t i, double t, double *y, double E, double *lost,
+/* Newton's law for the contacts of im->set at (t, y) (i names them in a
+ * message): y gets the state after, r->qd its velocities, *lost the energy
+ * h lost; *still: T after <= rtol T before. */
+static qd_status law(qd__run *r, size_t i, double t, double *y, bool plastic, double *lost,
                      bool *still) {
     qd_sim *s = r->s;
     qd__impacts *im = r->imp;
-    size_t n = s->n, N = n + s->m + 1;
+    size_t n = s->n;
     qd_status st = qd__run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
     const double *hT = qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
     double h_before = hT[0], T_before = hT[1];
-    law_rows(r, i, t, y, E);
+    size_t rows = law_rows(r, t, y, plastic), N = n + rows;
     qd__prog_at(s, s->acc, s->acc_w, t, y, r->qd, s->acc_out);
-    qd__num_saddle(n, s->m + 1, s->acc_out, im->zero, im->A, im->b, im->K, im->rhs);
+    qd__num_saddle(n, rows, s->acc_out, im->zero, im->A, im->b, im->K, im->rhs);
     if (!qd__num_solve(N, im->K, im->rhs, 1e-13 * (double)N)) {
         qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
                      "impact '%s' at t = %.17g: the impact equations are singular (the gap's "
@@ -316,11 +349,8 @@ static qd_status gap_acceleration(qd__run *r, size_t i, double t, const double *
     return QD_OK;
 }
 
-qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
-    qd_sim *s = r->s;
-    qd__contact *c = &r->imp->c[i];
-    *res = (qd__impact_result){0};
-    double vin = qd__impact_rate(r, i, t, y), E = s->imp_E[i];
+/* Contact i's history: an impact at t with approach rate vin < 0. */
+static void record(qd__contact *c, double t, double vin, double E) {
     c->vmax = fmax(c->vmax, -vin);
     for (int k = 0; k < 2; k++) {
         c->t[k] = c->t[k + 1];
@@ -329,8 +359,18 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
     c->t[2] = t;
     c->vout[2] = -E * vin;
     c->count++;
+}
+
+qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
+    qd_sim *s = r->s;
+    qd__impacts *im = r->imp;
+    *res = (qd__impact_result){.count = struck_with(r, i, t, y)};
+    for (size_t j = 0; j < s->nimp; j++)
+        if (im->set[j])
+            record(&im->c[j], t, qd__impact_rate(r, j, t, y), s->imp_E[j]);
+    const qd__contact *c = &im->c[i];
     bool rest = !(c->vout[2] > sqrt(r->it->rtol) * c->vmax);
-    qd_status st = law(r, i, t, y, rest ? 0 : E, &res->lost, &res->at_rest);
+    qd_status st = law(r, i, t, y, rest, &res->lost, &res->at_rest);
     /* a plastic impact rests in contact only while the motion presses the
      * gap shut; else (a rhombus hitting a wall, Desloge ch. 57 ex. 1) the
      * bodies part again and the run goes on */
@@ -343,7 +383,7 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
 }
 
 qd_status qd__impact_rest(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
-    *res = (qd__impact_result){0};
-    qd_status st = law(r, i, t, y, 0, &res->lost, &res->at_rest);
+    *res = (qd__impact_result){.count = struck_with(r, i, t, y)};
+    qd_status st = law(r, i, t, y, true, &res->lost, &res->at_rest);
     return st == QD_OK ? settle(r, i, t, y, res) : st;
 }

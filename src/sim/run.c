@@ -400,7 +400,8 @@ static qd_status after_impact(qd__run *r, loop *L, size_t i, const qd__impact_re
     emit(L->em, (int)(s->nev + i), r->row);
     if (L->stop)
         return QD_OK;
-    im->fresh = i;
+    for (size_t j = 0; j < s->nimp; j++)
+        im->fresh[j] = im->set[j];
     im->retries = 0;
     im->t_after = it->t;
     memcpy(im->y_after, it->y, it->dim * sizeof *it->y);
@@ -419,7 +420,7 @@ static qd_status strike(qd__run *r, loop *L, size_t i) {
     emit(L->em, (int)k, r->row);
     qd__impact_result res;
     st = qd__impact_apply(r, i, r->it->t, r->it->y, &res);
-    L->stats->impacts++;
+    L->stats->impacts += res.count;
     return st == QD_OK ? after_impact(r, L, i, &res) : st;
 }
 
@@ -432,7 +433,7 @@ static qd_status unresolved(qd__run *r, loop *L) {
     qd__integ *it = r->it;
     qd__impacts *im = r->imp;
     size_t i = im->unresolved;
-    bool fresh = im->fresh == i;
+    bool fresh = im->fresh[i];
     double h = it->t - it->told;
     back_to(r, L, fresh ? im->t_after : it->told, fresh ? im->y_after : it->yold);
     if (fresh && !L->fixed && im->retries < 6) {
@@ -494,8 +495,8 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
         return st;
     if (r->imp && r->imp->unresolved < s->nimp)
         return unresolved(r, L);
-    if (r->imp)
-        r->imp->fresh = s->nimp;
+    for (size_t j = 0; r->imp && j < s->nimp; j++)
+        r->imp->fresh[j] = false;
     st = step_outputs(r, o, L->em, grid, &L->stop, &L->stats->events, &impact);
     if (st != QD_OK)
         return st;

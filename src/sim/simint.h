@@ -214,7 +214,9 @@ typedef struct qd__contact {
 typedef struct qd__impacts {
     qd__contact *c;   /* nimp */
     double *K, *rhs, *A, *b, *zero; /* Newton's law: the saddle system, m + 1 rows */
-    size_t fresh;     /* the contact whose impact the next step follows, or nimp */
+    bool *fresh;      /* nimp: struck at the start of the next step */
+    bool *set;        /* nimp: the contacts struck together */
+    double *g;        /* the event functions at the impact (nev + nimp) */
     size_t unresolved;/* a contact whose landing the step missed, or nimp */
     double t_after, *y_after; /* the state just after the last impact (retries) */
     double *ylag, *dy;        /* (q, q') and its derivative: the gap's acceleration */
@@ -249,6 +251,7 @@ double qd__impact_rate(qd__run *r, size_t i, double t, const double *y);
 /* What an impact did, for the driver (run.c). */
 typedef struct qd__impact_result {
     double lost;      /* h before - h after */
+    size_t count;     /* the contacts struck together (1 or more) */
     bool contact;     /* the run ends: in contact */
     bool at_rest;     /* ... with nothing moving (T after <= rtol T before) */
     bool zeno;        /* the bounces' times were summed (chattering) */

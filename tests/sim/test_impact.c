@@ -20,6 +20,7 @@
  *     a = v = 1, and the rhombus leaves the wall again;
  *   - a rod falling flat onto a ledge: the angular momentum about the
  *     ledge kept, and the run ending in sustained contact, still moving;
+ *   - a rod falling flat onto the floor: both ends struck together;
  *   - the errors: a gap negative at t0, a restitution outside [0, 1].
  *
  * The flights under constant gravity are quadratics, which every method
@@ -324,6 +325,33 @@ static void rod_ledge(void **state) {
     sf_free(f);
 }
 
+/* A rod falling flat onto the floor strikes with both ends at once: the
+ * two contacts are struck together (one law, two rows), so no turning
+ * starts and the rod bounces as the ball does, at rest from t1 (1+E)/(1-E)
+ * after 20 impacts of each end (E = 1/2, rtol 1e-12).  Struck one after
+ * the other, the first end's impulse would set it rocking. */
+static void rod_flat_on_floor(void **state) {
+    (void)state;
+    double E = 0.5, h = 1, tstar = sqrt(2 * h / G) * (1 + E) / (1 - E);
+    char text[512];
+    snprintf(text, sizeof text,
+             "coordinates x, y, th\nparameters m = 1, a = 1, g = %.17g, e = %.17g\n"
+             "T = m/2*(x'^2 + y'^2) + m*a^2/6*th'^2\nV = m*g*y\n"
+             "impact A: y - a*sin(th) >= 0 restitution e\n"
+             "impact B: y + a*sin(th) >= 0 restitution e\n"
+             "initial x = 0, y = %.17g, th = 0\n", G, E, h);
+    sim_fix *f = sf_load(text);
+    assert_non_null(f);
+    rows r;
+    assert_int_equal(run(f, QD_SIM_DOP853, 3, 0, 1e-12, &r), QD_OK);
+    assert_true(f->stats.in_contact && f->stats.at_rest && f->stats.chattering);
+    near(f->stats.t, tstar, 1e-12, "accumulation time", 0);
+    assert_int_equal(f->stats.impacts, 40);
+    for (size_t k = 0; k < r.n; k++)
+        assert_true(fabs(r.row[k][3]) < 1e-15 && fabs(r.row[k][6]) < 1e-15);
+    sf_free(f);
+}
+
 static void gap_negative_at_start(void **state) {
     (void)state;
     sim_fix *f = ball(0.5, -0.1);
@@ -363,6 +391,7 @@ int main(void) {
         cmocka_unit_test(ball_elastic),         cmocka_unit_test(ball_plastic),
         cmocka_unit_test(pendulum_wall),        cmocka_unit_test(circle_stop),
         cmocka_unit_test(rhombus_wall),         cmocka_unit_test(rod_ledge),
+        cmocka_unit_test(rod_flat_on_floor),
         cmocka_unit_test(gap_negative_at_start),
         cmocka_unit_test(restitution_out_of_range),
     };
