@@ -208,8 +208,9 @@ double qd__impact_rate(qd__run *r, size_t i, double t, const double *y) {
 /* The contacts struck with i at (t, y): i, and every other whose gap is 0
  * to round-off and closing there (a rod falling flat on both ends), into
  * im->set; their count.  Struck one after the other, the first impact
- * would set the rod turning. */
-static size_t struck_with(qd__run *r, size_t i, double t, const double *y) {
+ * would set the rod turning.  settling: also those just struck with i
+ * (fresh, now opening), which come to rest with it. */
+static size_t struck_with(qd__run *r, size_t i, double t, const double *y, bool settling) {
     qd_sim *s = r->s;
     qd__impacts *im = r->imp;
     size_t n = s->n, count = 0;
@@ -222,7 +223,9 @@ static size_t struck_with(qd__run *r, size_t i, double t, const double *y) {
         double rate = qd__impact_rate(r, j, t, y), amax = 1;
         for (size_t k = 0; k <= n; k++)
             amax = fmax(amax, fabs(s->imp_out[j * (n + 2) + k]));
-        im->set[j] = j == i || (fabs(im->g[s->nev + j]) <= 64 * 0x1p-52 * qmax * amax && rate < 0);
+        bool closing = rate < 0 || (settling && im->fresh[j]);
+        bool touching = fabs(im->g[s->nev + j]) <= 64 * 0x1p-52 * qmax * amax;
+        im->set[j] = j == i || (touching && closing);
         count += im->set[j];
     }
     return count;
@@ -364,7 +367,7 @@ static void record(qd__contact *c, double t, double vin, double E) {
 qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
     qd_sim *s = r->s;
     qd__impacts *im = r->imp;
-    *res = (qd__impact_result){.count = struck_with(r, i, t, y)};
+    *res = (qd__impact_result){.count = struck_with(r, i, t, y, false)};
     for (size_t j = 0; j < s->nimp; j++)
         if (im->set[j])
             record(&im->c[j], t, qd__impact_rate(r, j, t, y), s->imp_E[j]);
@@ -383,7 +386,7 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
 }
 
 qd_status qd__impact_rest(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
-    *res = (qd__impact_result){.count = struck_with(r, i, t, y)};
+    *res = (qd__impact_result){.count = struck_with(r, i, t, y, true)};
     qd_status st = law(r, i, t, y, true, &res->lost, &res->at_rest);
     return st == QD_OK ? settle(r, i, t, y, res) : st;
 }
