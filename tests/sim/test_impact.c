@@ -400,6 +400,21 @@ static void restitution_out_of_range(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* A model given by H has no mass matrix for the law: refused, not ignored. */
+static void hamiltonian_model_refused(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, "coordinates x\nmomenta p\nH = p^2/2 + x^2/2\n"
+                                      "impact wall: x + 1 >= 0 restitution 1\n", &d);
+    assert_non_null(m);
+    assert_null(qd_sim_new_hamilton(ctx, m));
+    assert_int_equal(qd_ctx_status(ctx), QD_ERR_UNSUPPORTED);
+    assert_non_null(strstr(qd_ctx_message(ctx), "impacts on a model given by H"));
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ball_chatters),        cmocka_unit_test(ball_every_method),
@@ -409,6 +424,7 @@ int main(void) {
         cmocka_unit_test(rod_flat_on_floor),
         cmocka_unit_test(gap_negative_at_start),
         cmocka_unit_test(restitution_out_of_range),
+        cmocka_unit_test(hamiltonian_model_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
