@@ -11,6 +11,8 @@
 - --set e=1: no rest, the energy kept, every flight 2 t1.
 - examples/rhombus_wall.qd (Desloge ch. 57 ex. 1, reference T55): the row
   after the impact has x' = -3/7, th' = 3/7.
+- qdot poincare on examples/pendulum_wall.qd: the amplitudes after each
+  impact, 1 - cos(a_n) = e^(2n) (1 - cos th0), and no impact rows.
 - Errors: a restitution outside [0, 1] (--set e=1.5) and a gap negative at
   t0 (--initial "y = -0.1") exit 2 with the contact named; nothing on
   stdout.
@@ -114,6 +116,19 @@ def main():
         check(abs(float(imp[1]["x'"]) + 3 / 7) < 1e-13 and abs(float(imp[1]["th'"]) - 3 / 7) < 1e-13,
               f'rhombus after: {imp[1]}')
     check('qdot: simulate: 1 impact, energy lost 1.14286' in err.splitlines(), f'rhombus: {err!r}')
+
+    # poincare on the pendulum at a wall: only the section's crossings (the
+    # impacts' rows are not crossings); 1 - cos(a_n) = e^(2n) (1 - cos th0)
+    pend = str(ROOT / 'examples' / 'pendulum_wall.qd')
+    rc, out, err = run(qdot, 'poincare', pend, '--section', "th' = 0, th > 0", '--n', 3,
+                       '--rtol', 1e-12)
+    check(rc == 0, f'poincare: exit {rc} {err}')
+    a = 0.5
+    got = rows(out)
+    check(len(got) == 3, f'poincare: {len(got)} rows')
+    for n, x in enumerate(got):
+        a = math.acos(1 - 0.7 ** 2 * (1 - math.cos(a)))
+        check(abs(float(x['th']) - a) < 1e-10, f'poincare crossing {n + 1}: {x["th"]} vs {a}')
 
     # errors
     rc, out, err = run(qdot, 'simulate', ball, '--t-end', 1, '--set', 'e=1.5')
