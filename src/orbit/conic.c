@@ -18,7 +18,6 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "base/mem.h"
 
 #define PARABOLA 1e-12 /* |e - 1| below this: a parabola, a infinite */
 
@@ -50,48 +49,24 @@ static const qd_expr *conic_equation(qd_ctx *ctx, const qd_orbit_result *r, cons
     return qd_div(ctx, num(ctx, r->p), den);
 }
 
-/* c'(x) sqrt(M/(2 (E - V_eff))) with the momenta and parameters as numbers. */
-static const qd_expr *integrand(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
-                                size_t n, const qd_expr *const *syms, const double *vals) {
-    const qd_routh *h = o->routh;
-    const qd_expr *gap = qd_sub(ctx, num(ctx, r->energy), o->Veff);
-    const qd_expr *f = qd_mul(ctx, o->rate[0],
-                              qd_sqrt(ctx, qd_div(ctx, o->mass, qd_mul(ctx, qd_int(ctx, 2), gap))));
-    size_t cap = n + h->nign, k = 0;
-    const qd_expr **from = qd__calloc(ctx, cap ? cap : 1, sizeof *from);
-    const qd_expr **to = qd__calloc(ctx, cap ? cap : 1, sizeof *to);
-    if (!from || !to || !f) {
-        qd__free(from);
-        qd__free(to);
-        return NULL;
-    }
-    for (size_t i = 0; i < h->nign; i++) {
-        from[k] = h->beta[i];
-        to[k++] = num(ctx, r->momenta[i]);
-    }
-    for (size_t i = 0; i < n; i++)
-        if (qd_expr_kind(syms[i]) == QD_SYMBOL && qd_symbol_role(syms[i]) == QD_ROLE_PARAM) {
-            from[k] = syms[i];
-            to[k++] = num(ctx, vals[i]);
-        }
-    f = qd_subs(ctx, f, k, from, to);
-    qd__free(from);
-    qd__free(to);
-    return f;
+/* c'(x) sqrt(M/(2 (E - V_eff))): in x, E, the momenta and the parameters. */
+static const qd_expr *integrand(qd_ctx *ctx, const qd_orbit *o) {
+    const qd_expr *gap = qd_sub(ctx, qd_symbol(ctx, "E"), o->Veff);
+    return qd_mul(ctx, o->rate[0],
+                  qd_sqrt(ctx, qd_div(ctx, o->mass, qd_mul(ctx, qd_int(ctx, 2), gap))));
 }
 
 const qd_expr *qd_orbit_equation(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
-                                 size_t n, const qd_expr *const *syms, const double *vals,
                                  const qd_expr **lhs) {
     const qd_expr *c = o->routh->ign[0];
     if (r->conic) {
         *lhs = o->x;
         return conic_equation(ctx, r, c);
     }
-    char name[128];
+    char name[128], lower[128];
     snprintf(name, sizeof name, "%s_1", qd_expr_name(c));
-    double x1 = r->nturn ? r->turn[0] : r->x0;
+    snprintf(lower, sizeof lower, "%s_1", qd_expr_name(o->x));
     *lhs = qd_sub(ctx, c, qd_symbol(ctx, name));
-    const qd_expr *args[] = {integrand(ctx, o, r, n, syms, vals), o->x, num(ctx, x1), o->x};
+    const qd_expr *args[] = {integrand(ctx, o), o->x, qd_symbol(ctx, lower), o->x};
     return args[0] ? qd_ufunc(ctx, "integral", 4, args) : NULL;
 }

@@ -266,6 +266,8 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
     for (size_t i = 0; i < r->nign && r->kind != QD_ORBIT_CAPTURE; i++) {
         r->apsidal[i] = r->advance[i] / 2;
         r->precession[i] = r->advance[i] - 2 * PI * (r->advance[i] < 0 ? -1 : 1);
+        if (fabs(r->precession[i]) <= 8 * fmax(r->quad_error, 1e-13) * fabs(r->advance[i]))
+            r->precession[i] = 0; /* closed to within the quadrature's error */
     }
     if (st == QD_OK)
         st = circles(ctx, env, xs, r);
