@@ -324,18 +324,19 @@ static void put_equation(orbit_run *r, qd_buf *b) {
         num(b, o->p);
         qd_buf_puts(b, "/(1 + ");
         num(b, o->e);
+        double peri = isfinite(o->periapsis) ? o->periapsis : 0;
+        bool group = o->nu != 1 && peri != 0;
         qd_buf_puts(b, "*cos(");
         if (o->nu != 1) {
             num(b, o->nu);
-            qd_buf_puts(b, "*(");
+            qd_buf_puts(b, group ? "*(" : "*");
         }
-        double peri = isfinite(o->periapsis) ? o->periapsis : 0;
         qd_buf_printf(b, "%s", c);
         if (peri != 0) {
             qd_buf_printf(b, " %s ", peri < 0 ? "+" : "-");
             num(b, fabs(peri));
         }
-        qd_buf_puts(b, o->nu != 1 ? ")))" : "))");
+        qd_buf_puts(b, group ? ")))" : "))");
         return;
     }
     const qd_expr *lhs = NULL;

@@ -137,7 +137,7 @@ QD_API qd_status qd_orbit_period(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_
 /* The orbit equation of the first ignored coordinate c: Kepler-type,
  * r = p/(1 + e cos(nu (c - c_peri))) with the numbers of r (*lhs = x); else
  * c - c_1 = integral(c'(x) sqrt(M/(2 (E - V_eff))), x, x_1, x), the
- * quadrature from the lower turning point x_1 (a user function "integral"
+ * quadrature from a turning point x_1 (the lower one of a bound orbit; a user function "integral"
  * of integrand, variable and limits; E, the momenta and the parameters as
  * symbols).  NULL when out of memory. */
 QD_API const qd_expr *qd_orbit_equation(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
