@@ -127,6 +127,8 @@ static qd_status derive_parts(qd_ctx *ctx, qd_orbit *o) {
         if (!(o->rate[i] = qd_subs(ctx, r->ignvel[i], 1, &o->xd, &zero)))
             return qd_ctx_status(ctx);
     detect_kepler(ctx, o);
+    if (qd__ctx_nomem(ctx)) /* the detection's NULLs were for want of memory, not a "no" */
+        return QD_ERR_NOMEM;
     return compile(ctx, o);
 }
 
