@@ -250,8 +250,11 @@ static void text_kind(const orbit_run *r, qd_buf *b) {
     qd_buf_printf(b, " <= %s <= ", x);
     num(b, o->hi);
     qd_buf_puts(b, "\n");
-    if (o->kind == QD_ORBIT_UNBOUND)
+    if (o->kind == QD_ORBIT_UNBOUND) {
         qd_buf_puts(b, "radial period: none (unbound)\n");
+        if (o->nign && isfinite(o->advance[0]))
+            by_name(r, b, "turn from infinity and back", o->advance);
+    }
     if (o->kind == QD_ORBIT_CAPTURE) {
         qd_buf_puts(b, "falls into the singular point of V_eff after time ");
         num(b, o->fall_time);

@@ -101,7 +101,9 @@ typedef struct qd_orbit_result {
     double lo, hi;           /* the interval the motion fills (+-INFINITY when open) */
     double period;           /* radial period (circular: 2 pi/omega); NAN otherwise */
     double *advance;         /* nign: per radial period; capture: from the turning point
-                                to the singular point; NAN for unbound orbits */
+                                to the singular point; unbound with one turning point
+                                below an open end: the whole turn, in from infinity and
+                                out again (NAN otherwise) */
     double *apsidal;         /* nign: advance/2 (bound and circular) */
     double *precession;      /* nign: advance - 2 pi (bound and circular) */
     double fall_time;        /* capture: time from the turning point to the centre */

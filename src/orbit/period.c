@@ -3,7 +3,8 @@
  *
  *     T_r = 2 int sqrt(M / (2 (E - V_eff))) dx,   Delta c = 2 int c'(x) sqrt(...) dx
  *
- * by tanh-sinh (num/quad.c), whose abscissas crowd double-exponentially at
+ * (an unbound orbit: Delta c from its turning point to infinity and back, by
+ * exp-sinh) by tanh-sinh (num/quad.c), whose abscissas crowd double-exponentially at
  * the turning points, where the integrand has its inverse-square-root
  * singularity.  There E - V_eff(x) computed as a difference loses every
  * digit; near a turning point x_t it is formed from the distance xc = x -
@@ -68,7 +69,8 @@ static double derivatives(qd__orb_env *env, double x, double half, double *d) {
 
 static qd_status integrate(qd_ctx *ctx, integrand *g, double *value, double *err) {
     qd__num_quad q;
-    bool ok = qd__num_quad_finite(integrand_fn, g, g->lo, g->hi, QTOL, &q);
+    bool ok = isinf(g->hi) ? qd__num_quad_upper(integrand_fn, g, g->lo, QTOL, &q)
+                           : qd__num_quad_finite(integrand_fn, g, g->lo, g->hi, QTOL, &q);
     if (!isfinite(q.value) || (!ok && !(q.error <= ACCEPT * fmax(1, fabs(q.value))))) {
         qd_ctx_error(ctx, QD_ERR_NUMERIC,
                      "the quadrature between %.17g and %.17g did not converge (estimate %.17g, "
@@ -80,7 +82,30 @@ static qd_status integrate(qd_ctx *ctx, integrand *g, double *value, double *err
     return QD_OK;
 }
 
+/* An unbound orbit from its turning point out to infinity and back: the
+ * total turn of each ignored coordinate (exp-sinh; no time, it diverges). */
+static qd_status swept(qd_ctx *ctx, qd__orb_env *env, qd_orbit_result *r) {
+    integrand g = {.env = env, .lo = r->lo, .hi = INFINITY, .turn_lo = true};
+    g.nlo = derivatives(env, g.lo, INFINITY, g.dlo);
+    double E = env->E;
+    /* An energy 0 to round-off is 0 (the parabola): else a negative one turns the orbit
+     * back at k/|E| ~ 1e16 and the integrand drops to nothing there. */
+    if (fabs(E) <= 1e-14 * fabs(g.dlo[0] * g.lo))
+        env->E = 0;
+    qd_status st = QD_OK;
+    for (size_t i = 0; i < r->nign && st == QD_OK; i++) {
+        double v;
+        g.which = (int)i;
+        st = integrate(ctx, &g, &v, &r->quad_error);
+        r->advance[i] = 2 * v;
+    }
+    env->E = E;
+    return st;
+}
+
 qd_status qd__orb_quadratures(qd_ctx *ctx, qd__orb_env *env, qd_orbit_result *r) {
+    if (r->kind == QD_ORBIT_UNBOUND)
+        return r->nturn == 1 && r->turn[0] == r->lo && isinf(r->hi) ? swept(ctx, env, r) : QD_OK;
     bool bound = r->kind == QD_ORBIT_BOUND;
     integrand g = {.env = env, .lo = r->lo, .hi = r->hi, .which = -1};
     g.turn_lo = bound || r->turn[0] == r->lo;

@@ -261,9 +261,10 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
         circular_limits(env, xs, r);
     else
         classify(env, xs, r);
-    if (r->kind == QD_ORBIT_BOUND || r->kind == QD_ORBIT_CAPTURE)
+    if (r->kind != QD_ORBIT_CIRCULAR)
         st = qd__orb_quadratures(ctx, env, r);
-    for (size_t i = 0; i < r->nign && r->kind != QD_ORBIT_CAPTURE; i++) {
+    for (size_t i = 0; i < r->nign && r->kind != QD_ORBIT_CAPTURE && r->kind != QD_ORBIT_UNBOUND;
+         i++) {
         r->apsidal[i] = r->advance[i] / 2;
         r->precession[i] = r->advance[i] - 2 * PI * (r->advance[i] < 0 ? -1 : 1);
         if (fabs(r->precession[i]) <= 8 * fmax(r->quad_error, 1e-13) * fabs(r->advance[i]))

@@ -6,7 +6,8 @@
  * - Kepler (Desloge ch. 58, C3 "Kepler closed forms"): the ellipse's
  *   turning points a(1 -+ e), p = h^2/(m k), e = sqrt(1 + 2 E h^2/(m k^2)),
  *   radial period 2 pi sqrt(m a^3/k), advance 2 pi; the hyperbola and the
- *   parabola unbound with one turning point p/(1 + e); the circle.
+ *   parabola unbound with one turning point p/(1 + e), turning by 2 acos(-1/e)
+ *   between the asymptotes; the circle.
  * - Power laws, force -k r^n (Desloge ch. 59 eq. 31, C3 and pitfall 10):
  *   the near-circular apsidal angle pi/sqrt(n + 3), by the general formula
  *   and by Bertrand's; Hooke's law (n = 1) closes with apsidal angle pi/2
@@ -201,6 +202,8 @@ static void test_kepler_hyperbola(void **state) {
     assert_int_equal(qd_orbit_period(f.ctx, f.o, &f.r, &T), QD_ERR_ARG);
     assert_non_null(strstr(qd_ctx_message(f.ctx), "unbound"));
     assert_true(isnan(f.r.period));
+    /* the whole turn between the asymptotes, r -> inf at cos(theta) = -1/e */
+    near(f.r.advance[0], 2 * acos(-1 / K.e), 1e-12);
     unload(&f);
 }
 
@@ -215,6 +218,7 @@ static void test_kepler_parabola(void **state) {
     assert_true(isinf(f.r.a));
     near(f.r.turn[0], 1.0, 1e-14); /* the state is the periapsis */
     near(f.r.periapsis, 0, 1e-12);
+    near(f.r.advance[0], 2 * PI, 1e-12); /* in along theta = -pi, out along pi */
     unload(&f);
 }
 
