@@ -59,8 +59,9 @@ qd__orb_end qd__orb_scan(qd__orb_env *env, qd__orb_fn f, double x0, int dir, dou
  * ch. 4), to round-off. */
 double qd__orb_brent(qd__orb_env *env, qd__orb_fn f, double a, double b);
 
-/* Every stationary point of V_eff between the singular points around x0,
- * ascending, in a malloc'd array (*n of them); false when out of memory. */
+/* The stationary points of V_eff between the singular points around x0
+ * (the nearest 8 each way), ascending, in a malloc'd array (*n of them);
+ * false when out of memory. */
 bool qd__orb_circles(qd_ctx *ctx, qd__orb_env *env, double x0, double **xs, size_t *n);
 
 /* The quadratures of a bound or capture orbit (quad.c's tanh-sinh). */

@@ -55,7 +55,12 @@ static double integrand_fn(void *data, double x, double xc) {
     if (!(w > 0))
         return NAN; /* at the turning point itself: the rule drops the abscissa */
     double dt = sqrt(o[QD__ORB_M] / (2 * w));
-    return g->which < 0 ? dt : o[QD__ORB_RATE + g->which] * dt;
+    if (g->which < 0)
+        return dt;
+    double rate = o[QD__ORB_RATE + g->which];
+    if (isnan(rate)) /* 0/0 at a removable point (no momentum, sin(theta) = 0): its limit */
+        rate = qd__orb_at(g->env, x + 1e-9 * (g->hi - g->lo))[QD__ORB_RATE + g->which];
+    return rate * dt;
 }
 
 /* V_eff's derivatives at x and the reach of its Taylor series there. */

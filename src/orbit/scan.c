@@ -19,6 +19,24 @@
 
 static int sign_of(double v) { return v > 0 ? 1 : v < 0 ? -1 : 0; }
 
+/* The walk reaches the singular point 0 from prev: halve the distance until
+ * f changes sign (a barrier just before it) or nothing is left. */
+static qd__orb_end approach_zero(qd__orb_env *env, qd__orb_fn f, double prev, int s0, double *a,
+                                 double *b) {
+    for (double x = prev / 2; x != 0 && fabs(x) > 1e-300; prev = x, x /= 2) {
+        double v = f(env, x);
+        *a = prev;
+        *b = x;
+        if (!isfinite(v) || !isfinite(env->out[QD__ORB_V]))
+            return QD__ORB_SINGULAR;
+        if (s0 != 0 && sign_of(v) != s0)
+            return QD__ORB_FOUND;
+    }
+    *a = prev;
+    *b = 0;
+    return QD__ORB_SINGULAR;
+}
+
 qd__orb_end qd__orb_scan(qd__orb_env *env, qd__orb_fn f, double x0, int dir, double *a, double *b) {
     double h = STEP0 * env->scale, prev = x0;
     int s0 = sign_of(f(env, x0));
@@ -28,10 +46,8 @@ qd__orb_end qd__orb_scan(qd__orb_env *env, qd__orb_fn f, double x0, int dir, dou
         *b = x;
         if (fabs(x - x0) > FAR * env->scale)
             return QD__ORB_OPEN;
-        if (env->sing0 && (prev > 0) != (x > 0) && prev != 0) {
-            *b = 0;
-            return QD__ORB_SINGULAR;
-        }
+        if (env->sing0 && (prev > 0) != (x > 0) && prev != 0)
+            return approach_zero(env, f, prev, s0, a, b);
         double v = f(env, x);
         if (!isfinite(v) || !isfinite(env->out[QD__ORB_V]))
             return QD__ORB_SINGULAR;
@@ -115,9 +131,14 @@ static bool stationary(qd__orb_env *env, double a, double b, double *x) {
     return isfinite(fx) && fx <= fmax(fa, fb);
 }
 
+/* At most this many circles each way: a periodic V_eff (a pendulum with no
+ * angular momentum) has a row of them; the nearest are the ones that matter. */
+#define MAX_CIRCLES 8
+
 static bool walk(qd_ctx *ctx, qd__orb_env *env, double x0, int dir, double **xs, size_t *n) {
     double a, b, x;
-    while (qd__orb_scan(env, qd__orb_slope, x0, dir, &a, &b) == QD__ORB_FOUND) {
+    for (int k = 0; k < MAX_CIRCLES &&
+                    qd__orb_scan(env, qd__orb_slope, x0, dir, &a, &b) == QD__ORB_FOUND; k++) {
         if (!stationary(env, a, b, &x))
             return true;
         if (!push(ctx, xs, n, x))

@@ -193,6 +193,8 @@ static void classify(qd__orb_env *env, double xs, qd_orbit_result *r) {
 static void circle_at(qd__orb_env *env, double x, qd_orbit_circle *c) {
     const qd_orbit *ob = env->o;
     const double *o = qd__orb_at(env, x);
+    if (isnan(o[QD__ORB_V2])) /* 0/0 of a term with no momentum (theta = 0): its limit */
+        o = qd__orb_at(env, x + 1e-7 * env->scale);
     double M = o[QD__ORB_M], v2 = o[QD__ORB_V2];
     c->x = x;
     c->energy = o[QD__ORB_V];
@@ -251,6 +253,19 @@ static void circular_limits(qd__orb_env *env, double x, qd_orbit_result *r) {
         r->advance[i] = o[QD__ORB_RATE + i] * r->period;
 }
 
+/* V_eff not finite at x = 0 and not continuous through it: the centre of a
+ * central force (V_eff -> +-inf), not the 0/0 of a centrifugal term with no
+ * momentum (a spherical pendulum swinging through the vertical). */
+static bool singular_at_zero(qd__orb_env *env) {
+    if (isfinite(qd__orb_at(env, 0)[QD__ORB_V]))
+        return false;
+    double d = 1e-6 * env->scale, v1 = qd__orb_at(env, d)[QD__ORB_V];
+    double v2 = qd__orb_at(env, 2 * d)[QD__ORB_V], vm = qd__orb_at(env, -d)[QD__ORB_V];
+    double tol = 1e-6 * (1 + fabs(v1));
+    return !(isfinite(v1) && isfinite(v2) && isfinite(vm) && fabs(v1 - vm) <= tol &&
+             fabs(v1 - v2) <= tol);
+}
+
 static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, double c0,
                          bool energy_given, qd_orbit_result *r) {
     qd_status st = QD_OK;
@@ -304,7 +319,7 @@ qd_status qd_orbit_solve(qd_ctx *ctx, const qd_orbit *o, size_t n, const qd_expr
     } else {
         env.E = r->energy = energy ? *energy : out[QD__ORB_V] + out[QD__ORB_M] * xd0 * xd0 / 2;
         env.scale = x0 != 0 ? fabs(x0) : 1;
-        env.sing0 = !isfinite(qd__orb_at(&env, 0)[QD__ORB_V]);
+        env.sing0 = singular_at_zero(&env);
         st = analyse(ctx, &env, x0, xd0, c0, energy != NULL, r);
     }
     qd__orb_env_free(&env);

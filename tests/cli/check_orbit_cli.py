@@ -9,7 +9,8 @@ computed here independently of qdot:
 - Kepler (Desloge ch. 58, seed-desloge-B.md C3): at several states of
   examples/kepler_polar.qd the ellipse's turning points a(1 -+ e), radial
   period 2 pi sqrt(m a^3/k), advance 2 pi, p = h^2/(m k) and e = sqrt(1 +
-  2 E h^2/(m k^2)); the hyperbola and the parabola unbound with no period,
+  2 E h^2/(m k^2)); the hyperbola and the parabola unbound with no period
+  (the hyperbola turning by 2 acos(-1/e) between its asymptotes),
   the circle circular; --momentum and --energy replace the state's values;
 - power laws -k r^n (Desloge ch. 59 eq. 31, C3): the near-circular apsidal
   angle pi/sqrt(n + 3) for several n (examples/power_law_orbit.qd --set n);
@@ -90,6 +91,8 @@ def kepler(qdot):
     j = orbit(qdot, 'kepler_polar.qd', 'theta', '--at', "theta'=3")
     check('hyperbola unbound', j and j['kind'] == 'unbound' and j['radial_period'] is None
           and len(j['turning_points']) == 1 and j['conic']['e'] > 1, j)
+    if j:   # between the asymptotes, cos(theta) = -1/e
+        close('hyperbola turn', j['advance']['theta'], 2 * math.acos(-1 / j['conic']['e']), 1e-11)
     j = orbit(qdot, 'kepler_polar.qd', 'theta', '--at', "theta'=%r" % math.sqrt(2 * K / M))
     check('parabola unbound', j and j['kind'] == 'unbound' and j['conic']['a'] is None, j)
     if j:

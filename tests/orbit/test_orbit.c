@@ -24,6 +24,8 @@
  * - The spherical pendulum (Byerly Art. 5 Ex. 3, seed 001; examples/
  *   spherical_pendulum.qd): turning angles, radial period and advance of
  *   phi against a direct simulation (qd_sim) of the full model.
+ *   With phi' = 0 it is a planar pendulum through theta = 0: period
+ *   4 K(sin(theta0/2)) sqrt(a/g).
  * - The heavy top released with phi' = 0 (Goldstein sec. 5.7; Desloge
  *   ch. 64 Ex. 1, C8): the lower turning angle from the quadratic
  *   2 A M g h (1 - u^2) = p_psi^2 (u0 - u), u = cos(theta).
@@ -410,6 +412,31 @@ static void test_spherical_pendulum(void **state) {
     unload(&f);
 }
 
+/* With no angular momentum the pendulum swings through theta = 0, where the
+ * centrifugal term is 0/0, not a centre of force: the planar pendulum's period
+ * 4 K(sin(theta0/2)) sqrt(a/g) (Byerly Art. 5; A&S 17.6 for K). */
+static void test_planar_pendulum(void **state) {
+    (void)state;
+    fix f;
+    load(&f, spherical);
+    assert_int_equal(reduce(&f, PHI), QD_OK);
+    set(&f, "theta", 0.6);
+    assert_int_equal(solve(&f, NULL), QD_OK);
+    assert_int_equal(f.r.kind, QD_ORBIT_BOUND);
+    near(f.r.turn[0], -0.6, 1e-14);
+    near(f.r.turn[1], 0.6, 1e-14);
+    near(f.r.period, 4 * sf_ellipk(sin(0.3)) * sqrt(0.9 / 9.81), 1e-12);
+    near(f.r.advance[0], 0, 1e-15);
+    bool hanging = false;
+    for (size_t i = 0; i < f.r.ncircle; i++)
+        if (fabs(f.r.circle[i].x) < 1e-12) {
+            hanging = f.r.circle[i].stable == 1;
+            near(f.r.circle[i].omega, sqrt(9.81 / 0.9), 1e-7);
+        }
+    assert_true(hanging);
+    unload(&f);
+}
+
 /* ---- the heavy top: nutation between two angles ------------------------------------ */
 
 static void test_heavy_top(void **state) {
@@ -489,7 +516,8 @@ int main(void) {
         cmocka_unit_test(test_power_law_apsidal), cmocka_unit_test(test_hooke_closes),
         cmocka_unit_test(test_inverse_cube),     cmocka_unit_test(test_r4_capture),
         cmocka_unit_test(test_radial_infall),    cmocka_unit_test(test_yukawa_and_string),
-        cmocka_unit_test(test_spherical_pendulum), cmocka_unit_test(test_heavy_top),
+        cmocka_unit_test(test_spherical_pendulum), cmocka_unit_test(test_planar_pendulum),
+        cmocka_unit_test(test_heavy_top),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
