@@ -112,13 +112,14 @@ static qd_status alloc_result(qd_ctx *ctx, size_t nign, qd_orbit_result *r) {
 /* With E given below V_eff(x0): the allowed point nearest x0, walking both
  * ways in turn; else the error naming E and the least V_eff met. */
 static qd_status allowed_start(qd_ctx *ctx, qd__orb_env *env, double *x0) {
-    double a, b, best = HUGE_VAL, at = *x0;
-    for (int dir = 1; dir >= -1; dir -= 2) {
-        qd__orb_end end = qd__orb_scan(env, qd__orb_gap, *x0, dir, &a, &b);
-        if (end == QD__ORB_FOUND) {
-            *x0 = b;
-            return QD_OK;
-        }
+    double a, b, best = HUGE_VAL, at = *x0, found = NAN;
+    for (int dir = 1; dir >= -1; dir -= 2)
+        if (qd__orb_scan(env, qd__orb_gap, *x0, dir, &a, &b) == QD__ORB_FOUND &&
+            !(fabs(b - *x0) >= fabs(found - *x0)))
+            found = b;
+    if (!isnan(found)) {
+        *x0 = found;
+        return QD_OK;
     }
     /* No motion: the least V_eff, where V_eff' changes sign nearest x0. */
     double *xs = NULL;
