@@ -17,6 +17,10 @@ computed here independently of qdot:
 - the spherical pendulum (Byerly Art. 5 Ex. 3, seed 001): the turning angles
   are roots of E = V_eff as printed, and the radial period agrees with a
   quadrature done here (theta = mid + half sin u, midpoint rule in u);
+- a Yukawa orbit (Desloge ch. 58 P7, T07: V = -a e^(-b r)/r), which has no
+  closed form: turning points, radial period and advance against mpmath
+  (SymPy's, Debian python3-sympy) at 30 digits, r = (r1 + r2)/2 - (r2 -
+  r1)/2 cos u removing the end-point singularities (C3's numerics);
 - errors (exit 2): no --ignore, a coordinate that is not cyclic, two
   coordinates left, an energy below the minimum of V_eff (both numbers named).
 
@@ -26,6 +30,7 @@ import json
 import math
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
@@ -147,6 +152,50 @@ def spherical(qdot):
     close('pendulum period', j['radial_period'], 2 * total * math.pi / n, 1e-9)
 
 
+YUKAWA = '''coordinates r, phi
+parameters m = 1.2, a = 2, b = 0.6
+particle m at r*(cos(phi), sin(phi))
+V = -a*exp(-b*r)/r
+initial r = 1, phi = 0, r' = 0.3, phi' = 1.1
+'''
+
+
+def yukawa(qdot, tmp):
+    try:
+        import mpmath
+    except ImportError:
+        check('mpmath available', False, 'python3-sympy (mpmath) is needed')
+        return
+    model = Path(tmp) / 'yukawa.qd'
+    model.write_text(YUKAWA)
+    rc, out, err = run(qdot, 'orbit', str(model), '--ignore', 'phi', '--format', 'json')
+    check('yukawa runs', rc == 0, err)
+    if rc != 0:
+        return
+    j = json.loads(out)
+    mpmath.mp.dps = 30
+    m, a, b = mpmath.mpf('1.2'), mpmath.mpf(2), mpmath.mpf('0.6')
+    r0, rd0, pd0 = mpmath.mpf(1), mpmath.mpf('0.3'), mpmath.mpf('1.1')
+    h = m * r0**2 * pd0
+    U = lambda r: -a * mpmath.exp(-b * r) / r + h**2 / (2 * m * r**2)
+    E = m * rd0**2 / 2 + U(r0)
+    r1 = mpmath.findroot(lambda r: U(r) - E, j['turning_points'][0])
+    r2 = mpmath.findroot(lambda r: U(r) - E, j['turning_points'][1])
+    mid, half = (r1 + r2) / 2, (r2 - r1) / 2
+
+    def dt(u):   # dt/du = dr/du / r', r = mid - half cos u
+        r = mid - half * mpmath.cos(u)
+        return half * mpmath.sin(u) * mpmath.sqrt(m / (2 * (E - U(r))))
+    T = 2 * mpmath.quad(dt, [0, mpmath.pi])
+    adv = 2 * mpmath.quad(lambda u: dt(u) * h / (m * (mid - half * mpmath.cos(u))**2), [0, mpmath.pi])
+    # measured: E, r1, r2 to 6e-16, the period to 3e-14, the advance to 1e-14
+    close('yukawa E', j['energy'], float(E), 1e-14)
+    close('yukawa r1', j['turning_points'][0], float(r1), 1e-13)
+    close('yukawa r2', j['turning_points'][1], float(r2), 1e-13)
+    close('yukawa period', j['radial_period'], float(T), 1e-12)
+    close('yukawa advance', j['advance']['phi'], float(adv), 1e-12)
+
+
 def errors(qdot):
     path = str(EXAMPLES / 'kepler_polar.qd')
     rc, out, err = run(qdot, 'orbit', path)
@@ -168,6 +217,8 @@ def main():
     kepler(qdot)
     power_laws(qdot)
     spherical(qdot)
+    with tempfile.TemporaryDirectory() as tmp:
+        yukawa(qdot, tmp)
     errors(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
