@@ -18,13 +18,13 @@
  *     Delta c = 2 int_{x1}^{x2} c'(x) sqrt(M / (2 (E - V_eff))) dx,
  *
  * c'(x) the ignored velocity at x' = 0 (a term of c' linear in x' integrates
- * to zero over a closed excursion).  The apsidal angle is Delta c / 2 and
- * the precession per period Delta c - 2 pi.  Circular motions are the
- * stationary points of V_eff; near a stable one x oscillates at
- * omega_r = sqrt(V_eff''/M) and the near-circular apsidal angle is
- * pi c'/omega_r, which for a central force is Bertrand's pi/sqrt(3 + r f'/f)
- * (Desloge ch. 59 eq. 31).  docs/design.md, "Orbits", states the
- * conventions and tolerances.
+ * to zero over a closed excursion). The apsidal angle is |Delta c|/2 and the
+ * precession per period Delta c -+ 2 pi (one revolution either way). Circular
+ * motions are the stationary points of V_eff; near a stable one x oscillates
+ * at omega_r = sqrt(V_eff''/M) and the near-circular apsidal angle is pi
+ * c'/omega_r, which for a central force is Bertrand's pi/sqrt(3 + r f'/f)
+ * (Desloge ch. 59 eq. 31). docs/design.md, "Orbits", states the conventions
+ * and tolerances.
  */
 #ifndef QDOT_ORBIT_H
 #define QDOT_ORBIT_H
@@ -104,8 +104,9 @@ typedef struct qd_orbit_result {
                                 to the singular point; unbound with one turning point
                                 below an open end: the whole turn, in from infinity and
                                 out again (NAN otherwise) */
-    double *apsidal;         /* nign: advance/2 (bound and circular) */
-    double *precession;      /* nign: advance - 2 pi (bound and circular) */
+    double *apsidal;         /* nign: |advance|/2 (bound and circular) */
+    double *precession;      /* nign: advance - 2 pi, or + 2 pi for a negative advance
+                                (bound and circular) */
     double fall_time;        /* capture: time from the turning point to the centre */
     double quad_error;       /* the largest error estimate of the quadratures */
     size_t ncircle;

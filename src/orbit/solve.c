@@ -281,7 +281,7 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
         st = qd__orb_quadratures(ctx, env, r);
     for (size_t i = 0; i < r->nign && r->kind != QD_ORBIT_CAPTURE && r->kind != QD_ORBIT_UNBOUND;
          i++) {
-        r->apsidal[i] = r->advance[i] / 2;
+        r->apsidal[i] = fabs(r->advance[i]) / 2; /* an angle between apsides, either way round */
         r->precession[i] = r->advance[i] - 2 * PI * (r->advance[i] < 0 ? -1 : 1);
         if (fabs(r->precession[i]) <= 8 * fmax(r->quad_error, 1e-13) * fabs(r->advance[i]))
             r->precession[i] = 0; /* closed to within the quadrature's error */

@@ -186,6 +186,21 @@ static void test_kepler_ellipse(void **state) {
     unload(&f);
 }
 
+/* Retrograde: the same ellipse run the other way round. */
+static void test_kepler_retrograde(void **state) {
+    (void)state;
+    fix f;
+    kepler_at(&f, 1.0, 0.4, -1.5);
+    kep K = kepler_expect(1.0, 0.4, -1.5);
+    near(f.r.momenta[0], K.h, 1e-15);
+    near(f.r.advance[0], -2 * PI, 1e-12);
+    near(f.r.apsidal[0], PI, 1e-12);
+    near(f.r.precession[0], 0, 1e-11);
+    near(f.r.period, 2 * PI * sqrt(1.3 * K.a * K.a * K.a / 4), 1e-12);
+    near(K.p / (1 + K.e * cos(-f.r.periapsis)), 1.0, 1e-13);
+    unload(&f);
+}
+
 static void test_kepler_hyperbola(void **state) {
     (void)state;
     fix f;
@@ -511,7 +526,8 @@ static void test_errors(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_kepler_ellipse),   cmocka_unit_test(test_kepler_hyperbola),
+        cmocka_unit_test(test_kepler_ellipse),   cmocka_unit_test(test_kepler_retrograde),
+        cmocka_unit_test(test_kepler_hyperbola),
         cmocka_unit_test(test_kepler_parabola),  cmocka_unit_test(test_kepler_circle),
         cmocka_unit_test(test_power_law_apsidal), cmocka_unit_test(test_hooke_closes),
         cmocka_unit_test(test_inverse_cube),     cmocka_unit_test(test_r4_capture),
