@@ -45,6 +45,17 @@ static double value_of(const qd_expr *s, size_t n, const qd_expr *const *syms, c
     return 0;
 }
 
+/* The i-th symbol of a state: ignored coordinates and their velocities, then
+ * the kept ones, then t (i = 2 n). */
+static const qd_expr *state_symbol(qd_ctx *ctx, const qd_routh *h, size_t i) {
+    if (i == 2 * h->n)
+        return qd_time(ctx);
+    if (i < 2 * h->nign)
+        return i % 2 ? qd_jet(ctx, h->ign[i / 2], 1) : h->ign[i / 2];
+    i -= 2 * h->nign;
+    return i % 2 ? h->keepd[i / 2] : h->keep[i / 2];
+}
+
 /* The state with every coordinate, velocity and t the caller left out at 0. */
 static qd_status full_state(qd_ctx *ctx, const qd_routh *h, size_t n, const qd_expr *const *syms,
                             const double *vals, const qd_expr ***fs, double **fv, size_t *fn) {
@@ -55,22 +66,14 @@ static qd_status full_state(qd_ctx *ctx, const qd_routh *h, size_t n, const qd_e
         return QD_ERR_NOMEM;
     memcpy(*fs, syms, n * sizeof *syms);
     memcpy(*fv, vals, n * sizeof *vals);
-    const qd_expr *extra[2 * 64 + 1];
-    size_t ne = 0;
-    for (size_t i = 0; i < h->nign && ne < 128; i++) {
-        extra[ne++] = h->ign[i];
-        extra[ne++] = qd_jet(ctx, h->ign[i], 1);
-    }
-    for (size_t j = 0; j < h->nkeep && ne < 128; j++) {
-        extra[ne++] = h->keep[j];
-        extra[ne++] = h->keepd[j];
-    }
-    extra[ne++] = qd_time(ctx);
-    for (size_t i = 0; i < ne; i++) {
+    for (size_t i = 0; i <= 2 * h->n; i++) {
+        const qd_expr *s = state_symbol(ctx, h, i);
         bool given;
-        value_of(extra[i], n, syms, vals, &given);
-        if (!given && extra[i])
-            (*fs)[k++] = extra[i];
+        value_of(s, n, syms, vals, &given);
+        if (!s)
+            return qd_ctx_status(ctx);
+        if (!given)
+            (*fs)[k++] = s; /* its value stays the calloc'd 0 */
     }
     *fn = k;
     return QD_OK;
