@@ -289,6 +289,24 @@ def _(q, v, t, p):
     return [r * thd**2 - p['k'] / (p['m'] * r**2), -2 * rd * thd / r]
 
 
+@example('inverse_cube_orbit', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58 P9 (B T09): m (r'' - r phi'^2) = -(h0^2/m)(2/(a r^2) + 1/r^3);
+    # d/dt(m r^2 phi') = 0
+    r, rd, phd = q['r'], v['r'], v['phi']
+    m, h0 = p['m'], p['h0']
+    F = -(h0**2 / m) * (2 / (p['a'] * r**2) + 1 / r**3)
+    return [r * phd**2 + F / m, -2 * rd * phd / r]
+
+
+@example('r4_potential', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58 (B C3): V = -a/(4 r^4), m (r'' - r phi'^2) = -a/r^5;
+    # d/dt(m r^2 phi') = 0
+    r, rd, phd = q['r'], v['r'], v['phi']
+    return [r * phd**2 - p['a'] / (p['m'] * r**5), -2 * rd * phd / r]
+
+
 @example('table_hanging_mass', ['r', 'theta'], ranges={'r': (0.3, 1.8)})
 def _(q, v, t, p):
     # Goldstein ch. 1 Exercise 21 (G11): (m1 + m2) r'' - m1 r th'^2 + m2 g = 0;
