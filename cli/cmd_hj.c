@@ -26,7 +26,6 @@ typedef struct hj_run {
     const char *file, *energy, *sets[MAX_SETS];
     size_t nsets;
     bool solve;
-    const qd_expr **motion; /* n, with --solve: q(t) or the orbit, NULL where not closed */
 } hj_run;
 
 static const char usage_text[] =
@@ -89,6 +88,22 @@ static void write_sep(const hj_run *r, qd_buf *b, const qd_hj_sep *s, const char
     line(r, b, qd_expr_name(s->constant), s->integral);
 }
 
+/* --solve: q_k(t), or the orbit q_k(q_j), where the quadrature closes. */
+static void write_motion(const hj_run *r, qd_buf *b, const char *cmt) {
+    const qd_hj *h = r->h;
+    qd_buf_printf(b, "%smotion from dW/dalpha = beta (beta_q: the constant of integration)\n", cmt);
+    for (size_t k = 0; k < h->n; k++) {
+        const qd_hj_sep *s = &h->sep[k];
+        if (!s->motion) {
+            qd_buf_printf(b, "%s  %s: no closed form\n", cmt, qd_expr_name(s->q));
+            continue;
+        }
+        qd_buf_printf(b, "  %s(%s) = ", qd_expr_name(s->q), qd_expr_name(s->clock));
+        put(r, b, s->motion);
+        qd_buf_puts(b, eol(r));
+    }
+}
+
 static void write_lines(const hj_run *r, qd_buf *b) {
     const qd_hj *h = r->h;
     const char *cmt = r->fmt == FMT_LATEX ? "% " : "";
@@ -107,12 +122,8 @@ static void write_lines(const hj_run *r, qd_buf *b) {
         write_sep(r, b, &h->sep[k], cmt);
     qd_buf_printf(b, "%scomplete integral (p = +sqrt(p^2) on each branch)\n", cmt);
     line(r, b, "W", h->W);
-    for (size_t k = 0; r->motion && k < h->n; k++) {
-        if (k == 0)
-            qd_buf_printf(b, "%smotion from dW/dalpha = beta\n", cmt);
-        if (r->motion[k])
-            line(r, b, qd_expr_name(h->sep[k].q), r->motion[k]);
-    }
+    if (r->solve)
+        write_motion(r, b, cmt);
 }
 
 static void write_json(const hj_run *r, qd_buf *b) {
@@ -156,9 +167,14 @@ static void write_json(const hj_run *r, qd_buf *b) {
         cli_json_bool(&j, s->cyclic);
         cli_json_key(&j, "integral");
         cli_json_expr(&j, r->ctx, s->integral);
-        if (r->motion) {
+        if (r->solve) {
             cli_json_key(&j, "motion");
-            cli_json_expr(&j, r->ctx, r->motion[k]);
+            cli_json_expr(&j, r->ctx, s->motion);
+            cli_json_key(&j, "clock");
+            if (s->clock)
+                cli_json_string(&j, qd_expr_name(s->clock));
+            else
+                cli_json_null(&j);
         }
         cli_json_end_object(&j);
     }
@@ -244,11 +260,9 @@ static int run(hj_run *r) {
     qd_hj_opts opts = {.energy_name = r->energy};
     if (!(r->h = qd_hj_derive(r->ctx, r->mf.model, &opts)))
         return cli_eom_derive_error(r->ctx, &r->mf);
-    if (r->solve && r->h->separable) {
-        r->motion = calloc(r->h->n, sizeof *r->motion);
-        if (!r->motion)
-            return QD_EXIT_FAIL;
-    }
+    r->solve = r->solve && r->h->separable;
+    if (r->solve && qd_hj_solve(r->ctx, r->h) != QD_OK)
+        return cli_diag_ctx(r->ctx);
     return emit(r);
 }
 
@@ -262,7 +276,6 @@ int cli_cmd_hj(int argc, char **argv) {
         return QD_EXIT_FAIL;
     }
     rc = run(&r);
-    free(r.motion);
     qd_hj_free(r.h);
     cli_model_file_free(&r.mf);
     qd_ctx_free(r.ctx);
