@@ -211,6 +211,28 @@ static void sympy_list(const hj_run *r, qd_buf *b, const char *name, size_t off)
     qd_buf_puts(b, "]\n");
 }
 
+/* motion = {coordinate: (clock, q)} where --solve closed the quadrature. */
+static void write_sympy_motion(const hj_run *r, qd_buf *b) {
+    for (size_t k = 0; k < r->h->n; k++)
+        if (r->h->sep[k].beta)
+            qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(r->h->sep[k].beta),
+                          qd_expr_name(r->h->sep[k].beta));
+    qd_buf_printf(b, "%s = {", cli_script_name(r->mf.model, "motion").s);
+    const char *sep = "";
+    for (size_t k = 0; k < r->h->n; k++) {
+        const qd_hj_sep *s = &r->h->sep[k];
+        if (!s->motion)
+            continue;
+        qd_buf_printf(b, "%s'%s': (", sep, qd_expr_name(s->q));
+        put(r, b, s->clock);
+        qd_buf_puts(b, ", ");
+        put(r, b, s->motion);
+        qd_buf_puts(b, ")");
+        sep = ", ";
+    }
+    qd_buf_puts(b, "}\n");
+}
+
 /* Python defining H, HJ (the equation), W, p2 and integrals (lists in
  * coordinate order), constants; integral(f, q) is SymPy's Integral. */
 static void write_sympy(const hj_run *r, qd_buf *b) {
@@ -230,15 +252,18 @@ static void write_sympy(const hj_run *r, qd_buf *b) {
     for (size_t i = 0; i < ns && i < 64; i++)
         if (qd_symbol_role(syms[i]) == QD_ROLE_PLAIN)
             qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(syms[i]), qd_expr_name(syms[i]));
-    for (size_t k = 0; k < h->nconst; k++)
-        qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(h->constants[k]),
-                      qd_expr_name(h->constants[k]));
+    for (size_t k = 0; k < h->nconst; k++) /* E stays SymPy's e: the printer writes Symbol('E') */
+        if (strcmp(qd_expr_name(h->constants[k]), "E"))
+            qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(h->constants[k]),
+                          qd_expr_name(h->constants[k]));
     sympy_assign(r, b, "H", h->H);
     sympy_assign(r, b, "HJ", h->equation);
     qd_buf_printf(b, "separable = %s\n", h->separable ? "True" : "False");
     sympy_assign(r, b, "W", h->W);
     sympy_list(r, b, "p2", offsetof(qd_hj_sep, p2));
     sympy_list(r, b, "integrals", offsetof(qd_hj_sep, integral));
+    if (r->solve)
+        write_sympy_motion(r, b);
     qd_buf_printf(b, "# %s\n", h->why);
 }
 
