@@ -162,7 +162,11 @@ static qd_status fill(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts, qd
     if (!(h->W = complete_integral(ctx, h)))
         return QD_ERR_NOMEM;
     integrals_in_velocities(ctx, h, in);
-    snprintf(h->why, sizeof h->why, "%s: H = E splits into one equation per coordinate", h->form);
+    if (h->n == 1)
+        snprintf(h->why, sizeof h->why, "one coordinate: H = E is its equation");
+    else
+        snprintf(h->why, sizeof h->why, "%s: H = E splits into one equation per coordinate",
+                 h->form);
     return qd_ctx_status(ctx);
 }
 
