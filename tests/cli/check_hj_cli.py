@@ -17,7 +17,8 @@ the separation form the books give, and the SymPy script (--format sympy
 Sources: Desloge ch. 78 (the oscillator, the projectile, H = p^2 - q with
 q = (t - beta)^2 - E), ch. 79 and Goldstein 10.8 (Kepler in polar and
 spherical coordinates), Landau-Lifshitz §48 problems 2-3 (parabolic and
-elliptic coordinates: the Stark problem, two fixed centres).  Not separable:
+elliptic coordinates: the Stark problem, two fixed centres; eq. (48.8), the
+general potential separable in spherical coordinates: the Staeckel form).  Not separable:
 V = x^2/2 + y^2/2 + a x y^3 (the obstruction named).  Errors: constraints, a
 singular Legendre transform, exit 2.
 
@@ -47,6 +48,7 @@ CASES = {
                             {'r': (0.5, 2), 'theta': (0.3, 2.8), 'phi': (-3, 3)}),
     'hj_stark': ('cyclic + Liouville', 0, {'xi': (0.3, 2), 'eta': (0.3, 2), 'phi': (-3, 3)}),
     'hj_two_centres': ('Liouville', 0, {'s': (0.2, 2), 'u': (-3, 3)}),
+    'hj_staeckel': ('Staeckel', 0, {'r': (0.5, 2), 'theta': (0.3, 2.8), 'phi': (-3, 3)}),
 }
 
 

@@ -303,6 +303,24 @@ static void test_two_centres(void **state) {
     unload(&f);
 }
 
+/* Landau-Lifshitz §48 eq. (48.8): U = a(r) + b(theta)/r^2 +
+ * c(phi)/(r^2 sin^2), two factors in turn (Staeckel), and the energy kept
+ * for r, the coordinate whose equation has it. */
+static void test_staeckel(void **state) {
+    (void)state;
+    fix f = load("coordinates r, theta, phi\nparameters m = 1, k = 1, b = 0.3, d = 0.2\n"
+                 "momenta p_r, p_theta, p_phi\n"
+                 "H = p_r^2/(2*m) + (p_theta^2 + p_phi^2/sin(theta)^2)/(2*m*r^2) - k/r"
+                 " + b*cos(theta)/r^2 + d*sin(phi)^2/(r^2*sin(theta)^2)\n");
+    check_form(&f, "Staeckel");
+    assert_same(&f, sep_of(&f, "phi"), "2*m*(alpha_phi - d*sin(phi)^2)");
+    assert_same(&f, sep_of(&f, "theta"), "2*m*(alpha_theta - b*cos(theta) - alpha_phi/sin(theta)^2)");
+    assert_same(&f, sep_of(&f, "r"), "2*m*(E + k/r - alpha_theta/r^2)");
+    double lo[] = {0.5, 0.3, -3}, hi[] = {2, 2.8, 3};
+    check_solution(&f, lo, hi, 488u);
+    unload(&f);
+}
+
 /* Not separable: the obstruction is the coupling term. */
 static void test_coupled(void **state) {
     (void)state;
@@ -464,7 +482,7 @@ int main(void) {
         cmocka_unit_test(test_stark),        cmocka_unit_test(test_two_centres),
         cmocka_unit_test(test_coupled),      cmocka_unit_test(test_time_dependent),
         cmocka_unit_test(test_errors),       cmocka_unit_test(test_energy_name),
-        cmocka_unit_test(test_solve),
+        cmocka_unit_test(test_solve),        cmocka_unit_test(test_staeckel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
