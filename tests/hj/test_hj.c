@@ -360,12 +360,17 @@ static void expect_error(const char *text, qd_status st, const char *words) {
 }
 
 /* A constrained model needs independent coordinates; L linear in the
- * velocities has no Legendre transform. */
+ * velocities has no Legendre transform; forces and dissipation leave no
+ * Hamiltonian system to solve. */
 static void test_errors(void **state) {
     (void)state;
     expect_error("coordinates x, y\nparameters m = 1\nparticle m at (x, y)\n"
                  "constraint c: x^2 + y^2 = 1\n", QD_ERR_ARG, "independent coordinates");
     expect_error("coordinates x, y\nL = x*y' - x^2/2 - y^2/2\n", QD_ERR_SINGULAR, "");
+    expect_error("coordinates x\nparameters m = 1, k = 1, b = 0.1\nT = m*x'^2/2\nV = k*x^2/2\n"
+                 "dissipation = b*x'^2/2\n", QD_ERR_ARG, "dissipation");
+    expect_error("coordinates x\nparameters m = 1, F = 0.1\nT = m*x'^2/2\nQ[x] = F*cos(t)\n",
+                 QD_ERR_ARG, "generalized force on x");
 }
 
 /* The energy constant takes the name asked for. */
