@@ -75,17 +75,22 @@ static void line(const hj_run *r, qd_buf *b, const char *lhs, const qd_expr *rhs
     qd_buf_puts(b, eol(r));
 }
 
+/* "  lhs = rhs" with lhs an expression too (p_x^2 is p_{x}^{2} in LaTeX). */
+static void line_x(const hj_run *r, qd_buf *b, const qd_expr *lhs, const qd_expr *rhs) {
+    qd_buf_puts(b, "  ");
+    put(r, b, lhs);
+    qd_buf_puts(b, " = ");
+    put(r, b, rhs);
+    qd_buf_puts(b, eol(r));
+}
+
 static void write_sep(const hj_run *r, qd_buf *b, const qd_hj_sep *s, const char *cmt) {
     const char *q = qd_expr_name(s->q);
     qd_buf_printf(b, "%s%s: constant %s%s\n", cmt, q, qd_expr_name(s->constant),
                   s->cyclic ? " (cyclic: its momentum is constant)" : "");
-    qd_buf_puts(b, "  ");
-    put(r, b, s->equation);
-    qd_buf_printf(b, " = 0%s", eol(r));
-    qd_buf_printf(b, "  %s^2 = ", qd_expr_name(s->p));
-    put(r, b, s->p2);
-    qd_buf_puts(b, eol(r));
-    line(r, b, qd_expr_name(s->constant), s->integral);
+    line_x(r, b, s->equation, qd_int(r->ctx, 0));
+    line_x(r, b, qd_powi(r->ctx, s->p, 2), s->p2);
+    line_x(r, b, s->constant, s->integral);
 }
 
 /* --solve: q_k(t), or the orbit q_k(q_j), where the quadrature closes. */
@@ -98,7 +103,11 @@ static void write_motion(const hj_run *r, qd_buf *b, const char *cmt) {
             qd_buf_printf(b, "%s  %s: no closed form\n", cmt, qd_expr_name(s->q));
             continue;
         }
-        qd_buf_printf(b, "  %s(%s) = ", qd_expr_name(s->q), qd_expr_name(s->clock));
+        qd_buf_puts(b, "  ");
+        put(r, b, s->q);
+        qd_buf_puts(b, "(");
+        put(r, b, s->clock);
+        qd_buf_puts(b, ") = ");
         put(r, b, s->motion);
         qd_buf_puts(b, eol(r));
     }
