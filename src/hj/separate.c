@@ -223,6 +223,81 @@ static qd_status peel_group(qd__hj_sep_state *s, size_t k, const qd_expr *c, con
     return s->F ? QD_OK : QD_ERR_NOMEM;
 }
 
+/* The coefficients c[0..max] of P as a polynomial in x (free of x);
+ * its degree, or -1 when P is not one of degree <= max. */
+static int poly(qd_ctx *ctx, const qd_expr *P, const qd_expr *x, int max, const qd_expr **c) {
+    const qd_expr *X = qd_expand(ctx, P), *sum = qd_int(ctx, 0);
+    int deg = -1;
+    for (int k = 0; X && k <= max; k++) {
+        if (!(c[k] = qd_coeff(ctx, X, x, k)) || qd_has(c[k], x))
+            return -1;
+        if (!qd_is_zero(c[k]))
+            deg = k;
+        sum = qd_add(ctx, sum, qd_mul(ctx, c[k], qd_powi(ctx, x, k)));
+    }
+    const qd_expr *d = X ? qd_expand(ctx, qd_sub(ctx, X, sum)) : NULL;
+    return d && qd_is_zero(d) ? deg : -1;
+}
+
+#define MAX_DEG 6
+
+/* num/B as quotient + remainder/B, num and B polynomials in x (deg num >=
+ * deg B >= 1); NULL when they are not. */
+static const qd_expr *divide(qd_ctx *ctx, const qd_expr *num, const qd_expr *B, const qd_expr *x) {
+    const qd_expr *a[MAX_DEG + 1], *b[MAX_DEG + 1];
+    int dn = poly(ctx, num, x, MAX_DEG, a), dd = poly(ctx, B, x, MAX_DEG, b);
+    if (dd < 1 || dn < dd)
+        return NULL;
+    const qd_expr *quot = qd_int(ctx, 0), *rem = qd_int(ctx, 0);
+    for (int i = dn; i >= dd; i--) {
+        const qd_expr *q = qd_div(ctx, a[i], b[dd]);
+        quot = qd_add(ctx, quot, qd_mul(ctx, q, qd_powi(ctx, x, i - dd)));
+        for (int j = 0; j <= dd; j++)
+            a[i - dd + j] = qd_sub(ctx, a[i - dd + j], qd_mul(ctx, q, b[j]));
+    }
+    for (int j = 0; j < dd; j++)
+        rem = qd_add(ctx, rem, qd_mul(ctx, a[j], qd_powi(ctx, x, j)));
+    return qd_add(ctx, quot, qd_div(ctx, rem, B));
+}
+
+/* A term t = rest * num(x) / B(x), B^-1 its one negative power on the
+ * coordinate x and num its other factors on x alone, rewritten as rest *
+ * (quotient + remainder/B); t itself when it is not of that shape. */
+static const qd_expr *proper_term(qd__hj_sep_state *s, const qd_expr *t, size_t k) {
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *x = s->q[k], *num = qd_int(ctx, 1), *rest = qd_int(ctx, 1), *B = NULL;
+    size_t nf = qd_expr_kind(t) == QD_MUL ? qd_expr_nargs(t) : 1;
+    for (size_t i = 0; i < nf; i++) {
+        const qd_expr *f = qd_expr_kind(t) == QD_MUL ? qd_expr_arg(t, i) : t;
+        if (!qd_has(f, x) || qd_has(f, s->p[k]) || on_others(s, f, k)) {
+            rest = qd_mul(ctx, rest, f);
+        } else if (qd_expr_kind(f) == QD_POW && qd_expr_arg(f, 1) == qd_int(ctx, -1) && !B) {
+            B = qd_expr_arg(f, 0);
+        } else {
+            num = qd_mul(ctx, num, f);
+        }
+    }
+    const qd_expr *d = B ? divide(ctx, num, B, x) : NULL;
+    return d ? qd_expand(ctx, qd_mul(ctx, rest, d)) : t;
+}
+
+/* G with every term in proper fractions of each coordinate: a Liouville sum
+ * over a product of one-coordinate factors, (xi^2 - eta^2)/((xi^2 - 1)(1 -
+ * eta^2)), only splits as 1/(1 - eta^2) + 1/(xi^2 - 1) this way (prolate
+ * spheroidal coordinates). */
+static const qd_expr *proper(qd__hj_sep_state *s, const qd_expr *G) {
+    qd_ctx *ctx = s->ctx;
+    const qd_expr *sum = qd_int(ctx, 0);
+    for (size_t i = 0; sum && i < nterms(G); i++) {
+        const qd_expr *t = term(G, i);
+        for (size_t k = 0; t && k < s->h->n; k++)
+            if (s->left[k] && qd_has(t, s->q[k]))
+                t = proper_term(s, t, k);
+        sum = qd_add(ctx, sum, t);
+    }
+    return sum;
+}
+
 /* f F term by term, so that f cancels a denominator before expansion
  * distributes it: (xi + eta) * (...)/(xi + eta). */
 static const qd_expr *times(qd_ctx *ctx, const qd_expr *f, const qd_expr *F) {
@@ -235,21 +310,32 @@ static const qd_expr *times(qd_ctx *ctx, const qd_expr *f, const qd_expr *F) {
 /* One coordinate isolated by some candidate factor; false when none is.
  * Groups free of E first (with_energy false), so that the energy stays in
  * the equation of the last coordinate and each constant has its own. */
+/* The first coordinate G isolates, peeled; false when there is none. */
+static bool peel_from(qd__hj_sep_state *s, const qd_expr *G, bool with_energy, bool plain,
+                      qd_status *st) {
+    for (size_t k = 0; G && k < s->h->n; k++) {
+        const qd_expr *c, *group, *rest;
+        if (!s->left[k] || !split_on(s, G, k, &c, &group, &rest) ||
+            (!with_energy && qd_has(group, s->h->energy)))
+            continue;
+        if (!solve_p2(s->ctx, group, s->p[k]))
+            continue;
+        *st = peel_group(s, k, c, group, rest, plain && qd_is_one(c));
+        return true;
+    }
+    return false;
+}
+
 static bool try_groups(qd__hj_sep_state *s, bool with_energy, qd_status *st) {
     const qd_expr *cand[MAX_CANDIDATES];
     size_t nc = candidates(s, cand);
     for (size_t i = 0; i < nc; i++) {
         const qd_expr *G = times(s->ctx, cand[i], s->F);
-        for (size_t k = 0; G && k < s->h->n; k++) {
-            const qd_expr *c, *group, *rest;
-            if (!s->left[k] || !split_on(s, G, k, &c, &group, &rest) ||
-                (!with_energy && qd_has(group, s->h->energy)))
-                continue;
-            if (!solve_p2(s->ctx, group, s->p[k]))
-                continue;
-            *st = peel_group(s, k, c, group, rest, i == 0 && qd_is_one(c));
+        if (peel_from(s, G, with_energy, i == 0, st))
             return true;
-        }
+        const qd_expr *P = G ? proper(s, G) : NULL;
+        if (P && P != G && peel_from(s, P, with_energy, false, st))
+            return true;
     }
     return false;
 }

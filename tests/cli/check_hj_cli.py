@@ -48,6 +48,7 @@ CASES = {
                             {'r': (0.5, 2), 'theta': (0.3, 2.8), 'phi': (-3, 3)}),
     'hj_stark': ('cyclic + Liouville', 0, {'xi': (0.3, 2), 'eta': (0.3, 2), 'phi': (-3, 3)}),
     'hj_two_centres': ('Liouville', 0, {'s': (0.2, 2), 'u': (-3, 3)}),
+    'hj_prolate': ('cyclic + Liouville', 0, {'xi': (1.1, 3), 'eta': (-0.9, 0.9), 'phi': (-3, 3)}),
     'hj_staeckel': ('Staeckel', 0, {'r': (0.5, 2), 'theta': (0.3, 2.8), 'phi': (-3, 3)}),
 }
 

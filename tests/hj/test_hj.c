@@ -337,6 +337,25 @@ static void test_desloge78_p6(void **state) {
     unload(&f);
 }
 
+/* Desloge ch. 78 Prob. 10, Landau-Lifshitz §48 problem 3: two centres in
+ * space, prolate spheroidal coordinates; the p_phi term separates only in
+ * proper fractions, 1/(1 - eta^2) + 1/(xi^2 - 1). */
+static void test_prolate(void **state) {
+    (void)state;
+    fix f = load("coordinates xi, eta, phi\nparameters m = 1, a = 1, k1 = 1, k2 = 0.5\n"
+                 "momenta p_xi, p_eta, p_phi\n"
+                 "H = ((xi^2 - 1)*p_xi^2 + (1 - eta^2)*p_eta^2)/(2*m*a^2*(xi^2 - eta^2))"
+                 " + p_phi^2/(2*m*a^2*(xi^2 - 1)*(1 - eta^2))"
+                 " - ((k1 + k2)*xi + (k1 - k2)*eta)/(a*(xi^2 - eta^2))\n");
+    check_form(&f, "cyclic + Liouville");
+    assert_same(&f, sep_of(&f, "xi"),
+                "(2*m*a^2*(E*xi^2 + alpha_xi) + 2*m*a*(k1 + k2)*xi)/(xi^2 - 1)"
+                " - alpha_phi^2/(xi^2 - 1)^2");
+    double lo[] = {1.1, -0.9, -3}, hi[] = {3, 0.9, 3};
+    check_solution(&f, lo, hi, 4810u);
+    unload(&f);
+}
+
 /* Not separable: the obstruction is the coupling term. */
 static void test_coupled(void **state) {
     (void)state;
@@ -521,7 +540,7 @@ int main(void) {
         cmocka_unit_test(test_coupled),      cmocka_unit_test(test_time_dependent),
         cmocka_unit_test(test_errors),       cmocka_unit_test(test_energy_name),
         cmocka_unit_test(test_solve),        cmocka_unit_test(test_staeckel),
-        cmocka_unit_test(test_desloge78_p6),
+        cmocka_unit_test(test_desloge78_p6), cmocka_unit_test(test_prolate),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
