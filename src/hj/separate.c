@@ -181,8 +181,14 @@ static qd_status record(qd__hj_sep_state *s, size_t k, const qd_expr *constant,
                                              : solve_p2(s->ctx, equation, s->p[k]);
     sp->cyclic = cyclic;
     sp->integral = value;
-    if (!sp->p2 || !sp->equation)
+    if (!sp->p2 || !sp->equation) {
+        snprintf(h->why, sizeof h->why, "the equation left for %s is not of the form "
+                 "A(%s) %s^2 + C(%s) = 0 (%s enters it linearly or beyond the square: a cross "
+                 "term with a cyclic momentum, or a magnetic term)", qd_expr_name(s->q[k]),
+                 qd_expr_name(s->q[k]), qd_expr_name(s->p[k]), qd_expr_name(s->q[k]),
+                 qd_expr_name(s->p[k]));
         return qd_ctx_status(s->ctx) != QD_OK ? qd_ctx_status(s->ctx) : QD_ERR_NONLINEAR;
+    }
     s->value[h->nconst] = value;
     h->constants[h->nconst++] = constant;
     s->left[k] = false;
@@ -406,8 +412,6 @@ qd_status qd__hj_separate(qd__hj_sep_state *s) {
         if (qd__ctx_nomem(s->ctx))
             return QD_ERR_NOMEM;
         qd__ctx_recover(s->ctx);
-        snprintf(h->why, sizeof h->why, "a separated equation is not of the form "
-                 "A(q) p^2 + C(q) = 0 in its momentum");
         return QD_OK;
     }
     h->separable = true;
