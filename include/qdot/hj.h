@@ -44,7 +44,9 @@ typedef struct qd_hj_sep {
     /* p_k^2 as a function of q_k and the constants: the motion in q_k is
      * where it is >= 0, its simple roots are the turning points */
     const qd_expr *p2;
-    bool cyclic;               /* p_k = constant */
+    bool cyclic;               /* q_k absent from what was left: p_k is a constant
+                                  (alpha_k; for the last coordinate, a function of
+                                  the constants) */
     /* the constant as a first integral: an expression in q and the model's
      * velocities (q') for a Lagrangian model, or q and p for a model given
      * by H; evaluating it at a state gives the constant's value there */
@@ -64,11 +66,14 @@ typedef struct qd_hj {
     bool time_independent;     /* S = W - E t */
     bool separable;
     const char *form;          /* "cyclic", "additive", "Liouville", "Staeckel",
-                                  or a combination ("cyclic + Liouville") */
+                                  a combination ("cyclic + Liouville"), or "one
+                                  coordinate"; a static string; NULL when not
+                                  separable */
     char why[256];             /* why (not) separable, for the reader */
     qd_hj_sep *sep;            /* n, in coordinate order, when separable */
     size_t nconst;
-    const qd_expr **constants; /* the separation constants, energy last */
+    const qd_expr **constants; /* the separation constants in the order the
+                                  peeling found them, energy last */
     const qd_expr *energy;     /* the energy constant (E), or NULL */
     /* W = sum_k int p_k dq_k: closed forms where the kernel integrates,
      * integral(EXPR, VAR) otherwise; NULL when not separable */
@@ -81,7 +86,10 @@ typedef struct qd_hj_opts {
 
 /* Derive the HJ equation of m (given by L or by H) and separate it.  A
  * system that does not separate is not an error: separable = false with
- * the obstruction in why.  NULL on failure (reason in ctx). */
+ * the obstruction in why.  NULL on failure (reason in ctx): constraints
+ * (the equation needs independent coordinates), generalized forces or
+ * dissipation (QD_ERR_ARG), a singular Legendre transform, out of memory.
+ * The result is freed with qd_hj_free; its expressions belong to ctx. */
 QD_API qd_hj *qd_hj_derive(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts);
 QD_API void qd_hj_free(qd_hj *h);
 
