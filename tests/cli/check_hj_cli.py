@@ -169,6 +169,19 @@ def check_textbook(qdot):
           str(ns['motion']))
 
 
+def check_formats(qdot):
+    """text and LaTeX print the same story; --energy renames E everywhere."""
+    path = str(EXAMPLES / 'hj_projectile.qd')
+    rc, out, err = run(qdot, 'hj', path, '--solve')
+    check('text', rc == 0 and 'separable: yes (cyclic' in out and 'y(t) = ' in out, out + err)
+    rc, out, err = run(qdot, 'hj', path, '--format', 'latex')
+    check('latex', rc == 0 and '% separable: yes' in out and '\\alpha_{x}' in out, out + err)
+    rc, out, err = run(qdot, 'hj', path, '--format', 'json', '--energy', 'h')
+    d = json.loads(out) if rc == 0 else {}
+    check('--energy', d.get('energy_constant') == 'h' and 'h' in d['separation'][1]['p2']
+          and 'E' not in d['W'], out + err)
+
+
 def check_failures(qdot, tmp):
     rc, out, err = run(qdot, 'hj', str(EXAMPLES / 'hj_coupled.qd'), '--format', 'json')
     d = json.loads(out) if rc == 0 else {}
@@ -197,6 +210,7 @@ def main():
         except Exception as exc:  # a crash, bad JSON, a SymPy failure
             check(name, False, '%s: %s' % (type(exc).__name__, exc))
     check_textbook(qdot)
+    check_formats(qdot)
     import tempfile
     with tempfile.TemporaryDirectory() as d:
         check_failures(qdot, Path(d))
