@@ -100,7 +100,8 @@ QD_API void qd_hj_free(qd_hj *h);
  * cyclic coordinate q_j, q_j - beta_k = int (dH/dp_j)/(dH/dp_k) dq_k.  The
  * integrals closed and inverted: a constant velocity, kappa/sqrt(a + b q),
  * kappa/sqrt(a + b q + c q^2) with c < 0 (the oscillators, the projectile),
- * and kappa/(q^2 sqrt(a + b/q + c/q^2)) (Kepler's conic, u = 1/q).  Fills
+ * kappa/(q^2 sqrt(a + b/q + c/q^2)) (Kepler's conic, u = 1/q) and
+ * kappa/(sin(q)^2 sqrt(P(cot q))) (the plane of a central orbit).  Fills
  * sep[k].motion, clock and beta; the other coordinates keep NULL.  h must be
  * separable (QD_ERR_ARG otherwise). */
 QD_API qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h);

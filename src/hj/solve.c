@@ -12,7 +12,8 @@
  *                                q = (b + sqrt(D) sin(sqrt(g) tau/kappa))/(2 g)
  *     w = kappa/sqrt(P), c = 0:  2 kappa sqrt(a + b q)/b = tau
  *                                q = ((b tau/(2 kappa))^2 - a)/b
- *     w = kappa/(q^2 sqrt(P(1/q))): u = 1/q turns it into -kappa/sqrt(P(u)).
+ *     w = kappa/(q^2 sqrt(P(1/q))): u = 1/q turns it into -kappa/sqrt(P(u));
+ *     w = kappa/(sin(q)^2 sqrt(P)), P quadratic in u = cot(q): likewise.
  *
  * beta_<q> is the constant of integration (the time or the angle of the
  * reference point): the betas of the textbook, dW/dalpha_k, differ from it by
@@ -74,18 +75,44 @@ static bool on_others(const qd_hj *h, const qd_expr *e, size_t k) {
     return false;
 }
 
-/* q_k from tau = int w dq_k in one of the closed forms, else NULL. */
-static const qd_expr *closed(qd_ctx *ctx, const qd_hj_sep *s, const qd_expr *w, const qd_expr *tau) {
-    const qd_expr *q = s->q, *root = qd_sqrt(ctx, s->p2), *abc[3];
-    const qd_expr *kappa = qd_simplify(ctx, qd_mul(ctx, w, root));
-    if (kappa && !qd_has(kappa, q) && quadratic(ctx, s->p2, q, abc))
-        return invert(ctx, abc, kappa, tau);
-    kappa = qd_simplify(ctx, qd_mul(ctx, qd_mul(ctx, w, root), qd_powi(ctx, q, 2)));
+/* tau = int w dq through u = 1/q: w = kappa/(q^2 sqrt(P(u))) (Kepler's orbit). */
+static const qd_expr *closed_inverse(qd_ctx *ctx, const qd_hj_sep *s, const qd_expr *w,
+                                     const qd_expr *tau) {
+    const qd_expr *q = s->q, *abc[3];
+    const qd_expr *kappa = qd_simplify(ctx, qd_mul(ctx, qd_mul(ctx, w, qd_sqrt(ctx, s->p2)),
+                                                   qd_powi(ctx, q, 2)));
     const qd_expr *u = qd_symbol(ctx, "hj_u"), *inv = qd_powi(ctx, u, -1);
     if (!kappa || qd_has(kappa, q) || !quadratic(ctx, qd_subs(ctx, s->p2, 1, &q, &inv), u, abc))
         return NULL;
     const qd_expr *uq = invert(ctx, abc, qd_neg(ctx, kappa), tau);
     return uq ? qd_powi(ctx, uq, -1) : NULL;
+}
+
+/* tau = int w dq through u = cot(q), sin(q)^2 = 1/(1 + u^2):
+ * w = kappa/(sin(q)^2 sqrt(P(u))) (the plane of a central orbit in
+ * spherical coordinates, Desloge ch. 78 eq. 59); q = atan2(1, u) in (0, pi). */
+static const qd_expr *closed_cot(qd_ctx *ctx, const qd_hj_sep *s, const qd_expr *w,
+                                 const qd_expr *tau) {
+    const qd_expr *q = s->q, *sq = qd_fn(ctx, QD_SIN, q), *abc[3];
+    const qd_expr *kappa = qd_simplify(ctx, qd_mul(ctx, qd_mul(ctx, w, qd_sqrt(ctx, s->p2)),
+                                                   qd_powi(ctx, sq, 2)));
+    const qd_expr *u = qd_symbol(ctx, "hj_u");
+    const qd_expr *to = qd_pow(ctx, qd_add(ctx, qd_int(ctx, 1), qd_powi(ctx, u, 2)), qd_rat(ctx, -1, 2));
+    const qd_expr *P = qd_subs(ctx, s->p2, 1, &sq, &to);
+    if (!kappa || qd_has(kappa, q) || !P || qd_has(P, q) || !quadratic(ctx, P, u, abc))
+        return NULL;
+    const qd_expr *uq = invert(ctx, abc, qd_neg(ctx, kappa), tau);
+    return uq ? qd_fn2(ctx, QD_ATAN2, qd_int(ctx, 1), uq) : NULL;
+}
+
+/* q_k from tau = int w dq_k in one of the closed forms, else NULL. */
+static const qd_expr *closed(qd_ctx *ctx, const qd_hj_sep *s, const qd_expr *w, const qd_expr *tau) {
+    const qd_expr *abc[3];
+    const qd_expr *kappa = qd_simplify(ctx, qd_mul(ctx, w, qd_sqrt(ctx, s->p2)));
+    if (kappa && !qd_has(kappa, s->q) && quadratic(ctx, s->p2, s->q, abc))
+        return invert(ctx, abc, kappa, tau);
+    const qd_expr *r = closed_inverse(ctx, s, w, tau);
+    return r ? r : closed_cot(ctx, s, w, tau);
 }
 
 static const qd_expr *beta_symbol(qd_ctx *ctx, const qd_expr *q) {
@@ -98,9 +125,11 @@ static const qd_expr *beta_symbol(qd_ctx *ctx, const qd_expr *q) {
 static void solve_one(qd_ctx *ctx, qd_hj *h, size_t k) {
     qd_hj_sep *s = &h->sep[k];
     const qd_expr *vk = velocity(ctx, h, k), *beta = beta_symbol(ctx, s->q), *t = qd_time(ctx);
-    if (!vk || !beta || qd_is_zero(vk) || on_others(h, vk, k))
+    if (!vk || !beta || qd_is_zero(vk))
         return;
-    if (!qd_has(vk, s->q)) {                       /* uniform motion */
+    if (on_others(h, vk, k)) {
+        /* no clock of its own: only an orbit against a cyclic coordinate */
+    } else if (!qd_has(vk, s->q)) {                /* uniform motion */
         s->motion = qd_mul(ctx, vk, qd_sub(ctx, t, beta));
         s->clock = t;
     } else if ((s->motion = closed(ctx, s, qd_div(ctx, qd_int(ctx, 1), vk), qd_sub(ctx, t, beta)))) {

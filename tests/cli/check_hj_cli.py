@@ -44,7 +44,7 @@ CASES = {
     'hj_projectile': ('cyclic', 2, {'x': (-1, 1), 'y': (-1, 1)}),
     'hj_anisotropic': ('additive', 2, {'x': (-1, 1), 'y': (-1, 1)}),
     'kepler_polar': ('cyclic', 1, {'r': (0.5, 2), 'theta': (-3, 3)}),
-    'hj_kepler_spherical': ('cyclic + Liouville', 0,
+    'hj_kepler_spherical': ('cyclic + Liouville', 1,
                             {'r': (0.5, 2), 'theta': (0.3, 2.8), 'phi': (-3, 3)}),
     'hj_stark': ('cyclic + Liouville', 0, {'xi': (0.3, 2), 'eta': (0.3, 2), 'phi': (-3, 3)}),
     'hj_two_centres': ('Liouville', 0, {'s': (0.2, 2), 'u': (-3, 3)}),

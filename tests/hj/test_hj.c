@@ -492,7 +492,8 @@ static void launch(const fix *f) {
 }
 
 /* --solve: Desloge ch. 78 (q = (t - beta)^2 - E; the projectile's parabola;
- * the oscillator's sine), Kepler's conic r(theta) (Goldstein 10.8). */
+ * the oscillator's sine), Kepler's conic r(theta) (Goldstein 10.8) and the
+ * plane of the orbit theta(phi) in space. */
 static void test_solve(void **state) {
     (void)state;
     double lo2[] = {-1, -1}, hi2[] = {1, 1};
@@ -528,6 +529,14 @@ static void test_solve(void **state) {
     double lo[] = {0.5, -3}, hi[] = {2, 3};
     check_motion(&f, lo, hi, 784u, 1);
     assert_ptr_equal(f.h->sep[0].clock, f.h->sep[1].q); /* r(theta), the orbit */
+    unload(&f);
+    /* in space: the plane of the orbit, theta(phi) (Desloge ch. 78 eq. 59) */
+    f = load("coordinates r, theta, phi\nparameters m = 1.3, k = 4\n"
+             "particle m at (r*sin(theta)*cos(phi), r*sin(theta)*sin(phi), r*cos(theta))\n"
+             "V = -k/r\n");
+    double lo3[] = {0.5, 0.3, -3}, hi3[] = {2, 2.8, 3};
+    check_motion(&f, lo3, hi3, 787u, 1);
+    assert_ptr_equal(f.h->sep[1].clock, f.h->sep[2].q);
     unload(&f);
 }
 
