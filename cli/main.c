@@ -35,6 +35,8 @@ static const cli_cmd commands[] = {
      cli_cmd_stability, true},
     {"orbit", "FILE --ignore Q[,Q...] [--at ...]", "turning points, periods, apsides, conics",
      cli_cmd_orbit, true},
+    {"hj", "FILE [--format F] [--solve]", "the Hamilton-Jacobi equation, its separation and W",
+     cli_cmd_hj, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
