@@ -33,6 +33,8 @@ static const cli_cmd commands[] = {
      cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
      cli_cmd_stability, true},
+    {"hj", "FILE [--format F] [--solve]", "the Hamilton-Jacobi equation, its separation and W",
+     cli_cmd_hj, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

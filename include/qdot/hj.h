@@ -35,6 +35,7 @@ extern "C" {
 /* One separated coordinate. */
 typedef struct qd_hj_sep {
     const qd_expr *q;          /* the coordinate q_k */
+    const qd_expr *p;          /* its momentum: p_<q>, or the model's name for it */
     const qd_expr *constant;   /* the separation constant this equation introduces
                                   (a plain symbol: alpha_<q>, or the energy E) */
     /* F_k = 0 in q_k, p_k (the symbol p_<q>, or the model's momentum name)
