@@ -260,13 +260,31 @@ static qd_ham *hamiltonian(qd_ctx *ctx, const qd_model *m, qd_eom **e) {
     return qd_ham_derive(ctx, m, *e);
 }
 
+/* One degree of freedom is separated here; more by qd_hj_derive. */
+static qd_hj *separate(qd_ctx *ctx, const qd_model *m, const qd_ham *hm,
+                       const qd_action_opts *opts) {
+    const char *E = opts ? opts->energy_name : NULL;
+    if (hm->n == 1)
+        return qd__act_sep1(ctx, hm, E);
+    qd_hj_opts ho = {.energy_name = E};
+    return qd_hj_derive(ctx, m, &ho);
+}
+
+/* Freed by whoever made it: separate() made it here for one coordinate. */
+static void separation_free(qd_hj *h, const qd_ham *hm) {
+    if (hm && hm->n == 1)
+        qd__act_sep1_free(h);
+    else
+        qd_hj_free(h);
+}
+
 qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_expr *const *syms,
                        const double *vals, const qd_action_opts *opts, qd_action *out) {
     *out = (qd_action){0};
     qd_eom *e = NULL;
     qd_ham *hm = hamiltonian(ctx, m, &e);
-    qd_hj *h = hm ? qd__act_sep1(ctx, hm, opts ? opts->energy_name : NULL) : NULL;
-    bool *angle = h ? qd__calloc(ctx, h->n, sizeof *angle) : NULL;
+    qd_hj *h = hm ? separate(ctx, m, hm, opts) : NULL;
+    bool *angle = h ? qd__calloc(ctx, h->n + 1, sizeof *angle) : NULL;
     const qd_expr **s2 = NULL;
     double *v2 = NULL;
     qd_status st;
@@ -278,7 +296,7 @@ qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_ex
     qd__free(s2);
     qd__free(v2);
     qd__free(angle);
-    qd__act_sep1_free(h);
+    separation_free(h, hm);
     qd_ham_free(hm);
     qd_eom_free(e);
     return st;

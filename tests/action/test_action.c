@@ -392,6 +392,79 @@ static void test_kepler_spherical(void **state) {
     sf_free(s.f);
 }
 
+
+/* ---- the same through qd_hj_derive ---------------------------------------- */
+
+/* The models' separations found by qd_hj (not written out): the same
+ * Kepler identities and the anisotropic oscillator's 1 : 2. */
+static void test_kepler_via_hj(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, kepler_polar);
+    at_set(&s, "r", 1);
+    at_set(&s, "theta", 0.3);
+    at_set(&s, "r'", 0.4);
+    at_set(&s, "theta'", 1.5);
+    qd_action a;
+    run_at(&s, &a);
+    check_kepler(&a, 1.3, 4);
+    qd_action_free(&a);
+    sf_free(s.f);
+    at_load(&s, "coordinates r, theta, phi\nparameters m = 0.8, k = 2.5\n"
+                "particle m at r*(sin(theta)*cos(phi), sin(theta)*sin(phi), cos(theta))\n"
+                "V = -k/r\n");
+    at_set(&s, "r", 1.2);
+    at_set(&s, "theta", 1.1);
+    at_set(&s, "phi", 0.2);
+    at_set(&s, "r'", -0.3);
+    at_set(&s, "theta'", 0.9);
+    at_set(&s, "phi'", 1.1);
+    run_at(&s, &a);
+    check_kepler(&a, 0.8, 2.5);
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
+static void test_anisotropic_via_hj(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates x, y\nparameters m = 2, kx = 3, ky = 12\n"
+                "T = m/2*(x'^2 + y'^2)\nV = kx/2*x^2 + ky/2*y^2\n");
+    at_set(&s, "x", 0.3);
+    at_set(&s, "y", -0.2);
+    at_set(&s, "x'", 0.7);
+    at_set(&s, "y'", 0.4);
+    qd_action a;
+    run_at(&s, &a);
+    double wx = sqrt(3 / 2.0), wy = sqrt(12 / 2.0);
+    close_to("J_x", a.c[0].J, 2 * PI * (0.49 + 1.5 * 0.09) / wx, 1e-12);
+    close_to("J_y", a.c[1].J, 2 * PI * (0.16 + 6 * 0.04) / wy, 1e-12);
+    close_to("omega_x", a.c[0].omega, wx, 1e-11);
+    close_to("omega_y", a.c[1].omega, wy, 1e-11);
+    assert_int_equal(a.nratio, 1);
+    assert_int_equal(a.closed, QD_ACT_H_LINEAR);
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
+/* A coupled quartic does not separate: the error says so and names
+ * qdot poincare. */
+static void test_not_separable(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates x, y\nT = (x'^2 + y'^2)/2\nV = (x^2 + y^2)/2 + x^2*y^2\n");
+    at_set(&s, "x", 0.3);
+    at_set(&s, "y", 0.2);
+    at_set(&s, "x'", 0);
+    at_set(&s, "y'", 0);
+    qd_action a;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, NULL, &a), QD_ERR_ARG);
+    assert_int_equal(a.fail, QD_ACT_NOT_SEPARABLE);
+    assert_non_null(strstr(qd_ctx_diag(s.f->ctx)->hint, "qdot poincare"));
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_oscillator),
@@ -403,6 +476,9 @@ int main(void) {
         cmocka_unit_test(test_anisotropic),
         cmocka_unit_test(test_kepler_polar),
         cmocka_unit_test(test_kepler_spherical),
+        cmocka_unit_test(test_kepler_via_hj),
+        cmocka_unit_test(test_anisotropic_via_hj),
+        cmocka_unit_test(test_not_separable),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
