@@ -142,7 +142,7 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
         "logarithmically",
         "%s is at rest at an equilibrium (p^2 <= 0 about the state): J = 0"};
     static const char *const hint[] = {
-        NULL, "an unbounded coordinate has no action; take a state of lower energy",
+        NULL, "an unbounded motion has no cycle and so no action; where the potential has a well, a state of lower energy stays in it",
         "move the state off the separatrix: a libration just below or a rotation just above",
         "the small oscillations about it are `qdot modes`"};
     a->fail = why;
