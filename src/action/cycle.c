@@ -138,9 +138,9 @@ static double boundary(qd__act_fn *f, double in, double out) {
     return in;
 }
 
-/* The first boundary met going from q0 in direction dir: within span for
- * an angle (sampled), else by doubling steps out to 1e12 (|q0| + 1).
- * false when there is none. */
+/* The first boundary met going from q0 in direction dir: for an angle,
+ * sampled up to span, where p^2 is known to be negative (so one is met);
+ * else by doubling steps out to 1e12 (|q0| + 1), false when there is none. */
 static bool turning_point(qd__act_fn *f, double q0, int dir, bool angle, double span,
                           double *root) {
     enum { NSAMPLE = 256, NREFINE = 32, NDOUBLE = 200 };
@@ -215,14 +215,16 @@ static bool double_root(const double *d, double pmax) {
     return d[0] * d[0] <= 2 * fabs(d[1]) * separatrix_tol * pmax;
 }
 
-/* The smallest p^2 over a period: a grid, then golden sections about its
- * lowest point (p^2 of a rotation near the separatrix dips sharply). */
-static double p2_min(qd__act_fn *f, double lo, double hi) {
+/* The smallest p^2 over [lo, hi] and where: a grid, then golden sections
+ * about its lowest point (a narrow dip between two grid points, such as
+ * the forbidden gap beside a state near the top of a pendulum's swing,
+ * is next to the lowest grid value). */
+static double p2_min(qd__act_fn *f, double lo, double hi, double *where) {
     enum { NGRID = 512 };
     double h = (hi - lo) / NGRID, best = INFINITY, xb = lo;
     for (int i = 0; i <= NGRID; i++) {
         double v = qd__act_p2(f, lo + h * i);
-        if (v < best)
+        if (!(v >= best))
             best = v, xb = lo + h * i;
     }
     double a = xb - h, b = xb + h, g = (sqrt(5.0) - 1) / 2;
@@ -233,25 +235,40 @@ static double p2_min(qd__act_fn *f, double lo, double hi) {
         else
             a = c;
     }
-    return fmin(best, qd__act_p2(f, (a + b) / 2));
+    double v = qd__act_p2(f, (a + b) / 2);
+    *where = v < best ? (a + b) / 2 : xb;
+    return fmin(best, v);
+}
+
+/* An angle: it rotates when p^2 > 0 all round, else librates between the
+ * turning points on either side of the state, short of the lowest p^2. */
+static qd_act_fail angle_cycle(qd__act_fn *f, double q0, double s, double *lo, double *hi,
+                               qd__act_cycle *c) {
+    double xm, pmax = p2_max(f, s, s + 2 * PI), pmin = p2_min(f, s, s + 2 * PI, &xm);
+    if (!(pmin < -separatrix_tol * pmax)) {
+        *c = (qd__act_cycle){.kind = QD_ACT_ROTATION, .lo = q0 - PI, .hi = q0 + PI};
+        return pmin > separatrix_tol * pmax ? QD_ACT_OK : QD_ACT_SEPARATRIX;
+    }
+    xm = s + remainder(xm - s - PI, 2 * PI) + PI; /* in (s, s + 2 pi] */
+    if (!(xm > s))
+        xm += 2 * PI;
+    turning_point(f, s, +1, true, xm - s, hi);
+    turning_point(f, s, -1, true, s + 2 * PI - xm, lo);
+    return QD_ACT_OK;
 }
 
 qd_act_fail qd__act_cycle_find(qd__act_fn *f, double q0, bool angle, qd__act_cycle *c) {
     double s;
     if (!start_point(f, q0, &s))
         return QD_ACT_AT_REST;
-    double lo, hi;
-    /* an angle librates iff p^2 vanishes within a period of the state */
-    if (!turning_point(f, s, +1, angle, 2 * PI, &hi)) {
-        if (!angle)
-            return QD_ACT_UNBOUNDED;
-        *c = (qd__act_cycle){.kind = QD_ACT_ROTATION, .lo = q0 - PI, .hi = q0 + PI};
-        double pmax = p2_max(f, c->lo, c->hi);
-        return p2_min(f, c->lo, c->hi) > separatrix_tol * pmax
-                   ? QD_ACT_OK
-                   : QD_ACT_SEPARATRIX;
-    }
-    if (!turning_point(f, s, -1, angle, 2 * PI, &lo))
+    double lo = s, hi = s;
+    *c = (qd__act_cycle){.kind = QD_ACT_LIBRATION};
+    if (angle) {
+        qd_act_fail why = angle_cycle(f, q0, s, &lo, &hi, c);
+        if (why != QD_ACT_OK || c->kind == QD_ACT_ROTATION)
+            return why;
+    } else if (!turning_point(f, s, +1, false, 0, &hi) ||
+               !turning_point(f, s, -1, false, 0, &lo))
         return QD_ACT_UNBOUNDED;
     /* a cycle as narrow as the round-off of p^2 about a minimum of the
      * potential (width ~ sqrt(eps) there) is rest, not motion */

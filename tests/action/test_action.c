@@ -122,8 +122,11 @@ static void test_pendulum_libration(void **state) {
     double m = 1.1, l = 1.3, g = 9.81;
     at s;
     at_load(&s, pend);
-    double th0[] = {0.3, 1.0, 2.5, 3.0};
-    for (int i = 0; i < 4; i++) {
+    /* 3.14: the forbidden gap beyond the turning point (2 (pi - theta0)
+     * wide) is narrower than a sampling step; it was once jumped, and the
+     * libration taken for a rotation */
+    double th0[] = {0.3, 1.0, 2.5, 3.0, 3.14};
+    for (int i = 0; i < 5; i++) {
         s.n = 3;
         at_set(&s, "theta", th0[i]);
         at_set(&s, "theta'", 0);
@@ -134,7 +137,9 @@ static void test_pendulum_libration(void **state) {
         assert_int_equal(a.c[0].kind, QD_ACT_LIBRATION);
         close_to("pendulum J", a.c[0].J, 16 * m * sqrt(g * l * l * l) * (E - (1 - k * k) * K),
                  1e-11);
-        close_to("pendulum period", 2 * PI / a.c[0].omega, 4 * K * sqrt(l / g), 1e-11);
+        /* the period diverges logarithmically at the top: 5e-11 at 1.6e-3 rad from it */
+        close_to("pendulum period", 2 * PI / a.c[0].omega, 4 * K * sqrt(l / g),
+                 th0[i] > 3.1 ? 2e-10 : 1e-11);
         close_to("amplitude", a.c[0].hi, th0[i], 1e-13);
         /* not an oscillator: the frequency falls with the amplitude */
         assert_int_equal(a.closed, QD_ACT_H_NONE);
@@ -214,6 +219,12 @@ static void test_separatrix(void **state) {
     expect_fail(&s, QD_ACT_SEPARATRIX);
     s.n = 3;
     at_set(&s, "theta", PI);
+    at_set(&s, "theta'", 0);
+    expect_fail(&s, QD_ACT_SEPARATRIX);
+    /* at rest 2.7e-6 rad below the top: the energy is within 2e-12 of the
+     * separatrix's, inside the 1e-10 of docs/design.md */
+    s.n = 3;
+    at_set(&s, "theta", 3.14159);
     at_set(&s, "theta'", 0);
     expect_fail(&s, QD_ACT_SEPARATRIX);
     /* just inside and just outside it the actions are finite */
