@@ -45,8 +45,9 @@ qd_act_fail qd__act_cycle_find(qd__act_fn *f, double q0, bool angle, qd__act_cyc
 bool qd__act_integrals(qd__act_fn *f, const qd__act_cycle *c, double *J, double *dJ);
 
 /* Which of q[0..n) are angles: they enter the model (T, V, L, H, the
- * positions of particles and bodies) inside sin, cos or tan. */
-void qd__act_angles(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *const *q,
+ * positions of particles and bodies) inside sin, cos or tan.  false when
+ * out of memory (recorded in ctx). */
+bool qd__act_angles(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *const *q,
                     bool *angle);
 
 /* One degree of freedom separated without qd_hj: H = a(q) p^2 + c(q) = E

@@ -230,6 +230,8 @@ qd_status qd_action_of_sep(qd_ctx *ctx, const qd_hj *h, const bool *angle, size_
         st = qd_ctx_status(ctx);
     if (st == QD_OK)
         closed_form(ctx, h, out);
+    if (st == QD_OK && qd__ctx_nomem(ctx))
+        st = QD_ERR_NOMEM; /* the form withheld for want of memory is no answer */
     qd__free(cv);
     return st;
 }
@@ -288,10 +290,10 @@ qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_ex
     const qd_expr **s2 = NULL;
     double *v2 = NULL;
     qd_status st;
-    if (angle && with_momenta(ctx, hm, nvals, syms, vals, &s2, &v2)) {
-        qd__act_angles(ctx, m, hm->n, hm->q, angle);
+    if (angle && with_momenta(ctx, hm, nvals, syms, vals, &s2, &v2) &&
+        qd__act_angles(ctx, m, hm->n, hm->q, angle))
         st = qd_action_of_sep(ctx, h, angle, nvals + hm->n, s2, v2, opts, out);
-    } else
+    else
         st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
     qd__free(s2);
     qd__free(v2);

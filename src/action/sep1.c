@@ -91,12 +91,16 @@ typedef struct angle_walk {
     const qd_expr *const *q;
     bool *angle;
     qd_ptrmap seen;
+    bool nomem;
 } angle_walk;
 
 static void mark(angle_walk *w, const qd_expr *x) {
-    if (!x || qd_ptrmap_has(&w->seen, x))
+    if (!x || w->nomem || qd_ptrmap_has(&w->seen, x))
         return;
-    qd_ptrmap_put(&w->seen, x, (void *)x);
+    if (!qd_ptrmap_put(&w->seen, x, (void *)x)) {
+        w->nomem = true; /* an angle missed would read a rotation as unbounded */
+        return;
+    }
     if (qd_expr_kind(x) == QD_FUNC) {
         qd_func fn = qd_expr_func(x);
         if (fn == QD_SIN || fn == QD_COS || fn == QD_TAN) {
@@ -109,9 +113,9 @@ static void mark(angle_walk *w, const qd_expr *x) {
         mark(w, qd_expr_arg(x, i));
 }
 
-void qd__act_angles(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *const *q,
+bool qd__act_angles(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *const *q,
                     bool *angle) {
-    angle_walk w = {n, q, angle, QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
+    angle_walk w = {n, q, angle, QD_PTRMAP_AL(qd__ctx_allocator(ctx)), false};
     for (size_t k = 0; k < n; k++)
         angle[k] = false;
     mark(&w, qd_model_kinetic(m));
@@ -128,4 +132,7 @@ void qd__act_angles(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *con
             mark(&w, qd_model_body_rotation(m, i, k / 3, k % 3));
         }
     qd_ptrmap_free(&w.seen);
+    if (w.nomem)
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+    return !w.nomem;
 }
