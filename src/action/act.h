@@ -51,7 +51,8 @@ bool qd__act_angles(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *con
                     bool *angle);
 
 /* One degree of freedom separated without qd_hj: H = a(q) p^2 + c(q) = E
- * gives p^2 = (E - c)/a; the constant is E, its integral H with p = dL/dq'.
+ * gives p^2 = (E - c)/a; the constant is E, its integral H in q and p
+ * (qd_action_at puts the state's momenta beside its velocities).
  * NULL when H is not of that form (reason in ctx); freed by
  * qd__act_sep1_free. */
 qd_hj *qd__act_sep1(qd_ctx *ctx, const qd_ham *h, const char *energy_name);

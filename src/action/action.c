@@ -237,7 +237,8 @@ qd_status qd_action_of_sep(qd_ctx *ctx, const qd_hj *h, const bool *angle, size_
 }
 
 /* The momenta at the state from p = dL/dq' (an H model's q' = dH/dp
- * inverted), appended to the state: the integrals of an H model are in p. */
+ * inverted), appended to the state: the integrals of an H model are in p.
+ * A momentum the state gives already keeps its value. */
 static bool with_momenta(qd_ctx *ctx, const qd_ham *hm, size_t nvals,
                          const qd_expr *const *syms, const double *vals,
                          const qd_expr ***s2, double **v2) {
@@ -249,7 +250,14 @@ static bool with_momenta(qd_ctx *ctx, const qd_ham *hm, size_t nvals,
     memcpy(*v2, vals, nvals * sizeof *vals);
     for (size_t j = 0; j < hm->n; j++) {
         (*s2)[nvals + j] = hm->p[j];
-        if (hm->pdef[j] && qd_eval(ctx, hm->pdef[j], nvals, syms, vals, &(*v2)[nvals + j]) != QD_OK)
+        if (lookup(hm->p[j], nvals, syms, vals, &(*v2)[nvals + j]))
+            continue;
+        if (!hm->pdef[j]) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "H is not regular: the velocities do not give %s; "
+                         "give it with the state", qd_expr_name(hm->p[j]));
+            return false;
+        }
+        if (qd_eval(ctx, hm->pdef[j], nvals, syms, vals, &(*v2)[nvals + j]) != QD_OK)
             return false;
     }
     return true;

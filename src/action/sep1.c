@@ -12,16 +12,6 @@
 
 /* ---- the separation ------------------------------------------------------------ */
 
-/* The energy integral H(q, p(q, q')) in the model's velocities. */
-static const qd_expr *energy_integral(qd_ctx *ctx, const qd_ham *h) {
-    if (!h->pdef[0]) {
-        qd_ctx_error(ctx, QD_ERR_SINGULAR, "H is not regular in %s: the momentum is not a "
-                                           "function of the velocity", qd_expr_name(h->p[0]));
-        return NULL;
-    }
-    return qd_simplify(ctx, qd_subs(ctx, h->H, 1, &h->p[0], &h->pdef[0]));
-}
-
 /* p^2 = (E - c)/a from H = a p^2 + b p + c with b = 0. */
 static const qd_expr *p_squared(qd_ctx *ctx, const qd_ham *h, const qd_expr *E) {
     const qd_expr *p = h->p[0], *H = h->H;
@@ -60,7 +50,7 @@ qd_hj *qd__act_sep1(qd_ctx *ctx, const qd_ham *h, const char *energy_name) {
     if (!s || !sep || !cs || !E)
         goto fail;
     *sep = (qd_hj_sep){.q = h->q[0], .constant = E, .p2 = p_squared(ctx, h, E),
-                       .integral = energy_integral(ctx, h)};
+                       .integral = h->H};
     sep->equation = qd_sub(ctx, h->H, E);
     if (!sep->p2 || !sep->integral || !sep->equation)
         goto fail;

@@ -14,6 +14,10 @@ seed 002):
   - Kepler in polar coordinates (examples/kepler_polar.qd, through qd_hj):
     J_r + J_theta = 2 pi k sqrt(m/(-2E)), both frequencies 2 pi/T with
     T = 2 pi sqrt(m a^3/k), a = -k/(2E), the 1 : 1 degeneracy named;
+  - Kepler in spherical coordinates (a model written here): J_r + J_theta +
+    J_phi the same sum, the three frequencies equal, three 1 : 1 pairs;
+  - a model given by H takes its momenta in --at (or its velocities, q' =
+    dH/dp): the oscillator's J = 2 pi E/omega either way;
   - the anisotropic oscillator (examples/action_anisotropic.qd): J = 2 pi
     E_i/omega_i, no degeneracy at ky = 2 kx, 1 : 2 at ky = 4 kx;
   - adiabatic invariance (examples/action_pendulum_lengthening.qd,
@@ -130,6 +134,40 @@ def kepler(build):
           < 1e-9 * 2 * math.pi ** 2 * m * k * k, str(res["H_of_J"]))
 
 
+def kepler_spherical(build):
+    """In spherical coordinates: J_r + J_theta + J_phi, three equal frequencies."""
+    m, k = 0.8, 2.5
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "kepler3.qd"
+        model.write_text("coordinates r, theta, phi\nparameters m = 0.8, k = 2.5\n"
+                         "particle m at r*(sin(theta)*cos(phi), sin(theta)*sin(phi), "
+                         "cos(theta))\nV = -k/r\n")
+        res = action(build, model, "--at", "r=1.2, theta=1.1, r'=-0.3, theta'=0.9, phi'=1.1")
+    E = res["energy"]
+    a = -k / (2 * E)
+    close("spherical Kepler sum J", sum(res["actions"].values()),
+          2 * math.pi * k * math.sqrt(m / (-2 * E)), 1e-11)
+    for q, w in res["frequencies"].items():
+        close("spherical Kepler omega_" + q, w, 1 / math.sqrt(m * a ** 3 / k), 1e-10)
+    check("three 1 : 1", [d["ratio"] for d in res["degeneracies"]] == [[1, 1]] * 3,
+          str(res["degeneracies"]))
+
+
+def given_by_h(build):
+    """A model given by H takes its momenta in --at: the oscillator
+    H = p^2/(2m) + k q^2/2 at q = 1, p = 0.5 has E = 0.625, J = 2 pi E/omega."""
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "h.qd"
+        model.write_text("coordinates q\nmomenta p\nparameters m = 2, k = 8\n"
+                         "H = p^2/(2*m) + k*q^2/2\n")
+        by_p = action(build, model, "--at", "q=1, p=0.5")
+        by_v = action(build, model, "--at", "q=1, q'=0.25")
+    E = 0.5 ** 2 / (2 * 2) + 8 * 1 ** 2 / 2
+    close("H model energy", by_p["energy"], E, 1e-15)
+    close("H model J", by_p["actions"]["q"], 2 * math.pi * E / 2, 1e-12)
+    close("q' = p/m gives the same J", by_v["actions"]["q"], by_p["actions"]["q"], 1e-14)
+
+
 def anisotropic(build):
     res = action(build, EX / "action_anisotropic.qd")
     # x = 1 at rest: E_x = 1/2; y' = 1 at y = 0: E_y = 1/2
@@ -182,7 +220,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
-    for part in (pendulum, period_by_simulation, kepler, anisotropic, adiabatic, errors):
+    for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h, anisotropic,
+                 adiabatic, errors):
         try:
             part(args.build)
         except Exception as exc:  # a crash or bad JSON is a failure, named
