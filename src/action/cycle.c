@@ -117,10 +117,7 @@ double qd__act_p2(qd__act_fn *f, double x) {
 /* ---- the cycle ----------------------------------------------------------------- */
 
 /* Allowed: the motion may be at x.  NaN (outside p^2's domain) is not. */
-static bool allowed(qd__act_fn *f, double x) {
-    double v = qd__act_p2(f, x);
-    return isfinite(v) && v > 0;
-}
+static bool allowed(double v) { return isfinite(v) && v > 0; }
 
 /* The boundary of the allowed region between in (allowed) and out (not),
  * by bisection to the last representable point: the root p^2 = 0 as
@@ -130,7 +127,7 @@ static double boundary(qd__act_fn *f, double in, double out) {
         double mid = in + (out - in) / 2;
         if (mid == in || mid == out)
             break;
-        if (allowed(f, mid))
+        if (allowed(qd__act_p2(f, mid)))
             in = mid;
         else
             out = mid;
@@ -138,52 +135,107 @@ static double boundary(qd__act_fn *f, double in, double out) {
     return in;
 }
 
-/* The first boundary met going from q0 in direction dir: for an angle,
- * sampled up to span, where p^2 is known to be negative (so one is met);
- * else by doubling steps out to 1e12 (|q0| + 1), false when there is none. */
-static bool turning_point(qd__act_fn *f, double q0, int dir, bool angle, double span,
-                          double *root) {
-    enum { NSAMPLE = 256, NREFINE = 32, NDOUBLE = 200 };
-    double prev = q0, x = q0;
-    if (angle) {
-        for (int i = 1; i <= NSAMPLE; i++, prev = x) {
-            x = q0 + dir * span * i / NSAMPLE;
-            if (!allowed(f, x)) {
-                *root = boundary(f, prev, x);
-                return true;
-            }
-        }
-        return false;
+/* The bottom of a dip of p^2 in [a, b] by golden sections. */
+static double dip(qd__act_fn *f, double a, double b, double *where) {
+    const double g = 0.6180339887498949;
+    for (int it = 0; it < 80; it++) {
+        double c = b - g * (b - a), d = a + g * (b - a);
+        if (qd__act_p2(f, c) < qd__act_p2(f, d))
+            b = d;
+        else
+            a = c;
     }
-    double h = 1e-6 * fmax(fabs(q0), 1e-3), limit = 1e12 * (fabs(q0) + 1);
-    for (int i = 0; i < NDOUBLE && fabs(x - q0) < limit; i++, prev = x, h *= 2) {
-        x = q0 + dir * h;
-        if (allowed(f, x))
-            continue;
-        /* a step may jump over a narrow allowed gap: the first change from prev */
-        for (int k = 1; k <= NREFINE; k++) {
-            double y = prev + (x - prev) * k / NREFINE;
-            if (!allowed(f, y)) {
-                *root = boundary(f, prev + (x - prev) * (k - 1) / NREFINE, y);
-                return true;
-            }
-        }
-        *root = boundary(f, prev, x);
+    *where = (a + b) / 2;
+    return qd__act_p2(f, *where);
+}
+
+/* The path from the start s one way: an angle over one turn in 512 equal
+ * steps and one more (a dip at the end of the turn, which is the start's
+ * other side, needs a sample beyond it to be seen); another coordinate in steps growing by 2^(1/16) from 1e-6
+ * max(|s|, 1e-3), out to 1e12 (|s| + 1). */
+typedef struct path {
+    double s, h0;
+    int dir, n;
+    bool angle;
+} path;
+
+enum { TURN_STEPS = 512, PER_DOUBLING = 16 };
+
+static path path_make(double s, int dir, bool angle) {
+    path p = {s, 2 * PI / TURN_STEPS, dir, TURN_STEPS + 1, angle};
+    if (!angle) {
+        p.h0 = 1e-6 * fmax(fabs(s), 1e-3);
+        p.n = (int)(PER_DOUBLING * log2(1e12 * (fabs(s) + 1) / p.h0)) + 1;
+    }
+    return p;
+}
+
+static double path_x(const path *p, int i) {
+    double d = p->angle ? p->h0 * i : p->h0 * (exp2((double)i / PER_DOUBLING) - 1);
+    return p->s + p->dir * d;
+}
+
+/* The first point of the path where p^2 is not positive: at a sample, or
+ * at the bottom of a dip between samples (a sample below both neighbours,
+ * or the start when p^2 rises from it: the narrow forbidden gap beside a
+ * state near the top of a swing is narrower than a step).  true with
+ * *in (allowed) and *out (not) around it; *pmin the least p^2 met. */
+static bool first_forbidden(qd__act_fn *f, const path *p, double *in, double *out,
+                            double *pmin) {
+    double x0 = p->s, v0 = qd__act_p2(f, x0), x1 = path_x(p, 1), v1 = qd__act_p2(f, x1);
+    double xm, vm;
+    *pmin = v0;
+    if (!allowed(v1)) {
+        *in = x0, *out = x1;
         return true;
     }
+    if (v1 > v0 && !allowed(vm = dip(f, x0, x1, &xm))) {
+        *in = x0, *out = xm;
+        return true;
+    }
+    for (int i = 2; i <= p->n; i++) {
+        double x2 = path_x(p, i), v2 = qd__act_p2(f, x2);
+        *pmin = fmin(*pmin, v1);
+        if (!allowed(v2)) {
+            *in = x1, *out = x2;
+            return true;
+        }
+        if (v1 < v0 && v1 < v2) {
+            vm = dip(f, x0, x2, &xm);
+            *pmin = fmin(*pmin, vm);
+            if (!allowed(vm)) {
+                *in = (xm < x1) == (p->dir > 0) ? x0 : x1; /* the sample before it */
+                *out = xm;
+                return true;
+            }
+        }
+        x0 = x1, v0 = v1, x1 = x2, v1 = v2;
+    }
+    *pmin = fmin(*pmin, v1);
     return false;
+}
+
+/* The turning point met going from s in direction dir, or false. */
+static bool turning_point(qd__act_fn *f, double s, int dir, bool angle, double *root,
+                          double *pmin) {
+    path p = path_make(s, dir, angle);
+    double in, out;
+    if (!first_forbidden(f, &p, &in, &out, pmin))
+        return false;
+    *root = boundary(f, in, out);
+    return true;
 }
 
 /* A state on the boundary (at rest at a turning point, p^2 = 0 up to
  * round-off): the start moves into the allowed side. */
 static bool start_point(qd__act_fn *f, double q0, double *s) {
-    if (allowed(f, q0)) {
+    if (allowed(qd__act_p2(f, q0))) {
         *s = q0;
         return true;
     }
     for (double h = 1e-9 * fmax(fabs(q0), 1); h < 1e-2 * fmax(fabs(q0), 1); h *= 4)
         for (int dir = -1; dir <= 1; dir += 2)
-            if (allowed(f, q0 + dir * h)) {
+            if (allowed(qd__act_p2(f, q0 + dir * h))) {
                 *s = q0 + dir * h;
                 return true;
             }
@@ -215,60 +267,22 @@ static bool double_root(const double *d, double pmax) {
     return d[0] * d[0] <= 2 * fabs(d[1]) * separatrix_tol * pmax;
 }
 
-/* The smallest p^2 over [lo, hi] and where: a grid, then golden sections
- * about its lowest point (a narrow dip between two grid points, such as
- * the forbidden gap beside a state near the top of a pendulum's swing,
- * is next to the lowest grid value). */
-static double p2_min(qd__act_fn *f, double lo, double hi, double *where) {
-    enum { NGRID = 512 };
-    double h = (hi - lo) / NGRID, best = INFINITY, xb = lo;
-    for (int i = 0; i <= NGRID; i++) {
-        double v = qd__act_p2(f, lo + h * i);
-        if (!(v >= best))
-            best = v, xb = lo + h * i;
-    }
-    double a = xb - h, b = xb + h, g = (sqrt(5.0) - 1) / 2;
-    for (int it = 0; it < 80; it++) {
-        double c = b - g * (b - a), d = a + g * (b - a);
-        if (qd__act_p2(f, c) < qd__act_p2(f, d))
-            b = d;
-        else
-            a = c;
-    }
-    double v = qd__act_p2(f, (a + b) / 2);
-    *where = v < best ? (a + b) / 2 : xb;
-    return fmin(best, v);
-}
-
-/* An angle: it rotates when p^2 > 0 all round, else librates between the
- * turning points on either side of the state, short of the lowest p^2. */
-static qd_act_fail angle_cycle(qd__act_fn *f, double q0, double s, double *lo, double *hi,
-                               qd__act_cycle *c) {
-    double xm, pmax = p2_max(f, s, s + 2 * PI), pmin = p2_min(f, s, s + 2 * PI, &xm);
-    if (!(pmin < -separatrix_tol * pmax)) {
-        *c = (qd__act_cycle){.kind = QD_ACT_ROTATION, .lo = q0 - PI, .hi = q0 + PI};
-        return pmin > separatrix_tol * pmax ? QD_ACT_OK : QD_ACT_SEPARATRIX;
-    }
-    xm = s + remainder(xm - s - PI, 2 * PI) + PI; /* in (s, s + 2 pi] */
-    if (!(xm > s))
-        xm += 2 * PI;
-    turning_point(f, s, +1, true, xm - s, hi);
-    turning_point(f, s, -1, true, s + 2 * PI - xm, lo);
-    return QD_ACT_OK;
+/* An angle whose p^2 stays positive over a whole turn rotates; its least
+ * p^2 within tol of zero is the separatrix. */
+static qd_act_fail rotation(qd__act_fn *f, double q0, double pmin, qd__act_cycle *c) {
+    *c = (qd__act_cycle){.kind = QD_ACT_ROTATION, .lo = q0 - PI, .hi = q0 + PI};
+    return pmin > separatrix_tol * p2_max(f, c->lo, c->hi) ? QD_ACT_OK : QD_ACT_SEPARATRIX;
 }
 
 qd_act_fail qd__act_cycle_find(qd__act_fn *f, double q0, bool angle, qd__act_cycle *c) {
-    double s;
+    double s, lo, hi, pmin;
+    *c = (qd__act_cycle){.kind = QD_ACT_LIBRATION};
     if (!start_point(f, q0, &s))
         return QD_ACT_AT_REST;
-    double lo = s, hi = s;
-    *c = (qd__act_cycle){.kind = QD_ACT_LIBRATION};
-    if (angle) {
-        qd_act_fail why = angle_cycle(f, q0, s, &lo, &hi, c);
-        if (why != QD_ACT_OK || c->kind == QD_ACT_ROTATION)
-            return why;
-    } else if (!turning_point(f, s, +1, false, 0, &hi) ||
-               !turning_point(f, s, -1, false, 0, &lo))
+    /* an angle librates iff p^2 vanishes within a turn of the state */
+    if (!turning_point(f, s, +1, angle, &hi, &pmin))
+        return angle ? rotation(f, q0, pmin, c) : QD_ACT_UNBOUNDED;
+    if (!turning_point(f, s, -1, angle, &lo, &pmin))
         return QD_ACT_UNBOUNDED;
     /* a cycle as narrow as the round-off of p^2 about a minimum of the
      * potential (width ~ sqrt(eps) there) is rest, not motion */

@@ -256,6 +256,35 @@ static void test_unbounded(void **state) {
     sf_free(s.f);
 }
 
+/* A double well V = c (x^2 - 1)^2 with E = 0.999 c just below the barrier:
+ * the motion stays in the well it starts in, between the roots of
+ * x^2 = 1 -+ sqrt(E/c); the barrier, 0.045 wide, is narrower than the
+ * search's steps were once and was jumped (a libration over both wells).
+ * The period is measured by qd_sim (the return to x' = 0, x < -1). */
+static void test_double_well(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates x\nparameters m = 1, c = 1\nT = m/2*x'^2\nV = c*(x^2 - 1)^2\n"
+                "initial x = -1, x' = sqrt(2*0.999)\n");
+    at_set(&s, "x", -1);
+    at_set(&s, "x'", sqrt(2 * 0.999));
+    qd_action a;
+    run_at(&s, &a);
+    close_to("outer turning point", a.c[0].lo, -sqrt(1 + sqrt(0.999)), 1e-12);
+    close_to("inner turning point", a.c[0].hi, -sqrt(1 - sqrt(0.999)), 1e-9);
+    sim_fix *f = s.f;
+    const qd_expr *x = qd_lookup(f->ctx, "x"), *xd = qd_jet(f->ctx, x, 1);
+    const qd_expr *outer = qd_neg(f->ctx, qd_add(f->ctx, x, qd_int(f->ctx, 1))); /* x < -1 */
+    assert_int_equal(qd_sim_add_event(f->s, xd, 1, &outer, false), QD_OK);
+    double T = 2 * PI / a.c[0].omega;
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 2.5 * T, 0, 1e-14, false), QD_OK);
+    assert_true(f->nev >= 2);
+    /* from one visit of the outer turning point to the next */
+    close_to("double-well period by simulation", f->ev_t[1] - f->ev_t[0], T, 1e-9);
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
 /* ---- separations written out ----------------------------------------------- */
 
 typedef struct hand {
@@ -484,6 +513,7 @@ int main(void) {
         cmocka_unit_test(test_pendulum_rotation),
         cmocka_unit_test(test_separatrix),
         cmocka_unit_test(test_unbounded),
+        cmocka_unit_test(test_double_well),
         cmocka_unit_test(test_anisotropic),
         cmocka_unit_test(test_kepler_polar),
         cmocka_unit_test(test_kepler_spherical),
