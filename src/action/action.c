@@ -190,9 +190,17 @@ static qd_status setup(qd_ctx *ctx, const qd_hj *h, qd_action *a) {
                            "of section with `qdot poincare`");
         return QD_ERR_ARG;
     }
-    if (h->nconst != h->n || !h->energy || !h->time_independent) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "actions need a time-independent H and one constant per "
-                                      "coordinate, the energy among them (here %zu for %zu)",
+    if (!h->time_independent) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "H depends on t: the motion has no fixed cycle to take "
+                                      "an action over");
+        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, NULL, QD_REASON_NONE,
+                           "under a slow change J is an adiabatic invariant: take the system "
+                           "frozen at one time, its parameters given there with --set");
+        return QD_ERR_ARG;
+    }
+    if (h->nconst != h->n || !h->energy) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "actions need one separation constant per coordinate, "
+                                      "the energy among them (here %zu for %zu)",
                      h->nconst, h->n);
         return QD_ERR_ARG;
     }

@@ -37,10 +37,16 @@ static const qd_expr *p_squared(qd_ctx *ctx, const qd_ham *h, const qd_expr *E) 
 }
 
 qd_hj *qd__act_sep1(qd_ctx *ctx, const qd_ham *h, const char *energy_name) {
-    if (h->n != 1 || qd_has(h->H, qd_time(ctx))) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "one time-independent degree of freedom is separated "
-                                      "here; this system has %zu%s", h->n,
-                     h->n == 1 ? " and H depends on t" : "");
+    if (h->n != 1) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "one degree of freedom is separated here, not %zu", h->n);
+        return NULL;
+    }
+    if (qd_has(h->H, qd_time(ctx))) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "H depends on t: the motion has no fixed cycle to take "
+                                      "an action over");
+        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, NULL, QD_REASON_NONE,
+                           "under a slow change J is an adiabatic invariant: take the system "
+                           "frozen at one time, its parameters given there with --set");
         return NULL;
     }
     qd_hj *s = qd__calloc(ctx, 1, sizeof *s);

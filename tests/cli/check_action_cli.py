@@ -18,6 +18,8 @@ seed 002):
     J_phi the same sum, the three frequencies equal, three 1 : 1 pairs;
   - a model given by H takes its momenta in --at (or its velocities, q' =
     dH/dp): the oscillator's J = 2 pi E/omega either way;
+  - the quartic oscillator V = k x^4: J by the Beta function, omega from
+    H homogeneous of degree 4/3 in J (no closed form claimed);
   - the anisotropic oscillator (examples/action_anisotropic.qd): J = 2 pi
     E_i/omega_i, no degeneracy at ky = 2 kx, 1 : 2 at ky = 4 kx;
   - adiabatic invariance (examples/action_pendulum_lengthening.qd,
@@ -26,7 +28,8 @@ seed 002):
     1e-3 while its energy E + m g l changes by more than 10%;
   - errors, exit 2: a separatrix (E = m g l), rest at the bottom, an unbounded
     coordinate (Desloge ch. 78's H = p^2 - q), a non-separable quartic
-    coupling (the hint names qdot poincare), a bad option.
+    coupling (the hint names qdot poincare), a bad option, H depending on t
+    (the hint names the adiabatic invariant).
 Prints "N passed, N failed"; exit 1 on failure.
 """
 import argparse
@@ -56,7 +59,7 @@ def close(name, got, want, tol):
 
 
 def qdot(build, *args):
-    return subprocess.run([str(Path(build) / "qdot")] + [str(a) for a in args],
+    return subprocess.run([str(Path(build).resolve() / "qdot")] + [str(a) for a in args],
                           capture_output=True, text=True, timeout=120)
 
 
@@ -168,6 +171,23 @@ def given_by_h(build):
     close("q' = p/m gives the same J", by_v["actions"]["q"], by_p["actions"]["q"], 1e-14)
 
 
+def quartic(build):
+    """V = k x^4: J = 4 sqrt(2 m E) A (1/4) B(1/4, 3/2), A = (E/k)^(1/4), and,
+    H being homogeneous of degree 4/3 in J, omega = 2 pi (4/3) E / J."""
+    m, k = 1.5, 0.7
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "quartic.qd"
+        model.write_text("coordinates x\nparameters m = 1.5, k = 0.7\n"
+                         "T = m/2*x'^2\nV = k*x^4\n")
+        res = action(build, model, "--at", "x=0.4, x'=1.3")
+    E = m / 2 * 1.3 ** 2 + k * 0.4 ** 4
+    beta = math.gamma(0.25) * math.gamma(1.5) / math.gamma(1.75)
+    J = 4 * math.sqrt(2 * m * E) * (E / k) ** 0.25 * beta / 4
+    close("quartic J", res["actions"]["x"], J, 1e-12)
+    close("quartic omega", res["frequencies"]["x"], 2 * math.pi * 4 / 3 * E / J, 1e-11)
+    check("quartic H(J) not linear", res["H_of_J"] is None, str(res["H_of_J"]))
+
+
 def anisotropic(build):
     res = action(build, EX / "action_anisotropic.qd")
     # x = 1 at rest: E_x = 1/2; y' = 1 at y = 0: E_y = 1/2
@@ -209,6 +229,7 @@ def errors(build):
             ("unbounded", [d78, "--at", "q=1, q'=0.5"], "unbounded"),
             ("not separable", [quartic, "--at", "x=0.3, y=0.2"], "qdot poincare"),
             ("bad option", [EX / "action_pendulum.qd", "--bogus"], "usage"),
+            ("time-dependent H", [EX / "action_pendulum_lengthening.qd"], "adiabatic invariant"),
         ]
         for name, args, words in cases:
             r = qdot(build, "action", *args)
@@ -220,8 +241,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
-    for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h, anisotropic,
-                 adiabatic, errors):
+    for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h, quartic,
+                 anisotropic, adiabatic, errors):
         try:
             part(args.build)
         except Exception as exc:  # a crash or bad JSON is a failure, named
