@@ -26,7 +26,6 @@ typedef struct hj_run {
     const char *file, *energy, *sets[MAX_SETS];
     size_t nsets;
     bool solve;
-    const qd_expr **motion; /* n, with --solve: q(t) or the orbit, NULL where not closed */
 } hj_run;
 
 static const char usage_text[] =
@@ -76,17 +75,42 @@ static void line(const hj_run *r, qd_buf *b, const char *lhs, const qd_expr *rhs
     qd_buf_puts(b, eol(r));
 }
 
+/* "  lhs = rhs" with lhs an expression too (p_x^2 is p_{x}^{2} in LaTeX). */
+static void line_x(const hj_run *r, qd_buf *b, const qd_expr *lhs, const qd_expr *rhs) {
+    qd_buf_puts(b, "  ");
+    put(r, b, lhs);
+    qd_buf_puts(b, " = ");
+    put(r, b, rhs);
+    qd_buf_puts(b, eol(r));
+}
+
 static void write_sep(const hj_run *r, qd_buf *b, const qd_hj_sep *s, const char *cmt) {
     const char *q = qd_expr_name(s->q);
     qd_buf_printf(b, "%s%s: constant %s%s\n", cmt, q, qd_expr_name(s->constant),
                   s->cyclic ? " (cyclic: its momentum is constant)" : "");
-    qd_buf_puts(b, "  ");
-    put(r, b, s->equation);
-    qd_buf_printf(b, " = 0%s", eol(r));
-    qd_buf_printf(b, "  %s^2 = ", qd_expr_name(s->p));
-    put(r, b, s->p2);
-    qd_buf_puts(b, eol(r));
-    line(r, b, qd_expr_name(s->constant), s->integral);
+    line_x(r, b, s->equation, qd_int(r->ctx, 0));
+    line_x(r, b, qd_powi(r->ctx, s->p, 2), s->p2);
+    line_x(r, b, s->constant, s->integral);
+}
+
+/* --solve: q_k(t), or the orbit q_k(q_j), where the quadrature closes. */
+static void write_motion(const hj_run *r, qd_buf *b, const char *cmt) {
+    const qd_hj *h = r->h;
+    qd_buf_printf(b, "%smotion from dW/dalpha = beta (beta_q: the constant of integration)\n", cmt);
+    for (size_t k = 0; k < h->n; k++) {
+        const qd_hj_sep *s = &h->sep[k];
+        if (!s->motion) {
+            qd_buf_printf(b, "%s  %s: no closed form\n", cmt, qd_expr_name(s->q));
+            continue;
+        }
+        qd_buf_puts(b, "  ");
+        put(r, b, s->q);
+        qd_buf_puts(b, "(");
+        put(r, b, s->clock);
+        qd_buf_puts(b, ") = ");
+        put(r, b, s->motion);
+        qd_buf_puts(b, eol(r));
+    }
 }
 
 static void write_lines(const hj_run *r, qd_buf *b) {
@@ -107,12 +131,8 @@ static void write_lines(const hj_run *r, qd_buf *b) {
         write_sep(r, b, &h->sep[k], cmt);
     qd_buf_printf(b, "%scomplete integral (p = +sqrt(p^2) on each branch)\n", cmt);
     line(r, b, "W", h->W);
-    for (size_t k = 0; r->motion && k < h->n; k++) {
-        if (k == 0)
-            qd_buf_printf(b, "%smotion from dW/dalpha = beta\n", cmt);
-        if (r->motion[k])
-            line(r, b, qd_expr_name(h->sep[k].q), r->motion[k]);
-    }
+    if (r->solve)
+        write_motion(r, b, cmt);
 }
 
 static void write_json(const hj_run *r, qd_buf *b) {
@@ -156,9 +176,14 @@ static void write_json(const hj_run *r, qd_buf *b) {
         cli_json_bool(&j, s->cyclic);
         cli_json_key(&j, "integral");
         cli_json_expr(&j, r->ctx, s->integral);
-        if (r->motion) {
+        if (r->solve) {
             cli_json_key(&j, "motion");
-            cli_json_expr(&j, r->ctx, r->motion[k]);
+            cli_json_expr(&j, r->ctx, s->motion);
+            cli_json_key(&j, "clock");
+            if (s->clock)
+                cli_json_string(&j, qd_expr_name(s->clock));
+            else
+                cli_json_null(&j);
         }
         cli_json_end_object(&j);
     }
@@ -195,6 +220,28 @@ static void sympy_list(const hj_run *r, qd_buf *b, const char *name, size_t off)
     qd_buf_puts(b, "]\n");
 }
 
+/* motion = {coordinate: (clock, q)} where --solve closed the quadrature. */
+static void write_sympy_motion(const hj_run *r, qd_buf *b) {
+    for (size_t k = 0; k < r->h->n; k++)
+        if (r->h->sep[k].beta)
+            qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(r->h->sep[k].beta),
+                          qd_expr_name(r->h->sep[k].beta));
+    qd_buf_printf(b, "%s = {", cli_script_name(r->mf.model, "motion").s);
+    const char *sep = "";
+    for (size_t k = 0; k < r->h->n; k++) {
+        const qd_hj_sep *s = &r->h->sep[k];
+        if (!s->motion)
+            continue;
+        qd_buf_printf(b, "%s'%s': (", sep, qd_expr_name(s->q));
+        put(r, b, s->clock);
+        qd_buf_puts(b, ", ");
+        put(r, b, s->motion);
+        qd_buf_puts(b, ")");
+        sep = ", ";
+    }
+    qd_buf_puts(b, "}\n");
+}
+
 /* Python defining H, HJ (the equation), W, p2 and integrals (lists in
  * coordinate order), constants; integral(f, q) is SymPy's Integral. */
 static void write_sympy(const hj_run *r, qd_buf *b) {
@@ -214,15 +261,18 @@ static void write_sympy(const hj_run *r, qd_buf *b) {
     for (size_t i = 0; i < ns && i < 64; i++)
         if (qd_symbol_role(syms[i]) == QD_ROLE_PLAIN)
             qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(syms[i]), qd_expr_name(syms[i]));
-    for (size_t k = 0; k < h->nconst; k++)
-        qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(h->constants[k]),
-                      qd_expr_name(h->constants[k]));
+    for (size_t k = 0; k < h->nconst; k++) /* E stays SymPy's e: the printer writes Symbol('E') */
+        if (strcmp(qd_expr_name(h->constants[k]), "E"))
+            qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(h->constants[k]),
+                          qd_expr_name(h->constants[k]));
     sympy_assign(r, b, "H", h->H);
     sympy_assign(r, b, "HJ", h->equation);
     qd_buf_printf(b, "separable = %s\n", h->separable ? "True" : "False");
     sympy_assign(r, b, "W", h->W);
     sympy_list(r, b, "p2", offsetof(qd_hj_sep, p2));
     sympy_list(r, b, "integrals", offsetof(qd_hj_sep, integral));
+    if (r->solve)
+        write_sympy_motion(r, b);
     qd_buf_printf(b, "# %s\n", h->why);
 }
 
@@ -244,11 +294,9 @@ static int run(hj_run *r) {
     qd_hj_opts opts = {.energy_name = r->energy};
     if (!(r->h = qd_hj_derive(r->ctx, r->mf.model, &opts)))
         return cli_eom_derive_error(r->ctx, &r->mf);
-    if (r->solve && r->h->separable) {
-        r->motion = calloc(r->h->n, sizeof *r->motion);
-        if (!r->motion)
-            return QD_EXIT_FAIL;
-    }
+    r->solve = r->solve && r->h->separable;
+    if (r->solve && qd_hj_solve(r->ctx, r->h) != QD_OK)
+        return cli_diag_ctx(r->ctx);
     return emit(r);
 }
 
@@ -262,7 +310,6 @@ int cli_cmd_hj(int argc, char **argv) {
         return QD_EXIT_FAIL;
     }
     rc = run(&r);
-    free(r.motion);
     qd_hj_free(r.h);
     cli_model_file_free(&r.mf);
     qd_ctx_free(r.ctx);

@@ -49,6 +49,12 @@ typedef struct qd_hj_sep {
      * velocities (q') for a Lagrangian model, or q and p for a model given
      * by H; evaluating it at a state gives the constant's value there */
     const qd_expr *integral;
+    /* filled by qd_hj_solve where the quadrature closes: q_k = motion, a
+     * function of clock - beta_<q>, clock the time t or (an orbit) a cyclic
+     * coordinate; NULL otherwise */
+    const qd_expr *motion;
+    const qd_expr *clock;
+    const qd_expr *beta;       /* the phase constant beta_<q> in motion */
 } qd_hj_sep;
 
 typedef struct qd_hj {
@@ -78,6 +84,18 @@ typedef struct qd_hj_opts {
  * the obstruction in why.  NULL on failure (reason in ctx). */
 QD_API qd_hj *qd_hj_derive(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts);
 QD_API void qd_hj_free(qd_hj *h);
+
+/* The motion from dW/dalpha = beta where the quadratures close (Desloge
+ * ch. 78): for each coordinate q_k, dq_k/dt = dH/dp_k with p = sqrt(p2)
+ * (cyclic momenta their constants); when that is a function of q_k alone,
+ * t - beta_k = int dq_k / (dH/dp_k), and when it is not, the orbit against a
+ * cyclic coordinate q_j, q_j - beta_k = int (dH/dp_j)/(dH/dp_k) dq_k.  The
+ * integrals closed and inverted: a constant velocity, kappa/sqrt(a + b q),
+ * kappa/sqrt(a + b q + c q^2) with c < 0 (the oscillators, the projectile),
+ * and kappa/(q^2 sqrt(a + b/q + c/q^2)) (Kepler's conic, u = 1/q).  Fills
+ * sep[k].motion, clock and beta; the other coordinates keep NULL.  h must be
+ * separable (QD_ERR_ARG otherwise). */
+QD_API qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h);
 
 #ifdef __cplusplus
 }

@@ -162,12 +162,38 @@ static qd_status fill(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts, qd
     if (!(h->W = complete_integral(ctx, h)))
         return QD_ERR_NOMEM;
     integrals_in_velocities(ctx, h, in);
-    snprintf(h->why, sizeof h->why, "%s: H = E splits into one equation per coordinate", h->form);
+    if (h->n == 1)
+        snprintf(h->why, sizeof h->why, "one coordinate: H = E is its equation");
+    else
+        snprintf(h->why, sizeof h->why, "%s: H = E splits into one equation per coordinate",
+                 h->form);
     return qd_ctx_status(ctx);
 }
 
+/* Generalized forces or dissipation make the motion non-Hamiltonian: the
+ * HJ equation of H alone would describe another system. */
+static bool conservative(qd_ctx *ctx, const qd_model *m) {
+    const qd_expr *D = qd_model_dissipation(m);
+    if (D && !qd_is_zero(D)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the Hamilton-Jacobi equation needs a Hamiltonian "
+                     "system: the model has a dissipation function");
+        qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, 0, "dissipation", QD_REASON_NONE, NULL);
+        return false;
+    }
+    for (size_t i = 0; i < qd_model_ncoords(m); i++)
+        if (!qd_is_zero(qd_model_force(m, i))) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "the Hamilton-Jacobi equation needs a Hamiltonian "
+                         "system: the model has a generalized force on %s",
+                         qd_expr_name(qd_model_coord(m, i)));
+            qd_ctx_error_about(ctx, QD_SUBJECT_COORD, i, NULL, QD_REASON_NONE,
+                               "write the force as a potential, or drop it");
+            return false;
+        }
+    return true;
+}
+
 qd_hj *qd_hj_derive(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts) {
-    if (!ctx || !m)
+    if (!ctx || !m || !conservative(ctx, m))
         return NULL;
     if (qd_model_nconstraints(m)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the Hamilton-Jacobi equation needs independent "

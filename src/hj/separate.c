@@ -7,9 +7,9 @@
  * q_k: either q_k is cyclic (F has no q_k: p_k = alpha_k), or some factor f
  * (1, or a denominator of F's terms) makes
  *
- *     f F = c (G_k(q_k, p_k) + R)          (c and R free of q_k and p_k)
+ *     f F = c G_k(q_k, p_k) + R          (c and R free of q_k and p_k)
  *
- * so that G_k = alpha_k is an equation of q_k alone and F' = R + alpha_k = 0
+ * so that G_k = alpha_k is an equation of q_k alone and F' = c alpha_k + R = 0
  * is left for the others.  The last coordinate keeps the energy E as its
  * constant.  f = 1 and c = 1 is additive separation; any other f or c is the
  * Liouville form when one such step does it all (spherical and polar
@@ -69,7 +69,7 @@ static bool split_term(const qd__hj_sep_state *s, const qd_expr *t, size_t k,
     return *c && *own;
 }
 
-/* G = c (group + R) on q_k: group the terms on q_k, R the rest over c. */
+/* G = c group + rest on q_k: group the terms on q_k, rest the others. */
 static bool split_on(const qd__hj_sep_state *s, const qd_expr *G, size_t k,
                      const qd_expr **c, const qd_expr **group, const qd_expr **rest) {
     qd_ctx *ctx = s->ctx;
@@ -89,7 +89,6 @@ static bool split_on(const qd__hj_sep_state *s, const qd_expr *G, size_t k,
     }
     if (!*c || !qd_has(*group, s->p[k]))
         return false;
-    *rest = qd_expand(ctx, qd_div(ctx, *rest, *c));
     return *rest && *group;
 }
 
@@ -204,7 +203,10 @@ static qd_status peel_cyclic(qd__hj_sep_state *s, size_t k) {
     return s->F ? st : QD_ERR_NOMEM;
 }
 
-static qd_status peel_group(qd__hj_sep_state *s, size_t k, const qd_expr *group,
+/* f F = c G_k + rest with G_k = alpha_k: the others are left with
+ * c alpha_k + rest = 0 (not divided by c, which would bring c's coordinates
+ * into every term: Kepler's r^2 sin(theta)^2). */
+static qd_status peel_group(qd__hj_sep_state *s, size_t k, const qd_expr *c, const qd_expr *group,
                             const qd_expr *rest, bool plain) {
     qd_ctx *ctx = s->ctx;
     const qd_expr *a = constant_symbol(ctx, "alpha_", qd_expr_name(s->q[k]));
@@ -213,7 +215,7 @@ static qd_status peel_group(qd__hj_sep_state *s, size_t k, const qd_expr *group,
     qd_status st = record(s, k, a, qd_sub(ctx, group, a), as_integral(s, group), false);
     if (st != QD_OK)
         return st;
-    s->F = qd_add(ctx, rest, a);
+    s->F = qd_expand(ctx, qd_add(ctx, rest, qd_mul(ctx, c, a)));
     if (plain)
         s->used |= USED_ADDITIVE;
     else
@@ -230,19 +232,22 @@ static const qd_expr *times(qd_ctx *ctx, const qd_expr *f, const qd_expr *F) {
     return sum;
 }
 
-/* One coordinate isolated by some candidate factor; false when none is. */
-static bool try_groups(qd__hj_sep_state *s, qd_status *st) {
+/* One coordinate isolated by some candidate factor; false when none is.
+ * Groups free of E first (with_energy false), so that the energy stays in
+ * the equation of the last coordinate and each constant has its own. */
+static bool try_groups(qd__hj_sep_state *s, bool with_energy, qd_status *st) {
     const qd_expr *cand[MAX_CANDIDATES];
     size_t nc = candidates(s, cand);
     for (size_t i = 0; i < nc; i++) {
         const qd_expr *G = times(s->ctx, cand[i], s->F);
         for (size_t k = 0; G && k < s->h->n; k++) {
             const qd_expr *c, *group, *rest;
-            if (!s->left[k] || !split_on(s, G, k, &c, &group, &rest))
+            if (!s->left[k] || !split_on(s, G, k, &c, &group, &rest) ||
+                (!with_energy && qd_has(group, s->h->energy)))
                 continue;
             if (!solve_p2(s->ctx, group, s->p[k]))
                 continue;
-            *st = peel_group(s, k, group, rest, i == 0 && qd_is_one(c));
+            *st = peel_group(s, k, c, group, rest, i == 0 && qd_is_one(c));
             return true;
         }
     }
@@ -304,7 +309,7 @@ qd_status qd__hj_separate(qd__hj_sep_state *s) {
             st = peel_cyclic(s, k);
             continue;
         }
-        if (!try_groups(s, &st)) {
+        if (!try_groups(s, false, &st) && !try_groups(s, true, &st)) {
             obstruction(s);
             return qd__ctx_nomem(s->ctx) ? QD_ERR_NOMEM : QD_OK;
         }

@@ -303,6 +303,24 @@ static void test_two_centres(void **state) {
     unload(&f);
 }
 
+/* Landau-Lifshitz §48 eq. (48.8): U = a(r) + b(theta)/r^2 +
+ * c(phi)/(r^2 sin^2), two factors in turn (Staeckel), and the energy kept
+ * for r, the coordinate whose equation has it. */
+static void test_staeckel(void **state) {
+    (void)state;
+    fix f = load("coordinates r, theta, phi\nparameters m = 1, k = 1, b = 0.3, d = 0.2\n"
+                 "momenta p_r, p_theta, p_phi\n"
+                 "H = p_r^2/(2*m) + (p_theta^2 + p_phi^2/sin(theta)^2)/(2*m*r^2) - k/r"
+                 " + b*cos(theta)/r^2 + d*sin(phi)^2/(r^2*sin(theta)^2)\n");
+    check_form(&f, "Staeckel");
+    assert_same(&f, sep_of(&f, "phi"), "2*m*(alpha_phi - d*sin(phi)^2)");
+    assert_same(&f, sep_of(&f, "theta"), "2*m*(alpha_theta - b*cos(theta) - alpha_phi/sin(theta)^2)");
+    assert_same(&f, sep_of(&f, "r"), "2*m*(E + k/r - alpha_theta/r^2)");
+    double lo[] = {0.5, 0.3, -3}, hi[] = {2, 2.8, 3};
+    check_solution(&f, lo, hi, 488u);
+    unload(&f);
+}
+
 /* Not separable: the obstruction is the coupling term. */
 static void test_coupled(void **state) {
     (void)state;
@@ -342,12 +360,17 @@ static void expect_error(const char *text, qd_status st, const char *words) {
 }
 
 /* A constrained model needs independent coordinates; L linear in the
- * velocities has no Legendre transform. */
+ * velocities has no Legendre transform; forces and dissipation leave no
+ * Hamiltonian system to solve. */
 static void test_errors(void **state) {
     (void)state;
     expect_error("coordinates x, y\nparameters m = 1\nparticle m at (x, y)\n"
                  "constraint c: x^2 + y^2 = 1\n", QD_ERR_ARG, "independent coordinates");
     expect_error("coordinates x, y\nL = x*y' - x^2/2 - y^2/2\n", QD_ERR_SINGULAR, "");
+    expect_error("coordinates x\nparameters m = 1, k = 1, b = 0.1\nT = m*x'^2/2\nV = k*x^2/2\n"
+                 "dissipation = b*x'^2/2\n", QD_ERR_ARG, "dissipation");
+    expect_error("coordinates x\nparameters m = 1, F = 0.1\nT = m*x'^2/2\nQ[x] = F*cos(t)\n",
+                 QD_ERR_ARG, "generalized force on x");
 }
 
 /* The energy constant takes the name asked for. */
@@ -365,6 +388,97 @@ static void test_energy_name(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* (dq/dclock)^2 = (v_k/v_clock)^2 along q_k = motion: the motion solves
+ * Hamilton's equations dq/dt = dH/dp with p = sqrt(p2) (an orbit: the ratio
+ * of two of them), at random constants, phases and clock values. */
+static void check_motion(const fix *f, const double *lo, const double *hi, unsigned seed,
+                         size_t nclosed) {
+    const qd_hj *h = f->h;
+    qd_ctx *ctx = f->ctx;
+    assert_int_equal(qd_hj_solve(ctx, f->h), QD_OK);
+    const qd_expr *v[16], *res[16];
+    size_t got = 0;
+    for (size_t k = 0; k < h->n; k++) {
+        const qd_expr *d = qd_diff(ctx, f->ham->H, h->sep[k].p);
+        for (size_t i = 0; i < h->n; i++) {
+            const qd_hj_sep *s = &h->sep[i];
+            const qd_expr *to = s->cyclic && s->constant != h->energy ? s->constant
+                                                                       : qd_sqrt(ctx, s->p2);
+            d = qd_subs(ctx, d, 1, &s->p, &to);
+        }
+        v[k] = d;
+    }
+    for (size_t k = 0; k < h->n; k++) {
+        const qd_hj_sep *s = &h->sep[k];
+        res[k] = NULL;
+        if (!s->motion)
+            continue;
+        got++;
+        const qd_expr *rate = qd_int(ctx, 1);
+        for (size_t j = 0; j < h->n; j++)
+            if (h->sep[j].q == s->clock)
+                rate = v[j];
+        const qd_expr *want = qd_div(ctx, v[k], rate);
+        const qd_expr *dq = qd_diff(ctx, s->motion, s->clock);
+        res[k] = qd_sub(ctx, qd_powi(ctx, dq, 2), qd_subs(ctx, qd_powi(ctx, want, 2), 1, &s->q, &s->motion));
+        assert_non_null(res[k]);
+    }
+    assert_int_equal(got, nclosed);
+    qt_rng rng = {seed};
+    for (int i = 0; i < NPOINTS; i++) {
+        point pt = random_point(f, &rng, lo, hi);
+        bind(&pt, qd_time(ctx), qt_uniform(&rng, -2, 2));
+        for (size_t k = 0; k < h->n; k++)
+            if (h->sep[k].beta)
+                bind(&pt, h->sep[k].beta, qt_uniform(&rng, -1, 1));
+        for (size_t k = 0; k < h->n; k++)
+            if (res[k]) {
+                double r = eval(f, &pt, res[k]);
+                double scale = fabs(eval(f, &pt, qd_powi(ctx, qd_diff(ctx, h->sep[k].motion, h->sep[k].clock), 2)));
+                assert_float_equal(r, 0, 1e-9 * (1 + scale));
+            }
+    }
+}
+
+/* --solve: Desloge ch. 78 (q = (t - beta)^2 - E; the projectile's parabola;
+ * the oscillator's sine), Kepler's conic r(theta) (Goldstein 10.8). */
+static void test_solve(void **state) {
+    (void)state;
+    double lo2[] = {-1, -1}, hi2[] = {1, 1};
+    fix f = load("coordinates q\nmomenta p\nH = p^2 - q\n");
+    check_motion(&f, lo2, hi2, 780u, 1);
+    assert_same(&f, f.h->sep[0].motion, "(t - beta_q)^2 - E");
+    unload(&f);
+    f = load(oscillator);
+    check_motion(&f, lo2, hi2, 781u, 1);
+    /* numerically: the simplifier leaves sqrt(8 E k)/(2 k) as it is */
+    const qd_expr *want = qd_read(f.ctx, "sqrt(2*E/k)*sin(sqrt(k/m)*(t - beta_x))", NULL, NULL);
+    qt_rng rng = {785u};
+    for (int i = 0; i < NPOINTS; i++) {
+        point pt = {.n = 0};
+        for (size_t j = 0; j < qd_model_nparams(f.m); j++)
+            bind(&pt, qd_model_param(f.m, j), qd_number_value(qd_model_param_value(f.m, j)));
+        bind(&pt, f.h->energy, qt_uniform(&rng, 0.1, 3));
+        bind(&pt, qd_time(f.ctx), qt_uniform(&rng, -3, 3));
+        bind(&pt, f.h->sep[0].beta, qt_uniform(&rng, -1, 1));
+        assert_float_equal(eval(&f, &pt, f.h->sep[0].motion), eval(&f, &pt, want), 1e-12);
+    }
+    unload(&f);
+    f = load("coordinates x, y\nparameters m = 1.5, g = 9.81\nparticle m at (x, y)\nV = m*g*y\n");
+    check_motion(&f, lo2, hi2, 782u, 2);
+    unload(&f);
+    f = load("coordinates x, y\nparameters m = 1, kx = 1, ky = 4\nparticle m at (x, y)\n"
+             "V = (kx*x^2 + ky*y^2)/2\n");
+    check_motion(&f, lo2, hi2, 783u, 2);
+    unload(&f);
+    f = load("coordinates r, theta\nparameters m = 1.3, k = 4\n"
+             "particle m at r*(cos(theta), sin(theta))\nV = -k/r\n");
+    double lo[] = {0.5, -3}, hi[] = {2, 3};
+    check_motion(&f, lo, hi, 784u, 1);
+    assert_ptr_equal(f.h->sep[0].clock, f.h->sep[1].q); /* r(theta), the orbit */
+    unload(&f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_oscillator),   cmocka_unit_test(test_desloge78),
@@ -373,6 +487,7 @@ int main(void) {
         cmocka_unit_test(test_stark),        cmocka_unit_test(test_two_centres),
         cmocka_unit_test(test_coupled),      cmocka_unit_test(test_time_dependent),
         cmocka_unit_test(test_errors),       cmocka_unit_test(test_energy_name),
+        cmocka_unit_test(test_solve),        cmocka_unit_test(test_staeckel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
