@@ -278,10 +278,16 @@ static qd_ham *hamiltonian(qd_ctx *ctx, const qd_model *m, qd_eom **e) {
     return qd_ham_derive(ctx, m, *e);
 }
 
-/* One degree of freedom is separated here; more by qd_hj_derive. */
+/* One degree of freedom is separated here; more by qd_hj_derive.  Forces
+ * outside H (Q, Rayleigh's D) leave no cycle whatever H does. */
 static qd_hj *separate(qd_ctx *ctx, const qd_model *m, const qd_ham *hm,
                        const qd_action_opts *opts) {
     const char *E = opts ? opts->energy_name : NULL;
+    if (!hm->conserved && !qd_has(hm->H, qd_time(ctx))) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "generalized forces or dissipation act besides H: the "
+                                      "energy changes and the motion has no cycle");
+        return NULL;
+    }
     if (hm->n == 1)
         return qd__act_sep1(ctx, hm, E);
     qd_hj_opts ho = {.energy_name = E};

@@ -29,7 +29,7 @@ seed 002):
   - errors, exit 2: a separatrix (E = m g l), rest at the bottom, an unbounded
     coordinate (Desloge ch. 78's H = p^2 - q), a non-separable quartic
     coupling (the hint names qdot poincare), a bad option, H depending on t
-    (the hint names the adiabatic invariant).
+    (the hint names the adiabatic invariant), a damped oscillator.
 Prints "N passed, N failed"; exit 1 on failure.
 """
 import argparse
@@ -230,6 +230,7 @@ def errors(build):
             ("not separable", [quartic, "--at", "x=0.3, y=0.2"], "qdot poincare"),
             ("bad option", [EX / "action_pendulum.qd", "--bogus"], "usage"),
             ("time-dependent H", [EX / "action_pendulum_lengthening.qd"], "adiabatic invariant"),
+            ("damping", [EX / "damped_oscillator.qd"], "dissipation"),
         ]
         for name, args, words in cases:
             r = qdot(build, "action", *args)
