@@ -95,7 +95,9 @@ typedef struct qd_action_opts {
 } qd_action_opts;
 
 /* The actions and frequencies of model m at the state syms/vals (every
- * coordinate, velocity and parameter with a value).  One degree of freedom
+ * coordinate, velocity and parameter with a value; a momentum among them
+ * is taken as given, the others come from p = dL/dq', or for a model
+ * given by H from q' = dH/dp inverted).  One degree of freedom
  * is separated here (H = E solved for p^2); more go through qd_hj_derive.
  * On failure the reason is in ctx, and out->fail says which failure of the
  * motion it is (out->fail_coord where).  opts may be NULL. */

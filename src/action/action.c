@@ -198,7 +198,10 @@ static qd_status setup(qd_ctx *ctx, const qd_hj *h, qd_action *a) {
                            "frozen at one time, its parameters given there with --set");
         return QD_ERR_ARG;
     }
-    if (h->nconst != h->n || !h->energy) {
+    size_t e = 0;
+    while (e < h->nconst && h->constants[e] != h->energy)
+        e++;
+    if (h->nconst != h->n || e == h->nconst) {
         qd_ctx_error(ctx, QD_ERR_ARG, "actions need one separation constant per coordinate, "
                                       "the energy among them (here %zu for %zu)",
                      h->nconst, h->n);

@@ -41,14 +41,6 @@ qd_hj *qd__act_sep1(qd_ctx *ctx, const qd_ham *h, const char *energy_name) {
         qd_ctx_error(ctx, QD_ERR_ARG, "one degree of freedom is separated here, not %zu", h->n);
         return NULL;
     }
-    if (qd_has(h->H, qd_time(ctx))) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "H depends on t: the motion has no fixed cycle to take "
-                                      "an action over");
-        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, NULL, QD_REASON_NONE,
-                           "under a slow change J is an adiabatic invariant: take the system "
-                           "frozen at one time, its parameters given there with --set");
-        return NULL;
-    }
     qd_hj *s = qd__calloc(ctx, 1, sizeof *s);
     qd_hj_sep *sep = qd__calloc(ctx, 1, sizeof *sep);
     const qd_expr **cs = qd__calloc(ctx, 1, sizeof *cs);
@@ -61,7 +53,9 @@ qd_hj *qd__act_sep1(qd_ctx *ctx, const qd_ham *h, const char *energy_name) {
     if (!sep->p2 || !sep->integral || !sep->equation)
         goto fail;
     cs[0] = E;
-    *s = (qd_hj){.n = 1, .H = h->H, .time_independent = true, .separable = true,
+    /* H with t is separated all the same: qd_action_of_sep refuses it */
+    *s = (qd_hj){.n = 1, .H = h->H, .time_independent = !qd_has(h->H, qd_time(ctx)),
+                 .separable = true,
                  .form = "one degree of freedom", .sep = sep, .nconst = 1, .constants = cs,
                  .energy = E};
     return s;
