@@ -20,6 +20,8 @@ seed 002):
     dH/dp): the oscillator's J = 2 pi E/omega either way;
   - the quartic oscillator V = k x^4: J by the Beta function, omega from
     H homogeneous of degree 4/3 in J (no closed form claimed);
+  - the Morse well: J = (2 pi/a) sqrt(2 m D) (1 - sqrt(1 - E/D)) and
+    omega = a sqrt(2 D/m) sqrt(1 - E/D);
   - the anisotropic oscillator (examples/action_anisotropic.qd): J = 2 pi
     E_i/omega_i, no degeneracy at ky = 2 kx, 1 : 2 at ky = 4 kx;
   - adiabatic invariance (examples/action_pendulum_lengthening.qd,
@@ -188,6 +190,24 @@ def quartic(build):
     check("quartic H(J) not linear", res["H_of_J"] is None, str(res["H_of_J"]))
 
 
+def morse(build):
+    """The Morse well V = D (1 - e^(-a x))^2, asymmetric and not polynomial:
+    oint p dq in closed form (the substitution u = e^(-a x)) is
+    J = (2 pi/a) sqrt(2 m D) (1 - sqrt(1 - E/D)), so
+    omega = 2 pi dE/dJ = a sqrt(2 D/m) sqrt(1 - E/D)."""
+    m, D, a = 1.2, 3.0, 0.8
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "morse.qd"
+        model.write_text("coordinates x\nparameters m = 1.2, D = 3, a = 0.8\n"
+                         "T = m/2*x'^2\nV = D*(1 - exp(-a*x))^2\n")
+        res = action(build, model, "--at", "x=0.3, x'=1.5")
+    E = m / 2 * 1.5 ** 2 + D * (1 - math.exp(-a * 0.3)) ** 2
+    close("Morse J", res["actions"]["x"],
+          2 * math.pi / a * math.sqrt(2 * m * D) * (1 - math.sqrt(1 - E / D)), 1e-12)
+    close("Morse omega", res["frequencies"]["x"],
+          a * math.sqrt(2 * D / m) * math.sqrt(1 - E / D), 1e-11)
+
+
 def anisotropic(build):
     res = action(build, EX / "action_anisotropic.qd")
     # x = 1 at rest: E_x = 1/2; y' = 1 at y = 0: E_y = 1/2
@@ -243,7 +263,7 @@ def main():
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
     for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h, quartic,
-                 anisotropic, adiabatic, errors):
+                 morse, anisotropic, adiabatic, errors):
         try:
             part(args.build)
         except Exception as exc:  # a crash or bad JSON is a failure, named
