@@ -179,6 +179,8 @@ static void put_coord_text(const qd_act_coord *c, qd_buf *b) {
     put_num(b, c->omega);
     qd_buf_puts(b, " rad/s, period ");
     put_num(b, 2 * PI / c->omega);
+    qd_buf_printf(b, "\n  angle_%s = ", q);
+    put_num(b, c->angle);
     qd_buf_puts(b, "\n");
 }
 
@@ -237,6 +239,8 @@ static void put_coord_json(cli_json *j, const qd_act_coord *c) {
     cli_json_number(j, c->J);
     cli_json_key(j, "omega");
     cli_json_number(j, c->omega);
+    cli_json_key(j, "angle");
+    cli_json_number(j, c->angle);
     cli_json_end_object(j);
 }
 
@@ -269,13 +273,14 @@ static void put_json(const qd_action *a, qd_buf *b) {
     for (size_t k = 0; k < a->n; k++)
         put_coord_json(&j, &a->c[k]);
     cli_json_end_array(&j);
-    const char *keys[] = {"actions", "frequencies"};
-    for (int w = 0; w < 2; w++) {
+    const char *keys[] = {"actions", "frequencies", "angles"};
+    for (int w = 0; w < 3; w++) {
         cli_json_key(&j, keys[w]);
         cli_json_begin_object(&j);
         for (size_t k = 0; k < a->n; k++) {
-            cli_json_key(&j, qd_expr_name(a->c[k].q));
-            cli_json_number(&j, w ? a->c[k].omega : a->c[k].J);
+            const qd_act_coord *c = &a->c[k];
+            cli_json_key(&j, qd_expr_name(c->q));
+            cli_json_number(&j, w == 0 ? c->J : w == 1 ? c->omega : c->angle);
         }
         cli_json_end_object(&j);
     }

@@ -60,6 +60,10 @@ typedef struct qd_act_coord {
     double lo, hi;             /* the turning points, or the period [q - pi, q + pi] */
     double J;                  /* oint p dq (>= 0) */
     double omega;              /* 2 pi dH/dJ, rad/s */
+    /* the angle variable at the state, 2 pi dW/dJ in [0, 2 pi): 0 at the
+     * lower turning point (for a rotation at q = 0 mod 2 pi), advancing at
+     * omega in the motion */
+    double angle;
 } qd_act_coord;
 
 /* Two commensurate frequencies: omega_i : omega_j = num : den. */
@@ -87,6 +91,9 @@ typedef struct qd_action {
     qd_act_fail fail;          /* set when the call failed on the motion */
     size_t fail_coord;         /* the coordinate it failed at */
 } qd_action;
+
+/* The separation constants one motion may have. */
+#define QD_ACT_MAX_CONST 16
 
 typedef struct qd_action_opts {
     const char *energy_name;   /* NULL: "E" */

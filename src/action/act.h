@@ -44,6 +44,13 @@ qd_act_fail qd__act_cycle_find(qd__act_fn *f, double q0, bool angle, qd__act_cyc
  * results) when a quadrature did not converge. */
 bool qd__act_integrals(qd__act_fn *f, const qd__act_cycle *c, double *J, double *dJ);
 
+/* beta[j] = dW/dalpha_j of this coordinate at x, W = int p dq along the
+ * cycle from its origin (the lower turning point; a multiple of 2 pi for a
+ * rotation), the state moving with p of that sign; dJ[j] = dJ/dalpha_j.
+ * false (NaN results) when a quadrature did not converge. */
+bool qd__act_phase(qd__act_fn *f, const qd__act_cycle *c, double x, int sign, const double *dJ,
+                   double *beta);
+
 /* Which of q[0..n) are angles: they enter the model (T, V, L, H, the
  * positions of particles and bodies) inside sin, cos or tan.  false when
  * out of memory (recorded in ctx). */

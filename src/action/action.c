@@ -49,27 +49,40 @@ static bool constant_values(qd_ctx *ctx, const qd_hj *h, size_t nvals,
 
 /* ---- the frequencies ------------------------------------------------------------- */
 
-/* omega_k = 2 pi (A^-1)_{e,k}: row e of A^-1 solves A^T x = unit_e. */
-static bool frequencies(qd_ctx *ctx, const qd_hj *h, qd_action *a) {
-    size_t n = a->n, e = 0;
-    while (e < h->nconst && h->constants[e] != h->energy)
-        e++;
-    double *At = qd__calloc(ctx, n * n + n, sizeof *At);
+/* A^T x = rhs for A_kj = dJ_k/dalpha_j (dJ, n x n); false when singular. */
+static bool solve_transposed(qd_ctx *ctx, size_t n, const double *dJ, double *rhs) {
+    double *At = qd__calloc(ctx, n * n, sizeof *At);
     if (!At)
         return false;
-    double *x = At + n * n;
-    for (size_t k = 0; k < n; k++) {
-        x[k] = k == e;
+    for (size_t k = 0; k < n; k++)
         for (size_t j = 0; j < n; j++)
-            At[j * n + k] = a->dJ[k * n + j];
-    }
-    bool ok = e < n && qd__num_solve(n, At, x, 1e-12 * qd__num_norm_inf(n, At));
-    for (size_t k = 0; ok && k < n; k++)
-        a->c[k].omega = 2 * PI * x[k];
+            At[j * n + k] = dJ[k * n + j];
+    bool ok = qd__num_solve(n, At, rhs, 1e-12 * qd__num_norm_inf(n, At));
     qd__free(At);
     if (!ok)
         qd_ctx_error(ctx, QD_ERR_SINGULAR, "the Jacobian dJ/dalpha is singular: the actions do "
                                            "not determine the constants");
+    return ok;
+}
+
+/* omega_k = 2 pi dH/dJ_k = 2 pi (A^-1)_{E,k}: row E of A^-1 solves
+ * A^T x = unit_E.  The angles w_k = dW/dJ_k = sum_j beta_j (A^-1)_{jk},
+ * beta_j = dW/dalpha_j (Goldstein sec. 10.6, with J for the alphas):
+ * A^T w = beta; 2 pi w_k mod 2 pi is the angle, advancing at omega_k. */
+static bool frequencies(qd_ctx *ctx, const qd_hj *h, double *beta, qd_action *a) {
+    size_t n = a->n, e = 0;
+    while (e < h->nconst && h->constants[e] != h->energy)
+        e++;
+    double *x = qd__calloc(ctx, n, sizeof *x);
+    bool ok = x != NULL;
+    for (size_t k = 0; ok && k < n; k++)
+        x[k] = k == e;
+    ok = ok && solve_transposed(ctx, n, a->dJ, x) && solve_transposed(ctx, n, a->dJ, beta);
+    for (size_t k = 0; ok && k < n; k++) {
+        a->c[k].omega = 2 * PI * x[k];
+        a->c[k].angle = 2 * PI * (beta[k] - floor(beta[k]));
+    }
+    qd__free(x);
     return ok;
 }
 
@@ -120,7 +133,8 @@ static void closed_form(qd_ctx *ctx, const qd_hj *h, qd_action *a) {
     for (size_t k = 0; k < a->n; k++) {
         sum += a->c[k].J * a->c[k].omega / (2 * PI);
         sumJ += a->c[k].J;
-        quadratic = quadratic && a->c[k].kind == QD_ACT_LIBRATION && quadratic_in_q(ctx, &h->sep[k]);
+        quadratic = quadratic && a->c[k].kind == QD_ACT_LIBRATION &&
+                    quadratic_in_q(ctx, &h->sep[k]);
         equal = equal && fabs(a->c[k].omega - a->c[0].omega) <= tol * fabs(a->c[0].omega);
     }
     qd__ctx_recover(ctx); /* a simplification that failed only withholds the form */
@@ -142,7 +156,9 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
         "logarithmically",
         "%s is at rest at an equilibrium (p^2 <= 0 about the state): J = 0"};
     static const char *const hint[] = {
-        NULL, "an unbounded motion has no cycle and so no action; where the potential has a well, a state of lower energy stays in it",
+        NULL,
+        "an unbounded motion has no cycle and so no action; where the potential has a well, "
+        "a state of lower energy stays in it",
         "move the state off the separatrix: a libration just below or a rotation just above",
         "the small oscillations about it are `qdot modes`"};
     a->fail = why;
@@ -153,9 +169,23 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
     return QD_ERR_ARG;
 }
 
+/* beta_j += this coordinate's dW/dalpha_j at the state, moving with the
+ * sign of its momentum there (forward when the state does not give it). */
+static bool add_phase(qd__act_fn *f, const qd__act_cycle *c, const qd_hj_sep *sep, double q0,
+                      const double *dJ, size_t nvals, const qd_expr *const *syms,
+                      const double *vals, double *beta) {
+    double p = 1, b[QD_ACT_MAX_CONST];
+    if (sep->p)
+        lookup(sep->p, nvals, syms, vals, &p);
+    bool ok = f->nc <= QD_ACT_MAX_CONST && qd__act_phase(f, c, q0, p < 0 ? -1 : 1, dJ, b);
+    for (size_t j = 0; ok && j < f->nc; j++)
+        beta[j] += b[j];
+    return ok;
+}
+
 static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, const double *cv,
                            double q0, size_t nvals, const qd_expr *const *syms,
-                           const double *vals, qd_action *a) {
+                           const double *vals, double *beta, qd_action *a) {
     qd__act_fn f;
     if (!qd__act_fn_init(ctx, &f, h->sep[k].p2, h->sep[k].q, h->nconst, h->constants, cv, nvals,
                          syms, vals))
@@ -165,7 +195,8 @@ static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, co
     qd_status st = QD_OK;
     if (why != QD_ACT_OK)
         st = fail_motion(ctx, a, why, k);
-    else if (!qd__act_integrals(&f, &c, &a->c[k].J, &a->dJ[k * a->n])) {
+    else if (!qd__act_integrals(&f, &c, &a->c[k].J, &a->dJ[k * a->n]) ||
+             !add_phase(&f, &c, &h->sep[k], q0, &a->dJ[k * a->n], nvals, syms, vals, beta)) {
         qd_ctx_error(ctx, QD_ERR_NUMERIC, "the action integral of %s did not converge",
                      qd_expr_name(h->sep[k].q));
         st = QD_ERR_NUMERIC;
@@ -216,7 +247,8 @@ qd_status qd_action_of_sep(qd_ctx *ctx, const qd_hj *h, const bool *angle, size_
                            const qd_expr *const *syms, const double *vals,
                            const qd_action_opts *opts, qd_action *out) {
     qd_status st = setup(ctx, h, out);
-    double *cv = st == QD_OK ? qd__calloc(ctx, h->nconst, sizeof *cv) : NULL;
+    double *cv = st == QD_OK ? qd__calloc(ctx, 2 * h->nconst, sizeof *cv) : NULL;
+    double *beta = cv ? cv + h->nconst : NULL;
     if (st == QD_OK && (!cv || !constant_values(ctx, h, nvals, syms, vals, cv)))
         st = qd_ctx_status(ctx);
     for (size_t k = 0; st == QD_OK && k < h->n; k++) {
@@ -232,12 +264,12 @@ qd_status qd_action_of_sep(qd_ctx *ctx, const qd_hj *h, const bool *angle, size_
             st = QD_ERR_UNBOUND;
             break;
         }
-        st = one_coord(ctx, h, k, angle[k], cv, q0, nvals, syms, vals, out);
+        st = one_coord(ctx, h, k, angle[k], cv, q0, nvals, syms, vals, beta, out);
     }
     for (size_t j = 0; st == QD_OK && j < h->nconst; j++)
         if (h->constants[j] == h->energy)
             out->energy = cv[j];
-    if (st == QD_OK && (!frequencies(ctx, h, out) || !degeneracies(ctx, opts, out)))
+    if (st == QD_OK && (!frequencies(ctx, h, beta, out) || !degeneracies(ctx, opts, out)))
         st = qd_ctx_status(ctx);
     if (st == QD_OK)
         closed_form(ctx, h, out);

@@ -151,8 +151,8 @@ static double dip(qd__act_fn *f, double a, double b, double *where) {
 
 /* The path from the start s one way: an angle over one turn in 512 equal
  * steps and one more (a dip at the end of the turn, which is the start's
- * other side, needs a sample beyond it to be seen); another coordinate in steps growing by 2^(1/16) from 1e-6
- * max(|s|, 1e-3), out to 1e12 (|s| + 1). */
+ * other side, needs a sample beyond it to be seen); another coordinate in
+ * steps growing by 2^(1/16) from 1e-6 max(|s|, 1e-3), out to 1e12 (|s| + 1). */
 typedef struct path {
     double s, h0;
     int dir, n;
@@ -301,17 +301,17 @@ qd_act_fail qd__act_cycle_find(qd__act_fn *f, double q0, bool angle, qd__act_cyc
 
 typedef struct integrand {
     qd__act_fn *f;
-    const qd__act_cycle *c;
-    long j;        /* -1: sqrt(p^2); else dp^2/dalpha_j / (2 sqrt(p^2)) */
-    double near;   /* below this distance from a turning point, Taylor */
+    long j;                  /* -1: sqrt(p^2); else dp^2/dalpha_j / (2 sqrt(p^2)) */
+    double near;             /* below this distance from a turning point, Taylor */
+    const double *dlo, *dhi; /* p^2's derivatives at the ends that are turning
+                                points (NULL: an end where p^2 > 0) */
 } integrand;
 
 /* p^2 at x, xc from the nearer end, without the cancellation of its terms
  * near a turning point (where p^2 = 0 exactly, not as computed). */
 static double p2_at(const integrand *g, double x, double xc) {
-    const qd__act_cycle *c = g->c;
-    if (c->kind == QD_ACT_LIBRATION && fabs(xc) < g->near) {
-        const double *d = xc >= 0 ? c->dlo : c->dhi;
+    const double *d = xc >= 0 ? g->dlo : g->dhi;
+    if (d && fabs(xc) < g->near) {
         qd__act_p2(g->f, x); /* for the alpha-derivatives at x */
         return xc * (d[0] + xc * (d[1] / 2 + xc * d[2] / 6));
     }
@@ -328,20 +328,69 @@ static double integrand_at(void *data, double x, double xc) {
     return g->f->out[NDER + g->j] / (2 * sqrt(p2));
 }
 
-static bool integrate(integrand *g, double *out) {
-    qd__num_quad r;
-    bool ok = qd__num_quad_finite(integrand_at, g, g->c->lo, g->c->hi, 1e-13, &r);
-    /* a libration's cycle runs the interval twice, out and back */
-    *out = (g->c->kind == QD_ACT_LIBRATION ? 2 : 1) * r.value;
+/* The integral over [a, b] (0 when empty). */
+static bool integrate(integrand *g, double a, double b, double *out) {
+    qd__num_quad r = {0};
+    bool ok = !(b > a) || qd__num_quad_finite(integrand_at, g, a, b, 1e-13, &r);
+    *out = r.value;
     return ok || (isfinite(r.value) && r.error <= 1e-10 * fmax(1, fabs(r.value)));
 }
 
+static integrand integrand_of(qd__act_fn *f, const qd__act_cycle *c) {
+    bool lib = c->kind == QD_ACT_LIBRATION;
+    return (integrand){.f = f, .j = -1, .near = 1e-4 * (c->hi - c->lo),
+                       .dlo = lib ? c->dlo : NULL, .dhi = lib ? c->dhi : NULL};
+}
+
 bool qd__act_integrals(qd__act_fn *f, const qd__act_cycle *c, double *J, double *dJ) {
-    integrand g = {.f = f, .c = c, .j = -1, .near = 1e-4 * (c->hi - c->lo)};
-    bool ok = integrate(&g, J);
+    integrand g = integrand_of(f, c);
+    /* a libration's cycle runs the interval twice, out and back */
+    double twice = c->kind == QD_ACT_LIBRATION ? 2 : 1;
+    bool ok = integrate(&g, c->lo, c->hi, J);
+    *J *= twice;
     for (size_t j = 0; j < f->nc; j++) {
         g.j = (long)j;
-        ok = integrate(&g, &dJ[j]) && ok;
+        ok = integrate(&g, c->lo, c->hi, &dJ[j]) && ok;
+        dJ[j] *= twice;
+    }
+    return ok;
+}
+
+/* int_origin^x dp/dalpha_j dq along the cycle: from the lower turning
+ * point out (p > 0) and back (p < 0); for a rotation from the multiple of
+ * 2 pi below x, in the sense of the motion.  The half nearer a turning
+ * point is integrated from it, the other as the half-cycle's dJ/2 less
+ * the rest, so every turning point is an end of the quadrature. */
+static bool phase_one(integrand *g, const qd__act_cycle *c, double x, int sign, double dJ,
+                      double *beta) {
+    double I, rest;
+    bool ok;
+    if (c->kind == QD_ACT_ROTATION) {
+        double o = 2 * PI * floor(x / (2 * PI));
+        ok = integrate(g, o, x, &I);
+    } else if (x - c->lo <= c->hi - x) {
+        const double *dhi = g->dhi;
+        g->dhi = NULL;
+        ok = integrate(g, c->lo, fmax(x, c->lo), &I);
+        g->dhi = dhi;
+    } else {
+        const double *dlo = g->dlo;
+        g->dlo = NULL;
+        ok = integrate(g, fmin(x, c->hi), c->hi, &rest);
+        g->dlo = dlo;
+        I = dJ / 2 - rest;
+    }
+    *beta = sign >= 0 ? I : dJ - I;
+    return ok;
+}
+
+bool qd__act_phase(qd__act_fn *f, const qd__act_cycle *c, double x, int sign, const double *dJ,
+                   double *beta) {
+    integrand g = integrand_of(f, c);
+    bool ok = true;
+    for (size_t j = 0; j < f->nc; j++) {
+        g.j = (long)j;
+        ok = phase_one(&g, c, x, sign, dJ[j], &beta[j]) && ok;
     }
     return ok;
 }

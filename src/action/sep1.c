@@ -47,7 +47,7 @@ qd_hj *qd__act_sep1(qd_ctx *ctx, const qd_ham *h, const char *energy_name) {
     const qd_expr *E = qd_symbol(ctx, energy_name ? energy_name : "E");
     if (!s || !sep || !cs || !E)
         goto fail;
-    *sep = (qd_hj_sep){.q = h->q[0], .constant = E, .p2 = p_squared(ctx, h, E),
+    *sep = (qd_hj_sep){.q = h->q[0], .p = h->p[0], .constant = E, .p2 = p_squared(ctx, h, E),
                        .integral = h->H};
     sep->equation = qd_sub(ctx, h->H, E);
     if (!sep->p2 || !sep->integral || !sep->equation)

@@ -433,6 +433,72 @@ static void test_kepler_spherical(void **state) {
 }
 
 
+/* The angle variables advance at their frequencies (Goldstein sec. 10.6:
+ * w = nu t + beta): the actions at the state qd_sim reaches after a time
+ * t are the same, and every angle has moved on by omega t (mod 2 pi).
+ * Kepler in polar coordinates through qd_hj, the pendulum librating. */
+static void check_angles_advance(const char *text, const char *const *names, size_t n,
+                                 double t) {
+    at s;
+    at_load(&s, text);
+    sim_fix *f = s.f;
+    size_t base = s.n;
+    for (size_t k = 0; k < n; k++) {
+        char vel[32];
+        snprintf(vel, sizeof vel, "%s'", names[k]);
+        at_set(&s, names[k], f->q0[k]);
+        at_set(&s, vel, f->qd0[k]);
+    }
+    qd_action a0, a1;
+    run_at(&s, &a0);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, t, 0, 1e-14, false), QD_OK);
+    s.n = base;
+    for (size_t k = 0; k < n; k++) {
+        char vel[32];
+        snprintf(vel, sizeof vel, "%s'", names[k]);
+        at_set(&s, names[k], f->last[1 + k]);
+        at_set(&s, vel, f->last[1 + n + k]);
+    }
+    run_at(&s, &a1);
+    for (size_t k = 0; k < n; k++) {
+        close_to("J along the motion", a1.c[k].J, a0.c[k].J, 1e-11);
+        double d = (a1.c[k].angle - a0.c[k].angle - a0.c[k].omega * t) / (2 * PI);
+        if (fabs(d - round(d)) > 1e-11)
+            fail_msg("angle of %s: %.17g -> %.17g, omega t = %.17g", names[k], a0.c[k].angle,
+                     a1.c[k].angle, a0.c[k].omega * t);
+    }
+    qd_action_free(&a0);
+    qd_action_free(&a1);
+    sf_free(s.f);
+}
+
+static void test_angles_advance(void **state) {
+    (void)state;
+    char text[512];
+    const char *polar[] = {"r", "theta"}, *th[] = {"theta"};
+    snprintf(text, sizeof text, "%sinitial r = 1, theta = 0.2, r' = 0.3, theta' = -1.4\n",
+             kepler_polar);
+    check_angles_advance(text, polar, 2, 1.7);
+    snprintf(text, sizeof text, "%sinitial theta = 1.2, theta' = 0.5\n", pend);
+    check_angles_advance(text, th, 1, 1.3);
+    /* the lower turning point is angle 0, the upper pi */
+    at s;
+    at_load(&s, pend);
+    at_set(&s, "theta", -1.2);
+    at_set(&s, "theta'", 0);
+    qd_action a;
+    run_at(&s, &a);
+    assert_true(fabs(a.c[0].angle) < 1e-12 || fabs(a.c[0].angle - 2 * PI) < 1e-12);
+    qd_action_free(&a);
+    s.n = 3;
+    at_set(&s, "theta", 1.2);
+    at_set(&s, "theta'", 0);
+    run_at(&s, &a);
+    close_to("angle at the upper turning point", a.c[0].angle, PI, 1e-12);
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
 /* ---- the same through qd_hj_derive ---------------------------------------- */
 
 /* The models' separations found by qd_hj (not written out): the same
@@ -514,6 +580,7 @@ int main(void) {
         cmocka_unit_test(test_separatrix),
         cmocka_unit_test(test_unbounded),
         cmocka_unit_test(test_double_well),
+        cmocka_unit_test(test_angles_advance),
         cmocka_unit_test(test_anisotropic),
         cmocka_unit_test(test_kepler_polar),
         cmocka_unit_test(test_kepler_spherical),

@@ -24,6 +24,12 @@ seed 002):
     omega = a sqrt(2 D/m) sqrt(1 - E/D);
   - the anisotropic oscillator (examples/action_anisotropic.qd): J = 2 pi
     E_i/omega_i, no degeneracy at ky = 2 kx, 1 : 2 at ky = 4 kx;
+  - the angle variables (0 at the lower turning point): at the state `qdot
+    simulate` reaches after a time t every J is unchanged and every angle has
+    moved on by omega t (mod 2 pi) (Goldstein sec. 10.6: w = nu t + beta), for
+    Kepler in polar and spherical coordinates, the anisotropic oscillator and
+    the rotating pendulum; the oscillator through its centre is at pi/2 or
+    3 pi/2 by its sense;
   - adiabatic invariance (examples/action_pendulum_lengthening.qd,
     l = l0 (1 + eps t), Goldstein sec. 10.7 / Desloge ch. 79): the action of
     the pendulum frozen at t = 0 and at t = 250 (l 1.5 times longer) agree to
@@ -208,6 +214,43 @@ def morse(build):
           a * math.sqrt(2 * D / m) * math.sqrt(1 - E / D), 1e-11)
 
 
+KEPLER3 = ("coordinates r, theta, phi\nparameters m = 0.8, k = 2.5\n"
+           "particle m at r*(sin(theta)*cos(phi), sin(theta)*sin(phi), cos(theta))\n"
+           "V = -k/r\ninitial r = 1.2, theta = 1.1, phi = 0.2, r' = -0.3, theta' = 0.9, "
+           "phi' = 1.1\n")
+
+
+def angles_after(build, model, coords, t):
+    """The actions and angles at the initial state and at the state `qdot
+    simulate` reaches at t: J unchanged, each angle moved on by omega t."""
+    r0 = action(build, model)
+    r = qdot(build, "simulate", model, "--t-end", t, "--dt", t, "--method", "dop853",
+             "--rtol", "1e-13")
+    end = list(csv.DictReader(io.StringIO(r.stdout)))[-1]
+    at = ", ".join("%s=%s, %s'=%s" % (q, end[q], q, end[q + "'"]) for q in coords)
+    r1 = action(build, model, "--at", at)
+    for q in coords:
+        close("J_%s along the motion (%s)" % (q, Path(model).name), r1["actions"][q],
+              r0["actions"][q], 1e-11)
+        d = (r1["angles"][q] - r0["angles"][q] - r0["frequencies"][q] * t) / (2 * math.pi)
+        check("angle_%s advances at omega_%s (%s)" % (q, q, Path(model).name),
+              abs(d - round(d)) < 1e-11, "off by %g turns" % (d - round(d)))
+
+
+def angles(build):
+    with tempfile.TemporaryDirectory() as tmp:
+        kepler3 = Path(tmp) / "kepler3.qd"
+        kepler3.write_text(KEPLER3)
+        angles_after(build, kepler3, ["r", "theta", "phi"], 1.3)
+    angles_after(build, EX / "kepler_polar.qd", ["r", "theta"], 1.0)
+    angles_after(build, EX / "action_anisotropic.qd", ["x", "y"], 2.3)
+    angles_after(build, EX / "action_pendulum_rotation.qd", ["theta"], 0.9)
+    # the oscillator through the centre moving right is a quarter turn on from x = -A
+    res = action(build, EX / "action_anisotropic.qd", "--at", "x=0, x'=1, y=0, y'=-1")
+    close("angle a quarter turn on", res["angles"]["x"], math.pi / 2, 1e-12)
+    close("angle three quarters on", res["angles"]["y"], 3 * math.pi / 2, 1e-12)
+
+
 def anisotropic(build):
     res = action(build, EX / "action_anisotropic.qd")
     # x = 1 at rest: E_x = 1/2; y' = 1 at y = 0: E_y = 1/2
@@ -263,7 +306,7 @@ def main():
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
     for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h, quartic,
-                 morse, anisotropic, adiabatic, errors):
+                 morse, anisotropic, angles, adiabatic, errors):
         try:
             part(args.build)
         except Exception as exc:  # a crash or bad JSON is a failure, named
