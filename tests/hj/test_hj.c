@@ -7,8 +7,9 @@
  * p2_k(q_k) give p_k^2 again; each first integral has a vanishing Poisson
  * bracket with H; and W substituted into H(q, dW/dq) gives E (the complete
  * integral solves the HJ equation; integral(f, q) differentiates to f).
- * Textbook values: Desloge ch. 78 (H = p^2 - q: W = (2/3)(E + q)^(3/2); the
- * projectile), ch. 79 and Goldstein 10.8 (Kepler in polar and spherical
+ * Textbook values: Desloge ch. 78 (Example 3, H = p^2 - q: q = (t + b)^2 - a,
+ * solved there with the generalized equation; the ordinary one gives W =
+ * (2/3)(E + q)^(3/2); Prob. 2, the projectile, answer p. 990; Prob. 6), ch. 79 and Goldstein 10.8 (Kepler in polar and spherical
  * coordinates: p_r^2 = 2m(E + k/r) - alpha/r^2), Landau-Lifshitz §48 problem 2
  * (the Stark problem in parabolic coordinates, the Liouville form);
  * seed 000_46d037099a6cfcd7.txt.  Not separable: a potential x y^3 and a
@@ -208,7 +209,8 @@ static void test_oscillator(void **state) {
     unload(&f);
 }
 
-/* Desloge ch. 78: H = p^2 - q, W = (2/3)(E + q)^(3/2). */
+/* Desloge ch. 78 Example 3: H = p^2 - q; the ordinary HJ equation gives
+ * W = (2/3)(E + q)^(3/2) (Desloge solves the generalized one in p). */
 static void test_desloge78(void **state) {
     (void)state;
     fix f = load("coordinates q\nmomenta p\nH = p^2 - q\n");
@@ -318,6 +320,20 @@ static void test_staeckel(void **state) {
     assert_same(&f, sep_of(&f, "r"), "2*m*(E + k/r - alpha_theta/r^2)");
     double lo[] = {0.5, 0.3, -3}, hi[] = {2, 2.8, 3};
     check_solution(&f, lo, hi, 488u);
+    unload(&f);
+}
+
+/* Desloge ch. 78 Prob. 6: H = (p1^2 + p2^2)/(2 (q1^2 + q2^2)) + 1/(q1^2 + q2^2),
+ * Liouville's form with the factor q1^2 + q2^2 (its orbits are conics). */
+static void test_desloge78_p6(void **state) {
+    (void)state;
+    fix f = load("coordinates q1, q2\nmomenta p1, p2\n"
+                 "H = (p1^2 + p2^2)/(2*(q1^2 + q2^2)) + 1/(q1^2 + q2^2)\n");
+    check_form(&f, "Liouville");
+    /* H is read as (p1^2 + p2^2 + 2)/(2 q1^2 + 2 q2^2): that is the factor */
+    assert_same(&f, sep_of(&f, "q1"), "2*E*q1^2 + alpha_q1");
+    double lo[] = {-2, -2}, hi[] = {2, 2};
+    check_solution(&f, lo, hi, 786u);
     unload(&f);
 }
 
@@ -440,6 +456,22 @@ static void check_motion(const fix *f, const double *lo, const double *hi, unsig
     }
 }
 
+/* Desloge ch. 78 Prob. 2 (answer p. 990): launched from the origin at speed v
+ * and angle phi, alpha_x = m v cos(phi), E = m v^2/2, beta_x = 0 and beta_y =
+ * v sin(phi)/g give x = v cos(phi) t, y = -(g/2) t^2 + v sin(phi) t. */
+static void launch(const fix *f) {
+    qd_ctx *ctx = f->ctx;
+    const char *names[4] = {"alpha_x", "E", "beta_x", "beta_y"};
+    const char *vals[4] = {"m*v*cos(phi)", "m*v^2/2", "0", "v*sin(phi)/g"};
+    const qd_expr *from[4], *to[4];
+    for (int i = 0; i < 4; i++) {
+        assert_non_null(from[i] = qd_lookup(ctx, names[i]));
+        assert_non_null(to[i] = qd_read(ctx, vals[i], NULL, NULL));
+    }
+    assert_same(f, qd_subs(ctx, f->h->sep[0].motion, 4, from, to), "v*cos(phi)*t");
+    assert_same(f, qd_subs(ctx, f->h->sep[1].motion, 4, from, to), "-g/2*t^2 + v*sin(phi)*t");
+}
+
 /* --solve: Desloge ch. 78 (q = (t - beta)^2 - E; the projectile's parabola;
  * the oscillator's sine), Kepler's conic r(theta) (Goldstein 10.8). */
 static void test_solve(void **state) {
@@ -466,6 +498,7 @@ static void test_solve(void **state) {
     unload(&f);
     f = load("coordinates x, y\nparameters m = 1.5, g = 9.81\nparticle m at (x, y)\nV = m*g*y\n");
     check_motion(&f, lo2, hi2, 782u, 2);
+    launch(&f);
     unload(&f);
     f = load("coordinates x, y\nparameters m = 1, kx = 1, ky = 4\nparticle m at (x, y)\n"
              "V = (kx*x^2 + ky*y^2)/2\n");
@@ -488,6 +521,7 @@ int main(void) {
         cmocka_unit_test(test_coupled),      cmocka_unit_test(test_time_dependent),
         cmocka_unit_test(test_errors),       cmocka_unit_test(test_energy_name),
         cmocka_unit_test(test_solve),        cmocka_unit_test(test_staeckel),
+        cmocka_unit_test(test_desloge78_p6),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
