@@ -2,7 +2,7 @@
  * cli/cmd_action.c - `qdot action FILE --at STATE`: the action-angle
  * variables of a separable bounded motion (libqdot's qd_action_at): the
  * actions J_k = oint p_k dq_k at the state, the frequencies
- * omega_k = 2 pi dH/dJ_k, the commensurate ones, and H(J) where it is
+ * omega_k = 2 pi dH/dJ_k, the angles, the commensurate frequencies, and H(J) where it is
  * recognised.  The state starts from the model's `initial` values; a
  * model given by H may take its momenta in --at.
  */

@@ -17,7 +17,8 @@
  *
  * (differentiated under the integral: the end points add nothing, p_k
  * vanishes there), as omega_k = 2 pi dH/dJ_k = 2 pi (A^-1)_{E,k}, in rad/s,
- * E the energy constant.  Every integral is a tanh-sinh quadrature
+ * E the energy constant; the angle variables at the state are
+ * 2 pi dW/dJ_k = 2 pi (A^-T beta)_k, beta_j = dW/dalpha_j along the cycles.  Every integral is a tanh-sinh quadrature
  * (src/num/quad.c) whose end points are the turning points themselves.
  *
  * Ownership: a qd_action holds its own arrays, freed by qd_action_free;

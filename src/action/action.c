@@ -2,7 +2,7 @@
  * src/action/action.c - qd_action_at and qd_action_of_sep: the actions
  * J_k = oint p_k dq_k of a separated bounded motion at a state, the
  * frequencies omega_k = 2 pi dH/dJ_k from the Jacobian dJ/dalpha, the
- * commensurate pairs among them (Desloge ch. 79, thm 1: closed orbits),
+ * angle variables 2 pi dW/dJ_k there, the commensurate pairs among them (Desloge ch. 79, thm 1: closed orbits),
  * and H(J) where it is recognised (Goldstein sec. 10.6-10.8).
  */
 #include "act.h"
