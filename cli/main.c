@@ -37,6 +37,8 @@ static const cli_cmd commands[] = {
      cli_cmd_orbit, true},
     {"hj", "FILE [--format F] [--solve]", "the Hamilton-Jacobi equation, its separation and W",
      cli_cmd_hj, true},
+    {"action", "FILE [--at ...] [--format F]", "action-angle variables: J, frequencies",
+     cli_cmd_action, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

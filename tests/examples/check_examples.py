@@ -80,6 +80,31 @@ def _(q, v, t, p):
     return solve(M, f)
 
 
+# The action-angle examples (qdot action; Desloge ch. 79, seed-desloge-D.md).
+@example('action_pendulum', ['theta'])
+def _(q, v, t, p):
+    # Goldstein ch. 1 Ex. 19 (seed 002): th'' = -(g/l) sin th
+    return [-p['g'] / p['l'] * sin(q['theta'])]
+
+
+@example('action_pendulum_rotation', ['theta'])
+def _(q, v, t, p):
+    return [-p['g'] / p['l'] * sin(q['theta'])]
+
+
+@example('action_anisotropic', ['x', 'y'])
+def _(q, v, t, p):
+    # Goldstein sec. 10.6: x'' = -kx x/m, y'' = -ky y/m
+    return [-p['kx'] * q['x'] / p['m'], -p['ky'] * q['y'] / p['m']]
+
+
+@example('action_pendulum_lengthening', ['theta'])
+def _(q, v, t, p):
+    # Goldstein sec. 10.7: d/dt(m l^2 th') = -m g l sin th, l = l0 (1 + eps t)
+    l, ld = p['l0'] * (1 + p['eps'] * t), p['l0'] * p['eps']
+    return [-2 * ld / l * v['theta'] - p['g'] / l * sin(q['theta'])]
+
+
 @example('free_particle_spherical', ['r', 'theta', 'phi'],
          ranges={'r': (0.5, 2.0), 'theta': (0.3, 2.8)})
 def _(q, v, t, p):
