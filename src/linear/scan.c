@@ -89,7 +89,7 @@ static qd_status param_find(qd_ctx *ctx, const qd_model *m, const char *name, do
         return QD_ERR_ARG;
     }
     if (!(a < b) || !isfinite(a) || !isfinite(b)) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "the range of %s is empty: give A < B (%.17g:%.17g)",
+        qd_ctx_error(ctx, QD_ERR_ARG, "the range of %s is empty: give A < B (%.12g:%.12g)",
                      name, a, b);
         return QD_ERR_ARG;
     }
