@@ -33,6 +33,8 @@ static const cli_cmd commands[] = {
      cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
      cli_cmd_stability, true},
+    {"zvc", "FILE --box ... --level H", "Jacobi's integral and the zero-velocity curves",
+     cli_cmd_zvc, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
