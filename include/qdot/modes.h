@@ -158,7 +158,7 @@ QD_API qd_status qd_modes_exact_omega2(qd_ctx *ctx, const qd_eom *e, const qd_mo
 typedef struct qd_scan_opts {
     size_t steps;                 /* intervals between samples; 0 gives 200 */
     double tol;                   /* bracket width of each transition; 0 gives
-                                     1e-11 max(1, |a|, |b|) */
+                                     1e-13 max(1, |a|, |b|) */
     const qd_expr *const *about;  /* n expressions in the parameters, or NULL */
     const double *start;          /* n: the equilibrium's guess at a when about
                                      is NULL; both NULL: qd_equilibria_choose at a */

@@ -249,7 +249,11 @@ static qd_status back_to(scan_run *r, double lo, const double *qlo, double *q) {
     return st;
 }
 
-/* Bisect the change between samples k and k + 1 of out; qlo: room for n. */
+/* Bisect the change between samples k and k + 1 of out; qlo: room for n.
+ * The predicate is "the verdict is still sample k's": a midpoint in the thin
+ * borderline band where two frequencies meet (within QD_MODES_ZERO_TOL's
+ * reach of the collision) counts with the far side, whose verdict the
+ * transition reports. */
 static qd_status bisect(scan_run *r, qd_scan *out, size_t k, double tol, double *q, double *qlo,
                         double *work) {
     size_t n = r->L.n;
@@ -270,7 +274,6 @@ static qd_status bisect(scan_run *r, qd_scan *out, size_t k, double tol, double 
             memcpy(qlo, q, n * sizeof *qlo);
         } else {
             hi = mid;
-            to = v;
             st = back_to(r, lo, qlo, q);
         }
     }
@@ -311,7 +314,7 @@ static qd_status alloc_run(qd_ctx *ctx, size_t n, scan_run *r) {
 static qd_status run_scan(scan_run *r, const qd_eom *e, const qd_scan_opts *o, double a,
                           double b, qd_scan *out) {
     size_t n = r->L.n, steps = o->steps ? o->steps : 200;
-    double tol = o->tol > 0 ? o->tol : 1e-11 * fmax(1, fmax(fabs(a), fabs(b)));
+    double tol = o->tol > 0 ? o->tol : 1e-13 * fmax(1, fmax(fabs(a), fabs(b)));
     double *q = qd__calloc(r->ctx, 3 * n + 1, sizeof *q), *work = q ? q + n : NULL;
     qd_status st = q ? alloc_out(r->ctx, n, steps + 1, out) : QD_ERR_NOMEM;
     if (st == QD_OK)
