@@ -171,10 +171,12 @@ typedef struct qd_scan_transition {
 } qd_scan_transition;
 
 typedef struct qd_scan {
-    size_t n;                     /* coordinates (e->n) */
+    size_t n;                     /* numbers per point: the coordinates (e->n), or
+                                     for a steady motion (qd_stability_scan) kept
+                                     coordinates, rates and momenta */
     size_t count;                 /* samples */
     double *value;                /* count: the parameter, a to b */
-    double *q;                    /* count * n: the equilibrium at each value */
+    double *q;                    /* count * n: the point at each value */
     int *stable;                  /* count: qd_modes_result.stable there */
     double *margin;               /* count: the smallest w^2 (conservative) or the
                                      largest Re s: its sign is the verdict's */

@@ -19,6 +19,7 @@
 #include "linear.h"
 
 #include "qdot/equilibria.h"
+#include "qdot/stability.h"
 #include "base/mem.h"
 
 #include <math.h>
@@ -34,16 +35,33 @@ typedef struct scan_params {
     double *vals;
 } scan_params;
 
-/* What a scan keeps while it runs. */
-typedef struct scan_run {
+/* What a scan keeps while it runs.  The point followed is a vector u of nu
+ * numbers: an equilibrium's coordinates, or a steady motion's kept
+ * coordinates, rates and momenta; the two kinds differ only in solve (u at
+ * the parameters set, from u) and verdict. */
+typedef struct scan_run scan_run;
+struct scan_run {
     qd_ctx *ctx;
-    qd__lin L;
     scan_params P;
+    const char *name;            /* the parameter */
+    const char *what;            /* "equilibrium", "steady motion" */
+    size_t nu;
+    qd_status (*solve)(scan_run *r, double *u);
+    qd_status (*verdict)(scan_run *r, const double *u, int *stable, double *margin,
+                         bool *conservative);
+    qd_status (*first)(scan_run *r, const qd_scan_opts *o, double a, double *u);
+    /* equilibria */
+    const qd_eom *e;
+    qd__lin L;
+    qd_linear lin;               /* about the current point */
     const qd_expr *const *about;
     double *ab_prev, *ab_next;   /* about at the last point reached and at the next */
-    qd_linear lin;               /* about the current point */
-    const char *name;
-} scan_run;
+    /* steady motions */
+    const qd_steady *s;
+    const bool *xfix, *wfix, *pfix, *pguess;
+    const qd_steady_point *start;
+    qd_steady_point pt;          /* scratch: u unpacked */
+};
 
 /* ---- the parameters ---------------------------------------------------------- */
 
@@ -106,12 +124,14 @@ static qd_status params_init(qd_ctx *ctx, const qd_model *m, size_t idx, scan_pa
     P->m = m;
     P->np = qd_model_nparams(m);
     P->idx = idx;
-    P->syms = qd__malloc(ctx, (P->np + 1) * sizeof *P->syms);
-    P->vals = qd__malloc(ctx, (P->np + 1) * sizeof *P->vals);
+    P->syms = qd__malloc(ctx, (P->np + 2) * sizeof *P->syms);
+    P->vals = qd__malloc(ctx, (P->np + 2) * sizeof *P->vals);
     if (!P->syms || !P->vals)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < P->np; i++)
         P->syms[i] = qd_model_param(m, i);
+    P->syms[P->np] = qd_time(ctx);   /* t = 0: a steady motion's equations ask for it */
+    P->vals[P->np] = 0;
     return QD_OK;
 }
 
@@ -130,16 +150,8 @@ static qd_status about_at(scan_run *r, double *out) {
     return QD_OK;
 }
 
-/* Set the parameters to v and solve for the equilibrium from q (in place),
- * moved first by the change of `about` since the last point reached. */
-static qd_status solve_at(scan_run *r, double v, double *q) {
-    size_t n = r->L.n;
-    qd_status st = params_at(r->ctx, &r->P, v);
-    if (st == QD_OK && r->about && (st = about_at(r, r->ab_next)) == QD_OK)
-        for (size_t j = 0; j < n; j++)
-            q[j] += r->ab_next[j] - r->ab_prev[j];
-    if (st != QD_OK)
-        return st;
+/* The equilibrium from q, in place: damped Newton. */
+static qd_status modes_solve(scan_run *r, double *q) {
     qd__lin_bind(&r->L, r->P.np, r->P.syms, r->P.vals);
     double res, ftol = 1e-11 * qd__lin_scale(&r->L, q);
     if (!isfinite(ftol) || !qd__lm_solve(&r->L, q, ftol, 200, &res))
@@ -147,14 +159,24 @@ static qd_status solve_at(scan_run *r, double v, double *q) {
     return QD_OK;
 }
 
+/* Set the parameters to v and solve for the point from u (in place), moved
+ * first by the change of `about` since the last point reached. */
+static qd_status solve_at(scan_run *r, double v, double *u) {
+    qd_status st = params_at(r->ctx, &r->P, v);
+    if (st == QD_OK && r->about && (st = about_at(r, r->ab_next)) == QD_OK)
+        for (size_t j = 0; j < r->nu; j++)
+            u[j] += r->ab_next[j] - r->ab_prev[j];
+    return st == QD_OK ? r->solve(r, u) : st;
+}
+
 /* Accept a point reached: `about` there is the base of the next step. */
 static void reached(scan_run *r) {
     if (r->about)
-        memcpy(r->ab_prev, r->ab_next, r->L.n * sizeof *r->ab_prev);
+        memcpy(r->ab_prev, r->ab_next, r->nu * sizeof *r->ab_prev);
 }
 
 /* The verdict at q (parameters as set by solve_at) and its margin. */
-static qd_status verdict_at(scan_run *r, const double *q, int *stable, double *margin,
+static qd_status modes_verdict(scan_run *r, const double *q, int *stable, double *margin,
                             bool *conservative) {
     size_t n = r->L.n;
     qd__lin_run(&r->L, q);
@@ -181,7 +203,7 @@ static qd_status verdict_at(scan_run *r, const double *q, int *stable, double *m
 
 /* From (v0, q) to v1, halving the step while Newton fails. */
 static qd_status advance(scan_run *r, double v0, double v1, double *q, double *work) {
-    size_t n = r->L.n;
+    size_t n = r->nu;
     double v = v0, h = v1 - v0, hmin = 1e-6 * fabs(v1 - v0);
     while (v != v1) {
         double to = fabs(h) >= fabs(v1 - v) ? v1 : v + h;
@@ -197,9 +219,9 @@ static qd_status advance(scan_run *r, double v0, double v1, double *q, double *w
             return st;
         h /= 2;
         if (fabs(h) < hmin) {
-            qd_ctx_error(r->ctx, QD_ERR_NUMERIC, "the equilibrium is lost at %s = %.12g: "
+            qd_ctx_error(r->ctx, QD_ERR_NUMERIC, "the %s is lost at %s = %.12g: "
                          "Newton's method from its value at %s = %.12g does not converge",
-                         r->name, to, r->name, v);
+                         r->what, r->name, to, r->name, v);
             return QD_ERR_NUMERIC;
         }
     }
@@ -207,9 +229,8 @@ static qd_status advance(scan_run *r, double v0, double v1, double *q, double *w
 }
 
 /* The equilibrium at a: about(a), the caller's start, or libqdot's choice. */
-static qd_status first_point(scan_run *r, const qd_eom *e, const qd_scan_opts *o, double a,
-                             double *q) {
-    size_t n = r->L.n;
+static qd_status modes_first(scan_run *r, const qd_scan_opts *o, double a, double *q) {
+    size_t n = r->nu;
     qd_status st = params_at(r->ctx, &r->P, a);
     if (st != QD_OK)
         return st;
@@ -222,7 +243,7 @@ static qd_status first_point(scan_run *r, const qd_eom *e, const qd_scan_opts *o
         memcpy(q, o->start, n * sizeof *q);
     } else {
         qd_equilibrium_choice ch;
-        st = qd_equilibria_choose(r->ctx, e, r->P.m, r->P.np, r->P.syms, r->P.vals, &ch);
+        st = qd_equilibria_choose(r->ctx, r->e, r->P.m, r->P.np, r->P.syms, r->P.vals, &ch);
         if (st == QD_OK && !ch.pt) {
             qd_ctx_error(r->ctx, QD_ERR_NUMERIC, "no equilibrium found at %s = %.12g: give "
                          "a point", r->name, a);
@@ -242,7 +263,7 @@ static qd_status first_point(scan_run *r, const qd_eom *e, const qd_scan_opts *o
 
 /* Return to the point at lo: its parameters and `about` there. */
 static qd_status back_to(scan_run *r, double lo, const double *qlo, double *q) {
-    memcpy(q, qlo, r->L.n * sizeof *q);
+    memcpy(q, qlo, r->nu * sizeof *q);
     qd_status st = params_at(r->ctx, &r->P, lo);
     if (st == QD_OK && r->about)
         st = about_at(r, r->ab_prev);
@@ -256,7 +277,7 @@ static qd_status back_to(scan_run *r, double lo, const double *qlo, double *q) {
  * transition reports. */
 static qd_status bisect(scan_run *r, qd_scan *out, size_t k, double tol, double *q, double *qlo,
                         double *work) {
-    size_t n = r->L.n;
+    size_t n = r->nu;
     double lo = out->value[k], hi = out->value[k + 1], margin;
     int from = out->stable[k], to = out->stable[k + 1], v;
     bool cons;
@@ -267,7 +288,7 @@ static qd_status bisect(scan_run *r, qd_scan *out, size_t k, double tol, double 
         if (mid <= lo || mid >= hi)
             break;
         if ((st = advance(r, lo, mid, q, work)) != QD_OK ||
-            (st = verdict_at(r, q, &v, &margin, &cons)) != QD_OK)
+            (st = r->verdict(r, q, &v, &margin, &cons)) != QD_OK)
             break;
         if (v == from) {
             lo = mid;
@@ -310,21 +331,42 @@ static qd_status alloc_run(qd_ctx *ctx, size_t n, scan_run *r) {
                ? QD_OK : QD_ERR_NOMEM;
 }
 
+/* A sample that lands on the change itself is borderline there: a w^2 or
+ * a root within QD_MODES_ZERO_TOL of zero (a band of width ~1e-10 round
+ * n = -3 for power-law orbits).  unstable -> borderline -> stable across a
+ * band narrower than the spacing of the samples is one transition,
+ * unstable -> stable, at the middle of the band. */
+static void merge_borderline(qd_scan *out, double spacing) {
+    size_t k = 0;
+    for (size_t i = 0; i < out->ntrans; i++) {
+        qd_scan_transition *t = &out->trans[i], *u = i + 1 < out->ntrans ? t + 1 : NULL;
+        if (u && t->to == -1 && u->from == -1 && t->from != u->to &&
+            u->value - t->value < spacing) {
+            double mid = t->value + (u->value - t->value) / 2;
+            out->trans[k++] = (qd_scan_transition){mid, t->lo, u->hi, t->from, u->to};
+            i++;
+        } else {
+            out->trans[k++] = *t;
+        }
+    }
+    out->ntrans = k;
+}
+
 /* Every sample, then every change of verdict between neighbours. */
-static qd_status run_scan(scan_run *r, const qd_eom *e, const qd_scan_opts *o, double a,
-                          double b, qd_scan *out) {
-    size_t n = r->L.n, steps = o->steps ? o->steps : 200;
+static qd_status run_scan(scan_run *r, const qd_scan_opts *o, double a, double b,
+                          qd_scan *out) {
+    size_t n = r->nu, steps = o->steps ? o->steps : 200;
     double tol = o->tol > 0 ? o->tol : 1e-13 * fmax(1, fmax(fabs(a), fabs(b)));
     double *q = qd__calloc(r->ctx, 3 * n + 1, sizeof *q), *work = q ? q + n : NULL;
     qd_status st = q ? alloc_out(r->ctx, n, steps + 1, out) : QD_ERR_NOMEM;
     if (st == QD_OK)
-        st = first_point(r, e, o, a, q);
+        st = r->first(r, o, a, q);
     for (size_t k = 0; st == QD_OK && k <= steps; k++) {
         double v = k == steps ? b : a + (b - a) * (double)k / (double)steps;
         if (k)
             st = advance(r, out->value[k - 1], v, q, work);
         if (st == QD_OK)
-            st = verdict_at(r, q, &out->stable[k], &out->margin[k], &out->conservative[k]);
+            st = r->verdict(r, q, &out->stable[k], &out->margin[k], &out->conservative[k]);
         out->value[k] = v;
         memcpy(out->q + k * n, q, n * sizeof *q);
         out->count = k + 1;
@@ -332,6 +374,8 @@ static qd_status run_scan(scan_run *r, const qd_eom *e, const qd_scan_opts *o, d
     for (size_t k = 0; st == QD_OK && k + 1 < out->count; k++)
         if (out->stable[k] != out->stable[k + 1])
             st = bisect(r, out, k, tol, q, work + n, work);
+    if (st == QD_OK)
+        merge_borderline(out, (b - a) / (double)steps);
     qd__free(q);
     return st;
 }
@@ -342,7 +386,9 @@ qd_status qd_modes_scan(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const c
     if (!ctx || !e || !m || !param)
         return QD_ERR_ARG;
     qd_scan_opts o = opts ? *opts : (qd_scan_opts){0};
-    scan_run r = {.ctx = ctx, .about = o.about, .name = param};
+    scan_run r = {.ctx = ctx, .about = o.about, .name = param, .what = "equilibrium",
+                  .nu = e->n, .e = e, .solve = modes_solve, .verdict = modes_verdict,
+                  .first = modes_first};
     size_t idx;
     qd_status st = param_find(ctx, m, param, a, b, &idx);
     if (st == QD_OK)
@@ -351,7 +397,7 @@ qd_status qd_modes_scan(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const c
         st = qd__lin_init(ctx, e, &r.L);
     if (st == QD_OK) {
         if ((st = alloc_run(ctx, e->n, &r)) == QD_OK)
-            st = run_scan(&r, e, &o, a, b, out);
+            st = run_scan(&r, &o, a, b, out);
         qd__lin_free(&r.L);
     }
     if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
@@ -361,6 +407,116 @@ qd_status qd_modes_scan(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const c
     qd__free(r.ab_prev);
     qd__free(r.ab_next);
     qd_linear_free(&r.lin);
+    return st;
+}
+
+/* ---- steady motions (qdot/stability.h) ------------------------------------------- */
+
+/* u = (x, w, p) into r->pt and back. */
+static void unpack(scan_run *r, const double *u) {
+    size_t nk = r->s->nkeep, nc = r->s->ncyc;
+    memcpy(r->pt.x, u, nk * sizeof *u);
+    memcpy(r->pt.w, u + nk, nc * sizeof *u);
+    memcpy(r->pt.p, u + nk + nc, nc * sizeof *u);
+}
+
+static void pack(const scan_run *r, const qd_steady_point *pt, double *u) {
+    size_t nk = r->s->nkeep, nc = r->s->ncyc;
+    memcpy(u, pt->x, nk * sizeof *u);
+    memcpy(u + nk, pt->w, nc * sizeof *u);
+    memcpy(u + nk + nc, pt->p, nc * sizeof *u);
+}
+
+/* The steady motion from u: the given values held, the rest found by
+ * qd_steady_find.  No motion there (or a singular point) is a failed step:
+ * its message is dropped, the continuation halves the step. */
+static qd_status steady_solve(scan_run *r, double *u) {
+    double res;
+    unpack(r, u);
+    qd_status st = qd_steady_find(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, r->xfix,
+                                  r->wfix, r->pfix, &r->pt, &res);
+    if (st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) {
+        qd__ctx_recover(r->ctx);
+        return QD_ERR_NUMERIC;
+    }
+    if (st == QD_OK)
+        pack(r, &r->pt, u);
+    return st;
+}
+
+/* The ordinary verdict (without dissipation) of qd_stability_analyze. */
+static qd_status steady_verdict(scan_run *r, const double *u, int *stable, double *margin,
+                                bool *conservative) {
+    qd_stability an;
+    unpack(r, u);
+    qd_status st = qd_stability_analyze(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, &r->pt,
+                                        &an);
+    if (st == QD_OK) {
+        const qd_modes_result *o = &an.ordinary;
+        *stable = an.ordinary_stable;
+        *conservative = o->conservative;
+        *margin = o->conservative ? o->omega2[0] : o->eig_re[0];
+        qd_stability_free(&an);
+    }
+    return st;
+}
+
+/* The first steady motion at a: the one qd_steady_find_all lists first
+ * (nearest the start). */
+static qd_status steady_first(scan_run *r, const qd_scan_opts *o, double a, double *u) {
+    (void)o;
+    qd_steady_set set;
+    qd_status st = params_at(r->ctx, &r->P, a);
+    if (st != QD_OK)
+        return st;
+    st = qd_steady_find_all(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, r->xfix, r->wfix,
+                            r->pfix, r->pguess, r->start, &set);
+    if (st == QD_OK && set.count == 0) {
+        qd_ctx_error(r->ctx, QD_ERR_NUMERIC, "no steady motion found at %s = %.12g", r->name, a);
+        st = QD_ERR_NUMERIC;
+    }
+    if (st == QD_OK)
+        pack(r, &set.pts[0], u);
+    qd_steady_set_free(&set);
+    return st;
+}
+
+static qd_status alloc_pt(qd_ctx *ctx, const qd_steady *s, qd_steady_point *pt) {
+    pt->x = qd__calloc(ctx, s->nkeep + 1, sizeof *pt->x);
+    pt->w = qd__calloc(ctx, s->ncyc + 1, sizeof *pt->w);
+    pt->p = qd__calloc(ctx, s->ncyc + 1, sizeof *pt->p);
+    return pt->x && pt->w && pt->p ? QD_OK : QD_ERR_NOMEM;
+}
+
+qd_status qd_stability_scan(qd_ctx *ctx, const qd_steady *s, const qd_model *m,
+                            const char *param, double a, double b, const bool *xfix,
+                            const bool *wfix, const bool *pfix, const bool *pguess,
+                            const qd_steady_point *start, const qd_scan_opts *opts,
+                            qd_scan *out) {
+    memset(out, 0, sizeof *out);
+    if (!ctx || !s || !m || !param || !start)
+        return QD_ERR_ARG;
+    qd_scan_opts o = opts ? *opts : (qd_scan_opts){0};
+    o.about = NULL;
+    scan_run r = {.ctx = ctx, .name = param, .what = "steady motion",
+                  .nu = s->nkeep + 2 * s->ncyc, .s = s, .xfix = xfix, .wfix = wfix,
+                  .pfix = pfix, .pguess = pguess, .start = start, .solve = steady_solve,
+                  .verdict = steady_verdict, .first = steady_first};
+    size_t idx;
+    qd_status st = param_find(ctx, m, param, a, b, &idx);
+    if (st == QD_OK)
+        st = params_init(ctx, m, idx, &r.P);
+    if (st == QD_OK)
+        st = alloc_pt(ctx, s, &r.pt);
+    if (st == QD_OK)
+        st = run_scan(&r, &o, a, b, out);
+    if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, st, "out of memory in the scan");
+    qd__free(r.P.syms);
+    qd__free(r.P.vals);
+    qd__free(r.pt.x);
+    qd__free(r.pt.w);
+    qd__free(r.pt.p);
     return st;
 }
 

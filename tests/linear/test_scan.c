@@ -14,6 +14,12 @@
  *   an inverted pendulum held by a horizontal spring on the bob,
  *     V = m g l cos(theta) + k/2 (l sin(theta))^2: the top has
  *     K = k l^2 - m g l, stable from k = m g/l on;
+ *   steady motions (qd_stability_scan): circular orbits r = 1.3 under the
+ *     force -k r^n with free angular momentum, stable iff n > -3, and on a
+ *     wire driven round, stable iff n > 1 (Britannica 1911 "Dynamics"
+ *     sec. 5-6, seed 004; seed-goldstein-britannica.md B08, B09, P4); the
+ *     sleeping top with nu = p_psi given, stable iff nu^2 > 4 A M g h
+ *     (Britannica sec. 6 (1), seed 004; B11): g = nu^2/(4 A M h);
  *   errors: an unknown, fixed or derived parameter, an empty range, a range
  *     through 0 for a parameter assumed positive, an equilibrium that ceases
  *     to exist (V = x^3/3 + c x: x = -sqrt(-c) only while c < 0).
@@ -30,6 +36,7 @@
 
 #include "qdot/qdot.h"
 #include "qdot/modes.h"
+#include "qdot/stability.h"
 #include "../util/system.h"
 
 #define THREE_BODY                                                                             \
@@ -223,6 +230,79 @@ static void lost(void **state) {
     qd_scan_free(&sc);
 }
 
+/* ---- steady motions ------------------------------------------------------------------ */
+
+#define POWER_LAW                                                                              \
+    "coordinates r, theta\nparameters m = 3/2, k = 2, n = -2.5\n"                              \
+    "particle m at (r*cos(theta), r*sin(theta))\nV = k*r^(n + 1)/(n + 1)\n"
+
+#define SLEEPING_TOP                                                                           \
+    "coordinates a, b, psi\nparameters M = 1, h = 1/2, g = 2, A = 1, C = 1/2\n"                \
+    "R = rot_x(a)*rot_y(b)*rot_z(psi)\n"                                                       \
+    "body top mass M inertia (A - M*h^2, A - M*h^2, C) at R*(0, 0, h) orientation R\n"         \
+    "V = M*g*position(top).z\n"
+
+/* The scan of s along param with kept coordinate 0 held at x0 (hold) or
+ * momentum 0 held at p0. */
+static void steady_scan(qt_system *sys, qd_steady *s, const char *param, double a, double b,
+                        bool hold_x, double x0, double p0, size_t steps, qd_scan *out) {
+    double x[4] = {x0}, w[2] = {1}, p[2] = {p0};
+    bool xfix[4] = {hold_x}, wfix[2] = {false}, pfix[2] = {!hold_x};
+    qd_steady_point start = {x, w, p};
+    qd_scan_opts o = {.steps = steps};
+    qd_status st = qd_stability_scan(sys->ctx, s, sys->model, param, a, b, xfix, wfix, pfix, NULL,
+                                     &start, &o, out);
+    if (st != QD_OK)
+        fail_msg("qd_stability_scan: %s", qd_ctx_message(sys->ctx));
+}
+
+static void orbits_free_and_driven(void **state) {
+    qt_system *sys = qt_system_derive(state, POWER_LAW, false);
+    const qd_expr *theta = qt_symbol(sys, "theta");
+    for (int driven = 0; driven < 2; driven++) {
+        qd_steady *s = qd_steady_derive(sys->ctx, sys->model, sys->eom, 1, &theta, driven);
+        assert_non_null(s);
+        qd_scan sc;
+        double a = driven ? 0 : -4, b = driven ? 3 : -2, nc = driven ? 1 : -3;
+        steady_scan(sys, s, "n", a, b, true, 1.3, 0, 30, &sc);
+        assert_int_equal(sc.n, 3);
+        assert_int_equal(sc.ntrans, 1);
+        assert_int_equal(sc.trans[0].from, 0);
+        assert_int_equal(sc.trans[0].to, 1);
+        assert_true(fabs(sc.trans[0].value - nc) < 1e-10);
+        for (size_t k = 0; k < sc.count; k++) {
+            double n = sc.value[k], w2 = 2 * pow(1.3, n - 1) / 1.5;
+            assert_true(sc.q[3 * k] == 1.3);   /* held */
+            assert_true(fabs(sc.q[3 * k + 1] * sc.q[3 * k + 1] - w2) < 1e-9 * w2);
+        }
+        qd_scan_free(&sc);
+        qd_steady_free(s);
+    }
+}
+
+static void sleeping_top(void **state) {
+    qt_system *sys = qt_system_derive(state, SLEEPING_TOP, false);
+    const qd_expr *psi = qt_symbol(sys, "psi");
+    qd_steady *s = qd_steady_derive(sys->ctx, sys->model, sys->eom, 1, &psi, false);
+    assert_non_null(s);
+    /* 30 steps put a sample on the threshold (borderline there), 29 do not */
+    for (size_t steps = 29; steps <= 30; steps++) {
+        qd_scan sc;
+        steady_scan(sys, s, "g", 1, 8, false, 0, 3, steps, &sc);
+        assert_int_equal(sc.ntrans, 1);
+        assert_int_equal(sc.trans[0].from, 1);
+        assert_int_equal(sc.trans[0].to, 0);
+        /* nu^2 = 4 A M g h: g = 9/(4 * 1 * 1 * 1/2) */
+        assert_true(fabs(sc.trans[0].value - 4.5) < 1e-10);
+        for (size_t k = 0; k < sc.count; k++) {
+            assert_true(fabs(sc.q[4 * k]) < 1e-12 && fabs(sc.q[4 * k + 1]) < 1e-12);
+            assert_true(sc.q[4 * k + 3] == 3);
+        }
+        qd_scan_free(&sc);
+    }
+    qd_steady_free(s);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_teardown(l4_routh_value, qt_system_teardown),
@@ -232,6 +312,8 @@ int main(void) {
         cmocka_unit_test_teardown(errors, qt_system_teardown),
         cmocka_unit_test_teardown(derived_and_fixed, qt_system_teardown),
         cmocka_unit_test_teardown(lost, qt_system_teardown),
+        cmocka_unit_test_teardown(orbits_free_and_driven, qt_system_teardown),
+        cmocka_unit_test_teardown(sleeping_top, qt_system_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
