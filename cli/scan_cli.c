@@ -20,7 +20,7 @@ static const char *verdict_name(int s) {
 
 /* ---- reading --------------------------------------------------------------- */
 
-int cli_scan_range(cli_lin_run *r, const char *text, char *name, size_t cap, double *a,
+int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double *a,
                    double *b) {
     const char *eq = strchr(text, '='), *colon = eq ? strchr(eq, ':') : NULL;
     if (!eq || !colon) {
@@ -45,9 +45,9 @@ int cli_scan_range(cli_lin_run *r, const char *text, char *name, size_t cap, dou
     memcpy(lo, eq + 1, la);
     lo[la] = '\0';
     const qd_expr *x;
-    int rc = cli_state_number(r->ctx, "--scan", lo, &x, a);
+    int rc = cli_state_number(ctx, "--scan", lo, &x, a);
     if (rc == QD_EXIT_OK)
-        rc = cli_state_number(r->ctx, "--scan", colon + 1, &x, b);
+        rc = cli_state_number(ctx, "--scan", colon + 1, &x, b);
     free(lo);
     return rc;
 }
@@ -160,19 +160,17 @@ static bool all_conservative(const qd_scan *sc) {
     return true;
 }
 
-static void put_text(cli_lin_run *r, const char *name, const qd_scan *sc, const char *followed,
-                     qd_buf *b) {
-    const qd_eom *e = r->e;
+static void put_text(const cli_scan_view *v, const qd_scan *sc, qd_buf *b) {
     size_t n = sc->n;
     bool cons = all_conservative(sc);
-    qd_buf_printf(b, "scan of %s from ", name);
+    qd_buf_printf(b, "scan of %s from ", v->param);
     cli_state_put_result(b, sc->value[0]);
     qd_buf_puts(b, " to ");
     cli_state_put_result(b, sc->value[sc->count - 1]);
-    qd_buf_printf(b, " in %zu steps, following %s\n", sc->count - 1, followed);
-    qd_buf_printf(b, " %14s", name);
+    qd_buf_printf(b, " in %zu steps, following %s\n", sc->count - 1, v->followed);
+    qd_buf_printf(b, " %14s", v->param);
     for (size_t j = 0; j < n; j++)
-        qd_buf_printf(b, " %14s", qd_expr_name(e->q[j]));
+        qd_buf_printf(b, " %14s", v->names[j]);
     qd_buf_printf(b, " %14s  verdict\n", cons ? "min w^2" : "max Re s");
     for (size_t k = 0; k < sc->count; k++) {
         put_cell(b, sc->value[k], 14);
@@ -185,7 +183,7 @@ static void put_text(cli_lin_run *r, const char *name, const qd_scan *sc, const 
         qd_buf_puts(b, "no change of stability\n");
     for (size_t t = 0; t < sc->ntrans; t++) {
         const qd_scan_transition *tr = &sc->trans[t];
-        qd_buf_printf(b, "transition: %s = %.12g, %s -> %s\n", name, tr->value,
+        qd_buf_printf(b, "transition: %s = %.12g, %s -> %s\n", v->param, tr->value,
                       verdict_name(tr->from), verdict_name(tr->to));
     }
 }
@@ -202,17 +200,17 @@ static void json_verdict(cli_json *j, int s) {
     cli_json_string(j, verdict_name(s));
 }
 
-static void json_samples(cli_lin_run *r, const char *name, const qd_scan *sc, cli_json *j) {
+static void json_samples(const cli_scan_view *v, const qd_scan *sc, cli_json *j) {
     cli_json_key(j, "samples");
     cli_json_begin_array(j);
     for (size_t k = 0; k < sc->count; k++) {
         cli_json_begin_object(j);
-        cli_json_key(j, name);
+        cli_json_key(j, v->param);
         cli_json_number(j, sc->value[k]);
-        cli_json_key(j, "equilibrium");
+        cli_json_key(j, v->key);
         cli_json_begin_object(j);
         for (size_t i = 0; i < sc->n; i++) {
-            cli_json_key(j, qd_expr_name(r->e->q[i]));
+            cli_json_key(j, v->names[i]);
             cli_json_number(j, sc->q[k * sc->n + i]);
         }
         cli_json_end_object(j);
@@ -224,7 +222,8 @@ static void json_samples(cli_lin_run *r, const char *name, const qd_scan *sc, cl
     cli_json_end_array(j);
 }
 
-static void put_json(cli_lin_run *r, const char *name, const qd_scan *sc, qd_buf *b) {
+static void put_json(const cli_scan_view *v, const qd_scan *sc, qd_buf *b) {
+    const char *name = v->param;
     cli_json j;
     cli_json_init(&j, b);
     cli_json_begin_object(&j);
@@ -237,7 +236,7 @@ static void put_json(cli_lin_run *r, const char *name, const qd_scan *sc, qd_buf
     cli_json_end_array(&j);
     cli_json_key(&j, "steps");
     cli_json_number(&j, (double)(sc->count - 1));
-    json_samples(r, name, sc, &j);
+    json_samples(v, sc, &j);
     cli_json_key(&j, "transitions");
     cli_json_begin_array(&j);
     for (size_t t = 0; t < sc->ntrans; t++) {
@@ -264,36 +263,43 @@ static void put_json(cli_lin_run *r, const char *name, const qd_scan *sc, qd_buf
 
 /* ---- the command ------------------------------------------------------------------- */
 
+int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json) {
+    qd_buf out = QD_BUF_INIT;
+    if (json)
+        put_json(v, sc, &out);
+    else
+        put_text(v, sc, &out);
+    return cli_emit(&out, "scan");
+}
+
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json) {
     char name[128];
     double a, b;
-    int rc = cli_scan_range(r, range, name, sizeof name, &a, &b);
+    int rc = cli_scan_range(r->ctx, range, name, sizeof name, &a, &b);
     const qd_expr **ab = NULL;
+    const char **names = calloc(r->e->n + 1, sizeof *names);
+    if (!names)
+        rc = QD_EXIT_FAIL;
     if (rc == QD_EXIT_OK && about) {
         ab = calloc(r->e->n + 1, sizeof *ab);
         rc = ab ? cli_scan_about(r, about, ab) : QD_EXIT_FAIL;
     }
-    if (rc != QD_EXIT_OK) {
-        free(ab);
-        return rc;
-    }
     qd_scan_opts o = {.steps = steps, .about = ab};
-    qd_scan sc;
-    if (qd_modes_scan(r->ctx, r->e, r->mf.model, name, a, b, &o, &sc) != QD_OK) {
+    qd_scan sc = {0};
+    if (rc == QD_EXIT_OK && qd_modes_scan(r->ctx, r->e, r->mf.model, name, a, b, &o, &sc) != QD_OK) {
         rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
         cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
-    } else {
-        qd_buf out = QD_BUF_INIT;
+    } else if (rc == QD_EXIT_OK) {
         char followed[1024];
         snprintf(followed, sizeof followed, about ? "the equilibrium from %s" : "%s",
                  about ? about : "the equilibrium chosen at the start (as `qdot modes` does)");
-        if (json)
-            put_json(r, name, &sc, &out);
-        else
-            put_text(r, name, &sc, followed, &out);
-        rc = cli_emit(&out, "modes");
+        for (size_t j = 0; j < r->e->n; j++)
+            names[j] = qd_expr_name(r->e->q[j]);
+        cli_scan_view v = {name, names, followed, "equilibrium"};
+        rc = cli_scan_emit(&v, &sc, json);
     }
     qd_scan_free(&sc);
     free(ab);
+    free(names);
     return rc;
 }

@@ -14,6 +14,12 @@ Expected values come from SymPy, not from the code under test:
     omega = sqrt(g/a);
   - the inverted pendulum on a spring (examples/inverted_pendulum_spring.qd):
     d^2V/dtheta^2 at the top vanishes at k = m g/l;
+  - steady motions (`qdot stability --scan`): the sleeping top (Britannica
+    1911 sec. 6 (1), seed 004; seed-goldstein-britannica.md B11) is stable
+    while nu^2 > 4 A M g h: SymPy solves for g; circular orbits r = 1 under
+    -k r^n (B08, B09): V_eff = p^2/(2 m r^2) + k r^(n+1)/(n+1) with
+    p^2 = m k r^(n+3) has V_eff'' = 0 at n = -3 (SymPy), and with theta'
+    maintained (V - T0)'' = 0 at n = 1;
   - zero-velocity curves: the Jacobi constants h = W of L1..L5 (collinear
     points by SymPy's nsolve bracketed on the three intervals, seed-desloge-B.md
     pitfall 8; L4, L5 exactly -3/2 + mu (1 - mu)/2), and the topology of the
@@ -156,6 +162,45 @@ def scan_errors(qdot):
         check("lost where the fold is", 0 <= at <= 0.1 + 1e-12, err)
 
 
+def scan_steady(qdot):
+    nu, A, M, g, h = sp.symbols("nu A M g h", positive=True)
+    gc = float(sp.solve(nu**2 - 4 * A * M * g * h, g)[0].subs(
+        {nu: 3, A: 1, M: 1, h: sp.Rational(1, 2)}))
+    rc, out, err = run(qdot, "stability", str(EX / "sleeping_top.qd"), "--ignore", "psi",
+                       "--momentum", "p_psi=3", "--scan", "g=1:8", "--steps", "11", "--format",
+                       "json")
+    check("top rc", rc == 0, err)
+    if rc == 0:
+        d = json.loads(out)
+        tr = d["transitions"]
+        check("top g = nu^2/(4 A M h)", len(tr) == 1 and abs(tr[0]["g"] - gc) < 1e-10, (tr, gc))
+        check("top stable -> unstable", tr and tr[0]["from"] == "stable"
+              and tr[0]["to"] == "unstable", tr)
+        check("top upright", all(abs(s["steady_motion"]["a"]) < 1e-12 and
+                                 s["steady_motion"]["p_psi"] == 3 for s in d["samples"]))
+    r, n, m, k, p, w = sp.symbols("r n m k p w", real=True)
+    veff = p**2 / (2 * m * r**2) + k * r**(n + 1) / (n + 1)
+    free = sp.diff(veff, r, 2).subs(p**2, m * k * r**(n + 3)).subs({r: 1, m: 1, k: 1})
+    ndrv = sp.diff(k * r**(n + 1) / (n + 1) - m * w**2 * r**2 / 2, r, 2).subs(
+        w**2, k * r**(n - 1) / m).subs({r: 1, m: 1, k: 1})
+    cases = [("free", ["--ignore", "theta"], "n=-4:-2", float(sp.solve(free, n)[0]),
+              "unstable", "stable"),
+             ("driven", ["--driven", "theta"], "n=0:3", float(sp.solve(ndrv, n)[0]),
+              "unstable", "stable")]
+    for name, how, rng, nc, frm, to in cases:
+        rc, out, err = run(qdot, "stability", str(EX / "power_law_orbit.qd"), "--set", "n=-0.5",
+                           *how, "--at", "r=1", "--scan", rng, "--steps", "7", "--format", "json")
+        check(f"orbit {name} rc", rc == 0, err)
+        if rc:
+            continue
+        tr = json.loads(out)["transitions"]
+        check(f"orbit {name} n = {nc}", len(tr) == 1 and abs(tr[0]["n"] - nc) < 1e-10
+              and tr[0]["from"] == frm and tr[0]["to"] == to, (tr, nc))
+    rc, out, err = run(qdot, "stability", str(EX / "sleeping_top.qd"), "--ignore", "psi",
+                       "--momentum", "p_psi=3", "--steps", "5")
+    check("stability steps without scan", rc == 2 and "--scan" in err, err)
+
+
 def lagrange_levels():
     mu = sp.Rational(1, 100)
     w = W3.subs(MU, mu)
@@ -244,7 +289,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     qdot = Path(ap.parse_args().build) / "qdot"
-    for t in (scan_l4, scan_hoop, scan_inverted, scan_errors, zvc, zvc_errors):
+    for t in (scan_l4, scan_hoop, scan_inverted, scan_errors, scan_steady, zvc, zvc_errors):
         t(qdot)
     print(f"{results['passed']} passed, {results['failed']} failed")
     return 1 if results["failed"] else 0
