@@ -59,6 +59,8 @@ typedef struct stab_run {
     qd_steady_set set;               /* every steady motion found */
     qd_stability *an;                /* set.count analyses */
     size_t nsingular;                /* motions left out: singular coordinates there */
+    size_t nall;                     /* set.count as found: the left-out motions stay in
+                                        set (after the kept ones) for qd_steady_set_free */
 } stab_run;
 
 static const char usage_text[] =
@@ -473,11 +475,8 @@ static int solve(stab_run *r) {
     }
     if (kept == 0)   /* every one singular: the last error stands */
         return fail(r, qd_ctx_status(r->ctx) != QD_OK ? qd_ctx_status(r->ctx) : QD_ERR_SINGULAR);
-    for (size_t k = kept; k < r->set.count; k++) {
-        free(r->set.pts[k].x);
-        free(r->set.pts[k].w);
-        free(r->set.pts[k].p);
-    }
+    /* the library allocated them: they go back with the set (qd_steady_set_free) */
+    r->nall = r->set.count;
     r->set.count = kept;
     return QD_EXIT_OK;
 }
@@ -820,6 +819,8 @@ done:
     for (size_t k = 0; r.an && k < r.set.count; k++)
         qd_stability_free(&r.an[k]);
     free(r.an);
+    if (r.nall)
+        r.set.count = r.nall;
     qd_steady_set_free(&r.set);
     free(r.xfix);
     free(r.xseen);

@@ -27,6 +27,11 @@ Expected values come from SymPy, not from the code under test:
     joined above it; a horseshoe between h(L2) and h(L3); two tadpoles between
     h(L3) and h(L4); nothing above); the circle x^2 + y^2 = 2h of a harmonic
     oscillator;
+  - a regression: `qdot stability` on a system with a steady motion where
+    the mass matrix vanishes (T = x^2 x'^2/2 + (1 + x^2) phi'^2/2, x = 0) left
+    that motion out and then freed library memory with free() (an abort);
+    the other two motions are x = +-sqrt(u), 4 (u - 1)(1 + u)^2 = p^2 (SymPy),
+    with frequency^2 = V_eff''/x^2;
   - the errors: unknown parameter, empty range, a lost equilibrium (V = x^3/3
     + c x has x = -sqrt(-c) only for c < 0), --steps without --scan, a Jacobi
     integral that is not conserved, a bad box.
@@ -201,6 +206,26 @@ def scan_steady(qdot):
     check("stability steps without scan", rc == 2 and "--scan" in err, err)
 
 
+def singular_left_out(qdot):
+    f = model("coordinates x, phi\nparameters k = 1\nT = x^2*x'^2/2 + (1 + x^2)*phi'^2/2\n"
+              "V = k*(x^2 - 1)^2\n")
+    rc, out, err = run(qdot, "stability", f, "--ignore", "phi", "--momentum", "p_phi=1",
+                       "--format", "json")
+    check("singular left out rc", rc == 0, err)
+    if rc:
+        return
+    d = json.loads(out)
+    x = sp.symbols("x", positive=True)
+    veff = (x**2 - 1)**2 + sp.Rational(1, 2) / (1 + x**2)
+    x0 = [r for r in sp.solve(sp.diff(veff, x), x) if r.is_real and r > 0][0]
+    w2 = float((sp.diff(veff, x, 2) / x**2).subs(x, x0))
+    xs = sorted(m["steady"]["x"] for m in d["steady_motions"])
+    check("singular left out motions", len(xs) == 2 and abs(xs[0] + float(x0)) < 1e-10
+          and abs(xs[1] - float(x0)) < 1e-10, (xs, x0))
+    check("singular left out frequency", abs(d["frequencies"][0]**2 - w2) < 1e-9 * w2,
+          (d["frequencies"], w2))
+
+
 def lagrange_levels():
     mu = sp.Rational(1, 100)
     w = W3.subs(MU, mu)
@@ -289,7 +314,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     qdot = Path(ap.parse_args().build) / "qdot"
-    for t in (scan_l4, scan_hoop, scan_inverted, scan_errors, scan_steady, zvc, zvc_errors):
+    for t in (scan_l4, scan_hoop, scan_inverted, scan_errors, scan_steady, singular_left_out, zvc, zvc_errors):
         t(qdot)
     print(f"{results['passed']} passed, {results['failed']} failed")
     return 1 if results["failed"] else 0
