@@ -156,6 +156,9 @@ static qd_status modes_solve(scan_run *r, double *q) {
     double res, ftol = 1e-11 * qd__lin_scale(&r->L, q);
     if (!isfinite(ftol) || !qd__lm_solve(&r->L, q, ftol, 200, &res))
         return QD_ERR_NUMERIC;
+    /* a few more steps to round-off: the verdict near a collision of
+     * eigenvalues is as sensitive to the point as to the parameter */
+    qd__lm_solve(&r->L, q, 0, 4, &res);
     return QD_OK;
 }
 
