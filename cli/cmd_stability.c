@@ -61,6 +61,9 @@ typedef struct stab_run {
     size_t nsingular;                /* motions left out: singular coordinates there */
     size_t nall;                     /* set.count as found: the left-out motions stay in
                                         set (after the kept ones) for qd_steady_set_free */
+    const qd_expr *last;             /* the expression value_of read last */
+    const qd_expr **given;           /* nkeep + 2 ncyc: the held values as read (x, w, p),
+                                        for --scan to follow the parameter */
 } stab_run;
 
 static const char usage_text[] =
@@ -159,7 +162,8 @@ static int value_of(stab_run *r, const char *what, const char *a, const char *b,
     if (!e) {
         cli_diag_read(what, text, &err);
         rc = QD_EXIT_USAGE;
-    } else if (qd_eval(r->ctx, e, r->st.n - skip, r->st.syms + skip, r->st.vals + skip, out) !=
+    } else if ((r->last = e),
+               qd_eval(r->ctx, e, r->st.n - skip, r->st.syms + skip, r->st.vals + skip, out) !=
                    QD_OK ||
                !isfinite(*out)) {
         qd_ctx_clear_error(r->ctx);
@@ -288,7 +292,10 @@ static int rate_item(stab_run *r, const char *what, const char *na, const char *
         return QD_EXIT_USAGE;
     }
     r->wfix[c] = true;
-    return value_of(r, what, va, vb, &r->pt.w[c]);
+    int rc = value_of(r, what, va, vb, &r->pt.w[c]);
+    if (rc == QD_EXIT_OK)
+        r->given[r->s->nkeep + c] = r->last;
+    return rc;
 }
 
 static int momentum_item(stab_run *r, const char *what, const char *na, const char *nb,
@@ -301,7 +308,10 @@ static int momentum_item(stab_run *r, const char *what, const char *na, const ch
                 return QD_EXIT_USAGE;
             }
             r->pfix[c] = true;
-            return value_of(r, what, va, vb, &r->pt.p[c]);
+            int rc = value_of(r, what, va, vb, &r->pt.p[c]);
+            if (rc == QD_EXIT_OK)
+                r->given[r->s->nkeep + r->ncyc + c] = r->last;
+            return rc;
         }
     }
     cli_diag_error("%s: '%.*s' is not the momentum of an ignored coordinate (they are p_<q>)",
@@ -338,6 +348,8 @@ static int at_item(stab_run *r, const char *what, const char *na, const char *nb
     }
     if (rc == QD_EXIT_OK)
         r->xfix[j] = !strcmp(what, "--at");
+    if (rc == QD_EXIT_OK && r->xfix[j])
+        r->given[j] = r->last;
     return rc;
 }
 
@@ -423,7 +435,8 @@ static int prepare(stab_run *r, const stab_args *a) {
     r->pt.x = calloc(nk + 1, sizeof *r->pt.x);
     r->pt.w = calloc(MAX_LIST, sizeof *r->pt.w);
     r->pt.p = calloc(MAX_LIST, sizeof *r->pt.p);
-    if (!r->xfix || !r->xseen || !r->pt.x || !r->pt.w || !r->pt.p)
+    r->given = calloc(nk + 2 * r->ncyc + 1, sizeof *r->given);
+    if (!r->xfix || !r->xseen || !r->pt.x || !r->pt.w || !r->pt.p || !r->given)
         return QD_EXIT_FAIL;
     rc = initial_guesses(r);
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->ndriven; i++)
@@ -497,7 +510,7 @@ static void scan_names(const qd_steady *s, char (*buf)[64], const char **names) 
 }
 
 /* The steady motion followed along a parameter: a table and the changes of
- * its ordinary stability. */
+ * its stability. */
 static int scan(stab_run *r, const stab_args *a) {
     char name[128];
     double lo, hi;
@@ -507,7 +520,7 @@ static int scan(stab_run *r, const stab_args *a) {
     char (*buf)[64] = calloc(2 * r->ncyc + 1, sizeof *buf);
     if (!names || !buf)
         rc = QD_EXIT_FAIL;
-    qd_scan_opts o = {.steps = a->steps};
+    qd_scan_opts o = {.steps = a->steps, .about = r->given};
     qd_scan sc = {0};
     if (rc == QD_EXIT_OK && qd_stability_scan(r->ctx, r->s, r->mf.model, name, lo, hi, r->xfix,
                                               r->wfix, r->pfix, r->pguess, &r->pt, &o,
@@ -516,11 +529,11 @@ static int scan(stab_run *r, const stab_args *a) {
         cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
     } else if (rc == QD_EXIT_OK) {
         scan_names(r->s, buf, names);
-        cli_scan_view v = {name, names, r->s->driven
-                                            ? "the steady motion (rates maintained: V - T0); "
-                                              "ordinary stability"
-                                            : "the steady motion (momenta free: Routhian); "
-                                              "ordinary stability", "steady_motion"};
+        const char *how = r->s->driven ? "rates maintained: V - T0" : "momenta free: Routhian";
+        char followed[160];
+        snprintf(followed, sizeof followed, "the steady motion (%s); %s stability", how,
+                 sc.damped ? "with the model's damping" : "ordinary");
+        cli_scan_view v = {name, names, followed, "steady_motion"};
         rc = cli_scan_emit(&v, &sc, a->json);
     }
     qd_scan_free(&sc);
@@ -827,6 +840,7 @@ done:
     free(r.pt.x);
     free(r.pt.w);
     free(r.pt.p);
+    free(r.given);
     qd_steady_free(r.s);
     cli_state_free(&r.st);
     if (r.e)

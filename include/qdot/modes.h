@@ -181,6 +181,8 @@ typedef struct qd_scan {
     double *margin;               /* count: the smallest w^2 (conservative) or the
                                      largest Re s: its sign is the verdict's */
     bool *conservative;           /* count */
+    bool damped;                  /* qd_stability_scan: the roots judged were the damped
+                                     ones (the model's dissipation acts) at some sample */
     size_t ntrans;
     qd_scan_transition *trans;    /* ntrans, in the order of P */
 } qd_scan;

@@ -60,7 +60,9 @@ struct scan_run {
     const qd_steady *s;
     const bool *xfix, *wfix, *pfix, *pguess;
     const qd_steady_point *start;
+    const qd_expr *const *given; /* nu: held values as expressions (NULL: a number) */
     qd_steady_point pt;          /* scratch: u unpacked */
+    bool damped;                 /* some verdict was the damped one */
 };
 
 /* ---- the parameters ---------------------------------------------------------- */
@@ -273,17 +275,32 @@ static qd_status back_to(scan_run *r, double lo, const double *qlo, double *q) {
     return st;
 }
 
+/* Does the margin itself cross zero between samples k and k + 1, clear of
+ * round-off at both ends?  Then its sign is the quantity to bisect: a w^2
+ * through zero, a pair of damped roots through the imaginary axis.  Not at
+ * a collision of frequencies (L4 at Routh's value), where the margin is
+ * round-off on the stable side and the verdict is bisected instead. */
+static bool margin_crosses(const qd_scan *out, size_t k) {
+    double m0 = out->margin[k], m1 = out->margin[k + 1];
+    double big = fmax(fabs(m0), fabs(m1));
+    return out->conservative[k] == out->conservative[k + 1] && m0 * m1 < 0 &&
+           fmin(fabs(m0), fabs(m1)) > 1e-9 * big;
+}
+
 /* Bisect the change between samples k and k + 1 of out; qlo: room for n.
- * The predicate is "the verdict is still sample k's": a midpoint in the thin
- * borderline band where two frequencies meet (within QD_MODES_ZERO_TOL's
- * reach of the collision) counts with the far side, whose verdict the
- * transition reports. */
+ * The predicate is "the margin still has sample k's sign" when the margin
+ * crosses zero (margin_crosses): exact, whatever the tolerances of the
+ * verdict (a damped root with Re s < 1e-9 |s| counts as on the axis, which
+ * would put the bowl's threshold 4e-8 late).  Otherwise it is "the verdict
+ * is still sample k's": a midpoint in the thin borderline band where two
+ * frequencies meet (within QD_MODES_ZERO_TOL's reach of the collision)
+ * counts with the far side, whose verdict the transition reports. */
 static qd_status bisect(scan_run *r, qd_scan *out, size_t k, double tol, double *q, double *qlo,
                         double *work) {
     size_t n = r->nu;
-    double lo = out->value[k], hi = out->value[k + 1], margin;
+    double lo = out->value[k], hi = out->value[k + 1], margin, m0 = out->margin[k];
     int from = out->stable[k], to = out->stable[k + 1], v;
-    bool cons;
+    bool cons, by_margin = margin_crosses(out, k);
     memcpy(qlo, out->q + k * n, n * sizeof *qlo);
     qd_status st = back_to(r, lo, qlo, q);
     while (st == QD_OK && hi - lo > tol) {
@@ -293,7 +310,7 @@ static qd_status bisect(scan_run *r, qd_scan *out, size_t k, double tol, double 
         if ((st = advance(r, lo, mid, q, work)) != QD_OK ||
             (st = r->verdict(r, q, &v, &margin, &cons)) != QD_OK)
             break;
-        if (v == from) {
+        if (by_margin ? (margin > 0) == (m0 > 0) : v == from) {
             lo = mid;
             memcpy(qlo, q, n * sizeof *qlo);
         } else {
@@ -433,8 +450,30 @@ static void pack(const scan_run *r, const qd_steady_point *pt, double *u) {
 /* The steady motion from u: the given values held, the rest found by
  * qd_steady_find.  No motion there (or a singular point) is a failed step:
  * its message is dropped, the continuation halves the step. */
+/* The held values of u that are expressions (r->given), at the parameters
+ * set. */
+static qd_status held_values(scan_run *r, double *u) {
+    size_t nk = r->s->nkeep, nc = r->s->ncyc;
+    for (size_t i = 0; r->given && i < r->nu; i++) {
+        bool held = i < nk ? r->xfix[i] : i < nk + nc ? r->wfix[i - nk] : r->pfix[i - nk - nc];
+        if (!held || !r->given[i])
+            continue;
+        if (qd_eval(r->ctx, r->given[i], r->P.np + 1, r->P.syms, r->P.vals, &u[i]) != QD_OK ||
+            !isfinite(u[i])) {
+            qd__ctx_recover(r->ctx);
+            qd_ctx_error(r->ctx, QD_ERR_ARG, "a value given is not a finite number of the "
+                         "parameters at %s = %.12g", r->name, r->P.vals[r->P.idx]);
+            return QD_ERR_ARG;
+        }
+    }
+    return QD_OK;
+}
+
 static qd_status steady_solve(scan_run *r, double *u) {
     double res;
+    qd_status st0 = held_values(r, u);
+    if (st0 != QD_OK)
+        return st0;
     unpack(r, u);
     qd_status st = qd_steady_find(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, r->xfix,
                                   r->wfix, r->pfix, &r->pt, &res);
@@ -447,7 +486,8 @@ static qd_status steady_solve(scan_run *r, double *u) {
     return st;
 }
 
-/* The ordinary verdict (without dissipation) of qd_stability_analyze. */
+/* The verdict of qd_stability_analyze for the motion with the model's own
+ * damping: ordinary without dissipation, the damped roots with it. */
 static qd_status steady_verdict(scan_run *r, const double *u, int *stable, double *margin,
                                 bool *conservative) {
     qd_stability an;
@@ -455,8 +495,9 @@ static qd_status steady_verdict(scan_run *r, const double *u, int *stable, doubl
     qd_status st = qd_stability_analyze(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, &r->pt,
                                         &an);
     if (st == QD_OK) {
-        const qd_modes_result *o = &an.ordinary;
-        *stable = an.ordinary_stable;
+        const qd_modes_result *o = an.dissipative ? &an.damped : &an.ordinary;
+        r->damped = r->damped || an.dissipative;
+        *stable = an.dissipative ? an.damped_stable : an.ordinary_stable;
         *conservative = o->conservative;
         *margin = o->conservative ? o->omega2[0] : o->eig_re[0];
         qd_stability_free(&an);
@@ -472,8 +513,16 @@ static qd_status steady_first(scan_run *r, const qd_scan_opts *o, double a, doub
     qd_status st = params_at(r->ctx, &r->P, a);
     if (st != QD_OK)
         return st;
-    st = qd_steady_find_all(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, r->xfix, r->wfix,
-                            r->pfix, r->pguess, r->start, &set);
+    double *u0 = qd__calloc(r->ctx, r->nu + 1, sizeof *u0);
+    if (!u0)
+        return QD_ERR_NOMEM;
+    pack(r, r->start, u0);
+    if ((st = held_values(r, u0)) == QD_OK) {
+        unpack(r, u0);
+        st = qd_steady_find_all(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, r->xfix,
+                                r->wfix, r->pfix, r->pguess, &r->pt, &set);
+    }
+    qd__free(u0);
     if (st == QD_OK && set.count == 0) {
         qd_ctx_error(r->ctx, QD_ERR_NUMERIC, "no steady motion found at %s = %.12g", r->name, a);
         st = QD_ERR_NUMERIC;
@@ -500,8 +549,7 @@ qd_status qd_stability_scan(qd_ctx *ctx, const qd_steady *s, const qd_model *m,
     if (!ctx || !s || !m || !param || !start)
         return QD_ERR_ARG;
     qd_scan_opts o = opts ? *opts : (qd_scan_opts){0};
-    o.about = NULL;
-    scan_run r = {.ctx = ctx, .name = param, .what = "steady motion",
+    scan_run r = {.ctx = ctx, .name = param, .what = "steady motion", .given = o.about,
                   .nu = s->nkeep + 2 * s->ncyc, .s = s, .xfix = xfix, .wfix = wfix,
                   .pfix = pfix, .pguess = pguess, .start = start, .solve = steady_solve,
                   .verdict = steady_verdict, .first = steady_first};
@@ -511,8 +559,10 @@ qd_status qd_stability_scan(qd_ctx *ctx, const qd_steady *s, const qd_model *m,
         st = params_init(ctx, m, idx, &r.P);
     if (st == QD_OK)
         st = alloc_pt(ctx, s, &r.pt);
+    o.about = NULL;   /* the held values, not a predictor */
     if (st == QD_OK)
         st = run_scan(&r, &o, a, b, out);
+    out->damped = r.damped;
     if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "out of memory in the scan");
     qd__free(r.P.syms);

@@ -20,6 +20,10 @@
  *     sec. 5-6, seed 004; seed-goldstein-britannica.md B08, B09, P4); the
  *     sleeping top with nu = p_psi given, stable iff nu^2 > 4 A M g h
  *     (Britannica sec. 6 (1), seed 004; B11): g = nu^2/(4 A M h);
+ *   a particle in a spherical bowl turning at a rate W maintained (the
+ *     driven rate follows W as it is scanned): the lowest point is stable
+ *     with friction only while W^2 < g/a, always without (Britannica sec. 6
+ *     eqs. (2)-(7), seed 004; seed-goldstein-britannica.md B13, P5, P6);
  *   errors: an unknown, fixed or derived parameter, an empty range, a range
  *     through 0 for a parameter assumed positive, an equilibrium that ceases
  *     to exist (V = x^3/3 + c x: x = -sqrt(-c) only while c < 0).
@@ -303,6 +307,36 @@ static void sleeping_top(void **state) {
     qd_steady_free(s);
 }
 
+#define BOWL                                                                                   \
+    "coordinates x, y, phi\nparameters m = 1, I = 1, a = 0.8, g = 1.3, k = 0.1, W = 0.5\n"     \
+    "z = a - sqrt(a^2 - x^2 - y^2)\nparticle m at rot_z(phi)*(x, y, z)\nT = I/2*phi'^2\n"      \
+    "V = m*g*z\ndissipation = k*m/2*(x'^2 + y'^2 + z'^2)\n"
+
+static void bowl_driven_at_parameter(void **state) {
+    qt_system *sys = qt_system_derive(state, BOWL, false);
+    const qd_expr *phi = qt_symbol(sys, "phi");
+    qd_steady *s = qd_steady_derive(sys->ctx, sys->model, sys->eom, 1, &phi, true);
+    assert_non_null(s);
+    /* u = (x, y, phi', p_phi): phi' held at W */
+    double x[2] = {0, 0}, w[1] = {0.5}, p[1] = {0};
+    bool xfix[2] = {false, false}, wfix[1] = {true}, pfix[1] = {false};
+    const qd_expr *given[4] = {NULL, NULL, qt_symbol(sys, "W"), NULL};
+    qd_steady_point start = {x, w, p};
+    qd_scan_opts o = {.steps = 13, .about = given};
+    qd_scan sc;
+    assert_int_equal(qd_stability_scan(sys->ctx, s, sys->model, "W", 0.2, 2.5, xfix, wfix, pfix,
+                                       NULL, &start, &o, &sc), QD_OK);
+    assert_true(sc.damped);
+    assert_int_equal(sc.ntrans, 1);
+    assert_int_equal(sc.trans[0].from, 1);
+    assert_int_equal(sc.trans[0].to, 0);
+    assert_true(fabs(sc.trans[0].value - sqrt(1.3 / 0.8)) < 1e-10);
+    for (size_t k = 0; k < sc.count; k++)
+        assert_true(sc.q[4 * k + 2] == sc.value[k]);   /* the rate followed W */
+    qd_scan_free(&sc);
+    qd_steady_free(s);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_teardown(l4_routh_value, qt_system_teardown),
@@ -314,6 +348,7 @@ int main(void) {
         cmocka_unit_test_teardown(lost, qt_system_teardown),
         cmocka_unit_test_teardown(orbits_free_and_driven, qt_system_teardown),
         cmocka_unit_test_teardown(sleeping_top, qt_system_teardown),
+        cmocka_unit_test_teardown(bowl_driven_at_parameter, qt_system_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
