@@ -183,7 +183,7 @@ static void put_text(const cli_scan_view *v, const qd_scan *sc, qd_buf *b) {
         qd_buf_puts(b, "no change of stability\n");
     for (size_t t = 0; t < sc->ntrans; t++) {
         const qd_scan_transition *tr = &sc->trans[t];
-        qd_buf_printf(b, "transition: %s = %.12g, %s -> %s\n", v->param, tr->value,
+        qd_buf_printf(b, "transition: %s = %.10g, %s -> %s\n", v->param, tr->value,
                       verdict_name(tr->from), verdict_name(tr->to));
     }
 }

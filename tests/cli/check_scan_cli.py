@@ -107,7 +107,7 @@ def scan_l4(qdot):
                        "mu=0.02:0.05", "--steps", "4", "--about", "x = 1/2 - mu, y = sqrt(3)/2")
     lines = out.splitlines()
     check("l4 text table", rc == 0 and len(lines) == 1 + 1 + 5 + 1, out + err)
-    check("l4 text transition", rc == 0 and lines[-1].startswith("transition: mu = 0.03852089650")
+    check("l4 text transition", rc == 0 and lines[-1].startswith("transition: mu = 0.0385208965,")
           and lines[-1].endswith("stable -> unstable"), out)
 
 
