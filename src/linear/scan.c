@@ -75,7 +75,8 @@ static qd_status params_at(qd_ctx *ctx, scan_params *P, double v) {
         }
         if (qd_eval(ctx, qd_model_param_definition(P->m, i), i, P->syms, P->vals,
                     &P->vals[i]) != QD_OK || !isfinite(P->vals[i])) {
-            qd__ctx_recover(ctx);
+            if (!qd__ctx_recover(ctx))
+                return QD_ERR_NOMEM;
             qd_ctx_error(ctx, QD_ERR_ARG, "parameter %s has no finite value at %s = %.17g",
                          qd_expr_name(P->syms[i]), qd_expr_name(P->syms[P->idx]), v);
             return QD_ERR_ARG;
@@ -103,7 +104,8 @@ static qd_status param_find(qd_ctx *ctx, const qd_model *m, const char *name, do
         return QD_ERR_ARG;
     }
     if (qd_eval(ctx, qd_model_param_definition(m, i), 0, NULL, NULL, &v) != QD_OK) {
-        qd__ctx_recover(ctx);
+        if (!qd__ctx_recover(ctx))
+            return QD_ERR_NOMEM;
         qd_ctx_error(ctx, QD_ERR_ARG, "parameter %s is defined from other parameters: scan "
                      "one of those", name);
         return QD_ERR_ARG;
@@ -144,7 +146,8 @@ static qd_status about_at(scan_run *r, double *out) {
     for (size_t j = 0; r->about && j < r->L.n; j++)
         if (qd_eval(r->ctx, r->about[j], r->P.np, r->P.syms, r->P.vals, &out[j]) != QD_OK ||
             !isfinite(out[j])) {
-            qd__ctx_recover(r->ctx);
+            if (!qd__ctx_recover(r->ctx))
+                return QD_ERR_NOMEM;
             qd_ctx_error(r->ctx, QD_ERR_ARG, "the point given for %s is not a finite number "
                          "of the parameters", qd_expr_name(r->L.q[j]));
             return QD_ERR_ARG;
@@ -157,11 +160,11 @@ static qd_status modes_solve(scan_run *r, double *q) {
     qd__lin_bind(&r->L, r->P.np, r->P.syms, r->P.vals);
     double res, ftol = 1e-11 * qd__lin_scale(&r->L, q);
     if (!isfinite(ftol) || !qd__lm_solve(&r->L, q, ftol, 200, &res))
-        return QD_ERR_NUMERIC;
+        return qd__ctx_nomem(r->ctx) ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
     /* a few more steps to round-off: the verdict near a collision of
      * eigenvalues is as sensitive to the point as to the parameter */
     qd__lm_solve(&r->L, q, 0, 4, &res);
-    return QD_OK;
+    return qd__ctx_nomem(r->ctx) ? QD_ERR_NOMEM : QD_OK;
 }
 
 /* Set the parameters to v and solve for the point from u (in place), moved
@@ -460,7 +463,8 @@ static qd_status held_values(scan_run *r, double *u) {
             continue;
         if (qd_eval(r->ctx, r->given[i], r->P.np + 1, r->P.syms, r->P.vals, &u[i]) != QD_OK ||
             !isfinite(u[i])) {
-            qd__ctx_recover(r->ctx);
+            if (!qd__ctx_recover(r->ctx))
+                return QD_ERR_NOMEM;
             qd_ctx_error(r->ctx, QD_ERR_ARG, "a value given is not a finite number of the "
                          "parameters at %s = %.12g", r->name, r->P.vals[r->P.idx]);
             return QD_ERR_ARG;
@@ -477,10 +481,8 @@ static qd_status steady_solve(scan_run *r, double *u) {
     unpack(r, u);
     qd_status st = qd_steady_find(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, r->xfix,
                                   r->wfix, r->pfix, &r->pt, &res);
-    if (st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) {
-        qd__ctx_recover(r->ctx);
-        return QD_ERR_NUMERIC;
-    }
+    if (st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR)
+        return qd__ctx_recover(r->ctx) ? QD_ERR_NUMERIC : QD_ERR_NOMEM;
     if (st == QD_OK)
         pack(r, &r->pt, u);
     return st;
@@ -494,6 +496,8 @@ static qd_status steady_verdict(scan_run *r, const double *u, int *stable, doubl
     unpack(r, u);
     qd_status st = qd_stability_analyze(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, &r->pt,
                                         &an);
+    if (st != QD_OK && qd__ctx_nomem(r->ctx))
+        st = QD_ERR_NOMEM; /* the analysis may report what the failure left (SINGULAR) */
     if (st == QD_OK) {
         const qd_modes_result *o = an.dissipative ? &an.damped : &an.ordinary;
         r->damped = r->damped || an.dissipative;
@@ -521,6 +525,8 @@ static qd_status steady_first(scan_run *r, const qd_scan_opts *o, double a, doub
         unpack(r, u0);
         st = qd_steady_find_all(r->ctx, r->s, r->P.np + 1, r->P.syms, r->P.vals, r->xfix,
                                 r->wfix, r->pfix, r->pguess, &r->pt, &set);
+        if (st != QD_OK && qd__ctx_nomem(r->ctx))
+            st = QD_ERR_NOMEM; /* the search may report what the failure left (SINGULAR) */
     }
     qd__free(u0);
     if (st == QD_OK && set.count == 0) {
@@ -562,6 +568,8 @@ qd_status qd_stability_scan(qd_ctx *ctx, const qd_steady *s, const qd_model *m,
     o.about = NULL;   /* the held values, not a predictor */
     if (st == QD_OK)
         st = run_scan(&r, &o, a, b, out);
+    if (st == QD_OK && qd__ctx_nomem(ctx))
+        st = QD_ERR_NOMEM; /* a search inside took a fallback for want of memory */
     out->damped = r.damped;
     if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "out of memory in the scan");
