@@ -1,20 +1,20 @@
 /*
- * src/linear/scan.c - an equilibrium followed along a parameter, and the
- * values where its stability changes (qd_modes_scan, qdot/modes.h).
+ * src/linear/scan.c - an equilibrium (qd_modes_scan, qdot/modes.h) or a
+ * steady motion (qd_stability_scan, qdot/stability.h) followed along a
+ * parameter, and the values where its stability changes.
  *
- * Natural-parameter continuation: at each sample the equilibrium of the
- * previous one (moved by the change of `about`, when given) starts damped
- * Newton (qd__lm_solve).  The verdict is the one qd_modes_solve gives, so a
- * scan agrees with `qdot modes` at every value it lists.  A change of
- * verdict between two samples is bisected on the verdict itself: the verdict
- * is a sign (of the smallest w^2, of the largest Re s, of the discriminant
- * of the characteristic polynomial in s^2 for the gyroscopic L4), and its
- * change is where the eigenvalues cross or collide, which bisection finds
- * to the width asked without any derivative.  Near a collision on the
- * imaginary axis (Routh's mu for L4) the eigenvalues are computed to
- * sqrt(eps) only, but the split they show grows as sqrt(|mu - mu_c|), so
- * the verdict stays right to |mu - mu_c| ~ eps (Desloge ch. 62;
- * seed-desloge-B.md C6, pitfall 3).
+ * Natural-parameter continuation: at each sample the point of the previous
+ * one (moved by the change of `about`, when given) starts damped Newton
+ * (qd__lm_solve; qd_steady_find for steady motions, the given values held).
+ * The verdict is the one qd_modes_solve / qd_stability_analyze gives, so a
+ * scan agrees with `qdot modes` and `qdot stability` at every value it
+ * lists.  A change between two samples is bisected: on the sign of the
+ * margin (the smallest w^2, the largest Re s) when it crosses zero clear of
+ * round-off, else on the verdict itself, which is in effect the sign of the
+ * discriminant in s^2 where two frequencies collide (L4).  Near such a
+ * collision the eigenvalues are computed to sqrt(eps) only, but the split
+ * grows as sqrt(|mu - mu_c|), so the verdict stays right to
+ * |mu - mu_c| ~ eps (Desloge ch. 62; seed-desloge-B.md C6, pitfall 3).
  */
 #include "linear.h"
 
@@ -77,7 +77,7 @@ static qd_status params_at(qd_ctx *ctx, scan_params *P, double v) {
                     &P->vals[i]) != QD_OK || !isfinite(P->vals[i])) {
             if (!qd__ctx_recover(ctx))
                 return QD_ERR_NOMEM;
-            qd_ctx_error(ctx, QD_ERR_ARG, "parameter %s has no finite value at %s = %.17g",
+            qd_ctx_error(ctx, QD_ERR_ARG, "parameter %s has no finite value at %s = %.12g",
                          qd_expr_name(P->syms[i]), qd_expr_name(P->syms[P->idx]), v);
             return QD_ERR_ARG;
         }
@@ -136,7 +136,7 @@ static qd_status params_init(qd_ctx *ctx, const qd_model *m, size_t idx, scan_pa
         P->syms[i] = qd_model_param(m, i);
     P->syms[P->np] = qd_time(ctx);   /* t = 0: a steady motion's equations ask for it */
     P->vals[P->np] = 0;
-    return QD_OK;
+    return P->syms[P->np] ? QD_OK : QD_ERR_NOMEM;
 }
 
 /* ---- one point ------------------------------------------------------------------ */

@@ -63,10 +63,10 @@ static bool box_ok(const qd_eom *e, const qd_zvc_box *b) {
 static qd_status grid_values(qd_ctx *ctx, const qd_eom *e, const qd_expr *W,
                              const qd_zvc_box *b, size_t nvals, const qd_expr *const *syms,
                              const double *vals, double *f) {
-    size_t nin, sx = SIZE_MAX, sy = SIZE_MAX;
+    size_t nin = 0, sx = SIZE_MAX, sy = SIZE_MAX;
     const qd_expr **in = qd__num_inputs(ctx, 1, &W, &nin);
     qd_prog *p = in ? qd_prog_new(ctx, nin, in, 1, &W) : NULL;
-    double *iv = qd__calloc(ctx, nin + 1, sizeof *iv);
+    double *iv = p ? qd__calloc(ctx, nin + 1, sizeof *iv) : NULL;
     qd_status st = p && iv ? QD_OK : (qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM);
     for (size_t i = 0; st == QD_OK && i < nin; i++) {
         for (size_t k = 0; k < nvals; k++)
