@@ -39,6 +39,8 @@ static const cli_cmd commands[] = {
      cli_cmd_hj, true},
     {"action", "FILE [--at ...] [--format F]", "action-angle variables: J, frequencies",
      cli_cmd_action, true},
+    {"zvc", "FILE --box ... --level H", "Jacobi's integral and the zero-velocity curves",
+     cli_cmd_zvc, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

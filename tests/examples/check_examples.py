@@ -628,6 +628,14 @@ def _(q, v, t, p):
             -2 * v['x'] + y - (1 - mu) * y / r1 - mu * y / r2]
 
 
+@example('inverted_pendulum_spring', ['theta'])
+def _(q, v, t, p):
+    # derived from V = m g l cos th + k/2 (l sin th)^2 (examples/inverted_pendulum_spring.qd):
+    # m l^2 th'' = m g l sin th - k l^2 sin th cos th
+    th = q['theta']
+    return [p['g'] / p['l'] * sin(th) - p['k'] / p['m'] * sin(th) * cos(th)]
+
+
 @example('ring_three_masses', ['x1', 'y1', 'x2', 'y2', 'x3', 'y3'])
 def _(q, v, t, p):
     # Desloge ch. 66: each spring pulls its ends together with k (d - a) along the line
