@@ -214,8 +214,12 @@ def main():
                 # Bertrand (Byerly art. 31): the same blow without the
                 # sudden constraints and prescriptions leaves more energy,
                 # by T of the difference, when every sudden E is 0.
-                sudden = [E for _, E, _ in case.rows if E is not None]
-                if sudden and all(E == 0 for E in sudden):
+                # (the theorem compares homogeneous relations: c(q') = a . q'
+                # with no constant part, held at 0)
+                removed = [(e, E) for e, E, _ in case.rows if E is not None]
+                homogeneous = all(E == 0 and e.subs({v: 0 for v in case.v}) == 0
+                                  for e, E in removed)
+                if removed and homogeneous:
                     vf, _ = case.solve(with_sudden=False)
                     diff = [a - b for a, b in zip(vf, v1)]
                     Tf = case.kinetic(vf)
