@@ -33,6 +33,8 @@ static const cli_cmd commands[] = {
      cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
      cli_cmd_stability, true},
+    {"impulse", "FILE [--at ...] [--prescribe ...]", "a blow, a sudden constraint, a collision",
+     cli_cmd_impulse, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
