@@ -18,6 +18,7 @@
  */
 #include "cli.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
@@ -115,7 +116,11 @@ static void header(check *c, const char *path, const qd_eom *e) {
     qd_buf_puts(&c->out, "parameters:");
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         qd_buf_printf(&c->out, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        cli_state_put_double(&c->out, cli_state_value(qd_model_param_value(m, i)));
+        /* a value written as pi/6 is an expression, not a number node */
+        double x = NAN;
+        if (qd_eval(c->ctx, qd_model_param_value(m, i), 0, NULL, NULL, &x) != QD_OK)
+            qd_ctx_clear_error(c->ctx);
+        cli_state_put_double(&c->out, x);
     }
     qd_buf_puts(&c->out, qd_model_nparams(m) ? "\n" : " none\n");
 }
@@ -144,6 +149,46 @@ static void constraints(check *c, const qd_eom *e) {
             qd_buf_puts(&c->out, "\n");
         }
     }
+}
+
+/* What acts only at an instant (`qdot impulse`, the contacts of
+ * `qdot simulate`). */
+static void impulsive(check *c) {
+    const qd_model *m = c->m;
+    for (size_t j = 0; j < qd_model_ncoords(m); j++) {
+        const qd_expr *P = qd_simplify(c->ctx, qd_model_impulse(m, j));
+        if (!P || qd_is_zero(P))
+            continue;
+        qd_buf_printf(&c->out, "generalized impulse Qhat[%s] = ", qd_expr_name(qd_model_coord(m, j)));
+        put_expr(c, P);
+        qd_buf_puts(&c->out, "\n");
+    }
+    struct {
+        const char *what;
+        size_t n;
+        const char *(*name)(const qd_model *, size_t);
+        const qd_expr *(*expr)(const qd_model *, size_t);
+        const qd_expr *(*E)(const qd_model *, size_t);
+        const char *rel;
+    } kinds[] = {
+        {"sudden constraint", qd_model_nimpact_constraints(m), qd_model_impact_constraint_name,
+         qd_model_impact_constraint, qd_model_impact_constraint_restitution, " = 0"},
+        {"contact", qd_model_nimpacts(m), qd_model_impact_name, qd_model_impact_gap,
+         qd_model_impact_restitution, " >= 0"},
+        {"prescribed", qd_model_nprescribed(m), qd_model_prescribed_name, qd_model_prescribed,
+         NULL, " = 0"},
+    };
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++)
+        for (size_t i = 0; i < kinds[k].n; i++) {
+            qd_buf_printf(&c->out, "%s %s: ", kinds[k].what, kinds[k].name(m, i));
+            put_expr(c, kinds[k].expr(m, i));
+            qd_buf_puts(&c->out, kinds[k].rel);
+            if (kinds[k].E) {
+                qd_buf_puts(&c->out, ", restitution ");
+                put_expr(c, kinds[k].E(m, i));
+            }
+            qd_buf_puts(&c->out, "\n");
+        }
 }
 
 static void forces(check *c) {
@@ -232,6 +277,7 @@ static int summarize(check *c, const cli_model_file *mf) {
     depends(c, "L:", Lm);
     forces(c);
     constraints(c, e);
+    impulsive(c);
     const qd_expr *L = qd_simplify(c->ctx, Lm);
     if (L) {
         cyclic(c, e);

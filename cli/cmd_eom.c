@@ -173,6 +173,15 @@ static qd_status reaction_at(eom_run *r, size_t i, const double *lambda) {
     return st;
 }
 
+/* Is reaction i on a sudden constraint (`impact constraint`)? */
+static bool impulsive(const qd_model *m, size_t i) {
+    const char *con = qd_model_reaction_constraint(m, i);
+    for (size_t k = 0; k < qd_model_nimpact_constraints(m); k++)
+        if (!strcmp(con, qd_model_impact_constraint_name(m, k)))
+            return true;
+    return false;
+}
+
 static qd_status reactions(eom_run *r, const double *lambda) {
     size_t nr = qd_model_nreactions(r->mf.model);
     if (!nr)
@@ -184,7 +193,8 @@ static qd_status reactions(eom_run *r, const double *lambda) {
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
     for (size_t i = 0; i < nr && st == QD_OK; i++)
-        st = reaction_at(r, i, lambda);
+        if (!impulsive(r->mf.model, i)) /* qdot impulse reports those */
+            st = reaction_at(r, i, lambda);
     return st;
 }
 

@@ -111,6 +111,8 @@ size_t qd__diag_bad_char(const char *s, char *msg, size_t cap, const char **hint
     else
         snprintf(msg, cap, "unexpected character '%c'", s[0]);
     *hint = "names are ASCII letters, digits and _; operators are + - * / ^ and '";
+    if (s[0] == '>' || s[0] == '<') /* only a contact compares, and never strictly */
+        *hint = "a contact's gap is compared with >= or <=: impact floor: y >= 0";
     return 1;
 }
 

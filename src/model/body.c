@@ -254,7 +254,7 @@ bool qd__mdl_stmt_body(parser *p) {
 
 /* The body named by the current token, or NULL after an error naming the
  * nearest body. */
-static const body *expect_body(parser *p, const char *what) {
+const body *qd__mdl_expect_body(parser *p, const char *what) {
     const qd_model *m = p->m;
     if (p->lx.tok.kind != TK_IDENT) {
         qd__mdl_perr_tok(p, body_usage, "%s needs a body's name, found %s", what, qd__lex_tk_name(p->lx.tok.kind));
@@ -314,7 +314,7 @@ static bool body_point(parser *p, const body *b, value *out) {
 bool qd__mdl_body_call(parser *p, const char *name, size_t off, value *out) {
     size_t open = p->lx.tok.off;
     qd__lex_next(&p->lx);
-    const body *b = expect_body(p, name);
+    const body *b = qd__mdl_expect_body(p, name);
     if (!b)
         return false;
     value r = {VK_VECTOR, {NULL}, off, 0};
@@ -349,7 +349,7 @@ bool qd__mdl_stmt_torque(parser *p) {
         return qd__mdl_perr_tok(p, "write: torque (Gx, Gy, Gz) on BODY", "expected 'on', found %s",
                         qd__lex_tk_name(p->lx.tok.kind));
     qd__lex_next(&p->lx);
-    const body *b = expect_body(p, "torque");
+    const body *b = qd__mdl_expect_body(p, "torque");
     if (!b)
         return false;
     qd_ctx *ctx = C(p);

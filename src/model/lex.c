@@ -97,6 +97,9 @@ void qd__lex_next(lexer *lx) {
     } else if (s[0] == '*' && s[1] == '*') {
         t.kind = TK_CARET; /* Python's power, accepted as ^ */
         t.len = 2;
+    } else if ((s[0] == '>' || s[0] == '<') && s[1] == '=') {
+        t.kind = s[0] == '>' ? TK_GE : TK_LE; /* a unilateral contact's gap */
+        t.len = 2;
     } else {
         t.kind = punct(lx, *s);
         t.len = 1;
@@ -118,7 +121,7 @@ const char *qd__lex_tk_name(tk_kind k) {
     static const char *const names[] = {
         "the end of the file", "the end of the line", "a name", "a number",
         "'('", "')'", "'['", "']'", "','", "'='", "'+'", "'-'", "'*'", "'/'", "'^'",
-        "a prime (')", "'.'", "':'", "an unexpected character",
+        "a prime (')", "'.'", "':'", "'>='", "'<='", "an unexpected character",
     };
     return (unsigned)k < sizeof names / sizeof names[0] ? names[k] : "?";
 }

@@ -14,7 +14,7 @@ typedef enum tk_kind {
     TK_EOF, TK_NEWLINE, TK_IDENT, TK_NUMBER,
     TK_LPAREN, TK_RPAREN, TK_LBRACK, TK_RBRACK,
     TK_COMMA, TK_EQ, TK_PLUS, TK_MINUS, TK_STAR, TK_SLASH, TK_CARET,
-    TK_PRIME, TK_DOT, TK_COLON, TK_BAD
+    TK_PRIME, TK_DOT, TK_COLON, TK_GE, TK_LE, TK_BAD
 } tk_kind;
 
 typedef struct token {

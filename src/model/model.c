@@ -84,6 +84,16 @@ void qd_model_free(qd_model *m) {
     for (size_t i = 0; i < m->nints; i++)
         qd__free((char *)m->ints[i].name);
     qd__free(m->ints);
+    qd__mdl_free_blows(m->blows, 0, m->nblows);
+    qd__free(m->blows);
+    qd__mdl_free_sudden(m->sudden, 0, m->nsudden);
+    qd__free(m->sudden);
+    qd__mdl_free_sudden(m->impacts, 0, m->nimpacts);
+    qd__free(m->impacts);
+    qd__mdl_free_sudden(m->prescribed, 0, m->nprescribed);
+    qd__free(m->prescribed);
+    qd__free(m->parts);
+    qd__free(m->Qhat);
     qd__free(m->mom);
     qd__free(m->con_names);
     qd__free(m->cons);
@@ -296,6 +306,10 @@ const qd_expr *qd__mdl_find_momentum(const qd_model *m, const char *name, size_t
 
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order) {
     return coord < m->ncoords && order < 2 ? m->init[2 * coord + order] : NULL;
+}
+
+const qd_expr *qd_model_initial_definition(const qd_model *m, size_t coord, unsigned order) {
+    return coord < m->ncoords && order < 2 ? m->init_defs[2 * coord + order] : NULL;
 }
 
 const qd_expr *qd_model_definition(const qd_model *m, const char *name) {

@@ -101,18 +101,19 @@ qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
  * coordinate forces and initial values are replaced (copies are kept). */
 typedef struct mark {
     qd_model m;
-    const qd_expr **percoord; /* Q, then init, then init_defs */
+    const qd_expr **percoord; /* Q, then init, then init_defs, then Qhat */
 } mark;
 
 static bool mark_take(const qd_model *m, mark *k) {
     size_t n = m->ncoords;
     k->m = *m;
-    k->percoord = qd__malloc(m->ctx, (5 * n + 1) * sizeof *k->percoord);
+    k->percoord = qd__malloc(m->ctx, (6 * n + 1) * sizeof *k->percoord);
     if (!k->percoord)
         return false;
     memcpy(k->percoord, m->Q, n * sizeof *m->Q);
     memcpy(k->percoord + n, m->init, 2 * n * sizeof *m->init);
     memcpy(k->percoord + 3 * n, m->init_defs, 2 * n * sizeof *m->init_defs);
+    memcpy(k->percoord + 5 * n, m->Qhat, n * sizeof *m->Qhat);
     return true;
 }
 
@@ -135,6 +136,15 @@ static void mark_restore(qd_model *m, const mark *k) {
     }
     for (size_t i = b->nints; i < m->nints; i++)
         qd__free((char *)m->ints[i].name);
+    qd__mdl_free_blows(m->blows, b->nblows, m->nblows);
+    qd__mdl_free_sudden(m->sudden, b->nsudden, m->nsudden);
+    qd__mdl_free_sudden(m->impacts, b->nimpacts, m->nimpacts);
+    qd__mdl_free_sudden(m->prescribed, b->nprescribed, m->nprescribed);
+    m->nblows = b->nblows;
+    m->nsudden = b->nsudden;
+    m->nimpacts = b->nimpacts;
+    m->nprescribed = b->nprescribed;
+    m->nparts = b->nparts;
     m->nparams = b->nparams;
     m->nfuncs = b->nfuncs;
     m->ndefs = b->ndefs;
@@ -154,6 +164,7 @@ static void mark_restore(qd_model *m, const mark *k) {
     memcpy(m->Q, k->percoord, n * sizeof *m->Q);
     memcpy(m->init, k->percoord + n, 2 * n * sizeof *m->init);
     memcpy(m->init_defs, k->percoord + 3 * n, 2 * n * sizeof *m->init_defs);
+    memcpy(m->Qhat, k->percoord + 5 * n, n * sizeof *m->Qhat);
 }
 
 /* The statements that would change the number of coordinates or momenta,

@@ -39,7 +39,8 @@ typedef struct body {
  * (reaction.c). */
 typedef struct reaction {
     const char *name;      /* owned copy: the label, or the constraint's name */
-    size_t con;            /* index into the model's constraints */
+    size_t con;            /* index into the model's constraints (or its sudden ones) */
+    bool sudden;           /* con indexes the `impact constraint`s */
     const qd_expr *r[3];
 } reaction;
 
@@ -55,6 +56,28 @@ typedef struct integral {
     const char *name;      /* owned copy */
     const qd_expr *expr;
 } integral;
+
+/* A blow (`impulse J at r`, `impulse G on BODY`, `Qhat[q] = X`):
+ * its generalized impulse on each coordinate declared before it
+ * (impulse.c). */
+typedef struct blow {
+    const char *label;     /* owned copy of the statement's text */
+    const qd_expr **w;     /* nw entries */
+    size_t nw;
+} blow;
+
+/* A relation that acts only at an impulse: a sudden constraint, a
+ * unilateral contact's gap or a prescription (impulse.c). */
+typedef struct sudden {
+    const char *name;      /* owned copy */
+    const qd_expr *expr;   /* lhs - rhs, or the gap */
+    const qd_expr *E;      /* the restitution (0 for a prescription) */
+} sudden;
+
+typedef struct particle {
+    const qd_expr *mass;
+    const qd_expr *r[3];
+} particle;
 
 typedef struct def {
     const char *name;      /* interned by the kernel */
@@ -103,6 +126,17 @@ struct qd_model {
     size_t nsyms;
     integral *ints;
     size_t nints;
+    particle *parts;
+    size_t nparts;
+    blow *blows;
+    size_t nblows;
+    const qd_expr **Qhat;      /* per coordinate: the sum of the blows */
+    sudden *sudden;            /* `impact constraint` */
+    size_t nsudden;
+    sudden *impacts;           /* `impact NAME: GAP >= 0` */
+    size_t nimpacts;
+    sudden *prescribed;        /* `prescribe` */
+    size_t nprescribed;
     const char *src;           /* the text being read (the model's or an added statement) */
     char **added;              /* owned copies of the statements added after the parse */
     size_t nadded;
@@ -179,11 +213,29 @@ bool qd__mdl_stmt_integral(parser *p);
 const qd_expr *qd__mdl_eps_symbol(qd_ctx *ctx);
 bool qd__mdl_check_integrals(parser *p);   /* after the last line */
 
+/* impulse.c: `impulse`, `Qhat[q] = X`, `impact`, `prescribe` */
+bool qd__mdl_stmt_impulse(parser *p);
+bool qd__mdl_stmt_qhat(parser *p);
+bool qd__mdl_stmt_impact(parser *p);
+bool qd__mdl_stmt_prescribe(parser *p);
+/* The sudden constraint named src[off..off+n), or -1. */
+long qd__mdl_find_sudden(const qd_model *m, const char *src, size_t off, size_t n);
+void qd__mdl_free_sudden(sudden *s, size_t from, size_t n);
+void qd__mdl_free_blows(blow *b, size_t from, size_t n);
+
 /* reaction.c */
 bool qd__mdl_stmt_rolls(parser *p);     /* roll.c */
 bool qd__mdl_stmt_reaction(parser *p);
 
-/* stmt.c: shared by the statements in body.c */
+/* The body the current token names (consumed), or NULL after an error
+ * naming the nearest body; what: the statement, for the message. */
+const body *qd__mdl_expect_body(parser *p, const char *what);
+
+/* stmt.c: shared by the statements in body.c and impulse.c */
+bool qd__mdl_expect_at(parser *p, const char *stmt);  /* stmt: the usage, for the hint */
+int qd__mdl_coord_named(parser *p);                   /* the current token's coordinate, or -1 */
+bool qd__mdl_no_such_coordinate(parser *p);           /* the error, with the nearest name */
+bool qd__mdl_constraint_named(const qd_model *m, const char *name);
 bool qd__mdl_end_of_statement(parser *p);
 bool qd__mdl_fresh_name(parser *p, const char *what);
 

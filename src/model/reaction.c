@@ -4,7 +4,8 @@
  *
  *   reaction [LABEL:] CON on r
  *
- * CON names a constraint declared above, r is a position (coordinates,
+ * CON names a constraint declared above (or a sudden one, `impact
+ * constraint`, whose reaction is an impulse), r is a position (coordinates,
  * parameters and t; no velocities).  The model only records the request;
  * the force itself needs the multiplier at a state (src/mech/reaction.c).
  * One constraint may act at several points (a rope on each of its masses):
@@ -41,6 +42,11 @@ static long expect_constraint(parser *p) {
             qd__lex_next(&p->lx);
             return (long)k;
         }
+    long s = qd__mdl_find_sudden(m, p->lx.src, at.off, at.len);
+    if (s >= 0) { /* an impulsive reaction: encoded past the ordinary ones */
+        qd__lex_next(&p->lx);
+        return (long)m->ncons + s;
+    }
     char hint[160] = "declare the constraint (constraint NAME: ...) before its reaction";
     const char *near = qd__diag_nearest(p->lx.src + at.off, at.len, m->con_names, m->ncons);
     if (near)
@@ -79,10 +85,10 @@ static void label(parser *p, char *name, size_t cap, token *at) {
     qd__lex_next(&p->lx);
 }
 
-static bool add(parser *p, const char *name, size_t con, const value *r, token at) {
+static bool add(parser *p, const char *name, size_t con, bool sudden, const value *r, token at) {
     qd_model *m = p->m;
     char what[80];
-    reaction x = {qd__malloc(p->ctx, strlen(name) + 1), con, {r->c[0], r->c[1], r->c[2]}};
+    reaction x = {qd__malloc(p->ctx, strlen(name) + 1), con, sudden, {r->c[0], r->c[1], r->c[2]}};
     if (x.name)
         strcpy((char *)x.name, name);
     snprintf(what, sizeof what, "reaction:%s", name);
@@ -105,8 +111,11 @@ bool qd__mdl_stmt_reaction(parser *p) {
     long k = expect_constraint(p);
     if (k < 0)
         return false;
+    bool sudden = (size_t)k >= p->m->ncons;
+    if (sudden)
+        k -= (long)p->m->ncons;
     if (!name[0]) {
-        snprintf(name, sizeof name, "%s", p->m->con_names[k]);
+        snprintf(name, sizeof name, "%s", sudden ? p->m->sudden[k].name : p->m->con_names[k]);
         at = con_at;
     }
     if (reaction_named(p->m, name))
@@ -118,7 +127,7 @@ bool qd__mdl_stmt_reaction(parser *p) {
     qd__lex_next(&p->lx);
     value r;
     if (!qd__mdl_parse_vector(p, &r, "a position") || !velocity_free(p, &r) ||
-        !add(p, name, (size_t)k, &r, at))
+        !add(p, name, (size_t)k, sudden, &r, at))
         return false;
     return qd__mdl_end_of_statement(p);
 }
@@ -130,7 +139,10 @@ const char *qd_model_reaction_name(const qd_model *m, size_t i) {
 }
 
 const char *qd_model_reaction_constraint(const qd_model *m, size_t i) {
-    return i < m->nreactions ? m->con_names[m->reactions[i].con] : NULL;
+    if (i >= m->nreactions)
+        return NULL;
+    const reaction *r = &m->reactions[i];
+    return r->sudden ? m->sudden[r->con].name : m->con_names[r->con];
 }
 
 const qd_expr *qd_model_reaction_point(const qd_model *m, size_t i, unsigned k) {

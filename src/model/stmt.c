@@ -15,6 +15,8 @@
  *   rolls NAME on SURFACE as SHAPE                      (roll.c)
  *   momenta NAME, ...   and   H = EXPR                  (hamstmt.c)
  *   symmetry [NAME:] ...   and   integral [NAME:] EXPR  (symmetry.c)
+ *   impulse J at r, impulse G on BODY, Qhat[q] = X      (impulse.c)
+ *   impact constraint NAME: ..., impact NAME: GAP >= 0, prescribe ...
  */
 #include "parser.h"
 #include "../base/mem.h"
@@ -110,8 +112,10 @@ static bool stmt_coordinates(parser *p) {
         qd_model *m = p->m;
         const qd_expr *zero = qd_int(C(p), 0), *none = NULL;
         size_t n = m->ncoords, nq = m->ncoords, ni = 2 * m->ncoords, nd = 2 * m->ncoords;
+        size_t nh = m->ncoords;
         if (!qd__mdl_push(m->ctx, (void **)&m->coords, &n, sizeof q, &q) ||
             !qd__mdl_push(m->ctx, (void **)&m->Q, &nq, sizeof zero, &zero) ||
+            !qd__mdl_push(m->ctx, (void **)&m->Qhat, &nh, sizeof zero, &zero) ||
             !qd__mdl_push(m->ctx, (void **)&m->init, &ni, sizeof none, &none) ||
             !qd__mdl_push(m->ctx, (void **)&m->init, &ni, sizeof none, &none) ||
             !qd__mdl_push(m->ctx, (void **)&m->init_defs, &nd, sizeof none, &none) ||
@@ -261,7 +265,7 @@ static bool stmt_functions(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
-static bool expect_at(parser *p, const char *stmt) {
+bool qd__mdl_expect_at(parser *p, const char *stmt) {
     if (qd__lex_is(&p->lx, "at")) {
         qd__lex_next(&p->lx);
         return true;
@@ -278,7 +282,7 @@ static bool stmt_particle(parser *p) {
     qd__lex_next(&p->lx);
     const qd_expr *mass;
     value r;
-    if (!qd__mdl_parse_scalar(p, &mass, "a mass") || !expect_at(p, "particle m at (x, y, z)") ||
+    if (!qd__mdl_parse_scalar(p, &mass, "a mass") || !qd__mdl_expect_at(p, "particle m at (x, y, z)") ||
         !qd__mdl_parse_vector(p, &r, "a position"))
         return false;
     qd_ctx *ctx = C(p);
@@ -289,6 +293,11 @@ static bool stmt_particle(parser *p) {
     p->m->T = p->m->T ? qd_add(ctx, p->m->T, t) : t;
     if (!p->m->T)
         return qd__mdl_perr(p, r.off, r.len, NULL, "%s", qd_ctx_message(ctx));
+    /* kept for what needs the particles themselves: a collision's lab and
+     * centre-of-mass frames */
+    particle pt = {mass, {r.c[0], r.c[1], r.c[2]}};
+    if (!qd__mdl_push(ctx, (void **)&p->m->parts, &p->m->nparts, sizeof pt, &pt))
+        return qd__mdl_perr(p, r.off, r.len, NULL, "out of memory");
     return qd__mdl_end_of_statement(p);
 }
 
@@ -296,7 +305,7 @@ static bool stmt_particle(parser *p) {
 static bool stmt_force(parser *p) {
     qd__lex_next(&p->lx);
     value F, r;
-    if (!qd__mdl_parse_vector(p, &F, "a force") || !expect_at(p, "force (Fx, Fy, Fz) at (x, y, z)") ||
+    if (!qd__mdl_parse_vector(p, &F, "a force") || !qd__mdl_expect_at(p, "force (Fx, Fy, Fz) at (x, y, z)") ||
         !qd__mdl_parse_vector(p, &r, "a position"))
         return false;
     qd_ctx *ctx = C(p);
@@ -312,14 +321,14 @@ static bool stmt_force(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
-static int coord_named(parser *p) {
+int qd__mdl_coord_named(parser *p) {
     for (size_t i = 0; i < p->m->ncoords; i++)
         if (qd__mdl_name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, qd_expr_name(p->m->coords[i])))
             return (int)i;
     return -1;
 }
 
-static bool no_such_coordinate(parser *p) {
+bool qd__mdl_no_such_coordinate(parser *p) {
     char name[128], hint[192] = "";
     tok_text(p, name, sizeof name);
     const char **names = qd__malloc(p->ctx, (p->m->ncoords + 1) * sizeof *names);
@@ -336,9 +345,9 @@ static bool no_such_coordinate(parser *p) {
 static bool stmt_genforce(parser *p) {
     qd__lex_next(&p->lx); /* Q */
     qd__lex_next(&p->lx); /* [ */
-    int j = coord_named(p);
+    int j = qd__mdl_coord_named(p);
     if (p->lx.tok.kind != TK_IDENT || j < 0)
-        return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
+        return p->lx.tok.kind == TK_IDENT ? qd__mdl_no_such_coordinate(p)
                                           : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
     qd__lex_next(&p->lx);
     if (p->lx.tok.kind != TK_RBRACK)
@@ -358,9 +367,9 @@ static bool stmt_genforce(parser *p) {
 static bool stmt_initial(parser *p) {
     do {
         qd__lex_next(&p->lx);
-        int j = coord_named(p);
+        int j = qd__mdl_coord_named(p);
         if (p->lx.tok.kind != TK_IDENT || j < 0)
-            return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
+            return p->lx.tok.kind == TK_IDENT ? qd__mdl_no_such_coordinate(p)
                                               : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
         qd__lex_next(&p->lx);
         unsigned order = 0;
@@ -381,17 +390,31 @@ static bool stmt_initial(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
+static bool in_list(const sudden *s, size_t n, const char *name) {
+    for (size_t i = 0; i < n; i++)
+        if (!strcmp(s[i].name, name))
+            return true;
+    return false;
+}
+
+/* One namespace for every relation with a multiplier: a reaction names its
+ * constraint, and lambda_NAME and Lambda_NAME must not read alike. */
 static bool constraint_named(const qd_model *m, const char *name) {
     for (size_t i = 0; i < m->ncons; i++)
         if (!strcmp(m->con_names[i], name))
             return true;
-    return false;
+    return in_list(m->sudden, m->nsudden, name) || in_list(m->impacts, m->nimpacts, name) ||
+           in_list(m->prescribed, m->nprescribed, name);
 }
 
 static bool add_constraint_where(qd_model *m, const char *name, token at) {
     char what[80];
     snprintf(what, sizeof what, "constraint:%s", name);
     return qd__mdl_add_where(m, what, at.off, at.len);
+}
+
+bool qd__mdl_constraint_named(const qd_model *m, const char *name) {
+    return constraint_named(m, name);
 }
 
 /* constraint [NAME ':'] LHS ['=' RHS] */
@@ -514,6 +537,8 @@ static const struct stmt_kw {
     {"torque", qd__mdl_stmt_torque, true},      {"rolls", qd__mdl_stmt_rolls, true},
     {"reaction", qd__mdl_stmt_reaction, true},  {"momenta", qd__mdl_stmt_momenta, true},
     {"symmetry", qd__mdl_stmt_symmetry, true},  {"integral", qd__mdl_stmt_integral, true},
+    {"impulse", qd__mdl_stmt_impulse, true},    {"impact", qd__mdl_stmt_impact, true},
+    {"prescribe", qd__mdl_stmt_prescribe, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -566,6 +591,8 @@ bool qd__mdl_statement(parser *p) {
         return stmt_definition(p);
     if (next == TK_LBRACK && qd__lex_is(lx, "Q"))
         return stmt_genforce(p);
+    if (next == TK_LBRACK && qd__lex_is(lx, "Qhat"))
+        return qd__mdl_stmt_qhat(p);
     return unknown_statement(p);
 }
 
