@@ -390,8 +390,11 @@ static void text_energy(imp_run *r, qd_buf *b) {
     put_num(b, s->T_before);
     qd_buf_puts(b, ", after ");
     put_num(b, s->T_after);
-    qd_buf_puts(b, "\nenergy lost: ");
-    put_value(r, b, exact_lost(r), s->energy_lost);
+    /* a blow on a system at rest gives energy: say so, not "lost -3" */
+    bool gained = s->energy_lost < -1e-12 * (s->T_before + s->T_after);
+    const qd_expr *x = exact_lost(r);
+    qd_buf_puts(b, gained ? "\nenergy gained: " : "\nenergy lost: ");
+    put_value(r, b, x && gained ? qd_neg(r->ctx, x) : x, gained ? -s->energy_lost : s->energy_lost);
     qd_buf_puts(b, "\n");
 }
 
