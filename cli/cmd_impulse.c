@@ -156,26 +156,34 @@ static void list_coords(const qd_model *m, char *out, size_t cap) {
                                  qd_expr_name(qd_model_coord(m, i)));
 }
 
-/* The slot NAME names: a coordinate (its value in q0), a velocity NAME'
- * (qd0) or t; NULL (with the error printed) for anything else. */
-static const qd_expr **find_slot(imp_run *r, const char *name) {
+/* The slot NAME names, *k: coordinate j (j), its velocity NAME' (n + j) or
+ * t (2n); false (with the error printed) for anything else. */
+static bool find_slot(const imp_run *r, const char *name, size_t *k) {
     size_t len = strlen(name), primes = 0;
     while (len && name[len - 1] == '\'') {
         len--;
         primes++;
     }
-    if (!strcmp(name, "t"))
-        return &r->t0;
+    if (!strcmp(name, "t")) {
+        *k = 2 * r->n;
+        return true;
+    }
     for (size_t j = 0; j < r->n && primes < 2; j++) {
         const char *q = qd_expr_name(qd_model_coord(r->mf.model, j));
-        if (strlen(q) == len && !strncmp(q, name, len))
-            return primes ? &r->qd0[j] : &r->q0[j];
+        if (strlen(q) == len && !strncmp(q, name, len)) {
+            *k = primes ? r->n + j : j;
+            return true;
+        }
     }
     char known[512];
     list_coords(r->mf.model, known, sizeof known);
     cli_diag_error("--at: '%s' is not a coordinate, a velocity or t (the coordinates are %s; "
                    "velocities are written with a prime; parameters take --set)", name, known);
-    return NULL;
+    return false;
+}
+
+static const qd_expr **slot_of(imp_run *r, size_t k) {
+    return k == 2 * r->n ? &r->t0 : k >= r->n ? &r->qd0[k - r->n] : &r->q0[k];
 }
 
 /* VALUE, text[a, b): an expression in the parameters, kept exact. */
@@ -224,18 +232,15 @@ static int at_item(imp_run *r, const char *text, size_t a, size_t b, bool *given
     char name[128];
     memcpy(name, text + na, nb - na);
     name[nb - na] = '\0';
-    const qd_expr **slot = find_slot(r, name);
-    if (!slot)
+    size_t k;
+    if (!find_slot(r, name, &k))
         return QD_EXIT_USAGE;
-    size_t k = slot == &r->t0 ? 2 * r->n : slot >= r->qd0 && slot < r->qd0 + r->n
-                                                 ? r->n + (size_t)(slot - r->qd0)
-                                                 : (size_t)(slot - r->q0);
     if (given[k]) {
         cli_diag_error("--at: '%s' is given twice", name);
         return QD_EXIT_USAGE;
     }
     given[k] = true;
-    return read_value(r, text, (size_t)(eq + 1 - text), b, name, slot);
+    return read_value(r, text, (size_t)(eq + 1 - text), b, name, slot_of(r, k));
 }
 
 static int parse_at(imp_run *r, const char *text) {
