@@ -61,7 +61,7 @@ static void describe(qd_collision *c) {
     c->theta_lab1 = angle(c->u[0], c->v1[1]);
     c->theta_lab2 = angle(c->u[0], c->v2[1]);
     double sstar = sqrt(dot(star, star));
-    c->gamma = sstar > 0 ? sqrt(dot(c->w, c->w)) / sstar : INFINITY;
+    c->gamma = sstar > 0 ? sqrt(dot(c->w, c->w)) / sstar : 0; /* no CM speed after */
 }
 
 qd_status qd__imp_collision(const qd__imp *s, qd_impulse *r) {

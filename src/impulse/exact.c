@@ -57,7 +57,8 @@ static qd_status build_system(const qd__imp *s, const subst *sb, qd_eom *e) {
     return ok ? QD_OK : qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
 }
 
-static qd_status results(const qd__imp *s, const subst *sb, qd_eom *e, qd_impulse *r) {
+static qd_status results(const qd__imp *s, const subst *sb, qd_eom *e, size_t max_ops,
+                         qd_impulse *r) {
     qd_ctx *ctx = s->ctx;
     size_t n = s->n;
     const qd_expr **after = qd__calloc(ctx, n + 1, sizeof *after);
@@ -73,6 +74,13 @@ static qd_status results(const qd__imp *s, const subst *sb, qd_eom *e, qd_impuls
     if (!lost) {
         qd__free(after);
         return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+    }
+    bool small = qd_count_ops(lost) <= max_ops;
+    for (size_t j = 0; j < n; j++)
+        small = small && qd_count_ops(after[j]) <= max_ops;
+    if (!small) { /* past the caller's limit: the numbers stand */
+        qd__free(after);
+        return QD_OK;
     }
     r->qd_after_exact = after;
     r->mult_exact = e->mult;
@@ -94,18 +102,18 @@ qd_status qd__imp_exact(const qd__imp *s, size_t max_ops, qd_impulse *r) {
         from[n + j] = s->e->qd[j], sb.to[n + j] = s->qd0[j];
     }
     from[2 * n] = qd_time(ctx), sb.to[2 * n] = s->t0;
-    qd_eom e;
+    qd_eom e = {0};
     qd_status st = build_system(s, &sb, &e);
     if (st == QD_OK) {
         st = qd_eom_solve(ctx, &e, max_ops);
         if (st == QD_OK)
-            st = results(s, &sb, &e, r);
+            st = results(s, &sb, &e, max_ops, r);
         else /* too big or singular in symbols: the numbers stand */
             st = qd__ctx_recover(ctx) ? QD_OK : QD_ERR_NOMEM;
-        qd__free(e.acc);
-        qd__free(e.mult);
-        qd__free(e.M);
     }
+    qd__free(e.acc);
+    qd__free(e.mult);
+    qd__free(e.M); /* the block of M, f, A and b */
     qd__free(from);
     if (st == QD_ERR_NOMEM && !qd__ctx_nomem(ctx))
         qd_ctx_error(ctx, st, "out of memory solving an impulse in closed form");

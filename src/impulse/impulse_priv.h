@@ -27,7 +27,6 @@ typedef struct qd__imp {
     /* Rows: nheld, then nsudden, then npre of them (nrow in all). */
     size_t nrow, nheld, nsudden, npre;
     qd_con *row;               /* name, expr, a (n), a0 */
-    qd__imp_kind *kind;
     const qd_expr **A;         /* nrow*n, row-major: the rows' a */
     const qd_expr **E;         /* nrow restitutions (0 for held and prescribed rows) */
     /* The state: the symbols q (n), q' (n), t, parameters and their values. */
@@ -35,7 +34,7 @@ typedef struct qd__imp {
     const qd_expr **syms;
     double *vals;
     const qd_expr **q0, **qd0, *t0;   /* the state as expressions */
-    /* Numbers at the state. */
+    /* Numbers at the state, in one block at M (qd__imp_numbers). */
     double *M;                 /* n*n */
     double *Qhat;              /* n */
     double *An, *a0n, *En;     /* nrow*n, nrow, nrow */

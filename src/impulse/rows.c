@@ -22,7 +22,6 @@
 void qd__imp_free(qd__imp *s) {
     qd_eom_free(s->e);
     qd__free(s->row);
-    qd__free(s->kind);
     qd__free(s->A);
     qd__free(s->E);
     qd__free(s->syms);
@@ -83,7 +82,8 @@ static qd_status velocity_form(qd__imp *s, qd_con *c, const char *what) {
         qd_ctx_error(ctx, QD_ERR_ARG, "%s %s contains accelerations", what, c->name);
         return QD_ERR_ARG;
     }
-    if (!has_any(c->expr, n, e->qd)) {
+    c->kind = has_any(c->expr, n, e->qd) ? QD_CON_NONHOLONOMIC : QD_CON_HOLONOMIC;
+    if (c->kind == QD_CON_HOLONOMIC) { /* its rate */
         for (size_t j = 0; j < n; j++)
             c->a[j] = qd_diff(ctx, c->expr, e->q[j]);
         c->a0 = qd_diff(ctx, c->expr, qd_time(ctx));
@@ -105,10 +105,9 @@ static qd_status velocity_form(qd__imp *s, qd_con *c, const char *what) {
 static qd_status alloc_rows(qd__imp *s) {
     size_t r = s->nrow + 1, n = s->n ? s->n : 1;
     s->row = qd__calloc(s->ctx, r, sizeof *s->row);
-    s->kind = qd__calloc(s->ctx, r, sizeof *s->kind);
     s->A = qd__calloc(s->ctx, r * n, sizeof *s->A);
     s->E = qd__calloc(s->ctx, r, sizeof *s->E);
-    if (!s->row || !s->kind || !s->A || !s->E) {
+    if (!s->row || !s->A || !s->E) {
         qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory setting up an impulse");
         return QD_ERR_NOMEM;
     }
@@ -124,8 +123,6 @@ static qd_status model_row(qd__imp *s, size_t k, size_t i, qd__imp_kind kind) {
     bool sudden = kind == QD__IMP_SUDDEN;
     c->name = sudden ? qd_model_impact_constraint_name(m, i) : qd_model_prescribed_name(m, i);
     c->expr = sudden ? qd_model_impact_constraint(m, i) : qd_model_prescribed(m, i);
-    c->kind = QD_CON_NONHOLONOMIC;
-    s->kind[k] = kind;
     const qd_expr *E = sudden ? qd_model_impact_constraint_restitution(m, i) : NULL;
     s->E[k] = E ? E : qd_int(s->ctx, 0);
     if (!sudden && !has_any(c->expr, s->n, s->e->qd)) {
@@ -149,7 +146,6 @@ static qd_status rows(qd__imp *s) {
         s->row[k] = e->con[k];
         s->row[k].a = a;
         memcpy(a, e->con[k].a, s->n * sizeof *a);
-        s->kind[k] = QD__IMP_HELD;
         s->E[k] = qd_int(s->ctx, 0);
     }
     for (size_t i = 0; st == QD_OK && i < s->nsudden; i++)

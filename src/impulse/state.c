@@ -68,13 +68,16 @@ qd_status qd__imp_state(qd__imp *s, const qd_impulse_opts *opts) {
     s->qd0 = qd__calloc(s->ctx, n + 1, sizeof *s->qd0);
     if (!s->syms || !s->vals || !s->q0 || !s->qd0)
         return nomem(s->ctx);
-    for (size_t i = 0; i < np; i++) {
+    qd_status st = QD_OK;
+    for (size_t i = 0; i < np && st == QD_OK; i++) { /* a value may be exact: pi/6 */
         s->syms[2 * n + 1 + i] = qd_model_param(s->m, i);
-        s->vals[2 * n + 1 + i] = qd_number_value(qd_model_param_value(s->m, i));
+        st = qd_eval(s->ctx, qd_model_param_value(s->m, i), 0, NULL, NULL,
+                     &s->vals[2 * n + 1 + i]);
     }
     s->syms[2 * n] = qd_time(s->ctx);
     s->t0 = opts && opts->t ? opts->t : qd_int(s->ctx, 0);
-    qd_status st = param_value(s, s->t0, &s->vals[2 * n]);
+    if (st == QD_OK)
+        st = param_value(s, s->t0, &s->vals[2 * n]);
     for (size_t j = 0; j < n && st == QD_OK; j++) {
         s->syms[j] = s->e->q[j];
         s->syms[n + j] = s->e->qd[j];
@@ -120,25 +123,27 @@ static qd_status blows_and_p0(qd__imp *s) {
     for (size_t i = 0; i < s->nblows && st == QD_OK; i++)
         for (size_t j = 0; j < n && st == QD_OK; j++)
             st = eval(s, qd_model_blow(s->m, i, j), &s->W[i * n + j]);
-    double *zero = s->Qhat + n; /* n of scratch, zeroed by calloc */
+    const double *zero = s->Qhat + n;
     for (size_t j = 0; j < n && st == QD_OK; j++)
         st = qd__imp_eval(s, qd_diff(s->ctx, s->T, s->e->qd[j]), zero, &s->p0[j]);
     return st;
 }
 
+/* The numbers live in one block at s->M: M (n*n), Qhat (n), n zeros (the
+ * velocities at which T1 is read), p0 (n), An (r*n), a0n (r), En (r) and
+ * W (nblows*n); qd__imp_free frees the block. */
 qd_status qd__imp_numbers(qd__imp *s) {
     size_t n = s->n, r = s->nrow;
-    size_t len = n * n + 3 * n + r * n + 3 * r + s->nblows * n + 1;
+    size_t len = n * n + 3 * n + r * n + 2 * r + s->nblows * n + 1;
     s->M = qd__calloc(s->ctx, len, sizeof *s->M);
     if (!s->M)
         return nomem(s->ctx);
-    s->Qhat = s->M + n * n;    /* n, then n of scratch */
+    s->Qhat = s->M + n * n;
     s->p0 = s->Qhat + 2 * n;
     s->An = s->p0 + n;
     s->a0n = s->An + r * n;
     s->En = s->a0n + r;
-    s->W = NULL;
-    double *W = s->En + r;
+    s->W = s->En + r;
     qd_status st = QD_OK;
     for (size_t i = 0; i < n * n && st == QD_OK; i++)
         st = eval(s, s->e->M[i], &s->M[i]);
@@ -152,7 +157,6 @@ qd_status qd__imp_numbers(qd__imp *s) {
         if (st == QD_OK)
             st = restitution(s, k);
     }
-    s->W = W; /* owned by the block of s->M: not freed on its own */
     if (st == QD_OK)
         st = blows_and_p0(s);
     return st;
