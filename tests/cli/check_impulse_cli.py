@@ -16,7 +16,7 @@ A^T Lambda, Desloge ch. 57 thm 1, Byerly Art. 27), never taken from qdot:
 - Byerly Art. 28a/32a, the lamina struck (TC25): v_G = P/m, w = aP/(mk^2),
   the centre of percussion; Thomson's form y' = k^2 v/(a^2 + k^2);
 - the Britannica's chain of two links (seed-goldstein-britannica.md B01,
-  B03): (u, w1, w2) = (-J/m, -9J/(4am), 3J/(4am)), KE 7J^2/(4m); Bertrand
+  B03; Desloge ch. 57 P2, seed-desloge-A.md T57): (u, w1, w2) = (-J/m, -9J/(4am), 3J/(4am)), KE 7J^2/(4m); Bertrand
   (joint rigid J^2/m, hinge held 3J^2/(2m)) and Kelvin (m V0^2/7, m V0^2/4);
 - a rod whose end is suddenly fixed: energy ratio 3/4, pin impulse -m v/4;
 - a string that becomes taut: v - (v.n) n, impulse -m (v.n) n;
@@ -251,6 +251,11 @@ def test_chain(qdot):
     check_close('chain v_A', w["y'"] - 2 * a * w["th1'"], 7 * J / (2 * m))
     check_close('chain v_C', w["y'"] + 2 * a * w["th2'"], J / (2 * m))
     check_close('chain KE', d['kinetic_energy_after'], 7 * J * J / (4 * m))
+    # Desloge ch. 57 P2 (seed-desloge-A.md T57): the centres at 5J/(4m) along J and J/(4m)
+    # against it, the rods turning at 9J/(4ma) and 3J/(4ma) in opposite senses
+    check_close('chain T57 centre 1', w["y'"] - a * w["th1'"], 5 * J / (4 * m))
+    check_close('chain T57 centre 2', w["y'"] + a * w["th2'"], -J / (4 * m))
+    check('chain T57 senses', w["th1'"] * w["th2'"] < 0, str(w))
     g = d['generalized_impulses']
     check('chain Qhat', close(g['y'], J) and close(g['th1'], -2 * a * J) and close(g['th2'], 0),
           str(g))
