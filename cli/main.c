@@ -33,6 +33,12 @@ static const cli_cmd commands[] = {
      cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
      cli_cmd_stability, true},
+    {"orbit", "FILE --ignore Q[,Q...] [--at ...]", "turning points, periods, apsides, conics",
+     cli_cmd_orbit, true},
+    {"hj", "FILE [--format F] [--solve]", "the Hamilton-Jacobi equation, its separation and W",
+     cli_cmd_hj, true},
+    {"action", "FILE [--at ...] [--format F]", "action-angle variables: J, frequencies",
+     cli_cmd_action, true},
     {"impulse", "FILE [--at ...] [--prescribe ...]", "a blow, a sudden constraint, a collision",
      cli_cmd_impulse, true},
 };

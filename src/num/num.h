@@ -50,4 +50,41 @@ size_t qd__num_rank(size_t n, double *A, double *b, double tol, size_t *pc, bool
 void qd__num_saddle(size_t n, size_t m, const double *M, const double *f, const double *A,
                     const double *b, double *K, double *r);
 
+/* ---- quadrature (quad.c) --------------------------------------------------
+ *
+ * Adaptive tanh-sinh (double-exponential) quadrature (Takahasi & Mori
+ * 1974; Bailey, Jeyabalan & Li 2005): the rule of choice for the integrals
+ * of orbits and scattering, whose integrands have inverse-square-root
+ * singularities at the turning points.  The abscissas crowd
+ * double-exponentially at the ends, so an integrable end-point singularity
+ * costs nothing extra; the levels halve the step until two successive
+ * estimates agree to tol.
+ *
+ * The integrand receives x and its signed distance from the nearer end,
+ * xc = x - a (>= 0) near a or x - b (<= 0) near b, computed without the
+ * cancellation of x - a at x close to a: an integrand 1/sqrt(E - V(x))
+ * with E = V(a) should use xc to form E - V (a Taylor step, or the exact
+ * factor (x - a)) where the difference would lose its digits; the
+ * distance to the far end is (b - a) - |xc|, also without cancellation. */
+typedef double (*qd__num_fn)(void *data, double x, double xc);
+
+typedef struct qd__num_quad {
+    double value;     /* the integral */
+    double error;     /* the estimate: |last level - the one before| */
+    size_t evals;
+    bool converged;   /* error <= tol * max(1, |value|) */
+} qd__num_quad;
+
+/* The integral of f over [a, b] (a < b, both finite); tol relative (0:
+ * 1e-13).  A non-finite f value at an abscissa is treated as a sign the
+ * point is at the singularity and dropped when it lies within 1e-14 of an
+ * end; elsewhere it is a fault of the integrand: value NaN, false.  false
+ * also when the levels ran out (12, step 2^-12) without converging; r then
+ * holds the last estimate. */
+bool qd__num_quad_finite(qd__num_fn f, void *data, double a, double b, double tol,
+                         qd__num_quad *r);
+
+/* The integral over [a, inf) (exp-sinh), same conventions (xc = x - a). */
+bool qd__num_quad_upper(qd__num_fn f, void *data, double a, double tol, qd__num_quad *r);
+
 #endif

@@ -142,7 +142,7 @@ def kinetic(M, v):
 # ---- the seeds' cases ------------------------------------------------------------------
 
 def test_rhombus(qdot):
-    d = impulse(qdot, 'rhombus_wall.qd')
+    d = impulse(qdot, 'rhombus_wall_impulse.qd')
     after = d['velocities_after']
     check_close('rhombus th\'+', after["th'"], 3 / 7)
     check_close('rhombus x\'+', after["x'"], -3 / 7)
@@ -166,7 +166,7 @@ def test_rhombus(qdot):
             and close(ev(ex['energy_lost'], params), 2 * 1.5 * 4 / (1 + 3 * s2)), str(ex))
     params = {'m': 1, 'a': 1, 'v': 1}
     # another angle through --at, kept exact: pi/4 gives sqrt(2), not a decimal
-    d = impulse(qdot, 'rhombus_wall.qd', '--at', 'th=pi/4, x=2*a*cos(pi/4)')
+    d = impulse(qdot, 'rhombus_wall_impulse.qd', '--at', 'th=pi/4, x=2*a*cos(pi/4)')
     s = math.sin(math.pi / 4)
     check_close('rhombus 45 th\'+', d['velocities_after']["th'"], 3 * s / (2 * (1 + 3 * s * s)))
     txt = d['exact'] and d['exact']['velocities_after']["th'"]
@@ -174,7 +174,7 @@ def test_rhombus(qdot):
           and close(ev(txt, params), 3 * s / (2 * (1 + 3 * s * s))), str(txt))
     for _ in range(3):
         al, v, a, m = rng.uniform(0.2, 1.3), rng.uniform(0.5, 3), rng.uniform(0.5, 2), rng.uniform(0.5, 3)
-        d = impulse(qdot, 'rhombus_wall.qd', *sets(m=m, a=a, v=v, al=al))
+        d = impulse(qdot, 'rhombus_wall_impulse.qd', *sets(m=m, a=a, v=v, al=al))
         s2 = math.sin(al) ** 2
         check_close('rhombus th\' al=%.3f' % al, d['velocities_after']["th'"],
                     3 * v * math.sin(al) / (2 * a * (1 + 3 * s2)))
@@ -504,14 +504,14 @@ def test_random_theorems(qdot, tmp):
 # ---- output forms and errors ---------------------------------------------------------------
 
 def test_text_latex(qdot):
-    rc, out, err = run(qdot, 'impulse', EXAMPLES / 'rhombus_wall.qd')
+    rc, out, err = run(qdot, 'impulse', EXAMPLES / 'rhombus_wall_impulse.qd')
     check('text exit', rc == 0, err)
     check('text velocity', "th'+ = 3*v*sin(al)/(2*a*(3*sin(al)^2 + 1)) = 0.428571428571" in out, out)
     check('text carnot', 'Carnot: the energy lost, 1.14285714286, equals the kinetic energy of the '
           'velocity change, 1.14285714286' in out, out)
     rc, out, err = run(qdot, 'impulse', EXAMPLES / 'compound_pulley_jerked.qd')
     check('text gained', 'energy gained: 3*P^2/(46*m)' in out, out)
-    rc, out, err = run(qdot, 'impulse', EXAMPLES / 'rhombus_wall.qd', '--format', 'latex')
+    rc, out, err = run(qdot, 'impulse', EXAMPLES / 'rhombus_wall_impulse.qd', '--format', 'latex')
     check('latex', rc == 0 and out.startswith('\\begin{align}') and '\\Lambda' in out
           and out.rstrip().endswith('\\end{align}'), out + err)
 

@@ -1,6 +1,6 @@
 /*
  * tests/cross/gen_impulse.c - cases for the SymPy cross-check of the
- * impulse solver's closed forms (tests/cross/check_impulse_sympy.py).
+ * impulse solver's closed forms (tests/cross/check_impulse_exact_sympy.py).
  *
  * For each model below, qd_impulse_solve with exact = true; prints, in
  * SymPy syntax, one per line:

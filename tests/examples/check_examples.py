@@ -80,6 +80,31 @@ def _(q, v, t, p):
     return solve(M, f)
 
 
+# The action-angle examples (qdot action; Desloge ch. 79, seed-desloge-D.md).
+@example('action_pendulum', ['theta'])
+def _(q, v, t, p):
+    # Goldstein ch. 1 Ex. 19 (seed 002): th'' = -(g/l) sin th
+    return [-p['g'] / p['l'] * sin(q['theta'])]
+
+
+@example('action_pendulum_rotation', ['theta'])
+def _(q, v, t, p):
+    return [-p['g'] / p['l'] * sin(q['theta'])]
+
+
+@example('action_anisotropic', ['x', 'y'])
+def _(q, v, t, p):
+    # Goldstein sec. 10.6: x'' = -kx x/m, y'' = -ky y/m
+    return [-p['kx'] * q['x'] / p['m'], -p['ky'] * q['y'] / p['m']]
+
+
+@example('action_pendulum_lengthening', ['theta'])
+def _(q, v, t, p):
+    # Goldstein sec. 10.7: d/dt(m l^2 th') = -m g l sin th, l = l0 (1 + eps t)
+    l, ld = p['l0'] * (1 + p['eps'] * t), p['l0'] * p['eps']
+    return [-2 * ld / l * v['theta'] - p['g'] / l * sin(q['theta'])]
+
+
 @example('free_particle_spherical', ['r', 'theta', 'phi'],
          ranges={'r': (0.5, 2.0), 'theta': (0.3, 2.8)})
 def _(q, v, t, p):
@@ -103,6 +128,30 @@ def _(q, v, t, p):
 def _(q, v, t, p):
     # Byerly Art. 8b, p. 19; seed-byerly.md TC11: x'' = g/23, y'' = 8 g/23
     return [p['g'] / 23, 8 * p['g'] / 23]
+
+
+@example('bouncing_ball', ['y'], ranges={'y': (0.0, 2.0)})
+def _(q, v, t, p):
+    # between impacts a free fall (Desloge ch. 61 for the impacts): y'' = -g
+    return [-p['g']]
+
+
+@example('pendulum_wall', ['th'], ranges={'th': (0.0, 1.5)})
+def _(q, v, t, p):
+    # between impacts the pendulum, Goldstein sec. 1.6: th'' = -(g/l) sin th
+    return [-p['g'] / p['l'] * sin(q['th'])]
+
+
+@example('rhombus_wall', ['x', 'th'], ranges={'x': (1.0, 3.0), 'th': (0.2, 1.3)})
+def _(q, v, t, p):
+    # Desloge ch. 57 ex. 1 (T55): T = 2 m x'^2 + (8/3) m a^2 th'^2, no forces
+    return [0.0, 0.0]
+
+
+@example('rod_ledge', ['x', 'y', 'th'])
+def _(q, v, t, p):
+    # a free rod under gravity between impacts: x'' = 0, y'' = -g, th'' = 0
+    return [0.0, -p['g'], 0.0]
 
 
 @example('bead_rotating_wire', ['r'], ranges={'r': (0.1, 2.0)})
@@ -263,6 +312,24 @@ def _(q, v, t, p):
     # Desloge ch. 58-59 (B T13): m (r'' - r th'^2) = -k/r^2;  d/dt(m r^2 th') = 0
     r, rd, thd = q['r'], v['r'], v['theta']
     return [r * thd**2 - p['k'] / (p['m'] * r**2), -2 * rd * thd / r]
+
+
+@example('inverse_cube_orbit', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58 P9 (B T09): m (r'' - r phi'^2) = -(h0^2/m)(2/(a r^2) + 1/r^3);
+    # d/dt(m r^2 phi') = 0
+    r, rd, phd = q['r'], v['r'], v['phi']
+    m, h0 = p['m'], p['h0']
+    F = -(h0**2 / m) * (2 / (p['a'] * r**2) + 1 / r**3)
+    return [r * phd**2 + F / m, -2 * rd * phd / r]
+
+
+@example('r4_potential', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58 (B C3): V = -a/(4 r^4), m (r'' - r phi'^2) = -a/r^5;
+    # d/dt(m r^2 phi') = 0
+    r, rd, phd = q['r'], v['r'], v['phi']
+    return [r * phd**2 - p['a'] / (p['m'] * r**5), -2 * rd * phd / r]
 
 
 @example('table_hanging_mass', ['r', 'theta'], ranges={'r': (0.3, 1.8)})

@@ -5,7 +5,7 @@
  * of angular momentum about a suddenly fixed point, of momentum in a
  * collision), the theorems of Carnot, Bertrand and Thomson on random
  * systems, and every error.  Reference: /work/shared/reference
- * (seed-desloge-A.md T55-T61, seed-byerly.md TC25-TC35,
+ * (seed-desloge-A.md T55-T61, seed-byerly.md TC25-TC35 (TC31: Pfaffian rows),
  * seed-goldstein-britannica.md B01-B03, seed-desloge-B.md C5).
  */
 #include <stdarg.h>
@@ -521,6 +521,40 @@ static void elliptic_disk(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* TC31 (art. 34, pp. 74-75): a sphere (radius a, k^2 = 2a^2/5) spinning
+ * with (W1, W2, W3), centre at rest, set on a perfectly rough plane: the
+ * contact point is brought to rest at once (a Pfaffian sudden constraint,
+ * v + w x (0, 0, -a) = 0), w1 = 2 W1/7, w2 = 2 W2/7, w3 = W3,
+ * x' = a w2, y' = -a w1.  At zero angles tait_bryan's rates are the
+ * space components of w. */
+static void sphere_on_rough_plane(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse_ok(ctx,
+                           "coordinates x, y, yaw, pitch, roll\n"
+                           "parameters m = 2, a = 3/2, W1 = 3, W2 = -5, W3 = 7\n"
+                           "body ball mass m inertia sphere(m, a) at (x, y, a) "
+                           "orientation tait_bryan(yaw, pitch, roll)\n"
+                           "w = omega_space(ball)\n"
+                           "impact constraint rx: x' - a*w.y = 0\n"
+                           "impact constraint ry: y' + a*w.x = 0\n"
+                           "initial x = 0, y = 0, yaw = 0, pitch = 0, roll = 0, "
+                           "x' = 0, y' = 0, yaw' = W3, pitch' = W2, roll' = W1\n");
+    qd_impulse r;
+    solve_ok(ctx, m, true, &r);
+    exact_matches(ctx, m, &r);
+    double a = 1.5, W1 = 3, W2 = -5, W3 = 7;
+    near(after(&r, "roll"), 2 * W1 / 7, "w1");
+    near(after(&r, "pitch"), 2 * W2 / 7, "w2");
+    near(after(&r, "yaw"), W3, "w3");
+    near(after(&r, "x"), a * 2 * W2 / 7, "x'");
+    near(after(&r, "y"), -a * 2 * W1 / 7, "y'");
+    assert_true(r.carnot.applies && r.carnot.holds); /* the friction's impulse loses energy */
+    qd_impulse_free(&r);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* TC35 (art. 54a-b, pp. 106-108): two circuits, Byerly's T_el =
  * L y1'^2 + M y1' y2' + L y2'^2 beside the wire's x'.  (a) make: a current
  * i set up in wire 1, y2' = -M i/(2L) (-0.5 at L = 1, M = 0.5, i = 2);
@@ -908,6 +942,86 @@ static void random_theorems(void **state) {
     }
 }
 
+/* The impulse equations and each row's law checked on the answer, for
+ * random systems with every kind of row at once: an ordinary holonomic
+ * constraint (keeps holding), a Pfaffian sudden constraint with
+ * restitution 3/10 (c(q'+) = -E c(q'-)), a prescription (c(q'+) = 1/2), a
+ * blow: M (q'+ - q'-) - Qhat - A^T Lambda = 0 with M, A, Qhat built here
+ * from the same random numbers (Desloge ch. 57 thm 1 eqs. 4-5). */
+static void random_residuals(void **state) {
+    (void)state;
+    qt_rng g = {977};
+    for (int trial = 0; trial < 20; trial++) {
+        rsys s;
+        random_system(&g, &s, 2, 1);
+        long h[RN], p[RN], v0[RN];
+        for (int j = 0; j < RN; j++) {
+            h[j] = (long)qt_below(&g, 21) - 10;
+            p[j] = (long)qt_below(&g, 21) - 10;
+            v0[j] = (long)qt_below(&g, 41) - 20;
+        }
+        char text[6144];
+        random_text(&s, v0, text, sizeof text);
+        size_t len = strlen(text);
+        len += (size_t)snprintf(text + len, sizeof text - len, "constraint h0: ");
+        for (int j = 0; j < RN; j++)
+            len += (size_t)snprintf(text + len, sizeof text - len, "%s%ld*q%d", j ? " + " : "",
+                                    h[j], j);
+        len += (size_t)snprintf(text + len, sizeof text - len, " = 0\nprescribe p0: ");
+        for (int j = 0; j < RN; j++)
+            len += (size_t)snprintf(text + len, sizeof text - len, "%s%ld*q%d'", j ? " + " : "",
+                                    p[j], j);
+        snprintf(text + len, sizeof text - len, " = 1/2\n");
+        /* the second sudden row takes a restitution */
+        char *k1 = strstr(text, "impact constraint k1:");
+        assert_non_null(k1);
+        char *eol = strchr(k1, '\n');
+        char tail[6144];
+        snprintf(tail, sizeof tail, "%s", eol);
+        snprintf(eol, sizeof text - (size_t)(eol - text), " restitution 3/10%s", tail);
+        qd_ctx *ctx = qd_ctx_new();
+        qd_model *m = parse_ok(ctx, text);
+        qd_impulse r;
+        solve_ok(ctx, m, false, &r);
+        /* rows in the multipliers' order: h0, k0, k1, p0 */
+        assert_int_equal(r.nmult, 4);
+        assert_string_equal(r.mult_name[0], "Lambda_h0");
+        assert_string_equal(r.mult_name[3], "Lambda_p0");
+        double A[4][RN], E[4] = {0, 0, 0.3, 0}, target[4];
+        for (int j = 0; j < RN; j++) {
+            A[0][j] = (double)h[j];
+            A[1][j] = (double)s.a[0][j] / 100;
+            A[2][j] = (double)s.a[1][j] / 100;
+            A[3][j] = (double)p[j];
+        }
+        for (int k = 0; k < 4; k++) {
+            double before = 0, now = 0;
+            for (int j = 0; j < RN; j++) {
+                before += A[k][j] * (double)v0[j] / 10;
+                now += A[k][j] * r.qd_after[j];
+            }
+            target[k] = k == 3 ? 0.5 : -E[k] * before;
+            near(now, target[k], "row law");
+        }
+        for (int i = 0; i < RN; i++) {
+            double res = -(double)s.w[0][i] / 10;
+            for (int j = 0; j < RN; j++)
+                res += s.M[i][j] * (r.qd_after[j] - (double)v0[j] / 10);
+            for (int k = 0; k < 4; k++)
+                res -= A[k][i] * r.mult[k];
+            near(res, 0, "impulse equation");
+            near(r.R[i], A[0][i] * r.mult[0] + A[1][i] * r.mult[1] + A[2][i] * r.mult[2] +
+                             A[3][i] * r.mult[3], "R = A^T Lambda");
+        }
+        assert_false(r.carnot.applies); /* a restitution, a blow, an inhomogeneous row */
+        assert_false(r.bertrand.applies);
+        assert_true(r.thomson.applies && r.thomson.holds);
+        qd_impulse_free(&r);
+        qd_model_free(m);
+        qd_ctx_free(ctx);
+    }
+}
+
 /* ---- errors ---------------------------------------------------------------- */
 
 static void expect_fail(const char *text, qd_status want, const char *needle) {
@@ -975,6 +1089,7 @@ int main(void) {
         cmocka_unit_test(lamina_thomson),
         cmocka_unit_test(pulley),
         cmocka_unit_test(elliptic_disk),
+        cmocka_unit_test(sphere_on_rough_plane),
         cmocka_unit_test(circuits),
         cmocka_unit_test(rod_end_fixed),
         cmocka_unit_test(hoop_pivoted),
@@ -982,6 +1097,7 @@ int main(void) {
         cmocka_unit_test(headon),
         cmocka_unit_test(oblique),
         cmocka_unit_test(random_theorems),
+        cmocka_unit_test(random_residuals),
         cmocka_unit_test(errors),
         cmocka_unit_test(restitution_range),
     };
