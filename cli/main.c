@@ -41,6 +41,8 @@ static const cli_cmd commands[] = {
      cli_cmd_action, true},
     {"zvc", "FILE --box ... --level H", "Jacobi's integral and the zero-velocity curves",
      cli_cmd_zvc, true},
+    {"impulse", "FILE [--at ...] [--prescribe ...]", "a blow, a sudden constraint, a collision",
+     cli_cmd_impulse, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

@@ -1,0 +1,721 @@
+/*
+ * cli/cmd_impulse.c - `qdot impulse FILE`: the motion just after a blow, a
+ * sudden constraint or a collision (qdot/impulse.h solves M (q'+ - q'-) =
+ * Qhat + A^T Lambda); here the state before is gathered, --prescribe is
+ * added to the model, and the answer is printed: the velocities after
+ * (with their closed forms), the impulsive multipliers and reactions, the
+ * energies, the theorems of impulsive motion that apply (Carnot's,
+ * Bertrand's, Thomson's) with their numbers, and a two-body collision's
+ * lab/centre-of-mass description (Desloge ch. 57 and 61, Byerly ch. III).
+ *
+ * The state before is the model's `initial` as written, an expression in the
+ * parameters (al = pi/6 stays pi/6, so sin(al) is 1/2 in the closed forms),
+ * overridden by --at; a coordinate or velocity named in neither is 0.
+ */
+#include "cli.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "json.h"
+#include "model_cli.h"
+#include "model_file.h"
+#include "state.h"
+#include "qdot/impulse.h"
+
+enum { FMT_TEXT, FMT_JSON, FMT_LATEX };
+
+typedef struct imp_args {
+    const char *file, *at;
+    const char *sets[QD_CLI_MAX_LIST], *pres[QD_CLI_MAX_LIST];
+    size_t nsets, npres;
+    int format;
+} imp_args;
+
+typedef struct imp_run {
+    qd_ctx *ctx;
+    cli_model_file mf;
+    size_t n;
+    const qd_expr **q0, **qd0;   /* the state before, exact: n each */
+    const qd_expr *t0;
+    cli_state par;               /* the parameters' values, to check --at */
+    qd_impulse res;
+} imp_run;
+
+static const char usage_text[] =
+    "usage: qdot impulse FILE [--at \"q=..., q'=..., t=...\"] [--set NAME=VALUE]...\n"
+    "                         [--prescribe \"[NAME:] LHS = RHS, ...\"]... "
+    "[--format text|json|latex]";
+
+static const char *const formats[] = {"text", "json", "latex", NULL};
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    imp_args *a = data;
+    const char *v;
+    if ((v = cli_value(argc, argv, i, "--format")))
+        return cli_choice("--format", v, formats, &a->format);
+    if ((v = cli_value(argc, argv, i, "--at")))
+        return cli_once("--at", &a->at, v);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
+    if ((v = cli_value(argc, argv, i, "--prescribe")))
+        return cli_push("--prescribe", a->pres, &a->npres, QD_CLI_MAX_LIST, v);
+    return cli_bad_option(argv[*i], usage_text);
+}
+
+/* ---- lists given on the command line --------------------------------------- */
+
+/* End of the item starting at i: the next comma outside brackets. */
+static size_t item_end(const char *text, size_t i) {
+    int depth = 0;
+    for (; text[i]; i++) {
+        if (text[i] == '(' || text[i] == '[')
+            depth++;
+        else if ((text[i] == ')' || text[i] == ']') && depth > 0)
+            depth--;
+        else if (text[i] == ',' && depth == 0)
+            break;
+    }
+    return i;
+}
+
+static bool blank(const char *s, size_t len) {
+    for (size_t k = 0; k < len; k++)
+        if (!isspace((unsigned char)s[k]))
+            return false;
+    return true;
+}
+
+/* A parser's record d about the statement "prescribe ITEM" (ITEM from byte
+ * base on) shown against the whole option text, where ITEM starts at start. */
+static void show_in_option(qd_diag d, const char *opt, const char *text, size_t base,
+                           size_t start, size_t len) {
+    bool inside = d.offset >= base && d.offset - base <= len;
+    d.offset = inside ? d.offset - base + start : start;
+    if (!inside || d.length == 0 || d.offset + d.length > start + len)
+        d.length = 1;
+    d.line = d.col = 0;
+    cli_diag_read(opt, text, &d);
+}
+
+/* One item of --prescribe, text[start, start + len), added to the model as
+ * its own statement `prescribe ITEM`, so the model language checks it as it
+ * would in the file. */
+static int add_prescription(imp_run *r, const char *text, size_t start, size_t len) {
+    qd_buf stmt = QD_BUF_INIT;
+    qd_buf_puts(&stmt, "prescribe ");
+    size_t base = stmt.len;
+    qd_buf_putn(&stmt, text + start, len);
+    qd_diag d;
+    memset(&d, 0, sizeof d);
+    qd_status st = stmt.failed ? QD_ERR_NOMEM
+                               : qd_model_add_statement(r->mf.model, qd_buf_str(&stmt), &d);
+    qd_buf_free(&stmt);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    if (st == QD_ERR_NOMEM) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    show_in_option(d, "--prescribe", text, base, start, len);
+    return QD_EXIT_USAGE;
+}
+
+static int add_prescriptions(imp_run *r, const imp_args *a) {
+    for (size_t k = 0; k < a->npres; k++) {
+        const char *text = a->pres[k];
+        if (strchr(text, '\n') || strchr(text, '#')) {
+            cli_diag_error("--prescribe takes one line of items, without comments");
+            return QD_EXIT_USAGE;
+        }
+        for (size_t i = 0; text[i] || i == 0;) {
+            size_t end = item_end(text, i);
+            if (blank(text + i, end - i)) {
+                cli_diag_error("--prescribe: an empty item in '%s'", text);
+                return QD_EXIT_USAGE;
+            }
+            int rc = add_prescription(r, text, i, end - i);
+            if (rc != QD_EXIT_OK)
+                return rc;
+            if (!text[end])
+                break;
+            i = end + 1;
+        }
+    }
+    return QD_EXIT_OK;
+}
+
+/* ---- the state before ----------------------------------------------------------- */
+
+static void list_coords(const qd_model *m, char *out, size_t cap) {
+    size_t used = 0;
+    out[0] = '\0';
+    for (size_t i = 0; i < qd_model_ncoords(m) && used < cap; i++)
+        used += (size_t)snprintf(out + used, cap - used, "%s%s", i ? ", " : "",
+                                 qd_expr_name(qd_model_coord(m, i)));
+}
+
+/* The slot NAME names, *k: coordinate j (j), its velocity NAME' (n + j) or
+ * t (2n); false (with the error printed) for anything else. */
+static bool find_slot(const imp_run *r, const char *name, size_t *k) {
+    size_t len = strlen(name), primes = 0;
+    while (len && name[len - 1] == '\'') {
+        len--;
+        primes++;
+    }
+    if (!strcmp(name, "t")) {
+        *k = 2 * r->n;
+        return true;
+    }
+    for (size_t j = 0; j < r->n && primes < 2; j++) {
+        const char *q = qd_expr_name(qd_model_coord(r->mf.model, j));
+        if (strlen(q) == len && !strncmp(q, name, len)) {
+            *k = primes ? r->n + j : j;
+            return true;
+        }
+    }
+    char known[512];
+    list_coords(r->mf.model, known, sizeof known);
+    cli_diag_error("--at: '%s' is not a coordinate, a velocity or t (the coordinates are %s; "
+                   "velocities are written with a prime; parameters take --set)", name, known);
+    return false;
+}
+
+static const qd_expr **slot_of(imp_run *r, size_t k) {
+    return k == 2 * r->n ? &r->t0 : k >= r->n ? &r->qd0[k - r->n] : &r->q0[k];
+}
+
+/* VALUE, text[a, b): an expression in the parameters, kept exact. */
+static int read_value(imp_run *r, const char *text, size_t a, size_t b, const char *name,
+                      const qd_expr **out) {
+    char *copy = malloc(b - a + 1);
+    if (!copy)
+        return QD_EXIT_FAIL;
+    memcpy(copy, text + a, b - a);
+    copy[b - a] = '\0';
+    const qd_read_opts opts = {.new_symbols = false};
+    qd_diag err;
+    const qd_expr *e = qd_read(r->ctx, copy, &opts, &err);
+    size_t np = qd_model_nparams(r->mf.model), first = r->par.n - np;
+    double v = 0;
+    int rc = QD_EXIT_OK;
+    if (!e) {
+        err.offset += a;
+        cli_diag_read("--at", text, &err);
+        rc = QD_EXIT_USAGE;
+    } else if (qd_eval(r->ctx, e, np, r->par.syms + first, r->par.vals + first, &v) != QD_OK ||
+               !isfinite(v)) {
+        qd_ctx_clear_error(r->ctx);
+        cli_diag_error("--at %s: '%s' is not a finite number (a value may use the parameters, "
+                       "not the coordinates)", name, copy);
+        rc = QD_EXIT_USAGE;
+    } else {
+        *out = e;
+    }
+    free(copy);
+    return rc;
+}
+
+/* One NAME=VALUE of --at, text[a, b). */
+static int at_item(imp_run *r, const char *text, size_t a, size_t b, bool *given) {
+    const char *eq = memchr(text + a, '=', b - a);
+    size_t na = a, nb = eq ? (size_t)(eq - text) : b;
+    while (na < nb && isspace((unsigned char)text[na]))
+        na++;
+    while (nb > na && isspace((unsigned char)text[nb - 1]))
+        nb--;
+    if (!eq || na == nb || nb - na >= 128) {
+        cli_diag_error("--at: expected NAME=VALUE, not '%.*s'", (int)(b - a), text + a);
+        return QD_EXIT_USAGE;
+    }
+    char name[128];
+    memcpy(name, text + na, nb - na);
+    name[nb - na] = '\0';
+    size_t k;
+    if (!find_slot(r, name, &k))
+        return QD_EXIT_USAGE;
+    if (given[k]) {
+        cli_diag_error("--at: '%s' is given twice", name);
+        return QD_EXIT_USAGE;
+    }
+    given[k] = true;
+    return read_value(r, text, (size_t)(eq + 1 - text), b, name, slot_of(r, k));
+}
+
+static int parse_at(imp_run *r, const char *text) {
+    bool *given = calloc(2 * r->n + 1, sizeof *given);
+    if (!given)
+        return QD_EXIT_FAIL;
+    int rc = QD_EXIT_OK;
+    for (size_t i = 0; text[i] && rc == QD_EXIT_OK;) {
+        size_t end = item_end(text, i);
+        if (!blank(text + i, end - i))
+            rc = at_item(r, text, i, end, given);
+        i = text[end] ? end + 1 : end;
+    }
+    free(given);
+    return rc;
+}
+
+/* `initial` as written, then --at; 0 for what neither names. */
+static int state_before(imp_run *r, const char *at) {
+    const qd_model *m = r->mf.model;
+    r->q0 = calloc(r->n + 1, sizeof *r->q0);
+    r->qd0 = calloc(r->n + 1, sizeof *r->qd0);
+    const qd_expr *zero = qd_int(r->ctx, 0);
+    if (!r->q0 || !r->qd0 || !zero) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    for (size_t j = 0; j < r->n; j++) {
+        const qd_expr *q = qd_model_initial_definition(m, j, 0);
+        const qd_expr *v = qd_model_initial_definition(m, j, 1);
+        r->q0[j] = q ? q : zero;
+        r->qd0[j] = v ? v : zero;
+    }
+    int rc = cli_state_init(r->ctx, m, &r->par);
+    return rc == QD_EXIT_OK && at ? parse_at(r, at) : rc;
+}
+
+/* ---- solving -------------------------------------------------------------------- */
+
+/* The input's fault (exit 2) or a numerical failure (exit 1): dependent or
+ * inconsistent sudden constraints are the latter. */
+static int exit_status(qd_status st) {
+    return st == QD_ERR_ARG || st == QD_ERR_PARSE || st == QD_ERR_NONLINEAR ||
+                   st == QD_ERR_UNBOUND || st == QD_ERR_DIVZERO
+               ? QD_EXIT_USAGE
+               : QD_EXIT_FAIL;
+}
+
+/* The solver's error, at the statement it is about when it names one. */
+static int solve_failed(imp_run *r) {
+    qd_diag d = *qd_ctx_diag(r->ctx);
+    bool about = d.subject != QD_SUBJECT_NONE && d.subject != QD_SUBJECT_TEXT;
+    if (about && qd_model_locate(r->mf.model, &d))
+        cli_diag_show(r->mf.path, r->mf.text, &d);
+    else
+        cli_diag_show("qdot", NULL, &d);
+    return exit_status(qd_ctx_status(r->ctx));
+}
+
+static int solve(imp_run *r) {
+    qd_impulse_opts o = {.q = r->q0, .qd = r->qd0, .t = r->t0, .exact = true, .max_ops = 0};
+    if (qd_impulse_solve(r->ctx, r->mf.model, &o, &r->res) != QD_OK)
+        return solve_failed(r);
+    return QD_EXIT_OK;
+}
+
+/* ---- output: shared ---------------------------------------------------------------- */
+
+static const char *qname(const imp_run *r, size_t j) { return qd_expr_name(r->res.q[j]); }
+
+static void put_num(qd_buf *b, double x) { cli_state_put_result(b, x); }
+
+static void put_vec(qd_buf *b, const double *v) {
+    qd_buf_puts(b, "(");
+    for (unsigned k = 0; k < 3; k++) {
+        qd_buf_puts(b, k ? ", " : "");
+        put_num(b, v[k]);
+    }
+    qd_buf_puts(b, ")");
+}
+
+/* A closed form worth showing beside its number: not a plain integer. */
+static bool shows(const qd_expr *x) { return x && !qd_is_integer(x); }
+
+/* "closed = number", or the number alone. */
+static void put_value(imp_run *r, qd_buf *b, const qd_expr *exact, double x) {
+    if (shows(exact)) {
+        qd_print(r->ctx, exact, QD_FMT_TEXT, b);
+        qd_buf_puts(b, " = ");
+    }
+    put_num(b, x);
+}
+
+static const qd_expr *exact_qd(const imp_run *r, size_t j) {
+    return r->res.exact && r->res.qd_after_exact ? r->res.qd_after_exact[j] : NULL;
+}
+
+static const qd_expr *exact_mult(const imp_run *r, size_t k) {
+    return r->res.exact && r->res.mult_exact ? r->res.mult_exact[k] : NULL;
+}
+
+static const qd_expr *exact_lost(const imp_run *r) {
+    return r->res.exact ? r->res.energy_lost_exact : NULL;
+}
+
+/* ---- text ---------------------------------------------------------------------- */
+
+static void text_velocities(imp_run *r, qd_buf *b) {
+    const qd_impulse *s = &r->res;
+    qd_buf_puts(b, "velocities before:");
+    for (size_t j = 0; j < s->n; j++) {
+        qd_buf_printf(b, "%s %s' = ", j ? "," : "", qname(r, j));
+        put_num(b, s->qd_before[j]);
+    }
+    qd_buf_puts(b, "\nvelocities after:\n");
+    for (size_t j = 0; j < s->n; j++) {
+        qd_buf_printf(b, "  %s'+ = ", qname(r, j));
+        put_value(r, b, exact_qd(r, j), s->qd_after[j]);
+        qd_buf_puts(b, "\n");
+    }
+}
+
+static void text_impulses(imp_run *r, qd_buf *b) {
+    const qd_impulse *s = &r->res;
+    if (qd_model_nblows(r->mf.model)) {
+        qd_buf_puts(b, "generalized impulses of the blows:");
+        for (size_t j = 0; j < s->n; j++) {
+            qd_buf_printf(b, "%s Qhat[%s] = ", j ? "," : "", qname(r, j));
+            put_num(b, s->Qhat[j]);
+        }
+        qd_buf_puts(b, "\n");
+    }
+    if (s->nmult)
+        qd_buf_puts(b, "impulsive multipliers:\n");
+    for (size_t k = 0; k < s->nmult; k++) {
+        qd_buf_printf(b, "  %s = ", s->mult_name[k]);
+        put_value(r, b, exact_mult(r, k), s->mult[k]);
+        qd_buf_puts(b, "\n");
+    }
+    if (s->nreact)
+        qd_buf_puts(b, "impulsive reactions:\n");
+    for (size_t k = 0; k < s->nreact; k++) {
+        qd_buf_printf(b, "  %s: ", s->react_name[k]);
+        put_vec(b, s->react[k]);
+        qd_buf_puts(b, "\n");
+    }
+}
+
+static void text_energy(imp_run *r, qd_buf *b) {
+    const qd_impulse *s = &r->res;
+    qd_buf_puts(b, "kinetic energy: before ");
+    put_num(b, s->T_before);
+    qd_buf_puts(b, ", after ");
+    put_num(b, s->T_after);
+    /* a blow on a system at rest gives energy: say so, not "lost -3" */
+    bool gained = s->energy_lost < -1e-12 * (s->T_before + s->T_after);
+    const qd_expr *x = exact_lost(r);
+    qd_buf_puts(b, gained ? "\nenergy gained: " : "\nenergy lost: ");
+    put_value(r, b, x && gained ? qd_neg(r->ctx, x) : x, gained ? -s->energy_lost : s->energy_lost);
+    qd_buf_puts(b, "\n");
+}
+
+/* The end of a theorem's line: a check that failed is said, not hidden. */
+static void verdict(qd_buf *b, const qd_impulse_check *c) {
+    qd_buf_puts(b, c->holds ? "\n" : " -- NOT verified here (to 1e-9)\n");
+}
+
+static void text_theorems(const imp_run *r, qd_buf *b) {
+    const qd_impulse *s = &r->res;
+    if (s->carnot.applies) {
+        qd_buf_puts(b, "Carnot: the energy lost, ");
+        put_num(b, s->carnot.a);
+        qd_buf_puts(b, ", equals the kinetic energy of the velocity change, ");
+        put_num(b, s->carnot.b);
+        verdict(b, &s->carnot);
+    }
+    if (s->bertrand.applies) {
+        qd_buf_puts(b, "Bertrand: the sudden constraints lower the energy after from ");
+        put_num(b, s->bertrand.a);
+        qd_buf_puts(b, " (the same blows without them) to ");
+        put_num(b, s->bertrand.b);
+        qd_buf_puts(b, ", by the energy of the difference of the two motions, ");
+        put_num(b, s->bertrand.c);
+        verdict(b, &s->bertrand);
+    }
+    if (s->thomson.applies) {
+        qd_buf_puts(b, "Thomson: the velocity change has the least energy, ");
+        put_num(b, s->thomson.a);
+        qd_buf_puts(b, ", of the motions giving the struck points the same velocities "
+                       "(least found: ");
+        put_num(b, s->thomson.b);
+        qd_buf_puts(b, ")");
+        verdict(b, &s->thomson);
+    }
+}
+
+static double deg(double rad) { return rad * 45.0 / atan(1.0); }
+
+static void put_angle(qd_buf *b, double rad) {
+    put_num(b, rad);
+    qd_buf_puts(b, " rad (");
+    put_num(b, deg(rad));
+    qd_buf_puts(b, " deg)");
+}
+
+static void text_collision(const imp_run *r, qd_buf *b) {
+    const qd_collision *c = &r->res.col;
+    qd_buf_puts(b, "collision of two bodies (centre-of-mass frame, Desloge ch. 61):\n  masses ");
+    put_num(b, c->m1);
+    qd_buf_puts(b, " and ");
+    put_num(b, c->m2);
+    qd_buf_puts(b, "; centre-of-mass velocity w = ");
+    put_vec(b, c->w);
+    for (int i = 0; i < 2; i++) {
+        qd_buf_printf(b, "\n  body %d: ", i + 1);
+        put_vec(b, i ? c->v2[0] : c->v1[0]);
+        qd_buf_puts(b, " -> ");
+        put_vec(b, i ? c->v2[1] : c->v1[1]);
+    }
+    qd_buf_puts(b, "\n  relative velocity u = v1 - v2: ");
+    put_vec(b, c->u[0]);
+    qd_buf_puts(b, " -> ");
+    put_vec(b, c->u[1]);
+    qd_buf_puts(b, "\n  relative kinetic energy: ");
+    put_num(b, c->eps[0]);
+    qd_buf_puts(b, " -> ");
+    put_num(b, c->eps[1]);
+    qd_buf_puts(b, "\n  deflection in the CM frame: ");
+    put_angle(b, c->theta_cm);
+    qd_buf_puts(b, "\n  lab angles from u before: body 1 ");
+    put_angle(b, c->theta_lab1);
+    qd_buf_puts(b, ", body 2 ");
+    put_angle(b, c->theta_lab2);
+    qd_buf_puts(b, "\n  gamma = |w|/s* = ");
+    put_num(b, c->gamma);
+    qd_buf_puts(b, " (tan theta_lab1 = sin theta/(cos theta + gamma) when body 2 is at rest "
+                   "before)\n");
+}
+
+static void write_text(imp_run *r, qd_buf *b) {
+    text_velocities(r, b);
+    text_impulses(r, b);
+    text_energy(r, b);
+    text_theorems(r, b);
+    if (r->res.collision)
+        text_collision(r, b);
+}
+
+/* ---- JSON ---------------------------------------------------------------------- */
+
+static void json_num(cli_json *j, const char *key, double x) {
+    cli_json_key(j, key);
+    cli_json_number(j, x == 0 ? 0.0 : x);
+}
+
+static void json_vec(cli_json *j, const char *key, const double *v) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (unsigned k = 0; k < 3; k++)
+        cli_json_number(j, v[k] == 0 ? 0.0 : v[k]);
+    cli_json_end_array(j);
+}
+
+/* An object keyed by the coordinates ("x'" with prime), one number each. */
+static void json_by_coord(imp_run *r, cli_json *j, const char *key, const double *x,
+                          bool prime) {
+    char name[80];
+    cli_json_key(j, key);
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < r->res.n; k++) {
+        snprintf(name, sizeof name, "%s%s", qname(r, k), prime ? "'" : "");
+        json_num(j, name, x[k]);
+    }
+    cli_json_end_object(j);
+}
+
+static void json_multipliers(imp_run *r, cli_json *j) {
+    const qd_impulse *s = &r->res;
+    cli_json_key(j, "impulsive_multipliers");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < s->nmult; k++)
+        json_num(j, s->mult_name[k], s->mult[k]);
+    cli_json_end_object(j);
+    cli_json_key(j, "impulsive_reactions");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < s->nreact; k++)
+        json_vec(j, s->react_name[k], s->react[k]);
+    cli_json_end_object(j);
+}
+
+static void json_exact(imp_run *r, cli_json *j) {
+    const qd_impulse *s = &r->res;
+    char name[80];
+    cli_json_key(j, "exact");
+    if (!s->exact) {
+        cli_json_null(j);
+        return;
+    }
+    cli_json_begin_object(j);
+    cli_json_key(j, "velocities_after");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < s->n; k++) {
+        snprintf(name, sizeof name, "%s'", qname(r, k));
+        cli_json_key(j, name);
+        cli_json_expr(j, r->ctx, exact_qd(r, k));
+    }
+    cli_json_end_object(j);
+    cli_json_key(j, "impulsive_multipliers");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < s->nmult; k++) {
+        cli_json_key(j, s->mult_name[k]);
+        cli_json_expr(j, r->ctx, exact_mult(r, k));
+    }
+    cli_json_end_object(j);
+    cli_json_key(j, "energy_lost");
+    cli_json_expr(j, r->ctx, exact_lost(r));
+    cli_json_end_object(j);
+}
+
+/* One theorem: whether it applies and holds, and its numbers named. */
+static void json_check(cli_json *j, const char *key, const qd_impulse_check *c,
+                       const char *const names[3]) {
+    cli_json_key(j, key);
+    cli_json_begin_object(j);
+    cli_json_key(j, "applies");
+    cli_json_bool(j, c->applies);
+    cli_json_key(j, "holds");
+    cli_json_bool(j, c->applies && c->holds);
+    const double v[3] = {c->a, c->b, c->c};
+    for (int k = 0; k < 3 && c->applies; k++)
+        if (names[k])
+            json_num(j, names[k], v[k]);
+    cli_json_end_object(j);
+}
+
+static void json_theorems(const imp_run *r, cli_json *j) {
+    static const char *const carnot[3] = {"energy_lost", "energy_of_change", NULL};
+    static const char *const bertrand[3] = {"energy_without", "energy_with",
+                                            "energy_of_difference"};
+    static const char *const thomson[3] = {"energy_of_change", "least_energy", NULL};
+    cli_json_key(j, "theorems");
+    cli_json_begin_object(j);
+    json_check(j, "carnot", &r->res.carnot, carnot);
+    json_check(j, "bertrand", &r->res.bertrand, bertrand);
+    json_check(j, "thomson", &r->res.thomson, thomson);
+    cli_json_end_object(j);
+}
+
+static void json_collision(const imp_run *r, cli_json *j) {
+    const qd_collision *c = &r->res.col;
+    cli_json_begin_object(j);
+    json_num(j, "m1", c->m1);
+    json_num(j, "m2", c->m2);
+    json_vec(j, "w", c->w);
+    json_vec(j, "v1_before", c->v1[0]);
+    json_vec(j, "v1_after", c->v1[1]);
+    json_vec(j, "v2_before", c->v2[0]);
+    json_vec(j, "v2_after", c->v2[1]);
+    json_vec(j, "u_before", c->u[0]);
+    json_vec(j, "u_after", c->u[1]);
+    json_num(j, "eps_before", c->eps[0]);
+    json_num(j, "eps_after", c->eps[1]);
+    json_num(j, "theta_cm", c->theta_cm);
+    json_num(j, "theta_lab1", c->theta_lab1);
+    json_num(j, "theta_lab2", c->theta_lab2);
+    json_num(j, "gamma", c->gamma);
+    cli_json_end_object(j);
+}
+
+static void write_json(imp_run *r, qd_buf *b) {
+    const qd_impulse *s = &r->res;
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    json_by_coord(r, &j, "velocities_before", s->qd_before, true);
+    json_by_coord(r, &j, "velocities_after", s->qd_after, true);
+    json_by_coord(r, &j, "generalized_impulses", s->Qhat, false);
+    json_multipliers(r, &j);
+    json_num(&j, "kinetic_energy_before", s->T_before);
+    json_num(&j, "kinetic_energy_after", s->T_after);
+    json_num(&j, "energy_lost", s->energy_lost);
+    json_exact(r, &j);
+    json_theorems(r, &j);
+    cli_json_key(&j, "collision");
+    if (s->collision)
+        json_collision(r, &j);
+    else
+        cli_json_null(&j);
+    cli_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+    b->failed = b->failed || !cli_json_ok(&j);
+}
+
+/* ---- LaTeX --------------------------------------------------------------------- */
+
+/* One line "lhs &= closed form" (or the number when there is none). */
+static void latex_line(imp_run *r, qd_buf *b, bool *first, const qd_expr *lhs,
+                       const char *suffix, const qd_expr *exact, double x) {
+    qd_buf_puts(b, *first ? "  " : " \\\\\n  ");
+    *first = false;
+    qd_print(r->ctx, lhs, QD_FMT_LATEX, b);
+    qd_buf_printf(b, "%s &= ", suffix);
+    if (exact)
+        qd_print(r->ctx, exact, QD_FMT_LATEX, b);
+    else
+        put_num(b, x);
+}
+
+static void write_latex(imp_run *r, qd_buf *b) {
+    const qd_impulse *s = &r->res;
+    bool first = true;
+    qd_buf_puts(b, "\\begin{align}\n");
+    for (size_t j = 0; j < s->n; j++)
+        latex_line(r, b, &first, qd_jet(r->ctx, s->q[j], 1), "^{+}", exact_qd(r, j),
+                   s->qd_after[j]);
+    for (size_t k = 0; k < s->nmult; k++)
+        latex_line(r, b, &first, qd_symbol(r->ctx, s->mult_name[k]), "", exact_mult(r, k),
+                   s->mult[k]);
+    qd_buf_puts(b, first ? "  " : " \\\\\n  ");
+    qd_buf_puts(b, "T_- - T_+ &= ");
+    if (exact_lost(r))
+        qd_print(r->ctx, exact_lost(r), QD_FMT_LATEX, b);
+    else
+        put_num(b, s->energy_lost);
+    qd_buf_puts(b, "\n\\end{align}\n");
+}
+
+/* ---- the command ------------------------------------------------------------------ */
+
+static int emit(imp_run *r, int format) {
+    qd_buf b = QD_BUF_INIT;
+    if (format == FMT_JSON)
+        write_json(r, &b);
+    else if (format == FMT_LATEX)
+        write_latex(r, &b);
+    else
+        write_text(r, &b);
+    /* a printer that ran out of memory marks the context too */
+    if (qd_ctx_status(r->ctx) == QD_ERR_NOMEM)
+        b.failed = true;
+    return cli_emit(&b, "result");
+}
+
+static void run_free(imp_run *r) {
+    qd_impulse_free(&r->res);
+    cli_state_free(&r->par);
+    free(r->q0);
+    free(r->qd0);
+    cli_model_file_free(&r->mf);
+    qd_ctx_free(r->ctx);
+}
+
+int cli_cmd_impulse(int argc, char **argv) {
+    imp_args a = {0};
+    int rc = cli_file_args(argc, argv, "impulse", usage_text, &a.file, parse_option, &a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    imp_run r = {0};
+    if (!(r.ctx = qd_ctx_new())) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    /* the closed forms stay in the parameters' names, as the other numeric
+     * commands print them; --set gives the values */
+    rc = cli_load(r.ctx, a.file, a.nsets, a.sets, false, &r.mf);
+    if (rc == QD_EXIT_OK) {
+        r.n = qd_model_ncoords(r.mf.model);
+        rc = add_prescriptions(&r, &a);
+    }
+    if (rc == QD_EXIT_OK)
+        rc = state_before(&r, a.at);
+    if (rc == QD_EXIT_OK)
+        rc = solve(&r);
+    if (rc == QD_EXIT_OK)
+        rc = emit(&r, a.format);
+    run_free(&r);
+    return rc;
+}
