@@ -15,6 +15,7 @@
 #include "hamilton.h"
 #include "integrals.h"
 #include "impulse.h"
+#include "hj.h"
 #include "sim.h"
 #include "codegen.h"
 #include "equilibria.h"

@@ -64,7 +64,8 @@ void qd__num_saddle(size_t n, size_t m, const double *M, const double *f, const 
  * xc = x - a (>= 0) near a or x - b (<= 0) near b, computed without the
  * cancellation of x - a at x close to a: an integrand 1/sqrt(E - V(x))
  * with E = V(a) should use xc to form E - V (a Taylor step, or the exact
- * factor (x - a)) where the difference would lose its digits. */
+ * factor (x - a)) where the difference would lose its digits; the
+ * distance to the far end is (b - a) - |xc|, also without cancellation. */
 typedef double (*qd__num_fn)(void *data, double x, double xc);
 
 typedef struct qd__num_quad {
@@ -76,9 +77,10 @@ typedef struct qd__num_quad {
 
 /* The integral of f over [a, b] (a < b, both finite); tol relative (0:
  * 1e-13).  A non-finite f value at an abscissa is treated as a sign the
- * point is at the singularity: the abscissa is dropped.  false when the
- * levels ran out (20) without converging; r still holds the last
- * estimate. */
+ * point is at the singularity and dropped when it lies within 1e-14 of an
+ * end; elsewhere it is a fault of the integrand: value NaN, false.  false
+ * also when the levels ran out (12, step 2^-12) without converging; r then
+ * holds the last estimate. */
 bool qd__num_quad_finite(qd__num_fn f, void *data, double a, double b, double tol,
                          qd__num_quad *r);
 

@@ -1,0 +1,84 @@
+/*
+ * qdot/hj.h - the Hamilton-Jacobi equation and its separation (Desloge
+ * ch. 78-79; Goldstein ch. 10).
+ *
+ * For H(q, p, t) the Hamilton-Jacobi equation is
+ *
+ *     H(q, dS/dq, t) + dS/dt = 0,
+ *
+ * and when H has no t, S = W(q, alpha) - E t with Hamilton's characteristic
+ * function W solving H(q, dW/dq) = E.  W is separable in the coordinates
+ * when W = sum_k W_k(q_k; alpha): each coordinate then has an equation of
+ * its own,
+ *
+ *     F_k(q_k, p_k = dW_k/dq_k; alpha) = 0,
+ *
+ * with one separation constant per coordinate (the energy E among them),
+ * and W_k = int p_k(q_k; alpha) dq_k.  qd_hj_derive finds the separation by
+ * exact tests on the kernel's expressions: cyclic coordinates (p_k =
+ * alpha_k), additive separation (H = sum_k H_k(q_k, p_k)), and the
+ * Liouville/Staeckel forms (the separations of polar, spherical, parabolic
+ * and elliptic coordinates).
+ */
+#ifndef QDOT_HJ_H
+#define QDOT_HJ_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* One separated coordinate. */
+typedef struct qd_hj_sep {
+    const qd_expr *q;          /* the coordinate q_k */
+    const qd_expr *constant;   /* the separation constant this equation introduces
+                                  (a plain symbol: alpha_<q>, or the energy E) */
+    /* F_k = 0 in q_k, p_k (the symbol p_<q>, or the model's momentum name)
+     * and the constants */
+    const qd_expr *equation;
+    /* p_k^2 as a function of q_k and the constants: the motion in q_k is
+     * where it is >= 0, its simple roots are the turning points */
+    const qd_expr *p2;
+    bool cyclic;               /* p_k = constant */
+    /* the constant as a first integral: an expression in q and the model's
+     * velocities (q') for a Lagrangian model, or q and p for a model given
+     * by H; evaluating it at a state gives the constant's value there */
+    const qd_expr *integral;
+} qd_hj_sep;
+
+typedef struct qd_hj {
+    size_t n;
+    const qd_expr *H;          /* the Hamiltonian, in q, p, t */
+    const qd_expr *equation;   /* H(q, dS/dq, t) + dS/dt (= 0) */
+    bool time_independent;     /* S = W - E t */
+    bool separable;
+    const char *form;          /* "cyclic", "additive", "Liouville", "Staeckel",
+                                  or a combination ("cyclic + Liouville") */
+    char why[256];             /* why (not) separable, for the reader */
+    qd_hj_sep *sep;            /* n, in coordinate order, when separable */
+    size_t nconst;
+    const qd_expr **constants; /* the separation constants, energy last */
+    const qd_expr *energy;     /* the energy constant (E), or NULL */
+    /* W = sum_k int p_k dq_k: closed forms where the kernel integrates,
+     * integral(EXPR, VAR) otherwise; NULL when not separable */
+    const qd_expr *W;
+} qd_hj;
+
+typedef struct qd_hj_opts {
+    const char *energy_name;   /* NULL: "E" */
+} qd_hj_opts;
+
+/* Derive the HJ equation of m (given by L or by H) and separate it.  A
+ * system that does not separate is not an error: separable = false with
+ * the obstruction in why.  NULL on failure (reason in ctx). */
+QD_API qd_hj *qd_hj_derive(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts);
+QD_API void qd_hj_free(qd_hj *h);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
