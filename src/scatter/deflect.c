@@ -139,6 +139,7 @@ typedef struct integrand {
     double r0, V0d[4]; /* V and its derivatives at r0 (its segment's side) */
     bool root;         /* g(r0) = 0: form g from the distance s */
     double s_lo, s_hi; /* the segment in s */
+    double far;        /* beyond it V is dropped: below round-off, and r^12 would overflow */
 } integrand;
 
 /* b/(r0 (1 + s)^2 sqrt(g)) dr/ds-scaled: the integrand of alpha in s. */
@@ -146,7 +147,10 @@ static double alpha_fn(void *data, double s, double sc) {
     integrand *I = data;
     radial *R = I->R;
     double r = I->r0 * (1 + s), q = R->b / I->r0, g;
-    if (I->root && I->s_lo == 0) {
+    if (r > I->far) {
+        double x = R->b / r;
+        g = 1 - x * x;
+    } else if (I->root && I->s_lo == 0) {
         /* the distance from r0 as the rule hands it over, without s - 0's
          * loss near the far end of a finite segment */
         double ds = sc >= 0 ? sc : I->s_hi + sc;
@@ -167,18 +171,20 @@ static double alpha_fn(void *data, double s, double sc) {
 /* The ends of the pieces of [r0, inf) after r0: every jump above r0 (the
  * integrand is discontinuous there) and a few soft points, 2 r0 and the
  * potential's scale, so that no single piece has to resolve both the
- * turning point and a well far from it. */
+ * turning point and a well far from it; near r0 a few more, for the
+ * near-double root of an orbit close to orbiting. */
 static size_t breakpoints(const qd_scatter *s, double r0, double b, double *p) {
-    double L = qd__sct_scale(s, b), soft[5] = {2 * r0, L / 2, L, 2 * L, 4 * L};
+    double L = qd__sct_scale(s, b);
+    double soft[8] = {r0 * 1.001, r0 * 1.01, r0 * 1.1, 2 * r0, L / 2, L, 2 * L, 4 * L};
     size_t n = 0;
     for (size_t i = 0; i < s->njump; i++)
         if (s->jump[i] > r0)
             p[n++] = s->jump[i];
-    for (int k = 0; k < 5; k++) {
+    for (int k = 0; k < 8; k++) {
         bool seen = false;
         for (size_t i = 0; i < n; i++)
             seen |= fabs(p[i] - soft[k]) <= 1e-3 * soft[k];
-        if (!seen && soft[k] > r0 * (1 + 1e-3))
+        if (!seen && soft[k] > r0 * (1 + 1e-4))
             p[n++] = soft[k];
     }
     for (size_t i = 1; i < n; i++) /* insertion sort: a handful */
@@ -207,8 +213,8 @@ static bool piece(integrand *I, double lo, double hi, qd__num_quad *q) {
 /* alpha over the pieces from r0 outwards. */
 static qd_status integrate(qd_ctx *ctx, radial *R, double r0, bool root, double *alpha) {
     qd_scatter *s = R->s;
-    integrand I = {.R = R, .r0 = r0, .root = root};
-    double p[QD_SCT_MAX_JUMPS + 6];
+    integrand I = {.R = R, .r0 = r0, .root = root, .far = 1e12 * qd__sct_scale(s, R->b)};
+    double p[QD_SCT_MAX_JUMPS + 8];
     size_t np = breakpoints(s, r0, R->b, p);
     qd__sct_segment(s, r0, +1, &R->lo, &R->hi);
     qd__sct_eval(s, r0, R->lo, R->hi, I.V0d);
@@ -217,7 +223,7 @@ static qd_status integrate(qd_ctx *ctx, radial *R, double r0, bool root, double 
         qd__num_quad q;
         double hi = i < np ? p[i] : INFINITY;
         bool ok = piece(&I, lo, hi, &q);
-        if (!ok && !(q.error <= 1e-9 * fmax(1, fabs(q.value)))) {
+        if (!isfinite(q.value) || (!ok && !(q.error <= 1e-9 * fmax(1, fabs(q.value))))) {
             qd_ctx_error(ctx, QD_ERR_NUMERIC, "the deflection integral did not converge "
                          "(E = %g, b = %g)", R->E, R->b);
             return QD_ERR_NUMERIC;

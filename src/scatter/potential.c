@@ -219,14 +219,33 @@ static const qd_expr *cyclic_coordinate(qd_ctx *ctx, const qd_model *m, const qd
     return found;
 }
 
+/* e with every parameter of m replaced by its value. */
+static const qd_expr *with_values(qd_ctx *ctx, const qd_model *m, const qd_expr *e) {
+    size_t n = qd_model_nparams(m);
+    const qd_expr **from = malloc((n + 1) * sizeof *from), **to = malloc((n + 1) * sizeof *to);
+    if (!from || !to) {
+        free(from);
+        free(to);
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    for (size_t i = 0; i < n; i++)
+        from[i] = qd_model_param(m, i), to[i] = qd_model_param_value(m, i);
+    const qd_expr *r = e ? qd_subs(ctx, e, n, from, to) : NULL;
+    free(from);
+    free(to);
+    return r;
+}
+
 /* V_eff - V = p^2/(2 m r^2) at a few points: the centrifugal barrier of a
  * particle of constant mass m, i.e. T = m/2 (r'^2 + r^2 phi'^2). */
-static bool is_central(qd_ctx *ctx, const qd_routh *h, const qd_expr *V, double m) {
+static bool is_central(qd_ctx *ctx, const qd_routh *h, const qd_expr *Veff, const qd_expr *V,
+                       double m) {
     const qd_expr *syms[2] = {h->keep[0], h->beta[0]};
     static const double pts[3][2] = {{0.7, 0.9}, {1.3, -2.1}, {2.9, 0.4}};
     for (int k = 0; k < 3; k++) {
         double ve, v0, r = pts[k][0], p = pts[k][1];
-        if (qd_eval(ctx, h->Veff, 2, syms, pts[k], &ve) != QD_OK ||
+        if (!Veff || qd_eval(ctx, Veff, 2, syms, pts[k], &ve) != QD_OK ||
             qd_eval(ctx, V, 2, syms, pts[k], &v0) != QD_OK)
             return false;
         double want = p * p / (2 * m * r * r);
@@ -249,20 +268,20 @@ qd_scatter *qd_scatter_from_model(qd_ctx *ctx, const qd_model *m, const qd_eom *
     qd_routh *h = ign ? qd_routh_derive(ctx, m, e, 1, &ign) : NULL;
     if (!h)
         return NULL;
-    const qd_expr *zero = qd_int(ctx, 0);
-    const qd_expr *V = qd_subs(ctx, h->Veff, 1, &h->beta[0], &zero);
+    const qd_expr *zero = qd_int(ctx, 0), *M = with_values(ctx, m, h->M[0]);
+    const qd_expr *V = with_values(ctx, m, qd_subs(ctx, h->Veff, 1, &h->beta[0], &zero));
     qd_scatter *s = NULL;
-    if (!qd_is_number(h->M[0]) || !(qd_number_value(h->M[0]) > 0) || !V) {
+    if (!M || !qd_is_number(M) || !(qd_number_value(M) > 0) || !V) {
         if (V)
             qd_ctx_error(ctx, QD_ERR_ARG, "the radial mass is not a positive constant: not a "
                          "particle in a central potential");
-    } else if (!is_central(ctx, h, V, qd_number_value(h->M[0]))) {
+    } else if (!is_central(ctx, h, with_values(ctx, m, h->Veff), V, qd_number_value(M))) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, QD_ERR_ARG, "V_eff is not V(%s) + p^2/(2 m %s^2): not a central "
                          "potential", qd_expr_name(h->keep[0]), qd_expr_name(h->keep[0]));
     } else {
         if (mass)
-            *mass = qd_number_value(h->M[0]);
+            *mass = qd_number_value(M);
         s = qd_scatter_new(ctx, V, h->keep[0], core);
     }
     qd_routh_free(h);

@@ -96,9 +96,16 @@ static size_t kinks(qd_scatter *s, double E, double *k) {
     return n;
 }
 
+/* chi at b; NaN for an orbit that does not leave, and for one so close
+ * to orbiting that its integral does not converge: such a grid point is
+ * left out (the branches there wind without end anyway). */
 static double chi_at(qd_ctx *ctx, qd_scatter *s, double E, double b, qd_status *st) {
     qd_scatter_path p;
     qd_status r = qd_scatter_deflect(ctx, s, E, b, &p);
+    if (r == QD_ERR_NUMERIC) {
+        qd_ctx_clear_error(ctx);
+        return NAN;
+    }
     if (r != QD_OK && *st == QD_OK)
         *st = r;
     return p.kind == QD_SCATTER_DEFLECTED || p.kind == QD_SCATTER_REFLECTED ? p.chi : NAN;
