@@ -260,9 +260,13 @@ static void find_rainbows(qd_ctx *ctx, qd_scatter *s, double E, const sct_grid *
         if (!same_piece(g, i - 1) || !same_piece(g, i))
             continue;
         double d0 = g->chi[i] - g->chi[i - 1], d1 = g->chi[i + 1] - g->chi[i];
-        if (!(d0 * d1 < 0))
+        /* differences at round-off are the quadrature's noise in a far tail */
+        double noise = 1e-12 * fmax(1, fabs(g->chi[i]));
+        if (!(d0 * d1 < 0) || fabs(d0) < noise || fabs(d1) < noise)
             continue;
         double bx, cx = extremum(ctx, s, E, g->b[i - 1], g->b[i + 1], d0 > 0 ? 1 : -1, &bx, st);
+        if (fabs(cx) < 1e-9)
+            continue;
         f->rainbow_b[f->nrainbow] = bx;
         f->rainbow_theta[f->nrainbow++] = acos(cos(cx));
     }
@@ -271,7 +275,9 @@ static void find_rainbows(qd_ctx *ctx, qd_scatter *s, double E, const sct_grid *
 static void find_glories(qd_ctx *ctx, qd_scatter *s, double E, const sct_grid *g,
                          qd_scatter_features *f, qd_status *st) {
     for (size_t i = 0; i + 1 < g->n && f->nglory < QD_SCATTER_MAX_FEATURE; i++) {
-        if (!same_piece(g, i) || !(sin(g->chi[i]) * sin(g->chi[i + 1]) < 0))
+        double s0 = sin(g->chi[i]), s1 = sin(g->chi[i + 1]);
+        /* a crossing at round-off size is noise in a far tail, not a glory */
+        if (!same_piece(g, i) || !(s0 * s1 < 0) || fmax(fabs(s0), fabs(s1)) < 1e-9)
             continue;
         /* a crossing of a multiple of pi, not a jump of 2 pi in the folding */
         if (fabs(g->chi[i + 1] - g->chi[i]) > PI / 2)

@@ -1,0 +1,189 @@
+#!/usr/bin/env python3
+"""Tests of `qdot scatter`, run against the built program.
+
+    python3 tests/cli/check_scatter_cli.py --build BUILD_DIR
+
+Expected values are the books' (Desloge ch. 60-61, seed
+000_46d037099a6cfcd7; reference /work/shared/reference/seed-desloge-B.md):
+
+- Rutherford (C4, T15): tan(Theta/2) = k/(2 E b), dsigma/dOmega =
+  (k/(4E))^2/sin^4(Theta/2), r0 = (k/2E)(1 + sqrt(1 + (2 E b/k)^2)), an
+  infinite total cross section;
+- the hard sphere (ch. 60 ex. 1): sigma = a^2/4, total pi a^2, via --core;
+- the refracting sphere (ch. 60 problems; Landau sec. 18 pb. 2);
+- the Gaussian well's rainbow: the deflection either side of the rainbow's
+  b is smaller than the rainbow angle (a minimum of chi);
+- capture by V = -k/r^4 (T19): sigma = 2 pi at k = E = 1;
+- the lab frame with equal masses (ch. 61 pb. 7, T25): Theta/2, recoil at
+  (pi - Theta)/2, energies cos^2 and sin^2 of Theta/2;
+- errors (exit 2): E <= 0, b < 0, both --b and --theta, a model with no
+  cyclic coordinate, one that is not a central potential, a V that does
+  not vanish at infinity.
+
+Prints "N passed, N failed"; exit 1 on failure."""
+import argparse
+import json
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
+results = {'passed': 0, 'failed': 0}
+
+
+def check(name, ok, detail=''):
+    results['passed' if ok else 'failed'] += 1
+    if not ok:
+        print('FAIL %s %s' % (name, detail))
+
+
+def close(a, b, rel):
+    return a is not None and abs(a - b) <= rel * max(abs(b), 1e-300)
+
+
+def run(qdot, *args):
+    p = subprocess.run([qdot, *args], capture_output=True, text=True, timeout=120)
+    return p.returncode, p.stdout, p.stderr
+
+
+def scatter(qdot, model, *args):
+    rc, out, err = run(qdot, 'scatter', str(model), '--format', 'json', *args)
+    if rc != 0:
+        check('scatter %s %s' % (model, ' '.join(args)), False, err)
+        return None
+    return json.loads(out)
+
+
+def model_file(tmp, name, V):
+    p = Path(tmp) / name
+    p.write_text('coordinates r, phi\nparameters m = 1, k = 1\n'
+                 'particle m at r*(cos(phi), sin(phi))\nV = %s\n' % V)
+    return p
+
+
+def rutherford(qdot):
+    k, E = 1.0, 2.0
+    for b in (0.1, 0.5, 2.0):
+        d = scatter(qdot, EXAMPLES / 'rutherford.qd', '--energy', '2', '--b', repr(b))
+        if not d:
+            return
+        th = 2 * math.atan(k / (2 * E * b))
+        check('rutherford deflection b=%g' % b, close(d['deflection'], th, 1e-11), d['deflection'])
+        check('rutherford signed b=%g' % b, close(d['deflection_signed'], th, 1e-11))
+        want = (k / (4 * E)) ** 2 / math.sin(th / 2) ** 4
+        check('rutherford sigma b=%g' % b, close(d['cross_section'], want, 1e-7), d['cross_section'])
+        r0 = k / (2 * E) * (1 + math.sqrt(1 + (2 * E * b / k) ** 2))
+        check('rutherford r0 b=%g' % b, close(d['closest_approach'], r0, 1e-14))
+        check('rutherford kind', d['kind'] == 'deflected')
+    check('rutherford total', d['total_cross_section'] == 'infinite')
+    check('rutherford no rainbow', d['rainbows'] == [] and d['orbiting'] is None)
+
+
+def hard_sphere(qdot):
+    a = 1.5
+    for th in (0.4, 1.9, 3.0):
+        d = scatter(qdot, EXAMPLES / 'hard_sphere.qd', '--core', 'a', '--energy', '1',
+                    '--theta', repr(th))
+        if not d:
+            return
+        check('hard sphere sigma th=%g' % th, close(d['cross_section'], a * a / 4, 1e-7),
+              d['cross_section'])
+        check('hard sphere b th=%g' % th, close(d['branches'][0]['b'], a * math.cos(th / 2), 1e-10))
+    check('hard sphere total', close(d['total_cross_section'], math.pi * a * a, 1e-14))
+
+
+def refracting_sphere(qdot):
+    a, V0, E = 2.0, 3.0, 1.0
+    n = math.sqrt(1 + V0 / E)
+    for th in (0.5, 1.0, 1.8):
+        d = scatter(qdot, EXAMPLES / 'refracting_sphere.qd', '--energy', '1', '--theta', repr(th))
+        if not d:
+            return
+        c = math.cos(th / 2)
+        want = n * n * a * a * (n * c - 1) * (n - c) / (4 * c * (1 + n * n - 2 * n * c) ** 2)
+        check('refracting sigma th=%g' % th, close(d['cross_section'], want, 1e-7),
+              (d['cross_section'], want))
+    check('refracting total', close(d['total_cross_section'], math.pi * a * a, 1e-14))
+    d = scatter(qdot, EXAMPLES / 'refracting_sphere.qd', '--energy', '1', '--theta', '2.3')
+    check('refracting beyond 2 acos(1/n)', d and d['branches'] == [] and d['cross_section'] == 0)
+
+
+def rainbow(qdot):
+    m = EXAMPLES / 'gaussian_well.qd'
+    d = scatter(qdot, m, '--energy', '1/2', '--theta', '1/2')
+    if not d:
+        return
+    check('gaussian one rainbow', len(d['rainbows']) == 1, d['rainbows'])
+    check('gaussian two branches', len(d['branches']) == 2, d['branches'])
+    if len(d['rainbows']) != 1:
+        return
+    rb, ra = d['rainbows'][0]['b'], d['rainbows'][0]['angle']
+    for db in (-0.05, -1e-3, 1e-3, 0.05):
+        x = scatter(qdot, m, '--energy', '1/2', '--b', repr(rb + db))
+        check('rainbow is the largest angle db=%g' % db, x and x['deflection'] < ra,
+              x and (x['deflection'], ra))
+    x = scatter(qdot, m, '--energy', '1/2', '--b', repr(rb))
+    check('rainbow angle at its b', x and close(x['deflection'], ra, 1e-9))
+
+
+def capture(qdot, tmp):
+    d = scatter(qdot, model_file(tmp, 'r4.qd', '-k/r^4'), '--energy', '1', '--b', '1/2')
+    if not d:
+        return
+    check('capture kind', d['kind'] == 'captured', d['kind'])
+    check('capture sigma (T19)', close(d['capture_cross_section'], 2 * math.pi, 1e-10),
+          d['capture_cross_section'])
+    check('capture orbit radius', close(d['orbiting']['r'], 1.0, 1e-10))
+
+
+def lab(qdot):
+    d = scatter(qdot, EXAMPLES / 'rutherford.qd', '--energy', '2', '--b', '1/2', '--masses', '1,1')
+    if not d:
+        return
+    th = d['deflection']
+    check('lab angle T25', close(d['lab_angle'], th / 2, 1e-14))
+    check('lab energy T25', close(d['lab_energy_ratio'], math.cos(th / 2) ** 2, 1e-14))
+    check('recoil angle T25', close(d['recoil_angle'], (math.pi - th) / 2, 1e-14))
+    check('recoil energy T25', close(d['recoil_energy_ratio'], math.sin(th / 2) ** 2, 1e-14))
+    check('lab sigma', close(d['lab_cross_section'], d['cross_section'] * 4 * math.cos(th / 2), 1e-7))
+
+
+def errors(qdot, tmp):
+    rut = str(EXAMPLES / 'rutherford.qd')
+    cases = [
+        ('energy <= 0', [rut, '--energy', '0', '--b', '1'], 'energy must be positive'),
+        ('b < 0', [rut, '--energy', '1', '--b', '-1'], 'impact parameter must be >= 0'),
+        ('both', [rut, '--energy', '1', '--b', '1', '--theta', '1'], 'one of --b and --theta'),
+        ('no cyclic', [str(EXAMPLES / 'kepler_cartesian.qd'), '--energy', '1', '--b', '1'],
+         'no cyclic coordinate'),
+        ('not central', [str(EXAMPLES / 'spherical_pendulum.qd'), '--energy', '1', '--b', '1'],
+         'not a central potential'),
+        ('not vanishing', [str(model_file(tmp, 'osc.qd', 'k*r^2')), '--energy', '1', '--b', '1'],
+         'does not vanish at infinity'),
+        ('bad number', [rut, '--energy', 'x+', '--b', '1'], '--energy takes a number'),
+    ]
+    for name, args, msg in cases:
+        rc, out, err = run(qdot, 'scatter', *args)
+        check('error %s' % name, rc == 2 and msg in err, (rc, err))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--build', required=True)
+    qdot = str(Path(ap.parse_args().build) / 'qdot')
+    with tempfile.TemporaryDirectory() as tmp:
+        rutherford(qdot)
+        hard_sphere(qdot)
+        refracting_sphere(qdot)
+        rainbow(qdot)
+        capture(qdot, tmp)
+        lab(qdot)
+        errors(qdot, tmp)
+    print('%d passed, %d failed' % (results['passed'], results['failed']))
+    return 1 if results['failed'] else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
