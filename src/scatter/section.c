@@ -355,11 +355,14 @@ qd_status qd_scatter_section_at(qd_ctx *ctx, qd_scatter *s, double E, double the
     double bmax = b_limit(ctx, s, E, theta, &st);
     if (st == QD_OK)
         st = grid_make(ctx, s, E, bmax, k, nk, &g);
-    for (size_t i = 0; i + 1 < g.n && st == QD_OK; i++) {
-        double f0 = t_cos(g.chi[i], theta), f1 = t_cos(g.chi[i + 1], theta);
-        if (!same_piece(&g, i) || !(f0 * f1 <= 0) || f1 == 0)
+    for (size_t i = 0; i < g.n && st == QD_OK; i++) {
+        double f0 = t_cos(g.chi[i], theta), b, d;
+        if (f0 == 0) /* a grid point on the root itself */
+            b = g.b[i];
+        else if (i + 1 < g.n && same_piece(&g, i) && f0 * t_cos(g.chi[i + 1], theta) < 0)
+            b = refine(ctx, s, E, g.b[i], g.b[i + 1], t_cos, theta, &st);
+        else
             continue;
-        double b = refine(ctx, s, E, g.b[i], g.b[i + 1], t_cos, theta, &st), d;
         double chi = chi_at(ctx, s, E, b, &st);
         if (st != QD_OK || !(fabs(acos(cos(chi)) - theta) < 1e-7))
             continue;
