@@ -87,7 +87,8 @@ typedef struct qd_scatter_path {
 } qd_scatter_path;
 
 /* The deflection at energy E > 0 and impact parameter b >= 0 (b = 0:
- * head-on, chi = pi when it turns, 0 when it passes through the centre).
+ * head-on, chi = pi when it turns, 0 when it passes through a centre where
+ * V is finite, captured when V -> -inf there).
  * QD_ERR_ARG for E <= 0 or b < 0; QD_ERR_NUMERIC when the quadrature
  * does not converge. */
 QD_API qd_status qd_scatter_deflect(qd_ctx *ctx, qd_scatter *s, double E, double b,

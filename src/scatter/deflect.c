@@ -239,12 +239,20 @@ static qd_status integrate(qd_ctx *ctx, radial *R, double r0, bool root, double 
 
 static double fold(double chi) { return acos(cos(chi)); }
 
-/* b = 0: straight in; it turns back (chi = pi) or passes the centre (0). */
+/* b = 0: straight in; it turns back (chi = pi), passes through a centre
+ * where V is finite (chi = 0), or falls into one where V -> -inf. */
 static void head_on(radial *R, qd_scatter_path *out) {
     double r0;
     qd_scatter_kind k = turning_point(R, &r0);
     out->kind = k;
     out->r0 = r0;
+    if (k == QD_SCATTER_CAPTURED) {
+        double L = qd__sct_scale(R->s, 0), lo, hi;
+        qd__sct_segment(R->s, L * 1e-9, +1, &lo, &hi);
+        if (!(fabs(qd__sct_V(R->s, L * 1e-9, lo, hi)) < 1e12 * R->E))
+            return;
+        out->kind = QD_SCATTER_DEFLECTED;
+    }
     out->alpha = k == QD_SCATTER_CAPTURED ? PI / 2 : 0;
     out->chi = PI - 2 * out->alpha;
     out->theta = fold(out->chi);

@@ -136,6 +136,10 @@ qd_status qd_scatter_dchi_db(qd_ctx *ctx, qd_scatter *s, double E, double b, dou
     qd_status st = qd_scatter_deflect(ctx, s, E, b, &p);
     if (st != QD_OK)
         return st;
+    if (!(b > 0)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "dchi/db is taken at b > 0, not at %g", b);
+        return QD_ERR_ARG;
+    }
     return dchi(ctx, s, E, b, k, kinks(s, E, k), out);
 }
 

@@ -307,6 +307,29 @@ static void test_from_model(void **state) {
     qd_ctx_free(c);
 }
 
+/* b = 0, head-on: back along the beam off a wall, straight through a
+ * finite well, into a centre where V -> -inf. */
+static void test_head_on(void **state) {
+    (void)state;
+    qd_ctx *c = qd_ctx_new();
+    qd_scatter *hard = make(c, "0", 1), *well = make(c, "-3*step(2 - r)", 0);
+    qd_scatter *fall = make(c, "-1/r^4", 0);
+    qd_scatter_path p;
+    assert_int_equal(qd_scatter_deflect(c, hard, 1, 0, &p), QD_OK);
+    assert_int_equal(p.kind, QD_SCATTER_REFLECTED);
+    assert_true(p.chi == PI && p.theta == PI);
+    assert_int_equal(qd_scatter_deflect(c, well, 1, 0, &p), QD_OK);
+    assert_int_equal(p.kind, QD_SCATTER_DEFLECTED);
+    assert_true(p.theta == 0);
+    assert_int_equal(qd_scatter_deflect(c, fall, 1, 0, &p), QD_OK);
+    assert_int_equal(p.kind, QD_SCATTER_CAPTURED);
+    assert_true(isnan(p.chi));
+    qd_scatter_free(hard);
+    qd_scatter_free(well);
+    qd_scatter_free(fall);
+    qd_ctx_free(c);
+}
+
 /* Errors: E <= 0, b < 0, a theta outside (0, pi), V not vanishing at
  * infinity, and models that are not a central potential. */
 static void test_errors(void **state) {
@@ -357,6 +380,7 @@ int main(void) {
         cmocka_unit_test(test_lab_proton_proton),
         cmocka_unit_test(test_lab_gamma),
         cmocka_unit_test(test_from_model),
+        cmocka_unit_test(test_head_on),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
