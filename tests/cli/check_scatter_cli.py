@@ -16,6 +16,7 @@ Expected values are the books' (Desloge ch. 60-61, seed
 - capture by V = -k/r^4 (T19): sigma = 2 pi at k = E = 1;
 - the lab frame with equal masses (ch. 61 pb. 7, T25): Theta/2, recoil at
   (pi - Theta)/2, energies cos^2 and sin^2 of Theta/2;
+- step(x) printed for SymPy is Heaviside, 1/2 at the jump as qdot's;
 - errors (exit 2): E <= 0, b < 0, both --b and --theta, a model with no
   cyclic coordinate, one that is not a central potential, a V that does
   not vanish at infinity.
@@ -169,6 +170,26 @@ def errors(qdot, tmp):
         check('error %s' % name, rc == 2 and msg in err, (rc, err))
 
 
+def step_sympy(qdot):
+    """step(x) printed for SymPy is Heaviside with the same value at the jump
+    (1/2): a model's step potential means the same thing there."""
+    try:
+        import sympy
+    except ImportError:
+        return
+    rc, out, err = run(qdot, 'print', 'V0*step(a - r)', '--format', 'sympy')
+    if rc != 0:
+        check('step sympy print', False, err)
+        return
+    V0, a, r = sympy.symbols('V0 a r')
+    e = eval(out.strip(), {'V0': V0, 'a': a, 'r': r, 'Heaviside': sympy.Heaviside})
+    for rv, want in ((1, 2), (2, 1), (3, 0)):
+        got = e.subs({V0: 2, a: 2, r: rv})
+        check('step sympy r=%d' % rv, got == want, (got, want))
+    rc, out, err = run(qdot, 'print', 'step(2 - r)', '--format', 'text')
+    check('step text', rc == 0 and out.strip() == 'step(-r + 2)', out)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
@@ -181,6 +202,7 @@ def main():
         capture(qdot, tmp)
         lab(qdot)
         errors(qdot, tmp)
+        step_sympy(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
 
