@@ -36,6 +36,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
                 qd_print(ctx, qd_model_symmetry_field(m, i, j), QD_FMT_TEXT, &b);
         for (size_t i = 0; i < qd_model_nintegrals(m); i++)
             qd_print(ctx, qd_model_integral(m, i), QD_FMT_TEXT, &b);
+        /* and what acts at an impulse */
+        for (size_t j = 0; j < qd_model_ncoords(m); j++)
+            qd_print(ctx, qd_model_impulse(m, j), QD_FMT_TEXT, &b);
+        for (size_t i = 0; i < qd_model_nimpact_constraints(m); i++)
+            qd_print(ctx, qd_model_impact_constraint(m, i), QD_FMT_TEXT, &b);
+        for (size_t i = 0; i < qd_model_nimpacts(m); i++)
+            qd_print(ctx, qd_model_impact_gap(m, i), QD_FMT_TEXT, &b);
+        for (size_t i = 0; i < qd_model_nprescribed(m); i++)
+            qd_print(ctx, qd_model_prescribed(m, i), QD_FMT_TEXT, &b);
         qd_model_free(m);
     } else {
         qd_diag_format(&d, "fuzz.qd", text, &b);

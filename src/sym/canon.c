@@ -81,7 +81,11 @@ static bool mul_canonical(size_t n, const qd_expr *const *a) {
 }
 
 static bool pow_canonical(const qd_expr *b, const qd_expr *e) {
-    if (is_exact(e, 0) || is_exact(e, 1) || is_exact(b, 0) || is_exact(b, 1))
+    if (is_exact(e, 0) || is_exact(e, 1) || is_exact(b, 1))
+        return false;
+    /* 0^x stays as it is for a symbolic x (it is 0 only for x > 0), as in
+     * SymPy; a number exponent folds */
+    if (is_exact(b, 0) && qd__is_num(e))
         return false;
     if (b->kind == QD_RATIONAL && folds(e))
         return false;

@@ -18,7 +18,8 @@
  *   MUL  args = [c?] f1 ... fn   n >= 1, c a number != 1 first when present;
  *        no fi is a number, a MUL; fi sorted by base, no two with one base;
  *        never c * (single ADD) with c rational (that is distributed).
- *   POW  args = b, e with e != 0, 1; b != 0, 1; not (rational b, integer e
+ *   POW  args = b, e with e != 0, 1; b != 1; b != 0 unless e is not a
+ *        number (0^x stays); not (rational b, integer e
  *        with |e| <= QD_MAX_FOLD_EXP: larger powers are not worked out);
  *        not (MUL b, integer e); not (POW b, integer e); not (abs(x) b, even
  *        integer e); for a fraction e: not (POW b with an even integer
