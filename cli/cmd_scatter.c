@@ -29,17 +29,20 @@ typedef struct scatter_run {
     qd_eom *e;
     qd_scatter *s;
     scatter_fmt fmt;
-    const char *file, *ignore, *energy_s, *b_s, *theta_s, *masses_s, *core_s;
+    const char *file, *ignore, *energy_s, *b_s, *theta_s, *lab_s, *masses_s, *core_s;
     const char *sets[QD_CLI_MAX_LIST];
     size_t nsets;
-    double E, b, theta, core, mass, m1, m2;
+    double E, b, theta, lab_theta, core, mass, m1, m2;
+    size_t ncm;                 /* --lab-theta: the CM angles that reach it */
+    double cm[2], cm_sigma[2], cm_jacobian[2];
     qd_scatter_path path;
     qd_scatter_section sec;
     qd_scatter_features feat;
 } scatter_run;
 
 static const char usage_text[] =
-    "usage: qdot scatter FILE --energy E (--b B | --theta TH) [--masses m1,m2] [--core A] "
+    "usage: qdot scatter FILE --energy E (--b B | --theta TH | --lab-theta TH) [--masses m1,m2] "
+    "[--core A] "
     "[--ignore Q] [--set NAME=VALUE]... [--format text|json]";
 
 static const char *const formats[] = {"text", "json", NULL};
@@ -57,7 +60,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return cli_push("--set", r->sets, &r->nsets, QD_CLI_MAX_LIST, v);
     static const struct { const char *opt; size_t off; } once[] = {
         {"--energy", offsetof(scatter_run, energy_s)}, {"--b", offsetof(scatter_run, b_s)},
-        {"--theta", offsetof(scatter_run, theta_s)}, {"--masses", offsetof(scatter_run, masses_s)},
+        {"--theta", offsetof(scatter_run, theta_s)}, {"--lab-theta", offsetof(scatter_run, lab_s)},
+        {"--masses", offsetof(scatter_run, masses_s)},
         {"--core", offsetof(scatter_run, core_s)}, {"--ignore", offsetof(scatter_run, ignore)},
     };
     for (size_t k = 0; k < sizeof once / sizeof once[0]; k++)
@@ -70,8 +74,13 @@ static int parse_args(int argc, char **argv, scatter_run *r) {
     int rc = cli_file_args(argc, argv, "scatter", usage_text, &r->file, parse_option, r);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!r->energy_s || (!r->b_s) == (!r->theta_s)) {
-        cli_diag_error("scatter needs --energy and one of --b and --theta\n%s", usage_text);
+    if (!r->energy_s || !!r->b_s + !!r->theta_s + !!r->lab_s != 1) {
+        cli_diag_error("scatter needs --energy and one of --b, --theta and --lab-theta\n%s",
+                       usage_text);
+        return QD_EXIT_USAGE;
+    }
+    if (r->lab_s && !r->masses_s) {
+        cli_diag_error("--lab-theta needs --masses m1,m2 (the lab frame depends on them)");
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -125,6 +134,12 @@ static int read_numbers(scatter_run *r) {
         rc = number(r, "--b", r->b_s, &r->b);
     if (rc == QD_EXIT_OK && r->theta_s)
         rc = number(r, "--theta", r->theta_s, &r->theta);
+    if (rc == QD_EXIT_OK && r->lab_s)
+        rc = number(r, "--lab-theta", r->lab_s, &r->lab_theta);
+    if (rc == QD_EXIT_OK && r->lab_s && !(r->lab_theta > 0 && r->lab_theta < PI)) {
+        cli_diag_error("--lab-theta must lie in (0, pi), not %g", r->lab_theta);
+        rc = QD_EXIT_USAGE;
+    }
     if (rc == QD_EXIT_OK && r->core_s)
         rc = number(r, "--core", r->core_s, &r->core);
     if (rc == QD_EXIT_OK && r->masses_s)
@@ -142,6 +157,23 @@ static qd_status section_of_path(scatter_run *r) {
     return qd_scatter_section_at(r->ctx, r->s, r->E, th, &r->sec);
 }
 
+/* --lab-theta: every CM angle that reaches it (two when m1 > m2), each
+ * with its cross section and Jacobian (Desloge ch. 61 eqs. 36, 67). */
+static qd_status lab_angles(scatter_run *r) {
+    double g = r->m1 / r->m2, tl;
+    r->theta = NAN;
+    r->ncm = qd_scatter_lab_to_cm(g, r->lab_theta, r->cm);
+    for (size_t k = 0; k < r->ncm; k++) {
+        qd_scatter_section x;
+        qd_status st = qd_scatter_section_at(r->ctx, r->s, r->E, r->cm[k], &x);
+        if (st != QD_OK)
+            return st;
+        r->cm_sigma[k] = x.sigma;
+        qd_scatter_lab_gamma(g, r->cm[k], &tl, &r->cm_jacobian[k]);
+    }
+    return QD_OK;
+}
+
 static int compute(scatter_run *r) {
     qd_status st;
     r->sec.sigma = NAN;
@@ -150,8 +182,10 @@ static int compute(scatter_run *r) {
         if (st == QD_OK)
             st = section_of_path(r);
         r->theta = r->path.theta;
-    } else {
+    } else if (r->theta_s) {
         st = qd_scatter_section_at(r->ctx, r->s, r->E, r->theta, &r->sec);
+    } else {
+        st = lab_angles(r);
     }
     if (st == QD_OK)
         st = qd_scatter_features_at(r->ctx, r->s, r->E, &r->feat);
@@ -291,6 +325,29 @@ static void text_lab(scatter_run *r, qd_buf *b) {
     qd_buf_puts(b, "\n");
 }
 
+static void text_lab_angles(const scatter_run *r, qd_buf *b) {
+    double sum = 0;
+    qd_buf_puts(b, "lab frame (target at rest, gamma = m1/m2 = ");
+    num(b, r->m1 / r->m2);
+    qd_buf_puts(b, "):\n  lab_angle: ");
+    angle(b, r->lab_theta);
+    qd_buf_puts(b, "\n");
+    for (size_t k = 0; k < r->ncm; k++) {
+        qd_buf_puts(b, "  CM angle ");
+        angle(b, r->cm[k]);
+        qd_buf_puts(b, ": dsigma/dOmega = ");
+        num(b, r->cm_sigma[k]);
+        qd_buf_puts(b, ", dOmega_cm/dOmega_lab = ");
+        num(b, r->cm_jacobian[k]);
+        qd_buf_puts(b, "\n");
+        sum += r->cm_sigma[k] * r->cm_jacobian[k];
+    }
+    qd_buf_puts(b, "  lab_cross_section: ");
+    num(b, sum);
+    qd_buf_printf(b, " (%zu CM angle%s%s)\n", r->ncm, r->ncm == 1 ? "" : "s",
+                  r->ncm ? "" : ": beyond the largest lab angle, asin(m2/m1)");
+}
+
 static void write_text(scatter_run *r, qd_buf *b) {
     qd_buf_printf(b, "model: %s\npotential: V = ", r->mf.path);
     qd_print(r->ctx, qd_scatter_potential(r->s), QD_FMT_TEXT, b);
@@ -300,6 +357,8 @@ static void write_text(scatter_run *r, qd_buf *b) {
     if (r->b_s)
         text_path(r, b);
     text_section(r, b);
+    if (r->lab_s)
+        text_lab_angles(r, b);
     text_features(r, b);
     text_lab(r, b);
 }
@@ -377,6 +436,24 @@ static void json_lab(scatter_run *r, cli_json *j) {
     jnum(j, "recoil_energy_ratio", l.recoil_ratio);
 }
 
+static void json_lab_angles(const scatter_run *r, cli_json *j) {
+    double sum = 0;
+    jnum(j, "gamma", r->m1 / r->m2);
+    jnum(j, "lab_angle", r->lab_theta);
+    cli_json_key(j, "cm_angles");
+    cli_json_begin_array(j);
+    for (size_t k = 0; k < r->ncm; k++) {
+        cli_json_begin_object(j);
+        jnum(j, "angle", r->cm[k]);
+        jnum(j, "cross_section", r->cm_sigma[k]);
+        jnum(j, "jacobian", r->cm_jacobian[k]);
+        cli_json_end_object(j);
+        sum += r->cm_sigma[k] * r->cm_jacobian[k];
+    }
+    cli_json_end_array(j);
+    jnum(j, "lab_cross_section", sum);
+}
+
 static void write_json(scatter_run *r, qd_buf *b) {
     cli_json j;
     cli_json_init(&j, b);
@@ -395,10 +472,13 @@ static void write_json(scatter_run *r, qd_buf *b) {
         jnum(&j, "closest_approach", r->path.r0);
         jnum(&j, "deflection", r->path.theta);
         jnum(&j, "deflection_signed", r->path.chi);
-    } else {
+    } else if (r->theta_s) {
         jnum(&j, "deflection", r->theta);
     }
-    json_section(r, &j);
+    if (r->lab_s)
+        json_lab_angles(r, &j);
+    else
+        json_section(r, &j);
     json_features(r, &j);
     json_lab(r, &j);
     cli_json_end_object(&j);

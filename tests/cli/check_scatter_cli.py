@@ -17,6 +17,7 @@ Expected values are the books' (Desloge ch. 60-61, seed
 - the lab frame with equal masses (ch. 61 pb. 7, T25): Theta/2, recoil at
   (pi - Theta)/2, energies cos^2 and sin^2 of Theta/2;
 - step(x) printed for SymPy is Heaviside, 1/2 at the jump as qdot's;
+- --lab-theta with gamma = 2: both CM angles and their Jacobians (ch. 61 eq. 36);
 - errors (exit 2): E <= 0, b < 0, both --b and --theta, a model with no
   cyclic coordinate, one that is not a central potential, a V that does
   not vanish at infinity.
@@ -151,12 +152,36 @@ def lab(qdot):
     check('lab sigma', close(d['lab_cross_section'], d['cross_section'] * 4 * math.cos(th / 2), 1e-7))
 
 
+def lab_angle(qdot):
+    """--lab-theta with m1 = 2 m2 (gamma = 2 > 1): two CM angles reach each lab
+    angle below asin(1/2), Theta = theta_L + asin(2 sin theta_L) and
+    theta_L + pi - asin(...) (Desloge ch. 61 eq. 36), each weighted by
+    (1 + g^2 + 2 g cos)^(3/2)/|1 + g cos|; beyond asin(1/2) nothing arrives."""
+    m, g, tl = EXAMPLES / 'gaussian_well.qd', 2.0, 0.3
+    d = scatter(qdot, m, '--energy', '1/2', '--lab-theta', repr(tl), '--masses', '2,1')
+    if not d:
+        return
+    want, total = [tl + math.asin(g * math.sin(tl)), tl + math.pi - math.asin(g * math.sin(tl))], 0
+    check('lab two CM angles', len(d['cm_angles']) == 2, d['cm_angles'])
+    for k, th in enumerate(want):
+        x = scatter(qdot, m, '--energy', '1/2', '--theta', repr(th))
+        c = math.cos(th)
+        J = (1 + g * g + 2 * g * c) ** 1.5 / abs(1 + g * c)
+        check('lab CM angle %d' % k, close(d['cm_angles'][k]['angle'], th, 1e-13))
+        check('lab jacobian %d' % k, close(d['cm_angles'][k]['jacobian'], J, 1e-12))
+        total += x['cross_section'] * J if x else 0
+    check('lab cross section, both branches', close(d['lab_cross_section'], total, 1e-9),
+          (d['lab_cross_section'], total))
+    d = scatter(qdot, m, '--energy', '1/2', '--lab-theta', '0.6', '--masses', '2,1')
+    check('lab beyond asin(1/gamma)', d and d['cm_angles'] == [] and d['lab_cross_section'] == 0)
+
+
 def errors(qdot, tmp):
     rut = str(EXAMPLES / 'rutherford.qd')
     cases = [
         ('energy <= 0', [rut, '--energy', '0', '--b', '1'], 'energy must be positive'),
         ('b < 0', [rut, '--energy', '1', '--b', '-1'], 'impact parameter must be >= 0'),
-        ('both', [rut, '--energy', '1', '--b', '1', '--theta', '1'], 'one of --b and --theta'),
+        ('both', [rut, '--energy', '1', '--b', '1', '--theta', '1'], 'one of --b, --theta'),
         ('no cyclic', [str(EXAMPLES / 'kepler_cartesian.qd'), '--energy', '1', '--b', '1'],
          'no cyclic coordinate'),
         ('not central', [str(EXAMPLES / 'spherical_pendulum.qd'), '--energy', '1', '--b', '1'],
@@ -164,6 +189,7 @@ def errors(qdot, tmp):
         ('not vanishing', [str(model_file(tmp, 'osc.qd', 'k*r^2')), '--energy', '1', '--b', '1'],
          'does not vanish at infinity'),
         ('bad number', [rut, '--energy', 'x+', '--b', '1'], '--energy takes a number'),
+        ('lab without masses', [rut, '--energy', '1', '--lab-theta', '1'], 'needs --masses'),
     ]
     for name, args, msg in cases:
         rc, out, err = run(qdot, 'scatter', *args)
@@ -201,6 +227,7 @@ def main():
         rainbow(qdot)
         capture(qdot, tmp)
         lab(qdot)
+        lab_angle(qdot)
         errors(qdot, tmp)
         step_sympy(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
