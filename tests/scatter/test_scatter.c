@@ -151,6 +151,48 @@ static void test_refracting_sphere(void **state) {
     qd_ctx_free(c);
 }
 
+/* A repulsive step, V = V0 for r < a with V0 = 3E/4 (Desloge ch. 60
+ * problems): index n = sqrt(1 - V0/E) = 1/2 < 1, so b < n a refract,
+ * Theta = 2 (asin(b/(n a)) - asin(b/a)), and n a < b < a meet the jump as
+ * a wall (total reflection): Theta = 2 acos(b/a), as off a hard sphere. */
+static void test_repulsive_step(void **state) {
+    (void)state;
+    qd_ctx *c = qd_ctx_new();
+    const double a = 2, E = 1, n = 0.5;
+    qd_scatter *s = make(c, "3/4*step(2 - r)", 0);
+    const double in[] = {0.2, 0.7, 0.99}, out[] = {1.01, 1.5, 1.99};
+    for (size_t i = 0; i < 3; i++) {
+        assert_close(chi(c, s, E, in[i]), 2 * (asin(in[i] / (n * a)) - asin(in[i] / a)), 1e-11);
+        qd_scatter_path p;
+        assert_int_equal(qd_scatter_deflect(c, s, E, out[i], &p), QD_OK);
+        assert_int_equal(p.kind, QD_SCATTER_REFLECTED);
+        assert_true(p.r0 == a);
+        assert_close(p.chi, 2 * acos(out[i] / a), 1e-11);
+    }
+    qd_scatter_free(s);
+    qd_ctx_free(c);
+}
+
+/* Lennard-Jones, V = 4 (r^-12 - r^-6) at E = 2: the core repels small b, the
+ * well pulls larger ones, so chi crosses 0 at a finite b: a forward glory
+ * (Desloge ch. 60, seed-desloge-B.md pitfall 5), chi changing sign across it. */
+static void test_glory(void **state) {
+    (void)state;
+    qd_ctx *c = qd_ctx_new();
+    qd_scatter *s = make(c, "4*(r^-12 - r^-6)", 0);
+    qd_scatter_features f;
+    assert_int_equal(qd_scatter_features_at(c, s, 2, &f), QD_OK);
+    assert_int_equal(f.nglory, 1);
+    assert_true(f.glory_theta[0] == 0);
+    double bg = f.glory_b[0];
+    assert_true(fabs(chi(c, s, 2, bg)) < 1e-9);
+    assert_true(chi(c, s, 2, bg * 0.99) > 0 && chi(c, s, 2, bg * 1.01) < 0);
+    assert_int_equal(f.nrainbow, 1);
+    assert_false(f.orbiting);
+    qd_scatter_free(s);
+    qd_ctx_free(c);
+}
+
 /* A Gaussian well, V = -exp(-r^2): chi(b) has one minimum, the rainbow;
  * its angle against a fine direct scan of chi, and dsigma/dOmega summing
  * the two branches on the lit side. */
@@ -380,6 +422,8 @@ int main(void) {
         cmocka_unit_test(test_rutherford_section),
         cmocka_unit_test(test_hard_sphere),
         cmocka_unit_test(test_refracting_sphere),
+        cmocka_unit_test(test_repulsive_step),
+        cmocka_unit_test(test_glory),
         cmocka_unit_test(test_rainbow),
         cmocka_unit_test(test_capture),
         cmocka_unit_test(test_lab_equal_masses),
