@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/routh.h"
+#include "../base/mem.h"
 
 #define JUMP_SCAN_PER_DECADE 40
 
@@ -161,11 +162,9 @@ qd_scatter *qd_scatter_new(qd_ctx *ctx, const qd_expr *V, const qd_expr *r, doub
         qd_ctx_error(ctx, QD_ERR_ARG, "the hard core's radius must be >= 0, not %g", core);
         return NULL;
     }
-    qd_scatter *s = calloc(1, sizeof *s);
-    if (!s) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+    qd_scatter *s = qd__calloc(ctx, 1, sizeof *s);
+    if (!s)
         return NULL;
-    }
     s->V = V, s->r = r, s->core = core;
     if (!compile(ctx, s) || !find_jumps(ctx, s)) {
         qd_scatter_free(s);
@@ -186,7 +185,7 @@ void qd_scatter_free(qd_scatter *s) {
     if (!s)
         return;
     qd_prog_free(s->prog);
-    free(s);
+    qd__free(s);
 }
 
 const qd_expr *qd_scatter_potential(const qd_scatter *s) { return s->V; }
@@ -222,18 +221,18 @@ static const qd_expr *cyclic_coordinate(qd_ctx *ctx, const qd_model *m, const qd
 /* e with every parameter of m replaced by its value. */
 static const qd_expr *with_values(qd_ctx *ctx, const qd_model *m, const qd_expr *e) {
     size_t n = qd_model_nparams(m);
-    const qd_expr **from = malloc((n + 1) * sizeof *from), **to = malloc((n + 1) * sizeof *to);
+    const qd_expr **from = qd__malloc(ctx, (n + 1) * sizeof *from);
+    const qd_expr **to = qd__malloc(ctx, (n + 1) * sizeof *to);
     if (!from || !to) {
-        free(from);
-        free(to);
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        qd__free(from);
+        qd__free(to);
         return NULL;
     }
     for (size_t i = 0; i < n; i++)
         from[i] = qd_model_param(m, i), to[i] = qd_model_param_value(m, i);
     const qd_expr *r = e ? qd_subs(ctx, e, n, from, to) : NULL;
-    free(from);
-    free(to);
+    qd__free(from);
+    qd__free(to);
     return r;
 }
 

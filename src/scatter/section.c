@@ -13,6 +13,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include "../base/mem.h"
 
 #define PI 3.14159265358979323846 /* M_PI is not C11 */
 #define GRID 600
@@ -102,10 +103,8 @@ static size_t kinks(qd_scatter *s, double E, double *k) {
 static double chi_at(qd_ctx *ctx, qd_scatter *s, double E, double b, qd_status *st) {
     qd_scatter_path p;
     qd_status r = qd_scatter_deflect(ctx, s, E, b, &p);
-    if (r == QD_ERR_NUMERIC) {
-        qd_ctx_clear_error(ctx);
+    if (r == QD_ERR_NUMERIC && qd__ctx_recover(ctx))
         return NAN;
-    }
     if (r != QD_OK && *st == QD_OK)
         *st = r;
     return p.kind == QD_SCATTER_DEFLECTED || p.kind == QD_SCATTER_REFLECTED ? p.chi : NAN;
@@ -160,9 +159,9 @@ static double potential_reach(qd_scatter *s, double E) {
 }
 
 static void grid_free(sct_grid *g) {
-    free(g->b);
-    free(g->chi);
-    free(g->piece);
+    qd__free(g->b);
+    qd__free(g->chi);
+    qd__free(g->piece);
 }
 
 /* The points of one piece (a, c) of the b axis: uniform, plus points
@@ -193,14 +192,12 @@ static qd_status grid_make(qd_ctx *ctx, qd_scatter *s, double E, double bmax, co
             edge[ne++] = k[i];
     edge[ne++] = bmax;
     size_t cap = GRID + (20 + 2 * CROWD) * ne;
-    g->b = malloc(cap * sizeof *g->b);
-    g->chi = malloc(cap * sizeof *g->chi);
-    g->piece = malloc(cap * sizeof *g->piece);
+    g->b = qd__malloc(ctx, cap * sizeof *g->b);
+    g->chi = qd__malloc(ctx, cap * sizeof *g->chi);
+    g->piece = qd__malloc(ctx, cap * sizeof *g->piece);
     g->n = 0;
-    if (!g->b || !g->chi || !g->piece) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+    if (!g->b || !g->chi || !g->piece)
         return QD_ERR_NOMEM;
-    }
     qd_status st = QD_OK;
     for (size_t i = 0; i + 1 < ne && st == QD_OK; i++) {
         size_t m = 20 + (size_t)(GRID * (edge[i + 1] - edge[i]) / bmax);
