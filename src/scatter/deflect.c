@@ -82,7 +82,7 @@ static bool scan_segment(radial *R, double r_top, double r_stop, double *r0) {
             *r0 = bisect_root(R, rn, r);
             return true;
         }
-        /* g fell, then rose: a minimum between r_pp and rn may go below 0 */
+        /* g fell, then rose: the minimum between rn and r_prev may dip below 0 */
         if (g < g_prev && gn > g && g < 0.1) {
             double x = dip_below(R, rn, r_prev);
             if (x > 0) {
