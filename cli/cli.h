@@ -71,6 +71,7 @@ int cli_cmd_codegen(int argc, char **argv);    /* cmd_codegen.c */
 int cli_cmd_equilibria(int argc, char **argv); /* cmd_equilibria.c */
 int cli_cmd_modes(int argc, char **argv);      /* cmd_modes.c */
 int cli_cmd_stability(int argc, char **argv);  /* cmd_stability.c */
+int cli_cmd_orbit(int argc, char **argv);      /* cmd_orbit.c */
 int cli_cmd_scatter(int argc, char **argv);    /* cmd_scatter.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the

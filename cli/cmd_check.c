@@ -116,11 +116,7 @@ static void header(check *c, const char *path, const qd_eom *e) {
     qd_buf_puts(&c->out, "parameters:");
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         qd_buf_printf(&c->out, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        /* a value written as pi/6 is an expression, not a number node */
-        double x = NAN;
-        if (qd_eval(c->ctx, qd_model_param_value(m, i), 0, NULL, NULL, &x) != QD_OK)
-            qd_ctx_clear_error(c->ctx);
-        cli_state_put_double(&c->out, x);
+        cli_state_put_double(&c->out, cli_param_value(c->ctx, m, i));
     }
     qd_buf_puts(&c->out, qd_model_nparams(m) ? "\n" : " none\n");
 }

@@ -41,7 +41,7 @@ static int sink(void *data, int event, const double *row) {
         fputc('\n', o->f);
         o->header = true;
     }
-    if (event < 0)
+    if (event != 0) /* samples, and the rows of the model's impacts */
         return 0;
     char num[QD_DOUBLE_MAX];
     for (size_t i = 0; i < o->ncols; i++) {

@@ -4,7 +4,9 @@
  * coordinates, velocities, momenta for the symplectic methods, the energy,
  * constraint residuals, --output columns), with a summary on stderr; with
  * --format json a JSON document on stdout (summary, final state, and the
- * rows unless --out takes them).
+ * rows unless --out takes them).  The model's impacts add two rows each
+ * (before and after) and say on stderr how many there were, the energy
+ * they took, and where a run ends in contact.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
@@ -127,6 +129,45 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     return QD_EXIT_OK;
 }
 
+/* The impacts' part of the JSON summary (models with `impact`s only). */
+static void impacts_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st) {
+    cli_json_key(j, "impacts");
+    cli_json_number(j, (double)st->impacts);
+    cli_json_key(j, "impact_energy_lost");
+    cli_json_number(j, st->impact_energy_lost);
+    cli_json_key(j, "contact");
+    if (!st->in_contact) {
+        cli_json_null(j);
+        return;
+    }
+    cli_json_begin_object(j);
+    cli_json_key(j, "impact");
+    cli_json_string(j, qd_model_impact_name(c->mf.model, st->contact));
+    cli_json_key(j, "t");
+    cli_json_number(j, st->t);
+    cli_json_key(j, "chattering");
+    cli_json_bool(j, st->chattering);
+    cli_json_key(j, "at_rest");
+    cli_json_bool(j, st->at_rest);
+    cli_json_end_object(j);
+}
+
+/* The impacts on stderr: how many, the energy they took, and where the run
+ * ended in contact. */
+static void impacts_summary(const cli_sim *c, const qd_sim_stats *st) {
+    if (!qd_model_nimpacts(c->mf.model))
+        return;
+    fprintf(stderr, "qdot: simulate: %zu impact%s, energy lost %.6g\n", st->impacts,
+            st->impacts == 1 ? "" : "s", st->impact_energy_lost);
+    if (st->in_contact)
+        fprintf(stderr, "qdot: simulate: impact '%s': %s%s from t = %.6g after %zu impact%s; "
+                        "the run ends there\n",
+                qd_model_impact_name(c->mf.model, st->contact), st->chattering ? "chattering; " : "",
+                st->at_rest ? "at rest in contact"
+                            : "in sustained contact, still moving (not simulated)",
+                st->t, st->impacts, st->impacts == 1 ? "" : "s");
+}
+
 static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, double wall,
                          const char **names, size_t ncols, const double *final) {
     cli_json_key(j, "method");
@@ -152,6 +193,8 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_end_object(j);
     cli_json_key(j, "events");
     cli_json_number(j, (double)st->events);
+    if (qd_model_nimpacts(c->mf.model))
+        impacts_json(j, c, st);
     cli_json_key(j, "final");
     cli_json_begin_object(j);
     for (size_t i = 0; i < ncols; i++) {
@@ -173,7 +216,8 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_FAIL;
     }
     qd_sim_columns(c->s, c->opts.method, names, ncols);
-    sim_out o = {.ncols = ncols, .events = a->nevents > 0, .t0 = c->opts.t0,
+    sim_out o = {.ncols = ncols, .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0,
+                 .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .progress = isatty(2), .names = names, .line = line};
     FILE *file = NULL;
     if (a->out && !(file = fopen(a->out, "w"))) {
@@ -223,6 +267,7 @@ static int run(cli_sim *c, const cli_sim_args *a) {
                 qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
+        impacts_summary(c, &st);
         if (a->json) {
             summary_json(&j, c, &st, wall, names, ncols, final);
             cli_json_end_object(&j);

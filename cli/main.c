@@ -33,6 +33,8 @@ static const cli_cmd commands[] = {
      cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
      cli_cmd_stability, true},
+    {"orbit", "FILE --ignore Q[,Q...] [--at ...]", "turning points, periods, apsides, conics",
+     cli_cmd_orbit, true},
     {"scatter", "FILE --energy E --b B|--theta TH", "deflection and cross sections of a central potential",
      cli_cmd_scatter, true},
 };

@@ -367,6 +367,24 @@ static int load_native(cli_sim *c) {
     return QD_EXIT_OK;
 }
 
+/* The model's impacts at the initial state: a gap below 0 is bad input
+ * (exit 2), said before any output as the run would say it. */
+static int check_gaps(cli_sim *c) {
+    const qd_model *m = c->mf.model;
+    for (size_t i = 0; i < qd_model_nimpacts(m); i++) {
+        double g = 0;
+        if (qd_eval(c->ctx, qd_model_impact_gap(m, i), c->st.n, c->st.syms, c->st.vals, &g) !=
+            QD_OK)
+            return cli_diag_ctx(c->ctx);
+        if (g < 0) {
+            cli_diag_error("impact '%s': the gap is negative at t0 (%.6g): the bodies start "
+                           "interpenetrating", qd_model_impact_name(m, i), g);
+            return QD_EXIT_USAGE;
+        }
+    }
+    return QD_EXIT_OK;
+}
+
 int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     c->ctx = qd_ctx_new();
     if (!c->ctx) {
@@ -390,6 +408,8 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     if (!c->s)
         return cli_diag_ctx(c->ctx);
     rc = initial_values(c, a);
+    if (rc == QD_EXIT_OK)
+        rc = check_gaps(c);
     if (rc == QD_EXIT_OK && a->output)
         rc = add_outputs(c, a->output);
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->nevents; i++)

@@ -18,6 +18,17 @@ double cli_state_value(const qd_expr *number) {
     return qd_number_value(number);
 }
 
+double cli_param_value(qd_ctx *ctx, const qd_model *m, size_t i) {
+    const qd_expr *v = qd_model_param_value(m, i);
+    double x = NAN;
+    if (v && qd_is_number(v))
+        return cli_state_value(v);
+    /* a value written as pi/6 or sqrt(2) is an expression of constants */
+    if (!v || qd_eval(ctx, v, 0, NULL, NULL, &x) != QD_OK)
+        qd_ctx_clear_error(ctx);
+    return x;
+}
+
 void cli_state_put_double(qd_buf *b, double x) {
     qd_buf_put_double(b, x == 0 ? 0.0 : x); /* -0 reads "0" */
 }

@@ -70,7 +70,9 @@ typedef struct qd_impulse_check {
 /* Two bodies (particles or rigid bodies, the model's only two) meeting
  * (Desloge ch. 61): the centre-of-mass velocity w is conserved; velocities
  * are of the centres of mass; angles are measured from the relative
- * velocity before, u = v1 - v2. */
+ * velocity before, u = v1 - v2, in [0, pi] (0 when a velocity is zero).
+ * Filled when the model has exactly two mass elements (particles, then
+ * bodies: body 1 is the first) and at least one sudden constraint. */
 typedef struct qd_collision {
     double m1, m2;
     double w[3];                     /* centre-of-mass velocity */
@@ -81,7 +83,8 @@ typedef struct qd_collision {
     double theta_lab1, theta_lab2;   /* angles of v1 and v2 after from u before */
     double gamma;                    /* |w| / s*, s* body 1's speed in the CM frame after;
                                         tan theta_lab1 = sin theta / (cos theta + gamma)
-                                        when body 2 is at rest before (Desloge ch. 61) */
+                                        when body 2 is at rest before (Desloge ch. 61);
+                                        0 when s* = 0 (the bodies move together after) */
 } qd_collision;
 
 typedef struct qd_impulse {
@@ -100,8 +103,15 @@ typedef struct qd_impulse {
     size_t nreact;
     const char **react_name;         /* the reaction's name (owned by the model) */
     double (*react)[3];
-    double T_before, T_after, energy_lost;   /* energy_lost = T_before - T_after */
-    /* Closed forms (exact true): in the parameters and the state as given. */
+    /* energy_lost = T_before - T_after, T = T2 + T1 + T0 at the frozen
+     * configuration (a model given by L: L's T2 + T1, its T0 being
+     * indistinguishable from -V; differences are unaffected). */
+    double T_before, T_after, energy_lost;
+    /* Closed forms (exact true): in the parameters and the state as given,
+     * the same saddle system solved by fraction-free elimination
+     * (qd_eom_solve) and simplified; mult_exact is NULL without rows.
+     * exact stays false, with no error, when an entry exceeds max_ops or
+     * the symbolic system is singular for every parameter value. */
     bool exact;
     const qd_expr **qd_after_exact;  /* n */
     const qd_expr **mult_exact;      /* nmult */
@@ -117,7 +127,9 @@ typedef struct qd_impulse {
  * with neither blows nor sudden constraints nor prescriptions;
  * QD_ERR_SINGULAR when M is singular there or the rows are dependent or
  * inconsistent (naming the constraints); QD_ERR_NONLINEAR when T is not
- * quadratic in the velocities.  *out is zeroed on failure. */
+ * quadratic in the velocities.  *out is zeroed on failure.  A NULL opts,
+ * or a NULL q, qd or entry of them, takes the model's `initial` value as
+ * written (qd_model_initial_definition); none there is QD_ERR_ARG. */
 QD_API qd_status qd_impulse_solve(qd_ctx *ctx, const qd_model *m, const qd_impulse_opts *opts,
                                   qd_impulse *out);
 QD_API void qd_impulse_free(qd_impulse *r);

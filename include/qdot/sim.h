@@ -64,7 +64,17 @@ typedef struct qd_sim qd_sim;
 /* Compile the equations e of model m (e from qd_eom_derive, without
  * eliminated coordinates; parameters at the model's values, so apply --set
  * to the model first).  e and m must outlive the qd_sim.  NULL on failure,
- * reason in ctx. */
+ * reason in ctx.
+ *
+ * The model's unilateral contacts (`impact NAME: GAP >= 0 restitution E`)
+ * become internal events on GAP(q, t): when GAP reaches 0 while decreasing
+ * (located as the events are), Newton's law of restitution is applied with
+ * the ordinary constraints held (Desloge ch. 57, ch. 61; Byerly ch. III):
+ * M (q'+ - q'-) = A^T Lambda, A q'+ + a0 = 0, dGAP/dt after = -E dGAP/dt
+ * before; every method then restarts from the new velocities.  A
+ * restitution outside [0, 1], a gap with velocities or one that does not
+ * depend on the coordinates is QD_ERR_ARG here; a gap negative at t0 is
+ * QD_ERR_ARG from qd_sim_run.  docs/design.md, "Impacts in simulation". */
 QD_API qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
 
 /* Compile the Hamilton's equations of a model given by H (`momenta`,
@@ -80,6 +90,7 @@ QD_API qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
  * must outlive the qd_sim; NULL on failure (a model not given by H,
  * constraints), reason in ctx. */
 QD_API qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m);
+/* (A model given by H with `impact`s is refused: the impact law needs M.) */
 QD_API void qd_sim_free(qd_sim *s);
 
 /* Extra output columns: an expression in the coordinates, velocities, t and
@@ -143,6 +154,27 @@ typedef struct qd_sim_stats {
     double E0;                   /* the Jacobi integral h = sum q' dL/dq' - L at t0 */
     size_t events;
     double t;                    /* where the run ended */
+    /* Unilateral contacts (the model's `impact NAME: GAP >= 0 restitution
+     * E`): the impacts applied and the energy h they took (E < 1), which
+     * energy_error_max does not count (it measures |E(t) - (E(0) - lost)|).
+     * in_contact: the run ended in contact with impact `contact` (its index
+     * in the model's impacts) at t, before t_end: its rebounds fell below
+     * what the tolerance resolves (rate below sqrt(rtol) times its fastest
+     * approach, E = 0 included, with the motion pressing the gap shut
+     * after a plastic impact; or a landing inside the first step after the
+     * rebound that a step 16^6 times shorter still misses).  The impact is
+     * then plastic: the gap's rate is 0 after it.  at_rest: nothing moves
+     * after it (T after <= rtol T before; the ball on the floor); else the
+     * bodies would move on in sustained contact (a rod pivoting on a
+     * ledge, a ball sliding along the floor), which is not simulated.
+     * chattering: the flight
+     * times were shrinking geometrically (infinitely many impacts in a
+     * finite time, the bouncing ball with E < 1), and t is the sum of the
+     * series, the accumulation time; else t is the last impact's time. */
+    size_t impacts;
+    double impact_energy_lost;
+    bool in_contact, at_rest, chattering;
+    size_t contact;
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the
@@ -170,7 +202,12 @@ QD_API qd_status qd_sim_compile(qd_sim *s);
 QD_API bool qd_sim_compiled(const qd_sim *s);
 
 /* Receives every row (event -1: a sample; else the index of the event in
- * the order added).  Returning nonzero ends the run early (QD_OK). */
+ * the order added).  Returning nonzero ends the run early (QD_OK).  An
+ * impact of the model's contact i gives two rows with event nev + i (nev
+ * the events added): the state just before it and the state just after
+ * (ending in contact: the state at the run's end time).  Contacts whose
+ * gaps close at the same instant (to round-off) are struck together, in
+ * one law: one pair of rows, under the index of the one located first. */
 typedef int (*qd_sim_sink)(void *data, int event, const double *row);
 
 /* Integrate from opts->t0 to opts->t_end.  Rows at t0, at the output grid

@@ -112,7 +112,10 @@ static double es_point(qd__num_fn f, void *data, double a, double t, size_t *eva
             *bad = true;
         return 0;
     }
-    return xc * HALF_PI * cosh(t) * y;
+    /* far out the weight overflows while the integrand has decayed to 0:
+     * the term is 0, not inf * 0 */
+    double w = xc * HALF_PI * cosh(t);
+    return y == 0 || !isfinite(w) ? 0 : w * y;
 }
 
 bool qd__num_quad_upper(qd__num_fn f, void *data, double a, double tol, qd__num_quad *r) {

@@ -92,7 +92,8 @@ static qd_status bdf_init(qd__integ *it) {
               CVodeSetUserData(b->mem, b) == CV_SUCCESS &&
               CVodeSetLinearSolver(b->mem, b->LS, b->A) == CV_SUCCESS &&
               CVodeSetStopTime(b->mem, it->tend) == CV_SUCCESS &&
-              CVodeSetMaxNumSteps(b->mem, -1) == CV_SUCCESS;
+              CVodeSetMaxNumSteps(b->mem, -1) == CV_SUCCESS &&
+              (!(it->h > 0) || CVodeSetInitStep(b->mem, it->h) == CV_SUCCESS);
     if (!ok) {
         qd_ctx_error(it->s->ctx, QD_ERR_ARG, "CVODE setup failed: %s", b->message);
         return QD_ERR_ARG;

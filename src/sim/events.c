@@ -8,7 +8,9 @@
  * regula falsi down to adjacent doubles, then refined by secant iteration
  * on the method's own step from the step's start, so that the event state is
  * the discrete solution at that time (not the interpolant's approximation).
- * The guards (theta1' > 0) are tested at the root.
+ * The guards (theta1' > 0) are tested at the root.  A contact's gap
+ * (impact.c) is an event that only closes: from above 0 to below, struck
+ * when its rate is negative there.
  */
 #include "simint.h"
 
@@ -102,27 +104,93 @@ static qd_status polish(qd__run *r, size_t k, double troot, double *y) {
     return g_redo(r, k, t1, y, &g1);
 }
 
-qd_status qd__events_locate(qd__run *r) {
-    qd_sim *s = r->s;
+/* The last of 16 samples of the step where contact i's gap is positive
+ * (NAN when none is): the start of the bracket of a landing that follows
+ * a rebound inside the same step. */
+static qd_status positive_sample(qd__run *r, size_t k, double *a, double *ga) {
     qd__integ *it = r->it;
-    for (size_t k = 0; k < s->nev; k++) {
-        r->ev_hit[k] = false;
-        double ga = r->gold[k], gb = r->gnew[k];
-        if (ga == 0 || !((ga > 0) != (gb > 0) || gb == 0))
-            continue;
-        double root = it->t;
-        qd_status st = gb == 0 ? QD_OK : root_dense(r, k, it->told, ga, it->t, gb, &root);
-        double *y = r->ev_y + k * it->dim;
-        r->ev_t[k] = root;
-        if (st == QD_OK && it->ops->redo && root > it->told && root < it->t)
-            st = polish(r, k, root, y);
-        else if (st == QD_OK)
-            st = qd__run_dense(r, root, y);
-        if (st == QD_OK)
-            st = qd__run_events_at(r, r->ev_t[k], y, NULL, r->ev_ok);
+    *a = NAN;
+    for (int j = 15; j >= 1; j--) {
+        double t = it->told + (it->t - it->told) * j / 16, g;
+        qd_status st = g_dense(r, k, t, &g);
         if (st != QD_OK)
             return st;
-        r->ev_hit[k] = r->ev_ok[k];
+        if (g > 0) {
+            *a = t;
+            *ga = g;
+            return QD_OK;
+        }
+    }
+    return QD_OK;
+}
+
+/* Where contact i (event k) closes in the step: from above 0 to not above
+ * it, or (its gap not positive at the start: just after its impact, or
+ * touching at t0, or left at 0 by another contact's impact at the same
+ * instant) from the last positive sample; a gap not struck at the start
+ * with no positive sample closes there (*closed).  r->imp->unresolved = i
+ * when the step follows its impact and no sample is positive: the rebound
+ * and the landing both fell inside the step. */
+static qd_status impact_bracket(qd__run *r, size_t k, double *a, double *ga, bool *closed) {
+    qd__integ *it = r->it;
+    size_t i = k - r->s->nev;
+    *closed = false;
+    if (*ga > 0)
+        return QD_OK;
+    qd_status st = positive_sample(r, k, a, ga);
+    if (st != QD_OK || !isnan(*a))
+        return st;
+    *a = it->told;
+    if (!r->imp->fresh[i]) {
+        *closed = true;
+        return QD_OK;
+    }
+    r->imp->unresolved = i;
+    return QD_OK;
+}
+
+/* Locate event k in the step; r->ev_hit[k] when it happened. */
+static qd_status locate_one(qd__run *r, size_t k) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    bool gap = k >= s->nev, at_start = false;
+    double a = it->told, ga = r->gold[k], gb = r->gnew[k];
+    r->ev_hit[k] = false;
+    if (gap) {
+        /* a contact closes (from above); it never opens as an event */
+        if (!(gb < 0 || (gb == 0 && ga > 0)))
+            return QD_OK;
+        qd_status st = impact_bracket(r, k, &a, &ga, &at_start);
+        if (st != QD_OK || (!(ga > 0) && !at_start))
+            return st;
+    } else if (ga == 0 || !((ga > 0) != (gb > 0) || gb == 0)) {
+        return QD_OK;
+    }
+    double root = at_start ? a : it->t;
+    qd_status st = gb == 0 || at_start ? QD_OK : root_dense(r, k, a, ga, it->t, gb, &root);
+    double *y = r->ev_y + k * it->dim;
+    r->ev_t[k] = root;
+    if (st == QD_OK && it->ops->redo && root > it->told && root < it->t)
+        st = polish(r, k, root, y);
+    else if (st == QD_OK)
+        st = root == it->told ? (memcpy(y, it->yold, it->dim * sizeof *y), QD_OK)
+                              : qd__run_dense(r, root, y);
+    if (st == QD_OK)
+        st = qd__run_events_at(r, r->ev_t[k], y, NULL, r->ev_ok);
+    if (st != QD_OK)
+        return st;
+    /* a contact is struck only while closing: its rate below 0 */
+    r->ev_hit[k] = gap ? qd__impact_rate(r, k - s->nev, r->ev_t[k], y) < 0 : r->ev_ok[k];
+    return QD_OK;
+}
+
+qd_status qd__events_locate(qd__run *r) {
+    if (r->imp)
+        r->imp->unresolved = r->s->nimp;
+    for (size_t k = 0; k < qd__nev_all(r->s); k++) {
+        qd_status st = locate_one(r, k);
+        if (st != QD_OK)
+            return st;
     }
     return QD_OK;
 }

@@ -133,6 +133,12 @@ qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m) {
                      "constraints on a model given by H are not simulated: give T and V");
         return NULL;
     }
+    if (qd_model_nimpacts(m)) {
+        qd_ctx_error(ctx, QD_ERR_UNSUPPORTED,
+                     "impacts on a model given by H are not simulated (Newton's law needs the "
+                     "mass matrix): give T and V");
+        return NULL;
+    }
     qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
     if (!s) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");

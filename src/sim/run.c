@@ -60,9 +60,9 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
         return st;
     qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
     const double *gv = s->aux_out + qd__aux_ev(s), *guard = s->aux_out + qd__aux_guard(s);
+    for (size_t k = 0; g && k < qd__nev_all(s); k++)
+        g[k] = gv[k];
     for (size_t k = 0, gi = 0; k < s->nev; k++) {
-        if (g)
-            g[k] = gv[k];
         bool pass = true;
         for (size_t j = 0; j < s->ev[k].nguard; j++, gi++)
             pass = pass && guard[gi] > 0;
@@ -74,6 +74,7 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
 
 typedef struct measure {
     double E0, dEmax, Tmax, cmax;
+    double lost; /* h taken by the impacts so far: E(t) is held to E0 - lost */
 } measure;
 
 /* The error measures at state y, t; q' in r->qd.  aux: s->aux_out holds
@@ -83,7 +84,7 @@ static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool 
     qd_sim *s = r->s;
     size_t n = s->n;
     const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
-    ms->dEmax = fmax(ms->dEmax, fabs(hT[0] - ms->E0));
+    ms->dEmax = fmax(ms->dEmax, fabs(hT[0] - (ms->E0 - ms->lost)));
     ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
     if (!s->m)
         return;
@@ -200,11 +201,12 @@ static void run_free(qd__run *r, qd__integ *it) {
     qd__free(it->y);
     qd__free(r->row);
     qd__free(r->ev_hit);
+    qd__impacts_free(r);
 }
 
 static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     qd_sim *s = r->s;
-    size_t d = it->dim, ne = s->nev;
+    size_t d = it->dim, ne = qd__nev_all(s);
     it->y = qd__malloc(s->ctx, (2 * d + 1) * sizeof *it->y);
     r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
     r->ev_hit = qd__calloc(s->ctx, 2 * ne + 1, sizeof *r->ev_hit);
@@ -266,25 +268,35 @@ static void emit(emitter *em, int event, const double *row) {
         em->stopped = true;
 }
 
+/* The earliest contact struck in the step (r->ev_hit), or nimp. */
+static size_t first_impact(const qd__run *r) {
+    const qd_sim *s = r->s;
+    size_t first = s->nimp;
+    for (size_t i = 0; i < s->nimp; i++)
+        if (r->ev_hit[s->nev + i] && (first == s->nimp || r->ev_t[s->nev + i] <
+                                                              r->ev_t[s->nev + first]))
+            first = i;
+    return first;
+}
+
 /* Rows of the output grid inside (told, t], and the events of the step in
- * time order; *stop when a stopping event happened (the state is then
- * moved to it). */
-static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, measure *ms, emitter *em,
-                              size_t *grid, bool *stop, size_t *nevents) {
+ * time order, up to the first impact (*impact, or nimp); *stop when a
+ * stopping event happened first (the state is then moved to it). */
+static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, size_t *grid,
+                              bool *stop, size_t *nevents, size_t *impact) {
     qd_sim *s = r->s;
     qd__integ *it = r->it;
     double tstop = it->t;
     size_t first = s->nev;
-    if (s->nev) {
-        qd_status st = qd__events_locate(r);
-        if (st != QD_OK)
-            return st;
-        for (size_t k = 0; k < s->nev; k++)
-            if (r->ev_hit[k] && s->ev[k].stop && r->ev_t[k] <= tstop) {
-                tstop = r->ev_t[k];
-                first = k;
-            }
-    }
+    *impact = first_impact(r);
+    if (*impact < s->nimp)
+        tstop = r->ev_t[s->nev + *impact];
+    for (size_t k = 0; k < s->nev; k++)
+        if (r->ev_hit[k] && s->ev[k].stop && r->ev_t[k] <= tstop) {
+            tstop = r->ev_t[k];
+            first = k;
+            *impact = s->nimp;
+        }
     bool grid_rows = qd_sim_method_adaptive(o->method) && !o->fixed && o->dt > 0;
     /* merge grid rows and event rows by time */
     for (;;) {
@@ -325,7 +337,180 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, measure *ms, emi
         it->t = r->ev_t[first];
         memcpy(it->y, r->ev_y + first * it->dim, it->dim * sizeof *it->y);
     }
-    (void)ms;
+    return QD_OK;
+}
+
+/* What the loop keeps: the fixed grid (gk of its points passed) and
+ * whether the run has stopped. */
+typedef struct loop {
+    const qd_sim_opts *o;
+    emitter *em;
+    measure *ms;
+    qd_sim_stats *stats;
+    bool fixed, stop;
+    size_t gk;
+} loop;
+
+/* Start the method afresh from (it->t, it->y): the state jumped, so the
+ * FSAL stage, the dense output, the step history and the collocation
+ * start values are stale.  h: the first step (0: the method's choice). */
+static qd_status restart(qd__run *r, loop *L, double h) {
+    qd__integ *it = r->it;
+    if (it->priv)
+        it->ops->free(it);
+    it->h = L->fixed ? L->o->dt : h;
+    qd_status st = it->ops->init(it);
+    /* the steps count on: without this the explicit pairs would take the
+     * stale last stage of the step before the jump as their first (FSAL) */
+    it->y_changed = true;
+    r->slopes = false;
+    if (st == QD_OK)
+        st = qd__run_events_at(r, it->t, it->y, r->gold, NULL);
+    return st;
+}
+
+/* Back from the end of the step to (t, y) inside it. */
+static void back_to(qd__run *r, loop *L, double t, const double *y) {
+    qd__integ *it = r->it;
+    if (L->fixed && t < it->t && L->gk)
+        L->gk--; /* that grid point is not reached yet */
+    it->t = t;
+    if (y != it->y)
+        memcpy(it->y, y, it->dim * sizeof *it->y);
+}
+
+/* The row after contact i's impact; in contact the run ends. */
+static qd_status after_impact(qd__run *r, loop *L, size_t i, const qd__impact_result *res) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    qd__impacts *im = r->imp;
+    L->ms->lost += res->lost;
+    L->stats->impact_energy_lost += res->lost;
+    if (res->contact) {
+        L->stop = true;
+        it->t = res->t_rest;
+        L->stats->in_contact = true;
+        L->stats->at_rest = res->at_rest;
+        L->stats->contact = i;
+        L->stats->chattering = res->zeno;
+    }
+    qd_status st = make_row(r, L->ms, it->t, it->y, r->row);
+    if (st != QD_OK)
+        return st;
+    emit(L->em, (int)(s->nev + i), r->row);
+    if (L->stop)
+        return QD_OK;
+    for (size_t j = 0; j < s->nimp; j++)
+        im->fresh[j] = im->set[j];
+    im->retries = 0;
+    im->t_after = it->t;
+    memcpy(im->y_after, it->y, it->dim * sizeof *it->y);
+    return restart(r, L, 0);
+}
+
+/* Contact i struck in the step: a row just before, Newton's law, a row
+ * just after (both with event index nev + i), and the method restarted. */
+static qd_status strike(qd__run *r, loop *L, size_t i) {
+    qd_sim *s = r->s;
+    size_t k = s->nev + i;
+    back_to(r, L, r->ev_t[k], r->ev_y + k * r->it->dim);
+    qd_status st = make_row(r, NULL, r->it->t, r->it->y, r->row);
+    if (st != QD_OK)
+        return st;
+    emit(L->em, (int)k, r->row);
+    qd__impact_result res;
+    st = qd__impact_apply(r, i, r->it->t, r->it->y, &res);
+    L->stats->impacts += res.count;
+    return st == QD_OK ? after_impact(r, L, i, &res) : st;
+}
+
+/* Contact i's gap is below 0 at the end of the step with no place where
+ * it closed: the step after its impact was longer than the rebound.  An
+ * adaptive method retries from just after the impact with a step 16 times
+ * shorter; otherwise (or after 6 tries) the rebound is below what the
+ * steps resolve, and the contact comes to rest. */
+static qd_status unresolved(qd__run *r, loop *L) {
+    qd__integ *it = r->it;
+    qd__impacts *im = r->imp;
+    size_t i = im->unresolved;
+    bool fresh = im->fresh[i];
+    double h = it->t - it->told;
+    back_to(r, L, fresh ? im->t_after : it->told, fresh ? im->y_after : it->yold);
+    if (fresh && !L->fixed && im->retries < 6) {
+        im->retries++;
+        it->rejected++;
+        return restart(r, L, h / 16);
+    }
+    qd__impact_result res;
+    qd_status st = qd__impact_rest(r, i, it->t, it->y, &res);
+    return st == QD_OK ? after_impact(r, L, i, &res) : st;
+}
+
+/* One step with its projection, events and rows. */
+static qd_status step(qd__run *r, loop *L, size_t *grid) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    const qd_sim_opts *o = L->o;
+    bool last, every = L->fixed || !(o->dt > 0);
+    bool project = s->m && !o->no_project && o->method != QD_SIM_BDF;
+    size_t N = L->fixed ? (size_t)ceil((o->t_end - o->t0) / o->dt - 1e-9) : 0;
+    double target = 0;
+    if (L->fixed) {
+        /* the grid t0 + k dt: after an impact inside a step, the rest of it */
+        last = L->gk + 1 >= N;
+        target = last ? o->t_end : o->t0 + (double)(L->gk + 1) * o->dt;
+        it->h = target - it->t;
+    } else {
+        /* as dop853.f: no sliver of a step left before the end */
+        last = it->t + 1.01 * it->h >= o->t_end;
+        if (last)
+            it->h = o->t_end - it->t;
+    }
+    s->tnow = it->t;
+    qd_status st = it->ops->step(it);
+    if (st != QD_OK)
+        return st;
+    it->steps++;
+    r->slopes = false;
+    if (L->fixed) {
+        it->t = target;
+        L->gk++;
+    } else if (last && fabs(it->t - o->t_end) <= 4e-16 * fabs(o->t_end) + 1e-300) {
+        it->t = o->t_end;
+    }
+    if (project) {
+        size_t n = s->n;
+        st = qd__run_velocity(r, it->t, it->y);
+        if (st == QD_OK)
+            st = qd__project(s, it->t, it->y, r->qd);
+        if (st != QD_OK)
+            return st;
+        memcpy(it->y + n, r->qd, n * sizeof *r->qd);
+        it->y_changed = true;
+    }
+    size_t ne = qd__nev_all(s), impact = s->nimp;
+    if (ne && (st = qd__run_events_at(r, it->t, it->y, r->gnew, NULL)) == QD_OK)
+        st = qd__events_locate(r);
+    if (st != QD_OK)
+        return st;
+    if (r->imp && r->imp->unresolved < s->nimp)
+        return unresolved(r, L);
+    for (size_t j = 0; r->imp && j < s->nimp; j++)
+        r->imp->fresh[j] = false;
+    st = step_outputs(r, o, L->em, grid, &L->stop, &L->stats->events, &impact);
+    if (st != QD_OK)
+        return st;
+    if (impact < s->nimp)
+        return strike(r, L, impact);
+    /* a row only when it is written; the energy measure at every step */
+    bool row = !L->stop && (every || it->t >= o->t_end);
+    st = make_row(r, L->ms, it->t, it->y, row ? r->row : NULL);
+    if (st != QD_OK)
+        return st;
+    if (row)
+        emit(L->em, -1, r->row);
+    if (ne)
+        memcpy(r->gold, r->gnew, ne * sizeof *r->gold);
     return QD_OK;
 }
 
@@ -333,70 +518,24 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
                            qd_sim_stats *stats) {
     qd_sim *s = r->s;
     qd__integ *it = r->it;
-    bool fixed = !qd_sim_method_adaptive(o->method) || o->fixed;
-    bool every = fixed || !(o->dt > 0);
-    bool project = s->m && !o->no_project && o->method != QD_SIM_BDF;
-    size_t N = fixed ? (size_t)ceil((o->t_end - o->t0) / o->dt - 1e-9) : 0, grid = 1;
+    loop L = {.o = o, .em = em, .ms = ms, .stats = stats,
+              .fixed = !qd_sim_method_adaptive(o->method) || o->fixed};
+    size_t grid = 1;
     qd_status st = make_row(r, ms, it->t, it->y, r->row);
     if (st != QD_OK)
         return st;
     emit(em, -1, r->row);
-    if (s->nev && (st = qd__run_events_at(r, it->t, it->y, r->gold, NULL)) != QD_OK)
+    if (qd__nev_all(s) && (st = qd__run_events_at(r, it->t, it->y, r->gold, NULL)) != QD_OK)
         return st;
-    bool stop = false;
-    while (!stop && !em->stopped && it->t < o->t_end) {
+    while (!L.stop && !em->stopped && it->t < o->t_end) {
         if (it->steps >= max_steps(o)) {
             qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                          "more than %zu steps before t = %.17g (at t = %.17g; raise the "
                          "maximum with --max-steps)", max_steps(o), o->t_end, it->t);
             return QD_ERR_NUMERIC;
         }
-        bool last;
-        if (fixed) {
-            last = it->steps + 1 >= N;
-            it->h = last ? o->t_end - it->t : o->dt;
-        } else {
-            /* as dop853.f: no sliver of a step left before the end */
-            last = it->t + 1.01 * it->h >= o->t_end;
-            if (last)
-                it->h = o->t_end - it->t;
-        }
-        s->tnow = it->t;
-        double hkeep = it->h;
-        st = it->ops->step(it);
-        if (st != QD_OK)
+        if ((st = step(r, &L, &grid)) != QD_OK)
             return st;
-        it->steps++;
-        r->slopes = false;
-        if (fixed)
-            it->t = last ? o->t_end : o->t0 + (double)it->steps * o->dt;
-        else if (last && fabs(it->t - o->t_end) <= 4e-16 * fabs(o->t_end) + 1e-300)
-            it->t = o->t_end;
-        (void)hkeep;
-        if (project) {
-            size_t n = s->n;
-            st = qd__run_velocity(r, it->t, it->y);
-            if (st == QD_OK)
-                st = qd__project(s, it->t, it->y, r->qd);
-            if (st != QD_OK)
-                return st;
-            memcpy(it->y + n, r->qd, n * sizeof *r->qd);
-            it->y_changed = true;
-        }
-        if (s->nev && (st = qd__run_events_at(r, it->t, it->y, r->gnew, NULL)) != QD_OK)
-            return st;
-        st = step_outputs(r, o, ms, em, &grid, &stop, &stats->events);
-        if (st != QD_OK)
-            return st;
-        /* a row only when it is written; the energy measure at every step */
-        bool row = !stop && (every || it->t >= o->t_end);
-        st = make_row(r, ms, it->t, it->y, row ? r->row : NULL);
-        if (st != QD_OK)
-            return st;
-        if (row)
-            emit(em, -1, r->row);
-        if (s->nev)
-            memcpy(r->gold, r->gnew, s->nev * sizeof *r->gold);
     }
     /* the final row: the state where the run ended */
     return make_row(r, NULL, it->t, it->y, r->row);
@@ -419,7 +558,11 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     size_t ncols = qd_sim_columns(s, o->method, NULL, 0);
     st = run_alloc(&r, &it, ncols);
     if (st == QD_OK)
+        st = qd__impacts_new(&r);
+    if (st == QD_OK)
         st = initial_state(&r, o);
+    if (st == QD_OK && s->nimp)
+        st = qd__impact_check_start(&r, it.t, it.y);
     if (st == QD_OK)
         st = it.ops->init(&it);
     measure ms = {0};

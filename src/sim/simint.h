@@ -56,11 +56,19 @@ struct qd_sim {
     char **names;
     qd_sim_native_rhs native;
     double *con_err_last; /* m: qd_sim_run's last per-constraint residuals */
+    /* unilateral contacts (impact.c): their gaps are events nev.. of aux;
+     * imp gives each one's gradient dGAP/dq (n) and dGAP/dt */
+    size_t nimp, imp_n;
+    const char **imp_name;
+    const qd_expr **imp_gap;
+    double *imp_E;  /* nimp restitutions, in [0, 1] */
+    qd_prog *imp;
     /* ---- a run's own ---- */
     qd_ctx *ctx;
     double *in;
     double *acc_out, *con_out, *mom_out, *force_out, *aux_out, *en_out;
     double *acc_w, *con_w, *mom_w, *force_w, *aux_w, *en_w;
+    double *imp_out, *imp_w;
     /* scratch for the linear solves */
     double *K, *rhs, *tmp;
     size_t *pc;
@@ -93,10 +101,15 @@ qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const doubl
 qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx);
 void qd__sim_ws_free(qd_sim *w);
 
-/* Offsets in aux_out. */
+/* Offsets in aux_out: h, T, the constraints, the outputs, the events
+ * (the user's, then the impacts' gaps), the user events' guards. */
 static inline size_t qd__aux_out(const qd_sim *s) { return 2 + s->m; }
 static inline size_t qd__aux_ev(const qd_sim *s) { return 2 + s->m + s->nout; }
-static inline size_t qd__aux_guard(const qd_sim *s) { return 2 + s->m + s->nout + s->nev; }
+static inline size_t qd__aux_guard(const qd_sim *s) {
+    return 2 + s->m + s->nout + s->nev + s->nimp;
+}
+/* Event functions located in a step: the user's events and the gaps. */
+static inline size_t qd__nev_all(const qd_sim *s) { return s->nev + s->nimp; }
 
 /* y' = F(t, y) in either form; QD_ERR_SINGULAR (message with the time)
  * when M or the saddle matrix is singular. */
@@ -115,6 +128,9 @@ qd_status qd__aux_compile(qd_sim *s);
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd);
 /* h and T at (q, q', t): the first two entries of the result. */
 const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd);
+/* Run p (compiled over s's inputs, work its workspace) at (q, q', t). */
+void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const double *q,
+                 const double *qd, double *out);
 /* Evaluate con at (q, q', t) into s->con_out. */
 void qd__con_eval(qd_sim *s, double t, const double *q, const double *qd);
 
@@ -140,7 +156,7 @@ struct qd__integ {
     qd_sim_method method;
     qd__form form;  /* LAG, or HAM for the symplectic methods when canonical */
     size_t dim;
-    double t, told, h, tend, rtol, atol;
+    double t, told, h, tend, rtol, atol; /* h > 0 at init: the first step */
     double *y, *yold;
     bool fixed, y_changed; /* y_changed: the driver projected y after the step */
     size_t steps, rejected;
@@ -184,7 +200,28 @@ typedef struct qd__run {
     double *ev_t, *ev_y;               /* located events of a step: nev times, nev*dim */
     bool *ev_hit, *ev_ok;
     bool slopes;                       /* fa, fb valid for this step */
+    struct qd__impacts *imp;           /* the contacts' history (impact.c), or NULL */
 } qd__run;
+
+/* One contact's history in a run: what the chattering test reads. */
+typedef struct qd__contact {
+    size_t count;     /* impacts so far */
+    double t[3];      /* the last three impact times, t[2] the latest */
+    double vout[3];   /* the rebound rates E |dGAP/dt-| after them */
+    double vmax;      /* the fastest approach */
+} qd__contact;
+
+typedef struct qd__impacts {
+    qd__contact *c;   /* nimp */
+    double *K, *rhs, *A, *b, *zero; /* Newton's law: the saddle system, m + 1 rows */
+    bool *fresh;      /* nimp: struck at the start of the next step */
+    bool *set;        /* nimp: the contacts struck together */
+    double *g;        /* the event functions at the impact (nev + nimp) */
+    size_t unresolved;/* a contact whose landing the step missed, or nimp */
+    double t_after, *y_after; /* the state just after the last impact (retries) */
+    double *ylag, *dy;        /* (q, q') and its derivative: the gap's acceleration */
+    int retries;
+} qd__impacts;
 
 /* q' of state y (q, q' or q, p) at t into r->qd. */
 qd_status qd__run_velocity(qd__run *r, double t, const double *y);
@@ -196,6 +233,38 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
 /* Locate the events that changed sign in the last step: r->ev_hit[k],
  * r->ev_t[k], r->ev_y + k*dim for each that happened (guards true). */
 qd_status qd__events_locate(qd__run *r);
+
+/* ---- unilateral contacts (impact.c) --------------------------------------- */
+
+/* The model's `impact NAME: GAP >= 0 restitution E`: the gaps (no
+ * velocities), E in [0, 1], the gradients compiled (qd_sim_new). */
+qd_status qd__impact_setup(qd_sim *s);
+void qd__impact_free(qd_sim *s);
+/* A run's contact history; NULL and QD_OK without impacts. */
+qd_status qd__impacts_new(qd__run *r);
+void qd__impacts_free(qd__run *r);
+/* The gaps at the start: QD_ERR_ARG when one is negative. */
+qd_status qd__impact_check_start(qd__run *r, double t, const double *y);
+/* The rate dGAP/dt = a . q' + a0 of contact i at (t, y), q' in r->qd. */
+double qd__impact_rate(qd__run *r, size_t i, double t, const double *y);
+
+/* What an impact did, for the driver (run.c). */
+typedef struct qd__impact_result {
+    double lost;      /* h before - h after */
+    size_t count;     /* the contacts struck together (1 or more) */
+    bool contact;     /* the run ends: in contact */
+    bool at_rest;     /* ... with nothing moving (T after <= rtol T before) */
+    bool zeno;        /* the bounces' times were summed (chattering) */
+    double t_rest;    /* from when (the accumulation time of the impacts) */
+} qd__impact_result;
+/* Newton's law for contact i at (t, y) (velocities just before), the
+ * ordinary constraints held: y gets the velocities (momenta) after.  At
+ * rest (chattering, or a rebound too small to resolve) the impact is
+ * plastic, y is moved to res->t_rest and res->contact is set. */
+qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact_result *res);
+/* Contact i's rebound could not be resolved from the state after its
+ * impact (t, y): end in contact there (plastic impact, as above). */
+qd_status qd__impact_rest(qd__run *r, size_t i, double t, double *y, qd__impact_result *res);
 
 /* ---- constraints (project.c) ----------------------------------------------- */
 

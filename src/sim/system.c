@@ -255,6 +255,8 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
         st = compile_canonical(s);
     if (st == QD_OK)
         st = qd__sim_names(s);
+    if (st == QD_OK)
+        st = qd__impact_setup(s);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "cannot compile the equations for simulation");
@@ -268,6 +270,7 @@ void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
     qd__free(s->con_err_last);
+    qd__impact_free(s);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);
@@ -383,6 +386,8 @@ qd_status qd__aux_compile(qd_sim *s) {
         outs[k++] = s->out_expr[i];
     for (size_t i = 0; i < s->nev; i++)
         outs[k++] = s->ev_expr[i];
+    for (size_t i = 0; i < s->nimp; i++)
+        outs[k++] = s->imp_gap[i];
     for (size_t i = 0; i < s->nguard; i++)
         outs[k++] = s->guard_expr[i];
     if (s->hamilton)
@@ -433,6 +438,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     ok = prog_ws(ctx, w->force, w->force_n, &w->force_out, &w->force_w) && ok;
     ok = prog_ws(ctx, w->aux, w->aux_n, &w->aux_out, &w->aux_w) && ok;
     ok = prog_ws(ctx, w->en, w->en_n, &w->en_out, &w->en_w) && ok;
+    ok = prog_ws(ctx, w->imp, w->imp_n, &w->imp_out, &w->imp_w) && ok;
     if (!ok || !w->in || !w->K || !w->pc || !w->con_err)
         return QD_ERR_NOMEM;
     w->rhs = w->K + N * N;
@@ -446,7 +452,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
 void qd__sim_ws_free(qd_sim *w) {
     double *bufs[] = {w->in, w->K, w->con_err, w->acc_out, w->acc_w, w->con_out, w->con_w,
                       w->mom_out, w->mom_w, w->force_out, w->force_w, w->aux_out, w->aux_w,
-                      w->en_out, w->en_w};
+                      w->en_out, w->en_w, w->imp_out, w->imp_w};
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         qd__free(bufs[i]);
     qd__free(w->pc);
@@ -482,6 +488,12 @@ static void set_state(qd_sim *s, double t, const double *q, const double *qd) {
 }
 
 static bool saddle_solve(qd_sim *s, double t, const double *y);
+
+void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const double *q,
+                 const double *qd, double *out) {
+    set_state(s, t, q, qd);
+    qd_prog_eval(p, work, s->in, out);
+}
 
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);

@@ -109,6 +109,19 @@ def check_eom(qdot, spring, pend):
         check('eom symbolic: th\'\' with l = 6', close(thdd, want), '%r vs %r' % (thdd, want))
         text = ' '.join(sum(d['mass_matrix'], []) + d['forcing'])
         check('eom symbolic: a and l are written in', 'l' not in text.replace('g', ''), text)
+    # a value written as an expression of constants is shown as its number
+    # (it was nan in the text and broke the JSON)
+    with tempfile.TemporaryDirectory() as tmp:
+        tilted = Path(tmp) / 'tilted.qd'
+        tilted.write_text("coordinates th\nparameters m = 1, al = pi/6\n"
+                          "T = m*th'^2/2\nV = -cos(th - al)\n")
+        d = js(qdot, 'eom', str(tilted))
+        check('eom: al = pi/6 in the JSON', d and close(d['parameters']['al'], math.pi / 6),
+              d and d['parameters'])
+        rc, out, _ = run(qdot, 'eom', str(tilted))
+        check('eom: al = pi/6 in the text', rc == 0 and 'al = 0.5235987755982988' in out, out)
+        rc, out, _ = run(qdot, 'check', str(tilted))
+        check('check: al = pi/6', rc == 0 and 'al = 0.5235987755982988' in out, out)
 
 
 def check_ok(d, name):

@@ -105,6 +105,30 @@ def _(q, v, t, p):
     return [p['g'] / 23, 8 * p['g'] / 23]
 
 
+@example('bouncing_ball', ['y'], ranges={'y': (0.0, 2.0)})
+def _(q, v, t, p):
+    # between impacts a free fall (Desloge ch. 61 for the impacts): y'' = -g
+    return [-p['g']]
+
+
+@example('pendulum_wall', ['th'], ranges={'th': (0.0, 1.5)})
+def _(q, v, t, p):
+    # between impacts the pendulum, Goldstein sec. 1.6: th'' = -(g/l) sin th
+    return [-p['g'] / p['l'] * sin(q['th'])]
+
+
+@example('rhombus_wall', ['x', 'th'], ranges={'x': (1.0, 3.0), 'th': (0.2, 1.3)})
+def _(q, v, t, p):
+    # Desloge ch. 57 ex. 1 (T55): T = 2 m x'^2 + (8/3) m a^2 th'^2, no forces
+    return [0.0, 0.0]
+
+
+@example('rod_ledge', ['x', 'y', 'th'])
+def _(q, v, t, p):
+    # a free rod under gravity between impacts: x'' = 0, y'' = -g, th'' = 0
+    return [0.0, -p['g'], 0.0]
+
+
 @example('bead_rotating_wire', ['r'], ranges={'r': (0.1, 2.0)})
 def _(q, v, t, p):
     # Goldstein sec. 1.6 example 3 (G03, pitfall P2): r'' = omega^2 r
@@ -264,6 +288,23 @@ def _(q, v, t, p):
     r, rd, thd = q['r'], v['r'], v['theta']
     return [r * thd**2 - p['k'] / (p['m'] * r**2), -2 * rd * thd / r]
 
+
+@example('inverse_cube_orbit', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58 P9 (B T09): m (r'' - r phi'^2) = -(h0^2/m)(2/(a r^2) + 1/r^3);
+    # d/dt(m r^2 phi') = 0
+    r, rd, phd = q['r'], v['r'], v['phi']
+    m, h0 = p['m'], p['h0']
+    F = -(h0**2 / m) * (2 / (p['a'] * r**2) + 1 / r**3)
+    return [r * phd**2 + F / m, -2 * rd * phd / r]
+
+
+@example('r4_potential', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 58 (B C3): V = -a/(4 r^4), m (r'' - r phi'^2) = -a/r^5;
+    # d/dt(m r^2 phi') = 0
+    r, rd, phd = q['r'], v['r'], v['phi']
+    return [r * phd**2 - p['a'] / (p['m'] * r**5), -2 * rd * phd / r]
 
 
 def central(r, rd, phd, m, dV):

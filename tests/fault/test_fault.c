@@ -29,7 +29,9 @@
  *   steady motions: the heavy top (examples/heavy_top.qd) at th = 0.5 with
  *     C n = p_psi = 24, both precession rates of
  *     A cos th phi'^2 - C n phi' + M g h = 0 (Goldstein sec. 5.7; Britannica
- *     sec. 5 (29)-(30), seed 004), by qd_steady_find_all.
+ *     sec. 5 (29)-(30), seed 004), by qd_steady_find_all;
+ *   impulse: the rhombus hitting a wall (Desloge ch. 57 Ex. 1), by
+ *     qd_impulse_solve with the closed form.
  * The simulation, modes, degrees-of-freedom and steady bodies derive first with the failures off, so
  * their loops fail only the allocations of the run itself.
  */
@@ -538,6 +540,56 @@ static void test_steady(void **state) {
     assert_true(ls.allocs > 5);
 }
 
+/* ---- impulse ------------------------------------------------------------------ */
+
+/* Desloge ch. 57 Ex. 1 (seed-desloge-A.md T55): the rhombus of four rods
+ * hits an inelastic wall at al = 30 deg: th'+ = 3/7, x'+ = -3/7, the wall's
+ * impulse 16 m/7, in numbers and in closed form.  Parsed with the failures
+ * off; the solve (derivation, rows, saddle, theorems, closed form) fails. */
+#define RHOMBUS                                                                                \
+    "coordinates x, th\nparameters m = 1, a = 1, v = 1, al = pi/6\n"                         \
+    "T = 2*m*x'^2 + 8/3*m*a^2*th'^2\nC = (x - 2*a*cos(th), 0, 0)\n"                         \
+    "impact constraint wall: C.x = 0\nreaction wall on C\n"                                   \
+    "initial x = 2*a*cos(al), th = al, x' = -v, th' = 0\n"
+
+static qd_status impulse_body(qd_ctx *ctx, faulty *f) {
+    long armed = f->fail_at;
+    f->fail_at = 0;
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, RHOMBUS, &d);
+    assert_non_null(m);
+    f->fail_at = f->count + armed;
+    qd_impulse r;
+    qd_impulse_opts o = {.exact = true};
+    qd_status st = qd_impulse_solve(ctx, m, &o, &r);
+    if (st == QD_OK) {
+        assert_true(fabs(r.qd_after[1] - 3.0 / 7) < 1e-12);
+        assert_true(fabs(r.mult[0] - 16.0 / 7) < 1e-12);
+        assert_true(fabs(r.react[0][0] - 16.0 / 7) < 1e-12);
+        assert_true(r.exact && r.carnot.holds);
+        /* the closed form is in the parameters: at their values, 3/7 */
+        env v = {0, {0}, {0}};
+        double x = 0;
+        for (size_t i = 0; i < qd_model_nparams(m) && st == QD_OK; i++) {
+            v.syms[v.n] = qd_model_param(m, i);
+            st = qd_eval(ctx, qd_model_param_value(m, i), 0, NULL, NULL, &v.vals[v.n++]);
+        }
+        if (st == QD_OK)
+            st = qd_eval(ctx, r.qd_after_exact[1], v.n, v.syms, v.vals, &x);
+        if (st == QD_OK)
+            assert_true(fabs(x - 3.0 / 7) < 1e-12);
+    }
+    qd_impulse_free(&r);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_impulse(void **state) {
+    (void)state;
+    loop_stats ls = fault_loop("impulse", impulse_body, 2); /* ~25 s under ASan at 1 */
+    assert_true(ls.allocs > 10);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_derivation),
@@ -547,6 +599,7 @@ int main(void) {
         cmocka_unit_test(test_dof),
         cmocka_unit_test(test_heavy_top),
         cmocka_unit_test(test_steady),
+        cmocka_unit_test(test_impulse),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,86 @@
+/*
+ * src/impulse/collision.c - two bodies meeting, described in the lab and
+ * in the centre-of-mass frame (Desloge ch. 61; seed-desloge-B C5).
+ *
+ * The centre-of-mass velocity w = (m1 v1 + m2 v2)/(m1 + m2) does not change
+ * in the collision (the impulses are internal); the relative velocity
+ * u = v1 - v2 turns by the CM angle theta and its energy
+ * eps = m1 m2 |u|^2 / (2 (m1 + m2)) drops by the energy lost.  Body 1's
+ * velocity after is w + s* n (n a unit vector, s* its CM speed), so with
+ * gamma = |w|/s* and body 2 at rest before, tan theta_lab1 =
+ * sin theta/(cos theta + gamma).  The velocities are those of the centres
+ * of mass: the time derivatives of the positions, at the frozen
+ * configuration with the velocities before and after.
+ */
+#include "impulse_priv.h"
+
+#include <math.h>
+
+/* Mass element i: particles first, then bodies. */
+static const qd_expr *mass_of(const qd_model *m, size_t i) {
+    size_t np = qd_model_nparticles(m);
+    return i < np ? qd_model_particle_mass(m, i) : qd_model_body_mass(m, i - np);
+}
+
+static const qd_expr *position_of(const qd_model *m, size_t i, unsigned k) {
+    size_t np = qd_model_nparticles(m);
+    return i < np ? qd_model_particle_position(m, i, k) : qd_model_body_position(m, i - np, k);
+}
+
+/* The velocity of element i's centre with the velocities v. */
+static qd_status velocity(const qd__imp *s, size_t i, const double *v, double out[3]) {
+    qd_status st = QD_OK;
+    for (unsigned k = 0; k < 3 && st == QD_OK; k++) {
+        const qd_expr *p = position_of(s->m, i, k);
+        out[k] = 0;
+        if (p)
+            st = qd__imp_eval(s, qd_dt(s->ctx, p), v, &out[k]);
+    }
+    return st;
+}
+
+static double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* The angle between a and b, in [0, pi]; 0 when either vanishes. */
+static double angle(const double *a, const double *b) {
+    double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    return atan2(sqrt(dot(c, c)), dot(a, b));
+}
+
+static void describe(qd_collision *c) {
+    double M = c->m1 + c->m2, mu = c->m1 * c->m2 / M, star[3];
+    for (unsigned k = 0; k < 3; k++) {
+        c->w[k] = (c->m1 * c->v1[0][k] + c->m2 * c->v2[0][k]) / M;
+        for (int t = 0; t < 2; t++)
+            c->u[t][k] = c->v1[t][k] - c->v2[t][k];
+        star[k] = c->v1[1][k] - c->w[k];
+    }
+    for (int t = 0; t < 2; t++)
+        c->eps[t] = mu * dot(c->u[t], c->u[t]) / 2;
+    c->theta_cm = angle(c->u[0], c->u[1]);
+    c->theta_lab1 = angle(c->u[0], c->v1[1]);
+    c->theta_lab2 = angle(c->u[0], c->v2[1]);
+    double sstar = sqrt(dot(star, star));
+    c->gamma = sstar > 0 ? sqrt(dot(c->w, c->w)) / sstar : 0; /* no CM speed after */
+}
+
+qd_status qd__imp_collision(const qd__imp *s, qd_impulse *r) {
+    const qd_model *m = s->m;
+    if (qd_model_nparticles(m) + qd_model_nbodies(m) != 2 || s->nsudden == 0)
+        return QD_OK;
+    qd_collision *c = &r->col;
+    qd_status st = qd__imp_eval(s, mass_of(m, 0), r->qd_before, &c->m1);
+    if (st == QD_OK)
+        st = qd__imp_eval(s, mass_of(m, 1), r->qd_before, &c->m2);
+    for (int t = 0; t < 2 && st == QD_OK; t++) {
+        const double *v = t ? r->qd_after : r->qd_before;
+        st = velocity(s, 0, v, c->v1[t]);
+        if (st == QD_OK)
+            st = velocity(s, 1, v, c->v2[t]);
+    }
+    if (st != QD_OK || !(c->m1 + c->m2 > 0))
+        return st;
+    describe(c);
+    r->collision = true;
+    return QD_OK;
+}

@@ -1,0 +1,355 @@
+/*
+ * src/orbit/solve.c - the motion through one state: its energy and
+ * momenta, the interval it fills (turning points by scan and zeroin), its
+ * kind, the quadratures, the circular motions at the same momenta and,
+ * for Kepler-type reductions, the conic.
+ */
+#include "orb.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/mem.h"
+
+#define PI 3.14159265358979323846
+#define CIRC_TOL 1e-8 /* circular: the other turning point within this many scales */
+
+const char *qd_orbit_kind_name(qd_orbit_kind k) {
+    static const char *const names[] = {"bound", "unbound", "circular", "capture"};
+    return (unsigned)k < 4 ? names[k] : "?";
+}
+
+void qd_orbit_result_free(qd_orbit_result *r) {
+    if (!r)
+        return;
+    for (size_t i = 0; i < r->ncircle; i++)
+        qd__free(r->circle[i].apsidal);
+    qd__free(r->circle);
+    qd__free(r->momenta);
+    qd__free(r->advance);
+    qd__free(r->apsidal);
+    qd__free(r->precession);
+    memset(r, 0, sizeof *r);
+}
+
+static double value_of(const qd_expr *s, size_t n, const qd_expr *const *syms, const double *vals,
+                       bool *given) {
+    for (size_t k = 0; k < n; k++)
+        if (syms[k] == s) {
+            if (given)
+                *given = true;
+            return vals[k];
+        }
+    if (given)
+        *given = false;
+    return 0;
+}
+
+/* The i-th symbol of a state: ignored coordinates and their velocities, then
+ * the kept ones, then t (i = 2 n). */
+static const qd_expr *state_symbol(qd_ctx *ctx, const qd_routh *h, size_t i) {
+    if (i == 2 * h->n)
+        return qd_time(ctx);
+    if (i < 2 * h->nign)
+        return i % 2 ? qd_jet(ctx, h->ign[i / 2], 1) : h->ign[i / 2];
+    i -= 2 * h->nign;
+    return i % 2 ? h->keepd[i / 2] : h->keep[i / 2];
+}
+
+/* The state with every coordinate, velocity and t the caller left out at 0. */
+static qd_status full_state(qd_ctx *ctx, const qd_routh *h, size_t n, const qd_expr *const *syms,
+                            const double *vals, const qd_expr ***fs, double **fv, size_t *fn) {
+    size_t cap = n + 2 * h->n + 1, k = n;
+    *fs = qd__calloc(ctx, cap, sizeof **fs);
+    *fv = qd__calloc(ctx, cap, sizeof **fv);
+    if (!*fs || !*fv)
+        return QD_ERR_NOMEM;
+    memcpy(*fs, syms, n * sizeof *syms);
+    memcpy(*fv, vals, n * sizeof *vals);
+    for (size_t i = 0; i <= 2 * h->n; i++) {
+        const qd_expr *s = state_symbol(ctx, h, i);
+        bool given;
+        value_of(s, n, syms, vals, &given);
+        if (!s)
+            return qd_ctx_status(ctx);
+        if (!given)
+            (*fs)[k++] = s; /* its value stays the calloc'd 0 */
+    }
+    *fn = k;
+    return QD_OK;
+}
+
+static qd_status momenta(qd_ctx *ctx, const qd_orbit *o, size_t n, const qd_expr *const *syms,
+                         const double *vals, double *beta) {
+    const qd_routh *h = o->routh;
+    const qd_expr **fs = NULL;
+    double *fv = NULL;
+    size_t fn = 0;
+    qd_status st = full_state(ctx, h, n, syms, vals, &fs, &fv, &fn);
+    for (size_t i = 0; i < h->nign && st == QD_OK; i++) {
+        bool given;
+        beta[i] = value_of(h->beta[i], n, syms, vals, &given);
+        if (!given)
+            st = qd_eval(ctx, h->pdef[i], fn, fs, fv, &beta[i]);
+    }
+    qd__free(fs);
+    qd__free(fv);
+    return st;
+}
+
+static qd_status alloc_result(qd_ctx *ctx, size_t nign, qd_orbit_result *r) {
+    memset(r, 0, sizeof *r);
+    r->nign = nign;
+    double **arrs[] = {&r->momenta, &r->advance, &r->apsidal, &r->precession};
+    for (int k = 0; k < 4; k++)
+        if (!(*arrs[k] = qd__calloc(ctx, nign, sizeof(double))))
+            return QD_ERR_NOMEM;
+    r->period = r->fall_time = r->periapsis = NAN;
+    for (size_t i = 0; i < nign; i++)
+        r->advance[i] = r->apsidal[i] = r->precession[i] = NAN;
+    return QD_OK;
+}
+
+/* ---- the interval of the motion --------------------------------------------- */
+
+/* With E given below V_eff(x0): the allowed point nearest x0, walking both
+ * ways in turn; else the error naming E and the least V_eff met. */
+static qd_status allowed_start(qd_ctx *ctx, qd__orb_env *env, double *x0) {
+    double a, b, best = HUGE_VAL, at = *x0, found = NAN;
+    for (int dir = 1; dir >= -1; dir -= 2)
+        if (qd__orb_scan(env, qd__orb_gap, *x0, dir, &a, &b) == QD__ORB_FOUND &&
+            !(fabs(b - *x0) >= fabs(found - *x0)))
+            found = b;
+    if (!isnan(found)) {
+        *x0 = found;
+        return QD_OK;
+    }
+    /* No motion: the least V_eff, where V_eff' changes sign nearest x0. */
+    double *xs = NULL;
+    size_t n = 0;
+    if (!qd__orb_circles(ctx, env, *x0, &xs, &n))
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < n; i++) {
+        double v = qd__orb_at(env, xs[i])[QD__ORB_V];
+        if (v < best)
+            best = v, at = xs[i];
+    }
+    qd__free(xs);
+    if (best == HUGE_VAL)
+        best = qd__orb_at(env, at)[QD__ORB_V];
+    qd_ctx_error(ctx, QD_ERR_ARG,
+                 "no motion: the energy E = %.12g is below the minimum of V_eff, %.12g (at "
+                 "%s = %.12g)", env->E, best, qd_expr_name(env->o->x), at);
+    return QD_ERR_ARG;
+}
+
+/* One side of the motion from xs: a turning point, an open end or a
+ * singular point. */
+static qd__orb_end side(qd__orb_env *env, double xs, int dir, double *end) {
+    double a, b;
+    qd__orb_end e = qd__orb_scan(env, qd__orb_gap, xs, dir, &a, &b);
+    if (e == QD__ORB_FOUND)
+        *end = qd__orb_brent(env, qd__orb_gap, a, b);
+    else if (e == QD__ORB_SINGULAR)
+        *end = b;
+    else
+        *end = dir * INFINITY;
+    return e;
+}
+
+static bool circular_at(qd__orb_env *env, double x) {
+    const double *o = qd__orb_at(env, x);
+    double v1 = fabs(o[QD__ORB_V1]), v2 = fabs(o[QD__ORB_V2]);
+    return env->E - o[QD__ORB_V] <= 0 && 2 * v1 <= CIRC_TOL * env->scale * v2;
+}
+
+static void classify(qd__orb_env *env, double xs, qd_orbit_result *r) {
+    qd__orb_end e[2];
+    double ends[2];
+    const double *o = qd__orb_at(env, xs);
+    bool at_turn = !(env->E - o[QD__ORB_V] > 0);
+    int forbid = o[QD__ORB_V1] > 0 ? 1 : -1; /* the force pushes away from this side */
+    for (int k = 0; k < 2; k++) {
+        int dir = k ? 1 : -1;
+        if (at_turn && dir == forbid) {
+            e[k] = QD__ORB_FOUND;
+            ends[k] = xs;
+        } else {
+            e[k] = side(env, xs, dir, &ends[k]);
+        }
+    }
+    r->lo = ends[0];
+    r->hi = ends[1];
+    r->nturn = 0;
+    for (int k = 0; k < 2; k++)
+        if (e[k] == QD__ORB_FOUND)
+            r->turn[r->nturn++] = ends[k];
+    if (r->nturn == 2)
+        r->kind = QD_ORBIT_BOUND;
+    else if (r->nturn == 1 && (e[0] == QD__ORB_SINGULAR || e[1] == QD__ORB_SINGULAR))
+        r->kind = QD_ORBIT_CAPTURE;
+    else
+        r->kind = QD_ORBIT_UNBOUND;
+}
+
+/* ---- circular motions -------------------------------------------------------- */
+
+static void circle_at(qd__orb_env *env, double x, qd_orbit_circle *c) {
+    const qd_orbit *ob = env->o;
+    const double *o = qd__orb_at(env, x);
+    if (isnan(o[QD__ORB_V2])) /* 0/0 of a term with no momentum (theta = 0): its limit */
+        o = qd__orb_at(env, x + 1e-7 * env->scale);
+    double M = o[QD__ORB_M], v2 = o[QD__ORB_V2];
+    c->x = x;
+    c->energy = o[QD__ORB_V];
+    c->curvature = v2;
+    double flat = 1e-9 * (fabs(o[QD__ORB_V]) + M) / (env->scale * env->scale);
+    c->stable = fabs(v2) <= flat ? -1 : v2 > 0;
+    c->omega = c->stable == 1 ? sqrt(v2 / M) : NAN;
+    for (size_t i = 0; i < ob->routh->nign; i++)
+        c->apsidal[i] = c->stable == 1 ? PI * fabs(o[QD__ORB_RATE + i]) / c->omega : NAN;
+    c->bertrand = NAN;
+    if (ob->central) {
+        /* f = -V', V = V_eff - M h^2/(2 x^2), h = c' x^2 (Desloge ch. 59 eq. 31) */
+        double h = o[QD__ORB_RATE] * x * x, cent = M * h * h;
+        double f = -(o[QD__ORB_V1] + cent / (x * x * x));
+        double fp = -(v2 - 3 * cent / (x * x * x * x));
+        double b2 = 3 + x * fp / f;
+        c->bertrand = b2 > 0 ? PI / sqrt(b2) : NAN;
+    }
+}
+
+static qd_status circles(qd_ctx *ctx, qd__orb_env *env, double x0, qd_orbit_result *r) {
+    double *xs = NULL;
+    size_t n = 0;
+    if (!qd__orb_circles(ctx, env, x0, &xs, &n))
+        return QD_ERR_NOMEM;
+    r->circle = qd__calloc(ctx, n ? n : 1, sizeof *r->circle);
+    if (!r->circle) {
+        qd__free(xs);
+        return QD_ERR_NOMEM;
+    }
+    for (size_t k = 0; k < n; k++) {
+        r->circle[k].apsidal = qd__calloc(ctx, r->nign ? r->nign : 1, sizeof(double));
+        if (!r->circle[k].apsidal) {
+            qd__free(xs);
+            return QD_ERR_NOMEM;
+        }
+        r->ncircle = k + 1;
+        circle_at(env, xs[k], &r->circle[k]);
+    }
+    qd__free(xs);
+    return QD_OK;
+}
+
+/* ---- the whole ---------------------------------------------------------------- */
+
+static void circular_limits(qd__orb_env *env, double x, qd_orbit_result *r) {
+    const double *o = qd__orb_at(env, x);
+    double v2 = o[QD__ORB_V2];
+    r->kind = QD_ORBIT_CIRCULAR;
+    r->nturn = 0;
+    r->lo = r->hi = x;
+    if (!(v2 > 0))
+        return; /* an unstable circle: no small oscillation, no period */
+    r->period = 2 * PI / sqrt(v2 / o[QD__ORB_M]);
+    for (size_t i = 0; i < r->nign; i++)
+        r->advance[i] = o[QD__ORB_RATE + i] * r->period;
+}
+
+/* V_eff not finite at x = 0 and not continuous through it: the centre of a
+ * central force (V_eff -> +-inf), not the 0/0 of a centrifugal term with no
+ * momentum (a spherical pendulum swinging through the vertical). */
+static bool singular_at_zero(qd__orb_env *env) {
+    if (isfinite(qd__orb_at(env, 0)[QD__ORB_V]))
+        return false;
+    double d = 1e-6 * env->scale, v1 = qd__orb_at(env, d)[QD__ORB_V];
+    double v2 = qd__orb_at(env, 2 * d)[QD__ORB_V], vm = qd__orb_at(env, -d)[QD__ORB_V];
+    double tol = 1e-6 * (1 + fabs(v1));
+    return !(isfinite(v1) && isfinite(v2) && isfinite(vm) && fabs(v1 - vm) <= tol &&
+             fabs(v1 - v2) <= tol);
+}
+
+static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, double c0,
+                         bool energy_given, qd_orbit_result *r) {
+    qd_status st = QD_OK;
+    double xs = x0;
+    if (energy_given && !(qd__orb_gap(env, x0) >= 0) && (st = allowed_start(ctx, env, &xs)))
+        return st;
+    if (circular_at(env, xs))
+        circular_limits(env, xs, r);
+    else
+        classify(env, xs, r);
+    if (r->kind != QD_ORBIT_CIRCULAR)
+        st = qd__orb_quadratures(ctx, env, r);
+    for (size_t i = 0; i < r->nign && r->kind != QD_ORBIT_CAPTURE && r->kind != QD_ORBIT_UNBOUND;
+         i++) {
+        r->apsidal[i] = fabs(r->advance[i]) / 2; /* an angle between apsides, either way round */
+        r->precession[i] = r->advance[i] - 2 * PI * (r->advance[i] < 0 ? -1 : 1);
+        if (fabs(r->precession[i]) <= 8 * fmax(r->quad_error, 1e-13) * fabs(r->advance[i]))
+            r->precession[i] = 0; /* closed to within the quadrature's error */
+    }
+    if (st == QD_OK)
+        st = circles(ctx, env, xs, r);
+    if (st == QD_OK && env->o->kepler) {
+        const double *o = qd__orb_at(env, xs);
+        double w = 2 * (env->E - o[QD__ORB_V]) / o[QD__ORB_M];
+        double xd = (xd0 < 0 ? -1 : 1) * sqrt(w > 0 ? w : 0);
+        qd__orb_conic(env, xs, xd, c0, r);
+    }
+    return st;
+}
+
+qd_status qd_orbit_solve(qd_ctx *ctx, const qd_orbit *o, size_t n, const qd_expr *const *syms,
+                         const double *vals, const double *energy, qd_orbit_result *r) {
+    qd__orb_env env = {0};
+    qd_status st = alloc_result(ctx, o->routh->nign, r);
+    if (st == QD_OK)
+        st = momenta(ctx, o, n, syms, vals, r->momenta);
+    if (st == QD_OK)
+        st = qd__orb_env_init(ctx, o, n, syms, vals, r->momenta, &env);
+    if (st != QD_OK) {
+        qd_orbit_result_free(r);
+        return st;
+    }
+    double x0 = value_of(o->x, n, syms, vals, NULL), xd0 = value_of(o->xd, n, syms, vals, NULL);
+    double c0 = value_of(o->routh->ign[0], n, syms, vals, NULL);
+    const double *out = qd__orb_at(&env, x0);
+    r->x0 = x0;
+    if (!isfinite(out[QD__ORB_V]) || !isfinite(out[QD__ORB_M])) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "V_eff is not defined at %s = %.12g: choose another state",
+                     qd_expr_name(o->x), x0);
+        st = QD_ERR_ARG;
+    } else {
+        env.E = r->energy = energy ? *energy : out[QD__ORB_V] + out[QD__ORB_M] * xd0 * xd0 / 2;
+        env.scale = x0 != 0 ? fabs(x0) : 1;
+        env.sing0 = singular_at_zero(&env);
+        st = analyse(ctx, &env, x0, xd0, c0, energy != NULL, r);
+    }
+    qd__orb_env_free(&env);
+    if (st != QD_OK)
+        qd_orbit_result_free(r);
+    return st;
+}
+
+qd_status qd_orbit_period(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
+                          double *period) {
+    const char *x = qd_expr_name(o->x);
+    if (r->kind == QD_ORBIT_UNBOUND) {
+        if (r->nturn == 1)
+            qd_ctx_error(ctx, QD_ERR_ARG,
+                         "the orbit is unbound: one turning point, %s = %.12g; no period", x,
+                         r->turn[0]);
+        else
+            qd_ctx_error(ctx, QD_ERR_ARG, "the orbit is unbound: no turning point; no period");
+        return QD_ERR_ARG;
+    }
+    if (r->kind == QD_ORBIT_CAPTURE || !isfinite(r->period)) {
+        qd_ctx_error(ctx, QD_ERR_ARG,
+                     "the orbit has no period: it %s", r->kind == QD_ORBIT_CAPTURE
+                         ? "falls into the singular point of V_eff" : "is an unstable circle");
+        return QD_ERR_ARG;
+    }
+    *period = r->period;
+    return QD_OK;
+}
