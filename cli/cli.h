@@ -72,6 +72,9 @@ int cli_cmd_equilibria(int argc, char **argv); /* cmd_equilibria.c */
 int cli_cmd_modes(int argc, char **argv);      /* cmd_modes.c */
 int cli_cmd_stability(int argc, char **argv);  /* cmd_stability.c */
 int cli_cmd_orbit(int argc, char **argv);      /* cmd_orbit.c */
+int cli_cmd_hj(int argc, char **argv);         /* cmd_hj.c */
+int cli_cmd_action(int argc, char **argv);     /* cmd_action.c */
+int cli_cmd_zvc(int argc, char **argv);        /* cmd_zvc.c */
 int cli_cmd_scatter(int argc, char **argv);    /* cmd_scatter.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the

@@ -26,7 +26,8 @@
 static const double PI = 3.14159265358979323846;
 
 typedef struct modes_args {
-    const char *file, *about, *initial;
+    const char *file, *about, *initial, *scan;
+    size_t steps;   /* --steps: 0 the library's default */
     long at_eq;   /* 1-based; 0: the first minimum, else the first */
     const char *sets[QD_LIN_MAX_SETS];
     size_t nsets;
@@ -50,7 +51,8 @@ typedef struct modes_run {
 
 static const char usage_text[] =
     "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
-    "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--set NAME=VALUE]... [--format text|json]";
+    "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--scan NAME=A:B [--steps N]] "
+    "[--set NAME=VALUE]... [--format text|json]";
 
 static const char *const formats[] = {"text", "json", NULL};
 
@@ -79,6 +81,18 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     }
     if ((v = cli_value(argc, argv, i, "--about")))
         return cli_once("--about", &a->about, v);
+    if ((v = cli_value(argc, argv, i, "--scan")))
+        return cli_once("--scan", &a->scan, v);
+    if ((v = cli_value(argc, argv, i, "--steps"))) {
+        char *end;
+        long k = strtol(v, &end, 10);
+        if (*end || k < 1 || k > 100000) {
+            cli_diag_error("--steps takes a number of steps from 1 to 100000, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+        a->steps = (size_t)k;
+        return QD_EXIT_OK;
+    }
     if ((v = cli_value(argc, argv, i, "--initial")))
         return cli_once("--initial", &a->initial, v);
     if ((v = cli_value(argc, argv, i, "--set")))
@@ -492,12 +506,25 @@ int cli_cmd_modes(int argc, char **argv) {
         cli_diag_error("give either --at-equilibrium or --about, not both\n%s", usage_text);
         return QD_EXIT_USAGE;
     }
+    if (a.scan && (a.at_eq || a.initial)) {
+        cli_diag_error("--scan follows the point given with --about (or the equilibrium chosen "
+                      "at the start of the range): give neither --at-equilibrium nor --initial");
+        return QD_EXIT_USAGE;
+    }
+    if (a.steps && !a.scan) {
+        cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
+        return QD_EXIT_USAGE;
+    }
     modes_run r = {.lr = {.ctx = qd_ctx_new()}};
     if (!r.lr.ctx) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     rc = cli_lin_load(&r.lr, a.file, a.sets, a.nsets);
+    if (rc == QD_EXIT_OK && a.scan) {
+        rc = cli_scan_modes(&r.lr, a.scan, a.about, a.steps, a.json);
+        goto done;
+    }
     if (rc == QD_EXIT_OK)
         rc = choose_point(&r, &a);
     if (rc == QD_EXIT_OK && r.why && !a.json)
@@ -511,7 +538,7 @@ int cli_cmd_modes(int argc, char **argv) {
         (a.json ? put_json : put_text)(&r, &b);
         rc = cli_emit(&b, "modes");
     }
-
+done:
     free(r.q0);
     free(r.Q);
     free(r.Qd);

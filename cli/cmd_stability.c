@@ -16,6 +16,9 @@
  * the two precessions of a top) and each is analysed; the first printed is
  * the one nearest the starting values.
  * Values are expressions in the parameters (--set applies first).
+ *   --scan NAME=A:B [--steps N] the steady motion followed as the parameter
+ *                               goes from A to B (qd_stability_scan), the
+ *                               given values held at their numbers
  */
 #include "cli.h"
 
@@ -24,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "json.h"
+#include "linear_cli.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "qdot/stability.h"
@@ -33,7 +37,8 @@
 #define MAX_LIST 16
 
 typedef struct stab_args {
-    const char *file, *ignore, *driven[MAX_LIST], *momentum, *omega, *at, *guess;
+    const char *file, *ignore, *driven[MAX_LIST], *momentum, *omega, *at, *guess, *scan;
+    size_t steps;
     const char *sets[MAX_SETS];
     size_t nsets, ndriven;
     bool json;
@@ -54,14 +59,30 @@ typedef struct stab_run {
     qd_steady_set set;               /* every steady motion found */
     qd_stability *an;                /* set.count analyses */
     size_t nsingular;                /* motions left out: singular coordinates there */
+    size_t nall;                     /* set.count as found: the left-out motions stay in
+                                        set (after the kept ones) for qd_steady_set_free */
+    const qd_expr *last;             /* the expression value_of read last */
+    const qd_expr **given;           /* nkeep + 2 ncyc: the held values as read (x, w, p),
+                                        for --scan to follow the parameter */
 } stab_run;
 
 static const char usage_text[] =
     "usage: qdot stability FILE (--ignore Q[,Q...] [--momentum \"p_Q=VALUE\"] [--omega \"Q'=VALUE\"]"
     " | --driven \"Q' = VALUE\"...) [--at \"q=VALUE, ...\"] [--guess \"q=VALUE, ...\"] "
-    "[--set NAME=VALUE]... [--format text|json]";
+    "[--scan NAME=A:B [--steps N]] [--set NAME=VALUE]... [--format text|json]";
 
 static const char *const formats[] = {"text", "json", NULL};
+
+static int steps_option(const char *v, size_t *steps) {
+    char *end;
+    long k = strtol(v, &end, 10);
+    if (*end || k < 1 || k > 100000) {
+        cli_diag_error("--steps takes a number of steps from 1 to 100000, not '%s'", v);
+        return QD_EXIT_USAGE;
+    }
+    *steps = (size_t)k;
+    return QD_EXIT_OK;
+}
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     stab_args *a = data;
@@ -86,6 +107,10 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return cli_once("--at", &a->at, v);
     if ((v = cli_value(argc, argv, i, "--guess")))
         return cli_once("--guess", &a->guess, v);
+    if ((v = cli_value(argc, argv, i, "--scan")))
+        return cli_once("--scan", &a->scan, v);
+    if ((v = cli_value(argc, argv, i, "--steps")))
+        return steps_option(v, &a->steps);
     return cli_bad_option(argv[*i], usage_text);
 }
 
@@ -102,6 +127,10 @@ static int parse_args(int argc, char **argv, stab_args *a) {
     if (a->ndriven && (a->momentum || a->omega)) {
         cli_diag_error("--momentum and --omega go with --ignore; a driven rate is given as "
                       "--driven \"q' = VALUE\"");
+        return QD_EXIT_USAGE;
+    }
+    if (a->steps && !a->scan) {
+        cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -133,7 +162,8 @@ static int value_of(stab_run *r, const char *what, const char *a, const char *b,
     if (!e) {
         cli_diag_read(what, text, &err);
         rc = QD_EXIT_USAGE;
-    } else if (qd_eval(r->ctx, e, r->st.n - skip, r->st.syms + skip, r->st.vals + skip, out) !=
+    } else if ((r->last = e),
+               qd_eval(r->ctx, e, r->st.n - skip, r->st.syms + skip, r->st.vals + skip, out) !=
                    QD_OK ||
                !isfinite(*out)) {
         qd_ctx_clear_error(r->ctx);
@@ -262,7 +292,10 @@ static int rate_item(stab_run *r, const char *what, const char *na, const char *
         return QD_EXIT_USAGE;
     }
     r->wfix[c] = true;
-    return value_of(r, what, va, vb, &r->pt.w[c]);
+    int rc = value_of(r, what, va, vb, &r->pt.w[c]);
+    if (rc == QD_EXIT_OK)
+        r->given[r->s->nkeep + c] = r->last;
+    return rc;
 }
 
 static int momentum_item(stab_run *r, const char *what, const char *na, const char *nb,
@@ -275,7 +308,10 @@ static int momentum_item(stab_run *r, const char *what, const char *na, const ch
                 return QD_EXIT_USAGE;
             }
             r->pfix[c] = true;
-            return value_of(r, what, va, vb, &r->pt.p[c]);
+            int rc = value_of(r, what, va, vb, &r->pt.p[c]);
+            if (rc == QD_EXIT_OK)
+                r->given[r->s->nkeep + r->ncyc + c] = r->last;
+            return rc;
         }
     }
     cli_diag_error("%s: '%.*s' is not the momentum of an ignored coordinate (they are p_<q>)",
@@ -312,6 +348,8 @@ static int at_item(stab_run *r, const char *what, const char *na, const char *nb
     }
     if (rc == QD_EXIT_OK)
         r->xfix[j] = !strcmp(what, "--at");
+    if (rc == QD_EXIT_OK && r->xfix[j])
+        r->given[j] = r->last;
     return rc;
 }
 
@@ -397,7 +435,8 @@ static int prepare(stab_run *r, const stab_args *a) {
     r->pt.x = calloc(nk + 1, sizeof *r->pt.x);
     r->pt.w = calloc(MAX_LIST, sizeof *r->pt.w);
     r->pt.p = calloc(MAX_LIST, sizeof *r->pt.p);
-    if (!r->xfix || !r->xseen || !r->pt.x || !r->pt.w || !r->pt.p)
+    r->given = calloc(nk + 2 * r->ncyc + 1, sizeof *r->given);
+    if (!r->xfix || !r->xseen || !r->pt.x || !r->pt.w || !r->pt.p || !r->given)
         return QD_EXIT_FAIL;
     rc = initial_guesses(r);
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->ndriven; i++)
@@ -449,13 +488,58 @@ static int solve(stab_run *r) {
     }
     if (kept == 0)   /* every one singular: the last error stands */
         return fail(r, qd_ctx_status(r->ctx) != QD_OK ? qd_ctx_status(r->ctx) : QD_ERR_SINGULAR);
-    for (size_t k = kept; k < r->set.count; k++) {
-        free(r->set.pts[k].x);
-        free(r->set.pts[k].w);
-        free(r->set.pts[k].p);
-    }
+    /* the library allocated them: they go back with the set (qd_steady_set_free) */
+    r->nall = r->set.count;
     r->set.count = kept;
     return QD_EXIT_OK;
+}
+
+/* ---- --scan ------------------------------------------------------------------ */
+
+/* Column names: the kept coordinates, Q' and p_Q (room: 64 bytes each). */
+static void scan_names(const qd_steady *s, char (*buf)[64], const char **names) {
+    size_t nk = s->nkeep, nc = s->ncyc;
+    for (size_t j = 0; j < nk; j++)
+        names[j] = qd_expr_name(s->keep[j]);
+    for (size_t c = 0; c < nc; c++) {
+        snprintf(buf[c], sizeof buf[c], "%s'", qd_expr_name(s->cyc[c]));
+        snprintf(buf[nc + c], sizeof buf[nc + c], "p_%s", qd_expr_name(s->cyc[c]));
+        names[nk + c] = buf[c];
+        names[nk + nc + c] = buf[nc + c];
+    }
+}
+
+/* The steady motion followed along a parameter: a table and the changes of
+ * its stability. */
+static int scan(stab_run *r, const stab_args *a) {
+    char name[128];
+    double lo, hi;
+    int rc = cli_scan_range(r->ctx, a->scan, name, sizeof name, &lo, &hi);
+    size_t nu = r->s->nkeep + 2 * r->ncyc;
+    const char **names = calloc(nu + 1, sizeof *names);
+    char (*buf)[64] = calloc(2 * r->ncyc + 1, sizeof *buf);
+    if (!names || !buf)
+        rc = QD_EXIT_FAIL;
+    qd_scan_opts o = {.steps = a->steps, .about = r->given};
+    qd_scan sc = {0};
+    if (rc == QD_EXIT_OK && qd_stability_scan(r->ctx, r->s, r->mf.model, name, lo, hi, r->xfix,
+                                              r->wfix, r->pfix, r->pguess, &r->pt, &o,
+                                              &sc) != QD_OK) {
+        rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
+    } else if (rc == QD_EXIT_OK) {
+        scan_names(r->s, buf, names);
+        const char *how = r->s->driven ? "rates maintained: V - T0" : "momenta free: Routhian";
+        char followed[160];
+        snprintf(followed, sizeof followed, "the steady motion (%s); %s stability", how,
+                 sc.damped ? "with the model's damping" : "ordinary");
+        cli_scan_view v = {name, names, followed, "steady_motion"};
+        rc = cli_scan_emit(&v, &sc, a->json);
+    }
+    qd_scan_free(&sc);
+    free(names);
+    free(buf);
+    return rc;
 }
 
 /* ---- output ------------------------------------------------------------------ */
@@ -736,19 +820,27 @@ int cli_cmd_stability(int argc, char **argv) {
         rc = cli_state_init(r.ctx, r.mf.model, &r.st);
     if (rc == QD_EXIT_OK)
         rc = prepare(&r, &a);
+    if (rc == QD_EXIT_OK && a.scan) {
+        rc = scan(&r, &a);
+        goto done;
+    }
     if (rc == QD_EXIT_OK)
         rc = solve(&r);
     if (rc == QD_EXIT_OK)
         rc = emit(&r, a.json);
+done:
     for (size_t k = 0; r.an && k < r.set.count; k++)
         qd_stability_free(&r.an[k]);
     free(r.an);
+    if (r.nall)
+        r.set.count = r.nall;
     qd_steady_set_free(&r.set);
     free(r.xfix);
     free(r.xseen);
     free(r.pt.x);
     free(r.pt.w);
     free(r.pt.p);
+    free(r.given);
     qd_steady_free(r.s);
     cli_state_free(&r.st);
     if (r.e)

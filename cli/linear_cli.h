@@ -43,4 +43,27 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
 /* One exact or numeric coordinate value, as text. */
 void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b);
 
+
+/* ---- --scan (scan_cli.c) --------------------------------------------------- */
+
+/* "NAME=A:B": the parameter's name (cap bytes) and the range's ends. */
+int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double *a,
+                   double *b);
+/* How to print a scan: the parameter, a name for each number of a point
+ * (sc->n), what was followed (a phrase), the JSON key of a point. */
+typedef struct cli_scan_view {
+    const char *param;
+    const char *const *names;
+    const char *followed;
+    const char *key;
+} cli_scan_view;
+/* A table of the samples and the transitions (text), or JSON: parameter,
+ * range, steps, samples, transitions. */
+int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json);
+/* "x = 1/2 - mu, ...": an expression in the parameters for each coordinate
+ * (e->n; unnamed ones 0). */
+int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about);
+/* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */
+int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json);
+
 #endif

@@ -35,6 +35,12 @@ static const cli_cmd commands[] = {
      cli_cmd_stability, true},
     {"orbit", "FILE --ignore Q[,Q...] [--at ...]", "turning points, periods, apsides, conics",
      cli_cmd_orbit, true},
+    {"hj", "FILE [--format F] [--solve]", "the Hamilton-Jacobi equation, its separation and W",
+     cli_cmd_hj, true},
+    {"action", "FILE [--at ...] [--format F]", "action-angle variables: J, frequencies",
+     cli_cmd_action, true},
+    {"zvc", "FILE --box ... --level H", "Jacobi's integral and the zero-velocity curves",
+     cli_cmd_zvc, true},
     {"scatter", "FILE --energy E --b B|--theta TH", "deflection and cross sections of a central potential",
      cli_cmd_scatter, true},
 };

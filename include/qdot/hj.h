@@ -35,6 +35,7 @@ extern "C" {
 /* One separated coordinate. */
 typedef struct qd_hj_sep {
     const qd_expr *q;          /* the coordinate q_k */
+    const qd_expr *p;          /* its momentum: p_<q>, or the model's name for it */
     const qd_expr *constant;   /* the separation constant this equation introduces
                                   (a plain symbol: alpha_<q>, or the energy E) */
     /* F_k = 0 in q_k, p_k (the symbol p_<q>, or the model's momentum name)
@@ -43,11 +44,19 @@ typedef struct qd_hj_sep {
     /* p_k^2 as a function of q_k and the constants: the motion in q_k is
      * where it is >= 0, its simple roots are the turning points */
     const qd_expr *p2;
-    bool cyclic;               /* p_k = constant */
+    bool cyclic;               /* q_k absent from what was left: p_k is a constant
+                                  (alpha_k; for the last coordinate, a function of
+                                  the constants) */
     /* the constant as a first integral: an expression in q and the model's
      * velocities (q') for a Lagrangian model, or q and p for a model given
      * by H; evaluating it at a state gives the constant's value there */
     const qd_expr *integral;
+    /* filled by qd_hj_solve where the quadrature closes: q_k = motion, a
+     * function of clock - beta_<q>, clock the time t or (an orbit) a cyclic
+     * coordinate; NULL otherwise */
+    const qd_expr *motion;
+    const qd_expr *clock;
+    const qd_expr *beta;       /* the phase constant beta_<q> in motion */
 } qd_hj_sep;
 
 typedef struct qd_hj {
@@ -57,11 +66,14 @@ typedef struct qd_hj {
     bool time_independent;     /* S = W - E t */
     bool separable;
     const char *form;          /* "cyclic", "additive", "Liouville", "Staeckel",
-                                  or a combination ("cyclic + Liouville") */
+                                  a combination ("cyclic + Liouville"), or "one
+                                  coordinate"; a static string; NULL when not
+                                  separable */
     char why[256];             /* why (not) separable, for the reader */
     qd_hj_sep *sep;            /* n, in coordinate order, when separable */
     size_t nconst;
-    const qd_expr **constants; /* the separation constants, energy last */
+    const qd_expr **constants; /* the separation constants in the order the
+                                  peeling found them, energy last */
     const qd_expr *energy;     /* the energy constant (E), or NULL */
     /* W = sum_k int p_k dq_k: closed forms where the kernel integrates,
      * integral(EXPR, VAR) otherwise; NULL when not separable */
@@ -74,9 +86,25 @@ typedef struct qd_hj_opts {
 
 /* Derive the HJ equation of m (given by L or by H) and separate it.  A
  * system that does not separate is not an error: separable = false with
- * the obstruction in why.  NULL on failure (reason in ctx). */
+ * the obstruction in why.  NULL on failure (reason in ctx): constraints
+ * (the equation needs independent coordinates), generalized forces or
+ * dissipation (QD_ERR_ARG), a singular Legendre transform, out of memory.
+ * The result is freed with qd_hj_free; its expressions belong to ctx. */
 QD_API qd_hj *qd_hj_derive(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts);
 QD_API void qd_hj_free(qd_hj *h);
+
+/* The motion from dW/dalpha = beta where the quadratures close (Desloge
+ * ch. 78): for each coordinate q_k, dq_k/dt = dH/dp_k with p = sqrt(p2)
+ * (cyclic momenta their constants); when that is a function of q_k alone,
+ * t - beta_k = int dq_k / (dH/dp_k), and when it is not, the orbit against a
+ * cyclic coordinate q_j, q_j - beta_k = int (dH/dp_j)/(dH/dp_k) dq_k.  The
+ * integrals closed and inverted: a constant velocity, kappa/sqrt(a + b q),
+ * kappa/sqrt(a + b q + c q^2) with c < 0 (the oscillators, the projectile),
+ * kappa/(q^2 sqrt(a + b/q + c/q^2)) (Kepler's conic, u = 1/q) and
+ * kappa/(sin(q)^2 sqrt(P(cot q))) (the plane of a central orbit).  Fills
+ * sep[k].motion, clock and beta; the other coordinates keep NULL.  h must be
+ * separable (QD_ERR_ARG otherwise). */
+QD_API qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h);
 
 #ifdef __cplusplus
 }

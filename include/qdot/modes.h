@@ -137,6 +137,67 @@ QD_API qd_status qd_modes_exact_omega2(qd_ctx *ctx, const qd_eom *e, const qd_mo
                                        const double *vals, const qd_expr *const *q0,
                                        const qd_expr **w2, bool *in_params);
 
+/* ---- scans along a parameter (src/linear/scan.c) ---------------------------
+ *
+ * Follow an equilibrium as one parameter P goes from a to b and report every
+ * value where its stability (qd_modes_result.stable) changes.  The parameter
+ * must be one the model reads as a number (not fixed by qd_model_opts, not
+ * defined from other parameters); the parameters defined from it follow
+ * their definitions at each value.  The equilibrium is found by damped
+ * Newton at each of steps + 1 evenly spaced values, continued from the
+ * previous one; when `about` is given (n expressions in the parameters, such
+ * as x = 1/2 - mu for L4 of the restricted three-body problem) the start is
+ * about(a) and each step is predicted by about(P) - about(P_prev).  A step
+ * whose Newton iteration fails is halved, down to 1e-6 of the interval,
+ * before the equilibrium counts as lost (QD_ERR_NUMERIC, with the last value
+ * reached and the one that failed).  Between two samples whose verdicts
+ * differ the change is located by bisection on the verdict itself (each
+ * midpoint's equilibrium by Newton, its eigenvalues by qd_modes_solve) to a
+ * bracket of width tol.  Two changes between the same two samples are not
+ * seen: more steps separate them. */
+typedef struct qd_scan_opts {
+    size_t steps;                 /* intervals between samples; 0 gives 200 */
+    double tol;                   /* bracket width of each transition; 0 gives
+                                     1e-13 max(1, |a|, |b|) */
+    const qd_expr *const *about;  /* n expressions in the parameters, or NULL */
+    const double *start;          /* n: the equilibrium's guess at a when about
+                                     is NULL; both NULL: qd_equilibria_choose at a */
+} qd_scan_opts;
+
+typedef struct qd_scan_transition {
+    double value;                 /* the middle of the final bracket */
+    double lo, hi;                /* the bracket: verdict `from` at lo, `to` at hi */
+    int from, to;                 /* 1 stable, 0 unstable, -1 borderline */
+} qd_scan_transition;
+
+typedef struct qd_scan {
+    size_t n;                     /* numbers per point: the coordinates (e->n), or
+                                     for a steady motion (qd_stability_scan) kept
+                                     coordinates, rates and momenta */
+    size_t count;                 /* samples */
+    double *value;                /* count: the parameter, a to b */
+    double *q;                    /* count * n: the point at each value */
+    int *stable;                  /* count: qd_modes_result.stable there */
+    double *margin;               /* count: the smallest w^2 (conservative) or the
+                                     largest Re s: its sign is the verdict's */
+    bool *conservative;           /* count */
+    bool damped;                  /* qd_stability_scan: the roots judged were the damped
+                                     ones (the model's dissipation acts) at some sample */
+    size_t ntrans;
+    qd_scan_transition *trans;    /* ntrans, in the order of P */
+} qd_scan;
+
+/* Scan e (derived from m, no multipliers) along the parameter named param
+ * from a to b (a < b).  QD_ERR_ARG (message naming it) for an unknown
+ * parameter, a fixed one, one defined from others, a >= b, a range that
+ * leaves a parameter assumed positive (its value positive when the model
+ * was read); QD_ERR_NUMERIC when no equilibrium is found at a or it is lost
+ * on the way.  Free with qd_scan_free (also after a failure). */
+QD_API qd_status qd_modes_scan(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                               const char *param, double a, double b,
+                               const qd_scan_opts *opts, qd_scan *out);
+QD_API void qd_scan_free(qd_scan *s);
+
 #ifdef __cplusplus
 }
 #endif

@@ -22,6 +22,7 @@
 #include "modes.h"
 #include "routh.h"
 #include "stability.h"
+#include "zvc.h"
 #include "scatter.h"
 
 #define QDOT_VERSION "0.1.0"

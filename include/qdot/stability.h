@@ -169,6 +169,28 @@ QD_API qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nv
                                const qd_steady_point *pt, qd_stability *out);
 QD_API void qd_stability_free(qd_stability *st);
 
+/* Follow a steady motion as the parameter named param goes from a to b and
+ * report where its stability changes: ordinary_stable, or damped_stable when
+ * the model has dissipation (the motion with its own damping: the rotating
+ * bowl with friction fails at omega = sqrt(g/a)).  The scan of
+ * qd_modes_scan (qdot/modes.h; opts->start is not used), with the point
+ * u = (x, w, p) of kept coordinates, rates and momenta (out->n =
+ * nkeep + 2 ncyc, in that order).  At a the motion is the first
+ * qd_steady_find_all lists from start (xfix, wfix, pfix, pguess and start as
+ * there); then each step holds the given values (xfix, wfix, pfix) and
+ * solves for the rest by qd_steady_find from the previous motion.  A held
+ * value follows its expression in opts->about (nkeep + 2 ncyc entries in
+ * the order of u, NULL entries allowed: a rate driven at a parameter,
+ * phi' = W, as W is scanned); without one it keeps its number in start.
+ * out->margin: the smallest w^2 (no gyroscopic or damping terms) or the
+ * largest Re s of the roots judged.  Errors as qd_modes_scan's;
+ * QD_ERR_NUMERIC when no steady motion is found at a, or it is lost. */
+QD_API qd_status qd_stability_scan(qd_ctx *ctx, const qd_steady *s, const qd_model *m,
+                                   const char *param, double a, double b, const bool *xfix,
+                                   const bool *wfix, const bool *pfix, const bool *pguess,
+                                   const qd_steady_point *start, const qd_scan_opts *opts,
+                                   qd_scan *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -88,7 +88,8 @@ static const qd_expr *split_root(qd_ctx *ctx, const qd_expr *prod, const qd_expr
         bool folded = false;
         if (f->kind == QD_RATIONAL) {
             const qd_expr *c = qd_number_sign(f) < 0 ? qd_neg(ctx, f) : f;
-            const qd_expr *cr = qd__num_pow(ctx, c, r, &folded);
+            /* c is NULL when qd_neg ran out of memory (recorded): f stays inside */
+            const qd_expr *cr = c ? qd__num_pow(ctx, c, r, &folded) : NULL;
             folded = folded && cr && !qd_is_one(c);
             if (folded) {
                 out[nout++] = cr;

@@ -80,6 +80,31 @@ def _(q, v, t, p):
     return solve(M, f)
 
 
+# The action-angle examples (qdot action; Desloge ch. 79, seed-desloge-D.md).
+@example('action_pendulum', ['theta'])
+def _(q, v, t, p):
+    # Goldstein ch. 1 Ex. 19 (seed 002): th'' = -(g/l) sin th
+    return [-p['g'] / p['l'] * sin(q['theta'])]
+
+
+@example('action_pendulum_rotation', ['theta'])
+def _(q, v, t, p):
+    return [-p['g'] / p['l'] * sin(q['theta'])]
+
+
+@example('action_anisotropic', ['x', 'y'])
+def _(q, v, t, p):
+    # Goldstein sec. 10.6: x'' = -kx x/m, y'' = -ky y/m
+    return [-p['kx'] * q['x'] / p['m'], -p['ky'] * q['y'] / p['m']]
+
+
+@example('action_pendulum_lengthening', ['theta'])
+def _(q, v, t, p):
+    # Goldstein sec. 10.7: d/dt(m l^2 th') = -m g l sin th, l = l0 (1 + eps t)
+    l, ld = p['l0'] * (1 + p['eps'] * t), p['l0'] * p['eps']
+    return [-2 * ld / l * v['theta'] - p['g'] / l * sin(q['theta'])]
+
+
 @example('free_particle_spherical', ['r', 'theta', 'phi'],
          ranges={'r': (0.5, 2.0), 'theta': (0.3, 2.8)})
 def _(q, v, t, p):
@@ -640,6 +665,14 @@ def _(q, v, t, p):
     r2 = ((x - 1 + mu)**2 + y**2)**1.5
     return [2 * v['y'] + x - (1 - mu) * (x + mu) / r1 - mu * (x - 1 + mu) / r2,
             -2 * v['x'] + y - (1 - mu) * y / r1 - mu * y / r2]
+
+
+@example('inverted_pendulum_spring', ['theta'])
+def _(q, v, t, p):
+    # derived from V = m g l cos th + k/2 (l sin th)^2 (examples/inverted_pendulum_spring.qd):
+    # m l^2 th'' = m g l sin th - k l^2 sin th cos th
+    th = q['theta']
+    return [p['g'] / p['l'] * sin(th) - p['k'] / p['m'] * sin(th) * cos(th)]
 
 
 @example('ring_three_masses', ['x1', 'y1', 'x2', 'y2', 'x3', 'y3'])

@@ -1,0 +1,347 @@
+/*
+ * cli/cmd_action.c - `qdot action FILE --at STATE`: the action-angle
+ * variables of a separable bounded motion (libqdot's qd_action_at): the
+ * actions J_k = oint p_k dq_k at the state, the frequencies
+ * omega_k = 2 pi dH/dJ_k, the angles, the commensurate frequencies, and H(J) where it is
+ * recognised.  The state starts from the model's `initial` values; a
+ * model given by H may take its momenta in --at.
+ */
+#include "cli.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "json.h"
+#include "model_cli.h"
+#include "qdot/action.h"
+#include "state.h"
+
+#define PI 3.14159265358979323846
+
+typedef struct act_args {
+    const char *file, *at;
+    const char *sets[QD_CLI_MAX_LIST];
+    size_t nsets;
+    bool json;
+} act_args;
+
+static const char usage_text[] =
+    "usage: qdot action FILE [--at \"q1=VALUE, q1'=VALUE (or p1=VALUE), ...\"] "
+    "[--set NAME=VALUE]... "
+    "[--format text|json]";
+
+static const char *const formats[] = {"text", "json", NULL};
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    act_args *a = data;
+    const char *v;
+    int f;
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
+        a->json = f == 1;
+        return rc;
+    }
+    if ((v = cli_value(argc, argv, i, "--at")))
+        return cli_once("--at", &a->at, v);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
+    return cli_bad_option(argv[*i], usage_text);
+}
+
+/* ---- the state ------------------------------------------------------------------ */
+
+enum { MAX_AT = 4096 };
+
+/* The state: the model's `initial` values, --at over them, and for a model
+ * given by H the momenta named in --at (syms/vals after the state's). */
+typedef struct act_state {
+    cli_state st;
+    size_t n;                 /* st.n + the momenta given */
+    const qd_expr **syms;
+    double *vals;
+} act_state;
+
+/* The index of the momentum NAME (len bytes) of an H model, or -1. */
+static long momentum_index(const qd_model *m, const char *name, size_t len) {
+    while (len && name[len - 1] == ' ')
+        len--;
+    for (size_t j = 0; qd_model_hamiltonian_given(m) && j < qd_model_ncoords(m); j++) {
+        const char *p = qd_expr_name(qd_model_momentum(m, j));
+        if (p && strlen(p) == len && !strncmp(p, name, len))
+            return (long)j;
+    }
+    return -1;
+}
+
+/* One "NAME=VALUE" of --at: a momentum is read here, the rest is appended
+ * to rest for cli_state_parse. */
+static int at_item(qd_ctx *ctx, const qd_model *m, const char *s, size_t len, char *rest,
+                   act_state *as) {
+    while (len && *s == ' ')
+        s++, len--;
+    const char *eq = memchr(s, '=', len);
+    long j = eq ? momentum_index(m, s, (size_t)(eq - s)) : -1;
+    if (j < 0) {
+        if (rest[0])
+            strcat(rest, ",");
+        strncat(rest, s, len);
+        return QD_EXIT_OK;
+    }
+    char value[MAX_AT];
+    size_t vl = len - (size_t)(eq + 1 - s);
+    memcpy(value, eq + 1, vl);
+    value[vl] = '\0';
+    const qd_expr *p = qd_model_momentum(m, (size_t)j), *exact;
+    as->syms[as->n] = p;
+    return cli_state_number(ctx, qd_expr_name(p), value, &exact, &as->vals[as->n++]);
+}
+
+static int split_at(qd_ctx *ctx, const qd_model *m, const char *at, char *rest, act_state *as) {
+    int depth = 0, rc = QD_EXIT_OK;
+    size_t start = 0, i = 0;
+    rest[0] = '\0';
+    for (; rc == QD_EXIT_OK && at[i]; i++) {
+        depth += (at[i] == '(') - (at[i] == ')');
+        if (at[i] == ',' && !depth) {
+            rc = at_item(ctx, m, at + start, i - start, rest, as);
+            start = i + 1;
+        }
+    }
+    return rc == QD_EXIT_OK ? at_item(ctx, m, at + start, i - start, rest, as) : rc;
+}
+
+static int initial_values(qd_ctx *ctx, const qd_model *m, cli_state *st) {
+    size_t nq = qd_model_ncoords(m);
+    for (size_t i = 0; i < nq; i++)
+        for (unsigned order = 0; order < 2; order++) {
+            const qd_expr *v = qd_model_initial(m, i, order);
+            if (v && qd_eval(ctx, v, st->n, st->syms, st->vals, &st->vals[order * nq + i]) != QD_OK)
+                return cli_diag_ctx(ctx);
+        }
+    return QD_EXIT_OK;
+}
+
+static int state_at(qd_ctx *ctx, const qd_model *m, const char *at, act_state *as) {
+    if (at && strlen(at) >= MAX_AT) {
+        cli_diag_error("--at is too long");
+        return QD_EXIT_USAGE;
+    }
+    int rc = cli_state_init(ctx, m, &as->st);
+    if (rc == QD_EXIT_OK)
+        rc = initial_values(ctx, m, &as->st);
+    size_t nq = qd_model_ncoords(m);
+    as->syms = calloc(as->st.n + nq, sizeof *as->syms);
+    as->vals = calloc(as->st.n + nq, sizeof *as->vals);
+    if (rc == QD_EXIT_OK && (!as->syms || !as->vals)) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    as->n = as->st.n;
+    char rest[MAX_AT] = "";
+    if (rc == QD_EXIT_OK && at)
+        rc = split_at(ctx, m, at, rest, as);
+    if (rc == QD_EXIT_OK && rest[0])
+        rc = cli_state_parse(ctx, m, rest, &as->st);
+    if (rc == QD_EXIT_OK) {
+        memcpy(as->syms, as->st.syms, as->st.n * sizeof *as->syms);
+        memcpy(as->vals, as->st.vals, as->st.n * sizeof *as->vals);
+    }
+    return rc;
+}
+
+static void state_free(act_state *as) {
+    cli_state_free(&as->st);
+    free(as->syms);
+    free(as->vals);
+}
+
+/* ---- text ------------------------------------------------------------------------ */
+
+static const char *kind_name(qd_act_kind k) {
+    return k == QD_ACT_ROTATION ? "rotation" : "libration";
+}
+
+static void put_num(qd_buf *b, double x) { cli_state_put_result(b, x); }
+
+static void put_coord_text(const qd_act_coord *c, qd_buf *b) {
+    const char *q = qd_expr_name(c->q);
+    qd_buf_printf(b, "%s: %s ", q, kind_name(c->kind));
+    qd_buf_puts(b, c->kind == QD_ACT_ROTATION ? "over [" : "between ");
+    put_num(b, c->lo);
+    qd_buf_puts(b, c->kind == QD_ACT_ROTATION ? ", " : " and ");
+    put_num(b, c->hi);
+    qd_buf_printf(b, "%s, %s = ", c->kind == QD_ACT_ROTATION ? "]" : "",
+                  qd_expr_name(c->constant));
+    put_num(b, c->value);
+    qd_buf_printf(b, "\n  J_%s = ", q);
+    put_num(b, c->J);
+    qd_buf_printf(b, "\n  omega_%s = ", q);
+    put_num(b, c->omega);
+    qd_buf_puts(b, " rad/s, period ");
+    put_num(b, 2 * PI / c->omega);
+    qd_buf_printf(b, "\n  angle_%s = ", q);
+    put_num(b, c->angle);
+    qd_buf_puts(b, "\n");
+}
+
+static void put_closed_text(const qd_action *a, qd_buf *b) {
+    if (a->closed == QD_ACT_H_LINEAR) {
+        qd_buf_puts(b, "H(J) = ");
+        for (size_t k = 0; k < a->n; k++) {
+            qd_buf_puts(b, k ? " + " : "");
+            put_num(b, a->c[k].omega);
+            qd_buf_printf(b, "*J_%s/(2*pi)", qd_expr_name(a->c[k].q));
+        }
+        qd_buf_puts(b, "  (oscillators: omega J / (2 pi) each)\n");
+    } else if (a->closed == QD_ACT_H_KEPLER) {
+        qd_buf_puts(b, "H(J) = -");
+        put_num(b, a->closed_c);
+        qd_buf_puts(b, "/(");
+        for (size_t k = 0; k < a->n; k++)
+            qd_buf_printf(b, "%sJ_%s", k ? " + " : "", qd_expr_name(a->c[k].q));
+        qd_buf_puts(b, ")^2  (Kepler: -2 pi^2 m k^2 / (sum J)^2)\n");
+    }
+}
+
+static void put_text(const qd_action *a, qd_buf *b) {
+    qd_buf_printf(b, "separation: %s\nenergy: ", a->form ? a->form : "");
+    put_num(b, a->energy);
+    qd_buf_puts(b, "\n");
+    for (size_t k = 0; k < a->n; k++)
+        put_coord_text(&a->c[k], b);
+    for (size_t r = 0; r < a->nratio; r++) {
+        const qd_act_ratio *x = &a->ratio[r];
+        qd_buf_printf(b, "degenerate: omega_%s : omega_%s = %ld : %ld (commensurate: the "
+                         "orbit closes)\n",
+                      qd_expr_name(a->c[x->i].q), qd_expr_name(a->c[x->j].q), x->num, x->den);
+    }
+    put_closed_text(a, b);
+}
+
+/* ---- JSON ------------------------------------------------------------------------ */
+
+static void put_coord_json(cli_json *j, const qd_act_coord *c) {
+    cli_json_begin_object(j);
+    cli_json_key(j, "coordinate");
+    cli_json_string(j, qd_expr_name(c->q));
+    cli_json_key(j, "constant");
+    cli_json_string(j, qd_expr_name(c->constant));
+    cli_json_key(j, "value");
+    cli_json_number(j, c->value);
+    cli_json_key(j, "kind");
+    cli_json_string(j, kind_name(c->kind));
+    cli_json_key(j, c->kind == QD_ACT_ROTATION ? "range" : "turning_points");
+    cli_json_begin_array(j);
+    cli_json_number(j, c->lo);
+    cli_json_number(j, c->hi);
+    cli_json_end_array(j);
+    cli_json_key(j, "J");
+    cli_json_number(j, c->J);
+    cli_json_key(j, "omega");
+    cli_json_number(j, c->omega);
+    cli_json_key(j, "angle");
+    cli_json_number(j, c->angle);
+    cli_json_end_object(j);
+}
+
+static void put_closed_json(cli_json *j, const qd_action *a) {
+    cli_json_key(j, "H_of_J");
+    if (a->closed == QD_ACT_H_NONE) {
+        cli_json_null(j);
+        return;
+    }
+    cli_json_begin_object(j);
+    cli_json_key(j, "form");
+    cli_json_string(j, a->closed == QD_ACT_H_LINEAR ? "sum omega_k J_k/(2 pi)" : "-c/(sum J_k)^2");
+    if (a->closed == QD_ACT_H_KEPLER) {
+        cli_json_key(j, "c");
+        cli_json_number(j, a->closed_c);
+    }
+    cli_json_end_object(j);
+}
+
+static void put_json(const qd_action *a, qd_buf *b) {
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "separation");
+    cli_json_string(&j, a->form ? a->form : "");
+    cli_json_key(&j, "energy");
+    cli_json_number(&j, a->energy);
+    cli_json_key(&j, "coordinates");
+    cli_json_begin_array(&j);
+    for (size_t k = 0; k < a->n; k++)
+        put_coord_json(&j, &a->c[k]);
+    cli_json_end_array(&j);
+    const char *keys[] = {"actions", "frequencies", "angles"};
+    for (int w = 0; w < 3; w++) {
+        cli_json_key(&j, keys[w]);
+        cli_json_begin_object(&j);
+        for (size_t k = 0; k < a->n; k++) {
+            const qd_act_coord *c = &a->c[k];
+            cli_json_key(&j, qd_expr_name(c->q));
+            cli_json_number(&j, w == 0 ? c->J : w == 1 ? c->omega : c->angle);
+        }
+        cli_json_end_object(&j);
+    }
+    cli_json_key(&j, "degeneracies");
+    cli_json_begin_array(&j);
+    for (size_t r = 0; r < a->nratio; r++) {
+        cli_json_begin_object(&j);
+        cli_json_key(&j, "coordinates");
+        cli_json_begin_array(&j);
+        cli_json_string(&j, qd_expr_name(a->c[a->ratio[r].i].q));
+        cli_json_string(&j, qd_expr_name(a->c[a->ratio[r].j].q));
+        cli_json_end_array(&j);
+        cli_json_key(&j, "ratio");
+        cli_json_begin_array(&j);
+        cli_json_number(&j, (double)a->ratio[r].num);
+        cli_json_number(&j, (double)a->ratio[r].den);
+        cli_json_end_array(&j);
+        cli_json_end_object(&j);
+    }
+    cli_json_end_array(&j);
+    put_closed_json(&j, a);
+    cli_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+    b->failed = b->failed || !cli_json_ok(&j);
+}
+
+/* ---- the command ------------------------------------------------------------------ */
+
+static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
+    int rc = cli_load(ctx, a->file, a->nsets, a->sets, false, mf);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    act_state st = {0};
+    rc = state_at(ctx, mf->model, a->at, &st);
+    qd_action act = {0};
+    if (rc == QD_EXIT_OK &&
+        qd_action_at(ctx, mf->model, st.n, st.syms, st.vals, NULL, &act) != QD_OK)
+        rc = cli_diag_model(ctx, mf->path, mf->text, mf->model);
+    if (rc == QD_EXIT_OK) {
+        qd_buf b = QD_BUF_INIT;
+        (a->json ? put_json : put_text)(&act, &b);
+        rc = cli_emit(&b, "actions");
+    }
+    qd_action_free(&act);
+    state_free(&st);
+    return rc;
+}
+
+int cli_cmd_action(int argc, char **argv) {
+    act_args a = {0};
+    int rc = cli_file_args(argc, argv, "action", usage_text, &a.file, parse_option, &a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_ctx *ctx = qd_ctx_new();
+    if (!ctx) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    cli_model_file mf = {0};
+    rc = run(ctx, &a, &mf);
+    cli_model_file_free(&mf);
+    qd_ctx_free(ctx);
+    return rc;
+}
