@@ -43,6 +43,8 @@ static const cli_cmd commands[] = {
      cli_cmd_zvc, true},
     {"impulse", "FILE [--at ...] [--prescribe ...]", "a blow, a sudden constraint, a collision",
      cli_cmd_impulse, true},
+    {"scatter", "FILE --energy E --b B|--theta TH", "deflection and cross sections of a central potential",
+     cli_cmd_scatter, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

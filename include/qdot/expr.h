@@ -92,6 +92,7 @@ typedef enum qd_kind {
 typedef enum qd_func {
     QD_SIN, QD_COS, QD_TAN, QD_ASIN, QD_ACOS, QD_ATAN, QD_ATAN2,
     QD_SINH, QD_COSH, QD_TANH, QD_EXP, QD_LOG, QD_ABS, QD_SIGN,
+    QD_STEP,     /* Heaviside's step: 0 for x < 0, 1/2 at 0 (as SymPy's Heaviside), 1 for x > 0 */
     QD_FUNC_COUNT
 } qd_func;
 

@@ -90,7 +90,8 @@ static const qd_expr *outer(qd_ctx *ctx, qd_func f, const qd_expr *a, const qd_e
     case QD_EXP: return fa;
     case QD_LOG: return qd_powi(ctx, a, -1);
     case QD_ABS: return qd_fn(ctx, QD_SIGN, a);
-    case QD_SIGN: return ctx->zero; /* almost everywhere */
+    case QD_SIGN:
+    case QD_STEP: return ctx->zero; /* almost everywhere: no delta function in the kernel */
     default: return NULL;
     }
 }

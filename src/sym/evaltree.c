@@ -24,11 +24,15 @@ double qd__func_value(qd_func f, double a, double b) {
     case QD_LOG: return log(a);
     case QD_ABS: return fabs(a);
     case QD_SIGN: return (a > 0) - (a < 0);
+    case QD_STEP: return qd__step_value(a);
     default: return NAN;
     }
 }
 
 /* Integer powers by multiplication: faster and exact where pow() may not be. */
+/* Heaviside's step with SymPy's value 1/2 at 0; NaN stays NaN. */
+double qd__step_value(double x) { return x > 0 ? 1.0 : x < 0 ? 0.0 : x == 0 ? 0.5 : x; }
+
 double qd__pow_value(double b, double e) {
     if (fabs(e) <= 64 && e == (double)(long)e) { /* the range first: (long)e is undefined beyond it */
         long n = (long)e;

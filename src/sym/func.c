@@ -6,7 +6,7 @@
  * multiples of pi/6 and pi/4 (sin(pi/6) = 1/2, tan(pi/3) = sqrt(3)); whole
  * quarter turns taken out of a sum's pi term (sin(pi/2 - x) = cos(x),
  * sin(x + 2 pi) = sin(x)), as SymPy does on construction; a float argument
- * is evaluated; odd functions take a leading minus sign out (sin(-x) =
+ * is evaluated; step of a number folds to 0, 1/2 or 1; odd functions take a leading minus sign out (sin(-x) =
  * -sin(x)) and even ones drop it (cos(b - a) = cos(a - b)), so that equal
  * values meet as one node; exp and log cancel; |x| = x for x known >= 0.
  */
@@ -18,7 +18,7 @@
 
 static const char *const names[QD_FUNC_COUNT] = {
     "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
-    "sinh", "cosh", "tanh", "exp", "log", "abs", "sign",
+    "sinh", "cosh", "tanh", "exp", "log", "abs", "sign", "step",
 };
 
 const char *qd_func_name(qd_func f) { return (unsigned)f < QD_FUNC_COUNT ? names[f] : "?"; }
@@ -54,6 +54,7 @@ static double eval1(qd_func f, double x) {
     case QD_LOG: return log(x);
     case QD_ABS: return fabs(x);
     case QD_SIGN: return (x > 0) - (x < 0);
+    case QD_STEP: return qd__step_value(x);
     default: return NAN;
     }
 }
@@ -167,6 +168,8 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool
             return ctx->zero;
         case QD_COS: case QD_COSH: case QD_EXP:
             return ctx->one;
+        case QD_STEP:
+            return ctx->half;
         case QD_ACOS:
             return qd_mul(ctx, ctx->half, qd_const(ctx, QD_PI));
         case QD_LOG:
@@ -182,6 +185,8 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool
             return qd_number_sign(a) < 0 ? qd_neg(ctx, a) : a;
         if (f == QD_SIGN)
             return qd_int(ctx, qd_number_sign(a));
+        if (f == QD_STEP)
+            return qd_rat(ctx, qd_number_sign(a) + 1, 2);
         if (qd_is_one(a) && (f == QD_LOG || f == QD_ACOS))
             return ctx->zero;
         return NULL;

@@ -136,6 +136,7 @@ bool qd__has_minus(const qd_expr *e);
 /* Rebuild e with new arguments through the constructor of its kind. */
 const qd_expr *qd__rebuild(qd_ctx *ctx, const qd_expr *e, const qd_expr *const *args);
 double qd__func_value(qd_func f, double a, double b);  /* b: atan2's x */
+double qd__step_value(double x);                       /* step(x), 1/2 at 0 */
 
 /* ---- map.c ---------------------------------------------------------------- */
 /* Rewrite e bottom-up (map.c has the contract); post may be NULL. */

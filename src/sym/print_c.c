@@ -10,7 +10,8 @@
  *     pow); x^(1/2) as sqrt(x); a negative numeric exponent under a '/':
  *     x^-2 is 1.0/(x*x); every other power pow(b, e);
  *   - abs(x) as fabs(x); sign(x) as ((x > 0) - (x < 0)), an int that C
- *     converts to the double -1.0, 0.0 or 1.0;
+ *     converts to the double -1.0, 0.0 or 1.0; step(x) as
+ *     (((x > 0) + (x >= 0))*0.5): 0, 1/2 at 0 (SymPy's Heaviside), 1;
  *   - symbols by qd_c_name: theta' is theta_d, theta'' theta_dd, the k-th
  *     derivative (k > 2) theta_d<k>; a name that is a C keyword gets a
  *     trailing underscore (double -> double_);
@@ -19,7 +20,7 @@
  *
  * qd_print_c_block hoists every non-leaf node used more than once over the
  * DAG of all outputs into `const double qd_tK = ...;`, children first.  The base
- * of a small integer power and the argument of sign() are printed twice, so
+ * of a small integer power and the arguments of sign() and step() are printed twice, so
  * they count as used twice: a compound base becomes a temporary, t1*t1.
  */
 #include "prec.h"
@@ -276,6 +277,14 @@ static void func(cp *p, const qd_expr *e) {
         qd_buf_puts(p->b, " < 0))");
         return;
     }
+    if (e->tag == QD_STEP) { /* 1, 1/2 at 0 (SymPy's Heaviside), 0 */
+        qd_buf_puts(p->b, "(((");
+        expr(p, e->args[0]);
+        qd_buf_puts(p->b, " > 0) + (");
+        expr(p, e->args[0]);
+        qd_buf_puts(p->b, " >= 0))*0.5)");
+        return;
+    }
     call(p, e->tag == QD_ABS ? "fabs" : qd_func_name((qd_func)e->tag), e);
 }
 
@@ -335,7 +344,7 @@ static void count(uses *u, const qd_expr *e) {
     for (size_t i = 0; i < e->nargs; i++)
         count(u, e->args[i]);
     /* printed twice: x*x, sign's (x > 0) - (x < 0) */
-    if (small_power(e) || (e->kind == QD_FUNC && e->tag == QD_SIGN))
+    if (small_power(e) || (e->kind == QD_FUNC && (e->tag == QD_SIGN || e->tag == QD_STEP)))
         count(u, e->args[0]);
     if (u->n == u->cap) {
         size_t cap = u->cap ? 2 * u->cap : 64;

@@ -213,7 +213,7 @@ static void func(lp *p, const qd_expr *e) {
     static const char *const fn[QD_FUNC_COUNT] = {
         "\\sin", "\\cos", "\\tan", "\\arcsin", "\\arccos", "\\arctan",
         "\\operatorname{atan_{2}}", "\\sinh", "\\cosh", "\\tanh", "\\exp", "\\log",
-        NULL, "\\operatorname{sign}"};
+        NULL, "\\operatorname{sign}", "\\theta"};
     if (e->tag == QD_ABS) {
         qd_buf_puts(p->b, "\\left|");
         expr(p, e->args[0]);

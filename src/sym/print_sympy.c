@@ -5,7 +5,7 @@
  * printed bare:
  *   t = Symbol('t'); each plain symbol and parameter x = Symbol('x');
  *   each coordinate q = Function('q'); each user function V = Function('V');
- *   and from sympy import * (sin ... tanh, exp, log, Abs, sign, atan2, sqrt,
+ *   and from sympy import * (sin ... tanh, exp, log, Abs, sign, Heaviside, atan2, sqrt,
  *   pi, E, Rational, Integer, Float, Symbol, Function, Derivative, Subs).
  * Coordinates print as q(t), their jet symbols as q(t).diff(t) and
  * q(t).diff(t, 2).  A derivative of a user function prints the way SymPy
@@ -37,7 +37,7 @@ static const char *const reserved[] = {
     "continue", "def", "del", "elif", "else", "except", "finally", "for", "from", "global",
     "if", "import", "in", "is", "lambda", "nonlocal", "not", "or", "pass", "raise", "return",
     "try", "while", "with", "yield", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
-    "sinh", "cosh", "tanh", "exp", "log", "Abs", "sign", "sqrt", "pi", "E", "Rational",
+    "sinh", "cosh", "tanh", "exp", "log", "Abs", "sign", "Heaviside", "sqrt", "pi", "E", "Rational",
     "Integer", "Float", "Symbol", "Function", "Derivative", "Subs", "t"};
 
 typedef struct sp {
@@ -224,7 +224,7 @@ static void power(sp *p, const qd_expr *e) {
 static void expr(sp *p, const qd_expr *e) {
     static const char *const fn[QD_FUNC_COUNT] = {
         "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
-        "sinh", "cosh", "tanh", "exp", "log", "Abs", "sign"};
+        "sinh", "cosh", "tanh", "exp", "log", "Abs", "sign", "Heaviside"};
     switch ((qd_kind)e->kind) {
     case QD_RATIONAL:
     case QD_FLOAT: number(p, e, false); break;

@@ -32,10 +32,10 @@ typedef enum op {
     OP_ADD, OP_SUB, OP_MUL, OP_DIV, OP_NEG, OP_RECIP, OP_SQRT, OP_POW,
     OP_ADD3, OP_MUL3, OP_SUMN, OP_PRODN,
     OP_SIN, OP_COS, OP_TAN, OP_ASIN, OP_ACOS, OP_ATAN, OP_ATAN2,
-    OP_SINH, OP_COSH, OP_TANH, OP_EXP, OP_LOG, OP_ABS, OP_SIGN
+    OP_SINH, OP_COSH, OP_TANH, OP_EXP, OP_LOG, OP_ABS, OP_SIGN, OP_STEP
 } op;
 
-_Static_assert(OP_SIGN - OP_SIN == QD_SIGN - QD_SIN && OP_ATAN2 - OP_SIN == QD_ATAN2,
+_Static_assert(OP_SIGN - OP_SIN == QD_SIGN - QD_SIN && OP_STEP - OP_SIN == QD_STEP - QD_SIN && OP_ATAN2 - OP_SIN == QD_ATAN2,
                "function opcodes follow qd_func");
 
 /* A unary instruction reads arg[0] twice, so every instruction but the
@@ -708,6 +708,7 @@ void qd_prog_eval(const qd_prog *p, double *work, const double *in, double *out)
         case OP_LOG: r[i->dst] = log(X); break;
         case OP_ABS: r[i->dst] = fabs(X); break;
         case OP_SIGN: r[i->dst] = (X > 0) - (X < 0); break;
+        case OP_STEP: r[i->dst] = qd__step_value(X); break;
         }
     }
 #undef X

@@ -332,6 +332,45 @@ def _(q, v, t, p):
     return [r * phd**2 - p['a'] / (p['m'] * r**5), -2 * rd * phd / r]
 
 
+def central(r, rd, phd, m, dV):
+    # Desloge ch. 58 eq. 1-3: m (r'' - r phi'^2) = -V'(r), d/dt(m r^2 phi') = 0
+    return [r * phd**2 - dV / m, -2 * rd * phd / r]
+
+
+@example('rutherford', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 60 ex. 2 (B C4, T15): V = k/r, a repulsive inverse square
+    return central(q['r'], v['r'], v['phi'], p['m'], -p['k'] / q['r']**2)
+
+
+@example('hard_sphere', ['r', 'phi'], ranges={'r': (1.6, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 60 ex. 1: free motion outside the sphere (the wall is scatter's --core)
+    return central(q['r'], v['r'], v['phi'], p['m'], 0.0)
+
+
+@example('refracting_sphere', ['r', 'phi'], ranges={'r': (0.3, 1.8)})
+def _(q, v, t, p):
+    # Desloge ch. 60 problems; Landau sec. 18 pb. 2: V = -V0 step(a - r) exerts no
+    # force away from r = a (the jump is an impulse, handled by qdot scatter)
+    return central(q['r'], v['r'], v['phi'], p['m'], 0.0)
+
+
+@example('gaussian_well', ['r', 'phi'], ranges={'r': (0.3, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 60 (B C4): V = -V0 exp(-r^2/s^2), V' = 2 V0 r/s^2 exp(-r^2/s^2)
+    r = q['r']
+    dV = 2 * p['V0'] * r / p['s']**2 * math.exp(-r**2 / p['s']**2)
+    return central(r, v['r'], v['phi'], p['m'], dV)
+
+
+@example('lennard_jones', ['r', 'phi'], ranges={'r': (0.8, 3.0)})
+def _(q, v, t, p):
+    # Desloge ch. 60 (B C4, pitfalls 5-6): V = 4 eps ((s/r)^12 - (s/r)^6)
+    r, s_ = q['r'], p['s']
+    dV = 4 * p['eps'] * (-12 * s_**12 / r**13 + 6 * s_**6 / r**7)
+    return central(r, v['r'], v['phi'], p['m'], dV)
+
 @example('table_hanging_mass', ['r', 'theta'], ranges={'r': (0.3, 1.8)})
 def _(q, v, t, p):
     # Goldstein ch. 1 Exercise 21 (G11): (m1 + m2) r'' - m1 r th'^2 + m2 g = 0;
