@@ -135,6 +135,35 @@ static void write_lines(const hj_run *r, qd_buf *b) {
         write_motion(r, b, cmt);
 }
 
+/* One separated coordinate: its equation, p^2, constant and integral. */
+static void json_sep(const hj_run *r, cli_json *j, const qd_hj_sep *s) {
+    cli_json_begin_object(j);
+    cli_json_key(j, "coordinate");
+    cli_json_string(j, qd_expr_name(s->q));
+    cli_json_key(j, "momentum");
+    cli_json_string(j, qd_expr_name(s->p));
+    cli_json_key(j, "constant");
+    cli_json_string(j, qd_expr_name(s->constant));
+    cli_json_key(j, "equation");
+    cli_json_expr(j, r->ctx, s->equation);
+    cli_json_key(j, "p2");
+    cli_json_expr(j, r->ctx, s->p2);
+    cli_json_key(j, "cyclic");
+    cli_json_bool(j, s->cyclic);
+    cli_json_key(j, "integral");
+    cli_json_expr(j, r->ctx, s->integral);
+    if (r->solve) {
+        cli_json_key(j, "motion");
+        cli_json_expr(j, r->ctx, s->motion);
+        cli_json_key(j, "clock");
+        if (s->clock)
+            cli_json_string(j, qd_expr_name(s->clock));
+        else
+            cli_json_null(j);
+    }
+    cli_json_end_object(j);
+}
+
 static void write_json(const hj_run *r, qd_buf *b) {
     const qd_hj *h = r->h;
     cli_json j;
@@ -159,34 +188,8 @@ static void write_json(const hj_run *r, qd_buf *b) {
     cli_json_string(&j, h->why);
     cli_json_key(&j, "separation");
     cli_json_begin_array(&j);
-    for (size_t k = 0; h->separable && k < h->n; k++) {
-        const qd_hj_sep *s = &h->sep[k];
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "coordinate");
-        cli_json_string(&j, qd_expr_name(s->q));
-        cli_json_key(&j, "momentum");
-        cli_json_string(&j, qd_expr_name(s->p));
-        cli_json_key(&j, "constant");
-        cli_json_string(&j, qd_expr_name(s->constant));
-        cli_json_key(&j, "equation");
-        cli_json_expr(&j, r->ctx, s->equation);
-        cli_json_key(&j, "p2");
-        cli_json_expr(&j, r->ctx, s->p2);
-        cli_json_key(&j, "cyclic");
-        cli_json_bool(&j, s->cyclic);
-        cli_json_key(&j, "integral");
-        cli_json_expr(&j, r->ctx, s->integral);
-        if (r->solve) {
-            cli_json_key(&j, "motion");
-            cli_json_expr(&j, r->ctx, s->motion);
-            cli_json_key(&j, "clock");
-            if (s->clock)
-                cli_json_string(&j, qd_expr_name(s->clock));
-            else
-                cli_json_null(&j);
-        }
-        cli_json_end_object(&j);
-    }
+    for (size_t k = 0; h->separable && k < h->n; k++)
+        json_sep(r, &j, &h->sep[k]);
     cli_json_end_array(&j);
     cli_json_key(&j, "W");
     cli_json_expr(&j, r->ctx, h->W);

@@ -90,7 +90,8 @@ static const qd_expr *closed_inverse(qd_ctx *ctx, const qd_hj_sep *s, const qd_e
 
 /* tau = int w dq through u = cot(q), sin(q)^2 = 1/(1 + u^2):
  * w = kappa/(sin(q)^2 sqrt(P(u))) (the plane of a central orbit in
- * spherical coordinates, Desloge ch. 78 eq. 59); q = atan2(1, u) in (0, pi). */
+ * spherical coordinates, Desloge ch. 78 eq. 59); q = acot(u) = pi/2 - atan(u),
+ * in (0, pi). */
 static const qd_expr *closed_cot(qd_ctx *ctx, const qd_hj_sep *s, const qd_expr *w,
                                  const qd_expr *tau) {
     const qd_expr *q = s->q, *sq = qd_fn(ctx, QD_SIN, q), *abc[3];
@@ -102,7 +103,8 @@ static const qd_expr *closed_cot(qd_ctx *ctx, const qd_hj_sep *s, const qd_expr 
     if (!kappa || qd_has(kappa, q) || !P || qd_has(P, q) || !quadratic(ctx, P, u, abc))
         return NULL;
     const qd_expr *uq = invert(ctx, abc, qd_neg(ctx, kappa), tau);
-    return uq ? qd_fn2(ctx, QD_ATAN2, qd_int(ctx, 1), uq) : NULL;
+    return uq ? qd_sub(ctx, qd_div(ctx, qd_const(ctx, QD_PI), qd_int(ctx, 2)), qd_fn(ctx, QD_ATAN, uq))
+              : NULL;
 }
 
 /* q_k from tau = int w dq_k in one of the closed forms, else NULL. */

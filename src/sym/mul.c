@@ -143,8 +143,10 @@ const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
             f = qd_pow(ctx, v[i].base, e);
             if (!f)
                 goto done;
-            /* x^a * x^b may fold to a number or a product: flatten again. */
-            if (qd__is_num(f) || f->kind == QD_MUL)
+            /* x^a * x^b may fold to a number or a product, or to a power of
+             * another base (abs(a)*abs(a) is a^2, which must meet a^-2):
+             * flatten again. */
+            if (qd__is_num(f) || f->kind == QD_MUL || as_factor(f).base != v[i].base)
                 reflatten = true;
         }
         out[m++] = f;

@@ -540,6 +540,22 @@ static void test_solve(void **state) {
     unload(&f);
 }
 
+/* The kernel's product of abs(a) abs(a) and a^-2 (what differentiating the
+ * orbits of --solve makes, |alpha|/alpha factors): abs(a)^2 folds to a^2,
+ * which must then meet a^-2 and give 1 (it was left as a^2/a^2, and a
+ * debug build's canonical-form assertion stopped). */
+static void test_abs_square(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *a = qd_symbol(ctx, "a"), *abs_a = qd_fn(ctx, QD_ABS, a);
+    const qd_expr *xs[3] = {abs_a, abs_a, qd_powi(ctx, a, -2)};
+    assert_ptr_equal(qd_mul_n(ctx, 3, xs), qd_int(ctx, 1));
+    const qd_expr *b = qd_symbol(ctx, "b");
+    const qd_expr *ys[4] = {abs_a, b, abs_a, qd_powi(ctx, a, -3)};
+    assert_ptr_equal(qd_mul_n(ctx, 4, ys), qd_div(ctx, b, a));
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_oscillator),   cmocka_unit_test(test_desloge78),
@@ -550,6 +566,7 @@ int main(void) {
         cmocka_unit_test(test_errors),       cmocka_unit_test(test_energy_name),
         cmocka_unit_test(test_solve),        cmocka_unit_test(test_staeckel),
         cmocka_unit_test(test_desloge78_p6), cmocka_unit_test(test_prolate),
+        cmocka_unit_test(test_abs_square),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
