@@ -134,19 +134,9 @@ bool qd__mdl_stmt_impulse(parser *p) {
 bool qd__mdl_stmt_qhat(parser *p) {
     qd_model *m = p->m;
     size_t start = p->lx.tok.off;
-    qd__lex_next(&p->lx); /* Qhat */
-    qd__lex_next(&p->lx); /* [ */
-    int j = qd__mdl_coord_named(p);
-    if (p->lx.tok.kind != TK_IDENT || j < 0)
-        return p->lx.tok.kind == TK_IDENT ? qd__mdl_no_such_coordinate(p)
-                                          : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
-    qd__lex_next(&p->lx);
-    if (p->lx.tok.kind != TK_RBRACK)
-        return qd__mdl_perr_tok(p, "write Qhat[coordinate] = expression", "expected ']'");
-    qd__lex_next(&p->lx);
-    if (p->lx.tok.kind != TK_EQ)
-        return qd__mdl_perr_tok(p, "write Qhat[coordinate] = expression", "expected '='");
-    qd__lex_next(&p->lx);
+    int j = qd__mdl_coord_subscript(p, "write Qhat[coordinate] = expression");
+    if (j < 0)
+        return false;
     value x;
     if (!qd__mdl_parse_expr(p, &x) || !qd__mdl_need_kind(p, &x, VK_SCALAR, "in Qhat[...]") ||
         !velocity_free(p, &x, "a generalized impulse"))

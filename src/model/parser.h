@@ -233,9 +233,10 @@ const body *qd__mdl_expect_body(parser *p, const char *what);
 
 /* stmt.c: shared by the statements in body.c and impulse.c */
 bool qd__mdl_expect_at(parser *p, const char *stmt);  /* stmt: the usage, for the hint */
-int qd__mdl_coord_named(parser *p);                   /* the current token's coordinate, or -1 */
-bool qd__mdl_no_such_coordinate(parser *p);           /* the error, with the nearest name */
 bool qd__mdl_constraint_named(const qd_model *m, const char *name);
+/* NAME '[' COORD ']' '=' from NAME: the coordinate's index, with the '='
+ * consumed; -1 after an error (usage is the hint). */
+int qd__mdl_coord_subscript(parser *p, const char *usage);
 bool qd__mdl_end_of_statement(parser *p);
 bool qd__mdl_fresh_name(parser *p, const char *what);
 

@@ -321,14 +321,14 @@ static bool stmt_force(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
-int qd__mdl_coord_named(parser *p) {
+static int coord_named(parser *p) {
     for (size_t i = 0; i < p->m->ncoords; i++)
         if (qd__mdl_name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, qd_expr_name(p->m->coords[i])))
             return (int)i;
     return -1;
 }
 
-bool qd__mdl_no_such_coordinate(parser *p) {
+static bool no_such_coordinate(parser *p) {
     char name[128], hint[192] = "";
     tok_text(p, name, sizeof name);
     const char **names = qd__malloc(p->ctx, (p->m->ncoords + 1) * sizeof *names);
@@ -341,21 +341,32 @@ bool qd__mdl_no_such_coordinate(parser *p) {
     return qd__mdl_perr_tok(p, hint, "'%s' is not a coordinate", name);
 }
 
-/* Q '[' COORD ']' '=' EXPR */
-static bool stmt_genforce(parser *p) {
-    qd__lex_next(&p->lx); /* Q */
+int qd__mdl_coord_subscript(parser *p, const char *usage) {
+    qd__lex_next(&p->lx); /* the name */
     qd__lex_next(&p->lx); /* [ */
-    int j = qd__mdl_coord_named(p);
-    if (p->lx.tok.kind != TK_IDENT || j < 0)
-        return p->lx.tok.kind == TK_IDENT ? qd__mdl_no_such_coordinate(p)
-                                          : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
+    int j = coord_named(p);
+    if (p->lx.tok.kind != TK_IDENT || j < 0) {
+        if (p->lx.tok.kind == TK_IDENT)
+            no_such_coordinate(p);
+        else
+            qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
+        return -1;
+    }
     qd__lex_next(&p->lx);
     if (p->lx.tok.kind != TK_RBRACK)
-        return qd__mdl_perr_tok(p, "write Q[coordinate] = expression", "expected ']'");
+        return qd__mdl_perr_tok(p, usage, "expected ']'"), -1;
     qd__lex_next(&p->lx);
     if (p->lx.tok.kind != TK_EQ)
-        return qd__mdl_perr_tok(p, "write Q[coordinate] = expression", "expected '='");
+        return qd__mdl_perr_tok(p, usage, "expected '='"), -1;
     qd__lex_next(&p->lx);
+    return j;
+}
+
+/* Q '[' COORD ']' '=' EXPR */
+static bool stmt_genforce(parser *p) {
+    int j = qd__mdl_coord_subscript(p, "write Q[coordinate] = expression");
+    if (j < 0)
+        return false;
     const qd_expr *q;
     if (!qd__mdl_parse_scalar(p, &q, "a generalized force"))
         return false;
@@ -367,9 +378,9 @@ static bool stmt_genforce(parser *p) {
 static bool stmt_initial(parser *p) {
     do {
         qd__lex_next(&p->lx);
-        int j = qd__mdl_coord_named(p);
+        int j = coord_named(p);
         if (p->lx.tok.kind != TK_IDENT || j < 0)
-            return p->lx.tok.kind == TK_IDENT ? qd__mdl_no_such_coordinate(p)
+            return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
                                               : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
         qd__lex_next(&p->lx);
         unsigned order = 0;
