@@ -309,6 +309,41 @@ def test_rod_end_fixed(qdot):
               and b['energy_with'] <= b['energy_without'], str(b))
 
 
+def test_square(qdot):
+    # Byerly ch. III art. 28 (d), pp. 66-67: x' = P/(4m), th' = 0,
+    # ph' = a P/(2m(a^2 + k^2)) = 3P/(8 m a); the middle points of the rods
+    # start along the blow at (5, 2, -1, 2) P/(8m)
+    for m, a, P in [(1, 1, 1), (2.5, 0.7, -1.3)]:
+        d = impulse(qdot, 'square_struck.qd', *sets(m=m, a=a, P=P))
+        w = d['velocities_after']
+        check_close("square x'", w["x'"], P / (4 * m))
+        check_close("square y'", w["y'"], 0)
+        check_close("square th'", w["th'"], 0)
+        check_close("square ph'", w["ph'"], 3 * P / (8 * m * a))
+        # the middle points at th = 0, ph = pi/2: x' + a ph', x', x' - a ph', x'
+        mids = [w["x'"] + a * w["ph'"], w["x'"], w["x'"] - a * w["ph'"], w["x'"]]
+        want = [5 * P / (8 * m), P / (4 * m), -P / (8 * m), P / (4 * m)]
+        check('square middle points 5 : 2 : -1 : 2',
+              all(close(g, h) for g, h in zip(mids, want)), '%r vs %r' % (mids, want))
+        # energy from rest = half the blow times the struck point's velocity
+        # (Byerly art. 29): the corner moves at x' + a ph'
+        check_close('square energy', d['kinetic_energy_after'],
+                    P * (w["x'"] + a * w["ph'"]) / 2)
+
+
+def test_dumbbell(qdot):
+    # Desloge ch. 57 Problem 1, p. 592: the centre of mass starts at f/(m + M)
+    # along the blow, the rod turns at f (b - m a/(m + M)) / (m M a^2/(m + M))
+    for m, M, a, b, f in [(1, 3, 2, 1.5, 1), (2, 0.5, 1, 0.2, -2)]:
+        d = impulse(qdot, 'dumbbell_struck.qd', *sets(m=m, M=M, a=a, b=b, f=f))
+        w = d['velocities_after']
+        ycm = (M * w["y'"] + m * (w["y'"] + a * w["th'"])) / (m + M)
+        check_close('dumbbell centre of mass', ycm, f / (m + M))
+        check_close("dumbbell x'", w["x'"], 0)
+        check_close("dumbbell th'", w["th'"],
+                    f * (b - m * a / (m + M)) / (m * M * a * a / (m + M)))
+
+
 def test_string_taut(qdot):
     for _ in range(3):
         m, u, l, c = rng.uniform(.5, 3), rng.uniform(.5, 3), rng.uniform(.5, 2), rng.uniform(.05, .95)
@@ -554,7 +589,7 @@ def main():
     qdot = os.path.join(args.build, 'qdot')
     with tempfile.TemporaryDirectory() as tmp:
         for test in (test_rhombus, test_pulley, test_lamina, test_chain, test_rod_end_fixed,
-                     test_string_taut, test_head_on, test_oblique, test_hoop, test_text_latex):
+                     test_square, test_dumbbell, test_string_taut, test_head_on, test_oblique, test_hoop, test_text_latex):
             try:
                 test(qdot)
             except Exception as exc:  # a crash, bad JSON, a timeout
