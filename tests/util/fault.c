@@ -86,10 +86,12 @@ static void check_run(const char *what, long n, const qt_faulty *f, const run_en
         fail_msg("%s, allocation %ld failed: success, but out of memory recorded", what, n);
     if (r->st == QD_OK)
         return;
-    /* out of memory must come from the refusal, not from somewhere else */
-    if (r->st != QD_ERR_NOMEM || !f->failed)
+    if (r->st != QD_ERR_NOMEM)
         fail_msg("%s, allocation %ld failed: status %s instead of out of memory (%s)", what, n,
                  qd_status_str(r->st), r->why);
+    if (!f->failed) /* out of memory from somewhere else than the refusal */
+        fail_msg("%s, allocation %ld failed: out of memory, but it was never refused (%s)", what,
+                 n, r->why);
     if (r->recorded != QD_ERR_NOMEM) /* the context must say why, too */
         fail_msg("%s, allocation %ld failed: out of memory, but the context says %s", what, n,
                  qd_status_str(r->recorded));
