@@ -91,7 +91,8 @@ static void test_pendulum_fault(void **state) {
     body b = {"coordinates th\nparameters m = 1, l = 2, g = 9.81\n"
               "particle m at (l*sin(th), -l*cos(th))\nV = -m*g*l*cos(th)\n",
               2, {"th", "th'"}, {1, 0}, pendulum_answer};
-    qt_fault_loop("pendulum action", run_body, &b, 1);
+    /* beyond the context's own few allocations: qd_action_at was failed */
+    assert_true(qt_fault_loop("pendulum action", run_body, &b, 1).runs > 20);
 }
 
 static void test_kepler_fault(void **state) {
@@ -99,7 +100,8 @@ static void test_kepler_fault(void **state) {
     body b = {"coordinates r, theta\nparameters m = 1.3, k = 4\n"
               "particle m at r*(cos(theta), sin(theta))\nV = -k/r\n",
               4, {"r", "theta", "r'", "theta'"}, {1, 0.3, 0.4, 1.5}, kepler_answer};
-    qt_fault_loop("Kepler action", run_body, &b, 7);
+    /* beyond the context's own few allocations: qd_action_at was failed */
+    assert_true(qt_fault_loop("Kepler action", run_body, &b, 7).runs > 20);
 }
 
 int main(void) {
