@@ -23,7 +23,8 @@ typedef struct qt_faulty {
 } qt_faulty;
 
 /* The allocator whose user is f: malloc, realloc and free of the C library,
- * counted, with request f->fail_at refused. */
+ * counted, with request f->fail_at refused.  A context keeps a pointer to it,
+ * so it must outlive the context. */
 qd_allocator qt_faulty_allocator(qt_faulty *f);
 
 /* Set-up a loop is not about (a parse, a derivation with a loop of its own):
