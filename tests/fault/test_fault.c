@@ -2,7 +2,7 @@
  * tests/fault/test_fault.c - every allocation made to fail, one at a time
  * (SQLite's test/exprfault.test, Lua's testes/memerr.lua).
  *
- * A context gets an allocator (qd_ctx_new_with) that fails its Nth request;
+ * A context gets an allocator (qd_ctx_new_with; tests/util/fault.h) that fails its Nth request;
  * the body runs for N = 1, 2, 3, ... until it gets through without the
  * failure being reached.  Each run must end with the right answer or a clean
  * QD_ERR_NOMEM, and with every block given back (the allocator counts the
@@ -44,97 +44,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 
 #include "qdot/qdot.h"
-
-/* ---- the failing allocator ---------------------------------------------- */
-
-typedef struct faulty {
-    long count;    /* requests so far (malloc and realloc) */
-    long fail_at;  /* the request to refuse, 0: none */
-    long live;     /* blocks outstanding */
-    bool failed;   /* fail_at was reached */
-} faulty;
-
-static bool refuse(faulty *f) {
-    if (++f->count != f->fail_at)
-        return false;
-    f->failed = true;
-    return true;
-}
-
-static void *f_malloc(void *user, size_t size) {
-    faulty *f = user;
-    if (refuse(f))
-        return NULL;
-    void *p = malloc(size);
-    if (p)
-        f->live++;
-    return p;
-}
-
-static void *f_realloc(void *user, void *p, size_t size) {
-    return refuse(user) ? NULL : realloc(p, size);
-}
-
-static void f_free(void *user, void *p) {
-    faulty *f = user;
-    f->live--;
-    free(p);
-}
-
-/* ---- the loop ------------------------------------------------------------ */
-
-/* One run: QD_OK with the answer checked, or the status it failed with. */
-typedef qd_status (*body_fn)(qd_ctx *ctx, faulty *f);
-
-typedef struct loop_stats {
-    long runs, nomem, allocs; /* allocs: requests of the run that succeeded */
-} loop_stats;
-
-/* A run that succeeds must not leave QD_ERR_NOMEM recorded: the failure was cleared or
- * ignored on the way to a fallback (whose answer may pass the check by luck).  stride:
- * fail every stride-th allocation only, for the bodies whose every run re-derives a large
- * model (kept within ~15 s under ASan). */
-static loop_stats fault_loop(const char *what, body_fn body, long stride) {
-    loop_stats ls = {0, 0, 0};
-    clock_t t0 = clock();
-    for (long n = 1;; n += stride) {
-        faulty f = {0, n, 0, false};
-        qd_allocator a = {f_malloc, f_realloc, f_free, &f};
-        qd_ctx *ctx = qd_ctx_new_with(&a);
-        qd_status st = ctx ? body(ctx, &f) : QD_ERR_NOMEM;
-        char why[256];
-        snprintf(why, sizeof why, "%s", ctx ? qd_ctx_message(ctx) : "");
-        qd_status recorded = ctx ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-        qd_ctx_free(ctx);
-        ls.runs++;
-        if (f.live != 0)
-            fail_msg("%s, allocation %ld failed: %ld blocks leaked", what, n, f.live);
-        /* a fallback taken for want of memory: the answer happened to pass, but an
-         * error was cleared on the way (or left behind a success) */
-        if (st == QD_OK && recorded == QD_ERR_NOMEM)
-            fail_msg("%s, allocation %ld failed: success, but out of memory recorded", what, n);
-        if (st != QD_OK) {
-            if (st != QD_ERR_NOMEM || !f.failed)
-                fail_msg("%s, allocation %ld failed: status %s instead of out of memory (%s)",
-                         what, n, qd_status_str(st), why);
-            if (recorded != QD_ERR_NOMEM) /* the context must say why, too */
-                fail_msg("%s, allocation %ld failed: out of memory, but the context says %s",
-                         what, n, qd_status_str(recorded));
-            ls.nomem++;
-        }
-        if (!f.failed) {
-            assert_int_equal(st, QD_OK);
-            ls.allocs = f.count;
-            break;
-        }
-    }
-    printf("%s: %ld allocations, %ld runs (%ld out of memory), %.2f s\n", what, ls.allocs,
-           ls.runs, ls.nomem, (double)(clock() - t0) / CLOCKS_PER_SEC);
-    return ls;
-}
+#include "util/fault.h"
 
 /* ---- shared set-up -------------------------------------------------------- */
 
@@ -229,8 +141,8 @@ static qd_status check_acc(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     return QD_OK;
 }
 
-static qd_status derivation_body(qd_ctx *ctx, faulty *f) {
-    (void)f;
+static qd_status derivation_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)f, (void)data;
     qd_model *m;
     qd_eom *e;
     qd_status st = derive(ctx, DOUBLE_PENDULUM, &m, &e);
@@ -243,7 +155,7 @@ static qd_status derivation_body(qd_ctx *ctx, faulty *f) {
 
 static void test_derivation(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("derivation", derivation_body, 1);
+    qt_fault_stats ls = qt_fault_loop("derivation", derivation_body, NULL, 1);
     assert_true(ls.allocs > 10);
 }
 
@@ -276,8 +188,8 @@ static qd_status check_cartesian(qd_ctx *ctx, const qd_model *m, const qd_eom *e
     return QD_OK;
 }
 
-static qd_status constrained_body(qd_ctx *ctx, faulty *f) {
-    (void)f;
+static qd_status constrained_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)f, (void)data;
     qd_model *m;
     qd_eom *e;
     qd_status st = derive(ctx, CARTESIAN_PENDULUM, &m, &e);
@@ -294,7 +206,7 @@ static qd_status constrained_body(qd_ctx *ctx, faulty *f) {
 
 static void test_constrained(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("constrained derivation", constrained_body, 1);
+    qt_fault_stats ls = qt_fault_loop("constrained derivation", constrained_body, NULL, 1);
     assert_true(ls.allocs > 10);
 }
 
@@ -319,7 +231,7 @@ static int sink_none(void *data, int event, const double *row) {
     return 0;
 }
 
-static qd_status sim_run(qd_ctx *ctx, faulty *f, double *final) {
+static qd_status sim_run(qd_ctx *ctx, qt_faulty *f, double *final) {
     qd_model *m;
     qd_eom *e;
     long armed = f->fail_at;
@@ -345,7 +257,8 @@ static qd_status sim_run(qd_ctx *ctx, faulty *f, double *final) {
     return st;
 }
 
-static qd_status sim_body(qd_ctx *ctx, faulty *f) {
+static qd_status sim_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     double final[8];
     qd_status st = sim_run(ctx, f, final);
     if (st == QD_OK) {
@@ -360,13 +273,14 @@ static qd_status sim_body(qd_ctx *ctx, faulty *f) {
 
 static void test_simulation(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("simulation", sim_body, 1);
+    qt_fault_stats ls = qt_fault_loop("simulation", sim_body, NULL, 1);
     assert_true(ls.allocs > 10);
 }
 
 /* ---- modes ----------------------------------------------------------------------- */
 
-static qd_status modes_body(qd_ctx *ctx, faulty *f) {
+static qd_status modes_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     qd_model *m;
     qd_eom *e;
     long armed = f->fail_at;
@@ -407,7 +321,7 @@ static qd_status modes_body(qd_ctx *ctx, faulty *f) {
 
 static void test_modes(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("modes", modes_body, 1);
+    qt_fault_stats ls = qt_fault_loop("modes", modes_body, NULL, 1);
     assert_true(ls.allocs > 5);
 }
 
@@ -422,7 +336,8 @@ static void test_modes(void **state) {
 
 /* No constraint is integrable alone, roll1 - roll2 is: 5 - 1 = 4 configurational, 5 - 3 = 2
  * motional degrees of freedom (Desloge ch. 52 P5). */
-static qd_status dof_body(qd_ctx *ctx, faulty *f) {
+static qd_status dof_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     qd_model *m;
     qd_eom *e;
     long armed = f->fail_at;
@@ -446,7 +361,7 @@ static qd_status dof_body(qd_ctx *ctx, faulty *f) {
 
 static void test_dof(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("degrees of freedom", dof_body, 7);
+    qt_fault_stats ls = qt_fault_loop("degrees of freedom", dof_body, NULL, 7);
     assert_true(ls.allocs > 5);
 }
 
@@ -462,8 +377,8 @@ static void test_dof(void **state) {
  * T = A/2 (th'^2 + phi'^2 sin^2 th) + C/2 (psi' + phi' cos th)^2 (Goldstein sec. 5.7), so
  * M = [A s^2 + C c^2, 0, C c; 0, A, 0; C c, 0, C].  The parse checks that the orientation
  * is a rotation (model/body.c), the derivation that M is symmetric (Debug). */
-static qd_status heavy_top_body(qd_ctx *ctx, faulty *f) {
-    (void)f;
+static qd_status heavy_top_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)f, (void)data;
     qd_model *m;
     qd_eom *e;
     qd_status st = derive(ctx, HEAVY_TOP, &m, &e);
@@ -487,7 +402,7 @@ static qd_status heavy_top_body(qd_ctx *ctx, faulty *f) {
 
 static void test_heavy_top(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("heavy top derivation", heavy_top_body, 4);
+    qt_fault_stats ls = qt_fault_loop("heavy top derivation", heavy_top_body, NULL, 4);
     assert_true(ls.allocs > 10);
 }
 
@@ -507,7 +422,8 @@ static void check_precessions(const qd_steady_set *set) {
     }
 }
 
-static qd_status steady_body(qd_ctx *ctx, faulty *f) {
+static qd_status steady_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     qd_model *m;
     qd_eom *e;
     long armed = f->fail_at;
@@ -536,7 +452,7 @@ static qd_status steady_body(qd_ctx *ctx, faulty *f) {
 
 static void test_steady(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("steady motions", steady_body, 2);
+    qt_fault_stats ls = qt_fault_loop("steady motions", steady_body, NULL, 2);
     assert_true(ls.allocs > 5);
 }
 
@@ -552,7 +468,8 @@ static void test_steady(void **state) {
     "impact constraint wall: C.x = 0\nreaction wall on C\n"                                   \
     "initial x = 2*a*cos(al), th = al, x' = -v, th' = 0\n"
 
-static qd_status impulse_body(qd_ctx *ctx, faulty *f) {
+static qd_status impulse_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     long armed = f->fail_at;
     f->fail_at = 0;
     qd_diag d;
@@ -586,7 +503,7 @@ static qd_status impulse_body(qd_ctx *ctx, faulty *f) {
 
 static void test_impulse(void **state) {
     (void)state;
-    loop_stats ls = fault_loop("impulse", impulse_body, 2); /* ~25 s under ASan at 1 */
+    qt_fault_stats ls = qt_fault_loop("impulse", impulse_body, NULL, 2); /* ~25 s under ASan at 1 */
     assert_true(ls.allocs > 10);
 }
 

@@ -1,6 +1,6 @@
 /*
  * tests/fault/test_fault_scan.c - every allocation of a scan and of a
- * contour made to fail, one at a time (the loop of test_fault.c: each run
+ * contour made to fail, one at a time (the loop of tests/util/fault.h: each run
  * ends with the right answer or a clean QD_ERR_NOMEM, every block given
  * back, and a success never leaves out-of-memory recorded).
  *
@@ -28,73 +28,10 @@
 #include <stdlib.h>
 
 #include "qdot/qdot.h"
-
-typedef struct faulty {
-    long count;    /* requests so far (malloc and realloc) */
-    long fail_at;  /* the request to refuse, 0: none */
-    long live;     /* blocks outstanding */
-    bool failed;   /* fail_at was reached */
-} faulty;
-
-static bool refuse(faulty *f) {
-    if (++f->count != f->fail_at)
-        return false;
-    f->failed = true;
-    return true;
-}
-
-static void *f_malloc(void *user, size_t size) {
-    faulty *f = user;
-    if (refuse(f))
-        return NULL;
-    void *p = malloc(size);
-    if (p)
-        f->live++;
-    return p;
-}
-
-static void *f_realloc(void *user, void *p, size_t size) {
-    return refuse(user) ? NULL : realloc(p, size);
-}
-
-static void f_free(void *user, void *p) {
-    faulty *f = user;
-    f->live--;
-    free(p);
-}
-
-typedef qd_status (*body_fn)(qd_ctx *ctx, faulty *f);
-
-/* Run body failing allocation 1, 1 + stride, ... until it is not reached. */
-static long fault_loop(const char *what, body_fn body, long stride) {
-    long runs = 0;
-    for (long n = 1;; n += stride) {
-        faulty f = {0, n, 0, false};
-        qd_allocator a = {f_malloc, f_realloc, f_free, &f};
-        qd_ctx *ctx = qd_ctx_new_with(&a);
-        qd_status st = ctx ? body(ctx, &f) : QD_ERR_NOMEM;
-        char why[256];
-        snprintf(why, sizeof why, "%s", ctx ? qd_ctx_message(ctx) : "");
-        qd_status recorded = ctx ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-        qd_ctx_free(ctx);
-        runs++;
-        if (f.live != 0)
-            fail_msg("%s, allocation %ld failed: %ld blocks leaked", what, n, f.live);
-        if (st == QD_OK && recorded == QD_ERR_NOMEM)
-            fail_msg("%s, allocation %ld failed: success, but out of memory recorded", what, n);
-        if (st != QD_OK && (st != QD_ERR_NOMEM || !f.failed || recorded != QD_ERR_NOMEM))
-            fail_msg("%s, allocation %ld failed: status %s, recorded %s (%s)", what, n,
-                     qd_status_str(st), qd_status_str(recorded), why);
-        if (!f.failed) {
-            assert_int_equal(st, QD_OK);
-            printf("%s: %ld allocations, %ld runs\n", what, f.count, runs);
-            return f.count;
-        }
-    }
-}
+#include "util/fault.h"
 
 /* Parse and derive with the failures off; then arm them. */
-static void derive(qd_ctx *ctx, faulty *f, const char *text, qd_model **m, qd_eom **e) {
+static void derive(qd_ctx *ctx, qt_faulty *f, const char *text, qd_model **m, qd_eom **e) {
     long armed = f->fail_at;
     f->fail_at = 0;
     *m = qd_model_parse(ctx, text, NULL);
@@ -109,7 +46,8 @@ static void derive(qd_ctx *ctx, faulty *f, const char *text, qd_model **m, qd_eo
     "T = 1/2*((x' - y)^2 + (y' + x)^2)\n"                                                      \
     "V = -(1 - mu)/sqrt((x + mu)^2 + y^2) - mu/sqrt((x - 1 + mu)^2 + y^2)\n"
 
-static qd_status modes_scan_body(qd_ctx *ctx, faulty *f) {
+static qd_status modes_scan_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     qd_model *m;
     qd_eom *e;
     long armed = f->fail_at;
@@ -135,7 +73,7 @@ static qd_status modes_scan_body(qd_ctx *ctx, faulty *f) {
 
 static void test_modes_scan(void **state) {
     (void)state;
-    assert_true(fault_loop("modes scan", modes_scan_body, 2) > 20);
+    assert_true(qt_fault_loop("modes scan", modes_scan_body, NULL, 2).allocs > 20);
 }
 
 #define SLEEPING_TOP                                                                           \
@@ -144,7 +82,8 @@ static void test_modes_scan(void **state) {
     "body top mass M inertia (A - M*h^2, A - M*h^2, C) at R*(0, 0, h) orientation R\n"         \
     "V = M*g*position(top).z\n"
 
-static qd_status stability_scan_body(qd_ctx *ctx, faulty *f) {
+static qd_status stability_scan_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     qd_model *m;
     qd_eom *e;
     long armed = f->fail_at;
@@ -176,10 +115,11 @@ static void test_stability_scan(void **state) {
     (void)state;
     /* some 50,000 allocations (each step's steady-motion search): every 97th is failed,
      * which keeps the loop to seconds and still reaches every kind of call */
-    assert_true(fault_loop("stability scan", stability_scan_body, 97) > 20);
+    assert_true(qt_fault_loop("stability scan", stability_scan_body, NULL, 97).allocs > 20);
 }
 
-static qd_status zvc_body(qd_ctx *ctx, faulty *f) {
+static qd_status zvc_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
     qd_model *m;
     qd_eom *e;
     derive(ctx, f, "coordinates x, y\nT = (x'^2 + y'^2)/2\nV = (x^2 + y^2)/2\n", &m, &e);
@@ -203,7 +143,7 @@ static qd_status zvc_body(qd_ctx *ctx, faulty *f) {
 
 static void test_zvc(void **state) {
     (void)state;
-    assert_true(fault_loop("zero-velocity curves", zvc_body, 1) > 5);
+    assert_true(qt_fault_loop("zero-velocity curves", zvc_body, NULL, 1).allocs > 5);
 }
 
 int main(void) {

@@ -1,6 +1,6 @@
 /*
  * tests/hj/test_hj_fault.c - qd_hj_derive and qd_hj_solve with every
- * allocation made to fail, one at a time (the loop of tests/fault/test_fault.c,
+ * allocation made to fail, one at a time (the loop of tests/util/fault.h,
  * SQLite's test/exprfault.test).
  *
  * The model is parsed with the failures off; then the Nth allocation of the
@@ -24,49 +24,28 @@
 #include <string.h>
 
 #include "qdot/qdot.h"
-
-typedef struct faulty {
-    long count, fail_at, live;
-    bool failed;
-} faulty;
-
-static bool refuse(faulty *f) {
-    if (++f->count != f->fail_at)
-        return false;
-    f->failed = true;
-    return true;
-}
-
-static void *f_malloc(void *user, size_t size) {
-    faulty *f = user;
-    if (refuse(f))
-        return NULL;
-    void *p = malloc(size);
-    f->live += p != NULL;
-    return p;
-}
-
-static void *f_realloc(void *user, void *p, size_t size) {
-    return refuse(user) ? NULL : realloc(p, size);
-}
-
-static void f_free(void *user, void *p) {
-    ((faulty *)user)->live--;
-    free(p);
-}
+#include "util/fault.h"
 
 /* The run's own check of the answer: QD_OK when right. */
 typedef qd_status (*check_fn)(qd_ctx *ctx, const qd_model *m, qd_hj *h);
 
-static qd_status run(qd_ctx *ctx, faulty *f, long n, const char *text, check_fn check) {
-    qd_model *m = qd_model_parse(ctx, text, NULL);
+/* A model text and the check of its answer. */
+typedef struct hj_case {
+    const char *text;
+    check_fn check;
+} hj_case;
+
+static qd_status run(qd_ctx *ctx, qt_faulty *f, void *data) {
+    const hj_case *c = data;
+    long to_go = qt_fault_hold(f); /* the parse is not what this loop fails */
+    qd_model *m = qd_model_parse(ctx, c->text, NULL);
     assert_non_null(m);
-    f->fail_at = f->count + n;
+    qt_fault_release(f, to_go);
     qd_hj *h = qd_hj_derive(ctx, m, NULL);
     qd_status st = h ? qd_hj_solve(ctx, h) : qd_ctx_status(ctx);
-    f->fail_at = 0; /* the check itself allocates */
+    qt_fault_hold(f); /* the check itself allocates */
     if (st == QD_OK)
-        st = check(ctx, m, h);
+        st = c->check(ctx, m, h);
     qd_hj_free(h);
     qd_model_free(m);
     return st;
@@ -78,31 +57,8 @@ static void fault_loop(const char *what, const char *text, check_fn check, long 
     const char *env = getenv("QD_HJ_FAULT_STRIDE");
     if (env && atol(env) > 0)
         stride = atol(env);
-    long n = 1, runs = 0;
-    for (;; n += stride, runs++) {
-        faulty f = {0, 0, 0, false};
-        qd_allocator a = {f_malloc, f_realloc, f_free, &f};
-        qd_ctx *ctx = qd_ctx_new_with(&a);
-        assert_non_null(ctx);
-        qd_status st = run(ctx, &f, n, text, check);
-        qd_status recorded = qd_ctx_status(ctx);
-        char why[256];
-        snprintf(why, sizeof why, "%s", qd_ctx_message(ctx));
-        qd_ctx_free(ctx);
-        if (f.live != 0)
-            fail_msg("%s, allocation %ld failed: %ld blocks leaked", what, n, f.live);
-        if (st == QD_OK && recorded == QD_ERR_NOMEM)
-            fail_msg("%s, allocation %ld failed: success, but out of memory recorded", what, n);
-        if (st != QD_OK && (st != QD_ERR_NOMEM || !f.failed || recorded != QD_ERR_NOMEM))
-            fail_msg("%s, allocation %ld failed: status %s, recorded %s (%s)", what, n,
-                     qd_status_str(st), qd_status_str(recorded), why);
-        if (!f.failed) {
-            assert_int_equal(st, QD_OK);
-            break;
-        }
-    }
-    printf("%s: %ld runs, stride %ld\n", what, runs + 1, stride);
-    assert_true(n > 20 * stride);
+    hj_case c = {text, check};
+    assert_true(qt_fault_loop(what, run, &c, stride).runs > 20);
 }
 
 static double value(qd_ctx *ctx, const qd_model *m, const qd_expr *e, size_t n,

@@ -1,6 +1,7 @@
 /*
  * tests/orbit/test_orbit_fault.c - the orbit analysis with every allocation
- * made to fail, one at a time (the habit of tests/fault/test_fault.c).
+ * made to fail, one at a time (the habit of tests/fault/test_fault.c; the
+ * loop of tests/util/fault.h).
  *
  * Body: Kepler's problem in plane polar coordinates (Desloge ch. 58,
  * reference seed-desloge-B.md C3), derived and solved at r = 1, r' = 0.4,
@@ -22,39 +23,9 @@
 
 #include "qdot/orbit.h"
 #include "qdot/qdot.h"
+#include "util/fault.h"
 
 #define PI 3.14159265358979323846
-
-typedef struct faulty {
-    long count, fail_at, live;
-    bool failed;
-} faulty;
-
-static bool refuse(faulty *f) {
-    if (++f->count != f->fail_at)
-        return false;
-    f->failed = true;
-    return true;
-}
-
-static void *f_malloc(void *user, size_t size) {
-    faulty *f = user;
-    if (refuse(f))
-        return NULL;
-    void *p = malloc(size);
-    f->live += p != NULL;
-    return p;
-}
-
-static void *f_realloc(void *user, void *p, size_t size) {
-    return refuse(user) ? NULL : realloc(p, size);
-}
-
-static void f_free(void *user, void *p) {
-    faulty *f = user;
-    f->live--;
-    free(p);
-}
 
 static const char kepler[] =
     "coordinates r, theta\nparameters m = 1.3, k = 4\n"
@@ -69,7 +40,8 @@ static void check_answer(const qd_orbit_result *r) {
     assert_true(r->conic && fabs(r->e - e) < 1e-13);
 }
 
-static qd_status body(qd_ctx *ctx) {
+static qd_status body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)f, (void)data;
     qd_diag d;
     qd_model *m = qd_model_parse(ctx, kepler, &d);
     qd_eom *e = m ? qd_eom_derive(ctx, m) : NULL;
@@ -96,28 +68,7 @@ static qd_status body(qd_ctx *ctx) {
 
 static void test_orbit_fault(void **state) {
     (void)state;
-    long runs = 0;
-    for (long n = 1;; n++) {
-        faulty f = {0, n, 0, false};
-        qd_allocator a = {f_malloc, f_realloc, f_free, &f};
-        qd_ctx *ctx = qd_ctx_new_with(&a);
-        qd_status st = ctx ? body(ctx) : QD_ERR_NOMEM;
-        qd_status recorded = ctx ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-        qd_ctx_free(ctx);
-        runs++;
-        if (f.live != 0)
-            fail_msg("allocation %ld failed: %ld blocks leaked", n, f.live);
-        if (st == QD_OK && recorded == QD_ERR_NOMEM)
-            fail_msg("allocation %ld failed: success, but out of memory recorded", n);
-        if (st != QD_OK && (st != QD_ERR_NOMEM || recorded != QD_ERR_NOMEM))
-            fail_msg("allocation %ld failed: status %s, context %s", n, qd_status_str(st),
-                     qd_status_str(recorded));
-        if (!f.failed) {
-            assert_int_equal(st, QD_OK);
-            break;
-        }
-    }
-    assert_true(runs > 10);
+    assert_true(qt_fault_loop("Kepler orbit", body, NULL, 1).runs > 10);
 }
 
 int main(void) {

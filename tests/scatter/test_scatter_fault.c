@@ -1,8 +1,8 @@
 /*
  * tests/scatter/test_scatter_fault.c - scattering with every allocation
  * made to fail in turn (the habit of tests/fault/test_fault.c, whose
- * failing allocator this copies): each run must give the right answer or
- * a clean QD_ERR_NOMEM, with every block given back.
+ * failing allocator and loop are tests/util/fault.h): each run must give the
+ * right answer or a clean QD_ERR_NOMEM, with every block given back.
  *
  * Body: the refracting sphere V = -3 step(2 - r) at E = 1 (n = 2; Desloge
  * ch. 60 problems, Landau sec. 18 pb. 2): the deflection at b = 1 against
@@ -20,42 +20,10 @@
 #include <stdlib.h>
 
 #include "qdot/qdot.h"
+#include "util/fault.h"
 
-typedef struct faulty {
-    long count;    /* requests so far (malloc and realloc) */
-    long fail_at;  /* the request to refuse, 0: none */
-    long live;     /* blocks outstanding */
-    bool failed;   /* fail_at was reached */
-} faulty;
-
-static bool refuse(faulty *f) {
-    if (++f->count != f->fail_at)
-        return false;
-    f->failed = true;
-    return true;
-}
-
-static void *f_malloc(void *user, size_t size) {
-    faulty *f = user;
-    if (refuse(f))
-        return NULL;
-    void *p = malloc(size);
-    if (p)
-        f->live++;
-    return p;
-}
-
-static void *f_realloc(void *user, void *p, size_t size) {
-    return refuse(user) ? NULL : realloc(p, size);
-}
-
-static void f_free(void *user, void *p) {
-    faulty *f = user;
-    f->live--;
-    free(p);
-}
-
-static qd_status sphere_body(qd_ctx *ctx) {
+static qd_status sphere_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)f, (void)data;
     const double a = 2, n = 2, c = cos(0.5);
     const qd_expr *V = qd_read(ctx, "-3*step(2 - r)", NULL, NULL);
     qd_scatter *s = qd_scatter_new(ctx, V, qd_symbol(ctx, "r"), 0);
@@ -79,28 +47,8 @@ static qd_status sphere_body(qd_ctx *ctx) {
 
 static void test_sphere(void **state) {
     (void)state;
-    long runs = 0;
-    for (long k = 1;; k++, runs++) {
-        faulty f = {0, k, 0, false};
-        qd_allocator al = {f_malloc, f_realloc, f_free, &f};
-        qd_ctx *ctx = qd_ctx_new_with(&al);
-        qd_status st = ctx ? sphere_body(ctx) : QD_ERR_NOMEM;
-        qd_status recorded = ctx ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-        qd_ctx_free(ctx);
-        if (f.live != 0)
-            fail_msg("allocation %ld failed: %ld blocks leaked", k, f.live);
-        if (st != QD_OK && (st != QD_ERR_NOMEM || recorded != QD_ERR_NOMEM || !f.failed))
-            fail_msg("allocation %ld failed: status %s, recorded %s", k, qd_status_str(st),
-                     qd_status_str(recorded));
-        if (st == QD_OK && recorded == QD_ERR_NOMEM)
-            fail_msg("allocation %ld failed: success, but out of memory recorded", k);
-        if (!f.failed) {
-            assert_int_equal(st, QD_OK);
-            break;
-        }
-    }
-    printf("refracting sphere: %ld runs\n", runs);
-    assert_true(runs > 5);
+    qt_fault_stats ls = qt_fault_loop("refracting sphere", sphere_body, NULL, 1);
+    assert_true(ls.runs > 6); /* more than five refused, then the run that got through */
 }
 
 int main(void) {
