@@ -82,7 +82,10 @@ QD_API size_t qd_model_nparams(const qd_model *m);
 QD_API size_t qd_model_nfunctions(const qd_model *m);
 QD_API const char *qd_model_function_name(const qd_model *m, size_t i); /* NULL out of range */
 QD_API const qd_expr *qd_model_param(const qd_model *m, size_t i);
-QD_API const qd_expr *qd_model_param_value(const qd_model *m, size_t i); /* its number */
+/* Its value: the definition with the earlier parameters' values put in, a
+ * constant expression, exact (2, 9.81, pi/6, sqrt(2)/2: not always a number
+ * node; qd_eval gives the double). */
+QD_API const qd_expr *qd_model_param_value(const qd_model *m, size_t i);
 /* The parameter as written: an expression of the earlier parameters
  * (`m = 2*k` gives 2*k), or the number that replaced it. */
 QD_API const qd_expr *qd_model_param_definition(const qd_model *m, size_t i);
