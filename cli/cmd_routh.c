@@ -64,64 +64,6 @@ static int parse_args(int argc, char **argv, routh_run *r) {
     return rc;
 }
 
-/* ---- --ignore ---------------------------------------------------------------- */
-
-static int lookup(routh_run *r, const char *s, size_t len) {
-    char name[128];
-    while (len && (*s == ' ' || s[len - 1] == ' '))
-        s += *s == ' ', len -= 1;
-    if (!len || len >= sizeof name || r->nign == MAX_IGN) {
-        cli_diag_error("--ignore takes a comma-separated list of coordinates, not '%s'", r->ignore);
-        return QD_EXIT_USAGE;
-    }
-    memcpy(name, s, len);
-    name[len] = '\0';
-    const qd_expr *c = qd_routh_lookup(r->ctx, r->mf.model, name);
-    if (!c) {
-        cli_diag_error("--ignore: %s", qd_ctx_message(r->ctx));
-        return QD_EXIT_USAGE;
-    }
-    for (size_t k = 0; k < r->nign; k++)
-        if (r->ign[k] == c) {
-            cli_diag_error("--ignore: %s is listed twice", name);
-            return QD_EXIT_USAGE;
-        }
-    r->ign[r->nign++] = c;
-    return QD_EXIT_OK;
-}
-
-static int parse_ignore(routh_run *r) {
-    const char *s = r->ignore;
-    int rc = QD_EXIT_OK;
-    while (rc == QD_EXIT_OK) {
-        const char *comma = strchr(s, ',');
-        size_t len = comma ? (size_t)(comma - s) : strlen(s);
-        rc = lookup(r, s, len);
-        if (!comma)
-            break;
-        s = comma + 1;
-    }
-    return rc;
-}
-
-/* A coordinate that is not cyclic, shown at the statement that makes it so. */
-static int check_cyclic(routh_run *r) {
-    for (size_t i = 0; i < r->nign; i++)
-        for (size_t j = 0; j < r->e->n; j++) {
-            const char *why = NULL, *where = NULL;
-            if (r->e->q[j] != r->ign[i] ||
-                !(where = qd_routh_not_cyclic(r->ctx, r->mf.model, r->e, j, &why)))
-                continue;
-            char msg[512];
-            snprintf(msg, sizeof msg, "%s cannot be ignored: %s", qd_expr_name(r->ign[i]), why);
-            cli_model_file_error(&r->mf, where, msg,
-                                "only cyclic coordinates can be ignored: absent from L, with no "
-                                "generalized force and no dissipation");
-            return QD_EXIT_USAGE;
-        }
-    return QD_EXIT_OK;
-}
-
 /* ---- output ---------------------------------------------------------------- */
 
 static qd_format expr_format(routh_fmt f) {
@@ -392,9 +334,9 @@ static int emit(routh_run *r) {
 static int run(routh_run *r) {
     int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, true, NULL, &r->mf, &r->e);
     if (rc == QD_EXIT_OK)
-        rc = parse_ignore(r);
+        rc = cli_ignore_parse(r->ctx, r->mf.model, r->ignore, r->ign, MAX_IGN, &r->nign);
     if (rc == QD_EXIT_OK)
-        rc = check_cyclic(r);
+        rc = cli_ignore_check(r->ctx, &r->mf, r->e, r->ign, r->nign);
     if (rc == QD_EXIT_OK && !(r->r = qd_routh_derive(r->ctx, r->mf.model, r->e, r->nign, r->ign)))
         rc = cli_diag_ctx(r->ctx);
     return rc == QD_EXIT_OK ? emit(r) : rc;

@@ -5,10 +5,12 @@
 #include "model_cli.h"
 
 #include <ctype.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
 #include "qdot/read.h"
+#include "qdot/routh.h"
 #include "state.h"
 
 int cli_once(const char *opt, const char **slot, const char *value) {
@@ -175,4 +177,63 @@ cli_name cli_script_name(const qd_model *m, const char *base) {
     for (size_t len = strlen(n.s); model_uses(m, n.s) && len + 1 < sizeof n.s; len++)
         n.s[len] = '_', n.s[len + 1] = '\0';
     return n;
+}
+
+/* ---- --ignore ----------------------------------------------------------------- */
+
+static int ignore_item(qd_ctx *ctx, const qd_model *m, const char *list, const char *s,
+                       size_t len, const qd_expr **ign, size_t cap, size_t *n) {
+    char name[128];
+    while (len && (*s == ' ' || s[len - 1] == ' '))
+        s += *s == ' ', len -= 1;
+    if (!len || len >= sizeof name || *n == cap) {
+        cli_diag_error("--ignore takes a comma-separated list of coordinates, not '%s'", list);
+        return QD_EXIT_USAGE;
+    }
+    memcpy(name, s, len);
+    name[len] = '\0';
+    const qd_expr *c = qd_routh_lookup(ctx, m, name);
+    if (!c) {
+        cli_diag_error("--ignore: %s", qd_ctx_message(ctx));
+        return QD_EXIT_USAGE;
+    }
+    for (size_t k = 0; k < *n; k++)
+        if (ign[k] == c) {
+            cli_diag_error("--ignore: %s is listed twice", name);
+            return QD_EXIT_USAGE;
+        }
+    ign[(*n)++] = c;
+    return QD_EXIT_OK;
+}
+
+int cli_ignore_parse(qd_ctx *ctx, const qd_model *m, const char *list, const qd_expr **ign,
+                     size_t cap, size_t *n) {
+    const char *s = list;
+    int rc = QD_EXIT_OK;
+    *n = 0;
+    while (rc == QD_EXIT_OK) {
+        const char *comma = strchr(s, ',');
+        rc = ignore_item(ctx, m, list, s, comma ? (size_t)(comma - s) : strlen(s), ign, cap, n);
+        if (!comma)
+            break;
+        s = comma + 1;
+    }
+    return rc;
+}
+
+int cli_ignore_check(qd_ctx *ctx, const cli_model_file *mf, const qd_eom *e,
+                     const qd_expr *const *ign, size_t n) {
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < e->n; j++) {
+            const char *why = NULL, *where = NULL;
+            if (e->q[j] != ign[i] || !(where = qd_routh_not_cyclic(ctx, mf->model, e, j, &why)))
+                continue;
+            char msg[512];
+            snprintf(msg, sizeof msg, "%s cannot be ignored: %s", qd_expr_name(ign[i]), why);
+            cli_model_file_error(mf, where, msg,
+                                 "only cyclic coordinates can be ignored: absent from L, with no "
+                                 "generalized force and no dissipation");
+            return QD_EXIT_USAGE;
+        }
+    return QD_EXIT_OK;
 }

@@ -44,6 +44,15 @@ int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *con
 int cli_emit(qd_buf *b, const char *what);
 
 
+/* --ignore LIST (routh, orbit): the comma-separated coordinates into ign
+ * (at most cap), each once; prints its own errors. */
+int cli_ignore_parse(qd_ctx *ctx, const qd_model *m, const char *list, const qd_expr **ign,
+                     size_t cap, size_t *n);
+/* Every coordinate of ign is cyclic in e; else the error at the statement
+ * that makes it not, and QD_EXIT_USAGE. */
+int cli_ignore_check(qd_ctx *ctx, const cli_model_file *mf, const qd_eom *e,
+                     const qd_expr *const *ign, size_t n);
+
 /* A symmetry or an integral given on the command line (--symmetry, --integral:
  * what follows the keyword of the statement), added to the model as the
  * statement "KEYWORD [label: ]TEXT" (qd_model_add_statement), so the model
