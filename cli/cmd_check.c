@@ -116,7 +116,7 @@ static void header(check *c, const char *path, const qd_eom *e) {
     qd_buf_puts(&c->out, "parameters:");
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         qd_buf_printf(&c->out, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        cli_state_put_double(&c->out, cli_param_value(c->ctx, m, i));
+        cli_state_put_double(&c->out, cli_param_value(m, i));
     }
     qd_buf_puts(&c->out, qd_model_nparams(m) ? "\n" : " none\n");
 }

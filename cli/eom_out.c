@@ -53,7 +53,7 @@ static void text_header(const cli_eom_view *v, qd_buf *b) {
     qd_buf_puts(b, "\nparameters:");
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         qd_buf_printf(b, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        cli_state_put_double(b, cli_param_value(v->ctx, m, i));
+        cli_state_put_double(b, cli_param_value(m, i));
     }
     if (!qd_model_nparams(m))
         qd_buf_puts(b, " none");
@@ -347,7 +347,7 @@ static void json_header(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
     cli_json_begin_object(j);
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
         cli_json_key(j, qd_expr_name(qd_model_param(m, i)));
-        cli_json_number(j, cli_param_value(v->ctx, m, i));
+        cli_json_number(j, cli_param_value(m, i));
     }
     cli_json_end_object(j);
     if (!v->numeric)

@@ -18,14 +18,9 @@ double cli_state_value(const qd_expr *number) {
     return qd_number_value(number);
 }
 
-double cli_param_value(qd_ctx *ctx, const qd_model *m, size_t i) {
-    const qd_expr *v = qd_model_param_value(m, i);
-    double x = NAN;
-    if (v && qd_is_number(v))
-        return cli_state_value(v);
-    /* a value written as pi/6 or sqrt(2) is an expression of constants */
-    if (!v || qd_eval(ctx, v, 0, NULL, NULL, &x) != QD_OK)
-        qd_ctx_clear_error(ctx);
+double cli_param_value(const qd_model *m, size_t i) {
+    double x;
+    qd_model_param_number(m, i, &x); /* NaN when it has none */
     return x;
 }
 
@@ -59,12 +54,14 @@ int cli_state_init(qd_ctx *ctx, const qd_model *m, cli_state *st) {
     }
     st->syms[2 * nq] = qd_time(ctx);
     for (size_t i = 0; i < np; i++) {
-        const qd_expr *v = qd_model_param_value(m, i);
         st->syms[2 * nq + 1 + i] = qd_model_param(m, i);
-        if (v && qd_is_number(v))
-            st->vals[2 * nq + 1 + i] = cli_state_value(v);
-        else if (!v || qd_eval(ctx, v, 0, st->syms, st->vals, &st->vals[2 * nq + 1 + i]) != QD_OK)
+        qd_status s = qd_model_param_number(m, i, &st->vals[2 * nq + 1 + i]);
+        if (s == QD_ERR_NOMEM)
             return cli_diag_ctx(ctx);
+        if (s != QD_OK) {
+            cli_diag_error("parameter %s has no finite value", qd_expr_name(qd_model_param(m, i)));
+            return QD_EXIT_FAIL;
+        }
     }
     return QD_EXIT_OK;
 }

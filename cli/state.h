@@ -27,7 +27,7 @@ double cli_state_value(const qd_expr *number);
 
 /* Parameter i's value as a double, also when it is written as an
  * expression of constants (pi/6); NaN if it cannot be evaluated. */
-double cli_param_value(qd_ctx *ctx, const qd_model *m, size_t i);
+double cli_param_value(const qd_model *m, size_t i);
 
 /* x in its shortest %g form that reads back to the same double. */
 void cli_state_put_double(qd_buf *b, double x);

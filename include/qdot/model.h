@@ -86,6 +86,12 @@ QD_API const qd_expr *qd_model_param(const qd_model *m, size_t i);
  * constant expression, exact (2, 9.81, pi/6, sqrt(2)/2: not always a number
  * node; qd_eval gives the double). */
 QD_API const qd_expr *qd_model_param_value(const qd_model *m, size_t i);
+/* That value as the nearest double (an exact rational p/q that fits is
+ * (double)p/q, correctly rounded: 9.81 stays 9.81).  QD_ERR_ARG, *x NaN and
+ * nothing recorded, when i is out of range or the value is not a finite
+ * number (the caller says so in its own words); QD_ERR_NOMEM, recorded in
+ * the model's context, when evaluating it ran out of memory. */
+QD_API qd_status qd_model_param_number(const qd_model *m, size_t i, double *x);
 /* The parameter as written: an expression of the earlier parameters
  * (`m = 2*k` gives 2*k), or the number that replaced it. */
 QD_API const qd_expr *qd_model_param_definition(const qd_model *m, size_t i);

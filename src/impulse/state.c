@@ -71,8 +71,10 @@ qd_status qd__imp_state(qd__imp *s, const qd_impulse_opts *opts) {
     qd_status st = QD_OK;
     for (size_t i = 0; i < np && st == QD_OK; i++) { /* a value may be exact: pi/6 */
         s->syms[2 * n + 1 + i] = qd_model_param(s->m, i);
-        st = qd_eval(s->ctx, qd_model_param_value(s->m, i), 0, NULL, NULL,
-                     &s->vals[2 * n + 1 + i]);
+        st = qd_model_param_number(s->m, i, &s->vals[2 * n + 1 + i]);
+        if (st == QD_ERR_ARG)
+            qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
+                         qd_expr_name(qd_model_param(s->m, i)));
     }
     s->syms[2 * n] = qd_time(s->ctx);
     s->t0 = opts && opts->t ? opts->t : qd_int(s->ctx, 0);

@@ -134,6 +134,20 @@ const qd_expr *qd_model_param_definition(const qd_model *m, size_t i) {
     return i < m->nparams ? m->pdefs[i] : NULL;
 }
 
+qd_status qd_model_param_number(const qd_model *m, size_t i, double *x) {
+    long p, q;
+    const qd_expr *v = i < m->nparams ? m->pvals[i] : NULL;
+    *x = NAN;
+    if (v && qd_rational_get(v, &p, &q) && fabs((double)p) <= 0x1p53 && (double)q <= 0x1p53)
+        *x = (double)p / (double)q; /* both exact in a double: one rounding */
+    else if (v && qd_eval(m->ctx, v, 0, NULL, NULL, x) != QD_OK) {
+        *x = NAN;
+        if (!qd__ctx_recover(m->ctx)) /* out of memory stays recorded */
+            return QD_ERR_NOMEM;
+    }
+    return isfinite(*x) ? QD_OK : QD_ERR_ARG;
+}
+
 bool qd_model_param_fixed(const qd_model *m, size_t i) { return i < m->nparams && m->pfixed[i]; }
 
 /* x with the values of the first n parameters put in. */

@@ -33,16 +33,14 @@ static qd_status inputs(qd_sim *s) {
     }
     s->in_syms[2 * n] = qd_time(s->ctx);
     for (size_t i = 0; i < s->np; i++) {
-        double x = NAN;
-        const qd_expr *v = qd_model_param_value(s->model, i);
         s->in_syms[2 * n + 1 + i] = qd_model_param(s->model, i);
-        if (!v || qd_eval(s->ctx, v, 0, NULL, NULL, &x) != QD_OK || !isfinite(x)) {
-            qd__ctx_recover(s->ctx);
-            qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
-                         qd_expr_name(s->in_syms[2 * n + 1 + i]));
-            return QD_ERR_ARG;
+        qd_status st = qd_model_param_number(s->model, i, &s->par[i]);
+        if (st != QD_OK) {
+            if (st == QD_ERR_ARG)
+                qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
+                             qd_expr_name(s->in_syms[2 * n + 1 + i]));
+            return st;
         }
-        s->par[i] = x;
     }
     return QD_OK;
 }

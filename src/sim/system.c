@@ -20,18 +20,6 @@
 #include "num/num.h"
 #include "base/mem.h"
 
-static double param_value(qd_ctx *ctx, const qd_expr *v) {
-    long p, q;
-    double x = 0;
-    if (v && qd_rational_get(v, &p, &q) && fabs((double)p) <= 0x1p53 && (double)q <= 0x1p53)
-        return (double)p / (double)q;
-    if (v && qd_is_number(v))
-        return qd_number_value(v);
-    if (v && qd_eval(ctx, v, 0, NULL, NULL, &x) != QD_OK)
-        x = NAN;
-    return x;
-}
-
 static char *dup_printf(qd_ctx *ctx, const char *a, const char *b, const char *c) {
     size_t len = strlen(a) + strlen(b) + strlen(c) + 1;
     char *s = qd__malloc(ctx, len);
@@ -83,11 +71,12 @@ static qd_status setup_inputs(qd_sim *s) {
     s->in_syms[2 * n] = qd_time(s->ctx);
     for (size_t i = 0; i < s->np; i++) {
         s->in_syms[2 * n + 1 + i] = qd_model_param(s->model, i);
-        s->par[i] = param_value(s->ctx, qd_model_param_value(s->model, i));
-        if (!isfinite(s->par[i])) {
-            qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
-                         qd_expr_name(s->in_syms[2 * n + 1 + i]));
-            return QD_ERR_ARG;
+        qd_status st = qd_model_param_number(s->model, i, &s->par[i]);
+        if (st != QD_OK) {
+            if (st == QD_ERR_ARG)
+                qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
+                             qd_expr_name(s->in_syms[2 * n + 1 + i]));
+            return st;
         }
     }
     for (size_t k = 0; k < s->m; k++)
