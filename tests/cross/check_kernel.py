@@ -54,7 +54,7 @@ def numerically_zero(d, free):
     """d at three random real points, to 30 digits: ~0 everywhere?"""
     rng = random.Random(7)
     for _ in range(3):
-        point = {s: sympy.Rational(rng.randint(-900, 900), 1000) for s in free}
+        point = {s: sympy.Rational(rng.randint(-900, 900), 1000) for s in sorted(free, key=str)}
         try:
             v = complex(d.subs(point).evalf(30))
         except (TypeError, ValueError, ZeroDivisionError):

@@ -499,7 +499,7 @@ def is_zero(d):
 
 
 def numerically_zero(d, rng):
-    vals = {x: rng.uniform(0.3, 1.3) for x in d.free_symbols}
+    vals = {x: rng.uniform(0.3, 1.3) for x in sorted(d.free_symbols, key=str)}
     try:
         return abs(complex(d.subs(vals).evalf())) < 1e-9
     except (TypeError, ValueError):
