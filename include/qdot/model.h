@@ -220,6 +220,23 @@ QD_API size_t qd_model_nprescribed(const qd_model *m);
 QD_API const char *qd_model_prescribed_name(const qd_model *m, size_t i);
 QD_API const qd_expr *qd_model_prescribed(const qd_model *m, size_t i);
 
+/* Generalized speeds (`speeds u1 = EXPR, u2 = EXPR, ...`; qdot/speeds.h), in
+ * the order declared.  qd_model_speed is the speed's own symbol, a function
+ * of t like a coordinate (made with qd_coord, so that qd_jet(u, 1) is u');
+ * it is not among the coordinates.  Its definition is an expression in the
+ * coordinates, velocities, t and the parameters, linear in the velocities
+ * (checked when parsed: a located error otherwise).  Elsewhere in the model
+ * (T, V, forces, constraints, outputs) a speed's name stands for its
+ * definition, like a definition `NAME = EXPR`.  qd_model_speed_initial is
+ * the value given by `initial u1 = 0.3` (a finite number, as for the
+ * coordinates), or NULL; qd_model_speed_initial_definition the same as
+ * written (in the parameters). */
+QD_API size_t qd_model_nspeeds(const qd_model *m);
+QD_API const qd_expr *qd_model_speed(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_speed_definition(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_speed_initial(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_speed_initial_definition(const qd_model *m, size_t i);
+
 /* Initial values: the value of a coordinate (order 0) or velocity (order 1)
  * named in `initial`, or NULL. */
 QD_API const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);
@@ -236,7 +253,8 @@ QD_API const qd_expr *qd_model_definition(const qd_model *m, const char *name);
  * "U", "H", "dissipation", "coordinates", "momenta", a coordinate's name,
  * "constraint:NAME", "body:NAME" (the body's name on its line),
  * "symmetry:NAME" or "integral:NAME" (the label, or the statement's first
- * item when unnamed).  false when the model has no such statement.  For a
+ * item when unnamed), "speed:NAME" (the speed's name in `speeds`).  false
+ * when the model has no such statement.  For a
  * statement added by qd_model_add_statement the place is in its text. */
 QD_API bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
 

@@ -23,6 +23,7 @@
 #include "routh.h"
 #include "stability.h"
 #include "zvc.h"
+#include "speeds.h"
 #include "scatter.h"
 
 #define QDOT_VERSION "0.1.0"

@@ -52,7 +52,8 @@ typedef enum qd_subject {
     QD_SUBJECT_STATEMENT,  /* a statement of the model: name is "T", "V", "L", "H", ... */
     QD_SUBJECT_CONSTRAINT, /* constraint number index */
     QD_SUBJECT_COORD,      /* coordinate number index (its velocity, its equation) */
-    QD_SUBJECT_PARAM       /* parameter number index */
+    QD_SUBJECT_PARAM,      /* parameter number index */
+    QD_SUBJECT_SPEED       /* generalized speed number index (`speeds`) */
 } qd_subject;
 
 /* Why, when the subject alone does not say it: lets a caller (or a test)
@@ -67,7 +68,8 @@ typedef enum qd_reason {
     QD_REASON_NOT_QUADRATIC, /* a velocity (momentum) enters T, L (H) beyond the square */
     QD_REASON_SINGULAR_MASS, /* the mass matrix is singular */
     QD_REASON_TOO_DEEP,      /* text nested beyond the readers' limit (QD_MAX_NEST) */
-    QD_REASON_BAD_BYTE       /* a byte or character the language does not allow there */
+    QD_REASON_BAD_BYTE,      /* a byte or character the language does not allow there */
+    QD_REASON_DEPENDENT_SPEEDS /* speeds (with the constraints) that do not determine q' */
 } qd_reason;
 
 /* Brackets and signs nest at most this deep in any text libqdot reads, so a

@@ -1,0 +1,150 @@
+/*
+ * qdot/speeds.h - equations of motion in generalized speeds (quasi-velocities):
+ * Kane's, Gibbs-Appell's and Boltzmann-Hamel's forms (Desloge ch. 67-70).
+ *
+ * A model declares m speeds, each linear in the velocities (`speeds`,
+ * qdot/model.h):
+ *
+ *     u_r = sum_j A_rj(q, t) q'_j + b_r(q, t),        r = 1..m,
+ *
+ * and has its constraints as rows C q' + c0 = 0 (a Pfaffian constraint as
+ * given, a holonomic one phi(q, t) = 0 differentiated once: C_kj = dphi/dq_j,
+ * c0_k = dphi/dt; the rows of qd_eom's A).  Stacked, the n x n velocity map
+ * P = [A; C] must be invertible (m + ncon = n, independent rows: else
+ * QD_ERR_SINGULAR, QD_REASON_DEPENDENT_SPEEDS, naming the dependent rows).
+ * With [W | Wc] = P^-1 (W the first m columns):
+ *
+ *     q' = W u + w,     w = -W b - Wc c0                    (kinematics)
+ *
+ * holds with every constraint satisfied for every u: W_jr = dq'_j/du_r are
+ * the partial velocities, and C W = 0 (the constraint forces do no work on
+ * them), so no multiplier enters.  The dynamic equations are
+ *
+ *     M_u u' = f_u,      M_u = W^T M W  (m x m, symmetric positive definite
+ *                                         when M is),
+ *
+ * in q, u, t and the parameters (q' replaced by the kinematics).  Three
+ * derivations, equal exactly (the tests show it):
+ *
+ *   QD_SPEEDS_KANE    Kane's equations F_r + F*_r = 0 in Lagrange's form:
+ *                     sum_j W_jr E_j = 0, E_j = d/dt dL/dq'_j - dL/dq_j
+ *                     + dD/dq'_j - Q_j, with q' = W u + w and
+ *                     q'' = W u' + (d/dt W) u + w' (Kane and Levinson 1985,
+ *                     ch. 6; Desloge ch. 69 C12: B^T (M q'' + h) = B^T Q).
+ *   QD_SPEEDS_APPELL  Gibbs-Appell: dS/du'_r = Pi_r with the acceleration
+ *                     energy S (below) and Pi = W^T G, G the generalized
+ *                     forces the kinetic part leaves: Q_j - dD/dq'_j and
+ *                     those of V and U (Desloge ch. 69 thm 2, ch. 70).
+ *   QD_SPEEDS_HAMEL   Boltzmann-Hamel: with all n quasi-velocities
+ *                     v = (u, s), s = C q' + c0 (0 on the motion), and
+ *                     L*(q, v, t) = L at q' = W u + Wc s + w,
+ *                     d/dt dL*/du_r - sum_j W_jr dL*/dq_j
+ *                       + sum_s dL*/dv_s sum_j W_jr (sum_k (dP_sj/dq_k
+ *                       - dP_sk/dq_j) q'_k + dP_sj/dt - dp0_s/dq_j)
+ *                       = sum_j W_jr (Q_j - dD/dq'_j),
+ *                     p0 = (b, c0), every derivative at fixed v, then
+ *                     s = 0 (Desloge ch. 68; his gamma_ikm are the
+ *                     dP/dq terms: seed-desloge-C.md pitfall 2).
+ *
+ * The Gibbs-Appell function (acceleration energy) is
+ *
+ *     S = sum_particles m/2 |r''|^2
+ *       + sum_bodies (M/2 |c''|^2 + 1/2 a.I a + a.(w x I w))
+ *       + the part of any `T = ...` (or `L = ...`) term: 1/2 q''^T M q'' + h^T q''
+ *
+ * (w, a = w' the body-axis angular velocity and acceleration, I the
+ * body-axis inertia about the centre of mass c; h the part of Lagrange's
+ * expression free of accelerations), with q'' and q' in terms of u', u, q
+ * as above: the constraints are substituted first (Desloge ch. 69 thm 2,
+ * seed pitfall 13), and the terms free of u' are dropped:
+ *
+ *     S = 1/2 u'^T M_u u' + g^T u',   f_u = Pi - g.
+ *
+ * With `L = ...` given, S is built from L's own Lagrange expression (its
+ * potential terms then sit in g rather than in Pi; dS/du' = Pi holds).
+ *
+ * Multipliers (opts.multipliers): the constraint forces are not needed for
+ * the motion, but recovered as lambda = Wc^T E, E Lagrange's residual
+ * M q'' - f at the motion (C Wc = I, so this solves E = C^T lambda): the
+ * same lambda_k, sign and scale as qd_eom's (M q'' = f + A^T lambda), as
+ * expressions in q, u, u', t.
+ */
+#ifndef QDOT_SPEEDS_H
+#define QDOT_SPEEDS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "mech.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum qd_speeds_method {
+    QD_SPEEDS_KANE,
+    QD_SPEEDS_APPELL,
+    QD_SPEEDS_HAMEL,
+    QD_SPEEDS_METHOD_COUNT
+} qd_speeds_method;
+
+QD_API const char *qd_speeds_method_name(qd_speeds_method m);          /* "kane" */
+QD_API bool qd_speeds_method_from_name(const char *name, qd_speeds_method *m);
+
+typedef struct qd_speeds_opts {
+    qd_speeds_method method;
+    bool appell;       /* compute S (qd_speeds_eom.S) whatever the method */
+    bool multipliers;  /* the constraints' multipliers (qd_speeds_eom.mult) */
+} qd_speeds_opts;
+
+typedef struct qd_speeds_eom {
+    size_t n;                 /* coordinates */
+    size_t m;                 /* speeds */
+    size_t ncon;              /* constraints (the rows C) */
+    const qd_expr **q, **qd;  /* n: coordinates and their velocities */
+    const qd_expr **u, **ud;  /* m: the speeds (qd_model_speed) and u' */
+    const qd_expr **def;      /* m: u_r as the model defines it (q, q', t) */
+    const qd_expr **W;        /* n*m, row-major: dq'_j/du_r */
+    const qd_expr **w;        /* n */
+    const qd_expr **kin;      /* n: q'_j = sum_r W_jr u_r + w_j, simplified */
+    const qd_expr **M;        /* m*m, row-major */
+    const qd_expr **f;        /* m */
+    const qd_expr *T;         /* T*(q, u, t): the kinetic energy (NULL when L was given) */
+    const qd_expr *S;         /* the Gibbs-Appell function (u'-free terms dropped),
+                                 when opts.appell or the method is appell; else NULL */
+    qd_con *con;              /* ncon: the constraints, classified as in qd_eom */
+    const qd_expr **mult;     /* ncon multipliers in q, u, u', t (opts.multipliers), else NULL */
+    qd_speeds_method method;
+    void *priv;               /* the library's: the compiled numeric program */
+} qd_speeds_eom;
+
+/* Derive the equations in speeds of a model with `speeds` (QD_ERR_ARG when
+ * it has none; a model given by H is refused too).  opts may be NULL: Kane,
+ * no S, no multipliers.  QD_ERR_SINGULAR when P is singular (the error is
+ * about the speed or constraint that depends on the others, with
+ * QD_REASON_DEPENDENT_SPEEDS, locatable with qd_model_locate) or M_u is.
+ * NULL on failure, reason in ctx. */
+QD_API qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_opts *opts);
+QD_API void qd_speeds_eom_free(qd_speeds_eom *e);
+
+/* Numbers at one state.  vals gives the value of each symbol in syms
+ * (coordinates, speeds, t, parameters; symbols not given are 0).  Any
+ * output may be NULL: qd (n) the velocities from the kinematics, ud (m) the
+ * speeds' rates (M_u u' = f_u solved), lambda (ncon, needs e->mult: else
+ * QD_ERR_ARG) the multipliers at that u'.  QD_ERR_SINGULAR when M_u is
+ * singular there.  Compiled on the first call and kept in e (one thread). */
+QD_API qd_status qd_speeds_eval(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
+                                const qd_expr *const *syms, const double *vals, double *qd,
+                                double *ud, double *lambda);
+
+/* The speeds at (q, q', t): u = A q' + b (the definitions), m of them; vals
+ * as for qd_speeds_eval but with the velocities qd_jet(q, 1) given. */
+QD_API qd_status qd_speeds_from_velocities(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
+                                           const qd_expr *const *syms, const double *vals,
+                                           double *u);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
