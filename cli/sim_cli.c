@@ -4,7 +4,13 @@
  * Expressions on the command line (--output, --event) are read in the model
  * language; a name the reader does not know is looked up among the model's
  * definitions (x2 = x1 + l2*sin(theta2)) and replaced by its value, and a
- * definition's name with a prime (x2') is its time derivative.
+ * definition's name with a prime (x2') is its time derivative.  A speed's
+ * name (`speeds`) stands for its definition, as in the model.
+ *
+ * A model with speeds is simulated in them, y = (q, u) (qd_sim_new_speeds):
+ * the initial speeds are those given (`initial u = ...`, --initial "u=..."),
+ * the others those of the initial velocities; --no-speeds integrates the
+ * multiplier form instead.
  */
 #include "sim_cli.h"
 
@@ -49,6 +55,10 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     }
     if (!strcmp(argv[*i], "--no-project")) {
         a->no_project = true;
+        return 1;
+    }
+    if (!strcmp(argv[*i], "--no-speeds")) {
+        a->no_speeds = true;
         return 1;
     }
     if ((v = cli_value(argc, argv, i, "--t-end"))) {
@@ -131,6 +141,21 @@ static bool is_momentum(const cli_sim *c, const qd_expr *x) {
     return false;
 }
 
+/* The definition of the model's speed named name, or NULL. */
+static const qd_expr *speed_definition(const cli_sim *c, const char *name) {
+    const qd_model *m = c->mf.model;
+    for (size_t r = 0; r < qd_model_nspeeds(m); r++)
+        if (!strcmp(qd_expr_name(qd_model_speed(m, r)), name))
+            return qd_model_speed_definition(m, r);
+    return NULL;
+}
+
+/* A definition's value: `NAME = EXPR`, or a speed's definition. */
+static const qd_expr *definition(const cli_sim *c, const char *name) {
+    const qd_expr *d = qd_model_definition(c->mf.model, name);
+    return d ? d : speed_definition(c, name);
+}
+
 /* Read text[a, b) against the model: definitions substituted. */
 static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
     trim(&a, &b);
@@ -144,7 +169,7 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
     /* NAME' of a definition: its time derivative */
     if (len > 1 && text[len - 1] == '\'') {
         text[len - 1] = '\0';
-        const qd_expr *d = qd_model_definition(c->mf.model, text);
+        const qd_expr *d = definition(c, text);
         text[len - 1] = '\'';
         if (d)
             x = qd_dt(c->ctx, d);
@@ -165,7 +190,7 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
         if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]) ||
             is_momentum(c, syms[i]))
             continue;
-        const qd_expr *d = qd_model_definition(c->mf.model, qd_expr_name(syms[i]));
+        const qd_expr *d = definition(c, qd_expr_name(syms[i]));
         if (!d) {
             cli_diag_error("%s: unknown name '%s' in '%s' (use coordinates, velocities q', t, "
                           "parameters, the model's definitions and the multipliers "
@@ -265,23 +290,60 @@ static int initial_momenta(cli_sim *c) {
     return QD_EXIT_OK;
 }
 
-/* A model given by H: its momenta after the state's other names, so that
- * --initial takes them (NaN until given). */
-static int add_momenta(cli_sim *c) {
+/* Extra names after the state's own (NaN until given): the momenta of a
+ * model given by H, or a model's speeds. */
+static int add_names(cli_sim *c, size_t count, const qd_expr *(*sym)(const qd_model *, size_t)) {
     const qd_model *m = c->mf.model;
-    size_t n = qd_model_ncoords(m), at = c->st.n;
-    const qd_expr **syms = realloc(c->st.syms, (at + n) * sizeof *syms);
+    size_t at = c->st.n;
+    const qd_expr **syms = realloc(c->st.syms, (at + count + 1) * sizeof *syms);
     if (syms)
         c->st.syms = syms;
-    double *vals = syms ? realloc(c->st.vals, (at + n) * sizeof *vals) : NULL;
+    double *vals = syms ? realloc(c->st.vals, (at + count + 1) * sizeof *vals) : NULL;
     if (!vals)
         return QD_EXIT_FAIL;
     c->st.vals = vals;
-    for (size_t j = 0; j < n; j++) {
-        c->st.syms[at + j] = qd_model_momentum(m, j);
+    for (size_t j = 0; j < count; j++) {
+        c->st.syms[at + j] = sym(m, j);
         c->st.vals[at + j] = NAN;
     }
-    c->st.n += n;
+    c->st.n += count;
+    return QD_EXIT_OK;
+}
+
+/* A model in speeds: the speeds given by `initial` (the model's values are
+ * read before --initial, which may override them). */
+static int model_speeds(cli_sim *c) {
+    const qd_model *m = c->mf.model;
+    size_t nu = qd_model_nspeeds(m), at = c->st.n - nu;
+    for (size_t r = 0; r < nu; r++) {
+        const qd_expr *v = qd_model_speed_initial(m, r);
+        if (v && qd_eval(c->ctx, v, c->st.n, c->st.syms, c->st.vals, &c->st.vals[at + r]) !=
+                     QD_OK)
+            return cli_diag_ctx(c->ctx);
+    }
+    return QD_EXIT_OK;
+}
+
+/* A model in speeds: u0 when any speed is given, the others from the
+ * initial velocities by their definitions; else the library finds all of
+ * them from the velocities (projected onto the constraints first). */
+static int initial_speeds(cli_sim *c) {
+    const qd_model *m = c->mf.model;
+    size_t nu = qd_model_nspeeds(m), at = c->st.n - nu;
+    bool any = false;
+    for (size_t r = 0; r < nu; r++)
+        any = any || !isnan(c->st.vals[at + r]);
+    if (!any)
+        return QD_EXIT_OK;
+    c->u0 = malloc((nu + 1) * sizeof *c->u0);
+    if (!c->u0)
+        return QD_EXIT_FAIL;
+    for (size_t r = 0; r < nu; r++) {
+        c->u0[r] = c->st.vals[at + r];
+        if (isnan(c->u0[r]) && qd_eval(c->ctx, qd_model_speed_definition(m, r), at,
+                                       c->st.syms, c->st.vals, &c->u0[r]) != QD_OK)
+            return cli_diag_ctx(c->ctx);
+    }
     return QD_EXIT_OK;
 }
 
@@ -289,8 +351,10 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m);
     int rc = cli_state_init(c->ctx, m, &c->st);
-    if (rc == QD_EXIT_OK && !c->e)
-        rc = add_momenta(c);
+    if (rc == QD_EXIT_OK && !c->e && !c->se)
+        rc = add_names(c, n, qd_model_momentum);
+    if (rc == QD_EXIT_OK && c->se)
+        rc = add_names(c, qd_model_nspeeds(m), qd_model_speed);
     if (rc != QD_EXIT_OK)
         return rc;
     for (size_t i = 0; i < n; i++)
@@ -300,6 +364,8 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
                              &c->st.vals[o * n + i]) != QD_OK)
                 return cli_diag_ctx(c->ctx);
         }
+    if (c->se && (rc = model_speeds(c)) != QD_EXIT_OK)
+        return rc;
     if (a->initial && (rc = cli_state_parse(c->ctx, m, a->initial, &c->st)) != QD_EXIT_OK)
         return rc;
     /* the equations' coordinates are the model's, in its order */
@@ -314,7 +380,7 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
         c->q0[j] = c->st.vals[i];
         c->qd0[j] = c->st.vals[n + i];
     }
-    return c->e ? QD_EXIT_OK : initial_momenta(c);
+    return c->se ? initial_speeds(c) : c->e ? QD_EXIT_OK : initial_momenta(c);
 }
 
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
@@ -337,6 +403,7 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     o->q0 = c->q0;
     o->qd0 = c->qd0;
     o->p0 = c->p0;
+    o->u0 = c->u0;
     if (!qd_sim_method_adaptive(o->method) && !a->has_dt) {
         cli_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
         return QD_EXIT_USAGE;
@@ -399,6 +466,12 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         c->s = qd_sim_new_hamilton(c->ctx, c->mf.model);
         if (!c->s)
             return cli_diag_ctx(c->ctx);
+    } else if (qd_model_nspeeds(c->mf.model) && !a->no_speeds) {
+        /* the constraints eliminated: no multipliers to solve for */
+        c->se = qd_speeds_derive(c->ctx, c->mf.model, NULL);
+        if (!c->se)
+            return cli_eom_derive_error(c->ctx, &c->mf);
+        c->s = qd_sim_new_speeds(c->ctx, c->mf.model, c->se);
     } else {
         c->e = qd_eom_derive(c->ctx, c->mf.model);
         if (!c->e)
@@ -416,7 +489,10 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = add_event(c, a->events[i], a->event_stop[i]);
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
-    if (rc == QD_EXIT_OK && a->native && !c->e)
+    if (rc == QD_EXIT_OK && a->native && c->se)
+        fprintf(stderr, "qdot: note: --native takes the multiplier form (--no-speeds); using "
+                        "the compiled programs\n");
+    else if (rc == QD_EXIT_OK && a->native && !c->e)
         fprintf(stderr, "qdot: note: --native takes models given by T and V or L; using the "
                         "compiled programs\n");
     else if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
@@ -430,12 +506,23 @@ void cli_sim_free(cli_sim *c) {
     free(c->native);
     free(c->q0);
     free(c->p0);
+    free(c->u0);
     qd_sim_free(c->s);
+    if (c->se)
+        qd_speeds_eom_free(c->se);
     cli_state_free(&c->st);
     if (c->e)
         qd_eom_free(c->e);
     cli_model_file_free(&c->mf);
     qd_ctx_free(c->ctx);
+}
+
+size_t cli_sim_ncon(const cli_sim *c) {
+    return c->se ? c->se->ncon : c->e ? c->e->ncon : 0;
+}
+
+const qd_con *cli_sim_con(const cli_sim *c, size_t k) {
+    return c->se ? &c->se->con[k] : &c->e->con[k];
 }
 
 int cli_sim_fail(cli_sim *c, qd_status st) {
