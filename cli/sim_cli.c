@@ -343,17 +343,65 @@ static int initial_speeds(cli_sim *c) {
         if (isnan(c->u0[r]) && qd_eval(c->ctx, qd_model_speed_definition(m, r), at,
                                        c->st.syms, c->st.vals, &c->u0[r]) != QD_OK)
             return cli_diag_ctx(c->ctx);
+        c->st.vals[at + r] = c->u0[r];
     }
     return QD_EXIT_OK;
+}
+
+/* --no-speeds with speeds given: the velocities they stand for, by the
+ * kinematics q' = W u + w (which also keep the constraints). */
+static int velocities_from_speeds(cli_sim *c) {
+    qd_speeds_eom *se = qd_speeds_derive(c->ctx, c->mf.model, NULL);
+    if (!se)
+        return cli_eom_derive_error(c->ctx, &c->mf);
+    size_t n = se->n;
+    double *qd = malloc((n + 1) * sizeof *qd);
+    qd_status st = qd ? qd_speeds_eval(c->ctx, se, c->st.n, c->st.syms, c->st.vals, qd, NULL,
+                                       NULL)
+                      : QD_ERR_NOMEM;
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        for (size_t i = 0; i < n; i++)
+            if (se->q[i] == c->e->q[j])
+                c->qd0[j] = qd[i];
+    free(qd);
+    qd_speeds_eom_free(se);
+    free(c->u0); /* the multiplier form takes velocities */
+    c->u0 = NULL;
+    return st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+}
+
+/* --initial onto the state.  When it names a velocity or a speed, the
+ * model's initial speeds it does not name give way (they follow from the
+ * velocities): the motion is the command line's. */
+static int parse_initial(cli_sim *c, const char *text) {
+    const qd_model *m = c->mf.model;
+    size_t n = qd_model_ncoords(m), nu = qd_model_nspeeds(m), at = c->st.n - nu;
+    cli_state g = {.n = c->st.n, .syms = c->st.syms, .vals = malloc(c->st.n * sizeof(double))};
+    if (!g.vals)
+        return QD_EXIT_FAIL;
+    for (size_t i = 0; i < g.n; i++)
+        g.vals[i] = NAN;
+    int rc = cli_state_parse(c->ctx, m, text, &g);
+    bool motion = false;
+    for (size_t i = 0; i < g.n; i++)
+        motion = motion || (!isnan(g.vals[i]) && ((i >= n && i < 2 * n) || i >= at));
+    for (size_t i = 0; rc == QD_EXIT_OK && i < g.n; i++)
+        if (!isnan(g.vals[i]))
+            c->st.vals[i] = g.vals[i];
+        else if (motion && nu && i >= at)
+            c->st.vals[i] = NAN;
+    free(g.vals);
+    return rc;
 }
 
 static int initial_values(cli_sim *c, const cli_sim_args *a) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m);
+    bool speeds = qd_model_nspeeds(m) > 0;
     int rc = cli_state_init(c->ctx, m, &c->st);
     if (rc == QD_EXIT_OK && !c->e && !c->se)
         rc = add_names(c, n, qd_model_momentum);
-    if (rc == QD_EXIT_OK && c->se)
+    if (rc == QD_EXIT_OK && speeds)
         rc = add_names(c, qd_model_nspeeds(m), qd_model_speed);
     if (rc != QD_EXIT_OK)
         return rc;
@@ -364,9 +412,9 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
                              &c->st.vals[o * n + i]) != QD_OK)
                 return cli_diag_ctx(c->ctx);
         }
-    if (c->se && (rc = model_speeds(c)) != QD_EXIT_OK)
+    if (speeds && (rc = model_speeds(c)) != QD_EXIT_OK)
         return rc;
-    if (a->initial && (rc = cli_state_parse(c->ctx, m, a->initial, &c->st)) != QD_EXIT_OK)
+    if (a->initial && (rc = parse_initial(c, a->initial)) != QD_EXIT_OK)
         return rc;
     /* the equations' coordinates are the model's, in its order */
     c->q0 = malloc((2 * n + 1) * sizeof *c->q0);
@@ -380,7 +428,9 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
         c->q0[j] = c->st.vals[i];
         c->qd0[j] = c->st.vals[n + i];
     }
-    return c->se ? initial_speeds(c) : c->e ? QD_EXIT_OK : initial_momenta(c);
+    if (speeds && (rc = initial_speeds(c)) == QD_EXIT_OK && c->e && c->u0)
+        rc = velocities_from_speeds(c);
+    return speeds || c->e ? rc : initial_momenta(c);
 }
 
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
