@@ -370,9 +370,9 @@ static int velocities_from_speeds(cli_sim *c) {
     return st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
 }
 
-/* --initial onto the state.  When it names a velocity or a speed, the
- * model's initial speeds it does not name give way (they follow from the
- * velocities): the motion is the command line's. */
+/* --initial onto the state.  When it names a velocity, the model's initial
+ * speeds it does not name give way (they follow from the velocities): the
+ * motion is the command line's.  A speed it names replaces the model's. */
 static int parse_initial(cli_sim *c, const char *text) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m), nu = qd_model_nspeeds(m), at = c->st.n - nu;
@@ -384,7 +384,7 @@ static int parse_initial(cli_sim *c, const char *text) {
     int rc = cli_state_parse(c->ctx, m, text, &g);
     bool motion = false;
     for (size_t i = 0; i < g.n; i++)
-        motion = motion || (!isnan(g.vals[i]) && ((i >= n && i < 2 * n) || i >= at));
+        motion = motion || (!isnan(g.vals[i]) && i >= n && i < 2 * n);
     for (size_t i = 0; rc == QD_EXIT_OK && i < g.n; i++)
         if (!isnan(g.vals[i]))
             c->st.vals[i] = g.vals[i];
