@@ -156,6 +156,14 @@ static const qd_expr *definition(const cli_sim *c, const char *name) {
     return d ? d : speed_definition(c, name);
 }
 
+/* Simulating in speeds, a constraint's multiplier lambda_NAME by name. */
+static bool speeds_multiplier(const cli_sim *c, const char *name) {
+    for (size_t k = 0; c->se && k < c->se->ncon; k++)
+        if (!strcmp(qd_expr_name(c->se->con[k].lambda), name))
+            return true;
+    return false;
+}
+
 /* Read text[a, b) against the model: definitions substituted. */
 static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
     trim(&a, &b);
@@ -191,6 +199,12 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
             is_momentum(c, syms[i]))
             continue;
         const qd_expr *d = definition(c, qd_expr_name(syms[i]));
+        if (!d && speeds_multiplier(c, qd_expr_name(syms[i]))) {
+            cli_diag_error("%s: '%s' in '%s': the multipliers are not computed in generalized "
+                          "speeds (use --no-speeds)", what, qd_expr_name(syms[i]), text);
+            x = NULL;
+            break;
+        }
         if (!d) {
             cli_diag_error("%s: unknown name '%s' in '%s' (use coordinates, velocities q', t, "
                           "parameters, the model's definitions and the multipliers "

@@ -23,6 +23,7 @@ import csv
 import io
 import json
 import math
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -179,6 +180,7 @@ def main():
     rc, out, err = run(qdot, 'simulate', wall, '--t-end', 1, '--no-speeds')
     check(rc == 0, f'impacts --no-speeds: {rc} {err}')
 
+    shutil.rmtree(tmp, ignore_errors=True)
     for f in failures:
         print('FAIL:', f)
     if len(failures) > 20:
