@@ -12,7 +12,7 @@ Physics checked:
   w constant, the centre on the circle of radius v/w in every row, to 1e-10;
 - the Chaplygin sleigh: v = V tanh(c V t + atanh(v0/V)), c = m b/(J + m b^2),
   V^2 = 2E/m (the derivation is in tests/sim/test_sim_speeds.c), with bdf
-  and gl4;
+  and gl4, and the time theta reaches 1 (--stop-at) by the Gudermannian;
 - Euler's free rigid body (Desloge ch. 68 Ex. 2): energy and |L| = |I w|
   conserved in every row;
 - the columns, initial speeds from --initial, a speed's name in --output,
@@ -140,6 +140,18 @@ def main():
             worst = max(abs(r[4] - V * math.tanh(c * V * r[0] + math.atanh(v0 / V)))
                         for r in data)
             check(worst < tol, f'sleigh {args[1]}: v off the closed form by {worst}')
+
+    # an event in speeds: theta = 1 where the Gudermannian says,
+    # theta - theta0 = w0 cosh(s0)/(c V) (gd(s) - gd(s0)), s = c V t + s0
+    rc, out, err = run(qdot, 'simulate', sleigh, '--t-end', 5, '--rtol', 1e-12, '--stop-at',
+                       'theta = 1, w > 0', '--format', 'json', '--out', '/dev/null')
+    check(rc == 0, f'sleigh event: {rc} {err}')
+    if rc == 0:
+        s0 = math.atanh(v0 / V)
+        g = 2 * math.atan(math.tanh(s0 / 2)) + 0.7 * c * V / (w0 * math.cosh(s0))
+        t1 = (2 * math.atanh(math.tan(g / 2)) - s0) / (c * V)
+        got = json.loads(out)['final']['t']
+        check(abs(got - t1) < 1e-10, f'sleigh: theta = 1 at t = {got}, closed form {t1}')
 
     # --initial by a speed's name; a speed in --output is its definition
     rc, out, err = run(qdot, 'simulate', sleigh, '--t-end', 1, '--dt', 0.5, '--initial',
