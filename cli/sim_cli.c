@@ -395,7 +395,7 @@ static int parse_initial(cli_sim *c, const char *text) {
         return QD_EXIT_FAIL;
     for (size_t i = 0; i < g.n; i++)
         g.vals[i] = NAN;
-    int rc = cli_state_parse(c->ctx, m, text, &g);
+    int rc = cli_state_parse_as(c->ctx, m, "--initial", text, &g);
     bool motion = false;
     for (size_t i = 0; i < g.n; i++)
         motion = motion || (!isnan(g.vals[i]) && i >= n && i < 2 * n);
