@@ -19,6 +19,23 @@
 
 #include "../base/mem.h"
 
+/* M_u = W^T M W, entry (r, s), simplified. */
+static const qd_expr *mass(qd__spd *d, const qd_expr *const *M, size_t r, size_t s) {
+    qd_ctx *ctx = d->ctx;
+    const qd_speeds_eom *e = d->e;
+    size_t n = d->n, m = d->m;
+    const qd_expr *x = qd_int(ctx, 0);
+    for (size_t j = 0; j < n; j++) {
+        const qd_expr *Wjr = e->W[j * m + r];
+        if (qd_is_zero(Wjr))
+            continue;
+        for (size_t k = 0; k < n; k++)
+            if (!qd_is_zero(M[j * n + k]) && !qd_is_zero(e->W[k * m + s]))
+                x = qd_add(ctx, x, qd_mul(ctx, Wjr, qd_mul(ctx, M[j * n + k], e->W[k * m + s])));
+    }
+    return qd_simplify(ctx, x);
+}
+
 qd_status qd__spd_kane(qd__spd *d) {
     qd_ctx *ctx = d->ctx;
     qd_speeds_eom *e = d->e;
@@ -30,45 +47,39 @@ qd_status qd__spd_kane(qd__spd *d) {
         qd__free(buf);
         return st != QD_OK ? st : QD_ERR_NOMEM;
     }
-    const qd_expr **M = buf, **g = M + n * n, **a0 = g + n, **rows = a0 + n;
-    const qd_expr **zero = rows; /* u' = 0, borrowed before rows are made */
+    const qd_expr **M = buf, **g = M + n * n, **a0 = g + n, **zero = a0 + n;
     for (size_t r = 0; r < m; r++)
         zero[r] = qd_int(ctx, 0);
     for (size_t j = 0; j < n; j++)
         a0[j] = qd_subs(ctx, d->acc[j], m, e->ud, zero);
     for (size_t i = 0; i < n * n; i++)
         M[i] = qd__spd_on_motion(d, sh->M[i]);
-    /* g = f - M a0: what is left when every u' is 0 */
+    /* g = f - M a0, what is left when every u' is 0, simplified per
+     * coordinate before the projection mixes them */
     for (size_t j = 0; j < n; j++) {
         const qd_expr *x = qd__spd_on_motion(d, sh->f[j]);
         for (size_t k = 0; k < n; k++)
             if (!qd_is_zero(M[j * n + k]) && !qd_is_zero(a0[k]))
                 x = qd_sub(ctx, x, qd_mul(ctx, M[j * n + k], a0[k]));
-        g[j] = x;
+        if (!(g[j] = qd__spd_tidy(d, x)))
+            st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
     }
-    for (size_t r = 0; r < m; r++) {
+    /* M is symmetric unless D or Q bring accelerations: then so is W^T M W */
+    bool sym = true;
+    for (size_t j = 0; j < n; j++)
+        for (size_t k = 0; k < j; k++)
+            sym = sym && sh->M[j * n + k] == sh->M[k * n + j];
+    for (size_t r = 0; st == QD_OK && r < m; r++) {
+        for (size_t s = 0; s < m && st == QD_OK; s++)
+            if (!(e->M[r * m + s] = sym && s < r ? e->M[s * m + r] : mass(d, M, r, s)))
+                st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
         const qd_expr *x = qd_int(ctx, 0);
-        for (size_t j = 0; j < n; j++) {
-            const qd_expr *Wjr = e->W[j * m + r];
-            if (qd_is_zero(Wjr))
-                continue;
-            /* (M W u')_j - g_j */
-            const qd_expr *Mj = qd_neg(ctx, g[j]);
-            for (size_t k = 0; k < n; k++)
-                for (size_t s = 0; s < m; s++)
-                    if (!qd_is_zero(M[j * n + k]) && !qd_is_zero(e->W[k * m + s]))
-                        Mj = qd_add(ctx, Mj, qd_mul(ctx, qd_mul(ctx, M[j * n + k], e->W[k * m + s]),
-                                                    e->ud[s]));
-            x = qd_add(ctx, x, qd_mul(ctx, Wjr, Mj));
-        }
-        rows[r] = x;
+        for (size_t j = 0; j < n; j++)
+            if (!qd_is_zero(e->W[j * m + r]) && !qd_is_zero(g[j]))
+                x = qd_add(ctx, x, qd_mul(ctx, e->W[j * m + r], g[j]));
+        if (st == QD_OK && !(e->f[r] = qd__spd_tidy(d, x)))
+            st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
     }
-    for (size_t r = 0; r < m; r++)
-        if (!rows[r]) {
-            qd__free(buf);
-            return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-        }
-    st = qd__spd_rows(d, rows);
     qd__free(buf);
     return st;
 }
