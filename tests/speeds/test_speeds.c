@@ -71,9 +71,9 @@ static void check_vs_lagrange(qd_ctx *ctx, const qd_model *m, const qd_speeds_eo
         }
         put(&s, qd_time(ctx), 0.4 + 0.3 * trial);
         for (size_t j = 0; j < se->n; j++)
-            put(&s, se->q[j], 0.45 + 0.7 * rand() / (double)RAND_MAX);
+            put(&s, se->q[j], 0.45 + 0.7 * (rand() / (double)RAND_MAX));
         for (size_t r = 0; r < se->m; r++)
-            put(&s, se->u[r], -1 + 2 * rand() / (double)RAND_MAX);
+            put(&s, se->u[r], -1 + 2 * (rand() / (double)RAND_MAX));
         double qd[16], ud[16], lam[16], qdd[16], lam_e[16];
         assert_int_equal(qd_speeds_eval(ctx, se, s.ns, s.syms, s.vals, qd, ud,
                                         se->mult ? lam : NULL), QD_OK);
