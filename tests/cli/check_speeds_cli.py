@@ -1,0 +1,298 @@
+#!/usr/bin/env python3
+"""`qdot eom` on models with generalized speeds (issue 15).
+
+    python3 tests/cli/check_speeds_cli.py --build BUILD_DIR
+
+Every result is checked against a textbook form written here, through
+Debian's SymPy, never against qdot's own printing:
+
+- Euler's equations of a free rigid body (Desloge ch. 68 Ex. 2; reference
+  seed-desloge-C.md C13, pitfall 18: z-x-z angles, body components):
+  A w1' = (B - C) w2 w3 and cyclic, from examples/euler_free_body.qd, by
+  --method kane, appell and hamel; the SymPy script and the JSON document of
+  each method, and the three methods with each other, agree exactly
+  (simplify of the difference is 0).
+- The central force in polar coordinates with the areal velocity
+  A = r^2 th'/2 (seed-desloge-C.md T1, ch. 68 Ex. 1: m r'' - 4 m A^2/r^3 = F_r,
+  A' = 0) by all three methods, and the Gibbs-Appell function of --appell
+  against T3 (ch. 69 Ex. 1: S = m/2 r''^2 + 2 m A'^2/r^2 - 4 m A^2 r''/r^3 up to
+  terms free of the quasi-accelerations).
+- The kinematics q' = W u + w: put back into the speeds' definitions (C13's
+  map for the body, the T1 definitions for the particle) they give u.
+- --multipliers on the rolling disk (Desloge ch. 52 Ex. 1, examples/
+  rolling_disk.qd with a force) equal the multipliers of `qdot eom --solve`
+  of the same model without its speeds line, at random states (q' from the
+  kinematics, u' from M u' = f solved), to 1e-10.
+- Usage errors: an unknown --method (exit 2, the names listed), --appell,
+  --multipliers or --method on a model without speeds, --solve on one with.
+
+Prints "N passed, N failed"; exit 1 on failure."""
+import argparse
+import json
+import os
+import random
+import re
+import subprocess
+import sys
+import tempfile
+
+import sympy
+from sympy import Function, Matrix, Symbol, cos, sin, simplify
+
+results = {'passed': 0, 'failed': 0}
+METHODS = ('kane', 'appell', 'hamel')
+
+CENTRAL = """coordinates r, th
+parameters m = 1
+functions F
+T = m/2*(r'^2 + r^2*th'^2)
+Q[r] = F(r)
+speeds v = r', A = r^2*th'/2
+"""
+
+# examples/rolling_disk.qd with a force, so that the multipliers depend on it.
+DISK = """coordinates x1, x2, ph, psi
+parameters m = 1.4, a = 0.35, g = 9.81, f1 = 0.3, f2 = -0.2
+
+body disk mass m inertia disk(m, a) at (x1, x2, a) orientation euler(ph, pi/2, psi)
+V = m*g*a
+force (f1, f2, 0) at (x1, x2, a)
+
+constraint roll1: x1' + a*psi'*cos(ph) = 0
+constraint roll2: x2' + a*psi'*sin(ph) = 0
+"""
+DISK_SPEEDS = "speeds u_ph = ph', u_psi = psi'\n"
+
+
+def check(name, ok, detail=''):
+    results['passed' if ok else 'failed'] += 1
+    if not ok:
+        print('FAIL %s %s' % (name, str(detail)[:600]))
+
+
+def zero(e):
+    return simplify(sympy.expand(e)) == 0
+
+
+def run(qdot, *args):
+    return subprocess.run([qdot, *args], capture_output=True, text=True, timeout=300)
+
+
+def script(qdot, path, *args):
+    """The names the printed SymPy script defines, or None (and a failure)."""
+    p = run(qdot, 'eom', path, '--format', 'sympy', *args)
+    if p.returncode != 0:
+        check('eom %s %s' % (path, ' '.join(args)), False, p.stderr)
+        return None
+    ns = {}
+    try:
+        exec(compile(p.stdout, '<qdot eom>', 'exec'), ns)
+    except Exception as ex:  # the script must run as printed
+        check('eom %s script runs' % path, False, '%s\n%s' % (ex, p.stdout[:400]))
+        return None
+    return ns
+
+
+def document(qdot, path, *args):
+    p = run(qdot, 'eom', path, '--format', 'json', *args)
+    if p.returncode != 0:
+        check('eom %s json' % path, False, p.stderr)
+        return None
+    return json.loads(p.stdout)
+
+
+class Plain:
+    """Coordinates and speeds as plain symbols: x(t) -> x, x' -> x__d,
+    x'' -> x__dd, the same for the SymPy script and for the JSON text."""
+
+    def __init__(self, names):
+        self.names = names
+        t = Symbol('t')
+        self.rules = []
+        for n in names:
+            f = Function(n)(t)
+            self.rules += [(f.diff(t, 2), Symbol(n + '__dd')), (f.diff(t), Symbol(n + '__d')),
+                           (f, Symbol(n))]
+
+    def __call__(self, x):
+        for old, new in self.rules:  # derivatives before the functions
+            x = x.subs(old, new)
+        return x
+
+    def read(self, text):
+        s = re.sub(r"([A-Za-z_]\w*)''", r'\1__dd', text)
+        s = re.sub(r"([A-Za-z_]\w*)'", r'\1__d', s).replace('^', '**')
+        names = set(re.findall(r'[A-Za-z_]\w*', s)) - {'sin', 'cos', 'tan', 'sqrt', 'exp',
+                                                         'log', 'atan2', 'pi'}
+        return sympy.sympify(s, locals={n: Symbol(n) for n in names})
+
+    def sym(self, name, order=0):
+        return Symbol(name + ('', '__d', '__dd')[order])
+
+
+def equations(ns, plain):
+    """M u' - f of a script, in plain symbols."""
+    u = [plain(x) for x in ns['u']]
+    ud = Matrix([Symbol(str(x) + '__d') for x in u])
+    return plain(ns['M'] * ud - ns['f'])
+
+
+def euler_reference():
+    """Euler's equations I1 w1' - (I2 - I3) w2 w3 = 0 and cyclic (C13)."""
+    A, B, C = Symbol('A'), Symbol('B'), Symbol('C')
+    w = [Symbol('w%d' % i) for i in (1, 2, 3)]
+    wd = [Symbol('w%d__d' % i) for i in (1, 2, 3)]
+    return Matrix([A * wd[0] - (B - C) * w[1] * w[2], B * wd[1] - (C - A) * w[2] * w[0],
+                   C * wd[2] - (A - B) * w[0] * w[1]])
+
+
+def euler_definitions():
+    """The body components of the angular velocity in z-x-z angles (C13)."""
+    ph, th, ps = Symbol('phi'), Symbol('theta'), Symbol('psi')
+    phd, thd, psd = Symbol('phi__d'), Symbol('theta__d'), Symbol('psi__d')
+    return [cos(ps) * thd + sin(th) * sin(ps) * phd, -sin(ps) * thd + sin(th) * cos(ps) * phd,
+            cos(th) * phd + psd]
+
+
+def check_kinematics(name, kin, qs, defs, us):
+    """Substituting q' = kin into each definition gives back the speed."""
+    rule = {Symbol(q + '__d'): k for q, k in zip(qs, kin)}
+    for d, u in zip(defs, us):
+        back = sympy.trigsimp(simplify(d.subs(rule)))
+        check('%s kinematics give %s' % (name, u), zero(back - Symbol(u)), back)
+
+
+def check_euler(qdot, root):
+    path = os.path.join(root, 'examples', 'euler_free_body.qd')
+    plain = Plain(['phi', 'theta', 'psi', 'w1', 'w2', 'w3'])
+    ref = euler_reference()
+    got = {}
+    for method in METHODS:
+        ns = script(qdot, path, '--method', method)
+        doc = document(qdot, path, '--method', method)
+        if ns is None or doc is None:
+            continue
+        eq = equations(ns, plain)
+        for r in range(3):
+            check('euler %s row %d is Euler\'s' % (method, r), zero(eq[r] - ref[r]), eq[r])
+        kin = [plain(x) for x in ns['kin']]
+        check_kinematics('euler %s' % method, kin, ['phi', 'theta', 'psi'],
+                         euler_definitions(), ['w1', 'w2', 'w3'])
+        check('euler %s json keys' % method,
+              doc.get('speeds') == ['w1', 'w2', 'w3'] and doc.get('method') == method
+              and doc.get('coordinates') == ['phi', 'theta', 'psi'], doc)
+        M = Matrix([[plain.read(x) for x in row] for row in doc['mass_matrix']])
+        f = Matrix([plain.read(x) for x in doc['forcing']])
+        check('euler %s json M = script M' % method, zero(sum(M - plain(ns['M']))), M)
+        check('euler %s json f = script f' % method,
+              all(zero(a - b) for a, b in zip(f, plain(ns['f']))), f)
+        jkin = {k['coordinate']: plain.read(k['expression']) for k in doc['kinematics']}
+        check('euler %s json kinematics' % method,
+              all(zero(jkin[q] - k) for q, k in zip(['phi', 'theta', 'psi'], kin)), jkin)
+        got[method] = (eq, kin)
+    for method in METHODS[1:]:
+        if 'kane' in got and method in got:
+            same = all(zero(a - b) for a, b in zip(got['kane'][0], got[method][0]))
+            check('euler kane = %s' % method, same)
+
+
+def central_reference():
+    m, r, A = Symbol('m'), Symbol('r'), Symbol('A')
+    rdd, Ad, Fr = Symbol('v__d'), Symbol('A__d'), Function('F')(r)
+    # dS/du' - Pi in T1/T3's scale: m r'' - 4 m A^2/r^3 - F_r and 4 m A'/r^2
+    eqs = Matrix([m * rdd - 4 * m * A**2 / r**3 - Fr, 4 * m * Ad / r**2])
+    S = m / 2 * rdd**2 + 2 * m * Ad**2 / r**2 - 4 * m * A**2 * rdd / r**3
+    return eqs, S
+
+
+def check_central(qdot, d):
+    path = os.path.join(d, 'central.qd')
+    with open(path, 'w') as fh:
+        fh.write(CENTRAL)
+    plain = Plain(['r', 'th', 'v', 'A'])
+    ref, S_ref = central_reference()
+    for method in METHODS:
+        ns = script(qdot, path, '--method', method, '--appell')
+        if ns is None:
+            continue
+        eq = equations(ns, plain)
+        for k in range(2):
+            check('central %s Hamel row %d' % (method, k), zero(eq[k] - ref[k]), eq[k])
+        S = plain(ns['S'])
+        for ud in (Symbol('v__d'), Symbol('A__d')):
+            check('central %s S = T3 up to %s-free terms' % (method, ud),
+                  zero(sympy.diff(S - S_ref, ud)), S)
+        r, A, thd = Symbol('r'), Symbol('A'), Symbol('th__d')
+        check_kinematics('central %s' % method, [plain(x) for x in ns['kin']], ['r', 'th'],
+                         [Symbol('r__d'), r**2 * thd / 2], ['v', 'A'])
+
+
+def disk_values(ns):
+    return {ns[p]: v for p, v in (('m', 1.4), ('a', 0.35), ('g', 9.81), ('f1', 0.3),
+                                  ('f2', -0.2))}
+
+
+def check_disk(qdot, d):
+    plain_path, speeds_path = os.path.join(d, 'disk.qd'), os.path.join(d, 'disk_speeds.qd')
+    with open(plain_path, 'w') as fh:
+        fh.write(DISK)
+    with open(speeds_path, 'w') as fh:
+        fh.write(DISK + DISK_SPEEDS)
+    coords = script(qdot, plain_path, '--solve')
+    speeds = script(qdot, speeds_path, '--multipliers')
+    if coords is None or speeds is None:
+        return
+    check('disk: two dynamic equations', speeds['M'].shape == (2, 2), speeds['M'].shape)
+    qs = ['x1', 'x2', 'ph', 'psi']
+    plain = Plain(qs + ['u_ph', 'u_psi'])
+    lam_c = plain(coords['lam_value'].subs(disk_values(coords)))
+    lam_s = plain(speeds['lam_value'].subs(disk_values(speeds)))
+    M, f = plain(speeds['M'].subs(disk_values(speeds))), plain(speeds['f'].subs(disk_values(speeds)))
+    kin = plain(speeds['kin'].subs(disk_values(speeds)))
+    rng = random.Random(15)
+    worst = 0.0
+    for _ in range(5):
+        state = {Symbol(q): rng.uniform(-2, 2) for q in qs}
+        state.update({Symbol('u_ph'): rng.uniform(-2, 2), Symbol('u_psi'): rng.uniform(-2, 2)})
+        qd = kin.subs(state)
+        ud = M.subs(state).LUsolve(f.subs(state))
+        at = dict(state)
+        at.update({Symbol(q + '__d'): qd[j] for j, q in enumerate(qs)})
+        at.update({Symbol('u_ph__d'): ud[0], Symbol('u_psi__d'): ud[1]})
+        for k in range(2):
+            a, b = float(lam_c[k].subs(at)), float(lam_s[k].subs(at))
+            worst = max(worst, abs(a - b) / max(1.0, abs(a)))
+    check('disk multipliers: speeds = coordinates (1e-10)', worst < 1e-10, worst)
+
+
+def check_errors(qdot, root, d):
+    euler = os.path.join(root, 'examples', 'euler_free_body.qd')
+    p = run(qdot, 'eom', euler, '--method', 'lagrange')
+    check('unknown --method: exit 2 listing the names',
+          p.returncode == 2 and all(m in p.stderr for m in METHODS) and not p.stdout, p.stderr)
+    p = run(qdot, 'eom', euler, '--solve')
+    check('--solve with speeds: exit 2', p.returncode == 2 and 'speeds' in p.stderr, p.stderr)
+    path = os.path.join(d, 'disk.qd')
+    for opt in (['--multipliers'], ['--appell'], ['--method', 'kane']):
+        p = run(qdot, 'eom', path, *opt)
+        check('%s without speeds: exit 2' % opt[0],
+              p.returncode == 2 and 'declares no speeds' in p.stderr and not p.stdout, p.stderr)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--build', required=True)
+    ap.add_argument('--root', default=os.path.join(os.path.dirname(__file__), '..', '..'))
+    args = ap.parse_args()
+    qdot = os.path.join(args.build, 'qdot')
+    with tempfile.TemporaryDirectory() as d:
+        check_euler(qdot, args.root)
+        check_central(qdot, d)
+        check_disk(qdot, d)
+        check_errors(qdot, args.root, d)
+    print('%d passed, %d failed' % (results['passed'], results['failed']))
+    return 1 if results['failed'] else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
