@@ -23,6 +23,8 @@ Debian's SymPy, never against qdot's own printing:
   rolling_disk.qd with a force) equal the multipliers of `qdot eom --solve`
   of the same model without its speeds line, at random states (q' from the
   kinematics, u' from M u' = f solved), to 1e-10.
+- --format c compiles and gives the SymPy script's numbers; --format latex
+  has one line per equation.
 - Usage errors: an unknown --method (exit 2, the names listed), --appell,
   --multipliers or --method on a model without speeds, --solve on one with.
 
@@ -32,6 +34,7 @@ import json
 import os
 import random
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -265,6 +268,63 @@ def check_disk(qdot, d):
     check('disk multipliers: speeds = coordinates (1e-10)', worst < 1e-10, worst)
 
 
+C_MAIN = """#include <math.h>
+#include <stdio.h>
+int main(void) {
+    double %s;
+    double qd[3], M[3][3], f[3], S;
+%s
+    printf("%%.17g %%.17g %%.17g %%.17g %%.17g %%.17g %%.17g %%.17g\\n", qd[0], qd[1], qd[2],
+           M[0][0], M[1][1], f[0], f[2], S);
+    return 0;
+}
+"""
+
+
+def check_c(qdot, root, d):
+    """The C block, compiled, gives the numbers of the SymPy script at a state."""
+    cc = os.environ.get('CC', 'cc')
+    if not shutil.which(cc):
+        print('note: no C compiler (%s): the C format is not checked' % cc)
+        return
+    path = os.path.join(root, 'examples', 'euler_free_body.qd')
+    p = run(qdot, 'eom', path, '--format', 'c', '--appell')
+    ns = script(qdot, path, '--appell')
+    if p.returncode != 0 or ns is None:
+        check('euler --format c', False, p.stderr)
+        return
+    inputs = re.search(r'inputs \(doubles in scope\):([^*]*)\*/', p.stdout).group(1).split()
+    plain = Plain(['phi', 'theta', 'psi', 'w1', 'w2', 'w3'])
+    rng = random.Random(68)
+    vals = {name: rng.uniform(0.3, 1.2) for name in inputs}
+    vals.update(A=1.0, B=2.0, C=3.0, t=0.0)
+    src = os.path.join(d, 'euler.c')
+    with open(src, 'w') as fh:
+        fh.write(C_MAIN % (', '.join('%s = %r' % kv for kv in vals.items()), p.stdout))
+    exe = os.path.join(d, 'euler')
+    comp = subprocess.run([cc, '-std=c99', '-o', exe, src, '-lm'], capture_output=True, text=True)
+    if comp.returncode != 0:
+        check('euler C block compiles', False, comp.stderr)
+        return
+    got = [float(x) for x in subprocess.run([exe], capture_output=True, text=True).stdout.split()]
+    at = {Symbol(k.replace('_d', '__d') if k.endswith('_d') else k): v for k, v in vals.items()}
+    want = [plain(x) for x in list(ns['kin']) + [ns['M'][0, 0], ns['M'][1, 1], ns['f'][0],
+                                                 ns['f'][2], ns['S']]]
+    want = [float(w.subs(at)) for w in want]
+    check('euler C block = SymPy script', len(got) == len(want) and all(
+        abs(a - b) <= 1e-12 * max(1.0, abs(b)) for a, b in zip(got, want)), (got, want))
+
+
+def check_latex(qdot, root):
+    """One align line per kinematic and dynamic equation, and one for S."""
+    path = os.path.join(root, 'examples', 'euler_free_body.qd')
+    p = run(qdot, 'eom', path, '--format', 'latex', '--appell')
+    lines = [x for x in p.stdout.splitlines() if '&=' in x]
+    check('euler latex: 3 + 3 + 1 lines', p.returncode == 0 and len(lines) == 7, p.stdout)
+    check('euler latex: the speeds\' rates', '\\dot{w_{1}}' in p.stdout
+          or '\\dot{w}_{1}' in p.stdout or '\\dot{w_1}' in p.stdout, p.stdout)
+
+
 def check_errors(qdot, root, d):
     euler = os.path.join(root, 'examples', 'euler_free_body.qd')
     p = run(qdot, 'eom', euler, '--method', 'lagrange')
@@ -289,6 +349,8 @@ def main():
         check_euler(qdot, args.root)
         check_central(qdot, d)
         check_disk(qdot, d)
+        check_c(qdot, args.root, d)
+        check_latex(qdot, args.root)
         check_errors(qdot, args.root, d)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
