@@ -25,7 +25,7 @@ Debian's SymPy, never against qdot's own printing:
   kinematics, u' from M u' = f solved), to 1e-10.
 - --format c compiles and gives the SymPy script's numbers; --format latex
   has one line per equation.
-- Usage errors: an unknown --method (exit 2, the names listed), --appell,
+- Errors: speeds that repeat a constraint (located, exit 2); an unknown --method (exit 2, the names listed), --appell,
   --multipliers or --method on a model without speeds, --solve on one with.
 
 Prints "N passed, N failed"; exit 1 on failure."""
@@ -332,6 +332,15 @@ def check_errors(qdot, root, d):
           p.returncode == 2 and all(m in p.stderr for m in METHODS) and not p.stdout, p.stderr)
     p = run(qdot, 'eom', euler, '--solve')
     check('--solve with speeds: exit 2', p.returncode == 2 and 'speeds' in p.stderr, p.stderr)
+    # A speed that repeats a constraint leaves q' undetermined: a located
+    # error (QD_REASON_DEPENDENT_SPEEDS) at the model's line, exit 2.
+    dep = os.path.join(d, 'disk_dependent.qd')
+    with open(dep, 'w') as fh:
+        fh.write(DISK + "speeds u_ph = ph', u_roll = x1' + a*psi'*cos(ph)\n")
+    p = run(qdot, 'eom', dep)
+    check('dependent speeds: exit 2 at a line of the model',
+          p.returncode == 2 and re.search(r'disk_dependent\.qd:\d+:\d+: error', p.stderr)
+          and not p.stdout, p.stderr)
     path = os.path.join(d, 'disk.qd')
     for opt in (['--multipliers'], ['--appell'], ['--method', 'kane']):
         p = run(qdot, 'eom', path, *opt)
