@@ -314,7 +314,7 @@ static const char *speeds_option(const eom_args *a) {
 }
 
 static const char *coords_option(const eom_args *a) {
-    return a->solve ? "--solve" : a->eliminate ? "--eliminate" : a->at ? "--at" : NULL;
+    return a->solve ? "--solve" : a->eliminate ? "--eliminate" : NULL;
 }
 
 /* Lagrange's equations in the coordinates: M q'' = f (+ A^T lambda). */
@@ -333,22 +333,61 @@ static int run_coords(eom_run *r, const eom_args *a) {
     return rc == QD_EXIT_OK ? emit(r, a->fmt) : rc;
 }
 
-/* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
-static int run_speeds(eom_run *r, const eom_args *a) {
-    const char *opt = coords_option(a);
-    if (opt) {
-        cli_diag_error("%s is not available for a model with generalized speeds (%s declares "
-                       "them): qdot eom prints M u' = f in the speeds", opt, a->file);
-        return QD_EXIT_USAGE;
+/* The --at state of a model with speeds: cli_state's (q, q', t, the
+ * parameters) with the speeds appended, so that --at names them; the
+ * velocities follow from the kinematics and must not be given. */
+static int speeds_state(eom_run *r, const qd_speeds_eom *e, const char *at) {
+    cli_state *st = &r->st;
+    int rc = cli_state_init(r->ctx, r->mf.model, st);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    const qd_expr **syms = realloc(st->syms, (st->n + e->m) * sizeof *syms);
+    if (syms)
+        st->syms = syms;
+    double *vals = syms ? realloc(st->vals, (st->n + e->m) * sizeof *vals) : NULL;
+    if (!vals) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
     }
-    qd_speeds_opts opts = {.method = a->smethod, .appell = a->appell,
-                           .multipliers = a->multipliers};
-    qd_speeds_eom *e = qd_speeds_derive(r->ctx, r->mf.model, &opts);
-    if (!e)
-        return cli_eom_derive_error(r->ctx, &r->mf);
-    cli_speeds_view v = {.ctx = r->ctx, .mf = &r->mf, .e = e};
+    st->vals = vals;
+    for (size_t i = 0; i < e->m; i++) {
+        st->syms[st->n + i] = e->u[i];
+        st->vals[st->n + i] = 0;
+    }
+    st->n += e->m;
+    rc = cli_state_parse(r->ctx, r->mf.model, at, st);
+    for (size_t j = 0; rc == QD_EXIT_OK && j < e->n; j++)
+        if (st->vals[e->n + j] != 0) {
+            cli_diag_error("--at: %s' is given, but with speeds the velocities follow from "
+                           "them: give the speeds (%s, ...)", qd_expr_name(e->q[j]),
+                           qd_expr_name(e->u[0]));
+            rc = QD_EXIT_USAGE;
+        }
+    return rc;
+}
+
+/* --at: q', u' and the multipliers at the state (qd_speeds_eval). */
+static int speeds_at(eom_run *r, const qd_speeds_eom *e, const char *at, double *num,
+                     cli_speeds_view *v) {
+    int rc = speeds_state(r, e, at);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    v->st = &r->st;
+    v->qd = num;
+    v->ud = num + e->n;
+    v->lambda = e->mult ? num + e->n + e->m : NULL;
+    qd_status st = qd_speeds_eval(r->ctx, e, r->st.n, r->st.syms, r->st.vals, num,
+                                  num + e->n, e->mult ? num + e->n + e->m : NULL);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    cli_diag_error("cannot evaluate the equations at this state: %s",
+                   qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
+    return st == QD_ERR_NOMEM ? cli_diag_ctx(r->ctx) : QD_EXIT_FAIL;
+}
+
+static int speeds_emit(const cli_speeds_view *v, cli_eom_format fmt) {
     qd_buf b = QD_BUF_INIT;
-    qd_status st = cli_speeds_write(&v, a->fmt, &b);
+    qd_status st = cli_speeds_write(v, fmt, &b);
     int rc = QD_EXIT_OK;
     if (st == QD_OK && !b.failed) {
         fputs(qd_buf_str(&b), stdout);
@@ -358,6 +397,38 @@ static int run_speeds(eom_run *r, const eom_args *a) {
         rc = QD_EXIT_FAIL;
     }
     qd_buf_free(&b);
+    return rc;
+}
+
+/* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
+static int run_speeds(eom_run *r, const eom_args *a) {
+    const char *opt = coords_option(a);
+    if (opt) {
+        cli_diag_error("%s is not available for a model with generalized speeds (%s declares "
+                       "them): qdot eom prints M u' = f in the speeds", opt, a->file);
+        return QD_EXIT_USAGE;
+    }
+    if (a->at && a->fmt != QD_EOM_TEXT && a->fmt != QD_EOM_JSON) {
+        cli_diag_error("--at with speeds prints text or json");
+        return QD_EXIT_USAGE;
+    }
+    qd_speeds_opts opts = {.method = a->smethod, .appell = a->appell,
+                           .multipliers = a->multipliers};
+    qd_speeds_eom *e = qd_speeds_derive(r->ctx, r->mf.model, &opts);
+    if (!e)
+        return cli_eom_derive_error(r->ctx, &r->mf);
+    cli_speeds_view v = {.ctx = r->ctx, .mf = &r->mf, .e = e};
+    double *num = a->at ? calloc(e->n + e->m + e->ncon + 1, sizeof *num) : NULL;
+    int rc = QD_EXIT_OK;
+    if (a->at && !num) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
+    }
+    if (rc == QD_EXIT_OK && a->at)
+        rc = speeds_at(r, e, a->at, num, &v);
+    if (rc == QD_EXIT_OK)
+        rc = speeds_emit(&v, a->fmt);
+    free(num);
     qd_speeds_eom_free(e);
     return rc;
 }

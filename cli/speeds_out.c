@@ -110,8 +110,52 @@ static qd_status text_dynamics(const cli_speeds_view *v, qd_buf *b) {
     return st;
 }
 
+/* ---- numbers at a state (--at) ------------------------------------------------ */
+
+/* The k-th value shown of the state (k < n + m + 1): the coordinates, the
+ * speeds, then t; the velocity slots are not used, the parameters are in
+ * the header. */
+static size_t state_slot(const cli_speeds_view *v, size_t k) {
+    size_t nq = v->e->n, m = v->e->m, first_speed = v->st->n - m;
+    return k < nq ? k : k < nq + m ? first_speed + (k - nq) : 2 * nq;
+}
+
+static void text_state(const cli_speeds_view *v, qd_buf *b) {
+    qd_buf_puts(b, "at:");
+    for (size_t k = 0; k < v->e->n + v->e->m + 1; k++) {
+        size_t i = state_slot(v, k);
+        qd_buf_printf(b, "%s%s = ", k ? ", " : " ", qd_expr_name(v->st->syms[i]));
+        cli_state_put_double(b, v->st->vals[i]);
+    }
+    qd_buf_puts(b, "\n");
+}
+
+static void text_number(qd_buf *b, const char *name, const char *suffix, double x) {
+    qd_buf_printf(b, "  %s%s = ", name, suffix);
+    cli_state_put_double(b, x);
+    qd_buf_puts(b, "\n");
+}
+
+static qd_status write_text_at(const cli_speeds_view *v, qd_buf *b) {
+    text_state(v, b);
+    qd_buf_puts(b, "\nvelocities q' = W u + w:\n");
+    for (size_t j = 0; j < v->e->n; j++)
+        text_number(b, qname(v, j), "'", v->qd[j]);
+    qd_buf_puts(b, "\nthe speeds' rates, M u' = f solved:\n");
+    for (size_t r = 0; r < v->e->m; r++)
+        text_number(b, uname(v, r), "'", v->ud[r]);
+    if (v->lambda) {
+        qd_buf_puts(b, "\nmultipliers:\n");
+        for (size_t k = 0; k < v->e->ncon; k++)
+            text_number(b, qd_expr_name(v->e->con[k].lambda), "", v->lambda[k]);
+    }
+    return QD_OK;
+}
+
 static qd_status write_text(const cli_speeds_view *v, qd_buf *b) {
     text_header(v, b);
+    if (v->st)
+        return write_text_at(v, b);
     qd_status st = text_kinematics(v, b);
     if (st == QD_OK)
         st = text_dynamics(v, b);
@@ -272,12 +316,50 @@ static qd_status json_constraints(const cli_speeds_view *v, cli_json *j, qd_buf 
     return st;
 }
 
+static void json_numbers(cli_json *j, const char *key, const double *x, size_t n) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        cli_json_number(j, x[i]);
+    cli_json_end_array(j);
+}
+
+/* --at: "state" (coordinates, speeds, t by name), "velocities" (in the
+ * order of "coordinates"), "rates" (of "speeds") and "multipliers". */
+static void json_at(const cli_speeds_view *v, cli_json *j) {
+    cli_json_key(j, "state");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < v->e->n + v->e->m + 1; k++) {
+        size_t i = state_slot(v, k);
+        cli_json_key(j, qd_expr_name(v->st->syms[i]));
+        cli_json_number(j, v->st->vals[i]);
+    }
+    cli_json_end_object(j);
+    json_numbers(j, "velocities", v->qd, v->e->n);
+    json_numbers(j, "rates", v->ud, v->e->m);
+    if (!v->lambda)
+        return;
+    cli_json_key(j, "multipliers");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < v->e->ncon; k++) {
+        cli_json_key(j, v->e->con[k].name);
+        cli_json_number(j, v->lambda[k]);
+    }
+    cli_json_end_object(j);
+}
+
 static qd_status write_json(const cli_speeds_view *v, qd_buf *b) {
     qd_buf tmp = QD_BUF_INIT;
     cli_json j;
     cli_json_init(&j, b);
     cli_json_begin_object(&j);
     json_header(v, &j);
+    if (v->st) {
+        json_at(v, &j);
+        cli_json_end_object(&j);
+        qd_buf_puts(b, "\n");
+        return cli_json_ok(&j) ? QD_OK : b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+    }
     qd_status st = json_kinematics(v, &j, &tmp);
     if (st == QD_OK && v->e->T) {
         cli_json_key(&j, "T");

@@ -23,6 +23,9 @@ Debian's SymPy, never against qdot's own printing:
   rolling_disk.qd with a force) equal the multipliers of `qdot eom --solve`
   of the same model without its speeds line, at random states (q' from the
   kinematics, u' from M u' = f solved), to 1e-10.
+- --at: the speeds' rates of the free body are Euler's and its velocities
+  give back the speeds; on the rolling disk the multipliers and rates equal
+  those of `qdot eom --at` without the speeds (1e-10).
 - --format c compiles and gives the SymPy script's numbers; --format latex
   has one line per equation.
 - Errors: speeds that repeat a constraint (located, exit 2); an unknown --method (exit 2, the names listed), --appell,
@@ -325,6 +328,69 @@ def check_latex(qdot, root):
           or '\\dot{w}_{1}' in p.stdout or '\\dot{w_1}' in p.stdout, p.stdout)
 
 
+def at_json(qdot, path, state, *args):
+    at = ', '.join('%s=%r' % kv for kv in state.items())
+    p = run(qdot, 'eom', path, '--at', at, '--format', 'json', *args)
+    if p.returncode != 0:
+        check('eom %s --at %s' % (path, at), False, p.stderr)
+        return None
+    return json.loads(p.stdout)
+
+
+def check_euler_at(qdot, root):
+    """--at: u' from Euler's equations and q' that give back the speeds
+    through C13's map, at random states (numbers from qd_speeds_eval)."""
+    path = os.path.join(root, 'examples', 'euler_free_body.qd')
+    rng = random.Random(682)
+    A, B, C = 1.0, 2.0, 3.0
+    for _ in range(3):
+        q = {'phi': rng.uniform(-3, 3), 'theta': rng.uniform(0.3, 2.8), 'psi': rng.uniform(-3, 3)}
+        w = [rng.uniform(-2, 2) for _ in range(3)]
+        state = dict(q)
+        state.update({'w%d' % (i + 1): w[i] for i in range(3)})
+        doc = at_json(qdot, path, state)
+        if doc is None:
+            return
+        want = [(B - C) * w[1] * w[2] / A, (C - A) * w[2] * w[0] / B, (A - B) * w[0] * w[1] / C]
+        got = doc.get('rates', [])
+        check('euler --at rates are Euler\'s', len(got) == 3 and all(
+            abs(g - x) <= 1e-12 * max(1.0, abs(x)) for g, x in zip(got, want)), (got, want))
+        rule = {Symbol(n): v for n, v in q.items()}
+        rule.update({Symbol(n + '__d'): v for n, v in zip(('phi', 'theta', 'psi'),
+                                                          doc.get('velocities', []))})
+        back = [float(x.subs(rule)) for x in euler_definitions()]
+        check('euler --at velocities give the speeds back', all(
+            abs(b - x) <= 1e-12 * max(1.0, abs(x)) for b, x in zip(back, w)), (back, w))
+
+
+def check_disk_at(qdot, d):
+    """--multipliers --at against `qdot eom --at` without the speeds: the
+    library's numeric paths (qd_speeds_eval, qd_eom_eval) agree to 1e-10."""
+    rng = random.Random(52)
+    worst = 0.0
+    for _ in range(3):
+        q = {n: rng.uniform(-2, 2) for n in ('x1', 'x2', 'ph', 'psi')}
+        u = {'u_ph': rng.uniform(-2, 2), 'u_psi': rng.uniform(-2, 2)}
+        state = dict(q)
+        state.update(u)
+        ds = at_json(qdot, os.path.join(d, 'disk_speeds.qd'), state, '--multipliers')
+        if ds is None:
+            return
+        coords = dict(q)
+        coords.update({n + "'": v for n, v in zip(ds['coordinates'], ds['velocities'])})
+        dc = at_json(qdot, os.path.join(d, 'disk.qd'), coords)
+        if dc is None:
+            return
+        for k in ('roll1', 'roll2'):
+            a, b = dc['multipliers'][k], ds['multipliers'][k]
+            worst = max(worst, abs(a - b) / max(1.0, abs(a)))
+        # the rates of the speeds are the accelerations of ph and psi
+        acc = dict(zip(dc['coordinates'], dc['accelerations']))
+        for r, n in enumerate(('ph', 'psi')):
+            worst = max(worst, abs(acc[n] - ds['rates'][r]) / max(1.0, abs(acc[n])))
+    check('disk --at: speeds = coordinates (multipliers, rates; 1e-10)', worst < 1e-10, worst)
+
+
 def check_errors(qdot, root, d):
     euler = os.path.join(root, 'examples', 'euler_free_body.qd')
     p = run(qdot, 'eom', euler, '--method', 'lagrange')
@@ -341,6 +407,11 @@ def check_errors(qdot, root, d):
     check('dependent speeds: exit 2 at a line of the model',
           p.returncode == 2 and re.search(r'disk_dependent\.qd:\d+:\d+: error', p.stderr)
           and not p.stdout, p.stderr)
+    p = run(qdot, 'eom', euler, '--at', "theta=1, phi'=0.5")
+    check('--at with a velocity on a model with speeds: exit 2',
+          p.returncode == 2 and 'speeds' in p.stderr and not p.stdout, p.stderr)
+    p = run(qdot, 'eom', euler, '--at', 'theta=1', '--format', 'latex')
+    check('--at with speeds in latex: exit 2', p.returncode == 2 and not p.stdout, p.stderr)
     path = os.path.join(d, 'disk.qd')
     for opt in (['--multipliers'], ['--appell'], ['--method', 'kane']):
         p = run(qdot, 'eom', path, *opt)
@@ -358,6 +429,8 @@ def main():
         check_euler(qdot, args.root)
         check_central(qdot, d)
         check_disk(qdot, d)
+        check_euler_at(qdot, args.root)
+        check_disk_at(qdot, d)
         check_c(qdot, args.root, d)
         check_latex(qdot, args.root)
         check_errors(qdot, args.root, d)
