@@ -32,9 +32,11 @@ static bool is_speed(const cli_speeds_view *v, const char *name) {
 
 static cli_name pick(const cli_speeds_view *v, const char *base) {
     cli_name n = cli_script_name(v->mf->model, base);
-    while (is_speed(v, n.s) && strlen(n.s) + 1 < sizeof n.s) {
-        cli_name longer;
-        snprintf(longer.s, sizeof longer.s, "%s_", n.s);
+    size_t len;
+    while (is_speed(v, n.s) && (len = strlen(n.s)) + 2 <= sizeof n.s) {
+        cli_name longer = n;
+        longer.s[len] = '_';
+        longer.s[len + 1] = '\0';
         n = cli_script_name(v->mf->model, longer.s);
     }
     return n;
