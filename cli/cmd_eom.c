@@ -17,6 +17,7 @@
  */
 #include "cli.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
@@ -366,6 +367,23 @@ static int speeds_state(eom_run *r, const qd_speeds_eom *e, const char *at) {
     return rc;
 }
 
+/* Every number at the state is finite; else the error naming the first
+ * that is not (1/sin(theta) at theta = 0: the speed map is singular there). */
+static int finite_at(const qd_speeds_eom *e, const double *num) {
+    size_t total = e->n + e->m + (e->mult ? e->ncon : 0);
+    for (size_t i = 0; i < total; i++) {
+        if (isfinite(num[i]))
+            continue;
+        const char *what = i < e->n ? qd_expr_name(e->q[i])
+                         : i < e->n + e->m ? qd_expr_name(e->u[i - e->n])
+                                           : qd_expr_name(e->con[i - e->n - e->m].lambda);
+        cli_diag_error("at this state %s%s is not a finite number (the speeds may not determine "
+                       "the velocities there)", what, i < e->n + e->m ? "'" : "");
+        return QD_EXIT_FAIL;
+    }
+    return QD_EXIT_OK;
+}
+
 /* --at: q', u' and the multipliers at the state (qd_speeds_eval). */
 static int speeds_at(eom_run *r, const qd_speeds_eom *e, const char *at, double *num,
                      cli_speeds_view *v) {
@@ -379,7 +397,7 @@ static int speeds_at(eom_run *r, const qd_speeds_eom *e, const char *at, double 
     qd_status st = qd_speeds_eval(r->ctx, e, r->st.n, r->st.syms, r->st.vals, num,
                                   num + e->n, e->mult ? num + e->n + e->m : NULL);
     if (st == QD_OK)
-        return QD_EXIT_OK;
+        return finite_at(e, num);
     cli_diag_error("cannot evaluate the equations at this state: %s",
                    qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
     return st == QD_ERR_NOMEM ? cli_diag_ctx(r->ctx) : QD_EXIT_FAIL;

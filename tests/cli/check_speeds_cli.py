@@ -410,6 +410,10 @@ def check_errors(qdot, root, d):
     p = run(qdot, 'eom', euler, '--at', "theta=1, phi'=0.5")
     check('--at with a velocity on a model with speeds: exit 2',
           p.returncode == 2 and 'speeds' in p.stderr and not p.stdout, p.stderr)
+    # theta = 0: phi' = (w1 sin(psi) + w2 cos(psi))/sin(theta) is not a number
+    p = run(qdot, 'eom', euler, '--at', 'theta=0, w1=1')
+    check('--at where the speed map is singular: exit 1, no numbers',
+          p.returncode == 1 and 'finite' in p.stderr and not p.stdout, p.stderr)
     p = run(qdot, 'eom', euler, '--at', 'theta=1', '--format', 'latex')
     check('--at with speeds in latex: exit 2', p.returncode == 2 and not p.stdout, p.stderr)
     path = os.path.join(d, 'disk.qd')
