@@ -404,9 +404,19 @@ def check_errors(qdot, root, d):
     with open(dep, 'w') as fh:
         fh.write(DISK + "speeds u_ph = ph', u_roll = x1' + a*psi'*cos(ph)\n")
     p = run(qdot, 'eom', dep)
-    check('dependent speeds: exit 2 at a line of the model',
-          p.returncode == 2 and re.search(r'disk_dependent\.qd:\d+:\d+: error', p.stderr)
+    check('a speed repeating roll1: exit 2 at the constraint roll1 (line 8)',
+          p.returncode == 2 and re.search(r'disk_dependent\.qd:8:\d+: error: .*roll1', p.stderr)
           and not p.stdout, p.stderr)
+    # Two speeds along theta': the second is the one to blame, at its name.
+    rep = os.path.join(d, 'euler_repeated.qd')
+    with open(rep, 'w') as fh:
+        fh.write("coordinates phi, theta, psi\nparameters A = 1, B = 2, C = 3\n"
+                 "body b mass 1 inertia (A, B, C) at (0, 0, 0) orientation euler(phi, theta, psi)\n"
+                 "speeds w1 = theta', w2 = 2*theta', w3 = psi'\n")
+    p = run(qdot, 'eom', rep)
+    check('a speed repeating another: exit 2 at w2 (4:21)',
+          p.returncode == 2 and 'euler_repeated.qd:4:21: error' in p.stderr and 'w2' in p.stderr,
+          p.stderr)
     p = run(qdot, 'eom', euler, '--at', "theta=1, phi'=0.5")
     check('--at with a velocity on a model with speeds: exit 2',
           p.returncode == 2 and 'speeds' in p.stderr and not p.stdout, p.stderr)
