@@ -28,8 +28,11 @@ Debian's SymPy, never against qdot's own printing:
   those of `qdot eom --at` without the speeds (1e-10).
 - --format c compiles and gives the SymPy script's numbers; --format latex
   has one line per equation.
-- Errors: speeds that repeat a constraint (located, exit 2); an unknown --method (exit 2, the names listed), --appell,
-  --multipliers or --method on a model without speeds, --solve on one with.
+- Errors: speeds that repeat a constraint or another speed (exit 2, at the
+  statement to blame); an unknown --method (exit 2, the names listed);
+  --appell, --multipliers or --method on a model without speeds, --solve on
+  one with, a velocity in --at with speeds (exit 2); a state where the speed
+  map is singular (exit 1).
 
 Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
@@ -253,8 +256,9 @@ def check_disk(qdot, d):
     plain = Plain(qs + ['u_ph', 'u_psi'])
     lam_c = plain(coords['lam_value'].subs(disk_values(coords)))
     lam_s = plain(speeds['lam_value'].subs(disk_values(speeds)))
-    M, f = plain(speeds['M'].subs(disk_values(speeds))), plain(speeds['f'].subs(disk_values(speeds)))
-    kin = plain(speeds['kin'].subs(disk_values(speeds)))
+    vals = disk_values(speeds)
+    M, f = plain(speeds['M'].subs(vals)), plain(speeds['f'].subs(vals))
+    kin = plain(speeds['kin'].subs(vals))
     rng = random.Random(15)
     worst = 0.0
     for _ in range(5):
