@@ -6,9 +6,10 @@
 Every result is checked against a textbook form written here, through
 Debian's SymPy, never against qdot's own printing:
 
-- Euler's equations of a free rigid body (Desloge ch. 68 Ex. 2; reference
-  seed-desloge-C.md C13, pitfall 18: z-x-z angles, body components):
-  A w1' = (B - C) w2 w3 and cyclic, from examples/euler_free_body.qd, by
+- Euler's equations of a rigid body under a torque G fixed in it (Desloge
+  ch. 68 Ex. 2; reference seed-desloge-C.md C13, pitfall 18: z-x-z angles,
+  body components): A w1' = (B - C) w2 w3 + G1 and cyclic, from
+  examples/euler_free_body.qd (w-cross's, also check_speeds_sympy's), by
   --method kane, appell and hamel; the SymPy script and the JSON document of
   each method, and the three methods with each other, agree exactly
   (simplify of the difference is 0).
@@ -23,7 +24,7 @@ Debian's SymPy, never against qdot's own printing:
   rolling_disk.qd with a force) equal the multipliers of `qdot eom --solve`
   of the same model without its speeds line, at random states (q' from the
   kinematics, u' from M u' = f solved), to 1e-10.
-- --at: the speeds' rates of the free body are Euler's and its velocities
+- --at: the speeds' rates of the body are Euler's and its velocities
   give back the speeds; on the rolling disk the multipliers and rates equal
   those of `qdot eom --at` without the speeds (1e-10).
 - --format c compiles and gives the SymPy script's numbers; --format latex
@@ -147,12 +148,15 @@ def equations(ns, plain):
 
 
 def euler_reference():
-    """Euler's equations I1 w1' - (I2 - I3) w2 w3 = 0 and cyclic (C13)."""
+    """Euler's equations I1 w1' - (I2 - I3) w2 w3 = G1 and cyclic (C13), G the
+    torque's body components, as M u' - f."""
     A, B, C = Symbol('A'), Symbol('B'), Symbol('C')
+    G = [Symbol('G%d' % i) for i in (1, 2, 3)]
     w = [Symbol('w%d' % i) for i in (1, 2, 3)]
     wd = [Symbol('w%d__d' % i) for i in (1, 2, 3)]
-    return Matrix([A * wd[0] - (B - C) * w[1] * w[2], B * wd[1] - (C - A) * w[2] * w[0],
-                   C * wd[2] - (A - B) * w[0] * w[1]])
+    return Matrix([A * wd[0] - (B - C) * w[1] * w[2] - G[0],
+                   B * wd[1] - (C - A) * w[2] * w[0] - G[1],
+                   C * wd[2] - (A - B) * w[0] * w[1] - G[2]])
 
 
 def euler_definitions():
@@ -342,20 +346,24 @@ def at_json(qdot, path, state, *args):
 
 
 def check_euler_at(qdot, root):
-    """--at: u' from Euler's equations and q' that give back the speeds
-    through C13's map, at random states (numbers from qd_speeds_eval)."""
+    """--at: u' from Euler's equations (with a torque G named in --at) and q'
+    that give back the speeds through C13's map, at random states (numbers
+    from qd_speeds_eval)."""
     path = os.path.join(root, 'examples', 'euler_free_body.qd')
     rng = random.Random(682)
     A, B, C = 1.0, 2.0, 3.0
     for _ in range(3):
         q = {'phi': rng.uniform(-3, 3), 'theta': rng.uniform(0.3, 2.8), 'psi': rng.uniform(-3, 3)}
         w = [rng.uniform(-2, 2) for _ in range(3)]
+        G = [rng.uniform(-1, 1) for _ in range(3)]
         state = dict(q)
         state.update({'w%d' % (i + 1): w[i] for i in range(3)})
+        state.update({'G%d' % (i + 1): G[i] for i in range(3)})
         doc = at_json(qdot, path, state)
         if doc is None:
             return
-        want = [(B - C) * w[1] * w[2] / A, (C - A) * w[2] * w[0] / B, (A - B) * w[0] * w[1] / C]
+        want = [((B - C) * w[1] * w[2] + G[0]) / A, ((C - A) * w[2] * w[0] + G[1]) / B,
+                ((A - B) * w[0] * w[1] + G[2]) / C]
         got = doc.get('rates', [])
         check('euler --at rates are Euler\'s', len(got) == 3 and all(
             abs(g - x) <= 1e-12 * max(1.0, abs(x)) for g, x in zip(got, want)), (got, want))
