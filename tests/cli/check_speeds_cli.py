@@ -18,6 +18,8 @@ Debian's SymPy, never against qdot's own printing:
   A' = 0) by all three methods, and the Gibbs-Appell function of --appell
   against T3 (ch. 69 Ex. 1: S = m/2 r''^2 + 2 m A'^2/r^2 - 4 m A^2 r''/r^3 up to
   terms free of the quasi-accelerations).
+- The Chaplygin sleigh (the knife edge): its two equations and the blade's
+  multiplier, with speeds named u and S (the script's outputs become u_, S_).
 - The kinematics q' = W u + w: put back into the speeds' definitions (C13's
   map for the body, the T1 definitions for the particle) they give u.
 - --multipliers on the rolling disk (Desloge ch. 52 Ex. 1, examples/
@@ -72,6 +74,15 @@ constraint roll1: x1' + a*psi'*cos(ph) = 0
 constraint roll2: x2' + a*psi'*sin(ph) = 0
 """
 DISK_SPEEDS = "speeds u_ph = ph', u_psi = psi'\n"
+
+# The Chaplygin sleigh (a knife edge at (x, y), the centre of mass a ahead
+# on the blade), with speeds named u and S like two of the script's outputs.
+SLEIGH = """coordinates x, y, th
+parameters m = 1, Ic = 1/5, a = 1/2
+body sled mass m inertia (0, 0, Ic) at (x + a*cos(th), y + a*sin(th)) orientation rot_z(th)
+constraint blade: -x'*sin(th) + y'*cos(th) = 0
+speeds u = x'*cos(th) + y'*sin(th), S = th'
+"""
 
 
 def check(name, ok, detail=''):
@@ -238,6 +249,38 @@ def check_central(qdot, d):
         r, A, thd = Symbol('r'), Symbol('A'), Symbol('th__d')
         check_kinematics('central %s' % method, [plain(x) for x in ns['kin']], ['r', 'th'],
                          [Symbol('r__d'), r**2 * thd / 2], ['v', 'A'])
+
+
+def check_sleigh(qdot, d):
+    """The knife edge (Neimark and Fufaev ch. III; w-cross's chaplygin_sleigh.qd):
+    m u' = m a w^2, (Ic + m a^2) w' = -m a u w, the blade's multiplier
+    m (u w + a w'), and the script's names kept clear of the speeds."""
+    path = os.path.join(d, 'sleigh.qd')
+    with open(path, 'w') as fh:
+        fh.write(SLEIGH)
+    ns = script(qdot, path, '--appell', '--multipliers')
+    if ns is None:
+        return
+    check('sleigh: the speeds u and S stay functions, the outputs are u_ and S_',
+          isinstance(ns.get('u_'), sympy.MatrixBase) and 'S_' in ns
+          and isinstance(ns['u'], sympy.FunctionClass) and isinstance(ns['S'], sympy.FunctionClass),
+          sorted(k for k in ns if not k.startswith('__'))[:40])
+    if not isinstance(ns.get('u_'), sympy.MatrixBase):
+        return
+    ns['u'] = ns['u_']
+    plain = Plain(['x', 'y', 'th', 'u', 'S'])
+    m, Ic, a = Symbol('m'), Symbol('Ic'), Symbol('a')
+    u, w, ud, wd = Symbol('u'), Symbol('S'), Symbol('u__d'), Symbol('S__d')
+    eq = equations(ns, plain)
+    ref = [m * ud - m * a * w**2, (Ic + m * a**2) * wd + m * a * u * w]
+    for k in range(2):
+        check('sleigh row %d' % k, zero(eq[k] - ref[k]), eq[k])
+    lam = plain(ns['lam_value'][0])
+    check('sleigh multiplier', zero(lam - m * (u * w + a * wd)), lam)
+    th = Symbol('th')
+    check_kinematics('sleigh', [plain(x) for x in ns['kin']], ['x', 'y', 'th'],
+                     [Symbol('x__d') * cos(th) + Symbol('y__d') * sin(th), Symbol('th__d')],
+                     ['u', 'S'])
 
 
 def disk_values(ns):
@@ -455,6 +498,7 @@ def main():
         check_euler(qdot, args.root)
         check_central(qdot, d)
         check_disk(qdot, d)
+        check_sleigh(qdot, d)
         check_euler_at(qdot, args.root)
         check_disk_at(qdot, d)
         check_c(qdot, args.root, d)
