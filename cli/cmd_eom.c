@@ -435,7 +435,7 @@ static int run_speeds(eom_run *r, const eom_args *a) {
     qd_speeds_eom *e = qd_speeds_derive(r->ctx, r->mf.model, &opts);
     if (!e)
         return cli_eom_derive_error(r->ctx, &r->mf);
-    cli_speeds_view v = {.ctx = r->ctx, .mf = &r->mf, .e = e};
+    cli_speeds_view v = {.ctx = r->ctx, .mf = &r->mf, .e = e, .multipliers = a->multipliers};
     double *num = a->at ? calloc(e->n + e->m + e->ncon + 1, sizeof *num) : NULL;
     int rc = QD_EXIT_OK;
     if (a->at && !num) {

@@ -146,7 +146,9 @@ static qd_status write_text_at(const cli_speeds_view *v, qd_buf *b) {
     qd_buf_puts(b, "\nthe speeds' rates, M u' = f solved:\n");
     for (size_t r = 0; r < v->e->m; r++)
         text_number(b, uname(v, r), "'", v->ud[r]);
-    if (v->lambda) {
+    if (v->multipliers && !v->e->ncon)
+        qd_buf_puts(b, "\nmultipliers: none (the model has no constraints)\n");
+    if (v->lambda && v->e->ncon) {
         qd_buf_puts(b, "\nmultipliers:\n");
         for (size_t k = 0; k < v->e->ncon; k++)
             text_number(b, qd_expr_name(v->e->con[k].lambda), "", v->lambda[k]);
@@ -166,7 +168,9 @@ static qd_status write_text(const cli_speeds_view *v, qd_buf *b) {
                        "dropped):\n");
         st = text_line(v, b, "S", v->e->S);
     }
-    if (st == QD_OK && v->e->mult) {
+    if (st == QD_OK && v->multipliers && !v->e->ncon)
+        qd_buf_puts(b, "\nmultipliers: none (the model has no constraints)\n");
+    if (st == QD_OK && v->e->mult && v->e->ncon) {
         qd_buf_puts(b, "\nmultipliers (as in M q'' = f + A^T lambda, in q, u, u' and t):\n");
         for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++)
             st = text_line(v, b, qd_expr_name(v->e->con[k].lambda), v->e->mult[k]);
@@ -339,11 +343,11 @@ static void json_at(const cli_speeds_view *v, cli_json *j) {
     cli_json_end_object(j);
     json_numbers(j, "velocities", v->qd, v->e->n);
     json_numbers(j, "rates", v->ud, v->e->m);
-    if (!v->lambda)
+    if (!v->lambda && !v->multipliers)
         return;
     cli_json_key(j, "multipliers");
     cli_json_begin_object(j);
-    for (size_t k = 0; k < v->e->ncon; k++) {
+    for (size_t k = 0; v->lambda && k < v->e->ncon; k++) {
         cli_json_key(j, v->e->con[k].name);
         cli_json_number(j, v->lambda[k]);
     }
@@ -375,6 +379,11 @@ static qd_status write_json(const cli_speeds_view *v, qd_buf *b) {
     }
     if (st == QD_OK && v->e->ncon)
         st = json_constraints(v, &j, &tmp);
+    if (v->multipliers && !v->e->ncon) {
+        cli_json_key(&j, "multipliers");
+        cli_json_begin_object(&j);
+        cli_json_end_object(&j);
+    }
     cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);

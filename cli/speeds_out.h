@@ -14,6 +14,7 @@ typedef struct cli_speeds_view {
     qd_ctx *ctx;
     const cli_model_file *mf;
     const qd_speeds_eom *e;   /* e->S and e->mult are printed when not NULL */
+    bool multipliers;         /* asked for: said so also when there are none */
     /* --at: the numbers at one state instead (text and JSON only): st the
      * state (q, q', t, the parameters, then u), qd the velocities from the
      * kinematics (n), ud the speeds' rates (m), lambda the multipliers

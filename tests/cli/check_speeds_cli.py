@@ -451,6 +451,9 @@ def check_errors(qdot, root, d):
     p = run(qdot, 'eom', euler, '--method', 'lagrange')
     check('unknown --method: exit 2 listing the names',
           p.returncode == 2 and all(m in p.stderr for m in METHODS) and not p.stdout, p.stderr)
+    p = run(qdot, 'eom', euler, '--multipliers', '--format', 'json')
+    check('--multipliers without constraints: an empty "multipliers"',
+          p.returncode == 0 and json.loads(p.stdout).get('multipliers') == {}, p.stderr)
     p = run(qdot, 'eom', euler, '--solve')
     check('--solve with speeds: exit 2', p.returncode == 2 and 'speeds' in p.stderr, p.stderr)
     # A speed that repeats a constraint leaves q' undetermined: a located
