@@ -11,8 +11,9 @@
  * the Cartesian force of a constraint at a point (qd_eom_reaction).  A model
  * that declares `speeds` gets its equations in the speeds instead,
  * q' = W u + w and M_u u' = f_u (qd_speeds_derive, by --method kane, appell
- * or hamel), with --appell the Gibbs-Appell function and with --multipliers
- * the constraint forces.  The pipeline is here; the output formats are in
+ * or hamel), with --appell the Gibbs-Appell function, with --multipliers
+ * the constraint forces, and with --at the numbers at a state of q, u and t
+ * (qd_speeds_eval).  The pipeline is here; the output formats are in
  * eom_out.c and speeds_out.c.
  */
 #include "cli.h"

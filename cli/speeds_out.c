@@ -7,7 +7,8 @@
  * environment, JSON with expressions as strings in the model language, a
  * SymPy script that runs as it is, one C block sharing subexpressions.  The
  * speeds are functions of t like the coordinates, so u' prints as w1' (text),
- * \dot{w_1} (LaTeX), w1(t).diff(t) (SymPy) and w1_d (C).
+ * \dot{w}_{1} (LaTeX), w1(t).diff(t) (SymPy) and w1_d (C).  With --at the
+ * text and JSON carry numbers instead: q', u' and the multipliers.
  */
 #include "speeds_out.h"
 
@@ -20,9 +21,6 @@
 static const char *qname(const cli_speeds_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
 static const char *uname(const cli_speeds_view *v, size_t r) { return qd_expr_name(v->e->u[r]); }
 
-/* The name of an output of the SymPy and C renderings: cli_script_name's,
- * which knows the coordinates, parameters and functions, also kept clear of
- * the speeds (a speed called u must not be overwritten by the vector). */
 static bool is_speed(const cli_speeds_view *v, const char *name) {
     for (size_t r = 0; r < v->e->m; r++)
         if (!strcmp(name, uname(v, r)))
@@ -30,6 +28,9 @@ static bool is_speed(const cli_speeds_view *v, const char *name) {
     return false;
 }
 
+/* The name of an output of the SymPy and C renderings: cli_script_name's,
+ * which knows the coordinates, parameters and functions, also kept clear of
+ * the speeds (a speed called u must not be overwritten by the vector). */
 static cli_name pick(const cli_speeds_view *v, const char *base) {
     cli_name n = cli_script_name(v->mf->model, base);
     size_t len;
