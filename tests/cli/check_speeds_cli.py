@@ -10,7 +10,8 @@ Debian's SymPy, never against qdot's own printing:
   ch. 68 Ex. 2; reference seed-desloge-C.md C13, pitfall 18: z-x-z angles,
   body components): A w1' = (B - C) w2 w3 + G1 and cyclic, from
   examples/euler_free_body.qd (w-cross's, also check_speeds_sympy's), by
-  --method kane, appell and hamel; the SymPy script and the JSON document of
+  --method kane, appell and hamel, and --appell's S against ch. 70 thm 2
+  (S = 1/2 w'.I.w' + w'.(w x I w)); the SymPy script and the JSON document of
   each method, and the three methods with each other, agree exactly
   (simplify of the difference is 0).
 - The central force in polar coordinates with the areal velocity
@@ -170,6 +171,16 @@ def euler_reference():
                    C * wd[2] - (A - B) * w[0] * w[1] - G[2]])
 
 
+def euler_appell():
+    """S = 1/2 w'.I.w' + w'.(w x I w), I = diag(A, B, C) (Desloge ch. 70
+    thm 2; the torque enters Pi, not S)."""
+    A, B, C = Symbol('A'), Symbol('B'), Symbol('C')
+    w = Matrix([Symbol('w%d' % i) for i in (1, 2, 3)])
+    wd = Matrix([Symbol('w%d__d' % i) for i in (1, 2, 3)])
+    Iw = Matrix([A * w[0], B * w[1], C * w[2]])
+    return (A * wd[0]**2 + B * wd[1]**2 + C * wd[2]**2) / 2 + wd.dot(w.cross(Iw))
+
+
 def euler_definitions():
     """The body components of the angular velocity in z-x-z angles (C13)."""
     ph, th, ps = Symbol('phi'), Symbol('theta'), Symbol('psi')
@@ -192,8 +203,8 @@ def check_euler(qdot, root):
     ref = euler_reference()
     got = {}
     for method in METHODS:
-        ns = script(qdot, path, '--method', method)
-        doc = document(qdot, path, '--method', method)
+        ns = script(qdot, path, '--method', method, '--appell')
+        doc = document(qdot, path, '--method', method, '--appell')
         if ns is None or doc is None:
             continue
         eq = equations(ns, plain)
@@ -213,6 +224,9 @@ def check_euler(qdot, root):
         jkin = {k['coordinate']: plain.read(k['expression']) for k in doc['kinematics']}
         check('euler %s json kinematics' % method,
               all(zero(jkin[q] - k) for q, k in zip(['phi', 'theta', 'psi'], kin)), jkin)
+        S = plain(ns['S'])
+        check('euler %s S is ch. 70 thm 2\'s' % method, zero(S - euler_appell()), S)
+        check('euler %s json S = script S' % method, zero(plain.read(doc.get('S', '0')) - S))
         got[method] = (eq, kin)
     for method in METHODS[1:]:
         if 'kane' in got and method in got:
