@@ -316,7 +316,7 @@ static const char *speeds_option(const eom_args *a) {
 }
 
 static const char *coords_option(const eom_args *a) {
-    return a->solve ? "--solve" : a->eliminate ? "--eliminate" : NULL;
+    return a->eliminate ? "--eliminate" : NULL;
 }
 
 /* Lagrange's equations in the coordinates: M q'' = f (+ A^T lambda). */
@@ -419,6 +419,21 @@ static int speeds_emit(const cli_speeds_view *v, cli_eom_format fmt) {
     return rc;
 }
 
+/* --solve: u' = M_u^-1 f_u symbolically; M_u and f_u stay when too large. */
+static int solve_speeds(eom_run *r, qd_speeds_eom *e) {
+    qd_status st = qd_speeds_solve(r->ctx, e, SOLVE_MAX_OPS);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    if (st == QD_ERR_TOOBIG) {
+        fprintf(stderr, "qdot: note: the solved rates exceed %d operations; "
+                        "printing M and f instead (use --at for numbers)\n", SOLVE_MAX_OPS);
+        qd_ctx_clear_error(r->ctx);
+        return QD_EXIT_OK;
+    }
+    cli_diag_error("cannot solve for the speeds' rates: %s", qd_ctx_message(r->ctx));
+    return QD_EXIT_FAIL;
+}
+
 /* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
 static int run_speeds(eom_run *r, const eom_args *a) {
     const char *opt = coords_option(a);
@@ -437,6 +452,10 @@ static int run_speeds(eom_run *r, const eom_args *a) {
     if (!e)
         return cli_eom_derive_error(r->ctx, &r->mf);
     cli_speeds_view v = {.ctx = r->ctx, .mf = &r->mf, .e = e, .multipliers = a->multipliers};
+    if (a->solve && !a->at && solve_speeds(r, e) != QD_EXIT_OK) {
+        qd_speeds_eom_free(e);
+        return QD_EXIT_FAIL;
+    }
     double *num = a->at ? calloc(e->n + e->m + e->ncon + 1, sizeof *num) : NULL;
     int rc = QD_EXIT_OK;
     if (a->at && !num) {

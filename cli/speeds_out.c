@@ -164,6 +164,14 @@ static qd_status write_text(const cli_speeds_view *v, qd_buf *b) {
     qd_status st = text_kinematics(v, b);
     if (st == QD_OK)
         st = text_dynamics(v, b);
+    if (st == QD_OK && v->e->acc) {
+        qd_buf_puts(b, "\nthe speeds' rates, u' = M^-1 f:\n");
+        for (size_t r = 0; r < v->e->m && st == QD_OK; r++) {
+            char lhs[160];
+            snprintf(lhs, sizeof lhs, "%s'", uname(v, r));
+            st = text_line(v, b, lhs, v->e->acc[r]);
+        }
+    }
     if (st == QD_OK && v->e->S) {
         qd_buf_puts(b, "\nGibbs-Appell function (the acceleration energy, terms free of u' "
                        "dropped):\n");
@@ -210,6 +218,8 @@ static qd_status write_latex(const cli_speeds_view *v, qd_buf *b) {
         const qd_expr *row = latex_row(v, r);
         st = row ? latex_line(v, b, &first, row, e->f[r]) : qd_ctx_status(v->ctx);
     }
+    for (size_t r = 0; e->acc && r < e->m && st == QD_OK; r++)
+        st = latex_line(v, b, &first, e->ud[r], e->acc[r]);
     if (st == QD_OK && e->S) {
         const qd_expr *S = qd_symbol(v->ctx, "S");
         st = S ? latex_line(v, b, &first, S, e->S) : qd_ctx_status(v->ctx);
@@ -288,6 +298,13 @@ static qd_status json_dynamics(const cli_speeds_view *v, cli_json *j, qd_buf *tm
     for (size_t r = 0; r < m && st == QD_OK; r++)
         st = json_expr(v, j, v->e->f[r], tmp);
     cli_json_end_array(j);
+    if (v->e->acc) {
+        cli_json_key(j, "rates");
+        cli_json_begin_array(j);
+        for (size_t r = 0; r < m && st == QD_OK; r++)
+            st = json_expr(v, j, v->e->acc[r], tmp);
+        cli_json_end_array(j);
+    }
     return st;
 }
 
@@ -480,6 +497,8 @@ static qd_status write_sympy(const cli_speeds_view *v, qd_buf *b) {
         st = sympy_assign(v, b, M.s, e->M, e->m, e->m);
     if (st == QD_OK)
         st = sympy_assign(v, b, f.s, e->f, e->m, 1);
+    if (st == QD_OK && e->acc)
+        st = sympy_assign(v, b, pick(v, "ud").s, e->acc, e->m, 1);
     if (st == QD_OK && e->S)
         st = sympy_scalar(v, b, pick(v, "S").s, e->S);
     if (st == QD_OK && e->mult)
@@ -544,6 +563,8 @@ static void c_fill(const cli_speeds_view *v, c_outs *o) {
         c_add(o, e->M[i], M.s, i / m, i % m);
     for (long r = 0; r < m; r++)
         c_add(o, e->f[r], f.s, r, -1);
+    for (long r = 0; e->acc && r < m; r++)
+        c_add(o, e->acc[r], pick(v, "ud").s, r, -1);
     if (e->S)
         c_add(o, e->S, pick(v, "S").s, -1, -1);
     for (long k = 0; e->mult && k < (long)e->ncon; k++)
@@ -552,7 +573,7 @@ static void c_fill(const cli_speeds_view *v, c_outs *o) {
 
 static qd_status write_c(const cli_speeds_view *v, qd_buf *b) {
     const qd_speeds_eom *e = v->e;
-    size_t nout = e->n + e->m * e->m + e->m + 1 + e->ncon;
+    size_t nout = e->n + e->m * e->m + 2 * e->m + 1 + e->ncon;
     c_outs o = {0, malloc(nout * sizeof *o.x), malloc(nout * sizeof *o.names),
                 malloc(nout * sizeof *o.lhs)};
     qd_status st = QD_ERR_NOMEM;
@@ -561,6 +582,8 @@ static qd_status write_c(const cli_speeds_view *v, qd_buf *b) {
         qd_buf_printf(b, "/* qdot eom %s (speeds, %s): q' = %s, %s u' = %s", v->mf->path,
                       qd_speeds_method_name(e->method), pick(v, "qd").s, pick(v, "M").s,
                       pick(v, "f").s);
+        if (e->acc)
+            qd_buf_printf(b, ", the rates that solve them %s", pick(v, "ud").s);
         if (e->S)
             qd_buf_printf(b, ", the Gibbs-Appell function %s", pick(v, "S").s);
         if (e->mult)

@@ -77,9 +77,11 @@ const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *A);
 
 /* Solve A X = B symbolically (A n*n, B and X n*ncols, row-major) by the
  * fraction-free elimination of qd_eom_solve, each entry simplified.
- * QD_ERR_SINGULAR, nothing recorded, when det A simplifies to 0. */
+ * QD_ERR_SINGULAR, nothing recorded, when det A simplifies to 0;
+ * QD_ERR_TOOBIG, nothing recorded, when an entry would exceed max_ops
+ * operations (0: no limit). */
 qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
-                         const qd_expr *const *B, const qd_expr **X);
+                         const qd_expr *const *B, const qd_expr **X, size_t max_ops);
 
 /* ---- constraints ---------------------------------------------------------- */
 

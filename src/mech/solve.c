@@ -234,7 +234,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
 }
 
 qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
-                         const qd_expr *const *B, const qd_expr **X) {
+                         const qd_expr *const *B, const qd_expr **X, size_t max_ops) {
     if (!n)
         return QD_OK;
     size_t w = n + ncols;
@@ -247,7 +247,7 @@ qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t 
         for (size_t c = 0; c < ncols; c++)
             E[i * w + n + c] = B[i * ncols + c];
     }
-    elim el = {ctx, n, w, E, 0, 1};
+    elim el = {ctx, n, w, E, max_ops ? max_ops * GROWTH + 4096 : 0, 1};
     if (st == QD_OK)
         st = bareiss(&el);
     const qd_expr *det = st == QD_OK ? qd_simplify(ctx, E[(n - 1) * w + n - 1]) : NULL;
@@ -260,6 +260,8 @@ qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t 
         for (size_t i = 0; st == QD_OK && i < n; i++)
             if (!(X[i * ncols + c] = quotient(ctx, N[i], det)))
                 st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+            else if (max_ops && qd_count_ops(X[i * ncols + c]) > max_ops)
+                st = QD_ERR_TOOBIG;
     }
     qd__free(E);
     qd__free(N);

@@ -50,6 +50,7 @@ void qd_speeds_eom_free(qd_speeds_eom *e) {
     /* one block holds every array but mult (alloc below) */
     qd__free(e->q);
     qd__free(e->mult);
+    qd__free(e->acc);
     qd__free(e);
 }
 
@@ -232,7 +233,7 @@ static qd_status velocity_map(qd__spd *d) {
         B[i * w + n] = qd_neg(ctx, d->p0[i]);
     }
     if (st == QD_OK)
-        st = qd__solve_cols(ctx, n, d->P, w, B, X);
+        st = qd__solve_cols(ctx, n, d->P, w, B, X, 0);
     if (st == QD_ERR_SINGULAR)
         st = singular_map(d);
     for (size_t i = 0; st == QD_OK && i < n; i++) {
@@ -511,4 +512,26 @@ qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_
         return NULL;
     }
     return d.e;
+}
+
+qd_status qd_speeds_solve(qd_ctx *ctx, qd_speeds_eom *e, size_t max_ops) {
+    if (!ctx || !e)
+        return QD_ERR_ARG;
+    size_t m = e->m;
+    const qd_expr **acc = qd__calloc(ctx, m + 1, sizeof *acc);
+    if (!acc)
+        return nomem(ctx);
+    qd_status st = qd__solve_cols(ctx, m, e->M, 1, e->f, acc, max_ops);
+    if (st != QD_OK) {
+        qd__free(acc);
+        if (qd_ctx_status(ctx) == QD_OK && st == QD_ERR_TOOBIG)
+            qd_ctx_error(ctx, st, "the explicit rates of the speeds exceed %zu operations; keep "
+                                  "M_u u' = f_u", max_ops);
+        else if (qd_ctx_status(ctx) == QD_OK && st == QD_ERR_SINGULAR)
+            qd_ctx_error(ctx, st, "the mass matrix of the speeds is singular for every state");
+        return st;
+    }
+    qd__free(e->acc);
+    e->acc = acc;
+    return QD_OK;
 }

@@ -34,7 +34,7 @@ Debian's SymPy, never against qdot's own printing:
   has one line per equation.
 - Errors: speeds that repeat a constraint or another speed (exit 2, at the
   statement to blame); an unknown --method (exit 2, the names listed);
-  --appell, --multipliers or --method on a model without speeds, --solve on
+  --appell, --multipliers or --method on a model without speeds, --eliminate on
   one with, a velocity in --at with speeds (exit 2); a state where the speed
   map is singular (exit 1).
 
@@ -309,7 +309,7 @@ def check_disk(qdot, d):
     with open(speeds_path, 'w') as fh:
         fh.write(DISK + DISK_SPEEDS)
     coords = script(qdot, plain_path, '--solve')
-    speeds = script(qdot, speeds_path, '--multipliers')
+    speeds = script(qdot, speeds_path, '--multipliers', '--solve')
     if coords is None or speeds is None:
         return
     check('disk: two dynamic equations', speeds['M'].shape == (2, 2), speeds['M'].shape)
@@ -320,13 +320,17 @@ def check_disk(qdot, d):
     vals = disk_values(speeds)
     M, f = plain(speeds['M'].subs(vals)), plain(speeds['f'].subs(vals))
     kin = plain(speeds['kin'].subs(vals))
+    rates = plain(speeds['ud'].subs(vals))
     rng = random.Random(15)
-    worst = 0.0
+    worst = worst_rate = 0.0
     for _ in range(5):
         state = {Symbol(q): rng.uniform(-2, 2) for q in qs}
         state.update({Symbol('u_ph'): rng.uniform(-2, 2), Symbol('u_psi'): rng.uniform(-2, 2)})
         qd = kin.subs(state)
         ud = M.subs(state).LUsolve(f.subs(state))
+        for r in range(2):  # --solve's u' = M^-1 f against SymPy's solve of M, f
+            x = float(rates[r].subs(state))
+            worst_rate = max(worst_rate, abs(x - float(ud[r])) / max(1.0, abs(x)))
         at = dict(state)
         at.update({Symbol(q + '__d'): qd[j] for j, q in enumerate(qs)})
         at.update({Symbol('u_ph__d'): ud[0], Symbol('u_psi__d'): ud[1]})
@@ -334,6 +338,7 @@ def check_disk(qdot, d):
             a, b = float(lam_c[k].subs(at)), float(lam_s[k].subs(at))
             worst = max(worst, abs(a - b) / max(1.0, abs(a)))
     check('disk multipliers: speeds = coordinates (1e-10)', worst < 1e-10, worst)
+    check('disk --solve: u\' = M^-1 f (1e-12)', worst_rate < 1e-12, worst_rate)
 
 
 C_MAIN = """#include <math.h>
@@ -468,8 +473,9 @@ def check_errors(qdot, root, d):
     p = run(qdot, 'eom', euler, '--multipliers', '--format', 'json')
     check('--multipliers without constraints: an empty "multipliers"',
           p.returncode == 0 and json.loads(p.stdout).get('multipliers') == {}, p.stderr)
-    p = run(qdot, 'eom', euler, '--solve')
-    check('--solve with speeds: exit 2', p.returncode == 2 and 'speeds' in p.stderr, p.stderr)
+    p = run(qdot, 'eom', euler, '--eliminate')
+    check('--eliminate with speeds: exit 2', p.returncode == 2 and 'speeds' in p.stderr,
+          p.stderr)
     # A speed that repeats a constraint leaves q' undetermined: a located
     # error (QD_REASON_DEPENDENT_SPEEDS) at the model's line, exit 2.
     dep = os.path.join(d, 'disk_dependent.qd')
