@@ -256,11 +256,14 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
 
 #define MAX_ARGS 16
 
-static bool parse_args(parser *p, value *args, size_t *nargs) {
+/* The arguments of a call; *end is just past its ')', so that the call's
+ * span stops there and not at the next token. */
+static bool parse_args(parser *p, value *args, size_t *nargs, size_t *end) {
     *nargs = 0;
     size_t open = p->lx.tok.off;
     qd__lex_next(&p->lx); /* '(' */
     if (p->lx.tok.kind == TK_RPAREN) {
+        *end = p->lx.tok.off + p->lx.tok.len;
         qd__lex_next(&p->lx);
         return true;
     }
@@ -273,6 +276,7 @@ static bool parse_args(parser *p, value *args, size_t *nargs) {
             qd__lex_next(&p->lx);
             continue;
         }
+        *end = p->lx.tok.off + p->lx.tok.len;
         return qd__mdl_expect_close(p, open);
     }
 }
@@ -341,10 +345,10 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     if (!uf && qd__mdl_is_body_call(name) && (qd__mdl_body_call_ahead(p) || !names_a_value(p, name)))
         return qd__mdl_body_call(p, name, off, out);
     value a[MAX_ARGS];
-    size_t na;
-    if (!parse_args(p, a, &na))
+    size_t na, end = off;
+    if (!parse_args(p, a, &na, &end))
         return false;
-    size_t len = p->lx.tok.off - off;
+    size_t len = end - off;
     if (!strcmp(name, "dot") || !strcmp(name, "cross") || !strcmp(name, "norm"))
         return vector_call(p, name, a, na, out, off, len);
     if (!uf && qd__mdl_is_rot_call(name))
