@@ -5,7 +5,7 @@
  *
  * The rigid body's speeds are the body components of its angular velocity
  * with z-x-z Euler angles, which Desloge ch. 68 Ex. 2 (seed-desloge-C.md)
- * and Goldstein (4.125) write out:
+ * and Goldstein (3rd ed., eq. 4.87) write out:
  *
  *   w1 = phi' sin(theta) sin(psi) + theta' cos(psi)
  *   w2 = phi' sin(theta) cos(psi) - theta' sin(psi)
