@@ -25,6 +25,7 @@
 
 #include "qdot/qdot.h"
 #include "qdot/model.h"
+#include "util/fault.h"
 
 #define EULER_W1 "phi'*sin(theta)*sin(psi) + theta'*cos(psi)"
 #define EULER_W2 "phi'*sin(theta)*cos(psi) - theta'*sin(psi)"
@@ -319,6 +320,39 @@ static void diagnostics(void **state) {
     }
 }
 
+/* Every allocation of the parse, an added speed and a failed addition made
+ * to fail in turn: the right speeds or a clean out of memory, nothing
+ * leaked (the loop counts the blocks). */
+static qd_status speeds_under_faults(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, RIGID_BODY "initial w2 = B/4\n", &d);
+    if (!m)
+        return qd_ctx_status(ctx);
+    qd_status st = qd_model_add_statement(m, "speeds s = theta' + w1", &d);
+    if (st == QD_OK)
+        st = qd_model_add_statement(m, "speeds v = theta'^2", &d);
+    if (st == QD_ERR_PARSE) /* the second must fail, and leave the model as it was */
+        st = qd_model_nspeeds(m) == 4 ? QD_OK : QD_ERR_ARG;
+    else if (st == QD_OK)
+        st = QD_ERR_ARG;
+    if (st == QD_OK) { /* the checks allocate too: not under test */
+        qt_fault_hold(f);
+        assert_string_equal(qd_expr_name(qd_model_speed(m, 3)), "s");
+        assert_is(ctx, qd_model_speed_definition(m, 3), "theta' + " EULER_W1);
+        assert_is(ctx, qd_model_speed_initial(m, 1), "1/2");
+    }
+    qd_model_free(m);
+    if (st == QD_ERR_ARG)
+        fail_msg("the failed speeds statement was kept");
+    return st;
+}
+
+static void out_of_memory(void **state) {
+    (void)state;
+    qt_fault_loop("speeds", speeds_under_faults, NULL, 1);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rigid_body_speeds),
@@ -328,6 +362,7 @@ int main(void) {
         cmocka_unit_test(locate_speed),
         cmocka_unit_test(add_statement),
         cmocka_unit_test(diagnostics),
+        cmocka_unit_test(out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
