@@ -287,6 +287,11 @@ static const bad bad_models[] = {
     {XY "speeds u = x',\n", 4, 15, 1, "expected a speed's name, found the end of the line", NULL},
     {XY "speeds u = x' y'\n", 4, 15, 1, "unexpected a name after the statement", NULL},
     {XY "speeds u = u + x'\n", 4, 12, 1, "unknown name 'u'", NULL},
+    /* a speed's name before its statement, as a definition's */
+    {XY "T2 = 2*u\nspeeds w = y', u = x'\n", 4, 8, 1, "'u' is used before it is defined",
+     "move the definition of 'u' (line 5) above this line"},
+    {XY "speeds w1 = x'\ninitial w2 = 1\n", 5, 9, 2, "'w2' is not a coordinate or a speed",
+     "did you mean 'w1'?"},
     {XY "speeds u = x'\ninitial u' = 1\n", 5, 10, 1, "an initial value is for a speed, not its rate",
      "initial u1 = 0.3"},
     {XY "speeds u = x'\ninitial u = y\n", 5, 13, 1,
