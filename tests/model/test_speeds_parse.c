@@ -151,6 +151,18 @@ static void speeds_add_up(void **state) {
     assert_int_equal(w.length, 1);
     assert_false(qd_model_where(m, "speed:r", &w));
     qd_model_free(m);
+    /* a long name is found whole (the place's key once kept 63 bytes) */
+    char text[400], key[160], name[101];
+    memset(name, 'u', 100);
+    name[100] = '\0';
+    snprintf(text, sizeof text, "coordinates x\nT = x'^2/2\nspeeds %s = x'\n", name);
+    snprintf(key, sizeof key, "speed:%s", name);
+    m = parse_ok(ctx, text);
+    assert_true(qd_model_where(m, key, &w));
+    assert_int_equal(w.length, 100);
+    key[70] = '\0';
+    assert_false(qd_model_where(m, key, NULL));
+    qd_model_free(m);
     qd_ctx_free(ctx);
 }
 
