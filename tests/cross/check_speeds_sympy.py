@@ -35,7 +35,7 @@ from pathlib import Path
 
 import sympy
 from sympy import (Derivative, Float, Function, Matrix, Rational, Symbol, cos, diff, sin,
-                   sqrt, tan)
+                   tan)
 
 EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
 DIGITS = 30
