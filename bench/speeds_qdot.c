@@ -37,6 +37,13 @@ typedef struct opts {
     int min_reps;
 } opts;
 
+/* strdup is POSIX, not C11. */
+static char *copy(const char *s) {
+    size_t n = strlen(s) + 1;
+    char *c = malloc(n);
+    return c ? memcpy(c, s, n) : NULL;
+}
+
 static char *slurp(const char *path) {
     FILE *fp = fopen(path, "rb");
     if (!fp)
@@ -47,7 +54,7 @@ static char *slurp(const char *path) {
     while ((k = fread(chunk, 1, sizeof chunk, fp)) > 0)
         qd_buf_putn(&b, chunk, k);
     fclose(fp);
-    char *text = strdup(qd_buf_str(&b));
+    char *text = copy(qd_buf_str(&b));
     qd_buf_free(&b);
     return text;
 }
@@ -55,7 +62,7 @@ static char *slurp(const char *path) {
 /* The model text without its `speeds` statement (one line), for the
  * multiplier formulation of the same system. */
 static char *without_speeds(const char *text) {
-    char *out = strdup(text);
+    char *out = copy(text);
     if (!out)
         return NULL;
     char *p = out;

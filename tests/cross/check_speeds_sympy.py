@@ -126,7 +126,7 @@ class Symbols:
             self.ns[n] = Symbol(n)
 
     def expr(self, text):
-        return eval(text, self.ns).xreplace(self.plain)
+        return sympy.sympify(eval(text, self.ns)).xreplace(self.plain)
 
 
 def expressions(case, sy):

@@ -29,6 +29,13 @@
 #include "qdot/qdot.h"
 #include "qdot/speeds.h"
 
+/* strdup is POSIX, not C11. */
+static char *copy(const char *s) {
+    size_t n = strlen(s) + 1;
+    char *c = malloc(n);
+    return c ? memcpy(c, s, n) : NULL;
+}
+
 static char *slurp(const char *path) {
     FILE *fp = fopen(path, "rb");
     if (!fp)
@@ -39,7 +46,7 @@ static char *slurp(const char *path) {
     while ((k = fread(chunk, 1, sizeof chunk, fp)) > 0)
         qd_buf_putn(&b, chunk, k);
     fclose(fp);
-    char *text = strdup(qd_buf_str(&b));
+    char *text = copy(qd_buf_str(&b));
     qd_buf_free(&b);
     return text;
 }
