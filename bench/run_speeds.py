@@ -13,14 +13,16 @@ other (never at once):
   qdot speeds       parse + qd_speeds_derive, each method (Kane, Appell, Hamel)
   qdot multipliers  parse + qd_eom_derive of the same model without `speeds`
                     (M q'' = f + A^T lambda, A q'' = b): the reference the
-                    issue's goal is stated against (speeds not slower)
+                    issue's goal is stated against (speeds not slower);
+                    mult+solve adds qd_eom_solve (q'' and lambda explicit,
+                    what the reduced equations in speeds stand for)
   SymPy             KanesMethod with the same speeds (bench/speeds_sympy.py)
 
 qdot runs three rounds (one with --quick) and keeps each variant's best
-median; SymPy runs once.  Sizes are count_ops: qdot's M_u and f_u
-(qd_count_ops counts as SymPy's count_ops does), qdot's M, f, A, b with
-multipliers, SymPy's mass_matrix and forcing as KanesMethod returns them and
-after simplify().  Before the table, qdot's and SymPy's u' are compared at
+median; SymPy runs once.  Sizes are SymPy's count_ops, every result read
+into SymPy the same way (coordinates and speeds functions of t): qdot's M_u
+and f_u, qdot's M, f, A, b with multipliers, SymPy's mass_matrix and forcing
+as KanesMethod returns them and after simplify().  Before the table, qdot's and SymPy's u' are compared at
 random states (1e-9 relative) and, for the bicycle, qdot's kinematics
 against SymPy's dependent speeds.  Exits 1 when a program fails or the
 results disagree; missing the goal is reported, not an error.
@@ -38,7 +40,7 @@ sys.path.insert(0, HERE)
 PYTHON = '/usr/bin/python3'
 MODELS = [('rolling_disk_speeds', os.path.join(ROOT, 'examples', 'rolling_disk_speeds.qd')),
           ('bicycle_speeds', os.path.join(HERE, 'bicycle_speeds.qd'))]
-VARIANTS = ['speeds:kane', 'speeds:appell', 'speeds:hamel', 'multipliers']
+VARIANTS = ['speeds:kane', 'speeds:appell', 'speeds:hamel', 'multipliers', 'multipliers+solve']
 TOL = 1e-9
 # SymPy's dependent speed that is the velocity of a coordinate of qdot's model
 DEPENDENT = {('bicycle_speeds', 'x'): 'ux', ('bicycle_speeds', 'y'): 'uy',
@@ -63,6 +65,8 @@ def run_lines(label, cmd):
                                 'ops': int(f[5])}
         elif len(f) == 4 and f[2] == 'timeout':
             rows[f[0], f[1]] = {'timeout': float(f[3])}
+        elif len(f) == 3 and f[2] == 'failed':
+            rows[f[0], f[1]] = {'failed': True}
     return rows
 
 
@@ -70,7 +74,9 @@ def best_of(rounds):
     out = {}
     for rows in rounds:
         for key, r in rows.items():
-            if key not in out or r['med'] < out[key]['med']:
+            if 'med' not in r:
+                out.setdefault(key, r)
+            elif 'med' not in out.get(key, {}) or r['med'] < out[key]['med']:
                 reps = r['reps'] + out.get(key, {}).get('reps', 0)
                 out[key] = dict(r, reps=reps)
             else:
@@ -82,6 +88,9 @@ def best_of(rounds):
 # Agreement: qdot's equations (speeds_qdot --print) against SymPy's.
 
 def qdot_equations(build, path, names):
+    """qdot's results read into SymPy (coordinates and speeds as functions of
+    t, as SymPy's own): {'M', 'f', 'kin'} of the speeds (Kane) and
+    {'EM', 'Ef', 'EA', 'Eb'} of the multiplier formulation, as lists."""
     import sympy
     from sympy import Function, Matrix, Symbol
     out = subprocess.run([os.path.join(build, 'bench', 'speeds_qdot'), '--print', path],
@@ -93,18 +102,26 @@ def qdot_equations(build, path, names):
         ns[n] = Function(n)
     for n in names['params']:
         ns[n] = Symbol(n)
-    M, f, kin = {}, {}, {}
+    items = {}
     for line in out.splitlines():
         tag, rest = line.split(' ', 1)
-        if tag == 'M':
-            r, s, e = rest.split(' ', 2)
-            M[int(r), int(s)] = sympy.sympify(eval(e, ns))
-        else:
-            k, e = rest.split(' ', 1)
-            (f if tag == 'f' else kin)[int(k)] = sympy.sympify(eval(e, ns))
-    m = len(f)
-    return (Matrix(m, m, lambda r, s: M[r, s]), Matrix([f[r] for r in range(m)]),
-            [kin[j] for j in range(len(kin))])
+        nidx = 2 if tag in ('M', 'EM', 'EA') else 1
+        fields = rest.split(' ', nidx)
+        key = tuple(int(x) for x in fields[:nidx])
+        items.setdefault(tag, {})[key] = sympy.sympify(eval(fields[nidx], ns))
+    res = {tag: [d[k] for k in sorted(d)] for tag, d in items.items()}
+    m = len(res['f'])
+    res['Mmat'] = Matrix(m, m, res['M'])
+    res['fvec'] = Matrix(res['f'])
+    return res
+
+
+def qdot_sizes(eq):
+    """count_ops of qdot's speeds (M_u, f_u) and multiplier (M, f, A, b)
+    results, read into SymPy as SymPy's own are."""
+    from sympy import count_ops
+    ops = lambda tags: sum(count_ops(e) for t in tags for e in eq.get(t, []))  # noqa: E731
+    return ops(('M', 'f')), ops(('EM', 'Ef', 'EA', 'Eb'))
 
 
 def model_names(path):
@@ -126,7 +143,8 @@ def agree(build, name, path, rng, states=3):
     import speeds_sympy
     sysd = speeds_sympy.SYSTEMS[name]()
     names = model_names(path)
-    Mq, fq, kin = qdot_equations(build, path, names)
+    eq = qdot_equations(build, path, names)
+    Mq, fq, kin = eq['Mmat'], eq['fvec'], eq['kin']
     m = Mq.shape[0]
     t = sympy.Symbol('t')
     ok = True
@@ -156,7 +174,7 @@ def agree(build, name, path, rng, states=3):
                     log("%s: %s' qdot %s, SymPy's %s %s" % (name, qn, a, dep, b))
                     ok = False
     log('%s: qdot and SymPy agree at %d random states%s' % (name, states, '' if ok else ': NO'))
-    return ok
+    return ok, qdot_sizes(eq)
 
 
 # ---------------------------------------------------------------------------
@@ -164,6 +182,8 @@ def agree(build, name, path, rng, states=3):
 def fmt_t(r):
     if not r:
         return '-'
+    if 'failed' in r:
+        return 'refused'
     if 'timeout' in r:
         return '> %g s' % r['timeout']
     s = r['med']
@@ -185,12 +205,12 @@ def print_table(hdr, rows):
         print('  '.join(c.rjust(w[i]) for i, c in enumerate(r)))
 
 
-def report(q, s):
+def report(q, s, sizes):
     print()
     print('nonholonomic systems: parse + equations of motion (median processor time)')
     print()
-    hdr = ['model', 'kane', 'appell', 'hamel', 'multipliers', 'mult/kane', 'SymPy',
-           'SymPy/kane']
+    hdr = ['model', 'kane', 'appell', 'hamel', 'multipliers', 'mult+solve', 'mult/kane',
+           'SymPy', 'SymPy/kane']
     rows = []
     for name, _ in MODELS:
         r = [name] + [fmt_t(q.get((name, v))) for v in VARIANTS]
@@ -200,15 +220,15 @@ def report(q, s):
         rows.append(r)
     print_table(hdr, rows)
     print()
-    print('sizes (count_ops): qdot M_u + f_u | qdot M + f + A + b (multipliers) | '
-          'SymPy mass_matrix + forcing | the same simplified')
+    print('sizes: count_ops of qdot M_u + f_u | qdot M + f + A + b (multipliers) |')
+    print('       SymPy mass_matrix + forcing | the same after simplify(), every result read')
+    print('       into SymPy alike (coordinates and speeds functions of t)')
     print()
     hdr = ['model', 'qdot speeds', 'qdot multipliers', 'SymPy', 'SymPy simplified']
     rows = []
     for name, _ in MODELS:
         simp = s.get((name, 'sympy:simplified'))
-        rows.append([name, str(q.get((name, 'speeds:kane'), {}).get('ops', '-')),
-                     str(q.get((name, 'multipliers'), {}).get('ops', '-')),
+        rows.append([name, str(sizes[name][0]), str(sizes[name][1]),
                      str(s.get((name, 'sympy'), {}).get('ops', '-')),
                      ('> %g s' % simp['timeout'] if 'timeout' in simp else
                       '%d (%.1f s)' % (simp['ops'], simp['med'])) if simp else '-'])
@@ -241,8 +261,11 @@ def main():
         s = run_lines('SymPy', [PYTHON, os.path.join(HERE, 'speeds_sympy.py'), '--simplify',
                                 '--budget', '2' if a.quick else '5'])
     rng = random.Random(15)
-    ok = all([agree(build, name, path, rng) for name, path in MODELS])
-    report(q, s)
+    ok, sizes = True, {}
+    for name, path in MODELS:
+        agreed, sizes[name] = agree(build, name, path, rng)
+        ok = ok and agreed
+    report(q, s, sizes)
     return 0 if ok else 1
 
 

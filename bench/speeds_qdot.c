@@ -8,16 +8,19 @@
  *                    Boltzmann-Hamel: M_u u' = f_u, m equations;
  *   multipliers      parse + qd_eom_derive of the same text without its
  *                    `speeds` line: M q'' = f + A^T lambda, A q'' = b, the
- *                    formulation qdot had before speeds.
+ *                    formulation qdot had before speeds;
+ *   multipliers+solve  the same, then qd_eom_solve: q'' and lambda
+ *                    explicit, the reduced equations' counterpart.
  * A repetition runs from qd_ctx_new to qd_ctx_free (fresh context: nothing
  * is remembered from the previous one); processor time of this process.
  *
  * Prints one tab-separated line per variant:
  *   model variant reps median_s min_s ops
- * ops: qd_count_ops summed over M_u and f_u (speeds) or M, f, A, b
- * (multipliers).  `--print FILE` prints instead the Kane equations in SymPy
- * syntax (lines "M r s EXPR", "f r EXPR", "kin j EXPR") for the driver's
- * agreement check.
+ * ops: qd_count_ops summed over M_u and f_u (speeds), M, f, A, b
+ * (multipliers) or q'' and lambda (multipliers+solve).  `--print FILE` prints instead, in SymPy syntax, the Kane
+ * equations (lines "M r s EXPR", "f r EXPR", "kin j EXPR") for the driver's
+ * agreement check, and the multiplier formulation ("EM j k", "Ef j",
+ * "EA k j", "Eb k") for its sizes.
  * Usage: speeds_qdot [--budget S] [--min-reps N] FILE.qd ...
  *        speeds_qdot --print FILE.qd
  */
@@ -31,6 +34,8 @@
 #include <time.h>
 
 #define MAX_REPS 2000
+#define MULTIPLIERS (-1)
+#define SOLVED (-2)
 
 typedef struct opts {
     double budget; /* seconds of timed runs per variant */
@@ -59,8 +64,15 @@ static char *slurp(const char *path) {
     return text;
 }
 
+/* Does the line at s start the statement kw? */
+static int starts(const char *s, const char *kw) {
+    size_t n = strlen(kw);
+    return strncmp(s, kw, n) == 0 && (s[n] == ' ' || s[n] == '\t');
+}
+
 /* The model text without its `speeds` statement (one line), for the
- * multiplier formulation of the same system. */
+ * multiplier formulation of the same system; `initial` lines go too (they
+ * may name speeds, and deriving does not need them). */
 static char *without_speeds(const char *text) {
     char *out = copy(text);
     if (!out)
@@ -69,7 +81,7 @@ static char *without_speeds(const char *text) {
     while (p && *p) {
         char *eol = strchr(p, '\n');
         const char *s = p + strspn(p, " \t");
-        if (strncmp(s, "speeds", 6) == 0 && (s[6] == ' ' || s[6] == '\t')) {
+        if (starts(s, "speeds") || starts(s, "initial")) {
             size_t rest = eol ? strlen(eol) : 0;
             memmove(p, eol ? eol : p + strlen(p), rest + 1);
             continue;
@@ -101,8 +113,14 @@ static size_t eom_ops(const qd_eom *e) {
            sum_ops(e->ncon, e->b);
 }
 
+/* q'' and lambda solved symbolically (qd_eom_solve) */
+static size_t solved_ops(const qd_eom *e) {
+    return sum_ops(e->n, e->acc) + sum_ops(e->ncon, e->mult);
+}
+
 /* One repetition in a fresh context: method >= 0 derives in speeds by that
- * method, -1 with multipliers; the size when ops is not NULL. */
+ * method, MULTIPLIERS with multipliers, SOLVED with multipliers and then
+ * q'' and lambda solved for; the size when ops is not NULL. */
 static int derive(const char *text, int method, size_t *ops) {
     qd_ctx *ctx = qd_ctx_new();
     qd_diag d;
@@ -117,8 +135,12 @@ static int derive(const char *text, int method, size_t *ops) {
         qd_speeds_eom_free(e);
     } else if (m) {
         qd_eom *e = qd_eom_derive(ctx, m);
+        if (e && method == SOLVED && qd_eom_solve(ctx, e, (size_t)-1) != QD_OK) {
+            qd_eom_free(e);
+            e = NULL;
+        }
         if (e && ops)
-            *ops = eom_ops(e);
+            *ops = method == SOLVED ? solved_ops(e) : eom_ops(e);
         rc = e ? 0 : -1;
         qd_eom_free(e);
     }
@@ -180,7 +202,10 @@ static int bench_file(const char *path, const opts *o) {
         rc |= run(name, variant, text, k, o);
     }
     if (rc == 0)
-        rc |= run(name, "multipliers", plain, -1, o);
+        rc |= run(name, "multipliers", plain, MULTIPLIERS, o);
+    /* qd_eom_solve may refuse (QD_ERR_TOOBIG): reported, not an error */
+    if (rc == 0 && run(name, "multipliers+solve", plain, SOLVED, o) != 0)
+        printf("%s\tmultipliers+solve\tfailed\n", name);
     if (!text)
         fprintf(stderr, "speeds_qdot: cannot read %s\n", path);
     free(plain);
@@ -194,6 +219,41 @@ static int item(qd_ctx *ctx, const char *tag, const qd_expr *e) {
     if (!bad)
         printf("%s %s\n", tag, qd_buf_str(&b));
     qd_buf_free(&b);
+    return bad;
+}
+
+/* The multiplier formulation of the same text: "EM j k", "Ef j", "EA k j",
+ * "Eb k" lines (M, f, A, b of qd_eom). */
+static int print_multipliers(const char *text) {
+    char *plain = without_speeds(text);
+    qd_ctx *ctx = qd_ctx_new();
+    qd_diag d;
+    qd_model *m = plain && ctx ? qd_model_parse(ctx, plain, &d) : NULL;
+    qd_eom *e = m ? qd_eom_derive(ctx, m) : NULL;
+    int bad = !e;
+    char tag[48];
+    for (size_t j = 0; e && j < e->n; j++) {
+        for (size_t k = 0; k < e->n; k++) {
+            snprintf(tag, sizeof tag, "EM %zu %zu", j, k);
+            bad |= item(ctx, tag, e->M[j * e->n + k]);
+        }
+        snprintf(tag, sizeof tag, "Ef %zu", j);
+        bad |= item(ctx, tag, e->f[j]);
+    }
+    for (size_t k = 0; e && k < e->ncon; k++) {
+        for (size_t j = 0; j < e->n; j++) {
+            snprintf(tag, sizeof tag, "EA %zu %zu", k, j);
+            bad |= item(ctx, tag, e->A[k * e->n + j]);
+        }
+        snprintf(tag, sizeof tag, "Eb %zu", k);
+        bad |= item(ctx, tag, e->b[k]);
+    }
+    if (bad)
+        fprintf(stderr, "speeds_qdot: multipliers: %s\n", m ? qd_ctx_message(ctx) : d.message);
+    qd_eom_free(e);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+    free(plain);
     return bad;
 }
 
@@ -223,6 +283,8 @@ static int print_file(const char *path) {
     qd_speeds_eom_free(e);
     qd_model_free(m);
     qd_ctx_free(ctx);
+    if (!bad)
+        bad = print_multipliers(text);
     free(text);
     return bad;
 }
