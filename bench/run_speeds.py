@@ -6,7 +6,7 @@ Usage: run_speeds.py BUILD_DIR [--quick] [--no-sympy]
 
 Two nonholonomic systems: the leaning rolling disk
 (examples/rolling_disk_speeds.qd: 5 coordinates, 2 rolling constraints,
-3 speeds) and a bicycle-like vehicle (bench/bicycle_speeds.qd: 6 coordinates,
+3 speeds) and a bicycle-like vehicle (examples/bicycle_speeds.qd: 6 coordinates,
 4 rolling constraints, 2 speeds).  Timed in the same run, one after the
 other (never at once):
 
@@ -39,7 +39,7 @@ sys.path.insert(0, HERE)
 
 PYTHON = '/usr/bin/python3'
 MODELS = [('rolling_disk_speeds', os.path.join(ROOT, 'examples', 'rolling_disk_speeds.qd')),
-          ('bicycle_speeds', os.path.join(HERE, 'bicycle_speeds.qd'))]
+          ('bicycle_speeds', os.path.join(ROOT, 'examples', 'bicycle_speeds.qd'))]
 VARIANTS = ['speeds:kane', 'speeds:appell', 'speeds:hamel', 'multipliers', 'multipliers+solve']
 TOL = 1e-9
 # SymPy's dependent speed that is the velocity of a coordinate of qdot's model

@@ -11,7 +11,7 @@ qdot models:
                        contact point up, the contact point at rest, speeds
                        u1, u2, u3 the lean-frame components of the angular
                        velocity; 3 coordinates, no dependent speeds;
-  bicycle_speeds       bench/bicycle_speeds.qd: frame, rear and steered front
+  bicycle_speeds       examples/bicycle_speeds.qd: frame, rear and steered front
                        wheel rolling upright; independent speeds v = r pr',
                        s = d', dependent x', y', th', pf' with the four
                        rolling constraints as velocity constraints.
@@ -63,7 +63,7 @@ def rolling_disc():
 
 
 def bicycle():
-    """bench/bicycle_speeds.qd (see finish)."""
+    """examples/bicycle_speeds.qd (see finish)."""
     x, y, th, d, pr, pf = dynamicsymbols('x y th d pr pf')
     v, s, ux, uy, wth, wf = dynamicsymbols('v s ux uy wth wf')
     mf, If, mw, r, b, c, k, tau = symbols('mf If mw r b c k tau')

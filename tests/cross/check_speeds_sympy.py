@@ -18,10 +18,14 @@ evaluated to 30 digits) this checks, for each example:
   4. the textbook: u' = M_u^-1 f_u, and where the book gives them the
      kinematics and S (u'-free terms dropped), against the formulas below,
      each citing its seed, chapter and equation;
-  5. the rolling disc (examples/rolling_disk_speeds.qd) against SymPy's
-     KanesMethod, the system of SymPy's own test_rolling_disc set up here
-     (contact point at rest, speeds the lean-frame components of the
-     angular velocity): M_u, f_u and u' to 1e-10 relative.
+  5. the rolling disc (examples/rolling_disk_speeds.qd) and the bicycle
+     (examples/bicycle_speeds.qd) against SymPy's KanesMethod with the same
+     speeds, the systems of bench/speeds_sympy.py (the disc is the system of
+     SymPy's own test_rolling_disc: contact point at rest, speeds the
+     lean-frame components of the angular velocity; the bicycle has
+     dependent speeds and velocity constraints): u' to 1e-10 relative, and
+     for the disc M_u and f_u entry by entry.  The bicycle has no closed
+     form in a book: KanesMethod is its reference, with the kinematics.
 
 Usage: check_speeds_sympy.py --build BUILD_DIR [--states N]
 Prints one line per check and "N passed, N failed"; exits 1 on any failure.
@@ -37,7 +41,8 @@ import sympy
 from sympy import (Derivative, Float, Function, Matrix, Rational, Symbol, cos, diff, sin,
                    tan)
 
-EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / 'examples'
 DIGITS = 30
 EXACT_TOL = Float('1e-24', DIGITS)
 KANE_TOL = 1e-10
@@ -287,6 +292,15 @@ def _(q, u, p):
             -2 * u1 * u3 / 3, u1 * (u3 * tan(q2) - 2 * u2)]
 
 
+@textbook('bicycle_speeds', KIN)
+def _(q, u, p):
+    # rolling of both wheels: the rear contact moves along the heading at v,
+    # the front one along the front wheel at v/cos(d), so th' = v tan(d)/b
+    th, d, v = q['th'], q['d'], u['v']
+    return [v * cos(th), v * sin(th), v * tan(d) / p['b'], u['s'], v / p['r'],
+            v / (p['r'] * cos(d))]
+
+
 @textbook('sphere_turntable_speeds', TEXTBOOK)
 def _(q, u, p):
     # Desloge ch. 70 Ex 1 (T5): vx' = -w0 vy, vy' = w0 vx, wz' = 0,
@@ -374,11 +388,12 @@ def solve_ud(eq, vals):
 def check_textbook(case, sy, eq, vals):
     bad = []
     q, u, ud, p = by_name(case, sy, vals)
-    got = solve_ud(eq, vals)
-    want = [sympy.N(w, DIGITS) for w in TEXTBOOK[case.name](q, u, p)]
-    for n, x, y in zip(case.speeds, got, want):
-        if not close_exact(x, y):
-            bad.append("%s' = %s, textbook %s" % (n, x, y))
+    if case.name in TEXTBOOK:
+        got = solve_ud(eq, vals)
+        want = [sympy.N(w, DIGITS) for w in TEXTBOOK[case.name](q, u, p)]
+        for n, x, y in zip(case.speeds, got, want):
+            if not close_exact(x, y):
+                bad.append("%s' = %s, textbook %s" % (n, x, y))
     if case.name in KIN:
         for j, (n, y) in enumerate(zip(case.coords, KIN[case.name](q, u, p))):
             x = num(eq['kin'][j], vals)
@@ -394,58 +409,44 @@ def check_textbook(case, sy, eq, vals):
 
 
 # ---------------------------------------------------------------------------
-# The rolling disc in SymPy's KanesMethod: SymPy's test_rolling_disc
-# system, set up here (the disc built from the contact point up, the
-# contact point at rest, which is the rolling condition).
+# SymPy's KanesMethod: the systems of bench/speeds_sympy.py (the rolling disc
+# of SymPy's own test_rolling_disc, built from the contact point up with the
+# contact point at rest; the bicycle with dependent speeds and velocity
+# constraints), with the same speeds as the examples.
 
-def kane_rolling_disc():
-    from sympy.physics.mechanics import (KanesMethod, Point, ReferenceFrame, RigidBody,
-                                         dynamicsymbols, inertia)
-    q1, q2, q3 = dynamicsymbols('q1 q2 q3')
-    u1, u2, u3 = dynamicsymbols('u1 u2 u3')
-    r, m, g = sympy.symbols('r m g')
-    N = ReferenceFrame('N')
-    yaw = N.orientnew('Y', 'Axis', [q1, N.z])
-    lean = yaw.orientnew('L', 'Axis', [q2, yaw.x])
-    disc_frame = lean.orientnew('R', 'Axis', [q3, lean.y])
-    omega_qd = disc_frame.ang_vel_in(N)
-    disc_frame.set_ang_vel(N, u1 * lean.x + u2 * lean.y + u3 * lean.z)
-    contact = Point('C')
-    contact.set_vel(N, 0)
-    centre = contact.locatenew('Dmc', r * lean.z)
-    centre.v2pt_theory(contact, N, disc_frame)
-    kd = [(disc_frame.ang_vel_in(N) - omega_qd).dot(e) for e in (lean.x, lean.y, lean.z)]
-    disc = RigidBody('disc', centre, disc_frame, m,
-                     (inertia(lean, m * r ** 2 / 4, m * r ** 2 / 2, m * r ** 2 / 4), centre))
-    km = KanesMethod(N, q_ind=[q1, q2, q3], u_ind=[u1, u2, u3], kd_eqs=kd)
-    km.kanes_equations([disc], [(centre, -m * g * N.z)])
-    kdd = km.kindiffdict()
-    M = km.mass_matrix.subs(kdd)
-    f = km.forcing.subs(kdd)
-    t = dynamicsymbols._t
-    plain = {}
-    for s in (q1, q2, q3, u1, u2, u3):
-        plain[s.diff(t)] = Symbol(s.func.__name__ + '_d')
-        plain[s] = Symbol(s.func.__name__)
-    return M.xreplace(plain), f.xreplace(plain)
+def kane_systems():
+    sys.path.insert(0, str(ROOT / 'bench'))
+    import speeds_sympy
+    return {name: build() for name, build in speeds_sympy.SYSTEMS.items()}
 
 
-def check_kane(case, sy, eq, vals, kane):
-    Mk, fk = kane
-    bad = []
+def check_kane(case, sy, eq, vals, ks):
+    """u' (and, without dependent speeds, M_u and f_u entry by entry) from
+    qdot and from KanesMethod at one state."""
+    t = Symbol('t')
+    at = {Function(n)(t): vals[sy.q[n]] for n in case.coords}
+    at.update({Function(n)(t): vals[sy.u[n]] for n in case.speeds})
+    at.update({Symbol(n): vals[sy.p[n]] for n in case.params})
+    m = len(case.speeds)
+    udep = ks['u'][m:]
+    if udep:   # the dependent speeds from the velocity constraints
+        eqs = [sympy.N(c.xreplace(at), DIGITS) for c in ks['vc']]
+        at.update(sympy.solve(eqs, udep, dict=True)[0])
+    Ms = ks['M'].xreplace(at).evalf(DIGITS)
+    fs = ks['f'].xreplace(at).evalf(DIGITS)
     Mq = eq['M'].xreplace(vals).evalf(DIGITS)
     fq = eq['f'].xreplace(vals).evalf(DIGITS)
-    Ms = Mk.xreplace(vals).evalf(DIGITS)
-    fs = fk.xreplace(vals).evalf(DIGITS)
-    for i in range(3):
-        if not close(fq[i], fs[i]):
-            bad.append('f_u[%d] = %s, KanesMethod %s' % (i, fq[i], fs[i]))
-        for j in range(3):
-            if not close(Mq[i, j], Ms[i, j]):
-                bad.append('M_u[%d,%d] = %s, KanesMethod %s' % (i, j, Mq[i, j], Ms[i, j]))
-    for i, (x, y) in enumerate(zip(Mq.LUsolve(fq), Ms.LUsolve(fs))):
+    bad = []
+    if not udep:
+        for i in range(m):
+            if not close(fq[i], fs[i]):
+                bad.append('f_u[%d] = %s, KanesMethod %s' % (i, fq[i], fs[i]))
+            for j in range(m):
+                if not close(Mq[i, j], Ms[i, j]):
+                    bad.append('M_u[%d,%d] = %s, KanesMethod %s' % (i, j, Mq[i, j], Ms[i, j]))
+    for n, x, y in zip(case.speeds, Mq.LUsolve(fq), Ms.LUsolve(fs)):
         if not close(x, y):
-            bad.append("u%d' = %s, KanesMethod %s" % (i + 1, x, y))
+            bad.append("%s' = %s, KanesMethod %s" % (n, x, y))
     return bad
 
 
@@ -457,6 +458,7 @@ def speeds_examples():
 
 
 def check_case(case, states, kane):
+    """kane: KanesMethod's systems by example name (kane_systems)."""
     """(checks passed, failure messages) for one example."""
     if case.errors:
         return 0, ['derivation failed: ' + e for e in case.errors]
@@ -469,12 +471,13 @@ def check_case(case, states, kane):
     checks = [('methods', lambda v: check_methods(case, eqs, v)),
               ('kinematics', lambda v: check_kinematics(case, sy, eqs['kane'], defs, cons, v)),
               ('appell', lambda v: check_appell(case, sy, eqs['kane'], v))]
-    if case.name in TEXTBOOK:
+    if case.name in TEXTBOOK or case.name in KIN:
         checks.append(('textbook', lambda v: check_textbook(case, sy, eqs['kane'], v)))
-    else:
-        fails.append('no textbook formula in check_speeds_sympy.py')
-    if case.name == 'rolling_disk_speeds':
-        checks.append(('KanesMethod', lambda v: check_kane(case, sy, eqs['kane'], v, kane)))
+    if case.name not in TEXTBOOK and case.name not in kane:
+        fails.append("no textbook u' (nor KanesMethod) in check_speeds_sympy.py")
+    if case.name in kane:
+        ks = kane[case.name]
+        checks.append(('KanesMethod', lambda v: check_kane(case, sy, eqs['kane'], v, ks)))
     for _ in range(states):
         vals = random_state(case, sy, rng)
         for what, fn in checks:
@@ -492,7 +495,7 @@ def main():
     ap.add_argument('--states', type=int, default=STATES)
     args = ap.parse_args()
     files = speeds_examples()
-    if len(files) < 6:
+    if len(files) < 7:
         print('FAIL: only %d examples with speeds in %s' % (len(files), EXAMPLES))
         return 1
     gen = Path(args.build).resolve() / 'tests' / 'gen_speeds'
@@ -502,7 +505,7 @@ def main():
                        timeout=600)
     sys.stderr.write(p.stderr)
     cases = read_cases(p.stdout)
-    kane = kane_rolling_disc()
+    kane = kane_systems()
     passed = failed = 0
     for case in cases:
         n, fails = check_case(case, args.states, kane)
