@@ -498,11 +498,13 @@ static bool stmt_constraint(parser *p) {
         strcpy(copy, name);
     size_t n = m->ncons;
     if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy) ||
-        !qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof c, &c) ||
-        !add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1})) {
-        qd__free(copy);
+        !qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof c, &c)) {
+        qd__free(copy); /* not counted by ncons: the model does not free it */
         return qd__mdl_perr(p, off, 1, NULL, "out of memory");
     }
+    /* from here the model owns the name (ncons counts it) */
+    if (!add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1}))
+        return qd__mdl_perr(p, off, 1, NULL, "out of memory");
     return qd__mdl_end_of_statement(p);
 }
 
