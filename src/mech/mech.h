@@ -104,6 +104,10 @@ void qd__sys_free(qd__sys *s);
  * Lagrange rows (M and f NULL): what the equations in speeds start from. */
 qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s);
 
+/* Lagrange's rows M q'' = f of a shell from s with the Lagrangian L (as
+ * qd__sys_lagrangian gives it), each entry simplified: e->M, e->f, e->L. */
+qd_status qd__eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L);
+
 /* L of s grouped by velocity monomials (as qd_eom_derive differentiates it),
  * e's coordinates set; T's split goes to e->T2, T1, T0. */
 const qd_expr *qd__sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s);
