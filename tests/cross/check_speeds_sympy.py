@@ -10,7 +10,9 @@ Boltzmann-Hamel).  At random states and parameter values (exact rationals,
 evaluated to 30 digits) this checks, for each example:
 
   1. the three methods agree: M_u, f_u, the kinematics and S, to 1e-24
-     (they are the same equations, include/qdot/speeds.h);
+     (they are the same equations, include/qdot/speeds.h), and the
+     differences of M_u, f_u and the kinematics simplify to 0 in SymPy
+     (entries qdot prints in different forms are counted and shown);
   2. the kinematics solve the speeds' definitions, def_r(q, kin) = u_r, and
      satisfy every constraint of the model: the constraints are eliminated
      for every value of the speeds (Desloge ch. 69 thm 2);
@@ -347,6 +349,23 @@ def check_methods(case, eqs, vals):
     return bad
 
 
+def check_methods_symbolic(eqs):
+    """The methods' differences simplify to 0 in SymPy, entry by entry (M_u,
+    f_u, kinematics): equal as expressions, not only at the states drawn.
+    Also how many entries qdot already printed identically."""
+    bad, same, total = [], 0, 0
+    ref = eqs['kane']
+    for meth in ('appell', 'hamel'):
+        for key in ('M', 'f', 'kin'):
+            for i, (a, b) in enumerate(zip(ref[key], eqs[meth][key])):
+                total += 1
+                if a == b:
+                    same += 1
+                elif sympy.simplify(a - b) != 0:
+                    bad.append('%s %s[%d] - kane\'s does not simplify to 0' % (meth, key, i))
+    return bad, same, total
+
+
 def kin_values(case, sy, kin, vals):
     """The velocities from the kinematics, as values of the q' symbols."""
     return {sy.qd[n]: num(kin[j], vals) for j, n in enumerate(case.coords)}
@@ -478,6 +497,14 @@ def check_case(case, states, kane):
     if case.name in kane:
         ks = kane[case.name]
         checks.append(('KanesMethod', lambda v: check_kane(case, sy, eqs['kane'], v, ks)))
+    bad, same, total = check_methods_symbolic(eqs)
+    if bad:
+        fails.extend('symbolic: ' + b for b in bad[:3])
+    else:
+        passed += 1
+    if same < total:
+        print('  %-24s %d of %d entries printed alike by the three methods' % (
+            case.name, same, total))
     for _ in range(states):
         vals = random_state(case, sy, rng)
         for what, fn in checks:
