@@ -54,14 +54,14 @@ qd_status qd__spd_kane(qd__spd *d) {
         a0[j] = qd_subs(ctx, d->acc[j], m, e->ud, zero);
     for (size_t i = 0; i < n * n; i++)
         M[i] = qd__spd_on_motion(d, sh->M[i]);
-    /* g = f - M a0, what is left when every u' is 0, simplified per
-     * coordinate before the projection mixes them */
+    /* g = f - M a0, what is left when every u' is 0; simplified only once
+     * projected (simplifying each g_j first costs more than it saves) */
     for (size_t j = 0; j < n; j++) {
         const qd_expr *x = qd__spd_on_motion(d, sh->f[j]);
         for (size_t k = 0; k < n; k++)
             if (!qd_is_zero(M[j * n + k]) && !qd_is_zero(a0[k]))
                 x = qd_sub(ctx, x, qd_mul(ctx, M[j * n + k], a0[k]));
-        if (!(g[j] = qd__spd_tidy(d, x)))
+        if (!(g[j] = x))
             st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
     }
     /* M is symmetric unless D or Q bring accelerations: then so is W^T M W */
