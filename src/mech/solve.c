@@ -16,11 +16,18 @@
 
 #include "base/mem.h"
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 /* Intermediate entries beyond this many operations times the caller's
  * limit stop the elimination early: the result would not fit either. */
 #define GROWTH 32
+
+/* The intermediate limit for a result limit max_ops; 0 (none) when that
+ * would overflow (max_ops = SIZE_MAX: no limit). */
+static size_t growth_limit(size_t max_ops) {
+    return max_ops && max_ops <= (SIZE_MAX - 4096) / GROWTH ? max_ops * GROWTH + 4096 : 0;
+}
 
 typedef struct elim {
     qd_ctx *ctx;
@@ -241,7 +248,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
     qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         augmented(ctx, e, A);
-    elim el = {ctx, N, w, A, max_ops * GROWTH + 4096, 1, false};
+    elim el = {ctx, N, w, A, growth_limit(max_ops), 1, false};
     if (st == QD_OK && N)
         st = solve_entries(&el, acc, max_ops);
     qd__free(A);
@@ -269,7 +276,7 @@ qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t 
         for (size_t c = 0; c < ncols; c++)
             E[i * w + n + c] = B[i * ncols + c];
     }
-    elim el = {ctx, n, w, E, max_ops ? max_ops * GROWTH + 4096 : 0, 1, true};
+    elim el = {ctx, n, w, E, growth_limit(max_ops), 1, true};
     if (st == QD_OK)
         st = bareiss(&el);
     const qd_expr *det = st == QD_OK ? qd_simplify(ctx, E[(n - 1) * w + n - 1]) : NULL;
