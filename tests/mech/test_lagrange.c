@@ -372,11 +372,21 @@ static void test_double_pendulum_solve(void **state) {
                 fail_msg("q''[%d]: symbolic %.17g, numeric %.17g (state %d)", i, a, qdd[i], k);
         }
     }
-    /* a limit too small to hold them */
+    /* a limit too small to hold them; none at all */
     assert_int_equal(qd_eom_solve(c, fx->eom, 5), QD_ERR_TOOBIG);
     qd_ctx_clear_error(c);
-    /* no limit: SIZE_MAX once overflowed the intermediate limit to a tiny one */
     assert_int_equal(qd_eom_solve(c, fx->eom, SIZE_MAX), QD_OK);
+}
+
+/* A huge limit is no limit: the intermediate limit max_ops * 32 + 4096 once
+ * overflowed (SIZE_MAX gave 4064 operations, and the bench's bicycle was
+ * refused as too big); 2^59 - 127 wrapped to 32, which the double
+ * pendulum's elimination exceeds at once. */
+static void test_solve_no_limit(void **state) {
+    fixture *fx = derive(state, double_pendulum);
+    size_t wraps_to_32 = SIZE_MAX > 0xffffffffu ? ((size_t)1 << 59) - 127 : SIZE_MAX;
+    assert_int_equal(qd_eom_solve(fx->ctx, fx->eom, wraps_to_32), QD_OK);
+    assert_int_equal(qd_eom_solve(fx->ctx, fx->eom, SIZE_MAX), QD_OK);
 }
 
 /* Symbols left out of the state are 0: theta1 = theta2 = 0 at rest. */
@@ -440,6 +450,7 @@ int main(void) {
         cmocka_unit_test_teardown(test_lagrangian_given, teardown),
         cmocka_unit_test_teardown(test_double_pendulum, teardown),
         cmocka_unit_test_teardown(test_double_pendulum_solve, teardown),
+        cmocka_unit_test_teardown(test_solve_no_limit, teardown),
         cmocka_unit_test_teardown(test_chain, teardown),
         cmocka_unit_test_teardown(test_eval_defaults, teardown),
         cmocka_unit_test_teardown(test_singular_row, teardown),
