@@ -38,8 +38,8 @@
  *   QD_SPEEDS_HAMEL   Boltzmann-Hamel: with all n quasi-velocities
  *                     v = (u, s), s = C q' + c0 (0 on the motion), and
  *                     L*(q, v, t) = L at q' = W u + Wc s + w,
- *                     d/dt dL*/du_r - sum_j W_jr dL*/dq_j
- *                       + sum_s dL*/dv_s sum_j W_jr (sum_k (dP_sj/dq_k
+ *                     d/dt d(L*)/du_r - sum_j W_jr d(L*)/dq_j
+ *                       + sum_s d(L*)/dv_s sum_j W_jr (sum_k (dP_sj/dq_k
  *                       - dP_sk/dq_j) q'_k + dP_sj/dt - dp0_s/dq_j)
  *                       = sum_j W_jr (Q_j - dD/dq'_j),
  *                     p0 = (b, c0), every derivative at fixed v, then

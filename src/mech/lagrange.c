@@ -181,23 +181,40 @@ static const qd_expr *grouped_lagrangian(qd_ctx *ctx, const qd_eom *e, const qd_
     return Lg == s->L ? qd_simplify(ctx, s->L) : Lg;
 }
 
-static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
-    qd_status st = set_coords(ctx, e, s);
+const qd_expr *qd__sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     qd__vsum vt = {NULL, {NULL, NULL, NULL}, 0, NULL};
-    if (st != QD_OK)
-        return st;
     if (!s->L) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the model gives neither T nor L");
-        return QD_ERR_ARG;
+        return NULL;
     }
-    if (s->T && (st = qd__split_kinetic(ctx, s->T, e->n, e->qd, &vt)) != QD_OK)
-        return st;
+    if (s->T && qd__split_kinetic(ctx, s->T, e->n, e->qd, &vt) != QD_OK)
+        return NULL;
     if (s->T && vt.top <= 2) {
         e->T2 = vt.deg[2];
         e->T1 = vt.deg[1];
         e->T0 = vt.deg[0];
     }
-    e->L = grouped_lagrangian(ctx, e, s, vt.all);
+    return grouped_lagrangian(ctx, e, s, vt.all);
+}
+
+qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s) {
+    qd_eom *e = eom_alloc(ctx, s->n);
+    if (!e) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
+        return NULL;
+    }
+    if (set_coords(ctx, e, s) != QD_OK || qd__con_setup(ctx, e, s) != QD_OK) {
+        qd_eom_free(e);
+        return NULL;
+    }
+    return e;
+}
+
+static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
+    qd_status st = set_coords(ctx, e, s);
+    if (st != QD_OK)
+        return st;
+    e->L = qd__sys_lagrangian(ctx, e, s);
     if (!e->L)
         return qd_ctx_status(ctx);
     st = derive_all(ctx, e, s, e->L);

@@ -75,6 +75,12 @@ qd_status qd__check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T);
  * step cancelled; NULL on failure (reason in ctx). */
 const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *A);
 
+/* Solve A X = B symbolically (A n*n, B and X n*ncols, row-major) by the
+ * fraction-free elimination of qd_eom_solve, each entry simplified.
+ * QD_ERR_SINGULAR, nothing recorded, when det A simplifies to 0. */
+qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
+                         const qd_expr *const *B, const qd_expr **X);
+
 /* ---- constraints ---------------------------------------------------------- */
 
 /* What Lagrange's equations are derived from: a model's content, or that
@@ -93,6 +99,14 @@ typedef struct qd__sys {
 
 qd_status qd__sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s);
 void qd__sys_free(qd__sys *s);
+
+/* A qd_eom with e's coordinates and constraints (qd__con_setup) but no
+ * Lagrange rows (M and f NULL): what the equations in speeds start from. */
+qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s);
+
+/* L of s grouped by velocity monomials (as qd_eom_derive differentiates it),
+ * e's coordinates set; T's split goes to e->T2, T1, T0. */
+const qd_expr *qd__sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s);
 
 /* --eliminate: solve the holonomic constraints of s that allow it for one
  * coordinate each and substitute (docs in qdot/mech.h, qd_eom_opts).  s

@@ -109,12 +109,13 @@ const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
     return det;
 }
 
-/* Cramer's numerators N (det times the solution) from the echelon form. */
-static qd_status back_substitute(elim *el, const qd_expr *det, const qd_expr **N) {
+/* Cramer's numerators N (det times the solution) of right-hand side col
+ * (a column index >= n) from the echelon form. */
+static qd_status back_substitute_col(elim *el, const qd_expr *det, size_t col, const qd_expr **N) {
     qd_ctx *ctx = el->ctx;
     size_t n = el->n, w = el->w;
     for (size_t i = n; i-- > 0;) {
-        const qd_expr *x = qd_mul(ctx, det, el->A[i * w + n]);
+        const qd_expr *x = qd_mul(ctx, det, el->A[i * w + col]);
         for (size_t j = i + 1; j < n; j++)
             x = qd_sub(ctx, x, qd_mul(ctx, el->A[i * w + j], N[j]));
         N[i] = exact_div(ctx, x, el->A[i * w + i]);
@@ -124,6 +125,10 @@ static qd_status back_substitute(elim *el, const qd_expr *det, const qd_expr **N
             return QD_ERR_TOOBIG;
     }
     return QD_OK;
+}
+
+static qd_status back_substitute(elim *el, const qd_expr *det, const qd_expr **N) {
+    return back_substitute_col(el, det, el->n, N);
 }
 
 /* The shorter of N/det simplified as a whole and as two parts. */
@@ -226,4 +231,39 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
         return st;
     }
     return QD_OK;
+}
+
+qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
+                         const qd_expr *const *B, const qd_expr **X) {
+    if (!n)
+        return QD_OK;
+    size_t w = n + ncols;
+    const qd_expr **E = qd__malloc(ctx, (n * w + 1) * sizeof *E);
+    const qd_expr **N = qd__malloc(ctx, (n + 1) * sizeof *N);
+    qd_status st = E && N ? QD_OK : QD_ERR_NOMEM;
+    for (size_t i = 0; st == QD_OK && i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            E[i * w + j] = A[i * n + j];
+        for (size_t c = 0; c < ncols; c++)
+            E[i * w + n + c] = B[i * ncols + c];
+    }
+    elim el = {ctx, n, w, E, 0, 1};
+    if (st == QD_OK)
+        st = bareiss(&el);
+    const qd_expr *det = st == QD_OK ? qd_simplify(ctx, E[(n - 1) * w + n - 1]) : NULL;
+    if (st == QD_OK && !det)
+        st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+    if (st == QD_OK && det && qd_is_zero(det))
+        st = QD_ERR_SINGULAR;
+    for (size_t c = 0; st == QD_OK && c < ncols; c++) {
+        st = back_substitute_col(&el, E[(n - 1) * w + n - 1], n + c, N);
+        for (size_t i = 0; st == QD_OK && i < n; i++)
+            if (!(X[i * ncols + c] = quotient(ctx, N[i], det)))
+                st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+    }
+    qd__free(E);
+    qd__free(N);
+    if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, st, "out of memory solving a linear system");
+    return st;
 }

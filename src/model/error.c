@@ -75,6 +75,10 @@ static bool where_key(const qd_model *m, const qd_diag *d, char *key, size_t cap
         if (!name && d->index < m->ncoords)
             name = qd_expr_name(m->coords[d->index]);
         break;
+    case QD_SUBJECT_SPEED:
+        if (!name && d->index < m->nspeeds)
+            name = qd_expr_name(m->speeds[d->index].sym);
+        return name && snprintf(key, cap, "speed:%s", name) < (int)cap;
     case QD_SUBJECT_PARAM:
         if (!name && d->index < m->nparams)
             name = qd_expr_name(m->params[d->index]);
@@ -108,7 +112,8 @@ const char **qd__mdl_known_names(const parser *p, size_t *count) {
         "cone", "box", "omega", "omega_space", "point", "rotation", "position",
     };
     size_t nextra = sizeof extra / sizeof extra[0];
-    size_t cap = 2 * m->ncoords + m->nparams + m->ndefs + m->nfuncs + QD_FUNC_COUNT + nextra + 1,
+    size_t cap = 2 * m->ncoords + m->nparams + m->ndefs + m->nspeeds + m->nfuncs + QD_FUNC_COUNT +
+                 nextra + 1,
            n = 0;
     const char **v = qd__malloc(p->ctx, cap * sizeof *v);
     if (!v) {
@@ -125,6 +130,8 @@ const char **qd__mdl_known_names(const parser *p, size_t *count) {
         v[n++] = "eps";
     for (size_t i = 0; i < m->ndefs; i++)
         v[n++] = m->defs[i].name;
+    for (size_t i = 0; i < m->nspeeds; i++)
+        v[n++] = qd_expr_name(m->speeds[i].sym);
     for (size_t i = 0; i < m->nfuncs; i++)
         v[n++] = m->funcs[i];
     for (int f = 0; f < QD_FUNC_COUNT; f++)

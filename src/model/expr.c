@@ -206,6 +206,11 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
         out->len = n;
         return true;
     }
+    long u = qd__mdl_find_speed(m, s + off, n);
+    if (u >= 0) { /* a speed's name stands for its definition */
+        *out = scalar(m->speeds[u].def, off, n);
+        return true;
+    }
     for (size_t i = 0; i < m->ncoords; i++)
         if (qd__mdl_name_is(s, off, n, qd_expr_name(m->coords[i]))) {
             *out = scalar(m->coords[i], off, n);

@@ -130,6 +130,8 @@ bool qd__mdl_stmt_hamiltonian(parser *p) {
         return qd__mdl_perr(p, at.off, at.len, "give it once; add the parts in one expression",
                     "H is given twice (first on line %zu)", first.line);
     }
+    if (!qd__mdl_no_speeds_yet(p, "H", at.off, at.len))
+        return false;
     const char *e = energy_given(m);
     if (e)
         return qd__mdl_perr(p, at.off, at.len,

@@ -92,6 +92,7 @@ void qd_model_free(qd_model *m) {
     qd__free(m->impacts);
     qd__mdl_free_sudden(m->prescribed, 0, m->nprescribed);
     qd__free(m->prescribed);
+    qd__free(m->speeds);
     qd__free(m->parts);
     qd__free(m->Qhat);
     qd__free(m->mom);
@@ -162,6 +163,11 @@ bool qd__mdl_eval_params(qd_model *m) {
     for (size_t j = 0; j < 2 * m->ncoords; j++)
         if (m->init_defs[j] && !(m->init[j] = valued(m, m->init_defs[j], m->nparams)))
             return false;
+    for (size_t k = 0; k < m->nspeeds; k++) {
+        speed *s = &m->speeds[k];
+        if (s->init_def && !(s->init = valued(m, s->init_def, m->nparams)))
+            return false;
+    }
     return true;
 }
 

@@ -102,14 +102,21 @@ qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
 typedef struct mark {
     qd_model m;
     const qd_expr **percoord; /* Q, then init, then init_defs, then Qhat */
+    speed *speeds;            /* their initial values may be replaced */
 } mark;
 
 static bool mark_take(const qd_model *m, mark *k) {
     size_t n = m->ncoords;
     k->m = *m;
     k->percoord = qd__malloc(m->ctx, (6 * n + 1) * sizeof *k->percoord);
-    if (!k->percoord)
+    k->speeds = qd__malloc(m->ctx, (m->nspeeds + 1) * sizeof *k->speeds);
+    if (!k->percoord || !k->speeds) {
+        qd__free(k->percoord);
+        qd__free(k->speeds);
         return false;
+    }
+    if (m->nspeeds)
+        memcpy(k->speeds, m->speeds, m->nspeeds * sizeof *m->speeds);
     memcpy(k->percoord, m->Q, n * sizeof *m->Q);
     memcpy(k->percoord + n, m->init, 2 * n * sizeof *m->init);
     memcpy(k->percoord + 3 * n, m->init_defs, 2 * n * sizeof *m->init_defs);
@@ -154,6 +161,9 @@ static void mark_restore(qd_model *m, const mark *k) {
     m->nreactions = b->nreactions;
     m->nsyms = b->nsyms;
     m->nints = b->nints;
+    m->nspeeds = b->nspeeds;
+    if (b->nspeeds)
+        memcpy(m->speeds, k->speeds, b->nspeeds * sizeof *m->speeds);
     m->T = b->T;
     m->V = b->V;
     m->U = b->U;
@@ -242,6 +252,7 @@ qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
         qd__free(copy);
     }
     qd__free(k.percoord);
+    qd__free(k.speeds);
     if (ok)
         return QD_OK;
     if (qd_ctx_status(ctx) == QD_ERR_NOMEM)

@@ -74,6 +74,15 @@ typedef struct sudden {
     const qd_expr *E;      /* the restitution (0 for a prescription) */
 } sudden;
 
+/* `speeds NAME = EXPR, ...` (speeds.c): the speed's own symbol (made with
+ * qd_coord, named NAME), its definition in q, q', t, and `initial NAME = X`. */
+typedef struct speed {
+    const qd_expr *sym;
+    const qd_expr *def;        /* linear in the velocities */
+    const qd_expr *init;       /* the number, or NULL */
+    const qd_expr *init_def;   /* as written, in the parameters */
+} speed;
+
 typedef struct particle {
     const qd_expr *mass;
     const qd_expr *r[3];
@@ -137,6 +146,8 @@ struct qd_model {
     size_t nimpacts;
     sudden *prescribed;        /* `prescribe` */
     size_t nprescribed;
+    speed *speeds;             /* `speeds` */
+    size_t nspeeds;
     const char *src;           /* the text being read (the model's or an added statement) */
     char **added;              /* owned copies of the statements added after the parse */
     size_t nadded;
@@ -222,6 +233,14 @@ bool qd__mdl_stmt_prescribe(parser *p);
 long qd__mdl_find_sudden(const qd_model *m, const char *src, size_t off, size_t n);
 void qd__mdl_free_sudden(sudden *s, size_t from, size_t n);
 void qd__mdl_free_blows(blow *b, size_t from, size_t n);
+
+/* speeds.c: `speeds NAME = EXPR, ...` */
+bool qd__mdl_stmt_speeds(parser *p);
+/* The speed named src[off..off+n) (name points at it), or -1. */
+long qd__mdl_find_speed(const qd_model *m, const char *name, size_t n);
+/* A statement (H) that a model with speeds cannot have: an error at
+ * off..off+len when it has some. */
+bool qd__mdl_no_speeds_yet(parser *p, const char *what, size_t off, size_t len);
 
 /* reaction.c */
 bool qd__mdl_stmt_rolls(parser *p);     /* roll.c */

@@ -17,6 +17,7 @@
  *   symmetry [NAME:] ...   and   integral [NAME:] EXPR  (symmetry.c)
  *   impulse J at r, impulse G on BODY, Qhat[q] = X      (impulse.c)
  *   impact constraint NAME: ..., impact NAME: GAP >= 0, prescribe ...
+ *   speeds NAME = EXPR, ...                             (speeds.c)
  */
 #include "parser.h"
 #include "../base/mem.h"
@@ -68,6 +69,8 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
         kind = "body";
     if (!kind && qd__mdl_find_momentum(m, name, strlen(name)))
         kind = "momentum";
+    if (!kind && qd__mdl_find_speed(m, name, strlen(name)) >= 0)
+        kind = "speed";
     qd_func f;
     if (!kind && (qd_func_from_name(name, &f) || !strcmp(name, "sqrt") || !strcmp(name, "t") ||
                   !strcmp(name, "pi")))
@@ -374,10 +377,35 @@ static bool stmt_genforce(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
-/* initial NAME ['] = VALUE (',' ...)* */
+/* initial SPEED = VALUE: the speed itself, not its rate (a speed is
+ * already a velocity). */
+static bool initial_speed(parser *p, speed *s) {
+    qd__lex_next(&p->lx);
+    if (p->lx.tok.kind == TK_PRIME)
+        return qd__mdl_perr_tok(p, "give the speed's own value: initial u1 = 0.3",
+                                "an initial value is for a speed, not its rate");
+    if (p->lx.tok.kind != TK_EQ)
+        return qd__mdl_perr_tok(p, "write: initial u1 = 0.3", "expected '='");
+    qd__lex_next(&p->lx);
+    const qd_expr *def, *v;
+    if (!parse_constant(p, NULL, &def, &v, "an initial value"))
+        return false;
+    s->init_def = def;
+    s->init = v;
+    return true;
+}
+
+/* initial NAME ['] = VALUE (',' ...)*, NAME a coordinate or a speed */
 static bool stmt_initial(parser *p) {
     do {
         qd__lex_next(&p->lx);
+        long k = p->lx.tok.kind == TK_IDENT
+                     ? qd__mdl_find_speed(p->m, p->lx.src + p->lx.tok.off, p->lx.tok.len) : -1;
+        if (k >= 0) {
+            if (!initial_speed(p, &p->m->speeds[k]))
+                return false;
+            continue;
+        }
         int j = coord_named(p);
         if (p->lx.tok.kind != TK_IDENT || j < 0)
             return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
@@ -549,7 +577,7 @@ static const struct stmt_kw {
     {"reaction", qd__mdl_stmt_reaction, true},  {"momenta", qd__mdl_stmt_momenta, true},
     {"symmetry", qd__mdl_stmt_symmetry, true},  {"integral", qd__mdl_stmt_integral, true},
     {"impulse", qd__mdl_stmt_impulse, true},    {"impact", qd__mdl_stmt_impact, true},
-    {"prescribe", qd__mdl_stmt_prescribe, true},
+    {"prescribe", qd__mdl_stmt_prescribe, true}, {"speeds", qd__mdl_stmt_speeds, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 

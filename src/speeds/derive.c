@@ -1,0 +1,512 @@
+/*
+ * src/speeds/derive.c - the equations in speeds: the velocity map P = [A; C]
+ * from the speeds' definitions and the constraints' rows, its inverse
+ * [W | Wc] and the kinematics q' = W u + w, then one of the methods
+ * (kane.c, appell.c, hamel.c) for M_u u' = f_u.
+ *
+ * P is inverted symbolically, with the constant column -p0 alongside
+ * (P [W | Wc | w] = [I | -p0]), by the fraction-free elimination of
+ * qd_eom_solve: P is sparse in practice (a speed is a few velocities, a
+ * rolling constraint three), so the inverse stays short.  A singular P is
+ * reported at the row that depends on those before it, found numerically at
+ * a random state.
+ */
+#include "spd.h"
+
+#include "../base/mem.h"
+#include "../num/num.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const METHOD_NAMES[QD_SPEEDS_METHOD_COUNT] = {"kane", "appell", "hamel"};
+
+const char *qd_speeds_method_name(qd_speeds_method m) {
+    return (unsigned)m < QD_SPEEDS_METHOD_COUNT ? METHOD_NAMES[m] : NULL;
+}
+
+bool qd_speeds_method_from_name(const char *name, qd_speeds_method *m) {
+    for (unsigned i = 0; name && i < QD_SPEEDS_METHOD_COUNT; i++)
+        if (!strcmp(name, METHOD_NAMES[i])) {
+            if (m)
+                *m = (qd_speeds_method)i;
+            return true;
+        }
+    return false;
+}
+
+void qd_speeds_eom_free(qd_speeds_eom *e) {
+    if (!e)
+        return;
+    qd__spd_priv *pv = e->priv;
+    if (pv) {
+        qd_eom_free(pv->shell);
+        qd_prog_free(pv->prog);
+        qd__free(pv->in);
+        qd__free(pv->work);
+        qd__free(pv);
+    }
+    /* one block holds every array but mult (alloc below) */
+    qd__free(e->q);
+    qd__free(e->mult);
+    qd__free(e);
+}
+
+/* Every array of e in one block: q, qd (n), u, ud, def (m), W (n*m), w, kin
+ * (n), M (m*m), f (m). */
+static qd_speeds_eom *alloc(qd_ctx *ctx, size_t n, size_t m, size_t nc) {
+    qd_speeds_eom *e = qd__calloc(ctx, 1, sizeof *e);
+    size_t total = 4 * n + 4 * m + n * m + m * m + 1;
+    const qd_expr **b = e ? qd__calloc(ctx, total, sizeof *b) : NULL;
+    qd__spd_priv *pv = b ? qd__calloc(ctx, 1, sizeof *pv) : NULL;
+    if (!pv) {
+        qd__free(b);
+        qd__free(e);
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations in speeds");
+        return NULL;
+    }
+    *e = (qd_speeds_eom){.n = n, .m = m, .ncon = nc, .priv = pv};
+    e->q = b, b += n;
+    e->qd = b, b += n;
+    e->u = b, b += m;
+    e->ud = b, b += m;
+    e->def = b, b += m;
+    e->W = b, b += n * m;
+    e->w = b, b += n;
+    e->kin = b, b += n;
+    e->M = b, b += m * m;
+    e->f = b, b += m;
+    (void)b;
+    return e;
+}
+
+static qd_status nomem(qd_ctx *ctx) {
+    if (qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations in speeds");
+    return qd_ctx_status(ctx);
+}
+
+/* ---- the velocity map ----------------------------------------------------- */
+
+/* Row r of P from speed r's definition: u_r = A_r q' + b_r. */
+static qd_status speed_row(qd__spd *d, size_t r) {
+    qd_ctx *ctx = d->ctx;
+    qd_speeds_eom *e = d->e;
+    const qd_expr *rest = NULL;
+    qd_status st = qd_linear_coeffs(ctx, e->def[r], d->n, e->qd, d->P + r * d->n, &rest);
+    if (st == QD_ERR_NONLINEAR) {
+        qd__ctx_recover(ctx);
+        qd_ctx_error(ctx, QD_ERR_ARG, "speed %s is not linear in the velocities",
+                     qd_expr_name(e->u[r]));
+        qd_ctx_error_about(ctx, QD_SUBJECT_SPEED, r, qd_expr_name(e->u[r]), QD_REASON_NONE,
+                           "a speed is linear in the velocities: u = a(q, t) q' + b(q, t)");
+        return QD_ERR_ARG;
+    }
+    if (st != QD_OK)
+        return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : st;
+    for (size_t j = 0; j < d->n; j++)
+        if (!(d->P[r * d->n + j] = qd_simplify(ctx, d->P[r * d->n + j])))
+            return nomem(ctx);
+    d->p0[r] = qd_simplify(ctx, rest);
+    return d->p0[r] ? QD_OK : nomem(ctx);
+}
+
+/* The first row of P (in its order: speeds, then constraints) that depends
+ * on the rows before it, at a random state; n when none is found there. */
+static size_t dependent_row(qd__spd *d) {
+    size_t n = d->n, ns = 0;
+    const qd_expr *syms[64];
+    double vals[64], *R = qd__malloc(d->ctx, (n * n + 1) * sizeof *R);
+    size_t found = n;
+    if (!R)
+        return n;
+    for (size_t i = 0; i < n * n; i++) {
+        const qd_expr *buf[64];
+        size_t k = qd_free_symbols(d->ctx, d->P[i], buf, 64);
+        for (size_t a = 0; a < k && a < 64; a++) {
+            bool have = false;
+            for (size_t b = 0; b < ns; b++)
+                have = have || syms[b] == buf[a];
+            if (!have && ns < 64) {
+                syms[ns] = buf[a];
+                vals[ns] = 0.31 + 0.57 * (double)((ns * 7919 + 17) % 97) / 97.0;
+                ns++;
+            }
+        }
+    }
+    for (size_t i = 0; i < n * n; i++)
+        if (qd_eval(d->ctx, d->P[i], ns, syms, vals, &R[i]) != QD_OK) {
+            qd__ctx_recover(d->ctx);
+            R[i] = NAN;
+        }
+    /* Gram-Schmidt on the rows in order: the first with nothing left */
+    double scale = qd__num_norm_inf(n * n, R) + 1e-300;
+    for (size_t r = 0; r < n && found == n; r++) {
+        double *x = R + r * n;
+        for (size_t s = 0; s < r; s++) {
+            const double *y = R + s * n;
+            double dot = 0, yy = 0;
+            for (size_t j = 0; j < n; j++)
+                dot += x[j] * y[j], yy += y[j] * y[j];
+            for (size_t j = 0; yy > 0 && j < n; j++)
+                x[j] -= dot / yy * y[j];
+        }
+        double norm = 0;
+        for (size_t j = 0; j < n; j++)
+            norm += x[j] * x[j];
+        if (!(sqrt(norm) > 1e-9 * scale))
+            found = r;
+    }
+    qd__free(R);
+    return found;
+}
+
+static qd_status singular_map(qd__spd *d) {
+    qd_ctx *ctx = d->ctx;
+    qd_speeds_eom *e = d->e;
+    size_t r = dependent_row(d);
+    const char *hint = "the speeds and the constraints together must fix every velocity: "
+                       "n of them, independent";
+    if (r >= d->m && r < d->n) {
+        const char *name = e->con[r - d->m].name;
+        qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                     "the speeds repeat constraint %s: with the constraints they do not "
+                     "determine the velocities", name);
+        qd_ctx_error_about(ctx, QD_SUBJECT_CONSTRAINT, r - d->m, name,
+                           QD_REASON_DEPENDENT_SPEEDS, hint);
+        return QD_ERR_SINGULAR;
+    }
+    if (r == d->n)
+        r = d->m ? d->m - 1 : 0;
+    qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                 "speed %s depends on the speeds and constraints before it: the speeds do not "
+                 "determine the velocities (the map u = A q' + b is singular)",
+                 qd_expr_name(e->u[r]));
+    qd_ctx_error_about(ctx, QD_SUBJECT_SPEED, r, qd_expr_name(e->u[r]),
+                       QD_REASON_DEPENDENT_SPEEDS, hint);
+    return QD_ERR_SINGULAR;
+}
+
+static qd_status count_error(qd__spd *d) {
+    qd_ctx *ctx = d->ctx;
+    size_t r = d->m - 1;
+    bool few = d->m + d->nc < d->n;
+    qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                 "%zu speeds and %zu constraints for %zu coordinates: %s (speeds + constraints "
+                 "must equal the coordinates)",
+                 d->m, d->nc, d->n,
+                 few ? "too few to determine the velocities" : "too many: some repeat others");
+    qd_ctx_error_about(ctx, QD_SUBJECT_SPEED, r, qd_expr_name(d->e->u[r]),
+                       QD_REASON_DEPENDENT_SPEEDS,
+                       few ? "declare one speed per degree of freedom left by the constraints"
+                           : "remove the speeds that the constraints already fix");
+    return QD_ERR_SINGULAR;
+}
+
+/* P, p0, then [W | Wc | w] = P^-1 [I | -p0] and the kinematics. */
+static qd_status velocity_map(qd__spd *d) {
+    qd_ctx *ctx = d->ctx;
+    qd_speeds_eom *e = d->e;
+    size_t n = d->n, m = d->m, w = n + 1;
+    if (m + d->nc != n)
+        return count_error(d);
+    for (size_t r = 0; r < m; r++) {
+        qd_status st = speed_row(d, r);
+        if (st != QD_OK)
+            return st;
+    }
+    for (size_t k = 0; k < d->nc; k++) {
+        for (size_t j = 0; j < n; j++)
+            d->P[(m + k) * n + j] = e->con[k].a[j];
+        d->p0[m + k] = e->con[k].a0;
+    }
+    const qd_expr **B = qd__malloc(ctx, (n * w + 1) * sizeof *B);
+    const qd_expr **X = qd__malloc(ctx, (n * w + 1) * sizeof *X);
+    qd_status st = B && X ? QD_OK : nomem(ctx);
+    for (size_t i = 0; st == QD_OK && i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            B[i * w + j] = qd_int(ctx, i == j);
+        B[i * w + n] = qd_neg(ctx, d->p0[i]);
+    }
+    if (st == QD_OK)
+        st = qd__solve_cols(ctx, n, d->P, w, B, X);
+    if (st == QD_ERR_SINGULAR)
+        st = singular_map(d);
+    for (size_t i = 0; st == QD_OK && i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            d->Pinv[i * n + j] = X[i * w + j];
+        for (size_t r = 0; r < m; r++)
+            e->W[i * m + r] = X[i * w + r];
+        e->w[i] = X[i * w + n];
+    }
+    qd__free(B);
+    qd__free(X);
+    for (size_t j = 0; st == QD_OK && j < n; j++) {
+        const qd_expr *x = e->w[j];
+        for (size_t r = 0; r < m; r++)
+            x = qd_add(ctx, x, qd_mul(ctx, e->W[j * m + r], e->u[r]));
+        if (!(e->kin[j] = qd__spd_tidy(d, x)))
+            st = nomem(ctx);
+    }
+    return st;
+}
+
+/* q''_j: the kinematics differentiated along the motion. */
+static qd_status accelerations(qd__spd *d) {
+    const qd_expr **acc = qd__calloc(d->ctx, d->n + 1, sizeof *acc);
+    for (size_t j = 0; acc && j < d->n; j++)
+        if (!(acc[j] = qd__spd_dt(d, d->e->kin[j]))) {
+            qd__free(acc);
+            acc = NULL;
+        }
+    d->acc = acc;
+    return acc ? QD_OK : nomem(d->ctx);
+}
+
+/* ---- shared pieces --------------------------------------------------------- */
+
+const qd_expr *qd__spd_on_motion(qd__spd *d, const qd_expr *x) {
+    qd_speeds_eom *e = d->e;
+    if (d->acc && x) {
+        const qd_expr **qdd = qd__malloc(d->ctx, (d->n + 1) * sizeof *qdd);
+        if (!qdd)
+            return NULL;
+        for (size_t j = 0; j < d->n; j++)
+            qdd[j] = d->shell->qdd[j];
+        x = qd_subs(d->ctx, x, d->n, qdd, d->acc);
+        qd__free(qdd);
+    }
+    return x ? qd_subs(d->ctx, x, d->n, e->qd, e->kin) : NULL;
+}
+
+const qd_expr *qd__spd_dt(qd__spd *d, const qd_expr *x) {
+    qd_speeds_eom *e = d->e;
+    return x ? qd_subs(d->ctx, qd_dt(d->ctx, x), d->n, e->qd, e->kin) : NULL;
+}
+
+const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x) {
+    qd__vsum v;
+    if (!x)
+        return NULL;
+    qd_status st = qd__by_velocity(d->ctx, x, d->m, d->e->u, &v);
+    if (st != QD_OK && st != QD_ERR_NONLINEAR)
+        return NULL;
+    return qd_simplify(d->ctx, st == QD_OK ? v.all : x);
+}
+
+qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows) {
+    qd_ctx *ctx = d->ctx;
+    qd_speeds_eom *e = d->e;
+    size_t m = d->m;
+    const qd_expr **c = qd__malloc(ctx, (m + 1) * sizeof *c);
+    if (!c)
+        return nomem(ctx);
+    qd_status st = QD_OK;
+    for (size_t r = 0; st == QD_OK && r < m; r++) {
+        const qd_expr *rest = NULL;
+        st = qd_linear_coeffs(ctx, rows[r], m, e->ud, c, &rest);
+        if (st == QD_ERR_NONLINEAR) {
+            qd__ctx_recover(ctx);
+            qd_ctx_error(ctx, st, "the equation of speed %s is not linear in the speeds' rates",
+                         qd_expr_name(e->u[r]));
+            qd_ctx_error_about(ctx, QD_SUBJECT_SPEED, r, qd_expr_name(e->u[r]), QD_REASON_NONE,
+                               NULL);
+        }
+        for (size_t s = 0; st == QD_OK && s < m; s++)
+            if (!(e->M[r * m + s] = qd_simplify(ctx, c[s])))
+                st = nomem(ctx);
+        if (st == QD_OK && !(e->f[r] = qd__spd_tidy(d, qd_neg(ctx, rest))))
+            st = nomem(ctx);
+    }
+    qd__free(c);
+    return st;
+}
+
+static const qd_expr *zero_or(qd_ctx *ctx, const qd_expr *x) { return x ? x : qd_int(ctx, 0); }
+
+const qd_expr *qd__spd_force(qd__spd *d, size_t j) {
+    qd_ctx *ctx = d->ctx;
+    const qd__sys *s = &d->sys;
+    const qd_expr *q = d->shell->q[j], *qd = d->shell->qd[j];
+    const qd_expr *G = zero_or(ctx, s->Q[j]);
+    if (s->D)
+        G = qd_sub(ctx, G, qd_diff(ctx, s->D, qd));
+    if (!s->L_given) {
+        const qd_expr *VU = qd_add(ctx, zero_or(ctx, s->V), zero_or(ctx, s->U));
+        G = qd_add(ctx, G, qd_sub(ctx, qd_dt(ctx, qd_diff(ctx, VU, qd)), qd_diff(ctx, VU, q)));
+    }
+    return qd__spd_on_motion(d, G);
+}
+
+const qd_expr *qd__spd_residual(qd__spd *d, size_t j) {
+    qd_ctx *ctx = d->ctx;
+    const qd__sys *s = &d->sys;
+    const qd_expr *q = d->shell->q[j], *qd = d->shell->qd[j];
+    const qd_expr *E = qd_sub(ctx, qd_dt(ctx, qd_diff(ctx, d->L, qd)), qd_diff(ctx, d->L, q));
+    if (s->D)
+        E = qd_add(ctx, E, qd_diff(ctx, s->D, qd));
+    E = qd_sub(ctx, E, zero_or(ctx, s->Q[j]));
+    return qd__spd_on_motion(d, E);
+}
+
+/* ---- the derivation --------------------------------------------------------- */
+
+static qd_status check_model(qd_ctx *ctx, const qd_model *m) {
+    if (!qd_model_nspeeds(m)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the model declares no speeds (a `speeds u1 = ...` line)");
+        return QD_ERR_ARG;
+    }
+    if (qd_model_hamiltonian_given(m)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "speeds need a model given by T or L, not by H");
+        qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, 0, "H", QD_REASON_NONE, NULL);
+        return QD_ERR_ARG;
+    }
+    return QD_OK;
+}
+
+/* The kinetic energy in speeds, T*(q, u, t). */
+static qd_status kinetic(qd__spd *d) {
+    if (!d->sys.T || d->sys.L_given)
+        return QD_OK;
+    d->e->T = qd__spd_tidy(d, qd__spd_on_motion(d, d->sys.T));
+    return d->e->T ? QD_OK : nomem(d->ctx);
+}
+
+/* M_u must be invertible somewhere: a numeric look at two states. */
+static qd_status check_mass(qd__spd *d) {
+    qd_speeds_eom *e = d->e;
+    size_t m = d->m;
+    const qd_expr *syms[96];
+    double vals[96], *K = qd__malloc(d->ctx, (m * m + m + 1) * sizeof *K);
+    if (!K)
+        return nomem(d->ctx);
+    bool regular = false;
+    for (unsigned trial = 0; trial < 2 && !regular; trial++) {
+        size_t ns = 0;
+        for (size_t i = 0; i < m * m; i++) {
+            const qd_expr *buf[96];
+            size_t k = qd_free_symbols(d->ctx, e->M[i], buf, 96);
+            for (size_t a = 0; a < k && a < 96; a++) {
+                bool have = false;
+                for (size_t b = 0; b < ns; b++)
+                    have = have || syms[b] == buf[a];
+                if (!have && ns < 96)
+                    syms[ns++] = buf[a];
+            }
+        }
+        for (size_t i = 0; i < ns; i++)
+            vals[i] = 0.23 + 0.71 * (double)((i * 7919 + 31 * trial + 5) % 89) / 89.0;
+        bool ok = true;
+        for (size_t i = 0; i < m * m && ok; i++)
+            if (qd_eval(d->ctx, e->M[i], ns, syms, vals, &K[i]) != QD_OK) {
+                qd__ctx_recover(d->ctx);
+                ok = false;
+            }
+        for (size_t i = 0; i < m; i++)
+            K[m * m + i] = 1;
+        regular = ok && qd__num_solve(m, K, K + m * m, 1e-12 * (double)m);
+        if (!ok) /* not evaluable (user functions): no verdict */
+            regular = true;
+    }
+    qd__free(K);
+    if (regular)
+        return QD_OK;
+    qd_ctx_error(d->ctx, QD_ERR_SINGULAR,
+                 "the mass matrix of the speeds W^T M W is singular: a speed moves nothing "
+                 "with inertia");
+    qd_ctx_error_about(d->ctx, QD_SUBJECT_STATEMENT, 0, d->sys.L_given ? "L" : "T",
+                       QD_REASON_SINGULAR_MASS, NULL);
+    return QD_ERR_SINGULAR;
+}
+
+static qd_status setup(qd__spd *d, const qd_speeds_opts *opts) {
+    qd_ctx *ctx = d->ctx;
+    qd_status st = qd__sys_from_model(ctx, d->model, &d->sys);
+    if (st != QD_OK)
+        return st;
+    d->n = d->sys.n;
+    d->m = qd_model_nspeeds(d->model);
+    d->nc = d->sys.ncon;
+    d->shell = qd__eom_shell(ctx, &d->sys);
+    if (!d->shell)
+        return qd_ctx_status(ctx);
+    d->L = qd__sys_lagrangian(ctx, d->shell, &d->sys);
+    if (!d->L)
+        return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : nomem(ctx);
+    d->e = alloc(ctx, d->n, d->m, d->nc);
+    if (!d->e)
+        return QD_ERR_NOMEM;
+    qd_speeds_eom *e = d->e;
+    qd_eom *sh = d->shell;
+    ((qd__spd_priv *)e->priv)->shell = sh; /* e owns it from here */
+    e->method = opts ? opts->method : QD_SPEEDS_KANE;
+    e->con = sh->con;
+    for (size_t j = 0; j < d->n; j++) {
+        e->q[j] = sh->q[j];
+        e->qd[j] = sh->qd[j];
+    }
+    for (size_t r = 0; r < d->m; r++) {
+        e->u[r] = qd_model_speed(d->model, r);
+        e->ud[r] = qd_jet(ctx, e->u[r], 1);
+        e->def[r] = qd_model_speed_definition(d->model, r);
+        if (!e->ud[r] || !e->def[r])
+            return nomem(ctx);
+    }
+    size_t n = d->n;
+    d->P = qd__calloc(ctx, n * n + 1, sizeof *d->P);
+    d->Pinv = qd__calloc(ctx, n * n + 1, sizeof *d->Pinv);
+    d->p0 = qd__calloc(ctx, n + 1, sizeof *d->p0);
+    return d->P && d->Pinv && d->p0 ? QD_OK : nomem(ctx);
+}
+
+static qd_status run(qd__spd *d, const qd_speeds_opts *opts) {
+    qd_status st = setup(d, opts);
+    if (st == QD_OK)
+        st = velocity_map(d);
+    if (st == QD_OK)
+        st = kinetic(d);
+    if (st == QD_OK)
+        st = accelerations(d);
+    if (st != QD_OK)
+        return st;
+    switch (d->e->method) {
+    case QD_SPEEDS_APPELL: st = qd__spd_appell(d, true); break;
+    case QD_SPEEDS_HAMEL: st = qd__spd_hamel(d); break;
+    default: st = qd__spd_kane(d); break;
+    }
+    if (st == QD_OK && opts && opts->appell && !d->e->S)
+        st = qd__spd_appell(d, false);
+    if (st == QD_OK && opts && opts->multipliers && d->nc)
+        st = qd__spd_multipliers(d);
+    if (st == QD_OK)
+        st = check_mass(d);
+    return st;
+}
+
+qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_opts *opts) {
+    if (!ctx || !m)
+        return NULL;
+    if (opts && (unsigned)opts->method >= QD_SPEEDS_METHOD_COUNT) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "unknown method for the equations in speeds");
+        return NULL;
+    }
+    if (check_model(ctx, m) != QD_OK)
+        return NULL;
+    qd__spd d = {.ctx = ctx, .model = m};
+    qd_status st = run(&d, opts);
+    qd__sys_free(&d.sys);
+    qd__free(d.P);
+    qd__free(d.Pinv);
+    qd__free(d.p0);
+    qd__free(d.acc);
+    if (st != QD_OK) {
+        if (!d.e) /* the shell is not yet e's */
+            qd_eom_free(d.shell);
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "deriving the equations in speeds failed");
+        qd_speeds_eom_free(d.e);
+        return NULL;
+    }
+    return d.e;
+}

@@ -1,0 +1,61 @@
+/*
+ * src/speeds/spd.h - what the files of the equations in speeds share: the
+ * derivation's state (the velocity map P, its inverse, the kinematics and
+ * the accelerations in speeds) and one entry per method.  Prefix qd__spd_.
+ */
+#ifndef QD_SPEEDS_SPD_H
+#define QD_SPEEDS_SPD_H
+
+#include "qdot/speeds.h"
+#include "../mech/mech.h"
+
+/* The private part of a qd_speeds_eom (its priv field). */
+typedef struct qd__spd_priv {
+    qd_eom *shell;         /* coordinates and constraints (owns con and their rows) */
+    qd_prog *prog;         /* qd_speeds_eval's: kin, M, f, mult, def */
+    const qd_expr **in;    /* its inputs */
+    size_t nin, nout;
+    double *work;          /* inputs, outputs, registers, solver scratch */
+} qd__spd_priv;
+
+/* A derivation in progress. */
+typedef struct qd__spd {
+    qd_ctx *ctx;
+    const qd_model *model;
+    qd_speeds_eom *e;
+    qd__sys sys;
+    qd_eom *shell;
+    const qd_expr *L;      /* grouped by velocity monomials */
+    size_t n, m, nc;
+    const qd_expr **P;     /* n*n: the speeds' rows A, then the constraints' rows C */
+    const qd_expr **p0;    /* n: b, then c0 */
+    const qd_expr **Pinv;  /* n*n: [W | Wc] */
+    const qd_expr **acc;   /* n: q'' in q, u, u', t */
+} qd__spd;
+
+/* x with q' replaced by the kinematics (and q'' by acc when acc is set). */
+const qd_expr *qd__spd_on_motion(qd__spd *d, const qd_expr *x);
+/* d/dt of x(q, u, t) along the motion: q' by the kinematics, u' kept. */
+const qd_expr *qd__spd_dt(qd__spd *d, const qd_expr *x);
+/* The generalized force G_j the kinetic part leaves on coordinate j:
+ * Q_j - dD/dq'_j + d/dt d(V+U)/dq'_j - d(V+U)/dq_j (only Q - dD/dq' when L
+ * is given), on the motion. */
+const qd_expr *qd__spd_force(qd__spd *d, size_t j);
+/* Lagrange's residual E_j = d/dt dL/dq'_j - dL/dq_j + dD/dq'_j - Q_j on the
+ * motion (q'' = acc). */
+const qd_expr *qd__spd_residual(qd__spd *d, size_t j);
+/* Fill e->M (m*m) and e->f (m) from the m expressions rows_r = M_u u' - f_u
+ * (linear in u'), each entry simplified. */
+qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows);
+/* x simplified after grouping by monomials in the speeds. */
+const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x);
+
+/* The methods: each fills e->M and e->f. */
+qd_status qd__spd_kane(qd__spd *d);
+qd_status qd__spd_hamel(qd__spd *d);
+/* Gibbs-Appell: also sets e->S; with fill false only S is made. */
+qd_status qd__spd_appell(qd__spd *d, bool fill);
+/* e->mult from Lagrange's residuals (opts.multipliers). */
+qd_status qd__spd_multipliers(qd__spd *d);
+
+#endif
