@@ -141,7 +141,9 @@ static size_t dependent_row(qd__spd *d) {
             R[i] = NAN;
         }
     /* Gram-Schmidt on the rows in order: the first with nothing left */
-    double scale = qd__num_norm_inf(n * n, R) + 1e-300;
+    double scale = 1e-300;
+    for (size_t i = 0; i < n * n; i++)
+        scale = fabs(R[i]) > scale ? fabs(R[i]) : scale;
     for (size_t r = 0; r < n && found == n; r++) {
         double *x = R + r * n;
         for (size_t s = 0; s < r; s++) {
