@@ -146,6 +146,13 @@ int cli_cmd_equilibria(int argc, char **argv) {
         return QD_EXIT_FAIL;
     }
     qd_equilibria eq = {0};
+    bool speeds = false;
+    rc = cli_speeds_equilibria(r.ctx, a.file, a.sets, a.nsets, a.json,
+                               a.near ? "--near" : a.box ? "--box" : NULL, &speeds);
+    if (rc != QD_EXIT_OK || speeds) {
+        qd_ctx_free(r.ctx);
+        return rc;
+    }
     rc = cli_lin_load(&r, a.file, a.sets, a.nsets);
     if (rc == QD_EXIT_OK)
         rc = cli_lin_equilibria(&r, a.near, a.box, &eq);

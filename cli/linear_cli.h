@@ -44,6 +44,18 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
 void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b);
 
 
+/* ---- models with speeds (speeds_lin_cli.c) ---------------------------------
+ * Each loads FILE; for a model without `speeds` it does nothing else
+ * (*has_speeds false, QD_EXIT_OK) and the caller goes on as before.
+ * refuse: an option given that a model with speeds does not take (its
+ * name, for the error), or NULL. */
+int cli_speeds_equilibria(qd_ctx *ctx, const char *file, const char *const *sets, size_t nsets,
+                          bool json, const char *refuse, bool *has_speeds);
+/* about: "theta=pi/2, u3=6" (coordinates and speeds), or NULL: the first
+ * equilibrium, free coordinates and speeds 0. */
+int cli_speeds_modes(qd_ctx *ctx, const char *file, const char *const *sets, size_t nsets,
+                     const char *about, bool json, const char *refuse, bool *has_speeds);
+
 /* ---- --scan (scan_cli.c) --------------------------------------------------- */
 
 /* "NAME=A:B": the parameter's name (cap bytes) and the range's ends. */
