@@ -152,7 +152,9 @@ QD_API bool qd_equilibrium_exact_in_parameters(qd_ctx *ctx, const qd_eom *e, con
  *
  * At rest q' = 0 and u' = 0.  For a scleronomic speed map (q' = W u, no
  * term w free of the speeds; else QD_ERR_UNSUPPORTED) that is u = 0 (W has
- * full column rank) and f_u(q, 0) = 0: m equations in n coordinates.  With
+ * full column rank) and f_u(q, 0) = 0: m equations in n coordinates, with
+ * the holonomic constraints phi(q) = 0 (the speeds keep them only
+ * differentiated, so the configuration must be put on them).  With
  * nonholonomic constraints m < n and the equilibria come in families (the
  * rolling disk stands upright anywhere, with any heading): the coordinates
  * no equation at rest involves are free, any value; the others are solved
@@ -166,7 +168,8 @@ typedef struct qd_speeds_equilibria {
     size_t nsolved;          /* coordinates the equations at rest involve */
     size_t *solved;          /* nsolved indices into e->q, ascending */
     bool *free_coord;        /* n: in no equation at rest (any value) */
-    size_t nrows;            /* equations at rest that are not identically 0 */
+    size_t nrows;            /* equations at rest that are not identically 0 (the
+                                holonomic constraints among them) */
     qd_equilibria eq;        /* over the solved coordinates: eq.n = nsolved, each
                                 point's q[j] is coordinate solved[j] */
 } qd_speeds_equilibria;

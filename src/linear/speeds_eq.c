@@ -3,7 +3,10 @@
  *
  * At rest q' = 0 and u' = 0.  The speeds are independent (W has full column
  * rank), so with a scleronomic speed map (w = 0) q' = W u is 0 exactly when
- * u = 0, and u' = 0 when f_u(q, 0) = 0: m equations in the n coordinates.
+ * u = 0, and u' = 0 when f_u(q, 0) = 0: m equations in the n coordinates,
+ * with the holonomic constraints phi(q) = 0, which the speeds keep only
+ * differentiated (a Pfaffian constraint, integrable or not, fixes no
+ * configuration: its constant is the motion's).
  * With nonholonomic constraints m < n, and the equilibria come in families:
  * the rolling disk stands upright anywhere, with any heading.  The
  * coordinates that no equation at rest involves are free (any value); the
@@ -76,6 +79,14 @@ static qd_status rest_equations(qd_ctx *ctx, const qd_speeds_eom *e, const qd_ex
         if (f && !qd_is_zero(f))
             F[(*nz)++] = f;
     }
+    /* the speeds keep the holonomic constraints only differentiated: the
+       configuration must still meet them */
+    for (size_t k = 0; st == QD_OK && k < e->ncon; k++)
+        if (e->con[k].kind == QD_CON_HOLONOMIC) {
+            const qd_expr *phi = qd_simplify(ctx, e->con[k].expr);
+            if (phi && !qd_is_zero(phi))
+                F[(*nz)++] = phi;
+        }
     qd__free(zeros);
     if (st != QD_OK || qd_ctx_status(ctx) != QD_OK)
         return st != QD_OK ? st : qd_ctx_status(ctx);
@@ -258,7 +269,7 @@ qd_status qd_speeds_equilibria_find(qd_ctx *ctx, const struct qd_speeds_eom *e,
     out->n = n;
     out->solved = qd__calloc(ctx, n + 1, sizeof *out->solved);
     out->free_coord = qd__calloc(ctx, n + 1, sizeof *out->free_coord);
-    const qd_expr **F = qd__malloc(ctx, (e->m + 1) * sizeof *F), **G = NULL;
+    const qd_expr **F = qd__malloc(ctx, (e->m + e->ncon + 1) * sizeof *F), **G = NULL;
     fake fk = {0};
     qd_status st = out->solved && out->free_coord && F ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)

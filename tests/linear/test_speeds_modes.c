@@ -276,6 +276,109 @@ static void pendulum_modes(void **state) {
     close_world(&w);
 }
 
+/* ---- against the multiplier form ------------------------------------------- */
+
+/* At rest in the multiplier form (qd_eom: M q'' = f + A^T lambda, A q'' = b)
+ * q'' at q, every velocity 0: an equilibrium when it is 0. */
+static double rest_accel(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const double *q) {
+    const qd_expr *syms[16];
+    double vals[16], qdd[8], lambda[8];
+    size_t k = 0;
+    for (size_t j = 0; j < e->n; j++) {
+        syms[k] = e->q[j];
+        vals[k++] = q[j];
+    }
+    for (size_t i = 0; i < qd_model_nparams(m); i++) {
+        syms[k] = qd_model_param(m, i);
+        vals[k++] = pnum(m, i);
+    }
+    assert_int_equal(qd_eom_eval(ctx, e, k, syms, vals, NULL, NULL, qdd, lambda, NULL), QD_OK);
+    double a = 0;
+    for (size_t j = 0; j < e->n; j++)
+        a = fmax(a, fabs(qdd[j]));
+    return a;
+}
+
+/* The equilibria in speeds are points of rest of the multiplier form, and
+ * the holonomic constraint puts them on the circle: the Cartesian pendulum
+ * (examples/pendulum_cartesian.qd) hangs at (0, -l) and stands at (0, l),
+ * the speed u = x y' - y x' (its angular momentum over m). */
+static void cartesian_pendulum(void **state) {
+    (void)state;
+    static const char plain[] = "coordinates x, y\nparameters m = 0.6, l = 1.4, g = 9.81\n"
+                                "particle m at (x, y)\nV = m*g*y\n"
+                                "constraint rod: x^2 + y^2 = l^2\n";
+    char text[512];
+    snprintf(text, sizeof text, "%sspeeds u = x*y' - y*x'\n", plain);
+    world w;
+    open_world(&w, text);
+    qd_model *pm = qt_parse_ok(w.ctx, plain);
+    qd_eom *pe = qd_eom_derive(w.ctx, pm);
+    assert_non_null(pe);
+    const qd_expr *syms[4];
+    double vals[4], l = param(&w, "l");
+    size_t k = qd_model_nparams(w.m);
+    for (size_t i = 0; i < k; i++) {
+        syms[i] = qd_model_param(w.m, i);
+        vals[i] = pnum(w.m, i);
+    }
+    qd_speeds_equilibria eq;
+    assert_int_equal(qd_speeds_equilibria_find(w.ctx, w.e, w.m, k, syms, vals, NULL, &eq), QD_OK);
+    assert_int_equal(eq.nsolved, 2);
+    assert_int_equal(eq.eq.count, 2);
+    for (size_t i = 0; i < 2; i++) {
+        const double *q = eq.eq.pts[i].q;
+        assert_true(fabs(q[0]) < 1e-12);
+        assert_true(fabs(q[1] - (i ? l : -l)) < 1e-12);
+        assert_true(rest_accel(w.ctx, pm, pe, q) < 1e-12);
+    }
+    /* and off them the multiplier form moves */
+    double off[2] = {l * sin(0.4), -l * cos(0.4)};
+    assert_true(rest_accel(w.ctx, pm, pe, off) > 1);
+    qd_speeds_equilibria_free(&eq);
+    qd_eom_free(pe);
+    qd_model_free(pm);
+    close_world(&w);
+}
+
+/* The disk: its upright equilibria, with any x, y, heading and spin angle,
+ * are rest points of the multiplier form (rolling constraints kept with
+ * their multipliers); a leaning disk is not. */
+static void disk_multiplier_form(void **state) {
+    (void)state;
+    world w;
+    open_world(&w, disk);
+    char plain[1024];
+    snprintf(plain, sizeof plain, "%s", disk);
+    *strstr(plain, "speeds") = '\0';
+    qd_model *pm = qt_parse_ok(w.ctx, plain);
+    qd_eom *pe = qd_eom_derive(w.ctx, pm);
+    assert_non_null(pe);
+    assert_int_equal(pe->ncon, 2);
+    const qd_expr *syms[4];
+    double vals[4];
+    size_t k = qd_model_nparams(w.m);
+    for (size_t i = 0; i < k; i++) {
+        syms[i] = qd_model_param(w.m, i);
+        vals[i] = pnum(w.m, i);
+    }
+    qd_speeds_equilibria eq;
+    assert_int_equal(qd_speeds_equilibria_find(w.ctx, w.e, w.m, k, syms, vals, NULL, &eq), QD_OK);
+    assert_int_equal(eq.eq.count, 2);
+    /* the free coordinates anywhere (the same order in both models) */
+    double q[5] = {0.7, -1.1, 0.4, 0, 2.3};
+    for (size_t i = 0; i < eq.eq.count; i++) {
+        q[eq.solved[0]] = eq.eq.pts[i].q[0];
+        assert_true(rest_accel(w.ctx, pm, pe, q) < 1e-12);
+    }
+    qd_speeds_equilibria_free(&eq);
+    q[3] = 1.0;
+    assert_true(rest_accel(w.ctx, pm, pe, q) > 1);
+    qd_eom_free(pe);
+    qd_model_free(pm);
+    close_world(&w);
+}
+
 /* A speed with a term free of the velocities: rest is not u = 0. */
 static void rheonomic_refused(void **state) {
     (void)state;
@@ -295,6 +398,8 @@ int main(void) {
         cmocka_unit_test(disk_equilibria),
         cmocka_unit_test(pendulum_equilibria),
         cmocka_unit_test(pendulum_modes),
+        cmocka_unit_test(cartesian_pendulum),
+        cmocka_unit_test(disk_multiplier_form),
         cmocka_unit_test(rheonomic_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
