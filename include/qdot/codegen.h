@@ -75,9 +75,12 @@ QD_API qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, c
  *   int  P_rhs(t, y, par, dydt)          y = (q, u), dydt = (q', u'), u' from
  *                                        M_u u' = f_u; nonzero when M_u is
  *                                        singular
+ *   double P_energy(t, y, par)           T + V in q and u (NAN for a model
+ *                                        given by L or with U)
+ *   void P_jacobian(t, y, par, J)        (N+M) x (N+M) row-major d(dydt)/dy,
+ *                                        analytic
  *
- * No energy or Jacobian (yet).  QD_ERR_ARG for a bad prefix or a mass
- * matrix that depends on the speeds. */
+ * QD_ERR_ARG for a bad prefix or a mass matrix that depends on the speeds. */
 QD_API qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const struct qd_speeds_eom *e,
                                      const char *prefix, qd_buf *c_text, qd_buf *h_text);
 

@@ -11,6 +11,11 @@
  * qd_print_c_block computes the outputs, sharing every common
  * subexpression.  The kinematics, M_u and f_u are printed in one block in
  * rhs, so what they share (sines of the angles, mostly) is computed once.
+ *
+ * The Jacobian of y' differentiates M_u u' = f_u as emit.c does M q'' = f:
+ * M_u du'/dy_k = df_u/dy_k - (dM_u/dy_k) u', with u' a symbol bound to the
+ * solved value, M_u factored once for all columns; the kinematic rows are
+ * differentiated directly.
  */
 #include "cg.h"
 #include "base/mem.h"
@@ -30,14 +35,22 @@ typedef struct sgen {
     const char *P;
     size_t n, ns, np;   /* coordinates, speeds, parameters */
     qd_buf *c;
-    const qd_expr **all; /* kin (n), M (ns*ns), f (ns): rewritten together (angles.c) */
+    /* kin (n), M (ns*ns), f (ns), energy (1), d kin/dy (n*d), the right-hand
+       sides of the Jacobian's dynamic rows (d*ns, column k at k*ns): every
+       printed expression, rewritten together (angles.c) */
+    const qd_expr **all;
+    size_t nall;
+    bool has_energy;
 } sgen;
 
-/* Where a function reads q and u: q[qoff + j], u[uoff + r]; NULL when it
- * has none. */
+static size_t dim(const sgen *g) { return g->n + g->ns; }
+
+/* Where a function reads q, u and u': q[qoff + j], u[uoff + r], z[r]; NULL
+ * when it has none. */
 typedef struct ssrc {
     const char *q, *u;
     size_t qoff, uoff;
+    const char *z;
 } ssrc;
 
 /* One local constant for sym, or an error when the function has no value
@@ -56,6 +69,11 @@ static qd_status bind(sgen *g, const ssrc *s, const qd_expr *sym, qd_buf *decl) 
         if (g->e->u[r] == sym) {
             arr = s->u;
             slot = s->uoff + r;
+        }
+    for (size_t r = 0; r < g->ns && s->z; r++)
+        if (g->e->ud[r] == sym) {
+            arr = s->z;
+            slot = r;
         }
     for (size_t i = 0; i < g->np && !arr; i++)
         if (qd_model_param(g->m, i) == sym) {
@@ -133,15 +151,59 @@ static qd_status block_to(sgen *g, const ssrc *s, size_t nout, const qd_expr *co
 
 /* ---- the expressions ---------------------------------------------------------- */
 
+/* T + V when the derivation kept T (a model given by L has no T*), else
+ * NULL; V may be written with velocities only through the speeds' names,
+ * which stand for their definitions: q' is replaced by the kinematics. */
+static const qd_expr *energy(sgen *g) {
+    const qd_speeds_eom *e = g->e;
+    if (!e->T || qd_model_gen_potential(g->m))
+        return NULL;
+    const qd_expr *V = qd_model_potential(g->m);
+    const qd_expr *h = V ? qd_add(g->ctx, e->T, V) : e->T;
+    return qd_simplify(g->ctx, qd_subs(g->ctx, h, g->n, e->qd, e->kin));
+}
+
+/* Column k of the Jacobian's dynamic rows, before the solve with M_u:
+ * df_u/dy_k - (dM_u/dy_k) u'. */
+static void jac_column(sgen *g, const qd_expr *y, const qd_expr **out, const qd_expr **terms) {
+    qd_ctx *ctx = g->ctx;
+    const qd_speeds_eom *e = g->e;
+    size_t ns = g->ns;
+    for (size_t r = 0; r < ns; r++) {
+        size_t k = 0;
+        terms[k++] = qd_diff(ctx, e->f[r], y);
+        for (size_t c = 0; c < ns; c++)
+            terms[k++] = qd_neg(ctx, qd_mul(ctx, qd_diff(ctx, e->M[r * ns + c], y), e->ud[c]));
+        out[r] = qd_add_n(ctx, k, terms);
+    }
+}
+
 static qd_status build(sgen *g) {
     const qd_speeds_eom *e = g->e;
-    size_t n = g->n, ns = g->ns, nall = n + ns * ns + ns;
-    g->all = qd__malloc(g->ctx, nall * sizeof *g->all);
-    if (!g->all)
+    size_t n = g->n, ns = g->ns, d = dim(g);
+    g->nall = n + ns * ns + ns + 1 + n * d + d * ns;
+    g->all = qd__malloc(g->ctx, g->nall * sizeof *g->all);
+    const qd_expr **terms = qd__malloc(g->ctx, (ns + 2) * sizeof *terms);
+    if (!g->all || !terms) {
+        qd__free(terms);
         return QD_ERR_NOMEM;
+    }
     memcpy(g->all, e->kin, n * sizeof *g->all);
     memcpy(g->all + n, e->M, ns * ns * sizeof *g->all);
     memcpy(g->all + n + ns * ns, e->f, ns * sizeof *g->all);
+    const qd_expr *h = energy(g);
+    g->has_energy = h != NULL;
+    g->all[n + ns * ns + ns] = h ? h : qd_int(g->ctx, 0);
+    const qd_expr **dk = g->all + n + ns * ns + ns + 1, **R = dk + n * d;
+    for (size_t k = 0; k < d; k++) {
+        const qd_expr *y = k < n ? e->q[k] : e->u[k - n];
+        for (size_t i = 0; i < n; i++)
+            dk[i * d + k] = qd_diff(g->ctx, e->kin[i], y);
+        jac_column(g, y, R + k * ns, terms);
+    }
+    qd__free(terms);
+    if (qd_ctx_status(g->ctx) != QD_OK)
+        return qd_ctx_status(g->ctx);
     /* M_u = W^T M W is a function of q and t: rhs factors it before u is
        read, and mass() has no u to read */
     for (size_t i = 0; i < ns * ns; i++)
@@ -153,12 +215,15 @@ static qd_status build(sgen *g) {
                 return QD_ERR_ARG;
             }
     bool applied;
-    return qd__cg_angle_sums(g->ctx, nall, g->all, &applied);
+    return qd__cg_angle_sums(g->ctx, g->nall, g->all, &applied);
 }
 
 static const qd_expr *const *kin(const sgen *g) { return g->all; }
 static const qd_expr *const *mass(const sgen *g) { return g->all + g->n; }
 static const qd_expr *const *forcing(const sgen *g) { return g->all + g->n + g->ns * g->ns; }
+static const qd_expr *const *hamilton(const sgen *g) { return forcing(g) + g->ns; }
+static const qd_expr *const *dkin(const sgen *g) { return hamilton(g) + 1; }
+static const qd_expr *const *jac_rhs(const sgen *g) { return dkin(g) + g->n * dim(g); }
 
 /* ---- the text -------------------------------------------------------------------- */
 
@@ -226,8 +291,18 @@ static void header(sgen *g, qd_buf *h) {
                   "/* dydt = (q', u'), with u' from M_u u' = f_u (Cholesky, LU when M_u is\n"
                   "   not positive definite).  Returns 0, or 1 when M_u is singular (then u'\n"
                   "   is NaN). */\n"
-                  "int %s_rhs(double t, const double *y, const double *par, double *dydt);\n",
+                  "int %s_rhs(double t, const double *y, const double *par, double *dydt);\n\n",
                   P);
+    qd_buf_printf(h,
+                  "/* %s */\n"
+                  "double %s_energy(double t, const double *y, const double *par);\n\n"
+                  "/* J ((N+M)*(N+M)) = d(dydt)/dy, analytic; the rows of u' NaN when M_u is\n"
+                  "   singular. */\n"
+                  "void %s_jacobian(double t, const double *y, const double *par, double *J);\n",
+                  g->has_energy ? "The energy T + V in q and u (conserved when the model is "
+                                  "scleronomic and conservative)."
+                                : "NAN: the model gives L (or U), so no energy T + V is known.",
+                  P, P);
     guard(h, P, false);
 }
 
@@ -270,7 +345,7 @@ static qd_status fn_kinematics(sgen *g) {
     qd_buf_printf(g->c, "void %s_kinematics(double t, const double *qd_q, const double *qd_u,\n"
                         "    const double *qd_par, double *qd_qd) {\n", g->P);
     unused(g, "    (void)qd_q;\n    (void)qd_u;\n");
-    ssrc s = {"qd_q", "qd_u", 0, 0};
+    ssrc s = {"qd_q", "qd_u", 0, 0, NULL};
     qd_status st = block_to(g, &s, g->n, kin(g), "qd_qd");
     qd_buf_puts(g->c, "}\n\n");
     return st;
@@ -280,7 +355,7 @@ static qd_status fn_mass(sgen *g) {
     qd_buf_printf(g->c, "void %s_mass(double t, const double *qd_q, const double *qd_par, "
                         "double *qd_M) {\n", g->P);
     unused(g, "    (void)qd_q;\n");
-    ssrc s = {"qd_q", NULL, 0, 0};
+    ssrc s = {"qd_q", NULL, 0, 0, NULL};
     qd_status st = block_to(g, &s, g->ns * g->ns, mass(g), "qd_M");
     qd_buf_puts(g->c, "}\n\n");
     return st;
@@ -290,7 +365,7 @@ static qd_status fn_forcing(sgen *g) {
     qd_buf_printf(g->c, "void %s_forcing(double t, const double *qd_q, const double *qd_u,\n"
                         "    const double *qd_par, double *qd_f) {\n", g->P);
     unused(g, "    (void)qd_q;\n    (void)qd_u;\n");
-    ssrc s = {"qd_q", "qd_u", 0, 0};
+    ssrc s = {"qd_q", "qd_u", 0, 0, NULL};
     qd_status st = block_to(g, &s, g->ns, forcing(g), "qd_f");
     qd_buf_puts(g->c, "}\n\n");
     return st;
@@ -305,7 +380,7 @@ static qd_status rhs_block(sgen *g) {
     if (st == QD_OK) {
         lhs_names(names, lhs, "qd_dydt", 0, n);
         lhs_names(names + n, lhs + n, "qd_K", 0, ns * ns + ns);
-        ssrc s = {"qd_y", "qd_y", 0, n};
+        ssrc s = {"qd_y", "qd_y", 0, n, NULL};
         st = block(g, &s, nout, g->all, lhs);
     }
     qd__free(names);
@@ -330,6 +405,53 @@ static qd_status fn_rhs(sgen *g) {
                   "    for (int i = 0; i < %zu; i++)\n        qd_dydt[%zu + i] = qd_r[i];\n"
                   "    return 0;\n}\n",
                   ns, n, ns, n);
+    return st;
+}
+
+static qd_status fn_energy(sgen *g) {
+    qd_buf *c = g->c;
+    qd_buf_printf(c, "\ndouble %s_energy(double t, const double *qd_y, const double *qd_par) {\n",
+                  g->P);
+    unused(g, "    (void)qd_y;\n");
+    if (!g->has_energy) {
+        qd_buf_puts(c, "    return NAN;\n}\n");
+        return QD_OK;
+    }
+    qd_buf_puts(c, "    double qd_h[1];\n");
+    ssrc s = {"qd_y", "qd_y", 0, g->n, NULL};
+    qd_status st = block_to(g, &s, 1, hamilton(g), "qd_h");
+    qd_buf_puts(c, "    return qd_h[0];\n}\n");
+    return st;
+}
+
+static qd_status fn_jacobian(sgen *g) {
+    qd_buf *c = g->c;
+    size_t n = g->n, ns = g->ns, d = dim(g);
+    qd_buf_printf(c, "\nvoid %s_jacobian(double t, const double *qd_y, const double *qd_par, "
+                     "double *qd_J) {\n", g->P);
+    qd_buf_printf(c, "    double qd_K[qd_NK * qd_NK + qd_NK], qd_R[%zu];\n"
+                     "    double *qd_z = qd_K + qd_NK * qd_NK;\n    qd_fac qd_fa;\n", d * ns);
+    unused(g, "    (void)qd_y;\n");
+    qd_buf_printf(c, "    for (int i = 0; i < %zu; i++)\n        qd_J[i] = 0.0;\n    {\n", d * d);
+    ssrc s = {"qd_y", "qd_y", 0, n, NULL};
+    qd_status st = block_to(g, &s, n * d, dkin(g), "qd_J");
+    qd_buf_puts(c, "    }\n    {\n");
+    if (st == QD_OK)
+        st = block_to(g, &s, ns * ns + ns, mass(g), "qd_K");
+    qd_buf_printf(c,
+                  "    }\n    if (qd_factor(qd_K, &qd_fa)) {\n"
+                  "        for (int i = %zu; i < %zu; i++)\n            qd_J[i] = NAN;\n"
+                  "        return;\n    }\n    qd_solve(qd_K, &qd_fa, qd_z);\n    {\n",
+                  n * d, d * d);
+    s.z = "qd_z";
+    if (st == QD_OK)
+        st = block_to(g, &s, d * ns, jac_rhs(g), "qd_R");
+    qd_buf_printf(c,
+                  "    }\n    for (int k = 0; k < %zu; k++)\n"
+                  "        qd_solve(qd_K, &qd_fa, qd_R + k * qd_NK);\n"
+                  "    for (int i = 0; i < %zu; i++)\n        for (int k = 0; k < %zu; k++)\n"
+                  "            qd_J[(%zu + i) * %zu + k] = qd_R[k * qd_NK + i];\n}\n",
+                  d, ns, d, n, d);
     return st;
 }
 
@@ -383,6 +505,10 @@ qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const qd_speeds_eo
         st = fn_forcing(&g);
     if (st == QD_OK)
         st = fn_rhs(&g);
+    if (st == QD_OK)
+        st = fn_energy(&g);
+    if (st == QD_OK)
+        st = fn_jacobian(&g);
     qd__free(g.all);
     qd_buf_free(&scratch);
     if (st == QD_OK && (c_text->failed || (h_text && h_text->failed)))

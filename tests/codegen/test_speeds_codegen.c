@@ -9,6 +9,11 @@
  *     checked), the rolling disk (3 speeds for 5 coordinates and 2 rolling
  *     constraints) and the Chaplygin sleigh;
  *   mass and forcing: M_u u' = f_u holds at the rhs's u';
+ *   the Jacobian equals central differences of the generated rhs (relative
+ *     1e-6);
+ *   the energy T + V is constant along the motion (dE/dt = grad E . y' = 0 by
+ *     central differences): the rolling constraints do no work (Desloge
+ *     ch. 49; examples/rolling_disk_tilted.qd);
  *   a prefix that is not a C identifier is refused.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -61,12 +66,16 @@ static bool close_to(double a, double b, double tol) {
 typedef int (*rhs_fn)(double, const double *, const double *, double *);
 typedef void (*mass_fn)(double, const double *, const double *, double *);
 typedef void (*forcing_fn)(double, const double *, const double *, const double *, double *);
+typedef double (*energy_fn)(double, const double *, const double *);
+typedef void (*jac_fn)(double, const double *, const double *, double *);
 
 typedef struct loaded {
     void *h;
     rhs_fn rhs;
     mass_fn mass;
     forcing_fn forcing;
+    energy_fn energy;
+    jac_fn jacobian;
 } loaded;
 
 static void write_file(const char *path, const qd_buf *b) {
@@ -111,12 +120,57 @@ static void generate(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e, con
     *(void **)&out->rhs = sym(out->h, prefix, "rhs");
     *(void **)&out->mass = sym(out->h, prefix, "mass");
     *(void **)&out->forcing = sym(out->h, prefix, "forcing");
+    *(void **)&out->energy = sym(out->h, prefix, "energy");
+    *(void **)&out->jacobian = sym(out->h, prefix, "jacobian");
 }
 
 static double pnum(const qd_model *m, size_t i) {
     double x = 0;
     assert_int_equal(qd_model_param_number(m, i, &x), QD_OK);
     return x;
+}
+
+/* J against central differences of rhs, column by column. */
+static void check_jacobian(const loaded *L, double t, const double *y, const double *par,
+                           size_t d) {
+    double J[4 * NMAX * NMAX], yp[2 * NMAX], ym[2 * NMAX], fp[2 * NMAX], fm[2 * NMAX];
+    L->jacobian(t, y, par, J);
+    for (size_t k = 0; k < d; k++) {
+        double h = 1e-6 * (1 + fabs(y[k]));
+        memcpy(yp, y, d * sizeof *yp);
+        memcpy(ym, y, d * sizeof *ym);
+        yp[k] += h;
+        ym[k] -= h;
+        assert_int_equal(L->rhs(t, yp, par, fp), 0);
+        assert_int_equal(L->rhs(t, ym, par, fm), 0);
+        for (size_t i = 0; i < d; i++) {
+            double fd = (fp[i] - fm[i]) / (2 * h);
+            if (!close_to(J[i * d + k], fd, 1e-6))
+                fail_msg("J[%zu][%zu] = %.12g, differences %.12g", i, k, J[i * d + k], fd);
+        }
+    }
+}
+
+/* dE/dt along y' = rhs: (E(y + h y') - E(y - h y'))/(2h), against the
+ * size of E's gradient along y'. */
+static void check_energy(const loaded *L, double t, const double *y, const double *par,
+                         size_t d) {
+    double f[2 * NMAX], yp[2 * NMAX], ym[2 * NMAX], h = 1e-5;
+    assert_int_equal(L->rhs(t, y, par, f), 0);
+    for (size_t i = 0; i < d; i++) {
+        yp[i] = y[i] + h * f[i];
+        ym[i] = y[i] - h * f[i];
+    }
+    double Ep = L->energy(t, yp, par), Em = L->energy(t, ym, par);
+    assert_true(isfinite(Ep) && isfinite(Em));
+    double scale = 0;
+    for (size_t i = 0; i < d; i++) {
+        double yi[2 * NMAX];
+        memcpy(yi, y, d * sizeof *yi);
+        yi[i] += h * f[i];
+        scale += fabs(L->energy(t, yi, par) - L->energy(t, y, par)) / h;
+    }
+    assert_true(fabs(Ep - Em) / (2 * h) <= 1e-6 * (1 + scale));
 }
 
 /* At random states: the generated rhs against qd_speeds_eval, and
@@ -163,6 +217,8 @@ static void compare(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e, cons
             }
             assert_true(fabs(lhs - f[r]) <= 1e-12 * (1 + scale));
         }
+        check_jacobian(L, t, y, par, n + ns);
+        check_energy(L, t, y, par, n + ns);
     }
 }
 
