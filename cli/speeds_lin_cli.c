@@ -242,10 +242,11 @@ static int at_equilibrium(sp_run *r) {
 }
 
 static const char *verdict_text(int stable) {
-    return stable == 1 ? "stable (linearly): every Re s <= 0, the zero roots semisimple"
-         : stable == 0 ? "unstable: a root with Re s > 0"
-                       : "borderline: a repeated root on the imaginary axis (the linear motion "
-                         "may drift)";
+    return stable == 1 ? "stable (every Re s <= 0; the zero roots semisimple: neighbouring "
+                         "steady motions)"
+         : stable == 0 ? "unstable"
+                       : "borderline (zero or imaginary roots that repeat without as many "
+                         "eigenvectors: the linear motion may drift)";
 }
 
 static void modes_text(const sp_run *r, const qd_speeds_linear *lin, const qd_modes_result *res,
@@ -256,7 +257,7 @@ static void modes_text(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
         qd_buf_printf(b, "%s%s = ", k ? ", " : "", qd_expr_name(r->syms[k]));
         cli_state_put_result(b, r->vals[k]);
     }
-    qd_buf_puts(b, "\nreduced system: y = (");
+    qd_buf_puts(b, "\nreduced system: (");
     for (size_t i = 0; i < lin->nkept; i++)
         qd_buf_printf(b, "%s, ", qd_expr_name(e->q[lin->kept[i]]));
     put_names(b, e->m, e->u, NULL);
@@ -272,15 +273,18 @@ static void modes_text(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
     if (rate > 1e-8)
         qd_buf_printf(b, "note: not a stationary point of the reduced system: |y'| = %.3g "
                          "there; the linearization drops it\n", rate);
-    qd_buf_printf(b, "eigenvalues of the linearized system (%zu):\n", res->neig);
+    qd_buf_printf(b, "eigenvalues s of its Jacobian (%zu):\n", res->neig);
+    double big = 0;
+    for (size_t i = 0; i < res->neig; i++)
+        big = fmax(big, hypot(res->eig_re[i], res->eig_im[i]));
     for (size_t i = 0; i < res->neig; i++) {
-        qd_buf_puts(b, "  s = ");
-        cli_state_put_result(b, res->eig_re[i]);
-        if (res->eig_im[i] != 0) {
-            qd_buf_puts(b, res->eig_im[i] < 0 ? " - " : " + ");
-            cli_state_put_result(b, fabs(res->eig_im[i]));
-            qd_buf_puts(b, " i");
-        }
+        /* round-off about 0 is not printed: the verdict already judged it */
+        double re = res->eig_re[i], im = res->eig_im[i];
+        re = fabs(re) <= 1e-12 * big ? 0 : re;
+        im = fabs(im) <= 1e-12 * big ? 0 : im;
+        qd_buf_printf(b, "  s = %.10g %s %.10gi", re, im < 0 ? "-" : "+", fabs(im));
+        if (im > 0)
+            qd_buf_printf(b, "  (frequency %.10g rad/s)", im);
         qd_buf_puts(b, "\n");
     }
     qd_buf_printf(b, "%s\n", verdict_text(res->stable));
@@ -319,6 +323,9 @@ static void modes_json(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
         cli_json_end_array(&j);
     }
     cli_json_end_array(&j);
+    cli_json_key(&j, "verdict");
+    cli_json_string(&j, res->stable == 1 ? "stable" : res->stable == 0 ? "unstable"
+                                                                         : "borderline");
     cli_json_key(&j, "stable");
     if (res->stable < 0)
         cli_json_null(&j);
