@@ -20,7 +20,7 @@
 
 typedef struct sp_run {
     qd_ctx *ctx;
-    cli_model_file mf;
+    cli_model_file *mf;   /* borrowed */
     qd_speeds_eom *e;
     size_t nvals;
     const qd_expr **syms;   /* coordinates, speeds, t, parameters */
@@ -29,26 +29,20 @@ typedef struct sp_run {
 
 static void sp_free(sp_run *r) {
     qd_speeds_eom_free(r->e);
-    cli_model_file_free(&r->mf);
     free(r->syms);
     free(r->vals);
 }
 
-/* Load; *has_speeds false (and nothing kept) for a model without speeds. */
-static int sp_load(sp_run *r, const char *file, const char *const *sets, size_t nsets,
-                   const char *refuse, bool *has_speeds) {
-    int rc = cli_load(r->ctx, file, nsets, sets, false, &r->mf);
-    *has_speeds = rc == QD_EXIT_OK && qd_model_nspeeds(r->mf.model) > 0;
-    if (rc != QD_EXIT_OK || !*has_speeds)
-        return rc;
+/* Derive, and the state: coordinates, speeds, t at 0, parameters at their values. */
+static int sp_load(sp_run *r, const char *refuse) {
     if (refuse) {
         cli_diag_error("%s is not available for a model with speeds (the state is q and u)",
                        refuse);
         return QD_EXIT_USAGE;
     }
-    if (!(r->e = qd_speeds_derive(r->ctx, r->mf.model, NULL)))
-        return cli_eom_derive_error(r->ctx, &r->mf);
-    const qd_model *m = r->mf.model;
+    if (!(r->e = qd_speeds_derive(r->ctx, r->mf->model, NULL)))
+        return cli_eom_derive_error(r->ctx, r->mf);
+    const qd_model *m = r->mf->model;
     size_t n = r->e->n, ns = r->e->m, np = qd_model_nparams(m);
     r->nvals = n + ns + 1 + np;
     r->syms = calloc(r->nvals, sizeof *r->syms);
@@ -172,16 +166,15 @@ static void eq_json(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
     b->failed = b->failed || !cli_json_ok(&j);
 }
 
-int cli_speeds_equilibria(qd_ctx *ctx, const char *file, const char *const *sets, size_t nsets,
-                          bool json, const char *refuse, bool *has_speeds) {
-    sp_run r = {.ctx = ctx};
+int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char *refuse) {
+    sp_run r = {.ctx = ctx, .mf = mf};
     qd_speeds_equilibria s = {0};
-    int rc = sp_load(&r, file, sets, nsets, refuse, has_speeds);
-    if (rc == QD_EXIT_OK && *has_speeds &&
-        qd_speeds_equilibria_find(ctx, r.e, r.mf.model, r.nvals, r.syms, r.vals, NULL, &s) !=
+    int rc = sp_load(&r, refuse);
+    if (rc == QD_EXIT_OK &&
+        qd_speeds_equilibria_find(ctx, r.e, r.mf->model, r.nvals, r.syms, r.vals, NULL, &s) !=
             QD_OK)
         rc = cli_diag_ctx(ctx);
-    if (rc == QD_EXIT_OK && *has_speeds) {
+    if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
         (json ? eq_json : eq_text)(&r, &s, &b);
         rc = cli_emit(&b, "equilibria");
@@ -226,7 +219,7 @@ static int parse_about(sp_run *r, const char *text) {
 /* No --about: the first equilibrium listed, free coordinates and speeds 0. */
 static int at_equilibrium(sp_run *r) {
     qd_speeds_equilibria s;
-    if (qd_speeds_equilibria_find(r->ctx, r->e, r->mf.model, r->nvals, r->syms, r->vals, NULL,
+    if (qd_speeds_equilibria_find(r->ctx, r->e, r->mf->model, r->nvals, r->syms, r->vals, NULL,
                                   &s) != QD_OK)
         return cli_diag_ctx(r->ctx);
     int rc = QD_EXIT_OK;
@@ -336,19 +329,19 @@ static void modes_json(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
     b->failed = b->failed || !cli_json_ok(&j);
 }
 
-int cli_speeds_modes(qd_ctx *ctx, const char *file, const char *const *sets, size_t nsets,
-                     const char *about, bool json, const char *refuse, bool *has_speeds) {
-    sp_run r = {.ctx = ctx};
+int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, bool json,
+                     const char *refuse) {
+    sp_run r = {.ctx = ctx, .mf = mf};
     qd_speeds_linear lin = {0};
     qd_modes_result res = {0};
-    int rc = sp_load(&r, file, sets, nsets, refuse, has_speeds);
-    if (rc == QD_EXIT_OK && *has_speeds)
+    int rc = sp_load(&r, refuse);
+    if (rc == QD_EXIT_OK)
         rc = about ? parse_about(&r, about) : at_equilibrium(&r);
-    if (rc == QD_EXIT_OK && *has_speeds &&
+    if (rc == QD_EXIT_OK &&
         (qd_speeds_linear_about(ctx, r.e, r.nvals, r.syms, r.vals, &lin) != QD_OK ||
          qd_speeds_modes_solve(ctx, &lin, &res) != QD_OK))
         rc = cli_diag_ctx(ctx);
-    if (rc == QD_EXIT_OK && *has_speeds) {
+    if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
         (json ? modes_json : modes_text)(&r, &lin, &res, &b);
         rc = cli_emit(&b, "modes");

@@ -20,6 +20,8 @@ Expected values are textbook results, not output of the code under test:
     -Werror, gives m v' = -m b w^2, (I + m b^2) w' = m b v w (Chaplygin 1911;
     Bloch, Nonholonomic Mechanics and Control, sec. 1.7, his contact point
     behind the centre: a = -b);
+  - the model read once: from standard input (`-`) with and without speeds
+    (a second read would find it empty);
   - errors: options that need coordinates alone, an unknown name in
     --about, a rheonomic speed map for equilibria, --eliminate for codegen.
 Prints "N passed, N failed"; exit 1 on failure.
@@ -157,6 +159,17 @@ def sleigh_codegen(qdot, tmp):
     check("sleigh w'", close(wd, m * b * v * w / (I + m * b * b), 1e-13), wd)
 
 
+def stdin_once(qdot, disk):
+    for path, want in ((disk, "theta = pi/2"), (str(EX / "double_pendulum.qd"),
+                                                 "theta1 = 0, theta2 = 0")):
+        for cmd in ("equilibria", "modes"):
+            with open(path) as f:
+                p = subprocess.run([str(qdot), cmd, "-"], stdin=f, capture_output=True,
+                                   text=True, timeout=60)
+            check(f"stdin {cmd} {os.path.basename(path)}",
+                  p.returncode == 0 and (want in p.stdout or cmd == "modes"), p.stderr)
+
+
 def errors(qdot, disk, tmp):
     rc, out, err = run(qdot, "modes", disk, "--scan", "g=1:2")
     check("scan refused", rc == 2 and "--scan is not available for a model with speeds" in err,
@@ -189,6 +202,7 @@ def main():
         disk_modes(qdot, disk, g=4.0, sets=("--set", "g=4"))
         pendulum_with_speeds(qdot, tmp)
         sleigh_codegen(qdot, tmp)
+        stdin_once(qdot, disk)
         errors(qdot, disk, tmp)
     print(f"{results['passed']} passed, {results['failed']} failed")
     return 1 if results["failed"] else 0
