@@ -522,9 +522,8 @@ int cli_cmd_modes(int argc, char **argv) {
     }
     rc = cli_lin_load_model(&r.lr, a.file, a.sets, a.nsets);
     if (rc == QD_EXIT_OK && qd_model_nspeeds(r.lr.mf.model)) {
-        rc = cli_speeds_modes(r.lr.ctx, &r.lr.mf, a.about, a.json,
-                              a.scan ? "--scan" : a.at_eq ? "--at-equilibrium"
-                                     : a.initial ? "--initial" : NULL);
+        rc = cli_speeds_modes(r.lr.ctx, &r.lr.mf, a.about, a.scan, a.steps, a.json,
+                              a.at_eq ? "--at-equilibrium" : a.initial ? "--initial" : NULL);
         goto done;
     }
     if (rc == QD_EXIT_OK)

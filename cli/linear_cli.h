@@ -55,9 +55,10 @@ void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf
  * error), or NULL. */
 int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char *refuse);
 /* about: "theta=pi/2, u3=6" (coordinates and speeds), or NULL: the first
- * equilibrium, free coordinates and speeds 0. */
-int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, bool json,
-                     const char *refuse);
+ * equilibrium, free coordinates and speeds 0.  range: --scan NAME=A:B (a
+ * parameter, speed or coordinate; steps as --steps), or NULL. */
+int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const char *range,
+                     size_t steps, bool json, const char *refuse);
 
 /* ---- --scan (scan_cli.c) --------------------------------------------------- */
 

@@ -329,14 +329,51 @@ static void modes_json(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
     b->failed = b->failed || !cli_json_ok(&j);
 }
 
-int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, bool json,
-                     const char *refuse) {
+/* --scan NAME=A:B: the verdict at the state as NAME (a parameter, speed or
+ * coordinate) goes from A to B. */
+static int scan(sp_run *r, const char *range, const char *about, size_t steps, bool json) {
+    char name[128];
+    double a, b;
+    int rc = cli_scan_range(r->ctx, range, name, sizeof name, &a, &b);
+    const qd_expr *what = NULL;
+    for (size_t k = 0; rc == QD_EXIT_OK && k < r->nvals; k++)
+        if (r->syms[k] && !strcmp(qd_expr_name(r->syms[k]), name) &&
+            qd_symbol_role(r->syms[k]) != QD_ROLE_TIME)
+            what = r->syms[k];
+    if (rc == QD_EXIT_OK && !what) {
+        cli_diag_error("--scan: %s is not a parameter, coordinate or speed of the model", name);
+        return QD_EXIT_USAGE;
+    }
+    qd_scan_opts o = {.steps = steps};
+    qd_scan sc = {0};
+    if (rc == QD_EXIT_OK && qd_speeds_modes_scan(r->ctx, r->e, r->nvals, r->syms, r->vals, what,
+                                                 a, b, &o, &sc) != QD_OK) {
+        rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
+    } else if (rc == QD_EXIT_OK) {
+        char followed[1024];
+        snprintf(followed, sizeof followed, "the state %s",
+                 about ? about : "of the first equilibrium (every speed 0)");
+        cli_scan_view v = {name, NULL, followed, "state"};
+        rc = cli_scan_emit(&v, &sc, json);
+    }
+    qd_scan_free(&sc);
+    return rc;
+}
+
+int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const char *range,
+                     size_t steps, bool json, const char *refuse) {
     sp_run r = {.ctx = ctx, .mf = mf};
     qd_speeds_linear lin = {0};
     qd_modes_result res = {0};
     int rc = sp_load(&r, refuse);
     if (rc == QD_EXIT_OK)
         rc = about ? parse_about(&r, about) : at_equilibrium(&r);
+    if (rc == QD_EXIT_OK && range) {
+        rc = scan(&r, range, about, steps, json);
+        sp_free(&r);
+        return rc;
+    }
     if (rc == QD_EXIT_OK &&
         (qd_speeds_linear_about(ctx, r.e, r.nvals, r.syms, r.vals, &lin) != QD_OK ||
          qd_speeds_modes_solve(ctx, &lin, &res) != QD_OK))

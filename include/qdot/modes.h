@@ -239,6 +239,20 @@ QD_API void qd_speeds_linear_free(qd_speeds_linear *l);
 QD_API qd_status qd_speeds_modes_solve(qd_ctx *ctx, const qd_speeds_linear *lin,
                                        qd_modes_result *out);
 
+/* Follow the verdict of qd_speeds_modes_solve as one value of the state
+ * syms/vals goes from a to b (a < b), the others fixed: a parameter (the
+ * gravity under a rolling disk), or a speed or coordinate of a family of
+ * steady motions (the disk's spin).  opts: steps and tol as for
+ * qd_modes_scan (about and start are not read).  out: n = 0 (no point is
+ * followed), margin the largest Re s, conservative false; transitions
+ * bisected on the verdict to a bracket of width tol.  QD_ERR_ARG when what
+ * is not among syms or a >= b.  Free with qd_scan_free (also after a
+ * failure). */
+QD_API qd_status qd_speeds_modes_scan(qd_ctx *ctx, const struct qd_speeds_eom *e, size_t nvals,
+                                      const qd_expr *const *syms, const double *vals,
+                                      const qd_expr *what, double a, double b,
+                                      const qd_scan_opts *opts, qd_scan *out);
+
 #ifdef __cplusplus
 }
 #endif

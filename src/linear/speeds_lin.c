@@ -112,26 +112,56 @@ static qd_status parts(qd_ctx *ctx, const qd_speeds_eom *e, const qd_speeds_line
     return qd_ctx_status(ctx);
 }
 
-/* Every output at syms/vals (symbols not given are 0). */
-static qd_status evaluate(qd_ctx *ctx, const sparts *p, size_t nvals,
-                          const qd_expr *const *syms, const double *vals, double *v) {
-    size_t nin = 0;
-    const qd_expr **in = qd__num_inputs(ctx, p->nout, p->out, &nin);
-    qd_prog *prog = in ? qd_prog_new(ctx, nin, in, p->nout, p->out) : NULL;
-    double *x = prog ? qd__calloc(ctx, nin + 1, sizeof *x) : NULL;
-    qd_status st = x ? QD_OK : qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-    for (size_t i = 0; st == QD_OK && i < nin; i++)
+/* The symbolic parts compiled once, evaluated at many states (a scan). */
+typedef struct slin {
+    qd_ctx *ctx;
+    sparts p;
+    size_t nin;
+    const qd_expr **in;
+    qd_prog *prog;
+    double *x, *v;   /* nin inputs, p.nout outputs */
+} slin;
+
+static void slin_free(slin *s) {
+    qd__free(s->p.y);
+    qd__free(s->p.out);
+    qd__free(s->in);
+    qd_prog_free(s->prog);
+    qd__free(s->x);
+    qd__free(s->v);
+    memset(s, 0, sizeof *s);
+}
+
+static qd_status slin_init(qd_ctx *ctx, const qd_speeds_eom *e, const qd_speeds_linear *l,
+                           slin *s) {
+    memset(s, 0, sizeof *s);
+    s->ctx = ctx;
+    qd_status st = parts(ctx, e, l, &s->p);
+    if (st == QD_OK && !(s->in = qd__num_inputs(ctx, s->p.nout, s->p.out, &s->nin)))
+        st = QD_ERR_NOMEM;
+    if (st == QD_OK && !(s->prog = qd_prog_new(ctx, s->nin, s->in, s->p.nout, s->p.out)))
+        st = QD_ERR_NOMEM;
+    if (st == QD_OK) {
+        s->x = qd__calloc(ctx, s->nin + 1, sizeof *s->x);
+        s->v = qd__calloc(ctx, s->p.nout + 1, sizeof *s->v);
+        st = s->x && s->v ? QD_OK : QD_ERR_NOMEM;
+    }
+    if (st != QD_OK && qd_ctx_status(ctx) != QD_OK)
+        st = qd_ctx_status(ctx);
+    return st;
+}
+
+/* Every output at syms/vals (symbols not given are 0) into s->v. */
+static void slin_run(slin *s, size_t nvals, const qd_expr *const *syms, const double *vals) {
+    for (size_t i = 0; i < s->nin; i++) {
+        s->x[i] = 0;
         for (size_t k = 0; k < nvals; k++)
-            if (syms[k] == in[i]) {
-                x[i] = vals[k];
+            if (syms[k] == s->in[i]) {
+                s->x[i] = vals[k];
                 break;
             }
-    if (st == QD_OK)
-        qd_prog_run(prog, x, v);
-    qd__free(x);
-    qd_prog_free(prog);
-    qd__free(in);
-    return st;
+    }
+    qd_prog_run(s->prog, s->x, s->v);
 }
 
 /* x = M^-1 b (m), M copied into work (m*m). */
@@ -203,20 +233,15 @@ qd_status qd_speeds_linear_about(qd_ctx *ctx, const qd_speeds_eom *e, size_t nva
     memset(out, 0, sizeof *out);
     if (!ctx || !e || (nvals && (!syms || !vals)))
         return QD_ERR_ARG;
-    sparts p = {0};
-    double *v = NULL;
+    slin s = {0};
     qd_status st = alloc_linear(ctx, e, out);
     if (st == QD_OK)
-        st = parts(ctx, e, out, &p);
-    if (st == QD_OK)
-        st = (v = qd__malloc(ctx, (p.nout + 1) * sizeof *v)) ? QD_OK : QD_ERR_NOMEM;
-    if (st == QD_OK)
-        st = evaluate(ctx, &p, nvals, syms, vals, v);
-    if (st == QD_OK)
-        st = assemble(ctx, &p, v, out);
-    qd__free(v);
-    qd__free(p.y);
-    qd__free(p.out);
+        st = slin_init(ctx, e, out, &s);
+    if (st == QD_OK) {
+        slin_run(&s, nvals, syms, vals);
+        st = assemble(ctx, &s.p, s.v, out);
+    }
+    slin_free(&s);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "cannot linearize the equations in speeds");
@@ -331,5 +356,111 @@ qd_status qd_speeds_modes_solve(qd_ctx *ctx, const qd_speeds_linear *lin, qd_mod
             qd_ctx_error(ctx, st, "out of memory in the eigen-analysis");
         qd_modes_result_free(out);
     }
+    return st;
+}
+
+/* ---- a scan along one value of the state --------------------------------------- */
+
+typedef struct sscan {
+    qd_ctx *ctx;
+    slin s;
+    qd_speeds_linear lin;
+    size_t nvals, slot;          /* the value varied: vals[slot] */
+    const qd_expr *const *syms;
+    double *vals;
+} sscan;
+
+/* The verdict and the largest Re s at value x. */
+static qd_status sscan_at(sscan *c, double x, int *verdict, double *margin) {
+    qd_modes_result r;
+    c->vals[c->slot] = x;
+    slin_run(&c->s, c->nvals, c->syms, c->vals);
+    qd_status st = assemble(c->ctx, &c->s.p, c->s.v, &c->lin);
+    if (st == QD_OK)
+        st = qd_speeds_modes_solve(c->ctx, &c->lin, &r);
+    if (st != QD_OK)
+        return st;
+    *verdict = r.stable;
+    *margin = r.neig ? r.eig_re[0] : 0;
+    qd_modes_result_free(&r);
+    return QD_OK;
+}
+
+static qd_status scan_alloc(qd_ctx *ctx, size_t count, qd_scan *out) {
+    out->count = count;
+    out->value = qd__calloc(ctx, count, sizeof *out->value);
+    out->q = qd__calloc(ctx, 1, sizeof *out->q);
+    out->stable = qd__calloc(ctx, count, sizeof *out->stable);
+    out->margin = qd__calloc(ctx, count, sizeof *out->margin);
+    out->conservative = qd__calloc(ctx, count, sizeof *out->conservative);
+    out->trans = qd__calloc(ctx, count, sizeof *out->trans);
+    return out->value && out->q && out->stable && out->margin && out->conservative &&
+                   out->trans
+               ? QD_OK
+               : QD_ERR_NOMEM;
+}
+
+/* Bisect on the verdict between samples k - 1 and k. */
+static qd_status bisect(sscan *c, qd_scan *out, size_t k, double tol) {
+    double lo = out->value[k - 1], hi = out->value[k], margin;
+    int from = out->stable[k - 1], v;
+    qd_status st = QD_OK;
+    while (st == QD_OK && hi - lo > tol) {
+        double mid = lo + (hi - lo) / 2;
+        if (mid <= lo || mid >= hi)
+            break;
+        st = sscan_at(c, mid, &v, &margin);
+        *(v == from ? &lo : &hi) = mid;
+    }
+    out->trans[out->ntrans++] = (qd_scan_transition){lo + (hi - lo) / 2, lo, hi, from,
+                                                     out->stable[k]};
+    return st;
+}
+
+static qd_status scan_run(sscan *c, double a, double b, const qd_scan_opts *o, qd_scan *out) {
+    size_t steps = o && o->steps ? o->steps : 200;
+    double tol = o && o->tol > 0 ? o->tol : 1e-13 * fmax(1, fmax(fabs(a), fabs(b)));
+    qd_status st = scan_alloc(c->ctx, steps + 1, out);
+    for (size_t k = 0; st == QD_OK && k <= steps; k++) {
+        out->value[k] = k == steps ? b : a + (b - a) * (double)k / (double)steps;
+        st = sscan_at(c, out->value[k], &out->stable[k], &out->margin[k]);
+    }
+    for (size_t k = 1; st == QD_OK && k <= steps; k++)
+        if (out->stable[k] != out->stable[k - 1])
+            st = bisect(c, out, k, tol);
+    return st;
+}
+
+qd_status qd_speeds_modes_scan(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
+                               const qd_expr *const *syms, const double *vals,
+                               const qd_expr *what, double a, double b,
+                               const qd_scan_opts *opts, qd_scan *out) {
+    memset(out, 0, sizeof *out);
+    if (!ctx || !e || !what || (nvals && (!syms || !vals)))
+        return QD_ERR_ARG;
+    sscan c = {.ctx = ctx, .nvals = nvals, .slot = SIZE_MAX, .syms = syms};
+    for (size_t k = 0; k < nvals; k++)
+        if (syms[k] == what)
+            c.slot = k;
+    if (c.slot == SIZE_MAX || !(a < b)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, c.slot == SIZE_MAX
+                                          ? "'%s' is not a value of the state given"
+                                          : "the range of %s must have A < B",
+                     qd_expr_name(what));
+        return QD_ERR_ARG;
+    }
+    c.vals = qd__malloc(ctx, (nvals + 1) * sizeof *c.vals);
+    qd_status st = c.vals ? alloc_linear(ctx, e, &c.lin) : QD_ERR_NOMEM;
+    if (st == QD_OK) {
+        memcpy(c.vals, vals, nvals * sizeof *c.vals);
+        st = slin_init(ctx, e, &c.lin, &c.s);
+    }
+    if (st == QD_OK)
+        st = scan_run(&c, a, b, opts, out);
+    slin_free(&c.s);
+    qd_speeds_linear_free(&c.lin);
+    qd__free(c.vals);
+    if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, st, "the scan of the equations in speeds failed");
     return st;
 }

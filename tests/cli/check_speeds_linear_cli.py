@@ -12,7 +12,7 @@ Expected values are textbook results, not output of the code under test:
     Neimark and Fufaev, Dynamics of Nonholonomic Systems, ch. III; Routh,
     Advanced Rigid Dynamics art. 244), the tilt's root s^2 =
     -(4/5)(3 Omega^2 - g/a); checked either side of the threshold, and with
-    --set g moving the threshold;
+    --set g moving the threshold, and the threshold itself from --scan u3;
   - the double pendulum of examples/double_pendulum.qd with speeds u1 =
     theta1', u2 = theta1' + theta2' has the equilibria of the model without
     them (f_u(q, 0) = W^T f(q, 0) with W invertible);
@@ -103,6 +103,18 @@ def disk_modes(qdot, path, g=9.81, a=0.35, sets=()):
         check(f"disk tilt root {factor} {sets}", close(got, s2, 1e-9), (got, s2))
 
 
+def disk_scan(qdot, path, g=9.81, a=0.35):
+    rc, out, err = run(qdot, "modes", path, "--about", "theta=pi/2", "--scan", "u3=1:6",
+                       "--steps", "10", "--format", "json")
+    check("disk scan rc", rc == 0, err)
+    if rc:
+        return
+    t = json.loads(out)["transitions"]
+    oc = math.sqrt(g / (3 * a))
+    check("disk scan threshold", len(t) == 1 and close(t[0]["u3"], oc, 1e-8)
+          and t[0]["from"] == "unstable" and t[0]["to"] == "stable", t)
+
+
 def pendulum_with_speeds(qdot, tmp):
     src = (EX / "double_pendulum.qd").read_text()
     path = os.path.join(tmp, "dp_speeds.qd")
@@ -171,9 +183,11 @@ def stdin_once(qdot, disk):
 
 
 def errors(qdot, disk, tmp):
-    rc, out, err = run(qdot, "modes", disk, "--scan", "g=1:2")
-    check("scan refused", rc == 2 and "--scan is not available for a model with speeds" in err,
-          err)
+    rc, out, err = run(qdot, "modes", disk, "--initial", "theta=1")
+    check("initial refused", rc == 2 and "--initial is not available for a model with speeds"
+          in err, err)
+    rc, out, err = run(qdot, "modes", disk, "--scan", "w9=1:2")
+    check("scan unknown", rc == 2 and "w9 is not a parameter, coordinate or speed" in err, err)
     rc, out, err = run(qdot, "modes", disk, "--about", "theta=pi/2, w9=1")
     check("about unknown", rc == 2 and "w9=1" in err, err)
     rc, out, err = run(qdot, "equilibria", disk, "--near", "theta=1")
@@ -200,6 +214,7 @@ def main():
         disk_equilibria(qdot, disk)
         disk_modes(qdot, disk)
         disk_modes(qdot, disk, g=4.0, sets=("--set", "g=4"))
+        disk_scan(qdot, disk)
         pendulum_with_speeds(qdot, tmp)
         sleigh_codegen(qdot, tmp)
         stdin_once(qdot, disk)

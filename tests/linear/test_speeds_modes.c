@@ -12,6 +12,8 @@
  *     Dynamics, art. 244); the tilt then oscillates with
  *     s^2 = -(4/5)(3 Omega^2 - g/a), found by bisection on the verdict and
  *     compared with the formula, and the frequency at two spins;
+ *   the same threshold from qd_speeds_modes_scan along the spin u3, and along
+ *     g at a fixed spin (g = 3 a Omega^2), one transition each;
  *   the equilibria of the disk: theta = +-pi/2 with x, y, phi, psi free;
  *   the double pendulum in the speeds u1 = th1', u2 = th1' + th2' (absolute
  *     angular velocity of the lower rod) has the equilibria of the same
@@ -161,6 +163,44 @@ static void disk_threshold(void **state) {
         *(v == 1 ? &hi : &lo) = mid;
     }
     assert_true(fabs((lo + hi) / 2 - Oc) < 1e-7 * Oc);
+    close_world(&w);
+}
+
+static void disk_scan(void **state) {
+    (void)state;
+    world w;
+    open_world(&w, disk);
+    const qd_expr *syms[16];
+    double vals[16], g = param(&w, "g"), a = param(&w, "a"), Omega = 6;
+    size_t k;
+    disk_state(&w, Omega, syms, vals, &k);
+    qd_scan sc;
+    qd_scan_opts o = {.steps = 20};
+    const qd_expr *u3 = w.e->u[2], *gs = NULL;
+    for (size_t i = 0; i < qd_model_nparams(w.m); i++)
+        if (!strcmp(qd_expr_name(qd_model_param(w.m, i)), "g"))
+            gs = qd_model_param(w.m, i);
+    assert_int_equal(qd_speeds_modes_scan(w.ctx, w.e, k, syms, vals, u3, 1, 6, &o, &sc), QD_OK);
+    assert_int_equal(sc.count, 21);
+    assert_int_equal(sc.ntrans, 1);
+    assert_int_equal(sc.trans[0].from, 0);
+    assert_int_equal(sc.trans[0].to, 1);
+    assert_true(fabs(sc.trans[0].value - sqrt(g / (3 * a))) < 1e-8 * sqrt(g / (3 * a)));
+    qd_scan_free(&sc);
+    assert_int_equal(qd_speeds_modes_scan(w.ctx, w.e, k, syms, vals, gs, 1, 50, &o, &sc), QD_OK);
+    assert_int_equal(sc.ntrans, 1);
+    assert_int_equal(sc.trans[0].from, 1);
+    assert_int_equal(sc.trans[0].to, 0);
+    assert_true(fabs(sc.trans[0].value - 3 * a * Omega * Omega) < 1e-8 * 3 * a * Omega * Omega);
+    qd_scan_free(&sc);
+    /* the time is no value of this state; a reversed range */
+    assert_int_equal(qd_speeds_modes_scan(w.ctx, w.e, k, syms, vals, qd_time(w.ctx), 0, 1, &o,
+                                          &sc),
+                     QD_ERR_ARG);
+    qd_scan_free(&sc);
+    assert_int_equal(qd_speeds_modes_scan(w.ctx, w.e, k, syms, vals, u3, 6, 1, &o, &sc),
+                     QD_ERR_ARG);
+    qd_scan_free(&sc);
     close_world(&w);
 }
 
@@ -395,6 +435,7 @@ static void rheonomic_refused(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(disk_threshold),
+        cmocka_unit_test(disk_scan),
         cmocka_unit_test(disk_equilibria),
         cmocka_unit_test(pendulum_equilibria),
         cmocka_unit_test(pendulum_modes),
