@@ -284,23 +284,25 @@ static bool eigenvalues(qd_ctx *ctx, size_t d, const double *A, double *re, doub
 }
 
 /* How many independent null vectors A has (the geometric multiplicity of
- * the eigenvalue 0), at the relative tolerance of the zero eigenvalues. */
+ * the eigenvalue 0), at the relative tolerance of the zero eigenvalues;
+ * SIZE_MAX when out of memory. */
 static size_t nullity(qd_ctx *ctx, size_t d, const double *A) {
     double *a = qd__malloc(ctx, (d * d + 1) * sizeof *a);
     size_t *pc = qd__malloc(ctx, (d + 1) * sizeof *pc);
-    size_t rank = d;
+    size_t null = SIZE_MAX;
     if (a && pc) {
         memcpy(a, A, d * d * sizeof *a);
-        rank = qd__num_rank(d, a, NULL, QD_MODES_ZERO_TOL, pc, NULL, NULL);
+        null = d - qd__num_rank(d, a, NULL, QD_MODES_ZERO_TOL, pc, NULL, NULL);
     }
     qd__free(a);
     qd__free(pc);
-    return d - rank;
+    return null;
 }
 
 /* 0 when some Re s > 0; else 1 when the zero eigenvalues are semisimple
  * (as many null vectors as zeros: the neighbouring steady motions, which
- * do not drift apart linearly) and no imaginary pair repeats; -1 borderline. */
+ * do not drift apart linearly) and no imaginary pair repeats; -1 borderline;
+ * -2 out of memory. */
 static int verdict(qd_ctx *ctx, const qd_modes_result *r, const double *A) {
     double big = 0;
     for (size_t i = 0; i < r->neig; i++)
@@ -324,9 +326,10 @@ static int verdict(qd_ctx *ctx, const qd_modes_result *r, const double *A) {
     }
     if (big == 0)
         return -1;
-    if (zeros && nullity(ctx, r->neig, A) < zeros)
-        v = -1;
-    return v;
+    size_t null = zeros ? nullity(ctx, r->neig, A) : 0;
+    if (null == SIZE_MAX)
+        return -2;
+    return null < zeros ? -1 : v;
 }
 
 qd_status qd_speeds_modes_solve(qd_ctx *ctx, const qd_speeds_linear *lin, qd_modes_result *out) {
@@ -349,6 +352,7 @@ qd_status qd_speeds_modes_solve(qd_ctx *ctx, const qd_speeds_linear *lin, qd_mod
             out->eig_im[i] = c[i].im;
         }
         out->stable = verdict(ctx, out, lin->A);
+        st = out->stable == -2 ? QD_ERR_NOMEM : QD_OK;
     }
     qd__free(c);
     if (st != QD_OK) {
