@@ -82,7 +82,9 @@ static void eq_text(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
                   eq->exact ? ": the complete set, angles in (-pi, pi]" : "");
     put_names(b, e->m, e->u, NULL);
     qd_buf_puts(b, "\n");
-    for (size_t i = 0; i < eq->count; i++) {
+    /* a family within the solved coordinates is sampled: a few samples say it */
+    size_t shown = eq->continuum && eq->count > 10 ? 10 : eq->count;
+    for (size_t i = 0; i < shown; i++) {
         const qd_equilibrium *p = &eq->pts[i];
         qd_buf_printf(b, "%3zu  ", i + 1);
         for (size_t j = 0; j < s->nsolved; j++) {
@@ -104,6 +106,13 @@ static void eq_text(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
         if (p->residual >= 1e-14)
             qd_buf_printf(b, ", residual %.3g\n", p->residual);
     }
+    if (shown < eq->count)
+        qd_buf_printf(b, "  ... and %zu more samples (--format json lists them all)\n",
+                      eq->count - shown);
+    if (eq->continuum)
+        qd_buf_puts(b, "note: these equilibria are not isolated (a family along a null "
+                       "direction of the equations at rest); the points listed are samples "
+                       "of it\n");
     if (s->nsolved < e->n) {
         qd_buf_puts(b, "free (any value: no equation at rest involves them): ");
         put_names(b, e->n, e->q, s->free_coord);
@@ -124,6 +133,8 @@ static void eq_json(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
     cli_json_string(&j, eq->method);
     cli_json_key(&j, "exact");
     cli_json_bool(&j, eq->exact);
+    cli_json_key(&j, "continuum");
+    cli_json_bool(&j, eq->continuum);
     cli_json_key(&j, "speeds");
     cli_json_begin_array(&j);
     for (size_t k = 0; k < e->m; k++)

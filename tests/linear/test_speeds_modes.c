@@ -15,6 +15,10 @@
  *   the same threshold from qd_speeds_modes_scan along the spin u3, and along
  *     g at a fixed spin (g = 3 a Omega^2), one transition each;
  *   the equilibria of the disk: theta = +-pi/2 with x, y, phi, psi free;
+ *     with its height z a coordinate held by the contact z = a sin(theta)
+ *     and the body components of w as speeds (tests/speeds' disk), the
+ *     spin angle enters the equations at rest yet stays free: a family,
+ *     flagged continuous, every sample upright at z = +-a;
  *   the double pendulum in the speeds u1 = th1', u2 = th1' + th2' (absolute
  *     angular velocity of the lower rod) has the equilibria of the same
  *     model in coordinates (qd_equilibria_find), and its modes the same
@@ -228,6 +232,47 @@ static void disk_equilibria(void **state) {
     close_world(&w);
 }
 
+static void disk_body_speeds(void **state) {
+    (void)state;
+    world w;
+    open_world(&w, "coordinates x, y, z, phi, theta, psi\n"
+                   "parameters m = 1.4, a = 0.35, g = 9.81\n"
+                   "body disk mass m inertia disk(m, a) at (x, y, z) "
+                   "orientation euler(phi, theta, psi)\n"
+                   "V = m*g*z\n"
+                   "rolls disk on plane((0, 0, 1), (0, 0, 0)) as disk(a)\n"
+                   "speeds w1 = omega(disk).x, w2 = omega(disk).y, w3 = omega(disk).z\n");
+    const qd_expr *syms[4];
+    double vals[4], a = param(&w, "a");
+    size_t k = qd_model_nparams(w.m);
+    for (size_t i = 0; i < k; i++) {
+        syms[i] = qd_model_param(w.m, i);
+        vals[i] = pnum(w.m, i);
+    }
+    qd_speeds_equilibria eq;
+    assert_int_equal(qd_speeds_equilibria_find(w.ctx, w.e, w.m, k, syms, vals, NULL, &eq), QD_OK);
+    assert_int_equal(eq.nsolved, 3);  /* z, theta, psi */
+    assert_true(eq.free_coord[coord(&w, "x")] && eq.free_coord[coord(&w, "y")] &&
+                eq.free_coord[coord(&w, "phi")]);
+    assert_true(eq.eq.continuum);
+    assert_true(eq.eq.count > 2);
+    size_t jz = SIZE_MAX, jt = SIZE_MAX;
+    for (size_t j = 0; j < eq.nsolved; j++) {
+        if (eq.solved[j] == coord(&w, "z"))
+            jz = j;
+        if (eq.solved[j] == coord(&w, "theta"))
+            jt = j;
+    }
+    assert_true(jz != SIZE_MAX && jt != SIZE_MAX);
+    for (size_t i = 0; i < eq.eq.count; i++) {
+        const double *q = eq.eq.pts[i].q;
+        assert_true(fabs(fabs(q[jt]) - PI / 2) < 1e-9);
+        assert_true(fabs(q[jz] - a * sin(q[jt])) < 1e-9);
+    }
+    qd_speeds_equilibria_free(&eq);
+    close_world(&w);
+}
+
 /* ---- the double pendulum: speeds against coordinates ----------------------- */
 
 static const char pendulum2[] =
@@ -437,6 +482,7 @@ int main(void) {
         cmocka_unit_test(disk_threshold),
         cmocka_unit_test(disk_scan),
         cmocka_unit_test(disk_equilibria),
+        cmocka_unit_test(disk_body_speeds),
         cmocka_unit_test(pendulum_equilibria),
         cmocka_unit_test(pendulum_modes),
         cmocka_unit_test(cartesian_pendulum),
