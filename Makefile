@@ -53,6 +53,7 @@ bench:
 	/usr/bin/python3 bench/run_pendulum.py build-bench
 	/usr/bin/python3 bench/run_rhs.py build-bench
 	/usr/bin/python3 bench/run_simulate.py build-bench
+	/usr/bin/python3 bench/run_speeds.py build-bench
 	if [ -x build-bench/bench/quad_bench ]; then ./build-bench/bench/quad_bench; fi
 
 install: build

@@ -8,15 +8,22 @@
  * --at.  Constraints add multipliers, M q'' = f + A^T lambda with A q'' = b;
  * --eliminate substitutes the holonomic ones that can be solved for a
  * coordinate instead.  With --at, the model's `reaction` statements give
- * the Cartesian force of a constraint at a point (qd_eom_reaction).  The pipeline is here; the output formats are in
- * eom_out.c.
+ * the Cartesian force of a constraint at a point (qd_eom_reaction).  A model
+ * that declares `speeds` gets its equations in the speeds instead,
+ * q' = W u + w and M_u u' = f_u (qd_speeds_derive, by --method kane, appell
+ * or hamel), with --appell the Gibbs-Appell function, with --multipliers
+ * the constraint forces, and with --at the numbers at a state of q, u and t
+ * (qd_speeds_eval).  The pipeline is here; the output formats are in
+ * eom_out.c and speeds_out.c.
  */
 #include "cli.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
 #include "model_cli.h"
+#include "speeds_out.h"
 
 /* Symbolic accelerations larger than this (count_ops, per entry) are not
  * worth printing: M and f say the same in far less space. */
@@ -27,6 +34,9 @@ typedef struct eom_args {
     const char *file;
     cli_eom_format fmt;
     bool solve, eliminate;
+    bool appell, multipliers; /* speeds only */
+    const char *method;       /* speeds only: as given, NULL when not */
+    qd_speeds_method smethod;
     const char *sets[MAX_SETS];
     size_t nsets;
     const char *at;
@@ -48,7 +58,21 @@ typedef struct eom_run {
 
 static const char usage_text[] =
     "usage: qdot eom FILE [--format text|latex|json|sympy|c] [--solve] [--eliminate] "
-    "[--set NAME=VALUE]... [--at \"q=VALUE, q'=VALUE, t=VALUE\"]";
+    "[--set NAME=VALUE]... [--at \"q=VALUE, q'=VALUE, t=VALUE\"] "
+    "[--method kane|appell|hamel] [--appell] [--multipliers]";
+
+/* --method NAME: one of the library's names (qd_speeds_method_name). */
+static int parse_method(const char *v, eom_args *a) {
+    const char *names[QD_SPEEDS_METHOD_COUNT + 1];
+    for (int k = 0; k < QD_SPEEDS_METHOD_COUNT; k++)
+        names[k] = qd_speeds_method_name((qd_speeds_method)k);
+    names[QD_SPEEDS_METHOD_COUNT] = NULL;
+    int k = 0, rc = cli_once("--method", &a->method, v);
+    if (rc == QD_EXIT_OK)
+        rc = cli_choice("--method", v, names, &k);
+    a->smethod = (qd_speeds_method)k;
+    return rc;
+}
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     eom_args *a = data;
@@ -57,6 +81,12 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         a->solve = true;
     } else if (!strcmp(argv[*i], "--eliminate")) {
         a->eliminate = true;
+    } else if (!strcmp(argv[*i], "--appell")) {
+        a->appell = true;
+    } else if (!strcmp(argv[*i], "--multipliers")) {
+        a->multipliers = true;
+    } else if ((v = cli_value(argc, argv, i, "--method"))) {
+        return parse_method(v, a);
     } else if ((v = cli_value(argc, argv, i, "--format"))) {
         if (!cli_eom_format_from_name(v, &a->fmt)) {
             cli_diag_error("--format takes text, latex, json, sympy or c, not '%s'", v);
@@ -279,6 +309,168 @@ static int emit(eom_run *r, cli_eom_format fmt) {
     return st == QD_OK && !b.failed ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
+/* An option of one kind of model given for the other: its name, or NULL. */
+static const char *speeds_option(const eom_args *a) {
+    return a->method ? "--method" : a->appell ? "--appell" : a->multipliers ? "--multipliers"
+                                                                          : NULL;
+}
+
+static const char *coords_option(const eom_args *a) {
+    return a->eliminate ? "--eliminate" : NULL;
+}
+
+/* Lagrange's equations in the coordinates: M q'' = f (+ A^T lambda). */
+static int run_coords(eom_run *r, const eom_args *a) {
+    const char *opt = speeds_option(a);
+    if (opt) {
+        cli_diag_error("%s is for a model with generalized speeds, and %s declares no speeds "
+                       "(a `speeds` statement; without one, --solve gives the multipliers)",
+                       opt, a->file);
+        return QD_EXIT_USAGE;
+    }
+    qd_eom_opts opts = {.eliminate = a->eliminate};
+    if (!(r->e = qd_eom_derive_opts(r->ctx, r->mf.model, &opts)))
+        return cli_eom_derive_error(r->ctx, &r->mf);
+    int rc = a->at ? evaluate(r, a->at) : a->solve ? solve(r) : QD_EXIT_OK;
+    return rc == QD_EXIT_OK ? emit(r, a->fmt) : rc;
+}
+
+/* The --at state of a model with speeds: cli_state's (q, q', t, the
+ * parameters) with the speeds appended, so that --at names them; the
+ * velocities follow from the kinematics and must not be given. */
+static int speeds_state(eom_run *r, const qd_speeds_eom *e, const char *at) {
+    cli_state *st = &r->st;
+    int rc = cli_state_init(r->ctx, r->mf.model, st);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    const qd_expr **syms = realloc(st->syms, (st->n + e->m) * sizeof *syms);
+    if (syms)
+        st->syms = syms;
+    double *vals = syms ? realloc(st->vals, (st->n + e->m) * sizeof *vals) : NULL;
+    if (!vals) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    st->vals = vals;
+    for (size_t i = 0; i < e->m; i++) {
+        st->syms[st->n + i] = e->u[i];
+        st->vals[st->n + i] = 0;
+    }
+    st->n += e->m;
+    rc = cli_state_parse(r->ctx, r->mf.model, at, st);
+    for (size_t j = 0; rc == QD_EXIT_OK && j < e->n; j++)
+        if (st->vals[e->n + j] != 0) {
+            cli_diag_error("--at: %s' is given, but with speeds the velocities follow from "
+                           "them: give the speeds (%s, ...)", qd_expr_name(e->q[j]),
+                           qd_expr_name(e->u[0]));
+            rc = QD_EXIT_USAGE;
+        }
+    return rc;
+}
+
+/* Every number at the state is finite; else the error naming the first
+ * that is not (1/sin(theta) at theta = 0: the speed map is singular there). */
+static int finite_at(const qd_speeds_eom *e, const double *num) {
+    size_t total = e->n + e->m + (e->mult ? e->ncon : 0);
+    for (size_t i = 0; i < total; i++) {
+        if (isfinite(num[i]))
+            continue;
+        const char *what = i < e->n ? qd_expr_name(e->q[i])
+                         : i < e->n + e->m ? qd_expr_name(e->u[i - e->n])
+                                           : qd_expr_name(e->con[i - e->n - e->m].lambda);
+        cli_diag_error("at this state %s%s is not a finite number (the speeds may not determine "
+                       "the velocities there)", what, i < e->n + e->m ? "'" : "");
+        return QD_EXIT_FAIL;
+    }
+    return QD_EXIT_OK;
+}
+
+/* --at: q', u' and the multipliers at the state (qd_speeds_eval). */
+static int speeds_at(eom_run *r, const qd_speeds_eom *e, const char *at, double *num,
+                     cli_speeds_view *v) {
+    int rc = speeds_state(r, e, at);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    v->st = &r->st;
+    v->qd = num;
+    v->ud = num + e->n;
+    v->lambda = e->mult ? num + e->n + e->m : NULL;
+    qd_status st = qd_speeds_eval(r->ctx, e, r->st.n, r->st.syms, r->st.vals, num,
+                                  num + e->n, e->mult ? num + e->n + e->m : NULL);
+    if (st == QD_OK)
+        return finite_at(e, num);
+    cli_diag_error("cannot evaluate the equations at this state: %s",
+                   qd_ctx_message(r->ctx)[0] ? qd_ctx_message(r->ctx) : qd_status_str(st));
+    return st == QD_ERR_NOMEM ? cli_diag_ctx(r->ctx) : QD_EXIT_FAIL;
+}
+
+static int speeds_emit(const cli_speeds_view *v, cli_eom_format fmt) {
+    qd_buf b = QD_BUF_INIT;
+    qd_status st = cli_speeds_write(v, fmt, &b);
+    int rc = QD_EXIT_OK;
+    if (st == QD_OK && !b.failed) {
+        fputs(qd_buf_str(&b), stdout);
+    } else {
+        cli_diag_error("cannot print the equations: %s",
+                       qd_status_str(b.failed ? QD_ERR_NOMEM : st));
+        rc = QD_EXIT_FAIL;
+    }
+    qd_buf_free(&b);
+    return rc;
+}
+
+/* --solve: u' = M_u^-1 f_u symbolically; M_u and f_u stay when too large. */
+static int solve_speeds(eom_run *r, qd_speeds_eom *e) {
+    qd_status st = qd_speeds_solve(r->ctx, e, SOLVE_MAX_OPS);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    if (st == QD_ERR_TOOBIG) {
+        fprintf(stderr, "qdot: note: the solved rates exceed %d operations; "
+                        "printing M and f instead (use --at for numbers)\n", SOLVE_MAX_OPS);
+        qd_ctx_clear_error(r->ctx);
+        return QD_EXIT_OK;
+    }
+    cli_diag_error("cannot solve for the speeds' rates: %s", qd_ctx_message(r->ctx));
+    return QD_EXIT_FAIL;
+}
+
+/* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
+static int run_speeds(eom_run *r, const eom_args *a) {
+    const char *opt = coords_option(a);
+    if (opt) {
+        cli_diag_error("%s is not available for a model with generalized speeds (%s declares "
+                       "them): qdot eom prints M u' = f in the speeds", opt, a->file);
+        return QD_EXIT_USAGE;
+    }
+    if (a->at && a->fmt != QD_EOM_TEXT && a->fmt != QD_EOM_JSON) {
+        cli_diag_error("--at with speeds prints text or json");
+        return QD_EXIT_USAGE;
+    }
+    qd_speeds_opts opts = {.method = a->smethod, .appell = a->appell,
+                           .multipliers = a->multipliers};
+    qd_speeds_eom *e = qd_speeds_derive(r->ctx, r->mf.model, &opts);
+    if (!e)
+        return cli_eom_derive_error(r->ctx, &r->mf);
+    cli_speeds_view v = {.ctx = r->ctx, .mf = &r->mf, .e = e, .multipliers = a->multipliers};
+    if (a->solve && !a->at && solve_speeds(r, e) != QD_EXIT_OK) {
+        qd_speeds_eom_free(e);
+        return QD_EXIT_FAIL;
+    }
+    double *num = a->at ? calloc(e->n + e->m + e->ncon + 1, sizeof *num) : NULL;
+    int rc = QD_EXIT_OK;
+    if (a->at && !num) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
+    }
+    if (rc == QD_EXIT_OK && a->at)
+        rc = speeds_at(r, e, a->at, num, &v);
+    if (rc == QD_EXIT_OK)
+        rc = speeds_emit(&v, a->fmt);
+    free(num);
+    qd_speeds_eom_free(e);
+    return rc;
+}
+
 int cli_cmd_eom(int argc, char **argv) {
     eom_args a;
     int rc = parse_args(argc, argv, &a);
@@ -289,12 +481,9 @@ int cli_cmd_eom(int argc, char **argv) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    qd_eom_opts opts = {.eliminate = a.eliminate};
-    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, true, &opts, &r.mf, &r.e);
+    rc = cli_load(r.ctx, a.file, a.nsets, a.sets, true, &r.mf);
     if (rc == QD_EXIT_OK)
-        rc = a.at ? evaluate(&r, a.at) : a.solve ? solve(&r) : QD_EXIT_OK;
-    if (rc == QD_EXIT_OK)
-        rc = emit(&r, a.fmt);
+        rc = qd_model_nspeeds(r.mf.model) ? run_speeds(&r, &a) : run_coords(&r, &a);
     free(r.numbers);
     free(r.react_name);
     free(r.react);

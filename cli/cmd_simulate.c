@@ -6,7 +6,9 @@
  * --format json a JSON document on stdout (summary, final state, and the
  * rows unless --out takes them).  The model's impacts add two rows each
  * (before and after) and say on stderr how many there were, the energy
- * they took, and where a run ends in contact.
+ * they took, and where a run ends in contact.  A model with `speeds` is
+ * integrated in them (t, q, the speeds, q', ...; --no-speeds: the
+ * multiplier form).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
@@ -25,7 +27,7 @@ static const char usage_text[] =
     "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf] "
     "[--out FILE] [--output \"EXPR, ...\"] [--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
-    "[--format csv|json] [--native] [--no-project] [--max-steps N]";
+    "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N]";
 
 typedef struct sim_out {
     FILE *csv;            /* rows as CSV, or NULL */
@@ -172,6 +174,8 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
                          const char **names, size_t ncols, const double *final) {
     cli_json_key(j, "method");
     cli_json_string(j, qd_sim_method_name(c->opts.method));
+    cli_json_key(j, "speeds"); /* integrated in the model's speeds */
+    cli_json_bool(j, c->se != NULL);
     cli_json_key(j, "steps");
     cli_json_number(j, (double)st->steps);
     cli_json_key(j, "evaluations");
@@ -186,8 +190,8 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_number(j, st->constraint_error_max);
     cli_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
     cli_json_begin_object(j);
-    for (size_t k = 0; c->e && k < c->e->ncon; k++) {
-        cli_json_key(j, c->e->con[k].name);
+    for (size_t k = 0; k < cli_sim_ncon(c); k++) {
+        cli_json_key(j, cli_sim_con(c, k)->name);
         cli_json_number(j, qd_sim_constraint_error(c->s, k));
     }
     cli_json_end_object(j);

@@ -70,7 +70,7 @@ static void text_header(const cli_eom_view *v, qd_buf *b) {
     qd_buf_puts(b, "\n");
 }
 
-static const char *kind_name(qd_con_kind k) {
+const char *cli_eom_con_kind_name(qd_con_kind k) {
     return k == QD_CON_HOLONOMIC ? "holonomic" : k == QD_CON_INTEGRABLE ? "integrable"
                                                                         : "nonholonomic";
 }
@@ -105,7 +105,7 @@ static qd_status text_row(const cli_eom_view *v, qd_buf *b, size_t j) {
 static qd_status text_constraint(const cli_eom_view *v, qd_buf *b, size_t k) {
     const qd_con *c = &v->e->con[k];
     size_t n = v->e->n;
-    qd_buf_printf(b, "  %s (%s): ", c->name, kind_name(c->kind));
+    qd_buf_printf(b, "  %s (%s): ", c->name, cli_eom_con_kind_name(c->kind));
     qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, b);
     qd_buf_puts(b, " = 0\n");
     if (st == QD_OK && c->integral) {
@@ -369,7 +369,7 @@ static qd_status json_constraint(const cli_eom_view *v, cli_json *j, size_t k, q
     cli_json_key(j, "name");
     cli_json_string(j, c->name);
     cli_json_key(j, "kind");
-    cli_json_string(j, kind_name(c->kind));
+    cli_json_string(j, cli_eom_con_kind_name(c->kind));
     cli_json_key(j, "expression");
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, tmp);
@@ -505,10 +505,10 @@ static qd_status write_json(const cli_eom_view *v, qd_buf *b) {
 
 /* Bind name to Symbol or Function when the printer prints it bare (a name
  * that would shadow Python or SymPy is printed self-contained instead). */
-static void sympy_bind(const cli_eom_view *v, qd_buf *b, const qd_expr *sym, bool fn) {
+void cli_eom_sympy_bind(qd_ctx *ctx, qd_buf *b, const qd_expr *sym, bool fn) {
     qd_buf tmp = QD_BUF_INIT;
     const char *name = qd_expr_name(sym);
-    qd_print(v->ctx, sym, QD_FMT_SYMPY, &tmp);
+    qd_print(ctx, sym, QD_FMT_SYMPY, &tmp);
     size_t len = strlen(name);
     const char *s = qd_buf_str(&tmp);
     if (!strncmp(s, name, len) && !strcmp(s + len, fn ? "(t)" : ""))
@@ -576,9 +576,9 @@ static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
     qd_buf_printf(b, "# qdot eom %s: %s*%s.diff(t, 2) = %s\nfrom sympy import *\n\n"
                   "t = Symbol('t')\n", v->mf->path, M.s, q.s, f.s);
     for (size_t j = 0; j < n; j++)
-        sympy_bind(v, b, v->e->q[j], true);
+        cli_eom_sympy_bind(v->ctx, b, v->e->q[j], true);
     for (size_t i = 0; i < qd_model_nparams(m); i++)
-        sympy_bind(v, b, qd_model_param(m, i), false);
+        cli_eom_sympy_bind(v->ctx, b, qd_model_param(m, i), false);
     st = sympy_functions(v, b);
     qd_buf_puts(b, "\n");
     if (st == QD_OK)

@@ -43,6 +43,13 @@ bool cli_eom_format_from_name(const char *name, cli_eom_format *out);
 /* Append the view to out; QD_OK, or the status of a printer that failed. */
 qd_status cli_eom_write(const cli_eom_view *v, cli_eom_format fmt, qd_buf *out);
 
+/* "holonomic", "integrable" or "nonholonomic". */
+const char *cli_eom_con_kind_name(qd_con_kind k);
+/* The SymPy binding "name = Function('name')" (fn) or "= Symbol('name')"
+ * of sym, when the SymPy printer prints it by its bare name (the speeds'
+ * output shares it). */
+void cli_eom_sympy_bind(qd_ctx *ctx, qd_buf *b, const qd_expr *sym, bool fn);
+
 /* Print why qd_eom_derive failed, at the model statement to blame (a
  * constraint the message names, or T/L for a singular mass matrix); returns
  * the exit status. */

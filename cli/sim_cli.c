@@ -4,7 +4,13 @@
  * Expressions on the command line (--output, --event) are read in the model
  * language; a name the reader does not know is looked up among the model's
  * definitions (x2 = x1 + l2*sin(theta2)) and replaced by its value, and a
- * definition's name with a prime (x2') is its time derivative.
+ * definition's name with a prime (x2') is its time derivative.  A speed's
+ * name (`speeds`) stands for its definition, as in the model.
+ *
+ * A model with speeds is simulated in them, y = (q, u) (qd_sim_new_speeds):
+ * the initial speeds are those given (`initial u = ...`, --initial "u=..."),
+ * the others those of the initial velocities; --no-speeds integrates the
+ * multiplier form instead.
  */
 #include "sim_cli.h"
 
@@ -49,6 +55,10 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     }
     if (!strcmp(argv[*i], "--no-project")) {
         a->no_project = true;
+        return 1;
+    }
+    if (!strcmp(argv[*i], "--no-speeds")) {
+        a->no_speeds = true;
         return 1;
     }
     if ((v = cli_value(argc, argv, i, "--t-end"))) {
@@ -131,6 +141,29 @@ static bool is_momentum(const cli_sim *c, const qd_expr *x) {
     return false;
 }
 
+/* The definition of the model's speed named name, or NULL. */
+static const qd_expr *speed_definition(const cli_sim *c, const char *name) {
+    const qd_model *m = c->mf.model;
+    for (size_t r = 0; r < qd_model_nspeeds(m); r++)
+        if (!strcmp(qd_expr_name(qd_model_speed(m, r)), name))
+            return qd_model_speed_definition(m, r);
+    return NULL;
+}
+
+/* A definition's value: `NAME = EXPR`, or a speed's definition. */
+static const qd_expr *definition(const cli_sim *c, const char *name) {
+    const qd_expr *d = qd_model_definition(c->mf.model, name);
+    return d ? d : speed_definition(c, name);
+}
+
+/* Simulating in speeds, a constraint's multiplier lambda_NAME by name. */
+static bool speeds_multiplier(const cli_sim *c, const char *name) {
+    for (size_t k = 0; c->se && k < c->se->ncon; k++)
+        if (!strcmp(qd_expr_name(c->se->con[k].lambda), name))
+            return true;
+    return false;
+}
+
 /* Read text[a, b) against the model: definitions substituted. */
 static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
     trim(&a, &b);
@@ -144,7 +177,7 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
     /* NAME' of a definition: its time derivative */
     if (len > 1 && text[len - 1] == '\'') {
         text[len - 1] = '\0';
-        const qd_expr *d = qd_model_definition(c->mf.model, text);
+        const qd_expr *d = definition(c, text);
         text[len - 1] = '\'';
         if (d)
             x = qd_dt(c->ctx, d);
@@ -165,7 +198,13 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
         if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]) ||
             is_momentum(c, syms[i]))
             continue;
-        const qd_expr *d = qd_model_definition(c->mf.model, qd_expr_name(syms[i]));
+        const qd_expr *d = definition(c, qd_expr_name(syms[i]));
+        if (!d && speeds_multiplier(c, qd_expr_name(syms[i]))) {
+            cli_diag_error("%s: '%s' in '%s': the multipliers are not computed in generalized "
+                          "speeds (use --no-speeds)", what, qd_expr_name(syms[i]), text);
+            x = NULL;
+            break;
+        }
         if (!d) {
             cli_diag_error("%s: unknown name '%s' in '%s' (use coordinates, velocities q', t, "
                           "parameters, the model's definitions and the multipliers "
@@ -265,32 +304,119 @@ static int initial_momenta(cli_sim *c) {
     return QD_EXIT_OK;
 }
 
-/* A model given by H: its momenta after the state's other names, so that
- * --initial takes them (NaN until given). */
-static int add_momenta(cli_sim *c) {
+/* Extra names after the state's own (NaN until given): the momenta of a
+ * model given by H, or a model's speeds. */
+static int add_names(cli_sim *c, size_t count, const qd_expr *(*sym)(const qd_model *, size_t)) {
     const qd_model *m = c->mf.model;
-    size_t n = qd_model_ncoords(m), at = c->st.n;
-    const qd_expr **syms = realloc(c->st.syms, (at + n) * sizeof *syms);
+    size_t at = c->st.n;
+    const qd_expr **syms = realloc(c->st.syms, (at + count + 1) * sizeof *syms);
     if (syms)
         c->st.syms = syms;
-    double *vals = syms ? realloc(c->st.vals, (at + n) * sizeof *vals) : NULL;
+    double *vals = syms ? realloc(c->st.vals, (at + count + 1) * sizeof *vals) : NULL;
     if (!vals)
         return QD_EXIT_FAIL;
     c->st.vals = vals;
-    for (size_t j = 0; j < n; j++) {
-        c->st.syms[at + j] = qd_model_momentum(m, j);
+    for (size_t j = 0; j < count; j++) {
+        c->st.syms[at + j] = sym(m, j);
         c->st.vals[at + j] = NAN;
     }
-    c->st.n += n;
+    c->st.n += count;
     return QD_EXIT_OK;
+}
+
+/* A model in speeds: the speeds given by `initial` (the model's values are
+ * read before --initial, which may override them). */
+static int model_speeds(cli_sim *c) {
+    const qd_model *m = c->mf.model;
+    size_t nu = qd_model_nspeeds(m), at = c->st.n - nu;
+    for (size_t r = 0; r < nu; r++) {
+        const qd_expr *v = qd_model_speed_initial(m, r);
+        if (v && qd_eval(c->ctx, v, c->st.n, c->st.syms, c->st.vals, &c->st.vals[at + r]) !=
+                     QD_OK)
+            return cli_diag_ctx(c->ctx);
+    }
+    return QD_EXIT_OK;
+}
+
+/* A model in speeds: u0 when any speed is given, the others from the
+ * initial velocities by their definitions; else the library finds all of
+ * them from the velocities (projected onto the constraints first). */
+static int initial_speeds(cli_sim *c) {
+    const qd_model *m = c->mf.model;
+    size_t nu = qd_model_nspeeds(m), at = c->st.n - nu;
+    bool any = false;
+    for (size_t r = 0; r < nu; r++)
+        any = any || !isnan(c->st.vals[at + r]);
+    if (!any)
+        return QD_EXIT_OK;
+    c->u0 = malloc((nu + 1) * sizeof *c->u0);
+    if (!c->u0)
+        return QD_EXIT_FAIL;
+    for (size_t r = 0; r < nu; r++) {
+        c->u0[r] = c->st.vals[at + r];
+        if (isnan(c->u0[r]) && qd_eval(c->ctx, qd_model_speed_definition(m, r), at,
+                                       c->st.syms, c->st.vals, &c->u0[r]) != QD_OK)
+            return cli_diag_ctx(c->ctx);
+        c->st.vals[at + r] = c->u0[r];
+    }
+    return QD_EXIT_OK;
+}
+
+/* --no-speeds with speeds given: the velocities they stand for, by the
+ * kinematics q' = W u + w (which also keep the constraints). */
+static int velocities_from_speeds(cli_sim *c) {
+    qd_speeds_eom *se = qd_speeds_derive(c->ctx, c->mf.model, NULL);
+    if (!se)
+        return cli_eom_derive_error(c->ctx, &c->mf);
+    size_t n = se->n;
+    double *qd = malloc((n + 1) * sizeof *qd);
+    qd_status st = qd ? qd_speeds_eval(c->ctx, se, c->st.n, c->st.syms, c->st.vals, qd, NULL,
+                                       NULL)
+                      : QD_ERR_NOMEM;
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        for (size_t i = 0; i < n; i++)
+            if (se->q[i] == c->e->q[j])
+                c->qd0[j] = qd[i];
+    free(qd);
+    qd_speeds_eom_free(se);
+    free(c->u0); /* the multiplier form takes velocities */
+    c->u0 = NULL;
+    return st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+}
+
+/* --initial onto the state.  When it names a velocity, the model's initial
+ * speeds it does not name give way (they follow from the velocities): the
+ * motion is the command line's.  A speed it names replaces the model's. */
+static int parse_initial(cli_sim *c, const char *text) {
+    const qd_model *m = c->mf.model;
+    size_t n = qd_model_ncoords(m), nu = qd_model_nspeeds(m), at = c->st.n - nu;
+    cli_state g = {.n = c->st.n, .syms = c->st.syms, .vals = malloc(c->st.n * sizeof(double))};
+    if (!g.vals)
+        return QD_EXIT_FAIL;
+    for (size_t i = 0; i < g.n; i++)
+        g.vals[i] = NAN;
+    int rc = cli_state_parse_as(c->ctx, m, "--initial", text, &g);
+    bool motion = false;
+    for (size_t i = 0; i < g.n; i++)
+        motion = motion || (!isnan(g.vals[i]) && i >= n && i < 2 * n);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < g.n; i++)
+        if (!isnan(g.vals[i]))
+            c->st.vals[i] = g.vals[i];
+        else if (motion && nu && i >= at)
+            c->st.vals[i] = NAN;
+    free(g.vals);
+    return rc;
 }
 
 static int initial_values(cli_sim *c, const cli_sim_args *a) {
     const qd_model *m = c->mf.model;
     size_t n = qd_model_ncoords(m);
+    bool speeds = qd_model_nspeeds(m) > 0;
     int rc = cli_state_init(c->ctx, m, &c->st);
-    if (rc == QD_EXIT_OK && !c->e)
-        rc = add_momenta(c);
+    if (rc == QD_EXIT_OK && !c->e && !c->se)
+        rc = add_names(c, n, qd_model_momentum);
+    if (rc == QD_EXIT_OK && speeds)
+        rc = add_names(c, qd_model_nspeeds(m), qd_model_speed);
     if (rc != QD_EXIT_OK)
         return rc;
     for (size_t i = 0; i < n; i++)
@@ -300,7 +426,9 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
                              &c->st.vals[o * n + i]) != QD_OK)
                 return cli_diag_ctx(c->ctx);
         }
-    if (a->initial && (rc = cli_state_parse(c->ctx, m, a->initial, &c->st)) != QD_EXIT_OK)
+    if (speeds && (rc = model_speeds(c)) != QD_EXIT_OK)
+        return rc;
+    if (a->initial && (rc = parse_initial(c, a->initial)) != QD_EXIT_OK)
         return rc;
     /* the equations' coordinates are the model's, in its order */
     c->q0 = malloc((2 * n + 1) * sizeof *c->q0);
@@ -314,7 +442,9 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
         c->q0[j] = c->st.vals[i];
         c->qd0[j] = c->st.vals[n + i];
     }
-    return c->e ? QD_EXIT_OK : initial_momenta(c);
+    if (speeds && (rc = initial_speeds(c)) == QD_EXIT_OK && c->e && c->u0)
+        rc = velocities_from_speeds(c);
+    return speeds || c->e ? rc : initial_momenta(c);
 }
 
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
@@ -337,6 +467,7 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     o->q0 = c->q0;
     o->qd0 = c->qd0;
     o->p0 = c->p0;
+    o->u0 = c->u0;
     if (!qd_sim_method_adaptive(o->method) && !a->has_dt) {
         cli_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
         return QD_EXIT_USAGE;
@@ -399,6 +530,12 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         c->s = qd_sim_new_hamilton(c->ctx, c->mf.model);
         if (!c->s)
             return cli_diag_ctx(c->ctx);
+    } else if (qd_model_nspeeds(c->mf.model) && !a->no_speeds) {
+        /* the constraints eliminated: no multipliers to solve for */
+        c->se = qd_speeds_derive(c->ctx, c->mf.model, NULL);
+        if (!c->se)
+            return cli_eom_derive_error(c->ctx, &c->mf);
+        c->s = qd_sim_new_speeds(c->ctx, c->mf.model, c->se);
     } else {
         c->e = qd_eom_derive(c->ctx, c->mf.model);
         if (!c->e)
@@ -416,7 +553,10 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = add_event(c, a->events[i], a->event_stop[i]);
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
-    if (rc == QD_EXIT_OK && a->native && !c->e)
+    if (rc == QD_EXIT_OK && a->native && c->se)
+        fprintf(stderr, "qdot: note: --native takes the multiplier form (--no-speeds); using "
+                        "the compiled programs\n");
+    else if (rc == QD_EXIT_OK && a->native && !c->e)
         fprintf(stderr, "qdot: note: --native takes models given by T and V or L; using the "
                         "compiled programs\n");
     else if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
@@ -430,12 +570,23 @@ void cli_sim_free(cli_sim *c) {
     free(c->native);
     free(c->q0);
     free(c->p0);
+    free(c->u0);
     qd_sim_free(c->s);
+    if (c->se)
+        qd_speeds_eom_free(c->se);
     cli_state_free(&c->st);
     if (c->e)
         qd_eom_free(c->e);
     cli_model_file_free(&c->mf);
     qd_ctx_free(c->ctx);
+}
+
+size_t cli_sim_ncon(const cli_sim *c) {
+    return c->se ? c->se->ncon : c->e ? c->e->ncon : 0;
+}
+
+const qd_con *cli_sim_con(const cli_sim *c, size_t k) {
+    return c->se ? &c->se->con[k] : &c->e->con[k];
 }
 
 int cli_sim_fail(cli_sim *c, qd_status st) {

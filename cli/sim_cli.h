@@ -22,6 +22,7 @@ typedef struct cli_sim_args {
     size_t nevents;
     double t_end, dt, rtol, atol;
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
+    bool no_speeds;    /* a model with speeds: the multiplier form instead */
     size_t max_steps;
 } cli_sim_args;
 
@@ -29,12 +30,14 @@ typedef struct cli_sim {
     qd_ctx *ctx;
     cli_model_file mf;
     qd_eom *e;
+    qd_speeds_eom *se; /* a model with speeds (unless --no-speeds): e is NULL */
     qd_sim *s;
     cli_state st;
     void *native;      /* qd_native, when --native loaded one */
     qd_sim_opts opts;
     double *q0, *qd0;
     double *p0;        /* a model given by H: momenta from --initial, or NULL */
+    double *u0;        /* a model in speeds: the speeds when any is given, or NULL */
 } cli_sim;
 
 /* One option shared by both commands at argv[*i]: 1 when it was one (and
@@ -46,6 +49,10 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a);
  * method and options.  Returns an exit status; prints its diagnostics. */
 int cli_sim_setup(cli_sim *c, const cli_sim_args *a);
 void cli_sim_free(cli_sim *c);
+
+/* The constraints of the equations simulated (multiplier form or speeds). */
+size_t cli_sim_ncon(const cli_sim *c);
+const qd_con *cli_sim_con(const cli_sim *c, size_t k);
 
 /* Print a failed run's message; exit status 1. */
 int cli_sim_fail(cli_sim *c, qd_status st);

@@ -137,12 +137,16 @@ int cli_state_read_set(qd_ctx *ctx, const char *arg, char *name, size_t cap,
 
 /* ---- --at ------------------------------------------------------------------ */
 
+/* The coordinates, and the speeds when the model has some. */
 static void list_coords(const qd_model *m, char *out, size_t cap) {
     size_t used = 0;
     out[0] = '\0';
     for (size_t i = 0; i < qd_model_ncoords(m) && used < cap; i++)
         used += (size_t)snprintf(out + used, cap - used, "%s%s", i ? ", " : "",
                                  qd_expr_name(qd_model_coord(m, i)));
+    for (size_t i = 0; i < qd_model_nspeeds(m) && used < cap; i++)
+        used += (size_t)snprintf(out + used, cap - used, "%s%s", i ? ", " : "; the speeds are ",
+                                 qd_expr_name(qd_model_speed(m, i)));
 }
 
 /* The slot of NAME (a coordinate, a velocity NAME', t or a parameter) in st. */

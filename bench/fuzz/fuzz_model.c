@@ -45,6 +45,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
             qd_print(ctx, qd_model_impact_gap(m, i), QD_FMT_TEXT, &b);
         for (size_t i = 0; i < qd_model_nprescribed(m); i++)
             qd_print(ctx, qd_model_prescribed(m, i), QD_FMT_TEXT, &b);
+        for (size_t i = 0; i < qd_model_nspeeds(m); i++) {
+            qd_print(ctx, qd_model_speed_definition(m, i), QD_FMT_TEXT, &b);
+            if (qd_model_speed_initial(m, i))
+                qd_print(ctx, qd_model_speed_initial(m, i), QD_FMT_TEXT, &b);
+        }
         qd_model_free(m);
     } else {
         qd_diag_format(&d, "fuzz.qd", text, &b);

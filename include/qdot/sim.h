@@ -10,6 +10,8 @@
  *                    dp/dt = dL/dq + Q - dD/dq'   (= -dH/dq + extra; used by
  *                    the Gauss-Legendre and splitting methods, so that they
  *                    are symplectic also for a non-separable H)
+ *   speeds form      y = (q, u),   q' = W u + w,  M_u u' = f_u  (qdot/speeds.h:
+ *                    the constraints eliminated, no multipliers)
  *
  * The methods: explicit Runge-Kutta pairs with step control and dense output
  * (Dormand-Prince 5(4), DOP853 8(5,3)), implicit Gauss-Legendre collocation
@@ -26,6 +28,7 @@
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
+#include "speeds.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -91,6 +94,28 @@ QD_API qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
  * constraints), reason in ctx. */
 QD_API qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m);
 /* (A model given by H with `impact`s is refused: the impact law needs M.) */
+
+/* Compile a model's equations in generalized speeds e (qd_speeds_derive),
+ * y = (q, u), n + m numbers:
+ *
+ *     q' = kin(q, u, t) = W u + w,     M_u u' = f_u,
+ *
+ * the constraints eliminated (every Pfaffian row holds for every u, so the
+ * motion keeps it to round-off; a holonomic one is kept in its velocity
+ * form and the positions are projected back onto phi = 0 after each step
+ * unless opts.no_project).  Methods: dopri5, dop853, gl2, gl4, gl6 (the
+ * collocation is not symplectic here: (q, u) are not canonical) and bdf;
+ * verlet and yoshida* are QD_ERR_ARG from qd_sim_run.  The columns are t,
+ * the coordinates, the speeds under their names, the velocities q' (name',
+ * from the kinematics), energy (h from the model's Lagrangian at those q'),
+ * res_NAME per constraint, then the outputs.  Outputs and events are
+ * expressions in q, q', t and the parameters (a speed stands for its
+ * definition).  Initial values: opts.q0 and opts.u0, or (u0 NULL) the
+ * speeds of opts.qd0 by their definitions.  Multipliers are not computed:
+ * an output using one fails to compile.  A model with `impact`s is
+ * QD_ERR_ARG.  e and m must outlive the qd_sim; NULL on failure, reason in
+ * ctx. */
+QD_API qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e);
 QD_API void qd_sim_free(qd_sim *s);
 
 /* Extra output columns: an expression in the coordinates, velocities, t and
@@ -116,6 +141,7 @@ QD_API void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs);
 /* What the system is (known after qd_sim_new). */
 QD_API size_t qd_sim_ndof(const qd_sim *s);
 QD_API size_t qd_sim_ncon(const qd_sim *s);
+QD_API size_t qd_sim_nspeeds(const qd_sim *s);   /* m of qd_sim_new_speeds, else 0 */
 QD_API bool qd_sim_canonical(const qd_sim *s);   /* (q, p) form available */
 QD_API bool qd_sim_separable(const qd_sim *s);   /* H = T(p) + V(q), p-free forces */
 QD_API bool qd_sim_conservative(const qd_sim *s);/* no t in L, no forces, no dissipation */
@@ -144,6 +170,10 @@ typedef struct qd_sim_opts {
      * NULL to find them from qd0 (dH/dp = q', solved by Newton's method:
      * QD_ERR_SINGULAR when d^2H/dp^2 is singular, as for H = p x). */
     const double *p0;
+    /* A system in speeds (qd_sim_new_speeds): m initial speeds, or NULL
+     * for the speeds of qd0 (u = A qd0 + b, after qd0 is projected onto
+     * the constraints). */
+    const double *u0;
 } qd_sim_opts;
 
 typedef struct qd_sim_stats {
@@ -183,10 +213,11 @@ typedef struct qd_sim_stats {
  * c out of range.  stats.constraint_error_max is the largest of these. */
 QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
 
-/* The columns of a run with method: t, the coordinates, the velocities
- * (name'), the momenta (p_name, canonical-form methods only), energy (the
- * Jacobi integral h, = T + V for natural systems), one residual per
- * constraint (res_NAME), then the outputs.  names may be NULL; returns the
+/* The columns of a run with method: t, the coordinates, the speeds (a
+ * system in speeds), the velocities (name'), the momenta (p_name,
+ * canonical-form methods only), energy (the Jacobi integral h, = T + V for
+ * natural systems), one residual per constraint (res_NAME), then the
+ * outputs.  names may be NULL; returns the
  * count; names[i] are owned by s. */
 QD_API size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
 

@@ -117,6 +117,7 @@ typedef struct qd_speeds_eom {
     const qd_expr **mult;     /* ncon multipliers in q, u, u', t (opts.multipliers), else NULL */
     qd_speeds_method method;
     void *priv;               /* the library's: the compiled numeric program */
+    const qd_expr **acc;      /* m: u' explicit after qd_speeds_solve, else NULL */
 } qd_speeds_eom;
 
 /* Derive the equations in speeds of a model with `speeds` (QD_ERR_ARG when
@@ -127,6 +128,12 @@ typedef struct qd_speeds_eom {
  * NULL on failure, reason in ctx. */
 QD_API qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_opts *opts);
 QD_API void qd_speeds_eom_free(qd_speeds_eom *e);
+
+/* Solve M_u u' = f_u symbolically for u' (the fraction-free elimination of
+ * qd_eom_solve, each entry simplified) into e->acc.  QD_ERR_TOOBIG when an
+ * entry would exceed max_ops operations (count_ops): the caller keeps M_u
+ * and f_u; QD_ERR_SINGULAR when det M_u simplifies to 0. */
+QD_API qd_status qd_speeds_solve(qd_ctx *ctx, qd_speeds_eom *e, size_t max_ops);
 
 /* Numbers at one state.  vals gives the value of each symbol in syms
  * (coordinates, speeds, t, parameters; symbols not given are 0).  Any

@@ -210,6 +210,11 @@ qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s) {
     return e;
 }
 
+qd_status qd__eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L) {
+    e->L = L;
+    return derive_all(ctx, e, s, L);
+}
+
 static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     qd_status st = set_coords(ctx, e, s);
     if (st != QD_OK)

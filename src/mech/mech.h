@@ -77,9 +77,11 @@ const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *A);
 
 /* Solve A X = B symbolically (A n*n, B and X n*ncols, row-major) by the
  * fraction-free elimination of qd_eom_solve, each entry simplified.
- * QD_ERR_SINGULAR, nothing recorded, when det A simplifies to 0. */
+ * QD_ERR_SINGULAR, nothing recorded, when det A simplifies to 0;
+ * QD_ERR_TOOBIG, nothing recorded, when an entry would exceed max_ops
+ * operations (0: no limit). */
 qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
-                         const qd_expr *const *B, const qd_expr **X);
+                         const qd_expr *const *B, const qd_expr **X, size_t max_ops);
 
 /* ---- constraints ---------------------------------------------------------- */
 
@@ -103,6 +105,10 @@ void qd__sys_free(qd__sys *s);
 /* A qd_eom with e's coordinates and constraints (qd__con_setup) but no
  * Lagrange rows (M and f NULL): what the equations in speeds start from. */
 qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s);
+
+/* Lagrange's rows M q'' = f of a shell from s with the Lagrangian L (as
+ * qd__sys_lagrangian gives it), each entry simplified: e->M, e->f, e->L. */
+qd_status qd__eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L);
 
 /* L of s grouped by velocity monomials (as qd_eom_derive differentiates it),
  * e's coordinates set; T's split goes to e->T2, T1, T0. */

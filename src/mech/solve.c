@@ -16,11 +16,18 @@
 
 #include "base/mem.h"
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 /* Intermediate entries beyond this many operations times the caller's
  * limit stop the elimination early: the result would not fit either. */
 #define GROWTH 32
+
+/* The intermediate limit for a result limit max_ops; 0 (none) when that
+ * would overflow (max_ops = SIZE_MAX: no limit). */
+static size_t growth_limit(size_t max_ops) {
+    return max_ops && max_ops <= (SIZE_MAX - 4096) / GROWTH ? max_ops * GROWTH + 4096 : 0;
+}
 
 typedef struct elim {
     qd_ctx *ctx;
@@ -28,6 +35,7 @@ typedef struct elim {
     const qd_expr **A; /* row-major, n*w */
     size_t limit;      /* operations per entry, 0 for none */
     int sign;          /* of the row permutation */
+    bool smallest;     /* pivot on the shortest nonzero entry, not the first */
 } elim;
 
 static const qd_expr *exact_div(qd_ctx *ctx, const qd_expr *num, const qd_expr *den) {
@@ -37,15 +45,36 @@ static const qd_expr *exact_div(qd_ctx *ctx, const qd_expr *num, const qd_expr *
     return qd_cancel(ctx, qd_div(ctx, num, den));
 }
 
+/* The row at or below k to pivot on in column k: with el->smallest the
+ * one whose entry has the fewest operations (a constant first: the
+ * entries then grow least), else the first nonzero; el->n when none. */
+static size_t pick_row(elim *el, size_t k, qd_status *st) {
+    size_t best = el->n, best_ops = 0;
+    for (size_t r = k; r < el->n; r++) {
+        const qd_expr *x = qd_simplify(el->ctx, el->A[r * el->w + k]);
+        if (!x) { /* not a zero: the simplifier failed (out of memory) */
+            *st = qd_ctx_status(el->ctx) != QD_OK ? qd_ctx_status(el->ctx) : QD_ERR_NOMEM;
+            return el->n;
+        }
+        if (qd_is_zero(x))
+            continue;
+        size_t ops = qd_is_number(x) ? 0 : 1 + qd_count_ops(x);
+        if (best == el->n || ops < best_ops)
+            best = r, best_ops = ops;
+        if (!el->smallest || !ops)
+            break;
+    }
+    return best;
+}
+
 /* Move a row with an entry that does not simplify to 0 in column k to row
  * k; QD_ERR_SINGULAR when there is none. */
 static qd_status find_pivot(elim *el, size_t k) {
-    for (size_t r = k; r < el->n; r++) {
-        const qd_expr *x = qd_simplify(el->ctx, el->A[r * el->w + k]);
-        if (!x) /* not a zero: the simplifier failed (out of memory) */
-            return qd_ctx_status(el->ctx) != QD_OK ? qd_ctx_status(el->ctx) : QD_ERR_NOMEM;
-        if (qd_is_zero(x))
-            continue;
+    qd_status st = QD_OK;
+    size_t r = pick_row(el, k, &st);
+    if (st != QD_OK)
+        return st;
+    if (r < el->n) {
         for (size_t j = 0; r != k && j < el->w; j++) {
             const qd_expr *t = el->A[r * el->w + j];
             el->A[r * el->w + j] = el->A[k * el->w + j];
@@ -97,7 +126,7 @@ const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
         return NULL;
     for (size_t i = 0; i < n * n; i++)
         A[i] = M[i];
-    elim el = {ctx, n, n, A, 0, 1};
+    elim el = {ctx, n, n, A, 0, 1, false};
     qd_status st = n ? bareiss(&el) : QD_OK;
     const qd_expr *det = st == QD_ERR_SINGULAR ? qd_int(ctx, 0)
                          : st != QD_OK         ? NULL
@@ -219,7 +248,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
     qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK)
         augmented(ctx, e, A);
-    elim el = {ctx, N, w, A, max_ops * GROWTH + 4096, 1};
+    elim el = {ctx, N, w, A, growth_limit(max_ops), 1, false};
     if (st == QD_OK && N)
         st = solve_entries(&el, acc, max_ops);
     qd__free(A);
@@ -234,7 +263,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
 }
 
 qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
-                         const qd_expr *const *B, const qd_expr **X) {
+                         const qd_expr *const *B, const qd_expr **X, size_t max_ops) {
     if (!n)
         return QD_OK;
     size_t w = n + ncols;
@@ -247,7 +276,7 @@ qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t 
         for (size_t c = 0; c < ncols; c++)
             E[i * w + n + c] = B[i * ncols + c];
     }
-    elim el = {ctx, n, w, E, 0, 1};
+    elim el = {ctx, n, w, E, growth_limit(max_ops), 1, true};
     if (st == QD_OK)
         st = bareiss(&el);
     const qd_expr *det = st == QD_OK ? qd_simplify(ctx, E[(n - 1) * w + n - 1]) : NULL;
@@ -260,6 +289,8 @@ qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t 
         for (size_t i = 0; st == QD_OK && i < n; i++)
             if (!(X[i * ncols + c] = quotient(ctx, N[i], det)))
                 st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+            else if (max_ops && qd_count_ops(X[i * ncols + c]) > max_ops)
+                st = QD_ERR_TOOBIG;
     }
     qd__free(E);
     qd__free(N);

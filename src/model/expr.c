@@ -123,7 +123,34 @@ static void dt_value(parser *p, value *v) {
 
 static bool is_name_char(char c) { return isalnum((unsigned char)c) || c == '_'; }
 
-/* Offset of a later line "name = ...", or -1. */
+/* Does "name =" (not "==") start at s + j? */
+static bool names_at(const char *s, size_t j, const char *name, size_t n) {
+    if (strncmp(s + j, name, n) != 0 || is_name_char(s[j + n]))
+        return false;
+    size_t k = j + n;
+    while (s[k] == ' ' || s[k] == '\t')
+        k++;
+    return s[k] == '=' && s[k + 1] != '=';
+}
+
+/* Does the `speeds` line at j declare name (right after the keyword or a
+ * comma)? */
+static bool speeds_line_names(const char *s, size_t j, const char *name, size_t n) {
+    if (strncmp(s + j, "speeds", 6) != 0 || (s[j + 6] != ' ' && s[j + 6] != '\t'))
+        return false;
+    for (size_t k = j + 6; s[k] && s[k] != '\n'; k++) {
+        if (s[k] != ',' && k != j + 6)
+            continue;
+        size_t a = k + 1;
+        while (s[a] == ' ' || s[a] == '\t')
+            a++;
+        if (names_at(s, a, name, n))
+            return true;
+    }
+    return false;
+}
+
+/* Offset of a later line "name = ..." (or a `speeds` line naming it), or -1. */
 static long defined_later(parser *p, const char *name, size_t n, size_t from) {
     const char *s = p->lx.src;
     for (size_t i = from; s[i]; i++) {
@@ -132,15 +159,8 @@ static long defined_later(parser *p, const char *name, size_t n, size_t from) {
         size_t j = i + 1;
         while (s[j] == ' ' || s[j] == '\t')
             j++;
-        if (strncmp(s + j, name, n) == 0) {
-            size_t k = j + n;
-            if (is_name_char(s[k]))
-                continue;
-            while (s[k] == ' ' || s[k] == '\t')
-                k++;
-            if (s[k] == '=' && s[k + 1] != '=')
-                return (long)j;
-        }
+        if (names_at(s, j, name, n) || speeds_line_names(s, j, name, n))
+            return (long)j;
     }
     return -1;
 }
@@ -256,11 +276,14 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
 
 #define MAX_ARGS 16
 
-static bool parse_args(parser *p, value *args, size_t *nargs) {
+/* The arguments of a call; *end is just past its ')', so that the call's
+ * span stops there and not at the next token. */
+static bool parse_args(parser *p, value *args, size_t *nargs, size_t *end) {
     *nargs = 0;
     size_t open = p->lx.tok.off;
     qd__lex_next(&p->lx); /* '(' */
     if (p->lx.tok.kind == TK_RPAREN) {
+        *end = p->lx.tok.off + p->lx.tok.len;
         qd__lex_next(&p->lx);
         return true;
     }
@@ -273,6 +296,7 @@ static bool parse_args(parser *p, value *args, size_t *nargs) {
             qd__lex_next(&p->lx);
             continue;
         }
+        *end = p->lx.tok.off + p->lx.tok.len;
         return qd__mdl_expect_close(p, open);
     }
 }
@@ -341,10 +365,10 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     if (!uf && qd__mdl_is_body_call(name) && (qd__mdl_body_call_ahead(p) || !names_a_value(p, name)))
         return qd__mdl_body_call(p, name, off, out);
     value a[MAX_ARGS];
-    size_t na;
-    if (!parse_args(p, a, &na))
+    size_t na, end = off;
+    if (!parse_args(p, a, &na, &end))
         return false;
-    size_t len = p->lx.tok.off - off;
+    size_t len = end - off;
     if (!strcmp(name, "dot") || !strcmp(name, "cross") || !strcmp(name, "norm"))
         return vector_call(p, name, a, na, out, off, len);
     if (!uf && qd__mdl_is_rot_call(name))

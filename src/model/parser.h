@@ -95,7 +95,7 @@ typedef struct def {
 } def;
 
 typedef struct where {
-    char what[64];
+    char what[160];            /* "speed:" and a name of up to 127 bytes */
     const char *src;       /* the text off counts in: the model's, or an added statement's */
     size_t off, len;
 } where;

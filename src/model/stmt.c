@@ -331,18 +331,27 @@ static int coord_named(parser *p) {
     return -1;
 }
 
-static bool no_such_coordinate(parser *p) {
+/* The name at the token is none of the coordinates (nor, with speeds, of
+ * the speeds): say so with the nearest of them. */
+static bool not_among(parser *p, bool speeds) {
     char name[128], hint[192] = "";
     tok_text(p, name, sizeof name);
-    const char **names = qd__malloc(p->ctx, (p->m->ncoords + 1) * sizeof *names);
-    for (size_t i = 0; names && i < p->m->ncoords; i++)
-        names[i] = qd_expr_name(p->m->coords[i]);
-    const char *near = names ? qd__diag_nearest(name, strlen(name), names, p->m->ncoords) : NULL;
+    const qd_model *m = p->m;
+    size_t ns = speeds ? m->nspeeds : 0, n = 0;
+    const char **names = qd__malloc(p->ctx, (m->ncoords + ns + 1) * sizeof *names);
+    for (size_t i = 0; names && i < m->ncoords; i++)
+        names[n++] = qd_expr_name(m->coords[i]);
+    for (size_t i = 0; names && i < ns; i++)
+        names[n++] = qd_expr_name(m->speeds[i].sym);
+    const char *near = names ? qd__diag_nearest(name, strlen(name), names, n) : NULL;
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     qd__free(names);
-    return qd__mdl_perr_tok(p, hint, "'%s' is not a coordinate", name);
+    return qd__mdl_perr_tok(p, hint, ns ? "'%s' is not a coordinate or a speed"
+                                        : "'%s' is not a coordinate", name);
 }
+
+static bool no_such_coordinate(parser *p) { return not_among(p, false); }
 
 int qd__mdl_coord_subscript(parser *p, const char *usage) {
     qd__lex_next(&p->lx); /* the name */
@@ -408,7 +417,7 @@ static bool stmt_initial(parser *p) {
         }
         int j = coord_named(p);
         if (p->lx.tok.kind != TK_IDENT || j < 0)
-            return p->lx.tok.kind == TK_IDENT ? no_such_coordinate(p)
+            return p->lx.tok.kind == TK_IDENT ? not_among(p, true)
                                               : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
         qd__lex_next(&p->lx);
         unsigned order = 0;
@@ -498,11 +507,13 @@ static bool stmt_constraint(parser *p) {
         strcpy(copy, name);
     size_t n = m->ncons;
     if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy) ||
-        !qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof c, &c) ||
-        !add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1})) {
-        qd__free(copy);
+        !qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof c, &c)) {
+        qd__free(copy); /* not counted by ncons: the model does not free it */
         return qd__mdl_perr(p, off, 1, NULL, "out of memory");
     }
+    /* from here the model owns the name (ncons counts it) */
+    if (!add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1}))
+        return qd__mdl_perr(p, off, 1, NULL, "out of memory");
     return qd__mdl_end_of_statement(p);
 }
 

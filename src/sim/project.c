@@ -47,7 +47,7 @@ static qd_status fail(qd_sim *s, double t, const char *what, double res) {
         }
     qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                  "constraint %s cannot be satisfied at t = %.17g: the projection onto the "
-                 "constraints %s (residual %.3g)", s->e->con[worst].name, t, what, res);
+                 "constraints %s (residual %.3g)", s->cons[worst].name, t, what, res);
     return QD_ERR_NUMERIC;
 }
 

@@ -27,6 +27,10 @@ qd_status qd__run_velocity(qd__run *r, double t, const double *y) {
         memcpy(r->qd, y + n, n * sizeof *r->qd);
         return QD_OK;
     }
+    if (r->it->form == QD__SPD) {
+        qd__speeds_velocity(r->s, t, y, r->qd);
+        return QD_OK;
+    }
     return qd__velocity(r->s, t, y, y + n, r->qd);
 }
 
@@ -119,6 +123,8 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
     row[k++] = t;
     for (size_t j = 0; j < n; j++)
         row[k++] = y[j];
+    for (size_t j = 0; r->it->form == QD__SPD && j < s->nu; j++)
+        row[k++] = y[n + j];
     for (size_t j = 0; j < n; j++)
         row[k++] = r->qd[j];
     if (r->it->form == QD__HAM)
@@ -180,6 +186,12 @@ qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
 /* Can the method take this system? */
 static qd_status check_system(const qd_sim *s, const qd_sim_opts *o) {
     const char *name = qd_sim_method_name(o->method);
+    if (splitting(o->method) && s->se) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG,
+                     "%s cannot integrate the equations in generalized speeds (y = (q, u) is "
+                     "not canonical): use dopri5, dop853, gl2, gl4, gl6 or bdf", name);
+        return QD_ERR_ARG;
+    }
     if (splitting(o->method) && !s->m && !s->separable) {
         qd_ctx_error(s->ctx, QD_ERR_ARG,
                      "%s needs a separable Hamiltonian H = T(p) + V(q) (constant mass "
@@ -225,6 +237,36 @@ static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     return QD_OK;
 }
 
+static bool any_holonomic(const qd_sim *s) {
+    for (size_t c = 0; c < s->m; c++)
+        if (s->holonomic[c])
+            return true;
+    return false;
+}
+
+/* A system in speeds: q of y = (q, u) onto the holonomic constraints; u
+ * stays, and q' = kin(q, u) keeps the velocity constraints by itself. */
+static qd_status project_positions(qd__run *r, double t, double *y) {
+    qd__speeds_velocity(r->s, t, y, r->qd);
+    return qd__project(r->s, t, y, r->qd);
+}
+
+/* y0 = (q0, u0), or u0 from q'0 projected onto the constraints. */
+static qd_status initial_speeds(qd__run *r, const qd_sim_opts *o) {
+    qd_sim *s = r->s;
+    double *y = r->it->y;
+    bool project = any_holonomic(s) && !o->no_project;
+    if (o->u0) {
+        memcpy(y + s->n, o->u0, s->nu * sizeof *y);
+        return project ? project_positions(r, o->t0, y) : QD_OK;
+    }
+    memcpy(r->qd, o->qd0, s->n * sizeof *r->qd);
+    qd_status st = s->m && !o->no_project ? qd__project(s, o->t0, y, r->qd) : QD_OK;
+    if (st == QD_OK)
+        qd__speeds_from(s, o->t0, y, r->qd, y + s->n);
+    return st;
+}
+
 /* y0 from q0, q'0: projected onto the constraints, then (q, p) if canonical. */
 static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
     qd_sim *s = r->s;
@@ -232,6 +274,8 @@ static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
     size_t n = s->n;
     double *q = it->y, *qd = r->qd;
     memcpy(q, o->q0, n * sizeof *q);
+    if (s->se)
+        return initial_speeds(r, o);
     if (s->hamilton) {
         /* Hamilton's equations need the momenta: given, or from q' */
         if (o->p0) {
@@ -452,7 +496,8 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
     qd__integ *it = r->it;
     const qd_sim_opts *o = L->o;
     bool last, every = L->fixed || !(o->dt > 0);
-    bool project = s->m && !o->no_project && o->method != QD_SIM_BDF;
+    bool project = s->m && !o->no_project && o->method != QD_SIM_BDF &&
+                   (!s->se || any_holonomic(s));
     size_t N = L->fixed ? (size_t)ceil((o->t_end - o->t0) / o->dt - 1e-9) : 0;
     double target = 0;
     if (L->fixed) {
@@ -478,7 +523,11 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
     } else if (last && fabs(it->t - o->t_end) <= 4e-16 * fabs(o->t_end) + 1e-300) {
         it->t = o->t_end;
     }
-    if (project) {
+    if (project && s->se) {
+        if ((st = project_positions(r, it->t, it->y)) != QD_OK)
+            return st;
+        it->y_changed = true;
+    } else if (project) {
         size_t n = s->n;
         st = qd__run_velocity(r, it->t, it->y);
         if (st == QD_OK)
@@ -550,10 +599,11 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     if (st != QD_OK)
         return st;
     qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
-                    .dim = 2 * s->n, .t = o->t0, .tend = o->t_end,
+                    .dim = s->se ? s->n + s->nu : 2 * s->n, .t = o->t0, .tend = o->t_end,
                     .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
                     .fixed = o->fixed, .h = o->fixed ? o->dt : 0};
-    it.form = s->hamilton || (symplectic(o->method) && s->canonical) ? QD__HAM : QD__LAG;
+    it.form = s->se ? QD__SPD
+              : s->hamilton || (symplectic(o->method) && s->canonical) ? QD__HAM : QD__LAG;
     qd__run r = {.s = s, .it = &it};
     size_t ncols = qd_sim_columns(s, o->method, NULL, 0);
     st = run_alloc(&r, &it, ncols);

@@ -8,8 +8,10 @@
 
 #include "qdot/eval.h"
 #include "qdot/sim.h"
+#include "qdot/speeds.h"
 
-typedef enum qd__form { QD__LAG, QD__HAM } qd__form;
+/* The state a method integrates: (q, q'), (q, p), or (q, u) in speeds. */
+typedef enum qd__form { QD__LAG, QD__HAM, QD__SPD } qd__form;
 
 typedef struct qd__event {
     bool stop;
@@ -46,6 +48,15 @@ struct qd_sim {
     const qd_expr *h_expr, *T_expr;
     const qd_expr **b_expr, **force_expr;
     bool *holonomic;  /* m */
+    const qd_con *cons; /* m: the constraints (e's, or se's in speeds) */
+    /* generalized speeds (speeds.c): se the equations, y = (q, u); the
+     * inputs' last block holds the nu speeds where the multipliers stand
+     * otherwise; acc gives q' (n), M_u (nu*nu), f_u (nu), kin q' alone,
+     * udef the speeds from (q, q', t) */
+    const qd_speeds_eom *se;
+    size_t nu;
+    qd_prog *kin, *udef;
+    size_t kin_n, udef_n;
     /* outputs and events, compiled into aux by qd_sim_compile */
     size_t nout, nev, nguard, cap_out, cap_ev, cap_guard;
     char **out_name;
@@ -54,6 +65,7 @@ struct qd_sim {
     bool aux_ready, aux_lambda;
     /* column names of the fixed part: t, q, q', p_q, energy, res_c */
     char **names;
+    size_t nnames;
     qd_sim_native_rhs native;
     double *con_err_last; /* m: qd_sim_run's last per-constraint residuals */
     /* unilateral contacts (impact.c): their gaps are events nev.. of aux;
@@ -69,6 +81,7 @@ struct qd_sim {
     double *acc_out, *con_out, *mom_out, *force_out, *aux_out, *en_out;
     double *acc_w, *con_w, *mom_w, *force_w, *aux_w, *en_w;
     double *imp_out, *imp_w;
+    double *kin_out, *kin_w, *udef_out, *udef_w;
     /* scratch for the linear solves */
     double *K, *rhs, *tmp;
     size_t *pc;
@@ -83,6 +96,9 @@ static inline const double *qd__second(const qd_sim *s, const double *y, const d
     return s->hamilton ? y + s->n : qd;
 }
 
+/* The speeds' block of the inputs (a system in speeds). */
+static inline double *qd__in_speeds(qd_sim *s) { return s->in + 2 * s->n + 1 + s->np; }
+
 /* Compile outs into a program over s's inputs (angle sums expanded as the
  * generated C does); *count = nout.  NULL on failure, reason in ctx. */
 qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count);
@@ -95,6 +111,21 @@ void qd__hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x);
  * dH/dp = qd); QD_ERR_SINGULAR when d^2H/dp^2 is singular there. */
 qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const double *qd,
                                double *p);
+
+/* The constraints' program con: A (m*n), a0 (m), phi (m). */
+qd_status qd__sim_con_prog(qd_sim *s);
+
+/* ---- generalized speeds (speeds.c) ----------------------------------------- */
+
+/* The speeds replaced by their definitions in x[0..n), so that outputs
+ * and events may name them and still be read at (q, q', t). */
+void qd__speeds_defs(qd_sim *s, size_t n, const qd_expr **x);
+/* (q', u') at (q, u, t): the kinematics, and M_u u' = f_u solved. */
+qd_status qd__speeds_rhs(qd_sim *s, double t, const double *y, double *dy);
+/* q' = kin(q, u, t) at y = (q, u). */
+void qd__speeds_velocity(qd_sim *s, double t, const double *y, double *qd);
+/* u from (q, q', t) by the definitions. */
+void qd__speeds_from(qd_sim *s, double t, const double *q, const double *qd, double *u);
 
 /* Give the run copy w (a struct copy of a compiled system) its own
  * workspace, messages going to ctx; QD_ERR_NOMEM (nothing recorded). */

@@ -99,17 +99,29 @@ static qd_status compile_acc(qd_sim *s) {
     for (size_t i = 0; i < m; i++)
         outs[k++] = e->b[i];
     s->acc = qd__sim_prog(s, k, outs, &s->acc_n);
-    k = 0;
-    for (size_t i = 0; i < m * n; i++)
-        outs[k++] = e->A[i];
-    for (size_t i = 0; i < m; i++)
-        outs[k++] = e->con[i].a0;
-    for (size_t i = 0; i < m; i++)
-        outs[k++] = e->con[i].expr;
-    if (s->acc && m)
-        s->con = qd__sim_prog(s, k, outs, &s->con_n);
     qd__free(outs);
-    return s->acc && (!m || s->con) ? QD_OK : qd_ctx_status(s->ctx);
+    if (!s->acc)
+        return qd_ctx_status(s->ctx);
+    return qd__sim_con_prog(s);
+}
+
+qd_status qd__sim_con_prog(qd_sim *s) {
+    size_t n = s->n, m = s->m, k = 0;
+    if (!m)
+        return QD_OK;
+    const qd_expr **outs = qd__malloc(s->ctx, (m * (n + 2) + 1) * sizeof *outs);
+    if (!outs)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j < n; j++)
+            outs[k++] = s->cons[i].a[j];
+    for (size_t i = 0; i < m; i++)
+        outs[k++] = s->cons[i].a0;
+    for (size_t i = 0; i < m; i++)
+        outs[k++] = s->cons[i].expr;
+    s->con = qd__sim_prog(s, k, outs, &s->con_n);
+    qd__free(outs);
+    return s->con ? QD_OK : qd_ctx_status(s->ctx);
 }
 
 static size_t model_index(const qd_sim *s, const qd_expr *q) {
@@ -189,7 +201,7 @@ static qd_status compile_canonical(qd_sim *s) {
 /* Coordinate j and its momentum's column name (p_q, or the name given in
  * `momenta` for a model given by H). */
 static const qd_expr *coord(const qd_sim *s, size_t j) {
-    return s->e ? s->e->q[j] : qd_model_coord(s->model, j);
+    return s->e ? s->e->q[j] : s->se ? s->se->q[j] : qd_model_coord(s->model, j);
 }
 
 static char *momentum_name(const qd_sim *s, size_t j) {
@@ -198,9 +210,19 @@ static char *momentum_name(const qd_sim *s, size_t j) {
     return dup_printf(s->ctx, "p_", qd_expr_name(coord(s, j)), "");
 }
 
+/* The names of the state's second half: the momenta, or the speeds (a
+ * system in speeds has no momenta column). */
+static char *second_name(const qd_sim *s, size_t j) {
+    if (s->se)
+        return j < s->nu ? dup_printf(s->ctx, qd_expr_name(s->se->u[j]), "", "") : NULL;
+    return momentum_name(s, j);
+}
+
+/* t, q, q', p (or, in speeds: t, q, u, q'), energy, res_c. */
 qd_status qd__sim_names(qd_sim *s) {
-    size_t n = s->n, k = 0;
-    s->names = qd__calloc(s->ctx, 3 * n + 2 + s->m, sizeof *s->names);
+    size_t n = s->n, k = 0, nsecond = s->se ? s->nu : n;
+    s->nnames = 2 * n + nsecond + 2 + s->m;
+    s->names = qd__calloc(s->ctx, s->nnames, sizeof *s->names);
     s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
     s->con_err_last = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err_last);
     if (!s->names || !s->holonomic || !s->con_err_last)
@@ -208,14 +230,16 @@ qd_status qd__sim_names(qd_sim *s) {
     s->names[k++] = dup_printf(s->ctx, "t", "", "");
     for (size_t j = 0; j < n; j++)
         s->names[k++] = dup_printf(s->ctx, qd_expr_name(coord(s, j)), "", "");
+    for (size_t j = 0; s->se && j < nsecond; j++)
+        s->names[k++] = second_name(s, j);
     for (size_t j = 0; j < n; j++)
         s->names[k++] = dup_printf(s->ctx, qd_expr_name(coord(s, j)), "'", "");
-    for (size_t j = 0; j < n; j++)
-        s->names[k++] = momentum_name(s, j);
+    for (size_t j = 0; !s->se && j < nsecond; j++)
+        s->names[k++] = second_name(s, j);
     s->names[k++] = dup_printf(s->ctx, "energy", "", "");
     for (size_t c = 0; c < s->m; c++) {
-        s->names[k++] = dup_printf(s->ctx, "res_", s->e->con[c].name, "");
-        s->holonomic[c] = s->e->con[c].kind == QD_CON_HOLONOMIC;
+        s->names[k++] = dup_printf(s->ctx, "res_", s->cons[c].name, "");
+        s->holonomic[c] = s->cons[c].kind == QD_CON_HOLONOMIC;
     }
     for (size_t i = 0; i < k; i++)
         if (!s->names[i])
@@ -234,7 +258,7 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
         return NULL;
     }
-    *s = (qd_sim){.ctx = ctx, .model = m, .e = e, .n = e->n, .m = e->ncon};
+    *s = (qd_sim){.ctx = ctx, .model = m, .e = e, .n = e->n, .m = e->ncon, .cons = e->con};
     qd_status st = setup_inputs(s);
     if (st == QD_OK)
         st = compile_acc(s);
@@ -266,12 +290,14 @@ void qd_sim_free(qd_sim *s) {
     qd_prog_free(s->force);
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
+    qd_prog_free(s->kin);
+    qd_prog_free(s->udef);
     qd__free(s->in_syms);
     qd__free(s->par);
     qd__free(s->b_expr);
     qd__free(s->force_expr);
     qd__free(s->holonomic);
-    for (size_t i = 0; s->names && i < 3 * s->n + 2 + s->m; i++)
+    for (size_t i = 0; s->names && i < s->nnames; i++)
         qd__free(s->names[i]);
     qd__free(s->names);
     for (size_t i = 0; i < s->nout; i++)
@@ -370,7 +396,7 @@ qd_status qd__aux_compile(qd_sim *s) {
     outs[k++] = s->h_expr;
     outs[k++] = s->T_expr;
     for (size_t c = 0; c < s->m; c++)
-        outs[k++] = s->e->con[c].expr;
+        outs[k++] = s->cons[c].expr;
     for (size_t i = 0; i < s->nout; i++)
         outs[k++] = s->out_expr[i];
     for (size_t i = 0; i < s->nev; i++)
@@ -381,11 +407,14 @@ qd_status qd__aux_compile(qd_sim *s) {
         outs[k++] = s->guard_expr[i];
     if (s->hamilton)
         qd__hamilton_velocities(s, k - 2, outs + 2);
+    if (s->se)
+        qd__speeds_defs(s, k - 2, outs + 2);
     s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
     s->aux_lambda = false;
-    for (size_t i = 2 + s->m; i < k; i++)
+    /* in speeds the multipliers are not inputs: compiling names them */
+    for (size_t i = 2 + s->m; !s->se && i < k; i++)
         for (size_t c = 0; c < s->m; c++)
-            s->aux_lambda = s->aux_lambda || qd_has(outs[i], s->e->con[c].lambda);
+            s->aux_lambda = s->aux_lambda || qd_has(outs[i], s->cons[c].lambda);
     /* outputs and events are needed at rows and event checks only; the
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
@@ -428,6 +457,8 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     ok = prog_ws(ctx, w->aux, w->aux_n, &w->aux_out, &w->aux_w) && ok;
     ok = prog_ws(ctx, w->en, w->en_n, &w->en_out, &w->en_w) && ok;
     ok = prog_ws(ctx, w->imp, w->imp_n, &w->imp_out, &w->imp_w) && ok;
+    ok = prog_ws(ctx, w->kin, w->kin_n, &w->kin_out, &w->kin_w) && ok;
+    ok = prog_ws(ctx, w->udef, w->udef_n, &w->udef_out, &w->udef_w) && ok;
     if (!ok || !w->in || !w->K || !w->pc || !w->con_err)
         return QD_ERR_NOMEM;
     w->rhs = w->K + N * N;
@@ -441,7 +472,8 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
 void qd__sim_ws_free(qd_sim *w) {
     double *bufs[] = {w->in, w->K, w->con_err, w->acc_out, w->acc_w, w->con_out, w->con_w,
                       w->mom_out, w->mom_w, w->force_out, w->force_w, w->aux_out, w->aux_w,
-                      w->en_out, w->en_w, w->imp_out, w->imp_w};
+                      w->en_out, w->en_w, w->imp_out, w->imp_w, w->kin_out, w->kin_w,
+                      w->udef_out, w->udef_w};
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         qd__free(bufs[i]);
     qd__free(w->pc);
@@ -451,8 +483,8 @@ size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names,
     size_t n = s->n, k = 0;
     bool ham = s->hamilton || ((method >= QD_SIM_GL2 && method <= QD_SIM_YOSHIDA8) &&
                                s->canonical);
-    for (size_t i = 0; i < 1 + 3 * n + 1 + s->m; i++) {
-        if (i >= 1 + 2 * n && i < 1 + 3 * n && !ham)
+    for (size_t i = 0; i < s->nnames; i++) {
+        if (!s->se && i >= 1 + 2 * n && i < 1 + 3 * n && !ham)
             continue;
         if (names && k < cap)
             names[k] = s->names[i];
@@ -616,6 +648,8 @@ qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *d
     s->evals++;
     if (form == QD__LAG)
         return lag_rhs(s, t, y, dy);
+    if (form == QD__SPD)
+        return qd__speeds_rhs(s, t, y, dy);
     size_t n = s->n;
     qd_status st = qd__velocity(s, t, y, y + n, dy);
     if (st == QD_OK)

@@ -17,6 +17,7 @@
 #include "../num/num.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -50,6 +51,7 @@ void qd_speeds_eom_free(qd_speeds_eom *e) {
     /* one block holds every array but mult (alloc below) */
     qd__free(e->q);
     qd__free(e->mult);
+    qd__free(e->acc);
     qd__free(e);
 }
 
@@ -206,11 +208,16 @@ static qd_status count_error(qd__spd *d) {
     return QD_ERR_SINGULAR;
 }
 
-/* P, p0, then [W | Wc | w] = P^-1 [I | -p0] and the kinematics. */
+/* The velocities as linear expressions: P q' = (u - b, s - c0) solved
+ * with the speeds u (and, when need_wc, one symbol s_k per constraint) in
+ * the right-hand side, one column: carrying u through the elimination
+ * costs less than the n + 1 columns of P^-1 [I | -p0].  Then W_jr, Wc_jk
+ * and w_j are the coefficients of u_r, s_k and the rest of q'_j, and the
+ * kinematics q'_j at s = 0. */
 static qd_status velocity_map(qd__spd *d) {
     qd_ctx *ctx = d->ctx;
     qd_speeds_eom *e = d->e;
-    size_t n = d->n, m = d->m, w = n + 1;
+    size_t n = d->n, m = d->m, nx = d->need_wc ? n : m;
     if (m + d->nc != n)
         return count_error(d);
     for (size_t r = 0; r < m; r++) {
@@ -223,34 +230,49 @@ static qd_status velocity_map(qd__spd *d) {
             d->P[(m + k) * n + j] = e->con[k].a[j];
         d->p0[m + k] = e->con[k].a0;
     }
-    const qd_expr **B = qd__malloc(ctx, (n * w + 1) * sizeof *B);
-    const qd_expr **X = qd__malloc(ctx, (n * w + 1) * sizeof *X);
-    qd_status st = B && X ? QD_OK : nomem(ctx);
-    for (size_t i = 0; st == QD_OK && i < n; i++) {
-        for (size_t j = 0; j < n; j++)
-            B[i * w + j] = qd_int(ctx, i == j);
-        B[i * w + n] = qd_neg(ctx, d->p0[i]);
+    /* B, X (n each), the unknowns' symbols (nx: u, then s), coefficients (nx) */
+    const qd_expr **B = qd__calloc(ctx, 3 * n + 2 * nx + 1, sizeof *B);
+    if (!B)
+        return nomem(ctx);
+    const qd_expr **X = B + n, **sym = X + n, **c = sym + nx, **zero = c + nx;
+    for (size_t r = 0; r < nx; r++) {
+        char name[48];
+        if (r >= m)
+            snprintf(name, sizeof name, "_hamel_s%zu", r - m);
+        sym[r] = r < m ? e->u[r] : qd_symbol(ctx, name);
     }
-    if (st == QD_OK)
-        st = qd__solve_cols(ctx, n, d->P, w, B, X);
+    for (size_t i = 0; i < n; i++) {
+        B[i] = qd_neg(ctx, d->p0[i]);
+        if (i < nx)
+            B[i] = qd_add(ctx, sym[i], B[i]);
+        zero[i] = qd_int(ctx, 0);
+    }
+    qd_status st = qd__solve_cols(ctx, n, d->P, 1, B, X, 0);
     if (st == QD_ERR_SINGULAR)
         st = singular_map(d);
-    for (size_t i = 0; st == QD_OK && i < n; i++) {
-        for (size_t j = 0; j < n; j++)
-            d->Pinv[i * n + j] = X[i * w + j];
-        for (size_t r = 0; r < m; r++)
-            e->W[i * m + r] = X[i * w + r];
-        e->w[i] = X[i * w + n];
-    }
-    qd__free(B);
-    qd__free(X);
     for (size_t j = 0; st == QD_OK && j < n; j++) {
-        const qd_expr *x = e->w[j];
-        for (size_t r = 0; r < m; r++)
-            x = qd_add(ctx, x, qd_mul(ctx, e->W[j * m + r], e->u[r]));
-        if (!(e->kin[j] = qd__spd_tidy(d, x)))
+        const qd_expr *rest = NULL;
+        st = qd_linear_coeffs(ctx, X[j], nx, sym, c, &rest);
+        for (size_t r = 0; st == QD_OK && r < nx; r++) {
+            const qd_expr *x = qd_simplify(ctx, c[r]);
+            if (!x)
+                st = nomem(ctx);
+            else if (r < m)
+                e->W[j * m + r] = x;
+            else
+                d->Pinv[j * n + r] = x;
+        }
+        if (st == QD_OK && !(e->w[j] = qd_simplify(ctx, rest)))
+            st = nomem(ctx);
+        const qd_expr *kin = st == QD_OK && nx > m ? qd_subs(ctx, X[j], nx - m, sym + m, zero)
+                                                   : X[j];
+        if (st == QD_OK && !(e->kin[j] = qd__spd_tidy(d, kin)))
             st = nomem(ctx);
     }
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        for (size_t r = 0; r < m; r++)
+            d->Pinv[j * n + r] = e->W[j * m + r];
+    qd__free(B);
     return st;
 }
 
@@ -367,12 +389,49 @@ static qd_status check_model(qd_ctx *ctx, const qd_model *m) {
     return QD_OK;
 }
 
-/* The kinetic energy in speeds, T*(q, u, t). */
+static bool all_zero(size_t n, const qd_expr *const *x) {
+    for (size_t i = 0; i < n; i++)
+        if (!qd_is_zero(x[i]))
+            return false;
+    return true;
+}
+
+/* Is T* = 1/2 u.M_u u?  When T is T2 alone, q' = W u (w = 0) and M is
+ * T2's Hessian (L = T - V: no U, no acceleration in a force). */
+static bool homogeneous(const qd__spd *d) {
+    const qd_eom *sh = d->shell;
+    if (d->sys.U || !all_zero(d->n, d->e->w) || (sh->T1 && !qd_is_zero(sh->T1)) ||
+        (sh->T0 && !qd_is_zero(sh->T0)))
+        return false;
+    for (size_t j = 0; j < d->n; j++)
+        for (size_t k = 0; d->sys.Q[j] && k < d->n; k++)
+            if (qd_has(d->sys.Q[j], sh->qdd[k]))
+                return false;
+    return true;
+}
+
+/* The kinetic energy in speeds, T*(q, u, t): from M_u, simplified already,
+ * when it is homogeneous; else T with the kinematics, simplified. */
 static qd_status kinetic(qd__spd *d) {
+    qd_ctx *ctx = d->ctx;
+    qd_speeds_eom *e = d->e;
+    size_t m = d->m;
     if (!d->sys.T || d->sys.L_given)
         return QD_OK;
-    d->e->T = qd__spd_tidy(d, qd__spd_on_motion(d, d->sys.T));
-    return d->e->T ? QD_OK : nomem(d->ctx);
+    if (!homogeneous(d)) {
+        e->T = qd__spd_tidy(d, qd__spd_on_motion(d, d->sys.T));
+        return e->T ? QD_OK : nomem(ctx);
+    }
+    const qd_expr *T = qd_int(ctx, 0), *half = qd_rat(ctx, 1, 2);
+    for (size_t r = 0; r < m; r++)
+        for (size_t s = r; s < m; s++) {
+            const qd_expr *c = e->M[r * m + s];
+            if (!qd_is_zero(c))
+                T = qd_add(ctx, T, qd_mul(ctx, r == s ? qd_mul(ctx, half, c) : c,
+                                          qd_mul(ctx, e->u[r], e->u[s])));
+        }
+    e->T = T;
+    return T ? QD_OK : nomem(ctx);
 }
 
 /* M_u must be invertible somewhere: a numeric look at two states. */
@@ -464,10 +523,9 @@ static qd_status setup(qd__spd *d, const qd_speeds_opts *opts) {
 
 static qd_status run(qd__spd *d, const qd_speeds_opts *opts) {
     qd_status st = setup(d, opts);
+    d->need_wc = d->e && (d->e->method == QD_SPEEDS_HAMEL || (opts && opts->multipliers));
     if (st == QD_OK)
         st = velocity_map(d);
-    if (st == QD_OK)
-        st = kinetic(d);
     if (st == QD_OK)
         st = accelerations(d);
     if (st != QD_OK)
@@ -477,6 +535,8 @@ static qd_status run(qd__spd *d, const qd_speeds_opts *opts) {
     case QD_SPEEDS_HAMEL: st = qd__spd_hamel(d); break;
     default: st = qd__spd_kane(d); break;
     }
+    if (st == QD_OK)
+        st = kinetic(d);
     if (st == QD_OK && opts && opts->appell && !d->e->S)
         st = qd__spd_appell(d, false);
     if (st == QD_OK && opts && opts->multipliers && d->nc)
@@ -511,4 +571,26 @@ qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_
         return NULL;
     }
     return d.e;
+}
+
+qd_status qd_speeds_solve(qd_ctx *ctx, qd_speeds_eom *e, size_t max_ops) {
+    if (!ctx || !e)
+        return QD_ERR_ARG;
+    size_t m = e->m;
+    const qd_expr **acc = qd__calloc(ctx, m + 1, sizeof *acc);
+    if (!acc)
+        return nomem(ctx);
+    qd_status st = qd__solve_cols(ctx, m, e->M, 1, e->f, acc, max_ops);
+    if (st != QD_OK) {
+        qd__free(acc);
+        if (qd_ctx_status(ctx) == QD_OK && st == QD_ERR_TOOBIG)
+            qd_ctx_error(ctx, st, "the explicit rates of the speeds exceed %zu operations; keep "
+                                  "M_u u' = f_u", max_ops);
+        else if (qd_ctx_status(ctx) == QD_OK && st == QD_ERR_SINGULAR)
+            qd_ctx_error(ctx, st, "the mass matrix of the speeds is singular for every state");
+        return st;
+    }
+    qd__free(e->acc);
+    e->acc = acc;
+    return QD_OK;
 }

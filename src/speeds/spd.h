@@ -29,7 +29,8 @@ typedef struct qd__spd {
     size_t n, m, nc;
     const qd_expr **P;     /* n*n: the speeds' rows A, then the constraints' rows C */
     const qd_expr **p0;    /* n: b, then c0 */
-    const qd_expr **Pinv;  /* n*n: [W | Wc] */
+    const qd_expr **Pinv;  /* n*n: [W | Wc]; the Wc columns only when need_wc */
+    bool need_wc;          /* Hamel and the multipliers use the constraints' columns */
     const qd_expr **acc;   /* n: q'' in q, u, u', t */
 } qd__spd;
 

@@ -166,7 +166,8 @@ static void unknown_statement_hint(void **state) {
     assert_int_equal(d.length, 10);
     static const char *const words[] = {"coordinates", "parameters", "functions", "particle",
                                         "force", "initial", "constraint", "body", "torque",
-                                        "rolls", "reaction", "momenta", "symmetry", "integral"};
+                                        "rolls", "reaction", "momenta", "symmetry", "integral",
+                                        "impulse", "impact", "prescribe", "speeds"};
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
         if (!strstr(d.hint, words[i]))
             fail_msg("the hint leaves out %s: %s", words[i], d.hint);

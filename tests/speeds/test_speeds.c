@@ -71,9 +71,9 @@ static void check_vs_lagrange(qd_ctx *ctx, const qd_model *m, const qd_speeds_eo
         }
         put(&s, qd_time(ctx), 0.4 + 0.3 * trial);
         for (size_t j = 0; j < se->n; j++)
-            put(&s, se->q[j], 0.45 + 0.7 * rand() / (double)RAND_MAX);
+            put(&s, se->q[j], 0.45 + 0.7 * (rand() / (double)RAND_MAX));
         for (size_t r = 0; r < se->m; r++)
-            put(&s, se->u[r], -1 + 2 * rand() / (double)RAND_MAX);
+            put(&s, se->u[r], -1 + 2 * (rand() / (double)RAND_MAX));
         double qd[16], ud[16], lam[16], qdd[16], lam_e[16];
         assert_int_equal(qd_speeds_eval(ctx, se, s.ns, s.syms, s.vals, qd, ud,
                                         se->mult ? lam : NULL), QD_OK);
@@ -155,6 +155,16 @@ static void test_euler_equations(void **state) {
         qt_assert_is(ctx, e->S,
                      "(A*w1'^2 + B*w2'^2 + C*w3'^2)/2 + w1'*(C - B)*w2*w3 + w2'*(A - C)*w3*w1"
                      " + w3'*(B - A)*w1*w2");
+        /* solved: w1' = (B - C) w2 w3 / A, ... */
+        assert_int_equal(qd_speeds_solve(ctx, e, 2000), QD_OK);
+        for (int r = 0; r < 3; r++) {
+            char want[64];
+            snprintf(want, sizeof want, "(%s)/%s", f[r], M[4 * r]);
+            qt_assert_is(ctx, e->acc[r], want);
+        }
+        /* too small a limit keeps M and f */
+        assert_int_equal(qd_speeds_solve(ctx, e, 2), QD_ERR_TOOBIG);
+        qd_ctx_clear_error(ctx);
         /* the inverse of C13's map: theta' = w1 cos(psi) - w2 sin(psi) */
         qt_assert_is(ctx, e->kin[1], "w1*cos(psi) - w2*sin(psi)");
         check_kinematics(ctx, e);

@@ -1,0 +1,610 @@
+/*
+ * cli/speeds_out.c - the five renderings of the equations in generalized
+ * speeds: q' = W u + w (the kinematics), M_u u' = f_u, and with --appell
+ * and --multipliers S and lambda (qdot/speeds.h).
+ *
+ * The same habits as eom_out.c: text for reading, LaTeX as one align
+ * environment, JSON with expressions as strings in the model language, a
+ * SymPy script that runs as it is, one C block sharing subexpressions.  The
+ * speeds are functions of t like the coordinates, so u' prints as w1' (text),
+ * \dot{w}_{1} (LaTeX), w1(t).diff(t) (SymPy) and w1_d (C).  With --at the
+ * text and JSON carry numbers instead: q', u' and the multipliers.
+ */
+#include "speeds_out.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+#include "json.h"
+#include "model_cli.h"
+
+static const char *qname(const cli_speeds_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
+static const char *uname(const cli_speeds_view *v, size_t r) { return qd_expr_name(v->e->u[r]); }
+
+static bool is_speed(const cli_speeds_view *v, const char *name) {
+    for (size_t r = 0; r < v->e->m; r++)
+        if (!strcmp(name, uname(v, r)))
+            return true;
+    return false;
+}
+
+/* The name of an output of the SymPy and C renderings: cli_script_name's,
+ * which knows the coordinates, parameters and functions, also kept clear of
+ * the speeds (a speed called u must not be overwritten by the vector). */
+static cli_name pick(const cli_speeds_view *v, const char *base) {
+    cli_name n = cli_script_name(v->mf->model, base);
+    size_t len;
+    while (is_speed(v, n.s) && (len = strlen(n.s)) + 2 <= sizeof n.s) {
+        cli_name longer = n;
+        longer.s[len] = '_';
+        longer.s[len + 1] = '\0';
+        n = cli_script_name(v->mf->model, longer.s);
+    }
+    return n;
+}
+
+/* ---- text ------------------------------------------------------------------ */
+
+static void text_names(qd_buf *b, const char *what, const qd_expr *const *x, size_t n) {
+    qd_buf_printf(b, "%s:", what);
+    for (size_t i = 0; i < n; i++)
+        qd_buf_printf(b, "%s %s", i ? "," : "", qd_expr_name(x[i]));
+    qd_buf_puts(b, n ? "\n" : " none\n");
+}
+
+static void text_header(const cli_speeds_view *v, qd_buf *b) {
+    const qd_model *m = v->mf->model;
+    qd_buf_printf(b, "model: %s\n", v->mf->path);
+    text_names(b, "coordinates", v->e->q, v->e->n);
+    text_names(b, "speeds", v->e->u, v->e->m);
+    qd_buf_puts(b, "parameters:");
+    for (size_t i = 0; i < qd_model_nparams(m); i++) {
+        qd_buf_printf(b, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
+        cli_state_put_double(b, cli_param_value(m, i));
+    }
+    qd_buf_printf(b, "%s\nmethod: %s\n", qd_model_nparams(m) ? "" : " none",
+                  qd_speeds_method_name(v->e->method));
+}
+
+/* "  NAME = EXPR\n" */
+static qd_status text_line(const cli_speeds_view *v, qd_buf *b, const char *name,
+                           const qd_expr *x) {
+    qd_buf_printf(b, "  %s = ", name);
+    qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, b);
+    qd_buf_puts(b, "\n");
+    return st;
+}
+
+static qd_status text_kinematics(const cli_speeds_view *v, qd_buf *b) {
+    qd_status st = QD_OK;
+    char lhs[160];
+    qd_buf_puts(b, "\nkinematics q' = W u + w:\n");
+    for (size_t j = 0; j < v->e->n && st == QD_OK; j++) {
+        snprintf(lhs, sizeof lhs, "%s'", qname(v, j));
+        st = text_line(v, b, lhs, v->e->kin[j]);
+    }
+    if (!v->e->ncon)
+        return st;
+    qd_buf_puts(b, "\nconstraints (the kinematics satisfy them for every u: no multiplier "
+                   "enters):\n");
+    for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
+        const qd_con *c = &v->e->con[k];
+        qd_buf_printf(b, "  %s (%s): ", c->name, cli_eom_con_kind_name(c->kind));
+        st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, b);
+        qd_buf_puts(b, " = 0\n");
+    }
+    return st;
+}
+
+static qd_status text_dynamics(const cli_speeds_view *v, qd_buf *b) {
+    size_t m = v->e->m;
+    qd_status st = QD_OK;
+    char lhs[300];
+    qd_buf_puts(b, "\nequations M u' = f in the speeds (M is symmetric: entries with r <= s):\n");
+    for (size_t r = 0; r < m; r++)
+        for (size_t s = r; s < m && st == QD_OK; s++) {
+            snprintf(lhs, sizeof lhs, "M[%s,%s]", uname(v, r), uname(v, s));
+            st = text_line(v, b, lhs, v->e->M[r * m + s]);
+        }
+    for (size_t r = 0; r < m && st == QD_OK; r++) {
+        snprintf(lhs, sizeof lhs, "f[%s]", uname(v, r));
+        st = text_line(v, b, lhs, v->e->f[r]);
+    }
+    return st;
+}
+
+/* ---- numbers at a state (--at) ------------------------------------------------ */
+
+/* The k-th value shown of the state (k < n + m + 1): the coordinates, the
+ * speeds, then t; the velocity slots are not used, the parameters are in
+ * the header. */
+static size_t state_slot(const cli_speeds_view *v, size_t k) {
+    size_t nq = v->e->n, m = v->e->m, first_speed = v->st->n - m;
+    return k < nq ? k : k < nq + m ? first_speed + (k - nq) : 2 * nq;
+}
+
+static void text_state(const cli_speeds_view *v, qd_buf *b) {
+    qd_buf_puts(b, "at:");
+    for (size_t k = 0; k < v->e->n + v->e->m + 1; k++) {
+        size_t i = state_slot(v, k);
+        qd_buf_printf(b, "%s%s = ", k ? ", " : " ", qd_expr_name(v->st->syms[i]));
+        cli_state_put_double(b, v->st->vals[i]);
+    }
+    qd_buf_puts(b, "\n");
+}
+
+static void text_number(qd_buf *b, const char *name, const char *suffix, double x) {
+    qd_buf_printf(b, "  %s%s = ", name, suffix);
+    cli_state_put_double(b, x);
+    qd_buf_puts(b, "\n");
+}
+
+static qd_status write_text_at(const cli_speeds_view *v, qd_buf *b) {
+    text_state(v, b);
+    qd_buf_puts(b, "\nvelocities q' = W u + w:\n");
+    for (size_t j = 0; j < v->e->n; j++)
+        text_number(b, qname(v, j), "'", v->qd[j]);
+    qd_buf_puts(b, "\nthe speeds' rates, M u' = f solved:\n");
+    for (size_t r = 0; r < v->e->m; r++)
+        text_number(b, uname(v, r), "'", v->ud[r]);
+    if (v->multipliers && !v->e->ncon)
+        qd_buf_puts(b, "\nmultipliers: none (the model has no constraints)\n");
+    if (v->lambda && v->e->ncon) {
+        qd_buf_puts(b, "\nmultipliers:\n");
+        for (size_t k = 0; k < v->e->ncon; k++)
+            text_number(b, qd_expr_name(v->e->con[k].lambda), "", v->lambda[k]);
+    }
+    return QD_OK;
+}
+
+static qd_status write_text(const cli_speeds_view *v, qd_buf *b) {
+    text_header(v, b);
+    if (v->st)
+        return write_text_at(v, b);
+    qd_status st = text_kinematics(v, b);
+    if (st == QD_OK)
+        st = text_dynamics(v, b);
+    if (st == QD_OK && v->e->acc) {
+        qd_buf_puts(b, "\nthe speeds' rates, u' = M^-1 f:\n");
+        for (size_t r = 0; r < v->e->m && st == QD_OK; r++) {
+            char lhs[160];
+            snprintf(lhs, sizeof lhs, "%s'", uname(v, r));
+            st = text_line(v, b, lhs, v->e->acc[r]);
+        }
+    }
+    if (st == QD_OK && v->e->S) {
+        qd_buf_puts(b, "\nGibbs-Appell function (the acceleration energy, terms free of u' "
+                       "dropped):\n");
+        st = text_line(v, b, "S", v->e->S);
+    }
+    if (st == QD_OK && v->multipliers && !v->e->ncon)
+        qd_buf_puts(b, "\nmultipliers: none (the model has no constraints)\n");
+    if (st == QD_OK && v->e->mult && v->e->ncon) {
+        qd_buf_puts(b, "\nmultipliers (as in M q'' = f + A^T lambda, in q, u, u' and t):\n");
+        for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++)
+            st = text_line(v, b, qd_expr_name(v->e->con[k].lambda), v->e->mult[k]);
+    }
+    return st;
+}
+
+/* ---- LaTeX ----------------------------------------------------------------- */
+
+static qd_status latex_line(const cli_speeds_view *v, qd_buf *b, bool *first, const qd_expr *lhs,
+                            const qd_expr *rhs) {
+    qd_buf_puts(b, *first ? "  " : " \\\\\n  ");
+    *first = false;
+    qd_status st = qd_print(v->ctx, lhs, QD_FMT_LATEX, b);
+    qd_buf_puts(b, " &= ");
+    return st == QD_OK ? qd_print(v->ctx, rhs, QD_FMT_LATEX, b) : st;
+}
+
+/* sum_s M_rs u'_s. */
+static const qd_expr *latex_row(const cli_speeds_view *v, size_t r) {
+    size_t m = v->e->m;
+    const qd_expr *sum = qd_int(v->ctx, 0);
+    for (size_t s = 0; s < m; s++)
+        sum = qd_add(v->ctx, sum, qd_mul(v->ctx, v->e->M[r * m + s], v->e->ud[s]));
+    return sum;
+}
+
+static qd_status write_latex(const cli_speeds_view *v, qd_buf *b) {
+    const qd_speeds_eom *e = v->e;
+    bool first = true;
+    qd_status st = QD_OK;
+    qd_buf_puts(b, "\\begin{align}\n");
+    for (size_t j = 0; j < e->n && st == QD_OK; j++)
+        st = latex_line(v, b, &first, e->qd[j], e->kin[j]);
+    for (size_t r = 0; r < e->m && st == QD_OK; r++) {
+        const qd_expr *row = latex_row(v, r);
+        st = row ? latex_line(v, b, &first, row, e->f[r]) : qd_ctx_status(v->ctx);
+    }
+    for (size_t r = 0; e->acc && r < e->m && st == QD_OK; r++)
+        st = latex_line(v, b, &first, e->ud[r], e->acc[r]);
+    if (st == QD_OK && e->S) {
+        const qd_expr *S = qd_symbol(v->ctx, "S");
+        st = S ? latex_line(v, b, &first, S, e->S) : qd_ctx_status(v->ctx);
+    }
+    for (size_t k = 0; e->mult && k < e->ncon && st == QD_OK; k++)
+        st = latex_line(v, b, &first, e->con[k].lambda, e->mult[k]);
+    qd_buf_puts(b, "\n\\end{align}\n");
+    return st;
+}
+
+/* ---- JSON ------------------------------------------------------------------ */
+
+static qd_status json_expr(const cli_speeds_view *v, cli_json *j, const qd_expr *x, qd_buf *tmp) {
+    qd_buf_clear(tmp);
+    qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
+    cli_json_string(j, qd_buf_str(tmp));
+    return st;
+}
+
+static void json_names(cli_json *j, const char *key, const qd_expr *const *x, size_t n) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        cli_json_string(j, qd_expr_name(x[i]));
+    cli_json_end_array(j);
+}
+
+static void json_header(const cli_speeds_view *v, cli_json *j) {
+    const qd_model *m = v->mf->model;
+    cli_json_key(j, "model");
+    cli_json_string(j, v->mf->path);
+    json_names(j, "coordinates", v->e->q, v->e->n);
+    json_names(j, "speeds", v->e->u, v->e->m);
+    cli_json_key(j, "parameters");
+    cli_json_begin_object(j);
+    for (size_t i = 0; i < qd_model_nparams(m); i++) {
+        cli_json_key(j, qd_expr_name(qd_model_param(m, i)));
+        cli_json_number(j, cli_param_value(m, i));
+    }
+    cli_json_end_object(j);
+    cli_json_key(j, "method");
+    cli_json_string(j, qd_speeds_method_name(v->e->method));
+}
+
+/* "kinematics": [{"coordinate": "phi", "expression": "..."}, ...] */
+static qd_status json_kinematics(const cli_speeds_view *v, cli_json *j, qd_buf *tmp) {
+    qd_status st = QD_OK;
+    cli_json_key(j, "kinematics");
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < v->e->n && st == QD_OK; i++) {
+        cli_json_begin_object(j);
+        cli_json_key(j, "coordinate");
+        cli_json_string(j, qname(v, i));
+        cli_json_key(j, "expression");
+        st = json_expr(v, j, v->e->kin[i], tmp);
+        cli_json_end_object(j);
+    }
+    cli_json_end_array(j);
+    return st;
+}
+
+static qd_status json_dynamics(const cli_speeds_view *v, cli_json *j, qd_buf *tmp) {
+    size_t m = v->e->m;
+    qd_status st = QD_OK;
+    cli_json_key(j, "mass_matrix");
+    cli_json_begin_array(j);
+    for (size_t r = 0; r < m && st == QD_OK; r++) {
+        cli_json_begin_array(j);
+        for (size_t s = 0; s < m && st == QD_OK; s++)
+            st = json_expr(v, j, v->e->M[r * m + s], tmp);
+        cli_json_end_array(j);
+    }
+    cli_json_end_array(j);
+    cli_json_key(j, "forcing");
+    cli_json_begin_array(j);
+    for (size_t r = 0; r < m && st == QD_OK; r++)
+        st = json_expr(v, j, v->e->f[r], tmp);
+    cli_json_end_array(j);
+    if (v->e->acc) {
+        cli_json_key(j, "rates");
+        cli_json_begin_array(j);
+        for (size_t r = 0; r < m && st == QD_OK; r++)
+            st = json_expr(v, j, v->e->acc[r], tmp);
+        cli_json_end_array(j);
+    }
+    return st;
+}
+
+/* "constraints" (name, kind, expression, multiplier) and, when computed,
+ * "multipliers" by constraint name, as for the coordinates' output. */
+static qd_status json_constraints(const cli_speeds_view *v, cli_json *j, qd_buf *tmp) {
+    qd_status st = QD_OK;
+    cli_json_key(j, "constraints");
+    cli_json_begin_array(j);
+    for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
+        const qd_con *c = &v->e->con[k];
+        cli_json_begin_object(j);
+        cli_json_key(j, "name");
+        cli_json_string(j, c->name);
+        cli_json_key(j, "kind");
+        cli_json_string(j, cli_eom_con_kind_name(c->kind));
+        cli_json_key(j, "expression");
+        st = json_expr(v, j, c->expr, tmp);
+        cli_json_key(j, "multiplier");
+        cli_json_string(j, qd_expr_name(c->lambda));
+        cli_json_end_object(j);
+    }
+    cli_json_end_array(j);
+    if (!v->e->mult)
+        return st;
+    cli_json_key(j, "multipliers");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
+        cli_json_key(j, v->e->con[k].name);
+        st = json_expr(v, j, v->e->mult[k], tmp);
+    }
+    cli_json_end_object(j);
+    return st;
+}
+
+static void json_numbers(cli_json *j, const char *key, const double *x, size_t n) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        cli_json_number(j, x[i]);
+    cli_json_end_array(j);
+}
+
+/* --at: "state" (coordinates, speeds, t by name), "velocities" (in the
+ * order of "coordinates"), "rates" (of "speeds") and "multipliers". */
+static void json_at(const cli_speeds_view *v, cli_json *j) {
+    cli_json_key(j, "state");
+    cli_json_begin_object(j);
+    for (size_t k = 0; k < v->e->n + v->e->m + 1; k++) {
+        size_t i = state_slot(v, k);
+        cli_json_key(j, qd_expr_name(v->st->syms[i]));
+        cli_json_number(j, v->st->vals[i]);
+    }
+    cli_json_end_object(j);
+    json_numbers(j, "velocities", v->qd, v->e->n);
+    json_numbers(j, "rates", v->ud, v->e->m);
+    if (!v->lambda && !v->multipliers)
+        return;
+    cli_json_key(j, "multipliers");
+    cli_json_begin_object(j);
+    for (size_t k = 0; v->lambda && k < v->e->ncon; k++) {
+        cli_json_key(j, v->e->con[k].name);
+        cli_json_number(j, v->lambda[k]);
+    }
+    cli_json_end_object(j);
+}
+
+static qd_status write_json(const cli_speeds_view *v, qd_buf *b) {
+    qd_buf tmp = QD_BUF_INIT;
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    json_header(v, &j);
+    if (v->st) {
+        json_at(v, &j);
+        cli_json_end_object(&j);
+        qd_buf_puts(b, "\n");
+        return cli_json_ok(&j) ? QD_OK : b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+    }
+    qd_status st = json_kinematics(v, &j, &tmp);
+    if (st == QD_OK && v->e->T) {
+        cli_json_key(&j, "T");
+        st = json_expr(v, &j, v->e->T, &tmp);
+    }
+    if (st == QD_OK)
+        st = json_dynamics(v, &j, &tmp);
+    if (st == QD_OK && v->e->S) {
+        cli_json_key(&j, "S");
+        st = json_expr(v, &j, v->e->S, &tmp);
+    }
+    if (st == QD_OK && v->e->ncon)
+        st = json_constraints(v, &j, &tmp);
+    if (v->multipliers && !v->e->ncon) {
+        cli_json_key(&j, "multipliers");
+        cli_json_begin_object(&j);
+        cli_json_end_object(&j);
+    }
+    cli_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+    qd_buf_free(&tmp);
+    if (st == QD_OK && !cli_json_ok(&j))
+        st = b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+    return st;
+}
+
+/* ---- SymPy ----------------------------------------------------------------- */
+
+static qd_status sympy_assign(const cli_speeds_view *v, qd_buf *b, const char *name,
+                              const qd_expr *const *x, size_t rows, size_t cols) {
+    qd_status st = QD_OK;
+    qd_buf_printf(b, "%s = Matrix([", name);
+    for (size_t r = 0; r < rows && st == QD_OK; r++) {
+        qd_buf_puts(b, cols > 1 ? "\n    [" : (r ? ", " : ""));
+        for (size_t k = 0; k < cols && st == QD_OK; k++) {
+            qd_buf_puts(b, k ? ", " : "");
+            st = qd_print(v->ctx, x[r * cols + k], QD_FMT_SYMPY, b);
+        }
+        qd_buf_puts(b, cols > 1 ? "]," : "");
+    }
+    qd_buf_puts(b, cols > 1 ? "\n])\n" : "])\n");
+    return st;
+}
+
+static qd_status sympy_scalar(const cli_speeds_view *v, qd_buf *b, const char *name,
+                              const qd_expr *x) {
+    qd_buf_printf(b, "%s = ", name);
+    qd_status st = qd_print(v->ctx, x, QD_FMT_SYMPY, b);
+    qd_buf_puts(b, "\n");
+    return st;
+}
+
+/* W = Function('W') for the user functions in everything printed below. */
+static qd_status sympy_functions(const cli_speeds_view *v, qd_buf *b) {
+    const qd_speeds_eom *e = v->e;
+    size_t n = e->n, m = e->m, c = e->mult ? e->ncon : 0, k = 0;
+    const qd_expr **all = malloc((n + m * m + m + 2 + c) * sizeof *all);
+    if (!all)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < n; i++)
+        all[k++] = e->kin[i];
+    for (size_t i = 0; i < m * m; i++)
+        all[k++] = e->M[i];
+    for (size_t i = 0; i < m; i++)
+        all[k++] = e->f[i];
+    if (e->T)
+        all[k++] = e->T;
+    if (e->S)
+        all[k++] = e->S;
+    for (size_t i = 0; i < c; i++)
+        all[k++] = e->mult[i];
+    qd_status st = qd_print_sympy_functions(v->ctx, k, all, b);
+    free(all);
+    return st;
+}
+
+static qd_status sympy_multipliers(const cli_speeds_view *v, qd_buf *b) {
+    cli_name lam = pick(v, "lam");
+    qd_buf_printf(b, "%s = Matrix([", lam.s);
+    for (size_t k = 0; k < v->e->ncon; k++)
+        qd_buf_printf(b, "%sSymbol('%s')", k ? ", " : "", qd_expr_name(v->e->con[k].lambda));
+    qd_buf_puts(b, "])\n");
+    return sympy_assign(v, b, pick(v, "lam_value").s, v->e->mult, v->e->ncon, 1);
+}
+
+static qd_status write_sympy(const cli_speeds_view *v, qd_buf *b) {
+    const qd_model *mdl = v->mf->model;
+    const qd_speeds_eom *e = v->e;
+    cli_name M = pick(v, "M"), f = pick(v, "f"), q = pick(v, "q"), u = pick(v, "u");
+    cli_name kin = pick(v, "kin");
+    qd_buf_printf(b, "# qdot eom %s (speeds, %s): %s.diff(t) = %s and %s*%s.diff(t) = %s\n"
+                  "from sympy import *\n\nt = Symbol('t')\n", v->mf->path,
+                  qd_speeds_method_name(e->method), q.s, kin.s, M.s, u.s, f.s);
+    for (size_t j = 0; j < e->n; j++)
+        cli_eom_sympy_bind(v->ctx, b, e->q[j], true);
+    for (size_t r = 0; r < e->m; r++)
+        cli_eom_sympy_bind(v->ctx, b, e->u[r], true);
+    for (size_t i = 0; i < qd_model_nparams(mdl); i++)
+        cli_eom_sympy_bind(v->ctx, b, qd_model_param(mdl, i), false);
+    qd_status st = sympy_functions(v, b);
+    qd_buf_puts(b, "\n");
+    if (st == QD_OK)
+        st = sympy_assign(v, b, q.s, e->q, e->n, 1);
+    if (st == QD_OK)
+        st = sympy_assign(v, b, u.s, e->u, e->m, 1);
+    if (st == QD_OK)
+        st = sympy_assign(v, b, kin.s, e->kin, e->n, 1);
+    if (st == QD_OK && e->T)
+        st = sympy_scalar(v, b, pick(v, "T").s, e->T);
+    if (st == QD_OK)
+        st = sympy_assign(v, b, M.s, e->M, e->m, e->m);
+    if (st == QD_OK)
+        st = sympy_assign(v, b, f.s, e->f, e->m, 1);
+    if (st == QD_OK && e->acc)
+        st = sympy_assign(v, b, pick(v, "ud").s, e->acc, e->m, 1);
+    if (st == QD_OK && e->S)
+        st = sympy_scalar(v, b, pick(v, "S").s, e->S);
+    if (st == QD_OK && e->mult)
+        st = sympy_multipliers(v, b);
+    return st;
+}
+
+/* ---- C --------------------------------------------------------------------- */
+
+/* The doubles the block reads: q, u, u' (when S or lambda need them), t and
+ * the parameters. */
+static void c_inputs(const cli_speeds_view *v, qd_buf *b) {
+    const qd_model *mdl = v->mf->model;
+    const qd_speeds_eom *e = v->e;
+    qd_buf_puts(b, "/* inputs (doubles in scope):");
+    for (size_t j = 0; j < e->n; j++) {
+        qd_buf_puts(b, " ");
+        qd_c_name(e->q[j], b);
+    }
+    for (size_t r = 0; r < e->m; r++) {
+        qd_buf_puts(b, " ");
+        qd_c_name(e->u[r], b);
+    }
+    for (size_t r = 0; (e->S || e->mult) && r < e->m; r++) {
+        qd_buf_puts(b, " ");
+        qd_c_name(e->ud[r], b);
+    }
+    qd_buf_puts(b, " t");
+    for (size_t i = 0; i < qd_model_nparams(mdl); i++) {
+        qd_buf_puts(b, " ");
+        qd_c_name(qd_model_param(mdl, i), b);
+    }
+    qd_buf_puts(b, " */\n");
+}
+
+typedef struct c_outs {
+    size_t n;
+    const qd_expr **x;
+    char (*names)[96];
+    const char **lhs;
+} c_outs;
+
+static void c_add(c_outs *o, const qd_expr *x, const char *base, long i, long j) {
+    if (j >= 0)
+        snprintf(o->names[o->n], sizeof o->names[0], "%s[%ld][%ld]", base, i, j);
+    else if (i >= 0)
+        snprintf(o->names[o->n], sizeof o->names[0], "%s[%ld]", base, i);
+    else
+        snprintf(o->names[o->n], sizeof o->names[0], "%s", base);
+    o->x[o->n] = x;
+    o->lhs[o->n] = o->names[o->n];
+    o->n++;
+}
+
+static void c_fill(const cli_speeds_view *v, c_outs *o) {
+    const qd_speeds_eom *e = v->e;
+    long n = (long)e->n, m = (long)e->m;
+    cli_name qd = pick(v, "qd"), M = pick(v, "M"), f = pick(v, "f");
+    for (long j = 0; j < n; j++)
+        c_add(o, e->kin[j], qd.s, j, -1);
+    for (long i = 0; i < m * m; i++)
+        c_add(o, e->M[i], M.s, i / m, i % m);
+    for (long r = 0; r < m; r++)
+        c_add(o, e->f[r], f.s, r, -1);
+    for (long r = 0; e->acc && r < m; r++)
+        c_add(o, e->acc[r], pick(v, "ud").s, r, -1);
+    if (e->S)
+        c_add(o, e->S, pick(v, "S").s, -1, -1);
+    for (long k = 0; e->mult && k < (long)e->ncon; k++)
+        c_add(o, e->mult[k], pick(v, "lambda").s, k, -1);
+}
+
+static qd_status write_c(const cli_speeds_view *v, qd_buf *b) {
+    const qd_speeds_eom *e = v->e;
+    size_t nout = e->n + e->m * e->m + 2 * e->m + 1 + e->ncon;
+    c_outs o = {0, malloc(nout * sizeof *o.x), malloc(nout * sizeof *o.names),
+                malloc(nout * sizeof *o.lhs)};
+    qd_status st = QD_ERR_NOMEM;
+    if (o.x && o.names && o.lhs) {
+        c_fill(v, &o);
+        qd_buf_printf(b, "/* qdot eom %s (speeds, %s): q' = %s, %s u' = %s", v->mf->path,
+                      qd_speeds_method_name(e->method), pick(v, "qd").s, pick(v, "M").s,
+                      pick(v, "f").s);
+        if (e->acc)
+            qd_buf_printf(b, ", the rates that solve them %s", pick(v, "ud").s);
+        if (e->S)
+            qd_buf_printf(b, ", the Gibbs-Appell function %s", pick(v, "S").s);
+        if (e->mult)
+            qd_buf_printf(b, ", the multipliers %s", pick(v, "lambda").s);
+        qd_buf_puts(b, " */\n");
+        c_inputs(v, b);
+        st = qd_print_c_block(v->ctx, o.n, o.x, o.lhs, b);
+    }
+    free(o.x);
+    free(o.names);
+    free(o.lhs);
+    return st;
+}
+
+qd_status cli_speeds_write(const cli_speeds_view *v, cli_eom_format fmt, qd_buf *out) {
+    switch (fmt) {
+    case QD_EOM_LATEX: return write_latex(v, out);
+    case QD_EOM_JSON: return write_json(v, out);
+    case QD_EOM_SYMPY: return write_sympy(v, out);
+    case QD_EOM_C: return write_c(v, out);
+    case QD_EOM_TEXT: break;
+    }
+    return write_text(v, out);
+}

@@ -1,0 +1,195 @@
+/*
+ * src/sim/speeds.c - a model's equations in generalized speeds (qdot/speeds.h)
+ * compiled into a first-order system, y = (q, u):
+ *
+ *     q' = W(q, t) u + w(q, t)   (the kinematics),
+ *     M_u(q, t) u' = f_u(q, u, t),
+ *
+ * the third form beside (q, q') and (q, p) (system.c, hamilton.c).  The
+ * constraints are eliminated (Desloge ch. 69 C12; Kane and Levinson 1985,
+ * ch. 6): q' from the kinematics satisfies every Pfaffian row C q' + c0 = 0
+ * for every u, so the motion keeps them to round-off with no projection and
+ * no multiplier; a holonomic phi(q, t) = 0 is kept only in its velocity form
+ * and the positions are projected back onto it (project.c; u stays, and
+ * q' = kin(q, u) stays on the velocity constraints).
+ *
+ * The programs take the inputs of system.c with the speeds in the block
+ * where the multipliers stand there: (q, q', t, parameters, u).  Outputs,
+ * events, the energy h and the residuals are read at (q, q', t) with
+ * q' = kin(q, u, t); a speed named in an output stands for its definition.
+ */
+#include "simint.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "num/num.h"
+#include "base/mem.h"
+
+static qd_status inputs(qd_sim *s) {
+    const qd_speeds_eom *e = s->se;
+    size_t n = s->n;
+    s->np = qd_model_nparams(s->model);
+    s->nin = 2 * n + 1 + s->np + s->nu;
+    s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);
+    s->par = qd__calloc(s->ctx, s->np + 1, sizeof *s->par);
+    if (!s->in_syms || !s->par)
+        return QD_ERR_NOMEM;
+    for (size_t j = 0; j < n; j++) {
+        s->in_syms[j] = e->q[j];
+        s->in_syms[n + j] = e->qd[j];
+    }
+    s->in_syms[2 * n] = qd_time(s->ctx);
+    for (size_t i = 0; i < s->np; i++) {
+        s->in_syms[2 * n + 1 + i] = qd_model_param(s->model, i);
+        qd_status st = qd_model_param_number(s->model, i, &s->par[i]);
+        if (st != QD_OK) {
+            if (st == QD_ERR_ARG)
+                qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
+                             qd_expr_name(s->in_syms[2 * n + 1 + i]));
+            return st;
+        }
+    }
+    for (size_t r = 0; r < s->nu; r++)
+        s->in_syms[2 * n + 1 + s->np + r] = e->u[r];
+    return QD_OK;
+}
+
+/* acc = (kin, M_u, f_u): one program per right-hand side; kin alone for
+ * the rows, udef for the initial speeds, con for the residuals. */
+static qd_status compile(qd_sim *s) {
+    const qd_speeds_eom *e = s->se;
+    size_t n = s->n, nu = s->nu, k = 0;
+    const qd_expr **outs = qd__malloc(s->ctx, (n + nu * nu + nu + 1) * sizeof *outs);
+    if (!outs)
+        return QD_ERR_NOMEM;
+    for (size_t j = 0; j < n; j++)
+        outs[k++] = e->kin[j];
+    for (size_t i = 0; i < nu * nu; i++)
+        outs[k++] = e->M[i];
+    for (size_t r = 0; r < nu; r++)
+        outs[k++] = e->f[r];
+    s->acc = qd__sim_prog(s, k, outs, &s->acc_n);
+    qd__free(outs);
+    if (s->acc)
+        s->kin = qd__sim_prog(s, n, e->kin, &s->kin_n);
+    if (s->kin)
+        s->udef = qd__sim_prog(s, nu, e->def, &s->udef_n);
+    if (!s->udef)
+        return qd_ctx_status(s->ctx);
+    return qd__sim_con_prog(s);
+}
+
+/* h = sum q' dL/dq' - L from the model's Lagrangian (read at q' = kin),
+ * T, and whether h is conserved. */
+static qd_status analyse(qd_sim *s) {
+    qd_ctx *ctx = s->ctx;
+    const qd_speeds_eom *e = s->se;
+    const qd_expr *L = qd_model_lagrangian(s->model), *D = qd_model_dissipation(s->model);
+    if (!L)
+        return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_ARG;
+    const qd_expr *h = qd_neg(ctx, L);
+    bool forces = false;
+    for (size_t j = 0; j < s->n; j++) {
+        h = qd_add(ctx, h, qd_mul(ctx, e->qd[j], qd_diff(ctx, L, e->qd[j])));
+        const qd_expr *Q = qd_model_force(s->model, j);
+        forces = forces || (Q && !qd_is_zero(Q));
+    }
+    s->h_expr = qd_simplify(ctx, h);
+    s->has_T = e->T != NULL;
+    s->T_expr = s->has_T ? e->T : qd_int(ctx, 0);
+    if (s->has_T)
+        qd__speeds_defs(s, 1, &s->T_expr);
+    s->conservative = !qd_has(L, qd_time(ctx)) && !forces && !(D && !qd_is_zero(D));
+    return qd_ctx_status(ctx) == QD_OK && s->h_expr && s->T_expr ? QD_OK : qd_ctx_status(ctx);
+}
+
+void qd__speeds_defs(qd_sim *s, size_t n, const qd_expr **x) {
+    const qd_speeds_eom *e = s->se;
+    for (size_t i = 0; i < n; i++)
+        x[i] = qd_subs(s->ctx, x[i], s->nu, e->u, e->def);
+}
+
+static qd_status refuse(qd_ctx *ctx, const char *why) {
+    qd_ctx_error(ctx, QD_ERR_ARG, "%s", why);
+    return QD_ERR_ARG;
+}
+
+static qd_status check(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {
+    if (!e || !m)
+        return refuse(ctx, "qd_sim_new_speeds needs a model and its equations in speeds");
+    if (e->n != qd_model_ncoords(m) || e->m == 0)
+        return refuse(ctx, "the equations in speeds are not this model's");
+    if (qd_model_nimpacts(m))
+        return refuse(ctx, "impacts are not simulated in generalized speeds (Newton's law "
+                           "is written for the velocities): integrate the multiplier form "
+                           "(--no-speeds)");
+    return QD_OK;
+}
+
+qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {
+    if (check(ctx, m, e) != QD_OK)
+        return NULL;
+    qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
+    if (!s) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    *s = (qd_sim){.ctx = ctx, .model = m, .se = e, .n = e->n, .m = e->ncon, .nu = e->m,
+                  .cons = e->con};
+    qd_status st = inputs(s);
+    if (st == QD_OK)
+        st = compile(s);
+    if (st == QD_OK)
+        st = analyse(s);
+    if (st == QD_OK)
+        st = qd__sim_names(s);
+    if (st != QD_OK) {
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "cannot compile the equations in speeds for simulation");
+        qd_sim_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+size_t qd_sim_nspeeds(const qd_sim *s) { return s->nu; }
+
+/* q, t and u into the inputs (the velocities' block is left as it is). */
+static void set_qu(qd_sim *s, double t, const double *y) {
+    size_t n = s->n;
+    double *u = qd__in_speeds(s);
+    for (size_t j = 0; j < n; j++)
+        s->in[j] = y[j];
+    s->in[2 * n] = t;
+    for (size_t r = 0; r < s->nu; r++)
+        u[r] = y[n + r];
+}
+
+qd_status qd__speeds_rhs(qd_sim *s, double t, const double *y, double *dy) {
+    size_t n = s->n, nu = s->nu;
+    set_qu(s, t, y);
+    qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
+    const double *M = s->acc_out + n, *f = M + nu * nu;
+    for (size_t j = 0; j < n; j++)
+        dy[j] = s->acc_out[j];
+    for (size_t i = 0; i < nu * nu; i++)
+        s->K[i] = M[i];
+    for (size_t r = 0; r < nu; r++)
+        dy[n + r] = f[r];
+    if (qd__num_solve(nu, s->K, dy + n, 1e-13 * (double)nu))
+        return QD_OK;
+    qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
+                 "singular mass matrix M_u at t = %.17g: the speeds' rates are not "
+                 "determined there", t);
+    return QD_ERR_SINGULAR;
+}
+
+void qd__speeds_velocity(qd_sim *s, double t, const double *y, double *qd) {
+    set_qu(s, t, y);
+    qd_prog_eval(s->kin, s->kin_w, s->in, qd);
+}
+
+void qd__speeds_from(qd_sim *s, double t, const double *q, const double *qd, double *u) {
+    qd__prog_at(s, s->udef, s->udef_w, t, q, qd, u);
+}
