@@ -109,7 +109,7 @@ static void eq_text(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
     if (shown < eq->count)
         qd_buf_printf(b, "  ... and %zu more samples (--format json lists them all)\n",
                       eq->count - shown);
-    if (eq->continuum)
+    if (eq->continuum && s->nsolved)
         qd_buf_puts(b, "note: these equilibria are not isolated (a family along a null "
                        "direction of the equations at rest); the points listed are samples "
                        "of it\n");

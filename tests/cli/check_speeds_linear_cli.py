@@ -13,6 +13,13 @@ Expected values are textbook results, not output of the code under test:
     Advanced Rigid Dynamics art. 244), the tilt's root s^2 =
     -(4/5)(3 Omega^2 - g/a); checked either side of the threshold, and with
     --set g moving the threshold, and the threshold itself from --scan u3;
+  - the same threshold from examples/rolling_disk_speeds.qd, the disk written
+    independently in SymPy's rolling-disc frames (lean q2, spin u2);
+  - examples/bicycle_speeds.qd: with the rear wheel driven (tau != 0) no
+    state is at rest; with tau = 0 the steering spring's d = 0, the other
+    coordinates free (more equations than unknowns: tau and k d);
+  - the Chaplygin sleigh (examples/chaplygin_sleigh.qd): every configuration
+    is at rest (no force), no equation left;
   - the double pendulum of examples/double_pendulum.qd with speeds u1 =
     theta1', u2 = theta1' + theta2' has the equilibria of the model without
     them (f_u(q, 0) = W^T f(q, 0) with W invertible);
@@ -115,6 +122,38 @@ def disk_scan(qdot, path, g=9.81, a=0.35):
           and t[0]["from"] == "unstable" and t[0]["to"] == "stable", t)
 
 
+def example_disk_scan(qdot, g=9.81, r=0.35):
+    rc, out, err = run(qdot, "modes", str(EX / "rolling_disk_speeds.qd"), "--about", "q2=0",
+                       "--scan", "u2=1:6", "--steps", "10", "--format", "json")
+    check("example disk scan rc", rc == 0, err)
+    if rc:
+        return
+    t = json.loads(out)["transitions"]
+    check("example disk threshold", len(t) == 1 and close(t[0]["u2"], math.sqrt(g / (3 * r)),
+                                                          1e-8), t)
+
+
+def bicycle_and_sleigh(qdot):
+    bike = str(EX / "bicycle_speeds.qd")
+    rc, out, err = run(qdot, "equilibria", bike, "--format", "json")
+    check("bicycle driven rc", rc == 0, err)
+    if rc == 0:
+        check("bicycle driven: none", json.loads(out)["equilibria"] == [], out)
+    rc, out, err = run(qdot, "equilibria", bike, "--set", "tau=0", "--format", "json")
+    check("bicycle free rc", rc == 0, err)
+    if rc == 0:
+        j = json.loads(out)
+        eq = j["equilibria"]
+        check("bicycle d = 0", len(eq) == 1 and abs(eq[0]["equilibrium"]["d"]) < 1e-12, out)
+        check("bicycle free", j["free"] == ["x", "y", "th", "pr", "pf"], j["free"])
+    rc, out, err = run(qdot, "equilibria", str(EX / "chaplygin_sleigh.qd"), "--format", "json")
+    check("sleigh rc", rc == 0, err)
+    if rc == 0:
+        j = json.loads(out)
+        check("sleigh any", j["free"] == ["x", "y", "th"] and len(j["equilibria"]) == 1
+              and j["equilibria"][0]["equilibrium"] == {}, out)
+
+
 def pendulum_with_speeds(qdot, tmp):
     src = (EX / "double_pendulum.qd").read_text()
     path = os.path.join(tmp, "dp_speeds.qd")
@@ -215,6 +254,8 @@ def main():
         disk_modes(qdot, disk)
         disk_modes(qdot, disk, g=4.0, sets=("--set", "g=4"))
         disk_scan(qdot, disk)
+        example_disk_scan(qdot)
+        bicycle_and_sleigh(qdot)
         pendulum_with_speeds(qdot, tmp)
         sleigh_codegen(qdot, tmp)
         stdin_once(qdot, disk)
