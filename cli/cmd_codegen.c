@@ -14,8 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "qdot/codegen.h"
+#include "eom_out.h"
 #include "model_cli.h"
+#include "qdot/codegen.h"
+#include "qdot/speeds.h"
 
 #define MAX_SETS QD_CLI_MAX_LIST
 #define MAX_NAME 64
@@ -87,14 +89,43 @@ static int write_text(const char *dir, const char *name, const char *ext, const 
     return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
+/* A model with speeds: the first-order system in (q, u) (qd_codegen_speeds_c). */
+static int generate_speeds(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c, qd_buf *h) {
+    if (r->eliminate) {
+        cli_diag_error("--eliminate is for models without speeds: the speeds already take the "
+                       "constraints into account");
+        return QD_EXIT_USAGE;
+    }
+    qd_speeds_eom *se = qd_speeds_derive(ctx, mf->model, NULL);
+    if (!se)
+        return cli_eom_derive_error(ctx, mf);
+    int rc = QD_EXIT_OK;
+    if (qd_codegen_speeds_c(ctx, mf->model, se, r->name, c, h) != QD_OK)
+        rc = cli_diag_ctx(ctx);
+    qd_speeds_eom_free(se);
+    return rc;
+}
+
+static int generate(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_eom **e, qd_buf *c,
+                    qd_buf *h) {
+    int rc = cli_load(ctx, r->file, r->nsets, r->sets, false, mf);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (qd_model_nspeeds(mf->model))
+        return generate_speeds(ctx, r, mf, c, h);
+    qd_eom_opts opts = {r->eliminate};
+    if (!(*e = qd_eom_derive_opts(ctx, mf->model, &opts)))
+        return cli_eom_derive_error(ctx, mf);
+    if (qd_codegen_c(ctx, mf->model, *e, r->name, c, h) != QD_OK)
+        return cli_diag_ctx(ctx);
+    return QD_EXIT_OK;
+}
+
 static int run(qd_ctx *ctx, cg_run *r) {
     cli_model_file mf = {0};
     qd_eom *e = NULL;
     qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
-    qd_eom_opts opts = {r->eliminate};
-    int rc = cli_load_derive(ctx, r->file, r->nsets, r->sets, false, &opts, &mf, &e);
-    if (rc == QD_EXIT_OK && qd_codegen_c(ctx, mf.model, e, r->name, &c, &h) != QD_OK)
-        rc = cli_diag_ctx(ctx);
+    int rc = generate(ctx, r, &mf, &e, &c, &h);
     /* -o names the directory to write into: made when missing (not its parents) */
     if (rc == QD_EXIT_OK && mkdir(r->dir, 0777) != 0 && errno != EEXIST) {
         cli_diag_error("cannot create the directory %s: %s", r->dir, strerror(errno));

@@ -146,10 +146,16 @@ int cli_cmd_equilibria(int argc, char **argv) {
         return QD_EXIT_FAIL;
     }
     qd_equilibria eq = {0};
-    rc = cli_lin_load(&r, a.file, a.sets, a.nsets);
-    if (rc == QD_EXIT_OK)
+    rc = cli_lin_load_model(&r, a.file, a.sets, a.nsets);
+    bool speeds = rc == QD_EXIT_OK && qd_model_nspeeds(r.mf.model) > 0;
+    if (speeds)
+        rc = cli_speeds_equilibria(r.ctx, &r.mf, a.json, a.near ? "--near" : a.box ? "--box"
+                                                                                  : NULL);
+    else if (rc == QD_EXIT_OK)
+        rc = cli_lin_derive(&r);
+    if (rc == QD_EXIT_OK && !speeds)
         rc = cli_lin_equilibria(&r, a.near, a.box, &eq);
-    if (rc == QD_EXIT_OK) {
+    if (rc == QD_EXIT_OK && !speeds) {
         qd_buf b = QD_BUF_INIT;
         (a.json ? put_json : put_text)(&r, &eq, &b);
         rc = cli_emit(&b, "equilibria");

@@ -520,7 +520,14 @@ int cli_cmd_modes(int argc, char **argv) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = cli_lin_load(&r.lr, a.file, a.sets, a.nsets);
+    rc = cli_lin_load_model(&r.lr, a.file, a.sets, a.nsets);
+    if (rc == QD_EXIT_OK && qd_model_nspeeds(r.lr.mf.model)) {
+        rc = cli_speeds_modes(r.lr.ctx, &r.lr.mf, a.about, a.scan, a.steps, a.json,
+                              a.at_eq ? "--at-equilibrium" : a.initial ? "--initial" : NULL);
+        goto done;
+    }
+    if (rc == QD_EXIT_OK)
+        rc = cli_lin_derive(&r.lr);
     if (rc == QD_EXIT_OK && a.scan) {
         rc = cli_scan_modes(&r.lr, a.scan, a.about, a.steps, a.json);
         goto done;

@@ -13,13 +13,24 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include "eom_out.h"
 #include "model_cli.h"
 
+int cli_lin_load_model(cli_lin_run *r, const char *file, const char *const *sets,
+                       size_t nsets) {
+    return cli_load(r->ctx, file, nsets, sets, false, &r->mf);
+}
+
 int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size_t nsets) {
+    int rc = cli_lin_load_model(r, file, sets, nsets);
+    return rc == QD_EXIT_OK ? cli_lin_derive(r) : rc;
+}
+
+int cli_lin_derive(cli_lin_run *r) {
     qd_eom_opts opts = {.eliminate = true};
-    int rc = cli_load_derive(r->ctx, file, nsets, sets, false, &opts, &r->mf, &r->e);
-    if (rc != QD_EXIT_OK)
-        return rc;
+    if (!(r->e = qd_eom_derive_opts(r->ctx, r->mf.model, &opts)))
+        return cli_eom_derive_error(r->ctx, &r->mf);
+    int rc;
     if (r->e->ncon) {
         cli_diag_error("the model keeps %zu constraint%s with multipliers after elimination: "
                       "equilibria and modes need independent coordinates", r->e->ncon,

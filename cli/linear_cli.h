@@ -25,6 +25,11 @@ typedef struct cli_lin_run {
 
 /* Load FILE, apply the --set list, derive, fill the state. */
 int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size_t nsets);
+/* The same in two steps, for a caller that looks at the model first (FILE
+ * may be standard input: read once). */
+int cli_lin_load_model(cli_lin_run *r, const char *file, const char *const *sets,
+                       size_t nsets);
+int cli_lin_derive(cli_lin_run *r);
 void cli_lin_free(cli_lin_run *r);
 /* The equations' coordinates may be fewer than the model's (constraints
  * eliminated): arrays of values here have e->n entries in the order of e->q.
@@ -43,6 +48,17 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
 /* One exact or numeric coordinate value, as text. */
 void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b);
 
+
+/* ---- models with speeds (speeds_lin_cli.c) ---------------------------------
+ * mf: a model with `speeds`, loaded (cli_lin_load_model; borrowed).  refuse:
+ * an option given that such a model does not take (its name, for the
+ * error), or NULL. */
+int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char *refuse);
+/* about: "theta=pi/2, u3=6" (coordinates and speeds), or NULL: the first
+ * equilibrium, free coordinates and speeds 0.  range: --scan NAME=A:B (a
+ * parameter, speed or coordinate; steps as --steps), or NULL. */
+int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const char *range,
+                     size_t steps, bool json, const char *refuse);
 
 /* ---- --scan (scan_cli.c) --------------------------------------------------- */
 

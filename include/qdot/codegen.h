@@ -41,6 +41,8 @@
 extern "C" {
 #endif
 
+struct qd_speeds_eom; /* qdot/speeds.h */
+
 typedef int (*qd_native_rhs)(double t, const double *y, const double *par, double *dydt);
 
 typedef struct qd_native {
@@ -61,6 +63,26 @@ typedef struct qd_native {
  * .c includes "<prefix>.h".  h_text may be NULL when not wanted. */
 QD_API qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                        qd_buf *c_text, qd_buf *h_text);
+
+/* The same for a model in generalized speeds (qdot/speeds.h): the
+ * first-order system y = (q, u), prefix P,
+ *
+ *   P_N, P_M, P_NPAR                  coordinates, speeds, parameters
+ *   P_coord_names[], P_speed_names[], P_param_names[], P_par_default[]
+ *   void P_kinematics(t, q, u, par, qd)  q' = W u + w (N)
+ *   void P_mass(t, q, par, M)            M_u (M*M row-major)
+ *   void P_forcing(t, q, u, par, f)      f_u (M)
+ *   int  P_rhs(t, y, par, dydt)          y = (q, u), dydt = (q', u'), u' from
+ *                                        M_u u' = f_u; nonzero when M_u is
+ *                                        singular
+ *   double P_energy(t, y, par)           T + V in q and u (NAN for a model
+ *                                        given by L or with U)
+ *   void P_jacobian(t, y, par, J)        (N+M) x (N+M) row-major d(dydt)/dy,
+ *                                        analytic
+ *
+ * QD_ERR_ARG for a bad prefix or a mass matrix that depends on the speeds. */
+QD_API qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const struct qd_speeds_eom *e,
+                                     const char *prefix, qd_buf *c_text, qd_buf *h_text);
 
 /* Generate, compile (or reuse) and load.  cache_dir NULL: $XDG_CACHE_HOME/qdot,
  * else $HOME/.cache/qdot (created when missing).  On failure *out is zeroed. */

@@ -41,6 +41,8 @@
 extern "C" {
 #endif
 
+struct qd_speeds_eom; /* qdot/speeds.h */
+
 typedef enum qd_eq_kind {
     QD_EQ_MINIMUM,    /* K positive definite: stable (without gyroscopic forces) */
     QD_EQ_MAXIMUM,    /* K negative definite */
@@ -145,6 +147,43 @@ QD_API qd_status qd_eom_rest_residual(qd_ctx *ctx, const qd_eom *e, size_t nvals
 QD_API bool qd_equilibrium_exact_in_parameters(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                                                size_t nvals, const qd_expr *const *syms,
                                                const double *vals, const qd_expr *const *q0);
+
+/* ---- models in generalized speeds (src/linear/speeds_eq.c) ----------------
+ *
+ * At rest q' = 0 and u' = 0.  For a scleronomic speed map (q' = W u, no
+ * term w free of the speeds; else QD_ERR_UNSUPPORTED) that is u = 0 (W has
+ * full column rank) and f_u(q, 0) = 0: m equations in n coordinates, with
+ * the holonomic constraints phi(q) = 0 (the speeds keep them only
+ * differentiated, so the configuration must be put on them).  With
+ * nonholonomic constraints m < n and the equilibria come in families (the
+ * rolling disk stands upright anywhere, with any heading): the coordinates
+ * no equation at rest involves are free, any value; the others are solved
+ * for as qd_equilibria_find does (exact, else numeric).  f_u(q, 0) =
+ * W^T f(q, 0), so a holonomic model (W invertible) has the equilibria of
+ * Lagrange's equations.  The kinds classify K = -d f_u/dq over the solved
+ * coordinates, which is the Hessian of the potential only when the speeds
+ * at those coordinates are their velocities. */
+typedef struct qd_speeds_equilibria {
+    size_t n;                /* e->n */
+    size_t nsolved;          /* coordinates the equations at rest involve */
+    size_t *solved;          /* nsolved indices into e->q, ascending */
+    bool *free_coord;        /* n: in no equation at rest (any value) */
+    size_t nrows;            /* equations at rest that are not identically 0 (the
+                                holonomic constraints among them) */
+    qd_equilibria eq;        /* over the solved coordinates: eq.n = nsolved, each
+                                point's q[j] is coordinate solved[j] */
+} qd_speeds_equilibria;
+
+/* Find them; syms/vals as for qd_equilibria_find (parameters, t), opts as
+ * there with its arrays over all n coordinates of e (the free ones are not
+ * read).  With no coordinate to solve for: one point (no values) when no
+ * equation at rest is left, every coordinate free, else none. */
+QD_API qd_status qd_speeds_equilibria_find(qd_ctx *ctx, const struct qd_speeds_eom *e,
+                                           const qd_model *m, size_t nvals,
+                                           const qd_expr *const *syms, const double *vals,
+                                           const qd_equilibria_opts *opts,
+                                           qd_speeds_equilibria *out);
+QD_API void qd_speeds_equilibria_free(qd_speeds_equilibria *r);
 
 #ifdef __cplusplus
 }

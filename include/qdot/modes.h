@@ -34,6 +34,8 @@
 extern "C" {
 #endif
 
+struct qd_speeds_eom; /* qdot/speeds.h */
+
 /* The linearization about a state: M q'' + (C + G) q' + K q = 0 (n*n
  * row-major numbers each, malloc'd; qd_linear_free). */
 typedef struct qd_linear {
@@ -197,6 +199,59 @@ QD_API qd_status qd_modes_scan(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                                const char *param, double a, double b,
                                const qd_scan_opts *opts, qd_scan *out);
 QD_API void qd_scan_free(qd_scan *s);
+
+/* ---- models in generalized speeds (src/linear/speeds_lin.c) ----------------
+ *
+ * The first-order system y = (q, u) of qd_speeds_derive, q' = kin(q, u, t),
+ * M_u u' = f_u, linearized about a state: y' = rate + A (y - y0).  Only the
+ * coordinates the dynamics needs are kept: q_j is kept when f_u or M_u
+ * involves it, or the kinematic row of another kept coordinate does; the
+ * others (ignorable: the contact point and heading of a rolling disk) do
+ * not act back, so the kept coordinates and the speeds are a closed
+ * reduced system and a steady motion of the full one (the disk rolling
+ * upright along a line) is a stationary point of it: rate = 0.  The
+ * derivatives are exact (symbolic), evaluated at the state. */
+typedef struct qd_speeds_linear {
+    size_t n, m;          /* coordinates of e, speeds */
+    size_t nkept;         /* coordinates in the reduced system */
+    size_t *kept;         /* nkept indices into e->q, ascending */
+    bool *ignorable;      /* n: dropped */
+    size_t dim;           /* nkept + m: y = (q[kept], u) */
+    double *A;            /* dim*dim row-major: d(q'[kept], u')/d(q[kept], u) */
+    double *rate;         /* dim: (q'[kept], u') at the state, 0 when stationary */
+} qd_speeds_linear;
+
+/* Linearize e about the state syms/vals (coordinates, speeds, t,
+ * parameters; symbols not given are 0).  QD_ERR_SINGULAR when M_u is
+ * singular there. */
+QD_API qd_status qd_speeds_linear_about(qd_ctx *ctx, const struct qd_speeds_eom *e, size_t nvals,
+                                        const qd_expr *const *syms, const double *vals,
+                                        qd_speeds_linear *out);
+QD_API void qd_speeds_linear_free(qd_speeds_linear *l);
+
+/* The eigenvalues s of lin->A (dgeev) into out: n = neig = lin->dim,
+ * sorted as for qd_modes_solve, conservative false, omega2 and shapes NULL.
+ * stable: 0 when some Re s > 0 (relative QD_MODES_ZERO_TOL); 1 when every
+ * Re s <= 0, the zero eigenvalues are semisimple (as many null vectors of A
+ * as zeros: neighbouring steady motions, which a nonholonomic system has in
+ * families, do not drift apart linearly) and no purely imaginary root
+ * repeats; -1 otherwise (borderline). */
+QD_API qd_status qd_speeds_modes_solve(qd_ctx *ctx, const qd_speeds_linear *lin,
+                                       qd_modes_result *out);
+
+/* Follow the verdict of qd_speeds_modes_solve as one value of the state
+ * syms/vals goes from a to b (a < b), the others fixed: a parameter (the
+ * gravity under a rolling disk), or a speed or coordinate of a family of
+ * steady motions (the disk's spin).  opts: steps and tol as for
+ * qd_modes_scan (about and start are not read).  out: n = 0 (no point is
+ * followed), margin the largest Re s, conservative false; transitions
+ * bisected on the verdict to a bracket of width tol.  QD_ERR_ARG when what
+ * is not among syms or a >= b.  Free with qd_scan_free (also after a
+ * failure). */
+QD_API qd_status qd_speeds_modes_scan(qd_ctx *ctx, const struct qd_speeds_eom *e, size_t nvals,
+                                      const qd_expr *const *syms, const double *vals,
+                                      const qd_expr *what, double a, double b,
+                                      const qd_scan_opts *opts, qd_scan *out);
 
 #ifdef __cplusplus
 }

@@ -364,7 +364,11 @@ static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
     }
     if (ok)
         solve_rec(x, eqs, n);
-    ok = ok && !x->failed;
+    /* a step that ran out of memory may leave another way to the same roots
+       (cos q = 0 by the polynomial in cos q when sin/cos(a q + b) could not
+       be read): the set found then is not to be trusted, nor the error
+       cleared */
+    ok = ok && !x->failed && qd_ctx_status(ctx) != QD_ERR_NOMEM;
     if (qd_ctx_status(ctx) != QD_OK && qd_ctx_status(ctx) != QD_ERR_NOMEM)
         qd__ctx_recover(ctx);
     qd__free(from);
@@ -415,7 +419,8 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
             : p->npos == 0 ? QD_EQ_MAXIMUM : QD_EQ_SADDLE;
     qd__free(K);
     qd__free(w);
-    return ok ? QD_OK : QD_ERR_NUMERIC;
+    /* qd__sym_eig fails for want of memory as well as in LAPACK */
+    return ok ? QD_OK : qd_ctx_status(L->ctx) == QD_ERR_NOMEM ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
 }
 
 void qd_equilibria_free(qd_equilibria *r) {
@@ -503,7 +508,7 @@ static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const
             for (size_t j = 0; j < n; j++) {
                 p->exact[j] = x->sols[i * n + j];
                 if (!value_of(ctx, p->exact[j], &p->q[j]))
-                    return QD_ERR_NUMERIC;
+                    return qd_ctx_status(ctx) == QD_ERR_NOMEM ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
             }
         } else {
             double res;

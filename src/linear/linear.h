@@ -51,6 +51,13 @@ bool qd__sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs
 
 #endif
 
+/* ---- models in generalized speeds (speeds_lin.c) ----------------------- */
+
+struct qd_speeds_eom;
+/* kept[j] (e->n): q_j enters f_u or M_u, or the kinematic row of another
+ * kept coordinate; the others are ignorable for the reduced system. */
+void qd__speeds_kept(const struct qd_speeds_eom *e, bool *kept);
+
 /* ---- numeric root finding (newton.c, multistart.c) ------------------------ */
 
 /* A force scale at q: |F|_inf + |J|_inf (1 + |q|_inf); residuals are judged
