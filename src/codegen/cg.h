@@ -17,4 +17,9 @@ qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const cha
  * with an LU fallback), for nk unknowns; appended to out. */
 void qd__cg_solvers(qd_buf *out, size_t nk, bool cholesky);
 
+/* The tables every generated file has for the model's parameters:
+ * <P>_param_names (NULL-terminated) and <P>_par_default, the values; QD_ERR_ARG
+ * (recorded) when a parameter has no value. */
+qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_buf *c);
+
 #endif

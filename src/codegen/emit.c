@@ -390,25 +390,30 @@ static void name_list(qd_buf *c, const char *P, const char *what, size_t n,
 }
 
 static const qd_expr *get_coord(const void *e, size_t i) { return ((const qd_eom *)e)->q[i]; }
-static const qd_expr *get_param(const void *m, size_t i) { return qd_model_param(m, i); }
-
-static qd_status tables(gen *g) {
-    qd_buf *c = g->c;
-    name_list(c, g->P, "coord", g->n, get_coord, g->e);
-    name_list(c, g->P, "param", g->np, get_param, g->m);
-    qd_buf_printf(c, "const double %s_par_default[] = {", g->P);
-    for (size_t i = 0; i < g->np; i++) {
-        const qd_expr *v = qd_model_param_value(g->m, i);
-        qd_status st = v ? qd_print(g->ctx, v, QD_FMT_C, c) : QD_ERR_ARG;
+qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_buf *c) {
+    size_t np = qd_model_nparams(m);
+    qd_buf_printf(c, "const char *const %s_param_names[] = {", P);
+    for (size_t i = 0; i < np; i++)
+        qd_buf_printf(c, "\"%s\", ", qd_expr_name(qd_model_param(m, i)));
+    qd_buf_puts(c, "0};\n");
+    qd_buf_printf(c, "const double %s_par_default[] = {", P);
+    for (size_t i = 0; i < np; i++) {
+        const qd_expr *v = qd_model_param_value(m, i);
+        qd_status st = v ? qd_print(ctx, v, QD_FMT_C, c) : QD_ERR_ARG;
         if (st != QD_OK) {
-            qd_ctx_error(g->ctx, st, "cannot generate C: parameter %s has no value",
-                         qd_expr_name(qd_model_param(g->m, i)));
+            qd_ctx_error(ctx, st, "cannot generate C: parameter %s has no value",
+                         qd_expr_name(qd_model_param(m, i)));
             return st;
         }
         qd_buf_puts(c, ", ");
     }
-    qd_buf_puts(c, g->np ? "};\n\n" : "0.0};\n\n");
+    qd_buf_puts(c, np ? "};\n\n" : "0.0};\n\n");
     return QD_OK;
+}
+
+static qd_status tables(gen *g) {
+    name_list(g->c, g->P, "coord", g->n, get_coord, g->e);
+    return qd__cg_param_tables(g->ctx, g->m, g->P, g->c);
 }
 
 static void unused(gen *g, const char *names) {

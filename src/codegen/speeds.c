@@ -318,23 +318,7 @@ static qd_status tables(sgen *g) {
     qd_buf *c = g->c;
     name_list(c, g->P, "coord", g->n, g->e->q);
     name_list(c, g->P, "speed", g->ns, g->e->u);
-    qd_buf_printf(c, "const char *const %s_param_names[] = {", g->P);
-    for (size_t i = 0; i < g->np; i++)
-        qd_buf_printf(c, "\"%s\", ", qd_expr_name(qd_model_param(g->m, i)));
-    qd_buf_puts(c, "0};\n");
-    qd_buf_printf(c, "const double %s_par_default[] = {", g->P);
-    for (size_t i = 0; i < g->np; i++) {
-        const qd_expr *v = qd_model_param_value(g->m, i);
-        qd_status st = v ? qd_print(g->ctx, v, QD_FMT_C, c) : QD_ERR_ARG;
-        if (st != QD_OK) {
-            qd_ctx_error(g->ctx, st, "cannot generate C: parameter %s has no value",
-                         qd_expr_name(qd_model_param(g->m, i)));
-            return st;
-        }
-        qd_buf_puts(c, ", ");
-    }
-    qd_buf_puts(c, g->np ? "};\n\n" : "0.0};\n\n");
-    return QD_OK;
+    return qd__cg_param_tables(g->ctx, g->m, g->P, c);
 }
 
 static void unused(sgen *g, const char *names) {
