@@ -516,20 +516,25 @@ void cli_eom_sympy_bind(qd_ctx *ctx, qd_buf *b, const qd_expr *sym, bool fn) {
     qd_buf_free(&tmp);
 }
 
-static qd_status sympy_assign(const cli_eom_view *v, qd_buf *b, const char *name,
-                              const qd_expr *const *x, size_t rows, size_t cols) {
+qd_status cli_eom_sympy_matrix(qd_ctx *ctx, qd_buf *b, const char *name,
+                               const qd_expr *const *x, size_t rows, size_t cols) {
     qd_status st = QD_OK;
     qd_buf_printf(b, "%s = Matrix([", name);
     for (size_t r = 0; r < rows && st == QD_OK; r++) {
         qd_buf_puts(b, cols > 1 ? "\n    [" : (r ? ", " : ""));
         for (size_t k = 0; k < cols && st == QD_OK; k++) {
             qd_buf_puts(b, k ? ", " : "");
-            st = qd_print(v->ctx, x[r * cols + k], QD_FMT_SYMPY, b);
+            st = qd_print(ctx, x[r * cols + k], QD_FMT_SYMPY, b);
         }
         qd_buf_puts(b, cols > 1 ? "]," : "");
     }
     qd_buf_puts(b, cols > 1 ? "\n])\n" : "])\n");
     return st;
+}
+
+static qd_status sympy_assign(const cli_eom_view *v, qd_buf *b, const char *name,
+                              const qd_expr *const *x, size_t rows, size_t cols) {
+    return cli_eom_sympy_matrix(v->ctx, b, name, x, rows, cols);
 }
 
 /* A, b and the multipliers: M*q'' = f + A.T*lam and A*q'' = b. */

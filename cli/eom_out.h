@@ -49,6 +49,10 @@ const char *cli_eom_con_kind_name(qd_con_kind k);
  * of sym, when the SymPy printer prints it by its bare name (the speeds'
  * output shares it). */
 void cli_eom_sympy_bind(qd_ctx *ctx, qd_buf *b, const qd_expr *sym, bool fn);
+/* NAME = Matrix([...]) of the rows x cols expressions x (a column when cols
+ * is 1), appended to b. */
+qd_status cli_eom_sympy_matrix(qd_ctx *ctx, qd_buf *b, const char *name,
+                               const qd_expr *const *x, size_t rows, size_t cols);
 
 /* Print why qd_eom_derive failed, at the model statement to blame (a
  * constraint the message names, or T/L for a singular mass matrix); returns

@@ -414,18 +414,7 @@ static qd_status write_json(const cli_speeds_view *v, qd_buf *b) {
 
 static qd_status sympy_assign(const cli_speeds_view *v, qd_buf *b, const char *name,
                               const qd_expr *const *x, size_t rows, size_t cols) {
-    qd_status st = QD_OK;
-    qd_buf_printf(b, "%s = Matrix([", name);
-    for (size_t r = 0; r < rows && st == QD_OK; r++) {
-        qd_buf_puts(b, cols > 1 ? "\n    [" : (r ? ", " : ""));
-        for (size_t k = 0; k < cols && st == QD_OK; k++) {
-            qd_buf_puts(b, k ? ", " : "");
-            st = qd_print(v->ctx, x[r * cols + k], QD_FMT_SYMPY, b);
-        }
-        qd_buf_puts(b, cols > 1 ? "]," : "");
-    }
-    qd_buf_puts(b, cols > 1 ? "\n])\n" : "])\n");
-    return st;
+    return cli_eom_sympy_matrix(v->ctx, b, name, x, rows, cols);
 }
 
 static qd_status sympy_scalar(const cli_speeds_view *v, qd_buf *b, const char *name,
