@@ -102,6 +102,11 @@ static inline double *qd__in_speeds(qd_sim *s) { return s->in + 2 * s->n + 1 + s
 /* Compile outs into a program over s's inputs (angle sums expanded as the
  * generated C does); *count = nout.  NULL on failure, reason in ctx. */
 qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count);
+/* The programs' inputs: q, qd (n each), t, the parameters (their values
+ * into s->par) and ntail more that the caller fills (the multipliers, or
+ * the speeds). */
+qd_status qd__sim_inputs(qd_sim *s, const qd_expr *const *q, const qd_expr *const *qd,
+                         size_t ntail);
 /* The column names and the per-constraint arrays. */
 qd_status qd__sim_names(qd_sim *s);
 /* A system made from H: the velocities in x[0..n) replaced by dH/dp, so

@@ -28,31 +28,10 @@
 
 static qd_status inputs(qd_sim *s) {
     const qd_speeds_eom *e = s->se;
-    size_t n = s->n;
-    s->np = qd_model_nparams(s->model);
-    s->nin = 2 * n + 1 + s->np + s->nu;
-    s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);
-    s->par = qd__calloc(s->ctx, s->np + 1, sizeof *s->par);
-    if (!s->in_syms || !s->par)
-        return QD_ERR_NOMEM;
-    for (size_t j = 0; j < n; j++) {
-        s->in_syms[j] = e->q[j];
-        s->in_syms[n + j] = e->qd[j];
-    }
-    s->in_syms[2 * n] = qd_time(s->ctx);
-    for (size_t i = 0; i < s->np; i++) {
-        s->in_syms[2 * n + 1 + i] = qd_model_param(s->model, i);
-        qd_status st = qd_model_param_number(s->model, i, &s->par[i]);
-        if (st != QD_OK) {
-            if (st == QD_ERR_ARG)
-                qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
-                             qd_expr_name(s->in_syms[2 * n + 1 + i]));
-            return st;
-        }
-    }
-    for (size_t r = 0; r < s->nu; r++)
-        s->in_syms[2 * n + 1 + s->np + r] = e->u[r];
-    return QD_OK;
+    qd_status st = qd__sim_inputs(s, e->q, e->qd, s->nu);
+    for (size_t r = 0; st == QD_OK && r < s->nu; r++)
+        s->in_syms[2 * s->n + 1 + s->np + r] = e->u[r];
+    return st;
 }
 
 /* acc = (kin, M_u, f_u): one program per right-hand side; kin alone for

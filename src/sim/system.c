@@ -55,18 +55,18 @@ qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t
     return p;
 }
 
-static qd_status setup_inputs(qd_sim *s) {
-    const qd_eom *e = s->e;
+qd_status qd__sim_inputs(qd_sim *s, const qd_expr *const *q, const qd_expr *const *qd,
+                         size_t ntail) {
     size_t n = s->n;
     s->np = qd_model_nparams(s->model);
-    s->nin = 2 * n + 1 + s->np + s->m;
+    s->nin = 2 * n + 1 + s->np + ntail;
     s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);
     s->par = qd__calloc(s->ctx, s->np + 1, sizeof *s->par);
     if (!s->in_syms || !s->par)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
-        s->in_syms[j] = e->q[j];
-        s->in_syms[n + j] = e->qd[j];
+        s->in_syms[j] = q[j];
+        s->in_syms[n + j] = qd[j];
     }
     s->in_syms[2 * n] = qd_time(s->ctx);
     for (size_t i = 0; i < s->np; i++) {
@@ -79,9 +79,15 @@ static qd_status setup_inputs(qd_sim *s) {
             return st;
         }
     }
-    for (size_t k = 0; k < s->m; k++)
-        s->in_syms[2 * n + 1 + s->np + k] = e->con[k].lambda;
     return QD_OK;
+}
+
+static qd_status setup_inputs(qd_sim *s) {
+    const qd_eom *e = s->e;
+    qd_status st = qd__sim_inputs(s, e->q, e->qd, s->m);
+    for (size_t k = 0; st == QD_OK && k < s->m; k++)
+        s->in_syms[2 * s->n + 1 + s->np + k] = e->con[k].lambda;
+    return st;
 }
 
 static qd_status compile_acc(qd_sim *s) {
