@@ -1,0 +1,104 @@
+/*
+ * qdot/path.h - variational principles as two-point problems (Desloge
+ * ch. 82-84, Byerly ch. IV): the stationary paths of Hamilton's action
+ * S = integral of L dt between two configurations, their kinetic foci, the
+ * paths of given energy (Maupertuis, Jacobi), and the action of a trial path.
+ *
+ * A path is the motion from q(t0) = q0 with the velocities v0 that reaches
+ * q(t1) = q1: found by multiple shooting on the equations of motion (the
+ * model's M q'' = f, constraints' multipliers included), Newton's steps
+ * taking the Jacobian from the variational equations along each segment.
+ *
+ * The second variation: the Jacobi (accessory) equation is the equations of
+ * motion linearized along the path, delta q'' = (d(q'')/dq) delta q +
+ * (d(q'')/dq') delta q'; with delta q(t0) = 0 its solutions span the
+ * n x n matrix J(t) = d q(t)/d v0, and a time tc in (t0, t1] where
+ * det J(tc) = 0 is a kinetic focus (conjugate point) of t0.  The path is a
+ * minimum of S iff there is no focus in (t0, t1] and the Legendre condition
+ * holds (M = d^2 L / dq' dq' positive definite along it) (Desloge ch. 84;
+ * Gelfand and Fomin ch. 5).
+ */
+#ifndef QDOT_PATH_H
+#define QDOT_PATH_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "mech.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qd_path_opts {
+    double t0, t1;            /* the end times, t1 > t0 */
+    const double *q0, *q1;    /* the end configurations, n each */
+    /* starting guesses for the initial velocities: nguess rows of n (NULL
+     * and 0: the straight line's (q1 - q0)/(t1 - t0)) */
+    size_t nguess;
+    const double *guess;
+    /* all: search for every distinct path (the documented multistart
+     * search); else the path found from the first guess that converges */
+    bool all;
+    size_t segments;          /* multiple-shooting segments; 0: chosen */
+    double tol;               /* end-point residual; 0: 1e-10 */
+    size_t nsamples;          /* samples of each path; 0: 101 */
+} qd_path_opts;
+
+typedef struct qd_path {
+    size_t n;
+    double *v0;               /* n initial velocities */
+    double action;            /* S = integral of L dt along the path */
+    double residual;          /* |q(t1) - q1| reached */
+    size_t nsamples;
+    double *t, *q;            /* nsamples times, nsamples*n coordinates */
+    size_t nfoci;
+    double *foci;             /* the kinetic foci of t0 in (t0, t1], ascending */
+    bool legendre;            /* M positive definite along the path */
+    bool minimum;             /* legendre and no focus in (t0, t1] */
+} qd_path;
+
+typedef struct qd_path_set {
+    size_t count;
+    qd_path *paths;           /* distinct paths, by increasing action */
+} qd_path_set;
+
+/* The stationary paths of the action between (t0, q0) and (t1, q1) for the
+ * equations e of model m (parameters at the model's values).  QD_ERR_NUMERIC
+ * when no path converges (the message says so, with the smallest residual
+ * reached); QD_ERR_ARG for bad options.  out is filled on success (count
+ * >= 1); free it with qd_path_set_free. */
+QD_API qd_status qd_path_find(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                              const qd_path_opts *opts, qd_path_set *out);
+QD_API void qd_path_set_free(qd_path_set *s);
+
+/* The kinetic foci of t0 along the motion from (t0, q0, v0) up to t1: the
+ * zeros of det d q(t)/d v0 (the Jacobi equation), located to round-off;
+ * *foci (malloc'd with the context's allocator: free with qd_path_foci_free)
+ * ascending, and whether the Legendre condition holds along the way. */
+QD_API qd_status qd_path_foci(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
+                              const double *q0, const double *v0, double t1, double **foci,
+                              size_t *nfoci, bool *legendre);
+QD_API void qd_path_foci_free(qd_ctx *ctx, double *foci);
+
+/* Maupertuis / Jacobi: the paths of energy E (the Jacobi integral h) from q0
+ * to q1, whatever the time they take: opts.t0 is the start time, opts.t1 is
+ * ignored, and each path's t1 (its last sample's time) is the time it takes.
+ * For a natural system these are the geodesics of the Jacobi metric
+ * (E - V) M.  Otherwise as qd_path_find. */
+QD_API qd_status qd_path_find_energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                     double E, const qd_path_opts *opts, qd_path_set *out);
+
+/* The action of a trial path q_j = path[j](t) (expressions in t and the
+ * parameters) from t0 to t1, by quadrature, and the size of its first
+ * variation: the L2 norm over [t0, t1] of Lagrange's residual
+ * d/dt dL/dq' - dL/dq (- Q) along it (0 on a true path). */
+QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                   const qd_expr *const *path, double t0, double t1,
+                                   double *action, double *first_variation);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
