@@ -24,6 +24,7 @@
 #include "stability.h"
 #include "zvc.h"
 #include "speeds.h"
+#include "path.h"
 #include "scatter.h"
 
 #define QDOT_VERSION "0.1.0"
