@@ -10,6 +10,9 @@
  *   first focus tends to pi sqrt(l/g) (the linearized pendulum) and moves
  *   later with the amplitude, where it is checked against d theta/d v0
  *   measured by finite differences of two RK4 solutions of the motion;
+ *   two coupled oscillators (masses m, springs k - k - k; Desloge's normal
+ *   modes w1 = sqrt(k/m), w2 = sqrt(3k/m)): J = P diag(sin(w_i t)/w_i) P^T,
+ *   det J = sin(w1 t) sin(w2 t)/(w1 w2), foci at j pi/w1 and j pi/w2 merged;
  *   the free particle: J = (t - t0) I, no focus;
  *   a negative mass: the Legendre condition fails;
  *   a constrained model: QD_ERR_ARG, not a wrong answer.
@@ -20,6 +23,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "qdot/qdot.h"
@@ -126,6 +130,36 @@ static void test_pendulum_focus(void **state) {
     unload(&f);
 }
 
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* A and B not diagonal: the modes mix x and y, det J still factors. */
+static void test_coupled_oscillators(void **state) {
+    (void)state;
+    fix f;
+    load(&f, "coordinates x, y\nparameters m = 1.5, k = 6\nT = m*(x'^2 + y'^2)/2\n"
+             "V = k*(x^2 + (y - x)^2 + y^2)/2\n");
+    double w1 = 2, w2 = sqrt(12.0), t1 = 4.5, want[16];
+    size_t nw = 0;
+    for (int j = 1; j * PI / w1 <= t1; j++)
+        want[nw++] = j * PI / w1;
+    for (int j = 1; j * PI / w2 <= t1; j++)
+        want[nw++] = j * PI / w2;
+    qsort(want, nw, sizeof *want, cmp_double);
+    double q0[2] = {0.3, -0.1}, v0[2] = {1, 2}, *foci = NULL;
+    size_t nf = 0;
+    bool leg = false;
+    assert_int_equal(qd_path_foci(f.ctx, f.m, f.e, 0, q0, v0, t1, &foci, &nf, &leg), QD_OK);
+    assert_int_equal(nf, nw); /* 2 of w1, 4 of w2 */
+    for (size_t j = 0; j < nf; j++)
+        assert_true(fabs(foci[j] - want[j]) < 1e-9);
+    assert_true(leg);
+    qd_path_foci_free(f.ctx, foci);
+    unload(&f);
+}
+
 /* A free particle in the plane: J = (t - t0) I never singular again. */
 static void test_free_particle(void **state) {
     (void)state;
@@ -185,6 +219,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_oscillator_half_period),
         cmocka_unit_test(test_pendulum_focus),
+        cmocka_unit_test(test_coupled_oscillators),
         cmocka_unit_test(test_free_particle),
         cmocka_unit_test(test_legendre_negative_mass),
         cmocka_unit_test(test_constrained_refused),
