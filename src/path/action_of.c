@@ -141,7 +141,8 @@ static qd_status check_args(qd_ctx *ctx, const qd_eom *e, const qd_expr *const *
                             double t0, double t1) {
     if (e->ncon > 0) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the action of a trial path: not yet for constrained "
-                     "models (%zu constraints): eliminate them into the coordinates", e->ncon);
+                     "models (%zu constraint%s): eliminate them into the coordinates", e->ncon,
+                     e->ncon == 1 ? "" : "s");
         return QD_ERR_ARG;
     }
     for (size_t j = 0; j < e->n; j++)

@@ -342,7 +342,8 @@ static qd_status setup(fz *z, const qd_model *m, double t0, const double *q0, co
 static qd_status check_args(qd_ctx *ctx, const qd_eom *e, double t0, double t1) {
     if (e->ncon > 0) {
         qd_ctx_error(ctx, QD_ERR_ARG, "kinetic foci: not yet for constrained models (%zu "
-                     "constraints): eliminate them into the coordinates", e->ncon);
+                     "constraint%s): eliminate them into the coordinates", e->ncon,
+                     e->ncon == 1 ? "" : "s");
         return QD_ERR_ARG;
     }
     if (!(isfinite(t0) && isfinite(t1) && t1 > t0)) {

@@ -20,7 +20,7 @@ Expected values are closed forms worked by hand from Desloge ch. 83
   sin and powers, integrated exactly by SymPy;
 - errors: an unknown name (exit 2), a coordinate without a path (2), a
   coordinate given twice (2), T1 <= T0 (2), a path singular inside the
-  interval (1).
+  interval (1), a model with constraints (2: not yet).
 
 Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
@@ -121,6 +121,9 @@ def errors(qdot):
     check('empty interval', rc == 2 and 'after' in err, err)
     rc, _, err = run(qdot, 'action-of', PROJ, '--path', 'x = 1/(t - 1/2), y = 0', '--t', '0:1')
     check('singular path', rc == 1 and 'did not converge' in err, err)
+    rc, _, err = run(qdot, 'action-of', str(EXAMPLES / 'atwood_rope.qd'), '--path',
+                     'x1 = t, x2 = -t', '--t', '0:1')
+    check('constrained: not yet', rc == 2 and 'not yet for constrained' in err, err)
 
 
 def main():
