@@ -13,6 +13,9 @@
  *   two coupled oscillators (masses m, springs k - k - k; Desloge's normal
  *   modes w1 = sqrt(k/m), w2 = sqrt(3k/m)): J = P diag(sin(w_i t)/w_i) P^T,
  *   det J = sin(w1 t) sin(w2 t)/(w1 w2), foci at j pi/w1 and j pi/w2 merged;
+ *   the damped oscillator m x'' + b x' + k x = 0 (B = -b/m is what moves
+ *   the foci): J = exp(-b t/(2m)) sin(W t)/W, W = sqrt(k/m - b^2/(4 m^2)),
+ *   foci at j pi/W, later than the undamped j pi sqrt(m/k);
  *   the free particle: J = (t - t0) I, no focus;
  *   a negative mass: the Legendre condition fails;
  *   a constrained model: QD_ERR_ARG, not a wrong answer.
@@ -160,6 +163,23 @@ static void test_coupled_oscillators(void **state) {
     unload(&f);
 }
 
+/* B = d(x'')/dx' = -b/m: the zeros of J move from j pi/w to j pi/W. */
+static void test_damped_oscillator(void **state) {
+    (void)state;
+    fix f;
+    load(&f, "coordinates x\nparameters m = 1.2, k = 3, b = 0.9\nT = m/2*x'^2\nV = k/2*x^2\n"
+             "dissipation = b/2*x'^2\n");
+    double W = sqrt(3 / 1.2 - 0.81 / (4 * 1.44)), q0 = 1, v0 = 0, *foci = NULL;
+    size_t nf = 0;
+    assert_int_equal(qd_path_foci(f.ctx, f.m, f.e, 0, &q0, &v0, 2.5 * PI / W, &foci, &nf, NULL),
+                     QD_OK);
+    assert_int_equal(nf, 2);
+    for (size_t j = 0; j < nf; j++)
+        assert_true(fabs(foci[j] - (double)(j + 1) * PI / W) < 1e-9);
+    qd_path_foci_free(f.ctx, foci);
+    unload(&f);
+}
+
 /* A free particle in the plane: J = (t - t0) I never singular again. */
 static void test_free_particle(void **state) {
     (void)state;
@@ -220,6 +240,7 @@ int main(void) {
         cmocka_unit_test(test_oscillator_half_period),
         cmocka_unit_test(test_pendulum_focus),
         cmocka_unit_test(test_coupled_oscillators),
+        cmocka_unit_test(test_damped_oscillator),
         cmocka_unit_test(test_free_particle),
         cmocka_unit_test(test_legendre_negative_mass),
         cmocka_unit_test(test_constrained_refused),
