@@ -15,7 +15,7 @@
  * constraints' multipliers in without symbolic solving.  Newton's steps are
  * Levenberg-Marquardt damped (J^T J + mu I), so that the rank-deficient
  * Jacobian of a constrained model still gives a step, with backtracking on
- * |F|.  The step size is h <= 0.01/omega (omega^2: the largest entry scale
+ * |F|.  The step size is h <= 0.04/omega (omega^2: the largest entry scale
  * of dq''/dq at the start) and at most (t1 - t0)/200; a segment spans at
  * most 3/omega, over which the sensitivities of a hyperbolic point grow by
  * at most e^3 (docs/design.md, "Variational principles").
@@ -326,8 +326,9 @@ static bool shoot_newton(shoot *p, double *x, double tol, double *res) {
     *res = INFINITY;
     if (!F || !J || !A || !d || !xt || !Ft || !shoot_eval(p, x, F, J))
         goto done;
-    double f = norm2(nx, F), mu = 0;
-    for (int it = 0; it < PATH_MAXIT; it++) {
+    double f = norm2(nx, F), mu = 0, fref = f;
+    int slow = 0;
+    for (int it = 0; it < PATH_MAXIT && slow < 15; it++) {
         *res = shoot_residual(nx, F);
         if (*res <= tol) {
             ok = true;
@@ -355,7 +356,7 @@ static bool shoot_newton(shoot *p, double *x, double tol, double *res) {
         }
         double lam = 1;
         bool better = false;
-        for (int b = 0; b < 30 && !better; b++, lam /= 2) {
+        for (int b = 0; b < 12 && !better; b++, lam /= 2) {
             for (size_t i = 0; i < nx; i++)
                 xt[i] = x[i] + lam * d[i];
             better = shoot_eval(p, xt, Ft, NULL) && norm2(nx, Ft) < f;
@@ -371,6 +372,9 @@ static bool shoot_newton(shoot *p, double *x, double tol, double *res) {
         if (!shoot_eval(p, x, F, J))
             break;
         f = norm2(nx, F);
+        /* a start that stalls far from a root is given up: --all has more */
+        slow = f < fref / 2 ? 0 : slow + 1;
+        fref = fmin(fref, f) == f && slow == 0 ? f : fref;
     }
     if (!ok && isfinite(f))
         *res = fmin(*res, shoot_residual(nx, F));
@@ -631,12 +635,12 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     sr.span = sqrt(sr.span);
     sr.omega = rate(&s, o->t0, o->q0, vbar, p->w);
     double Tg = energy ? (sr.omega > 0 ? 1 / sr.omega : 1) : o->t1 - o->t0;
-    s.hmax = fmin(Tg / 200, sr.omega > 0 ? 0.01 / sr.omega : INFINITY);
+    s.hmax = fmin(Tg / 200, sr.omega > 0 ? 0.04 / sr.omega : INFINITY);
     size_t N = o->segments ? o->segments : (size_t)ceil(Tg * sr.omega / 3);
     p->N = N < 1 ? 1 : N > PATH_MAXSEG ? PATH_MAXSEG : N;
     p->nx = n + (energy ? 1 : 0) + 2 * n * (p->N - 1);
     sr.o = o;
-    sr.nstart = o->all ? (n == 1 ? 41 : 64) : 1;
+    sr.nstart = o->all ? (n == 1 ? 25 : 36) : 1;
     /* the spread of the starts: the chord's speed and the speeds of the
      * motion's own time scale (twice omega times the larger of the span and 1:
      * a pendulum's librations reach 2 omega) */
