@@ -77,6 +77,7 @@ int cli_cmd_action(int argc, char **argv);     /* cmd_action.c */
 int cli_cmd_zvc(int argc, char **argv);        /* cmd_zvc.c */
 int cli_cmd_impulse(int argc, char **argv);    /* cmd_impulse.c */
 int cli_cmd_scatter(int argc, char **argv);    /* cmd_scatter.c */
+int cli_cmd_path(int argc, char **argv);       /* cmd_path.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the
  * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */
