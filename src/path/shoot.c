@@ -165,34 +165,44 @@ static size_t aug_size(size_t n, bool sens) {
     return 2 * n + 1 + (sens ? 4 * n * n : 0);
 }
 
-/* RK4 from ta to tb in steps no longer than hmax; y advanced in place. */
-static bool advance(sys *s, double *y, double ta, double tb, bool sens, double *w) {
+/* One classical RK4 step of y (augmented, in place) from t by h. */
+static bool rk4_step(sys *s, double *y, double t, double h, bool sens, double *w) {
     size_t na = aug_size(s->n, sens);
     double *k1 = w, *k2 = w + na, *k3 = w + 2 * na, *k4 = w + 3 * na, *yt = w + 4 * na;
     double *tmp = w + 5 * na;
-    size_t steps = (size_t)ceil(fabs(tb - ta) / s->hmax);
+    if (!rhs(s, t, y, k1, sens, tmp))
+        return false;
+    for (size_t j = 0; j < na; j++)
+        yt[j] = y[j] + h / 2 * k1[j];
+    if (!rhs(s, t + h / 2, yt, k2, sens, tmp))
+        return false;
+    for (size_t j = 0; j < na; j++)
+        yt[j] = y[j] + h / 2 * k2[j];
+    if (!rhs(s, t + h / 2, yt, k3, sens, tmp))
+        return false;
+    for (size_t j = 0; j < na; j++)
+        yt[j] = y[j] + h * k3[j];
+    if (!rhs(s, t + h, yt, k4, sens, tmp))
+        return false;
+    for (size_t j = 0; j < na; j++)
+        y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+    return true;
+}
+
+/* The step grid of [ta, tb]: steps of at most hmax. */
+static size_t grid_steps(const sys *s, double ta, double tb) {
+    return (size_t)ceil(fabs(tb - ta) / s->hmax);
+}
+
+/* RK4 from ta to tb on its grid; y advanced in place. */
+static bool advance(sys *s, double *y, double ta, double tb, bool sens, double *w) {
+    size_t na = aug_size(s->n, sens), steps = grid_steps(s, ta, tb);
     if (steps == 0)
         return true;
     double h = (tb - ta) / (double)steps;
-    for (size_t i = 0; i < steps; i++) {
-        double t = ta + h * (double)i;
-        if (!rhs(s, t, y, k1, sens, tmp))
+    for (size_t i = 0; i < steps; i++)
+        if (!rk4_step(s, y, ta + h * (double)i, h, sens, w))
             return false;
-        for (size_t j = 0; j < na; j++)
-            yt[j] = y[j] + h / 2 * k1[j];
-        if (!rhs(s, t + h / 2, yt, k2, sens, tmp))
-            return false;
-        for (size_t j = 0; j < na; j++)
-            yt[j] = y[j] + h / 2 * k2[j];
-        if (!rhs(s, t + h / 2, yt, k3, sens, tmp))
-            return false;
-        for (size_t j = 0; j < na; j++)
-            yt[j] = y[j] + h * k3[j];
-        if (!rhs(s, t + h, yt, k4, sens, tmp))
-            return false;
-        for (size_t j = 0; j < na; j++)
-            y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-    }
     for (size_t j = 0; j < na; j++)
         if (!isfinite(y[j]))
             return false;
@@ -485,24 +495,37 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     if (!out->v0 || !out->t || !out->q)
         return false;
     memcpy(out->v0, x, n * sizeof *x);
+    /* the samples interpolate (cubic Hermite in q, q') the very steps the
+     * Newton iteration took, so the last one is the end reached to tol */
     size_t i = 0;
-    double S = 0;
+    double S = 0, prev[2 * 32];
     for (size_t k = 0; k < N; k++) {
-        double *y = p->y, ta = p->t0 + tau * (double)k, tb = ta + tau, tc = ta;
+        double *y = p->y, ta = p->t0 + tau * (double)k;
+        size_t steps = grid_steps(p->s, ta, ta + tau);
+        steps = steps ? steps : 1;
+        double h = tau / (double)steps;
         memset(y, 0, aug_size(n, false) * sizeof *y);
         start_state(p, x, k, y);
-        for (; i < ns; i++) {
-            double ti = p->t0 + T * (double)i / (double)(ns - 1);
-            if (ti > tb + 1e-12 * T && k + 1 < N)
-                break;
-            if (!advance(p->s, y, tc, ti, false, p->w))
+        for (size_t st = 0; st < steps; st++) {
+            double t = ta + h * (double)st;
+            memcpy(prev, y, 2 * n * sizeof *y);
+            if (!rk4_step(p->s, y, t, h, false, p->w))
                 return false;
-            tc = ti;
-            out->t[i] = ti;
-            memcpy(out->q + i * n, y, n * sizeof *y);
+            bool last = k + 1 == N && st + 1 == steps;
+            for (; i < ns; i++) {
+                double ti = p->t0 + T * (double)i / (double)(ns - 1);
+                double th = (ti - t) / h;
+                if (th > 1 + 1e-9 && !last)
+                    break;
+                th = fmin(fmax(th, 0), 1);
+                double h00 = (1 + 2 * th) * (1 - th) * (1 - th), h10 = th * (1 - th) * (1 - th);
+                double h01 = th * th * (3 - 2 * th), h11 = th * th * (th - 1);
+                out->t[i] = ti;
+                for (size_t j = 0; j < n; j++)
+                    out->q[i * n + j] = h00 * prev[j] + h10 * h * prev[n + j] + h01 * y[j] +
+                                        h11 * h * y[n + j];
+            }
         }
-        if (!advance(p->s, y, tc, tb, false, p->w))
-            return false;
         S += y[2 * n];
     }
     out->action = S;
