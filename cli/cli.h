@@ -74,6 +74,7 @@ int cli_cmd_stability(int argc, char **argv);  /* cmd_stability.c */
 int cli_cmd_orbit(int argc, char **argv);      /* cmd_orbit.c */
 int cli_cmd_hj(int argc, char **argv);         /* cmd_hj.c */
 int cli_cmd_action(int argc, char **argv);     /* cmd_action.c */
+int cli_cmd_action_of(int argc, char **argv);  /* cmd_action_of.c */
 int cli_cmd_zvc(int argc, char **argv);        /* cmd_zvc.c */
 int cli_cmd_impulse(int argc, char **argv);    /* cmd_impulse.c */
 int cli_cmd_scatter(int argc, char **argv);    /* cmd_scatter.c */

@@ -39,6 +39,8 @@ static const cli_cmd commands[] = {
      cli_cmd_hj, true},
     {"action", "FILE [--at ...] [--format F]", "action-angle variables: J, frequencies",
      cli_cmd_action, true},
+    {"action-of", "FILE --path ... --t T0:T1", "the action of a trial path, its first variation",
+     cli_cmd_action_of, true},
     {"zvc", "FILE --box ... --level H", "Jacobi's integral and the zero-velocity curves",
      cli_cmd_zvc, true},
     {"impulse", "FILE [--at ...] [--prescribe ...]", "a blow, a sudden constraint, a collision",

@@ -1,0 +1,223 @@
+/*
+ * cli/cmd_action_of.c - `qdot action-of FILE --path "x = ..., y = ..."
+ * --t T0:T1`: the action of a trial path given in t and the parameters, and
+ * the size of its first variation (qd_path_action_of; Desloge ch. 83, the
+ * trial paths of Problems 1-3 compared), to weigh trial paths against each
+ * other and against the true one.
+ */
+#include "cli.h"
+
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+#include "json.h"
+#include "model_cli.h"
+#include "model_file.h"
+#include "state.h"
+
+#define MAX_SETS QD_CLI_MAX_LIST
+
+typedef struct ao_run {
+    qd_ctx *ctx;
+    cli_model_file mf;
+    qd_eom *e;
+    bool json;
+    const char *file, *path, *times, *sets[MAX_SETS];
+    size_t nsets;
+    const qd_expr **q;   /* the trial path of each coordinate */
+    double t0, t1;
+} ao_run;
+
+static const char usage_text[] =
+    "usage: qdot action-of FILE --path \"q = EXPR(t), ...\" --t T0:T1 [--set NAME=VALUE]... "
+    "[--format text|json]";
+
+static const char *const formats[] = {"text", "json", NULL};
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    ao_run *r = data;
+    const char *v;
+    int f;
+    if ((v = cli_value(argc, argv, i, "--format"))) {
+        int rc = cli_choice("--format", v, formats, &f);
+        r->json = f == 1;
+        return rc;
+    }
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
+    if ((v = cli_value(argc, argv, i, "--path")))
+        return cli_once("--path", &r->path, v);
+    if ((v = cli_value(argc, argv, i, "--t")))
+        return cli_once("--t", &r->times, v);
+    return cli_bad_option(argv[*i], usage_text);
+}
+
+/* The end of the item starting at text[a]: the next comma outside
+ * parentheses (atan2(y, x) is one item). */
+static size_t item_end(const char *text, size_t a) {
+    int depth = 0;
+    for (; text[a]; a++) {
+        if (text[a] == '(' || text[a] == '[')
+            depth++;
+        else if ((text[a] == ')' || text[a] == ']') && depth > 0)
+            depth--;
+        else if (text[a] == ',' && depth == 0)
+            break;
+    }
+    return a;
+}
+
+static size_t coord_index(const qd_model *m, const char *name, size_t len) {
+    for (size_t j = 0; j < qd_model_ncoords(m); j++) {
+        const char *q = qd_expr_name(qd_model_coord(m, j));
+        if (strlen(q) == len && !strncmp(q, name, len))
+            return j;
+    }
+    return (size_t)-1;
+}
+
+/* One "NAME = EXPR" of --path, text[a, b). */
+static int path_item(ao_run *r, const char *text, size_t a, size_t b) {
+    const char *eq = memchr(text + a, '=', b - a);
+    size_t na = a, nb = eq ? (size_t)(eq - text) : b;
+    while (na < nb && isspace((unsigned char)text[na]))
+        na++;
+    while (nb > na && isspace((unsigned char)text[nb - 1]))
+        nb--;
+    size_t j = eq ? coord_index(r->mf.model, text + na, nb - na) : (size_t)-1;
+    if (j == (size_t)-1) {
+        cli_diag_error("--path: expected COORDINATE = EXPR(t), not '%.*s'", (int)(b - a),
+                       text + a);
+        return QD_EXIT_USAGE;
+    }
+    if (r->q[j]) {
+        cli_diag_error("--path: '%.*s' is given twice", (int)(nb - na), text + na);
+        return QD_EXIT_USAGE;
+    }
+    size_t va = (size_t)(eq - text) + 1, len = b - va;
+    char *copy = malloc(len + 1);
+    if (!copy)
+        return QD_EXIT_FAIL;
+    memcpy(copy, text + va, len);
+    copy[len] = '\0';
+    const qd_read_opts opts = {.new_symbols = false};
+    qd_diag err;
+    r->q[j] = qd_read(r->ctx, copy, &opts, &err);
+    free(copy);
+    if (!r->q[j]) {
+        err.offset += va;
+        cli_diag_read("--path", text, &err);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int parse_path(ao_run *r) {
+    size_t n = qd_model_ncoords(r->mf.model);
+    if (!(r->q = calloc(n ? n : 1, sizeof *r->q)))
+        return QD_EXIT_FAIL;
+    const char *text = r->path;
+    for (size_t a = 0; text[a];) {
+        size_t b = item_end(text, a);
+        int rc = path_item(r, text, a, b);
+        if (rc != QD_EXIT_OK)
+            return rc;
+        a = text[b] ? b + 1 : b;
+    }
+    for (size_t j = 0; j < n; j++)
+        if (!r->q[j]) {
+            cli_diag_error("--path: no trial path for %s (give every coordinate as an "
+                           "expression in t)", qd_expr_name(qd_model_coord(r->mf.model, j)));
+            return QD_EXIT_USAGE;
+        }
+    return QD_EXIT_OK;
+}
+
+/* --t T0:T1, each a number (pi/8 allowed). */
+static int parse_times(ao_run *r) {
+    const char *colon = strchr(r->times, ':');
+    if (!colon) {
+        cli_diag_error("--t takes T0:T1, not '%s'", r->times);
+        return QD_EXIT_USAGE;
+    }
+    size_t len = (size_t)(colon - r->times);
+    char *first = malloc(len + 1);
+    if (!first)
+        return QD_EXIT_FAIL;
+    memcpy(first, r->times, len);
+    first[len] = '\0';
+    const qd_expr *x;
+    int rc = cli_state_number(r->ctx, "--t", first, &x, &r->t0);
+    free(first);
+    if (rc == QD_EXIT_OK)
+        rc = cli_state_number(r->ctx, "--t", colon + 1, &x, &r->t1);
+    if (rc == QD_EXIT_OK && !(r->t1 > r->t0)) {
+        cli_diag_error("--t: T1 must be after T0 (%s)", r->times);
+        rc = QD_EXIT_USAGE;
+    }
+    return rc;
+}
+
+static int emit(ao_run *r, double S, double dS) {
+    qd_buf b = QD_BUF_INIT;
+    if (r->json) {
+        cli_json j;
+        cli_json_init(&j, &b);
+        cli_json_begin_object(&j);
+        cli_json_key(&j, "file");
+        cli_json_string(&j, r->mf.path);
+        cli_json_key(&j, "t0");
+        cli_json_number(&j, r->t0);
+        cli_json_key(&j, "t1");
+        cli_json_number(&j, r->t1);
+        cli_json_key(&j, "action");
+        cli_json_number(&j, S);
+        cli_json_key(&j, "first_variation");
+        cli_json_number(&j, dS);
+        cli_json_end_object(&j);
+        b.failed = b.failed || !cli_json_ok(&j);
+        qd_buf_puts(&b, "\n");
+    } else {
+        qd_buf_puts(&b, "action: ");
+        cli_state_put_result(&b, S);
+        qd_buf_puts(&b, "\nfirst_variation: ");
+        cli_state_put_result(&b, dS);
+        qd_buf_puts(&b, "\n");
+    }
+    return cli_emit(&b, "action");
+}
+
+static int run(ao_run *r) {
+    if (!r->path || !r->times) {
+        cli_diag_error("action-of needs --path and --t\n%s", usage_text);
+        return QD_EXIT_USAGE;
+    }
+    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, false, NULL, &r->mf, &r->e);
+    if (rc == QD_EXIT_OK)
+        rc = parse_path(r);
+    if (rc == QD_EXIT_OK)
+        rc = parse_times(r);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    double S = 0, dS = 0;
+    if (qd_path_action_of(r->ctx, r->mf.model, r->e, r->q, r->t0, r->t1, &S, &dS) != QD_OK)
+        return cli_diag_ctx(r->ctx);
+    return emit(r, S, dS);
+}
+
+int cli_cmd_action_of(int argc, char **argv) {
+    ao_run r = {0};
+    int rc = cli_file_args(argc, argv, "action-of", usage_text, &r.file, parse_option, &r);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    if (!(r.ctx = qd_ctx_new())) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = run(&r);
+    free(r.q);
+    qd_eom_free(r.e);
+    cli_model_file_free(&r.mf);
+    qd_ctx_free(r.ctx);
+    return rc;
+}
