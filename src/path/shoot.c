@@ -35,6 +35,7 @@
 
 typedef struct sys {
     qd_ctx *ctx;
+    const qd_model *m;
     const qd_eom *e;
     size_t n, nsym;
     const qd_expr **syms;   /* q, q', t, parameters */
@@ -64,6 +65,7 @@ static const qd_expr *jacobi_h(qd_ctx *ctx, const qd_eom *e) {
 static qd_status sys_init(sys *s, qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     memset(s, 0, sizeof *s);
     s->ctx = ctx;
+    s->m = m;
     s->e = e;
     s->n = e->n;
     size_t np = qd_model_nparams(m), n = e->n;
@@ -529,10 +531,13 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
         S += y[2 * n];
     }
     out->action = S;
-    /* the foci and the Legendre test are qd_path_foci's (foci.c); minimum
-     * stays false until it has run */
-    out->legendre = false;
-    out->minimum = false;
+    /* the second variation along the path: the Jacobi equation from its
+     * start (foci.c); a minimum iff no focus in (t0, t1] and Legendre's
+     * condition (Desloge ch. 84) */
+    if (qd_path_foci(ctx, p->s->m, p->s->e, p->t0, p->q0, x, p->t0 + T, &out->foci, &out->nfoci,
+                     &out->legendre) != QD_OK)
+        return false;
+    out->minimum = out->legendre && out->nfoci == 0;
     return true;
 }
 
@@ -707,7 +712,10 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         }
         if (!path_fill(p, sr.x, o->nsamples ? o->nsamples : 101, res, &fd.paths[fd.count])) {
             path_clear(&fd.paths[fd.count]);
-            continue;
+            st = qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NUMERIC;
+            if (!qd_ctx_status(ctx))
+                qd_ctx_error(ctx, st, "path: the samples of a converged path failed");
+            goto done;
         }
         fd.count++;
         if (!o->all)
