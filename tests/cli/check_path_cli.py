@@ -15,6 +15,8 @@ Hamilton's principle and Maupertuis'; Byerly ch. IV; seed-desloge-D.md):
 - examples/path_pendulum.qd from 0.1 to 0.2 rad in 4.5 (omega = pi) with
   --all: more than one path, distinct, sorted by action, each starting and
   ending at the given angles and keeping its energy along the samples;
+- small pendulum swings from the equilibrium: the kinetic focus at
+  pi sqrt(l/g) and no minimum past it, a minimum before it;
 - errors: an end off the rod of examples/pendulum_cartesian.qd (exit 1, the
   constraint and the residual named); at fixed energy an end beyond the
   turning point (exit 1, "smallest residual"); bad options (exit 2).
@@ -115,6 +117,24 @@ def pendulum(qdot):
         close('pendulum energy kept', vk * vk / 2 - g * math.cos(s[k][1]), h0, 2e-3)
 
 
+def pendulum_focus(qdot):
+    # small swings about the stable equilibrium: the kinetic focus of t0 at
+    # pi sqrt(l/g) = 1 (Desloge ch. 84), up to the amplitude's correction
+    # (1 + theta0^2/16, below 1e-5 here); before it the path is a minimum
+    r = paths(qdot, 'path_pendulum.qd', '--from', 'th=0, t=0', '--to', 'th=0.01, t=1.5')
+    if r:
+        p = r['paths'][0]
+        check('pendulum one focus', len(p['kinetic_foci']) == 1, p['kinetic_foci'])
+        if p['kinetic_foci']:
+            close('pendulum focus at pi sqrt(l/g)', p['kinetic_foci'][0], 1.0, 1e-4)
+        check('pendulum past the focus: no minimum', p['minimum'] is False)
+    r = paths(qdot, 'path_pendulum.qd', '--from', 'th=0, t=0', '--to', 'th=0.01, t=0.8')
+    if r:
+        p = r['paths'][0]
+        check('pendulum before the focus: minimum', p['minimum'] is True and
+              not p['kinetic_foci'], p)
+
+
 def errors(qdot):
     rc, out, err = run(qdot, 'path', str(EXAMPLES / 'pendulum_cartesian.qd'),
                        '--from', 'x=0, y=-1.4, t=0', '--to', 'x=2, y=0, t=1')
@@ -143,6 +163,7 @@ def main():
     projectile_time(qdot)
     projectile_energy(qdot)
     pendulum(qdot)
+    pendulum_focus(qdot)
     errors(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0

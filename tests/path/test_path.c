@@ -68,6 +68,20 @@ static void test_oscillator(void **state) {
     assert_double_equal(ps.paths[0].action, m * w * ((a * a + b * b) * c - 2 * a * b) / (2 * s), 1e-7);
     assert_double_equal(ps.paths[0].t[0], 0.5, 0);
     assert_double_equal(ps.paths[0].t[ps.paths[0].nsamples - 1], 0.5 + T, 1e-12);
+    /* shorter than half a period: no focus, a true minimum (Desloge ch. 84) */
+    assert_int_equal(ps.paths[0].nfoci, 0);
+    assert_true(ps.paths[0].legendre && ps.paths[0].minimum);
+    qd_path_set_free(&ps);
+    /* longer: the focus at half a period pi/w after the start, no minimum */
+    double T2 = 2.2;
+    o.t1 = 0.5 + T2;
+    o.all = false;
+    assert_int_equal(qd_path_find(f->ctx, f->m, f->e, &o, &ps), QD_OK);
+    assert_int_equal(ps.count, 1);
+    assert_double_equal(ps.paths[0].v0[0], w * (b - a * cos(w * T2)) / sin(w * T2), 1e-7);
+    assert_int_equal(ps.paths[0].nfoci, 1);
+    assert_double_equal(ps.paths[0].foci[0], 0.5 + SF_PI / w, 1e-8);
+    assert_false(ps.paths[0].minimum);
     qd_path_set_free(&ps);
     sf_free(f);
 }
