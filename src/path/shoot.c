@@ -534,6 +534,8 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     /* the second variation along the path: the Jacobi equation from its
      * start (foci.c); a minimum iff no focus in (t0, t1] and Legendre's
      * condition (Desloge ch. 84) */
+    if (p->s->e->ncon)  /* foci.c has no Jacobi equation on a constraint manifold yet */
+        return true;
     if (qd_path_foci(ctx, p->s->m, p->s->e, p->t0, p->q0, x, p->t0 + T, &out->foci, &out->nfoci,
                      &out->legendre) != QD_OK)
         return false;
