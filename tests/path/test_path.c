@@ -149,6 +149,35 @@ static void test_projectile_energy(void **state) {
     sf_free(f);
 }
 
+/* The action does not depend on the coordinates: the pendulum written with
+ * a rod constraint in (x, y) and with its angle give the same path, x'(0) =
+ * l th'(0), and the same S (Desloge ch. 82). */
+static void test_constrained_same_as_angle(void **state) {
+    (void)state;
+    sim_fix *fc = sf_load("coordinates x, y\nparameters m = 0.6, l = 1.4, g = 9.81\n"
+                          "particle m at (x, y)\nV = m*g*y\nconstraint rod: x^2 + y^2 = l^2\n");
+    sim_fix *fa = sf_load("coordinates th\nparameters m = 0.6, l = 1.4, g = 9.81\n"
+                          "particle m at l*(sin(th), -cos(th))\nV = -m*g*l*cos(th)\n");
+    assert_non_null(fc);
+    assert_non_null(fa);
+    double l = 1.4, th1 = 0.3, T = 0.5;
+    double q0[2] = {0, -l}, q1[2] = {l * sin(th1), -l * cos(th1)}, a0 = 0;
+    qd_path_opts oc = {.t0 = 0, .t1 = T, .q0 = q0, .q1 = q1};
+    qd_path_opts oa = {.t0 = 0, .t1 = T, .q0 = &a0, .q1 = &th1};
+    qd_path_set pc, pa;
+    assert_int_equal(qd_path_find(fc->ctx, fc->m, fc->e, &oc, &pc), QD_OK);
+    assert_int_equal(qd_path_find(fa->ctx, fa->m, fa->e, &oa, &pa), QD_OK);
+    assert_double_equal(pc.paths[0].v0[0], l * pa.paths[0].v0[0], 1e-6);
+    assert_double_equal(pc.paths[0].v0[1], 0, 1e-6);
+    assert_double_equal(pc.paths[0].action, pa.paths[0].action, 1e-6);
+    /* the angle form is unconstrained: there the foci run, none before T */
+    assert_true(pa.paths[0].minimum);
+    qd_path_set_free(&pc);
+    qd_path_set_free(&pa);
+    sf_free(fc);
+    sf_free(fa);
+}
+
 static void test_unreachable(void **state) {
     (void)state;
     sim_fix *f = sf_load("coordinates x, y\nparameters m = 0.6, l = 1.4, g = 9.81\n"
@@ -181,6 +210,7 @@ int main(void) {
         cmocka_unit_test(test_oscillator),
         cmocka_unit_test(test_pendulum_several),
         cmocka_unit_test(test_projectile_energy),
+        cmocka_unit_test(test_constrained_same_as_angle),
         cmocka_unit_test(test_unreachable),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
