@@ -102,6 +102,15 @@ def pendulum(qdot):
     check('pendulum distinct', all(abs(a - b) > 1e-6 for i, a in enumerate(v0) for b in v0[:i]), v0)
     check('pendulum by action', all(ps[i]['action'] <= ps[i + 1]['action']
                                     for i in range(len(ps) - 1)))
+    # --guess picks the start: near the linear oscillator's v0 = omega (b - a
+    # cos wT)/sin wT = 0.2 pi, the near-linear path (the largest action here)
+    g1 = paths(qdot, 'path_pendulum.qd', '--from', 'th=0.1, t=0', '--to', 'th=0.2, t=4.5',
+               '--guess', "th'=0.63")
+    if g1 and ps:
+        close('pendulum --guess', g1['paths'][0]['initial_velocities']["th'"],
+              max(ps, key=lambda p: p['action'])['initial_velocities']["th'"], 1e-8)
+        close('pendulum near-linear v0', g1['paths'][0]['initial_velocities']["th'"],
+              0.2 * math.pi, 0.05)
     for p in ps:
         s = p['samples']
         close('pendulum start', s[0][1], 0.1, 1e-12)
