@@ -47,6 +47,8 @@ static const cli_cmd commands[] = {
      cli_cmd_impulse, true},
     {"scatter", "FILE --energy E --b B|--theta TH", "deflection and cross sections of a central potential",
      cli_cmd_scatter, true},
+    {"path", "FILE --from ... --to ... [--all]", "stationary paths of the action between two points",
+     cli_cmd_path, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
