@@ -89,7 +89,8 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
         return true;
     char hint[128];
     snprintf(hint, sizeof hint, "choose another name for the %s", what);
-    return qd__mdl_perr_tok(p, hint, "'%s' is already a %s", name, kind);
+    return qd__mdl_perr_tok(p, hint, "'%s' is already %s %s", name,
+                            strchr("aeiou", kind[0]) ? "an" : "a", kind);
 }
 
 /* coordinates NAME (',' NAME)* */
