@@ -106,6 +106,19 @@ static bool read_isoperimetric(parser *p, isoper *c) {
     return qd__mdl_parse_constant(p, &c->value_def, &c->value, "an isoperimetric value");
 }
 
+/* The multiplier lambda_NAME: a plain constant symbol, or the parameter of
+ * that name when the model declares one (so that numeric work can give it a
+ * value and --set can vary it, as a shooting method does). */
+static const qd_expr *multiplier(parser *p, const char *name) {
+    char sym[96];
+    snprintf(sym, sizeof sym, "lambda_%s", name);
+    const qd_model *m = p->m;
+    for (size_t i = 0; i < m->nparams; i++)
+        if (!strcmp(qd_expr_name(m->params[i]), sym))
+            return m->pfixed[i] ? m->pvals[i] : m->params[i];
+    return qd_symbol(C(p), sym);
+}
+
 bool qd__mdl_isoperimetric(parser *p, const char *name, size_t at_off, size_t at_len) {
     qd_model *m = p->m;
     if (!in_model_text(p, "an isoperimetric constraint"))
@@ -116,13 +129,13 @@ bool qd__mdl_isoperimetric(parser *p, const char *name, size_t at_off, size_t at
     isoper c = {0};
     if (!read_isoperimetric(p, &c))
         return false;
-    char sym[96];
-    snprintf(sym, sizeof sym, "lambda_%s", name);
-    c.lambda = qd_symbol(C(p), sym);
+    c.lambda = multiplier(p, name);
+    if (!c.lambda)
+        return qd__mdl_perr(p, at_off, at_len, "rename the constraint", "%s", qd_ctx_message(C(p)));
     char *copy = qd__malloc(C(p), strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
-    if (!c.lambda || !copy) {
+    if (!copy) {
         qd__free(copy);
         return qd__mdl_perr(p, at_off, at_len, NULL, "out of memory");
     }

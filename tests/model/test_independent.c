@@ -117,6 +117,28 @@ static void catenary_extremal(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* A parameter named lambda_NAME is the multiplier, so numeric work can
+ * give it a value (--set lambda_length=...). */
+static void parameter_multiplier(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse_ok(ctx, "independent x\ncoordinates y\n"
+                                "parameters w = 2, lambda_length = 1/2\n"
+                                "L = w*y*sqrt(1 + y'^2)\n"
+                                "constraint length: integral(sqrt(1 + y'^2)) = 3\n");
+    assert_true(qd_model_isoperimetric_multiplier(m, 0) == qd_model_param(m, 1));
+    qd_eom *e = qd_eom_derive(ctx, m);
+    assert_non_null(e);
+    const qd_expr *extra[] = {qd_model_param(m, 0), qd_model_param(m, 1)};
+    const double xv[] = {2, 0.25};
+    /* (w y - lambda) y'' = w (1 + y'^2) at y = 1, y' = 1/2 */
+    double got = ypp(ctx, e, 0.3, 1, 0.5, 2, extra, xv), want = 2 * 1.25 / (2 - 0.25);
+    assert_true(fabs(got - want) < 1e-14);
+    qd_eom_free(e);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* Desloge App. 32 Ex. 2: y'' = -1/(R (1 - cos th)^2) along the cycloid. */
 static void brachistochrone_cycloid(void **state) {
     (void)state;
@@ -260,6 +282,7 @@ static void diagnostics(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(catenary_extremal),
+        cmocka_unit_test(parameter_multiplier),
         cmocka_unit_test(brachistochrone_cycloid),
         cmocka_unit_test(sphere_great_circles),
         cmocka_unit_test(renamed_time),
