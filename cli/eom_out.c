@@ -45,6 +45,29 @@ static out_name pick(const cli_eom_view *v, const char *base) {
 
 /* ---- text ------------------------------------------------------------------ */
 
+/* A functional's model (`independent x`, isoperimetric constraints): what
+ * the printed t and lambda_NAME stand for. */
+static void text_variational(const cli_eom_view *v, qd_buf *b) {
+    const qd_model *m = v->mf->model;
+    if (qd_model_independent(m))
+        qd_buf_printf(b, "independent variable: %s (written t)\n", qd_model_independent(m));
+    for (size_t i = 0; i < qd_model_nisoperimetric(m); i++) {
+        qd_buf_printf(b, "isoperimetric %s: integral(", qd_model_isoperimetric_name(m, i));
+        qd_print(v->ctx, qd_model_isoperimetric(m, i), QD_FMT_TEXT, b);
+        qd_buf_puts(b, ") = ");
+        qd_print(v->ctx, qd_model_isoperimetric_value(m, i), QD_FMT_TEXT, b);
+        const qd_expr *lam = qd_model_isoperimetric_multiplier(m, i);
+        qd_buf_printf(b, ", multiplier lambda_%s", qd_model_isoperimetric_name(m, i));
+        if (qd_expr_kind(lam) == QD_SYMBOL && qd_symbol_role(lam) == QD_ROLE_PLAIN) {
+            qd_buf_puts(b, " (a constant)\n");
+            continue;
+        }
+        qd_buf_puts(b, " (the parameter: ");
+        qd_print(v->ctx, lam, QD_FMT_TEXT, b);
+        qd_buf_puts(b, ")\n");
+    }
+}
+
 static void text_header(const cli_eom_view *v, qd_buf *b) {
     const qd_model *m = v->mf->model;
     qd_buf_printf(b, "model: %s\ncoordinates:", v->mf->path);
@@ -58,6 +81,7 @@ static void text_header(const cli_eom_view *v, qd_buf *b) {
     if (!qd_model_nparams(m))
         qd_buf_puts(b, " none");
     qd_buf_puts(b, "\n");
+    text_variational(v, b);
     if (!v->numeric)
         return;
     qd_buf_puts(b, "at:");
@@ -584,6 +608,11 @@ static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
         cli_eom_sympy_bind(v->ctx, b, v->e->q[j], true);
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         cli_eom_sympy_bind(v->ctx, b, qd_model_param(m, i), false);
+    for (size_t i = 0; i < qd_model_nisoperimetric(m); i++) { /* constants like the parameters */
+        const qd_expr *lam = qd_model_isoperimetric_multiplier(m, i);
+        if (qd_expr_kind(lam) == QD_SYMBOL && qd_symbol_role(lam) == QD_ROLE_PLAIN)
+            cli_eom_sympy_bind(v->ctx, b, lam, false);
+    }
     st = sympy_functions(v, b);
     qd_buf_puts(b, "\n");
     if (st == QD_OK)

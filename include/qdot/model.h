@@ -125,6 +125,20 @@ QD_API size_t qd_model_nconstraints(const qd_model *m);
 QD_API const char *qd_model_constraint_name(const qd_model *m, size_t i);
 QD_API const qd_expr *qd_model_constraint(const qd_model *m, size_t i);
 
+/* The calculus of variations (docs/language.md): `independent x` names the
+ * independent variable x, which is the time symbol t in every expression
+ * (NULL when the model does not rename it); `constraint NAME: integral(G) = l`
+ * is an isoperimetric condition, integral G dt = l, whose multiplier
+ * lambda_NAME (a constant symbol, or the parameter of that name when the
+ * model declares one, its number when that is fixed) stands in L as
+ * -lambda_NAME*G.  NULL for an index out of range. */
+QD_API const char *qd_model_independent(const qd_model *m);
+QD_API size_t qd_model_nisoperimetric(const qd_model *m);
+QD_API const char *qd_model_isoperimetric_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_isoperimetric(const qd_model *m, size_t i);       /* G */
+QD_API const qd_expr *qd_model_isoperimetric_value(const qd_model *m, size_t i); /* l */
+QD_API const qd_expr *qd_model_isoperimetric_multiplier(const qd_model *m, size_t i);
+
 /* Reactions (`reaction [LABEL:] CON on r`), in the order given: the
  * Cartesian force that constraint CON exerts at the point r (a position,
  * free of velocities) is wanted; qd_eom_reaction computes it.  The name is

@@ -113,7 +113,7 @@ const char **qd__mdl_known_names(const parser *p, size_t *count) {
     };
     size_t nextra = sizeof extra / sizeof extra[0];
     size_t cap = 2 * m->ncoords + m->nparams + m->ndefs + m->nspeeds + m->nfuncs + QD_FUNC_COUNT +
-                 nextra + 1,
+                 nextra + 2,
            n = 0;
     const char **v = qd__malloc(p->ctx, cap * sizeof *v);
     if (!v) {
@@ -134,6 +134,8 @@ const char **qd__mdl_known_names(const parser *p, size_t *count) {
         v[n++] = qd_expr_name(m->speeds[i].sym);
     for (size_t i = 0; i < m->nfuncs; i++)
         v[n++] = m->funcs[i];
+    if (m->indep)
+        v[n++] = m->indep;
     for (int f = 0; f < QD_FUNC_COUNT; f++)
         v[n++] = qd_func_name((qd_func)f);
     for (size_t i = 0; i < nextra; i++)

@@ -255,8 +255,8 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
     const qd_expr *k = NULL;
     if (p->eps_ok && qd__mdl_name_is(s, off, n, "eps"))
         k = qd__mdl_eps_symbol(C(p));
-    else if (qd__mdl_name_is(s, off, n, "t"))
-        k = qd_time(C(p));
+    else if (qd__mdl_name_is(s, off, n, "t") || (m->indep && qd__mdl_name_is(s, off, n, m->indep)))
+        k = qd_time(C(p)); /* `independent x`: x is the time symbol by another name */
     else if (qd__mdl_name_is(s, off, n, "pi"))
         k = qd_const(C(p), QD_PI);
     else if (qd__mdl_name_is(s, off, n, "e"))
@@ -364,6 +364,10 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     const char *uf = user_function(p, off, n);
     if (!uf && qd__mdl_is_body_call(name) && (qd__mdl_body_call_ahead(p) || !names_a_value(p, name)))
         return qd__mdl_body_call(p, name, off, out);
+    if (!uf && !strcmp(name, "integral"))
+        return qd__mdl_perr(p, off, n, "write it as an isoperimetric constraint: "
+                            "constraint length: integral(sqrt(1 + y'^2)) = l",
+                            "integral() is only meaningful in a constraint");
     value a[MAX_ARGS];
     size_t na, end = off;
     if (!parse_args(p, a, &na, &end))

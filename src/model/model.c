@@ -112,6 +112,7 @@ void qd_model_free(qd_model *m) {
     qd__free(m->init);
     qd__free(m->init_defs);
     qd__free(m->wheres);
+    qd__mdl_free_isoperimetric(m);
     qd__free(m);
 }
 

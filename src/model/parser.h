@@ -83,6 +83,18 @@ typedef struct speed {
     const qd_expr *init_def;   /* as written, in the parameters */
 } speed;
 
+/* `constraint NAME: integral(EXPR) = VALUE` (variational.c): the
+ * isoperimetric condition that the functional integral EXPR dt (t the
+ * independent variable) takes VALUE; its multiplier lambda_NAME is a constant,
+ * and -lambda_NAME*EXPR is added to L. */
+typedef struct isoper {
+    const char *name;          /* owned copy */
+    const qd_expr *expr;
+    const qd_expr *value;      /* the number */
+    const qd_expr *value_def;  /* as written, in the parameters */
+    const qd_expr *lambda;
+} isoper;
+
 typedef struct particle {
     const qd_expr *mass;
     const qd_expr *r[3];
@@ -151,6 +163,10 @@ struct qd_model {
     const char *src;           /* the text being read (the model's or an added statement) */
     char **added;              /* owned copies of the statements added after the parse */
     size_t nadded;
+    char *indep;               /* `independent x`: the name the time symbol goes by, or NULL */
+    isoper *isos;              /* isoperimetric constraints (variational.c) */
+    size_t nisos;
+    size_t nisos_applied;      /* how many of them L already holds */
 };
 
 typedef struct parser {
@@ -241,6 +257,21 @@ long qd__mdl_find_speed(const qd_model *m, const char *name, size_t n);
 /* A statement (H) that a model with speeds cannot have: an error at
  * off..off+len when it has some. */
 bool qd__mdl_no_speeds_yet(parser *p, const char *what, size_t off, size_t len);
+
+/* variational.c: `independent x`, `constraint NAME: integral(EXPR) = VALUE` */
+bool qd__mdl_stmt_independent(parser *p);
+/* The integral(...) of an isoperimetric constraint named name, at the token
+ * `integral`; at: where the statement is, for qd_model_where. */
+bool qd__mdl_isoperimetric(parser *p, const char *name, size_t at_off, size_t at_len);
+/* Is the token `integral` followed by '('? */
+bool qd__mdl_integral_ahead(const parser *p);
+/* Add -lambda*EXPR to L for the conditions not yet in it (after L is made). */
+bool qd__mdl_apply_isoperimetric(parser *p);
+bool qd__mdl_isoperimetric_named(const qd_model *m, const char *name);
+void qd__mdl_free_isoperimetric(qd_model *m); /* and the independent variable's name */
+
+/* stmt.c: a constant (numbers and parameters) as written (*def) and its number (*out) */
+bool qd__mdl_parse_constant(parser *p, const qd_expr **def, const qd_expr **out, const char *what);
 
 /* reaction.c */
 bool qd__mdl_stmt_rolls(parser *p);     /* roll.c */

@@ -71,6 +71,8 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
         kind = "momentum";
     if (!kind && qd__mdl_find_speed(m, name, strlen(name)) >= 0)
         kind = "speed";
+    if (!kind && m->indep && !strcmp(name, m->indep))
+        kind = "independent variable";
     qd_func f;
     if (!kind && (qd_func_from_name(name, &f) || !strcmp(name, "sqrt") || !strcmp(name, "t") ||
                   !strcmp(name, "pi")))
@@ -87,7 +89,8 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
         return true;
     char hint[128];
     snprintf(hint, sizeof hint, "choose another name for the %s", what);
-    return qd__mdl_perr_tok(p, hint, "'%s' is already a %s", name, kind);
+    return qd__mdl_perr_tok(p, hint, "'%s' is already %s %s", name,
+                            strchr("aeiou", kind[0]) ? "an" : "a", kind);
 }
 
 /* coordinates NAME (',' NAME)* */
@@ -148,6 +151,14 @@ static const qd_expr *given_value(parser *p, const char *name) {
 /* A constant: an expression of numbers, constants and parameters.  *def is
  * it as written (or given, when given is not NULL), *out its number with the
  * parameters' values put in. */
+static bool parse_constant(parser *p, const qd_expr *given, const qd_expr **def,
+                           const qd_expr **out, const char *what);
+
+bool qd__mdl_parse_constant(parser *p, const qd_expr **def, const qd_expr **out,
+                            const char *what) {
+    return parse_constant(p, NULL, def, out, what);
+}
+
 static bool parse_constant(parser *p, const qd_expr *given, const qd_expr **def,
                            const qd_expr **out, const char *what) {
     size_t off = p->lx.tok.off;
@@ -452,7 +463,7 @@ static bool constraint_named(const qd_model *m, const char *name) {
         if (!strcmp(m->con_names[i], name))
             return true;
     return in_list(m->sudden, m->nsudden, name) || in_list(m->impacts, m->nimpacts, name) ||
-           in_list(m->prescribed, m->nprescribed, name);
+           in_list(m->prescribed, m->nprescribed, name) || qd__mdl_isoperimetric_named(m, name);
 }
 
 static bool add_constraint_where(qd_model *m, const char *name, token at) {
@@ -487,6 +498,9 @@ static bool stmt_constraint(parser *p) {
             snprintf(name, sizeof name, "c%zu", k++);
         while (constraint_named(m, name));
     }
+    if (qd__mdl_integral_ahead(p))
+        return named ? qd__mdl_isoperimetric(p, name, at.off, at.len)
+                     : qd__mdl_isoperimetric(p, name, p->lx.tok.off, p->lx.tok.len);
     size_t off = p->lx.tok.off;
     const qd_expr *lhs, *rhs = NULL;
     if (!qd__mdl_parse_scalar(p, &lhs, "a constraint"))
@@ -589,6 +603,7 @@ static const struct stmt_kw {
     {"symmetry", qd__mdl_stmt_symmetry, true},  {"integral", qd__mdl_stmt_integral, true},
     {"impulse", qd__mdl_stmt_impulse, true},    {"impact", qd__mdl_stmt_impact, true},
     {"prescribe", qd__mdl_stmt_prescribe, true}, {"speeds", qd__mdl_stmt_speeds, true},
+    {"independent", qd__mdl_stmt_independent, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -654,6 +669,12 @@ bool qd__mdl_finish(parser *p) {
         return qd__mdl_perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
     if (!qd__mdl_check_integrals(p))
         return false;
+    if (m->H && m->nisos) {
+        qd_diag at;
+        qd_model_where(m, "H", &at);
+        return qd__mdl_perr(p, at.offset, at.length, "write the integrand as L = ... in the velocities",
+                            "an isoperimetric constraint needs a Lagrangian, not H");
+    }
     if (m->H)
         return true; /* the Lagrangian, if any, is the mechanics layer's inverse Legendre */
     if (!m->L && !m->T)
@@ -664,9 +685,10 @@ bool qd__mdl_finish(parser *p) {
     if (!qd_model_lagrangian_given(m)) {
         const qd_expr *zero = qd_int(ctx, 0);
         m->L = qd_sub(ctx, qd_sub(ctx, m->T, m->V ? m->V : zero), m->U ? m->U : zero);
+        m->nisos_applied = 0; /* a new L: every isoperimetric term again */
     }
     if (!m->L)
         return qd__mdl_perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
-    return true;
+    return qd__mdl_apply_isoperimetric(p);
 }
 

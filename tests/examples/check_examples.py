@@ -80,6 +80,30 @@ def _(q, v, t, p):
     return solve(M, f)
 
 
+# The calculus of variations (`independent x`; Desloge vol. 2, App. 32,
+# seed-desloge-D.md): t below is the model's independent variable.
+@example('catenary', ['y'], ranges={'y': (0.5, 2.0)})
+def _(q, v, t, p):
+    # App. 32 Thm 5, the hanging chain: (w y - lambda) y'' = w (1 + y'^2); a
+    # numeric eom takes the multiplier lambda_length (not a parameter) as 0
+    lam = 0.0
+    return [p['w'] * (1 + v['y']**2) / (p['w'] * q['y'] - lam)]
+
+
+@example('brachistochrone', ['y'], ranges={'y': (0.2, 2.0)})
+def _(q, v, t, p):
+    # App. 32 Ex. 2 (T35): 2 y y'' + 1 + y'^2 = 0, whatever g
+    return [-(1 + v['y']**2) / (2 * q['y'])]
+
+
+@example('sphere_geodesic', ['phi'], t=(0.3, 2.8))
+def _(q, v, t, p):
+    # App. 32 Thm 3 Case 1 (phi absent): sin^2 th phi'/sqrt(1 + sin^2 th phi'^2)
+    # is constant; its derivative gives phi'' = -cos th phi' (2 + sin^2 th phi'^2)/sin th
+    s, P = sin(t), v['phi']
+    return [-cos(t) * P * (2 + s * s * P * P) / s]
+
+
 # The action-angle examples (qdot action; Desloge ch. 79, seed-desloge-D.md).
 @example('action_pendulum', ['theta'])
 def _(q, v, t, p):
