@@ -4,12 +4,13 @@
  * [W | Wc] and the kinematics q' = W u + w, then one of the methods
  * (kane.c, appell.c, hamel.c) for M_u u' = f_u.
  *
- * P is inverted symbolically, with the constant column -p0 alongside
- * (P [W | Wc | w] = [I | -p0]), by the fraction-free elimination of
- * qd_eom_solve: P is sparse in practice (a speed is a few velocities, a
- * rolling constraint three), so the inverse stays short.  A singular P is
- * reported at the row that depends on those before it, found numerically at
- * a random state.
+ * P is not inverted: P q' = (u - b, s - c0) is solved once by the
+ * fraction-free elimination of qd_eom_solve with the speeds (and the
+ * constraints' symbols s, when wanted) in the right-hand side, and W, Wc, w
+ * are read off as coefficients (velocity_map).  P is sparse in practice (a
+ * speed is a few velocities, a rolling constraint three), so the solution
+ * stays short.  A singular P is reported at the row that depends on those
+ * before it, found numerically at a random state.
  */
 #include "spd.h"
 
