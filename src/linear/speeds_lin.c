@@ -407,14 +407,14 @@ static qd_status scan_alloc(qd_ctx *ctx, size_t count, qd_scan *out) {
 /* Bisect on the verdict between samples k - 1 and k. */
 static qd_status bisect(sscan *c, qd_scan *out, size_t k, double tol) {
     double lo = out->value[k - 1], hi = out->value[k], margin;
-    int from = out->stable[k - 1], v;
+    int from = out->stable[k - 1], v = from;
     qd_status st = QD_OK;
     while (st == QD_OK && hi - lo > tol) {
         double mid = lo + (hi - lo) / 2;
         if (mid <= lo || mid >= hi)
             break;
-        st = sscan_at(c, mid, &v, &margin);
-        *(v == from ? &lo : &hi) = mid;
+        if ((st = sscan_at(c, mid, &v, &margin)) == QD_OK)
+            *(v == from ? &lo : &hi) = mid;
     }
     out->trans[out->ntrans++] = (qd_scan_transition){lo + (hi - lo) / 2, lo, hi, from,
                                                      out->stable[k]};
