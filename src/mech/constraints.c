@@ -49,7 +49,7 @@ static const qd_expr *tidy(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
 #define PFAFFIAN_HINT "write the constraint as sum_j a_j(q, t) q'_j + a0(q, t) = 0"
 
 /* c->a, c->a0 and kind; the constraint differentiated once more than
- * needed for its velocity form goes to *closing. */
+ * needed for its velocity form goes to *closing, when closing is not NULL. */
 static qd_status split(qd_ctx *ctx, const qd_eom *e, qd_con *c, const qd_expr **closing) {
     size_t n = e->n;
     if (has_any(c->expr, n, e->qdd)) {
@@ -65,6 +65,8 @@ static qd_status split(qd_ctx *ctx, const qd_eom *e, qd_con *c, const qd_expr **
         for (size_t j = 0; j < n; j++)
             c->a[j] = qd_diff(ctx, c->expr, e->q[j]);
         c->a0 = qd_diff(ctx, c->expr, qd_time(ctx));
+        if (!closing)
+            return c->a0 ? QD_OK : qd_ctx_status(ctx);
         *closing = qd_dt(ctx, qd_dt(ctx, c->expr));
         return *closing ? QD_OK : qd_ctx_status(ctx);
     }
@@ -80,6 +82,8 @@ static qd_status split(qd_ctx *ctx, const qd_eom *e, qd_con *c, const qd_expr **
                            QD_REASON_NOT_PFAFFIAN, PFAFFIAN_HINT);
         return st;
     }
+    if (!closing)
+        return st == QD_OK ? QD_OK : qd_ctx_status(ctx);
     *closing = st == QD_OK ? qd_dt(ctx, c->expr) : NULL;
     return *closing ? QD_OK : qd_ctx_status(ctx);
 }
@@ -98,11 +102,11 @@ static const qd_expr *multiplier(qd_ctx *ctx, const char *name) {
     return qd_symbol(ctx, buf);
 }
 
-static qd_status row(qd_ctx *ctx, qd_eom *e, size_t k, const qd_expr **scratch) {
+static qd_status row(qd_ctx *ctx, qd_eom *e, size_t k, const qd_expr **scratch, bool with_b) {
     qd_con *c = &e->con[k];
     const qd_expr *closing = NULL, *rest = NULL;
-    qd_status st = split(ctx, e, c, &closing);
-    if (st == QD_OK)
+    qd_status st = split(ctx, e, c, with_b ? &closing : NULL);
+    if (st == QD_OK && with_b)
         st = qd_linear_coeffs(ctx, closing, e->n, e->qdd, scratch, &rest);
     if (st != QD_OK)
         return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : st;
@@ -110,9 +114,10 @@ static qd_status row(qd_ctx *ctx, qd_eom *e, size_t k, const qd_expr **scratch) 
         if (!(c->a[j] = qd_simplify(ctx, c->a[j])))
             return qd_ctx_status(ctx);
     c->a0 = qd_simplify(ctx, c->a0);
-    e->b[k] = tidy(ctx, e, qd_neg(ctx, rest));
+    if (with_b && !(e->b[k] = tidy(ctx, e, qd_neg(ctx, rest))))
+        return qd_ctx_status(ctx);
     c->lambda = multiplier(ctx, c->name);
-    return c->a0 && e->b[k] && c->lambda ? QD_OK : qd_ctx_status(ctx);
+    return c->a0 && c->lambda ? QD_OK : qd_ctx_status(ctx);
 }
 
 /* ---- classification on the configuration manifold --------------------------
@@ -358,7 +363,7 @@ static qd_status classify_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     return st;
 }
 
-qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
+qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s, bool with_b) {
     size_t n = e->n, m = s->ncon;
     e->ncon = m;
     e->con = qd__calloc(ctx, m ? m : 1, sizeof *e->con);
@@ -368,7 +373,7 @@ qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     qd_status st = e->con && e->A && e->b && scratch ? QD_OK : QD_ERR_NOMEM;
     for (size_t k = 0; st == QD_OK && k < m; k++) {
         e->con[k] = (qd_con){.name = s->con_name[k], .expr = s->con_expr[k], .a = e->A + k * n};
-        st = row(ctx, e, k, scratch);
+        st = row(ctx, e, k, scratch, with_b);
         if (st == QD_OK && e->con[k].kind != QD_CON_HOLONOMIC)
             st = qd__con_classify(ctx, n, e->q, &e->con[k]);
     }

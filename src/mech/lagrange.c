@@ -203,7 +203,7 @@ qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
         return NULL;
     }
-    if (set_coords(ctx, e, s) != QD_OK || qd__con_setup(ctx, e, s) != QD_OK) {
+    if (set_coords(ctx, e, s) != QD_OK || qd__con_setup(ctx, e, s, false) != QD_OK) {
         qd_eom_free(e);
         return NULL;
     }
@@ -224,7 +224,7 @@ static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
         return qd_ctx_status(ctx);
     st = derive_all(ctx, e, s, e->L);
     if (st == QD_OK)
-        st = qd__con_setup(ctx, e, s);
+        st = qd__con_setup(ctx, e, s, true);
     if (st == QD_OK && (st = qd__check_singular(ctx, e, s->T)) == QD_ERR_SINGULAR)
         qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, 0, s->L_given ? "L" : "T",
                            QD_REASON_SINGULAR_MASS,

@@ -83,6 +83,11 @@ const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *A);
 qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
                          const qd_expr *const *B, const qd_expr **X, size_t max_ops);
 
+/* The same for sparse A (solve_sparse.c): rows and columns with a single
+ * entry are solved directly, only the rest by elimination. */
+qd_status qd__solve_sparse(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
+                           const qd_expr *const *B, const qd_expr **X, size_t max_ops);
+
 /* ---- constraints ---------------------------------------------------------- */
 
 /* What Lagrange's equations are derived from: a model's content, or that
@@ -103,7 +108,8 @@ qd_status qd__sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s);
 void qd__sys_free(qd__sys *s);
 
 /* A qd_eom with e's coordinates and constraints (qd__con_setup) but no
- * Lagrange rows (M and f NULL): what the equations in speeds start from. */
+ * Lagrange rows (M and f NULL) and no closing rows (b[k] NULL): what the
+ * equations in speeds start from (they need the velocity rows only). */
 qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s);
 
 /* Lagrange's rows M q'' = f of a shell from s with the Lagrangian L (as
@@ -120,8 +126,9 @@ const qd_expr *qd__sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s);
 qd_status qd__eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *nelim);
 
 /* Fill e->ncon, e->con, e->A and e->b from s (e->q, qd, qdd set): velocity
- * coefficients, multipliers and the closing rows A q'' = b. */
-qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s);
+ * coefficients, multipliers and the closing rows A q'' = b (with_b; else
+ * every b[k] stays NULL: the closing rows cost more than the rest). */
+qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s, bool with_b);
 
 /* Is A (m*n, row-major) of rank below m?  Then mu (m) receives a vector
  * with A^T mu = 0, largest entry 1 in magnitude.  tol is relative. */

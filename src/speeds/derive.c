@@ -4,12 +4,13 @@
  * [W | Wc] and the kinematics q' = W u + w, then one of the methods
  * (kane.c, appell.c, hamel.c) for M_u u' = f_u.
  *
- * P is not inverted: P q' = (u - b, s - c0) is solved once by the
- * fraction-free elimination of qd_eom_solve with the speeds (and the
- * constraints' symbols s, when wanted) in the right-hand side, and W, Wc, w
- * are read off as coefficients (velocity_map).  P is sparse in practice (a
- * speed is a few velocities, a rolling constraint three), so the solution
- * stays short.  A singular P is reported at the row that depends on those
+ * P is not inverted: P q' = (u - b, s - c0) is solved once with the speeds
+ * (and the constraints' symbols s, when wanted) in the right-hand side, and
+ * W, Wc, w are read off as coefficients (velocity_map).  P is sparse in
+ * practice (a speed is a few velocities, a rolling constraint three): the
+ * rows and columns with one entry are solved directly and only the rest by
+ * fraction-free elimination (qd__solve_sparse), so the solution stays short
+ * and costs little (the rolling disk's map is triangular).  A singular P is reported at the row that depends on those
  * before it, found numerically at a random state.
  */
 #include "spd.h"
@@ -248,7 +249,7 @@ static qd_status velocity_map(qd__spd *d) {
             B[i] = qd_add(ctx, sym[i], B[i]);
         zero[i] = qd_int(ctx, 0);
     }
-    qd_status st = qd__solve_cols(ctx, n, d->P, 1, B, X, 0);
+    qd_status st = qd__solve_sparse(ctx, n, d->P, 1, B, X, 0);
     if (st == QD_ERR_SINGULAR)
         st = singular_map(d);
     for (size_t j = 0; st == QD_OK && j < n; j++) {
