@@ -100,7 +100,7 @@ static const qd_expr *grouped(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
 /* Row j: the coefficients of every acceleration (coeffs, n of them) and
  * f_j. */
 static qd_status derive_row(qd_ctx *ctx, qd_eom *e, const qd_expr *L, const qd_expr *D,
-                            const qd_expr *Q, size_t j, const qd_expr **coeffs) {
+                            const qd_expr *Q, size_t j, const qd_expr **coeffs, bool raw) {
     const qd_expr *p = qd_diff(ctx, L, e->qd[j]);
     const qd_expr *E = qd_sub(ctx, qd_dt(ctx, p), qd_diff(ctx, L, e->q[j]));
     if (D)
@@ -119,29 +119,33 @@ static qd_status derive_row(qd_ctx *ctx, qd_eom *e, const qd_expr *L, const qd_e
         qd_ctx_error_about(ctx, QD_SUBJECT_COORD, j, qd_expr_name(e->q[j]), QD_REASON_NONE, NULL);
         return st;
     }
-    e->f[j] = qd_simplify(ctx, grouped(ctx, e, qd_neg(ctx, rest)));
+    e->f[j] = grouped(ctx, e, qd_neg(ctx, rest));
+    if (!raw)
+        e->f[j] = qd_simplify(ctx, e->f[j]);
     return e->f[j] ? QD_OK : qd_ctx_status(ctx);
 }
 
 /* Fill M's row j from its coefficients: k >= j only when M is known to be
  * symmetric (the lower part is mirrored from earlier rows). */
-static qd_status fill_row(qd_ctx *ctx, qd_eom *e, size_t j, const qd_expr **coeffs, bool sym) {
+static qd_status fill_row(qd_ctx *ctx, qd_eom *e, size_t j, const qd_expr **coeffs, bool sym,
+                          bool raw) {
     size_t n = e->n;
     for (size_t k = sym ? j : 0; k < n; k++) {
-        e->M[j * n + k] = qd_simplify(ctx, coeffs[k]);
+        e->M[j * n + k] = raw ? coeffs[k] : qd_simplify(ctx, coeffs[k]);
         if (!e->M[j * n + k])
             return qd_ctx_status(ctx);
         if (sym)
             e->M[k * n + j] = e->M[j * n + k];
     }
 #ifndef NDEBUG
-    for (size_t k = 0; sym && k < j; k++)
+    for (size_t k = 0; sym && !raw && k < j; k++)
         check_symmetric(ctx, e, k, coeffs[k], j);
 #endif
     return QD_OK;
 }
 
-static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L) {
+static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L,
+                            bool raw) {
     bool sym = !has_any(s->D, e->n, e->qdd);
     for (size_t j = 0; j < e->n; j++)
         sym = sym && !has_any(s->Q[j], e->n, e->qdd);
@@ -150,9 +154,9 @@ static qd_status derive_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_e
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
     for (size_t j = 0; j < e->n && st == QD_OK; j++) {
-        st = derive_row(ctx, e, L, s->D, s->Q[j], j, coeffs);
+        st = derive_row(ctx, e, L, s->D, s->Q[j], j, coeffs, raw);
         if (st == QD_OK)
-            st = fill_row(ctx, e, j, coeffs, sym);
+            st = fill_row(ctx, e, j, coeffs, sym, raw);
     }
     qd__free(coeffs);
     return st;
@@ -210,9 +214,9 @@ qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s) {
     return e;
 }
 
-qd_status qd__eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L) {
+qd_status qd__eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L, bool raw) {
     e->L = L;
-    return derive_all(ctx, e, s, L);
+    return derive_all(ctx, e, s, L, raw);
 }
 
 static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
@@ -222,7 +226,7 @@ static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     e->L = qd__sys_lagrangian(ctx, e, s);
     if (!e->L)
         return qd_ctx_status(ctx);
-    st = derive_all(ctx, e, s, e->L);
+    st = derive_all(ctx, e, s, e->L, false);
     if (st == QD_OK)
         st = qd__con_setup(ctx, e, s, true);
     if (st == QD_OK && (st = qd__check_singular(ctx, e, s->T)) == QD_ERR_SINGULAR)
