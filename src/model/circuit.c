@@ -93,7 +93,7 @@ static bool lone_name_not_coordinate(parser *p) {
 /* Is x a constant: numbers and parameters only? */
 static bool is_constant(parser *p, const qd_expr *x) {
     const qd_expr *sym[8];
-    size_t n = qd_free_symbols(C(p), x, sym, 8);
+    size_t n = qd_free_symbols(C(p), x, sym, 8); /* 0 out of memory: checked after */
     if (n > 8)
         return false;
     for (size_t i = 0; i < n; i++)
@@ -122,6 +122,8 @@ static bool check_linear(parser *p, branch *br) {
         ok = br->a[j] && is_constant(p, br->a[j]);
         any = any || (ok && !qd_is_zero(br->a[j]));
     }
+    if (qd__ctx_nomem(C(p))) /* a NULL above may be only that */
+        return qd__mdl_perr(p, br->off, br->len, NULL, "out of memory");
     if (!ok)
         return qd__mdl_perr(p, br->off, br->len, BRANCH_HINT,
                             "a branch must be linear in the charges, with constant coefficients");

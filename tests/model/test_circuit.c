@@ -23,6 +23,7 @@
 
 #include "qdot/qdot.h"
 #include "qdot/model.h"
+#include "util/fault.h"
 
 static qd_model *parse_ok(qd_ctx *ctx, const char *text) {
     qd_diag d;
@@ -241,13 +242,54 @@ static void not_with_hamiltonian(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* Every allocation of the parse refused in turn: a clean out-of-memory or
+ * the right model: two loops with a mutual inductance, a shared capacitor,
+ * resistance and source.  At q = (1, 2), q' = (3, 5), t = 0:
+ * L = (3^2 + 5^2)/2 + 2*3*5 - ((1 - 2)^2 + 2^2)/(2*4) = 47 - 5/8,
+ * D = 7/2*(3 - 5)^2 = 14, Q[q2] = -cos(0) = -1 (the source on q1 - q2). */
+static qd_status fault_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)f;
+    (void)data;
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, "coordinates q1, q2\nparameters L = 1, M = 2, C = 4, R = 7\n"
+                                      "inductance L on q1\ninductance L on q2\n"
+                                      "inductance M between q1, q2\ncapacitance C on q1 - q2\n"
+                                      "capacitance C on q2\nresistance R on q1 - q2\n"
+                                      "source cos(t) on q1 - q2\n", &d);
+    if (!m)
+        return qd_ctx_status(ctx);
+    const qd_expr *sym[] = {qd_model_coord(m, 0), qd_model_coord(m, 1),
+                            qd_jet(ctx, qd_model_coord(m, 0), 1), qd_jet(ctx, qd_model_coord(m, 1), 1),
+                            qd_time(ctx), qd_model_param(m, 0), qd_model_param(m, 1),
+                            qd_model_param(m, 2), qd_model_param(m, 3)};
+    double at[] = {1, 2, 3, 5, 0, 1, 2, 4, 7}, L = 0, D = 0, Q2 = 0;
+    qd_status st = qd_eval(ctx, qd_model_lagrangian(m), 9, sym, at, &L);
+    if (st == QD_OK)
+        st = qd_eval(ctx, qd_model_dissipation(m), 9, sym, at, &D);
+    if (st == QD_OK)
+        st = qd_eval(ctx, qd_model_force(m, 1), 9, sym, at, &Q2);
+    if (st == QD_OK) {
+        assert_true(fabs(L - (47 - 5.0 / 8)) < 1e-12);
+        assert_true(fabs(D - 14) < 1e-12);
+        assert_true(fabs(Q2 + 1) < 1e-12);
+    }
+    qd_model_free(m);
+    return st;
+}
+
+static void out_of_memory(void **state) {
+    (void)state;
+    qt_fault_stats ls = qt_fault_loop("circuit statements", fault_body, NULL, 1);
+    assert_true(ls.allocs > 10);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ladder_as_by_hand),       cmocka_unit_test(wires_as_by_hand),
         cmocka_unit_test(branches_as_by_hand),     cmocka_unit_test(elements_add_to_energies),
         cmocka_unit_test(wires_attract),           cmocka_unit_test(names_still_definitions),
         cmocka_unit_test(added_statement),         cmocka_unit_test(errors_located),
-        cmocka_unit_test(not_with_hamiltonian),
+        cmocka_unit_test(not_with_hamiltonian),    cmocka_unit_test(out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
