@@ -622,11 +622,13 @@ static bool unknown_statement(parser *p) {
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {
+        /* spaces, not commas: with the circuit statements the whole list
+         * fills the 255 bytes of a diagnostic's hint */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
-            n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? ", " : "", words[i]);
+            n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
-            snprintf(hint + n, sizeof hint - n, ") or is a definition NAME = ...");
+            snprintf(hint + n, sizeof hint - n, ") or NAME = ...");
     }
     return qd__mdl_perr_tok(p, hint, "unknown statement '%s'", word);
 }

@@ -228,6 +228,19 @@ static void errors_located(void **state) {
     }
 }
 
+/* An unknown statement's hint lists every keyword, the circuit ones too,
+ * and still says what else a line may be (it was cut at "resistance, "). */
+static void unknown_statement_hint(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_diag d;
+    memset(&d, 0, sizeof d);
+    assert_null(qd_model_parse(ctx, "coordinates q\nzzzzzzzzzzzz q\n", &d));
+    assert_non_null(strstr(d.hint, "a statement starts with a keyword (coordinates parameters"));
+    assert_non_null(strstr(d.hint, " inductance capacitance resistance source) or NAME = ..."));
+    qd_ctx_free(ctx);
+}
+
 /* A model given by H has no energies to add an inductance to. */
 static void not_with_hamiltonian(void **state) {
     (void)state;
@@ -290,6 +303,7 @@ int main(void) {
         cmocka_unit_test(wires_attract),           cmocka_unit_test(names_still_definitions),
         cmocka_unit_test(added_statement),         cmocka_unit_test(errors_located),
         cmocka_unit_test(not_with_hamiltonian),    cmocka_unit_test(out_of_memory),
+        cmocka_unit_test(unknown_statement_hint),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
