@@ -63,10 +63,11 @@ static bool is_coordinate(const parser *p, size_t off, size_t len) {
 
 /* A lone name in the branch's place that is no coordinate (a typo, a
  * parameter): say so with the nearest coordinate, before the expression
- * parser calls it an unknown name. */
+ * parser calls it an unknown name.  A definition may be a branch (b = q1 - q2). */
 static bool lone_name_not_coordinate(parser *p) {
     token at = p->lx.tok;
-    if (at.kind != TK_IDENT || is_coordinate(p, at.off, at.len))
+    if (at.kind != TK_IDENT || is_coordinate(p, at.off, at.len) ||
+        qd__mdl_find_def(p->m, p->lx.src + at.off, at.len))
         return false;
     lexer save = p->lx;
     qd__lex_next(&p->lx);
@@ -102,32 +103,43 @@ static bool is_constant(parser *p, const qd_expr *x) {
     return true;
 }
 
-/* b = sum a_j q_j with constant a_j, not all zero, and nothing else. */
-static bool check_linear(parser *p, branch *br) {
+static const qd_expr *rate_in(parser *p, const qd_expr *x);
+
+/* Which way b fails to be a branch: 0 it is one, 1 not linear (or not
+ * constant coefficients, or a term with no charge), 2 no charge at all. */
+static int branch_fault(parser *p, branch *br) {
     size_t n = p->m->ncoords;
     const qd_expr *rest;
     qd_status st = qd_linear_coeffs(C(p), br->b, n, p->m->coords, br->a, &rest);
-    if (st == QD_ERR_NOMEM || qd__ctx_nomem(C(p)))
-        return qd__mdl_perr(p, br->off, br->len, NULL, "out of memory");
-    bool ok = st == QD_OK;
-    if (!ok)
-        qd__ctx_recover(C(p));
-    if (ok) {
-        const qd_expr *r = qd_simplify(C(p), rest);
-        ok = r && qd_is_zero(r);
+    if (st != QD_OK) {
+        qd__ctx_recover(C(p)); /* keeps an out of memory */
+        return 1;
     }
-    bool any = false;
-    for (size_t j = 0; ok && j < n; j++) {
+    bool any = false, constant = true;
+    for (size_t j = 0; j < n; j++) {
         br->a[j] = qd_simplify(C(p), br->a[j]);
-        ok = br->a[j] && is_constant(p, br->a[j]);
-        any = any || (ok && !qd_is_zero(br->a[j]));
+        constant = constant && br->a[j] && is_constant(p, br->a[j]);
+        any = any || (br->a[j] && !qd_is_zero(br->a[j]));
     }
+    const qd_expr *r = qd_simplify(C(p), rest);
+    if (!any)
+        return 2;
+    return constant && r && qd_is_zero(r) ? 0 : 1;
+}
+
+/* b = sum a_j q_j with constant a_j, not all zero, and nothing else. */
+static bool check_linear(parser *p, branch *br) {
+    int fault = branch_fault(p, br);
     if (qd__ctx_nomem(C(p))) /* a NULL above may be only that */
         return qd__mdl_perr(p, br->off, br->len, NULL, "out of memory");
-    if (!ok)
+    const qd_expr *rate = fault ? rate_in(p, br->b) : NULL;
+    if (rate)
+        return qd__mdl_perr(p, br->off, br->len, "write the charge: q for the current q'",
+                            "a branch is a charge, not a current (%s)", qd_expr_name(rate));
+    if (fault == 1)
         return qd__mdl_perr(p, br->off, br->len, BRANCH_HINT,
                             "a branch must be linear in the charges, with constant coefficients");
-    if (!any)
+    if (fault == 2)
         return qd__mdl_perr(p, br->off, br->len, BRANCH_HINT, "the branch has no charge coordinate");
     return true;
 }

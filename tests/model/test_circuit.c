@@ -105,6 +105,15 @@ static void branches_as_by_hand(void **state) {
                       "Q[q1] = E\nQ[q3] = -n*E\n");
 }
 
+/* A branch may be a definition (and then the coordinate check is the
+ * linearity check's). */
+static void branch_from_definition(void **state) {
+    (void)state;
+    assert_as_by_hand("coordinates q1, q2\nparameters C = 3\nb = q1 - q2\n",
+                      "capacitance C on b\nT = q1'^2 + q2'^2\n",
+                      "V = (q1 - q2)^2/(2*C)\nT = q1'^2 + q2'^2\n");
+}
+
 /* The elements add to the energies given by hand, before or after them
  * (`V = ...` after a capacitance was "V is given twice" before). */
 static void elements_add_to_energies(void **state) {
@@ -198,11 +207,15 @@ static const bad bads[] = {
     {"capacitance C on q1^2", 18, 4, "a branch must be linear in the charges", "a branch is"},
     {"capacitance C on q1*q2", 18, 5, "a branch must be linear in the charges", NULL},
     {"capacitance C on q1 + 1", 18, 6, "a branch must be linear in the charges", NULL},
-    {"resistance R on q1'", 17, 3, "a branch must be linear in the charges", NULL},
+    {"resistance R on q1'", 17, 3, "a branch is a charge, not a current (q1')",
+     "write the charge: q for the current q'"},
+    {"resistance R on q1 + q2'", 17, 8, "a branch is a charge, not a current (q2')", NULL},
     {"source sin(t) on t*q1", 18, 4, "a branch must be linear in the charges", NULL},
     {"capacitance C on q3", 18, 2, "'q3' is not a coordinate", "did you mean 'q1'?"},
     {"source 1 on R", 13, 1, "'R' is not a coordinate", NULL},
     {"capacitance C on 0*q1", 18, 4, "the branch has no charge coordinate", NULL},
+    {"capacitance C on R*t", 18, 3, "the branch has no charge coordinate", NULL},
+    {"capacitance C on 2*R", 18, 3, "the branch has no charge coordinate", NULL},
     {"resistance R on q1 q2", 20, 2, "unexpected a name after the statement", NULL},
 };
 
@@ -303,7 +316,7 @@ int main(void) {
         cmocka_unit_test(wires_attract),           cmocka_unit_test(names_still_definitions),
         cmocka_unit_test(added_statement),         cmocka_unit_test(errors_located),
         cmocka_unit_test(not_with_hamiltonian),    cmocka_unit_test(out_of_memory),
-        cmocka_unit_test(unknown_statement_hint),
+        cmocka_unit_test(unknown_statement_hint),  cmocka_unit_test(branch_from_definition),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
