@@ -22,6 +22,8 @@ Expected values are closed forms, not output of the code under test:
     held at x = Bl E0/(Re k) by a steady voltage, at x = Bl i/k with
     w = sqrt(k/m) when the current is maintained (`stability --driven`), and
     the coupling creates no energy (conserved with no resistance, no damping);
+  - Byerly Art. 54a's induced current, made in circuit 1: y2' = -M i/L with the
+    usual L (`qdot impulse`, Thomson's theorem);
   - bad elements exit 2 with the place of the error.
 Prints "N passed, N failed"; exit 1 on failure.
 """
@@ -218,6 +220,23 @@ def loudspeaker(qdot):
         check("speaker coupling conserves energy", e < 1e-9, f"{e}")
 
 
+def induced(qdot):
+    """Byerly Art. 54a with the usual self-inductance: y2' = -M i/L, the EMF's
+    impulse (L^2 - M^2) i/L (his (4 L_B^2 - M^2) i/(2 L_B) with L = 2 L_B)."""
+    rc, out, err = run(qdot, "impulse", str(EX / "circuit_induced_currents.qd"), "--format", "json")
+    check("induced rc", rc == 0, err)
+    if rc:
+        return
+    d = json.loads(out)
+    L, M, i = 2, 0.5, 2
+    check("induced current", close(d["velocities_after"]["y2'"], -M * i / L, 1e-12), out[:300])
+    check("induced impulse", close(d["impulsive_multipliers"]["Lambda_make"],
+                                   (L * L - M * M) * i / L, 1e-12), out[:300])
+    Ls, Ms, Is = sp.symbols("L M i", positive=True)
+    got = sp.sympify(d["exact"]["velocities_after"]["y2'"], locals={"L": Ls, "M": Ms, "i": Is})
+    check("induced exact", sp.simplify(got + Ms * Is / Ls) == 0, str(got))
+
+
 def errors(qdot, tmp):
     cases = [
         ("inductance -1 on q", ":3:12: error: an inductance must be positive"),
@@ -236,7 +255,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     qdot = Path(ap.parse_args().build) / "qdot"
-    for f in (ladder, coupled, rlc, wires, loudspeaker):
+    for f in (ladder, coupled, rlc, wires, loudspeaker, induced):
         f(qdot)
     with tempfile.TemporaryDirectory() as tmp:
         errors(qdot, Path(tmp))
