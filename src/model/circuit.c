@@ -91,19 +91,24 @@ static bool lone_name_not_coordinate(parser *p) {
     return true;
 }
 
-/* Is x a constant: numbers and parameters only? */
-static bool is_constant(parser *p, const qd_expr *x) {
-    const qd_expr *sym[8];
-    size_t n = qd_free_symbols(C(p), x, sym, 8); /* 0 out of memory: checked after */
-    if (n > 8)
-        return false;
-    for (size_t i = 0; i < n; i++)
-        if (qd_symbol_role(sym[i]) != QD_ROLE_PARAM)
-            return false;
-    return true;
+/* The first coordinate or rate of order from..4 (four primes at most) in x,
+ * or NULL. */
+static const qd_expr *jet_in(parser *p, const qd_expr *x, unsigned from) {
+    for (size_t j = 0; j < p->m->ncoords; j++)
+        for (unsigned order = from; order <= 4; order++) {
+            const qd_expr *v = qd_jet(C(p), p->m->coords[j], order);
+            if (v && qd_has(x, v))
+                return v;
+        }
+    return NULL;
 }
 
-static const qd_expr *rate_in(parser *p, const qd_expr *x);
+static const qd_expr *rate_in(parser *p, const qd_expr *x) { return jet_in(p, x, 1); }
+
+/* Is x a constant: free of the coordinates, their rates and t? */
+static bool is_constant(parser *p, const qd_expr *x) {
+    return !jet_in(p, x, 0) && !qd_has(x, qd_time(C(p)));
+}
 
 /* Which way b fails to be a branch: 0 it is one, 1 not linear (or not
  * constant coefficients, or a term with no charge), 2 no charge at all. */
@@ -158,16 +163,6 @@ static bool parse_branch(parser *p, branch *br) {
     br->off = v.off;
     br->len = v.len;
     return check_linear(p, br);
-}
-
-/* The first velocity or acceleration in x, or NULL. */
-static const qd_expr *rate_in(parser *p, const qd_expr *x) {
-    const qd_expr *sym[32];
-    size_t n = qd_free_symbols(C(p), x, sym, 32);
-    for (size_t i = 0; i < n && i < 32; i++)
-        if (qd_symbol_role(sym[i]) == QD_ROLE_COORD && qd_symbol_order(sym[i]) > 0)
-            return sym[i];
-    return NULL;
 }
 
 /* An element's value is in the coordinates, parameters and t (an

@@ -112,6 +112,11 @@ static void branch_from_definition(void **state) {
     assert_as_by_hand("coordinates q1, q2\nparameters C = 3\nb = q1 - q2\n",
                       "capacitance C on b\nT = q1'^2 + q2'^2\n",
                       "V = (q1 - q2)^2/(2*C)\nT = q1'^2 + q2'^2\n");
+    /* a coefficient of many parameters is still a constant (was: at most 8) */
+    assert_as_by_hand("coordinates q1, q2\nparameters a = 1, b = 2, c = 3, d = 4, f = 5, g = 6, "
+                      "h = 7, k = 8, n = 9, C = 3\nT = q1'^2 + q2'^2\n",
+                      "capacitance C on (a + b + c + d + f + g + h + k + n)*q1 + q2\n",
+                      "V = ((a + b + c + d + f + g + h + k + n)*q1 + q2)^2/(2*C)\n");
 }
 
 /* The elements add to the energies given by hand, before or after them
