@@ -270,6 +270,12 @@ bool qd__mdl_apply_isoperimetric(parser *p);
 bool qd__mdl_isoperimetric_named(const qd_model *m, const char *name);
 void qd__mdl_free_isoperimetric(qd_model *m); /* and the independent variable's name */
 
+/* circuit.c: `inductance`, `capacitance`, `resistance`, `source` */
+bool qd__mdl_stmt_inductance(parser *p);
+bool qd__mdl_stmt_capacitance(parser *p);
+bool qd__mdl_stmt_resistance(parser *p);
+bool qd__mdl_stmt_source(parser *p);
+
 /* stmt.c: a constant (numbers and parameters) as written (*def) and its number (*out) */
 bool qd__mdl_parse_constant(parser *p, const qd_expr **def, const qd_expr **out, const char *what);
 

@@ -18,6 +18,7 @@
  *   impulse J at r, impulse G on BODY, Qhat[q] = X      (impulse.c)
  *   impact constraint NAME: ..., impact NAME: GAP >= 0, prescribe ...
  *   speeds NAME = EXPR, ...                             (speeds.c)
+ *   inductance, capacitance, resistance, source ... on BRANCH  (circuit.c)
  */
 #include "parser.h"
 #include "../base/mem.h"
@@ -547,12 +548,14 @@ static bool stmt_definition(parser *p) {
     token at = p->lx.tok;
     const qd_expr **slot = reserved_slot(p->m, name);
     bool explicit_T = slot == &p->m->T;
+    /* circuit elements (circuit.c) add to V and D as particles do to T */
+    bool adds = explicit_T || slot == &p->m->V || slot == &p->m->D;
     if (slot && slot != &p->m->D && !qd__mdl_no_hamiltonian_yet(p, name, at.off, at.len))
         return false;
     if (!slot && !qd__mdl_fresh_name(p, "definition"))
         return false;
     /* T adds to the particles'; L is made from T - V - U when not given */
-    bool twice = explicit_T        ? qd_model_where(p->m, "T", NULL)
+    bool twice = adds              ? qd_model_where(p->m, name, NULL)
                  : slot == &p->m->L ? qd_model_lagrangian_given(p->m)
                                     : slot && *slot;
     if (slot && twice) {
@@ -575,8 +578,8 @@ static bool stmt_definition(parser *p) {
                             ? "an energy is a scalar: use dot(v, v) for |v|^2"
                             : "an energy is a scalar",
                         "a %s where a scalar is needed: %s is a scalar", qd__mdl_vkind_name(v.kind), name);
-        /* particle lines and T = ... add up */
-        *slot = explicit_T && *slot ? qd_add(C(p), *slot, v.c[0]) : v.c[0];
+        /* particle lines and T = ... add up (and circuit elements with V, D) */
+        *slot = adds && *slot ? qd_add(C(p), *slot, v.c[0]) : v.c[0];
     } else if (!qd__mdl_add_def(p->m, name, v, at.off, at.len)) {
         return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
     }
@@ -604,6 +607,8 @@ static const struct stmt_kw {
     {"impulse", qd__mdl_stmt_impulse, true},    {"impact", qd__mdl_stmt_impact, true},
     {"prescribe", qd__mdl_stmt_prescribe, true}, {"speeds", qd__mdl_stmt_speeds, true},
     {"independent", qd__mdl_stmt_independent, true},
+    {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
+    {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -617,11 +622,13 @@ static bool unknown_statement(parser *p) {
     if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {
+        /* spaces, not commas: with the circuit statements the whole list
+         * fills the 255 bytes of a diagnostic's hint */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
-            n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? ", " : "", words[i]);
+            n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
-            snprintf(hint + n, sizeof hint - n, ") or is a definition NAME = ...");
+            snprintf(hint + n, sizeof hint - n, ") or NAME = ...");
     }
     return qd__mdl_perr_tok(p, hint, "unknown statement '%s'", word);
 }
