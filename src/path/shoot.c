@@ -1091,7 +1091,9 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
             goto done;
         }
         fd.count++;
-        if (!o->all)
+        /* with multipliers the starts reach extremals of either sign (the
+         * hanging chain and the arch): all are tried, the least kept */
+        if (!o->all && (s.nm == 0 || i < o->nguess))
             break;
     }
     if (fd.count == 0) {
@@ -1100,6 +1102,8 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         goto done;
     }
     qsort(fd.paths, fd.count, sizeof *fd.paths, by_action);
+    while (!o->all && fd.count > 1)
+        path_clear(&fd.paths[--fd.count]);
     out->count = fd.count;
     out->paths = fd.paths;
     fd.paths = NULL;
