@@ -956,6 +956,10 @@ static void make_start(search *sr, size_t i, double *x) {
         for (size_t j = 0; j < n; j++) {
             s[j] = p->q0[j] + (p->q1[j] - p->q0[j]) * tk / T;
             s[n + j] = (p->q1[j] - p->q0[j]) / T;
+            if (p->free1 && p->free1[j]) {  /* no end to aim at: the line at v0 */
+                s[j] = p->q0[j] + v[j] * tk;
+                s[n + j] = v[j];
+            }
         }
     }
 }
