@@ -121,6 +121,8 @@ static long coord_named(const qd_eom *e, const char *name) {
 static int end_item(path_run *r, const char *what, char *item, bool *fr, qd_buf *out) {
     const char *indep = qd_model_independent(r->mf.model);
     char *eq = strchr(item, '=');
+    if (!*item)
+        return QD_EXIT_OK;
     if (!eq) {
         qd_buf_printf(out, "%s%s", out->len ? ", " : "", item);
         return QD_EXIT_OK;
@@ -370,7 +372,7 @@ static void write_json(const path_run *r, qd_buf *b) {
         cli_json_key(&j, "minimum");
         cli_json_bool(&j, p->minimum);
         cli_json_key(&j, "examined");  /* false: foci and minimum not decided */
-        cli_json_bool(&j, p->examined || !(p->nmult || r->any_free));
+        cli_json_bool(&j, p->examined);
         cli_json_end_object(&j);
     }
     cli_json_end_array(&j);

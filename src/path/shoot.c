@@ -817,7 +817,8 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     if (!out->v0 || !out->t || !out->q || (p->nm && !out->mult))
         return false;
     memcpy(out->v0, x, n * sizeof *x);
-    memcpy(out->mult, x + p->off_lam, p->nm * sizeof *x);
+    if (p->nm)
+        memcpy(out->mult, x + p->off_lam, p->nm * sizeof *x);
     /* the samples interpolate (cubic Hermite in q, q') the very steps the
      * Newton iteration took, so the last one is the end reached to tol */
     size_t i = 0;

@@ -16,7 +16,9 @@
  *   the oscillator m x'' = -k x with x(T) free: m x'(T) = 0 gives
  *     v0 = a w tan(wT); with x(0) free: x'(0) = 0, x(0) = b / cos(wT);
  *   the chain whose right end slides on the line x = 1: (w y - lambda) y' /
- *     sqrt(1 + y'^2) = 0 there, so the vertex is at x = 1, l = a sinh(1/a).
+ *     sqrt(1 + y'^2) = 0 there, so the vertex is at x = 1, l = a sinh(1/a);
+ *   integral y'^2 dx = -1, which no curve has (the integrand is a square):
+ *     no convergence, and the message names the condition.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -189,12 +191,27 @@ static void test_chain_sliding_end(void **state) {
     unload(f);
 }
 
+static void test_inconsistent_integral(void **state) {
+    (void)state;
+    fix *f = load("independent x\ncoordinates y\nL = y'^2/2\n"
+                  "constraint e: integral(y'^2) = -1\n");
+    assert_non_null(f);
+    double y0 = 0, y1 = 1;
+    qd_path_opts o = {.t0 = 0, .t1 = 1, .q0 = &y0, .q1 = &y1};
+    qd_path_set ps;
+    assert_int_equal(qd_path_find(f->ctx, f->m, f->e, &o, &ps), QD_ERR_NUMERIC);
+    assert_int_equal(ps.count, 0);
+    assert_non_null(strstr(qd_ctx_message(f->ctx), "integral of constraint e minus its value"));
+    unload(f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_catenary_length),
         cmocka_unit_test(test_catenary_too_short),
         cmocka_unit_test(test_oscillator_free_end),
         cmocka_unit_test(test_chain_sliding_end),
+        cmocka_unit_test(test_inconsistent_integral),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
