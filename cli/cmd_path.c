@@ -145,8 +145,8 @@ static int end_item(path_run *r, const char *what, char *item, bool *fr, qd_buf 
     return QD_EXIT_OK;
 }
 
-/* The end's text for cli_state_parse_as (free items out, x as t); the
- * items split at the commas outside brackets.  NULL when out of memory. */
+/* The end's text for cli_state_parse_as (free items out, x as t) in *res
+ * (malloc'd); the items split at the commas outside brackets. */
 static int end_text(path_run *r, const char *what, const char *text, bool *fr, char **res) {
     char *copy = malloc(strlen(text) + 1);
     qd_buf out = QD_BUF_INIT;
