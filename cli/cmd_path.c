@@ -27,7 +27,8 @@ typedef struct path_args {
 } path_args;
 
 static const char usage_text[] =
-    "usage: qdot path FILE --from \"q=VALUE, ..., t=T0\" --to \"q=VALUE, ..., t=T1\" [--all] "
+    "usage: qdot path FILE --from \"q=VALUE|free, ..., t=T0\" --to \"q=VALUE|free, ..., t=T1\" "
+    "[--all] "
     "[--guess \"q'=VALUE, ...\"]... [--energy E] [--segments N] [--format text|json] "
     "[--set NAME=VALUE]...";
 
