@@ -3,7 +3,8 @@
  * the stationary paths of the action between two configurations
  * (qd_path_find; --energy E: Maupertuis' paths of energy E, qd_path_find_energy),
  * each with its action, initial velocities, samples, kinetic foci and
- * whether it is a minimum.
+ * whether it is a minimum; the isoperimetric multipliers, and free ends
+ * written `y=free`.  For an `independent x` model, x names the ends' time.
  */
 #include "cli.h"
 
@@ -26,7 +27,8 @@ typedef struct path_args {
 } path_args;
 
 static const char usage_text[] =
-    "usage: qdot path FILE --from \"q=VALUE, ..., t=T0\" --to \"q=VALUE, ..., t=T1\" [--all] "
+    "usage: qdot path FILE --from \"q=VALUE|free, ..., t=T0\" --to \"q=VALUE|free, ..., t=T1\" "
+    "[--all] "
     "[--guess \"q'=VALUE, ...\"]... [--energy E] [--segments N] [--format text|json] "
     "[--set NAME=VALUE]...";
 
@@ -82,10 +84,6 @@ static int parse_args(int argc, char **argv, path_args *a) {
         cli_diag_error("path needs --from and --to\n%s", usage_text);
         return QD_EXIT_USAGE;
     }
-    if (!a->energy && !gives_t(a->to)) {
-        cli_diag_error("path: --to needs the end time t=T1 (or give --energy E)\n%s", usage_text);
-        return QD_EXIT_USAGE;
-    }
     return QD_EXIT_OK;
 }
 
@@ -96,8 +94,102 @@ typedef struct path_run {
     cli_state from, to, g;
     double *q0, *q1, *guess;
     qd_path_set ps;
-    bool energy;
+    bool energy, any_free;
+    bool free0[32], free1[32];
 } path_run;
+
+/* ---- the ends' text: `y=free` items and the independent variable's name --- */
+
+static char *trim(char *s) {
+    while (*s == ' ' || *s == '\t')
+        s++;
+    char *e = s + strlen(s);
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t'))
+        *--e = '\0';
+    return s;
+}
+
+/* The coordinate called name, or -1. */
+static long coord_named(const qd_eom *e, const char *name) {
+    for (size_t j = 0; j < e->n; j++)
+        if (!strcmp(qd_expr_name(e->q[j]), name))
+            return (long)j;
+    return -1;
+}
+
+/* One item NAME=VALUE of an end: `free` marks the coordinate free and drops
+ * the item; the independent variable's name becomes t. */
+static int end_item(path_run *r, const char *what, char *item, bool *fr, qd_buf *out) {
+    const char *indep = qd_model_independent(r->mf.model);
+    char *eq = strchr(item, '=');
+    if (!*item)
+        return QD_EXIT_OK;
+    if (!eq) {
+        qd_buf_printf(out, "%s%s", out->len ? ", " : "", item);
+        return QD_EXIT_OK;
+    }
+    *eq = '\0';
+    char *name = trim(item), *value = trim(eq + 1);
+    if (!strcmp(value, "free")) {
+        long j = coord_named(r->e, name);
+        if (j < 0 || r->energy) {
+            cli_diag_error("%s: %s=free: %s", what, name,
+                           r->energy ? "free ends need the end times, not --energy"
+                                     : "only a coordinate can be free");
+            return QD_EXIT_USAGE;
+        }
+        fr[j] = r->any_free = true;
+        return QD_EXIT_OK;
+    }
+    bool is_x = indep && !strcmp(name, indep);
+    qd_buf_printf(out, "%s%s=%s", out->len ? ", " : "", is_x ? "t" : name, value);
+    return QD_EXIT_OK;
+}
+
+/* The end's text for cli_state_parse_as (free items out, x as t) in *res
+ * (malloc'd); the items split at the commas outside brackets. */
+static int end_text(path_run *r, const char *what, const char *text, bool *fr, char **res) {
+    char *copy = malloc(strlen(text) + 1);
+    qd_buf out = QD_BUF_INIT;
+    int rc = copy ? QD_EXIT_OK : QD_EXIT_FAIL;
+    if (copy)
+        strcpy(copy, text);
+    int depth = 0;
+    for (char *p = copy, *item = copy; rc == QD_EXIT_OK && p; p++) {
+        depth += (*p == '(' || *p == '[') - (*p == ')' || *p == ']');
+        if (*p && (*p != ',' || depth > 0))
+            continue;
+        bool end = !*p;
+        *p = '\0';
+        rc = end_item(r, what, trim(item), fr, &out);
+        item = p + 1;
+        if (end)
+            break;
+    }
+    free(copy);
+    *res = rc == QD_EXIT_OK && !out.failed ? malloc(out.len + 1) : NULL;
+    if (*res) {
+        memcpy(*res, out.s ? out.s : "", out.len);
+        (*res)[out.len] = '\0';
+    }
+    qd_buf_free(&out);
+    if (rc == QD_EXIT_OK && !*res) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
+    }
+    return rc;
+}
+
+/* A free coordinate starts from the other end's value (0 if free too). */
+static void free_guesses(path_run *r) {
+    size_t n = r->e->n;
+    for (size_t j = 0; j < n; j++) {
+        if (r->free0[j])
+            r->from.vals[j] = r->free1[j] ? 0 : r->to.vals[j];
+        if (r->free1[j])
+            r->to.vals[j] = r->free0[j] ? 0 : r->from.vals[j];
+    }
+}
 
 static int read_number(const char *what, const char *text, double lo, double *x) {
     char *end;
@@ -112,13 +204,27 @@ static int read_number(const char *what, const char *text, double lo, double *x)
 static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     const qd_model *m = r->mf.model;
     size_t n = r->e->n;
-    int rc = cli_state_init(r->ctx, m, &r->from);
+    char *from = NULL, *to = NULL;
+    int rc = end_text(r, "--from", a->from, r->free0, &from);
     if (rc == QD_EXIT_OK)
-        rc = cli_state_parse_as(r->ctx, m, "--from", a->from, &r->from);
+        rc = end_text(r, "--to", a->to, r->free1, &to);
+    if (rc == QD_EXIT_OK && !r->energy && !gives_t(to)) {
+        const char *x = qd_model_independent(m) ? qd_model_independent(m) : "t";
+        cli_diag_error("path: --to needs the end %s=T1 (or give --energy E)\n%s", x, usage_text);
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK)
+        rc = cli_state_init(r->ctx, m, &r->from);
+    if (rc == QD_EXIT_OK)
+        rc = cli_state_parse_as(r->ctx, m, "--from", from, &r->from);
     if (rc == QD_EXIT_OK)
         rc = cli_state_init(r->ctx, m, &r->to);
     if (rc == QD_EXIT_OK)
-        rc = cli_state_parse_as(r->ctx, m, "--to", a->to, &r->to);
+        rc = cli_state_parse_as(r->ctx, m, "--to", to, &r->to);
+    free(from);
+    free(to);
+    if (rc == QD_EXIT_OK)
+        free_guesses(r);
     r->guess = calloc(a->nguess * n + 1, sizeof *r->guess);
     if (rc == QD_EXIT_OK && !r->guess) {
         cli_diag_error("out of memory");
@@ -141,6 +247,8 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     o->nguess = a->nguess;
     o->guess = a->nguess ? r->guess : NULL;
     o->all = a->all;
+    o->free0 = r->any_free ? r->free0 : NULL;
+    o->free1 = r->any_free ? r->free1 : NULL;
     if (!r->energy && !(o->t1 > o->t0)) {
         cli_diag_error("path: the end time %g is not after the start time %g", o->t1, o->t0);
         return QD_EXIT_USAGE;
@@ -150,6 +258,31 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
 
 static void put(qd_buf *b, double x) {
     cli_state_put_result(b, x);
+}
+
+/* The name the ends' time goes by: t, or the model's independent x. */
+static const char *time_name(const path_run *r) {
+    const char *x = qd_model_independent(r->mf.model);
+    return x ? x : "t";
+}
+
+static const char *mult_name(const path_run *r, size_t i) {
+    return qd_expr_name(qd_model_isoperimetric_multiplier(r->mf.model, i));
+}
+
+/* Foci and minimum, or why they are not there. */
+static void write_second_variation(const path_run *r, const qd_path *p, qd_buf *b) {
+    if (!p->examined && (p->nmult || r->any_free)) {
+        qd_buf_printf(b, "\n  kinetic foci: not examined (%s)\n  minimum: not examined",
+                      p->nmult ? "isoperimetric constraint" : "free end");
+        return;
+    }
+    qd_buf_puts(b, "\n  kinetic foci:");
+    for (size_t k = 0; k < p->nfoci; k++) {
+        qd_buf_puts(b, k ? ", " : " ");
+        put(b, p->foci[k]);
+    }
+    qd_buf_printf(b, "%s\n  minimum: %s", p->nfoci ? "" : " none", p->minimum ? "yes" : "no");
 }
 
 static void write_text(const path_run *r, qd_buf *b) {
@@ -164,17 +297,16 @@ static void write_text(const path_run *r, qd_buf *b) {
             qd_buf_printf(b, "%s%s' = ", j ? ", " : "", qd_expr_name(r->e->q[j]));
             put(b, p->v0[j]);
         }
+        for (size_t k = 0; k < p->nmult; k++) {
+            qd_buf_printf(b, "%s%s = ", k ? ", " : "\n  multipliers: ", mult_name(r, k));
+            put(b, p->mult[k]);
+        }
         if (r->energy) {
             qd_buf_puts(b, "\n  time: ");
             put(b, p->t[p->nsamples - 1] - p->t[0]);
         }
-        qd_buf_puts(b, "\n  kinetic foci:");
-        for (size_t k = 0; k < p->nfoci; k++) {
-            qd_buf_puts(b, k ? ", " : " ");
-            put(b, p->foci[k]);
-        }
-        qd_buf_printf(b, "%s\n  minimum: %s\n  samples (t", p->nfoci ? "" : " none",
-                      p->minimum ? "yes" : "no");
+        write_second_variation(r, p, b);
+        qd_buf_printf(b, "\n  samples (%s", time_name(r));
         for (size_t j = 0; j < n; j++)
             qd_buf_printf(b, ", %s", qd_expr_name(r->e->q[j]));
         size_t step = p->nsamples > 11 ? (p->nsamples - 1) / 10 : 1;
@@ -214,6 +346,13 @@ static void write_json(const path_run *r, qd_buf *b) {
             cli_json_number(&j, p->v0[k]);
         }
         cli_json_end_object(&j);
+        cli_json_key(&j, "multipliers");
+        cli_json_begin_object(&j);
+        for (size_t k = 0; k < p->nmult; k++) {
+            cli_json_key(&j, mult_name(r, k));
+            cli_json_number(&j, p->mult[k]);
+        }
+        cli_json_end_object(&j);
         cli_json_key(&j, "residual");
         cli_json_number(&j, p->residual);
         cli_json_key(&j, "samples");
@@ -233,6 +372,8 @@ static void write_json(const path_run *r, qd_buf *b) {
         cli_json_end_array(&j);
         cli_json_key(&j, "minimum");
         cli_json_bool(&j, p->minimum);
+        cli_json_key(&j, "examined");  /* false: foci and minimum not decided */
+        cli_json_bool(&j, p->examined);
         cli_json_end_object(&j);
     }
     cli_json_end_array(&j);

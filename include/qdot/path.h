@@ -17,6 +17,16 @@
  * minimum of S iff there is no focus in (t0, t1] and the Legendre condition
  * holds (M = d^2 L / dq' dq' positive definite along it) (Desloge ch. 84;
  * Gelfand and Fomin ch. 5).
+ *
+ * The calculus of variations (models with `independent x`): L is then the
+ * integrand F(x, y, y') of any functional and t reads x.  An isoperimetric
+ * constraint integral G dx = l (qd_model_isoperimetric) adds -lambda G to L
+ * with lambda a constant (Desloge App. 32 Thm 5): the constant multipliers
+ * are unknowns solved together with v0, the extra conditions being
+ * integral G dx = l, each G integrated along the path as a quadrature.  A
+ * free end coordinate q_j (free0, free1) is not given: the natural boundary
+ * condition p_j = dL/dq'_j = 0 at that end takes the place of q_j = given
+ * (Gelfand and Fomin ch. 1 sec. 6; Byerly ch. IV).
  */
 #ifndef QDOT_PATH_H
 #define QDOT_PATH_H
@@ -44,6 +54,10 @@ typedef struct qd_path_opts {
     size_t segments;          /* multiple-shooting segments; 0: chosen */
     double tol;               /* end-point residual; 0: 1e-10 */
     size_t nsamples;          /* samples of each path; 0: 101 */
+    /* free end coordinates (n flags each; NULL: all fixed): free0[j] frees
+     * q_j(t0), free1[j] frees q_j(t1), and dL/dq'_j = 0 there instead; the
+     * value in q0 / q1 is then only the starting guess.  Not with energy. */
+    const bool *free0, *free1;
 } qd_path_opts;
 
 typedef struct qd_path {
@@ -57,6 +71,15 @@ typedef struct qd_path {
     double *foci;             /* the kinetic foci of t0 in (t0, t1], ascending */
     bool legendre;            /* M positive definite along the path */
     bool minimum;             /* legendre and no focus in (t0, t1] */
+    /* the second variation was examined (foci, legendre, minimum); not on a
+     * constraint manifold, with isoperimetric constraints or free ends,
+     * where the fixed-end Jacobi equation does not decide */
+    bool examined;
+    /* the isoperimetric multipliers lambda (model order: the names are
+     * qd_model_isoperimetric_name); with them action is integral F dx, the
+     * multiplier terms left out (integral L dx = action - sum lambda l) */
+    size_t nmult;
+    double *mult;
 } qd_path;
 
 typedef struct qd_path_set {
@@ -67,7 +90,11 @@ typedef struct qd_path_set {
 /* The stationary paths of the action between (t0, q0) and (t1, q1) for the
  * equations e of model m (parameters at the model's values).  QD_ERR_NUMERIC
  * when no path converges (the message says so, with the smallest residual
- * reached); QD_ERR_ARG for bad options.  out is filled on success (count
+ * reached and each isoperimetric condition's own); QD_ERR_ARG for bad
+ * options and for inconsistent isoperimetric data found before solving (a
+ * length integral sqrt(1 + y'^2) dx = l shorter than the distance between
+ * the ends).  A multiplier declared as a parameter starts from its value,
+ * an undeclared one from 0, then from a spread of values.  out is filled on success (count
  * >= 1); free it with qd_path_set_free. */
 QD_API qd_status qd_path_find(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                               const qd_path_opts *opts, qd_path_set *out);

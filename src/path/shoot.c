@@ -19,6 +19,15 @@
  * of dq''/dq at the start) and at most (t1 - t0)/200; a segment spans at
  * most 3/omega, over which the sensitivities of a hyperbolic point grow by
  * at most e^3 (docs/design.md, "Variational principles").
+ *
+ * Isoperimetric constraints and free ends (qdot/path.h): the state becomes
+ * u = (q, q', lambda) with lambda' = 0, so the multipliers' sensitivities
+ * ride in Phi like any other start value, and each integrand G joins S as a
+ * quadrature with its own sensitivity rows (d/dt dI/du0 = dG/du Phi).  The
+ * unknowns gain the free start coordinates and the multipliers, the
+ * residuals the natural conditions p_j = dL/dq'_j = 0 at the free ends and
+ * integral G dx - l = 0; with neither, u = (q, q') and every number is the
+ * fixed-end method's.
  */
 #include "qdot/path.h"
 #include "qdot/eval.h"
@@ -28,10 +37,12 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
 #define PATH_MAXSEG 64
 #define PATH_MAXIT 60
+#define PATH_MAXMULT 8
 
 typedef struct sys {
     qd_ctx *ctx;
@@ -42,7 +53,11 @@ typedef struct sys {
     double *vals;
     qd_eom_prog *prog;
     qd_eom_work *work;
-    qd_prog *Lh;            /* L and Jacobi's h from the same inputs */
+    qd_prog *aux;           /* L, Jacobi's h, the G_i, the p_j = dL/dq'_j */
+    double *aux_out;
+    size_t nm, ns;          /* multipliers; ns = 2n + nm, the state u */
+    size_t lam_slot[PATH_MAXMULT];  /* where each lambda sits in vals */
+    double lam0[PATH_MAXMULT], ell[PATH_MAXMULT];  /* start values; the l_i */
     double hmax;
     qd_status st;
 } sys;
@@ -50,7 +65,8 @@ typedef struct sys {
 static void sys_free(sys *s) {
     qd_eom_work_free(s->work);
     qd_eom_prog_free(s->prog);
-    qd_prog_free(s->Lh);
+    qd_prog_free(s->aux);
+    qd__free(s->aux_out);
     qd__free(s->syms);
     qd__free(s->vals);
 }
@@ -62,16 +78,83 @@ static const qd_expr *jacobi_h(qd_ctx *ctx, const qd_eom *e) {
     return h;
 }
 
+/* Each multiplier's place among the inputs: its parameter's slot, or a
+ * slot after the parameters for an undeclared lambda_NAME (0 to start). */
+static qd_status sys_multipliers(sys *s) {
+    const qd_model *m = s->m;
+    size_t np = qd_model_nparams(m), base = 2 * s->n + 1;
+    for (size_t i = 0; i < s->nm; i++) {
+        const qd_expr *lam = qd_model_isoperimetric_multiplier(m, i);
+        if (qd_is_number(lam)) {
+            qd_ctx_error(s->ctx, QD_ERR_ARG,
+                         "path: the multiplier of constraint %s is fixed to a number, but a "
+                         "path solves for it (do not --set lambda_%s)",
+                         qd_model_isoperimetric_name(m, i), qd_model_isoperimetric_name(m, i));
+            return QD_ERR_ARG;
+        }
+        size_t slot = s->nsym;
+        for (size_t k = 0; k < np; k++)
+            if (qd_model_param(m, k) == lam)
+                slot = base + k;
+        if (slot == s->nsym)
+            s->syms[s->nsym++] = lam;
+        s->lam_slot[i] = slot;
+        s->lam0[i] = s->vals[slot];
+    }
+    return QD_OK;
+}
+
+/* The l_i, numbers of the parameters. */
+static qd_status sys_values(sys *s) {
+    const qd_expr *vals[PATH_MAXMULT];
+    for (size_t i = 0; i < s->nm; i++)
+        vals[i] = qd_model_isoperimetric_value(s->m, i);
+    if (s->nm == 0)
+        return QD_OK;
+    qd_prog *p = qd_prog_new(s->ctx, s->nsym, s->syms, s->nm, vals);
+    if (!p)
+        return qd_ctx_status(s->ctx);
+    qd_prog_run(p, s->vals, s->ell);
+    qd_prog_free(p);
+    return QD_OK;
+}
+
+/* L, h, the integrands G_i and the momenta dL/dq'_j in one program. */
+static qd_status sys_aux(sys *s) {
+    qd_ctx *ctx = s->ctx;
+    const qd_eom *e = s->e;
+    size_t n = s->n, nout = 2 + s->nm + n;
+    const qd_expr *out[2 + PATH_MAXMULT + 32];
+    out[0] = e->L;
+    out[1] = jacobi_h(ctx, e);
+    for (size_t i = 0; i < s->nm; i++)
+        out[2 + i] = qd_model_isoperimetric(s->m, i);
+    for (size_t j = 0; j < n; j++)
+        out[2 + s->nm + j] = qd_diff(ctx, e->L, e->qd[j]);
+    for (size_t k = 0; k < nout; k++)
+        if (!out[k])
+            return qd_ctx_status(ctx);
+    s->aux_out = qd__calloc(ctx, nout, sizeof *s->aux_out);
+    s->aux = s->aux_out ? qd_prog_new(ctx, s->nsym, s->syms, nout, out) : NULL;
+    return s->aux ? QD_OK : qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+}
+
 static qd_status sys_init(sys *s, qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     memset(s, 0, sizeof *s);
     s->ctx = ctx;
     s->m = m;
     s->e = e;
     s->n = e->n;
+    s->nm = qd_model_nisoperimetric(m);
+    s->ns = 2 * e->n + s->nm;
     size_t np = qd_model_nparams(m), n = e->n;
+    if (s->nm > PATH_MAXMULT) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "path: at most %d isoperimetric constraints", PATH_MAXMULT);
+        return QD_ERR_ARG;
+    }
     s->nsym = 2 * n + 1 + np;
-    s->syms = qd__calloc(ctx, s->nsym, sizeof *s->syms);
-    s->vals = qd__calloc(ctx, s->nsym, sizeof *s->vals);
+    s->syms = qd__calloc(ctx, s->nsym + s->nm, sizeof *s->syms);
+    s->vals = qd__calloc(ctx, s->nsym + s->nm, sizeof *s->vals);
     if (!s->syms || !s->vals)
         return QD_ERR_NOMEM;
     for (size_t j = 0; j < n; j++) {
@@ -87,11 +170,16 @@ static qd_status sys_init(sys *s, qd_ctx *ctx, const qd_model *m, const qd_eom *
             return QD_ERR_UNBOUND;
         }
     }
+    qd_status st = sys_multipliers(s);
+    if (st == QD_OK)
+        st = sys_values(s);
+    if (st == QD_OK)
+        st = sys_aux(s);
+    if (st != QD_OK)
+        return st;
     s->prog = qd_eom_compile(ctx, e);
     s->work = s->prog ? qd_eom_work_new(ctx, s->prog) : NULL;
-    const qd_expr *out[2] = {e->L, jacobi_h(ctx, e)};
-    s->Lh = out[1] ? qd_prog_new(ctx, s->nsym, s->syms, 2, out) : NULL;
-    return s->prog && s->work && s->Lh ? QD_OK : qd_ctx_status(ctx);
+    return s->prog && s->work ? QD_OK : qd_ctx_status(ctx);
 }
 
 static void sys_load(sys *s, double t, const double *q, const double *v) {
@@ -100,8 +188,15 @@ static void sys_load(sys *s, double t, const double *q, const double *v) {
     s->vals[2 * s->n] = t;
 }
 
-static bool accel(sys *s, double t, const double *q, const double *v, double *a) {
-    sys_load(s, t, q, v);
+static void sys_lam(sys *s, const double *lam) {
+    for (size_t i = 0; i < s->nm; i++)
+        s->vals[s->lam_slot[i]] = lam[i];
+}
+
+/* q'' at the state u = (q, q', lambda). */
+static bool accel(sys *s, double t, const double *u, double *a) {
+    sys_load(s, t, u, u + s->n);
+    sys_lam(s, u + 2 * s->n);
     qd_status st = qd_eom_prog_eval(s->ctx, s->prog, s->work, s->nsym, s->syms, s->vals, NULL,
                                     NULL, a, NULL, NULL);
     if (st != QD_OK && s->st == QD_OK)
@@ -109,67 +204,110 @@ static bool accel(sys *s, double t, const double *q, const double *v, double *a)
     return st == QD_OK;
 }
 
-static void lagr_h(sys *s, double t, const double *q, const double *v, double out[2]) {
-    sys_load(s, t, q, v);
-    qd_prog_run(s->Lh, s->vals, out);
+/* L, h, G_i, p_j at the state u into s->aux_out. */
+static const double *aux_at(sys *s, double t, const double *u) {
+    sys_load(s, t, u, u + s->n);
+    sys_lam(s, u + 2 * s->n);
+    qd_prog_run(s->aux, s->vals, s->aux_out);
+    return s->aux_out;
 }
 
-/* dq''/d(q, q') by central differences: G is n x 2n row-major. */
+/* L and h at (q, v) with the multipliers as they are (none at fixed energy). */
+static void lagr_h(sys *s, double t, const double *q, const double *v, double out[2]) {
+    sys_load(s, t, q, v);
+    qd_prog_run(s->aux, s->vals, s->aux_out);
+    out[0] = s->aux_out[0];
+    out[1] = s->aux_out[1];
+}
+
+/* dq''/du by central differences: G is n x ns row-major. */
 static bool accel_grad(sys *s, double t, const double *y, double *G, double *tmp) {
-    size_t n = s->n, n2 = 2 * n;
-    double *yp = tmp, *ap = tmp + n2, *am = tmp + n2 + n;
-    memcpy(yp, y, n2 * sizeof *y);
-    for (size_t c = 0; c < n2; c++) {
+    size_t n = s->n, ns = s->ns;
+    double *yp = tmp, *ap = tmp + ns, *am = tmp + ns + n;
+    memcpy(yp, y, ns * sizeof *y);
+    for (size_t c = 0; c < ns; c++) {
         double h = 1e-5 * (1 + fabs(y[c]));
         yp[c] = y[c] + h;
-        bool ok = accel(s, t, yp, yp + n, ap);
+        bool ok = accel(s, t, yp, ap);
         yp[c] = y[c] - h;
-        ok = ok && accel(s, t, yp, yp + n, am);
+        ok = ok && accel(s, t, yp, am);
         yp[c] = y[c];
         if (!ok)
             return false;
         for (size_t r = 0; r < n; r++)
-            G[r * n2 + c] = (ap[r] - am[r]) / (2 * h);
+            G[r * ns + c] = (ap[r] - am[r]) / (2 * h);
     }
     return true;
 }
 
-/* y = (q, q', S, Phi 2n x 2n row-major); Phi only when sens. */
+/* d(aux outputs from `first`, count of them)/du by central differences:
+ * D is count x ns row-major. */
+static void aux_grad(sys *s, double t, const double *y, size_t first, size_t count, double *D,
+                     double *tmp) {
+    size_t ns = s->ns;
+    double *yp = tmp, *op = tmp + ns;
+    memcpy(yp, y, ns * sizeof *y);
+    for (size_t c = 0; c < ns; c++) {
+        double h = 1e-5 * (1 + fabs(y[c]));
+        yp[c] = y[c] + h;
+        memcpy(op, aux_at(s, t, yp) + first, count * sizeof *op);
+        yp[c] = y[c] - h;
+        const double *om = aux_at(s, t, yp) + first;
+        yp[c] = y[c];
+        for (size_t r = 0; r < count; r++)
+            D[r * ns + c] = (op[r] - om[r]) / (2 * h);
+    }
+}
+
+/* y = (u, S, I (nm), Phi (ns + nm) x ns row-major); Phi only when sens. */
 static bool rhs(sys *s, double t, const double *y, double *dy, bool sens, double *tmp) {
-    size_t n = s->n, n2 = 2 * n;
+    size_t n = s->n, n2 = 2 * n, ns = s->ns, nm = s->nm;
     memcpy(dy, y + n, n * sizeof *y);
-    if (!accel(s, t, y, y + n, dy + n))
+    if (!accel(s, t, y, dy + n))
         return false;
-    double lh[2];
-    lagr_h(s, t, y, y + n, lh);
-    dy[n2] = lh[0];
+    for (size_t i = n2; i < ns; i++)
+        dy[i] = 0;
+    const double *o = aux_at(s, t, y);
+    dy[ns] = o[0];
+    for (size_t i = 0; i < nm; i++)
+        dy[ns + 1 + i] = o[2 + i];
     if (!sens)
         return true;
-    double *G = tmp, *scratch = tmp + n * n2;
+    double *G = tmp, *DG = tmp + n * ns, *scratch = DG + nm * ns;
     if (!accel_grad(s, t, y, G, scratch))
         return false;
-    const double *P = y + n2 + 1;
-    double *dP = dy + n2 + 1;
-    for (size_t c = 0; c < n2; c++) {
+    if (nm)
+        aux_grad(s, t, y, 2, nm, DG, scratch);
+    const double *P = y + ns + 1 + nm;
+    double *dP = dy + ns + 1 + nm;
+    for (size_t c = 0; c < ns; c++) {
         for (size_t r = 0; r < n; r++)
-            dP[r * n2 + c] = P[(n + r) * n2 + c];
+            dP[r * ns + c] = P[(n + r) * ns + c];
         for (size_t r = 0; r < n; r++) {
             double acc = 0;
+            for (size_t k = 0; k < ns; k++)
+                acc += G[r * ns + k] * P[k * ns + c];
+            dP[(n + r) * ns + c] = acc;
+        }
+        for (size_t r = n2; r < ns; r++)
+            dP[r * ns + c] = 0;
+        for (size_t i = 0; i < nm; i++) {
+            double acc = 0;
             for (size_t k = 0; k < n2; k++)
-                acc += G[r * n2 + k] * P[k * n2 + c];
-            dP[(n + r) * n2 + c] = acc;
+                acc += DG[i * ns + k] * P[k * ns + c];
+            dP[(ns + i) * ns + c] = acc;
         }
     }
     return true;
 }
 
-static size_t aug_size(size_t n, bool sens) {
-    return 2 * n + 1 + (sens ? 4 * n * n : 0);
+static size_t aug_size(const sys *s, bool sens) {
+    return s->ns + 1 + s->nm + (sens ? (s->ns + s->nm) * s->ns : 0);
 }
 
 /* One classical RK4 step of y (augmented, in place) from t by h. */
 static bool rk4_step(sys *s, double *y, double t, double h, bool sens, double *w) {
-    size_t na = aug_size(s->n, sens);
+    size_t na = aug_size(s, sens);
     double *k1 = w, *k2 = w + na, *k3 = w + 2 * na, *k4 = w + 3 * na, *yt = w + 4 * na;
     double *tmp = w + 5 * na;
     if (!rhs(s, t, y, k1, sens, tmp))
@@ -198,7 +336,7 @@ static size_t grid_steps(const sys *s, double ta, double tb) {
 
 /* RK4 from ta to tb on its grid; y advanced in place. */
 static bool advance(sys *s, double *y, double ta, double tb, bool sens, double *w) {
-    size_t na = aug_size(s->n, sens), steps = grid_steps(s, ta, tb);
+    size_t na = aug_size(s, sens), steps = grid_steps(s, ta, tb);
     if (steps == 0)
         return true;
     double h = (tb - ta) / (double)steps;
@@ -211,19 +349,28 @@ static bool advance(sys *s, double *y, double ta, double tb, bool sens, double *
     return true;
 }
 
-static size_t work_size(size_t n) {
-    return 6 * aug_size(n, true) + 2 * n * n + 6 * n + 8;
+static size_t work_size(const sys *s) {
+    size_t n = s->n, ns = s->ns, nout = 2 + s->nm + n;
+    return 6 * aug_size(s, true) + (n + s->nm) * ns + 2 * ns + 2 * nout + 6 * n + 8;
 }
 
-/* The shooting problem: layout of x = [v0 (n), T (energy only), s_1..s_(N-1) (2n each)]. */
+/* The shooting problem: layout of x = [v0 (n), T (energy only),
+ * s_1..s_(N-1) (2n each), the free start coordinates (nf0), lambda (nm)];
+ * residuals: the jumps (2n each), the last segment's end (n: q_j - q1_j, or
+ * p_j for a free end), p_j at the free start coordinates, integral G - l,
+ * and at fixed energy h - E. */
 typedef struct shoot {
     sys *s;
-    size_t n, N, nx;
+    size_t n, N, nx, nm, nf0;
+    size_t off_free, off_lam;  /* where the free q0 and the lambdas start in x */
+    int fidx[32];              /* q0_j's place among the free ones, -1: fixed */
     double t0, t1;          /* t1 unused at fixed energy */
     const double *q0, *q1;
+    const bool *free1;
     bool energy;
     double E;
     double *w, *y;          /* integrator work, augmented state */
+    double iso_res[PATH_MAXMULT];  /* the last integral G - l */
 } shoot;
 
 static double shoot_T(const shoot *p, const double *x) {
@@ -234,64 +381,162 @@ static size_t shoot_off(const shoot *p, size_t k) {  /* where s_k starts, k >= 1
     return p->n + (p->energy ? 1 : 0) + 2 * p->n * (k - 1);
 }
 
+static void shoot_layout(shoot *p, const bool *free0) {
+    p->nf0 = 0;
+    for (size_t j = 0; j < p->n; j++)
+        p->fidx[j] = free0 && free0[j] ? (int)p->nf0++ : -1;
+    p->off_free = shoot_off(p, p->N);
+    p->off_lam = p->off_free + p->nf0;
+    p->nx = p->off_lam + p->nm;
+}
+
+/* The x index that segment k's start value u_c comes from; -1: a given q0. */
+static long col_of(const shoot *p, size_t k, size_t c) {
+    size_t n = p->n;
+    if (c >= 2 * n)
+        return (long)(p->off_lam + c - 2 * n);
+    if (k > 0)
+        return (long)(shoot_off(p, k) + c);
+    if (c >= n)
+        return (long)(c - n);
+    return p->fidx[c] < 0 ? -1 : (long)(p->off_free + (size_t)p->fidx[c]);
+}
+
 static void start_state(const shoot *p, const double *x, size_t k, double *y) {
     size_t n = p->n;
-    if (k == 0) {
-        memcpy(y, p->q0, n * sizeof *y);
-        memcpy(y + n, x, n * sizeof *y);
-    } else {
-        memcpy(y, x + shoot_off(p, k), 2 * n * sizeof *y);
+    for (size_t c = 0; c < 2 * n + p->nm; c++) {
+        long i = col_of(p, k, c);
+        y[c] = i < 0 ? p->q0[c] : x[i];
+    }
+}
+
+/* Row `row` of J gets d(value)/du (a 1 x ns row D) times Phi of segment k. */
+static void chain_row(const shoot *p, size_t k, const double *D, const double *P, double *Jr) {
+    size_t ns = p->s->ns;
+    for (size_t c = 0; c < ns; c++) {
+        long i = col_of(p, k, c);
+        if (i < 0)
+            continue;
+        double acc = 0;
+        for (size_t r = 0; r < ns; r++)
+            acc += D[r] * (P ? P[r * ns + c] : r == c);
+        Jr[i] += acc;
+    }
+}
+
+/* The last segment's end rows: q_r - q1_r, or p_r at a free end. */
+static void end_rows(shoot *p, const double *y, double t, double *F, double *J, size_t row) {
+    sys *s = p->s;
+    size_t n = p->n, ns = s->ns, nx = p->nx;
+    const double *P = y + ns + 1 + p->nm;
+    double *D = p->w, *tmp = p->w + n * ns;
+    if (J && p->free1)
+        aux_grad(s, t, y, 2 + p->nm, n, D, tmp);
+    const double *o = aux_at(s, t, y);
+    for (size_t r = 0; r < n; r++) {
+        bool fr = p->free1 && p->free1[r];
+        F[row + r] = fr ? o[2 + p->nm + r] : y[r] - p->q1[r];
+        if (!J)
+            continue;
+        if (fr) {
+            chain_row(p, p->N - 1, D + r * ns, P, J + (row + r) * nx);
+        } else {
+            for (size_t c = 0; c < ns; c++) {
+                long i = col_of(p, p->N - 1, c);
+                if (i >= 0)
+                    J[(row + r) * nx + i] += P[r * ns + c];
+            }
+        }
+    }
+}
+
+/* p_j = 0 at the free start coordinates. */
+static void start_rows(shoot *p, const double *x, double *F, double *J, size_t row) {
+    sys *s = p->s;
+    size_t n = p->n, ns = s->ns;
+    double *u = p->y, *D = p->w, *tmp = p->w + n * ns;
+    start_state(p, x, 0, u);
+    if (J)
+        aux_grad(s, p->t0, u, 2 + p->nm, n, D, tmp);
+    const double *o = aux_at(s, p->t0, u);
+    for (size_t j = 0; j < n; j++) {
+        if (p->fidx[j] < 0)
+            continue;
+        F[row] = o[2 + p->nm + j];
+        if (J)
+            chain_row(p, 0, D + j * ns, NULL, J + row * p->nx);
+        row++;
     }
 }
 
 /* F (nx) and, when J, the Jacobian (nx x nx row-major). */
 static bool shoot_eval(shoot *p, const double *x, double *F, double *J) {
-    size_t n = p->n, n2 = 2 * n, N = p->N, nx = p->nx, na = aug_size(n, J != NULL);
-    double T = shoot_T(p, x), tau = T / (double)N;
+    size_t n = p->n, n2 = 2 * n, N = p->N, nx = p->nx, na = aug_size(p->s, J != NULL);
+    size_t ns = p->s->ns, nm = p->nm;
+    double T = shoot_T(p, x), tau = T / (double)N, Isum[PATH_MAXMULT] = {0};
     if (!(T > 0))
         return false;
     if (J)
         memset(J, 0, nx * nx * sizeof *J);
-    size_t row = 0, et = p->energy ? n : 0;
+    size_t row = 0, et = p->energy ? n : 0, iso_row = n2 * (N - 1) + n + p->nf0;
     for (size_t k = 0; k < N; k++) {
         double *y = p->y;
         memset(y, 0, na * sizeof *y);
         start_state(p, x, k, y);
-        for (size_t i = 0; J && i < n2; i++)
-            y[n2 + 1 + i * n2 + i] = 1;
+        for (size_t i = 0; J && i < ns; i++)
+            y[ns + 1 + nm + i * ns + i] = 1;
         double ta = p->t0 + tau * (double)k;
         if (!advance(p->s, y, ta, ta + tau, J != NULL, p->w))
             return false;
         bool last = k + 1 == N;
         size_t nr = last ? n : n2;
-        for (size_t r = 0; r < nr; r++)
-            F[row + r] = y[r] - (last ? p->q1[r] : x[shoot_off(p, k + 1) + r]);
+        const double *P = y + ns + 1 + nm;
+        for (size_t i = 0; i < nm; i++) {
+            Isum[i] += y[ns + 1 + i];
+            for (size_t c = 0; J && c < ns; c++) {
+                long xi = col_of(p, k, c);
+                if (xi >= 0)
+                    J[(iso_row + i) * nx + xi] += P[(ns + i) * ns + c];
+            }
+        }
+        if (last) {
+            end_rows(p, y, ta + tau, F, J, row);
+        } else {
+            for (size_t r = 0; r < nr; r++)
+                F[row + r] = y[r] - x[shoot_off(p, k + 1) + r];
+        }
         if (J) {
-            const double *P = y + n2 + 1;
             double dy[2 * 64 + 1];
             double a[64];
             if (p->energy) {  /* autonomous: the end state moves with the duration T/N */
-                accel(p->s, ta + tau, y, y + n, a);
+                accel(p->s, ta + tau, y, a);
                 for (size_t r = 0; r < n; r++) {
                     dy[r] = y[n + r];
                     dy[n + r] = a[r];
                 }
             }
-            for (size_t r = 0; r < nr; r++) {
+            for (size_t r = 0; r < nr && !last; r++) {
                 double *Jr = J + (row + r) * nx;
-                if (k == 0)
-                    for (size_t c = 0; c < n; c++)
-                        Jr[c] = P[r * n2 + n + c];
-                else
-                    for (size_t c = 0; c < n2; c++)
-                        Jr[shoot_off(p, k) + c] = P[r * n2 + c];
-                if (!last)
-                    Jr[shoot_off(p, k + 1) + r] = -1;
-                if (p->energy)
-                    Jr[et] = dy[r] / (double)N;
+                for (size_t c = 0; c < ns; c++) {
+                    long xi = col_of(p, k, c);
+                    if (xi >= 0)
+                        Jr[xi] = P[r * ns + c];
+                }
+                Jr[shoot_off(p, k + 1) + r] = -1;
             }
+            for (size_t r = 0; r < nr && p->energy; r++)
+                J[(row + r) * nx + et] = dy[r] / (double)N;
         }
         row += nr;
+    }
+    if (p->nf0) {
+        start_rows(p, x, F, J, row);
+        row += p->nf0;
+    }
+    for (size_t i = 0; i < nm; i++) {
+        F[row] = Isum[i] - p->s->ell[i];
+        p->iso_res[i] = F[row];
+        row++;
     }
     if (p->energy) {
         double lh[2], hv = 1e-6;
@@ -403,19 +648,44 @@ done:
 /* omega: the time scale of the motion near the start (sqrt of the largest
  * entry of dq''/dq and |dq''/dq'|), for the steps and the segments. */
 static double rate(sys *s, double t0, const double *q0, const double *v0, double *w) {
-    size_t n = s->n, n2 = 2 * n;
-    double *y = w, *G = w + n2, *tmp = G + n * n2;
+    size_t n = s->n, ns = s->ns;
+    double *y = w, *G = w + ns, *tmp = G + n * ns;
     memcpy(y, q0, n * sizeof *y);
     memcpy(y + n, v0, n * sizeof *y);
+    memcpy(y + 2 * n, s->lam0, s->nm * sizeof *y);
     double om = 0;
     if (accel_grad(s, t0, y, G, tmp))
         for (size_t r = 0; r < n; r++)
             for (size_t c = 0; c < n; c++)
-                om = fmax(om, fmax(sqrt(fabs(G[r * n2 + c])), fabs(G[r * n2 + n + c])));
+                om = fmax(om, fmax(sqrt(fabs(G[r * ns + c])), fabs(G[r * ns + n + c])));
     return isfinite(om) ? om : 0;
 }
 
-static bool arg_ok(qd_ctx *ctx, const qd_eom *e, const qd_path_opts *o, bool energy) {
+static bool any_free(const bool *f, size_t n) {
+    for (size_t j = 0; f && j < n; j++)
+        if (f[j])
+            return true;
+    return false;
+}
+
+/* Free ends and multipliers: on the fixed-time, unconstrained problem only. */
+static bool free_ok(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const qd_path_opts *o,
+                    bool energy) {
+    bool fr = any_free(o->free0, e->n) || any_free(o->free1, e->n);
+    const char *why = NULL;
+    if (energy && fr)
+        why = "free ends need the end times, not --energy";
+    else if (energy && qd_model_nisoperimetric(m))
+        why = "an isoperimetric constraint needs the end points' x, not --energy";
+    else if (fr && e->ncon)
+        why = "free ends on a model with constraints are not supported";
+    if (why)
+        qd_ctx_error(ctx, QD_ERR_ARG, "path: %s", why);
+    return why == NULL;
+}
+
+static bool arg_ok(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const qd_path_opts *o,
+                   bool energy) {
     if (!o || !o->q0 || !o->q1 || (!energy && !(o->t1 > o->t0)) || e->n == 0 || e->n > 32 ||
         (o->nguess && !o->guess) || o->segments > PATH_MAXSEG || !(o->tol >= 0)) {
         qd_ctx_error(ctx, QD_ERR_ARG,
@@ -423,10 +693,49 @@ static bool arg_ok(qd_ctx *ctx, const qd_eom *e, const qd_path_opts *o, bool ene
                      PATH_MAXSEG);
         return false;
     }
-    return true;
+    return free_ok(ctx, m, e, o, energy);
 }
 
 /* A holonomic constraint violated at an end: no path can reach it. */
+/* Is G the arc length sqrt(1 + sum q'^2) of the graph q(x)? */
+static bool is_arc_length(qd_ctx *ctx, const qd_eom *e, const qd_expr *G) {
+    const qd_expr *sum = qd_int(ctx, 1);
+    for (size_t j = 0; j < e->n && sum; j++)
+        sum = qd_add(ctx, sum, qd_pow(ctx, e->qd[j], qd_int(ctx, 2)));
+    return sum && qd_sqrt(ctx, sum) == G;
+}
+
+/* A length integral sqrt(1 + y'^2) dx = l below the distance between the
+ * ends (their fixed coordinates) has no curve: said before solving. */
+static bool lengths_reachable(sys *s, const qd_path_opts *o) {
+    const qd_eom *e = s->e;
+    double d2 = (o->t1 - o->t0) * (o->t1 - o->t0);
+    for (size_t j = 0; j < e->n; j++)
+        if (!(o->free0 && o->free0[j]) && !(o->free1 && o->free1[j]))
+            d2 += (o->q1[j] - o->q0[j]) * (o->q1[j] - o->q0[j]);
+    double d = sqrt(d2);
+    for (size_t i = 0; i < s->nm; i++) {
+        if (!is_arc_length(s->ctx, e, qd_model_isoperimetric(s->m, i)))
+            continue;
+        double l = s->ell[i];
+        const char *name = qd_model_isoperimetric_name(s->m, i);
+        if (l < d * (1 - 1e-12)) {
+            qd_ctx_error(s->ctx, QD_ERR_ARG,
+                         "constraint %s: the length l = %.10g is shorter than the distance %.10g "
+                         "between the end points: no curve", name, l, d);
+            return false;
+        }
+        if (l <= d * (1 + 1e-12)) {
+            qd_ctx_error(s->ctx, QD_ERR_ARG,
+                         "constraint %s: the length l = %.10g equals the distance between the "
+                         "end points: only the straight line, with no finite multiplier",
+                         name, l);
+            return false;
+        }
+    }
+    return true;
+}
+
 static bool ends_on_constraints(sys *s, const qd_path_opts *o, double t1, bool energy) {
     const qd_eom *e = s->e;
     for (size_t k = 0; k < e->ncon; k++) {
@@ -462,6 +771,7 @@ static void path_clear(qd_path *p) {
     qd__free(p->t);
     qd__free(p->q);
     qd__free(p->foci);
+    qd__free(p->mult);
     memset(p, 0, sizeof *p);
 }
 
@@ -475,11 +785,19 @@ void qd_path_set_free(qd_path_set *s) {
     s->count = 0;
 }
 
-static bool same_path(const qd_path *a, const double *v0, double T, double Ta) {
+static bool near(double a, double b) {
+    return fabs(a - b) <= 1e-6 * (1 + fabs(b));
+}
+
+/* The same start (v0, the free q0, lambda) and duration as path a. */
+static bool same_path(const shoot *p, const qd_path *a, const double *x, double T, double Ta) {
     for (size_t j = 0; j < a->n; j++)
-        if (fabs(a->v0[j] - v0[j]) > 1e-6 * (1 + fabs(v0[j])))
+        if (!near(a->v0[j], x[j]) || (p->fidx[j] >= 0 && !near(a->q[j], x[p->off_free + (size_t)p->fidx[j]])))
             return false;
-    return fabs(T - Ta) <= 1e-6 * (1 + fabs(T));
+    for (size_t i = 0; i < a->nmult; i++)
+        if (!near(a->mult[i], x[p->off_lam + i]))
+            return false;
+    return near(Ta, T);
 }
 
 /* Samples and action of a converged x, segment by segment. */
@@ -494,19 +812,23 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     out->v0 = qd__malloc(ctx, n * sizeof *out->v0);
     out->t = qd__malloc(ctx, ns * sizeof *out->t);
     out->q = qd__malloc(ctx, ns * n * sizeof *out->q);
-    if (!out->v0 || !out->t || !out->q)
+    out->nmult = p->nm;
+    out->mult = p->nm ? qd__malloc(ctx, p->nm * sizeof *out->mult) : NULL;
+    if (!out->v0 || !out->t || !out->q || (p->nm && !out->mult))
         return false;
     memcpy(out->v0, x, n * sizeof *x);
+    if (p->nm)
+        memcpy(out->mult, x + p->off_lam, p->nm * sizeof *x);
     /* the samples interpolate (cubic Hermite in q, q') the very steps the
      * Newton iteration took, so the last one is the end reached to tol */
     size_t i = 0;
-    double S = 0, prev[2 * 32];
+    double S = 0, prev[2 * 32], Fl = 0;
     for (size_t k = 0; k < N; k++) {
         double *y = p->y, ta = p->t0 + tau * (double)k;
         size_t steps = grid_steps(p->s, ta, ta + tau);
         steps = steps ? steps : 1;
         double h = tau / (double)steps;
-        memset(y, 0, aug_size(n, false) * sizeof *y);
+        memset(y, 0, aug_size(p->s, false) * sizeof *y);
         start_state(p, x, k, y);
         for (size_t st = 0; st < steps; st++) {
             double t = ta + h * (double)st;
@@ -528,14 +850,19 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
                                         h11 * h * y[n + j];
             }
         }
-        S += y[2 * n];
+        S += y[p->s->ns];
+        for (size_t m = 0; m < p->nm; m++)  /* the functional F = L + lambda G */
+            Fl += x[p->off_lam + m] * y[p->s->ns + 1 + m];
     }
-    out->action = S;
+    out->action = S + Fl;
     /* the second variation along the path: the Jacobi equation from its
      * start (foci.c); a minimum iff no focus in (t0, t1] and Legendre's
      * condition (Desloge ch. 84) */
-    if (p->s->e->ncon)  /* foci.c has no Jacobi equation on a constraint manifold yet */
+    /* foci.c has no Jacobi equation on a constraint manifold yet, and the
+     * fixed-end one does not decide with multipliers or free ends */
+    if (p->s->e->ncon || p->nm || p->nf0 || p->free1)
         return true;
+    out->examined = true;
     if (qd_path_foci(ctx, p->s->m, p->s->e, p->t0, p->q0, x, p->t0 + T, &out->foci, &out->nfoci,
                      &out->legendre) != QD_OK)
         return false;
@@ -570,9 +897,15 @@ typedef struct search {
     shoot sh;
     const qd_path_opts *o;
     size_t nstart;
-    double omega, span, vscale;
-    double *x, *guessrow;
+    double omega, span, vscale, lscale;
+    double *x, *F;
 } search;
+
+/* The multipliers' starts: lambda0 + lscale times these, cycled fastest
+ * (a multiplier's scale is the problem's, and a wrong sign can make the
+ * equations singular at the start: the catenary's w y - lambda = 0). */
+static const double lam_steps[] = {0, -1, 1, -2, 2, -4, 4, -8, 8, -0.5, 0.5, -16, 16};
+#define NLAM (sizeof lam_steps / sizeof lam_steps[0])
 
 /* The start vector number i: v0 (and T) then every later segment's state
  * from a straight-line interpolation at the velocity v0. */
@@ -581,16 +914,21 @@ static void make_start(search *sr, size_t i, double *x) {
     size_t n = p->n;
     const qd_path_opts *o = sr->o;
     double T = p->t1 - p->t0, v[32], u[32];
+    size_t kl = 0;
     if (i < o->nguess) {
         memcpy(v, o->guess + i * n, n * sizeof *v);
     } else {
         size_t k = i - o->nguess;
+        if (p->nm) {  /* every multiplier start at each velocity */
+            kl = k % NLAM;
+            k /= NLAM;
+        }
         /* at fixed energy only the direction matters: the chord's unit vector */
         double d = p->energy && sr->span > 0 ? sr->span : T;
         for (size_t j = 0; j < n; j++)
             v[j] = (p->q1[j] - p->q0[j]) / d;
         if (k > 0) {
-            spread(n, k - 1, sr->nstart - 1, u);
+            spread(n, k - 1, (p->nm ? (sr->nstart + NLAM - 1) / NLAM : sr->nstart) - 1, u);
             for (size_t j = 0; j < n; j++)
                 v[j] += sr->vscale * u[j];
         }
@@ -609,19 +947,42 @@ static void make_start(search *sr, size_t i, double *x) {
         x[n] = T;
     }
     memcpy(x, v, n * sizeof *v);
+    for (size_t j = 0; j < n; j++)
+        if (p->fidx[j] >= 0)
+            x[p->off_free + (size_t)p->fidx[j]] = p->q0[j];
+    for (size_t m = 0; m < p->nm; m++)
+        x[p->off_lam + m] = p->s->lam0[m] + sr->lscale * lam_steps[kl];
     for (size_t k = 1; k < p->N; k++) {
         double tk = T * (double)k / (double)p->N, *s = x + shoot_off(p, k);
         for (size_t j = 0; j < n; j++) {
             s[j] = p->q0[j] + (p->q1[j] - p->q0[j]) * tk / T;
             s[n + j] = (p->q1[j] - p->q0[j]) / T;
+            if (p->free1 && p->free1[j]) {  /* no end to aim at: the line at v0 */
+                s[j] = p->q0[j] + v[j] * tk;
+                s[n + j] = v[j];
+            }
         }
     }
+}
+
+/* No start converged: the smallest residual, and each isoperimetric
+ * condition's own at that start (the one a user can act on). */
+static void no_path_error(qd_ctx *ctx, const sys *s, double best, double tol, const double *iso) {
+    char more[256] = "";
+    size_t len = 0;
+    for (size_t i = 0; i < s->nm && len < sizeof more - 1; i++)
+        len += (size_t)snprintf(more + len, sizeof more - len,
+                                "%s integral of constraint %s minus its value: %.3g",
+                                i ? "," : ";", qd_model_isoperimetric_name(s->m, i), iso[i]);
+    qd_ctx_error(ctx, QD_ERR_NUMERIC,
+                 "no path converged to the end point: smallest residual %.3g (tolerance %.3g)%s",
+                 best, tol, more);
 }
 
 static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bool energy,
                              double E, const qd_path_opts *o, qd_path_set *out) {
     memset(out, 0, sizeof *out);
-    if (!arg_ok(ctx, e, o, energy))
+    if (!arg_ok(ctx, m, e, o, energy))
         return QD_ERR_ARG;
     sys s;
     qd_status st = sys_init(&s, ctx, m, e);
@@ -630,11 +991,15 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     shoot *p = &sr.sh;
     size_t n = e->n;
     found fd = {0, 0, NULL};
-    double best = INFINITY, tol = o->tol > 0 ? o->tol : 1e-10;
+    double best = INFINITY, tol = o->tol > 0 ? o->tol : 1e-10, best_iso[PATH_MAXMULT] = {0};
     if (st != QD_OK)
         goto done;
     if (energy && !qd_is_zero(qd_diff(ctx, e->L, qd_time(ctx)))) {
         qd_ctx_error(ctx, QD_ERR_ARG, "path --energy: L depends on t, so h is not conserved");
+        st = QD_ERR_ARG;
+        goto done;
+    }
+    if (!energy && !lengths_reachable(&s, o)) {
         st = QD_ERR_ARG;
         goto done;
     }
@@ -650,8 +1015,10 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     p->q1 = o->q1;
     p->energy = energy;
     p->E = E;
-    p->w = qd__malloc(ctx, work_size(n) * sizeof *p->w);
-    p->y = qd__malloc(ctx, aug_size(n, true) * sizeof *p->y);
+    p->nm = s.nm;
+    p->free1 = any_free(o->free1, n) ? o->free1 : NULL;
+    p->w = qd__malloc(ctx, work_size(&s) * sizeof *p->w);
+    p->y = qd__malloc(ctx, aug_size(&s, true) * sizeof *p->y);
     if (!p->w || !p->y) {
         st = QD_ERR_NOMEM;
         goto done;
@@ -668,9 +1035,14 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     s.hmax = fmin(Tg / 200, sr.omega > 0 ? 0.04 / sr.omega : INFINITY);
     size_t N = o->segments ? o->segments : (size_t)ceil(Tg * sr.omega / 3);
     p->N = N < 1 ? 1 : N > PATH_MAXSEG ? PATH_MAXSEG : N;
-    p->nx = n + (energy ? 1 : 0) + 2 * n * (p->N - 1);
+    shoot_layout(p, o->free0);
     sr.o = o;
     sr.nstart = o->all ? (n == 1 ? 25 : 36) : 1;
+    if (s.nm)  /* each multiplier start at three velocities, until one converges */
+        sr.nstart = 3 * NLAM;
+    sr.lscale = 1;
+    for (size_t i = 0; i < s.nm; i++)
+        sr.lscale = fmax(sr.lscale, fabs(s.lam0[i]));
     /* the spread of the starts: the chord's speed and the speeds of the
      * motion's own time scale (twice omega times the larger of the span and 1:
      * a pendulum's librations reach 2 omega) */
@@ -678,7 +1050,8 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     if (energy)
         sr.vscale = 1.5;
     sr.x = qd__malloc(ctx, p->nx * sizeof *sr.x);
-    if (!sr.x) {
+    sr.F = qd__malloc(ctx, p->nx * sizeof *sr.F);
+    if (!sr.x || !sr.F) {
         st = QD_ERR_NOMEM;
         goto done;
     }
@@ -693,13 +1066,16 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         }
         qd_ctx_clear_error(ctx);
         s.st = QD_OK;
+        if (!ok && res < best && s.nm && shoot_eval(p, sr.x, sr.F, NULL))
+            memcpy(best_iso, p->iso_res, s.nm * sizeof *best_iso);
         best = fmin(best, res);
         if (!ok)
             continue;
         double T = shoot_T(p, sr.x);
         bool dup = false;
         for (size_t k = 0; k < fd.count && !dup; k++)
-            dup = same_path(&fd.paths[k], sr.x, T, fd.paths[k].t[fd.paths[k].nsamples - 1] - o->t0);
+            dup = same_path(p, &fd.paths[k], sr.x, T,
+                            fd.paths[k].t[fd.paths[k].nsamples - 1] - o->t0);
         if (dup)
             continue;
         if (fd.count == fd.cap) {
@@ -720,17 +1096,19 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
             goto done;
         }
         fd.count++;
-        if (!o->all)
+        /* with multipliers the starts reach extremals of either sign (the
+         * hanging chain and the arch): all are tried, the least kept */
+        if (!o->all && (s.nm == 0 || i < o->nguess))
             break;
     }
     if (fd.count == 0) {
-        qd_ctx_error(ctx, QD_ERR_NUMERIC,
-                     "no path converged to the end point: smallest residual %.3g (tolerance %.3g)",
-                     best, tol);
+        no_path_error(ctx, &s, best, tol, best_iso);
         st = QD_ERR_NUMERIC;
         goto done;
     }
     qsort(fd.paths, fd.count, sizeof *fd.paths, by_action);
+    while (!o->all && fd.count > 1)
+        path_clear(&fd.paths[--fd.count]);
     out->count = fd.count;
     out->paths = fd.paths;
     fd.paths = NULL;
@@ -740,6 +1118,7 @@ done:
         path_clear(&fd.paths[k]);
     qd__free(fd.paths);
     qd__free(sr.x);
+    qd__free(sr.F);
     qd__free(p->w);
     qd__free(p->y);
     sys_free(&s);

@@ -19,7 +19,19 @@ Hamilton's principle and Maupertuis'; Byerly ch. IV; seed-desloge-D.md):
   pi sqrt(l/g) and no minimum past it, a minimum before it;
 - errors: an end off the rod of examples/pendulum_cartesian.qd (exit 1, the
   constraint and the residual named); at fixed energy an end beyond the
-  turning point (exit 1, "smallest residual"); bad options (exit 2).
+  turning point (exit 1, "smallest residual"); bad options (exit 2);
+- isoperimetric (Desloge vol. 2 App. 32 Thm 5, seed-desloge-D.md C15, P19):
+  examples/catenary.qd from (0,0) to (2,1) with l = 3 (and --set w=2, l=4):
+  y = c + a cosh((x - x0)/a) with sqrt(l^2 - h^2) = 2 a sinh(d/(2a)) (a by
+  bisection here), x0 = mid - a atanh(h/l), the multiplier lambda_length =
+  w c (the model's L = F - lambda G), the integral F = w (c l + a^2/2
+  [u + sinh u cosh u]); a chain shorter than the chord: exit 2, the message;
+- free ends (Gelfand and Fomin ch. 1 sec. 6): the chain sliding on x = 1
+  (horizontal there: l = a sinh(1/a)); examples/path_point_to_line.qd (the
+  perpendicular, one end coordinate free or both); the brachistochrone to the
+  line x = pi from the point th0 = pi/3 of the cycloid R = 1
+  (examples/brachistochrone_free_end.qd: y' = sqrt(3) at the start, y = 2 at
+  the line, time (2 pi/3)/sqrt(g)).
 
 Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
@@ -164,6 +176,87 @@ def errors(qdot):
         check('bad options exit 2: %s' % ' '.join(bad), rc == 2, (rc, err))
 
 
+def half_width(r, s):
+    """a with 2 a sinh(s/a) = r, by bisection (the left side falls)."""
+    lo, hi = 1e-3, 1e3
+    for _ in range(300):
+        a = math.sqrt(lo * hi)
+        if 2 * a * math.sinh(s / a) > r:
+            lo = a
+        else:
+            hi = a
+    return math.sqrt(lo * hi)
+
+
+def catenary_length(qdot):
+    for w, l in ((1.0, 3.0), (2.0, 4.0)):
+        xa, ya, xb, yb = 0.0, 0.0, 2.0, 1.0
+        r = paths(qdot, 'catenary.qd', '--from', 'x=0, y=0', '--to', 'x=2, y=1',
+                  '--set', 'w=%g' % w, '--set', 'l=%g' % l)
+        if not r:
+            continue
+        p = r['paths'][0]
+        a = half_width(math.sqrt(l * l - (yb - ya) ** 2), (xb - xa) / 2)
+        x0 = (xa + xb) / 2 - a * math.atanh((yb - ya) / l)
+        c = ya - a * math.cosh((xa - x0) / a)
+        tag = 'catenary w=%g l=%g' % (w, l)
+        close(tag + ' multiplier', p['multipliers'].get('lambda_length'), w * c, 1e-7)
+        close(tag + " y'(0)", p['initial_velocities']["y'"], math.sinh((xa - x0) / a), 1e-7)
+        worst = max(abs(y - (c + a * math.cosh((x - x0) / a))) for x, y in p['samples'])
+        check(tag + ' samples on the catenary', worst < 1e-7, worst)
+        ua, ub = (xa - x0) / a, (xb - x0) / a
+        F = w * (c * l + a * a / 2 * (ub - ua + math.sinh(ub) * math.cosh(ub)
+                                     - math.sinh(ua) * math.cosh(ua)))
+        close(tag + ' integral F', p['action'], F, 1e-7)
+        check(tag + ' second variation not examined', p['examined'] is False, p['examined'])
+    rc, out, err = run(qdot, 'path', str(EXAMPLES / 'catenary.qd'), '--from', 'x=0, y=0',
+                       '--to', 'x=2, y=2.5')
+    check('chain shorter than the chord exit 2', rc == 2 and
+          'the length l = 3 is shorter than the distance 3.201562119 between the end points: '
+          'no curve' in err, (rc, err))
+    r = paths(qdot, 'path_projectile.qd', '--from', 'x=0, y=0, t=0', '--to', 'x=10, y=0, t=2')
+    check('no multipliers, examined', r and r['paths'][0]['multipliers'] == {} and
+          r['paths'][0]['examined'] is True, r and r['paths'][0]['multipliers'])
+
+
+def free_ends(qdot):
+    r = paths(qdot, 'catenary.qd', '--from', 'x=0, y=0', '--to', 'x=1, y=free')
+    if r:
+        p = r['paths'][0]
+        a = half_width(6.0, 1.0)  # l = a sinh(1/a) = 3
+        c = -a * math.cosh(1 / a)
+        close('sliding chain multiplier', p['multipliers']['lambda_length'], c, 1e-7)
+        close('sliding chain end height', p['samples'][-1][1], c + a, 1e-7)
+        close("sliding chain y'(0)", p['initial_velocities']["y'"], -math.sinh(1 / a), 1e-6)
+    r = paths(qdot, 'path_point_to_line.qd', '--from', 'x=0, y=1, z=2',
+              '--to', 'x=3, y=free, z=free')
+    if r:
+        p = r['paths'][0]
+        close('perpendicular length', p['action'], 3.0, 1e-9)
+        close("perpendicular y'", p['initial_velocities']["y'"], 0.0, 1e-9)
+        close('perpendicular end', p['samples'][-1][2], 2.0, 1e-9)
+    r = paths(qdot, 'path_point_to_line.qd', '--from', 'x=0, y=1, z=2',
+              '--to', 'x=3, y=5, z=free')
+    if r:
+        p = r['paths'][0]
+        close('one free coordinate: length', p['action'], 5.0, 1e-9)
+        close("one free coordinate: y'", p['initial_velocities']["y'"], 4 / 3, 1e-9)
+        close("one free coordinate: z'", p['initial_velocities']["z'"], 0.0, 1e-9)
+    g = 9.8
+    r = paths(qdot, 'brachistochrone_free_end.qd', '--from', 'x=pi/3 - sqrt(3)/2, y=1/2',
+              '--to', 'x=pi, y=free', '--guess', "y'=1")
+    if r:
+        p = r['paths'][0]
+        close("brachistochrone y' at th0", p['initial_velocities']["y'"], math.sqrt(3), 1e-6)
+        close('brachistochrone meets x = pi at y = 2', p['samples'][-1][1], 2.0, 1e-6)
+        close('brachistochrone time', p['action'], 2 * math.pi / 3 / math.sqrt(g), 1e-7)
+    proj = str(EXAMPLES / 'path_projectile.qd')
+    for bad in (['--from', 'x=0, y=0, t=0', '--to', 'x=1, m=free, t=1'],
+                ['--from', 'x=0, y=0', '--to', 'x=1, y=free', '--energy', '5']):
+        rc, out, err = run(qdot, 'path', proj, *bad)
+        check('bad free end exit 2: %s' % ' '.join(bad), rc == 2 and 'free' in err, (rc, err))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
@@ -174,6 +267,8 @@ def main():
     pendulum(qdot)
     pendulum_focus(qdot)
     errors(qdot)
+    catenary_length(qdot)
+    free_ends(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
 
