@@ -119,9 +119,7 @@ static qd_status derive_row(qd_ctx *ctx, qd_eom *e, const qd_expr *L, const qd_e
         qd_ctx_error_about(ctx, QD_SUBJECT_COORD, j, qd_expr_name(e->q[j]), QD_REASON_NONE, NULL);
         return st;
     }
-    e->f[j] = grouped(ctx, e, qd_neg(ctx, rest));
-    if (!raw)
-        e->f[j] = qd_simplify(ctx, e->f[j]);
+    e->f[j] = raw ? qd_neg(ctx, rest) : qd_simplify(ctx, grouped(ctx, e, qd_neg(ctx, rest)));
     return e->f[j] ? QD_OK : qd_ctx_status(ctx);
 }
 

@@ -114,8 +114,8 @@ qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s);
 
 /* Lagrange's rows M q'' = f of a shell from s with the Lagrangian L (as
  * qd__sys_lagrangian gives it): e->M, e->f, e->L; each entry simplified
- * unless raw (f grouped by velocity monomials all the same), for a caller
- * that combines them and simplifies only the combinations. */
+ * (f grouped by velocity monomials first) unless raw, for a caller that
+ * combines them and simplifies only the combinations. */
 qd_status qd__eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L, bool raw);
 
 /* L of s grouped by velocity monomials (as qd_eom_derive differentiates it),
