@@ -14,6 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Consecutive stage failures retried with a shorter step (10^-8 of it by
+ * the last) before the failure is reported. */
+#define MAX_STAGE_FAILURES 8
+
 typedef struct erk {
     const qd__erk *tab;
     double **K, **Kr;     /* stages of the last step; of a redo */
@@ -60,6 +64,12 @@ static qd_status initial_step(qd__integ *it, erk *r) {
     for (size_t i = 0; i < d; i++)
         y1[i] = it->y[i] + h0 * f0[i];
     qd_status st = qd__rhs(it->s, it->form, it->t + h0, y1, f1);
+    if (st != QD_OK && st != QD_ERR_NOMEM && qd__ctx_recover(it->s->ctx)) {
+        /* the Euler step left the equations' domain: start with it shorter
+         * and let the controller find the rest (failures there are retried) */
+        it->h = h0 / 10;
+        return QD_OK;
+    }
     if (st != QD_OK)
         return st;
     for (size_t i = 0; i < d; i++)
@@ -156,13 +166,25 @@ qd_status qd__erk_step(qd__integ *it) {
     }
     it->y_changed = false;
     const double facc1 = 1 / tab->fac1, facc2 = 1 / tab->fac2;
-    for (;;) {
+    for (int failed = 0;;) {
         double h = it->h;
         if (st != QD_OK)
             return st;
         if (!(fabs(h) > 10 * fabs(nextafter(it->t, INFINITY) - it->t)))
             return qd__underflow(it, h);
         st = stages(it, tab, it->t, it->y, h, r->K, r->ytmp, r->ynew);
+        if (st != QD_OK && st != QD_ERR_NOMEM && !it->fixed && ++failed <= MAX_STAGE_FAILURES &&
+            qd__ctx_recover(it->s->ctx)) {
+            /* a stage's state the equations cannot take (a step too long
+             * carried it out of their domain: log of a negative, a mass
+             * matrix gone singular): a rejected step, ten times shorter.
+             * Where the trouble is real it persists, and its message stands. */
+            it->rejected++;
+            r->reject = true;
+            it->h = h / 10;
+            st = QD_OK;
+            continue;
+        }
         if (st != QD_OK)
             return st;
         double err = it->fixed ? 0 : tab->err(it, (const double *const *)r->K, h, r->ynew);
