@@ -457,11 +457,20 @@ typedef struct found {
     qd_path *paths;
 } found;
 
+/* Has e a nonholonomic constraint (foci.c refuses those)? */
+static bool nonholonomic(const qd_eom *e) {
+    for (size_t k = 0; k < e->ncon; k++)
+        if (e->con[k].kind == QD_CON_NONHOLONOMIC)
+            return true;
+    return false;
+}
+
 static void path_clear(qd_path *p) {
     qd__free(p->v0);
     qd__free(p->t);
     qd__free(p->q);
     qd__free(p->foci);
+    qd__free(p->foci_mult);
     memset(p, 0, sizeof *p);
 }
 
@@ -534,10 +543,10 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     /* the second variation along the path: the Jacobi equation from its
      * start (foci.c); a minimum iff no focus in (t0, t1] and Legendre's
      * condition (Desloge ch. 84) */
-    if (p->s->e->ncon)  /* foci.c has no Jacobi equation on a constraint manifold yet */
+    if (nonholonomic(p->s->e))  /* its motions do not make the action stationary: no foci */
         return true;
-    if (qd_path_foci(ctx, p->s->m, p->s->e, p->t0, p->q0, x, p->t0 + T, &out->foci, &out->nfoci,
-                     &out->legendre) != QD_OK)
+    if (qd_path_foci_mult(ctx, p->s->m, p->s->e, p->t0, p->q0, x, p->t0 + T, &out->foci,
+                          &out->foci_mult, &out->nfoci, &out->legendre) != QD_OK)
         return false;
     out->minimum = out->legendre && out->nfoci == 0;
     return true;
