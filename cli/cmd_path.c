@@ -172,9 +172,11 @@ static void write_text(const path_run *r, qd_buf *b) {
         for (size_t k = 0; k < p->nfoci; k++) {
             qd_buf_puts(b, k ? ", " : " ");
             put(b, p->foci[k]);
+            if (p->foci_mult && p->foci_mult[k] > 1) /* det J touches 0 there (foci.c) */
+                qd_buf_printf(b, " (multiplicity %zu)", p->foci_mult[k]);
         }
-        qd_buf_printf(b, "%s\n  minimum: %s\n  samples (t", p->nfoci ? "" : " none",
-                      p->minimum ? "yes" : "no");
+        qd_buf_printf(b, "%s\n  minimum: %s\n  samples (%s", p->nfoci ? "" : " none",
+                      p->minimum ? "yes" : "no", qd_print_time_name(r->ctx));
         for (size_t j = 0; j < n; j++)
             qd_buf_printf(b, ", %s", qd_expr_name(r->e->q[j]));
         size_t step = p->nsamples > 11 ? (p->nsamples - 1) / 10 : 1;

@@ -23,7 +23,8 @@ The independent variable prints under its own name in every format (issue
 (which binds x, not t); the text equations of the catenary and of
 F = sqrt(1 + y'^2)/x (x explicit: the hyperbolic half-plane, whose
 extremals are the circles centred on x = 0), read back by SymPy with x as
-the variable, are SymPy's Euler-Lagrange equations.
+the variable, are SymPy's Euler-Lagrange equations; `qdot path` names x in
+its samples and marks a focus of multiplicity 2.
 Prints "N passed, N failed"; exit 1 on failure.
 """
 import argparse
@@ -220,6 +221,27 @@ def check_independent_printing(build):
         check("halfplane check: depends on x", "L depends on x explicitly" in r.stdout, r.stdout)
 
 
+def check_path_text(build):
+    """qdot path: the samples' header names x; a focus of multiplicity 2 (the
+    isotropic plane oscillator at half a period, Gelfand and Fomin ch. 5)
+    says so and the path past it is no minimum."""
+    brach = EX / "brachistochrone.qd"
+    for var in ("x", "t"):  # the end points' variable, either spelling
+        r = qdot(build, "path", brach, "--from", "y=1, %s=0.5" % var, "--to", "y=0.8, %s=1" % var)
+        if r.returncode == 0:
+            break
+    check("path brachistochrone: exit 0", r.returncode == 0, r.stderr)
+    check("path brachistochrone: samples in x", "samples (x, y;" in r.stdout, r.stdout)
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "iso.qd"
+        path.write_text("coordinates x, y\nparameters m = 1, k = 1\nT = m*(x'^2 + y'^2)/2\n"
+                        "V = k*(x^2 + y^2)/2\n")
+        r = qdot(build, "path", path, "--from", "x=1, y=0, t=0", "--to", "x=0, y=1, t=1.2*pi")
+        check("path isotropic: a double focus at pi",
+              "kinetic foci: 3.14159265359 (multiplicity 2)\n" in r.stdout, r.stdout)
+        check("path isotropic: no minimum", "minimum: no\n" in r.stdout, r.stdout)
+
+
 def check_errors(build):
     cases = [
         ("independent x\nindependent s\ncoordinates y\nL = y'^2\n",
@@ -242,7 +264,7 @@ def main():
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
     for f in (check_catenary, check_brachistochrone, check_geodesic, check_text,
-              check_independent_printing, check_errors):
+              check_independent_printing, check_path_text, check_errors):
         f(args.build)
     print("%d passed, %d failed" % (results["passed"], results["failed"]))
     return 1 if results["failed"] else 0
