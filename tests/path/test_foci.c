@@ -22,7 +22,8 @@
  *   where det J does not change sign, 3 in space), close simple ones kept
  *   apart, and holonomic constraints with multipliers (geodesics on the
  *   2- and 3-sphere, the pendulum on a rod) against the same motion in
- *   free coordinates; nonholonomic constraints refused.
+ *   free coordinates; nonholonomic constraints refused; every allocation
+ *   failed in turn.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -34,6 +35,7 @@
 #include <string.h>
 
 #include "qdot/qdot.h"
+#include "util/fault.h"
 
 #define PI 3.14159265358979323846
 
@@ -407,6 +409,40 @@ static void test_nonholonomic_refused(void **state) {
     unload(&f);
 }
 
+/* Every allocation of qd_path_foci_mult failed in turn (tests/util/fault.h)
+ * on the sphere in Cartesian coordinates, whose tangent space and
+ * Legendre test allocate too: the focus at pi l/v or a clean
+ * QD_ERR_NOMEM, nothing leaked.  Parse and derivation run unfailed. */
+static qd_status sphere_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
+    long to_go = qt_fault_hold(f);
+    qd_model *m = qd_model_parse(ctx, SPHERE2, NULL);
+    qd_eom *e = m ? qd_eom_derive(ctx, m) : NULL;
+    if (!e)
+        fail_msg("parse or derive: %s", qd_ctx_message(ctx));
+    const double l = 1.3, v = 4, tf = PI * l / v;
+    const double q0[3] = {0, l, 0}, v0[3] = {v, 0, 0};
+    double *foci = NULL;
+    size_t *mult = NULL, nf = 0;
+    qt_fault_release(f, to_go);
+    qd_status st = qd_path_foci_mult(ctx, m, e, 0, q0, v0, 1.2 * tf, &foci, &mult, &nf, NULL);
+    qt_fault_hold(f);
+    if (st == QD_OK && !(nf == 1 && fabs(foci[0] - tf) < 1e-8 && mult[0] == 1))
+        fail_msg("wrong foci after %ld allocations: %zu of them", f->count, nf);
+    if (st != QD_OK && (foci || mult))
+        fail_msg("a failed run left foci behind");
+    qd_path_foci_free(ctx, foci);
+    qd_path_foci_mult_free(ctx, mult);
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_foci_fault(void **state) {
+    (void)state;
+    assert_true(qt_fault_loop("sphere foci", sphere_body, NULL, 7).runs > 5);
+}
+
 static void test_bad_times(void **state) {
     (void)state;
     fix f;
@@ -433,6 +469,7 @@ int main(void) {
         cmocka_unit_test(test_three_sphere),
         cmocka_unit_test(test_pendulum_cartesian),
         cmocka_unit_test(test_nonholonomic_refused),
+        cmocka_unit_test(test_foci_fault),
         cmocka_unit_test(test_bad_times),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
