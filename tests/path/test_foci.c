@@ -393,6 +393,27 @@ static void test_pendulum_cartesian(void **state) {
     }
 }
 
+/* Legendre's condition asks M > 0 on the admissible velocities only
+ * (Gelfand and Fomin ch. 5 sec. 29): T = (x'^2 - z'^2)/2 is indefinite,
+ * but z = 0 leaves x' alone, with M = 1 there; a negative mass fails on
+ * the tangent space too.  Foci at j pi/w either way (w = 2). */
+static void test_legendre_on_tangent_space(void **state) {
+    (void)state;
+    const double q0[2] = {0.3, 0}, v0[2] = {1, 0};
+    const char *model[2] = {"coordinates x, z\nparameters m = 1, k = 4\n"
+                            "T = m*(x'^2 - z'^2)/2\nV = k*x^2/2\nconstraint flat: z = 0\n",
+                            "coordinates x, z\nparameters m = -1, k = -4\n"
+                            "T = m*(x'^2 + z'^2)/2\nV = k*x^2/2\nconstraint flat: z = 0\n"};
+    for (int i = 0; i < 2; i++) {
+        found fd;
+        foci_of(model[i], q0, v0, 2, &fd);
+        assert_true(fd.legendre == (i == 0));
+        assert_int_equal(fd.n, 1);
+        assert_true(fabs(fd.foci[0] - PI / 2) < 1e-8);
+        found_free(&fd);
+    }
+}
+
 /* The Chaplygin sleigh's blade is nonholonomic: its motions are not
  * stationary paths of the action, so they have no foci to report. */
 static void test_nonholonomic_refused(void **state) {
@@ -468,6 +489,7 @@ int main(void) {
         cmocka_unit_test(test_sphere_cartesian),
         cmocka_unit_test(test_three_sphere),
         cmocka_unit_test(test_pendulum_cartesian),
+        cmocka_unit_test(test_legendre_on_tangent_space),
         cmocka_unit_test(test_nonholonomic_refused),
         cmocka_unit_test(test_foci_fault),
         cmocka_unit_test(test_bad_times),
