@@ -23,7 +23,7 @@ The independent variable prints under its own name in every format (issue
 (which binds x, not t); the text equations of the catenary and of
 F = sqrt(1 + y'^2)/x (x explicit: the hyperbolic half-plane, whose
 extremals are the circles centred on x = 0), read back by SymPy with x as
-the variable, are SymPy's Euler-Lagrange equations; `qdot path` names x in
+the variable, are SymPy's Euler-Lagrange equations; `--at` takes x=; `qdot path` names x in
 its samples and marks a focus of multiplicity 2.
 Prints "N passed, N failed"; exit 1 on failure.
 """
@@ -219,6 +219,10 @@ def check_independent_printing(build):
                            (b + sp.sqrt(R**2 - x**2), (0.4, 1.1, 1.9, 2.3), {c: 1}))
         r = qdot(build, "check", path)
         check("halfplane check: depends on x", "L depends on x explicitly" in r.stdout, r.stdout)
+        # --at takes the state in x: y'' = (1 + y'^2) y'/x, the Euler-Lagrange equation
+        r = qdot(build, "eom", path, "--at", "y=1, y'=0.5, x=0.25")
+        check("halfplane --at x: y'' = (1 + y'^2) y'/x",
+              "  y'' = 2.5\n" in r.stdout, r.stdout + r.stderr)
 
 
 def check_path_text(build):
