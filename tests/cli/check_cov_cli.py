@@ -23,7 +23,8 @@ The independent variable prints under its own name in every format (issue
 (which binds x, not t); the text equations of the catenary and of
 F = sqrt(1 + y'^2)/x (x explicit: the hyperbolic half-plane, whose
 extremals are the circles centred on x = 0), read back by SymPy with x as
-the variable, are SymPy's Euler-Lagrange equations; `--at` takes x=; `qdot path` names x in
+the variable, are SymPy's Euler-Lagrange equations; `--at` takes x=; the
+SymPy scripts of hamiltonian, routh and hj bind x and run; `qdot path` names x in
 its samples and marks a focus of multiplicity 2.
 Prints "N passed, N failed"; exit 1 on failure.
 """
@@ -225,6 +226,31 @@ def check_independent_printing(build):
               "  y'' = 2.5\n" in r.stdout, r.stdout + r.stderr)
 
 
+def check_sympy_scripts(build):
+    """hamiltonian, routh, hj --format sympy on an `independent x` model:
+    the scripts bind x (not t) and run; H = p^2/2 + a x y there."""
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "linear.qd"
+        path.write_text("independent x\ncoordinates y, z\nparameters a = 2\n"
+                        "L = (y'^2 + z'^2)/2 - a*x*y\n")
+        for cmd in (["hamiltonian"], ["routh", "--ignore", "z"], ["hj"]):
+            r = qdot(build, cmd[0], path, *cmd[1:], "--format", "sympy")
+            ns = {}
+            try:
+                exec(r.stdout, ns)
+                ran = True
+            except Exception as exc:  # an unbound t or x
+                ran = False
+                r.stdout += "\n%r" % exc
+            check("%s sympy on independent x: runs, binds x not t" % cmd[0],
+                  r.returncode == 0 and ran and "x" in ns and "t" not in ns, r.stdout + r.stderr)
+            if cmd[0] == "hamiltonian" and ran:
+                x, y, a = ns["x"], ns["y"], ns["a"]
+                want = (ns["p_y"]**2 + ns["p_z"]**2) / 2 + a * x * y(x)
+                check("hamiltonian in x: H = p^2/2 + a x y", sp.simplify(ns["H"] - want) == 0,
+                      ns["H"])
+
+
 def check_path_text(build):
     """qdot path: the samples' header names x; a focus of multiplicity 2 (the
     isotropic plane oscillator at half a period, Gelfand and Fomin ch. 5)
@@ -268,7 +294,7 @@ def main():
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
     for f in (check_catenary, check_brachistochrone, check_geodesic, check_text,
-              check_independent_printing, check_path_text, check_errors):
+              check_independent_printing, check_sympy_scripts, check_path_text, check_errors):
         f(args.build)
     print("%d passed, %d failed" % (results["passed"], results["failed"]))
     return 1 if results["failed"] else 0
