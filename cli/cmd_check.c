@@ -243,13 +243,15 @@ static bool nonconservative(check *c, const qd_eom *e) {
 
 static void time_dependence(check *c, const qd_eom *e, const qd_expr *L) {
     bool explicit_t = qd_has(L, qd_time(c->ctx));
-    qd_buf_printf(&c->out, "explicit time dependence: %s\n",
-                  explicit_t ? "L depends on t explicitly"
-                             : "none (L does not contain t)");
+    const char *t = qd_print_time_name(c->ctx); /* x for `independent x` */
+    if (explicit_t)
+        qd_buf_printf(&c->out, "explicit time dependence: L depends on %s explicitly\n", t);
+    else
+        qd_buf_printf(&c->out, "explicit time dependence: none (L does not contain %s)\n", t);
     for (size_t k = 0; k < e->ncon; k++)
         if (qd_has(e->con[k].expr, qd_time(c->ctx)))
-            qd_buf_printf(&c->out, "rheonomic constraint: %s depends on t explicitly\n",
-                          e->con[k].name);
+            qd_buf_printf(&c->out, "rheonomic constraint: %s depends on %s explicitly\n",
+                          e->con[k].name, t);
     if (!explicit_t && !nonconservative(c, e))
         qd_buf_puts(&c->out, "energy integral: h = sum_j q'_j dL/dq'_j - L is conserved\n");
     if (e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0)))

@@ -262,7 +262,9 @@ static void sympy_functions(const ham_run *r, qd_buf *b) {
 static void write_sympy(const ham_run *r, qd_buf *b) {
     const qd_ham *h = r->h;
     const qd_model *m = r->mf.model;
-    qd_buf_printf(b, "# qdot hamiltonian %s\nfrom sympy import *\n\nt = Symbol('t')\n", r->mf.path);
+    const char *t = qd_print_time_name(r->ctx); /* x for `independent x` */
+    qd_buf_printf(b, "# qdot hamiltonian %s\nfrom sympy import *\n\n%s = Symbol('%s')\n", r->mf.path,
+                  t, t);
     for (size_t j = 0; j < h->n; j++)
         qd_buf_printf(b, "%s = Function('%s')\n%s = Symbol('%s')\n", qd_expr_name(h->q[j]),
                       qd_expr_name(h->q[j]), qd_expr_name(h->p[j]), qd_expr_name(h->p[j]));

@@ -250,8 +250,9 @@ static void write_sympy_motion(const hj_run *r, qd_buf *b) {
 static void write_sympy(const hj_run *r, qd_buf *b) {
     const qd_hj *h = r->h;
     const qd_model *m = r->mf.model;
-    qd_buf_printf(b, "# qdot hj %s\nfrom sympy import *\n\nt = Symbol('t')\n"
-                  "integral = Integral\nS = Function('S')\n", r->mf.path);
+    const char *t = qd_print_time_name(r->ctx); /* x for `independent x` */
+    qd_buf_printf(b, "# qdot hj %s\nfrom sympy import *\n\n%s = Symbol('%s')\n"
+                  "integral = Integral\nS = Function('S')\n", r->mf.path, t, t);
     for (size_t k = 0; k < h->n; k++)
         qd_buf_printf(b, "%s = Function('%s')\n", qd_expr_name(h->sep[k].q ? h->sep[k].q
                                                                        : qd_model_coord(m, k)),

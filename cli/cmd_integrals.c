@@ -229,14 +229,15 @@ static void text_jacobi(const int_run *r, qd_buf *b) {
 
 static void text_balance(const int_run *r, qd_buf *b) {
     const qd_int_balance *B = &r->I->balance;
-    qd_buf_puts(b, "energy balance along the motion\n  dh/dt = ");
+    const char *t = qd_print_time_name(r->ctx); /* x for `independent x` */
+    qd_buf_printf(b, "energy balance along the motion\n  dh/d%s = ", t);
     put(r, b, B->dhdt);
     qd_buf_printf(b, "\n  expected %s = ", B->formula);
     put(r, b, B->expected);
     if (B->verified) {
         qd_buf_printf(b, ": verified%s\n", numerically(B->numeric));
     } else {
-        qd_buf_puts(b, ": NOT verified, dh/dt - expected = ");
+        qd_buf_printf(b, ": NOT verified, dh/d%s - expected = ", t);
         put(r, b, B->remainder);
         qd_buf_puts(b, "\n");
     }

@@ -281,6 +281,8 @@ static void write_second_variation(const path_run *r, const qd_path *p, qd_buf *
     for (size_t k = 0; k < p->nfoci; k++) {
         qd_buf_puts(b, k ? ", " : " ");
         put(b, p->foci[k]);
+        if (p->foci_mult && p->foci_mult[k] > 1) /* J loses more than one rank (foci.c) */
+            qd_buf_printf(b, " (multiplicity %zu)", p->foci_mult[k]);
     }
     qd_buf_printf(b, "%s\n  minimum: %s", p->nfoci ? "" : " none", p->minimum ? "yes" : "no");
 }

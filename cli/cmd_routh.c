@@ -200,8 +200,9 @@ static void sympy_functions(const routh_run *r, qd_buf *b) {
 static void write_sympy(const routh_run *r, qd_buf *b) {
     const qd_routh *h = r->r;
     const qd_model *m = r->mf.model;
-    qd_buf_printf(b, "# qdot routh %s: routh_M*q.diff(t, 2) = routh_f for the kept coordinates q\n"
-                     "from sympy import *\n\nt = Symbol('t')\n", r->mf.path);
+    const char *t = qd_print_time_name(r->ctx); /* x for `independent x` */
+    qd_buf_printf(b, "# qdot routh %s: routh_M*q.diff(%s, 2) = routh_f for the kept coordinates q\n"
+                     "from sympy import *\n\n%s = Symbol('%s')\n", r->mf.path, t, t, t);
     for (size_t j = 0; j < r->e->n; j++)
         qd_buf_printf(b, "%s = Function('%s')\n", qd_expr_name(r->e->q[j]),
                       qd_expr_name(r->e->q[j]));

@@ -45,12 +45,12 @@ static out_name pick(const cli_eom_view *v, const char *base) {
 
 /* ---- text ------------------------------------------------------------------ */
 
-/* A functional's model (`independent x`, isoperimetric constraints): what
- * the printed t and lambda_NAME stand for. */
+/* A functional's model (`independent x`, isoperimetric constraints): the
+ * variable the equations are in and what lambda_NAME stands for. */
 static void text_variational(const cli_eom_view *v, qd_buf *b) {
     const qd_model *m = v->mf->model;
     if (qd_model_independent(m))
-        qd_buf_printf(b, "independent variable: %s (written t)\n", qd_model_independent(m));
+        qd_buf_printf(b, "independent variable: %s\n", qd_model_independent(m));
     for (size_t i = 0; i < qd_model_nisoperimetric(m); i++) {
         qd_buf_printf(b, "isoperimetric %s: integral(", qd_model_isoperimetric_name(m, i));
         qd_print(v->ctx, qd_model_isoperimetric(m, i), QD_FMT_TEXT, b);
@@ -531,11 +531,14 @@ static qd_status write_json(const cli_eom_view *v, qd_buf *b) {
  * that would shadow Python or SymPy is printed self-contained instead). */
 void cli_eom_sympy_bind(qd_ctx *ctx, qd_buf *b, const qd_expr *sym, bool fn) {
     qd_buf tmp = QD_BUF_INIT;
-    const char *name = qd_expr_name(sym);
+    const char *name = qd_expr_name(sym), *t = qd_print_time_name(ctx);
     qd_print(ctx, sym, QD_FMT_SYMPY, &tmp);
     size_t len = strlen(name);
     const char *s = qd_buf_str(&tmp);
-    if (!strncmp(s, name, len) && !strcmp(s + len, fn ? "(t)" : ""))
+    if (!strncmp(s, name, len) &&
+        (fn ? s[len] == '(' && !strncmp(s + len + 1, t, strlen(t)) &&
+                  !strcmp(s + len + 1 + strlen(t), ")")
+            : !s[len]))
         qd_buf_printf(b, "%s = %s('%s')\n", name, fn ? "Function" : "Symbol", name);
     qd_buf_free(&tmp);
 }
@@ -602,8 +605,9 @@ static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
     size_t n = v->e->n;
     qd_status st = QD_OK;
     out_name M = pick(v, "M"), f = pick(v, "f"), q = pick(v, "q"), qdd = pick(v, "qdd");
-    qd_buf_printf(b, "# qdot eom %s: %s*%s.diff(t, 2) = %s\nfrom sympy import *\n\n"
-                  "t = Symbol('t')\n", v->mf->path, M.s, q.s, f.s);
+    const char *t = qd_print_time_name(v->ctx); /* x for `independent x` */
+    qd_buf_printf(b, "# qdot eom %s: %s*%s.diff(%s, 2) = %s\nfrom sympy import *\n\n"
+                  "%s = Symbol('%s')\n", v->mf->path, M.s, q.s, t, f.s, t, t);
     for (size_t j = 0; j < n; j++)
         cli_eom_sympy_bind(v->ctx, b, v->e->q[j], true);
     for (size_t i = 0; i < qd_model_nparams(m); i++)
@@ -649,6 +653,9 @@ static void c_inputs(const cli_eom_view *v, qd_buf *b) {
         qd_c_name(qd_model_param(m, i), b);
     }
     qd_buf_puts(b, " */\n");
+    if (qd_model_independent(m)) /* C keeps t: one spelling for every generated program */
+        qd_buf_printf(b, "/* t is the independent variable %s; the _d, _dd are d/d%s */\n",
+                      qd_model_independent(m), qd_model_independent(m));
 }
 
 /* The C outputs: M, f, q'' (when solved), A, b; names and expressions. */

@@ -74,6 +74,8 @@ int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts 
     qd_diag d;
     memset(&d, 0, sizeof d);
     mf->model = qd_model_parse_opts(ctx, mf->text, opts, &d);
+    if (mf->model && qd_model_independent(mf->model)) /* print x, not t, everywhere */
+        qd_print_set_time_name(ctx, qd_model_independent(mf->model));
     if (mf->model)
         return QD_EXIT_OK;
     if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {

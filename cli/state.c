@@ -170,15 +170,17 @@ static int find_slot(const char *opt, const qd_model *m, const cli_state *st, co
         *slot = primes ? nq + i : i;
         return QD_EXIT_OK;
     }
+    const char *x = qd_model_independent(m), *tn = x ? x : "t"; /* `independent x`: x is t */
     for (size_t i = 2 * nq; i < st->n && !primes; i++)
-        if (!strcmp(qd_expr_name(st->syms[i]), name)) {
+        if (!strcmp(qd_expr_name(st->syms[i]), x && !strcmp(name, x) ? "t" : name)) {
             *slot = i;
             return QD_EXIT_OK;
         }
     char known[512];
     list_coords(m, known, sizeof known);
     cli_diag_error("%s: unknown name '%s' (the coordinates are %s; velocities are written "
-                  "with a prime, and t is the time)", opt, name, known);
+                  "with a prime, and %s is the %s)", opt, name, known, tn,
+                  x ? "independent variable" : "time");
     return QD_EXIT_USAGE;
 }
 

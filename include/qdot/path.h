@@ -80,6 +80,7 @@ typedef struct qd_path {
      * multiplier terms left out (integral L dx = action - sum lambda l) */
     size_t nmult;
     double *mult;
+    size_t *foci_mult;        /* nfoci multiplicities (qd_path_foci_mult), or NULL */
 } qd_path;
 
 typedef struct qd_path_set {
@@ -101,13 +102,27 @@ QD_API qd_status qd_path_find(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
 QD_API void qd_path_set_free(qd_path_set *s);
 
 /* The kinetic foci of t0 along the motion from (t0, q0, v0) up to t1: the
- * zeros of det d q(t)/d v0 (the Jacobi equation), located to round-off;
+ * zeros of det d q(t)/d v0 (the Jacobi equation), located to round-off
+ * (those of even multiplicity too, each once: qd_path_foci_mult);
  * *foci (malloc'd with the context's allocator: free with qd_path_foci_free)
  * ascending, and whether the Legendre condition holds along the way. */
 QD_API qd_status qd_path_foci(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
                               const double *q0, const double *v0, double t1, double **foci,
                               size_t *nfoci, bool *legendre);
 QD_API void qd_path_foci_free(qd_ctx *ctx, double *foci);
+
+/* qd_path_foci with each focus once and its multiplicity: the number of
+ * independent Jacobi fields vanishing there, the order of det J's zero
+ * (2 at half a period of the isotropic plane oscillator, where det J
+ * touches 0 without changing sign).  Models with holonomic constraints
+ * too: J is then d q(t)/d v0 for the v0 the velocity constraints admit at
+ * q0, and a focus is where it loses rank; QD_ERR_ARG for nonholonomic
+ * ones.  *mult (may be NULL: not wanted) is freed with
+ * qd_path_foci_mult_free. */
+QD_API qd_status qd_path_foci_mult(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
+                                   const double *q0, const double *v0, double t1,
+                                   double **foci, size_t **mult, size_t *nfoci, bool *legendre);
+QD_API void qd_path_foci_mult_free(qd_ctx *ctx, size_t *mult);
 
 /* Maupertuis / Jacobi: the paths of energy E (the Jacobi integral h) from q0
  * to q1, whatever the time they take: opts.t0 is the start time, opts.t1 is

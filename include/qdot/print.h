@@ -56,6 +56,16 @@ typedef enum qd_format {
 /* Append e in the given format. */
 QD_API qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out);
 
+/* The name the time symbol t prints as in ctx from now on, for a model
+ * whose independent variable is not time (`independent x`: x, Byerly ch.
+ * IV): text and SymPy write x, y(x) and y(x).diff(x); LaTeX writes x and
+ * primes, y' and y'', since dots would say d/dt.  The C printer keeps t:
+ * generated functions take the independent variable as their argument t.
+ * NULL or "t" restores t.  QD_ERR_ARG unless name is an identifier. */
+QD_API qd_status qd_print_set_time_name(qd_ctx *ctx, const char *name);
+/* That name: "t" unless set. */
+QD_API const char *qd_print_time_name(const qd_ctx *ctx);
+
 /* The lines a SymPy script needs before expressions printed with
  * QD_FMT_SYMPY that call user-named functions: `V = Function('V')` once per
  * name found in the n expressions (NULL entries are skipped), in name order.

@@ -329,6 +329,9 @@ static void header(gen *g, qd_buf *h, bool guard) {
     for (size_t i = 0; i < g->np; i++)
         qd_buf_printf(h, " %s", qd_expr_name(qd_model_param(g->m, i)));
     qd_buf_puts(h, g->np ? ".\n" : " none.\n");
+    if (qd_model_independent(g->m)) /* the argument keeps the name t in every program */
+        qd_buf_printf(h, " * The argument t is the independent variable %s: q' is dq/d%s.\n",
+                      qd_model_independent(g->m), qd_model_independent(g->m));
     qd_buf_puts(h, " * Matrices are row-major.\n */\n");
     if (guard) {
         qd_buf_puts(h, "#ifndef ");

@@ -1,22 +1,42 @@
 /*
  * src/path/foci.c - the kinetic foci of a motion (Desloge ch. 84): the
- * Jacobi (accessory) equation integrated along it, the zeros of det J.
+ * Jacobi (accessory) equation integrated along it, the times where J loses
+ * rank, each with its multiplicity.
  *
  * The motion and J = dq/dv0, K = J' are integrated together,
  *
  *     q' = v,  v' = a(q, v, t),  J' = K,  K' = A J + B K,
- *     J(t0) = 0, K(t0) = I,  A = da/dq, B = da/dv,
+ *     J(t0) = 0, K(t0) = Z0,  A = da/dq, B = da/dv,
  *
  * with the Dormand-Prince 5(4) pair and Shampine's dense output (the
  * tables of src/sim/dopri5.c).  A and B are central differences of
  * qd_eom_eval's accelerations, not symbolic derivatives: e is const here
  * (qd_eom_solve would change it) and M q'' = f need not solve in closed
  * form; the step (cube root of eps, scaled) leaves them accurate to about
- * 1e-10 relative, well inside what locating a focus needs.  A focus is a
- * sign change of det J between two accepted steps, located by the Illinois
- * variant of regula falsi on the dense output to round-off in the step.  A
- * focus of even multiplicity (det touching zero, as in an isotropic
- * oscillator) does not change the sign and is not seen.
+ * 1e-10 relative, well inside what locating a focus needs.
+ *
+ * Without constraints Z0 = I and J is n x n.  With holonomic constraints
+ * (their multipliers inside a) the admissible v0 vary only in the kernel
+ * of the velocity constraints, A_c(q0) dv0 = 0: Z0 is an orthonormal basis
+ * of it (n x r, r = n - rank A_c), and J's columns stay tangent to the
+ * constraint manifold (the linearized g'' = 0 keeps dg = dg' = 0), so J is
+ * n x r and a focus is where its rank falls below r, with no basis needed
+ * at q(t) (Gelfand and Fomin ch. 5 restrict the second variation to the
+ * admissible variations alike).  Nonholonomic constraints are refused: the
+ * path is then no stationary point of the action.
+ *
+ * A focus is a zero of sigma_min(J), the smallest singular value, not a
+ * sign change of det J: at a focus of multiplicity k (k independent Jacobi
+ * fields vanish together: k = 2 in the isotropic plane oscillator, det J =
+ * (sin(w t)/w)^2) det J ~ (t - tc)^k keeps its sign for even k, while
+ * sigma_min = c |t - tc| always has a minimum there.  The minima are the
+ * sign changes from - to + of g = sigma_min sigma_min' = (J v).(K v) (v the
+ * right singular vector), sampled NSUB times per step on the dense output
+ * and located by the Illinois variant of regula falsi; one is a focus when
+ * sigma_min reaches round-off there relative to |J| + (t - t0)|K|
+ * (FZ_FOCUS), and its multiplicity is the number of singular values that
+ * do (FZ_RANK).  A focus at t1 itself (sigma_min still falling) counts, the
+ * interval being (t0, t1].  Two foci closer than h/NSUB can merge into one.
  */
 #include "qdot/path.h"
 
@@ -27,6 +47,16 @@
 
 #define FZ_RTOL 1e-12
 #define FZ_MAXSTEPS 2000000
+#define NSUB 8          /* g's samples per step */
+/* sigma_min/scale at a located focus is J's error: 0 to 1e-14 with exact A
+ * and B, up to 5e-11 measured with the central differences through a
+ * constraint's multiplier (the pendulum on a rod, test_foci.c); a minimum
+ * above FZ_FOCUS is no focus, and at a focus the singular values below
+ * FZ_RANK count (foci closer than ~FZ_RANK relative merge: a multiplicity
+ * then, which is what the data can tell). */
+#define FZ_FOCUS 1e-7
+#define FZ_RANK 1e-6
+#define FZ_SWEEPS 60    /* one-sided Jacobi sweeps, far more than ever needed */
 
 static const double C[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
 static const double AT[7][6] = {
@@ -53,12 +83,16 @@ static const double P[7][4] = {
 typedef struct fz {
     qd_ctx *ctx;
     const qd_eom *e;
-    size_t n, nv, dim;
+    size_t n, r, nc, nv, dim;          /* J is n x r; nc constraint rows */
+    double t0;
     const qd_expr **syms;
     double *vals;
-    double *y, *ynew, *k[7], *tmp; /* dim each */
-    double *A, *B, *ap, *am, *M, *work; /* n*n, n*n, n, n, n*n, n*n */
+    double *y, *ynew, *k[7], *tmp, *yd; /* dim each (tmp 2n + dim) */
+    double *A, *B, *ap, *am, *M;        /* n*n, n*n, n, n, n*n */
+    double *W, *V, *sv;                 /* n*n, n*n, n: the SVD's */
+    double *Ac, *Q, *Z, *Mr;            /* nc*n, n*n, n*n, n*n: the tangent space's */
     double *foci;
+    size_t *mult;
     size_t nfoci, cap;
     bool legendre;
 } fz;
@@ -89,10 +123,10 @@ static qd_status column(fz *z, double t, double *q, double *v, size_t j, int whi
 
 /* dy = the right-hand side of the motion with its Jacobi equation. */
 static qd_status rhs(fz *z, double t, const double *y, double *dy) {
-    size_t n = z->n, nn = n * n;
+    size_t n = z->n, r = z->r, nr = n * r;
     memcpy(z->tmp, y, 2 * n * sizeof *y); /* perturbed in place by column() */
     double *q = z->tmp, *v = z->tmp + n;
-    const double *J = y + 2 * n, *K = y + 2 * n + nn;
+    const double *J = y + 2 * n, *K = y + 2 * n + nr;
     memcpy(dy, v, n * sizeof *v);
     qd_status st = accel(z, t, q, v, dy + n);
     for (size_t j = 0; j < n && st == QD_OK; j++) {
@@ -102,43 +136,91 @@ static qd_status rhs(fz *z, double t, const double *y, double *dy) {
     }
     if (st != QD_OK)
         return st;
-    memcpy(dy + 2 * n, K, nn * sizeof *K);
+    memcpy(dy + 2 * n, K, nr * sizeof *K);
     for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < n; j++) {
+        for (size_t j = 0; j < r; j++) {
             double s = 0;
             for (size_t l = 0; l < n; l++)
-                s += z->A[i * n + l] * J[l * n + j] + z->B[i * n + l] * K[l * n + j];
-            dy[2 * n + nn + i * n + j] = s;
+                s += z->A[i * n + l] * J[l * r + j] + z->B[i * n + l] * K[l * r + j];
+            dy[2 * n + nr + i * r + j] = s;
         }
     return QD_OK;
 }
 
-/* The determinant of the n x n matrix a (destroyed), partial pivoting. */
-static double det(size_t n, double *a) {
-    double d = 1;
-    for (size_t c = 0; c < n; c++) {
-        size_t p = c;
-        for (size_t r = c + 1; r < n; r++)
-            if (fabs(a[r * n + c]) > fabs(a[p * n + c]))
-                p = r;
-        if (a[p * n + c] == 0)
-            return 0;
-        if (p != c) {
-            for (size_t k = 0; k < n; k++) {
-                double s = a[c * n + k];
-                a[c * n + k] = a[p * n + k];
-                a[p * n + k] = s;
-            }
-            d = -d;
-        }
-        d *= a[c * n + c];
-        for (size_t r = c + 1; r < n; r++) {
-            double f = a[r * n + c] / a[c * n + c];
-            for (size_t k = c; k < n; k++)
-                a[r * n + k] -= f * a[c * n + k];
-        }
+/* Rotate columns p and s of the rows x cols matrix X by (cs, sn). */
+static void rotate(size_t rows, size_t cols, double *X, size_t p, size_t s, double cs, double sn) {
+    for (size_t i = 0; i < rows; i++) {
+        double a = X[i * cols + p], b = X[i * cols + s];
+        X[i * cols + p] = cs * a - sn * b;
+        X[i * cols + s] = sn * a + cs * b;
     }
-    return d;
+}
+
+/* The singular values sv (r) of the n x r matrix W, overwritten by W V,
+ * V (r x r) the right singular vectors: one-sided Jacobi (Hestenes), which
+ * keeps the small singular values to full relative accuracy. */
+static void svd(size_t n, size_t r, double *W, double *V, double *sv) {
+    for (size_t i = 0; i < r * r; i++)
+        V[i] = i % (r + 1) == 0;
+    bool rotated = true;
+    for (int sweep = 0; sweep < FZ_SWEEPS && rotated; sweep++) {
+        rotated = false;
+        for (size_t p = 0; p + 1 < r; p++)
+            for (size_t s = p + 1; s < r; s++) {
+                double a = 0, b = 0, c = 0;
+                for (size_t i = 0; i < n; i++) {
+                    a += W[i * r + p] * W[i * r + p];
+                    b += W[i * r + s] * W[i * r + s];
+                    c += W[i * r + p] * W[i * r + s];
+                }
+                if (c == 0 || fabs(c) <= 1e-15 * sqrt(a * b))
+                    continue;
+                rotated = true;
+                double zeta = (b - a) / (2 * c);
+                double tn = (zeta >= 0 ? 1 : -1) / (fabs(zeta) + sqrt(1 + zeta * zeta));
+                double cs = 1 / sqrt(1 + tn * tn);
+                rotate(n, r, W, p, s, cs, cs * tn);
+                rotate(r, r, V, p, s, cs, cs * tn);
+            }
+    }
+    for (size_t j = 0; j < r; j++) {
+        double s = 0;
+        for (size_t i = 0; i < n; i++)
+            s += W[i * r + j] * W[i * r + j];
+        sv[j] = sqrt(s);
+    }
+}
+
+/* What the state x says of a focus at time t: returns g = sigma_min
+ * sigma_min' = (J v).(K v); *rel = sigma_min/scale, scale = |J| + (t -
+ * t0)|K| (J's size whatever the units), and z->sv all singular values over
+ * the scale. */
+static double probe(fz *z, double t, const double *x, double *rel) {
+    size_t n = z->n, r = z->r, nr = n * r, jm = 0;
+    const double *J = x + 2 * n, *K = x + 2 * n + nr;
+    double nj = 0, nk = 0, g = 0;
+    if (r == 0) { /* the constraints leave no freedom: nothing to vary */
+        *rel = 1;
+        return 1;
+    }
+    for (size_t i = 0; i < nr; i++)
+        nj += J[i] * J[i], nk += K[i] * K[i];
+    double scale = sqrt(nj) + (t - z->t0) * sqrt(nk);
+    memcpy(z->W, J, nr * sizeof *J);
+    svd(n, r, z->W, z->V, z->sv);
+    for (size_t j = 1; j < r; j++)
+        if (z->sv[j] < z->sv[jm])
+            jm = j;
+    for (size_t i = 0; i < n; i++) {
+        double kv = 0;
+        for (size_t l = 0; l < r; l++)
+            kv += K[i * r + l] * z->V[l * r + jm];
+        g += z->W[i * r + jm] * kv;
+    }
+    for (size_t j = 0; j < r; j++)
+        z->sv[j] = scale > 0 ? z->sv[j] / scale : 1;
+    *rel = z->sv[jm];
+    return g;
 }
 
 /* Is the symmetric a (destroyed) positive definite?  Cholesky. */
@@ -160,9 +242,86 @@ static bool posdef(size_t n, double *a) {
     return true;
 }
 
-/* The Legendre condition at the state y: M = d^2L/dq'dq' positive definite. */
-static qd_status legendre_at(fz *z, double t, const double *y) {
+/* Append u (n), orthogonalized against the rank rows of Q (Gram-Schmidt
+ * twice) and normalized, as Q's next row; false when it lies in their span. */
+static bool extend(size_t n, double *Q, size_t rank, const double *u) {
+    double *w = Q + rank * n, n0 = 0, n1 = 0;
+    memcpy(w, u, n * sizeof *u);
+    for (size_t i = 0; i < n; i++)
+        n0 += w[i] * w[i];
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t b = 0; b < rank; b++) {
+            double d = 0;
+            for (size_t i = 0; i < n; i++)
+                d += w[i] * Q[b * n + i];
+            for (size_t i = 0; i < n; i++)
+                w[i] -= d * Q[b * n + i];
+        }
+    for (size_t i = 0; i < n; i++)
+        n1 += w[i] * w[i];
+    if (!(n1 > 1e-20 * n0))
+        return false;
+    for (size_t i = 0; i < n; i++)
+        w[i] /= sqrt(n1);
+    return true;
+}
+
+/* z->Z (n x *r, row-major): an orthonormal basis of the kernel of the
+ * constraint rows A_c at the state in z->vals (R^n without constraints):
+ * the rows orthonormalized, redundant ones dropped, then completed by the
+ * unit vectors that stick out of the span most. */
+static qd_status tangent(fz *z, size_t *r) {
+    size_t n = z->n, rank = 0, rows;
+    for (size_t k = 0; k < z->nc; k++) {
+        for (size_t j = 0; j < n; j++) {
+            qd_status st = qd_eval(z->ctx, z->e->con[k].a[j], z->nv, z->syms, z->vals,
+                                   &z->Ac[j]);
+            if (st != QD_OK)
+                return st;
+        }
+        rank += extend(n, z->Q, rank, z->Ac);
+    }
+    rows = rank;
+    while (rank < n) {
+        size_t best = 0;
+        double most = -1;
+        for (size_t i = 0; i < n; i++) {
+            double s = 1;
+            for (size_t b = 0; b < rank; b++)
+                s -= z->Q[b * n + i] * z->Q[b * n + i];
+            if (s > most)
+                most = s, best = i;
+        }
+        memset(z->Ac, 0, n * sizeof *z->Ac);
+        z->Ac[best] = 1;
+        if (!extend(n, z->Q, rank, z->Ac))
+            break; /* cannot happen: the unit vector sticking out most is not in the span */
+        rank++;
+    }
+    *r = rank - rows;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < *r; j++)
+            z->Z[i * *r + j] = z->Q[(rows + j) * n + i];
+    return QD_OK;
+}
+
+/* Z^T M Z (r x r) into z->Mr. */
+static void restrict_to(fz *z, size_t r) {
     size_t n = z->n;
+    for (size_t a = 0; a < r; a++)
+        for (size_t b = 0; b < r; b++) {
+            double s = 0;
+            for (size_t i = 0; i < n; i++)
+                for (size_t j = 0; j < n; j++)
+                    s += z->Z[i * r + a] * z->M[i * n + j] * z->Z[j * r + b];
+            z->Mr[a * r + b] = s;
+        }
+}
+
+/* The Legendre condition at the state y: M = d^2L/dq'dq' positive definite
+ * on the admissible velocities (the constraints' tangent space). */
+static qd_status legendre_at(fz *z, double t, const double *y) {
+    size_t n = z->n, r = n;
     memcpy(z->vals, y, 2 * n * sizeof *y);
     z->vals[2 * n] = t;
     qd_status st = qd_eom_eval(z->ctx, z->e, z->nv, z->syms, z->vals, z->M, NULL, NULL, NULL,
@@ -171,67 +330,109 @@ static qd_status legendre_at(fz *z, double t, const double *y) {
         z->legendre = false;
         return QD_OK;
     }
-    if (st == QD_OK && !posdef(n, z->M))
+    if (st == QD_OK && z->nc)
+        st = tangent(z, &r);
+    if (st != QD_OK)
+        return st;
+    if (z->nc)
+        restrict_to(z, r);
+    else
+        memcpy(z->Mr, z->M, n * n * sizeof *z->M);
+    if (!posdef(r, z->Mr))
         z->legendre = false;
-    return st;
+    return QD_OK;
 }
 
-/* det J at told + x h from the dense output of the last step. */
-static double det_dense(fz *z, double h, double x) {
-    size_t n = z->n, nn = n * n, off = 2 * n;
-    for (size_t i = 0; i < nn; i++) {
+/* The state at told + x h from the dense output of the last step, into
+ * z->yd. */
+static void dense(fz *z, double h, double x) {
+    for (size_t i = 0; i < z->dim; i++) {
         double s = 0;
         for (int c = 3; c >= 0; c--) {
             double b = 0;
             for (int j = 0; j < 7; j++)
-                b += z->k[j][off + i] * P[j][c];
+                b += z->k[j][i] * P[j][c];
             s = (s + b) * x;
         }
-        z->work[i] = z->y[off + i] + h * s;
+        z->yd[i] = z->y[i] + h * s;
     }
-    return det(n, z->work);
 }
 
-static qd_status add_focus(fz *z, double t) {
+static double probe_at(fz *z, double told, double h, double x, double *rel) {
+    dense(z, h, x);
+    return probe(z, told + x * h, z->yd, rel);
+}
+
+static qd_status add_focus(fz *z, double t, size_t mult) {
     if (z->nfoci == z->cap) {
         size_t cap = z->cap ? 2 * z->cap : 4;
         double *f = qd__realloc(z->ctx, z->foci, cap * sizeof *f);
-        if (!f)
+        if (f)
+            z->foci = f;
+        size_t *m = f ? qd__realloc(z->ctx, z->mult, cap * sizeof *m) : NULL;
+        if (!m)
             return QD_ERR_NOMEM;
-        z->foci = f;
+        z->mult = m;
         z->cap = cap;
     }
-    z->foci[z->nfoci++] = t;
+    z->foci[z->nfoci] = t;
+    z->mult[z->nfoci++] = mult;
     return QD_OK;
 }
 
-/* The zero of det J in the step (told, told + h], d0 and d1 its values at
- * the ends of opposite signs: Illinois regula falsi in x = (t - told)/h. */
-static qd_status locate(fz *z, double told, double h, double d0, double d1) {
-    double a = 0, b = 1, fa = d0, fb = d1;
+/* A focus at t if sigma_min is round-off there (z->sv from the probe at t):
+ * its multiplicity is how many singular values are. */
+static qd_status judge(fz *z, double t, double rel) {
+    if (!(rel < FZ_FOCUS))
+        return QD_OK; /* a minimum of sigma_min above zero: no focus */
+    size_t mult = 0;
+    for (size_t j = 0; j < z->r; j++)
+        mult += z->sv[j] < FZ_RANK;
+    return add_focus(z, t, mult);
+}
+
+/* The minimum of sigma_min in (told + a h, told + b h), ga < 0 <= gb the
+ * values of g at the ends: Illinois regula falsi on g. */
+static qd_status locate(fz *z, double told, double h, double a, double b, double ga,
+                        double gb) {
     int side = 0;
-    for (int it = 0; it < 200 && b - a > 4 * 0x1p-52; it++) {
-        double x = (a * fb - b * fa) / (fb - fa);
+    double rel;
+    for (int it = 0; it < 200 && b - a > 4 * 0x1p-52 && gb != 0; it++) {
+        double x = (a * gb - b * ga) / (gb - ga);
         if (!(x > a && x < b))
             x = 0.5 * (a + b);
-        double fx = det_dense(z, h, x);
-        if (fx == 0) {
-            a = b = x;
-            break;
-        }
-        if ((fx > 0) == (fb > 0)) {
-            b = x, fb = fx;
+        double gx = probe_at(z, told, h, x, &rel);
+        if (gx >= 0) {
+            b = x, gb = gx;
             if (side == -1)
-                fa *= 0.5;
+                ga *= 0.5;
             side = -1;
         } else {
-            a = x, fa = fx;
+            a = x, ga = gx;
             if (side == 1)
-                fb *= 0.5;
+                gb *= 0.5;
             side = 1;
         }
     }
-    return add_focus(z, told + h * 0.5 * (a + b));
+    double x = gb == 0 ? b : 0.5 * (a + b);
+    (void)probe_at(z, told, h, x, &rel);
+    return judge(z, told + h * x, rel);
+}
+
+/* The minima of sigma_min in the step just taken (told, told + h]: g
+ * sampled NSUB times; *gprev carries g at the step's start and leaves g
+ * at its end. */
+static qd_status scan(fz *z, double told, double h, double *gprev, double *relend) {
+    qd_status st = QD_OK;
+    double xa = 0, ga = *gprev;
+    for (int s = 1; s <= NSUB && st == QD_OK; s++) {
+        double xb = (double)s / NSUB, gb = probe_at(z, told, h, xb, relend);
+        if (ga < 0 && gb >= 0)
+            st = locate(z, told, h, xa, xb, ga, gb);
+        xa = xb, ga = gb;
+    }
+    *gprev = ga;
+    return st;
 }
 
 /* One Dormand-Prince attempt of size h from (t, z->y): z->ynew and the
@@ -261,10 +462,9 @@ static qd_status attempt(fz *z, double t, double h, double *errn) {
     return st;
 }
 
-/* The integration from t0 to t1, foci recorded as det J changes sign. */
+/* The integration from t0 to t1, the foci recorded as found. */
 static qd_status run(fz *z, double t0, double t1) {
-    size_t n = z->n, nn = n * n;
-    double t = t0, h = (t1 - t0) * 1e-4, dprev = 0;
+    double t = t0, h = (t1 - t0) * 1e-4, g = 0, rel = 1;
     qd_status st = legendre_at(z, t, z->y);
     for (size_t steps = 0; st == QD_OK && t < t1; steps++) {
         if (steps == FZ_MAXSTEPS) {
@@ -287,44 +487,36 @@ static qd_status run(fz *z, double t0, double t1) {
             }
             continue;
         }
-        memcpy(z->work, z->ynew + 2 * n, nn * sizeof *z->work);
-        double d = det(n, z->work);
-        if (dprev != 0 && d != 0 && (d > 0) != (dprev > 0))
-            st = locate(z, t, h, dprev, d);
-        else if (d == 0 && t + h > t0)
-            st = add_focus(z, t + h);
-        dprev = d; /* 0 after an exact zero: the next sign starts afresh */
+        st = scan(z, t, h, &g, &rel);
         t = (t + h >= t1) ? t1 : t + h;
         memcpy(z->y, z->ynew, z->dim * sizeof *z->y);
         if (st == QD_OK)
             st = legendre_at(z, t, z->y);
         h *= fmin(5.0, 0.9 * pow(fmax(errn, 1e-10), -0.2));
     }
+    if (st == QD_OK && g < 0) /* still falling at t1 (z->sv from there): a focus at t1? */
+        st = judge(z, t1, rel);
     return st;
 }
 
-static qd_status setup(fz *z, const qd_model *m, double t0, const double *q0, const double *v0) {
+static qd_status setup(fz *z, const qd_model *m, const double *q0, const double *v0) {
     size_t n = z->n, np = qd_model_nparams(m), nn = n * n;
     z->nv = 2 * n + 1 + np;
-    z->dim = 2 * n + 2 * nn;
     z->syms = qd__calloc(z->ctx, z->nv, sizeof *z->syms);
     z->vals = qd__calloc(z->ctx, z->nv, sizeof *z->vals);
-    /* y, ynew, 7 stages, tmp (2n + dim), A, B, M, work, ap, am */
-    double *buf = qd__calloc(z->ctx, 10 * z->dim + 2 * n + 4 * nn + 2 * n, sizeof *buf);
-    if (!z->syms || !z->vals || !buf)
+    z->Ac = qd__calloc(z->ctx, n, sizeof *z->Ac);
+    /* the tangent space's Q, Z, Mr; M, A, B, W, V; ap, am, sv */
+    double *fix = qd__calloc(z->ctx, 8 * nn + 3 * n, sizeof *fix);
+    if (!z->syms || !z->vals || !z->Ac || !fix) {
+        qd__free(fix);
         return QD_ERR_NOMEM;
-    z->y = buf, z->ynew = buf + z->dim;
-    for (int s = 0; s < 7; s++)
-        z->k[s] = buf + (2 + (size_t)s) * z->dim;
-    z->tmp = buf + 9 * z->dim;
-    z->A = z->tmp + 2 * n + z->dim, z->B = z->A + nn, z->M = z->B + nn, z->work = z->M + nn;
-    z->ap = z->work + nn, z->am = z->ap + n;
+    }
+    z->Q = fix, z->Z = z->Q + nn, z->Mr = z->Z + nn, z->M = z->Mr + nn, z->A = z->M + nn;
+    z->B = z->A + nn, z->W = z->B + nn, z->V = z->W + nn, z->ap = z->V + nn;
+    z->am = z->ap + n, z->sv = z->am + n;
     for (size_t j = 0; j < n; j++) {
         z->syms[j] = z->e->q[j];
         z->syms[n + j] = z->e->qd[j];
-        z->y[j] = q0[j];
-        z->y[n + j] = v0[j];
-        z->y[2 * n + nn + j * n + j] = 1; /* K(t0) = I */
     }
     z->syms[2 * n] = qd_time(z->ctx);
     for (size_t i = 0; i < np; i++) {
@@ -335,17 +527,44 @@ static qd_status setup(fz *z, const qd_model *m, double t0, const double *q0, co
             return QD_ERR_ARG;
         }
     }
-    (void)t0;
+    memcpy(z->vals, q0, n * sizeof *q0);
+    memcpy(z->vals + n, v0, n * sizeof *v0);
+    z->vals[2 * n] = z->t0;
+    return QD_OK;
+}
+
+/* The state y = (q0, v0, J = 0, K = Z0) and its workspaces. */
+static qd_status start(fz *z, const double *q0, const double *v0) {
+    size_t n = z->n, r = n;
+    qd_status st = z->nc ? tangent(z, &r) : QD_OK;
+    if (st != QD_OK)
+        return st;
+    z->r = r;
+    z->dim = 2 * n + 2 * n * r;
+    /* y, ynew, 7 stages, yd, tmp (2n + dim) */
+    double *buf = qd__calloc(z->ctx, 11 * z->dim + 2 * n, sizeof *buf);
+    if (!buf)
+        return QD_ERR_NOMEM;
+    z->y = buf, z->ynew = buf + z->dim;
+    for (int s = 0; s < 7; s++)
+        z->k[s] = buf + (2 + (size_t)s) * z->dim;
+    z->yd = buf + 9 * z->dim, z->tmp = buf + 10 * z->dim;
+    memcpy(z->y, q0, n * sizeof *q0);
+    memcpy(z->y + n, v0, n * sizeof *v0);
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < r; j++)
+            z->y[2 * n + n * r + i * r + j] = z->nc ? z->Z[i * r + j] : (i == j);
     return QD_OK;
 }
 
 static qd_status check_args(qd_ctx *ctx, const qd_eom *e, double t0, double t1) {
-    if (e->ncon > 0) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "kinetic foci: not yet for constrained models (%zu "
-                     "constraint%s): eliminate them into the coordinates", e->ncon,
-                     e->ncon == 1 ? "" : "s");
-        return QD_ERR_ARG;
-    }
+    for (size_t k = 0; k < e->ncon; k++)
+        if (e->con[k].kind == QD_CON_NONHOLONOMIC) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "kinetic foci: constraint %s is nonholonomic: its "
+                         "motions are no stationary paths of the action, so they have no "
+                         "kinetic foci", e->con[k].name);
+            return QD_ERR_ARG;
+        }
     if (!(isfinite(t0) && isfinite(t1) && t1 > t0)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "kinetic foci: t1 (%g) must be after t0 (%g)", t1, t0);
         return QD_ERR_ARG;
@@ -353,38 +572,64 @@ static qd_status check_args(qd_ctx *ctx, const qd_eom *e, double t0, double t1) 
     return QD_OK;
 }
 
-qd_status qd_path_foci(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
-                       const double *q0, const double *v0, double t1, double **foci,
-                       size_t *nfoci, bool *legendre) {
+static void fz_free(fz *z) {
+    qd__free(z->syms);
+    qd__free(z->vals);
+    qd__free(z->Ac);
+    qd__free(z->Q);
+    qd__free(z->y);
+}
+
+qd_status qd_path_foci_mult(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
+                            const double *q0, const double *v0, double t1, double **foci,
+                            size_t **mult, size_t *nfoci, bool *legendre) {
     if (!ctx || !m || !e || !q0 || !v0 || !foci || !nfoci) {
         if (ctx)
             qd_ctx_error(ctx, QD_ERR_ARG, "qd_path_foci: a NULL argument");
         return QD_ERR_ARG;
     }
     *foci = NULL;
+    if (mult)
+        *mult = NULL;
     *nfoci = 0;
     qd_status st = check_args(ctx, e, t0, t1);
     if (st != QD_OK)
         return st;
-    fz z = {.ctx = ctx, .e = e, .n = e->n, .legendre = true};
-    st = setup(&z, m, t0, q0, v0);
+    fz z = {.ctx = ctx, .e = e, .n = e->n, .nc = e->ncon, .t0 = t0, .legendre = true};
+    st = setup(&z, m, q0, v0);
+    if (st == QD_OK)
+        st = start(&z, q0, v0);
     if (st == QD_OK)
         st = run(&z, t0, t1);
-    qd__free(z.syms);
-    qd__free(z.vals);
-    qd__free(z.y);
+    fz_free(&z);
     if (st != QD_OK) {
         qd__free(z.foci);
+        qd__free(z.mult);
         return st;
     }
     *foci = z.foci;
     *nfoci = z.nfoci;
+    if (mult)
+        *mult = z.mult;
+    else
+        qd__free(z.mult);
     if (legendre)
         *legendre = z.legendre;
     return QD_OK;
 }
 
+qd_status qd_path_foci(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
+                       const double *q0, const double *v0, double t1, double **foci,
+                       size_t *nfoci, bool *legendre) {
+    return qd_path_foci_mult(ctx, m, e, t0, q0, v0, t1, foci, NULL, nfoci, legendre);
+}
+
 void qd_path_foci_free(qd_ctx *ctx, double *foci) {
     (void)ctx;
     qd__free(foci);
+}
+
+void qd_path_foci_mult_free(qd_ctx *ctx, size_t *mult) {
+    (void)ctx;
+    qd__free(mult);
 }

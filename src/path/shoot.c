@@ -766,12 +766,21 @@ typedef struct found {
     qd_path *paths;
 } found;
 
+/* Has e a nonholonomic constraint (foci.c refuses those)? */
+static bool nonholonomic(const qd_eom *e) {
+    for (size_t k = 0; k < e->ncon; k++)
+        if (e->con[k].kind == QD_CON_NONHOLONOMIC)
+            return true;
+    return false;
+}
+
 static void path_clear(qd_path *p) {
     qd__free(p->v0);
     qd__free(p->t);
     qd__free(p->q);
     qd__free(p->foci);
     qd__free(p->mult);
+    qd__free(p->foci_mult);
     memset(p, 0, sizeof *p);
 }
 
@@ -858,13 +867,14 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     /* the second variation along the path: the Jacobi equation from its
      * start (foci.c); a minimum iff no focus in (t0, t1] and Legendre's
      * condition (Desloge ch. 84) */
-    /* foci.c has no Jacobi equation on a constraint manifold yet, and the
-     * fixed-end one does not decide with multipliers or free ends */
-    if (p->s->e->ncon || p->nm || p->nf0 || p->free1)
+    /* the fixed-end Jacobi equation does not decide with isoperimetric
+     * multipliers or free ends; a nonholonomic model's motions do not make
+     * the action stationary at all */
+    if (nonholonomic(p->s->e) || p->nm || p->nf0 || p->free1)
         return true;
     out->examined = true;
-    if (qd_path_foci(ctx, p->s->m, p->s->e, p->t0, p->q0, x, p->t0 + T, &out->foci, &out->nfoci,
-                     &out->legendre) != QD_OK)
+    if (qd_path_foci_mult(ctx, p->s->m, p->s->e, p->t0, p->q0, x, p->t0 + T, &out->foci,
+                          &out->foci_mult, &out->nfoci, &out->legendre) != QD_OK)
         return false;
     out->minimum = out->legendre && out->nfoci == 0;
     return true;

@@ -87,6 +87,7 @@ struct qd_ctx {
     const qd_expr *zero, *one, *minus_one, *half, *t;
     qd_status status;
     qd_diag diag;                /* the first error's record; diag.status == status */
+    const char *tname;           /* how t prints (qd_print_set_time_name); NULL: "t" */
 };
 
 /* ---- intern.c --------------------------------------------------------- */

@@ -1,7 +1,36 @@
 /*
- * src/sym/print.c - qd_print: one entry point, one printer per format.
+ * src/sym/print.c - qd_print: one entry point, one printer per format;
+ * the time symbol's printed name, which the printers share.
  */
 #include "prec.h"
+
+#include <ctype.h>
+#include <string.h>
+
+qd_status qd_print_set_time_name(qd_ctx *ctx, const char *name) {
+    if (!ctx)
+        return QD_ERR_ARG;
+    bool ident = name && (isalpha((unsigned char)name[0]) || name[0] == '_');
+    for (const char *c = name; ident && *c; c++)
+        ident = isalnum((unsigned char)*c) || *c == '_';
+    if (name && !ident) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the time symbol cannot print as '%s': not a name", name);
+        return QD_ERR_ARG;
+    }
+    if (!name || !strcmp(name, "t")) {
+        ctx->tname = NULL;
+        return QD_OK;
+    }
+    const char *in = qd__intern_name(ctx, name); /* lives as long as ctx */
+    if (!in)
+        return QD_ERR_NOMEM;
+    ctx->tname = in;
+    return QD_OK;
+}
+
+const char *qd_print_time_name(const qd_ctx *ctx) {
+    return ctx && ctx->tname ? ctx->tname : "t";
+}
 
 qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out) {
     if (!ctx || !out)

@@ -8,7 +8,8 @@
  * \theta_{1}, m_arm -> m_{\mathrm{arm}}); other names of several letters are
  * set upright (\mathrm{mass}).  Jet symbols put the dots on the letter:
  * theta1' -> \dot{\theta}_{1}, '' -> \ddot, ''' -> \dddot, '''' -> \ddddot,
- * higher orders \theta^{(5)}_{1}.  A derivative of a user function prints
+ * higher orders \theta^{(5)}_{1}; with t renamed (qd_print_set_time_name)
+ * primes instead: y', \theta_{1}''.  A derivative of a user function prints
  * V'(r) as V'{\left(r \right)} for one argument, else as
  * \partial_{1}\partial_{2} V{\left(x, y \right)}.
  */
@@ -53,9 +54,18 @@ static void word(lp *p, const char *s, size_t n) {
     }
 }
 
-/* name -> base and subscript; order > 0 puts dots on the base. */
+/* name -> base and subscript; order > 0 puts dots on the base, or primes
+ * after it when t is renamed (the derivatives are then not in time). */
 static void name(lp *p, const char *s, unsigned order) {
     static const char *const dots[] = {"", "\\dot{", "\\ddot{", "\\dddot{", "\\ddddot{"};
+    if (order && p->ctx->tname) {
+        name(p, s, 0);
+        if (order <= 4)
+            qd_buf_putn(p->b, "''''", order);
+        else
+            qd_buf_printf(p->b, "^{(%u)}", order);
+        return;
+    }
     size_t n = strcspn(s, "'"), cut = strcspn(s, "_"), sub = n;
     if (cut < n) {
         sub = cut + 1;
@@ -242,7 +252,9 @@ static void expr(lp *p, const qd_expr *e) {
     case QD_RATIONAL:
     case QD_FLOAT: number(p, e); break;
     case QD_CONSTANT: qd_buf_puts(p->b, e->tag == QD_PI ? "\\pi" : "e"); break;
-    case QD_SYMBOL: name(p, e->u.sym.name, e->order); break;
+    case QD_SYMBOL:
+        name(p, e->tag == QD_ROLE_TIME ? qd_print_time_name(p->ctx) : e->u.sym.name, e->order);
+        break;
     case QD_FUNC: func(p, e); break;
     case QD_UFUNC:
         name(p, e->u.fn.name, 0);

@@ -167,18 +167,21 @@ static void args(sp *p, const qd_expr *e) {
     qd_buf_puts(p->b, ")");
 }
 
+/* t, or the name set for it (qd_print_set_time_name), which the caller
+ * binds in place of t. */
 static void symbol(sp *p, const qd_expr *e) {
+    const char *t = qd_print_time_name(p->ctx);
     if (e->tag == QD_ROLE_TIME) {
-        qd_buf_puts(p->b, "t");
+        qd_buf_puts(p->b, t);
     } else if (e->tag != QD_ROLE_COORD) {
         name(p, e->u.sym.name, "Symbol");
     } else {
         name(p, e->u.sym.coord->u.sym.name, "Function");
-        qd_buf_puts(p->b, "(t)");
+        qd_buf_printf(p->b, "(%s)", t);
         if (e->order == 1)
-            qd_buf_puts(p->b, ".diff(t)");
+            qd_buf_printf(p->b, ".diff(%s)", t);
         else if (e->order > 1)
-            qd_buf_printf(p->b, ".diff(t, %u)", (unsigned)e->order);
+            qd_buf_printf(p->b, ".diff(%s, %u)", t, (unsigned)e->order);
     }
 }
 

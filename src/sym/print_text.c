@@ -198,7 +198,9 @@ static void expr(tp *p, const qd_expr *e) {
         magnitude_number(p, e);
         break;
     case QD_CONSTANT: qd_buf_puts(p->b, e->tag == QD_PI ? "pi" : "e"); break;
-    case QD_SYMBOL: qd_buf_puts(p->b, e->u.sym.name); break;
+    case QD_SYMBOL:
+        qd_buf_puts(p->b, e->tag == QD_ROLE_TIME ? qd_print_time_name(p->ctx) : e->u.sym.name);
+        break;
     case QD_FUNC: call(p, qd_func_name((qd_func)e->tag), e); break;
     case QD_UFUNC: call(p, e->u.fn.name, e); break;
     case QD_UDERIV: uderiv(p, e); break;

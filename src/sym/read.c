@@ -19,7 +19,8 @@
  *
  * Names: [A-Za-z_][A-Za-z0-9_]*.  A name is, in this order, a symbol of the
  * context (so a symbol named e stays that symbol), pi, e, t (the time), or a
- * new plain symbol (an error when opts->new_symbols is false).  A name
+ * new plain symbol (an error when opts->new_symbols is false); before all
+ * these, the name the time prints as (qd_print_set_time_name) is the time.  A name
  * followed by '(' is a built-in function, sqrt, or a user function; with
  * primes before the '(' it is a derivative of a user function: V'(r) and
  * V''(r) for one argument, V'[1,2](x, y) with 1-based argument slots.
@@ -259,8 +260,12 @@ static const qd_expr *number(rd *p) {
     return check(p, qd_rat_str(p->ctx, buf), off, len);
 }
 
-/* A name standing alone: a symbol, pi, e, t, or a new symbol. */
+/* A name standing alone: a symbol, pi, e, t, or a new symbol.  The name t
+ * prints as (qd_print_set_time_name: x for `independent x`) is t first,
+ * so that what the text printer writes reads back. */
 static const qd_expr *name_value(rd *p, const char *name, size_t off, size_t len) {
+    if (p->ctx->tname && !strcmp(name, p->ctx->tname))
+        return check(p, qd_time(p->ctx), off, len);
     const qd_expr *s = qd_lookup(p->ctx, name);
     if (s)
         return s;

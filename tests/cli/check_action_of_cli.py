@@ -18,6 +18,11 @@ Expected values are closed forms worked by hand from Desloge ch. 83
   times 2 = 2 cot 2, first variation 0;
 - a SymPy cross-check (python3-sympy): the action of a trial path with
   sin and powers, integrated exactly by SymPy;
+- `independent x` (issue 16): the trial path is written in the model's own
+  variable: on examples/brachistochrone.qd, y = x on [1/2, 1] has
+  integral dx/sqrt(g x) = 2 (1 - sqrt(1/2))/sqrt(g) (Desloge App. 32 Ex. 2's
+  integrand) and a first variation equal to SymPy's L2 norm of the
+  Euler-Lagrange residual; y = t, the old spelling, is the same path;
 - errors: an unknown name (exit 2), a coordinate without a path (2), a
   coordinate given twice (2), T1 <= T0 (2), a path singular inside the
   interval (1), a model with constraints (2: not yet).
@@ -110,6 +115,25 @@ def sympy_cross(qdot):
         check('SymPy action', close(r['action'], S, 1e-12), (r['action'], S))
 
 
+def independent_variable(qdot):
+    import sympy as sp
+    brach = str(EXAMPLES / 'brachistochrone.qd')
+    g = sp.Rational(98, 10)
+    rx = action_of(qdot, brach, 'y = x', '1/2:1')
+    rt = action_of(qdot, brach, 'y = t', '1/2:1')
+    if rx is None or rt is None:
+        return
+    want = 2 * (1 - math.sqrt(0.5)) / math.sqrt(float(g))
+    check('independent x: S of y = x', close(rx['action'], want, 1e-12), rx['action'])
+    check('independent x: y = t is the same path', rx == rt, (rx, rt))
+    x, y = sp.Symbol('x'), sp.Function('y')
+    F = sp.sqrt((1 + y(x).diff(x)**2) / (2 * g * y(x)))
+    el = (F.diff(y(x).diff(x)).diff(x) - F.diff(y(x))).subs(y(x), x).doit()
+    norm = math.sqrt(float(sp.Integral(sp.simplify(el**2), (x, sp.Rational(1, 2), 1)).evalf(30)))
+    check('independent x: first variation = SymPy', close(rx['first_variation'], norm, 1e-9),
+          (rx['first_variation'], norm))
+
+
 def errors(qdot):
     rc, _, err = run(qdot, 'action-of', PROJ, '--path', 'x = 0, y = z', '--t', '0:1')
     check('unknown name', rc == 2 and "unknown name 'z'" in err, err)
@@ -133,6 +157,7 @@ def main():
     falling_body(qdot)
     oscillator(qdot)
     sympy_cross(qdot)
+    independent_variable(qdot)
     errors(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0

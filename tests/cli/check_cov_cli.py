@@ -17,10 +17,20 @@ here from the textbook, not from qdot:
 qdot's M q'' - f must equal d/dx dF/dy' - dF/dy at random points.  The text
 output names the independent variable and the multiplier; the errors (a second
 `independent`, integral() outside a constraint) exit 2 with a located caret.
+
+The independent variable prints under its own name in every format (issue
+16): no `t` anywhere in text, JSON, LaTeX (primes there, not dots) or SymPy
+(which binds x, not t); the text equations of the catenary and of
+F = sqrt(1 + y'^2)/x (x explicit: the hyperbolic half-plane, whose
+extremals are the circles centred on x = 0), read back by SymPy with x as
+the variable, are SymPy's Euler-Lagrange equations; `--at` takes x=; the
+SymPy scripts of hamiltonian, routh and hj bind x and run; `qdot path` names x in
+its samples and marks a focus of multiplicity 2.
 Prints "N passed, N failed"; exit 1 on failure.
 """
 import argparse
 import random
+import re
 import subprocess
 import sys
 import tempfile
@@ -46,13 +56,16 @@ def qdot(build, *args):
                           capture_output=True, text=True, timeout=120)
 
 
-def qdot_residual(build, example):
-    """M*q'' - f of `qdot eom --format sympy` (one coordinate), and its namespace."""
+def qdot_residual(build, example, var):
+    """M*q'' - f of `qdot eom --format sympy` (one coordinate), and its
+    namespace, where the independent variable is bound as var (and t is not)."""
     r = qdot(build, "eom", EX / example, "--format", "sympy")
     if r.returncode != 0:
         raise RuntimeError("qdot eom %s: %s" % (example, r.stderr))
     ns = {}
-    exec(r.stdout, ns)  # the printed program defines t, the coordinate, M, f
+    exec(r.stdout, ns)  # the printed program defines var, the coordinate, M, f
+    check("%s sympy: binds %s, not t" % (example, var), var in ns and "t" not in ns, sorted(ns))
+    ns["t"] = ns.get(var, ns.get("t"))  # the checks below call the independent variable t
     q = ns["q"][0]
     return (ns["M"] * ns["q"].diff(ns["t"], 2) - ns["f"])[0], q, ns
 
@@ -79,7 +92,7 @@ def same(name, qd_expr, want, q, t, consts, bounds):
 
 
 def check_catenary(build):
-    res, q, ns = qdot_residual(build, "catenary.qd")
+    res, q, ns = qdot_residual(build, "catenary.qd", "x")
     t, w, lam = ns["t"], ns["w"], ns["lambda_length"]
     x, y = sp.Symbol("x"), sp.Function("y")
     yp = y(x).diff(x)
@@ -97,7 +110,7 @@ def check_catenary(build):
 
 
 def check_brachistochrone(build):
-    res, q, ns = qdot_residual(build, "brachistochrone.qd")
+    res, q, ns = qdot_residual(build, "brachistochrone.qd", "x")
     t, g = ns["t"], ns["g"]
     x, y = sp.Symbol("x"), sp.Function("y")
     F = sp.sqrt((1 + y(x).diff(x)**2) / (2 * g * y(x)))
@@ -107,7 +120,7 @@ def check_brachistochrone(build):
 
 
 def check_geodesic(build):
-    res, q, ns = qdot_residual(build, "sphere_geodesic.qd")
+    res, q, ns = qdot_residual(build, "sphere_geodesic.qd", "theta")
     t, R = ns["t"], ns["R"]
     th, phi = sp.Symbol("theta"), sp.Function("phi")
     F = R * sp.sqrt(1 + sp.sin(th)**2 * phi(th).diff(th)**2)
@@ -126,9 +139,137 @@ def check_text(build):
     r = qdot(build, "eom", EX / "catenary.qd")
     check("catenary text: exit 0", r.returncode == 0, r.stderr)
     check("catenary text: the independent variable",
-          "independent variable: x (written t)\n" in r.stdout, r.stdout)
+          "independent variable: x\n" in r.stdout, r.stdout)
     check("catenary text: the multiplier",
           "multiplier lambda_length (a constant)" in r.stdout, r.stdout)
+
+
+T_TOKEN = re.compile(r"(?<![A-Za-z0-9_'])t(?![A-Za-z0-9_(])")
+
+
+def equations(text):
+    """{name: expression text} of the `M[y,y] = ...` and `f[y] = ...` lines."""
+    out = {}
+    for line in text.splitlines():
+        m = re.match(r"\s+([Mf])\[[^]]*\] = (.*)$", line)
+        if m:
+            out[m.group(1)] = m.group(2)
+    return out
+
+
+def read_back(s, y, x, names):
+    """qdot's text syntax (y', y'', ^) parsed by SymPy with y a function of x."""
+    s = s.replace("y''", "Y2").replace("y'", "Y1").replace("^", "**")
+    loc = dict(names, Y2=y(x).diff(x, 2), Y1=y(x).diff(x), y=y(x), x=x)
+    return sp.sympify(s, locals=loc)
+
+
+def check_printed_in_x(build, path, F, consts, bounds, extremal=None):
+    """No t in any format; the text equation read back is SymPy's
+    Euler-Lagrange equation of F(x, y, y') (y a Function, x a Symbol)."""
+    name = Path(path).name
+    for fmt in ("text", "json", "latex", "sympy"):
+        r = qdot(build, "eom", path, "--format", fmt)
+        body = r.stdout.split("\n", 1)[1] if fmt != "latex" else r.stdout  # past the path line
+        check("%s %s: exit 0" % (name, fmt), r.returncode == 0, r.stderr)
+        check("%s %s: no t" % (name, fmt), not T_TOKEN.search(body), body)
+        if fmt == "latex":
+            check("%s latex: primes, not dots" % name, "\\dot" not in body and "y''" in body, body)
+    x, y = sp.Symbol("x"), sp.Function("y")
+    eq = equations(qdot(build, "eom", path).stdout)
+    names = {str(c): c for c in consts}
+    res = read_back(eq["M"], y, x, names) * y(x).diff(x, 2) - read_back(eq["f"], y, x, names)
+    want = sympy_el(F(x, y(x), y(x).diff(x)), y(x), x)
+    rng = random.Random(7)
+    worst = 0.0
+    for _ in range(8):
+        pt = [(y(x).diff(x, 2), rng.uniform(-2, 2)), (y(x).diff(x), rng.uniform(-2, 2)),
+              (y(x), rng.uniform(*bounds["q"]))]
+        vals = {c: rng.uniform(0.5, 2.0) for c in consts}
+        vals[x] = rng.uniform(*bounds["x"])
+        a, b = res.subs(pt).subs(vals), want.subs(pt).subs(vals)
+        if not sp.N(a - b).is_number:  # a symbol left over (t printed for x)
+            worst = float("inf")
+            break
+        worst = max(worst, abs(float(sp.N(a - b))) / (1 + abs(float(sp.N(b)))))
+    check("%s: the text equation in x = SymPy euler_equations" % name, worst < 1e-12,
+          "worst relative difference %g" % worst)
+    if extremal:
+        sol, xs, vals = extremal
+        on = res.subs(y(x), sol).doit().subs(vals)
+        worst = max(abs(complex(sp.N(on.subs(x, xv)))) if on.subs(x, xv).is_number
+                    else float("inf") for xv in xs)
+        check("%s: the textbook extremal solves the printed equation" % name, worst < 1e-12,
+              "residual %g" % worst)
+
+
+def check_independent_printing(build):
+    w, lam = sp.Symbol("w"), sp.Symbol("lambda_length")
+    check_printed_in_x(build, EX / "catenary.qd",
+                       lambda x, y, yp: (w * y - lam) * sp.sqrt(1 + yp**2), [w, lam],
+                       {"x": (-1, 1), "q": (-1, 1)})
+    # x explicit: ds/x, the half-plane's metric; extremals x^2 + (y - b)^2 = R^2
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "halfplane.qd"
+        path.write_text("independent x\ncoordinates y\nparameters c = 1\n"
+                        "L = c*sqrt(1 + y'^2)/x\n")
+        c, x = sp.Symbol("c"), sp.Symbol("x")
+        b, R = sp.Rational(1, 3), sp.Rational(5, 2)
+        check_printed_in_x(build, path, lambda x, y, yp: c * sp.sqrt(1 + yp**2) / x, [c],
+                           {"x": (0.5, 2), "q": (-1, 1)},
+                           (b + sp.sqrt(R**2 - x**2), (0.4, 1.1, 1.9, 2.3), {c: 1}))
+        r = qdot(build, "check", path)
+        check("halfplane check: depends on x", "L depends on x explicitly" in r.stdout, r.stdout)
+        # --at takes the state in x: y'' = (1 + y'^2) y'/x, the Euler-Lagrange equation
+        r = qdot(build, "eom", path, "--at", "y=1, y'=0.5, x=0.25")
+        check("halfplane --at x: y'' = (1 + y'^2) y'/x",
+              "  y'' = 2.5\n" in r.stdout, r.stdout + r.stderr)
+
+
+def check_sympy_scripts(build):
+    """hamiltonian, routh, hj --format sympy on an `independent x` model:
+    the scripts bind x (not t) and run; H = p^2/2 + a x y there."""
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "linear.qd"
+        path.write_text("independent x\ncoordinates y, z\nparameters a = 2\n"
+                        "L = (y'^2 + z'^2)/2 - a*x*y\n")
+        for cmd in (["hamiltonian"], ["routh", "--ignore", "z"], ["hj"]):
+            r = qdot(build, cmd[0], path, *cmd[1:], "--format", "sympy")
+            ns = {}
+            try:
+                exec(r.stdout, ns)
+                ran = True
+            except Exception as exc:  # an unbound t or x
+                ran = False
+                r.stdout += "\n%r" % exc
+            check("%s sympy on independent x: runs, binds x not t" % cmd[0],
+                  r.returncode == 0 and ran and "x" in ns and "t" not in ns, r.stdout + r.stderr)
+            if cmd[0] == "hamiltonian" and ran:
+                x, y, a = ns["x"], ns["y"], ns["a"]
+                want = (ns["p_y"]**2 + ns["p_z"]**2) / 2 + a * x * y(x)
+                check("hamiltonian in x: H = p^2/2 + a x y", sp.simplify(ns["H"] - want) == 0,
+                      ns["H"])
+
+
+def check_path_text(build):
+    """qdot path: the samples' header names x; a focus of multiplicity 2 (the
+    isotropic plane oscillator at half a period, Gelfand and Fomin ch. 5)
+    says so and the path past it is no minimum."""
+    brach = EX / "brachistochrone.qd"
+    for var in ("x", "t"):  # the end points' variable, either spelling
+        r = qdot(build, "path", brach, "--from", "y=1, %s=0.5" % var, "--to", "y=0.8, %s=1" % var)
+        if r.returncode == 0:
+            break
+    check("path brachistochrone: exit 0", r.returncode == 0, r.stderr)
+    check("path brachistochrone: samples in x", "samples (x, y;" in r.stdout, r.stdout)
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "iso.qd"
+        path.write_text("coordinates x, y\nparameters m = 1, k = 1\nT = m*(x'^2 + y'^2)/2\n"
+                        "V = k*(x^2 + y^2)/2\n")
+        r = qdot(build, "path", path, "--from", "x=1, y=0, t=0", "--to", "x=0, y=1, t=1.2*pi")
+        check("path isotropic: a double focus at pi",
+              "kinetic foci: 3.14159265359 (multiplicity 2)\n" in r.stdout, r.stdout)
+        check("path isotropic: no minimum", "minimum: no\n" in r.stdout, r.stdout)
 
 
 def check_errors(build):
@@ -152,7 +293,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
-    for f in (check_catenary, check_brachistochrone, check_geodesic, check_text, check_errors):
+    for f in (check_catenary, check_brachistochrone, check_geodesic, check_text,
+              check_independent_printing, check_sympy_scripts, check_path_text, check_errors):
         f(args.build)
     print("%d passed, %d failed" % (results["passed"], results["failed"]))
     return 1 if results["failed"] else 0

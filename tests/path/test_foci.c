@@ -18,7 +18,12 @@
  *   foci at j pi/W, later than the undamped j pi sqrt(m/k);
  *   the free particle: J = (t - t0) I, no focus;
  *   a negative mass: the Legendre condition fails;
- *   a constrained model: QD_ERR_ARG, not a wrong answer.
+ *   foci of higher multiplicity (isotropic oscillators: 2 in the plane,
+ *   where det J does not change sign, 3 in space), close simple ones kept
+ *   apart, and holonomic constraints with multipliers (geodesics on the
+ *   2- and 3-sphere, the pendulum on a rod) against the same motion in
+ *   free coordinates; nonholonomic constraints refused; every allocation
+ *   failed in turn.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -30,6 +35,7 @@
 #include <string.h>
 
 #include "qdot/qdot.h"
+#include "util/fault.h"
 
 #define PI 3.14159265358979323846
 
@@ -212,17 +218,250 @@ static void test_legendre_negative_mass(void **state) {
     unload(&f);
 }
 
-static void test_constrained_refused(void **state) {
+/* qd_path_foci_mult on the model text from (t0 = 0, q0, v0) up to t1. */
+typedef struct found {
+    double *foci;
+    size_t *mult, n;
+    bool legendre;
+} found;
+
+static void foci_of(const char *text, const double *q0, const double *v0, double t1,
+                    found *out) {
+    fix f;
+    load(&f, text);
+    assert_int_equal(qd_path_foci_mult(f.ctx, f.m, f.e, 0, q0, v0, t1, &out->foci, &out->mult,
+                                       &out->n, &out->legendre),
+                     QD_OK);
+    qd_path_foci_free(f.ctx, NULL); /* freeing nothing is harmless */
+    unload(&f);
+}
+
+static void found_free(found *fd) {
+    qd_path_foci_free(NULL, fd->foci);
+    qd_path_foci_mult_free(NULL, fd->mult);
+}
+
+/* The isotropic plane oscillator (Gelfand and Fomin ch. 5 sec. 27: every
+ * solution from the origin returns at t = pi/w): J = sin(w t)/w I, det J =
+ * (sin(w t)/w)^2 touches 0 without a sign change, each focus of
+ * multiplicity 2, at j pi/w whatever q0 and v0.  Before foci of even
+ * multiplicity were sought this found none. */
+static void test_isotropic_plane(void **state) {
+    (void)state;
+    const double q0[2] = {0.4, -0.2}, v0[2] = {1.5, 0.7}, w = 1.5;
+    found fd;
+    foci_of("coordinates x, y\nparameters m = 2, k = 4.5\nT = m*(x'^2 + y'^2)/2\n"
+            "V = k*(x^2 + y^2)/2\n", q0, v0, 2.5 * PI / w, &fd);
+    assert_int_equal(fd.n, 2);
+    for (size_t j = 0; j < fd.n; j++) {
+        assert_true(fabs(fd.foci[j] - (double)(j + 1) * PI / w) < 1e-9);
+        assert_int_equal(fd.mult[j], 2);
+    }
+    assert_true(fd.legendre);
+    found_free(&fd);
+}
+
+/* In space, three Jacobi fields vanish together at pi/w: an odd focus
+ * that det J (~ (t - tc)^3) did see, now once with multiplicity 3. */
+static void test_isotropic_space(void **state) {
+    (void)state;
+    const double q0[3] = {0.1, 0.2, 0.3}, v0[3] = {-1, 0.5, 2}, w = 3;
+    found fd;
+    foci_of("coordinates x, y, z\nparameters m = 1, k = 9\nT = m*(x'^2 + y'^2 + z'^2)/2\n"
+            "V = k*(x^2 + y^2 + z^2)/2\n", q0, v0, 1.2 * PI / w, &fd);
+    assert_int_equal(fd.n, 1);
+    assert_true(fabs(fd.foci[0] - PI / w) < 1e-9);
+    assert_int_equal(fd.mult[0], 3);
+    found_free(&fd);
+}
+
+/* Anisotropic, w1 = 2 and w2 = 2.02: det J = sin(w1 t) sin(w2 t)/(w1 w2),
+ * two simple foci 0.0156 apart (pi/w2 first), which must not merge into
+ * one of multiplicity 2. */
+static void test_anisotropic_close(void **state) {
+    (void)state;
+    const double q0[2] = {0.3, 0.1}, v0[2] = {1, -1}, w1 = 2, w2 = 2.02;
+    found fd;
+    foci_of("coordinates x, y\nparameters m = 1, k1 = 4, k2 = 4.0804\nT = m*(x'^2 + y'^2)/2\n"
+            "V = (k1*x^2 + k2*y^2)/2\n", q0, v0, 1.1 * PI / w1, &fd);
+    assert_int_equal(fd.n, 2);
+    assert_true(fabs(fd.foci[0] - PI / w2) < 1e-9);
+    assert_true(fabs(fd.foci[1] - PI / w1) < 1e-9);
+    assert_int_equal(fd.mult[0], 1);
+    assert_int_equal(fd.mult[1], 1);
+    found_free(&fd);
+}
+
+/* The path past an even focus is no minimum either (Desloge ch. 84): the
+ * isotropic oscillator from (1, 0) to (0, 1) over 0.6 of a period passes
+ * the double focus at half a period; over 0.4 it is a minimum. */
+static void test_isotropic_path_minimum(void **state) {
     (void)state;
     fix f;
-    load(&f, "coordinates x, y\nparameters m = 1, l = 1, g = 9.81\nparticle m at (x, y)\n"
-             "V = m*g*y\nconstraint rod: x^2 + y^2 = l^2\n");
-    double q0[2] = {0, -1}, v0[2] = {0.1, 0}, *foci = NULL;
+    load(&f, "coordinates x, y\nparameters m = 1, k = 1\nT = m*(x'^2 + y'^2)/2\n"
+             "V = k*(x^2 + y^2)/2\n");
+    const double q0[2] = {1, 0}, q1[2] = {0, 1}, frac[2] = {0.4, 0.6};
+    for (int i = 0; i < 2; i++) {
+        qd_path_opts o = {.t0 = 0, .t1 = frac[i] * 2 * PI, .q0 = q0, .q1 = q1};
+        qd_path_set ps;
+        assert_int_equal(qd_path_find(f.ctx, f.m, f.e, &o, &ps), QD_OK);
+        assert_int_equal(ps.paths[0].nfoci, (size_t)i);
+        assert_true(ps.paths[0].minimum == (i == 0));
+        if (i == 1) {
+            assert_true(fabs(ps.paths[0].foci[0] - PI) < 1e-8);
+            assert_non_null(ps.paths[0].foci_mult);
+            assert_int_equal(ps.paths[0].foci_mult[0], 2);
+        }
+        qd_path_set_free(&ps);
+    }
+    unload(&f);
+}
+
+#define SPHERE2 "coordinates x, y, z\nparameters m = 1.5, l = 1.3\nparticle m at (x, y, z)\n" \
+                "constraint sphere: x^2 + y^2 + z^2 = l^2\n"
+
+/* Geodesics on a sphere of radius l at speed v, written in Cartesian
+ * coordinates with a multiplier: the antipode at t = pi l/v (Gelfand and
+ * Fomin ch. 5 sec. 27).  Of the 2 admissible directions of v0, the change
+ * of speed moves q(t) along the great circle and never vanishes: the focus
+ * is simple (det J ~ t sin(v t/l)).  The same in spherical angles, started
+ * on the equator along a great circle tilted by a (no pole on the way). */
+static void test_sphere_cartesian(void **state) {
+    (void)state;
+    const double l = 1.3, v = 0.9, a = 0.5, tf = PI * l / v;
+    const double q0[3] = {l, 0, 0}, v0[3] = {0, v * cos(a), v * sin(a)};
+    found fc, fa;
+    foci_of(SPHERE2, q0, v0, 1.5 * tf, &fc);
+    assert_int_equal(fc.n, 1);
+    assert_true(fabs(fc.foci[0] - tf) < 1e-8);
+    assert_int_equal(fc.mult[0], 1);
+    assert_true(fc.legendre);
+    const double a0[2] = {PI / 2, 0}, av[2] = {-v * sin(a) / l, v * cos(a) / l};
+    foci_of("coordinates th, ph\nparameters m = 1.5, l = 1.3\n"
+            "particle m at l*(sin(th)*cos(ph), sin(th)*sin(ph), cos(th))\n", a0, av, 1.5 * tf,
+            &fa);
+    assert_int_equal(fa.n, 1);
+    assert_true(fabs(fa.foci[0] - fc.foci[0]) < 1e-8);
+    found_free(&fc);
+    found_free(&fa);
+}
+
+/* The 3-sphere x^2 + y^2 + z^2 + w^2 = l^2: two normal Jacobi fields
+ * sin(v t/l) vanish together at the antipode, a focus of multiplicity 2
+ * (det of the 3 x 3 restricted J ~ t sin^2(v t/l) keeps its sign). */
+static void test_three_sphere(void **state) {
+    (void)state;
+    const double l = 0.7, v = 1.1, tf = PI * l / v, s = sqrt(1.0 / 3);
+    const double q0[4] = {0, 0, 0, l}, v0[4] = {v * s, -v * s, v * s, 0};
+    found fd;
+    foci_of("coordinates x, y, z, w\nparameters m = 2, l = 0.7\n"
+            "T = m*(x'^2 + y'^2 + z'^2 + w'^2)/2\n"
+            "constraint sphere: x^2 + y^2 + z^2 + w^2 = l^2\n", q0, v0, 2.2 * tf, &fd);
+    assert_int_equal(fd.n, 2);
+    assert_true(fabs(fd.foci[0] - tf) < 1e-8);
+    assert_true(fabs(fd.foci[1] - 2 * tf) < 1e-8);
+    assert_int_equal(fd.mult[0], 2);
+    assert_int_equal(fd.mult[1], 2);
+    found_free(&fd);
+}
+
+/* The pendulum as a point on a rod, x^2 + y^2 = l^2: from the stable
+ * equilibrium its focus is the angle model's, pi sqrt(l/g) at small
+ * amplitude (Desloge ch. 84) and the same later one at a large amplitude. */
+static void test_pendulum_cartesian(void **state) {
+    (void)state;
+    const double l = 0.8, w = sqrt(9.81 / l), amp[2] = {1e-4, 0.7};
+    for (int i = 0; i < 2; i++) {
+        double v = amp[i] * w * l, q0[2] = {0, -l}, v0[2] = {v, 0}, th0 = 0, thd = v / l;
+        found fc, fa;
+        foci_of("coordinates x, y\nparameters m = 1.3, l = 0.8, g = 9.81\n"
+                "particle m at (x, y)\nV = m*g*y\nconstraint rod: x^2 + y^2 = l^2\n", q0, v0,
+                1.4 * PI / w, &fc);
+        foci_of("coordinates th\nparameters m = 1.3, l = 0.8, g = 9.81\n"
+                "particle m at l*(sin(th), -cos(th))\nV = -m*g*l*cos(th)\n", &th0, &thd,
+                1.4 * PI / w, &fa);
+        assert_int_equal(fc.n, 1);
+        assert_int_equal(fa.n, 1);
+        assert_int_equal(fc.mult[0], 1);
+        assert_true(fabs(fc.foci[0] - fa.foci[0]) < 1e-8);
+        if (i == 0)
+            assert_true(fabs(fc.foci[0] - PI / w) < 1e-6);
+        else
+            assert_true(fc.foci[0] > PI / w + 1e-3); /* later with the amplitude */
+        found_free(&fc);
+        found_free(&fa);
+    }
+}
+
+/* Legendre's condition asks M > 0 on the admissible velocities only
+ * (Gelfand and Fomin ch. 5 sec. 29): T = (x'^2 - z'^2)/2 is indefinite,
+ * but z = 0 leaves x' alone, with M = 1 there; a negative mass fails on
+ * the tangent space too.  Foci at j pi/w either way (w = 2). */
+static void test_legendre_on_tangent_space(void **state) {
+    (void)state;
+    const double q0[2] = {0.3, 0}, v0[2] = {1, 0};
+    const char *model[2] = {"coordinates x, z\nparameters m = 1, k = 4\n"
+                            "T = m*(x'^2 - z'^2)/2\nV = k*x^2/2\nconstraint flat: z = 0\n",
+                            "coordinates x, z\nparameters m = -1, k = -4\n"
+                            "T = m*(x'^2 + z'^2)/2\nV = k*x^2/2\nconstraint flat: z = 0\n"};
+    for (int i = 0; i < 2; i++) {
+        found fd;
+        foci_of(model[i], q0, v0, 2, &fd);
+        assert_true(fd.legendre == (i == 0));
+        assert_int_equal(fd.n, 1);
+        assert_true(fabs(fd.foci[0] - PI / 2) < 1e-8);
+        found_free(&fd);
+    }
+}
+
+/* The Chaplygin sleigh's blade is nonholonomic: its motions are not
+ * stationary paths of the action, so they have no foci to report. */
+static void test_nonholonomic_refused(void **state) {
+    (void)state;
+    fix f;
+    load(&f, "coordinates x, y, th\nparameters m = 1, Ic = 0.2, a = 0.5\n"
+             "body sled mass m inertia (0, 0, Ic) at (x + a*cos(th), y + a*sin(th)) "
+             "orientation rot_z(th)\nconstraint blade: -x'*sin(th) + y'*cos(th) = 0\n");
+    double q0[3] = {0, 0, 0}, v0[3] = {0.1, 0, 1}, *foci = NULL;
     size_t nf = 0;
     assert_int_equal(qd_path_foci(f.ctx, f.m, f.e, 0, q0, v0, 1, &foci, &nf, NULL), QD_ERR_ARG);
-    assert_non_null(strstr(qd_ctx_message(f.ctx), "constrained"));
+    assert_non_null(strstr(qd_ctx_message(f.ctx), "nonholonomic"));
     assert_null(foci);
     unload(&f);
+}
+
+/* Every allocation of qd_path_foci_mult failed in turn (tests/util/fault.h)
+ * on the sphere in Cartesian coordinates, whose tangent space and
+ * Legendre test allocate too: the focus at pi l/v or a clean
+ * QD_ERR_NOMEM, nothing leaked.  Parse and derivation run unfailed. */
+static qd_status sphere_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
+    long to_go = qt_fault_hold(f);
+    qd_model *m = qd_model_parse(ctx, SPHERE2, NULL);
+    qd_eom *e = m ? qd_eom_derive(ctx, m) : NULL;
+    if (!e)
+        fail_msg("parse or derive: %s", qd_ctx_message(ctx));
+    const double l = 1.3, v = 4, tf = PI * l / v;
+    const double q0[3] = {0, l, 0}, v0[3] = {v, 0, 0};
+    double *foci = NULL;
+    size_t *mult = NULL, nf = 0;
+    qt_fault_release(f, to_go);
+    qd_status st = qd_path_foci_mult(ctx, m, e, 0, q0, v0, 1.2 * tf, &foci, &mult, &nf, NULL);
+    qt_fault_hold(f);
+    if (st == QD_OK && !(nf == 1 && fabs(foci[0] - tf) < 1e-8 && mult[0] == 1))
+        fail_msg("wrong foci after %ld allocations: %zu of them", f->count, nf);
+    if (st != QD_OK && (foci || mult))
+        fail_msg("a failed run left foci behind");
+    qd_path_foci_free(ctx, foci);
+    qd_path_foci_mult_free(ctx, mult);
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_foci_fault(void **state) {
+    (void)state;
+    assert_true(qt_fault_loop("sphere foci", sphere_body, NULL, 7).runs > 5);
 }
 
 static void test_bad_times(void **state) {
@@ -243,7 +482,16 @@ int main(void) {
         cmocka_unit_test(test_damped_oscillator),
         cmocka_unit_test(test_free_particle),
         cmocka_unit_test(test_legendre_negative_mass),
-        cmocka_unit_test(test_constrained_refused),
+        cmocka_unit_test(test_isotropic_plane),
+        cmocka_unit_test(test_isotropic_space),
+        cmocka_unit_test(test_anisotropic_close),
+        cmocka_unit_test(test_isotropic_path_minimum),
+        cmocka_unit_test(test_sphere_cartesian),
+        cmocka_unit_test(test_three_sphere),
+        cmocka_unit_test(test_pendulum_cartesian),
+        cmocka_unit_test(test_legendre_on_tangent_space),
+        cmocka_unit_test(test_nonholonomic_refused),
+        cmocka_unit_test(test_foci_fault),
         cmocka_unit_test(test_bad_times),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
