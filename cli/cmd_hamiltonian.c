@@ -387,6 +387,10 @@ static int emit(ham_run *r) {
 static int run(ham_run *r) {
     int rc = cli_load(r->ctx, r->file, r->nsets, r->sets, true, &r->mf);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
+    /* a singular Hessian named as the Legendre transform sees it, before
+     * Lagrange's equations fail on the same matrix */
+    if (rc == QD_EXIT_OK && !given && qd_ham_regular(r->ctx, r->mf.model) != QD_OK)
+        rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
         rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->ctx, r->mf.model, r->e)))
