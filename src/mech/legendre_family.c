@@ -133,6 +133,8 @@ static qd_status profile(qd_ctx *ctx, family *f) {
 
 /* The numerator of a canceled quotient: its factors with no negative power. */
 static const qd_expr *numerator(qd_ctx *ctx, const qd_expr *x) {
+    if (!x)
+        return NULL;
     if (qd_expr_kind(x) == QD_POW && qd_is_number(qd_expr_arg(x, 1)) &&
         qd_number_sign(qd_expr_arg(x, 1)) < 0)
         return qd_int(ctx, 1);

@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "qdot/qdot.h"
+#include "../util/fault.h"
 
 #define SEED 1793u
 #define NPOINTS 12
@@ -345,6 +346,59 @@ static void test_singular(void **state) {
                     "homogeneous of degree 1");
 }
 
+/* Every allocation of the transform refused in turn (tests/util/fault.h):
+ * the closed form in fields, Newton on the implicit quartic, the inverse
+ * from H.  Each run ends with the right H (checked at one point) or a clean
+ * QD_ERR_NOMEM, nothing leaked. */
+static const char *const FAULT_MODELS[] = {
+    "coordinates x, y\nparameters m = 1.3, e = 0.8, c = 3, B = 2\n"
+    "L = -m*c^2*sqrt(1 - (x'^2 + y'^2)/c^2) + e*B*(x*y' - y*x')/2\n",
+    "coordinates x\nL = x'^2/2 + x'^4/12 - x^2/2\n",
+    "coordinates x\nparameters m = 1, c = 2\nmomenta p\nH = sqrt(m^2*c^4 + c^2*p^2) + x^2/2\n",
+};
+
+static qd_status fault_body(qd_ctx *ctx, qt_faulty *fl, void *data) {
+    const char *text = *(const char *const *)data;
+    long to_go = qt_fault_hold(fl);
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, text, &d);
+    assert_non_null(m);
+    qd_eom *e = qd_model_hamiltonian_given(m) ? NULL : qd_eom_derive(ctx, m);
+    qt_fault_release(fl, to_go);
+    qd_status st = qd_ham_regular(ctx, m);
+    qd_ham *h = st == QD_OK ? qd_ham_derive(ctx, m, e) : NULL;
+    if (st == QD_OK && !h)
+        st = qd_ctx_status(ctx);
+    double v[2] = {0, 0};
+    if (h && h->implicit) {
+        const qd_expr *syms[2] = {h->q[0], h->p[0]};
+        const double vals[2] = {0.3, 0.5 + 0.125 / 3}; /* p at x' = 1/2 */
+        st = qd_ham_velocities_at(ctx, h, 2, syms, vals, v);
+        if (st == QD_OK)
+            assert_true(fabs(v[0] - 0.5) < 1e-12);
+    } else if (h) {
+        assert_non_null(h->H);
+        assert_non_null(h->vel[0]);
+        if (h->H_given)
+            assert_non_null(h->L_from_H);
+    }
+    qd_ham_free(h);
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_fault(void **state) {
+    (void)state;
+    static const long stride[] = {7, 1, 1}; /* the fields' model: ~10^4 requests */
+    for (size_t i = 0; i < sizeof FAULT_MODELS / sizeof *FAULT_MODELS; i++) {
+        const char *text = FAULT_MODELS[i];
+        qt_fault_stats ls = qt_fault_loop("non-quadratic Legendre transform", fault_body,
+                                          &text, stride[i]);
+        assert_true(ls.allocs > 10);
+    }
+}
+
 int main(void) {
     srand(SEED);
     const struct CMUnitTest tests[] = {
@@ -356,6 +410,7 @@ int main(void) {
         cmocka_unit_test(test_routh_central),
         cmocka_unit_test(test_inverse_from_H),
         cmocka_unit_test(test_singular),
+        cmocka_unit_test(test_fault),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
