@@ -95,7 +95,9 @@ int cli_phase_load(const char *file, size_t nsets, const char *const *sets, cli_
 /* Read text (an expression in q, p, t and the parameters; what names it in
  * diagnostics); unknown names and velocities are errors (exit 2). */
 int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out);
-int cli_phase_ham(cli_phase *ph); /* H from hamilton.h */
+/* H from hamilton.h; closed: refuse an implicit H (exit 1), for a caller
+ * that needs H itself rather than Hamilton's equations. */
+int cli_phase_ham(cli_phase *ph, bool closed);
 void cli_phase_free(cli_phase *ph);
 
 #endif

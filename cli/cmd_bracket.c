@@ -6,7 +6,9 @@
  *     dF/dt = [F, H] + dF/dt|explicit + sum_j dF/dp_j extra_j,
  *
  * the last sum being the generalized forces and dissipation that Hamilton's
- * equations carry beyond -dH/dq (zero for a conservative model).  Also the
+ * equations carry beyond -dH/dq (zero for a conservative model); for an
+ * implicit H (L not quadratic in q', no closed-form q'(p)) the result is in
+ * q' too, which solves p = dL/dq'.  Also the
  * model-and-variables helpers (cli_phase) that `qdot canonical` shares.
  */
 #include "cli.h"
@@ -99,17 +101,18 @@ int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_e
     return no_velocity(ph, what, *out);
 }
 
-int cli_phase_ham(cli_phase *ph) {
+int cli_phase_ham(cli_phase *ph, bool closed) {
     /* a model given by H needs no equations of motion for its brackets */
     if (!qd_model_hamiltonian_given(ph->mf->model) &&
         !(ph->e = qd_eom_derive(ph->ctx, ph->mf->model)))
         return cli_eom_derive_error(ph->ctx, ph->mf);
     if (!(ph->h = qd_ham_derive(ph->ctx, ph->mf->model, ph->e)))
         return cli_eom_derive_error(ph->ctx, ph->mf);
-    if (ph->h->implicit) { /* dH/dq at fixed p would need dq'/dq */
-        cli_diag_error("brackets need H in closed form, but L is not quadratic in the velocities "
-                       "and p = dL/dq' has no closed-form solution for q' here (H is defined "
-                       "implicitly; `qdot hamiltonian --at` evaluates it)");
+    if (closed && ph->h->implicit) { /* K = H + dF/dt in new variables needs H itself */
+        cli_diag_error("a generating function's new Hamiltonian needs H in closed form, but L is "
+                       "not quadratic in the velocities and p = dL/dq' has no closed-form "
+                       "solution for q' here (H is defined implicitly; `qdot hamiltonian --at` "
+                       "evaluates it)");
         return QD_EXIT_FAIL;
     }
     for (size_t j = 0; j < ph->n; j++)
@@ -190,10 +193,21 @@ static int parse_args(int argc, char **argv, br_args *a) {
     return rc;
 }
 
-/* dF/dt along the motion: [F, H] + dF/dt explicit + sum dF/dp_j extra_j. */
+/* dF/dt along the motion: [F, H] + dF/dt explicit + sum dF/dp_j extra_j.
+ * With H implicit, [F, H] is not taken from H (whose q' depends on q and p
+ * in no closed form) but from Hamilton's equations themselves, dq_j/dt = q'_j
+ * and dp_j/dt = dL/dq_j + extra_j: the same sum, exact, with q' standing for
+ * the solution of p = dL/dq'. */
 static const qd_expr *time_derivative(cli_phase *ph, const qd_expr *F) {
     qd_ctx *ctx = ph->ctx;
     const qd_ham *h = ph->h;
+    if (h->implicit) {
+        const qd_expr *d = qd_diff(ctx, F, qd_time(ctx));
+        for (size_t j = 0; j < ph->n; j++)
+            d = qd_add(ctx, d, qd_add(ctx, qd_mul(ctx, qd_diff(ctx, F, ph->q[j]), h->dq[j]),
+                                      qd_mul(ctx, qd_diff(ctx, F, ph->p[j]), h->dp[j])));
+        return d ? qd_simplify(ctx, d) : NULL;
+    }
     const qd_expr *d = qd_bracket(ctx, ph->n, ph->q, ph->p, F, h->H);
     d = qd_add(ctx, d, qd_diff(ctx, F, qd_time(ctx)));
     for (size_t j = 0; j < ph->n; j++)
@@ -224,6 +238,10 @@ static void write_json(cli_phase *ph, const br_args *a, const qd_expr *F, const 
     if (a->dt) {
         json_expr(ph->ctx, &j, "H", ph->h->H);
         json_expr(ph->ctx, &j, "dF_dt", r);
+        if (ph->h->implicit) { /* H and dF_dt are in q' too, defined by p = dL/dq' */
+            cli_json_key(&j, "implicit");
+            cli_json_bool(&j, true);
+        }
     } else {
         json_expr(ph->ctx, &j, "G", G);
         json_expr(ph->ctx, &j, "bracket", r);
@@ -250,6 +268,9 @@ static void write_line(cli_phase *ph, const br_args *a, const qd_expr *F, const 
     }
     qd_print(ph->ctx, r, f, b);
     qd_buf_puts(b, "\n");
+    if (a->dt && ph->h->implicit)
+        qd_buf_puts(b, tex ? "% q' solves p = dL/dq' (no closed form)\n"
+                           : "  (q' solves p = dL/dq': no closed form)\n");
 }
 
 static int emit(cli_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
@@ -274,7 +295,7 @@ static int run(cli_phase *ph, const br_args *a) {
     if (rc == QD_EXIT_OK && !a->dt)
         rc = cli_phase_read(ph, "G", a->G, &G);
     if (rc == QD_EXIT_OK && a->dt)
-        rc = cli_phase_ham(ph);
+        rc = cli_phase_ham(ph, false);
     if (rc != QD_EXIT_OK)
         return rc;
     r = a->dt ? time_derivative(ph, F) : qd_bracket(ph->ctx, ph->n, ph->q, ph->p, F, G);

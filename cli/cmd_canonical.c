@@ -296,7 +296,7 @@ static int generate(can_run *r, const can_args *a) {
     if (rc == QD_EXIT_OK)
         rc = cli_phase_read(&r->ph, "generator", a->gen, &F);
     if (rc == QD_EXIT_OK)
-        rc = cli_phase_ham(&r->ph);
+        rc = cli_phase_ham(&r->ph, true);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_gen_result g = {0};
