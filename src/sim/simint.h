@@ -164,6 +164,9 @@ qd_status qd__aux_compile(qd_sim *s);
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd);
 /* h and T at (q, q', t): the first two entries of the result. */
 const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd);
+/* Records "WHAT not finite at t" (QD_ERR_NUMERIC): the state left the domain of
+ * the model's expressions (|v| >= c under sqrt(1 - v^2/c^2), ...). */
+qd_status qd__sim_not_finite(qd_sim *s, double t, const char *what);
 /* Run p (compiled over s's inputs, work its workspace) at (q, q', t). */
 void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const double *q,
                  const double *qd, double *out);

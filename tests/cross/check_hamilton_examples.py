@@ -16,8 +16,10 @@ formulas) and, at random states and parameter values, to 25 digits:
 
 Models with constraints are skipped (qdot hamiltonian refuses them: exit 2
 naming the constraint), and so are models with speeds (their equations are
-in speeds, checked by check_speeds_sympy.py) and functionals (`independent`:
-integrands not quadratic in the velocities); every other model must pass.
+in speeds, checked by check_speeds_sympy.py), functionals (`independent`:
+integrands not quadratic in the velocities) and, while `qdot hamiltonian`
+refuses them, Lagrangians not quadratic in the velocities (the relativistic
+examples); every other model must pass.
 
 Usage: check_hamilton_examples.py --build BUILD_DIR
 """
@@ -60,6 +62,10 @@ def check(qdot, path, rng):
     if rc != 0:
         if 'constraint' in err:
             return 'skip', 'constrained'
+        # the relativistic examples' L is not quadratic in the velocities: held
+        # by check_relativistic_cli.py until qdot hamiltonian takes such L
+        if 'L is not quadratic' in err:
+            return 'skip', 'L not quadratic'
         return 'fail', 'qdot hamiltonian: exit %d: %s' % (rc, err.strip()[:200])
     rc, eom, err = sympy_output(qdot, 'eom', path)
     if rc != 0:
