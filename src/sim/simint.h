@@ -18,9 +18,10 @@ typedef struct qd__event {
     size_t nguard;
 } qd__event;
 
-/* Inputs of every program: q (n), q' (n), t, parameters (np), and the
- * constraints' multipliers (m), which only outputs and events read: they are
- * solved for at the state when one of those uses them (aux_lambda).
+/* Inputs of every program: q (n), q' (n), t, parameters (np), and, in the
+ * (q, q') system, the constraints' multipliers (m) and the accelerations q''
+ * (n), which only outputs and events read: they are solved for at the state
+ * when one of those uses them (aux_lambda, aux_acc).
  *
  * Two parts.  The compiled system (programs, expressions, names, flags) is
  * immutable once qd_sim_compile has run: concurrent runs share it.  A run
@@ -62,7 +63,7 @@ struct qd_sim {
     char **out_name;
     const qd_expr **out_expr, **ev_expr, **guard_expr;
     qd__event *ev;
-    bool aux_ready, aux_lambda;
+    bool aux_ready, aux_lambda, aux_acc;
     /* column names of the fixed part: t, q, q', p_q, energy, res_c */
     char **names;
     size_t nnames;

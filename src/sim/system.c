@@ -84,9 +84,13 @@ qd_status qd__sim_inputs(qd_sim *s, const qd_expr *const *q, const qd_expr *cons
 
 static qd_status setup_inputs(qd_sim *s) {
     const qd_eom *e = s->e;
-    qd_status st = qd__sim_inputs(s, e->q, e->qd, s->m);
-    for (size_t k = 0; st == QD_OK && k < s->m; k++)
-        s->in_syms[2 * s->n + 1 + s->np + k] = e->con[k].lambda;
+    size_t n = s->n, m = s->m;
+    qd_status st = qd__sim_inputs(s, e->q, e->qd, m + n);
+    for (size_t k = 0; st == QD_OK && k < m; k++)
+        s->in_syms[2 * n + 1 + s->np + k] = e->con[k].lambda;
+    /* an output r'' or an event guard r'' > 0 (a perihelion) reads them */
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        s->in_syms[2 * n + 1 + s->np + m + j] = e->qdd[j];
     return st;
 }
 
@@ -416,11 +420,14 @@ qd_status qd__aux_compile(qd_sim *s) {
     if (s->se)
         qd__speeds_defs(s, k - 2, outs + 2);
     s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
-    s->aux_lambda = false;
+    s->aux_lambda = s->aux_acc = false;
     /* in speeds the multipliers are not inputs: compiling names them */
     for (size_t i = 2 + s->m; !s->se && i < k; i++)
         for (size_t c = 0; c < s->m; c++)
             s->aux_lambda = s->aux_lambda || qd_has(outs[i], s->cons[c].lambda);
+    /* nor, in speeds or an H model, the accelerations */
+    for (size_t i = 2 + s->m; !s->se && !s->hamilton && i < k; i++)
+        s->aux_acc = s->aux_acc || has_any(outs[i], s->n, s->e->qdd);
     /* outputs and events are needed at rows and event checks only; the
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
@@ -524,13 +531,15 @@ void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const doub
 
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
-    if (s->aux_lambda) {
-        /* the multipliers at this state: the saddle-point solve of the
-         * right-hand side; NaN where it is singular */
-        double *lambda = s->in + 2 * s->n + 1 + s->np;
+    if (s->aux_lambda || s->aux_acc) {
+        /* the multipliers and accelerations at this state: the saddle-point
+         * solve of the right-hand side; NaN where it is singular */
+        double *lambda = s->in + 2 * s->n + 1 + s->np, *qdd = lambda + s->m;
         bool ok = saddle_solve(s, t, NULL);
         for (size_t k = 0; k < s->m; k++)
             lambda[k] = ok ? s->rhs[s->n + k] : NAN;
+        for (size_t j = 0; j < s->n; j++)
+            qdd[j] = ok ? s->rhs[j] : NAN;
     }
     qd_prog_eval(s->aux, s->aux_w, s->in, s->aux_out);
 }

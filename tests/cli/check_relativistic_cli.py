@@ -17,12 +17,16 @@ of the code under test:
   - examples/relativistic_E_field.qd: x(t), y(t) sampled on a grid against
     x = (W - E0)/(e E), y = (p0 c/(e E)) asinh(c e E t/E0) (ch. 89 Prob. 2) to
     1e-8, from rest (hyperbolic motion) and with a transverse start; x' < c;
-    at c = 1e4, x = e E t^2/(2 m);
+    at c = 1e4, x = e E t^2/(2 m); the definition `gam` in --stop-at stops where
+    gamma(t) = sqrt(1 + (e E t/(m c))^2) reaches 1.25; outputs that need the
+    accelerations: gam' = (e E/(m c))^2 t/gamma, x'' = (e E/m)/gamma^3, and
+    on the Cartesian pendulum the constraint's second derivative and y'';
   - examples/relativistic_kepler.qd: the perihelia are the events r' = 0 at
     which r is a local minimum among the turning points (r' goes from - to +
     there); their angular spacing minus 2 pi is 2 pi (1/G - 1),
     G = sqrt(1 - (k/(c l))^2), l = m gamma r^2 th' from the initial state, to
-    1e-6 relative (T19: 0.343965633982); p_th as an --output of definitions is
+    1e-6 relative (T19: 0.343965633982), and the events `r' = 0, r'' > 0`
+    (a guard on an acceleration) are the same perihelia; p_th as an --output of definitions is
     conserved; the orbit equation itself is derived with SymPy from H; at
     large c the advance vanishes;
   - the same model with th' maintained (`qdot stability --driven`): the circle
@@ -169,8 +173,44 @@ def e_field_gamma_event(qdot):
           and rel(ev[0]["gam"], G) < 1e-12, f"{ev} vs t = {want!r}")
 
 
+def e_field_gamma_rate(qdot):
+    """An output that needs the accelerations: from rest gamma' = (e E/(m c))^2 t/gamma."""
+    m, e, E, c = 1.3, 0.7, 2.5, 1.9
+    rows = simulate(qdot, "relativistic_E_field.qd", "--t-end", "4", "--dt", "0.5",
+                    "--method", "dop853", "--rtol", "1e-13", "--atol", "1e-15",
+                    "--output", "gam', x''", *params(m=m, e=e, E=E, c=c))
+    if rows is None:
+        return
+    a = e * E / (m * c)
+    worst = max(abs(r["gam'"] - a * a * r["t"] / math.sqrt(1 + (a * r["t"]) ** 2))
+                for r in rows)
+    check("E output gam' (accelerations)", worst < 1e-12, f"{worst:.3g}")
+    # x'' = (e E/m)/gamma^3 along the field (M = m gamma^3 there)
+    worst = max(rel(r["x''"], e * E / m / (1 + (a * r["t"]) ** 2) ** 1.5) for r in rows)
+    check("E output x''", worst < 1e-12, f"{worst:.3g}")
+
+
+def constrained_accelerations(qdot):
+    """q'' in outputs of a constrained model come from the saddle system: on the
+    rod x^2 + y^2 = l^2, x x'' + y y'' + x'^2 + y'^2 = 0, and released at rest at
+    angle th from the downward vertical, y'' = -g sin(th)^2 (the tangential
+    acceleration g sin(th) projected on y; examples/pendulum_cartesian.qd)."""
+    rows = simulate(qdot, "pendulum_cartesian.qd", "--t-end", "2", "--dt", "0.25",
+                    "--method", "dop853", "--rtol", "1e-12",
+                    "--output", "x*x'' + y*y'' + x'^2 + y'^2, y''")
+    if rows is None:
+        return
+    worst = max(abs(r["x*x'' + y*y'' + x'^2 + y'^2"]) for r in rows)
+    check("pendulum second derivative of the constraint", worst < 1e-9, f"{worst:.3g}")
+    r0 = rows[0]
+    s2 = r0["x"] ** 2 / (r0["x"] ** 2 + r0["y"] ** 2)
+    check("pendulum y'' at rest", rel(r0["y''"], -9.81 * s2) < 1e-12, str(r0))
+
+
 def e_field(qdot):
     e_field_gamma_event(qdot)
+    e_field_gamma_rate(qdot)
+    constrained_accelerations(qdot)
     e_field_case(qdot, "E from rest", 1, 1, 1, 1, 0.0)
     e_field_case(qdot, "E transverse", 1.3, 0.7, 2.5, 1.9, 0.8 * 1.9)
     # c -> large: the Newtonian x = e E t^2/(2 m) (the correction is (eEt/mc)^2/4)
@@ -201,6 +241,17 @@ def kepler_case(qdot, name, m, c, k, r0, w0, t_end, tol=1e-6):
         return None
     peri = perihelia(rows)
     check(f"{name} perihelia", len(peri) >= 3, str(len(peri)))
+    # the same perihelia as events guarded by an acceleration: r' = 0 with r'' > 0
+    rows2 = simulate(qdot, "relativistic_kepler.qd", "--t-end", repr(t_end),
+                     "--rtol", "1e-13", "--atol", "1e-15",
+                     "--initial", f"r={r0!r}, th=0, r'=0, th'={w0!r}",
+                     *params(m=m, c=c, k=k), "--event", "r' = 0, r'' > 0")
+    if rows2 is not None:
+        th2 = [e["th"] for e in events(rows2)]
+        th1 = [e["th"] for e in peri]
+        check(f"{name} perihelia by r'' > 0", len(th2) >= len(th1) and all(
+            abs(a - b) < 1e-9 * (1 + abs(b)) for a, b in zip(th2[th2.index(min(
+                th2, key=lambda v: abs(v - th1[0]))):], th1)), f"{th2} vs {th1}")
     steps = [b["th"] - a["th"] - 2 * math.pi for a, b in zip(peri, peri[1:])]
     worst = max((abs(s - advance) / max(abs(advance), 1e-12) for s in steps), default=1)
     check(f"{name} perihelion advance 2 pi (1/G - 1)", worst < tol,
