@@ -144,9 +144,33 @@ static const qd_expr *number(ham_run *r, const qd_expr *x) {
     return qd_float(r->ctx, v);
 }
 
+/* An implicit H (L not quadratic in q', no closed form) needs q' at the
+ * point: Newton's method on p = dL/dq', from the q' given (else 0). */
+static int implicit_velocities(ham_run *r) {
+    qd_ham *h = r->h;
+    double *v = calloc(h->n ? h->n : 1, sizeof *v);
+    if (!v)
+        return QD_EXIT_FAIL;
+    qd_status st = qd_ham_velocities_at(r->ctx, h, r->nsyms, r->syms, r->vals, v);
+    for (size_t j = 0; st == QD_OK && j < h->n; j++) {
+        for (size_t i = 0; i < r->nsyms; i++)
+            if (r->syms[i] == h->qd[j])
+                r->vals[i] = v[j];
+        h->vel[j] = qd_float(r->ctx, v[j]);
+    }
+    free(v);
+    if (st != QD_OK) {
+        cli_diag_error("cannot evaluate at this point: %s", qd_ctx_message(r->ctx));
+        return QD_EXIT_FAIL;
+    }
+    return QD_EXIT_OK;
+}
+
 static int evaluate(ham_run *r) {
     qd_ham *h = r->h;
     int rc = state_at(r);
+    if (rc == QD_EXIT_OK && h->implicit)
+        rc = implicit_velocities(r);
     if (rc != QD_EXIT_OK)
         return rc;
     h->H = number(r, h->H);
@@ -200,14 +224,25 @@ static void write_lines(const ham_run *r, qd_buf *b) {
     const qd_ham *h = r->h;
     const char *cmt = r->fmt == FMT_LATEX ? "% " : "";
     qd_buf_printf(b, "%sqdot hamiltonian %s\n%smomenta%s\n", cmt, r->mf.path, cmt,
-                  r->at ? "" : " and velocities");
+                  h->implicit ? " (no closed form for the velocities: they solve these)"
+                  : r->at     ? ""
+                              : " and velocities");
     for (size_t j = 0; j < h->n; j++) {
         if (h->pdef[j])
             line(r, b, h->p[j], "", h->pdef[j]);
-        if (!r->at)
+        if (!r->at && !h->implicit)
             line(r, b, h->qd[j], "", h->vel[j]);
     }
-    qd_buf_printf(b, "%sHamiltonian%s\n", cmt, r->at ? " at the point" : "");
+    if (h->implicit && r->at) {
+        qd_buf_printf(b, "%svelocities at the point (Newton's method on the momenta)\n", cmt);
+        for (size_t j = 0; j < h->n; j++)
+            line(r, b, h->qd[j], "", h->vel[j]);
+    }
+    if (h->implicit && !r->at)
+        qd_buf_printf(b, "%sHamiltonian (defined implicitly: sum p q' - L at those "
+                         "velocities)\n", cmt);
+    else
+        qd_buf_printf(b, "%sHamiltonian%s\n", cmt, r->at ? " at the point" : "");
     line(r, b, NULL, "H", h->H);
     if (h->H_given && !r->at) {
         qd_buf_printf(b, "%sLagrangian (inverse Legendre transform)\n", cmt);
@@ -276,6 +311,8 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
     else
         qd_buf_printf(b, "%s = None\n", cli_script_name(m, "pdef").s);
     sympy_list(r, b, "velocities", h->vel);
+    if (h->implicit) /* velocities are then the symbols q' themselves, tied to p by pdef */
+        qd_buf_printf(b, "%s = True\n", cli_script_name(m, "implicit").s);
     qd_buf_printf(b, "%s = ", cli_script_name(m, "H").s);
     put(r, b, h->H);
     qd_buf_puts(b, "\n");
@@ -342,6 +379,10 @@ static void write_json(const ham_run *r, qd_buf *b) {
     cli_json_end_array(&j);
     json_list(r, &j, "definitions", h->pdef);
     json_list(r, &j, "velocities", h->vel);
+    if (h->implicit) { /* only then, so the other models' output is unchanged */
+        cli_json_key(&j, "implicit");
+        cli_json_bool(&j, true);
+    }
     if (r->at)
         json_point(r, &j);
     cli_json_key(&j, "H");
@@ -387,6 +428,10 @@ static int emit(ham_run *r) {
 static int run(ham_run *r) {
     int rc = cli_load(r->ctx, r->file, r->nsets, r->sets, true, &r->mf);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
+    /* a singular Hessian named as the Legendre transform sees it, before
+     * Lagrange's equations fail on the same matrix */
+    if (rc == QD_EXIT_OK && !given && qd_ham_regular(r->ctx, r->mf.model) != QD_OK)
+        rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->ctx, r->mf.model)))
         rc = cli_eom_derive_error(r->ctx, &r->mf);
     if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->ctx, r->mf.model, r->e)))

@@ -53,12 +53,19 @@ typedef struct qd_ham {
     const qd_expr *L_from_H; /* H models: L = sum p q' - H in q, q', t, simplified;
                                 NULL when H is not regular (then L_why says why) */
     char L_why[256];
+    bool implicit;          /* L is not quadratic in q' and p = dL/dq' has no closed-form
+                               inverse: vel_j is q'_j itself, defined by pdef_j = p_j, and
+                               H = sum p q' - L, dq, dp are in q, q', p, t (so dq_j = q'_j,
+                               dp_j = dL/dq_j + extra_j); qd_ham_velocities_at gives q' */
 } qd_ham;
 
 /* The Hamiltonian of model m from its derived equations e (qd_eom_derive).
- * Constraints (or eliminated coordinates) are QD_ERR_ARG, momenta that are
- * not linear in the velocities QD_ERR_NONLINEAR, a singular mass matrix
- * QD_ERR_SINGULAR.  NULL on failure, reason in the context.
+ * Constraints (or eliminated coordinates) are QD_ERR_ARG, a singular mass
+ * matrix QD_ERR_SINGULAR.  An L not quadratic in the velocities is solved
+ * in closed form when it is F(q'^T G q') + a.q' + L0 (the relativistic
+ * particle in fields: H = sqrt(m^2 c^4 + c^2 (p - e A)^2) + e phi), else
+ * kept implicit (h->implicit); L linear in a velocity, or homogeneous of
+ * degree 1 in them beyond linear terms, is QD_ERR_SINGULAR naming it.  NULL on failure, reason in the context.
  * For a model given by H, e is not used (it may be NULL): the equations are
  * dq_j/dt = dH/dp_j, dp_j/dt = -dH/dq_j + Q_j - dD/dq'_j (q' = dH/dp), and
  * L_from_H is filled when H is regular; constraints are QD_ERR_ARG. */
@@ -75,6 +82,26 @@ QD_API void qd_ham_free(qd_ham *h);
 QD_API const qd_expr *qd_legendre_inverse(qd_ctx *ctx, const qd_model *m);
 QD_API qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **pdef,
                                 const qd_expr **L);
+
+/* Before qd_eom_derive, for a model whose L is not quadratic in the
+ * velocities: QD_ERR_SINGULAR, the message naming the coordinate, when its
+ * Hessian d^2L/dq'dq' is singular for a reason that can be named (L linear
+ * in a velocity: "L is linear in x': ..."; L homogeneous of degree 1 in them
+ * beyond linear terms, so H = sum p q' - L does not depend on p: Desloge
+ * Appendix 20).  QD_OK otherwise, which does not prove the Hessian regular;
+ * quadratic L and models given by H are always QD_OK (their own checks
+ * speak for them). */
+QD_API qd_status qd_ham_regular(qd_ctx *ctx, const qd_model *m);
+
+/* The velocities at a point for h->implicit (and any h): Newton's method on
+ * p = dL/dq' (pdef), the Jacobian d^2L/dq'dq'.  syms/vals (nsyms) give the
+ * coordinates, momenta, t and parameters; values given for the velocities
+ * are the first guess (else 0).  qd_out receives h->n velocities.
+ * QD_ERR_NUMERIC when it does not converge, QD_ERR_SINGULAR when the
+ * Hessian is singular on the way, message in the context. */
+QD_API qd_status qd_ham_velocities_at(qd_ctx *ctx, const qd_ham *h, size_t nsyms,
+                                      const qd_expr *const *syms, const double *vals,
+                                      double *qd_out);
 
 #ifdef __cplusplus
 }

@@ -2,8 +2,8 @@
  * src/mech/hamilton.c - the Legendre transform: momenta, velocities in
  * terms of the momenta, H and Hamilton's equations (qdot/hamilton.h).
  *
- * p = M q' + b is read off dL/dq' with qd_linear_coeffs (so a Lagrangian
- * that is not quadratic in the velocities is refused there), and solved by
+ * p = M q' + b is read off dL/dq' with qd_linear_coeffs (a Lagrangian that
+ * is not quadratic in the velocities goes to legendre_family.c), and solved by
  * Gaussian elimination with pivots that simplify to nonzero: M is small
  * and often diagonal, so plain elimination beats a fraction-free scheme.
  */
@@ -65,46 +65,31 @@ static qd_status momenta(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham
     return QD_OK;
 }
 
-/* The velocity that enters p = dL/dq' nonlinearly: one whose derivative
- * still holds a velocity. */
-static size_t nonlinear_velocity(qd_ctx *ctx, const qd_eom *e, const qd_expr *p, size_t j) {
-    for (size_t k = 0; k < e->n; k++) {
-        const qd_expr *d = qd_diff(ctx, p, e->qd[k]);
-        for (size_t i = 0; d && i < e->n; i++)
-            if (qd_has(d, e->qd[i]))
-                return k;
-    }
-    return j;
-}
-
-/* The momenta must be linear in the velocities to be solved for them: say
- * so at the statement giving L (stmt: "L" or "T"), naming the velocity. */
-static void not_quadratic(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j,
-                          const char *stmt) {
-    size_t k = nonlinear_velocity(ctx, e, h->pdef[j], j);
-    char hint[256];
-    qd__ctx_recover(ctx); /* the kernel's "not linear in x'" says neither where nor why */
-    qd_ctx_error(ctx, QD_ERR_NONLINEAR, "the momentum of %s is not linear in the velocities "
-                 "(L is not quadratic in them)", qd_expr_name(e->q[j]));
-    snprintf(hint, sizeof hint, "%s enters %s beyond its square, so the momenta do not "
-             "determine the velocities; a Hamiltonian needs %s quadratic in the velocities",
-             qd_expr_name(e->qd[k]), stmt, stmt);
-    qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, k, stmt, QD_REASON_NOT_QUADRATIC, hint);
-}
-
 /* Row j of [M | p - b] from p_j = dL/dq'_j. */
-static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, const qd_expr **A,
-                     const char *stmt) {
+static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, const qd_expr **A) {
     const qd_expr *b = NULL;
     qd_status st = qd_linear_coeffs(ctx, h->pdef[j], e->n, e->qd, A, &b);
-    if (st == QD_ERR_NONLINEAR) {
-        not_quadratic(ctx, e, h, j, stmt);
-        return st;
-    }
     if (st != QD_OK)
         return st;
     A[e->n] = qd_sub(ctx, h->p[j], b);
     return A[e->n] ? QD_OK : qd_ctx_status(ctx);
+}
+
+/* L not quadratic in q' (legendre_family.c): a singular Hessian we can
+ * name, else the closed form, else q' kept implicit. */
+static qd_status nonquadratic(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char *stmt) {
+    if (!qd__ctx_recover(ctx))
+        return QD_ERR_NOMEM;
+    qd_status st = qd__legendre_singular(ctx, h->pdef, e->n, e->q, e->qd, stmt);
+    if (st == QD_OK)
+        st = qd__legendre_family(ctx, e->L, e->n, e->qd, h->p, h->vel, &h->H);
+    if (st != QD_ERR_NONLINEAR)
+        return st;
+    h->H = NULL;
+    h->implicit = true;
+    for (size_t j = 0; j < e->n; j++)
+        h->vel[j] = e->qd[j];
+    return QD_OK;
 }
 
 static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char *stmt) {
@@ -114,8 +99,12 @@ static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char 
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
     for (size_t j = 0; st == QD_OK && j < n; j++)
-        st = row(ctx, e, h, j, A + j * (n + 1), stmt);
+        st = row(ctx, e, h, j, A + j * (n + 1));
     size_t bad = 0;
+    if (st == QD_ERR_NONLINEAR) {
+        qd__free(A);
+        return nonquadratic(ctx, e, h, stmt);
+    }
     if (st == QD_OK)
         st = qd__gauss_solve(ctx, n, A, h->vel, &bad);
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
@@ -181,7 +170,7 @@ static qd_status derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
     qd_status st = momenta(ctx, m, e, h);
     if (st == QD_OK)
         st = velocities(ctx, e, h, qd_model_lagrangian_given(m) ? "L" : "T");
-    if (st == QD_OK)
+    if (st == QD_OK && !h->H) /* the closed forms of legendre_family.c come with H */
         st = hamiltonian(ctx, e, h);
     if (st == QD_OK)
         st = equations(ctx, m, e, h);

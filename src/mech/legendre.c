@@ -7,8 +7,9 @@
  *     L(q, q', t) = sum_j p_j q'_j - H      (p substituted)
  *
  * When H is quadratic in p, dH/dp = W p + c is linear (W = d^2H/dp dp) and
- * the solve is exact elimination; otherwise there is no closed form and
- * the answer is QD_ERR_NONLINEAR.  A singular W (H = p_x: q' = 1 says
+ * the solve is exact elimination; H = F(p^T W p) + b.p + H0 is inverted as
+ * legendre_family.c inverts L (the relativistic particle); otherwise there
+ * is no closed form and the answer is QD_ERR_NONLINEAR.  A singular W (H = p_x: q' = 1 says
  * nothing about p_x) means H is not regular and has no Lagrangian at all,
  * though Hamilton's equations are still fine: qd_ham_derive keeps them and
  * only leaves L_from_H empty.
@@ -89,27 +90,40 @@ static void hsys_free(hsys *s) {
     qd__free(s->p);
 }
 
-/* Row j of [W | q'_j - c_j] from q'_j = dH/dp_j = sum_k W_jk p_k + c_j. */
+static void not_quadratic(qd_ctx *ctx, const hsys *s, size_t j) {
+    qd_ctx_error(ctx, QD_ERR_NONLINEAR, "H is not quadratic in the momenta: dH/d%s is not linear "
+                 "in them, and H is not F(p^T W p) + b.p + H0 with q' = dH/dp solvable in closed "
+                 "form, so there is no closed-form Lagrangian", qd_expr_name(s->p[j]));
+    qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, j, "H", QD_REASON_NOT_QUADRATIC,
+                       "the equations of motion need the Lagrangian, which needs q' = dH/dp "
+                       "solved for p; Hamilton's equations are still given by "
+                       "`qdot hamiltonian`");
+}
+
+/* Row j of [W | q'_j - c_j] from q'_j = dH/dp_j = sum_k W_jk p_k + c_j;
+ * QD_ERR_NONLINEAR with no message when dH/dp_j is not linear. */
 static qd_status row(qd_ctx *ctx, const hsys *s, const qd_expr *H, size_t j, const qd_expr **A) {
     const qd_expr *c = NULL, *v = qd_simplify(ctx, qd_diff(ctx, H, s->p[j]));
     if (!v)
         return qd_ctx_status(ctx);
     qd_status st = qd_linear_coeffs(ctx, v, s->n, s->p, A, &c);
-    if (st == QD_ERR_NONLINEAR) {
-        qd__ctx_recover(ctx);
-        qd_ctx_error(ctx, st, "H is not quadratic in the momenta: dH/d%s is not linear in them, "
-                              "so q' = dH/dp cannot be solved for the momenta in closed form "
-                              "(no Lagrangian)", qd_expr_name(s->p[j]));
-        qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, j, "H", QD_REASON_NOT_QUADRATIC,
-                           "the equations of motion need the Lagrangian, which needs H "
-                           "quadratic in the momenta; Hamilton's equations are still given by "
-                           "`qdot hamiltonian`");
-        return st;
-    }
+    if (st == QD_ERR_NONLINEAR)
+        return qd__ctx_recover(ctx) ? st : QD_ERR_NOMEM;
     if (st != QD_OK)
         return st;
     A[s->n] = qd_sub(ctx, s->qd[j], c);
     return A[s->n] ? QD_OK : qd_ctx_status(ctx);
+}
+
+/* H not quadratic in p: the same family as for L, read the other way
+ * (legendre_family.c with the roles of q' and p exchanged: H =
+ * sqrt(m^2 c^4 + c^2 p^2) + V gives L = -m c^2 sqrt(1 - q'^2/c^2) - V). */
+static qd_status inverse_family(qd_ctx *ctx, const hsys *s, const qd_expr *H, size_t j,
+                                const qd_expr **pdef, const qd_expr **L) {
+    qd_status st = qd__legendre_family(ctx, H, s->n, s->p, s->qd, pdef, L);
+    if (st == QD_ERR_NONLINEAR)
+        not_quadratic(ctx, s, j);
+    return st;
 }
 
 static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd_expr **pdef,
@@ -122,10 +136,15 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
         return QD_ERR_NOMEM;
     }
     qd_status st = QD_OK;
-    for (size_t j = 0; st == QD_OK && j < n; j++)
+    size_t j = 0;
+    for (; st == QD_OK && j < n; j++)
         st = row(ctx, s, H, j, A + j * (n + 1));
     if (st == QD_OK)
         st = qd__gauss_solve(ctx, n, A, pdef, &bad);
+    else if (st == QD_ERR_NONLINEAR) {
+        qd__free(A);
+        return inverse_family(ctx, s, H, j - 1, pdef, L);
+    }
     qd__free(A);
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK) {
         qd_ctx_error(ctx, st, "d^2H/dp^2 is singular (H is not regular): q' = dH/dp does not "
@@ -138,8 +157,8 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
     if (st != QD_OK)
         return st;
     const qd_expr *sum = qd_neg(ctx, H);
-    for (size_t j = 0; j < n; j++)
-        sum = qd_add(ctx, sum, qd_mul(ctx, s->p[j], s->qd[j]));
+    for (size_t i = 0; i < n; i++)
+        sum = qd_add(ctx, sum, qd_mul(ctx, s->p[i], s->qd[i]));
     *L = qd_simplify(ctx, qd_subs(ctx, sum, n, s->p, pdef));
     return *L ? QD_OK : qd_ctx_status(ctx);
 }

@@ -28,7 +28,7 @@ MODELS = {
     'ff.qd': b"coordinates x\xff\nT = x'^2/2\n",
     'theta.qd': "coordinates x\nparameters θ = 1\nT = x'^2/2\n".encode(),
     'unknown.qd': b"coordinates x\nT = x'^2/2\nfrobnicate x\n",
-    'quartic_l.qd': b"coordinates x, y\nL = x'^2/2 + y'^4/4 - x^2\n",
+    'linear_l.qd': b"coordinates y, x\nL = x'*y - y'^4/4\n",
     'no.qd': b"coordinates x, y, z\nT = (x'^2 + y'^2 + z'^2)/2\nconstraint no: z = 0\n"
              b"constraint a: x' + y' = 0\nconstraint b: x' + y' = 1\n",
     'ho.qd': b"coordinates x\nparameters m = 2, k = 3\nT = m/2*x'^2\nV = k/2*x^2\n",
@@ -55,10 +55,12 @@ CASES = [
     (['eom', 'unknown.qd'], USAGE,
      ["unknown.qd:3:1: error: unknown statement 'frobnicate'", '  ^~~~~~~~~~\n',
       'hint: a statement starts with a keyword', 'rolls', 'reaction']),
-    # was: "qdot: error: not linear in y'" with no place and no hint
-    (['hamiltonian', 'quartic_l.qd'], USAGE,
-     ['quartic_l.qd:2:1: error: the momentum of y is not linear in the velocities',
-      "\n  L = x'^2/2 + y'^4/4 - x^2\n  ^\n", "hint: y' enters L beyond its square"]),
+    # was: "qdot: error: not linear in y'" with no place and no hint; a quartic L now has an
+    # implicit H, and an L linear in a velocity is the error, at the coordinate
+    (['hamiltonian', 'linear_l.qd'], USAGE,
+     ["linear_l.qd:1:16: error: L is linear in x': its Hessian in the velocities is singular, "
+      "so there is no Hamiltonian (p_x = y does not depend on x')",
+      "\n  coordinates y, x\n                 ^\n", "hint: a Hamiltonian needs"]),
     # was: the caret under `no`, whose name occurs in "no motion satisfies them all"
     (['eom', 'no.qd'], USAGE,
      ['no.qd:4:12: error: constraints a and b are inconsistent',

@@ -18,9 +18,11 @@
  * - T = x'^2/2 with coordinates x, y: M = diag(1, 0) is singular.
  * - H = p^4/4 + V: dH/dp = p^3 cannot be solved for p in closed form by a
  *   linear solve, so the inverse Legendre transform has no quadratic L.
- * - L = x'^2/2 + y'^4/4 - x^2: p_y = y'^3 is not linear in y', so the
- *   Legendre transform to H needs L quadratic in the velocities (Goldstein
- *   sec. 8.1): the error is about L, and the velocity named is y'.
+ * - L = x'^2/2 + y'^4/4 - x^2: p_y = y'^3 is not linear in y'; that is no
+ *   longer an error (H is kept implicit, q' from Newton's method), but
+ *   L = x' y - y'^4/4 is linear in x', so its Hessian in the velocities is
+ *   singular and there is no Hamiltonian (Desloge Appendix 22,
+ *   seed-desloge-D.md P13): the error is about the coordinate x.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -143,7 +145,8 @@ static void hamiltonian_not_quadratic_in_p(void **state) {
 }
 
 /* `qdot hamiltonian` on L quartic in y': was "not linear in y'" with no
- * place and no hint. */
+ * place and no hint; now H is implicit, and L linear in x' is the error,
+ * located at the coordinate. */
 static void lagrangian_not_quadratic(void **state) {
     (void)state;
     qd_ctx *ctx = qd_ctx_new();
@@ -151,19 +154,22 @@ static void lagrangian_not_quadratic(void **state) {
     qd_model *m = parse_ok(ctx, text);
     qd_eom *e = qd_eom_derive(ctx, m);
     assert_non_null(e); /* 3 y'^2 y'' = 0: still linear in the accelerations */
-    assert_null(qd_ham_derive(ctx, m, e));
-    qd_diag d = *qd_ctx_diag(ctx);
-    assert_int_equal(d.status, QD_ERR_NONLINEAR);
-    assert_int_equal(d.subject, QD_SUBJECT_STATEMENT);
-    assert_string_equal(d.name, "L");
-    assert_int_equal(d.index, 1); /* y, whose velocity enters beyond the square */
-    assert_int_equal(d.reason, QD_REASON_NOT_QUADRATIC);
-    assert_non_null(strstr(d.hint, "y'"));
-    assert_true(qd_model_locate(m, &d));
-    assert_int_equal(d.offset, at(text, "L ="));
-    assert_int_equal(d.line, 2);
-    assert_int_equal(d.col, 1);
+    qd_ham *h = qd_ham_derive(ctx, m, e);
+    assert_non_null(h);
+    assert_true(h->implicit);
+    qd_ham_free(h);
     qd_eom_free(e);
+    qd_model_free(m);
+    text = "coordinates y, x\nL = x'*y - y'^4/4\n";
+    m = parse_ok(ctx, text);
+    assert_int_equal(qd_ham_regular(ctx, m), QD_ERR_SINGULAR);
+    qd_diag d = *qd_ctx_diag(ctx);
+    assert_int_equal(d.subject, QD_SUBJECT_COORD);
+    assert_int_equal(d.index, 1);
+    assert_int_equal(d.reason, QD_REASON_SINGULAR_MASS);
+    assert_non_null(strstr(d.hint, "x'"));
+    assert_true(qd_model_locate(m, &d));
+    assert_int_equal(d.offset, at(text, "x\n"));
     qd_model_free(m);
     qd_ctx_free(ctx);
 }
