@@ -37,6 +37,9 @@ of the code under test:
     stable; the period from the events x = 0, x' > 0 against the quadrature of
     the energy integral (T25: 7.38068454944 at m = k = c = a = 1) and against
     2 pi sqrt(m/k) when c is large;
+  - `qdot hamiltonian`'s H(q, p), evaluated at p = m gamma v + e A from the
+    rows of `simulate` (the cyclotron off centre at 0.9 c; the eccentric Kepler
+    orbit), stays at its initial value gamma m c^2 + U;
   - a state with |v| >= c: `qdot simulate` exits 1 naming the failure (the
     equations are not finite there), prints no NaN row, for each method.
 Prints "N passed, N failed"; exit 1 on failure.
@@ -120,7 +123,63 @@ def cyclotron_case(qdot, name, m, e, B, c, v0, turns=6):
     return ts, period
 
 
+def qdot_H(qdot, model, coords, pars):
+    """qdot's H(q, p) from `qdot hamiltonian --format sympy`, as a float function."""
+    rc, out, err = run(qdot, "hamiltonian", str(EX / model), "--format", "sympy")
+    check(f"{model} hamiltonian rc", rc == 0, err)
+    if rc:
+        return None
+    ns = {}
+    exec(out, ns)  # qdot's own sympy output: plain assignments of SymPy objects
+    H = ns["H"].subs({ns[q](ns["t"]): sp.Symbol(q) for q in coords})
+    args = [sp.Symbol(a) for a in (*coords, *(f"p_{q}" for q in coords))]
+    H = H.subs({ns[k]: v for k, v in pars.items()})
+    return sp.lambdify(args, H, "math")
+
+
+def cyclotron_hamiltonian(qdot):
+    """H along `simulate`: p = m gamma v + e A (A = (B/2)(-y, x)) from each row, so
+    qdot's H(q, p) = sqrt(m^2 c^4 + c^2 (p - e A)^2) stays gamma m c^2 (Desloge ch. 93)."""
+    m, e, B, c, v0 = 1.3, 0.7, 2.5, 1.9, 0.9 * 1.9
+    H = qdot_H(qdot, "relativistic_cyclotron.qd", ("x", "y"), dict(m=m, e=e, B=B, c=c))
+    rows = simulate(qdot, "relativistic_cyclotron.qd", "--t-end", "30", "--rtol", "1e-13",
+                    "--atol", "1e-15", "--initial", f"x=0.3, y=-0.2, x'={v0!r}, y'=0",
+                    *params(m=m, e=e, B=B, c=c))
+    if H is None or rows is None:
+        return
+    g = 1 / math.sqrt(1 - (v0 / c) ** 2)
+    worst = 0.0
+    for r in rows:
+        gam = 1 / math.sqrt(1 - (r["x'"] ** 2 + r["y'"] ** 2) / c ** 2)
+        px = m * gam * r["x'"] - e * B * r["y"] / 2
+        py = m * gam * r["y'"] + e * B * r["x"] / 2
+        worst = max(worst, rel(H(r["x"], r["y"], px, py), g * m * c * c))
+    check("cyclotron H conserved = gamma m c^2", worst < 1e-11, f"{worst:.3g}")
+
+
+def kepler_hamiltonian(qdot):
+    """Kepler: H = sqrt(m^2 c^4 + c^2 (p_r^2 + p_th^2/r^2)) - k/r along `simulate`,
+    p_r = m gamma r', p_th = m gamma r^2 th' (T23), conserved at its initial value."""
+    m, c, k = 1.3, 1.7, 2.0
+    H = qdot_H(qdot, "relativistic_kepler.qd", ("r", "th"), dict(m=m, c=c, k=k))
+    rows = simulate(qdot, "relativistic_kepler.qd", "--t-end", "100", "--rtol", "1e-13",
+                    "--atol", "1e-15", "--initial", "r=2, th=0, r'=0, th'=0.25",
+                    *params(m=m, c=c, k=k))
+    if H is None or rows is None:
+        return
+    vals = []
+    for r in rows:
+        gam = 1 / math.sqrt(1 - (r["r'"] ** 2 + (r["r"] * r["th'"]) ** 2) / c ** 2)
+        vals.append(H(r["r"], r["th"], m * gam * r["r'"], m * gam * r["r"] ** 2 * r["th'"]))
+    g0 = 1 / math.sqrt(1 - (2 * 0.25 / c) ** 2)
+    E0 = g0 * m * c * c - k / 2
+    worst = max(rel(v, E0) for v in vals)
+    check("kepler H conserved = gamma m c^2 - k/r", worst < 1e-11, f"{worst:.3g}")
+
+
 def cyclotron(qdot):
+    cyclotron_hamiltonian(qdot)
+    kepler_hamiltonian(qdot)
     cyclotron_case(qdot, "cyclotron", 1, 1, 1, 1, 0.6)
     cyclotron_case(qdot, "cyclotron fast", 1.3, 0.7, 2.5, 1.9, 0.99 * 1.9)
     # c -> large: the Newtonian cyclotron period 2 pi m/(e B)
