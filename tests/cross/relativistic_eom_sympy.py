@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""tests/cross/relativistic_sympy.py - the relativistic examples' equations against SymPy.
+"""tests/cross/relativistic_eom_sympy.py - the relativistic examples' equations against SymPy.
 
-    python3 tests/cross/relativistic_sympy.py --build BUILD_DIR
+    python3 tests/cross/relativistic_eom_sympy.py --build BUILD_DIR
 
 For each examples/relativistic_*.qd, SymPy builds the Lagrangian itself from
 Desloge ch. 92 Thm 1, L = -m c^2 sqrt(1 - v^2/c^2) - U (seed
