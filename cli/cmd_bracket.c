@@ -106,6 +106,12 @@ int cli_phase_ham(cli_phase *ph) {
         return cli_eom_derive_error(ph->ctx, ph->mf);
     if (!(ph->h = qd_ham_derive(ph->ctx, ph->mf->model, ph->e)))
         return cli_eom_derive_error(ph->ctx, ph->mf);
+    if (ph->h->implicit) { /* dH/dq at fixed p would need dq'/dq */
+        cli_diag_error("brackets need H in closed form, but L is not quadratic in the velocities "
+                       "and p = dL/dq' has no closed-form solution for q' here (H is defined "
+                       "implicitly; `qdot hamiltonian --at` evaluates it)");
+        return QD_EXIT_FAIL;
+    }
     for (size_t j = 0; j < ph->n; j++)
         if (ph->h->p[j] != ph->p[j]) {
             cli_diag_error("the Hamiltonian names its momentum %s, not %s",

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "base/mem.h"
+#include "mech/legendre.h"
 #include "num/num.h"
 #include "qdot/hamilton.h"
 #include "qdot/mech.h"
@@ -310,7 +311,12 @@ static qd_ham *hamiltonian(qd_ctx *ctx, const qd_model *m, qd_eom **e) {
     *e = qd_model_hamiltonian_given(m) ? NULL : qd_eom_derive(ctx, m);
     if (!*e && !qd_model_hamiltonian_given(m))
         return NULL;
-    return qd_ham_derive(ctx, m, *e);
+    qd_ham *h = qd_ham_derive(ctx, m, *e);
+    if (qd__ham_closed(ctx, h, "the action variables") != QD_OK) {
+        qd_ham_free(h);
+        return NULL;
+    }
+    return h;
 }
 
 /* One degree of freedom is separated here; more by qd_hj_derive.  Forces

@@ -203,3 +203,12 @@ qd_status qd_ham_velocities_at(qd_ctx *ctx, const qd_ham *h, size_t nsyms,
     qd__free(p);
     return st;
 }
+
+qd_status qd__ham_closed(qd_ctx *ctx, const qd_ham *h, const char *what) {
+    if (!h || !h->implicit)
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_NONLINEAR, "%s needs H in closed form, but L is not quadratic in "
+                 "the velocities and p = dL/dq' has no closed-form solution for q' here (H is "
+                 "defined implicitly; `qdot hamiltonian --at` evaluates it)", what);
+    return QD_ERR_NONLINEAR;
+}

@@ -144,9 +144,8 @@ static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t 
         return QD_ERR_NOMEM;
     const qd_expr *rest = NULL;
     qd_status st = qd_linear_coeffs(ctx, r->pdef[i], e->n, e->qd, co, &rest);
-    if (st == QD_ERR_NONLINEAR)
-        qd_ctx_error(ctx, st, "the momentum of %s is not linear in the velocities "
-                              "(L is not quadratic in them)", qd_expr_name(r->ign[i]));
+    if (st == QD_ERR_NONLINEAR && !qd__ctx_recover(ctx))
+        st = QD_ERR_NOMEM;
     if (st == QD_OK) {
         for (size_t k = 0; k < r->nkeep; k++)
             rest = qd_add(ctx, rest, qd_mul(ctx, co[r->keep_index[k]], r->keepd[k]));
@@ -159,7 +158,26 @@ static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t 
     return st;
 }
 
-static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
+/* L not quadratic in the ignored velocities: the transform restricted to
+ * them (legendre_family.c, the kept velocities passive), which gives R
+ * itself: the relativistic particle in a central field, ignoring phi. */
+static qd_status ignored_family(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr **R) {
+    const qd_expr **cd = arr(ctx, r->nign);
+    if (!cd)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < r->nign; i++)
+        cd[i] = e->qd[r->ign_index[i]];
+    qd_status st = qd__legendre_family(ctx, e->L, r->nign, cd, r->beta, r->ignvel, R);
+    qd__free(cd);
+    if (st == QD_ERR_NONLINEAR)
+        qd_ctx_error(ctx, st, "the momentum of %s is not linear in the velocities, and L is "
+                              "not F(c'^T G c') + a.c' + L0 in the ignored velocities c' with a "
+                              "closed-form inverse: no Routhian in closed form",
+                     qd_expr_name(r->ign[0]));
+    return st;
+}
+
+static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr **R) {
     size_t ni = r->nign, w = ni + 1;
     const qd_expr **A = arr(ctx, ni * w);
     if (!A)
@@ -170,11 +188,14 @@ static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
         snprintf(name, sizeof name, "p_%s", qd_expr_name(r->ign[i]));
         r->beta[i] = qd_symbol(ctx, name);
         r->pdef[i] = qd_simplify(ctx, qd_diff(ctx, e->L, e->qd[r->ign_index[i]]));
-        st = r->beta[i] && r->pdef[i] ? momentum_row(ctx, e, r, i, A + i * w)
-                                       : qd_ctx_status(ctx);
+        st = r->beta[i] && r->pdef[i] ? QD_OK : qd_ctx_status(ctx);
     }
+    for (size_t i = 0; st == QD_OK && i < ni; i++)
+        st = momentum_row(ctx, e, r, i, A + i * w);
     size_t bad;
-    if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, r->ignvel, &bad)) == QD_ERR_SINGULAR)
+    if (st == QD_ERR_NONLINEAR)
+        st = ignored_family(ctx, e, r, R);
+    else if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, r->ignvel, &bad)) == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "the momenta of the ignored coordinates do not determine their "
                               "velocities (no pivot for %s')", qd_expr_name(r->ign[bad]));
     qd__free(A);
@@ -196,15 +217,44 @@ static const qd_expr *reduce(qd_ctx *ctx, const qd_eom *e, const qd_routh *r,
     return y;
 }
 
-static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
+/* R not polynomial in the kept velocities (from ignored_family): R0 = R at
+ * k' = 0, R1 its linear part there.  The Jacobi integral of -R is
+ * h = R - sum k' dR/dk', which is R0 - R2 when R is quadratic; R2 is
+ * defined as R0 - h here so that it keeps that role (the part of R that
+ * enters the energy as kinetic), and R = R2 + R1 + R0 no longer holds. */
+static qd_status by_value(qd_ctx *ctx, qd_routh *r, const qd_expr *s) {
+    const qd_expr **zero = arr(ctx, r->nkeep);
+    if (!zero)
+        return QD_ERR_NOMEM;
+    for (size_t k = 0; k < r->nkeep; k++)
+        zero[k] = qd_int(ctx, 0);
+    const qd_expr *R1 = qd_int(ctx, 0), *kdR = qd_int(ctx, 0);
+    for (size_t k = 0; k < r->nkeep; k++) {
+        const qd_expr *d = qd_diff(ctx, s, r->keepd[k]);
+        R1 = qd_add(ctx, R1, qd_mul(ctx, qd_subs(ctx, d, r->nkeep, r->keepd, zero), r->keepd[k]));
+        kdR = qd_add(ctx, kdR, qd_mul(ctx, r->keepd[k], d));
+    }
+    r->R = s;
+    r->R0 = qd_simplify(ctx, qd_subs(ctx, s, r->nkeep, r->keepd, zero));
+    r->R1 = qd_simplify(ctx, R1);
+    r->Veff = r->R0;
+    r->h = qd_simplify(ctx, qd_sub(ctx, s, kdR));
+    r->R2 = qd_simplify(ctx, qd_sub(ctx, r->R0, r->h));
+    qd__free(zero);
+    return r->R2 && r->h ? QD_OK : qd_ctx_status(ctx);
+}
+
+static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr *Rfam) {
     const qd_expr *s = qd_neg(ctx, e->L);
     for (size_t i = 0; i < r->nign; i++)
         s = qd_add(ctx, s, qd_mul(ctx, r->beta[i], e->qd[r->ign_index[i]]));
-    s = reduce(ctx, e, r, s);
+    s = Rfam ? Rfam : reduce(ctx, e, r, s);
     if (!s)
         return qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
     qd__vsum v;
     qd_status st = qd__by_velocity(ctx, s, r->nkeep, r->keepd, &v);
+    if (Rfam && (st == QD_ERR_NONLINEAR || (st == QD_OK && v.top > 2)))
+        return by_value(ctx, r, s);
     if (st == QD_OK && v.top > 2)
         st = QD_ERR_NONLINEAR;
     if (st == QD_ERR_NONLINEAR)
@@ -340,11 +390,12 @@ qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming the Routhian");
         return NULL;
     }
+    const qd_expr *Rfam = NULL; /* R from legendre_family.c when L is not quadratic */
     qd_status st = split(ctx, m, e, r, ign);
     if (st == QD_OK)
-        st = ignored_velocities(ctx, e, r);
+        st = ignored_velocities(ctx, e, r, &Rfam);
     if (st == QD_OK)
-        st = routhian(ctx, e, r);
+        st = routhian(ctx, e, r, Rfam);
     if (st == QD_OK)
         st = gyroscopic(ctx, r);
     if (st == QD_OK)

@@ -254,6 +254,66 @@ static void test_implicit_quartic(void **state) {
     unload(&f);
 }
 
+/* Routh with phi ignored (seed-desloge-D.md T19): R = sqrt(1 - r'^2/c^2)
+ * sqrt(m^2 c^4 + c^2 p_phi^2/r^2) - k/r; at a state (r, r', phi') with
+ * p_phi = dL/dphi', the quadrature gives phi' back, the Jacobi integral of
+ * -R is the energy m gamma c^2 - k/r, and the reduced equation's r'' is the
+ * full equations' r''. */
+static void test_routh_central(void **state) {
+    (void)state;
+    fix f = load("coordinates r, phi\nparameters m = 1, c = 1, k = 0.1\n"
+                 "L = -m*c^2*sqrt(1 - (r'^2 + r^2*phi'^2)/c^2) + k/r\n");
+    const qd_expr *phi = qd_lookup(f.ctx, "phi");
+    qd_routh *R = qd_routh_derive(f.ctx, f.m, f.e, 1, &phi);
+    if (!R)
+        fail_msg("qd_routh_derive: %s", qd_ctx_message(f.ctx));
+    const qd_expr *want = read_expr(f.ctx, "sqrt(1 - r'^2/c^2)*sqrt(m^2*c^4 + c^2*p_phi^2/r^2) - k/r");
+    const qd_expr *E = read_expr(f.ctx, "m*c^2/sqrt(1 - (r'^2 + r^2*phi'^2)/c^2) - k/r");
+    for (int k = 0; k < NPOINTS; k++) {
+        point pt = slow_state(&f);
+        set(&pt, R->beta[0], val(f.ctx, &pt, R->pdef[0]));
+        assert_close(val(f.ctx, &pt, R->R), val(f.ctx, &pt, want), 1e-12, "R");
+        assert_close(val(f.ctx, &pt, R->ignvel[0]), val(f.ctx, &pt, f.e->qd[1]), 1e-12,
+                     "phi' from p_phi");
+        assert_close(val(f.ctx, &pt, R->h), val(f.ctx, &pt, E), 1e-12, "h = m gamma c^2 - k/r");
+        double M[4], F[2];
+        for (size_t i = 0; i < 4; i++)
+            M[i] = val(f.ctx, &pt, f.e->M[i]);
+        for (size_t i = 0; i < 2; i++)
+            F[i] = val(f.ctx, &pt, f.e->f[i]);
+        double rdd = (F[0] * M[3] - M[1] * F[1]) / (M[0] * M[3] - M[1] * M[2]);
+        assert_close(val(f.ctx, &pt, R->f[0]) / val(f.ctx, &pt, R->M[0]), rdd, 1e-10,
+                     "reduced r''");
+    }
+    qd_routh_free(R);
+    unload(&f);
+}
+
+/* The inverse (Appendix 22, the involution): H = sqrt(m^2 c^4 + c^2 p^2) + V
+ * gives L = -m c^2 sqrt(1 - v^2/c^2) - V and p = m gamma v. */
+static void test_inverse_from_H(void **state) {
+    (void)state;
+    fix f = load("coordinates x, y\nparameters m = 1, c = 2, k = 1\nmomenta p_x, p_y\n"
+                 "H = sqrt(m^2*c^4 + c^2*(p_x^2 + p_y^2)) + k*(x^2 + y^2)/2\n");
+    assert_non_null(f.h);
+    if (!f.h->L_from_H)
+        fail_msg("no L: %s", f.h->L_why);
+    const qd_expr *L = read_expr(f.ctx, "-m*c^2*sqrt(1 - (x'^2 + y'^2)/c^2) - k*(x^2 + y^2)/2");
+    const qd_expr *px = read_expr(f.ctx, "m*x'/sqrt(1 - (x'^2 + y'^2)/c^2)");
+    for (int k = 0; k < NPOINTS; k++) {
+        point pt = {.n = 0};
+        for (size_t j = 0; j < 2; j++) {
+            set(&pt, f.h->q[j], uniform(-1, 1));
+            set(&pt, f.h->qd[j], uniform(-0.6, 0.6));
+        }
+        add_syms(f.ctx, &pt, L, 1, 2);
+        assert_close(val(f.ctx, &pt, f.h->L_from_H), val(f.ctx, &pt, L), 1e-12, "L from H");
+        assert_close(val(f.ctx, &pt, f.h->pdef[0]), val(f.ctx, &pt, px), 1e-12, "p_x(x', y')");
+    }
+    assert_non_null(qd_legendre_inverse(f.ctx, f.m));
+    unload(&f);
+}
+
 static void assert_singular(const char *model, const char *want) {
     qd_ctx *ctx = qd_ctx_new();
     qd_diag d;
@@ -293,6 +353,8 @@ int main(void) {
         cmocka_unit_test(test_relativistic_polar),
         cmocka_unit_test(test_newtonian_limit),
         cmocka_unit_test(test_implicit_quartic),
+        cmocka_unit_test(test_routh_central),
+        cmocka_unit_test(test_inverse_from_H),
         cmocka_unit_test(test_singular),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
