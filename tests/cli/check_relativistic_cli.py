@@ -32,6 +32,8 @@ of the code under test:
   - the same model with th' maintained (`qdot stability --driven`): the circle
     r = l^2/(k m gamma) and the stiffness K0 of the radial equation, worked
     out by hand below;
+  - the same model with th ignored (`qdot stability --ignore th --momentum
+    p_th=l`, Routh): the circle and the radial frequency G th', G = 1/gamma;
   - examples/relativistic_oscillator.qd: `qdot equilibria` finds x = 0 only,
     `qdot modes` gives w^2 = k/m (exactly, and at other parameters) and says
     stable; the period from the events x = 0, x' > 0 against the quadrature of
@@ -375,6 +377,29 @@ def kepler_driven(qdot):
     check("kepler driven unstable", d["stable"] is False and d["secular"] is False, out)
 
 
+def kepler_ignore(qdot, m, c, k, l):
+    """th ignored at p_th = l (Routh's procedure on the non-quadratic L): the circle
+    has v = k/l (m gam v r = l and m gam v^2 r = k), r = l^2/(k m gam), and the
+    radial frequency is G th' with G = sqrt(1 - (k/(c l))^2) (= 1/gam here), from
+    the orbit equation u'' + G^2 u = const: the apsidal angle pi/G of
+    examples/relativistic_kepler.qd's header, seen as a small oscillation."""
+    v = k / l
+    g = 1 / math.sqrt(1 - (v / c) ** 2)
+    r = l * l / (k * m * g)
+    w_r = math.sqrt(1 - (k / (c * l)) ** 2) * v / r
+    rc, out, err = run(qdot, "stability", str(EX / "relativistic_kepler.qd"), "--ignore", "th",
+                       "--momentum", f"p_th={l!r}", *params(m=m, c=c, k=k), "--format", "json")
+    name = f"kepler ignore th, l = {l}"
+    check(f"{name} rc", rc == 0, err)
+    if rc:
+        return
+    d = json.loads(out)
+    check(f"{name}: circle r", rel(d["steady"]["r"], r) < 1e-9, str(d["steady"]))
+    check(f"{name}: radial frequency G th'", len(d["frequencies"]) == 1
+          and rel(d["frequencies"][0], w_r) < 1e-9, f"{d['frequencies']} vs {w_r!r}")
+    check(f"{name}: stable", d["stable"] is True, out)
+
+
 # ---- the oscillator -----------------------------------------------------------
 
 def oscillator_period(m, k, c, a):
@@ -464,6 +489,8 @@ def main():
     qdot = Path(args.build) / "qdot"
     for f in (cyclotron, e_field, kepler, kepler_driven, oscillator, beyond_c):
         f(qdot)
+    kepler_ignore(qdot, 1.0, 1.0, 0.1, 0.3)
+    kepler_ignore(qdot, 1.3, 1.7, 2.0, 2.0)
     print(f"{results['passed']} passed, {results['failed']} failed")
     sys.exit(1 if results["failed"] else 0)
 
