@@ -571,9 +571,11 @@ static qd_status singular(qd_sim *s, double t) {
     return QD_ERR_SINGULAR;
 }
 
-/* NaN or infinity in M or f is not a singular matrix: the state left the
- * domain of L (sqrt(1 - v^2/c^2) at |v| >= c, a log of a negative number),
- * and naming it singular would send the user after the wrong cause. */
+/* NaN or infinity in M is not a singular matrix: the state left the domain
+ * of L (sqrt(1 - v^2/c^2) at |v| >= c, a log of a negative number), and
+ * naming it singular would send the user after the wrong cause.  Only the
+ * matrices stop the run: a non-finite f gives non-finite accelerations, which
+ * an adaptive method rejects (erk.c) and retries with a smaller step. */
 qd_status qd__sim_not_finite(qd_sim *s, double t, const char *what) {
     qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                  "%s not finite at t = %.17g: the state is outside the domain of the "
@@ -589,11 +591,17 @@ static bool all_finite(const double *x, size_t n) {
     return true;
 }
 
+/* M and A of the last evaluation of the (q, q') system (acc_out: M, f, A, b). */
+static bool matrices_finite(const qd_sim *s) {
+    size_t n = s->n;
+    return all_finite(s->acc_out, n * n) && all_finite(s->acc_out + n * n + n, s->m * n);
+}
+
 /* Solve the n*n matrix M x = r in scratch; x may alias r. */
 static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *r, double *x) {
     size_t n = s->n;
-    if (!all_finite(M, n * n) || !all_finite(r, n))
-        return qd__sim_not_finite(s, t, "the mass matrix or the forces are");
+    if (!all_finite(M, n * n))
+        return qd__sim_not_finite(s, t, "the mass matrix is");
     for (size_t i = 0; i < n * n; i++)
         s->K[i] = M[i];
     for (size_t i = 0; x != r && i < n; i++)
@@ -626,9 +634,8 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         dy[i] = y[n + i];
     if (s->m) {
         if (!saddle_solve(s, t, y))
-            return all_finite(s->acc_out, s->acc_n)
-                       ? singular(s, t)
-                       : qd__sim_not_finite(s, t, "the equations of motion are");
+            return matrices_finite(s) ? singular(s, t)
+                                      : qd__sim_not_finite(s, t, "the mass matrix is");
         memcpy(dy + n, s->rhs, n * sizeof *dy);
         return QD_OK;
     }
