@@ -621,6 +621,9 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         if (st == QD_OK) {
             qd__aux_eval(s, it.t, it.y, qd__second(s, it.y, r.qd));
             ms.E0 = s->aux_out[0];
+            /* a start outside the model's domain would print a row of NaN */
+            if (!isfinite(ms.E0))
+                st = qd__sim_not_finite(s, it.t, "the energy at the initial state is");
         }
     }
     emitter em = {.sink = sink, .data = data};

@@ -18,9 +18,10 @@ typedef struct qd__event {
     size_t nguard;
 } qd__event;
 
-/* Inputs of every program: q (n), q' (n), t, parameters (np), and the
- * constraints' multipliers (m), which only outputs and events read: they are
- * solved for at the state when one of those uses them (aux_lambda).
+/* Inputs of every program: q (n), q' (n), t, parameters (np), and, in the
+ * (q, q') system, the constraints' multipliers (m) and the accelerations q''
+ * (n), which only outputs and events read: they are solved for at the state
+ * when one of those uses them (aux_lambda, aux_acc).
  *
  * Two parts.  The compiled system (programs, expressions, names, flags) is
  * immutable once qd_sim_compile has run: concurrent runs share it.  A run
@@ -62,7 +63,7 @@ struct qd_sim {
     char **out_name;
     const qd_expr **out_expr, **ev_expr, **guard_expr;
     qd__event *ev;
-    bool aux_ready, aux_lambda;
+    bool aux_ready, aux_lambda, aux_acc;
     /* column names of the fixed part: t, q, q', p_q, energy, res_c */
     char **names;
     size_t nnames;
@@ -164,6 +165,9 @@ qd_status qd__aux_compile(qd_sim *s);
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd);
 /* h and T at (q, q', t): the first two entries of the result. */
 const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd);
+/* Records "WHAT not finite at t" (QD_ERR_NUMERIC): the state left the domain of
+ * the model's expressions (|v| >= c under sqrt(1 - v^2/c^2), ...). */
+qd_status qd__sim_not_finite(qd_sim *s, double t, const char *what);
 /* Run p (compiled over s's inputs, work its workspace) at (q, q', t). */
 void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const double *q,
                  const double *qd, double *out);

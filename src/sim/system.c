@@ -84,9 +84,13 @@ qd_status qd__sim_inputs(qd_sim *s, const qd_expr *const *q, const qd_expr *cons
 
 static qd_status setup_inputs(qd_sim *s) {
     const qd_eom *e = s->e;
-    qd_status st = qd__sim_inputs(s, e->q, e->qd, s->m);
-    for (size_t k = 0; st == QD_OK && k < s->m; k++)
-        s->in_syms[2 * s->n + 1 + s->np + k] = e->con[k].lambda;
+    size_t n = s->n, m = s->m;
+    qd_status st = qd__sim_inputs(s, e->q, e->qd, m + n);
+    for (size_t k = 0; st == QD_OK && k < m; k++)
+        s->in_syms[2 * n + 1 + s->np + k] = e->con[k].lambda;
+    /* an output r'' or an event guard r'' > 0 (a perihelion) reads them */
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        s->in_syms[2 * n + 1 + s->np + m + j] = e->qdd[j];
     return st;
 }
 
@@ -416,11 +420,14 @@ qd_status qd__aux_compile(qd_sim *s) {
     if (s->se)
         qd__speeds_defs(s, k - 2, outs + 2);
     s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
-    s->aux_lambda = false;
+    s->aux_lambda = s->aux_acc = false;
     /* in speeds the multipliers are not inputs: compiling names them */
     for (size_t i = 2 + s->m; !s->se && i < k; i++)
         for (size_t c = 0; c < s->m; c++)
             s->aux_lambda = s->aux_lambda || qd_has(outs[i], s->cons[c].lambda);
+    /* nor, in speeds or an H model, the accelerations */
+    for (size_t i = 2 + s->m; !s->se && !s->hamilton && i < k; i++)
+        s->aux_acc = s->aux_acc || has_any(outs[i], s->n, s->e->qdd);
     /* outputs and events are needed at rows and event checks only; the
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
@@ -524,13 +531,15 @@ void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const doub
 
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
-    if (s->aux_lambda) {
-        /* the multipliers at this state: the saddle-point solve of the
-         * right-hand side; NaN where it is singular */
-        double *lambda = s->in + 2 * s->n + 1 + s->np;
+    if (s->aux_lambda || s->aux_acc) {
+        /* the multipliers and accelerations at this state: the saddle-point
+         * solve of the right-hand side; NaN where it is singular */
+        double *lambda = s->in + 2 * s->n + 1 + s->np, *qdd = lambda + s->m;
         bool ok = saddle_solve(s, t, NULL);
         for (size_t k = 0; k < s->m; k++)
             lambda[k] = ok ? s->rhs[s->n + k] : NAN;
+        for (size_t j = 0; j < s->n; j++)
+            qdd[j] = ok ? s->rhs[j] : NAN;
     }
     qd_prog_eval(s->aux, s->aux_w, s->in, s->aux_out);
 }
@@ -562,9 +571,37 @@ static qd_status singular(qd_sim *s, double t) {
     return QD_ERR_SINGULAR;
 }
 
+/* NaN or infinity in M is not a singular matrix: the state left the domain
+ * of L (sqrt(1 - v^2/c^2) at |v| >= c, a log of a negative number), and
+ * naming it singular would send the user after the wrong cause.  Only the
+ * matrices stop the run: a non-finite f gives non-finite accelerations, which
+ * an adaptive method rejects (erk.c) and retries with a smaller step. */
+qd_status qd__sim_not_finite(qd_sim *s, double t, const char *what) {
+    qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
+                 "%s not finite at t = %.17g: the state is outside the domain of the "
+                 "model's expressions (a speed at or above c in sqrt(1 - v^2/c^2), a "
+                 "square root or logarithm of a negative number)", what, t);
+    return QD_ERR_NUMERIC;
+}
+
+static bool all_finite(const double *x, size_t n) {
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(x[i]))
+            return false;
+    return true;
+}
+
+/* M and A of the last evaluation of the (q, q') system (acc_out: M, f, A, b). */
+static bool matrices_finite(const qd_sim *s) {
+    size_t n = s->n;
+    return all_finite(s->acc_out, n * n) && all_finite(s->acc_out + n * n + n, s->m * n);
+}
+
 /* Solve the n*n matrix M x = r in scratch; x may alias r. */
 static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *r, double *x) {
     size_t n = s->n;
+    if (!all_finite(M, n * n))
+        return qd__sim_not_finite(s, t, "the mass matrix is");
     for (size_t i = 0; i < n * n; i++)
         s->K[i] = M[i];
     for (size_t i = 0; x != r && i < n; i++)
@@ -597,7 +634,8 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         dy[i] = y[n + i];
     if (s->m) {
         if (!saddle_solve(s, t, y))
-            return singular(s, t);
+            return matrices_finite(s) ? singular(s, t)
+                                      : qd__sim_not_finite(s, t, "the mass matrix is");
         memcpy(dy + n, s->rhs, n * sizeof *dy);
         return QD_OK;
     }

@@ -4,8 +4,10 @@
  * Gauss-Legendre iteration, a mass matrix singular at a state, step size
  * underflow at a finite-time blow-up (x'' = 4 x^3 from x = 1, v = 0 reaches
  * infinity at t = integral dx / sqrt(2 (x^4 - 1)) < 1), a constraint that
- * projection cannot satisfy, and a missing step; and a stage that leaves
- * the equations' domain, which is not a failure but a step to shorten.
+ * projection cannot satisfy, a missing step, and a state outside the
+ * domain of L (a speed at or beyond c: not finite, not singular); and a
+ * stage that leaves the equations' domain, which is not a failure but a
+ * step to shorten.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -100,6 +102,20 @@ static void test_stage_out_of_domain(void **state) {
         assert_true(fabs(a[i] - b[i]) <= 1e-10 * (1e-3 + fabs(b[i])));
 }
 
+/* A start at the speed of light or beyond: sqrt(1 - x'^2) of the relativistic
+ * L (Desloge ch. 92) is NaN, which is not a singular matrix; every form (the
+ * Runge-Kutta pairs on (q, q'), Gauss-Legendre) names the domain. */
+static void test_beyond_c(void **state) {
+    (void)state;
+    static const char fast[] = "coordinates x\nL = -sqrt(1 - x'^2) + x\ninitial x' = 3/2\n";
+    static const char light[] = "coordinates x\nL = -sqrt(1 - x'^2) + x\ninitial x' = 1\n";
+    expect(fast, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0");
+    expect(fast, QD_SIM_DOPRI5, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0");
+    expect(fast, QD_SIM_GL4, 1, 0.1, 0, QD_ERR_NUMERIC, "not finite at t = 0");
+    expect(light, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0");
+    expect(light, QD_SIM_GL6, 1, 0.1, 0, QD_ERR_NUMERIC, "not finite at t = 0");
+}
+
 static void test_missing_step(void **state) {
     (void)state;
     expect(dp, QD_SIM_GL4, 1, 0, 0, QD_ERR_ARG, "--dt");
@@ -111,6 +127,7 @@ int main(void) {
         cmocka_unit_test(test_singular),      cmocka_unit_test(test_underflow),
         cmocka_unit_test(test_projection),    cmocka_unit_test(test_missing_step),
         cmocka_unit_test(test_stage_out_of_domain),
+        cmocka_unit_test(test_beyond_c),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
