@@ -5,6 +5,8 @@
  * effective potential V_eff = R0, the quadratures that give the ignored
  * velocities back, and the reduced equations M q'' = f of the kept
  * coordinates with their gyroscopic matrix.  --set gives parameters values.
+ * When the ignored velocities have no closed form (L not quadratic in them,
+ * outside legendre_family.c) R is kept implicit and said so (qdot/routh.h).
  */
 #include "cli.h"
 
@@ -104,19 +106,39 @@ static void matrix_lines(const routh_run *r, qd_buf *b, const char *name, const 
         }
 }
 
-static void write_lines(const routh_run *r, qd_buf *b) {
+static void write_head(const routh_run *r, qd_buf *b, const char *c) {
     const qd_routh *h = r->r;
-    const char *c = r->fmt == FMT_LATEX ? "% " : "";
     qd_buf_printf(b, "%smodel: %s\n%signored: ", c, r->mf.path, c);
     name_list(b, h->nign, h->ign);
     qd_buf_printf(b, " (momenta, constant: ");
     name_list(b, h->nign, h->beta);
     qd_buf_printf(b, ")\n%skept: ", c);
     name_list(b, h->nkeep, h->keep);
-    qd_buf_printf(b, "\n\n%smomenta and quadratures (the ignored velocities):\n", c);
+    qd_buf_puts(b, "\n\n");
+}
+
+/* The ignored velocities: quadratures, or for an implicit R what they solve. */
+static void write_momenta(const routh_run *r, qd_buf *b, const char *c) {
+    const qd_routh *h = r->r;
+    if (h->implicit)
+        qd_buf_printf(b, "%smomenta (the ignored velocities solve p = dL/dq' here: no closed "
+                         "form, so R is implicit):\n", c);
+    else
+        qd_buf_printf(b, "%smomenta and quadratures (the ignored velocities):\n", c);
     for (size_t i = 0; i < h->nign; i++) {
         line(r, b, h->beta[i], "", h->pdef[i]);
-        line(r, b, r->e->qd[h->ign_index[i]], "", h->ignvel[i]);
+        if (!h->implicit)
+            line(r, b, r->e->qd[h->ign_index[i]], "", h->ignvel[i]);
+    }
+}
+
+static void write_routhian(const routh_run *r, qd_buf *b, const char *c) {
+    const qd_routh *h = r->r;
+    if (h->implicit) {
+        qd_buf_printf(b, "\n%sRouthian R = sum p q' - L (Goldstein's sign), the ignored "
+                         "velocities standing for their solution:\n", c);
+        line(r, b, NULL, "R", h->R);
+        return;
     }
     qd_buf_printf(b, "\n%sRouthian R = sum p q' - L (Goldstein's sign), by degree in the kept "
                      "velocities:\n", c);
@@ -126,20 +148,34 @@ static void write_lines(const routh_run *r, qd_buf *b) {
     line(r, b, NULL, "R0", h->R0);
     qd_buf_printf(b, "\n%seffective potential V_eff = R0:\n", c);
     line(r, b, NULL, "V_eff", h->Veff);
-    qd_buf_printf(b, "\n%sreduced equations M q'' = f (Lagrange's equations of -R; M is "
-                     "symmetric: entries with j <= k):\n", c);
+}
+
+static void write_equations(const routh_run *r, qd_buf *b, const char *c) {
+    const qd_routh *h = r->r;
+    qd_buf_printf(b, "\n%sreduced equations M q'' = f (Lagrange's equations of -R%s; M is "
+                     "symmetric: entries with j <= k):\n",
+                  c, h->implicit ? " at fixed p, the ignored accelerations from dp/dt = 0" : "");
     matrix_lines(r, b, "M", h->M, true);
     for (size_t k = 0; k < h->nkeep; k++) {
         qd_buf_printf(b, "  f[%s] = ", qd_expr_name(h->keep[k]));
         put(r, b, h->f[k]);
         qd_buf_puts(b, eol(r));
     }
-    if (h->nkeep > 1) {
+    if (h->nkeep > 1 && !h->implicit) {
         qd_buf_printf(b, "\n%sgyroscopic matrix G (skew; f contains G q'):\n", c);
         matrix_lines(r, b, "G", h->G, false);
     }
+}
+
+static void write_lines(const routh_run *r, qd_buf *b) {
+    const qd_routh *h = r->r;
+    const char *c = r->fmt == FMT_LATEX ? "% " : "";
+    write_head(r, b, c);
+    write_momenta(r, b, c);
+    write_routhian(r, b, c);
+    write_equations(r, b, c);
     qd_buf_printf(b, "\n%sJacobi integral of -R:\n", c);
-    line(r, b, NULL, "R0 - R2", h->h);
+    line(r, b, NULL, h->implicit ? "R - sum q' dR/dq'" : "R0 - R2", h->h);
     qd_buf_printf(b, "%sconserved: %s\n", c,
                   h->conserved ? "yes" : "no (explicit t, generalized forces or dissipation)");
 }
@@ -195,7 +231,8 @@ static void sympy_functions(const routh_run *r, qd_buf *b) {
 
 /* Python defining routh_ignored, routh_kept, routh_momenta, routh_pdef,
  * routh_quadratures, routh_R, routh_R2, routh_R1, routh_R0, routh_V_eff,
- * routh_jacobi, routh_M, routh_f, routh_G (prefixed: a model's parameters
+ * routh_jacobi, routh_M, routh_f, routh_G (None for an implicit R, which
+ * adds routh_implicit = True) (prefixed: a model's parameters
  * are often named M, R or h); coordinates are functions of t. */
 static void write_sympy(const routh_run *r, qd_buf *b) {
     const qd_routh *h = r->r;
@@ -222,7 +259,10 @@ static void write_sympy(const routh_run *r, qd_buf *b) {
     const qd_expr *vals[] = {h->R, h->R2, h->R1, h->R0, h->Veff, h->h};
     for (int i = 0; i < 6; i++) {
         qd_buf_printf(b, "routh_%s = ", names[i]);
-        put(r, b, vals[i]);
+        if (vals[i])
+            put(r, b, vals[i]);
+        else /* an implicit R is not split by degree */
+            qd_buf_puts(b, "None");
         qd_buf_puts(b, "\n");
     }
     sympy_matrix(r, b, "routh_M", h->M);
@@ -232,7 +272,10 @@ static void write_sympy(const routh_run *r, qd_buf *b) {
         put(r, b, h->f[k]);
     }
     qd_buf_puts(b, "])\n");
-    sympy_matrix(r, b, "routh_G", h->G);
+    if (h->implicit)
+        qd_buf_puts(b, "routh_G = None\nrouth_implicit = True\n");
+    else
+        sympy_matrix(r, b, "routh_G", h->G);
     qd_buf_printf(b, "routh_conserved = %s\n", h->conserved ? "True" : "False");
 }
 
@@ -286,6 +329,10 @@ static void json_equations(const routh_run *r, cli_json *j) {
 static void json_quadratures(const routh_run *r, cli_json *j) {
     const qd_routh *h = r->r;
     cli_json_key(j, "quadratures");
+    if (h->implicit) { /* no closed form: the velocities solve momentum_definitions */
+        cli_json_null(j);
+        return;
+    }
     cli_json_begin_object(j);
     for (size_t i = 0; i < h->nign; i++) {
         cli_json_key(j, qd_expr_name(r->e->qd[h->ign_index[i]]));
@@ -312,10 +359,19 @@ static void write_json(const routh_run *r, qd_buf *b) {
         cli_json_expr(&j, r->ctx, vals[i]);
     }
     json_equations(r, &j);
-    json_matrix(r, &j, "gyroscopic", h->G);
+    if (h->implicit) {
+        cli_json_key(&j, "gyroscopic");
+        cli_json_null(&j);
+    } else {
+        json_matrix(r, &j, "gyroscopic", h->G);
+    }
     json_quadratures(r, &j);
     cli_json_key(&j, "conserved");
     cli_json_bool(&j, h->conserved);
+    if (h->implicit) { /* only then, so the other models' output is unchanged */
+        cli_json_key(&j, "implicit");
+        cli_json_bool(&j, true);
+    }
     cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
     b->failed = b->failed || !cli_json_ok(&j);
@@ -338,7 +394,9 @@ static int run(routh_run *r) {
         rc = cli_ignore_parse(r->ctx, r->mf.model, r->ignore, r->ign, MAX_IGN, &r->nign);
     if (rc == QD_EXIT_OK)
         rc = cli_ignore_check(r->ctx, &r->mf, r->e, r->ign, r->nign);
-    if (rc == QD_EXIT_OK && !(r->r = qd_routh_derive(r->ctx, r->mf.model, r->e, r->nign, r->ign)))
+    qd_routh_opts opts = {.implicit = true};
+    if (rc == QD_EXIT_OK &&
+        !(r->r = qd_routh_derive_opts(r->ctx, r->mf.model, r->e, r->nign, r->ign, &opts)))
         rc = cli_diag_ctx(r->ctx);
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }

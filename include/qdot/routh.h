@@ -44,6 +44,7 @@
 #ifndef QDOT_ROUTH_H
 #define QDOT_ROUTH_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "expr.h"
 #include "mech.h"
@@ -75,7 +76,27 @@ typedef struct qd_routh {
     bool conserved;           /* no explicit t in R, no Q and no D on kept coordinates */
     size_t *ign_index;        /* position of each ignored coordinate in the eom's q */
     size_t *keep_index;       /* position of each kept coordinate in the eom's q */
+    bool implicit;            /* L is not quadratic in the ignored velocities c' and
+                                 p = dL/dc' has no closed-form inverse (only with
+                                 qd_routh_opts.implicit): see below */
 } qd_routh;
+
+/*
+ * The implicit Routhian (issue 17), kept the way qd_ham keeps an implicit H.
+ * ignvel_i is c'_i itself, standing for the solution of pdef_i = beta_i
+ * (qd_routh_velocities_at finds it at a point), and
+ *
+ *     R(k, k', c', beta, t) = sum beta c' - L        (c' not substituted).
+ *
+ * Since dR/dc' = beta - dL/dc' = 0 there, the envelope theorem gives
+ * dR/dk = -dL/dk and dR/dk' = -dL/dk' at fixed beta: Lagrange's equations
+ * of -R are those of L for the kept coordinates, and the c'' that d/dt
+ * brings in is eliminated with d/dt (dL/dc') = 0 (beta constant).  M, f are
+ * then in k, k', c', beta, t; M is d^2(-R)/dk'dk' at fixed beta, the Schur
+ * complement of d^2L/dc'dc' in the full Hessian.  h = R + sum k' dL/dk' is
+ * the Jacobi integral of -R.  R is not split by degree: R2, R1, R0 and Veff
+ * are NULL and so are the entries of G (the split needs c' as a function).
+ */
 
 /* Reduce the model m (derived as e by qd_eom_derive) by ignoring the nign
  * coordinates ign (coordinate symbols of the model).  QD_ERR_ARG with a
@@ -88,6 +109,28 @@ typedef struct qd_routh {
  * velocities.  NULL on failure, reason in the context. */
 QD_API qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                           size_t nign, const qd_expr *const *ign);
+
+/* qd_routh_derive with options (opts may be NULL: the defaults, all false).
+ * implicit: keep the Routhian implicit (r->implicit) instead of failing with
+ * QD_ERR_NONLINEAR when the ignored velocities have no closed form.  Off by
+ * default because callers that read R0 or V_eff need them in closed form. */
+typedef struct qd_routh_opts {
+    bool implicit;
+} qd_routh_opts;
+QD_API qd_routh *qd_routh_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                      size_t nign, const qd_expr *const *ign,
+                                      const qd_routh_opts *opts);
+
+/* The ignored velocities at a point: Newton's method on beta = pdef (as
+ * qd_ham_velocities_at, the Jacobian d^2L/dc'dc').  syms/vals (nsyms) give
+ * the kept coordinates and velocities, the momenta beta, t and parameters;
+ * values given for the ignored velocities are the first guess (else 0).
+ * out receives r->nign velocities.  Any r works; for a closed-form r the
+ * answer is ignvel's value.  QD_ERR_NUMERIC or QD_ERR_SINGULAR, message in
+ * the context, when Newton fails. */
+QD_API qd_status qd_routh_velocities_at(qd_ctx *ctx, const qd_routh *r, const qd_eom *e,
+                                        size_t nsyms, const qd_expr *const *syms,
+                                        const double *vals, double *out);
 QD_API void qd_routh_free(qd_routh *r);
 
 /* The coordinate of m named name; NULL with QD_ERR_ARG and a message

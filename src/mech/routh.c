@@ -158,10 +158,22 @@ static qd_status momentum_row(qd_ctx *ctx, const qd_eom *e, qd_routh *r, size_t 
     return st;
 }
 
+/* No closed form: each ignored velocity stands for itself, defined by
+ * pdef = beta (qdot/routh.h, the implicit Routhian). */
+static qd_status keep_implicit(qd_ctx *ctx, const qd_eom *e, qd_routh *r) {
+    if (!qd__ctx_recover(ctx))
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < r->nign; i++)
+        r->ignvel[i] = e->qd[r->ign_index[i]];
+    r->implicit = true;
+    return QD_OK;
+}
+
 /* L not quadratic in the ignored velocities: the transform restricted to
  * them (legendre_family.c, the kept velocities passive), which gives R
  * itself: the relativistic particle in a central field, ignoring phi. */
-static qd_status ignored_family(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr **R) {
+static qd_status ignored_family(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr **R,
+                                bool implicit_ok) {
     const qd_expr **cd = arr(ctx, r->nign);
     if (!cd)
         return QD_ERR_NOMEM;
@@ -169,6 +181,8 @@ static qd_status ignored_family(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const
         cd[i] = e->qd[r->ign_index[i]];
     qd_status st = qd__legendre_family(ctx, e->L, r->nign, cd, r->beta, r->ignvel, R);
     qd__free(cd);
+    if (st == QD_ERR_NONLINEAR && implicit_ok)
+        return keep_implicit(ctx, e, r);
     if (st == QD_ERR_NONLINEAR)
         qd_ctx_error(ctx, st, "the momentum of %s is not linear in the velocities, and L is "
                               "not F(c'^T G c') + a.c' + L0 in the ignored velocities c' with a "
@@ -177,7 +191,8 @@ static qd_status ignored_family(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const
     return st;
 }
 
-static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr **R) {
+static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr **R,
+                                    bool implicit_ok) {
     size_t ni = r->nign, w = ni + 1;
     const qd_expr **A = arr(ctx, ni * w);
     if (!A)
@@ -194,7 +209,7 @@ static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r, c
         st = momentum_row(ctx, e, r, i, A + i * w);
     size_t bad;
     if (st == QD_ERR_NONLINEAR)
-        st = ignored_family(ctx, e, r, R);
+        st = ignored_family(ctx, e, r, R, implicit_ok);
     else if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, r->ignvel, &bad)) == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "the momenta of the ignored coordinates do not determine their "
                               "velocities (no pivot for %s')", qd_expr_name(r->ign[bad]));
@@ -244,10 +259,24 @@ static qd_status by_value(qd_ctx *ctx, qd_routh *r, const qd_expr *s) {
     return r->R2 && r->h ? QD_OK : qd_ctx_status(ctx);
 }
 
+/* R = sum beta c' - L with c' implicit, and its Jacobi integral
+ * h = R - sum k' dR/dk' = R + sum k' dL/dk' (envelope theorem: dR/dc' = 0). */
+static qd_status implicit_routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r,
+                                   const qd_expr *s) {
+    const qd_expr *h = s;
+    for (size_t k = 0; k < r->nkeep; k++)
+        h = qd_add(ctx, h, qd_mul(ctx, r->keepd[k], qd_diff(ctx, e->L, r->keepd[k])));
+    r->R = qd_simplify(ctx, s);
+    r->h = qd_simplify(ctx, h);
+    return r->R && r->h ? QD_OK : qd_ctx_status(ctx);
+}
+
 static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_expr *Rfam) {
     const qd_expr *s = qd_neg(ctx, e->L);
     for (size_t i = 0; i < r->nign; i++)
         s = qd_add(ctx, s, qd_mul(ctx, r->beta[i], e->qd[r->ign_index[i]]));
+    if (r->implicit)
+        return s ? implicit_routhian(ctx, e, r, s) : qd_ctx_status(ctx);
     s = Rfam ? Rfam : reduce(ctx, e, r, s);
     if (!s)
         return qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
@@ -274,6 +303,8 @@ static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_ex
 /* G_ij = dg_i/dk_j - dg_j/dk_i with R1 = sum g_j k'_j. */
 static qd_status gyroscopic(qd_ctx *ctx, qd_routh *r) {
     size_t nk = r->nkeep;
+    if (r->implicit)
+        return QD_OK; /* no R1 to take it from: G stays NULL */
     const qd_expr **g = arr(ctx, nk);
     if (!g)
         return QD_ERR_NOMEM;
@@ -300,21 +331,60 @@ static const qd_expr *extra(qd_ctx *ctx, const qd_model *m, const qd_eom *e, con
     return reduce(ctx, e, r, x);
 }
 
+/* The ignored accelerations in terms of the kept ones, from
+ * d/dt (dL/dc'_i) = 0 (beta constant), linear in all the accelerations:
+ * A c'' = -(rest), solved exactly; acc receives c''_i. */
+static qd_status ignored_accelerations(qd_ctx *ctx, const qd_eom *e, const qd_routh *r,
+                                       const qd_expr **acc) {
+    size_t ni = r->nign, w = ni + 1, bad = 0;
+    const qd_expr **A = arr(ctx, ni * w), **cdd = arr(ctx, ni);
+    qd_status st = A && cdd ? QD_OK : QD_ERR_NOMEM;
+    for (size_t i = 0; st == QD_OK && i < ni; i++)
+        cdd[i] = e->qdd[r->ign_index[i]];
+    for (size_t i = 0; st == QD_OK && i < ni; i++) {
+        const qd_expr *rest = NULL, *dp = qd_dt(ctx, r->pdef[i]);
+        st = dp ? qd_linear_coeffs(ctx, dp, ni, cdd, A + i * w, &rest) : qd_ctx_status(ctx);
+        if (st == QD_OK && !(A[i * w + ni] = qd_neg(ctx, rest)))
+            st = qd_ctx_status(ctx);
+    }
+    if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, acc, &bad)) == QD_ERR_SINGULAR)
+        qd_ctx_error(ctx, st, "d^2L/dc'dc' is singular in the ignored velocities: dp/dt = 0 "
+                              "does not give %s''", qd_expr_name(r->ign[bad]));
+    qd__free(A);
+    qd__free(cdd);
+    return st;
+}
+
+/* E with the ignored accelerations replaced (implicit R only). */
+static const qd_expr *no_ignored_acc(qd_ctx *ctx, const qd_eom *e, const qd_routh *r,
+                                     const qd_expr *const *acc, const qd_expr *E) {
+    if (!r->implicit || !E)
+        return E;
+    const qd_expr **from = arr(ctx, r->nign);
+    if (!from)
+        return NULL;
+    for (size_t i = 0; i < r->nign; i++)
+        from[i] = e->qdd[r->ign_index[i]];
+    const qd_expr *y = qd_subs(ctx, E, r->nign, from, acc);
+    qd__free(from);
+    return y;
+}
+
 static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh *r) {
     size_t nk = r->nkeep;
     const qd_expr *lag = qd_neg(ctx, r->R), *D = qd_model_dissipation(m);
-    const qd_expr **co = arr(ctx, nk);
-    if (!co)
-        return QD_ERR_NOMEM;
+    const qd_expr **co = arr(ctx, nk), **acc = arr(ctx, r->nign);
+    qd_status st = co && acc ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK && r->implicit)
+        st = ignored_accelerations(ctx, e, r, acc);
     r->conserved = !qd_has(r->R, qd_time(ctx)) && (!D || qd_is_zero(D));
-    qd_status st = QD_OK;
     for (size_t k = 0; st == QD_OK && k < nk; k++) {
         const qd_expr *Q = extra(ctx, m, e, r, k), *rest = NULL;
         r->conserved = r->conserved && Q && qd_is_zero(qd_simplify(ctx, Q));
         const qd_expr *E = qd_sub(ctx, qd_sub(ctx, qd_dt(ctx, qd_diff(ctx, lag, r->keepd[k])),
                                               qd_diff(ctx, lag, r->keep[k])),
                                   Q);
-        if (!E) {
+        if (!(E = no_ignored_acc(ctx, e, r, acc, E))) {
             st = qd_ctx_status(ctx);
             break;
         }
@@ -329,6 +399,7 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_r
             st = qd_ctx_status(ctx);
     }
     qd__free(co);
+    qd__free(acc);
     return st;
 }
 
@@ -374,6 +445,11 @@ static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh
 
 qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t nign,
                           const qd_expr *const *ign) {
+    return qd_routh_derive_opts(ctx, m, e, nign, ign, NULL);
+}
+
+qd_routh *qd_routh_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t nign,
+                               const qd_expr *const *ign, const qd_routh_opts *opts) {
     if (!ctx || !m || !e || (nign && !ign))
         return NULL;
     if (e->ncon || e->nelim) {
@@ -393,7 +469,7 @@ qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_
     const qd_expr *Rfam = NULL; /* R from legendre_family.c when L is not quadratic */
     qd_status st = split(ctx, m, e, r, ign);
     if (st == QD_OK)
-        st = ignored_velocities(ctx, e, r, &Rfam);
+        st = ignored_velocities(ctx, e, r, &Rfam, opts && opts->implicit);
     if (st == QD_OK)
         st = routhian(ctx, e, r, Rfam);
     if (st == QD_OK)
@@ -407,4 +483,21 @@ qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_
         return NULL;
     }
     return r;
+}
+
+/* Newton on beta = pdef through the Hamiltonian's solver: a qd_ham view of
+ * the ignored velocities only, the kept ones passive among syms. */
+qd_status qd_routh_velocities_at(qd_ctx *ctx, const qd_routh *r, const qd_eom *e, size_t nsyms,
+                                 const qd_expr *const *syms, const double *vals, double *out) {
+    if (!ctx || !r || !e || !out)
+        return QD_ERR_ARG;
+    const qd_expr **cd = arr(ctx, r->nign);
+    if (!cd)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < r->nign; i++)
+        cd[i] = e->qd[r->ign_index[i]];
+    qd_ham view = {.n = r->nign, .qd = cd, .p = r->beta, .pdef = r->pdef, .implicit = true};
+    qd_status st = qd_ham_velocities_at(ctx, &view, nsyms, syms, vals, out);
+    qd__free(cd);
+    return st;
 }
