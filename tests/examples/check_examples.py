@@ -96,6 +96,15 @@ def _(q, v, t, p):
     return [-(1 + v['y']**2) / (2 * q['y'])]
 
 
+@example('routh_implicit', ['x', 'y'], ranges={'y': (-1.5, 1.5)})
+def _(q, v, t, p):
+    # made up (issue 17, the implicit Routhian; no book): Lagrange's equations
+    # of L = cosh(x') + y'^2/2 + x' y' y/2 - y^2 written out by hand,
+    # cosh(x') x'' + (y/2) y'' = -y'^2/2 and (y/2) x'' + y'' = -2 y
+    y, xd, yd = q['y'], v['x'], v['y']
+    return solve([[math.cosh(xd), y / 2], [y / 2, 1.0]], [-yd**2 / 2, -2 * y])
+
+
 @example('sphere_geodesic', ['phi'], t=(0.3, 2.8))
 def _(q, v, t, p):
     # App. 32 Thm 3 Case 1 (phi absent): sin^2 th phi'/sqrt(1 + sin^2 th phi'^2)
