@@ -372,6 +372,11 @@ static void write_json(const path_run *r, qd_buf *b) {
         for (size_t k = 0; k < p->nfoci; k++)
             cli_json_number(&j, p->foci[k]);
         cli_json_end_array(&j);
+        cli_json_key(&j, "kinetic_foci_multiplicity"); /* Jacobi fields vanishing there */
+        cli_json_begin_array(&j);
+        for (size_t k = 0; k < p->nfoci; k++)
+            cli_json_number(&j, p->foci_mult ? (double)p->foci_mult[k] : 1);
+        cli_json_end_array(&j);
         cli_json_key(&j, "minimum");
         cli_json_bool(&j, p->minimum);
         cli_json_key(&j, "examined");  /* false: foci and minimum not decided */

@@ -156,6 +156,22 @@ def pendulum_focus(qdot):
               not p['kinetic_foci'], p)
 
 
+def isotropic_focus(qdot):
+    # the isotropic plane oscillator (w = 1): every path from a point comes
+    # back together at t = pi, where both Jacobi fields vanish: one focus of
+    # multiplicity 2, where det J = (sin t)^2 touches 0 without changing sign
+    r = paths(qdot, 'hj_anisotropic.qd', '--set', 'ky=1', '--from', 'x=0, y=0, t=0',
+              '--to', 'x=0.5, y=0.3, t=4')
+    if r:
+        p = r['paths'][0]
+        check('isotropic: one focus', len(p['kinetic_foci']) == 1, p['kinetic_foci'])
+        if p['kinetic_foci']:
+            close('isotropic focus at pi', p['kinetic_foci'][0], math.pi, 1e-8)
+        check('isotropic focus multiplicity 2', p.get('kinetic_foci_multiplicity') == [2],
+              p.get('kinetic_foci_multiplicity'))
+        check('isotropic past pi: no minimum', p['minimum'] is False)
+
+
 def errors(qdot):
     rc, out, err = run(qdot, 'path', str(EXAMPLES / 'pendulum_cartesian.qd'),
                        '--from', 'x=0, y=-1.4, t=0', '--to', 'x=2, y=0, t=1')
@@ -266,6 +282,7 @@ def main():
     projectile_energy(qdot)
     pendulum(qdot)
     pendulum_focus(qdot)
+    isotropic_focus(qdot)
     errors(qdot)
     catenary_length(qdot)
     free_ends(qdot)
