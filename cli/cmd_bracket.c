@@ -193,26 +193,22 @@ static int parse_args(int argc, char **argv, br_args *a) {
     return rc;
 }
 
-/* dF/dt along the motion: [F, H] + dF/dt explicit + sum dF/dp_j extra_j.
- * With H implicit, [F, H] is not taken from H (whose q' depends on q and p
- * in no closed form) but from Hamilton's equations themselves, dq_j/dt = q'_j
- * and dp_j/dt = dL/dq_j + extra_j: the same sum, exact, with q' standing for
- * the solution of p = dL/dq'. */
+/* dF/dt along the motion from Hamilton's equations as qd_ham_derive gives
+ * them, dq_j/dt = dH/dp_j and dp_j/dt = -dH/dq_j + extra_j:
+ *
+ *     dF/dt = dF/dt|explicit + sum_j (dF/dq_j dq_j/dt + dF/dp_j dp_j/dt),
+ *
+ * i.e. [F, H] plus the forces' part.  Taking the equations rather than
+ * differentiating H serves an implicit H too (its q' depends on q and p in
+ * no closed form; there dq_j/dt = q'_j and dp_j/dt = dL/dq_j + extra_j,
+ * exact, with q' the solution of p = dL/dq'). */
 static const qd_expr *time_derivative(cli_phase *ph, const qd_expr *F) {
     qd_ctx *ctx = ph->ctx;
     const qd_ham *h = ph->h;
-    if (h->implicit) {
-        const qd_expr *d = qd_diff(ctx, F, qd_time(ctx));
-        for (size_t j = 0; j < ph->n; j++)
-            d = qd_add(ctx, d, qd_add(ctx, qd_mul(ctx, qd_diff(ctx, F, ph->q[j]), h->dq[j]),
-                                      qd_mul(ctx, qd_diff(ctx, F, ph->p[j]), h->dp[j])));
-        return d ? qd_simplify(ctx, d) : NULL;
-    }
-    const qd_expr *d = qd_bracket(ctx, ph->n, ph->q, ph->p, F, h->H);
-    d = qd_add(ctx, d, qd_diff(ctx, F, qd_time(ctx)));
+    const qd_expr *d = qd_diff(ctx, F, qd_time(ctx));
     for (size_t j = 0; j < ph->n; j++)
-        if (!qd_is_zero(h->extra[j]))
-            d = qd_add(ctx, d, qd_mul(ctx, qd_diff(ctx, F, ph->p[j]), h->extra[j]));
+        d = qd_add(ctx, d, qd_add(ctx, qd_mul(ctx, qd_diff(ctx, F, ph->q[j]), h->dq[j]),
+                                  qd_mul(ctx, qd_diff(ctx, F, ph->p[j]), h->dp[j])));
     return d ? qd_simplify(ctx, d) : NULL;
 }
 
