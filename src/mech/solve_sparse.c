@@ -23,7 +23,13 @@ typedef struct peel {
     const qd_expr **X;
     bool *row_on, *col_on;
     size_t *back_row, *back_col, nback;
+    qd__tidy_fn tidy;
+    void *arg;
 } peel;
+
+static const qd_expr *tidy(const peel *p, const qd_expr *x) {
+    return p->tidy ? (x ? p->tidy(p->arg, x) : NULL) : qd_simplify(p->ctx, x);
+}
 
 static bool nz(const peel *p, size_t i, size_t j) { return !qd_is_zero(p->A[i * p->n + j]); }
 
@@ -60,7 +66,7 @@ static qd_status forward(peel *p, size_t i, size_t j) {
     size_t n = p->n, nc = p->nc;
     p->row_on[i] = p->col_on[j] = false;
     for (size_t c = 0; c < nc; c++)
-        if (!(p->X[j * nc + c] = qd_simplify(ctx, qd_div(ctx, p->R[i * nc + c], p->A[i * n + j]))))
+        if (!(p->X[j * nc + c] = tidy(p, qd_div(ctx, p->R[i * nc + c], p->A[i * n + j]))))
             return failed(ctx);
     for (size_t r = 0; r < n; r++)
         for (size_t c = 0; p->row_on[r] && nz(p, r, j) && c < nc; c++)
@@ -151,7 +157,7 @@ static qd_status backward(peel *p, const qd_expr *const *B) {
             for (size_t l = 0; l < n && s; l++)
                 if (l != j && nz(p, i, l))
                     s = qd_sub(ctx, s, qd_mul(ctx, p->A[i * n + l], p->X[l * nc + c]));
-            if (!(p->X[j * nc + c] = qd_simplify(ctx, qd_div(ctx, s, p->A[i * n + j]))))
+            if (!(p->X[j * nc + c] = tidy(p, qd_div(ctx, s, p->A[i * n + j]))))
                 return failed(ctx);
         }
     }
@@ -159,10 +165,11 @@ static qd_status backward(peel *p, const qd_expr *const *B) {
 }
 
 qd_status qd__solve_sparse(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
-                           const qd_expr *const *B, const qd_expr **X, size_t max_ops) {
+                           const qd_expr *const *B, const qd_expr **X, size_t max_ops,
+                           qd__tidy_fn tidy, void *arg) {
     if (!n)
         return QD_OK;
-    peel p = {.ctx = ctx, .n = n, .nc = ncols, .A = A};
+    peel p = {.ctx = ctx, .n = n, .nc = ncols, .A = A, .tidy = tidy, .arg = arg};
     p.R = qd__malloc(ctx, (n * ncols + 1) * sizeof *p.R);
     p.row_on = qd__malloc(ctx, 2 * n * sizeof *p.row_on);
     p.back_row = qd__malloc(ctx, 2 * n * sizeof *p.back_row);

@@ -210,6 +210,30 @@ static qd_status count_error(qd__spd *d) {
     return QD_ERR_SINGULAR;
 }
 
+/* A velocity solved for, linear in the symbols of the right-hand side:
+ * each coefficient simplified on its own, which is all qd_simplify would do
+ * to it and costs much less than simplifying the whole sum. */
+typedef struct linear_form {
+    qd_ctx *ctx;
+    size_t n;
+    const qd_expr *const *sym;
+    const qd_expr **c;
+} linear_form;
+
+static const qd_expr *tidy_linear(void *arg, const qd_expr *x) {
+    linear_form *f = arg;
+    const qd_expr *rest = NULL;
+    qd_status st = qd_linear_coeffs(f->ctx, x, f->n, f->sym, f->c, &rest);
+    if (st == QD_ERR_NONLINEAR) {
+        qd__ctx_recover(f->ctx);
+        return qd_simplify(f->ctx, x);
+    }
+    const qd_expr *sum = st == QD_OK ? qd_simplify(f->ctx, rest) : NULL;
+    for (size_t r = 0; sum && r < f->n; r++)
+        sum = qd_add(f->ctx, sum, qd_mul(f->ctx, qd_simplify(f->ctx, f->c[r]), f->sym[r]));
+    return sum;
+}
+
 /* The velocities as linear expressions: P q' = (u - b, s - c0) solved
  * with the speeds u (and, when need_wc, one symbol s_k per constraint) in
  * the right-hand side, one column: carrying u through the elimination
@@ -232,11 +256,13 @@ static qd_status velocity_map(qd__spd *d) {
             d->P[(m + k) * n + j] = e->con[k].a[j];
         d->p0[m + k] = e->con[k].a0;
     }
-    /* B, X (n each), the unknowns' symbols (nx: u, then s), coefficients (nx) */
-    const qd_expr **B = qd__calloc(ctx, 3 * n + 2 * nx + 1, sizeof *B);
+    /* B, X (n each), the unknowns' symbols (nx: u, then s), coefficients
+     * (nx, and nx more for tidy_linear) */
+    const qd_expr **B = qd__calloc(ctx, 2 * n + 3 * nx + 1, sizeof *B);
     if (!B)
         return nomem(ctx);
-    const qd_expr **X = B + n, **sym = X + n, **c = sym + nx, **zero = c + nx;
+    const qd_expr **X = B + n, **sym = X + n, **c = sym + nx;
+    linear_form form = {ctx, nx, sym, c + nx};
     for (size_t r = 0; r < nx; r++) {
         char name[48];
         if (r >= m)
@@ -247,16 +273,15 @@ static qd_status velocity_map(qd__spd *d) {
         B[i] = qd_neg(ctx, d->p0[i]);
         if (i < nx)
             B[i] = qd_add(ctx, sym[i], B[i]);
-        zero[i] = qd_int(ctx, 0);
     }
-    qd_status st = qd__solve_sparse(ctx, n, d->P, 1, B, X, 0);
+    qd_status st = qd__solve_sparse(ctx, n, d->P, 1, B, X, 0, tidy_linear, &form);
     if (st == QD_ERR_SINGULAR)
         st = singular_map(d);
     for (size_t j = 0; st == QD_OK && j < n; j++) {
         const qd_expr *rest = NULL;
         st = qd_linear_coeffs(ctx, X[j], nx, sym, c, &rest);
         for (size_t r = 0; st == QD_OK && r < nx; r++) {
-            const qd_expr *x = qd_simplify(ctx, c[r]);
+            const qd_expr *x = c[r];
             if (!x)
                 st = nomem(ctx);
             else if (r < m)
@@ -264,11 +289,16 @@ static qd_status velocity_map(qd__spd *d) {
             else
                 d->Pinv[j * n + r] = x;
         }
-        if (st == QD_OK && !(e->w[j] = qd_simplify(ctx, rest)))
+        if (st == QD_OK && !(e->w[j] = rest))
             st = nomem(ctx);
-        const qd_expr *kin = st == QD_OK && nx > m ? qd_subs(ctx, X[j], nx - m, sym + m, zero)
-                                                   : X[j];
-        if (st == QD_OK && !(e->kin[j] = qd__spd_tidy(d, kin)))
+        /* q'_j = sum_r W_jr u_r + w_j: the s_k drop out, and X_j came out of
+         * the solve simplified coefficient by coefficient (tidy_linear or
+         * qd__solve_cols' own simplification), so nothing is simplified
+         * again */
+        const qd_expr *kin = st == QD_OK ? e->w[j] : NULL;
+        for (size_t r = 0; kin && r < m; r++)
+            kin = qd_add(ctx, qd_mul(ctx, e->W[j * m + r], e->u[r]), kin);
+        if (st == QD_OK && !(e->kin[j] = qd_factor_terms(ctx, kin)))
             st = nomem(ctx);
     }
     for (size_t j = 0; st == QD_OK && j < n; j++)
@@ -318,7 +348,7 @@ const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x) {
     qd_status st = qd__by_velocity(d->ctx, x, d->m, d->e->u, &v);
     if (st != QD_OK && st != QD_ERR_NONLINEAR)
         return NULL;
-    return qd_simplify(d->ctx, st == QD_OK ? v.all : x);
+    return st == QD_OK ? v.all : qd_simplify(d->ctx, x);
 }
 
 qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows) {

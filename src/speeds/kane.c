@@ -11,31 +11,30 @@
  * construction), so the projection drops them: Kane's generalized active
  * plus inertia forces, F_r + F*_r = 0 (Kane and Levinson, Dynamics: Theory
  * and Applications, 1985, sec. 6.1 and 6.3, where F*_r is written with T
- * exactly so).  The default method.  Lagrange's rows are taken raw (f
- * grouped by velocity monomials, nothing simplified) and only the m
- * projections are simplified: simplifying the n rows first costs more than
- * it saves in the projections (7 to 11% of the whole derivation on the
- * rolling disk and the bicycle, by instruction counts).
+ * exactly so).  The default method.  Lagrange's rows are taken raw
+ * (nothing simplified) and only the m projections are tidied: expanded,
+ * grouped by monomials in u, each group's coefficient through the
+ * trigonometric identities and common factors (qd__spd_tidy).  Neither the
+ * n rows nor the finished entries get the whole simplifier: on the rolling
+ * disk and the bicycle that costs more than the rest of the derivation
+ * (instruction counts) and only regroups what the tidy leaves.
  */
 #include "spd.h"
 
 #include "../base/mem.h"
 
-/* M_u = W^T M W, entry (r, s), simplified. */
-static const qd_expr *mass(qd__spd *d, const qd_expr *const *M, size_t r, size_t s) {
-    qd_ctx *ctx = d->ctx;
-    const qd_speeds_eom *e = d->e;
-    size_t n = d->n, m = d->m;
-    const qd_expr *x = qd_int(ctx, 0);
-    for (size_t j = 0; j < n; j++) {
-        const qd_expr *Wjr = e->W[j * m + r];
-        if (qd_is_zero(Wjr))
-            continue;
-        for (size_t k = 0; k < n; k++)
-            if (!qd_is_zero(M[j * n + k]) && !qd_is_zero(e->W[k * m + s]))
-                x = qd_add(ctx, x, qd_mul(ctx, Wjr, qd_mul(ctx, M[j * n + k], e->W[k * m + s])));
-    }
-    return qd_simplify(ctx, x);
+static qd_status failed(qd_ctx *ctx) {
+    return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+}
+
+/* sum_k x_k y_k over the pairs with neither factor 0; strides sx, sy. */
+static const qd_expr *dot(qd_ctx *ctx, size_t n, const qd_expr *const *x, size_t sx,
+                          const qd_expr *const *y, size_t sy) {
+    const qd_expr *s = qd_int(ctx, 0);
+    for (size_t k = 0; s && k < n; k++)
+        if (!qd_is_zero(x[k * sx]) && !qd_is_zero(y[k * sy]))
+            s = qd_add(ctx, s, qd_mul(ctx, x[k * sx], y[k * sy]));
+    return s;
 }
 
 qd_status qd__spd_kane(qd__spd *d) {
@@ -44,43 +43,45 @@ qd_status qd__spd_kane(qd__spd *d) {
     qd_eom *sh = d->shell;
     size_t n = d->n, m = d->m;
     qd_status st = qd__eom_rows(ctx, sh, &d->sys, d->L, true);
-    const qd_expr **buf = qd__calloc(ctx, n * n + 2 * n + m + 1, sizeof *buf);
+    const qd_expr **buf = qd__calloc(ctx, n * n + n * m + 2 * n + m + 1, sizeof *buf);
     if (st != QD_OK || !buf) {
         qd__free(buf);
         return st != QD_OK ? st : QD_ERR_NOMEM;
     }
-    const qd_expr **M = buf, **g = M + n * n, **a0 = g + n, **zero = a0 + n;
+    /* M and f on the motion, a0 the accelerations at u' = 0, MTW = M^T W:
+     * both projections go through MTW, (W^T M W)_rs = sum_k MTW_kr W_ks and
+     * (W^T M a0)_r = sum_k MTW_kr a0_k, which costs n m products per entry
+     * where M a0 first would cost n^2 */
+    const qd_expr **M = buf, **f = M + n * n, **a0 = f + n, **zero = a0 + n, **MTW = zero + m;
     for (size_t r = 0; r < m; r++)
         zero[r] = qd_int(ctx, 0);
-    for (size_t j = 0; j < n; j++)
+    for (size_t j = 0; j < n; j++) {
         a0[j] = qd_subs(ctx, d->acc[j], m, e->ud, zero);
+        f[j] = qd__spd_on_motion(d, sh->f[j]);
+    }
     for (size_t i = 0; i < n * n; i++)
         M[i] = qd__spd_on_motion(d, sh->M[i]);
-    /* g = f - M a0, what is left when every u' is 0; simplified only once
-     * projected (simplifying each g_j first costs more than it saves) */
-    for (size_t j = 0; j < n; j++) {
-        const qd_expr *x = qd__spd_on_motion(d, sh->f[j]);
-        for (size_t k = 0; k < n; k++)
-            if (!qd_is_zero(M[j * n + k]) && !qd_is_zero(a0[k]))
-                x = qd_sub(ctx, x, qd_mul(ctx, M[j * n + k], a0[k]));
-        if (!(g[j] = x))
-            st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-    }
+    for (size_t k = 0; st == QD_OK && k < n; k++)
+        for (size_t r = 0; r < m; r++)
+            if (!(MTW[k * m + r] = dot(ctx, n, M + k, n, e->W + r, m)))
+                st = failed(ctx);
     /* M is symmetric unless D or Q bring accelerations: then so is W^T M W */
     bool sym = true;
     for (size_t j = 0; j < n; j++)
         for (size_t k = 0; k < j; k++)
             sym = sym && sh->M[j * n + k] == sh->M[k * n + j];
+    /* each entry tidied only once assembled: tidying the n rows first costs
+     * more than it saves in the projections */
     for (size_t r = 0; st == QD_OK && r < m; r++) {
         for (size_t s = 0; s < m && st == QD_OK; s++)
-            if (!(e->M[r * m + s] = sym && s < r ? e->M[s * m + r] : mass(d, M, r, s)))
-                st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
-        const qd_expr *x = qd_int(ctx, 0);
-        for (size_t j = 0; j < n; j++)
-            if (!qd_is_zero(e->W[j * m + r]) && !qd_is_zero(g[j]))
-                x = qd_add(ctx, x, qd_mul(ctx, e->W[j * m + r], g[j]));
+            if (!(e->M[r * m + s] = sym && s < r ? e->M[s * m + r]
+                                                 : qd__spd_tidy(d, dot(ctx, n, MTW + r, m,
+                                                                       e->W + s, m))))
+                st = failed(ctx);
+        const qd_expr *x = qd_sub(ctx, dot(ctx, n, e->W + r, m, f, 1),
+                                  dot(ctx, n, MTW + r, m, a0, 1));
         if (st == QD_OK && !(e->f[r] = qd__spd_tidy(d, x)))
-            st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+            st = failed(ctx);
     }
     qd__free(buf);
     return st;

@@ -48,7 +48,10 @@ const qd_expr *qd__spd_residual(qd__spd *d, size_t j);
 /* Fill e->M (m*m) and e->f (m) from the m expressions rows_r = M_u u' - f_u
  * (linear in u'), each entry simplified. */
 qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows);
-/* x simplified after grouping by monomials in the speeds. */
+/* x expanded and grouped by monomials in the speeds, each group's
+ * coefficient through the trigonometric identities and common factors
+ * (qd__by_velocity); the whole simplifier only where x is not polynomial
+ * in the speeds. */
 const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x);
 
 /* The methods: each fills e->M and e->f. */

@@ -55,9 +55,30 @@ static void consider(best *b, const qd_expr *cand) {
     consider_if(b, cand, false);
 }
 
+/* Is there a sum anywhere in e?  Every stage works on sums (expand
+ * distributes over them, trigsimp and factoring rewrite them, cancel needs
+ * one in a numerator or denominator to find a common factor): a sum-free
+ * expression is canonical already. */
+static bool has_sum(const qd_expr *e, qd_ptrmap *seen) {
+    if (e->kind == QD_ADD)
+        return true;
+    if (!e->nargs || qd_ptrmap_has(seen, e))
+        return false;
+    for (size_t i = 0; i < e->nargs; i++)
+        if (has_sum(e->args[i], seen))
+            return true;
+    qd_ptrmap_put(seen, e, (void *)e);
+    return false;
+}
+
 const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
+    qd_ptrmap seen0 = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    bool sums = has_sum(e, &seen0);
+    qd_ptrmap_free(&seen0);
+    if (!sums)
+        return e;
     best b = {e, qd_count_ops(e), false};
     const qd_expr *t = qd_trigsimp(ctx, e);
     consider(&b, t);

@@ -266,7 +266,7 @@ static size_t angles_of(qd_ctx *ctx, const term *t, angle *out) {
             if (!out[j].s || !out[j].c)
                 return 0;
         }
-        if (k < 1)
+        if (k == 0)
             out[j].blocked = true;
         else if (b->tag == QD_SIN && out[j].s == b)
             out[j].a = k;
