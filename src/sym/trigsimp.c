@@ -48,7 +48,9 @@ typedef struct change {
 } change;
 
 /* The powers of sin(u) and cos(u) in one term; blocked when either has an
- * exponent that is not a positive integer (the rules would drop it). */
+ * exponent that is not an integer (the rules would drop it).  Negative
+ * powers take part: s^a k^b + s^(a-2) k^(b+2) = s^(a-2) k^b for all
+ * integers a, b, and the result is defined wherever both terms were. */
 typedef struct angle {
     const qd_expr *u, *s, *c;
     long a, b;

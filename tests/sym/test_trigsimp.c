@@ -197,6 +197,55 @@ static void keeps_value(void **state) {
     }
 }
 
+/* The identities hold for any integer powers: with a negative power of
+ * cos (tan, sec, as the kinematics of a body's angular velocity bring them)
+ * the same pairs combine.  Before, a negative power blocked the angle and
+ * 1 + sin^2/cos^2 stayed as it was (the bicycle's f_u, issue 15). */
+static void negative_powers(void **state) {
+    const qd_expr *k2 = qd_powi(C, COS(X), -2), *k3 = qd_powi(C, COS(X), -3);
+    /* 1 + sin^2/cos^2 = 1/cos^2 */
+    assert_ptr_equal(qd_trigsimp(C, ADD(I(1), MUL(SQ(SIN(X)), k2))), k2);
+    /* 1 + (sin^2 - 1)/cos^2 = 0, term by term: 1 + s^2 k^-2 - k^-2 */
+    assert_ptr_equal(qd_trigsimp(C, ADD(I(1), MUL(SQ(SIN(X)), k2), qd_neg(C, k2))), I(0));
+    /* a s^3/k^3 + a s/k = a s/k^3 (the disk's f_u3 coefficient, grouped) */
+    assert_ptr_equal(qd_trigsimp(C, ADD(MUL(A, qd_powi(C, SIN(X), 3), k3),
+                                        MUL(A, SIN(X), qd_powi(C, COS(X), -1)))),
+                     MUL(A, SIN(X), k3));
+    /* sin(x)/sin(y) products with negative powers on the other angle's
+     * functions: cos x cos y/sin z + sin x sin y/sin z = cos(x - y)/sin z */
+    const qd_expr *iz = qd_powi(C, SIN(Z), -1);
+    assert_ptr_equal(qd_trigsimp(C, ADD(MUL(COS(X), COS(Y), iz), MUL(SIN(X), SIN(Y), iz))),
+                     MUL(COS(qd_sub(C, X, Y)), iz));
+    /* a fractional power still blocks: sqrt(cos) is not an integer power */
+    const qd_expr *e = ADD(I(1), MUL(SQ(SIN(X)), qd_pow(C, COS(X), qd_rat(C, -1, 2))));
+    assert_ptr_equal(qd_trigsimp(C, e), e);
+}
+
+/* Random sums with negative powers too: same value after, never longer. */
+static void keeps_value_negative(void **state) {
+    qt_rng r = {20261126};
+    const qd_expr *syms[3] = {X, Y, Z};
+    const qd_expr *trig[6] = {SIN(X), COS(X), SIN(Y), COS(Y), SIN(Z), COS(Z)};
+    for (int n = 0; n < 300; n++) {
+        const qd_expr *terms[8];
+        for (int i = 0; i < 8; i++) {
+            const qd_expr *t = qd_int(C, (long)qt_below(&r, 3) + 1);
+            for (unsigned k = qt_below(&r, 4); k > 0; k--)
+                t = qd_mul(C, t, qd_powi(C, trig[qt_below(&r, 6)], (long)qt_below(&r, 5) - 2));
+            terms[i] = qd_mul(C, t, syms[qt_below(&r, 3)]);
+        }
+        const qd_expr *e = qd_add_n(C, 8, terms), *s = qd_trigsimp(C, e);
+        assert_non_null(s);
+        assert_true(qd_count_ops(s) <= qd_count_ops(e));
+        double v[3] = {qt_uniform(&r, -2, 2), qt_uniform(&r, -2, 2), qt_uniform(&r, -2, 2)};
+        double ve, vs;
+        assert_int_equal(qd_eval(C, e, 3, syms, v, &ve), QD_OK);
+        assert_int_equal(qd_eval(C, s, 3, syms, v, &vs), QD_OK);
+        if (fabs(ve - vs) > 1e-9 * (1 + fabs(ve)))
+            fail_msg("case %d (seed 20261126): %g != %g", n, ve, vs);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(pythagoras, setup, teardown),
@@ -205,6 +254,8 @@ int main(void) {
         cmocka_unit_test_setup_teardown(keeps_value, setup, teardown),
         cmocka_unit_test_setup_teardown(even_powers, setup, teardown),
         cmocka_unit_test_setup_teardown(ideal_vanishes, setup, teardown),
+        cmocka_unit_test_setup_teardown(negative_powers, setup, teardown),
+        cmocka_unit_test_setup_teardown(keeps_value_negative, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
