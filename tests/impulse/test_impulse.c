@@ -686,6 +686,83 @@ static void string_taut(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* An impulsive couple G on a free rigid body turning about its fixed
+ * centre: the impulse equations (Desloge ch. 57 thm 1) with the couple's
+ * generalized impulses G . d(omega_space)/dq'_j (Byerly art. 27) say the
+ * angular momentum jumps by G, I_space (w+ - w-) = G, I_space = R I R^T,
+ * at any orientation and whatever the spin before; T after is
+ * w+ . I_space w+ / 2.  Euler angles z-x-z (seed-desloge-B.md C8); the
+ * orientation and rates before are random. */
+static void rz(double a, double R[3][3]) {
+    double c = cos(a), s = sin(a), M[3][3] = {{c, -s, 0}, {s, c, 0}, {0, 0, 1}};
+    memcpy(R, M, sizeof M);
+}
+
+static void rx(double a, double R[3][3]) {
+    double c = cos(a), s = sin(a), M[3][3] = {{1, 0, 0}, {0, c, -s}, {0, s, c}};
+    memcpy(R, M, sizeof M);
+}
+
+static void matmul(double A[3][3], double B[3][3], double C[3][3]) {
+    double P[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            P[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
+    memcpy(C, P, sizeof P);
+}
+
+/* The space angular velocity of R = Rz(ph) Rx(th) Rz(ps) at the rates qd:
+ * ph' about z, th' about the line of nodes Rz(ph) x, ps' about the body's
+ * axis Rz(ph) Rx(th) z. */
+static void omega_zxz(const double *q, const double *qd, double w[3]) {
+    double Rp[3][3], Rt[3][3], Rpt[3][3];
+    rz(q[0], Rp), rx(q[1], Rt), matmul(Rp, Rt, Rpt);
+    for (int i = 0; i < 3; i++)
+        w[i] = qd[0] * (i == 2) + qd[1] * Rp[i][0] + qd[2] * Rpt[i][2];
+}
+
+static void couple_on_body(void **state) {
+    (void)state;
+    static const char text[] =
+        "coordinates ph, th, ps\n"
+        "parameters A = 1, B = 2, C = 7/2, Gx = 3/2, Gy = -1, Gz = 1/2\n"
+        "body b mass 5 inertia (A, B, C) at (0, 0, 0) orientation rot_z(ph)*rot_x(th)*rot_z(ps)\n"
+        "impulse (Gx, Gy, Gz) on b\n";
+    const double I[3] = {1, 2, 3.5}, G[3] = {1.5, -1, 0.5};
+    qt_rng rng = {57};
+    for (int trial = 0; trial < 5; trial++) {
+        qd_ctx *ctx = qd_ctx_new();
+        qd_model *m = parse_ok(ctx, text);
+        double q[3] = {qt_uniform(&rng, -3, 3), qt_uniform(&rng, 0.3, 2.8), qt_uniform(&rng, -3, 3)};
+        double qd[3] = {qt_uniform(&rng, -2, 2), qt_uniform(&rng, -2, 2), qt_uniform(&rng, -2, 2)};
+        qstate st;
+        make_state(ctx, 3, q, qd, &st);
+        qd_impulse_opts o = {.q = st.q, .qd = st.qd};
+        qd_impulse r;
+        if (qd_impulse_solve(ctx, m, &o, &r) != QD_OK)
+            fail_msg("%s", qd_ctx_message(ctx));
+        double Rp[3][3], Rt[3][3], Rs[3][3], R[3][3], w0[3], w1[3], dL[3] = {0, 0, 0}, T = 0;
+        rz(q[0], Rp), rx(q[1], Rt), rz(q[2], Rs), matmul(Rp, Rt, R), matmul(R, Rs, R);
+        omega_zxz(q, qd, w0);
+        omega_zxz(q, r.qd_after, w1);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                double Is = 0; /* (R I R^T)_ij */
+                for (int k = 0; k < 3; k++)
+                    Is += R[i][k] * I[k] * R[j][k];
+                dL[i] += Is * (w1[j] - w0[j]);
+                T += w1[i] * Is * w1[j] / 2;
+            }
+        for (int i = 0; i < 3; i++)
+            near(dL[i], G[i], "angular momentum jump = G");
+        near(r.T_after, T, "T after");
+        assert_true(r.thomson.applies && r.thomson.holds);
+        qd_impulse_free(&r);
+        qd_model_free(m);
+        qd_ctx_free(ctx);
+    }
+}
+
 /* ---- collisions (Desloge ch. 61) ------------------------------------------ */
 
 #define HEADON                                                                     \
@@ -1094,6 +1171,7 @@ int main(void) {
         cmocka_unit_test(rod_end_fixed),
         cmocka_unit_test(hoop_pivoted),
         cmocka_unit_test(string_taut),
+        cmocka_unit_test(couple_on_body),
         cmocka_unit_test(headon),
         cmocka_unit_test(oblique),
         cmocka_unit_test(random_theorems),
