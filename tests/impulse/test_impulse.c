@@ -801,6 +801,14 @@ static void headon(void **state) {
     near(r.col.theta_cm, PI, "head-on: u reversed");
     near(r.col.eps[0] - r.col.eps[1], r.energy_lost, "relative energy lost");
     near(r.col.w[0], (2 * 3 + 5 * -1) / 7.0, "w");
+    /* the maps between the frames (Desloge ch. 61, seed-desloge-B.md C5):
+     * the lab energy is the centre of mass's plus the relative one, and
+     * body 1's CM speed s = m2 |u|/(m1 + m2) becomes s* = E s head on */
+    near(r.col.T_cm, 7 * (1.0 / 7) * (1.0 / 7) / 2, "T_cm = (m1 + m2) w^2/2");
+    near(r.col.T_cm + r.col.eps[0], r.T_before, "Koenig before");
+    near(r.col.T_cm + r.col.eps[1], r.T_after, "Koenig after");
+    near(r.col.s[0], 5.0 * 4 / 7, "s");
+    near(r.col.s[1], 0.5 * 5.0 * 4 / 7, "s* = E s");
     assert_false(r.carnot.applies); /* E != 0 */
     qd_impulse_free(&r);
     qd_model_free(m);
@@ -837,6 +845,8 @@ static void oblique(void **state) {
         near(atan2(sin(c->theta_cm), cos(c->theta_cm) + c->gamma), c->theta_lab1,
              "tan theta_lab1 = sin theta/(cos theta + gamma)");
         near(c->eps[0] - c->eps[1], r.energy_lost, "relative energy lost");
+        near(c->T_cm + c->eps[1], r.T_after, "lab energy = CM's + relative");
+        near(c->s[1] * c->s[1], c->s[0] * c->s[0] * c->eps[1] / c->eps[0], "s*^2 = s^2 eps+/eps-");
         /* Newton's law on the normal part of u, the tangential part kept:
          * eps after = mu V^2 (sin^2 beta + E^2 cos^2 beta)/2 */
         double mu = c->m1 * c->m2 / (c->m1 + c->m2), cb = cos(PI / 5), sb = sin(PI / 5);
