@@ -763,6 +763,46 @@ static void couple_on_body(void **state) {
     }
 }
 
+/* A particle meets a wall moving at speed u, the plane x = u t, at
+ * t = 7/10 (the state's own t): Newton's law acts on the velocity relative
+ * to the wall (Desloge ch. 61: the rate of the gap x - u t, not of x), so
+ * x'+ = u - E (x'- - u), y' kept, and the wall's impulse is
+ * m (1 + E) (u - x'-); the rheonomic row's a0 = -u makes Carnot's and
+ * Bertrand's hypotheses fail (the wall does work on the particle).  Also
+ * the closed form at other (u, E). */
+static void moving_wall(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse_ok(ctx, "coordinates x, y\n"
+                                "parameters m = 3, u = 2, E = 1/2\n"
+                                "particle m at (x, y)\n"
+                                "impact constraint wall: x = u*t restitution E\n");
+    double t0 = 0.7, q[2] = {2 * 0.7, 5}, qd[2] = {-1, 4};
+    qstate st;
+    make_state(ctx, 2, q, qd, &st);
+    qd_impulse_opts o = {.q = st.q, .qd = st.qd, .t = qd_float(ctx, t0), .exact = true};
+    qd_impulse r;
+    if (qd_impulse_solve(ctx, m, &o, &r) != QD_OK)
+        fail_msg("%s", qd_ctx_message(ctx));
+    exact_matches(ctx, m, &r);
+    near(after(&r, "x"), 2 - 0.5 * (-1 - 2), "x'+ = u - E (x'- - u)");
+    near(after(&r, "y"), 4, "y' kept");
+    near(fabs(mult(&r, "Lambda_wall")), 3 * 1.5 * 3, "|impulse| = m (1 + E) (u - x'-)");
+    near(-r.energy_lost, 3 * (3.5 * 3.5 - 1) / 2, "energy given by the wall");
+    assert_false(r.carnot.applies);
+    assert_false(r.bertrand.applies);
+    const char *names[] = {"u", "E"};
+    double pts[3][2] = {{-1.5, 0.3}, {0.4, 1}, {3, 0}};
+    for (int i = 0; i < 3; i++) {
+        double u = pts[i][0], E = pts[i][1];
+        near(at_params(ctx, m, r.qd_after_exact[0], 2, names, pts[i]), u - E * (-1 - u),
+             "exact x'+");
+    }
+    qd_impulse_free(&r);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* ---- collisions (Desloge ch. 61) ------------------------------------------ */
 
 #define HEADON                                                                     \
@@ -1182,6 +1222,7 @@ int main(void) {
         cmocka_unit_test(hoop_pivoted),
         cmocka_unit_test(string_taut),
         cmocka_unit_test(couple_on_body),
+        cmocka_unit_test(moving_wall),
         cmocka_unit_test(headon),
         cmocka_unit_test(oblique),
         cmocka_unit_test(random_theorems),
