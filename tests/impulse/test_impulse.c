@@ -803,6 +803,45 @@ static void moving_wall(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* An ordinary constraint keeps holding through a blow and takes an
+ * impulsive multiplier too: a bob (m) on a light rod of length l, in
+ * Cartesian coordinates, struck by J at an angle: the rod's impulsive
+ * tension cancels J's component along the rod, so v+ = (J - (J.n) n)/m
+ * and the reaction at the bob is -(J.n) n (Byerly art. 27, the string's
+ * impulsive tension as an unknown multiplier), at several positions. */
+static void pendulum_struck(void **state) {
+    (void)state;
+    double angles[] = {0, 0.4, -1.2, 2.5};
+    for (int i = 0; i < 4; i++) {
+        qd_ctx *ctx = qd_ctx_new();
+        char text[1024];
+        double th = angles[i], l = 1.5, mm = 2, J[2] = {3, -1};
+        snprintf(text, sizeof text,
+                 "coordinates x, y\n"
+                 "parameters m = 2, l = 3/2, th0 = %.17g\n"
+                 "particle m at (x, y)\n"
+                 "constraint rod: x^2 + y^2 = l^2\n"
+                 "impulse (3, -1) at (x, y)\n"
+                 "reaction rod on (x, y)\n"
+                 "initial x = l*sin(th0), y = -l*cos(th0), x' = 0, y' = 0\n",
+                 th);
+        qd_model *m = parse_ok(ctx, text);
+        qd_impulse r;
+        solve_ok(ctx, m, false, &r);
+        double n[2] = {sin(th), -cos(th)}, Jn = J[0] * n[0] + J[1] * n[1];
+        near(after(&r, "x"), (J[0] - Jn * n[0]) / mm, "x'+");
+        near(after(&r, "y"), (J[1] - Jn * n[1]) / mm, "y'+");
+        near(after(&r, "x") * n[0] + after(&r, "y") * n[1], 0, "the rod holds");
+        assert_int_equal(r.nreact, 1);
+        near(r.react[0][0], -Jn * n[0], "tension x");
+        near(r.react[0][1], -Jn * n[1], "tension y");
+        near(mult(&r, "Lambda_rod") * 2 * l, -Jn, "Lambda |grad phi| = -J.n");
+        qd_impulse_free(&r);
+        qd_model_free(m);
+        qd_ctx_free(ctx);
+    }
+}
+
 /* ---- collisions (Desloge ch. 61) ------------------------------------------ */
 
 #define HEADON                                                                     \
@@ -1223,6 +1262,7 @@ int main(void) {
         cmocka_unit_test(string_taut),
         cmocka_unit_test(couple_on_body),
         cmocka_unit_test(moving_wall),
+        cmocka_unit_test(pendulum_struck),
         cmocka_unit_test(headon),
         cmocka_unit_test(oblique),
         cmocka_unit_test(random_theorems),
