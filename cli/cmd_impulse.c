@@ -468,6 +468,20 @@ static void text_collision(const imp_run *r, qd_buf *b) {
     put_num(b, c->eps[0]);
     qd_buf_puts(b, " -> ");
     put_num(b, c->eps[1]);
+    qd_buf_puts(b, "\n  lab energy of translation = (m1 + m2)|w|^2/2 + relative: ");
+    for (int t = 0; t < 2; t++) {
+        qd_buf_puts(b, t ? " -> " : "");
+        put_num(b, c->T_cm);
+        qd_buf_puts(b, " + ");
+        put_num(b, c->eps[t]);
+        qd_buf_puts(b, " = ");
+        put_num(b, c->T_cm + c->eps[t]);
+    }
+    qd_buf_puts(b, "\n  body 1's speed in the CM frame: s = ");
+    put_num(b, c->s[0]);
+    qd_buf_puts(b, " -> s* = ");
+    put_num(b, c->s[1]);
+    qd_buf_puts(b, " (s*^2 = s^2 (1 + Delta eps/eps))");
     qd_buf_puts(b, "\n  deflection in the CM frame: ");
     put_angle(b, c->theta_cm);
     qd_buf_puts(b, "\n  lab angles from u before: body 1 ");
@@ -603,6 +617,9 @@ static void json_collision(const imp_run *r, cli_json *j) {
     json_vec(j, "u_after", c->u[1]);
     json_num(j, "eps_before", c->eps[0]);
     json_num(j, "eps_after", c->eps[1]);
+    json_num(j, "energy_cm", c->T_cm);
+    json_num(j, "s_before", c->s[0]);
+    json_num(j, "s_after", c->s[1]);
     json_num(j, "theta_cm", c->theta_cm);
     json_num(j, "theta_lab1", c->theta_lab1);
     json_num(j, "theta_lab2", c->theta_lab2);

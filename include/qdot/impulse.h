@@ -79,6 +79,11 @@ typedef struct qd_collision {
     double v1[2][3], v2[2][3];       /* lab velocities, before [0] and after [1] */
     double u[2][3];                  /* relative velocity v1 - v2 */
     double eps[2];                   /* relative kinetic energy m1 m2 |u|^2 / (2 (m1 + m2)) */
+    double T_cm;                     /* (m1 + m2) |w|^2 / 2: the lab energy of translation
+                                        is T_cm + eps, before and after (Koenig) */
+    double s[2];                     /* body 1's speed in the CM frame, before (s) and after
+                                        (s*): s*^2 = s^2 (1 + (eps[1] - eps[0])/eps[0])
+                                        (Desloge ch. 61, masses unchanged) */
     double theta_cm;                 /* deflection of u (CM angle of body 1), radians */
     double theta_lab1, theta_lab2;   /* angles of v1 and v2 after from u before */
     double gamma;                    /* |w| / s*, s* body 1's speed in the CM frame after;

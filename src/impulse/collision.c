@@ -8,9 +8,12 @@
  * eps = m1 m2 |u|^2 / (2 (m1 + m2)) drops by the energy lost.  Body 1's
  * velocity after is w + s* n (n a unit vector, s* its CM speed), so with
  * gamma = |w|/s* and body 2 at rest before, tan theta_lab1 =
- * sin theta/(cos theta + gamma).  The velocities are those of the centres
- * of mass: the time derivatives of the positions, at the frozen
- * configuration with the velocities before and after.
+ * sin theta/(cos theta + gamma).  The lab energy of translation is the
+ * centre of mass's, (m1 + m2) |w|^2/2, plus eps (Koenig), and body 1's CM
+ * speed s = m2 |u|/(m1 + m2) goes to s* with s*^2 = s^2 eps+/eps- (the
+ * map between the energies in the two frames).  The velocities are those
+ * of the centres of mass: the time derivatives of the positions, at the
+ * frozen configuration with the velocities before and after.
  */
 #include "impulse_priv.h"
 
@@ -48,20 +51,23 @@ static double angle(const double *a, const double *b) {
 }
 
 static void describe(qd_collision *c) {
-    double M = c->m1 + c->m2, mu = c->m1 * c->m2 / M, star[3];
+    double M = c->m1 + c->m2, mu = c->m1 * c->m2 / M;
     for (unsigned k = 0; k < 3; k++) {
         c->w[k] = (c->m1 * c->v1[0][k] + c->m2 * c->v2[0][k]) / M;
         for (int t = 0; t < 2; t++)
             c->u[t][k] = c->v1[t][k] - c->v2[t][k];
-        star[k] = c->v1[1][k] - c->w[k];
     }
     for (int t = 0; t < 2; t++)
         c->eps[t] = mu * dot(c->u[t], c->u[t]) / 2;
+    c->T_cm = M * dot(c->w, c->w) / 2;
+    for (int t = 0; t < 2; t++) { /* v1 - w = m2 u/(m1 + m2) */
+        double s1[3] = {c->v1[t][0] - c->w[0], c->v1[t][1] - c->w[1], c->v1[t][2] - c->w[2]};
+        c->s[t] = sqrt(dot(s1, s1));
+    }
     c->theta_cm = angle(c->u[0], c->u[1]);
     c->theta_lab1 = angle(c->u[0], c->v1[1]);
     c->theta_lab2 = angle(c->u[0], c->v2[1]);
-    double sstar = sqrt(dot(star, star));
-    c->gamma = sstar > 0 ? sqrt(dot(c->w, c->w)) / sstar : 0; /* no CM speed after */
+    c->gamma = c->s[1] > 0 ? sqrt(dot(c->w, c->w)) / c->s[1] : 0; /* no CM speed after */
 }
 
 qd_status qd__imp_collision(const qd__imp *s, qd_impulse *r) {

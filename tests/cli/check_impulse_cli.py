@@ -381,6 +381,13 @@ def test_head_on(qdot):
         eps = m1 * m2 * (u1 - u2) ** 2 / (2 * (m1 + m2))
         check_close(tag + ' eps', c['eps_before'], eps)
         check_close(tag + ' eps after', c['eps_after'], E * E * eps)
+        # the lab energy is the centre of mass's plus the relative one (Koenig), and body 1's
+        # CM speed s = m2 |u|/(m1 + m2) becomes s* = E s (C5)
+        check_close(tag + ' energy_cm', c['energy_cm'], p * p / (2 * (m1 + m2)))
+        check_close(tag + ' lab = cm + relative', c['energy_cm'] + c['eps_after'],
+                    d['kinetic_energy_after'])
+        check_close(tag + ' s', c['s_before'], m2 * abs(u1 - u2) / (m1 + m2))
+        check_close(tag + ' s*', c['s_after'], E * m2 * abs(u1 - u2) / (m1 + m2))
         if E > 0:
             check_close(tag + ' theta', c['theta_cm'], math.pi)
             # s* = E s (C5): body 1's speed in the CM frame after

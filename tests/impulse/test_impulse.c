@@ -686,6 +686,162 @@ static void string_taut(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* An impulsive couple G on a free rigid body turning about its fixed
+ * centre: the impulse equations (Desloge ch. 57 thm 1) with the couple's
+ * generalized impulses G . d(omega_space)/dq'_j (Byerly art. 27) say the
+ * angular momentum jumps by G, I_space (w+ - w-) = G, I_space = R I R^T,
+ * at any orientation and whatever the spin before; T after is
+ * w+ . I_space w+ / 2.  Euler angles z-x-z (seed-desloge-B.md C8); the
+ * orientation and rates before are random. */
+static void rz(double a, double R[3][3]) {
+    double c = cos(a), s = sin(a), M[3][3] = {{c, -s, 0}, {s, c, 0}, {0, 0, 1}};
+    memcpy(R, M, sizeof M);
+}
+
+static void rx(double a, double R[3][3]) {
+    double c = cos(a), s = sin(a), M[3][3] = {{1, 0, 0}, {0, c, -s}, {0, s, c}};
+    memcpy(R, M, sizeof M);
+}
+
+static void matmul(double A[3][3], double B[3][3], double C[3][3]) {
+    double P[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            P[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
+    memcpy(C, P, sizeof P);
+}
+
+/* The space angular velocity of R = Rz(ph) Rx(th) Rz(ps) at the rates qd:
+ * ph' about z, th' about the line of nodes Rz(ph) x, ps' about the body's
+ * axis Rz(ph) Rx(th) z. */
+static void omega_zxz(const double *q, const double *qd, double w[3]) {
+    double Rp[3][3], Rt[3][3], Rpt[3][3];
+    rz(q[0], Rp), rx(q[1], Rt), matmul(Rp, Rt, Rpt);
+    for (int i = 0; i < 3; i++)
+        w[i] = qd[0] * (i == 2) + qd[1] * Rp[i][0] + qd[2] * Rpt[i][2];
+}
+
+static void couple_on_body(void **state) {
+    (void)state;
+    static const char text[] =
+        "coordinates ph, th, ps\n"
+        "parameters A = 1, B = 2, C = 7/2, Gx = 3/2, Gy = -1, Gz = 1/2\n"
+        "body b mass 5 inertia (A, B, C) at (0, 0, 0) orientation rot_z(ph)*rot_x(th)*rot_z(ps)\n"
+        "impulse (Gx, Gy, Gz) on b\n";
+    const double I[3] = {1, 2, 3.5}, G[3] = {1.5, -1, 0.5};
+    qt_rng rng = {57};
+    for (int trial = 0; trial < 5; trial++) {
+        qd_ctx *ctx = qd_ctx_new();
+        qd_model *m = parse_ok(ctx, text);
+        double q[3] = {qt_uniform(&rng, -3, 3), qt_uniform(&rng, 0.3, 2.8), qt_uniform(&rng, -3, 3)};
+        double qd[3] = {qt_uniform(&rng, -2, 2), qt_uniform(&rng, -2, 2), qt_uniform(&rng, -2, 2)};
+        qstate st;
+        make_state(ctx, 3, q, qd, &st);
+        qd_impulse_opts o = {.q = st.q, .qd = st.qd};
+        qd_impulse r;
+        if (qd_impulse_solve(ctx, m, &o, &r) != QD_OK)
+            fail_msg("%s", qd_ctx_message(ctx));
+        double Rp[3][3], Rt[3][3], Rs[3][3], R[3][3], w0[3], w1[3], dL[3] = {0, 0, 0}, T = 0;
+        rz(q[0], Rp), rx(q[1], Rt), rz(q[2], Rs), matmul(Rp, Rt, R), matmul(R, Rs, R);
+        omega_zxz(q, qd, w0);
+        omega_zxz(q, r.qd_after, w1);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                double Is = 0; /* (R I R^T)_ij */
+                for (int k = 0; k < 3; k++)
+                    Is += R[i][k] * I[k] * R[j][k];
+                dL[i] += Is * (w1[j] - w0[j]);
+                T += w1[i] * Is * w1[j] / 2;
+            }
+        for (int i = 0; i < 3; i++)
+            near(dL[i], G[i], "angular momentum jump = G");
+        near(r.T_after, T, "T after");
+        assert_true(r.thomson.applies && r.thomson.holds);
+        qd_impulse_free(&r);
+        qd_model_free(m);
+        qd_ctx_free(ctx);
+    }
+}
+
+/* A particle meets a wall moving at speed u, the plane x = u t, at
+ * t = 7/10 (the state's own t): Newton's law acts on the velocity relative
+ * to the wall (Desloge ch. 61: the rate of the gap x - u t, not of x), so
+ * x'+ = u - E (x'- - u), y' kept, and the wall's impulse is
+ * m (1 + E) (u - x'-); the rheonomic row's a0 = -u makes Carnot's and
+ * Bertrand's hypotheses fail (the wall does work on the particle).  Also
+ * the closed form at other (u, E). */
+static void moving_wall(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse_ok(ctx, "coordinates x, y\n"
+                                "parameters m = 3, u = 2, E = 1/2\n"
+                                "particle m at (x, y)\n"
+                                "impact constraint wall: x = u*t restitution E\n");
+    double t0 = 0.7, q[2] = {2 * 0.7, 5}, qd[2] = {-1, 4};
+    qstate st;
+    make_state(ctx, 2, q, qd, &st);
+    qd_impulse_opts o = {.q = st.q, .qd = st.qd, .t = qd_float(ctx, t0), .exact = true};
+    qd_impulse r;
+    if (qd_impulse_solve(ctx, m, &o, &r) != QD_OK)
+        fail_msg("%s", qd_ctx_message(ctx));
+    exact_matches(ctx, m, &r);
+    near(after(&r, "x"), 2 - 0.5 * (-1 - 2), "x'+ = u - E (x'- - u)");
+    near(after(&r, "y"), 4, "y' kept");
+    near(fabs(mult(&r, "Lambda_wall")), 3 * 1.5 * 3, "|impulse| = m (1 + E) (u - x'-)");
+    near(-r.energy_lost, 3 * (3.5 * 3.5 - 1) / 2, "energy given by the wall");
+    assert_false(r.carnot.applies);
+    assert_false(r.bertrand.applies);
+    const char *names[] = {"u", "E"};
+    double pts[3][2] = {{-1.5, 0.3}, {0.4, 1}, {3, 0}};
+    for (int i = 0; i < 3; i++) {
+        double u = pts[i][0], E = pts[i][1];
+        near(at_params(ctx, m, r.qd_after_exact[0], 2, names, pts[i]), u - E * (-1 - u),
+             "exact x'+");
+    }
+    qd_impulse_free(&r);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
+/* An ordinary constraint keeps holding through a blow and takes an
+ * impulsive multiplier too: a bob (m) on a light rod of length l, in
+ * Cartesian coordinates, struck by J at an angle: the rod's impulsive
+ * tension cancels J's component along the rod, so v+ = (J - (J.n) n)/m
+ * and the reaction at the bob is -(J.n) n (Byerly art. 27, the string's
+ * impulsive tension as an unknown multiplier), at several positions. */
+static void pendulum_struck(void **state) {
+    (void)state;
+    double angles[] = {0, 0.4, -1.2, 2.5};
+    for (int i = 0; i < 4; i++) {
+        qd_ctx *ctx = qd_ctx_new();
+        char text[1024];
+        double th = angles[i], l = 1.5, mm = 2, J[2] = {3, -1};
+        snprintf(text, sizeof text,
+                 "coordinates x, y\n"
+                 "parameters m = 2, l = 3/2, th0 = %.17g\n"
+                 "particle m at (x, y)\n"
+                 "constraint rod: x^2 + y^2 = l^2\n"
+                 "impulse (3, -1) at (x, y)\n"
+                 "reaction rod on (x, y)\n"
+                 "initial x = l*sin(th0), y = -l*cos(th0), x' = 0, y' = 0\n",
+                 th);
+        qd_model *m = parse_ok(ctx, text);
+        qd_impulse r;
+        solve_ok(ctx, m, false, &r);
+        double n[2] = {sin(th), -cos(th)}, Jn = J[0] * n[0] + J[1] * n[1];
+        near(after(&r, "x"), (J[0] - Jn * n[0]) / mm, "x'+");
+        near(after(&r, "y"), (J[1] - Jn * n[1]) / mm, "y'+");
+        near(after(&r, "x") * n[0] + after(&r, "y") * n[1], 0, "the rod holds");
+        assert_int_equal(r.nreact, 1);
+        near(r.react[0][0], -Jn * n[0], "tension x");
+        near(r.react[0][1], -Jn * n[1], "tension y");
+        near(mult(&r, "Lambda_rod") * 2 * l, -Jn, "Lambda |grad phi| = -J.n");
+        qd_impulse_free(&r);
+        qd_model_free(m);
+        qd_ctx_free(ctx);
+    }
+}
+
 /* ---- collisions (Desloge ch. 61) ------------------------------------------ */
 
 #define HEADON                                                                     \
@@ -724,6 +880,14 @@ static void headon(void **state) {
     near(r.col.theta_cm, PI, "head-on: u reversed");
     near(r.col.eps[0] - r.col.eps[1], r.energy_lost, "relative energy lost");
     near(r.col.w[0], (2 * 3 + 5 * -1) / 7.0, "w");
+    /* the maps between the frames (Desloge ch. 61, seed-desloge-B.md C5):
+     * the lab energy is the centre of mass's plus the relative one, and
+     * body 1's CM speed s = m2 |u|/(m1 + m2) becomes s* = E s head on */
+    near(r.col.T_cm, 7 * (1.0 / 7) * (1.0 / 7) / 2, "T_cm = (m1 + m2) w^2/2");
+    near(r.col.T_cm + r.col.eps[0], r.T_before, "Koenig before");
+    near(r.col.T_cm + r.col.eps[1], r.T_after, "Koenig after");
+    near(r.col.s[0], 5.0 * 4 / 7, "s");
+    near(r.col.s[1], 0.5 * 5.0 * 4 / 7, "s* = E s");
     assert_false(r.carnot.applies); /* E != 0 */
     qd_impulse_free(&r);
     qd_model_free(m);
@@ -760,6 +924,8 @@ static void oblique(void **state) {
         near(atan2(sin(c->theta_cm), cos(c->theta_cm) + c->gamma), c->theta_lab1,
              "tan theta_lab1 = sin theta/(cos theta + gamma)");
         near(c->eps[0] - c->eps[1], r.energy_lost, "relative energy lost");
+        near(c->T_cm + c->eps[1], r.T_after, "lab energy = CM's + relative");
+        near(c->s[1] * c->s[1], c->s[0] * c->s[0] * c->eps[1] / c->eps[0], "s*^2 = s^2 eps+/eps-");
         /* Newton's law on the normal part of u, the tangential part kept:
          * eps after = mu V^2 (sin^2 beta + E^2 cos^2 beta)/2 */
         double mu = c->m1 * c->m2 / (c->m1 + c->m2), cb = cos(PI / 5), sb = sin(PI / 5);
@@ -1094,6 +1260,9 @@ int main(void) {
         cmocka_unit_test(rod_end_fixed),
         cmocka_unit_test(hoop_pivoted),
         cmocka_unit_test(string_taut),
+        cmocka_unit_test(couple_on_body),
+        cmocka_unit_test(moving_wall),
+        cmocka_unit_test(pendulum_struck),
         cmocka_unit_test(headon),
         cmocka_unit_test(oblique),
         cmocka_unit_test(random_theorems),
