@@ -30,6 +30,7 @@ results disagree; missing the goal is reported, not an error.
 import argparse
 import os
 import random
+import shutil
 import subprocess
 import sys
 
@@ -41,6 +42,7 @@ PYTHON = '/usr/bin/python3'
 MODELS = [('rolling_disk_speeds', os.path.join(ROOT, 'examples', 'rolling_disk_speeds.qd')),
           ('bicycle_speeds', os.path.join(ROOT, 'examples', 'bicycle_speeds.qd'))]
 VARIANTS = ['speeds:kane', 'speeds:appell', 'speeds:hamel', 'multipliers', 'multipliers+solve']
+IR_VARIANTS = ['speeds:kane', 'speeds:appell', 'speeds:hamel', 'multipliers']
 TOL = 1e-9
 # SymPy's dependent speed that is the velocity of a coordinate of qdot's model
 DEPENDENT = {('bicycle_speeds', 'x'): 'ux', ('bicycle_speeds', 'y'): 'uy',
@@ -205,7 +207,29 @@ def print_table(hdr, rows):
         print('  '.join(c.rjust(w[i]) for i, c in enumerate(r)))
 
 
-def report(q, s, sizes):
+def instructions(qbin, name, path, variant):
+    """Instructions of one derivation (callgrind: 3 runs less 1, halved), or None
+    without valgrind."""
+    counts = []
+    for reps in (1, 3):
+        out = '/tmp/qdot_speeds_cg.%d.out' % os.getpid()
+        p = subprocess.run(['valgrind', '--tool=callgrind', '--callgrind-out-file=' + out,
+                            qbin, '--count', variant, str(reps), path],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        total = None
+        if p.returncode == 0 and os.path.exists(out):
+            with open(out) as f:
+                for line in f:
+                    if line.startswith('summary:') or line.startswith('totals:'):
+                        total = int(line.split()[1])
+            os.remove(out)
+        if total is None:
+            return None
+        counts.append(total)
+    return (counts[1] - counts[0]) / 2
+
+
+def report(q, s, sizes, ir):
     print()
     print('nonholonomic systems: parse + equations of motion (median processor time)')
     print()
@@ -234,9 +258,28 @@ def report(q, s, sizes):
                       '%d (%.1f s)' % (simp['ops'], simp['med'])) if simp else '-'])
     print_table(hdr, rows)
     print()
+    if ir:
+        print('instructions per parse + derivation (callgrind, deterministic)')
+        print()
+        hdr = ['model'] + IR_VARIANTS + ['kane/multipliers']
+        rows = []
+        for name, _ in MODELS:
+            k, m = ir.get((name, 'speeds:kane')), ir.get((name, 'multipliers'))
+            rows.append([name] + ['%.2f M' % (ir[(name, v)] / 1e6) if ir.get((name, v)) else '-'
+                                  for v in IR_VARIANTS] + ['%.3f' % (k / m) if k and m else '-'])
+        print_table(hdr, rows)
+        print()
     for name, _ in MODELS:
         a, b = q.get((name, 'speeds:kane')), q.get((name, 'multipliers'))
-        if a and b:
+        k, m = ir.get((name, 'speeds:kane')), ir.get((name, 'multipliers'))
+        if k and m:
+            # the verdict on instructions: the times above move by tens of
+            # percent with the machine's load, the counts do not
+            print('goal (%s): speeds not slower than multipliers: kane/multipliers = %.3f '
+                  'in instructions (%.2f in time): %s'
+                  % (name, k / m, a['med'] / b['med'] if a and b else float('nan'),
+                     'met' if k <= m else 'MISSED'))
+        elif a and b:
             print('goal (%s): speeds not slower than multipliers: kane/multipliers = %.2f: %s'
                   % (name, a['med'] / b['med'], 'met' if a['med'] <= b['med'] else 'MISSED'))
 
@@ -265,7 +308,13 @@ def main():
     for name, path in MODELS:
         agreed, sizes[name] = agree(build, name, path, rng)
         ok = ok and agreed
-    report(q, s, sizes)
+    ir = {}
+    if shutil.which('valgrind'):
+        log('counting instructions (valgrind --tool=callgrind)')
+        for name, path in MODELS:
+            for v in IR_VARIANTS:
+                ir[(name, v)] = instructions(qbin, name, path, v)
+    report(q, s, sizes, ir)
     return 0 if ok else 1
 
 

@@ -21,8 +21,14 @@
  * equations (lines "M r s EXPR", "f r EXPR", "kin j EXPR") for the driver's
  * agreement check, and the multiplier formulation ("EM j k", "Ef j",
  * "EA k j", "Eb k") for its sizes.
+ * `--count VARIANT N FILE` derives that variant N times and prints nothing:
+ * the driver runs it under callgrind with N = 1 and N = 3, and half the
+ * difference is the instructions of one derivation, free of start-up and
+ * of the machine's load (processor time on a shared machine varies by tens
+ * of percent between runs; instruction counts do not).
  * Usage: speeds_qdot [--budget S] [--min-reps N] FILE.qd ...
  *        speeds_qdot --print FILE.qd
+ *        speeds_qdot --count speeds:kane|speeds:appell|speeds:hamel|multipliers N FILE.qd
  */
 #define _POSIX_C_SOURCE 199309L
 #include <qdot/qdot.h>
@@ -289,7 +295,31 @@ static int print_file(const char *path) {
     return bad;
 }
 
+/* --count: `reps` derivations of one variant, untimed. */
+static int count(const char *variant, int reps, const char *path) {
+    int method = MULTIPLIERS;
+    if (strncmp(variant, "speeds:", 7) == 0) {
+        qd_speeds_method k;
+        if (!qd_speeds_method_from_name(variant + 7, &k))
+            return 2;
+        method = (int)k;
+    } else if (strcmp(variant, "multipliers") != 0) {
+        return 2;
+    }
+    char *text = slurp(path);
+    char *use = text && method == MULTIPLIERS ? without_speeds(text) : text;
+    int rc = use ? 0 : 1;
+    for (int r = 0; rc == 0 && r < reps; r++)
+        rc = derive(use, method, NULL) != 0;
+    if (use != text)
+        free(use);
+    free(text);
+    return rc;
+}
+
 int main(int argc, char **argv) {
+    if (argc == 5 && !strcmp(argv[1], "--count"))
+        return count(argv[2], atoi(argv[3]), argv[4]);
     opts o = {1.0, 5};
     int i = 1;
     for (; i + 1 < argc && strncmp(argv[i], "--", 2) == 0; i += 2) {

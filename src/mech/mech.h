@@ -85,11 +85,12 @@ qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t 
 
 /* The same for sparse A (solve_sparse.c): rows and columns with a single
  * entry are solved directly, only the rest by elimination.  Each unknown
- * solved by a singleton row or column is passed through tidy (with arg) as
- * soon as it is known, since the rows still to come substitute it: the
- * caller knows the shape of the solution (linear in some symbols, say) and
- * can tidy it more cheaply than qd_simplify, the default (tidy NULL). */
-typedef const qd_expr *(*qd__tidy_fn)(void *arg, const qd_expr *x);
+ * X_j (column c) solved by a singleton row or column is passed through tidy
+ * (with arg, j and c) as soon as it is known, since the rows still to come
+ * substitute it: the caller knows the shape of the solution (linear in some
+ * symbols, say) and can tidy it more cheaply than qd_simplify, the default
+ * (tidy NULL). */
+typedef const qd_expr *(*qd__tidy_fn)(void *arg, size_t j, size_t c, const qd_expr *x);
 qd_status qd__solve_sparse(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
                            const qd_expr *const *B, const qd_expr **X, size_t max_ops,
                            qd__tidy_fn tidy, void *arg);

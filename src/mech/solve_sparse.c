@@ -27,8 +27,8 @@ typedef struct peel {
     void *arg;
 } peel;
 
-static const qd_expr *tidy(const peel *p, const qd_expr *x) {
-    return p->tidy ? (x ? p->tidy(p->arg, x) : NULL) : qd_simplify(p->ctx, x);
+static const qd_expr *tidy(const peel *p, size_t j, size_t c, const qd_expr *x) {
+    return p->tidy ? (x ? p->tidy(p->arg, j, c, x) : NULL) : qd_simplify(p->ctx, x);
 }
 
 static bool nz(const peel *p, size_t i, size_t j) { return !qd_is_zero(p->A[i * p->n + j]); }
@@ -66,7 +66,7 @@ static qd_status forward(peel *p, size_t i, size_t j) {
     size_t n = p->n, nc = p->nc;
     p->row_on[i] = p->col_on[j] = false;
     for (size_t c = 0; c < nc; c++)
-        if (!(p->X[j * nc + c] = tidy(p, qd_div(ctx, p->R[i * nc + c], p->A[i * n + j]))))
+        if (!(p->X[j * nc + c] = tidy(p, j, c, qd_div(ctx, p->R[i * nc + c], p->A[i * n + j]))))
             return failed(ctx);
     for (size_t r = 0; r < n; r++)
         for (size_t c = 0; p->row_on[r] && nz(p, r, j) && c < nc; c++)
@@ -157,7 +157,7 @@ static qd_status backward(peel *p, const qd_expr *const *B) {
             for (size_t l = 0; l < n && s; l++)
                 if (l != j && nz(p, i, l))
                     s = qd_sub(ctx, s, qd_mul(ctx, p->A[i * n + l], p->X[l * nc + c]));
-            if (!(p->X[j * nc + c] = tidy(p, qd_div(ctx, s, p->A[i * n + j]))))
+            if (!(p->X[j * nc + c] = tidy(p, j, c, qd_div(ctx, s, p->A[i * n + j]))))
                 return failed(ctx);
         }
     }

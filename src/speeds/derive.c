@@ -212,25 +212,32 @@ static qd_status count_error(qd__spd *d) {
 
 /* A velocity solved for, linear in the symbols of the right-hand side:
  * each coefficient simplified on its own, which is all qd_simplify would do
- * to it and costs much less than simplifying the whole sum. */
+ * to it and costs much less than simplifying the whole sum.  The
+ * coefficients of X_j are kept (coef, n per unknown, and rest; done[j]), so
+ * that velocity_map need not read them off again. */
 typedef struct linear_form {
     qd_ctx *ctx;
     size_t n;
     const qd_expr *const *sym;
-    const qd_expr **c;
+    const qd_expr **coef, **rest;
+    bool *done;
 } linear_form;
 
-static const qd_expr *tidy_linear(void *arg, const qd_expr *x) {
+static const qd_expr *tidy_linear(void *arg, size_t j, size_t col, const qd_expr *x) {
+    (void)col; /* one column */
     linear_form *f = arg;
-    const qd_expr *rest = NULL;
-    qd_status st = qd_linear_coeffs(f->ctx, x, f->n, f->sym, f->c, &rest);
+    const qd_expr **c = f->coef + j * f->n;
+    qd_status st = qd_linear_coeffs(f->ctx, x, f->n, f->sym, c, &f->rest[j]);
     if (st == QD_ERR_NONLINEAR) {
         qd__ctx_recover(f->ctx);
         return qd_simplify(f->ctx, x);
     }
-    const qd_expr *sum = st == QD_OK ? qd_simplify(f->ctx, rest) : NULL;
-    for (size_t r = 0; sum && r < f->n; r++)
-        sum = qd_add(f->ctx, sum, qd_mul(f->ctx, qd_simplify(f->ctx, f->c[r]), f->sym[r]));
+    const qd_expr *sum = st == QD_OK ? (f->rest[j] = qd_simplify(f->ctx, f->rest[j])) : NULL;
+    for (size_t r = 0; sum && r < f->n; r++) {
+        c[r] = qd_simplify(f->ctx, c[r]);
+        sum = c[r] ? qd_add(f->ctx, sum, qd_mul(f->ctx, c[r], f->sym[r])) : NULL;
+    }
+    f->done[j] = sum != NULL;
     return sum;
 }
 
@@ -256,13 +263,17 @@ static qd_status velocity_map(qd__spd *d) {
             d->P[(m + k) * n + j] = e->con[k].a[j];
         d->p0[m + k] = e->con[k].a0;
     }
-    /* B, X (n each), the unknowns' symbols (nx: u, then s), coefficients
-     * (nx, and nx more for tidy_linear) */
-    const qd_expr **B = qd__calloc(ctx, 2 * n + 3 * nx + 1, sizeof *B);
-    if (!B)
+    /* B, X, the rests (n each), the unknowns' symbols (nx: u, then s),
+     * the coefficients (n nx) */
+    const qd_expr **B = qd__calloc(ctx, 3 * n + nx + n * nx + 1, sizeof *B);
+    bool *done = qd__calloc(ctx, n + 1, sizeof *done);
+    if (!B || !done) {
+        qd__free(B);
+        qd__free(done);
         return nomem(ctx);
-    const qd_expr **X = B + n, **sym = X + n, **c = sym + nx;
-    linear_form form = {ctx, nx, sym, c + nx};
+    }
+    const qd_expr **X = B + n, **rest = X + n, **sym = rest + n, **coef = sym + nx;
+    linear_form form = {ctx, nx, sym, coef, rest, done};
     for (size_t r = 0; r < nx; r++) {
         char name[48];
         if (r >= m)
@@ -278,8 +289,9 @@ static qd_status velocity_map(qd__spd *d) {
     if (st == QD_ERR_SINGULAR)
         st = singular_map(d);
     for (size_t j = 0; st == QD_OK && j < n; j++) {
-        const qd_expr *rest = NULL;
-        st = qd_linear_coeffs(ctx, X[j], nx, sym, c, &rest);
+        const qd_expr **c = coef + j * nx;
+        if (!done[j]) /* from the elimination of the core */
+            st = qd_linear_coeffs(ctx, X[j], nx, sym, c, &rest[j]);
         for (size_t r = 0; st == QD_OK && r < nx; r++) {
             const qd_expr *x = c[r];
             if (!x)
@@ -289,7 +301,7 @@ static qd_status velocity_map(qd__spd *d) {
             else
                 d->Pinv[j * n + r] = x;
         }
-        if (st == QD_OK && !(e->w[j] = rest))
+        if (st == QD_OK && !(e->w[j] = rest[j]))
             st = nomem(ctx);
         /* q'_j = sum_r W_jr u_r + w_j: the s_k drop out, and X_j came out of
          * the solve simplified coefficient by coefficient (tidy_linear or
@@ -305,6 +317,7 @@ static qd_status velocity_map(qd__spd *d) {
         for (size_t r = 0; r < m; r++)
             d->Pinv[j * n + r] = e->W[j * m + r];
     qd__free(B);
+    qd__free(done);
     return st;
 }
 

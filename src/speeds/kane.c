@@ -60,7 +60,7 @@ qd_status qd__spd_kane(qd__spd *d) {
         f[j] = qd__spd_on_motion(d, sh->f[j]);
     }
     for (size_t i = 0; i < n * n; i++)
-        M[i] = qd__spd_on_motion(d, sh->M[i]);
+        M[i] = qd_is_zero(sh->M[i]) ? sh->M[i] : qd__spd_on_motion(d, sh->M[i]);
     for (size_t k = 0; st == QD_OK && k < n; k++)
         for (size_t r = 0; r < m; r++)
             if (!(MTW[k * m + r] = dot(ctx, n, M + k, n, e->W + r, m)))

@@ -187,7 +187,20 @@ unsigned qd_uderiv_slot(const qd_expr *e, size_t i) { return e->u.fn.slots[i]; }
 static bool has_rec(const qd_expr *e, const qd_expr *x, qd_ptrmap *seen) {
     if (e == x)
         return true;
-    if (!e->nargs || qd_ptrmap_has(seen, e))
+    if (!e->nargs)
+        return false;
+    /* a node over leaves only (sin(q), q'^2, a*b) is answered without the
+     * memo: remembering it would cost an allocation and save nothing */
+    bool leaves = true;
+    for (uint32_t i = 0; leaves && i < e->nargs; i++)
+        leaves = !e->args[i]->nargs;
+    if (leaves) {
+        for (uint32_t i = 0; i < e->nargs; i++)
+            if (e->args[i] == x)
+                return true;
+        return false;
+    }
+    if (qd_ptrmap_has(seen, e))
         return false;
     for (uint32_t i = 0; i < e->nargs; i++)
         if (has_rec(e->args[i], x, seen))
