@@ -254,6 +254,8 @@ static void text_conic(const orbit_run *r, qd_buf *b) {
         qd_buf_puts(b, ", nu = ");
         num(b, o->nu);
     }
+    if (o->repulsive)
+        qd_buf_puts(b, ", repulsive");
     if (isfinite(o->periapsis)) {
         qd_buf_printf(b, ", periapsis at %s = ", qd_expr_name(r->o->routh->ign[0]));
         num(b, o->periapsis);
@@ -268,7 +270,7 @@ static void put_equation(orbit_run *r, qd_buf *b) {
     if (o->conic) {
         qd_buf_printf(b, "%s = ", qd_expr_name(r->o->x));
         num(b, o->p);
-        qd_buf_puts(b, "/(1 + ");
+        qd_buf_puts(b, o->repulsive ? "/(" : "/(1 + ");
         num(b, o->e);
         double peri = isfinite(o->periapsis) ? o->periapsis : 0;
         bool group = o->nu != 1 && peri != 0;
@@ -282,7 +284,8 @@ static void put_equation(orbit_run *r, qd_buf *b) {
             qd_buf_printf(b, " %s ", peri < 0 ? "+" : "-");
             num(b, fabs(peri));
         }
-        qd_buf_puts(b, group ? ")))" : "))");
+        qd_buf_puts(b, group ? "))" : ")");
+        qd_buf_puts(b, o->repulsive ? " - 1)" : ")"); /* C3's p/(e cos - 1) */
         return;
     }
     const qd_expr *lhs = NULL;
@@ -386,6 +389,8 @@ static void json_conic(const orbit_run *r, cli_json *j) {
         cli_json_key(j, keys[k]);
         jnum(j, v[k]);
     }
+    cli_json_key(j, "repulsive");
+    cli_json_bool(j, o->repulsive);
     cli_json_end_object(j);
 }
 

@@ -7,7 +7,10 @@
  *   turning points a(1 -+ e), p = h^2/(m k), e = sqrt(1 + 2 E h^2/(m k^2)),
  *   radial period 2 pi sqrt(m a^3/k), advance 2 pi; the hyperbola and the
  *   parabola unbound with one turning point p/(1 + e), turning by 2 acos(-1/e)
- *   between the asymptotes; the circle.
+ *   between the asymptotes; the circle; Rutherford's repulsive hyperbola
+ *   (C3's form p/(e cos - 1), its periapsis, T15's deflection).
+ * - Desloge ch. 58 P8: the apsidal speeds in the ratio b/a and the speed
+ *   (b^2 - a^2) v^2 = 2 a^2 int_a^r f + 2 b^2 int_r^b f.
  * - Power laws, force -k r^n (Desloge ch. 59 eq. 31, C3 and pitfall 10):
  *   the near-circular apsidal angle pi/sqrt(n + 3), by the general formula
  *   and by Bertrand's; Hooke's law (n = 1) closes with apsidal angle pi/2
@@ -251,6 +254,41 @@ static void test_kepler_circle(void **state) {
     unload(&f);
 }
 
+/* Rutherford's repulsive k/r (Desloge ch. 60 ex. 2, T15; the conic in C3's
+ * repulsive form r = p/(e cos(theta - theta_peri) - 1), p = h^2/(m k)).  The
+ * state moves inwards with theta' > 0, so the closest approach p/(e - 1) comes
+ * later, at theta_peri > 0, and the orbit turns by 2 acos(1/e) between its
+ * asymptotes: the deflection pi - 2 acos(1/e) is Rutherford's tan(Theta/2) =
+ * k/(2 E b), b = h/sqrt(2 m E).  Written as p/(1 + e cos) the periapsis came
+ * out half a turn away (at -2.76 instead of 0.38 here) with p < 0 and a > 0. */
+static void test_kepler_repulsive(void **state) {
+    (void)state;
+    fix f;
+    double m = 1.3, k = 4, r = 1, rd = -1.5, td = 2.5;
+    load(&f, "coordinates r, theta\nparameters m = 1.3, k = 4\n"
+             "particle m at r*(cos(theta), sin(theta))\nV = k/r\n");
+    assert_int_equal(reduce(&f, THETA), QD_OK);
+    set(&f, "r", r);
+    set(&f, "r'", rd);
+    set(&f, "theta'", td);
+    assert_int_equal(solve(&f, NULL), QD_OK);
+    double h = m * r * r * td, E = m * (rd * rd + r * r * td * td) / 2 + k / r;
+    double p = h * h / (m * k), e = sqrt(1 + 2 * E * h * h / (m * k * k));
+    assert_int_equal(f.r.kind, QD_ORBIT_UNBOUND);
+    assert_true(f.r.conic && f.r.repulsive);
+    near(f.r.p, p, 1e-14);
+    near(f.r.e, e, 1e-14);
+    near(f.r.a, -k / (2 * E), 1e-13);
+    near(f.r.turn[0], p / (e - 1), 1e-13);
+    assert_true(f.r.periapsis > 0 && f.r.periapsis < PI);
+    near(p / (e * cos(f.r.periapsis - f.r.periapsis) - 1), f.r.turn[0], 1e-13);
+    near(p / (e * cos(0 - f.r.periapsis) - 1), r, 1e-13); /* through the state */
+    near(f.r.advance[0], 2 * acos(1 / e), 1e-12);
+    double b = h / sqrt(2 * m * E);
+    near(PI - f.r.advance[0], 2 * atan(k / (2 * E * b)), 1e-12);
+    unload(&f);
+}
+
 /* ---- power laws and Desloge's problems ------------------------------------------ */
 
 static const char power[] =
@@ -320,6 +358,47 @@ static void test_inverse_cube(void **state) {
     near(f.r.advance[0], 4 * PI / sqrt(3), 1e-12);
     near(f.r.precession[0], 4 * PI / sqrt(3) - 2 * PI, 1e-11);
     unload(&f);
+}
+
+/* Desloge ch. 58 P8 (seed 000): with two apsidal distances a < b the apsidal
+ * speeds are in the ratio b/a, and the speed at r obeys
+ *     (b^2 - a^2) v^2 = 2 a^2 int_a^r f dr + 2 b^2 int_r^b f dr
+ * (unit mass, f = dV/dr the attraction; from energy and h = a v_a = b v_b; the
+ * seed's OCR drops the 2s).  Here f = k r^n (power law n = 2, V = k r^3/3)
+ * and the Yukawa V = -A e^(-B r)/r, with the speeds at the apsides taken from
+ * the energy alone, sqrt(2 (E - V)), so both turning points are checked as the
+ * places where the whole speed is transverse. */
+static void apsidal_speeds(const char *model, double (*V)(double), double r0, double rd0,
+                           double td0) {
+    fix f;
+    load(&f, model);
+    assert_int_equal(reduce(&f, PHI), QD_OK);
+    set(&f, "r", r0);
+    set(&f, "r'", rd0);
+    set(&f, "phi'", td0);
+    assert_int_equal(solve(&f, NULL), QD_OK);
+    assert_int_equal(f.r.kind, QD_ORBIT_BOUND);
+    double a = f.r.turn[0], b = f.r.turn[1], E = f.r.energy;
+    near(E, (rd0 * rd0 + r0 * r0 * td0 * td0) / 2 + V(r0), 1e-14);
+    double va = sqrt(2 * (E - V(a))), vb = sqrt(2 * (E - V(b)));
+    near(va / vb, b / a, 1e-12);
+    double v2 = rd0 * rd0 + r0 * r0 * td0 * td0;
+    /* int f dr = V: 2 a^2 (V(r) - V(a)) + 2 b^2 (V(b) - V(r)) */
+    near((b * b - a * a) * v2, 2 * a * a * (V(r0) - V(a)) + 2 * b * b * (V(b) - V(r0)), 1e-12);
+    unload(&f);
+}
+
+static double V_cubic(double r) { return r * r * r / 3; }
+static double V_yukawa(double r) { return -2 * exp(-0.6 * r) / r; }
+
+static void test_apsidal_speeds(void **state) {
+    (void)state;
+    apsidal_speeds("coordinates r, phi\nparameters m = 1\n"
+                   "particle m at r*(cos(phi), sin(phi))\nV = r^3/3\n",
+                   V_cubic, 1.2, 0.7, 0.9);
+    apsidal_speeds("coordinates r, phi\nparameters m = 1\n"
+                   "particle m at r*(cos(phi), sin(phi))\nV = -2*exp(-0.6*r)/r\n",
+                   V_yukawa, 1.0, 0.3, 1.1);
 }
 
 /* V = -a/(4 r^4) at E = 0: the circle through the centre. */
@@ -529,6 +608,7 @@ int main(void) {
         cmocka_unit_test(test_kepler_ellipse),   cmocka_unit_test(test_kepler_retrograde),
         cmocka_unit_test(test_kepler_hyperbola),
         cmocka_unit_test(test_kepler_parabola),  cmocka_unit_test(test_kepler_circle),
+        cmocka_unit_test(test_kepler_repulsive), cmocka_unit_test(test_apsidal_speeds),
         cmocka_unit_test(test_power_law_apsidal), cmocka_unit_test(test_hooke_closes),
         cmocka_unit_test(test_inverse_cube),     cmocka_unit_test(test_r4_capture),
         cmocka_unit_test(test_radial_infall),    cmocka_unit_test(test_yukawa_and_string),
