@@ -198,6 +198,11 @@ static void text_kind(const orbit_run *r, qd_buf *b) {
         if (o->nign && isfinite(o->advance[0]))
             by_name(r, b, "turn from infinity and back", o->advance);
     }
+    if (o->kind == QD_ORBIT_ASYMPTOTIC) {
+        qd_buf_puts(b, "radial period: none (E is the top of V_eff: the motion creeps towards "
+                       "the unstable circle at the end of its interval for ever)\n");
+        by_name(r, b, "advance on the way", o->advance);
+    }
     if (o->kind == QD_ORBIT_CAPTURE) {
         qd_buf_puts(b, "falls into the singular point of V_eff after time ");
         num(b, o->fall_time);

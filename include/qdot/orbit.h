@@ -73,7 +73,10 @@ typedef enum qd_orbit_kind {
     QD_ORBIT_BOUND,     /* between two turning points */
     QD_ORBIT_UNBOUND,   /* one turning point (or none): the motion goes to infinity */
     QD_ORBIT_CIRCULAR,  /* at rest at a minimum of V_eff */
-    QD_ORBIT_CAPTURE    /* from a turning point into a singular point of V_eff (the centre) */
+    QD_ORBIT_CAPTURE,   /* from a turning point into a singular point of V_eff (the centre) */
+    QD_ORBIT_ASYMPTOTIC /* E is the top of V_eff at an unstable circle bounding the interval:
+                           the motion creeps towards it without end (no period; an ignored
+                           coordinate with a rate there advances by +-inf) */
 } qd_orbit_kind;
 
 QD_API const char *qd_orbit_kind_name(qd_orbit_kind k); /* "bound", "unbound", ... */

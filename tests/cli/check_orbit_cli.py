@@ -24,6 +24,8 @@ computed here independently of qdot:
 - --orbit (C3): the printed conic through the state and its turning points
   (Kepler both ways round, Rutherford's repulsive branch, ch. 58 P9), and the
   printed quadrature, integrated by mpmath, equal to the apsidal angle;
+- Desloge ch. 58 P10 b: at the top of V_eff the orbit is asymptotic to the
+  unstable circle from both sides; just below it the inside orbit is captured;
 - errors (exit 2): no --ignore, a coordinate that is not cyclic, two
   coordinates left, an energy below the minimum of V_eff (both numbers named).
 
@@ -253,6 +255,29 @@ def orbit_equation(qdot, tmp):
     close('yukawa quadrature = apsidal angle', float(alpha), j['apsidal_angle']['phi'], 1e-12)
 
 
+def separatrix(qdot):
+    """Desloge ch. 58 P10 b (examples/r4_potential.qd, m = 2, a = 1, p_phi = 2): at the
+    top of V_eff, E = p^4/(4 a m^2) = 1, the orbit creeps towards r = b = sqrt(a m)/p
+    from either side; 1e-9 below it the inside orbit turns just short of b (the
+    walk used to jump that gap and call the orbit unbound)."""
+    b = 1 / math.sqrt(2)
+    for at, lo, hi in (("r=0.5, phi'=4", 0.0, b), ("r=2, phi'=0.25", b, None)):
+        j = orbit(qdot, 'r4_potential.qd', 'phi', '--at', at, '--energy', '1')
+        if not j:
+            continue
+        check('separatrix %s kind' % at, j['kind'] == 'asymptotic', j['kind'])
+        close('separatrix %s lo' % at, j['interval'][0], lo, 1e-12)
+        check('separatrix %s hi' % at, (hi is None and j['interval'][1] is None) or
+              (hi is not None and abs(j['interval'][1] - hi) < 1e-12), j['interval'])
+        check('separatrix %s no period' % at, j['radial_period'] is None and
+              j['advance']['phi'] is None, j)
+    j = orbit(qdot, 'r4_potential.qd', 'phi', '--at', "r=0.5, phi'=4", '--energy', '0.999999999')
+    if j:
+        check('below the top: capture', j['kind'] == 'capture', j['kind'])
+        t = j['turning_points']
+        check('below the top: turns short of b', len(t) == 1 and 0.999 * b < t[0] < b, t)
+
+
 def errors(qdot):
     path = str(EXAMPLES / 'kepler_polar.qd')
     rc, out, err = run(qdot, 'orbit', path)
@@ -277,6 +302,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         yukawa(qdot, tmp)
         orbit_equation(qdot, tmp)
+    separatrix(qdot)
     errors(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0

@@ -20,7 +20,9 @@
  *   quadrature (advance 4 pi/sqrt 3).
  * - Desloge ch. 58, the r^-4 potential V = -a/(4 r^4): at E = 0 the orbit
  *   is a circle through the centre, r = d cos(phi), d = sqrt(m a/2)/h: the
- *   particle falls in after phi turns by pi/2, in time (m d^2/h) pi/4.
+ *   particle falls in after phi turns by pi/2, in time (m d^2/h) pi/4; at
+ *   E = h^4/(4a) (P10 b) the orbits b tanh(phi/sqrt 2) and b coth(phi/sqrt 2)
+ *   creep towards the unstable circle r = b (kind asymptotic).
  * - Radial infall (T04, ch. 58 P1): fall time T/(4 sqrt 2).
  * - T07 (ch. 58 P7) Yukawa near-circular beta^2 = (1 + x - x^2)/(1 + x);
  *   T11 (ch. 58 P11) elastic string, apsidal angle 1.404962946.
@@ -424,6 +426,48 @@ static void test_r4_capture(void **state) {
     unload(&f);
 }
 
+/* Desloge ch. 58 P10 (b), seed 000 (unit mass): at E = h^4/(4a), the top of
+ * V_eff at the unstable circle r = b = sqrt(a)/h, the orbit is r = b tanh(phi/sqrt 2)
+ * inside the circle and b coth(phi/sqrt 2) outside: both creep towards r = b
+ * while phi grows without end.  The walk used to pass through the double root
+ * (E - V_eff touches 0 there without changing sign) and call both unbound over
+ * 0 <= r <= inf.  Just below the top the inside orbit is still a capture. */
+static void separatrix_at(double r, double E, qd_orbit_kind want, double lo, double hi) {
+    double a = 0.9, h = 0.7, b = sqrt(a) / h;
+    fix f;
+    load(&f, "coordinates r, phi\nparameters m = 1, a = 0.9\n"
+             "particle m at r*(cos(phi), sin(phi))\nV = -a/(4*r^4)\n");
+    assert_int_equal(reduce(&f, PHI), QD_OK);
+    set(&f, "r", r);
+    set(&f, "phi'", h / (r * r));
+    assert_int_equal(solve(&f, &E), QD_OK);
+    assert_int_equal(f.r.kind, want);
+    if (want == QD_ORBIT_ASYMPTOTIC) {
+        assert_true(f.r.lo >= 0);
+        near(f.r.lo, lo, 1e-12);
+        if (isinf(hi))
+            assert_true(isinf(f.r.hi));
+        else
+            near(f.r.hi, hi, 1e-12);
+        assert_int_equal(f.r.nturn, 0);
+        assert_true(isinf(f.r.advance[0]) && f.r.advance[0] > 0);
+        assert_true(isnan(f.r.period));
+        double T;
+        assert_int_equal(qd_orbit_period(f.ctx, f.o, &f.r, &T), QD_ERR_ARG);
+    } else {
+        assert_true(f.r.turn[0] < b && f.r.turn[0] > 0.99 * b);
+    }
+    unload(&f);
+}
+
+static void test_r4_separatrix(void **state) {
+    (void)state;
+    double a = 0.9, h = 0.7, b = sqrt(a) / h, top = h * h * h * h / (4 * a);
+    separatrix_at(b * tanh(0.5), top, QD_ORBIT_ASYMPTOTIC, 0, b);
+    separatrix_at(b / tanh(0.5), top, QD_ORBIT_ASYMPTOTIC, b, INFINITY);
+    separatrix_at(b * tanh(0.5), top * (1 - 1e-9), QD_ORBIT_CAPTURE, 0, 0);
+}
+
 static void test_radial_infall(void **state) {
     (void)state;
     fix f;
@@ -528,6 +572,15 @@ static void test_planar_pendulum(void **state) {
             near(f.r.circle[i].omega, sqrt(9.81 / 0.9), 1e-7);
         }
     assert_true(hanging);
+    qd_orbit_result_free(&f.r);
+    /* at E = m g a, the energy of the upright pendulum, it creeps towards theta =
+     * +-pi (the separatrix) and never swings back or over */
+    double top = 1.1 * 9.81 * 0.9;
+    assert_int_equal(solve(&f, &top), QD_OK);
+    assert_int_equal(f.r.kind, QD_ORBIT_ASYMPTOTIC);
+    near(f.r.lo, -PI, 1e-12);
+    near(f.r.hi, PI, 1e-12);
+    near(f.r.advance[0], 0, 0);
     unload(&f);
 }
 
@@ -611,6 +664,7 @@ int main(void) {
         cmocka_unit_test(test_kepler_repulsive), cmocka_unit_test(test_apsidal_speeds),
         cmocka_unit_test(test_power_law_apsidal), cmocka_unit_test(test_hooke_closes),
         cmocka_unit_test(test_inverse_cube),     cmocka_unit_test(test_r4_capture),
+        cmocka_unit_test(test_r4_separatrix),
         cmocka_unit_test(test_radial_infall),    cmocka_unit_test(test_yukawa_and_string),
         cmocka_unit_test(test_spherical_pendulum), cmocka_unit_test(test_planar_pendulum),
         cmocka_unit_test(test_heavy_top),
