@@ -102,6 +102,24 @@ static int initial_state(orbit_run *r, const orbit_args *a) {
 }
 
 /* "p_theta=VALUE[, p_psi=VALUE]": each the momentum of an ignored coordinate. */
+/* --energy: an expression in the parameters (and the state's values), so that
+ * "m*g*a" names the top of a pendulum's swing exactly. */
+static int energy_value(orbit_run *r, const char *text) {
+    const qd_read_opts opts = {.new_symbols = false};
+    qd_diag err;
+    const qd_expr *e = qd_read(r->ctx, text, &opts, &err);
+    if (!e) {
+        cli_diag_read("--energy", text, &err);
+        return QD_EXIT_USAGE;
+    }
+    if (qd_eval(r->ctx, e, r->n, r->syms, r->vals, &r->E) != QD_OK || !isfinite(r->E)) {
+        qd_ctx_clear_error(r->ctx);
+        cli_diag_error("--energy: '%s' does not evaluate to a finite number", text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
 static int momentum_item(orbit_run *r, const char *item, size_t len) {
     const char *eq = memchr(item, '=', len);
     char name[128], text[256];
@@ -150,9 +168,8 @@ static int build_state(orbit_run *r, const orbit_args *a) {
         s = comma ? comma + 1 : NULL;
     }
     if (rc == QD_EXIT_OK && a->energy) {
-        const qd_expr *x;
         r->has_E = true;
-        rc = cli_state_number(r->ctx, "--energy", a->energy, &x, &r->E);
+        rc = energy_value(r, a->energy);
     }
     return rc;
 }

@@ -271,6 +271,11 @@ def separatrix(qdot):
               (hi is not None and abs(j['interval'][1] - hi) < 1e-12), j['interval'])
         check('separatrix %s no period' % at, j['radial_period'] is None and
               j['advance']['phi'] is None, j)
+    # the pendulum's separatrix, E = m g a given as an expression in the parameters
+    j = orbit(qdot, 'spherical_pendulum.qd', 'phi', '--at', "theta=0.3, phi'=0", '--energy', 'm*g*a')
+    if j:
+        check('pendulum separatrix', j['kind'] == 'asymptotic' and
+              abs(j['interval'][0] + math.pi) < 1e-12 and abs(j['interval'][1] - math.pi) < 1e-12, j)
     j = orbit(qdot, 'r4_potential.qd', 'phi', '--at', "r=0.5, phi'=4", '--energy', '0.999999999')
     if j:
         check('below the top: capture', j['kind'] == 'capture', j['kind'])
