@@ -102,6 +102,24 @@ static int initial_state(orbit_run *r, const orbit_args *a) {
 }
 
 /* "p_theta=VALUE[, p_psi=VALUE]": each the momentum of an ignored coordinate. */
+/* --energy: an expression in the parameters (and the state's values), so that
+ * "m*g*a" names the top of a pendulum's swing exactly. */
+static int energy_value(orbit_run *r, const char *text) {
+    const qd_read_opts opts = {.new_symbols = false};
+    qd_diag err;
+    const qd_expr *e = qd_read(r->ctx, text, &opts, &err);
+    if (!e) {
+        cli_diag_read("--energy", text, &err);
+        return QD_EXIT_USAGE;
+    }
+    if (qd_eval(r->ctx, e, r->n, r->syms, r->vals, &r->E) != QD_OK || !isfinite(r->E)) {
+        qd_ctx_clear_error(r->ctx);
+        cli_diag_error("--energy: '%s' does not evaluate to a finite number", text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
 static int momentum_item(orbit_run *r, const char *item, size_t len) {
     const char *eq = memchr(item, '=', len);
     char name[128], text[256];
@@ -150,9 +168,8 @@ static int build_state(orbit_run *r, const orbit_args *a) {
         s = comma ? comma + 1 : NULL;
     }
     if (rc == QD_EXIT_OK && a->energy) {
-        const qd_expr *x;
         r->has_E = true;
-        rc = cli_state_number(r->ctx, "--energy", a->energy, &x, &r->E);
+        rc = energy_value(r, a->energy);
     }
     return rc;
 }
@@ -197,6 +214,11 @@ static void text_kind(const orbit_run *r, qd_buf *b) {
         qd_buf_puts(b, "radial period: none (unbound)\n");
         if (o->nign && isfinite(o->advance[0]))
             by_name(r, b, "turn from infinity and back", o->advance);
+    }
+    if (o->kind == QD_ORBIT_ASYMPTOTIC) {
+        qd_buf_puts(b, "radial period: none (E is the top of V_eff: the motion creeps towards "
+                       "the unstable circle at the end of its interval for ever)\n");
+        by_name(r, b, "advance on the way", o->advance);
     }
     if (o->kind == QD_ORBIT_CAPTURE) {
         qd_buf_puts(b, "falls into the singular point of V_eff after time ");
@@ -254,6 +276,8 @@ static void text_conic(const orbit_run *r, qd_buf *b) {
         qd_buf_puts(b, ", nu = ");
         num(b, o->nu);
     }
+    if (o->repulsive)
+        qd_buf_puts(b, ", repulsive");
     if (isfinite(o->periapsis)) {
         qd_buf_printf(b, ", periapsis at %s = ", qd_expr_name(r->o->routh->ign[0]));
         num(b, o->periapsis);
@@ -268,7 +292,7 @@ static void put_equation(orbit_run *r, qd_buf *b) {
     if (o->conic) {
         qd_buf_printf(b, "%s = ", qd_expr_name(r->o->x));
         num(b, o->p);
-        qd_buf_puts(b, "/(1 + ");
+        qd_buf_puts(b, o->repulsive ? "/(" : "/(1 + ");
         num(b, o->e);
         double peri = isfinite(o->periapsis) ? o->periapsis : 0;
         bool group = o->nu != 1 && peri != 0;
@@ -282,7 +306,8 @@ static void put_equation(orbit_run *r, qd_buf *b) {
             qd_buf_printf(b, " %s ", peri < 0 ? "+" : "-");
             num(b, fabs(peri));
         }
-        qd_buf_puts(b, group ? ")))" : "))");
+        qd_buf_puts(b, group ? "))" : ")");
+        qd_buf_puts(b, o->repulsive ? " - 1)" : ")"); /* C3's p/(e cos - 1) */
         return;
     }
     const qd_expr *lhs = NULL;
@@ -386,6 +411,8 @@ static void json_conic(const orbit_run *r, cli_json *j) {
         cli_json_key(j, keys[k]);
         jnum(j, v[k]);
     }
+    cli_json_key(j, "repulsive");
+    cli_json_bool(j, o->repulsive);
     cli_json_end_object(j);
 }
 

@@ -73,7 +73,10 @@ typedef enum qd_orbit_kind {
     QD_ORBIT_BOUND,     /* between two turning points */
     QD_ORBIT_UNBOUND,   /* one turning point (or none): the motion goes to infinity */
     QD_ORBIT_CIRCULAR,  /* at rest at a minimum of V_eff */
-    QD_ORBIT_CAPTURE    /* from a turning point into a singular point of V_eff (the centre) */
+    QD_ORBIT_CAPTURE,   /* from a turning point into a singular point of V_eff (the centre) */
+    QD_ORBIT_ASYMPTOTIC /* E is the top of V_eff at an unstable circle bounding the interval:
+                           the motion creeps towards it without end (no period; an ignored
+                           coordinate with a rate there advances by +-inf) */
 } qd_orbit_kind;
 
 QD_API const char *qd_orbit_kind_name(qd_orbit_kind k); /* "bound", "unbound", ... */
@@ -115,6 +118,8 @@ typedef struct qd_orbit_result {
     double p, e, a, nu;      /* semi-latus rectum, eccentricity, semi-major axis (negative
                                 for a hyperbola, INFINITY for a parabola), angle factor */
     double periapsis;        /* the ignored coordinate's value at periapsis (NAN: e = 0) */
+    bool repulsive;          /* kepler with a repulsive force (c1 > 0): the branch
+                                r = p/(e cos(nu (c - c_peri)) - 1), p = 2 c2/c1 > 0 */
 } qd_orbit_result;
 
 /* Analyse the motion through a state.  syms/vals (n) give the parameters,
@@ -138,7 +143,8 @@ QD_API qd_status qd_orbit_period(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_
                                  double *period);
 
 /* The orbit equation of the first ignored coordinate c: Kepler-type,
- * r = p/(1 + e cos(nu (c - c_peri))) with the numbers of r (*lhs = x); else
+ * r = p/(1 + e cos(nu (c - c_peri))) with the numbers of r (*lhs = x), or
+ * r = p/(e cos(nu (c - c_peri)) - 1) when r->repulsive; else
  * c - c_1 = integral(c'(x) sqrt(M/(2 (E - V_eff))), x, x_1, x), the
  * quadrature from a turning point x_1 (the lower one of a bound orbit; a user function "integral"
  * of integrand, variable and limits; E, the momenta and the parameters as

@@ -9,9 +9,13 @@
  *     u'' + nu^2 u = k/(m h^2),  nu^2 = 2 c2/(m h^2),  k = -c1,
  *     u = (1 + e cos(nu (c - c_peri)))/p,  p = 2 c2/k,  e^2 = 1 + 4 c2 (E - c0)/k^2
  *
- * (reference seed-desloge-B.md C3, the Kepler closed forms, nu = 1).  p < 0
- * for a repulsive force (k < 0): the far branch, 1 + e cos < 0.  At the state
- * e cos(nu D) = p/x - 1 and e sin(nu D) = p x'/(h nu) give the periapsis.
+ * (reference seed-desloge-B.md C3, the Kepler closed forms, nu = 1).  A
+ * repulsive force (k < 0) takes C3's other form, u = (e cos(nu (c - c_peri))
+ * - 1)/p with p = 2 c2/|k| > 0: written with 1 + e cos, p would come out
+ * negative and c_peri would name the far branch's vertex, half a turn (pi/nu)
+ * from the closest approach the particle actually makes.  At the state
+ * e cos(nu D) = p/x -+ 1 (- attractive, + repulsive) and e sin(nu D) =
+ * p x'/(h nu) give the periapsis, D = c - c_peri.
  */
 #include "orb.h"
 
@@ -28,14 +32,16 @@ void qd__orb_conic(qd__orb_env *env, double x0, double xd0, double c0, qd_orbit_
     const double *c = o + QD__ORB_RATE + nign;
     double k = -c[1], c2 = c[2];
     double nu2 = 2 * c2 / (m * h * h), e2 = 1 + 4 * c2 * (env->E - c[0]) / (k * k);
-    if (!(c2 > 0) || !(nu2 > 0) || !isfinite(nu2))
-        return; /* no angular momentum, or an inverse-cube force that wins: a spiral */
+    if (!(c2 > 0) || !(nu2 > 0) || !isfinite(nu2) || !(fabs(k) > 0))
+        return; /* no angular momentum, an inverse-cube force that wins (a spiral), or
+                   no 1/r term at all (p infinite) */
     r->conic = true;
+    r->repulsive = k < 0;
     r->nu = sqrt(nu2);
-    r->p = 2 * c2 / k;
+    r->p = 2 * c2 / fabs(k);
     r->e = e2 > 0 ? sqrt(e2) : 0;
     r->a = fabs(r->e - 1) < PARABOLA ? INFINITY : r->p / (1 - r->e * r->e);
-    double ec = r->p / x0 - 1, es = r->p * xd0 / (h * r->nu);
+    double ec = r->p / x0 + (r->repulsive ? 1 : -1), es = r->p * xd0 / (h * r->nu);
     r->periapsis = r->e > 1e-12 ? c0 - atan2(es, ec) / r->nu : NAN;
 }
 
@@ -44,8 +50,9 @@ static const qd_expr *num(qd_ctx *ctx, double v) { return qd_float(ctx, v); }
 static const qd_expr *conic_equation(qd_ctx *ctx, const qd_orbit_result *r, const qd_expr *c) {
     const qd_expr *peri = isfinite(r->periapsis) ? num(ctx, r->periapsis) : qd_int(ctx, 0);
     const qd_expr *arg = qd_mul(ctx, num(ctx, r->nu), qd_sub(ctx, c, peri));
-    const qd_expr *den = qd_add(ctx, qd_int(ctx, 1), qd_mul(ctx, num(ctx, r->e),
-                                                            qd_fn(ctx, QD_COS, arg)));
+    const qd_expr *ecos = qd_mul(ctx, num(ctx, r->e), qd_fn(ctx, QD_COS, arg));
+    const qd_expr *den = r->repulsive ? qd_sub(ctx, ecos, qd_int(ctx, 1))
+                                      : qd_add(ctx, qd_int(ctx, 1), ecos);
     return qd_div(ctx, num(ctx, r->p), den);
 }
 

@@ -15,8 +15,8 @@
 #define CIRC_TOL 1e-8 /* circular: the other turning point within this many scales */
 
 const char *qd_orbit_kind_name(qd_orbit_kind k) {
-    static const char *const names[] = {"bound", "unbound", "circular", "capture"};
-    return (unsigned)k < 4 ? names[k] : "?";
+    static const char *const names[] = {"bound", "unbound", "circular", "capture", "asymptotic"};
+    return (unsigned)k < 5 ? names[k] : "?";
 }
 
 void qd_orbit_result_free(qd_orbit_result *r) {
@@ -163,6 +163,36 @@ static bool circular_at(qd__orb_env *env, double x) {
     return env->E - o[QD__ORB_V] <= 0 && 2 * v1 <= CIRC_TOL * env->scale * v2;
 }
 
+static bool same_energy(double E, double v) {
+    return fabs(E - v) <= 1e-12 * (fabs(E) + fabs(v)) || E == v;
+}
+
+/* A barrier the walk stepped over: its growing steps can jump a forbidden
+ * gap narrower than a step (E just below the top of V_eff).  V_eff is
+ * monotone between its stationary points (r->circle, ascending), so the
+ * first one towards dir that stands above E, with the one before it (or the
+ * state), brackets the single root the motion turns at. */
+static void barrier_missed(qd__orb_env *env, double xs, int dir, const qd_orbit_result *r,
+                           qd__orb_end *e, double *end) {
+    double prev = xs;
+    for (size_t n = 0; n < r->ncircle; n++) {
+        const qd_orbit_circle *c = &r->circle[dir > 0 ? n : r->ncircle - 1 - n];
+        if ((c->x - xs) * dir <= 0)
+            continue;
+        if ((c->x - *end) * dir >= 0)
+            return; /* beyond where the walk stopped */
+        if (!(env->E < c->energy) || same_energy(env->E, c->energy)) {
+            prev = c->x;
+            continue;
+        }
+        if (qd__orb_gap(env, prev) > 0) {
+            *end = qd__orb_brent(env, qd__orb_gap, prev, c->x);
+            *e = QD__ORB_FOUND;
+        }
+        return;
+    }
+}
+
 static void classify(qd__orb_env *env, double xs, qd_orbit_result *r) {
     qd__orb_end e[2];
     double ends[2];
@@ -176,6 +206,7 @@ static void classify(qd__orb_env *env, double xs, qd_orbit_result *r) {
             ends[k] = xs;
         } else {
             e[k] = side(env, xs, dir, &ends[k]);
+            barrier_missed(env, xs, dir, r, &e[k], &ends[k]);
         }
     }
     r->lo = ends[0];
@@ -270,27 +301,66 @@ static bool singular_at_zero(qd__orb_env *env) {
              fabs(v1 - v2) <= tol);
 }
 
+/* E at the top of V_eff (an unstable circle) within the interval the walk
+ * found: E - V_eff touches 0 there without changing sign, so the walk went
+ * through it (or stopped at it as at a turning point).  The motion creeps
+ * towards that circle for ever (Desloge ch. 58 P10 b: r = b tanh(phi/sqrt 2)
+ * inside it, b coth(phi/sqrt 2) outside), winding without end. */
+static void asymptotic(qd__orb_env *env, double xs, qd_orbit_result *r) {
+    double lo = r->lo, hi = r->hi, near = 1e-6 * env->scale;
+    bool found = false;
+    for (size_t k = 0; k < r->ncircle; k++) {
+        const qd_orbit_circle *c = &r->circle[k];
+        if (c->stable == 1 || !same_energy(env->E, c->energy) || c->x == xs ||
+            c->x < r->lo - near || c->x > r->hi + near)
+            continue;
+        found = true;
+        if (c->x < xs)
+            lo = fmax(lo, c->x);
+        else
+            hi = fmin(hi, c->x);
+    }
+    if (!found)
+        return;
+    size_t n = 0;
+    for (size_t k = 0; k < r->nturn; k++)
+        if (r->turn[k] > lo + near && r->turn[k] < hi - near)
+            r->turn[n++] = r->turn[k];
+    r->nturn = n;
+    r->lo = lo;
+    r->hi = hi;
+    r->kind = QD_ORBIT_ASYMPTOTIC;
+    double at = xs < lo + near ? lo : hi; /* the circle it creeps towards */
+    const double *o = qd__orb_at(env, isfinite(at) ? at : lo);
+    for (size_t i = 0; i < r->nign; i++) {
+        double rate = o[QD__ORB_RATE + i];
+        r->advance[i] = rate == 0 ? 0 : copysign(INFINITY, rate);
+    }
+}
+
 static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, double c0,
                          bool energy_given, qd_orbit_result *r) {
     qd_status st = QD_OK;
     double xs = x0;
     if (energy_given && !(qd__orb_gap(env, x0) >= 0) && (st = allowed_start(ctx, env, &xs)))
         return st;
+    if ((st = circles(ctx, env, xs, r)))
+        return st;
     if (circular_at(env, xs))
         circular_limits(env, xs, r);
     else
         classify(env, xs, r);
     if (r->kind != QD_ORBIT_CIRCULAR)
+        asymptotic(env, xs, r);
+    if (r->kind != QD_ORBIT_CIRCULAR && r->kind != QD_ORBIT_ASYMPTOTIC)
         st = qd__orb_quadratures(ctx, env, r);
-    for (size_t i = 0; i < r->nign && r->kind != QD_ORBIT_CAPTURE && r->kind != QD_ORBIT_UNBOUND;
+    for (size_t i = 0; i < r->nign && (r->kind == QD_ORBIT_BOUND || r->kind == QD_ORBIT_CIRCULAR);
          i++) {
         r->apsidal[i] = fabs(r->advance[i]) / 2; /* an angle between apsides, either way round */
         r->precession[i] = r->advance[i] - 2 * PI * (r->advance[i] < 0 ? -1 : 1);
         if (fabs(r->precession[i]) <= 8 * fmax(r->quad_error, 1e-13) * fabs(r->advance[i]))
             r->precession[i] = 0; /* closed to within the quadrature's error */
     }
-    if (st == QD_OK)
-        st = circles(ctx, env, xs, r);
     if (st == QD_OK && env->o->kepler) {
         const double *o = qd__orb_at(env, xs);
         double w = 2 * (env->E - o[QD__ORB_V]) / o[QD__ORB_M];
@@ -346,8 +416,10 @@ qd_status qd_orbit_period(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result 
     }
     if (r->kind == QD_ORBIT_CAPTURE || !isfinite(r->period)) {
         qd_ctx_error(ctx, QD_ERR_ARG,
-                     "the orbit has no period: it %s", r->kind == QD_ORBIT_CAPTURE
-                         ? "falls into the singular point of V_eff" : "is an unstable circle");
+                     "the orbit has no period: it %s",
+                     r->kind == QD_ORBIT_CAPTURE      ? "falls into the singular point of V_eff"
+                     : r->kind == QD_ORBIT_ASYMPTOTIC ? "creeps towards an unstable circle"
+                                                      : "is an unstable circle");
         return QD_ERR_ARG;
     }
     *period = r->period;

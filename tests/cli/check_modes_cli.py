@@ -14,7 +14,8 @@ Expected values are textbook results, not output of the code under test:
   - rod on an elastic string (Desloge ch. 65 P11, seed-desloge-B.md T59):
     g/w^2 = 7a/3, a/6, a/6 about r = 7a/6;
   - restricted three-body problem (Desloge ch. 62): five equilibria; L4 stable
-    for mu = 0.01, unstable for mu = 0.1 (27 mu (1 - mu) < 1);
+    for mu = 0.01, unstable for mu = 0.1 (27 mu (1 - mu) < 1); the eigenvalues
+    at L1, L2, L3 from eqs. 53-66 and T27's table (seed-desloge-B.md);
   - the motion from --initial for the double pendulum: q(t) from the normal
     coordinates equals the closed-form superposition;
   - the ring with no --about: the equilibrium chosen is the equilateral one
@@ -207,6 +208,34 @@ def rod(qdot):
     check("rod lengths", all(close(x, y) for x, y in zip(lengths, want)), str(lengths))
 
 
+# Desloge ch. 62 eqs. 53-66 (seed-desloge-B.md T27, mu = 0.01, w = 1): at a
+# collinear point lambda^2 = (Om^2 - 2)/2 +- sqrt(9 Om^4 - 8 Om^2)/2 with
+# Om^2 = (1 - mu)/|x + mu|^3 + mu/|x - 1 + mu|^3; one real pair, one imaginary.
+T27 = [(1.0087902754, 0.1614765578, 1.0086051771),   # L3, x < -mu
+       (5.0652478406, 2.9037378316, 2.3165589900),   # L1, between the primaries
+       (3.2352741919, 2.1795542907, 1.8748820534)]   # L2, beyond m2
+
+
+def collinear_eigenvalues(qdot, f, xs, mu):
+    check("3b three collinear", len(xs) == 3, str(xs))
+    for x, (om2_t27, real_t27, freq_t27) in zip(xs, T27):
+        om2 = (1 - mu) / abs(x + mu)**3 + mu / abs(x - 1 + mu)**3
+        root = math.sqrt(9 * om2**2 - 8 * om2) / 2
+        real, freq = math.sqrt((om2 - 2) / 2 + root), math.sqrt(root - (om2 - 2) / 2)
+        check(f"3b T27 closed form x={x:.6f}", close(om2, om2_t27, 1e-9) and
+              close(real, real_t27, 1e-9) and close(freq, freq_t27, 1e-9), (om2, real, freq))
+        rc, out, err = run(qdot, "modes", f, "--about", f"x={x!r}, y=0", "--format", "json")
+        if rc:
+            check(f"3b modes at x={x}", False, err)
+            continue
+        key = lambda z: (round(z[0], 6), z[1])   # a real part of 1e-17 either sign is 0
+        ev = sorted(json.loads(out)["eigenvalues"], key=key)
+        want = sorted([[-real, 0], [0, -freq], [0, freq], [real, 0]], key=key)
+        check(f"3b T27 eigenvalues x={x:.6f}",
+              all(close(a[0], b[0], 1e-10) and close(a[1], b[1], 1e-10)
+                  for a, b in zip(ev, want)), (ev, want))
+
+
 def three_body(qdot):
     f = str(EX / "restricted_three_body.qd")
     rc, out, err = run(qdot, "equilibria", f, "--format", "json")
@@ -226,6 +255,7 @@ def three_body(qdot):
             x = p["x"]
             fx = x - (1 - mu) * (x + mu) / abs(x + mu)**3 - mu * (x - 1 + mu) / abs(x - 1 + mu)**3
             check("3b collinear root", abs(fx) < 1e-10, str(x))
+    collinear_eigenvalues(qdot, f, sorted(p["x"] for p in pts if abs(p["y"]) < 1e-12), mu)
     n = l4[0] + 1
     for mu_, want in (("0.01", True), ("0.1", False)):
         rc, out, err = run(qdot, "modes", f, "--set", f"mu={mu_}", "--about",

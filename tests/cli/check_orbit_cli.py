@@ -21,6 +21,11 @@ computed here independently of qdot:
   closed form: turning points, radial period and advance against mpmath
   (SymPy's, Debian python3-sympy) at 30 digits, r = (r1 + r2)/2 - (r2 -
   r1)/2 cos u removing the end-point singularities (C3's numerics);
+- --orbit (C3): the printed conic through the state and its turning points
+  (Kepler both ways round, Rutherford's repulsive branch, ch. 58 P9), and the
+  printed quadrature, integrated by mpmath, equal to the apsidal angle;
+- Desloge ch. 58 P10 b: at the top of V_eff the orbit is asymptotic to the
+  unstable circle from both sides; just below it the inside orbit is captured;
 - errors (exit 2): no --ignore, a coordinate that is not cyclic, two
   coordinates left, an energy below the minimum of V_eff (both numbers named).
 
@@ -196,6 +201,88 @@ def yukawa(qdot, tmp):
     close('yukawa advance', j['advance']['phi'], float(adv), 1e-12)
 
 
+def orbit_equation(qdot, tmp):
+    """--orbit: the conic's equation, evaluated as printed, passes through the state
+    and reaches the turning points at periapsis (Kepler, C3; Rutherford's repulsive
+    branch p/(e cos - 1), T15); the quadrature's integrand, integrated here by mpmath
+    between the turning points, gives the apsidal angle (Yukawa, T07)."""
+    cases = [('kepler_polar.qd', 'theta', "r=1, r'=0.7, theta'=1.2", 1.0),
+             ('kepler_polar.qd', 'theta', "r=1, r'=0.7, theta'=-1.2", 1.0),
+             ('kepler_polar.qd', 'theta', "r=2, r'=-0.3, theta'=3", 2.0),
+             ('rutherford.qd', 'phi', "r=1, r'=-1, phi'=0.5", 1.0),
+             ('inverse_cube_orbit.qd', 'phi', None, None)]
+    for model, c, at, r0 in cases:
+        extra = ('--at', at) if at else ()
+        j = orbit(qdot, model, c, '--orbit', *extra)
+        if not j:
+            continue
+        lhs, rhs = j['orbit'].split(' = ', 1)
+        tag = 'orbit equation %s %s' % (model, at)
+        check(tag + ' form', lhs == 'r' and j['conic'] is not None, j['orbit'])
+        if r0 is not None:
+            close(tag + ' state', ev(rhs, {c: 0.0}), r0, 1e-10)  # 12 printed digits
+        close(tag + ' periapsis', ev(rhs, {c: j['conic']['periapsis']}), j['turning_points'][0],
+              1e-10)
+        check(tag + ' repulsive', j['conic']['repulsive'] == (model == 'rutherford.qd'), j['conic'])
+    try:
+        import mpmath
+    except ImportError:
+        check('mpmath available', False, 'python3-sympy (mpmath) is needed')
+        return
+    model = Path(tmp) / 'yukawa.qd'
+    model.write_text(YUKAWA)
+    rc, out, err = run(qdot, 'orbit', str(model), '--ignore', 'phi', '--orbit', '--format', 'json')
+    check('yukawa --orbit runs', rc == 0, err)
+    if rc != 0:
+        return
+    j = json.loads(out)
+    head, rest = j['orbit'].split(' = integral(', 1)
+    check('yukawa quadrature form', head == 'phi - phi_1' and rest.endswith(', r, r_1, r)'),
+          j['orbit'])
+    body = rest[:-len(', r, r_1, r)')]
+    mpmath.mp.dps = 30
+    env = {n: getattr(mpmath, n) for n in ('sin', 'cos', 'sqrt', 'exp', 'log', 'pi')}
+    env.update(m=mpmath.mpf('1.2'), a=mpmath.mpf(2), b=mpmath.mpf('0.6'),
+               E=mpmath.mpf(j['energy']), p_phi=mpmath.mpf(j['momenta']['p_phi']))
+    f = lambda r: eval(body.replace('^', '**'), {'__builtins__': {}}, dict(env, r=r))
+    U = lambda r: eval(j['effective_potential'].replace('^', '**'), {'__builtins__': {}},
+                       dict(env, r=r))
+    r1 = mpmath.findroot(lambda r: U(r) - env['E'], j['turning_points'][0])
+    r2 = mpmath.findroot(lambda r: U(r) - env['E'], j['turning_points'][1])
+    mid, half = (r1 + r2) / 2, (r2 - r1) / 2
+    alpha = mpmath.quad(lambda u: mpmath.re(f(mid - half * mpmath.cos(u))) * half * mpmath.sin(u),
+                        [0, mpmath.pi])
+    close('yukawa quadrature = apsidal angle', float(alpha), j['apsidal_angle']['phi'], 1e-12)
+
+
+def separatrix(qdot):
+    """Desloge ch. 58 P10 b (examples/r4_potential.qd, m = 2, a = 1, p_phi = 2): at the
+    top of V_eff, E = p^4/(4 a m^2) = 1, the orbit creeps towards r = b = sqrt(a m)/p
+    from either side; 1e-9 below it the inside orbit turns just short of b (the
+    walk used to jump that gap and call the orbit unbound)."""
+    b = 1 / math.sqrt(2)
+    for at, lo, hi in (("r=0.5, phi'=4", 0.0, b), ("r=2, phi'=0.25", b, None)):
+        j = orbit(qdot, 'r4_potential.qd', 'phi', '--at', at, '--energy', '1')
+        if not j:
+            continue
+        check('separatrix %s kind' % at, j['kind'] == 'asymptotic', j['kind'])
+        close('separatrix %s lo' % at, j['interval'][0], lo, 1e-12)
+        check('separatrix %s hi' % at, (hi is None and j['interval'][1] is None) or
+              (hi is not None and abs(j['interval'][1] - hi) < 1e-12), j['interval'])
+        check('separatrix %s no period' % at, j['radial_period'] is None and
+              j['advance']['phi'] is None, j)
+    # the pendulum's separatrix, E = m g a given as an expression in the parameters
+    j = orbit(qdot, 'spherical_pendulum.qd', 'phi', '--at', "theta=0.3, phi'=0", '--energy', 'm*g*a')
+    if j:
+        check('pendulum separatrix', j['kind'] == 'asymptotic' and
+              abs(j['interval'][0] + math.pi) < 1e-12 and abs(j['interval'][1] - math.pi) < 1e-12, j)
+    j = orbit(qdot, 'r4_potential.qd', 'phi', '--at', "r=0.5, phi'=4", '--energy', '0.999999999')
+    if j:
+        check('below the top: capture', j['kind'] == 'capture', j['kind'])
+        t = j['turning_points']
+        check('below the top: turns short of b', len(t) == 1 and 0.999 * b < t[0] < b, t)
+
+
 def errors(qdot):
     path = str(EXAMPLES / 'kepler_polar.qd')
     rc, out, err = run(qdot, 'orbit', path)
@@ -219,6 +306,8 @@ def main():
     spherical(qdot)
     with tempfile.TemporaryDirectory() as tmp:
         yukawa(qdot, tmp)
+        orbit_equation(qdot, tmp)
+    separatrix(qdot)
     errors(qdot)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0

@@ -7,7 +7,10 @@
  *   turning points a(1 -+ e), p = h^2/(m k), e = sqrt(1 + 2 E h^2/(m k^2)),
  *   radial period 2 pi sqrt(m a^3/k), advance 2 pi; the hyperbola and the
  *   parabola unbound with one turning point p/(1 + e), turning by 2 acos(-1/e)
- *   between the asymptotes; the circle.
+ *   between the asymptotes; the circle; Rutherford's repulsive hyperbola
+ *   (C3's form p/(e cos - 1), its periapsis, T15's deflection).
+ * - Desloge ch. 58 P8: the apsidal speeds in the ratio b/a and the speed
+ *   (b^2 - a^2) v^2 = 2 a^2 int_a^r f + 2 b^2 int_r^b f.
  * - Power laws, force -k r^n (Desloge ch. 59 eq. 31, C3 and pitfall 10):
  *   the near-circular apsidal angle pi/sqrt(n + 3), by the general formula
  *   and by Bertrand's; Hooke's law (n = 1) closes with apsidal angle pi/2
@@ -17,7 +20,9 @@
  *   quadrature (advance 4 pi/sqrt 3).
  * - Desloge ch. 58, the r^-4 potential V = -a/(4 r^4): at E = 0 the orbit
  *   is a circle through the centre, r = d cos(phi), d = sqrt(m a/2)/h: the
- *   particle falls in after phi turns by pi/2, in time (m d^2/h) pi/4.
+ *   particle falls in after phi turns by pi/2, in time (m d^2/h) pi/4; at
+ *   E = h^4/(4a) (P10 b) the orbits b tanh(phi/sqrt 2) and b coth(phi/sqrt 2)
+ *   creep towards the unstable circle r = b (kind asymptotic).
  * - Radial infall (T04, ch. 58 P1): fall time T/(4 sqrt 2).
  * - T07 (ch. 58 P7) Yukawa near-circular beta^2 = (1 + x - x^2)/(1 + x);
  *   T11 (ch. 58 P11) elastic string, apsidal angle 1.404962946.
@@ -251,6 +256,41 @@ static void test_kepler_circle(void **state) {
     unload(&f);
 }
 
+/* Rutherford's repulsive k/r (Desloge ch. 60 ex. 2, T15; the conic in C3's
+ * repulsive form r = p/(e cos(theta - theta_peri) - 1), p = h^2/(m k)).  The
+ * state moves inwards with theta' > 0, so the closest approach p/(e - 1) comes
+ * later, at theta_peri > 0, and the orbit turns by 2 acos(1/e) between its
+ * asymptotes: the deflection pi - 2 acos(1/e) is Rutherford's tan(Theta/2) =
+ * k/(2 E b), b = h/sqrt(2 m E).  Written as p/(1 + e cos) the periapsis came
+ * out half a turn away (at -2.76 instead of 0.38 here) with p < 0 and a > 0. */
+static void test_kepler_repulsive(void **state) {
+    (void)state;
+    fix f;
+    double m = 1.3, k = 4, r = 1, rd = -1.5, td = 2.5;
+    load(&f, "coordinates r, theta\nparameters m = 1.3, k = 4\n"
+             "particle m at r*(cos(theta), sin(theta))\nV = k/r\n");
+    assert_int_equal(reduce(&f, THETA), QD_OK);
+    set(&f, "r", r);
+    set(&f, "r'", rd);
+    set(&f, "theta'", td);
+    assert_int_equal(solve(&f, NULL), QD_OK);
+    double h = m * r * r * td, E = m * (rd * rd + r * r * td * td) / 2 + k / r;
+    double p = h * h / (m * k), e = sqrt(1 + 2 * E * h * h / (m * k * k));
+    assert_int_equal(f.r.kind, QD_ORBIT_UNBOUND);
+    assert_true(f.r.conic && f.r.repulsive);
+    near(f.r.p, p, 1e-14);
+    near(f.r.e, e, 1e-14);
+    near(f.r.a, -k / (2 * E), 1e-13);
+    near(f.r.turn[0], p / (e - 1), 1e-13);
+    assert_true(f.r.periapsis > 0 && f.r.periapsis < PI);
+    near(p / (e * cos(f.r.periapsis - f.r.periapsis) - 1), f.r.turn[0], 1e-13);
+    near(p / (e * cos(0 - f.r.periapsis) - 1), r, 1e-13); /* through the state */
+    near(f.r.advance[0], 2 * acos(1 / e), 1e-12);
+    double b = h / sqrt(2 * m * E);
+    near(PI - f.r.advance[0], 2 * atan(k / (2 * E * b)), 1e-12);
+    unload(&f);
+}
+
 /* ---- power laws and Desloge's problems ------------------------------------------ */
 
 static const char power[] =
@@ -322,6 +362,47 @@ static void test_inverse_cube(void **state) {
     unload(&f);
 }
 
+/* Desloge ch. 58 P8 (seed 000): with two apsidal distances a < b the apsidal
+ * speeds are in the ratio b/a, and the speed at r obeys
+ *     (b^2 - a^2) v^2 = 2 a^2 int_a^r f dr + 2 b^2 int_r^b f dr
+ * (unit mass, f = dV/dr the attraction; from energy and h = a v_a = b v_b; the
+ * seed's OCR drops the 2s).  Here f = k r^n (power law n = 2, V = k r^3/3)
+ * and the Yukawa V = -A e^(-B r)/r, with the speeds at the apsides taken from
+ * the energy alone, sqrt(2 (E - V)), so both turning points are checked as the
+ * places where the whole speed is transverse. */
+static void apsidal_speeds(const char *model, double (*V)(double), double r0, double rd0,
+                           double td0) {
+    fix f;
+    load(&f, model);
+    assert_int_equal(reduce(&f, PHI), QD_OK);
+    set(&f, "r", r0);
+    set(&f, "r'", rd0);
+    set(&f, "phi'", td0);
+    assert_int_equal(solve(&f, NULL), QD_OK);
+    assert_int_equal(f.r.kind, QD_ORBIT_BOUND);
+    double a = f.r.turn[0], b = f.r.turn[1], E = f.r.energy;
+    near(E, (rd0 * rd0 + r0 * r0 * td0 * td0) / 2 + V(r0), 1e-14);
+    double va = sqrt(2 * (E - V(a))), vb = sqrt(2 * (E - V(b)));
+    near(va / vb, b / a, 1e-12);
+    double v2 = rd0 * rd0 + r0 * r0 * td0 * td0;
+    /* int f dr = V: 2 a^2 (V(r) - V(a)) + 2 b^2 (V(b) - V(r)) */
+    near((b * b - a * a) * v2, 2 * a * a * (V(r0) - V(a)) + 2 * b * b * (V(b) - V(r0)), 1e-12);
+    unload(&f);
+}
+
+static double V_cubic(double r) { return r * r * r / 3; }
+static double V_yukawa(double r) { return -2 * exp(-0.6 * r) / r; }
+
+static void test_apsidal_speeds(void **state) {
+    (void)state;
+    apsidal_speeds("coordinates r, phi\nparameters m = 1\n"
+                   "particle m at r*(cos(phi), sin(phi))\nV = r^3/3\n",
+                   V_cubic, 1.2, 0.7, 0.9);
+    apsidal_speeds("coordinates r, phi\nparameters m = 1\n"
+                   "particle m at r*(cos(phi), sin(phi))\nV = -2*exp(-0.6*r)/r\n",
+                   V_yukawa, 1.0, 0.3, 1.1);
+}
+
 /* V = -a/(4 r^4) at E = 0: the circle through the centre. */
 static void test_r4_capture(void **state) {
     (void)state;
@@ -343,6 +424,48 @@ static void test_r4_capture(void **state) {
     near(f.r.circle[0].x, sqrt(m * a) / h, 1e-12);
     assert_int_equal(f.r.circle[0].stable, 0);
     unload(&f);
+}
+
+/* Desloge ch. 58 P10 (b), seed 000 (unit mass): at E = h^4/(4a), the top of
+ * V_eff at the unstable circle r = b = sqrt(a)/h, the orbit is r = b tanh(phi/sqrt 2)
+ * inside the circle and b coth(phi/sqrt 2) outside: both creep towards r = b
+ * while phi grows without end.  The walk used to pass through the double root
+ * (E - V_eff touches 0 there without changing sign) and call both unbound over
+ * 0 <= r <= inf.  Just below the top the inside orbit is still a capture. */
+static void separatrix_at(double r, double E, qd_orbit_kind want, double lo, double hi) {
+    double a = 0.9, h = 0.7, b = sqrt(a) / h;
+    fix f;
+    load(&f, "coordinates r, phi\nparameters m = 1, a = 0.9\n"
+             "particle m at r*(cos(phi), sin(phi))\nV = -a/(4*r^4)\n");
+    assert_int_equal(reduce(&f, PHI), QD_OK);
+    set(&f, "r", r);
+    set(&f, "phi'", h / (r * r));
+    assert_int_equal(solve(&f, &E), QD_OK);
+    assert_int_equal(f.r.kind, want);
+    if (want == QD_ORBIT_ASYMPTOTIC) {
+        assert_true(f.r.lo >= 0);
+        near(f.r.lo, lo, 1e-12);
+        if (isinf(hi))
+            assert_true(isinf(f.r.hi));
+        else
+            near(f.r.hi, hi, 1e-12);
+        assert_int_equal(f.r.nturn, 0);
+        assert_true(isinf(f.r.advance[0]) && f.r.advance[0] > 0);
+        assert_true(isnan(f.r.period));
+        double T;
+        assert_int_equal(qd_orbit_period(f.ctx, f.o, &f.r, &T), QD_ERR_ARG);
+    } else {
+        assert_true(f.r.turn[0] < b && f.r.turn[0] > 0.99 * b);
+    }
+    unload(&f);
+}
+
+static void test_r4_separatrix(void **state) {
+    (void)state;
+    double a = 0.9, h = 0.7, b = sqrt(a) / h, top = h * h * h * h / (4 * a);
+    separatrix_at(b * tanh(0.5), top, QD_ORBIT_ASYMPTOTIC, 0, b);
+    separatrix_at(b / tanh(0.5), top, QD_ORBIT_ASYMPTOTIC, b, INFINITY);
+    separatrix_at(b * tanh(0.5), top * (1 - 1e-9), QD_ORBIT_CAPTURE, 0, 0);
 }
 
 static void test_radial_infall(void **state) {
@@ -449,6 +572,15 @@ static void test_planar_pendulum(void **state) {
             near(f.r.circle[i].omega, sqrt(9.81 / 0.9), 1e-7);
         }
     assert_true(hanging);
+    qd_orbit_result_free(&f.r);
+    /* at E = m g a, the energy of the upright pendulum, it creeps towards theta =
+     * +-pi (the separatrix) and never swings back or over */
+    double top = 1.1 * 9.81 * 0.9;
+    assert_int_equal(solve(&f, &top), QD_OK);
+    assert_int_equal(f.r.kind, QD_ORBIT_ASYMPTOTIC);
+    near(f.r.lo, -PI, 1e-12);
+    near(f.r.hi, PI, 1e-12);
+    near(f.r.advance[0], 0, 0);
     unload(&f);
 }
 
@@ -529,8 +661,10 @@ int main(void) {
         cmocka_unit_test(test_kepler_ellipse),   cmocka_unit_test(test_kepler_retrograde),
         cmocka_unit_test(test_kepler_hyperbola),
         cmocka_unit_test(test_kepler_parabola),  cmocka_unit_test(test_kepler_circle),
+        cmocka_unit_test(test_kepler_repulsive), cmocka_unit_test(test_apsidal_speeds),
         cmocka_unit_test(test_power_law_apsidal), cmocka_unit_test(test_hooke_closes),
         cmocka_unit_test(test_inverse_cube),     cmocka_unit_test(test_r4_capture),
+        cmocka_unit_test(test_r4_separatrix),
         cmocka_unit_test(test_radial_infall),    cmocka_unit_test(test_yukawa_and_string),
         cmocka_unit_test(test_spherical_pendulum), cmocka_unit_test(test_planar_pendulum),
         cmocka_unit_test(test_heavy_top),
