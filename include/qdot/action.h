@@ -50,7 +50,10 @@ typedef enum qd_act_fail {
     QD_ACT_SEPARATRIX,    /* a double root of p_k^2: the period (dJ/dE) diverges
                              logarithmically */
     QD_ACT_AT_REST,       /* p_k^2 <= 0 all round the state: J_k = 0, rest at an equilibrium */
-    QD_ACT_NOT_SEPARABLE  /* the Hamilton-Jacobi equation does not separate */
+    QD_ACT_NOT_SEPARABLE, /* the Hamilton-Jacobi equation does not separate */
+    QD_ACT_SINGULAR       /* an end of the motion where p_k^2 does not vanish (a
+                             collision, p_k^2 infinite, or the edge of its domain):
+                             no turning point, so no cycle; fail_coord's lo = hi = there */
 } qd_act_fail;
 
 typedef struct qd_act_coord {

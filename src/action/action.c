@@ -165,6 +165,16 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
     a->fail = why;
     a->fail_coord = k;
     const char *name = qd_expr_name(a->c[k].q);
+    if (why == QD_ACT_SINGULAR) {
+        qd_ctx_error(ctx, QD_ERR_ARG,
+                     "%s reaches %s = %.6g with p != 0: p^2 does not vanish there (a "
+                     "collision, or the edge of p^2's domain), so it is no turning point and "
+                     "there is no cycle", name, name, a->c[k].lo);
+        qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE,
+                           "a nearby state that turns back before it has an action (for "
+                           "Kepler's radial orbit: a little angular momentum)");
+        return QD_ERR_ARG;
+    }
     qd_ctx_error(ctx, QD_ERR_ARG, what[why], name);
     qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE, hint[why]);
     return QD_ERR_ARG;
@@ -194,6 +204,7 @@ static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, co
     qd__act_cycle c;
     qd_act_fail why = qd__act_cycle_find(&f, q0, angle, &c);
     qd_status st = QD_OK;
+    a->c[k].lo = c.lo;
     if (why != QD_ACT_OK)
         st = fail_motion(ctx, a, why, k);
     else if (!qd__act_integrals(&f, &c, &a->c[k].J, &a->dJ[k * a->n]) ||

@@ -499,6 +499,43 @@ static void test_angles_advance(void **state) {
     sf_free(s.f);
 }
 
+/* Kepler's radial orbit (alpha_theta = 0, Desloge ch. 79): p_r^2 =
+ * 2 m (E + k/r) has no root at r = 0 but a pole, so r reaches the centre
+ * with p_r infinite: a collision, not a turning point.  It was reported
+ * as a separatrix (the pole read as a double root).  With a little
+ * angular momentum the orbit turns back and the Kepler identities hold
+ * (Goldstein eq. 10.137: J_r + J_theta = 2 pi k sqrt(m/(-2E)), the two
+ * frequencies equal to 1e-10, 1 : 1 named): eccentricities 0.97 to
+ * 1 - 3e-7 (at theta' = 0.3 the frequencies differed by 5e-9 and the
+ * degeneracy went unnamed; at 0.1 the quadrature failed). */
+static void test_kepler_collision(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, kepler_polar);
+    at_set(&s, "r", 1);
+    at_set(&s, "theta", 0.3);
+    at_set(&s, "r'", 0.4);
+    at_set(&s, "theta'", 0);
+    qd_action a;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, NULL, &a), QD_ERR_ARG);
+    if (a.fail != QD_ACT_SINGULAR)
+        fail_msg("fail %d: %s", (int)a.fail, qd_ctx_message(s.f->ctx));
+    assert_int_equal(a.fail_coord, 0);
+    assert_true(fabs(a.c[0].lo) < 1e-6); /* at the centre */
+    assert_non_null(strstr(qd_ctx_message(s.f->ctx), "r reaches r = "));
+    qd_action_free(&a);
+    qd_ctx_clear_error(s.f->ctx);
+    const double w[] = {0.3, 0.1, 1e-2, 1e-3};
+    for (int i = 0; i < 4; i++) {
+        s.n -= 1;
+        at_set(&s, "theta'", w[i]);
+        run_at(&s, &a);
+        check_kepler(&a, 1.3, 4);
+        qd_action_free(&a);
+    }
+    sf_free(s.f);
+}
+
 /* ---- the same through qd_hj_derive ---------------------------------------- */
 
 /* The models' separations found by qd_hj (not written out): the same
@@ -585,6 +622,7 @@ int main(void) {
         cmocka_unit_test(test_kepler_polar),
         cmocka_unit_test(test_kepler_spherical),
         cmocka_unit_test(test_kepler_via_hj),
+        cmocka_unit_test(test_kepler_collision),
         cmocka_unit_test(test_anisotropic_via_hj),
         cmocka_unit_test(test_not_separable),
     };

@@ -35,7 +35,8 @@ seed 002):
     the pendulum frozen at t = 0 and at t = 250 (l 1.5 times longer) agree to
     1e-3 while its energy E + m g l changes by more than 10%;
   - errors, exit 2: a separatrix (E = m g l), rest at the bottom, an unbounded
-    coordinate (Desloge ch. 78's H = p^2 - q), a non-separable quartic
+    coordinate (Desloge ch. 78's H = p^2 - q), Kepler's radial orbit (r reaches
+    the centre, a collision: no turning point), a non-separable quartic
     coupling (the hint names qdot poincare), a bad option, H depending on t
     (the hint names the adiabatic invariant), a damped oscillator.
 Prints "N passed, N failed"; exit 1 on failure.
@@ -290,6 +291,9 @@ def errors(build):
              "separatrix"),
             ("rest", [EX / "action_pendulum.qd", "--at", "theta=0, theta'=0"], "at rest"),
             ("unbounded", [d78, "--at", "q=1, q'=0.5"], "unbounded"),
+            # Kepler's radial orbit: r reaches the centre, a pole of p_r^2 (was "separatrix")
+            ("collision", [EX / "kepler_polar.qd", "--at", "r=1, r'=0.4, theta'=0"],
+             "reaches r = "),
             ("not separable", [quartic, "--at", "x=0.3, y=0.2"], "qdot poincare"),
             ("bad option", [EX / "action_pendulum.qd", "--bogus"], "usage"),
             ("time-dependent H", [EX / "action_pendulum_lengthening.qd"], "adiabatic invariant"),
