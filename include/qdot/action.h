@@ -103,12 +103,17 @@ typedef struct qd_action_opts {
     const char *energy_name;   /* NULL: "E" */
     double degeneracy_tol;     /* |omega_i/omega_j - num/den| relative; 0: 1e-9 */
     long max_den;              /* the largest num, den tried; 0: 12 */
+    /* coordinates taken as angles (period 2 pi) besides those found inside
+     * sin, cos or tan: a cyclic angle of a model given by H appears nowhere
+     * (Kepler's H in r, theta) and would be read as unbounded */
+    size_t nangles;
+    const qd_expr *const *angles;
 } qd_action_opts;
 
 /* The actions and frequencies of model m at the state syms/vals (every
  * coordinate, velocity and parameter with a value; a momentum among them
  * is taken as given, the others come from p = dL/dq', or for a model
- * given by H from q' = dH/dp inverted).  One degree of freedom
+ * given by H from q' = dH/dp inverted; opts->angles adds angles).  One degree of freedom
  * is separated here (H = E solved for p^2); more go through qd_hj_derive.
  * On failure the reason is in ctx, and out->fail says which failure of the
  * motion it is (out->fail_coord where).  opts may be NULL. */

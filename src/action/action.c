@@ -180,6 +180,22 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
     return QD_ERR_ARG;
 }
 
+/* A cyclic coordinate not known to be an angle (it enters the model
+ * nowhere inside sin, cos or tan): unbounded as a translation, a rotation
+ * if it is an angle, which only the caller can say. */
+static qd_status fail_cyclic(qd_ctx *ctx, qd_action *a, size_t k) {
+    const char *name = qd_expr_name(a->c[k].q);
+    a->fail = QD_ACT_UNBOUNDED;
+    a->fail_coord = k;
+    qd_ctx_error(ctx, QD_ERR_ARG, "%s is cyclic and not known to be an angle (it is inside no "
+                 "sin, cos or tan of the model): as a translation it is unbounded, no cycle",
+                 name);
+    qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE,
+                       "if it is an angle, say so (qdot action --angle NAME; "
+                       "qd_action_opts.angles): it then rotates over one turn");
+    return QD_ERR_ARG;
+}
+
 /* beta_j += this coordinate's dW/dalpha_j at the state, moving with the
  * sign of its momentum there (forward when the state does not give it). */
 static bool add_phase(qd__act_fn *f, const qd__act_cycle *c, const qd_hj_sep *sep, double q0,
@@ -205,7 +221,9 @@ static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, co
     qd_act_fail why = qd__act_cycle_find(&f, q0, angle, &c);
     qd_status st = QD_OK;
     a->c[k].lo = c.lo;
-    if (why != QD_ACT_OK)
+    if (why == QD_ACT_UNBOUNDED && !angle && !qd_has(h->sep[k].p2, h->sep[k].q))
+        st = fail_cyclic(ctx, a, k);
+    else if (why != QD_ACT_OK)
         st = fail_motion(ctx, a, why, k);
     else if (!qd__act_integrals(&f, &c, &a->c[k].J, &a->dJ[k * a->n]) ||
              !add_phase(&f, &c, &h->sep[k], q0, &a->dJ[k * a->n], nvals, syms, vals, beta)) {
@@ -354,6 +372,24 @@ static void separation_free(qd_hj *h, const qd_ham *hm) {
         qd_hj_free(h);
 }
 
+/* opts->angles marked among the coordinates; false (QD_ERR_ARG) for one
+ * that is not a coordinate. */
+static bool angles_given(qd_ctx *ctx, const qd_ham *hm, const qd_action_opts *opts,
+                         bool *angle) {
+    for (size_t i = 0; opts && i < opts->nangles; i++) {
+        size_t k = 0;
+        while (k < hm->n && hm->q[k] != opts->angles[i])
+            k++;
+        if (k == hm->n) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "%s is given as an angle but is not a coordinate",
+                         opts->angles[i] ? qd_expr_name(opts->angles[i]) : "(null)");
+            return false;
+        }
+        angle[k] = true;
+    }
+    return true;
+}
+
 qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_expr *const *syms,
                        const double *vals, const qd_action_opts *opts, qd_action *out) {
     *out = (qd_action){0};
@@ -365,7 +401,7 @@ qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_ex
     double *v2 = NULL;
     qd_status st;
     if (angle && with_momenta(ctx, hm, nvals, syms, vals, &s2, &v2) &&
-        qd__act_angles(ctx, m, hm->n, hm->q, angle))
+        qd__act_angles(ctx, m, hm->n, hm->q, angle) && angles_given(ctx, hm, opts, angle))
         st = qd_action_of_sep(ctx, h, angle, nvals + hm->n, s2, v2, opts, out);
     else
         st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;

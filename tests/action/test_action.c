@@ -536,6 +536,42 @@ static void test_kepler_collision(void **state) {
     sf_free(s.f);
 }
 
+/* Kepler given by H in r, theta (Desloge ch. 79; Goldstein sec. 10.8):
+ * theta is cyclic and enters H nowhere, so nothing shows it is an angle.
+ * Unsaid, it is a translation, unbounded, and the error says how to say
+ * so; said (qd_action_opts.angles), it rotates and the Kepler identities
+ * hold, p_theta taken from the state. */
+static void test_kepler_given_by_h(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates r, theta\nmomenta p_r, p_theta\nparameters m = 1.3, k = 4\n"
+                "H = p_r^2/(2*m) + p_theta^2/(2*m*r^2) - k/r\n");
+    at_set(&s, "r", 1);
+    at_set(&s, "theta", 0.3);
+    at_set(&s, "p_r", 1.3 * 0.4);
+    at_set(&s, "p_theta", 1.3 * 1.5);
+    qd_action a;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, NULL, &a), QD_ERR_ARG);
+    assert_int_equal(a.fail, QD_ACT_UNBOUNDED);
+    assert_int_equal(a.fail_coord, 1);
+    assert_non_null(strstr(qd_ctx_message(s.f->ctx), "not known to be an angle"));
+    assert_non_null(strstr(qd_ctx_diag(s.f->ctx)->hint, "--angle"));
+    qd_action_free(&a);
+    qd_ctx_clear_error(s.f->ctx);
+    const qd_expr *theta = qd_lookup(s.f->ctx, "theta"), *k = qd_lookup(s.f->ctx, "k");
+    qd_action_opts o = {.nangles = 1, .angles = &theta};
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, &o, &a), QD_OK);
+    assert_int_equal(a.c[1].kind, QD_ACT_ROTATION);
+    close_to("J_theta = 2 pi |p_theta|", a.c[1].J, 2 * PI * 1.3 * 1.5, 1e-13);
+    check_kepler(&a, 1.3, 4);
+    qd_action_free(&a);
+    o.angles = &k;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, &o, &a), QD_ERR_ARG);
+    assert_non_null(strstr(qd_ctx_message(s.f->ctx), "k is given as an angle but is not a coordinate"));
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
 /* ---- the same through qd_hj_derive ---------------------------------------- */
 
 /* The models' separations found by qd_hj (not written out): the same
@@ -623,6 +659,7 @@ int main(void) {
         cmocka_unit_test(test_kepler_spherical),
         cmocka_unit_test(test_kepler_via_hj),
         cmocka_unit_test(test_kepler_collision),
+        cmocka_unit_test(test_kepler_given_by_h),
         cmocka_unit_test(test_anisotropic_via_hj),
         cmocka_unit_test(test_not_separable),
     };

@@ -17,7 +17,8 @@ seed 002):
   - Kepler in spherical coordinates (a model written here): J_r + J_theta +
     J_phi the same sum, the three frequencies equal, three 1 : 1 pairs;
   - a model given by H takes its momenta in --at (or its velocities, q' =
-    dH/dp): the oscillator's J = 2 pi E/omega either way;
+    dH/dp): the oscillator's J = 2 pi E/omega either way; Kepler's H in r,
+    theta needs --angle theta (theta is in no sin or cos), then the Kepler sum;
   - the quartic oscillator V = k x^4: J by the Beta function, omega from
     H homogeneous of degree 4/3 in J (no closed form claimed);
   - the Morse well: J = (2 pi/a) sqrt(2 m D) (1 - sqrt(1 - E/D)) and
@@ -180,6 +181,31 @@ def given_by_h(build):
     close("q' = p/m gives the same J", by_v["actions"]["q"], by_p["actions"]["q"], 1e-14)
 
 
+def kepler_given_by_h(build):
+    """Kepler's H in r, theta: theta enters H nowhere, so only --angle says
+    it is an angle; then J_r + J_theta = 2 pi k sqrt(m/(-2E)) and the two
+    frequencies are equal (Goldstein eq. 10.137); without it, an error that
+    names --angle."""
+    m, k = 1.3, 4.0
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "kepler_h.qd"
+        model.write_text("coordinates r, theta\nmomenta p_r, p_theta\nparameters m = 1.3, k = 4\n"
+                         "H = p_r^2/(2*m) + p_theta^2/(2*m*r^2) - k/r\n")
+        at = "r=1, theta=0.3, p_r=0.52, p_theta=1.95"
+        r = qdot(build, "action", model, "--at", at)
+        check("cyclic theta without --angle", r.returncode == 2 and "--angle" in r.stderr,
+              "exit %d: %s" % (r.returncode, r.stderr))
+        res = action(build, model, "--at", at, "--angle", "theta")
+        r = qdot(build, "action", model, "--at", at, "--angle", "k")
+        check("--angle k refused", r.returncode == 2 and "parameter" in r.stderr, r.stderr)
+    E = res["energy"]
+    a = -k / (2 * E)
+    close("Kepler H sum J", sum(res["actions"].values()), 2 * math.pi * k * math.sqrt(m / (-2 * E)),
+          1e-11)
+    for q, w in res["frequencies"].items():
+        close("Kepler H omega_" + q, w, 1 / math.sqrt(m * a ** 3 / k), 1e-10)
+
+
 def quartic(build):
     """V = k x^4: J = 4 sqrt(2 m E) A (1/4) B(1/4, 3/2), A = (E/k)^(1/4), and,
     H being homogeneous of degree 4/3 in J, omega = 2 pi (4/3) E / J."""
@@ -309,7 +335,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
-    for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h, quartic,
+    for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h,
+                 kepler_given_by_h, quartic,
                  morse, anisotropic, angles, adiabatic, errors):
         try:
             part(args.build)
