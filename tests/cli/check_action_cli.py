@@ -125,11 +125,19 @@ def simulated_period(build, model, event):
 
 
 def period_by_simulation(build):
-    for model, event in ((EX / "action_pendulum.qd", "theta' = 0, theta > 0"),
-                         (EX / "action_pendulum_rotation.qd", "theta = 2*pi")):
+    """Each coordinate's 2 pi/omega against the return `qdot simulate` times:
+    the pendulum both ways, and with two degrees of freedom Kepler's r (back
+    at the apocentre r = 1) and theta (a turn), the anisotropic oscillator's
+    x and y (back at the turning point, or through 0 the same way)."""
+    for model, q, event in ((EX / "action_pendulum.qd", "theta", "theta' = 0, theta > 0"),
+                            (EX / "action_pendulum_rotation.qd", "theta", "theta = 2*pi"),
+                            (EX / "kepler_polar.qd", "r", "r' = 0, r > 0.8"),
+                            (EX / "kepler_polar.qd", "theta", "theta = 2*pi"),
+                            (EX / "action_anisotropic.qd", "x", "x' = 0, x > 0"),
+                            (EX / "action_anisotropic.qd", "y", "y = 0, y' > 0")):
         res = action(build, model)
-        close("period by simulate (%s)" % model.name, simulated_period(build, model, event),
-              2 * math.pi / res["coordinates"][0]["omega"], 1e-10)
+        close("period of %s by simulate (%s)" % (q, model.name),
+              simulated_period(build, model, event), 2 * math.pi / res["frequencies"][q], 1e-10)
 
 
 def kepler(build):
