@@ -51,9 +51,10 @@ typedef enum qd_act_fail {
                              logarithmically */
     QD_ACT_AT_REST,       /* p_k^2 <= 0 all round the state: J_k = 0, rest at an equilibrium */
     QD_ACT_NOT_SEPARABLE, /* the Hamilton-Jacobi equation does not separate */
-    QD_ACT_SINGULAR       /* an end of the motion where p_k^2 does not vanish (a
-                             collision, p_k^2 infinite, or the edge of its domain):
-                             no turning point, so no cycle; fail_coord's lo = hi = there */
+    QD_ACT_SINGULAR       /* an end of the motion where p_k^2 does not vanish (infinite:
+                             a collision, or a singular point of the coordinates such as
+                             the axis of parabolic ones; or the edge of its domain): no
+                             turning point, so no cycle; the coordinate's lo = hi = there */
 } qd_act_fail;
 
 typedef struct qd_act_coord {

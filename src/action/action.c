@@ -167,12 +167,14 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
     const char *name = qd_expr_name(a->c[k].q);
     if (why == QD_ACT_SINGULAR) {
         qd_ctx_error(ctx, QD_ERR_ARG,
-                     "%s reaches %s = %.6g with p != 0: p^2 does not vanish there (a "
-                     "collision, or the edge of p^2's domain), so it is no turning point and "
-                     "there is no cycle", name, name, a->c[k].lo);
+                     "%s reaches %s = %.6g with p != 0: p^2 does not vanish there (it is "
+                     "infinite: a collision, or a singular point of the coordinates such as "
+                     "an axis; or it ends: the edge of its domain), so it is no turning "
+                     "point and there is no cycle", name, name, a->c[k].lo);
         qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE,
-                           "a nearby state that turns back before it has an action (for "
-                           "Kepler's radial orbit: a little angular momentum)");
+                           "a nearby state that turns back before it has an action (a little "
+                           "angular momentum: Kepler's radial orbit, p_phi = 0 in parabolic "
+                           "or spheroidal coordinates)");
         return QD_ERR_ARG;
     }
     qd_ctx_error(ctx, QD_ERR_ARG, what[why], name);

@@ -19,6 +19,8 @@ seed 002):
   - a model given by H takes its momenta in --at (or its velocities, q' =
     dH/dp): the oscillator's J = 2 pi E/omega either way; Kepler's H in r,
     theta needs --angle theta (theta is in no sin or cos), then the Kepler sum;
+  - Kepler in parabolic coordinates (examples/hj_stark.qd at F = 0, Liouville):
+    the same sum and three equal frequencies; F = 0.1 splits them;
   - the quartic oscillator V = k x^4: J by the Beta function, omega from
     H homogeneous of degree 4/3 in J (no closed form claimed);
   - the Morse well: J = (2 pi/a) sqrt(2 m D) (1 - sqrt(1 - E/D)) and
@@ -214,6 +216,30 @@ def kepler_given_by_h(build):
         close("Kepler H omega_" + q, w, 1 / math.sqrt(m * a ** 3 / k), 1e-10)
 
 
+def parabolic(build):
+    """Kepler in parabolic coordinates (examples/hj_stark.qd at F = 0, the
+    Liouville form of Landau-Lifshitz §48 problem 2; phi named an angle):
+    J_xi + J_eta + J_phi = 2 pi k sqrt(m/(-2E)), the three frequencies equal
+    and H = -2 pi^2 m k^2/(sum J)^2, as in polar coordinates.  The field
+    F = 0.1 lifts the degeneracy (the Stark effect): no pair is named."""
+    m, k = 1.0, 1.0
+    at = "xi=1, eta=1, p_xi=0.3, p_eta=-0.2, p_phi=0.4"
+    res = action(build, EX / "hj_stark.qd", "--set", "F=0", "--angle", "phi", "--at", at)
+    E = res["energy"]
+    a = -k / (2 * E)
+    close("parabolic Kepler sum J", sum(res["actions"].values()),
+          2 * math.pi * k * math.sqrt(m / (-2 * E)), 1e-11)
+    for q, w in res["frequencies"].items():
+        close("parabolic Kepler omega_" + q, w, 1 / math.sqrt(m * a ** 3 / k), 1e-10)
+    check("parabolic three 1 : 1", [d["ratio"] for d in res["degeneracies"]] == [[1, 1]] * 3,
+          str(res["degeneracies"]))
+    close("parabolic J_phi = 2 pi |p_phi|", res["actions"]["phi"], 2 * math.pi * 0.4, 1e-13)
+    res = action(build, EX / "hj_stark.qd", "--angle", "phi", "--at", at)
+    check("Stark field splits the frequencies", res["degeneracies"] == [] and
+          abs(res["frequencies"]["xi"] / res["frequencies"]["eta"] - 1) > 1e-2,
+          str(res["frequencies"]))
+
+
 def quartic(build):
     """V = k x^4: J = 4 sqrt(2 m E) A (1/4) B(1/4, 3/2), A = (E/k)^(1/4), and,
     H being homogeneous of degree 4/3 in J, omega = 2 pi (4/3) E / J."""
@@ -344,7 +370,7 @@ def main():
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
     for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h,
-                 kepler_given_by_h, quartic,
+                 kepler_given_by_h, parabolic, quartic,
                  morse, anisotropic, angles, adiabatic, errors):
         try:
             part(args.build)
