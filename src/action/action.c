@@ -8,6 +8,7 @@
 #include "act.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "base/mem.h"
@@ -198,6 +199,22 @@ static qd_status fail_cyclic(qd_ctx *ctx, qd_action *a, size_t k) {
     return QD_ERR_ARG;
 }
 
+/* A cyclic coordinate whose momentum is 0 (phi of an orbit in a plane
+ * phi = const): not an equilibrium of the system, as AT_REST's message
+ * would say, but a cycle of zero width whose frequency has no meaning. */
+static qd_status fail_still(qd_ctx *ctx, qd_action *a, size_t k) {
+    const char *name = qd_expr_name(a->c[k].q);
+    a->fail = QD_ACT_AT_REST;
+    a->fail_coord = k;
+    qd_ctx_error(ctx, QD_ERR_ARG, "%s is cyclic and its momentum is 0 at the state: it stays "
+                 "constant (J = 0), so it has no cycle and no frequency", name);
+    char hint[256];
+    snprintf(hint, sizeof hint, "the motion keeps to %s = constant: give it a little "
+             "momentum, or take the model without %s", name, name);
+    qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE, hint);
+    return QD_ERR_ARG;
+}
+
 /* beta_j += this coordinate's dW/dalpha_j at the state, moving with the
  * sign of its momentum there (forward when the state does not give it). */
 static bool add_phase(qd__act_fn *f, const qd__act_cycle *c, const qd_hj_sep *sep, double q0,
@@ -223,8 +240,11 @@ static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, co
     qd_act_fail why = qd__act_cycle_find(&f, q0, angle, &c);
     qd_status st = QD_OK;
     a->c[k].lo = c.lo;
-    if (why == QD_ACT_UNBOUNDED && !angle && !qd_has(h->sep[k].p2, h->sep[k].q))
+    bool cyclic = !qd_has(h->sep[k].p2, h->sep[k].q);
+    if (why == QD_ACT_UNBOUNDED && !angle && cyclic)
         st = fail_cyclic(ctx, a, k);
+    else if (why == QD_ACT_AT_REST && cyclic)
+        st = fail_still(ctx, a, k);
     else if (why != QD_ACT_OK)
         st = fail_motion(ctx, a, why, k);
     else if (!qd__act_integrals(&f, &c, &a->c[k].J, &a->dJ[k * a->n]) ||

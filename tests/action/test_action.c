@@ -572,6 +572,32 @@ static void test_kepler_given_by_h(void **state) {
     sf_free(s.f);
 }
 
+/* Kepler in space with phi' = 0 (Desloge ch. 79): the orbit keeps to a
+ * plane phi = const.  phi's cycle has zero width, which is not rest at an
+ * equilibrium of the system (r and theta move): the error says the momentum
+ * is 0 instead. */
+static void test_cyclic_still(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates r, theta, phi\nparameters m = 0.8, k = 2.5\n"
+                "particle m at r*(sin(theta)*cos(phi), sin(theta)*sin(phi), cos(theta))\n"
+                "V = -k/r\n");
+    at_set(&s, "r", 1.2);
+    at_set(&s, "theta", 1.1);
+    at_set(&s, "phi", 0.2);
+    at_set(&s, "r'", -0.3);
+    at_set(&s, "theta'", 0.9);
+    at_set(&s, "phi'", 0);
+    qd_action a;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, NULL, &a), QD_ERR_ARG);
+    assert_int_equal(a.fail, QD_ACT_AT_REST);
+    assert_int_equal(a.fail_coord, 2);
+    if (!strstr(qd_ctx_message(s.f->ctx), "phi is cyclic and its momentum is 0"))
+        fail_msg("%s", qd_ctx_message(s.f->ctx));
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
 /* ---- the same through qd_hj_derive ---------------------------------------- */
 
 /* The models' separations found by qd_hj (not written out): the same
@@ -660,6 +686,7 @@ int main(void) {
         cmocka_unit_test(test_kepler_via_hj),
         cmocka_unit_test(test_kepler_collision),
         cmocka_unit_test(test_kepler_given_by_h),
+        cmocka_unit_test(test_cyclic_still),
         cmocka_unit_test(test_anisotropic_via_hj),
         cmocka_unit_test(test_not_separable),
     };
