@@ -318,7 +318,7 @@ enum { MAX_ANGLES = 16 };
 static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const qd_expr **out,
                         size_t *n) {
     *n = 0;
-    for (const char *s = list; list; s++) {
+    for (const char *s = list;; s++) {
         size_t len = strcspn(s, ",");
         char name[128];
         while (len && *s == ' ')
