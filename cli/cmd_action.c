@@ -14,12 +14,13 @@
 #include "json.h"
 #include "model_cli.h"
 #include "qdot/action.h"
+#include "qdot/routh.h"
 #include "state.h"
 
 #define PI 3.14159265358979323846
 
 typedef struct act_args {
-    const char *file, *at;
+    const char *file, *at, *angle;
     const char *sets[QD_CLI_MAX_LIST];
     size_t nsets;
     bool json;
@@ -28,7 +29,7 @@ typedef struct act_args {
 static const char usage_text[] =
     "usage: qdot action FILE [--at \"q1=VALUE, q1'=VALUE (or p1=VALUE), ...\"] "
     "[--set NAME=VALUE]... "
-    "[--format text|json]";
+    "[--angle q[,q...]] [--format text|json]";
 
 static const char *const formats[] = {"text", "json", NULL};
 
@@ -43,6 +44,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     }
     if ((v = cli_value(argc, argv, i, "--at")))
         return cli_once("--at", &a->at, v);
+    if ((v = cli_value(argc, argv, i, "--angle")))
+        return cli_once("--angle", &a->angle, v);
     if ((v = cli_value(argc, argv, i, "--set")))
         return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
     return cli_bad_option(argv[*i], usage_text);
@@ -309,6 +312,36 @@ static void put_json(const qd_action *a, qd_buf *b) {
 
 /* ---- the command ------------------------------------------------------------------ */
 
+enum { MAX_ANGLES = 16 };
+
+/* --angle q[,q...]: coordinates the model does not show to be angles. */
+static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const qd_expr **out,
+                        size_t *n) {
+    *n = 0;
+    for (const char *s = list;; s++) {
+        size_t len = strcspn(s, ",");
+        char name[128];
+        while (len && *s == ' ')
+            s++, len--;
+        while (len && s[len - 1] == ' ')
+            len--;
+        if (!len || len >= sizeof name || *n == MAX_ANGLES) {
+            cli_diag_error("--angle takes a comma-separated list of coordinates, not '%s'", list);
+            return QD_EXIT_USAGE;
+        }
+        memcpy(name, s, len);
+        name[len] = '\0';
+        if (!(out[(*n)++] = qd_routh_lookup(ctx, m, name))) {
+            cli_diag_error("--angle: %s", qd_ctx_message(ctx));
+            return QD_EXIT_USAGE;
+        }
+        s += strcspn(s, ",");
+        if (!*s)
+            break;
+    }
+    return QD_EXIT_OK;
+}
+
 static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
     int rc = cli_load(ctx, a->file, a->nsets, a->sets, false, mf);
     if (rc != QD_EXIT_OK)
@@ -316,8 +349,12 @@ static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
     act_state st = {0};
     rc = state_at(ctx, mf->model, a->at, &st);
     qd_action act = {0};
+    const qd_expr *angles[MAX_ANGLES];
+    qd_action_opts opts = {.angles = angles};
+    if (rc == QD_EXIT_OK && a->angle)
+        rc = angles_parse(ctx, mf->model, a->angle, angles, &opts.nangles);
     if (rc == QD_EXIT_OK &&
-        qd_action_at(ctx, mf->model, st.n, st.syms, st.vals, NULL, &act) != QD_OK)
+        qd_action_at(ctx, mf->model, st.n, st.syms, st.vals, &opts, &act) != QD_OK)
         rc = cli_diag_model(ctx, mf->path, mf->text, mf->model);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;

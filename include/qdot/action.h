@@ -50,7 +50,11 @@ typedef enum qd_act_fail {
     QD_ACT_SEPARATRIX,    /* a double root of p_k^2: the period (dJ/dE) diverges
                              logarithmically */
     QD_ACT_AT_REST,       /* p_k^2 <= 0 all round the state: J_k = 0, rest at an equilibrium */
-    QD_ACT_NOT_SEPARABLE  /* the Hamilton-Jacobi equation does not separate */
+    QD_ACT_NOT_SEPARABLE, /* the Hamilton-Jacobi equation does not separate */
+    QD_ACT_SINGULAR       /* an end of the motion where p_k^2 does not vanish (infinite:
+                             a collision, or a singular point of the coordinates such as
+                             the axis of parabolic ones; or the edge of its domain): no
+                             turning point, so no cycle; the coordinate's lo = hi = there */
 } qd_act_fail;
 
 typedef struct qd_act_coord {
@@ -100,12 +104,17 @@ typedef struct qd_action_opts {
     const char *energy_name;   /* NULL: "E" */
     double degeneracy_tol;     /* |omega_i/omega_j - num/den| relative; 0: 1e-9 */
     long max_den;              /* the largest num, den tried; 0: 12 */
+    /* coordinates taken as angles (period 2 pi) besides those found inside
+     * sin, cos or tan: a cyclic angle of a model given by H appears nowhere
+     * (Kepler's H in r, theta) and would be read as unbounded */
+    size_t nangles;
+    const qd_expr *const *angles;
 } qd_action_opts;
 
 /* The actions and frequencies of model m at the state syms/vals (every
  * coordinate, velocity and parameter with a value; a momentum among them
  * is taken as given, the others come from p = dL/dq', or for a model
- * given by H from q' = dH/dp inverted).  One degree of freedom
+ * given by H from q' = dH/dp inverted; opts->angles adds angles).  One degree of freedom
  * is separated here (H = E solved for p^2); more go through qd_hj_derive.
  * On failure the reason is in ctx, and out->fail says which failure of the
  * motion it is (out->fail_coord where).  opts may be NULL. */

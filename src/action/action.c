@@ -8,6 +8,7 @@
 #include "act.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "base/mem.h"
@@ -165,8 +166,52 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
     a->fail = why;
     a->fail_coord = k;
     const char *name = qd_expr_name(a->c[k].q);
+    if (why == QD_ACT_SINGULAR) {
+        qd_ctx_error(ctx, QD_ERR_ARG,
+                     "%s reaches %s = %.6g with p != 0: p^2 does not vanish there (it is "
+                     "infinite: a collision, or a singular point of the coordinates such as "
+                     "an axis; or it ends: the edge of its domain), so it is no turning "
+                     "point and there is no cycle", name, name, a->c[k].lo);
+        qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE,
+                           "a nearby state that turns back before it has an action (a little "
+                           "angular momentum: Kepler's radial orbit, p_phi = 0 in parabolic "
+                           "or spheroidal coordinates)");
+        return QD_ERR_ARG;
+    }
     qd_ctx_error(ctx, QD_ERR_ARG, what[why], name);
     qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE, hint[why]);
+    return QD_ERR_ARG;
+}
+
+/* A cyclic coordinate not known to be an angle (it enters the model
+ * nowhere inside sin, cos or tan): unbounded as a translation, a rotation
+ * if it is an angle, which only the caller can say. */
+static qd_status fail_cyclic(qd_ctx *ctx, qd_action *a, size_t k) {
+    const char *name = qd_expr_name(a->c[k].q);
+    a->fail = QD_ACT_UNBOUNDED;
+    a->fail_coord = k;
+    qd_ctx_error(ctx, QD_ERR_ARG, "%s is cyclic and not known to be an angle (it is inside no "
+                 "sin, cos or tan of the model): as a translation it is unbounded, no cycle",
+                 name);
+    qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE,
+                       "if it is an angle, say so (qdot action --angle NAME; "
+                       "qd_action_opts.angles): it then rotates over one turn");
+    return QD_ERR_ARG;
+}
+
+/* A cyclic coordinate whose momentum is 0 (phi of an orbit in a plane
+ * phi = const): not an equilibrium of the system, as AT_REST's message
+ * would say, but a cycle of zero width whose frequency has no meaning. */
+static qd_status fail_still(qd_ctx *ctx, qd_action *a, size_t k) {
+    const char *name = qd_expr_name(a->c[k].q);
+    a->fail = QD_ACT_AT_REST;
+    a->fail_coord = k;
+    qd_ctx_error(ctx, QD_ERR_ARG, "%s is cyclic and its momentum is 0 at the state: it stays "
+                 "constant (J = 0), so it has no cycle and no frequency", name);
+    char hint[256];
+    snprintf(hint, sizeof hint, "the motion keeps to %s = constant: give it a little "
+             "momentum, or take the model without %s", name, name);
+    qd_ctx_error_about(ctx, QD_SUBJECT_COORD, k, name, QD_REASON_NONE, hint);
     return QD_ERR_ARG;
 }
 
@@ -194,7 +239,13 @@ static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, co
     qd__act_cycle c;
     qd_act_fail why = qd__act_cycle_find(&f, q0, angle, &c);
     qd_status st = QD_OK;
-    if (why != QD_ACT_OK)
+    a->c[k].lo = c.lo;
+    bool cyclic = !qd_has(h->sep[k].p2, h->sep[k].q);
+    if (why == QD_ACT_UNBOUNDED && !angle && cyclic)
+        st = fail_cyclic(ctx, a, k);
+    else if (why == QD_ACT_AT_REST && cyclic)
+        st = fail_still(ctx, a, k);
+    else if (why != QD_ACT_OK)
         st = fail_motion(ctx, a, why, k);
     else if (!qd__act_integrals(&f, &c, &a->c[k].J, &a->dJ[k * a->n]) ||
              !add_phase(&f, &c, &h->sep[k], q0, &a->dJ[k * a->n], nvals, syms, vals, beta)) {
@@ -343,6 +394,24 @@ static void separation_free(qd_hj *h, const qd_ham *hm) {
         qd_hj_free(h);
 }
 
+/* opts->angles marked among the coordinates; false (QD_ERR_ARG) for one
+ * that is not a coordinate. */
+static bool angles_given(qd_ctx *ctx, const qd_ham *hm, const qd_action_opts *opts,
+                         bool *angle) {
+    for (size_t i = 0; opts && i < opts->nangles; i++) {
+        size_t k = 0;
+        while (k < hm->n && hm->q[k] != opts->angles[i])
+            k++;
+        if (k == hm->n) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "%s is given as an angle but is not a coordinate",
+                         opts->angles[i] ? qd_expr_name(opts->angles[i]) : "(null)");
+            return false;
+        }
+        angle[k] = true;
+    }
+    return true;
+}
+
 qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_expr *const *syms,
                        const double *vals, const qd_action_opts *opts, qd_action *out) {
     *out = (qd_action){0};
@@ -354,7 +423,7 @@ qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_ex
     double *v2 = NULL;
     qd_status st;
     if (angle && with_momenta(ctx, hm, nvals, syms, vals, &s2, &v2) &&
-        qd__act_angles(ctx, m, hm->n, hm->q, angle))
+        qd__act_angles(ctx, m, hm->n, hm->q, angle) && angles_given(ctx, hm, opts, angle))
         st = qd_action_of_sep(ctx, h, angle, nvals + hm->n, s2, v2, opts, out);
     else
         st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;

@@ -267,6 +267,25 @@ static bool double_root(const double *d, double pmax) {
     return d[0] * d[0] <= 2 * fabs(d[1]) * separatrix_tol * pmax;
 }
 
+/* An end of the allowed region where p^2 does not fall to zero is no
+ * turning point: the motion reaches it with p != 0.  p^2 grows without
+ * bound there (a collision: Kepler's radial orbit, alpha_theta = 0, whose
+ * r reaches 0), or p^2 stops at the edge of its domain.  A root found by
+ * bisection leaves p^2 ~ |p^2'| ulp(end) there, far below the interior's
+ * values; a pole or an edge leaves it comparable or larger (which once
+ * read as a double root: "separatrix"). */
+static bool singular_end(qd__act_fn *f, double lo, double hi, double *end) {
+    double m = 0;
+    for (int i = 1; i < 64; i++)
+        m = fmax(m, qd__act_p2(f, lo + (hi - lo) * i / 64));
+    for (int side = 0; side < 2; side++) {
+        *end = side ? hi : lo;
+        if (!(qd__act_p2(f, *end) <= 1e-6 * m))
+            return true;
+    }
+    return false;
+}
+
 /* An angle whose p^2 stays positive over a whole turn rotates; its least
  * p^2 within tol of zero is the separatrix. */
 static qd_act_fail rotation(qd__act_fn *f, double q0, double pmin, qd__act_cycle *c) {
@@ -288,6 +307,11 @@ qd_act_fail qd__act_cycle_find(qd__act_fn *f, double q0, bool angle, qd__act_cyc
      * potential (width ~ sqrt(eps) there) is rest, not motion */
     if (hi - lo <= 1e-7 * fmax(1, fabs(q0)))
         return QD_ACT_AT_REST;
+    double end;
+    if (singular_end(f, lo, hi, &end)) {
+        *c = (qd__act_cycle){.kind = QD_ACT_LIBRATION, .lo = end, .hi = end};
+        return QD_ACT_SINGULAR;
+    }
     *c = (qd__act_cycle){.kind = QD_ACT_LIBRATION, .lo = lo, .hi = hi};
     derivatives_at(f, lo, c->dlo);
     derivatives_at(f, hi, c->dhi);
@@ -302,7 +326,7 @@ qd_act_fail qd__act_cycle_find(qd__act_fn *f, double q0, bool angle, qd__act_cyc
 typedef struct integrand {
     qd__act_fn *f;
     long j;                  /* -1: sqrt(p^2); else dp^2/dalpha_j / (2 sqrt(p^2)) */
-    double near;             /* below this distance from a turning point, Taylor */
+    double near_lo, near_hi; /* below these distances from the turning points, Taylor */
     const double *dlo, *dhi; /* p^2's derivatives at the ends that are turning
                                 points (NULL: an end where p^2 > 0) */
 } integrand;
@@ -311,7 +335,7 @@ typedef struct integrand {
  * near a turning point (where p^2 = 0 exactly, not as computed). */
 static double p2_at(const integrand *g, double x, double xc) {
     const double *d = xc >= 0 ? g->dlo : g->dhi;
-    if (d && fabs(xc) < g->near) {
+    if (d && fabs(xc) < (xc >= 0 ? g->near_lo : g->near_hi)) {
         qd__act_p2(g->f, x); /* for the alpha-derivatives at x */
         return xc * (d[0] + xc * (d[1] / 2 + xc * d[2] / 6));
     }
@@ -336,9 +360,26 @@ static bool integrate(integrand *g, double a, double b, double *out) {
     return ok || (isfinite(r.value) && r.error <= 1e-10 * fmax(1, fabs(r.value)));
 }
 
+/* The Taylor polynomial's reach at a turning point: 1e-4 of the cycle, and
+ * 1e-3 of the length on which p^2 bends there (|d1/d2|, sqrt|d1/d3|, d_k
+ * the k-th derivative).  An eccentric Kepler orbit's pericentre bends on
+ * the scale r_min, far below the cycle's width: the cubic at 1e-4 of the
+ * width was off there and the quadrature of dJ/dalpha did not converge
+ * (r' = 0.4, theta' = 0.1 in examples/kepler_polar.qd). */
+static double near_of(const double *d, double width) {
+    double n = 1e-4 * width;
+    if (d[1] != 0)
+        n = fmin(n, 1e-3 * fabs(d[0] / d[1]));
+    if (d[2] != 0)
+        n = fmin(n, 1e-3 * sqrt(fabs(d[0] / d[2])));
+    return n;
+}
+
 static integrand integrand_of(qd__act_fn *f, const qd__act_cycle *c) {
     bool lib = c->kind == QD_ACT_LIBRATION;
-    return (integrand){.f = f, .j = -1, .near = 1e-4 * (c->hi - c->lo),
+    double w = c->hi - c->lo;
+    return (integrand){.f = f, .j = -1, .near_lo = lib ? near_of(c->dlo, w) : 0,
+                       .near_hi = lib ? near_of(c->dhi, w) : 0,
                        .dlo = lib ? c->dlo : NULL, .dhi = lib ? c->dhi : NULL};
 }
 

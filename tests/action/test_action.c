@@ -499,6 +499,105 @@ static void test_angles_advance(void **state) {
     sf_free(s.f);
 }
 
+/* Kepler's radial orbit (alpha_theta = 0, Desloge ch. 79): p_r^2 =
+ * 2 m (E + k/r) has no root at r = 0 but a pole, so r reaches the centre
+ * with p_r infinite: a collision, not a turning point.  It was reported
+ * as a separatrix (the pole read as a double root).  With a little
+ * angular momentum the orbit turns back and the Kepler identities hold
+ * (Goldstein eq. 10.137: J_r + J_theta = 2 pi k sqrt(m/(-2E)), the two
+ * frequencies equal to 1e-10, 1 : 1 named): eccentricities 0.97 to
+ * 1 - 3e-7 (at theta' = 0.3 the frequencies differed by 5e-9 and the
+ * degeneracy went unnamed; at 0.1 the quadrature failed). */
+static void test_kepler_collision(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, kepler_polar);
+    at_set(&s, "r", 1);
+    at_set(&s, "theta", 0.3);
+    at_set(&s, "r'", 0.4);
+    at_set(&s, "theta'", 0);
+    qd_action a;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, NULL, &a), QD_ERR_ARG);
+    if (a.fail != QD_ACT_SINGULAR)
+        fail_msg("fail %d: %s", (int)a.fail, qd_ctx_message(s.f->ctx));
+    assert_int_equal(a.fail_coord, 0);
+    assert_true(fabs(a.c[0].lo) < 1e-6); /* at the centre */
+    assert_non_null(strstr(qd_ctx_message(s.f->ctx), "r reaches r = "));
+    qd_action_free(&a);
+    qd_ctx_clear_error(s.f->ctx);
+    const double w[] = {0.3, 0.1, 1e-2, 1e-3};
+    for (int i = 0; i < 4; i++) {
+        s.n -= 1;
+        at_set(&s, "theta'", w[i]);
+        run_at(&s, &a);
+        check_kepler(&a, 1.3, 4);
+        qd_action_free(&a);
+    }
+    sf_free(s.f);
+}
+
+/* Kepler given by H in r, theta (Desloge ch. 79; Goldstein sec. 10.8):
+ * theta is cyclic and enters H nowhere, so nothing shows it is an angle.
+ * Unsaid, it is a translation, unbounded, and the error says how to say
+ * so; said (qd_action_opts.angles), it rotates and the Kepler identities
+ * hold, p_theta taken from the state. */
+static void test_kepler_given_by_h(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates r, theta\nmomenta p_r, p_theta\nparameters m = 1.3, k = 4\n"
+                "H = p_r^2/(2*m) + p_theta^2/(2*m*r^2) - k/r\n");
+    at_set(&s, "r", 1);
+    at_set(&s, "theta", 0.3);
+    at_set(&s, "p_r", 1.3 * 0.4);
+    at_set(&s, "p_theta", 1.3 * 1.5);
+    qd_action a;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, NULL, &a), QD_ERR_ARG);
+    assert_int_equal(a.fail, QD_ACT_UNBOUNDED);
+    assert_int_equal(a.fail_coord, 1);
+    assert_non_null(strstr(qd_ctx_message(s.f->ctx), "not known to be an angle"));
+    assert_non_null(strstr(qd_ctx_diag(s.f->ctx)->hint, "--angle"));
+    qd_action_free(&a);
+    qd_ctx_clear_error(s.f->ctx);
+    const qd_expr *theta = qd_lookup(s.f->ctx, "theta"), *k = qd_lookup(s.f->ctx, "k");
+    qd_action_opts o = {.nangles = 1, .angles = &theta};
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, &o, &a), QD_OK);
+    assert_int_equal(a.c[1].kind, QD_ACT_ROTATION);
+    close_to("J_theta = 2 pi |p_theta|", a.c[1].J, 2 * PI * 1.3 * 1.5, 1e-13);
+    check_kepler(&a, 1.3, 4);
+    qd_action_free(&a);
+    o.angles = &k;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, &o, &a), QD_ERR_ARG);
+    assert_non_null(strstr(qd_ctx_message(s.f->ctx), "k is given as an angle but is not a coordinate"));
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
+/* Kepler in space with phi' = 0 (Desloge ch. 79): the orbit keeps to a
+ * plane phi = const.  phi's cycle has zero width, which is not rest at an
+ * equilibrium of the system (r and theta move): the error says the momentum
+ * is 0 instead. */
+static void test_cyclic_still(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates r, theta, phi\nparameters m = 0.8, k = 2.5\n"
+                "particle m at r*(sin(theta)*cos(phi), sin(theta)*sin(phi), cos(theta))\n"
+                "V = -k/r\n");
+    at_set(&s, "r", 1.2);
+    at_set(&s, "theta", 1.1);
+    at_set(&s, "phi", 0.2);
+    at_set(&s, "r'", -0.3);
+    at_set(&s, "theta'", 0.9);
+    at_set(&s, "phi'", 0);
+    qd_action a;
+    assert_int_equal(qd_action_at(s.f->ctx, s.f->m, s.n, s.syms, s.vals, NULL, &a), QD_ERR_ARG);
+    assert_int_equal(a.fail, QD_ACT_AT_REST);
+    assert_int_equal(a.fail_coord, 2);
+    if (!strstr(qd_ctx_message(s.f->ctx), "phi is cyclic and its momentum is 0"))
+        fail_msg("%s", qd_ctx_message(s.f->ctx));
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
 /* ---- the same through qd_hj_derive ---------------------------------------- */
 
 /* The models' separations found by qd_hj (not written out): the same
@@ -585,6 +684,9 @@ int main(void) {
         cmocka_unit_test(test_kepler_polar),
         cmocka_unit_test(test_kepler_spherical),
         cmocka_unit_test(test_kepler_via_hj),
+        cmocka_unit_test(test_kepler_collision),
+        cmocka_unit_test(test_kepler_given_by_h),
+        cmocka_unit_test(test_cyclic_still),
         cmocka_unit_test(test_anisotropic_via_hj),
         cmocka_unit_test(test_not_separable),
     };

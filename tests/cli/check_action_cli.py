@@ -17,7 +17,10 @@ seed 002):
   - Kepler in spherical coordinates (a model written here): J_r + J_theta +
     J_phi the same sum, the three frequencies equal, three 1 : 1 pairs;
   - a model given by H takes its momenta in --at (or its velocities, q' =
-    dH/dp): the oscillator's J = 2 pi E/omega either way;
+    dH/dp): the oscillator's J = 2 pi E/omega either way; Kepler's H in r,
+    theta needs --angle theta (theta is in no sin or cos), then the Kepler sum;
+  - Kepler in parabolic coordinates (examples/hj_stark.qd at F = 0, Liouville):
+    the same sum and three equal frequencies; F = 0.1 splits them;
   - the quartic oscillator V = k x^4: J by the Beta function, omega from
     H homogeneous of degree 4/3 in J (no closed form claimed);
   - the Morse well: J = (2 pi/a) sqrt(2 m D) (1 - sqrt(1 - E/D)) and
@@ -35,7 +38,8 @@ seed 002):
     the pendulum frozen at t = 0 and at t = 250 (l 1.5 times longer) agree to
     1e-3 while its energy E + m g l changes by more than 10%;
   - errors, exit 2: a separatrix (E = m g l), rest at the bottom, an unbounded
-    coordinate (Desloge ch. 78's H = p^2 - q), a non-separable quartic
+    coordinate (Desloge ch. 78's H = p^2 - q), Kepler's radial orbit (r reaches
+    the centre, a collision: no turning point), a non-separable quartic
     coupling (the hint names qdot poincare), a bad option, H depending on t
     (the hint names the adiabatic invariant), a damped oscillator.
 Prints "N passed, N failed"; exit 1 on failure.
@@ -123,11 +127,19 @@ def simulated_period(build, model, event):
 
 
 def period_by_simulation(build):
-    for model, event in ((EX / "action_pendulum.qd", "theta' = 0, theta > 0"),
-                         (EX / "action_pendulum_rotation.qd", "theta = 2*pi")):
+    """Each coordinate's 2 pi/omega against the return `qdot simulate` times:
+    the pendulum both ways, and with two degrees of freedom Kepler's r (back
+    at the apocentre r = 1) and theta (a turn), the anisotropic oscillator's
+    x and y (back at the turning point, or through 0 the same way)."""
+    for model, q, event in ((EX / "action_pendulum.qd", "theta", "theta' = 0, theta > 0"),
+                            (EX / "action_pendulum_rotation.qd", "theta", "theta = 2*pi"),
+                            (EX / "kepler_polar.qd", "r", "r' = 0, r > 0.8"),
+                            (EX / "kepler_polar.qd", "theta", "theta = 2*pi"),
+                            (EX / "action_anisotropic.qd", "x", "x' = 0, x > 0"),
+                            (EX / "action_anisotropic.qd", "y", "y = 0, y' > 0")):
         res = action(build, model)
-        close("period by simulate (%s)" % model.name, simulated_period(build, model, event),
-              2 * math.pi / res["coordinates"][0]["omega"], 1e-10)
+        close("period of %s by simulate (%s)" % (q, model.name),
+              simulated_period(build, model, event), 2 * math.pi / res["frequencies"][q], 1e-10)
 
 
 def kepler(build):
@@ -177,6 +189,55 @@ def given_by_h(build):
     close("H model energy", by_p["energy"], E, 1e-15)
     close("H model J", by_p["actions"]["q"], 2 * math.pi * E / 2, 1e-12)
     close("q' = p/m gives the same J", by_v["actions"]["q"], by_p["actions"]["q"], 1e-14)
+
+
+def kepler_given_by_h(build):
+    """Kepler's H in r, theta: theta enters H nowhere, so only --angle says
+    it is an angle; then J_r + J_theta = 2 pi k sqrt(m/(-2E)) and the two
+    frequencies are equal (Goldstein eq. 10.137); without it, an error that
+    names --angle."""
+    m, k = 1.3, 4.0
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "kepler_h.qd"
+        model.write_text("coordinates r, theta\nmomenta p_r, p_theta\nparameters m = 1.3, k = 4\n"
+                         "H = p_r^2/(2*m) + p_theta^2/(2*m*r^2) - k/r\n")
+        at = "r=1, theta=0.3, p_r=0.52, p_theta=1.95"
+        r = qdot(build, "action", model, "--at", at)
+        check("cyclic theta without --angle", r.returncode == 2 and "--angle" in r.stderr,
+              "exit %d: %s" % (r.returncode, r.stderr))
+        res = action(build, model, "--at", at, "--angle", "theta")
+        r = qdot(build, "action", model, "--at", at, "--angle", "k")
+        check("--angle k refused", r.returncode == 2 and "parameter" in r.stderr, r.stderr)
+    E = res["energy"]
+    a = -k / (2 * E)
+    close("Kepler H sum J", sum(res["actions"].values()), 2 * math.pi * k * math.sqrt(m / (-2 * E)),
+          1e-11)
+    for q, w in res["frequencies"].items():
+        close("Kepler H omega_" + q, w, 1 / math.sqrt(m * a ** 3 / k), 1e-10)
+
+
+def parabolic(build):
+    """Kepler in parabolic coordinates (examples/hj_stark.qd at F = 0, the
+    Liouville form of Landau-Lifshitz §48 problem 2; phi named an angle):
+    J_xi + J_eta + J_phi = 2 pi k sqrt(m/(-2E)), the three frequencies equal
+    and H = -2 pi^2 m k^2/(sum J)^2, as in polar coordinates.  The field
+    F = 0.1 lifts the degeneracy (the Stark effect): no pair is named."""
+    m, k = 1.0, 1.0
+    at = "xi=1, eta=1, p_xi=0.3, p_eta=-0.2, p_phi=0.4"
+    res = action(build, EX / "hj_stark.qd", "--set", "F=0", "--angle", "phi", "--at", at)
+    E = res["energy"]
+    a = -k / (2 * E)
+    close("parabolic Kepler sum J", sum(res["actions"].values()),
+          2 * math.pi * k * math.sqrt(m / (-2 * E)), 1e-11)
+    for q, w in res["frequencies"].items():
+        close("parabolic Kepler omega_" + q, w, 1 / math.sqrt(m * a ** 3 / k), 1e-10)
+    check("parabolic three 1 : 1", [d["ratio"] for d in res["degeneracies"]] == [[1, 1]] * 3,
+          str(res["degeneracies"]))
+    close("parabolic J_phi = 2 pi |p_phi|", res["actions"]["phi"], 2 * math.pi * 0.4, 1e-13)
+    res = action(build, EX / "hj_stark.qd", "--angle", "phi", "--at", at)
+    check("Stark field splits the frequencies", res["degeneracies"] == [] and
+          abs(res["frequencies"]["xi"] / res["frequencies"]["eta"] - 1) > 1e-2,
+          str(res["frequencies"]))
 
 
 def quartic(build):
@@ -290,6 +351,9 @@ def errors(build):
              "separatrix"),
             ("rest", [EX / "action_pendulum.qd", "--at", "theta=0, theta'=0"], "at rest"),
             ("unbounded", [d78, "--at", "q=1, q'=0.5"], "unbounded"),
+            # Kepler's radial orbit: r reaches the centre, a pole of p_r^2 (was "separatrix")
+            ("collision", [EX / "kepler_polar.qd", "--at", "r=1, r'=0.4, theta'=0"],
+             "reaches r = "),
             ("not separable", [quartic, "--at", "x=0.3, y=0.2"], "qdot poincare"),
             ("bad option", [EX / "action_pendulum.qd", "--bogus"], "usage"),
             ("time-dependent H", [EX / "action_pendulum_lengthening.qd"], "adiabatic invariant"),
@@ -305,7 +369,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     args = ap.parse_args()
-    for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h, quartic,
+    for part in (pendulum, period_by_simulation, kepler, kepler_spherical, given_by_h,
+                 kepler_given_by_h, parabolic, quartic,
                  morse, anisotropic, angles, adiabatic, errors):
         try:
             part(args.build)
