@@ -258,9 +258,17 @@ static bool find_point(const an_scene *s, const char *name, size_t len, size_t *
 }
 
 static int unknown_point(const an_scene *s, const char *opt, const char *name, size_t len) {
-    cli_diag_error("%s: no point '%.*s' (the particles are p1..p%zu in the order of the model's "
-                  "`particle` lines, bodies go by their names, and `origin` is the fixed origin)",
-                  opt, (int)len, name, s->npts - s->nbodies);
+    size_t np = s->npts - s->nbodies;
+    char particles[64];
+    if (np == 0)
+        snprintf(particles, sizeof particles, "the model has no particles");
+    else if (np == 1)
+        snprintf(particles, sizeof particles, "the particle is p1");
+    else
+        snprintf(particles, sizeof particles, "the particles are p1..p%zu", np);
+    cli_diag_error("%s: no point '%.*s' (%s, in the order of the model's `particle` lines; "
+                  "bodies go by their names, and `origin` is the fixed origin)",
+                  opt, (int)len, name, particles);
     return QD_EXIT_USAGE;
 }
 
@@ -373,8 +381,9 @@ int cli_cmd_animate(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = write_page(&s, p.html);
     if (rc == QD_EXIT_OK)
-        fprintf(stderr, "qdot: animate: wrote %s (%zu points, %zu links, %s)\n", p.html, s.npts,
-                s.nlinks, s.plane[0] < 0 ? "3-D" : "in a plane");
+        fprintf(stderr, "qdot: animate: wrote %s (%zu point%s, %zu link%s, %s)\n", p.html,
+                s.npts, s.npts == 1 ? "" : "s", s.nlinks, s.nlinks == 1 ? "" : "s",
+                s.plane[0] < 0 ? "3-D" : "in a plane");
     scene_free(&s);
     cli_sim_free(&c);
     return rc;
