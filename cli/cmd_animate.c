@@ -362,6 +362,10 @@ int cli_cmd_animate(int argc, char **argv) {
     if (rc == QD_EXIT_OK && !p.html) {
         cli_diag_error("-o FILE.html is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;
+    } else if (rc == QD_EXIT_OK && p.a.out) {
+        /* shared with simulate, where it takes the rows: here it would be ignored */
+        cli_diag_error("--out is simulate's; animate writes its page with -o FILE.html");
+        rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
