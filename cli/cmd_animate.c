@@ -143,38 +143,34 @@ static int keep_row(void *data, int event, const double *row) {
     return 0;
 }
 
-/* Row values at time t, linear between the rows around it (on the output
- * grid of an adaptive method the rows are the frames themselves). */
-static void sample(const an_rows *r, size_t *k, double t, double *out) {
+/* The row nearest to time t, searched forward from row *k.  Each frame is a
+ * state the integrator computed, never a blend of two: a blend would cut the
+ * corners of the motion (a rod would seem to shorten between steps).  On the
+ * output grid of an adaptive method the rows are the frames themselves. */
+static const double *nearest(const an_rows *r, size_t *k, double t) {
     while (*k + 1 < r->n && r->v[(*k + 1) * r->width] <= t)
         (*k)++;
     const double *a = r->v + *k * r->width;
-    const double *b = *k + 1 < r->n ? a + r->width : a;
-    double w = b[0] > a[0] ? (t - a[0]) / (b[0] - a[0]) : 0;
-    w = w < 0 ? 0 : w > 1 ? 1 : w;
-    for (size_t j = 1; j < r->width; j++)
-        out[j - 1] = a[j] + w * (b[j] - a[j]);
+    if (*k + 1 < r->n && a[r->width] - t < t - a[0])
+        return a + r->width;
+    return a;
 }
 
 static int frames(const an_rows *r, an_scene *s) {
     size_t n = s->nframes, np = s->npts, nb = s->nbodies;
-    double *buf = malloc(r->width * sizeof *buf);
     s->t = malloc(n * sizeof *s->t);
     s->energy = malloc(n * sizeof *s->energy);
     s->pos = malloc(n * np * 3 * sizeof *s->pos);
     s->rot = malloc((n * nb * 9 + 1) * sizeof *s->rot);
-    if (!buf || !s->t || !s->energy || !s->pos || !s->rot) {
-        free(buf);
+    if (!s->t || !s->energy || !s->pos || !s->rot)
         return QD_EXIT_FAIL;
-    }
     size_t k = 0;
     for (size_t f = 0; f < n; f++) {
-        double t = r->t0 + (r->t_end - r->t0) * (double)f / (double)(n - 1);
-        sample(r, &k, t, buf);
-        s->t[f] = t;
-        s->energy[f] = buf[0];
+        const double *row = nearest(r, &k, r->t0 + (r->t_end - r->t0) * (double)f / (double)(n - 1));
+        s->t[f] = row[0];
+        s->energy[f] = row[1];
         /* outputs: per point x, y, z, then a body's nine rotation entries */
-        const double *o = buf + 1;
+        const double *o = row + 2;
         for (size_t i = 0, b = 0; i < np; i++) {
             memcpy(s->pos + (f * np + i) * 3, o, 3 * sizeof *o);
             o += 3;
@@ -184,7 +180,6 @@ static int frames(const an_rows *r, an_scene *s) {
             }
         }
     }
-    free(buf);
     if (isnan(s->energy[0])) {
         free(s->energy);
         s->energy = NULL;
@@ -217,8 +212,9 @@ static int run(cli_sim *c, an_scene *s) {
     double span = c->opts.t_end - c->opts.t0;
     double want = ceil(span * FPS);
     s->nframes = (want > MAX_FRAMES ? MAX_FRAMES : want < 2 ? 2 : (size_t)want) + 1;
-    /* an adaptive method writes its rows at the frames (dense output) */
-    if (qd_sim_method_adaptive(c->opts.method) && c->opts.dt == 0)
+    /* an adaptive method writes its rows at the frames (dense output); its
+     * --dt would only be another output grid */
+    if (qd_sim_method_adaptive(c->opts.method))
         c->opts.dt = span / (double)(s->nframes - 1);
     qd_sim_stats st;
     cli_progress_start(&r.bar, "animate");

@@ -187,6 +187,17 @@ def main():
                      '--t-end', 2, '-o', tmp / 'sp.html')
     check(rc == 0 and scene((tmp / 'sp.html').read_text())['links'] == [[-1, 0, 1]],
           f'spring pendulum: {rc} {err}')
+    # a fixed step: each frame is the step nearest to it (a linear blend of two
+    # steps would shorten the rods, and they would not be found)
+    rc, _, err = run(qdot, 'animate', DP, *DP_ARGS[:4], '--method', 'gl4', '--dt', 0.013,
+                     '--t-end', 3, '-o', tmp / 'gl4.html')
+    if rc == 0:
+        g = scene((tmp / 'gl4.html').read_text())
+        steps = [t / 0.013 for t in g['t'][:-1]]  # the last row is at t_end
+        check(max(abs(k - round(k)) for k in steps) < 1e-4, 'gl4 frames between steps')  # t to 7 digits
+        check(sorted(map(tuple, g['links'])) == [(-1, 0, 0), (0, 1, 0)], f'gl4 links {g["links"]}')
+    else:
+        failures.append(f'gl4 animate: {rc} {err}')
     # a rod held by a constraint (x^2 + y^2 = l^2) is a rod; an elliptic orbit has none
     rc, _, err = run(qdot, 'animate', EX / 'pendulum_cartesian.qd', '--t-end', 2, '-o',
                      tmp / 'pc.html')
