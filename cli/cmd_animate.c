@@ -257,14 +257,18 @@ static int unknown_point(const an_scene *s, const char *opt, const char *name, s
     size_t np = s->npts - s->nbodies;
     char particles[64];
     if (np == 0)
-        snprintf(particles, sizeof particles, "the model has no particles");
+        snprintf(particles, sizeof particles, "the model has no particle");
     else if (np == 1)
         snprintf(particles, sizeof particles, "the particle is p1");
     else
         snprintf(particles, sizeof particles, "the particles are p1..p%zu", np);
-    cli_diag_error("%s: no point '%.*s' (%s, in the order of the model's `particle` lines; "
-                  "bodies go by their names, and `origin` is the fixed origin)",
-                  opt, (int)len, name, particles);
+    char bodies[256] = "";
+    for (size_t i = np, at = 0; i < s->npts && at < sizeof bodies; i++)
+        at += (size_t)snprintf(bodies + at, sizeof bodies - at, "%s%s", i > np ? ", " : "; bodies: ",
+                               s->pts[i].name);
+    cli_diag_error("%s: no point '%.*s' (%s%s%s; and `origin`, the fixed origin)", opt, (int)len,
+                  name, particles, np ? ", in the order of the model's `particle` lines" : "",
+                  bodies);
     return QD_EXIT_USAGE;
 }
 
