@@ -226,6 +226,8 @@ static int run(cli_sim *c, an_scene *s) {
     if (rc == QD_EXIT_OK) {
         r.t_end = r.v[(r.n - 1) * r.width]; /* a stop or a contact ends the run early */
         rc = frames(&r, s);
+        if (rc != QD_EXIT_OK)
+            r.nomem = true;
         s->energy_error_max = st.energy_error_max;
         s->conservative = qd_sim_conservative(c->s);
         s->method = qd_sim_method_name(c->opts.method);
@@ -233,6 +235,8 @@ static int run(cli_sim *c, an_scene *s) {
                         "energy error %.3g\n", s->method, c->opts.t0, r.t_end, s->nframes,
                 st.steps, wall, st.energy_error_max);
     }
+    if (r.nomem)
+        cli_diag_error("out of memory keeping the run's %zu rows", r.n);
     free(r.v);
     return rc;
 }
