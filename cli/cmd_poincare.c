@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "progress.h"
 #include "sim_cli.h"
 
 static const char usage_text[] =
@@ -31,7 +32,15 @@ typedef struct pc_out {
     size_t ncols, want, got;
     const char **names; /* the header, written once the run is under way */
     bool header;
+    double t0, t_end;
+    cli_progress bar;
 } pc_out;
+
+/* Done is the larger of the crossings found and the time used up. */
+static void progress(pc_out *o, double t) {
+    double by_n = (double)o->got / (double)o->want, by_t = (t - o->t0) / (o->t_end - o->t0);
+    cli_progress_update(&o->bar, by_n > by_t ? by_n : by_t, t);
+}
 
 static int sink(void *data, int event, const double *row) {
     pc_out *o = data;
@@ -41,6 +50,7 @@ static int sink(void *data, int event, const double *row) {
         fputc('\n', o->f);
         o->header = true;
     }
+    progress(o, row[0]);
     if (event != 0) /* samples, and the rows of the model's impacts */
         return 0;
     char num[QD_DOUBLE_MAX];
@@ -105,9 +115,12 @@ int cli_cmd_poincare(int argc, char **argv) {
     }
     if (rc == QD_EXIT_OK && names) {
         qd_sim_columns(c.s, c.opts.method, names, ncols);
-        pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = (size_t)p.n, .names = names};
+        pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = (size_t)p.n, .names = names,
+                    .t0 = c.opts.t0, .t_end = c.opts.t_end};
         qd_sim_stats st;
+        cli_progress_start(&o.bar, "poincare");
         qd_status s = qd_sim_run(c.s, &c.opts, sink, &o, &st, NULL);
+        cli_progress_end(&o.bar);
         if (s != QD_OK) {
             rc = cli_sim_fail(&c, s);
         } else {

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "json.h"
+#include "progress.h"
 #include "sim_cli.h"
 
 static const char usage_text[] =
@@ -35,32 +36,11 @@ typedef struct sim_out {
     size_t ncols, rows;
     bool events;          /* an `event` column */
     double t0, t_end;
-    struct timespec start;
-    bool progress, shown;
-    size_t calls;
+    cli_progress bar;
     const char **names;   /* the CSV header, written with the first row */
     bool header;
     char *line;           /* one CSV row */
 } sim_out;
-
-static double elapsed(const struct timespec *start) {
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - start->tv_sec) + 1e-9 * (double)(now.tv_nsec - start->tv_nsec);
-}
-
-static void progress(sim_out *o, double t) {
-    if (!o->progress || ++o->calls % 256)
-        return;
-    double w = elapsed(&o->start);
-    if (w < 1)
-        return;
-    double frac = (t - o->t0) / (o->t_end - o->t0);
-    int bar = (int)(frac * 30);
-    fprintf(stderr, "\rqdot: simulate [%-30.*s] %3.0f%%  t = %-12.6g", bar,
-            "##############################", 100 * frac, t);
-    o->shown = true;
-}
 
 static void write_header(sim_out *o) {
     for (size_t i = 0; i < o->ncols; i++)
@@ -94,7 +74,7 @@ static int sink(void *data, int event, const double *row) {
             cli_json_number(o->json, event + 1);
         cli_json_end_array(o->json);
     }
-    progress(o, row[0]);
+    cli_progress_update(&o->bar, (row[0] - o->t0) / (o->t_end - o->t0), row[0]);
     return 0;
 }
 
@@ -222,7 +202,7 @@ static int run(cli_sim *c, const cli_sim_args *a) {
     qd_sim_columns(c->s, c->opts.method, names, ncols);
     sim_out o = {.ncols = ncols, .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0,
                  .t0 = c->opts.t0,
-                 .t_end = c->opts.t_end, .progress = isatty(2), .names = names, .line = line};
+                 .t_end = c->opts.t_end, .names = names, .line = line};
     FILE *file = NULL;
     if (a->out && !(file = fopen(a->out, "w"))) {
         cli_diag_error("cannot write '%s'", a->out);
@@ -249,12 +229,10 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         cli_json_begin_array(&j);
         o.json = &j;
     }
-    clock_gettime(CLOCK_MONOTONIC, &o.start);
+    cli_progress_start(&o.bar, "simulate");
     qd_sim_stats st;
     qd_status s = qd_sim_run(c->s, &c->opts, sink, &o, &st, final);
-    double wall = elapsed(&o.start);
-    if (o.shown)
-        fprintf(stderr, "\r%70s\r", "");
+    double wall = cli_progress_end(&o.bar);
     if (o.json)
         cli_json_end_array(&j);
     if (file)

@@ -49,6 +49,8 @@ static const cli_cmd commands[] = {
      cli_cmd_scatter, true},
     {"path", "FILE --from ... --to ... [--all]", "stationary paths of the action between two points",
      cli_cmd_path, true},
+    {"animate", "FILE -o FILE.html [OPTIONS]", "the motion as a self-contained HTML page",
+     cli_cmd_animate, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

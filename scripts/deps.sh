@@ -8,6 +8,10 @@ pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev liblapack-dev libsundial
 case $what in
   test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy" ;;
 esac
+# qdot animate's page is checked in a real browser (tests/cli/check_animate_cli.py)
+case $what in
+  test|bench) pkgs="$pkgs chromium" ;;
+esac
 case $what in
   bench) pkgs="$pkgs g++ libginac-dev python3-scipy libgsl-dev" ;;
 esac

@@ -1,0 +1,46 @@
+/*
+ * cli/animate.h - what `qdot animate` computes (cmd_animate.c) and writes
+ * into its page (animate_page.c): the points drawn, sampled at the frames.
+ */
+#ifndef QDOT_CLI_ANIMATE_H
+#define QDOT_CLI_ANIMATE_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#define AN_ORIGIN ((size_t)-1) /* a link's end at the fixed origin (the pivot) */
+
+typedef struct an_point {
+    char name[64];  /* p1, p2, ... for particles; a body's own name */
+    bool body;
+    double mass;
+} an_point;
+
+typedef struct an_link {
+    size_t a, b;    /* point indices, or AN_ORIGIN */
+    bool spring;    /* a zigzag (--spring); else a rigid rod */
+} an_link;
+
+typedef struct an_scene {
+    const char *model;           /* the file, for the page's title */
+    size_t npts, nbodies, nframes;
+    an_point *pts;               /* particles first, then bodies */
+    double *t, *energy;          /* per frame: t, E(t) - E(t0) (NULL: no energy) */
+    double *pos;                 /* [frame][point][3] */
+    double *rot;                 /* [frame][body][9], body to space, row-major */
+    an_link *links;
+    size_t nlinks;
+    size_t *traces, ntraces;     /* points whose paths are drawn */
+    int plane[2];                /* the drawing plane's axes, or -1 for 3-D */
+    double energy_error_max;     /* the run's measure (qd_sim_stats) */
+    bool conservative;
+    const char *method;
+} an_scene;
+
+/* Rods between points whose distance stays constant over the frames, and
+ * the drawing plane when every point keeps one coordinate fixed. */
+int cli_animate_analyse(an_scene *s);
+/* The page: the template (animate_page.html) with the scene as JSON. */
+int cli_animate_write(FILE *f, const an_scene *s);
+
+#endif

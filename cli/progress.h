@@ -1,0 +1,26 @@
+/*
+ * cli/progress.h - the progress bar of the long runs (simulate, poincare,
+ * animate): on a terminal only, so redirected output stays clean.
+ */
+#ifndef QDOT_CLI_PROGRESS_H
+#define QDOT_CLI_PROGRESS_H
+
+#include <stdbool.h>
+#include <time.h>
+
+typedef struct cli_progress {
+    const char *what;        /* the command's name, shown before the bar */
+    struct timespec start, last;
+    bool on, shown;
+} cli_progress;
+
+/* Start timing; the bar is on when stderr is a terminal. */
+void cli_progress_start(cli_progress *p, const char *what);
+/* The run is frac (0..1) done, at time t of the motion: redraw the bar
+ * with the time left, once the run has taken a second and at most ten
+ * times a second. */
+void cli_progress_update(cli_progress *p, double frac, double t);
+/* Erase the bar (when it was shown); returns the wall time in seconds. */
+double cli_progress_end(cli_progress *p);
+
+#endif
