@@ -20,6 +20,8 @@ QD_ERR_NOMEM = 1
 class Error(Exception):
     """A libqdot call failed: status is the qd_status code, message its text."""
 
+    __module__ = "qdot"
+
     def __init__(self, message, status=None):
         super().__init__(message)
         self.message = message
@@ -31,6 +33,8 @@ class ModelError(Error):
     starts "FILE:LINE:COL: error: MESSAGE" and shows the line with a caret.
     file, line, col (1-based; 0 when the error has no place in the text),
     hint and status are attributes."""
+
+    __module__ = "qdot"
 
     def __init__(self, text, diag, file):
         super().__init__(text, diag.status)

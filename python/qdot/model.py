@@ -302,7 +302,8 @@ class Model:
 
         method: "dopri5", "dop853", "gl2", "gl4", "gl6", "verlet",
         "yoshida4/6/8" or "bdf"; None chooses as the command line does
-        (dop853 with rtol, gl4 with a fixed dt for conservative systems).
+        (gl4 with a fixed step dt for conservative systems, else dop853;
+        dop853 with dt as its output grid when rtol is given too).
         rtol, atol: step control; dt: the fixed step of fixed-step methods,
         the output grid of adaptive ones.  initial: {name: value} over the
         model's `initial` line (coordinates, velocities "NAME'", "t", the

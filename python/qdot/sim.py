@@ -139,9 +139,9 @@ def _initial(core, initial, hamilton):
     return vals[:n], vals[n:2 * n], vals[2 * n], p0
 
 
-def _method(core, s, method, dt):
-    if method is None:
-        return lib.qd_sim_default_method(s, dt is not None)
+def _method(core, s, method, dt, rtol):
+    if method is None:  # dt with rtol: the output grid of an adaptive run
+        return lib.qd_sim_default_method(s, dt is not None and rtol is None)
     m = ctypes.c_int()
     if not lib.qd_sim_method_from_name(method.encode(), byref(m)):
         raise Error("method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, yoshida6, "
@@ -182,7 +182,7 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
             _add_event(core, s, text, False)
         if stop_at:
             _add_event(core, s, stop_at, True)
-        m = _method(core, s, method, dt)
+        m = _method(core, s, method, dt, rtol)
         if not lib.qd_sim_method_adaptive(m) and dt is None:
             raise Error("method %s takes fixed steps: give dt" % lib.qd_sim_method_name(m)
                         .decode())
