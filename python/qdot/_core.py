@@ -72,9 +72,22 @@ def _number(ctx, name, value):
             lib.qd_ctx_clear_error(ctx)
             raise ModelError(format_diag(diag, "set " + name, value.encode()), diag,
                              "set " + name)
-        return x
-    text = str(value) if isinstance(value, int) else repr(float(value))
-    return lib.qd_rat_str(ctx, text.encode())
+        if lib.qd_is_number(x):
+            return x
+        # a constant expression (pi/6) goes in as its value, as --set gives it
+        out = ctypes.c_double()
+        if lib.qd_eval(ctx, x, 0, None, None, byref(out)) != QD_OK:
+            lib.qd_ctx_clear_error(ctx)
+            raise Error("set %s: '%s' is not a number" % (name, value))
+        value = out.value
+    x = float(value)
+    if isinstance(value, bool) or not x == x or x in (float("inf"), float("-inf")):
+        raise Error("set %s: %r is not a finite number" % (name, value))
+    text = str(value) if isinstance(value, int) else repr(x)
+    x = lib.qd_rat_str(ctx, text.encode())
+    if not x:
+        raise Error("set %s: %r is not a number" % (name, value))
+    return x
 
 
 class Core:

@@ -194,6 +194,7 @@ _PROTOS = {
     "qd_time": (Expr, [c_void_p]),
     "qd_jet": (Expr, [c_void_p, Expr, c_uint]),
     "qd_int": (Expr, [c_void_p, c_long]),
+    "qd_is_number": (c_bool, [Expr]),
     # models (model.h)
     "qd_model_parse_opts": (c_void_p, [c_void_p, c_char_p, POINTER(ModelOpts), POINTER(Diag)]),
     "qd_model_free": (None, [c_void_p]),

@@ -1,6 +1,7 @@
 # python/tests/test_errors.py - errors reach Python as qdot.ModelError with
 # the file:line:col message and caret of qd_diag_format, the same text the
 # command line prints for the same file; other misuse raises qdot.Error.
+import math
 import os
 import subprocess
 
@@ -72,3 +73,16 @@ def test_bad_use_raises():
     # after every failure above the model still runs
     r = m.simulate(1, rtol=1e-10, initial={"x": 1})
     assert r["x"][-1] == pytest.approx(__import__("math").cos(2 ** 0.5), rel=1e-8)
+
+
+def test_set_refuses_what_is_not_a_finite_number():
+    m = qdot.Model("coordinates x\nparameters k = 2\nT = x'^2/2\nV = k/2*x^2\n")
+    for bad in (float("nan"), float("inf"), True):
+        with pytest.raises(qdot.Error, match="not a finite number"):
+            m.set(k=bad)
+    with pytest.raises(qdot.ModelError, match="set k"):
+        m.set(k="2 +")
+    # text is read in the model language and goes in as its value
+    m.set(k="pi/6")
+    assert m.params["k"] == pytest.approx(math.pi / 6, rel=1e-15)
+    assert m.modes()[0].omega2 == pytest.approx(math.pi / 6, rel=1e-12)
