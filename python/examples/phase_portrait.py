@@ -40,6 +40,7 @@ def trajectories(model):
 
 
 def to_px(th, v, vmax):
+    """Pixel coordinates of (theta, theta') in a plot whose speed axis spans vmax."""
     x = PAD + (th + math.pi) / (2 * math.pi) * (W - 2 * PAD)
     y = H / 2 - v / vmax * (H / 2 - PAD)
     return x, y
@@ -59,6 +60,7 @@ def polyline(th, v, vmax, colour):
 
 
 def svg(model):
+    """The whole picture as SVG text."""
     runs = list(trajectories(model))
     vmax = 1.1 * max(np.max(np.abs(v)) for _, v, _, _ in runs)
     parts = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" '
@@ -94,6 +96,7 @@ def svg(model):
 
 
 def main():
+    """Write the SVG to the file named on the command line."""
     out = sys.argv[1] if len(sys.argv) > 1 else "phase_portrait.svg"
     model = qdot.Model(PENDULUM, file="pendulum")
     with open(out, "w") as fh:

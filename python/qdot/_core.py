@@ -112,6 +112,7 @@ class Core:
             raise ModelError(format_diag(diag, file, text), diag, file)
 
     def __del__(self):
+        """Free the equations, the model, then the context that owns their nodes."""
         if self._eom:
             lib.qd_eom_free(self._eom)
         if self.model:
@@ -151,6 +152,7 @@ class Core:
         return self._eom.contents
 
     def eom_ptr(self):
+        """The qd_eom pointer itself, for calls that take it."""
         self.eom()
         return self._eom
 
@@ -216,6 +218,7 @@ class Core:
         return self._definitions(x)
 
     def _definitions(self, x):
+        """x with each plain symbol that names a definition replaced by its value."""
         QD_ROLE_PLAIN = 0
         k = lib.qd_free_symbols(self.ctx, x, None, 0)
         syms = (ctypes.c_void_p * max(k, 1))()

@@ -37,6 +37,7 @@ def _candidates():
 
 
 def _load():
+    """The first candidate that loads, else ImportError naming them all."""
     tried = []
     for path in _candidates():
         if os.path.isabs(path) and not os.path.exists(path):

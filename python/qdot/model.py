@@ -230,12 +230,14 @@ class Model:
             lib.qd_equilibria_free(byref(out))
 
     def _rest_state(self):
+        """The model's initial state with every velocity 0."""
         syms, vals = self._core.state()
         n = len(self._core.coords())
         vals[n:2 * n] = [0.0] * n  # at rest
         return syms, vals
 
     def _equilibrium(self, pt, n):
+        """An Equilibrium from the C struct pt (n coordinates)."""
         names = [name_of(self._core.eom().q[j]) for j in range(n)]
         q = {names[j]: pt.q[j] for j in range(n)}
         exact = ({names[j]: self._core.text_of(pt.exact[j]) for j in range(n)}
@@ -265,6 +267,7 @@ class Model:
         return self._modes_at(e, syms, vals, point)
 
     def _chosen(self, syms, vals):
+        """The equilibrium `qdot modes` would choose (qd_equilibria_choose)."""
         core = self._core
         choice = EquilibriumChoice()
         try:
@@ -277,6 +280,7 @@ class Model:
             lib.qd_equilibrium_choice_free(byref(choice))
 
     def _modes_at(self, e, syms, vals, point):
+        """qd_linear_about and qd_modes_solve at the state syms = vals."""
         core = self._core
         lin, res = Linear(), ModesResult()
         try:

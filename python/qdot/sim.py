@@ -108,6 +108,7 @@ def _add_event(core, s, text, stop):
 
 
 def _add_outputs(core, s, outputs):
+    """Columns from outputs: a list of expressions or {name: expression}."""
     items = outputs.items() if isinstance(outputs, dict) else [(o, o) for o in outputs]
     for name, text in items:
         core.check(lib.qd_sim_add_output(s, name.encode(), core.read(text, "outputs")))
@@ -140,6 +141,7 @@ def _initial(core, initial, hamilton):
 
 
 def _method(core, s, method, dt, rtol):
+    """The qd_sim_method by name, or the default the command line uses."""
     if method is None:  # dt with rtol: the output grid of an adaptive run
         return lib.qd_sim_default_method(s, dt is not None and rtol is None)
     m = ctypes.c_int()
@@ -150,6 +152,7 @@ def _method(core, s, method, dt, rtol):
 
 
 def _new_sim(core, hamilton):
+    """The qd_sim: Hamilton's equations for a model given by H, else Lagrange's."""
     if hamilton:
         s = lib.qd_sim_new_hamilton(core.ctx, core.model)
     else:
@@ -197,6 +200,7 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
 
 
 def _run(core, s, opts, nev):
+    """qd_sim_run with a sink that copies every row; the Result."""
     ncol = lib.qd_sim_columns(s, opts.method, None, 0)
     names = (ctypes.c_char_p * ncol)()
     lib.qd_sim_columns(s, opts.method, names, ncol)
@@ -264,6 +268,7 @@ class Rhs:
         return np.concatenate([y[n:], self._qdd_np])
 
     def __del__(self):
+        """Free the workspace, then the program."""
         if self._work:
             lib.qd_eom_work_free(self._work)
         if self._prog:
