@@ -209,6 +209,13 @@ _PROTOS = {
     "qd_model_hamiltonian_given": (c_bool, [c_void_p]),
     "qd_model_momentum": (Expr, [c_void_p, c_size_t]),
     "qd_model_locate": (c_bool, [c_void_p, POINTER(Diag)]),
+    "qd_model_nspeeds": (c_size_t, [c_void_p]),
+    "qd_model_speed": (Expr, [c_void_p, c_size_t]),
+    "qd_model_speed_definition": (Expr, [c_void_p, c_size_t]),
+    "qd_model_speed_initial": (Expr, [c_void_p, c_size_t]),
+    # generalized speeds (speeds.h): only handed on, never read
+    "qd_speeds_derive": (c_void_p, [c_void_p, c_void_p, c_void_p]),
+    "qd_speeds_eom_free": (None, [c_void_p]),
     # equations (mech.h, hamilton.h)
     "qd_eom_derive": (POINTER(Eom), [c_void_p, c_void_p]),
     "qd_eom_free": (None, [POINTER(Eom)]),
@@ -236,6 +243,7 @@ _PROTOS = {
     # simulation (sim.h)
     "qd_sim_new": (c_void_p, [c_void_p, c_void_p, POINTER(Eom)]),
     "qd_sim_new_hamilton": (c_void_p, [c_void_p, c_void_p]),
+    "qd_sim_new_speeds": (c_void_p, [c_void_p, c_void_p, c_void_p]),
     "qd_sim_free": (None, [c_void_p]),
     "qd_sim_add_output": (c_int, [c_void_p, c_char_p, Expr]),
     "qd_sim_add_event": (c_int, [c_void_p, Expr, c_size_t, ExprArray, c_bool]),

@@ -300,7 +300,7 @@ class Model:
             lib.qd_linear_free(byref(lin))
 
     def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
-                 events=(), stop_at=None, outputs=(), max_steps=0):
+                 events=(), stop_at=None, outputs=(), max_steps=0, speeds=True):
         """Integrate the equations of motion from the initial state to t_end
         (qd_sim_run) and return a qdot.Result.
 
@@ -315,10 +315,14 @@ class Model:
         with optional guards ", EXPR > EXPR" (as --event); their rows are
         in result.events[k].  stop_at: one such condition that ends the run.
         outputs: expressions (or {name: expression}) added as columns.
+        A model with `speeds` is integrated in them, y = (q, u), its speeds
+        columns by name (their initial values from `initial`, else from the
+        initial velocities); speeds=False takes the multiplier form in
+        q, q' instead (as --no-speeds; the speeds' initial values unused).
         """
         return _sim.simulate(self._core, t_end, method=method, rtol=rtol, atol=atol, dt=dt,
                              initial=initial or {}, events=list(events), stop_at=stop_at,
-                             outputs=outputs, max_steps=max_steps)
+                             outputs=outputs, max_steps=max_steps, speeds=speeds)
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a

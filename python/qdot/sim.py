@@ -114,16 +114,19 @@ def _add_outputs(core, s, outputs):
         core.check(lib.qd_sim_add_output(s, name.encode(), core.read(text, "outputs")))
 
 
-def _initial(core, initial, hamilton):
-    """q0, qd0, t0 (model order) and p0 (or None) from the model's
-    `initial` line overridden by the dict initial; a value may be text
-    ("pi/2") in the parameters."""
+def _initial(core, initial, kind):
+    """q0, qd0, t0 (model order) and the extra initial values (momenta of a
+    model given by H, speeds of a model simulated in them) or None, from the
+    model's `initial` line overridden by the dict initial; a value may be
+    text ("pi/2") in the parameters."""
     syms, vals = core.state()
     n = len(core.coords())
     names = [name_of(x) for x in syms[:2 * n + 1]]
-    if hamilton:
-        names += [name_of(lib.qd_model_momentum(core.model, j)) for j in range(n)]
-    given = [None] * n
+    extra = _extra(core, kind, syms, vals)
+    names += [name for name, _ in extra]
+    given = [value for _, value in extra]
+    if kind == "speeds" and any(name in initial for name in names[n:2 * n]):
+        given = [None] * len(given)  # velocities named: the speeds follow them
     for name, value in initial.items():
         if name not in names:
             raise Error("initial: '%s' is not among %s" % (name, ", ".join(names)))
@@ -134,10 +137,35 @@ def _initial(core, initial, hamilton):
             given[i - 2 * n - 1] = float(value)
         else:
             vals[i] = float(value)
-    p0 = None
+    more = None
     if any(v is not None for v in given):
-        p0 = doubles([0.0 if v is None else v for v in given])
-    return vals[:n], vals[n:2 * n], vals[2 * n], p0
+        more = doubles([_missing(core, kind, r, syms, vals) if v is None else v
+                        for r, v in enumerate(given)])
+    return vals[:n], vals[n:2 * n], vals[2 * n], more
+
+
+def _extra(core, kind, syms, vals):
+    """[(name, initial value or None)] of the momenta or the speeds."""
+    m = core.model
+    if kind == "hamilton":
+        return [(name_of(lib.qd_model_momentum(m, j)), None)
+                for j in range(lib.qd_model_ncoords(m))]
+    if kind != "speeds":
+        return []
+    out = []
+    for r in range(lib.qd_model_nspeeds(m)):
+        x = lib.qd_model_speed_initial(m, r)
+        out.append((name_of(lib.qd_model_speed(m, r)),
+                    core.eval(x, syms, vals) if x else None))
+    return out
+
+
+def _missing(core, kind, r, syms, vals):
+    """A momentum not given is 0; a speed not given is its definition at
+    the initial velocities (as `qdot simulate` takes it)."""
+    if kind != "speeds":
+        return 0.0
+    return core.eval(lib.qd_model_speed_definition(core.model, r), syms, vals)
 
 
 def _method(core, s, method, dt, rtol):
@@ -151,20 +179,31 @@ def _method(core, s, method, dt, rtol):
     return m.value
 
 
-def _new_sim(core, hamilton):
-    """The qd_sim: Hamilton's equations for a model given by H, else Lagrange's."""
-    if hamilton:
+def _new_sim(core, kind):
+    """The qd_sim (and the speeds equations it reads, or None): Hamilton's
+    equations for a model given by H, the equations in speeds for a model
+    with `speeds`, else Lagrange's."""
+    se = None
+    if kind == "hamilton":
         s = lib.qd_sim_new_hamilton(core.ctx, core.model)
+    elif kind == "speeds":
+        se = lib.qd_speeds_derive(core.ctx, core.model, None)
+        if not se:
+            raise core.error(cls=ModelError)
+        s = lib.qd_sim_new_speeds(core.ctx, core.model, se)
     else:
         s = lib.qd_sim_new(core.ctx, core.model, core.eom_ptr())
     if not s:
-        raise core.error(cls=ModelError)
-    return s
+        err = core.error(cls=ModelError)
+        if se:
+            lib.qd_speeds_eom_free(se)
+        raise err
+    return s, se
 
 
-def _order(core, hamilton, q, qd):
+def _order(core, kind, q, qd):
     """The initial values in the order of the equations' coordinates."""
-    if hamilton:
+    if kind != "lagrange":
         return q, qd
     coords = core.coords()
     e = core.eom()
@@ -172,14 +211,21 @@ def _order(core, hamilton, q, qd):
     return [q[i] for i in pos], [qd[i] for i in pos]
 
 
+def _kind(core, speeds):
+    """Which equations simulate integrates."""
+    if lib.qd_model_hamiltonian_given(core.model):
+        return "hamilton"
+    return "speeds" if speeds and lib.qd_model_nspeeds(core.model) else "lagrange"
+
+
 def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outputs,
-             max_steps):
+             max_steps, speeds):
     """Model.simulate's work (see there)."""
-    hamilton = bool(lib.qd_model_hamiltonian_given(core.model))
-    s = _new_sim(core, hamilton)
+    kind = _kind(core, speeds)
+    s, se = _new_sim(core, kind)
     try:
-        q, qd, t0, p0 = _initial(core, initial, hamilton)
-        q, qd = _order(core, hamilton, q, qd)
+        q, qd, t0, more = _initial(core, initial, kind)
+        q, qd = _order(core, kind, q, qd)
         _add_outputs(core, s, outputs)
         for text in events:
             _add_event(core, s, text, False)
@@ -192,11 +238,17 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
         q0, qd0 = doubles(q), doubles(qd)
         opts = SimOpts(method=m, t0=t0, t_end=float(t_end), dt=float(dt or 0),
                        rtol=float(rtol or 0), atol=float(atol or 0), max_steps=max_steps,
-                       q0=q0, qd0=qd0, p0=p0)
+                       q0=q0, qd0=qd0)
+        if kind == "hamilton":
+            opts.p0 = more
+        elif kind == "speeds":
+            opts.u0 = more
         core.check(lib.qd_sim_check_opts(core.ctx, byref(opts)))
         return _run(core, s, opts, len(events) + bool(stop_at))
     finally:
         lib.qd_sim_free(s)
+        if se:
+            lib.qd_speeds_eom_free(se)
 
 
 def _run(core, s, opts, nev):

@@ -50,3 +50,29 @@ def test_constrained_run_reports_its_residual():
     l = c.params["l"]
     assert np.max(np.abs(np.hypot(r["x"], r["y"]) - l)) < 1e-9
     assert r.stats["constraint_error_max"] < 1e-9
+
+
+def test_chaplygin_sleigh_in_speeds_against_tanh_law():
+    # Desloge ch. 69 thm 2 (seed 000; the model's header): u' = a w^2,
+    # J w' = -m a u w, J = Ic + m a^2, so u = U tanh(m a U t / J + c),
+    # U = sqrt(2E/m); integrated in the speeds (u, w) the model declares,
+    # starting from its `initial u = 0.1, w = 1`.
+    s = qdot.Model.load(os.path.join(EXAMPLES, "chaplygin_sleigh.qd"))
+    r = s.simulate(20, rtol=1e-11, dt=0.1)
+    assert {"u", "w"} <= set(r.columns)
+    p = s.params
+    m, a = p["m"], p["a"]
+    J = p["Ic"] + m * a * a
+    u0, w0 = r["u"][0], r["w"][0]
+    assert (u0, w0) == (0.1, 1.0)
+    U = math.sqrt((m * u0 ** 2 + J * w0 ** 2) / m)
+    c = math.atanh(u0 / U)
+    assert np.allclose(r["u"], U * np.tanh(m * a * U * r.t / J + c), rtol=1e-8, atol=1e-9)
+    # the blade never slides sideways, and the kinematics x' = u cos(th)
+    assert np.max(np.abs(-r["x'"] * np.sin(r["th"]) + r["y'"] * np.cos(r["th"]))) < 1e-12
+    assert np.allclose(r["x'"], r["u"] * np.cos(r["th"]), atol=1e-12)
+    # naming a velocity instead: the speeds follow from the velocities
+    v = s.simulate(1, rtol=1e-10, initial={"th'": 0.5})
+    assert (v["u"][0], v["w"][0]) == (0.0, 0.5)
+    # the multiplier form takes velocities only (no speed columns)
+    assert "u" not in s.simulate(1, rtol=1e-10, speeds=False)
