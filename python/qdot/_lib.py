@@ -54,6 +54,11 @@ def _load():
 lib = _load()
 
 Expr = c_void_p           # const qd_expr *, owned by its context
+
+# Zeroed bytes after the structs Python allocates for C to read or fill: a
+# field appended to one in C (options default to zero there) then reads 0
+# or writes here instead of past the end, until this file learns of it.
+_TAIL = [("_tail", c_char * 64)]
 ExprArray = POINTER(c_void_p)
 
 
@@ -79,12 +84,12 @@ class ParamValue(Structure):
 class ModelOpts(Structure):
     """qd_model_opts (qdot/model.h)."""
     _fields_ = [("params", POINTER(ParamValue)), ("nparams", c_size_t),
-                ("fix_params", c_bool)]
+                ("fix_params", c_bool)] + _TAIL
 
 
 class ReadOpts(Structure):
     """qd_read_opts (qdot/read.h)."""
-    _fields_ = [("new_symbols", c_bool)]
+    _fields_ = [("new_symbols", c_bool)] + _TAIL
 
 
 class Con(Structure):
@@ -125,16 +130,21 @@ class Equilibria(Structure):
                 ("exact", c_bool), ("continuum", c_bool), ("method", c_char_p)]
 
 
+class EquilibriaOut(Structure):
+    """qd_equilibria as a call's result, with the zeroed tail."""
+    _fields_ = Equilibria._fields_ + _TAIL
+
+
 class EquilibriumChoice(Structure):
     """qd_equilibrium_choice (qdot/equilibria.h)."""
     _fields_ = [("found", Equilibria), ("from_initial", Equilibria),
-                ("pt", POINTER(Equilibrium)), ("reason", c_int), ("others", c_size_t)]
+                ("pt", POINTER(Equilibrium)), ("reason", c_int), ("others", c_size_t)] + _TAIL
 
 
 class Linear(Structure):
     """qd_linear (qdot/modes.h)."""
     _fields_ = [("n", c_size_t), ("M", POINTER(c_double)), ("C", POINTER(c_double)),
-                ("G", POINTER(c_double)), ("K", POINTER(c_double))]
+                ("G", POINTER(c_double)), ("K", POINTER(c_double))] + _TAIL
 
 
 class ModesResult(Structure):
@@ -142,7 +152,7 @@ class ModesResult(Structure):
     _fields_ = [("n", c_size_t), ("conservative", c_bool), ("omega2", POINTER(c_double)),
                 ("shapes", POINTER(c_double)), ("neig", c_size_t),
                 ("eig_re", POINTER(c_double)), ("eig_im", POINTER(c_double)),
-                ("stable", c_int)]
+                ("stable", c_int)] + _TAIL
 
 
 class SimOpts(Structure):
@@ -151,7 +161,7 @@ class SimOpts(Structure):
                 ("fixed", c_bool), ("rtol", c_double), ("atol", c_double),
                 ("no_project", c_bool), ("max_steps", c_size_t),
                 ("q0", POINTER(c_double)), ("qd0", POINTER(c_double)),
-                ("p0", POINTER(c_double)), ("u0", POINTER(c_double))]
+                ("p0", POINTER(c_double)), ("u0", POINTER(c_double))] + _TAIL
 
 
 class SimStats(Structure):
@@ -161,7 +171,7 @@ class SimStats(Structure):
                 ("E0", c_double), ("events", c_size_t), ("t", c_double),
                 ("impacts", c_size_t), ("impact_energy_lost", c_double),
                 ("in_contact", c_bool), ("at_rest", c_bool), ("chattering", c_bool),
-                ("contact", c_size_t)]
+                ("contact", c_size_t)] + _TAIL
 
 
 SimSink = ctypes.CFUNCTYPE(c_int, c_void_p, c_int, POINTER(c_double))
@@ -230,8 +240,8 @@ _PROTOS = {
     # equilibria and modes (equilibria.h, modes.h)
     "qd_eq_kind_name": (c_char_p, [c_int]),
     "qd_equilibria_find": (c_int, [c_void_p, POINTER(Eom), c_void_p, c_size_t, ExprArray,
-                                   DBL, c_void_p, POINTER(Equilibria)]),
-    "qd_equilibria_free": (None, [POINTER(Equilibria)]),
+                                   DBL, c_void_p, POINTER(EquilibriaOut)]),
+    "qd_equilibria_free": (None, [POINTER(EquilibriaOut)]),
     "qd_equilibria_choose": (c_int, [c_void_p, POINTER(Eom), c_void_p, c_size_t, ExprArray,
                                      DBL, POINTER(EquilibriumChoice)]),
     "qd_equilibrium_choice_free": (None, [POINTER(EquilibriumChoice)]),

@@ -11,8 +11,8 @@ from ctypes import byref
 import numpy as np
 
 from ._core import Core, Error, ModelError, name_of
-from ._lib import (lib, Equilibria, EquilibriumChoice, Linear, ModesResult, exprs, doubles,
-                   QD_FMT_SYMPY)
+from ._lib import (lib, EquilibriaOut, EquilibriumChoice, Linear, ModesResult, exprs,
+                   doubles, QD_FMT_SYMPY)
 from . import sim as _sim
 
 
@@ -221,7 +221,7 @@ class Model:
         Newton search over the default box (qd_equilibria_find)."""
         core = self._core
         syms, vals = self._rest_state()
-        out = Equilibria()
+        out = EquilibriaOut()
         try:
             core.check(lib.qd_equilibria_find(core.ctx, core.eom_ptr(), core.model, len(syms),
                                               exprs(syms), doubles(vals), None, byref(out)))

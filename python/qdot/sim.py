@@ -66,7 +66,8 @@ class Result(Table):
         super().__init__(columns, data[ev == -1])
         self.events = [Table(columns, data[ev == k]) for k in range(nev)]
         self.impacts = Table(columns, data[ev >= nev])
-        self.stats = {name: getattr(stats, name) for name, _ in stats._fields_}
+        self.stats = {name: getattr(stats, name) for name, _ in stats._fields_
+                      if not name.startswith("_")}
         self.energy_error_max = stats.energy_error_max
         self.method = method
 

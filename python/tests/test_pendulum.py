@@ -71,3 +71,14 @@ def test_stop_at_and_outputs():
     assert r.events[0].t[0] == pytest.approx(quarter, rel=1e-9)
     assert r.stats["t"] == pytest.approx(quarter, rel=1e-9)
     assert np.allclose(r["x"], l * np.sin(r["theta"]), atol=1e-14)
+
+
+def test_stats_are_the_runs_counts():
+    r = qdot.Model(PENDULUM).simulate(1, method="gl4", dt=0.125)
+    assert set(r.stats) == {"steps", "evals", "rejected", "energy_error_max",
+                            "constraint_error_max", "E0", "events", "t", "impacts",
+                            "impact_energy_lost", "in_contact", "at_rest", "chattering",
+                            "contact"}
+    # a fixed step: t_end/dt steps, none rejected, E0 = -m g l cos(theta0)
+    assert (r.stats["steps"], r.stats["rejected"], r.stats["t"]) == (8, 0, 1.0)
+    assert r.stats["E0"] == pytest.approx(-1 * 9.81 * 2 * math.cos(0.3), rel=1e-14)
