@@ -13,6 +13,9 @@ case $what in
   test|bench) pkgs="$pkgs chromium" ;;
 esac
 case $what in
+  test|bench) pkgs="$pkgs python3-numpy python3-pytest" ;;  # python/tests
+esac
+case $what in
   bench) pkgs="$pkgs g++ libginac-dev python3-scipy libgsl-dev" ;;
 esac
 

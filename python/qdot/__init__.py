@@ -1,0 +1,23 @@
+# python/qdot/__init__.py - the qdot package: libqdot's public C API from
+# Python (docs/python.md).
+"""qdot: Lagrangian and Hamiltonian mechanics from a model text.
+
+    import qdot
+    m = qdot.Model.load("examples/double_pendulum.qd")
+    m.eom().M                      # the mass matrix, as text
+    m.modes()[0].omega             # the slow normal mode
+    r = m.simulate(10, rtol=1e-10)
+    r.t, r["theta1"], r.energy_error_max
+
+The package is a binding over libqdot (ctypes): every result is computed by
+the C library.  The library is found through QDOT_LIB, the build tree next
+to the package, the installed prefix, then the system's library path.
+"""
+
+from ._core import Error, ModelError
+from .model import Model, Equations, Hamiltonian, Equilibrium, Mode, Modes
+from .sim import Result, Table, Rhs
+
+__all__ = ["Model", "ModelError", "Error", "Equations", "Hamiltonian", "Equilibrium",
+           "Mode", "Modes", "Result", "Table", "Rhs"]
+__version__ = "0.1.0"

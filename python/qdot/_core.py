@@ -1,0 +1,239 @@
+# python/qdot/_core.py - one parsed model and what it owns in C: the context,
+# the qd_model, the derived qd_eom; errors turned into Python exceptions.
+#
+# Ownership (qdot/expr.h): the context owns every expression, the model and
+# the equations are freed by their own calls before the context.  A _Core is
+# never changed after it is made (Model.set makes a new one), so an object
+# that keeps a _Core alive (a compiled right-hand side) can never see its
+# equations freed under it.
+"""The C objects behind a qdot.Model (internal)."""
+
+import ctypes
+from ctypes import byref
+
+from ._lib import (lib, Diag, Buf, ModelOpts, ParamValue, ReadOpts, buf_text, exprs,
+                   doubles, QD_OK, QD_FMT_TEXT)
+
+QD_ERR_NOMEM = 1
+
+
+class Error(Exception):
+    """A libqdot call failed: status is the qd_status code, message its text."""
+
+    __module__ = "qdot"
+
+    def __init__(self, message, status=None):
+        super().__init__(message)
+        self.message = message
+        self.status = status
+
+
+class ModelError(Error):
+    """An error in a model: str(err) is qd_diag_format's rendering, which
+    starts "FILE:LINE:COL: error: MESSAGE" and shows the line with a caret.
+    file, line, col (1-based; 0 when the error has no place in the text),
+    hint and status are attributes."""
+
+    __module__ = "qdot"
+
+    def __init__(self, text, diag, file):
+        super().__init__(text, diag.status)
+        self.file = file
+        self.line = diag.line if diag.located else 0
+        self.col = diag.col if diag.located else 0
+        self.message = diag.message.decode()
+        self.hint = diag.hint.decode()
+
+
+def format_diag(diag, file, text):
+    """qd_diag_format of diag against text (bytes or None)."""
+    buf = Buf()
+    lib.qd_diag_format(byref(diag), file.encode(), text, byref(buf))
+    return buf_text(buf).rstrip("\n")
+
+
+def take_error(ctx):
+    """A copy of the context's error record, and the record cleared (errors
+    are sticky: the next call must not report this one again)."""
+    d = lib.qd_ctx_diag(ctx)
+    diag = Diag.from_buffer_copy(d.contents) if d else Diag()
+    lib.qd_ctx_clear_error(ctx)
+    return diag
+
+
+def _number(ctx, name, value):
+    """A parameter value as an exact number node: 9.81 stays 9.81, and
+    a string is read in the model language ("pi/6")."""
+    if isinstance(value, str):
+        diag = Diag()
+        opts = ReadOpts(new_symbols=False)
+        x = lib.qd_read(ctx, value.encode(), byref(opts), byref(diag))
+        if not x:
+            lib.qd_ctx_clear_error(ctx)
+            raise ModelError(format_diag(diag, "set " + name, value.encode()), diag,
+                             "set " + name)
+        if lib.qd_is_number(x):
+            return x
+        # a constant expression (pi/6) goes in as its value, as --set gives it
+        out = ctypes.c_double()
+        if lib.qd_eval(ctx, x, 0, None, None, byref(out)) != QD_OK:
+            lib.qd_ctx_clear_error(ctx)
+            raise Error("set %s: '%s' is not a number" % (name, value))
+        value = out.value
+    x = float(value)
+    if isinstance(value, bool) or not x == x or x in (float("inf"), float("-inf")):
+        raise Error("set %s: %r is not a finite number" % (name, value))
+    text = str(value) if isinstance(value, int) else repr(x)
+    x = lib.qd_rat_str(ctx, text.encode())
+    if not x:
+        raise Error("set %s: %r is not a number" % (name, value))
+    return x
+
+
+class Core:
+    """The context, model and (lazily) equations of one parse."""
+
+    def __init__(self, text, file, params):
+        self.ctx = self.model = self._eom = None
+        self.ctx = lib.qd_ctx_new()
+        if not self.ctx:
+            raise MemoryError("qdot: out of memory")
+        self.text = text  # the model keeps pointers into it: keep it alive
+        self.file = file
+        vals = (ParamValue * max(len(params), 1))()
+        for i, (name, value) in enumerate(params):
+            vals[i].name = name.encode()
+            vals[i].value = _number(self.ctx, name, value)
+        opts = ModelOpts(params=vals, nparams=len(params), fix_params=False)
+        diag = Diag()
+        self.model = lib.qd_model_parse_opts(self.ctx, text, byref(opts), byref(diag))
+        if not self.model:
+            lib.qd_ctx_clear_error(self.ctx)
+            raise ModelError(format_diag(diag, file, text), diag, file)
+
+    def __del__(self):
+        """Free the equations, the model, then the context that owns their nodes."""
+        if self._eom:
+            lib.qd_eom_free(self._eom)
+        if self.model:
+            lib.qd_model_free(self.model)
+        if self.ctx:
+            lib.qd_ctx_free(self.ctx)
+
+    # ---- errors ---------------------------------------------------------------
+
+    def error(self, status=None, cls=None):
+        """The exception for the context's error: located in the model text
+        (qd_model_locate) when it is about a statement of it."""
+        diag = take_error(self.ctx)
+        if status is not None and diag.status == QD_OK:
+            diag.status = status
+        if diag.status == QD_ERR_NOMEM:
+            return MemoryError("qdot: out of memory")
+        if lib.qd_model_locate(self.model, byref(diag)) or cls is ModelError:
+            return ModelError(format_diag(diag, self.file, self.text), diag, self.file)
+        msg = diag.message.decode() or lib.qd_status_str(diag.status).decode()
+        return (cls or Error)(msg, diag.status)
+
+    def check(self, status, cls=None):
+        """Raise the context's error unless status is QD_OK."""
+        if status != QD_OK:
+            raise self.error(status, cls)
+
+    # ---- the model --------------------------------------------------------------
+
+    def eom(self):
+        """The qd_eom (derived once; parameters stay symbols in it)."""
+        if not self._eom:
+            e = lib.qd_eom_derive(self.ctx, self.model)
+            if not e:
+                raise self.error(cls=ModelError)
+            self._eom = e
+        return self._eom.contents
+
+    def eom_ptr(self):
+        """The qd_eom pointer itself, for calls that take it."""
+        self.eom()
+        return self._eom
+
+    def coords(self):
+        """The coordinate symbols in model order."""
+        return [lib.qd_model_coord(self.model, i)
+                for i in range(lib.qd_model_ncoords(self.model))]
+
+    def params(self):
+        """[(name, symbol, value)] in model order."""
+        out = []
+        for i in range(lib.qd_model_nparams(self.model)):
+            sym = lib.qd_model_param(self.model, i)
+            x = ctypes.c_double()
+            lib.qd_model_param_number(self.model, i, byref(x))
+            out.append((name_of(sym), sym, x.value))
+        return out
+
+    def state(self):
+        """The symbols and values of a state: every coordinate and velocity
+        at its `initial` value (0 when none), t = 0, the parameters."""
+        q = self.coords()
+        syms = q + [lib.qd_jet(self.ctx, c, 1) for c in q] + [lib.qd_time(self.ctx)]
+        syms += [p[1] for p in self.params()]
+        vals = [0.0] * (2 * len(q) + 1) + [p[2] for p in self.params()]
+        n = len(q)
+        for i in range(n):
+            for order in (0, 1):
+                x = lib.qd_model_initial(self.model, i, order)
+                if x:
+                    vals[order * n + i] = self.eval(x, syms, vals)
+        return syms, vals
+
+    def eval(self, x, syms, vals):
+        """The value of expression x at syms = vals."""
+        out = ctypes.c_double()
+        self.check(lib.qd_eval(self.ctx, x, len(syms), exprs(syms), doubles(vals),
+                               byref(out)))
+        return out.value
+
+    def text_of(self, x, fmt=QD_FMT_TEXT):
+        """x printed (QD_FMT_TEXT or QD_FMT_SYMPY)."""
+        buf = Buf()
+        st = lib.qd_print(self.ctx, x, fmt, byref(buf))
+        s = buf_text(buf)
+        self.check(st)
+        return s
+
+    def read(self, text, what):
+        """An expression read against the model: a definition's name
+        (x2 = ...) stands for its value, NAME' for its time derivative."""
+        raw = text.strip()
+        if raw.endswith("'"):
+            d = lib.qd_model_definition(self.model, raw[:-1].strip().encode())
+            if d:
+                return lib.qd_dt(self.ctx, d)
+        diag = Diag()
+        opts = ReadOpts(new_symbols=True)
+        x = lib.qd_read(self.ctx, raw.encode(), byref(opts), byref(diag))
+        if not x:
+            lib.qd_ctx_clear_error(self.ctx)
+            raise ModelError(format_diag(diag, what, raw.encode()), diag, what)
+        return self._definitions(x)
+
+    def _definitions(self, x):
+        """x with each plain symbol that names a definition replaced by its value."""
+        QD_ROLE_PLAIN = 0
+        k = lib.qd_free_symbols(self.ctx, x, None, 0)
+        syms = (ctypes.c_void_p * max(k, 1))()
+        lib.qd_free_symbols(self.ctx, x, syms, k)
+        for s in list(syms)[:k]:
+            if lib.qd_symbol_role(s) != QD_ROLE_PLAIN:
+                continue
+            d = lib.qd_model_definition(self.model, lib.qd_expr_name(s))
+            if d:
+                x = lib.qd_subs(self.ctx, x, 1, exprs([s]), exprs([d]))
+        if not x:
+            raise self.error()
+        return x
+
+
+def name_of(sym):
+    """A symbol's name as str."""
+    return lib.qd_expr_name(sym).decode()

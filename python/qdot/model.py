@@ -1,0 +1,335 @@
+# python/qdot/model.py - qdot.Model: a model file read by libqdot, its
+# equations, Hamiltonian, equilibria and small oscillations.
+#
+# Every result comes from a libqdot call (qdot/mech.h, hamilton.h,
+# equilibria.h, modes.h); this file only moves numbers and strings between
+# C and Python and frees what the C calls allocate.
+"""qdot.Model and the symbolic results it returns."""
+
+from ctypes import byref
+
+import numpy as np
+
+from ._core import Core, Error, ModelError, name_of
+from ._lib import (lib, EquilibriaOut, EquilibriumChoice, Linear, ModesResult, exprs,
+                   doubles, QD_FMT_SYMPY)
+from . import sim as _sim
+
+
+class Equations:
+    """Lagrange's equations M(q, q', t) q'' = f(q, q', t) (qdot/mech.h).
+
+    coordinates: the names of q in order; M: n lists of n entries; f: n
+    entries.  Entries are strings in the model language, or SymPy
+    expressions (M a sympy.Matrix, f a column Matrix) when made with
+    sympy=True.  constraints: the names of the constraints, whose
+    multipliers lambda_NAME enter f through A^T lambda (not included in f).
+    """
+
+    def __init__(self, coordinates, M, f, constraints):
+        self.coordinates = coordinates
+        self.M = M
+        self.f = f
+        self.constraints = constraints
+
+    def __repr__(self):
+        return "Equations(coordinates=%r, M=%r, f=%r)" % (self.coordinates, self.M, self.f)
+
+
+class Hamiltonian:
+    """Hamilton's function and equations (qdot/hamilton.h).
+
+    H: H(q, p, t); momenta: the names of p; dq, dp: dq_j/dt = dH/dp_j and
+    dp_j/dt = -dH/dq_j + Q_j (strings, or SymPy with sympy=True);
+    conserved: H has no explicit t and no forces act; is_energy: H = T + V.
+    """
+
+    def __init__(self, H, momenta, dq, dp, conserved, is_energy):
+        self.H = H
+        self.momenta = momenta
+        self.dq = dq
+        self.dp = dp
+        self.conserved = conserved
+        self.is_energy = is_energy
+
+    def __repr__(self):
+        return "Hamiltonian(H=%r)" % (self.H,)
+
+
+class Equilibrium:
+    """A configuration of rest (qdot/equilibria.h): q maps each coordinate
+    to its value; exact to its exact value as text, or is None when found
+    numerically; kind is "minimum", "maximum", "saddle" or "degenerate";
+    residual the largest generalized force left there."""
+
+    def __init__(self, q, exact, kind, residual):
+        self.q = q
+        self.exact = exact
+        self.kind = kind
+        self.residual = residual
+
+    def __repr__(self):
+        return "Equilibrium(q=%r, kind=%r)" % (self.q, self.kind)
+
+
+class Mode:
+    """One normal mode (qdot/modes.h): omega2 the eigenvalue w^2 of
+    K a = w^2 M a (negative: an unstable direction), omega = sqrt(omega2)
+    (NaN when omega2 < 0), shape the eigenvector a as {coordinate: value},
+    normalized so that a^T M a = 1."""
+
+    def __init__(self, omega2, shape):
+        self.omega2 = omega2
+        self.omega = float(np.sqrt(omega2)) if omega2 >= 0 else float("nan")
+        self.shape = shape
+
+    def __repr__(self):
+        return "Mode(omega=%.12g, shape=%r)" % (self.omega, self.shape)
+
+
+class Modes(list):
+    """The modes about a point, ascending in omega2 (a list of Mode).
+
+    about: the point {coordinate: value}; conservative: no damping or
+    gyroscopic terms (only then are there Mode entries); eigenvalues: the
+    2n state-space eigenvalues s (numpy complex array); stable: 1 stable,
+    0 unstable, -1 borderline (qd_modes_result.stable)."""
+
+    def __init__(self, modes, about, conservative, eigenvalues, stable):
+        super().__init__(modes)
+        self.about = about
+        self.conservative = conservative
+        self.eigenvalues = eigenvalues
+        self.stable = stable
+
+
+def _sympy_namespace(core, extra=()):
+    """A namespace in which QD_FMT_SYMPY text evaluates: sympy, t, each
+    coordinate a Function of t, each parameter (and each name in extra) a
+    Symbol, bound only when the printer writes it bare (a name that would
+    shadow SymPy, like E, is printed self-contained)."""
+    import sympy
+    ns = dict(vars(sympy))
+    t = lib.qd_print_time_name(core.ctx).decode()
+    ns[t] = sympy.Symbol(t)
+    for c in core.coords():
+        name = name_of(c)
+        if core.text_of(c, QD_FMT_SYMPY) == "%s(%s)" % (name, t):
+            ns[name] = sympy.Function(name)
+    for sym in [p[1] for p in core.params()] + list(extra):
+        name = name_of(sym)
+        if core.text_of(sym, QD_FMT_SYMPY) == name:
+            ns[name] = sympy.Symbol(name)
+    return ns
+
+
+def _converter(core, sympy, extra=()):
+    """A function from an expression to its text or its SymPy value."""
+    if not sympy:
+        return core.text_of
+    ns = _sympy_namespace(core, extra)
+    return lambda x: eval(core.text_of(x, QD_FMT_SYMPY), ns)  # noqa: S307 (our printer's text)
+
+
+class Model:
+    """A mechanical system in qdot's model language (docs/language.md).
+
+    Model(text) reads the text; Model.load(path) reads a file.  A model
+    that does not read raises qdot.ModelError with the file:line:col
+    message.  Parameters keep the values written in the text until set()
+    changes them.
+    """
+
+    def __init__(self, text, file="<string>"):
+        """Read a model from its text; file names it in error messages."""
+        if isinstance(text, str):
+            text = text.encode()
+        self._sets = {}
+        self._core = Core(text, file, [])
+
+    @classmethod
+    def load(cls, path):
+        """Read the model file at path."""
+        with open(path, "rb") as fh:
+            return cls(fh.read(), file=str(path))
+
+    def set(self, **params):
+        """Give parameters other values (numbers, or text such as "pi/6"),
+        as the command line's --set does: parameters defined from them and
+        the initial values follow.  Returns the model itself."""
+        sets = dict(self._sets, **params)
+        core = Core(self._core.text, self._core.file, list(sets.items()))
+        self._core, self._sets = core, sets
+        return self
+
+    @property
+    def coordinates(self):
+        """The names of the generalized coordinates, in model order."""
+        return [name_of(c) for c in self._core.coords()]
+
+    @property
+    def params(self):
+        """{name: value} of every parameter, in model order."""
+        return {name: value for name, _, value in self._core.params()}
+
+    @property
+    def initial(self):
+        """The initial state {name: value} (coordinates, velocities NAME',
+        t) from the model's `initial` line, 0 where it gives none."""
+        syms, vals = self._core.state()
+        n = len(self.coordinates)
+        return {name_of(s): v for s, v in zip(syms[:2 * n + 1], vals)}
+
+    def eom(self, sympy=False):
+        """Lagrange's equations M q'' = f (an Equations); sympy=True gives
+        SymPy matrices instead of strings (needs sympy)."""
+        core = self._core
+        e = core.eom()
+        n = e.n
+        lams = [e.con[k].lam for k in range(e.ncon)]
+        conv = _converter(core, sympy, lams)
+        M = [[conv(e.M[i * n + j]) for j in range(n)] for i in range(n)]
+        f = [conv(e.f[i]) for i in range(n)]
+        if sympy:
+            import sympy as sp
+            M, f = sp.Matrix(M), sp.Matrix(f)
+        cons = [e.con[k].name.decode() for k in range(e.ncon)]
+        return Equations([name_of(e.q[j]) for j in range(n)], M, f, cons)
+
+    def hamiltonian(self, sympy=False):
+        """The Hamiltonian and Hamilton's equations (a Hamiltonian); sympy=True
+        gives SymPy expressions instead of strings."""
+        core = self._core
+        given = lib.qd_model_hamiltonian_given(core.model)
+        h = lib.qd_ham_derive(core.ctx, core.model, None if given else core.eom_ptr())
+        if not h:
+            raise core.error(cls=ModelError)
+        try:
+            hh = h.contents
+            n = hh.n
+            conv = _converter(core, sympy, [hh.p[j] for j in range(n)])
+            return Hamiltonian(conv(hh.H), [name_of(hh.p[j]) for j in range(n)],
+                               [conv(hh.dq[j]) for j in range(n)],
+                               [conv(hh.dp[j]) for j in range(n)],
+                               bool(hh.conserved), bool(hh.is_energy))
+        finally:
+            lib.qd_ham_free(h)
+
+    def equilibria(self):
+        """Every equilibrium found (a list of Equilibrium, sorted by q): exact
+        where the equations solve in closed form, else by a multi-start
+        Newton search over the default box (qd_equilibria_find)."""
+        core = self._core
+        syms, vals = self._rest_state()
+        out = EquilibriaOut()
+        try:
+            core.check(lib.qd_equilibria_find(core.ctx, core.eom_ptr(), core.model, len(syms),
+                                              exprs(syms), doubles(vals), None, byref(out)))
+            return [self._equilibrium(out.pts[k], out.n) for k in range(out.count)]
+        finally:
+            lib.qd_equilibria_free(byref(out))
+
+    def _rest_state(self):
+        """The model's initial state with every velocity 0."""
+        syms, vals = self._core.state()
+        n = len(self._core.coords())
+        vals[n:2 * n] = [0.0] * n  # at rest
+        return syms, vals
+
+    def _equilibrium(self, pt, n):
+        """An Equilibrium from the C struct pt (n coordinates)."""
+        names = [name_of(self._core.eom().q[j]) for j in range(n)]
+        q = {names[j]: pt.q[j] for j in range(n)}
+        exact = ({names[j]: self._core.text_of(pt.exact[j]) for j in range(n)}
+                 if pt.exact else None)
+        kind = lib.qd_eq_kind_name(pt.kind).decode()
+        return Equilibrium(q, exact, kind, pt.residual)
+
+    def modes(self, about=None):
+        """Small oscillations about a point at rest (a Modes list of Mode).
+
+        about: {coordinate: value} or an Equilibrium; None chooses as
+        `qdot modes` does (qd_equilibria_choose: the minimum nearest the
+        initial state, or the lowest).  Coordinates not named are 0."""
+        core = self._core
+        e = core.eom()
+        syms, vals = self._rest_state()
+        if about is None:
+            about = self._chosen(syms, vals)
+        if isinstance(about, Equilibrium):
+            about = about.q
+        names = [name_of(c) for c in core.coords()]
+        for name, value in about.items():
+            if name not in names:
+                raise Error("modes: '%s' is not a coordinate (%s)" % (name, ", ".join(names)))
+        point = {name: float(about.get(name, 0.0)) for name in names}
+        vals[:len(names)] = [point[name] for name in names]
+        return self._modes_at(e, syms, vals, point)
+
+    def _chosen(self, syms, vals):
+        """The equilibrium `qdot modes` would choose (qd_equilibria_choose)."""
+        core = self._core
+        choice = EquilibriumChoice()
+        try:
+            core.check(lib.qd_equilibria_choose(core.ctx, core.eom_ptr(), core.model, len(syms),
+                                                exprs(syms), doubles(vals), byref(choice)))
+            if not choice.pt:
+                raise Error("modes: no equilibrium found; give about={...}")
+            return self._equilibrium(choice.pt.contents, choice.found.n)
+        finally:
+            lib.qd_equilibrium_choice_free(byref(choice))
+
+    def _modes_at(self, e, syms, vals, point):
+        """qd_linear_about and qd_modes_solve at the state syms = vals."""
+        core = self._core
+        lin, res = Linear(), ModesResult()
+        try:
+            core.check(lib.qd_linear_about(core.ctx, core.eom_ptr(), core.model, len(syms),
+                                           exprs(syms), doubles(vals), byref(lin)))
+            core.check(lib.qd_modes_solve(core.ctx, byref(lin), byref(res)))
+            n = res.n
+            names = [name_of(e.q[j]) for j in range(n)]
+            eig = np.array([complex(res.eig_re[k], res.eig_im[k]) for k in range(res.neig)])
+            modes = []
+            if res.conservative:
+                modes = [Mode(res.omega2[j], {names[i]: res.shapes[i * n + j]
+                                              for i in range(n)}) for j in range(n)]
+            return Modes(modes, point, bool(res.conservative), eig, res.stable)
+        finally:
+            lib.qd_modes_result_free(byref(res))
+            lib.qd_linear_free(byref(lin))
+
+    def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
+                 events=(), stop_at=None, outputs=(), max_steps=0, speeds=True):
+        """Integrate the equations of motion from the initial state to t_end
+        (qd_sim_run) and return a qdot.Result.
+
+        method: "dopri5", "dop853", "gl2", "gl4", "gl6", "verlet",
+        "yoshida4/6/8" or "bdf"; None chooses as the command line does
+        (gl4 with a fixed step dt for conservative systems, else dop853;
+        dop853 with dt as its output grid when rtol is given too).
+        rtol, atol: step control; dt: the fixed step of fixed-step methods,
+        the output grid of adaptive ones.  initial: {name: value} over the
+        model's `initial` line (coordinates, velocities "NAME'", "t", the
+        momenta of a model given by H).  events: conditions "EXPR = EXPR"
+        with optional guards ", EXPR > EXPR" (as --event); their rows are
+        in result.events[k].  stop_at: one such condition that ends the run.
+        outputs: expressions (or {name: expression}) added as columns.
+        A model with `speeds` is integrated in them, y = (q, u), its speeds
+        columns by name (their initial values from `initial`, else from the
+        initial velocities); speeds=False takes the multiplier form in
+        q, q' instead (as --no-speeds; the speeds' initial values unused).
+        """
+        return _sim.simulate(self._core, t_end, method=method, rtol=rtol, atol=atol, dt=dt,
+                             initial=initial or {}, events=list(events), stop_at=stop_at,
+                             outputs=outputs, max_steps=max_steps, speeds=speeds)
+
+    def compile(self):
+        """The right-hand side of the first-order system y = (q, q') as a
+        Python callable rhs(t, y) -> dy/dt (numpy arrays), evaluated by
+        libqdot's compiled programs at the current parameter values, for
+        one's own integrator (see qdot.Rhs)."""
+        return _sim.Rhs(self._core)
+
+    def __repr__(self):
+        return "<qdot.Model %s: %s>" % (self._core.file, ", ".join(self.coordinates))
