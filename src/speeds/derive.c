@@ -290,8 +290,13 @@ static qd_status velocity_map(qd__spd *d) {
         st = singular_map(d);
     for (size_t j = 0; st == QD_OK && j < n; j++) {
         const qd_expr **c = coef + j * nx;
-        if (!done[j]) /* from the elimination of the core */
+        if (!done[j]) { /* from the elimination of the core: read off and tidied here */
             st = qd_linear_coeffs(ctx, X[j], nx, sym, c, &rest[j]);
+            for (size_t r = 0; st == QD_OK && r < nx; r++)
+                c[r] = qd_simplify(ctx, c[r]);
+            if (st == QD_OK)
+                rest[j] = qd_simplify(ctx, rest[j]);
+        }
         for (size_t r = 0; st == QD_OK && r < nx; r++) {
             const qd_expr *x = c[r];
             if (!x)
@@ -303,10 +308,9 @@ static qd_status velocity_map(qd__spd *d) {
         }
         if (st == QD_OK && !(e->w[j] = rest[j]))
             st = nomem(ctx);
-        /* q'_j = sum_r W_jr u_r + w_j: the s_k drop out, and X_j came out of
-         * the solve simplified coefficient by coefficient (tidy_linear or
-         * qd__solve_cols' own simplification), so nothing is simplified
-         * again */
+        /* q'_j = sum_r W_jr u_r + w_j from the parts simplified one by one:
+         * the s_k drop out, and simplifying the sum again would only regroup
+         * it (its common factors are taken out) */
         const qd_expr *kin = st == QD_OK ? e->w[j] : NULL;
         for (size_t r = 0; kin && r < m; r++)
             kin = qd_add(ctx, qd_mul(ctx, e->W[j * m + r], e->u[r]), kin);
