@@ -6,10 +6,10 @@ set -e
 what=${1:-build}
 pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev liblapack-dev libsundials-dev"
 case $what in
-  test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy" ;;
+  test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy" ;;
 esac
 case $what in
-  bench) pkgs="$pkgs g++ libginac-dev python3-scipy libgsl-dev" ;;
+  bench) pkgs="$pkgs g++ libginac-dev libgsl-dev" ;;
 esac
 
 missing=""

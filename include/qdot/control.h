@@ -18,7 +18,8 @@
  *     H = [A, -B R^-1 B^T; -Q, -A^T]
  * has eigenvalues in pairs s, -s; LAPACK dgees orders its real Schur form
  * with the n stable ones first, whose Schur vectors [U11; U21] span the
- * stable invariant subspace, and X = U21 U11^-1 (docs/design.md, "The
+ * stable invariant subspace, and X = U21 U11^-1, then refined by Newton
+ * (Kleinman) steps while they shrink the residual (docs/design.md, "The
  * Riccati equation").
  *
  * Matrices are row-major: A[i*n + j] is row i, column j; A n*n, B n*m,
@@ -55,8 +56,9 @@ typedef struct qd_care_result {
     double *X;             /* n*n, symmetric */
     double *K;             /* m*n, the gain: u = -K x */
     double *eig_re, *eig_im; /* n eigenvalues of A - B K (dgeev), by Re descending */
-    /* ||A^T X + X A - X G X + Q||_F / (||Q||_F + 2 ||A||_F ||X||_F + ||G||_F ||X||_F^2),
-     * G = B R^-1 B^T: the residual relative to the size of its terms */
+    /* ||A^T X + X A - X G X + Q||_F / (||Q||_F + 2 ||A^T X||_F + ||X G X||_F),
+     * G = B R^-1 B^T: the residual relative to the size of its terms, after
+     * the Newton steps that refine the Schur solution */
     double residual;
     double rcond;          /* reciprocal condition number of U11 (1-norm, dgecon) */
     qd_care_failure failure; /* QD_CARE_OK on success; says why otherwise */
