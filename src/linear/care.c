@@ -394,7 +394,8 @@ static qd_status solve_x(care_work *w, const double *vs, qd_care_result *out) {
     if (info != 0 || !(out->rcond >= QD_CARE_RCOND_MIN)) {
         qd_ctx_error(w->ctx, QD_ERR_NUMERIC,
                      "U11 of the stable Schur vectors is ill-conditioned (reciprocal condition "
-                     "%.3g < %g): no reliable solution X", out->rcond, QD_CARE_RCOND_MIN);
+                     "%.3g < %g): no reliable solution X; (A, B) is close to unstabilizable or the "
+                     "weights are badly scaled", out->rcond, QD_CARE_RCOND_MIN);
         st = fail(out, QD_CARE_ILL_CONDITIONED, QD_ERR_NUMERIC);
     } else {
         dgetrs_("N", &n, &n, u, &n, ipiv, w->X, &n, &info);

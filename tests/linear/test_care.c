@@ -17,7 +17,7 @@
  *     here rather than trusted from the library, below 1e-10 relative, X
  *     symmetric positive semidefinite, every closed-loop Re s < 0;
  *   no stabilizing solution: an unstable (and a marginal, s = 0) mode B does
- *     not reach, the double integrator with Q = 0 (s = 0 unseen), R not
+ *     not reach, one it barely reaches (U11 ill-conditioned), the double integrator with Q = 0 (s = 0 unseen), R not
  *     positive definite, Q indefinite: each named in out->failure and the
  *     message;
  *   every allocation refused in turn (tests/util/fault.h).
@@ -214,6 +214,20 @@ static void not_stabilizable(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* B = [1e-7; 1] barely reaches the unstable s = 1, so X11 ~ 2 / b1^2 = 2e14
+ * (the scalar closed form): U11 is singular to working precision, and the
+ * solver says so instead of returning digits it does not have. */
+static void nearly_unstabilizable(void **state) {
+    (void)state;
+    const double A[] = {1, 0, 0, -1}, B[] = {1e-7, 1}, I2[] = {1, 0, 0, 1}, R[] = {1};
+    qd_ctx *ctx = qd_ctx_new();
+    qd_care_result res;
+    assert_int_equal(qd_care_solve(ctx, 2, 1, A, B, I2, R, &res), QD_ERR_NUMERIC);
+    assert_int_equal(res.failure, QD_CARE_ILL_CONDITIONED);
+    assert_non_null(strstr(qd_ctx_message(ctx), "U11 of the stable Schur vectors is ill-conditioned"));
+    qd_ctx_free(ctx);
+}
+
 static void not_detectable(void **state) {
     (void)state;
     const double A[] = {0, 1, 0, 0}, B[] = {0, 1}, Q0[] = {0, 0, 0, 0}, R[] = {1};
@@ -253,6 +267,7 @@ int main(void) {
         cmocka_unit_test(stable_uncontrollable_mode),
         cmocka_unit_test(random_systems),
         cmocka_unit_test(not_stabilizable),
+        cmocka_unit_test(nearly_unstabilizable),
         cmocka_unit_test(not_detectable),
         cmocka_unit_test(bad_weights),
         cmocka_unit_test(allocation_failures),
