@@ -5,7 +5,7 @@
  * One small recursive-descent reader: weights := item (',' item)*,
  * item := NAME '=' value, value := number | diag(list) | [[list], ...].
  * It stops at the first error and keeps its place, so the caller can point
- * at it.
+ * at it.  The same reader takes a matrix of any shape for `qdot lqr`.
  */
 #include "lqr_cli.h"
 
@@ -73,10 +73,14 @@ static bool list(lqr_reader *r, double *out, size_t max, size_t *k, const char *
     *k = 0;
     do {
         double v;
+        skip_space(r);
+        size_t at = r->pos;
         if (!number(r, &v))
             return false;
-        if (*k == max)
+        if (*k == max) {
+            r->pos = at; /* point at the entry too many */
             return oops(r, "%s has more than %zu entries", what, max);
+        }
         out[(*k)++] = v;
     } while (accept(r, ','));
     return true;
@@ -173,5 +177,68 @@ bool cli_lqr_parse(const char *text, size_t n, size_t m, double *Q, double *R, c
     if (!r.failed && (!seen[0] || !seen[1])) /* the cost needs both: no silent default */
         oops(&r, "%s missing (give both: \"Q = diag(...), R = ...\")", seen[0] ? "R is" : "Q is");
     *where = r.pos;
+    return !r.failed;
+}
+
+/* One row "[a, b, ...]" appended to *m (grown by realloc); *cols set by the
+ * first row, checked against it by the others. */
+static bool grow_row(lqr_reader *r, double **m, size_t rows, size_t *cols) {
+    size_t cap = 16, k = 0;
+    double *row = malloc(cap * sizeof *row), v;
+    bool ok = row && expect(r, '[', "to open a row");
+    if (!row)
+        oops(r, "out of memory");
+    while (ok && (k == 0 || accept(r, ','))) {
+        if (k == cap) {
+            double *more = k < 4096 ? realloc(row, 2 * cap * sizeof *row) : NULL;
+            if (!more)
+                ok = oops(r, "a row longer than 4096 entries");
+            else
+                row = more, cap *= 2;
+        }
+        if (ok && (ok = number(r, &v)))
+            row[k++] = v;
+    }
+    ok = ok && expect(r, ']', "to close a row");
+    if (ok && rows > 0 && k != *cols)
+        ok = oops(r, "row %zu has %zu entries, row 1 has %zu", rows + 1, k, *cols);
+    double *more = ok && rows < 4096 ? realloc(*m, (rows + 1) * k * sizeof **m) : NULL;
+    if (ok && !more)
+        ok = oops(r, "more than 4096 rows");
+    if (ok) {
+        *m = more;
+        memcpy(*m + rows * k, row, k * sizeof *row);
+        *cols = k;
+    }
+    free(row);
+    return ok;
+}
+
+bool cli_matrix_parse(const char *text, size_t *rows, size_t *cols, double **out, char *err,
+                      size_t errlen, size_t *where) {
+    lqr_reader r = {.text = text, .err = err, .errlen = errlen};
+    double *m = NULL;
+    *rows = *cols = 0;
+    if (errlen)
+        err[0] = '\0';
+    if (expect(&r, '[', "to open the matrix, as in [[1, 0], [0, 1]]")) {
+        do {
+            if (!grow_row(&r, &m, *rows, cols))
+                break;
+            ++*rows;
+        } while (accept(&r, ','));
+    }
+    if (!r.failed)
+        expect(&r, ']', "to close the matrix");
+    skip_space(&r);
+    if (!r.failed && text[r.pos] != '\0')
+        oops(&r, "the end expected after the matrix");
+    *where = r.pos;
+    if (r.failed) {
+        free(m);
+        m = NULL;
+        *rows = *cols = 0;
+    }
+    *out = m;
     return !r.failed;
 }

@@ -1,7 +1,8 @@
 /*
  * tests/cli/test_lqr_cli.c - the reader of the --lqr weights
  * (cli/lqr_cli.c, compiled into this test by tests/CMakeLists.txt): each
- * form of Q and R, the errors with their place, and the double integrator's
+ * form of Q and R, the errors with their place, the matrix reader of
+ * `qdot lqr`, and the double integrator's
  * weights read from text giving K = [1, sqrt 3] (tests/linear/test_care.c
  * derives it).
  */
@@ -12,6 +13,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "qdot/qdot.h"
@@ -64,7 +66,7 @@ static void errors(void **state) {
     (void)state;
     expect_error("Q = diag(1, 1, 10), R = 0.1", 4, 1, "diag(...) of Q has 3 entries; Q is 4 by 4",
                  18);
-    expect_error("Q = diag(1, 2, 3, 4, 5), R = 1", 4, 1, "the diagonal has more than 4 entries", 22);
+    expect_error("Q = diag(1, 2, 3, 4, 5), R = 1", 4, 1, "the diagonal has more than 4 entries", 21);
     expect_error("Q = I, R = 1", 2, 1, "a number, diag(...) or [[...], ...] expected for Q", 4);
     expect_error("Q = diag(1, 1)", 2, 1, "R is missing (give both: \"Q = diag(...), R = ...\")", 14);
     expect_error("R = 1", 2, 1, "Q is missing (give both: \"Q = diag(...), R = ...\")", 5);
@@ -78,11 +80,43 @@ static void errors(void **state) {
     expect_error("Q 1, R = 1", 2, 1, "'=' expected after Q", 2);
 }
 
+/* The matrix reader of `qdot lqr`: any shape, rows of equal length. */
+static void matrices(void **state) {
+    (void)state;
+    char err[200];
+    size_t rows, cols, where;
+    double *M;
+    assert_true(cli_matrix_parse(" [[0], [1.5], [-2e3]] ", &rows, &cols, &M, err, sizeof err,
+                                 &where));
+    assert_int_equal(rows, 3);
+    assert_int_equal(cols, 1);
+    assert_true(M[0] == 0 && M[1] == 1.5 && M[2] == -2000);
+    free(M);
+    static const struct {
+        const char *text, *message;
+        size_t at;
+    } bad[] = {
+        {"[[1, 2], [3]]", "row 2 has 1 entries, row 1 has 2", 12},
+        {"[]", "'[' expected to open a row", 1},
+        {"[[1, 2], [3, 4]", "']' expected to close the matrix", 15},
+        {"1", "'[' expected to open the matrix, as in [[1, 0], [0, 1]]", 0},
+        {"[[1, 2]] [[3]]", "the end expected after the matrix", 9},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        M = (double *)&rows; /* must come back NULL */
+        assert_false(cli_matrix_parse(bad[k].text, &rows, &cols, &M, err, sizeof err, &where));
+        assert_null(M);
+        if (strcmp(err, bad[k].message) || where != bad[k].at)
+            fail_msg("'%s': got '%s' at %zu", bad[k].text, err, where);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(forms),
         cmocka_unit_test(weights_to_gain),
         cmocka_unit_test(errors),
+        cmocka_unit_test(matrices),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

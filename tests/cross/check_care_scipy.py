@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """Cross-check qdot's Riccati solver (qd_care_solve) against SciPy.
 
-gen_care reads random systems (A, B, Q, R) and prints qdot's stabilizing X,
-gain K and closed-loop eigenvalues; SciPy's solve_continuous_are (its own
+`qdot lqr --A ... --B ... --weights "Q = [[...]], R = [[...]]" --format json`
+reads random systems (every double written with repr, so read back exactly)
+and prints qdot's stabilizing X, gain K and closed-loop eigenvalues (the
+whole path: the matrix and weight readers, qd_care_solve, the JSON);
+SciPy's solve_continuous_are (its own
 Schur/QZ method on the extended pencil, Arnold & Laub 1984) solves the same
 systems.  Every closed-loop eigenvalue must be stable.  How close two
 backward-stable solvers can agree is set by the problem's condition number
@@ -17,11 +20,12 @@ kappa ~ 1e13, where the two differ by 1e-7 while both have residuals near
 1e-10), qdot's residual must be no worse than 4 times SciPy's.
 
 Systems without a stabilizing solution (an unstable mode the input does not
-reach) must be refused by qdot with the failure named, where SciPy either
-raises or returns an X whose closed loop is unstable.
+reach) must be refused by qdot (exit 2, "not stabilizable"), where SciPy
+either raises or returns an X whose closed loop is unstable.
 Usage: check_care_scipy.py --build BUILD_DIR [--count N]
 """
 import argparse
+import json
 import os
 import subprocess
 import sys
@@ -32,9 +36,6 @@ try:
 except ImportError:
     print('check_care_scipy needs python3-scipy (scripts/deps.sh test)')
     sys.exit(1)
-
-NOT_STABILIZABLE = 3  # QD_CARE_NOT_STABILIZABLE in qdot/control.h
-
 
 def random_system(rng, n, m):
     """A with entries of any sign (often unstable), B full, Q = C^T C with
@@ -58,14 +59,17 @@ def unstabilizable(rng, n, m):
     return A, B, Q, R
 
 
-def text(systems):
-    out = []
-    for A, B, Q, R in systems:
-        n, m = B.shape
-        out.append('%d %d' % (n, m))
-        for M in (A, B, Q, R):
-            out.append(' '.join(repr(float(v)) for v in M.ravel()))
-    return '\n'.join(out) + '\n'
+def matrix(M):
+    return '[' + ', '.join('[' + ', '.join(repr(float(v)) for v in row) + ']' for row in M) + ']'
+
+
+def run_qdot(qdot, system):
+    """qdot lqr on one system: (exit status, JSON or None, stderr)."""
+    A, B, Q, R = system
+    cmd = [qdot, 'lqr', '--A', matrix(A), '--B', matrix(B),
+           '--weights', 'Q = %s, R = %s' % (matrix(Q), matrix(R)), '--format', 'json']
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    return p.returncode, json.loads(p.stdout) if p.returncode == 0 else None, p.stderr
 
 
 def rel(got, want):
@@ -90,13 +94,11 @@ def residual(A, G, Q, X):
                                   + np.linalg.norm(quad))
 
 
-def check_solved(k, system, fields, failures, worst):
+def check_solved(k, system, got, failures, worst):
     A, B, Q, R = system
     n, m = B.shape
-    vals = [float(v) for v in fields]
-    res, X = vals[0], np.array(vals[1:1 + n * n]).reshape(n, n)
-    K = np.array(vals[1 + n * n:1 + n * n + m * n]).reshape(m, n)
-    eig = vals[1 + n * n + m * n:]
+    X, K, res = np.array(got['X']), np.array(got['K']), got['residual']
+    eig = [re for re, im in got['closed_loop']]
     Xs = scipy.linalg.solve_continuous_are(A, B, Q, R)
     Ks = np.linalg.solve(R, B.T @ Xs)
     G = B @ np.linalg.solve(R, B.T)
@@ -109,7 +111,7 @@ def check_solved(k, system, fields, failures, worst):
     else:
         worst['ill'] += 1
         ok = res <= 4 * residual(A, G, Q, Xs)
-    if not ok or max(eig) >= 0:
+    if not ok or max(eig) >= 0 or X.shape != (n, n) or K.shape != (m, n):
         failures.append(what)
 
 
@@ -131,23 +133,18 @@ def main():
     rng = np.random.default_rng(23)
     solvable = [random_system(rng, 1 + k % 8, 1 + (k // 8) % 3) for k in range(args.count)]
     refused = [unstabilizable(rng, 2 + k % 6, 1 + k % 2) for k in range(6)]
-    gen = os.path.join(args.build, 'tests', 'gen_care')
-    out = subprocess.run([gen], input=text(solvable + refused), check=True,
-                         capture_output=True, text=True).stdout.splitlines()
-    if len(out) != len(solvable) + len(refused):
-        print('FAIL gen_care printed %d lines for %d systems' % (len(out), len(solvable + refused)))
-        return 1
+    qdot = os.path.join(args.build, 'qdot')
     failures, worst = [], {'well': 0.0, 'ill': 0}
-    for k, (system, line) in enumerate(zip(solvable, out)):
-        fields = line.split()
-        if fields[0] != 'ok':
-            failures.append('system %d refused: %s' % (k, line))
+    for k, system in enumerate(solvable):
+        rc, got, err = run_qdot(qdot, system)
+        if rc != 0:
+            failures.append('system %d refused (exit %d): %s' % (k, rc, err.strip()))
             continue
-        check_solved(k, system, fields[1:], failures, worst)
-    for k, (system, line) in enumerate(zip(refused, out[len(solvable):])):
-        fields = line.split(maxsplit=2)
-        if fields[:2] != ['error', str(NOT_STABILIZABLE)] or 'not stabilizable' not in line:
-            failures.append('unstabilizable system %d: %s' % (k, line))
+        check_solved(k, system, got, failures, worst)
+    for k, system in enumerate(refused):
+        rc, got, err = run_qdot(qdot, system)
+        if rc != 2 or '(A, B) is not stabilizable' not in err:
+            failures.append('unstabilizable system %d: exit %d, %s' % (k, rc, err.strip()))
         if not scipy_refuses(system):
             failures.append('unstabilizable system %d: SciPy found a stabilizing X' % k)
     for f in failures:
