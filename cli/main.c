@@ -2,6 +2,7 @@
  * cli/main.c - the qdot program: finds the command and runs it.
  */
 #include "cli.h"
+#include "lqr_cli.h"
 
 #include <string.h>
 
@@ -33,6 +34,8 @@ static const cli_cmd commands[] = {
      cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
      cli_cmd_stability, true},
+    {"lqr", "--A M --B M --weights \"Q=...,R=...\"", "the LQR gain of x' = A x + B u (Riccati)",
+     cli_cmd_lqr, false},
     {"orbit", "FILE --ignore Q[,Q...] [--at ...]", "turning points, periods, apsides, conics",
      cli_cmd_orbit, true},
     {"hj", "FILE [--format F] [--solve]", "the Hamilton-Jacobi equation, its separation and W",

@@ -6,7 +6,7 @@ set -e
 what=${1:-build}
 pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev liblapack-dev libsundials-dev"
 case $what in
-  test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy" ;;
+  test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy" ;;
 esac
 # qdot animate's page is checked in a real browser (tests/cli/check_animate_cli.py)
 case $what in
@@ -16,7 +16,7 @@ case $what in
   test|bench) pkgs="$pkgs python3-numpy python3-pytest" ;;  # python/tests
 esac
 case $what in
-  bench) pkgs="$pkgs g++ libginac-dev python3-scipy libgsl-dev" ;;
+  bench) pkgs="$pkgs g++ libginac-dev libgsl-dev" ;;
 esac
 
 missing=""

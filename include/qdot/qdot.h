@@ -22,6 +22,7 @@
 #include "modes.h"
 #include "routh.h"
 #include "stability.h"
+#include "control.h"
 #include "zvc.h"
 #include "speeds.h"
 #include "path.h"

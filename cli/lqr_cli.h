@@ -1,0 +1,42 @@
+/*
+ * cli/lqr_cli.h - the weights of an LQR design as the command line gives
+ * them: --lqr "Q = diag(1, 1, 10, 1), R = 0.1".
+ */
+#ifndef QDOT_LQR_CLI_H
+#define QDOT_LQR_CLI_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+#include "qdot/control.h"
+
+/* Read text into Q (n*n) and R (m*m), row-major arrays the caller owns.
+ * text is "Q = W, R = W" in either order, each given once, where W is
+ *   a number c              c times the identity,
+ *   diag(d1, ..., dk)       k = the size,
+ *   [[a11, a12, ...], ...]  the full matrix, row by row.
+ * On an error: false, the message in err (errlen bytes) and its byte offset
+ * in text at *where.  Symmetry and definiteness are left to qd_care_solve,
+ * which names what is wrong with them. */
+bool cli_lqr_parse(const char *text, size_t n, size_t m, double *Q, double *R, char *err,
+                   size_t errlen, size_t *where);
+
+/* A matrix "[[a11, a12, ...], [a21, ...], ...]" of any shape, its rows of
+ * equal length, into *out (malloc'd, row-major, rows*cols; free() it).  On
+ * an error: false, *out NULL, the message and place as above. */
+bool cli_matrix_parse(const char *text, size_t *rows, size_t *cols, double **out, char *err,
+                      size_t errlen, size_t *where);
+
+/* The LQR design r (qd_care_solve) on out: K with the states and inputs
+ * named, X, the closed-loop eigenvalues and the residual (lqr_out.c).
+ * Text shows 10 significant digits; JSON ("states", "inputs", "K", "X",
+ * "closed_loop", "residual", "rcond") and C (const arrays) every digit.
+ * false when out of memory or a number is not finite (nothing printed). */
+typedef enum cli_lqr_format { CLI_LQR_TEXT, CLI_LQR_JSON, CLI_LQR_C } cli_lqr_format;
+bool cli_lqr_print(FILE *out, const qd_care_result *r, const char *const *states,
+                   const char *const *inputs, cli_lqr_format fmt);
+
+/* `qdot lqr` (cmd_lqr.c), declared here to leave cli.h to the other commands. */
+int cli_cmd_lqr(int argc, char **argv);
+
+#endif
