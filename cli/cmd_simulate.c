@@ -27,7 +27,8 @@ static const char usage_text[] =
     "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf] "
     "[--out FILE] [--output \"EXPR, ...\"] [--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
-    "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N]";
+    "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
+    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q]]";
 
 typedef struct sim_out {
     FILE *csv;            /* rows as CSV, or NULL */
@@ -41,6 +42,7 @@ typedef struct sim_out {
     const char **names;   /* the CSV header, written with the first row */
     bool header;
     char *line;           /* one CSV row */
+    cli_plot_rows *plot;  /* --plot: every row kept, or NULL */
 } sim_out;
 
 static double elapsed(const struct timespec *start) {
@@ -94,6 +96,8 @@ static int sink(void *data, int event, const double *row) {
             cli_json_number(o->json, event + 1);
         cli_json_end_array(o->json);
     }
+    if (o->plot)
+        cli_plot_keep(o->plot, row);
     progress(o, row[0]);
     return 0;
 }
@@ -124,6 +128,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         }
         a->event_stop[a->nevents] = stop;
         a->events[a->nevents++] = v;
+    } else if ((rc = cli_plot_option(argc, argv, i, &a->plot))) {
+        return rc > 100 ? rc - 100 : QD_EXIT_OK;
     } else {
         cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
@@ -220,6 +226,15 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_FAIL;
     }
     qd_sim_columns(c->s, c->opts.method, names, ncols);
+    cli_plot_pick pick; /* --plot: its columns named before the run, which may be long */
+    cli_plot_rows rows = {.ncols = ncols};
+    if (a->plot.file &&
+        cli_plot_pick_columns(&a->plot, names, ncols, qd_sim_ndof(c->s), &pick) != QD_EXIT_OK) {
+        free(names);
+        free(final);
+        free(line);
+        return QD_EXIT_USAGE;
+    }
     sim_out o = {.ncols = ncols, .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0,
                  .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .progress = isatty(2), .names = names, .line = line};
@@ -237,7 +252,11 @@ static int run(cli_sim *c, const cli_sim_args *a) {
     if (a->json)
         cli_json_begin_object(&j);
     o.csv = file ? file : a->json ? NULL : stdout;
-    if (!o.csv) {
+    o.plot = a->plot.file ? &rows : NULL;
+    bool picture_only = o.plot && o.csv == stdout; /* --plot: the picture, not CSV on stdout */
+    if (picture_only)
+        o.csv = NULL;
+    else if (!o.csv) {
         cli_json_key(&j, "columns");
         cli_json_begin_array(&j);
         for (size_t i = 0; i < ncols; i++)
@@ -282,7 +301,10 @@ static int run(cli_sim *c, const cli_sim_args *a) {
                 rc = QD_EXIT_FAIL;
             }
         }
+        if (rc == QD_EXIT_OK && a->plot.file)
+            rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false);
     }
+    cli_plot_rows_free(&rows);
     qd_buf_free(&jb);
     free(names);
     free(final);
@@ -293,6 +315,8 @@ static int run(cli_sim *c, const cli_sim_args *a) {
 int cli_cmd_simulate(int argc, char **argv) {
     cli_sim_args a = {0};
     int rc = cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &a);
+    if (rc == QD_EXIT_OK)
+        rc = cli_plot_check(&a.plot, "simulate");
     if (rc == QD_EXIT_OK && !a.has_t_end) {
         cli_diag_error("--t-end is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;
