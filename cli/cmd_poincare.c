@@ -170,7 +170,8 @@ int cli_cmd_poincare(int argc, char **argv) {
                 fprintf(stderr, "qdot: poincare: note: only %zu of %zu crossings before "
                                 "t = %g (raise --t-end)\n", o.got, o.want, st.t);
             if (p.a.plot.file)
-                rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true);
+                rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true,
+                                        NULL);
         }
     out:
         cli_plot_rows_free(&rows);

@@ -214,6 +214,21 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_end_object(j);
 }
 
+/* --plot with --format json: the file and the axes' ranges drawn, so a
+ * caller can place more on the picture. */
+static void plot_json(cli_json *j, const char *file, const double *range) {
+    cli_json_key(j, "plot");
+    cli_json_begin_object(j);
+    cli_json_key(j, "file");
+    cli_json_string(j, file);
+    static const char *const keys[] = {"x0", "x1", "y0", "y1"};
+    for (int k = 0; k < 4; k++) {
+        cli_json_key(j, keys[k]);
+        cli_json_number(j, range[k]);
+    }
+    cli_json_end_object(j);
+}
+
 static int run(cli_sim *c, const cli_sim_args *a) {
     size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
     const char **names = malloc((ncols + 1) * sizeof *names);
@@ -291,8 +306,13 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
         impacts_summary(c, &st);
-        if (a->json) {
+        double range[4];
+        if (a->plot.file)
+            rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false, range);
+        if (rc == QD_EXIT_OK && a->json) {
             summary_json(&j, c, &st, wall, names, ncols, final);
+            if (a->plot.file)
+                plot_json(&j, a->plot.file, range);
             cli_json_end_object(&j);
             if (cli_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));
@@ -301,8 +321,6 @@ static int run(cli_sim *c, const cli_sim_args *a) {
                 rc = QD_EXIT_FAIL;
             }
         }
-        if (rc == QD_EXIT_OK && a->plot.file)
-            rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false);
     }
     cli_plot_rows_free(&rows);
     qd_buf_free(&jb);

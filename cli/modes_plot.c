@@ -196,7 +196,8 @@ int cli_modes_plot(cli_lin_run *lr, const double *q0, const qd_modes_result *res
     if (np > MAXP)
         np = 0; /* too many to draw as particles: the coordinates instead */
     qd_plot *p = qd_plot_new(lr->ctx, 0, 0);
-    qd_status st = p ? qd_plot_set_title(p, title) : QD_ERR_NOMEM;
+    const char *slash = strrchr(title, '/');
+    qd_status st = p ? qd_plot_set_title(p, slash ? slash + 1 : title) : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = np ? particle_plot(p, lr, q0, res, np) : draw_coordinates(p, res);
     if (st == QD_OK)

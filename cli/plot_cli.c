@@ -185,14 +185,18 @@ static qd_status fill(qd_plot *p, const cli_plot_pick *pk, const char *const *na
     if (qd_plot_set_xlabel(p, xl) != QD_OK || qd_plot_set_ylabel(p, yl) != QD_OK)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < pk->ny && st == QD_OK; i++) {
-        st = add_series(p, pk, r, series_name(pk, names, r->ncols, i), pk->y[i], points, x, y);
+        char pair[160]; /* a phase curve: "(theta, theta')" */
+        const char *label = series_name(pk, names, r->ncols, i);
+        if (pk->phase)
+            snprintf(pair, sizeof pair, "(%s, %s)", names[pk->x], label);
+        st = add_series(p, pk, r, pk->phase ? pair : label, pk->y[i], points, x, y);
     }
     return st;
 }
 
 int cli_plot_write_run(qd_ctx *ctx, const cli_plot_args *a, const cli_plot_pick *pk,
                        const char *const *names, const cli_plot_rows *r, const char *title,
-                       bool points) {
+                       bool points, double *range) {
     if (r->failed) {
         cli_diag_error("out of memory keeping the rows for --plot");
         return QD_EXIT_FAIL;
@@ -203,11 +207,14 @@ int cli_plot_write_run(qd_ctx *ctx, const cli_plot_args *a, const cli_plot_pick 
     }
     double *x = malloc(r->n * sizeof *x), *y = malloc(r->n * sizeof *y);
     qd_plot *p = x && y ? qd_plot_new(ctx, 0, 0) : NULL;
-    qd_status st = p ? qd_plot_set_title(p, title) : QD_ERR_NOMEM;
+    const char *slash = strrchr(title, '/');
+    qd_status st = p ? qd_plot_set_title(p, slash ? slash + 1 : title) : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = fill(p, pk, names, r, points, x, y);
     if (st == QD_OK)
         st = qd_plot_write(p, a->file);
+    if (st == QD_OK && range)
+        qd_plot_ranges(p, &range[0], &range[1], &range[2], &range[3]);
     int rc = QD_EXIT_OK;
     if (st != QD_OK)
         rc = qd_ctx_status(ctx) != QD_OK ? cli_diag_ctx(ctx) : QD_EXIT_FAIL;

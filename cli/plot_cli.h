@@ -50,9 +50,10 @@ int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size
                           size_t ndof, cli_plot_pick *pk);
 
 /* Draw the rows picked into a->file; title is the model file's name.
- * Exit status (the library's message printed on failure). */
+ * range (may be NULL) gets the axes' ranges drawn: x0, x1, y0, y1.  Exit
+ * status (the library's message printed on failure). */
 int cli_plot_write_run(qd_ctx *ctx, const cli_plot_args *a, const cli_plot_pick *pk,
                        const char *const *names, const cli_plot_rows *r, const char *title,
-                       bool points);
+                       bool points, double *range);
 
 #endif

@@ -62,9 +62,10 @@ QD_API size_t qd_plot_nseries(const qd_plot *p);
 /* Series i's colour as 0xRRGGBB (the palette's i-th, cycling). */
 QD_API unsigned qd_plot_color(const qd_plot *p, size_t i);
 
-/* Fix the axes' ranges (the data's, padded for the y axis and for point
- * series, then widened to the ticks' span where that is at most 10% more)
- * and the plot area.  QD_ERR_ARG for a plot without series. */
+/* Fix the axes' ranges and the plot area.  A range is the data's, padded
+ * by 5% each side (except x when every series is a line whose x never
+ * decreases: a time axis is drawn exactly), then widened to the ticks' span
+ * where that is at most 10% more.  QD_ERR_ARG for a plot without series. */
 QD_API qd_status qd_plot_layout(qd_plot *p);
 
 /* Where data (x, y) lands, in pixels from the image's top-left corner

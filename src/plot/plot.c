@@ -175,8 +175,19 @@ size_t qd_plot_nice_ticks(double lo, double hi, size_t max_ticks, double *step, 
     return 0; /* unreachable: 50 decades span the range in at most 2 */
 }
 
+/* A series whose x never decreases is a graph over x (a time axis): its x
+ * range is drawn exactly.  Others (a phase loop, dots) need room. */
+static bool graph(const qd__plot_series *s) {
+    if (s->style != QD_PLOT_LINE)
+        return false;
+    for (size_t k = 1; k < s->n; k++)
+        if (s->x[k] < s->x[k - 1])
+            return false;
+    return true;
+}
+
 /* The range of axis values of every series (x when !want_y), and whether
- * any series is drawn as points. */
+ * any series needs padding along x. */
 static void data_range(const qd_plot *p, bool want_y, double *lo, double *hi, bool *points) {
     *lo = INFINITY;
     *hi = -INFINITY;
@@ -184,7 +195,7 @@ static void data_range(const qd_plot *p, bool want_y, double *lo, double *hi, bo
     for (size_t i = 0; i < p->nseries; i++) {
         const qd__plot_series *s = &p->series[i];
         const double *v = want_y ? s->y : s->x;
-        *points |= s->style != QD_PLOT_LINE; /* dots need room at the ends */
+        *points |= !graph(s);
         for (size_t k = 0; k < s->n; k++) {
             *lo = fmin(*lo, v[k]);
             *hi = fmax(*hi, v[k]);

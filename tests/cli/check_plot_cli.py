@@ -14,6 +14,7 @@ SVG and PDF by their magic; and the documented errors' exit statuses.
 import argparse
 import csv
 import io
+import json
 import struct
 import subprocess
 import sys
@@ -106,6 +107,25 @@ def interp(ts, vs, t):
     return vs[lo] + f * (vs[hi] - vs[lo])
 
 
+def check_mapped(png, csvpath, rng, check):
+    """Every 5th row of the CSV where the JSON's axis ranges put it inside
+    the frame found in the picture: a curve pixel within a pixel of it."""
+    w, h, at = read_png(png)
+    left, right, top, bottom = frame(w, h, at)
+    names, rows = table(csvpath)
+    x0, x1, y0, y1 = rng['x0'], rng['x1'], rng['y0'], rng['y1']
+    check(x0 == 0 and x1 == 5, f'time axis {x0}..{x1}, not exactly the run 0..5')
+    width, height = right - left - 1, bottom - top - 1
+    bad = 0
+    for r in rows[::5]:
+        px = left + 1 + (r[0] - x0) / (x1 - x0) * width
+        py = top + 1 + height - (r[names.index('theta')] - y0) / (y1 - y0) * height
+        if not any(near(at(int(px) + dx, int(py) + dy), BLUE)
+                   for dx in (-1, 0, 1) for dy in (-1, 0, 1)):
+            bad += 1
+    check(bad == 0, f'{bad} of {len(rows[::5])} rows have no curve pixel where the axes put them')
+
+
 def check_time_series(png, csvpath, t_end, check):
     w, h, at = read_png(png)
     check((w, h) == (800, 500), f'size {w}x{h}')
@@ -178,6 +198,12 @@ def main():
     check(rc == 0, f'simulate --plot: {rc} {err}')
     if rc == 0:
         check_time_series(tmp / 'p.png', tmp / 'p.csv', 5, check)
+    # --format json reports the axes' ranges: the data must be drawn there
+    rc, out, err = run(qdot, 'simulate', *pend, '--plot', tmp / 'j.png', '--out', tmp / 'j.csv',
+                       '--format', 'json')
+    check(rc == 0 and 'plot' in out, f'--plot --format json: {rc} {err}')
+    if rc == 0:
+        check_mapped(tmp / 'j.png', tmp / 'j.csv', json.loads(out)['plot'], check)
     # --plot alone: the picture, and no CSV on stdout
     rc, out, err = run(qdot, 'simulate', *pend, '--plot', tmp / 'q.png')
     check(rc == 0 and out == '' and (tmp / 'q.png').stat().st_size > 5000,
