@@ -216,16 +216,23 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
 
 /* --plot with --format json: the file and the axes' ranges drawn, so a
  * caller can place more on the picture. */
-static void plot_json(cli_json *j, const char *file, const double *range) {
+static void plot_json(cli_json *j, const char *file, size_t npanels, const double *range) {
     cli_json_key(j, "plot");
     cli_json_begin_object(j);
     cli_json_key(j, "file");
     cli_json_string(j, file);
+    cli_json_key(j, "panels");
+    cli_json_begin_array(j);
     static const char *const keys[] = {"x0", "x1", "y0", "y1"};
-    for (int k = 0; k < 4; k++) {
-        cli_json_key(j, keys[k]);
-        cli_json_number(j, range[k]);
+    for (size_t g = 0; g < npanels; g++) {
+        cli_json_begin_object(j);
+        for (int k = 0; k < 4; k++) {
+            cli_json_key(j, keys[k]);
+            cli_json_number(j, range[4 * g + (size_t)k]);
+        }
+        cli_json_end_object(j);
     }
+    cli_json_end_array(j);
     cli_json_end_object(j);
 }
 
@@ -306,13 +313,13 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
         impacts_summary(c, &st);
-        double range[4];
+        double range[4 * CLI_PLOT_MAX_PANELS];
         if (a->plot.file)
             rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false, range);
         if (rc == QD_EXIT_OK && a->json) {
             summary_json(&j, c, &st, wall, names, ncols, final);
             if (a->plot.file)
-                plot_json(&j, a->plot.file, range);
+                plot_json(&j, a->plot.file, pick.npanels, range);
             cli_json_end_object(&j);
             if (cli_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));

@@ -1,13 +1,15 @@
 /*
  * cli/modes_plot.c - `qdot modes --plot FILE`: the mode shapes drawn.
  *
- * A model with particles: the particles at the equilibrium and, per mode,
- * at q0 + s a_j (the shape scaled so the largest particle displacement is a
- * fifth of the configuration's size), in the plane where they spread most.
+ * A model with particles: a panel per mode, each with the particles at the
+ * equilibrium and at q0 + s a_j (the shape scaled so the largest particle
+ * displacement is a fifth of the configuration's size), in the plane where
+ * they spread most.
  * Particles on one line (a chain of masses and springs) move along it, so
  * there each particle's displacement is drawn across the line, against its
  * place at rest: the textbook picture of a chain's modes.  A model without
- * particles: each mode's coordinates a_ij against the coordinate number.
+ * particles: one panel, each mode's coordinates a_ij against the
+ * coordinate number.
  */
 #include "modes_plot.h"
 
@@ -78,13 +80,18 @@ static void move_along_modes(cli_lin_run *lr, qd_prog *prog, const double *q0,
     }
 }
 
-/* The two axes where rest and moved positions spread most, in order. */
+/* The two axes where the positions, at rest and moved, spread most
+ * (taken all together: one particle moved along y spreads along y). */
 static void choose_plane(const shapes *sh, size_t nmode, unsigned *ax, unsigned *ay) {
-    double sp[3] = {0, 0, 0};
+    double sp[3];
     for (unsigned k = 0; k < 3; k++) {
-        sp[k] = spread(sh->rest, sh->np, k);
-        for (size_t j = 0; j < nmode; j++)
-            sp[k] = fmax(sp[k], spread(sh->moved + j * 3 * sh->np, sh->np, k));
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t i = 0; i < sh->np * (nmode + 1); i++) {
+            double v = i < sh->np ? sh->rest[3 * i + k] : sh->moved[3 * (i - sh->np) + k];
+            lo = fmin(lo, v);
+            hi = fmax(hi, v);
+        }
+        sp[k] = hi - lo;
     }
     unsigned a = sp[1] > sp[0] ? 1 : 0;
     a = sp[2] > sp[a] ? 2 : a;
@@ -129,16 +136,34 @@ static qd_status draw_particles(qd_plot *p, const shapes *sh, const qd_modes_res
     double x[MAXP], y[MAXP];
     char label[96], yl[64];
     snprintf(yl, sizeof yl, ay == 3 ? "displacement along %s" : "%s", axis_name(ax));
-    qd_status st = qd_plot_set_xlabel(p, axis_name(ax));
-    if (st == QD_OK)
-        st = qd_plot_set_ylabel(p, ay == 3 ? yl : axis_name(ay));
-    if (st == QD_OK)
-        st = add_particles(p, sh, sh->rest, sh->rest, ax, ay, "equilibrium", x, y);
+    qd_status st = QD_OK;
     for (size_t j = 0; j < res->n && st == QD_OK; j++) {
         mode_label(res, j, label, sizeof label);
-        st = add_particles(p, sh, sh->moved + j * 3 * sh->np, sh->rest, ax, ay, label, x, y);
+        st = qd_plot_select(p, j);
+        if (st == QD_OK)
+            st = qd_plot_set_xlabel(p, axis_name(ax));
+        if (st == QD_OK)
+            st = qd_plot_set_ylabel(p, ay == 3 ? yl : axis_name(ay));
+        if (st == QD_OK && ay != 3) /* positions in the plane: true shape */
+            st = qd_plot_set_equal_axes(p, true);
+        if (st == QD_OK)
+            st = add_particles(p, sh, sh->rest, sh->rest, ax, ay, "equilibrium", x, y);
+        if (st == QD_OK)
+            st = add_particles(p, sh, sh->moved + j * 3 * sh->np, sh->rest, ax, ay, label, x, y);
     }
     return st;
+}
+
+/* A panel per mode, at most 3 to a row (2 x 2 for four), each about
+ * 330 x 330. */
+static qd_plot *new_grid(qd_ctx *ctx, size_t nmode) {
+    size_t cols = nmode <= 3 ? nmode : nmode == 4 ? 2 : 3, rows = (nmode + cols - 1) / cols;
+    qd_plot *p = qd_plot_new(ctx, cols == 1 ? 500 : 330 * (int)cols, 40 + 330 * (int)rows);
+    if (p && qd_plot_panels(p, rows, cols) != QD_OK) {
+        qd_plot_free(p);
+        return NULL;
+    }
+    return p;
 }
 
 /* No particles: a_ij (each mode scaled to a largest entry of 1) against
@@ -195,7 +220,9 @@ int cli_modes_plot(cli_lin_run *lr, const double *q0, const qd_modes_result *res
     size_t np = qd_model_nparticles(lr->mf.model);
     if (np > MAXP)
         np = 0; /* too many to draw as particles: the coordinates instead */
-    qd_plot *p = qd_plot_new(lr->ctx, 0, 0);
+    if (np && res->n > 8 * 3)
+        np = 0; /* more modes than panels: the coordinates instead */
+    qd_plot *p = np ? new_grid(lr->ctx, res->n) : qd_plot_new(lr->ctx, 0, 0);
     const char *slash = strrchr(title, '/');
     qd_status st = p ? qd_plot_set_title(p, slash ? slash + 1 : title) : QD_ERR_NOMEM;
     if (st == QD_OK)

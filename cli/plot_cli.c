@@ -88,23 +88,28 @@ static int unknown_column(const char *opt, const char *name, size_t len) {
     return QD_EXIT_USAGE;
 }
 
-/* --plot-y "a, b', energy_error": each name a column, or energy_error. */
+/* --plot-y "a, b'; energy_error": each name a column, or energy_error; a
+ * semicolon starts the next panel. */
 static int pick_list(const char *list, const char *const *names, size_t ncols,
                      cli_plot_pick *pk) {
     const char *s = list;
+    pk->npanels = 1;
     while (*s) {
-        while (isspace((unsigned char)*s) || *s == ',')
-            s++;
+        while (isspace((unsigned char)*s) || *s == ',' || *s == ';') {
+            if (*s++ == ';' && pk->ny && pk->panel[pk->ny - 1] == pk->npanels - 1)
+                pk->npanels++;
+        }
         const char *w = s;
-        while (*s && *s != ',')
+        while (*s && *s != ',' && *s != ';')
             s++;
         size_t len = (size_t)(s - w);
         while (len && isspace((unsigned char)w[len - 1]))
             len--;
         if (!len)
             continue;
-        if (pk->ny == sizeof pk->y / sizeof pk->y[0]) {
-            cli_diag_error("--plot-y: at most %zu series", pk->ny);
+        if (pk->ny == sizeof pk->y / sizeof pk->y[0] || pk->npanels > CLI_PLOT_MAX_PANELS) {
+            cli_diag_error("--plot-y: at most %zu series in %d panels",
+                           sizeof pk->y / sizeof pk->y[0], CLI_PLOT_MAX_PANELS);
             return QD_EXIT_USAGE;
         }
         size_t col;
@@ -115,8 +120,11 @@ static int pick_list(const char *list, const char *const *names, size_t ncols,
         } else if (!find_column(names, ncols, w, len, &col)) {
             return unknown_column("--plot-y", w, len);
         }
+        pk->panel[pk->ny] = pk->npanels - 1;
         pk->y[pk->ny++] = col;
     }
+    if (pk->ny && pk->panel[pk->ny - 1] != pk->npanels - 1)
+        pk->npanels--; /* a trailing semicolon */
     if (!pk->ny) {
         cli_diag_error("--plot-y names no column");
         return QD_EXIT_USAGE;
@@ -126,7 +134,7 @@ static int pick_list(const char *list, const char *const *names, size_t ncols,
 
 int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size_t ncols,
                           size_t ndof, cli_plot_pick *pk) {
-    *pk = (cli_plot_pick){0};
+    *pk = (cli_plot_pick){.npanels = 1};
     if (a->phase) {
         size_t len = strlen(a->phase);
         char vel[80];
@@ -151,14 +159,15 @@ static const char *series_name(const cli_plot_pick *pk, const char *const *names
     return pk->y[i] == ncols ? ENERGY_ERROR : names[pk->y[i]];
 }
 
-/* The y label: the series' names, "theta1, theta2". */
-static void y_label(const cli_plot_pick *pk, const char *const *names, size_t ncols, char *buf,
-                    size_t cap) {
+/* Panel g's y label: its series' names, "theta1, theta2". */
+static void y_label(const cli_plot_pick *pk, size_t g, const char *const *names, size_t ncols,
+                    char *buf, size_t cap) {
     size_t k = 0;
     buf[0] = 0;
     for (size_t i = 0; i < pk->ny && k + 1 < cap; i++)
-        k += (size_t)snprintf(buf + k, cap - k, "%s%s", i ? ", " : "",
-                              series_name(pk, names, ncols, i));
+        if (pk->panel[i] == g)
+            k += (size_t)snprintf(buf + k, cap - k, "%s%s", k ? ", " : "",
+                                  series_name(pk, names, ncols, i));
 }
 
 static double column(const cli_plot_pick *pk, const cli_plot_rows *r, size_t row, size_t col) {
@@ -176,21 +185,35 @@ static qd_status add_series(qd_plot *p, const cli_plot_pick *pk, const cli_plot_
     return qd_plot_add(p, label, points ? QD_PLOT_POINTS : QD_PLOT_LINE, r->n, x, y, NULL);
 }
 
-static qd_status fill(qd_plot *p, const cli_plot_pick *pk, const char *const *names,
-                      const cli_plot_rows *r, bool points, double *x, double *y) {
+/* Panel g's labels and series. */
+static qd_status fill_panel(qd_plot *p, const cli_plot_pick *pk, size_t g,
+                            const char *const *names, const cli_plot_rows *r, bool points,
+                            double *x, double *y) {
     const char *xl = pk->x == 0 ? "t (s)" : names[pk->x];
     char yl[256];
-    y_label(pk, names, r->ncols, yl, sizeof yl);
-    qd_status st = QD_OK;
-    if (qd_plot_set_xlabel(p, xl) != QD_OK || qd_plot_set_ylabel(p, yl) != QD_OK)
-        return QD_ERR_NOMEM;
+    y_label(pk, g, names, r->ncols, yl, sizeof yl);
+    qd_status st = qd_plot_select(p, g);
+    if (st == QD_OK)
+        st = qd_plot_set_xlabel(p, xl);
+    if (st == QD_OK)
+        st = qd_plot_set_ylabel(p, yl);
     for (size_t i = 0; i < pk->ny && st == QD_OK; i++) {
+        if (pk->panel[i] != g)
+            continue;
         char pair[160]; /* a phase curve: "(theta, theta')" */
         const char *label = series_name(pk, names, r->ncols, i);
         if (pk->phase)
             snprintf(pair, sizeof pair, "(%s, %s)", names[pk->x], label);
         st = add_series(p, pk, r, pk->phase ? pair : label, pk->y[i], points, x, y);
     }
+    return st;
+}
+
+static qd_status fill(qd_plot *p, const cli_plot_pick *pk, const char *const *names,
+                      const cli_plot_rows *r, bool points, double *x, double *y) {
+    qd_status st = pk->npanels > 1 ? qd_plot_panels(p, pk->npanels, 1) : QD_OK;
+    for (size_t g = 0; g < pk->npanels && st == QD_OK; g++)
+        st = fill_panel(p, pk, g, names, r, points, x, y);
     return st;
 }
 
@@ -206,15 +229,18 @@ int cli_plot_write_run(qd_ctx *ctx, const cli_plot_args *a, const cli_plot_pick 
         return QD_EXIT_FAIL;
     }
     double *x = malloc(r->n * sizeof *x), *y = malloc(r->n * sizeof *y);
-    qd_plot *p = x && y ? qd_plot_new(ctx, 0, 0) : NULL;
+    /* one panel: 800 x 500; stacked panels 280 high each, under the title */
+    int height = pk->npanels > 1 ? 40 + 280 * (int)pk->npanels : 0;
+    qd_plot *p = x && y ? qd_plot_new(ctx, height ? 800 : 0, height) : NULL;
     const char *slash = strrchr(title, '/');
     qd_status st = p ? qd_plot_set_title(p, slash ? slash + 1 : title) : QD_ERR_NOMEM;
     if (st == QD_OK)
         st = fill(p, pk, names, r, points, x, y);
     if (st == QD_OK)
         st = qd_plot_write(p, a->file);
-    if (st == QD_OK && range)
-        qd_plot_ranges(p, &range[0], &range[1], &range[2], &range[3]);
+    for (size_t g = 0; st == QD_OK && range && g < pk->npanels; g++)
+        qd_plot_ranges(p, g, &range[4 * g], &range[4 * g + 1], &range[4 * g + 2],
+                       &range[4 * g + 3]);
     int rc = QD_EXIT_OK;
     if (st != QD_OK)
         rc = qd_ctx_status(ctx) != QD_OK ? cli_diag_ctx(ctx) : QD_EXIT_FAIL;

@@ -12,7 +12,8 @@
 
 typedef struct cli_plot_args {
     const char *file;   /* --plot FILE.png|.svg|.pdf */
-    const char *ycols;  /* --plot-y "NAME, NAME": columns against t (energy_error too) */
+    const char *ycols;  /* --plot-y "NAME, NAME; NAME": columns against t (energy_error
+                         * too), a panel for each group between semicolons */
     const char *phase;  /* --phase Q: Q' against Q */
 } cli_plot_args;
 
@@ -42,6 +43,8 @@ typedef struct cli_plot_pick {
     size_t x;              /* column of x (0: t) */
     size_t ny;
     size_t y[16];          /* columns of the y series */
+    size_t panel[16];      /* the panel of each */
+    size_t npanels;
     bool energy_error;     /* ys[k] == ncols: E(t) - E(0) */
     size_t energy;         /* the energy column */
 } cli_plot_pick;
@@ -49,8 +52,12 @@ typedef struct cli_plot_pick {
 int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size_t ncols,
                           size_t ndof, cli_plot_pick *pk);
 
+/* The most panels --plot-y makes (one a group). */
+#define CLI_PLOT_MAX_PANELS 6
+
 /* Draw the rows picked into a->file; title is the model file's name.
- * range (may be NULL) gets the axes' ranges drawn: x0, x1, y0, y1.  Exit
+ * range (may be NULL) gets each panel's axes' ranges drawn: x0, x1, y0,
+ * y1, 4 * pk->npanels numbers.  Exit
  * status (the library's message printed on failure). */
 int cli_plot_write_run(qd_ctx *ctx, const cli_plot_args *a, const cli_plot_pick *pk,
                        const char *const *names, const cli_plot_rows *r, const char *title,

@@ -60,14 +60,14 @@ static void tick_label(char *buf, size_t cap, double v, double step) {
     snprintf(buf, cap, "%.*f", dec, v);
 }
 
-static void draw_xticks(const qd_plot *p, cairo_t *cr) {
-    const qd__plot_frame *f = &p->f;
+static void draw_xticks(const qd_plot *p, size_t k, cairo_t *cr) {
+    const qd__plot_panel *f = &p->panels[k];
     double step, first, px, py;
     size_t n = qd_plot_nice_ticks(f->x0, f->x1, 10, &step, &first);
     double bottom = f->top + f->height;
-    for (size_t k = 0; k < n; k++) {
-        double v = first + (double)k * step;
-        qd_plot_to_pixel(p, v, f->y0, &px, &py);
+    for (size_t t = 0; t < n; t++) {
+        double v = first + (double)t * step;
+        qd_plot_to_pixel(p, k, v, f->y0, &px, &py);
         cairo_move_to(cr, px, bottom);
         cairo_line_to(cr, px, bottom + 5);
         cairo_stroke(cr);
@@ -77,13 +77,13 @@ static void draw_xticks(const qd_plot *p, cairo_t *cr) {
     }
 }
 
-static void draw_yticks(const qd_plot *p, cairo_t *cr) {
-    const qd__plot_frame *f = &p->f;
+static void draw_yticks(const qd_plot *p, size_t k, cairo_t *cr) {
+    const qd__plot_panel *f = &p->panels[k];
     double step, first, px, py;
     size_t n = qd_plot_nice_ticks(f->y0, f->y1, 8, &step, &first);
-    for (size_t k = 0; k < n; k++) {
-        double v = first + (double)k * step;
-        qd_plot_to_pixel(p, f->x0, v, &px, &py);
+    for (size_t t = 0; t < n; t++) {
+        double v = first + (double)t * step;
+        qd_plot_to_pixel(p, k, f->x0, v, &px, &py);
         cairo_move_to(cr, f->left - 5, py);
         cairo_line_to(cr, f->left, py);
         cairo_stroke(cr);
@@ -93,8 +93,8 @@ static void draw_yticks(const qd_plot *p, cairo_t *cr) {
     }
 }
 
-static void draw_axes(const qd_plot *p, cairo_t *cr) {
-    const qd__plot_frame *f = &p->f;
+static void draw_axes(const qd_plot *p, size_t k, cairo_t *cr) {
+    const qd__plot_panel *f = &p->panels[k];
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 1);
     /* on the half pixel: a 1 px line is then one crisp row of pixels */
@@ -102,26 +102,27 @@ static void draw_axes(const qd_plot *p, cairo_t *cr) {
                     ceil(f->height) + 1);
     cairo_stroke(cr);
     use_font(cr, QD__PLOT_TICK_FONT, false);
-    draw_xticks(p, cr);
-    draw_yticks(p, cr);
+    draw_xticks(p, k, cr);
+    draw_yticks(p, k, cr);
     use_font(cr, QD__PLOT_LABEL_FONT, false);
-    if (p->xlabel && *p->xlabel)
-        text_at(cr, p->xlabel, f->left + f->width / 2, p->height - 8, 0.5, 1);
-    if (p->ylabel && *p->ylabel) {
+    if (f->xlabel && *f->xlabel)
+        text_at(cr, f->xlabel, f->left + f->width / 2, f->top + f->height + 44, 0.5, 1);
+    if (f->ylabel && *f->ylabel) {
         cairo_save(cr);
-        cairo_translate(cr, 16, f->top + f->height / 2);
+        cairo_translate(cr, f->left - 68, f->top + f->height / 2);
         cairo_rotate(cr, -PI / 2);
-        text_at(cr, p->ylabel, 0, 0, 0.5, 0.5);
+        text_at(cr, f->ylabel, 0, 0, 0.5, 0.5);
         cairo_restore(cr);
     }
 }
 
 static void draw_series(const qd_plot *p, cairo_t *cr, const qd__plot_series *s, unsigned rgb) {
+    size_t pan = s->panel;
     double px, py;
     set_rgb(cr, rgb);
     if (s->style == QD_PLOT_POINTS) {
         for (size_t k = 0; k < s->n; k++) {
-            qd_plot_to_pixel(p, s->x[k], s->y[k], &px, &py);
+            qd_plot_to_pixel(p, pan, s->x[k], s->y[k], &px, &py);
             cairo_new_sub_path(cr);
             cairo_arc(cr, px, py, 2.5, 0, 2 * PI);
         }
@@ -130,7 +131,7 @@ static void draw_series(const qd_plot *p, cairo_t *cr, const qd__plot_series *s,
     }
     if (s->style == QD_PLOT_LINE_POINTS)
         for (size_t k = 0; k < s->n; k++) {
-            qd_plot_to_pixel(p, s->x[k], s->y[k], &px, &py);
+            qd_plot_to_pixel(p, pan, s->x[k], s->y[k], &px, &py);
             cairo_new_sub_path(cr);
             cairo_arc(cr, px, py, 4, 0, 2 * PI);
             cairo_fill(cr);
@@ -139,7 +140,7 @@ static void draw_series(const qd_plot *p, cairo_t *cr, const qd__plot_series *s,
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     for (size_t k = 0; k < s->n; k++) {
-        qd_plot_to_pixel(p, s->x[k], s->y[k], &px, &py);
+        qd_plot_to_pixel(p, pan, s->x[k], s->y[k], &px, &py);
         if (k)
             cairo_line_to(cr, px, py);
         else
@@ -150,23 +151,24 @@ static void draw_series(const qd_plot *p, cairo_t *cr, const qd__plot_series *s,
     cairo_stroke(cr);
 }
 
-static void draw_data(const qd_plot *p, cairo_t *cr) {
-    const qd__plot_frame *f = &p->f;
+static void draw_data(const qd_plot *p, size_t k, cairo_t *cr) {
+    const qd__plot_panel *f = &p->panels[k];
     cairo_save(cr);
     cairo_rectangle(cr, f->left, f->top, f->width, f->height);
     cairo_clip(cr);
     for (size_t i = 0; i < p->nseries; i++)
-        draw_series(p, cr, &p->series[i], qd_plot_color(p, i));
+        if (p->series[i].panel == k)
+            draw_series(p, cr, &p->series[i], qd_plot_color(p, i));
     cairo_restore(cr);
 }
 
-static void draw_legend(const qd_plot *p, cairo_t *cr, size_t *row, double *xoff) {
-    const qd__plot_frame *f = &p->f;
-    qd__plot_legend_rows(p, f->width, row, xoff);
+static void draw_legend(const qd_plot *p, size_t k, cairo_t *cr, size_t *row, double *xoff) {
+    const qd__plot_panel *f = &p->panels[k];
+    qd__plot_legend_rows(p, k, f->width, row, xoff);
     use_font(cr, QD__PLOT_TICK_FONT, false);
     for (size_t i = 0; i < p->nseries; i++) {
         const qd__plot_series *s = &p->series[i];
-        if (!*s->label)
+        if (!*s->label || s->panel != k)
             continue;
         double x = f->left + xoff[i], y = f->legend_top + ((double)row[i] + 0.5) * QD__PLOT_LEGEND_ROW;
         set_rgb(cr, qd_plot_color(p, i));
@@ -194,9 +196,13 @@ static qd_status draw(const qd_plot *p, cairo_t *cr) {
     }
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
-    draw_data(p, cr);
-    draw_axes(p, cr);
-    draw_legend(p, cr, row, xoff);
+    for (size_t k = 0; k < p->rows * p->cols; k++) {
+        if (!p->panels[k].nseries)
+            continue; /* the grid's unused cells stay blank */
+        draw_data(p, k, cr);
+        draw_axes(p, k, cr);
+        draw_legend(p, k, cr, row, xoff);
+    }
     if (p->title && *p->title) {
         cairo_set_source_rgb(cr, 0, 0, 0);
         use_font(cr, QD__PLOT_TITLE_FONT, true);

@@ -48,12 +48,64 @@ qd_plot *qd_plot_new(qd_ctx *ctx, int width, int height) {
         return NULL;
     }
     qd_plot *p = qd__calloc(ctx, 1, sizeof *p);
-    if (!p)
+    qd__plot_panel *one = p ? qd__calloc(ctx, 1, sizeof *one) : NULL;
+    if (!one) {
+        qd__free(p);
         return NULL;
+    }
     p->ctx = ctx;
     p->width = width;
     p->height = height;
+    p->panels = one;
+    p->rows = p->cols = 1;
     return p;
+}
+
+static void free_panels(qd_plot *p) {
+    for (size_t k = 0; k < p->rows * p->cols; k++) {
+        qd__free(p->panels[k].xlabel);
+        qd__free(p->panels[k].ylabel);
+    }
+    qd__free(p->panels);
+}
+
+qd_status qd_plot_panels(qd_plot *p, size_t rows, size_t cols) {
+    if (p->nseries || rows < 1 || cols < 1 || rows > 8 || cols > 8) {
+        qd_ctx_error(p->ctx, QD_ERR_ARG, p->nseries ? "a plot is divided into panels before "
+                     "any series is added" : "a plot has 1 to 8 rows and columns of panels, "
+                     "not %zu x %zu", rows, cols);
+        return QD_ERR_ARG;
+    }
+    qd__plot_panel *panels = qd__calloc(p->ctx, rows * cols, sizeof *panels);
+    if (!panels)
+        return QD_ERR_NOMEM;
+    free_panels(p);
+    p->panels = panels;
+    p->rows = rows;
+    p->cols = cols;
+    p->cur = 0;
+    p->laid_out = false;
+    return QD_OK;
+}
+
+qd_status qd_plot_set_equal_axes(qd_plot *p, bool equal) {
+    p->panels[p->cur].equal = equal;
+    p->laid_out = false;
+    return QD_OK;
+}
+
+size_t qd_plot_npanels(const qd_plot *p) {
+    return p->rows * p->cols;
+}
+
+qd_status qd_plot_select(qd_plot *p, size_t panel) {
+    if (panel >= p->rows * p->cols) {
+        qd_ctx_error(p->ctx, QD_ERR_ARG, "the plot has %zu panels; there is no panel %zu",
+                     p->rows * p->cols, panel);
+        return QD_ERR_ARG;
+    }
+    p->cur = panel;
+    return QD_OK;
 }
 
 void qd_plot_free(qd_plot *p) {
@@ -66,8 +118,7 @@ void qd_plot_free(qd_plot *p) {
     }
     qd__free(p->series);
     qd__free(p->title);
-    qd__free(p->xlabel);
-    qd__free(p->ylabel);
+    free_panels(p);
     qd__free(p);
 }
 
@@ -77,7 +128,7 @@ static qd_status set_text(qd_plot *p, char **slot, const char *text) {
         return QD_ERR_NOMEM;
     qd__free(*slot);
     *slot = copy;
-    p->f.done = false;
+    p->laid_out = false;
     return QD_OK;
 }
 
@@ -86,11 +137,11 @@ qd_status qd_plot_set_title(qd_plot *p, const char *title) {
 }
 
 qd_status qd_plot_set_xlabel(qd_plot *p, const char *label) {
-    return set_text(p, &p->xlabel, label);
+    return set_text(p, &p->panels[p->cur].xlabel, label);
 }
 
 qd_status qd_plot_set_ylabel(qd_plot *p, const char *label) {
-    return set_text(p, &p->ylabel, label);
+    return set_text(p, &p->panels[p->cur].ylabel, label);
 }
 
 static qd_status check_points(qd_plot *p, const char *label, size_t n, const double *x,
@@ -128,7 +179,9 @@ qd_status qd_plot_add(qd_plot *p, const char *label, qd_plot_style style, size_t
         p->series = s;
         p->cap = cap;
     }
+    qd__plot_panel *pan = &p->panels[p->cur];
     qd__plot_series s = {.label = qd__strdup(p->ctx, label ? label : ""), .style = style, .n = n,
+                         .panel = p->cur, .nth = pan->nseries,
                          .x = copy_doubles(p->ctx, n, x), .y = copy_doubles(p->ctx, n, y)};
     if (!s.label || !s.x || !s.y) {
         qd__free(s.label);
@@ -140,7 +193,8 @@ qd_status qd_plot_add(qd_plot *p, const char *label, qd_plot_style style, size_t
     if (index)
         *index = p->nseries;
     p->nseries++;
-    p->f.done = false;
+    pan->nseries++;
+    p->laid_out = false;
     return QD_OK;
 }
 
@@ -149,8 +203,7 @@ size_t qd_plot_nseries(const qd_plot *p) {
 }
 
 unsigned qd_plot_color(const qd_plot *p, size_t i) {
-    (void)p;
-    return palette[i % NPALETTE];
+    return palette[(i < p->nseries ? p->series[i].nth : i) % NPALETTE];
 }
 
 size_t qd_plot_nice_ticks(double lo, double hi, size_t max_ticks, double *step, double *first) {
@@ -188,12 +241,15 @@ static bool graph(const qd__plot_series *s) {
 
 /* The range of axis values of every series (x when !want_y), and whether
  * any series needs padding along x. */
-static void data_range(const qd_plot *p, bool want_y, double *lo, double *hi, bool *points) {
+static void data_range(const qd_plot *p, size_t k, bool want_y, double *lo, double *hi,
+                       bool *points) {
     *lo = INFINITY;
     *hi = -INFINITY;
     *points = false;
     for (size_t i = 0; i < p->nseries; i++) {
         const qd__plot_series *s = &p->series[i];
+        if (s->panel != k)
+            continue;
         const double *v = want_y ? s->y : s->x;
         *points |= !graph(s);
         for (size_t k = 0; k < s->n; k++) {
@@ -228,62 +284,94 @@ static void axis_range(double lo, double hi, bool pad, size_t max_ticks, double 
     *b = hi;
 }
 
+/* One data unit per as many pixels on both axes: the range with fewer
+ * pixels per unit stays, the other is widened about its middle. */
+static void widen(double *a, double *b, double span) {
+    double mid = 0.5 * (*a + *b);
+    *a = mid - 0.5 * span;
+    *b = mid + 0.5 * span;
+}
+
+static void equalize(qd__plot_panel *f) {
+    double ux = (f->x1 - f->x0) / f->width, uy = (f->y1 - f->y0) / f->height;
+    if (ux > uy)
+        widen(&f->y0, &f->y1, ux * f->height);
+    else
+        widen(&f->x0, &f->x1, uy * f->width);
+}
+
+/* Panel k in its cell of the grid (below the title): the ranges, the
+ * legend's rows and the plot area.  An empty panel shows [0, 1]. */
+static qd_status layout_panel(qd_plot *p, size_t k, double cell_top, double cell_h) {
+    qd__plot_panel *f = &p->panels[k];
+    double lo, hi, cell_w = (double)p->width / (double)p->cols;
+    bool points;
+    data_range(p, k, false, &lo, &hi, &points);
+    axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, points, 10, &f->x0, &f->x1);
+    data_range(p, k, true, &lo, &hi, &points);
+    axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, true, 8, &f->y0, &f->y1);
+    bool ylab = f->ylabel && *f->ylabel, xlab = f->xlabel && *f->xlabel;
+    f->left = cell_w * (double)(k % p->cols) + (ylab ? 84 : 64);
+    f->width = cell_w - (ylab ? 84 : 64) - 24;
+    f->legend_top = cell_top + 4;
+    f->legend_rows = qd__plot_legend_rows(p, k, f->width, NULL, NULL);
+    f->top = f->legend_top + (double)f->legend_rows * QD__PLOT_LEGEND_ROW + 8;
+    f->height = cell_top + cell_h - f->top - (xlab ? 52 : 32);
+    if (f->width < 50 || f->height < 50) {
+        qd_ctx_error(p->ctx, QD_ERR_ARG, "no room to plot in %d x %d with %zu x %zu panels "
+                     "(the legend takes %zu rows)", p->width, p->height, p->rows, p->cols,
+                     f->legend_rows);
+        return QD_ERR_ARG;
+    }
+    if (f->equal)
+        equalize(f);
+    return QD_OK;
+}
+
 qd_status qd_plot_layout(qd_plot *p) {
     if (p->nseries == 0) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot needs at least one series of points");
         return QD_ERR_ARG;
     }
-    qd__plot_frame *f = &p->f;
-    double lo, hi;
-    bool points;
-    data_range(p, false, &lo, &hi, &points);
-    axis_range(lo, hi, points, 10, &f->x0, &f->x1);
-    data_range(p, true, &lo, &hi, &points);
-    axis_range(lo, hi, true, 8, &f->y0, &f->y1);
-
-    bool ylab = p->ylabel && *p->ylabel, xlab = p->xlabel && *p->xlabel;
-    f->left = ylab ? 84 : 64;
-    double right = 24;
-    f->width = p->width - f->left - right;
-    double top = p->title && *p->title ? 36 : 12;
-    f->legend_top = top;
-    f->legend_rows = qd__plot_legend_rows(p, f->width, NULL, NULL);
-    f->top = top + (double)f->legend_rows * QD__PLOT_LEGEND_ROW + 8;
-    f->height = p->height - f->top - (xlab ? 56 : 36);
-    if (f->width < 50 || f->height < 50) {
-        qd_ctx_error(p->ctx, QD_ERR_ARG, "the plot's legend leaves no room to plot in "
-                     "%d x %d (%zu rows)", p->width, p->height, f->legend_rows);
-        return QD_ERR_ARG;
+    double top = p->title && *p->title ? 32 : 8;
+    double cell_h = ((double)p->height - top) / (double)p->rows;
+    for (size_t k = 0; k < p->rows * p->cols; k++) {
+        qd_status st = layout_panel(p, k, top + cell_h * (double)(k / p->cols), cell_h);
+        if (st != QD_OK)
+            return st;
     }
-    f->done = true;
+    p->laid_out = true;
     return QD_OK;
 }
 
-bool qd_plot_to_pixel(const qd_plot *p, double x, double y, double *px, double *py) {
-    const qd__plot_frame *f = &p->f;
-    if (!f->done)
+bool qd_plot_to_pixel(const qd_plot *p, size_t panel, double x, double y, double *px,
+                      double *py) {
+    if (!p->laid_out || panel >= p->rows * p->cols)
         return false;
+    const qd__plot_panel *f = &p->panels[panel];
     *px = f->left + (x - f->x0) / (f->x1 - f->x0) * f->width;
     *py = f->top + f->height - (y - f->y0) / (f->y1 - f->y0) * f->height;
     return true;
 }
 
-bool qd_plot_ranges(const qd_plot *p, double *x0, double *x1, double *y0, double *y1) {
-    if (!p->f.done)
+bool qd_plot_ranges(const qd_plot *p, size_t panel, double *x0, double *x1, double *y0,
+                    double *y1) {
+    if (!p->laid_out || panel >= p->rows * p->cols)
         return false;
-    *x0 = p->f.x0;
-    *x1 = p->f.x1;
-    *y0 = p->f.y0;
-    *y1 = p->f.y1;
+    const qd__plot_panel *f = &p->panels[panel];
+    *x0 = f->x0;
+    *x1 = f->x1;
+    *y0 = f->y0;
+    *y1 = f->y1;
     return true;
 }
 
-size_t qd__plot_legend_rows(const qd_plot *p, double width, size_t *row, double *xoff) {
+size_t qd__plot_legend_rows(const qd_plot *p, size_t k, double width, size_t *row, double *xoff) {
     size_t rows = 0;
     double x = 0;
     for (size_t i = 0; i < p->nseries; i++) {
         const char *label = p->series[i].label;
-        if (!*label)
+        if (!*label || p->series[i].panel != k)
             continue;
         double w = QD__PLOT_SWATCH + 6 + qd__plot_text_width(label, QD__PLOT_TICK_FONT) + 18;
         if (rows == 0 || (x > 0 && x + w > width)) {

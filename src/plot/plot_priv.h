@@ -11,26 +11,33 @@
 typedef struct qd__plot_series {
     char *label;       /* "" when none */
     qd_plot_style style;
+    size_t panel;
+    size_t nth;        /* its place in its panel: the palette's index */
     size_t n;
     double *x, *y;
 } qd__plot_series;
 
-/* The plot area and what maps data onto it, fixed by qd_plot_layout. */
-typedef struct qd__plot_frame {
-    bool done;
+/* A panel: its labels, and (after qd_plot_layout) its plot area and what
+ * maps data onto it. */
+typedef struct qd__plot_panel {
+    char *xlabel, *ylabel;
+    size_t nseries;
+    bool equal;                        /* one data unit is as long on both axes */
     double left, top, width, height;   /* the plot area, in pixels */
     double x0, x1, y0, y1;             /* the data range it shows */
-    double legend_top;                 /* the legend strip's baseline region */
+    double legend_top;                 /* the legend strip's top */
     size_t legend_rows;
-} qd__plot_frame;
+} qd__plot_panel;
 
 struct qd_plot {
     qd_ctx *ctx;
     int width, height;
-    char *title, *xlabel, *ylabel;
+    char *title;
+    qd__plot_panel *panels;
+    size_t rows, cols, cur;
     qd__plot_series *series;
     size_t nseries, cap;
-    qd__plot_frame f;
+    bool laid_out;
 };
 
 /* Sizes of the layout, in pixels (points for SVG and PDF). */
@@ -44,9 +51,9 @@ struct qd_plot {
 /* Width of text in the legend's font, for the layout (draw.c). */
 double qd__plot_text_width(const char *text, double size);
 
-/* The legend's items laid left to right in rows of at most width:
- * row[i] and x offset xoff[i] of item i (either may be NULL); returns the
+/* The legend of panel k laid left to right in rows of at most width:
+ * row[i] and x offset xoff[i] of series i (either may be NULL); returns the
  * row count (0 without labels). */
-size_t qd__plot_legend_rows(const qd_plot *p, double width, size_t *row, double *xoff);
+size_t qd__plot_legend_rows(const qd_plot *p, size_t k, double width, size_t *row, double *xoff);
 
 #endif

@@ -9,7 +9,10 @@ each column must sit on a straight-line image of theta(t) from the CSV (the
 y axis is an affine map: fitted, then the residual must be under 2 px and
 the frame must show the data's whole range); the phase portrait's pixels lie
 where the data (theta, theta') puts them between the curve's own extremes;
-SVG and PDF by their magic; and the documented errors' exit statuses.
+SVG and PDF by their magic; poincare's dots; modes --plot on the elastic
+pendulum, whose swing mode moves the bob sideways and whose stretch mode moves
+it vertically (Goldstein ch. 1 ex. 24, seed 002); and the documented errors'
+exit statuses.
 """
 import argparse
 import csv
@@ -182,6 +185,27 @@ def check_phase(png, csvpath, check):
     check(at(cx, cy) == (255, 255, 255), f'phase loop centre {at(cx, cy)}')
 
 
+def centroid(pts):
+    return (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts)) if pts else None
+
+
+def check_spring_modes(png, check):
+    w, h, at = read_png(png)
+    orange = (0xff, 0x7f, 0x0e)
+    for k, along in ((0, 'x'), (1, 'y')):
+        # panel k: the k-th half of the picture, below its legend
+        xs = range(k * w // 2, (k + 1) * w // 2)
+        pix = [(x, y) for y in range(90, h) for x in xs]
+        rest = centroid([p for p in pix if near(at(*p), BLUE, 30)])
+        moved = centroid([p for p in pix if near(at(*p), orange, 30)])
+        check(rest and moved, f'mode {k + 1}: dots not found')
+        if not (rest and moved):
+            continue
+        dx, dy = abs(moved[0] - rest[0]), abs(moved[1] - rest[1])
+        ok = (dx > 20 and dy < 1.5) if along == 'x' else (dy > 20 and dx < 1.5)
+        check(ok, f'mode {k + 1} should move the bob along {along}: dx {dx:.1f}, dy {dy:.1f}')
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
@@ -203,7 +227,7 @@ def main():
                        '--format', 'json')
     check(rc == 0 and 'plot' in out, f'--plot --format json: {rc} {err}')
     if rc == 0:
-        check_mapped(tmp / 'j.png', tmp / 'j.csv', json.loads(out)['plot'], check)
+        check_mapped(tmp / 'j.png', tmp / 'j.csv', json.loads(out)['plot']['panels'][0], check)
     # --plot alone: the picture, and no CSV on stdout
     rc, out, err = run(qdot, 'simulate', *pend, '--plot', tmp / 'q.png')
     check(rc == 0 and out == '' and (tmp / 'q.png').stat().st_size > 5000,
@@ -232,6 +256,17 @@ def main():
         w, h, at = read_png(tmp / 'pc.png')
         dots = sum(near(at(x, y), BLUE) for y in range(h) for x in range(w))
         check(dots > 40 * 8, f'poincare: {dots} dot pixels for 40 crossings')
+
+    # modes: the elastic pendulum about its hanging rest (examples/spring_pendulum.qd)
+    # decouples into the swing (w^2 = g/r0), which moves the bob sideways, and the
+    # stretch (w^2 = k/m), which moves it along the vertical: in each mode's panel
+    # the moved bob (orange) is level with the bob at rest (blue), or right under it.
+    rc, out, err = run(qdot, 'modes', EX / 'spring_pendulum.qd', '--plot', tmp / 'm.png')
+    check(rc == 0 and 'mode 2' in out, f'modes --plot: {rc} {err}')
+    if rc == 0:
+        check_spring_modes(tmp / 'm.png', check)
+    rc, out, err = run(qdot, 'modes', EX / 'damped_pendulum.qd', '--plot', tmp / 'd.png')
+    check(rc == 2 and not (tmp / 'd.png').exists(), f'modes --plot with damping: {rc}')
 
     # errors: bad input 2, as --out's unwritable file
     for args, what in (

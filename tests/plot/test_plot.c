@@ -161,13 +161,13 @@ static void test_png_curves(void **state) {
     size_t ink = count_non_white(&im);
     assert_true(ink > 2000 && ink < 800 * 500 / 4); /* drawn, mostly background */
     double x0, x1, y0, y1;
-    assert_true(qd_plot_ranges(p, &x0, &x1, &y0, &y1));
+    assert_true(qd_plot_ranges(p, 0, &x0, &x1, &y0, &y1));
     assert_true(x0 <= 0 && x1 >= 2 * PI && y0 <= -1 && y1 >= 1.07);
     int probed = 0;
     for (double t = 0.2; t < 6.2; t += 0.1) {
         double px, py, qx, qy;
-        assert_true(qd_plot_to_pixel(p, t, sin(t), &px, &py));
-        assert_true(qd_plot_to_pixel(p, t, t / 4 - 0.5, &qx, &qy));
+        assert_true(qd_plot_to_pixel(p, 0, t, sin(t), &px, &py));
+        assert_true(qd_plot_to_pixel(p, 0, t, t / 4 - 0.5, &qx, &qy));
         if (fabs(py - qy) < 12)
             continue; /* near a crossing: either colour may be on top */
         assert_true(has_color_near(&im, px, py, cs));
@@ -179,8 +179,8 @@ static void test_png_curves(void **state) {
             if (fabs(ry - qy) < 12)
                 continue;
             double ax, ay, bx, by; /* stay inside the plot area */
-            qd_plot_to_pixel(p, x1, y1, &ax, &ay);
-            qd_plot_to_pixel(p, x0, y0, &bx, &by);
+            qd_plot_to_pixel(p, 0, x1, y1, &ax, &ay);
+            qd_plot_to_pixel(p, 0, x0, y0, &bx, &by);
             if (ry < ay + 3 || ry > by - 3)
                 continue;
             assert_int_equal(pixel(&im, (int)tx, (int)ty), 0xffffff);
@@ -211,14 +211,75 @@ static void test_png_points(void **state) {
     assert_int_equal(im.h, 400);
     double px, py;
     for (int i = 0; i < 36; i++) {
-        qd_plot_to_pixel(p, x[i], y[i], &px, &py);
+        qd_plot_to_pixel(p, 0, x[i], y[i], &px, &py);
         assert_true(color_dist(pixel(&im, (int)px, (int)py), qd_plot_color(p, 0)) <= 40);
     }
-    qd_plot_to_pixel(p, 0, 0, &px, &py);
+    qd_plot_to_pixel(p, 0, 0, 0, &px, &py);
     assert_int_equal(pixel(&im, (int)px, (int)py), 0xffffff);
-    qd_plot_to_pixel(p, 0.5, 0.5, &px, &py);
+    qd_plot_to_pixel(p, 0, 0.5, 0.5, &px, &py);
     assert_int_equal(pixel(&im, (int)px, (int)py), 0xffffff);
     cairo_surface_destroy(im.s);
+    qd_plot_free(p);
+    qd_ctx_free(c);
+}
+
+/* Two panels stacked: each series where its own panel's map puts it, and
+ * the second panel's ranges its own data's. */
+static void test_panels(void **state) {
+    (void)state;
+    qd_ctx *c = qd_ctx_new();
+    double x[NS], s[NS], e[NS];
+    for (int i = 0; i < NS; i++) {
+        x[i] = 10.0 * i / (NS - 1);
+        s[i] = sin(x[i]);
+        e[i] = 1e-9 * x[i]; /* a drift, as an energy error */
+    }
+    qd_plot *p = qd_plot_new(c, 800, 600);
+    assert_int_equal(qd_plot_panels(p, 2, 1), QD_OK);
+    assert_int_equal(qd_plot_npanels(p), 2);
+    assert_int_equal(qd_plot_add(p, "sin t", QD_PLOT_LINE, NS, x, s, NULL), QD_OK);
+    assert_int_equal(qd_plot_select(p, 1), QD_OK);
+    assert_int_equal(qd_plot_add(p, "drift", QD_PLOT_LINE, NS, x, e, NULL), QD_OK);
+    assert_int_equal(qd_plot_select(p, 2), QD_ERR_ARG);
+    qd_ctx_clear_error(c);
+    assert_int_equal(qd_plot_panels(p, 1, 2), QD_ERR_ARG); /* after series */
+    qd_ctx_clear_error(c);
+    assert_int_equal(qd_plot_write(p, "test_plot_panels.png"), QD_OK);
+    double x0, x1, y0, y1;
+    assert_true(qd_plot_ranges(p, 1, &x0, &x1, &y0, &y1));
+    assert_true(y0 <= 0 && y1 >= 1e-8 && y1 < 1.3e-8);
+    image im = load("test_plot_panels.png");
+    unsigned col = qd_plot_color(p, 0);
+    assert_int_equal(col, qd_plot_color(p, 1)); /* each panel's first colour */
+    for (int i = 10; i < NS - 10; i += 10) {
+        double px, py, qx, qy;
+        qd_plot_to_pixel(p, 0, x[i], s[i], &px, &py);
+        qd_plot_to_pixel(p, 1, x[i], e[i], &qx, &qy);
+        assert_true(has_color_near(&im, px, py, col));
+        assert_true(has_color_near(&im, qx, qy, col));
+        assert_true(qy > 300 && py < 300); /* second panel below the first */
+    }
+    cairo_surface_destroy(im.s);
+    qd_plot_free(p);
+    qd_ctx_free(c);
+}
+
+/* Equal axes: a unit is as many pixels along y as along x, even for data
+ * far wider than high (a line of particles with a tiny sideways offset). */
+static void test_equal_axes(void **state) {
+    (void)state;
+    qd_ctx *c = qd_ctx_new();
+    double x[2] = {0, 4}, y[2] = {0, 1e-30};
+    qd_plot *p = qd_plot_new(c, 0, 0);
+    assert_int_equal(qd_plot_set_equal_axes(p, true), QD_OK);
+    assert_int_equal(qd_plot_add(p, "rod", QD_PLOT_LINE_POINTS, 2, x, y, NULL), QD_OK);
+    assert_int_equal(qd_plot_layout(p), QD_OK);
+    double ax, ay, bx, by, cx, cy;
+    qd_plot_to_pixel(p, 0, 0, 0, &ax, &ay);
+    qd_plot_to_pixel(p, 0, 1, 0, &bx, &by);
+    qd_plot_to_pixel(p, 0, 0, 1, &cx, &cy);
+    assert_true(fabs((bx - ax) - (ay - cy)) < 1e-9 * (bx - ax));
+    assert_true(bx - ax > 100);
     qd_plot_free(p);
     qd_ctx_free(c);
 }
@@ -286,6 +347,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ticks_known),  cmocka_unit_test(test_ticks_definition),
         cmocka_unit_test(test_png_curves),   cmocka_unit_test(test_png_points),
+        cmocka_unit_test(test_panels),       cmocka_unit_test(test_equal_axes),
         cmocka_unit_test(test_svg_pdf),      cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
