@@ -290,6 +290,9 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         cli_json_begin_array(&j);
         o.json = &j;
     }
+    /* a step can span a swing: without --dt a plot samples the dense output */
+    if (o.plot && !a->has_dt && qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
+        c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     clock_gettime(CLOCK_MONOTONIC, &o.start);
     qd_sim_stats st;
     qd_status s = qd_sim_run(c->s, &c->opts, sink, &o, &st, final);
