@@ -30,18 +30,16 @@ typedef struct pc_args {
 
 typedef struct pc_out {
     FILE *f;
+    cli_plot_rows *plot; /* --plot: the crossings kept, or NULL */
     size_t ncols, want, got;
     const char **names; /* the header, written once the run is under way */
     bool header;
-    cli_plot_rows *plot; /* --plot: the crossings kept, or NULL */
 } pc_out;
 
 static int sink(void *data, int event, const double *row) {
     pc_out *o = data;
     if (o->plot && event == 0)
         cli_plot_keep(o->plot, row);
-    if (!o->f) /* --plot without --out: the picture alone */
-        return event == 0 && ++o->got >= o->want;
     if (!o->header) {
         for (size_t i = 0; i < o->ncols; i++)
             fprintf(o->f, "%s%s", i ? "," : "", o->names[i]);
@@ -106,8 +104,9 @@ static const char *free_coord(const cli_sim *c, const char *section, const char 
     return n ? names[1] : NULL;
 }
 
-static int pc_plot_pick(const cli_sim *c, pc_args *p, const char *const *names, size_t ncols,
+static int pc_plot_pick(const cli_sim *c, pc_args *p, const char **names, size_t ncols,
                         cli_plot_pick *pick) {
+    qd_sim_columns(c->s, c->opts.method, names, ncols);
     if (!p->a.plot.phase)
         p->a.plot.phase = free_coord(c, p->section, names);
     return cli_plot_pick_columns(&p->a.plot, names, ncols, qd_sim_ndof(c->s), pick);
@@ -146,17 +145,14 @@ int cli_cmd_poincare(int argc, char **argv) {
         cli_diag_error("cannot write '%s'", p.a.out);
         rc = QD_EXIT_USAGE;
     }
+    cli_plot_rows rows = {.ncols = ncols};
+    cli_plot_pick pick; /* --plot: its columns named before the run */
+    if (rc == QD_EXIT_OK && names && p.a.plot.file)
+        rc = pc_plot_pick(&c, &p, names, ncols, &pick);
     if (rc == QD_EXIT_OK && names) {
         qd_sim_columns(c.s, c.opts.method, names, ncols);
         pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = (size_t)p.n, .names = names};
-        cli_plot_rows rows = {.ncols = ncols};
-        cli_plot_pick pick;
-        if (p.a.plot.file && (rc = pc_plot_pick(&c, &p, names, ncols, &pick)) != QD_EXIT_OK)
-            goto out;
-        if (p.a.plot.file) {
-            o.plot = &rows;
-            o.f = f; /* the CSV only where --out sends it */
-        }
+        o.plot = p.a.plot.file ? &rows : NULL;
         qd_sim_stats st;
         qd_status s = qd_sim_run(c.s, &c.opts, sink, &o, &st, NULL);
         if (s != QD_OK) {
@@ -173,11 +169,10 @@ int cli_cmd_poincare(int argc, char **argv) {
                 rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true,
                                         NULL);
         }
-    out:
-        cli_plot_rows_free(&rows);
     } else if (rc == QD_EXIT_OK) {
         rc = QD_EXIT_FAIL;
     }
+    cli_plot_rows_free(&rows);
     if (f)
         fclose(f);
     free(names);

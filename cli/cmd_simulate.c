@@ -74,6 +74,8 @@ static void write_header(sim_out *o) {
 static int sink(void *data, int event, const double *row) {
     sim_out *o = data;
     o->rows++;
+    if (o->plot)
+        cli_plot_keep(o->plot, row);
     if (o->csv) {
         /* the header only once the run is under way: a refused run prints nothing */
         if (!o->header)
@@ -96,8 +98,6 @@ static int sink(void *data, int event, const double *row) {
             cli_json_number(o->json, event + 1);
         cli_json_end_array(o->json);
     }
-    if (o->plot)
-        cli_plot_keep(o->plot, row);
     progress(o, row[0]);
     return 0;
 }
@@ -257,6 +257,9 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         free(line);
         return QD_EXIT_USAGE;
     }
+    /* a step can span a swing: without --dt a plot samples the dense output */
+    if (a->plot.file && !a->has_dt && qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
+        c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     sim_out o = {.ncols = ncols, .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0,
                  .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .progress = isatty(2), .names = names, .line = line};
@@ -290,9 +293,6 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         cli_json_begin_array(&j);
         o.json = &j;
     }
-    /* a step can span a swing: without --dt a plot samples the dense output */
-    if (o.plot && !a->has_dt && qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
-        c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     clock_gettime(CLOCK_MONOTONIC, &o.start);
     qd_sim_stats st;
     qd_status s = qd_sim_run(c->s, &c->opts, sink, &o, &st, final);
