@@ -22,6 +22,8 @@
 #include <string.h>
 #include "json.h"
 #include "model_cli.h"
+#include "modes_plot.h"
+#include "plot_cli.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -32,6 +34,7 @@ typedef struct modes_args {
     const char *sets[QD_LIN_MAX_SETS];
     size_t nsets;
     bool json;
+    const char *plot;  /* --plot FILE: the mode shapes drawn */
 } modes_args;
 
 typedef struct modes_run {
@@ -52,7 +55,7 @@ typedef struct modes_run {
 static const char usage_text[] =
     "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
     "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--scan NAME=A:B [--steps N]] "
-    "[--set NAME=VALUE]... [--format text|json]";
+    "[--set NAME=VALUE]... [--format text|json] [--plot FILE.png|.svg|.pdf]";
 
 static const char *const formats[] = {"text", "json", NULL};
 
@@ -97,6 +100,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return cli_once("--initial", &a->initial, v);
     if ((v = cli_value(argc, argv, i, "--set")))
         return cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
+    if ((v = cli_value(argc, argv, i, "--plot")))
+        return cli_once("--plot", &a->plot, v);
     return cli_bad_option(argv[*i], usage_text);
 }
 
@@ -511,6 +516,12 @@ int cli_cmd_modes(int argc, char **argv) {
                       "at the start of the range): give neither --at-equilibrium nor --initial");
         return QD_EXIT_USAGE;
     }
+    if (a.plot && a.scan) {
+        cli_diag_error("--plot draws the modes about one point: not with --scan");
+        return QD_EXIT_USAGE;
+    }
+    if (a.plot && (rc = cli_plot_check(&(cli_plot_args){.file = a.plot}, "modes")))
+        return rc;
     if (a.steps && !a.scan) {
         cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
         return QD_EXIT_USAGE;
@@ -521,6 +532,10 @@ int cli_cmd_modes(int argc, char **argv) {
         return QD_EXIT_FAIL;
     }
     rc = cli_lin_load_model(&r.lr, a.file, a.sets, a.nsets);
+    if (rc == QD_EXIT_OK && a.plot && qd_model_nspeeds(r.lr.mf.model)) {
+        cli_diag_error("--plot: the modes of a model in speeds are not drawn yet");
+        rc = QD_EXIT_USAGE;
+    }
     if (rc == QD_EXIT_OK && qd_model_nspeeds(r.lr.mf.model)) {
         rc = cli_speeds_modes(r.lr.ctx, &r.lr.mf, a.about, a.scan, a.steps, a.json,
                               a.at_eq ? "--at-equilibrium" : a.initial ? "--initial" : NULL);
@@ -545,6 +560,8 @@ int cli_cmd_modes(int argc, char **argv) {
         (a.json ? put_json : put_text)(&r, &b);
         rc = cli_emit(&b, "modes");
     }
+    if (rc == QD_EXIT_OK && a.plot)
+        rc = cli_modes_plot(&r.lr, r.q0, &r.res, a.plot, a.file);
 done:
     free(r.q0);
     free(r.Q);

@@ -7,6 +7,7 @@
  */
 #include "cli.h"
 
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,8 @@
 static const char usage_text[] =
     "usage: qdot poincare FILE --section \"EXPR = EXPR[, EXPR > EXPR]\" --n N "
     "[--method M] [--rtol TOL | --dt H] [--atol TOL] [--t-end T_MAX] [--out FILE] "
-    "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... [--native]";
+    "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... [--native] "
+    "[--plot FILE.png|.svg|.pdf [--phase Q]]";
 
 #define DEFAULT_T_MAX 1e6
 
@@ -29,6 +31,7 @@ typedef struct pc_args {
 
 typedef struct pc_out {
     FILE *f;
+    cli_plot_rows *plot; /* --plot: the crossings kept, or NULL */
     size_t ncols, want, got;
     const char **names; /* the header, written once the run is under way */
     bool header;
@@ -44,6 +47,8 @@ static void progress(pc_out *o, double t) {
 
 static int sink(void *data, int event, const double *row) {
     pc_out *o = data;
+    if (o->plot && event == 0)
+        cli_plot_keep(o->plot, row);
     if (!o->header) {
         for (size_t i = 0; i < o->ncols; i++)
             fprintf(o->f, "%s%s", i ? "," : "", o->names[i]);
@@ -80,11 +85,41 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
             cli_diag_error("--n takes a positive whole number, not '%s'", v);
             return QD_EXIT_USAGE;
         }
+    } else if ((rc = cli_plot_option(argc, argv, i, &p->a.plot))) {
+        return rc > 100 ? rc - 100 : QD_EXIT_OK;
     } else {
         cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
+}
+
+/* The section fixes the coordinate it names, so by default the plot shows
+ * the first coordinate whose name is not among the section's words. */
+static const char *free_coord(const cli_sim *c, const char *section, const char *const *names) {
+    size_t n = qd_sim_ndof(c->s);
+    for (size_t j = 0; j < n; j++) {
+        const char *q = names[1 + j], *s = section;
+        size_t len = strlen(q);
+        bool named = false;
+        while ((s = strstr(s, q))) {
+            bool before = s > section && (isalnum((unsigned char)s[-1]) || s[-1] == '_');
+            bool after = isalnum((unsigned char)s[len]) || s[len] == '_';
+            named |= !before && !after;
+            s += len;
+        }
+        if (!named)
+            return q;
+    }
+    return n ? names[1] : NULL;
+}
+
+static int pc_plot_pick(const cli_sim *c, pc_args *p, const char **names, size_t ncols,
+                        cli_plot_pick *pick) {
+    qd_sim_columns(c->s, c->opts.method, names, ncols);
+    if (!p->a.plot.phase)
+        p->a.plot.phase = free_coord(c, p->section, names);
+    return cli_plot_pick_columns(&p->a.plot, names, ncols, qd_sim_ndof(c->s), pick);
 }
 
 int cli_cmd_poincare(int argc, char **argv) {
@@ -94,6 +129,13 @@ int cli_cmd_poincare(int argc, char **argv) {
         cli_diag_error("%s is missing\n%s", p.section ? "--n" : "--section", usage_text);
         rc = QD_EXIT_USAGE;
     }
+    if (rc == QD_EXIT_OK && p.a.plot.ycols) {
+        cli_diag_error("poincare --plot draws the crossings as q' against q: choose q with "
+                       "--phase, not --plot-y");
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK)
+        rc = cli_plot_check(&p.a.plot, "poincare");
     if (rc != QD_EXIT_OK)
         return rc;
     if (!p.a.has_t_end) {
@@ -113,10 +155,15 @@ int cli_cmd_poincare(int argc, char **argv) {
         cli_diag_error("cannot write '%s'", p.a.out);
         rc = QD_EXIT_USAGE;
     }
+    cli_plot_rows rows = {.ncols = ncols};
+    cli_plot_pick pick; /* --plot: its columns named before the run */
+    if (rc == QD_EXIT_OK && names && p.a.plot.file)
+        rc = pc_plot_pick(&c, &p, names, ncols, &pick);
     if (rc == QD_EXIT_OK && names) {
         qd_sim_columns(c.s, c.opts.method, names, ncols);
         pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = (size_t)p.n, .names = names,
                     .t0 = c.opts.t0, .t_end = c.opts.t_end};
+        o.plot = p.a.plot.file ? &rows : NULL;
         qd_sim_stats st;
         cli_progress_start(&o.bar, "poincare");
         qd_status s = qd_sim_run(c.s, &c.opts, sink, &o, &st, NULL);
@@ -131,10 +178,14 @@ int cli_cmd_poincare(int argc, char **argv) {
             if (o.got < o.want)
                 fprintf(stderr, "qdot: poincare: note: only %zu of %zu crossings before "
                                 "t = %g (raise --t-end)\n", o.got, o.want, st.t);
+            if (p.a.plot.file)
+                rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true,
+                                        NULL);
         }
     } else if (rc == QD_EXIT_OK) {
         rc = QD_EXIT_FAIL;
     }
+    cli_plot_rows_free(&rows);
     if (f)
         fclose(f);
     free(names);

@@ -28,7 +28,8 @@ static const char usage_text[] =
     "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf] "
     "[--out FILE] [--output \"EXPR, ...\"] [--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
-    "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N]";
+    "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
+    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q]]";
 
 typedef struct sim_out {
     FILE *csv;            /* rows as CSV, or NULL */
@@ -40,6 +41,7 @@ typedef struct sim_out {
     const char **names;   /* the CSV header, written with the first row */
     bool header;
     char *line;           /* one CSV row */
+    cli_plot_rows *plot;  /* --plot: every row kept, or NULL */
 } sim_out;
 
 static void write_header(sim_out *o) {
@@ -52,6 +54,8 @@ static void write_header(sim_out *o) {
 static int sink(void *data, int event, const double *row) {
     sim_out *o = data;
     o->rows++;
+    if (o->plot)
+        cli_plot_keep(o->plot, row);
     if (o->csv) {
         /* the header only once the run is under way: a refused run prints nothing */
         if (!o->header)
@@ -104,6 +108,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         }
         a->event_stop[a->nevents] = stop;
         a->events[a->nevents++] = v;
+    } else if ((rc = cli_plot_option(argc, argv, i, &a->plot))) {
+        return rc > 100 ? rc - 100 : QD_EXIT_OK;
     } else {
         cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
@@ -188,6 +194,28 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_end_object(j);
 }
 
+/* --plot with --format json: the file and the axes' ranges drawn, so a
+ * caller can place more on the picture. */
+static void plot_json(cli_json *j, const char *file, size_t npanels, const double *range) {
+    cli_json_key(j, "plot");
+    cli_json_begin_object(j);
+    cli_json_key(j, "file");
+    cli_json_string(j, file);
+    cli_json_key(j, "panels");
+    cli_json_begin_array(j);
+    static const char *const keys[] = {"x0", "x1", "y0", "y1"};
+    for (size_t g = 0; g < npanels; g++) {
+        cli_json_begin_object(j);
+        for (int k = 0; k < 4; k++) {
+            cli_json_key(j, keys[k]);
+            cli_json_number(j, range[4 * g + (size_t)k]);
+        }
+        cli_json_end_object(j);
+    }
+    cli_json_end_array(j);
+    cli_json_end_object(j);
+}
+
 static int run(cli_sim *c, const cli_sim_args *a) {
     size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
     const char **names = malloc((ncols + 1) * sizeof *names);
@@ -200,6 +228,18 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_FAIL;
     }
     qd_sim_columns(c->s, c->opts.method, names, ncols);
+    cli_plot_pick pick; /* --plot: its columns named before the run, which may be long */
+    cli_plot_rows rows = {.ncols = ncols};
+    if (a->plot.file &&
+        cli_plot_pick_columns(&a->plot, names, ncols, qd_sim_ndof(c->s), &pick) != QD_EXIT_OK) {
+        free(names);
+        free(final);
+        free(line);
+        return QD_EXIT_USAGE;
+    }
+    /* a step can span a swing: without --dt a plot samples the dense output */
+    if (a->plot.file && !a->has_dt && qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
+        c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     sim_out o = {.ncols = ncols, .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0,
                  .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .names = names, .line = line};
@@ -217,7 +257,11 @@ static int run(cli_sim *c, const cli_sim_args *a) {
     if (a->json)
         cli_json_begin_object(&j);
     o.csv = file ? file : a->json ? NULL : stdout;
-    if (!o.csv) {
+    o.plot = a->plot.file ? &rows : NULL;
+    bool picture_only = o.plot && o.csv == stdout; /* --plot: the picture, not CSV on stdout */
+    if (picture_only)
+        o.csv = NULL;
+    else if (!o.csv) {
         cli_json_key(&j, "columns");
         cli_json_begin_array(&j);
         for (size_t i = 0; i < ncols; i++)
@@ -250,8 +294,13 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
         impacts_summary(c, &st);
-        if (a->json) {
+        double range[4 * CLI_PLOT_MAX_PANELS];
+        if (a->plot.file)
+            rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false, range);
+        if (rc == QD_EXIT_OK && a->json) {
             summary_json(&j, c, &st, wall, names, ncols, final);
+            if (a->plot.file)
+                plot_json(&j, a->plot.file, pick.npanels, range);
             cli_json_end_object(&j);
             if (cli_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));
@@ -261,6 +310,7 @@ static int run(cli_sim *c, const cli_sim_args *a) {
             }
         }
     }
+    cli_plot_rows_free(&rows);
     qd_buf_free(&jb);
     free(names);
     free(final);
@@ -271,6 +321,8 @@ static int run(cli_sim *c, const cli_sim_args *a) {
 int cli_cmd_simulate(int argc, char **argv) {
     cli_sim_args a = {0};
     int rc = cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &a);
+    if (rc == QD_EXIT_OK)
+        rc = cli_plot_check(&a.plot, "simulate");
     if (rc == QD_EXIT_OK && !a.has_t_end) {
         cli_diag_error("--t-end is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;

@@ -9,6 +9,7 @@
 #include <stdbool.h>
 #include "qdot/sim.h"
 #include "model_file.h"
+#include "plot_cli.h"
 #include "state.h"
 
 #define QD_SIM_MAX_LIST 64
@@ -24,6 +25,7 @@ typedef struct cli_sim_args {
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
     bool no_speeds;    /* a model with speeds: the multiplier form instead */
     size_t max_steps;
+    cli_plot_args plot; /* --plot: parsed by the commands that draw (simulate, poincare) */
 } cli_sim_args;
 
 typedef struct cli_sim {

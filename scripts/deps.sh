@@ -5,6 +5,7 @@
 set -e
 what=${1:-build}
 pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev liblapack-dev libsundials-dev"
+pkgs="$pkgs libcairo2-dev"  # plots (src/plot): Cairo, and its runtime library with it
 case $what in
   test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy" ;;
 esac

@@ -27,6 +27,7 @@
 #include "speeds.h"
 #include "path.h"
 #include "scatter.h"
+#include "plot.h"
 
 #define QDOT_VERSION "0.1.0"
 

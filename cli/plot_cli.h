@@ -1,0 +1,66 @@
+/*
+ * cli/plot_cli.h - the --plot options of simulate, poincare and modes:
+ * which columns to draw, the rows kept while a run goes, and the picture
+ * made with libqdot's plots (qdot/plot.h).
+ */
+#ifndef QDOT_CLI_PLOT_CLI_H
+#define QDOT_CLI_PLOT_CLI_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "qdot/qdot.h"
+
+typedef struct cli_plot_args {
+    const char *file;   /* --plot FILE.png|.svg|.pdf */
+    const char *ycols;  /* --plot-y "NAME, NAME; NAME": columns against t (energy_error
+                         * too), a panel for each group between semicolons */
+    const char *phase;  /* --phase Q: Q' against Q */
+} cli_plot_args;
+
+/* One --plot option at argv[*i]: 1 taken, 0 not one, or an exit status +
+ * 100 (a repeated option). */
+int cli_plot_option(int argc, char **argv, int *i, cli_plot_args *a);
+
+/* The options together, before any work: --plot-y or --phase without
+ * --plot, both at once, an unknown extension.  Exit status. */
+int cli_plot_check(const cli_plot_args *a, const char *cmd);
+
+/* The rows of a run (every column), as the sink receives them. */
+typedef struct cli_plot_rows {
+    size_t ncols, n, cap;
+    double *v;   /* n rows of ncols */
+    bool failed; /* out of memory */
+} cli_plot_rows;
+
+void cli_plot_keep(cli_plot_rows *r, const double *row);
+void cli_plot_rows_free(cli_plot_rows *r);
+
+/* Which columns the plot of a run draws (x and each y), checked against
+ * the run's column names (names[0] is t, the coordinates are 1..ndof):
+ * exit status 2 with a message for a name that is not a column. */
+typedef struct cli_plot_pick {
+    bool phase;            /* x = ys[0]'s coordinate, y = its velocity */
+    size_t x;              /* column of x (0: t) */
+    size_t ny;
+    size_t y[16];          /* columns of the y series */
+    size_t panel[16];      /* the panel of each */
+    size_t npanels;
+    bool energy_error;     /* ys[k] == ncols: E(t) - E(0) */
+    size_t energy;         /* the energy column */
+} cli_plot_pick;
+
+int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size_t ncols,
+                          size_t ndof, cli_plot_pick *pk);
+
+/* The most panels --plot-y makes (one a group). */
+#define CLI_PLOT_MAX_PANELS 6
+
+/* Draw the rows picked into a->file; title is the model file's name.
+ * range (may be NULL) gets each panel's axes' ranges drawn: x0, x1, y0,
+ * y1, 4 * pk->npanels numbers.  Exit
+ * status (the library's message printed on failure). */
+int cli_plot_write_run(qd_ctx *ctx, const cli_plot_args *a, const cli_plot_pick *pk,
+                       const char *const *names, const cli_plot_rows *r, const char *title,
+                       bool points, double *range);
+
+#endif

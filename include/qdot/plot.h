@@ -1,0 +1,108 @@
+/*
+ * qdot/plot.h - line and scatter plots drawn with Cairo into PNG, SVG or PDF.
+ *
+ * A qd_plot holds series of (x, y) points (copied), a title and axis
+ * labels, in one panel or a grid of panels (qd_plot_panels) that share the
+ * title, each with its own axes, labels and legend.  qd_plot_write lays it out and draws it: axes framing the data,
+ * ticks at 1, 2 or 5 times a power of ten (qd_plot_nice_ticks), tick
+ * labels, the axis labels, a legend in a strip above the plot area (so it
+ * never hides data) and the title; the format is chosen by the file's
+ * extension (.png, .svg, .pdf).  Defaults: 800 x 500 (pixels for PNG,
+ * points for SVG and PDF), antialiased lines 2 px wide, series coloured from
+ * a fixed palette of distinct colours in the order added to their panel.
+ *
+ * The layout is deterministic: after qd_plot_layout (which qd_plot_write
+ * calls) qd_plot_to_pixel maps data to the very pixel the series was drawn
+ * through, so a caller (a test) can look for a curve where the data puts
+ * it.  Failures return a status with the message in the context: an empty
+ * plot or series, non-finite numbers (QD_ERR_ARG), an unknown extension
+ * (QD_ERR_ARG), a file that cannot be written (QD_ERR_ARG, naming it),
+ * Cairo failing (QD_ERR_NUMERIC).
+ */
+#ifndef QDOT_PLOT_H
+#define QDOT_PLOT_H
+
+#include <stddef.h>
+#include "expr.h"
+#include "status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qd_plot qd_plot;
+
+typedef enum qd_plot_style {
+    QD_PLOT_LINE,   /* points joined in order: a time series, a phase curve */
+    QD_PLOT_POINTS, /* dots: a Poincare section */
+    QD_PLOT_LINE_POINTS /* a line with a dot at each point: particles of a mode shape */
+} qd_plot_style;
+
+typedef enum qd_plot_format { QD_PLOT_PNG, QD_PLOT_SVG, QD_PLOT_PDF } qd_plot_format;
+
+/* The format named by path's extension (case-insensitive); QD_ERR_ARG with
+ * a message for any other. */
+QD_API qd_status qd_plot_format_of(qd_ctx *ctx, const char *path, qd_plot_format *out);
+
+/* width, height 0 give 800 x 500; otherwise each at least 200 and at most
+ * 10000.  NULL on failure, reason in ctx. */
+QD_API qd_plot *qd_plot_new(qd_ctx *ctx, int width, int height);
+QD_API void qd_plot_free(qd_plot *p); /* NULL is fine */
+
+/* Divide the plot into rows x cols panels (1 to 8 each), filled row by
+ * row; before any series is added.  The current panel is then 0. */
+QD_API qd_status qd_plot_panels(qd_plot *p, size_t rows, size_t cols);
+QD_API size_t qd_plot_npanels(const qd_plot *p);
+/* The panel that axis labels and series go to from now on. */
+QD_API qd_status qd_plot_select(qd_plot *p, size_t panel);
+
+/* Texts, copied; NULL or "" for none.  The title is the plot's; the axis
+ * labels the current panel's.  Put the unit in the label: "t (s)". */
+QD_API qd_status qd_plot_set_title(qd_plot *p, const char *title);
+QD_API qd_status qd_plot_set_xlabel(qd_plot *p, const char *label);
+QD_API qd_status qd_plot_set_ylabel(qd_plot *p, const char *label);
+
+/* The current panel draws a unit as long along y as along x (a
+ * configuration in the plane: a circle stays round); the shorter range is
+ * widened about its middle. */
+QD_API qd_status qd_plot_set_equal_axes(qd_plot *p, bool equal);
+
+/* A series of n >= 1 finite points in the current panel, copied; label
+ * (may be NULL) goes in its legend.  Returns its index (counted over the
+ * whole plot) through *index (may be NULL). */
+QD_API qd_status qd_plot_add(qd_plot *p, const char *label, qd_plot_style style, size_t n,
+                             const double *x, const double *y, size_t *index);
+QD_API size_t qd_plot_nseries(const qd_plot *p);
+
+/* Series i's colour as 0xRRGGBB: the palette's k-th (cycling) for the k-th
+ * series of its panel. */
+QD_API unsigned qd_plot_color(const qd_plot *p, size_t i);
+
+/* Fix the axes' ranges and the plot area.  A range is the data's, padded
+ * by 5% each side (except x when every series is a line whose x never
+ * decreases: a time axis is drawn exactly), then widened to the ticks' span
+ * where that is at most 10% more.  QD_ERR_ARG for a plot without series. */
+QD_API qd_status qd_plot_layout(qd_plot *p);
+
+/* Where data (x, y) of a panel lands, in pixels from the image's top-left
+ * corner (after qd_plot_layout; false before, or for no such panel).  The
+ * panel's axes' ranges, likewise. */
+QD_API bool qd_plot_to_pixel(const qd_plot *p, size_t panel, double x, double y, double *px,
+                             double *py);
+QD_API bool qd_plot_ranges(const qd_plot *p, size_t panel, double *x0, double *x1, double *y0,
+                           double *y1);
+
+/* Lay out and draw into path, in the format of its extension. */
+QD_API qd_status qd_plot_write(qd_plot *p, const char *path);
+
+/* Ticks for [lo, hi]: a step of 1, 2 or 5 times a power of ten giving at
+ * most max_ticks (>= 2) ticks inside the range and as many as that allows;
+ * *first is the smallest multiple of the step >= lo.  Returns the count (0
+ * when lo >= hi or either is not finite). */
+QD_API size_t qd_plot_nice_ticks(double lo, double hi, size_t max_ticks, double *step,
+                                 double *first);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,59 @@
+/*
+ * src/plot/plot_priv.h - what the plot's data and layout (plot.c) share
+ * with its drawing (draw.c).
+ */
+#ifndef QD_PLOT_PRIV_H
+#define QD_PLOT_PRIV_H
+
+#include <stdbool.h>
+#include "qdot/plot.h"
+
+typedef struct qd__plot_series {
+    char *label;       /* "" when none */
+    qd_plot_style style;
+    size_t panel;
+    size_t nth;        /* its place in its panel: the palette's index */
+    size_t n;
+    double *x, *y;
+} qd__plot_series;
+
+/* A panel: its labels, and (after qd_plot_layout) its plot area and what
+ * maps data onto it. */
+typedef struct qd__plot_panel {
+    char *xlabel, *ylabel;
+    size_t nseries;
+    bool equal;                        /* one data unit is as long on both axes */
+    double left, top, width, height;   /* the plot area, in pixels */
+    double x0, x1, y0, y1;             /* the data range it shows */
+    double legend_top;                 /* the legend strip's top */
+    size_t legend_rows;
+} qd__plot_panel;
+
+struct qd_plot {
+    qd_ctx *ctx;
+    int width, height;
+    char *title;
+    qd__plot_panel *panels;
+    size_t rows, cols, cur;
+    qd__plot_series *series;
+    size_t nseries, cap;
+    bool laid_out;
+};
+
+/* Sizes of the layout, in pixels (points for SVG and PDF). */
+#define QD__PLOT_FONT "sans-serif"
+#define QD__PLOT_TICK_FONT 12.0
+#define QD__PLOT_LABEL_FONT 14.0
+#define QD__PLOT_TITLE_FONT 16.0
+#define QD__PLOT_LEGEND_ROW 20.0
+#define QD__PLOT_SWATCH 24.0
+
+/* Width of text in the legend's font, for the layout (draw.c). */
+double qd__plot_text_width(const char *text, double size);
+
+/* The legend of panel k laid left to right in rows of at most width:
+ * row[i] and x offset xoff[i] of series i (either may be NULL); returns the
+ * row count (0 without labels). */
+size_t qd__plot_legend_rows(const qd_plot *p, size_t k, double width, size_t *row, double *xoff);
+
+#endif
