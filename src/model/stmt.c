@@ -72,6 +72,8 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
         kind = "momentum";
     if (!kind && qd__mdl_find_speed(m, name, strlen(name)) >= 0)
         kind = "speed";
+    if (!kind && qd__mdl_find_input(m, name, strlen(name)))
+        kind = "input";
     if (!kind && m->indep && !strcmp(name, m->indep))
         kind = "independent variable";
     qd_func f;
@@ -609,6 +611,7 @@ static const struct stmt_kw {
     {"independent", qd__mdl_stmt_independent, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
+    {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -696,6 +699,6 @@ bool qd__mdl_finish(parser *p) {
     }
     if (!m->L)
         return qd__mdl_perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
-    return qd__mdl_apply_isoperimetric(p);
+    return qd__mdl_apply_isoperimetric(p) && qd__mdl_check_inputs(p);
 }
 
