@@ -161,13 +161,17 @@ static void pbh(const qd_statespace *s, eigwork *w, double *re, double *im) {
     }
 }
 
-static const eigwork *sort_w;
+/* An eigenvalue and its place in dgeev's order, for sorting. */
+typedef struct eig_at {
+    double re, im;
+    size_t idx;
+} eig_at;
+
 static int by_re_desc(const void *pa, const void *pb) {
-    size_t a = *(const size_t *)pa, b = *(const size_t *)pb;
-    const double *wr = sort_w->wr, *wi = sort_w->wi;
-    if (wr[a] != wr[b])
-        return wr[a] > wr[b] ? -1 : 1;
-    return wi[a] > wi[b] ? -1 : wi[a] < wi[b];
+    const eig_at *a = pa, *b = pb;
+    if (a->re != b->re)
+        return a->re > b->re ? -1 : 1;
+    return a->im > b->im ? -1 : a->im < b->im;
 }
 
 /* Scale v so that its largest component is 1 (a complex division). */
@@ -186,7 +190,8 @@ static void normalise(size_t nx, double *re, double *im) {
 
 /* Sorted eigenvalues, vectors and the PBH lists into s. */
 static qd_status store(qd_ctx *ctx, qd_statespace *s, eigwork *w, double *re, double *im) {
-    size_t nx = s->nx, *ord = qd__malloc(ctx, (nx + 1) * sizeof *ord);
+    size_t nx = s->nx;
+    eig_at *ord = qd__malloc(ctx, (nx + 1) * sizeof *ord);
     s->eig_re = qd__calloc(ctx, 4 * nx + 2 * nx * nx + 1, sizeof *s->eig_re);
     s->uncontrollable = qd__calloc(ctx, 2 * nx + 1, sizeof *s->uncontrollable);
     if (!ord || !s->eig_re || !s->uncontrollable) {
@@ -198,11 +203,10 @@ static qd_status store(qd_ctx *ctx, qd_statespace *s, eigwork *w, double *re, do
     s->vec_im = s->vec_re + nx * nx;
     s->unobservable = s->uncontrollable + nx;
     for (size_t j = 0; j < nx; j++)
-        ord[j] = j;
-    sort_w = w;
+        ord[j] = (eig_at){w->wr[j], w->wi[j], j};
     qsort(ord, nx, sizeof *ord, by_re_desc);
     for (size_t j = 0; j < nx; j++) {
-        size_t o = ord[j];
+        size_t o = ord[j].idx;
         s->eig_re[j] = w->wr[o];
         s->eig_im[j] = w->wi[o];
         vec_of(w, w->vr, o, re, im);
