@@ -203,30 +203,42 @@ static bool all_zero(size_t n, const qd_expr *const *x) {
     return true;
 }
 
-/* The symbolic dq''/dz by fraction-free elimination; false (nothing
- * recorded, Asym NULL) when it grows too large or M is singular. */
-static bool expressions(qd_ctx *ctx, qd_statespace *s, const entries *E) {
+/* A failed symbolic solve: too large or singular is no error (the numbers
+ * stand alone, Asym NULL); anything else (out of memory) is. */
+static qd_status solve_status(qd_ctx *ctx, qd_status st, bool *ok) {
+    if (st == QD_OK)
+        return qd_ctx_status(ctx);
+    *ok = false;
+    if (st == QD_ERR_TOOBIG || st == QD_ERR_SINGULAR)
+        return qd_ctx_status(ctx);
+    return qd_ctx_status(ctx) ? qd_ctx_status(ctx) : st;
+}
+
+/* The symbolic dq''/dz by fraction-free elimination into the *sym arrays,
+ * which are dropped (NULL) when it grows too large. */
+static qd_status expressions(qd_ctx *ctx, qd_statespace *s, const entries *E) {
     size_t n = s->n, nz = E->nz, nx = s->nx;
     const qd_expr **acc = qd__calloc(ctx, n + 2 * n * nz + 1, sizeof *acc);
     if (!acc)
-        return false;
+        return QD_ERR_NOMEM;
     const qd_expr **R = acc + n, **X = R + n * nz;
     bool ok = true;
+    qd_status st = QD_OK;
     if (all_zero(n, E->f0))
         for (size_t j = 0; j < n; j++)
             acc[j] = qd_int(ctx, 0);
     else
-        ok = qd__solve_cols(ctx, n, E->M0, 1, E->f0, acc, QD_SS_MAX_OPS) == QD_OK;
-    for (size_t j = 0; ok && j < n; j++)
+        st = solve_status(ctx, qd__solve_cols(ctx, n, E->M0, 1, E->f0, acc, QD_SS_MAX_OPS), &ok);
+    for (size_t j = 0; st == QD_OK && ok && j < n; j++)
         for (size_t k = 0; k < nz; k++) {
             const qd_expr *r = E->Fz[j * nz + k];
             for (size_t l = 0; l < n; l++)
                 r = qd_sub(ctx, r, qd_mul(ctx, E->Mz[(j * n + l) * nz + k], acc[l]));
             R[j * nz + k] = qd_simplify(ctx, r);
         }
-    ok = ok && qd_ctx_status(ctx) == QD_OK &&
-         qd__solve_cols(ctx, n, E->M0, nz, R, X, QD_SS_MAX_OPS) == QD_OK;
-    for (size_t i = 0; ok && i < nx; i++)
+    if (st == QD_OK && ok)
+        st = solve_status(ctx, qd__solve_cols(ctx, n, E->M0, nz, R, X, QD_SS_MAX_OPS), &ok);
+    for (size_t i = 0; st == QD_OK && ok && i < nx; i++)
         for (size_t k = 0; k < nx + s->nu; k++) {
             const qd_expr *x = i < n ? qd_int(ctx, k == n + i ? 1 : 0) : X[(i - n) * nz + k];
             if (k < nx)
@@ -234,7 +246,7 @@ static bool expressions(qd_ctx *ctx, qd_statespace *s, const entries *E) {
             else
                 s->Bsym[i * s->nu + k - nx] = x;
         }
-    for (size_t i = 0; ok && i < s->ny; i++)
+    for (size_t i = 0; st == QD_OK && ok && i < s->ny; i++)
         for (size_t k = 0; k < nz; k++) {
             if (k < nx)
                 s->Csym[i * nx + k] = E->Yz[i * nz + k];
@@ -242,12 +254,13 @@ static bool expressions(qd_ctx *ctx, qd_statespace *s, const entries *E) {
                 s->Dsym[i * s->nu + k - nx] = E->Yz[i * nz + k];
         }
     qd__free(acc);
-    ok = ok && qd_ctx_status(ctx) == QD_OK;
-    if (!ok) {
+    if (st == QD_OK)
+        st = qd_ctx_status(ctx);
+    if (st != QD_OK || !ok) {
         qd__free(s->Asym);
         s->Asym = s->Bsym = s->Csym = s->Dsym = NULL;
     }
-    return ok;
+    return st;
 }
 
 /* ---- the whole ------------------------------------------------------------- */
@@ -306,7 +319,7 @@ static qd_status derive(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
     if (st == QD_OK)
         st = numbers(ctx, s, &E, v, qd0);
     if (st == QD_OK)
-        expressions(ctx, s, &E);
+        st = expressions(ctx, s, &E);
     qd__free(v);
     entries_free(&E);
     return st;

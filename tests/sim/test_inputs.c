@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include "sim_fixture.h"
+#include "util/fault.h"
 
 static const char osc[] = "coordinates x\nparameters m = 2, k = 8\ninputs F\n"
                           "T = m/2*x'^2\nV = k/2*x^2\nQ[x] = F\n";
@@ -119,11 +120,46 @@ static void test_errors(void **state) {
     sf_free(f);
 }
 
+/* Every allocation of compiling and running with a table and an expression
+ * source made to fail once: the ramp's answer or a clean QD_ERR_NOMEM. */
+static qd_status faulty_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)data;
+    long to_go = qt_fault_hold(f);
+    qd_model *m = qd_model_parse(ctx, "coordinates x\nparameters m = 2, k = 8\ninputs F, G\n"
+                                      "T = m/2*x'^2\nV = k/2*x^2\nQ[x] = F + G\n", NULL);
+    assert_non_null(m);
+    qd_eom *e = qd_eom_derive(ctx, m);
+    assert_non_null(e);
+    qd_read_opts ro = {.new_symbols = false};
+    const qd_expr *zero = qd_read(ctx, "0*x", &ro, NULL);
+    qt_fault_release(f, to_go);
+    double t[] = {0, 10}, v[] = {0, 7}, q0 = 0, qd0 = 0, last[8];
+    qd_sim *s = qd_sim_new(ctx, m, e);
+    qd_status st = s ? qd_sim_input_table(s, "F", 2, t, v) : qd_ctx_status(ctx);
+    if (st == QD_OK)
+        st = qd_sim_input_expr(s, "G", zero);
+    qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = 10, .rtol = 1e-10, .atol = 1e-12,
+                     .q0 = &q0, .qd0 = &qd0};
+    if (st == QD_OK)
+        st = qd_sim_run(s, &o, NULL, NULL, NULL, last);
+    if (st == QD_OK)
+        assert_true(fabs(last[1] - 0.7 / 8 * (10 - sin(20) / 2)) < 1e-7);
+    qd_sim_free(s);
+    qd_eom_free(e);
+    qd_model_free(m);
+    return st;
+}
+
+static void test_faults(void **state) {
+    (void)state;
+    assert_true(qt_fault_loop("simulate with inputs", faulty_body, NULL, 1).allocs > 10);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_callback_signal),   cmocka_unit_test(test_callback_feedback),
         cmocka_unit_test(test_expression_feedback), cmocka_unit_test(test_table_ramp),
-        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_errors),            cmocka_unit_test(test_faults),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
