@@ -70,6 +70,7 @@ int cli_cmd_poincare(int argc, char **argv);   /* cmd_poincare.c */
 int cli_cmd_codegen(int argc, char **argv);    /* cmd_codegen.c */
 int cli_cmd_equilibria(int argc, char **argv); /* cmd_equilibria.c */
 int cli_cmd_modes(int argc, char **argv);      /* cmd_modes.c */
+int cli_cmd_linearize(int argc, char **argv);  /* cmd_linearize.c */
 int cli_cmd_stability(int argc, char **argv);  /* cmd_stability.c */
 int cli_cmd_orbit(int argc, char **argv);      /* cmd_orbit.c */
 int cli_cmd_hj(int argc, char **argv);         /* cmd_hj.c */

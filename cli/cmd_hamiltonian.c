@@ -306,6 +306,9 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(qd_model_param(m, i)),
                       qd_expr_name(qd_model_param(m, i)));
+    for (size_t i = 0; i < qd_model_ninputs(m); i++) /* inputs print by name */
+        qd_buf_printf(b, "%s = Symbol('%s')\n", qd_expr_name(qd_model_input(m, i)),
+                      qd_expr_name(qd_model_input(m, i)));
     sympy_functions(r, b);
     sympy_list(r, b, "momenta", h->p);
     if (h->pdef[0] || !h->n)

@@ -26,7 +26,8 @@
 static const char usage_text[] =
     "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--atol TOL] "
     "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf] "
-    "[--out FILE] [--output \"EXPR, ...\"] [--event \"EXPR = 0, EXPR > 0\"]... "
+    "[--out FILE] [--output \"EXPR, ...\"] [--input \"F = EXPR\" | --input F=FILE.csv]... "
+    "[--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
     "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
     "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q]]";

@@ -612,6 +612,8 @@ static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
         cli_eom_sympy_bind(v->ctx, b, v->e->q[j], true);
     for (size_t i = 0; i < qd_model_nparams(m); i++)
         cli_eom_sympy_bind(v->ctx, b, qd_model_param(m, i), false);
+    for (size_t i = 0; i < qd_model_ninputs(m); i++) /* inputs print by name, like parameters */
+        cli_eom_sympy_bind(v->ctx, b, qd_model_input(m, i), false);
     for (size_t i = 0; i < qd_model_nisoperimetric(m); i++) { /* constants like the parameters */
         const qd_expr *lam = qd_model_isoperimetric_multiplier(m, i);
         if (qd_expr_kind(lam) == QD_SYMBOL && qd_symbol_role(lam) == QD_ROLE_PLAIN)

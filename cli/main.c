@@ -30,6 +30,8 @@ static const cli_cmd commands[] = {
     {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", cli_cmd_codegen, true},
     {"equilibria", "FILE [--near ...|--box ...]", "equilibria and their kind",
      cli_cmd_equilibria, true},
+    {"linearize", "FILE [--about ...] [--format F]", "state space x' = A x + B u, controllability",
+     cli_cmd_linearize, true},
     {"modes", "FILE [--about ...]", "small oscillations: frequencies and mode shapes",
      cli_cmd_modes, true},
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",

@@ -106,6 +106,8 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     }
     if ((v = cli_value(argc, argv, i, "--set")))
         return push(a->sets, &a->nsets, v, "--set");
+    if ((v = cli_value(argc, argv, i, "--input")))
+        return push(a->inputs, &a->ninputs, v, "--input");
     if ((v = cli_value(argc, argv, i, "--out"))) {
         a->out = v;
         return 1;
@@ -165,6 +167,13 @@ static bool speeds_multiplier(const cli_sim *c, const char *name) {
 }
 
 /* Read text[a, b) against the model: definitions substituted. */
+static bool is_input(const cli_sim *c, const qd_expr *x) {
+    for (size_t k = 0; k < qd_model_ninputs(c->mf.model); k++)
+        if (qd_model_input(c->mf.model, k) == x)
+            return true;
+    return false;
+}
+
 static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
     trim(&a, &b);
     size_t len = (size_t)(b - a);
@@ -196,7 +205,7 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
     qd_free_symbols(c->ctx, x, syms, k);
     for (size_t i = 0; x && i < k; i++) {
         if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(c, syms[i]) ||
-            is_momentum(c, syms[i]))
+            is_momentum(c, syms[i]) || is_input(c, syms[i]))
             continue;
         const qd_expr *d = definition(c, qd_expr_name(syms[i]));
         if (!d && speeds_multiplier(c, qd_expr_name(syms[i]))) {
@@ -248,6 +257,52 @@ static int add_outputs(cli_sim *c, const char *list) {
                 return cli_diag_ctx(c->ctx);
         }
         p = *end ? end + 1 : end;
+    }
+    return QD_EXIT_OK;
+}
+
+/* The model's `outputs` are columns too, before those of --output. */
+static int model_outputs(cli_sim *c) {
+    for (size_t i = 0; i < qd_model_noutputs(c->mf.model); i++)
+        if (qd_sim_add_output(c->s, qd_model_output_name(c->mf.model, i),
+                              qd_model_output(c->mf.model, i)) != QD_OK)
+            return cli_diag_ctx(c->ctx);
+    return QD_EXIT_OK;
+}
+
+/* The NAME of "NAME = ..." into name (empty when there is no '='). */
+static const char *input_name(const char *text, char *name, size_t cap) {
+    const char *eq = strchr(text, '='), *a = text, *b = eq ? eq : text;
+    trim(&a, &b);
+    snprintf(name, cap, "%.*s", (int)((size_t)(b - a) < cap ? b - a : (long)cap - 1), a);
+    return eq;
+}
+
+/* --input "F = EXPR" (EXPR read like --output: t, the state, parameters and
+ * definitions) or --input F=FILE.csv (a value ending in .csv): list[i]. */
+int cli_sim_input(cli_sim *c, const char *const *list, size_t i) {
+    char name[128], other[128];
+    const char *eq = input_name(list[i], name, sizeof name);
+    if (!eq || !name[0]) {
+        cli_diag_error("--input: expected \"NAME = EXPR\" or NAME=FILE.csv, not '%s'", list[i]);
+        return QD_EXIT_USAGE;
+    }
+    for (size_t k = 0; k < i; k++)
+        if (input_name(list[k], other, sizeof other) && !strcmp(name, other)) {
+            cli_diag_error("--input: %s is given twice", name);
+            return QD_EXIT_USAGE;
+        }
+    const char *va = eq + 1, *vb = eq + strlen(eq);
+    trim(&va, &vb);
+    size_t vlen = (size_t)(vb - va);
+    if (vlen > 4 && !strncmp(vb - 4, ".csv", 4))
+        return cli_sim_input_csv(c, name, va, vlen);
+    const qd_expr *x = read_expr(c, "--input", va, vb);
+    if (!x)
+        return QD_EXIT_USAGE;
+    if (qd_sim_input_expr(c->s, name, x) != QD_OK) {
+        cli_diag_error("--input: %s", qd_ctx_message(c->ctx));
+        return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
 }
@@ -547,12 +602,20 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     rc = initial_values(c, a);
     if (rc == QD_EXIT_OK)
         rc = check_gaps(c);
+    if (rc == QD_EXIT_OK)
+        rc = model_outputs(c);
     if (rc == QD_EXIT_OK && a->output)
         rc = add_outputs(c, a->output);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < a->ninputs; i++)
+        rc = cli_sim_input(c, a->inputs, i);
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->nevents; i++)
         rc = add_event(c, a->events[i], a->event_stop[i]);
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
+    if (rc == QD_EXIT_OK && qd_sim_inputs_ready(c->s, c->opts.t0, c->opts.t_end) != QD_OK) {
+        cli_diag_error("--input: %s", qd_ctx_message(c->ctx));
+        rc = QD_EXIT_USAGE;
+    }
     if (rc == QD_EXIT_OK && a->native && c->se)
         fprintf(stderr, "qdot: note: --native takes the multiplier form (--no-speeds); using "
                         "the compiled programs\n");

@@ -21,6 +21,8 @@ typedef struct cli_sim_args {
     const char *events[QD_SIM_MAX_LIST];
     bool event_stop[QD_SIM_MAX_LIST];
     size_t nevents;
+    const char *inputs[QD_SIM_MAX_LIST]; /* --input "F = EXPR" or F=FILE.csv */
+    size_t ninputs;
     double t_end, dt, rtol, atol;
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
     bool no_speeds;    /* a model with speeds: the multiplier form instead */
@@ -55,6 +57,13 @@ void cli_sim_free(cli_sim *c);
 /* The constraints of the equations simulated (multiplier form or speeds). */
 size_t cli_sim_ncon(const cli_sim *c);
 const qd_con *cli_sim_con(const cli_sim *c, size_t k);
+
+/* --input list[i] given to the simulation (duplicates of list[0..i)
+ * refused); an exit status. */
+int cli_sim_input(cli_sim *c, const char *const *list, size_t i);
+/* --input NAME=FILE.csv: the file's rows "t,value" (a first line that is
+ * not numbers is a header) as a table; an exit status (sim_input_cli.c). */
+int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len);
 
 /* Print a failed run's message; exit status 1. */
 int cli_sim_fail(cli_sim *c, qd_status st);

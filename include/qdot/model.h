@@ -251,6 +251,21 @@ QD_API const qd_expr *qd_model_speed_definition(const qd_model *m, size_t i);
 QD_API const qd_expr *qd_model_speed_initial(const qd_model *m, size_t i);
 QD_API const qd_expr *qd_model_speed_initial_definition(const qd_model *m, size_t i);
 
+/* Inputs (`inputs F, tau`), in the order declared: plain symbols named as
+ * written, kept by name in every derivation and given a value only by the
+ * numbers (qd_sim's input sources, qd_linearize's operating point).  They
+ * may stand in forces, torques, Q[q], V, the dissipation function and the
+ * velocity-free part of L; in the velocity-dependent part of L (where
+ * d/dt(dL/dq') would need their rate) or in a constraint they are a parse
+ * error.  NULL out of range. */
+QD_API size_t qd_model_ninputs(const qd_model *m);
+QD_API const qd_expr *qd_model_input(const qd_model *m, size_t i);
+/* Outputs (`outputs y1 = EXPR, ...`), in the order given: expressions in
+ * q, q', t, the parameters and the inputs.  NULL out of range. */
+QD_API size_t qd_model_noutputs(const qd_model *m);
+QD_API const char *qd_model_output_name(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_output(const qd_model *m, size_t i);
+
 /* Initial values: the value of a coordinate (order 0) or velocity (order 1)
  * named in `initial`, or NULL. */
 QD_API const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order);

@@ -123,6 +123,35 @@ QD_API void qd_sim_free(qd_sim *s);
  * qd_sim_run. */
 QD_API qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x);
 
+/* Inputs (`inputs F, ...` in the model; Lagrangian form only: a model in
+ * speeds or given by H with inputs is refused by its qd_sim_new_*).  Each
+ * input the equations (or an output) use needs one source before the
+ * first qd_sim_run, else the run is QD_ERR_ARG ("input F is used but not
+ * supplied"); giving another replaces it.  QD_ERR_ARG for a name that is
+ * not an input of the model, or after qd_sim_compile.
+ *
+ *   expression  u = x(q, q', t, parameters): a feedback law or a signal
+ *               (x may not use the inputs); compiled with the system.
+ *   table       n >= 2 samples (t[i], v[i]), t strictly increasing,
+ *               interpolated linearly between them (copied).  The run's
+ *               [t0, t_end] must lie inside [t[0], t[n-1]]: QD_ERR_ARG
+ *               otherwise, from qd_sim_run.
+ *   callback    fn(data, t, x) with x = (q, q') (2n numbers, the
+ *               coordinates then the velocities, in the equations' order);
+ *               called at every evaluation of the right-hand side (so it
+ *               must be a function of its arguments, and thread-safe when
+ *               runs share the qd_sim). */
+typedef double (*qd_sim_input_fn)(void *data, double t, const double *x);
+/* The check qd_sim_run makes before a run from t0 to t_end: every input
+ * used has a source and every table covers the span; QD_ERR_ARG naming the
+ * input otherwise (recorded in s's context). */
+QD_API qd_status qd_sim_inputs_ready(qd_sim *s, double t0, double t_end);
+QD_API qd_status qd_sim_input_expr(qd_sim *s, const char *name, const qd_expr *x);
+QD_API qd_status qd_sim_input_table(qd_sim *s, const char *name, size_t n, const double *t,
+                                    const double *v);
+QD_API qd_status qd_sim_input_callback(qd_sim *s, const char *name, qd_sim_input_fn fn,
+                                       void *data);
+
 /* An event: the times where g(q, q', t) crosses zero (in either direction)
  * and every guard expression is > 0 there, located to round-off (dense
  * output, then the method's own step to the root).  stop: end the run at

@@ -112,8 +112,8 @@ const char **qd__mdl_known_names(const parser *p, size_t *count) {
         "cone", "box", "omega", "omega_space", "point", "rotation", "position",
     };
     size_t nextra = sizeof extra / sizeof extra[0];
-    size_t cap = 2 * m->ncoords + m->nparams + m->ndefs + m->nspeeds + m->nfuncs + QD_FUNC_COUNT +
-                 nextra + 2,
+    size_t cap = 2 * m->ncoords + m->nparams + m->ndefs + m->nspeeds + m->nfuncs + m->ninputs +
+                 QD_FUNC_COUNT + nextra + 2,
            n = 0;
     const char **v = qd__malloc(p->ctx, cap * sizeof *v);
     if (!v) {
@@ -134,6 +134,8 @@ const char **qd__mdl_known_names(const parser *p, size_t *count) {
         v[n++] = qd_expr_name(m->speeds[i].sym);
     for (size_t i = 0; i < m->nfuncs; i++)
         v[n++] = m->funcs[i];
+    for (size_t i = 0; i < m->ninputs; i++)
+        v[n++] = qd_expr_name(m->inputs[i]);
     if (m->indep)
         v[n++] = m->indep;
     for (int f = 0; f < QD_FUNC_COUNT; f++)

@@ -243,6 +243,11 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
             p->met_fixed = p->met_fixed || m->pfixed[i];
             return true;
         }
+    const qd_expr *in = qd__mdl_find_input(m, s + off, n);
+    if (in) {
+        *out = scalar(in, off, n);
+        return true;
+    }
     const qd_expr *mom = qd__mdl_find_momentum(m, s + off, n);
     if (mom && !p->momenta_ok)
         return qd__mdl_perr(p, off, n, "use the momenta in H = ... or in an integral; elsewhere write "

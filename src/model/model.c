@@ -93,6 +93,7 @@ void qd_model_free(qd_model *m) {
     qd__mdl_free_sudden(m->prescribed, 0, m->nprescribed);
     qd__free(m->prescribed);
     qd__free(m->speeds);
+    qd__mdl_free_io(m);
     qd__free(m->parts);
     qd__free(m->Qhat);
     qd__free(m->mom);

@@ -164,6 +164,11 @@ struct qd_model {
     char **added;              /* owned copies of the statements added after the parse */
     size_t nadded;
     char *indep;               /* `independent x`: the name the time symbol goes by, or NULL */
+    const qd_expr **inputs;    /* `inputs F, ...`: plain symbols (io.c) */
+    size_t ninputs;
+    const char **out_names;    /* `outputs y = EXPR, ...`: owned copies (io.c) */
+    const qd_expr **outs;
+    size_t nouts;
     isoper *isos;              /* isoperimetric constraints (variational.c) */
     size_t nisos;
     size_t nisos_applied;      /* how many of them L already holds */
@@ -249,6 +254,13 @@ bool qd__mdl_stmt_prescribe(parser *p);
 long qd__mdl_find_sudden(const qd_model *m, const char *src, size_t off, size_t n);
 void qd__mdl_free_sudden(sudden *s, size_t from, size_t n);
 void qd__mdl_free_blows(blow *b, size_t from, size_t n);
+
+/* io.c: `inputs NAME, ...` and `outputs NAME = EXPR, ...` */
+bool qd__mdl_stmt_inputs(parser *p);
+bool qd__mdl_stmt_outputs(parser *p);
+const qd_expr *qd__mdl_find_input(const qd_model *m, const char *name, size_t n);
+bool qd__mdl_check_inputs(parser *p);      /* after the last line */
+void qd__mdl_free_io(qd_model *m);
 
 /* speeds.c: `speeds NAME = EXPR, ...` */
 bool qd__mdl_stmt_speeds(parser *p);

@@ -72,6 +72,8 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
         kind = "momentum";
     if (!kind && qd__mdl_find_speed(m, name, strlen(name)) >= 0)
         kind = "speed";
+    if (!kind && qd__mdl_find_input(m, name, strlen(name)))
+        kind = "input";
     if (!kind && m->indep && !strcmp(name, m->indep))
         kind = "independent variable";
     qd_func f;
@@ -607,6 +609,7 @@ static const struct stmt_kw {
     {"impulse", qd__mdl_stmt_impulse, true},    {"impact", qd__mdl_stmt_impact, true},
     {"prescribe", qd__mdl_stmt_prescribe, true}, {"speeds", qd__mdl_stmt_speeds, true},
     {"independent", qd__mdl_stmt_independent, true},
+    {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
 };
@@ -623,10 +626,13 @@ static bool unknown_statement(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {
         /* spaces, not commas: with the circuit statements the whole list
-         * fills the 255 bytes of a diagnostic's hint */
+         * fills the 255 bytes of a diagnostic's hint, so inputs and outputs
+         * are left to "did you mean" above */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
-            n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
+            if (statements[i].parse != qd__mdl_stmt_inputs &&
+                statements[i].parse != qd__mdl_stmt_outputs)
+                n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
             snprintf(hint + n, sizeof hint - n, ") or NAME = ...");
     }
@@ -696,6 +702,6 @@ bool qd__mdl_finish(parser *p) {
     }
     if (!m->L)
         return qd__mdl_perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
-    return qd__mdl_apply_isoperimetric(p);
+    return qd__mdl_apply_isoperimetric(p) && qd__mdl_check_inputs(p);
 }
 

@@ -21,6 +21,11 @@
 
 static qd_status inputs(qd_sim *s) {
     size_t n = s->n;
+    if (qd_model_ninputs(s->model)) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "a model given by H with inputs is not simulated: "
+                     "inputs are simulated in the Lagrangian form (T and V, or L)");
+        return QD_ERR_ARG;
+    }
     s->np = qd_model_nparams(s->model);
     s->nin = 2 * n + 1 + s->np;
     s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);

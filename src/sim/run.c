@@ -655,9 +655,11 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
     qd_sim w = *s;
     qd_status st = qd__sim_ws_alloc(&w, ctx);
     if (st == QD_OK)
-        st = run(&w, o, sink, data, stats, final);
+        st = qd__sim_uin_check(&w, o->t0, o->t_end);
     else
         qd_ctx_error(ctx, st, "out of memory starting the simulation");
+    if (st == QD_OK)
+        st = run(&w, o, sink, data, stats, final);
     for (size_t c = 0; con_err && w.con_err && c < s->m; c++)
         con_err[c] = w.con_err[c];
     qd__sim_ws_free(&w);

@@ -76,6 +76,13 @@ struct qd_sim {
     const qd_expr **imp_gap;
     double *imp_E;  /* nimp restitutions, in [0, 1] */
     qd_prog *imp;
+    /* the model's inputs (input.c): values in the slots uin_off.. of the
+     * programs' inputs, filled from their sources before every evaluation;
+     * uprog computes the expression sources (0 for the others) */
+    size_t nuin, uin_off;
+    struct qd__input *uin;
+    qd_prog *uprog;
+    bool uin_ready;
     /* ---- a run's own ---- */
     qd_ctx *ctx;
     double *in;
@@ -83,6 +90,7 @@ struct qd_sim {
     double *acc_w, *con_w, *mom_w, *force_w, *aux_w, *en_w;
     double *imp_out, *imp_w;
     double *kin_out, *kin_w, *udef_out, *udef_w;
+    double *uprog_out, *uprog_w;
     /* scratch for the linear solves */
     double *K, *rhs, *tmp;
     size_t *pc;
@@ -99,6 +107,20 @@ static inline const double *qd__second(const qd_sim *s, const double *y, const d
 
 /* The speeds' block of the inputs (a system in speeds). */
 static inline double *qd__in_speeds(qd_sim *s) { return s->in + 2 * s->n + 1 + s->np; }
+
+/* ---- the model's inputs (input.c) ---------------------------------------- */
+
+/* The input slots: nuin from the model, their symbols at in_syms[uin_off..)
+ * (in_syms must have room); QD_ERR_ARG for a system in speeds or from H. */
+qd_status qd__sim_uin_init(qd_sim *s);
+void qd__sim_uin_free(qd_sim *s);
+/* Compile the expression sources (qd_sim_compile). */
+qd_status qd__sim_uin_compile(qd_sim *s);
+/* Before a run from t0 to t1: every input the equations use has a source,
+ * and every table covers [t0, t1]; QD_ERR_ARG naming the input. */
+qd_status qd__sim_uin_check(qd_sim *s, double t0, double t1);
+/* The inputs' values at t and the state already in s->in. */
+void qd__sim_uin_eval(qd_sim *s, double t);
 
 /* Compile outs into a program over s's inputs (angle sums expanded as the
  * generated C does); *count = nout.  NULL on failure, reason in ctx. */

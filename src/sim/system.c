@@ -59,7 +59,9 @@ qd_status qd__sim_inputs(qd_sim *s, const qd_expr *const *q, const qd_expr *cons
                          size_t ntail) {
     size_t n = s->n;
     s->np = qd_model_nparams(s->model);
-    s->nin = 2 * n + 1 + s->np + ntail;
+    s->nuin = qd_model_ninputs(s->model);
+    s->uin_off = 2 * n + 1 + s->np + ntail;
+    s->nin = s->uin_off + s->nuin;
     s->in_syms = qd__malloc(s->ctx, s->nin * sizeof *s->in_syms);
     s->par = qd__calloc(s->ctx, s->np + 1, sizeof *s->par);
     if (!s->in_syms || !s->par)
@@ -79,7 +81,7 @@ qd_status qd__sim_inputs(qd_sim *s, const qd_expr *const *q, const qd_expr *cons
             return st;
         }
     }
-    return QD_OK;
+    return qd__sim_uin_init(s);
 }
 
 static qd_status setup_inputs(qd_sim *s) {
@@ -158,7 +160,8 @@ static qd_status analyse(qd_sim *s) {
         zeros[j] = qd_int(ctx, 0);
     const qd_expr *h = qd_neg(ctx, L);
     bool forces = false;
-    s->canonical = s->m == 0 && e->nelim == 0;
+    /* an input is a force from outside: no canonical form, nothing conserved */
+    s->canonical = s->m == 0 && e->nelim == 0 && s->nuin == 0;
     s->separable = s->canonical;
     for (size_t j = 0; j < n; j++) {
         const qd_expr *pdef = qd_diff(ctx, L, e->qd[j]);
@@ -185,7 +188,7 @@ static qd_status analyse(qd_sim *s) {
     s->h_expr = qd_simplify(ctx, h);
     s->has_T = e->T2 != NULL;
     s->T_expr = s->has_T ? qd_add(ctx, qd_add(ctx, e->T2, e->T1), e->T0) : qd_int(ctx, 0);
-    s->conservative = !qd_has(L, t) && !forces && !(D && !qd_is_zero(D));
+    s->conservative = !qd_has(L, t) && !forces && !(D && !qd_is_zero(D)) && s->nuin == 0;
     qd__free(zeros);
     return qd_ctx_status(ctx) == QD_OK && s->h_expr ? QD_OK : qd_ctx_status(ctx);
 }
@@ -302,6 +305,7 @@ void qd_sim_free(qd_sim *s) {
     qd_prog_free(s->en);
     qd_prog_free(s->kin);
     qd_prog_free(s->udef);
+    qd__sim_uin_free(s);
     qd__free(s->in_syms);
     qd__free(s->par);
     qd__free(s->b_expr);
@@ -437,7 +441,10 @@ qd_status qd__aux_compile(qd_sim *s) {
     return s->aux_ready ? QD_OK : qd_ctx_status(s->ctx);
 }
 
-qd_status qd_sim_compile(qd_sim *s) { return qd__aux_compile(s); }
+qd_status qd_sim_compile(qd_sim *s) {
+    qd_status st = qd__sim_uin_compile(s);
+    return st == QD_OK ? qd__aux_compile(s) : st;
+}
 
 bool qd_sim_compiled(const qd_sim *s) { return s->aux_ready; }
 
@@ -472,6 +479,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     ok = prog_ws(ctx, w->imp, w->imp_n, &w->imp_out, &w->imp_w) && ok;
     ok = prog_ws(ctx, w->kin, w->kin_n, &w->kin_out, &w->kin_w) && ok;
     ok = prog_ws(ctx, w->udef, w->udef_n, &w->udef_out, &w->udef_w) && ok;
+    ok = prog_ws(ctx, w->uprog, w->nuin, &w->uprog_out, &w->uprog_w) && ok;
     if (!ok || !w->in || !w->K || !w->pc || !w->con_err)
         return QD_ERR_NOMEM;
     w->rhs = w->K + N * N;
@@ -486,7 +494,7 @@ void qd__sim_ws_free(qd_sim *w) {
     double *bufs[] = {w->in, w->K, w->con_err, w->acc_out, w->acc_w, w->con_out, w->con_w,
                       w->mom_out, w->mom_w, w->force_out, w->force_w, w->aux_out, w->aux_w,
                       w->en_out, w->en_w, w->imp_out, w->imp_w, w->kin_out, w->kin_w,
-                      w->udef_out, w->udef_w};
+                      w->udef_out, w->udef_w, w->uprog_out, w->uprog_w};
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         qd__free(bufs[i]);
     qd__free(w->pc);
@@ -519,6 +527,8 @@ static void set_state(qd_sim *s, double t, const double *q, const double *qd) {
     for (size_t i = 0; qd && i < n; i++)
         s->in[n + i] = qd[i];
     s->in[2 * n] = t;
+    if (s->nuin)
+        qd__sim_uin_eval(s, t);
 }
 
 static bool saddle_solve(qd_sim *s, double t, const double *y);

@@ -378,11 +378,13 @@ static size_t squares(const qd_expr *const *fs, size_t nf, const angle *g, size_
         size_t j = 0;
         while (j < ng && g[j].s != base && g[j].c != base)
             j++;
+        if (j == ng)
+            continue; /* an angle with no square anywhere: g[j] would be past the end */
         size_t seen = 0;
         while (seen < ne && e[seen].keep != g[j].s && e[seen].keep != g[j].c)
             seen++;
         long a, b;
-        if (j < ng && seen == ne && exponents(fs, nf, &g[j], &a, &b) &&
+        if (seen == ne && exponents(fs, nf, &g[j], &a, &b) &&
             (w == ELIM_COS ? b : a) >= 2)
             e[ne++] = w == ELIM_COS ? (elim){g[j].s, g[j].c, a, b / 2, b % 2}
                                     : (elim){g[j].c, g[j].s, b, a / 2, a % 2};

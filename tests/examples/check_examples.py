@@ -708,6 +708,17 @@ def _(q, v, t, p):
     return [p['g'] / p['l'] * sin(th) - p['k'] / p['m'] * sin(th) * cos(th)]
 
 
+@example('cart_pendulum', ['x', 'th'])
+def _(q, v, t, p):
+    # the inverted pendulum on a cart (issue 23), F = 0 as `eom --at` leaves an input unset:
+    # the n = 1 case of SymPy's n_link_pendulum_on_cart, whose mass matrix and forcing are
+    # [[M + m, -m l cos th], [-m l cos th, m l^2]] and [F - m l th'^2 sin th, m g l sin th]
+    th, thd = q['th'], v['th']
+    M, m, l, g = p['M'], p['m'], p['l'], p['g']
+    A = [[M + m, -m * l * cos(th)], [-m * l * cos(th), m * l * l]]
+    return solve(A, [-m * l * thd**2 * sin(th), m * g * l * sin(th)])
+
+
 @example('ring_three_masses', ['x1', 'y1', 'x2', 'y2', 'x3', 'y3'])
 def _(q, v, t, p):
     # Desloge ch. 66: each spring pulls its ends together with k (d - a) along the line

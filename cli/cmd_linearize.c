@@ -1,0 +1,422 @@
+/*
+ * cli/cmd_linearize.c - `qdot linearize FILE --about "q=..., q'=..., F=..."`:
+ * the state-space form x' = A x + B u, y = C x + D u about an operating
+ * point (qd_linearize), the eigenvalues of A, and controllability and
+ * observability.  Formats: text, json, c, sympy, octave.
+ */
+#include "cli.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "json.h"
+#include "model_cli.h"
+#include "qdot/statespace.h"
+
+#define LIN_MAX_SETS 64
+
+enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
+static const char *const formats[] = {"text", "json", "c", "sympy", "octave", NULL};
+
+typedef struct lin_args {
+    const char *file, *about;
+    const char *sets[LIN_MAX_SETS];
+    size_t nsets;
+    int format;
+} lin_args;
+
+static const char usage_text[] =
+    "usage: qdot linearize FILE [--about \"q=VALUE, q'=VALUE, F=VALUE, ...\"] "
+    "[--set NAME=VALUE]... [--format text|json|c|sympy|octave]";
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    lin_args *a = data;
+    const char *v;
+    if ((v = cli_value(argc, argv, i, "--format")))
+        return cli_choice("--format", v, formats, &a->format);
+    if ((v = cli_value(argc, argv, i, "--about")))
+        return cli_once("--about", &a->about, v);
+    if ((v = cli_value(argc, argv, i, "--set")))
+        return cli_push("--set", a->sets, &a->nsets, LIN_MAX_SETS, v);
+    return cli_bad_option(argv[*i], usage_text);
+}
+
+/* ---- --about ------------------------------------------------------------------ */
+
+typedef struct point {
+    size_t n, cap;
+    const qd_expr **syms, **vals;
+} point;
+
+static int about_item(qd_ctx *ctx, const char *item, point *pt) {
+    const char *eq = strchr(item, '=');
+    if (!eq) {
+        cli_diag_error("--about: expected NAME=VALUE, not '%s'", item);
+        return QD_EXIT_USAGE;
+    }
+    char name[128];
+    size_t len = (size_t)(eq - item);
+    if (len >= sizeof name) {
+        cli_diag_error("--about: the name in '%s' is too long", item);
+        return QD_EXIT_USAGE;
+    }
+    memcpy(name, item, len);
+    name[len] = '\0';
+    qd_diag err;
+    const qd_read_opts opts = {.new_symbols = false};
+    const qd_expr *sym = qd_read(ctx, name, &opts, &err);
+    if (!sym || qd_expr_kind(sym) != QD_SYMBOL) {
+        qd_ctx_clear_error(ctx);
+        cli_diag_error("--about: '%s' is not a coordinate, velocity or input of the model", name);
+        return QD_EXIT_USAGE;
+    }
+    const qd_expr *val = qd_read(ctx, eq + 1, &opts, &err);
+    if (!val) {
+        cli_diag_read("--about", eq + 1, &err);
+        return QD_EXIT_USAGE;
+    }
+    for (size_t i = 0; i < pt->n; i++)
+        if (pt->syms[i] == sym) {
+            cli_diag_error("--about: %s is given twice", qd_expr_name(sym));
+            return QD_EXIT_USAGE;
+        }
+    pt->syms[pt->n] = sym;
+    pt->vals[pt->n++] = val;
+    return QD_EXIT_OK;
+}
+
+/* "NAME=EXPR, ...", split at the commas outside brackets. */
+static int read_about(qd_ctx *ctx, const char *text, point *pt) {
+    size_t len = strlen(text);
+    char *item = malloc(len + 1);
+    pt->cap = len / 2 + 2;
+    pt->syms = calloc(2 * pt->cap, sizeof *pt->syms);
+    if (!item || !pt->syms) {
+        free(item);
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    pt->vals = pt->syms + pt->cap;
+    int rc = QD_EXIT_OK;
+    for (size_t i = 0; rc == QD_EXIT_OK && i < len;) {
+        size_t end = i;
+        for (int depth = 0; text[end] && (text[end] != ',' || depth); end++)
+            depth += text[end] == '(' ? 1 : text[end] == ')' && depth ? -1 : 0;
+        memcpy(item, text + i, end - i);
+        item[end - i] = '\0';
+        if (strspn(item, " \t") < strlen(item))
+            rc = about_item(ctx, item, pt);
+        i = text[end] ? end + 1 : end;
+    }
+    free(item);
+    return rc;
+}
+
+/* ---- text ----------------------------------------------------------------------- */
+
+static void put_names(qd_buf *b, const char *what, size_t n, const qd_expr *const *syms,
+                      const char *const *names) {
+    qd_buf_printf(b, "%s:", what);
+    for (size_t i = 0; i < n; i++)
+        qd_buf_printf(b, "%s %s", i ? "," : "", syms ? qd_expr_name(syms[i]) : names[i]);
+    qd_buf_puts(b, n ? "\n" : " none\n");
+}
+
+static void put_matrix(qd_buf *b, const char *name, size_t r, size_t c, const double *x) {
+    if (r == 0 || c == 0)
+        return;
+    int w = 1;
+    char num[QD_DOUBLE_MAX];
+    for (size_t i = 0; i < r * c; i++) {
+        int len = (int)qd_double_format(num, x[i] == 0 ? 0 : x[i]);
+        w = len > w ? len : w;
+    }
+    qd_buf_printf(b, "%s =\n", name);
+    for (size_t i = 0; i < r; i++) {
+        qd_buf_puts(b, "  [");
+        for (size_t j = 0; j < c; j++) {
+            qd_double_format(num, x[i * c + j] == 0 ? 0 : x[i * c + j]);
+            qd_buf_printf(b, " %*s", w, num);
+        }
+        qd_buf_puts(b, " ]\n");
+    }
+}
+
+/* Row i is the rate of state row[i], column j the state or input col[j]. */
+static void put_exact(qd_buf *b, qd_ctx *ctx, const char *name, size_t r, size_t c,
+                      const qd_expr *const *x, const char *const *row, const char *const *col) {
+    for (size_t i = 0; i < r; i++)
+        for (size_t j = 0; j < c; j++)
+            if (!qd_is_zero(x[i * c + j])) {
+                qd_buf_printf(b, "  %s[%s, %s] = ", name, row[i], col[j]);
+                qd_print(ctx, x[i * c + j], QD_FMT_TEXT, b);
+                qd_buf_puts(b, "\n");
+            }
+}
+
+static void put_eig(qd_buf *b, double re, double im) {
+    char r[QD_DOUBLE_MAX], m[QD_DOUBLE_MAX];
+    qd_double_format(r, re == 0 ? 0 : re);
+    qd_double_format(m, fabs(im));
+    if (im == 0)
+        qd_buf_puts(b, r);
+    else
+        qd_buf_printf(b, "%s %c %si", r, im < 0 ? '-' : '+', m);
+}
+
+/* A mode named by the states its eigenvector moves (|component| > 1e-6). */
+static void put_mode(qd_buf *b, const qd_statespace *s, size_t j) {
+    qd_buf_puts(b, "s = ");
+    put_eig(b, s->eig_re[j], s->eig_im[j]);
+    qd_buf_puts(b, ", moving");
+    size_t k = 0;
+    for (size_t i = 0; i < s->nx; i++)
+        if (hypot(s->vec_re[i * s->nx + j], s->vec_im[i * s->nx + j]) > 1e-6)
+            qd_buf_printf(b, "%s %s", k++ ? "," : "", qd_expr_name(s->states[i]));
+}
+
+static void put_rank(qd_buf *b, const char *what, bool yes, size_t rank, size_t nx) {
+    qd_buf_printf(b, "%s: %s (Kalman rank %zu of %zu, singular values above %g of the largest)\n",
+                  what, yes ? "yes" : "no", rank, nx, QD_SS_RANK_TOL);
+}
+
+static void text(qd_buf *b, qd_ctx *ctx, const qd_statespace *s) {
+    const char **rows = malloc((s->nx + s->nu + 1) * sizeof *rows);
+    if (!rows) {
+        b->failed = true;
+        return;
+    }
+    for (size_t i = 0; i < s->nx + s->nu; i++)
+        rows[i] = qd_expr_name(i < s->nx ? s->states[i] : s->inputs[i - s->nx]);
+    put_names(b, "states", s->nx, s->states, NULL);
+    put_names(b, "inputs", s->nu, s->inputs, NULL);
+    put_names(b, "outputs", s->ny, NULL, s->outputs);
+    put_matrix(b, "A", s->nx, s->nx, s->A);
+    put_matrix(b, "B", s->nx, s->nu, s->B);
+    put_matrix(b, "C", s->ny, s->nx, s->C);
+    put_matrix(b, "D", s->ny, s->nu, s->D);
+    bool rest = true;
+    for (size_t i = 0; i < s->nx; i++)
+        rest = rest && s->xdot0[i] == 0;
+    if (!rest)
+        put_matrix(b, "x' at the point (not an equilibrium)", 1, s->nx, s->xdot0);
+    if (s->Asym) {
+        qd_buf_puts(b, "exact, the nonzero rows of the accelerations (A[rate, state], B[rate, input]):\n");
+        put_exact(b, ctx, "A", s->nx - s->n, s->nx, s->Asym + s->n * s->nx, rows + s->n, rows);
+        put_exact(b, ctx, "B", s->nx - s->n, s->nu, s->Bsym + s->n * s->nu, rows + s->n,
+                  rows + s->nx);
+    }
+    qd_buf_puts(b, "eigenvalues of A:");
+    for (size_t j = 0; j < s->nx; j++) {
+        qd_buf_puts(b, j ? ", " : " ");
+        put_eig(b, s->eig_re[j], s->eig_im[j]);
+    }
+    qd_buf_puts(b, "\n");
+    put_rank(b, "controllable", s->controllable, s->rank_ctrb, s->nx);
+    for (size_t k = 0; k < s->nuncontrollable; k++) {
+        qd_buf_puts(b, "  uncontrollable mode: ");
+        put_mode(b, s, s->uncontrollable[k]);
+        qd_buf_puts(b, "\n");
+    }
+    if (s->ny)
+        put_rank(b, "observable", s->observable, s->rank_obsv, s->nx);
+    for (size_t k = 0; s->ny && k < s->nunobservable; k++) {
+        qd_buf_puts(b, "  unobservable mode: ");
+        put_mode(b, s, s->unobservable[k]);
+        qd_buf_puts(b, "\n");
+    }
+    free(rows);
+}
+
+/* ---- json ------------------------------------------------------------------------ */
+
+static void json_matrix(cli_json *j, const char *key, size_t r, size_t c, const double *x) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < r; i++) {
+        cli_json_begin_array(j);
+        for (size_t k = 0; k < c; k++)
+            cli_json_number(j, x[i * c + k]);
+        cli_json_end_array(j);
+    }
+    cli_json_end_array(j);
+}
+
+static void json_exact(cli_json *j, qd_ctx *ctx, const char *key, size_t r, size_t c,
+                       const qd_expr *const *x) {
+    cli_json_key(j, key);
+    if (!x) {
+        cli_json_null(j);
+        return;
+    }
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < r; i++) {
+        cli_json_begin_array(j);
+        for (size_t k = 0; k < c; k++)
+            cli_json_expr(j, ctx, x[i * c + k]);
+        cli_json_end_array(j);
+    }
+    cli_json_end_array(j);
+}
+
+static void json_names(cli_json *j, const char *key, size_t n, const qd_expr *const *syms,
+                       const char *const *names) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        cli_json_string(j, syms ? qd_expr_name(syms[i]) : names[i]);
+    cli_json_end_array(j);
+}
+
+static void json_modes(cli_json *j, const qd_statespace *s, size_t count, const size_t *idx) {
+    cli_json_begin_array(j);
+    for (size_t k = 0; k < count; k++) {
+        size_t e = idx[k];
+        cli_json_begin_object(j);
+        cli_json_key(j, "eigenvalue");
+        cli_json_begin_array(j);
+        cli_json_number(j, s->eig_re[e]);
+        cli_json_number(j, s->eig_im[e]);
+        cli_json_end_array(j);
+        cli_json_key(j, "states");
+        cli_json_begin_array(j);
+        for (size_t i = 0; i < s->nx; i++)
+            if (hypot(s->vec_re[i * s->nx + e], s->vec_im[i * s->nx + e]) > 1e-6)
+                cli_json_string(j, qd_expr_name(s->states[i]));
+        cli_json_end_array(j);
+        cli_json_end_object(j);
+    }
+    cli_json_end_array(j);
+}
+
+static void json(qd_buf *b, qd_ctx *ctx, const qd_statespace *s) {
+    cli_json j;
+    cli_json_init(&j, b);
+    cli_json_begin_object(&j);
+    json_names(&j, "states", s->nx, s->states, NULL);
+    json_names(&j, "inputs", s->nu, s->inputs, NULL);
+    json_names(&j, "outputs", s->ny, NULL, s->outputs);
+    json_matrix(&j, "A", s->nx, s->nx, s->A);
+    json_matrix(&j, "B", s->nx, s->nu, s->B);
+    json_matrix(&j, "C", s->ny, s->nx, s->C);
+    json_matrix(&j, "D", s->ny, s->nu, s->D);
+    json_matrix(&j, "xdot0", 1, s->nx, s->xdot0);
+    json_exact(&j, ctx, "A_exact", s->nx, s->nx, s->Asym);
+    json_exact(&j, ctx, "B_exact", s->nx, s->nu, s->Bsym);
+    cli_json_key(&j, "eigenvalues");
+    cli_json_begin_array(&j);
+    for (size_t k = 0; k < s->nx; k++) {
+        cli_json_begin_array(&j);
+        cli_json_number(&j, s->eig_re[k]);
+        cli_json_number(&j, s->eig_im[k]);
+        cli_json_end_array(&j);
+    }
+    cli_json_end_array(&j);
+    cli_json_key(&j, "rank_tolerance");
+    cli_json_number(&j, QD_SS_RANK_TOL);
+    cli_json_key(&j, "controllable");
+    cli_json_bool(&j, s->controllable);
+    cli_json_key(&j, "controllability_rank");
+    cli_json_number(&j, (double)s->rank_ctrb);
+    cli_json_key(&j, "uncontrollable_modes");
+    json_modes(&j, s, s->nuncontrollable, s->uncontrollable);
+    cli_json_key(&j, "observable");
+    cli_json_bool(&j, s->observable);
+    cli_json_key(&j, "observability_rank");
+    cli_json_number(&j, (double)s->rank_obsv);
+    cli_json_key(&j, "unobservable_modes");
+    json_modes(&j, s, s->ny ? s->nunobservable : 0, s->unobservable);
+    cli_json_end_object(&j);
+    qd_buf_puts(b, "\n");
+    b->failed = b->failed || !cli_json_ok(&j);
+}
+
+/* ---- code: the exact matrices where known, else the numbers -------------------- */
+
+static void code_entry(qd_buf *b, qd_ctx *ctx, const qd_expr *x, double v, qd_format f) {
+    if (x)
+        qd_print(ctx, x, f, b);
+    else
+        qd_buf_put_double(b, v);
+}
+
+static void code_matrix(qd_buf *b, qd_ctx *ctx, int fmt, const char *name, size_t r, size_t c,
+                        const qd_expr *const *x, const double *v) {
+    qd_format f = fmt == F_SYMPY ? QD_FMT_SYMPY : QD_FMT_C;
+    if (fmt == F_C)
+        qd_buf_printf(b, "static const double %s[%zu][%zu] = {\n", name, r ? r : 1, c ? c : 1);
+    else
+        qd_buf_printf(b, "%s = %s", name, fmt == F_SYMPY ? "Matrix([\n" : "[\n");
+    for (size_t i = 0; i < r; i++) {
+        qd_buf_puts(b, fmt == F_OCTAVE ? "  " : fmt == F_C ? "    {" : "    [");
+        for (size_t k = 0; k < c; k++) {
+            qd_buf_puts(b, k ? ", " : "");
+            code_entry(b, ctx, x ? x[i * c + k] : NULL, v[i * c + k], f);
+        }
+        qd_buf_puts(b, fmt == F_OCTAVE ? ";\n" : fmt == F_C ? "},\n" : "],\n");
+    }
+    qd_buf_puts(b, fmt == F_C ? "};\n" : fmt == F_SYMPY ? "])\n" : "];\n");
+}
+
+static void code(qd_buf *b, qd_ctx *ctx, const qd_statespace *s, int fmt) {
+    const char *c = fmt == F_SYMPY ? "#" : fmt == F_OCTAVE ? "%" : "//";
+    qd_buf_printf(b, "%s x = [", c);
+    for (size_t i = 0; i < s->nx; i++)
+        qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(s->states[i]));
+    qd_buf_printf(b, "], u = [");
+    for (size_t i = 0; i < s->nu; i++)
+        qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(s->inputs[i]));
+    qd_buf_printf(b, "]%s\n", s->Asym ? "" : " (numbers: the exact form grew too large)");
+    code_matrix(b, ctx, fmt, "A", s->nx, s->nx, s->Asym, s->A);
+    code_matrix(b, ctx, fmt, "B", s->nx, s->nu, s->Bsym, s->B);
+    if (s->ny) {
+        code_matrix(b, ctx, fmt, "C", s->ny, s->nx, s->Csym, s->C);
+        code_matrix(b, ctx, fmt, "D", s->ny, s->nu, s->Dsym, s->D);
+    }
+}
+
+static int run(qd_ctx *ctx, const lin_args *a) {
+    cli_model_file mf = {0};
+    qd_eom *e = NULL;
+    point pt = {0};
+    qd_statespace s = {0};
+    qd_eom_opts eo = {.eliminate = true};
+    int rc = cli_load_derive(ctx, a->file, a->nsets, a->sets, false, &eo, &mf, &e);
+    if (rc == QD_EXIT_OK && a->about)
+        rc = read_about(ctx, a->about, &pt);
+    if (rc == QD_EXIT_OK &&
+        qd_linearize(ctx, e, mf.model, pt.n, pt.syms, pt.vals, &s) != QD_OK) {
+        rc = qd_ctx_status(ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        cli_diag_error("%s", qd_ctx_message(ctx));
+    }
+    if (rc == QD_EXIT_OK) {
+        qd_buf b = QD_BUF_INIT;
+        if (a->format == F_TEXT)
+            text(&b, ctx, &s);
+        else if (a->format == F_JSON)
+            json(&b, ctx, &s);
+        else
+            code(&b, ctx, &s, a->format);
+        rc = cli_emit(&b, "state-space form");
+    }
+    qd_statespace_free(&s);
+    free(pt.syms);
+    qd_eom_free(e);
+    cli_model_file_free(&mf);
+    return rc;
+}
+
+int cli_cmd_linearize(int argc, char **argv) {
+    lin_args a = {0};
+    int rc = cli_file_args(argc, argv, "linearize", usage_text, &a.file, parse_option, &a);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_ctx *ctx = qd_ctx_new();
+    if (!ctx) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = run(ctx, &a);
+    qd_ctx_free(ctx);
+    return rc;
+}

@@ -1,0 +1,90 @@
+/*
+ * qdot/statespace.h - a model with inputs linearized into state-space form
+ * about an operating point, and its controllability and observability.
+ *
+ * With x = (q, q') (state order: the coordinates, then their velocities,
+ * both in declaration order), u the model's inputs (`inputs F, ...`) and y
+ * its outputs (`outputs y1 = EXPR, ...`), about a point (x0, u0):
+ *
+ *     dx' = A dx + B du,     dy = C dx + D du,     dx = x - x0, du = u - u0
+ *
+ * and x' = xdot0 + A dx + B du, xdot0 = (q'0, q''0) the affine term (zero
+ * only at an equilibrium).  From M(q, q') q'' = f(q, q', u, t):
+ *
+ *     A = [0 I; dq''/dq  dq''/dq'],   B = [0; dq''/du],
+ *     dq''/dz = M^-1 (df/dz - dM/dz q''0)        (z = q_k, q'_k or u_k),
+ *
+ * every derivative exact (symbolic) and evaluated at the point; C = dy/dx,
+ * D = dy/du.  The numbers solve with M at the point (LAPACK dgesv); the
+ * symbolic A, B, C, D (expressions in the parameters, the point put in
+ * exactly) solve by fraction-free elimination and are NULL when that grows
+ * beyond QD_SS_MAX_OPS operations per entry.
+ *
+ * Models whose equations keep multipliers (constraints) are refused
+ * (QD_ERR_ARG): derive them with the constraints eliminated or write them
+ * in independent coordinates.
+ */
+#ifndef QDOT_STATESPACE_H
+#define QDOT_STATESPACE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+#include "mech.h"
+#include "model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The largest symbolic entry kept, in operations (qd_count_ops). */
+#define QD_SS_MAX_OPS 4000
+/* Rank tolerance of the Kalman matrices: a singular value counts when it
+ * exceeds QD_SS_RANK_TOL times the largest.  A mode is unreachable by B
+ * (PBH) when |w^H B| <= QD_SS_RANK_TOL |w| |B| for its left eigenvector w
+ * (and unseen by C when |C v| <= QD_SS_RANK_TOL |C| |v|). */
+#define QD_SS_RANK_TOL 1e-9
+
+typedef struct qd_statespace {
+    size_t n;                    /* coordinates */
+    size_t nx, nu, ny;           /* 2n states, inputs, outputs */
+    const qd_expr **states;      /* nx: q_j then q'_j (kernel symbols) */
+    const qd_expr **inputs;      /* nu (the model's) */
+    const char **outputs;        /* ny (the model's names) */
+    /* numbers, row-major: A nx*nx, B nx*nu, C ny*nx, D ny*nu */
+    double *A, *B, *C, *D;
+    double *xdot0;               /* nx: x' at the point */
+    double *y0;                  /* ny: the outputs at the point */
+    /* the same as expressions in the parameters (each simplified), or all
+     * NULL when the elimination grew too large */
+    const qd_expr **Asym, **Bsym, **Csym, **Dsym;
+    /* eigenvalues of A (dgeev), sorted by real part descending then
+     * imaginary part; right eigenvectors by column (vec_re[i*nx + j]:
+     * component i of vector j), scaled to largest component 1 */
+    double *eig_re, *eig_im, *vec_re, *vec_im;
+    /* ranks of [B AB ... A^(nx-1) B] and [C; CA; ...; C A^(nx-1)] */
+    size_t rank_ctrb, rank_obsv;
+    bool controllable, observable; /* full rank (observable false when ny = 0) */
+    /* PBH: the eigenvalues (indices into eig_*) whose modes B does not
+     * reach and C does not see */
+    size_t nuncontrollable, nunobservable;
+    size_t *uncontrollable, *unobservable;
+} qd_statespace;
+
+/* Linearize e (qd_eom_derive of m) about the point syms = vals: vals are
+ * exact expressions (0, pi, 1/2) for coordinates, velocities (qd_jet order
+ * 1), inputs and t; symbols not given are 0; the parameters take their
+ * values in m (apply --set to m first).  QD_ERR_ARG for a model with
+ * multipliers or a symbol of the point that is none of these;
+ * QD_ERR_SINGULAR when M is singular at the point; QD_ERR_NUMERIC when an
+ * entry is not finite there or LAPACK fails.  Free with
+ * qd_statespace_free (also after a failure). */
+QD_API qd_status qd_linearize(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t npt,
+                              const qd_expr *const *syms, const qd_expr *const *vals,
+                              qd_statespace *out);
+QD_API void qd_statespace_free(qd_statespace *s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
