@@ -25,12 +25,13 @@ import json
 import os
 import re
 import shutil
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / 'util'))
+from png import read_png  # noqa: E402  (tests/util/png.py)
 
 EX = Path(__file__).resolve().parents[2] / 'examples'
 DP = EX / 'double_pendulum_force.qd'
@@ -48,42 +49,6 @@ def run(qdot, *args):
     p = subprocess.run([str(qdot), *map(str, args)], capture_output=True, text=True,
                        timeout=120)
     return p.returncode, p.stdout, p.stderr
-
-
-# ---- PNG (RFC 2083): 8-bit RGB or RGBA, not interlaced --------------------------
-
-def paeth(a, b, c):
-    p = a + b - c
-    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-    return a if pa <= pb and pa <= pc else b if pb <= pc else c
-
-
-def read_png(path):
-    data = Path(path).read_bytes()
-    assert data[:8] == b'\x89PNG\r\n\x1a\n', 'not a PNG'
-    at, idat, head = 8, b'', None
-    while at < len(data):
-        n, kind = struct.unpack('>I4s', data[at:at + 8])
-        body = data[at + 8:at + 8 + n]
-        if kind == b'IHDR':
-            head = struct.unpack('>IIBBBBB', body)
-        elif kind == b'IDAT':
-            idat += body
-        at += 12 + n
-    w, h, depth, ctype, _, _, interlace = head
-    assert depth == 8 and ctype in (2, 6) and not interlace, f'PNG kind {head}'
-    bpp = 3 if ctype == 2 else 4
-    raw, stride = zlib.decompress(idat), w * bpp
-    rows, prev = [], bytearray(stride)
-    for y in range(h):
-        ftype, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            c = prev[i - bpp] if i >= bpp else 0
-            line[i] = (line[i] + (0, a, prev[i], (a + prev[i]) // 2, paeth(a, prev[i], c))[ftype]) & 255
-        rows.append(line)
-        prev = line
-    return w, h, lambda x, y: tuple(rows[y][x * bpp:x * bpp + 3])
 
 
 def near(pixel, rgb, tol):

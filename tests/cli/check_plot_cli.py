@@ -18,12 +18,13 @@ import argparse
 import csv
 import io
 import json
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / 'util'))
+from png import read_png  # noqa: E402  (tests/util/png.py)
 
 EX = Path(__file__).resolve().parents[2] / 'examples'
 BLUE = (0x1f, 0x77, 0xb4)  # the first series' colour (src/plot/plot.c palette)
@@ -33,49 +34,6 @@ def run(qdot, *args):
     p = subprocess.run([str(qdot), *map(str, args)], capture_output=True, text=True,
                        timeout=120)
     return p.returncode, p.stdout, p.stderr
-
-
-def paeth(a, b, c):
-    p = a + b - c
-    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-    return a if pa <= pb and pa <= pc else b if pb <= pc else c
-
-
-def unfilter(raw, w, h, bpp):
-    stride = w * bpp
-    out = bytearray(h * stride)
-    prev = bytearray(stride)
-    pos = 0
-    for y in range(h):
-        ft = raw[pos]
-        line = bytearray(raw[pos + 1:pos + 1 + stride])
-        pos += 1 + stride
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-            line[i] = (line[i] + (0, a, b, (a + b) // 2, paeth(a, b, c))[ft]) & 255
-        out[y * stride:(y + 1) * stride] = line
-        prev = line
-    return out
-
-
-def read_png(path):
-    data = Path(path).read_bytes()
-    assert data[:8] == b'\x89PNG\r\n\x1a\n', 'not a PNG'
-    pos, idat, hdr = 8, b'', None
-    while pos < len(data):
-        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + n]
-        if kind == b'IHDR':
-            hdr = struct.unpack('>IIBBBBB', body)
-        elif kind == b'IDAT':
-            idat += body
-        pos += 12 + n
-    w, h, depth, ctype, _, _, interlace = hdr
-    assert depth == 8 and ctype in (2, 6) and interlace == 0, hdr
-    bpp = 3 if ctype == 2 else 4
-    px = unfilter(zlib.decompress(idat), w, h, bpp)
-    return w, h, lambda x, y: tuple(px[(y * w + x) * bpp:(y * w + x) * bpp + 3])
 
 
 def near(c, want, tol=40):
