@@ -49,3 +49,9 @@ const char *cli_value(int argc, char **argv, int *i, const char *opt) {
         return NULL;
     return argv[++*i];
 }
+
+size_t cli_item_end(const char *text, size_t i) {
+    for (int depth = 0; text[i] && (text[i] != ',' || depth); i++)
+        depth += text[i] == '(' ? 1 : text[i] == ')' && depth ? -1 : 0;
+    return i;
+}

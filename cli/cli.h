@@ -41,6 +41,10 @@ typedef int (*cli_option)(int argc, char **argv, int *i, void *data);
 int cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
                      const char **file, cli_option opt, void *data);
 
+/* Lists like --about "q=pi/2, F=f(1, 2)": the end of the item that starts
+ * at text[i], the next comma outside brackets or the end of text. */
+size_t cli_item_end(const char *text, size_t i);
+
 /* Is arg an option ("--NAME", "--NAME=V", "-h") where a command also takes
  * expressions?  "-x", "-p_x*2" and "-1" are expressions, not options. */
 bool cli_is_option(const char *arg);

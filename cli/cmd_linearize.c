@@ -99,9 +99,7 @@ static int read_about(qd_ctx *ctx, const char *text, point *pt) {
     pt->vals = pt->syms + pt->cap;
     int rc = QD_EXIT_OK;
     for (size_t i = 0; rc == QD_EXIT_OK && i < len;) {
-        size_t end = i;
-        for (int depth = 0; text[end] && (text[end] != ',' || depth); end++)
-            depth += text[end] == '(' ? 1 : text[end] == ')' && depth ? -1 : 0;
+        size_t end = cli_item_end(text, i);
         memcpy(item, text + i, end - i);
         item[end - i] = '\0';
         if (strspn(item, " \t") < strlen(item))
