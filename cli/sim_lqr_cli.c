@@ -50,6 +50,18 @@ static void note_gain(const qd_statespace *s, const qd_care_result *r, size_t i,
     fprintf(stderr, "; closed-loop eigenvalues, largest real part %.6g\n", r->eig_re[0]);
 }
 
+/* Away from an equilibrium x0 is no rest point of the loop: u0 - K (x - x0)
+ * then regulates towards where the system cannot stay, so say so. */
+static void note_not_equilibrium(const qd_statespace *s) {
+    for (size_t j = 0; j < s->nx; j++)
+        if (s->xdot0[j] != 0) {
+            fprintf(stderr, "qdot: simulate: note: --about is not an equilibrium (%s' = %.6g "
+                            "there): the loop holds no rest at it\n",
+                    qd_expr_name(s->states[j]), s->xdot0[j]);
+            return;
+        }
+}
+
 static int linearized_gain(cli_sim *c, const char *name) {
     cli_point pt = {0};
     qd_statespace s = {0};
@@ -72,8 +84,10 @@ static int linearized_gain(cli_sim *c, const char *name) {
         cli_diag_error("--input: %s", qd_ctx_message(c->ctx));
         rc = QD_EXIT_USAGE;
     }
-    if (rc == QD_EXIT_OK)
+    if (rc == QD_EXIT_OK) {
         note_gain(&s, &r, i, name);
+        note_not_equilibrium(&s);
+    }
     qd_care_result_free(&r);
     qd_statespace_free(&s);
     cli_point_free(&pt);

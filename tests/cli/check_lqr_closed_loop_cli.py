@@ -23,6 +23,7 @@ What is asserted is mathematics, computed here in plain Python:
     nonconservative force is F on the cart) and stays bounded, and the
     cost-to-go x^T X x of the linear design does not grow; the open loop
     (F = 0) falls, |th| > 1 within 3 s;
+  - `--format c` prints the same K (every digit) as an array;
   - refusals with exit status 2: R not positive definite, Q of the wrong
     size, a mode the input does not reach (not stabilizable), `lqr`
     without --lqr or --about, --lqr with no `lqr` input.
@@ -146,6 +147,17 @@ def consistency(qdot, d):
           A)
 
 
+def c_format(qdot, d):
+    """--format c gives K as an array, every digit: the JSON's K."""
+    rc, out, err = qdot_run(qdot, 'linearize', MODEL, '--about', ABOUT, '--lqr', WEIGHTS,
+                            '--format', 'c')
+    body = out.split('static const double K[1][4] = {')[-1] if rc == 0 else ''
+    nums = [float(v) for v in body.replace('{', ' ').replace('}', ' ').replace(';', ' ')
+            .replace(',', ' ').split()] if body else []
+    check('--format c: K as an array equal to the JSON K', nums == d['lqr']['K'][0],
+          (nums, err))
+
+
 def eigenvalues(d):
     A, B, K = d['A'], d['B'], d['lqr']['K']
     Acl = add(A, matmul(B, K), -1)
@@ -265,6 +277,7 @@ def main():
     d = design(qdot)
     if d:
         consistency(qdot, d)
+        c_format(qdot, d)
         eig = eigenvalues(d)
         settles(qdot, d, 0.0)
         settles(qdot, d, 0.5)
