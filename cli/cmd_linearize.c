@@ -2,7 +2,9 @@
  * cli/cmd_linearize.c - `qdot linearize FILE --about "q=..., q'=..., F=..."`:
  * the state-space form x' = A x + B u, y = C x + D u about an operating
  * point (qd_linearize), the eigenvalues of A, and controllability and
- * observability.  Formats: text, json, c, sympy, octave.
+ * observability; with --lqr "Q = ..., R = ...", the LQR gain on A and B
+ * (qd_care_solve, printed by cli_lqr_print).  Formats: text, json, c,
+ * sympy, octave.
  */
 #include "cli.h"
 
@@ -10,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "json.h"
+#include "lqr_cli.h"
 #include "model_cli.h"
 #include "qdot/statespace.h"
 
@@ -19,7 +22,7 @@ enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
 static const char *const formats[] = {"text", "json", "c", "sympy", "octave", NULL};
 
 typedef struct lin_args {
-    const char *file, *about;
+    const char *file, *about, *lqr;
     const char *sets[LIN_MAX_SETS];
     size_t nsets;
     int format;
@@ -27,7 +30,8 @@ typedef struct lin_args {
 
 static const char usage_text[] =
     "usage: qdot linearize FILE [--about \"q=VALUE, q'=VALUE, F=VALUE, ...\"] "
-    "[--set NAME=VALUE]... [--format text|json|c|sympy|octave]";
+    "[--set NAME=VALUE]... [--lqr \"Q = diag(...), R = ...\"] "
+    "[--format text|json|c|sympy|octave]";
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     lin_args *a = data;
@@ -36,78 +40,11 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return cli_choice("--format", v, formats, &a->format);
     if ((v = cli_value(argc, argv, i, "--about")))
         return cli_once("--about", &a->about, v);
+    if ((v = cli_value(argc, argv, i, "--lqr")))
+        return cli_once("--lqr", &a->lqr, v);
     if ((v = cli_value(argc, argv, i, "--set")))
         return cli_push("--set", a->sets, &a->nsets, LIN_MAX_SETS, v);
     return cli_bad_option(argv[*i], usage_text);
-}
-
-/* ---- --about ------------------------------------------------------------------ */
-
-typedef struct point {
-    size_t n, cap;
-    const qd_expr **syms, **vals;
-} point;
-
-static int about_item(qd_ctx *ctx, const char *item, point *pt) {
-    const char *eq = strchr(item, '=');
-    if (!eq) {
-        cli_diag_error("--about: expected NAME=VALUE, not '%s'", item);
-        return QD_EXIT_USAGE;
-    }
-    char name[128];
-    size_t len = (size_t)(eq - item);
-    if (len >= sizeof name) {
-        cli_diag_error("--about: the name in '%s' is too long", item);
-        return QD_EXIT_USAGE;
-    }
-    memcpy(name, item, len);
-    name[len] = '\0';
-    qd_diag err;
-    const qd_read_opts opts = {.new_symbols = false};
-    const qd_expr *sym = qd_read(ctx, name, &opts, &err);
-    if (!sym || qd_expr_kind(sym) != QD_SYMBOL) {
-        qd_ctx_clear_error(ctx);
-        cli_diag_error("--about: '%s' is not a coordinate, velocity or input of the model", name);
-        return QD_EXIT_USAGE;
-    }
-    const qd_expr *val = qd_read(ctx, eq + 1, &opts, &err);
-    if (!val) {
-        cli_diag_read("--about", eq + 1, &err);
-        return QD_EXIT_USAGE;
-    }
-    for (size_t i = 0; i < pt->n; i++)
-        if (pt->syms[i] == sym) {
-            cli_diag_error("--about: %s is given twice", qd_expr_name(sym));
-            return QD_EXIT_USAGE;
-        }
-    pt->syms[pt->n] = sym;
-    pt->vals[pt->n++] = val;
-    return QD_EXIT_OK;
-}
-
-/* "NAME=EXPR, ...", split at the commas outside brackets. */
-static int read_about(qd_ctx *ctx, const char *text, point *pt) {
-    size_t len = strlen(text);
-    char *item = malloc(len + 1);
-    pt->cap = len / 2 + 2;
-    pt->syms = calloc(2 * pt->cap, sizeof *pt->syms);
-    if (!item || !pt->syms) {
-        free(item);
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    pt->vals = pt->syms + pt->cap;
-    int rc = QD_EXIT_OK;
-    for (size_t i = 0; rc == QD_EXIT_OK && i < len;) {
-        size_t end = cli_item_end(text, i);
-        memcpy(item, text + i, end - i);
-        item[end - i] = '\0';
-        if (strspn(item, " \t") < strlen(item))
-            rc = about_item(ctx, item, pt);
-        i = text[end] ? end + 1 : end;
-    }
-    free(item);
-    return rc;
 }
 
 /* ---- text ----------------------------------------------------------------------- */
@@ -287,7 +224,7 @@ static void json_modes(cli_json *j, const qd_statespace *s, size_t count, const 
     cli_json_end_array(j);
 }
 
-static void json(qd_buf *b, qd_ctx *ctx, const qd_statespace *s) {
+static void json(qd_buf *b, qd_ctx *ctx, const qd_statespace *s, const qd_care_result *lqr) {
     cli_json j;
     cli_json_init(&j, b);
     cli_json_begin_object(&j);
@@ -324,6 +261,11 @@ static void json(qd_buf *b, qd_ctx *ctx, const qd_statespace *s) {
     cli_json_number(&j, (double)s->rank_obsv);
     cli_json_key(&j, "unobservable_modes");
     json_modes(&j, s, s->ny ? s->nunobservable : 0, s->unobservable);
+    if (lqr) {
+        cli_json_key(&j, "lqr");
+        if (cli_lqr_json_design(&j, s, lqr) != QD_EXIT_OK)
+            b->failed = true;
+    }
     cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
     b->failed = b->failed || !cli_json_ok(&j);
@@ -373,32 +315,52 @@ static void code(qd_buf *b, qd_ctx *ctx, const qd_statespace *s, int fmt) {
     }
 }
 
+/* The state-space form, then the design when there is one: text and C
+ * print it after the matrices, JSON nests it under "lqr". */
+static int emit(qd_ctx *ctx, const lin_args *a, const qd_statespace *s,
+                const qd_care_result *lqr) {
+    qd_buf b = QD_BUF_INIT;
+    if (a->format == F_TEXT)
+        text(&b, ctx, s);
+    else if (a->format == F_JSON)
+        json(&b, ctx, s, lqr);
+    else
+        code(&b, ctx, s, a->format);
+    int rc = cli_emit(&b, "state-space form");
+    if (rc != QD_EXIT_OK || !lqr || a->format == F_JSON)
+        return rc;
+    /* run() refused --lqr with sympy and octave */
+    return cli_lqr_print_design(stdout, s, lqr, a->format == F_TEXT ? CLI_LQR_TEXT : CLI_LQR_C);
+}
+
 static int run(qd_ctx *ctx, const lin_args *a) {
     cli_model_file mf = {0};
     qd_eom *e = NULL;
-    point pt = {0};
+    cli_point pt = {0};
     qd_statespace s = {0};
+    qd_care_result lqr = {0};
     qd_eom_opts eo = {.eliminate = true};
-    int rc = cli_load_derive(ctx, a->file, a->nsets, a->sets, false, &eo, &mf, &e);
+    int rc = QD_EXIT_OK;
+    if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C) {
+        cli_diag_error("--lqr prints as text, json or c, not %s", formats[a->format]);
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK)
+        rc = cli_load_derive(ctx, a->file, a->nsets, a->sets, false, &eo, &mf, &e);
     if (rc == QD_EXIT_OK && a->about)
-        rc = read_about(ctx, a->about, &pt);
+        rc = cli_point_read(ctx, a->about, &pt);
     if (rc == QD_EXIT_OK &&
         qd_linearize(ctx, e, mf.model, pt.n, pt.syms, pt.vals, &s) != QD_OK) {
         rc = qd_ctx_status(ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
         cli_diag_error("%s", qd_ctx_message(ctx));
     }
-    if (rc == QD_EXIT_OK) {
-        qd_buf b = QD_BUF_INIT;
-        if (a->format == F_TEXT)
-            text(&b, ctx, &s);
-        else if (a->format == F_JSON)
-            json(&b, ctx, &s);
-        else
-            code(&b, ctx, &s, a->format);
-        rc = cli_emit(&b, "state-space form");
-    }
+    if (rc == QD_EXIT_OK && a->lqr)
+        rc = cli_lqr_design(ctx, &s, a->lqr, &lqr);
+    if (rc == QD_EXIT_OK)
+        rc = emit(ctx, a, &s, a->lqr ? &lqr : NULL);
+    qd_care_result_free(&lqr);
     qd_statespace_free(&s);
-    free(pt.syms);
+    cli_point_free(&pt);
     qd_eom_free(e);
     cli_model_file_free(&mf);
     return rc;

@@ -50,26 +50,17 @@ static int parse_args(int argc, char **argv, lqr_args *a) {
     return QD_EXIT_USAGE;
 }
 
-/* A reader's error under the option's text, with a caret at its place. */
-static int show_read_error(const char *opt, const char *text, const char *msg, size_t where) {
-    qd_diag d = {.status = QD_ERR_PARSE, .located = true, .line = 1, .col = where + 1,
-                 .offset = where, .length = 1};
-    snprintf(d.message, sizeof d.message, "%s", msg);
-    cli_diag_show(opt, text, &d);
-    return QD_EXIT_USAGE;
-}
-
 static int read_system(const lqr_args *a, lqr_run *r) {
     char err[200];
     size_t where, rows, cols;
     if (!cli_matrix_parse(a->A, &r->n, &cols, &r->A, err, sizeof err, &where))
-        return show_read_error("--A", a->A, err, where);
+        return cli_lqr_read_error("--A", a->A, err, where);
     if (cols != r->n) {
         cli_diag_error("--A is %zu by %zu; A must be square", r->n, cols);
         return QD_EXIT_USAGE;
     }
     if (!cli_matrix_parse(a->B, &rows, &r->m, &r->B, err, sizeof err, &where))
-        return show_read_error("--B", a->B, err, where);
+        return cli_lqr_read_error("--B", a->B, err, where);
     if (rows != r->n) {
         cli_diag_error("--B has %zu rows; it needs one per state, %zu", rows, r->n);
         return QD_EXIT_USAGE;
@@ -81,7 +72,7 @@ static int read_system(const lqr_args *a, lqr_run *r) {
         return QD_EXIT_FAIL;
     }
     if (!cli_lqr_parse(a->weights, r->n, r->m, r->Q, r->R, err, sizeof err, &where))
-        return show_read_error("--weights", a->weights, err, where);
+        return cli_lqr_read_error("--weights", a->weights, err, where);
     return QD_EXIT_OK;
 }
 

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "json.h"
+#include "model_cli.h"
 #include "progress.h"
 #include "sim_cli.h"
 
@@ -27,6 +28,7 @@ static const char usage_text[] =
     "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--atol TOL] "
     "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf] "
     "[--out FILE] [--output \"EXPR, ...\"] [--input \"F = EXPR\" | --input F=FILE.csv]... "
+    "[--input \"F = lqr\" --about \"q=VALUE, q'=VALUE, F=VALUE\" --lqr \"Q = ..., R = ...\"] "
     "[--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
     "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
@@ -100,6 +102,10 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         a->json = !strcmp(v, "json");
     } else if ((v = cli_value(argc, argv, i, "--output"))) {
         a->output = v;
+    } else if ((v = cli_value(argc, argv, i, "--about"))) {
+        return cli_once("--about", &a->about, v);
+    } else if ((v = cli_value(argc, argv, i, "--lqr"))) {
+        return cli_once("--lqr", &a->lqr, v);
     } else if ((stop = !strncmp(argv[*i], "--stop-at", 9), 0) ||
                (v = cli_value(argc, argv, i, "--event")) ||
                (v = cli_value(argc, argv, i, "--stop-at"))) {

@@ -8,7 +8,9 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
+#include "json.h"
 #include "qdot/control.h"
+#include "qdot/statespace.h"
 
 /* Read text into Q (n*n) and R (m*m), row-major arrays the caller owns.
  * text is "Q = W, R = W" in either order, each given once, where W is
@@ -35,6 +37,40 @@ bool cli_matrix_parse(const char *text, size_t *rows, size_t *cols, double **out
 typedef enum cli_lqr_format { CLI_LQR_TEXT, CLI_LQR_JSON, CLI_LQR_C } cli_lqr_format;
 bool cli_lqr_print(FILE *out, const qd_care_result *r, const char *const *states,
                    const char *const *inputs, cli_lqr_format fmt);
+
+/* The design's JSON object into j (the keys above; the eigenvalues under
+ * eig_key), for a caller that nests it in its own document. */
+void cli_lqr_json(cli_json *j, const qd_care_result *r, const char *const *states,
+                  const char *const *inputs, const char *eig_key);
+
+/* A reader's error under the option's text, with a caret at its place:
+ * QD_EXIT_USAGE. */
+int cli_lqr_read_error(const char *opt, const char *text, const char *msg, size_t where);
+
+/* ---- a design on a model (lqr_model.c) -------------------------------------- */
+
+/* An operating point "q=VALUE, q'=VALUE, F=VALUE, ..." (--about): exact
+ * values for coordinates, velocities and inputs, read against the model in
+ * ctx.  syms and vals share one block; cli_point_free releases it. */
+typedef struct cli_point {
+    size_t n, cap;
+    const qd_expr **syms, **vals;
+} cli_point;
+int cli_point_read(qd_ctx *ctx, const char *text, cli_point *pt);
+void cli_point_free(cli_point *pt);
+/* The value pt gives sym, or 0 (what qd_linearize takes for it). */
+const qd_expr *cli_point_value(qd_ctx *ctx, const cli_point *pt, const qd_expr *sym);
+
+/* The weights text (--lqr "Q = ..., R = ...") for the linearized s, solved
+ * by qd_care_solve into out: an exit status, the error printed (a weight
+ * misread with a caret under it, the CARE's refusal as it words it). */
+int cli_lqr_design(qd_ctx *ctx, const qd_statespace *s, const char *weights,
+                   qd_care_result *out);
+/* r printed with s's states and inputs as names (cli_lqr_print); JSON as
+ * an object nested under the caller's key (cli_lqr_json). */
+int cli_lqr_print_design(FILE *out, const qd_statespace *s, const qd_care_result *r,
+                         cli_lqr_format fmt);
+int cli_lqr_json_design(cli_json *j, const qd_statespace *s, const qd_care_result *r);
 
 /* `qdot lqr` (cmd_lqr.c), declared here to leave cli.h to the other commands. */
 int cli_cmd_lqr(int argc, char **argv);

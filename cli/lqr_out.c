@@ -69,29 +69,34 @@ static void json_matrix(cli_json *j, const char *key, size_t rows, size_t cols,
     cli_json_end_array(j);
 }
 
+void cli_lqr_json(cli_json *j, const qd_care_result *r, const char *const *states,
+                  const char *const *inputs, const char *eig_key) {
+    cli_json_begin_object(j);
+    json_names(j, "states", r->n, states);
+    json_names(j, "inputs", r->m, inputs);
+    json_matrix(j, "K", r->m, r->n, r->K);
+    json_matrix(j, "X", r->n, r->n, r->X);
+    cli_json_key(j, eig_key);
+    cli_json_begin_array(j);
+    for (size_t k = 0; k < r->n; k++) {
+        cli_json_begin_array(j);
+        cli_json_number(j, r->eig_re[k]);
+        cli_json_number(j, r->eig_im[k]);
+        cli_json_end_array(j);
+    }
+    cli_json_end_array(j);
+    cli_json_key(j, "residual");
+    cli_json_number(j, r->residual);
+    cli_json_key(j, "rcond");
+    cli_json_number(j, r->rcond);
+    cli_json_end_object(j);
+}
+
 static bool put_json(qd_buf *b, const qd_care_result *r, const char *const *states,
                      const char *const *inputs) {
     cli_json j;
     cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    json_names(&j, "states", r->n, states);
-    json_names(&j, "inputs", r->m, inputs);
-    json_matrix(&j, "K", r->m, r->n, r->K);
-    json_matrix(&j, "X", r->n, r->n, r->X);
-    cli_json_key(&j, "closed_loop");
-    cli_json_begin_array(&j);
-    for (size_t k = 0; k < r->n; k++) {
-        cli_json_begin_array(&j);
-        cli_json_number(&j, r->eig_re[k]);
-        cli_json_number(&j, r->eig_im[k]);
-        cli_json_end_array(&j);
-    }
-    cli_json_end_array(&j);
-    cli_json_key(&j, "residual");
-    cli_json_number(&j, r->residual);
-    cli_json_key(&j, "rcond");
-    cli_json_number(&j, r->rcond);
-    cli_json_end_object(&j);
+    cli_lqr_json(&j, r, states, inputs, "closed_loop");
     qd_buf_puts(b, "\n");
     return cli_json_ok(&j);
 }

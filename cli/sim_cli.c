@@ -279,7 +279,8 @@ static const char *input_name(const char *text, char *name, size_t cap) {
 }
 
 /* --input "F = EXPR" (EXPR read like --output: t, the state, parameters and
- * definitions) or --input F=FILE.csv (a value ending in .csv): list[i]. */
+ * definitions), --input F=FILE.csv (a value ending in .csv) or --input
+ * "F = lqr" (the LQR feedback): list[i]. */
 int cli_sim_input(cli_sim *c, const char *const *list, size_t i) {
     char name[128], other[128];
     const char *eq = input_name(list[i], name, sizeof name);
@@ -297,6 +298,8 @@ int cli_sim_input(cli_sim *c, const char *const *list, size_t i) {
     size_t vlen = (size_t)(vb - va);
     if (vlen > 4 && !strncmp(vb - 4, ".csv", 4))
         return cli_sim_input_csv(c, name, va, vlen);
+    if (vlen == 3 && !strncmp(va, "lqr", 3))
+        return cli_sim_input_lqr(c, name);
     const qd_expr *x = read_expr(c, "--input", va, vb);
     if (!x)
         return QD_EXIT_USAGE;
@@ -606,8 +609,15 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = model_outputs(c);
     if (rc == QD_EXIT_OK && a->output)
         rc = add_outputs(c, a->output);
+    c->about = a->about;
+    c->lqr = a->lqr;
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->ninputs; i++)
         rc = cli_sim_input(c, a->inputs, i);
+    if (rc == QD_EXIT_OK && (a->about || a->lqr) && !c->lqr_used) {
+        cli_diag_error("%s is for --input \"NAME = lqr\" (the LQR feedback), which is not given",
+                       a->lqr ? "--lqr" : "--about");
+        rc = QD_EXIT_USAGE;
+    }
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->nevents; i++)
         rc = add_event(c, a->events[i], a->event_stop[i]);
     if (rc == QD_EXIT_OK)

@@ -23,6 +23,7 @@ typedef struct cli_sim_args {
     size_t nevents;
     const char *inputs[QD_SIM_MAX_LIST]; /* --input "F = EXPR" or F=FILE.csv */
     size_t ninputs;
+    const char *about, *lqr; /* --input "F = lqr": the operating point, the weights */
     double t_end, dt, rtol, atol;
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
     bool no_speeds;    /* a model with speeds: the multiplier form instead */
@@ -42,6 +43,8 @@ typedef struct cli_sim {
     double *q0, *qd0;
     double *p0;        /* a model given by H: momenta from --initial, or NULL */
     double *u0;        /* a model in speeds: the speeds when any is given, or NULL */
+    const char *about, *lqr; /* from cli_sim_args, for --input "F = lqr" */
+    bool lqr_used;     /* some input took the LQR feedback */
 } cli_sim;
 
 /* One option shared by both commands at argv[*i]: 1 when it was one (and
@@ -64,6 +67,10 @@ int cli_sim_input(cli_sim *c, const char *const *list, size_t i);
 /* --input NAME=FILE.csv: the file's rows "t,value" (a first line that is
  * not numbers is a header) as a table; an exit status (sim_input_cli.c). */
 int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len);
+/* --input "NAME = lqr": the model linearized about c->about, the CARE
+ * solved with the weights c->lqr, and NAME = u0 - K (x - x0) (its row of
+ * K) as the input's expression; an exit status (sim_lqr_cli.c). */
+int cli_sim_input_lqr(cli_sim *c, const char *name);
 
 /* Print a failed run's message; exit status 1. */
 int cli_sim_fail(cli_sim *c, qd_status st);
