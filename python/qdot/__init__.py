@@ -17,7 +17,8 @@ to the package, the installed prefix, then the system's library path.
 from ._core import Error, ModelError
 from .model import Model, Equations, Hamiltonian, Equilibrium, Mode, Modes
 from .sim import Result, Table, Rhs
+from .control import StateSpace, Lqr
 
 __all__ = ["Model", "ModelError", "Error", "Equations", "Hamiltonian", "Equilibrium",
-           "Mode", "Modes", "Result", "Table", "Rhs"]
+           "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr"]
 __version__ = "0.1.0"

@@ -62,31 +62,35 @@ def take_error(ctx):
 
 
 def _number(ctx, name, value):
-    """A parameter value as an exact number node: 9.81 stays 9.81, and
-    a string is read in the model language ("pi/6")."""
+    """A parameter value for --set name (see number_expr)."""
+    return number_expr(ctx, "set " + name, value)
+
+
+def number_expr(ctx, what, value):
+    """A value as an exact number node: 9.81 stays 9.81, and a string is
+    read in the model language ("pi/6"); what names it in messages."""
     if isinstance(value, str):
         diag = Diag()
         opts = ReadOpts(new_symbols=False)
         x = lib.qd_read(ctx, value.encode(), byref(opts), byref(diag))
         if not x:
             lib.qd_ctx_clear_error(ctx)
-            raise ModelError(format_diag(diag, "set " + name, value.encode()), diag,
-                             "set " + name)
+            raise ModelError(format_diag(diag, what, value.encode()), diag, what)
         if lib.qd_is_number(x):
             return x
         # a constant expression (pi/6) goes in as its value, as --set gives it
         out = ctypes.c_double()
         if lib.qd_eval(ctx, x, 0, None, None, byref(out)) != QD_OK:
             lib.qd_ctx_clear_error(ctx)
-            raise Error("set %s: '%s' is not a number" % (name, value))
+            raise Error("%s: '%s' is not a number" % (what, value))
         value = out.value
     x = float(value)
     if isinstance(value, bool) or not x == x or x in (float("inf"), float("-inf")):
-        raise Error("set %s: %r is not a finite number" % (name, value))
+        raise Error("%s: %r is not a finite number" % (what, value))
     text = str(value) if isinstance(value, int) else repr(x)
     x = lib.qd_rat_str(ctx, text.encode())
     if not x:
-        raise Error("set %s: %r is not a number" % (name, value))
+        raise Error("%s: %r is not a number" % (what, value))
     return x
 
 

@@ -174,7 +174,33 @@ class SimStats(Structure):
                 ("contact", c_size_t)] + _TAIL
 
 
+class StateSpace(Structure):
+    """qd_statespace (qdot/statespace.h)."""
+    _fields_ = [("n", c_size_t), ("nx", c_size_t), ("nu", c_size_t), ("ny", c_size_t),
+                ("states", ExprArray), ("inputs", ExprArray), ("outputs", POINTER(c_char_p)),
+                ("A", POINTER(c_double)), ("B", POINTER(c_double)), ("C", POINTER(c_double)),
+                ("D", POINTER(c_double)), ("xdot0", POINTER(c_double)),
+                ("y0", POINTER(c_double)), ("Asym", ExprArray), ("Bsym", ExprArray),
+                ("Csym", ExprArray), ("Dsym", ExprArray), ("eig_re", POINTER(c_double)),
+                ("eig_im", POINTER(c_double)), ("vec_re", POINTER(c_double)),
+                ("vec_im", POINTER(c_double)), ("rank_ctrb", c_size_t),
+                ("rank_obsv", c_size_t), ("controllable", c_bool), ("observable", c_bool),
+                ("nuncontrollable", c_size_t), ("nunobservable", c_size_t),
+                ("uncontrollable", POINTER(c_size_t)),
+                ("unobservable", POINTER(c_size_t))] + _TAIL
+
+
+class CareResult(Structure):
+    """qd_care_result (qdot/control.h)."""
+    _fields_ = [("n", c_size_t), ("m", c_size_t), ("X", POINTER(c_double)),
+                ("K", POINTER(c_double)), ("eig_re", POINTER(c_double)),
+                ("eig_im", POINTER(c_double)), ("residual", c_double), ("rcond", c_double),
+                ("failure", c_int), ("mode_re", c_double), ("mode_im", c_double)] + _TAIL
+
+
 SimSink = ctypes.CFUNCTYPE(c_int, c_void_p, c_int, POINTER(c_double))
+# qd_sim_input_fn: u = fn(data, t, x), x = (q, q') in the equations' order
+SimInputFn = ctypes.CFUNCTYPE(c_double, c_void_p, c_double, POINTER(c_double))
 
 QD_OK = 0
 QD_FMT_TEXT, QD_FMT_LATEX, QD_FMT_C, QD_FMT_SYMPY = 0, 1, 2, 3
@@ -223,6 +249,11 @@ _PROTOS = {
     "qd_model_speed": (Expr, [c_void_p, c_size_t]),
     "qd_model_speed_definition": (Expr, [c_void_p, c_size_t]),
     "qd_model_speed_initial": (Expr, [c_void_p, c_size_t]),
+    "qd_model_ninputs": (c_size_t, [c_void_p]),
+    "qd_model_input": (Expr, [c_void_p, c_size_t]),
+    "qd_model_noutputs": (c_size_t, [c_void_p]),
+    "qd_model_output_name": (c_char_p, [c_void_p, c_size_t]),
+    "qd_model_output": (Expr, [c_void_p, c_size_t]),
     # generalized speeds (speeds.h): only handed on, never read
     "qd_speeds_derive": (c_void_p, [c_void_p, c_void_p, c_void_p]),
     "qd_speeds_eom_free": (None, [c_void_p]),
@@ -250,6 +281,13 @@ _PROTOS = {
     "qd_modes_solve": (c_int, [c_void_p, POINTER(Linear), POINTER(ModesResult)]),
     "qd_linear_free": (None, [POINTER(Linear)]),
     "qd_modes_result_free": (None, [POINTER(ModesResult)]),
+    # state-space form and LQR (statespace.h, control.h)
+    "qd_linearize": (c_int, [c_void_p, POINTER(Eom), c_void_p, c_size_t, ExprArray, ExprArray,
+                             POINTER(StateSpace)]),
+    "qd_statespace_free": (None, [POINTER(StateSpace)]),
+    "qd_care_solve": (c_int, [c_void_p, c_size_t, c_size_t, DBL, DBL, DBL, DBL,
+                              POINTER(CareResult)]),
+    "qd_care_result_free": (None, [POINTER(CareResult)]),
     # simulation (sim.h)
     "qd_sim_new": (c_void_p, [c_void_p, c_void_p, POINTER(Eom)]),
     "qd_sim_new_hamilton": (c_void_p, [c_void_p, c_void_p]),
@@ -263,6 +301,8 @@ _PROTOS = {
     "qd_sim_default_method": (c_int, [c_void_p, c_bool]),
     "qd_sim_columns": (c_size_t, [c_void_p, c_int, POINTER(c_char_p), c_size_t]),
     "qd_sim_check_opts": (c_int, [c_void_p, POINTER(SimOpts)]),
+    "qd_sim_input_expr": (c_int, [c_void_p, c_char_p, Expr]),
+    "qd_sim_input_callback": (c_int, [c_void_p, c_char_p, SimInputFn, c_void_p]),
     "qd_sim_run": (c_int, [c_void_p, POINTER(SimOpts), SimSink, c_void_p, POINTER(SimStats),
                            DBL]),
 }

@@ -14,6 +14,7 @@ from ._core import Core, Error, ModelError, name_of
 from ._lib import (lib, EquilibriaOut, EquilibriumChoice, Linear, ModesResult, exprs,
                    doubles, QD_FMT_SYMPY)
 from . import sim as _sim
+from . import control as _control
 
 
 class Equations:
@@ -299,8 +300,20 @@ class Model:
             lib.qd_modes_result_free(byref(res))
             lib.qd_linear_free(byref(lin))
 
+    def linearize(self, about=None):
+        """The state-space form about an operating point (a StateSpace, from
+        qd_linearize): A, B, C, D as numpy arrays with the names of the
+        states (the coordinates, then their velocities, in model order),
+        inputs and outputs, the eigenvalues of A, controllability and
+        observability; .lqr(Q, R) gives the LQR gain.
+
+        about: {name: value} over coordinates, velocities "NAME'", inputs
+        and "t"; names not given are 0; values are numbers or exact text
+        ("pi", "1/2").  Models whose equations keep multipliers are refused."""
+        return _control.linearize(self._core, about or {})
+
     def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
-                 events=(), stop_at=None, outputs=(), max_steps=0, speeds=True):
+                 events=(), stop_at=None, outputs=(), max_steps=0, speeds=True, inputs=None):
         """Integrate the equations of motion from the initial state to t_end
         (qd_sim_run) and return a qdot.Result.
 
@@ -319,10 +332,19 @@ class Model:
         columns by name (their initial values from `initial`, else from the
         initial velocities); speeds=False takes the multiplier form in
         q, q' instead (as --no-speeds; the speeds' initial values unused).
+        inputs: {name: source} for the model's `inputs`, each a number
+        (constant), text (an expression in t, the state and the
+        parameters, as --input "F = EXPR") or a callable f(t, y) -> float,
+        y = (q, q') a numpy array in model order (the order of
+        linearize().states), called at every evaluation of the right-hand
+        side; an exception it raises ends the run and is raised here.  A
+        run with inputs takes the form (q, q'), even for a model with
+        `speeds`.
         """
         return _sim.simulate(self._core, t_end, method=method, rtol=rtol, atol=atol, dt=dt,
                              initial=initial or {}, events=list(events), stop_at=stop_at,
-                             outputs=outputs, max_steps=max_steps, speeds=speeds)
+                             outputs=outputs, max_steps=max_steps, speeds=speeds,
+                             inputs=inputs or {})
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a

@@ -7,12 +7,13 @@
 """Simulation results and the compiled right-hand side (internal module)."""
 
 import ctypes
+import numbers
 from ctypes import byref
 
 import numpy as np
 
-from ._core import Error, ModelError, name_of
-from ._lib import (lib, SimOpts, SimStats, SimSink, exprs, doubles, DBL, QD_OK)
+from ._core import Error, ModelError, name_of, number_expr, take_error
+from ._lib import (lib, SimOpts, SimStats, SimSink, SimInputFn, exprs, doubles, DBL, QD_OK)
 
 
 class Table:
@@ -109,7 +110,12 @@ def _add_event(core, s, text, stop):
 
 
 def _add_outputs(core, s, outputs):
-    """Columns from outputs: a list of expressions or {name: expression}."""
+    """Columns: the model's `outputs`, then those of outputs (a list of
+    expressions or {name: expression}), as `qdot simulate` orders them."""
+    m = core.model
+    for i in range(lib.qd_model_noutputs(m)):
+        core.check(lib.qd_sim_add_output(s, lib.qd_model_output_name(m, i),
+                                         lib.qd_model_output(m, i)))
     items = outputs.items() if isinstance(outputs, dict) else [(o, o) for o in outputs]
     for name, text in items:
         core.check(lib.qd_sim_add_output(s, name.encode(), core.read(text, "outputs")))
@@ -219,15 +225,81 @@ def _kind(core, speeds):
     return "speeds" if speeds and lib.qd_model_nspeeds(core.model) else "lagrange"
 
 
+class _InputFn:
+    """A Python callable f(t, y) -> float as a qd_sim_input_fn.  y is the
+    state (q, q') in model order, a fresh numpy array per call.  The C side
+    cannot be unwound through, so an exception is kept (the first one), the
+    value returned from then on is NaN (the step fails, or the sink ends
+    the run at its next row), and simulate raises it after qd_sim_run
+    returns."""
+
+    def __init__(self, name, fn, pos):
+        self.name, self.fn = name, fn
+        n = len(pos)
+        # x from C is in the equations' order: model coordinate i is x[pos[i]]
+        self.take = np.array(pos + [n + j for j in pos], dtype=int)
+        self.error = None
+        self.c = SimInputFn(self._call)  # kept alive with self for the whole run
+
+    def _call(self, _data, t, x):
+        if self.error is not None:
+            return float("nan")
+        try:
+            y = np.ctypeslib.as_array(x, shape=(len(self.take),))[self.take]
+            v = np.asarray(self.fn(t, y), dtype=float).reshape(-1)
+            if v.size != 1:
+                raise ValueError("inputs: %s(t, y) returned %d values, not one number"
+                                 % (self.name, v.size))
+            return float(v[0])
+        except BaseException as err:  # noqa: B036 (re-raised by simulate)
+            self.error = err
+            return float("nan")
+
+
+def _input_names(core):
+    """The names of the model's inputs, in declaration order."""
+    m = core.model
+    return [name_of(lib.qd_model_input(m, k)) for k in range(lib.qd_model_ninputs(m))]
+
+
+def _add_inputs(core, s, inputs):
+    """Each input's source: a number (constant), text (an expression in t,
+    the state and the parameters, read as --input reads it) or a callable
+    f(t, y); the list of _InputFn, which must outlive the run."""
+    names, fns = _input_names(core), []
+    for name, value in inputs.items():
+        if name not in names:
+            raise Error("inputs: '%s' is not an input of the model (inputs: %s)"
+                        % (name, ", ".join(names) or "none"))
+        if callable(value):
+            coords = core.coords()
+            e = core.eom()
+            pos = [[e.q[j] for j in range(e.n)].index(c) for c in coords]
+            fn = _InputFn(name, value, pos)
+            core.check(lib.qd_sim_input_callback(s, name.encode(), fn.c, None))
+            fns.append(fn)
+            continue
+        if isinstance(value, str):
+            x = core.read(value, "inputs " + name)
+        elif isinstance(value, numbers.Real) and not isinstance(value, bool):
+            x = number_expr(core.ctx, "inputs " + name, value)
+        else:
+            raise Error("inputs: %s takes a number, an expression (text) or a callable "
+                        "f(t, y), not %r" % (name, value))
+        core.check(lib.qd_sim_input_expr(s, name.encode(), x))
+    return fns
+
+
 def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outputs,
-             max_steps, speeds):
+             max_steps, speeds, inputs):
     """Model.simulate's work (see there)."""
-    kind = _kind(core, speeds)
+    kind = _kind(core, speeds and not inputs)
     s, se = _new_sim(core, kind)
     try:
         q, qd, t0, more = _initial(core, initial, kind)
         q, qd = _order(core, kind, q, qd)
         _add_outputs(core, s, outputs)
+        fns = _add_inputs(core, s, inputs)
         for text in events:
             _add_event(core, s, text, False)
         if stop_at:
@@ -245,15 +317,17 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
         elif kind == "speeds":
             opts.u0 = more
         core.check(lib.qd_sim_check_opts(core.ctx, byref(opts)))
-        return _run(core, s, opts, len(events) + bool(stop_at))
+        return _run(core, s, opts, len(events) + bool(stop_at), fns)
     finally:
         lib.qd_sim_free(s)
         if se:
             lib.qd_speeds_eom_free(se)
 
 
-def _run(core, s, opts, nev):
-    """qd_sim_run with a sink that copies every row; the Result."""
+def _run(core, s, opts, nev, fns=()):
+    """qd_sim_run with a sink that copies every row; the Result.  An
+    exception raised in an input callable ends the run at the next row and
+    is raised here, in place of whatever the run then reported."""
     ncol = lib.qd_sim_columns(s, opts.method, None, 0)
     names = (ctypes.c_char_p * ncol)()
     lib.qd_sim_columns(s, opts.method, names, ncol)
@@ -261,12 +335,18 @@ def _run(core, s, opts, nev):
     rows = []
 
     def sink(_data, event, row):
+        if any(fn.error is not None for fn in fns):
+            return 1
         rows.append((event, row[:ncol]))
         return 0
 
     stats = SimStats()
     callback = SimSink(sink)  # kept alive until qd_sim_run returns
     st = lib.qd_sim_run(s, byref(opts), callback, None, byref(stats), None)
+    for fn in fns:
+        if fn.error is not None:
+            take_error(core.ctx)  # the NaN's consequence, if any: not the cause
+            raise fn.error
     if st != QD_OK:
         raise core.error(st)
     return Result(columns, rows, nev, stats, lib.qd_sim_method_name(opts.method).decode())

@@ -1,0 +1,183 @@
+# python/qdot/control.py - the state-space form of a model with inputs
+# (qd_linearize, qdot/statespace.h) and the LQR gain from it (qd_care_solve,
+# qdot/control.h).
+#
+# The C results are copied into numpy arrays and freed before the call
+# returns; a StateSpace keeps only numbers, names and the Core it came from
+# (whose context records the errors of a later lqr()).
+"""State-space form and linear-quadratic regulation (internal module)."""
+
+from ctypes import byref
+import numbers
+
+import numpy as np
+
+from ._core import Error, ModelError, format_diag, name_of, number_expr
+from ._lib import lib, StateSpace as _SS, CareResult, Diag, ReadOpts, exprs, doubles
+
+# qd_care_failure (qdot/control.h), by value
+CARE_FAILURES = ["ok", "R not positive definite", "Q not positive semidefinite",
+                 "not stabilizable", "not detectable", "imaginary axis", "ill-conditioned",
+                 "not stabilizing"]
+
+
+def _matrix(ptr, rows, cols):
+    """A row-major C array as a rows x cols numpy array (a copy)."""
+    if rows == 0 or cols == 0 or not ptr:
+        return np.zeros((rows, cols))
+    return np.ctypeslib.as_array(ptr, shape=(rows * cols,)).copy().reshape(rows, cols)
+
+
+def _point_value(core, name, value):
+    """A value of the operating point as an exact expression: text is read
+    in the model language ("pi", "1/2"), numbers go in as written."""
+    if isinstance(value, str):
+        diag = Diag()
+        x = lib.qd_read(core.ctx, value.encode(), byref(ReadOpts(new_symbols=False)),
+                        byref(diag))
+        if not x:
+            lib.qd_ctx_clear_error(core.ctx)
+            raise ModelError(format_diag(diag, "about " + name, value.encode()), diag,
+                             "about " + name)
+        return x
+    if not isinstance(value, numbers.Real) or isinstance(value, bool):
+        raise Error("about: %s takes a number or text, not %r" % (name, value))
+    return number_expr(core.ctx, "about " + name, value)
+
+
+def point(core, about):
+    """The symbols and exact values of the operating point {name: value};
+    names are coordinates, velocities "NAME'", inputs and "t"."""
+    coords = core.coords()
+    syms = (coords + [lib.qd_jet(core.ctx, c, 1) for c in coords] +
+            [lib.qd_model_input(core.model, k) for k in range(lib.qd_model_ninputs(core.model))]
+            + [lib.qd_time(core.ctx)])
+    names = [name_of(x) for x in syms]
+    keys, vals = [], []
+    for name, value in about.items():
+        if name not in names:
+            raise Error("about: '%s' is not a coordinate, velocity or input of the model "
+                        "(%s)" % (name, ", ".join(names)))
+        keys.append(syms[names.index(name)])
+        vals.append(_point_value(core, name, value))
+    return keys, vals
+
+
+def linearize(core, about):
+    """Model.linearize's work (see there)."""
+    keys, vals = point(core, about)
+    out = _SS()
+    try:
+        core.check(lib.qd_linearize(core.ctx, core.eom_ptr(), core.model, len(keys),
+                                    exprs(keys), exprs(vals), byref(out)))
+        return StateSpace(core, out, dict(about))
+    finally:
+        lib.qd_statespace_free(byref(out))
+
+
+def _exact(core, syms, rows, cols):
+    """The symbolic matrix as lists of text, or None when not kept."""
+    if not syms:
+        return None
+    return [[core.text_of(syms[i * cols + j]) for j in range(cols)] for i in range(rows)]
+
+
+class StateSpace:
+    """x' = xdot0 + A dx + B du, y = y0 + C dx + D du about a point
+    (qd_linearize): dx = x - x0, du = u - u0.
+
+    A, B, C, D: numpy arrays (nx x nx, nx x nu, ny x nx, ny x nu); xdot0,
+    y0: numpy vectors; states: the names of x, the coordinates then their
+    velocities ("NAME'") in model order; inputs, outputs: the model's
+    names; A_exact, B_exact, C_exact, D_exact: the same as text in the
+    parameters, or None when the exact form grew too large; eigenvalues:
+    those of A (numpy complex, Re descending); controllable, observable
+    (ranks of the Kalman matrices rank_ctrb, rank_obsv against the
+    relative tolerance rank_tolerance); uncontrollable, unobservable: the
+    eigenvalues whose modes B does not reach and C does not see; about: the
+    point as given.
+    """
+
+    rank_tolerance = 1e-9  # QD_SS_RANK_TOL
+
+    def __init__(self, core, s, about):
+        self._core = core
+        nx, nu, ny = s.nx, s.nu, s.ny
+        self.about = about
+        self.states = [name_of(s.states[i]) for i in range(nx)]
+        self.inputs = [name_of(s.inputs[i]) for i in range(nu)]
+        self.outputs = [s.outputs[i].decode() for i in range(ny)]
+        self.A, self.B = _matrix(s.A, nx, nx), _matrix(s.B, nx, nu)
+        self.C, self.D = _matrix(s.C, ny, nx), _matrix(s.D, ny, nu)
+        self.xdot0 = _matrix(s.xdot0, 1, nx)[0]
+        self.y0 = _matrix(s.y0, 1, ny)[0] if ny else np.zeros(0)
+        self.A_exact, self.B_exact = _exact(core, s.Asym, nx, nx), _exact(core, s.Bsym, nx, nu)
+        self.C_exact, self.D_exact = _exact(core, s.Csym, ny, nx), _exact(core, s.Dsym, ny, nu)
+        self.eigenvalues = np.array([complex(s.eig_re[k], s.eig_im[k]) for k in range(nx)])
+        self.rank_ctrb, self.rank_obsv = s.rank_ctrb, s.rank_obsv
+        self.controllable, self.observable = bool(s.controllable), bool(s.observable)
+        self.uncontrollable = [self.eigenvalues[s.uncontrollable[k]]
+                               for k in range(s.nuncontrollable)]
+        self.unobservable = ([self.eigenvalues[s.unobservable[k]]
+                              for k in range(s.nunobservable)] if ny else [])
+
+    def lqr(self, Q, R):
+        """The LQR gain for J = integral of dx^T Q dx + du^T R du dt
+        (qd_care_solve: the stabilizing solution X of the Riccati equation
+        by the Schur method).  Q, R: square matrices, or a vector (the
+        diagonal) or a number (times the identity).  Returns an Lqr;
+        raises qdot.Error when there is no stabilizing solution (its
+        .failure says why: "not stabilizable", "R not positive definite",
+        ...)."""
+        nx, nu = self.A.shape[0], self.B.shape[1]
+        Qm, Rm = _square(Q, nx, "Q"), _square(R, nu, "R")
+        out = CareResult()
+        core = self._core
+        try:
+            st = lib.qd_care_solve(core.ctx, nx, nu, _flat(self.A), _flat(self.B), _flat(Qm),
+                                   _flat(Rm), byref(out))
+            if st != 0:
+                err = core.error(st)
+                err.failure = CARE_FAILURES[out.failure]
+                raise err
+            return Lqr(_matrix(out.K, nu, nx), _matrix(out.X, nx, nx),
+                       np.array([complex(out.eig_re[k], out.eig_im[k]) for k in range(nx)]),
+                       out.residual, out.rcond)
+        finally:
+            lib.qd_care_result_free(byref(out))
+
+    def __repr__(self):
+        return "<qdot.StateSpace states %s, inputs %s>" % (self.states, self.inputs)
+
+
+def _square(x, n, what):
+    """x as an n x n matrix: a number times I, a diagonal or the matrix."""
+    a = np.asarray(x, dtype=float)
+    if a.ndim == 0:
+        return a * np.eye(n)
+    if a.ndim == 1 and a.shape == (n,):
+        return np.diag(a)
+    if a.shape != (n, n):
+        raise Error("lqr: %s must be a number, %d diagonal entries or %d x %d, not shape %s"
+                    % (what, n, n, n, a.shape))
+    return a
+
+
+def _flat(a):
+    """A row-major C array of a's entries."""
+    return doubles(np.ascontiguousarray(a, dtype=float).reshape(-1))
+
+
+class Lqr:
+    """The regulator du = -K dx (qd_care_result): K (nu x nx), X the
+    stabilizing solution of A^T X + X A - X B R^-1 B^T X + Q = 0,
+    eigenvalues those of A - B K (Re descending), residual the Riccati
+    residual relative to its terms, rcond the reciprocal condition number
+    of the Schur basis block U11."""
+
+    def __init__(self, K, X, eigenvalues, residual, rcond):
+        self.K, self.X, self.eigenvalues = K, X, eigenvalues
+        self.residual, self.rcond = residual, rcond
+
+    def __repr__(self):
+        return "Lqr(K=%r)" % (self.K,)
