@@ -6,15 +6,13 @@ set -e
 what=${1:-build}
 pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev liblapack-dev libsundials-dev"
 pkgs="$pkgs libcairo2-dev"  # plots (src/plot): Cairo, and its runtime library with it
+pkgs="$pkgs libhdf5-dev"    # qdot sweep --format hdf5 (optional: built when found)
+# Tests: cmocka and SymPy/SciPy for the cross-checks, chromium for the animate
+# page (tests/cli/check_animate_cli.py), numpy/pytest for python/tests, and
+# OpenMPI for the 2-rank sweep test (the CLI is built with MPI when it is found).
 case $what in
-  test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy" ;;
-esac
-# qdot animate's page is checked in a real browser (tests/cli/check_animate_cli.py)
-case $what in
-  test|bench) pkgs="$pkgs chromium" ;;
-esac
-case $what in
-  test|bench) pkgs="$pkgs python3-numpy python3-pytest" ;;  # python/tests
+  test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy chromium"
+              pkgs="$pkgs python3-numpy python3-pytest libopenmpi-dev openmpi-bin" ;;
 esac
 case $what in
   bench) pkgs="$pkgs g++ libginac-dev libgsl-dev" ;;
