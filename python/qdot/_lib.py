@@ -3,7 +3,8 @@
 #
 # Only the public API of include/qdot/*.h is declared here; the struct
 # layouts mirror those headers field for field (a field added in C must be
-# added here in the same place, or the offsets after it go wrong).
+# added here in the same place, or the offsets after it go wrong;
+# python/tests/test_layout.py checks every offset against the compiler).
 """Low-level ctypes declarations of libqdot (internal to the package)."""
 
 import ctypes
