@@ -30,30 +30,16 @@ Prints "N passed, N failed"; exit 1 on failure.
 import argparse
 import json
 import math
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 import sympy as sp
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "util"))
+from clicheck import check, run, close, finish  # noqa: E402  (tests/util/clicheck.py)
+
 EX = Path(__file__).resolve().parents[2] / "examples"
-results = {"passed": 0, "failed": 0}
-
-
-def check(name, ok, detail=""):
-    results["passed" if ok else "failed"] += 1
-    if not ok:
-        print(f"FAIL {name} {detail}")
-
-
-def run(qdot, *args):
-    p = subprocess.run([str(qdot), *args], capture_output=True, text=True, timeout=120)
-    return p.returncode, p.stdout, p.stderr
-
-
-def close(a, b, tol=1e-9):
-    return abs(a - b) <= tol * (1 + abs(b))
 
 
 def modes_json(qdot, name, *extra):
@@ -259,8 +245,7 @@ def main():
         f(qdot)
     with tempfile.TemporaryDirectory() as tmp:
         errors(qdot, Path(tmp))
-    print(f"{results['passed']} passed, {results['failed']} failed")
-    sys.exit(1 if results["failed"] else 0)
+    sys.exit(finish())
 
 
 if __name__ == "__main__":

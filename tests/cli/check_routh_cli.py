@@ -22,36 +22,13 @@ Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
 import json
 import math
-import subprocess
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "util"))
+from clicheck import check, run, ev, finish  # noqa: E402  (tests/util/clicheck.py)
+
 EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
-results = {'passed': 0, 'failed': 0}
-
-
-def check(name, ok, detail=''):
-    results['passed' if ok else 'failed'] += 1
-    if not ok:
-        print('FAIL %s %s' % (name, detail))
-
-
-def run(qdot, *args):
-    p = subprocess.run([qdot, *args], capture_output=True, text=True, timeout=60)
-    return p.returncode, p.stdout, p.stderr
-
-
-def ev(text, values):
-    """A printed expression (qdot's text syntax) at values ({name: number},
-    velocities named with a trailing ')."""
-    names = {k.replace("'", '_d'): v for k, v in values.items()}
-    expr = text.replace('^', '**')
-    for k in sorted(values, key=len, reverse=True):
-        if "'" in k:
-            expr = expr.replace(k, k.replace("'", '_d'))
-    env = {n: getattr(math, n) for n in ('sin', 'cos', 'tan', 'sqrt', 'exp', 'log', 'pi')}
-    env.update(names)
-    return eval(expr, {'__builtins__': {}}, env)
 
 
 def routh_json(qdot, model, ignore, *extra):
@@ -176,8 +153,7 @@ def main():
             test(qdot)
         except Exception as ex:  # a crash, bad JSON, a timeout
             check(test.__name__, False, repr(ex))
-    print('%d passed, %d failed' % (results['passed'], results['failed']))
-    return 1 if results['failed'] else 0
+    return finish()
 
 
 if __name__ == '__main__':

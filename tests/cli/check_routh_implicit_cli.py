@@ -21,33 +21,13 @@ import argparse
 import json
 import math
 import random
-import subprocess
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "util"))
+from clicheck import check, run, ev, finish  # noqa: E402  (tests/util/clicheck.py)
+
 EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
-results = {'passed': 0, 'failed': 0}
-
-
-def check(name, ok, detail=''):
-    results['passed' if ok else 'failed'] += 1
-    if not ok:
-        print('FAIL %s %s' % (name, detail))
-
-
-def run(qdot, *args):
-    p = subprocess.run([qdot, *args], capture_output=True, text=True, timeout=60)
-    return p.returncode, p.stdout, p.stderr
-
-
-def ev(text, values):
-    """A printed expression at values ({name: number}, velocities with a ')."""
-    expr = text.replace('^', '**')
-    for k in sorted(values, key=len, reverse=True):
-        expr = expr.replace(k, k.replace("'", '_d'))
-    env = {n: getattr(math, n) for n in ('sin', 'cos', 'sinh', 'cosh', 'sqrt', 'exp', 'log')}
-    env.update({k.replace("'", '_d'): v for k, v in values.items()})
-    return eval(expr, {'__builtins__': {}}, env)
 
 
 def full_ydd(y, yd, xd):
@@ -105,8 +85,7 @@ def main():
     implicit_text(qdot)
     implicit_json(qdot)
     closed_form_not_implicit(qdot)
-    print('%d passed, %d failed' % (results['passed'], results['failed']))
-    return 1 if results['failed'] else 0
+    return finish()
 
 
 if __name__ == '__main__':

@@ -40,26 +40,16 @@ Prints "N passed, N failed"; exit 1 on failure.
 import argparse
 import json
 import math
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 import sympy as sp
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "util"))
+from clicheck import check, run, finish  # noqa: E402  (tests/util/clicheck.py)
+
 EX = Path(__file__).resolve().parents[2] / "examples"
-results = {"passed": 0, "failed": 0}
-
-
-def check(name, ok, detail=""):
-    results["passed" if ok else "failed"] += 1
-    if not ok:
-        print(f"FAIL {name} {detail}")
-
-
-def run(qdot, *args):
-    p = subprocess.run([str(qdot), *args], capture_output=True, text=True, timeout=120)
-    return p.returncode, p.stdout, p.stderr
 
 
 def model(text):
@@ -316,8 +306,7 @@ def main():
     qdot = Path(ap.parse_args().build) / "qdot"
     for t in (scan_l4, scan_hoop, scan_inverted, scan_errors, scan_steady, singular_left_out, zvc, zvc_errors):
         t(qdot)
-    print(f"{results['passed']} passed, {results['failed']} failed")
-    return 1 if results["failed"] else 0
+    return finish()
 
 
 if __name__ == "__main__":
