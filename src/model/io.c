@@ -98,25 +98,10 @@ static bool add_output(parser *p, const char *name, token at, const qd_expr *x) 
 
 /* NAME '=' EXPR */
 static bool one_output(parser *p) {
-    qd__lex_next(&p->lx);
-    token at = p->lx.tok;
-    if (at.kind != TK_IDENT)
-        return qd__mdl_perr_tok(p, OUTPUT_USAGE, "expected an output's name, found %s",
-                                qd__lex_tk_name(at.kind));
-    char name[128];
-    snprintf(name, sizeof name, "%.*s", (int)(at.len < 127 ? at.len : 127), p->lx.src + at.off);
-    if (!output_name_fresh(p, name, at))
-        return false;
-    qd__lex_next(&p->lx);
-    if (p->lx.tok.kind != TK_EQ)
-        return qd__mdl_perr(p, at.off, at.len, "an output is defined where it is named: " OUTPUT_USAGE,
-                            "output '%s' has no definition", name);
-    qd__lex_next(&p->lx);
+    char name[QD_MDL_NAME_MAX];
+    token at;
     value v;
-    p->defining = name;
-    bool ok = qd__mdl_parse_expr(p, &v);
-    p->defining = NULL;
-    if (!ok)
+    if (!qd__mdl_named_definition(p, "output", OUTPUT_USAGE, output_name_fresh, name, &at, &v))
         return false;
     if (v.kind != VK_SCALAR)
         return qd__mdl_perr(p, v.off, v.len, "give one output per component",

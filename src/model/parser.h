@@ -307,6 +307,10 @@ bool qd__mdl_constraint_named(const qd_model *m, const char *name);
 int qd__mdl_coord_subscript(parser *p, const char *usage);
 bool qd__mdl_end_of_statement(parser *p);
 bool qd__mdl_fresh_name(parser *p, const char *what);
+#define QD_MDL_NAME_MAX 128
+bool qd__mdl_named_definition(parser *p, const char *noun, const char *usage,
+                              bool (*fresh)(parser *p, const char *name, token at),
+                              char name[QD_MDL_NAME_MAX], token *at, value *v);
 
 /* error.c: record the first error at a span. */
 bool qd__mdl_perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, ...)

@@ -139,25 +139,11 @@ static bool add_speed(parser *p, const char *name, token at, const qd_expr *def)
 
 /* NAME '=' EXPR */
 static bool one_speed(parser *p) {
-    qd__lex_next(&p->lx);
-    token at = p->lx.tok;
-    if (at.kind != TK_IDENT)
-        return qd__mdl_perr_tok(p, SPEED_USAGE, "expected a speed's name, found %s",
-                                qd__lex_tk_name(at.kind));
-    char name[128];
-    snprintf(name, sizeof name, "%.*s", (int)(at.len < 127 ? at.len : 127), p->lx.src + at.off);
-    if (!qd__mdl_fresh_name(p, "speed"))
-        return false;
-    qd__lex_next(&p->lx);
-    if (p->lx.tok.kind != TK_EQ)
-        return qd__mdl_perr(p, at.off, at.len, "a speed is defined where it is named: " SPEED_USAGE,
-                            "speed '%s' has no definition", name);
-    qd__lex_next(&p->lx);
+    char name[QD_MDL_NAME_MAX];
+    token at;
     value v;
-    p->defining = name;
-    bool ok = qd__mdl_parse_expr(p, &v);
-    p->defining = NULL;
-    return ok && check_definition(p, &v) && add_speed(p, name, at, v.c[0]);
+    return qd__mdl_named_definition(p, "speed", SPEED_USAGE, NULL, name, &at, &v) &&
+           check_definition(p, &v) && add_speed(p, name, at, v.c[0]);
 }
 
 /* speeds NAME '=' EXPR (',' NAME '=' EXPR)* */

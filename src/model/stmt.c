@@ -49,6 +49,38 @@ bool qd__mdl_end_of_statement(parser *p) {
                     qd__lex_tk_name(k));
 }
 
+/* NAME '=' EXPR, one item of a statement that defines new names (outputs,
+ * speeds): a name, fresh by fresh (NULL: qd__mdl_fresh_name), then its
+ * definition, parsed with the name as the one being defined (a definition
+ * that uses itself is an error).  noun words the messages, usage is the
+ * hint. */
+bool qd__mdl_named_definition(parser *p, const char *noun, const char *usage,
+                              bool (*fresh)(parser *p, const char *name, token at),
+                              char name[QD_MDL_NAME_MAX], token *at, value *v) {
+    const char *a = strchr("aeiou", noun[0]) ? "an" : "a";
+    qd__lex_next(&p->lx);
+    *at = p->lx.tok;
+    if (at->kind != TK_IDENT)
+        return qd__mdl_perr_tok(p, usage, "expected %s %s's name, found %s", a, noun,
+                                qd__lex_tk_name(at->kind));
+    snprintf(name, QD_MDL_NAME_MAX, "%.*s",
+             (int)(at->len < QD_MDL_NAME_MAX - 1 ? at->len : QD_MDL_NAME_MAX - 1),
+             p->lx.src + at->off);
+    if (!(fresh ? fresh(p, name, *at) : qd__mdl_fresh_name(p, noun)))
+        return false;
+    qd__lex_next(&p->lx);
+    if (p->lx.tok.kind != TK_EQ) {
+        char hint[256];
+        snprintf(hint, sizeof hint, "%s %s is defined where it is named: %s", a, noun, usage);
+        return qd__mdl_perr(p, at->off, at->len, hint, "%s '%s' has no definition", noun, name);
+    }
+    qd__lex_next(&p->lx);
+    p->defining = name;
+    bool ok = qd__mdl_parse_expr(p, v);
+    p->defining = NULL;
+    return ok;
+}
+
 /* A name not yet used for anything else. */
 bool qd__mdl_fresh_name(parser *p, const char *what) {
     char name[128];
