@@ -38,10 +38,10 @@ typedef enum cli_lqr_format { CLI_LQR_TEXT, CLI_LQR_JSON, CLI_LQR_C } cli_lqr_fo
 bool cli_lqr_print(FILE *out, const qd_care_result *r, const char *const *states,
                    const char *const *inputs, cli_lqr_format fmt);
 
-/* The design's JSON object into j (the keys above; the eigenvalues under
- * eig_key), for a caller that nests it in its own document. */
+/* The design's JSON object into j (the keys above), for a caller that nests
+ * it in its own document. */
 void cli_lqr_json(cli_json *j, const qd_care_result *r, const char *const *states,
-                  const char *const *inputs, const char *eig_key);
+                  const char *const *inputs);
 
 /* A reader's error under the option's text, with a caret at its place:
  * QD_EXIT_USAGE. */

@@ -145,7 +145,7 @@ int cli_lqr_json_design(cli_json *j, const qd_statespace *s, const qd_care_resul
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    cli_lqr_json(j, r, names, names + s->nx, "closed_loop_eigenvalues");
+    cli_lqr_json(j, r, names, names + s->nx);
     free(names);
     return QD_EXIT_OK;
 }

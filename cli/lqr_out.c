@@ -70,13 +70,13 @@ static void json_matrix(cli_json *j, const char *key, size_t rows, size_t cols,
 }
 
 void cli_lqr_json(cli_json *j, const qd_care_result *r, const char *const *states,
-                  const char *const *inputs, const char *eig_key) {
+                  const char *const *inputs) {
     cli_json_begin_object(j);
     json_names(j, "states", r->n, states);
     json_names(j, "inputs", r->m, inputs);
     json_matrix(j, "K", r->m, r->n, r->K);
     json_matrix(j, "X", r->n, r->n, r->X);
-    cli_json_key(j, eig_key);
+    cli_json_key(j, "closed_loop_eigenvalues");
     cli_json_begin_array(j);
     for (size_t k = 0; k < r->n; k++) {
         cli_json_begin_array(j);
@@ -96,7 +96,7 @@ static bool put_json(qd_buf *b, const qd_care_result *r, const char *const *stat
                      const char *const *inputs) {
     cli_json j;
     cli_json_init(&j, b);
-    cli_lqr_json(&j, r, states, inputs, "closed_loop");
+    cli_lqr_json(&j, r, states, inputs);
     qd_buf_puts(b, "\n");
     return cli_json_ok(&j);
 }

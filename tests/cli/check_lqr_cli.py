@@ -64,7 +64,7 @@ def double_integrator(qdot):
               all(close(got['X'][i][j], want[i][j]) for i in range(2) for j in range(2)))
         roots = sorted([(-k2 + cmath.sqrt(k2 * k2 - 4 * k1)) / 2,
                         (-k2 - cmath.sqrt(k2 * k2 - 4 * k1)) / 2], key=lambda z: (-z.real, -z.imag))
-        eig = [complex(re_, im) for re_, im in got['closed_loop']]
+        eig = [complex(re_, im) for re_, im in got['closed_loop_eigenvalues']]
         check('double integrator closed loop %s' % ((q1, q2, r),),
               all(abs(a - b) <= 1e-9 * max(1, abs(b)) for a, b in zip(eig, roots)),
               '%s vs %s' % (eig, roots))

@@ -98,7 +98,7 @@ def check_solved(k, system, got, failures, worst):
     A, B, Q, R = system
     n, m = B.shape
     X, K, res = np.array(got['X']), np.array(got['K']), got['residual']
-    eig = [re for re, im in got['closed_loop']]
+    eig = [re for re, im in got['closed_loop_eigenvalues']]
     Xs = scipy.linalg.solve_continuous_are(A, B, Q, R)
     Ks = np.linalg.solve(R, B.T @ Xs)
     G = B @ np.linalg.solve(R, B.T)
