@@ -75,7 +75,22 @@ static size_t term_ops(const qd_expr *t) {
     return t->kind == QD_MUL ? mul_ops(t) : ops(t);
 }
 
+static size_t ops_of(const qd_expr *e);
+
+/* Interned nodes never change, so a compound node's count is kept in it
+ * (the one field of the node written after it is made). */
 static size_t ops(const qd_expr *e) {
+    bool compound = e->kind == QD_ADD || e->kind == QD_MUL || e->kind == QD_POW ||
+                    e->kind == QD_FUNC;
+    if (compound && e->u.ops_memo)
+        return e->u.ops_memo - 1;
+    size_t n = ops_of(e);
+    if (compound)
+        ((qd_expr *)e)->u.ops_memo = n + 1;
+    return n;
+}
+
+static size_t ops_of(const qd_expr *e) {
     size_t n = 0;
     switch ((qd_kind)e->kind) {
     case QD_RATIONAL:

@@ -111,17 +111,17 @@ void *qd__alloc(qd_ctx *ctx, size_t size) {
 
 static bool table_grow(qd_ctx *ctx) {
     size_t cap = ctx->table_cap ? ctx->table_cap * 2 : 4096;
-    const qd_expr **t = qd__mem_calloc(ctx->alloc, cap, sizeof *t);
+    struct qd__slot *t = qd__mem_calloc(ctx->alloc, cap, sizeof *t);
     if (!t)
         return false;
     for (size_t i = 0; i < ctx->table_cap; i++) {
-        const qd_expr *e = ctx->table[i];
-        if (!e)
+        struct qd__slot slot = ctx->table[i];
+        if (!slot.e)
             continue;
-        size_t j = (size_t)e->hash & (cap - 1);
-        while (t[j])
+        size_t j = (size_t)slot.hash & (cap - 1);
+        while (t[j].e)
             j = (j + 1) & (cap - 1);
-        t[j] = e;
+        t[j] = slot;
     }
     qd__free(ctx->table);
     ctx->table = t;
@@ -153,9 +153,9 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
     }
     uint64_t h = node_hash(proto, nargs, args);
     size_t i = (size_t)h & (ctx->table_cap - 1);
-    for (; ctx->table[i]; i = (i + 1) & (ctx->table_cap - 1))
-        if (node_equal(ctx->table[i], proto, h, nargs, args))
-            return ctx->table[i];
+    for (; ctx->table[i].e; i = (i + 1) & (ctx->table_cap - 1))
+        if (ctx->table[i].hash == h && node_equal(ctx->table[i].e, proto, h, nargs, args))
+            return ctx->table[i].e;
     assert(qd__is_canonical(proto, nargs, args));
 
     qd_expr *e = qd__alloc(ctx, sizeof *e + nargs * sizeof e->args[0]);
@@ -180,7 +180,7 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
         memcpy(slots, proto->u.fn.slots, proto->u.fn.nslots * sizeof *slots);
         e->u.fn.slots = slots;
     }
-    ctx->table[i] = e;
+    ctx->table[i] = (struct qd__slot){h, e};
     ctx->table_len++;
     return e;
 }

@@ -61,6 +61,10 @@ struct qd_expr {
             const unsigned *slots;     /* QD_UDERIV: sorted slot list */
             uint32_t nslots;
         } fn;
+        /* QD_ADD, QD_MUL, QD_POW, QD_FUNC: qd_count_ops + 1 once counted,
+         * else 0.  A memo, not part of the node's identity: the simplifier
+         * compares the sizes of candidates that share most subterms. */
+        size_t ops_memo;
     } u;
     const qd_expr *args[];
 };
@@ -73,8 +77,9 @@ typedef struct qd_symtab_entry {
 struct qd_ctx {
     const qd_allocator *alloc;   /* NULL: the C library's (mem.h) */
     qd_arena arena;
-    /* unique table: open addressing over node pointers */
-    const qd_expr **table;
+    /* unique table: open addressing over (hash, node) slots, the hash kept
+     * beside the pointer so that a probe reads the node only on a match */
+    struct qd__slot { uint64_t hash; const qd_expr *e; } *table;
     size_t table_cap, table_len;
     /* symbols by name */
     qd_ptrmap symtab;            /* interned name -> its symbol */
