@@ -32,6 +32,7 @@
 
 #include "qdot/qdot.h"
 #include "group/group.h"
+#include "util/fault.h"
 #include <complex.h>  /* after qdot's headers: its macro I is a parameter name there */
 
 static const double PI = 3.14159265358979323846;
@@ -734,6 +735,105 @@ static void test_not_point_group(void **state) {
     unbuild(&b);
 }
 
+/* The ring of N equal masses in the plane (issue 19): element k + N f is
+ * r^k s^f, R = C_z(2 pi k / N) times the mirror xz if f (the table of
+ * dihedral_mul).  C_Nv with A1, A2, B1, B2 and E_1 .. E_(N/2 - 1), E_k the
+ * row with chi(C_N) = 2 cos(2 pi k / N) (Cotton's C_nv tables). */
+static void test_ring(void **state) {
+    (void)state;
+    enum { N = 1000 };
+    size_t *m = dihedral_mul(N);
+    double *R = malloc(2 * N * 9 * sizeof *R);
+    char(*labels)[12] = malloc((N / 2 + 3) * sizeof *labels), name[16];
+    for (size_t x = 0; x < 2 * N; x++) {
+        rot_z(2 * PI * (double)(x % N) / N, R + 9 * x);
+        for (int i = 0; i < 3 && x >= N; i++)
+            R[9 * x + 3 * i + 1] *= -1;  /* times diag(1, -1, 1) on the right */
+    }
+    qd_ctx *ctx = qd_ctx_new();
+    qd__group g;
+    qd__chartab t;
+    struct timespec t0, t1;
+    assert_int_equal(qd__group_from_table(ctx, 2 * N, m, &g), QD_OK);
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    assert_int_equal(qd__pointgroup_name(ctx, &g, R, name), QD_OK);
+    assert_int_equal(qd__irrep_labels(ctx, &g, R, &t, labels), QD_OK);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    printf("C%dv: name and %zu labels in %.3f s\n", N, t.n,
+           (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+    assert_string_equal(name, "C1000v");
+    size_t seen[N / 2] = {0};
+    for (size_t i = 0; i < t.n; i++) {
+        double c1 = chi(&t, i, g.class_of[1]), cs = chi(&t, i, g.class_of[N]);
+        if (labels[i][0] == 'E') {
+            int k = atoi(labels[i] + 1);
+            assert_true(k >= 1 && k < N / 2 && !seen[k]++);
+            assert_true(fabs(c1 - 2 * cos(2 * PI * k / N)) < 1e-12);
+        } else {
+            char want[4] = {c1 > 0 ? 'A' : 'B', cs > 0 ? '1' : '2', 0};
+            assert_string_equal(labels[i], want);
+        }
+    }
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+    free(labels);
+    free(R);
+    free(m);
+}
+
+/* Every allocation of the group, its table, name and labels refused in turn
+ * (tests/util/fault.h): each run gives the right answer or a clean
+ * QD_ERR_NOMEM with every block returned.  Td takes Burnside's path, C6v
+ * (D_6) the closed form. */
+typedef struct fault_case {
+    const mgroup *m;
+    const char *name;
+    const char *labels;
+} fault_case;
+
+static qd_status fault_body(qd_ctx *ctx, qt_faulty *f, void *data) {
+    (void)f;
+    const fault_case *c = data;
+    qd__group g;
+    qd__chartab t = {0};
+    char name[16], labels[MAXC][12], all[128];
+    const char *v[MAXC];
+    qd_status st = qd__group_from_table(ctx, c->m->n, c->m->mul, &g);
+    if (st == QD_OK)
+        st = qd__group_characters(ctx, &g, &t);
+    if (st == QD_OK)
+        st = qd__pointgroup_name(ctx, &g, c->m->R, name);
+    if (st == QD_OK)
+        st = qd__irrep_labels(ctx, &g, c->m->R, &t, labels);
+    if (st == QD_OK) {
+        assert_string_equal(name, c->name);
+        for (size_t i = 0; i < t.n; i++)
+            v[i] = labels[i];
+        join_sorted(t.n, v, all, sizeof all);
+        assert_string_equal(all, c->labels);
+    }
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    return st;
+}
+
+static void test_faults(void **state) {
+    (void)state;
+    const double td[][9] = {S4Z, C3D}, c6v[][9] = {{0}, SXZ};
+    double g2[2][9];
+    memcpy(g2, c6v, sizeof g2);
+    rot_z(2 * PI / 6, g2[0]);
+    fault_case a = {matrix_group(2, &td[0][0]), "Td", "A1 A2 E T1 T2"};
+    fault_case b = {matrix_group(2, &g2[0][0]), "C6v", "A1 A2 B1 B2 E1 E2"};
+    qt_fault_stats sa = qt_fault_loop("Td: group, characters, name, labels", fault_body, &a, 1);
+    qt_fault_stats sb = qt_fault_loop("C6v: group, characters, name, labels", fault_body, &b, 1);
+    assert_true(sa.nomem > 5 && sb.nomem > 5);
+    free((void *)a.m);
+    free((void *)b.m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_c2v),       cmocka_unit_test(test_c3v),      cmocka_unit_test(test_c4v),
@@ -741,6 +841,7 @@ int main(void) {
         cmocka_unit_test(test_oh),        cmocka_unit_test(test_cyclic),   cmocka_unit_test(test_dihedral),
         cmocka_unit_test(test_quaternion), cmocka_unit_test(test_s5),      cmocka_unit_test(test_not_groups),
         cmocka_unit_test(test_point_groups), cmocka_unit_test(test_not_point_group),
+        cmocka_unit_test(test_ring),      cmocka_unit_test(test_faults),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
