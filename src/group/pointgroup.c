@@ -341,10 +341,13 @@ static void analyze(const qd__group *g, const op *ops, pg *p) {
 /* ops for every element, and whether R is a faithful orthogonal
  * representation of g at all. */
 static qd_status describe(qd_ctx *ctx, const qd__group *g, const double *R, pg *p, bool *is_pg) {
-    if (!g || !g->mul || !R) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "point group: a group and its 3x3 matrices are needed");
+    *is_pg = false;
+    if (!g || !g->mul) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "point group: no group given");
         return QD_ERR_ARG;
     }
+    if (!R)  /* an abstract group: not an error, just no geometry */
+        return QD_OK;
     op *ops = qd__malloc(ctx, g->order * sizeof *ops);
     size_t *pw = qd__malloc(ctx, g->order * sizeof *pw);
     qd_status st = ops && pw ? QD_OK : QD_ERR_NOMEM;
@@ -448,7 +451,7 @@ static bool all_distinct(size_t n, char (*labels)[12]) {
 
 qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R, const qd__chartab *t,
                            char (*labels)[12]) {
-    if (!t || !labels || (g && t->n != g->nclass)) {
+    if (!g || !t || !labels || t->n != g->nclass) {
         qd_ctx_error(ctx, QD_ERR_ARG, "irrep labels: a character table of the group is needed");
         return QD_ERR_ARG;
     }

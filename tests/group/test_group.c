@@ -747,9 +747,9 @@ static void test_icosahedral(void **state) {
     unbuild(&b);
 }
 
-/* A group that is not a point group (the quaternions, given the matrices
- * of C2v four times over) or matrices that do not represent the table: no
- * name, labels Gamma1, Gamma2, ... */
+/* Matrices that do not represent the table (one not orthogonal, two
+ * elements given the same matrix) or no matrices: no name, labels Gamma1,
+ * Gamma2, ..., and no error. */
 static void test_not_point_group(void **state) {
     (void)state;
     const double gens[][9] = {C2Z, SXZ};
@@ -767,6 +767,12 @@ static void test_not_point_group(void **state) {
     assert_int_equal(qd__irrep_labels(b.ctx, &b.g, R, &b.t, labels), QD_OK);
     assert_string_equal(labels[0], "Gamma1");
     assert_string_equal(labels[3], "Gamma4");
+    strcpy(name, "x");  /* no matrices at all: an abstract group, not an error */
+    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, NULL, name), QD_OK);
+    assert_string_equal(name, "");
+    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, NULL, &b.t, labels), QD_OK);
+    assert_string_equal(labels[1], "Gamma2");
+    assert_int_equal(qd_ctx_status(b.ctx), QD_OK);
     unbuild(&b);
 }
 
