@@ -49,4 +49,8 @@ qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R,
 /* A generating set of g, at most log2(order) elements for a group: gens must
  * hold order entries.  Returns how many, or SIZE_MAX when out of memory. */
 size_t qd__group_generators(qd_ctx *ctx, const qd__group *g, size_t *gens);
+
+/* Within src/group (product.c): t allocated for g's classes is filled,
+ * unsorted, when g = H x C2 (*done true); otherwise left alone. */
+qd_status qd__group_product_table(qd_ctx *ctx, const qd__group *g, qd__chartab *t, bool *done);
 #endif

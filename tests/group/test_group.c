@@ -466,6 +466,131 @@ static void test_dihedral(void **state) {
     check_dihedral(1000, true);
 }
 
+/* D_n x C2 (D_nh for even n: the ring of masses moving in space), element
+ * x + 2n e for x of dihedral_mul(n) and e in C2.  Its irreducible characters
+ * are D_n's times +-1 on e (written here from the dihedral closed form, not
+ * from the library): each computed row must be one of them, and each of
+ * them appear. */
+static size_t *dnh_mul(size_t n) {
+    size_t N = 2 * n, M = 2 * N, *d = dihedral_mul(n), *m = malloc(M * M * sizeof *m);
+    for (size_t x = 0; x < M; x++)
+        for (size_t y = 0; y < M; y++)
+            m[x * M + y] = d[(x % N) * N + y % N] + N * ((x / N + y / N) % 2);
+    free(d);
+    return m;
+}
+
+/* chi of D_n's irrep j (0, 1: trivial and sign of the reflections; 2, 3:
+ * the two with r -> -1 for even n; then E_(j-3) or E_(j-1)) at r^k s^f. */
+static double dihedral_chi(size_t n, size_t j, size_t k, size_t f) {
+    size_t ones = n % 2 ? 2 : 4;
+    double par = k % 2 ? -1 : 1;
+    if (j < ones) {
+        double v[4] = {1, f ? -1 : 1, par, f ? -par : par};
+        return v[j];
+    }
+    return f ? 0 : 2 * cos(2 * PI * (double)((j - ones + 1) * k % n) / (double)n);
+}
+
+static void check_dnh(size_t n, bool timed) {
+    size_t N = 2 * n, M = 2 * N, *m = dnh_mul(n), nd = n % 2 ? (n - 1) / 2 + 2 : n / 2 + 3;
+    qd_ctx *ctx = qd_ctx_new();
+    qd__group g;
+    qd__chartab t;
+    clock_t c0 = clock();
+    assert_int_equal(qd__group_from_table(ctx, M, m, &g), QD_OK);
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    double secs = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    if (timed) {
+        printf("D_%zu x C2 (order %zu, %zu classes): group and character table in %.3f s of CPU\n", n, M,
+               g.nclass, secs);
+        assert_true(secs < 2 * TIME_LIMIT);
+    }
+    assert_int_equal(g.nclass, 2 * nd);
+    bool *hit = calloc(2 * nd, sizeof *hit);
+    for (size_t i = 0; i < t.n; i++) {
+        size_t found = 0;
+        for (size_t j = 0; j < nd; j++)
+            for (size_t e = 0; e < 2; e++) {
+                bool same = true;
+                for (size_t c = 0; c < g.nclass && same; c++) {
+                    size_t x = g.class_rep[c], k = x % n, f = x % N / n, odd = x / N;
+                    double want = dihedral_chi(n, j, k, f) * (e && odd ? -1 : 1);
+                    same = cabs(chi(&t, i, c) - want) < 1e-12;
+                }
+                if (same) {
+                    found++;
+                    assert_false(hit[2 * j + e]);
+                    hit[2 * j + e] = true;
+                }
+            }
+        assert_int_equal(found, 1);
+    }
+    if (n <= 50)
+        check_theorems(&g, &t);
+    free(hit);
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+    free(m);
+}
+
+static void test_dnh(void **state) {
+    (void)state;
+    check_dnh(4, false);
+    check_dnh(6, false);
+    check_dnh(100, false);
+    check_dnh(1000, true);
+}
+
+/* C_p x C_q with p, q odd (no involution, so neither closed form nor the
+ * H x C2 split applies: Burnside's method on p q classes, complex
+ * characters): every row is (a, b) -> exp(2 pi i (j a / p + l b / q)) for
+ * one (j, l), each pair once, to 1e-13.  169 classes take the Freivalds
+ * check, and with the fixed seed two pairs of 13 x 13's eigenvalues fall
+ * closer than the split gap, so it goes through split_cluster (seen with a
+ * trace when this was written). */
+static void check_abelian(size_t p, size_t q) {
+    size_t n = p * q, *m = malloc(n * n * sizeof *m);
+    for (size_t x = 0; x < n; x++)
+        for (size_t y = 0; y < n; y++)
+            m[x * n + y] = (x % p + y % p) % p + p * ((x / p + y / p) % q);
+    qd_ctx *ctx = qd_ctx_new();
+    qd__group g;
+    qd__chartab t;
+    assert_int_equal(qd__group_from_table(ctx, n, m, &g), QD_OK);
+    assert_int_equal(g.nclass, n);
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    bool *hit = calloc(n, sizeof *hit);
+    for (size_t i = 0; i < n; i++) {
+        /* (j, l) from the generators (1, 0) and (0, 1) */
+        double complex c1 = chi(&t, i, g.class_of[1]), c2 = chi(&t, i, g.class_of[p]);
+        size_t j = (size_t)((lround(carg(c1) * (double)p / (2 * PI)) + (long)p) % (long)p);
+        size_t l = (size_t)((lround(carg(c2) * (double)q / (2 * PI)) + (long)q) % (long)q);
+        assert_false(hit[j + p * l]);
+        hit[j + p * l] = true;
+        for (size_t x = 0; x < n; x++) {
+            double a = 2 * PI * ((double)(j * (x % p) % p) / (double)p + (double)(l * (x / p) % q) / (double)q);
+            assert_true(cabs(chi(&t, i, g.class_of[x]) - cexp(I * a)) < 1e-13);
+        }
+    }
+    if (n <= 128)
+        check_theorems(&g, &t);
+    free(hit);
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+    free(m);
+}
+
+static void test_abelian(void **state) {
+    (void)state;
+    check_abelian(3, 3);
+    check_abelian(3, 9);
+    check_abelian(11, 11);
+    check_abelian(13, 13);
+}
+
 /* The quaternion group: element 4 s + u is (-1)^s times the unit u of
  * 1, i, j, k.  Not dihedral (one involution), so it takes Burnside's path;
  * its table is D4's: four one-dimensional rows and a two-dimensional one
@@ -880,6 +1005,7 @@ int main(void) {
         cmocka_unit_test(test_c2v),       cmocka_unit_test(test_c3v),      cmocka_unit_test(test_c4v),
         cmocka_unit_test(test_d3h),       cmocka_unit_test(test_d4h),      cmocka_unit_test(test_td),
         cmocka_unit_test(test_oh),        cmocka_unit_test(test_cyclic),   cmocka_unit_test(test_dihedral),
+        cmocka_unit_test(test_dnh),       cmocka_unit_test(test_abelian),
         cmocka_unit_test(test_quaternion), cmocka_unit_test(test_s5),      cmocka_unit_test(test_not_groups),
         cmocka_unit_test(test_point_groups), cmocka_unit_test(test_not_point_group),
         cmocka_unit_test(test_icosahedral), cmocka_unit_test(test_ring),      cmocka_unit_test(test_faults),
