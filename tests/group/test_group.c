@@ -949,6 +949,53 @@ static void test_ring(void **state) {
     free(m);
 }
 
+/* The ring moving in space: D_N x {E, sigma_h} (dnh_mul; sigma_h multiplies
+ * the C_Nv matrices of test_ring), named D1000h.  For even N it holds the
+ * inversion, so every label ends in g or u: A1g .. B2u and E_k g/u for
+ * k = 1 .. N/2 - 1, each once, E_k with chi(C_N) = 2 cos(2 pi k / N). */
+static void test_ring_in_space(void **state) {
+    (void)state;
+    enum { N = 1000, M = 4 * N };
+    size_t *m = dnh_mul(N), nc = 2 * (N / 2 + 3);
+    double *R = malloc(M * 9 * sizeof *R);
+    char(*labels)[12] = malloc(nc * sizeof *labels), name[16];
+    for (size_t x = 0; x < M; x++) {
+        rot_z(2 * PI * (double)(x % N) / N, R + 9 * x);
+        for (int i = 0; i < 3 && x % (2 * N) >= N; i++)
+            R[9 * x + 3 * i + 1] *= -1;
+        for (int j = 0; j < 3 && x >= 2 * N; j++)
+            R[9 * x + 6 + j] *= -1;  /* sigma_h on the left: z -> -z */
+    }
+    qd_ctx *ctx = qd_ctx_new();
+    qd__group g;
+    qd__chartab t;
+    assert_int_equal(qd__group_from_table(ctx, M, m, &g), QD_OK);
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    assert_int_equal(qd__pointgroup_name(ctx, &g, R, name), QD_OK);
+    assert_string_equal(name, "D1000h");
+    assert_int_equal(qd__irrep_labels(ctx, &g, R, &t, labels), QD_OK);
+    size_t seen[2][N / 2] = {{0}}, ones = 0;
+    for (size_t i = 0; i < t.n; i++) {
+        size_t len = strlen(labels[i]);
+        char par = labels[i][len - 1];
+        assert_true(par == 'g' || par == 'u');
+        if (labels[i][0] == 'E') {
+            int k = atoi(labels[i] + 1);
+            assert_true(k >= 1 && k < N / 2 && !seen[par == 'u'][k]++);
+            assert_true(cabs(chi(&t, i, g.class_of[1]) - 2 * cos(2 * PI * k / N)) < 1e-12);
+        } else {
+            ones++;
+        }
+    }
+    assert_int_equal(ones, 8);
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+    free(labels);
+    free(R);
+    free(m);
+}
+
 /* Every allocation of the group, its table, name and labels refused in turn
  * (tests/util/fault.h): each run gives the right answer or a clean
  * QD_ERR_NOMEM with every block returned.  Td takes Burnside's path, C6v
@@ -1008,7 +1055,8 @@ int main(void) {
         cmocka_unit_test(test_dnh),       cmocka_unit_test(test_abelian),
         cmocka_unit_test(test_quaternion), cmocka_unit_test(test_s5),      cmocka_unit_test(test_not_groups),
         cmocka_unit_test(test_point_groups), cmocka_unit_test(test_not_point_group),
-        cmocka_unit_test(test_icosahedral), cmocka_unit_test(test_ring),      cmocka_unit_test(test_faults),
+        cmocka_unit_test(test_icosahedral), cmocka_unit_test(test_ring),
+        cmocka_unit_test(test_ring_in_space),      cmocka_unit_test(test_faults),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
