@@ -15,9 +15,13 @@
  *     H = A + A^H,   A = sum_j (t_j + i s_j) B_j,   t, s random,
  * therefore has the common eigenvectors as its own, with distinct
  * eigenvalues almost surely, and zheev splits all the classes in one call
- * with orthonormal (well-conditioned) vectors.  The dimension follows from
- * |u(0)|^2 = d^2 / |G| and is rounded to an integer; the result is checked by
- * both orthogonality relations and sum d^2 = |G|, or refused. */
+ * with orthonormal (well-conditioned) vectors; eigenvalues that nearly
+ * coincide are split again on their subspace by another combination.  The
+ * dimension follows from |u(0)|^2 = d^2 / |G| and is rounded to an integer,
+ * the row from the Rayleigh quotients of the B_j (second-order accurate).
+ * Groups H x C2 take H's table (product.c) before Burnside is tried.  Every
+ * result is checked by both orthogonality relations and sum d^2 = |G|, or
+ * refused. */
 #include "group.h"
 #include "../base/mem.h"
 
