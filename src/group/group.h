@@ -40,6 +40,7 @@ void qd__chartab_free(qd__chartab *t);
 qd_status qd__pointgroup_name(qd_ctx *ctx, const qd__group *g, const double *R, char name[16]);
 qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R,
                            const qd__chartab *t, char (*labels)[12]);
+
 /* Additions after the contract (additive only).
  * R may be NULL (an abstract group): qd__pointgroup_name gives "" and
  * qd__irrep_labels Gamma1, Gamma2, ... in the table's row order, both QD_OK;
