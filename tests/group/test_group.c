@@ -744,6 +744,63 @@ static void join_sorted(size_t n, const char **v, char *out, size_t size) {
     }
 }
 
+/* Td is the symmetric group of the tetrahedron's four vertices (1,1,1),
+ * (1,-1,-1), (-1,1,-1), (-1,-1,1): each of the 24 matrices permutes them,
+ * and no two alike.  The same group, its elements renumbered at random
+ * (identity no longer first), keeps its class sizes, name and labels. */
+static void test_td_vertices(void **state) {
+    (void)state;
+    static const double V[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    const double gens[][9] = {S4Z, C3D};
+    built b = build(2, &gens[0][0]);
+    assert_int_equal(b.m->n, 24);
+    int seen[256] = {0};
+    for (size_t e = 0; e < 24; e++) {
+        int code = 0;
+        for (int v = 0; v < 4; v++) {
+            const double *R = &b.m->R[9 * e];
+            double w[3] = {0};
+            for (int i = 0; i < 3; i++)
+                w[i] = R[3 * i] * V[v][0] + R[3 * i + 1] * V[v][1] + R[3 * i + 2] * V[v][2];
+            int hit = -1;
+            for (int u = 0; u < 4; u++)
+                if (fabs(w[0] - V[u][0]) + fabs(w[1] - V[u][1]) + fabs(w[2] - V[u][2]) < 1e-12)
+                    hit = u;
+            assert_true(hit >= 0);
+            code = 4 * code + hit;
+        }
+        assert_int_equal(seen[code]++, 0);
+    }
+    /* renumber: element e becomes p[e] */
+    size_t n = 24, p[24], *mul = malloc(n * n * sizeof *mul);
+    double R[24 * 9];
+    for (size_t e = 0; e < n; e++)
+        p[e] = (7 * e + 5) % n;
+    for (size_t a = 0; a < n; a++) {
+        memcpy(R + 9 * p[a], b.m->R + 9 * a, 9 * sizeof *R);
+        for (size_t c = 0; c < n; c++)
+            mul[p[a] * n + p[c]] = p[b.m->mul[a * n + c]];
+    }
+    qd__group g;
+    qd__chartab t;
+    char name[16], labels[5][12];
+    assert_int_equal(qd__group_from_table(b.ctx, n, mul, &g), QD_OK);
+    assert_int_equal(g.identity, 5);
+    assert_int_equal(qd__group_characters(b.ctx, &g, &t), QD_OK);
+    check_theorems(&g, &t);
+    assert_int_equal(qd__pointgroup_name(b.ctx, &g, R, name), QD_OK);
+    assert_string_equal(name, "Td");
+    assert_int_equal(qd__irrep_labels(b.ctx, &g, R, &t, labels), QD_OK);
+    const char *v[5] = {labels[0], labels[1], labels[2], labels[3], labels[4]};
+    char all[64];
+    join_sorted(5, v, all, sizeof all);
+    assert_string_equal(all, "A1 A2 E T1 T2");
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    free(mul);
+    unbuild(&b);
+}
+
 typedef struct named {
     const char *name;
     const char *labels;  /* Cotton's Mulliken symbols, sorted ("a"/"b": the halves of a complex E) */
@@ -1054,7 +1111,8 @@ int main(void) {
         cmocka_unit_test(test_oh),        cmocka_unit_test(test_cyclic),   cmocka_unit_test(test_dihedral),
         cmocka_unit_test(test_dnh),       cmocka_unit_test(test_abelian),
         cmocka_unit_test(test_quaternion), cmocka_unit_test(test_s5),      cmocka_unit_test(test_not_groups),
-        cmocka_unit_test(test_point_groups), cmocka_unit_test(test_not_point_group),
+        cmocka_unit_test(test_td_vertices), cmocka_unit_test(test_point_groups),
+        cmocka_unit_test(test_not_point_group),
         cmocka_unit_test(test_icosahedral), cmocka_unit_test(test_ring),
         cmocka_unit_test(test_ring_in_space),      cmocka_unit_test(test_faults),
     };
