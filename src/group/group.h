@@ -40,4 +40,10 @@ void qd__chartab_free(qd__chartab *t);
 qd_status qd__pointgroup_name(qd_ctx *ctx, const qd__group *g, const double *R, char name[16]);
 qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R,
                            const qd__chartab *t, char (*labels)[12]);
+/* Additions after the contract (additive only). */
+#define QD__GROUP_MAX_ORDER 4096   /* the table alone is order^2 indices: 128 MiB here */
+
+/* A generating set of g, at most log2(order) elements for a group: gens must
+ * hold order entries.  Returns how many, or SIZE_MAX when out of memory. */
+size_t qd__group_generators(qd_ctx *ctx, const qd__group *g, size_t *gens);
 #endif
