@@ -31,31 +31,45 @@ static size_t mul(const qd__group *g, size_t a, size_t b) {
     return g->mul[a * g->order + b];
 }
 
+static qd_status twice(qd_ctx *ctx, size_t elem, const char *where, size_t a) {
+    qd_ctx_error(ctx, QD_ERR_ARG, "not a group: element %zu appears twice in the %s of %zu", elem, where, a);
+    return QD_ERR_ARG;
+}
+
 /* Every row and every column a permutation of the elements: closure and
- * unique solutions of a x = b and x a = b.  seen is scratch of 2n entries. */
-static qd_status check_latin(qd_ctx *ctx, const qd__group *g, size_t *seen) {
-    size_t n = g->order, *row = seen, *col = seen + n;
+ * unique solutions of a x = b and x a = b.  The columns are checked while the
+ * rows are read, in a bit per (column, element): walking the columns of the
+ * table itself missed the cache on every entry. */
+static qd_status check_latin(qd_ctx *ctx, const qd__group *g) {
+    size_t n = g->order, words = (n * n + 63) / 64;
     for (size_t i = 0; i < n * n; i++)
         if (g->mul[i] >= n) {
             qd_ctx_error(ctx, QD_ERR_ARG, "not a group: %zu*%zu = %zu is outside the %zu elements",
                          i / n, i % n, g->mul[i], n);
             return QD_ERR_ARG;
         }
-    for (size_t i = 0; i < 2 * n; i++)
-        seen[i] = SIZE_MAX;
-    for (size_t a = 0; a < n; a++)
+    size_t *row = qd__malloc(ctx, n * sizeof *row);
+    uint64_t *col = qd__calloc(ctx, words, sizeof *col);
+    qd_status st = row && col ? QD_OK : QD_ERR_NOMEM;
+    for (size_t i = 0; i < n && st == QD_OK; i++)
+        row[i] = SIZE_MAX;
+    for (size_t a = 0; a < n && st == QD_OK; a++)
         for (size_t b = 0; b < n; b++) {
-            size_t r = mul(g, a, b), c = mul(g, b, a);
-            if (row[r] == a || col[c] == a) {
-                bool in_row = row[r] == a;
-                qd_ctx_error(ctx, QD_ERR_ARG, "not a group: element %zu appears twice in the %s of %zu",
-                             in_row ? r : c, in_row ? "row" : "column", a);
-                return QD_ERR_ARG;
+            size_t r = mul(g, a, b), bit = b * n + r;
+            if (row[r] == a) {
+                st = twice(ctx, r, "row", a);
+                break;
+            }
+            if (col[bit / 64] >> (bit % 64) & 1) {
+                st = twice(ctx, r, "column", b);
+                break;
             }
             row[r] = a;
-            col[c] = a;
+            col[bit / 64] |= (uint64_t)1 << (bit % 64);
         }
-    return QD_OK;
+    qd__free(col);
+    qd__free(row);
+    return st;
 }
 
 /* In a Latin square an identity is e with e*b = b and b*e = b for all b;
@@ -133,21 +147,33 @@ free_scratch:
     return k;
 }
 
-/* Light's test on the generators (see the head of the file). */
+/* Light's test on the generators (see the head of the file).  With
+ * col[y] = y c kept apart, both sides read one row and one small array: the
+ * table itself is read row by row (a column walk missed the cache for each
+ * of the 4e6 entries of D_1000's). */
 static qd_status check_associative(qd_ctx *ctx, const qd__group *g, const size_t *gens, size_t k) {
-    size_t n = g->order;
-    for (size_t i = 0; i < k; i++)
-        for (size_t x = 0; x < n; x++)
-            for (size_t y = 0; y < n; y++) {
-                size_t c = gens[i];
-                if (mul(g, mul(g, x, y), c) != mul(g, x, mul(g, y, c))) {
+    size_t n = g->order, *col = qd__malloc(ctx, n * sizeof *col);
+    if (!col)
+        return QD_ERR_NOMEM;
+    qd_status st = QD_OK;
+    for (size_t i = 0; i < k && st == QD_OK; i++) {
+        size_t c = gens[i];
+        for (size_t y = 0; y < n; y++)
+            col[y] = mul(g, y, c);
+        for (size_t x = 0; x < n && st == QD_OK; x++) {
+            const size_t *row = g->mul + x * n;
+            for (size_t y = 0; y < n; y++)
+                if (col[row[y]] != row[col[y]]) {
                     qd_ctx_error(ctx, QD_ERR_ARG,
                                  "not a group: the table is not associative, (%zu*%zu)*%zu != %zu*(%zu*%zu)",
                                  x, y, c, x, y, c);
-                    return QD_ERR_ARG;
+                    st = QD_ERR_ARG;
+                    break;
                 }
-            }
-    return QD_OK;
+        }
+    }
+    qd__free(col);
+    return st;
 }
 
 /* Conjugacy classes as orbits of x -> s x s^-1 over the generators s (an
@@ -213,8 +239,8 @@ qd_status qd__group_from_table(qd_ctx *ctx, size_t order, const size_t *table, q
     qd_status st = alloc_group(ctx, order, g);
     if (st == QD_OK) {
         memcpy(g->mul, table, order * order * sizeof *table);
-        scratch = qd__malloc(ctx, 2 * order * sizeof *scratch);
-        st = scratch ? check_latin(ctx, g, scratch) : QD_ERR_NOMEM;
+        scratch = qd__malloc(ctx, order * sizeof *scratch);
+        st = scratch ? check_latin(ctx, g) : QD_ERR_NOMEM;
     }
     if (st == QD_OK)
         st = find_identity(ctx, g);

@@ -1,0 +1,587 @@
+/*
+ * tests/group/test_group.c - finite groups, character tables, point-group
+ * names and Mulliken labels (src/group) against the standard tables.
+ *
+ * The standard character tables are those of F. A. Cotton, "Chemical
+ * Applications of Group Theory" (3rd ed., 1990), Appendix IIA; the theorems
+ * checked are Desloge App. 28 and App. 30 (seed-desloge-D.md): the number of
+ * irreducible representations equals the number of classes, sum d^2 = |G|,
+ * both orthogonality relations, the class multiplication relation (Theorem
+ * 23, eq. 19) and the multiplicity formula (Theorem 26, eq. 22), which splits
+ * the vector representation (the traces of the 3x3 matrices) into the irreps
+ * that Cotton's tables list for x, y, z.
+ *
+ * Point groups are built inside the test from generating matrices (C3v from a
+ * rotation by 120 degrees and one mirror of an equilateral triangle in the xy
+ * plane, Td from the S4 and C3 that map the tetrahedron (1,1,1), (1,-1,-1),
+ * (-1,1,-1), (-1,-1,1) onto itself, ...): the closure under products, then the
+ * multiplication table by matching matrices.
+ */
+#define _POSIX_C_SOURCE 200809L  /* clock_gettime */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "qdot/qdot.h"
+#include "group/group.h"
+#include <complex.h>  /* after qdot's headers: its macro I is a parameter name there */
+
+static const double PI = 3.14159265358979323846;
+
+enum { MAX_OPS = 120 };
+
+typedef struct mgroup {
+    size_t n;
+    double R[MAX_OPS * 9];
+    size_t mul[MAX_OPS * MAX_OPS];
+} mgroup;
+
+static void matmul(const double *a, const double *b, double *c) {
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            c[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+}
+
+static size_t find_matrix(const mgroup *m, const double *a) {
+    for (size_t k = 0; k < m->n; k++) {
+        double d = 0;
+        for (int i = 0; i < 9; i++)
+            d = fmax(d, fabs(m->R[9 * k + i] - a[i]));
+        if (d < 1e-9)
+            return k;
+    }
+    return SIZE_MAX;
+}
+
+/* Closure of the generators (each 9 numbers, row-major) under products,
+ * identity first, then the table mul[a][b] = index of R_a R_b. */
+static mgroup *matrix_group(size_t ngen, const double *gens) {
+    mgroup *m = calloc(1, sizeof *m);
+    assert_non_null(m);
+    static const double E[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    memcpy(m->R, E, sizeof E);
+    m->n = 1;
+    for (size_t k = 0; k < m->n; k++)
+        for (size_t i = 0; i < ngen; i++) {
+            double p[9];
+            matmul(&m->R[9 * k], &gens[9 * i], p);
+            if (find_matrix(m, p) == SIZE_MAX) {
+                assert_true(m->n < MAX_OPS);
+                memcpy(&m->R[9 * m->n++], p, sizeof p);
+            }
+        }
+    for (size_t a = 0; a < m->n; a++)
+        for (size_t b = 0; b < m->n; b++) {
+            double p[9];
+            matmul(&m->R[9 * a], &m->R[9 * b], p);
+            m->mul[a * m->n + b] = find_matrix(m, p);
+            assert_true(m->mul[a * m->n + b] != SIZE_MAX);
+        }
+    return m;
+}
+
+/* The generating matrices of the groups the tests use. */
+#define C3Z {-0.5, -0.8660254037844386, 0, 0.8660254037844386, -0.5, 0, 0, 0, 1}
+#define C4Z {0, -1, 0, 1, 0, 0, 0, 0, 1}
+#define C2Z {-1, 0, 0, 0, -1, 0, 0, 0, 1}
+#define C2X {1, 0, 0, 0, -1, 0, 0, 0, -1}
+#define SXZ {1, 0, 0, 0, -1, 0, 0, 0, 1}   /* the mirror plane xz */
+#define SXY {1, 0, 0, 0, 1, 0, 0, 0, -1}   /* sigma_h */
+#define INV {-1, 0, 0, 0, -1, 0, 0, 0, -1}
+#define S4Z {0, 1, 0, -1, 0, 0, 0, 0, -1}
+#define C3D {0, 0, 1, 1, 0, 0, 0, 1, 0}    /* C3 about (1,1,1) */
+
+typedef struct built {
+    mgroup *m;
+    qd_ctx *ctx;
+    qd__group g;
+    qd__chartab t;
+} built;
+
+static built build(size_t ngen, const double *gens) {
+    built b = {matrix_group(ngen, gens), qd_ctx_new(), {0}, {0}};
+    assert_non_null(b.ctx);
+    assert_int_equal(qd__group_from_table(b.ctx, b.m->n, b.m->mul, &b.g), QD_OK);
+    assert_int_equal(qd__group_characters(b.ctx, &b.g, &b.t), QD_OK);
+    return b;
+}
+
+static void unbuild(built *b) {
+    qd__chartab_free(&b->t);
+    qd__group_free(&b->g);
+    qd_ctx_free(b->ctx);
+    free(b->m);
+}
+
+static double complex chi(const qd__chartab *t, size_t i, size_t c) {
+    return t->re[i * t->n + c] + I * t->im[i * t->n + c];
+}
+
+/* Desloge App. 30: irreps = classes, sum d^2 = |G|, trivial row first and
+ * dimensions non-decreasing, both orthogonality relations entry by entry. */
+static void check_theorems(const qd__group *g, const qd__chartab *t) {
+    size_t n = t->n, sum = 0;
+    assert_int_equal(n, g->nclass);
+    for (size_t i = 0; i < n; i++) {
+        sum += t->dim[i] * t->dim[i];
+        assert_true(g->order % t->dim[i] == 0);  /* d divides |G| */
+        assert_true(i == 0 || t->dim[i] >= t->dim[i - 1]);
+        assert_true(cabs(chi(t, i, 0) - (double)t->dim[i]) < 1e-12);
+        assert_true(cabs(chi(t, 0, i) - 1) < 1e-12);
+    }
+    assert_int_equal(sum, g->order);
+    for (size_t a = 0; a < n; a++)
+        for (size_t b = 0; b < n; b++) {
+            double complex rows = 0, cols = 0;
+            for (size_t x = 0; x < n; x++) {
+                rows += (double)g->class_size[x] * chi(t, a, x) * conj(chi(t, b, x));
+                cols += chi(t, x, a) * conj(chi(t, x, b));
+            }
+            assert_true(cabs(rows - (a == b ? (double)g->order : 0)) < 1e-10 * (double)g->order);
+            double want = a == b ? (double)g->order / (double)g->class_size[a] : 0;
+            assert_true(cabs(cols - want) < 1e-10 * (double)g->order);
+        }
+}
+
+/* Theorem 23, eq. 19: h_p chi(p) h_q chi(q) = d sum_r c_pqr h_r chi(r), with
+ * c_pqr counted here from the table, independently of how the table was made. */
+static void check_class_products(const qd__group *g, const qd__chartab *t, size_t p, size_t q) {
+    size_t n = g->order, nc = g->nclass;
+    double *c = calloc(nc, sizeof *c);
+    assert_non_null(c);
+    for (size_t x = 0; x < n; x++)
+        for (size_t y = 0; y < n && g->class_of[x] == p; y++) {
+            size_t z = g->mul[x * n + y];
+            if (g->class_of[y] == q && z == g->class_rep[g->class_of[z]])
+                c[g->class_of[z]] += 1;
+        }
+    for (size_t i = 0; i < t->n; i++) {
+        double complex lhs = (double)(g->class_size[p] * g->class_size[q]) * chi(t, i, p) * chi(t, i, q);
+        double complex rhs = 0;
+        for (size_t r = 0; r < nc; r++)
+            rhs += c[r] * (double)g->class_size[r] * chi(t, i, r);
+        assert_true(cabs(lhs - (double)t->dim[i] * rhs) < 1e-9 * (1 + cabs(lhs)));
+    }
+    free(c);
+}
+
+static void check_all_class_products(const qd__group *g, const qd__chartab *t) {
+    for (size_t p = 0; p < g->nclass; p++)
+        for (size_t q = 0; q < g->nclass; q++)
+            check_class_products(g, t, p, q);
+}
+
+enum { MAXC = 10 };
+
+typedef struct std_table {
+    const char *name;          /* Schoenflies */
+    size_t nclass;
+    double cols[MAXC][9];      /* one element of each of Cotton's classes */
+    size_t sizes[MAXC];
+    const char *labels[MAXC];  /* Cotton's Mulliken symbols */
+    double chi[MAXC][MAXC];    /* Cotton's characters, real in these groups */
+    int vector[MAXC];          /* multiplicity of each irrep in (x, y, z) */
+} std_table;
+
+/* Each of Cotton's rows matches exactly one computed row on every class;
+ * found[k] is the computed row of Cotton's row k. */
+static void match_standard(const built *b, const std_table *s, size_t *found) {
+    size_t col[MAXC];
+    assert_int_equal(b->g.nclass, s->nclass);
+    for (size_t k = 0; k < s->nclass; k++) {
+        size_t e = find_matrix(b->m, s->cols[k]);
+        assert_true(e != SIZE_MAX);
+        col[k] = b->g.class_of[e];
+        assert_int_equal(b->g.class_size[col[k]], s->sizes[k]);
+    }
+    for (size_t k = 0; k < s->nclass; k++) {
+        size_t hits = 0;
+        for (size_t i = 0; i < b->t.n; i++) {
+            bool same = true;
+            for (size_t c = 0; c < s->nclass; c++)
+                same = same && cabs(chi(&b->t, i, col[c]) - s->chi[k][c]) < 1e-12;
+            if (same) {
+                hits++;
+                found[k] = i;
+            }
+        }
+        if (hits != 1)
+            fail_msg("%s: %zu computed rows match Cotton's", s->labels[k], hits);
+    }
+}
+
+/* Theorem 26, eq. 22: m_i = (1/|G|) sum_g chi_i(g)* chi(g), chi(g) = tr R_g. */
+static void check_vector_rep(const built *b, const std_table *s, const size_t *found) {
+    for (size_t k = 0; k < s->nclass; k++) {
+        double complex m = 0;
+        for (size_t e = 0; e < b->m->n; e++) {
+            const double *R = &b->m->R[9 * e];
+            m += conj(chi(&b->t, found[k], b->g.class_of[e])) * (R[0] + R[4] + R[8]);
+        }
+        m /= (double)b->m->n;
+        assert_true(cabs(m - s->vector[k]) < 1e-12);
+    }
+}
+
+static void check_standard(size_t ngen, const double *gens, const std_table *s) {
+    built b = build(ngen, gens);
+    size_t found[MAXC];
+    check_theorems(&b.g, &b.t);
+    check_all_class_products(&b.g, &b.t);
+    match_standard(&b, s, found);
+    check_vector_rep(&b, s, found);
+    unbuild(&b);
+}
+
+/* Cotton App. IIA.  Where a table has two classes of the same kind, the
+ * tests put sigma_v in the plane xz and C2' along x, as Cotton's figures do. */
+#define S_YZ {-1, 0, 0, 0, 1, 0, 0, 0, 1}
+#define C3Z2 {-0.5, 0.8660254037844386, 0, -0.8660254037844386, -0.5, 0, 0, 0, 1}
+#define C2XY {0, 1, 0, 1, 0, 0, 0, 0, -1}     /* C2 about x = y */
+#define S_D {0, 1, 0, 1, 0, 0, 0, 0, 1}       /* mirror x <-> y */
+#define S3Z {-0.5, -0.8660254037844386, 0, 0.8660254037844386, -0.5, 0, 0, 0, -1}
+#define S4Z_ {0, -1, 0, 1, 0, 0, 0, 0, -1}
+#define S6D {0, 0, -1, -1, 0, 0, 0, -1, 0}    /* -C3 about (1,1,1) */
+
+static const std_table C2V = {
+    "C2v", 4, {{1, 0, 0, 0, 1, 0, 0, 0, 1}, C2Z, SXZ, S_YZ}, {1, 1, 1, 1},
+    {"A1", "A2", "B1", "B2"},
+    {{1, 1, 1, 1}, {1, 1, -1, -1}, {1, -1, 1, -1}, {1, -1, -1, 1}},
+    {1, 0, 1, 1}};
+
+static const std_table C3V = {
+    "C3v", 3, {{1, 0, 0, 0, 1, 0, 0, 0, 1}, C3Z, SXZ}, {1, 2, 3},
+    {"A1", "A2", "E"},
+    {{1, 1, 1}, {1, 1, -1}, {2, -1, 0}},
+    {1, 0, 1}};
+
+static const std_table C4V = {
+    "C4v", 5, {{1, 0, 0, 0, 1, 0, 0, 0, 1}, C4Z, C2Z, SXZ, S_D}, {1, 2, 1, 2, 2},
+    {"A1", "A2", "B1", "B2", "E"},
+    {{1, 1, 1, 1, 1}, {1, 1, 1, -1, -1}, {1, -1, 1, 1, -1}, {1, -1, 1, -1, 1}, {2, 0, -2, 0, 0}},
+    {1, 0, 0, 0, 1}};
+
+static const std_table D3H = {
+    "D3h", 6, {{1, 0, 0, 0, 1, 0, 0, 0, 1}, C3Z, C2X, SXY, S3Z, SXZ}, {1, 2, 3, 1, 2, 3},
+    {"A1'", "A2'", "E'", "A1''", "A2''", "E''"},
+    {{1, 1, 1, 1, 1, 1},
+     {1, 1, -1, 1, 1, -1},
+     {2, -1, 0, 2, -1, 0},
+     {1, 1, 1, -1, -1, -1},
+     {1, 1, -1, -1, -1, 1},
+     {2, -1, 0, -2, 1, 0}},
+    {0, 0, 1, 0, 1, 0}};
+
+static const std_table D4H = {
+    "D4h", 10,
+    {{1, 0, 0, 0, 1, 0, 0, 0, 1}, C4Z, C2Z, C2X, C2XY, INV, S4Z_, SXY, SXZ, S_D},
+    {1, 2, 1, 2, 2, 1, 2, 1, 2, 2},
+    {"A1g", "A2g", "B1g", "B2g", "Eg", "A1u", "A2u", "B1u", "B2u", "Eu"},
+    {{1, 1, 1, 1, 1, 1, 1, 1, 1, 1},
+     {1, 1, 1, -1, -1, 1, 1, 1, -1, -1},
+     {1, -1, 1, 1, -1, 1, -1, 1, 1, -1},
+     {1, -1, 1, -1, 1, 1, -1, 1, -1, 1},
+     {2, 0, -2, 0, 0, 2, 0, -2, 0, 0},
+     {1, 1, 1, 1, 1, -1, -1, -1, -1, -1},
+     {1, 1, 1, -1, -1, -1, -1, -1, 1, 1},
+     {1, -1, 1, 1, -1, -1, 1, -1, -1, 1},
+     {1, -1, 1, -1, 1, -1, 1, -1, 1, -1},
+     {2, 0, -2, 0, 0, -2, 0, 2, 0, 0}},
+    {0, 0, 0, 0, 0, 0, 1, 0, 0, 1}};
+
+static const std_table TD = {
+    "Td", 5, {{1, 0, 0, 0, 1, 0, 0, 0, 1}, C3D, C2Z, S4Z, S_D}, {1, 8, 3, 6, 6},
+    {"A1", "A2", "E", "T1", "T2"},
+    {{1, 1, 1, 1, 1}, {1, 1, 1, -1, -1}, {2, -1, 2, 0, 0}, {3, 0, -1, 1, -1}, {3, 0, -1, -1, 1}},
+    {0, 0, 0, 0, 1}};
+
+static const std_table OH = {
+    "Oh", 10,
+    {{1, 0, 0, 0, 1, 0, 0, 0, 1}, C3D, C2XY, C4Z, C2Z, INV, S4Z, S6D, SXY, S_D},
+    {1, 8, 6, 6, 3, 1, 6, 8, 3, 6},
+    {"A1g", "A2g", "Eg", "T1g", "T2g", "A1u", "A2u", "Eu", "T1u", "T2u"},
+    {{1, 1, 1, 1, 1, 1, 1, 1, 1, 1},
+     {1, 1, -1, -1, 1, 1, -1, 1, 1, -1},
+     {2, -1, 0, 0, 2, 2, 0, -1, 2, 0},
+     {3, 0, -1, 1, -1, 3, 1, 0, -1, -1},
+     {3, 0, 1, -1, -1, 3, -1, 0, -1, 1},
+     {1, 1, 1, 1, 1, -1, -1, -1, -1, -1},
+     {1, 1, -1, -1, 1, -1, 1, -1, -1, 1},
+     {2, -1, 0, 0, 2, -2, 0, 1, -2, 0},
+     {3, 0, -1, 1, -1, -3, -1, 0, 1, 1},
+     {3, 0, 1, -1, -1, -3, 1, 0, 1, -1}},
+    {0, 0, 0, 0, 0, 0, 0, 0, 1, 0}};
+
+#define STANDARD_TEST(fn, table, ...)                                                           \
+    static void fn(void **state) {                                                             \
+        (void)state;                                                                           \
+        const double gens[][9] = {__VA_ARGS__};                                                \
+        check_standard(sizeof gens / sizeof gens[0], &gens[0][0], &table);                     \
+    }
+STANDARD_TEST(test_c2v, C2V, C2Z, SXZ)
+STANDARD_TEST(test_c3v, C3V, C3Z, SXZ)
+STANDARD_TEST(test_c4v, C4V, C4Z, SXZ)
+STANDARD_TEST(test_d3h, D3H, C3Z, C2X, SXY)
+STANDARD_TEST(test_d4h, D4H, C4Z, C2X, INV)
+STANDARD_TEST(test_td, TD, S4Z, C3D)
+STANDARD_TEST(test_oh, OH, C4Z, C3D, INV)
+
+/* The cyclic group C_n, mul[a][b] = a + b mod n, and the dihedral group D_n
+ * as pairs r^k s^f numbered k + n f: (r^a s^f)(r^b s^h) = r^(a + (-1)^f b) s^(f+h). */
+static size_t *cyclic_mul(size_t n) {
+    size_t *m = malloc(n * n * sizeof *m);
+    assert_non_null(m);
+    for (size_t a = 0; a < n; a++)
+        for (size_t b = 0; b < n; b++)
+            m[a * n + b] = (a + b) % n;
+    return m;
+}
+
+static size_t *dihedral_mul(size_t n) {
+    size_t N = 2 * n, *m = malloc(N * N * sizeof *m);
+    assert_non_null(m);
+    for (size_t x = 0; x < N; x++)
+        for (size_t y = 0; y < N; y++) {
+            size_t a = x % n, f = x / n, b = y % n, h = y / n;
+            size_t k = f ? (a + n - b) % n : (a + b) % n;
+            m[x * N + y] = k + n * ((f + h) % 2);
+        }
+    return m;
+}
+
+/* C_n: n classes of one element; each row a homomorphism onto the n-th roots
+ * of unity, chi(1) = exp(2 pi i j / n), the n values of j all different. */
+static void check_cyclic(size_t n) {
+    qd_ctx *ctx = qd_ctx_new();
+    size_t *m = cyclic_mul(n);
+    qd__group g;
+    qd__chartab t;
+    assert_int_equal(qd__group_from_table(ctx, n, m, &g), QD_OK);
+    assert_int_equal(g.nclass, n);
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    bool *seen = calloc(n, sizeof *seen);
+    for (size_t i = 0; i < n; i++) {
+        double complex c1 = chi(&t, i, g.class_of[n > 1]);  /* the generator 1 */
+        double j = carg(c1) * (double)n / (2 * PI);
+        size_t jr = (size_t)((long)lround(j) + (long)n) % n;
+        assert_true(fabs(j - round(j)) < 1e-9 && !seen[jr]);
+        seen[jr] = true;
+        for (size_t a = 0; a < n; a += 1 + n / 50)
+            for (size_t b = 0; b < n; b += 1 + n / 50)
+                assert_true(cabs(chi(&t, i, g.class_of[a]) * chi(&t, i, g.class_of[b]) -
+                                 chi(&t, i, g.class_of[m[a * n + b]])) < 1e-12);
+    }
+    if (n <= 50)
+        check_theorems(&g, &t);
+    free(seen);
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+    free(m);
+}
+
+static void test_cyclic(void **state) {
+    (void)state;
+    check_cyclic(1);
+    check_cyclic(2);
+    check_cyclic(5);
+    check_cyclic(6);
+    check_cyclic(1000);
+}
+
+/* D_n (Desloge App. 28; the ring of n equal masses): classes {e}, the pairs
+ * {r^k, r^-k}, {r^(n/2)} for even n, the reflections in one class of n (n odd)
+ * or two of n/2 (n even); 2 or 4 one-dimensional irreps, the rest of dimension 2. */
+static void check_dihedral(size_t n, bool timed) {
+    qd_ctx *ctx = qd_ctx_new();
+    size_t *m = dihedral_mul(n), even = n % 2 == 0;
+    qd__group g;
+    qd__chartab t;
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    assert_int_equal(qd__group_from_table(ctx, 2 * n, m, &g), QD_OK);
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    if (timed) {
+        printf("D_%zu (order %zu): group and character table in %.3f s\n", n, 2 * n, secs);
+        assert_true(secs < 1.0);
+    }
+    size_t nclass = (n - 1) / 2 + 1 + (even ? 3 : 1), ones = 0;
+    assert_int_equal(g.nclass, nclass);
+    assert_int_equal(g.class_size[g.class_of[n]], even ? n / 2 : n);  /* s */
+    assert_int_equal(g.class_size[g.class_of[1]], 2);                  /* r */
+    if (even)
+        assert_int_equal(g.class_size[g.class_of[n / 2]], 1);
+    for (size_t i = 0; i < t.n; i++)
+        ones += t.dim[i] == 1;
+    assert_int_equal(ones, even ? 4 : 2);
+    if (n <= 50) {
+        check_theorems(&g, &t);
+        check_all_class_products(&g, &t);
+    } else {
+        size_t ps[] = {1, 2, 7, n / 2, n, n + 1, 2 * n - 1};
+        for (size_t a = 0; a < 7; a++)
+            for (size_t b = 0; b < 7; b++)
+                check_class_products(&g, &t, g.class_of[ps[a]], g.class_of[ps[b]]);
+    }
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+    free(m);
+}
+
+static void test_dihedral(void **state) {
+    (void)state;
+    check_dihedral(3, false);
+    check_dihedral(5, false);
+    check_dihedral(6, false);
+    check_dihedral(1000, true);
+}
+
+/* The quaternion group: element 4 s + u is (-1)^s times the unit u of
+ * 1, i, j, k.  Not dihedral (one involution), so it takes Burnside's path;
+ * its table is D4's: four one-dimensional rows and a two-dimensional one
+ * with chi(-1) = -2 and 0 on +-i, +-j, +-k. */
+static void test_quaternion(void **state) {
+    (void)state;
+    static const int unit[4][4] = {{0, 1, 2, 3}, {1, -0, 3, -2}, {2, -3, -0, 1}, {3, 2, -1, -0}};
+    static const int sign[4][4] = {{0, 0, 0, 0}, {0, 1, 0, 1}, {0, 1, 1, 0}, {0, 0, 1, 1}};
+    size_t m[64];
+    for (size_t x = 0; x < 8; x++)
+        for (size_t y = 0; y < 8; y++) {
+            size_t u = x % 4, v = y % 4, s = (x / 4 + y / 4 + (size_t)sign[u][v]) % 2;
+            m[x * 8 + y] = 4 * s + (size_t)abs(unit[u][v]);
+        }
+    qd_ctx *ctx = qd_ctx_new();
+    qd__group g;
+    qd__chartab t;
+    assert_int_equal(qd__group_from_table(ctx, 8, m, &g), QD_OK);
+    assert_int_equal(g.nclass, 5);
+    assert_int_equal(g.class_size[g.class_of[4]], 1);  /* -1 is central */
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    check_theorems(&g, &t);
+    check_all_class_products(&g, &t);
+    assert_int_equal(t.dim[4], 2);
+    assert_true(chi(&t, 4, g.class_of[4]) == -2);
+    for (size_t x = 1; x < 4; x++)
+        assert_true(chi(&t, 4, g.class_of[x]) == 0);
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+}
+
+/* S5, 120 permutations of 5 points, (a b)(x) = a(b(x)): seven classes (cycle
+ * types) of sizes 1, 10, 15, 20, 20, 30, 24, irreps of dimensions 1, 1, 4, 4,
+ * 5, 5, 6, and the standard representation chi(g) = fix(g) - 1 among them. */
+static size_t perm_index(const int *p, const int (*all)[5], size_t n) {
+    for (size_t k = 0; k < n; k++)
+        if (memcmp(p, all[k], 5 * sizeof *p) == 0)
+            return k;
+    return SIZE_MAX;
+}
+
+static void test_s5(void **state) {
+    (void)state;
+    static int all[120][5];
+    size_t n = 0, *m = malloc(120 * 120 * sizeof *m);
+    for (int a = 0; a < 3125; a++) {
+        int p[5], used = 0, ok = 1;
+        for (int i = 0, v = a; i < 5; i++, v /= 5) {
+            p[i] = v % 5;
+            ok = ok && !(used & 1 << p[i]);
+            used |= 1 << p[i];
+        }
+        if (ok)
+            memcpy(all[n++], p, sizeof p);
+    }
+    assert_int_equal(n, 120);
+    for (size_t a = 0; a < n; a++)
+        for (size_t b = 0; b < n; b++) {
+            int p[5];
+            for (int x = 0; x < 5; x++)
+                p[x] = all[a][all[b][x]];
+            m[a * n + b] = perm_index(p, (const int(*)[5])all, n);
+        }
+    qd_ctx *ctx = qd_ctx_new();
+    qd__group g;
+    qd__chartab t;
+    assert_int_equal(qd__group_from_table(ctx, n, m, &g), QD_OK);
+    assert_int_equal(g.nclass, 7);
+    size_t count[121] = {0};
+    for (size_t c = 0; c < 7; c++)
+        count[g.class_size[c]]++;
+    assert_true(count[1] == 1 && count[10] == 1 && count[15] == 1 && count[20] == 2 && count[30] == 1 &&
+                count[24] == 1);
+    assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
+    check_theorems(&g, &t);
+    check_all_class_products(&g, &t);
+    static const size_t dims[7] = {1, 1, 4, 4, 5, 5, 6};
+    size_t standard = 0;
+    for (size_t i = 0; i < 7; i++) {
+        assert_int_equal(t.dim[i], dims[i]);
+        bool same = true;
+        for (size_t c = 0; c < 7; c++) {
+            const int *p = all[g.class_rep[c]];
+            int fix = 0;
+            for (int x = 0; x < 5; x++)
+                fix += p[x] == x;
+            same = same && chi(&t, i, c) == fix - 1;
+        }
+        standard += same;
+    }
+    assert_int_equal(standard, 1);
+    qd__chartab_free(&t);
+    qd__group_free(&g);
+    qd_ctx_free(ctx);
+    free(m);
+}
+
+static void expect_refused(size_t n, const size_t *m, const char *why) {
+    qd_ctx *ctx = qd_ctx_new();
+    qd__group g;
+    assert_int_equal(qd__group_from_table(ctx, n, m, &g), QD_ERR_ARG);
+    assert_int_equal(qd_ctx_status(ctx), QD_ERR_ARG);
+    if (!strstr(qd_ctx_message(ctx), why))
+        fail_msg("message \"%s\" lacks \"%s\"", qd_ctx_message(ctx), why);
+    assert_null(g.mul);
+    qd__group_free(&g);  /* harmless after a refusal */
+    qd_ctx_free(ctx);
+}
+
+/* Tables that are not groups: the loop of order 5 below has an identity
+ * and inverses (every row and column a permutation) but x x = 0 for every
+ * x, impossible in a group of order 5 (cyclic, so only the identity is its
+ * own inverse); a - b mod 4 is a Latin square with no identity. */
+static void test_not_groups(void **state) {
+    (void)state;
+    static const size_t loop5[25] = {0, 1, 2, 3, 4, 1, 0, 3, 4, 2, 2, 4, 0, 1, 3,
+                                     3, 2, 4, 0, 1, 4, 3, 1, 2, 0};
+    expect_refused(5, loop5, "not associative");
+    size_t diff[16], big[4] = {0, 1, 1, 7}, twice[4] = {0, 1, 1, 1};
+    for (size_t a = 0; a < 4; a++)
+        for (size_t b = 0; b < 4; b++)
+            diff[a * 4 + b] = (a + 4 - b) % 4;  /* a - b: a Latin square, no identity */
+    expect_refused(4, diff, "identity");
+    expect_refused(2, big, "outside");
+    expect_refused(2, twice, "twice");
+    expect_refused(0, twice, "at least one element");
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_c2v),       cmocka_unit_test(test_c3v),      cmocka_unit_test(test_c4v),
+        cmocka_unit_test(test_d3h),       cmocka_unit_test(test_d4h),      cmocka_unit_test(test_td),
+        cmocka_unit_test(test_oh),        cmocka_unit_test(test_cyclic),   cmocka_unit_test(test_dihedral),
+        cmocka_unit_test(test_quaternion), cmocka_unit_test(test_s5),      cmocka_unit_test(test_not_groups),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
