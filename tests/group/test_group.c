@@ -88,6 +88,12 @@ static mgroup *matrix_group(size_t ngen, const double *gens) {
     return m;
 }
 
+static void rot_z(double angle, double *R) {
+    double c = cos(angle), s = sin(angle);
+    double r[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
+    memcpy(R, r, sizeof r);
+}
+
 /* The generating matrices of the groups the tests use. */
 #define C3Z {-0.5, -0.8660254037844386, 0, 0.8660254037844386, -0.5, 0, 0, 0, 1}
 #define C4Z {0, -1, 0, 1, 0, 0, 0, 0, 1}
@@ -238,6 +244,12 @@ static void check_standard(size_t ngen, const double *gens, const std_table *s) 
     check_all_class_products(&b.g, &b.t);
     match_standard(&b, s, found);
     check_vector_rep(&b, s, found);
+    char name[16], labels[MAXC][12];
+    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, b.m->R, name), QD_OK);
+    assert_string_equal(name, s->name);
+    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
+    for (size_t k = 0; k < s->nclass; k++)
+        assert_string_equal(labels[found[k]], s->labels[k]);
     unbuild(&b);
 }
 
@@ -576,12 +588,159 @@ static void test_not_groups(void **state) {
     expect_refused(0, twice, "at least one element");
 }
 
+/* Rotation by angle about the unit vector k (Rodrigues), times sign (-1:
+ * the improper element -C). */
+static void axis_turn(const double *k, double angle, double sign, double *R) {
+    double c = cos(angle), s = sin(angle), K[9] = {0, -k[2], k[1], k[2], 0, -k[0], -k[1], k[0], 0};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[3 * i + j] = sign * (c * (i == j) + s * K[3 * i + j] + (1 - c) * k[i] * k[j]);
+}
+
+static int cmp_str(const void *a, const void *b) {
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* Space-separated, sorted: a multiset of labels as one string. */
+static void join_sorted(size_t n, const char **v, char *out, size_t size) {
+    qsort(v, n, sizeof *v, cmp_str);
+    out[0] = '\0';
+    for (size_t i = 0; i < n; i++) {
+        strncat(out, v[i], size - strlen(out) - 1);
+        if (i + 1 < n)
+            strncat(out, " ", size - strlen(out) - 1);
+    }
+}
+
+typedef struct named {
+    const char *name;
+    const char *labels;  /* Cotton's Mulliken symbols, sorted ("a"/"b": the halves of a complex E) */
+    const char *vector;  /* the irreps of x, y, z in Cotton's right-hand column, sorted */
+} named;
+
+/* The point group of the generators: its name, its labels, and the labels of
+ * the irreps in the vector representation (multiplicities by eq. 22). */
+static void check_named(size_t ngen, const double *gens, const named *want) {
+    built b = build(ngen, gens);
+    size_t n = b.t.n, nv = 0;
+    char name[16], (*labels)[12] = calloc(n, sizeof *labels), all[512], vec[128];
+    const char **v = calloc(n, sizeof *v), *vv[3];
+    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, b.m->R, name), QD_OK);
+    assert_string_equal(name, want->name);
+    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
+    for (size_t i = 0; i < n; i++) {
+        v[i] = labels[i];
+        double complex m = 0;
+        for (size_t e = 0; e < b.m->n; e++) {
+            const double *R = &b.m->R[9 * e];
+            m += conj(chi(&b.t, i, b.g.class_of[e])) * (R[0] + R[4] + R[8]);
+        }
+        m /= (double)b.m->n;
+        assert_true(cabs(m - round(creal(m))) < 1e-12);
+        for (long k = 0; k < lround(creal(m)); k++)
+            vv[nv++] = labels[i];
+    }
+    join_sorted(n, v, all, sizeof all);
+    join_sorted(nv, vv, vec, sizeof vec);
+    assert_string_equal(all, want->labels);
+    assert_string_equal(vec, want->vector);
+    check_theorems(&b.g, &b.t);
+    free(v);
+    free(labels);
+    unbuild(&b);
+}
+
+/* Every Schoenflies family of the flowchart, with Cotton's labels. */
+static void test_point_groups(void **state) {
+    (void)state;
+    double c5[9], c6[9], s8[9], s6[9], c5v[9], c3v[9];
+    rot_z(2 * PI / 5, c5);
+    rot_z(2 * PI / 6, c6);
+    axis_turn((const double[]){0, 0, 1}, 2 * PI / 8 + PI, -1, s8);  /* sigma_h C8 = -C(pi + 2 pi/8) */
+    axis_turn((const double[]){0, 0, 1}, 2 * PI / 3, -1, s6);       /* i C3 */
+    double phi = (1 + sqrt(5)) / 2, len = sqrt(1 + phi * phi);
+    axis_turn((const double[]){0, 1 / len, phi / len}, 2 * PI / 5, 1, c5v);  /* a vertex of the icosahedron */
+    memcpy(c3v, (const double[])C3D, sizeof c3v);
+    const double one[][9] = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    check_named(1, &one[0][0], &(named){"C1", "A", "A A A"});
+#define NAMED(nm, lab, vec, ...)                                                                   \
+    do {                                                                                           \
+        const double gens[][9] = {__VA_ARGS__};                                                    \
+        check_named(sizeof gens / sizeof gens[0], &gens[0][0], &(named){nm, lab, vec});            \
+    } while (0)
+    NAMED("Cs", "A' A''", "A' A' A''", SXY);
+    NAMED("Ci", "Ag Au", "Au Au Au", INV);
+    NAMED("C2", "A B", "A B B", C2Z);
+    NAMED("C3", "A Ea Eb", "A Ea Eb", C3Z);
+    NAMED("C2h", "Ag Au Bg Bu", "Au Bu Bu", C2Z, SXY);
+    NAMED("C3h", "A' A'' Ea' Ea'' Eb' Eb''", "A'' Ea' Eb'", C3Z, SXY);
+    NAMED("C4h", "Ag Au Bg Bu Eag Eau Ebg Ebu", "Au Eau Ebu", C4Z, SXY);
+    NAMED("S4", "A B Ea Eb", "B Ea Eb", S4Z);
+    NAMED("D2", "A B1 B2 B3", "B1 B2 B3", C2Z, C2X);
+    NAMED("D2h", "Ag Au B1g B1u B2g B2u B3g B3u", "B1u B2u B3u", C2Z, C2X, INV);
+    NAMED("D2d", "A1 A2 B1 B2 E", "B2 E", S4Z, C2X);
+    NAMED("D3", "A1 A2 E", "A2 E", C3Z, C2X);
+    NAMED("D3d", "A1g A1u A2g A2u Eg Eu", "A2u Eu", C3Z, C2X, INV);
+    NAMED("T", "A Ea Eb T", "T", C3D, C2Z);
+    NAMED("Th", "Ag Au Eag Eau Ebg Ebu Tg Tu", "Tu", C3D, C2Z, INV);
+    NAMED("O", "A1 A2 E T1 T2", "T1", C4Z, C3D);
+#undef NAMED
+    const double c5vg[][9] = {{0}, SXZ};
+    double g2[2][9];
+    memcpy(g2, c5vg, sizeof g2);
+    memcpy(g2[0], c5, sizeof c5);
+    check_named(2, &g2[0][0], &(named){"C5v", "A1 A2 E1 E2", "A1 E1"});
+    const double d6h[][9] = {{0}, C2X, SXY};
+    double g3[3][9];
+    memcpy(g3, d6h, sizeof g3);
+    memcpy(g3[0], c6, sizeof c6);
+    check_named(3, &g3[0][0],
+                &(named){"D6h", "A1g A1u A2g A2u B1g B1u B2g B2u E1g E1u E2g E2u", "A2u E1u"});
+    check_named(1, s8, &(named){"S8", "A B E1a E1b E2a E2b E3a E3b", "B E1a E1b"});
+    memcpy(g2[0], s8, sizeof s8);
+    memcpy(g2[1], (const double[])C2X, sizeof s8);
+    check_named(2, &g2[0][0], &(named){"D4d", "A1 A2 B1 B2 E1 E2 E3", "B2 E1"});
+    check_named(1, s6, &(named){"S6", "Ag Au Eag Eau Ebg Ebu", "Au Eau Ebu"});
+    memcpy(g2[0], c5v, sizeof c5v);
+    memcpy(g2[1], c3v, sizeof c3v);
+    check_named(2, &g2[0][0], &(named){"I", "A G H T1 T2", "T1"});
+    memcpy(g3[0], c5v, sizeof c5v);
+    memcpy(g3[1], c3v, sizeof c3v);
+    memcpy(g3[2], (const double[])INV, sizeof c3v);
+    check_named(3, &g3[0][0],
+                &(named){"Ih", "Ag Au Gg Gu Hg Hu T1g T1u T2g T2u", "T1u"});
+}
+
+/* A group that is not a point group (the quaternions, given the matrices
+ * of C2v four times over) or matrices that do not represent the table: no
+ * name, labels Gamma1, Gamma2, ... */
+static void test_not_point_group(void **state) {
+    (void)state;
+    const double gens[][9] = {C2Z, SXZ};
+    built b = build(2, &gens[0][0]);
+    double R[4 * 9];
+    memcpy(R, b.m->R, sizeof R);
+    R[9 * 1 + 0] = 2;  /* not orthogonal */
+    char name[16] = "x", labels[4][12];
+    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, R, name), QD_OK);
+    assert_string_equal(name, "");
+    memcpy(R, b.m->R, sizeof R);
+    memcpy(R + 9, b.m->R + 18, 9 * sizeof *R);  /* two elements, one matrix */
+    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, R, name), QD_OK);
+    assert_string_equal(name, "");
+    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, R, &b.t, labels), QD_OK);
+    assert_string_equal(labels[0], "Gamma1");
+    assert_string_equal(labels[3], "Gamma4");
+    unbuild(&b);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_c2v),       cmocka_unit_test(test_c3v),      cmocka_unit_test(test_c4v),
         cmocka_unit_test(test_d3h),       cmocka_unit_test(test_d4h),      cmocka_unit_test(test_td),
         cmocka_unit_test(test_oh),        cmocka_unit_test(test_cyclic),   cmocka_unit_test(test_dihedral),
         cmocka_unit_test(test_quaternion), cmocka_unit_test(test_s5),      cmocka_unit_test(test_not_groups),
+        cmocka_unit_test(test_point_groups), cmocka_unit_test(test_not_point_group),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
