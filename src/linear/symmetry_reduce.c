@@ -241,7 +241,8 @@ typedef struct block_sol {
 static void rigid_zero_modes(const qd_linear *lin, qd_symmetry *s, size_t b, block_sol *bs,
                              size_t z0, size_t z, qd_mode_kind *kind) {
     size_t n = s->n, m = bs->m, got = 0, st = s->block_start[b];
-    double c[m ? m : 1], kmax = max_abs(m * m, bs->K);
+    /* against all of K0: a block of zero modes has only round-off to scale by */
+    double c[m ? m : 1], kmax = max_abs(n * n, s->Kb);
     double orig[z * m + 1];   /* the solver's zero modes, before replacing */
     memcpy(orig, bs->V + z0 * m, z * m * sizeof *orig);
     for (size_t r = 0; r < s->nrigid && got < z; r++) {
