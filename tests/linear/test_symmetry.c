@@ -5,7 +5,8 @@
  *   equilateral triangle of springs, free in its plane: C3v, chi = (6, 0, 0),
  *     Gamma = A1 + A2 + 2E; w^2 = 3k/m (A1), 3k/(2m) (E), translations E,
  *     rotation A2 (Desloge ch. 66 worked example, App. 30 eq. 22;
- *     seed-desloge-D.md T33);
+ *     seed-desloge-D.md T33); its rotations alone (C3): the complex pair
+ *     merged into one real E block;
  *   linear symmetric triatomic along its axis: w^2 = k/m (symmetric
  *     stretch, even under the mirror) and (k/m)(1 + 2m/M) (odd, with the
  *     translation);
@@ -237,6 +238,52 @@ static void test_triangle(void **state) {
     for (size_t j = 0; j < 3; j++)
         assert_string_equal(mode_label(&sym, j),
                             sym.mode_kind[j] == QD_MODE_ROTATION ? "A2" : "E");
+    qd_symmetry_free(&sym);
+    qd_linear_free(&lin);
+}
+
+/* The rotations alone (C3, a subgroup of C3v): complex characters, the pair
+ * Ea, Eb merged into one real block of degeneracy 2 (seed-desloge-B.md
+ * pitfall 14); the rotation now shares A with the breathing mode. */
+static void test_triangle_c3(void **state) {
+    qt_system *s = qt_system_derive(state, TRIANGLE, false);
+    double q[6] = {0, 0, 1, 0, 0.5, sqrt(3) / 2}, k = 5, m = 2;
+    qd_linear lin;
+    qd_symmetry sym, c3;
+    analyse(s, q, &lin, &sym);
+    double S[3 * 36], R[3 * 9];
+    size_t got = 0;
+    for (size_t g = 0; g < sym.order; g++) {
+        const double *r = sym.R + 9 * g;
+        double det = r[0] * (r[4] * r[8] - r[5] * r[7]) - r[1] * (r[3] * r[8] - r[5] * r[6]) +
+                     r[2] * (r[3] * r[7] - r[4] * r[6]);
+        if (det > 0) {
+            assert_true(got < 3);
+            memcpy(S + 36 * got, sym.S + 36 * g, 36 * sizeof *S);
+            memcpy(R + 9 * got, r, 9 * sizeof *R);
+            got++;
+        }
+    }
+    assert_int_equal(got, 3);
+    assert_int_equal(qd_symmetry_from_ops(s->ctx, &lin, 3, S, R, &c3), QD_OK);
+    assert_string_equal(c3.name, "C3");
+    check_orthogonality(&c3);
+    assert_int_equal(qd_symmetry_reduce(s->ctx, &lin, &c3), QD_OK);
+    check_modes(&lin, &c3);
+    assert_int_equal(c3.nblock, 2);
+    size_t pair = c3.block_size[0] == 4 ? 0 : 1;
+    assert_int_equal(c3.block_size[pair], 4);
+    assert_int_equal(c3.block_size[1 - pair], 2);
+    assert_true(c3.block_pair[pair] != c3.block_irrep[pair]);
+    char lab[32];
+    qd_symmetry_block_label(&c3, pair, lab, sizeof lab);
+    assert_string_equal(lab, "E");
+    double want[6] = {0, 0, 0, 1.5 * k / m, 1.5 * k / m, 3 * k / m};
+    for (size_t j = 0; j < 6; j++)
+        assert_true(fabs(c3.omega2[j] - want[j]) < 1e-10 * k / m);
+    assert_int_equal(c3.mode_degeneracy[3], 2);
+    assert_int_equal(c3.mode_block[5], 1 - pair);
+    qd_symmetry_free(&c3);
     qd_symmetry_free(&sym);
     qd_linear_free(&lin);
 }
@@ -500,6 +547,7 @@ static void test_not_a_group(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_teardown(test_triangle, qt_system_teardown),
+        cmocka_unit_test_teardown(test_triangle_c3, qt_system_teardown),
         cmocka_unit_test_teardown(test_triatomic, qt_system_teardown),
         cmocka_unit_test_teardown(test_square, qt_system_teardown),
         cmocka_unit_test_teardown(test_tetrahedron, qt_system_teardown),
