@@ -135,7 +135,7 @@ static double m_dot(size_t n, const double *M, const double *x, const double *y)
 /* The columns of P, pivoted Gram-Schmidt in the M0 metric, into U's
  * columns start.. start+size; false when the range is smaller. */
 static bool orthonormal_range(const qd_symmetry *s, const double *M, double *cols,
-                              size_t start, size_t size) {
+                              size_t start, size_t size, double *qv) {
     size_t n = s->n;
     double scale = 0;
     for (size_t c = 0; c < n; c++)
@@ -156,7 +156,6 @@ static bool orthonormal_range(const qd_symmetry *s, const double *M, double *col
         for (size_t i = 0; i < n; i++)
             s->U[i * n + start + k] = u[i] / norm;
         const double *q = s->U + start + k;   /* stride n */
-        double qv[n ? n : 1];
         for (size_t i = 0; i < n; i++)
             qv[i] = q[i * n];
         for (size_t c = 0; c < n; c++) {   /* remove the new direction from every column */
@@ -171,14 +170,15 @@ static bool orthonormal_range(const qd_symmetry *s, const double *M, double *col
 static qd_status coordinates(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s) {
     size_t n = s->n, nn = n * n;
     double *P = qd__malloc(ctx, (nn + 1) * sizeof *P), *cols = qd__malloc(ctx, (nn + 1) * sizeof *cols);
+    double *qv = qd__malloc(ctx, (n + 1) * sizeof *qv);
     s->U = qd__calloc(ctx, nn + 1, sizeof *s->U);
-    qd_status st = P && cols && s->U ? QD_OK : QD_ERR_NOMEM;
+    qd_status st = P && cols && qv && s->U ? QD_OK : QD_ERR_NOMEM;
     for (size_t b = 0; st == QD_OK && b < s->nblock; b++) {
         projector(s, b, P);
         for (size_t c = 0; c < n; c++)   /* column c of P, contiguous */
             for (size_t i = 0; i < n; i++)
                 cols[c * n + i] = P[i * n + c];
-        if (!orthonormal_range(s, lin->M, cols, s->block_start[b], s->block_size[b])) {
+        if (!orthonormal_range(s, lin->M, cols, s->block_start[b], s->block_size[b], qv)) {
             char lab[32];
             qd_symmetry_block_label(s, b, lab, sizeof lab);
             qd_ctx_error(ctx, QD_ERR_NUMERIC, "the projector of %s has rank below n_i d_i = %zu",
@@ -188,6 +188,7 @@ static qd_status coordinates(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s) 
     }
     qd__free(P);
     qd__free(cols);
+    qd__free(qv);
     return st;
 }
 
@@ -234,6 +235,7 @@ static qd_status block_form(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s) {
 typedef struct block_sol {
     size_t m;
     double *K, *w, *V;   /* m*m row-major block; m; m*m column-major vectors */
+    double *tmp;         /* m*m + 2m scratch */
 } block_sol;
 
 /* Replace the block's zero modes by the rigid motions projected on it,
@@ -242,8 +244,8 @@ static void rigid_zero_modes(const qd_linear *lin, qd_symmetry *s, size_t b, blo
                              size_t z0, size_t z, qd_mode_kind *kind) {
     size_t n = s->n, m = bs->m, got = 0, st = s->block_start[b];
     /* against all of K0: a block of zero modes has only round-off to scale by */
-    double c[m ? m : 1], kmax = max_abs(n * n, s->Kb);
-    double orig[z * m + 1];   /* the solver's zero modes, before replacing */
+    double *c = bs->tmp, *x = bs->tmp + m, kmax = max_abs(n * n, s->Kb);
+    double *orig = bs->tmp + 2 * m;   /* the solver's zero modes, before replacing */
     memcpy(orig, bs->V + z0 * m, z * m * sizeof *orig);
     for (size_t r = 0; r < s->nrigid && got < z; r++) {
         const double *v = s->rigid + r * n;
@@ -285,7 +287,7 @@ static void rigid_zero_modes(const qd_linear *lin, qd_symmetry *s, size_t b, blo
     /* the block's other zero modes: orthogonal to the rigid ones */
     size_t next = got;
     for (size_t a = 0; a < z && next < z; a++) {
-        double *u = bs->V + (z0 + next) * m, x[m ? m : 1], xn = 0;
+        double *u = bs->V + (z0 + next) * m, xn = 0;
         memcpy(x, orig + a * m, m * sizeof *x);
         for (size_t p = 0; p < next; p++) {
             const double *q = bs->V + (z0 + p) * m;
@@ -325,7 +327,8 @@ static qd_status solve_block(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s, 
     bs.K = qd__malloc(ctx, (m * m + 1) * sizeof *bs.K);
     bs.w = qd__malloc(ctx, (m + 1) * sizeof *bs.w);
     bs.V = qd__malloc(ctx, (m * m + 1) * sizeof *bs.V);
-    qd_status ret = bs.K && bs.w && bs.V ? QD_OK : QD_ERR_NOMEM;
+    bs.tmp = qd__malloc(ctx, (m * m + 2 * m + 1) * sizeof *bs.tmp);
+    qd_status ret = bs.K && bs.w && bs.V && bs.tmp ? QD_OK : QD_ERR_NOMEM;
     for (size_t i = 0; ret == QD_OK && i < m; i++)
         for (size_t j = 0; j < m; j++)
             bs.K[i * m + j] = s->Kb[(st + i) * n + st + j];
@@ -359,6 +362,7 @@ static qd_status solve_block(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s, 
     qd__free(bs.K);
     qd__free(bs.w);
     qd__free(bs.V);
+    qd__free(bs.tmp);
     return ret;
 }
 
