@@ -15,9 +15,13 @@
  *     H = A + A^H,   A = sum_j (t_j + i s_j) B_j,   t, s random,
  * therefore has the common eigenvectors as its own, with distinct
  * eigenvalues almost surely, and zheev splits all the classes in one call
- * with orthonormal (well-conditioned) vectors.  The dimension follows from
- * |u(0)|^2 = d^2 / |G| and is rounded to an integer; the result is checked by
- * both orthogonality relations and sum d^2 = |G|, or refused. */
+ * with orthonormal (well-conditioned) vectors; eigenvalues that nearly
+ * coincide are split again on their subspace by another combination.  The
+ * dimension follows from |u(0)|^2 = d^2 / |G| and is rounded to an integer,
+ * the row from the Rayleigh quotients of the B_j (second-order accurate).
+ * Groups H x C2 take H's table (product.c) before Burnside is tried.  Every
+ * result is checked by both orthogonality relations and sum d^2 = |G|, or
+ * refused. */
 #include "group.h"
 #include "../base/mem.h"
 
@@ -187,12 +191,20 @@ static void burnside_matrix(const qd__group *g, const double _Complex *coef, dou
             H[l + k * nc] = A[l * nc + k] + conj(A[k * nc + l]);
 }
 
-static bool distinct(size_t n, const double *w) {
-    double scale = fmax(fabs(w[0]), fabs(w[n - 1]));
-    for (size_t i = 1; i < n; i++)
-        if (w[i] - w[i - 1] < 1e-6 * scale)
-            return false;
-    return true;
+/* Eigenvalues closer than this (relative to the largest) are taken as one
+ * cluster, whose vectors are split again by another random combination:
+ * an eigenvector's error is about eps |H| / gap, 1e-12 at this gap. */
+static const double SPLIT_GAP = 1e-4;
+
+static double spread(size_t n, const double *w) {
+    return fmax(fabs(w[0]), fabs(w[n - 1]));
+}
+
+static size_t cluster_end(size_t n, const double *w, size_t a, double scale) {
+    size_t b = a + 1;
+    while (b < n && w[b] - w[b - 1] < SPLIT_GAP * scale)
+        b++;
+    return b;
 }
 
 static qd_status hermitian_eig(qd_ctx *ctx, size_t n, double _Complex *H, double *w) {
@@ -214,10 +226,31 @@ static qd_status hermitian_eig(qd_ctx *ctx, size_t n, double _Complex *H, double
     return st;
 }
 
-/* Eigenvector u (column i of U) -> d = sqrt|G| |u_0| rounded, and
- * chi(l) = d u_l / (u_0 sqrt h_l). */
+/* Refinement costs n nclass^2 table reads in all; above this the rows come
+ * from the vectors alone. */
+static const double REFINE_MAX_WORK = 4e8;
+
+/* omega(j) = u^H B_j^T u for every class j at once: the class matrices are
+ * normal, so these Rayleigh quotients are exact to second order in the
+ * error of u (1e-12 -> round-off), where u_l / u_0 is only first order. */
+static void rayleigh(const qd__group *g, const double _Complex *u, const double *sq, double _Complex *omega) {
+    size_t nc = g->nclass, n = g->order;
+    for (size_t j = 0; j < nc; j++)
+        omega[j] = 0;
+    for (size_t l = 0; l < nc; l++) {
+        size_t z = g->class_rep[l];
+        for (size_t x = 0; x < n; x++) {
+            size_t k = g->class_of[g->mul[g->inv[x] * n + z]];
+            omega[g->class_of[x]] += conj(u[k]) * u[l] * sq[l] / sq[k];
+        }
+    }
+}
+
+/* Eigenvector u (column i of U) -> the row: d = sqrt|G| |u_0| rounded (the
+ * u_l are omega(l) / sqrt(h_l) up to a common factor), and
+ * chi(l) = d omega(l) / h_l, omega refined by rayleigh() when affordable. */
 static qd_status row_from_vector(qd_ctx *ctx, const qd__group *g, const double _Complex *u, size_t i,
-                                 qd__chartab *t) {
+                                 double _Complex *omega, const double *sq, qd__chartab *t) {
     size_t nc = g->nclass;
     double d = sqrt((double)g->order) * cabs(u[0]), dr = round(d);
     if (fabs(d - dr) > 1e-6 || dr < 1) {
@@ -225,12 +258,92 @@ static qd_status row_from_vector(qd_ctx *ctx, const qd__group *g, const double _
         return QD_ERR_NUMERIC;
     }
     t->dim[i] = (size_t)dr;
+    if ((double)g->order * (double)nc * (double)nc <= REFINE_MAX_WORK)
+        rayleigh(g, u, sq, omega);
+    else
+        for (size_t l = 0; l < nc; l++)
+            omega[l] = u[l] * sq[l] / u[0];
     for (size_t l = 0; l < nc; l++) {
-        double _Complex chi = dr * u[l] / (u[0] * sqrt((double)g->class_size[l]));
+        double _Complex chi = dr * omega[l] / (sq[l] * sq[l]);
         t->re[i * nc + l] = creal(chi);
         t->im[i * nc + l] = cimag(chi);
     }
     return QD_OK;
+}
+
+typedef struct burnside {
+    const qd__group *g;
+    size_t nc;
+    double _Complex *U;     /* nc x nc: the eigenvectors, column-major */
+    double _Complex *H2;    /* 2 nc x nc: another combination and its scratch */
+    double _Complex *T, *C; /* nc x nc each: H2 U_c, then U_c^H H2 U_c */
+    double _Complex *coef;  /* nc */
+    uint64_t seed;
+} burnside;
+
+static void draw(burnside *b) {
+    for (size_t j = 0; j < b->nc; j++)
+        b->coef[j] = rand_unit(&b->seed) + I * rand_unit(&b->seed);
+}
+
+/* C = U_c^H H2 U_c for the k columns U_c, through T = H2 U_c. */
+static void restrict_to(burnside *b, const double _Complex *Uc, size_t k) {
+    size_t nc = b->nc;
+    for (size_t c = 0; c < k; c++)
+        for (size_t r = 0; r < nc; r++) {
+            double _Complex sum = 0;
+            for (size_t q = 0; q < nc; q++)
+                sum += b->H2[r + q * nc] * Uc[q + c * nc];
+            b->T[r + c * nc] = sum;
+        }
+    for (size_t c = 0; c < k; c++)
+        for (size_t r = 0; r < k; r++) {
+            double _Complex sum = 0;
+            for (size_t q = 0; q < nc; q++)
+                sum += conj(Uc[q + r * nc]) * b->T[q + c * nc];
+            b->C[r + c * k] = sum;
+        }
+}
+
+/* U_c <- U_c V, V the k x k eigenvectors left in C. */
+static void rotate(burnside *b, double _Complex *Uc, size_t k) {
+    size_t nc = b->nc;
+    for (size_t c = 0; c < k; c++)
+        for (size_t r = 0; r < nc; r++) {
+            double _Complex sum = 0;
+            for (size_t q = 0; q < k; q++)
+                sum += Uc[r + q * nc] * b->C[q + c * k];
+            b->T[r + c * nc] = sum;
+        }
+    memcpy(Uc, b->T, k * nc * sizeof *Uc);
+}
+
+/* The k columns U_c = U[:, a .. a+k) span an invariant subspace of every
+ * class matrix (their eigenvalues of H nearly coincide, but are far from the
+ * rest): diagonalize another random combination on it, C = U_c^H H2 U_c,
+ * rotate U_c by C's eigenvectors, and split what still clusters again. */
+static qd_status split_cluster(qd_ctx *ctx, burnside *b, size_t a, size_t k, int depth) {
+    if (depth > 24) {
+        qd_ctx_error(ctx, QD_ERR_NUMERIC, "character table: the class matrices did not split");
+        return QD_ERR_NUMERIC;
+    }
+    double _Complex *Uc = b->U + a * b->nc;
+    double *w = qd__malloc(ctx, k * sizeof *w);
+    if (!w)
+        return QD_ERR_NOMEM;
+    draw(b);
+    burnside_matrix(b->g, b->coef, b->H2);
+    restrict_to(b, Uc, k);
+    qd_status st = hermitian_eig(ctx, k, b->C, w);
+    if (st == QD_OK)
+        rotate(b, Uc, k);
+    for (size_t i = 0, e; i < k && st == QD_OK; i = e) {
+        e = cluster_end(k, w, i, spread(k, w));
+        if (e - i > 1)
+            st = split_cluster(ctx, b, a + i, e - i, depth + 1);
+    }
+    qd__free(w);
+    return st;
 }
 
 static qd_status burnside_table(qd_ctx *ctx, const qd__group *g, qd__chartab *t) {
@@ -240,27 +353,39 @@ static qd_status burnside_table(qd_ctx *ctx, const qd__group *g, qd__chartab *t)
                      BURNSIDE_MAX_CLASSES);
         return QD_ERR_TOOBIG;
     }
-    double _Complex *H = qd__malloc(ctx, 2 * nc * nc * sizeof *H), *coef = qd__malloc(ctx, nc * sizeof *coef);
+    burnside b = {g, nc, NULL, NULL, NULL, NULL, NULL, 0x9E3779B97F4A7C15ULL};
+    b.U = qd__malloc(ctx, 2 * nc * nc * sizeof *b.U);
+    b.H2 = qd__malloc(ctx, 2 * nc * nc * sizeof *b.H2);
+    b.T = qd__malloc(ctx, nc * nc * sizeof *b.T);
+    b.C = qd__malloc(ctx, nc * nc * sizeof *b.C);
+    b.coef = qd__malloc(ctx, nc * sizeof *b.coef);
     double *w = qd__malloc(ctx, nc * sizeof *w);
-    qd_status st = H && coef && w ? QD_OK : QD_ERR_NOMEM;
-    uint64_t seed = 0x9E3779B97F4A7C15ULL;
-    bool split = false;
-    for (int attempt = 0; attempt < 8 && st == QD_OK && !split; attempt++) {
-        for (size_t j = 0; j < nc; j++)
-            coef[j] = rand_unit(&seed) + I * rand_unit(&seed);
-        burnside_matrix(g, coef, H);
-        st = hermitian_eig(ctx, nc, H, w);
-        split = st == QD_OK && distinct(nc, w);
+    qd_status st = b.U && b.H2 && b.T && b.C && b.coef && w ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK) {
+        draw(&b);
+        burnside_matrix(g, b.coef, b.U);
+        st = hermitian_eig(ctx, nc, b.U, w);
     }
-    if (st == QD_OK && !split) {
-        qd_ctx_error(ctx, QD_ERR_NUMERIC, "character table: the class matrices did not split");
-        st = QD_ERR_NUMERIC;
+    for (size_t a = 0, e; a < nc && st == QD_OK; a = e) {
+        e = cluster_end(nc, w, a, spread(nc, w));
+        if (e - a > 1)
+            st = split_cluster(ctx, &b, a, e - a, 0);
     }
+    double _Complex *omega = st == QD_OK ? qd__malloc(ctx, nc * sizeof *omega) : NULL;
+    double *sq = st == QD_OK ? qd__malloc(ctx, nc * sizeof *sq) : NULL;
+    st = st != QD_OK ? st : omega && sq ? QD_OK : QD_ERR_NOMEM;
+    for (size_t l = 0; l < nc && st == QD_OK; l++)
+        sq[l] = sqrt((double)g->class_size[l]);
     for (size_t i = 0; i < nc && st == QD_OK; i++)
-        st = row_from_vector(ctx, g, H + i * nc, i, t);
+        st = row_from_vector(ctx, g, b.U + i * nc, i, omega, sq, t);
+    qd__free(sq);
+    qd__free(omega);
     qd__free(w);
-    qd__free(coef);
-    qd__free(H);
+    qd__free(b.coef);
+    qd__free(b.C);
+    qd__free(b.T);
+    qd__free(b.H2);
+    qd__free(b.U);
     return st;
 }
 
@@ -308,23 +433,42 @@ static int row_cmp(const qd__chartab *t, size_t a, size_t b) {
     return 0;
 }
 
-static void swap_rows(qd__chartab *t, size_t a, size_t b) {
-    size_t n = t->n, d = t->dim[a];
-    t->dim[a] = t->dim[b];
-    t->dim[b] = d;
-    for (size_t c = 0; c < n; c++) {
-        double re = t->re[a * n + c], im = t->im[a * n + c];
-        t->re[a * n + c] = t->re[b * n + c];
-        t->im[a * n + c] = t->im[b * n + c];
-        t->re[b * n + c] = re;
-        t->im[b * n + c] = im;
-    }
+/* Merge sort of the row indices by row_cmp (stable), then one permutation
+ * of the rows: the 1006 rows of D1000h would take ~1e9 moves by insertion. */
+static void merge_sort(const qd__chartab *t, size_t *v, size_t *tmp, size_t n) {
+    if (n < 2)
+        return;
+    size_t h = n / 2, i = 0, j = h, k = 0;
+    merge_sort(t, v, tmp, h);
+    merge_sort(t, v + h, tmp, n - h);
+    while (i < h || j < n)
+        tmp[k++] = j == n || (i < h && row_cmp(t, v[i], v[j]) <= 0) ? v[i++] : v[j++];
+    memcpy(v, tmp, n * sizeof *v);
 }
 
-static void sort_rows(qd__chartab *t) {
-    for (size_t i = 1; i < t->n; i++)
-        for (size_t j = i; j > 0 && row_cmp(t, j - 1, j) > 0; j--)
-            swap_rows(t, j - 1, j);
+static qd_status sort_rows(qd_ctx *ctx, qd__chartab *t) {
+    size_t n = t->n, *v = qd__malloc(ctx, 2 * n * sizeof *v);
+    double *re = qd__malloc(ctx, n * n * sizeof *re), *im = qd__malloc(ctx, n * n * sizeof *im);
+    size_t *dim = qd__malloc(ctx, n * sizeof *dim);
+    qd_status st = v && re && im && dim ? QD_OK : QD_ERR_NOMEM;
+    if (st == QD_OK) {
+        for (size_t i = 0; i < n; i++)
+            v[i] = i;
+        merge_sort(t, v, v + n, n);
+        for (size_t i = 0; i < n; i++) {
+            dim[i] = t->dim[v[i]];
+            memcpy(re + i * n, t->re + v[i] * n, n * sizeof *re);
+            memcpy(im + i * n, t->im + v[i] * n, n * sizeof *im);
+        }
+        memcpy(t->dim, dim, n * sizeof *dim);
+        memcpy(t->re, re, n * n * sizeof *re);
+        memcpy(t->im, im, n * n * sizeof *im);
+    }
+    qd__free(dim);
+    qd__free(im);
+    qd__free(re);
+    qd__free(v);
+    return st;
 }
 
 static double _Complex chi(const qd__chartab *t, size_t i, size_t c) {
@@ -416,11 +560,14 @@ qd_status qd__group_characters(qd_ctx *ctx, const qd__group *g, qd__chartab *t) 
     } else if (st == QD_OK && is_dihedral(g, pos, &r, &s)) {
         dihedral_table(g, s, pos, t);
     } else if (st == QD_OK) {
-        st = burnside_table(ctx, g, t);
+        bool product = false;
+        st = qd__group_product_table(ctx, g, t, &product);
+        if (st == QD_OK && !product)
+            st = burnside_table(ctx, g, t);
         if (st == QD_OK) {
             snap(nc * nc, t->re);
             snap(nc * nc, t->im);
-            sort_rows(t);
+            st = sort_rows(ctx, t);
         }
     }
     qd__free(pos);

@@ -40,10 +40,18 @@ void qd__chartab_free(qd__chartab *t);
 qd_status qd__pointgroup_name(qd_ctx *ctx, const qd__group *g, const double *R, char name[16]);
 qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R,
                            const qd__chartab *t, char (*labels)[12]);
-/* Additions after the contract (additive only). */
+
+/* Additions after the contract (additive only).
+ * R may be NULL (an abstract group): qd__pointgroup_name gives "" and
+ * qd__irrep_labels Gamma1, Gamma2, ... in the table's row order, both QD_OK;
+ * so do matrices that are not a faithful orthogonal representation. */
 #define QD__GROUP_MAX_ORDER 4096   /* the table alone is order^2 indices: 128 MiB here */
 
 /* A generating set of g, at most log2(order) elements for a group: gens must
  * hold order entries.  Returns how many, or SIZE_MAX when out of memory. */
 size_t qd__group_generators(qd_ctx *ctx, const qd__group *g, size_t *gens);
+
+/* Within src/group (product.c): t allocated for g's classes is filled,
+ * unsorted, when g = H x C2 (*done true); otherwise left alone. */
+qd_status qd__group_product_table(qd_ctx *ctx, const qd__group *g, qd__chartab *t, bool *done);
 #endif

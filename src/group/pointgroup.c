@@ -116,11 +116,34 @@ static double turn_about(const op *o, const double *a) {
     return t;
 }
 
-static size_t element_order(const qd__group *g, size_t a) {
-    size_t k = 1;
-    for (size_t x = a; x != g->identity; x = g->mul[x * g->order + a])
+static size_t gcd(size_t a, size_t b) {
+    while (b) {
+        size_t r = a % b;
+        a = b;
+        b = r;
+    }
+    return a;
+}
+
+/* The orders of all elements: walking the powers of a (pw holds them) also
+ * gives ord(a^j) = ord(a) / gcd(j, ord(a)), so each cyclic subgroup is
+ * walked once (a ring of 1000 masses: O(n), not O(n^2)). */
+static void element_orders(const qd__group *g, op *ops, size_t *pw) {
+    size_t n = g->order;
+    for (size_t a = 0; a < n; a++)
+        ops[a].order = 0;
+    for (size_t a = 0; a < n; a++) {
+        if (ops[a].order)
+            continue;
+        size_t k = 0;
+        for (size_t x = a; x != g->identity; x = g->mul[x * n + a])
+            pw[k++] = x;
+        pw[k] = g->identity;
         k++;
-    return k;
+        for (size_t j = 1; j <= k; j++)
+            if (!ops[pw[j - 1]].order)
+                ops[pw[j - 1]].order = k / gcd(j, k);
+    }
 }
 
 /* R orthogonal, a faithful representation: R_a R_s = R_(a s) for the
@@ -318,20 +341,25 @@ static void analyze(const qd__group *g, const op *ops, pg *p) {
 /* ops for every element, and whether R is a faithful orthogonal
  * representation of g at all. */
 static qd_status describe(qd_ctx *ctx, const qd__group *g, const double *R, pg *p, bool *is_pg) {
-    if (!g || !g->mul || !R) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "point group: a group and its 3x3 matrices are needed");
+    *is_pg = false;
+    if (!g || !g->mul) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "point group: no group given");
         return QD_ERR_ARG;
     }
+    if (!R)  /* an abstract group: not an error, just no geometry */
+        return QD_OK;
     op *ops = qd__malloc(ctx, g->order * sizeof *ops);
-    if (!ops)
-        return QD_ERR_NOMEM;
-    for (size_t e = 0; e < g->order; e++) {
+    size_t *pw = qd__malloc(ctx, g->order * sizeof *pw);
+    qd_status st = ops && pw ? QD_OK : QD_ERR_NOMEM;
+    for (size_t e = 0; e < g->order && st == QD_OK; e++)
         classify(R + 9 * e, &ops[e]);
-        ops[e].order = element_order(g, e);
+    if (st == QD_OK) {
+        element_orders(g, ops, pw);
+        st = represents(ctx, g, R, ops, is_pg);
     }
-    qd_status st = represents(ctx, g, R, ops, is_pg);
     if (st == QD_OK && *is_pg)
         analyze(g, ops, p);
+    qd__free(pw);
     qd__free(ops);
     return st;
 }
@@ -423,7 +451,7 @@ static bool all_distinct(size_t n, char (*labels)[12]) {
 
 qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R, const qd__chartab *t,
                            char (*labels)[12]) {
-    if (!t || !labels || (g && t->n != g->nclass)) {
+    if (!g || !t || !labels || t->n != g->nclass) {
         qd_ctx_error(ctx, QD_ERR_ARG, "irrep labels: a character table of the group is needed");
         return QD_ERR_ARG;
     }
