@@ -10,6 +10,7 @@
 #include "group/group.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -329,6 +330,21 @@ void qd_symmetry_class_name(const qd_symmetry *sym, size_t c, char *buf, size_t 
     snprintf(buf, cap, "%s%.*s", mine, (int)(primes < 3 ? primes : 3), "'''");
 }
 
+/* The one position where the labels of a complex pair differ, 'a' against
+ * 'b' (E1a/E1b, Ea'/Eb', Eag/Ebg), or SIZE_MAX. */
+static size_t pair_letter(const char *x, const char *y) {
+    size_t lx = strlen(x), at = SIZE_MAX;
+    if (lx != strlen(y))
+        return SIZE_MAX;
+    for (size_t i = 0; i < lx; i++)
+        if (x[i] != y[i]) {
+            if (at != SIZE_MAX || !strchr("ab", x[i]) || !strchr("ab", y[i]))
+                return SIZE_MAX;
+            at = i;
+        }
+    return at;
+}
+
 void qd_symmetry_block_label(const qd_symmetry *sym, size_t b, char *buf, size_t cap) {
     if (!sym || b >= sym->nblock || cap == 0) {
         if (cap)
@@ -336,11 +352,11 @@ void qd_symmetry_block_label(const qd_symmetry *sym, size_t b, char *buf, size_t
         return;
     }
     const char *x = sym->label[sym->block_irrep[b]], *y = sym->label[sym->block_pair[b]];
-    size_t lx = strlen(x);
-    if (x == y || strcmp(x, y) == 0)
+    size_t at = pair_letter(x, y);
+    if (strcmp(x, y) == 0)
         snprintf(buf, cap, "%s", x);
-    else if (lx > 1 && lx == strlen(y) && strncmp(x, y, lx - 1) == 0)
-        snprintf(buf, cap, "%.*s", (int)(lx - 1), x);   /* E1a, E1b: E1 */
+    else if (at != SIZE_MAX)
+        snprintf(buf, cap, "%.*s%s", (int)at, x, x + at + 1);   /* E1a, E1b: E1 */
     else
         snprintf(buf, cap, "%s+%s", x, y);
 }
