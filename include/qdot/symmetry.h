@@ -114,8 +114,9 @@ QD_API qd_status qd_symmetry_from_ops(qd_ctx *ctx, const qd_linear *lin, size_t 
  * a projector's rank is not n_i d_i, or Kb is not block diagonal (1e-8). */
 QD_API qd_status qd_symmetry_reduce(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *sym);
 
-/* Block b's label: the irrep's, or a pair's common one ("E" from E1a and
- * E1b, E1 from E1a and E1b, E' from Ea' and Eb'; else "A+B").  cap >= 32. */
+/* Block b's label: the irrep's, or a complex pair's without the letter a/b
+ * where their labels differ ("E" from Ea and Eb, "E1" from E1a and E1b, "E'"
+ * from Ea' and Eb'; else "A+B").  cap >= 32. */
 QD_API void qd_symmetry_block_label(const qd_symmetry *sym, size_t b, char *buf, size_t cap);
 /* Class c's name: geometric from its R (E, C3, C2, sigma, i, S4, C3^2) with
  * its size in front ("2C3", "3sigma"); abstract "E" or "2g3" (2 elements of
