@@ -112,8 +112,8 @@ static void put_group(const qd_symmetry *y, qd_buf *b) {
         qd_buf_printf(b, "symmetry group: %s (order %zu, %zu classes)\n", y->name, y->order,
                       y->nclass);
     else
-        qd_buf_printf(b, "symmetry group: abstract group of order %zu, %zu classes (signed "
-                         "permutations of the coordinates)\n", y->order, y->nclass);
+        qd_buf_printf(b, "symmetry group: abstract group of order %zu, %zu classes "
+                         "(permutations of the coordinates)\n", y->order, y->nclass);
     qd_buf_printf(b, "character table:\n  %-8s", "");
     for (size_t c = 0; c < y->nclass; c++) {
         char name[24];
