@@ -14,6 +14,10 @@
  * (qd_equilibria_choose: a minimum of the potential nearest the model's
  * `initial` state, or of lowest V without one); this file says which and
  * how many others there are (stderr in text; JSON "choice").
+ *
+ * --symmetry (modes_symmetry.c): the symmetry group of the point, its
+ * character table and the modes labelled by irreps, in place of the plain
+ * conservative modes.
  */
 #include "linear_cli.h"
 
@@ -23,6 +27,7 @@
 #include "json.h"
 #include "model_cli.h"
 #include "modes_plot.h"
+#include "modes_symmetry.h"
 #include "plot_cli.h"
 
 static const double PI = 3.14159265358979323846;
@@ -35,6 +40,7 @@ typedef struct modes_args {
     size_t nsets;
     bool json;
     const char *plot;  /* --plot FILE: the mode shapes drawn */
+    bool symmetry;     /* --symmetry */
 } modes_args;
 
 typedef struct modes_run {
@@ -50,12 +56,13 @@ typedef struct modes_run {
     bool have_sym;
     double residual;
     double *Q, *Qd;             /* --initial: normal coordinates at t = 0 */
+    cli_sym_run sym;            /* --symmetry */
 } modes_run;
 
 static const char usage_text[] =
     "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
     "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--scan NAME=A:B [--steps N]] "
-    "[--set NAME=VALUE]... [--format text|json] [--plot FILE.png|.svg|.pdf]";
+    "[--set NAME=VALUE]... [--format text|json] [--plot FILE.png|.svg|.pdf] [--symmetry]";
 
 static const char *const formats[] = {"text", "json", NULL};
 
@@ -102,6 +109,10 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
     if ((v = cli_value(argc, argv, i, "--plot")))
         return cli_once("--plot", &a->plot, v);
+    if (strcmp(argv[*i], "--symmetry") == 0) {
+        a->symmetry = true;
+        return QD_EXIT_OK;
+    }
     return cli_bad_option(argv[*i], usage_text);
 }
 
@@ -341,7 +352,9 @@ static void put_text(modes_run *r, qd_buf *b) {
     if (!all_zero(n * n, r->lin.G))
         put_matrix(b, "G0", n, r->lin.G);
     put_matrix(b, "K0", n, r->lin.K);
-    if (r->res.conservative)
+    if (r->sym.active)
+        cli_sym_put_text(&r->sym, r->lr.e, b);
+    else if (r->res.conservative)
         put_conservative(r, b);
     else
         put_state_space(r, b);
@@ -465,8 +478,13 @@ static void put_json(modes_run *r, qd_buf *b) {
     json_matrix(&j, "C", n, r->lin.C);
     json_matrix(&j, "G", n, r->lin.G);
     json_matrix(&j, "K", n, r->lin.K);
+    if (r->sym.active)
+        cli_sym_put_json(&r->sym, e, &j);
     json_frequencies(r, &j);
-    json_modes(r, &j);
+    if (r->sym.active)
+        cli_sym_json_modes(&r->sym, e, &j);
+    else
+        json_modes(r, &j);
     cli_json_key(&j, "eigenvalues");
     cli_json_begin_array(&j);
     for (size_t k = 0; k < res->neig; k++) {
@@ -522,6 +540,10 @@ int cli_cmd_modes(int argc, char **argv) {
     }
     if (a.plot && (rc = cli_plot_check(&(cli_plot_args){.file = a.plot}, "modes")))
         return rc;
+    if (a.symmetry && a.scan) {
+        cli_diag_error("--symmetry labels the modes about one point: not with --scan");
+        return QD_EXIT_USAGE;
+    }
     if (a.steps && !a.scan) {
         cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
         return QD_EXIT_USAGE;
@@ -534,6 +556,10 @@ int cli_cmd_modes(int argc, char **argv) {
     rc = cli_lin_load_model(&r.lr, a.file, a.sets, a.nsets);
     if (rc == QD_EXIT_OK && a.plot && qd_model_nspeeds(r.lr.mf.model)) {
         cli_diag_error("--plot: the modes of a model in speeds are not drawn yet");
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK && a.symmetry && qd_model_nspeeds(r.lr.mf.model)) {
+        cli_diag_error("--symmetry: the modes of a model in speeds are not analysed by symmetry");
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK && qd_model_nspeeds(r.lr.mf.model)) {
@@ -553,6 +579,8 @@ int cli_cmd_modes(int argc, char **argv) {
         note_choice(&r);
     if (rc == QD_EXIT_OK)
         rc = linearize(&r);
+    if (rc == QD_EXIT_OK && a.symmetry)
+        rc = cli_sym_compute(&r.lr, &r.lin, &r.sym);
     if (rc == QD_EXIT_OK && a.initial)
         rc = initial(&r, a.initial);
     if (rc == QD_EXIT_OK) {
@@ -568,6 +596,7 @@ done:
     free(r.Qd);
     qd_linear_free(&r.lin);
     qd_modes_result_free(&r.res);
+    cli_sym_free(&r.sym);
     qd_equilibrium_choice_free(&r.ch);
     cli_lin_free(&r.lr);
     qd_ctx_free(r.lr.ctx);

@@ -737,6 +737,64 @@ def _(q, v, t, p):
     return acc
 
 
+# ---- symmetric vibrating systems (Desloge ch. 66; issue 19) ----------------------------
+
+def spring_network(pts, masses, springs):
+    """Accelerations of point masses joined by springs (i, j, k, natural length): each
+    pulls its ends together with k (d - L) along the line joining them (Hooke)."""
+    force = [[0.0] * len(pts[0]) for _ in pts]
+    for i, j, k, length in springs:
+        dr = [a - b for a, b in zip(pts[i], pts[j])]
+        d = sqrt(sum(c * c for c in dr))
+        for c in range(len(dr)):
+            force[i][c] -= k * (d - length) * dr[c] / d
+            force[j][c] += k * (d - length) * dr[c] / d
+    return [f / m for fi, m in zip(force, masses) for f in fi]
+
+
+@example('symmetric_triatomic', ['x1', 'x2', 'x3'],
+         ranges={'x1': (-1.3, -0.7), 'x2': (-0.2, 0.2), 'x3': (0.7, 1.3)})
+def _(q, v, t, p):
+    # bonds k along the axis: m x1'' = k e12, M x2'' = -k e12 + k e23, m x3'' = -k e23
+    e12 = q['x2'] - q['x1'] - p['a']
+    e23 = q['x3'] - q['x2'] - p['a']
+    return [p['k'] * e12 / p['m'], (-p['k'] * e12 + p['k'] * e23) / p['M'],
+            -p['k'] * e23 / p['m']]
+
+
+@example('symmetric_square', ['x1', 'y1', 'x2', 'y2', 'x3', 'y3', 'x4', 'y4'],
+         ranges={'x1': (0.7, 1.3), 'y1': (0.7, 1.3), 'x2': (-1.3, -0.7), 'y2': (0.7, 1.3),
+                 'x3': (-1.3, -0.7), 'y3': (-1.3, -0.7), 'x4': (0.7, 1.3), 'y4': (-1.3, -0.7)})
+def _(q, v, t, p):
+    pts = [(q['x%d' % i], q['y%d' % i]) for i in range(1, 5)]
+    a, k, kd = p['a'], p['k'], p['kd']
+    springs = [(0, 1, k, a), (1, 2, k, a), (2, 3, k, a), (3, 0, k, a),
+               (0, 2, kd, a * sqrt(2)), (1, 3, kd, a * sqrt(2))]
+    return spring_network(pts, [p['m']] * 4, springs)
+
+
+_TETRA = ['%s%d' % (c, i) for i in range(5) for c in 'xyz']
+_TETRA_AT = [(0, 0, 0), (1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1)]
+
+
+@example('symmetric_tetrahedron', _TETRA,
+         ranges={'%s%d' % (c, i): (_TETRA_AT[i][n] / sqrt(3) - 0.2, _TETRA_AT[i][n] / sqrt(3) + 0.2)
+                 for i in range(5) for n, c in enumerate('xyz')})
+def _(q, v, t, p):
+    pts = [tuple(q['%s%d' % (c, i)] for c in 'xyz') for i in range(5)]
+    b, dh = p['b'], p['b'] * sqrt(8.0 / 3.0)
+    springs = [(0, i, p['k'], b) for i in range(1, 5)]
+    springs += [(i, j, p['kh'], dh) for i in range(1, 5) for j in range(i + 1, 5)]
+    return spring_network(pts, [p['M']] + [p['m']] * 4, springs)
+
+
+@example('symmetric_ring6', ['s1', 's2', 's3', 's4', 's5', 's6'])
+def _(q, v, t, p):
+    # arc coordinates on a circle: T = m/2 sum s_i'^2, so m s_i'' = k (s_i+1 - 2 s_i + s_i-1)
+    s = [q['s%d' % i] for i in range(1, 7)]
+    return [p['k'] * (s[(i + 1) % 6] - 2 * s[i] + s[i - 1]) / p['m'] for i in range(6)]
+
+
 @example('rod_elastic_string', ['r', 'phi', 'theta'], ranges={'r': (0.5, 2.0)})
 def _(q, v, t, p):
     # Desloge ch. 65 P11: rod centre G = r (sin phi, -cos phi) + a (sin th, -cos th),
