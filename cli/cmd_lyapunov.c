@@ -84,23 +84,32 @@ static double sum_of(const ly_result *r) {
     return s;
 }
 
+/* Round-off's -0.000000 printed as 0. */
+static double clean(double x) { return fabs(x) < 5e-7 ? 0.0 : x; }
+
+/* Six decimals, the digits the estimates have. */
+static void fixed(const char *before, double x) { printf("%s% .6f", before, clean(x)); }
+
 static void print_text(const ly_result *r) {
     for (size_t j = 0; j < r->k; j++) {
-        printf("lambda_%zu = % .6f", j + 1, r->ex[j]);
+        printf("lambda_%zu", j + 1);
+        fixed(" = ", r->ex[j]);
         if (isnan(r->err[j]))
             printf("  (no error estimate: fewer than 2 renormalizations in the last half)\n");
         else
             printf("  +- %.2g\n", r->err[j]);
     }
-    printf("mean tr J = %.3g (the sum of all %zu exponents, Liouville%s)\n", r->st.trace_mean,
-           r->d, r->conservative ? "; -> 0 as T grows for a conservative system" : "");
+    fixed("mean tr J = ", r->st.trace_mean);
+    printf("  (the sum of all %zu exponents, Liouville%s)\n", r->d,
+           r->conservative ? "; -> 0 as T grows for a conservative system" : "");
     if (r->k == r->d)
-        printf("sum       = %.3g (minus mean tr J: %.2g)\n", sum_of(r),
-               sum_of(r) - r->st.trace_mean);
+        fixed("sum       = ", sum_of(r));
+    if (r->k == r->d)
+        printf("\n");
     if (r->k == r->d && r->conservative) {
         printf("conservative: the exponents pair, lambda_i + lambda_%zu-i =", r->d + 1);
         for (size_t j = 0; j < r->d / 2; j++)
-            printf("%s %.2g", j ? "," : "", r->ex[j] + r->ex[r->d - 1 - j]);
+            printf("%s%.6f", j ? ", " : " ", clean(r->ex[j] + r->ex[r->d - 1 - j]));
         printf("\n");
     }
 }
