@@ -28,6 +28,7 @@
 #include "path.h"
 #include "scatter.h"
 #include "plot.h"
+#include "lyapunov.h"
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
 
 #define QDOT_VERSION "0.1.0"
