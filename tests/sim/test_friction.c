@@ -15,6 +15,11 @@
  *     mu_s and slides with a = g (sin al - mu_k cos al) when not; pushed up
  *     the slope with mu_k < tan al < mu_s it stops after v0 / (g (sin al +
  *     mu_k cos al)) and stays (static friction holds);
+ *   - the stick-slip oscillator on a belt: the switches of its limit
+ *     cycle (Den Hartog sec. 8.2);
+ *   - two contacts, a block sliding on a block on the floor: the mode
+ *     choice when the relative slip stops (stick together, or the top
+ *     block slides on ahead: slip -> slip the other way);
  *   - Painleve's rod (a rod whose end slides on a rough floor, mu = 2 >
  *     4/3, at 1 rad, sliding backwards): no consistent mode;
  *   - in every run the energy balance E(t) + dissipated(t) = E(0) to
@@ -291,6 +296,91 @@ static void block_turns_back(void **state) {
     sf_free(f);
 }
 
+/* The stick-slip oscillator: a mass on a spring (k) dragged by a belt of
+ * speed v (the constraint x' = v, with t-free a0, so the belt's work keeps
+ * E + dissipated from E0: not checked).  It sticks until k x = mu_s m g
+ * (x_s), slips about x_k = mu_k m g/k with frequency w = sqrt(k/m) until
+ * x' = v again at 2 x_k - x_s, where static friction holds it: the limit
+ * cycle's slip lasts (pi + 2 atan2(v/w, x_s - x_k))/w, its stick
+ * 2 (x_s - x_k)/v (Den Hartog, Mechanical Vibrations, sec. 8.2). */
+static void belt_limit_cycle(void **state) {
+    (void)state;
+    double m = 1, k = 4, v = 0.5, mus = 0.4, muk = 0.25, w = 2;
+    sim_fix *f = load("coordinates x\n"
+                      "parameters m = 1, k = 4, g = 9.81, v = 0.5\n"
+                      "T = m/2*x'^2\n"
+                      "V = k/2*x^2\n"
+                      "constraint belt: x' = v friction static 0.4 kinetic 0.25 normal m*g\n"
+                      "initial x' = 0.5\n");
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 12, 0, 1e-12, false), QD_OK);
+    double xs = mus * m * G / k, xk = muk * m * G / k;
+    double slip = (SF_PI + 2 * atan2(v / w, xs - xk)) / w, stick = 2 * (xs - xk) / v;
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 6);
+    double t = xs / v;
+    for (size_t i = 0; i < n; i++) {
+        assert_int_equal(tr[i].from, i % 2 ? QD_CONTACT_SLIP : QD_CONTACT_STICK);
+        near(tr[i].t, t, 1e-10, "switch of the limit cycle");
+        t += i % 2 ? stick : slip;
+    }
+    sf_free(f);
+}
+
+/* Two contacts: block B (m) on block A (M) on the floor; A set moving at
+ * v0, B at rest.  Both slip: B speeds up at mu2 g, A slows at
+ * a = (mu2 m + mu1 (M + m)) g / M, until their speeds meet at
+ * t1 = v0 / (mu2 g + a).  With mu1 <= mu2 they then move as one (B needs
+ * the force m mu1 g <= m mu2 g) and stop at t1 + v1/(mu1 g); with mu1 >
+ * mu2 B cannot follow A's deceleration and slides on ahead of it (a
+ * slip -> slip reversal, no transition): A stops at t1 + v1 / a', a' =
+ * (mu1 (M + m) - mu2 m) g / M, and stays (the floor holds it), B at
+ * t1 + v1 / (mu2 g). */
+static const char *const stacked =
+    "coordinates xa, xb\n"
+    "parameters M = 2, m = 1, g = 9.81, mu1 = %g, mu2 = %g\n"
+    "T = M/2*xa'^2 + m/2*xb'^2\n"
+    "constraint floor: xa' = 0 friction mu1 normal (M + m)*g\n"
+    "constraint top: xb' - xa' = 0 friction mu2 normal m*g\n"
+    "initial xa' = 3\n";
+
+static void stacked_together(void **state) {
+    (void)state;
+    double M = 2, m = 1, mu1 = 0.1, mu2 = 0.3, v0 = 3;
+    sim_fix *f = load(stacked, mu1, mu2);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 5, 0, 1e-11, false), QD_OK);
+    double a = (mu2 * m + mu1 * (M + m)) * G / M, t1 = v0 / (mu2 * G + a), v1 = mu2 * G * t1;
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 2);
+    assert_int_equal(tr[0].contact, 1);
+    near(tr[0].t, t1, 1e-12, "B sticks on A");
+    assert_int_equal(tr[1].contact, 0);
+    near(tr[1].t, t1 + v1 / (mu1 * G), 1e-12, "A stops");
+    near(f->stats.friction_dissipated, M * v0 * v0 / 2, 1e-12, "all the energy");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+static void stacked_overtakes(void **state) {
+    (void)state;
+    double M = 2, m = 1, mu1 = 0.5, mu2 = 0.2, v0 = 3;
+    sim_fix *f = load(stacked, mu1, mu2);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 5, 0, 1e-11, false), QD_OK);
+    double a = (mu2 * m + mu1 * (M + m)) * G / M, t1 = v0 / (mu2 * G + a), v1 = mu2 * G * t1;
+    double a2 = (mu1 * (M + m) - mu2 * m) * G / M;
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 2);
+    assert_int_equal(tr[0].contact, 0);
+    near(tr[0].t, t1 + v1 / a2, 1e-12, "A stops");
+    assert_int_equal(tr[1].contact, 1);
+    near(tr[1].t, t1 + v1 / (mu2 * G), 1e-12, "B stops");
+    near(f->stats.friction_dissipated, M * v0 * v0 / 2, 1e-12, "all the energy");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
 /* Painleve: a rod of length 2l, its end A on the floor (bilateral), sliding
  * backwards at 1 rad with mu = 2: N (1 + 3 cos^2 - 3 mu sin cos) = m g has
  * no solution with the sign the law assumes. */
@@ -377,6 +467,8 @@ int main(void) {
         cmocka_unit_test(block_slides),         cmocka_unit_test(block_stops_and_sticks),
         cmocka_unit_test(block_turns_back),     cmocka_unit_test(painleve_rod),
         cmocka_unit_test(rod_small_mu),         cmocka_unit_test(errors),
+        cmocka_unit_test(belt_limit_cycle),     cmocka_unit_test(stacked_together),
+        cmocka_unit_test(stacked_overtakes),
         cmocka_unit_test(symplectic_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
