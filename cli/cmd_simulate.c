@@ -8,7 +8,10 @@
  * (before and after) and say on stderr how many there were, the energy
  * they took, and where a run ends in contact.  A model with `speeds` is
  * integrated in them (t, q, the speeds, q', ...; --no-speeds: the
- * multiplier form).
+ * multiplier form).  A model with friction contacts adds the columns
+ * slip_NAME, mode_NAME and dissipated, a row at each stick/slip switch,
+ * and the switches and the energy balance to the summary (JSON
+ * `transitions`).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"

@@ -87,8 +87,11 @@ static qd_status candidates(qd__run *r, const double *y, size_t ev, choice *ch) 
         double v[2], d0, d1;
         slip_of(s, c, v);
         ch->ncand[c] = 0;
-        ch->rest[c] = hypot(v[0], v[1]) <= REST_TOL * scale;
-        bool limit = ev != (size_t)-1 && ev / 2 == c && ev % 2 == 0 && !fr->mode[c].slip;
+        bool mine = ev != (size_t)-1 && ev / 2 == c && ev % 2 == 0;
+        bool limit = mine && !fr->mode[c].slip;
+        /* a slip that just stopped is at rest by its event (v . u = 0),
+         * whatever is left across u by the integration's drift */
+        ch->rest[c] = hypot(v[0], v[1]) <= REST_TOL * scale || (mine && fr->mode[c].slip);
         if (limit) {
             /* the static limit reached: slips against the force it needed */
             against(lnow[c], &d0, &d1);
