@@ -26,6 +26,7 @@
  *     friction cone;
  *   - Painleve's rod (a rod whose end slides on a rough floor, mu = 2 >
  *     4/3, at 1 rad, sliding backwards): no consistent mode;
+ *   - runs sharing one compiled system from 4 threads agree bit for bit;
  *   - in every run the energy balance E(t) + dissipated(t) = E(0) to
  *     1e-8, and the dissipated energy against the kinetic energy lost;
  *   - the errors: friction on a holonomic constraint, a negative
@@ -36,6 +37,7 @@
  * deceleration), which the Runge-Kutta methods integrate exactly, and the
  * switches are located to round-off: the tolerances are a few 1e-12.
  */
+#include <pthread.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -497,6 +499,59 @@ static void point_in_bowl(void **state) {
     sf_free(f);
 }
 
+/* qd_sim_run_with from 4 threads on one compiled system: the modes are
+ * each run's own, so every run switches at the same instant and ends in
+ * the same state, bit for bit, as a run alone. */
+typedef struct job {
+    const sim_fix *f;
+    qd_sim_stats stats;
+    double last[32];
+    qd_status st;
+} job;
+
+static void *run_job(void *arg) {
+    job *j = arg;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_sim_opts o = {.method = QD_SIM_DOP853, .t0 = 0, .t_end = 12, .rtol = 1e-11,
+                     .atol = 1e-13, .q0 = j->f->q0, .qd0 = j->f->qd0};
+    j->st = qd_sim_run_with(ctx, j->f->s, &o, NULL, NULL, &j->stats, j->last);
+    qd_ctx_free(ctx);
+    return NULL;
+}
+
+static void threads_share_a_system(void **state) {
+    (void)state;
+    sim_fix *f = load("coordinates x\n"
+                      "parameters m = 1, k = 4, g = 9.81, v = 0.5\n"
+                      "T = m/2*x'^2\n"
+                      "V = k/2*x^2\n"
+                      "constraint belt: x' = v friction static 0.4 kinetic 0.25 normal m*g\n"
+                      "initial x' = 0.5\n");
+    assert_int_equal(qd_sim_compile(f->s), QD_OK);
+    job alone = {.f = f};
+    run_job(&alone);
+    assert_int_equal(alone.st, QD_OK);
+    assert_int_equal(alone.stats.transitions, 6);
+    job jobs[4];
+    pthread_t th[4];
+    for (int i = 0; i < 4; i++) {
+        jobs[i] = (job){.f = f};
+        assert_int_equal(pthread_create(&th[i], NULL, run_job, &jobs[i]), 0);
+    }
+    for (int i = 0; i < 4; i++)
+        pthread_join(th[i], NULL);
+    size_t ncols = qd_sim_columns(f->s, QD_SIM_DOP853, NULL, 0);
+    for (int i = 0; i < 4; i++) {
+        assert_int_equal(jobs[i].st, QD_OK);
+        assert_int_equal(jobs[i].stats.transitions, 6);
+        assert_memory_equal(jobs[i].last, alone.last, ncols * sizeof *alone.last);
+    }
+    size_t n;
+    qd_sim_transitions(f->s, &n); /* qd_sim_run's list: run_with leaves it */
+    assert_int_equal(n, 0);
+    sf_free(f);
+}
+
 static void expect_parse_error(const char *text, const char *msg, size_t line, size_t col) {
     qd_ctx *ctx = qd_ctx_new();
     qd_diag d;
@@ -555,6 +610,7 @@ int main(void) {
         cmocka_unit_test(belt_limit_cycle),     cmocka_unit_test(stacked_together),
         cmocka_unit_test(stacked_overtakes),    cmocka_unit_test(point_on_incline),
         cmocka_unit_test(point_on_plane_3d),    cmocka_unit_test(point_in_bowl),
+        cmocka_unit_test(threads_share_a_system),
         cmocka_unit_test(symplectic_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
