@@ -178,11 +178,18 @@ static size_t nstick(const qd__fmode *md, size_t k) {
     return c;
 }
 
+/* "A slip (lambda_N > 0), B stick": a slip's normal sign says which of
+ * the two solutions of |N| it is. */
 static void describe(const qd_sim *s, const qd__fmode *md, char *buf, size_t cap) {
     size_t k = 0;
-    for (size_t c = 0; c < s->nfc && k < cap; c++)
-        k += (size_t)snprintf(buf + k, cap - k, "%s%s %s", c ? ", " : "", s->fc[c].name,
+    for (size_t c = 0; c < s->nfc && k < cap; c++) {
+        const qd__fcon *fc = &s->fc[c];
+        k += (size_t)snprintf(buf + k, cap - k, "%s%s %s", c ? ", " : "", fc->name,
                               md[c].slip ? "slip" : "stick");
+        if (md[c].slip && fc->normal != (size_t)-1 && k < cap)
+            k += (size_t)snprintf(buf + k, cap - k, " (lambda_%s %s 0)",
+                                  s->cons[fc->normal].name, md[c].sn > 0 ? ">" : "<");
+    }
 }
 
 static qd_status paradox(qd_sim *s, double t, size_t found, const qd__fmode *a,

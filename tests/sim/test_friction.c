@@ -25,7 +25,9 @@
  *     in space, a spherical bowl where it comes to rest within the
  *     friction cone;
  *   - Painleve's rod (a rod whose end slides on a rough floor, mu = 2 >
- *     4/3, at 1 rad, sliding backwards): no consistent mode;
+ *     4/3, at 1 rad, sliding backwards): no consistent mode; sliding
+ *     forwards, two (the floor's multiplier of either sign);
+ *   - more than 12 contacts refused;
  *   - runs sharing one compiled system from 4 threads agree bit for bit;
  *   - in every run the energy balance E(t) + dissipated(t) = E(0) to
  *     1e-8, and the dissipated energy against the kinetic energy lost;
@@ -406,6 +408,53 @@ static void painleve_rod(void **state) {
     sf_free(f);
 }
 
+/* Sliding forwards the same rod has two consistent slips, with the
+ * floor's multiplier of either sign (the floor is a bilateral constraint):
+ * den = 1 + 3 cos^2 - 3 mu sin cos < 0 for one sign. */
+static void painleve_rod_two_modes(void **state) {
+    (void)state;
+    sim_fix *f = load("coordinates x, y, th\n"
+                      "parameters m = 1, l = 1, g = 9.81, mu = 2\n"
+                      "T = m/2*(x'^2 + y'^2) + m*l^2/6*th'^2\n"
+                      "V = m*g*y\n"
+                      "constraint floor: y - l*sin(th) = 0\n"
+                      "constraint slip: x' + l*sin(th)*th' = 0 friction mu normal floor\n"
+                      "initial th = 1, y = sin(1), x' = 1\n");
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 1, 0, 1e-10, false), QD_ERR_NUMERIC);
+    const char *msg = qd_ctx_message(f->ctx);
+    assert_non_null(strstr(msg, "Painleve paradox at t = 0: several consistent modes"));
+    assert_non_null(strstr(msg, "lambda_floor > 0"));
+    assert_non_null(strstr(msg, "lambda_floor < 0"));
+    sf_free(f);
+}
+
+/* More than QD__FMAX = 12 contacts: refused, the choice tries 5^k sets. */
+static void too_many_contacts(void **state) {
+    (void)state;
+    char text[4096];
+    size_t k = (size_t)snprintf(text, sizeof text, "coordinates ");
+    for (int i = 0; i < 13; i++)
+        k += (size_t)snprintf(text + k, sizeof text - k, "%sx%d", i ? ", " : "", i);
+    k += (size_t)snprintf(text + k, sizeof text - k, "\nT = (");
+    for (int i = 0; i < 13; i++)
+        k += (size_t)snprintf(text + k, sizeof text - k, "%sx%d'^2", i ? " + " : "", i);
+    k += (size_t)snprintf(text + k, sizeof text - k, ")/2\n");
+    for (int i = 0; i < 13; i++)
+        k += (size_t)snprintf(text + k, sizeof text - k,
+                              "constraint c%d: x%d' = 0 friction 0.1 normal 1\n", i, i);
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = qd_model_parse(ctx, text, NULL);
+    assert_non_null(m);
+    assert_int_equal(qd_model_ncontacts(m), 13);
+    qd_eom *e = qd_eom_derive(ctx, m);
+    assert_non_null(e);
+    assert_null(qd_sim_new(ctx, m, e));
+    assert_non_null(strstr(qd_ctx_message(ctx), "13 friction contacts: at most 12"));
+    qd_eom_free(e);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* The same rod with mu = 0.5 < 4/3 slides with a consistent N > 0. */
 static void rod_small_mu(void **state) {
     (void)state;
@@ -610,7 +659,8 @@ int main(void) {
         cmocka_unit_test(belt_limit_cycle),     cmocka_unit_test(stacked_together),
         cmocka_unit_test(stacked_overtakes),    cmocka_unit_test(point_on_incline),
         cmocka_unit_test(point_on_plane_3d),    cmocka_unit_test(point_in_bowl),
-        cmocka_unit_test(threads_share_a_system),
+        cmocka_unit_test(threads_share_a_system), cmocka_unit_test(painleve_rod_two_modes),
+        cmocka_unit_test(too_many_contacts),
         cmocka_unit_test(symplectic_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
