@@ -32,7 +32,6 @@ typedef struct choice {
     qd__fmode cand[QD__FMAX][MAXCAND];
     size_t ncand[QD__FMAX];
     bool rest[QD__FMAX];    /* at rest: a slip candidate must accelerate its way */
-    double lref[QD__FMAX][2]; /* the friction force with every resting contact stuck */
 } choice;
 
 static double speed_scale(const qd_sim *s, const double *y) {
@@ -76,7 +75,7 @@ static void against(const double l[2], double *d0, double *d1) {
 
 /* The candidates of every contact; the modes in fr->mode are the ones in
  * force before the switch, and s->rhs holds their solution at the state. */
-static qd_status candidates(qd__run *r, const double *y, size_t ev, choice *ch) {
+static void candidates(qd__run *r, const double *y, size_t ev, choice *ch) {
     qd_sim *s = r->s;
     const qd__fric_run *fr = s->fr;
     double scale = speed_scale(s, y);
@@ -109,12 +108,11 @@ static qd_status candidates(qd__run *r, const double *y, size_t ev, choice *ch) 
             }
         }
     }
-    return QD_OK;
 }
 
 /* 2-D contacts at rest: slip against the force they need with every resting
  * contact stuck (and the moving ones as the candidates say). */
-static qd_status rest_directions(qd__run *r, double t, const double *y, choice *ch) {
+static void rest_directions(qd__run *r, double t, const double *y, choice *ch) {
     qd_sim *s = r->s;
     qd__fric_run *fr = s->fr;
     bool any = false;
@@ -122,10 +120,8 @@ static qd_status rest_directions(qd__run *r, double t, const double *y, choice *
         fr->mode[c] = ch->cand[c][0];
         any = any || (ch->rest[c] && s->fc[c].ncon > 1);
     }
-    if (!any)
-        return QD_OK;
-    if (!qd__sim_saddle(s, t, y))
-        return QD_OK; /* no stuck solution: only sticking is tried, and fails */
+    if (!any || !qd__sim_saddle(s, t, y))
+        return; /* no stuck solution: only sticking is tried, and fails */
     for (size_t c = 0; c < s->nfc; c++) {
         if (!(ch->rest[c] && s->fc[c].ncon > 1))
             continue;
@@ -134,7 +130,6 @@ static qd_status rest_directions(qd__run *r, double t, const double *y, choice *
         against(l, &d0, &d1);
         add_slip(s, ch, c, d0, d1);
     }
-    return QD_OK;
 }
 
 /* Does every contact's law hold in the solution s->rhs of the trial set? */
