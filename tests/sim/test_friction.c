@@ -11,6 +11,8 @@
  *   - the billiard ball in 3-D (TC21): the slip velocity keeps its
  *     direction and its size falls as S0 - (7/2) mu g t, the centre's
  *     velocity changes by mu g t* against S0;
+ *   - a sphere set down on an incline rolls iff tan al <= 7 mu/2, else
+ *     slides from rest in 2-D;
  *   - a block on an incline of angle al: at rest it sticks when tan al <
  *     mu_s and slides with a = g (sin al - mu_k cos al) when not; pushed up
  *     the slope with mu_k < tan al < mu_s it stops after v0 / (g (sin al +
@@ -235,6 +237,37 @@ static void billiard_ball(void **state) {
         fail_msg("slip at the switch %g (t %g)", col(f, b.sw, "slip_ball"), b.sw[0]);
     assert_true(f->stats.energy_balance_error < 1e-8);
     sf_free(f);
+}
+
+/* A sphere set down at rest on an incline (gravity tilted by al, the
+ * plane horizontal), both slip directions one contact: it rolls, x =
+ * (5/7) g sin(al) t^2/2, iff tan al <= 7 mu/2; else it slides from rest
+ * (the 2-D slip direction against the force it would need to roll),
+ * x = g (sin al - mu cos al) t^2/2 (Byerly art. 9, exercise; reference
+ * seed-byerly TC21). */
+static void sphere_incline_3d(void **state) {
+    (void)state;
+    const double al = 0.5, mus[2] = {0.2, 0.1};
+    for (int k = 0; k < 2; k++) {
+        double mu = mus[k];
+        sim_fix *f = load("coordinates x, y, phi, theta, psi\n"
+                          "parameters m = 1, a = 0.2, g = 9.81, mu = %g, al = %g\n"
+                          "body ball mass m inertia sphere(m, a) at (x, y, a) orientation "
+                          "euler(phi, theta, psi)\n"
+                          "rolls ball on plane((0, 0, 1), (0, 0, 0)) as sphere(a) friction "
+                          "mu normal m*g*cos(al)\n"
+                          "V = -m*g*sin(al)*x\n"
+                          "initial theta = 1.2\n", mu, al);
+        assert_int_equal(sf_run(f, QD_SIM_DOP853, 1, 0, 1e-11, false), QD_OK);
+        bool rolls = tan(al) <= 3.5 * mu;
+        double acc = rolls ? 5.0 / 7 * G * sin(al) : G * (sin(al) - mu * cos(al));
+        near(col(f, f->last, "x"), acc / 2, 1e-9, rolls ? "rolling" : "sliding");
+        assert_true(fabs(col(f, f->last, "y")) < 1e-9);
+        assert_true(col(f, f->last, "mode_ball") == (rolls ? 0 : 1));
+        assert_int_equal(f->stats.transitions, 0);
+        assert_true(f->stats.energy_balance_error < 1e-8);
+        sf_free(f);
+    }
 }
 
 static const char *const block =
@@ -660,7 +693,7 @@ int main(void) {
         cmocka_unit_test(stacked_overtakes),    cmocka_unit_test(point_on_incline),
         cmocka_unit_test(point_on_plane_3d),    cmocka_unit_test(point_in_bowl),
         cmocka_unit_test(threads_share_a_system), cmocka_unit_test(painleve_rod_two_modes),
-        cmocka_unit_test(too_many_contacts),
+        cmocka_unit_test(too_many_contacts),    cmocka_unit_test(sphere_incline_3d),
         cmocka_unit_test(symplectic_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
