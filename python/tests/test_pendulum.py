@@ -78,7 +78,8 @@ def test_stats_are_the_runs_counts():
     assert set(r.stats) == {"steps", "evals", "rejected", "energy_error_max",
                             "constraint_error_max", "E0", "events", "t", "impacts",
                             "impact_energy_lost", "in_contact", "at_rest", "chattering",
-                            "contact"}
+                            "contact", "transitions", "friction_dissipated",
+                            "energy_balance_error"}
     # a fixed step: t_end/dt steps, none rejected, E0 = -m g l cos(theta0)
     assert (r.stats["steps"], r.stats["rejected"], r.stats["t"]) == (8, 0, 1.0)
     assert r.stats["E0"] == pytest.approx(-1 * 9.81 * 2 * math.cos(0.3), rel=1e-14)

@@ -19,6 +19,7 @@
  *   impact constraint NAME: ..., impact NAME: GAP >= 0, prescribe ...
  *   speeds NAME = EXPR, ...                             (speeds.c)
  *   inductance, capacitance, resistance, source ... on BRANCH  (circuit.c)
+ *   friction MU on POINT against CONSTRAINT            (friction_point.c)
  */
 #include "parser.h"
 #include "../base/mem.h"
@@ -551,6 +552,10 @@ static bool stmt_constraint(parser *p) {
     if (qd_is_number(c))
         return qd__mdl_perr(p, off, p->lx.tok.off - off, "a constraint relates coordinates or velocities",
                     qd_is_zero(c) ? "this constraint always holds" : "this constraint can never hold");
+    fclause fc;
+    bool friction = qd__mdl_friction_ahead(p);
+    if (friction && !qd__mdl_friction_parse(p, &fc))
+        return false;
     char *copy = qd__malloc(p->ctx, strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
@@ -563,6 +568,9 @@ static bool stmt_constraint(parser *p) {
     /* from here the model owns the name (ncons counts it) */
     if (!add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1}))
         return qd__mdl_perr(p, off, 1, NULL, "out of memory");
+    size_t ci = m->ncons - 1;
+    if (friction && !qd__mdl_friction_add(p, &fc, name, QD_CONTACT_CONSTRAINT, &ci, 1))
+        return false;
     return qd__mdl_end_of_statement(p);
 }
 
@@ -644,6 +652,7 @@ static const struct stmt_kw {
     {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
+    {"friction", qd__mdl_stmt_friction, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -658,12 +667,13 @@ static bool unknown_statement(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {
         /* spaces, not commas: with the circuit statements the whole list
-         * fills the 255 bytes of a diagnostic's hint, so inputs and outputs
-         * are left to "did you mean" above */
+         * fills the 255 bytes of a diagnostic's hint, so inputs, outputs
+         * and friction are left to "did you mean" above */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
             if (statements[i].parse != qd__mdl_stmt_inputs &&
-                statements[i].parse != qd__mdl_stmt_outputs)
+                statements[i].parse != qd__mdl_stmt_outputs &&
+                statements[i].parse != qd__mdl_stmt_friction)
                 n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
             snprintf(hint + n, sizeof hint - n, ") or NAME = ...");
@@ -712,7 +722,7 @@ bool qd__mdl_finish(parser *p) {
     qd_ctx *ctx = C(p);
     if (m->ncoords == 0)
         return qd__mdl_perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
-    if (!qd__mdl_check_integrals(p))
+    if (!qd__mdl_check_integrals(p) || !qd__mdl_friction_finish(p))
         return false;
     if (m->H && m->nisos) {
         qd_diag at;
