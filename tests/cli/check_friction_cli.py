@@ -436,7 +436,7 @@ def check_wedge(qdot):
         return
     rc, out, err = run(qdot, 'simulate', EX / 'friction_wedge_sphere.qd', '--t-end', 0.5,
                        '--set', 'Omega=-20', '--set', 'mu=%r' % (2 * mu_c), '--format', 'json')
-    check(rc == 1 and 'painlev' in err.lower() and 'slip' in err,
+    check(rc == 1 and 'painlev' in err.lower(),
           '%s: exit %d, stderr %r' % (what, rc, err[-400:]))
 
 
