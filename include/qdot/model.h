@@ -293,6 +293,38 @@ QD_API bool qd_model_where(const qd_model *m, const char *what, qd_diag *where);
  * then unchanged. */
 QD_API bool qd_model_locate(const qd_model *m, qd_diag *d);
 
+/* ---- Coulomb friction (issue 18) -------------------------------------------
+ *
+ * A contact with dry friction: `constraint NAME: LHS = RHS friction MU
+ * normal N` (one slip direction, the constraint's; LHS - RHS is the slip
+ * velocity of the contact point), `rolls BODY ... friction MU` (two: the
+ * rolling constraints BODY_roll1, BODY_roll2 together).  It sticks (its
+ * constraints hold) while the friction force, the multipliers' norm, is at
+ * most MU_S |N|; else it slips under a force MU_K |N| against the slip
+ * velocity.  docs/language.md, "Friction". */
+typedef enum qd_contact_kind {
+    QD_CONTACT_CONSTRAINT,   /* `constraint ... friction`: one direction */
+    QD_CONTACT_ROLLING,      /* `rolls ... friction`: two directions */
+    QD_CONTACT_POINT         /* `friction MU on POINT against CONSTRAINT`: two */
+} qd_contact_kind;
+
+QD_API size_t qd_model_ncontacts(const qd_model *m);
+/* The constraint's name (QD_CONTACT_CONSTRAINT) or the body's; NULL out of
+ * range. */
+QD_API const char *qd_model_contact_name(const qd_model *m, size_t i);
+QD_API qd_contact_kind qd_model_contact_kind(const qd_model *m, size_t i);
+/* The constraints (indices into qd_model_constraint) whose multipliers are
+ * the friction force: 1 or 2, written into con[0..); 0 out of range. */
+QD_API size_t qd_model_contact_constraints(const qd_model *m, size_t i, size_t con[2]);
+/* The static and kinetic coefficients as written (equal for `friction
+ * MU`): expressions in the parameters, >= 0 when read. */
+QD_API const qd_expr *qd_model_contact_mu(const qd_model *m, size_t i, bool kinetic);
+/* The normal force: an expression in q, q', t and the parameters, or NULL
+ * when it is a constraint's multiplier (then that constraint's name from
+ * qd_model_contact_normal_constraint, else NULL). */
+QD_API const qd_expr *qd_model_contact_normal(const qd_model *m, size_t i);
+QD_API const char *qd_model_contact_normal_constraint(const qd_model *m, size_t i);
+
 #ifdef __cplusplus
 }
 #endif

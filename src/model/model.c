@@ -94,6 +94,7 @@ void qd_model_free(qd_model *m) {
     qd__free(m->prescribed);
     qd__free(m->speeds);
     qd__mdl_free_io(m);
+    qd__mdl_free_friction(m);
     qd__free(m->parts);
     qd__free(m->Qhat);
     qd__free(m->mom);

@@ -172,6 +172,9 @@ struct qd_model {
     isoper *isos;              /* isoperimetric constraints (variational.c) */
     size_t nisos;
     size_t nisos_applied;      /* how many of them L already holds */
+    /* Coulomb friction (friction.c): the contacts, in the order given */
+    struct fcontact *contacts;
+    size_t ncontacts;
 };
 
 typedef struct parser {
@@ -281,6 +284,40 @@ bool qd__mdl_integral_ahead(const parser *p);
 bool qd__mdl_apply_isoperimetric(parser *p);
 bool qd__mdl_isoperimetric_named(const qd_model *m, const char *name);
 void qd__mdl_free_isoperimetric(qd_model *m); /* and the independent variable's name */
+
+/* friction.c: a contact with Coulomb friction on 1 or 2 velocity
+ * constraints (qdot/model.h, "Coulomb friction"). */
+typedef struct fcontact {
+    char *name;                /* owned copy */
+    qd_contact_kind kind;
+    size_t con[2], ncon;       /* indices into the model's constraints */
+    const qd_expr *mu_s, *mu_k;/* as written, in the parameters */
+    const qd_expr *normal;     /* N as an expression, or NULL */
+    char *normal_con;          /* owned: the constraint whose multiplier is N */
+    size_t normal_off, normal_len; /* where that name is written (forward use) */
+} fcontact;
+
+/* The clause `friction (MU | static MU_S kinetic MU_K) [normal N]` as read,
+ * before its constraints exist. */
+typedef struct fclause {
+    size_t off, len;           /* the word `friction` */
+    const qd_expr *mu_s, *mu_k;
+    const qd_expr *normal;
+    char normal_con[64];       /* "" when N is an expression or not given */
+    size_t normal_off, normal_len;
+} fclause;
+
+bool qd__mdl_friction_ahead(const parser *p);
+/* Read the clause at the token `friction`. */
+bool qd__mdl_friction_parse(parser *p, fclause *fc);
+/* Attach a read clause to constraints con[0..ncon) of the model under name;
+ * a velocity-free one is an error at the clause.  need_normal: an error
+ * when no N is given and none is implied. */
+bool qd__mdl_friction_add(parser *p, const fclause *fc, const char *name, qd_contact_kind kind,
+                          const size_t *con, size_t ncon);
+/* After the last line: every normal named by a constraint exists. */
+bool qd__mdl_friction_finish(parser *p);
+void qd__mdl_free_friction(qd_model *m);
 
 /* circuit.c: `inductance`, `capacitance`, `resistance`, `source` */
 bool qd__mdl_stmt_inductance(parser *p);

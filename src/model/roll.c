@@ -319,7 +319,9 @@ static bool add_constraint(parser *p, const rolling *r, const char *name, E e) {
     return true;
 }
 
-static bool generate(parser *p, const rolling *r) {
+/* idx[i]: the model's index of constraint i (slip 1, slip 2, gap), or
+ * (size_t)-1 where it vanishes identically and is not added. */
+static bool generate(parser *p, const rolling *r, size_t idx[3]) {
     qd_ctx *c = C(p);
     contact ct;
     bool ok = r->surf == ON_PLANE ? plane_contact(p, r, &ct) : cylinder_contact(p, r, &ct);
@@ -336,6 +338,7 @@ static bool generate(parser *p, const rolling *r) {
     char names[3][80];
     constraint_names(p->m, r->b->name, names);
     for (int i = 0; i < 3; i++) {
+        idx[i] = (size_t)-1;
         if (qd_is_zero(e[i]))
             continue;
         if (qd_is_number(e[i]))
@@ -344,8 +347,27 @@ static bool generate(parser *p, const rolling *r) {
                         qd_number_value(e[i]));
         if (!add_constraint(p, r, names[i], e[i]))
             return false;
+        idx[i] = p->m->ncons - 1;
     }
     return true;
+}
+
+/* `friction ...` after a rolls statement: the two slip components are one
+ * contact, its normal force the gap constraint's multiplier unless given. */
+static bool add_friction(parser *p, const rolling *r, fclause *fc, const size_t idx[3]) {
+    size_t con[2], ncon = 0;
+    for (int i = 0; i < 2; i++)
+        if (idx[i] != (size_t)-1)
+            con[ncon++] = idx[i];
+    if (!ncon)
+        return qd__mdl_perr(p, fc->off, fc->len, "the body cannot slip on this surface",
+                            "rolling without slip velocity: friction has nothing to act on");
+    if (!fc->normal && !fc->normal_con[0] && idx[2] != (size_t)-1) {
+        snprintf(fc->normal_con, sizeof fc->normal_con, "%s", p->m->con_names[idx[2]]);
+        fc->normal_off = r->name.off;
+        fc->normal_len = r->name.len;
+    }
+    return qd__mdl_friction_add(p, fc, r->b->name, QD_CONTACT_ROLLING, con, ncon);
 }
 
 /* ---- parsing ------------------------------------------------------------------ */
@@ -481,7 +503,7 @@ static bool parse_shape(parser *p, rolling *r) {
 
 /* (moving V | turning W | as SHAPE)*, each once */
 static bool parse_clauses(parser *p, rolling *r) {
-    while (p->lx.tok.kind == TK_IDENT) {
+    while (p->lx.tok.kind == TK_IDENT && !qd__mdl_friction_ahead(p)) {
         bool moving = qd__lex_is(&p->lx, "moving"), turning = qd__lex_is(&p->lx, "turning");
         bool as = qd__lex_is(&p->lx, "as");
         if (!moving && !turning && !as)
@@ -544,7 +566,14 @@ bool qd__mdl_stmt_rolls(parser *p) {
         return qd__mdl_perr(p, r.name.off, r.name.len,
                     "add the body's shape: as sphere(a), as disk(a) or as cylinder(a)",
                     "rolls needs the shape that touches the surface");
+    fclause fc;
+    bool friction = qd__mdl_friction_ahead(p);
+    if (friction && !qd__mdl_friction_parse(p, &fc))
+        return false;
     if (!qd__mdl_end_of_statement(p))
         return false;
-    return generate(p, &r);
+    size_t idx[3];
+    if (!generate(p, &r, idx))
+        return false;
+    return !friction || add_friction(p, &r, &fc, idx);
 }

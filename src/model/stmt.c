@@ -519,6 +519,10 @@ static bool stmt_constraint(parser *p) {
     if (qd_is_number(c))
         return qd__mdl_perr(p, off, p->lx.tok.off - off, "a constraint relates coordinates or velocities",
                     qd_is_zero(c) ? "this constraint always holds" : "this constraint can never hold");
+    fclause fc;
+    bool friction = qd__mdl_friction_ahead(p);
+    if (friction && !qd__mdl_friction_parse(p, &fc))
+        return false;
     char *copy = qd__malloc(p->ctx, strlen(name) + 1);
     if (copy)
         strcpy(copy, name);
@@ -531,6 +535,9 @@ static bool stmt_constraint(parser *p) {
     /* from here the model owns the name (ncons counts it) */
     if (!add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1}))
         return qd__mdl_perr(p, off, 1, NULL, "out of memory");
+    size_t ci = m->ncons - 1;
+    if (friction && !qd__mdl_friction_add(p, &fc, name, QD_CONTACT_CONSTRAINT, &ci, 1))
+        return false;
     return qd__mdl_end_of_statement(p);
 }
 
@@ -680,7 +687,7 @@ bool qd__mdl_finish(parser *p) {
     qd_ctx *ctx = C(p);
     if (m->ncoords == 0)
         return qd__mdl_perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
-    if (!qd__mdl_check_integrals(p))
+    if (!qd__mdl_check_integrals(p) || !qd__mdl_friction_finish(p))
         return false;
     if (m->H && m->nisos) {
         qd_diag at;
