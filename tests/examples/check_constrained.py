@@ -954,7 +954,7 @@ def _(q, v, t, p, label=None):
 # ideal constraint, the multiplier the friction force; while a particle slides
 # (friction_particle_incline) the friction mu N opposes its velocity.
 
-FRICTION = 'issue 18 (Coulomb friction): qdot eom on a model with friction'
+FRICTION = 'issue 18: the statement `friction MU on POINT against CONSTRAINT`'
 
 
 def slides_state(rng, p):
@@ -1094,11 +1094,10 @@ def _(q, v, t, p, label=None):
     return dict(acc=acc, mult={'plane': m * g * cos(al)}, grad={'plane': [sin(al), 0, cos(al)]})
 
 
-for _name in ('friction_sphere_slides', 'friction_sphere_incline', 'friction_block_incline',
-              'friction_stick_slip', 'friction_wedge_sphere', 'friction_billiard',
-              'friction_particle_incline'):
-    for _key in (_name, _name + ':kinds', _name + ':dof'):
-        EXPECTED_TO_FAIL[_key] = FRICTION
+# `friction MU on POINT against CONSTRAINT` is not read yet
+for _key in ('friction_particle_incline', 'friction_particle_incline:kinds',
+             'friction_particle_incline:dof'):
+    EXPECTED_TO_FAIL[_key] = FRICTION
 
 
 def read_parameters(path):
