@@ -551,6 +551,21 @@ def check_stick_slip(qdot):
     periods = [b2 - a2 for a2, b2 in zip(starts, starts[1:])]
     check(periods and all(close(p, t_stick + t_slip) for p in periods),
           '%s: periods %r, want 2 D/vb + (pi + 2 b)/w = %r' % (what, periods, t_stick + t_slip))
+    # What friction dissipates is its force times the slip, mu_k m g (vb - x') on each arc:
+    # mu_k m g (vb t_slip + 2 D) a whole arc; nothing while the block sticks.  (The belt
+    # also works on the block while it sticks, so E + dissipated is not E(0) here.)
+    if 'dissipated' in r.cols:
+        slips = [t for t, a2, _ in want if a2 == 'stick']
+        T = r.rows[-1]['t']
+        whole = sum(1 for t in slips if t + t_slip <= T)
+        part = [t for t in slips if t + t_slip > T]
+        d = mu_k * m * g * (vb * t_slip + 2 * D) * whole
+        if part:
+            u = T - part[0]
+            x_now = x0 + A * cos(w * u - b)
+            d += mu_k * m * g * (vb * u - (x_now - mu_s * m * g / k))
+        check(close(r.rows[-1]['dissipated'], d, 1e-8),
+              '%s: dissipated %r, want %r' % (what, r.rows[-1]['dissipated'], d))
     for x in r.rows:
         if x['t'] > t1 and abs(x["x'"] - vb) < 1e-9 and x['mode_' + r.contact()] == 0:
             if not check(abs(k * x['x']) <= mu_s * m * g * (1 + 1e-9),
