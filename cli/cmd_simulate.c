@@ -163,6 +163,42 @@ static void impacts_summary(const cli_sim *c, const qd_sim_stats *st) {
                 st->t, st->impacts, st->impacts == 1 ? "" : "s");
 }
 
+/* Friction (models with contacts): the switches and the energy balance. */
+static void friction_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st) {
+    static const char *const mode[] = {"stick", "slip"};
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(c->s, &n);
+    cli_json_key(j, "friction_dissipated");
+    cli_json_number(j, st->friction_dissipated);
+    cli_json_key(j, "energy_balance_error");
+    cli_json_number(j, st->energy_balance_error);
+    cli_json_key(j, "transitions");
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < n; i++) {
+        cli_json_begin_object(j);
+        cli_json_key(j, "t");
+        cli_json_number(j, tr[i].t);
+        cli_json_key(j, "contact");
+        cli_json_string(j, qd_model_contact_name(c->mf.model, tr[i].contact));
+        cli_json_key(j, "from");
+        cli_json_string(j, mode[tr[i].from]);
+        cli_json_key(j, "to");
+        cli_json_string(j, mode[tr[i].to]);
+        cli_json_end_object(j);
+    }
+    cli_json_end_array(j);
+}
+
+/* Friction on stderr: the switches and the energy friction took. */
+static void friction_summary(const cli_sim *c, const qd_sim_stats *st) {
+    if (!qd_sim_ncontacts(c->s))
+        return;
+    fprintf(stderr, "qdot: simulate: %zu stick/slip transition%s, energy dissipated by "
+                    "friction %.6g, energy balance error %.3g\n",
+            st->transitions, st->transitions == 1 ? "" : "s", st->friction_dissipated,
+            st->energy_balance_error);
+}
+
 static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, double wall,
                          const char **names, size_t ncols, const double *final) {
     cli_json_key(j, "method");
@@ -192,6 +228,8 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_number(j, (double)st->events);
     if (qd_model_nimpacts(c->mf.model))
         impacts_json(j, c, st);
+    if (qd_sim_ncontacts(c->s))
+        friction_json(j, c, st);
     cli_json_key(j, "final");
     cli_json_begin_object(j);
     for (size_t i = 0; i < ncols; i++) {
@@ -247,7 +285,9 @@ static int run(cli_sim *c, const cli_sim_args *a) {
     /* a step can span a swing: without --dt a plot samples the dense output */
     if (a->plot.file && !a->has_dt && qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
         c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
-    sim_out o = {.ncols = ncols, .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0,
+    sim_out o = {.ncols = ncols,
+                 .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
+                           qd_sim_ncontacts(c->s) > 0,
                  .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .names = names, .line = line};
     FILE *file = NULL;
@@ -301,6 +341,7 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
         impacts_summary(c, &st);
+        friction_summary(c, &st);
         double range[4 * CLI_PLOT_MAX_PANELS];
         if (a->plot.file)
             rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false, range);

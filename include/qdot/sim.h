@@ -234,6 +234,15 @@ typedef struct qd_sim_stats {
     double impact_energy_lost;
     bool in_contact, at_rest, chattering;
     size_t contact;
+    /* Coulomb friction (the model's contacts, qdot/model.h): the stick/slip
+     * switches, the energy friction dissipated (integrated with the state:
+     * the power mu_k |N| |v_slip| of each slipping contact), and
+     * max_t |E(t) + dissipated(t) - E(0)| / max(|E(0)|, max T), which
+     * energy_error_max then equals (it holds to the tolerance when the
+     * constraints do no work: no t in them). */
+    size_t transitions;
+    double friction_dissipated;
+    double energy_balance_error;
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the
@@ -286,6 +295,41 @@ QD_API qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *opts, qd_sim_sink sink
 QD_API qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *opts,
                                  qd_sim_sink sink, void *data, qd_sim_stats *stats,
                                  double *final);
+
+/* ---- Coulomb friction (issue 18) -------------------------------------------
+ *
+ * A model with friction contacts (`constraint ... friction MU normal N`,
+ * `rolls ... friction MU`) is integrated as a hybrid system: each contact
+ * sticks (its constraints hold, their multipliers the friction force) or
+ * slips (its constraints dropped, the force -mu_k |N| v/|v| against the slip
+ * velocity v).  A sticking contact slips when |lambda| - mu_s |N| rises
+ * through 0; a slipping one stops when v . v_entry falls through 0, and
+ * sticks there if the static law holds (else it slips the other way).  The
+ * switches are events located to round-off; at each the modes of every
+ * contact are chosen again so that each one's law holds (stick: |lambda| <=
+ * mu_s |N|; slip from rest: accelerating the way it slips; a normal
+ * multiplier of the sign assumed), preferring sticking; when no choice, or
+ * more than one, is consistent the run stops with QD_ERR_NUMERIC
+ * ("Painleve paradox at t = ...").  Adaptive methods (dopri5, dop853, bdf)
+ * only: QD_ERR_ARG for the fixed-step symplectic ones, a model in speeds or
+ * given by H, or one with impacts.  The columns gain slip_NAME (the slip
+ * velocity; its norm for two directions) and mode_NAME (0 stick, 1 slip)
+ * per contact, then dissipated, before the outputs.  A switch gives a row
+ * (after it) with event index nev + nimp + contact (nev the events added,
+ * nimp the model's impacts). */
+typedef enum qd_contact_mode { QD_CONTACT_STICK, QD_CONTACT_SLIP } qd_contact_mode;
+
+typedef struct qd_sim_transition {
+    double t;
+    size_t contact;            /* the model's contact index */
+    qd_contact_mode from, to;
+} qd_sim_transition;
+
+QD_API size_t qd_sim_ncontacts(const qd_sim *s);
+/* The switches of the last qd_sim_run on s (not qd_sim_run_with, whose
+ * switches reach its sink as rows), in time order; *n their count.  Owned
+ * by s, valid until its next run. */
+QD_API const qd_sim_transition *qd_sim_transitions(const qd_sim *s, size_t *n);
 
 #ifdef __cplusplus
 }

@@ -171,7 +171,8 @@ class SimStats(Structure):
                 ("E0", c_double), ("events", c_size_t), ("t", c_double),
                 ("impacts", c_size_t), ("impact_energy_lost", c_double),
                 ("in_contact", c_bool), ("at_rest", c_bool), ("chattering", c_bool),
-                ("contact", c_size_t)] + _TAIL
+                ("contact", c_size_t), ("transitions", c_size_t),
+                ("friction_dissipated", c_double), ("energy_balance_error", c_double)] + _TAIL
 
 
 class StateSpace(Structure):

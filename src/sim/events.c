@@ -20,17 +20,23 @@
 #define MAX_ROOT_ITER 200
 #define MAX_SECANT 10
 
+/* g_k at (t, y), q' in r->qd: an expression of aux, or a friction
+ * contact's switching function (friction.c). */
+static qd_status g_value(qd__run *r, size_t k, double t, const double *y, double *gk) {
+    qd_sim *s = r->s;
+    if (k >= qd__fev0(s))
+        return qd__fric_event(r, k - qd__fev0(s), t, y, gk);
+    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
+    *gk = s->aux_out[qd__aux_ev(s) + k];
+    return QD_OK;
+}
+
 /* g_k at the dense state at t. */
 static qd_status g_dense(qd__run *r, size_t k, double t, double *gk) {
     qd_status st = qd__run_dense(r, t, r->ytmp);
     if (st == QD_OK)
         st = qd__run_velocity(r, t, r->ytmp);
-    if (st != QD_OK)
-        return st;
-    qd_sim *s = r->s;
-    qd__aux_eval(s, t, r->ytmp, qd__second(s, r->ytmp, r->qd));
-    *gk = s->aux_out[qd__aux_ev(s) + k];
-    return QD_OK;
+    return st == QD_OK ? g_value(r, k, t, r->ytmp, gk) : st;
 }
 
 /* g_k after the method's own step of size tau from (told, yold); state in y. */
@@ -39,12 +45,7 @@ static qd_status g_redo(qd__run *r, size_t k, double tau, double *y, double *gk)
     qd_status st = it->ops->redo(it, tau, y);
     if (st == QD_OK)
         st = qd__run_velocity(r, it->told + tau, y);
-    if (st != QD_OK)
-        return st;
-    qd_sim *s = r->s;
-    qd__aux_eval(s, it->told + tau, y, qd__second(s, y, r->qd));
-    *gk = s->aux_out[qd__aux_ev(s) + k];
-    return QD_OK;
+    return st == QD_OK ? g_value(r, k, it->told + tau, y, gk) : st;
 }
 
 /* Illinois: regula falsi with the stale end's value halved. */
@@ -153,7 +154,7 @@ static qd_status impact_bracket(qd__run *r, size_t k, double *a, double *ga, boo
 static qd_status locate_one(qd__run *r, size_t k) {
     qd_sim *s = r->s;
     qd__integ *it = r->it;
-    bool gap = k >= s->nev, at_start = false;
+    bool gap = k >= s->nev && k < qd__fev0(s), at_start = false;
     double a = it->told, ga = r->gold[k], gb = r->gnew[k];
     r->ev_hit[k] = false;
     if (gap) {
@@ -164,6 +165,8 @@ static qd_status locate_one(qd__run *r, size_t k) {
         if (st != QD_OK || (!(ga > 0) && !at_start))
             return st;
     } else if (ga == 0 || !((ga > 0) != (gb > 0) || gb == 0)) {
+        return QD_OK;
+    } else if (k >= qd__fev0(s) && !qd__fric_crossing(s, k - qd__fev0(s), ga)) {
         return QD_OK;
     }
     double root = at_start ? a : it->t;

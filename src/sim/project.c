@@ -91,7 +91,8 @@ qd_status qd__project(qd_sim *s, double t, double *q, double *qd) {
             v += A[k * n + j] * qd[j];
         mu[k] = v;
     }
-    if (!normal_solve(s, A, NULL, mu))
+    /* a slipping friction contact's rows do not hold (friction.c) */
+    if (!normal_solve(s, A, s->fr ? s->fr->on : NULL, mu))
         return fail(s, t, "meets a rank-deficient constraint Jacobian", 0);
     for (size_t j = 0; j < n; j++)
         for (size_t k = 0; k < m; k++)

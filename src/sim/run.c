@@ -64,7 +64,7 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
         return st;
     qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
     const double *gv = s->aux_out + qd__aux_ev(s), *guard = s->aux_out + qd__aux_guard(s);
-    for (size_t k = 0; g && k < qd__nev_all(s); k++)
+    for (size_t k = 0; g && k < qd__fev0(s); k++)
         g[k] = gv[k];
     for (size_t k = 0, gi = 0; k < s->nev; k++) {
         bool pass = true;
@@ -72,6 +72,12 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
             pass = pass && guard[gi] > 0;
         if (ok)
             ok[k] = pass;
+    }
+    for (size_t k = qd__fev0(s); k < qd__nev_all(s); k++) {
+        if (ok)
+            ok[k] = true;
+        if (g && (st = qd__fric_event(r, k - qd__fev0(s), t, y, &g[k])) != QD_OK)
+            return st;
     }
     return QD_OK;
 }
@@ -88,13 +94,17 @@ static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool 
     qd_sim *s = r->s;
     size_t n = s->n;
     const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
-    ms->dEmax = fmax(ms->dEmax, fabs(hT[0] - (ms->E0 - ms->lost)));
+    /* friction's share, integrated as y[2n]: E + dissipated = E0 */
+    double dissipated = s->fr ? y[2 * n] : 0;
+    ms->dEmax = fmax(ms->dEmax, fabs(hT[0] + dissipated - (ms->E0 - ms->lost)));
     ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
     if (!s->m)
         return;
     qd__con_eval(s, t, y, r->qd);
     const double *A = s->con_out, *a0 = A + s->m * n, *g = a0 + s->m;
     for (size_t c = 0; c < s->m; c++) {
+        if (s->fr && !s->fr->on[c])
+            continue; /* a slipping contact's row: its slip velocity, no error */
         double v = a0[c];
         for (size_t j = 0; j < n; j++)
             v += A[c * n + j] * r->qd[j];
@@ -104,6 +114,19 @@ static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool 
         s->con_err[c] = fmax(s->con_err[c], err);
         ms->cmax = fmax(ms->cmax, err);
     }
+}
+
+/* The friction columns from row[k]: slip_NAME, mode_NAME per contact, then
+ * dissipated; the next free index. */
+static size_t friction_columns(qd__run *r, double t, const double *y, double *row, size_t k) {
+    qd_sim *s = r->s;
+    qd__prog_at(s, s->fprog, s->fprog_w, t, y, r->qd, s->fprog_out);
+    for (size_t c = 0; c < s->nfc; c++) {
+        row[k++] = qd__fric_slip(s, c);
+        row[k++] = s->fr->mode[c].slip ? 1 : 0;
+    }
+    row[k++] = y[2 * s->n];
+    return k;
 }
 
 /* The row of state y at t, and (ms not NULL) the error measures there;
@@ -133,6 +156,8 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
     row[k++] = aux[0];
     for (size_t c = 0; c < s->m; c++)
         row[k++] = aux[2 + c];
+    if (s->fr)
+        k = friction_columns(r, t, y, row, k);
     for (size_t i = 0; i < s->nout; i++)
         row[k++] = aux[qd__aux_out(s) + i];
     if (ms)
@@ -197,6 +222,13 @@ static qd_status check_system(const qd_sim *s, const qd_sim_opts *o) {
                      "%s needs a separable Hamiltonian H = T(p) + V(q) (constant mass "
                      "matrix, no velocity- or time-dependent forces); this H is not "
                      "separable: use gl2, gl4 or gl6", name);
+        return QD_ERR_ARG;
+    }
+    if (s->nfc && symplectic(o->method)) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG,
+                     "%s is a symplectic method, made for conservative systems; friction "
+                     "dissipates energy and switches between stick and slip: use dop853, "
+                     "dopri5 or bdf", name);
         return QD_ERR_ARG;
     }
     if (splitting(o->method) && s->m) {
@@ -267,6 +299,16 @@ static qd_status initial_speeds(qd__run *r, const qd_sim_opts *o) {
     return st;
 }
 
+/* The friction contacts' modes at the start (q in it->y, velocities qd);
+ * nothing dissipated yet. */
+static qd_status initial_modes(qd__run *r, double t0, const double *qd) {
+    qd__integ *it = r->it;
+    size_t n = r->s->n;
+    memcpy(it->y + n, qd, n * sizeof *qd);
+    it->y[2 * n] = 0;
+    return qd__fric_select(r, t0, it->y, (size_t)-1);
+}
+
 /* y0 from q0, q'0: projected onto the constraints, then (q, p) if canonical. */
 static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
     qd_sim *s = r->s;
@@ -285,14 +327,17 @@ static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
         return qd__hamilton_momenta(s, o->t0, q, o->qd0, it->y + n);
     }
     memcpy(qd, o->qd0, n * sizeof *qd);
-    qd_status st = s->m && !o->no_project ? qd__project(s, o->t0, q, qd) : QD_OK;
+    /* the contacts' modes first: a slipping one's row is not projected */
+    qd_status st = s->fr ? initial_modes(r, o->t0, qd) : QD_OK;
+    if (st == QD_OK && s->m && !o->no_project)
+        st = qd__project(s, o->t0, q, qd);
     if (st != QD_OK)
         return st;
     if (it->form == QD__HAM)
         qd__momentum(s, o->t0, q, qd, it->y + n);
     else
         memcpy(it->y + n, qd, n * sizeof *qd);
-    return QD_OK;
+    return s->fr ? initial_modes(r, o->t0, qd) : QD_OK;
 }
 
 typedef struct emitter {
@@ -323,11 +368,23 @@ static size_t first_impact(const qd__run *r) {
     return first;
 }
 
+/* The earliest friction switch in the step (r->ev_hit): its friction
+ * event's index (0 .. 2 nfc), or (size_t)-1. */
+static size_t first_friction(const qd__run *r) {
+    const qd_sim *s = r->s;
+    size_t first = (size_t)-1, k0 = qd__fev0(s);
+    for (size_t k = k0; k < qd__nev_all(s); k++)
+        if (r->ev_hit[k] && (first == (size_t)-1 || r->ev_t[k] < r->ev_t[k0 + first]))
+            first = k - k0;
+    return first;
+}
+
 /* Rows of the output grid inside (told, t], and the events of the step in
- * time order, up to the first impact (*impact, or nimp); *stop when a
- * stopping event happened first (the state is then moved to it). */
+ * time order, up to the first impact (*impact, or nimp) or friction switch
+ * (*fric, or (size_t)-1); *stop when a stopping event happened first (the
+ * state is then moved to it). */
 static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, size_t *grid,
-                              bool *stop, size_t *nevents, size_t *impact) {
+                              bool *stop, size_t *nevents, size_t *impact, size_t *fric) {
     qd_sim *s = r->s;
     qd__integ *it = r->it;
     double tstop = it->t;
@@ -335,11 +392,19 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
     *impact = first_impact(r);
     if (*impact < s->nimp)
         tstop = r->ev_t[s->nev + *impact];
+    *fric = first_friction(r);
+    if (*fric != (size_t)-1 && r->ev_t[qd__fev0(s) + *fric] <= tstop) {
+        tstop = r->ev_t[qd__fev0(s) + *fric];
+        *impact = s->nimp;
+    } else {
+        *fric = (size_t)-1;
+    }
     for (size_t k = 0; k < s->nev; k++)
         if (r->ev_hit[k] && s->ev[k].stop && r->ev_t[k] <= tstop) {
             tstop = r->ev_t[k];
             first = k;
             *impact = s->nimp;
+            *fric = (size_t)-1;
         }
     bool grid_rows = qd_sim_method_adaptive(o->method) && !o->fixed && o->dt > 0;
     /* merge grid rows and event rows by time */
@@ -468,6 +533,28 @@ static qd_status strike(qd__run *r, loop *L, size_t i) {
     return st == QD_OK ? after_impact(r, L, i, &res) : st;
 }
 
+/* A friction switch (event fev0 + k) in the step: back to it, the modes
+ * chosen again, a row after it (event index nev + nimp + contact), and the
+ * method restarted.  A paradox ends the run with a row at it. */
+static qd_status switch_modes(qd__run *r, loop *L, size_t k) {
+    qd_sim *s = r->s;
+    qd__integ *it = r->it;
+    size_t e = qd__fev0(s) + k;
+    back_to(r, L, r->ev_t[e], r->ev_y + e * it->dim);
+    qd_status st = qd__fric_select(r, it->t, it->y, k);
+    qd_status st_row = make_row(r, L->ms, it->t, it->y, r->row);
+    if (st_row == QD_OK)
+        emit(L->em, (int)(s->nev + s->nimp + k / 2), r->row);
+    if (st != QD_OK || st_row != QD_OK)
+        return st != QD_OK ? st : st_row;
+    st = restart(r, L, 0);
+    /* a contact that starts to slip starts at v = 0: no switch there */
+    for (size_t c = 0; st == QD_OK && c < s->nfc; c++)
+        if (s->fr->fresh[c])
+            r->gold[qd__fev0(s) + 2 * c] = 0;
+    return st;
+}
+
 /* Contact i's gap is below 0 at the end of the step with no place where
  * it closed: the step after its impact was longer than the rebound.  An
  * adaptive method retries from just after the impact with a step 16 times
@@ -537,7 +624,7 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
         memcpy(it->y + n, r->qd, n * sizeof *r->qd);
         it->y_changed = true;
     }
-    size_t ne = qd__nev_all(s), impact = s->nimp;
+    size_t ne = qd__nev_all(s), impact = s->nimp, fric;
     if (ne && (st = qd__run_events_at(r, it->t, it->y, r->gnew, NULL)) == QD_OK)
         st = qd__events_locate(r);
     if (st != QD_OK)
@@ -546,11 +633,13 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
         return unresolved(r, L);
     for (size_t j = 0; r->imp && j < s->nimp; j++)
         r->imp->fresh[j] = false;
-    st = step_outputs(r, o, L->em, grid, &L->stop, &L->stats->events, &impact);
+    st = step_outputs(r, o, L->em, grid, &L->stop, &L->stats->events, &impact, &fric);
     if (st != QD_OK)
         return st;
     if (impact < s->nimp)
         return strike(r, L, impact);
+    if (fric != (size_t)-1)
+        return switch_modes(r, L, fric);
     /* a row only when it is written; the energy measure at every step */
     bool row = !L->stop && (every || it->t >= o->t_end);
     st = make_row(r, L->ms, it->t, it->y, row ? r->row : NULL);
@@ -599,7 +688,8 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     if (st != QD_OK)
         return st;
     qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
-                    .dim = s->se ? s->n + s->nu : 2 * s->n, .t = o->t0, .tend = o->t_end,
+                    .dim = s->se ? s->n + s->nu : 2 * s->n + (s->nfc ? 1 : 0),
+                    .t = o->t0, .tend = o->t_end,
                     .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
                     .fixed = o->fixed, .h = o->fixed ? o->dt : 0};
     it.form = s->se ? QD__SPD
@@ -609,6 +699,8 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     st = run_alloc(&r, &it, ncols);
     if (st == QD_OK)
         st = qd__impacts_new(&r);
+    if (st == QD_OK)
+        st = qd__fric_run_new(s);
     if (st == QD_OK)
         st = initial_state(&r, o);
     if (st == QD_OK && s->nimp)
@@ -637,6 +729,11 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     stats->energy_error_max = den > 0 ? ms.dEmax / den : ms.dEmax;
     stats->constraint_error_max = ms.cmax;
     stats->t = it.t;
+    if (s->fr) {
+        stats->transitions = s->fr->ntr;
+        stats->friction_dissipated = it.y ? it.y[2 * s->n] : 0;
+        stats->energy_balance_error = stats->energy_error_max;
+    }
     if (st == QD_OK && final)
         memcpy(final, r.row, ncols * sizeof *final);
     if (st != QD_OK && qd_ctx_status(s->ctx) == QD_OK)
@@ -648,7 +745,8 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
 /* A run on a copy of the compiled system s with its own workspace;
  * con_err (may be NULL) receives the per-constraint residuals. */
 static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
-                          void *data, qd_sim_stats *stats, double *final, double *con_err) {
+                          void *data, qd_sim_stats *stats, double *final, double *con_err,
+                          qd_sim *keep) {
     qd_sim_stats dummy;
     stats = stats ? stats : &dummy;
     *stats = (qd_sim_stats){0};
@@ -662,6 +760,9 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
         st = run(&w, o, sink, data, stats, final);
     for (size_t c = 0; con_err && w.con_err && c < s->m; c++)
         con_err[c] = w.con_err[c];
+    if (keep)
+        qd__fric_keep(keep, &w);
+    qd__fric_run_free(&w);
     qd__sim_ws_free(&w);
     return st;
 }
@@ -672,7 +773,7 @@ qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
         qd_ctx_error(ctx, QD_ERR_ARG, "a shared simulation is compiled first (qd_sim_compile)");
         return QD_ERR_ARG;
     }
-    return run_copy(ctx, s, o, sink, data, stats, final, NULL);
+    return run_copy(ctx, s, o, sink, data, stats, final, NULL, NULL);
 }
 
 qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
@@ -683,5 +784,5 @@ qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
             *stats = (qd_sim_stats){0};
         return st;
     }
-    return run_copy(s->ctx, s, o, sink, data, stats, final, s->con_err_last);
+    return run_copy(s->ctx, s, o, sink, data, stats, final, s->con_err_last, s);
 }

@@ -83,6 +83,13 @@ struct qd_sim {
     struct qd__input *uin;
     qd_prog *uprog;
     bool uin_ready;
+    /* Coulomb friction (friction.c): nfc contacts; fprog gives for each
+     * mu_s, mu_k, N (an expression's value, 0 for a multiplier) and its
+     * slip velocities s1, s2 (QD__FSTRIDE numbers per contact) */
+    size_t nfc, fprog_n;
+    struct qd__fcon *fc;
+    qd_prog *fprog;
+    struct qd__fric_last *flast; /* qd_sim_run's transitions (qd_sim_transitions) */
     /* ---- a run's own ---- */
     qd_ctx *ctx;
     double *in;
@@ -97,6 +104,8 @@ struct qd_sim {
     size_t evals;
     double *con_err;  /* m: the worst residual of each constraint in this run */
     double tnow;  /* for messages */
+    double *fprog_out, *fprog_w;
+    struct qd__fric_run *fr; /* the contacts' modes in this run (friction.c) */
 };
 
 /* The state's second half as the programs take it: the momenta (y + n)
@@ -167,8 +176,11 @@ static inline size_t qd__aux_ev(const qd_sim *s) { return 2 + s->m + s->nout; }
 static inline size_t qd__aux_guard(const qd_sim *s) {
     return 2 + s->m + s->nout + s->nev + s->nimp;
 }
-/* Event functions located in a step: the user's events and the gaps. */
-static inline size_t qd__nev_all(const qd_sim *s) { return s->nev + s->nimp; }
+/* Event functions located in a step: the user's events, the gaps and two
+ * per friction contact (its mode's switch, its normal force's sign). */
+static inline size_t qd__nev_all(const qd_sim *s) { return s->nev + s->nimp + 2 * s->nfc; }
+/* The first friction event's index. */
+static inline size_t qd__fev0(const qd_sim *s) { return s->nev + s->nimp; }
 
 /* y' = F(t, y) in either form; QD_ERR_SINGULAR (message with the time)
  * when M or the saddle matrix is singular. */
@@ -327,6 +339,74 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
 /* Contact i's rebound could not be resolved from the state after its
  * impact (t, y): end in contact there (plastic impact, as above). */
 qd_status qd__impact_rest(qd__run *r, size_t i, double t, double *y, qd__impact_result *res);
+
+/* ---- Coulomb friction (friction.c, friction_lcp.c) --------------------------- */
+
+#define QD__FSTRIDE 5   /* fprog's numbers per contact: mu_s, mu_k, N, s1, s2 */
+#define QD__FMAX 12     /* contacts: the mode choice tries up to 5^k sets */
+
+/* A contact as compiled: its constraints (indices into s->cons) and the
+ * constraint whose multiplier is the normal force (or (size_t)-1). */
+typedef struct qd__fcon {
+    const char *name;
+    size_t con[2], ncon, normal;
+} qd__fcon;
+
+/* A contact's mode in a run.  slip: its rows are replaced by the kinetic
+ * force -mu_k |N| u, u the unit slip direction (1-D: dir[0] = +-1; 2-D:
+ * v/|v|, or dir while v = 0); sn: the sign assumed for the normal
+ * multiplier, |N| = sn lambda_N. */
+typedef struct qd__fmode {
+    bool slip;
+    double dir[2];
+    double sn;
+} qd__fmode;
+
+typedef struct qd__fric_run {
+    qd__fmode *mode;           /* nfc */
+    bool *on;                  /* m: false for the rows of slipping contacts */
+    qd_sim_transition *tr;     /* the switches so far */
+    size_t ntr, cap;
+    qd__fmode *trial, *best;   /* nfc each: the mode choice's scratch */
+    bool *fresh;               /* nfc: entered slip from rest at the last switch */
+} qd__fric_run;
+
+/* The contacts of s's model compiled (qd_sim_new); QD_OK without any. */
+qd_status qd__fric_setup(qd_sim *s);
+void qd__fric_free(qd_sim *s);
+/* QD_ERR_ARG naming what when the model has friction (the forms that
+ * cannot take it: speeds, H). */
+qd_status qd__fric_refuse(qd_ctx *ctx, const qd_model *m, const char *what);
+/* A run's modes; NULL and QD_OK without friction. */
+qd_status qd__fric_run_new(qd_sim *s);
+void qd__fric_run_free(qd_sim *s);
+/* The saddle system K r = rhs ((n+m)^2, assembled at the state in s->in)
+ * with the slipping contacts' rows replaced by their kinetic forces. */
+void qd__fric_saddle(qd_sim *s, double *K, double *rhs);
+/* The power the slipping contacts dissipate, -sum lambda s, after the
+ * saddle solve at the state (lambda in s->rhs + n). */
+double qd__fric_power(const qd_sim *s);
+/* Friction event k (0 .. 2 nfc) at (t, y). */
+qd_status qd__fric_event(qd__run *r, size_t k, double t, const double *y, double *g);
+/* Does friction event k switch when it leaves ga (sticking: rising from
+ * below 0; else falling from above)? */
+bool qd__fric_crossing(const qd_sim *s, size_t k, double ga);
+/* Choose the contacts' modes at (t, y): at the start (ev = (size_t)-1) or
+ * after friction event ev; records the switches.  QD_ERR_NUMERIC
+ * (Painleve's paradox) when no set of modes, or several, is consistent. */
+qd_status qd__fric_select(qd__run *r, double t, const double *y, size_t ev);
+/* The saddle solve at (t, y) with the current modes (system.c); false when
+ * singular.  lambda in s->rhs + n, q'' in s->rhs. */
+bool qd__sim_saddle(qd_sim *s, double t, const double *y);
+/* |N| and the friction force's size |lambda| of contact c after a saddle
+ * solve. */
+double qd__fric_normal(const qd_sim *s, size_t c);
+double qd__fric_force(const qd_sim *s, size_t c);
+/* After a run: its switches kept in orig for qd_sim_transitions. */
+void qd__fric_keep(qd_sim *orig, qd_sim *run);
+/* A contact's slip speed for the row: s (1-D) or |v| (2-D), at the state
+ * last given to fprog. */
+double qd__fric_slip(const qd_sim *s, size_t c);
 
 /* ---- constraints (project.c) ----------------------------------------------- */
 

@@ -103,7 +103,7 @@ static qd_status check(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {
         return refuse(ctx, "impacts are not simulated in generalized speeds (Newton's law "
                            "is written for the velocities): integrate the multiplier form "
                            "(--no-speeds)");
-    return QD_OK;
+    return qd__fric_refuse(ctx, m, "in generalized speeds (--no-speeds)");
 }
 
 qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {

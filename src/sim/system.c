@@ -234,7 +234,7 @@ static char *second_name(const qd_sim *s, size_t j) {
 /* t, q, q', p (or, in speeds: t, q, u, q'), energy, res_c. */
 qd_status qd__sim_names(qd_sim *s) {
     size_t n = s->n, k = 0, nsecond = s->se ? s->nu : n;
-    s->nnames = 2 * n + nsecond + 2 + s->m;
+    s->nnames = 2 * n + nsecond + 2 + s->m + (s->nfc ? 2 * s->nfc + 1 : 0);
     s->names = qd__calloc(s->ctx, s->nnames, sizeof *s->names);
     s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
     s->con_err_last = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err_last);
@@ -254,6 +254,12 @@ qd_status qd__sim_names(qd_sim *s) {
         s->names[k++] = dup_printf(s->ctx, "res_", s->cons[c].name, "");
         s->holonomic[c] = s->cons[c].kind == QD_CON_HOLONOMIC;
     }
+    for (size_t c = 0; c < s->nfc; c++) {
+        s->names[k++] = dup_printf(s->ctx, "slip_", s->fc[c].name, "");
+        s->names[k++] = dup_printf(s->ctx, "mode_", s->fc[c].name, "");
+    }
+    if (s->nfc)
+        s->names[k++] = dup_printf(s->ctx, "dissipated", "", "");
     for (size_t i = 0; i < k; i++)
         if (!s->names[i])
             return QD_ERR_NOMEM;
@@ -280,6 +286,8 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     if (st == QD_OK)
         st = compile_canonical(s);
     if (st == QD_OK)
+        st = qd__fric_setup(s);
+    if (st == QD_OK)
         st = qd__sim_names(s);
     if (st == QD_OK)
         st = qd__impact_setup(s);
@@ -297,6 +305,7 @@ void qd_sim_free(qd_sim *s) {
         return;
     qd__free(s->con_err_last);
     qd__impact_free(s);
+    qd__fric_free(s);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);
@@ -633,12 +642,17 @@ static bool saddle_solve(qd_sim *s, double t, const double *y) {
     const double *M = s->acc_out, *f = M + n * n;
     const double *A = f + n, *b = A + m * n;
     qd__num_saddle(n, m, M, f, A, b, s->K, s->rhs);
+    if (s->fr)
+        qd__fric_saddle(s, s->K, s->rhs);
     return qd__num_solve(N, s->K, s->rhs, 1e-13 * (double)N);
 }
 
+bool qd__sim_saddle(qd_sim *s, double t, const double *y) { return saddle_solve(s, t, y); }
+
 static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
     size_t n = s->n;
-    if (s->native)
+    /* the generated code knows nothing of friction's modes */
+    if (s->native && !s->fr)
         return s->native(t, y, s->in + 2 * n + 1, dy) ? singular(s, t) : QD_OK;
     for (size_t i = 0; i < n; i++)
         dy[i] = y[n + i];
@@ -647,6 +661,8 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
             return matrices_finite(s) ? singular(s, t)
                                       : qd__sim_not_finite(s, t, "the mass matrix is");
         memcpy(dy + n, s->rhs, n * sizeof *dy);
+        if (s->fr)
+            dy[2 * n] = qd__fric_power(s);
         return QD_OK;
     }
     set_state(s, t, y, y + n);

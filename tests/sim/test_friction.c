@@ -1,0 +1,475 @@
+/*
+ * tests/sim/test_friction.c - Coulomb friction in qd_sim (issue 18),
+ * checked against closed forms:
+ *
+ *   - a sphere set sliding on a rough horizontal plane with speed v0 and no
+ *     spin begins to roll at t* = 2 v0/(7 mu g) with speed 5 v0/7, having
+ *     slid 12 v0^2/(49 mu g) (Byerly art. 10b; reference seed-byerly TC21,
+ *     "Extensions"); a solid cylinder (k^2 = a^2/2) at v0/(3 mu g) with
+ *     2 v0/3.  Written as `constraint ... friction` with N an expression,
+ *     with N a floor constraint's multiplier, and as `rolls ... friction`;
+ *   - the billiard ball in 3-D (TC21): the slip velocity keeps its
+ *     direction and its size falls as S0 - (7/2) mu g t, the centre's
+ *     velocity changes by mu g t* against S0;
+ *   - a block on an incline of angle al: at rest it sticks when tan al <
+ *     mu_s and slides with a = g (sin al - mu_k cos al) when not; pushed up
+ *     the slope with mu_k < tan al < mu_s it stops after v0 / (g (sin al +
+ *     mu_k cos al)) and stays (static friction holds);
+ *   - the stick-slip oscillator on a belt: the switches of its limit
+ *     cycle (Den Hartog sec. 8.2);
+ *   - two contacts, a block sliding on a block on the floor: the mode
+ *     choice when the relative slip stops (stick together, or the top
+ *     block slides on ahead: slip -> slip the other way);
+ *   - Painleve's rod (a rod whose end slides on a rough floor, mu = 2 >
+ *     4/3, at 1 rad, sliding backwards): no consistent mode;
+ *   - in every run the energy balance E(t) + dissipated(t) = E(0) to
+ *     1e-8, and the dissipated energy against the kinetic energy lost;
+ *   - the errors: friction on a holonomic constraint, a negative
+ *     coefficient (line and column), an unknown normal constraint, a
+ *     symplectic method.
+ *
+ * Between switches the motions are polynomials in t (uniform
+ * deceleration), which the Runge-Kutta methods integrate exactly, and the
+ * switches are located to round-off: the tolerances are a few 1e-12.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "sim_fixture.h"
+
+#define G 9.81
+
+static double rel(double a, double b) { return fabs(a - b) / fmax(fabs(b), 1e-300); }
+
+static void near(double got, double want, double tol, const char *what) {
+    if (!(rel(got, want) <= tol))
+        fail_msg("%s: %.17g vs %.17g (relative %.3g > %.3g)", what, got, want, rel(got, want),
+                 tol);
+}
+
+static sim_fix *load(const char *fmt, ...) {
+    char text[2048];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    sim_fix *f = sf_load(text);
+    assert_non_null(f);
+    return f;
+}
+
+static double col(const sim_fix *f, const double *row, const char *name) {
+    int c = sf_col(f, QD_SIM_DOP853, name);
+    if (c < 0)
+        fail_msg("no column %s", name);
+    return row[c];
+}
+
+/* The one switch of a run: slip -> stick of contact 0 at t, checked. */
+static void one_switch(const sim_fix *f, double t) {
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 1);
+    assert_int_equal(f->stats.transitions, 1);
+    assert_int_equal(tr[0].contact, 0);
+    assert_int_equal(tr[0].from, QD_CONTACT_SLIP);
+    assert_int_equal(tr[0].to, QD_CONTACT_STICK);
+    near(tr[0].t, t, 1e-12, "switch time");
+}
+
+/* A round body (k2 = I / (m a^2)) sliding with v0, no spin: slides at
+ * deceleration mu g while its spin grows, rolls from t* = v0 / ((1 + 1/k2)
+ * mu g) with speed v0 / (1 + k2) (k2 = 2/5: 2 v0/(7 mu g), 5 v0/7). */
+static void check_rolling_start(sim_fix *f, double v0, double mu, double k2) {
+    double ts = v0 / ((1 + 1 / k2) * mu * G), v1 = v0 / (1 + k2);
+    f->max_events = 0;
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 2 * ts, 0, 1e-11, false), QD_OK);
+    one_switch(f, ts);
+    /* the row at the switch, after it: rolling, the speed v1 */
+    assert_true(f->nev >= 1);
+    const double *row = f->ev_row[0];
+    near(row[0], ts, 1e-12, "event row time");
+    near(col(f, row, "x'"), v1, 1e-12, "speed when rolling starts");
+    near(col(f, row, "x"), v0 * ts - 0.5 * mu * G * ts * ts, 1e-12, "distance at t*");
+    near(col(f, f->last, "x'"), v1, 1e-12, "speed rolling on");
+    assert_true(col(f, f->last, "dissipated") > 0);
+    /* the kinetic energy lost, m v0^2/2 (1 - 1/(1 + k2)), all to friction */
+    double m = 2;
+    near(f->stats.friction_dissipated, 0.5 * m * v0 * v0 * (1 - 1 / (1 + k2)), 1e-12,
+         "dissipated");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+}
+
+static const char *const round_body =
+    "coordinates x, phi\n"
+    "parameters m = 2, a = 0.3, g = 9.81, mu = %g, k2 = %g\n"
+    "T = m/2*x'^2 + k2*m*a^2/2*phi'^2\n"
+    "constraint slip: x' - a*phi' = 0 friction mu normal m*g\n"
+    "initial x' = %g\n";
+
+static void sphere_constraint(void **state) {
+    (void)state;
+    sim_fix *f = load(round_body, 0.25, 0.4, 3.0);
+    check_rolling_start(f, 3, 0.25, 0.4);
+    /* the centre slid 12 v0^2/(49 mu g) before rolling */
+    near(col(f, f->ev_row[0], "x"), 12 * 9.0 / (49 * 0.25 * G), 1e-12, "distance slid");
+    sf_free(f);
+}
+
+static void cylinder_constraint(void **state) {
+    (void)state;
+    sim_fix *f = load(round_body, 0.1, 0.5, 2.0);
+    check_rolling_start(f, 2, 0.1, 0.5);
+    near(f->ev_t[0], 2.0 / (3 * 0.1 * G), 1e-12, "t = v0/(3 mu g)");
+    sf_free(f);
+}
+
+/* N the multiplier of the floor constraint: m g (the sphere does not
+ * leave the floor), so the same motion. */
+static void sphere_normal_constraint(void **state) {
+    (void)state;
+    sim_fix *f = load("coordinates x, y, phi\n"
+                      "parameters m = 2, a = 0.3, g = 9.81, mu = 0.25\n"
+                      "T = m/2*(x'^2 + y'^2) + 2/5*m*a^2/2*phi'^2\n"
+                      "V = m*g*y\n"
+                      "constraint slip: x' - a*phi' = 0 friction mu normal floor\n"
+                      "constraint floor: y = a\n"
+                      "initial y = 0.3, x' = 3\n");
+    check_rolling_start(f, 3, 0.25, 0.4);
+    sf_free(f);
+}
+
+static void sphere_rolls(void **state) {
+    (void)state;
+    sim_fix *f = load("coordinates x, th\n"
+                      "parameters m = 2, a = 0.3, g = 9.81, mu = 0.25\n"
+                      "body ball mass m inertia sphere(m, a) at (x, 0, a) orientation "
+                      "rot_y(th)\n"
+                      "rolls ball on plane((0, 0, 1), (0, 0, 0)) as sphere(a) friction mu "
+                      "normal m*g\n"
+                      "initial x' = 3\n");
+    assert_int_equal(qd_model_ncontacts(f->m), 1);
+    assert_int_equal(qd_model_contact_kind(f->m, 0), QD_CONTACT_ROLLING);
+    assert_string_equal(qd_model_contact_name(f->m, 0), "ball");
+    check_rolling_start(f, 3, 0.25, 0.4);
+    sf_free(f);
+}
+
+/* Rows of the billiard-ball run: the first, the one at the output grid
+ * point half-way to the switch, and the switch's. */
+typedef struct ball_rows {
+    size_t ncols;
+    double first[32], mid[32], sw[32], tmid;
+    bool got_first, got_mid, got_sw;
+} ball_rows;
+
+static int ball_sink(void *data, int event, const double *row) {
+    ball_rows *b = data;
+    double *dst = !b->got_first ? b->first
+                  : event >= 0 && !b->got_sw ? b->sw
+                  : event < 0 && fabs(row[0] - b->tmid) < 1e-12 && !b->got_mid ? b->mid
+                                                                               : NULL;
+    if (dst) {
+        memcpy(dst, row, b->ncols * sizeof *row);
+        b->got_sw = b->got_sw || dst == b->sw;
+        b->got_mid = b->got_mid || dst == b->mid;
+        b->got_first = true;
+    }
+    return 0;
+}
+
+/* TC21: the ball with a slip S0 not along its velocity (spin theta');
+ * both tangential directions are one contact.  S keeps its direction and
+ * falls as S0 - (7/2) mu g t; the centre's velocity changes by mu g t
+ * against S0, so rolling starts at t* = 2 |S0|/(7 mu g). */
+static void billiard_ball(void **state) {
+    (void)state;
+    double mu = 0.3;
+    sim_fix *f = load("coordinates x, y, phi, theta, psi\n"
+                      "parameters m = 1, a = 0.2, g = 9.81, mu = %g\n"
+                      "body ball mass m inertia sphere(m, a) at (x, y, a) orientation "
+                      "euler(phi, theta, psi)\n"
+                      "rolls ball on plane((0, 0, 1), (0, 0, 0)) as sphere(a) friction mu "
+                      "normal m*g\n"
+                      "initial theta = 1.2, x' = 2, y' = 0.5, theta' = 4, phi' = 3\n", mu);
+    size_t con[2];
+    assert_int_equal(qd_model_contact_constraints(f->m, 0, con), 2);
+    ball_rows b = {.ncols = qd_sim_columns(f->s, QD_SIM_DOP853, NULL, 0)};
+    assert_true(b.ncols <= 32);
+    /* the initial slip: a run of one output row */
+    qd_sim_opts o = {.method = QD_SIM_DOP853, .t0 = 0, .t_end = 1, .rtol = 1e-11,
+                     .atol = 1e-13, .q0 = f->q0, .qd0 = f->qd0};
+    b.tmid = -1;
+    assert_int_equal(qd_sim_run(f->s, &o, ball_sink, &b, &f->stats, NULL), QD_OK);
+    double S1 = col(f, b.first, "res_ball_roll1"), S2 = col(f, b.first, "res_ball_roll2");
+    double S0 = hypot(S1, S2), ts = 2 * S0 / (7 * mu * G);
+    assert_true(fabs(S1 * col(f, b.first, "y'") - S2 * col(f, b.first, "x'")) > 0.1);
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 1);
+    near(tr[0].t, ts, 1e-9, "t* = 2 |S0| / (7 mu g)");
+    /* again with a row half-way: the slip there is S0/2, same direction */
+    b = (ball_rows){.ncols = b.ncols, .tmid = ts / 2};
+    o.dt = ts / 2;
+    assert_int_equal(qd_sim_run(f->s, &o, ball_sink, &b, &f->stats, NULL), QD_OK);
+    assert_true(b.got_mid && b.got_sw);
+    near(col(f, b.mid, "res_ball_roll1"), S1 / 2, 1e-9, "slip 1 half-way");
+    near(col(f, b.mid, "res_ball_roll2"), S2 / 2, 1e-9, "slip 2 half-way");
+    /* (the 3-D trigonometry carries the integration error: 1e-8) */
+    near(col(f, b.sw, "x'"), col(f, b.first, "x'") - mu * G * ts * S1 / S0, 1e-8, "x' at t*");
+    near(col(f, b.sw, "y'"), col(f, b.first, "y'") - mu * G * ts * S2 / S0, 1e-8, "y' at t*");
+    /* v . v_entry = 0 there: what is left is across, the drift of the
+     * direction in the integration (1e-9 of S0) */
+    if (!(col(f, b.sw, "slip_ball") < 1e-8 * S0))
+        fail_msg("slip at the switch %g (t %g)", col(f, b.sw, "slip_ball"), b.sw[0]);
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+static const char *const block =
+    "coordinates x\n"
+    "parameters m = 3, g = 9.81, al = %.17g\n"
+    "T = m/2*x'^2\n"
+    "V = -m*g*sin(al)*x\n"
+    "constraint grip: x' = 0 friction static %g kinetic %g normal m*g*cos(al)\n"
+    "initial x' = %g\n";
+
+static void block_sticks(void **state) {
+    (void)state;
+    double al = atan(0.45); /* tan al = 0.45 < mu_s = 0.5 */
+    sim_fix *f = load(block, al, 0.5, 0.3, 0.0);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 2, 0, 1e-11, false), QD_OK);
+    assert_int_equal(f->stats.transitions, 0);
+    assert_true(fabs(col(f, f->last, "x")) < 1e-14);
+    assert_true(col(f, f->last, "mode_grip") == 0);
+    assert_true(col(f, f->last, "dissipated") == 0);
+    sf_free(f);
+}
+
+static void block_slides(void **state) {
+    (void)state;
+    double al = atan(0.55), muk = 0.3, t = 1.5; /* tan al > mu_s = 0.5 */
+    sim_fix *f = load(block, al, 0.5, muk, 0.0);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, t, 0, 1e-11, false), QD_OK);
+    double acc = G * (sin(al) - muk * cos(al));
+    near(col(f, f->last, "x"), 0.5 * acc * t * t, 1e-12, "x = a t^2/2");
+    near(col(f, f->last, "x'"), acc * t, 1e-12, "x' = a t");
+    assert_true(col(f, f->last, "mode_grip") == 1);
+    /* the work of friction, mu_k m g cos(al) x */
+    near(f->stats.friction_dissipated, muk * 3 * G * cos(al) * 0.5 * acc * t * t, 1e-12,
+         "dissipated");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+/* Pushed up the slope (x' = -v0 < 0) with mu_k < tan al < mu_s: decelerates
+ * at g (sin al + mu_k cos al), stops, and static friction holds it. */
+static void block_stops_and_sticks(void **state) {
+    (void)state;
+    double al = atan(0.4), muk = 0.3, v0 = 2;
+    sim_fix *f = load(block, al, 0.5, muk, -v0);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 2, 0, 1e-11, false), QD_OK);
+    double dec = G * (sin(al) + muk * cos(al)), ts = v0 / dec;
+    one_switch(f, ts);
+    near(col(f, f->last, "x"), -v0 * v0 / (2 * dec), 1e-12, "where it stops");
+    assert_true(col(f, f->last, "x'") == 0);
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+/* Same start with tan al > mu_s: it stops, then slides back down at
+ * g (sin al - mu_k cos al); the switch at rest is slip -> slip, so no
+ * transition is recorded but the direction turns. */
+static void block_turns_back(void **state) {
+    (void)state;
+    double al = atan(0.6), muk = 0.3, v0 = 2, t = 1;
+    sim_fix *f = load(block, al, 0.5, muk, -v0);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, t, 0, 1e-11, false), QD_OK);
+    double up = G * (sin(al) + muk * cos(al)), down = G * (sin(al) - muk * cos(al));
+    double ts = v0 / up;
+    assert_int_equal(f->stats.transitions, 0);
+    near(col(f, f->last, "x'"), down * (t - ts), 1e-11, "sliding back");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+/* The stick-slip oscillator: a mass on a spring (k) dragged by a belt of
+ * speed v (the constraint x' = v, with t-free a0, so the belt's work keeps
+ * E + dissipated from E0: not checked).  It sticks until k x = mu_s m g
+ * (x_s), slips about x_k = mu_k m g/k with frequency w = sqrt(k/m) until
+ * x' = v again at 2 x_k - x_s, where static friction holds it: the limit
+ * cycle's slip lasts (pi + 2 atan2(v/w, x_s - x_k))/w, its stick
+ * 2 (x_s - x_k)/v (Den Hartog, Mechanical Vibrations, sec. 8.2). */
+static void belt_limit_cycle(void **state) {
+    (void)state;
+    double m = 1, k = 4, v = 0.5, mus = 0.4, muk = 0.25, w = 2;
+    sim_fix *f = load("coordinates x\n"
+                      "parameters m = 1, k = 4, g = 9.81, v = 0.5\n"
+                      "T = m/2*x'^2\n"
+                      "V = k/2*x^2\n"
+                      "constraint belt: x' = v friction static 0.4 kinetic 0.25 normal m*g\n"
+                      "initial x' = 0.5\n");
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 12, 0, 1e-12, false), QD_OK);
+    double xs = mus * m * G / k, xk = muk * m * G / k;
+    double slip = (SF_PI + 2 * atan2(v / w, xs - xk)) / w, stick = 2 * (xs - xk) / v;
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 6);
+    double t = xs / v;
+    for (size_t i = 0; i < n; i++) {
+        assert_int_equal(tr[i].from, i % 2 ? QD_CONTACT_SLIP : QD_CONTACT_STICK);
+        near(tr[i].t, t, 1e-10, "switch of the limit cycle");
+        t += i % 2 ? stick : slip;
+    }
+    sf_free(f);
+}
+
+/* Two contacts: block B (m) on block A (M) on the floor; A set moving at
+ * v0, B at rest.  Both slip: B speeds up at mu2 g, A slows at
+ * a = (mu2 m + mu1 (M + m)) g / M, until their speeds meet at
+ * t1 = v0 / (mu2 g + a).  With mu1 <= mu2 they then move as one (B needs
+ * the force m mu1 g <= m mu2 g) and stop at t1 + v1/(mu1 g); with mu1 >
+ * mu2 B cannot follow A's deceleration and slides on ahead of it (a
+ * slip -> slip reversal, no transition): A stops at t1 + v1 / a', a' =
+ * (mu1 (M + m) - mu2 m) g / M, and stays (the floor holds it), B at
+ * t1 + v1 / (mu2 g). */
+static const char *const stacked =
+    "coordinates xa, xb\n"
+    "parameters M = 2, m = 1, g = 9.81, mu1 = %g, mu2 = %g\n"
+    "T = M/2*xa'^2 + m/2*xb'^2\n"
+    "constraint floor: xa' = 0 friction mu1 normal (M + m)*g\n"
+    "constraint top: xb' - xa' = 0 friction mu2 normal m*g\n"
+    "initial xa' = 3\n";
+
+static void stacked_together(void **state) {
+    (void)state;
+    double M = 2, m = 1, mu1 = 0.1, mu2 = 0.3, v0 = 3;
+    sim_fix *f = load(stacked, mu1, mu2);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 5, 0, 1e-11, false), QD_OK);
+    double a = (mu2 * m + mu1 * (M + m)) * G / M, t1 = v0 / (mu2 * G + a), v1 = mu2 * G * t1;
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 2);
+    assert_int_equal(tr[0].contact, 1);
+    near(tr[0].t, t1, 1e-12, "B sticks on A");
+    assert_int_equal(tr[1].contact, 0);
+    near(tr[1].t, t1 + v1 / (mu1 * G), 1e-12, "A stops");
+    near(f->stats.friction_dissipated, M * v0 * v0 / 2, 1e-12, "all the energy");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+static void stacked_overtakes(void **state) {
+    (void)state;
+    double M = 2, m = 1, mu1 = 0.5, mu2 = 0.2, v0 = 3;
+    sim_fix *f = load(stacked, mu1, mu2);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 5, 0, 1e-11, false), QD_OK);
+    double a = (mu2 * m + mu1 * (M + m)) * G / M, t1 = v0 / (mu2 * G + a), v1 = mu2 * G * t1;
+    double a2 = (mu1 * (M + m) - mu2 * m) * G / M;
+    size_t n;
+    const qd_sim_transition *tr = qd_sim_transitions(f->s, &n);
+    assert_int_equal(n, 2);
+    assert_int_equal(tr[0].contact, 0);
+    near(tr[0].t, t1 + v1 / a2, 1e-12, "A stops");
+    assert_int_equal(tr[1].contact, 1);
+    near(tr[1].t, t1 + v1 / (mu2 * G), 1e-12, "B stops");
+    near(f->stats.friction_dissipated, M * v0 * v0 / 2, 1e-12, "all the energy");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+/* Painleve: a rod of length 2l, its end A on the floor (bilateral), sliding
+ * backwards at 1 rad with mu = 2: N (1 + 3 cos^2 - 3 mu sin cos) = m g has
+ * no solution with the sign the law assumes. */
+static void painleve_rod(void **state) {
+    (void)state;
+    sim_fix *f = load("coordinates x, y, th\n"
+                      "parameters m = 1, l = 1, g = 9.81, mu = 2\n"
+                      "T = m/2*(x'^2 + y'^2) + m*l^2/6*th'^2\n"
+                      "V = m*g*y\n"
+                      "constraint floor: y - l*sin(th) = 0\n"
+                      "constraint slip: x' + l*sin(th)*th' = 0 friction mu normal floor\n"
+                      "initial th = 1, y = sin(1), x' = -1\n");
+    qd_status st = sf_run(f, QD_SIM_DOP853, 1, 0, 1e-10, false);
+    assert_int_equal(st, QD_ERR_NUMERIC);
+    assert_non_null(strstr(qd_ctx_message(f->ctx), "Painleve paradox at t = 0"));
+    assert_non_null(strstr(qd_ctx_message(f->ctx), "no consistent stick/slip mode"));
+    sf_free(f);
+}
+
+/* The same rod with mu = 0.5 < 4/3 slides with a consistent N > 0. */
+static void rod_small_mu(void **state) {
+    (void)state;
+    sim_fix *f = load("coordinates x, y, th\n"
+                      "parameters m = 1, l = 1, g = 9.81, mu = 0.5\n"
+                      "T = m/2*(x'^2 + y'^2) + m*l^2/6*th'^2\n"
+                      "V = m*g*y\n"
+                      "constraint floor: y - l*sin(th) = 0\n"
+                      "constraint slip: x' + l*sin(th)*th' = 0 friction mu normal floor\n"
+                      "initial th = 1, y = sin(1), x' = -1\n");
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 0.2, 0, 1e-10, false), QD_OK);
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    assert_true(f->stats.friction_dissipated > 0);
+    sf_free(f);
+}
+
+static void expect_parse_error(const char *text, const char *msg, size_t line, size_t col) {
+    qd_ctx *ctx = qd_ctx_new();
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, text, &d);
+    assert_null(m);
+    if (!strstr(d.message, msg))
+        fail_msg("message '%s' lacks '%s'", d.message, msg);
+    assert_int_equal(d.line, line);
+    assert_int_equal(d.col, col);
+    assert_true(d.hint[0] != '\0');
+    qd_ctx_free(ctx);
+}
+
+static void errors(void **state) {
+    (void)state;
+    const char *head = "coordinates x, phi\nparameters m = 1, a = 0.1, g = 9.81, mu = 0.2\n"
+                       "T = m/2*x'^2 + m*a^2/5*phi'^2\n";
+    char text[512];
+    snprintf(text, sizeof text, "%sconstraint slip: x - a*phi = 0 friction mu normal m*g\n",
+             head);
+    expect_parse_error(text, "friction needs a velocity constraint", 4, 32);
+    snprintf(text, sizeof text, "%sconstraint slip: x' - a*phi' = 0 friction -0.3 normal m*g\n",
+             head);
+    expect_parse_error(text, "the friction coefficient is negative", 4, 43);
+    snprintf(text, sizeof text,
+             "%sconstraint slip: x' - a*phi' = 0 friction static 0.4 kinetic -mu normal m*g\n",
+             head);
+    expect_parse_error(text, "the friction coefficient is negative", 4, 62);
+    snprintf(text, sizeof text, "%sconstraint slip: x' - a*phi' = 0 friction mu normal flor\n"
+             "constraint floor: x = phi\n", head);
+    expect_parse_error(text, "no constraint named 'flor'", 4, 53);
+    snprintf(text, sizeof text, "%sconstraint slip: x' - a*phi' = 0 friction mu\n", head);
+    expect_parse_error(text, "friction needs the normal force", 4, 34);
+}
+
+static void symplectic_refused(void **state) {
+    (void)state;
+    sim_fix *f = load(round_body, 0.25, 0.4, 3.0);
+    assert_int_equal(sf_run(f, QD_SIM_GL4, 1, 0.01, 0, false), QD_ERR_ARG);
+    assert_non_null(strstr(qd_ctx_message(f->ctx), "friction"));
+    sf_free(f);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(sphere_constraint),    cmocka_unit_test(cylinder_constraint),
+        cmocka_unit_test(sphere_normal_constraint), cmocka_unit_test(sphere_rolls),
+        cmocka_unit_test(billiard_ball),        cmocka_unit_test(block_sticks),
+        cmocka_unit_test(block_slides),         cmocka_unit_test(block_stops_and_sticks),
+        cmocka_unit_test(block_turns_back),     cmocka_unit_test(painleve_rod),
+        cmocka_unit_test(rod_small_mu),         cmocka_unit_test(errors),
+        cmocka_unit_test(belt_limit_cycle),     cmocka_unit_test(stacked_together),
+        cmocka_unit_test(stacked_overtakes),
+        cmocka_unit_test(symplectic_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
