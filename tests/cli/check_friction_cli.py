@@ -22,9 +22,10 @@ closed forms the tests use") has the derivations.
 - friction_wedge_sphere.qd: a spinning ball set on a rough wedge on a smooth
   table (Byerly Art. 28b, Art. 9 Ex. 3 / TC19): the slipping phase by SymPy
   (constant accelerations and normal force), the stick time, then TC19's
-  rolling; horizontal momentum 0; spun both ways; spun up the face with mu
-  beyond mu_c (SymPy: where N = N0/(1 - c mu) has its pole) Painleve's
-  paradox, exit 1.
+  rolling; horizontal momentum 0; spun both ways; spun up the face, as mu
+  rises to mu_c (SymPy: where N = N0/(1 - c mu) has its pole) the velocities
+  after the stick tend to Byerly's for a perfectly rough face, and beyond
+  mu_c there is Painleve's paradox, exit 1.
 - friction_billiard.qd (`rolls ... friction`, a 2-D contact): the slip keeps
   its direction, |S| = S0 - 7/2 mu g t, the centre draws the parabola
   c0 + v0 t - mu g S0/|S0| t^2/2, rolling from 2 S0/(7 mu g), spin about the
@@ -416,6 +417,31 @@ def wedge_run(qdot, what, p):
     return r
 
 
+def byerly_limit(qdot, p, mu_c):
+    """Just below mu_c the slip ends in microseconds, N and F nearly impulses in the
+    ratio mu_c: the velocities after it are Byerly's for a perfectly rough face (Art.
+    28b): (M + m) x' = m y' cos al, y' = k^2 a Omega/(k^2 + a^2 - a^2 m cos^2(al)/(M + m)),
+    k^2 = 2 a^2/5.  (Spun down the face Byerly's answer needs the face to pull the ball,
+    a normal impulse -m sin(al) dx' < 0: no mu gives it.)"""
+    M, m, a, al, Om = p['M'], p['m'], p['a'], p['al'], -20
+    what = 'spinning ball up a rough wedge, mu -> mu_c: Byerly Art. 28b'
+    _, rolling = wedge_closed_form(dict(p, Omega=Om))
+    r = simulate(qdot, what, EX / 'friction_wedge_sphere.qd', '--t-end', 0.01, '--dt', 0.01,
+                 '--set', 'mu=%r' % (mu_c * (1 - 1e-4)), '--set', 'Omega=%r' % Om)
+    if r is None or not check(len(r.transitions) >= 1, '%s: no transition' % what):
+        return
+    k2 = 0.4 * a * a
+    yd = k2 * a * Om / (k2 + a * a - a * a * m * cos(al) ** 2 / (M + m))
+    t1 = [x['t'] for x in r.transitions if x['to'] == 'stick'][0]
+    row = [x for x in r.rows if x['t'] >= t1][0]
+    yd_now = yd + rolling['ydd'] * (row['t'] - t1)
+    xd_now = m * yd * cos(al) / (M + m) + rolling['xdd'] * (row['t'] - t1)
+    check(t1 < 1e-5 and close(row["y'"], yd_now, 1e-4, abs(yd)) and
+          close(row["x'"], xd_now, 1e-4, abs(yd)),
+          "%s: stick at %r, y' = %r, x' = %r; Byerly's %r, %r"
+          % (what, t1, row["y'"], row["x'"], yd_now, xd_now))
+
+
 def check_wedge(qdot):
     p = dict(M=3, m=1, a=0.1, al=pi / 6, g=9.8, mu=0.3, Omega=20)
     try:
@@ -432,6 +458,7 @@ def check_wedge(qdot):
         return
     r = wedge_run(qdot, 'spinning ball on a rough wedge, spun up the face',
                   dict(p, Omega=-20, mu=mu_c / 2))
+    byerly_limit(qdot, p, mu_c)
     what = "spinning ball on a rough wedge, mu = 2 mu_c (Painleve's paradox)"
     if r is None:
         skip(what, 'hybrid stick/slip in simulate')
