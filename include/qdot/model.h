@@ -324,6 +324,10 @@ QD_API const qd_expr *qd_model_contact_mu(const qd_model *m, size_t i, bool kine
  * qd_model_contact_normal_constraint, else NULL). */
 QD_API const qd_expr *qd_model_contact_normal(const qd_model *m, size_t i);
 QD_API const char *qd_model_contact_normal_constraint(const qd_model *m, size_t i);
+/* With N a multiplier: |N| = scale |lambda_N|, scale the size of the
+ * surface's gradient in space (`friction MU on POINT against CONSTRAINT`,
+ * whose constraint need not be written with a unit gradient), else 1. */
+QD_API const qd_expr *qd_model_contact_normal_scale(const qd_model *m, size_t i);
 
 #ifdef __cplusplus
 }

@@ -225,6 +225,11 @@ const qd_expr *qd_model_contact_normal(const qd_model *m, size_t i) {
     return c ? c->normal : NULL;
 }
 
+const qd_expr *qd_model_contact_normal_scale(const qd_model *m, size_t i) {
+    const fcontact *c = contact_at(m, i);
+    return c ? (c->normal_scale ? c->normal_scale : qd_int(m->ctx, 1)) : NULL;
+}
+
 const char *qd_model_contact_normal_constraint(const qd_model *m, size_t i) {
     const fcontact *c = contact_at(m, i);
     return c ? c->normal_con : NULL;

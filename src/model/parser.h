@@ -295,6 +295,7 @@ typedef struct fcontact {
     const qd_expr *normal;     /* N as an expression, or NULL */
     char *normal_con;          /* owned: the constraint whose multiplier is N */
     size_t normal_off, normal_len; /* where that name is written (forward use) */
+    const qd_expr *normal_scale;   /* |N| = scale |lambda|, NULL for 1 */
 } fcontact;
 
 /* The clause `friction (MU | static MU_S kinetic MU_K) [normal N]` as read,
@@ -308,6 +309,8 @@ typedef struct fclause {
 } fclause;
 
 bool qd__mdl_friction_ahead(const parser *p);
+/* `friction MU on POINT against CONSTRAINT` (friction_point.c) */
+bool qd__mdl_stmt_friction(parser *p);
 /* Read the clause at the token `friction`. */
 bool qd__mdl_friction_parse(parser *p, fclause *fc);
 /* Attach a read clause to constraints con[0..ncon) of the model under name;

@@ -19,6 +19,7 @@
  *   impact constraint NAME: ..., impact NAME: GAP >= 0, prescribe ...
  *   speeds NAME = EXPR, ...                             (speeds.c)
  *   inductance, capacitance, resistance, source ... on BRANCH  (circuit.c)
+ *   friction MU on POINT against CONSTRAINT            (friction_point.c)
  */
 #include "parser.h"
 #include "../base/mem.h"
@@ -619,6 +620,7 @@ static const struct stmt_kw {
     {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
+    {"friction", qd__mdl_stmt_friction, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -633,12 +635,13 @@ static bool unknown_statement(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {
         /* spaces, not commas: with the circuit statements the whole list
-         * fills the 255 bytes of a diagnostic's hint, so inputs and outputs
-         * are left to "did you mean" above */
+         * fills the 255 bytes of a diagnostic's hint, so inputs, outputs
+         * and friction are left to "did you mean" above */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
             if (statements[i].parse != qd__mdl_stmt_inputs &&
-                statements[i].parse != qd__mdl_stmt_outputs)
+                statements[i].parse != qd__mdl_stmt_outputs &&
+                statements[i].parse != qd__mdl_stmt_friction)
                 n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
             snprintf(hint + n, sizeof hint - n, ") or NAME = ...");

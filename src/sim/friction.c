@@ -80,7 +80,7 @@ static qd_status compile_fprog(qd_sim *s) {
         const qd_expr *N = qd_model_contact_normal(s->model, i);
         outs[k++] = qd_model_contact_mu(s->model, i, false);
         outs[k++] = qd_model_contact_mu(s->model, i, true);
-        outs[k++] = N ? N : zero;
+        outs[k++] = N ? N : qd_model_contact_normal_scale(s->model, i);
         outs[k++] = s->cons[c->con[0]].expr;
         outs[k++] = c->ncon > 1 ? s->cons[c->con[1]].expr : zero;
     }
@@ -231,7 +231,7 @@ void qd__fric_saddle(qd_sim *s, double *K, double *rhs) {
                 K[row * N + j] = 0;
             K[row * N + row] = 1;
             if (fc->normal != (size_t)-1) {
-                K[row * N + n + fc->normal] = f[1] * md->sn * u[i];
+                K[row * N + n + fc->normal] = f[1] * md->sn * u[i] * fabs(f[2]);
                 rhs[row] = 0;
             } else {
                 rhs[row] = -f[1] * fabs(f[2]) * u[i];
@@ -257,7 +257,8 @@ double qd__fric_power(const qd_sim *s) {
 /* |N| of contact c after a saddle solve. */
 double qd__fric_normal(const qd_sim *s, size_t c) {
     const qd__fcon *fc = &s->fc[c];
-    return fc->normal != (size_t)-1 ? fabs(s->rhs[s->n + fc->normal]) : fabs(fvals(s, c)[2]);
+    double scale = fabs(fvals(s, c)[2]); /* N's value, or |N| / |lambda_N| */
+    return fc->normal != (size_t)-1 ? scale * fabs(s->rhs[s->n + fc->normal]) : scale;
 }
 
 /* The friction force's size |lambda| of contact c after a saddle solve. */

@@ -84,7 +84,7 @@ struct qd_sim {
     qd_prog *uprog;
     bool uin_ready;
     /* Coulomb friction (friction.c): nfc contacts; fprog gives for each
-     * mu_s, mu_k, N (an expression's value, 0 for a multiplier) and its
+     * mu_s, mu_k, N (an expression's value; for a multiplier |N|/|lambda_N|), its
      * slip velocities s1, s2 (QD__FSTRIDE numbers per contact) */
     size_t nfc, fprog_n;
     struct qd__fcon *fc;

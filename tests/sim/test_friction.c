@@ -20,6 +20,10 @@
  *   - two contacts, a block sliding on a block on the floor: the mode
  *     choice when the relative slip stops (stick together, or the top
  *     block slides on ahead: slip -> slip the other way);
+ *   - a point on a rough surface (`friction MU on P against CONSTRAINT`):
+ *     an incline in a plane (the constraint's gradient not of size 1) and
+ *     in space, a spherical bowl where it comes to rest within the
+ *     friction cone;
  *   - Painleve's rod (a rod whose end slides on a rough floor, mu = 2 >
  *     4/3, at 1 rad, sliding backwards): no consistent mode;
  *   - in every run the energy balance E(t) + dissipated(t) = E(0) to
@@ -416,6 +420,83 @@ static void rod_small_mu(void **state) {
     sf_free(f);
 }
 
+/* A point on a rough incline of angle al in a vertical plane, the plane
+ * written with a gradient of size 3 (|N| = |lambda| |grad S| must undo it):
+ * from rest it slides down at g (sin al - mu cos al) when tan al > mu. */
+static const char *const incline2d =
+    "coordinates x, y\n"
+    "parameters m = 2, g = 9.81, al = %.17g, mu = 0.3\n"
+    "P = (x, y, 0)\n"
+    "particle m at P\n"
+    "V = m*g*y\n"
+    "constraint plane: 3*y + 3*tan(al)*x = 0\n"
+    "friction mu on P against plane\n";
+
+static void point_on_incline(void **state) {
+    (void)state;
+    double al = 0.6, mu = 0.3, t = 1;
+    sim_fix *f = load(incline2d, al);
+    assert_int_equal(qd_model_contact_kind(f->m, 0), QD_CONTACT_POINT);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, t, 0, 1e-11, false), QD_OK);
+    double a = G * (sin(al) - mu * cos(al));
+    near(col(f, f->last, "x"), 0.5 * a * cos(al) * t * t, 1e-12, "x = a cos(al) t^2/2");
+    near(fabs(col(f, f->last, "slip_P")), a * t, 1e-12, "|slip| = a t");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+    f = load(incline2d, atan(0.25)); /* below the friction angle: stays */
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, t, 0, 1e-11, false), QD_OK);
+    assert_true(fabs(col(f, f->last, "x")) < 1e-14 && col(f, f->last, "mode_P") == 0);
+    sf_free(f);
+}
+
+/* The same in space (P = (x, y, z), both tangential directions one
+ * contact), set moving down the line of greatest slope. */
+static void point_on_plane_3d(void **state) {
+    (void)state;
+    double al = 0.6, mu = 0.3, t = 1, v0 = 0.5;
+    sim_fix *f = load("coordinates x, y, z\n"
+                      "parameters m = 2, g = 9.81, al = 0.6, mu = 0.3\n"
+                      "P = (x, y, z)\n"
+                      "particle m at P\n"
+                      "V = m*g*z\n"
+                      "constraint plane: z + tan(al)*x = 0\n"
+                      "friction mu on P against plane\n"
+                      "initial x' = %.17g, z' = %.17g\n", v0 * cos(al), -v0 * sin(al));
+    size_t con[2];
+    assert_int_equal(qd_model_contact_constraints(f->m, 0, con), 2);
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, t, 0, 1e-11, false), QD_OK);
+    double a = G * (sin(al) - mu * cos(al)), sl = v0 * t + 0.5 * a * t * t;
+    near(col(f, f->last, "x"), sl * cos(al), 1e-12, "x along the slope");
+    assert_true(fabs(col(f, f->last, "y")) < 1e-14);
+    near(col(f, f->last, "slip_P"), v0 + a * t, 1e-12, "|slip|");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
+/* A particle in a rough spherical bowl (|grad S| = 2R): it comes to rest
+ * where the slope's tangent, r/|z|, is within mu, having dissipated
+ * exactly the energy it lost. */
+static void point_in_bowl(void **state) {
+    (void)state;
+    double mu = 0.2;
+    sim_fix *f = load("coordinates x, y, z\n"
+                      "parameters m = 1, R = 1, g = 9.81, mu = 0.2\n"
+                      "P = (x, y, z)\n"
+                      "particle m at P\n"
+                      "V = m*g*z\n"
+                      "constraint bowl: x^2 + y^2 + z^2 = R^2\n"
+                      "friction mu on P against bowl\n"
+                      "initial z = -0.8, x = 0.6, y' = 1\n");
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, 5, 0, 1e-11, false), QD_OK);
+    double x = col(f, f->last, "x"), y = col(f, f->last, "y"), z = col(f, f->last, "z");
+    assert_true(col(f, f->last, "mode_P") == 0);
+    assert_true(hypot(x, y) / fabs(z) <= mu);
+    near(f->stats.friction_dissipated, f->stats.E0 - col(f, f->last, "energy"), 1e-9,
+         "dissipated = E0 - E");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
 static void expect_parse_error(const char *text, const char *msg, size_t line, size_t col) {
     qd_ctx *ctx = qd_ctx_new();
     qd_diag d;
@@ -449,6 +530,10 @@ static void errors(void **state) {
     expect_parse_error(text, "no constraint named 'flor'", 4, 53);
     snprintf(text, sizeof text, "%sconstraint slip: x' - a*phi' = 0 friction mu\n", head);
     expect_parse_error(text, "friction needs the normal force", 4, 34);
+    snprintf(text, sizeof text, "%sconstraint c: x = a*phi\nfriction mu on Q against c\n", head);
+    expect_parse_error(text, "'Q' is not a point", 5, 16);
+    snprintf(text, sizeof text, "%sQ = (x, phi, 0)\nfriction mu on Q against d\n", head);
+    expect_parse_error(text, "no constraint named 'd'", 5, 26);
 }
 
 static void symplectic_refused(void **state) {
@@ -468,7 +553,8 @@ int main(void) {
         cmocka_unit_test(block_turns_back),     cmocka_unit_test(painleve_rod),
         cmocka_unit_test(rod_small_mu),         cmocka_unit_test(errors),
         cmocka_unit_test(belt_limit_cycle),     cmocka_unit_test(stacked_together),
-        cmocka_unit_test(stacked_overtakes),
+        cmocka_unit_test(stacked_overtakes),    cmocka_unit_test(point_on_incline),
+        cmocka_unit_test(point_on_plane_3d),    cmocka_unit_test(point_in_bowl),
         cmocka_unit_test(symplectic_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
