@@ -949,13 +949,9 @@ def _(q, v, t, p, label=None):
 # ---------------------------------------------------------------------------
 
 # ---------------------------------------------------------------------------
-# Coulomb friction (issue 18): examples/friction_*.qd.  At a state where a contact sticks
-# (the slip is 0 and the friction it needs is within mu N) the equations are those of the
-# ideal constraint, the multiplier the friction force; while a particle slides
-# (friction_particle_incline) the friction mu N opposes its velocity.
-
-FRICTION = 'issue 18: the statement `friction MU on POINT against CONSTRAINT`'
-
+# Coulomb friction (issue 18): examples/friction_*.qd.  qdot eom writes a friction contact
+# as it sticks: the equations of the ideal constraints, each multiplier the friction force
+# (the sliding is simulate's, tests/cli/check_friction_cli.py).
 
 def slides_state(rng, p):
     xd = u(rng)
@@ -1070,34 +1066,25 @@ def _(q, v, t, p, label=None):
 
 
 def particle_incline_state(rng, p):
-    al = p['al']
-    x, along = u(rng), u(rng)
-    speed_down, across = u(rng), u(rng)
-    return ({'x': x, 'y': along, 'z': -x * tan(al)},
-            {'x': speed_down * cos(al), 'y': across, 'z': -speed_down * sin(al)}, u(rng, 0, 3))
+    x = u(rng)
+    return {'x': x, 'y': u(rng), 'z': -x * tan(p['al'])}, {'x': 0.0, 'y': 0.0, 'z': 0.0}, \
+        u(rng, 0, 3)
 
 
 @example('friction_particle_incline', ['x', 'y', 'z'], particle_incline_state,
-         energy=lambda q, v, t, p: p['m'] / 2 * (v['x'] ** 2 + v['y'] ** 2 + v['z'] ** 2) +
-         p['m'] * p['g'] * q['z'],
-         power=lambda q, v, t, p: -p['mu'] * p['m'] * p['g'] * cos(p['al']) *
-         sqrt(v['x'] ** 2 + v['y'] ** 2 + v['z'] ** 2),
-         kinds={'plane': 'holonomic'}, dof=(2, 2))
+         kinds={'plane': 'holonomic', 'P_slip1': 'integrable', 'P_slip2': 'integrable'},
+         dof=(0, 0))
 def _(q, v, t, p, label=None):
-    # Byerly Art. 5c (seed-byerly.md TC03): the normal force R = m g cos(al) (the plane is flat)
-    # and the friction mu R against the velocity; the slope pulls g sin(al) down it.
-    m, g, al, mu = p['m'], p['g'], p['al'], p['mu']
-    vel = [v['x'], v['y'], v['z']]
-    s = sqrt(dot(vel, vel))
-    down = [cos(al), 0.0, -sin(al)]
-    acc = [g * sin(al) * d - mu * g * cos(al) * c / s for d, c in zip(down, vel)]
-    return dict(acc=acc, mult={'plane': m * g * cos(al)}, grad={'plane': [sin(al), 0, cos(al)]})
+    # Byerly Art. 5c (seed-byerly.md TC03): at rest on the plane the normal force is
+    # R = m g cos(al) and friction holds the particle with m g sin(al) up the slope; P_slip1
+    # is the velocity up the slope, -(cos(al) x' - sin(al) z'), P_slip2 = -y' across it.
+    m, g, al = p['m'], p['g'], p['al']
+    return dict(acc=[0.0, 0.0, 0.0],
+                mult={'plane': m * g * cos(al), 'P_slip1': m * g * sin(al), 'P_slip2': 0.0},
+                grad={'plane': [sin(al), 0, cos(al)], 'P_slip1': [-cos(al), 0, sin(al)],
+                      'P_slip2': [0, -1, 0]})
 
 
-# `friction MU on POINT against CONSTRAINT` is not read yet
-for _key in ('friction_particle_incline', 'friction_particle_incline:kinds',
-             'friction_particle_incline:dof'):
-    EXPECTED_TO_FAIL[_key] = FRICTION
 
 
 def read_parameters(path):
