@@ -34,7 +34,9 @@ closed forms the tests use") has the derivations.
   with mu = tan al, v (1 + cos phi) = v0 at every row and the speed tends to v0/2.
 - friction_stick_slip.qd: the belt-driven oscillator's stick/slip times, the
   limit cycle's period 2 D/vb + (pi + 2 b)/w and amplitude sqrt(D^2 + (vb/w)^2)
-  about mu_k m g/k.
+  about mu_k m g/k, and the energy friction dissipates, mu_k m g (vb t_slip +
+  2 D) per slip arc (the belt works on the block while it sticks, so there
+  E + dissipated is not E(0)).
 - In every run on a fixed surface: E(t) + dissipated(t) = E(0) row by row and
   the stats `friction_dissipated`, `energy_balance_error`.
 - Errors (exit 2, FILE:LINE:COL, the caret, a hint): friction on a holonomic
