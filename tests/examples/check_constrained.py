@@ -52,7 +52,7 @@ import re
 import subprocess
 import sys
 
-from math import sin, cos, sqrt, pi
+from math import sin, cos, sqrt, pi, tan
 
 REL_TOL = 1e-9
 ENERGY_TOL = 1e-6          # central differences of E
@@ -948,6 +948,145 @@ def _(q, v, t, p, label=None):
 
 # ---------------------------------------------------------------------------
 
+# ---------------------------------------------------------------------------
+# Coulomb friction (issue 18): examples/friction_*.qd.  qdot eom writes a friction contact
+# as it sticks: the equations of the ideal constraints, each multiplier the friction force
+# (the sliding is simulate's, tests/cli/check_friction_cli.py).
+
+def slides_state(rng, p):
+    xd = u(rng)
+    return {'x': u(rng), 'th': u(rng, -3, 3)}, {'x': xd, 'th': -xd / p['a']}, u(rng, 0, 3)
+
+
+def slides_energy(q, v, t, p):
+    return p['m'] / 2 * v['x'] ** 2 + p['kappa'] * p['m'] * p['a'] ** 2 / 2 * v['th'] ** 2
+
+
+@example('friction_sphere_slides', ['x', 'th'], slides_state, energy=slides_energy,
+         sets=[{'kappa': 0.5}], kinds={'slip': 'integrable'}, dof=(1, 1))
+def _(q, v, t, p, label=None):
+    # Byerly Art. 10a (seed-byerly.md TC20): rolling on a level table, no friction, uniform motion.
+    return dict(acc=[0.0, 0.0], mult={'slip': 0.0}, grad={'slip': [1, p['a']]})
+
+
+def incline_roll_state(rng, p):
+    xd = u(rng)
+    return {'x': u(rng), 'th': u(rng, -3, 3)}, {'x': xd, 'th': xd / p['a']}, u(rng, 0, 3)
+
+
+def incline_roll_energy(q, v, t, p):
+    return slides_energy(q, v, t, p) - p['m'] * p['g'] * sin(p['al']) * q['x']
+
+
+@example('friction_sphere_incline', ['x', 'th'], incline_roll_state, energy=incline_roll_energy,
+         sets=[{'kappa': 0.5, 'mu': 0.5}], kinds={'slip': 'integrable'}, dof=(1, 1))
+def _(q, v, t, p, label=None):
+    # Byerly Art. 9c (seed-byerly.md TC17): x'' = g sin(al) a^2/(a^2 + k^2), friction
+    # k^2/(a^2 + k^2) m g sin(al) up the slope (lambda_slip = -F: the slip's gradient is (1, -a)).
+    m, a, g, al, kap = p['m'], p['a'], p['g'], p['al'], p['kappa']
+    xdd = g * sin(al) / (1 + kap)
+    return dict(acc=[xdd, xdd / a], mult={'slip': -kap / (1 + kap) * m * g * sin(al)},
+                grad={'slip': [1, -a]})
+
+
+def block_state(rng, p):
+    return {'x': u(rng)}, {'x': 0.0}, u(rng, 0, 3)
+
+
+@example('friction_block_incline', ['x'], block_state, kinds={'stick': 'integrable'}, dof=(0, 0))
+def _(q, v, t, p, label=None):
+    # Byerly Art. 9c: at rest the friction m g sin(al) holds the block up the slope.
+    return dict(acc=[0.0], mult={'stick': -p['m'] * p['g'] * sin(p['al'])}, grad={'stick': [1]})
+
+
+def belt_state(rng, p):
+    # sticking needs k |x| <= mu_s m g
+    lim = p['mu_s'] * p['m'] * p['g'] / p['k']
+    return {'x': u(rng, -lim, lim)}, {'x': p['vb']}, u(rng, 0, 3)
+
+
+@example('friction_stick_slip', ['x'], belt_state,
+         energy=lambda q, v, t, p: p['m'] / 2 * v['x'] ** 2 + p['k'] / 2 * q['x'] ** 2,
+         power=lambda q, v, t, p: p['k'] * q['x'] * p['vb'],
+         kinds={'belt': 'integrable'}, dof=(0, 0))
+def _(q, v, t, p, label=None):
+    # Carried by the belt: the friction k x balances the spring, and works k x vb on the block.
+    return dict(acc=[0.0], mult={'belt': p['k'] * q['x']}, grad={'belt': [1]})
+
+
+def wedge_state(rng, p):
+    yd = u(rng)
+    return ({'x': u(rng), 'y': u(rng), 'z': p['a'], 'th': u(rng, -3, 3)},
+            {'x': u(rng), 'y': yd, 'z': 0.0, 'th': yd / p['a']}, u(rng, 0, 3))
+
+
+def wedge_energy(q, v, t, p):
+    M, m, a, al, g = p['M'], p['m'], p['a'], p['al'], p['g']
+    cx = v['x'] - v['y'] * cos(al) - v['z'] * sin(al)
+    cy = -v['y'] * sin(al) + v['z'] * cos(al)
+    return (M / 2 * v['x'] ** 2 + m / 2 * (cx * cx + cy * cy) + 0.2 * m * a * a * v['th'] ** 2 +
+            m * g * (-q['y'] * sin(al) + q['z'] * cos(al)))
+
+
+@example('friction_wedge_sphere', ['x', 'y', 'z', 'th'], wedge_state, energy=wedge_energy,
+         kinds={'contact': 'holonomic', 'slip': 'integrable'}, dof=(2, 2))
+def _(q, v, t, p, label=None):
+    # Byerly Art. 9 Ex. 3 (seed-byerly.md TC19): y'' = 5 (M + m) g sin(al)/(7 (M + m) -
+    # 5 m cos^2(al)), x'' = 5 m g sin(al) cos(al)/(same); the ball's turn k^2 th'' = -a F/m
+    # (k^2 = 2 a^2/5), the normal force m g cos(al) - m sin(al) x'' (the z equation).
+    M, m, a, al, g = p['M'], p['m'], p['a'], p['al'], p['g']
+    den = 7 * (M + m) - 5 * m * cos(al) ** 2
+    ydd, xdd = 5 * (M + m) * g * sin(al) / den, 5 * m * g * sin(al) * cos(al) / den
+    return dict(acc=[xdd, ydd, 0.0, ydd / a],
+                mult={'contact': m * g * cos(al) - m * sin(al) * xdd, 'slip': -0.4 * m * ydd},
+                grad={'contact': [0, 0, 1, 0], 'slip': [0, 1, 0, -a]})
+
+
+def billiard_state(rng, p):
+    a = p['a']
+    q = {'x': u(rng), 'y': u(rng), 'phi': u(rng, -3, 3), 'theta': u(rng, 0.3, 2.8),
+         'psi': u(rng, -3, 3)}
+    vv = {'phi': u(rng, -3, 3), 'theta': u(rng, -3, 3), 'psi': u(rng, -3, 3)}
+    w = omega_space(q['phi'], q['theta'], vv['phi'], vv['theta'], vv['psi'])
+    vv['x'], vv['y'] = a * w[1], -a * w[0]
+    return q, vv, u(rng, 0, 3)
+
+
+@example('friction_billiard', ['x', 'y', 'phi', 'theta', 'psi'], billiard_state,
+         kinds={'ball_roll1': 'nonholonomic', 'ball_roll2': 'nonholonomic'}, dof=(5, 3))
+def _(q, v, t, p, label=None):
+    # Byerly Art. 10a (seed-byerly.md TC20): rolling on a level table, the centre moves
+    # uniformly, w is constant, no friction.  roll1 = x' - a w_y, roll2 = y' + a w_x.
+    a, ph, th = p['a'], q['phi'], q['theta']
+    J = [[0, cos(ph), sin(ph) * sin(th)], [0, sin(ph), -cos(ph) * sin(th)], [1, 0, cos(th)]]
+    return dict(acc=[0.0, 0.0] + euler_accelerations([0.0, 0.0, 0.0], q, v),
+                mult={'ball_roll1': 0.0, 'ball_roll2': 0.0},
+                grad={'ball_roll1': [1, 0] + [-a * x for x in J[1]],
+                      'ball_roll2': [0, 1] + [a * x for x in J[0]]})
+
+
+def particle_incline_state(rng, p):
+    x = u(rng)
+    return {'x': x, 'y': u(rng), 'z': -x * tan(p['al'])}, {'x': 0.0, 'y': 0.0, 'z': 0.0}, \
+        u(rng, 0, 3)
+
+
+@example('friction_particle_incline', ['x', 'y', 'z'], particle_incline_state,
+         kinds={'plane': 'holonomic', 'P_slip1': 'integrable', 'P_slip2': 'integrable'},
+         dof=(0, 0))
+def _(q, v, t, p, label=None):
+    # Byerly Art. 5c (seed-byerly.md TC03): at rest on the plane the normal force is
+    # R = m g cos(al) and friction holds the particle with m g sin(al) up the slope; P_slip1
+    # is the velocity up the slope, -(cos(al) x' - sin(al) z'), P_slip2 = -y' across it.
+    m, g, al = p['m'], p['g'], p['al']
+    return dict(acc=[0.0, 0.0, 0.0],
+                mult={'plane': m * g * cos(al), 'P_slip1': m * g * sin(al), 'P_slip2': 0.0},
+                grad={'plane': [sin(al), 0, cos(al)], 'P_slip1': [-cos(al), 0, sin(al)],
+                      'P_slip2': [0, -1, 0]})
+
+
+
+
 def read_parameters(path):
     """The defaults on the example's `parameters` lines: {name: value}."""
     params = {}
@@ -958,7 +1097,9 @@ def read_parameters(path):
                 continue
             for item in line[len('parameters '):].split(','):
                 name, value = item.split('=')
-                params[name.strip()] = float(eval(value, {'sqrt': sqrt, 'pi': pi}))
+                # a value may use earlier parameters (mu = tan(al))
+                scope = dict(params, sqrt=sqrt, pi=pi, sin=sin, cos=cos, tan=tan)
+                params[name.strip()] = float(eval(value, scope))
     return params
 
 
