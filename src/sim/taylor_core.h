@@ -10,8 +10,7 @@
  *     K_0 x_k = r_k - sum_{j=1..k} K_j x_{k-j}.
  */
 
-static TAY_T *TAY_S(coef)(tay *T, size_t out) { return qd__tay_out(T->tp, out); }
-static TAY_T *TAY_S(state)(tay *T, size_t i) { return qd__tay_in(T->tp, T->in_of[i]); }
+static TAY_T *TAY_S(state)(tay *T, size_t i) { return T->yc[i]; }
 
 /* LU with partial pivoting of K (N*N) in place; false when a pivot is
  * not above 1e-13 N |K|_inf (as qd__num_solve). */
@@ -61,16 +60,10 @@ static void TAY_S(lu_solve)(const TAY_T *K, size_t N, const size_t *piv, TAY_T *
     }
 }
 
-/* Order j of the matrix K from the outputs (M at T->M_at, A at T->A_at). */
-static TAY_T TAY_S(K_at)(tay *T, size_t i, size_t l, size_t j) {
-    size_t n = T->nb;
-    if (i < n && l < n)
-        return TAY_S(coef)(T, T->M_at + i * n + l)[j];
-    if (i < n && l >= n)
-        return -TAY_S(coef)(T, T->A_at + (l - n) * n + i)[j];
-    if (i >= n && l < n)
-        return TAY_S(coef)(T, T->A_at + (i - n) * n + l)[j];
-    return 0;
+/* Order j of K's entry e (T->kc: its series, NULL for 0; T->kneg: -A^T). */
+static TAY_T TAY_S(K_at)(const tay *T, size_t e, size_t j) {
+    const TAY_T *c = T->kc[e];
+    return !c ? 0 : T->kneg[e] ? -c[j] : c[j];
 }
 
 /* r_k - sum_{j=1..k} K_j x_{k-j} into x_k, then solved with K_0. */
@@ -78,25 +71,51 @@ static bool TAY_S(solve_order)(tay *T, size_t k) {
     size_t N = T->N;
     TAY_T *K = T->K, *X = T->X, *x = X + k * N;
     for (size_t i = 0; i < N; i++)
-        x[i] = TAY_S(coef)(T, T->r_at[i])[k];
-    for (size_t j = 1; j <= k; j++) {
-        const TAY_T *xo = X + (k - j) * N;
-        for (size_t i = 0; i < N; i++) {
-            TAY_T s = 0;
-            for (size_t l = 0; l < N; l++)
-                s += TAY_S(K_at)(T, i, l, j) * xo[l];
-            x[i] -= s;
+        x[i] = ((const TAY_T *)T->rc[i])[k];
+    for (size_t i = 0; i < N; i++) {
+        TAY_T s = 0;
+        for (size_t l = 0; l < N; l++) {
+            const TAY_T *c = T->kc[i * N + l];
+            if (!c || T->kflat[i * N + l])
+                continue;
+            TAY_T v = 0;
+            for (size_t j = 1; j <= k; j++)
+                v += c[j] * X[(k - j) * N + l];
+            s += T->kneg[i * N + l] ? -v : v;
         }
+        x[i] -= s;
     }
     if (k == 0) {
-        for (size_t i = 0; i < N; i++)
-            for (size_t l = 0; l < N; l++)
-                K[i * N + l] = TAY_S(K_at)(T, i, l, 0);
+        for (size_t e = 0; e < N * N; e++)
+            K[e] = TAY_S(K_at)(T, e, 0);
         if (!TAY_S(lu)(K, N, T->piv))
             return false;
     }
     TAY_S(lu_solve)(K, N, T->piv, x);
     return true;
+}
+
+/* The derivative's change dF = F'(y) ylo for the rounding error ylo of the
+ * state (its exact value is y + ylo): the order-1 pass of the program along
+ * ylo at fixed t, after order 0.  The derivatives are evaluated at the
+ * rounded state, and a coordinate far from 0 (an angle wound up to 100
+ * rad: ulp 1.4e-14) gives accelerations off by ~1e-13 at every step; dF
+ * added to the step's increment (advance) removes that to first order,
+ * for one more pass of the 20 a step takes (the double pendulum's energy
+ * error over 1000 s: 1.5e-13 without, measured). */
+static void TAY_S(direction)(tay *T) {
+    TAY_T *tc = qd__tay_in(T->tp, T->tin), *lo = T->ylo, *dF = T->dF;
+    tc[1] = 0;
+    for (size_t i = 0; i < T->dim; i++)
+        TAY_S(state)(T, i)[1] = lo[i];
+    qd__tay_run(T->tp, 1);
+    if (T->N)
+        TAY_S(solve_order)(T, 1);
+    for (size_t i = 0; i < T->dim; i++) {
+        const TAY_T *src = T->srcc[i];
+        dF[i] = src ? src[1] : ((TAY_T *)T->X)[T->N + T->src_x[i]];
+    }
+    tc[1] = 1;
 }
 
 /* The state's coefficients 1..p from coefficient 0 (already set). */
@@ -107,11 +126,13 @@ static qd_status TAY_S(series)(tay *T, size_t p) {
         qd__tay_run(T->tp, k);
         if (T->N && !TAY_S(solve_order)(T, k))
             return QD_ERR_SINGULAR;
+        if (k == 0)
+            TAY_S(direction)(T);
+        TAY_T inv = 1 / (TAY_T)(k + 1);
         for (size_t i = 0; i < T->dim; i++) {
-            const TAY_T *src = T->src_out[i] == SIZE_MAX ? TAY_S(state)(T, T->src_in[i])
-                                                          : TAY_S(coef)(T, T->src_out[i]);
-            TAY_T v = T->src_x[i] == SIZE_MAX ? src[k] : ((TAY_T *)T->X)[k * T->N + T->src_x[i]];
-            TAY_S(state)(T, i)[k + 1] = v / (TAY_T)(k + 1);
+            const TAY_T *src = T->srcc[i];
+            TAY_T v = src ? src[k] : ((TAY_T *)T->X)[k * T->N + T->src_x[i]];
+            TAY_S(state)(T, i)[k + 1] = v * inv;
         }
     }
     return QD_OK;
@@ -141,9 +162,12 @@ static void TAY_S(dense)(tay *T, double theta, double *y) {
 
 /* The state and time from the driver's doubles (a projection, an impact). */
 static void TAY_S(load)(tay *T, double t, const double *y) {
+    TAY_T *lo = T->ylo;
     *(TAY_T *)T->t = t;
-    for (size_t i = 0; i < T->dim; i++)
+    for (size_t i = 0; i < T->dim; i++) {
         TAY_S(state)(T, i)[0] = y[i];
+        lo[i] = 0;
+    }
 }
 
 /* Coefficient 0 of the flat inputs (the parameters) from the system. */
@@ -154,21 +178,33 @@ static void TAY_S(flat_inputs)(tay *T, const double *in) {
 }
 
 /* Advance by h: the new state (and t) in the type, rounded into y; the
- * coefficients of the step stay for dense output. */
+ * coefficients of the step stay for dense output.  The increment is added
+ * by compensated summation (Kahan 1965; Knuth's TwoSum): the state carries
+ * its rounding error ylo from step to step, so that tens of thousands of
+ * steps do not add half an ulp each to y (the double pendulum's energy
+ * error over 1000 s: 5.6e-13 without, measured). */
 static void TAY_S(advance)(tay *T, double h, double *y) {
-    TAY_T *ynew = T->ynew;
-    for (size_t i = 0; i < T->dim; i++)
-        ynew[i] = TAY_S(horner)(TAY_S(state)(T, i), T->p, (TAY_T)h);
+    TAY_T *ynew = T->ynew, *lo = T->ylo, *lonew = lo + T->dim, th = (TAY_T)h, *dF = T->dF;
+    for (size_t i = 0; i < T->dim; i++) {
+        const TAY_T *c = TAY_S(state)(T, i);
+        TAY_T a = c[0], b = (TAY_S(horner)(c + 1, T->p - 1, th) * th) + (lo[i] + th * dF[i]);
+        TAY_T s = a + b, bb = s - a;
+        ynew[i] = s;
+        lonew[i] = (a - (s - bb)) + (b - bb);
+    }
     for (size_t i = 0; i < T->dim; i++)
         y[i] = (double)ynew[i];
-    *(TAY_T *)T->tnext = *(TAY_T *)T->t + (TAY_T)h;
+    *(TAY_T *)T->tnext = *(TAY_T *)T->t + th;
 }
 
 /* The step's end becomes the next step's start. */
 static void TAY_S(commit)(tay *T) {
     const TAY_T *ynew = T->ynew;
-    for (size_t i = 0; i < T->dim; i++)
+    TAY_T *lo = T->ylo;
+    for (size_t i = 0; i < T->dim; i++) {
         TAY_S(state)(T, i)[0] = ynew[i];
+        lo[i] = lo[T->dim + i];
+    }
     *(TAY_T *)T->t = *(TAY_T *)T->tnext;
 }
 

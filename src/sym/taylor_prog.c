@@ -34,6 +34,7 @@ struct qd__tay {
     uint32_t *live; /* the instructions whose result is not flat */
     size_t nlive;
     uint32_t *out;
+    uint8_t *oflat; /* per output: flat */
     size_t nout;
     void *work; /* nreg * stride coefficients */
 };
@@ -195,8 +196,10 @@ static bool rename_prog(qd_ctx *ctx, bld *b, const qd_prog *p, double *kval, uin
         }
         cur[p->code[j].dst] = r;
     }
-    for (size_t k = 0; ok && k < p->nout; k++)
+    for (size_t k = 0; ok && k < p->nout; k++) {
+        tp->oflat[tp->nout] = b->flat[cur[p->out[k]]];
         tp->out[tp->nout++] = cur[p->out[k]];
+    }
     qd__free(cur);
     return ok;
 }
@@ -254,10 +257,11 @@ static bool build(qd_ctx *ctx, qd__tay *tp, size_t nprog, const qd_prog *const *
     tp->ins = qd__malloc(ctx, nins * sizeof *tp->ins);
     tp->live = qd__malloc(ctx, nins * sizeof *tp->live);
     tp->out = qd__malloc(ctx, (nout + 1) * sizeof *tp->out);
+    tp->oflat = qd__malloc(ctx, nout + 1);
     double *kval = qd__malloc(ctx, nreg * sizeof *kval);
     uint32_t *kreg = qd__malloc(ctx, nreg * sizeof *kreg);
     size_t nk = 0;
-    bool ok = b.flat && b.sc && b.sch && b.tmp && tp->ins && tp->live && tp->out && kval && kreg;
+    bool ok = b.flat && b.sc && b.sch && b.tmp && tp->ins && tp->live && tp->out && tp->oflat && kval && kreg;
     for (size_t i = 0; ok && i < tp->nin; i++)
         new_reg(&b, var && !var[i]);
     for (size_t i = 0; ok && i < nprog; i++)
@@ -311,6 +315,7 @@ void qd__tay_free(qd__tay *tp) {
     qd__free(tp->ins);
     qd__free(tp->live);
     qd__free(tp->out);
+    qd__free(tp->oflat);
     qd__free(tp->work);
     qd__free(tp);
 }
@@ -318,6 +323,7 @@ void qd__tay_free(qd__tay *tp) {
 size_t qd__tay_nout(const qd__tay *tp) { return tp->nout; }
 size_t qd__tay_ninstr(const qd__tay *tp) { return tp->nins; }
 size_t qd__tay_maxorder(const qd__tay *tp) { return tp->maxorder; }
+bool qd__tay_out_flat(const qd__tay *tp, size_t j) { return tp->oflat[j]; }
 
 static void *reg_coef(qd__tay *tp, uint32_t r) {
     return (char *)tp->work + (size_t)r * tp->stride * type_size(tp->prec);

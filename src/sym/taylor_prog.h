@@ -46,6 +46,7 @@ void qd__tay_free(qd__tay *tp);
 size_t qd__tay_nout(const qd__tay *tp);      /* the outputs of every program, in order */
 size_t qd__tay_ninstr(const qd__tay *tp);    /* instructions after renaming */
 size_t qd__tay_maxorder(const qd__tay *tp);
+bool qd__tay_out_flat(const qd__tay *tp, size_t j); /* its coefficients beyond 0 vanish */
 /* Coefficient arrays (maxorder + 1 entries) of input i and output j, in the
  * workspace's type: double *, long double * or __float128 *. */
 void *qd__tay_in(qd__tay *tp, size_t i);
