@@ -16,20 +16,29 @@
 
 typedef enum top {
     T_ADD, T_SUB, T_MUL, T_DIV, T_NEG, T_RECIP, T_SQRT, T_POWC, T_SINCOS, T_SINHCOSH,
-    T_TAN, T_TANH, T_ASIN, T_ACOS, T_ATAN, T_ATAN2, T_EXP, T_LOG, T_ABS, T_SIGN, T_STEP
+    T_TAN, T_TANH, T_ASIN, T_ACOS, T_ATAN, T_ATAN2, T_EXP, T_LOG, T_ABS, T_SIGN, T_STEP,
+    T_MULC, T_DIVC /* x * y with x flat, x / y with y flat: code only */
 } top;
 
 /* d = op(a, b); u: the auxiliary series (cos beside sin, ...), else d.
  * fa, fb: the operand is flat (its coefficients beyond 0 vanish). */
 typedef struct tins {
-    uint32_t op, d, a, b, u;
+    uint32_t op, d, a, b, u, w;
     uint8_t fa, fb;
 } tins;
+
+/* An instruction as the recurrences run it: registers as offsets into the
+ * workspace (register * stride), a flat factor or divisor as its own
+ * operation, so the hot loop neither multiplies indices nor tests flags. */
+typedef struct tcode {
+    uint32_t op, d, u, w, a, b;
+} tcode;
 
 struct qd__tay {
     qd__tay_prec prec;
     size_t nin, nreg, stride, maxorder;
     tins *ins;
+    tcode *code;
     size_t nins;
     uint32_t *live; /* the instructions whose result is not flat */
     size_t nlive;
@@ -47,6 +56,7 @@ typedef struct bld {
     uint8_t *flat;
     uint32_t *sc, *sch; /* per register: its SINCOS (SINHCOSH) instruction */
     uint32_t *tmp;      /* operands of one n-ary instruction */
+    uint32_t scratch;   /* the register w of the operations without one */
 } bld;
 
 static uint32_t new_reg(bld *b, bool flat) {
@@ -58,14 +68,20 @@ static uint32_t new_reg(bld *b, bool flat) {
 
 static bool has_aux(top o) { return o >= T_SINCOS && o <= T_ATAN2; }
 
+/* The operations whose recurrences weigh x_j by j: they keep w_j = j x_j,
+ * the series of x' shifted, as a register of its own, filled once per order
+ * (sin and cos both read it).  The others write w into a scratch register. */
+static bool has_weight(top o) { return o == T_SINCOS || o == T_SINHCOSH || o == T_TAN || o == T_TANH || o == T_EXP; }
+
 /* The instruction d = o(x, y) (y = x when unary); returns d. */
 static uint32_t add(bld *b, top o, uint32_t x, uint32_t y) {
     bool flat = o == T_SIGN || o == T_STEP || (b->flat[x] && b->flat[y]);
     uint32_t d = new_reg(b, flat), u = has_aux(o) ? new_reg(b, flat) : d;
+    uint32_t w = has_weight(o) ? new_reg(b, flat) : b->scratch;
     qd__tay *tp = b->tp;
     if (!flat)
         tp->live[tp->nlive++] = (uint32_t)tp->nins;
-    tp->ins[tp->nins++] = (tins){o, d, x, y, u, b->flat[x], b->flat[y]};
+    tp->ins[tp->nins++] = (tins){o, d, x, y, u, w, b->flat[x], b->flat[y]};
     return d;
 }
 
@@ -208,7 +224,7 @@ static bool rename_prog(qd_ctx *ctx, bld *b, const qd_prog *p, double *kval, uin
  * operation of m operands is m - 1 binary ones, a general power 3, a
  * function 2 registers. */
 static void bounds(const qd_prog *p, size_t *nreg, size_t *nins, size_t *nopnd) {
-    *nreg += p->nconst + 3 * p->ncode + p->ncode;
+    *nreg += p->nconst + 3 * p->ncode + 2 * p->ncode;
     *nins += 3 * p->ncode;
     size_t most = 3;
     for (size_t j = 0; j < p->ncode; j++) {
@@ -245,15 +261,33 @@ static void init_consts(qd__tay *tp, const double *kval, const uint32_t *kreg, s
     }
 }
 
+static tcode to_code(const tins *in, uint32_t S) {
+    tcode c = {in->op, in->d * S, in->u * S, in->w * S, in->a * S, in->b * S};
+    if (in->op == T_MUL && (in->fa || in->fb)) {
+        c.op = T_MULC;
+        if (!in->fa) { /* the flat factor first */
+            c.a = in->b * S;
+            c.b = in->a * S;
+        }
+    } else if (in->op == T_DIV && in->fb) {
+        c.op = T_DIVC;
+    }
+    return c;
+}
+
 static bool build(qd_ctx *ctx, qd__tay *tp, size_t nprog, const qd_prog *const *progs,
                   const bool *var) {
-    size_t nreg = tp->nin + 1, nins = 1, nopnd = 3, nout = 0;
+    size_t nreg = tp->nin + 2, nins = 1, nopnd = 3, nout = 0;
+    if (tp->stride > 0xffffffffu / 64) {
+        qd_ctx_error(ctx, QD_ERR_TOOBIG, "taylor: order %zu is too high", tp->maxorder);
+        return false;
+    }
     for (size_t i = 0; i < nprog; i++) {
         bounds(progs[i], &nreg, &nins, &nopnd);
         nout += progs[i]->nout;
     }
     bld b = {tp, qd__malloc(ctx, nreg), qd__malloc(ctx, nreg * sizeof *b.sc),
-             qd__malloc(ctx, nreg * sizeof *b.sch), qd__malloc(ctx, nopnd * sizeof *b.tmp)};
+             qd__malloc(ctx, nreg * sizeof *b.sch), qd__malloc(ctx, nopnd * sizeof *b.tmp), 0};
     tp->ins = qd__malloc(ctx, nins * sizeof *tp->ins);
     tp->live = qd__malloc(ctx, nins * sizeof *tp->live);
     tp->out = qd__malloc(ctx, (nout + 1) * sizeof *tp->out);
@@ -264,6 +298,8 @@ static bool build(qd_ctx *ctx, qd__tay *tp, size_t nprog, const qd_prog *const *
     bool ok = b.flat && b.sc && b.sch && b.tmp && tp->ins && tp->live && tp->out && tp->oflat && kval && kreg;
     for (size_t i = 0; ok && i < tp->nin; i++)
         new_reg(&b, var && !var[i]);
+    if (ok)
+        b.scratch = new_reg(&b, true);
     for (size_t i = 0; ok && i < nprog; i++)
         ok = rename_prog(ctx, &b, progs[i], kval, kreg, &nk);
     if (ok) {
@@ -272,6 +308,10 @@ static bool build(qd_ctx *ctx, qd__tay *tp, size_t nprog, const qd_prog *const *
     }
     if (ok)
         init_consts(tp, kval, kreg, nk);
+    if (ok)
+        ok = (tp->code = qd__malloc(ctx, (tp->nins + 1) * sizeof *tp->code)) != NULL;
+    for (size_t i = 0; ok && i < tp->nins; i++)
+        tp->code[i] = to_code(&tp->ins[i], (uint32_t)tp->stride);
     qd__free(b.flat);
     qd__free(b.sc);
     qd__free(b.sch);
@@ -313,6 +353,7 @@ void qd__tay_free(qd__tay *tp) {
     if (!tp)
         return;
     qd__free(tp->ins);
+    qd__free(tp->code);
     qd__free(tp->live);
     qd__free(tp->out);
     qd__free(tp->oflat);

@@ -23,12 +23,19 @@
  *   atan2(x, y)    u d' = y x' - x y', u = x^2 + y^2
  */
 
-/* sum_{j=lo..hi} x_j y_{k-j} */
-static TAY_T TAY_S(conv)(const TAY_T *x, const TAY_T *y, size_t lo, size_t hi, size_t k) {
-    TAY_T s = 0;
-    for (size_t j = lo; j <= hi; j++)
-        s += x[j] * y[k - j];
-    return s;
+/* sum_{j=lo..hi} x_j y_{k-j}, in two interleaved sums (two independent
+ * chains of additions keep the FPU's pipeline busy: the recurrences are
+ * most of a Taylor step) */
+static inline __attribute__((always_inline)) TAY_T TAY_S(conv)(const TAY_T *x, const TAY_T *y, size_t lo, size_t hi, size_t k) {
+    TAY_T s0 = 0, s1 = 0;
+    size_t j = lo;
+    for (; j + 1 <= hi; j += 2) {
+        s0 += x[j] * y[k - j];
+        s1 += x[j + 1] * y[k - j - 1];
+    }
+    if (j == hi)
+        s0 += x[j] * y[k - j];
+    return s0 + s1;
 }
 
 /* sum_{j=lo..hi} j x_j y_{k-j} */
@@ -54,15 +61,15 @@ static TAY_T TAY_S(step)(TAY_T x) { return x > 0 ? 1 : x < 0 ? 0 : x == 0 ? (TAY
 
 /* Order 0: the values, as the program computes them. */
 static void TAY_S(order0)(const qd__tay *tp, TAY_T *c) {
-    size_t S = tp->stride;
     for (size_t i = 0; i < tp->nins; i++) {
-        const tins *in = &tp->ins[i];
-        TAY_T *d = c + in->d * S, *u = c + in->u * S, x = c[in->a * S], y = c[in->b * S];
+        const tcode *in = &tp->code[i];
+        TAY_T *d = c + in->d, *u = c + in->u, x = c[in->a], y = c[in->b];
+        c[in->w] = 0;
         switch ((top)in->op) {
         case T_ADD: d[0] = x + y; break;
         case T_SUB: d[0] = x - y; break;
-        case T_MUL: d[0] = x * y; break;
-        case T_DIV: d[0] = x / y; break;
+        case T_MUL: case T_MULC: d[0] = x * y; break;
+        case T_DIV: case T_DIVC: d[0] = x / y; break;
         case T_NEG: d[0] = -x; break;
         case T_RECIP: d[0] = 1 / x; break;
         case T_SQRT: d[0] = TAY_M(sqrt)(x); break;
@@ -92,22 +99,19 @@ static void TAY_S(arcsin)(TAY_T *d, TAY_T *u, const TAY_T *x, size_t k, TAY_T si
 }
 
 static void TAY_S(orderk)(const qd__tay *tp, TAY_T *c, size_t k) {
-    size_t S = tp->stride;
     TAY_T kk = (TAY_T)k;
     for (size_t l = 0; l < tp->nlive; l++) {
-        const tins *in = &tp->ins[tp->live[l]];
-        TAY_T *d = c + in->d * S, *u = c + in->u * S;
-        const TAY_T *x = c + in->a * S, *y = c + in->b * S;
+        const tcode *in = &tp->code[tp->live[l]];
+        TAY_T *d = c + in->d, *u = c + in->u, *w = c + in->w;
+        const TAY_T *x = c + in->a, *y = c + in->b;
         switch ((top)in->op) {
         case T_ADD: d[k] = x[k] + y[k]; break;
         case T_SUB: d[k] = x[k] - y[k]; break;
         case T_NEG: d[k] = -x[k]; break;
-        case T_MUL:
-            d[k] = in->fa ? x[0] * y[k] : in->fb ? x[k] * y[0] : TAY_S(conv)(x, y, 0, k, k);
-            break;
-        case T_DIV:
-            d[k] = in->fb ? x[k] / y[0] : (x[k] - TAY_S(conv)(y, d, 1, k, k)) / y[0];
-            break;
+        case T_MULC: d[k] = x[0] * y[k]; break;
+        case T_MUL: d[k] = TAY_S(conv)(x, y, 0, k, k); break;
+        case T_DIVC: d[k] = x[k] / y[0]; break;
+        case T_DIV: d[k] = (x[k] - TAY_S(conv)(y, d, 1, k, k)) / y[0]; break;
         case T_RECIP: d[k] = -TAY_S(conv)(x, d, 1, k, k) / x[0]; break;
         case T_SQRT: d[k] = (x[k] - TAY_S(square_mid)(d, k)) / (2 * d[0]); break;
         case T_POWC: {
@@ -118,19 +122,23 @@ static void TAY_S(orderk)(const qd__tay *tp, TAY_T *c, size_t k) {
             break;
         }
         case T_SINCOS:
-            d[k] = TAY_S(wconv)(x, u, 1, k, k) / kk;
-            u[k] = -TAY_S(wconv)(x, d, 1, k, k) / kk;
+            w[k] = kk * x[k]; /* (x')_(k-1) = k x_k, shared by both: see has_weight */
+            d[k] = TAY_S(conv)(w, u, 1, k, k) / kk;
+            u[k] = -TAY_S(conv)(w, d, 1, k, k) / kk;
             break;
         case T_SINHCOSH:
-            d[k] = TAY_S(wconv)(x, u, 1, k, k) / kk;
-            u[k] = TAY_S(wconv)(x, d, 1, k, k) / kk;
+            w[k] = kk * x[k];
+            d[k] = TAY_S(conv)(w, u, 1, k, k) / kk;
+            u[k] = TAY_S(conv)(w, d, 1, k, k) / kk;
             break;
         case T_TAN:
-            d[k] = TAY_S(wconv)(x, u, 1, k, k) / kk;
+            w[k] = kk * x[k];
+            d[k] = TAY_S(conv)(w, u, 1, k, k) / kk;
             u[k] = TAY_S(conv)(d, d, 0, k, k);
             break;
         case T_TANH:
-            d[k] = TAY_S(wconv)(x, u, 1, k, k) / kk;
+            w[k] = kk * x[k];
+            d[k] = TAY_S(conv)(w, u, 1, k, k) / kk;
             u[k] = -TAY_S(conv)(d, d, 0, k, k);
             break;
         case T_ASIN: TAY_S(arcsin)(d, u, x, k, 1); break;
@@ -145,7 +153,10 @@ static void TAY_S(orderk)(const qd__tay *tp, TAY_T *c, size_t k) {
             d[k] = (v - TAY_S(wconv)(d, u, 1, k - 1, k) / kk) / u[0];
             break;
         }
-        case T_EXP: d[k] = TAY_S(wconv)(x, d, 1, k, k) / kk; break;
+        case T_EXP:
+            w[k] = kk * x[k];
+            d[k] = TAY_S(conv)(w, d, 1, k, k) / kk;
+            break;
         case T_LOG: d[k] = (x[k] - TAY_S(wconv)(d, x, 1, k - 1, k) / kk) / x[0]; break;
         case T_ABS: d[k] = x[0] < 0 ? -x[k] : x[k]; break;
         case T_SIGN: case T_STEP: break; /* piecewise constant: flat, never live */
