@@ -43,7 +43,7 @@ typedef struct tay_ops {
     void (*dense)(tay *T, double theta, double *y);
     void (*load)(tay *T, double t, const double *y);
     void (*flat_inputs)(tay *T, const double *in);
-    void (*advance)(tay *T, double h, double *y);
+    double (*advance)(tay *T, double h, double tend, double *y); /* the new t */
     void (*commit)(tay *T);
     size_t size;
 } tay_ops;
@@ -334,12 +334,14 @@ static qd_status taylor_step(qd__integ *it) {
     if (h <= 1e-14 * fabs(it->t))
         return qd__underflow(it, h);
     memcpy(it->yold, it->y, it->dim * sizeof *it->y);
-    T->ops->advance(T, h, it->y);
+    /* the driver cut the step to end at t_end */
+    bool to_end = !it->fixed && h == it->h && it->t + h >= it->tend;
+    double tnew = T->ops->advance(T, h, to_end ? it->tend : NAN, it->y);
     for (size_t i = 0; i < it->dim; i++)
         if (!isfinite(it->y[i]))
             return qd__sim_not_finite(s, it->t, "the Taylor series of the solution is");
     it->told = it->t;
-    it->t = it->told + h;
+    it->t = it->fixed ? it->told + h : tnew;
     /* the next step chooses its own size from its own series */
     if (!it->fixed)
         it->h = INFINITY;

@@ -183,8 +183,11 @@ static void TAY_S(flat_inputs)(tay *T, const double *in) {
  * its rounding error ylo from step to step, so that tens of thousands of
  * steps do not add half an ulp each to y (the double pendulum's energy
  * error over 1000 s: 5.6e-13 without, measured). */
-static void TAY_S(advance)(tay *T, double h, double *y) {
-    TAY_T *ynew = T->ynew, *lo = T->ylo, *lonew = lo + T->dim, th = (TAY_T)h, *dF = T->dF;
+static double TAY_S(advance)(tay *T, double h, double tend, double *y) {
+    TAY_T *t = T->t, *ynew = T->ynew, *lo = T->ylo, *lonew = lo + T->dim, *dF = T->dF;
+    /* a step to the end: its length from the time in the type, so that an
+     * extended state does not inherit the drift of the driver's double t */
+    TAY_T th = tend == tend ? (TAY_T)tend - *t : (TAY_T)h;
     for (size_t i = 0; i < T->dim; i++) {
         const TAY_T *c = TAY_S(state)(T, i);
         TAY_T a = c[0], b = (TAY_S(horner)(c + 1, T->p - 1, th) * th) + (lo[i] + th * dF[i]);
@@ -194,7 +197,8 @@ static void TAY_S(advance)(tay *T, double h, double *y) {
     }
     for (size_t i = 0; i < T->dim; i++)
         y[i] = (double)ynew[i];
-    *(TAY_T *)T->tnext = *(TAY_T *)T->t + th;
+    *(TAY_T *)T->tnext = tend == tend ? (TAY_T)tend : *t + th;
+    return (double)*(TAY_T *)T->tnext;
 }
 
 /* The step's end becomes the next step's start. */
