@@ -45,14 +45,16 @@ static bool TAY_S(lu)(TAY_T *K, size_t N, size_t *piv) {
     return true;
 }
 
+/* The row swaps first: lu swapped whole rows, so L is in the final order. */
 static void TAY_S(lu_solve)(const TAY_T *K, size_t N, const size_t *piv, TAY_T *x) {
     for (size_t c = 0; c < N; c++) {
         TAY_T t = x[piv[c]];
         x[piv[c]] = x[c];
         x[c] = t;
+    }
+    for (size_t c = 0; c < N; c++)
         for (size_t i = c + 1; i < N; i++)
             x[i] -= K[i * N + c] * x[c];
-    }
     for (size_t i = N; i-- > 0;) {
         for (size_t j = i + 1; j < N; j++)
             x[i] -= K[i * N + j] * x[j];
