@@ -646,6 +646,9 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     else if (rc == QD_EXIT_OK && a->native && !c->e)
         fprintf(stderr, "qdot: note: --native takes models given by T and V or L; using the "
                         "compiled programs\n");
+    else if (rc == QD_EXIT_OK && a->native && c->opts.method == QD_SIM_TAYLOR)
+        fprintf(stderr, "qdot: note: --native does not reach the taylor method's recurrences "
+                        "(no generated C for them yet); using the compiled programs\n");
     else if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
         rc = load_native(c);
     return rc;
