@@ -157,7 +157,9 @@ static uint32_t nary(bld *b, const qd_prog *p, const instr *in, const uint32_t *
 
 /* The renamed instruction in; its result register. */
 static uint32_t translate(bld *b, const qd_prog *p, const instr *in, const uint32_t *cur) {
-    uint32_t x = cur[in->arg[0]], y = in->op >= OP_ADD3 && in->op <= OP_PRODN ? 0 : cur[in->arg[1]];
+    /* an n-ary instruction's arg is an index into the operand lists, not a register */
+    bool regs = !(in->op >= OP_ADD3 && in->op <= OP_PRODN);
+    uint32_t x = regs ? cur[in->arg[0]] : 0, y = regs ? cur[in->arg[1]] : 0;
     switch ((op)in->op) {
     case OP_ADD: return add(b, T_ADD, x, y);
     case OP_SUB: return add(b, T_SUB, x, y);
