@@ -57,6 +57,7 @@ bench:
 	/usr/bin/python3 bench/run_rhs.py build-bench
 	/usr/bin/python3 bench/run_simulate.py build-bench
 	/usr/bin/python3 bench/run_speeds.py build-bench
+	/usr/bin/python3 bench/run_taylor.py build-bench
 	if [ -x build-bench/bench/quad_bench ]; then ./build-bench/bench/quad_bench; fi
 	./build-bench/bench/run_symmetry
 

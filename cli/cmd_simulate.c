@@ -29,7 +29,7 @@
 
 static const char usage_text[] =
     "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--atol TOL] "
-    "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf] "
+    "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf|taylor] [--precision 64|80|128] "
     "[--out FILE] [--output \"EXPR, ...\"] [--input \"F = EXPR\" | --input F=FILE.csv]... "
     "[--input \"F = lqr\" --about \"q=VALUE, q'=VALUE, F=VALUE\" --lqr \"Q = ..., R = ...\"] "
     "[--event \"EXPR = 0, EXPR > 0\"]... "

@@ -86,11 +86,20 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
         a->max_steps = rc != 1 ? 0 : x >= 0x1p63 ? (size_t)-1 : (size_t)x;
         return rc;
     }
+    if ((v = cli_value(argc, argv, i, "--precision"))) {
+        if (strcmp(v, "64") && strcmp(v, "80") && strcmp(v, "128")) {
+            cli_diag_error("--precision takes 64, 80 or 128 (double, long double, __float128), "
+                           "not '%s'", v);
+            return QD_EXIT_USAGE + 100;
+        }
+        a->precision = atoi(v);
+        return 1;
+    }
     if ((v = cli_value(argc, argv, i, "--method"))) {
         qd_sim_method m;
         if (!qd_sim_method_from_name(v, &m)) {
             cli_diag_error("--method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
-                          "yoshida6, yoshida8 or bdf, not '%s'", v);
+                          "yoshida6, yoshida8, bdf or taylor, not '%s'", v);
             return QD_EXIT_USAGE + 100;
         }
         a->method_name = v;
@@ -520,6 +529,11 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     o->atol = a->atol;
     o->no_project = a->no_project;
     o->max_steps = a->max_steps;
+    o->precision = a->precision;
+    if (a->precision && a->precision != 64 && o->method != QD_SIM_TAYLOR) {
+        cli_diag_error("--precision %d is for --method taylor", a->precision);
+        return QD_EXIT_USAGE;
+    }
     o->t0 = c->st.vals[2 * qd_model_ncoords(c->mf.model)];
     o->t_end = a->t_end;
     o->q0 = c->q0;
@@ -632,6 +646,9 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     else if (rc == QD_EXIT_OK && a->native && !c->e)
         fprintf(stderr, "qdot: note: --native takes models given by T and V or L; using the "
                         "compiled programs\n");
+    else if (rc == QD_EXIT_OK && a->native && c->opts.method == QD_SIM_TAYLOR)
+        fprintf(stderr, "qdot: note: --native does not reach the taylor method's recurrences "
+                        "(no generated C for them yet); using the compiled programs\n");
     else if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
         rc = load_native(c);
     return rc;

@@ -29,6 +29,7 @@ typedef struct cli_sim_args {
     bool no_speeds;    /* a model with speeds: the multiplier form instead */
     size_t max_steps;
     cli_plot_args plot; /* --plot: parsed by the commands that draw (simulate, poincare) */
+    int precision;      /* --precision 64|80|128: the taylor method's arithmetic */
 } cli_sim_args;
 
 typedef struct cli_sim {

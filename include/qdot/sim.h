@@ -45,6 +45,8 @@ typedef enum qd_sim_method {
     QD_SIM_YOSHIDA6,
     QD_SIM_YOSHIDA8,
     QD_SIM_BDF,       /* CVODE, variable-order BDF */
+    QD_SIM_TAYLOR,    /* Taylor series by automatic differentiation, order from the
+                         tolerance (Jorba and Zou 2005): docs/design.md */
     QD_SIM_METHOD_COUNT
 } qd_sim_method;
 
@@ -209,6 +211,9 @@ typedef struct qd_sim_opts {
      * the restitutions of `impact`s keep the values the qd_sim was made
      * with (they are numbers fixed at qd_sim_new). */
     const double *par;
+    /* The Taylor method's arithmetic: 0 or 64 double, 80 long double, 128
+     * __float128 (state, time and coefficients; issue 22). */
+    int precision;
 } qd_sim_opts;
 
 typedef struct qd_sim_stats {

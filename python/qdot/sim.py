@@ -182,7 +182,7 @@ def _method(core, s, method, dt, rtol):
     m = ctypes.c_int()
     if not lib.qd_sim_method_from_name(method.encode(), byref(m)):
         raise Error("method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, yoshida6, "
-                    "yoshida8 or bdf, not '%s'" % method)
+                    "yoshida8, bdf or taylor, not '%s'" % method)
     return m.value
 
 

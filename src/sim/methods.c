@@ -15,6 +15,7 @@ static const struct {
     [QD_SIM_GL6] = {"gl6", 6, false},          [QD_SIM_VERLET] = {"verlet", 2, false},
     [QD_SIM_YOSHIDA4] = {"yoshida4", 4, false}, [QD_SIM_YOSHIDA6] = {"yoshida6", 6, false},
     [QD_SIM_YOSHIDA8] = {"yoshida8", 8, false}, [QD_SIM_BDF] = {"bdf", 5, true},
+    [QD_SIM_TAYLOR] = {"taylor", 20, true}, /* order from the tolerance: 20 at 1e-16 */
 };
 
 const char *qd_sim_method_name(qd_sim_method m) {

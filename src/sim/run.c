@@ -16,6 +16,7 @@ static const qd__method *const method_ops[QD_SIM_METHOD_COUNT] = {
     [QD_SIM_GL6] = &qd__gauss6,        [QD_SIM_VERLET] = &qd__verlet,
     [QD_SIM_YOSHIDA4] = &qd__yoshida4, [QD_SIM_YOSHIDA6] = &qd__yoshida6,
     [QD_SIM_YOSHIDA8] = &qd__yoshida8, [QD_SIM_BDF] = &qd__bdf,
+    [QD_SIM_TAYLOR] = &qd__taylor,
 };
 
 static bool symplectic(qd_sim_method m) { return m >= QD_SIM_GL2 && m <= QD_SIM_YOSHIDA8; }
@@ -691,7 +692,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
                     .dim = s->se ? s->n + s->nu : 2 * s->n + (s->nfc ? 1 : 0),
                     .t = o->t0, .tend = o->t_end,
                     .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
-                    .fixed = o->fixed, .h = o->fixed ? o->dt : 0};
+                    .fixed = o->fixed, .h = o->fixed ? o->dt : 0, .precision = o->precision};
     it.form = s->se ? QD__SPD
               : s->hamilton || (symplectic(o->method) && s->canonical) ? QD__HAM : QD__LAG;
     qd__run r = {.s = s, .it = &it};

@@ -240,10 +240,12 @@ struct qd__integ {
     bool fixed, y_changed; /* y_changed: the driver projected y after the step */
     size_t steps, rejected;
     void *priv;
+    int precision; /* the Taylor method's type: 64, 80, 128 bits (0: 64) */
 };
 
 extern const qd__method qd__dopri5, qd__dop853, qd__gauss2, qd__gauss4, qd__gauss6,
     qd__verlet, qd__yoshida4, qd__yoshida6, qd__yoshida8, qd__bdf;
+extern const qd__method qd__taylor; /* taylor.c */
 
 /* An explicit Runge-Kutta pair (erk.c runs it): s stages, the last one's
  * value at t + h the first of the next step (FSAL); err is the error norm

@@ -28,36 +28,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef enum op {
-    OP_ADD, OP_SUB, OP_MUL, OP_DIV, OP_NEG, OP_RECIP, OP_SQRT, OP_POW,
-    OP_ADD3, OP_MUL3, OP_SUMN, OP_PRODN,
-    OP_SIN, OP_COS, OP_TAN, OP_ASIN, OP_ACOS, OP_ATAN, OP_ATAN2,
-    OP_SINH, OP_COSH, OP_TANH, OP_EXP, OP_LOG, OP_ABS, OP_SIGN, OP_STEP
-} op;
-
-_Static_assert(OP_SIGN - OP_SIN == QD_SIGN - QD_SIN && OP_STEP - OP_SIN == QD_STEP - QD_SIN && OP_ATAN2 - OP_SIN == QD_ATAN2,
-               "function opcodes follow qd_func");
-
-/* A unary instruction reads arg[0] twice, so every instruction but the
- * n-ary ones reads two registers.  SUMN and PRODN find their operands in the
- * program's operand list at arg[0]: a count np, a count nn, then np + nn
- * registers; SUMN is the sum of the first np minus the rest, PRODN the
- * product of the first np over the product of the rest.  One dispatch for a
- * whole sum or product, the running value kept in a machine register.  ADD3
- * and MUL3, the most common n-ary cases, have just three registers there. */
-typedef struct instr {
-    uint32_t op, dst, arg[2];
-} instr;
-
-struct qd_prog {
-    size_t nin, nout, ncode, nreg;
-    instr *code;
-    uint32_t *opnd; /* operand lists of ADD3, MUL3, SUMN and PRODN */
-    double *regs;   /* qd_prog_run's workspace */
-    double *consts; /* nconst constants, registers nin .. nin + nconst */
-    size_t nconst;
-    uint32_t *out;
-};
+#include "prog_int.h"
 
 enum { NEED_VAL = 1, NEED_ALT = 2 };
 enum { INNER, LEAF_INPUT, LEAF_NUMBER };
