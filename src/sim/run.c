@@ -232,6 +232,13 @@ static qd_status check_system(const qd_sim *s, const qd_sim_opts *o) {
                      "dopri5 or bdf", name);
         return QD_ERR_ARG;
     }
+    if (s->nfc && o->method == QD_SIM_TAYLOR) {
+        /* its steps do not stop at the switching functions friction adds */
+        qd_ctx_error(s->ctx, QD_ERR_ARG,
+                     "taylor cannot follow friction's switches between stick and slip: use "
+                     "dop853, dopri5 or bdf");
+        return QD_ERR_ARG;
+    }
     if (splitting(o->method) && s->m) {
         qd_ctx_error(s->ctx, QD_ERR_ARG,
                      "%s cannot integrate a constrained system: use dop853 or gl4", name);

@@ -647,6 +647,13 @@ def check_errors(qdot):
                 ok = lines[2].index('^') - lines[1].index(src) + 1 == col and \
                     src[col - 1:].startswith(spot)
             check(ok, 'error: %s: exit %d, stderr %r' % (what, rc, err))
+    # a method that cannot follow the switches is refused by name (exit 1, as
+    # for any method the system does not suit: verlet on a non-separable H)
+    for method in (['--method', 'gl4', '--dt', '0.01'], ['--method', 'taylor']):
+        rc, out, err = run(qdot, 'simulate', EX / 'friction_sphere_slides.qd', '--t-end', '1',
+                           *method)
+        check(rc == 1 and out == '' and 'friction' in err,
+              'error: %s on friction: exit %d, stderr %r' % (method[1], rc, err))
 
 
 def main():
