@@ -28,6 +28,7 @@
 #include "path.h"
 #include "scatter.h"
 #include "plot.h"
+#include "sweep.h"
 
 #define QDOT_VERSION "0.1.0"
 

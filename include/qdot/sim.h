@@ -203,6 +203,10 @@ typedef struct qd_sim_opts {
      * for the speeds of qd0 (u = A qd0 + b, after qd0 is projected onto
      * the constraints). */
     const double *u0;
+    /* Values of the model's parameters in model order; NULL: the model's
+     * own.  Every method and the native right-hand side use them, so one
+     * compiled qd_sim serves runs with different parameters (qdot/sweep.h). */
+    const double *par;
 } qd_sim_opts;
 
 typedef struct qd_sim_stats {

@@ -161,7 +161,8 @@ class SimOpts(Structure):
                 ("fixed", c_bool), ("rtol", c_double), ("atol", c_double),
                 ("no_project", c_bool), ("max_steps", c_size_t),
                 ("q0", POINTER(c_double)), ("qd0", POINTER(c_double)),
-                ("p0", POINTER(c_double)), ("u0", POINTER(c_double))] + _TAIL
+                ("p0", POINTER(c_double)), ("u0", POINTER(c_double)),
+                ("par", POINTER(c_double))] + _TAIL
 
 
 class SimStats(Structure):
