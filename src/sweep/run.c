@@ -146,8 +146,12 @@ static void run_inputs(const qd_sweep *w, const qd_sim_opts *base, const double 
         qd_prog_eval(w->parprog, pwork, par + w->np, par);
 }
 
-static qd_status check_ready(qd_ctx *ctx, const qd_sweep *w) {
+qd_status qd__sweep_ready(qd_ctx *ctx, const qd_sweep *w) {
     for (size_t k = 0; k < w->nms; k++) {
+        if (w->ms[k].kind == QD__MS_EVENT && w->event >= w->s->nev) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "the measure event needs an event of the simulation");
+            return QD_ERR_ARG;
+        }
         if (w->ms[k].kind == QD__MS_PCOUNT && !w->has_section) {
             qd_ctx_error(ctx, QD_ERR_ARG, "poincare-count needs a section (qd_sweep_set_section)");
             return QD_ERR_ARG;
@@ -210,7 +214,7 @@ qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *ba
         return QD_ERR_ARG;
     }
     qd__sweep_inputs_of(w, i, row);
-    qd_status st = check_ready(ctx, w);
+    qd_status st = qd__sweep_ready(ctx, w);
     if (st != QD_OK)
         return st;
     qd_sim_opts o = *base;

@@ -81,6 +81,10 @@ qd_status qd__sweep_columns(qd_sweep *w);
 void qd__sweep_free_inputs(qd_sweep *w);
 void qd__sweep_free_measures(qd_sweep *w);
 
+/* Whether the sweep can run: runs, measures, and what they need (an
+ * event, a section); QD_ERR_ARG with the reason in ctx. */
+qd_status qd__sweep_ready(qd_ctx *ctx, const qd_sweep *w);
+
 /* Run i's input values (w->nin numbers). */
 void qd__sweep_inputs_of(const qd_sweep *w, size_t i, double *x);
 
