@@ -25,13 +25,14 @@ static const char usage_text[] =
     "usage: qdot sweep FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N "
     "[--seed S] | --list FILE.csv) --t-end T --measure \"M, ...\" [--event \"EXPR = EXPR[, "
     "EXPR > EXPR]\" | --stop-at ...] [--section \"EXPR = EXPR[, EXPR > EXPR]\"] [--threads N] "
-    "[--format csv|json] [-o FILE] [simulate options: --method, --rtol, --dt, --set, "
+    "[--renorm DT] [--transient T0] [--format csv|json] [-o FILE] [simulate options: --method, --rtol, --dt, --set, "
     "--initial, --native, ...]";
 
 typedef struct sweep_args {
     cli_sim_args sim;
     const char *grid, *random, *list, *measure, *section, *format;
     double n, seed, threads;
+    double renorm, transient; /* the lyapunov measures */
     bool has_n;
     size_t nuser;          /* --event and --stop-at: the first is the measure event's */
     char *escapes[QD_SIM_MAX_LIST]; /* "EXPR = VALUE" of each escape:EXPR>VALUE */
@@ -45,6 +46,16 @@ static int whole(const char *opt, const char *v, double *x) {
     *x = strtod(v, &end);
     if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > 0x1p53) {
         cli_diag_error("%s takes a whole number >= 0, not '%s'", opt, v);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int positive(const char *opt, const char *v, double *x) {
+    char *end;
+    *x = strtod(v, &end);
+    if (end == v || *end || !(*x >= 0) || !isfinite(*x)) {
+        cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -72,6 +83,10 @@ static int own_option(int argc, char **argv, int *i, sweep_args *a) {
         return whole("--seed", v, &a->seed);
     if ((v = cli_value(argc, argv, i, "--threads")))
         return whole("--threads", v, &a->threads);
+    if ((v = cli_value(argc, argv, i, "--renorm")))
+        return positive("--renorm", v, &a->renorm);
+    if ((v = cli_value(argc, argv, i, "--transient")))
+        return positive("--transient", v, &a->transient);
     bool stop = !strncmp(argv[*i], "--stop-at", 9);
     if ((v = cli_value(argc, argv, i, "--event")) || (v = cli_value(argc, argv, i, "--stop-at"))) {
         /* one place is kept for --section */
@@ -489,6 +504,23 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     return rc;
 }
 
+/* The measures lyapunov and lyapunov-spectrum: the variational equations
+ * of the same model (qdot/lyapunov.h), or NULL when none is asked for. */
+static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly) {
+    if (!has_measure(a->measure, "lyapunov") && !has_measure(a->measure, "lyapunov-spectrum"))
+        return QD_EXIT_OK;
+    if (!c->e) {
+        cli_diag_error("the lyapunov measures take a model in the multiplier form (not given "
+                       "by H, not in speeds: --no-speeds)");
+        return QD_EXIT_USAGE;
+    }
+    *ly = qd_lyap_new(c->ctx, c->mf.model, c->e);
+    qd_lyap_opts lo = {.renorm = a->renorm, .transient = a->transient};
+    if (!*ly || qd_sweep_set_lyap(w, *ly, &lo) != QD_OK)
+        return cli_diag_ctx(c->ctx);
+    return QD_EXIT_OK;
+}
+
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
     int rc = measure_outputs(c, a->measure);
     if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
@@ -502,9 +534,13 @@ static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
         rc = spec_error(c->ctx, "--measure", a->measure);
     if (rc == QD_EXIT_OK && a->section && qd_sweep_set_section(w, a->nuser) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
+    qd_lyap *ly = NULL;
+    if (rc == QD_EXIT_OK)
+        rc = lyap_setup(c, w, a, &ly);
     if (rc == QD_EXIT_OK)
         rc = run_all(c, w, a, fmt);
     qd_sweep_free(w);
+    qd_lyap_free(ly);
     return rc;
 }
 

@@ -62,6 +62,8 @@ struct qd_sweep {
     size_t ncols;
     size_t event, section;
     bool has_section;
+    const qd_lyap *lyap;   /* the measures lyapunov, lyapunov-spectrum */
+    qd_lyap_opts lyap_opts;
 };
 
 /* Names of the coordinates (n) and velocities as the system's columns give

@@ -17,6 +17,8 @@ of the code under test:
     x = sin(w t)/w, x' = cos(w t), poincare-count the whole periods;
   - --random: the same seed the same runs, another seed others, inside
     the box; --list FILE.csv: the rows in the file's order;
+  - lyapunov and lyapunov-spectrum of x'' = a^2 x over a: +a and -a
+    within the estimator's error, identical on 1 and 2 threads;
   - a run with a singular mass matrix is recorded in its row, the sweep
     goes on (exit 0);
   - --format json holds the same numbers as the CSV (NaN as null);
@@ -157,6 +159,23 @@ def oscillator(build, tmp):
     check("json: the same numbers (NaN as null)", same and len(js["rows"]) == 6)
 
 
+def lyapunov(build, tmp):
+    """x'' = a^2 x: exponents +a and -a (Benettin's estimate within its error),
+    the same rows on 1 and 2 threads."""
+    model = tmp / "inverted.qd"
+    model.write_text("coordinates x\nparameters a = 1\nT = x'^2/2\nV = -a^2*x^2/2\n"
+                     "initial x = 0, x' = 1\n")
+    args = [model, "--grid", "a=0.5:2:4", "--t-end", 20, "--measure",
+            "lyapunov, lyapunov-spectrum"]
+    one = sweep(build, *args, "--threads", 1)
+    check("lyapunov: 1 and 2 threads identical", one == sweep(build, *args, "--threads", 2))
+    for r in rows(one):
+        a, lam, err = float(r["a"]), float(r["lyapunov"]), float(r["lyapunov_error"])
+        check("lyapunov = a = %g" % a, abs(lam - a) <= err and err < 0.15 * a,
+              "%r +- %r" % (lam, err))
+        close("spectrum pairs", float(r["lyapunov_2"]), -float(r["lyapunov_1"]), 1e-9)
+
+
 def listed(build, tmp):
     model = tmp / "osc.qd"
     lst = tmp / "runs.csv"
@@ -225,7 +244,7 @@ def main():
                 part(args.build)
             except Exception as exc:
                 check(part.__name__, False, "%s: %s" % (type(exc).__name__, exc))
-        for part in (oscillator, listed, failure, errors):
+        for part in (oscillator, lyapunov, listed, failure, errors):
             try:
                 part(args.build, tmp)
             except Exception as exc:
