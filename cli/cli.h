@@ -71,6 +71,7 @@ int cli_cmd_routh(int argc, char **argv);      /* cmd_routh.c */
 int cli_cmd_integrals(int argc, char **argv);  /* cmd_integrals.c */
 int cli_cmd_simulate(int argc, char **argv);   /* cmd_simulate.c */
 int cli_cmd_poincare(int argc, char **argv);   /* cmd_poincare.c */
+int cli_cmd_lyapunov(int argc, char **argv);   /* cmd_lyapunov.c */
 int cli_cmd_codegen(int argc, char **argv);    /* cmd_codegen.c */
 int cli_cmd_equilibria(int argc, char **argv); /* cmd_equilibria.c */
 int cli_cmd_modes(int argc, char **argv);      /* cmd_modes.c */

@@ -27,6 +27,8 @@ static const cli_cmd commands[] = {
      cli_cmd_integrals, true},
     {"simulate", "FILE --t-end T [OPTIONS]", "integrate the motion; CSV or JSON", cli_cmd_simulate, true},
     {"poincare", "FILE --section ... --n N", "a Poincare surface of section", cli_cmd_poincare, true},
+    {"lyapunov", "FILE --t-end T [--n K]", "Lyapunov exponents: Benettin, QR, the sum check",
+     cli_cmd_lyapunov, true},
     {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", cli_cmd_codegen, true},
     {"equilibria", "FILE [--near ...|--box ...]", "equilibria and their kind",
      cli_cmd_equilibria, true},

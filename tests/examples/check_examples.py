@@ -639,6 +639,13 @@ def _(q, v, t, p):
     return [-(p['k'] * q['x'] + p['b'] * v['x']) / p['m']]
 
 
+@example('henon_heiles', ['x', 'y'], ranges={'x': (-0.5, 0.5), 'y': (-0.5, 0.5)})
+def _(q, v, t, p):
+    # Henon & Heiles, Astron. J. 69 (1964) 73: x'' = -x - 2 x y, y'' = -y - x^2 + y^2
+    x, y = q['x'], q['y']
+    return [-x - 2 * x * y, -y - x * x + y * y]
+
+
 @example('kepler_cartesian', ['x', 'y'], ranges={'x': (0.4, 2.0), 'y': (0.4, 2.0)})
 def _(q, v, t, p):
     # Desloge ch. 58-59 (B C3): m r'' = -k r / |r|^3

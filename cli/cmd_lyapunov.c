@@ -1,0 +1,224 @@
+/*
+ * cli/cmd_lyapunov.c - `qdot lyapunov FILE --t-end T [--n K] [--renorm DT]
+ * [--transient T0] [simulate options] [--format text|json]`: the K largest
+ * Lyapunov exponents of the motion from the model's initial state
+ * (qdot/lyapunov.h), their error estimates, and the check their sum
+ * allows: with all 2n of them, the sum equals the time average of tr J
+ * (Liouville), 0 for a conservative system, whose exponents also pair,
+ * lambda_i + lambda_{2n+1-i} = 0.
+ */
+#include "cli.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "json.h"
+#include "sim_cli.h"
+
+static const char usage_text[] =
+    "usage: qdot lyapunov FILE --t-end T [--n K] [--renorm DT] [--transient T0] "
+    "[--method dopri5|dop853] [--rtol TOL | --dt H] [--atol TOL] [--max-steps N] "
+    "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... [--format text|json]";
+
+typedef struct ly_args {
+    cli_sim_args a;
+    double n, renorm, transient;
+} ly_args;
+
+static int number(const char *opt, const char *v, double *out) {
+    char *end;
+    double x = strtod(v, &end);
+    if (end == v || *end || !isfinite(x) || x < 0) {
+        cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
+        return QD_EXIT_USAGE;
+    }
+    *out = x;
+    return QD_EXIT_OK;
+}
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    ly_args *p = data;
+    int rc = cli_sim_option(argc, argv, i, &p->a);
+    if (rc == 1)
+        return QD_EXIT_OK;
+    if (rc > 100)
+        return rc - 100;
+    const char *v;
+    if ((v = cli_value(argc, argv, i, "--n"))) {
+        if (number("--n", v, &p->n) != QD_EXIT_OK || p->n < 1 || p->n != floor(p->n) ||
+            p->n > 1e6) {
+            cli_diag_error("--n takes a positive whole number, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+    } else if ((v = cli_value(argc, argv, i, "--renorm"))) {
+        return number("--renorm", v, &p->renorm);
+    } else if ((v = cli_value(argc, argv, i, "--transient"))) {
+        return number("--transient", v, &p->transient);
+    } else if ((v = cli_value(argc, argv, i, "--format"))) {
+        if (strcmp(v, "text") && strcmp(v, "json")) {
+            cli_diag_error("--format takes text or json, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+        p->a.json = !strcmp(v, "json");
+    } else {
+        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+/* What was measured, for either format. */
+typedef struct ly_result {
+    size_t k, d;           /* exponents computed; 2n */
+    double *ex, *err;
+    qd_lyap_stats st;
+    bool conservative;
+} ly_result;
+
+static double sum_of(const ly_result *r) {
+    double s = 0;
+    for (size_t j = 0; j < r->k; j++)
+        s += r->ex[j];
+    return s;
+}
+
+/* Round-off's -0.000000 printed as 0. */
+static double clean(double x) { return fabs(x) < 5e-7 ? 0.0 : x; }
+
+/* Six decimals, the digits the estimates have. */
+static void fixed(const char *before, double x) { printf("%s% .6f", before, clean(x)); }
+
+static void print_text(const ly_result *r) {
+    for (size_t j = 0; j < r->k; j++) {
+        printf("lambda_%zu", j + 1);
+        fixed(" = ", r->ex[j]);
+        if (isnan(r->err[j]))
+            printf("  (no error estimate: fewer than 2 renormalizations in the last half)\n");
+        else
+            printf("  +- %.2g\n", r->err[j]);
+    }
+    fixed("mean tr J = ", r->st.trace_mean);
+    printf("  (the sum of all %zu exponents, Liouville%s)\n", r->d,
+           r->conservative ? "; -> 0 as T grows for a conservative system" : "");
+    if (r->k == r->d)
+        fixed("sum       = ", sum_of(r));
+    if (r->k == r->d)
+        printf("\n");
+    if (r->k == r->d && r->conservative) {
+        printf("conservative: the exponents pair, lambda_i + lambda_%zu-i =", r->d + 1);
+        for (size_t j = 0; j < r->d / 2; j++)
+            printf("%s%.6f", j ? ", " : " ", clean(r->ex[j] + r->ex[r->d - 1 - j]));
+        printf("\n");
+    }
+}
+
+static void json_numbers(cli_json *j, const char *key, const double *x, size_t n) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        if (isnan(x[i]))
+            cli_json_null(j);
+        else
+            cli_json_number(j, x[i]);
+    cli_json_end_array(j);
+}
+
+static int print_json(const ly_result *r, const cli_sim *c, const ly_args *p) {
+    qd_buf b = QD_BUF_INIT;
+    cli_json j;
+    cli_json_init(&j, &b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "method");
+    cli_json_string(&j, qd_sim_method_name(c->opts.method));
+    cli_json_key(&j, "t_avg");
+    cli_json_number(&j, r->st.t_avg);
+    cli_json_key(&j, "transient");
+    cli_json_number(&j, p->transient);
+    cli_json_key(&j, "renorm");
+    cli_json_number(&j, p->renorm > 0 ? p->renorm : 1);
+    cli_json_key(&j, "renormalizations");
+    cli_json_number(&j, (double)r->st.renorms);
+    json_numbers(&j, "exponents", r->ex, r->k);
+    json_numbers(&j, "errors", r->err, r->k);
+    cli_json_key(&j, "trace_mean");
+    cli_json_number(&j, r->st.trace_mean);
+    if (r->k == r->d) {
+        cli_json_key(&j, "sum");
+        cli_json_number(&j, sum_of(r));
+    }
+    cli_json_key(&j, "conservative");
+    cli_json_bool(&j, r->conservative);
+    cli_json_end_object(&j);
+    bool ok = cli_json_ok(&j);
+    if (ok)
+        printf("%s\n", qd_buf_str(&b));
+    qd_buf_free(&b);
+    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+}
+
+/* The model made into the tangent system and run; prints the result. */
+static int run(cli_sim *c, const ly_args *p) {
+    if (!c->e) {
+        cli_diag_error("lyapunov takes a model given by T and V or L (its equations M q'' = "
+                       "f), not one given by H or in speeds (try --no-speeds)");
+        return QD_EXIT_USAGE;
+    }
+    size_t d = 2 * c->e->n;
+    if (p->n > (double)d) {
+        cli_diag_error("--n: the model has %zu exponents (twice its %zu degrees of freedom), "
+                       "not %.0f", d, c->e->n, p->n);
+        return QD_EXIT_USAGE;
+    }
+    qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
+    if (!l)
+        return cli_diag_ctx(c->ctx);
+    ly_result r = {.k = p->n >= 1 ? (size_t)p->n : 1, .d = d,
+                   .conservative = qd_sim_conservative(c->s)};
+    r.ex = calloc(2 * r.k, sizeof *r.ex);
+    r.err = r.ex + r.k;
+    qd_lyap_opts lo = {.nexp = r.k, .renorm = p->renorm, .transient = p->transient};
+    qd_status st = r.ex ? qd_lyap_run_stats(c->ctx, l, &c->opts, &lo, r.ex, r.err, &r.st)
+                        : QD_ERR_NOMEM;
+    int rc;
+    if (st == QD_ERR_ARG) {
+        rc = cli_diag_ctx(c->ctx);
+    } else if (st != QD_OK) {
+        rc = cli_sim_fail(c, st);
+    } else {
+        fprintf(stderr, "qdot: lyapunov: %s, averaged over T = %g after a transient of %g, "
+                        "%zu renormalizations: %zu steps, %zu evaluations, %zu rejected\n",
+                qd_sim_method_name(c->opts.method), r.st.t_avg, p->transient, r.st.renorms,
+                r.st.steps, r.st.evals, r.st.rejected);
+        rc = QD_EXIT_OK;
+        if (p->a.json)
+            rc = print_json(&r, c, p);
+        else
+            print_text(&r);
+    }
+    free(r.ex);
+    qd_lyap_free(l);
+    return rc;
+}
+
+int cli_cmd_lyapunov(int argc, char **argv) {
+    ly_args p = {.n = 1};
+    int rc = cli_file_args(argc, argv, "lyapunov", usage_text, &p.a.file, parse_option, &p);
+    if (rc == QD_EXIT_OK && !p.a.has_t_end) {
+        cli_diag_error("--t-end is missing\n%s", usage_text);
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc != QD_EXIT_OK)
+        return rc;
+    /* Runge-Kutta: dop853 unless named; --dt makes its step fixed */
+    if (!p.a.method_name)
+        p.a.method_name = "dop853";
+    cli_sim c = {0};
+    rc = cli_sim_setup(&c, &p.a);
+    c.opts.fixed = p.a.has_dt;
+    if (rc == QD_EXIT_OK)
+        rc = run(&c, &p);
+    cli_sim_free(&c);
+    return rc;
+}
