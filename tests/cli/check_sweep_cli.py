@@ -17,6 +17,8 @@ of the code under test:
     x = sin(w t)/w, x' = cos(w t), poincare-count the whole periods;
   - --random: the same seed the same runs, another seed others, inside
     the box; --list FILE.csv: the rows in the file's order;
+  - the same period with gl4, yoshida4, dopri5, bdf and --native (each
+    run's parameters reach every method's programs);
   - lyapunov and lyapunov-spectrum of x'' = a^2 x over a: +a and -a
     within the estimator's error, identical on 1 and 2 threads;
   - a run with a singular mass matrix is recorded in its row, the sweep
@@ -159,6 +161,25 @@ def oscillator(build, tmp):
     check("json: the same numbers (NaN as null)", same and len(js["rows"]) == 6)
 
 
+def methods(build, tmp):
+    """Per-run parameters reach every method's programs and the native
+    right-hand side: the period 2 pi/sqrt(k) for k = 1 and 4."""
+    model = tmp / "osc.qd"
+    for extra, tol in ((["--method", "gl4", "--dt", 0.001], 1e-9),
+                       (["--method", "yoshida4", "--dt", 0.001], 1e-9),
+                       (["--method", "dopri5"], 1e-9), (["--method", "bdf"], 1e-7),
+                       (["--native"], 1e-9)):
+        r = qdot(build, "sweep", model, "--grid", "k=1:4:2", "--t-end", 7, "--event",
+                 "x = 0, x' > 0", "--measure", "event", *extra)
+        if extra == ["--native"] and r.returncode != 0 and "compiler" in r.stderr:
+            continue  # no C compiler here: --native is not available
+        got = rows(r.stdout)
+        check("%s: two runs" % extra[-1], r.returncode == 0 and len(got) == 2, r.stderr)
+        for row in got:
+            close("%s: period at k=%s" % (" ".join(map(str, extra)), row["k"]),
+                  float(row["event_t"]), 2 * math.pi / math.sqrt(float(row["k"])), tol)
+
+
 def lyapunov(build, tmp):
     """x'' = a^2 x: exponents +a and -a (Benettin's estimate within its error),
     the same rows on 1 and 2 threads."""
@@ -244,7 +265,7 @@ def main():
                 part(args.build)
             except Exception as exc:
                 check(part.__name__, False, "%s: %s" % (type(exc).__name__, exc))
-        for part in (oscillator, lyapunov, listed, failure, errors):
+        for part in (oscillator, methods, lyapunov, listed, failure, errors):
             try:
                 part(args.build, tmp)
             except Exception as exc:
