@@ -492,6 +492,7 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     if (rc == QD_EXIT_OK) {
         cli_progress bar;
         cli_progress_start(&bar, "sweep");
+        bar.label = "runs";
         qd_status st = qd_sweep_run(c->ctx, w, &c->opts, 0, r.nruns, threads, r.rows, r.status,
                                     r.reasons, progress, &bar);
         r.wall = cli_progress_end(&bar);
