@@ -47,6 +47,9 @@ test-tsan:
 	# Lyapunov exponents: two threads on one qd_lyap (tests/lyap/test_threads.c)
 	$(CMAKE) --build build-tsan -j $(JOBS) --target lyap_test_threads
 	TSAN_OPTIONS=halt_on_error=1:exitcode=66 ./build-tsan/tests/lyap_test_threads
+	# qdot sweep's worker pool (issue 21): the runs of one sweep on 2 threads
+	$(CMAKE) --build build-tsan -j $(JOBS) --target sweep_test_sweep
+	TSAN_OPTIONS=halt_on_error=1:exitcode=66 ./build-tsan/tests/sweep_test_sweep
 
 bench:
 	./scripts/deps.sh bench

@@ -19,6 +19,7 @@ static double seconds(const struct timespec *a, const struct timespec *b) {
 
 void cli_progress_start(cli_progress *p, const char *what) {
     p->what = what;
+    p->label = "t";
     p->on = isatty(2);
     p->shown = false;
     clock_gettime(CLOCK_MONOTONIC, &p->start);
@@ -47,8 +48,9 @@ void cli_progress_update(cli_progress *p, double frac, double t) {
     char left[32] = "?";
     if (frac > 0)
         format_left(left, sizeof left, wall * (1 - frac) / frac);
-    fprintf(stderr, "\rqdot: %s [%-*.*s] %3.0f%%  t = %-10.4g  %s left   ", p->what, BAR_WIDTH,
-            (int)(frac * BAR_WIDTH), "##############################", 100 * frac, t, left);
+    fprintf(stderr, "\rqdot: %s [%-*.*s] %3.0f%%  %s = %-10.4g  %s left   ", p->what, BAR_WIDTH,
+            (int)(frac * BAR_WIDTH), "##############################", 100 * frac, p->label, t,
+            left);
     p->shown = true;
 }
 

@@ -10,6 +10,7 @@
 
 typedef struct cli_progress {
     const char *what;        /* the command's name, shown before the bar */
+    const char *label;       /* what t counts: "t" (set by start), "runs" (sweep) */
     struct timespec start, last;
     bool on, shown;
 } cli_progress;

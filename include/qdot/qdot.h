@@ -28,6 +28,7 @@
 #include "path.h"
 #include "scatter.h"
 #include "plot.h"
+#include "sweep.h"
 #include "lyapunov.h"
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
 

@@ -1,0 +1,106 @@
+/*
+ * qdot/sweep.h - many runs of one compiled system: grids, random draws and
+ * lists of initial values and parameters, a few numbers ("measures") per
+ * run, on a pool of threads.
+ *
+ * A sweep owns no equations: it reads a compiled qd_sim (shared read-only by
+ * every thread, qdot/sim.h "Thread safety") and the model it came from (to
+ * resolve names).  An input NAME is a coordinate (its initial value), a
+ * velocity `x'` (its initial value) or a parameter (its value in the run,
+ * through qd_sim_opts.par).  Each run depends only on its inputs, so the
+ * rows are identical whatever the number of threads (or processes) that
+ * compute them.
+ *
+ * Specs:
+ *   grid      "NAME=A:B:N, ..."   product of the axes, the first axis
+ *                                 slowest; N >= 1 points from A to B
+ *                                 (N = 1 gives A alone), A <= B when N > 1
+ *   random    "NAME=A:B, ..."     n runs uniform in the box; run i's draw
+ *                                 depends only on (seed, i)
+ *   measures  "final, energy_error, event, escape:EXPR>VAL, max:EXPR,
+ *              min:EXPR, poincare-count, lyapunov, lyapunov-spectrum"
+ *             (docs/cli.md, "qdot sweep", says what each gives).
+ * Errors name the offending text; the call returns QD_ERR_PARSE (malformed)
+ * or QD_ERR_ARG (unknown or duplicate name, N = 0, A > B) with the reason in
+ * the sweep's context.
+ */
+#ifndef QDOT_SWEEP_H
+#define QDOT_SWEEP_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "lyapunov.h"
+#include "model.h"
+#include "sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qd_sweep qd_sweep;
+
+/* s compiled (qd_sim_compile), shared read-only by all threads; s and m
+ * must outlive the sweep.  NULL on failure, reason in ctx. */
+QD_API qd_sweep *qd_sweep_new(qd_ctx *ctx, const qd_sim *s, const qd_model *m);
+QD_API void qd_sweep_free(qd_sweep *w);
+
+/* The runs: one of grid, random, list (a later call replaces the runs). */
+QD_API qd_status qd_sweep_grid(qd_sweep *w, const char *spec);
+QD_API qd_status qd_sweep_random(qd_sweep *w, const char *spec, size_t n, uint64_t seed);
+/* nrows runs, values row-major (nrows * nnames numbers). */
+QD_API qd_status qd_sweep_list(qd_sweep *w, size_t nnames, const char *const *names, size_t nrows,
+                               const double *values);
+
+/* The measures, in the order given (a later call replaces them). */
+QD_API qd_status qd_sweep_measures(qd_sweep *w, const char *spec);
+
+/* Which events of s the measures read (indices in the order the events
+ * were added to s).  `event`: the first time event k fires (default 0).
+ * `poincare-count`: how many times event k fires, a Poincare section as
+ * `qdot poincare --section` adds it (the condition with its guards; default:
+ * none, and the measure is refused without one).  QD_ERR_ARG for an index
+ * s does not have. */
+QD_API qd_status qd_sweep_set_event(qd_sweep *w, size_t k);
+QD_API qd_status qd_sweep_set_section(qd_sweep *w, size_t k);
+
+/* The measures `lyapunov` (columns lyapunov, lyapunov_error: the largest
+ * exponent and its error estimate) and `lyapunov-spectrum` (lyapunov_1 ..
+ * lyapunov_2n, descending) integrate the variational equations of l
+ * (qdot/lyapunov.h; built from the same model and equations as s) from
+ * each run's initial state and parameters, with the run's t0, t_end, rtol
+ * and atol, dopri5 or dop853 (another method of the run: dop853).  lo
+ * gives renorm and transient (nexp is set per measure; lo NULL: the
+ * defaults).  l must outlive the sweep; copied lo.  QD_ERR_ARG when l's
+ * degrees of freedom are not s's.  Without l these measures are refused
+ * by qd_sweep_run. */
+QD_API qd_status qd_sweep_set_lyap(qd_sweep *w, const qd_lyap *l, const qd_lyap_opts *lo);
+
+QD_API size_t qd_sweep_nruns(const qd_sweep *w);
+QD_API size_t qd_sweep_ninputs(const qd_sweep *w);
+QD_API size_t qd_sweep_ncols(const qd_sweep *w);          /* inputs then measures (numbers only) */
+QD_API const char *qd_sweep_col(const qd_sweep *w, size_t j);
+
+/* Run i (0 <= i < nruns) alone: thread-safe on a const w (ctx is the
+ * caller's own).  row receives ncols numbers (NaN where a measure has no
+ * value); a failed run returns its status with the reason in ctx and
+ * fills the inputs part of row only (the rest NaN). */
+QD_API qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t i,
+                                  double *row);
+
+/* Runs [first, first+count) on nthreads threads (0: all cores), dynamic
+ * scheduling; rows[k*ncols..] for run first+k; status[k] per run and the
+ * reason text in reasons + k*QD_SWEEP_REASON (caller-allocated
+ * count*QD_SWEEP_REASON chars, may be NULL); progress(data, done, count)
+ * is called from the calling thread only (may be NULL).  A failed run
+ * never stops the others; the call itself fails only when it cannot start
+ * (bad range, no memory, no threads). */
+#define QD_SWEEP_REASON 160
+QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
+                              size_t count, unsigned nthreads, double *rows, qd_status *status,
+                              char *reasons, void (*progress)(void *data, size_t done, size_t total),
+                              void *data);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
