@@ -56,6 +56,8 @@ static const cli_cmd commands[] = {
      cli_cmd_path, true},
     {"animate", "FILE -o FILE.html [OPTIONS]", "the motion as a self-contained HTML page",
      cli_cmd_animate, true},
+    {"sweep", "FILE --grid ... --measure M", "many runs on threads: grids, random, lists",
+     cli_cmd_sweep, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

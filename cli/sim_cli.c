@@ -668,3 +668,11 @@ int cli_sim_fail(cli_sim *c, qd_status st) {
     /* options were checked before the run: what fails now is the system's */
     return QD_EXIT_FAIL;
 }
+
+/* ---- qdot sweep (issue 21) -------------------------------------------------- */
+
+/* One more output column, read as --output reads it and named by its text:
+ * what a sweep's max:EXPR, min:EXPR and escape:EXPR>VALUE measure. */
+int cli_sim_output(cli_sim *c, const char *expr) {
+    return add_outputs(c, expr);
+}

@@ -72,6 +72,10 @@ int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len
  * K) as the input's expression; an exit status (sim_lqr_cli.c). */
 int cli_sim_input_lqr(cli_sim *c, const char *name);
 
+/* qdot sweep: one more output column EXPR (read as --output reads it,
+ * named by its text), before qd_sim_compile; an exit status. */
+int cli_sim_output(cli_sim *c, const char *expr);
+
 /* Print a failed run's message; exit status 1. */
 int cli_sim_fail(cli_sim *c, qd_status st);
 

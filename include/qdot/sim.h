@@ -205,7 +205,9 @@ typedef struct qd_sim_opts {
     const double *u0;
     /* Values of the model's parameters in model order; NULL: the model's
      * own.  Every method and the native right-hand side use them, so one
-     * compiled qd_sim serves runs with different parameters (qdot/sweep.h). */
+     * compiled qd_sim serves runs with different parameters (qdot/sweep.h);
+     * the restitutions of `impact`s keep the values the qd_sim was made
+     * with (they are numbers fixed at qd_sim_new). */
     const double *par;
 } qd_sim_opts;
 

@@ -645,6 +645,14 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     return st;
 }
 
+/* opts.par: the run's parameter values where every program (and the
+ * native right-hand side) reads them, in the run's own inputs, so that
+ * concurrent runs of one compiled system may differ in their parameters. */
+static void use_par(qd_sim *w, const double *par) {
+    for (size_t i = 0; i < w->np; i++)
+        w->in[2 * w->n + 1 + i] = par[i];
+}
+
 /* A run on a copy of the compiled system s with its own workspace;
  * con_err (may be NULL) receives the per-constraint residuals. */
 static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
@@ -654,6 +662,8 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
     *stats = (qd_sim_stats){0};
     qd_sim w = *s;
     qd_status st = qd__sim_ws_alloc(&w, ctx);
+    if (st == QD_OK && o->par)
+        use_par(&w, o->par);
     if (st == QD_OK)
         st = qd__sim_uin_check(&w, o->t0, o->t_end);
     else

@@ -1,0 +1,467 @@
+/*
+ * cli/cmd_sweep.c - `qdot sweep FILE --grid "NAME=A:B:N, ..." --measure
+ * M[,M...]`: many runs of one compiled model (qdot/sweep.h), on threads,
+ * one row per run (the inputs, the measures, the run's status) in run
+ * order, as CSV or JSON.  The simulate options (--t-end, --method, --rtol,
+ * --set, --initial, --native, ...) are parsed by sim_cli.c and apply to
+ * every run; the sweep's inputs replace the initial values and parameters
+ * they name.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "cli.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "json.h"
+#include "model_cli.h"
+#include "progress.h"
+#include "sim_cli.h"
+
+static const char usage_text[] =
+    "usage: qdot sweep FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N "
+    "[--seed S] | --list FILE.csv) --t-end T --measure \"M, ...\" [--event \"EXPR = EXPR[, "
+    "EXPR > EXPR]\"] [--section \"EXPR = EXPR[, EXPR > EXPR]\"] [--threads N] "
+    "[--format csv|json] [-o FILE] [simulate options: --method, --rtol, --dt, --set, "
+    "--initial, --native, ...]";
+
+typedef struct sweep_args {
+    cli_sim_args sim;
+    const char *grid, *random, *list, *measure, *section, *format;
+    double n, seed, threads;
+    bool has_n;
+} sweep_args;
+
+/* ---- options ---------------------------------------------------------------- */
+
+static int whole(const char *opt, const char *v, double *x) {
+    char *end;
+    *x = strtod(v, &end);
+    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > 0x1p53) {
+        cli_diag_error("%s takes a whole number >= 0, not '%s'", opt, v);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int own_option(int argc, char **argv, int *i, sweep_args *a) {
+    const char *v;
+    if ((v = cli_value(argc, argv, i, "--grid")))
+        return cli_once("--grid", &a->grid, v);
+    if ((v = cli_value(argc, argv, i, "--random")))
+        return cli_once("--random", &a->random, v);
+    if ((v = cli_value(argc, argv, i, "--list")))
+        return cli_once("--list", &a->list, v);
+    if ((v = cli_value(argc, argv, i, "--measure")))
+        return cli_once("--measure", &a->measure, v);
+    if ((v = cli_value(argc, argv, i, "--section")))
+        return cli_once("--section", &a->section, v);
+    if ((v = cli_value(argc, argv, i, "--format")))
+        return cli_once("--format", &a->format, v);
+    if ((v = cli_value(argc, argv, i, "-o")))
+        return cli_once("-o", &a->sim.out, v);
+    if ((v = cli_value(argc, argv, i, "--n")))
+        return (a->has_n = true), whole("--n", v, &a->n);
+    if ((v = cli_value(argc, argv, i, "--seed")))
+        return whole("--seed", v, &a->seed);
+    if ((v = cli_value(argc, argv, i, "--threads")))
+        return whole("--threads", v, &a->threads);
+    if ((v = cli_value(argc, argv, i, "--event"))) {
+        if (a->sim.nevents == QD_SIM_MAX_LIST - 1) {
+            cli_diag_error("at most %d events", QD_SIM_MAX_LIST - 1);
+            return QD_EXIT_USAGE;
+        }
+        a->sim.events[a->sim.nevents++] = v;
+        return QD_EXIT_OK;
+    }
+    cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
+    return QD_EXIT_USAGE;
+}
+
+static int parse_option(int argc, char **argv, int *i, void *data) {
+    sweep_args *a = data;
+    int rc = cli_sim_option(argc, argv, i, &a->sim);
+    if (rc == 1)
+        return QD_EXIT_OK;
+    if (rc > 100)
+        return rc - 100;
+    return own_option(argc, argv, i, a);
+}
+
+static int check_args(const sweep_args *a) {
+    int how = (a->grid != NULL) + (a->random != NULL) + (a->list != NULL);
+    const char *missing = how != 1               ? "one of --grid, --random, --list"
+                          : !a->sim.has_t_end    ? "--t-end"
+                          : !a->measure          ? "--measure"
+                          : a->random && !a->has_n ? "--n (the number of random runs)"
+                                                   : NULL;
+    if (missing) {
+        cli_diag_error("%s %s\n%s", how > 1 ? "give only" : "missing:", missing, usage_text);
+        return QD_EXIT_USAGE;
+    }
+    if (a->has_n && !a->random) {
+        cli_diag_error("--n is for --random");
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+/* ---- measures that read an expression -------------------------------------- */
+
+/* The EXPR of "max:EXPR", "min:EXPR" or "escape:EXPR>VALUE" at
+ * text[a, b), as [*ea, *eb); false for the other measures. */
+static bool measure_expr(const char *text, size_t a, size_t b, size_t *ea, size_t *eb) {
+    const char *colon = memchr(text + a, ':', b - a);
+    if (!colon)
+        return false;
+    size_t h = a, c = (size_t)(colon - text);
+    while (h < c && isspace((unsigned char)text[h]))
+        h++;
+    bool escape = !strncmp(text + h, "escape", 6);
+    if (strncmp(text + h, "max", 3) && strncmp(text + h, "min", 3) && !escape)
+        return false;
+    *ea = c + 1;
+    *eb = b;
+    if (escape)
+        while (*eb > *ea && text[*eb - 1] != '>' && text[*eb - 1] != '<')
+            (*eb)--;
+    if (escape && *eb > *ea)
+        (*eb)--;
+    while (*ea < *eb && isspace((unsigned char)text[*ea]))
+        (*ea)++;
+    while (*eb > *ea && isspace((unsigned char)text[*eb - 1]))
+        (*eb)--;
+    return *eb > *ea;
+}
+
+static bool is_column(const cli_sim *c, const char *name) {
+    size_t nc = qd_sim_columns(c->s, c->opts.method, NULL, 0);
+    const char **names = malloc((nc + 1) * sizeof *names);
+    bool found = false;
+    if (names) {
+        qd_sim_columns(c->s, c->opts.method, names, nc);
+        for (size_t j = 0; j < nc && !found; j++)
+            found = !strcmp(names[j], name);
+    }
+    free(names);
+    return found;
+}
+
+/* Each EXPR that is not a column of the run yet becomes an output column
+ * named by its text, which is what the library's measure reads. */
+static int measure_outputs(cli_sim *c, const char *spec) {
+    for (size_t p = 0; spec[p];) {
+        size_t e = cli_item_end(spec, p), a, b;
+        if (measure_expr(spec, p, e, &a, &b)) {
+            char *x = malloc(b - a + 1);
+            if (!x)
+                return QD_EXIT_FAIL;
+            memcpy(x, spec + a, b - a);
+            x[b - a] = '\0';
+            int rc = is_column(c, x) ? QD_EXIT_OK : cli_sim_output(c, x);
+            free(x);
+            if (rc != QD_EXIT_OK)
+                return rc;
+        }
+        p = spec[e] ? e + 1 : e;
+    }
+    return QD_EXIT_OK;
+}
+
+/* ---- --list FILE.csv ------------------------------------------------------ */
+
+typedef struct list_csv {
+    char **names;
+    size_t nnames, nrows;
+    double *values;
+} list_csv;
+
+static void list_free(list_csv *l) {
+    for (size_t k = 0; k < l->nnames; k++)
+        free(l->names[k]);
+    free(l->names);
+    free(l->values);
+}
+
+static int list_header(list_csv *l, char *line) {
+    for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n")) {
+        while (isspace((unsigned char)*tok))
+            tok++;
+        size_t len = strlen(tok);
+        while (len && isspace((unsigned char)tok[len - 1]))
+            tok[--len] = '\0';
+        char **grown = realloc(l->names, (l->nnames + 1) * sizeof *grown);
+        if (!grown || !(grown[l->nnames] = strdup(tok)))
+            return (l->names = grown ? grown : l->names), QD_EXIT_FAIL;
+        l->names = grown;
+        l->nnames++;
+    }
+    return l->nnames ? QD_EXIT_OK : QD_EXIT_USAGE;
+}
+
+static int list_row(list_csv *l, char *line, const char *path, size_t lineno) {
+    double *grown = realloc(l->values, (l->nrows + 1) * l->nnames * sizeof *grown);
+    if (!grown)
+        return QD_EXIT_FAIL;
+    l->values = grown;
+    char *p = line;
+    for (size_t k = 0; k < l->nnames; k++) {
+        char *end;
+        double x = strtod(p, &end);
+        while (isspace((unsigned char)*end))
+            end++;
+        if (end == p || (*end != (k + 1 < l->nnames ? ',' : '\0'))) {
+            cli_diag_error("%s:%zu: expected %zu numbers separated by commas", path, lineno,
+                           l->nnames);
+            return QD_EXIT_USAGE;
+        }
+        grown[l->nrows * l->nnames + k] = x;
+        p = end + 1;
+    }
+    l->nrows++;
+    return QD_EXIT_OK;
+}
+
+static int list_read(const char *path, list_csv *l) {
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        cli_diag_error("cannot read '%s'", path);
+        return QD_EXIT_USAGE;
+    }
+    char line[4096];
+    size_t lineno = 0;
+    int rc = QD_EXIT_OK;
+    while (rc == QD_EXIT_OK && fgets(line, sizeof line, f)) {
+        lineno++;
+        line[strcspn(line, "\r\n")] = '\0';
+        if (!line[strspn(line, " \t")])
+            continue;
+        rc = l->nnames ? list_row(l, line, path, lineno) : list_header(l, line);
+    }
+    fclose(f);
+    if (rc == QD_EXIT_OK && !l->nrows) {
+        cli_diag_error("%s: a header of names and at least one row of numbers", path);
+        rc = QD_EXIT_USAGE;
+    }
+    return rc;
+}
+
+/* ---- the runs ----------------------------------------------------------- */
+
+/* Where a bad spec is shown: the option's text with a caret. */
+static int spec_error(const qd_ctx *ctx, const char *opt, const char *spec) {
+    cli_diag_show(opt, spec, qd_ctx_diag(ctx));
+    return qd_ctx_status(ctx) == QD_ERR_NOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
+}
+
+static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
+    if (a->grid && qd_sweep_grid(w, a->grid) != QD_OK)
+        return spec_error(ctx, "--grid", a->grid);
+    if (a->random && qd_sweep_random(w, a->random, (size_t)a->n, (uint64_t)a->seed) != QD_OK)
+        return spec_error(ctx, "--random", a->random);
+    if (!a->list)
+        return QD_EXIT_OK;
+    list_csv l = {0};
+    int rc = list_read(a->list, &l);
+    if (rc == QD_EXIT_OK &&
+        qd_sweep_list(w, l.nnames, (const char *const *)l.names, l.nrows, l.values) != QD_OK)
+        rc = spec_error(ctx, a->list, NULL);
+    list_free(&l);
+    return rc;
+}
+
+typedef struct sweep_result {
+    size_t nruns, ncols, nin;
+    const char **cols;
+    double *rows;
+    qd_status *status;
+    char *reasons;
+    double wall;
+} sweep_result;
+
+static void progress(void *data, size_t done, size_t total) {
+    cli_progress_update(data, (double)done / (double)total, (double)done);
+}
+
+/* ---- output: one writer per --format (hdf5 joins the table) ---------------- */
+
+static void csv_field(FILE *f, const char *s) {
+    if (!strpbrk(s, ",\"\n")) {
+        fputs(s, f);
+        return;
+    }
+    fputc('"', f);
+    for (; *s; s++)
+        fputs(*s == '"' ? "\"\"" : (char[2]){*s, 0}, f);
+    fputc('"', f);
+}
+
+static const char *status_text(const sweep_result *r, size_t k) {
+    return r->status[k] == QD_OK ? "ok" : r->reasons + k * QD_SWEEP_REASON;
+}
+
+static int write_csv(FILE *f, const sweep_result *r) {
+    char num[QD_DOUBLE_MAX];
+    for (size_t j = 0; j < r->ncols; j++) {
+        csv_field(f, r->cols[j]);
+        fputc(',', f);
+    }
+    fputs("status\n", f);
+    for (size_t k = 0; k < r->nruns; k++) {
+        for (size_t j = 0; j < r->ncols; j++) {
+            qd_double_format(num, r->rows[k * r->ncols + j]);
+            fputs(num, f);
+            fputc(',', f);
+        }
+        csv_field(f, status_text(r, k));
+        fputc('\n', f);
+    }
+    return QD_EXIT_OK;
+}
+
+static int write_json(FILE *f, const sweep_result *r) {
+    qd_buf b = QD_BUF_INIT;
+    cli_json j;
+    cli_json_init(&j, &b);
+    cli_json_begin_object(&j);
+    cli_json_key(&j, "columns");
+    cli_json_begin_array(&j);
+    for (size_t c = 0; c < r->ncols; c++)
+        cli_json_string(&j, r->cols[c]);
+    cli_json_end_array(&j);
+    cli_json_key(&j, "rows"); /* NaN (no value) as null */
+    cli_json_begin_array(&j);
+    for (size_t k = 0; k < r->nruns; k++) {
+        cli_json_begin_array(&j);
+        for (size_t c = 0; c < r->ncols; c++) {
+            double x = r->rows[k * r->ncols + c];
+            if (isfinite(x))
+                cli_json_number(&j, x);
+            else
+                cli_json_null(&j);
+        }
+        cli_json_end_array(&j);
+    }
+    cli_json_end_array(&j);
+    cli_json_key(&j, "status");
+    cli_json_begin_array(&j);
+    for (size_t k = 0; k < r->nruns; k++)
+        cli_json_string(&j, status_text(r, k));
+    cli_json_end_array(&j);
+    cli_json_end_object(&j);
+    int rc = b.failed ? QD_EXIT_FAIL : QD_EXIT_OK;
+    if (rc == QD_EXIT_OK)
+        fprintf(f, "%s\n", qd_buf_str(&b));
+    qd_buf_free(&b);
+    return rc;
+}
+
+static const struct {
+    const char *name;
+    int (*write)(FILE *f, const sweep_result *r);
+} formats[] = {{"csv", write_csv}, {"json", write_json}};
+
+static int find_format(const char *name, size_t *k) {
+    for (*k = 0; *k < sizeof formats / sizeof *formats; (*k)++)
+        if (!strcmp(formats[*k].name, name))
+            return QD_EXIT_OK;
+    cli_diag_error("--format takes csv or json, not '%s'", name);
+    return QD_EXIT_USAGE;
+}
+
+static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) {
+    FILE *f = a->sim.out ? fopen(a->sim.out, "w") : stdout;
+    if (!f) {
+        cli_diag_error("cannot write '%s'", a->sim.out);
+        return QD_EXIT_USAGE;
+    }
+    int rc = formats[fmt].write(f, r);
+    if (f != stdout && fclose(f) != 0)
+        rc = QD_EXIT_FAIL;
+    return rc;
+}
+
+static void summary(const sweep_result *r, unsigned threads) {
+    size_t failed = 0;
+    for (size_t k = 0; k < r->nruns; k++)
+        failed += r->status[k] != QD_OK;
+    fprintf(stderr, "qdot: sweep: %zu run%s on %u thread%s, %zu failed, %.3g s\n", r->nruns,
+            r->nruns == 1 ? "" : "s", threads, threads == 1 ? "" : "s", failed, r->wall);
+}
+
+static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
+    sweep_result r = {.nruns = qd_sweep_nruns(w), .ncols = qd_sweep_ncols(w)};
+    r.cols = malloc((r.ncols + 1) * sizeof *r.cols);
+    r.rows = malloc((r.nruns * r.ncols + 1) * sizeof *r.rows);
+    r.status = malloc((r.nruns + 1) * sizeof *r.status);
+    r.reasons = malloc((r.nruns + 1) * QD_SWEEP_REASON);
+    int rc = r.cols && r.rows && r.status && r.reasons ? QD_EXIT_OK : QD_EXIT_FAIL;
+    if (rc != QD_EXIT_OK)
+        cli_diag_error("out of memory for %zu runs", r.nruns);
+    for (size_t j = 0; rc == QD_EXIT_OK && j < r.ncols; j++)
+        r.cols[j] = qd_sweep_col(w, j);
+    unsigned threads = (unsigned)a->threads;
+    if (rc == QD_EXIT_OK) {
+        cli_progress bar;
+        cli_progress_start(&bar, "sweep");
+        qd_status st = qd_sweep_run(c->ctx, w, &c->opts, 0, r.nruns, threads, r.rows, r.status,
+                                    r.reasons, progress, &bar);
+        r.wall = cli_progress_end(&bar);
+        rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+    }
+    if (rc == QD_EXIT_OK)
+        rc = write_result(a, fmt, &r);
+    if (rc == QD_EXIT_OK) {
+        long cores = sysconf(_SC_NPROCESSORS_ONLN);
+        summary(&r, threads ? threads : cores > 0 ? (unsigned)cores : 1);
+    }
+    free(r.cols);
+    free(r.rows);
+    free(r.status);
+    free(r.reasons);
+    return rc;
+}
+
+static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
+    int rc = measure_outputs(c, a->measure);
+    if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
+    qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_new(c->ctx, c->s, c->mf.model) : NULL;
+    if (rc == QD_EXIT_OK && !w)
+        rc = cli_diag_ctx(c->ctx);
+    if (rc == QD_EXIT_OK)
+        rc = set_runs(w, a, c->ctx);
+    if (rc == QD_EXIT_OK && qd_sweep_measures(w, a->measure) != QD_OK)
+        rc = spec_error(c->ctx, "--measure", a->measure);
+    if (rc == QD_EXIT_OK && a->section &&
+        qd_sweep_set_section(w, a->sim.nevents - 1) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
+    if (rc == QD_EXIT_OK)
+        rc = run_all(c, w, a, fmt);
+    qd_sweep_free(w);
+    return rc;
+}
+
+int cli_cmd_sweep(int argc, char **argv) {
+    sweep_args a = {.seed = 1};
+    int rc = cli_file_args(argc, argv, "sweep", usage_text, &a.sim.file, parse_option, &a);
+    size_t fmt = 0;
+    if (rc == QD_EXIT_OK)
+        rc = check_args(&a);
+    if (rc == QD_EXIT_OK && a.format)
+        rc = find_format(a.format, &fmt);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    /* the section is the last event: poincare-count counts its crossings */
+    if (a.section)
+        a.sim.events[a.sim.nevents++] = a.section;
+    cli_sim c = {0};
+    rc = cli_sim_setup(&c, &a.sim);
+    if (rc == QD_EXIT_OK)
+        rc = sweep(&c, &a, fmt);
+    cli_sim_free(&c);
+    return rc;
+}

@@ -1,0 +1,170 @@
+/*
+ * src/sweep/pool.c - runs on a pool of threads.  Dynamic scheduling: each
+ * worker takes the next run index from an atomic counter, so a slow run
+ * (a chaotic orbit, a run that fails late) holds up one worker, not a
+ * block of runs.  Workers share only the counter and the done count; each
+ * has its own context for messages, and qd_sim_run_with gives each run its
+ * own workspace.  The calling thread only waits and reports progress.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "sweep_int.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+typedef struct sw_pool {
+    const qd_sweep *w;
+    const qd_sim_opts *base;
+    size_t first, count;
+    double *rows;
+    qd_status *status;
+    char *reasons;
+    atomic_size_t next, done;
+    pthread_mutex_t lock;  /* with wake: the caller sleeps between runs done */
+    pthread_cond_t wake;
+    atomic_uint exited;    /* workers that have returned */
+} sw_pool;
+
+static void record(sw_pool *p, qd_ctx *ctx, size_t k, qd_status st) {
+    if (p->status)
+        p->status[k] = st;
+    if (p->reasons) {
+        char *r = p->reasons + k * QD_SWEEP_REASON;
+        snprintf(r, QD_SWEEP_REASON, "%s", st == QD_OK ? "" : qd_ctx_message(ctx));
+        if (st != QD_OK && !r[0])
+            snprintf(r, QD_SWEEP_REASON, "%s", qd_status_str(st));
+    }
+    qd_ctx_clear_error(ctx);
+}
+
+static void wake(sw_pool *p) {
+    pthread_mutex_lock(&p->lock);
+    pthread_cond_signal(&p->wake);
+    pthread_mutex_unlock(&p->lock);
+}
+
+static void runs(sw_pool *p, qd_ctx *ctx) {
+    size_t ncols = qd_sweep_ncols(p->w);
+    for (;;) {
+        size_t k = atomic_fetch_add(&p->next, 1);
+        if (k >= p->count)
+            break;
+        qd_status st = qd_sweep_run_one(ctx, p->w, p->base, p->first + k, p->rows + k * ncols);
+        record(p, ctx, k, st);
+        atomic_fetch_add(&p->done, 1);
+        wake(p);
+    }
+}
+
+static void *worker(void *arg) {
+    sw_pool *p = arg;
+    qd_ctx *ctx = qd_ctx_new();
+    if (ctx)
+        runs(p, ctx);
+    qd_ctx_free(ctx);
+    atomic_fetch_add(&p->exited, 1);
+    wake(p);
+    return NULL;
+}
+
+static unsigned cores(void) {
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n > 0 ? (unsigned)n : 1u;
+}
+
+/* Wait for the workers, calling progress when runs are done (at most ten
+ * times a second) and at the end. */
+static void watch(sw_pool *p, unsigned started, void (*progress)(void *, size_t, size_t),
+                  void *data) {
+    size_t shown = (size_t)-1;
+    pthread_mutex_lock(&p->lock);
+    for (;;) {
+        size_t done = atomic_load(&p->done);
+        if (progress && done != shown) {
+            pthread_mutex_unlock(&p->lock);
+            progress(data, done, p->count);
+            shown = done;
+            pthread_mutex_lock(&p->lock);
+        }
+        if (done >= p->count || atomic_load(&p->exited) == started)
+            break;
+        struct timespec until;
+        clock_gettime(CLOCK_REALTIME, &until);
+        until.tv_nsec += 100000000L;
+        if (until.tv_nsec >= 1000000000L) {
+            until.tv_sec++;
+            until.tv_nsec -= 1000000000L;
+        }
+        if (atomic_load(&p->done) == done && atomic_load(&p->exited) < started)
+            pthread_cond_timedwait(&p->wake, &p->lock, &until);
+    }
+    pthread_mutex_unlock(&p->lock);
+}
+
+/* Every worker could not start (no memory for its context): the runs
+ * nobody took are failures. */
+static void untaken(sw_pool *p) {
+    for (size_t k = atomic_load(&p->next); k < p->count; k++) {
+        if (p->status)
+            p->status[k] = QD_ERR_NOMEM;
+        if (p->reasons)
+            snprintf(p->reasons + k * QD_SWEEP_REASON, QD_SWEEP_REASON, "out of memory");
+    }
+}
+
+static qd_status start(qd_ctx *ctx, sw_pool *p, unsigned nthreads,
+                       void (*progress)(void *, size_t, size_t), void *data) {
+    pthread_t *tid = calloc(nthreads, sizeof *tid);
+    if (!tid) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory starting the sweep's threads");
+        return QD_ERR_NOMEM;
+    }
+    unsigned started = 0;
+    for (; started < nthreads; started++)
+        if (pthread_create(&tid[started], NULL, worker, p) != 0)
+            break;
+    if (started == 0) {
+        free(tid);
+        qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "could not start a thread for the sweep");
+        return QD_ERR_UNSUPPORTED;
+    }
+    watch(p, started, progress, data);
+    for (unsigned k = 0; k < started; k++)
+        pthread_join(tid[k], NULL);
+    free(tid);
+    return QD_OK;
+}
+
+qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
+                       size_t count, unsigned nthreads, double *rows, qd_status *status,
+                       char *reasons, void (*progress)(void *data, size_t done, size_t total),
+                       void *data) {
+    if (first > w->nruns || count > w->nruns - first) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "runs %zu to %zu of a sweep of %zu", first, first + count,
+                     w->nruns);
+        return QD_ERR_ARG;
+    }
+    if (count == 0)
+        return QD_OK;
+    nthreads = nthreads ? nthreads : cores();
+    if (nthreads > count)
+        nthreads = (unsigned)count;
+    sw_pool p = {.w = w, .base = base, .first = first, .count = count, .rows = rows,
+                 .status = status, .reasons = reasons};
+    atomic_init(&p.next, 0);
+    atomic_init(&p.done, 0);
+    atomic_init(&p.exited, 0);
+    pthread_mutex_init(&p.lock, NULL);
+    pthread_cond_init(&p.wake, NULL);
+    qd_status st = start(ctx, &p, nthreads, progress, data);
+    pthread_cond_destroy(&p.wake);
+    pthread_mutex_destroy(&p.lock);
+    if (st == QD_OK && atomic_load(&p.done) < count)
+        untaken(&p);
+    return st;
+}
