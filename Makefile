@@ -44,6 +44,9 @@ test-tsan:
 	$(CMAKE) -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TSAN=ON -DQDOT_TESTS=ON
 	$(CMAKE) --build build-tsan -j $(JOBS) --target sim_test_threads
 	TSAN_OPTIONS=halt_on_error=1:exitcode=66 ./build-tsan/tests/sim_test_threads
+	# qdot sweep's worker pool (issue 21): the runs of one sweep on 2 threads
+	$(CMAKE) --build build-tsan -j $(JOBS) --target sweep_test_sweep
+	TSAN_OPTIONS=halt_on_error=1:exitcode=66 ./build-tsan/tests/sweep_test_sweep
 
 bench:
 	./scripts/deps.sh bench

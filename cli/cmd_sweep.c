@@ -24,15 +24,19 @@
 static const char usage_text[] =
     "usage: qdot sweep FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N "
     "[--seed S] | --list FILE.csv) --t-end T --measure \"M, ...\" [--event \"EXPR = EXPR[, "
-    "EXPR > EXPR]\"] [--section \"EXPR = EXPR[, EXPR > EXPR]\"] [--threads N] "
-    "[--format csv|json] [-o FILE] [simulate options: --method, --rtol, --dt, --set, "
+    "EXPR > EXPR]\" | --stop-at ...] [--section \"EXPR = EXPR[, EXPR > EXPR]\"] [--threads N] "
+    "[--renorm DT] [--transient T0] [--format csv|json] [-o FILE] [simulate options: --method, --rtol, --dt, --set, "
     "--initial, --native, ...]";
 
 typedef struct sweep_args {
     cli_sim_args sim;
     const char *grid, *random, *list, *measure, *section, *format;
     double n, seed, threads;
+    double renorm, transient; /* the lyapunov measures */
     bool has_n;
+    size_t nuser;          /* --event and --stop-at: the first is the measure event's */
+    char *escapes[QD_SIM_MAX_LIST]; /* "EXPR = VALUE" of each escape:EXPR>VALUE */
+    size_t nescapes;
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
@@ -42,6 +46,16 @@ static int whole(const char *opt, const char *v, double *x) {
     *x = strtod(v, &end);
     if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > 0x1p53) {
         cli_diag_error("%s takes a whole number >= 0, not '%s'", opt, v);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
+static int positive(const char *opt, const char *v, double *x) {
+    char *end;
+    *x = strtod(v, &end);
+    if (end == v || *end || !(*x >= 0) || !isfinite(*x)) {
+        cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -69,11 +83,18 @@ static int own_option(int argc, char **argv, int *i, sweep_args *a) {
         return whole("--seed", v, &a->seed);
     if ((v = cli_value(argc, argv, i, "--threads")))
         return whole("--threads", v, &a->threads);
-    if ((v = cli_value(argc, argv, i, "--event"))) {
+    if ((v = cli_value(argc, argv, i, "--renorm")))
+        return positive("--renorm", v, &a->renorm);
+    if ((v = cli_value(argc, argv, i, "--transient")))
+        return positive("--transient", v, &a->transient);
+    bool stop = !strncmp(argv[*i], "--stop-at", 9);
+    if ((v = cli_value(argc, argv, i, "--event")) || (v = cli_value(argc, argv, i, "--stop-at"))) {
+        /* one place is kept for --section */
         if (a->sim.nevents == QD_SIM_MAX_LIST - 1) {
             cli_diag_error("at most %d events", QD_SIM_MAX_LIST - 1);
             return QD_EXIT_USAGE;
         }
+        a->sim.event_stop[a->sim.nevents] = stop;
         a->sim.events[a->sim.nevents++] = v;
         return QD_EXIT_OK;
     }
@@ -165,6 +186,64 @@ static int measure_outputs(cli_sim *c, const char *spec) {
             free(x);
             if (rc != QD_EXIT_OK)
                 return rc;
+        }
+        p = spec[e] ? e + 1 : e;
+    }
+    return QD_EXIT_OK;
+}
+
+/* After the user's events: the section (poincare-count counts its
+ * crossings), then an event EXPR = VALUE per escape:EXPR>VALUE, whose row
+ * puts the library's interpolated escape time on the crossing itself. */
+static bool has_measure(const char *spec, const char *name) {
+    size_t len = strlen(name);
+    for (size_t p = 0; spec[p];) {
+        size_t e = cli_item_end(spec, p), a = p, b = e;
+        while (a < b && isspace((unsigned char)spec[a]))
+            a++;
+        while (b > a && isspace((unsigned char)spec[b - 1]))
+            b--;
+        if (b - a == len && !strncmp(spec + a, name, len))
+            return true;
+        p = spec[e] ? e + 1 : e;
+    }
+    return false;
+}
+
+static int more_events(sweep_args *a) {
+    a->nuser = a->sim.nevents;
+    if (!a->nuser && has_measure(a->measure, "event")) {
+        cli_diag_error("the measure event needs --event or --stop-at (its first is the one)");
+        return QD_EXIT_USAGE;
+    }
+    if (!a->section && has_measure(a->measure, "poincare-count")) {
+        cli_diag_error("the measure poincare-count needs --section");
+        return QD_EXIT_USAGE;
+    }
+    if (a->section)
+        a->sim.events[a->sim.nevents++] = a->section;
+    const char *spec = a->measure;
+    for (size_t p = 0; spec[p];) {
+        size_t e = cli_item_end(spec, p), x0, x1, h = p;
+        while (isspace((unsigned char)spec[h]))
+            h++;
+        if (!strncmp(spec + h, "escape", 6) && measure_expr(spec, p, e, &x0, &x1)) {
+            if (a->sim.nevents == QD_SIM_MAX_LIST) {
+                cli_diag_error("at most %d events with the escapes", QD_SIM_MAX_LIST);
+                return QD_EXIT_USAGE;
+            }
+            /* EXPR, then the value after its '>' or '<' */
+            size_t v = x1;
+            while (v < e && spec[v] != '>' && spec[v] != '<')
+                v++;
+            int len = (int)(x1 - x0), vlen = (int)(e - v - (v < e));
+            char *ev = malloc((size_t)len + (size_t)vlen + 8);
+            if (!ev)
+                return QD_EXIT_FAIL;
+            snprintf(ev, (size_t)len + (size_t)vlen + 8, "%.*s = %.*s", len, spec + x0, vlen,
+                     spec + v + 1);
+            a->escapes[a->nescapes++] = ev;
+            a->sim.events[a->sim.nevents++] = ev;
         }
         p = spec[e] ? e + 1 : e;
     }
@@ -425,6 +504,23 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     return rc;
 }
 
+/* The measures lyapunov and lyapunov-spectrum: the variational equations
+ * of the same model (qdot/lyapunov.h), or NULL when none is asked for. */
+static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly) {
+    if (!has_measure(a->measure, "lyapunov") && !has_measure(a->measure, "lyapunov-spectrum"))
+        return QD_EXIT_OK;
+    if (!c->e) {
+        cli_diag_error("the lyapunov measures take a model in the multiplier form (not given "
+                       "by H, not in speeds: --no-speeds)");
+        return QD_EXIT_USAGE;
+    }
+    *ly = qd_lyap_new(c->ctx, c->mf.model, c->e);
+    qd_lyap_opts lo = {.renorm = a->renorm, .transient = a->transient};
+    if (!*ly || qd_sweep_set_lyap(w, *ly, &lo) != QD_OK)
+        return cli_diag_ctx(c->ctx);
+    return QD_EXIT_OK;
+}
+
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
     int rc = measure_outputs(c, a->measure);
     if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
@@ -436,12 +532,15 @@ static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
         rc = set_runs(w, a, c->ctx);
     if (rc == QD_EXIT_OK && qd_sweep_measures(w, a->measure) != QD_OK)
         rc = spec_error(c->ctx, "--measure", a->measure);
-    if (rc == QD_EXIT_OK && a->section &&
-        qd_sweep_set_section(w, a->sim.nevents - 1) != QD_OK)
+    if (rc == QD_EXIT_OK && a->section && qd_sweep_set_section(w, a->nuser) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
+    qd_lyap *ly = NULL;
+    if (rc == QD_EXIT_OK)
+        rc = lyap_setup(c, w, a, &ly);
     if (rc == QD_EXIT_OK)
         rc = run_all(c, w, a, fmt);
     qd_sweep_free(w);
+    qd_lyap_free(ly);
     return rc;
 }
 
@@ -455,13 +554,14 @@ int cli_cmd_sweep(int argc, char **argv) {
         rc = find_format(a.format, &fmt);
     if (rc != QD_EXIT_OK)
         return rc;
-    /* the section is the last event: poincare-count counts its crossings */
-    if (a.section)
-        a.sim.events[a.sim.nevents++] = a.section;
+    rc = more_events(&a);
     cli_sim c = {0};
-    rc = cli_sim_setup(&c, &a.sim);
+    if (rc == QD_EXIT_OK)
+        rc = cli_sim_setup(&c, &a.sim);
     if (rc == QD_EXIT_OK)
         rc = sweep(&c, &a, fmt);
     cli_sim_free(&c);
+    for (size_t k = 0; k < a.nescapes; k++)
+        free(a.escapes[k]);
     return rc;
 }

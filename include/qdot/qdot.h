@@ -29,6 +29,7 @@
 #include "scatter.h"
 #include "plot.h"
 #include "sweep.h"
+#include "lyapunov.h"
 
 #define QDOT_VERSION "0.1.0"
 

@@ -29,6 +29,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "lyapunov.h"
 #include "model.h"
 #include "sim.h"
 
@@ -61,6 +62,18 @@ QD_API qd_status qd_sweep_measures(qd_sweep *w, const char *spec);
  * s does not have. */
 QD_API qd_status qd_sweep_set_event(qd_sweep *w, size_t k);
 QD_API qd_status qd_sweep_set_section(qd_sweep *w, size_t k);
+
+/* The measures `lyapunov` (columns lyapunov, lyapunov_error: the largest
+ * exponent and its error estimate) and `lyapunov-spectrum` (lyapunov_1 ..
+ * lyapunov_2n, descending) integrate the variational equations of l
+ * (qdot/lyapunov.h; built from the same model and equations as s) from
+ * each run's initial state and parameters, with the run's t0, t_end, rtol
+ * and atol, dopri5 or dop853 (another method of the run: dop853).  lo
+ * gives renorm and transient (nexp is set per measure; lo NULL: the
+ * defaults).  l must outlive the sweep; copied lo.  QD_ERR_ARG when l's
+ * degrees of freedom are not s's.  Without l these measures are refused
+ * by qd_sweep_run. */
+QD_API qd_status qd_sweep_set_lyap(qd_sweep *w, const qd_lyap *l, const qd_lyap_opts *lo);
 
 QD_API size_t qd_sweep_nruns(const qd_sweep *w);
 QD_API size_t qd_sweep_ninputs(const qd_sweep *w);

@@ -97,6 +97,11 @@ struct qd_sim {
     size_t evals;
     double *con_err;  /* m: the worst residual of each constraint in this run */
     double tnow;  /* for messages */
+    /* A run's own right-hand side in place of the form's, for a caller that
+     * integrates more than the state with these methods (src/lyap: the
+     * state and its tangent vectors); NULL: the form's. */
+    qd_status (*ext_rhs)(void *data, double t, const double *y, double *dy);
+    void *ext_data;
 };
 
 /* The state's second half as the programs take it: the momenta (y + n)

@@ -700,6 +700,8 @@ qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd) {
 
 qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy) {
     s->evals++;
+    if (s->ext_rhs)
+        return s->ext_rhs(s->ext_data, t, y, dy);
     if (form == QD__LAG)
         return lag_rhs(s, t, y, dy);
     if (form == QD__SPD)

@@ -149,8 +149,9 @@ qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, 
                      w->nruns);
         return QD_ERR_ARG;
     }
-    if (count == 0)
-        return QD_OK;
+    qd_status st = qd__sweep_ready(ctx, w);
+    if (st != QD_OK || count == 0)
+        return st;
     nthreads = nthreads ? nthreads : cores();
     if (nthreads > count)
         nthreads = (unsigned)count;
@@ -161,7 +162,7 @@ qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, 
     atomic_init(&p.exited, 0);
     pthread_mutex_init(&p.lock, NULL);
     pthread_cond_init(&p.wake, NULL);
-    qd_status st = start(ctx, &p, nthreads, progress, data);
+    st = start(ctx, &p, nthreads, progress, data);
     pthread_cond_destroy(&p.wake);
     pthread_mutex_destroy(&p.lock);
     if (st == QD_OK && atomic_load(&p.done) < count)

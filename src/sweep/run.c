@@ -146,16 +146,20 @@ static void run_inputs(const qd_sweep *w, const qd_sim_opts *base, const double 
         qd_prog_eval(w->parprog, pwork, par + w->np, par);
 }
 
-static qd_status check_ready(qd_ctx *ctx, const qd_sweep *w) {
+qd_status qd__sweep_ready(qd_ctx *ctx, const qd_sweep *w) {
     for (size_t k = 0; k < w->nms; k++) {
+        if (w->ms[k].kind == QD__MS_EVENT && w->event >= w->s->nev) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "the measure event needs an event of the simulation");
+            return QD_ERR_ARG;
+        }
         if (w->ms[k].kind == QD__MS_PCOUNT && !w->has_section) {
             qd_ctx_error(ctx, QD_ERR_ARG, "poincare-count needs a section (qd_sweep_set_section)");
             return QD_ERR_ARG;
         }
-        if (w->ms[k].kind == QD__MS_LYAP || w->ms[k].kind == QD__MS_LYAPSPEC) {
-            qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "%s: not available in this build",
-                         w->ms[k].text);
-            return QD_ERR_UNSUPPORTED;
+        if ((w->ms[k].kind == QD__MS_LYAP || w->ms[k].kind == QD__MS_LYAPSPEC) && !w->lyap) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "%s needs the variational equations "
+                         "(qd_sweep_set_lyap)", w->ms[k].text);
+            return QD_ERR_ARG;
         }
     }
     if (w->how == QD__SW_NONE || !w->nms) {
@@ -201,6 +205,45 @@ static void bind_columns(sw_acc *a, const char *const *names) {
         a->col[k] = a->w->ms[k].col ? find(names, a->ncr, a->w->ms[k].col) : a->ncr;
 }
 
+static bool is_lyap(const qd__sw_ms *x) {
+    return x->kind == QD__MS_LYAP || x->kind == QD__MS_LYAPSPEC;
+}
+
+/* The simulation is run unless every measure is a Lyapunov exponent,
+ * which integrates its own (extended) system. */
+static bool needs_sim(const qd_sweep *w) {
+    for (size_t k = 0; k < w->nms; k++)
+        if (!is_lyap(&w->ms[k]))
+            return true;
+    return false;
+}
+
+/* The Lyapunov measures of the run o: the largest exponent and its error,
+ * or the whole spectrum, into row. */
+static qd_status lyap_measures(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *o, double *row) {
+    qd_sim_opts lo_sim = *o;
+    if (lo_sim.method != QD_SIM_DOPRI5)
+        lo_sim.method = QD_SIM_DOP853;
+    lo_sim.fixed = false;
+    lo_sim.dt = 0;
+    qd_status st = QD_OK;
+    for (size_t k = 0; st == QD_OK && k < w->nms; k++) {
+        const qd__sw_ms *x = &w->ms[k];
+        if (!is_lyap(x))
+            continue;
+        qd_lyap_opts lo = w->lyap_opts;
+        lo.nexp = x->kind == QD__MS_LYAP ? 1 : 2 * w->n;
+        double err[1];
+        if (x->kind == QD__MS_LYAP)
+            st = qd_lyap_run(ctx, w->lyap, &lo_sim, &lo, row + x->first, err);
+        else
+            st = qd_lyap_run(ctx, w->lyap, &lo_sim, &lo, row + x->first, NULL);
+        if (st == QD_OK && x->kind == QD__MS_LYAP)
+            row[x->first + 1] = err[0];
+    }
+    return st;
+}
+
 qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t i,
                            double *row) {
     for (size_t j = 0; j < w->ncols; j++)
@@ -210,7 +253,7 @@ qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *ba
         return QD_ERR_ARG;
     }
     qd__sweep_inputs_of(w, i, row);
-    qd_status st = check_ready(ctx, w);
+    qd_status st = qd__sweep_ready(ctx, w);
     if (st != QD_OK)
         return st;
     qd_sim_opts o = *base;
@@ -229,10 +272,16 @@ qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *ba
         /* a row at every step for max, min, escape */
         if (qd_sim_method_adaptive(o.method) && !o.fixed)
             o.dt = 0;
-        qd_sim_stats stats;
-        st = qd_sim_run_with(ctx, w->s, &o, sink, &a, &stats, final);
+        qd_sim_stats stats = {0};
+        if (needs_sim(w))
+            st = qd_sim_run_with(ctx, w->s, &o, sink, &a, &stats, final);
+        if (st == QD_OK && w->lyap)
+            st = lyap_measures(ctx, w, &o, row);
         if (st == QD_OK)
             measures_out(&a, sc.names, &stats, final, row);
+        else
+            for (size_t j = w->nin; j < w->ncols; j++)
+                row[j] = NAN;
     } else {
         qd_ctx_error(ctx, st, "out of memory starting run %zu", i);
     }

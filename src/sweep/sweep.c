@@ -269,6 +269,10 @@ static qd_status measure_cols(qd_sweep *w, qd__sw_ms *x, size_t *j) {
         st = add_col(w, j, "event_t", "");
         st = st == QD_OK ? state_cols(w, j, "event_") : st;
         break;
+    case QD__MS_LYAP:
+        st = add_col(w, j, "lyapunov", "");
+        st = st == QD_OK ? add_col(w, j, "lyapunov_error", "") : st;
+        break;
     case QD__MS_LYAPSPEC:
         for (size_t i = 0; st == QD_OK && i < 2 * w->n; i++) {
             snprintf(name, sizeof name, "lyapunov_%zu", i + 1);
@@ -326,6 +330,17 @@ qd_status qd_sweep_set_section(qd_sweep *w, size_t k) {
         w->has_section = true;
     }
     return st;
+}
+
+qd_status qd_sweep_set_lyap(qd_sweep *w, const qd_lyap *l, const qd_lyap_opts *lo) {
+    if (l && qd_lyap_ndof(l) != w->n) {
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "the Lyapunov system has %zu degrees of freedom, the "
+                     "simulation %zu", qd_lyap_ndof(l), w->n);
+        return QD_ERR_ARG;
+    }
+    w->lyap = l;
+    w->lyap_opts = lo ? *lo : (qd_lyap_opts){0};
+    return QD_OK;
 }
 
 size_t qd_sweep_nruns(const qd_sweep *w) { return w->nruns; }

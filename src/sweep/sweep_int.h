@@ -62,6 +62,8 @@ struct qd_sweep {
     size_t ncols;
     size_t event, section;
     bool has_section;
+    const qd_lyap *lyap;   /* the measures lyapunov, lyapunov-spectrum */
+    qd_lyap_opts lyap_opts;
 };
 
 /* Names of the coordinates (n) and velocities as the system's columns give
@@ -80,6 +82,10 @@ qd_status qd__sweep_params(qd_sweep *w);
 qd_status qd__sweep_columns(qd_sweep *w);
 void qd__sweep_free_inputs(qd_sweep *w);
 void qd__sweep_free_measures(qd_sweep *w);
+
+/* Whether the sweep can run: runs, measures, and what they need (an
+ * event, a section); QD_ERR_ARG with the reason in ctx. */
+qd_status qd__sweep_ready(qd_ctx *ctx, const qd_sweep *w);
 
 /* Run i's input values (w->nin numbers). */
 void qd__sweep_inputs_of(const qd_sweep *w, size_t i, double *x);

@@ -13,6 +13,10 @@
  *   - escape of a free particle (x = v t leaves x < 1 at t = 1/v);
  *   - a run whose mass matrix is singular fails alone, its reason in its
  *     row, the others go on;
+ *   - the lyapunov measures (qdot/lyapunov.h) over a parameter: the
+ *     inverted oscillator x'' = a^2 x has exponents +a and -a (the motion
+ *     grows as exp(a t)) within the estimator's error, the spectrum of a
+ *     Hamiltonian system sums to 0; the oscillator's largest is 0;
  *   - rows identical, bit for bit, on 1 and 2 threads.
  */
 #include <pthread.h>
@@ -219,6 +223,48 @@ static void test_failure_recorded(void **state) {
     sf_free(f);
 }
 
+static void test_lyapunov(void **state) {
+    (void)state;
+    sim_fix *f = sf_load("coordinates x\nparameters a = 1\nT = x'^2/2\nV = -a^2*x^2/2\n"
+                         "initial x = 0, x' = 1\n");
+    qd_sweep *w = sweep_of(f);
+    qd_lyap *l = qd_lyap_new(f->ctx, f->m, f->e);
+    assert_non_null(l);
+    assert_int_equal(qd_sweep_grid(w, "a = 0.5:2:4"), QD_OK);
+    assert_int_equal(qd_sweep_measures(w, "lyapunov, lyapunov-spectrum"), QD_OK);
+    qd_sim_opts o = opts_of(f, 20);
+    double row[5];
+    assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, 0, row), QD_ERR_ARG); /* no qd_lyap yet */
+    qd_ctx_clear_error(f->ctx);
+    assert_int_equal(qd_sweep_set_lyap(w, l, NULL), QD_OK);
+    assert_string_equal(qd_sweep_col(w, 2), "lyapunov_error");
+    assert_string_equal(qd_sweep_col(w, 4), "lyapunov_2");
+    for (size_t i = 0; i < 4; i++) {
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        double a = row[0];
+        assert_true(fabs(row[1] - a) <= row[2] && row[2] < 0.15 * a);
+        assert_true(fabs(row[3] - row[1]) < 1e-9 && fabs(row[3] + row[4]) < 1e-9);
+    }
+    qd_lyap_free(l);
+    qd_sweep_free(w);
+    sf_free(f);
+    /* the oscillator: regular, largest exponent 0 within its error */
+    f = sf_load(osc);
+    w = sweep_of(f);
+    l = qd_lyap_new(f->ctx, f->m, f->e);
+    assert_int_equal(qd_sweep_set_lyap(w, l, NULL), QD_OK);
+    assert_int_equal(qd_sweep_grid(w, "k = 1:4:2"), QD_OK);
+    assert_int_equal(qd_sweep_measures(w, "lyapunov"), QD_OK);
+    o = opts_of(f, 200);
+    for (size_t i = 0; i < 2; i++) {
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_true(fabs(row[1]) <= row[2] + 1e-12 && row[2] < 0.01);
+    }
+    qd_lyap_free(l);
+    qd_sweep_free(w);
+    sf_free(f);
+}
+
 /* ---- threads --------------------------------------------------------------- */
 
 static size_t calls, last_done;
@@ -268,7 +314,7 @@ int main(void) {
         cmocka_unit_test(test_spec_errors),           cmocka_unit_test(test_grid_order),
         cmocka_unit_test(test_random_draw),           cmocka_unit_test(test_oscillator_parameters),
         cmocka_unit_test(test_escape),                cmocka_unit_test(test_failure_recorded),
-        cmocka_unit_test(test_threads_identical),
+        cmocka_unit_test(test_lyapunov),             cmocka_unit_test(test_threads_identical),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,87 @@
+/*
+ * qdot/lyapunov.h - Lyapunov characteristic exponents of a model's motion.
+ *
+ * The first-order system y' = F(t, y), y = (q, q'), with M(q, q', t) q'' =
+ * f(q, q', t), is integrated together with k tangent vectors w_j of the
+ * variational equations w' = J(t, y) w.  J is built from the SYMBOLIC
+ * derivatives of the equations of motion, compiled once:
+ *
+ *     J = [ 0                          I                          ]
+ *         [ M^-1 (df/dq - dM/dq q'')   M^-1 (df/dq' - dM/dq' q'') ]
+ *
+ * where (dM/dq q'') has column k dM/dq_k q''.  Every `renorm` time units
+ * the tangent vectors are orthonormalized by a QR factorization (one vector:
+ * Benettin's renormalization; k vectors: the Gram-Schmidt / QR method of
+ * Benettin, Galgani, Giorgilli & Strelcyn 1980, Shimada & Nagashima 1979),
+ * and lambda_j = (1/T) sum log |R_jj| over the averaging time T (after the
+ * transient).  docs/design.md, "Lyapunov exponents".
+ *
+ * Thread safety: qd_lyap_new on one thread; afterwards a qd_lyap is
+ * immutable and any number of threads may call qd_lyap_run on it at once,
+ * each with its own context (as qd_sim_run_with).
+ */
+#ifndef QDOT_LYAPUNOV_H
+#define QDOT_LYAPUNOV_H
+
+#include <stddef.h>
+#include "mech.h"
+#include "model.h"
+#include "sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qd_lyap qd_lyap;
+
+/* Build and compile the variational equations of the equations e of model
+ * m (Lagrangian form, as qd_sim_new takes them: parameters at the model's
+ * values unless a run gives opts->par).  e and m must outlive the qd_lyap.
+ * NULL on failure, reason in ctx: constraints, `impact`s and `inputs` are
+ * QD_ERR_ARG (the tangent map of a constrained or driven-from-outside
+ * motion is not built). */
+QD_API qd_lyap *qd_lyap_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
+QD_API void qd_lyap_free(qd_lyap *l);
+/* n: degrees of freedom (the state has 2n numbers, so 1 <= nexp <= 2n). */
+QD_API size_t qd_lyap_ndof(const qd_lyap *l);
+
+typedef struct qd_lyap_opts {
+    size_t nexp;          /* exponents wanted: 1 (largest, Benettin) .. 2n (spectrum by QR) */
+    double renorm;        /* time between renormalizations (0: 1) */
+    double transient;     /* time integrated before averaging starts (>= 0) */
+} qd_lyap_opts;
+
+/* What a run measured besides the exponents (qd_lyap_run_stats). */
+typedef struct qd_lyap_stats {
+    double t_avg;         /* the averaging time T = t_end - t0 - transient */
+    size_t renorms;       /* renormalizations in the averaging time */
+    /* The time average of tr J over the averaging time: the sum of all 2n
+     * exponents (Liouville: phase volume grows as exp(integral of tr J)).
+     * 0 for a Hamiltonian system, -c/m for a damped oscillator. */
+    double trace_mean;
+    size_t steps, evals, rejected;
+} qd_lyap_stats;
+
+/* Integrate from opts->t0 (opts->q0, opts->qd0, opts->par) to opts->t_end
+ * with opts->method (dopri5 or dop853; dop853 is the default method of the
+ * CLI), rtol and atol (0: 1e-10, 1e-12), fixed/dt as in a simulation;
+ * exps receives lo->nexp exponents in descending order and err (may be
+ * NULL) an error estimate for each: twice the largest deviation of the
+ * running average from its final value over the last half of the
+ * averaging time (for lambda(t) = lambda + c/t the deviation at T/2 is the
+ * bias c/T itself; docs/design.md).  Failures: QD_ERR_ARG for bad options
+ * (nexp out of range, renorm < 0, transient outside [0, t_end - t0),
+ * a method other than dopri5/dop853), QD_ERR_NUMERIC (step size
+ * underflow, a state outside the model's domain) and QD_ERR_SINGULAR (a
+ * singular mass matrix), with the time in the message, in ctx. */
+QD_API qd_status qd_lyap_run(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *opts,
+                             const qd_lyap_opts *lo, double *exps, double *err);
+/* qd_lyap_run that also fills stats (may be NULL). */
+QD_API qd_status qd_lyap_run_stats(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *opts,
+                                   const qd_lyap_opts *lo, double *exps, double *err,
+                                   qd_lyap_stats *stats);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,292 @@
+/*
+ * src/lyap/benettin.c - Lyapunov exponents by renormalization and QR.
+ *
+ * The state and k tangent vectors are integrated together by the
+ * simulation's Runge-Kutta pairs (the qd_sim's ext_rhs hook).  Every
+ * `renorm` time units the tangent vectors W (2n x k) are factored W = QR
+ * (LAPACK dgeqrf, dorgqr) and replaced by Q: log |R_jj| is the growth of
+ * the j-dimensional volume beyond the (j-1)-dimensional one, and its time
+ * average is lambda_j (Benettin, Galgani, Giorgilli & Strelcyn, Meccanica
+ * 15 (1980) 9 and 21; Skokos, Lect. Notes Phys. 790 (2010) 63, sec. 4).
+ * For k = 1 this is Benettin's renormalization of one deviation vector
+ * (Benettin, Galgani & Strelcyn, Phys. Rev. A 14 (1976) 2338).  QR rather
+ * than classical Gram-Schmidt: Householder reflections keep Q orthogonal
+ * to round-off even when the vectors have nearly collapsed onto the most
+ * unstable direction.
+ */
+#include "lyap.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/mem.h"
+
+extern void dgeqrf_(const int *m, const int *n, double *a, const int *lda, double *tau,
+                    double *work, const int *lwork, int *info);
+extern void dorgqr_(const int *m, const int *n, const int *k, double *a, const int *lda,
+                    const double *tau, double *work, const int *lwork, int *info);
+
+/* A run: the integrator over the augmented state, the sums of log |R_jj|
+ * and the running averages kept for the error estimate. */
+typedef struct bench {
+    qd__lyap_ws ws;
+    qd__integ it;
+    const qd_sim_opts *o;
+    size_t k, d;
+    double renorm, ta, T;   /* renormalization period; averaging from ta for T */
+    double *sum;            /* k */
+    double *hist;           /* running averages in the last half: nh rows of k */
+    size_t nh, caph, renorms;
+    double *tau, *work;
+    int lwork;
+} bench;
+
+static qd_status check_opts(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
+                            const qd_lyap_opts *lo) {
+    qd_status st = qd_sim_check_opts(ctx, o);
+    if (st != QD_OK)
+        return st;
+    if (o->method != QD_SIM_DOP853 && o->method != QD_SIM_DOPRI5) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "Lyapunov exponents are integrated with dopri5 or "
+                     "dop853, not %s", qd_sim_method_name(o->method));
+        return QD_ERR_ARG;
+    }
+    if (lo->nexp < 1 || lo->nexp > 2 * l->n) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the number of exponents must be 1 to %zu (twice the "
+                     "degrees of freedom), not %zu", 2 * l->n, lo->nexp);
+        return QD_ERR_ARG;
+    }
+    if (!(lo->renorm >= 0) || !isfinite(lo->renorm)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the renormalization time must be positive");
+        return QD_ERR_ARG;
+    }
+    if (!(lo->transient >= 0) || !(lo->transient < o->t_end - o->t0)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the transient must be at least 0 and shorter than "
+                     "the run (t_end - t0 = %.17g)", o->t_end - o->t0);
+        return QD_ERR_ARG;
+    }
+    if (!o->q0 || !o->qd0) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the initial coordinates and velocities are needed");
+        return QD_ERR_ARG;
+    }
+    return QD_OK;
+}
+
+static qd_status bench_alloc(bench *b, qd_ctx *ctx) {
+    size_t dim = b->d + b->d * b->k + 1;
+    b->it.y = qd__calloc(ctx, 2 * dim, sizeof *b->it.y);
+    b->sum = qd__calloc(ctx, b->k, sizeof *b->sum);
+    /* the renormalizations in the last half, and one more for the end */
+    b->caph = (size_t)ceil(b->T / 2 / b->renorm) + 2;
+    b->hist = qd__malloc(ctx, b->caph * b->k * sizeof *b->hist);
+    b->lwork = (int)(64 * b->d);
+    b->tau = qd__malloc(ctx, (b->k + (size_t)b->lwork) * sizeof *b->tau);
+    if (!b->it.y || !b->sum || !b->hist || !b->tau) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory starting the Lyapunov run");
+        return QD_ERR_NOMEM;
+    }
+    b->it.yold = b->it.y + dim;
+    b->work = b->tau + b->k;
+    b->it.dim = dim;
+    return QD_OK;
+}
+
+static void bench_free(bench *b) {
+    if (b->it.ops && b->it.priv)
+        b->it.ops->free(&b->it);
+    qd__free(b->it.y);
+    qd__free(b->sum);
+    qd__free(b->hist);
+    qd__free(b->tau);
+    qd__lyap_ws_free(&b->ws);
+}
+
+/* (q0, q'0), the tangent vectors e_1 .. e_k, z = 0; the method started. */
+static qd_status start(bench *b) {
+    const qd_sim_opts *o = b->o;
+    size_t n = b->d / 2;
+    double *y = b->it.y;
+    for (size_t i = 0; i < n; i++) {
+        y[i] = o->q0[i];
+        y[n + i] = o->qd0[i];
+    }
+    for (size_t j = 0; j < b->k; j++)
+        y[b->d + j * b->d + j] = 1;
+    b->ws.w.ext_rhs = qd__lyap_rhs;
+    b->ws.w.ext_data = &b->ws;
+    return b->it.ops->init(&b->it);
+}
+
+/* Integrate to tb exactly (the last step shortened to land there). */
+static qd_status advance(bench *b, double tb) {
+    qd__integ *it = &b->it;
+    size_t max = b->o->max_steps ? b->o->max_steps : QD_SIM_MAX_STEPS;
+    while (it->t < tb) {
+        if (it->steps >= max) {
+            qd_ctx_error(b->ws.w.ctx, QD_ERR_NUMERIC, "more than %zu steps before t = %.17g "
+                         "(at t = %.17g)", max, b->o->t_end, it->t);
+            return QD_ERR_NUMERIC;
+        }
+        double h = it->fixed ? b->o->dt : it->h;
+        bool last = it->t + 1.01 * h >= tb;
+        it->h = last ? tb - it->t : h;
+        b->ws.w.tnow = it->t;
+        qd_status st = it->ops->step(it);
+        if (st != QD_OK)
+            return st;
+        it->steps++;
+        if (last && fabs(it->t - tb) <= 4e-16 * fabs(tb) + 1e-300) {
+            it->t = tb;
+            /* the shortened step says nothing about the step the solution
+             * allows: keep the controller's proposal from before it */
+            if (!it->fixed && it->h < h)
+                it->h = h;
+        }
+    }
+    return QD_OK;
+}
+
+/* W = QR; W <- Q; log |R_jj| added to the sums when counted. */
+static qd_status renormalize(bench *b, bool counted) {
+    int m = (int)b->d, k = (int)b->k, info = 0;
+    double *W = b->it.y + b->d;
+    dgeqrf_(&m, &k, W, &m, b->tau, b->work, &b->lwork, &info);
+    for (size_t j = 0; info == 0 && j < b->k; j++) {
+        double r = fabs(W[j * b->d + j]);
+        if (!(r > 0) || !isfinite(r)) {
+            qd_ctx_error(b->ws.w.ctx, QD_ERR_NUMERIC, "the tangent vectors collapsed or "
+                         "overflowed at t = %.17g: shorten the renormalization time",
+                         b->it.t);
+            return QD_ERR_NUMERIC;
+        }
+        if (counted)
+            b->sum[j] += log(r);
+    }
+    if (info == 0)
+        dorgqr_(&m, &k, &k, W, &m, b->tau, b->work, &b->lwork, &info);
+    if (info != 0) {
+        qd_ctx_error(b->ws.w.ctx, QD_ERR_NUMERIC, "QR factorization failed (LAPACK info %d)",
+                     info);
+        return QD_ERR_NUMERIC;
+    }
+    b->it.y_changed = true;
+    return QD_OK;
+}
+
+/* The running averages at a renormalization in the last half. */
+static void record(bench *b) {
+    double t = b->it.t - b->ta;
+    if (t < b->T / 2 * (1 - 1e-12) || b->nh >= b->caph)
+        return;
+    for (size_t j = 0; j < b->k; j++)
+        b->hist[b->nh * b->k + j] = b->sum[j] / t;
+    b->nh++;
+}
+
+/* Through the transient (renormalized, not counted) to ta, z reset there. */
+static qd_status transient(bench *b) {
+    for (size_t i = 1; b->it.t < b->ta; i++) {
+        double tb = fmin(b->o->t0 + (double)i * b->renorm, b->ta);
+        qd_status st = advance(b, tb);
+        if (st == QD_OK)
+            st = renormalize(b, false);
+        if (st != QD_OK)
+            return st;
+    }
+    b->it.y[b->d + b->d * b->k] = 0;
+    b->it.y_changed = true;
+    return QD_OK;
+}
+
+static qd_status average(bench *b) {
+    for (size_t i = 1; b->it.t < b->o->t_end; i++) {
+        double tb = fmin(b->ta + (double)i * b->renorm, b->o->t_end);
+        qd_status st = advance(b, tb);
+        if (st == QD_OK)
+            st = renormalize(b, true);
+        if (st != QD_OK)
+            return st;
+        b->renorms++;
+        record(b);
+    }
+    return QD_OK;
+}
+
+/* The exponents, descending, and twice the largest deviation of each
+ * running average from its final value over the last half (NaN with fewer
+ * than two renormalizations there).  The errors go through tau, free now. */
+static void results(const bench *b, double *exps, double *err) {
+    double *e = b->tau;
+    for (size_t j = 0; j < b->k; j++) {
+        double final = b->sum[j] / b->T, dev = 0;
+        for (size_t h = 0; h < b->nh; h++)
+            dev = fmax(dev, fabs(b->hist[h * b->k + j] - final));
+        exps[j] = final;
+        e[j] = b->nh >= 2 ? 2 * dev : NAN;
+    }
+    /* QR gives them nearly sorted already: insertion sort */
+    for (size_t j = 1; j < b->k; j++)
+        for (size_t i = j; i > 0 && exps[i] > exps[i - 1]; i--) {
+            double x = exps[i], y = e[i];
+            exps[i] = exps[i - 1];
+            e[i] = e[i - 1];
+            exps[i - 1] = x;
+            e[i - 1] = y;
+        }
+    for (size_t j = 0; err && j < b->k; j++)
+        err[j] = e[j];
+}
+
+static qd_status run(bench *b, qd_ctx *ctx, const qd_sim_opts *o) {
+    qd_status st = qd__lyap_ws_init(&b->ws, ctx, b->ws.l, b->k, o->par);
+    if (st == QD_OK)
+        st = bench_alloc(b, ctx);
+    b->it.s = &b->ws.w;
+    if (st == QD_OK)
+        st = start(b);
+    if (st == QD_OK)
+        st = transient(b);
+    if (st == QD_OK)
+        st = average(b);
+    return st;
+}
+
+qd_status qd_lyap_run_stats(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
+                            const qd_lyap_opts *lo, double *exps, double *err,
+                            qd_lyap_stats *stats) {
+    if (stats)
+        *stats = (qd_lyap_stats){0};
+    qd_status st = check_opts(ctx, l, o, lo);
+    if (st != QD_OK)
+        return st;
+    bench b = {.o = o, .k = lo->nexp, .d = 2 * l->n,
+               .renorm = lo->renorm > 0 ? lo->renorm : 1,
+               .ta = o->t0 + lo->transient, .T = o->t_end - o->t0 - lo->transient};
+    b.ws.l = l;
+    b.it = (qd__integ){.method = o->method,
+                       .ops = o->method == QD_SIM_DOPRI5 ? &qd__dopri5 : &qd__dop853,
+                       .form = QD__LAG, .t = o->t0, .tend = o->t_end,
+                       .rtol = o->rtol > 0 ? o->rtol : 1e-10,
+                       .atol = o->atol > 0 ? o->atol : 1e-12, .fixed = o->fixed,
+                       .h = o->fixed ? o->dt : 0};
+    st = run(&b, ctx, o);
+    if (st == QD_OK)
+        results(&b, exps, err);
+    if (stats) {
+        stats->t_avg = b.T;
+        stats->renorms = b.renorms;
+        stats->trace_mean = st == QD_OK ? b.it.y[b.d + b.d * b.k] / b.T : NAN;
+        stats->steps = b.it.steps;
+        stats->evals = b.ws.w.evals;
+        stats->rejected = b.it.rejected;
+    }
+    if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, st, "the Lyapunov run failed: %s", qd_status_str(st));
+    bench_free(&b);
+    return st;
+}
+
+qd_status qd_lyap_run(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *opts,
+                      const qd_lyap_opts *lo, double *exps, double *err) {
+    return qd_lyap_run_stats(ctx, l, opts, lo, exps, err, NULL);
+}
