@@ -38,8 +38,8 @@ static qd_status run_here(qd_ctx *ctx, const cli_mpi_job *j) {
 bool cli_mpi_built(void) { return false; }
 bool cli_mpi_launched(void) { return false; }
 
-qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, bool *writer) {
-    *writer = true;
+qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, cli_mpi_done *done) {
+    *done = (cli_mpi_done){.writer = true, .ranks = 1, .threads = j->nthreads};
     return run_here(ctx, j);
 }
 
@@ -227,8 +227,8 @@ static void run_master(qd_ctx *ctx, const cli_mpi_job *j, int ranks, unsigned th
  * per core, so all cores in every rank would oversubscribe the node). */
 static unsigned rank_threads(unsigned asked) { return asked > 0 ? asked : 1; }
 
-qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, bool *writer) {
-    *writer = true;
+qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, cli_mpi_done *done) {
+    *done = (cli_mpi_done){.writer = true, .ranks = 1, .threads = j->nthreads};
     if (!cli_mpi_launched())
         return run_here(ctx, j);
     int provided, rank, ranks;
@@ -244,7 +244,7 @@ qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, bool *writer) {
         run_master(ctx, &one, ranks, one.nthreads);
     else
         worker(ctx, &one);
-    *writer = rank == 0;
+    *done = (cli_mpi_done){.writer = rank == 0, .ranks = ranks, .threads = one.nthreads};
     MPI_Finalize();
     return st;
 }

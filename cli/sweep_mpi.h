@@ -41,13 +41,20 @@ typedef struct cli_mpi_job {
     void *data;
 } cli_mpi_job;
 
+/* How the runs went: where, and who writes. */
+typedef struct cli_mpi_done {
+    bool writer;      /* this process holds every row and writes the output */
+    int ranks;        /* processes that ran the sweep (1 without MPI) */
+    unsigned threads; /* threads in each (0: all cores) */
+} cli_mpi_done;
+
 /* Run every run of j->w.  Launched by an MPI launcher: start MPI, share
- * the runs out, finish MPI; *writer is then true on rank 0 only, which
- * holds every row.  Otherwise the runs go to qd_sweep_run in this process
- * and *writer is true.  A failed run is recorded in its row, status and
- * reason; the return is not OK only when the sweep as a whole failed (out
- * of memory; reason in ctx).  MPI's own failures abort the job. */
-qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, bool *writer);
+ * the runs out, finish MPI; only rank 0 is then the writer, holding every
+ * row.  Otherwise the runs go to qd_sweep_run in this process, the writer.
+ * A failed run is recorded in its row, status and reason; the return is
+ * not OK only when the sweep as a whole failed (out of memory; reason in
+ * ctx).  MPI's own failures abort the job. */
+qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, cli_mpi_done *done);
 
 /* The chunk rank 0 hands out when `remaining` runs are left among `ranks`
  * ranks of `threads` threads each: a quarter of an even share, so the last
