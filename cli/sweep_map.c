@@ -49,10 +49,13 @@ int cli_sweep_map_check(const cli_sweep_map *m, const qd_sweep *w, bool grid, si
              : qd_plot_format_of(ctx, m->file, &f) == QD_OK ? QD_EXIT_OK
                                                              : cli_diag_ctx(ctx);
     qd_ctx_free(ctx);
-    if (rc == QD_EXIT_OK && (!grid || qd_sweep_ninputs(w) != 2)) {
-        cli_diag_error("--map draws a --grid of two axes, \"A=a0:a1:N, B=b0:b1:M\"; this "
-                       "sweep is %s of %zu input%s", grid ? "a grid" : "not a grid",
-                       qd_sweep_ninputs(w), qd_sweep_ninputs(w) == 1 ? "" : "s");
+    if (rc == QD_EXIT_OK && !grid) {
+        cli_diag_error("--map draws a --grid of two axes (\"A=a0:a1:N, B=b0:b1:M\"), not a "
+                       "--random or --list sweep");
+        rc = QD_EXIT_USAGE;
+    } else if (rc == QD_EXIT_OK && qd_sweep_ninputs(w) != 2) {
+        cli_diag_error("--map draws a --grid of two axes; this one has %zu",
+                       qd_sweep_ninputs(w));
         rc = QD_EXIT_USAGE;
     }
     return rc == QD_EXIT_OK ? find_measure(m, w, col) : rc;
