@@ -58,6 +58,7 @@ bench:
 	/usr/bin/python3 bench/run_simulate.py build-bench
 	/usr/bin/python3 bench/run_speeds.py build-bench
 	if [ -x build-bench/bench/quad_bench ]; then ./build-bench/bench/quad_bench; fi
+	/usr/bin/python3 bench/run_sweep_mpi.py build-bench
 
 install: build
 	$(CMAKE) --install build --prefix $(PREFIX)

@@ -3,11 +3,16 @@
  * chunks of run indices on request and gathers the rows in run order.
  *
  * The protocol is two messages each way.  A worker sends RESULT, a header
- * {first, count} (count 0 the first time: "ready"), followed for count > 0
- * by the chunk's rows, statuses and reasons; rank 0 answers WORK, {first,
- * count}, with count 0 meaning "stop".  Chunks shrink as the sweep nears its
- * end (cli_mpi_chunk), so a rank that drew slow runs does not keep the
- * others waiting.  With at most SELF_MAX ranks rank 0 also works, one run
+ * {first, count} (count 0 at the start: "ready"), followed for count > 0
+ * by the chunk's rows, statuses and reasons; rank 0 answers each RESULT
+ * with WORK, {first, count}, count 0 meaning "stop".  A worker keeps two
+ * requests out (it says "ready" twice), so the answer to one arrives while
+ * it runs the chunk the other brought: it never waits for rank 0 to finish
+ * a run of its own before being served.  Replies from one rank arrive in
+ * order and every one after the first "stop" is "stop" too, so a worker
+ * ends after the second.  Chunks shrink as the sweep nears its end
+ * (cli_mpi_chunk), so a rank that drew slow runs does not keep the others
+ * waiting.  With at most SELF_MAX ranks rank 0 also works, one run
  * per thread at a time, serving requests between its runs: on a small job a
  * pure master would leave a core idle; on a larger one serving is the
  * bottleneck, and rank 0 only serves.  Inside each rank qd_sweep_run runs the
@@ -50,6 +55,7 @@ qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, cli_mpi_done *done) {
 
 enum { TAG_RESULT = 1, TAG_ROWS, TAG_STATUS, TAG_REASONS, TAG_WORK };
 #define SELF_MAX 4 /* rank 0 works too up to this many ranks */
+#define AHEAD 2    /* requests a worker keeps out */
 
 bool cli_mpi_built(void) { return true; }
 
@@ -103,17 +109,20 @@ static void chunk_buf_free(chunk_buf *b) {
     free(b->reasons);
 }
 
-/* A worker: ask, run, send back, until told to stop. */
+/* A worker: ask, run, send back (which asks again), until told to stop. */
 static void worker(qd_ctx *ctx, const cli_mpi_job *j) {
     size_t ncols = qd_sweep_ncols(j->w);
     chunk_buf b = {0};
     uint64_t hdr[2] = {0, 0};
-    MPI_Send(hdr, 2, MPI_UINT64_T, 0, TAG_RESULT, MPI_COMM_WORLD);
-    for (;;) {
+    for (int k = 0; k < AHEAD; k++)
+        MPI_Send(hdr, 2, MPI_UINT64_T, 0, TAG_RESULT, MPI_COMM_WORLD);
+    int out = AHEAD;
+    while (out > 0) {
         MPI_Recv(hdr, 2, MPI_UINT64_T, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        out--;
         size_t first = (size_t)hdr[0], count = (size_t)hdr[1];
         if (count == 0)
-            break;
+            continue; /* the rest of the answers are "stop" too */
         chunk_buf_grow(&b, count, ncols);
         if (qd_sweep_run(ctx, j->w, j->base, first, count, j->nthreads, b.rows, b.st, b.reasons,
                          NULL, NULL) != QD_OK)
@@ -125,6 +134,7 @@ static void worker(qd_ctx *ctx, const cli_mpi_job *j) {
         MPI_Send(b.ist, (int)count, MPI_INT, 0, TAG_STATUS, MPI_COMM_WORLD);
         MPI_Send(b.reasons, (int)(count * QD_SWEEP_REASON), MPI_CHAR, 0, TAG_REASONS,
                  MPI_COMM_WORLD);
+        out++;
     }
     chunk_buf_free(&b);
 }
@@ -133,7 +143,7 @@ static void worker(qd_ctx *ctx, const cli_mpi_job *j) {
 typedef struct master {
     const cli_mpi_job *j;
     size_t nruns, ncols, next, done;
-    int ranks, active;   /* workers not yet told to stop */
+    int ranks, active;   /* requests not yet answered "stop" */
     unsigned threads;    /* per rank, for the chunk size */
     int *ist;            /* statuses as they travel */
 } master;
@@ -205,7 +215,7 @@ static void master_work(qd_ctx *ctx, master *m) {
 
 static void run_master(qd_ctx *ctx, const cli_mpi_job *j, int ranks, unsigned threads) {
     master m = {.j = j, .nruns = qd_sweep_nruns(j->w), .ncols = qd_sweep_ncols(j->w),
-                .ranks = ranks, .active = ranks - 1, .threads = threads};
+                .ranks = ranks, .active = AHEAD * (ranks - 1), .threads = threads};
     size_t most = cli_mpi_chunk(m.nruns, ranks, threads);
     m.ist = malloc((most > 0 ? most : 1) * sizeof *m.ist);
     if (!m.ist)

@@ -8,7 +8,8 @@ Each run's result depends only on its inputs, so the expected output of a
 sweep under `mpirun -np N` is the same sweep in one process, byte for byte:
   - random draws of the double pendulum's angles and g (chaotic over t = 8:
     any difference in a run's arithmetic shows in its last digits), on
-    2 ranks, and on 3 ranks of 2 threads each, against 1 process;
+    2 ranks, on 3 ranks of 2 threads each, and on 5 ranks (rank 0 then only
+    deals), against 1 process;
   - a grid through a singular mass matrix (T = x^2 x'^2 / 2 at x = 0): the
     failed run's row, status and reason travel from the rank that ran it;
   - --format hdf5 written by rank 0 holds the CSV's numbers exactly (read
@@ -120,6 +121,8 @@ def ranks_identical(build, tmp):
     check("3 ranks x 2 threads: identical CSV", three.stdout == one, three.stdout[:300])
     check("3 ranks: one summary (rank 0 alone writes)", three.stderr.count("qdot: sweep:") == 1,
           three.stderr)
+    five = mpirun(build, 5, *pendulum_args())
+    check("5 ranks (rank 0 only deals): identical CSV", five.stdout == one, five.stdout[:300])
 
 
 def failure_travels(build, tmp):
