@@ -25,10 +25,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* At most this many runs a chunk: its message (160-byte reasons) stays far
+ * inside MPI's int counts, and rank 0's buffers small. */
+#define CHUNK_MAX 65536
+
 size_t cli_mpi_chunk(size_t remaining, int ranks, unsigned threads) {
     size_t share = remaining / (4 * (size_t)(ranks > 0 ? ranks : 1));
     size_t least = threads > 0 ? threads : 1;
     size_t n = share > least ? share : least;
+    n = n < CHUNK_MAX ? n : CHUNK_MAX > least ? CHUNK_MAX : least;
     return n < remaining ? n : remaining;
 }
 

@@ -59,7 +59,7 @@ qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, cli_mpi_done *done);
 /* The chunk rank 0 hands out when `remaining` runs are left among `ranks`
  * ranks of `threads` threads each: a quarter of an even share, so the last
  * chunks are small and ranks finish together, but never below one run per
- * thread. */
+ * thread, nor above 65536 runs (a message's counts stay small). */
 size_t cli_mpi_chunk(size_t remaining, int ranks, unsigned threads);
 
 #endif
