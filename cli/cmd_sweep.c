@@ -11,6 +11,7 @@
 #include "cli.h"
 
 #include <ctype.h>
+#include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -520,6 +521,11 @@ static void summary(const sweep_result *r, unsigned threads, int ranks) {
 
 static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     sweep_result r = {.nruns = qd_sweep_nruns(w), .ncols = qd_sweep_ncols(w)};
+    /* every row is kept until the end (run order): refuse what cannot be */
+    if (r.nruns > SIZE_MAX / (sizeof(double) * (r.ncols + 1) + QD_SWEEP_REASON)) {
+        cli_diag_error("%zu runs do not fit in memory", r.nruns);
+        return QD_EXIT_USAGE;
+    }
     r.cols = malloc((r.ncols + 1) * sizeof *r.cols);
     r.rows = malloc((r.nruns * r.ncols + 1) * sizeof *r.rows);
     r.status = malloc((r.nruns + 1) * sizeof *r.status);
