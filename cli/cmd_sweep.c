@@ -21,12 +21,16 @@
 #include "model_cli.h"
 #include "progress.h"
 #include "sim_cli.h"
+#include "sweep_hdf5.h"
+#include "sweep_map.h"
+#include "sweep_mpi.h"
 
 static const char usage_text[] =
     "usage: qdot sweep FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N "
     "[--seed S] | --list FILE.csv) --t-end T --measure \"M, ...\" [--event \"EXPR = EXPR[, "
     "EXPR > EXPR]\" | --stop-at ...] [--section \"EXPR = EXPR[, EXPR > EXPR]\"] [--threads N] "
-    "[--renorm DT] [--transient T0] [--format csv|json] [-o FILE] [simulate options: --method, --rtol, --dt, --set, "
+    "[--renorm DT] [--transient T0] [--format csv|json|hdf5] [-o FILE] [--map FILE.png "
+    "[--map-measure NAME]] [simulate options: --method, --rtol, --dt, --set, "
     "--initial, --native, ...]";
 
 typedef struct sweep_args {
@@ -38,6 +42,7 @@ typedef struct sweep_args {
     size_t nuser;          /* --event and --stop-at: the first is the measure event's */
     char *escapes[QD_SIM_MAX_LIST]; /* "EXPR = VALUE" of each escape:EXPR>VALUE */
     size_t nescapes;
+    cli_sweep_map map;     /* --map FILE.png, --map-measure NAME */
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
@@ -110,6 +115,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return QD_EXIT_OK;
     if (rc > 100)
         return rc - 100;
+    if ((rc = cli_sweep_map_option(argc, argv, i, &a->map)) != 0)
+        return rc == 1 ? QD_EXIT_OK : rc - 100;
     return own_option(argc, argv, i, a);
 }
 
@@ -442,17 +449,54 @@ static int write_json(FILE *f, const sweep_result *r) {
 static const struct {
     const char *name;
     int (*write)(FILE *f, const sweep_result *r);
-} formats[] = {{"csv", write_csv}, {"json", write_json}};
+} formats[] = {{"csv", write_csv}, {"json", write_json}, {"hdf5", NULL}};
 
 static int find_format(const char *name, size_t *k) {
     for (*k = 0; *k < sizeof formats / sizeof *formats; (*k)++)
         if (!strcmp(formats[*k].name, name))
             return QD_EXIT_OK;
-    cli_diag_error("--format takes csv or json, not '%s'", name);
+    cli_diag_error("--format takes csv, json or hdf5, not '%s'", name);
     return QD_EXIT_USAGE;
 }
 
+/* --format hdf5 (cli/sweep_hdf5.h): the rows with how the sweep was made. */
+static int write_hdf5(const sweep_args *a, const sweep_result *r) {
+    char n[32], seed[32], err[512];
+    snprintf(n, sizeof n, "%.0f", a->n);
+    snprintf(seed, sizeof seed, "%.0f", a->seed);
+    const char *names[] = {"model", "measures", a->grid ? "grid" : a->random ? "random" : "list",
+                           "n", "seed"};
+    const char *values[] = {a->sim.file, a->measure, a->grid ? a->grid : a->random ? a->random
+                                                                                    : a->list,
+                            n, seed};
+    cli_h5_sweep h = {.nruns = r->nruns, .ncols = r->ncols, .names = r->cols, .rows = r->rows,
+                      .status = r->status, .reasons = r->reasons, .reason_size = QD_SWEEP_REASON,
+                      .nattrs = a->random ? 5 : 3, .attr_names = names, .attr_values = values};
+    if (cli_hdf5_write_sweep(a->sim.out, &h, err, sizeof err))
+        return QD_EXIT_OK;
+    cli_diag_error("%s", err);
+    return QD_EXIT_USAGE;
+}
+
+/* Before the runs: hdf5 is written to a file, by a qdot built with HDF5. */
+static int check_output(const sweep_args *a, size_t fmt) {
+    if (formats[fmt].write)
+        return QD_EXIT_OK;
+    if (!cli_hdf5_built()) {
+        cli_diag_error("--format hdf5: this qdot was built without HDF5 (install libhdf5-dev "
+                       "and build again)");
+        return QD_EXIT_FAIL;
+    }
+    if (!a->sim.out) {
+        cli_diag_error("--format hdf5 writes a file: give it with -o FILE.h5");
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
 static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) {
+    if (!formats[fmt].write)
+        return write_hdf5(a, r);
     FILE *f = a->sim.out ? fopen(a->sim.out, "w") : stdout;
     if (!f) {
         cli_diag_error("cannot write '%s'", a->sim.out);
@@ -464,12 +508,15 @@ static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) 
     return rc;
 }
 
-static void summary(const sweep_result *r, unsigned threads) {
+static void summary(const sweep_result *r, unsigned threads, int ranks) {
     size_t failed = 0;
     for (size_t k = 0; k < r->nruns; k++)
         failed += r->status[k] != QD_OK;
-    fprintf(stderr, "qdot: sweep: %zu run%s on %u thread%s, %zu failed, %.3g s\n", r->nruns,
-            r->nruns == 1 ? "" : "s", threads, threads == 1 ? "" : "s", failed, r->wall);
+    char where[48] = "";
+    if (ranks > 1)
+        snprintf(where, sizeof where, "%d MPI ranks x ", ranks);
+    fprintf(stderr, "qdot: sweep: %zu run%s on %s%u thread%s, %zu failed, %.3g s\n", r->nruns,
+            r->nruns == 1 ? "" : "s", where, threads, threads == 1 ? "" : "s", failed, r->wall);
 }
 
 static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
@@ -488,21 +535,29 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         cli_diag_error("out of memory for %zu runs", r.nruns);
     for (size_t j = 0; rc == QD_EXIT_OK && j < r.ncols; j++)
         r.cols[j] = qd_sweep_col(w, j);
-    unsigned threads = (unsigned)a->threads;
+    size_t mapcol = 0;
+    if (rc == QD_EXIT_OK)
+        rc = cli_sweep_map_check(&a->map, w, a->grid != NULL, &mapcol);
+    /* under mpirun every rank gets here; only rank 0 (done.writer) writes */
+    cli_mpi_done done = {.writer = true, .ranks = 1};
     if (rc == QD_EXIT_OK) {
         cli_progress bar;
         cli_progress_start(&bar, "sweep");
         bar.label = "runs";
-        qd_status st = qd_sweep_run(c->ctx, w, &c->opts, 0, r.nruns, threads, r.rows, r.status,
-                                    r.reasons, progress, &bar);
+        cli_mpi_job job = {.w = w, .base = &c->opts, .nthreads = (unsigned)a->threads,
+                           .rows = r.rows, .status = r.status, .reasons = r.reasons,
+                           .progress = progress, .data = &bar};
+        qd_status st = cli_mpi_sweep(c->ctx, &job, &done);
         r.wall = cli_progress_end(&bar);
         rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
     }
-    if (rc == QD_EXIT_OK)
+    if (rc == QD_EXIT_OK && done.writer)
         rc = write_result(a, fmt, &r);
-    if (rc == QD_EXIT_OK) {
+    if (rc == QD_EXIT_OK && done.writer)
+        rc = cli_sweep_map_write(&a->map, w, r.rows, mapcol, a->sim.file);
+    if (rc == QD_EXIT_OK && done.writer) {
         long cores = sysconf(_SC_NPROCESSORS_ONLN);
-        summary(&r, threads ? threads : cores > 0 ? (unsigned)cores : 1);
+        summary(&r, done.threads ? done.threads : cores > 0 ? (unsigned)cores : 1, done.ranks);
     }
     free(r.cols);
     free(r.rows);
@@ -559,6 +614,8 @@ int cli_cmd_sweep(int argc, char **argv) {
         rc = check_args(&a);
     if (rc == QD_EXIT_OK && a.format)
         rc = find_format(a.format, &fmt);
+    if (rc == QD_EXIT_OK)
+        rc = check_output(&a, fmt);
     if (rc != QD_EXIT_OK)
         return rc;
     rc = more_events(&a);

@@ -102,6 +102,28 @@ QD_API qd_status qd_plot_write(qd_plot *p, const char *path);
 QD_API size_t qd_plot_nice_ticks(double lo, double hi, size_t max_ticks, double *step,
                                  double *first);
 
+/* Colour maps (qdot sweep --map): a value over a 2-D grid, each grid point
+ * a cell reaching halfway to its neighbours, filled with the colour of its
+ * value's place between the map's least and greatest value (viridis: dark
+ * purple through teal to yellow, its lightness rising all the way, so it
+ * reads the same in grey and to red-green colour-blind eyes).  A colour bar
+ * at the panel's right, labelled label (may be NULL), gives the scale.  The
+ * panel's axes span the cells exactly.  nx, ny >= 1 points, x and y
+ * strictly increasing and finite; z[j*nx + i] is the value at (x[i], y[j]),
+ * NaN for none (the cell is drawn light grey).  One map per panel, under its
+ * series; copied.  QD_ERR_ARG for an empty or unordered grid, infinite
+ * values, or a second map. */
+QD_API qd_status qd_plot_add_map(qd_plot *p, const char *label, size_t nx, size_t ny,
+                                 const double *x, const double *y, const double *z);
+
+/* The colour of fraction f (clamped to [0, 1]) of a map's range, 0xRRGGBB:
+ * viridis sampled at nine points and linearly interpolated.  A constant map
+ * is drawn in the colour of 0.5. */
+QD_API unsigned qd_plot_map_color(double f);
+
+/* Panel k's map's range of values (false without a map, or every value NaN). */
+QD_API bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, double *zmax);
+
 #ifdef __cplusplus
 }
 #endif

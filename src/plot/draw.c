@@ -151,11 +151,72 @@ static void draw_series(const qd_plot *p, cairo_t *cr, const qd__plot_series *s,
     cairo_stroke(cr);
 }
 
+/* The map's cells, unantialiased: neighbouring cells then meet without a
+ * seam of background between them. */
+static void draw_map(const qd_plot *p, size_t k, cairo_t *cr) {
+    const qd__plot_map *m = p->panels[k].map;
+    double span = m->zmax - m->zmin;
+    cairo_save(cr);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+    for (size_t j = 0; j < m->ny; j++)
+        for (size_t i = 0; i < m->nx; i++) {
+            double x0, x1, y0, y1, ax, ay, bx, by, z = m->z[j * m->nx + i];
+            qd__plot_map_edges(m->nx, m->x, i, &x0, &x1);
+            qd__plot_map_edges(m->ny, m->y, j, &y0, &y1);
+            qd_plot_to_pixel(p, k, x0, y0, &ax, &ay);
+            qd_plot_to_pixel(p, k, x1, y1, &bx, &by);
+            set_rgb(cr, isnan(z) ? 0xd9d9d9
+                                 : qd_plot_map_color(span > 0 ? (z - m->zmin) / span : 0.5));
+            cairo_rectangle(cr, round(ax), round(by), round(bx) - round(ax), round(ay) - round(by));
+            cairo_fill(cr);
+        }
+    cairo_restore(cr);
+}
+
+/* The colour bar at the panel's right: the scale from the least value
+ * (bottom) to the greatest, its ticks and the map's label beside it. */
+static void draw_bar(const qd_plot *p, size_t k, cairo_t *cr) {
+    const qd__plot_panel *f = &p->panels[k];
+    const qd__plot_map *m = f->map;
+    double left = f->left + f->width + 16, w = 18, top = f->top, h = f->height;
+    for (int r = 0; r < (int)h; r++) {
+        set_rgb(cr, qd_plot_map_color(1 - (r + 0.5) / h));
+        cairo_rectangle(cr, left, top + r, w, 1);
+        cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1);
+    cairo_rectangle(cr, floor(left) - 0.5, floor(top) - 0.5, w + 1, ceil(h) + 1);
+    cairo_stroke(cr);
+    double step, first, lo = m->zmin, hi = m->zmax;
+    use_font(cr, QD__PLOT_TICK_FONT, false);
+    size_t n = isnan(lo) || !(hi > lo) ? 0 : qd_plot_nice_ticks(lo, hi, 8, &step, &first);
+    for (size_t t = 0; t < n; t++) {
+        double v = first + (double)t * step, py = top + h - (v - lo) / (hi - lo) * h;
+        cairo_move_to(cr, left + w, py);
+        cairo_line_to(cr, left + w + 4, py);
+        cairo_stroke(cr);
+        char buf[32];
+        tick_label(buf, sizeof buf, v, step);
+        text_at(cr, buf, left + w + 7, py, 0, 0.5);
+    }
+    if (*m->label) {
+        use_font(cr, QD__PLOT_LABEL_FONT, false);
+        cairo_save(cr);
+        cairo_translate(cr, left + w + 58, top + h / 2);
+        cairo_rotate(cr, -PI / 2);
+        text_at(cr, m->label, 0, 0, 0.5, 0.5);
+        cairo_restore(cr);
+    }
+}
+
 static void draw_data(const qd_plot *p, size_t k, cairo_t *cr) {
     const qd__plot_panel *f = &p->panels[k];
     cairo_save(cr);
     cairo_rectangle(cr, f->left, f->top, f->width, f->height);
     cairo_clip(cr);
+    if (f->map)
+        draw_map(p, k, cr);
     for (size_t i = 0; i < p->nseries; i++)
         if (p->series[i].panel == k)
             draw_series(p, cr, &p->series[i], qd_plot_color(p, i));
@@ -197,10 +258,12 @@ static qd_status draw(const qd_plot *p, cairo_t *cr) {
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     for (size_t k = 0; k < p->rows * p->cols; k++) {
-        if (!p->panels[k].nseries)
+        if (!p->panels[k].nseries && !p->panels[k].map)
             continue; /* the grid's unused cells stay blank */
         draw_data(p, k, cr);
         draw_axes(p, k, cr);
+        if (p->panels[k].map)
+            draw_bar(p, k, cr);
         draw_legend(p, k, cr, row, xoff);
     }
     if (p->title && *p->title) {

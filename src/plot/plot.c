@@ -65,13 +65,15 @@ static void free_panels(qd_plot *p) {
     for (size_t k = 0; k < p->rows * p->cols; k++) {
         qd__free(p->panels[k].xlabel);
         qd__free(p->panels[k].ylabel);
+        qd__plot_map_free(p->panels[k].map);
     }
     qd__free(p->panels);
 }
 
 qd_status qd_plot_panels(qd_plot *p, size_t rows, size_t cols) {
-    if (p->nseries || rows < 1 || cols < 1 || rows > 8 || cols > 8) {
-        qd_ctx_error(p->ctx, QD_ERR_ARG, p->nseries ? "a plot is divided into panels before "
+    bool used = p->nseries || p->panels[0].map;
+    if (used || rows < 1 || cols < 1 || rows > 8 || cols > 8) {
+        qd_ctx_error(p->ctx, QD_ERR_ARG, used ? "a plot is divided into panels before "
                      "any series is added" : "a plot has 1 to 8 rows and columns of panels, "
                      "not %zu x %zu", rows, cols);
         return QD_ERR_ARG;
@@ -300,19 +302,43 @@ static void equalize(qd__plot_panel *f) {
         widen(&f->x0, &f->x1, uy * f->width);
 }
 
+/* A map's axes span its cells exactly, series included: the cells are the
+ * data, and a margin of white around them would read as missing runs. */
+static void map_ranges(const qd_plot *p, size_t k, qd__plot_panel *f) {
+    const qd__plot_map *m = f->map;
+    double lo, hi, a, b;
+    bool points;
+    qd__plot_map_edges(m->nx, m->x, 0, &f->x0, &b);
+    qd__plot_map_edges(m->nx, m->x, m->nx - 1, &a, &f->x1);
+    qd__plot_map_edges(m->ny, m->y, 0, &f->y0, &b);
+    qd__plot_map_edges(m->ny, m->y, m->ny - 1, &a, &f->y1);
+    if (!f->nseries)
+        return;
+    data_range(p, k, false, &lo, &hi, &points);
+    f->x0 = fmin(f->x0, lo);
+    f->x1 = fmax(f->x1, hi);
+    data_range(p, k, true, &lo, &hi, &points);
+    f->y0 = fmin(f->y0, lo);
+    f->y1 = fmax(f->y1, hi);
+}
+
 /* Panel k in its cell of the grid (below the title): the ranges, the
  * legend's rows and the plot area.  An empty panel shows [0, 1]. */
 static qd_status layout_panel(qd_plot *p, size_t k, double cell_top, double cell_h) {
     qd__plot_panel *f = &p->panels[k];
     double lo, hi, cell_w = (double)p->width / (double)p->cols;
     bool points;
-    data_range(p, k, false, &lo, &hi, &points);
-    axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, points, 10, &f->x0, &f->x1);
-    data_range(p, k, true, &lo, &hi, &points);
-    axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, true, 8, &f->y0, &f->y1);
+    if (f->map) {
+        map_ranges(p, k, f);
+    } else {
+        data_range(p, k, false, &lo, &hi, &points);
+        axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, points, 10, &f->x0, &f->x1);
+        data_range(p, k, true, &lo, &hi, &points);
+        axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, true, 8, &f->y0, &f->y1);
+    }
     bool ylab = f->ylabel && *f->ylabel, xlab = f->xlabel && *f->xlabel;
     f->left = cell_w * (double)(k % p->cols) + (ylab ? 84 : 64);
-    f->width = cell_w - (ylab ? 84 : 64) - 24;
+    f->width = cell_w - (ylab ? 84 : 64) - 24 - (f->map ? QD__PLOT_BAR_ROOM : 0);
     f->legend_top = cell_top + 4;
     f->legend_rows = qd__plot_legend_rows(p, k, f->width, NULL, NULL);
     f->top = f->legend_top + (double)f->legend_rows * QD__PLOT_LEGEND_ROW + 8;
@@ -329,7 +355,10 @@ static qd_status layout_panel(qd_plot *p, size_t k, double cell_top, double cell
 }
 
 qd_status qd_plot_layout(qd_plot *p) {
-    if (p->nseries == 0) {
+    bool any_map = false;
+    for (size_t k = 0; k < p->rows * p->cols; k++)
+        any_map |= p->panels[k].map != NULL;
+    if (p->nseries == 0 && !any_map) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot needs at least one series of points");
         return QD_ERR_ARG;
     }

@@ -17,6 +17,15 @@ typedef struct qd__plot_series {
     double *x, *y;
 } qd__plot_series;
 
+/* A colour map (qd_plot_add_map): nx x ny values over a grid, and its
+ * value range (zmin == zmax when constant; both NaN when every value is). */
+typedef struct qd__plot_map {
+    char *label;
+    size_t nx, ny;
+    double *x, *y, *z; /* z[j*nx + i] at (x[i], y[j]) */
+    double zmin, zmax;
+} qd__plot_map;
+
 /* A panel: its labels, and (after qd_plot_layout) its plot area and what
  * maps data onto it. */
 typedef struct qd__plot_panel {
@@ -27,6 +36,7 @@ typedef struct qd__plot_panel {
     double x0, x1, y0, y1;             /* the data range it shows */
     double legend_top;                 /* the legend strip's top */
     size_t legend_rows;
+    qd__plot_map *map;                 /* NULL: none */
 } qd__plot_panel;
 
 struct qd_plot {
@@ -55,5 +65,12 @@ double qd__plot_text_width(const char *text, double size);
  * row[i] and x offset xoff[i] of series i (either may be NULL); returns the
  * row count (0 without labels). */
 size_t qd__plot_legend_rows(const qd_plot *p, size_t k, double width, size_t *row, double *xoff);
+
+/* The map's cells: the edges of cell i along an axis of n points v,
+ * halfway to its neighbours (the end cells as wide as the next one in). */
+void qd__plot_map_edges(size_t n, const double *v, size_t i, double *lo, double *hi);
+void qd__plot_map_free(qd__plot_map *m);
+/* Width the colour bar takes at a panel's right, in pixels. */
+#define QD__PLOT_BAR_ROOM 100.0
 
 #endif
