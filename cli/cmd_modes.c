@@ -409,18 +409,7 @@ static void json_modes(modes_run *r, cli_json *j) {
     for (size_t k = 0; res->conservative && k < n; k++) {
         double w2 = res->omega2[k];
         cli_json_begin_object(j);
-        cli_json_key(j, "omega2");
-        cli_json_number(j, w2);
-        cli_json_key(j, "omega");
-        if (w2 >= 0)
-            cli_json_number(j, sqrt(w2));
-        else
-            cli_json_null(j);
-        cli_json_key(j, "period");
-        if (w2 > 0)
-            cli_json_number(j, 2 * PI / sqrt(w2));
-        else
-            cli_json_null(j);
+        cli_json_frequency(j, w2);
         cli_json_key(j, "multiplicity");
         cli_json_number(j, (double)qd_modes_multiplicity(res, k));
         cli_json_key(j, "shape");

@@ -278,3 +278,18 @@ void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf
     else
         cli_state_put_result(b, p->q[j]);
 }
+
+void cli_json_frequency(cli_json *j, double w2) {
+    cli_json_key(j, "omega2");
+    cli_json_number(j, w2);
+    cli_json_key(j, "omega");
+    if (w2 >= 0)
+        cli_json_number(j, sqrt(w2));
+    else
+        cli_json_null(j);
+    cli_json_key(j, "period");
+    if (w2 > 0)
+        cli_json_number(j, 2 * 3.14159265358979323846 / sqrt(w2));
+    else
+        cli_json_null(j);
+}

@@ -8,6 +8,7 @@
 #define QDOT_CLI_LINEAR_CLI_H
 
 #include "cli.h"
+#include "json.h"
 #include "model_file.h"
 #include "qdot/equilibria.h"
 #include "qdot/modes.h"
@@ -81,5 +82,9 @@ int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json);
 int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about);
 /* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json);
+
+/* A mode's "omega2", "omega" and "period" keys (null where w^2 < 0 has no
+ * frequency, or w^2 = 0 no period). */
+void cli_json_frequency(cli_json *j, double w2);
 
 #endif

@@ -12,8 +12,6 @@
 #include <string.h>
 #include <time.h>
 
-static const double PI = 3.14159265358979323846;
-
 static const char *kind_name(qd_mode_kind k) {
     switch (k) {
     case QD_MODE_TRANSLATION:
@@ -363,26 +361,11 @@ void cli_sym_put_json(const cli_sym_run *s, const qd_eom *e, cli_json *j) {
     cli_json_end_object(j);
 }
 
-static void json_frequency(cli_json *j, double w2) {
-    cli_json_key(j, "omega2");
-    cli_json_number(j, w2);
-    cli_json_key(j, "omega");
-    if (w2 >= 0)
-        cli_json_number(j, sqrt(w2));
-    else
-        cli_json_null(j);
-    cli_json_key(j, "period");
-    if (w2 > 0)
-        cli_json_number(j, 2 * PI / sqrt(w2));
-    else
-        cli_json_null(j);
-}
-
 static void json_sym_mode(const qd_symmetry *y, const qd_eom *e, size_t k, cli_json *j) {
     char lab[32];
     qd_symmetry_block_label(y, y->mode_block[k], lab, sizeof lab);
     cli_json_begin_object(j);
-    json_frequency(j, y->omega2[k]);
+    cli_json_frequency(j, y->omega2[k]);
     cli_json_key(j, "irrep");
     cli_json_string(j, lab);
     cli_json_key(j, "degeneracy");
@@ -406,7 +389,7 @@ void cli_sym_json_modes(const cli_sym_run *s, const qd_eom *e, cli_json *j) {
         char lab[32];
         snprintf(lab, sizeof lab, "k=%zu", s->cyc.harmonic[k]);
         cli_json_begin_object(j);
-        json_frequency(j, s->cyc.omega2[k]);
+        cli_json_frequency(j, s->cyc.omega2[k]);
         cli_json_key(j, "irrep");
         cli_json_string(j, lab);
         cli_json_key(j, "harmonic");

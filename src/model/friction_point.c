@@ -160,28 +160,12 @@ static size_t slips(qd_ctx *c, const geom *g, E *s) {
 }
 
 static bool add_slip_constraint(parser *p, const char *point, size_t i, E e, token at) {
-    qd_model *m = p->m;
-    char name[96], what[112];
+    char name[96];
     snprintf(name, sizeof name, "%.60s_slip%zu", point, i + 1);
-    snprintf(what, sizeof what, "constraint:%s", name);
-    if (qd__mdl_constraint_named(m, name))
+    if (qd__mdl_constraint_named(p->m, name))
         return qd__mdl_perr(p, at.off, at.len, "one friction statement per point",
                             "constraint '%s' exists already", name);
-    char *copy = qd__malloc(p->ctx, strlen(name) + 1);
-    if (copy)
-        strcpy(copy, name);
-    size_t n = m->ncons;
-    if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy)) {
-        qd__free(copy);
-        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
-    }
-    if (!qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof e, &e)) {
-        m->con_names[n - 1] = NULL;
-        qd__free(copy);
-        return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
-    }
-    return qd__mdl_add_where(m, what, at.off, at.len) ||
-           qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
+    return qd__mdl_push_constraint(p, name, e, at.off, at.len);
 }
 
 /* The contact of point (r) on constraint ci. */

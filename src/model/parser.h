@@ -342,6 +342,10 @@ const body *qd__mdl_expect_body(parser *p, const char *what);
 /* stmt.c: shared by the statements in body.c and impulse.c */
 bool qd__mdl_expect_at(parser *p, const char *stmt);  /* stmt: the usage, for the hint */
 bool qd__mdl_constraint_named(const qd_model *m, const char *name);
+/* Append constraint c = 0 named name (copied), its place in the text at
+ * (off, len); an error there when out of memory. */
+bool qd__mdl_push_constraint(parser *p, const char *name, const qd_expr *c, size_t off,
+                             size_t len);
 /* NAME '[' COORD ']' '=' from NAME: the coordinate's index, with the '='
  * consumed; -1 after an error (usage is the hint). */
 int qd__mdl_coord_subscript(parser *p, const char *usage);

@@ -297,28 +297,6 @@ static void constraint_names(const qd_model *m, const char *body, char names[3][
     }
 }
 
-static bool add_constraint(parser *p, const rolling *r, const char *name, E e) {
-    qd_model *m = p->m;
-    char what[96];
-    snprintf(what, sizeof what, "constraint:%.80s", name);
-    char *copy = qd__malloc(p->ctx, strlen(name) + 1);
-    if (copy)
-        strcpy(copy, name);
-    size_t n = m->ncons;
-    if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy)) {
-        qd__free(copy);
-        return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
-    }
-    if (!qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof e, &e)) {
-        m->con_names[n - 1] = NULL;
-        qd__free(copy);
-        return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
-    }
-    if (!qd__mdl_add_where(m, what, r->name.off, r->name.len))
-        return qd__mdl_perr(p, r->name.off, r->name.len, NULL, "out of memory");
-    return true;
-}
-
 /* idx[i]: the model's index of constraint i (slip 1, slip 2, gap), or
  * (size_t)-1 where it vanishes identically and is not added. */
 static bool generate(parser *p, const rolling *r, size_t idx[3]) {
@@ -345,7 +323,7 @@ static bool generate(parser *p, const rolling *r, size_t idx[3]) {
             return qd__mdl_perr(p, r->name.off, r->name.len, "check the surface and the body's position",
                         "the body can never touch the surface: the gap is %g",
                         qd_number_value(e[i]));
-        if (!add_constraint(p, r, names[i], e[i]))
+        if (!qd__mdl_push_constraint(p, names[i], e[i], r->name.off, r->name.len))
             return false;
         idx[i] = p->m->ncons - 1;
     }

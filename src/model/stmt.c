@@ -502,10 +502,27 @@ static bool constraint_named(const qd_model *m, const char *name) {
            in_list(m->prescribed, m->nprescribed, name) || qd__mdl_isoperimetric_named(m, name);
 }
 
-static bool add_constraint_where(qd_model *m, const char *name, token at) {
-    char what[80];
-    snprintf(what, sizeof what, "constraint:%s", name);
-    return qd__mdl_add_where(m, what, at.off, at.len);
+bool qd__mdl_push_constraint(parser *p, const char *name, const qd_expr *c, size_t off,
+                             size_t len) {
+    qd_model *m = p->m;
+    char *copy = qd__malloc(p->ctx, strlen(name) + 1);
+    if (copy)
+        strcpy(copy, name);
+    size_t n = m->ncons;
+    if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy)) {
+        qd__free(copy);
+        return qd__mdl_perr(p, off, len, NULL, "out of memory");
+    }
+    if (!qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof c, &c)) {
+        m->con_names[n - 1] = NULL; /* not counted by ncons: the model does not free it */
+        qd__free(copy);
+        return qd__mdl_perr(p, off, len, NULL, "out of memory");
+    }
+    /* from here the model owns the name (ncons counts it) */
+    char what[112];
+    snprintf(what, sizeof what, "constraint:%.100s", name);
+    return qd__mdl_add_where(m, what, off, len) ||
+           qd__mdl_perr(p, off, len, NULL, "out of memory");
 }
 
 bool qd__mdl_constraint_named(const qd_model *m, const char *name) {
@@ -556,18 +573,8 @@ static bool stmt_constraint(parser *p) {
     bool friction = qd__mdl_friction_ahead(p);
     if (friction && !qd__mdl_friction_parse(p, &fc))
         return false;
-    char *copy = qd__malloc(p->ctx, strlen(name) + 1);
-    if (copy)
-        strcpy(copy, name);
-    size_t n = m->ncons;
-    if (!copy || !qd__mdl_push(m->ctx, (void **)&m->con_names, &n, sizeof copy, &copy) ||
-        !qd__mdl_push(m->ctx, (void **)&m->cons, &m->ncons, sizeof c, &c)) {
-        qd__free(copy); /* not counted by ncons: the model does not free it */
-        return qd__mdl_perr(p, off, 1, NULL, "out of memory");
-    }
-    /* from here the model owns the name (ncons counts it) */
-    if (!add_constraint_where(m, name, named ? at : (token){TK_EOF, off, 1}))
-        return qd__mdl_perr(p, off, 1, NULL, "out of memory");
+    if (!qd__mdl_push_constraint(p, name, c, named ? at.off : off, named ? at.len : 1))
+        return false;
     size_t ci = m->ncons - 1;
     if (friction && !qd__mdl_friction_add(p, &fc, name, QD_CONTACT_CONSTRAINT, &ci, 1))
         return false;
