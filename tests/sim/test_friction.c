@@ -36,7 +36,9 @@
  *     on the belt, a moving surface, E + dissipated - surface_work = E(0)
  *     over eight limit cycles, the belt's power k x v while the block
  *     sticks and mu_k m g v while it slips, and a cycle's work in closed
- *     form; on the fixed floor surface_work is exactly 0 and no column;
+ *     form; a block sliding in a rising lift (a rheonomic holonomic floor
+ *     as the normal constraint) gains m g c t from it; on the fixed floor
+ *     surface_work is exactly 0 and no column;
  *   - the errors: friction on a holonomic constraint, a negative
  *     coefficient (line and column), an unknown normal constraint, a
  *     symplectic method.
@@ -468,6 +470,32 @@ static void belt_energy_balance(void **state) {
     sf_free(f);
 }
 
+/* A rheonomic holonomic constraint: a block sliding on the floor of a lift
+ * that rises at c (floor: y = c t, a0 = dphi/dt = -c), the friction's normal
+ * force the floor's multiplier, m g (no acceleration).  The floor lifts the
+ * block, power -lambda a0 = m g c whether it slides or sticks, so
+ * surface_work = m g c t (the potential energy gained), while friction takes
+ * m v0^2/2 until it stops at v0/(mu g).  The friction row has no a0: the
+ * work comes through the normal constraint alone. */
+static void lift_floor_work(void **state) {
+    (void)state;
+    double m = 2, c = 0.7, mu = 0.3, v0 = 1.5, t = 1;
+    sim_fix *f = load("coordinates x, y\n"
+                      "parameters m = 2, g = 9.81, c = 0.7, mu = 0.3\n"
+                      "particle m at (x, y, 0)\n"
+                      "V = m*g*y\n"
+                      "constraint floor: y = c*t\n"
+                      "constraint slip: x' = 0 friction mu normal floor\n"
+                      "initial x' = 1.5, y' = 0.7\n");
+    assert_int_equal(sf_run(f, QD_SIM_DOP853, t, 0, 1e-12, false), QD_OK);
+    one_switch(f, v0 / (mu * G));
+    near(f->stats.friction_dissipated, m * v0 * v0 / 2, 1e-12, "the kinetic energy slid away");
+    near(f->stats.surface_work, m * G * c * t, 1e-12, "m g c t");
+    near(col(f, f->ev_row[0], "surface_work"), m * G * c * f->ev_t[0], 1e-12, "at the stop");
+    assert_true(f->stats.energy_balance_error < 1e-8);
+    sf_free(f);
+}
+
 /* Two contacts: block B (m) on block A (M) on the floor; A set moving at
  * v0, B at rest.  Both slip: B speeds up at mu2 g, A slows at
  * a = (mu2 m + mu1 (M + m)) g / M, until their speeds meet at
@@ -794,7 +822,8 @@ int main(void) {
         cmocka_unit_test(block_slides),         cmocka_unit_test(block_stops_and_sticks),
         cmocka_unit_test(block_turns_back),     cmocka_unit_test(painleve_rod),
         cmocka_unit_test(rod_small_mu),         cmocka_unit_test(errors),
-        cmocka_unit_test(belt_limit_cycle),     cmocka_unit_test(belt_energy_balance),     cmocka_unit_test(stacked_together),
+        cmocka_unit_test(belt_limit_cycle),     cmocka_unit_test(belt_energy_balance),
+        cmocka_unit_test(lift_floor_work),      cmocka_unit_test(stacked_together),
         cmocka_unit_test(stacked_overtakes),    cmocka_unit_test(point_on_incline),
         cmocka_unit_test(point_on_plane_3d),    cmocka_unit_test(point_in_bowl),
         cmocka_unit_test(threads_share_a_system), cmocka_unit_test(painleve_rod_two_modes),
