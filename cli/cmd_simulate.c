@@ -175,6 +175,8 @@ static void friction_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st)
     cli_json_number(j, st->friction_dissipated);
     cli_json_key(j, "energy_balance_error");
     cli_json_number(j, st->energy_balance_error);
+    cli_json_key(j, "surface_work");
+    cli_json_number(j, st->surface_work);
     cli_json_key(j, "transitions");
     cli_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
@@ -196,9 +198,13 @@ static void friction_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st)
 static void friction_summary(const cli_sim *c, const qd_sim_stats *st) {
     if (!qd_sim_ncontacts(c->s))
         return;
+    /* the surfaces' work only where they moved: fixed ones print as before */
+    char work[64] = "";
+    if (st->surface_work != 0)
+        snprintf(work, sizeof work, ", work done by moving surfaces %.6g", st->surface_work);
     fprintf(stderr, "qdot: simulate: %zu stick/slip transition%s, energy dissipated by "
-                    "friction %.6g, energy balance error %.3g\n",
-            st->transitions, st->transitions == 1 ? "" : "s", st->friction_dissipated,
+                    "friction %.6g%s, energy balance error %.3g\n",
+            st->transitions, st->transitions == 1 ? "" : "s", st->friction_dissipated, work,
             st->energy_balance_error);
 }
 

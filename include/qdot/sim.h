@@ -248,12 +248,18 @@ typedef struct qd_sim_stats {
     /* Coulomb friction (the model's contacts, qdot/model.h): the stick/slip
      * switches, the energy friction dissipated (integrated with the state:
      * the power mu_k |N| |v_slip| of each slipping contact), and
-     * max_t |E(t) + dissipated(t) - E(0)| / max(|E(0)|, max T), which
-     * energy_error_max then equals (it holds to the tolerance when the
-     * constraints do no work: no t in them). */
+     * max_t |E(t) + dissipated(t) - surface_work(t) - E(0)| / max(|E(0)|,
+     * max T), which energy_error_max then equals.  surface_work (at the
+     * end of the run) is the work the constraints' own motion did on the
+     * system, the integral of -sum_c lambda_c a0_c over every constraint
+     * A q' + a0 = 0 (a belt under a sticking block, the part of a slipping
+     * one's slip velocity that is not from q'); 0 when no constraint has
+     * an a0.  The balance holds to the tolerance for L without explicit t
+     * and without forces or a dissipation function. */
     size_t transitions;
     double friction_dissipated;
     double energy_balance_error;
+    double surface_work;
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the

@@ -174,7 +174,8 @@ class SimStats(Structure):
                 ("impacts", c_size_t), ("impact_energy_lost", c_double),
                 ("in_contact", c_bool), ("at_rest", c_bool), ("chattering", c_bool),
                 ("contact", c_size_t), ("transitions", c_size_t),
-                ("friction_dissipated", c_double), ("energy_balance_error", c_double)] + _TAIL
+                ("friction_dissipated", c_double), ("energy_balance_error", c_double),
+                ("surface_work", c_double)] + _TAIL
 
 
 class StateSpace(Structure):

@@ -14,7 +14,11 @@
  * lambda_i + mu_k sn u_i lambda_N = 0, and the solve gives friction and
  * normal force together (the Painleve rod's coupling).  The dissipated
  * energy is integrated as one more state, y[2n], with the power
- * -sum lambda_i v_i = mu_k |N| |v| >= 0.
+ * -sum lambda_i v_i = mu_k |N| |v| >= 0.  On a moving surface (a0 != 0
+ * in some row A q' + a0 = 0) the work the surface's motion does, the
+ * integral of -sum lambda a0, is y[2n + 1]: the balance is then
+ * E + dissipated - surface_work = E0 (docs/design.md, "the energy balance
+ * on a moving surface").
  */
 #include "simint.h"
 #include "../base/mem.h"
@@ -113,8 +117,12 @@ qd_status qd__fric_setup(qd_sim *s) {
         if (st != QD_OK)
             return st;
     }
+    for (size_t c = 0; c < s->m; c++)
+        s->rheo = s->rheo || !qd_is_zero(s->cons[c].a0);
     return compile_fprog(s);
 }
+
+size_t qd__fric_nextra(const qd_sim *s) { return s->nfc ? 1 + (s->rheo ? 1 : 0) : 0; }
 
 void qd__fric_free(qd_sim *s) {
     qd_prog_free(s->fprog);
@@ -251,6 +259,20 @@ double qd__fric_power(const qd_sim *s) {
         for (size_t i = 0; i < fc->ncon; i++)
             P -= lambda[fc->con[i]] * f[3 + i];
     }
+    return P;
+}
+
+/* A slipping row's lambda is its friction force and its slip velocity
+ * A q' + a0: lambda . A q' = lambda s - lambda a0 splits the friction's
+ * power on the system into the dissipation and the surface's share, so one
+ * sum over every row serves both modes. */
+double qd__fric_surface_power(qd_sim *s) {
+    const double *lambda = s->rhs + s->n;
+    qd_prog_eval(s->con, s->con_w, s->in, s->con_out);
+    const double *a0 = s->con_out + s->m * s->n;
+    double P = 0;
+    for (size_t c = 0; c < s->m; c++)
+        P -= lambda[c] * a0[c];
     return P;
 }
 

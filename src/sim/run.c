@@ -95,9 +95,10 @@ static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool 
     qd_sim *s = r->s;
     size_t n = s->n;
     const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
-    /* friction's share, integrated as y[2n]: E + dissipated = E0 */
-    double dissipated = s->fr ? y[2 * n] : 0;
-    ms->dEmax = fmax(ms->dEmax, fabs(hT[0] + dissipated - (ms->E0 - ms->lost)));
+    /* friction's share, integrated as y[2n], and a moving surface's work,
+     * y[2n + 1]: E + dissipated - surface_work = E0 */
+    double dissipated = s->fr ? y[2 * n] : 0, work = s->fr && s->rheo ? y[2 * n + 1] : 0;
+    ms->dEmax = fmax(ms->dEmax, fabs(hT[0] + dissipated - work - (ms->E0 - ms->lost)));
     ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
     if (!s->m)
         return;
@@ -118,7 +119,7 @@ static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool 
 }
 
 /* The friction columns from row[k]: slip_NAME, mode_NAME per contact, then
- * dissipated; the next free index. */
+ * dissipated (and surface_work on a moving surface); the next free index. */
 static size_t friction_columns(qd__run *r, double t, const double *y, double *row, size_t k) {
     qd_sim *s = r->s;
     qd__prog_at(s, s->fprog, s->fprog_w, t, y, r->qd, s->fprog_out);
@@ -127,6 +128,8 @@ static size_t friction_columns(qd__run *r, double t, const double *y, double *ro
         row[k++] = s->fr->mode[c].slip ? 1 : 0;
     }
     row[k++] = y[2 * s->n];
+    if (s->rheo)
+        row[k++] = y[2 * s->n + 1];
     return k;
 }
 
@@ -308,12 +311,13 @@ static qd_status initial_speeds(qd__run *r, const qd_sim_opts *o) {
 }
 
 /* The friction contacts' modes at the start (q in it->y, velocities qd);
- * nothing dissipated yet. */
+ * nothing dissipated, no work done by the surfaces yet. */
 static qd_status initial_modes(qd__run *r, double t0, const double *qd) {
     qd__integ *it = r->it;
     size_t n = r->s->n;
     memcpy(it->y + n, qd, n * sizeof *qd);
-    it->y[2 * n] = 0;
+    for (size_t i = 0; i < qd__fric_nextra(r->s); i++)
+        it->y[2 * n + i] = 0;
     return qd__fric_select(r, t0, it->y, (size_t)-1);
 }
 
@@ -696,7 +700,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     if (st != QD_OK)
         return st;
     qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
-                    .dim = s->se ? s->n + s->nu : 2 * s->n + (s->nfc ? 1 : 0),
+                    .dim = s->se ? s->n + s->nu : 2 * s->n + qd__fric_nextra(s),
                     .t = o->t0, .tend = o->t_end,
                     .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
                     .fixed = o->fixed, .h = o->fixed ? o->dt : 0, .precision = o->precision};
@@ -741,6 +745,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         stats->transitions = s->fr->ntr;
         stats->friction_dissipated = it.y ? it.y[2 * s->n] : 0;
         stats->energy_balance_error = stats->energy_error_max;
+        stats->surface_work = it.y && s->rheo ? it.y[2 * s->n + 1] : 0;
     }
     if (st == QD_OK && final)
         memcpy(final, r.row, ncols * sizeof *final);

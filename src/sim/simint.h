@@ -90,6 +90,8 @@ struct qd_sim {
     struct qd__fcon *fc;
     qd_prog *fprog;
     struct qd__fric_last *flast; /* qd_sim_run's transitions (qd_sim_transitions) */
+    bool rheo;      /* with friction: some constraint has a0 != 0 (a moving surface),
+                       so the surfaces' work is one more state, y[2n + 1] */
     /* ---- a run's own ---- */
     qd_ctx *ctx;
     double *in;
@@ -393,6 +395,13 @@ void qd__fric_saddle(qd_sim *s, double *K, double *rhs);
 /* The power the slipping contacts dissipate, -sum lambda s, after the
  * saddle solve at the state (lambda in s->rhs + n). */
 double qd__fric_power(const qd_sim *s);
+/* The power the surfaces' own motion puts into the system, -sum_c
+ * lambda_c a0_c over every constraint (sticking or slipping), after the
+ * saddle solve at the state in s->in. */
+double qd__fric_surface_power(qd_sim *s);
+/* The extra states a friction run integrates after (q, q'): dissipated,
+ * and surface_work when the surfaces move. */
+size_t qd__fric_nextra(const qd_sim *s);
 /* Friction event k (0 .. 2 nfc) at (t, y). */
 qd_status qd__fric_event(qd__run *r, size_t k, double t, const double *y, double *g);
 /* Does friction event k switch when it leaves ga (sticking: rising from

@@ -234,7 +234,7 @@ static char *second_name(const qd_sim *s, size_t j) {
 /* t, q, q', p (or, in speeds: t, q, u, q'), energy, res_c. */
 qd_status qd__sim_names(qd_sim *s) {
     size_t n = s->n, k = 0, nsecond = s->se ? s->nu : n;
-    s->nnames = 2 * n + nsecond + 2 + s->m + (s->nfc ? 2 * s->nfc + 1 : 0);
+    s->nnames = 2 * n + nsecond + 2 + s->m + (s->nfc ? 2 * s->nfc + qd__fric_nextra(s) : 0);
     s->names = qd__calloc(s->ctx, s->nnames, sizeof *s->names);
     s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
     s->con_err_last = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err_last);
@@ -260,6 +260,8 @@ qd_status qd__sim_names(qd_sim *s) {
     }
     if (s->nfc)
         s->names[k++] = dup_printf(s->ctx, "dissipated", "", "");
+    if (s->nfc && s->rheo)
+        s->names[k++] = dup_printf(s->ctx, "surface_work", "", "");
     for (size_t i = 0; i < k; i++)
         if (!s->names[i])
             return QD_ERR_NOMEM;
@@ -663,6 +665,8 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         memcpy(dy + n, s->rhs, n * sizeof *dy);
         if (s->fr)
             dy[2 * n] = qd__fric_power(s);
+        if (s->fr && s->rheo)
+            dy[2 * n + 1] = qd__fric_surface_power(s);
         return QD_OK;
     }
     set_state(s, t, y, y + n);

@@ -35,10 +35,13 @@ closed forms the tests use") has the derivations.
 - friction_stick_slip.qd: the belt-driven oscillator's stick/slip times, the
   limit cycle's period 2 D/vb + (pi + 2 b)/w and amplitude sqrt(D^2 + (vb/w)^2)
   about mu_k m g/k, and the energy friction dissipates, mu_k m g (vb t_slip +
-  2 D) per slip arc (the belt works on the block while it sticks, so there
-  E + dissipated is not E(0)).
+  2 D) per slip arc; the belt's work (`surface_work`), k (x^2 - x_a^2)/2 over
+  a stick that began at x_a (x' = vb: the integral of k x vb) and mu_k m g vb
+  per unit time of slip, row by row against that closed form, and the balance
+  E + dissipated - surface_work = E(0) row by row and in the stats.
 - In every run on a fixed surface: E(t) + dissipated(t) = E(0) row by row and
-  the stats `friction_dissipated`, `energy_balance_error`.
+  the stats `friction_dissipated`, `energy_balance_error`; no `surface_work`
+  column and the stat `surface_work` exactly 0.
 - Errors (exit 2, FILE:LINE:COL, the caret, a hint): friction on a holonomic
   constraint, a negative MU, an unknown normal constraint.
 
@@ -150,6 +153,9 @@ def check_balance(what, r, e0=None, scale=0.0):
                                                           r.rows[-1]['dissipated']))
         check(st['energy_balance_error'] < 1e-9,
               '%s: energy_balance_error %r' % (what, st['energy_balance_error']))
+        # a surface at rest does no work: the stat is 0 and no column is added
+        check('surface_work' not in r.cols and st.get('surface_work') == 0,
+              '%s: surface_work %r on a fixed surface' % (what, st.get('surface_work')))
     else:
         skip(what + ': JSON stats', '`friction_dissipated` and `energy_balance_error`')
 
@@ -595,12 +601,58 @@ def check_stick_slip(qdot):
             d += mu_k * m * g * (vb * u - (x_now - mu_s * m * g / k))
         check(close(r.rows[-1]['dissipated'], d, 1e-8),
               '%s: dissipated %r, want %r' % (what, r.rows[-1]['dissipated'], d))
+    belt_work(what, r, want, t_slip, (m, k, g, vb, mu_k, x0 - D))
     for x in r.rows:
         if x['t'] > t1 and abs(x["x'"] - vb) < 1e-9 and x['mode_' + r.contact()] == 0:
             if not check(abs(k * x['x']) <= mu_s * m * g * (1 + 1e-9),
                          '%s: sticks at t = %r with spring force %r > mu_s m g'
                          % (what, x['t'], k * x['x'])):
                 break
+
+
+def belt_closed_work(t, want, t_slip, p):
+    """The belt's work on the block by time t: sticking (x' = vb) the integral of
+    k x vb, k (x^2 - x_a^2)/2 from the stick's start x_a (0 at first, x0 - D after a
+    slip); slipping, the kinetic force mu_k m g times vb."""
+    m, k, g, vb, mu_k, x_low = p
+    starts = [a for a, fr, _ in want if fr == 'stick']
+    W, t0, xa = 0.0, 0.0, 0.0
+    for ts in starts:
+        end = min(t, ts)
+        if end > t0:
+            xe = xa + vb * (end - t0)
+            W += k * (xe * xe - xa * xa) / 2
+        if t <= ts:
+            return W
+        W += mu_k * m * g * vb * min(t - ts, t_slip)
+        if t <= ts + t_slip:
+            return W
+        t0, xa = ts + t_slip, x_low
+    xe = xa + vb * (t - t0)
+    return W + k * (xe * xe - xa * xa) / 2
+
+
+def belt_work(what, r, want, t_slip, p):
+    """surface_work against its closed form and E + dissipated - surface_work = E(0),
+    row by row (relative to the largest energy), and the JSON stats."""
+    if 'surface_work' not in r.cols:
+        skip(what + ': the belt\'s work', 'the `surface_work` column')
+        return
+    scale = max(abs(x['energy']) for x in r.rows)
+    worst = max(abs(x['surface_work'] - belt_closed_work(x['t'], want, t_slip, p))
+                for x in r.rows) / scale
+    check(worst < 1e-8, '%s: surface_work off its closed form by %.3g of E' % (what, worst))
+    e0 = r.rows[0]['energy']
+    worst = max(abs(x['energy'] + x['dissipated'] - x['surface_work'] - e0)
+                for x in r.rows) / scale
+    check(worst < 1e-8, '%s: E + dissipated - surface_work - E0 up to %.3g of E'
+          % (what, worst))
+    st = r.data
+    check(close(st.get('surface_work', math.nan), r.rows[-1]['surface_work'], 1e-12, scale)
+          and st['energy_balance_error'] < 1e-8,
+          '%s: stats surface_work %r (last row %r), energy_balance_error %r'
+          % (what, st.get('surface_work'), r.rows[-1]['surface_work'],
+             st['energy_balance_error']))
 
 
 # ---------------------------------------------------------------------------
