@@ -223,6 +223,7 @@ def main():
 
     for f in failures:
         print('FAIL:', f)
+    shutil.rmtree(tmp, ignore_errors=True)  # the native objects too
     return 1 if failures else 0
 
 
