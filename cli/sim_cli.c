@@ -570,6 +570,21 @@ static int load_native(cli_sim *c) {
     return QD_EXIT_OK;
 }
 
+/* taylor's own generated code: its recurrences, in every form, in double
+ * (the rhs is not what it evaluates). */
+static void load_native_taylor(cli_sim *c) {
+    if (c->opts.precision == 80 || c->opts.precision == 128) {
+        fprintf(stderr, "qdot: note: --native generates the taylor recurrences in double only; "
+                        "--precision %d keeps the interpreted ones\n", c->opts.precision);
+        return;
+    }
+    if (qd_sim_load_native_taylor(c->s, NULL, NULL) != QD_OK) {
+        fprintf(stderr, "qdot: note: --native unavailable (%s); using the compiled programs\n",
+                qd_ctx_message(c->ctx));
+        qd_ctx_clear_error(c->ctx);
+    }
+}
+
 /* The model's impacts at the initial state: a gap below 0 is bad input
  * (exit 2), said before any output as the run would say it. */
 static int check_gaps(cli_sim *c) {
@@ -640,15 +655,14 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         cli_diag_error("--input: %s", qd_ctx_message(c->ctx));
         rc = QD_EXIT_USAGE;
     }
-    if (rc == QD_EXIT_OK && a->native && c->se)
+    if (rc == QD_EXIT_OK && a->native && c->opts.method == QD_SIM_TAYLOR)
+        load_native_taylor(c);
+    else if (rc == QD_EXIT_OK && a->native && c->se)
         fprintf(stderr, "qdot: note: --native takes the multiplier form (--no-speeds); using "
                         "the compiled programs\n");
     else if (rc == QD_EXIT_OK && a->native && !c->e)
         fprintf(stderr, "qdot: note: --native takes models given by T and V or L; using the "
                         "compiled programs\n");
-    else if (rc == QD_EXIT_OK && a->native && c->opts.method == QD_SIM_TAYLOR)
-        fprintf(stderr, "qdot: note: --native does not reach the taylor method's recurrences "
-                        "(no generated C for them yet); using the compiled programs\n");
     else if (rc == QD_EXIT_OK && a->native && qd_sim_method_adaptive(c->opts.method))
         rc = load_native(c);
     return rc;

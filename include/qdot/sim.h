@@ -169,6 +169,18 @@ QD_API qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
 typedef int (*qd_sim_native_rhs)(double t, const double *y, const double *par, double *dydt);
 QD_API void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs);
 
+/* The taylor method's recurrences (the Taylor mode of the compiled
+ * programs, orders >= 1, in double) as generated C, compiled with $CC (else
+ * cc) into cache_dir (NULL: qd_native_load's default) or reused from
+ * there, dlopened, and used by every later QD_SIM_TAYLOR run at precision
+ * 64 (80 and 128 stay interpreted).  The same operations in the same order
+ * as the interpreter: the same results to the bit.  The object is the
+ * qd_sim's (closed by qd_sim_free) and serves every tolerance.  *cached (may
+ * be NULL): the object was already in the cache.  QD_ERR_UNSUPPORTED
+ * (reason recorded) when no compiler runs or compilation fails; the runs
+ * then stay interpreted.  Before qd_sim_compile. */
+QD_API qd_status qd_sim_load_native_taylor(qd_sim *s, const char *cache_dir, bool *cached);
+
 /* What the system is (known after qd_sim_new). */
 QD_API size_t qd_sim_ndof(const qd_sim *s);
 QD_API size_t qd_sim_ncon(const qd_sim *s);

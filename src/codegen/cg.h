@@ -22,4 +22,11 @@ void qd__cg_solvers(qd_buf *out, size_t nk, bool cholesky);
  * (recorded) when a parameter has no value. */
 qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_buf *c);
 
+/* Compile text (one C file) into cache (NULL: qd_native_load's default)
+ * unless its object is there, and dlopen it.  generator names the text's
+ * kind and version (part of the hash).  path: the object's name; cached:
+ * it was there.  QD_ERR_UNSUPPORTED when no compiler runs or it fails. */
+qd_status qd__native_object(qd_ctx *ctx, const char *text, const char *generator,
+                            const char *cache, char path[4096], bool *cached, void **handle);
+
 #endif

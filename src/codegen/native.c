@@ -161,7 +161,7 @@ static qd_status bind(qd_ctx *ctx, qd_native *out) {
 }
 
 static qd_status build_object(qd_ctx *ctx, const char *text, const char *dir, uint64_t hash,
-                              qd_native *out) {
+                              const char *path) {
     char src[4200], tmp[4200], log[4200];
     snprintf(src, sizeof src, "%s/qdot-%016llx.c", dir, (unsigned long long)hash);
     snprintf(log, sizeof log, "%s/qdot-%016llx.log", dir, (unsigned long long)hash);
@@ -182,14 +182,40 @@ static qd_status build_object(qd_ctx *ctx, const char *text, const char *dir, ui
                      rc, head[0] ? ": " : "", head);
         return QD_ERR_UNSUPPORTED;
     }
-    if (rename(tmp, out->path) != 0) {
+    if (rename(tmp, path) != 0) {
         unlink(tmp);
-        qd_ctx_error(ctx, QD_ERR_ARG, "native code: cannot rename into %s: %s", out->path,
+        qd_ctx_error(ctx, QD_ERR_ARG, "native code: cannot rename into %s: %s", path,
                      strerror(errno));
         return QD_ERR_ARG;
     }
     unlink(log);
     return QD_OK;
+}
+
+/* The shared object of text in the cache (compiled unless there), dlopened.
+ * generator: part of the hash, the kind and version of the text. */
+qd_status qd__native_object(qd_ctx *ctx, const char *text, const char *generator,
+                            const char *cache, char path[4096], bool *cached, void **handle) {
+    char dir[4000];
+    *handle = NULL;
+    qd_status st = cache_dir(ctx, cache, dir, sizeof dir);
+    if (st != QD_OK)
+        return st;
+    const char *cc = getenv("CC");
+    uint64_t h = fnv1a(fnv1a(0xcbf29ce484222325ULL, generator), "\n" FLAGS "\n");
+    h = fnv1a(fnv1a(h, cc && *cc ? cc : "cc"), "\n");
+    h = fnv1a(h, text);
+    snprintf(path, 4096, "%s/qdot-%016llx.so", dir, (unsigned long long)h);
+    *cached = access(path, R_OK) == 0;
+    if (!*cached)
+        st = build_object(ctx, text, dir, h, path);
+    if (st == QD_OK && !(*handle = dlopen(path, RTLD_NOW | RTLD_LOCAL))) {
+        const char *why = dlerror();
+        qd_ctx_error(ctx, QD_ERR_ARG, "native code: cannot load %s: %s", path,
+                     why ? why : "unknown reason");
+        st = QD_ERR_ARG;
+    }
+    return st;
 }
 
 qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache,
@@ -200,29 +226,11 @@ qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const 
     if (!ctx || !m || !e)
         return QD_ERR_ARG;
     qd_buf text = QD_BUF_WITH(qd__ctx_allocator(ctx));
-    char dir[4000];
     qd_status st = qd__codegen(ctx, m, e, PREFIX, true, &text, NULL);
     if (st == QD_OK)
-        st = cache_dir(ctx, cache, dir, sizeof dir);
-    if (st != QD_OK) {
-        qd_buf_free(&text);
-        return st;
-    }
-    const char *cc = getenv("CC");
-    uint64_t h = fnv1a(0xcbf29ce484222325ULL, GENERATOR "\n" FLAGS "\n");
-    h = fnv1a(fnv1a(h, cc && *cc ? cc : "cc"), "\n");
-    h = fnv1a(h, qd_buf_str(&text));
-    snprintf(out->path, sizeof out->path, "%s/qdot-%016llx.so", dir, (unsigned long long)h);
-    out->cached = access(out->path, R_OK) == 0;
-    if (!out->cached)
-        st = build_object(ctx, qd_buf_str(&text), dir, h, out);
+        st = qd__native_object(ctx, qd_buf_str(&text), GENERATOR, cache, out->path,
+                               &out->cached, &out->handle);
     qd_buf_free(&text);
-    if (st == QD_OK && !(out->handle = dlopen(out->path, RTLD_NOW | RTLD_LOCAL))) {
-        const char *why = dlerror();
-        qd_ctx_error(ctx, QD_ERR_ARG, "native code: cannot load %s: %s", out->path,
-                     why ? why : "unknown reason");
-        st = QD_ERR_ARG;
-    }
     if (st == QD_OK)
         st = bind(ctx, out);
     if (st != QD_OK) {

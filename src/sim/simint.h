@@ -68,6 +68,10 @@ struct qd_sim {
     char **names;
     size_t nnames;
     qd_sim_native_rhs native;
+    /* the taylor method's generated recurrences (taylor_native.c) */
+    void *tay_handle;
+    void (*tay_native)(double *c, size_t stride, size_t k);
+    unsigned long tay_nreg, tay_nlive;
     double *con_err_last; /* m: qd_sim_run's last per-constraint residuals */
     /* unilateral contacts (impact.c): their gaps are events nev.. of aux;
      * imp gives each one's gradient dGAP/dq (n) and dGAP/dt */

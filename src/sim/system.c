@@ -10,6 +10,7 @@
  * sec. 8.1), so dp/dt = dL/dq + Q - dD/dq' at the solved q'.
  */
 #include "simint.h"
+#include "taylor_native.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -308,6 +309,7 @@ void qd_sim_free(qd_sim *s) {
     qd__free(s->con_err_last);
     qd__impact_free(s);
     qd__fric_free(s);
+    qd__taylor_native_free(s);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);

@@ -24,8 +24,7 @@
  * time and every coefficient in long double or __float128 (taylor_core.h is
  * written once over the type).
  */
-#include "simint.h"
-#include "sym/taylor_prog.h"
+#include "taylor_native.h"
 #include "base/mem.h"
 
 #include <math.h>
@@ -206,14 +205,14 @@ static qd_status alloc(tay *T, qd__integ *it) {
 /* The Taylor mode of the form's programs, the state and time varying. */
 static qd_status make_tay(tay *T, qd__integ *it) {
     qd_sim *s = it->s;
-    for (size_t i = 0; i < T->dim; i++)
-        T->var[T->in_of[i]] = true;
-    T->var[T->tin] = true;
-    const qd_prog *progs[2] = {s->hamilton ? s->mom : s->acc, s->force};
-    size_t np = s->hamilton ? 2 : 1;
+    const qd_prog *progs[2];
+    size_t np;
+    qd__taylor_inputs(s, progs, &np, T->var);
     T->tp = qd__tay_new(s->ctx, np, progs, T->var, T->pmax, prec_of(it->precision));
     if (!T->tp)
         return qd_ctx_status(s->ctx) != QD_OK ? qd_ctx_status(s->ctx) : QD_ERR_NOMEM;
+    if (!it->precision || it->precision == 64)
+        qd__tay_set_native(T->tp, qd__taylor_native_for(s, T->tp));
     size_t sz = T->ops->size;
     /* t = t0 + 1 (t - t0): coefficient 1 is 1, the rest 0 */
     char *tc = qd__tay_in(T->tp, T->tin);

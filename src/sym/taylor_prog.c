@@ -6,6 +6,7 @@
  */
 #include "prog_int.h"
 #include "taylor_prog.h"
+#include "taylor_int.h"
 #include "base/mem.h"
 
 #include <math.h>
@@ -13,40 +14,6 @@
 #ifdef QD_HAVE_QUADMATH
 #include <quadmath.h>
 #endif
-
-typedef enum top {
-    T_ADD, T_SUB, T_MUL, T_DIV, T_NEG, T_RECIP, T_SQRT, T_POWC, T_SINCOS, T_SINHCOSH,
-    T_TAN, T_TANH, T_ASIN, T_ACOS, T_ATAN, T_ATAN2, T_EXP, T_LOG, T_ABS, T_SIGN, T_STEP,
-    T_MULC, T_DIVC /* x * y with x flat, x / y with y flat: code only */
-} top;
-
-/* d = op(a, b); u: the auxiliary series (cos beside sin, ...), else d.
- * fa, fb: the operand is flat (its coefficients beyond 0 vanish). */
-typedef struct tins {
-    uint32_t op, d, a, b, u, w;
-    uint8_t fa, fb;
-} tins;
-
-/* An instruction as the recurrences run it: registers as offsets into the
- * workspace (register * stride), a flat factor or divisor as its own
- * operation, so the hot loop neither multiplies indices nor tests flags. */
-typedef struct tcode {
-    uint32_t op, d, u, w, a, b;
-} tcode;
-
-struct qd__tay {
-    qd__tay_prec prec;
-    size_t nin, nreg, stride, maxorder;
-    tins *ins;
-    tcode *code;
-    size_t nins;
-    uint32_t *live; /* the instructions whose result is not flat */
-    size_t nlive;
-    uint32_t *out;
-    uint8_t *oflat; /* per output: flat */
-    size_t nout;
-    void *work; /* nreg * stride coefficients */
-};
 
 #define NONE UINT32_MAX
 
@@ -411,7 +378,12 @@ void *qd__tay_out(qd__tay *tp, size_t j) { return reg_coef(tp, tp->out[j]); }
 
 void qd__tay_run(qd__tay *tp, size_t k) {
     switch (tp->prec) {
-    case QD__TAY_DOUBLE: run_d(tp, k); break;
+    case QD__TAY_DOUBLE:
+        if (k && tp->native)
+            tp->native(tp->work, tp->stride, k);
+        else
+            run_d(tp, k);
+        break;
     case QD__TAY_LONG: run_l(tp, k); break;
     case QD__TAY_QUAD:
 #ifdef QD_HAVE_QUADMATH
@@ -420,3 +392,5 @@ void qd__tay_run(qd__tay *tp, size_t k) {
         break;
     }
 }
+
+void qd__tay_set_native(qd__tay *tp, qd__tay_native fn) { tp->native = fn; }

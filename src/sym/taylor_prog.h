@@ -26,6 +26,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "qdot/eval.h"
+#include "qdot/print.h"
 
 typedef struct qd__tay qd__tay;
 
@@ -54,5 +55,18 @@ void *qd__tay_out(qd__tay *tp, size_t j);
 /* Coefficient k of every register from orders 0..k of the inputs and
  * orders < k of the registers. */
 void qd__tay_run(qd__tay *tp, size_t k);
+
+/* Generated C for orders k >= 1 (qd__tay_emit_c): c the double workspace,
+ * register r's coefficients at c + r * stride. */
+typedef void (*qd__tay_native)(double *c, size_t stride, size_t k);
+
+/* The C text of tp's recurrences of orders >= 1 in double, the same
+ * operations in the same order as qd__tay_run (so the same results to the
+ * bit): qdt_orderk (a qd__tay_native), and qdt_nreg, qdt_nlive, which a
+ * loader compares with the qd__tay it is given to (qd__tay_native_fits). */
+qd_status qd__tay_emit_c(const qd__tay *tp, qd_buf *out);
+bool qd__tay_native_fits(const qd__tay *tp, unsigned long nreg, unsigned long nlive);
+/* Orders >= 1 of a double workspace by fn from now on (NULL: interpreted). */
+void qd__tay_set_native(qd__tay *tp, qd__tay_native fn);
 
 #endif

@@ -18,13 +18,16 @@ Physics checked:
 - the exit statuses of --precision: a value other than 64, 80, 128, and a
   precision for another method, are usage errors (2); --precision 128 agrees
   with double to 1e-12 at t = 1;
-- --native prints the same rows (the recurrences are not generated C yet).
+- --native (the recurrences as generated C) prints the interpreter's rows to the bit,
+  in the four forms, compiles its object once, and falls back with a note.
 """
 import argparse
 import csv
 import io
 import json
 import math
+import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -50,9 +53,9 @@ initial x = 0.1, y = 0, x' = 0, y' = 4.358898943540674
 """
 
 
-def run(qdot, *args):
+def run(qdot, *args, env=None):
     p = subprocess.run([str(qdot), *map(str, args)], capture_output=True, text=True,
-                       timeout=300)
+                       timeout=300, env=env)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -64,6 +67,69 @@ def rows(text):
 def final(qdot, model, *args):
     rc, out, err = run(qdot, 'simulate', model, '--format', 'json', '--out', '/dev/null', *args)
     return rc, (json.loads(out) if rc == 0 else err)
+
+
+def cache_env(cache, **more):
+    return {**os.environ, 'XDG_CACHE_HOME': str(cache), **more}
+
+
+def objects(cache):
+    return sorted((cache / 'qdot').glob('*.so'))
+
+
+def native_checks(qdot, tmp, check):
+    """--native for taylor: the generated recurrences (src/sym/taylor_emit.c) do the
+    interpreter's operations in the interpreter's order, so every row is the same to the
+    bit; the object is compiled once and reused."""
+    dp = EX / 'double_pendulum.qd'
+    cache = tmp / 'cache'
+    have_cc = shutil.which(os.environ.get('CC', 'cc').split()[-1]) is not None
+    sleigh = tmp / 'sleigh.qd'
+    sleigh.write_text(SLEIGH)
+    cases = [('double pendulum', dp, ['--t-end', 20]),
+             ('bead on a turning wire (multiplier form)', EX / 'bead_wire_cartesian.qd',
+              ['--t-end', 2]),
+             ('Chaplygin sleigh (speeds form)', sleigh, ['--t-end', 5]),
+             ('Stark problem (given by H, (q, p) form)', EX / 'hj_stark.qd', ['--t-end', 1, '--rtol', 1e-13]),
+             ('Kepler e = 0.9', tmp / 'kepler.qd', ['--t-end', 20])]
+    (tmp / 'kepler.qd').write_text(KEPLER)
+    for name, model, extra in cases:
+        args = ['simulate', model, '--method', 'taylor', '--rtol', 1e-15, '--atol', 1e-15,
+                *extra]  # a later --rtol wins
+        ri = run(qdot, *args, env=cache_env(cache))
+        rn = run(qdot, *args, '--native', env=cache_env(cache))
+        check(ri[0] == 0 and rn[0] == 0, f'{name}: taylor runs failed: {ri[2]} {rn[2]}')
+        if ri[0] or rn[0]:
+            continue
+        check(ri[1] == rn[1] or not have_cc, f'{name}: --native changed the taylor rows')
+        (_, a), (_, b) = rows(ri[1]), rows(rn[1])
+        diff = max(abs(x - y) for ra, rb in zip(a, b) for x, y in zip(ra, rb))
+        check(len(a) == len(b) and len(a) >= 5 and diff <= 1e-12,
+              f'{name}: --native and interpreted differ by {diff} ({len(a)}, {len(b)} rows)')
+        check('unavailable' not in rn[2] or not have_cc, f'{name}: {rn[2]}')
+    objs = objects(cache)
+    check(len(objs) == len(cases) or not have_cc,
+          f'one object per model expected, the cache has {[o.name for o in objs]}')
+    if not objs:
+        return
+    # the second run finds the object: nothing is compiled, the file is not rewritten
+    before = [(o.name, o.stat().st_mtime_ns) for o in objects(cache)]
+    rc, out, err = run(qdot, 'simulate', dp, '--method', 'taylor', '--rtol', 1e-13,
+                       '--t-end', 5, '--native', env=cache_env(cache))
+    after = [(o.name, o.stat().st_mtime_ns) for o in objects(cache)]
+    check(rc == 0 and before == after,
+          f'another tolerance recompiled the object: {before} -> {after} {err}')
+    # no compiler: the same note as the rhs's, and the interpreted rows
+    base = ['simulate', dp, '--method', 'taylor', '--t-end', 3, '--rtol', 1e-14]
+    ri = run(qdot, *base, env=cache_env(tmp / 'nocc'))
+    rn = run(qdot, *base, '--native', env=cache_env(tmp / 'nocc', CC='/nonexistent/cc'))
+    check(rn[0] == 0 and 'note: --native unavailable' in rn[2] and rn[1] == ri[1],
+          f'--native without a compiler: {rn[0]} {rn[2]}')
+    # extended precision keeps the interpreter, and says so
+    ri = run(qdot, *base, '--precision', 80, env=cache_env(cache))
+    rn = run(qdot, *base, '--precision', 80, '--native', env=cache_env(cache))
+    check(rn[0] == 0 and 'double only' in rn[2] and rn[1] == ri[1],
+          f'--native --precision 80: {rn[0]} {rn[2]}')
 
 
 def main():
@@ -153,14 +219,11 @@ def main():
         diff = max(abs(res[0][1]['final'][k] - res[1][1]['final'][k]) for k in ('theta1', 'theta2'))
         check(diff < 1e-12, f'double pendulum, 64 and 128 bits differ by {diff} at t = 1')
 
-    # --native leaves taylor's run as it is (a note says the recurrences are not native)
-    res = [run(qdot, 'simulate', dp, '--t-end', 2, '--dt', 0.5, '--method', 'taylor', '--rtol',
-               1e-14, '--atol', 1e-14, *extra) for extra in ([], ['--native'])]
-    check(res[0][0] == 0 and res[1][0] == 0 and res[0][1] == res[1][1],
-          f'--native changed the taylor run: {res[0][1]!r} {res[1][1]!r} {res[1][2]}')
+    native_checks(qdot, tmp, check)
 
     for f in failures:
         print('FAIL:', f)
+    shutil.rmtree(tmp, ignore_errors=True)  # the native objects too
     return 1 if failures else 0
 
 
