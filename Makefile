@@ -63,6 +63,7 @@ bench:
 	/usr/bin/python3 bench/run_taylor.py build-bench
 	if [ -x build-bench/bench/quad_bench ]; then ./build-bench/bench/quad_bench; fi
 	./build-bench/bench/run_symmetry
+	/usr/bin/python3 bench/run_sweep.py build-bench
 	/usr/bin/python3 bench/run_sweep_mpi.py build-bench
 
 install: build
