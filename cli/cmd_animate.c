@@ -43,11 +43,9 @@ static int push(const char **list, size_t *n, const char *v, const char *opt) {
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     an_args *p = data;
-    int rc = cli_sim_option(argc, argv, i, &p->a);
-    if (rc == 1)
-        return QD_EXIT_OK;
-    if (rc > 100)
-        return rc - 100;
+    int rc;
+    if (cli_sim_took_option(argc, argv, i, &p->a, &rc))
+        return rc;
     const char *v;
     if ((v = cli_value(argc, argv, i, "-o")) || (v = cli_value(argc, argv, i, "--html")))
         p->html = v;

@@ -40,11 +40,9 @@ static int number(const char *opt, const char *v, double *out) {
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     ly_args *p = data;
-    int rc = cli_sim_option(argc, argv, i, &p->a);
-    if (rc == 1)
-        return QD_EXIT_OK;
-    if (rc > 100)
-        return rc - 100;
+    int rc;
+    if (cli_sim_took_option(argc, argv, i, &p->a, &rc))
+        return rc;
     const char *v;
     if ((v = cli_value(argc, argv, i, "--n"))) {
         if (number("--n", v, &p->n) != QD_EXIT_OK || p->n < 1 || p->n != floor(p->n) ||

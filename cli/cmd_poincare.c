@@ -70,11 +70,9 @@ static int sink(void *data, int event, const double *row) {
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     pc_args *p = data;
-    int rc = cli_sim_option(argc, argv, i, &p->a);
-    if (rc == 1)
-        return QD_EXIT_OK;
-    if (rc > 100)
-        return rc - 100;
+    int rc;
+    if (cli_sim_took_option(argc, argv, i, &p->a, &rc))
+        return rc;
     const char *v;
     if ((v = cli_value(argc, argv, i, "--section"))) {
         p->section = v;

@@ -90,11 +90,9 @@ static int sink(void *data, int event, const double *row) {
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     cli_sim_args *a = data;
-    int rc = cli_sim_option(argc, argv, i, a);
-    if (rc == 1)
-        return QD_EXIT_OK;
-    if (rc > 100)
-        return rc - 100;
+    int rc;
+    if (cli_sim_took_option(argc, argv, i, a, &rc))
+        return rc;
     const char *v;
     bool stop;
     if ((v = cli_value(argc, argv, i, "--format"))) {

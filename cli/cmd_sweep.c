@@ -110,11 +110,9 @@ static int own_option(int argc, char **argv, int *i, sweep_args *a) {
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     sweep_args *a = data;
-    int rc = cli_sim_option(argc, argv, i, &a->sim);
-    if (rc == 1)
-        return QD_EXIT_OK;
-    if (rc > 100)
-        return rc - 100;
+    int rc;
+    if (cli_sim_took_option(argc, argv, i, &a->sim, &rc))
+        return rc;
     if ((rc = cli_sweep_map_option(argc, argv, i, &a->map)) != 0)
         return rc == 1 ? QD_EXIT_OK : rc - 100;
     return own_option(argc, argv, i, a);

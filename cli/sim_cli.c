@@ -125,6 +125,12 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     return 0;
 }
 
+bool cli_sim_took_option(int argc, char **argv, int *i, cli_sim_args *a, int *rc) {
+    int r = cli_sim_option(argc, argv, i, a);
+    *rc = r > 100 ? r - 100 : QD_EXIT_OK;
+    return r != 0;
+}
+
 /* ---- expressions ---------------------------------------------------------- */
 
 static void trim(const char **a, const char **b) {

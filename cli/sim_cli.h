@@ -51,6 +51,9 @@ typedef struct cli_sim {
 /* One option shared by both commands at argv[*i]: 1 when it was one (and
  * taken), 0 when it is not, or an exit status (QD_EXIT_USAGE) + 100. */
 int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a);
+/* The same for a command's own option parser: true when argv[*i] was a
+ * shared option, taken (*rc = QD_EXIT_OK) or refused (*rc its exit status). */
+bool cli_sim_took_option(int argc, char **argv, int *i, cli_sim_args *a, int *rc);
 
 
 /* Load, --set, derive, compile, initial values, outputs and events, the

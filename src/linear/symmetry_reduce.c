@@ -238,6 +238,19 @@ typedef struct block_sol {
     double *tmp;         /* m*m + 2m scratch */
 } block_sol;
 
+/* x minus its components along the nb orthonormal vectors of length m
+ * stored one after another at basis (Gram-Schmidt, one vector at a time). */
+static void project_out(const double *basis, size_t nb, size_t m, double *x) {
+    for (size_t b = 0; b < nb; b++) {
+        const double *u = basis + b * m;
+        double d = 0;
+        for (size_t k = 0; k < m; k++)
+            d += u[k] * x[k];
+        for (size_t k = 0; k < m; k++)
+            x[k] -= d * u[k];
+    }
+}
+
 /* Replace the block's zero modes by the rigid motions projected on it,
  * where they lie in the zero eigenspace: translations first. */
 static void rigid_zero_modes(const qd_linear *lin, qd_symmetry *s, size_t b, block_sol *bs,
@@ -257,14 +270,7 @@ static void rigid_zero_modes(const qd_linear *lin, qd_symmetry *s, size_t b, blo
                     t += s->U[i * n + st + k] * lin->M[i * n + j] * v[j];
             c[k] = t;
         }
-        for (size_t a = 0; a < got; a++) {
-            const double *u = bs->V + (z0 + a) * m;
-            double d = 0;
-            for (size_t k = 0; k < m; k++)
-                d += u[k] * c[k];
-            for (size_t k = 0; k < m; k++)
-                c[k] -= d * u[k];
-        }
+        project_out(bs->V + z0 * m, got, m, c);
         for (size_t k = 0; k < m; k++)
             cn += c[k] * c[k];
         cn = sqrt(cn);
@@ -289,14 +295,7 @@ static void rigid_zero_modes(const qd_linear *lin, qd_symmetry *s, size_t b, blo
     for (size_t a = 0; a < z && next < z; a++) {
         double *u = bs->V + (z0 + next) * m, xn = 0;
         memcpy(x, orig + a * m, m * sizeof *x);
-        for (size_t p = 0; p < next; p++) {
-            const double *q = bs->V + (z0 + p) * m;
-            double d = 0;
-            for (size_t k = 0; k < m; k++)
-                d += q[k] * x[k];
-            for (size_t k = 0; k < m; k++)
-                x[k] -= d * q[k];
-        }
+        project_out(bs->V + z0 * m, next, m, x);
         for (size_t k = 0; k < m; k++)
             xn += x[k] * x[k];
         if (sqrt(xn) < 1e-6)
