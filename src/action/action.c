@@ -16,6 +16,7 @@
 #include "num/num.h"
 #include "qdot/hamilton.h"
 #include "qdot/mech.h"
+#include "../base/args.h"
 
 #define PI 3.14159265358979323846
 
@@ -298,6 +299,7 @@ static qd_status setup(qd_ctx *ctx, const qd_hj *h, qd_action *a) {
 qd_status qd_action_of_sep(qd_ctx *ctx, const qd_hj *h, const bool *angle, size_t nvals,
                            const qd_expr *const *syms, const double *vals,
                            const qd_action_opts *opts, qd_action *out) {
+    QD_ARGS_CTX(ctx, ctx && h && angle && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     qd_status st = setup(ctx, h, out);
     double *cv = st == QD_OK ? qd__calloc(ctx, 2 * h->nconst, sizeof *cv) : NULL;
     double *beta = cv ? cv + h->nconst : NULL;
@@ -414,6 +416,7 @@ static bool angles_given(qd_ctx *ctx, const qd_ham *hm, const qd_action_opts *op
 
 qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals, const qd_expr *const *syms,
                        const double *vals, const qd_action_opts *opts, qd_action *out) {
+    QD_ARGS_CTX(ctx, ctx && m && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     *out = (qd_action){0};
     qd_eom *e = NULL;
     qd_ham *hm = hamiltonian(ctx, m, &e);

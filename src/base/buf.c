@@ -1,6 +1,7 @@
 /* src/base/buf.c - the growable string of qdot/print.h. */
 #include "qdot/print.h"
 #include "mem.h"
+#include "args.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -8,6 +9,7 @@
 #include <string.h>
 
 void qd_buf_free(qd_buf *b) {
+    QD_ARGS(, b);
     qd__free(b->s);
     b->s = NULL;
     b->len = b->cap = 0;
@@ -15,6 +17,7 @@ void qd_buf_free(qd_buf *b) {
 }
 
 void qd_buf_clear(qd_buf *b) {
+    QD_ARGS(, b);
     b->len = 0;
     if (b->s)
         b->s[0] = '\0';
@@ -40,6 +43,7 @@ static bool reserve(qd_buf *b, size_t extra) {
 }
 
 void qd_buf_putn(qd_buf *b, const char *s, size_t n) {
+    QD_ARGS(, b && s);
     if (!reserve(b, n))
         return;
     memcpy(b->s + b->len, s, n);
@@ -47,9 +51,10 @@ void qd_buf_putn(qd_buf *b, const char *s, size_t n) {
     b->s[b->len] = '\0';
 }
 
-void qd_buf_puts(qd_buf *b, const char *s) { qd_buf_putn(b, s, strlen(s)); }
+void qd_buf_puts(qd_buf *b, const char *s) { QD_ARGS(, b && s); qd_buf_putn(b, s, strlen(s)); }
 
 void qd_buf_printf(qd_buf *b, const char *fmt, ...) {
+    QD_ARGS(, b && fmt);
     va_list ap;
     va_start(ap, fmt);
     int n = vsnprintf(NULL, 0, fmt, ap);
@@ -62,4 +67,4 @@ void qd_buf_printf(qd_buf *b, const char *fmt, ...) {
     b->len += (size_t)n;
 }
 
-const char *qd_buf_str(const qd_buf *b) { return b->s ? b->s : ""; }
+const char *qd_buf_str(const qd_buf *b) { QD_ARGS(NULL, b); return b->s ? b->s : ""; }

@@ -8,6 +8,7 @@
  * qd_diag; every caller shows it through qd_diag_format.
  */
 #include "diag.h"
+#include "args.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -57,6 +58,7 @@ static void caret(qd_buf *out, const char *text, size_t start, size_t off, size_
 }
 
 void qd_diag_format(const qd_diag *d, const char *file, const char *text, qd_buf *out) {
+    QD_ARGS(, d && out);
     const char *msg = d->message[0] ? d->message : qd_status_str(d->status);
     if (!d->located || !text) {
         qd_buf_printf(out, "%s: error: %s\n", file, msg);

@@ -16,6 +16,7 @@
  */
 #include "cg.h"
 #include "sym/node.h"
+#include "../base/args.h"
 
 #include <ctype.h>
 #include <stdio.h>
@@ -580,6 +581,7 @@ qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const cha
 
 qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                        qd_buf *c_text, qd_buf *h_text) {
+    QD_ARGS_CTX(ctx, ctx && m && e && prefix && c_text);
     qd_buf scratch = QD_BUF_WITH(qd__ctx_allocator(ctx));
     qd_status st = qd__codegen(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
     qd_buf_free(&scratch);

@@ -14,6 +14,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cg.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <dlfcn.h>
 #include <errno.h>
@@ -220,6 +221,7 @@ qd_status qd__native_object(qd_ctx *ctx, const char *text, const char *generator
 
 qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache,
                          qd_native *out) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
     if (!out)
         return QD_ERR_ARG;
     memset(out, 0, sizeof *out);

@@ -22,6 +22,7 @@
 #include "sym/node.h"
 #include "num/num.h"
 #include "qdot/speeds.h"
+#include "../base/args.h"
 
 #include <ctype.h>
 #include <stdio.h>
@@ -463,6 +464,7 @@ static qd_status check_args(qd_ctx *ctx, const qd_speeds_eom *e, const char *pre
 
 qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
                               const char *prefix, qd_buf *c_text, qd_buf *h_text) {
+    QD_ARGS_CTX(ctx, ctx && m && e && prefix && c_text);
     if (!ctx || !m || !e || !c_text)
         return QD_ERR_ARG;
     prefix = prefix ? prefix : "qdot_model";

@@ -18,6 +18,7 @@
 #include "mech/legendre.h"
 #include "qdot/hamilton.h"
 #include "qdot/mech.h"
+#include "../base/args.h"
 
 /* The working copy of what qd_ham gives: coordinates, momenta, p(q, q'). */
 typedef struct hj_in {
@@ -195,6 +196,7 @@ static bool conservative(qd_ctx *ctx, const qd_model *m) {
 }
 
 qd_hj *qd_hj_derive(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts) {
+    QD_ARGS(NULL, ctx && m);
     if (!ctx || !m || !conservative(ctx, m))
         return NULL;
     if (qd_model_nconstraints(m)) {

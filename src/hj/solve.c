@@ -23,6 +23,7 @@
 
 #include <stdio.h>
 #include "base/mem.h"
+#include "../base/args.h"
 
 /* P = a + b x + c x^2 exactly, with a, b, c free of x; false otherwise. */
 static bool quadratic(qd_ctx *ctx, const qd_expr *P, const qd_expr *x, const qd_expr **abc) {
@@ -153,6 +154,7 @@ static void solve_one(qd_ctx *ctx, qd_hj *h, size_t k) {
 }
 
 qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h) {
+    QD_ARGS_CTX(ctx, ctx && h);
     if (!ctx || !h || !h->separable) {
         if (ctx)
             qd_ctx_error(ctx, QD_ERR_ARG, "the motion needs a separated Hamilton-Jacobi equation");

@@ -13,6 +13,7 @@
 #include "impulse_priv.h"
 
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -120,6 +121,7 @@ static qd_status solve(const qd__imp *s, qd_impulse *r) {
 
 qd_status qd_impulse_solve(qd_ctx *ctx, const qd_model *m, const qd_impulse_opts *opts,
                            qd_impulse *out) {
+    QD_ARGS_CTX(ctx, ctx && m && out);
     if (out)
         *out = (qd_impulse){0};
     if (!ctx || !m || !out) {

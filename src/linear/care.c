@@ -18,6 +18,7 @@
  */
 #include "qdot/control.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdbool.h>
@@ -601,6 +602,7 @@ static qd_status publish(care_work *w, qd_care_result *out) {
 qd_status qd_care_solve(qd_ctx *ctx, size_t n, size_t m, const double *A,
                         const double *B, const double *Q, const double *R,
                         qd_care_result *out) {
+    QD_ARGS_CTX(ctx, ctx && A && B && Q && R && out);
     if (!out)
         return QD_ERR_ARG;
     memset(out, 0, sizeof *out);

@@ -15,6 +15,7 @@
  */
 #include "qdot/equilibria.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -188,6 +189,7 @@ static void pick(chooser *c, qd_equilibrium_choice *ch) {
 qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                                const qd_expr *const *syms, const double *vals,
                                qd_equilibrium_choice *out) {
+    QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     memset(out, 0, sizeof *out);
     qd_status st = qd_equilibria_find(ctx, e, m, nvals, syms, vals, NULL, &out->found);
     if (st != QD_OK)
@@ -247,6 +249,7 @@ static bool vanishes(qd_ctx *ctx, const qd_expr *f, size_t nvals, const qd_expr 
 bool qd_equilibrium_exact_in_parameters(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                                         size_t nvals, const qd_expr *const *syms,
                                         const double *vals, const qd_expr *const *q0) {
+    QD_ARGS(false, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && q0);
     size_t n = e->n, np = qd_model_nparams(m);
     const qd_expr **from = qd__calloc(ctx, 2 * n + 1, sizeof *from), **to = qd__calloc(ctx, 2 * n + 1, sizeof *to);
     double *moved = qd__calloc(ctx, nvals + 1, sizeof *moved);

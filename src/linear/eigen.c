@@ -15,6 +15,7 @@
  */
 #include "linear.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -261,6 +262,7 @@ done:
 }
 
 size_t qd_modes_multiplicity(const qd_modes_result *r, size_t j) {
+    QD_ARGS(0, r);
     if (!r->conservative || j >= r->n)
         return 0;
     double big = 0;
@@ -277,6 +279,7 @@ size_t qd_modes_multiplicity(const qd_modes_result *r, size_t j) {
 }
 
 qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out) {
+    QD_ARGS_CTX(ctx, ctx && lin && out);
     memset(out, 0, sizeof *out);
     size_t n = lin->n, nn = n * n;
     out->n = n;
@@ -318,6 +321,7 @@ qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out
 
 qd_status qd_modes_symbolic_omega2(qd_ctx *ctx, size_t n, const qd_expr *const *K,
                                    const qd_expr *const *M, const qd_expr **w2) {
+    QD_ARGS_CTX(ctx, ctx && K && M && w2);
     if (n == 1) {
         w2[0] = qd_simplify(ctx, qd_div(ctx, K[0], M[0]));
         return w2[0] ? QD_OK : qd_ctx_status(ctx);

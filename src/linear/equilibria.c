@@ -8,6 +8,7 @@
 #include "base/ptrmap.h"
 #include "linear.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -47,6 +48,7 @@ static void mark_angles(const qd_expr *x, const qd_eom *e, bool *angle, qd_ptrma
 
 qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi) {
+    QD_ARGS_CTX(ctx, ctx && e && m && angle && lo && hi);
     (void)ctx;
     qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     for (size_t j = 0; j < e->n; j++)
@@ -544,6 +546,7 @@ static bool exact_verified(qd_ctx *ctx, qd__lin *L, const exact *x, double ftol)
 qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                              const qd_expr *const *syms, const double *vals,
                              const qd_equilibria_opts *opts, qd_equilibria *out) {
+    QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     memset(out, 0, sizeof *out);
     qd_equilibria_opts o = opts ? *opts : (qd_equilibria_opts){0};
     size_t n = e->n;

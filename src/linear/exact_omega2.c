@@ -13,6 +13,7 @@
 #include "qdot/equilibria.h"
 #include "qdot/modes.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -36,6 +37,7 @@ static const qd_expr *at_values(qd_ctx *ctx, const qd_model *m, const qd_expr *w
 qd_status qd_modes_exact_omega2(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                                 const qd_expr *const *syms, const double *vals,
                                 const qd_expr *const *q0, const qd_expr **w2, bool *in_params) {
+    QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && q0 && w2 && in_params);
     size_t n = e->n;
     const qd_expr *K[4], *M[4];
     *in_params = false;

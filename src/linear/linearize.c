@@ -15,6 +15,7 @@
 
 #include "num/num.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -144,6 +145,7 @@ void qd_linear_free(qd_linear *l) {
 
 qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                           const qd_expr *const *syms, const double *vals, qd_linear *out) {
+    QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     (void)m;
     memset(out, 0, sizeof *out);
     if (!ctx || !e)
@@ -190,6 +192,7 @@ qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
 
 qd_status qd_linear_symbolic(qd_ctx *ctx, const qd_eom *e, const qd_expr *const *q0,
                              const qd_expr **Kout, const qd_expr **Mout) {
+    QD_ARGS_CTX(ctx, ctx && e && q0 && Kout && Mout);
     size_t n = e->n;
     const qd_expr **from = qd__malloc(ctx, (2 * n + 1) * sizeof *from);
     const qd_expr **to = qd__malloc(ctx, (2 * n + 1) * sizeof *to);

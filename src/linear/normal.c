@@ -5,6 +5,7 @@
  * Allocations: none.
  */
 #include "qdot/modes.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -14,6 +15,7 @@
 qd_status qd_modes_normal_coords(const qd_linear *lin, const qd_modes_result *r,
                                  const double *q0, const double *q, const double *qd,
                                  double *Q, double *Qd) {
+    QD_ARGS(QD_ERR_ARG, lin && r && q0 && q && qd && Q && Qd);
     size_t n = r->n;
     if (!r->conservative || !r->shapes || lin->n != n)
         return QD_ERR_ARG;
@@ -39,6 +41,7 @@ static void sort_ascending(size_t n, double *w) {
 }
 
 size_t qd_modes_frequencies(const qd_modes_result *r, double *w) {
+    QD_ARGS(0, r && w);
     size_t nw = 0;
     if (r->conservative) {
         for (size_t k = 0; k < r->n; k++)

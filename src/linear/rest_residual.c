@@ -7,12 +7,14 @@
  */
 #include "qdot/equilibria.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
 
 qd_status qd_eom_rest_residual(qd_ctx *ctx, const qd_eom *e, size_t nvals,
                                const qd_expr *const *syms, const double *vals, double *res) {
+    QD_ARGS_CTX(ctx, ctx && e && (nvals == 0 || syms) && (nvals == 0 || vals) && res);
     size_t n = e->n;
     /* M is wanted too: qd_eom_eval fills f beside it */
     double *f = qd__calloc(ctx, n + 1, sizeof *f), *M = qd__calloc(ctx, n * n + 1, sizeof *M);

@@ -21,6 +21,7 @@
 #include "qdot/equilibria.h"
 #include "qdot/stability.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -405,6 +406,7 @@ static qd_status run_scan(scan_run *r, const qd_scan_opts *o, double a, double b
 
 qd_status qd_modes_scan(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const char *param,
                         double a, double b, const qd_scan_opts *opts, qd_scan *out) {
+    QD_ARGS_CTX(ctx, ctx && e && m && param && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !e || !m || !param)
         return QD_ERR_ARG;
@@ -551,6 +553,7 @@ qd_status qd_stability_scan(qd_ctx *ctx, const qd_steady *s, const qd_model *m,
                             const bool *wfix, const bool *pfix, const bool *pguess,
                             const qd_steady_point *start, const qd_scan_opts *opts,
                             qd_scan *out) {
+    QD_ARGS_CTX(ctx, ctx && s && m && param && xfix && wfix && pfix && start && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !s || !m || !param || !start)
         return QD_ERR_ARG;

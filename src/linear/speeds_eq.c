@@ -26,6 +26,7 @@
 #include "qdot/speeds.h"
 #include "base/mem.h"
 #include "num/num.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -262,6 +263,7 @@ qd_status qd_speeds_equilibria_find(qd_ctx *ctx, const struct qd_speeds_eom *e,
                                     const qd_model *m, size_t nvals,
                                     const qd_expr *const *syms, const double *vals,
                                     const qd_equilibria_opts *opts, qd_speeds_equilibria *out) {
+    QD_ARGS_CTX(ctx, ctx && e && m && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !e || !m)
         return QD_ERR_ARG;

@@ -23,6 +23,7 @@
 #include "qdot/speeds.h"
 #include "base/mem.h"
 #include "num/num.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -230,6 +231,7 @@ static qd_status alloc_linear(qd_ctx *ctx, const qd_speeds_eom *e, qd_speeds_lin
 qd_status qd_speeds_linear_about(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
                                  const qd_expr *const *syms, const double *vals,
                                  qd_speeds_linear *out) {
+    QD_ARGS_CTX(ctx, ctx && e && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !e || (nvals && (!syms || !vals)))
         return QD_ERR_ARG;
@@ -333,6 +335,7 @@ static int verdict(qd_ctx *ctx, const qd_modes_result *r, const double *A) {
 }
 
 qd_status qd_speeds_modes_solve(qd_ctx *ctx, const qd_speeds_linear *lin, qd_modes_result *out) {
+    QD_ARGS_CTX(ctx, ctx && lin && out);
     memset(out, 0, sizeof *out);
     size_t d = lin->dim;
     out->n = d;
@@ -439,6 +442,7 @@ qd_status qd_speeds_modes_scan(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals
                                const qd_expr *const *syms, const double *vals,
                                const qd_expr *what, double a, double b,
                                const qd_scan_opts *opts, qd_scan *out) {
+    QD_ARGS_CTX(ctx, ctx && e && (nvals == 0 || syms) && (nvals == 0 || vals) && what && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !e || !what || (nvals && (!syms || !vals)))
         return QD_ERR_ARG;

@@ -18,6 +18,7 @@
  */
 #include "steady.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -227,6 +228,7 @@ static qd_status solve_modes(qd_ctx *ctx, const qd_linear *l, const double *C, c
 qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                                const qd_expr *const *syms, const double *vals,
                                const qd_steady_point *pt, qd_stability *out) {
+    QD_ARGS_CTX(ctx, ctx && s && (nvals == 0 || syms) && (nvals == 0 || vals) && pt && out);
     memset(out, 0, sizeof *out);
     out->n = s->nkeep;
     qd__steady_env env;

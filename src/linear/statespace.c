@@ -17,6 +17,7 @@
 #include "base/mem.h"
 #include "mech/mech.h"
 #include "num/num.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -328,6 +329,7 @@ static qd_status derive(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
 qd_status qd_linearize(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t npt,
                        const qd_expr *const *syms, const qd_expr *const *vals,
                        qd_statespace *out) {
+    QD_ARGS_CTX(ctx, ctx && e && m && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !e || !m)
         return QD_ERR_ARG;

@@ -15,6 +15,7 @@
 #include "../base/mem.h"
 
 #include "num/num.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -143,6 +144,7 @@ static qd_status free_equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
 
 qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t ncyc,
                             const qd_expr *const *cyc, bool driven) {
+    QD_ARGS(NULL, ctx && m && e && (ncyc == 0 || cyc));
     if (!e || !m || (ncyc && !cyc)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "qd_steady_derive: missing argument");
         return NULL;
@@ -469,6 +471,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                          const qd_expr *const *syms, const double *vals, const bool *xfix,
                          const bool *wfix, const bool *pfix, qd_steady_point *pt,
                          double *residual_out) {
+    QD_ARGS_CTX(ctx, ctx && s && (nvals == 0 || syms) && (nvals == 0 || vals) && xfix && wfix && pfix && pt);
     search S = {.ctx = ctx, .s = s};
     qd_status st = qd__steady_env_init(ctx, s, nvals, syms, vals, &S.env);
     if (st == QD_OK)

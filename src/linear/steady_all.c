@@ -20,6 +20,7 @@
 
 #include "base/ptrmap.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -685,6 +686,7 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                              const qd_expr *const *syms, const double *vals, const bool *xfix,
                              const bool *wfix, const bool *pfix, const bool *pguess,
                              const qd_steady_point *start, qd_steady_set *out) {
+    QD_ARGS_CTX(ctx, ctx && s && (nvals == 0 || syms) && (nvals == 0 || vals) && xfix && wfix && pfix && start && out);
     memset(out, 0, sizeof *out);
     bool had_nomem = qd__ctx_nomem(ctx);
     qd_steady_point pt = copy_point(ctx, s, start);

@@ -15,6 +15,7 @@
 #include "linear.h"
 
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -40,6 +41,7 @@ static bool shift_invariant(size_t n, size_t c, const double *A) {
 }
 
 size_t qd_cyclic_cell(const qd_linear *lin) {
+    QD_ARGS(0, lin);
     if (!lin)
         return 0;
     size_t n = lin->n;
@@ -176,6 +178,7 @@ static void sort_modes(qd_cyclic_modes *o) {
 }
 
 qd_status qd_cyclic_solve(qd_ctx *ctx, const qd_linear *lin, size_t cell, qd_cyclic_modes *out) {
+    QD_ARGS_CTX(ctx, ctx && lin && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !lin || cell == 0 || lin->n % cell || !shift_invariant(lin->n, cell, lin->M) ||
         !shift_invariant(lin->n, cell, lin->K)) {

@@ -8,6 +8,7 @@
 
 #include "base/mem.h"
 #include "group/group.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -200,6 +201,7 @@ static bool conservative(const qd_linear *lin) {
 
 qd_status qd_symmetry_from_ops(qd_ctx *ctx, const qd_linear *lin, size_t order,
                                const double *S, const double *R, qd_symmetry *out) {
+    QD_ARGS_CTX(ctx, ctx && lin && (order == 0 || S) && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !lin || !S || order == 0)
         return QD_ERR_ARG;
@@ -237,6 +239,7 @@ static qd_status find_ops(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
 qd_status qd_symmetry_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                            const qd_expr *const *syms, const double *vals,
                            const qd_linear *lin, qd_symmetry *out) {
+    QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && lin && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !lin)
         return QD_ERR_ARG;
@@ -315,6 +318,7 @@ static void class_base(const qd_symmetry *s, size_t c, char *buf, size_t cap) {
 }
 
 void qd_symmetry_class_name(const qd_symmetry *sym, size_t c, char *buf, size_t cap) {
+    QD_ARGS(, sym && buf);
     if (!sym || c >= sym->nclass || cap == 0) {
         if (cap)
             buf[0] = 0;
@@ -346,6 +350,7 @@ static size_t pair_letter(const char *x, const char *y) {
 }
 
 void qd_symmetry_block_label(const qd_symmetry *sym, size_t b, char *buf, size_t cap) {
+    QD_ARGS(, sym && buf);
     if (!sym || b >= sym->nblock || cap == 0) {
         if (cap)
             buf[0] = 0;

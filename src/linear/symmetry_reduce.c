@@ -14,6 +14,7 @@
 #include "linear.h"
 
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -427,6 +428,7 @@ static qd_status solve_blocks(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s)
 }
 
 qd_status qd_symmetry_reduce(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *sym) {
+    QD_ARGS_CTX(ctx, ctx && lin && sym);
     if (!ctx || !lin || !sym || !sym->order || lin->n != sym->n)
         return QD_ERR_ARG;
     qd_status st = reducible(ctx, sym);

@@ -12,12 +12,14 @@
 #include "qdot/zvc.h"
 #include "num/num.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
 qd_status qd_zvc_derive(qd_ctx *ctx, const qd_model *m, qd_eom *e, qd_zvc *out) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !m || !e)
         return QD_ERR_ARG;
@@ -94,6 +96,7 @@ static qd_status grid_values(qd_ctx *ctx, const qd_eom *e, const qd_expr *W,
 qd_status qd_zvc_curves(qd_ctx *ctx, const qd_eom *e, const qd_zvc *z, const qd_zvc_box *box,
                         size_t nvals, const qd_expr *const *syms, const double *vals,
                         double level, qd_contour *out) {
+    QD_ARGS_CTX(ctx, ctx && e && z && box && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !e || !z || !z->W || !box)
         return QD_ERR_ARG;

@@ -20,6 +20,7 @@
 
 #include "base/mem.h"
 #include "num/num.h"
+#include "../base/args.h"
 
 extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
 extern void dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a,
@@ -81,6 +82,7 @@ static qd_status compile_jacobian(qd_ctx *ctx, qd_lyap *l, const qd_eom *e) {
 }
 
 qd_lyap *qd_lyap_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    QD_ARGS(NULL, ctx && m && e);
     const char *why = refusal(m, e);
     if (why) {
         qd_ctx_error(ctx, QD_ERR_ARG, "%s", why);
@@ -114,7 +116,7 @@ void qd_lyap_free(qd_lyap *l) {
     qd__free(l);
 }
 
-size_t qd_lyap_ndof(const qd_lyap *l) { return l->n; }
+size_t qd_lyap_ndof(const qd_lyap *l) { QD_ARGS(0, l); return l->n; }
 
 /* ---- a run's workspace ------------------------------------------------------ */
 

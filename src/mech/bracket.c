@@ -4,9 +4,11 @@
  */
 #include <stdlib.h>
 #include "qdot/canonical.h"
+#include "../base/args.h"
 
 const qd_expr *qd_bracket(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                           const qd_expr *const *p, const qd_expr *F, const qd_expr *G) {
+    QD_ARGS(NULL, ctx && (n == 0 || q) && (n == 0 || p) && F && G);
     if (!F || !G)
         return NULL;
     const qd_expr *sum = qd_int(ctx, 0);
@@ -60,6 +62,7 @@ static qd_status check_zero(qd_ctx *ctx, size_t n, const qd_expr *const *q,
 qd_status qd_canonical_check(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                              const qd_expr *const *p, const qd_expr *const *Q,
                              const qd_expr *const *P, const qd_expr *t, qd_canon_verdict *v) {
+    QD_ARGS_CTX(ctx, ctx && (n == 0 || q) && (n == 0 || p) && (n == 0 || Q) && (n == 0 || P) && v);
     if (!v || !q || !p || !Q || !P) {
         qd_ctx_error(ctx, QD_ERR_ARG, "canonical check: missing argument");
         return QD_ERR_ARG;

@@ -15,6 +15,7 @@
 #include "qdot/canonical.h"
 #include "mech/mech.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 typedef struct gen_shape {
     bool x_is_q, y_is_Q;
@@ -130,6 +131,7 @@ qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *co
                       const qd_expr *const *old_p, const qd_expr *const *new_Q,
                       const qd_expr *const *new_P, const qd_expr *F, const qd_expr *t,
                       const qd_expr *H, qd_gen_result *out) {
+    QD_ARGS_CTX(ctx, ctx && old_q && old_p && new_Q && new_P && F && t && out);
     if (!out || !F || !old_q || !old_p || !new_Q || !new_P || n == 0 || type < QD_GEN_F1 ||
         type > QD_GEN_F4) {
         qd_ctx_error(ctx, QD_ERR_ARG, "generating function: bad argument");
@@ -181,6 +183,7 @@ qd_status qd_generate_f2(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                          const qd_expr *const *p, const qd_expr *const *Q,
                          const qd_expr *const *P, const qd_expr *F2, const qd_expr *t,
                          const qd_expr *H, qd_gen_result *out) {
+    QD_ARGS_CTX(ctx, ctx && (n == 0 || q) && (n == 0 || p) && (n == 0 || Q) && (n == 0 || P) && F2 && t && out);
     return qd_generate(ctx, QD_GEN_F2, n, q, p, Q, P, F2, t, H, out);
 }
 

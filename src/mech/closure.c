@@ -29,6 +29,7 @@
  */
 #include "mech.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -577,6 +578,7 @@ qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, cons
 }
 
 qd_status qd_eom_dof(qd_ctx *ctx, const qd_eom *e, qd_dof *d) {
+    QD_ARGS_CTX(ctx, ctx && e && d);
     size_t rank, rel, nint;
     const qd_expr *found[QD_DOF_MAXCOMB];
     *d = (qd_dof){e->n, 0, 0, e->n, e->n, 0, {NULL}};

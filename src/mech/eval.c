@@ -12,6 +12,7 @@
 
 #include "num/num.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -43,6 +44,7 @@ void qd_eom_prog_free(qd_eom_prog *p) {
 }
 
 qd_eom_prog *qd_eom_compile(qd_ctx *ctx, const qd_eom *e) {
+    QD_ARGS(NULL, ctx && e);
     qd_eom_prog *p = qd__calloc(ctx, 1, sizeof *p);
     size_t nout = qd__out_len(e);
     const qd_expr **outs = p ? outputs(ctx, e, nout) : NULL;
@@ -72,6 +74,7 @@ void qd_eom_work_free(qd_eom_work *w) {
 }
 
 qd_eom_work *qd_eom_work_new(qd_ctx *ctx, const qd_eom_prog *p) {
+    QD_ARGS(NULL, ctx && p);
     qd_eom_work *w = qd__calloc(ctx, 1, sizeof *w);
     if (!w) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory for an evaluation workspace");
@@ -122,6 +125,7 @@ static qd_status solve_mass(qd_ctx *ctx, const qd_eom *e, const double *out, dou
 qd_status qd_eom_prog_eval(qd_ctx *ctx, const qd_eom_prog *p, qd_eom_work *w, size_t nvals,
                            const qd_expr *const *syms, const double *vals, double *M, double *f,
                            double *qdd, double *lambda, double *R) {
+    QD_ARGS_CTX(ctx, ctx && p && w && (nvals == 0 || syms) && (nvals == 0 || vals) && qdd);
     const qd_eom *e = p->e;
     size_t n = e->n;
     if (w->p != p) {
@@ -170,6 +174,7 @@ qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
 qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr *const *syms,
                       const double *vals, double *M, double *f, double *qdd, double *lambda,
                       double *R) {
+    QD_ARGS_CTX(ctx, ctx && e && (nvals == 0 || syms) && (nvals == 0 || vals));
     qd_status st = qd__eom_compile(ctx, e);
     if (st != QD_OK)
         return st;

@@ -15,6 +15,7 @@
 
 #include "qdot/print.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
@@ -180,6 +181,7 @@ static qd_status derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
 }
 
 qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    QD_ARGS(NULL, ctx && m);
     if (!ctx || !m || (!e && !qd_model_hamiltonian_given(m)))
         return NULL;
     if (qd_model_hamiltonian_given(m)) {

@@ -20,6 +20,7 @@
 
 #include "mech.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #define DEFAULT_MAX_OPS 4000
 
@@ -123,6 +124,7 @@ static qd_status cyclic(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
 
 qd_status qd_integrals_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                               qd_int_cyclic *out, size_t *ncyclic) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out && ncyclic);
     if (!ctx || !m || !e || !out || !ncyclic)
         return QD_ERR_ARG;
     *ncyclic = 0;
@@ -328,6 +330,7 @@ static bool has_acceleration(const qd__intsys *s, const qd_expr *x) {
 
 qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *name, const qd_expr *expr,
                              qd_int_proposed *out) {
+    QD_ARGS_CTX(ctx, ctx && I && name && expr && out);
     if (!ctx || !I || !expr || !out)
         return QD_ERR_ARG;
     qd__intsys *s = I->priv;
@@ -363,6 +366,7 @@ void qd_integrals_free(qd_integrals *I) {
 
 qd_integrals *qd_integrals_derive(qd_ctx *ctx, const qd_model *m, qd_eom *e,
                                   const qd_integrals_opts *opts) {
+    QD_ARGS(NULL, ctx && m && e);
     if (!ctx || !m || !e)
         return NULL;
     qd_integrals *I = qd__calloc(ctx, 1, sizeof *I);

@@ -17,6 +17,7 @@
 #include "mech.h"
 #include "qdot/hamilton.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <assert.h>
 #include <math.h>
@@ -256,6 +257,7 @@ static qd_status derive_sys(qd_ctx *ctx, qd__sys *s, const qd_model *m, const qd
 }
 
 qd_eom *qd_eom_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom_opts *opts) {
+    QD_ARGS(NULL, ctx && m);
     if (!ctx || !m)
         return NULL;
     qd__sys s;
@@ -271,7 +273,7 @@ qd_eom *qd_eom_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom_opts *op
     return e;
 }
 
-qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) { return qd_eom_derive_opts(ctx, m, NULL); }
+qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) { QD_ARGS(NULL, ctx && m); return qd_eom_derive_opts(ctx, m, NULL); }
 
 /* ---- the system a model describes ---------------------------------------- */
 

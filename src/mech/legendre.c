@@ -16,6 +16,7 @@
  */
 #include "legendre.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -165,6 +166,7 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
 
 qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **pdef,
                                 const qd_expr **L) {
+    QD_ARGS_CTX(ctx, ctx && m && L);
     if (!ctx || !m || !L)
         return QD_ERR_ARG;
     *L = NULL;
@@ -188,6 +190,7 @@ qd_status qd_legendre_inverse_p(qd_ctx *ctx, const qd_model *m, const qd_expr **
 }
 
 const qd_expr *qd_legendre_inverse(qd_ctx *ctx, const qd_model *m) {
+    QD_ARGS(NULL, ctx && m);
     const qd_expr *L = NULL;
     return qd_legendre_inverse_p(ctx, m, NULL, &L) == QD_OK ? L : NULL;
 }

@@ -26,6 +26,7 @@
 #include "legendre.h"
 #include "../base/mem.h"
 #include "qdot/print.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -430,6 +431,7 @@ static qd_status regular(qd_ctx *ctx, const qd_model *m, const qd_expr **q, cons
 }
 
 qd_status qd_ham_regular(qd_ctx *ctx, const qd_model *m) {
+    QD_ARGS_CTX(ctx, ctx && m);
     if (!ctx || !m)
         return QD_ERR_ARG;
     if (qd_model_hamiltonian_given(m))

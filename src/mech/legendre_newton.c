@@ -10,6 +10,7 @@
  */
 #include "legendre.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -181,6 +182,7 @@ static void first_guess(const qd_ham *h, size_t nsyms, const qd_expr *const *sym
 
 qd_status qd_ham_velocities_at(qd_ctx *ctx, const qd_ham *h, size_t nsyms,
                                const qd_expr *const *syms, const double *vals, double *qd_out) {
+    QD_ARGS_CTX(ctx, ctx && h && (nsyms == 0 || syms) && (nsyms == 0 || vals) && qd_out);
     if (!ctx || !h || !qd_out || (nsyms && (!syms || !vals)))
         return QD_ERR_ARG;
     newton w = {0};

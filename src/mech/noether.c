@@ -14,6 +14,7 @@
  */
 #include "integrals_priv.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <ctype.h>
 #include <stdlib.h>
@@ -95,6 +96,7 @@ static qd_status field(qd_ctx *ctx, const qd__intsys *s, const qd_expr *const *x
 
 qd_status qd_integrals_noether(qd_ctx *ctx, qd_integrals *I, const char *name,
                                const qd_expr *const *xi, qd_noether *out) {
+    QD_ARGS_CTX(ctx, ctx && I && name && xi && out);
     if (!ctx || !I || !out)
         return QD_ERR_ARG;
     qd__intsys *s = I->priv;

@@ -24,6 +24,7 @@
 
 #include "qdot/print.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -145,6 +146,7 @@ qd_status qd_eom_reaction(qd_ctx *ctx, const qd_eom *e, const char *con,
                           const qd_expr *const r[3], size_t nvals, const qd_expr *const *syms,
                           const double *vals, const double *lambda, double F[3],
                           double *residual) {
+    QD_ARGS_CTX(ctx, ctx && e && con && r && (nvals == 0 || syms) && (nvals == 0 || vals) && lambda && F);
     size_t k, n = e->n;
     qd_status st = find(ctx, e, con, &k);
     if (st != QD_OK)

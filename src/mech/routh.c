@@ -18,6 +18,7 @@
 #include "mech.h"
 #include "base/diag.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
@@ -70,6 +71,7 @@ static qd_routh *routh_alloc(qd_ctx *ctx, size_t n, size_t nign) {
 /* ---- names and cyclicity ---------------------------------------------------- */
 
 const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char *name) {
+    QD_ARGS(NULL, ctx && m && name);
     size_t nc = qd_model_ncoords(m);
     const char **names = qd__malloc(ctx, (nc ? nc : 1) * sizeof *names);
     if (!names) {
@@ -102,6 +104,7 @@ static bool has(const qd_expr *x, const qd_expr *s) { return x && qd_has(x, s); 
 /* The statement that makes coordinate index j of e not cyclic, or NULL. */
 const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j,
                                 const char **why) {
+    QD_ARGS(NULL, ctx && m && e && why);
     const qd_expr *c = e->q[j], *cd = e->qd[j], *D = qd_model_dissipation(m);
     const qd_expr *Q = qd_model_force(m, j);
     (void)ctx;
@@ -445,11 +448,13 @@ static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh
 
 qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t nign,
                           const qd_expr *const *ign) {
+    QD_ARGS(NULL, ctx && m && e && (nign == 0 || ign));
     return qd_routh_derive_opts(ctx, m, e, nign, ign, NULL);
 }
 
 qd_routh *qd_routh_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t nign,
                                const qd_expr *const *ign, const qd_routh_opts *opts) {
+    QD_ARGS(NULL, ctx && m && e && (nign == 0 || ign));
     if (!ctx || !m || !e || (nign && !ign))
         return NULL;
     if (e->ncon || e->nelim) {
@@ -489,6 +494,7 @@ qd_routh *qd_routh_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom *e, 
  * the ignored velocities only, the kept ones passive among syms. */
 qd_status qd_routh_velocities_at(qd_ctx *ctx, const qd_routh *r, const qd_eom *e, size_t nsyms,
                                  const qd_expr *const *syms, const double *vals, double *out) {
+    QD_ARGS_CTX(ctx, ctx && r && e && (nsyms == 0 || syms) && (nsyms == 0 || vals) && out);
     if (!ctx || !r || !e || !out)
         return QD_ERR_ARG;
     const qd_expr **cd = arr(ctx, r->nign);

@@ -15,6 +15,7 @@
 #include "mech.h"
 
 #include "base/mem.h"
+#include "../base/args.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -243,6 +244,7 @@ static qd_status keep(qd_ctx *ctx, qd_eom *e, const qd_expr **x) {
 }
 
 qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
+    QD_ARGS_CTX(ctx, ctx && e);
     size_t N = e->n + e->ncon, w = N + 1;
     const qd_expr **A = qd__malloc(ctx, (N * w + 1) * sizeof *A), **acc = qd__calloc(ctx, N + 1, sizeof *acc);
     qd_status st = A && acc ? QD_OK : QD_ERR_NOMEM;

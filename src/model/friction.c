@@ -13,6 +13,7 @@
  */
 #include "parser.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -196,19 +197,22 @@ static const fcontact *contact_at(const qd_model *m, size_t i) {
     return i < m->ncontacts ? &m->contacts[i] : NULL;
 }
 
-size_t qd_model_ncontacts(const qd_model *m) { return m->ncontacts; }
+size_t qd_model_ncontacts(const qd_model *m) { QD_ARGS(0, m); return m->ncontacts; }
 
 const char *qd_model_contact_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const fcontact *c = contact_at(m, i);
     return c ? c->name : NULL;
 }
 
 qd_contact_kind qd_model_contact_kind(const qd_model *m, size_t i) {
+    QD_ARGS((qd_contact_kind)0, m);
     const fcontact *c = contact_at(m, i);
     return c ? c->kind : QD_CONTACT_CONSTRAINT;
 }
 
 size_t qd_model_contact_constraints(const qd_model *m, size_t i, size_t con[2]) {
+    QD_ARGS(0, m && con);
     const fcontact *c = contact_at(m, i);
     for (size_t k = 0; c && k < c->ncon; k++)
         con[k] = c->con[k];
@@ -216,21 +220,25 @@ size_t qd_model_contact_constraints(const qd_model *m, size_t i, size_t con[2]) 
 }
 
 const qd_expr *qd_model_contact_mu(const qd_model *m, size_t i, bool kinetic) {
+    QD_ARGS(NULL, m);
     const fcontact *c = contact_at(m, i);
     return c ? (kinetic ? c->mu_k : c->mu_s) : NULL;
 }
 
 const qd_expr *qd_model_contact_normal(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const fcontact *c = contact_at(m, i);
     return c ? c->normal : NULL;
 }
 
 const qd_expr *qd_model_contact_normal_scale(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const fcontact *c = contact_at(m, i);
     return c ? (c->normal_scale ? c->normal_scale : qd_int(m->ctx, 1)) : NULL;
 }
 
 const char *qd_model_contact_normal_constraint(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const fcontact *c = contact_at(m, i);
     return c ? c->normal_con : NULL;
 }

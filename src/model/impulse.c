@@ -18,6 +18,7 @@
  */
 #include "parser.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -381,64 +382,77 @@ bool qd__mdl_stmt_prescribe(parser *p) {
 
 /* ---- accessors ---------------------------------------------------------------- */
 
-size_t qd_model_nparticles(const qd_model *m) { return m->nparts; }
+size_t qd_model_nparticles(const qd_model *m) { QD_ARGS(0, m); return m->nparts; }
 const qd_expr *qd_model_particle_mass(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nparts ? m->parts[i].mass : NULL;
 }
 const qd_expr *qd_model_particle_position(const qd_model *m, size_t i, unsigned k) {
+    QD_ARGS(NULL, m);
     return i < m->nparts && k < 3 ? m->parts[i].r[k] : NULL;
 }
 
-size_t qd_model_nblows(const qd_model *m) { return m->nblows; }
+size_t qd_model_nblows(const qd_model *m) { QD_ARGS(0, m); return m->nblows; }
 const char *qd_model_blow_label(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nblows ? m->blows[i].label : NULL;
 }
 const qd_expr *qd_model_blow(const qd_model *m, size_t i, size_t coord) {
+    QD_ARGS(NULL, m);
     if (i >= m->nblows || coord >= m->ncoords)
         return NULL;
     /* a coordinate declared after the blow cannot appear in it */
     return coord < m->blows[i].nw ? m->blows[i].w[coord] : qd_int(m->ctx, 0);
 }
 const qd_expr *qd_model_impulse(const qd_model *m, size_t coord) {
+    QD_ARGS(NULL, m);
     return coord < m->ncoords ? m->Qhat[coord] : NULL;
 }
 
 static const sudden *at_index(const sudden *s, size_t n, size_t i) { return i < n ? &s[i] : NULL; }
 
-size_t qd_model_nimpact_constraints(const qd_model *m) { return m->nsudden; }
+size_t qd_model_nimpact_constraints(const qd_model *m) { QD_ARGS(0, m); return m->nsudden; }
 const char *qd_model_impact_constraint_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->sudden, m->nsudden, i);
     return s ? s->name : NULL;
 }
 const qd_expr *qd_model_impact_constraint(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->sudden, m->nsudden, i);
     return s ? s->expr : NULL;
 }
 const qd_expr *qd_model_impact_constraint_restitution(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->sudden, m->nsudden, i);
     return s ? s->E : NULL;
 }
 
-size_t qd_model_nimpacts(const qd_model *m) { return m->nimpacts; }
+size_t qd_model_nimpacts(const qd_model *m) { QD_ARGS(0, m); return m->nimpacts; }
 const char *qd_model_impact_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->impacts, m->nimpacts, i);
     return s ? s->name : NULL;
 }
 const qd_expr *qd_model_impact_gap(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->impacts, m->nimpacts, i);
     return s ? s->expr : NULL;
 }
 const qd_expr *qd_model_impact_restitution(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->impacts, m->nimpacts, i);
     return s ? s->E : NULL;
 }
 
-size_t qd_model_nprescribed(const qd_model *m) { return m->nprescribed; }
+size_t qd_model_nprescribed(const qd_model *m) { QD_ARGS(0, m); return m->nprescribed; }
 const char *qd_model_prescribed_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->prescribed, m->nprescribed, i);
     return s ? s->name : NULL;
 }
 const qd_expr *qd_model_prescribed(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const sudden *s = at_index(m->prescribed, m->nprescribed, i);
     return s ? s->expr : NULL;
 }

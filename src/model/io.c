@@ -16,6 +16,7 @@
  */
 #include "parser.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -159,18 +160,21 @@ void qd__mdl_free_io(qd_model *m) {
 
 /* ---- accessors ----------------------------------------------------------- */
 
-size_t qd_model_ninputs(const qd_model *m) { return m->ninputs; }
+size_t qd_model_ninputs(const qd_model *m) { QD_ARGS(0, m); return m->ninputs; }
 
 const qd_expr *qd_model_input(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->ninputs ? m->inputs[i] : NULL;
 }
 
-size_t qd_model_noutputs(const qd_model *m) { return m->nouts; }
+size_t qd_model_noutputs(const qd_model *m) { QD_ARGS(0, m); return m->nouts; }
 
 const char *qd_model_output_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nouts ? m->out_names[i] : NULL;
 }
 
 const qd_expr *qd_model_output(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nouts ? m->outs[i] : NULL;
 }

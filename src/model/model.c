@@ -3,6 +3,7 @@
  */
 #include "parser.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -118,27 +119,33 @@ void qd_model_free(qd_model *m) {
     qd__free(m);
 }
 
-size_t qd_model_ncoords(const qd_model *m) { return m->ncoords; }
+size_t qd_model_ncoords(const qd_model *m) { QD_ARGS(0, m); return m->ncoords; }
 const qd_expr *qd_model_coord(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->ncoords ? m->coords[i] : NULL;
 }
-size_t qd_model_nparams(const qd_model *m) { return m->nparams; }
-size_t qd_model_nfunctions(const qd_model *m) { return m->nfuncs; }
+size_t qd_model_nparams(const qd_model *m) { QD_ARGS(0, m); return m->nparams; }
+size_t qd_model_nfunctions(const qd_model *m) { QD_ARGS(0, m); return m->nfuncs; }
 const char *qd_model_function_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nfuncs ? m->funcs[i] : NULL;
 }
 const qd_expr *qd_model_param(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nparams ? m->params[i] : NULL;
 }
 const qd_expr *qd_model_param_value(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nparams ? m->pvals[i] : NULL;
 }
 
 const qd_expr *qd_model_param_definition(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nparams ? m->pdefs[i] : NULL;
 }
 
 qd_status qd_model_param_number(const qd_model *m, size_t i, double *x) {
+    QD_ARGS(QD_ERR_ARG, m && x);
     long p, q;
     const qd_expr *v = i < m->nparams ? m->pvals[i] : NULL;
     *x = NAN;
@@ -152,7 +159,7 @@ qd_status qd_model_param_number(const qd_model *m, size_t i, double *x) {
     return isfinite(*x) ? QD_OK : QD_ERR_ARG;
 }
 
-bool qd_model_param_fixed(const qd_model *m, size_t i) { return i < m->nparams && m->pfixed[i]; }
+bool qd_model_param_fixed(const qd_model *m, size_t i) { QD_ARGS(false, m); return i < m->nparams && m->pfixed[i]; }
 
 /* x with the values of the first n parameters put in. */
 static const qd_expr *valued(const qd_model *m, const qd_expr *x, size_t n) {
@@ -192,6 +199,7 @@ qd_status qd__mdl_unknown_param(qd_ctx *ctx, const qd_model *m, const char *name
 }
 
 qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const qd_expr *value) {
+    QD_ARGS_CTX(ctx, ctx && m && name && value);
     size_t i = 0;
     while (i < m->nparams && strcmp(qd_expr_name(m->params[i]), name) != 0)
         i++;
@@ -237,86 +245,101 @@ qd_status qd_model_set_param(qd_ctx *ctx, qd_model *m, const char *name, const q
     return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
 }
 
-const qd_expr *qd_model_kinetic(const qd_model *m) { return m->T; }
-const qd_expr *qd_model_potential(const qd_model *m) { return m->V; }
-const qd_expr *qd_model_gen_potential(const qd_model *m) { return m->U; }
-const qd_expr *qd_model_lagrangian(const qd_model *m) { return m->L; }
-const qd_expr *qd_model_dissipation(const qd_model *m) { return m->D; }
+const qd_expr *qd_model_kinetic(const qd_model *m) { QD_ARGS(NULL, m); return m->T; }
+const qd_expr *qd_model_potential(const qd_model *m) { QD_ARGS(NULL, m); return m->V; }
+const qd_expr *qd_model_gen_potential(const qd_model *m) { QD_ARGS(NULL, m); return m->U; }
+const qd_expr *qd_model_lagrangian(const qd_model *m) { QD_ARGS(NULL, m); return m->L; }
+const qd_expr *qd_model_dissipation(const qd_model *m) { QD_ARGS(NULL, m); return m->D; }
 
-bool qd_model_lagrangian_given(const qd_model *m) { return qd_model_where(m, "L", NULL); }
+bool qd_model_lagrangian_given(const qd_model *m) { QD_ARGS(false, m); return qd_model_where(m, "L", NULL); }
 
 const qd_expr *qd_model_force(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->ncoords ? m->Q[i] : NULL;
 }
 
-size_t qd_model_nconstraints(const qd_model *m) { return m->ncons; }
+size_t qd_model_nconstraints(const qd_model *m) { QD_ARGS(0, m); return m->ncons; }
 const char *qd_model_constraint_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->ncons ? m->con_names[i] : NULL;
 }
 const qd_expr *qd_model_constraint(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->ncons ? m->cons[i] : NULL;
 }
 
-size_t qd_model_nbodies(const qd_model *m) { return m->nbodies; }
+size_t qd_model_nbodies(const qd_model *m) { QD_ARGS(0, m); return m->nbodies; }
 
 static const body *body_at(const qd_model *m, size_t i) {
     return i < m->nbodies ? &m->bodies[i] : NULL;
 }
 
 const char *qd_model_body_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const body *b = body_at(m, i);
     return b ? b->name : NULL;
 }
 
 const qd_expr *qd_model_body_mass(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const body *b = body_at(m, i);
     return b ? b->mass : NULL;
 }
 
 const qd_expr *qd_model_body_inertia(const qd_model *m, size_t i, unsigned row, unsigned col) {
+    QD_ARGS(NULL, m);
     const body *b = body_at(m, i);
     return b && row < 3 && col < 3 ? b->I[3 * row + col] : NULL;
 }
 
 const qd_expr *qd_model_body_position(const qd_model *m, size_t i, unsigned k) {
+    QD_ARGS(NULL, m);
     const body *b = body_at(m, i);
     return b && k < 3 ? b->r[k] : NULL;
 }
 
 const qd_expr *qd_model_body_rotation(const qd_model *m, size_t i, unsigned row, unsigned col) {
+    QD_ARGS(NULL, m);
     const body *b = body_at(m, i);
     return b && row < 3 && col < 3 ? b->R[3 * row + col] : NULL;
 }
 
 const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k) {
+    QD_ARGS(NULL, m);
     const body *b = body_at(m, i);
     return b && k < 3 ? b->w[k] : NULL;
 }
 
 const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k) {
+    QD_ARGS(NULL, m);
     const body *b = body_at(m, i);
     return b && k < 3 ? b->ws[k] : NULL;
 }
 
-bool qd_model_hamiltonian_given(const qd_model *m) { return m->H != NULL; }
-const qd_expr *qd_model_hamiltonian(const qd_model *m) { return m->H; }
+bool qd_model_hamiltonian_given(const qd_model *m) { QD_ARGS(false, m); return m->H != NULL; }
+const qd_expr *qd_model_hamiltonian(const qd_model *m) { QD_ARGS(NULL, m); return m->H; }
 const qd_expr *qd_model_momentum(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return m->mom && i < m->ncoords ? m->mom[i] : NULL;
 }
 
-size_t qd_model_nsymmetries(const qd_model *m) { return m->nsyms; }
+size_t qd_model_nsymmetries(const qd_model *m) { QD_ARGS(0, m); return m->nsyms; }
 const char *qd_model_symmetry_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nsyms ? m->syms[i].name : NULL;
 }
 const qd_expr *qd_model_symmetry_field(const qd_model *m, size_t i, size_t coord) {
+    QD_ARGS(NULL, m);
     return i < m->nsyms && coord < m->ncoords ? m->syms[i].xi[coord] : NULL;
 }
 
-size_t qd_model_nintegrals(const qd_model *m) { return m->nints; }
+size_t qd_model_nintegrals(const qd_model *m) { QD_ARGS(0, m); return m->nints; }
 const char *qd_model_integral_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nints ? m->ints[i].name : NULL;
 }
 const qd_expr *qd_model_integral(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nints ? m->ints[i].expr : NULL;
 }
 
@@ -328,19 +351,23 @@ const qd_expr *qd__mdl_find_momentum(const qd_model *m, const char *name, size_t
 }
 
 const qd_expr *qd_model_initial(const qd_model *m, size_t coord, unsigned order) {
+    QD_ARGS(NULL, m);
     return coord < m->ncoords && order < 2 ? m->init[2 * coord + order] : NULL;
 }
 
 const qd_expr *qd_model_initial_definition(const qd_model *m, size_t coord, unsigned order) {
+    QD_ARGS(NULL, m);
     return coord < m->ncoords && order < 2 ? m->init_defs[2 * coord + order] : NULL;
 }
 
 const qd_expr *qd_model_definition(const qd_model *m, const char *name) {
+    QD_ARGS(NULL, m && name);
     const def *d = qd__mdl_find_def(m, name, strlen(name));
     return d && d->v.kind == VK_SCALAR ? d->v.c[0] : NULL;
 }
 
 bool qd_model_where(const qd_model *m, const char *what, qd_diag *out) {
+    QD_ARGS(false, m && what);
     for (size_t i = 0; i < m->nwheres; i++) {
         const where *w = &m->wheres[i];
         if (strcmp(w->what, what) != 0)

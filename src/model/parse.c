@@ -9,6 +9,7 @@
  */
 #include "parser.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -64,6 +65,7 @@ static bool check_given(parser *p, bool after) {
 
 qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
                               qd_diag *diag) {
+    QD_ARGS(NULL, ctx && text);
     qd_model *m = qd__calloc(ctx, 1, sizeof *m);
     bool *used = opts && opts->nparams ? qd__calloc(ctx, opts->nparams, sizeof *used) : NULL;
     if (!m || (opts && opts->nparams && !used)) {
@@ -91,6 +93,7 @@ qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts
 }
 
 qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
+    QD_ARGS(NULL, ctx && text);
     return qd_model_parse_opts(ctx, text, NULL, diag);
 }
 
@@ -225,6 +228,7 @@ static void read_one(parser *p) {
 }
 
 qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
+    QD_ARGS(QD_ERR_ARG, m && text);
     qd_ctx *ctx = m->ctx;
     char *copy = copy_text(ctx, text);
     mark k;

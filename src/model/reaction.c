@@ -14,6 +14,7 @@
  */
 #include "parser.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -132,13 +133,15 @@ bool qd__mdl_stmt_reaction(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
-size_t qd_model_nreactions(const qd_model *m) { return m->nreactions; }
+size_t qd_model_nreactions(const qd_model *m) { QD_ARGS(0, m); return m->nreactions; }
 
 const char *qd_model_reaction_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nreactions ? m->reactions[i].name : NULL;
 }
 
 const char *qd_model_reaction_constraint(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     if (i >= m->nreactions)
         return NULL;
     const reaction *r = &m->reactions[i];
@@ -146,5 +149,6 @@ const char *qd_model_reaction_constraint(const qd_model *m, size_t i) {
 }
 
 const qd_expr *qd_model_reaction_point(const qd_model *m, size_t i, unsigned k) {
+    QD_ARGS(NULL, m);
     return i < m->nreactions && k < 3 ? m->reactions[i].r[k] : NULL;
 }

@@ -13,6 +13,7 @@
  */
 #include "parser.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -179,24 +180,28 @@ static const speed *speed_at(const qd_model *m, size_t i) {
     return i < m->nspeeds ? &m->speeds[i] : NULL;
 }
 
-size_t qd_model_nspeeds(const qd_model *m) { return m->nspeeds; }
+size_t qd_model_nspeeds(const qd_model *m) { QD_ARGS(0, m); return m->nspeeds; }
 
 const qd_expr *qd_model_speed(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const speed *s = speed_at(m, i);
     return s ? s->sym : NULL;
 }
 
 const qd_expr *qd_model_speed_definition(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const speed *s = speed_at(m, i);
     return s ? s->def : NULL;
 }
 
 const qd_expr *qd_model_speed_initial(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const speed *s = speed_at(m, i);
     return s ? s->init : NULL;
 }
 
 const qd_expr *qd_model_speed_initial_definition(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     const speed *s = speed_at(m, i);
     return s ? s->init_def : NULL;
 }

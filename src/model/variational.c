@@ -18,6 +18,7 @@
  */
 #include "parser.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -164,23 +165,27 @@ bool qd__mdl_apply_isoperimetric(parser *p) {
 
 /* ---- public accessors ------------------------------------------------------ */
 
-const char *qd_model_independent(const qd_model *m) { return m->indep; }
+const char *qd_model_independent(const qd_model *m) { QD_ARGS(NULL, m); return m->indep; }
 
-size_t qd_model_nisoperimetric(const qd_model *m) { return m->nisos; }
+size_t qd_model_nisoperimetric(const qd_model *m) { QD_ARGS(0, m); return m->nisos; }
 
 const char *qd_model_isoperimetric_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nisos ? m->isos[i].name : NULL;
 }
 
 const qd_expr *qd_model_isoperimetric(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nisos ? m->isos[i].expr : NULL;
 }
 
 const qd_expr *qd_model_isoperimetric_value(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nisos ? m->isos[i].value : NULL;
 }
 
 const qd_expr *qd_model_isoperimetric_multiplier(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
     return i < m->nisos ? m->isos[i].lambda : NULL;
 }
 

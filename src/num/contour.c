@@ -14,6 +14,7 @@
  */
 #include "qdot/zvc.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -185,6 +186,7 @@ static qd_status trace(march *m, bool *used, size_t s, qd_contour *out) {
 
 qd_status qd_contour_grid(qd_ctx *ctx, size_t nx, size_t ny, const double *f, double x0,
                           double x1, double y0, double y1, double level, qd_contour *out) {
+    QD_ARGS_CTX(ctx, ctx && (ny == 0 || f) && out);
     memset(out, 0, sizeof *out);
     if (!ctx || !f || nx == 0 || ny == 0 || !isfinite(level)) {
         if (ctx)

@@ -11,6 +11,7 @@
  * 2e7 random doubles (docs/design.md, simulation speed).
  */
 #include "qdot/print.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -136,6 +137,7 @@ static size_t fast_number(char *out, double x) {
 }
 
 size_t qd_double_format(char *out, double x) {
+    QD_ARGS(0, out);
     size_t n = fast_number(out, x);
     if (n)
         return n;
@@ -149,6 +151,7 @@ size_t qd_double_format(char *out, double x) {
 }
 
 void qd_buf_put_double(qd_buf *b, double x) {
+    QD_ARGS(, b);
     char s[QD_DOUBLE_MAX];
     qd_buf_putn(b, s, qd_double_format(s, x));
 }

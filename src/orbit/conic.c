@@ -18,6 +18,7 @@
  * p x'/(h nu) give the periapsis, D = c - c_peri.
  */
 #include "orb.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -65,6 +66,7 @@ static const qd_expr *integrand(qd_ctx *ctx, const qd_orbit *o) {
 
 const qd_expr *qd_orbit_equation(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
                                  const qd_expr **lhs) {
+    QD_ARGS(NULL, ctx && o && r && lhs);
     const qd_expr *c = o->routh->ign[0];
     if (r->conic) {
         *lhs = o->x;

@@ -11,6 +11,7 @@
 
 #include "base/mem.h"
 #include "num/num.h"
+#include "../base/args.h"
 
 static const qd_expr **arr(qd_ctx *ctx, size_t n) {
     return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *));
@@ -134,6 +135,7 @@ static qd_status derive_parts(qd_ctx *ctx, qd_orbit *o) {
 
 qd_orbit *qd_orbit_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t nign,
                           const qd_expr *const *ign) {
+    QD_ARGS(NULL, ctx && m && e);
     if (nign == 0) {
         qd_ctx_error(ctx, QD_ERR_ARG,
                      "orbit needs a cyclic coordinate to ignore (--ignore): with none the "

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "base/mem.h"
+#include "../base/args.h"
 
 #define PI 3.14159265358979323846
 #define CIRC_TOL 1e-8 /* circular: the other turning point within this many scales */
@@ -372,6 +373,7 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
 
 qd_status qd_orbit_solve(qd_ctx *ctx, const qd_orbit *o, size_t n, const qd_expr *const *syms,
                          const double *vals, const double *energy, qd_orbit_result *r) {
+    QD_ARGS_CTX(ctx, ctx && o && (n == 0 || syms) && (n == 0 || vals) && r);
     qd__orb_env env = {0};
     qd_status st = alloc_result(ctx, o->routh->nign, r);
     if (st == QD_OK)
@@ -404,6 +406,7 @@ qd_status qd_orbit_solve(qd_ctx *ctx, const qd_orbit *o, size_t n, const qd_expr
 
 qd_status qd_orbit_period(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
                           double *period) {
+    QD_ARGS_CTX(ctx, ctx && o && r && period);
     const char *x = qd_expr_name(o->x);
     if (r->kind == QD_ORBIT_UNBOUND) {
         if (r->nturn == 1)

@@ -19,6 +19,7 @@
 
 #include "base/mem.h"
 #include "num/num.h"
+#include "../base/args.h"
 
 #define AO_TOL 1e-12
 
@@ -161,6 +162,7 @@ static qd_status check_args(qd_ctx *ctx, const qd_eom *e, const qd_expr *const *
 qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                             const qd_expr *const *path, double t0, double t1, double *action,
                             double *first_variation) {
+    QD_ARGS_CTX(ctx, ctx && m && e && path && action && first_variation);
     if (!ctx || !m || !e || !path) {
         if (ctx)
             qd_ctx_error(ctx, QD_ERR_ARG, "qd_path_action_of: a NULL argument");

@@ -44,6 +44,7 @@
 #include <string.h>
 
 #include "base/mem.h"
+#include "../base/args.h"
 
 #define FZ_RTOL 1e-12
 #define FZ_MAXSTEPS 2000000
@@ -583,6 +584,7 @@ static void fz_free(fz *z) {
 qd_status qd_path_foci_mult(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
                             const double *q0, const double *v0, double t1, double **foci,
                             size_t **mult, size_t *nfoci, bool *legendre) {
+    QD_ARGS_CTX(ctx, ctx && m && e && q0 && v0 && foci && nfoci);
     if (!ctx || !m || !e || !q0 || !v0 || !foci || !nfoci) {
         if (ctx)
             qd_ctx_error(ctx, QD_ERR_ARG, "qd_path_foci: a NULL argument");
@@ -621,6 +623,7 @@ qd_status qd_path_foci_mult(qd_ctx *ctx, const qd_model *m, const qd_eom *e, dou
 qd_status qd_path_foci(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double t0,
                        const double *q0, const double *v0, double t1, double **foci,
                        size_t *nfoci, bool *legendre) {
+    QD_ARGS_CTX(ctx, ctx && m && e && q0 && v0 && foci && nfoci);
     return qd_path_foci_mult(ctx, m, e, t0, q0, v0, t1, foci, NULL, nfoci, legendre);
 }
 
@@ -630,6 +633,7 @@ void qd_path_foci_free(qd_ctx *ctx, double *foci) {
 }
 
 void qd_path_foci_mult_free(qd_ctx *ctx, size_t *mult) {
+    QD_ARGS(, mult);
     (void)ctx;
     qd__free(mult);
 }

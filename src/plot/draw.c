@@ -5,6 +5,7 @@
  */
 #include "plot_priv.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <cairo.h>
 #include <cairo-pdf.h>
@@ -314,6 +315,7 @@ static qd_status render(const qd_plot *p, qd_plot_format fmt, FILE *out) {
 }
 
 qd_status qd_plot_write(qd_plot *p, const char *path) {
+    QD_ARGS(QD_ERR_ARG, p && path);
     qd_plot_format fmt;
     qd_status st = qd_plot_format_of(p->ctx, path, &fmt);
     if (st == QD_OK)

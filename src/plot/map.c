@@ -5,6 +5,7 @@
  */
 #include "plot_priv.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -93,6 +94,7 @@ static void find_range(qd__plot_map *m) {
 
 qd_status qd_plot_add_map(qd_plot *p, const char *label, size_t nx, size_t ny, const double *x,
                           const double *y, const double *z) {
+    QD_ARGS(QD_ERR_ARG, p && (ny == 0 || x) && (ny == 0 || y) && (ny == 0 || z));
     qd_status st = check_map(p, nx, ny, x, y, z);
     if (st != QD_OK)
         return st;
@@ -116,6 +118,7 @@ qd_status qd_plot_add_map(qd_plot *p, const char *label, size_t nx, size_t ny, c
 }
 
 bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, double *zmax) {
+    QD_ARGS(false, p && zmin && zmax);
     if (panel >= p->rows * p->cols || !p->panels[panel].map || isnan(p->panels[panel].map->zmin))
         return false;
     *zmin = p->panels[panel].map->zmin;

@@ -4,6 +4,7 @@
  */
 #include "plot_priv.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -19,6 +20,7 @@ static const unsigned palette[] = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x946
 #define NPALETTE (sizeof palette / sizeof palette[0])
 
 qd_status qd_plot_format_of(qd_ctx *ctx, const char *path, qd_plot_format *out) {
+    QD_ARGS_CTX(ctx, ctx && path && out);
     static const struct { const char *ext; qd_plot_format f; } exts[] = {
         {".png", QD_PLOT_PNG}, {".svg", QD_PLOT_SVG}, {".pdf", QD_PLOT_PDF}};
     const char *dot = path ? strrchr(path, '.') : NULL;
@@ -38,6 +40,7 @@ qd_status qd_plot_format_of(qd_ctx *ctx, const char *path, qd_plot_format *out) 
 }
 
 qd_plot *qd_plot_new(qd_ctx *ctx, int width, int height) {
+    QD_ARGS(NULL, ctx);
     if (!width && !height) {
         width = DEFAULT_WIDTH;
         height = DEFAULT_HEIGHT;
@@ -71,6 +74,7 @@ static void free_panels(qd_plot *p) {
 }
 
 qd_status qd_plot_panels(qd_plot *p, size_t rows, size_t cols) {
+    QD_ARGS(QD_ERR_ARG, p);
     bool used = p->nseries || p->panels[0].map;
     if (used || rows < 1 || cols < 1 || rows > 8 || cols > 8) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, used ? "a plot is divided into panels before "
@@ -91,16 +95,19 @@ qd_status qd_plot_panels(qd_plot *p, size_t rows, size_t cols) {
 }
 
 qd_status qd_plot_set_equal_axes(qd_plot *p, bool equal) {
+    QD_ARGS(QD_ERR_ARG, p);
     p->panels[p->cur].equal = equal;
     p->laid_out = false;
     return QD_OK;
 }
 
 size_t qd_plot_npanels(const qd_plot *p) {
+    QD_ARGS(0, p);
     return p->rows * p->cols;
 }
 
 qd_status qd_plot_select(qd_plot *p, size_t panel) {
+    QD_ARGS(QD_ERR_ARG, p);
     if (panel >= p->rows * p->cols) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "the plot has %zu panels; there is no panel %zu",
                      p->rows * p->cols, panel);
@@ -135,14 +142,17 @@ static qd_status set_text(qd_plot *p, char **slot, const char *text) {
 }
 
 qd_status qd_plot_set_title(qd_plot *p, const char *title) {
+    QD_ARGS(QD_ERR_ARG, p && title);
     return set_text(p, &p->title, title);
 }
 
 qd_status qd_plot_set_xlabel(qd_plot *p, const char *label) {
+    QD_ARGS(QD_ERR_ARG, p && label);
     return set_text(p, &p->panels[p->cur].xlabel, label);
 }
 
 qd_status qd_plot_set_ylabel(qd_plot *p, const char *label) {
+    QD_ARGS(QD_ERR_ARG, p && label);
     return set_text(p, &p->panels[p->cur].ylabel, label);
 }
 
@@ -170,6 +180,7 @@ static double *copy_doubles(qd_ctx *ctx, size_t n, const double *v) {
 
 qd_status qd_plot_add(qd_plot *p, const char *label, qd_plot_style style, size_t n,
                       const double *x, const double *y, size_t *index) {
+    QD_ARGS(QD_ERR_ARG, p && (n == 0 || x) && (n == 0 || y));
     qd_status st = check_points(p, label, n, x, y);
     if (st != QD_OK)
         return st;
@@ -201,14 +212,17 @@ qd_status qd_plot_add(qd_plot *p, const char *label, qd_plot_style style, size_t
 }
 
 size_t qd_plot_nseries(const qd_plot *p) {
+    QD_ARGS(0, p);
     return p->nseries;
 }
 
 unsigned qd_plot_color(const qd_plot *p, size_t i) {
+    QD_ARGS(0, p);
     return palette[(i < p->nseries ? p->series[i].nth : i) % NPALETTE];
 }
 
 size_t qd_plot_nice_ticks(double lo, double hi, size_t max_ticks, double *step, double *first) {
+    QD_ARGS(0, step && first);
     if (!isfinite(lo) || !isfinite(hi) || !(lo < hi) || max_ticks < 2)
         return 0;
     double span = hi - lo;
@@ -355,6 +369,7 @@ static qd_status layout_panel(qd_plot *p, size_t k, double cell_top, double cell
 }
 
 qd_status qd_plot_layout(qd_plot *p) {
+    QD_ARGS(QD_ERR_ARG, p);
     bool any_map = false;
     for (size_t k = 0; k < p->rows * p->cols; k++)
         any_map |= p->panels[k].map != NULL;
@@ -375,6 +390,7 @@ qd_status qd_plot_layout(qd_plot *p) {
 
 bool qd_plot_to_pixel(const qd_plot *p, size_t panel, double x, double y, double *px,
                       double *py) {
+    QD_ARGS(false, p && px && py);
     if (!p->laid_out || panel >= p->rows * p->cols)
         return false;
     const qd__plot_panel *f = &p->panels[panel];
@@ -385,6 +401,7 @@ bool qd_plot_to_pixel(const qd_plot *p, size_t panel, double x, double y, double
 
 bool qd_plot_ranges(const qd_plot *p, size_t panel, double *x0, double *x1, double *y0,
                     double *y1) {
+    QD_ARGS(false, p && x0 && x1 && y0 && y1);
     if (!p->laid_out || panel >= p->rows * p->cols)
         return false;
     const qd__plot_panel *f = &p->panels[panel];

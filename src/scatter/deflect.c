@@ -13,6 +13,7 @@
 
 #include <math.h>
 #include "../num/num.h"
+#include "../base/args.h"
 
 #define PER_DECADE 150
 #define DECADES_OUT 4   /* the scan starts at 1e4 scale ... */
@@ -260,6 +261,7 @@ static void head_on(radial *R, qd_scatter_path *out) {
 
 qd_status qd_scatter_deflect(qd_ctx *ctx, qd_scatter *s, double E, double b,
                              qd_scatter_path *out) {
+    QD_ARGS_CTX(ctx, ctx && s && out);
     *out = (qd_scatter_path){.E = E, .b = b, .chi = NAN, .theta = NAN, .alpha = NAN};
     if (!(E > 0) || !isfinite(E)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the energy must be positive (the particle comes in "

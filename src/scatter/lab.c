@@ -6,12 +6,14 @@
  * elastic) with speed s* sqrt(1 + gamma^2 + 2 gamma cos Theta).
  */
 #include "sct.h"
+#include "../base/args.h"
 
 #include <math.h>
 
 #define PI 3.14159265358979323846 /* M_PI is not C11 */
 
 void qd_scatter_lab_gamma(double gamma, double theta, double *theta_lab, double *jacobian) {
+    QD_ARGS(, theta_lab && jacobian);
     double c = cos(theta), w2 = 1 + gamma * gamma + 2 * gamma * c;
     *theta_lab = atan2(sin(theta), c + gamma);
     /* q = Q (1 + gamma cos)/(w2)^(3/2): dOmega_cm/dOmega_lab = w2^(3/2)/|1 + gamma cos| */
@@ -20,6 +22,7 @@ void qd_scatter_lab_gamma(double gamma, double theta, double *theta_lab, double 
 
 qd_status qd_scatter_lab_map(qd_ctx *ctx, double m1, double m2, double theta,
                              qd_scatter_lab *out) {
+    QD_ARGS_CTX(ctx, ctx && out);
     if (!(m1 > 0) || !(m2 > 0) || !isfinite(m1) || !isfinite(m2) || !(theta >= 0 && theta <= PI)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the lab frame needs masses > 0 and an angle in [0, pi]");
         return QD_ERR_ARG;
@@ -36,6 +39,7 @@ qd_status qd_scatter_lab_map(qd_ctx *ctx, double m1, double m2, double theta,
 }
 
 size_t qd_scatter_lab_to_cm(double gamma, double theta_lab, double cm[2]) {
+    QD_ARGS(0, cm);
     /* sin(Theta - theta_lab) = gamma sin theta_lab (Desloge eq. 36) */
     double x = gamma * sin(theta_lab);
     if (!(fabs(x) <= 1))

@@ -10,6 +10,7 @@
 #include <string.h>
 #include "qdot/routh.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #define JUMP_SCAN_PER_DECADE 40
 
@@ -156,6 +157,7 @@ static bool compile(qd_ctx *ctx, qd_scatter *s) {
 }
 
 qd_scatter *qd_scatter_new(qd_ctx *ctx, const qd_expr *V, const qd_expr *r, double core) {
+    QD_ARGS(NULL, ctx && V && r);
     if (!V || !r)
         return NULL;
     if (!(core >= 0) || !isfinite(core)) {
@@ -188,11 +190,11 @@ void qd_scatter_free(qd_scatter *s) {
     qd__free(s);
 }
 
-const qd_expr *qd_scatter_potential(const qd_scatter *s) { return s->V; }
-const qd_expr *qd_scatter_radius(const qd_scatter *s) { return s->r; }
-size_t qd_scatter_njumps(const qd_scatter *s) { return s->njump; }
-double qd_scatter_jump(const qd_scatter *s, size_t i) { return i < s->njump ? s->jump[i] : NAN; }
-double qd_scatter_range(const qd_scatter *s) { return s->range; }
+const qd_expr *qd_scatter_potential(const qd_scatter *s) { QD_ARGS(NULL, s); return s->V; }
+const qd_expr *qd_scatter_radius(const qd_scatter *s) { QD_ARGS(NULL, s); return s->r; }
+size_t qd_scatter_njumps(const qd_scatter *s) { QD_ARGS(0, s); return s->njump; }
+double qd_scatter_jump(const qd_scatter *s, size_t i) { QD_ARGS(NAN, s); return i < s->njump ? s->jump[i] : NAN; }
+double qd_scatter_range(const qd_scatter *s) { QD_ARGS(NAN, s); return s->range; }
 
 /* ---- from a model ------------------------------------------------------------ */
 
@@ -256,6 +258,7 @@ static bool is_central(qd_ctx *ctx, const qd_routh *h, const qd_expr *Veff, cons
 
 qd_scatter *qd_scatter_from_model(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                   const char *ignore, double core, double *mass) {
+    QD_ARGS(NULL, ctx && m && e);
     if (!m || !e)
         return NULL;
     if (e->n != 2) {

@@ -14,6 +14,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #define PI 3.14159265358979323846 /* M_PI is not C11 */
 #define GRID 600
@@ -130,6 +131,7 @@ static qd_status dchi(qd_ctx *ctx, qd_scatter *s, double E, double b, const doub
 }
 
 qd_status qd_scatter_dchi_db(qd_ctx *ctx, qd_scatter *s, double E, double b, double *out) {
+    QD_ARGS_CTX(ctx, ctx && s && out);
     double k[MAX_KINKS];
     qd_scatter_path p;
     qd_status st = qd_scatter_deflect(ctx, s, E, b, &p);
@@ -301,6 +303,7 @@ static double b_limit(qd_ctx *ctx, qd_scatter *s, double E, double theta, qd_sta
 }
 
 qd_status qd_scatter_features_at(qd_ctx *ctx, qd_scatter *s, double E, qd_scatter_features *f) {
+    QD_ARGS_CTX(ctx, ctx && s && f);
     *f = (qd_scatter_features){.E = E, .range = s->range};
     if (!(E > 0)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the energy must be positive (the particle comes in "
@@ -343,6 +346,7 @@ static void add_branch(qd_scatter_section *out, double b, double chi, double d) 
 
 qd_status qd_scatter_section_at(qd_ctx *ctx, qd_scatter *s, double E, double theta,
                                 qd_scatter_section *out) {
+    QD_ARGS_CTX(ctx, ctx && s && out);
     *out = (qd_scatter_section){.E = E, .theta = theta};
     if (!(E > 0) || !(theta > 0 && theta < PI)) {
         qd_ctx_error(ctx, QD_ERR_ARG, !(E > 0) ? "the energy must be positive, not %g"

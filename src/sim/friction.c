@@ -22,6 +22,7 @@
  */
 #include "simint.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -132,9 +133,10 @@ void qd__fric_free(qd_sim *s) {
     qd__free(s->flast);
 }
 
-size_t qd_sim_ncontacts(const qd_sim *s) { return s->nfc; }
+size_t qd_sim_ncontacts(const qd_sim *s) { QD_ARGS(0, s); return s->nfc; }
 
 const qd_sim_transition *qd_sim_transitions(const qd_sim *s, size_t *n) {
+    QD_ARGS(NULL, s && n);
     *n = s->flast ? s->flast->n : 0;
     return s->flast ? s->flast->tr : NULL;
 }

@@ -18,6 +18,7 @@
 
 #include "num/num.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 static qd_status inputs(qd_sim *s) {
     size_t n = s->n;
@@ -127,6 +128,7 @@ void qd__hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x) {
 }
 
 qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m) {
+    QD_ARGS(NULL, ctx && m);
     if (!qd_model_hamiltonian_given(m)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the model is not given by H (momenta, H = ...)");
         return NULL;

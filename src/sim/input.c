@@ -12,6 +12,7 @@
 #include "simint.h"
 
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <string.h>
@@ -72,6 +73,7 @@ static struct qd__input *find(qd_sim *s, const char *name) {
 }
 
 qd_status qd_sim_input_expr(qd_sim *s, const char *name, const qd_expr *x) {
+    QD_ARGS(QD_ERR_ARG, s && name && x);
     struct qd__input *u = find(s, name);
     if (!u)
         return QD_ERR_ARG;
@@ -89,6 +91,7 @@ qd_status qd_sim_input_expr(qd_sim *s, const char *name, const qd_expr *x) {
 
 qd_status qd_sim_input_table(qd_sim *s, const char *name, size_t n, const double *t,
                              const double *v) {
+    QD_ARGS(QD_ERR_ARG, s && name && (n == 0 || t) && (n == 0 || v));
     struct qd__input *u = find(s, name);
     if (!u)
         return QD_ERR_ARG;
@@ -115,6 +118,7 @@ qd_status qd_sim_input_table(qd_sim *s, const char *name, size_t n, const double
 }
 
 qd_status qd_sim_input_callback(qd_sim *s, const char *name, qd_sim_input_fn fn, void *data) {
+    QD_ARGS(QD_ERR_ARG, s && name);
     struct qd__input *u = find(s, name);
     if (!u)
         return QD_ERR_ARG;
@@ -212,5 +216,6 @@ void qd__sim_uin_eval(qd_sim *s, double t) {
 }
 
 qd_status qd_sim_inputs_ready(qd_sim *s, double t0, double t_end) {
+    QD_ARGS(QD_ERR_ARG, s);
     return qd__sim_uin_check(s, t0, t_end);
 }

@@ -2,6 +2,7 @@
  * src/sim/methods.c - the integration methods by name and what they are.
  */
 #include "simint.h"
+#include "../base/args.h"
 
 #include <string.h>
 
@@ -23,6 +24,7 @@ const char *qd_sim_method_name(qd_sim_method m) {
 }
 
 bool qd_sim_method_from_name(const char *name, qd_sim_method *m) {
+    QD_ARGS(false, name && m);
     for (int i = 0; i < QD_SIM_METHOD_COUNT; i++)
         if (!strcmp(name, methods[i].name)) {
             *m = (qd_sim_method)i;

@@ -5,6 +5,7 @@
  */
 #include "simint.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -187,6 +188,7 @@ static qd_status check_count(qd_ctx *ctx, const qd_sim_opts *o, bool fixed) {
 }
 
 qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
+    QD_ARGS_CTX(ctx, ctx);
     const char *name = qd_sim_method_name(o->method);
     if (o->method >= QD_SIM_METHOD_COUNT) {
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown integration method");
@@ -792,6 +794,7 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
 
 qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
                           void *data, qd_sim_stats *stats, double *final) {
+    QD_ARGS_CTX(ctx, ctx && s);
     if (!s->aux_ready) {
         qd_ctx_error(ctx, QD_ERR_ARG, "a shared simulation is compiled first (qd_sim_compile)");
         return QD_ERR_ARG;
@@ -801,6 +804,7 @@ qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
 
 qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
+    QD_ARGS(QD_ERR_ARG, s);
     qd_status st = qd_sim_compile(s);
     if (st != QD_OK) {
         if (stats)

@@ -25,6 +25,7 @@
 
 #include "num/num.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 static qd_status inputs(qd_sim *s) {
     const qd_speeds_eom *e = s->se;
@@ -107,6 +108,7 @@ static qd_status check(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {
 }
 
 qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {
+    QD_ARGS(NULL, ctx && m && e);
     if (check(ctx, m, e) != QD_OK)
         return NULL;
     qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
@@ -132,7 +134,7 @@ qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e
     return s;
 }
 
-size_t qd_sim_nspeeds(const qd_sim *s) { return s->nu; }
+size_t qd_sim_nspeeds(const qd_sim *s) { QD_ARGS(0, s); return s->nu; }
 
 /* q, t and u into the inputs (the velocities' block is left as it is). */
 static void set_qu(qd_sim *s, double t, const double *y) {

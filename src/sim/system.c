@@ -20,6 +20,7 @@
 #include "codegen/angles.h"
 #include "num/num.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 static char *dup_printf(qd_ctx *ctx, const char *a, const char *b, const char *c) {
     size_t len = strlen(a) + strlen(b) + strlen(c) + 1;
@@ -270,6 +271,7 @@ qd_status qd__sim_names(qd_sim *s) {
 }
 
 qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    QD_ARGS(NULL, ctx && m && e);
     if (e->nelim) {
         qd_ctx_error(ctx, QD_ERR_ARG, "simulation needs the equations without eliminated "
                                       "coordinates");
@@ -337,16 +339,18 @@ void qd_sim_free(qd_sim *s) {
     qd__free(s);
 }
 
-size_t qd_sim_ndof(const qd_sim *s) { return s->n; }
-size_t qd_sim_ncon(const qd_sim *s) { return s->m; }
-bool qd_sim_canonical(const qd_sim *s) { return s->canonical; }
+size_t qd_sim_ndof(const qd_sim *s) { QD_ARGS(0, s); return s->n; }
+size_t qd_sim_ncon(const qd_sim *s) { QD_ARGS(0, s); return s->m; }
+bool qd_sim_canonical(const qd_sim *s) { QD_ARGS(false, s); return s->canonical; }
 double qd_sim_constraint_error(const qd_sim *s, size_t c) {
+    QD_ARGS(NAN, s);
     return c < s->m ? s->con_err_last[c] : 0;
 }
-bool qd_sim_separable(const qd_sim *s) { return s->separable; }
-bool qd_sim_conservative(const qd_sim *s) { return s->conservative; }
+bool qd_sim_separable(const qd_sim *s) { QD_ARGS(false, s); return s->separable; }
+bool qd_sim_conservative(const qd_sim *s) { QD_ARGS(false, s); return s->conservative; }
 
 qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step) {
+    QD_ARGS((qd_sim_method)0, s);
     return fixed_step && s->m == 0 && s->conservative ? QD_SIM_GL4 : QD_SIM_DOP853;
 }
 
@@ -367,6 +371,7 @@ static bool grow(qd_ctx *ctx, void **p, size_t *cap, size_t need, size_t size) {
 }
 
 qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x) {
+    QD_ARGS(QD_ERR_ARG, s && name && x);
     if (s->aux_ready || !x || !name) {
         qd_ctx_error(s->ctx, QD_ERR_ARG, "outputs are added before the first run");
         return QD_ERR_ARG;
@@ -388,6 +393,7 @@ qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x) {
 
 qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
                            const qd_expr *const *guard, bool stop) {
+    QD_ARGS(QD_ERR_ARG, s && g);
     if (s->aux_ready || !g) {
         qd_ctx_error(s->ctx, QD_ERR_ARG, "events are added before the first run");
         return QD_ERR_ARG;
@@ -455,11 +461,12 @@ qd_status qd__aux_compile(qd_sim *s) {
 }
 
 qd_status qd_sim_compile(qd_sim *s) {
+    QD_ARGS(QD_ERR_ARG, s);
     qd_status st = qd__sim_uin_compile(s);
     return st == QD_OK ? qd__aux_compile(s) : st;
 }
 
-bool qd_sim_compiled(const qd_sim *s) { return s->aux_ready; }
+bool qd_sim_compiled(const qd_sim *s) { QD_ARGS(false, s); return s->aux_ready; }
 
 /* ---- a run's workspace ------------------------------------------------------ */
 
@@ -514,6 +521,7 @@ void qd__sim_ws_free(qd_sim *w) {
 }
 
 size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap) {
+    QD_ARGS(0, s);
     size_t n = s->n, k = 0;
     bool ham = s->hamilton || ((method >= QD_SIM_GL2 && method <= QD_SIM_YOSHIDA8) &&
                                s->canonical);
@@ -634,7 +642,7 @@ static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *
     return QD_OK;
 }
 
-void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs) { s->native = rhs; }
+void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs) { QD_ARGS(, s); s->native = rhs; }
 
 /* [M -A^T; A 0] [q''; lambda] = [f; b] at the state in s->in (y, when not
  * NULL, is set first), solved into s->rhs; false when singular. */

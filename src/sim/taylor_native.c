@@ -13,6 +13,7 @@
 #include "taylor_native.h"
 #include "codegen/cg.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <dlfcn.h>
 #include <string.h>
@@ -68,6 +69,7 @@ static qd_status emit(qd_sim *s, qd_buf *text) {
 }
 
 qd_status qd_sim_load_native_taylor(qd_sim *s, const char *cache_dir, bool *cached) {
+    QD_ARGS(QD_ERR_ARG, s);
     if (!s)
         return QD_ERR_ARG;
     qd__taylor_native_free(s);

@@ -17,6 +17,7 @@
 
 #include "../base/mem.h"
 #include "../num/num.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -30,6 +31,7 @@ const char *qd_speeds_method_name(qd_speeds_method m) {
 }
 
 bool qd_speeds_method_from_name(const char *name, qd_speeds_method *m) {
+    QD_ARGS(false, name && m);
     for (unsigned i = 0; name && i < QD_SPEEDS_METHOD_COUNT; i++)
         if (!strcmp(name, METHOD_NAMES[i])) {
             if (m)
@@ -596,6 +598,7 @@ static qd_status run(qd__spd *d, const qd_speeds_opts *opts) {
 }
 
 qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_opts *opts) {
+    QD_ARGS(NULL, ctx && m);
     if (!ctx || !m)
         return NULL;
     if (opts && (unsigned)opts->method >= QD_SPEEDS_METHOD_COUNT) {
@@ -623,6 +626,7 @@ qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_
 }
 
 qd_status qd_speeds_solve(qd_ctx *ctx, qd_speeds_eom *e, size_t max_ops) {
+    QD_ARGS_CTX(ctx, ctx && e);
     if (!ctx || !e)
         return QD_ERR_ARG;
     size_t m = e->m;

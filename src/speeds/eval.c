@@ -7,6 +7,7 @@
 
 #include "../base/mem.h"
 #include "../num/num.h"
+#include "../base/args.h"
 
 /* Offsets of the outputs: kin (n), M (m*m), f (m), mult (ncon when made),
  * def (m). */
@@ -100,6 +101,7 @@ static qd_status multipliers(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
 qd_status qd_speeds_eval(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
                          const qd_expr *const *syms, const double *vals, double *qd, double *ud,
                          double *lambda) {
+    QD_ARGS_CTX(ctx, ctx && e && (nvals == 0 || syms) && (nvals == 0 || vals));
     if (!ctx || !e || (nvals && (!syms || !vals)))
         return QD_ERR_ARG;
     if (lambda && e->ncon && !e->mult) {
@@ -142,6 +144,7 @@ qd_status qd_speeds_eval(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
 
 qd_status qd_speeds_from_velocities(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
                                     const qd_expr *const *syms, const double *vals, double *u) {
+    QD_ARGS_CTX(ctx, ctx && e && (nvals == 0 || syms) && (nvals == 0 || vals) && u);
     if (!ctx || !e || !u || (nvals && (!syms || !vals)))
         return QD_ERR_ARG;
     qd_status st = compile(ctx, e);

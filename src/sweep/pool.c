@@ -8,6 +8,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "sweep_int.h"
+#include "../base/args.h"
 
 #include <pthread.h>
 #include <stdatomic.h>
@@ -144,6 +145,7 @@ qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, 
                        size_t count, unsigned nthreads, double *rows, qd_status *status,
                        char *reasons, void (*progress)(void *data, size_t done, size_t total),
                        void *data) {
+    QD_ARGS_CTX(ctx, ctx && w && base && rows && status);
     if (first > w->nruns || count > w->nruns - first) {
         qd_ctx_error(ctx, QD_ERR_ARG, "runs %zu to %zu of a sweep of %zu", first, first + count,
                      w->nruns);

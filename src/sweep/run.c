@@ -12,6 +12,7 @@
 
 #include "base/mem.h"
 #include "sim/simint.h"
+#include "../base/args.h"
 
 /* What the sink keeps of a run. */
 typedef struct sw_acc {
@@ -246,6 +247,7 @@ static qd_status lyap_measures(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts
 
 qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t i,
                            double *row) {
+    QD_ARGS_CTX(ctx, ctx && w && base && row);
     for (size_t j = 0; j < w->ncols; j++)
         row[j] = NAN;
     if (i >= w->nruns) {

@@ -12,6 +12,7 @@
 
 #include "base/mem.h"
 #include "qdot/read.h"
+#include "../base/args.h"
 
 /* [*a, *b) without the spaces at either end. */
 static void trim(const char *text, size_t *a, size_t *b) {
@@ -295,6 +296,7 @@ static qd_status measure(qd_sweep *w, const char *text, size_t a, size_t b) {
 }
 
 qd_status qd_sweep_measures(qd_sweep *w, const char *spec) {
+    QD_ARGS(QD_ERR_ARG, w && spec);
     qd__sweep_free_measures(w);
     size_t p = 0;
     qd_status st = QD_OK;

@@ -14,8 +14,10 @@
 
 #include "base/mem.h"
 #include "sim/simint.h"
+#include "../base/args.h"
 
 qd_sweep *qd_sweep_new(qd_ctx *ctx, const qd_sim *s, const qd_model *m) {
+    QD_ARGS(NULL, ctx && s && m);
     if (!ctx || !s || !m)
         return NULL;
     if (!qd_sim_compiled(s)) {
@@ -96,6 +98,7 @@ static qd_status set_runs(qd_sweep *w, qd_status st) {
 }
 
 qd_status qd_sweep_grid(qd_sweep *w, const char *spec) {
+    QD_ARGS(QD_ERR_ARG, w && spec);
     qd__sweep_free_inputs(w);
     qd_status st = qd__sweep_parse_axes(w, spec, true);
     size_t runs = 1;
@@ -112,6 +115,7 @@ qd_status qd_sweep_grid(qd_sweep *w, const char *spec) {
 }
 
 qd_status qd_sweep_random(qd_sweep *w, const char *spec, size_t n, uint64_t seed) {
+    QD_ARGS(QD_ERR_ARG, w && spec);
     qd__sweep_free_inputs(w);
     qd_status st = qd__sweep_parse_axes(w, spec, false);
     if (st == QD_OK && n == 0) {
@@ -126,6 +130,7 @@ qd_status qd_sweep_random(qd_sweep *w, const char *spec, size_t n, uint64_t seed
 
 qd_status qd_sweep_list(qd_sweep *w, size_t nnames, const char *const *names, size_t nrows,
                         const double *values) {
+    QD_ARGS(QD_ERR_ARG, w && (nnames == 0 || names) && (nrows == 0 || values));
     qd__sweep_free_inputs(w);
     qd_status st = nnames && nrows ? QD_OK : QD_ERR_ARG;
     if (st != QD_OK)
@@ -317,6 +322,7 @@ static qd_status event_index(qd_sweep *w, size_t k, const char *what) {
 }
 
 qd_status qd_sweep_set_event(qd_sweep *w, size_t k) {
+    QD_ARGS(QD_ERR_ARG, w);
     qd_status st = event_index(w, k, "the measure event");
     if (st == QD_OK)
         w->event = k;
@@ -324,6 +330,7 @@ qd_status qd_sweep_set_event(qd_sweep *w, size_t k) {
 }
 
 qd_status qd_sweep_set_section(qd_sweep *w, size_t k) {
+    QD_ARGS(QD_ERR_ARG, w);
     qd_status st = event_index(w, k, "the section");
     if (st == QD_OK) {
         w->section = k;
@@ -333,6 +340,7 @@ qd_status qd_sweep_set_section(qd_sweep *w, size_t k) {
 }
 
 qd_status qd_sweep_set_lyap(qd_sweep *w, const qd_lyap *l, const qd_lyap_opts *lo) {
+    QD_ARGS(QD_ERR_ARG, w && l);
     if (l && qd_lyap_ndof(l) != w->n) {
         qd_ctx_error(w->ctx, QD_ERR_ARG, "the Lyapunov system has %zu degrees of freedom, the "
                      "simulation %zu", qd_lyap_ndof(l), w->n);
@@ -343,9 +351,10 @@ qd_status qd_sweep_set_lyap(qd_sweep *w, const qd_lyap *l, const qd_lyap_opts *l
     return QD_OK;
 }
 
-size_t qd_sweep_nruns(const qd_sweep *w) { return w->nruns; }
-size_t qd_sweep_ninputs(const qd_sweep *w) { return w->nin; }
-size_t qd_sweep_ncols(const qd_sweep *w) { return w->ncols; }
+size_t qd_sweep_nruns(const qd_sweep *w) { QD_ARGS(0, w); return w->nruns; }
+size_t qd_sweep_ninputs(const qd_sweep *w) { QD_ARGS(0, w); return w->nin; }
+size_t qd_sweep_ncols(const qd_sweep *w) { QD_ARGS(0, w); return w->ncols; }
 const char *qd_sweep_col(const qd_sweep *w, size_t j) {
+    QD_ARGS(NULL, w);
     return j < w->ncols && w->cols ? w->cols[j] : NULL;
 }

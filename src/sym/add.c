@@ -8,6 +8,7 @@
  * of unique nodes, so "same key" is a pointer comparison per factor.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -118,6 +119,7 @@ static bool sort_terms(qd_ctx *ctx, term *v, size_t n) {
 }
 
 const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
+    QD_ARGS(NULL, ctx && (n == 0 || xs));
     for (size_t i = 0; i < n; i++)
         if (!xs[i])
             return NULL;
@@ -203,13 +205,15 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
 }
 
 const qd_expr *qd_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
+    QD_ARGS(NULL, ctx && a && b);
     const qd_expr *xs[2] = {a, b};
     return qd_add_n(ctx, 2, xs);
 }
 
-const qd_expr *qd_neg(qd_ctx *ctx, const qd_expr *a) { return qd_mul(ctx, ctx->minus_one, a); }
+const qd_expr *qd_neg(qd_ctx *ctx, const qd_expr *a) { QD_ARGS(NULL, ctx && a); return qd_mul(ctx, ctx->minus_one, a); }
 
 const qd_expr *qd_sub(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
+    QD_ARGS(NULL, ctx && a && b);
     return qd_add(ctx, a, qd_neg(ctx, b));
 }
 

@@ -15,6 +15,7 @@
  * are cancelled inside.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <flint/fmpz_mpoly.h>
 #include <stdlib.h>
@@ -341,6 +342,7 @@ static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo
 }
 
 const qd_expr *qd_cancel(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
     qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));

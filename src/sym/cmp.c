@@ -12,6 +12,7 @@
  *     their arguments left to right, a prefix before the longer sequence.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <ctype.h>
 #include <stdlib.h>
@@ -130,6 +131,7 @@ static int same_rank_cmp(const qd_expr *a, const qd_expr *b) {
 }
 
 int qd_expr_cmp(const qd_expr *a, const qd_expr *b) {
+    QD_ARGS(0, a && b);
     if (a == b)
         return 0;
     const qd_expr *ba = a, *bb = b, *ea = NULL, *eb = NULL;
@@ -158,20 +160,22 @@ int qd_expr_cmp(const qd_expr *a, const qd_expr *b) {
 
 /* ---- inspection --------------------------------------------------------- */
 
-qd_kind qd_expr_kind(const qd_expr *e) { return (qd_kind)e->kind; }
-size_t qd_expr_nargs(const qd_expr *e) { return e->nargs; }
-const qd_expr *qd_expr_arg(const qd_expr *e, size_t i) { return i < e->nargs ? e->args[i] : NULL; }
-uint64_t qd_expr_hash(const qd_expr *e) { return e->hash; }
-qd_role qd_symbol_role(const qd_expr *e) { return (qd_role)e->tag; }
-unsigned qd_symbol_order(const qd_expr *e) { return e->order; }
-qd_func qd_expr_func(const qd_expr *e) { return (qd_func)e->tag; }
-qd_constant qd_expr_constant(const qd_expr *e) { return (qd_constant)e->tag; }
+qd_kind qd_expr_kind(const qd_expr *e) { QD_ARGS((qd_kind)0, e); return (qd_kind)e->kind; }
+size_t qd_expr_nargs(const qd_expr *e) { QD_ARGS(0, e); return e->nargs; }
+const qd_expr *qd_expr_arg(const qd_expr *e, size_t i) { QD_ARGS(NULL, e); return i < e->nargs ? e->args[i] : NULL; }
+uint64_t qd_expr_hash(const qd_expr *e) { QD_ARGS(0, e); return e->hash; }
+qd_role qd_symbol_role(const qd_expr *e) { QD_ARGS((qd_role)0, e); return (qd_role)e->tag; }
+unsigned qd_symbol_order(const qd_expr *e) { QD_ARGS(0, e); return e->order; }
+qd_func qd_expr_func(const qd_expr *e) { QD_ARGS((qd_func)0, e); return (qd_func)e->tag; }
+qd_constant qd_expr_constant(const qd_expr *e) { QD_ARGS((qd_constant)0, e); return (qd_constant)e->tag; }
 
 const qd_expr *qd_symbol_coord(const qd_expr *e) {
+    QD_ARGS(NULL, e);
     return e->kind == QD_SYMBOL && e->tag == QD_ROLE_COORD ? e->u.sym.coord : NULL;
 }
 
 const char *qd_expr_name(const qd_expr *e) {
+    QD_ARGS(NULL, e);
     if (e->kind == QD_SYMBOL)
         return e->u.sym.name;
     if (e->kind == QD_UFUNC || e->kind == QD_UDERIV)
@@ -181,8 +185,8 @@ const char *qd_expr_name(const qd_expr *e) {
     return NULL;
 }
 
-size_t qd_uderiv_nslots(const qd_expr *e) { return e->kind == QD_UDERIV ? e->u.fn.nslots : 0; }
-unsigned qd_uderiv_slot(const qd_expr *e, size_t i) { return e->u.fn.slots[i]; }
+size_t qd_uderiv_nslots(const qd_expr *e) { QD_ARGS(0, e); return e->kind == QD_UDERIV ? e->u.fn.nslots : 0; }
+unsigned qd_uderiv_slot(const qd_expr *e, size_t i) { QD_ARGS(0, e); return e->u.fn.slots[i]; }
 
 static bool has_rec(const qd_expr *e, const qd_expr *x, qd_ptrmap *seen) {
     if (e == x)
@@ -210,6 +214,7 @@ static bool has_rec(const qd_expr *e, const qd_expr *x, qd_ptrmap *seen) {
 }
 
 bool qd_has(const qd_expr *e, const qd_expr *x) {
+    QD_ARGS(false, e && x);
     if (!e || !x)
         return false;
     qd_ptrmap seen = QD_PTRMAP_INIT;
@@ -235,6 +240,7 @@ static int cmp_ptr(const void *a, const void *b) {
 }
 
 size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_t cap) {
+    QD_ARGS(0, ctx && e);
     if (!e)
         return 0;
     qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx)), syms = QD_PTRMAP_AL(qd__ctx_allocator(ctx));

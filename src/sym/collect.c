@@ -8,6 +8,7 @@
  */
 #include "poly.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -144,6 +145,7 @@ static qd_status lin_split(lin *L, const qd_expr *e, const qd_expr *const *xs) {
 
 qd_status qd_linear_coeffs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *xs,
                            const qd_expr **coeffs, const qd_expr **rest) {
+    QD_ARGS_CTX(ctx, ctx && e && (n == 0 || xs) && coeffs && rest);
     for (size_t i = 0; i < n; i++)
         coeffs[i] = NULL;
     *rest = NULL;
@@ -176,6 +178,7 @@ qd_status qd_linear_coeffs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_exp
 }
 
 const qd_expr *qd_coeff(qd_ctx *ctx, const qd_expr *e, const qd_expr *x, long k) {
+    QD_ARGS(NULL, ctx && e && x);
     if (!e || !x)
         return NULL;
     if (k > INT32_MAX || k < -INT32_MAX) {
@@ -254,6 +257,7 @@ done:
 }
 
 const qd_expr *qd_collect(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
+    QD_ARGS(NULL, ctx && e && x);
     if (!e || !x)
         return NULL;
     qd_xsess s;

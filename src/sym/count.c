@@ -15,6 +15,7 @@
  *   a rational p/q: DIV; a negative number: NEG; a function call: one each.
  */
 #include "node.h"
+#include "../base/args.h"
 
 static size_t ops(const qd_expr *e);
 
@@ -124,7 +125,7 @@ static size_t ops_of(const qd_expr *e) {
     return n;
 }
 
-size_t qd_count_ops(const qd_expr *e) { return e ? ops(e) : 0; }
+size_t qd_count_ops(const qd_expr *e) { QD_ARGS(0, e); return e ? ops(e) : 0; }
 
 static void count_dag(const qd_expr *e, qd_ptrmap *seen) {
     if (qd_ptrmap_has(seen, e))
@@ -135,6 +136,7 @@ static void count_dag(const qd_expr *e, qd_ptrmap *seen) {
 }
 
 size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(0, ctx && e);
     (void)ctx;
     if (!e)
         return 0;

@@ -10,6 +10,7 @@
  * subexpression is differentiated once.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -183,6 +184,7 @@ static const qd_expr *derive(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
 }
 
 const qd_expr *qd_diff(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
+    QD_ARGS(NULL, ctx && e && x);
     if (!x)
         return NULL;
     if (x->kind != QD_SYMBOL) {
@@ -193,9 +195,10 @@ const qd_expr *qd_diff(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
 }
 
 const qd_expr *qd_diff_n(qd_ctx *ctx, const qd_expr *e, const qd_expr *x, unsigned n) {
+    QD_ARGS(NULL, ctx && e && x);
     for (unsigned i = 0; i < n && e; i++)
         e = qd_diff(ctx, e, x);
     return e;
 }
 
-const qd_expr *qd_dt(qd_ctx *ctx, const qd_expr *e) { return derive(ctx, e, NULL); }
+const qd_expr *qd_dt(qd_ctx *ctx, const qd_expr *e) { QD_ARGS(NULL, ctx && e); return derive(ctx, e, NULL); }

@@ -4,6 +4,7 @@
  * compiles a qd_prog (prog.c).
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -125,6 +126,7 @@ static double value(walk *w, const qd_expr *e) {
 
 qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *syms,
                   const double *vals, double *out) {
+    QD_ARGS_CTX(ctx, ctx && e && out);
     if (!e)
         return ctx->status != QD_OK ? ctx->status : QD_ERR_ARG;
     walk w = {ctx, QD_PTRMAP_AL(qd__ctx_allocator(ctx)), NULL, 0, 0, QD_OK};

@@ -15,6 +15,7 @@
  */
 #include "poly.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -454,6 +455,7 @@ const qd_expr *qd__xs_expand(qd_xsess *s, const qd_expr *e) {
 }
 
 const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
     qd_xsess s;

@@ -12,6 +12,7 @@
  * form (2*(x + 2*y) = 2*x + 4*y), so numeric content alone changes nothing.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -160,6 +161,7 @@ static const qd_expr *post_factor(qd_ctx *ctx, const qd_expr *e, void *data) {
 }
 
 const qd_expr *qd_factor_terms(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
     qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));

@@ -11,6 +11,7 @@
  * values meet as one node; exp and log cancel; |x| = x for x known >= 0.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -24,6 +25,7 @@ static const char *const names[QD_FUNC_COUNT] = {
 const char *qd_func_name(qd_func f) { return (unsigned)f < QD_FUNC_COUNT ? names[f] : "?"; }
 
 bool qd_func_from_name(const char *name, qd_func *out) {
+    QD_ARGS(false, name && out);
     for (int i = 0; i < QD_FUNC_COUNT; i++)
         if (strcmp(names[i], name) == 0) {
             *out = (qd_func)i;
@@ -206,6 +208,7 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool
 }
 
 const qd_expr *qd_fn(qd_ctx *ctx, qd_func f, const qd_expr *a) {
+    QD_ARGS(NULL, ctx && a);
     if (!a)
         return NULL;
     if (f == QD_ATAN2 || (unsigned)f >= QD_FUNC_COUNT) {
@@ -229,6 +232,7 @@ const qd_expr *qd_fn(qd_ctx *ctx, qd_func f, const qd_expr *a) {
 }
 
 const qd_expr *qd_fn2(qd_ctx *ctx, qd_func f, const qd_expr *y, const qd_expr *x) {
+    QD_ARGS(NULL, ctx && y && x);
     if (!y || !x)
         return NULL;
     if (f != QD_ATAN2) {
@@ -261,6 +265,7 @@ static bool check_name(qd_ctx *ctx, const char *name) {
 }
 
 const qd_expr *qd_ufunc(qd_ctx *ctx, const char *name, size_t n, const qd_expr *const *args) {
+    QD_ARGS(NULL, ctx && name);
     if (!check_name(ctx, name))
         return NULL;
     qd_expr proto = {0};
@@ -278,6 +283,7 @@ static int cmp_unsigned(const void *a, const void *b) {
 
 const qd_expr *qd_uderiv(qd_ctx *ctx, const char *name, size_t nslots, const unsigned *slots,
                          size_t n, const qd_expr *const *args) {
+    QD_ARGS(NULL, ctx && name && (nslots == 0 || slots) && (n == 0 || args));
     if (!check_name(ctx, name))
         return NULL;
     if (nslots == 0 || nslots > 64) {

@@ -12,6 +12,7 @@
  * without an antiderivative.  Logarithms are written log(u), not log|u|.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -116,6 +117,7 @@ static const qd_expr *int_expr(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) 
 }
 
 const qd_expr *qd_integrate(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
+    QD_ARGS(NULL, ctx && e && x);
     if (!e || !x)
         return NULL;
     if (x->kind != QD_SYMBOL) {

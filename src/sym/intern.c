@@ -8,6 +8,7 @@
  * compares argument pointers, not subtrees: interning costs O(nargs).
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <assert.h>
 #include <stdio.h>
@@ -297,12 +298,13 @@ char *qd__strdup(qd_ctx *ctx, const char *s) {
     return d;
 }
 
-qd_status qd_ctx_status(const qd_ctx *ctx) { return ctx->status; }
-const char *qd_ctx_message(const qd_ctx *ctx) { return ctx->diag.message; }
-const qd_diag *qd_ctx_diag(const qd_ctx *ctx) { return &ctx->diag; }
-size_t qd_ctx_node_count(const qd_ctx *ctx) { return ctx->table_len; }
+qd_status qd_ctx_status(const qd_ctx *ctx) { QD_ARGS(QD_ERR_ARG, ctx); return ctx->status; }
+const char *qd_ctx_message(const qd_ctx *ctx) { QD_ARGS(NULL, ctx); return ctx->diag.message; }
+const qd_diag *qd_ctx_diag(const qd_ctx *ctx) { QD_ARGS(NULL, ctx); return &ctx->diag; }
+size_t qd_ctx_node_count(const qd_ctx *ctx) { QD_ARGS(0, ctx); return ctx->table_len; }
 
 void qd_ctx_clear_error(qd_ctx *ctx) {
+    QD_ARGS(, ctx);
     ctx->status = QD_OK;
     memset(&ctx->diag, 0, sizeof ctx->diag);
 }
@@ -317,6 +319,7 @@ bool qd__ctx_recover(qd_ctx *ctx) {
 }
 
 void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...) {
+    QD_ARGS(, ctx && fmt);
     if (ctx->status != QD_OK)
         return; /* the first error is the one that explains the rest */
     ctx->status = st;
@@ -330,6 +333,7 @@ void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...) {
 
 void qd_ctx_error_about(qd_ctx *ctx, qd_subject subject, size_t index, const char *name,
                         qd_reason why, const char *hint) {
+    QD_ARGS(, ctx);
     qd_diag *d = &ctx->diag;
     if (ctx->status == QD_OK || (d->subject != QD_SUBJECT_NONE && d->subject != QD_SUBJECT_TEXT))
         return; /* no error to qualify, or it already says what it is about */
@@ -342,6 +346,7 @@ void qd_ctx_error_about(qd_ctx *ctx, qd_subject subject, size_t index, const cha
 }
 
 void qd_ctx_error_at(qd_ctx *ctx, const char *text, size_t offset, size_t length) {
+    QD_ARGS(, ctx && text);
     qd_diag *d = &ctx->diag;
     if (ctx->status == QD_OK || d->located || !text)
         return;

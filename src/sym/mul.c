@@ -8,6 +8,7 @@
  * distributed (2*(x + y) = 2*x + 2*y), which keeps like terms findable.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -105,6 +106,7 @@ static bool gather(qd_ctx *ctx, size_t n, const qd_expr *const *xs, const qd_exp
 }
 
 const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
+    QD_ARGS(NULL, ctx && (n == 0 || xs));
     for (size_t i = 0; i < n; i++)
         if (!xs[i])
             return NULL;
@@ -172,11 +174,13 @@ done:
 }
 
 const qd_expr *qd_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
+    QD_ARGS(NULL, ctx && a && b);
     const qd_expr *xs[2] = {a, b};
     return qd_mul_n(ctx, 2, xs);
 }
 
 const qd_expr *qd_div(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
+    QD_ARGS(NULL, ctx && a && b);
     if (b && qd_is_zero(b) && b->kind == QD_RATIONAL) {
         qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero");
         return NULL;

@@ -6,6 +6,7 @@
  * becomes a float, as in every CAS.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -20,6 +21,7 @@ const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q) {
 }
 
 const qd_expr *qd_int(qd_ctx *ctx, long v) {
+    QD_ARGS(NULL, ctx);
     mpq_t q;
     mpq_init(q);
     mpq_set_si(q, v, 1);
@@ -29,6 +31,7 @@ const qd_expr *qd_int(qd_ctx *ctx, long v) {
 }
 
 const qd_expr *qd_rat(qd_ctx *ctx, long num, long den) {
+    QD_ARGS(NULL, ctx);
     if (den == 0) {
         qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero: %ld/0", num);
         return NULL;
@@ -110,6 +113,7 @@ done:
 }
 
 const qd_expr *qd_rat_str(qd_ctx *ctx, const char *text) {
+    QD_ARGS(NULL, ctx && text);
     mpq_t q;
     mpq_init(q);
     const qd_expr *e = NULL;
@@ -122,6 +126,7 @@ const qd_expr *qd_rat_str(qd_ctx *ctx, const char *text) {
 }
 
 const qd_expr *qd_float(qd_ctx *ctx, double v) {
+    QD_ARGS(NULL, ctx);
     if (!isfinite(v)) {
         qd_ctx_error(ctx, QD_ERR_NUMERIC, "not a finite number: %g", v);
         return NULL;
@@ -133,6 +138,7 @@ const qd_expr *qd_float(qd_ctx *ctx, double v) {
 }
 
 const qd_expr *qd_const(qd_ctx *ctx, qd_constant c) {
+    QD_ARGS(NULL, ctx);
     qd_expr proto = {0};
     proto.kind = QD_CONSTANT;
     proto.tag = (uint8_t)c;
@@ -253,9 +259,10 @@ int qd__num_cmp(const qd_expr *a, const qd_expr *b) {
 
 /* ---- inspection of numbers ------------------------------------------------ */
 
-bool qd_is_number(const qd_expr *e) { return e && qd__is_num(e); }
+bool qd_is_number(const qd_expr *e) { QD_ARGS(false, e); return e && qd__is_num(e); }
 
 bool qd_is_zero(const qd_expr *e) {
+    QD_ARGS(false, e);
     if (!e)
         return false;
     if (e->kind == QD_RATIONAL)
@@ -264,15 +271,18 @@ bool qd_is_zero(const qd_expr *e) {
 }
 
 bool qd_is_one(const qd_expr *e) {
+    QD_ARGS(false, e);
     return e && e->kind == QD_RATIONAL && mpz_cmp_ui(mpq_denref(e->u.q), 1) == 0 &&
            mpz_cmp_ui(mpq_numref(e->u.q), 1) == 0;
 }
 
 bool qd_is_integer(const qd_expr *e) {
+    QD_ARGS(false, e);
     return e && e->kind == QD_RATIONAL && mpz_cmp_ui(mpq_denref(e->u.q), 1) == 0;
 }
 
 int qd_number_sign(const qd_expr *e) {
+    QD_ARGS(0, e);
     if (e->kind == QD_RATIONAL)
         return mpq_sgn(e->u.q);
     if (e->kind == QD_FLOAT)
@@ -291,6 +301,7 @@ static double rational_value(const mpq_t q) {
 }
 
 double qd_number_value(const qd_expr *e) {
+    QD_ARGS(NAN, e);
     if (e->kind == QD_RATIONAL)
         return rational_value(e->u.q);
     if (e->kind == QD_FLOAT)
@@ -299,6 +310,7 @@ double qd_number_value(const qd_expr *e) {
 }
 
 bool qd_rational_get(const qd_expr *e, long *num, long *den) {
+    QD_ARGS(false, e && num && den);
     if (!e || e->kind != QD_RATIONAL || !mpz_fits_slong_p(mpq_numref(e->u.q)) ||
         !mpz_fits_slong_p(mpq_denref(e->u.q)))
         return false;
@@ -308,6 +320,7 @@ bool qd_rational_get(const qd_expr *e, long *num, long *den) {
 }
 
 const char *qd_rational_str(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && e);
     if (!e || e->kind != QD_RATIONAL)
         return NULL;
     size_t n = mpz_sizeinbase(mpq_numref(e->u.q), 10) + mpz_sizeinbase(mpq_denref(e->u.q), 10) + 3;

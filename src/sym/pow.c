@@ -19,6 +19,7 @@
  * pass over a product only when a product is raised to a fraction.
  */
 #include "node.h"
+#include "../base/args.h"
 
 static const qd_expr *pow_node(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
     qd_expr proto = {0};
@@ -127,6 +128,7 @@ static const qd_expr *real_power(qd_ctx *ctx, const qd_expr *b, const qd_expr *e
 }
 
 const qd_expr *qd_pow(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && b && e);
     if (!b || !e)
         return NULL;
     if (qd_is_zero(e) && e->kind == QD_RATIONAL)
@@ -167,7 +169,8 @@ const qd_expr *qd_pow(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
 }
 
 const qd_expr *qd_powi(qd_ctx *ctx, const qd_expr *b, long n) {
+    QD_ARGS(NULL, ctx && b);
     return qd_pow(ctx, b, qd_int(ctx, n));
 }
 
-const qd_expr *qd_sqrt(qd_ctx *ctx, const qd_expr *a) { return qd_pow(ctx, a, ctx->half); }
+const qd_expr *qd_sqrt(qd_ctx *ctx, const qd_expr *a) { QD_ARGS(NULL, ctx && a); return qd_pow(ctx, a, ctx->half); }

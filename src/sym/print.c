@@ -3,11 +3,13 @@
  * the time symbol's printed name, which the printers share.
  */
 #include "prec.h"
+#include "../base/args.h"
 
 #include <ctype.h>
 #include <string.h>
 
 qd_status qd_print_set_time_name(qd_ctx *ctx, const char *name) {
+    QD_ARGS_CTX(ctx, ctx && name);
     if (!ctx)
         return QD_ERR_ARG;
     bool ident = name && (isalpha((unsigned char)name[0]) || name[0] == '_');
@@ -29,10 +31,12 @@ qd_status qd_print_set_time_name(qd_ctx *ctx, const char *name) {
 }
 
 const char *qd_print_time_name(const qd_ctx *ctx) {
+    QD_ARGS(NULL, ctx);
     return ctx && ctx->tname ? ctx->tname : "t";
 }
 
 qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && out);
     if (!ctx || !out)
         return QD_ERR_ARG;
     if (!e) {

@@ -25,6 +25,7 @@
  */
 #include "prec.h"
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -60,6 +61,7 @@ static void put_name(qd_buf *b, const char *s) {
 }
 
 qd_status qd_c_name(const qd_expr *sym, qd_buf *out) {
+    QD_ARGS(QD_ERR_ARG, sym && out);
     if (!sym || !out || sym->kind != QD_SYMBOL)
         return QD_ERR_ARG;
     if (sym->tag != QD_ROLE_COORD || sym->order == 0) {
@@ -375,6 +377,7 @@ static void hoist(cp *p, const uses *u) {
 
 qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
                            const char *const *lhs, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && (n == 0 || exprs) && (n == 0 || lhs) && out);
     if (!ctx || !out || (n && (!exprs || !lhs)))
         return QD_ERR_ARG;
     for (size_t i = 0; i < n; i++) {

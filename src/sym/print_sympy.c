@@ -27,6 +27,7 @@
  */
 #include "prec.h"
 #include "base/mem.h"
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -298,6 +299,7 @@ static int name_order(const void *a, const void *b) {
 
 qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
                                    qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && (n == 0 || exprs) && out);
     if (!ctx || !out || (n && !exprs))
         return QD_ERR_ARG;
     fn_names c = {QD_PTRMAP_AL(qd__ctx_allocator(ctx)), QD_PTRMAP_AL(qd__ctx_allocator(ctx)), NULL, 0, 0, false, ctx};

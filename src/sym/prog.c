@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "prog_int.h"
+#include "../base/args.h"
 
 enum { NEED_VAL = 1, NEED_ALT = 2 };
 enum { INNER, LEAF_INPUT, LEAF_NUMBER };
@@ -613,12 +614,13 @@ static double prodn(const double *r, const uint32_t *a) {
     return m / d;
 }
 
-size_t qd_prog_work_size(const qd_prog *p) { return p && p->nreg ? p->nreg : 1; }
+size_t qd_prog_work_size(const qd_prog *p) { QD_ARGS(0, p); return p && p->nreg ? p->nreg : 1; }
 
 /* The constants sit in the registers after the inputs, which no
  * instruction overwrites (reuse_registers keeps them fixed): copying them
  * once makes the workspace ready for any number of runs. */
 void qd_prog_work_init(const qd_prog *p, double *work) {
+    QD_ARGS(, p && work);
     if (!p)
         return;
     memset(work, 0, qd_prog_work_size(p) * sizeof *work);
@@ -633,6 +635,7 @@ void qd_prog_run(qd_prog *p, const double *in, double *out) {
 
 /* The hot loop: one switch per instruction, the common operations inline. */
 void qd_prog_eval(const qd_prog *p, double *work, const double *in, double *out) {
+    QD_ARGS(, p && work && in && out);
     if (!p)
         return;
     double *r = work;

@@ -33,6 +33,7 @@
 #include "qdot/read.h"
 #include "node.h"
 #include "base/diag.h"
+#include "../base/args.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -563,6 +564,7 @@ static const qd_expr *sum(rd *p) {
 /* input := sum EOF */
 const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
                        qd_read_error *err) {
+    QD_ARGS(NULL, ctx && text);
     if (err)
         memset(err, 0, sizeof *err);
     if (!ctx)

@@ -17,6 +17,7 @@
  * against a^2 - b^2).
  */
 #include "factor_poly.h"
+#include "../base/args.h"
 
 /* A negative numeric power anywhere: a quotient cancel may shorten. */
 static bool has_quotient(const qd_expr *e, qd_ptrmap *seen) {
@@ -72,6 +73,7 @@ static bool has_sum(const qd_expr *e, qd_ptrmap *seen) {
 }
 
 const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
     qd_ptrmap seen0 = QD_PTRMAP_AL(qd__ctx_allocator(ctx));

@@ -6,11 +6,13 @@
  * subexpression is rebuilt once.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
 const qd_expr *qd_subs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *from,
                        const qd_expr *const *to) {
+    QD_ARGS(NULL, ctx && e && (n == 0 || from) && (n == 0 || to));
     if (!e)
         return NULL;
     qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));

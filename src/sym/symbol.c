@@ -10,6 +10,7 @@
  * then |m| = m and sqrt(m^2) = m on construction.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <string.h>
 
@@ -69,14 +70,17 @@ static const qd_expr *make_symbol(qd_ctx *ctx, const char *name, qd_role role, u
 }
 
 const qd_expr *qd_symbol(qd_ctx *ctx, const char *name) {
+    QD_ARGS(NULL, ctx && name);
     return make_symbol(ctx, name, QD_ROLE_PLAIN, 0, NULL, false);
 }
 
 const qd_expr *qd_param(qd_ctx *ctx, const char *name) {
+    QD_ARGS(NULL, ctx && name);
     return make_symbol(ctx, name, QD_ROLE_PARAM, 0, NULL, false);
 }
 
 const qd_expr *qd_symbol_positive(qd_ctx *ctx, const char *name, qd_role role) {
+    QD_ARGS(NULL, ctx && name);
     if (role != QD_ROLE_PLAIN && role != QD_ROLE_PARAM) {
         qd_ctx_error(ctx, QD_ERR_ARG, "only a plain symbol or a parameter can be assumed positive");
         return NULL;
@@ -85,12 +89,14 @@ const qd_expr *qd_symbol_positive(qd_ctx *ctx, const char *name, qd_role role) {
 }
 
 bool qd_symbol_is_positive(const qd_expr *e) {
+    QD_ARGS(false, e);
     return e && e->kind == QD_SYMBOL && e->u.sym.positive;
 }
 
-const qd_expr *qd_time(qd_ctx *ctx) { return make_symbol(ctx, "t", QD_ROLE_TIME, 0, NULL, false); }
+const qd_expr *qd_time(qd_ctx *ctx) { QD_ARGS(NULL, ctx); return make_symbol(ctx, "t", QD_ROLE_TIME, 0, NULL, false); }
 
 const qd_expr *qd_coord(qd_ctx *ctx, const char *name) {
+    QD_ARGS(NULL, ctx && name);
     if (name && strchr(name, '\'')) {
         qd_ctx_error(ctx, QD_ERR_ARG, "a coordinate name cannot contain a prime: '%s'", name);
         return NULL;
@@ -99,6 +105,7 @@ const qd_expr *qd_coord(qd_ctx *ctx, const char *name) {
 }
 
 const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order) {
+    QD_ARGS(NULL, ctx && coord);
     if (!coord)
         return NULL;
     if (coord->kind != QD_SYMBOL || coord->tag != QD_ROLE_COORD) {
@@ -132,6 +139,7 @@ const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order) {
 }
 
 const qd_expr *qd_lookup(const qd_ctx *ctx, const char *name) {
+    QD_ARGS(NULL, ctx && name);
     const char *iname = qd__find_name(ctx, name);
     return iname ? qd_ptrmap_get(&ctx->symtab, iname) : NULL;
 }

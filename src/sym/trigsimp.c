@@ -22,6 +22,7 @@
  * factor list names at most one term.
  */
 #include "node.h"
+#include "../base/args.h"
 
 #include <stdlib.h>
 
@@ -415,6 +416,7 @@ static const qd_expr *post_trig(qd_ctx *ctx, const qd_expr *e, void *data) {
 }
 
 const qd_expr *qd_trigsimp(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
     qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));

@@ -1,0 +1,3322 @@
+/*
+ * tests/api/test_null.c - every public function given NULL in each pointer
+ * argument (issue 30): the documented error value, never a crash.
+ *
+ * Written by tests/api/gen_null_test.py from the headers in include/qdot/;
+ * do not edit:
+ * run `python3 tests/api/gen_null_test.py --root .` after changing a header
+ * (the ctest api/check_null_coverage fails until then).
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+#include "qdot/qdot.h"
+#include "qdot/action.h"
+#include "qdot/canonical.h"
+#include "qdot/codegen.h"
+#include "qdot/control.h"
+#include "qdot/equilibria.h"
+#include "qdot/eval.h"
+#include "qdot/expr.h"
+#include "qdot/hamilton.h"
+#include "qdot/hj.h"
+#include "qdot/impulse.h"
+#include "qdot/integrals.h"
+#include "qdot/lyapunov.h"
+#include "qdot/mech.h"
+#include "qdot/model.h"
+#include "qdot/modes.h"
+#include "qdot/orbit.h"
+#include "qdot/path.h"
+#include "qdot/plot.h"
+#include "qdot/print.h"
+#include "qdot/read.h"
+#include "qdot/routh.h"
+#include "qdot/scatter.h"
+#include "qdot/sim.h"
+#include "qdot/speeds.h"
+#include "qdot/stability.h"
+#include "qdot/statespace.h"
+#include "qdot/status.h"
+#include "qdot/sweep.h"
+#include "qdot/symmetry.h"
+#include "qdot/zvc.h"
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wformat"
+#pragma GCC diagnostic ignored "-Wnonnull"
+#pragma GCC diagnostic ignored "-Wformat-extra-args"
+#endif
+
+typedef struct fixture {
+    qd_ctx *ctx;
+    qd_model *model;
+    qd_eom *eom;
+    qd_sim *sim;
+    qd_plot *plot;
+    qd_prog *prog;
+    const qd_expr *q;
+    qd_buf buf;
+    double d[512];
+    size_t z[64];
+    bool b[64];
+    int i[64];
+    unsigned u[64];
+    long l[64];
+    uint64_t u64[64];
+    qd_status st[64];
+    char c[512];
+    const qd_expr *e[64];
+    const char *names[64];
+    void *p[64];
+    max_align_t blob[1024];
+} fixture;
+
+static const char MODEL[] =
+    "coordinates q\n"
+    "parameters m = 1, k = 1\n"
+    "T = m/2*q'^2\n"
+    "V = k/2*q^2\n";
+
+/* Fresh values for the next call: what a call wrote is gone, no error kept. */
+static void reset(fixture *f)
+{
+    qd_ctx_clear_error(f->ctx);
+    qd_buf_clear(&f->buf);
+    memset(f->d, 0, sizeof f->d);
+    memset(f->z, 0, sizeof f->z);
+    memset(f->b, 0, sizeof f->b);
+    memset(f->i, 0, sizeof f->i);
+    memset(f->u, 0, sizeof f->u);
+    memset(f->l, 0, sizeof f->l);
+    memset(f->u64, 0, sizeof f->u64);
+    memset(f->st, 0, sizeof f->st);
+    memset(f->c, 0, sizeof f->c);
+    memset(f->p, 0, sizeof f->p);
+    memset(f->blob, 0, sizeof f->blob);
+    for (size_t k = 0; k < 64; k++) {
+        f->e[k] = f->q;
+        f->names[k] = "q";
+    }
+}
+
+static void setup(fixture *f)
+{
+    memset(f, 0, sizeof *f);
+    f->ctx = qd_ctx_new();
+    assert_non_null(f->ctx);
+    f->model = qd_model_parse(f->ctx, MODEL, NULL);
+    assert_non_null(f->model);
+    f->eom = qd_eom_derive(f->ctx, f->model);
+    assert_non_null(f->eom);
+    f->q = qd_model_coord(f->model, 0);
+    f->sim = qd_sim_new(f->ctx, f->model, f->eom);
+    assert_non_null(f->sim);
+    f->plot = qd_plot_new(f->ctx, 200, 200);
+    assert_non_null(f->plot);
+    f->prog = qd_prog_new(f->ctx, 1, &f->q, 1, &f->q);
+    assert_non_null(f->prog);
+    f->buf = (qd_buf)QD_BUF_INIT;
+    reset(f);
+}
+
+static void teardown(fixture *f)
+{
+    qd_buf_free(&f->buf);
+    qd_prog_free(f->prog);
+    qd_plot_free(f->plot);
+    qd_sim_free(f->sim);
+    qd_eom_free(f->eom);
+    qd_model_free(f->model);
+    qd_ctx_free(f->ctx);
+}
+
+static void null_action(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_action_at */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_at(NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_at(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_at(F.ctx, F.model, 1, NULL, F.d, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_at(F.ctx, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_at(F.ctx, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    /* ---- qd_action_of_sep */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_of_sep(NULL, NULL, F.b, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_of_sep(F.ctx, NULL, F.b, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* angle NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_of_sep(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_of_sep(F.ctx, NULL, F.b, 1, NULL, F.d, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_of_sep(F.ctx, NULL, F.b, 1, (const qd_expr * const *)F.e, NULL, NULL, (qd_action *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_of_sep(F.ctx, NULL, F.b, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    /* ---- qd_action_free */
+    /* a NULL */
+    qd_action_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_canonical(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_bracket */
+    /* ctx NULL */
+    assert_null(qd_bracket(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q));
+    reset(&F);
+    /* q NULL */
+    assert_null(qd_bracket(F.ctx, 1, NULL, (const qd_expr * const *)F.e, F.q, F.q));
+    reset(&F);
+    /* p NULL */
+    assert_null(qd_bracket(F.ctx, 1, (const qd_expr * const *)F.e, NULL, F.q, F.q));
+    reset(&F);
+    /* F NULL */
+    assert_null(qd_bracket(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q));
+    reset(&F);
+    /* G NULL */
+    assert_null(qd_bracket(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL));
+    reset(&F);
+    /* ---- qd_canonical_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_check(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_canon_verdict *)(void *)F.blob));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_check(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_canon_verdict *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_check(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_canon_verdict *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_check(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, F.q, (qd_canon_verdict *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_check(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, (qd_canon_verdict *)(void *)F.blob));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_check(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL));
+    reset(&F);
+    /* ---- qd_generate */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(NULL, (qd_gen_type){0}, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* old_q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(F.ctx, (qd_gen_type){0}, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* old_p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(F.ctx, (qd_gen_type){0}, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* new_Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(F.ctx, (qd_gen_type){0}, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* new_P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(F.ctx, (qd_gen_type){0}, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* F NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(F.ctx, (qd_gen_type){0}, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(F.ctx, (qd_gen_type){0}, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate(F.ctx, (qd_gen_type){0}, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, NULL));
+    reset(&F);
+    /* ---- qd_generate_f2 */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* F2 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL, F.q, (qd_gen_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_generate_f2(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, F.q, NULL));
+    reset(&F);
+    /* ---- qd_gen_result_free */
+    /* r NULL */
+    qd_gen_result_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_codegen(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_codegen_c */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_c(NULL, F.model, F.eom, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_c(F.ctx, NULL, F.eom, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_c(F.ctx, F.model, NULL, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_c(F.ctx, F.model, F.eom, NULL, &F.buf, &F.buf));
+    reset(&F);
+    /* c_text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_c(F.ctx, F.model, F.eom, "q", NULL, &F.buf));
+    reset(&F);
+    /* ---- qd_codegen_speeds_c */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_speeds_c(NULL, F.model, NULL, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_speeds_c(F.ctx, NULL, NULL, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_speeds_c(F.ctx, F.model, NULL, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_speeds_c(F.ctx, F.model, NULL, NULL, &F.buf, &F.buf));
+    reset(&F);
+    /* c_text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_speeds_c(F.ctx, F.model, NULL, "q", NULL, &F.buf));
+    reset(&F);
+    /* ---- qd_native_load */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load(NULL, F.model, F.eom, "q", (qd_native *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load(F.ctx, NULL, F.eom, "q", (qd_native *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load(F.ctx, F.model, NULL, "q", (qd_native *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load(F.ctx, F.model, F.eom, "q", NULL));
+    reset(&F);
+    /* ---- qd_native_unload */
+    /* nat NULL */
+    qd_native_unload(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_control(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_care_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_care_solve(NULL, 1, 1, F.d, F.d, F.d, F.d, (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* A NULL */
+    assert_int_equal(QD_ERR_ARG, qd_care_solve(F.ctx, 1, 1, NULL, F.d, F.d, F.d, (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* B NULL */
+    assert_int_equal(QD_ERR_ARG, qd_care_solve(F.ctx, 1, 1, F.d, NULL, F.d, F.d, (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_care_solve(F.ctx, 1, 1, F.d, F.d, NULL, F.d, (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* R NULL */
+    assert_int_equal(QD_ERR_ARG, qd_care_solve(F.ctx, 1, 1, F.d, F.d, F.d, NULL, (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_care_solve(F.ctx, 1, 1, F.d, F.d, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_care_result_free */
+    /* r NULL */
+    qd_care_result_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_equilibria(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_eq_kind_name */
+    /* no pointer argument */
+    /* ---- qd_equilibria_default_box */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_default_box(NULL, F.eom, F.model, F.b, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_default_box(F.ctx, NULL, F.model, F.b, F.d, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_default_box(F.ctx, F.eom, NULL, F.b, F.d, F.d));
+    reset(&F);
+    /* angle NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_default_box(F.ctx, F.eom, F.model, NULL, F.d, F.d));
+    reset(&F);
+    /* lo NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_default_box(F.ctx, F.eom, F.model, F.b, NULL, F.d));
+    reset(&F);
+    /* hi NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_default_box(F.ctx, F.eom, F.model, F.b, F.d, NULL));
+    reset(&F);
+    /* ---- qd_equilibria_find */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    /* ---- qd_equilibria_free */
+    /* r NULL */
+    qd_equilibria_free(NULL);
+    reset(&F);
+    /* ---- qd_equilibria_choose */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_choose(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (qd_equilibrium_choice *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_choose(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, (qd_equilibrium_choice *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_choose(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_equilibrium_choice *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_choose(F.ctx, F.eom, F.model, 1, NULL, F.d, (qd_equilibrium_choice *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_choose(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, (qd_equilibrium_choice *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_choose(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_equilibrium_choice_free */
+    /* c NULL */
+    qd_equilibrium_choice_free(NULL);
+    reset(&F);
+    /* ---- qd_eom_rest_residual */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(F.ctx, F.eom, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(F.ctx, F.eom, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* res NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(F.ctx, F.eom, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_equilibrium_exact_in_parameters */
+    /* ctx NULL */
+    assert_true(qd_equilibrium_exact_in_parameters(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e) == 0);
+    reset(&F);
+    /* e NULL */
+    assert_true(qd_equilibrium_exact_in_parameters(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e) == 0);
+    reset(&F);
+    /* m NULL */
+    assert_true(qd_equilibrium_exact_in_parameters(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e) == 0);
+    reset(&F);
+    /* syms NULL */
+    assert_true(qd_equilibrium_exact_in_parameters(F.ctx, F.eom, F.model, 1, NULL, F.d, (const qd_expr * const *)F.e) == 0);
+    reset(&F);
+    /* vals NULL */
+    assert_true(qd_equilibrium_exact_in_parameters(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e) == 0);
+    reset(&F);
+    /* q0 NULL */
+    assert_true(qd_equilibrium_exact_in_parameters(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL) == 0);
+    reset(&F);
+    /* ---- qd_speeds_equilibria_find */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_find(NULL, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_speeds_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_find(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_speeds_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_find(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_speeds_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_find(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    /* ---- qd_speeds_equilibria_free */
+    /* r NULL */
+    qd_speeds_equilibria_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_eval(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_prog_new */
+    /* no pointer argument */
+    /* ---- qd_prog_free */
+    /* no pointer argument */
+    /* ---- qd_prog_run */
+    /* no pointer argument */
+    /* ---- qd_prog_work_size */
+    /* p NULL */
+    assert_true(qd_prog_work_size(NULL) == 0);
+    reset(&F);
+    /* ---- qd_prog_work_init */
+    /* p NULL */
+    qd_prog_work_init(NULL, F.d);
+    reset(&F);
+    /* work NULL */
+    qd_prog_work_init(F.prog, NULL);
+    reset(&F);
+    /* ---- qd_prog_eval */
+    /* p NULL */
+    qd_prog_eval(NULL, F.d, F.d, F.d);
+    reset(&F);
+    /* work NULL */
+    qd_prog_eval(F.prog, NULL, F.d, F.d);
+    reset(&F);
+    /* in NULL */
+    qd_prog_eval(F.prog, F.d, NULL, F.d);
+    reset(&F);
+    /* out NULL */
+    qd_prog_eval(F.prog, F.d, F.d, NULL);
+    reset(&F);
+    /* ---- qd_prog_ninstr */
+    /* no pointer argument */
+    teardown(&F);
+}
+
+static void null_expr(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_ctx_new */
+    /* no pointer argument */
+    /* ---- qd_ctx_free */
+    /* ctx NULL */
+    qd_ctx_free(NULL);
+    reset(&F);
+    /* ---- qd_ctx_new_with */
+    /* no pointer argument */
+    /* ---- qd_ctx_status */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ctx_status(NULL));
+    reset(&F);
+    /* ---- qd_ctx_message */
+    /* ctx NULL */
+    (void)qd_ctx_message(NULL);
+    reset(&F);
+    /* ---- qd_ctx_diag */
+    /* ctx NULL */
+    assert_null(qd_ctx_diag(NULL));
+    reset(&F);
+    /* ---- qd_ctx_clear_error */
+    /* ctx NULL */
+    qd_ctx_clear_error(NULL);
+    reset(&F);
+    /* ---- qd_ctx_error */
+    /* ctx NULL */
+    qd_ctx_error(NULL, (qd_status){0}, "q");
+    reset(&F);
+    /* fmt NULL */
+    qd_ctx_error(F.ctx, (qd_status){0}, NULL);
+    reset(&F);
+    /* ---- qd_ctx_error_about */
+    /* ctx NULL */
+    qd_ctx_error_about(NULL, (qd_subject){0}, 1, "q", (qd_reason){0}, "q");
+    reset(&F);
+    /* ---- qd_ctx_error_at */
+    /* ctx NULL */
+    qd_ctx_error_at(NULL, "q", 1, 1);
+    reset(&F);
+    /* text NULL */
+    qd_ctx_error_at(F.ctx, NULL, 1, 1);
+    reset(&F);
+    /* ---- qd_ctx_node_count */
+    /* ctx NULL */
+    assert_true(qd_ctx_node_count(NULL) == 0);
+    reset(&F);
+    /* ---- qd_int */
+    /* ctx NULL */
+    assert_null(qd_int(NULL, 1));
+    reset(&F);
+    /* ---- qd_rat */
+    /* ctx NULL */
+    assert_null(qd_rat(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_rat_str */
+    /* ctx NULL */
+    assert_null(qd_rat_str(NULL, "q"));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_rat_str(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_float */
+    /* ctx NULL */
+    assert_null(qd_float(NULL, 1));
+    reset(&F);
+    /* ---- qd_const */
+    /* ctx NULL */
+    assert_null(qd_const(NULL, (qd_constant){0}));
+    reset(&F);
+    /* ---- qd_symbol */
+    /* ctx NULL */
+    assert_null(qd_symbol(NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_symbol(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_param */
+    /* ctx NULL */
+    assert_null(qd_param(NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_param(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_symbol_positive */
+    /* ctx NULL */
+    assert_null(qd_symbol_positive(NULL, "q", (qd_role){0}));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_symbol_positive(F.ctx, NULL, (qd_role){0}));
+    reset(&F);
+    /* ---- qd_symbol_is_positive */
+    /* e NULL */
+    assert_true(qd_symbol_is_positive(NULL) == 0);
+    reset(&F);
+    /* ---- qd_time */
+    /* ctx NULL */
+    assert_null(qd_time(NULL));
+    reset(&F);
+    /* ---- qd_coord */
+    /* ctx NULL */
+    assert_null(qd_coord(NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_coord(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_jet */
+    /* ctx NULL */
+    assert_null(qd_jet(NULL, F.q, 1));
+    reset(&F);
+    /* coord NULL */
+    assert_null(qd_jet(F.ctx, NULL, 1));
+    reset(&F);
+    /* ---- qd_lookup */
+    /* ctx NULL */
+    assert_null(qd_lookup(NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_lookup(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_add */
+    /* ctx NULL */
+    assert_null(qd_add(NULL, F.q, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_add(F.ctx, NULL, F.q));
+    reset(&F);
+    /* b NULL */
+    assert_null(qd_add(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_sub */
+    /* ctx NULL */
+    assert_null(qd_sub(NULL, F.q, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_sub(F.ctx, NULL, F.q));
+    reset(&F);
+    /* b NULL */
+    assert_null(qd_sub(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_mul */
+    /* ctx NULL */
+    assert_null(qd_mul(NULL, F.q, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_mul(F.ctx, NULL, F.q));
+    reset(&F);
+    /* b NULL */
+    assert_null(qd_mul(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_div */
+    /* ctx NULL */
+    assert_null(qd_div(NULL, F.q, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_div(F.ctx, NULL, F.q));
+    reset(&F);
+    /* b NULL */
+    assert_null(qd_div(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_neg */
+    /* ctx NULL */
+    assert_null(qd_neg(NULL, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_neg(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_pow */
+    /* ctx NULL */
+    assert_null(qd_pow(NULL, F.q, F.q));
+    reset(&F);
+    /* base NULL */
+    assert_null(qd_pow(F.ctx, NULL, F.q));
+    reset(&F);
+    /* exponent NULL */
+    assert_null(qd_pow(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_powi */
+    /* ctx NULL */
+    assert_null(qd_powi(NULL, F.q, 1));
+    reset(&F);
+    /* base NULL */
+    assert_null(qd_powi(F.ctx, NULL, 1));
+    reset(&F);
+    /* ---- qd_sqrt */
+    /* ctx NULL */
+    assert_null(qd_sqrt(NULL, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_sqrt(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_add_n */
+    /* ctx NULL */
+    assert_null(qd_add_n(NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* terms NULL */
+    assert_null(qd_add_n(F.ctx, 1, NULL));
+    reset(&F);
+    /* ---- qd_mul_n */
+    /* ctx NULL */
+    assert_null(qd_mul_n(NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* factors NULL */
+    assert_null(qd_mul_n(F.ctx, 1, NULL));
+    reset(&F);
+    /* ---- qd_fn */
+    /* ctx NULL */
+    assert_null(qd_fn(NULL, (qd_func){0}, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_fn(F.ctx, (qd_func){0}, NULL));
+    reset(&F);
+    /* ---- qd_fn2 */
+    /* ctx NULL */
+    assert_null(qd_fn2(NULL, (qd_func){0}, F.q, F.q));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_fn2(F.ctx, (qd_func){0}, NULL, F.q));
+    reset(&F);
+    /* b NULL */
+    assert_null(qd_fn2(F.ctx, (qd_func){0}, F.q, NULL));
+    reset(&F);
+    /* ---- qd_func_name */
+    /* no pointer argument */
+    /* ---- qd_func_from_name */
+    /* name NULL */
+    assert_true(qd_func_from_name(NULL, (qd_func *)(void *)F.blob) == 0);
+    reset(&F);
+    /* out NULL */
+    assert_true(qd_func_from_name("q", NULL) == 0);
+    reset(&F);
+    /* ---- qd_ufunc */
+    /* ctx NULL */
+    assert_null(qd_ufunc(NULL, "q", 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_ufunc(F.ctx, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* ---- qd_uderiv */
+    /* ctx NULL */
+    assert_null(qd_uderiv(NULL, "q", 1, F.u, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_uderiv(F.ctx, NULL, 1, F.u, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* slots NULL */
+    assert_null(qd_uderiv(F.ctx, "q", 1, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* args NULL */
+    assert_null(qd_uderiv(F.ctx, "q", 1, F.u, 1, NULL));
+    reset(&F);
+    /* ---- qd_expr_kind */
+    /* e NULL */
+    (void)qd_expr_kind(NULL);
+    reset(&F);
+    /* ---- qd_expr_nargs */
+    /* e NULL */
+    assert_true(qd_expr_nargs(NULL) == 0);
+    reset(&F);
+    /* ---- qd_expr_arg */
+    /* e NULL */
+    assert_null(qd_expr_arg(NULL, 1));
+    reset(&F);
+    /* ---- qd_expr_hash */
+    /* e NULL */
+    (void)qd_expr_hash(NULL);
+    reset(&F);
+    /* ---- qd_expr_cmp */
+    /* a NULL */
+    (void)qd_expr_cmp(NULL, F.q);
+    reset(&F);
+    /* b NULL */
+    (void)qd_expr_cmp(F.q, NULL);
+    reset(&F);
+    /* ---- qd_expr_name */
+    /* e NULL */
+    assert_null(qd_expr_name(NULL));
+    reset(&F);
+    /* ---- qd_symbol_role */
+    /* e NULL */
+    (void)qd_symbol_role(NULL);
+    reset(&F);
+    /* ---- qd_symbol_order */
+    /* e NULL */
+    (void)qd_symbol_order(NULL);
+    reset(&F);
+    /* ---- qd_symbol_coord */
+    /* e NULL */
+    assert_null(qd_symbol_coord(NULL));
+    reset(&F);
+    /* ---- qd_expr_func */
+    /* e NULL */
+    (void)qd_expr_func(NULL);
+    reset(&F);
+    /* ---- qd_expr_constant */
+    /* e NULL */
+    (void)qd_expr_constant(NULL);
+    reset(&F);
+    /* ---- qd_uderiv_nslots */
+    /* e NULL */
+    assert_true(qd_uderiv_nslots(NULL) == 0);
+    reset(&F);
+    /* ---- qd_uderiv_slot */
+    /* e NULL */
+    (void)qd_uderiv_slot(NULL, 1);
+    reset(&F);
+    /* ---- qd_is_number */
+    /* e NULL */
+    assert_true(qd_is_number(NULL) == 0);
+    reset(&F);
+    /* ---- qd_is_zero */
+    /* e NULL */
+    assert_true(qd_is_zero(NULL) == 0);
+    reset(&F);
+    /* ---- qd_is_one */
+    /* e NULL */
+    assert_true(qd_is_one(NULL) == 0);
+    reset(&F);
+    /* ---- qd_is_integer */
+    /* e NULL */
+    assert_true(qd_is_integer(NULL) == 0);
+    reset(&F);
+    /* ---- qd_number_sign */
+    /* e NULL */
+    (void)qd_number_sign(NULL);
+    reset(&F);
+    /* ---- qd_number_value */
+    /* e NULL */
+    assert_true(isnan(qd_number_value(NULL)));
+    reset(&F);
+    /* ---- qd_rational_get */
+    /* e NULL */
+    assert_true(qd_rational_get(NULL, F.l, F.l) == 0);
+    reset(&F);
+    /* num NULL */
+    assert_true(qd_rational_get(F.q, NULL, F.l) == 0);
+    reset(&F);
+    /* den NULL */
+    assert_true(qd_rational_get(F.q, F.l, NULL) == 0);
+    reset(&F);
+    /* ---- qd_rational_str */
+    /* ctx NULL */
+    assert_null(qd_rational_str(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_rational_str(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_has */
+    /* e NULL */
+    assert_true(qd_has(NULL, F.q) == 0);
+    reset(&F);
+    /* x NULL */
+    assert_true(qd_has(F.q, NULL) == 0);
+    reset(&F);
+    /* ---- qd_free_symbols */
+    /* ctx NULL */
+    assert_true(qd_free_symbols(NULL, F.q, (const qd_expr * *)F.e, 1) == 0);
+    reset(&F);
+    /* e NULL */
+    assert_true(qd_free_symbols(F.ctx, NULL, (const qd_expr * *)F.e, 1) == 0);
+    reset(&F);
+    /* ---- qd_diff */
+    /* ctx NULL */
+    assert_null(qd_diff(NULL, F.q, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_diff(F.ctx, NULL, F.q));
+    reset(&F);
+    /* sym NULL */
+    assert_null(qd_diff(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_diff_n */
+    /* ctx NULL */
+    assert_null(qd_diff_n(NULL, F.q, F.q, 1));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_diff_n(F.ctx, NULL, F.q, 1));
+    reset(&F);
+    /* sym NULL */
+    assert_null(qd_diff_n(F.ctx, F.q, NULL, 1));
+    reset(&F);
+    /* ---- qd_dt */
+    /* ctx NULL */
+    assert_null(qd_dt(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_dt(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_subs */
+    /* ctx NULL */
+    assert_null(qd_subs(NULL, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_subs(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* from NULL */
+    assert_null(qd_subs(F.ctx, F.q, 1, NULL, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* to NULL */
+    assert_null(qd_subs(F.ctx, F.q, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_expand */
+    /* ctx NULL */
+    assert_null(qd_expand(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_expand(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_linear_coeffs */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_coeffs(NULL, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_coeffs(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* xs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_coeffs(F.ctx, F.q, 1, NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* coeffs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_coeffs(F.ctx, F.q, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* rest NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_coeffs(F.ctx, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_coeff */
+    /* ctx NULL */
+    assert_null(qd_coeff(NULL, F.q, F.q, 1));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_coeff(F.ctx, NULL, F.q, 1));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_coeff(F.ctx, F.q, NULL, 1));
+    reset(&F);
+    /* ---- qd_collect */
+    /* ctx NULL */
+    assert_null(qd_collect(NULL, F.q, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_collect(F.ctx, NULL, F.q));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_collect(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_simplify */
+    /* ctx NULL */
+    assert_null(qd_simplify(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_simplify(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_trigsimp */
+    /* ctx NULL */
+    assert_null(qd_trigsimp(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_trigsimp(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_cancel */
+    /* ctx NULL */
+    assert_null(qd_cancel(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_cancel(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_factor_terms */
+    /* ctx NULL */
+    assert_null(qd_factor_terms(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_factor_terms(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_count_ops */
+    /* e NULL */
+    assert_true(qd_count_ops(NULL) == 0);
+    reset(&F);
+    /* ---- qd_dag_size */
+    /* ctx NULL */
+    assert_true(qd_dag_size(NULL, F.q) == 0);
+    reset(&F);
+    /* e NULL */
+    assert_true(qd_dag_size(F.ctx, NULL) == 0);
+    reset(&F);
+    /* ---- qd_integrate */
+    /* ctx NULL */
+    assert_null(qd_integrate(NULL, F.q, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_integrate(F.ctx, NULL, F.q));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_integrate(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_eval */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eval(NULL, F.q, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eval(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eval(F.ctx, F.q, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_hamilton(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_ham_derive */
+    /* ctx NULL */
+    assert_null(qd_ham_derive(NULL, F.model, F.eom));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_ham_derive(F.ctx, NULL, F.eom));
+    reset(&F);
+    /* ---- qd_ham_free */
+    /* h NULL */
+    qd_ham_free(NULL);
+    reset(&F);
+    /* ---- qd_legendre_inverse */
+    /* ctx NULL */
+    assert_null(qd_legendre_inverse(NULL, F.model));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_legendre_inverse(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_legendre_inverse_p */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_legendre_inverse_p(NULL, F.model, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_legendre_inverse_p(F.ctx, NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* L NULL */
+    assert_int_equal(QD_ERR_ARG, qd_legendre_inverse_p(F.ctx, F.model, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_ham_regular */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_regular(NULL, F.model));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_regular(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_ham_velocities_at */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_velocities_at(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_velocities_at(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_velocities_at(F.ctx, NULL, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_velocities_at(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* qd_out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_velocities_at(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_hj(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_hj_derive */
+    /* ctx NULL */
+    assert_null(qd_hj_derive(NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_hj_derive(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_hj_free */
+    /* h NULL */
+    qd_hj_free(NULL);
+    reset(&F);
+    /* ---- qd_hj_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_solve(NULL, NULL));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_solve(F.ctx, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_impulse(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_impulse_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_solve(NULL, F.model, NULL, (qd_impulse *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_solve(F.ctx, NULL, NULL, (qd_impulse *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_solve(F.ctx, F.model, NULL, NULL));
+    reset(&F);
+    /* ---- qd_impulse_free */
+    /* r NULL */
+    qd_impulse_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_integrals(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_integrals_derive */
+    /* ctx NULL */
+    assert_null(qd_integrals_derive(NULL, F.model, F.eom, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_integrals_derive(F.ctx, NULL, F.eom, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_integrals_derive(F.ctx, F.model, NULL, NULL));
+    reset(&F);
+    /* ---- qd_integrals_free */
+    /* I NULL */
+    qd_integrals_free(NULL);
+    reset(&F);
+    /* ---- qd_integrals_cyclic */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_cyclic(NULL, F.model, F.eom, (qd_int_cyclic *)(void *)F.blob, F.z));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_cyclic(F.ctx, NULL, F.eom, (qd_int_cyclic *)(void *)F.blob, F.z));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_cyclic(F.ctx, F.model, NULL, (qd_int_cyclic *)(void *)F.blob, F.z));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_cyclic(F.ctx, F.model, F.eom, NULL, F.z));
+    reset(&F);
+    /* ncyclic NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_cyclic(F.ctx, F.model, F.eom, (qd_int_cyclic *)(void *)F.blob, NULL));
+    reset(&F);
+    /* ---- qd_integrals_noether */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_noether(NULL, NULL, "q", (const qd_expr * const *)F.e, (qd_noether *)(void *)F.blob));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_noether(F.ctx, NULL, "q", (const qd_expr * const *)F.e, (qd_noether *)(void *)F.blob));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_noether(F.ctx, NULL, NULL, (const qd_expr * const *)F.e, (qd_noether *)(void *)F.blob));
+    reset(&F);
+    /* xi NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_noether(F.ctx, NULL, "q", NULL, (qd_noether *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_noether(F.ctx, NULL, "q", (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_noether_clear */
+    /* nt NULL */
+    qd_noether_clear(NULL);
+    reset(&F);
+    /* ---- qd_integrals_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_check(NULL, NULL, "q", F.q, (qd_int_proposed *)(void *)F.blob));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_check(F.ctx, NULL, "q", F.q, (qd_int_proposed *)(void *)F.blob));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_check(F.ctx, NULL, NULL, F.q, (qd_int_proposed *)(void *)F.blob));
+    reset(&F);
+    /* expr NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_check(F.ctx, NULL, "q", NULL, (qd_int_proposed *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_check(F.ctx, NULL, "q", F.q, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_lyapunov(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_lyap_new */
+    /* ctx NULL */
+    assert_null(qd_lyap_new(NULL, F.model, F.eom));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_lyap_new(F.ctx, NULL, F.eom));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_lyap_new(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_lyap_free */
+    /* l NULL */
+    qd_lyap_free(NULL);
+    reset(&F);
+    /* ---- qd_lyap_ndof */
+    /* l NULL */
+    assert_true(qd_lyap_ndof(NULL) == 0);
+    reset(&F);
+    /* ---- qd_lyap_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_run(NULL, NULL, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* l NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_run(F.ctx, NULL, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* exps NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_run(F.ctx, NULL, NULL, NULL, NULL, F.d));
+    reset(&F);
+    /* ---- qd_lyap_run_stats */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_run_stats(NULL, NULL, NULL, NULL, F.d, F.d, (qd_lyap_stats *)(void *)F.blob));
+    reset(&F);
+    /* l NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_run_stats(F.ctx, NULL, NULL, NULL, F.d, F.d, (qd_lyap_stats *)(void *)F.blob));
+    reset(&F);
+    /* exps NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_run_stats(F.ctx, NULL, NULL, NULL, NULL, F.d, (qd_lyap_stats *)(void *)F.blob));
+    reset(&F);
+    /* err NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_run_stats(F.ctx, NULL, NULL, NULL, F.d, NULL, (qd_lyap_stats *)(void *)F.blob));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_mech(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_eom_derive */
+    /* ctx NULL */
+    assert_null(qd_eom_derive(NULL, F.model));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_eom_derive(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_eom_free */
+    /* e NULL */
+    qd_eom_free(NULL);
+    reset(&F);
+    /* ---- qd_eom_derive_opts */
+    /* ctx NULL */
+    assert_null(qd_eom_derive_opts(NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_eom_derive_opts(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_eom_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_solve(NULL, F.eom, 1));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_solve(F.ctx, NULL, 1));
+    reset(&F);
+    /* ---- qd_eom_eval */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_eval(NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_eval(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_eval(F.ctx, F.eom, 1, NULL, F.d, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_eval(F.ctx, F.eom, 1, (const qd_expr * const *)F.e, NULL, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* ---- qd_eom_compile */
+    /* ctx NULL */
+    assert_null(qd_eom_compile(NULL, F.eom));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_eom_compile(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_eom_prog_free */
+    /* p NULL */
+    qd_eom_prog_free(NULL);
+    reset(&F);
+    /* ---- qd_eom_work_new */
+    /* ctx NULL */
+    assert_null(qd_eom_work_new(NULL, NULL));
+    reset(&F);
+    /* p NULL */
+    assert_null(qd_eom_work_new(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_eom_work_free */
+    /* w NULL */
+    qd_eom_work_free(NULL);
+    reset(&F);
+    /* ---- qd_eom_prog_eval */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_prog_eval(NULL, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_prog_eval(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_prog_eval(F.ctx, NULL, NULL, 1, NULL, F.d, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_prog_eval(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, NULL, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* qdd NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_prog_eval(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, NULL, F.d, F.d));
+    reset(&F);
+    /* ---- qd_eom_reaction */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(NULL, F.eom, "q", (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(F.ctx, NULL, "q", (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* con NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(F.ctx, F.eom, NULL, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(F.ctx, F.eom, "q", NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(F.ctx, F.eom, "q", (const qd_expr * const *)F.e, 1, NULL, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(F.ctx, F.eom, "q", (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* lambda NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(F.ctx, F.eom, "q", (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, NULL, F.d, F.d));
+    reset(&F);
+    /* F NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_reaction(F.ctx, F.eom, "q", (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d, NULL, F.d));
+    reset(&F);
+    /* ---- qd_eom_dof */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_dof(NULL, F.eom, (qd_dof *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_dof(F.ctx, NULL, (qd_dof *)(void *)F.blob));
+    reset(&F);
+    /* d NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_dof(F.ctx, F.eom, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_model(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_model_parse */
+    /* ctx NULL */
+    assert_null(qd_model_parse(NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_model_parse(F.ctx, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_model_parse_opts */
+    /* ctx NULL */
+    assert_null(qd_model_parse_opts(NULL, "q", NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_model_parse_opts(F.ctx, NULL, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_model_add_statement */
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_statement(NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_statement(F.model, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_model_free */
+    /* m NULL */
+    qd_model_free(NULL);
+    reset(&F);
+    /* ---- qd_model_ncoords */
+    /* m NULL */
+    assert_true(qd_model_ncoords(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_coord */
+    /* m NULL */
+    assert_null(qd_model_coord(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nparams */
+    /* m NULL */
+    assert_true(qd_model_nparams(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_nfunctions */
+    /* m NULL */
+    assert_true(qd_model_nfunctions(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_function_name */
+    /* m NULL */
+    assert_null(qd_model_function_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_param */
+    /* m NULL */
+    assert_null(qd_model_param(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_param_value */
+    /* m NULL */
+    assert_null(qd_model_param_value(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_param_number */
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_param_number(NULL, 1, F.d));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_param_number(F.model, 1, NULL));
+    reset(&F);
+    /* ---- qd_model_param_definition */
+    /* m NULL */
+    assert_null(qd_model_param_definition(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_param_fixed */
+    /* m NULL */
+    assert_true(qd_model_param_fixed(NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_model_set_param */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_set_param(NULL, F.model, "q", F.q));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_set_param(F.ctx, NULL, "q", F.q));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_set_param(F.ctx, F.model, NULL, F.q));
+    reset(&F);
+    /* value NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_set_param(F.ctx, F.model, "q", NULL));
+    reset(&F);
+    /* ---- qd_model_kinetic */
+    /* m NULL */
+    assert_null(qd_model_kinetic(NULL));
+    reset(&F);
+    /* ---- qd_model_potential */
+    /* m NULL */
+    assert_null(qd_model_potential(NULL));
+    reset(&F);
+    /* ---- qd_model_gen_potential */
+    /* m NULL */
+    assert_null(qd_model_gen_potential(NULL));
+    reset(&F);
+    /* ---- qd_model_lagrangian */
+    /* m NULL */
+    assert_null(qd_model_lagrangian(NULL));
+    reset(&F);
+    /* ---- qd_model_lagrangian_given */
+    /* m NULL */
+    assert_true(qd_model_lagrangian_given(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_dissipation */
+    /* m NULL */
+    assert_null(qd_model_dissipation(NULL));
+    reset(&F);
+    /* ---- qd_model_force */
+    /* m NULL */
+    assert_null(qd_model_force(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nconstraints */
+    /* m NULL */
+    assert_true(qd_model_nconstraints(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_constraint_name */
+    /* m NULL */
+    assert_null(qd_model_constraint_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_constraint */
+    /* m NULL */
+    assert_null(qd_model_constraint(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_independent */
+    /* m NULL */
+    assert_null(qd_model_independent(NULL));
+    reset(&F);
+    /* ---- qd_model_nisoperimetric */
+    /* m NULL */
+    assert_true(qd_model_nisoperimetric(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_isoperimetric_name */
+    /* m NULL */
+    assert_null(qd_model_isoperimetric_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_isoperimetric */
+    /* m NULL */
+    assert_null(qd_model_isoperimetric(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_isoperimetric_value */
+    /* m NULL */
+    assert_null(qd_model_isoperimetric_value(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_isoperimetric_multiplier */
+    /* m NULL */
+    assert_null(qd_model_isoperimetric_multiplier(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nreactions */
+    /* m NULL */
+    assert_true(qd_model_nreactions(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_reaction_name */
+    /* m NULL */
+    assert_null(qd_model_reaction_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_reaction_constraint */
+    /* m NULL */
+    assert_null(qd_model_reaction_constraint(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_reaction_point */
+    /* m NULL */
+    assert_null(qd_model_reaction_point(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_nbodies */
+    /* m NULL */
+    assert_true(qd_model_nbodies(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_body_name */
+    /* m NULL */
+    assert_null(qd_model_body_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_body_mass */
+    /* m NULL */
+    assert_null(qd_model_body_mass(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_body_inertia */
+    /* m NULL */
+    assert_null(qd_model_body_inertia(NULL, 1, 1, 1));
+    reset(&F);
+    /* ---- qd_model_body_position */
+    /* m NULL */
+    assert_null(qd_model_body_position(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_body_rotation */
+    /* m NULL */
+    assert_null(qd_model_body_rotation(NULL, 1, 1, 1));
+    reset(&F);
+    /* ---- qd_model_body_omega */
+    /* m NULL */
+    assert_null(qd_model_body_omega(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_body_omega_space */
+    /* m NULL */
+    assert_null(qd_model_body_omega_space(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_hamiltonian_given */
+    /* m NULL */
+    assert_true(qd_model_hamiltonian_given(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_hamiltonian */
+    /* m NULL */
+    assert_null(qd_model_hamiltonian(NULL));
+    reset(&F);
+    /* ---- qd_model_momentum */
+    /* m NULL */
+    assert_null(qd_model_momentum(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nsymmetries */
+    /* m NULL */
+    assert_true(qd_model_nsymmetries(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_symmetry_name */
+    /* m NULL */
+    assert_null(qd_model_symmetry_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_symmetry_field */
+    /* m NULL */
+    assert_null(qd_model_symmetry_field(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_nintegrals */
+    /* m NULL */
+    assert_true(qd_model_nintegrals(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_integral_name */
+    /* m NULL */
+    assert_null(qd_model_integral_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_integral */
+    /* m NULL */
+    assert_null(qd_model_integral(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nparticles */
+    /* m NULL */
+    assert_true(qd_model_nparticles(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_particle_mass */
+    /* m NULL */
+    assert_null(qd_model_particle_mass(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_particle_position */
+    /* m NULL */
+    assert_null(qd_model_particle_position(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_nblows */
+    /* m NULL */
+    assert_true(qd_model_nblows(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_blow_label */
+    /* m NULL */
+    assert_null(qd_model_blow_label(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_blow */
+    /* m NULL */
+    assert_null(qd_model_blow(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_impulse */
+    /* m NULL */
+    assert_null(qd_model_impulse(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nimpact_constraints */
+    /* m NULL */
+    assert_true(qd_model_nimpact_constraints(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_impact_constraint_name */
+    /* m NULL */
+    assert_null(qd_model_impact_constraint_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_impact_constraint */
+    /* m NULL */
+    assert_null(qd_model_impact_constraint(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_impact_constraint_restitution */
+    /* m NULL */
+    assert_null(qd_model_impact_constraint_restitution(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nimpacts */
+    /* m NULL */
+    assert_true(qd_model_nimpacts(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_impact_name */
+    /* m NULL */
+    assert_null(qd_model_impact_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_impact_gap */
+    /* m NULL */
+    assert_null(qd_model_impact_gap(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_impact_restitution */
+    /* m NULL */
+    assert_null(qd_model_impact_restitution(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nprescribed */
+    /* m NULL */
+    assert_true(qd_model_nprescribed(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_prescribed_name */
+    /* m NULL */
+    assert_null(qd_model_prescribed_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_prescribed */
+    /* m NULL */
+    assert_null(qd_model_prescribed(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_nspeeds */
+    /* m NULL */
+    assert_true(qd_model_nspeeds(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_speed */
+    /* m NULL */
+    assert_null(qd_model_speed(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_speed_definition */
+    /* m NULL */
+    assert_null(qd_model_speed_definition(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_speed_initial */
+    /* m NULL */
+    assert_null(qd_model_speed_initial(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_speed_initial_definition */
+    /* m NULL */
+    assert_null(qd_model_speed_initial_definition(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_ninputs */
+    /* m NULL */
+    assert_true(qd_model_ninputs(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_input */
+    /* m NULL */
+    assert_null(qd_model_input(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_noutputs */
+    /* m NULL */
+    assert_true(qd_model_noutputs(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_output_name */
+    /* m NULL */
+    assert_null(qd_model_output_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_output */
+    /* m NULL */
+    assert_null(qd_model_output(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_initial */
+    /* m NULL */
+    assert_null(qd_model_initial(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_initial_definition */
+    /* m NULL */
+    assert_null(qd_model_initial_definition(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_model_definition */
+    /* m NULL */
+    assert_null(qd_model_definition(NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_model_definition(F.model, NULL));
+    reset(&F);
+    /* ---- qd_model_where */
+    /* m NULL */
+    assert_true(qd_model_where(NULL, "q", NULL) == 0);
+    reset(&F);
+    /* what NULL */
+    assert_true(qd_model_where(F.model, NULL, NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_locate */
+    /* m NULL */
+    assert_true(qd_model_locate(NULL, (qd_diag *)(void *)F.blob) == 0);
+    reset(&F);
+    /* d NULL */
+    assert_true(qd_model_locate(F.model, NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_ncontacts */
+    /* m NULL */
+    assert_true(qd_model_ncontacts(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_contact_name */
+    /* m NULL */
+    assert_null(qd_model_contact_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_contact_kind */
+    /* m NULL */
+    (void)qd_model_contact_kind(NULL, 1);
+    reset(&F);
+    /* ---- qd_model_contact_constraints */
+    /* m NULL */
+    assert_true(qd_model_contact_constraints(NULL, 1, F.z) == 0);
+    reset(&F);
+    /* con NULL */
+    assert_true(qd_model_contact_constraints(F.model, 1, NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_contact_mu */
+    /* m NULL */
+    assert_null(qd_model_contact_mu(NULL, 1, false));
+    reset(&F);
+    /* ---- qd_model_contact_normal */
+    /* m NULL */
+    assert_null(qd_model_contact_normal(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_contact_normal_constraint */
+    /* m NULL */
+    assert_null(qd_model_contact_normal_constraint(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_contact_normal_scale */
+    /* m NULL */
+    assert_null(qd_model_contact_normal_scale(NULL, 1));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_modes(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_linear_about */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_about(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (qd_linear *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_about(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, (qd_linear *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_about(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_linear *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_about(F.ctx, F.eom, F.model, 1, NULL, F.d, (qd_linear *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_about(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, (qd_linear *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_about(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_modes_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_solve(NULL, NULL, (qd_modes_result *)(void *)F.blob));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_solve(F.ctx, NULL, (qd_modes_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_solve(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_linear_free */
+    /* l NULL */
+    qd_linear_free(NULL);
+    reset(&F);
+    /* ---- qd_modes_result_free */
+    /* r NULL */
+    qd_modes_result_free(NULL);
+    reset(&F);
+    /* ---- qd_modes_multiplicity */
+    /* r NULL */
+    assert_true(qd_modes_multiplicity(NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_linear_symbolic */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_symbolic(NULL, F.eom, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_symbolic(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* q0 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_symbolic(F.ctx, F.eom, NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* Kout NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_symbolic(F.ctx, F.eom, (const qd_expr * const *)F.e, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* Mout NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linear_symbolic(F.ctx, F.eom, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_modes_symbolic_omega2 */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symbolic_omega2(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* K NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symbolic_omega2(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* M NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symbolic_omega2(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* w2 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symbolic_omega2(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_modes_normal_coords */
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_normal_coords(NULL, NULL, F.d, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* q0 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_normal_coords(NULL, NULL, NULL, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_normal_coords(NULL, NULL, F.d, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* qd NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_normal_coords(NULL, NULL, F.d, F.d, NULL, F.d, F.d));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_normal_coords(NULL, NULL, F.d, F.d, F.d, NULL, F.d));
+    reset(&F);
+    /* Qd NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_normal_coords(NULL, NULL, F.d, F.d, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_modes_frequencies */
+    /* r NULL */
+    assert_true(qd_modes_frequencies(NULL, F.d) == 0);
+    reset(&F);
+    /* w NULL */
+    assert_true(qd_modes_frequencies(NULL, NULL) == 0);
+    reset(&F);
+    /* ---- qd_modes_exact_omega2 */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, F.b));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, F.b));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, F.b));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, F.model, 1, NULL, F.d, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, F.b));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, F.b));
+    reset(&F);
+    /* q0 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (const qd_expr * *)F.e, F.b));
+    reset(&F);
+    /* w2 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e, NULL, F.b));
+    reset(&F);
+    /* in_params NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_modes_scan */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan(NULL, F.eom, F.model, "q", 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan(F.ctx, NULL, F.model, "q", 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan(F.ctx, F.eom, NULL, "q", 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* param NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan(F.ctx, F.eom, F.model, NULL, 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan(F.ctx, F.eom, F.model, "q", 1, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scan_free */
+    /* s NULL */
+    qd_scan_free(NULL);
+    reset(&F);
+    /* ---- qd_speeds_linear_about */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_speeds_linear *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_speeds_linear *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(F.ctx, NULL, 1, NULL, F.d, (qd_speeds_linear *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, (qd_speeds_linear *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_speeds_linear_free */
+    /* l NULL */
+    qd_speeds_linear_free(NULL);
+    reset(&F);
+    /* ---- qd_speeds_modes_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_solve(NULL, NULL, (qd_modes_result *)(void *)F.blob));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_solve(F.ctx, NULL, (qd_modes_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_solve(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_speeds_modes_scan */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.q, 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.q, 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, NULL, F.d, F.q, 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, F.q, 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* what NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, 1, 1, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.q, 1, 1, NULL, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_orbit(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_orbit_derive */
+    /* ctx NULL */
+    assert_null(qd_orbit_derive(NULL, F.model, F.eom, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_orbit_derive(F.ctx, NULL, F.eom, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_orbit_derive(F.ctx, F.model, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* ---- qd_orbit_free */
+    /* o NULL */
+    qd_orbit_free(NULL);
+    reset(&F);
+    /* ---- qd_orbit_kind_name */
+    /* no pointer argument */
+    /* ---- qd_orbit_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, (qd_orbit_result *)(void *)F.blob));
+    reset(&F);
+    /* o NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, (qd_orbit_result *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve(F.ctx, NULL, 1, NULL, F.d, F.d, (qd_orbit_result *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, F.d, (qd_orbit_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_orbit_result_free */
+    /* r NULL */
+    qd_orbit_result_free(NULL);
+    reset(&F);
+    /* ---- qd_orbit_period */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_period(NULL, NULL, NULL, F.d));
+    reset(&F);
+    /* o NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_period(F.ctx, NULL, NULL, F.d));
+    reset(&F);
+    /* period NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_period(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_orbit_equation */
+    /* ctx NULL */
+    assert_null(qd_orbit_equation(NULL, NULL, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* o NULL */
+    assert_null(qd_orbit_equation(F.ctx, NULL, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* lhs NULL */
+    assert_null(qd_orbit_equation(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_path(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_path_find */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find(NULL, F.model, F.eom, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find(F.ctx, NULL, F.eom, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find(F.ctx, F.model, NULL, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find(F.ctx, F.model, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_path_set_free */
+    /* s NULL */
+    qd_path_set_free(NULL);
+    reset(&F);
+    /* ---- qd_path_foci */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci(NULL, F.model, F.eom, 1, F.d, F.d, 1, (double * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci(F.ctx, NULL, F.eom, 1, F.d, F.d, 1, (double * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci(F.ctx, F.model, NULL, 1, F.d, F.d, 1, (double * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* q0 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci(F.ctx, F.model, F.eom, 1, NULL, F.d, 1, (double * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* v0 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci(F.ctx, F.model, F.eom, 1, F.d, NULL, 1, (double * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* foci NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci(F.ctx, F.model, F.eom, 1, F.d, F.d, 1, NULL, F.z, F.b));
+    reset(&F);
+    /* nfoci NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci(F.ctx, F.model, F.eom, 1, F.d, F.d, 1, (double * *)(void *)F.p, NULL, F.b));
+    reset(&F);
+    /* ---- qd_path_foci_free */
+    /* no pointer argument */
+    /* ---- qd_path_foci_mult */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci_mult(NULL, F.model, F.eom, 1, F.d, F.d, 1, (double * *)(void *)F.p, (size_t * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci_mult(F.ctx, NULL, F.eom, 1, F.d, F.d, 1, (double * *)(void *)F.p, (size_t * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci_mult(F.ctx, F.model, NULL, 1, F.d, F.d, 1, (double * *)(void *)F.p, (size_t * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* q0 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci_mult(F.ctx, F.model, F.eom, 1, NULL, F.d, 1, (double * *)(void *)F.p, (size_t * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* v0 NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci_mult(F.ctx, F.model, F.eom, 1, F.d, NULL, 1, (double * *)(void *)F.p, (size_t * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* foci NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci_mult(F.ctx, F.model, F.eom, 1, F.d, F.d, 1, NULL, (size_t * *)(void *)F.p, F.z, F.b));
+    reset(&F);
+    /* nfoci NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_foci_mult(F.ctx, F.model, F.eom, 1, F.d, F.d, 1, (double * *)(void *)F.p, (size_t * *)(void *)F.p, NULL, F.b));
+    reset(&F);
+    /* ---- qd_path_foci_mult_free */
+    /* mult NULL */
+    qd_path_foci_mult_free(F.ctx, NULL);
+    reset(&F);
+    /* ---- qd_path_find_energy */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find_energy(NULL, F.model, F.eom, 1, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find_energy(F.ctx, NULL, F.eom, 1, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find_energy(F.ctx, F.model, NULL, 1, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find_energy(F.ctx, F.model, F.eom, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_path_action_of */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of(NULL, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, NULL, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, NULL, (const qd_expr * const *)F.e, 1, 1, F.d, F.d));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, NULL, 1, 1, F.d, F.d));
+    reset(&F);
+    /* action NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, NULL, F.d));
+    reset(&F);
+    /* first_variation NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_plot(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_plot_format_of */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_format_of(NULL, "q", (qd_plot_format *)(void *)F.blob));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_format_of(F.ctx, NULL, (qd_plot_format *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_format_of(F.ctx, "q", NULL));
+    reset(&F);
+    /* ---- qd_plot_new */
+    /* ctx NULL */
+    assert_null(qd_plot_new(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_plot_free */
+    /* p NULL */
+    qd_plot_free(NULL);
+    reset(&F);
+    /* ---- qd_plot_panels */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_panels(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_plot_npanels */
+    /* p NULL */
+    assert_true(qd_plot_npanels(NULL) == 0);
+    reset(&F);
+    /* ---- qd_plot_select */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_select(NULL, 1));
+    reset(&F);
+    /* ---- qd_plot_set_title */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_title(NULL, "q"));
+    reset(&F);
+    /* title NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_title(F.plot, NULL));
+    reset(&F);
+    /* ---- qd_plot_set_xlabel */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_xlabel(NULL, "q"));
+    reset(&F);
+    /* label NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_xlabel(F.plot, NULL));
+    reset(&F);
+    /* ---- qd_plot_set_ylabel */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_ylabel(NULL, "q"));
+    reset(&F);
+    /* label NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_ylabel(F.plot, NULL));
+    reset(&F);
+    /* ---- qd_plot_set_equal_axes */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_equal_axes(NULL, false));
+    reset(&F);
+    /* ---- qd_plot_add */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add(NULL, "q", (qd_plot_style){0}, 1, F.d, F.d, F.z));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add(F.plot, "q", (qd_plot_style){0}, 1, NULL, F.d, F.z));
+    reset(&F);
+    /* y NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add(F.plot, "q", (qd_plot_style){0}, 1, F.d, NULL, F.z));
+    reset(&F);
+    /* ---- qd_plot_nseries */
+    /* p NULL */
+    assert_true(qd_plot_nseries(NULL) == 0);
+    reset(&F);
+    /* ---- qd_plot_color */
+    /* p NULL */
+    (void)qd_plot_color(NULL, 1);
+    reset(&F);
+    /* ---- qd_plot_layout */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_layout(NULL));
+    reset(&F);
+    /* ---- qd_plot_to_pixel */
+    /* p NULL */
+    assert_true(qd_plot_to_pixel(NULL, 1, 1, 1, F.d, F.d) == 0);
+    reset(&F);
+    /* px NULL */
+    assert_true(qd_plot_to_pixel(F.plot, 1, 1, 1, NULL, F.d) == 0);
+    reset(&F);
+    /* py NULL */
+    assert_true(qd_plot_to_pixel(F.plot, 1, 1, 1, F.d, NULL) == 0);
+    reset(&F);
+    /* ---- qd_plot_ranges */
+    /* p NULL */
+    assert_true(qd_plot_ranges(NULL, 1, F.d, F.d, F.d, F.d) == 0);
+    reset(&F);
+    /* x0 NULL */
+    assert_true(qd_plot_ranges(F.plot, 1, NULL, F.d, F.d, F.d) == 0);
+    reset(&F);
+    /* x1 NULL */
+    assert_true(qd_plot_ranges(F.plot, 1, F.d, NULL, F.d, F.d) == 0);
+    reset(&F);
+    /* y0 NULL */
+    assert_true(qd_plot_ranges(F.plot, 1, F.d, F.d, NULL, F.d) == 0);
+    reset(&F);
+    /* y1 NULL */
+    assert_true(qd_plot_ranges(F.plot, 1, F.d, F.d, F.d, NULL) == 0);
+    reset(&F);
+    /* ---- qd_plot_write */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_write(NULL, "q"));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_write(F.plot, NULL));
+    reset(&F);
+    /* ---- qd_plot_nice_ticks */
+    /* step NULL */
+    assert_true(qd_plot_nice_ticks(1, 1, 1, NULL, F.d) == 0);
+    reset(&F);
+    /* first NULL */
+    assert_true(qd_plot_nice_ticks(1, 1, 1, F.d, NULL) == 0);
+    reset(&F);
+    /* ---- qd_plot_add_map */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add_map(NULL, "q", 1, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add_map(F.plot, "q", 1, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* y NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add_map(F.plot, "q", 1, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* z NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add_map(F.plot, "q", 1, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_plot_map_color */
+    /* no pointer argument */
+    /* ---- qd_plot_map_range */
+    /* p NULL */
+    assert_true(qd_plot_map_range(NULL, 1, F.d, F.d) == 0);
+    reset(&F);
+    /* zmin NULL */
+    assert_true(qd_plot_map_range(F.plot, 1, NULL, F.d) == 0);
+    reset(&F);
+    /* zmax NULL */
+    assert_true(qd_plot_map_range(F.plot, 1, F.d, NULL) == 0);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_print(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_buf_free */
+    /* b NULL */
+    qd_buf_free(NULL);
+    reset(&F);
+    /* ---- qd_buf_clear */
+    /* b NULL */
+    qd_buf_clear(NULL);
+    reset(&F);
+    /* ---- qd_buf_puts */
+    /* b NULL */
+    qd_buf_puts(NULL, "q");
+    reset(&F);
+    /* s NULL */
+    qd_buf_puts(&F.buf, NULL);
+    reset(&F);
+    /* ---- qd_buf_putn */
+    /* b NULL */
+    qd_buf_putn(NULL, "q", 1);
+    reset(&F);
+    /* s NULL */
+    qd_buf_putn(&F.buf, NULL, 1);
+    reset(&F);
+    /* ---- qd_buf_printf */
+    /* b NULL */
+    qd_buf_printf(NULL, "q");
+    reset(&F);
+    /* fmt NULL */
+    qd_buf_printf(&F.buf, NULL);
+    reset(&F);
+    /* ---- qd_buf_str */
+    /* b NULL */
+    (void)qd_buf_str(NULL);
+    reset(&F);
+    /* ---- qd_double_format */
+    /* out NULL */
+    assert_true(qd_double_format(NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_buf_put_double */
+    /* b NULL */
+    qd_buf_put_double(NULL, 1);
+    reset(&F);
+    /* ---- qd_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print(NULL, F.q, (qd_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print(F.ctx, F.q, (qd_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_print_set_time_name */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_set_time_name(NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_set_time_name(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_print_time_name */
+    /* ctx NULL */
+    assert_null(qd_print_time_name(NULL));
+    reset(&F);
+    /* ---- qd_print_sympy_functions */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_sympy_functions(NULL, 1, (const qd_expr * const *)F.e, &F.buf));
+    reset(&F);
+    /* exprs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_sympy_functions(F.ctx, 1, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_sympy_functions(F.ctx, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_print_c_block */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_c_block(NULL, 1, (const qd_expr * const *)F.e, (const char * const *)F.names, &F.buf));
+    reset(&F);
+    /* exprs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_c_block(F.ctx, 1, NULL, (const char * const *)F.names, &F.buf));
+    reset(&F);
+    /* lhs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_c_block(F.ctx, 1, (const qd_expr * const *)F.e, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_print_c_block(F.ctx, 1, (const qd_expr * const *)F.e, (const char * const *)F.names, NULL));
+    reset(&F);
+    /* ---- qd_c_name */
+    /* sym NULL */
+    assert_int_equal(QD_ERR_ARG, qd_c_name(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_c_name(F.q, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_read(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_read */
+    /* ctx NULL */
+    assert_null(qd_read(NULL, "q", NULL, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_read(F.ctx, NULL, NULL, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_diag_format */
+    /* d NULL */
+    qd_diag_format(NULL, "q", "q", &F.buf);
+    reset(&F);
+    /* out NULL */
+    qd_diag_format(NULL, "q", "q", NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_routh(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_routh_derive */
+    /* ctx NULL */
+    assert_null(qd_routh_derive(NULL, F.model, F.eom, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_routh_derive(F.ctx, NULL, F.eom, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_routh_derive(F.ctx, F.model, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* ign NULL */
+    assert_null(qd_routh_derive(F.ctx, F.model, F.eom, 1, NULL));
+    reset(&F);
+    /* ---- qd_routh_derive_opts */
+    /* ctx NULL */
+    assert_null(qd_routh_derive_opts(NULL, F.model, F.eom, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_routh_derive_opts(F.ctx, NULL, F.eom, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_routh_derive_opts(F.ctx, F.model, NULL, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ign NULL */
+    assert_null(qd_routh_derive_opts(F.ctx, F.model, F.eom, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_routh_velocities_at */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_velocities_at(NULL, NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_velocities_at(F.ctx, NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_velocities_at(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_velocities_at(F.ctx, NULL, F.eom, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_velocities_at(F.ctx, NULL, F.eom, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_velocities_at(F.ctx, NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_routh_free */
+    /* r NULL */
+    qd_routh_free(NULL);
+    reset(&F);
+    /* ---- qd_routh_lookup */
+    /* ctx NULL */
+    assert_null(qd_routh_lookup(NULL, F.model, "q"));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_routh_lookup(F.ctx, NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_routh_lookup(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_routh_not_cyclic */
+    /* ctx NULL */
+    assert_null(qd_routh_not_cyclic(NULL, F.model, F.eom, 1, (const char * *)F.names));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_routh_not_cyclic(F.ctx, NULL, F.eom, 1, (const char * *)F.names));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_routh_not_cyclic(F.ctx, F.model, NULL, 1, (const char * *)F.names));
+    reset(&F);
+    /* why NULL */
+    assert_null(qd_routh_not_cyclic(F.ctx, F.model, F.eom, 1, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_scatter(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_scatter_new */
+    /* ctx NULL */
+    assert_null(qd_scatter_new(NULL, F.q, F.q, 1));
+    reset(&F);
+    /* V NULL */
+    assert_null(qd_scatter_new(F.ctx, NULL, F.q, 1));
+    reset(&F);
+    /* r NULL */
+    assert_null(qd_scatter_new(F.ctx, F.q, NULL, 1));
+    reset(&F);
+    /* ---- qd_scatter_from_model */
+    /* ctx NULL */
+    assert_null(qd_scatter_from_model(NULL, F.model, F.eom, "q", 1, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_scatter_from_model(F.ctx, NULL, F.eom, "q", 1, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_scatter_from_model(F.ctx, F.model, NULL, "q", 1, F.d));
+    reset(&F);
+    /* ---- qd_scatter_free */
+    /* s NULL */
+    qd_scatter_free(NULL);
+    reset(&F);
+    /* ---- qd_scatter_potential */
+    /* s NULL */
+    assert_null(qd_scatter_potential(NULL));
+    reset(&F);
+    /* ---- qd_scatter_radius */
+    /* s NULL */
+    assert_null(qd_scatter_radius(NULL));
+    reset(&F);
+    /* ---- qd_scatter_njumps */
+    /* s NULL */
+    assert_true(qd_scatter_njumps(NULL) == 0);
+    reset(&F);
+    /* ---- qd_scatter_jump */
+    /* s NULL */
+    assert_true(isnan(qd_scatter_jump(NULL, 1)));
+    reset(&F);
+    /* ---- qd_scatter_range */
+    /* s NULL */
+    assert_true(isnan(qd_scatter_range(NULL)));
+    reset(&F);
+    /* ---- qd_scatter_kind_name */
+    /* no pointer argument */
+    /* ---- qd_scatter_deflect */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_deflect(NULL, NULL, 1, 1, (qd_scatter_path *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_deflect(F.ctx, NULL, 1, 1, (qd_scatter_path *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_deflect(F.ctx, NULL, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_scatter_dchi_db */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_dchi_db(NULL, NULL, 1, 1, F.d));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_dchi_db(F.ctx, NULL, 1, 1, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_dchi_db(F.ctx, NULL, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_scatter_features_at */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_features_at(NULL, NULL, 1, (qd_scatter_features *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_features_at(F.ctx, NULL, 1, (qd_scatter_features *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_features_at(F.ctx, NULL, 1, NULL));
+    reset(&F);
+    /* ---- qd_scatter_section_at */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_section_at(NULL, NULL, 1, 1, (qd_scatter_section *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_section_at(F.ctx, NULL, 1, 1, (qd_scatter_section *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_section_at(F.ctx, NULL, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_scatter_lab_map */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_lab_map(NULL, 1, 1, 1, (qd_scatter_lab *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_lab_map(F.ctx, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_scatter_lab_gamma */
+    /* theta_lab NULL */
+    qd_scatter_lab_gamma(1, 1, NULL, F.d);
+    reset(&F);
+    /* jacobian NULL */
+    qd_scatter_lab_gamma(1, 1, F.d, NULL);
+    reset(&F);
+    /* ---- qd_scatter_lab_to_cm */
+    /* cm NULL */
+    assert_true(qd_scatter_lab_to_cm(1, 1, NULL) == 0);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_sim(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_sim_method_name */
+    /* no pointer argument */
+    /* ---- qd_sim_method_from_name */
+    /* name NULL */
+    assert_true(qd_sim_method_from_name(NULL, NULL) == 0);
+    reset(&F);
+    /* m NULL */
+    assert_true(qd_sim_method_from_name("q", NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_method_order */
+    /* no pointer argument */
+    /* ---- qd_sim_method_adaptive */
+    /* no pointer argument */
+    /* ---- qd_sim_new */
+    /* ctx NULL */
+    assert_null(qd_sim_new(NULL, F.model, F.eom));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_sim_new(F.ctx, NULL, F.eom));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_sim_new(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_sim_new_hamilton */
+    /* ctx NULL */
+    assert_null(qd_sim_new_hamilton(NULL, F.model));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_sim_new_hamilton(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_sim_new_speeds */
+    /* ctx NULL */
+    assert_null(qd_sim_new_speeds(NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_sim_new_speeds(F.ctx, NULL, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_sim_new_speeds(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_sim_free */
+    /* s NULL */
+    qd_sim_free(NULL);
+    reset(&F);
+    /* ---- qd_sim_add_output */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_add_output(NULL, "q", F.q));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_add_output(F.sim, NULL, F.q));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_add_output(F.sim, "q", NULL));
+    reset(&F);
+    /* ---- qd_sim_inputs_ready */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_inputs_ready(NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_sim_input_expr */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_expr(NULL, "q", F.q));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_expr(F.sim, NULL, F.q));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_expr(F.sim, "q", NULL));
+    reset(&F);
+    /* ---- qd_sim_input_table */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table(NULL, "q", 1, F.d, F.d));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table(F.sim, NULL, 1, F.d, F.d));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table(F.sim, "q", 1, NULL, F.d));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table(F.sim, "q", 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_sim_input_callback */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_callback(NULL, "q", NULL, NULL));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_callback(F.sim, NULL, NULL, NULL));
+    reset(&F);
+    /* fn NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_callback(F.sim, "q", NULL, NULL));
+    reset(&F);
+    /* ---- qd_sim_add_event */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_add_event(NULL, F.q, 1, (const qd_expr * const *)F.e, false));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_add_event(F.sim, NULL, 1, (const qd_expr * const *)F.e, false));
+    reset(&F);
+    /* ---- qd_sim_set_native */
+    /* s NULL */
+    qd_sim_set_native(NULL, NULL);
+    reset(&F);
+    /* rhs NULL */
+    qd_sim_set_native(F.sim, NULL);
+    reset(&F);
+    /* ---- qd_sim_load_native_taylor */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_load_native_taylor(NULL, "q", F.b));
+    reset(&F);
+    /* ---- qd_sim_ndof */
+    /* s NULL */
+    assert_true(qd_sim_ndof(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_ncon */
+    /* s NULL */
+    assert_true(qd_sim_ncon(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_nspeeds */
+    /* s NULL */
+    assert_true(qd_sim_nspeeds(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_canonical */
+    /* s NULL */
+    assert_true(qd_sim_canonical(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_separable */
+    /* s NULL */
+    assert_true(qd_sim_separable(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_conservative */
+    /* s NULL */
+    assert_true(qd_sim_conservative(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_default_method */
+    /* s NULL */
+    (void)qd_sim_default_method(NULL, false);
+    reset(&F);
+    /* ---- qd_sim_constraint_error */
+    /* s NULL */
+    assert_true(isnan(qd_sim_constraint_error(NULL, 1)));
+    reset(&F);
+    /* ---- qd_sim_columns */
+    /* s NULL */
+    assert_true(qd_sim_columns(NULL, (qd_sim_method){0}, (const char * *)F.names, 1) == 0);
+    reset(&F);
+    /* ---- qd_sim_check_opts */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_check_opts(NULL, NULL));
+    reset(&F);
+    /* ---- qd_sim_compile */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_compile(NULL));
+    reset(&F);
+    /* ---- qd_sim_compiled */
+    /* s NULL */
+    assert_true(qd_sim_compiled(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_run */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_run(NULL, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
+    reset(&F);
+    /* ---- qd_sim_run_with */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_run_with(NULL, F.sim, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_run_with(F.ctx, NULL, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
+    reset(&F);
+    /* ---- qd_sim_ncontacts */
+    /* s NULL */
+    assert_true(qd_sim_ncontacts(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_transitions */
+    /* s NULL */
+    assert_null(qd_sim_transitions(NULL, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_null(qd_sim_transitions(F.sim, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_speeds(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_speeds_method_name */
+    /* no pointer argument */
+    /* ---- qd_speeds_method_from_name */
+    /* name NULL */
+    assert_true(qd_speeds_method_from_name(NULL, NULL) == 0);
+    reset(&F);
+    /* m NULL */
+    assert_true(qd_speeds_method_from_name("q", NULL) == 0);
+    reset(&F);
+    /* ---- qd_speeds_derive */
+    /* ctx NULL */
+    assert_null(qd_speeds_derive(NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_speeds_derive(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_speeds_eom_free */
+    /* e NULL */
+    qd_speeds_eom_free(NULL);
+    reset(&F);
+    /* ---- qd_speeds_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_solve(NULL, NULL, 1));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_solve(F.ctx, NULL, 1));
+    reset(&F);
+    /* ---- qd_speeds_eval */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_eval(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_eval(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_eval(F.ctx, NULL, 1, NULL, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_eval(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* ---- qd_speeds_from_velocities */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_from_velocities(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_from_velocities(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_from_velocities(F.ctx, NULL, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_from_velocities(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* u NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_from_velocities(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_stability(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_steady_derive */
+    /* ctx NULL */
+    assert_null(qd_steady_derive(NULL, F.model, F.eom, 1, (const qd_expr * const *)F.e, false));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_steady_derive(F.ctx, NULL, F.eom, 1, (const qd_expr * const *)F.e, false));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_steady_derive(F.ctx, F.model, NULL, 1, (const qd_expr * const *)F.e, false));
+    reset(&F);
+    /* cyc NULL */
+    assert_null(qd_steady_derive(F.ctx, F.model, F.eom, 1, NULL, false));
+    reset(&F);
+    /* ---- qd_steady_free */
+    /* s NULL */
+    qd_steady_free(NULL);
+    reset(&F);
+    /* ---- qd_steady_find */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, F.b, (qd_steady_point *)(void *)F.blob, F.d));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, F.b, (qd_steady_point *)(void *)F.blob, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(F.ctx, NULL, 1, NULL, F.d, F.b, F.b, F.b, (qd_steady_point *)(void *)F.blob, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, F.b, F.b, F.b, (qd_steady_point *)(void *)F.blob, F.d));
+    reset(&F);
+    /* xfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, F.b, F.b, (qd_steady_point *)(void *)F.blob, F.d));
+    reset(&F);
+    /* wfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, NULL, F.b, (qd_steady_point *)(void *)F.blob, F.d));
+    reset(&F);
+    /* pfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, NULL, (qd_steady_point *)(void *)F.blob, F.d));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, F.b, NULL, F.d));
+    reset(&F);
+    /* ---- qd_steady_find_all */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, F.b, F.b, NULL, (qd_steady_set *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, F.b, F.b, NULL, (qd_steady_set *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(F.ctx, NULL, 1, NULL, F.d, F.b, F.b, F.b, F.b, NULL, (qd_steady_set *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, F.b, F.b, F.b, F.b, NULL, (qd_steady_set *)(void *)F.blob));
+    reset(&F);
+    /* xfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, F.b, F.b, F.b, NULL, (qd_steady_set *)(void *)F.blob));
+    reset(&F);
+    /* wfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, NULL, F.b, F.b, NULL, (qd_steady_set *)(void *)F.blob));
+    reset(&F);
+    /* pfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, NULL, F.b, NULL, (qd_steady_set *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_find_all(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b, F.b, F.b, F.b, NULL, NULL));
+    reset(&F);
+    /* ---- qd_steady_set_free */
+    /* set NULL */
+    qd_steady_set_free(NULL);
+    reset(&F);
+    /* ---- qd_stability_analyze */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_analyze(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_stability *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_analyze(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_stability *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_analyze(F.ctx, NULL, 1, NULL, F.d, NULL, (qd_stability *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_analyze(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, NULL, (qd_stability *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_analyze(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    /* ---- qd_stability_free */
+    /* st NULL */
+    qd_stability_free(NULL);
+    reset(&F);
+    /* ---- qd_stability_scan */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(NULL, NULL, F.model, "q", 1, 1, F.b, F.b, F.b, F.b, NULL, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, "q", 1, 1, F.b, F.b, F.b, F.b, NULL, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, NULL, "q", 1, 1, F.b, F.b, F.b, F.b, NULL, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* param NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, NULL, 1, 1, F.b, F.b, F.b, F.b, NULL, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* xfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, "q", 1, 1, NULL, F.b, F.b, F.b, NULL, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* wfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, "q", 1, 1, F.b, NULL, F.b, F.b, NULL, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* pfix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, "q", 1, 1, F.b, F.b, NULL, F.b, NULL, NULL, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, "q", 1, 1, F.b, F.b, F.b, F.b, NULL, NULL, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_statespace(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_linearize */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_statespace_free */
+    /* s NULL */
+    qd_statespace_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_status(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_status_str */
+    /* no pointer argument */
+    teardown(&F);
+}
+
+static void null_sweep(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_sweep_new */
+    /* ctx NULL */
+    assert_null(qd_sweep_new(NULL, F.sim, F.model));
+    reset(&F);
+    /* s NULL */
+    assert_null(qd_sweep_new(F.ctx, NULL, F.model));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_sweep_new(F.ctx, F.sim, NULL));
+    reset(&F);
+    /* ---- qd_sweep_free */
+    /* w NULL */
+    qd_sweep_free(NULL);
+    reset(&F);
+    /* ---- qd_sweep_grid */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_grid(NULL, "q"));
+    reset(&F);
+    /* spec NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_grid(NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_random */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_random(NULL, "q", 1, 1));
+    reset(&F);
+    /* spec NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_random(NULL, NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_sweep_list */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_list(NULL, 1, (const char * const *)F.names, 1, F.d));
+    reset(&F);
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_list(NULL, 1, NULL, 1, F.d));
+    reset(&F);
+    /* values NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_list(NULL, 1, (const char * const *)F.names, 1, NULL));
+    reset(&F);
+    /* ---- qd_sweep_measures */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_measures(NULL, "q"));
+    reset(&F);
+    /* spec NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_measures(NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_set_event */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_set_event(NULL, 1));
+    reset(&F);
+    /* ---- qd_sweep_set_section */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_set_section(NULL, 1));
+    reset(&F);
+    /* ---- qd_sweep_set_lyap */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_set_lyap(NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_nruns */
+    /* w NULL */
+    assert_true(qd_sweep_nruns(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sweep_ninputs */
+    /* w NULL */
+    assert_true(qd_sweep_ninputs(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sweep_ncols */
+    /* w NULL */
+    assert_true(qd_sweep_ncols(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sweep_col */
+    /* w NULL */
+    assert_null(qd_sweep_col(NULL, 1));
+    reset(&F);
+    /* ---- qd_sweep_run_one */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(NULL, NULL, NULL, 1, F.d));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(F.ctx, NULL, NULL, 1, F.d));
+    reset(&F);
+    /* row NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(F.ctx, NULL, NULL, 1, NULL));
+    reset(&F);
+    /* ---- qd_sweep_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run(NULL, NULL, NULL, 1, 1, 1, F.d, F.st, F.c, NULL, NULL));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, F.d, F.st, F.c, NULL, NULL));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, NULL, F.st, F.c, NULL, NULL));
+    reset(&F);
+    /* status NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, F.d, NULL, F.c, NULL, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_symmetry(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_symmetry_find */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_find(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_find(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_find(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_find(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    /* ---- qd_symmetry_from_ops */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_from_ops(NULL, NULL, 1, F.d, F.d, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_from_ops(F.ctx, NULL, 1, F.d, F.d, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* S NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_from_ops(F.ctx, NULL, 1, NULL, F.d, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_from_ops(F.ctx, NULL, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_symmetry_reduce */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_reduce(NULL, NULL, NULL));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_reduce(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_symmetry_block_label */
+    /* sym NULL */
+    qd_symmetry_block_label(NULL, 1, F.c, 1);
+    reset(&F);
+    /* buf NULL */
+    qd_symmetry_block_label(NULL, 1, NULL, 1);
+    reset(&F);
+    /* ---- qd_symmetry_class_name */
+    /* sym NULL */
+    qd_symmetry_class_name(NULL, 1, F.c, 1);
+    reset(&F);
+    /* buf NULL */
+    qd_symmetry_class_name(NULL, 1, NULL, 1);
+    reset(&F);
+    /* ---- qd_symmetry_free */
+    /* sym NULL */
+    qd_symmetry_free(NULL);
+    reset(&F);
+    /* ---- qd_cyclic_cell */
+    /* lin NULL */
+    assert_true(qd_cyclic_cell(NULL) == 0);
+    reset(&F);
+    /* ---- qd_cyclic_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_cyclic_solve(NULL, NULL, 1, (qd_cyclic_modes *)(void *)F.blob));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_cyclic_solve(F.ctx, NULL, 1, (qd_cyclic_modes *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_cyclic_solve(F.ctx, NULL, 1, NULL));
+    reset(&F);
+    /* ---- qd_cyclic_modes_free */
+    /* c NULL */
+    qd_cyclic_modes_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_zvc(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_contour_grid */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(NULL, 1, 1, F.d, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, NULL, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, F.d, 1, 1, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_contour_free */
+    /* c NULL */
+    qd_contour_free(NULL);
+    reset(&F);
+    /* ---- qd_zvc_derive */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_derive(NULL, F.model, F.eom, (qd_zvc *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_derive(F.ctx, NULL, F.eom, (qd_zvc *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_derive(F.ctx, F.model, NULL, (qd_zvc *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_derive(F.ctx, F.model, F.eom, NULL));
+    reset(&F);
+    /* ---- qd_zvc_curves */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_curves(NULL, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_curves(F.ctx, NULL, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* z NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_curves(F.ctx, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_curves(F.ctx, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(null_action),
+        cmocka_unit_test(null_canonical),
+        cmocka_unit_test(null_codegen),
+        cmocka_unit_test(null_control),
+        cmocka_unit_test(null_equilibria),
+        cmocka_unit_test(null_eval),
+        cmocka_unit_test(null_expr),
+        cmocka_unit_test(null_hamilton),
+        cmocka_unit_test(null_hj),
+        cmocka_unit_test(null_impulse),
+        cmocka_unit_test(null_integrals),
+        cmocka_unit_test(null_lyapunov),
+        cmocka_unit_test(null_mech),
+        cmocka_unit_test(null_model),
+        cmocka_unit_test(null_modes),
+        cmocka_unit_test(null_orbit),
+        cmocka_unit_test(null_path),
+        cmocka_unit_test(null_plot),
+        cmocka_unit_test(null_print),
+        cmocka_unit_test(null_read),
+        cmocka_unit_test(null_routh),
+        cmocka_unit_test(null_scatter),
+        cmocka_unit_test(null_sim),
+        cmocka_unit_test(null_speeds),
+        cmocka_unit_test(null_stability),
+        cmocka_unit_test(null_statespace),
+        cmocka_unit_test(null_status),
+        cmocka_unit_test(null_sweep),
+        cmocka_unit_test(null_symmetry),
+        cmocka_unit_test(null_zvc),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
