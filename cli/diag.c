@@ -5,6 +5,7 @@
 #include "cli.h"
 
 #include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 
 void cli_diag_error(const char *fmt, ...) {
@@ -39,8 +40,16 @@ static int exit_status(qd_status st) {
 }
 
 int cli_diag_ctx(const qd_ctx *ctx) {
-    const qd_diag *d = qd_ctx_diag(ctx);
-    cli_diag_show("qdot", NULL, d);
+    qd_diag d = *qd_ctx_diag(ctx);
+    if (d.subject == QD_SUBJECT_NONE && d.name[0]) { /* an option's field (qdot/sim.h) */
+        size_t n = strlen(d.message);
+        char opt[64];
+        snprintf(opt, sizeof opt, "%s", d.name);
+        for (char *c = opt; *c; c++)
+            *c = *c == '_' ? '-' : *c;
+        snprintf(d.message + n, sizeof d.message - n, " (--%s)", opt);
+    }
+    cli_diag_show("qdot", NULL, &d);
     return exit_status(qd_ctx_status(ctx));
 }
 

@@ -93,4 +93,12 @@ QD_API void qd_native_unload(qd_native *nat);
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_codegen_c (h_text);
+ * qd_codegen_speeds_c (h_text); qd_native_load (cache_dir). An array whose
+ * count is 0 may be NULL. */
 #endif

@@ -84,4 +84,10 @@ QD_API void qd_care_result_free(qd_care_result *r); /* NULL is fine */
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. No pointer argument here accepts
+ * NULL otherwise. An array whose count is 0 may be NULL. */
 #endif

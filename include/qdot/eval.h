@@ -42,4 +42,12 @@ QD_API size_t qd_prog_ninstr(const qd_prog *p);  /* instructions after sharing *
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_prog_new (ctx, inputs, outputs);
+ * qd_prog_free (p); qd_prog_run (in, out, p); qd_prog_ninstr (p). An array
+ * whose count is 0 may be NULL. */
 #endif

@@ -262,4 +262,13 @@ QD_API qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr 
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_ctx_new_with (a); qd_ctx_error_about
+ * (hint, name); qd_ufunc (args); qd_free_symbols (out); qd_eval (syms,
+ * vals). An array whose count is 0 may be NULL.
+ * Exception: qd_ctx_message(NULL) is "". */
 #endif

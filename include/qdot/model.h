@@ -332,4 +332,12 @@ QD_API const qd_expr *qd_model_contact_normal_scale(const qd_model *m, size_t i)
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_model_parse (diag);
+ * qd_model_parse_opts (diag, opts); qd_model_add_statement (diag);
+ * qd_model_where (where). An array whose count is 0 may be NULL. */
 #endif

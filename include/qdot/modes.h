@@ -256,4 +256,11 @@ QD_API qd_status qd_speeds_modes_scan(qd_ctx *ctx, const struct qd_speeds_eom *e
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_modes_scan (opts);
+ * qd_speeds_modes_scan (opts). An array whose count is 0 may be NULL. */
 #endif

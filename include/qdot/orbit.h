@@ -155,4 +155,11 @@ QD_API const qd_expr *qd_orbit_equation(qd_ctx *ctx, const qd_orbit *o, const qd
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_orbit_derive (ign); qd_orbit_solve
+ * (energy). An array whose count is 0 may be NULL. */
 #endif

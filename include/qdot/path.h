@@ -143,4 +143,12 @@ QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom 
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_path_foci (legendre);
+ * qd_path_foci_free (ctx, foci); qd_path_foci_mult (legendre, mult);
+ * qd_path_foci_mult_free (ctx). An array whose count is 0 may be NULL. */
 #endif

@@ -127,4 +127,11 @@ QD_API bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, doub
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_plot_add (index, label);
+ * qd_plot_add_map (label). An array whose count is 0 may be NULL. */
 #endif

@@ -177,4 +177,11 @@ QD_API size_t qd_scatter_lab_to_cm(double gamma, double theta_lab, double cm[2])
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_scatter_from_model (ignore, mass). An
+ * array whose count is 0 may be NULL. */
 #endif

@@ -194,6 +194,10 @@ QD_API qd_sim_method qd_sim_default_method(const qd_sim *s, bool fixed_step);
 
 #define QD_SIM_MAX_STEPS ((size_t)100000000) /* 1e8: the default of max_steps */
 
+/* An option refused (dt, max_steps) is recorded with subject
+ * QD_SUBJECT_NONE and name the field's name ("dt"): the message does not
+ * spell the option, so each caller adds its own (the CLI's --dt, Python's
+ * argument dt). */
 typedef struct qd_sim_opts {
     qd_sim_method method;
     double t0, t_end;
@@ -363,4 +367,14 @@ QD_API const qd_sim_transition *qd_sim_transitions(const qd_sim *s, size_t *n);
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_sim_input_callback (data);
+ * qd_sim_add_event (guard); qd_sim_load_native_taylor (cache_dir, cached);
+ * qd_sim_columns (names); qd_sim_run (data, final, sink, stats);
+ * qd_sim_run_with (data, final, sink, stats). An array whose count is 0 may
+ * be NULL. */
 #endif

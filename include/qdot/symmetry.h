@@ -154,4 +154,11 @@ QD_API void qd_cyclic_modes_free(qd_cyclic_modes *c);
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_symmetry_from_ops (R). An array whose
+ * count is 0 may be NULL. */
 #endif

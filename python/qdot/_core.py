@@ -137,6 +137,8 @@ class Core:
         if lib.qd_model_locate(self.model, byref(diag)) or cls is ModelError:
             return ModelError(format_diag(diag, self.file, self.text), diag, self.file)
         msg = diag.message.decode() or lib.qd_status_str(diag.status).decode()
+        if diag.subject == 0 and diag.name:  # an option's field (qdot/sim.h): the argument
+            msg += " (the argument %s)" % diag.name.decode()
         return (cls or Error)(msg, diag.status)
 
     def check(self, status, cls=None):

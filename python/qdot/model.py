@@ -143,8 +143,20 @@ class Model:
 
     def __init__(self, text, file="<string>"):
         """Read a model from its text; file names it in error messages."""
+        if not isinstance(text, (str, bytes, bytearray)):
+            raise TypeError("Model() takes the model text as str or bytes, not %s"
+                            % type(text).__name__)
+        if not isinstance(file, str):
+            raise TypeError("Model(): file is a str, not %s" % type(file).__name__)
         if isinstance(text, str):
             text = text.encode()
+        text = bytes(text)
+        if b"\0" in text:  # C would read the text only up to it
+            at = text.index(b"\0")
+            line = text.count(b"\n", 0, at) + 1
+            col = at - (text.rfind(b"\n", 0, at) + 1) + 1
+            raise ValueError("%s:%d:%d: a NUL byte in the model text (byte %d)"
+                             % (file, line, col, at))
         self._sets = {}
         self._core = Core(text, file, [])
 

@@ -67,4 +67,4 @@ void qd_buf_printf(qd_buf *b, const char *fmt, ...) {
     b->len += (size_t)n;
 }
 
-const char *qd_buf_str(const qd_buf *b) { QD_ARGS(NULL, b); return b->s ? b->s : ""; }
+const char *qd_buf_str(const qd_buf *b) { QD_ARGS("", b); return b->s ? b->s : ""; }

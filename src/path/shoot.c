@@ -1138,12 +1138,12 @@ done:
 
 qd_status qd_path_find(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const qd_path_opts *opts,
                        qd_path_set *out) {
-    QD_ARGS_CTX(ctx, ctx && m && e && out);
+    QD_ARGS_CTX(ctx, ctx && m && e && opts && out);
     return path_search(ctx, m, e, false, 0, opts, out);
 }
 
 qd_status qd_path_find_energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, double E,
                               const qd_path_opts *opts, qd_path_set *out) {
-    QD_ARGS_CTX(ctx, ctx && m && e && out);
+    QD_ARGS_CTX(ctx, ctx && m && e && opts && out);
     return path_search(ctx, m, e, true, E, opts, out);
 }

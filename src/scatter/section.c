@@ -188,6 +188,9 @@ static qd_status grid_make(qd_ctx *ctx, qd_scatter *s, double E, double bmax, co
                            size_t nk, sct_grid *g) {
     double edge[MAX_KINKS + 2];
     size_t ne = 0;
+    g->n = 0;
+    if (!(bmax > 0 && isfinite(bmax)))  /* range 0 (V = 0, no core): nothing is deflected */
+        return QD_OK;
     edge[ne++] = 0;
     for (size_t i = 0; i < nk; i++)
         if (k[i] < bmax)

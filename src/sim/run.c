@@ -182,13 +182,14 @@ static qd_status check_count(qd_ctx *ctx, const qd_sim_opts *o, bool fixed) {
         return QD_OK;
     qd_ctx_error(ctx, QD_ERR_ARG,
                  "%s %.17g from t = %.17g to %.17g asks for %.3g %s, more than the maximum "
-                 "of %zu (raise it with --max-steps)", fixed ? "the step" : "the output step",
+                 "of %zu", fixed ? "the step" : "the output step",
                  o->dt, o->t0, o->t_end, count, fixed ? "steps" : "rows", max_steps(o));
+    qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, "max_steps", QD_REASON_NONE, NULL);
     return QD_ERR_ARG;
 }
 
 qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
-    QD_ARGS_CTX(ctx, ctx);
+    QD_ARGS_CTX(ctx, ctx && o);
     const char *name = qd_sim_method_name(o->method);
     if (o->method >= QD_SIM_METHOD_COUNT) {
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown integration method");
@@ -200,7 +201,9 @@ qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
     }
     bool needs_dt = !qd_sim_method_adaptive(o->method) || o->fixed;
     if (needs_dt && !(o->dt > 0 && isfinite(o->dt))) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "%s takes fixed steps: give the step (--dt)", name);
+        qd_ctx_error(ctx, QD_ERR_ARG, "%s takes fixed steps: give the step, a positive number",
+                     name);
+        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, "dt", QD_REASON_NONE, NULL);
         return QD_ERR_ARG;
     }
     if (o->fixed && o->method == QD_SIM_BDF) {
@@ -683,7 +686,8 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
         if (it->steps >= max_steps(o)) {
             qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                          "more than %zu steps before t = %.17g (at t = %.17g; raise the "
-                         "maximum with --max-steps)", max_steps(o), o->t_end, it->t);
+                         "maximum)", max_steps(o), o->t_end, it->t);
+            qd_ctx_error_about(s->ctx, QD_SUBJECT_NONE, 0, "max_steps", QD_REASON_NONE, NULL);
             return QD_ERR_NUMERIC;
         }
         if ((st = step(r, &L, &grid)) != QD_OK)
@@ -794,7 +798,7 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
 
 qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink,
                           void *data, qd_sim_stats *stats, double *final) {
-    QD_ARGS_CTX(ctx, ctx && s);
+    QD_ARGS_CTX(ctx, ctx && s && o);
     if (!s->aux_ready) {
         qd_ctx_error(ctx, QD_ERR_ARG, "a shared simulation is compiled first (qd_sim_compile)");
         return QD_ERR_ARG;
@@ -804,7 +808,7 @@ qd_status qd_sim_run_with(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
 
 qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
-    QD_ARGS(QD_ERR_ARG, s);
+    QD_ARGS(QD_ERR_ARG, s && o);
     qd_status st = qd_sim_compile(s);
     if (st != QD_OK) {
         if (stats)

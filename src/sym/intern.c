@@ -299,7 +299,7 @@ char *qd__strdup(qd_ctx *ctx, const char *s) {
 }
 
 qd_status qd_ctx_status(const qd_ctx *ctx) { QD_ARGS(QD_ERR_ARG, ctx); return ctx->status; }
-const char *qd_ctx_message(const qd_ctx *ctx) { QD_ARGS(NULL, ctx); return ctx->diag.message; }
+const char *qd_ctx_message(const qd_ctx *ctx) { QD_ARGS("", ctx); return ctx->diag.message; }
 const qd_diag *qd_ctx_diag(const qd_ctx *ctx) { QD_ARGS(NULL, ctx); return &ctx->diag; }
 size_t qd_ctx_node_count(const qd_ctx *ctx) { QD_ARGS(0, ctx); return ctx->table_len; }
 

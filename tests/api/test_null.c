@@ -2083,6 +2083,9 @@ static void null_path(void **state)
     /* e NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_find(F.ctx, F.model, NULL, NULL, (qd_path_set *)(void *)F.blob));
     reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find(F.ctx, F.model, F.eom, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_find(F.ctx, F.model, F.eom, NULL, NULL));
     reset(&F);
@@ -2149,6 +2152,9 @@ static void null_path(void **state)
     reset(&F);
     /* e NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_find_energy(F.ctx, F.model, NULL, 1, NULL, (qd_path_set *)(void *)F.blob));
+    reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_find_energy(F.ctx, F.model, F.eom, 1, NULL, (qd_path_set *)(void *)F.blob));
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_find_energy(F.ctx, F.model, F.eom, 1, NULL, NULL));
@@ -2790,6 +2796,9 @@ static void null_sim(void **state)
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_check_opts(NULL, NULL));
     reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_check_opts(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_sim_compile */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_compile(NULL));
@@ -2802,12 +2811,18 @@ static void null_sim(void **state)
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_run(NULL, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
     reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_run(F.sim, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
+    reset(&F);
     /* ---- qd_sim_run_with */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_run_with(NULL, F.sim, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
     reset(&F);
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_run_with(F.ctx, NULL, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
+    reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_run_with(F.ctx, F.sim, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob, F.d));
     reset(&F);
     /* ---- qd_sim_ncontacts */
     /* s NULL */
