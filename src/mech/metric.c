@@ -10,6 +10,7 @@
  */
 #include "mech.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "base/mem.h"
@@ -298,6 +299,55 @@ static void factor_zero(qd_ctx *ctx, const qd_metric *g, const qd_expr *x,
     }
 }
 
+/* x > 0 wherever it is defined, read from its form: positive numbers and
+ * parameters, even powers, and products and sums of those with at least
+ * one term that is positive without the coordinates (m1 + m2 sin^2(a)). */
+static bool nonneg(const qd_expr *x, bool *pos) {
+    switch (qd_expr_kind(x)) {
+    case QD_RATIONAL:
+    case QD_FLOAT:
+        *pos = qd_number_sign(x) > 0;
+        return qd_number_sign(x) >= 0;
+    case QD_CONSTANT:
+        *pos = true;
+        return true;
+    case QD_SYMBOL:
+        *pos = qd_symbol_is_positive(x);
+        return *pos;
+    case QD_POW: {
+        const qd_expr *k = qd_expr_arg(x, 1);
+        bool p;
+        *pos = false;
+        if (qd_is_integer(k) && fmod(qd_number_value(k), 2) == 0)
+            return true;
+        return nonneg(qd_expr_arg(x, 0), &p) && p && (*pos = true);
+    }
+    case QD_MUL: {
+        bool all = true;
+        *pos = true;
+        for (size_t i = 0; i < qd_expr_nargs(x); i++) {
+            bool p;
+            all = all && nonneg(qd_expr_arg(x, i), &p);
+            *pos = *pos && p;
+        }
+        return all;
+    }
+    case QD_ADD: {
+        bool any = false;
+        for (size_t i = 0; i < qd_expr_nargs(x); i++) {
+            bool p;
+            if (!nonneg(qd_expr_arg(x, i), &p))
+                return *pos = false;
+            any = any || p;
+        }
+        *pos = any;
+        return true;
+    }
+    default:
+        return *pos = false;
+    }
+}
+
 /* The zeros of det, factor by factor (powers by their base; factors free
  * of the coordinates are not zero for the parameters' values). */
 static qd_status singular_set(qd_ctx *ctx, qd_metric *g, const qd_expr *det) {
@@ -317,7 +367,8 @@ static qd_status singular_set(qd_ctx *ctx, qd_metric *g, const qd_expr *det) {
         bool coords = false;
         for (size_t j = 0; j < g->n; j++)
             coords = coords || qd_has(f, g->q[j]);
-        if (!coords)
+        bool pos;
+        if (!coords || (nonneg(f, &pos) && pos))
             continue;
         factor_zero(ctx, g, f, &g->sing[g->nsing]);
         bool seen = false;
