@@ -86,6 +86,7 @@ int cli_cmd_impulse(int argc, char **argv);    /* cmd_impulse.c */
 int cli_cmd_scatter(int argc, char **argv);    /* cmd_scatter.c */
 int cli_cmd_path(int argc, char **argv);       /* cmd_path.c */
 int cli_cmd_animate(int argc, char **argv);    /* cmd_animate.c */
+int cli_cmd_metric(int argc, char **argv);     /* cmd_metric.c */
 int cli_cmd_sweep(int argc, char **argv);      /* cmd_sweep.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the

@@ -16,6 +16,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,7 @@
 
 #include "json.h"
 #include "model_cli.h"
+#include "qdot/lyapunov.h"
 #include "progress.h"
 #include "sim_cli.h"
 
@@ -35,7 +37,18 @@ static const char usage_text[] =
     "[--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
     "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
-    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q]]";
+    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q]] "
+    "[--variational [columns]] [--period T]";
+
+/* --variational (flow.c through qdot/lyapunov.h): after the run, the flow
+ * Jacobian d y(t_end)/d y(t0) and what follows from it; `columns`: instead
+ * of the trajectory, CSV rows of t, the state and the Jacobian's entries
+ * column by column.  --period T: t_end = t0 + T, the monodromy matrix. */
+typedef struct sim_cmd_args {
+    cli_sim_args a;
+    int variational;      /* 0 none, 1 the matrix, 2 its columns */
+    double period;
+} sim_cmd_args;
 
 typedef struct sim_out {
     FILE *csv;            /* rows as CSV, or NULL */
@@ -89,12 +102,29 @@ static int sink(void *data, int event, const double *row) {
 }
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
-    cli_sim_args *a = data;
+    sim_cmd_args *sa = data;
+    cli_sim_args *a = &sa->a;
     int rc;
     if (cli_sim_took_option(argc, argv, i, a, &rc))
         return rc;
     const char *v;
     bool stop;
+    if (!strcmp(argv[*i], "--variational")) {
+        sa->variational = 1;
+        if (*i + 1 < argc && (!strcmp(argv[*i + 1], "columns") || !strcmp(argv[*i + 1], "matrix")))
+            sa->variational = strcmp(argv[++*i], "columns") ? 1 : 2;
+        return QD_EXIT_OK;
+    }
+    if ((v = cli_value(argc, argv, i, "--period"))) {
+        char *end;
+        sa->period = strtod(v, &end);
+        if (end == v || *end || !(sa->period > 0) || !isfinite(sa->period)) {
+            cli_diag_error("--period takes a positive time, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+        sa->variational = sa->variational ? sa->variational : 1;
+        return QD_EXIT_OK;
+    }
     if ((v = cli_value(argc, argv, i, "--format"))) {
         if (strcmp(v, "csv") && strcmp(v, "json")) {
             cli_diag_error("--format takes csv or json, not '%s'", v);
@@ -268,7 +298,228 @@ static void plot_json(cli_json *j, const char *file, size_t npanels, const doubl
     cli_json_end_object(j);
 }
 
-static int run(cli_sim *c, const cli_sim_args *a) {
+/* ---- --variational ------------------------------------------------------------- */
+
+/* The flow run's options: the simulation's, with dop853 where its method
+ * is not one of the two pairs the tangent system runs with. */
+static qd_sim_opts flow_opts(const cli_sim *c) {
+    qd_sim_opts o = c->opts;
+    if (o.method != QD_SIM_DOPRI5 && o.method != QD_SIM_DOP853) {
+        o.method = QD_SIM_DOP853;
+        o.fixed = false;
+    }
+    return o;
+}
+
+static qd_lyap *flow_model(const cli_sim *c) {
+    if (!c->e || c->se) {
+        cli_diag_error("--variational takes a model given by T and V or L (its equations M "
+                       "q'' = f), not one given by H or in speeds (try --no-speeds)");
+        return NULL;
+    }
+    qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
+    if (!l)
+        cli_diag_ctx(c->ctx);
+    return l;
+}
+
+static void json_matrix(cli_json *j, const char *key, const double *A, size_t d) {
+    cli_json_key(j, key);
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < d; i++) {
+        cli_json_begin_array(j);
+        for (size_t k = 0; k < d; k++)
+            cli_json_number(j, A[i * d + k]);
+        cli_json_end_array(j);
+    }
+    cli_json_end_array(j);
+}
+
+/* The state's names: q..., q'... */
+static void state_names(const cli_sim *c, char (*names)[80]) {
+    size_t n = c->e->n;
+    for (size_t i = 0; i < n; i++) {
+        snprintf(names[i], 80, "%s", qd_expr_name(c->e->q[i]));
+        snprintf(names[n + i], 80, "%s'", qd_expr_name(c->e->q[i]));
+    }
+}
+
+static void flow_json(cli_json *j, const cli_sim *c, const qd_flow *f, const qd_sim_opts *o,
+                      double period) {
+    size_t d = f->d;
+    char (*names)[80] = malloc(d * sizeof *names);
+    cli_json_key(j, "variational");
+    cli_json_begin_object(j);
+    cli_json_key(j, "method");
+    cli_json_string(j, qd_sim_method_name(o->method));
+    cli_json_key(j, "state");
+    cli_json_begin_array(j);
+    if (names) {
+        state_names(c, names);
+        for (size_t i = 0; i < d; i++)
+            cli_json_string(j, names[i]);
+    }
+    cli_json_end_array(j);
+    cli_json_end_object(j);
+    free(names);
+    json_matrix(j, "flow_jacobian", f->phi, d);
+    cli_json_key(j, "flow_det");
+    cli_json_number(j, f->det);
+    cli_json_key(j, "liouville_det"); /* exp(integral of tr J) */
+    cli_json_number(j, exp(f->trace_integral));
+    cli_json_key(j, "hamiltonian");
+    cli_json_bool(j, f->hamiltonian);
+    if (f->hamiltonian) {
+        json_matrix(j, "flow_jacobian_canonical", f->phi_c, d);
+        cli_json_key(j, "symplectic_error");
+        cli_json_number(j, f->symplectic_error);
+    } else {
+        cli_json_key(j, "symplectic_error");
+        cli_json_null(j);
+    }
+    cli_json_key(j, "multipliers");
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < d; i++) {
+        cli_json_begin_array(j);
+        cli_json_number(j, f->mult_re[i]);
+        cli_json_number(j, f->mult_im[i]);
+        cli_json_end_array(j);
+    }
+    cli_json_end_array(j);
+    cli_json_key(j, "period");
+    if (period > 0)
+        cli_json_number(j, period);
+    else
+        cli_json_null(j);
+    cli_json_key(j, "closure");
+    cli_json_number(j, f->closure);
+    if (period > 0)
+        json_matrix(j, "monodromy", f->phi, d);
+}
+
+static void flow_summary(const qd_flow *f, double period) {
+    size_t d = f->d;
+    fprintf(stderr, "qdot: simulate: flow Jacobian d(q, q')(t_end)/d(q, q')(t0), det %.10g "
+                    "(Liouville exp(int tr J) %.10g)", f->det, exp(f->trace_integral));
+    if (f->hamiltonian)
+        fprintf(stderr, ", symplectic error in (q, p) %.3g", f->symplectic_error);
+    fprintf(stderr, "\n");
+    for (size_t i = 0; i < d; i++) {
+        fprintf(stderr, "qdot: simulate:  ");
+        for (size_t k = 0; k < d; k++)
+            fprintf(stderr, " % .10g", f->phi[i * d + k]);
+        fprintf(stderr, "\n");
+    }
+    fprintf(stderr, "qdot: simulate: %s:", period > 0 ? "Floquet multipliers" : "eigenvalues");
+    for (size_t i = 0; i < d; i++)
+        fprintf(stderr, " %.10g%+.10gi", f->mult_re[i], f->mult_im[i]);
+    fprintf(stderr, "%s\n", period > 0 ? "" : " (give --period T for a periodic orbit)");
+    if (period > 0)
+        fprintf(stderr, "qdot: simulate: closure max |y(t0 + T) - y(t0)| = %.3g%s\n", f->closure,
+                f->closure > 1e-6 ? ": the orbit is not periodic with this T" : "");
+}
+
+/* The flow run; *f filled (qd_flow_free). */
+static int flow_compute(cli_sim *c, qd_flow *f, qd_sim_opts *o, const qd_flow_opts *fo) {
+    *f = (qd_flow){0};
+    qd_lyap *l = flow_model(c);
+    if (!l)
+        return QD_EXIT_USAGE;
+    *o = flow_opts(c);
+    qd_status st = qd_flow_run(c->ctx, l, o, fo, f);
+    qd_lyap_free(l);
+    if (st == QD_ERR_ARG)
+        return cli_diag_ctx(c->ctx);
+    return st == QD_OK ? QD_EXIT_OK : cli_sim_fail(c, st);
+}
+
+typedef struct col_out {
+    FILE *out;
+    size_t d;
+    char *line;
+} col_out;
+
+static int col_sink(void *data, double t, const double *y, const double *phi) {
+    col_out *o = data;
+    size_t k = qd_double_format(o->line, t);
+    for (size_t i = 0; i < o->d; i++) {
+        o->line[k++] = ',';
+        k += qd_double_format(o->line + k, y[i]);
+    }
+    for (size_t j = 0; j < o->d; j++)
+        for (size_t i = 0; i < o->d; i++) {
+            o->line[k++] = ',';
+            k += qd_double_format(o->line + k, phi[i * o->d + j]);
+        }
+    o->line[k++] = '\n';
+    return fwrite(o->line, 1, k, o->out) == k ? 0 : 1;
+}
+
+/* --variational columns: CSV of t, the state and d y_i / d y_j(t0), column
+ * by column, every --dt (else 100 rows). */
+static int run_columns(cli_sim *c, const cli_sim_args *a) {
+    if (a->json || a->plot.file) {
+        cli_diag_error("--variational columns writes CSV: not with --format json or --plot");
+        return QD_EXIT_USAGE;
+    }
+    if (!c->e) {
+        flow_model(c);
+        return QD_EXIT_USAGE;
+    }
+    size_t d = 2 * c->e->n;
+    char (*names)[80] = malloc(d * sizeof *names);
+    col_out o = {.d = d, .line = malloc((d + 1) * (d + 1) * (QD_DOUBLE_MAX + 2) + 16)};
+    FILE *file = a->out ? fopen(a->out, "w") : NULL;
+    if (!names || !o.line || (a->out && !file)) {
+        if (a->out && !file)
+            cli_diag_error("cannot write '%s'", a->out);
+        free(names);
+        free(o.line);
+        return a->out && !file ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+    }
+    o.out = file ? file : stdout;
+    state_names(c, names);
+    fprintf(o.out, "t");
+    for (size_t i = 0; i < d; i++)
+        fprintf(o.out, ",%s", names[i]);
+    for (size_t j = 0; j < d; j++)
+        for (size_t i = 0; i < d; i++)
+            fprintf(o.out, ",d%s/d%s0", names[i], names[j]);
+    fprintf(o.out, "\n");
+    qd_flow_opts fo = {.every = a->has_dt ? a->dt : (c->opts.t_end - c->opts.t0) / 100,
+                       .sink = col_sink, .data = &o};
+    double *y0 = calloc(d + d * d, sizeof *y0); /* the first row: y(t0), Phi = I */
+    if (!y0) {
+        free(names);
+        free(o.line);
+        if (file)
+            fclose(file);
+        return QD_EXIT_FAIL;
+    }
+    for (size_t i = 0; i < d / 2; i++) {
+        y0[i] = c->opts.q0[i];
+        y0[d / 2 + i] = c->opts.qd0[i];
+    }
+    for (size_t i = 0; i < d; i++)
+        y0[d + i * d + i] = 1;
+    col_sink(&o, c->opts.t0, y0, y0 + d);
+    free(y0);
+    qd_flow f;
+    qd_sim_opts fopts;
+    int rc = flow_compute(c, &f, &fopts, &fo);
+    if (rc == QD_EXIT_OK)
+        flow_summary(&f, 0);
+    qd_flow_free(&f);
+    if (file && fclose(file) != 0 && rc == QD_EXIT_OK) {
+        cli_diag_error("cannot write '%s'", a->out);
+        rc = QD_EXIT_FAIL;
+    }
+    free(names);
+    free(o.line);
+    return rc;
+}
+
+static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
     const char **names = malloc((ncols + 1) * sizeof *names);
     double *final = malloc((ncols + 1) * sizeof *final);
@@ -352,8 +603,17 @@ static int run(cli_sim *c, const cli_sim_args *a) {
         double range[4 * CLI_PLOT_MAX_PANELS];
         if (a->plot.file)
             rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false, range);
+        qd_flow f = {0};
+        qd_sim_opts fopts;
+        if (rc == QD_EXIT_OK && sa) {
+            rc = flow_compute(c, &f, &fopts, NULL);
+            if (rc == QD_EXIT_OK)
+                flow_summary(&f, sa->period);
+        }
         if (rc == QD_EXIT_OK && a->json) {
             summary_json(&j, c, &st, wall, names, ncols, final);
+            if (sa)
+                flow_json(&j, c, &f, &fopts, sa->period);
             if (a->plot.file)
                 plot_json(&j, a->plot.file, pick.npanels, range);
             cli_json_end_object(&j);
@@ -364,6 +624,7 @@ static int run(cli_sim *c, const cli_sim_args *a) {
                 rc = QD_EXIT_FAIL;
             }
         }
+        qd_flow_free(&f);
     }
     cli_plot_rows_free(&rows);
     qd_buf_free(&jb);
@@ -374,10 +635,21 @@ static int run(cli_sim *c, const cli_sim_args *a) {
 }
 
 int cli_cmd_simulate(int argc, char **argv) {
-    cli_sim_args a = {0};
-    int rc = cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &a);
+    sim_cmd_args sa = {0};
+    cli_sim_args *ap = &sa.a;
+#define a (*ap)
+    int rc = cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &sa);
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&a.plot, "simulate");
+    if (rc == QD_EXIT_OK && sa.period > 0) {
+        if (a.has_t_end) {
+            cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to "
+                           "t0 + T)");
+            return QD_EXIT_USAGE;
+        }
+        a.has_t_end = true;
+        a.t_end = 1e300; /* t0 + T once the initial state (t0) is read */
+    }
     if (rc == QD_EXIT_OK && !a.has_t_end) {
         cli_diag_error("--t-end is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;
@@ -386,8 +658,13 @@ int cli_cmd_simulate(int argc, char **argv) {
         return rc;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &a);
-    if (rc == QD_EXIT_OK)
-        rc = run(&c, &a);
+    if (rc == QD_EXIT_OK && sa.period > 0)
+        c.opts.t_end = c.opts.t0 + sa.period;
+    if (rc == QD_EXIT_OK && sa.variational == 2)
+        rc = run_columns(&c, &a);
+    else if (rc == QD_EXIT_OK)
+        rc = run(&c, &a, sa.variational ? &sa : NULL);
     cli_sim_free(&c);
     return rc;
+#undef a
 }

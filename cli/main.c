@@ -58,6 +58,8 @@ static const cli_cmd commands[] = {
      cli_cmd_path, true},
     {"animate", "FILE -o FILE.html [OPTIONS]", "the motion as a self-contained HTML page",
      cli_cmd_animate, true},
+    {"metric", "FILE [--force ...] [--format F]", "metric g_ij, Christoffel symbols, geodesic form, chart",
+     cli_cmd_metric, true},
     {"sweep", "FILE --grid ... --measure M", "many runs on threads: grids, random, lists",
      cli_cmd_sweep, true},
 };

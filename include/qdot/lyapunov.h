@@ -81,6 +81,63 @@ QD_API qd_status qd_lyap_run_stats(qd_ctx *ctx, const qd_lyap *l, const qd_sim_o
                                    const qd_lyap_opts *lo, double *exps, double *err,
                                    qd_lyap_stats *stats);
 
+/* ---- the flow and its Jacobian ------------------------------------------------
+ *
+ * The same tangent system with 2n tangent vectors started at the identity and
+ * never renormalized: at time t they are the columns of the flow Jacobian
+ * Phi(t) = d y(t) / d y(t0), y = (q, q') (the state-transition matrix of the
+ * variational equations; Britannica 1911 "Dynamics" sec. 9, seed 004: the
+ * tangent flow behind Lagrange's bilinear invariant and Helmholtz's
+ * reciprocal theorems).
+ *
+ * For a Hamiltonian system (no dissipation, no forces besides those of V and
+ * U: qd_sim_conservative) Phi is carried to the canonical coordinates (q, p)
+ * with the Jacobian of the Legendre map, Lambda = d(q, p)/d(q, q') =
+ * [I 0; d^2L/dq'dq  d^2L/dq'dq'] (symbolic, compiled): Phi_c =
+ * Lambda(y(t)) Phi Lambda(y(t0))^-1, which is symplectic, Phi_c^T J Phi_c = J
+ * with J = [0 I; -I 0]; symplectic_error is max |Phi_c^T J Phi_c - J|.
+ * det Phi = exp(integral of tr J dt) (Liouville): exp(-b t/m) for a damped
+ * oscillator; in (q, q') it is det M(t0)/det M(t) for a conservative one.
+ *
+ * The multipliers are the eigenvalues of Phi (those of Phi_c are the same):
+ * when t_end - t0 is a period of the orbit, Phi is the monodromy matrix and
+ * they are its Floquet multipliers; an autonomous conservative system has
+ * two equal to 1 (the flow direction and the energy), in a Jordan block when
+ * the period changes with the energy.  closure is max |y(t_end) - y(t0)|:
+ * how closely the run returned to its start.
+ */
+typedef struct qd_flow {
+    size_t d;                 /* 2n */
+    double *y;                /* d: the state at t_end */
+    double *phi;              /* d*d row-major: d y(t_end) / d y(t0) in (q, q') */
+    double det;               /* det phi */
+    bool hamiltonian;         /* phi_c and symplectic_error were computed */
+    double *phi_c;            /* d*d: in (q, p); NULL unless hamiltonian */
+    double symplectic_error;  /* NaN unless hamiltonian */
+    double *mult_re, *mult_im;/* d eigenvalues of phi */
+    double closure;
+    double trace_integral;    /* integral of tr J over the run (log det phi) */
+    size_t steps, evals, rejected;
+} qd_flow;
+
+/* Called at every multiple of `every` after t0 and at t_end with the state
+ * (d) and phi (d*d row-major); nonzero stops the run (QD_ERR_ARG, "stopped"). */
+typedef int (*qd_flow_sink)(void *data, double t, const double *y, const double *phi);
+
+typedef struct qd_flow_opts {
+    double every;             /* > 0: sink at t0 + k every (and at t_end); 0: at t_end only */
+    qd_flow_sink sink;        /* may be NULL */
+    void *data;
+} qd_flow_opts;
+
+/* Integrate the state and its flow Jacobian from opts->t0 to opts->t_end
+ * with dopri5 or dop853 (rtol, atol as qd_lyap_run; fixed/dt as in a
+ * simulation); fo may be NULL.  *out is filled (qd_flow_free frees its
+ * arrays, also after a failure).  Failures as qd_lyap_run's. */
+QD_API qd_status qd_flow_run(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *opts,
+                             const qd_flow_opts *fo, qd_flow *out);
+QD_API void qd_flow_free(qd_flow *f);
+
 #ifdef __cplusplus
 }
 #endif

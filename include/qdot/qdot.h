@@ -30,6 +30,7 @@
 #include "plot.h"
 #include "sweep.h"
 #include "lyapunov.h"
+#include "metric.h"
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
 
 #define QDOT_VERSION "0.1.0"

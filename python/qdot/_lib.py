@@ -109,6 +109,25 @@ class Eom(Structure):
                 ("elim", c_void_p), ("priv", c_void_p)]
 
 
+class MetricSingular(Structure):
+    """qd_metric_singular (qdot/metric.h)."""
+    _fields_ = [("lhs", Expr), ("rhs", Expr), ("period", Expr)]
+
+
+class Metric(Structure):
+    """qd_metric (qdot/metric.h)."""
+    _fields_ = [("n", c_size_t), ("q", ExprArray), ("qd", ExprArray), ("qdd", ExprArray),
+                ("source", Expr), ("from_L", c_bool), ("T2", Expr), ("T1", Expr),
+                ("T0", Expr), ("g", ExprArray), ("ginv", ExprArray), ("det", Expr),
+                ("first", ExprArray), ("second", ExprArray), ("Q", ExprArray),
+                ("Qup", ExprArray), ("geodesic", ExprArray), ("constrained", c_bool),
+                ("npos", c_size_t), ("pos", ExprArray), ("pos_particle", POINTER(c_size_t)),
+                ("pos_axis", POINTER(c_uint)), ("jac", ExprArray), ("jac_det", Expr),
+                ("e", ExprArray), ("e_det", Expr), ("nsing", c_size_t),
+                ("sing", POINTER(MetricSingular)), ("sing_of", Expr), ("h", ExprArray),
+                ("scale_geometric", c_bool), ("orthogonal", c_bool)]
+
+
 class Ham(Structure):
     """qd_ham (qdot/hamilton.h)."""
     _fields_ = [("n", c_size_t), ("q", ExprArray), ("qd", ExprArray), ("p", ExprArray),
@@ -264,6 +283,9 @@ _PROTOS = {
     # equations (mech.h, hamilton.h)
     "qd_eom_derive": (POINTER(Eom), [c_void_p, c_void_p]),
     "qd_eom_free": (None, [POINTER(Eom)]),
+    # the metric of the coordinates (metric.h)
+    "qd_metric_new": (POINTER(Metric), [c_void_p, c_void_p]),
+    "qd_metric_free": (None, [POINTER(Metric)]),
     "qd_eom_compile": (c_void_p, [c_void_p, POINTER(Eom)]),
     "qd_eom_prog_free": (None, [c_void_p]),
     "qd_eom_work_new": (c_void_p, [c_void_p, c_void_p]),

@@ -209,6 +209,43 @@ class Model:
         cons = [e.con[k].name.decode() for k in range(e.ncon)]
         return Equations([name_of(e.q[j]) for j in range(n)], M, f, cons)
 
+    def metric(self, sympy=False):
+        """The metric of the coordinates (qdot/metric.h, `qdot metric`): an
+        object whose attributes are the JSON keys of `qdot metric --format
+        json` that come from the library: coordinates, metric,
+        metric_inverse, det, christoffel_first and christoffel_second
+        (indexed [l][i][j] by coordinate names), T2, T1, T0, Q, geodesic,
+        scale_factors, orthogonal, jacobian_det and singular (a list of
+        (lhs, rhs, period)).  Expressions are strings, or SymPy values with
+        sympy=True."""
+        import types
+        core = self._core
+        g = lib.qd_metric_new(core.ctx, core.model)
+        if not g:
+            raise core.error(cls=ModelError)
+        try:
+            m = g.contents
+            n = m.n
+            conv = _converter(core, sympy)
+            names = [name_of(m.q[i]) for i in range(n)]
+            opt = lambda x: conv(x) if x else None  # noqa: E731
+            vec = lambda a, k=0: {names[i]: conv(a[k + i]) for i in range(n)}  # noqa: E731
+            mat = lambda a, k=0: {names[i]: vec(a, k + i * n) for i in range(n)}  # noqa: E731
+            sym3 = lambda a: {names[l]: mat(a, l * n * n) for l in range(n)}  # noqa: E731,E741
+            return types.SimpleNamespace(
+                coordinates=names, source="L" if m.from_L else "T",
+                T2=conv(m.T2), T1=conv(m.T1), T0=conv(m.T0),
+                metric=mat(m.g), metric_inverse=mat(m.ginv), det=conv(m.det),
+                christoffel_first=sym3(m.first), christoffel_second=sym3(m.second),
+                Q=vec(m.Q), geodesic=vec(m.geodesic), constrained=m.constrained,
+                scale_factors=vec(m.h),
+                scale_from="positions" if m.scale_geometric else "metric",
+                orthogonal=m.orthogonal, jacobian_det=opt(m.jac_det),
+                singular=[(conv(m.sing[k].lhs), conv(m.sing[k].rhs), opt(m.sing[k].period))
+                          for k in range(m.nsing)])
+        finally:
+            lib.qd_metric_free(g)
+
     def hamiltonian(self, sympy=False):
         """The Hamiltonian and Hamilton's equations (a Hamiltonian); sympy=True
         gives SymPy expressions instead of strings."""
