@@ -147,5 +147,5 @@ QD_API void qd_flow_free(qd_flow *f);
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
- * (stats). An array whose count is 0 may be NULL. */
+ * (err, stats); qd_flow_run (fo). An array whose count is 0 may be NULL. */
 #endif

@@ -211,6 +211,6 @@ QD_API qd_status qd_eom_dof(qd_ctx *ctx, const qd_eom *e, qd_dof *d);
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_eom_derive_opts (opts); qd_eom_eval
- * (M, R, f, lambda, qdd); qd_eom_prog_eval (M, R, f, lambda);
+ * (M, R, f, lambda, qdd); qd_eom_prog_eval (M, R, f, lambda, qdd);
  * qd_eom_reaction (residual). An array whose count is 0 may be NULL. */
 #endif

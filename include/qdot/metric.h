@@ -109,4 +109,10 @@ QD_API qd_status qd_metric_lower(qd_ctx *ctx, const qd_metric *g, const qd_expr 
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_metric_force (up, phys, ord). */
 #endif

@@ -255,7 +255,7 @@ static qd_status run(bench *b, qd_ctx *ctx, const qd_sim_opts *o) {
 qd_status qd_lyap_run_stats(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
                             const qd_lyap_opts *lo, double *exps, double *err,
                             qd_lyap_stats *stats) {
-    QD_ARGS_CTX(ctx, ctx && l && o && lo && exps && err);
+    QD_ARGS_CTX(ctx, ctx && l && o && lo && exps);
     if (stats)
         *stats = (qd_lyap_stats){0};
     qd_status st = check_opts(ctx, l, o, lo);

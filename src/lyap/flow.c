@@ -16,6 +16,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/args.h"
 #include "base/mem.h"
 
 extern void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
@@ -287,6 +288,7 @@ static qd_status run(flow_run *r, qd_ctx *ctx, qd_flow *f) {
 
 qd_status qd_flow_run(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
                       const qd_flow_opts *fo, qd_flow *out) {
+    QD_ARGS_CTX(ctx, ctx && l && o && out);
     *out = (qd_flow){.d = 2 * l->n, .symplectic_error = NAN, .det = NAN, .closure = NAN};
     qd_status st = check_opts(ctx, o);
     if (st != QD_OK)

@@ -125,7 +125,7 @@ static qd_status solve_mass(qd_ctx *ctx, const qd_eom *e, const double *out, dou
 qd_status qd_eom_prog_eval(qd_ctx *ctx, const qd_eom_prog *p, qd_eom_work *w, size_t nvals,
                            const qd_expr *const *syms, const double *vals, double *M, double *f,
                            double *qdd, double *lambda, double *R) {
-    QD_ARGS_CTX(ctx, ctx && p && w && (nvals == 0 || syms) && (nvals == 0 || vals) && qdd);
+    QD_ARGS_CTX(ctx, ctx && p && w && (nvals == 0 || syms) && (nvals == 0 || vals));
     const qd_eom *e = p->e;
     size_t n = e->n;
     if (w->p != p) {

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/args.h"
 #include "base/mem.h"
 #include "qdot/metric.h"
 
@@ -481,11 +482,13 @@ static qd_status mat_vec(qd_ctx *ctx, size_t n, const qd_expr *const *A, const q
 
 qd_status qd_metric_lower(qd_ctx *ctx, const qd_metric *g, const qd_expr *const *A,
                           const qd_expr **low) {
+    QD_ARGS_CTX(ctx, ctx && g && A && low);
     return mat_vec(ctx, g->n, g->g, A, low);
 }
 
 qd_status qd_metric_force(qd_ctx *ctx, const qd_metric *g, const qd_expr *const *G,
                           const qd_expr **up, const qd_expr **phys, const qd_expr **ord) {
+    QD_ARGS_CTX(ctx, ctx && g && G);
     size_t n = g->n;
     qd_status st = up ? mat_vec(ctx, n, g->ginv, G, up) : QD_OK;
     for (size_t i = 0; st == QD_OK && phys && i < n; i++) {

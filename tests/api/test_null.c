@@ -28,6 +28,7 @@
 #include "qdot/integrals.h"
 #include "qdot/lyapunov.h"
 #include "qdot/mech.h"
+#include "qdot/metric.h"
 #include "qdot/model.h"
 #include "qdot/modes.h"
 #include "qdot/orbit.h"
@@ -1268,8 +1269,19 @@ static void null_lyapunov(void **state)
     /* exps NULL */
     assert_int_equal(QD_ERR_ARG, qd_lyap_run_stats(F.ctx, NULL, NULL, NULL, NULL, F.d, (qd_lyap_stats *)(void *)F.blob));
     reset(&F);
-    /* err NULL */
-    assert_int_equal(QD_ERR_ARG, qd_lyap_run_stats(F.ctx, NULL, NULL, NULL, F.d, NULL, (qd_lyap_stats *)(void *)F.blob));
+    /* ---- qd_flow_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_run(NULL, NULL, NULL, NULL, (qd_flow *)(void *)F.blob));
+    reset(&F);
+    /* l NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_run(F.ctx, NULL, NULL, NULL, (qd_flow *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_run(F.ctx, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_flow_free */
+    /* f NULL */
+    qd_flow_free(NULL);
     reset(&F);
     teardown(&F);
 }
@@ -1352,9 +1364,6 @@ static void null_mech(void **state)
     /* vals NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_prog_eval(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, NULL, F.d, F.d, F.d, F.d, F.d));
     reset(&F);
-    /* qdd NULL */
-    assert_int_equal(QD_ERR_ARG, qd_eom_prog_eval(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, NULL, F.d, F.d));
-    reset(&F);
     /* ---- qd_eom_reaction */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_reaction(NULL, F.eom, "q", (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d, F.d, F.d));
@@ -1389,6 +1398,48 @@ static void null_mech(void **state)
     reset(&F);
     /* d NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_dof(F.ctx, F.eom, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_metric(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_metric_new */
+    /* ctx NULL */
+    assert_null(qd_metric_new(NULL, F.model));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_metric_new(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_metric_free */
+    /* g NULL */
+    qd_metric_free(NULL);
+    reset(&F);
+    /* ---- qd_metric_force */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* G NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force(F.ctx, NULL, NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* ---- qd_metric_lower */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_lower(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_lower(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* A NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_lower(F.ctx, NULL, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* low NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_lower(F.ctx, NULL, (const qd_expr * const *)F.e, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -3315,6 +3366,7 @@ int main(void)
         cmocka_unit_test(null_integrals),
         cmocka_unit_test(null_lyapunov),
         cmocka_unit_test(null_mech),
+        cmocka_unit_test(null_metric),
         cmocka_unit_test(null_model),
         cmocka_unit_test(null_modes),
         cmocka_unit_test(null_orbit),

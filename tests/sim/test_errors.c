@@ -118,7 +118,14 @@ static void test_beyond_c(void **state) {
 
 static void test_missing_step(void **state) {
     (void)state;
-    expect(dp, QD_SIM_GL4, 1, 0, 0, QD_ERR_ARG, "--dt");
+    /* the message names no option; the record names the field (sim.h) */
+    expect(dp, QD_SIM_GL4, 1, 0, 0, QD_ERR_ARG, "give the step");
+    sim_fix *f = sf_load(dp);
+    qd_sim_opts o = {.method = QD_SIM_GL4, .t_end = 1, .q0 = f->q0, .qd0 = f->qd0};
+    assert_int_equal(qd_sim_run(f->s, &o, NULL, NULL, NULL, NULL), QD_ERR_ARG);
+    assert_string_equal(qd_ctx_diag(f->ctx)->name, "dt");
+    assert_null(strstr(qd_ctx_message(f->ctx), "--dt"));
+    sf_free(f);
 }
 
 int main(void) {
