@@ -87,6 +87,8 @@ int cli_cmd_scatter(int argc, char **argv);    /* cmd_scatter.c */
 int cli_cmd_path(int argc, char **argv);       /* cmd_path.c */
 int cli_cmd_animate(int argc, char **argv);    /* cmd_animate.c */
 int cli_cmd_sweep(int argc, char **argv);      /* cmd_sweep.c */
+int cli_cmd_lorentz(int argc, char **argv);    /* cmd_lorentz.c */
+int cli_cmd_collide(int argc, char **argv);    /* cmd_collide.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the
  * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */
