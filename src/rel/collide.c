@@ -168,7 +168,10 @@ qd_status qd_rel_elastic_lab(qd_ctx *ctx, double c, const qd_rel_particle in[2],
                 else
                     hi = mid;
             }
-            chi[(*count)++] = flo == 0 ? lo : (lo + hi) / 2;
+            double root = flo == 0 ? lo : (lo + hi) / 2, fr;
+            if (st == QD_OK && (st = lab_miss(ctx, c, in, root, theta, &fr)) == QD_OK &&
+                fabs(fr) < 1e-9) /* a jump (particle 1 at rest in the lab) is no root */
+                chi[(*count)++] = root;
         } else if (s == LAB_SCAN && fb == 0) {
             chi[(*count)++] = b;
         }

@@ -291,6 +291,12 @@ static void elastic(void **state) {
         double th1 = qd_rel_lab_angle(in, out, 0), th2 = qd_rel_lab_angle(in, out, 1);
         near(tan(th1) * tan(th2), 2 / (5.0 / 3 + 1), 1e-12);
     }
+    /* equal masses: one CM angle per lab angle (chi = pi leaves particle 1
+     * at rest in the lab, a jump of its direction that is no root) */
+    double one[2];
+    size_t n1;
+    assert_int_equal(qd_rel_elastic_lab(ctx, 1, in, 0.5, one, &n1), QD_OK);
+    assert_int_equal(n1, 1);
     /* m1 = 2 on m2 = 1 at rest: sin th_max = 1/2 */
     double v[3] = {0.9, 0, 0}, chi[2];
     size_t n;
