@@ -15,6 +15,9 @@ Expected values are closed forms from the seed, worked out here:
   - P7: V (+) v and v (+) V differ in direction, same speed;
   - T16 (ch. 88 Prob. 1): 1 at +0.6 and 2 at -0.8 merge into M = sqrt(2496)/12, V = -23/55;
   - elastic, threshold (6 m c^2 for p p -> p p p pbar) and decay (p* of pi -> mu nu);
+  - T17 (ch. 88 Prob. 2), examples/relativistic_rocket.qd: V(t) against
+    c tanh((U/c) ln(M0/M)), M = M0 - k t, to 1e-9; U = c/2 at M/M0 = 1/4 gives 0.6 c;
+    at c = 1e4 (Newtonian) V = U ln(M0/M);
   - every speed >= c, a missing --frame, --acceleration without --velocity: exit 2, a message.
 """
 import argparse
@@ -110,6 +113,26 @@ def collide(qdot):
         check("decay conserves", d["conservation_error"] < 1e-12)
 
 
+def rocket(qdot):
+    ex = Path(__file__).resolve().parents[2] / "examples" / "relativistic_rocket.qd"
+    for sets, c, U in [([], 1, 0.5), (["--set", "U=0.9", "--set", "c=1"], 1, 0.9),
+                       (["--set", "c=1e4"], 1e4, 0.5)]:
+        rc, out, err = run(qdot, "simulate", ex, "--t-end", "0.75", "--rtol", "1e-12",
+                           "--atol", "1e-14", "--format", "json", *sets)
+        if not check(f"rocket {sets} rc", rc == 0, err):
+            continue
+        d = json.loads(out)
+        rows = [dict(zip(d["columns"], r)) for r in d["rows"]]
+        worst = max(abs(r["x'"] - c * math.tanh(U / c * math.log(1 / (1 - r["t"]))))
+                    for r in rows)
+        check(f"rocket {sets} V = c tanh((U/c) ln(M0/M))", worst < 1e-9 and len(rows) > 10,
+              f"worst {worst}")
+        if not sets:
+            check("T17 V = 0.6 c at M/M0 = 1/4", close(rows[-1]["x'"], 0.6, 1e-10))
+        if c == 1e4:
+            check("Newtonian rocket U ln(M0/M)", close(rows[-1]["x'"], 0.5 * math.log(4), 1e-8))
+
+
 def refusals(qdot):
     for name, args, text in [
             ("V = c", ["lorentz", "--frame", "c, 0, 0"], "not below c = 1"),
@@ -139,6 +162,7 @@ def main():
     qdot = Path(ap.parse_args().build) / "qdot"
     lorentz(qdot)
     collide(qdot)
+    rocket(qdot)
     refusals(qdot)
     return finish()
 
