@@ -64,6 +64,21 @@ static void blow(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* A T beyond the square, T = x'^4/4 + y'^2: P_x = x'^3 jumps by the blow,
+ * 1 -> 2, so x'+ = 2^(1/3) (it was refused as "not quadratic" before). */
+static void quartic(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_impulse r;
+    solve("coordinates x, y\nT = x'^4/4 + y'^2\nQhat[x] = 1\n"
+          "initial x = 0, y = 0, x' = 1, y' = 0\n", &r, ctx);
+    near(r.qd_after[0], cbrt(2.0), 1e-14);
+    near(r.qd_after[1], 0, 1e-14);
+    near(r.T_after - r.T_before, 3 * (pow(2.0, 4.0 / 3) - 1) / 4, 1e-13); /* h = 3 x'^4/4 */
+    qd_impulse_free(&r);
+    qd_ctx_free(ctx);
+}
+
 static void held(void **state) {
     (void)state;
     qd_ctx *ctx = qd_ctx_new();
@@ -115,6 +130,7 @@ static void collisions(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(blow),
+        cmocka_unit_test(quartic),
         cmocka_unit_test(held),
         cmocka_unit_test(collisions),
     };
