@@ -88,6 +88,8 @@ int cli_cmd_path(int argc, char **argv);       /* cmd_path.c */
 int cli_cmd_animate(int argc, char **argv);    /* cmd_animate.c */
 int cli_cmd_metric(int argc, char **argv);     /* cmd_metric.c */
 int cli_cmd_sweep(int argc, char **argv);      /* cmd_sweep.c */
+int cli_cmd_lorentz(int argc, char **argv);    /* cmd_lorentz.c */
+int cli_cmd_collide(int argc, char **argv);    /* cmd_collide.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the
  * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */

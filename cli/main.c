@@ -62,6 +62,10 @@ static const cli_cmd commands[] = {
      cli_cmd_metric, true},
     {"sweep", "FILE --grid ... --measure M", "many runs on threads: grids, random, lists",
      cli_cmd_sweep, true},
+    {"lorentz", "--frame \"Vx, Vy, Vz\" [--event ...]", "Lorentz transformation, boost, proper time",
+     cli_cmd_lorentz, true},
+    {"collide", "--particle \"m=..., v=(...)\" ...", "relativistic collisions, thresholds, decays",
+     cli_cmd_collide, true},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

@@ -32,6 +32,7 @@
 #include "lyapunov.h"
 #include "metric.h"
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
+#include "relativity.h" /* issue 35: Lorentz kinematics, collisions */
 
 #define QDOT_VERSION "0.1.0"
 

@@ -104,7 +104,8 @@ static qd_status reactions(const qd__imp *s, qd_impulse *r) {
 
 static qd_status solve(const qd__imp *s, qd_impulse *r) {
     size_t n = s->n;
-    qd_status st = qd__imp_solve(s, NULL, true, r->qd_after, r->mult);
+    qd_status st = s->nonquad ? qd__imp_solve_momenta(s, r->qd_after, r->mult)
+                              : qd__imp_solve(s, NULL, true, r->qd_after, r->mult);
     if (st != QD_OK)
         return st;
     memcpy(r->qd_before, s->vals + n, n * sizeof *r->qd_before);
@@ -139,11 +140,13 @@ qd_status qd_impulse_solve(qd_ctx *ctx, const qd_model *m, const qd_impulse_opts
         st = alloc_result(&s, out);
     if (st == QD_OK)
         st = solve(&s, out);
-    if (st == QD_OK)
+    /* the theorems, the Newtonian collision summary and the closed forms
+     * rest on M (q'+ - q'-) = ...: not for a non-quadratic L */
+    if (st == QD_OK && !s.nonquad)
         st = qd__imp_theorems(&s, out);
-    if (st == QD_OK)
+    if (st == QD_OK && !s.nonquad)
         st = qd__imp_collision(&s, out);
-    if (st == QD_OK && opts && opts->exact)
+    if (st == QD_OK && opts && opts->exact && !s.nonquad)
         st = qd__imp_exact(&s, opts->max_ops ? opts->max_ops : 4000, out);
     if (st == QD_OK && qd__ctx_nomem(ctx)) /* a step that ran out and carried on is no success */
         st = QD_ERR_NOMEM;

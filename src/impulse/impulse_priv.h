@@ -23,7 +23,13 @@ typedef struct qd__imp {
     const qd_model *m;
     qd_eom *e;                 /* M (velocity-free) and the held rows */
     size_t n;
-    const qd_expr *T;          /* the energy T2 + T1 + T0 */
+    const qd_expr *T;          /* the energy T2 + T1 + T0; a non-quadratic L's
+                                  energy function sum q' dL/dq' - L */
+    /* L beyond the square in the velocities (relativistic, Desloge ch. 92):
+     * the jump is of the momenta P_j = dL/dq'_j, solved by Newton (momenta.c);
+     * M at the state is then d^2 L/dq' dq' there, the Jacobian of P. */
+    bool nonquad;
+    const qd_expr **P;         /* n, when nonquad */
     /* Rows: nheld, then nsudden, then npre of them (nrow in all). */
     size_t nrow, nheld, nsudden, npre;
     qd_con *row;               /* name, expr, a (n), a0 */
@@ -81,6 +87,10 @@ qd_status qd__imp_solve(const qd__imp *s, const bool *use, bool report, double *
 /* A qd_eom view of s with every row as a constraint (for qd__con_report
  * and qd_eom_reaction); nothing to free. */
 qd_eom qd__imp_view(const qd__imp *s);
+
+/* The impulse of a non-quadratic L through the momenta (momenta.c):
+ * P(q'+) - P(q'-) = Qhat + A^T Lambda with the rows' conditions on q'+. */
+qd_status qd__imp_solve_momenta(const qd__imp *s, double *v1, double *lambda);
 
 /* The theorems of Carnot, Bertrand and Thomson on the solved impulse r
  * (theorems.c). */

@@ -29,6 +29,7 @@ void qd__imp_free(qd__imp *s) {
     qd__free(s->q0);
     qd__free(s->qd0);
     qd__free(s->M);
+    qd__free(s->P);
     *s = (qd__imp){0};
 }
 
@@ -50,6 +51,26 @@ static qd_status not_quadratic(qd_ctx *ctx, const char *what) {
     return QD_ERR_NONLINEAR;
 }
 
+/* A velocity-dependence beyond the square (a relativistic L): the momenta
+ * P_j = dL/dq'_j and the energy function sum q'_j P_j - L, whose jump is
+ * the energy lost (its value at rest cancels, q being frozen). */
+static qd_status momenta(qd__imp *s) {
+    qd_ctx *ctx = s->ctx;
+    if (!qd__ctx_recover(ctx))
+        return QD_ERR_NOMEM;
+    s->nonquad = true;
+    s->P = qd__calloc(ctx, s->n + 1, sizeof *s->P);
+    if (!s->P)
+        return QD_ERR_NOMEM;
+    const qd_expr *h = qd_neg(ctx, s->e->L);
+    for (size_t j = 0; j < s->n; j++) {
+        s->P[j] = qd_diff(ctx, s->e->L, s->e->qd[j]);
+        h = qd_add(ctx, h, qd_mul(ctx, s->e->qd[j], s->P[j]));
+    }
+    s->T = h;
+    return h ? QD_OK : qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+}
+
 /* s->T: the model's T checked quadratic, or L's velocity-dependent part
  * T2 + T1 for a model given by L (its T0 cannot be told from -V; it
  * cancels from every energy difference, q being frozen). */
@@ -65,6 +86,8 @@ static qd_status energy(qd__imp *s) {
     }
     qd__vsum v;
     qd_status st = qd__by_velocity(ctx, T, s->n, s->e->qd, &v);
+    if ((st == QD_ERR_NONLINEAR || (st == QD_OK && v.top > 2)) && s->e->L)
+        return momenta(s);
     if (st == QD_ERR_NONLINEAR || (st == QD_OK && v.top > 2))
         return not_quadratic(ctx, given ? "the kinetic energy T" : "L");
     if (st != QD_OK)

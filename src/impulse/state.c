@@ -172,7 +172,13 @@ double qd__imp_rhs(const qd__imp *s, size_t k, const double *v0) {
 }
 
 qd_status qd__imp_energy(const qd__imp *s, const double *v, double *T) {
-    return qd__imp_eval(s, s->T, v, T);
+    qd_status st = qd__imp_eval(s, s->T, v, T);
+    double rest;
+    if (st == QD_OK && s->nonquad) /* the energy function less its value at rest */
+        st = qd__imp_eval(s, s->T, s->Qhat + s->n, &rest);
+    if (st == QD_OK && s->nonquad)
+        *T -= rest;
+    return st;
 }
 
 double qd__imp_quad(const qd__imp *s, const double *d) {
