@@ -11,6 +11,7 @@
 #include "cli.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
@@ -19,6 +20,7 @@
 
 #include "json.h"
 #include "model_cli.h"
+#include "out.h"
 #include "progress.h"
 #include "sim_cli.h"
 #include "sweep_hdf5.h"
@@ -473,7 +475,7 @@ static int write_hdf5(const sweep_args *a, const sweep_result *r) {
     if (cli_hdf5_write_sweep(a->sim.out, &h, err, sizeof err))
         return QD_EXIT_OK;
     cli_diag_error("%s", err);
-    return QD_EXIT_USAGE;
+    return QD_EXIT_FAIL;
 }
 
 /* Before the runs: hdf5 is written to a file, by a qdot built with HDF5. */
@@ -495,15 +497,14 @@ static int check_output(const sweep_args *a, size_t fmt) {
 static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) {
     if (!formats[fmt].write)
         return write_hdf5(a, r);
-    FILE *f = a->sim.out ? fopen(a->sim.out, "w") : stdout;
-    if (!f) {
-        cli_diag_error("cannot write '%s'", a->sim.out);
-        return QD_EXIT_USAGE;
-    }
-    int rc = formats[fmt].write(f, r);
-    if (f != stdout && fclose(f) != 0)
-        rc = QD_EXIT_FAIL;
-    return rc;
+    int rc = QD_EXIT_OK;
+    FILE *f = a->sim.out ? cli_out_open(a->sim.out, &rc) : stdout;
+    if (!f)
+        return rc;
+    rc = formats[fmt].write(f, r);
+    int err = ferror(f) ? errno : 0;
+    int crc = cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err);
+    return rc != QD_EXIT_OK ? rc : crc;
 }
 
 static void summary(const sweep_result *r, unsigned threads, int ranks) {
