@@ -313,20 +313,23 @@ static int list_row(list_csv *l, char *line, const char *path, size_t lineno) {
 }
 
 static int list_read(const char *path, list_csv *l) {
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        cli_diag_error("cannot read '%s'", path);
-        return QD_EXIT_USAGE;
-    }
+    int rc = QD_EXIT_OK;
+    FILE *f = cli_in_open(path, &rc);
+    if (!f)
+        return rc;
     char line[4096];
     size_t lineno = 0;
-    int rc = QD_EXIT_OK;
+    errno = 0;
     while (rc == QD_EXIT_OK && fgets(line, sizeof line, f)) {
         lineno++;
         line[strcspn(line, "\r\n")] = '\0';
         if (!line[strspn(line, " \t")])
             continue;
         rc = l->nnames ? list_row(l, line, path, lineno) : list_header(l, line);
+    }
+    if (rc == QD_EXIT_OK && ferror(f)) {
+        cli_diag_error("cannot read %s: %s", path, strerror(errno ? errno : EIO));
+        rc = QD_EXIT_USAGE;
     }
     fclose(f);
     if (rc == QD_EXIT_OK && !l->nrows) {
