@@ -26,15 +26,41 @@
 #include "model_cli.h"
 #include "qdot/codegen.h"
 
-static int number(const char *opt, const char *v, double *out, bool positive) {
+/* A number, or (text) a constant expression in the model's parameters
+ * ("2*pi/w"), read with the model by option_value. */
+static int number(const char *opt, const char *v, double *out, bool positive, const char **text) {
     char *end;
     double x = strtod(v, &end);
+    if (text && (end == v || *end || !isfinite(x))) {
+        *text = v;
+        return 1;
+    }
+    if (text)
+        *text = NULL;
     if (end == v || *end || !isfinite(x) || (positive && !(x > 0))) {
         cli_diag_error("%s takes a %snumber, not '%s'", opt, positive ? "positive " : "", v);
         return QD_EXIT_USAGE + 100;
     }
     *out = x;
     return 1;
+}
+
+/* The value of opt given as an expression text (NULL: *out as given),
+ * read against the model: errors shown in the option's text with a caret. */
+static int option_value(cli_sim *c, const char *opt, const char *text, bool positive,
+                        double *out) {
+    if (!text)
+        return QD_EXIT_OK;
+    if (qd_model_number(c->ctx, c->mf.model, text, out) != QD_OK) {
+        const qd_diag *d = qd_ctx_diag(c->ctx);
+        cli_diag_show(opt, text, d);
+        return qd_ctx_status(c->ctx) == QD_ERR_NOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
+    }
+    if (positive && !(*out > 0)) {
+        cli_diag_error("%s takes a positive number; '%s' is %.17g", opt, text, *out);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
 }
 
 static int push(const char **list, size_t *n, const char *v, const char *opt) {
@@ -63,21 +89,21 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     }
     if ((v = cli_value(argc, argv, i, "--t-end"))) {
         a->has_t_end = true;
-        return number("--t-end", v, &a->t_end, false);
+        return number("--t-end", v, &a->t_end, false, &a->t_end_text);
     }
     if ((v = cli_value(argc, argv, i, "--dt"))) {
         a->has_dt = true;
-        return number("--dt", v, &a->dt, true);
+        return number("--dt", v, &a->dt, true, &a->dt_text);
     }
     if ((v = cli_value(argc, argv, i, "--rtol"))) {
         a->has_rtol = true;
-        return number("--rtol", v, &a->rtol, true);
+        return number("--rtol", v, &a->rtol, true, &a->rtol_text);
     }
     if ((v = cli_value(argc, argv, i, "--atol")))
-        return number("--atol", v, &a->atol, true);
+        return number("--atol", v, &a->atol, true, &a->atol_text);
     if ((v = cli_value(argc, argv, i, "--max-steps"))) {
         double x = 0;
-        int rc = number("--max-steps", v, &x, true);
+        int rc = number("--max-steps", v, &x, true, NULL);
         if (rc == 1 && x != floor(x)) {
             cli_diag_error("--max-steps takes a whole number, not '%s'", v);
             return QD_EXIT_USAGE + 100;
@@ -522,6 +548,16 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
 
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
     qd_sim_opts *o = &c->opts;
+    double t_end = a->t_end, dt = a->dt, rtol = a->rtol, atol = a->atol;
+    int rc = option_value(c, "--t-end", a->t_end_text, false, &t_end);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--dt", a->dt_text, true, &dt);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--rtol", a->rtol_text, true, &rtol);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--atol", a->atol_text, true, &atol);
+    if (rc != QD_EXIT_OK)
+        return rc;
     if (a->has_dt && a->has_rtol && !a->method_name) {
         cli_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method");
         return QD_EXIT_USAGE;
@@ -530,9 +566,9 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
         qd_sim_method_from_name(a->method_name, &o->method);
     else
         o->method = qd_sim_default_method(c->s, a->has_dt);
-    o->dt = a->has_dt ? a->dt : 0;
-    o->rtol = a->has_rtol ? a->rtol : 0;
-    o->atol = a->atol;
+    o->dt = a->has_dt ? dt : 0;
+    o->rtol = a->has_rtol ? rtol : 0;
+    o->atol = atol;
     o->no_project = a->no_project;
     o->max_steps = a->max_steps;
     o->precision = a->precision;
@@ -541,7 +577,7 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_USAGE;
     }
     o->t0 = c->st.vals[2 * qd_model_ncoords(c->mf.model)];
-    o->t_end = a->t_end;
+    o->t_end = t_end;
     o->q0 = c->q0;
     o->qd0 = c->qd0;
     o->p0 = c->p0;

@@ -25,6 +25,9 @@ typedef struct cli_sim_args {
     size_t ninputs;
     const char *about, *lqr; /* --input "F = lqr": the operating point, the weights */
     double t_end, dt, rtol, atol;
+    /* the same given as expressions in the parameters ("2*pi/w"): read
+     * once the model is loaded (cli_sim_setup), else NULL */
+    const char *t_end_text, *dt_text, *rtol_text, *atol_text;
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
     bool no_speeds;    /* a model with speeds: the multiplier form instead */
     size_t max_steps;
