@@ -153,6 +153,7 @@ int cli_cmd_poincare(int argc, char **argv) {
     }
     p.a.events[0] = p.section;
     p.a.event_stop[0] = false;
+    p.a.event_label[0] = "--section";
     p.a.nevents = 1;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &p.a);

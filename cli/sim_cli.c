@@ -215,7 +215,41 @@ static bool is_input(const cli_sim *c, const qd_expr *x) {
     return false;
 }
 
+/* An error at text[at, at + len) of the user's option text full. */
+static void located(const char *what, const char *full, size_t at, size_t len, const char *msg,
+                    const char *hint) {
+    qd_read_error err;
+    memset(&err, 0, sizeof err);
+    err.status = QD_ERR_ARG;
+    err.offset = at;
+    err.length = len ? len : 1;
+    snprintf(err.message, sizeof err.message, "%s", msg);
+    snprintf(err.hint, sizeof err.hint, "%s", hint);
+    cli_diag_read(what, full, &err);
+}
+
+/* Where name stands in [a, b) as a whole word, or a. */
+static const char *word_in(const char *a, const char *b, const char *name) {
+    size_t n = strlen(name);
+    for (const char *p = a; n && p + n <= b; p++)
+        if (!strncmp(p, name, n) && (p == a || !(isalnum((unsigned char)p[-1]) || p[-1] == '_')) &&
+            (p + n == b || !(isalnum((unsigned char)p[n]) || p[n] == '_')))
+            return p;
+    return a;
+}
+
+/* text[a, b) read against the model; full: the option text the user wrote
+ * that [a, b) lies in (errors are shown in it, at their place), or NULL
+ * (shown in [a, b) itself). */
+static const qd_expr *read_expr_in(cli_sim *c, const char *what, const char *full, const char *a,
+                                   const char *b);
+
 static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
+    return read_expr_in(c, what, NULL, a, b);
+}
+
+static const qd_expr *read_expr_in(cli_sim *c, const char *what, const char *full, const char *a,
+                                   const char *b) {
     trim(&a, &b);
     size_t len = (size_t)(b - a);
     char *text = malloc(len + 1);
@@ -237,7 +271,12 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
     if (!x)
         x = qd_read(c->ctx, text, &opts, &err);
     if (!x) {
-        cli_diag_read(what, text, &err);
+        if (full) {
+            err.offset += (size_t)(a - full);
+            cli_diag_read(what, full, &err);
+        } else {
+            cli_diag_read(what, text, &err);
+        }
         free(text);
         return NULL;
     }
@@ -249,6 +288,19 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
             is_momentum(c, syms[i]) || is_input(c, syms[i]))
             continue;
         const qd_expr *d = definition(c, qd_expr_name(syms[i]));
+        const char *nm = qd_expr_name(syms[i]);
+        if (!d && full) {
+            char msg[256];
+            snprintf(msg, sizeof msg, "%s '%s'", speeds_multiplier(c, nm)
+                     ? "the multipliers are not computed in generalized speeds (use --no-speeds):"
+                     : "unknown name", nm);
+            const char *at = word_in(a, b, nm);
+            located(what, full, (size_t)(at - full), strlen(nm), msg,
+                    "use coordinates, velocities q', t, parameters, the model's definitions "
+                    "and the multipliers lambda_<constraint>");
+            x = NULL;
+            break;
+        }
         if (!d && speeds_multiplier(c, qd_expr_name(syms[i]))) {
             cli_diag_error("%s: '%s' in '%s': the multipliers are not computed in generalized "
                           "speeds (use --no-speeds)", what, qd_expr_name(syms[i]), text);
@@ -352,8 +404,8 @@ int cli_sim_input(cli_sim *c, const char *const *list, size_t i) {
 }
 
 /* "g1 = g2, guard > 0, guard < 0, ...": g = g1 - g2, guards as a - b > 0. */
-static int add_event(cli_sim *c, const char *text, bool stop) {
-    const char *what = stop ? "--stop-at" : "--event";
+static int add_event(cli_sim *c, const char *text, bool stop, const char *label) {
+    const char *what = label ? label : stop ? "--stop-at" : "--event";
     const qd_expr *g = NULL, *guards[QD_SIM_MAX_LIST];
     size_t ng = 0;
     for (const char *p = text; *p;) {
@@ -690,7 +742,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = QD_EXIT_USAGE;
     }
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->nevents; i++)
-        rc = add_event(c, a->events[i], a->event_stop[i]);
+        rc = add_event(c, a->events[i], a->event_stop[i], a->event_label[i]);
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
     if (rc == QD_EXIT_OK && qd_sim_inputs_ready(c->s, c->opts.t0, c->opts.t_end) != QD_OK) {
@@ -748,4 +800,29 @@ int cli_sim_fail(cli_sim *c, qd_status st) {
  * what a sweep's max:EXPR, min:EXPR and escape:EXPR>VALUE measure. */
 int cli_sim_output(cli_sim *c, const char *expr) {
     return add_outputs(c, expr);
+}
+
+int cli_sim_output_in(cli_sim *c, const char *what, const char *full, size_t a, size_t b) {
+    const qd_expr *x = read_expr_in(c, what, full, full + a, full + b);
+    if (!x)
+        return QD_EXIT_USAGE;
+    char *name = malloc(b - a + 1);
+    if (!name)
+        return QD_EXIT_FAIL;
+    memcpy(name, full + a, b - a);
+    name[b - a] = '\0';
+    int rc = qd_sim_add_output(c->s, name, x) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+    free(name);
+    return rc;
+}
+
+int cli_sim_crossing_in(cli_sim *c, const char *what, const char *full, size_t a0, size_t a1,
+                        size_t b0, size_t b1) {
+    const qd_expr *l = read_expr_in(c, what, full, full + a0, full + a1);
+    const qd_expr *r = l ? read_expr_in(c, what, full, full + b0, full + b1) : NULL;
+    if (!l || !r)
+        return QD_EXIT_USAGE;
+    if (qd_sim_add_event(c->s, qd_sub(c->ctx, l, r), 0, NULL, false) != QD_OK)
+        return cli_diag_ctx(c->ctx);
+    return QD_EXIT_OK;
 }
