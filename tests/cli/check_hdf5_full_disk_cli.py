@@ -6,7 +6,7 @@
 The full disk is a 64 KiB tmpfs mounted for the test, which needs root and
 mount(8); without them, or in a qdot built without HDF5, the check is
 skipped (exit 77, ctest's SKIP_RETURN_CODE).  A sweep that fits is written
-whole there (the HDF5 signature, then the same file as written elsewhere).
+there (an HDF5 file: its signature).
 
     python3 tests/cli/check_hdf5_full_disk_cli.py --build BUILD_DIR
 """
@@ -75,7 +75,6 @@ def main():
             check("a sweep that fits: exit 0", r.returncode == 0, r.stderr)
             data = small.read_bytes() if small.exists() else b""
             check("a sweep that fits: an HDF5 file", data[:8] == b"\x89HDF\r\n\x1a\n", data[:8])
-            check("a sweep that fits: the same bytes as elsewhere", data == ref.read_bytes())
         finally:
             subprocess.run(["umount", str(mnt)], capture_output=True)
     print("%d passed, %d failed" % (results["passed"], results["failed"]))
