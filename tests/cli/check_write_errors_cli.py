@@ -62,7 +62,7 @@ def commands(osc):
         ["simulate", osc, "--t-end", "100", "--dt", "0.01", "--method", "verlet"],
         ["poincare", dp, "--section", "theta1=0", "--n", "3"],
         ["lyapunov", osc, "--t-end", "10"],
-        ["codegen", osc],
+        ["codegen", osc, "-o", osc.parent],  # prints "wrote FILE"
         ["equilibria", osc],
         ["linearize", osc],
         ["modes", osc],
