@@ -8,12 +8,14 @@
 #include "cli.h"
 
 #include <math.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "animate.h"
 #include "progress.h"
+#include "out.h"
 #include "sim_cli.h"
 
 static const char usage_text[] =
@@ -345,17 +347,14 @@ static int scene_points(cli_sim *c, an_scene *s, const an_args *p) {
 }
 
 static int write_page(const an_scene *s, const char *path) {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        cli_diag_error("cannot write '%s'", path);
-        return QD_EXIT_USAGE;
-    }
-    int rc = cli_animate_write(f, s);
-    if (fclose(f) != 0 && rc == QD_EXIT_OK) {
-        cli_diag_error("cannot write '%s'", path);
-        rc = QD_EXIT_FAIL;
-    }
-    return rc;
+    int rc = QD_EXIT_OK;
+    FILE *f = cli_out_open(path, &rc);
+    if (!f)
+        return rc;
+    rc = cli_animate_write(f, s);
+    int err = ferror(f) ? errno : 0;
+    int crc = cli_out_close(f, path, err);
+    return rc != QD_EXIT_OK && !err ? rc : crc;
 }
 
 int cli_cmd_animate(int argc, char **argv) {

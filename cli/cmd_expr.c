@@ -19,8 +19,14 @@ static int parse_args(int argc, char **argv, expr_args *a, size_t min_vars, cons
     a->text = NULL;
     a->nvars = 0;
     a->fmt = QD_FMT_TEXT;
+    bool has_format = false;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--format")) {
+            if (has_format) {
+                cli_diag_error("--format is given twice; give it once");
+                return QD_EXIT_USAGE;
+            }
+            has_format = true;
             if (i + 1 >= argc || !cli_format(argv[i + 1], &a->fmt)) {
                 cli_diag_error("--format takes text, latex, c or sympy");
                 return QD_EXIT_USAGE;

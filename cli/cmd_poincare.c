@@ -8,10 +8,12 @@
 #include "cli.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "out.h"
 #include "progress.h"
 #include "sim_cli.h"
 
@@ -37,6 +39,9 @@ typedef struct pc_out {
     bool header;
     double t0, t_end;
     cli_progress bar;
+    bool wfailed;  /* a row could not be written: the run was stopped */
+    int werr;      /* its errno */
+    double last_t; /* the time of the last whole row */
 } pc_out;
 
 /* Done is the larger of the crossings found and the time used up. */
@@ -57,7 +62,7 @@ static int sink(void *data, int event, const double *row) {
     }
     progress(o, row[0]);
     if (event != 0) /* samples, and the rows of the model's impacts */
-        return 0;
+        return cli_interrupted();
     char num[QD_DOUBLE_MAX];
     for (size_t i = 0; i < o->ncols; i++) {
         if (i)
@@ -65,7 +70,13 @@ static int sink(void *data, int event, const double *row) {
         fwrite(num, 1, qd_double_format(num, row[i]), o->f);
     }
     fputc('\n', o->f);
-    return ++o->got >= o->want;
+    if (ferror(o->f)) { /* the data is lost: stop the run */
+        o->wfailed = true;
+        o->werr = errno;
+        return 1;
+    }
+    o->last_t = row[0];
+    return ++o->got >= o->want || cli_interrupted(); /* ^C: after a whole row */
 }
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
@@ -142,6 +153,7 @@ int cli_cmd_poincare(int argc, char **argv) {
     }
     p.a.events[0] = p.section;
     p.a.event_stop[0] = false;
+    p.a.event_label[0] = "--section";
     p.a.nevents = 1;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &p.a);
@@ -149,10 +161,8 @@ int cli_cmd_poincare(int argc, char **argv) {
     size_t ncols = rc == QD_EXIT_OK ? qd_sim_columns(c.s, c.opts.method, NULL, 0) : 0;
     const char **names = rc == QD_EXIT_OK ? malloc((ncols + 1) * sizeof *names) : NULL;
     FILE *f = NULL;
-    if (rc == QD_EXIT_OK && p.a.out && !(f = fopen(p.a.out, "w"))) {
-        cli_diag_error("cannot write '%s'", p.a.out);
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && p.a.out)
+        f = cli_out_open(p.a.out, &rc);
     cli_plot_rows rows = {.ncols = ncols};
     cli_plot_pick pick; /* --plot: its columns named before the run */
     if (rc == QD_EXIT_OK && names && p.a.plot.file)
@@ -164,10 +174,21 @@ int cli_cmd_poincare(int argc, char **argv) {
         o.plot = p.a.plot.file ? &rows : NULL;
         qd_sim_stats st;
         cli_progress_start(&o.bar, "poincare");
+        cli_interrupt_begin();
         qd_status s = qd_sim_run(c.s, &c.opts, sink, &o, &st, NULL);
+        bool interrupted = cli_interrupted();
+        cli_interrupt_end();
         cli_progress_end(&o.bar);
-        if (s != QD_OK) {
+        int wrc = cli_out_close(o.f, f ? p.a.out : "standard output", o.werr);
+        f = NULL; /* closed */
+        if (wrc != QD_EXIT_OK) {
+            rc = wrc;
+        } else if (s != QD_OK) {
             rc = cli_sim_fail(&c, s);
+        } else if (interrupted) {
+            fprintf(stderr, "qdot: poincare: interrupted at t = %.17g after %zu crossings; the "
+                            "rows written are whole\n", o.last_t, o.got);
+            rc = CLI_EXIT_INTERRUPTED;
         } else {
             fprintf(stderr, "qdot: poincare: %s, %zu crossings by t = %g: %zu steps, %zu "
                             "evaluations, %zu rejected; energy error %.3g\n",

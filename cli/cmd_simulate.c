@@ -25,6 +25,7 @@
 
 #include "json.h"
 #include "model_cli.h"
+#include "out.h"
 #include "qdot/lyapunov.h"
 #include "progress.h"
 #include "sim_cli.h"
@@ -61,6 +62,9 @@ typedef struct sim_out {
     bool header;
     char *line;           /* one CSV row */
     cli_plot_rows *plot;  /* --plot: every row kept, or NULL */
+    int werr;             /* the errno of the first failed write, or 0 */
+    bool wfailed;         /* a row could not be written: the run was stopped */
+    double last_t;        /* the time of the last whole row */
 } sim_out;
 
 static void write_header(sim_out *o) {
@@ -88,7 +92,10 @@ static int sink(void *data, int event, const double *row) {
         if (o->events)
             k += (size_t)snprintf(o->line + k, 16, ",%d", event + 1);
         o->line[k++] = '\n';
-        fwrite(o->line, 1, k, o->csv);
+        if (ferror(o->csv) || !cli_out_write(o->csv, o->line, k, &o->werr)) {
+            o->wfailed = true; /* the data is lost: stop the run */
+            return 1;
+        }
     } else if (o->json) {
         cli_json_begin_array(o->json);
         for (size_t i = 0; i < o->ncols; i++)
@@ -97,8 +104,9 @@ static int sink(void *data, int event, const double *row) {
             cli_json_number(o->json, event + 1);
         cli_json_end_array(o->json);
     }
+    o->last_t = row[0];
     cli_progress_update(&o->bar, (row[0] - o->t0) / (o->t_end - o->t0), row[0]);
-    return 0;
+    return cli_interrupted(); /* ^C: stop after a whole row */
 }
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
@@ -549,12 +557,12 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
                  .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .names = names, .line = line};
     FILE *file = NULL;
-    if (a->out && !(file = fopen(a->out, "w"))) {
-        cli_diag_error("cannot write '%s'", a->out);
+    int orc = QD_EXIT_OK;
+    if (a->out && !(file = cli_out_open(a->out, &orc))) {
         free(names);
         free(final);
         free(line);
-        return QD_EXIT_USAGE;
+        return orc;
     }
     qd_buf jb = QD_BUF_INIT;
     cli_json j;
@@ -580,15 +588,26 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     }
     cli_progress_start(&o.bar, "simulate");
     qd_sim_stats st;
+    cli_interrupt_begin();
     qd_status s = qd_sim_run(c->s, &c->opts, sink, &o, &st, final);
+    bool interrupted = cli_interrupted();
+    cli_interrupt_end();
     double wall = cli_progress_end(&o.bar);
     if (o.json)
         cli_json_end_array(&j);
-    if (file)
-        fclose(file);
     int rc = QD_EXIT_OK;
-    if (s != QD_OK) {
+    /* the rows' file closed and checked first: lost rows fail the run */
+    if (o.csv && cli_out_close(o.csv, file ? a->out : "standard output", o.werr) != QD_EXIT_OK)
+        rc = QD_EXIT_FAIL;
+    if (rc != QD_EXIT_OK) {
+        if (s != QD_OK && !o.wfailed)
+            cli_sim_fail(c, s);
+    } else if (s != QD_OK) {
         rc = cli_sim_fail(c, s);
+    } else if (interrupted) {
+        fprintf(stderr, "qdot: simulate: interrupted at t = %.17g; the rows written are whole, "
+                        "up to that time\n", o.last_t);
+        rc = CLI_EXIT_INTERRUPTED;
     } else {
         fprintf(stderr,
                 "qdot: simulate: %s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, "

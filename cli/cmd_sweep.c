@@ -11,6 +11,7 @@
 #include "cli.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
@@ -19,6 +20,7 @@
 
 #include "json.h"
 #include "model_cli.h"
+#include "out.h"
 #include "progress.h"
 #include "sim_cli.h"
 #include "sweep_hdf5.h"
@@ -33,6 +35,11 @@ static const char usage_text[] =
     "[--map-measure NAME]] [simulate options: --method, --rtol, --dt, --set, "
     "--initial, --native, ...]";
 
+/* escape:EXPR>VALUE in the --measure text: EXPR at [e0, e1), VALUE at [v0, v1). */
+typedef struct sweep_escape {
+    size_t e0, e1, v0, v1;
+} sweep_escape;
+
 typedef struct sweep_args {
     cli_sim_args sim;
     const char *grid, *random, *list, *measure, *section, *format;
@@ -40,7 +47,7 @@ typedef struct sweep_args {
     double renorm, transient; /* the lyapunov measures */
     bool has_n;
     size_t nuser;          /* --event and --stop-at: the first is the measure event's */
-    char *escapes[QD_SIM_MAX_LIST]; /* "EXPR = VALUE" of each escape:EXPR>VALUE */
+    sweep_escape escapes[QD_SIM_MAX_LIST]; /* each escape:EXPR>VALUE */
     size_t nescapes;
     cli_sweep_map map;     /* --map FILE.png, --map-measure NAME */
 } sweep_args;
@@ -188,7 +195,7 @@ static int measure_outputs(cli_sim *c, const char *spec) {
                 return QD_EXIT_FAIL;
             memcpy(x, spec + a, b - a);
             x[b - a] = '\0';
-            int rc = is_column(c, x) ? QD_EXIT_OK : cli_sim_output(c, x);
+            int rc = is_column(c, x) ? QD_EXIT_OK : cli_sim_output_in(c, "--measure", spec, a, b);
             free(x);
             if (rc != QD_EXIT_OK)
                 return rc;
@@ -226,32 +233,39 @@ static int more_events(sweep_args *a) {
         cli_diag_error("the measure poincare-count needs --section");
         return QD_EXIT_USAGE;
     }
-    if (a->section)
+    if (a->section) {
+        a->sim.event_label[a->sim.nevents] = "--section";
         a->sim.events[a->sim.nevents++] = a->section;
+    }
     const char *spec = a->measure;
     for (size_t p = 0; spec[p];) {
         size_t e = cli_item_end(spec, p), x0, x1, h = p;
         while (isspace((unsigned char)spec[h]))
             h++;
         if (!strncmp(spec + h, "escape", 6) && measure_expr(spec, p, e, &x0, &x1)) {
-            if (a->sim.nevents == QD_SIM_MAX_LIST) {
+            if (a->sim.nevents + a->nescapes == QD_SIM_MAX_LIST) {
                 cli_diag_error("at most %d events with the escapes", QD_SIM_MAX_LIST);
                 return QD_EXIT_USAGE;
             }
-            /* EXPR, then the value after its '>' or '<' */
+            /* EXPR, then the value after its '>' or '<' (added by escape_events) */
             size_t v = x1;
             while (v < e && spec[v] != '>' && spec[v] != '<')
                 v++;
-            int len = (int)(x1 - x0), vlen = (int)(e - v - (v < e));
-            char *ev = malloc((size_t)len + (size_t)vlen + 8);
-            if (!ev)
-                return QD_EXIT_FAIL;
-            snprintf(ev, (size_t)len + (size_t)vlen + 8, "%.*s = %.*s", len, spec + x0, vlen,
-                     spec + v + 1);
-            a->escapes[a->nescapes++] = ev;
-            a->sim.events[a->sim.nevents++] = ev;
+            a->escapes[a->nescapes++] = (sweep_escape){x0, x1, v + (v < e), e};
         }
         p = spec[e] ? e + 1 : e;
+    }
+    return QD_EXIT_OK;
+}
+
+/* The escapes' events, after the user's and the section, read in the
+ * --measure text (errors shown there, where the user wrote them). */
+static int escape_events(cli_sim *c, const sweep_args *a) {
+    for (size_t k = 0; k < a->nescapes; k++) {
+        const sweep_escape *x = &a->escapes[k];
+        int rc = cli_sim_crossing_in(c, "--measure", a->measure, x->e0, x->e1, x->v0, x->v1);
+        if (rc != QD_EXIT_OK)
+            return rc;
     }
     return QD_EXIT_OK;
 }
@@ -311,20 +325,23 @@ static int list_row(list_csv *l, char *line, const char *path, size_t lineno) {
 }
 
 static int list_read(const char *path, list_csv *l) {
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        cli_diag_error("cannot read '%s'", path);
-        return QD_EXIT_USAGE;
-    }
+    int rc = QD_EXIT_OK;
+    FILE *f = cli_in_open(path, &rc);
+    if (!f)
+        return rc;
     char line[4096];
     size_t lineno = 0;
-    int rc = QD_EXIT_OK;
+    errno = 0;
     while (rc == QD_EXIT_OK && fgets(line, sizeof line, f)) {
         lineno++;
         line[strcspn(line, "\r\n")] = '\0';
         if (!line[strspn(line, " \t")])
             continue;
         rc = l->nnames ? list_row(l, line, path, lineno) : list_header(l, line);
+    }
+    if (rc == QD_EXIT_OK && ferror(f)) {
+        cli_diag_error("cannot read %s: %s", path, strerror(errno ? errno : EIO));
+        rc = QD_EXIT_USAGE;
     }
     fclose(f);
     if (rc == QD_EXIT_OK && !l->nrows) {
@@ -473,7 +490,7 @@ static int write_hdf5(const sweep_args *a, const sweep_result *r) {
     if (cli_hdf5_write_sweep(a->sim.out, &h, err, sizeof err))
         return QD_EXIT_OK;
     cli_diag_error("%s", err);
-    return QD_EXIT_USAGE;
+    return QD_EXIT_FAIL;
 }
 
 /* Before the runs: hdf5 is written to a file, by a qdot built with HDF5. */
@@ -495,15 +512,14 @@ static int check_output(const sweep_args *a, size_t fmt) {
 static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) {
     if (!formats[fmt].write)
         return write_hdf5(a, r);
-    FILE *f = a->sim.out ? fopen(a->sim.out, "w") : stdout;
-    if (!f) {
-        cli_diag_error("cannot write '%s'", a->sim.out);
-        return QD_EXIT_USAGE;
-    }
-    int rc = formats[fmt].write(f, r);
-    if (f != stdout && fclose(f) != 0)
-        rc = QD_EXIT_FAIL;
-    return rc;
+    int rc = QD_EXIT_OK;
+    FILE *f = a->sim.out ? cli_out_open(a->sim.out, &rc) : stdout;
+    if (!f)
+        return rc;
+    rc = formats[fmt].write(f, r);
+    int err = ferror(f) ? errno : 0;
+    int crc = cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err);
+    return rc != QD_EXIT_OK ? rc : crc;
 }
 
 static void summary(const sweep_result *r, unsigned threads, int ranks) {
@@ -582,7 +598,9 @@ static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly
 }
 
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
-    int rc = measure_outputs(c, a->measure);
+    int rc = escape_events(c, a);
+    if (rc == QD_EXIT_OK)
+        rc = measure_outputs(c, a->measure);
     if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_new(c->ctx, c->s, c->mf.model) : NULL;
@@ -623,7 +641,5 @@ int cli_cmd_sweep(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = sweep(&c, &a, fmt);
     cli_sim_free(&c);
-    for (size_t k = 0; k < a.nescapes; k++)
-        free(a.escapes[k]);
     return rc;
 }

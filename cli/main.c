@@ -3,7 +3,9 @@
  */
 #include "cli.h"
 #include "lqr_cli.h"
+#include "out.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 static const cli_cmd commands[] = {
@@ -80,7 +82,25 @@ static void usage(FILE *out) {
                  "See docs/cli.md and docs/language.md.\n");
 }
 
+/* Standard output is closed once, checked: in main after the command, or
+ * here when a command ended the program with exit() (--help). */
+static bool stdout_closed;
+
+static void close_stdout_at_exit(void) {
+    if (!stdout_closed && cli_close_stdout(QD_EXIT_OK) != QD_EXIT_OK)
+        _Exit(QD_EXIT_FAIL);
+}
+
+static int run(int argc, char **argv);
+
 int main(int argc, char **argv) {
+    atexit(close_stdout_at_exit);
+    int rc = run(argc, argv);
+    stdout_closed = true;
+    return cli_close_stdout(rc);
+}
+
+static int run(int argc, char **argv) {
     if (argc < 2) {
         usage(stderr);
         return QD_EXIT_USAGE;

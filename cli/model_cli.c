@@ -66,6 +66,12 @@ int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *set
         int rc = cli_state_read_set(ctx, sets[i], names[i], sizeof names[i], &given[i].value);
         if (rc != QD_EXIT_OK)
             return rc;
+        for (size_t k = 0; k < i; k++)
+            if (!strcmp(names[k], names[i])) {
+                cli_diag_error("--set: %s is given twice ('%s', then '%s'); give it once",
+                               names[i], sets[k], sets[i]);
+                return QD_EXIT_USAGE;
+            }
         given[i].name = names[i];
     }
     qd_model_opts opts = {.params = given, .nparams = nsets, .fix_params = fix};

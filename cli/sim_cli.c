@@ -26,15 +26,41 @@
 #include "model_cli.h"
 #include "qdot/codegen.h"
 
-static int number(const char *opt, const char *v, double *out, bool positive) {
+/* A number, or (text) a constant expression in the model's parameters
+ * ("2*pi/w"), read with the model by option_value. */
+static int number(const char *opt, const char *v, double *out, bool positive, const char **text) {
     char *end;
     double x = strtod(v, &end);
+    if (text && (end == v || *end || !isfinite(x))) {
+        *text = v;
+        return 1;
+    }
+    if (text)
+        *text = NULL;
     if (end == v || *end || !isfinite(x) || (positive && !(x > 0))) {
         cli_diag_error("%s takes a %snumber, not '%s'", opt, positive ? "positive " : "", v);
         return QD_EXIT_USAGE + 100;
     }
     *out = x;
     return 1;
+}
+
+/* The value of opt given as an expression text (NULL: *out as given),
+ * read against the model: errors shown in the option's text with a caret. */
+static int option_value(cli_sim *c, const char *opt, const char *text, bool positive,
+                        double *out) {
+    if (!text)
+        return QD_EXIT_OK;
+    if (qd_model_number(c->ctx, c->mf.model, text, out) != QD_OK) {
+        const qd_diag *d = qd_ctx_diag(c->ctx);
+        cli_diag_show(opt, text, d);
+        return qd_ctx_status(c->ctx) == QD_ERR_NOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
+    }
+    if (positive && !(*out > 0)) {
+        cli_diag_error("%s takes a positive number; '%s' is %.17g", opt, text, *out);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
 }
 
 static int push(const char **list, size_t *n, const char *v, const char *opt) {
@@ -63,21 +89,21 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
     }
     if ((v = cli_value(argc, argv, i, "--t-end"))) {
         a->has_t_end = true;
-        return number("--t-end", v, &a->t_end, false);
+        return number("--t-end", v, &a->t_end, false, &a->t_end_text);
     }
     if ((v = cli_value(argc, argv, i, "--dt"))) {
         a->has_dt = true;
-        return number("--dt", v, &a->dt, true);
+        return number("--dt", v, &a->dt, true, &a->dt_text);
     }
     if ((v = cli_value(argc, argv, i, "--rtol"))) {
         a->has_rtol = true;
-        return number("--rtol", v, &a->rtol, true);
+        return number("--rtol", v, &a->rtol, true, &a->rtol_text);
     }
     if ((v = cli_value(argc, argv, i, "--atol")))
-        return number("--atol", v, &a->atol, true);
+        return number("--atol", v, &a->atol, true, &a->atol_text);
     if ((v = cli_value(argc, argv, i, "--max-steps"))) {
         double x = 0;
-        int rc = number("--max-steps", v, &x, true);
+        int rc = number("--max-steps", v, &x, true, NULL);
         if (rc == 1 && x != floor(x)) {
             cli_diag_error("--max-steps takes a whole number, not '%s'", v);
             return QD_EXIT_USAGE + 100;
@@ -189,7 +215,41 @@ static bool is_input(const cli_sim *c, const qd_expr *x) {
     return false;
 }
 
+/* An error at text[at, at + len) of the user's option text full. */
+static void located(const char *what, const char *full, size_t at, size_t len, const char *msg,
+                    const char *hint) {
+    qd_read_error err;
+    memset(&err, 0, sizeof err);
+    err.status = QD_ERR_ARG;
+    err.offset = at;
+    err.length = len ? len : 1;
+    snprintf(err.message, sizeof err.message, "%s", msg);
+    snprintf(err.hint, sizeof err.hint, "%s", hint);
+    cli_diag_read(what, full, &err);
+}
+
+/* Where name stands in [a, b) as a whole word, or a. */
+static const char *word_in(const char *a, const char *b, const char *name) {
+    size_t n = strlen(name);
+    for (const char *p = a; n && p + n <= b; p++)
+        if (!strncmp(p, name, n) && (p == a || !(isalnum((unsigned char)p[-1]) || p[-1] == '_')) &&
+            (p + n == b || !(isalnum((unsigned char)p[n]) || p[n] == '_')))
+            return p;
+    return a;
+}
+
+/* text[a, b) read against the model; full: the option text the user wrote
+ * that [a, b) lies in (errors are shown in it, at their place), or NULL
+ * (shown in [a, b) itself). */
+static const qd_expr *read_expr_in(cli_sim *c, const char *what, const char *full, const char *a,
+                                   const char *b);
+
 static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, const char *b) {
+    return read_expr_in(c, what, NULL, a, b);
+}
+
+static const qd_expr *read_expr_in(cli_sim *c, const char *what, const char *full, const char *a,
+                                   const char *b) {
     trim(&a, &b);
     size_t len = (size_t)(b - a);
     char *text = malloc(len + 1);
@@ -211,7 +271,12 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
     if (!x)
         x = qd_read(c->ctx, text, &opts, &err);
     if (!x) {
-        cli_diag_read(what, text, &err);
+        if (full) {
+            err.offset += (size_t)(a - full);
+            cli_diag_read(what, full, &err);
+        } else {
+            cli_diag_read(what, text, &err);
+        }
         free(text);
         return NULL;
     }
@@ -223,6 +288,19 @@ static const qd_expr *read_expr(cli_sim *c, const char *what, const char *a, con
             is_momentum(c, syms[i]) || is_input(c, syms[i]))
             continue;
         const qd_expr *d = definition(c, qd_expr_name(syms[i]));
+        const char *nm = qd_expr_name(syms[i]);
+        if (!d && full) {
+            char msg[256];
+            snprintf(msg, sizeof msg, "%s '%s'", speeds_multiplier(c, nm)
+                     ? "the multipliers are not computed in generalized speeds (use --no-speeds):"
+                     : "unknown name", nm);
+            const char *at = word_in(a, b, nm);
+            located(what, full, (size_t)(at - full), strlen(nm), msg,
+                    "use coordinates, velocities q', t, parameters, the model's definitions "
+                    "and the multipliers lambda_<constraint>");
+            x = NULL;
+            break;
+        }
         if (!d && speeds_multiplier(c, qd_expr_name(syms[i]))) {
             cli_diag_error("%s: '%s' in '%s': the multipliers are not computed in generalized "
                           "speeds (use --no-speeds)", what, qd_expr_name(syms[i]), text);
@@ -326,8 +404,8 @@ int cli_sim_input(cli_sim *c, const char *const *list, size_t i) {
 }
 
 /* "g1 = g2, guard > 0, guard < 0, ...": g = g1 - g2, guards as a - b > 0. */
-static int add_event(cli_sim *c, const char *text, bool stop) {
-    const char *what = stop ? "--stop-at" : "--event";
+static int add_event(cli_sim *c, const char *text, bool stop, const char *label) {
+    const char *what = label ? label : stop ? "--stop-at" : "--event";
     const qd_expr *g = NULL, *guards[QD_SIM_MAX_LIST];
     size_t ng = 0;
     for (const char *p = text; *p;) {
@@ -522,6 +600,16 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
 
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
     qd_sim_opts *o = &c->opts;
+    double t_end = a->t_end, dt = a->dt, rtol = a->rtol, atol = a->atol;
+    int rc = option_value(c, "--t-end", a->t_end_text, false, &t_end);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--dt", a->dt_text, true, &dt);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--rtol", a->rtol_text, true, &rtol);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--atol", a->atol_text, true, &atol);
+    if (rc != QD_EXIT_OK)
+        return rc;
     if (a->has_dt && a->has_rtol && !a->method_name) {
         cli_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method");
         return QD_EXIT_USAGE;
@@ -530,9 +618,9 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
         qd_sim_method_from_name(a->method_name, &o->method);
     else
         o->method = qd_sim_default_method(c->s, a->has_dt);
-    o->dt = a->has_dt ? a->dt : 0;
-    o->rtol = a->has_rtol ? a->rtol : 0;
-    o->atol = a->atol;
+    o->dt = a->has_dt ? dt : 0;
+    o->rtol = a->has_rtol ? rtol : 0;
+    o->atol = atol;
     o->no_project = a->no_project;
     o->max_steps = a->max_steps;
     o->precision = a->precision;
@@ -541,7 +629,7 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_USAGE;
     }
     o->t0 = c->st.vals[2 * qd_model_ncoords(c->mf.model)];
-    o->t_end = a->t_end;
+    o->t_end = t_end;
     o->q0 = c->q0;
     o->qd0 = c->qd0;
     o->p0 = c->p0;
@@ -654,7 +742,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = QD_EXIT_USAGE;
     }
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->nevents; i++)
-        rc = add_event(c, a->events[i], a->event_stop[i]);
+        rc = add_event(c, a->events[i], a->event_stop[i], a->event_label[i]);
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
     if (rc == QD_EXIT_OK && qd_sim_inputs_ready(c->s, c->opts.t0, c->opts.t_end) != QD_OK) {
@@ -712,4 +800,29 @@ int cli_sim_fail(cli_sim *c, qd_status st) {
  * what a sweep's max:EXPR, min:EXPR and escape:EXPR>VALUE measure. */
 int cli_sim_output(cli_sim *c, const char *expr) {
     return add_outputs(c, expr);
+}
+
+int cli_sim_output_in(cli_sim *c, const char *what, const char *full, size_t a, size_t b) {
+    const qd_expr *x = read_expr_in(c, what, full, full + a, full + b);
+    if (!x)
+        return QD_EXIT_USAGE;
+    char *name = malloc(b - a + 1);
+    if (!name)
+        return QD_EXIT_FAIL;
+    memcpy(name, full + a, b - a);
+    name[b - a] = '\0';
+    int rc = qd_sim_add_output(c->s, name, x) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+    free(name);
+    return rc;
+}
+
+int cli_sim_crossing_in(cli_sim *c, const char *what, const char *full, size_t a0, size_t a1,
+                        size_t b0, size_t b1) {
+    const qd_expr *l = read_expr_in(c, what, full, full + a0, full + a1);
+    const qd_expr *r = l ? read_expr_in(c, what, full, full + b0, full + b1) : NULL;
+    if (!l || !r)
+        return QD_EXIT_USAGE;
+    if (qd_sim_add_event(c->s, qd_sub(c->ctx, l, r), 0, NULL, false) != QD_OK)
+        return cli_diag_ctx(c->ctx);
+    return QD_EXIT_OK;
 }

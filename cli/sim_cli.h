@@ -20,11 +20,16 @@ typedef struct cli_sim_args {
     size_t nsets;
     const char *events[QD_SIM_MAX_LIST];
     bool event_stop[QD_SIM_MAX_LIST];
+    const char *event_label[QD_SIM_MAX_LIST]; /* the option it came from (--section), or
+                                               * NULL: --event or --stop-at */
     size_t nevents;
     const char *inputs[QD_SIM_MAX_LIST]; /* --input "F = EXPR" or F=FILE.csv */
     size_t ninputs;
     const char *about, *lqr; /* --input "F = lqr": the operating point, the weights */
     double t_end, dt, rtol, atol;
+    /* the same given as expressions in the parameters ("2*pi/w"): read
+     * once the model is loaded (cli_sim_setup), else NULL */
+    const char *t_end_text, *dt_text, *rtol_text, *atol_text;
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
     bool no_speeds;    /* a model with speeds: the multiplier form instead */
     size_t max_steps;
@@ -79,6 +84,14 @@ int cli_sim_input_lqr(cli_sim *c, const char *name);
 /* qdot sweep: one more output column EXPR (read as --output reads it,
  * named by its text), before qd_sim_compile; an exit status. */
 int cli_sim_output(cli_sim *c, const char *expr);
+
+/* The same for text full[a, b) of a user's option what (--measure): errors
+ * shown in full, at their place. */
+int cli_sim_output_in(cli_sim *c, const char *what, const char *full, size_t a, size_t b);
+/* An event (no guards, not stopping) where full[a0, a1) crosses full[b0,
+ * b1), read as --event reads them, errors shown in full; an exit status. */
+int cli_sim_crossing_in(cli_sim *c, const char *what, const char *full, size_t a0, size_t a1,
+                        size_t b0, size_t b1);
 
 /* Print a failed run's message; exit status 1. */
 int cli_sim_fail(cli_sim *c, qd_status st);

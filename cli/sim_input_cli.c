@@ -4,6 +4,7 @@
  * table (qd_sim_input_table: linear interpolation, the run's span covered).
  */
 #include "cli.h"
+#include "out.h"
 #include "sim_cli.h"
 
 #include <errno.h>
@@ -59,14 +60,13 @@ static int parse_row(const char *line, double *t, double *v) {
 }
 
 static int read_table(const char *path, table *tb) {
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        cli_diag_error("--input: cannot open '%s': %s", path, strerror(errno));
-        return QD_EXIT_USAGE;
-    }
+    int rc = QD_EXIT_OK;
+    FILE *f = cli_in_open(path, &rc);
+    if (!f)
+        return rc;
     char line[512];
     size_t lineno = 0;
-    int rc = QD_EXIT_OK;
+    errno = 0;
     while (rc == QD_EXIT_OK && fgets(line, sizeof line, f)) {
         double t, v;
         int r = parse_row(line, &t, &v);
@@ -80,6 +80,10 @@ static int read_table(const char *path, table *tb) {
             cli_diag_error("out of memory");
             rc = QD_EXIT_FAIL;
         }
+    }
+    if (rc == QD_EXIT_OK && ferror(f)) {
+        cli_diag_error("cannot read %s: %s", path, strerror(errno ? errno : EIO));
+        rc = QD_EXIT_USAGE;
     }
     fclose(f);
     return rc;

@@ -2,7 +2,10 @@
  * cli/sweep_hdf5.c - the writer behind qdot sweep --format hdf5 (the layout
  * is in sweep_hdf5.h).  Every HDF5 handle is closed on every path; HDF5's
  * own error stack printing is off, so a failure reads as one qdot message.
+ * The file is built in memory and written by qdot's own checked writes; a
+ * failed write removes the partial file.
  */
+#define _POSIX_C_SOURCE 200809L
 #include "sweep_hdf5.h"
 
 #include <stdio.h>
@@ -20,8 +23,11 @@ bool cli_hdf5_write_sweep(const char *path, const cli_h5_sweep *s, char *err, si
 
 #else
 
+#include <errno.h>
 #include <hdf5.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
 #include "qdot/qdot.h"
 
 bool cli_hdf5_built(void) { return true; }
@@ -110,19 +116,73 @@ static bool put_root_attrs(hid_t file, const cli_h5_sweep *s) {
     return ok;
 }
 
+/* The file built in memory (HDF5's core driver, no backing store): HDF5
+ * itself never writes to the disk, so a full disk cannot leave it with a
+ * file it failed to flush (which crashed at exit).  NULL on failure. */
+static void *build_image(const cli_h5_sweep *s, size_t *size) {
+    void *image = NULL;
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    if (fapl < 0)
+        return NULL;
+    hid_t file = H5Pset_fapl_core(fapl, 1 << 20, 0) >= 0
+                     ? H5Fcreate("qdot-sweep.h5", H5F_ACC_TRUNC, H5P_DEFAULT, fapl)
+                     : -1;
+    H5Pclose(fapl);
+    if (file < 0)
+        return NULL;
+    bool ok = put_runs(file, s) && put_status(file, s) && put_root_attrs(file, s) &&
+              H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0;
+    ssize_t n = ok ? H5Fget_file_image(file, NULL, 0) : -1;
+    image = n > 0 ? malloc((size_t)n) : NULL;
+    if (image && H5Fget_file_image(file, image, (size_t)n) != n) {
+        free(image);
+        image = NULL;
+    }
+    if (H5Fclose(file) < 0 && image) {
+        free(image);
+        image = NULL;
+    }
+    *size = image ? (size_t)n : 0;
+    return image;
+}
+
 bool cli_hdf5_write_sweep(const char *path, const cli_h5_sweep *s, char *err, size_t errcap) {
     H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    hid_t file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (file < 0) {
-        snprintf(err, errcap, "cannot write '%s' (HDF5 could not create it)", path);
+    size_t size = 0;
+    void *image = build_image(s, &size);
+    if (!image) {
+        snprintf(err, errcap, "cannot write %s: HDF5 failed to build the file", path);
         return false;
     }
-    bool ok = put_runs(file, s) && put_status(file, s) && put_root_attrs(file, s);
-    if (H5Fclose(file) < 0)
-        ok = false;
-    if (!ok)
-        snprintf(err, errcap, "cannot write '%s' (HDF5 failed while writing)", path);
-    return ok;
+    struct stat sb;
+    if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode)) {
+        free(image);
+        snprintf(err, errcap, "cannot write %s: is a directory", path);
+        return false;
+    }
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+        snprintf(err, errcap, "cannot write %s: %s", path, strerror(errno));
+        free(image);
+        return false;
+    }
+    /* only a regular file is removed when the write fails (never /dev/full) */
+    bool regular = fstat(fileno(f), &sb) == 0 && S_ISREG(sb.st_mode);
+    errno = 0;
+    int e = fwrite(image, 1, size, f) == size ? 0 : errno ? errno : EIO;
+    errno = 0;
+    if (fflush(f) != 0 && !e)
+        e = errno ? errno : EIO;
+    errno = 0;
+    if (fclose(f) != 0 && !e)
+        e = errno ? errno : EIO;
+    free(image);
+    if (!e)
+        return true;
+    if (regular)
+        remove(path); /* a partial file is no file */
+    snprintf(err, errcap, "cannot write %s: %s", path, strerror(e));
+    return false;
 }
 
 #endif

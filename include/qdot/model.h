@@ -329,6 +329,16 @@ QD_API const char *qd_model_contact_normal_constraint(const qd_model *m, size_t 
  * whose constraint need not be written with a unit gradient), else 1. */
 QD_API const qd_expr *qd_model_contact_normal_scale(const qd_model *m, size_t i);
 
+/* ---- numbers in the parameters (issue 30) -----------------------------------
+ *
+ * text, a constant expression in pi, e and m's parameters ("2*pi/w"), read
+ * and evaluated at the parameters' values into *out.  A name that is not a
+ * parameter (a coordinate, t, an unknown one: "did you mean" the nearest),
+ * text that does not read, or a value that is not finite is QD_ERR_ARG
+ * with the error record located in text.  ctx NULL: QD_ERR_ARG and
+ * nothing recorded; m, text or out NULL: QD_ERR_ARG. */
+QD_API qd_status qd_model_number(qd_ctx *ctx, const qd_model *m, const char *text, double *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -16,7 +16,8 @@
  * through, so a caller (a test) can look for a curve where the data puts
  * it.  Failures return a status with the message in the context: an empty
  * plot or series, non-finite numbers (QD_ERR_ARG), an unknown extension
- * (QD_ERR_ARG), a file that cannot be written (QD_ERR_ARG, naming it),
+ * (QD_ERR_ARG), a file that cannot be opened (QD_ERR_ARG, naming it), a
+ * write, flush or close that fails (QD_ERR_IO: "cannot write FILE: reason"),
  * Cairo failing (QD_ERR_NUMERIC).
  */
 #ifndef QDOT_PLOT_H

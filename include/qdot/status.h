@@ -40,7 +40,8 @@ typedef enum qd_status {
     QD_ERR_SINGULAR,   /* a singular matrix */
     QD_ERR_NUMERIC,    /* numerical failure: overflow, step size underflow, no convergence */
     QD_ERR_TOOBIG,     /* a result would exceed a documented size limit */
-    QD_ERR_UNSUPPORTED /* the platform lacks something needed (no C compiler for native code) */
+    QD_ERR_UNSUPPORTED, /* the platform lacks something needed (no C compiler for native code) */
+    QD_ERR_IO          /* a file could not be written (a full disk): errno's reason in the message */
 } qd_status;
 
 /* What an error is about.  index counts from 0 in the model's order (its

@@ -277,12 +277,23 @@ static qd_status draw(const qd_plot *p, cairo_t *cr) {
     return QD_OK;
 }
 
+/* The file a plot is written into, and the errno of its first failed write. */
+typedef struct plot_out {
+    FILE *f;
+    int err;
+} plot_out;
+
 static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned int length) {
-    return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS
-                                                      : CAIRO_STATUS_WRITE_ERROR;
+    plot_out *o = closure;
+    errno = 0;
+    if (fwrite(data, 1, length, o->f) == length)
+        return CAIRO_STATUS_SUCCESS;
+    if (!o->err)
+        o->err = errno ? errno : EIO;
+    return CAIRO_STATUS_WRITE_ERROR;
 }
 
-static cairo_surface_t *open_surface(const qd_plot *p, qd_plot_format fmt, FILE *out) {
+static cairo_surface_t *open_surface(const qd_plot *p, qd_plot_format fmt, plot_out *out) {
     switch (fmt) {
     case QD_PLOT_SVG:
         return cairo_svg_surface_create_for_stream(to_file, out, p->width, p->height);
@@ -294,7 +305,7 @@ static cairo_surface_t *open_surface(const qd_plot *p, qd_plot_format fmt, FILE 
 }
 
 /* Draw onto a surface of the format and finish it into out. */
-static qd_status render(const qd_plot *p, qd_plot_format fmt, FILE *out) {
+static qd_status render(const qd_plot *p, qd_plot_format fmt, plot_out *out) {
     cairo_surface_t *s = open_surface(p, fmt, out);
     cairo_t *cr = cairo_create(s);
     qd_status st = draw(p, cr);
@@ -306,7 +317,7 @@ static qd_status render(const qd_plot *p, qd_plot_format fmt, FILE *out) {
     if (cs == CAIRO_STATUS_SUCCESS)
         cs = cairo_surface_status(s);
     cairo_surface_destroy(s);
-    if (st == QD_OK && cs != CAIRO_STATUS_SUCCESS) {
+    if (st == QD_OK && cs != CAIRO_STATUS_SUCCESS && !out->err) {
         qd_ctx_error(p->ctx, QD_ERR_NUMERIC, "drawing the plot failed: %s",
                      cairo_status_to_string(cs));
         st = QD_ERR_NUMERIC;
@@ -322,15 +333,23 @@ qd_status qd_plot_write(qd_plot *p, const char *path) {
         st = qd_plot_layout(p);
     if (st != QD_OK)
         return st;
-    FILE *out = fopen(path, "wb");
-    if (!out) {
-        qd_ctx_error(p->ctx, QD_ERR_ARG, "cannot write the plot '%s': %s", path, strerror(errno));
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+        qd_ctx_error(p->ctx, QD_ERR_ARG, "cannot write %s: %s", path, strerror(errno));
         return QD_ERR_ARG;
     }
-    st = render(p, fmt, out);
-    if (fclose(out) != 0 && st == QD_OK) {
-        qd_ctx_error(p->ctx, QD_ERR_ARG, "cannot write the plot '%s': %s", path, strerror(errno));
-        st = QD_ERR_ARG;
+    plot_out out = {.f = f};
+    st = render(p, fmt, &out);
+    errno = 0;
+    if (fflush(f) != 0 && !out.err)
+        out.err = errno ? errno : EIO;
+    errno = 0;
+    if (fclose(f) != 0 && !out.err)
+        out.err = errno ? errno : EIO;
+    if (out.err && st == QD_OK) {
+        /* the disk's failure, not the input's (exit 1 in the CLI) */
+        qd_ctx_error(p->ctx, QD_ERR_IO, "cannot write %s: %s", path, strerror(out.err));
+        st = QD_ERR_IO;
     }
     return st;
 }

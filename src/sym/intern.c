@@ -379,6 +379,7 @@ const char *qd_status_str(qd_status st) {
     case QD_ERR_NUMERIC: return "numerical failure";
     case QD_ERR_TOOBIG: return "result too large";
     case QD_ERR_UNSUPPORTED: return "not supported here";
+    case QD_ERR_IO: return "write error";
     }
     return "unknown status";
 }

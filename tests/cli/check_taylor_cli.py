@@ -94,8 +94,8 @@ def native_checks(qdot, tmp, check):
              ('Kepler e = 0.9', tmp / 'kepler.qd', ['--t-end', 20])]
     (tmp / 'kepler.qd').write_text(KEPLER)
     for name, model, extra in cases:
-        args = ['simulate', model, '--method', 'taylor', '--rtol', 1e-15, '--atol', 1e-15,
-                *extra]  # a later --rtol wins
+        rtol = [] if '--rtol' in extra else ['--rtol', 1e-15]  # an option is given once
+        args = ['simulate', model, '--method', 'taylor', *rtol, '--atol', 1e-15, *extra]
         ri = run(qdot, *args, env=cache_env(cache))
         rn = run(qdot, *args, '--native', env=cache_env(cache))
         check(ri[0] == 0 and rn[0] == 0, f'{name}: taylor runs failed: {ri[2]} {rn[2]}')

@@ -1,0 +1,125 @@
+/*
+ * cli/out.c - checked writes and closes (out.h).  A write error (a full
+ * disk, /dev/full, a closed pipe's end) is a failure of the run: the data
+ * is lost, so the exit status says so.
+ */
+#define _GNU_SOURCE
+#include "out.h"
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio_ext.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli.h"
+
+static bool is_dir(const char *path) {
+    struct stat sb;
+    return stat(path, &sb) == 0 && S_ISDIR(sb.st_mode);
+}
+
+FILE *cli_out_open(const char *path, int *rc) {
+    if (is_dir(path)) {
+        cli_diag_error("cannot write %s: is a directory", path);
+        *rc = QD_EXIT_USAGE;
+        return NULL;
+    }
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        cli_diag_error("cannot write %s: %s", path, strerror(errno));
+        *rc = QD_EXIT_USAGE;
+    }
+    return f;
+}
+
+FILE *cli_in_open(const char *path, int *rc) {
+    if (is_dir(path)) {
+        cli_diag_error("cannot read %s: is a directory", path);
+        *rc = QD_EXIT_USAGE;
+        return NULL;
+    }
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        cli_diag_error("cannot read %s: %s", path, strerror(errno));
+        *rc = QD_EXIT_USAGE;
+    }
+    return f;
+}
+
+bool cli_out_write(FILE *f, const void *data, size_t len, int *err) {
+    errno = 0;
+    if (fwrite(data, 1, len, f) == len)
+        return true;
+    if (!*err)
+        *err = errno ? errno : EIO;
+    return false;
+}
+
+static void cannot_write(const char *name, int err) {
+    cli_diag_error("cannot write %s: %s", name, err ? strerror(err) : "write error");
+}
+
+int cli_out_close(FILE *f, const char *name, int err) {
+    errno = 0;
+    bool bad = fflush(f) != 0;
+    if (bad && !err)
+        err = errno;
+    bad = bad || ferror(f) || err;
+    if (f == stdout) {
+        if (bad) {
+            cannot_write("standard output", err);
+            clearerr(f); /* said once: main does not repeat it */
+        }
+        return bad ? QD_EXIT_FAIL : QD_EXIT_OK;
+    }
+    errno = 0;
+    if (fclose(f) != 0) {
+        if (!err)
+            err = errno;
+        bad = true;
+    }
+    if (bad)
+        cannot_write(name, err);
+    return bad ? QD_EXIT_FAIL : QD_EXIT_OK;
+}
+
+int cli_close_stdout(int rc) {
+    /* as gnulib's close_stdout: a stdout closed before qdot ran (>&-) is
+     * an error only when something was to be written to it */
+    bool pending = __fpending(stdout) != 0, failed = ferror(stdout) != 0;
+    errno = 0;
+    bool close_failed = fclose(stdout) != 0;
+    int err = errno;
+    if (failed || (close_failed && (pending || err != EBADF))) {
+        cannot_write("standard output", close_failed ? err : 0);
+        return rc != 0 ? rc : QD_EXIT_FAIL;
+    }
+    return rc;
+}
+
+static volatile sig_atomic_t interrupted;
+static struct sigaction old_int;
+
+static void on_sigint(int sig) {
+    (void)sig;
+    interrupted = 1;
+}
+
+void cli_interrupt_begin(void) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART | SA_RESETHAND; /* writes go on; a second ^C kills */
+    interrupted = 0;
+    sigaction(SIGINT, &sa, &old_int);
+}
+
+bool cli_interrupted(void) {
+    return interrupted != 0;
+}
+
+void cli_interrupt_end(void) {
+    sigaction(SIGINT, &old_int, NULL);
+}

@@ -1,0 +1,44 @@
+/*
+ * cli/out.h - files the qdot program writes and reads itself: every write,
+ * flush and close checked, one message "cannot write FILE: reason" (exit 1),
+ * a directory refused by name (exit 2), and the close of standard output
+ * at exit.
+ */
+#ifndef QDOT_CLI_OUT_H
+#define QDOT_CLI_OUT_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+/* path opened for writing ("w"), or NULL with the error printed and *rc
+ * set: a directory or a path that cannot be created is bad input (2). */
+FILE *cli_out_open(const char *path, int *rc);
+
+/* path opened for reading ("r"), or NULL with the error printed and *rc
+ * set (2): a directory is refused ("is a directory"), not read as empty. */
+FILE *cli_in_open(const char *path, int *rc);
+
+/* One checked write of len bytes; on failure the first error's errno is
+ * kept in *err (0 while all went well).  Returns false on failure. */
+bool cli_out_write(FILE *f, const void *data, size_t len, int *err);
+
+/* Flush and close f (stdout is only flushed: main closes it), then say
+ * "cannot write NAME: reason" when this or an earlier write failed (err:
+ * the errno kept by cli_out_write, or 0).  NAME is "standard output" for
+ * stdout.  Returns 0 (QD_EXIT_OK) or 1 (QD_EXIT_FAIL). */
+int cli_out_close(FILE *f, const char *name, int err);
+
+/* Close standard output once, at the end of main: exit status 1 with the
+ * message when anything written to it was lost; else rc. */
+int cli_close_stdout(int rc);
+
+/* SIGINT during a run that writes rows (simulate, poincare): the handler
+ * only sets a flag, which the row sink reads after writing a whole row and
+ * then asks the library to stop (a sink's nonzero return).  begin installs
+ * the handler (a second SIGINT kills as usual), end restores the old one. */
+void cli_interrupt_begin(void);
+bool cli_interrupted(void);
+void cli_interrupt_end(void);
+enum { CLI_EXIT_INTERRUPTED = 130 }; /* 128 + SIGINT, as a shell reports it */
+
+#endif
