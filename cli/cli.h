@@ -87,6 +87,7 @@ int cli_cmd_scatter(int argc, char **argv);    /* cmd_scatter.c */
 int cli_cmd_path(int argc, char **argv);       /* cmd_path.c */
 int cli_cmd_animate(int argc, char **argv);    /* cmd_animate.c */
 int cli_cmd_sweep(int argc, char **argv);      /* cmd_sweep.c */
+int cli_cmd_form(int argc, char **argv);       /* cmd_form.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the
  * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */

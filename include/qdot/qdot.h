@@ -31,6 +31,7 @@
 #include "sweep.h"
 #include "lyapunov.h"
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
+#include "form.h"       /* issue 35: quadratic forms */
 
 #define QDOT_VERSION "0.1.0"
 
