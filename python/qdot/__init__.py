@@ -18,7 +18,9 @@ from ._core import Error, ModelError
 from .model import Model, Equations, Hamiltonian, Equilibrium, Mode, Modes
 from .sim import Result, Table, Rhs
 from .control import StateSpace, Lqr
+from .forms import QuadraticForm, quadratic_form
 
 __all__ = ["Model", "ModelError", "Error", "Equations", "Hamiltonian", "Equilibrium",
-           "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr"]
+           "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr",
+           "QuadraticForm", "quadratic_form"]
 __version__ = "0.1.0"
