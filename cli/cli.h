@@ -90,6 +90,7 @@ int cli_cmd_metric(int argc, char **argv);     /* cmd_metric.c */
 int cli_cmd_sweep(int argc, char **argv);      /* cmd_sweep.c */
 int cli_cmd_lorentz(int argc, char **argv);    /* cmd_lorentz.c */
 int cli_cmd_collide(int argc, char **argv);    /* cmd_collide.c */
+int cli_cmd_form(int argc, char **argv);       /* cmd_form.c */
 
 /* A model file with its canonical variables: the coordinates q_j and the
  * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */

@@ -24,7 +24,7 @@ enum { EXIT_NOT_CANONICAL = QD_EXIT_FAIL };
 
 typedef struct can_args {
     const char *file, *Q, *P, *gen_type, *gen;
-    bool json;
+    bool json, lagrange, newham;
     const char *sets[QD_CLI_MAX_LIST];
     size_t nsets;
 } can_args;
@@ -34,11 +34,13 @@ typedef struct can_run {
     const qd_expr **Q, **P; /* expressions (--Q/--P) or the new symbols (--generator) */
     const qd_expr **newQ, **newP;
     char **names;           /* 2n names of the new variables */
+    qd_lagrange_result lb;  /* --lagrange */
+    qd_newham nh;           /* --K */
 } can_run;
 
 static const char usage_text[] =
-    "usage: qdot canonical FILE --Q \"Q1, ...\" --P \"P1, ...\" [--format text|json] "
-    "[--set NAME=VALUE]...\n"
+    "usage: qdot canonical FILE --Q \"Q1, ...\" --P \"P1, ...\" [--lagrange] [--K] "
+    "[--format text|json] [--set NAME=VALUE]...\n"
     "       qdot canonical FILE --generator F1|F2|F3|F4 EXPR [--format text|json] "
     "[--set NAME=VALUE]...";
 
@@ -51,6 +53,10 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         a->Q = v;
     else if ((v = cli_value(argc, argv, i, "--P")) && !a->P)
         a->P = v;
+    else if (!strcmp(argv[*i], "--lagrange"))
+        a->lagrange = true;
+    else if (!strcmp(argv[*i], "--K"))
+        a->newham = true;
     else if ((v = cli_value(argc, argv, i, "--format")) && (!strcmp(v, "text") || !strcmp(v, "json")))
         a->json = !strcmp(v, "json");
     else if (!strcmp(argv[*i], "--generator") && *i + 2 < argc && !a->gen) {
@@ -69,6 +75,7 @@ static int parse_args(int argc, char **argv, can_args *a) {
     if (rc != QD_EXIT_OK)
         return rc;
     const char *why = a->gen && (a->Q || a->P) ? "give either --Q and --P or --generator"
+                      : a->gen && (a->lagrange || a->newham) ? "--lagrange and --K go with --Q and --P"
                       : !a->gen && !a->Q       ? "--Q is missing"
                       : !a->gen && !a->P       ? "--P is missing"
                                                : NULL;
@@ -197,7 +204,10 @@ static int answer(const qd_canon_verdict *v, int printed) {
     return printed == QD_EXIT_OK && v->kind != QD_CANON_YES ? EXIT_NOT_CANONICAL : printed;
 }
 
-static int write_verdict(can_run *r, const qd_canon_verdict *v, bool json) {
+static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *v, qd_buf *b,
+                         cli_json *j);
+
+static int write_verdict(can_run *r, const can_args *a, const qd_canon_verdict *v, bool json) {
     qd_ctx *ctx = r->ph.ctx;
     static const char *const kind[] = {"canonical", "scaled", "not canonical"};
     qd_buf b = QD_BUF_INIT;
@@ -217,6 +227,7 @@ static int write_verdict(can_run *r, const qd_canon_verdict *v, bool json) {
         else
             cli_json_null(&j);
         put_expr(ctx, &j, &b, "value", pair[0] ? v->value : NULL);
+        write_extras(r, a, v, &b, &j);
         return answer(v, flush(&b, &j));
     }
     char *s = text_of(ctx, v->kind == QD_CANON_NO ? v->value : v->scale);
@@ -229,7 +240,97 @@ static int write_verdict(can_run *r, const qd_canon_verdict *v, bool json) {
         qd_buf_printf(&b, "not canonical: %s = %s (should be %s)\n", pair, s ? s : "?",
                       v->pair == QD_PAIR_QP && v->i == v->j ? "1" : "0");
     free(s);
+    write_extras(r, a, v, &b, NULL);
     return answer(v, flush(&b, NULL));
+}
+
+/* The old variables' names: q..., p_q... */
+static const char *old_name(const can_run *r, size_t a) {
+    return qd_expr_name(a < r->ph.n ? r->ph.q[a] : r->ph.p[a - r->ph.n]);
+}
+
+/* A 2n x 2n matrix as rows of expressions. */
+static void put_matrix(can_run *r, cli_json *j, qd_buf *b, const char *key,
+                       const qd_expr *const *M) {
+    size_t m = 2 * r->ph.n;
+    if (j) {
+        cli_json_key(j, key);
+        cli_json_begin_array(j);
+    }
+    for (size_t x = 0; x < m; x++) {
+        if (j)
+            cli_json_begin_array(j);
+        else
+            qd_buf_puts(b, "  [");
+        for (size_t y = 0; y < m; y++) {
+            char *s = text_of(r->ph.ctx, M[x * m + y]);
+            if (j)
+                cli_json_string(j, s ? s : "?");
+            else
+                qd_buf_printf(b, "%s%s", y ? ", " : "", s ? s : "?");
+            free(s);
+        }
+        if (j)
+            cli_json_end_array(j);
+        else
+            qd_buf_puts(b, "]\n");
+    }
+    if (j)
+        cli_json_end_array(j);
+}
+
+/* --lagrange: the brackets [u, v] of the old variables and L^T PB = I;
+ * --K: F and the new Hamiltonian. */
+static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *v, qd_buf *b,
+                         cli_json *j) {
+    qd_ctx *ctx = r->ph.ctx;
+    size_t n = r->ph.n;
+    if (a->lagrange) {
+        if (!j) {
+            qd_buf_puts(b, "Lagrange brackets [u, v] = sum dQ/du dP/dv - dQ/dv dP/du, "
+                           "rows and columns ");
+            for (size_t k = 0; k < 2 * n; k++)
+                qd_buf_printf(b, "%s%s", k ? ", " : "", old_name(r, k));
+            qd_buf_puts(b, "\n");
+        }
+        put_matrix(r, j, b, "lagrange", r->lb.L);
+        if (r->lb.PB) {
+            if (!j)
+                qd_buf_puts(b, "Poisson brackets of the old variables in the new ones\n");
+            put_matrix(r, j, b, "poisson_old_in_new", r->lb.PB);
+        }
+        if (j) {
+            cli_json_key(j, "duality");
+            if (r->lb.singular)
+                cli_json_null(j);
+            else
+                cli_json_bool(j, r->lb.dual);
+        } else {
+            qd_buf_printf(b, "%s\n", r->lb.singular ? "duality: the Jacobian is singular (no inverse map)"
+                                    : r->lb.dual    ? "duality: [L]^T (P) = 1 holds"
+                                                    : "duality: [L]^T (P) = 1 FAILS");
+        }
+    }
+    if (a->newham) {
+        if (v->kind == QD_CANON_NO) {
+            if (j) {
+                cli_json_key(j, "K");
+                cli_json_null(j);
+            } else {
+                qd_buf_puts(b, "no new Hamiltonian: the map is neither canonical nor scaled\n");
+            }
+            return;
+        }
+        if (!j)
+            qd_buf_puts(b, "new Hamiltonian K = c H + sum P dQ/dt + dF/dt, dF = c p dq - P dQ "
+                           "(fixed t)\n");
+        put_expr(ctx, j, b, j ? "valence" : "c", r->nh.valence);
+        put_expr(ctx, j, b, "F", r->nh.F);
+        put_expr(ctx, j, b, j ? "K_old" : "K(q, p, t)", r->nh.K_old);
+        put_expr(ctx, j, b, j ? "K_new" : "K(Q, P, t)", r->nh.K_new);
+        if (!j && !r->nh.F)
+            qd_buf_puts(b, "  F: the exact form's antiderivative was not found in closed form\n");
+    }
 }
 
 /* ---- the two modes -------------------------------------------------------------- */
@@ -249,7 +350,18 @@ static int check(can_run *r, const can_args *a, bool json) {
     if (qd_canonical_check(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, qd_time(r->ph.ctx), &v) !=
         QD_OK)
         return cli_diag_ctx(r->ph.ctx);
-    return write_verdict(r, &v, json);
+    if (a->newham && (rc = cli_phase_ham(&r->ph, true)) != QD_EXIT_OK)
+        return rc;
+    if ((a->lagrange || a->newham) && make_symbols(r) != QD_EXIT_OK)
+        return cli_diag_ctx(r->ph.ctx);
+    if (a->lagrange &&
+        qd_lagrange_brackets(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, &r->lb) != QD_OK)
+        return cli_diag_ctx(r->ph.ctx);
+    if (a->newham && v.kind != QD_CANON_NO &&
+        qd_transformed_hamiltonian(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, r->newQ, r->newP,
+                                   qd_time(r->ph.ctx), r->ph.h->H, &r->nh) != QD_OK)
+        return cli_diag_ctx(r->ph.ctx);
+    return write_verdict(r, a, &v, json);
 }
 
 static int gen_type(const char *s, qd_gen_type *t) {
@@ -315,6 +427,7 @@ static void can_free(can_run *r) {
     free(r->newP);
     free(r->Q);
     free(r->P);
+    qd_lagrange_result_free(&r->lb);
     cli_phase_free(&r->ph);
 }
 

@@ -24,6 +24,7 @@
 #include "eom_out.h"
 #include "model_cli.h"
 #include "speeds_out.h"
+#include "json.h"
 
 /* Symbolic accelerations larger than this (count_ops, per entry) are not
  * worth printing: M and f say the same in far less space. */
@@ -35,6 +36,7 @@ typedef struct eom_args {
     cli_eom_format fmt;
     bool solve, eliminate;
     bool appell, multipliers; /* speeds only */
+    bool hamel_coef;          /* speeds only: --hamel-coefficients */
     const char *method;       /* speeds only: as given, NULL when not */
     qd_speeds_method smethod;
     const char *sets[MAX_SETS];
@@ -59,7 +61,7 @@ typedef struct eom_run {
 static const char usage_text[] =
     "usage: qdot eom FILE [--format text|latex|json|sympy|c] [--solve] [--eliminate] "
     "[--set NAME=VALUE]... [--at \"q=VALUE, q'=VALUE, t=VALUE\"] "
-    "[--method kane|appell|hamel] [--appell] [--multipliers]";
+    "[--method kane|appell|hamel] [--appell] [--multipliers] [--hamel-coefficients]";
 
 /* --method NAME: one of the library's names (qd_speeds_method_name). */
 static int parse_method(const char *v, eom_args *a) {
@@ -85,6 +87,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         a->appell = true;
     } else if (!strcmp(argv[*i], "--multipliers")) {
         a->multipliers = true;
+    } else if (!strcmp(argv[*i], "--hamel-coefficients")) {
+        a->hamel_coef = true;
     } else if ((v = cli_value(argc, argv, i, "--method"))) {
         return parse_method(v, a);
     } else if ((v = cli_value(argc, argv, i, "--format"))) {
@@ -312,6 +316,7 @@ static int emit(eom_run *r, cli_eom_format fmt) {
 /* An option of one kind of model given for the other: its name, or NULL. */
 static const char *speeds_option(const eom_args *a) {
     return a->method ? "--method" : a->appell ? "--appell" : a->multipliers ? "--multipliers"
+           : a->hamel_coef ? "--hamel-coefficients"
                                                                           : NULL;
 }
 
@@ -434,6 +439,82 @@ static int solve_speeds(eom_run *r, qd_speeds_eom *e) {
     return QD_EXIT_FAIL;
 }
 
+/* The name of Hamel index i: a speed, then a constraint. */
+static const char *hamel_index(const qd_speeds_eom *e, size_t i) {
+    return i < e->m ? qd_expr_name(e->u[i]) : e->con[i - e->m].name ? e->con[i - e->m].name : "?";
+}
+
+/* --hamel-coefficients: gamma_ikm of the speeds (qd_speeds_hamel_coefficients),
+ * the nonzero ones in text, all of them as [i][k][m] in JSON. */
+static int hamel_coefficients(eom_run *r, const qd_speeds_eom *e, bool json) {
+    size_t n = e->n;
+    const qd_expr **g = calloc(n * n * n + 1, sizeof *g);
+    if (!g) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    if (qd_speeds_hamel_coefficients(r->ctx, e, g) != QD_OK) {
+        free(g);
+        return cli_diag_ctx(r->ctx);
+    }
+    qd_buf b = QD_BUF_INIT;
+    cli_json j;
+    if (json) {
+        cli_json_init(&j, &b);
+        cli_json_begin_object(&j);
+        cli_json_key(&j, "indices");
+        cli_json_begin_array(&j);
+        for (size_t i = 0; i < n; i++)
+            cli_json_string(&j, hamel_index(e, i));
+        cli_json_end_array(&j);
+        cli_json_key(&j, "gamma");
+        cli_json_begin_array(&j);
+        for (size_t i = 0; i < n; i++) {
+            cli_json_begin_array(&j);
+            for (size_t k = 0; k < n; k++) {
+                cli_json_begin_array(&j);
+                for (size_t m = 0; m < n; m++)
+                    cli_json_expr(&j, r->ctx, g[(i * n + k) * n + m]);
+                cli_json_end_array(&j);
+            }
+            cli_json_end_array(&j);
+        }
+        cli_json_end_array(&j);
+        cli_json_end_object(&j);
+        qd_buf_puts(&b, "\n");
+        b.failed = b.failed || !cli_json_ok(&j);
+    } else {
+        qd_buf_puts(&b, "Hamel coefficients gamma[i,k,m] = sum_jl (da_kj/dq_l - da_kl/dq_j) "
+                        "b_ji b_lm (Desloge ch. 68), indices ");
+        for (size_t i = 0; i < n; i++)
+            qd_buf_printf(&b, "%s%s", i ? ", " : "", hamel_index(e, i));
+        qd_buf_puts(&b, "\n");
+        size_t nz = 0;
+        for (size_t i = 0; i < n; i++)
+            for (size_t k = 0; k < n; k++)
+                for (size_t m = 0; m < n; m++) {
+                    const qd_expr *x = g[(i * n + k) * n + m];
+                    if (qd_is_zero(x))
+                        continue;
+                    nz++;
+                    qd_buf_printf(&b, "  gamma[%s,%s,%s] = ", hamel_index(e, i),
+                                  hamel_index(e, k), hamel_index(e, m));
+                    qd_print(r->ctx, x, QD_FMT_TEXT, &b);
+                    qd_buf_puts(&b, "\n");
+                }
+        qd_buf_puts(&b, nz ? "  (the others are 0)\n" : "  all 0 (the quasi-velocities are "
+                                                          "exact differentials)\n");
+    }
+    int rc = b.failed ? QD_EXIT_FAIL : QD_EXIT_OK;
+    if (rc == QD_EXIT_OK)
+        fputs(qd_buf_str(&b), stdout);
+    else
+        cli_diag_error("cannot print the result");
+    qd_buf_free(&b);
+    free(g);
+    return rc;
+}
+
 /* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
 static int run_speeds(eom_run *r, const eom_args *a) {
     const char *opt = coords_option(a);
@@ -451,6 +532,11 @@ static int run_speeds(eom_run *r, const eom_args *a) {
     qd_speeds_eom *e = qd_speeds_derive(r->ctx, r->mf.model, &opts);
     if (!e)
         return cli_eom_derive_error(r->ctx, &r->mf);
+    if (a->hamel_coef) {
+        int hrc = hamel_coefficients(r, e, a->fmt == QD_EOM_JSON);
+        qd_speeds_eom_free(e);
+        return hrc;
+    }
     cli_speeds_view v = {.ctx = r->ctx, .mf = &r->mf, .e = e, .multipliers = a->multipliers};
     if (a->solve && !a->at && solve_speeds(r, e) != QD_EXIT_OK) {
         qd_speeds_eom_free(e);

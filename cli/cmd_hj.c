@@ -89,7 +89,12 @@ static void write_sep(const hj_run *r, qd_buf *b, const qd_hj_sep *s, const char
     qd_buf_printf(b, "%s%s: constant %s%s\n", cmt, q, qd_expr_name(s->constant),
                   s->cyclic ? " (cyclic: its momentum is constant)" : "");
     line_x(r, b, s->equation, qd_int(r->ctx, 0));
-    line_x(r, b, qd_powi(r->ctx, s->p, 2), s->p2);
+    if (s->pk)
+        line_x(r, b, s->p, s->pk);
+    else if (s->qk)
+        line_x(r, b, s->q, s->qk);
+    else
+        line_x(r, b, qd_powi(r->ctx, s->p, 2), s->p2);
     line_x(r, b, s->constant, s->integral);
 }
 
@@ -129,7 +134,10 @@ static void write_lines(const hj_run *r, qd_buf *b) {
     qd_buf_printf(b, "%sseparated equations\n", cmt);
     for (size_t k = 0; k < h->n; k++)
         write_sep(r, b, &h->sep[k], cmt);
-    qd_buf_printf(b, "%scomplete integral (p = +sqrt(p^2) on each branch)\n", cmt);
+    qd_buf_printf(b, "%scomplete integral (%s)\n", cmt,
+                  h->n == 1 && h->sep[0].qk ? "momentum representation, W(p) = -int q dp"
+                  : h->n == 1 && h->sep[0].pk ? "W = int p dq"
+                                              : "p = +sqrt(p^2) on each branch");
     line(r, b, "W", h->W);
     if (r->solve)
         write_motion(r, b, cmt);
@@ -148,6 +156,10 @@ static void json_sep(const hj_run *r, cli_json *j, const qd_hj_sep *s) {
     cli_json_expr(j, r->ctx, s->equation);
     cli_json_key(j, "p2");
     cli_json_expr(j, r->ctx, s->p2);
+    cli_json_key(j, "p");
+    cli_json_expr(j, r->ctx, s->pk);
+    cli_json_key(j, "q_of_p");
+    cli_json_expr(j, r->ctx, s->qk);
     cli_json_key(j, "cyclic");
     cli_json_bool(j, s->cyclic);
     cli_json_key(j, "integral");
@@ -218,7 +230,11 @@ static void sympy_list(const hj_run *r, qd_buf *b, const char *name, size_t off)
     qd_buf_printf(b, "%s = [", cli_script_name(r->mf.model, name).s);
     for (size_t k = 0; r->h->separable && k < r->h->n; k++) {
         qd_buf_puts(b, k ? ", " : "");
-        put(r, b, *(const qd_expr *const *)((const char *)&r->h->sep[k] + off));
+        const qd_expr *x = *(const qd_expr *const *)((const char *)&r->h->sep[k] + off);
+        if (x)
+            put(r, b, x);
+        else
+            qd_buf_puts(b, "None"); /* p2 of the momentum representation */
     }
     qd_buf_puts(b, "]\n");
 }

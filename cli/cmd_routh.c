@@ -110,7 +110,7 @@ static void write_head(const routh_run *r, qd_buf *b, const char *c) {
     const qd_routh *h = r->r;
     qd_buf_printf(b, "%smodel: %s\n%signored: ", c, r->mf.path, c);
     name_list(b, h->nign, h->ign);
-    qd_buf_printf(b, " (momenta, constant: ");
+    qd_buf_printf(b, h->forced ? " (momenta, constant unless forced: " : " (momenta, constant: ");
     name_list(b, h->nign, h->beta);
     qd_buf_printf(b, ")\n%skept: ", c);
     name_list(b, h->nkeep, h->keep);
@@ -160,6 +160,19 @@ static void write_equations(const routh_run *r, qd_buf *b, const char *c) {
         qd_buf_printf(b, "  f[%s] = ", qd_expr_name(h->keep[k]));
         put(r, b, h->f[k]);
         qd_buf_puts(b, eol(r));
+    }
+    if (h->forced) {
+        qd_buf_printf(b, "\n%sforced ignored coordinates (Byerly Art. 20a): p' = Q, not constant; "
+                         "with the p' kept, M q'' = f':\n", c);
+        line(r, b, NULL, "Byerly's modified function M = -R",
+             qd_simplify(r->ctx, qd_neg(r->ctx, h->R)));
+        for (size_t i = 0; i < h->nign; i++)
+            line(r, b, h->betad[i], "", h->pdot[i]);
+        for (size_t k = 0; k < h->nkeep; k++) {
+            qd_buf_printf(b, "  f'[%s] = ", qd_expr_name(h->keep[k]));
+            put(r, b, h->f_betad[k]);
+            qd_buf_puts(b, eol(r));
+        }
     }
     if (h->nkeep > 1 && !h->implicit) {
         qd_buf_printf(b, "\n%sgyroscopic matrix G (skew; f contains G q'):\n", c);
@@ -368,6 +381,11 @@ static void write_json(const routh_run *r, qd_buf *b) {
     json_quadratures(r, &j);
     cli_json_key(&j, "conserved");
     cli_json_bool(&j, h->conserved);
+    if (h->forced) { /* only then, so the other models' output is unchanged */
+        json_names(&j, "momentum_rates", h->nign, h->betad);
+        json_list(r, &j, "momentum_rate_values", h->nign, h->pdot);
+        json_list(r, &j, "f_with_momentum_rates", h->nkeep, h->f_betad);
+    }
     if (h->implicit) { /* only then, so the other models' output is unchanged */
         cli_json_key(&j, "implicit");
         cli_json_bool(&j, true);
@@ -392,12 +410,15 @@ static int run(routh_run *r) {
     int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, true, NULL, &r->mf, &r->e);
     if (rc == QD_EXIT_OK)
         rc = cli_ignore_parse(r->ctx, r->mf.model, r->ignore, r->ign, MAX_IGN, &r->nign);
-    if (rc == QD_EXIT_OK)
-        rc = cli_ignore_check(r->ctx, &r->mf, r->e, r->ign, r->nign);
-    qd_routh_opts opts = {.implicit = true};
+    /* forced: a cyclic coordinate with a generalized force is reduced too
+     * (Byerly Art. 20a); any other refusal is shown at its statement */
+    qd_routh_opts opts = {.implicit = true, .forced = true};
     if (rc == QD_EXIT_OK &&
-        !(r->r = qd_routh_derive_opts(r->ctx, r->mf.model, r->e, r->nign, r->ign, &opts)))
-        rc = cli_diag_ctx(r->ctx);
+        !(r->r = qd_routh_derive_opts(r->ctx, r->mf.model, r->e, r->nign, r->ign, &opts))) {
+        rc = cli_ignore_check(r->ctx, &r->mf, r->e, r->ign, r->nign);
+        if (rc == QD_EXIT_OK)
+            rc = cli_diag_ctx(r->ctx);
+    }
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 

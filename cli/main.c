@@ -21,6 +21,8 @@ static const cli_cmd commands[] = {
     {"check", "FILE", "validate a model and summarize it", cli_cmd_check, false},
     {"hamiltonian", "FILE [--format F] [--at ...]", "momenta, H and Hamilton's equations",
      cli_cmd_hamiltonian, true},
+    {"form", "EXPR --vars \"x, y\" [--format F]", "a quadratic form: sum of squares, inertia",
+     cli_cmd_form, true},
     {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", cli_cmd_bracket, false},
     {"canonical", "FILE --Q ... --P ... | --generator", "canonical transformations, K = H + dF/dt",
      cli_cmd_canonical, true},

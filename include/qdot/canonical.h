@@ -91,6 +91,62 @@ QD_API qd_status qd_generate_f2(qd_ctx *ctx, size_t n, const qd_expr *const *q,
 
 QD_API void qd_gen_result_free(qd_gen_result *r);
 
+/* ---- Lagrange brackets and the transformed Hamiltonian (issue 35) ---------- */
+
+/* The Lagrange bracket of u and v (two of the old variables) with respect to
+ * the map (q, p) -> (Q(q,p,t), P(q,p,t)) (Desloge ch. 74 eq. 14, ch. 77):
+ *     [u, v] = sum_i dQ_i/du dP_i/dv - dQ_i/dv dP_i/du,
+ * simplified; NULL on failure.  A canonical map has [q_i, q_j] = [p_i, p_j] = 0
+ * and [q_i, p_j] = delta_ij; one of valence c has c delta_ij. */
+QD_API const qd_expr *qd_lagrange_bracket(qd_ctx *ctx, size_t n, const qd_expr *const *Q,
+                                          const qd_expr *const *P, const qd_expr *u,
+                                          const qd_expr *v);
+
+typedef struct qd_lagrange_result {
+    size_t n;
+    const qd_expr **L;   /* 2n*2n row-major: [r_a, r_b], r = (q_1..q_n, p_1..p_n) */
+    const qd_expr **PB;  /* 2n*2n: the Poisson brackets (r_a, r_b) of the old
+                            variables with respect to the new ones, through the
+                            inverse Jacobian dr/dR; NULL when singular */
+    bool singular;       /* det d(Q,P)/d(q,p) = 0: no inverse map, no PB */
+    bool dual;           /* L^T PB = I verified exactly (Desloge ch. 80 Thm 1: true
+                            for every invertible map, canonical or not) */
+} qd_lagrange_result;
+
+/* The Lagrange-bracket matrix of the map and its duality with the Poisson
+ * brackets (L = J^T mu J, PB = J^-1 mu J^-T, J = d(Q,P)/d(q,p); Desloge
+ * ch. 75).  Release with qd_lagrange_result_free. */
+QD_API qd_status qd_lagrange_brackets(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                                      const qd_expr *const *p, const qd_expr *const *Q,
+                                      const qd_expr *const *P, qd_lagrange_result *out);
+QD_API void qd_lagrange_result_free(qd_lagrange_result *r);
+
+typedef struct qd_newham {
+    const qd_expr *valence; /* c: [Q_i, P_i] = c (1 for a canonical map) */
+    const qd_expr *F;       /* F(q, p, t) with dF = c sum p dq - sum P dQ at fixed t;
+                               NULL when the exact form could not be integrated */
+    const qd_expr *K_old;   /* K = c H + sum_i P_i dQ_i/dt + dF/dt, in (q, p, t) */
+    const qd_expr *K_new;   /* K in (Q, P, t) (the symbols newQ, newP); NULL when the
+                               map could not be inverted in closed form */
+} qd_newham;
+
+/* The transformed Hamiltonian of a canonical or scaled map (Desloge ch. 84
+ * Thms 2-3, ch. 76 Thm 1): from sum P dQ - K dt = c (sum p dq - H dt) - dF,
+ *     K = c H + sum_i P_i dQ_i/dt + dF/dt     (partial t at fixed q, p),
+ * F found by integrating the exact form one variable at a time (closed forms
+ * of qd_integrate and integration by parts of x^k g(x)), and checked.  The
+ * valence c comes from qd_canonical_check; a map that is neither canonical
+ * nor scaled is refused (QD_ERR_ARG).  t may be NULL (no time).  F and K are
+ * NULL, with QD_OK, when the form's antiderivative is not found.  The result
+ * owns nothing (its expressions belong to ctx); qd_newham_free clears it. */
+QD_API qd_status qd_transformed_hamiltonian(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                                            const qd_expr *const *p, const qd_expr *const *Q,
+                                            const qd_expr *const *P,
+                                            const qd_expr *const *newQ,
+                                            const qd_expr *const *newP, const qd_expr *t,
+                                            const qd_expr *H, qd_newham *out);
+QD_API void qd_newham_free(qd_newham *k);
+
 #ifdef __cplusplus
 }
 #endif
@@ -100,5 +156,5 @@ QD_API void qd_gen_result_free(qd_gen_result *r);
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_canonical_check (t); qd_generate (H);
- * qd_generate_f2 (H). An array whose count is 0 may be NULL. */
+ * qd_generate_f2 (H); qd_transformed_hamiltonian (t). An array whose count is 0 may be NULL. */
 #endif

@@ -18,7 +18,11 @@
  * exact tests on the kernel's expressions: cyclic coordinates (p_k =
  * alpha_k), additive separation (H = sum_k H_k(q_k, p_k)), and the
  * Liouville/Staeckel forms (the separations of polar, spherical, parabolic
- * and elliptic coordinates).
+ * and elliptic coordinates).  An equation of one coordinate always reduces
+ * to a quadrature: when it is not of the form A p_k^2 + C = 0 it is solved
+ * for p_k where p_k enters linearly (H = p + a q^2, Desloge ch. 78 P1), or,
+ * in the momentum representation, for q_k where q_k does (H = p + sin p + q,
+ * ch. 78 Thm 1a).
  */
 #ifndef QDOT_HJ_H
 #define QDOT_HJ_H
@@ -44,6 +48,14 @@ typedef struct qd_hj_sep {
     /* p_k^2 as a function of q_k and the constants: the motion in q_k is
      * where it is >= 0, its simple roots are the turning points */
     const qd_expr *p2;
+    /* one equation may not be quadratic in p_k (Desloge ch. 78 Thm 1a, P1):
+     * pk: p_k itself when it enters F_k linearly (p2 is then pk^2, no
+     * turning points), W_k = int pk dq_k; qk: the momentum representation
+     * (x, y) = (p_k, -q_k), when p_k can be isolated neither way but q_k
+     * enters linearly: q_k as a function of p_k, W_k = -int qk dp_k (W is
+     * then a function of p_k), and p2 is NULL.  Both NULL otherwise. */
+    const qd_expr *pk;
+    const qd_expr *qk;
     bool cyclic;               /* q_k absent from what was left: p_k is a constant
                                   (alpha_k; for the last coordinate, a function of
                                   the constants) */

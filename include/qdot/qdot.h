@@ -33,6 +33,7 @@
 #include "metric.h"
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
 #include "relativity.h" /* issue 35: Lorentz kinematics, collisions */
+#include "form.h"       /* issue 35: quadratic forms */
 
 #define QDOT_VERSION "0.1.0"
 

@@ -76,6 +76,16 @@ typedef struct qd_routh {
     bool conserved;           /* no explicit t in R, no Q and no D on kept coordinates */
     size_t *ign_index;        /* position of each ignored coordinate in the eom's q */
     size_t *keep_index;       /* position of each kept coordinate in the eom's q */
+    /* forced ignored coordinates (qd_routh_opts.forced; Byerly Art. 20a): c
+     * absent from L but with a generalized force Q_c, so beta_c is not
+     * constant but p_c' = Q_c.  R is the same function of beta; the reduced
+     * equations gain the terms of beta' that d/dt brings in. */
+    bool forced;
+    const qd_expr **betad;    /* nign symbols p_<c>_dot standing for p_c' (forced only) */
+    const qd_expr **pdot;     /* nign: Q_c in keep, keep', beta, t: p_c' = pdot_c */
+    const qd_expr **f_betad;  /* nkeep: f with the p_c' kept as betad (forced only):
+                                 M keep'' = f_betad is the reduced equation with the
+                                 p' term, f the same with p_c' = Q_c put in */
     bool implicit;            /* L is not quadratic in the ignored velocities c' and
                                  p = dL/dc' has no closed-form inverse (only with
                                  qd_routh_opts.implicit): see below */
@@ -113,9 +123,17 @@ QD_API qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e
 /* qd_routh_derive with options (opts may be NULL: the defaults, all false).
  * implicit: keep the Routhian implicit (r->implicit) instead of failing with
  * QD_ERR_NONLINEAR when the ignored velocities have no closed form.  Off by
- * default because callers that read R0 or V_eff need them in closed form. */
+ * default because callers that read R0 or V_eff need them in closed form.
+ * forced: an ignored coordinate c absent from L (and from the dissipation)
+ * may carry a generalized force Q_c (not depending on any ignored
+ * coordinate): its momentum then changes, p_c' = Q_c, and the reduced
+ * equations d/dt d(-R)/dk' - d(-R)/dk = Q_k contain p_c' (Byerly Art. 20a,
+ * the tractrix modified for x: m a^2 (sin^2 th th'' + sin th cos th th'^2)
+ * - a cos th p_x' = 0).  h is then not conserved. */
 typedef struct qd_routh_opts {
     bool implicit;
+    bool forced;   /* accept ignored coordinates that carry a generalized force
+                      (free of the ignored coordinates themselves): r->forced */
 } qd_routh_opts;
 QD_API qd_routh *qd_routh_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                       size_t nign, const qd_expr *const *ign,

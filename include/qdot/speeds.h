@@ -129,6 +129,28 @@ typedef struct qd_speeds_eom {
 QD_API qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_opts *opts);
 QD_API void qd_speeds_eom_free(qd_speeds_eom *e);
 
+/* Hamel's three-index symbols of a velocity map (Desloge ch. 68, ch. 69;
+ * seed-desloge-C.md T1 and pitfall 2): with quasi-velocities
+ * pid_i = sum_j a_ij(q) q'_j and b = a^-1,
+ *
+ *     gamma_ikm = sum_{j,l} (d a_kj/d q_l - d a_kl/d q_j) b_ji b_lm,
+ *
+ * placed as + sum_{k,m} gamma_ikm (dTs/d pid_k) pid_m (Ts = T*) in the Boltzmann-Hamel
+ * equations; gamma_ikm = -gamma_imk.  a is n*n row-major in the coordinates
+ * q; out receives n^3 simplified entries, gamma_ikm at (i*n + k)*n + m.
+ * QD_ERR_SINGULAR when a is singular.  (Polar r, th with pid = (r',
+ * r^2 th'/2): gamma_122 = -2/r, gamma_221 = 2/r, the rest 0.) */
+QD_API qd_status qd_hamel_coefficients(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                                       const qd_expr *const *a, const qd_expr **out);
+
+/* The same for the speeds of e: a is the speeds' rows A (u = A q' + b)
+ * stacked on the constraints' rows C (the P of the head comment); a
+ * rheonomic or affine part (dA/dt, b, c0) is left out, as Desloge ch. 68
+ * does.  out receives n^3 entries indexed as above, the indices i, k, m
+ * running over the m speeds first, then the constraints. */
+QD_API qd_status qd_speeds_hamel_coefficients(qd_ctx *ctx, const qd_speeds_eom *e,
+                                              const qd_expr **out);
+
 /* Solve M_u u' = f_u symbolically for u' (the fraction-free elimination of
  * qd_eom_solve, each entry simplified) into e->acc.  QD_ERR_TOOBIG when an
  * entry would exceed max_ops operations (count_ops): the caller keeps M_u

@@ -19,8 +19,9 @@ from .model import Model, Equations, Hamiltonian, Equilibrium, Mode, Modes
 from .sim import Result, Table, Rhs
 from .control import StateSpace, Lqr
 from .relativity import lorentz, proper_time, collide
+from .forms import QuadraticForm, quadratic_form
 
 __all__ = ["Model", "ModelError", "Error", "Equations", "Hamiltonian", "Equilibrium",
            "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr",
-           "lorentz", "proper_time", "collide"]
+           "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form"]
 __version__ = "0.1.0"

@@ -234,6 +234,12 @@ static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, co
                            double q0, size_t nvals, const qd_expr *const *syms,
                            const double *vals, double *beta, qd_action *a) {
     qd__act_fn f;
+    if (!h->sep[k].p2) { /* the momentum representation (qd_hj_sep.qk): no p(q) */
+        qd_ctx_error(ctx, QD_ERR_ARG, "%s: the Hamilton-Jacobi equation was solved in the "
+                     "momentum representation; action variables need p as a function of %s",
+                     qd_expr_name(h->sep[k].q), qd_expr_name(h->sep[k].q));
+        return QD_ERR_ARG;
+    }
     if (!qd__act_fn_init(ctx, &f, h->sep[k].p2, h->sep[k].q, h->nconst, h->constants, cv, nvals,
                          syms, vals))
         return qd_ctx_status(ctx);

@@ -104,6 +104,18 @@ static const qd_expr *energy_symbol(qd_ctx *ctx, const qd_hj_opts *opts) {
     return qd_symbol(ctx, name);
 }
 
+/* W_k = int pk dq_k, or -int qk dp_k in the momentum representation:
+ * closed where qd_integrate finds it, else integral(...). */
+static const qd_expr *linear_quadrature(qd_ctx *ctx, const qd_hj_sep *s) {
+    const qd_expr *f = s->pk ? s->pk : qd_neg(ctx, s->qk), *x = s->pk ? s->q : s->p;
+    const qd_expr *r = qd_integrate(ctx, qd_expand(ctx, f), x);
+    if (!r) {
+        qd__ctx_recover(ctx);
+        r = qd__hj_integral(ctx, f, x);
+    }
+    return r;
+}
+
 /* W = sum_k W_k; a cyclic coordinate (not the last) gives alpha_k q_k. */
 static const qd_expr *complete_integral(qd_ctx *ctx, const qd_hj *h) {
     const qd_expr *W = qd_int(ctx, 0);
@@ -111,6 +123,8 @@ static const qd_expr *complete_integral(qd_ctx *ctx, const qd_hj *h) {
         const qd_hj_sep *s = &h->sep[k];
         if (s->cyclic && s->constant != h->energy)
             W = qd_add(ctx, W, qd_mul(ctx, s->constant, s->q));
+        else if (s->pk || s->qk)
+            W = qd_add(ctx, W, linear_quadrature(ctx, s));
         else
             W = qd_add(ctx, W, qd__hj_quadrature(ctx, s->p2, s->q));
     }
@@ -166,7 +180,9 @@ static qd_status fill(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts, qd
         return QD_ERR_NOMEM;
     integrals_in_velocities(ctx, h, in);
     if (h->n == 1)
-        snprintf(h->why, sizeof h->why, "one coordinate: H = E is its equation");
+        snprintf(h->why, sizeof h->why, "one coordinate: H = E is its equation%s",
+                 h->sep[0].pk ? ", linear in the momentum" : h->sep[0].qk ?
+                 ", solved for the coordinate (the momentum representation)" : "");
     else
         snprintf(h->why, sizeof h->why, "%s: H = E splits into one equation per coordinate",
                  h->form);

@@ -150,6 +150,18 @@ static const qd_expr *solve_p2(qd_ctx *ctx, const qd_expr *eq, const qd_expr *p)
     return qd_simplify(ctx, qd_neg(ctx, qd_div(ctx, C, A)));
 }
 
+/* x from eq = B x + C = 0, B != 0 and B, C free of x; NULL otherwise. */
+static const qd_expr *solve_linear1(qd_ctx *ctx, const qd_expr *eq, const qd_expr *x) {
+    const qd_expr *X = qd_expand(ctx, eq);
+    const qd_expr *B = X ? qd_coeff(ctx, X, x, 1) : NULL, *C = X ? qd_coeff(ctx, X, x, 0) : NULL;
+    if (!B || !C || qd_is_zero(B) || qd_has(B, x) || qd_has(C, x))
+        return NULL;
+    const qd_expr *back = qd_expand(ctx, qd_sub(ctx, X, qd_add(ctx, qd_mul(ctx, B, x), C)));
+    if (!back || !qd_is_zero(back))
+        return NULL;
+    return qd_simplify(ctx, qd_neg(ctx, qd_div(ctx, C, B)));
+}
+
 /* e simplified, or over one denominator where that is shorter (the group
  * with E = H put back: the Liouville denominators cancel). */
 static const qd_expr *shorter(qd_ctx *ctx, const qd_expr *e) {
@@ -181,7 +193,12 @@ static qd_status record(qd__hj_sep_state *s, size_t k, const qd_expr *constant,
                                              : solve_p2(s->ctx, equation, s->p[k]);
     sp->cyclic = cyclic;
     sp->integral = value;
-    if (!sp->p2 || !sp->equation) {
+    sp->pk = sp->qk = NULL;
+    if (!sp->p2 && sp->equation && (sp->pk = solve_linear1(s->ctx, equation, s->p[k])))
+        sp->p2 = qd_simplify(s->ctx, qd_powi(s->ctx, sp->pk, 2));
+    else if (!sp->p2 && sp->equation)
+        sp->qk = solve_linear1(s->ctx, equation, s->q[k]);
+    if ((!sp->p2 && !sp->qk) || !sp->equation) {
         snprintf(h->why, sizeof h->why, "the equation left for %s is not of the form "
                  "A(%s) %s^2 + C(%s) = 0 (%s enters it linearly or beyond the square: a cross "
                  "term with a cyclic momentum, or a magnetic term)", qd_expr_name(s->q[k]),

@@ -62,7 +62,10 @@ static const qd_expr *velocity(qd_ctx *ctx, const qd_hj *h, size_t j) {
     const qd_expr *v = qd_diff(ctx, h->H, h->sep[j].p);
     for (size_t i = 0; v && i < h->n; i++) {
         const qd_hj_sep *s = &h->sep[i];
-        const qd_expr *to = s->cyclic && s->constant != h->energy ? s->constant : qd_sqrt(ctx, s->p2);
+        if (s->qk)
+            continue; /* the momentum representation: p_k stays */
+        const qd_expr *to = s->cyclic && s->constant != h->energy ? s->constant
+                            : s->pk ? s->pk : qd_sqrt(ctx, s->p2);
         v = qd_subs(ctx, v, 1, &s->p, &to);
     }
     return v;
@@ -124,9 +127,31 @@ static const qd_expr *beta_symbol(qd_ctx *ctx, const qd_expr *q) {
     return qd_symbol(ctx, name);
 }
 
+/* The momentum representation, one coordinate: p' = -dH/dq at q = qk(p);
+ * when that is a constant f, p = f (t - beta) and q = qk(p) (H = p + sin p
+ * + q: p = -(t - beta), q = E + t - beta + sin(t - beta)). */
+static void solve_momentum(qd_ctx *ctx, qd_hj *h, size_t k) {
+    qd_hj_sep *s = &h->sep[k];
+    if (h->n != 1)
+        return;
+    const qd_expr *f = qd_simplify(ctx, qd_subs(ctx, qd_neg(ctx, qd_diff(ctx, h->H, s->q)), 1,
+                                                &s->q, &s->qk));
+    const qd_expr *beta = beta_symbol(ctx, s->q), *t = qd_time(ctx);
+    if (!f || !beta || qd_has(f, s->p) || qd_has(f, s->q) || qd_is_zero(f))
+        return;
+    const qd_expr *pt = qd_mul(ctx, f, qd_sub(ctx, t, beta));
+    s->motion = qd_simplify(ctx, qd_subs(ctx, s->qk, 1, &s->p, &pt));
+    s->clock = t;
+    s->beta = s->motion ? beta : NULL;
+}
+
 /* The motion of q_k against the time, else against a cyclic coordinate. */
 static void solve_one(qd_ctx *ctx, qd_hj *h, size_t k) {
     qd_hj_sep *s = &h->sep[k];
+    if (s->qk) {
+        solve_momentum(ctx, h, k);
+        return;
+    }
     const qd_expr *vk = velocity(ctx, h, k), *beta = beta_symbol(ctx, s->q), *t = qd_time(ctx);
     if (!vk || !beta || qd_is_zero(vk))
         return;

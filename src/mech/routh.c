@@ -35,6 +35,9 @@ void qd_routh_free(qd_routh *r) {
     qd__free(r->M);
     qd__free(r->f);
     qd__free(r->G);
+    qd__free(r->betad);
+    qd__free(r->pdot);
+    qd__free(r->f_betad);
     qd__free(r->ign_index);
     qd__free(r->keep_index);
     qd__free(r);
@@ -380,13 +383,24 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_r
     qd_status st = co && acc ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK && r->implicit)
         st = ignored_accelerations(ctx, e, r, acc);
-    r->conserved = !qd_has(r->R, qd_time(ctx)) && (!D || qd_is_zero(D));
+    r->conserved = !r->forced && !qd_has(r->R, qd_time(ctx)) && (!D || qd_is_zero(D));
+    for (size_t i = 0; st == QD_OK && r->forced && i < r->nign; i++) {
+        const qd_expr *Qc = qd_model_force(m, r->ign_index[i]);
+        if (!(r->pdot[i] = qd_simplify(ctx, reduce(ctx, e, r, Qc ? Qc : qd_int(ctx, 0)))))
+            st = qd_ctx_status(ctx);
+    }
+    for (size_t pass = 0; st == QD_OK && pass < (r->forced ? 2u : 1u); pass++)
     for (size_t k = 0; st == QD_OK && k < nk; k++) {
         const qd_expr *Q = extra(ctx, m, e, r, k), *rest = NULL;
         r->conserved = r->conserved && Q && qd_is_zero(qd_simplify(ctx, Q));
-        const qd_expr *E = qd_sub(ctx, qd_sub(ctx, qd_dt(ctx, qd_diff(ctx, lag, r->keepd[k])),
-                                              qd_diff(ctx, lag, r->keep[k])),
+        const qd_expr *dk = qd_diff(ctx, lag, r->keepd[k]);
+        const qd_expr *E = qd_sub(ctx, qd_sub(ctx, qd_dt(ctx, dk), qd_diff(ctx, lag, r->keep[k])),
                                   Q);
+        /* d/dt at fixed beta missed beta' (forced): + d(dk)/dbeta_i beta'_i,
+         * beta'_i the symbol (pass 0) or Q_c (pass 1) */
+        for (size_t i = 0; r->forced && i < r->nign; i++)
+            E = qd_add(ctx, E, qd_mul(ctx, qd_diff(ctx, dk, r->beta[i]),
+                                      pass == 0 ? r->betad[i] : r->pdot[i]));
         if (!(E = no_ignored_acc(ctx, e, r, acc, E))) {
             st = qd_ctx_status(ctx);
             break;
@@ -398,7 +412,8 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_r
         for (size_t j = 0; st == QD_OK && j < nk; j++)
             if (!(r->M[k * nk + j] = qd_simplify(ctx, co[j])))
                 st = qd_ctx_status(ctx);
-        if (st == QD_OK && !(r->f[k] = qd_simplify(ctx, qd_neg(ctx, rest))))
+        const qd_expr **fk = r->forced && pass == 0 ? &r->f_betad[k] : &r->f[k];
+        if (st == QD_OK && !(*fk = qd_simplify(ctx, qd_neg(ctx, rest))))
             st = qd_ctx_status(ctx);
     }
     qd__free(co);
@@ -408,8 +423,31 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_r
 
 /* ---- the whole reduction ---------------------------------------------------- */
 
+/* Forced (opts.forced): only a generalized force on c itself makes c
+ * not cyclic, and that force must not depend on an ignored coordinate. */
+static bool forced_ok(const qd_model *m, const qd_eom *e, size_t j, const qd_expr *const *ign,
+                      size_t nign, const char **why) {
+    const qd_expr *Q = qd_model_force(m, j);
+    if (!Q || qd_is_zero(Q))
+        return false;
+    if (has(e->L, e->q[j]))
+        return false;
+    const qd_expr *D = qd_model_dissipation(m);
+    if (has(D, e->q[j]) || has(D, e->qd[j]))
+        return false;
+    for (size_t k = 0; k < e->n; k++)
+        if (k != j && has(qd_model_force(m, k), e->q[j]))
+            return false;
+    for (size_t i = 0; i < nign; i++)
+        if (has(Q, ign[i])) {
+            *why = "its generalized force depends on an ignored coordinate";
+            return false;
+        }
+    return true;
+}
+
 static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh *r,
-                       const qd_expr *const *ign) {
+                       const qd_expr *const *ign, bool forced) {
     bool *is_ign = qd__calloc(ctx, e->n ? e->n : 1, sizeof *is_ign);
     if (!is_ign)
         return QD_ERR_NOMEM;
@@ -426,10 +464,13 @@ static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh
         } else if (is_ign[j]) {
             qd_ctx_error(ctx, QD_ERR_ARG, "%s is ignored twice", qd_expr_name(ign[i]));
             st = QD_ERR_ARG;
-        } else if (qd_routh_not_cyclic(ctx, m, e, j, &why)) {
+        } else if (qd_routh_not_cyclic(ctx, m, e, j, &why) &&
+                   !(forced && forced_ok(m, e, j, ign, r->nign, &why))) {
             qd_ctx_error(ctx, QD_ERR_ARG, "%s cannot be ignored: %s", qd_expr_name(ign[i]), why);
             st = QD_ERR_ARG;
         } else {
+            if (!qd_is_zero(qd_model_force(m, j)))
+                r->forced = true;
             is_ign[j] = true;
             r->ign[i] = e->q[j];
             r->ign_index[i] = j;
@@ -444,6 +485,24 @@ static qd_status split(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_routh
         }
     qd__free(is_ign);
     return st;
+}
+
+/* betad (p_<c>_dot) and the slots of pdot and f_betad; pdot is filled
+ * once the ignored velocities are known (forced_force). */
+static qd_status forced_alloc(qd_ctx *ctx, const qd_model *m, qd_routh *r) {
+    (void)m;
+    r->betad = arr(ctx, r->nign);
+    r->pdot = arr(ctx, r->nign);
+    r->f_betad = arr(ctx, r->nkeep);
+    if (!r->betad || !r->pdot || !r->f_betad)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < r->nign; i++) {
+        char name[160];
+        snprintf(name, sizeof name, "p_%s_dot", qd_expr_name(r->ign[i]));
+        if (!(r->betad[i] = qd_symbol(ctx, name)))
+            return qd_ctx_status(ctx);
+    }
+    return QD_OK;
 }
 
 qd_routh *qd_routh_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t nign,
@@ -472,7 +531,9 @@ qd_routh *qd_routh_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom *e, 
         return NULL;
     }
     const qd_expr *Rfam = NULL; /* R from legendre_family.c when L is not quadratic */
-    qd_status st = split(ctx, m, e, r, ign);
+    qd_status st = split(ctx, m, e, r, ign, opts && opts->forced);
+    if (st == QD_OK && r->forced)
+        st = forced_alloc(ctx, m, r);
     if (st == QD_OK)
         st = ignored_velocities(ctx, e, r, &Rfam, opts && opts->implicit);
     if (st == QD_OK)

@@ -21,6 +21,7 @@
 #include "spd.h"
 
 #include "../base/mem.h"
+#include "../base/args.h"
 
 #include <stdio.h>
 
@@ -141,4 +142,59 @@ qd_status qd__spd_hamel(qd__spd *d) {
     st = h.Lstar ? qd__spd_rows(d, rows) : qd_ctx_status(ctx);
     qd__free(h.sig);
     return st != QD_OK ? st : QD_OK;
+}
+
+/* ---- Hamel's coefficients gamma_ikm (Desloge ch. 68) ------------------------ */
+
+qd_status qd_hamel_coefficients(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                                const qd_expr *const *a, const qd_expr **out) {
+    QD_ARGS_CTX(ctx, ctx && (n == 0 || (q && a && out)));
+    const qd_expr **b = qd__calloc(ctx, 2 * n * n + 1, sizeof *b), **I = b + n * n;
+    if (!b) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming Hamel's coefficients");
+        return QD_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < n * n; i++)
+        I[i] = qd_int(ctx, i / n == i % n);
+    qd_status st = qd__solve_cols(ctx, n, a, n, I, b, 0);
+    if (st == QD_ERR_SINGULAR)
+        qd_ctx_error(ctx, st, "the velocity map is singular: the quasi-velocities are dependent");
+    for (size_t i = 0; st == QD_OK && i < n; i++)
+        for (size_t k = 0; k < n; k++)
+            for (size_t m = 0; m < n; m++) {
+                const qd_expr *g = qd_int(ctx, 0);
+                for (size_t j = 0; j < n; j++)
+                    for (size_t l = 0; l < n; l++) {
+                        const qd_expr *c = qd_sub(ctx, qd_diff(ctx, a[k * n + j], q[l]),
+                                                  qd_diff(ctx, a[k * n + l], q[j]));
+                        if (c && !qd_is_zero(qd_simplify(ctx, c)))
+                            g = qd_add(ctx, g, qd_mul(ctx, c, qd_mul(ctx, b[j * n + i], b[l * n + m])));
+                    }
+                out[(i * n + k) * n + m] = qd_simplify(ctx, g);
+            }
+    if (st == QD_OK)
+        st = qd_ctx_status(ctx);
+    qd__free(b);
+    return st;
+}
+
+qd_status qd_speeds_hamel_coefficients(qd_ctx *ctx, const qd_speeds_eom *e, const qd_expr **out) {
+    QD_ARGS_CTX(ctx, ctx && e && out);
+    size_t n = e->n;
+    const qd_expr **a = qd__calloc(ctx, n * n + 1, sizeof *a);
+    if (!a) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming Hamel's coefficients");
+        return QD_ERR_NOMEM;
+    }
+    for (size_t r = 0; r < e->m; r++)
+        for (size_t j = 0; j < n; j++)
+            a[r * n + j] = qd_simplify(ctx, qd_diff(ctx, e->def[r], e->qd[j]));
+    for (size_t k = 0; k < e->ncon && e->m + k < n; k++)
+        for (size_t j = 0; j < n; j++)
+            a[(e->m + k) * n + j] = e->con[k].a[j];
+    qd_status st = qd_ctx_status(ctx);
+    if (st == QD_OK)
+        st = qd_hamel_coefficients(ctx, n, e->q, a, out);
+    qd__free(a);
+    return st;
 }

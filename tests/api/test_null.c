@@ -22,6 +22,7 @@
 #include "qdot/equilibria.h"
 #include "qdot/eval.h"
 #include "qdot/expr.h"
+#include "qdot/form.h"
 #include "qdot/hamilton.h"
 #include "qdot/hj.h"
 #include "qdot/impulse.h"
@@ -276,6 +277,80 @@ static void null_canonical(void **state)
     /* ---- qd_gen_result_free */
     /* r NULL */
     qd_gen_result_free(NULL);
+    reset(&F);
+    /* ---- qd_lagrange_bracket */
+    /* ctx NULL */
+    assert_null(qd_lagrange_bracket(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q));
+    reset(&F);
+    /* Q NULL */
+    assert_null(qd_lagrange_bracket(F.ctx, 1, NULL, (const qd_expr * const *)F.e, F.q, F.q));
+    reset(&F);
+    /* P NULL */
+    assert_null(qd_lagrange_bracket(F.ctx, 1, (const qd_expr * const *)F.e, NULL, F.q, F.q));
+    reset(&F);
+    /* u NULL */
+    assert_null(qd_lagrange_bracket(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q));
+    reset(&F);
+    /* v NULL */
+    assert_null(qd_lagrange_bracket(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL));
+    reset(&F);
+    /* ---- qd_lagrange_brackets */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lagrange_brackets(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_lagrange_result *)(void *)F.blob));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lagrange_brackets(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_lagrange_result *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lagrange_brackets(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_lagrange_result *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lagrange_brackets(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (qd_lagrange_result *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lagrange_brackets(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (qd_lagrange_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lagrange_brackets(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_lagrange_result_free */
+    /* r NULL */
+    qd_lagrange_result_free(NULL);
+    reset(&F);
+    /* ---- qd_transformed_hamiltonian */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* newQ NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, F.q, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* newP NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* H NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL, (qd_newham *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_transformed_hamiltonian(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, F.q, NULL));
+    reset(&F);
+    /* ---- qd_newham_free */
+    /* k NULL */
+    qd_newham_free(NULL);
     reset(&F);
     teardown(&F);
 }
@@ -1041,6 +1116,38 @@ static void null_expr(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_eval(F.ctx, F.q, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_form(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_qform_reduce */
+    /* ctx NULL */
+    assert_null(qd_qform_reduce(NULL, F.q, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* phi NULL */
+    assert_null(qd_qform_reduce(F.ctx, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_qform_reduce(F.ctx, F.q, 1, NULL));
+    reset(&F);
+    /* ---- qd_qform_reduce_matrix */
+    /* ctx NULL */
+    assert_null(qd_qform_reduce_matrix(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_qform_reduce_matrix(F.ctx, 1, NULL, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_qform_reduce_matrix(F.ctx, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_qform_free */
+    /* f NULL */
+    qd_qform_free(NULL);
     reset(&F);
     teardown(&F);
 }
@@ -2914,6 +3021,29 @@ static void null_speeds(void **state)
     /* e NULL */
     qd_speeds_eom_free(NULL);
     reset(&F);
+    /* ---- qd_hamel_coefficients */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hamel_coefficients(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hamel_coefficients(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hamel_coefficients(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hamel_coefficients(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_speeds_hamel_coefficients */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_hamel_coefficients(NULL, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_hamel_coefficients(F.ctx, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_hamel_coefficients(F.ctx, NULL, NULL));
+    reset(&F);
     /* ---- qd_speeds_solve */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_solve(NULL, NULL, 1));
@@ -3360,6 +3490,7 @@ int main(void)
         cmocka_unit_test(null_equilibria),
         cmocka_unit_test(null_eval),
         cmocka_unit_test(null_expr),
+        cmocka_unit_test(null_form),
         cmocka_unit_test(null_hamilton),
         cmocka_unit_test(null_hj),
         cmocka_unit_test(null_impulse),

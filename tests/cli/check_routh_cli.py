@@ -141,7 +141,9 @@ def test_errors(qdot):
     check('bad format', rc == 2, err)
     rc, out, err = run(qdot, 'routh', str(EXAMPLES / 'polar_generalized_force.qd'), '--ignore',
                        'theta')
-    check('generalized force', rc == 2 and 'generalized force' in err, err)
+    # issue 35: reduced with p_theta' = Q_theta (Byerly Art. 20a), no longer refused
+    check('generalized force', rc == 0 and 'p_theta_dot = Fth*r' in out
+          and 'f[r] = Fr + p_theta^2/(m*r^3)' in out, out + err)
 
 
 def main():

@@ -1,0 +1,77 @@
+/*
+ * qdot/form.h - real quadratic forms: Lagrange's reduction to a sum of
+ * squares and Sylvester's law of inertia (Desloge, Classical Mechanics,
+ * App. 24-27).
+ *
+ * phi(x) = sum_ij a_ij x_i x_j with a symmetric (App. 27 eqs. 1-3).
+ * Lagrange's reduction (App. 27 Thm 3) completes the square on a nonzero
+ * diagonal element a_kk,
+ *
+ *     phi = a_kk (x_k + sum_{j != k} a_kj/a_kk x_j)^2 + phi',
+ *
+ * phi' free of x_k (a'_ij = a_ij - a_ik a_kj/a_kk), and when every
+ * remaining diagonal element is 0 but a_ij is not, substitutes the pair
+ * x_i = u + v, x_j = u - v (the book's y1 = x1 + x2, y2 = x1 - x2), which
+ * makes the squares 2 a_ij (u^2 - v^2).  The result is exact:
+ *
+ *     phi = sum_k c_k y_k^2,     y_k linear forms in x, independent,
+ *
+ * with rational (or symbolic) c_k.  The c_k are not unique; by Sylvester's
+ * law (App. 27 Thm 4) the numbers n+, n-, n0 of positive, negative and
+ * zero coefficients are (n0 = n - rank).  A symbolic c_k whose sign is not
+ * known leaves the inertia undecided (decided = false) rather than guessed;
+ * a symbolic pivot is taken as nonzero unless it simplifies to 0 (the
+ * reduction is then the generic one, and pivots lists the assumptions).
+ */
+#ifndef QDOT_FORM_H
+#define QDOT_FORM_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "expr.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qd_qform {
+    size_t n;                 /* variables */
+    const qd_expr **x;        /* n: the variables (the caller's symbols) */
+    const qd_expr **a;        /* n*n, row-major, symmetric: phi = x^T a x */
+    size_t nsq;               /* squares: the rank (generically, see pivots) */
+    const qd_expr **coef;     /* nsq coefficients c_k */
+    const qd_expr **lin;      /* nsq linear forms y_k in x (coefficient of the
+                                 variable completed on: 1, or 1/2 after a pair) */
+    size_t npos, nneg, nzero; /* inertia (n+, n-, n0), when decided */
+    bool decided;             /* every c_k of known sign */
+    const char *kind;         /* "positive definite", "negative definite",
+                                 "positive semidefinite", "negative semidefinite",
+                                 "indefinite", "zero"; NULL when undecided */
+    bool paired;              /* the pair substitution was needed (App. 27 P16) */
+} qd_qform;
+
+/* Reduce phi, a homogeneous quadratic in the n variables x (symbols; no
+ * linear or constant term, coefficients free of x): QD_ERR_ARG with a
+ * message naming the offending term otherwise.  The reduction is checked:
+ * phi - sum c_k y_k^2 must expand to 0 (QD_ERR_NUMERIC if not, which would
+ * be a bug).  NULL on failure, reason in ctx; free with qd_qform_free. */
+QD_API qd_qform *qd_qform_reduce(qd_ctx *ctx, const qd_expr *phi, size_t n,
+                                 const qd_expr *const *x);
+
+/* The same from the symmetric matrix a (n*n, row-major; QD_ERR_ARG when
+ * not symmetric) with the names x for the variables. */
+QD_API qd_qform *qd_qform_reduce_matrix(qd_ctx *ctx, size_t n, const qd_expr *const *a,
+                                        const qd_expr *const *x);
+
+QD_API void qd_qform_free(qd_qform *f);
+
+#ifdef __cplusplus
+}
+#endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. An array whose count is 0 may be
+ * NULL. */
+#endif
