@@ -155,4 +155,9 @@ QD_API qd_status qd_rel_decay(qd_ctx *ctx, double c, const qd_rel_particle *pare
 #ifdef __cplusplus
 }
 #endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), or NaN for a function returning a double. An array whose count
+ * is 0 may be NULL. */
 #endif

@@ -8,6 +8,7 @@
  * boosted back to the lab by -V_cm (a pure boost's inverse), so energy and
  * momentum balance to round-off by construction.
  */
+#include "base/args.h"
 #include "rel.h"
 
 #include <math.h>
@@ -17,6 +18,7 @@
 
 qd_status qd_rel_particle_make(qd_ctx *ctx, double c, double m, const double v[3],
                                qd_rel_particle *out) {
+    QD_ARGS_CTX(ctx, ctx && v && out);
     *out = (qd_rel_particle){.m = m};
     memcpy(out->v, v, sizeof out->v);
     return qd_rel_momentum(ctx, c, m, v, &out->E, out->p);
@@ -24,6 +26,7 @@ qd_status qd_rel_particle_make(qd_ctx *ctx, double c, double m, const double v[3
 
 qd_status qd_rel_particle_from_momentum(qd_ctx *ctx, double c, double E, const double p[3],
                                         qd_rel_particle *out) {
+    QD_ARGS_CTX(ctx, ctx && p && out);
     *out = (qd_rel_particle){.E = E};
     memcpy(out->p, p, sizeof out->p);
     qd_status st = qd_rel_mass(ctx, c, E, p, &out->m);
@@ -34,6 +37,7 @@ qd_status qd_rel_particle_from_momentum(qd_ctx *ctx, double c, double E, const d
 
 qd_status qd_rel_total(qd_ctx *ctx, double c, size_t n, const qd_rel_particle *in,
                        qd_rel_particle *out) {
+    QD_ARGS_CTX(ctx, ctx && (n == 0 || in) && out);
     double E = 0, p[3] = {0, 0, 0};
     for (size_t k = 0; k < n; k++) {
         E += in[k].E;
@@ -94,6 +98,7 @@ static bool angle_ok(qd_ctx *ctx, double chi, double phi) {
 
 qd_status qd_rel_elastic(qd_ctx *ctx, double c, const qd_rel_particle in[2], double chi,
                          double phi, qd_rel_particle out[2]) {
+    QD_ARGS_CTX(ctx, ctx && in && out);
     if (!angle_ok(ctx, chi, phi))
         return QD_ERR_ARG;
     qd_rel_particle tot;
@@ -122,6 +127,7 @@ qd_status qd_rel_elastic(qd_ctx *ctx, double c, const qd_rel_particle in[2], dou
 }
 
 double qd_rel_lab_angle(const qd_rel_particle in[2], const qd_rel_particle out[2], unsigned k) {
+    QD_ARGS(NAN, in && out);
     double u[3], x[3];
     for (int i = 0; i < 3; i++)
         u[i] = in[0].v[i] - in[1].v[i];
@@ -146,6 +152,7 @@ static qd_status lab_miss(qd_ctx *ctx, double c, const qd_rel_particle in[2], do
 
 qd_status qd_rel_elastic_lab(qd_ctx *ctx, double c, const qd_rel_particle in[2], double theta,
                              double chi[2], size_t *count) {
+    QD_ARGS_CTX(ctx, ctx && in && chi && count);
     *count = 0;
     if (!(theta >= 0 && theta <= PI)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the lab angle must lie in [0, pi], not %g", theta);
@@ -182,6 +189,7 @@ qd_status qd_rel_elastic_lab(qd_ctx *ctx, double c, const qd_rel_particle in[2],
 
 qd_status qd_rel_threshold_of(qd_ctx *ctx, double c, double m_a, double m_b, double M,
                               qd_rel_threshold *out) {
+    QD_ARGS_CTX(ctx, ctx && out);
     *out = (qd_rel_threshold){0};
     if (!(c > 0) || !(m_a >= 0) || !(m_b > 0) || !(M >= 0) || !isfinite(c + m_a + m_b + M)) {
         qd_ctx_error(ctx, QD_ERR_ARG,
@@ -200,6 +208,7 @@ qd_status qd_rel_threshold_of(qd_ctx *ctx, double c, double m_a, double m_b, dou
 qd_status qd_rel_decay(qd_ctx *ctx, double c, const qd_rel_particle *parent, double m1,
                        double m2, double chi, double phi, qd_rel_particle out[2],
                        double *pstar) {
+    QD_ARGS_CTX(ctx, ctx && parent && out && pstar);
     double M = parent->m;
     if (!(m1 >= 0) || !(m2 >= 0) || !(M > m1 + m2) || !isfinite(M)) {
         qd_ctx_error(ctx, QD_ERR_ARG,

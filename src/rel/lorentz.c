@@ -8,6 +8,7 @@
  * equal to (Gamma - 1)/V^2 and finite at V = 0, so the identity frame needs
  * no special case and small V loses no digits.
  */
+#include "base/args.h"
 #include "rel.h"
 
 #include <math.h>
@@ -42,6 +43,7 @@ void qd__rel_gk(double c, const double V[3], double *G, double *k) {
 }
 
 qd_status qd_rel_gamma(qd_ctx *ctx, double c, const double v[3], double *gamma) {
+    QD_ARGS_CTX(ctx, ctx && v && gamma);
     qd_status st = qd__rel_check(ctx, c, v, "the velocity");
     double k;
     if (st == QD_OK)
@@ -51,6 +53,7 @@ qd_status qd_rel_gamma(qd_ctx *ctx, double c, const double v[3], double *gamma) 
 
 qd_status qd_lorentz_event(qd_ctx *ctx, double c, const double V[3], const double ev[4],
                            double out[4]) {
+    QD_ARGS_CTX(ctx, ctx && V && ev && out);
     qd_status st = qd__rel_check(ctx, c, V, "the frame velocity V");
     if (st != QD_OK)
         return st;
@@ -66,6 +69,7 @@ qd_status qd_lorentz_event(qd_ctx *ctx, double c, const double V[3], const doubl
 
 qd_status qd_lorentz_velocity(qd_ctx *ctx, double c, const double V[3], const double v[3],
                               double out[3]) {
+    QD_ARGS_CTX(ctx, ctx && V && v && out);
     qd_status st = qd__rel_check(ctx, c, V, "the frame velocity V");
     if (st == QD_OK)
         st = qd__rel_check(ctx, c, v, "the velocity v");
@@ -81,6 +85,7 @@ qd_status qd_lorentz_velocity(qd_ctx *ctx, double c, const double V[3], const do
 
 qd_status qd_lorentz_acceleration(qd_ctx *ctx, double c, const double V[3], const double v[3],
                                   const double a[3], double out[3]) {
+    QD_ARGS_CTX(ctx, ctx && V && v && a && out);
     qd_status st = qd__rel_check(ctx, c, V, "the frame velocity V");
     if (st == QD_OK)
         st = qd__rel_check(ctx, c, v, "the velocity v");
@@ -96,6 +101,7 @@ qd_status qd_lorentz_acceleration(qd_ctx *ctx, double c, const double V[3], cons
 
 qd_status qd_lorentz_momentum(qd_ctx *ctx, double c, const double V[3], double E,
                               const double p[3], double *E_out, double p_out[3]) {
+    QD_ARGS_CTX(ctx, ctx && V && p && E_out && p_out);
     qd_status st = qd__rel_check(ctx, c, V, "the frame velocity V");
     if (st != QD_OK)
         return st;
@@ -108,6 +114,7 @@ qd_status qd_lorentz_momentum(qd_ctx *ctx, double c, const double V[3], double E
 }
 
 qd_status qd_lorentz_boost(qd_ctx *ctx, double c, const double V[3], double O[16]) {
+    QD_ARGS_CTX(ctx, ctx && V && O);
     qd_status st = qd__rel_check(ctx, c, V, "the frame velocity V");
     if (st != QD_OK)
         return st;
@@ -123,6 +130,7 @@ qd_status qd_lorentz_boost(qd_ctx *ctx, double c, const double V[3], double O[16
 }
 
 double qd_lorentz_metric_error(const double O[16]) {
+    QD_ARGS(NAN, O);
     static const double g[4] = {1, 1, 1, -1};
     double err = 0;
     for (int i = 0; i < 4; i++)
@@ -137,6 +145,7 @@ double qd_lorentz_metric_error(const double O[16]) {
 
 qd_status qd_rel_momentum(qd_ctx *ctx, double c, double m, const double v[3], double *E,
                           double p[3]) {
+    QD_ARGS_CTX(ctx, ctx && v && E && p);
     qd_status st = qd__rel_check(ctx, c, v, "the velocity v");
     if (st == QD_OK && !(m >= 0 && isfinite(m))) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the rest mass must be a number >= 0, not %g", m);
@@ -153,6 +162,7 @@ qd_status qd_rel_momentum(qd_ctx *ctx, double c, double m, const double v[3], do
 }
 
 qd_status qd_rel_mass(qd_ctx *ctx, double c, double E, const double p[3], double *m) {
+    QD_ARGS_CTX(ctx, ctx && p && m);
     double pc = sqrt(qd__rel_dot(p, p)) * c;
     if (!(c > 0) || !isfinite(c) || !(E > 0) || !isfinite(E) || !isfinite(pc)) {
         qd_ctx_error(ctx, QD_ERR_ARG,
@@ -172,6 +182,7 @@ qd_status qd_rel_mass(qd_ctx *ctx, double c, double E, const double p[3], double
 
 qd_status qd_rel_compose(qd_ctx *ctx, double c, const double u[3], const double v[3],
                          double w[3]) {
+    QD_ARGS_CTX(ctx, ctx && u && v && w);
     qd_status st = qd__rel_check(ctx, c, u, "the frame velocity u");
     if (st == QD_OK)
         st = qd__rel_check(ctx, c, v, "the velocity v");
@@ -187,6 +198,7 @@ qd_status qd_rel_compose(qd_ctx *ctx, double c, const double u[3], const double 
 
 qd_status qd_rel_wigner_angle(qd_ctx *ctx, double c, const double u[3], const double v[3],
                               double *angle) {
+    QD_ARGS_CTX(ctx, ctx && u && v && angle);
     double a[3], b[3];
     qd_status st = qd_rel_compose(ctx, c, u, v, a);
     if (st == QD_OK)
@@ -200,6 +212,7 @@ qd_status qd_rel_wigner_angle(qd_ctx *ctx, double c, const double u[3], const do
 }
 
 qd_status qd_rel_dilate(qd_ctx *ctx, double c, const double V[3], double dtau, double *dt) {
+    QD_ARGS_CTX(ctx, ctx && V && dt);
     double G;
     qd_status st = qd_rel_gamma(ctx, c, V, &G);
     if (st == QD_OK)
@@ -209,6 +222,7 @@ qd_status qd_rel_dilate(qd_ctx *ctx, double c, const double V[3], double dtau, d
 
 qd_status qd_rel_contract(qd_ctx *ctx, double c, const double V[3], const double d[3],
                           double out[3]) {
+    QD_ARGS_CTX(ctx, ctx && V && d && out);
     double G;
     qd_status st = qd_rel_gamma(ctx, c, V, &G);
     if (st != QD_OK)

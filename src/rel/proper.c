@@ -4,6 +4,7 @@
  * dtau^2 = -ds^2/c^2; reference seed-desloge-D.md C6), by the numerics
  * home's adaptive tanh-sinh rule with its error estimate.
  */
+#include "base/args.h"
 #include "rel.h"
 
 #include "num/num.h"
@@ -36,6 +37,7 @@ static double integrand(void *data, double t, double tc) {
 
 qd_status qd_rel_proper_time(qd_ctx *ctx, double c, const qd_expr *const v[3], double t0,
                              double t1, double tol, qd_rel_tau *out) {
+    QD_ARGS_CTX(ctx, ctx && v && out);
     *out = (qd_rel_tau){0};
     if (!(c > 0) || !isfinite(c) || !(t1 >= t0) || !isfinite(t1 - t0)) {
         qd_ctx_error(ctx, QD_ERR_ARG,

@@ -37,6 +37,7 @@
 #include "qdot/plot.h"
 #include "qdot/print.h"
 #include "qdot/read.h"
+#include "qdot/relativity.h"
 #include "qdot/routh.h"
 #include "qdot/scatter.h"
 #include "qdot/sim.h"
@@ -1961,6 +1962,19 @@ static void null_model(void **state)
     /* m NULL */
     assert_null(qd_model_contact_normal_scale(NULL, 1));
     reset(&F);
+    /* ---- qd_model_number */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number(NULL, F.model, "q", F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number(F.ctx, NULL, "q", F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number(F.ctx, F.model, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number(F.ctx, F.model, "q", NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2604,6 +2618,255 @@ static void null_read(void **state)
     reset(&F);
     /* out NULL */
     qd_diag_format(NULL, "q", "q", NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_relativity(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_rel_gamma */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_gamma(NULL, 1, F.d, F.d));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_gamma(F.ctx, 1, NULL, F.d));
+    reset(&F);
+    /* gamma NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_gamma(F.ctx, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_event */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_event(NULL, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* V NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_event(F.ctx, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* ev NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_event(F.ctx, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_event(F.ctx, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_velocity */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_velocity(NULL, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* V NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_velocity(F.ctx, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_velocity(F.ctx, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_velocity(F.ctx, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_acceleration */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_acceleration(NULL, 1, F.d, F.d, F.d, F.d));
+    reset(&F);
+    /* V NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_acceleration(F.ctx, 1, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_acceleration(F.ctx, 1, F.d, NULL, F.d, F.d));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_acceleration(F.ctx, 1, F.d, F.d, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_acceleration(F.ctx, 1, F.d, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_momentum */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_momentum(NULL, 1, F.d, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* V NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_momentum(F.ctx, 1, NULL, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_momentum(F.ctx, 1, F.d, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* E_out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_momentum(F.ctx, 1, F.d, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* p_out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_momentum(F.ctx, 1, F.d, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_boost */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_boost(NULL, 1, F.d, F.d));
+    reset(&F);
+    /* V NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_boost(F.ctx, 1, NULL, F.d));
+    reset(&F);
+    /* O NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_boost(F.ctx, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_metric_error */
+    /* O NULL */
+    assert_true(isnan(qd_lorentz_metric_error(NULL)));
+    reset(&F);
+    /* ---- qd_rel_momentum */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_momentum(NULL, 1, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_momentum(F.ctx, 1, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* E NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_momentum(F.ctx, 1, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_momentum(F.ctx, 1, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_mass */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_mass(NULL, 1, 1, F.d, F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_mass(F.ctx, 1, 1, NULL, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_mass(F.ctx, 1, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_compose */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_compose(NULL, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* u NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_compose(F.ctx, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_compose(F.ctx, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_compose(F.ctx, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_wigner_angle */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_wigner_angle(NULL, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* u NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_wigner_angle(F.ctx, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_wigner_angle(F.ctx, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* angle NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_wigner_angle(F.ctx, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_dilate */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_dilate(NULL, 1, F.d, 1, F.d));
+    reset(&F);
+    /* V NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_dilate(F.ctx, 1, NULL, 1, F.d));
+    reset(&F);
+    /* dt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_dilate(F.ctx, 1, F.d, 1, NULL));
+    reset(&F);
+    /* ---- qd_rel_contract */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_contract(NULL, 1, F.d, F.d, F.d));
+    reset(&F);
+    /* V NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_contract(F.ctx, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* d NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_contract(F.ctx, 1, F.d, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_contract(F.ctx, 1, F.d, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_proper_time */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_proper_time(NULL, 1, (const qd_expr * const *)F.e, 1, 1, 1, (qd_rel_tau *)(void *)F.blob));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_proper_time(F.ctx, 1, NULL, 1, 1, 1, (qd_rel_tau *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_proper_time(F.ctx, 1, (const qd_expr * const *)F.e, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_rel_particle_make */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_particle_make(NULL, 1, 1, F.d, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_particle_make(F.ctx, 1, 1, NULL, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_particle_make(F.ctx, 1, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_particle_from_momentum */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_particle_from_momentum(NULL, 1, 1, F.d, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_particle_from_momentum(F.ctx, 1, 1, NULL, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_particle_from_momentum(F.ctx, 1, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_total */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_total(NULL, 1, 1, NULL, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_total(F.ctx, 1, 1, NULL, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_total(F.ctx, 1, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_rel_elastic */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_elastic(NULL, 1, NULL, 1, 1, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_elastic(F.ctx, 1, NULL, 1, 1, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_elastic(F.ctx, 1, NULL, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_rel_lab_angle */
+    /* in NULL */
+    assert_true(isnan(qd_rel_lab_angle(NULL, NULL, 1)));
+    reset(&F);
+    /* ---- qd_rel_elastic_lab */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_elastic_lab(NULL, 1, NULL, 1, F.d, F.z));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_elastic_lab(F.ctx, 1, NULL, 1, F.d, F.z));
+    reset(&F);
+    /* chi NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_elastic_lab(F.ctx, 1, NULL, 1, NULL, F.z));
+    reset(&F);
+    /* count NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_elastic_lab(F.ctx, 1, NULL, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_rel_threshold_of */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_threshold_of(NULL, 1, 1, 1, 1, (qd_rel_threshold *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_threshold_of(F.ctx, 1, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_rel_decay */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_decay(NULL, 1, NULL, 1, 1, 1, 1, (qd_rel_particle *)(void *)F.blob, F.d));
+    reset(&F);
+    /* parent NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_decay(F.ctx, 1, NULL, 1, 1, 1, 1, (qd_rel_particle *)(void *)F.blob, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_decay(F.ctx, 1, NULL, 1, 1, 1, 1, NULL, F.d));
+    reset(&F);
+    /* pstar NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_decay(F.ctx, 1, NULL, 1, 1, 1, 1, (qd_rel_particle *)(void *)F.blob, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -3505,6 +3768,7 @@ int main(void)
         cmocka_unit_test(null_plot),
         cmocka_unit_test(null_print),
         cmocka_unit_test(null_read),
+        cmocka_unit_test(null_relativity),
         cmocka_unit_test(null_routh),
         cmocka_unit_test(null_scatter),
         cmocka_unit_test(null_sim),
