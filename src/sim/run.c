@@ -120,8 +120,8 @@ static qd_status check_state(qd__run *r, double t, const double *y) {
         big > 1e100 ? "an overflow: the solution grows beyond what a double holds (it blows up "
                       "in finite time there, or the step is too long for it)"
         : j < d && isinf(y[j])
-            ? "an overflow or a division by zero in the step (a singular point of the "
-              "equations, or a step too long)"
+            ? "an overflow or a division by zero in the step (a point where the equations "
+              "are infinite, or a step too long)"
             : "the step produced NaN (an overflow inside it, a step too long for a "
               "fast-growing solution; 0/0; or a state outside the domain of the model's "
               "expressions: a square root or logarithm of a negative number, a speed above c "
@@ -773,7 +773,24 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
     return make_row(r, NULL, it->t, it->y, r->row);
 }
 
-/* The initial state (given, or projected, or its momenta) finite. */
+/* The initial values given (q0, q'0, p0, u0) finite, before anything is
+ * made of them. */
+static qd_status given_finite(const qd_sim *s, const qd_sim_opts *o) {
+    size_t n = s->n;
+    const double *given[] = {o->q0, o->qd0, o->p0, o->u0};
+    size_t count[] = {n, n, n, s->se ? s->nu : 0};
+    const char *pre[] = {"", "", "p_", ""}, *post[] = {"", "'", "", ""};
+    for (size_t k = 0; k < 4; k++)
+        for (size_t j = 0; given[k] && j < count[k]; j++)
+            if (!isfinite(given[k][j])) {
+                qd_ctx_error(s->ctx, QD_ERR_ARG, "the initial state is not finite (%s%s%s = %g)",
+                             pre[k], s->names[k == 3 ? 1 + n + j : 1 + j], post[k], given[k][j]);
+                return QD_ERR_ARG;
+            }
+    return QD_OK;
+}
+
+/* The state made of them (projected, its momenta) finite. */
 static qd_status initial_finite(qd__run *r) {
     for (size_t j = 0; j < r->it->dim; j++)
         if (!isfinite(r->it->y[j])) {
@@ -806,6 +823,8 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         st = qd__impacts_new(&r);
     if (st == QD_OK)
         st = qd__fric_run_new(s);
+    if (st == QD_OK)
+        st = given_finite(s, o);
     if (st == QD_OK)
         st = initial_state(&r, o);
     if (st == QD_OK && s->nimp)

@@ -620,8 +620,8 @@ const char *qd__sim_nonfinite_cause(const qd_sim *s, const double *x, size_t nx)
         return "an overflow: the state has grown beyond what a double holds (a solution "
                "that blows up in finite time, or a step too long for it)";
     if (!any_nan(x, nx))
-        return "a division by zero at a finite state: a singular point of the model's "
-               "expressions (coordinates that degenerate there, such as Euler angles in "
+        return "a division by zero at a finite state: a point where the model's expressions "
+               "are infinite (coordinates that degenerate there, such as Euler angles in "
                "gimbal lock, or 1/sqrt(1 - v^2/c^2) at a speed equal to c)";
     return "the state is outside the domain of the model's expressions (a square root or "
            "logarithm of a negative number, 0/0, or sqrt(1 - v^2/c^2) at a speed above c)";
