@@ -64,6 +64,17 @@ static int whole(const char *opt, const char *v, double *x) {
     return QD_EXIT_OK;
 }
 
+/* --threads N: 0 (one per core) to QD_SWEEP_MAX_THREADS. */
+static int threads_option(const char *v, double *x) {
+    int rc = whole("--threads", v, x);
+    if (rc == QD_EXIT_OK && *x > QD_SWEEP_MAX_THREADS) {
+        cli_diag_error("--threads takes 0 (one per core) to %d threads, not '%s'",
+                       QD_SWEEP_MAX_THREADS, v);
+        return QD_EXIT_USAGE;
+    }
+    return rc;
+}
+
 static int positive(const char *opt, const char *v, double *x) {
     char *end;
     *x = strtod(v, &end);
@@ -95,7 +106,7 @@ static int own_option(int argc, char **argv, int *i, sweep_args *a) {
     if ((v = cli_value(argc, argv, i, "--seed")))
         return whole("--seed", v, &a->seed);
     if ((v = cli_value(argc, argv, i, "--threads")))
-        return whole("--threads", v, &a->threads);
+        return threads_option(v, &a->threads);
     if ((v = cli_value(argc, argv, i, "--renorm")))
         return positive("--renorm", v, &a->renorm);
     if ((v = cli_value(argc, argv, i, "--transient")))
@@ -569,10 +580,10 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         rc = write_result(a, fmt, &r);
     if (rc == QD_EXIT_OK && done.writer)
         rc = cli_sweep_map_write(&a->map, w, r.rows, mapcol, a->sim.file);
-    if (rc == QD_EXIT_OK && done.writer) {
-        long cores = sysconf(_SC_NPROCESSORS_ONLN);
-        summary(&r, done.threads ? done.threads : cores > 0 ? (unsigned)cores : 1, done.ranks);
-    }
+    /* the threads the pool started: asked for (0: the cores), at most the runs */
+    if (rc == QD_EXIT_OK && done.writer)
+        summary(&r, done.ranks > 1 ? done.threads : qd_sweep_threads(done.threads, r.nruns),
+                done.ranks);
     free(r.cols);
     free(r.rows);
     free(r.status);

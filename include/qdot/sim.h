@@ -142,7 +142,10 @@ QD_API qd_status qd_sim_add_output(qd_sim *s, const char *name, const qd_expr *x
  *               coordinates then the velocities, in the equations' order);
  *               called at every evaluation of the right-hand side (so it
  *               must be a function of its arguments, and thread-safe when
- *               runs share the qd_sim). */
+ *               runs share the qd_sim).  A value that is not finite (NaN,
+ *               an infinity) is the callback's failure: the run calls it
+ *               no more and ends with QD_ERR_NUMERIC ("input F is not
+ *               finite at t = ..."). */
 typedef double (*qd_sim_input_fn)(void *data, double t, const double *x);
 /* The check qd_sim_run makes before a run from t0 to t_end: every input
  * used has a source and every table covers the span; QD_ERR_ARG naming the
@@ -293,7 +296,8 @@ QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
 QD_API size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap);
 
 /* QD_OK when opts are valid on their own: method, times, the step, the
- * step count against max_steps, tolerances; else QD_ERR_ARG with the
+ * step count against max_steps, tolerances (t0, t_end and dt finite,
+ * t_end > t0, dt >= 0); else QD_ERR_ARG with the
  * reason in ctx.  qd_sim_run checks the same, then whether the method can
  * take the system, before it starts. */
 QD_API qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *opts);
@@ -304,7 +308,10 @@ QD_API qd_status qd_sim_compile(qd_sim *s);
 QD_API bool qd_sim_compiled(const qd_sim *s);
 
 /* Receives every row (event -1: a sample; else the index of the event in
- * the order added).  Returning nonzero ends the run early (QD_OK).  An
+ * the order added).  Returning a positive value ends the run early
+ * (QD_OK); a negative one is the sink's failure (it could not keep the
+ * row: a write error, an exception in a binding): the run ends there with
+ * QD_ERR_ARG ("the row callback reported a failure at t = ...").  An
  * impact of the model's contact i gives two rows with event nev + i (nev
  * the events added): the state just before it and the state just after
  * (ending in contact: the state at the run's end time).  Contacts whose
@@ -317,8 +324,13 @@ typedef int (*qd_sim_sink)(void *data, int event, const double *row);
  * receives the last row.  Failures (QD_ERR_NUMERIC, QD_ERR_SINGULAR, with
  * the time in the message): step size underflow, no convergence of the
  * Gauss-Legendre iteration, a mass matrix singular at a state, a constraint
- * that projection cannot satisfy; a non-separable H for verlet/yoshida, a
- * missing step or a method that cannot take the system is QD_ERR_ARG. */
+ * that projection cannot satisfy, and, for every method, a state (or its
+ * energy) that is not finite: "non-finite state at t = ..." with the cause
+ * (an overflow, a division by zero, NaN from the right-hand side), so no
+ * row of inf or NaN is ever passed on.  A non-separable H for
+ * verlet/yoshida, a missing step, a time or step that is not finite, an
+ * initial state that is not finite or a method that cannot take the
+ * system is QD_ERR_ARG. */
 QD_API qd_status qd_sim_run(qd_sim *s, const qd_sim_opts *opts, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final);
 

@@ -95,6 +95,11 @@ QD_API qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_o
  * never stops the others; the call itself fails only when it cannot start
  * (bad range, no memory, no threads). */
 #define QD_SWEEP_REASON 160
+/* nthreads above QD_SWEEP_MAX_THREADS is QD_ERR_ARG.  The pool is
+ * qd_sweep_threads(nthreads, count) threads (fewer only when the system
+ * refuses to start one; none started is QD_ERR_UNSUPPORTED). */
+#define QD_SWEEP_MAX_THREADS 1024
+QD_API unsigned qd_sweep_threads(unsigned nthreads, size_t count); /* 0: above the most */
 QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
                               size_t count, unsigned nthreads, double *rows, qd_status *status,
                               char *reasons, void (*progress)(void *data, size_t done, size_t total),

@@ -228,10 +228,9 @@ def _kind(core, speeds):
 class _InputFn:
     """A Python callable f(t, y) -> float as a qd_sim_input_fn.  y is the
     state (q, q') in model order, a fresh numpy array per call.  The C side
-    cannot be unwound through, so an exception is kept (the first one), the
-    value returned from then on is NaN (the step fails, or the sink ends
-    the run at its next row), and simulate raises it after qd_sim_run
-    returns."""
+    cannot be unwound through, so an exception is kept (the first one) and
+    NaN returned, which ends the run (a failed input callback, qdot/sim.h);
+    simulate raises the exception after qd_sim_run returns."""
 
     def __init__(self, name, fn, pos):
         self.name, self.fn = name, fn
@@ -326,27 +325,34 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
 
 def _run(core, s, opts, nev, fns=()):
     """qd_sim_run with a sink that copies every row; the Result.  An
-    exception raised in an input callable ends the run at the next row and
-    is raised here, in place of whatever the run then reported."""
+    exception raised in an input callable (the callback then returns NaN,
+    which ends the run) or in the sink itself (it then returns -1, a
+    failure: qdot/sim.h) is raised here, in place of what the run
+    reported; ctypes cannot unwind through C, and an exception left in a
+    callback would only print "Exception ignored"."""
     ncol = lib.qd_sim_columns(s, opts.method, None, 0)
     names = (ctypes.c_char_p * ncol)()
     lib.qd_sim_columns(s, opts.method, names, ncol)
     columns = [x.decode() for x in names]
     rows = []
+    failed = []
 
     def sink(_data, event, row):
-        if any(fn.error is not None for fn in fns):
-            return 1
-        rows.append((event, row[:ncol]))
-        return 0
+        try:
+            if any(fn.error is not None for fn in fns):
+                return -1
+            rows.append((event, row[:ncol]))
+            return 0
+        except BaseException as err:  # noqa: B036 (re-raised below)
+            failed.append(err)
+            return -1
 
     stats = SimStats()
     callback = SimSink(sink)  # kept alive until qd_sim_run returns
     st = lib.qd_sim_run(s, byref(opts), callback, None, byref(stats), None)
-    for fn in fns:
-        if fn.error is not None:
-            take_error(core.ctx)  # the NaN's consequence, if any: not the cause
-            raise fn.error
+    for err in [fn.error for fn in fns if fn.error is not None] + failed:
+        take_error(core.ctx)  # the failure's consequence: not the cause
+        raise err
     if st != QD_OK:
         raise core.error(st)
     return Result(columns, rows, nev, stats, lib.qd_sim_method_name(opts.method).decode())

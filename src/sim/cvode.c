@@ -121,6 +121,14 @@ static qd_status bdf_step(qd__integ *it) {
                      b->message);
         return QD_ERR_NUMERIC;
     }
+    /* CVODE goes on with steps below round-off (it only warns "t + h = t"):
+     * at a blow-up it would stream the same row until the step limit.  The
+     * explicit pairs' rule (erk.c): a step within 10 ulps of t is an
+     * underflow. */
+    realtype hlast = 0;
+    CVodeGetLastStep(b->mem, &hlast);
+    if (!(fabs(hlast) > 10 * fabs(nextafter(it->t, INFINITY) - it->t)) || !(tret > it->t))
+        return qd__underflow(it, hlast);
     it->told = it->t;
     memcpy(it->yold, it->y, it->dim * sizeof *it->y);
     it->t = tret;

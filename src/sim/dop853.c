@@ -124,7 +124,11 @@ static double err(const qd__integ *it, const double *const *K, double h, const d
         e3 += (a3 / sc) * (a3 / sc);
     }
     double den = e5 + 0.01 * e3;
-    return den > 0 ? fabs(h) * e5 / sqrt(den * (double)it->dim) : 0;
+    /* den is 0 only for a step with no error at all; NaN (a stage or ynew
+     * not finite) must reject the step, not pass as error 0 (issue 30) */
+    if (!(den > 0))
+        return den == 0 ? 0 : NAN;
+    return fabs(h) * e5 / sqrt(den * (double)it->dim);
 }
 
 /* coef: 7 rows of dim, F0..F6 of Hairer's contd8 */

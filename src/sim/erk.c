@@ -188,6 +188,11 @@ qd_status qd__erk_step(qd__integ *it) {
         if (st != QD_OK)
             return st;
         double err = it->fixed ? 0 : tab->err(it, (const double *const *)r->K, h, r->ynew);
+        /* a NaN error, or a new state not finite, is a rejected step whatever
+         * the pair's estimate makes of it (dop853's once passed NaN as 0) */
+        for (size_t i = 0; !it->fixed && isfinite(err) && i < d; i++)
+            if (!isfinite(r->ynew[i]))
+                err = NAN;
         if (!isfinite(err))
             err = 1e10;
         double fac11 = pow(err, tab->expo);

@@ -212,7 +212,24 @@ void qd__sim_uin_eval(qd_sim *s, double t) {
                   : u->kind == SRC_TABLE ? interp(u, t)
                   : u->kind == SRC_FN    ? u->fn(u->data, t, s->in)
                                          : 0;
+        /* a callback's NaN (or infinity) is its failure: the first one is
+         * kept and ends the run (an expression's is the state's, checked
+         * with it) */
+        if (u->kind == SRC_FN && !isfinite(slot[k]) && !s->uin_bad) {
+            s->uin_bad = k + 1;
+            s->uin_bad_t = t;
+            s->uin_bad_v = slot[k];
+        }
     }
+}
+
+qd_status qd__sim_uin_failed(qd_sim *s) {
+    size_t k = s->uin_bad - 1;
+    qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
+                 "input %s is not finite at t = %.17g (its callback returned %g): the "
+                 "callback failed there, or its signal is not defined there",
+                 qd_expr_name(s->in_syms[s->uin_off + k]), s->uin_bad_t, s->uin_bad_v);
+    return QD_ERR_NUMERIC;
 }
 
 qd_status qd_sim_inputs_ready(qd_sim *s, double t0, double t_end) {

@@ -84,6 +84,65 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
     return QD_OK;
 }
 
+/* The column name of component j of the state y of the run's form. */
+static const char *state_name(const qd__run *r, size_t j) {
+    const qd_sim *s = r->s;
+    size_t n = s->n;
+    if (j >= (s->se ? n + s->nu : 2 * n))
+        return s->names[s->nnames - qd__fric_nextra(s) + (j - 2 * n)];
+    return s->names[r->it->form == QD__HAM && j >= n ? 1 + n + j : 1 + j];
+}
+
+/* Every state the run reaches passes here, whatever the method: the
+ * fixed-step ones (verlet, yoshida*, gl*, taylor with --dt, dopri5/dop853
+ * --fixed) have no error estimate that could reject a step into
+ * overflow, and a row of inf or NaN must never be written.  QD_ERR_NUMERIC
+ * "non-finite state at t = ...", naming the first such component, the
+ * last finite state's time and the cause. */
+static qd_status check_state(qd__run *r, double t, const double *y) {
+    qd_sim *s = r->s;
+    size_t d = r->it->dim, j = 0;
+    while (j < d && isfinite(y[j]))
+        j++;
+    if (j == d && isfinite(t))
+        return QD_OK;
+    if (s->uin_bad)
+        return qd__sim_uin_failed(s);
+    /* the cause from the numbers: grown huge (this state or the last
+     * finite one) is an overflow; an infinity from moderate numbers a
+     * division by zero or an overflow in the step; a NaN from them the
+     * right-hand side's */
+    double big = 0;
+    for (size_t i = 0; i < d; i++) {
+        big = isfinite(y[i]) ? fmax(big, fabs(y[i])) : big;
+        big = isfinite(r->it->yold[i]) ? fmax(big, fabs(r->it->yold[i])) : big;
+    }
+    const char *why =
+        big > 1e100 ? "an overflow: the solution grows beyond what a double holds (it blows up "
+                      "in finite time there, or the step is too long for it)"
+        : j < d && isinf(y[j])
+            ? "an overflow or a division by zero in the step (a point where the equations "
+              "are infinite, or a step too long)"
+            : "the step produced NaN (an overflow inside it, a step too long for a "
+              "fast-growing solution; 0/0; or a state outside the domain of the model's "
+              "expressions: a square root or logarithm of a negative number, a speed above c "
+              "in sqrt(1 - v^2/c^2))";
+    qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
+                 "non-finite state at t = %.17g (%s = %g; the last finite state was at t = "
+                 "%.17g): %s", t, j < d ? state_name(r, j) : "t", j < d ? y[j] : t,
+                 r->it->told, why);
+    return QD_ERR_NUMERIC;
+}
+
+/* A finite state whose energy is not: an overflow (x'^2 past 1e308) or a
+ * state outside the model's domain; its row would print inf or NaN. */
+static qd_status energy_not_finite(qd__run *r, double t, double h) {
+    qd_ctx_error(r->s->ctx, QD_ERR_NUMERIC, "non-finite state at t = %.17g (energy = %g; the "
+                 "last finite state was at t = %.17g): %s", t, h, r->it->told,
+                 qd__sim_nonfinite_cause(r->s, &h, 1));
+    return QD_ERR_NUMERIC;
+}
+
 typedef struct measure {
     double E0, dEmax, Tmax, cmax;
     double lost; /* h taken by the impacts so far: E(t) is held to E0 - lost */
@@ -92,17 +151,19 @@ typedef struct measure {
 /* The error measures at state y, t; q' in r->qd.  aux: s->aux_out holds
  * this state's values (a row was just made), else only h and T are
  * evaluated. */
-static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool aux) {
+static qd_status measure_at(qd__run *r, measure *ms, double t, const double *y, bool aux) {
     qd_sim *s = r->s;
     size_t n = s->n;
     const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
+    if (!isfinite(hT[0]))
+        return energy_not_finite(r, t, hT[0]);
     /* friction's share, integrated as y[2n], and a moving surface's work,
      * y[2n + 1]: E + dissipated - surface_work = E0 */
     double dissipated = s->fr ? y[2 * n] : 0, work = s->fr && s->rheo ? y[2 * n + 1] : 0;
     ms->dEmax = fmax(ms->dEmax, fabs(hT[0] + dissipated - work - (ms->E0 - ms->lost)));
     ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
     if (!s->m)
-        return;
+        return QD_OK;
     qd__con_eval(s, t, y, r->qd);
     const double *A = s->con_out, *a0 = A + s->m * n, *g = a0 + s->m;
     for (size_t c = 0; c < s->m; c++) {
@@ -117,6 +178,7 @@ static void measure_at(qd__run *r, measure *ms, double t, const double *y, bool 
         s->con_err[c] = fmax(s->con_err[c], err);
         ms->cmax = fmax(ms->cmax, err);
     }
+    return QD_OK;
 }
 
 /* The friction columns from row[k]: slip_NAME, mode_NAME per contact, then
@@ -139,13 +201,13 @@ static size_t friction_columns(qd__run *r, double t, const double *y, double *ro
 static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, double *row) {
     qd_sim *s = r->s;
     size_t n = s->n, k = 0;
-    qd_status st = qd__run_velocity(r, t, y);
+    qd_status st = check_state(r, t, y);
+    if (st == QD_OK)
+        st = qd__run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    if (!row) {
-        measure_at(r, ms, t, y, false);
-        return QD_OK;
-    }
+    if (!row)
+        return measure_at(r, ms, t, y, false);
     qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
     const double *aux = s->aux_out;
     row[k++] = t;
@@ -165,8 +227,12 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
         k = friction_columns(r, t, y, row, k);
     for (size_t i = 0; i < s->nout; i++)
         row[k++] = aux[qd__aux_out(s) + i];
+    if (s->uin_bad)
+        return qd__sim_uin_failed(s);
     if (ms)
-        measure_at(r, ms, t, y, true);
+        return measure_at(r, ms, t, y, true);
+    if (!isfinite(aux[0]))
+        return energy_not_finite(r, t, aux[0]);
     return QD_OK;
 }
 
@@ -195,8 +261,21 @@ qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
         qd_ctx_error(ctx, QD_ERR_ARG, "unknown integration method");
         return QD_ERR_ARG;
     }
-    if (!isfinite(o->t0) || !(o->t_end > o->t0)) {
+    /* a time that is not a number would run forever (t < inf) or never */
+    if (!isfinite(o->t0) || !isfinite(o->t_end) || !isfinite(o->dt)) {
+        const char *what = !isfinite(o->t0) ? "the start time t0" : !isfinite(o->t_end)
+                               ? "the end time" : "the step dt";
+        qd_ctx_error(ctx, QD_ERR_ARG, "%s must be a finite number, not %g", what,
+                     !isfinite(o->t0) ? o->t0 : !isfinite(o->t_end) ? o->t_end : o->dt);
+        return QD_ERR_ARG;
+    }
+    if (!(o->t_end > o->t0)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the end time must be after the start time");
+        return QD_ERR_ARG;
+    }
+    if (o->dt < 0) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the step dt must be positive (0: a row at every "
+                     "step of an adaptive method), not %g", o->dt);
         return QD_ERR_ARG;
     }
     bool needs_dt = !qd_sim_method_adaptive(o->method) || o->fixed;
@@ -360,7 +439,7 @@ static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
 typedef struct emitter {
     qd_sim_sink sink;
     void *data;
-    bool stopped;
+    bool stopped, failed; /* failed: the sink returned < 0 */
     double last_t;
     bool any;
 } emitter;
@@ -370,8 +449,9 @@ static void emit(emitter *em, int event, const double *row) {
         return;
     em->last_t = row[0];
     em->any = true;
-    if (em->sink && em->sink(em->data, event, row))
-        em->stopped = true;
+    int rc = em->sink ? em->sink(em->data, event, row) : 0;
+    em->stopped = rc != 0;
+    em->failed = rc < 0;
 }
 
 /* The earliest contact struck in the step (r->ev_hit), or nimp. */
@@ -617,6 +697,8 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
     }
     s->tnow = it->t;
     qd_status st = it->ops->step(it);
+    if (st == QD_OK)
+        st = check_state(r, it->t, it->y);
     if (st != QD_OK)
         return st;
     it->steps++;
@@ -697,6 +779,34 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
     return make_row(r, NULL, it->t, it->y, r->row);
 }
 
+/* The initial values given (q0, q'0, p0, u0) finite, before anything is
+ * made of them. */
+static qd_status given_finite(const qd_sim *s, const qd_sim_opts *o) {
+    size_t n = s->n;
+    const double *given[] = {o->q0, o->qd0, o->p0, o->u0};
+    size_t count[] = {n, n, n, s->se ? s->nu : 0};
+    const char *pre[] = {"", "", "p_", ""}, *post[] = {"", "'", "", ""};
+    for (size_t k = 0; k < 4; k++)
+        for (size_t j = 0; given[k] && j < count[k]; j++)
+            if (!isfinite(given[k][j])) {
+                qd_ctx_error(s->ctx, QD_ERR_ARG, "the initial state is not finite (%s%s%s = %g)",
+                             pre[k], s->names[k == 3 ? 1 + n + j : 1 + j], post[k], given[k][j]);
+                return QD_ERR_ARG;
+            }
+    return QD_OK;
+}
+
+/* The state made of them (projected, its momenta) finite. */
+static qd_status initial_finite(qd__run *r) {
+    for (size_t j = 0; j < r->it->dim; j++)
+        if (!isfinite(r->it->y[j])) {
+            qd_ctx_error(r->s->ctx, QD_ERR_ARG, "the initial state is not finite (%s = %g)",
+                         state_name(r, j), r->it->y[j]);
+            return QD_ERR_ARG;
+        }
+    return QD_OK;
+}
+
 /* The run on s, a copy of the compiled system with its own workspace. */
 static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
@@ -720,9 +830,13 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     if (st == QD_OK)
         st = qd__fric_run_new(s);
     if (st == QD_OK)
+        st = given_finite(s, o);
+    if (st == QD_OK)
         st = initial_state(&r, o);
     if (st == QD_OK && s->nimp)
         st = qd__impact_check_start(&r, it.t, it.y);
+    if (st == QD_OK)
+        st = initial_finite(&r);
     if (st == QD_OK)
         st = it.ops->init(&it);
     measure ms = {0};
@@ -733,12 +847,18 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
             ms.E0 = s->aux_out[0];
             /* a start outside the model's domain would print a row of NaN */
             if (!isfinite(ms.E0))
-                st = qd__sim_not_finite(s, it.t, "the energy at the initial state is");
+                st = qd__sim_not_finite_at(s, it.t, "the energy at the initial state is",
+                                           &ms.E0, 1);
         }
     }
     emitter em = {.sink = sink, .data = data};
     if (st == QD_OK)
         st = integrate(&r, o, &em, &ms, stats);
+    if (st == QD_OK && em.failed) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "the row callback reported a failure at t = %.17g: "
+                     "the run stopped there", em.last_t);
+        st = QD_ERR_ARG;
+    }
     stats->steps = it.steps;
     stats->evals = s->evals;
     stats->rejected = it.rejected;

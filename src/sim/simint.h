@@ -87,6 +87,10 @@ struct qd_sim {
     struct qd__input *uin;
     qd_prog *uprog;
     bool uin_ready;
+    /* a run's first callback input that returned a non-finite value: its
+     * index + 1 (0: none), t and value; the run ends at the next check */
+    size_t uin_bad;
+    double uin_bad_t, uin_bad_v;
     /* Coulomb friction (friction.c): nfc contacts; fprog gives for each
      * mu_s, mu_k, N (an expression's value; for a multiplier |N|/|lambda_N|), its
      * slip velocities s1, s2 (QD__FSTRIDE numbers per contact) */
@@ -139,8 +143,11 @@ qd_status qd__sim_uin_compile(qd_sim *s);
 /* Before a run from t0 to t1: every input the equations use has a source,
  * and every table covers [t0, t1]; QD_ERR_ARG naming the input. */
 qd_status qd__sim_uin_check(qd_sim *s, double t0, double t1);
-/* The inputs' values at t and the state already in s->in. */
+/* The inputs' values at t and the state already in s->in.  A callback
+ * value that is not finite is kept (s->uin_bad) and ends the run. */
 void qd__sim_uin_eval(qd_sim *s, double t);
+/* Records "input F is not finite at t" for s->uin_bad (QD_ERR_NUMERIC). */
+qd_status qd__sim_uin_failed(qd_sim *s);
 
 /* Compile outs into a program over s's inputs (angle sums expanded as the
  * generated C does); *count = nout.  NULL on failure, reason in ctx. */
@@ -210,9 +217,15 @@ qd_status qd__aux_compile(qd_sim *s);
 void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd);
 /* h and T at (q, q', t): the first two entries of the result. */
 const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd);
-/* Records "WHAT not finite at t" (QD_ERR_NUMERIC): the state left the domain of
- * the model's expressions (|v| >= c under sqrt(1 - v^2/c^2), ...). */
+/* Records "WHAT not finite at t: CAUSE" (QD_ERR_NUMERIC), CAUSE from the
+ * state last set in s->in and the values x[0..nx) found not finite (x may
+ * be NULL): an overflow of the state, a division by zero (infinities at a
+ * finite state), or a state outside the domain of the model's expressions
+ * (NaN: |v| > c under sqrt(1 - v^2/c^2), ...). */
+qd_status qd__sim_not_finite_at(qd_sim *s, double t, const char *what, const double *x,
+                                size_t nx);
 qd_status qd__sim_not_finite(qd_sim *s, double t, const char *what);
+const char *qd__sim_nonfinite_cause(const qd_sim *s, const double *x, size_t nx);
 /* Run p (compiled over s's inputs, work its workspace) at (q, q', t). */
 void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const double *q,
                  const double *qd, double *out);

@@ -602,17 +602,48 @@ static qd_status singular(qd_sim *s, double t) {
     return QD_ERR_SINGULAR;
 }
 
-/* NaN or infinity in M is not a singular matrix: the state left the domain
- * of L (sqrt(1 - v^2/c^2) at |v| >= c, a log of a negative number), and
- * naming it singular would send the user after the wrong cause.  Only the
- * matrices stop the run: a non-finite f gives non-finite accelerations, which
- * an adaptive method rejects (erk.c) and retries with a smaller step. */
-qd_status qd__sim_not_finite(qd_sim *s, double t, const char *what) {
-    qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
-                 "%s not finite at t = %.17g: the state is outside the domain of the "
-                 "model's expressions (a speed at or above c in sqrt(1 - v^2/c^2), a "
-                 "square root or logarithm of a negative number)", what, t);
+/* NaN or infinity in M is not a singular matrix, and not always a state
+ * outside the domain of L: the message names what the numbers say (issue
+ * 30).  The state in s->in (q, q', t as last set) not finite, or grown
+ * past 1e100, is an overflow (a blow-up, or a step too long); else an
+ * infinity at a finite state is a division by zero (a singular point of
+ * the coordinates: gimbal lock where sin(theta) divides, 1/sqrt(1 -
+ * v^2/c^2) at v = c); else a NaN is an expression outside its domain
+ * (sqrt or log of a negative number, 0/0, sqrt(1 - v^2/c^2) at |v| > c).
+ * Only the matrices stop the run here: a non-finite f gives non-finite
+ * accelerations, which an adaptive method rejects (erk.c) and retries
+ * with a smaller step; run.c checks every state the run reaches. */
+static bool any_nan(const double *x, size_t n) {
+    for (size_t i = 0; x && i < n; i++)
+        if (isnan(x[i]))
+            return true;
+    return false;
+}
+
+const char *qd__sim_nonfinite_cause(const qd_sim *s, const double *x, size_t nx) {
+    double big = 0;
+    for (size_t i = 0; i < 2 * s->n + 1; i++)
+        big = isnan(s->in[i]) ? INFINITY : fmax(big, fabs(s->in[i]));
+    if (!(big <= 1e100))
+        return "an overflow: the state has grown beyond what a double holds (a solution "
+               "that blows up in finite time, or a step too long for it)";
+    if (!any_nan(x, nx))
+        return "a division by zero at a finite state: a point where the model's expressions "
+               "are infinite (coordinates that degenerate there, such as Euler angles in "
+               "gimbal lock, or 1/sqrt(1 - v^2/c^2) at a speed equal to c)";
+    return "the state is outside the domain of the model's expressions (a square root or "
+           "logarithm of a negative number, 0/0, or sqrt(1 - v^2/c^2) at a speed above c)";
+}
+
+qd_status qd__sim_not_finite_at(qd_sim *s, double t, const char *what, const double *x,
+                                size_t nx) {
+    qd_ctx_error(s->ctx, QD_ERR_NUMERIC, "%s not finite at t = %.17g: %s", what, t,
+                 qd__sim_nonfinite_cause(s, x, nx));
     return QD_ERR_NUMERIC;
+}
+
+qd_status qd__sim_not_finite(qd_sim *s, double t, const char *what) {
+    return qd__sim_not_finite_at(s, t, what, NULL, 0);
 }
 
 static bool all_finite(const double *x, size_t n) {
@@ -632,7 +663,7 @@ static bool matrices_finite(const qd_sim *s) {
 static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *r, double *x) {
     size_t n = s->n;
     if (!all_finite(M, n * n))
-        return qd__sim_not_finite(s, t, "the mass matrix is");
+        return qd__sim_not_finite_at(s, t, "the mass matrix is", M, n * n);
     for (size_t i = 0; i < n * n; i++)
         s->K[i] = M[i];
     for (size_t i = 0; x != r && i < n; i++)
@@ -669,9 +700,16 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
     for (size_t i = 0; i < n; i++)
         dy[i] = y[n + i];
     if (s->m) {
-        if (!saddle_solve(s, t, y))
-            return matrices_finite(s) ? singular(s, t)
-                                      : qd__sim_not_finite(s, t, "the mass matrix is");
+        if (!saddle_solve(s, t, y)) {
+            if (matrices_finite(s))
+                return singular(s, t);
+            /* the values not finite: M's, else A's */
+            bool m_ok = all_finite(s->acc_out, n * n);
+            return qd__sim_not_finite_at(s, t, m_ok ? "the constraint matrix is"
+                                                    : "the mass matrix is",
+                                         s->acc_out + (m_ok ? n * n + n : 0),
+                                         m_ok ? s->m * n : n * n);
+        }
         memcpy(dy + n, s->rhs, n * sizeof *dy);
         if (s->fr)
             dy[2 * n] = qd__fric_power(s);
@@ -728,10 +766,7 @@ qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd) {
     return solve_mass(s, s->tnow, s->mom_out, p, qd);
 }
 
-qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy) {
-    s->evals++;
-    if (s->ext_rhs)
-        return s->ext_rhs(s->ext_data, t, y, dy);
+static qd_status form_rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy) {
     if (form == QD__LAG)
         return lag_rhs(s, t, y, dy);
     if (form == QD__SPD)
@@ -741,4 +776,15 @@ qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *d
     if (st == QD_OK)
         qd__force(s, t, y, qd__second(s, y, dy), dy + n);
     return st;
+}
+
+qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy) {
+    s->evals++;
+    if (s->ext_rhs)
+        return s->ext_rhs(s->ext_data, t, y, dy);
+    /* an input callback that failed ends the run: no more calls to it */
+    if (s->uin_bad)
+        return qd__sim_uin_failed(s);
+    qd_status st = form_rhs(s, form, t, y, dy);
+    return st == QD_OK && s->uin_bad ? qd__sim_uin_failed(s) : st;
 }

@@ -141,6 +141,13 @@ static qd_status start(qd_ctx *ctx, sw_pool *p, unsigned nthreads,
     return QD_OK;
 }
 
+unsigned qd_sweep_threads(unsigned nthreads, size_t count) {
+    if (nthreads > QD_SWEEP_MAX_THREADS)
+        return 0;
+    nthreads = nthreads ? nthreads : cores();
+    return count < nthreads ? (unsigned)count : nthreads;
+}
+
 qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
                        size_t count, unsigned nthreads, double *rows, qd_status *status,
                        char *reasons, void (*progress)(void *data, size_t done, size_t total),
@@ -151,12 +158,15 @@ qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, 
                      w->nruns);
         return QD_ERR_ARG;
     }
+    if (nthreads > QD_SWEEP_MAX_THREADS) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "%u threads: a sweep runs on at most %d (0: one per "
+                     "core)", nthreads, QD_SWEEP_MAX_THREADS);
+        return QD_ERR_ARG;
+    }
     qd_status st = qd__sweep_ready(ctx, w);
     if (st != QD_OK || count == 0)
         return st;
-    nthreads = nthreads ? nthreads : cores();
-    if (nthreads > count)
-        nthreads = (unsigned)count;
+    nthreads = qd_sweep_threads(nthreads, count);
     sw_pool p = {.w = w, .base = base, .first = first, .count = count, .rows = rows,
                  .status = status, .reasons = reasons};
     atomic_init(&p.next, 0);
