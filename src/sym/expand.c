@@ -149,12 +149,14 @@ static const qd_poly *int_pow(qd_xsess *s, const qd_expr *e, const qd_expr *b, l
     const qd_poly *pb = qd__xs_poly(s, b);
     if (!pb)
         return NULL;
-    if (n >= 2 && pb->n >= 2) {
+    if (n >= 2 || (n <= -2 && pb->n == 1)) {
         double bytes = qd_poly_pow_bytes(s->ctx, pb, n);
         if (bytes < 0)
             return NULL;
         if (bytes > QD_EXPAND_MAX_BYTES) { /* kept as it is, like an exponent beyond MAX_EXPAND_EXP */
             const qd_expr *g = qd_pow(s->ctx, qd__xs_expr(s, pb), qd_int(s->ctx, n));
+            if (g && g->kind != QD_POW) /* (c x)^n = c^n x^n: each factor kept or expanded */
+                return alias(s, e, qd__xs_poly(s, g));
             return g ? own_as(s, e, gen_poly(s, g, 1)) : NULL;
         }
     }
@@ -477,7 +479,8 @@ const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e) {
         return NULL;
     qd_xsess s;
     qd__xs_init(&s, ctx);
+    qd_gmp_section outer = qd__gmp_enter(ctx);
     const qd_expr *r = qd__xs_expand(&s, e);
     qd__xs_free(&s);
-    return r;
+    return qd__gmp_leave(ctx, outer) ? r : NULL;
 }

@@ -208,6 +208,12 @@ const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool
         *folded = true;
         return ctx->zero;
     }
+    /* too many bits to fold (after the root below they only shrink) */
+    double bits = (double)ap * (double)mpz_sizeinbase(mpq_numref(a->u.q), 2) / (double)d;
+    double dbits = (double)ap * (double)mpz_sizeinbase(mpq_denref(a->u.q), 2) / (double)d;
+    if (bits > QD_MAX_FOLD_BITS || dbits > QD_MAX_FOLD_BITS)
+        return NULL;
+    qd_gmp_section outer = qd__gmp_enter(ctx);
     mpz_t num, den;
     mpz_inits(num, den, NULL);
     mpz_set(num, mpq_numref(a->u.q));
@@ -237,6 +243,10 @@ const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool
         *folded = true;
     }
     mpz_clears(num, den, NULL);
+    if (!qd__gmp_leave(ctx, outer)) { /* GMP's memory was refused: QD_ERR_NOMEM */
+        *folded = true;
+        return NULL;
+    }
     return r;
 }
 

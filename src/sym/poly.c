@@ -9,6 +9,7 @@
 #include "poly.h"
 #include "../base/mem.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -523,8 +524,10 @@ bool qd_poly_fits(qd_ctx *ctx, double bytes) {
 }
 
 double qd_poly_pow_bytes(qd_ctx *ctx, const qd_poly *a, long n) {
-    if (a->n < 2 || n < 2)
+    if (a->n == 0 || (a->n >= 2 && n < 2))
         return 0;
+    if (n < 0) /* one term: its inverse to the -n */
+        n = n == LONG_MIN ? LONG_MAX : -n;
     double num, den, nvars, box = box_terms(ctx, a, NULL, n, &nvars);
     bool flt;
     if (box < 0) {
@@ -658,6 +661,8 @@ qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
     }
     if (a->n == 0)
         return n > 0 ? qd_poly_zero(ctx) : NULL;
+    if (!qd_poly_fits(ctx, qd_poly_pow_bytes(ctx, a, n)))
+        return NULL;
     if (a->n == 1)
         return mono_pow(ctx, a, n);
     if (n < 0) {
@@ -665,8 +670,6 @@ qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
         return NULL;
     }
     bool done;
-    if (!qd_poly_fits(ctx, qd_poly_pow_bytes(ctx, a, n)))
-        return NULL;
     qd_poly *fast = qd_poly_pow_flint(ctx, a, n, &done);
     if (!done)
         fast = qd_poly_pow_packed(ctx, a, n, &done);

@@ -57,6 +57,22 @@ static void test_large_power_kept(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* A number too large to fold stays a power, also as the coefficient of a
+ * monomial: (2^100000)^100000 would have 10^10 bits. */
+static void test_large_number_power_kept(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *e = rd(ctx, "(2^100000)^100000");
+    assert_int_equal(qd_expr_kind(e), QD_POW);
+    assert_ptr_equal(qd_expand(ctx, e), e);
+    const qd_expr *m = qd_expand(ctx, rd(ctx, "(2^100000*x)^100000"));
+    assert_ptr_equal(m, qd_mul(ctx, e, rd(ctx, "x^100000")));
+    const qd_expr *i = qd_expand(ctx, rd(ctx, "(2^100000*x)^-100000"));
+    assert_ptr_equal(i, qd_pow(ctx, m, qd_int(ctx, -1)));
+    assert_int_equal(qd_ctx_status(ctx), QD_OK);
+    qd_ctx_free(ctx);
+}
+
 /* (x+1)^3000 (y+1)^3000: 9 million terms of up to 6000 bits, refused. */
 static void test_large_product_refused(void **state) {
     (void)state;
@@ -92,6 +108,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exponent_beyond_limit),
         cmocka_unit_test(test_large_power_kept),
+        cmocka_unit_test(test_large_number_power_kept),
         cmocka_unit_test(test_large_product_refused),
         cmocka_unit_test(test_model_with_huge_power),
     };
