@@ -121,6 +121,9 @@ const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
 /* a^e for numbers; NULL result with *exact=false when it does not fold. */
 const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded);
 int qd__num_cmp(const qd_expr *a, const qd_expr *b);
+/* Whether number e is a finite double; else QD_ERR_NUMERIC recorded, naming
+ * its size ("the number 10^100000 overflows a double"). */
+bool qd__num_finite(qd_ctx *ctx, const qd_expr *e);
 bool qd__is_rational(const qd_expr *e);
 bool qd__is_float(const qd_expr *e);
 

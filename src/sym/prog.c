@@ -104,6 +104,8 @@ static bool is_leaf_kind(const qd_expr *e) {
 
 /* Can e be computed at all?  (It is not an input: those are indexed first.) */
 static bool computable(comp *c, const qd_expr *e) {
+    if (qd__is_num(e))
+        return qd__num_finite(c->ctx, e);
     if (e->kind == QD_SYMBOL) {
         qd_ctx_error(c->ctx, QD_ERR_UNBOUND, "'%s' has no value: it is not an input",
                      e->u.sym.name);
