@@ -360,7 +360,8 @@ static int run(cli_sim *c, const cli_sim_args *a) {
             if (cli_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));
             else {
-                cli_diag_error("the result has a non-finite number; JSON cannot hold it");
+                cli_diag_error("cannot write the JSON summary: %s",
+                               jb.failed ? "out of memory" : cli_json_why(&j));
                 rc = QD_EXIT_FAIL;
             }
         }

@@ -444,6 +444,12 @@ static const qd_expr *primary(rd *p) {
         p->depth++;
         next(p);
         const qd_expr *e = sum(p);
+        if (e && p->tok == T_COMMA) { /* (1, 2, 3) */
+            p->depth--;
+            return fail(p, p->tpos, 1, "write one expression, or each component on its own",
+                        "a vector or tuple is not an expression here: ',' inside '(' at column %zu",
+                        column(p, open));
+        }
         if (!e || !close(p, T_RPAR, ')', '(', open))
             return NULL;
         return e;
