@@ -639,7 +639,8 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
             if (cli_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));
             else {
-                cli_diag_error("the result has a non-finite number; JSON cannot hold it");
+                cli_diag_error("cannot write the JSON summary: %s",
+                               jb.failed ? "out of memory" : cli_json_why(&j));
                 rc = QD_EXIT_FAIL;
             }
         }

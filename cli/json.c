@@ -101,7 +101,7 @@ void cli_json_string(cli_json *j, const char *s) {
 
 bool cli_json_number(cli_json *j, double v) {
     if (!isfinite(v)) {
-        j->failed = true;
+        j->failed = j->nonfinite = true;
         return false;
     }
     before_item(j);
@@ -132,11 +132,19 @@ void cli_json_expr(cli_json *j, qd_ctx *ctx, const qd_expr *x) {
     qd_buf s = QD_BUF_INIT;
     qd_print(ctx, x, QD_FMT_TEXT, &s);
     if (s.failed)
-        j->failed = true;
+        j->failed = j->nomem = true;
     cli_json_string(j, qd_buf_str(&s));
     qd_buf_free(&s);
 }
 
 bool cli_json_ok(const cli_json *j) {
     return !j->failed && !j->out->failed && j->depth == 0 && !j->after_key;
+}
+
+const char *cli_json_why(const cli_json *j) {
+    if (j->out->failed || j->nomem)
+        return "out of memory";
+    if (j->nonfinite)
+        return "a non-finite number (JSON cannot hold it)";
+    return "an unfinished or too deeply nested document";
 }

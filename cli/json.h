@@ -24,6 +24,8 @@ typedef struct cli_json {
     uint32_t is_object;  /* bit d: the container at depth d is an object */
     bool after_key;      /* the next value completes a member */
     bool failed;         /* a non-finite number or nesting beyond QD_JSON_MAX_DEPTH */
+    bool nonfinite;      /* ... because of a non-finite number */
+    bool nomem;          /* an expression could not be printed for want of memory */
 } cli_json;
 
 void cli_json_init(cli_json *j, qd_buf *out);
@@ -40,5 +42,8 @@ void cli_json_null(cli_json *j);
 void cli_json_expr(cli_json *j, qd_ctx *ctx, const qd_expr *x);
 /* The document is complete, nothing was refused and no memory ran out. */
 bool cli_json_ok(const cli_json *j);
+/* Why the document is not ok: "out of memory", "a non-finite number (JSON
+ * cannot hold it)" or "an unfinished or too deeply nested document". */
+const char *cli_json_why(const cli_json *j);
 
 #endif

@@ -213,6 +213,10 @@ static int box_item(cli_lin_run *r, const char *item, double *lo, double *hi, bo
     if (rc == QD_EXIT_OK && !(lo[j] < hi[j])) {
         cli_diag_error("--box: the range of %s is empty", name);
         rc = QD_EXIT_USAGE;
+    } else if (rc == QD_EXIT_OK && !isfinite(hi[j] - lo[j])) {
+        cli_diag_error("--box: the range of %s is too wide: its width %g - (%g) overflows a double",
+                       name, hi[j], lo[j]);
+        rc = QD_EXIT_USAGE;
     }
     return rc;
 }

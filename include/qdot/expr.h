@@ -44,8 +44,11 @@ QD_API void qd_ctx_free(qd_ctx *ctx);           /* frees every expression; NULL 
  * free_fn are never given NULL.  The allocator must outlive the context and
  * every object made with it (results are freed through it, after the context
  * if need be); what malloc_fn and realloc_fn return must be aligned as
- * malloc's.  GMP, FLINT and LAPACK allocate on their own (docs/design.md,
- * "Allocation and out-of-memory"). */
+ * malloc's.  GMP's and FLINT's large requests (1024 bytes or more) in
+ * expansion, cancelling, factoring and number folding are asked of this
+ * allocator first, and a refusal gives QD_ERR_NOMEM; their memory itself
+ * and LAPACK's come from elsewhere (docs/design.md, "Allocation and
+ * out-of-memory"). */
 typedef struct qd_allocator {
     void *(*malloc_fn)(void *user, size_t size);
     void *(*realloc_fn)(void *user, void *p, size_t size);

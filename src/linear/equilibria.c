@@ -570,6 +570,16 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
         memcpy(lo, o.lo, n * sizeof *lo);
         memcpy(hi, o.hi, n * sizeof *hi);
     }
+    for (size_t j = 0; j < n; j++) /* the samples are lo + (hi - lo) u: the width must be finite */
+        if (!(lo[j] <= hi[j]) || !isfinite(hi[j] - lo[j])) {
+            const char *name = qd_expr_name(e->q[j]);
+            qd_ctx_error(ctx, QD_ERR_ARG, "the search box of %s, %g..%g, %s", name, lo[j], hi[j],
+                         lo[j] <= hi[j] ? "is too wide: its width overflows a double"
+                                        : "is empty or not a range of numbers");
+            qd_ctx_error_about(ctx, QD_SUBJECT_COORD, j, name, QD_REASON_NONE, NULL);
+            st = QD_ERR_ARG;
+            goto done;
+        }
     /* the force scale: the median of the scales at spread points */
     double scales[9];
     for (int s = 0; s < 9; s++) {

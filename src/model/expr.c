@@ -20,6 +20,7 @@
 #include "parser.h"
 #include "base/diag.h"
 #include "base/mem.h"
+#include "sym/written.h"
 
 #include <ctype.h>
 #include <stdio.h>
@@ -401,7 +402,7 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
     } else if (qd_func_from_name(name, &f)) {
         if (!qd__mdl_check_arity(p, name, na, f == QD_ATAN2 ? 2 : 1, off, len))
             return false;
-        e = f == QD_ATAN2 ? qd_fn2(C(p), f, args[0], args[1]) : qd_fn(C(p), f, args[0]);
+        e = f == QD_ATAN2 ? qd__atan2_written(C(p), args[0], args[1]) : qd_fn(C(p), f, args[0]);
     } else {
         value dummy;
         if (lookup_name(p, off, n, &dummy))
@@ -580,7 +581,7 @@ static bool parse_power(parser *p, value *out) {
     const char *base = out->kind == VK_VECTOR ? "as a base; |r|^2 is dot(r, r)" : "as a base";
     if (!need_scalar(p, out, base) || !need_scalar(p, &e, "as an exponent"))
         return false;
-    out->c[0] = qd_pow(C(p), out->c[0], e.c[0]);
+    out->c[0] = qd__pow_written(C(p), out->c[0], e.c[0]);
     span(out, out, &e);
     return qd__mdl_kernel_ok(p, out);
 }

@@ -87,6 +87,8 @@ static double value(walk *w, const qd_expr *e) {
     switch ((qd_kind)e->kind) {
     case QD_RATIONAL:
     case QD_FLOAT:
+        if (w->st == QD_OK && !qd__num_finite(w->ctx, e))
+            w->st = QD_ERR_NUMERIC;
         return qd_number_value(e);
     case QD_CONSTANT:
         return e->tag == QD_PI ? 3.14159265358979323846 : 2.71828182845904523536;

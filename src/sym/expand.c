@@ -12,6 +12,10 @@
  * generator's power folds into something that is not a clean factor
  * ((x+1)^2 here), the term is rebuilt by the constructors and expanded
  * again.
+ *
+ * A power of a sum whose expansion would exceed QD_EXPAND_MAX_BYTES (poly.h)
+ * stays a power, a generator of its own; a product that large is refused
+ * (QD_ERR_TOOBIG), so GMP and FLINT are never asked for more.
  */
 #include "poly.h"
 #include "../base/mem.h"
@@ -146,6 +150,17 @@ static const qd_poly *int_pow(qd_xsess *s, const qd_expr *e, const qd_expr *b, l
     const qd_poly *pb = qd__xs_poly(s, b);
     if (!pb)
         return NULL;
+    if (n >= 2 || (n <= -2 && pb->n == 1)) {
+        double bytes = qd_poly_pow_bytes(s->ctx, pb, n);
+        if (bytes < 0)
+            return NULL;
+        if (bytes > QD_EXPAND_MAX_BYTES) { /* kept as it is, like an exponent beyond MAX_EXPAND_EXP */
+            const qd_expr *g = qd_pow(s->ctx, qd__xs_expr(s, pb), qd_int(s->ctx, n));
+            if (g && g->kind != QD_POW) /* (c x)^n = c^n x^n: each factor kept or expanded */
+                return alias(s, e, qd__xs_poly(s, g));
+            return g ? own_as(s, e, gen_poly(s, g, 1)) : NULL;
+        }
+    }
     if (n >= 0 || pb->n == 1)
         return own_as(s, e, qd_poly_pow(s->ctx, pb, n));
     if (pb->n == 0) {
@@ -278,14 +293,20 @@ static const qd_expr *gen_pow(qd_xsess *s, uint32_t var, int32_t exp) {
 
 static const qd_expr *base_of(const qd_expr *f) { return f->kind == QD_POW ? f->args[0] : f; }
 
+static bool sum_to_pos_int(const qd_expr *f) {
+    return f->kind == QD_POW && f->args[0]->kind == QD_ADD && qd_is_integer(f->args[1]) &&
+           qd_number_sign(f->args[1]) > 0;
+}
+
 /* Is f = g^k a factor a canonical product can hold as it is, with the
  * generator's base?  Not when it folded to a number, a product or a sum, or
- * to a positive power of a sum. */
+ * to a positive power of a sum, unless g is one already: a power kept
+ * unexpanded on purpose (too large), whose powers are larger still and would
+ * only be kept again, forever. */
 static bool clean_factor(const qd_expr *g, const qd_expr *f) {
     if (qd__is_num(f) || f->kind == QD_MUL || f->kind == QD_ADD || base_of(f) != base_of(g))
         return false;
-    return !(f->kind == QD_POW && f->args[0]->kind == QD_ADD && qd_is_integer(f->args[1]) &&
-             qd_number_sign(f->args[1]) > 0);
+    return !sum_to_pos_int(f) || sum_to_pos_int(g);
 }
 
 static void sort_factors(const qd_expr **f, size_t n) {
@@ -460,7 +481,8 @@ const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e) {
         return NULL;
     qd_xsess s;
     qd__xs_init(&s, ctx);
+    qd_gmp_section outer = qd__gmp_enter(ctx);
     const qd_expr *r = qd__xs_expand(&s, e);
     qd__xs_free(&s);
-    return r;
+    return qd__gmp_leave(ctx, outer) ? r : NULL;
 }

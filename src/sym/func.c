@@ -12,6 +12,7 @@
  */
 #include "node.h"
 #include "../base/args.h"
+#include "written.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -307,4 +308,12 @@ const qd_expr *qd_uderiv(qd_ctx *ctx, const char *name, size_t nslots, const uns
     if (!proto.u.fn.name)
         return NULL;
     return qd__intern(ctx, &proto, n, args);
+}
+
+const qd_expr *qd__atan2_written(qd_ctx *ctx, const qd_expr *y, const qd_expr *x) {
+    if (y && x && y->kind == QD_RATIONAL && x->kind == QD_RATIONAL && qd_is_zero(y) && qd_is_zero(x)) {
+        qd_ctx_error(ctx, QD_ERR_DIVZERO, "atan2(0, 0) has no value: the angle of the origin");
+        return NULL;
+    }
+    return qd_fn2(ctx, QD_ATAN2, y, x);
 }

@@ -234,6 +234,7 @@ const char *qd__find_name(const qd_ctx *ctx, const char *name) {
 qd_ctx *qd_ctx_new(void) { return qd_ctx_new_with(NULL); }
 
 qd_ctx *qd_ctx_new_with(const qd_allocator *a) {
+    qd__gmp_install();
     qd_ctx *ctx = qd__mem_calloc(a, 1, sizeof *ctx);
     if (!ctx)
         return NULL;

@@ -112,14 +112,37 @@ bool qd__is_canonical(const qd_expr *proto, size_t nargs, const qd_expr *const *
 
 /* ---- number.c --------------------------------------------------------- */
 #define QD_MAX_FOLD_EXP 100000UL /* a rational to a larger integer power stays a power */
+/* ... and so does one whose numerator or denominator would exceed this many
+ * bits (2^26: 8 MiB), so GMP is never asked for more. */
+#define QD_MAX_FOLD_BITS (1UL << 26)
 const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q);
 const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
 const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
 /* a^e for numbers; NULL result with *exact=false when it does not fold. */
 const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded);
 int qd__num_cmp(const qd_expr *a, const qd_expr *b);
+/* Whether number e is a finite double; else QD_ERR_NUMERIC recorded, naming
+ * its size ("the number 10^100000 overflows a double"). */
+bool qd__num_finite(qd_ctx *ctx, const qd_expr *e);
 bool qd__is_rational(const qd_expr *e);
 bool qd__is_float(const qd_expr *e);
+
+/* ---- gmpmem.c: GMP's and FLINT's allocations ---------------------------
+ * qd__gmp_install (called by qd_ctx_new_with) hooks GMP's and FLINT's
+ * allocation functions once per process.  Between qd__gmp_enter(ctx) and
+ * qd__gmp_leave(ctx, outer) each of their requests of at least
+ * QD_GMP_PROBE_MIN bytes on this thread is first asked of ctx's allocator;
+ * it is served either way, and leave returns false, with QD_ERR_NOMEM
+ * recorded, when one was refused: the caller then drops what it computed.
+ * Sections nest. */
+#define QD_GMP_PROBE_MIN 1024
+typedef struct qd_gmp_section {
+    qd_ctx *ctx;
+    bool refused;
+} qd_gmp_section;
+void qd__gmp_install(void);
+qd_gmp_section qd__gmp_enter(qd_ctx *ctx);
+bool qd__gmp_leave(qd_ctx *ctx, qd_gmp_section outer);
 
 /* ---- cmp.c --------------------------------------------------------------- */
 /* Natural-order comparison of names: theta2 < theta10. */

@@ -207,13 +207,24 @@ const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool
         return NULL;
     if (mpq_sgn(a->u.q) == 0) {
         if (p < 0) {
-            qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero: 0 to a negative power");
+            if (p == -1 && d == 1) /* 1/0 is 0^-1 */
+                qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero");
+            else if (d == 1)
+                qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero: 0 to the power %ld", p);
+            else
+                qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero: 0 to the power %ld/%lu", p, d);
             *folded = true;
             return NULL;
         }
         *folded = true;
         return ctx->zero;
     }
+    /* too many bits to fold (after the root below they only shrink) */
+    double bits = (double)ap * (double)mpz_sizeinbase(mpq_numref(a->u.q), 2) / (double)d;
+    double dbits = (double)ap * (double)mpz_sizeinbase(mpq_denref(a->u.q), 2) / (double)d;
+    if (bits > QD_MAX_FOLD_BITS || dbits > QD_MAX_FOLD_BITS)
+        return NULL;
+    qd_gmp_section outer = qd__gmp_enter(ctx);
     mpz_t num, den;
     mpz_inits(num, den, NULL);
     mpz_set(num, mpq_numref(a->u.q));
@@ -243,6 +254,10 @@ const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool
         *folded = true;
     }
     mpz_clears(num, den, NULL);
+    if (!qd__gmp_leave(ctx, outer)) { /* GMP's memory was refused: QD_ERR_NOMEM */
+        *folded = true;
+        return NULL;
+    }
     return r;
 }
 
@@ -298,6 +313,20 @@ static double rational_value(const mpq_t q) {
     if (mpz_sizeinbase(n, 2) <= 53 && mpz_sizeinbase(d, 2) <= 53)
         return mpz_get_d(n) / mpz_get_d(d);
     return mpq_get_d(q);
+}
+
+bool qd__num_finite(qd_ctx *ctx, const qd_expr *e) {
+    if (e->kind != QD_RATIONAL || isfinite(rational_value(e->u.q)))
+        return true;
+    signed long en, ed;
+    double mn = mpz_get_d_2exp(&en, mpq_numref(e->u.q));
+    double md = mpz_get_d_2exp(&ed, mpq_denref(e->u.q));
+    double lg = log10(fabs(mn / md)) + (double)(en - ed) * log10(2.0); /* log10 |e| */
+    double ip = floor(lg);
+    qd_ctx_error(ctx, QD_ERR_NUMERIC,
+                 "the number %s%.3ge%.0f overflows a double (the largest is about 1.8e308)",
+                 mpq_sgn(e->u.q) < 0 ? "-" : "", pow(10, lg - ip), ip);
+    return false;
 }
 
 double qd_number_value(const qd_expr *e) {

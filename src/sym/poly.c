@@ -9,6 +9,7 @@
 #include "poly.h"
 #include "../base/mem.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -426,6 +427,132 @@ static size_t max_len(const qd_poly *p) {
     return m;
 }
 
+/* ---- size bounds -------------------------------------------------------------
+ * What x*y or a^n would take, bounded from above before any of it is made, so
+ * that an expansion too large for memory is refused (or, in expand.c, left as
+ * a power) instead of running GMP and FLINT out of memory, which abort. */
+
+/* log2 of the sum of |numerator| over p's terms (bits of its height bound),
+ * and the bits of its largest denominator; float coefficients count as 64
+ * bits that do not grow. */
+static void coef_bits(const qd_poly *p, double *num, double *den, bool *flt) {
+    double top = 0, sum = 0;
+    *den = 0;
+    *flt = false;
+    for (size_t t = 0; t < p->n; t++) {
+        const qd_coef *c = &p->terms[t].c;
+        double nb = 0, db = 0; /* log2 |numerator|, bits of the denominator */
+        if (c->kind == QD_COEF_INT) {
+            nb = c->v.i == 0 ? -1e300 : log2(fabs((double)c->v.i));
+        } else if (c->kind == QD_COEF_BIG) {
+            signed long ex;
+            double m = mpz_get_d_2exp(&ex, mpq_numref(p->bigs[c->v.big]));
+            nb = log2(fabs(m)) + (double)ex;
+            db = (double)mpz_sizeinbase(mpq_denref(p->bigs[c->v.big]), 2);
+        } else {
+            *flt = true;
+        }
+        if (nb > top) { /* sum stays the sum of 2^(nb - top) */
+            sum = sum * exp2(top - nb) + 1;
+            top = nb;
+        } else {
+            sum += exp2(nb - top);
+        }
+        *den = db > *den ? db : *den;
+    }
+    *num = top + log2(sum > 1 ? sum : 1);
+}
+
+typedef struct vexp {
+    uint32_t var, side;
+    int32_t exp;
+} vexp;
+
+static int vexp_cmp(const void *pa, const void *pb) {
+    const vexp *a = pa, *b = pb;
+    return (a->var > b->var) - (a->var < b->var);
+}
+
+/* The number of monomials in the exponent box of x^n (y NULL) or x*y, and
+ * in *nvars the number of generators; a negative number when out of memory. */
+static double box_terms(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, double *nvars) {
+    size_t len = x->plen + (y ? y->plen : 0), k = 0;
+    vexp *v = qd__malloc(ctx, (len + 1) * sizeof *v);
+    if (!v)
+        return -1;
+    for (size_t i = 0; i < x->plen; i++)
+        v[k++] = (vexp){x->pool[i].var, 0, x->pool[i].exp};
+    for (size_t i = 0; y && i < y->plen; i++)
+        v[k++] = (vexp){y->pool[i].var, 1, y->pool[i].exp};
+    qsort(v, len, sizeof *v, vexp_cmp);
+    double box = 1;
+    *nvars = 0;
+    for (size_t i = 0; i < len && box < 1e300; ++*nvars) {
+        double lo[2] = {0, 0}, hi[2] = {0, 0};
+        size_t j = i;
+        for (; j < len && v[j].var == v[i].var; j++) {
+            lo[v[j].side] = v[j].exp < lo[v[j].side] ? v[j].exp : lo[v[j].side];
+            hi[v[j].side] = v[j].exp > hi[v[j].side] ? v[j].exp : hi[v[j].side];
+        }
+        box *= (y ? hi[0] - lo[0] + hi[1] - lo[1] : (double)n * (hi[0] - lo[0])) + 1;
+        i = j;
+    }
+    qd__free(v);
+    return box;
+}
+
+/* binomial(n + t - 1, t - 1): the monomials of degree n in t unknowns. */
+static double degree_terms(size_t t, long n) {
+    double b = 1;
+    for (size_t i = 1; i < t && b < 1e300; i++)
+        b = b * (double)((size_t)n + i) / (double)i;
+    return b;
+}
+
+static double bytes_of(double terms, double bits, double mono) {
+    return terms * ((double)sizeof(qd_pterm) + mono * (double)sizeof(qd_pvar) + bits / 8);
+}
+
+bool qd_poly_fits(qd_ctx *ctx, double bytes) {
+    if (bytes >= 0 && bytes <= QD_EXPAND_MAX_BYTES)
+        return true;
+    if (bytes >= 0)
+        qd_ctx_error(ctx, QD_ERR_TOOBIG,
+                     "expression too large: expanding it would take about %.2g bytes (limit %d MiB)",
+                     bytes, QD_EXPAND_MAX_BYTES >> 20);
+    return false;
+}
+
+double qd_poly_pow_bytes(qd_ctx *ctx, const qd_poly *a, long n) {
+    if (a->n == 0 || (a->n >= 2 && n < 2))
+        return 0;
+    if (n < 0) /* one term: its inverse to the -n */
+        n = n == LONG_MIN ? LONG_MAX : -n;
+    double num, den, nvars, box = box_terms(ctx, a, NULL, n, &nvars);
+    bool flt;
+    if (box < 0) {
+        qd__oom(ctx);
+        return -1;
+    }
+    coef_bits(a, &num, &den, &flt);
+    /* each numerator of a^n (over den^n) is at most (sum |num|)^n */
+    double bits = flt ? 64 : (double)n * (num + den) + 1;
+    return bytes_of(fmin(box, degree_terms(a->n, n)), bits, nvars);
+}
+
+double qd_poly_mul_bytes(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
+    double nx, dx, ny, dy, nvars, box = box_terms(ctx, x, y, 0, &nvars);
+    bool fx, fy;
+    if (box < 0) {
+        qd__oom(ctx);
+        return -1;
+    }
+    coef_bits(x, &nx, &dx, &fx);
+    coef_bits(y, &ny, &dy, &fy);
+    double bits = fx || fy ? 64 : nx + ny + dx + dy + 1; /* |num| <= sum|x| sum|y| */
+    return bytes_of(fmin(box, (double)x->n * (double)y->n), bits, nvars);
+}
+
 static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) {
     for (size_t i = 0; i < x->n; i++) {
         const qd_pterm *s = &x->terms[i];
@@ -448,6 +575,8 @@ static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) 
 
 qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
     bool done;
+    if (!qd_poly_fits(ctx, qd_poly_mul_bytes(ctx, x, y)))
+        return NULL;
     qd_poly *fast = qd_poly_mul_flint(ctx, x, y, &done);
     if (!done)
         fast = qd_poly_mul_packed(ctx, x, y, &done);
@@ -532,6 +661,8 @@ qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
     }
     if (a->n == 0)
         return n > 0 ? qd_poly_zero(ctx) : NULL;
+    if (!qd_poly_fits(ctx, qd_poly_pow_bytes(ctx, a, n)))
+        return NULL;
     if (a->n == 1)
         return mono_pow(ctx, a, n);
     if (n < 0) {

@@ -26,6 +26,12 @@ enum { QD_COEF_INT, QD_COEF_BIG, QD_COEF_FLT };
 /* A polynomial may not grow beyond this many terms (QD_ERR_TOOBIG). */
 #define QD_POLY_MAX_TERMS 20000000u
 
+/* A product or power is multiplied out only when a bound on its size
+ * (terms x (term record + monomial + coefficient bytes)) stays within this
+ * (QD_ERR_TOOBIG "expression too large"; expand.c keeps such a power of a
+ * sum as it is).  docs/language.md, "expand". */
+#define QD_EXPAND_MAX_BYTES (64 << 20)
+
 typedef struct qd_coef {
     uint32_t kind;
     union {
@@ -61,6 +67,12 @@ qd_poly *qd_poly_number(qd_ctx *ctx, const qd_expr *num); /* a rational or float
 qd_poly *qd_poly_var(qd_ctx *ctx, uint32_t var, int32_t exp);
 qd_poly *qd_poly_add_n(qd_ctx *ctx, size_t n, const qd_poly *const *ps);
 qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *a, const qd_poly *b);
+/* Bounds on the bytes x*y and a^n take (-1 when out of memory, recorded);
+ * qd_poly_fits says whether a bound is within QD_EXPAND_MAX_BYTES, else
+ * records QD_ERR_TOOBIG. */
+double qd_poly_mul_bytes(qd_ctx *ctx, const qd_poly *x, const qd_poly *y);
+double qd_poly_pow_bytes(qd_ctx *ctx, const qd_poly *a, long n);
+bool qd_poly_fits(qd_ctx *ctx, double bytes);
 /* a^n for n >= 0; negative n only for a single term (its inverse). */
 qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n);
 /* The terms of p in which var has exponent exp, with var removed. */

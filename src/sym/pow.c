@@ -20,6 +20,7 @@
  */
 #include "node.h"
 #include "../base/args.h"
+#include "written.h"
 
 static const qd_expr *pow_node(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
     qd_expr proto = {0};
@@ -174,3 +175,13 @@ const qd_expr *qd_powi(qd_ctx *ctx, const qd_expr *b, long n) {
 }
 
 const qd_expr *qd_sqrt(qd_ctx *ctx, const qd_expr *a) { QD_ARGS(NULL, ctx && a); return qd_pow(ctx, a, ctx->half); }
+
+const qd_expr *qd__pow_written(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
+    if (b && e && b->kind == QD_RATIONAL && qd_is_zero(b) && !qd__is_num(e)) {
+        qd_ctx_error(ctx, QD_ERR_ARG,
+                     "0 to a power that is not a number: 0^x is 0 for x > 0 and undefined "
+                     "otherwise; write 0");
+        return NULL;
+    }
+    return qd_pow(ctx, b, e);
+}

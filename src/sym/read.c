@@ -32,6 +32,7 @@
  */
 #include "qdot/read.h"
 #include "node.h"
+#include "written.h"
 #include "base/diag.h"
 #include "../base/args.h"
 
@@ -311,7 +312,7 @@ static const qd_expr *builtin(rd *p, const char *name, size_t off, size_t len, c
     if (sq)
         return check(p, qd_sqrt(p->ctx, v->v[0]), off, len);
     if (f == QD_ATAN2)
-        return check(p, qd_fn2(p->ctx, f, v->v[0], v->v[1]), off, len);
+        return check(p, qd__atan2_written(p->ctx, v->v[0], v->v[1]), off, len);
     return check(p, qd_fn(p->ctx, f, v->v[0]), off, len);
 }
 
@@ -444,6 +445,12 @@ static const qd_expr *primary(rd *p) {
         p->depth++;
         next(p);
         const qd_expr *e = sum(p);
+        if (e && p->tok == T_COMMA) { /* (1, 2, 3) */
+            p->depth--;
+            return fail(p, p->tpos, 1, "write one expression, or each component on its own",
+                        "a vector or tuple is not an expression here: ',' inside '(' at column %zu",
+                        column(p, open));
+        }
         if (!e || !close(p, T_RPAR, ')', '(', open))
             return NULL;
         return e;
@@ -477,7 +484,7 @@ static const qd_expr *power(rd *p) {
         return b;
     next(p);
     const qd_expr *x = operand(p);
-    return x ? check(p, qd_pow(p->ctx, b, x), off, p->tpos - off) : NULL;
+    return x ? check(p, qd__pow_written(p->ctx, b, x), off, p->tpos - off) : NULL;
 }
 
 /* Unary signs before f, as in term and operand: '+'... '-'... f */
