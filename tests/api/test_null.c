@@ -3593,6 +3593,8 @@ static void null_sweep(void **state)
     /* row NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(F.ctx, NULL, NULL, 1, NULL));
     reset(&F);
+    /* ---- qd_sweep_threads */
+    /* no pointer argument */
     /* ---- qd_sweep_run */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_run(NULL, NULL, NULL, 1, 1, 1, F.d, F.st, F.c, NULL, NULL));
