@@ -88,15 +88,13 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
     tok_text(p, name, sizeof name);
     const qd_model *m = p->m;
     const char *kind = NULL;
-    for (size_t i = 0; i < m->ncoords && !kind; i++)
-        if (!strcmp(name, qd_expr_name(m->coords[i])))
-            kind = "coordinate";
-    for (size_t i = 0; i < m->nparams && !kind; i++)
-        if (!strcmp(name, qd_expr_name(m->params[i])))
-            kind = "parameter";
-    for (size_t i = 0; i < m->nfuncs && !kind; i++)
-        if (!strcmp(name, m->funcs[i]))
-            kind = "function";
+    size_t n = strlen(name);
+    if (qd__mdl_names_find(m, QD_MDL_NAME_COORD, name, n) >= 0)
+        kind = "coordinate";
+    else if (qd__mdl_names_find(m, QD_MDL_NAME_PARAM, name, n) >= 0)
+        kind = "parameter";
+    else if (qd__mdl_names_find(m, QD_MDL_NAME_FUNC, name, n) >= 0)
+        kind = "function";
     if (!kind && qd__mdl_find_def(m, name, strlen(name)))
         kind = "definition";
     if (!kind && qd__mdl_find_body(m, name, strlen(name)))
@@ -141,10 +139,9 @@ static bool stmt_coordinates(parser *p) {
                             qd__lex_tk_name(p->lx.tok.kind));
         char name[128];
         tok_text(p, name, sizeof name);
-        for (size_t i = 0; i < p->m->ncoords; i++)
-            if (!strcmp(name, qd_expr_name(p->m->coords[i])))
-                return qd__mdl_perr_tok(p, "each coordinate is declared once",
-                                "coordinate '%s' is declared twice", name);
+        if (qd__mdl_names_find(p->m, QD_MDL_NAME_COORD, name, strlen(name)) >= 0)
+            return qd__mdl_perr_tok(p, "each coordinate is declared once",
+                                    "coordinate '%s' is declared twice", name);
         if (!qd__mdl_fresh_name(p, "coordinate"))
             return false;
         const qd_expr *q = qd_coord(C(p), name);
@@ -165,6 +162,8 @@ static bool stmt_coordinates(parser *p) {
             !qd__mdl_add_where(m, name, p->lx.tok.off, p->lx.tok.len))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         m->ncoords = n;
+        if (!qd__mdl_names_add(m, QD_MDL_NAME_COORD, n - 1))
+            return qd__mdl_perr_tok(p, NULL, "out of memory");
         qd__lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
@@ -204,7 +203,7 @@ static bool parse_constant(parser *p, const qd_expr *given, const qd_expr **def,
     if (given)
         *def = given;
     const qd_model *m = p->m;
-    *out = qd_subs(C(p), *def, m->nparams, m->params, m->pvals);
+    *out = qd__mdl_subs_params(m, *def, m->nparams);
     const qd_expr *sym;
     size_t nsym = *out ? qd_free_symbols(C(p), *out, &sym, 1) : 0;
     if (qd__ctx_nomem(C(p))) /* 0 symbols may mean out of memory */
@@ -231,7 +230,8 @@ static bool push_param(parser *p, const qd_expr *sym, const qd_expr *def, const 
     return qd__mdl_push(m->ctx, (void **)&m->params, &n1, sizeof sym, &sym) &&
            qd__mdl_push(m->ctx, (void **)&m->pdefs, &n2, sizeof def, &def) &&
            qd__mdl_push(m->ctx, (void **)&m->pfixed, &n3, sizeof fixed, &fixed) &&
-           qd__mdl_push(m->ctx, (void **)&m->pvals, &m->nparams, sizeof v, &v);
+           qd__mdl_push(m->ctx, (void **)&m->pvals, &m->nparams, sizeof v, &v) &&
+           qd__mdl_names_add(m, QD_MDL_NAME_PARAM, m->nparams - 1);
 }
 
 /* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */
@@ -310,6 +310,8 @@ static bool stmt_functions(parser *p) {
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         }
         strcpy(copy, name);
+        if (!qd__mdl_names_add(p->m, QD_MDL_NAME_FUNC, p->m->nfuncs - 1))
+            return qd__mdl_perr_tok(p, NULL, "out of memory");
         qd__lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
@@ -372,10 +374,10 @@ static bool stmt_force(parser *p) {
 }
 
 static int coord_named(parser *p) {
-    for (size_t i = 0; i < p->m->ncoords; i++)
-        if (qd__mdl_name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, qd_expr_name(p->m->coords[i])))
-            return (int)i;
-    return -1;
+    if (p->lx.tok.kind != TK_IDENT)
+        return -1;
+    return (int)qd__mdl_names_find(p->m, QD_MDL_NAME_COORD, p->lx.src + p->lx.tok.off,
+                                   p->lx.tok.len);
 }
 
 /* The name at the token is none of the coordinates (nor, with speeds, of
