@@ -12,6 +12,8 @@
 #include <stdio.h>
 #include <string.h>
 
+static size_t utf8_char(const unsigned char *s, unsigned long *cp);
+
 /* A UTF-8 continuation byte: the caret does not advance under it. */
 static bool continuation(unsigned char c) { return (c & 0xC0) == 0x80; }
 
@@ -50,13 +52,26 @@ static void caret(qd_buf *out, const char *text, size_t start, size_t off, size_
     }
     const char *cut = from > start ? "..." : "";
     qd_buf_printf(out, "  %s", cut);
-    qd_buf_putn(out, text + from, to - from);
+    for (size_t i = from; i < to;) { /* a byte that is not UTF-8 is shown as '?' */
+        unsigned long cp;
+        size_t k = (unsigned char)text[i] < 0x80 ? 1 : utf8_char((const unsigned char *)text + i, &cp);
+        if (k == 0 || i + k > to) {
+            qd_buf_putn(out, "?", 1);
+            i++;
+            continue;
+        }
+        qd_buf_putn(out, text + i, k);
+        i += k;
+    }
     qd_buf_printf(out, "%s\n  %s", to < end ? "..." : "", cut[0] ? "   " : "");
-    for (size_t i = from; i < off; i++)
-        if (!continuation((unsigned char)text[i]))
-            qd_buf_putn(out, text[i] == '\t' ? "\t" : " ", 1);
-    if (off + w > to && to > off)
-        w = to - off; /* the caret stays on the text shown */
+    for (size_t i = from; i < off;) { /* one column per character shown */
+        unsigned long cp;
+        size_t k = (unsigned char)text[i] < 0x80 ? 1 : utf8_char((const unsigned char *)text + i, &cp);
+        qd_buf_putn(out, text[i] == '\t' ? "\t" : " ", 1);
+        i += k == 0 || i + k > to ? 1 : k;
+    }
+    if (off + w > to)
+        w = to > off ? to - off : 1; /* the caret stays on the text shown */
     qd_buf_puts(out, "^");
     for (size_t i = off + 1; i < off + w; i++)
         if (!continuation((unsigned char)text[i]))

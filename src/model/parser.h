@@ -13,6 +13,10 @@
 #include "lex.h"
 #include "base/diag.h" /* qd__diag_nearest: "did you mean" */
 
+/* A name is at most QD_MDL_NAME_MAX - 1 bytes (a longer one is refused
+ * where it is read, parse.c), so a buffer of QD_MDL_NAME_MAX holds it whole. */
+#define QD_MDL_NAME_MAX 128
+
 /* A value of the language: a scalar, a vector of three components, or a
  * 3x3 matrix (a rotation, an inertia tensor), stored by rows. */
 typedef enum vkind { VK_SCALAR, VK_VECTOR, VK_MATRIX } vkind;
@@ -307,7 +311,7 @@ typedef struct fclause {
     size_t off, len;           /* the word `friction` */
     const qd_expr *mu_s, *mu_k;
     const qd_expr *normal;
-    char normal_con[64];       /* "" when N is an expression or not given */
+    char normal_con[QD_MDL_NAME_MAX];       /* "" when N is an expression or not given */
     size_t normal_off, normal_len;
 } fclause;
 
@@ -354,7 +358,6 @@ bool qd__mdl_push_constraint(parser *p, const char *name, const qd_expr *c, size
 int qd__mdl_coord_subscript(parser *p, const char *usage);
 bool qd__mdl_end_of_statement(parser *p);
 bool qd__mdl_fresh_name(parser *p, const char *what);
-#define QD_MDL_NAME_MAX 128
 bool qd__mdl_named_definition(parser *p, const char *noun, const char *usage,
                               bool (*fresh)(parser *p, const char *name, token at),
                               char name[QD_MDL_NAME_MAX], token *at, value *v);

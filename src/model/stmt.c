@@ -521,8 +521,8 @@ bool qd__mdl_push_constraint(parser *p, const char *name, const qd_expr *c, size
         return qd__mdl_perr(p, off, len, NULL, "out of memory");
     }
     /* from here the model owns the name (ncons counts it) */
-    char what[112];
-    snprintf(what, sizeof what, "constraint:%.100s", name);
+    char what[160];
+    snprintf(what, sizeof what, "constraint:%s", name);
     return qd__mdl_add_where(m, what, off, len) ||
            qd__mdl_perr(p, off, len, NULL, "out of memory");
 }
@@ -535,13 +535,13 @@ bool qd__mdl_constraint_named(const qd_model *m, const char *name) {
 static bool stmt_constraint(parser *p) {
     qd_model *m = p->m;
     qd__lex_next(&p->lx);
-    char name[64];
+    char name[QD_MDL_NAME_MAX];
     token at = p->lx.tok;
     lexer save = p->lx;
     qd__lex_next(&p->lx);
     bool named = at.kind == TK_IDENT && p->lx.tok.kind == TK_COLON;
     if (named) {
-        snprintf(name, sizeof name, "%.*s", (int)(at.len < 63 ? at.len : 63), p->lx.src + at.off);
+        snprintf(name, sizeof name, "%.*s", (int)at.len, p->lx.src + at.off); /* at most 127 */
         if (constraint_named(m, name))
             return qd__mdl_perr(p, at.off, at.len, "give each constraint its own name",
                         "constraint '%s' is named twice", name);
