@@ -311,11 +311,9 @@ static int list_row(list_csv *l, char *line, const char *path, size_t lineno) {
 }
 
 static int list_read(const char *path, list_csv *l) {
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        cli_diag_error("cannot read '%s'", path);
+    FILE *f = cli_open_input(path, NULL);
+    if (!f)
         return QD_EXIT_USAGE;
-    }
     char line[4096];
     size_t lineno = 0;
     int rc = QD_EXIT_OK;

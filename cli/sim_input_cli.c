@@ -4,6 +4,7 @@
  * table (qd_sim_input_table: linear interpolation, the run's span covered).
  */
 #include "cli.h"
+#include "model_file.h" /* cli_open_input */
 #include "sim_cli.h"
 
 #include <errno.h>
@@ -59,11 +60,9 @@ static int parse_row(const char *line, double *t, double *v) {
 }
 
 static int read_table(const char *path, table *tb) {
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        cli_diag_error("--input: cannot open '%s': %s", path, strerror(errno));
+    FILE *f = cli_open_input(path, "--input: ");
+    if (!f)
         return QD_EXIT_USAGE;
-    }
     char line[512];
     size_t lineno = 0;
     int rc = QD_EXIT_OK;

@@ -52,10 +52,14 @@ static bool check_text(parser *p, const char *text) {
         const unsigned char *u = (const unsigned char *)text + bad;
         bool overlong = u[0] == 0xC0 || u[0] == 0xC1 || (u[0] == 0xE0 && u[1] < 0xA0) ||
                         (u[0] == 0xF0 && u[1] < 0x90);
+        const char *hint = "qdot reads UTF-8 text: was this written in another encoding?";
         p->lx.src = text; /* no token yet: the error is about the byte itself */
-        return qd__mdl_perr(p, bad, 1, "qdot reads UTF-8 text: was this written in another "
-                            "encoding?", "invalid UTF-8 at byte %zu (0x%02x%s)", bad, u[0],
-                            overlong ? ", an overlong encoding" : "");
+        qd__mdl_perr(p, bad, 1, hint, "invalid UTF-8 at byte %zu: byte 0x%02x %s", bad, u[0],
+                     overlong ? "starts an overlong encoding" : "is not UTF-8 there");
+        qd_ctx_error_about(p->ctx, QD_SUBJECT_TEXT, 0, NULL, QD_REASON_BAD_BYTE, hint);
+        if (p->diag)
+            *p->diag = *qd_ctx_diag(p->ctx);
+        return false;
     }
     lexer lx;
     for (qd__lex_init(&lx, text); lx.tok.kind != TK_EOF; qd__lex_next(&lx))

@@ -32,6 +32,8 @@
 static const char *const reserved[] = {"T", "V", "L", "U", "H", "dissipation"};
 
 static qd_ctx *C(parser *p) { return p->ctx; }
+static bool no_acceleration(parser *p, const char *what, const qd_expr *e, size_t off,
+                            size_t len);
 
 static void tok_text(const parser *p, char *buf, size_t cap) {
     size_t n = p->lx.tok.len < cap - 1 ? p->lx.tok.len : cap - 1;
@@ -337,6 +339,9 @@ static bool stmt_particle(parser *p) {
     if (!qd__mdl_parse_scalar(p, &mass, "a mass") || !qd__mdl_expect_at(p, "particle m at (x, y, z)") ||
         !qd__mdl_parse_vector(p, &r, "a position"))
         return false;
+    for (int i = 0; i < 3; i++)
+        if (!no_acceleration(p, "a particle's position", r.c[i], r.off, r.len))
+            return false;
     qd_ctx *ctx = C(p);
     const qd_expr *v2 = ctx ? qd_int(ctx, 0) : NULL;
     for (int i = 0; i < 3; i++)
@@ -435,9 +440,32 @@ static bool stmt_genforce(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
+/* The initial value named name (with its prime, "q'") is given once in the
+ * text being read: else an error at off..off+len naming the first place.
+ * A statement added to a model later (qd_model_add_statement) may replace
+ * a value of the model's text. */
+static bool initial_once(parser *p, const char *name, size_t off, size_t len) {
+    qd_model *m = p->m;
+    char key[QD_MDL_NAME_MAX + 16];
+    snprintf(key, sizeof key, "initial:%s", name);
+    long i = qd__mdl_names_find(m, QD_MDL_NAME_WHERE, key, strlen(key));
+    if (i >= 0 && m->wheres[i].src == m->src) {
+        size_t line, col;
+        qd__diag_line_col(m->src, m->wheres[i].off, &line, &col, NULL);
+        char hint[QD_MDL_NAME_MAX + 96];
+        snprintf(hint, sizeof hint, "the first is at line %zu, column %zu; give each initial value once",
+                 line, col);
+        return qd__mdl_perr(p, off, len, hint, "the initial value of %s is given twice (first on "
+                            "line %zu)", name, line);
+    }
+    return qd__mdl_add_where(m, key, off, len) || qd__mdl_perr(p, off, len, NULL, "out of memory");
+}
+
 /* initial SPEED = VALUE: the speed itself, not its rate (a speed is
  * already a velocity). */
 static bool initial_speed(parser *p, speed *s) {
+    if (!initial_once(p, qd_expr_name(s->sym), p->lx.tok.off, p->lx.tok.len))
+        return false;
     qd__lex_next(&p->lx);
     if (p->lx.tok.kind == TK_PRIME)
         return qd__mdl_perr_tok(p, "give the speed's own value: initial u1 = 0.3",
@@ -468,6 +496,7 @@ static bool stmt_initial(parser *p) {
         if (p->lx.tok.kind != TK_IDENT || j < 0)
             return p->lx.tok.kind == TK_IDENT ? not_among(p, true)
                                               : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
+        token at = p->lx.tok;
         qd__lex_next(&p->lx);
         unsigned order = 0;
         for (; p->lx.tok.kind == TK_PRIME; qd__lex_next(&p->lx))
@@ -475,6 +504,10 @@ static bool stmt_initial(parser *p) {
         if (order > 1)
             return qd__mdl_perr_tok(p, "give positions and velocities: q = ..., q' = ...",
                             "an initial value is for a coordinate or its velocity");
+        char name[QD_MDL_NAME_MAX + 1];
+        snprintf(name, sizeof name, "%s%s", qd_expr_name(p->m->coords[j]), order ? "'" : "");
+        if (!initial_once(p, name, at.off, at.len + order))
+            return false;
         if (p->lx.tok.kind != TK_EQ)
             return qd__mdl_perr_tok(p, "write: initial q = 0.5, q' = 0", "expected '='");
         qd__lex_next(&p->lx);
@@ -583,6 +616,51 @@ static bool stmt_constraint(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
+/* An acceleration (q'', or a higher derivative) in e, or NULL; *nomem when
+ * the symbols could not be listed. */
+static const qd_expr *acceleration(parser *p, const qd_expr *e, bool *nomem) {
+    const qd_expr *few[16], **sym = few;
+    *nomem = false;
+    size_t n = e ? qd_free_symbols(C(p), e, few, 16) : 0;
+    if (n == 0) {
+        *nomem = e && qd__ctx_nomem(C(p));
+        return NULL;
+    }
+    if (n > 16) {
+        if (!(sym = qd__malloc(C(p), n * sizeof *sym))) {
+            *nomem = true;
+            return NULL;
+        }
+        qd_free_symbols(C(p), e, sym, n);
+    }
+    const qd_expr *a = NULL;
+    for (size_t i = 0; i < n && !a; i++) {
+        const char *name = qd_expr_name(sym[i]);
+        if (name && strstr(name, "''"))
+            a = sym[i];
+    }
+    if (sym != few)
+        qd__free(sym);
+    return a;
+}
+
+#define ACCEL_HINT "Lagrange's equations need L(q, q', t); an acceleration would change " \
+                   "their order and is not handled: write the energy in the velocities"
+
+/* The energy what (T, V, L, U, dissipation, a particle's position) at
+ * off..off+len has no acceleration in it: else an error there. */
+static bool no_acceleration(parser *p, const char *what, const qd_expr *e, size_t off,
+                            size_t len) {
+    bool nomem;
+    const qd_expr *a = acceleration(p, e, &nomem);
+    if (nomem)
+        return qd__mdl_perr(p, off, len, NULL, "out of memory");
+    if (a)
+        return qd__mdl_perr(p, off, len, ACCEL_HINT, "%s depends on the acceleration %s",
+                            what, qd_expr_name(a));
+    return true;
+}
+
 static const qd_expr **reserved_slot(qd_model *m, const char *name) {
     if (!strcmp(name, "T")) return &m->T;
     if (!strcmp(name, "V")) return &m->V;
@@ -629,6 +707,8 @@ static bool stmt_definition(parser *p) {
                             ? "an energy is a scalar: use dot(v, v) for |v|^2"
                             : "an energy is a scalar",
                         "a %s where a scalar is needed: %s is a scalar", qd__mdl_vkind_name(v.kind), name);
+        if (!no_acceleration(p, name, v.c[0], v.off, v.len))
+            return false;
         /* particle lines and T = ... add up (and circuit elements with V, D) */
         *slot = adds && *slot ? qd_add(C(p), *slot, v.c[0]) : v.c[0];
     } else if (!qd__mdl_add_def(p->m, name, v, at.off, at.len)) {
@@ -753,6 +833,17 @@ bool qd__mdl_finish(parser *p) {
     }
     if (!m->L)
         return qd__mdl_perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
+    /* what the statements above did not see: a body's position or rotation,
+     * a circuit element, a definition added in pieces */
+    static const char *const energy[] = {"L", "T", "V", "U", "dissipation"};
+    const qd_expr *const parts[] = {m->L, m->T, m->V, m->U, m->D};
+    for (size_t i = 0; i < 5; i++) {
+        qd_diag at;
+        bool placed = qd_model_where(m, energy[i], &at);
+        if (!no_acceleration(p, energy[i], parts[i], placed ? at.offset : 0,
+                             placed ? at.length : 1))
+            return false;
+    }
     return qd__mdl_apply_isoperimetric(p) && qd__mdl_check_inputs(p);
 }
 
