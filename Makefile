@@ -65,6 +65,7 @@ bench:
 	./build-bench/bench/run_symmetry
 	/usr/bin/python3 bench/run_sweep.py build-bench
 	/usr/bin/python3 bench/run_sweep_mpi.py build-bench
+	/usr/bin/python3 bench/run_parse.py build-bench
 
 install: build
 	$(CMAKE) --install build --prefix $(PREFIX)

@@ -19,6 +19,7 @@
 #include "cli.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
@@ -261,10 +262,60 @@ static void time_dependence(check *c, const qd_eom *e, const qd_expr *L) {
         qd_buf_puts(&c->out, "kinetic energy: T = T2, quadratic in the velocities\n");
 }
 
+/* The statement an error about the mass matrix is shown at. */
+static const char *mass_place(const qd_model *m, size_t coord) {
+    if (qd_model_where(m, "T", NULL))
+        return "T";
+    if (qd_model_where(m, "L", NULL))
+        return "L";
+    return qd_expr_name(qd_model_coord(m, coord));
+}
+
+/* The model's numbers (qd_eom_audit): a mass matrix that is not positive
+ * definite and a constraint with no real solution are errors; an initial
+ * state off the constraints is a note, as a run projects it. */
+static int audit(check *c, const cli_model_file *mf, const qd_eom *e) {
+    qd_audit a;
+    qd_status st = qd_eom_audit(c->ctx, c->m, e, &a);
+    if (st == QD_ERR_NOMEM)
+        return cli_diag_ctx(c->ctx);
+    qd_ctx_clear_error(c->ctx);
+    if (st != QD_OK)
+        return QD_EXIT_OK; /* no numbers to judge */
+    char msg[256];
+    if (!a.mass_ok) {
+        snprintf(msg, sizeof msg, "the mass matrix is not positive definite with these parameter "
+                 "values (its pivot for %s is %.3g): a mass or moment of inertia is zero or "
+                 "negative", qd_expr_name(e->q[a.mass_coord]), a.mass_pivot);
+        cli_model_file_error(mf, mass_place(c->m, a.mass_coord), msg,
+                             "every mass and moment of inertia must be positive: check the "
+                             "parameters' values");
+        return QD_EXIT_USAGE;
+    }
+    if (!a.con_ok) {
+        char what[160];
+        snprintf(what, sizeof what, "constraint:%s", e->con[a.con].name);
+        snprintf(msg, sizeof msg, "constraint %s has no real solution near the initial state: "
+                 "its residual stays at %.3g", e->con[a.con].name, a.con_min);
+        cli_model_file_error(mf, what, msg, "check its sign and the parameters' values");
+        return QD_EXIT_USAGE;
+    }
+    if (a.residual > 1e-4) /* far off, not rounding */
+        fprintf(stderr, "%s: note: the initial state is off constraint %s by %.3g; a run "
+                "projects it onto the constraints first\n", mf->path,
+                e->con[a.residual_con].name, a.residual);
+    return QD_EXIT_OK;
+}
+
 static int summarize(check *c, const cli_model_file *mf) {
     qd_eom *e = qd_eom_derive(c->ctx, c->m);
     if (!e)
         return cli_eom_derive_error(c->ctx, mf);
+    int rc = audit(c, mf, e);
+    if (rc != QD_EXIT_OK) {
+        qd_eom_free(e);
+        return rc;
+    }
     header(c, mf->path, e);
     depends(c, "T:", qd_model_kinetic(c->m));
     depends(c, "V:", qd_model_potential(c->m));

@@ -617,6 +617,10 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
                 qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
+        if (st.initial_moved_q > 1e-4 || st.initial_moved_qd > 1e-4) /* far off, not rounding */
+            fprintf(stderr, "qdot: simulate: note: the initial state was off the constraints and "
+                    "was projected onto them: q moved by %.3g, q' by %.3g\n", st.initial_moved_q,
+                    st.initial_moved_qd);
         impacts_summary(c, &st);
         friction_summary(c, &st);
         double range[4 * CLI_PLOT_MAX_PANELS];

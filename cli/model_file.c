@@ -2,64 +2,114 @@
  * cli/model_file.c - reading a model file and showing its errors: the
  * library locates an error (qd_diag), the program prints it.
  */
+#define _POSIX_C_SOURCE 200809L /* fileno, fstat */
 #include "model_file.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "cli.h"
 
-/* The whole stream in one NUL-terminated block; NULL with errno set. */
-static char *slurp(FILE *fp, size_t *len) {
+/* Why a stream could not be read whole. */
+typedef enum { READ_OK, READ_ERRNO, READ_NUL, READ_BIG } read_end;
+
+/* The stream in one NUL-terminated block, read a chunk at a time and
+ * checked as it comes: reading stops at the first NUL byte (*len is then
+ * its offset) and past QD_MODEL_MAX_BYTES, so `qdot check /dev/zero` stops
+ * at once.  *text is the block (also after READ_NUL, for the caret). */
+static read_end slurp(FILE *fp, char **text, size_t *len) {
     size_t cap = 4096, n = 0;
     char *s = malloc(cap);
-    while (s) {
-        n += fread(s + n, 1, cap - n - 1, fp);
-        if (ferror(fp) || feof(fp))
+    *text = NULL;
+    *len = 0;
+    if (!s) {
+        errno = ENOMEM;
+        return READ_ERRNO;
+    }
+    for (;;) {
+        size_t got = fread(s + n, 1, cap - n - 1, fp);
+        const char *nul = memchr(s + n, '\0', got);
+        n += got;
+        s[n] = '\0';
+        if (nul) {
+            *text = s;
+            *len = (size_t)(nul - s);
+            return READ_NUL;
+        }
+        if (n > QD_MODEL_MAX_BYTES) {
+            free(s);
+            return READ_BIG;
+        }
+        if (ferror(fp)) {
+            int saved = errno ? errno : EIO;
+            free(s);
+            errno = saved;
+            return READ_ERRNO;
+        }
+        if (feof(fp))
             break;
-        char *t = cap > SIZE_MAX / 2 ? NULL : realloc(s, cap * 2);
+        if (n + 1 < cap)
+            continue;
+        size_t grown = cap * 2 > QD_MODEL_MAX_BYTES + 2 ? QD_MODEL_MAX_BYTES + 2 : cap * 2;
+        char *t = realloc(s, grown);
         if (!t) {
             free(s);
             errno = ENOMEM;
-            return NULL;
+            return READ_ERRNO;
         }
         s = t;
-        cap *= 2;
+        cap = grown;
     }
-    if (s && ferror(fp)) {
-        int saved = errno ? errno : EIO;
-        free(s);
-        errno = saved;
+    *text = s;
+    *len = n;
+    return READ_OK;
+}
+
+FILE *cli_open_input(const char *path, const char *what) {
+    FILE *fp = fopen(path, "rb");
+    struct stat st;
+    if (fp && fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(fp);
+        cli_diag_error("%s'%s' is a directory, not a file", what ? what : "", path);
         return NULL;
     }
-    if (s) {
-        s[n] = '\0';
-        *len = n;
-    }
-    return s;
+    if (!fp)
+        cli_diag_error("%scannot open '%s': %s", what ? what : "", path, strerror(errno));
+    return fp;
 }
 
 static int read_text(const char *path, cli_model_file *mf) {
     bool std_in = !strcmp(path, "-");
     mf->path = std_in ? "<stdin>" : path;
-    FILE *fp = std_in ? stdin : fopen(path, "rb");
-    if (!fp) {
-        cli_diag_error("cannot open '%s': %s", path, strerror(errno));
+    FILE *fp = std_in ? stdin : cli_open_input(path, NULL);
+    if (!fp)
         return QD_EXIT_USAGE;
-    }
     errno = 0;
-    mf->text = slurp(fp, &mf->len);
+    read_end how = slurp(fp, &mf->text, &mf->len);
     int err = errno;
     if (!std_in)
         fclose(fp);
-    if (!mf->text) {
+    if (how == READ_ERRNO) {
         cli_diag_error("cannot read '%s': %s", mf->path, strerror(err ? err : EIO));
         return QD_EXIT_USAGE;
     }
-    /* the parser reads up to the first NUL: the rest would be ignored silently */
-    if (strlen(mf->text) != mf->len) {
-        cli_diag_error("%s: the file contains a NUL byte at offset %zu (not a text file?)",
-                      mf->path, strlen(mf->text));
+    if (how == READ_BIG) {
+        cli_diag_error("'%s' is longer than %zu MiB, the most a model file may be", mf->path,
+                       QD_MODEL_MAX_BYTES >> 20);
+        return QD_EXIT_USAGE;
+    }
+    if (how == READ_NUL) { /* the parser would stop at it and ignore the rest silently */
+        qd_diag d;
+        memset(&d, 0, sizeof d);
+        d.status = QD_ERR_PARSE;
+        d.located = true;
+        d.offset = mf->len;
+        d.length = 1;
+        snprintf(d.message, sizeof d.message, "a NUL byte at byte %zu: this is not a text file",
+                 mf->len);
+        snprintf(d.hint, sizeof d.hint, "a model file is UTF-8 text");
+        cli_diag_show(mf->path, mf->text, &d);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;

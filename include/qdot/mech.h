@@ -202,6 +202,33 @@ typedef struct qd_dof {
  * beyond 31 coordinates and symbols; d then counts no constraint. */
 QD_API qd_status qd_eom_dof(qd_ctx *ctx, const qd_eom *e, qd_dof *d);
 
+/* ---- what `qdot check` says of a model's numbers --------------------------- */
+
+/* The mass matrix and the holonomic constraints at the model's parameter
+ * values (src/model/audit.c).  mass_ok false: M is not positive definite
+ * at the initial configuration (q_j its initial value, else 0.5 + 0.1 j;
+ * t = 0) nor at that point moved by 0.25 + 0.1 j in each q_j, so a zero or
+ * negative mass or inertia is found and a coordinate singularity (sin(theta)
+ * = 0 at the start) is not; mass_coord is then the coordinate of the first
+ * pivot <= 0 (its Cholesky factor) and mass_pivot its value.  A holonomic
+ * constraint phi = 0 that Gauss-Newton from the initial state (0 where
+ * none is given) cannot bring below 1e-9 (|grad phi| -> 0 first: x^2 + y^2
+ * = -1) is unsolvable: con_ok false, con its index, con_min the least
+ * |phi| reached.  residual: the largest |phi(q0, t0)| over the holonomic
+ * constraints, at constraint residual_con; what a run projects away. */
+typedef struct qd_audit {
+    bool mass_ok;
+    size_t mass_coord;
+    double mass_pivot;
+    bool con_ok;
+    size_t con;
+    double con_min;
+    double residual;
+    size_t residual_con;
+} qd_audit;
+/* QD_ERR_UNBOUND when a parameter has no number; QD_ERR_NOMEM. */
+QD_API qd_status qd_eom_audit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_audit *out);
+
 #ifdef __cplusplus
 }
 #endif

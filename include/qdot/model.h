@@ -30,8 +30,13 @@ extern "C" {
 
 typedef struct qd_model qd_model;
 
+/* The longest model text read, in bytes (64 MiB): a longer one is refused
+ * (QD_ERR_TOOBIG), and the CLI stops reading a file there. */
+#define QD_MODEL_MAX_BYTES ((size_t)64 << 20)
+
 /* Parse a model.  NULL on error, with the context's error record located in
- * text and a copy in *diag (diag may be NULL); a model
+ * text and a copy in *diag (diag may be NULL).  The text must be UTF-8 of
+ * at most QD_MODEL_MAX_BYTES; lines end in \n, \r\n or \r.  A model
  * that parses is complete and consistent (T, L or momenta and H given, every
  * name known, every parameter valued).  text must stay alive while the model
  * is used. */

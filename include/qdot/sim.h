@@ -279,6 +279,11 @@ typedef struct qd_sim_stats {
     double friction_dissipated;
     double energy_balance_error;
     double surface_work;
+    /* A constrained system: how far the start's projection onto the
+     * constraints moved the initial state given, |q - q0| and |q' - q'0|
+     * (Euclidean; the velocities 0 for a system in speeds), so that a
+     * caller can say so when it is not small (the CLI prints a note). */
+    double initial_moved_q, initial_moved_qd;
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the

@@ -194,7 +194,8 @@ class SimStats(Structure):
                 ("in_contact", c_bool), ("at_rest", c_bool), ("chattering", c_bool),
                 ("contact", c_size_t), ("transitions", c_size_t),
                 ("friction_dissipated", c_double), ("energy_balance_error", c_double),
-                ("surface_work", c_double)] + _TAIL
+                ("surface_work", c_double),
+                ("initial_moved_q", c_double), ("initial_moved_qd", c_double)] + _TAIL
 
 
 class StateSpace(Structure):

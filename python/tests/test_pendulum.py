@@ -79,7 +79,8 @@ def test_stats_are_the_runs_counts():
                             "constraint_error_max", "E0", "events", "t", "impacts",
                             "impact_energy_lost", "in_contact", "at_rest", "chattering",
                             "contact", "transitions", "friction_dissipated",
-                            "energy_balance_error", "surface_work"}
+                            "energy_balance_error", "surface_work", "initial_moved_q",
+                            "initial_moved_qd"}
     # a fixed step: t_end/dt steps, none rejected, E0 = -m g l cos(theta0)
     assert (r.stats["steps"], r.stats["rejected"], r.stats["t"]) == (8, 0, 1.0)
     assert r.stats["E0"] == pytest.approx(-1 * 9.81 * 2 * math.cos(0.3), rel=1e-14)

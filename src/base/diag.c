@@ -13,18 +13,28 @@
 #include <stdio.h>
 #include <string.h>
 
+static size_t utf8_char(const unsigned char *s, unsigned long *cp);
+
 /* A UTF-8 continuation byte: the caret does not advance under it. */
 static bool continuation(unsigned char c) { return (c & 0xC0) == 0x80; }
 
-static void line_col(const char *text, size_t off, size_t *line, size_t *col, size_t *start) {
-    *line = 1;
-    *start = 0;
-    for (size_t i = 0; i < off; i++)
-        if (text[i] == '\n') {
-            (*line)++;
-            *start = i + 1;
+void qd__diag_line_col(const char *text, size_t off, size_t *line, size_t *col, size_t *start) {
+    size_t l = 1, s = 0;
+    for (size_t i = 0; i < off && text[i]; i++)
+        if (text[i] == '\n' || (text[i] == '\r' && text[i + 1] != '\n')) {
+            l++;
+            s = i + 1;
         }
-    *col = off - *start + 1;
+    *line = l;
+    *col = off - s + 1;
+    if (start)
+        *start = s;
+}
+
+size_t qd__diag_line_len(const char *s) { return strcspn(s, "\r\n"); }
+
+static void line_col(const char *text, size_t off, size_t *line, size_t *col, size_t *start) {
+    qd__diag_line_col(text, off, line, col, start);
 }
 
 #define SHOW 100 /* bytes of a long line shown around the caret */
@@ -32,7 +42,7 @@ static void line_col(const char *text, size_t off, size_t *line, size_t *col, si
 /* The source line and a caret under [off, off + w), clipped to the line; a
  * long line (10,000 brackets) is cut to SHOW bytes around the caret. */
 static void caret(qd_buf *out, const char *text, size_t start, size_t off, size_t w) {
-    size_t end = start + strcspn(text + start, "\n"), from = start, to = end;
+    size_t end = start + qd__diag_line_len(text + start), from = start, to = end;
     if (end - start > SHOW) {
         from = off > start + SHOW / 2 ? off - SHOW / 2 : start;
         while (from < off && continuation((unsigned char)text[from]))
@@ -43,13 +53,26 @@ static void caret(qd_buf *out, const char *text, size_t start, size_t off, size_
     }
     const char *cut = from > start ? "..." : "";
     qd_buf_printf(out, "  %s", cut);
-    qd_buf_putn(out, text + from, to - from);
+    for (size_t i = from; i < to;) { /* a byte that is not UTF-8 is shown as '?' */
+        unsigned long cp;
+        size_t k = (unsigned char)text[i] < 0x80 ? 1 : utf8_char((const unsigned char *)text + i, &cp);
+        if (k == 0 || i + k > to) {
+            qd_buf_putn(out, "?", 1);
+            i++;
+            continue;
+        }
+        qd_buf_putn(out, text + i, k);
+        i += k;
+    }
     qd_buf_printf(out, "%s\n  %s", to < end ? "..." : "", cut[0] ? "   " : "");
-    for (size_t i = from; i < off; i++)
-        if (!continuation((unsigned char)text[i]))
-            qd_buf_putn(out, text[i] == '\t' ? "\t" : " ", 1);
-    if (off + w > to && to > off)
-        w = to - off; /* the caret stays on the text shown */
+    for (size_t i = from; i < off;) { /* one column per character shown */
+        unsigned long cp;
+        size_t k = (unsigned char)text[i] < 0x80 ? 1 : utf8_char((const unsigned char *)text + i, &cp);
+        qd_buf_putn(out, text[i] == '\t' ? "\t" : " ", 1);
+        i += k == 0 || i + k > to ? 1 : k;
+    }
+    if (off + w > to)
+        w = to > off ? to - off : 1; /* the caret stays on the text shown */
     qd_buf_puts(out, "^");
     for (size_t i = off + 1; i < off + w; i++)
         if (!continuation((unsigned char)text[i]))
@@ -89,6 +112,18 @@ static size_t utf8_char(const unsigned char *s, unsigned long *cp) {
     if (v < least[n] || v > 0x10FFFF || (v >= 0xD800 && v <= 0xDFFF))
         return 0;
     *cp = v;
+    return n;
+}
+
+size_t qd__diag_utf8_check(const char *text, size_t n) {
+    const unsigned char *u = (const unsigned char *)text;
+    for (size_t i = 0; i < n;) {
+        unsigned long cp;
+        size_t k = u[i] < 0x80 ? 1 : utf8_char(u + i, &cp);
+        if (k == 0 || i + k > n)
+            return i;
+        i += k;
+    }
     return n;
 }
 

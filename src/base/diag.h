@@ -12,6 +12,17 @@
  * the bytes it spans (a whole character when it is well-formed UTF-8). */
 size_t qd__diag_bad_char(const char *s, char *msg, size_t cap, const char **hint);
 
+/* Line (from 1) and column (from 1, in bytes) of byte off of text, and the
+ * offset of its line's first byte: a line ends at "\n", "\r\n" or a lone
+ * "\r" (old Mac files).  start may be NULL. */
+void qd__diag_line_col(const char *text, size_t off, size_t *line, size_t *col, size_t *start);
+/* The bytes of the line starting at s, up to its end ("\n", "\r" or NUL). */
+size_t qd__diag_line_len(const char *s);
+/* The first byte of text[0..n) that does not start well-formed UTF-8
+ * (an overlong form, a stray continuation byte, a cut or surrogate
+ * character), or n when every byte is valid. */
+size_t qd__diag_utf8_check(const char *text, size_t n);
+
 /* The hint of "expression nested too deeply", the same in both readers. */
 #define QD_NEST_HINT "brackets and signs nest at most 256 deep; name a part with a definition"
 

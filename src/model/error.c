@@ -92,7 +92,7 @@ static bool where_key(const qd_model *m, const qd_diag *d, char *key, size_t cap
 
 bool qd_model_locate(const qd_model *m, qd_diag *d) {
     QD_ARGS(false, m && d);
-    char key[96];
+    char key[160];
     qd_diag w;
     if (!m || !d || !where_key(m, d, key, sizeof key) || !qd_model_where(m, key, &w))
         return false;

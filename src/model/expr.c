@@ -90,9 +90,8 @@ static bool expect_closing(parser *p, size_t open, tk_kind close) {
         return true;
     }
     const char *s = p->lx.src;
-    size_t line = 1;
-    for (size_t i = 0; i < p->lx.tok.off; i++)
-        line += s[i] == '\n';
+    size_t line, col;
+    qd__diag_line_col(s, p->lx.tok.off, &line, &col, NULL);
     char hint[160];
     char c = close == TK_RPAREN ? ')' : ']';
     snprintf(hint, sizeof hint, "a '%c' is missing: found %s on line %zu", c,
@@ -139,7 +138,7 @@ static bool names_at(const char *s, size_t j, const char *name, size_t n) {
 static bool speeds_line_names(const char *s, size_t j, const char *name, size_t n) {
     if (strncmp(s + j, "speeds", 6) != 0 || (s[j + 6] != ' ' && s[j + 6] != '\t'))
         return false;
-    for (size_t k = j + 6; s[k] && s[k] != '\n'; k++) {
+    for (size_t k = j + 6; s[k] && s[k] != '\n' && s[k] != '\r'; k++) {
         if (s[k] != ',' && k != j + 6)
             continue;
         size_t a = k + 1;
@@ -155,7 +154,7 @@ static bool speeds_line_names(const char *s, size_t j, const char *name, size_t 
 static long defined_later(parser *p, const char *name, size_t n, size_t from) {
     const char *s = p->lx.src;
     for (size_t i = from; s[i]; i++) {
-        if (s[i] != '\n')
+        if (s[i] != '\n' && s[i] != '\r')
             continue;
         size_t j = i + 1;
         while (s[j] == ' ' || s[j] == '\t')
@@ -168,7 +167,7 @@ static long defined_later(parser *p, const char *name, size_t n, size_t from) {
 
 /* Does the definition line at off mention word? (for circular definitions) */
 static bool line_mentions(const char *s, size_t off, const char *word) {
-    size_t n = strlen(word), end = off + strcspn(s + off, "\n");
+    size_t n = strlen(word), end = off + strcspn(s + off, "\r\n");
     const char *eq = memchr(s + off, '=', end - off);
     for (const char *q = eq ? eq + 1 : s + end; q + n <= s + end; q++) {
         bool left = q == s || !is_name_char(q[-1]);
@@ -180,9 +179,8 @@ static bool line_mentions(const char *s, size_t off, const char *word) {
 }
 
 static size_t line_of(const char *s, size_t off) {
-    size_t line = 1;
-    for (size_t i = 0; i < off; i++)
-        line += s[i] == '\n';
+    size_t line, col;
+    qd__diag_line_col(s, off, &line, &col, NULL);
     return line;
 }
 
@@ -232,18 +230,18 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
         *out = scalar(m->speeds[u].def, off, n);
         return true;
     }
-    for (size_t i = 0; i < m->ncoords; i++)
-        if (qd__mdl_name_is(s, off, n, qd_expr_name(m->coords[i]))) {
-            *out = scalar(m->coords[i], off, n);
-            return true;
-        }
-    for (size_t i = 0; i < m->nparams; i++)
-        if (qd__mdl_name_is(s, off, n, qd_expr_name(m->params[i]))) {
-            /* a parameter fixed from outside is its number (qd_model_opts) */
-            *out = scalar(m->pfixed[i] ? m->pvals[i] : m->params[i], off, n);
-            p->met_fixed = p->met_fixed || m->pfixed[i];
-            return true;
-        }
+    long i = qd__mdl_names_find(m, QD_MDL_NAME_COORD, s + off, n);
+    if (i >= 0) {
+        *out = scalar(m->coords[i], off, n);
+        return true;
+    }
+    i = qd__mdl_names_find(m, QD_MDL_NAME_PARAM, s + off, n);
+    if (i >= 0) {
+        /* a parameter fixed from outside is its number (qd_model_opts) */
+        *out = scalar(m->pfixed[i] ? m->pvals[i] : m->params[i], off, n);
+        p->met_fixed = p->met_fixed || m->pfixed[i];
+        return true;
+    }
     const qd_expr *in = qd__mdl_find_input(m, s + off, n);
     if (in) {
         *out = scalar(in, off, n);
@@ -343,25 +341,17 @@ static bool vector_call(parser *p, const char *name, value *a, size_t n, value *
 }
 
 static const char *user_function(parser *p, size_t off, size_t n) {
-    for (size_t i = 0; i < p->m->nfuncs; i++)
-        if (qd__mdl_name_is(p->lx.src, off, n, p->m->funcs[i]))
-            return p->m->funcs[i];
-    return NULL;
+    long i = qd__mdl_names_find(p->m, QD_MDL_NAME_FUNC, p->lx.src + off, n);
+    return i >= 0 ? p->m->funcs[i] : NULL;
 }
 
 /* Is the name a coordinate, parameter or definition (which a body call such
  * as omega(...) must not hide when its argument is not a body)? */
 static bool names_a_value(parser *p, const char *name) {
     qd_model *m = p->m;
-    if (qd__mdl_find_def(m, name, strlen(name)))
-        return true;
-    for (size_t i = 0; i < m->ncoords; i++)
-        if (!strcmp(name, qd_expr_name(m->coords[i])))
-            return true;
-    for (size_t i = 0; i < m->nparams; i++)
-        if (!strcmp(name, qd_expr_name(m->params[i])))
-            return true;
-    return false;
+    size_t n = strlen(name);
+    return qd__mdl_find_def(m, name, n) || qd__mdl_names_find(m, QD_MDL_NAME_COORD, name, n) >= 0 ||
+           qd__mdl_names_find(m, QD_MDL_NAME_PARAM, name, n) >= 0;
 }
 
 static bool parse_call(parser *p, size_t off, size_t n, value *out) {

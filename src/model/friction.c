@@ -67,8 +67,8 @@ static bool parse_normal(parser *p, fclause *fc) {
     if (at.kind == TK_IDENT) {
         lexer ahead = p->lx;
         qd__lex_next(&ahead);
-        char name[64];
-        snprintf(name, sizeof name, "%.*s", (int)(at.len < 63 ? at.len : 63), p->lx.src + at.off);
+        char name[QD_MDL_NAME_MAX];
+        snprintf(name, sizeof name, "%.*s", (int)at.len, p->lx.src + at.off); /* at most 127 */
         bool alone = ahead.tok.kind == TK_NEWLINE || ahead.tok.kind == TK_EOF;
         if (alone && (is_constraint(p->m, name) || !known_name(p, name))) {
             strcpy(fc->normal_con, name);

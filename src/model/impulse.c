@@ -276,7 +276,7 @@ static bool push_sudden(parser *p, sudden **list, size_t *n, const char *name, c
 
 /* impact constraint [NAME ':'] LHS ['=' RHS] [restitution E] */
 static bool sudden_constraint(parser *p) {
-    char name[64];
+    char name[QD_MDL_NAME_MAX];
     token at;
     qd__lex_next(&p->lx); /* constraint */
     if (!label(p, "k", name, sizeof name, &at))
@@ -312,7 +312,7 @@ bool qd__mdl_stmt_impact(parser *p) {
         if (!named_constraint)
             return sudden_constraint(p);
     }
-    char name[64];
+    char name[QD_MDL_NAME_MAX];
     token at;
     if (!label(p, "contact", name, sizeof name, &at))
         return false;
@@ -344,7 +344,7 @@ bool qd__mdl_stmt_impact(parser *p) {
 bool qd__mdl_stmt_prescribe(parser *p) {
     do {
         qd__lex_next(&p->lx);
-        char name[64];
+        char name[QD_MDL_NAME_MAX];
         token at;
         if (!label(p, "v", name, sizeof name, &at))
             return false;

@@ -10,16 +10,27 @@ void qd__lex_init(lexer *lx, const char *src) {
     qd__lex_next(lx);
 }
 
+/* The bytes of the line end at s: "\n", "\r\n" or a lone "\r" (old Mac
+ * files); 0 when s is not at one. */
+static size_t line_end(const char *s) {
+    if (s[0] == '\n')
+        return 1;
+    if (s[0] == '\r')
+        return s[1] == '\n' ? 2 : 1;
+    return 0;
+}
+
 static void skip_blanks(lexer *lx) {
     const char *s = lx->src;
     for (;;) {
         char c = s[lx->pos];
-        if (c == ' ' || c == '\t' || c == '\r' || (c == '\n' && lx->depth > 0))
-            lx->pos++;
-        else if (c == '\\' && s[lx->pos + 1] == '\n')
-            lx->pos += 2; /* an explicit line continuation */
+        size_t eol = line_end(s + lx->pos);
+        if (c == ' ' || c == '\t' || (eol && lx->depth > 0))
+            lx->pos += eol ? eol : 1;
+        else if (c == '\\' && line_end(s + lx->pos + 1))
+            lx->pos += 1 + line_end(s + lx->pos + 1); /* an explicit line continuation */
         else if (c == '#')
-            while (s[lx->pos] && s[lx->pos] != '\n')
+            while (s[lx->pos] && s[lx->pos] != '\n' && s[lx->pos] != '\r')
                 lx->pos++;
         else
             return;
@@ -100,6 +111,9 @@ void qd__lex_next(lexer *lx) {
     } else if ((s[0] == '>' || s[0] == '<') && s[1] == '=') {
         t.kind = s[0] == '>' ? TK_GE : TK_LE; /* a unilateral contact's gap */
         t.len = 2;
+    } else if (line_end(s)) {
+        t.kind = TK_NEWLINE; /* one token for a \r\n */
+        t.len = line_end(s);
     } else {
         t.kind = punct(lx, *s);
         t.len = 1;

@@ -27,10 +27,8 @@ bool qd__mdl_push(qd_ctx *ctx, void **arr, size_t *n, size_t size, const void *i
 }
 
 const def *qd__mdl_find_def(const qd_model *m, const char *name, size_t n) {
-    for (size_t i = m->ndefs; i-- > 0;)
-        if (strlen(m->defs[i].name) == n && memcmp(m->defs[i].name, name, n) == 0)
-            return &m->defs[i];
-    return NULL;
+    long i = qd__mdl_names_find(m, QD_MDL_NAME_DEF, name, n);
+    return i >= 0 ? &m->defs[i] : NULL;
 }
 
 bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t len) {
@@ -43,7 +41,7 @@ bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t 
         qd__free(copy);
         return false;
     }
-    return true;
+    return qd__mdl_names_add(m, QD_MDL_NAME_DEF, m->ndefs - 1);
 }
 
 bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len) {
@@ -52,7 +50,8 @@ bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len) {
     w.src = m->src;
     w.off = off;
     w.len = len;
-    return qd__mdl_push(m->ctx, (void **)&m->wheres, &m->nwheres, sizeof w, &w);
+    return qd__mdl_push(m->ctx, (void **)&m->wheres, &m->nwheres, sizeof w, &w) &&
+           qd__mdl_names_add(m, QD_MDL_NAME_WHERE, m->nwheres - 1);
 }
 
 int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym) {
@@ -115,6 +114,7 @@ void qd_model_free(qd_model *m) {
     qd__free(m->init);
     qd__free(m->init_defs);
     qd__free(m->wheres);
+    qd__mdl_names_free(m);
     qd__mdl_free_isoperimetric(m);
     qd__free(m);
 }
@@ -161,9 +161,38 @@ qd_status qd_model_param_number(const qd_model *m, size_t i, double *x) {
 
 bool qd_model_param_fixed(const qd_model *m, size_t i) { QD_ARGS(false, m); return i < m->nparams && m->pfixed[i]; }
 
+const qd_expr *qd__mdl_subs_params(const qd_model *m, const qd_expr *x, size_t n) {
+    if (!x)
+        return NULL;
+    enum { FEW = 16 };
+    const qd_expr *few[3 * FEW], **sym = few;
+    size_t ns = qd_free_symbols(m->ctx, x, few, FEW);
+    if (ns == 0)
+        return qd__ctx_nomem(m->ctx) ? NULL : x;
+    if (ns > FEW) {
+        if (!(sym = qd__malloc(m->ctx, 3 * ns * sizeof *sym)))
+            return NULL;
+        qd_free_symbols(m->ctx, x, sym, ns);
+    }
+    const qd_expr **from = sym + ns, **to = sym + 2 * ns;
+    size_t k = 0;
+    for (size_t i = 0; i < ns; i++) {
+        const char *name = qd_expr_name(sym[i]);
+        long j = name ? qd__mdl_names_find(m, QD_MDL_NAME_PARAM, name, strlen(name)) : -1;
+        if (j >= 0 && (size_t)j < n && m->params[j] == sym[i]) {
+            from[k] = sym[i];
+            to[k++] = m->pvals[j];
+        }
+    }
+    const qd_expr *r = k ? qd_subs(m->ctx, x, k, from, to) : x;
+    if (sym != few)
+        qd__free(sym);
+    return r;
+}
+
 /* x with the values of the first n parameters put in. */
 static const qd_expr *valued(const qd_model *m, const qd_expr *x, size_t n) {
-    return x ? qd_subs(m->ctx, x, n, m->params, m->pvals) : NULL;
+    return qd__mdl_subs_params(m, x, n);
 }
 
 bool qd__mdl_eval_params(qd_model *m) {
@@ -368,23 +397,15 @@ const qd_expr *qd_model_definition(const qd_model *m, const char *name) {
 
 bool qd_model_where(const qd_model *m, const char *what, qd_diag *out) {
     QD_ARGS(false, m && what);
-    for (size_t i = 0; i < m->nwheres; i++) {
+    long i = qd__mdl_names_find(m, QD_MDL_NAME_WHERE, what, strlen(what));
+    if (i >= 0) {
         const where *w = &m->wheres[i];
-        if (strcmp(w->what, what) != 0)
-            continue;
         if (out) {
             memset(out, 0, sizeof *out);
             out->located = true;
             out->offset = w->off;
             out->length = w->len;
-            out->line = 1;
-            size_t start = 0;
-            for (size_t k = 0; k < w->off && w->src[k]; k++)
-                if (w->src[k] == '\n') {
-                    out->line++;
-                    start = k + 1;
-                }
-            out->col = w->off - start + 1;
+            qd__diag_line_col(w->src, w->off, &out->line, &out->col, NULL);
         }
         return true;
     }

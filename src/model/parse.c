@@ -33,6 +33,46 @@ static void read_statements(parser *p) {
     }
 }
 
+/* What the text must be before it is read: at most QD_MODEL_MAX_BYTES,
+ * valid UTF-8 (an overlong or cut character is an error at its byte, not a
+ * strange letter), and no name longer than QD_MDL_NAME_MAX - 1 bytes (two
+ * long names must not be told apart by a cut prefix).  One pass of the
+ * lexer, so a comment may say anything in UTF-8. */
+static bool check_text(parser *p, const char *text) {
+    size_t n = strlen(text);
+    if (n > QD_MODEL_MAX_BYTES) {
+        qd_ctx_error(p->ctx, QD_ERR_TOOBIG, "the model text is %zu bytes; at most %zu MiB are read",
+                     n, QD_MODEL_MAX_BYTES >> 20);
+        p->failed = true;
+        if (p->diag)
+            *p->diag = *qd_ctx_diag(p->ctx);
+        return false;
+    }
+    size_t bad = qd__diag_utf8_check(text, n);
+    if (bad < n) {
+        const unsigned char *u = (const unsigned char *)text + bad;
+        bool overlong = u[0] == 0xC0 || u[0] == 0xC1 || (u[0] == 0xE0 && u[1] < 0xA0) ||
+                        (u[0] == 0xF0 && u[1] < 0x90);
+        const char *hint = "qdot reads UTF-8 text: was this written in another encoding?";
+        p->lx.src = text; /* no token yet: the error is about the byte itself */
+        qd__mdl_perr(p, bad, 1, hint, "invalid UTF-8 at byte %zu: byte 0x%02x %s", bad, u[0],
+                     overlong ? "starts an overlong encoding" : "is not UTF-8 there");
+        qd_ctx_error_about(p->ctx, QD_SUBJECT_TEXT, 0, NULL, QD_REASON_BAD_BYTE, hint);
+        if (p->diag)
+            *p->diag = *qd_ctx_diag(p->ctx);
+        return false;
+    }
+    lexer lx;
+    for (qd__lex_init(&lx, text); lx.tok.kind != TK_EOF; qd__lex_next(&lx))
+        if (lx.tok.kind == TK_IDENT && lx.tok.len >= QD_MDL_NAME_MAX) {
+            p->lx.src = text;
+            return qd__mdl_perr(p, lx.tok.off, lx.tok.len, "choose a shorter name",
+                                "a name of %zu bytes; names are at most %d bytes", lx.tok.len,
+                                QD_MDL_NAME_MAX - 1);
+        }
+    return true;
+}
+
 /* An error that is not in the text (a value given from outside): not located. */
 static void unlocated(parser *p, const char *message) {
     p->failed = true;
@@ -77,9 +117,11 @@ qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts
     m->ctx = ctx;
     m->text = m->src = text;
     parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, opts, used, false};
-    qd__lex_init(&p.lx, text);
-    if (check_given(&p, false))
-        read_statements(&p);
+    if (check_text(&p, text)) {
+        qd__lex_init(&p.lx, text);
+        if (check_given(&p, false))
+            read_statements(&p);
+    }
     if (!p.failed)
         qd__mdl_finish(&p);
     if (!p.failed)
@@ -242,8 +284,10 @@ qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
     if (ok) {
         m->src = copy;
         parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, NULL, NULL, false};
-        qd__lex_init(&p.lx, copy);
-        read_one(&p);
+        if (check_text(&p, copy)) {
+            qd__lex_init(&p.lx, copy);
+            read_one(&p);
+        }
         if (!p.failed)
             qd__mdl_finish(&p);
         ok = !p.failed;

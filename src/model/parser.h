@@ -13,6 +13,10 @@
 #include "lex.h"
 #include "base/diag.h" /* qd__diag_nearest: "did you mean" */
 
+/* A name is at most QD_MDL_NAME_MAX - 1 bytes (a longer one is refused
+ * where it is read, parse.c), so a buffer of QD_MDL_NAME_MAX holds it whole. */
+#define QD_MDL_NAME_MAX 128
+
 /* A value of the language: a scalar, a vector of three components, or a
  * 3x3 matrix (a rotation, an inertia tensor), stored by rows. */
 typedef enum vkind { VK_SCALAR, VK_VECTOR, VK_MATRIX } vkind;
@@ -175,6 +179,9 @@ struct qd_model {
     /* Coulomb friction (friction.c): the contacts, in the order given */
     struct fcontact *contacts;
     size_t ncontacts;
+    /* the name table (names.c) */
+    struct qd__name_entry *names;
+    size_t names_cap, names_used;
 };
 
 typedef struct parser {
@@ -304,7 +311,7 @@ typedef struct fclause {
     size_t off, len;           /* the word `friction` */
     const qd_expr *mu_s, *mu_k;
     const qd_expr *normal;
-    char normal_con[64];       /* "" when N is an expression or not given */
+    char normal_con[QD_MDL_NAME_MAX];       /* "" when N is an expression or not given */
     size_t normal_off, normal_len;
 } fclause;
 
@@ -351,7 +358,6 @@ bool qd__mdl_push_constraint(parser *p, const char *name, const qd_expr *c, size
 int qd__mdl_coord_subscript(parser *p, const char *usage);
 bool qd__mdl_end_of_statement(parser *p);
 bool qd__mdl_fresh_name(parser *p, const char *what);
-#define QD_MDL_NAME_MAX 128
 bool qd__mdl_named_definition(parser *p, const char *noun, const char *usage,
                               bool (*fresh)(parser *p, const char *name, token at),
                               char name[QD_MDL_NAME_MAX], token *at, value *v);
@@ -385,6 +391,19 @@ bool qd__mdl_add_def(qd_model *m, const char *name, value v, size_t off, size_t 
 bool qd__mdl_add_where(qd_model *m, const char *what, size_t off, size_t len);
 int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym);
 bool qd__mdl_push(qd_ctx *ctx, void **arr, size_t *n, size_t size, const void *item);
+
+/* names.c: the hashed name table.  find: the index of the name src[0..n)
+ * of that kind, or -1; add: enter the list's entry at index (false when out
+ * of memory). */
+enum { QD_MDL_NAME_COORD = 1, QD_MDL_NAME_PARAM, QD_MDL_NAME_DEF, QD_MDL_NAME_FUNC,
+       QD_MDL_NAME_WHERE };
+long qd__mdl_names_find(const qd_model *m, unsigned kind, const char *s, size_t n);
+bool qd__mdl_names_add(qd_model *m, unsigned kind, size_t index);
+void qd__mdl_names_free(qd_model *m);
+extern unsigned long qd__mdl_name_probes; /* slots looked at, for the tests */
+/* x with the values of the parameters of index < n put in (pvals): only the
+ * parameters x contains are looked at. */
+const qd_expr *qd__mdl_subs_params(const qd_model *m, const qd_expr *x, size_t n);
 
 /* Is the name at src[off..off+n) equal to word? */
 bool qd__mdl_name_is(const char *src, size_t off, size_t n, const char *word);

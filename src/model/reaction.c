@@ -104,7 +104,7 @@ static bool add(parser *p, const char *name, size_t con, bool sudden, const valu
 
 /* reaction [LABEL ':'] CON 'on' POSITION */
 bool qd__mdl_stmt_reaction(parser *p) {
-    char name[64];
+    char name[QD_MDL_NAME_MAX];
     token at;
     qd__lex_next(&p->lx);
     label(p, name, sizeof name, &at);

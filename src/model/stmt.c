@@ -32,6 +32,8 @@
 static const char *const reserved[] = {"T", "V", "L", "U", "H", "dissipation"};
 
 static qd_ctx *C(parser *p) { return p->ctx; }
+static bool no_acceleration(parser *p, const char *what, const qd_expr *e, size_t off,
+                            size_t len);
 
 static void tok_text(const parser *p, char *buf, size_t cap) {
     size_t n = p->lx.tok.len < cap - 1 ? p->lx.tok.len : cap - 1;
@@ -88,15 +90,13 @@ bool qd__mdl_fresh_name(parser *p, const char *what) {
     tok_text(p, name, sizeof name);
     const qd_model *m = p->m;
     const char *kind = NULL;
-    for (size_t i = 0; i < m->ncoords && !kind; i++)
-        if (!strcmp(name, qd_expr_name(m->coords[i])))
-            kind = "coordinate";
-    for (size_t i = 0; i < m->nparams && !kind; i++)
-        if (!strcmp(name, qd_expr_name(m->params[i])))
-            kind = "parameter";
-    for (size_t i = 0; i < m->nfuncs && !kind; i++)
-        if (!strcmp(name, m->funcs[i]))
-            kind = "function";
+    size_t n = strlen(name);
+    if (qd__mdl_names_find(m, QD_MDL_NAME_COORD, name, n) >= 0)
+        kind = "coordinate";
+    else if (qd__mdl_names_find(m, QD_MDL_NAME_PARAM, name, n) >= 0)
+        kind = "parameter";
+    else if (qd__mdl_names_find(m, QD_MDL_NAME_FUNC, name, n) >= 0)
+        kind = "function";
     if (!kind && qd__mdl_find_def(m, name, strlen(name)))
         kind = "definition";
     if (!kind && qd__mdl_find_body(m, name, strlen(name)))
@@ -141,10 +141,9 @@ static bool stmt_coordinates(parser *p) {
                             qd__lex_tk_name(p->lx.tok.kind));
         char name[128];
         tok_text(p, name, sizeof name);
-        for (size_t i = 0; i < p->m->ncoords; i++)
-            if (!strcmp(name, qd_expr_name(p->m->coords[i])))
-                return qd__mdl_perr_tok(p, "each coordinate is declared once",
-                                "coordinate '%s' is declared twice", name);
+        if (qd__mdl_names_find(p->m, QD_MDL_NAME_COORD, name, strlen(name)) >= 0)
+            return qd__mdl_perr_tok(p, "each coordinate is declared once",
+                                    "coordinate '%s' is declared twice", name);
         if (!qd__mdl_fresh_name(p, "coordinate"))
             return false;
         const qd_expr *q = qd_coord(C(p), name);
@@ -165,6 +164,8 @@ static bool stmt_coordinates(parser *p) {
             !qd__mdl_add_where(m, name, p->lx.tok.off, p->lx.tok.len))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         m->ncoords = n;
+        if (!qd__mdl_names_add(m, QD_MDL_NAME_COORD, n - 1))
+            return qd__mdl_perr_tok(p, NULL, "out of memory");
         qd__lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
@@ -204,7 +205,7 @@ static bool parse_constant(parser *p, const qd_expr *given, const qd_expr **def,
     if (given)
         *def = given;
     const qd_model *m = p->m;
-    *out = qd_subs(C(p), *def, m->nparams, m->params, m->pvals);
+    *out = qd__mdl_subs_params(m, *def, m->nparams);
     const qd_expr *sym;
     size_t nsym = *out ? qd_free_symbols(C(p), *out, &sym, 1) : 0;
     if (qd__ctx_nomem(C(p))) /* 0 symbols may mean out of memory */
@@ -231,7 +232,8 @@ static bool push_param(parser *p, const qd_expr *sym, const qd_expr *def, const 
     return qd__mdl_push(m->ctx, (void **)&m->params, &n1, sizeof sym, &sym) &&
            qd__mdl_push(m->ctx, (void **)&m->pdefs, &n2, sizeof def, &def) &&
            qd__mdl_push(m->ctx, (void **)&m->pfixed, &n3, sizeof fixed, &fixed) &&
-           qd__mdl_push(m->ctx, (void **)&m->pvals, &m->nparams, sizeof v, &v);
+           qd__mdl_push(m->ctx, (void **)&m->pvals, &m->nparams, sizeof v, &v) &&
+           qd__mdl_names_add(m, QD_MDL_NAME_PARAM, m->nparams - 1);
 }
 
 /* parameters NAME '=' VALUE (',' NAME '=' VALUE)* */
@@ -310,6 +312,8 @@ static bool stmt_functions(parser *p) {
             return qd__mdl_perr_tok(p, NULL, "out of memory");
         }
         strcpy(copy, name);
+        if (!qd__mdl_names_add(p->m, QD_MDL_NAME_FUNC, p->m->nfuncs - 1))
+            return qd__mdl_perr_tok(p, NULL, "out of memory");
         qd__lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
@@ -335,6 +339,9 @@ static bool stmt_particle(parser *p) {
     if (!qd__mdl_parse_scalar(p, &mass, "a mass") || !qd__mdl_expect_at(p, "particle m at (x, y, z)") ||
         !qd__mdl_parse_vector(p, &r, "a position"))
         return false;
+    for (int i = 0; i < 3; i++)
+        if (!no_acceleration(p, "a particle's position", r.c[i], r.off, r.len))
+            return false;
     qd_ctx *ctx = C(p);
     const qd_expr *v2 = ctx ? qd_int(ctx, 0) : NULL;
     for (int i = 0; i < 3; i++)
@@ -372,10 +379,10 @@ static bool stmt_force(parser *p) {
 }
 
 static int coord_named(parser *p) {
-    for (size_t i = 0; i < p->m->ncoords; i++)
-        if (qd__mdl_name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, qd_expr_name(p->m->coords[i])))
-            return (int)i;
-    return -1;
+    if (p->lx.tok.kind != TK_IDENT)
+        return -1;
+    return (int)qd__mdl_names_find(p->m, QD_MDL_NAME_COORD, p->lx.src + p->lx.tok.off,
+                                   p->lx.tok.len);
 }
 
 /* The name at the token is none of the coordinates (nor, with speeds, of
@@ -433,9 +440,32 @@ static bool stmt_genforce(parser *p) {
     return qd__mdl_end_of_statement(p);
 }
 
+/* The initial value named name (with its prime, "q'") is given once in the
+ * text being read: else an error at off..off+len naming the first place.
+ * A statement added to a model later (qd_model_add_statement) may replace
+ * a value of the model's text. */
+static bool initial_once(parser *p, const char *name, size_t off, size_t len) {
+    qd_model *m = p->m;
+    char key[QD_MDL_NAME_MAX + 16];
+    snprintf(key, sizeof key, "initial:%s", name);
+    long i = qd__mdl_names_find(m, QD_MDL_NAME_WHERE, key, strlen(key));
+    if (i >= 0 && m->wheres[i].src == m->src) {
+        size_t line, col;
+        qd__diag_line_col(m->src, m->wheres[i].off, &line, &col, NULL);
+        char hint[QD_MDL_NAME_MAX + 96];
+        snprintf(hint, sizeof hint, "the first is at line %zu, column %zu; give each initial value once",
+                 line, col);
+        return qd__mdl_perr(p, off, len, hint, "the initial value of %s is given twice (first on "
+                            "line %zu)", name, line);
+    }
+    return qd__mdl_add_where(m, key, off, len) || qd__mdl_perr(p, off, len, NULL, "out of memory");
+}
+
 /* initial SPEED = VALUE: the speed itself, not its rate (a speed is
  * already a velocity). */
 static bool initial_speed(parser *p, speed *s) {
+    if (!initial_once(p, qd_expr_name(s->sym), p->lx.tok.off, p->lx.tok.len))
+        return false;
     qd__lex_next(&p->lx);
     if (p->lx.tok.kind == TK_PRIME)
         return qd__mdl_perr_tok(p, "give the speed's own value: initial u1 = 0.3",
@@ -466,6 +496,7 @@ static bool stmt_initial(parser *p) {
         if (p->lx.tok.kind != TK_IDENT || j < 0)
             return p->lx.tok.kind == TK_IDENT ? not_among(p, true)
                                               : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
+        token at = p->lx.tok;
         qd__lex_next(&p->lx);
         unsigned order = 0;
         for (; p->lx.tok.kind == TK_PRIME; qd__lex_next(&p->lx))
@@ -473,6 +504,10 @@ static bool stmt_initial(parser *p) {
         if (order > 1)
             return qd__mdl_perr_tok(p, "give positions and velocities: q = ..., q' = ...",
                             "an initial value is for a coordinate or its velocity");
+        char name[QD_MDL_NAME_MAX + 1];
+        snprintf(name, sizeof name, "%s%s", qd_expr_name(p->m->coords[j]), order ? "'" : "");
+        if (!initial_once(p, name, at.off, at.len + order))
+            return false;
         if (p->lx.tok.kind != TK_EQ)
             return qd__mdl_perr_tok(p, "write: initial q = 0.5, q' = 0", "expected '='");
         qd__lex_next(&p->lx);
@@ -519,8 +554,8 @@ bool qd__mdl_push_constraint(parser *p, const char *name, const qd_expr *c, size
         return qd__mdl_perr(p, off, len, NULL, "out of memory");
     }
     /* from here the model owns the name (ncons counts it) */
-    char what[112];
-    snprintf(what, sizeof what, "constraint:%.100s", name);
+    char what[160];
+    snprintf(what, sizeof what, "constraint:%s", name);
     return qd__mdl_add_where(m, what, off, len) ||
            qd__mdl_perr(p, off, len, NULL, "out of memory");
 }
@@ -533,13 +568,13 @@ bool qd__mdl_constraint_named(const qd_model *m, const char *name) {
 static bool stmt_constraint(parser *p) {
     qd_model *m = p->m;
     qd__lex_next(&p->lx);
-    char name[64];
+    char name[QD_MDL_NAME_MAX];
     token at = p->lx.tok;
     lexer save = p->lx;
     qd__lex_next(&p->lx);
     bool named = at.kind == TK_IDENT && p->lx.tok.kind == TK_COLON;
     if (named) {
-        snprintf(name, sizeof name, "%.*s", (int)(at.len < 63 ? at.len : 63), p->lx.src + at.off);
+        snprintf(name, sizeof name, "%.*s", (int)at.len, p->lx.src + at.off); /* at most 127 */
         if (constraint_named(m, name))
             return qd__mdl_perr(p, at.off, at.len, "give each constraint its own name",
                         "constraint '%s' is named twice", name);
@@ -579,6 +614,51 @@ static bool stmt_constraint(parser *p) {
     if (friction && !qd__mdl_friction_add(p, &fc, name, QD_CONTACT_CONSTRAINT, &ci, 1))
         return false;
     return qd__mdl_end_of_statement(p);
+}
+
+/* An acceleration (q'', or a higher derivative) in e, or NULL; *nomem when
+ * the symbols could not be listed. */
+static const qd_expr *acceleration(parser *p, const qd_expr *e, bool *nomem) {
+    const qd_expr *few[16], **sym = few;
+    *nomem = false;
+    size_t n = e ? qd_free_symbols(C(p), e, few, 16) : 0;
+    if (n == 0) {
+        *nomem = e && qd__ctx_nomem(C(p));
+        return NULL;
+    }
+    if (n > 16) {
+        if (!(sym = qd__malloc(C(p), n * sizeof *sym))) {
+            *nomem = true;
+            return NULL;
+        }
+        qd_free_symbols(C(p), e, sym, n);
+    }
+    const qd_expr *a = NULL;
+    for (size_t i = 0; i < n && !a; i++) {
+        const char *name = qd_expr_name(sym[i]);
+        if (name && strstr(name, "''"))
+            a = sym[i];
+    }
+    if (sym != few)
+        qd__free(sym);
+    return a;
+}
+
+#define ACCEL_HINT "Lagrange's equations need L(q, q', t); an acceleration would change " \
+                   "their order and is not handled: write the energy in the velocities"
+
+/* The energy what (T, V, L, U, dissipation, a particle's position) at
+ * off..off+len has no acceleration in it: else an error there. */
+static bool no_acceleration(parser *p, const char *what, const qd_expr *e, size_t off,
+                            size_t len) {
+    bool nomem;
+    const qd_expr *a = acceleration(p, e, &nomem);
+    if (nomem)
+        return qd__mdl_perr(p, off, len, NULL, "out of memory");
+    if (a)
+        return qd__mdl_perr(p, off, len, ACCEL_HINT, "%s depends on the acceleration %s",
+                            what, qd_expr_name(a));
+    return true;
 }
 
 static const qd_expr **reserved_slot(qd_model *m, const char *name) {
@@ -627,6 +707,8 @@ static bool stmt_definition(parser *p) {
                             ? "an energy is a scalar: use dot(v, v) for |v|^2"
                             : "an energy is a scalar",
                         "a %s where a scalar is needed: %s is a scalar", qd__mdl_vkind_name(v.kind), name);
+        if (!no_acceleration(p, name, v.c[0], v.off, v.len))
+            return false;
         /* particle lines and T = ... add up (and circuit elements with V, D) */
         *slot = adds && *slot ? qd_add(C(p), *slot, v.c[0]) : v.c[0];
     } else if (!qd__mdl_add_def(p->m, name, v, at.off, at.len)) {
@@ -751,6 +833,17 @@ bool qd__mdl_finish(parser *p) {
     }
     if (!m->L)
         return qd__mdl_perr(p, 0, 1, NULL, "%s", qd_ctx_message(ctx));
+    /* what the statements above did not see: a body's position or rotation,
+     * a circuit element, a definition added in pieces */
+    static const char *const energy[] = {"L", "T", "V", "U", "dissipation"};
+    const qd_expr *const parts[] = {m->L, m->T, m->V, m->U, m->D};
+    for (size_t i = 0; i < 5; i++) {
+        qd_diag at;
+        bool placed = qd_model_where(m, energy[i], &at);
+        if (!no_acceleration(p, energy[i], parts[i], placed ? at.offset : 0,
+                             placed ? at.length : 1))
+            return false;
+    }
     return qd__mdl_apply_isoperimetric(p) && qd__mdl_check_inputs(p);
 }
 

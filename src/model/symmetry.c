@@ -210,7 +210,7 @@ bool qd__mdl_stmt_symmetry(parser *p) {
         return qd__mdl_perr(p, kw.off, kw.len, "declare the coordinates first", "a symmetry before any "
                     "coordinates");
     token lab = label(p);
-    char name[64];
+    char name[QD_MDL_NAME_MAX];
     if (!name_of(p, true, lab, name, sizeof name))
         return false;
     token first = p->lx.tok;
@@ -260,7 +260,7 @@ bool qd__mdl_stmt_integral(parser *p) {
     qd_model *m = p->m;
     token kw = p->lx.tok;
     token lab = label(p);
-    char name[64];
+    char name[QD_MDL_NAME_MAX];
     if (!name_of(p, false, lab, name, sizeof name))
         return false;
     size_t off = p->lx.tok.off;

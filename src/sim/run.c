@@ -807,6 +807,20 @@ static qd_status initial_finite(qd__run *r) {
     return QD_OK;
 }
 
+/* The distances |q - q0| and |q' - q'0| the start's projection onto the
+ * constraints moved the initial state (qd NULL: velocities not compared). */
+static void initial_moved(size_t n, const qd_sim_opts *o, const double *q, const double *qd,
+                          qd_sim_stats *stats) {
+    double dq = 0, dv = 0;
+    for (size_t j = 0; j < n; j++) {
+        dq += (q[j] - o->q0[j]) * (q[j] - o->q0[j]);
+        if (qd && o->qd0)
+            dv += (qd[j] - o->qd0[j]) * (qd[j] - o->qd0[j]);
+    }
+    stats->initial_moved_q = sqrt(dq);
+    stats->initial_moved_qd = sqrt(dv);
+}
+
 /* The run on s, a copy of the compiled system with its own workspace. */
 static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
@@ -833,6 +847,8 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         st = given_finite(s, o);
     if (st == QD_OK)
         st = initial_state(&r, o);
+    if (st == QD_OK && s->m && !o->no_project && !s->hamilton) /* what the projection moved */
+        initial_moved(s->n, o, it.y, s->se || o->u0 ? NULL : r.qd, stats);
     if (st == QD_OK && s->nimp)
         st = qd__impact_check_start(&r, it.t, it.y);
     if (st == QD_OK)

@@ -9,6 +9,7 @@
  */
 #include "node.h"
 #include "../base/args.h"
+#include "../base/diag.h" /* qd__diag_line_col */
 
 #include <assert.h>
 #include <stdio.h>
@@ -355,14 +356,7 @@ void qd_ctx_error_at(qd_ctx *ctx, const char *text, size_t offset, size_t length
     d->located = true;
     d->offset = offset < n ? offset : n;
     d->length = length ? length : 1;
-    d->line = 1;
-    size_t start = 0;
-    for (size_t i = 0; i < d->offset; i++)
-        if (text[i] == '\n') {
-            d->line++;
-            start = i + 1;
-        }
-    d->col = d->offset - start + 1;
+    qd__diag_line_col(text, d->offset, &d->line, &d->col, NULL); /* \n, \r\n or \r */
     if (d->subject == QD_SUBJECT_NONE)
         d->subject = QD_SUBJECT_TEXT;
 }

@@ -1507,6 +1507,19 @@ static void null_mech(void **state)
     /* d NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_dof(F.ctx, F.eom, NULL));
     reset(&F);
+    /* ---- qd_eom_audit */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_audit(NULL, F.model, F.eom, (qd_audit *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_audit(F.ctx, NULL, F.eom, (qd_audit *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_audit(F.ctx, F.model, NULL, (qd_audit *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_audit(F.ctx, F.model, F.eom, NULL));
+    reset(&F);
     teardown(&F);
 }
 

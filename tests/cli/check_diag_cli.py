@@ -44,7 +44,7 @@ CASES = [
      ['<expression>:1:257: error: expression nested too deeply', 'hint: brackets and signs']),
     # was: "unexpected an unexpected character after the statement"
     (['eom', 'ff.qd'], USAGE,
-     ['ff.qd:1:14: error: unexpected byte 0xff (not UTF-8 text)\n  coordinates x',
+     ['ff.qd:1:14: error: invalid UTF-8 at byte 13: byte 0xff is not UTF-8 there\n  coordinates x?',
       '\n' + ' ' * 15 + '^\n', 'hint: ']),
     (['eom', 'theta.qd'], USAGE,
      ["theta.qd:2:12: error: 'θ' (U+03B8) cannot be used in a name; names are ASCII letters, "
