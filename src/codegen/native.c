@@ -19,7 +19,7 @@
  * options ("ccache gcc"); its output goes to a .log next to the object when
  * it fails, and its first lines into the context's message.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* realpath, S_ISVTX */
 #include "cg.h"
 #include "../base/mem.h"
 
@@ -80,6 +80,36 @@ static const char *untrusted(const struct stat *st) {
     return NULL;
 }
 
+/* Each directory above the cache must keep others from renaming it away: the
+ * user's or root's, and writable by group or others only when sticky (as
+ * /tmp); else another user could put a directory of theirs in its place
+ * between the checks and the dlopen by name. */
+static const char *unsafe_ancestor(const char *dir, char *which, size_t cap) {
+    char real[4096];
+    if (!realpath(dir, real))
+        return strerror(errno);
+    for (size_t i = strlen(real); i > 0; i--) {
+        if (real[i] != '/' && i != strlen(real))
+            continue;
+        char c = real[i];
+        real[i] = '\0';
+        struct stat st;
+        const char *why = NULL;
+        if (stat(i ? real : "/", &st) != 0)
+            why = strerror(errno);
+        else if (st.st_uid != 0 && st.st_uid != geteuid())
+            why = "it is not owned by you or root";
+        else if ((st.st_mode & (S_IWGRP | S_IWOTH)) && !(st.st_mode & S_ISVTX))
+            why = "others may rename what is in it (writable by group or others, not sticky)";
+        if (why) {
+            snprintf(which, cap, "%s", i ? real : "/");
+            return why;
+        }
+        real[i] = c;
+    }
+    return NULL;
+}
+
 /* The cache directory, opened (*dfd) and checked: created 0700 when missing,
  * refused (QD_ERR_UNSUPPORTED, so the caller falls back to the interpreter)
  * when another user owns it or others may write to it. */
@@ -116,6 +146,15 @@ static qd_status cache_dir(qd_ctx *ctx, const char *given, char *out, size_t cap
                      "native code: the cache directory %s is not safe to load code from: %s "
                      "(make it yours and private: chmod 700; or set XDG_CACHE_HOME)",
                      out, why);
+        return QD_ERR_UNSUPPORTED;
+    }
+    char above[4096];
+    if ((why = unsafe_ancestor(out, above, sizeof above))) {
+        close(fd);
+        qd_ctx_error(ctx, QD_ERR_UNSUPPORTED,
+                     "native code: the cache directory %s is not safe to load code from: "
+                     "the directory %s above it: %s (set XDG_CACHE_HOME to a private place)",
+                     out, above, why);
         return QD_ERR_UNSUPPORTED;
     }
     *dfd = fd;

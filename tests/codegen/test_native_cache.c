@@ -3,8 +3,9 @@
  * run, so it is trusted only when it is the user's alone (issue 30):
  *   a cache directory qdot creates is 0700, and the object in it is
  *     writable by no one else;
- *   an object planted in a group-writable directory, or in a directory of
- *     another user, is not loaded (its constructor never runs), and the
+ *   an object planted in a group-writable directory, in a directory of
+ *     another user, or in a private directory inside one others may write
+ *     to (not sticky), is not loaded (its constructor never runs), and the
  *     refusal says why (QD_ERR_UNSUPPORTED: the CLI falls back);
  *   a symlink, or a group-writable file, in place of the object is refused;
  *     an object without this model's key is refused;
@@ -178,6 +179,17 @@ static void test_planted_object(void **state) {
     make_dir(strcat(shared, "-other"), 0757);
     plant(shared, name, marker, 0755);
     expect_refused(s, shared, "writable by group or others");
+    assert_false(exists(marker));
+
+    /* a private directory in one that others may write to (not sticky): they
+     * could rename it away and put theirs in its place */
+    char inner[340];
+    subdir(shared, sizeof shared, "open");
+    make_dir(shared, 0777);
+    JOIN(inner, sizeof inner, "%s/qdot", shared);
+    make_dir(inner, 0700);
+    plant(inner, name, marker, 0700);
+    expect_refused(s, inner, "others may rename");
     assert_false(exists(marker));
 
     /* a directory of another user (as root, a directory given to nobody) */
