@@ -3,7 +3,7 @@ PREFIX ?= /usr/local
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE  ?= cmake
 
-.PHONY: all deps build demo test test-asan test-tsan bench install clean
+.PHONY: all deps build demo test test-builds test-asan test-tsan bench install clean
 
 all: build
 
@@ -22,17 +22,31 @@ demo:
 	./build/qdot modes examples/double_pendulum.qd
 	./build/qdot simulate examples/double_pendulum.qd --t-end 1000 --rtol 1e-12 --initial "theta1=pi/2, theta2=pi/2" --out /dev/null
 
-# Every test twice: a normal build, then AddressSanitizer + UBSan (any report fails).
+# Every test twice: a normal build, then AddressSanitizer + UBSan (any report
+# fails); every tree with warnings as errors (QDOT_WERROR, never forced on users).
 test:
 	./scripts/deps.sh test
-	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=ON
+	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=ON -DQDOT_WERROR=ON
 	$(CMAKE) --build build -j $(JOBS)
 	cd build && ctest --output-on-failure -j $(JOBS)
+	$(MAKE) test-builds
 	$(MAKE) test-asan
 	$(MAKE) test-tsan
 
+# Built, not run: what a user's plain `cmake -DCMAKE_BUILD_TYPE=Release` makes
+# (-O3) with GCC and with clang, the tests included, warnings as errors, so
+# that a warning only one compiler or -O level sees cannot come back.
+test-builds:
+	$(CMAKE) -S . -B build-gcc-release -DCMAKE_C_COMPILER=gcc -DCMAKE_BUILD_TYPE=Release \
+	  -DQDOT_TESTS=ON -DQDOT_WERROR=ON
+	$(CMAKE) --build build-gcc-release -j $(JOBS)
+	$(CMAKE) -S . -B build-clang-release -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=Release \
+	  -DQDOT_TESTS=ON -DQDOT_WERROR=ON
+	$(CMAKE) --build build-clang-release -j $(JOBS)
+
 test-asan:
-	$(CMAKE) -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DQDOT_SANITIZE=ON -DQDOT_TESTS=ON
+	$(CMAKE) -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DQDOT_SANITIZE=ON -DQDOT_TESTS=ON \
+	  -DQDOT_WERROR=ON
 	$(CMAKE) --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -41,7 +55,8 @@ test-asan:
 # Two threads sharing one compiled system under ThreadSanitizer (any report
 # fails): only the library and that test are built.
 test-tsan:
-	$(CMAKE) -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TSAN=ON -DQDOT_TESTS=ON
+	$(CMAKE) -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TSAN=ON -DQDOT_TESTS=ON \
+	  -DQDOT_WERROR=ON
 	$(CMAKE) --build build-tsan -j $(JOBS) --target sim_test_threads
 	TSAN_OPTIONS=halt_on_error=1:exitcode=66 ./build-tsan/tests/sim_test_threads
 	# Lyapunov exponents: two threads on one qd_lyap (tests/lyap/test_threads.c)
@@ -71,4 +86,4 @@ install: build
 	$(CMAKE) --install build --prefix $(PREFIX)
 
 clean:
-	rm -rf build build-asan build-tsan build-bench
+	rm -rf build build-asan build-tsan build-bench build-gcc-release build-clang-release

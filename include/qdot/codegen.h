@@ -25,7 +25,10 @@
  * reusing the file when it is already there, and dlopens it.  When no
  * compiler runs or compilation fails it returns QD_ERR_UNSUPPORTED with the reason
  * (and the compiler's first lines of output) in the context, so the caller
- * can fall back to qd_eom_eval.
+ * can fall back to qd_eom_eval.  So it does when the cache is not the user's
+ * alone: a cache_dir owned by another user or writable by group or others,
+ * or an object there that is a symlink, not the user's, writable by others
+ * or not compiled for this text.
  */
 #ifndef QDOT_CODEGEN_H
 #define QDOT_CODEGEN_H
@@ -85,7 +88,7 @@ QD_API qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const struc
                                      const char *prefix, qd_buf *c_text, qd_buf *h_text);
 
 /* Generate, compile (or reuse) and load.  cache_dir NULL: $XDG_CACHE_HOME/qdot,
- * else $HOME/.cache/qdot (created when missing).  On failure *out is zeroed. */
+ * else $HOME/.cache/qdot (created 0700 when missing).  On failure *out is zeroed. */
 QD_API qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache_dir,
                          qd_native *out);
 QD_API void qd_native_unload(qd_native *nat);

@@ -180,7 +180,8 @@ QD_API void qd_sim_set_native(qd_sim *s, qd_sim_native_rhs rhs);
  * as the interpreter: the same results to the bit.  The object is the
  * qd_sim's (closed by qd_sim_free) and serves every tolerance.  *cached (may
  * be NULL): the object was already in the cache.  QD_ERR_UNSUPPORTED
- * (reason recorded) when no compiler runs or compilation fails; the runs
+ * (reason recorded) when no compiler runs, compilation fails or the cache
+ * is not the user's alone (qdot/codegen.h); the runs
  * then stay interpreted.  Before qd_sim_compile. */
 QD_API qd_status qd_sim_load_native_taylor(qd_sim *s, const char *cache_dir, bool *cached);
 

@@ -155,13 +155,13 @@ static qd_status fail_motion(qd_ctx *ctx, qd_action *a, qd_act_fail why, size_t 
     static const char *const what[] = {
         "",
         "%s is unbounded: p^2 has no second turning point, so there is no cycle",
-        "%s is on a separatrix: p^2 has a double root, the period and dJ/dE diverge "
-        "logarithmically",
+        ("%s is on a separatrix: p^2 has a double root, the period and dJ/dE diverge "
+         "logarithmically"),
         "%s is at rest at an equilibrium (p^2 <= 0 about the state): J = 0"};
     static const char *const hint[] = {
         NULL,
-        "an unbounded motion has no cycle and so no action; where the potential has a well, "
-        "a state of lower energy stays in it",
+        ("an unbounded motion has no cycle and so no action; where the potential has a well, "
+         "a state of lower energy stays in it"),
         "move the state off the separatrix: a libration just below or a rotation just above",
         "the small oscillations about it are `qdot modes`"};
     a->fail = why;

@@ -25,7 +25,8 @@ qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_
 /* Compile text (one C file) into cache (NULL: qd_native_load's default)
  * unless its object is there, and dlopen it.  generator names the text's
  * kind and version (part of the hash).  path: the object's name; cached:
- * it was there.  QD_ERR_UNSUPPORTED when no compiler runs or it fails. */
+ * it was there.  QD_ERR_UNSUPPORTED when no compiler runs or it fails, or
+ * the cache is not the user's alone (see native.c). */
 qd_status qd__native_object(qd_ctx *ctx, const char *text, const char *generator,
                             const char *cache, char path[4096], bool *cached, void **handle);
 

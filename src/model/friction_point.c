@@ -34,10 +34,10 @@ static qd_ctx *C(parser *p) { return p->ctx; }
 
 /* The identifier at the token as a C string (consumed). */
 static bool take_name(parser *p, char *buf, size_t cap, token *at, const char *what) {
+    *at = p->lx.tok; /* set on every path: the caller's token is never left unset */
     if (p->lx.tok.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, usage, "expected %s, found %s", what,
                                 qd__lex_tk_name(p->lx.tok.kind));
-    *at = p->lx.tok;
     snprintf(buf, cap, "%.*s", (int)(at->len < cap - 1 ? at->len : cap - 1), p->lx.src + at->off);
     qd__lex_next(&p->lx);
     return true;

@@ -45,11 +45,15 @@ closed forms the tests use") has the derivations.
 - Errors (exit 2, FILE:LINE:COL, the caret, a hint): friction on a holonomic
   constraint, a negative MU, an unknown normal constraint.
 
-A part the engine does not provide yet is reported as SKIP with the missing
-feature named (never counted as passed).
+A part the engine does not give (a model `qdot check` refuses, a column or a
+stat missing, a command that fails) is a FAILURE with what is missing named:
+these features are in qdot, and a qdot that lost one must not pass.  The only
+skip is for a missing prerequisite of the test itself (SymPy), reported to
+ctest as skipped (exit 77, SKIP_RETURN_CODE).
 
 Usage: check_friction_cli.py --build BUILD_DIR
-Prints "N passed, N failed, N skipped"; exit 1 on any failure.
+Prints "N passed, N failed, N skipped"; exit 1 on any failure, else 77 when
+something was skipped, else 0.
 """
 import argparse
 import json
@@ -78,9 +82,15 @@ def check(cond, what):
     return cond
 
 
-def skip(what, feature):
+def skip(what, prerequisite):
+    """A part the test cannot run here: a prerequisite of the test is missing."""
     results['skipped'] += 1
-    print('SKIP %s: the engine does not provide %s yet' % (what, feature))
+    print('SKIP %s: %s' % (what, prerequisite))
+
+
+def lacks(what, feature):
+    """The engine does not give what the part checks: a failure, never a skip."""
+    check(False, '%s: qdot does not give %s' % (what, feature))
 
 
 def close(got, want, tol=TOL, scale=None):
@@ -117,10 +127,10 @@ def supported(qdot, model):
 
 
 def simulate(qdot, what, model, *args):
-    """The run, or None (with a SKIP or FAIL said) when the engine cannot give it."""
+    """The run, or None (with a FAIL said) when the engine cannot give it."""
     missing = supported(qdot, model)
     if missing:
-        skip(what, 'the model statement %s uses (qdot check: %s)' % (Path(model).name, missing))
+        lacks(what, 'the model statement %s uses (qdot check: %s)' % (Path(model).name, missing))
         return None
     rc, out, err = run(qdot, 'simulate', model, '--method', 'dop853', '--rtol', RTOL,
                        '--format', 'json', *args)
@@ -128,7 +138,7 @@ def simulate(qdot, what, model, *args):
         return None
     data = json.loads(out)
     if 'transitions' not in data or not any(c.startswith('mode_') for c in data['columns']):
-        skip(what, 'hybrid stick/slip in simulate (no `transitions` or `mode_` column)')
+        lacks(what, 'hybrid stick/slip in simulate (no `transitions` or `mode_` column)')
         return None
     return Run(data)
 
@@ -138,7 +148,7 @@ def check_balance(what, r, e0=None, scale=0.0):
     to the largest |E| or to scale, an energy of the motion (T + V may stay 0 on an
     incline, where T = -V grows)."""
     if 'dissipated' not in r.cols:
-        skip(what + ': energy balance', 'the `dissipated` column')
+        lacks(what + ': energy balance', 'the `dissipated` column')
         return
     e0 = r.rows[0]['energy'] if e0 is None else e0
     scale = max(abs(e0), max(abs(x['energy']) for x in r.rows), scale, 1e-300)
@@ -157,7 +167,7 @@ def check_balance(what, r, e0=None, scale=0.0):
         check('surface_work' not in r.cols and st.get('surface_work') == 0,
               '%s: surface_work %r on a fixed surface' % (what, st.get('surface_work')))
     else:
-        skip(what + ': JSON stats', '`friction_dissipated` and `energy_balance_error`')
+        lacks(what + ': JSON stats', '`friction_dissipated` and `energy_balance_error`')
 
 
 def check_transitions(what, r, want):
@@ -455,7 +465,7 @@ def check_wedge(qdot):
     try:
         import sympy  # noqa: F401
     except ImportError:
-        skip('spinning ball on a rough wedge', 'nothing: SymPy (python3-sympy) is missing here')
+        skip('spinning ball on a rough wedge', 'SymPy (python3-sympy) is missing here')
         return
     wedge_run(qdot, 'spinning ball on a rough wedge, rolling down', p)
     # Spun the other way the friction pushes the ball up the face and the wedge into it;
@@ -469,7 +479,7 @@ def check_wedge(qdot):
     byerly_limit(qdot, p, mu_c)
     what = "spinning ball on a rough wedge, mu = 2 mu_c (Painleve's paradox)"
     if r is None:
-        skip(what, 'hybrid stick/slip in simulate')
+        lacks(what, 'hybrid stick/slip in simulate')
         return
     rc, out, err = run(qdot, 'simulate', EX / 'friction_wedge_sphere.qd', '--t-end', 0.5,
                        '--method', 'dop853', '--rtol', RTOL, '--set', 'Omega=-20',
@@ -636,7 +646,7 @@ def belt_work(what, r, want, t_slip, p):
     """surface_work against its closed form and E + dissipated - surface_work = E(0),
     row by row (relative to the largest energy), and the JSON stats."""
     if 'surface_work' not in r.cols:
-        skip(what + ': the belt\'s work', 'the `surface_work` column')
+        lacks(what + ': the belt\'s work', 'the `surface_work` column')
         return
     scale = max(abs(x['energy']) for x in r.rows)
     worst = max(abs(x['surface_work'] - belt_closed_work(x['t'], want, t_slip, p))
@@ -680,7 +690,7 @@ def check_errors(qdot):
     missing = supported(qdot, EX / 'friction_block_incline.qd')
     if missing:
         for *_, what in ERRORS:
-            skip('error: ' + what, 'the friction clause (qdot check: %s)' % missing)
+            lacks('error: ' + what, 'the friction clause (qdot check: %s)' % missing)
         return
     with tempfile.TemporaryDirectory() as tmp:
         for name, text, line, words, spot, what in ERRORS:
@@ -717,7 +727,9 @@ def main():
                  check_particle, check_stick_slip, check_errors):
         part(qdot)
     print('%(passed)d passed, %(failed)d failed, %(skipped)d skipped' % results)
-    return 1 if results['failed'] else 0
+    if results['failed'] or not results['passed']:
+        return 1
+    return 77 if results['skipped'] else 0
 
 
 if __name__ == '__main__':

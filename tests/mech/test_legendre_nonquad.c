@@ -351,8 +351,8 @@ static void test_singular(void **state) {
  * from H.  Each run ends with the right H (checked at one point) or a clean
  * QD_ERR_NOMEM, nothing leaked. */
 static const char *const FAULT_MODELS[] = {
-    "coordinates x, y\nparameters m = 1.3, e = 0.8, c = 3, B = 2\n"
-    "L = -m*c^2*sqrt(1 - (x'^2 + y'^2)/c^2) + e*B*(x*y' - y*x')/2\n",
+    ("coordinates x, y\nparameters m = 1.3, e = 0.8, c = 3, B = 2\n"
+     "L = -m*c^2*sqrt(1 - (x'^2 + y'^2)/c^2) + e*B*(x*y' - y*x')/2\n"),
     "coordinates x\nL = x'^2/2 + x'^4/12 - x^2/2\n",
     "coordinates x\nparameters m = 1, c = 2\nmomenta p\nH = sqrt(m^2*c^4 + c^2*p^2) + x^2/2\n",
 };
