@@ -37,13 +37,9 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* The D_1000 time bound: 2 s of CPU in an optimized build (it takes 0.08 s),
- * more under the sanitizers; an O(n^3) step would take ~10 s. */
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-#define TIME_LIMIT 20.0
-#else
-#define TIME_LIMIT 2.0
-#endif
+/* The D_1000 case prints its CPU time for the record and asserts nothing
+ * about it: a test must not depend on the machine's speed (issue 30); the
+ * speed is bench/run_symmetry's. */
 
 enum { MAX_OPS = 120 };
 
@@ -432,7 +428,6 @@ static void check_dihedral(size_t n, bool timed) {
     double secs = (double)(clock() - c0) / CLOCKS_PER_SEC;
     if (timed) {  /* CPU time: wall time on a shared machine is mostly waiting */
         printf("D_%zu (order %zu): group and character table in %.3f s of CPU\n", n, 2 * n, secs);
-        assert_true(secs < TIME_LIMIT);
     }
     size_t nclass = (n - 1) / 2 + 1 + (even ? 3 : 1), ones = 0;
     assert_int_equal(g.nclass, nclass);
@@ -504,7 +499,6 @@ static void check_dnh(size_t n, bool timed) {
     if (timed) {
         printf("D_%zu x C2 (order %zu, %zu classes): group and character table in %.3f s of CPU\n", n, M,
                g.nclass, secs);
-        assert_true(secs < 2 * TIME_LIMIT);
     }
     assert_int_equal(g.nclass, 2 * nd);
     bool *hit = calloc(2 * nd, sizeof *hit);
