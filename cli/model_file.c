@@ -4,11 +4,11 @@
  */
 #define _POSIX_C_SOURCE 200809L /* fileno, fstat */
 #include "model_file.h"
+#include "out.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "cli.h"
 
 /* Why a stream could not be read whole. */
@@ -66,25 +66,13 @@ static read_end slurp(FILE *fp, char **text, size_t *len) {
     return READ_OK;
 }
 
-FILE *cli_open_input(const char *path, const char *what) {
-    FILE *fp = fopen(path, "rb");
-    struct stat st;
-    if (fp && fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
-        fclose(fp);
-        cli_diag_error("%s'%s' is a directory, not a file", what ? what : "", path);
-        return NULL;
-    }
-    if (!fp)
-        cli_diag_error("%scannot open '%s': %s", what ? what : "", path, strerror(errno));
-    return fp;
-}
-
 static int read_text(const char *path, cli_model_file *mf) {
     bool std_in = !strcmp(path, "-");
     mf->path = std_in ? "<stdin>" : path;
-    FILE *fp = std_in ? stdin : cli_open_input(path, NULL);
+    int rc = QD_EXIT_USAGE;
+    FILE *fp = std_in ? stdin : cli_in_open(path, &rc);
     if (!fp)
-        return QD_EXIT_USAGE;
+        return rc;
     errno = 0;
     read_end how = slurp(fp, &mf->text, &mf->len);
     int err = errno;

@@ -26,11 +26,6 @@ int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts 
                              cli_model_file *mf);
 void cli_model_file_free(cli_model_file *mf);
 
-/* fopen(path, "rb") for reading an input file (a model, a CSV), or NULL
- * after printing why: "what'PATH' is a directory, not a file" or "cannot
- * open".  what prefixes the message ("--input: "), NULL for none. */
-FILE *cli_open_input(const char *path, const char *what);
-
 /* An error found after parsing (a singular mass matrix), shown at the
  * statement `what` of the model (see qd_model_where) with a caret, or as a
  * plain "FILE: error: ..." line when the model has no such statement. */

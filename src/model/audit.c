@@ -5,6 +5,7 @@
  * (x^2 + y^2 = -1), an initial state off the constraints.  See qd_eom_audit
  * in qdot/mech.h.
  */
+#include "base/args.h"
 #include "qdot/mech.h"
 #include "qdot/model.h"
 #include "base/mem.h"
@@ -65,6 +66,7 @@ static qd_status pivot(qd_ctx *ctx, const qd_eom *e, const point *pt, double *a,
 }
 
 qd_status qd_eom_audit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_audit *out) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
     memset(out, 0, sizeof *out);
     out->mass_ok = out->con_ok = true;
     size_t nq = qd_model_ncoords(m), np = qd_model_nparams(m), n = e->n;

@@ -94,10 +94,10 @@ def main():
         expect(qdot, tmp, 'a NUL byte is located', ['check', 'nul.qd'], 2,
                ['nul.qd:2:7: error: a NUL byte at byte 20'])
         expect(qdot, tmp, 'a directory as a model', ['check', 'adir'], 2,
-               ["'adir' is a directory, not a file"])
+               ["cannot read adir: is a directory"])
         expect(qdot, tmp, 'a directory as a CSV',
                ['simulate', 'ramp.qd', '--t-end', '1', '--input', 'F=adir.csv'], 2,
-               ["--input: 'adir.csv' is a directory, not a file"])
+               ["cannot read adir.csv: is a directory"])
         big = d / 'big.qd'
         with open(big, 'wb') as f:
             f.write(HO)
