@@ -790,8 +790,10 @@ const qd_con *cli_sim_con(const cli_sim *c, size_t k) {
 int cli_sim_fail(cli_sim *c, qd_status st) {
     const char *msg = qd_ctx_message(c->ctx);
     cli_diag_error("%s", msg[0] ? msg : qd_status_str(st));
-    /* options were checked before the run: what fails now is the system's */
-    return QD_EXIT_FAIL;
+    /* options were checked before the run: what fails now is the system's,
+     * but for an output or event the user wrote that has no value (q''',
+     * a name that is not an input), found when the run compiles them */
+    return st == QD_ERR_UNBOUND ? QD_EXIT_USAGE : QD_EXIT_FAIL;
 }
 
 /* ---- qdot sweep (issue 21) -------------------------------------------------- */
