@@ -445,10 +445,13 @@ typedef struct col_out {
     FILE *out;
     size_t d;
     char *line;
+    int err; /* the first write's errno (cli_out_write) */
 } col_out;
 
 static int col_sink(void *data, double t, const double *y, const double *phi) {
     col_out *o = data;
+    if (o->err)
+        return 0;
     size_t k = qd_double_format(o->line, t);
     for (size_t i = 0; i < o->d; i++) {
         o->line[k++] = ',';
@@ -460,7 +463,10 @@ static int col_sink(void *data, double t, const double *y, const double *phi) {
             k += qd_double_format(o->line + k, phi[i * o->d + j]);
         }
     o->line[k++] = '\n';
-    return fwrite(o->line, 1, k, o->out) == k ? 0 : 1;
+    /* a lost row is kept in o->err and said at the close; the flow's own
+     * sink contract would call a stop a failure of the run */
+    cli_out_write(o->out, o->line, k, &o->err);
+    return 0;
 }
 
 /* --variational columns: CSV of t, the state and d y_i / d y_j(t0), column
@@ -477,23 +483,27 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
     size_t d = 2 * c->e->n;
     char (*names)[80] = malloc(d * sizeof *names);
     col_out o = {.d = d, .line = malloc((d + 1) * (d + 1) * (QD_DOUBLE_MAX + 2) + 16)};
-    FILE *file = a->out ? fopen(a->out, "w") : NULL;
+    int rc = QD_EXIT_OK;
+    FILE *file = a->out && names && o.line ? cli_out_open(a->out, &rc) : NULL;
     if (!names || !o.line || (a->out && !file)) {
-        if (a->out && !file)
-            cli_diag_error("cannot write '%s'", a->out);
         free(names);
         free(o.line);
-        return a->out && !file ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        return rc != QD_EXIT_OK ? rc : QD_EXIT_FAIL;
     }
     o.out = file ? file : stdout;
     state_names(c, names);
-    fprintf(o.out, "t");
+    /* the header through the row buffer, each name checked like a row */
+    size_t k = (size_t)snprintf(o.line, 2, "t");
     for (size_t i = 0; i < d; i++)
-        fprintf(o.out, ",%s", names[i]);
-    for (size_t j = 0; j < d; j++)
-        for (size_t i = 0; i < d; i++)
-            fprintf(o.out, ",d%s/d%s0", names[i], names[j]);
-    fprintf(o.out, "\n");
+        k += (size_t)snprintf(o.line + k, 82, ",%s", names[i]);
+    bool ok = cli_out_write(o.out, o.line, k, &o.err);
+    for (size_t j = 0; ok && j < d; j++)
+        for (size_t i = 0; ok && i < d; i++) {
+            k = (size_t)snprintf(o.line, 166, ",d%s/d%s0", names[i], names[j]);
+            ok = cli_out_write(o.out, o.line, k, &o.err);
+        }
+    if (ok)
+        cli_out_write(o.out, "\n", 1, &o.err);
     qd_flow_opts fo = {.every = a->has_dt ? a->dt : (c->opts.t_end - c->opts.t0) / 100,
                        .sink = col_sink, .data = &o};
     double *y0 = calloc(d + d * d, sizeof *y0); /* the first row: y(t0), Phi = I */
@@ -501,7 +511,7 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
         free(names);
         free(o.line);
         if (file)
-            fclose(file);
+            fclose(file); /* nothing to keep: the run fails anyway */
         return QD_EXIT_FAIL;
     }
     for (size_t i = 0; i < d / 2; i++) {
@@ -514,14 +524,15 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
     free(y0);
     qd_flow f;
     qd_sim_opts fopts;
-    int rc = flow_compute(c, &f, &fopts, &fo);
-    if (rc == QD_EXIT_OK)
+    bool computed = !o.err; /* a header already lost: no run */
+    rc = computed ? flow_compute(c, &f, &fopts, &fo) : QD_EXIT_OK;
+    if (computed && rc == QD_EXIT_OK && !o.err)
         flow_summary(&f, 0);
-    qd_flow_free(&f);
-    if (file && fclose(file) != 0 && rc == QD_EXIT_OK) {
-        cli_diag_error("cannot write '%s'", a->out);
+    if (computed)
+        qd_flow_free(&f);
+    /* the rows' file closed and checked: lost rows fail the run */
+    if (cli_out_close(o.out, file ? a->out : "standard output", o.err) != QD_EXIT_OK)
         rc = QD_EXIT_FAIL;
-    }
     free(names);
     free(o.line);
     return rc;

@@ -119,6 +119,7 @@ def files_full(qdot, osc, tmp):
         ["simulate", osc, "--t-end", "100", "--dt", "0.01", "--method", "verlet",
          "--out", "/dev/full"],
         ["poincare", dp, "--section", "theta1=0", "--n", "3", "--out", "/dev/full"],
+        ["simulate", dp, "--t-end", "1", "--variational", "columns", "--out", "/dev/full"],
         ["sweep", osc, "--grid", "m=1:2:2", "--t-end", "1", "--measure", "final",
          "-o", "/dev/full"],
         ["animate", EX / "atwood.qd", "-o", "/dev/full"],
