@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 #include "eom_out.h"
 #include "model_cli.h"
+#include "out.h"
 #include "qdot/codegen.h"
 #include "qdot/speeds.h"
 
@@ -77,16 +78,17 @@ static int write_text(const char *dir, const char *name, const char *ext, const 
     if (!path)
         return QD_EXIT_FAIL;
     snprintf(path, len, "%s/%s.%s", dir, name, ext);
-    FILE *f = fopen(path, "w");
-    bool ok = f && fputs(qd_buf_str(b), f) >= 0;
-    if (f && fclose(f) != 0)
-        ok = false;
-    if (!ok)
-        cli_diag_error("cannot write %s: %s", path, strerror(errno));
-    else
+    int rc = QD_EXIT_OK, err = 0;
+    FILE *f = cli_out_open(path, &rc); /* a directory named like the file: exit 2 */
+    if (f) {
+        const char *text = qd_buf_str(b);
+        cli_out_write(f, text, strlen(text), &err);
+        rc = cli_out_close(f, path, err);
+    }
+    if (rc == QD_EXIT_OK)
         printf("wrote %s\n", path);
     free(path);
-    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+    return rc;
 }
 
 /* A model with speeds: the first-order system in (q, u) (qd_codegen_speeds_c). */

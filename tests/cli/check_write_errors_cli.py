@@ -166,6 +166,14 @@ def directories(qdot, osc, tmp):
         r = run(qdot, args, subprocess.PIPE)
         check("%s: exit 2" % name, r.returncode == 2, "exit %d %r" % (r.returncode, r.stderr))
         check("%s: names the directory" % name, want % d in r.stderr, repr(r.stderr))
+    # codegen -o DIR where DIR holds a directory named as the file it writes
+    out = tmp / "cg"
+    (out / "atwood.c").mkdir(parents=True, exist_ok=True)
+    r = run(qdot, ["codegen", EX / "atwood.qd", "-o", out], subprocess.PIPE)
+    check("codegen onto a directory: exit 2", r.returncode == 2,
+          "exit %d %r" % (r.returncode, r.stderr))
+    check("codegen onto a directory: names it",
+          "cannot write %s: is a directory" % (out / "atwood.c") in r.stderr, repr(r.stderr))
     # --input F=DIR.csv: a directory whose name ends in .csv
     forced = tmp / "forced.qd"
     forced.write_text("coordinates x\ninputs F\nT = x'^2/2\nV = x^2/2\nQ[x] = F\n"
