@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Issue 33, certified verdicts of the statics commands (stability, equilibria, modes, the
+mass-matrix test of simulate and eom), each against its closed form.
+Run: python3 check_statics33_cli.py --build BUILD_DIR
+"""
+import argparse
+import json
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+FAILED = []
+TMP = Path(tempfile.mkdtemp(prefix='qdot_statics33_'))
+
+
+def check(name, cond, detail=''):
+    if not cond:
+        FAILED.append(name)
+        print('FAIL %s %s' % (name, detail))
+
+
+def close(a, b, tol=1e-8):
+    return abs(a - b) <= tol * (1 + abs(b))
+
+
+def model(name, text):
+    p = TMP / (name + '.qd')
+    p.write_text(text)
+    return str(p)
+
+
+def run(qdot, *args):
+    p = subprocess.run([qdot, *args], capture_output=True, text=True, timeout=120)
+    return p.returncode, p.stdout, p.stderr
+
+
+def js(qdot, *args):
+    rc, out, err = run(qdot, *args, '--format', 'json')
+    if rc != 0:
+        raise AssertionError('exit %d: %s' % (rc, err.strip()))
+    return json.loads(out)
+
+
+KEPLER_BETA = '''coordinates r, th
+parameters m = 1, k = 1, beta = 0.05
+particle m at r*(cos(th), sin(th))
+V = -k/r - beta/r^2
+initial r = 1, th = 0, r' = 0, th' = 1
+'''
+
+
+def steady_kepler_beta(qdot):
+    # V_eff = -k/r + (p^2 - 2 m beta)/(2 m r^2): one circle r0 = (p^2 - 2 m beta)/(m k),
+    # th' = p/(m r0^2), radial frequency^2 = V_eff''/m = k/(m r0^3).  No "motion" at r = 0.
+    f = model('kepler_beta', KEPLER_BETA)
+    p, beta = 2.0, 0.05
+    r0 = p * p - 2 * beta
+    for at in ([], ['--guess', 'r=0.5'], ['--guess', 'r=0.2'], ['--guess', 'r=10']):
+        tag = ' '.join(at) or 'default'
+        try:
+            d = js(qdot, 'stability', f, '--ignore', 'th', '--momentum', 'p_th=2', *at)
+        except AssertionError as e:
+            check('kepler beta %s runs' % tag, False, e)
+            continue
+        motions = d.get('steady_motions', [d])
+        check('kepler beta %s one motion' % tag, len(motions) == 1, [m['steady'] for m in motions])
+        for m in motions:
+            s = m['steady']
+            check('kepler beta %s r0' % tag, close(s['r'], r0), s)
+            check('kepler beta %s rate' % tag, close(s["th'"], p / r0 ** 2), s)
+            check('kepler beta %s momentum as given' % tag, close(s['p_th'], p), s)
+        check('kepler beta %s frequency' % tag, d['frequencies'] and close(d['frequencies'][0], r0 ** -1.5), d['frequencies'])
+        check('kepler beta %s stable' % tag, d['stable'] is True, d['verdict'])
+    rc, out, err = run(qdot, 'stability', f, '--ignore', 'th', '--momentum', 'p_th=2')
+    check('kepler beta text: given once', out.count('(given)') == 1 and 'e+31' not in out, out)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--build', required=True)
+    qdot = str(Path(ap.parse_args().build) / 'qdot')
+    for t in (steady_kepler_beta,):
+        try:
+            t(qdot)
+        except AssertionError as e:
+            check(t.__name__, False, e)
+    print('%d failed' % len(FAILED) if FAILED else 'ok')
+    return 1 if FAILED else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
