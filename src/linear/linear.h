@@ -80,6 +80,9 @@ typedef struct qd__roots {
 bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle);
 void qd__roots_free(qd__roots *r);
 void qd__wrap_angles(size_t n, double *q, const bool *angle);
+/* The same point: every coordinate within 1e-6 of the largest (and 1),
+ * angles (angle may be NULL) modulo 2 pi. */
+bool qd__roots_same(size_t n, const double *a, const double *b, const bool *angle);
 
 /* The multi-start search over [lo, hi] (quasi-random starts and axis scans
  * through the centre); roots with max |F| <= ftol go to out. */

@@ -77,11 +77,43 @@ def steady_kepler_beta(qdot):
     check('kepler beta text: given once', out.count('(given)') == 1 and 'e+31' not in out, out)
 
 
+def bowl_model(w):
+    # a particle in a spherical bowl of radius a (lowest point at the origin) turning at w
+    return model('bowl_w%g' % w, """coordinates x, y
+parameters m = 1, g = 9.81, a = g/4, w = %r
+particle m at rot_z(w*t)*(x, y, a - sqrt(a^2 - x^2 - y^2))
+V = m*g*(a - sqrt(a^2 - x^2 - y^2))
+initial x = 1, y = 0, x' = 0, y' = 0
+""" % w)
+
+
+def equilibria_isolation(qdot):
+    # (1 - cos th)^2: th = 0 (a quartic minimum, isolated) and th = pi, each once.
+    f = model('one_minus_cos_sq', 'coordinates th\nparticle 1 at (th, 0)\nV = (1 - cos(th))^2\n')
+    d = js(qdot, 'equilibria', f)
+    ths = sorted(p['equilibrium']['th'] for p in d['equilibria'])
+    check('(1-cos)^2 two equilibria', len(ths) == 2 and close(ths[0], 0) and close(ths[1], math.pi), ths)
+    check('(1-cos)^2 isolated', d['continuum'] is False, d)
+    f = model('quartic', 'coordinates x\nparticle 1 at (x, 0)\nV = x^4\n')
+    d = js(qdot, 'equilibria', f)
+    xs = [p['equilibrium']['x'] for p in d['equilibria']]
+    check('x^4 one equilibrium', len(xs) == 1 and xs[0] == 0, xs)
+    check('x^4 isolated', d['continuum'] is False, d)
+    # the rotating bowl: a ring of relative equilibria at cos(theta) = g/(a w^2), radius
+    # a sin(theta): a family
+    d = js(qdot, 'equilibria', bowl_model(5))
+    g, a = 9.81, 9.81 / 4
+    rho = a * math.sqrt(1 - (g / (a * 25)) ** 2)
+    ring = [p for p in d['equilibria'] if math.hypot(p['equilibrium']['x'], p['equilibrium']['y']) > 1e-6]
+    check('bowl ring radius', ring and all(close(math.hypot(p['equilibrium']['x'], p['equilibrium']['y']), rho, 1e-7) for p in ring), ring)
+    check('bowl ring is a family', d['continuum'] is True, d['continuum'])
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
     qdot = str(Path(ap.parse_args().build) / 'qdot')
-    for t in (steady_kepler_beta,):
+    for t in (steady_kepler_beta, equilibria_isolation):
         try:
             t(qdot)
         except AssertionError as e:
