@@ -409,7 +409,7 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
         wmax = fmax(wmax, fabs(w[j]));
     p->npos = p->nneg = p->nzero = 0;
     for (size_t j = 0; ok && j < n; j++) {
-        if (fabs(w[j]) <= 1e-9 * wmax || wmax == 0)
+        if (fabs(w[j]) <= QD_MODES_ZERO_TOL * wmax || wmax == 0)
             p->nzero++;
         else if (w[j] > 0)
             p->npos++;

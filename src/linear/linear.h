@@ -43,6 +43,15 @@ static inline const double *qd__lin_M(const qd__lin *L) {
     return L->out + L->n + 2 * L->n * L->n;
 }
 
+/* The zero test of the linear analyses (linearize, modes, stability,
+ * equilibria): |x| at most QD_LINEAR_ZERO_TOL times the scale of the
+ * numbers x came from (a matrix entry against the matrix's own scale). */
+#define QD_LINEAR_ZERO_TOL 1e-12
+bool qd__negligible(double x, double scale);
+/* M0, C0, G0, K0's round-off zeros set to 0, judged in the coordinates where
+ * M0's diagonal is 1 against the problem's own rate (linearize.c). */
+void qd__linear_chop(qd_linear *l);
+
 /* Eigenvalues (ascending) and, when vecs is not NULL, orthonormal
  * eigenvectors (column-major, vecs[i + j n] = component i of vector j) of
  * the symmetric n*n matrix A (row-major; only its symmetric part is used).

@@ -109,11 +109,36 @@ def equilibria_isolation(qdot):
     check('bowl ring is a family', d['continuum'] is True, d['continuum'])
 
 
+def modes_bowl(qdot):
+    # In the frame turning at w: the bottom has s = i (w +- sqrt(g/a)) (a spherical pendulum
+    # seen turning), V_eff a minimum iff w^2 < g/a, ordinarily stable on both sides.  For
+    # w^2 > g/a the ring cos(theta0) = g/(a w^2) is a family of relative equilibria: K0 is
+    # singular along it (exactly, not -1e-13: no real roots), a double root s = 0 (the drift
+    # along the ring) and the transverse frequency w sqrt(1 + 3 cos^2 theta0).
+    g, a = 9.81, 9.81 / 4
+    for w in (3, 4, 5):
+        c = g / (a * w * w)
+        rho = a * math.sqrt(1 - c * c)
+        d = js(qdot, 'modes', bowl_model(w), '--about', 'x=%r, y=0' % rho)
+        check('bowl w=%g K0 singular exactly' % w, d['K'][1][1] == 0, d['K'])
+        re = [abs(e[0]) for e in d['eigenvalues']]
+        check('bowl w=%g no real roots' % w, max(re) <= 1e-12, d['eigenvalues'])
+        check('bowl w=%g borderline' % w, d['stable'] is None, d['verdict'])
+        im = max(e[1] for e in d['eigenvalues'])
+        check('bowl w=%g frequency' % w, close(im, w * math.sqrt(1 + 3 * c * c), 1e-9), im)
+    for w in (1.5, 5):
+        d = js(qdot, 'modes', bowl_model(w), '--about', 'x=0, y=0')
+        check('bowl bottom w=%g stable' % w, d['stable'] is True, d['verdict'])
+        im = sorted(e[1] for e in d['eigenvalues'] if e[1] > 0)
+        want = sorted([abs(w - math.sqrt(g / a)), w + math.sqrt(g / a)])
+        check('bowl bottom w=%g roots' % w, len(im) == 2 and all(close(x, y) for x, y in zip(im, want)), im)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
     qdot = str(Path(ap.parse_args().build) / 'qdot')
-    for t in (steady_kepler_beta, equilibria_isolation):
+    for t in (steady_kepler_beta, equilibria_isolation, modes_bowl):
         try:
             t(qdot)
         except AssertionError as e:
