@@ -134,11 +134,39 @@ def modes_bowl(qdot):
         check('bowl bottom w=%g roots' % w, len(im) == 2 and all(close(x, y) for x, y in zip(im, want)), im)
 
 
+def si_mass_matrix(qdot):
+    # A satellite on a circle r = 6.671e6 m about the Earth (GM = 3.986e14 m^3/s^2): M =
+    # diag(m, m r^2) spans 13 decades but is regular; one period 2 pi sqrt(r^3/GM) brings
+    # theta to 2 pi with r unchanged.
+    gm, r = 3.986e14, 6.671e6
+    f = model('satellite_si', """coordinates r, th
+parameters m = 1, GM = 3.986e14
+particle m at r*(cos(th), sin(th))
+V = -GM*m/r
+initial r = 6.671e6, th = 0, r' = 0, th' = sqrt(GM/6.671e6^3)
+""")
+    period = 2 * math.pi * math.sqrt(r ** 3 / gm)
+    for method in ([], ['--method', 'taylor'], ['--method', 'dop853']):
+        rc, out, err = run(qdot, 'simulate', f, '--t-end', repr(period), '--rtol', '1e-11', *method)
+        tag = ' '.join(method) or 'default'
+        check('satellite %s runs' % tag, rc == 0, err.strip())
+        if rc != 0:
+            continue
+        last = out.strip().splitlines()[-1].split(',')
+        check('satellite %s one turn' % tag, close(float(last[2]), 2 * math.pi, 1e-8), last)
+        check('satellite %s circle' % tag, close(float(last[1]), r, 1e-8), last)
+    # eom at r = 1e6 on M = diag(m, m r^2): r'' = -k/r^2 - 2 beta/r^3 (m = 1)
+    rc, out, err = run(qdot, 'eom', model('kepler_beta', KEPLER_BETA), '--at', 'r=1e6')
+    check('eom r=1e6 regular', rc == 0, err.strip())
+    got = [l for l in out.splitlines() if l.strip().startswith("r'' =")]
+    check('eom r=1e6 acceleration', got and close(float(got[0].split('=')[1]), -1e-12 - 2 * 0.05e-18, 1e-7), got)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
     qdot = str(Path(ap.parse_args().build) / 'qdot')
-    for t in (steady_kepler_beta, equilibria_isolation, modes_bowl):
+    for t in (steady_kepler_beta, equilibria_isolation, modes_bowl, si_mass_matrix):
         try:
             t(qdot)
         except AssertionError as e:
