@@ -59,8 +59,6 @@ typedef struct stab_run {
     qd_steady_set set;               /* every steady motion found */
     qd_stability *an;                /* set.count analyses */
     size_t nsingular;                /* motions left out: singular coordinates there */
-    size_t nall;                     /* set.count as found: the left-out motions stay in
-                                        set (after the kept ones) for qd_steady_set_free */
     const qd_expr *last;             /* the expression value_of read last */
     const qd_expr **given;           /* nkeep + 2 ncyc: the held values as read (x, w, p),
                                         for --scan to follow the parameter */
@@ -458,9 +456,8 @@ static int fail(stab_run *r, qd_status st) {
     return st == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
 }
 
-/* Every steady motion and its analysis; motions where the coordinates are
- * singular (the analysis cannot be made) are left out and counted, unless
- * there is no other. */
+/* Every steady motion and its analysis: the library has left out the
+ * motions where the coordinates are singular (counted in set.nsingular). */
 static int solve(stab_run *r) {
     qd_status st = qd_steady_find_all(r->ctx, r->s, r->st.n, r->st.syms, r->st.vals, r->xfix,
                                       r->wfix, r->pfix, r->pguess, &r->pt, &r->set);
@@ -470,27 +467,12 @@ static int solve(stab_run *r) {
     r->an = calloc(r->set.count + 1, sizeof *r->an);
     if (!r->an)
         return QD_EXIT_FAIL;
-    size_t kept = 0;
     for (size_t k = 0; k < r->set.count; k++) {
         st = qd_stability_analyze(r->ctx, r->s, r->st.n, r->st.syms, r->st.vals, &r->set.pts[k],
-                                  &r->an[kept]);
-        if (st == QD_ERR_SINGULAR && (kept > 0 || k + 1 < r->set.count)) {
-            qd_ctx_clear_error(r->ctx);
-            r->nsingular++;
-            continue;
-        }
+                                  &r->an[k]);
         if (st != QD_OK)
             return fail(r, st);
-        qd_steady_point t = r->set.pts[kept];
-        r->set.pts[kept] = r->set.pts[k];
-        r->set.pts[k] = t;
-        r->set.residual[kept++] = r->set.residual[k];
     }
-    if (kept == 0)   /* every one singular: the last error stands */
-        return fail(r, qd_ctx_status(r->ctx) != QD_OK ? qd_ctx_status(r->ctx) : QD_ERR_SINGULAR);
-    /* the library allocated them: they go back with the set (qd_steady_set_free) */
-    r->nall = r->set.count;
-    r->set.count = kept;
     return QD_EXIT_OK;
 }
 
@@ -832,8 +814,6 @@ done:
     for (size_t k = 0; r.an && k < r.set.count; k++)
         qd_stability_free(&r.an[k]);
     free(r.an);
-    if (r.nall)
-        r.set.count = r.nall;
     qd_steady_set_free(&r.set);
     free(r.xfix);
     free(r.xseen);

@@ -114,14 +114,17 @@ QD_API qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
  *     its range ((-pi, pi] for an angle, else [-10, 10] widened to the
  *     guess), bisected;
  * each polished by the search of qd_steady_find and checked by its relative
- * residual.  The search from the starting values is added too, so nothing
+ * residual, and again by each row's residual against the size of its own
+ * terms and the given momentum (a runaway to a singular point, r -> 0 with a
+ * rate -> 1e31, is no steady motion).  The search from the starting values is added too, so nothing
  * qd_steady_find would find is lost.  xfix, wfix, pfix as for
  * qd_steady_find; start holds the given values and the starting guesses;
  * pguess (may be NULL) marks momenta in start->p that are starting values
  * for the rates of those coordinates (converted at the starting point), not
  * held.  The motions come nearest the start first.  Motions where a cyclic
  * coordinate moves nothing (dp_c/dc' = 0: theta = 0 of spherical
- * coordinates) are left out and counted; QD_ERR_SINGULAR when only such are
+ * coordinates) or where qd_stability_analyze cannot linearize (QD_ERR_SINGULAR)
+ * are left out and counted; QD_ERR_SINGULAR when only such are
  * found.  QD_ERR_NUMERIC when
  * there is none (the message of the search from the start), QD_ERR_ARG when
  * every value of the free rate is steady (a family: give it). */

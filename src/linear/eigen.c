@@ -300,7 +300,7 @@ qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < i; j++)
             skew = fmax(skew, fabs(lin->K[i * n + j] - lin->K[j * n + i]));
-    out->conservative = (cg == 0 || cg <= 1e-12 * scale) && skew <= 1e-12 * max_abs(nn, lin->K);
+    out->conservative = (cg == 0 || qd__negligible(cg, scale)) && qd__negligible(skew, max_abs(nn, lin->K));
     qd_status st;
     if (out->conservative) {
         out->omega2 = qd__calloc(ctx, n + 1, sizeof *out->omega2);

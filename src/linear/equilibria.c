@@ -409,7 +409,7 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
         wmax = fmax(wmax, fabs(w[j]));
     p->npos = p->nneg = p->nzero = 0;
     for (size_t j = 0; ok && j < n; j++) {
-        if (fabs(w[j]) <= 1e-9 * wmax || wmax == 0)
+        if (fabs(w[j]) <= QD_MODES_ZERO_TOL * wmax || wmax == 0)
             p->nzero++;
         else if (w[j] > 0)
             p->npos++;
@@ -457,7 +457,14 @@ static void sort_by_q(size_t n, qd_equilibrium *pts, size_t count) {
     }
 }
 
-/* A null direction of J along which F stays 0: not an isolated root. */
+/* Is the root q one of a family (not isolated)?  Decided from the solution
+ * set, not from a singular Jacobian alone (V = x^4, (1 - cos th)^2 are
+ * isolated): along a null direction v of J, Newton from q + h v is run to
+ * convergence; an isolated root draws it back to q (however slowly, a
+ * degenerate root), a family (a ring of relative equilibria) holds it on a
+ * root about h away.  Both h = 1e-2 and 1e-3 (times 1 + |q|) must find a
+ * neighbour, so a root that is flat to round-off at one radius only is not
+ * a family.  A free particle (J = 0, F = 0 everywhere) is a family. */
 static bool on_continuum(qd__lin *L, const double *q, double ftol) {
     size_t n = L->n;
     double *w = qd__malloc(L->ctx, (n + 1) * sizeof *w), *v = qd__malloc(L->ctx, (n * n + 1) * sizeof *v);
@@ -473,16 +480,21 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                     s += J[k * n + i] * J[k * n + j];
                 JtJ[i * n + j] = s;
             }
-        /* J = 0 (no force anywhere near: a free particle) is singular too */
-        if (qd__sym_eig(L->ctx, n, JtJ, w, v) && w[0] <= 1e-14 * w[n - 1]) {
-            double h = 1e-3 * (1 + fabs(q[0]));
+        /* the caller found K degenerate: its most nearly null direction */
+        if (qd__sym_eig(L->ctx, n, JtJ, w, v)) {
+            double qmax = 0;
             for (size_t i = 0; i < n; i++)
-                t[i] = q[i] + h * v[i];
-            qd__lin_run(L, t);
-            double r = 0;
-            for (size_t i = 0; i < n; i++)
-                r = fmax(r, fabs(qd__lin_F(L)[i]));
-            cont = r <= 1e3 * ftol;
+                qmax = fmax(qmax, fabs(q[i]));
+            cont = true;
+            for (double rel = 1e-2; cont && rel >= 1e-3; rel /= 10) {
+                double h = rel * (1 + qmax), d = 0, res;
+                for (size_t i = 0; i < n; i++)   /* v's first column: w[0]'s vector */
+                    t[i] = q[i] + h * v[i];
+                qd__lm_solve(L, t, 0, 200, &res);
+                for (size_t i = 0; i < n; i++)
+                    d = fmax(d, fabs(t[i] - q[i]));
+                cont = res <= ftol && d >= 0.5 * h;
+            }
         }
     }
     qd__free(w);
@@ -492,8 +504,28 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
     return cont;
 }
 
+/* The exact branches may reach a root twice (1 - cos th = 0 and sin th = 0
+ * both give th = 0 of (1 - cos th)^2), the multistart a degenerate one at
+ * points round-off apart: each point once (qd__roots_same: relative to the
+ * coordinates' size, angles modulo 2 pi), the first kept. */
+static void drop_duplicates(size_t n, const bool *angle, qd_equilibria *out) {
+    size_t kept = 0;
+    for (size_t i = 0; i < out->count; i++) {
+        bool dup = false;
+        for (size_t k = 0; k < kept && !dup; k++)
+            dup = qd__roots_same(n, out->pts[k].q, out->pts[i].q, angle);
+        if (dup) {
+            qd__free(out->pts[i].q);
+            qd__free(out->pts[i].exact);
+        } else {
+            out->pts[kept++] = out->pts[i];
+        }
+    }
+    out->count = kept;
+}
+
 static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const exact *x,
-                          double ftol, qd_equilibria *out) {
+                          const bool *angle, double ftol, qd_equilibria *out) {
     size_t n = L->n, cnt = x ? x->nsol : roots->count;
     out->pts = qd__calloc(ctx, cnt + 1, sizeof *out->pts);
     if (!out->pts)
@@ -524,6 +556,7 @@ static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const
             out->continuum = true;
     }
     sort_by_q(n, out->pts, out->count);
+    drop_duplicates(n, angle, out);
     return QD_OK;
 }
 
@@ -642,7 +675,7 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
         roots.count = kept;
     }
     if (st == QD_OK)
-        st = assemble(ctx, &L, &roots, out->exact ? &x : NULL, ftol, out);
+        st = assemble(ctx, &L, &roots, out->exact ? &x : NULL, angle, ftol, out);
 done:
     if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, st == QD_ERR_NOMEM ? "out of memory finding equilibria"

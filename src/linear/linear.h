@@ -43,6 +43,15 @@ static inline const double *qd__lin_M(const qd__lin *L) {
     return L->out + L->n + 2 * L->n * L->n;
 }
 
+/* The zero test of the linear analyses (linearize, modes, stability,
+ * equilibria): |x| at most QD_LINEAR_ZERO_TOL times the scale of the
+ * numbers x came from (a matrix entry against the matrix's own scale). */
+#define QD_LINEAR_ZERO_TOL 1e-12
+bool qd__negligible(double x, double scale);
+/* M0, C0, G0, K0's round-off zeros set to 0, judged in the coordinates where
+ * M0's diagonal is 1 against the problem's own rate (linearize.c). */
+void qd__linear_chop(qd_linear *l);
+
 /* Eigenvalues (ascending) and, when vecs is not NULL, orthonormal
  * eigenvectors (column-major, vecs[i + j n] = component i of vector j) of
  * the symmetric n*n matrix A (row-major; only its symmetric part is used).
@@ -80,6 +89,9 @@ typedef struct qd__roots {
 bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle);
 void qd__roots_free(qd__roots *r);
 void qd__wrap_angles(size_t n, double *q, const bool *angle);
+/* The same point: every coordinate within 1e-6 of the largest (and 1),
+ * angles (angle may be NULL) modulo 2 pi. */
+bool qd__roots_same(size_t n, const double *a, const double *b, const bool *angle);
 
 /* The multi-start search over [lo, hi] (quasi-random starts and axis scans
  * through the centre); roots with max |F| <= ftol go to out. */

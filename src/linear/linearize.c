@@ -143,6 +143,45 @@ void qd_linear_free(qd_linear *l) {
     memset(l, 0, sizeof *l);
 }
 
+bool qd__negligible(double x, double scale) {
+    return fabs(x) <= QD_LINEAR_ZERO_TOL * scale;
+}
+
+/* Round-off zeros of M0 s^2 + (C0 + G0) s + K0 set to 0, judged in the
+ * coordinates that make M0's diagonal 1 (x_i sqrt(M_ii): metres and radians
+ * alike) against the problem's own rate W = max(sqrt|K'|, |C'|, |G'|): a
+ * stiffness against W^2, a damping or gyroscopic term against W, an
+ * inertia against 1.  The ring of a rotating bowl has K0[y,y] = -1.5e-13
+ * beside K0[x,x] = 952 and G0 = 10: a cancellation, which left as it is
+ * gives real roots +-3.7e-7 and "unstable". */
+void qd__linear_chop(qd_linear *l) {
+    size_t n = l->n;
+    double kmax = 0, gmax = 0, mmax = 0;
+#define D(i) (l->M[(i) * n + (i)] > 0 && isfinite(l->M[(i) * n + (i)]) ? 1 / sqrt(l->M[(i) * n + (i)]) : 1)
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++) {
+            double d = D(i) * D(j);
+            kmax = fmax(kmax, fabs(l->K[i * n + j]) * d);
+            gmax = fmax(gmax, fmax(fabs(l->G[i * n + j]), fabs(l->C[i * n + j])) * d);
+            mmax = fmax(mmax, fabs(l->M[i * n + j]) * d);
+        }
+    double w = fmax(sqrt(kmax), gmax);
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++) {
+            size_t k = i * n + j;
+            double d = D(i) * D(j);
+            if (qd__negligible(l->K[k] * d, w * w))
+                l->K[k] = 0;
+            if (qd__negligible(l->G[k] * d, w))
+                l->G[k] = 0;
+            if (qd__negligible(l->C[k] * d, w))
+                l->C[k] = 0;
+            if (i != j && qd__negligible(l->M[k] * d, mmax))
+                l->M[k] = 0;
+        }
+#undef D
+}
+
 qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                           const qd_expr *const *syms, const double *vals, qd_linear *out) {
     QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
@@ -186,6 +225,7 @@ qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
                          "of the model)");
             return QD_ERR_NUMERIC;
         }
+    qd__linear_chop(out);
     qd__lin_free(&L);
     return QD_OK;
 }

@@ -36,7 +36,7 @@ void qd__wrap_angles(size_t n, double *q, const bool *angle) {
         }
 }
 
-static bool same(size_t n, const double *a, const double *b, const bool *angle) {
+bool qd__roots_same(size_t n, const double *a, const double *b, const bool *angle) {
     double big = 1;
     for (size_t j = 0; j < n; j++)
         big = fmax(big, fmax(fabs(a[j]), fabs(b[j])));
@@ -53,7 +53,7 @@ static bool same(size_t n, const double *a, const double *b, const bool *angle) 
 bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle) {
     size_t n = r->n;
     for (size_t i = 0; i < r->count; i++)
-        if (same(n, r->q + i * n, q, angle)) {
+        if (qd__roots_same(n, r->q + i * n, q, angle)) {
             if (res < r->res[i]) {
                 memcpy(r->q + i * n, q, n * sizeof *q);
                 r->res[i] = res;

@@ -17,6 +17,7 @@
  * mode iff the Hessian is positive definite (M0 being so).
  */
 #include "steady.h"
+#include "linear.h"
 #include "../base/mem.h"
 #include "../base/args.h"
 
@@ -99,6 +100,8 @@ static qd_status linearize(qd_ctx *ctx, const qd_steady *s, const qd__steady_env
             l->C[a * n + b] = (B[a * n + b] + B[b * n + a]) / 2;
             l->G[a * n + b] = (B[a * n + b] - B[b * n + a]) / 2;
         }
+    if (st == QD_OK)
+        qd__linear_chop(l);   /* the matrix-scale test modes and linearize use too */
     qd__free(B);
     return st;
 }
@@ -111,7 +114,7 @@ static bool has_damping(const qd_linear *l) {
         big = fmax(big, fmax(fabs(l->M[i]), fmax(fabs(l->K[i]), fabs(l->G[i]))));
         c = fmax(c, fabs(l->C[i]));
     }
-    return c > 1e-12 * big;
+    return !qd__negligible(c, big);
 }
 
 static int cmp_double(const void *a, const void *b) {

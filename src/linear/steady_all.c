@@ -33,6 +33,8 @@ static const double PI = 3.14159265358979323846;
 #define SCAN_POINTS 400
 /* A quadratic's coefficient is zero below this times the size of its row. */
 #define COEFF_TOL 1e-10
+/* A steady motion's rows vanish below this times the size of their terms. */
+#define AT_SCALE_TOL 1e-8
 
 /* ---- the size of a residual's terms ------------------------------------ */
 
@@ -251,6 +253,29 @@ static bool same(const found *f, const double *a, const double *b) {
     return true;
 }
 
+/* Is the polished u a steady motion at the scale of the equations' own
+ * terms?  The search's residual also forgives |J| |u| (how far a step could
+ * move it), which a runaway (r -> 0 with th' -> 1e31 on -k/r - beta/r^2)
+ * makes huge: there p_th = m r^2 th' = 0.316 passed for the 2 given.  Here
+ * every unknown is finite and each row's residual is judged against the
+ * given momentum and the size of the row's terms only. */
+static bool at_scale(qd__steady_search *S, const double *u) {
+    double *F = qd__calloc(S->ctx, S->neq + 1, sizeof *F);
+    bool ok = F != NULL;
+    for (size_t i = 0; ok && i < S->nu; i++)
+        ok = isfinite(u[i]);
+    if (ok && qd__steady_residual(S, u, F, NULL) != QD_OK) {
+        qd__ctx_recover(S->ctx);
+        ok = false;
+    }
+    for (size_t k = 0; ok && k < S->neq; k++) {
+        double m = qd__steady_magnitude(S->ctx, &S->env, S->F[k]);
+        ok = isfinite(F[k]) && isfinite(m) && fabs(F[k]) <= AT_SCALE_TOL * (fabs(S->pgiven[k]) + m);
+    }
+    qd__free(F);
+    return ok;
+}
+
 /* Polish u (a candidate) and keep it when it is a steady motion not seen yet. */
 static qd_status polish_add(qd__steady_search *S, found *f, double *u) {
     double res = 0;
@@ -259,6 +284,8 @@ static qd_status polish_add(qd__steady_search *S, found *f, double *u) {
         qd__ctx_recover(S->ctx);
         return st == QD_ERR_NOMEM ? st : QD_OK;
     }
+    if (!at_scale(S, u))
+        return qd__ctx_nomem(S->ctx) ? QD_ERR_NOMEM : QD_OK;
     if (singular_here(S, f)) {
         f->nsingular++;
         return QD_OK;
@@ -682,6 +709,38 @@ static qd_steady_point copy_point(qd_ctx *ctx, const qd_steady *s, const qd_stea
     return p;
 }
 
+/* Motions whose reduced equations cannot be linearized (qd_stability_analyze
+ * says QD_ERR_SINGULAR: M0 singular, a term not defined there) are left out
+ * and counted with the singular ones; when every one is, that error stands. */
+static qd_status drop_unanalysable(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+                                   const qd_expr *const *syms, const double *vals,
+                                   qd_steady_set *out) {
+    size_t kept = 0, n = out->count;
+    for (size_t k = 0; k < n; k++) {
+        qd_stability an;
+        qd_status st = qd_stability_analyze(ctx, s, nvals, syms, vals, &out->pts[k], &an);
+        qd_stability_free(&an);
+        if (st == QD_ERR_SINGULAR && (kept > 0 || k + 1 < n)) {
+            qd_ctx_clear_error(ctx);
+            qd__free(out->pts[k].x);
+            qd__free(out->pts[k].w);
+            qd__free(out->pts[k].p);
+            out->nsingular++;
+            continue;
+        }
+        if (st != QD_OK) {
+            /* the set frees [0, count): the rest moves down after the kept */
+            memmove(out->pts + kept, out->pts + k, (n - k) * sizeof *out->pts);
+            out->count = kept + (n - k);
+            return st;
+        }
+        out->pts[kept] = out->pts[k];
+        out->residual[kept++] = out->residual[k];
+    }
+    out->count = kept;
+    return QD_OK;
+}
+
 qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                              const qd_expr *const *syms, const double *vals, const bool *xfix,
                              const bool *wfix, const bool *pfix, const bool *pguess,
@@ -713,6 +772,8 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
         st = from_start(&S, &f, u0, u);
     if (st == QD_OK)
         st = ordered(&S, &f, &pt, xfix, wfix, pfix, pguess, out);
+    if (st == QD_OK)
+        st = drop_unanalysable(ctx, s, nvals, syms, vals, out);
     if (st == QD_OK && !had_nomem && qd__ctx_nomem(ctx))
         st = QD_ERR_NOMEM; /* a search that ran out was taken for "none there" */
     if (st != QD_OK) {

@@ -80,16 +80,62 @@ static void back_substitute(size_t n, const double *A, size_t rank, const size_t
     }
 }
 
-bool qd__num_solve(size_t n, double *A, double *b, double tol) {
-    double eps = tol * qd__num_norm_inf(n, A);
-    for (size_t c = 0; c < n; c++) {
-        size_t p = pivot_row(n, A, c, c);
-        if (!(fabs(A[p * n + c]) > eps))
+/* The power of two nearest 1/m (m > 0, finite): scaling by it is exact. */
+static double inv_pow2(double m) {
+    int e;
+    frexp(m, &e);
+    return ldexp(1, -e);
+}
+
+/* Equilibrate A in place (dgeequ's scaling, in powers of two so it rounds
+ * nothing): each row of A and b by the power of two nearest its largest
+ * entry's reciprocal, then each column likewise, the column factors kept
+ * in cs (x = cs y).  false when a row or column is all zero or not finite. */
+static bool equilibrate(size_t n, double *A, double *b, double *cs) {
+    for (size_t i = 0; i < n; i++) {
+        double m = 0;
+        for (size_t j = 0; j < n; j++)
+            m = fmax(m, fabs(A[i * n + j]));
+        if (!(m > 0) || !isfinite(m))
             return false;
-        swap_rows(n, A, b, c, p, c);
-        eliminate(n, A, b, c, c, true);
+        double r = inv_pow2(m);
+        for (size_t j = 0; j < n; j++)
+            A[i * n + j] *= r;
+        b[i] *= r;
+    }
+    for (size_t j = 0; cs && j < n; j++) {
+        double m = 0;
+        for (size_t i = 0; i < n; i++)
+            m = fmax(m, fabs(A[i * n + j]));
+        if (!(m > 0))
+            return false;
+        cs[j] = inv_pow2(m);
+        for (size_t i = 0; i < n; i++)
+            A[i * n + j] *= cs[j];
+    }
+    return true;
+}
+
+/* Columns scaled for systems up to this size (mechanics has n <= 12; a
+ * larger one is scaled by rows only): no allocation on the hot path. */
+#define SOLVE_COLS 64
+
+bool qd__num_solve(size_t n, double *A, double *b, double tol) {
+    double cs[SOLVE_COLS];
+    double *c = n <= SOLVE_COLS ? cs : NULL;
+    if (!equilibrate(n, A, b, c))
+        return false;
+    double eps = tol * qd__num_norm_inf(n, A);
+    for (size_t k = 0; k < n; k++) {
+        size_t p = pivot_row(n, A, k, k);
+        if (!(fabs(A[p * n + k]) > eps))
+            return false;
+        swap_rows(n, A, b, k, p, k);
+        eliminate(n, A, b, k, k, true);
     }
     back_substitute(n, A, n, NULL, b);
+    for (size_t j = 0; c && j < n; j++)
+        b[j] *= c[j];
     return true;
 }
 

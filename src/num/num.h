@@ -25,7 +25,10 @@ const qd_expr **qd__num_inputs(qd_ctx *ctx, size_t n, const qd_expr *const *expr
 
 /* Solve A x = b in place (A n*n destroyed, b becomes x) by Gaussian
  * elimination with partial pivoting (Golub & Van Loan, alg. 3.4.1).
- * Singular (false, b undefined) when a pivot is not above tol |A|_inf.
+ * Rows and columns are first equilibrated (powers of two, exact), so the
+ * test is scale-invariant: M = diag(1, r^2) at r = 6.7e6 (SI units) is
+ * regular.  Singular (false, b undefined) when a row or column is zero or
+ * a pivot of the equilibrated matrix is not above tol times its |.|_inf.
  * The per-evaluation solver of simulation and qd_eom_eval: hand-written
  * because reference LAPACK is 4-6x slower for the n <= 12 of mechanics
  * (docs/design.md, the numerics home). */

@@ -58,6 +58,7 @@ struct tay {
     bool *var;                   /* nin: the inputs that vary in a step */
     size_t nb, m, N, M_at, A_at; /* the solve: N unknowns, M nb*nb at M_at */
     size_t *r_at, *piv;          /* N */
+    double *rs;                  /* N: each row's largest |K_0| entry (the pivot test's scale) */
     void *K, *X, *ynew, *t, *tnext; /* typed: N*N, (pmax+1)*N, dim, 1, 1 */
     void *ylo;                   /* typed, 2 dim: the state's rounding error, the next */
     void *dF;                    /* typed, dim: the derivative's change along ylo */
@@ -181,7 +182,8 @@ static qd_status alloc(tay *T, qd__integ *it) {
     T->var = qd__calloc(ctx, T->nin + 2 * N * N + 1, sizeof *T->var);
     T->K = qd__calloc(ctx, N * N + (T->pmax + 2) * N + 4 * d + 3, sz);
     T->yc = qd__calloc(ctx, 2 * d + N * N + N + 1, sizeof *T->yc);
-    if (!T->in_of || !T->var || !T->K || !T->yc)
+    T->rs = qd__malloc(ctx, (N + 1) * sizeof *T->rs);
+    if (!T->in_of || !T->var || !T->K || !T->yc || !T->rs)
         return QD_ERR_NOMEM;
     T->srcc = T->yc + d;
     T->kc = T->srcc + d;
@@ -358,6 +360,7 @@ static void taylor_free(qd__integ *it) {
         return;
     qd__tay_free(T->tp);
     qd__free(T->in_of);
+    qd__free(T->rs);
     qd__free(T->var);
     qd__free(T->K);
     qd__free(T->yc);

@@ -12,25 +12,32 @@
 
 static TAY_T *TAY_S(state)(tay *T, size_t i) { return T->yc[i]; }
 
-/* LU with partial pivoting of K (N*N) in place; false when a pivot is
- * not above 1e-13 N |K|_inf (as qd__num_solve). */
-static bool TAY_S(lu)(TAY_T *K, size_t N, size_t *piv) {
-    TAY_T norm = 0;
+/* LU with scaled partial pivoting of K (N*N) in place (Golub & Van Loan
+ * sec. 3.5.2): each row judged against its own largest entry rs (scratch,
+ * N), so the test is invariant under row scaling, as qd__num_solve's
+ * equilibration: M = diag(1, r^2) at r = 6.7e6 is regular.  false when a
+ * row is zero or no pivot is above 1e-13 N of its row's scale. */
+static bool TAY_S(lu)(TAY_T *K, size_t N, size_t *piv, double *rs) {
     for (size_t i = 0; i < N; i++) {
-        TAY_T s = 0;
+        double m = 0;
         for (size_t j = 0; j < N; j++)
-            s += TAY_M(fabs)(K[i * N + j]);
-        norm = s > norm ? s : norm;
+            m = fmax(m, (double)TAY_M(fabs)(K[i * N + j]));
+        if (!(m > 0) || !isfinite(m))
+            return false;
+        rs[i] = m;
     }
-    TAY_T tol = (TAY_T)1e-13 * (TAY_T)N * norm;
+    double tol = 1e-13 * (double)N;
     for (size_t c = 0; c < N; c++) {
         size_t p = c;
         for (size_t i = c + 1; i < N; i++)
-            if (TAY_M(fabs)(K[i * N + c]) > TAY_M(fabs)(K[p * N + c]))
+            if ((double)TAY_M(fabs)(K[i * N + c]) / rs[i] > (double)TAY_M(fabs)(K[p * N + c]) / rs[p])
                 p = i;
-        if (!(TAY_M(fabs)(K[p * N + c]) > tol))
+        if (!((double)TAY_M(fabs)(K[p * N + c]) / rs[p] > tol))
             return false;
         piv[c] = p;
+        double rc = rs[c];
+        rs[c] = rs[p];
+        rs[p] = rc;
         for (size_t j = 0; p != c && j < N; j++) {
             TAY_T t = K[c * N + j];
             K[c * N + j] = K[p * N + j];
@@ -90,7 +97,7 @@ static bool TAY_S(solve_order)(tay *T, size_t k) {
     if (k == 0) {
         for (size_t e = 0; e < N * N; e++)
             K[e] = TAY_S(K_at)(T, e, 0);
-        if (!TAY_S(lu)(K, N, T->piv))
+        if (!TAY_S(lu)(K, N, T->piv, T->rs))
             return false;
     }
     TAY_S(lu_solve)(K, N, T->piv, x);

@@ -147,8 +147,10 @@ def errors(qdot, tmp):
                      'T = (x\'^2 + y\'^2)/2\nV = g*y\nconstraint rod: x^2 + y^2 = l^2\n'
                      'initial x = 1, y = 0\n')
     cases.append(('constrained', [str(rod), '--t-end', '10'], 2, 'unconstrained'))
+    # M = diag(1, (x - 1)^2) is singular at x = 1 only (issue 33: the test is scale-invariant,
+    # so a step near x = 1 is regular): started there
     sing = model_file(tmp, 'sing.qd', 'coordinates x, y\nT = x\'^2/2 + (x - 1)^2*y\'^2/2\n'
-                      'initial x = 0, x\' = 1\n')
+                      'initial x = 1, x\' = 1\n')
     cases.append(('singular', [str(sing), '--t-end', '3', '--dt', '0.25', '--method',
                                'dopri5'], 1, 'singular mass matrix'))
     for name, args, want, text in cases:
