@@ -152,6 +152,8 @@ const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
         consider_if(ctx, &b, qd__factor_polys(ctx, x, &memo), true);
         consider_if(ctx, &b, qd__factor_polys(ctx, c, &memo), true);
     }
+    if (x && r != e) /* the original's factors compete with the rewritten path */
+        consider_if(ctx, &b, qd__factor_polys(ctx, x, &memo), true);
     if (c2) {
         consider_if(ctx, &b, qd__factor_polys(ctx, x2, &memo), true);
         consider_if(ctx, &b, qd__factor_polys(ctx, c2, &memo), true);

@@ -77,6 +77,23 @@ def test_numeric(qdot, one):
     check("numeric json", ok, out + err)
 
 
+def test_generator_f1(qdot, osc):
+    # Goldstein ch. 9 / Desloge: the oscillator's F1 with an asin; p = dF/dq
+    # = -K sqrt(2Q - K^2 q^2) solves for Q = (p^2/K^2 + K^2 q^2)/2.
+    F = "-(K/2)*q*sqrt(2*Q - K^2*q^2) - Q*asin(K*q/sqrt(2*Q))"
+    rc, out, err = run(qdot, "canonical", osc, "--generator", "F1", F, "--format", "json")
+    check("F1 rc", rc == 0, out + err)
+    if rc != 0:
+        return
+    j = json.loads(out)
+    q, p, K = sp.symbols("q p_q K", positive=True)
+    loc = {"q": q, "p_q": p, "K": K}
+    Qx = sp.sympify(j["Q"].replace("^", "**"), locals=loc)
+    check("F1 Q", sp.simplify(Qx - (p**2 / K**2 + K**2 * q**2) / 2) == 0, out)
+    # and p = dF/dq holds there on its branch: p^2 = K^2 (2Q - K^2 q^2)
+    check("F1 p^2", sp.simplify(K**2 * (2 * Qx - K**2 * q**2) - p**2) == 0, out)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
@@ -89,6 +106,10 @@ def main():
         test_tan_maps(qdot, one)
         test_witness(qdot, one)
         test_numeric(qdot, one)
+        osc = os.path.join(d, "osc.qd")
+        with open(osc, "w") as f:
+            f.write(OSC)
+        test_generator_f1(qdot, osc)
     print(f"{results['passed']} passed, {results['failed']} failed")
     return 1 if results["failed"] else 0
 
