@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "json.h"
+#include "witness.h"
 #include "model_cli.h"
 #include "model_file.h"
 
@@ -209,37 +210,48 @@ static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *
 
 static int write_verdict(can_run *r, const can_args *a, const qd_canon_verdict *v, bool json) {
     qd_ctx *ctx = r->ph.ctx;
-    static const char *const kind[] = {"canonical", "scaled", "not canonical"};
+    static const char *const kind[] = {"canonical", "scaled", "not canonical", "undecided"};
     qd_buf b = QD_BUF_INIT;
     cli_json j;
     char pair[128] = "";
-    if (v->kind == QD_CANON_NO)
+    bool failed = v->kind == QD_CANON_NO || v->kind == QD_CANON_UNDECIDED;
+    if (failed)
         pair_name(r, v, pair, sizeof pair);
     if (json) {
         cli_json_init(&j, &b);
         cli_json_begin_object(&j);
         cli_json_key(&j, "verdict");
         cli_json_string(&j, kind[v->kind]);
-        put_expr(ctx, &j, &b, "scale", v->kind == QD_CANON_NO ? NULL : v->scale);
+        put_expr(ctx, &j, &b, "scale", failed ? NULL : v->scale);
         cli_json_key(&j, "bracket");
         if (pair[0])
             cli_json_string(&j, pair);
         else
             cli_json_null(&j);
         put_expr(ctx, &j, &b, "value", pair[0] ? v->value : NULL);
+        put_expr(ctx, &j, &b, "should_be", pair[0] ? v->target : NULL);
+        cli_witness_json(&j, &v->check);
         write_extras(r, a, v, &b, &j);
         return answer(v, flush(&b, &j));
     }
-    char *s = text_of(ctx, v->kind == QD_CANON_NO ? v->value : v->scale);
+    char *s = text_of(ctx, failed ? v->value : v->scale);
+    char *want = failed ? text_of(ctx, v->target) : NULL;
+    char how[96];
+    cli_witness_how(&v->check, how, sizeof how);
     if (v->kind == QD_CANON_YES)
-        qd_buf_puts(&b, "canonical\n");
+        qd_buf_printf(&b, "canonical%s\n", how);
     else if (v->kind == QD_CANON_SCALED)
-        qd_buf_printf(&b, "not canonical (a scaled canonical map, c = %s): [Q_i, P_i] = %s\n",
-                      s ? s : "?", s ? s : "?");
+        qd_buf_printf(&b, "not canonical (a scaled canonical map, c = %s): [Q_i, P_i] = %s%s\n",
+                      s ? s : "?", s ? s : "?", how);
+    else if (v->kind == QD_CANON_UNDECIDED)
+        qd_buf_printf(&b, "could not decide: %s = %s, neither proved nor refuted equal to %s\n",
+                      pair, s ? s : "?", want ? want : "?");
     else
         qd_buf_printf(&b, "not canonical: %s = %s (should be %s)\n", pair, s ? s : "?",
-                      v->pair == QD_PAIR_QP && v->i == v->j ? "1" : "0");
+                      want ? want : "?");
+    cli_witness_text(&b, &v->check);
     free(s);
+    free(want);
     write_extras(r, a, v, &b, NULL);
     return answer(v, flush(&b, NULL));
 }
@@ -312,7 +324,7 @@ static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *
         }
     }
     if (a->newham) {
-        if (v->kind == QD_CANON_NO) {
+        if (v->kind == QD_CANON_NO || v->kind == QD_CANON_UNDECIDED) {
             if (j) {
                 cli_json_key(j, "K");
                 cli_json_null(j);
@@ -357,7 +369,7 @@ static int check(can_run *r, const can_args *a, bool json) {
     if (a->lagrange &&
         qd_lagrange_brackets(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, &r->lb) != QD_OK)
         return cli_diag_ctx(r->ph.ctx);
-    if (a->newham && v.kind != QD_CANON_NO &&
+    if (a->newham && v.kind != QD_CANON_NO && v.kind != QD_CANON_UNDECIDED &&
         qd_transformed_hamiltonian(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, r->newQ, r->newP,
                                    qd_time(r->ph.ctx), r->ph.h->H, &r->nh) != QD_OK)
         return cli_diag_ctx(r->ph.ctx);

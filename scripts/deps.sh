@@ -4,7 +4,7 @@
 # As root it runs apt-get; otherwise it prints the one line to run.
 set -e
 what=${1:-build}
-pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev liblapack-dev libsundials-dev"
+pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev libflint-arb-dev liblapack-dev libsundials-dev"
 pkgs="$pkgs libcairo2-dev"  # plots (src/plot): Cairo, and its runtime library with it
 pkgs="$pkgs libhdf5-dev"    # qdot sweep --format hdf5 (optional: built when found)
 # Tests: cmocka and SymPy/SciPy for the cross-checks, chromium for the animate

@@ -12,6 +12,7 @@
 
 #include <stddef.h>
 #include "expr.h"
+#include "certify.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -25,7 +26,8 @@ QD_API const qd_expr *qd_bracket(qd_ctx *ctx, size_t n, const qd_expr *const *q,
 typedef enum qd_canon_kind {
     QD_CANON_YES,    /* [Q_i,Q_j] = [P_i,P_j] = 0, [Q_i,P_j] = delta_ij */
     QD_CANON_SCALED, /* as YES but [Q_i,P_j] = c delta_ij, c != 1 constant */
-    QD_CANON_NO
+    QD_CANON_NO,
+    QD_CANON_UNDECIDED /* a bracket neither proved nor refuted (issue 33) */
 } qd_canon_kind;
 
 typedef enum qd_bracket_pair {
@@ -41,13 +43,25 @@ typedef struct qd_canon_verdict {
     qd_bracket_pair pair;  /* NO: the first failing bracket, else QD_PAIR_NONE */
     size_t i, j;           /* its indices (0-based) */
     const qd_expr *value;  /* its simplified value */
+    /* Issue 33: how the verdict is known.  YES and SCALED: QD_ZERO_PROVEN
+     * when every bracket simplified to its required value, QD_ZERO_NUMERIC
+     * when one only agreed numerically (check has its point count and
+     * precision).  NO: QD_ZERO_NONZERO, check.witness being a point where
+     * value - target is certainly nonzero.  UNDECIDED: QD_ZERO_UNKNOWN, pair
+     * naming the bracket that could not be decided. */
+    qd_zero_kind certainty;
+    qd_zero_result check;  /* the zero test behind certainty */
+    const qd_expr *target; /* NO, UNDECIDED: what the bracket should be (0, 1 or c) */
 } qd_canon_verdict;
 
 /* Is (q, p) -> (Q(q,p,t), P(q,p,t)) canonical?  The fundamental brackets are
  * computed in the old variables with t a parameter.  A scale c counts only
  * when it is the same for every i and free of q, p and of t (t may be NULL):
  * Q = c(t) q, P = p keeps no Hamiltonian form in general.  Returns QD_OK
- * with the verdict in *v, or an error (reason in ctx). */
+ * with the verdict in *v, or an error (reason in ctx).  Every bracket is
+ * decided by qd_zero_test (qdot/certify.h): a NO carries a certified
+ * witness, a YES may rest on numerical agreement (v->certainty), and a
+ * bracket that can be neither proved nor refuted gives QD_CANON_UNDECIDED. */
 QD_API qd_status qd_canonical_check(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                              const qd_expr *const *p, const qd_expr *const *Q,
                              const qd_expr *const *P, const qd_expr *t, qd_canon_verdict *v);

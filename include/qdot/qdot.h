@@ -11,6 +11,7 @@
 #include "eval.h"
 #include "model.h"
 #include "mech.h"
+#include "certify.h"     /* issue 33: certified zero tests */
 #include "canonical.h"
 #include "hamilton.h"
 #include "integrals.h"

@@ -239,6 +239,11 @@ qd_status qd_transformed_hamiltonian(qd_ctx *ctx, size_t n, const qd_expr *const
     qd_status st = qd_canonical_check(ctx, n, q, p, Q, P, t, &v);
     if (st != QD_OK)
         return st;
+    if (v.kind == QD_CANON_UNDECIDED) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "could not decide whether the map is canonical (a "
+                     "fundamental bracket was neither proved nor refuted)");
+        return QD_ERR_ARG;
+    }
     if (v.kind == QD_CANON_NO) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the map is neither canonical nor scaled (a fundamental "
                      "bracket fails): no Hamiltonian K keeps Hamilton's form for every H");

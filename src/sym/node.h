@@ -183,6 +183,12 @@ bool qd__nonneg(const qd_expr *e);
  * where that is shorter; the sum itself otherwise, NULL on error. */
 const qd_expr *qd__trig_even(qd_ctx *ctx, const qd_expr *sum);
 
+/* ---- rewrite.c -------------------------------------------------------------- */
+/* e with tan = sin/cos, exp(a) exp(b) = exp(a + b), exp(a)^k = exp(k a) and
+ * sqrt(a) sqrt(b) = sqrt(a b) applied (qd_simplify's second path); e itself
+ * when none applies, NULL on error. */
+const qd_expr *qd__rewrite_identities(qd_ctx *ctx, const qd_expr *e);
+
 /* ---- small helpers used across the kernel ------------------------------- */
 static inline bool qd__is_num(const qd_expr *e) {
     return e->kind == QD_RATIONAL || e->kind == QD_FLOAT;

@@ -17,6 +17,7 @@
 #include "qdot/qdot.h"
 #include "qdot/action.h"
 #include "qdot/canonical.h"
+#include "qdot/certify.h"
 #include "qdot/codegen.h"
 #include "qdot/control.h"
 #include "qdot/equilibria.h"
@@ -353,6 +354,39 @@ static void null_canonical(void **state)
     /* k NULL */
     qd_newham_free(NULL);
     reset(&F);
+    teardown(&F);
+}
+
+static void null_certify(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_zero_test */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zero_test(NULL, F.q, (qd_zero_result *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zero_test(F.ctx, NULL, (qd_zero_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zero_test(F.ctx, F.q, NULL));
+    reset(&F);
+    /* ---- qd_equal_test */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equal_test(NULL, F.q, F.q, (qd_zero_result *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equal_test(F.ctx, NULL, F.q, (qd_zero_result *)(void *)F.blob));
+    reset(&F);
+    /* target NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equal_test(F.ctx, F.q, NULL, (qd_zero_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equal_test(F.ctx, F.q, F.q, NULL));
+    reset(&F);
+    /* ---- qd_zero_kind_name */
+    /* no pointer argument */
     teardown(&F);
 }
 
@@ -3763,6 +3797,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(null_action),
         cmocka_unit_test(null_canonical),
+        cmocka_unit_test(null_certify),
         cmocka_unit_test(null_codegen),
         cmocka_unit_test(null_control),
         cmocka_unit_test(null_equilibria),
