@@ -152,7 +152,7 @@ static void json_head(cli_json *j, const qd_eom *e, const qd_constrained_linear 
     for (size_t i = 0; i < c->ncon; i++)
         cli_json_string(j, qd_expr_name(e->q[c->dep[i]]));
     cli_json_end_array(j);
-    cli_json_key(j, "point");
+    cli_json_key(j, "equilibrium");
     cli_json_begin_object(j);
     for (size_t k = 0; k < c->n; k++) {
         cli_json_key(j, qd_expr_name(e->q[k]));
@@ -168,6 +168,17 @@ static void json_head(cli_json *j, const qd_eom *e, const qd_constrained_linear 
     cli_json_end_object(j);
 }
 
+static void json_matrix(cli_json *j, size_t r, size_t c, const double *x) {
+    cli_json_begin_array(j);
+    for (size_t i = 0; i < r; i++) {
+        cli_json_begin_array(j);
+        for (size_t k = 0; k < c; k++)
+            cli_json_number(j, x[i * c + k]);
+        cli_json_end_array(j);
+    }
+    cli_json_end_array(j);
+}
+
 static void json_eigs(cli_json *j, const qd_modes_result *res) {
     cli_json_key(j, "eigenvalues");
     cli_json_begin_array(j);
@@ -178,6 +189,11 @@ static void json_eigs(cli_json *j, const qd_modes_result *res) {
         cli_json_end_array(j);
     }
     cli_json_end_array(j);
+    cli_json_key(j, "stable");
+    if (res->stable == -1)
+        cli_json_null(j);
+    else
+        cli_json_bool(j, res->stable == 1);
     cli_json_key(j, "verdict");
     cli_json_string(j, verdict(res->stable));
 }
@@ -218,11 +234,32 @@ static void modes_json(qd_buf *b, const qd_eom *e, const qd_constrained_linear *
     json_head(&j, e, c);
     cli_json_key(&j, "conservative");
     cli_json_bool(&j, res->conservative);
+    const double *mats[] = {c->lin.M, c->lin.C, c->lin.G, c->lin.K};
+    const char *keys[] = {"M", "C", "G", "K"};
+    for (int i = 0; i < 4; i++) {
+        cli_json_key(&j, keys[i]);
+        json_matrix(&j, c->r, c->r, mats[i]);
+    }
     if (res->conservative) {
-        cli_json_key(&j, "omega2");
+        cli_json_key(&j, "modes");
         cli_json_begin_array(&j);
-        for (size_t k = 0; k < res->n; k++)
+        for (size_t k = 0; k < res->n; k++) {
+            cli_json_begin_object(&j);
+            cli_json_key(&j, "omega2");
             cli_json_number(&j, res->omega2[k]);
+            if (res->omega2[k] >= 0) {
+                cli_json_key(&j, "omega");
+                cli_json_number(&j, sqrt(res->omega2[k]));
+            }
+            cli_json_key(&j, "shape");
+            cli_json_begin_object(&j);
+            for (size_t i = 0; i < c->r; i++) {
+                cli_json_key(&j, qd_expr_name(e->q[c->indep[i]]));
+                cli_json_number(&j, res->shapes[i * res->n + k]);
+            }
+            cli_json_end_object(&j);
+            cli_json_end_object(&j);
+        }
         cli_json_end_array(&j);
     }
     json_eigs(&j, res);
@@ -286,14 +323,7 @@ static void lin_json(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c,
     }
     cli_json_end_array(&j);
     cli_json_key(&j, "A");
-    cli_json_begin_array(&j);
-    for (size_t i = 0; i < N; i++) {
-        cli_json_begin_array(&j);
-        for (size_t k = 0; k < N; k++)
-            cli_json_number(&j, A[i * N + k]);
-        cli_json_end_array(&j);
-    }
-    cli_json_end_array(&j);
+    json_matrix(&j, N, N, A);
     json_eigs(&j, res);
     cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
