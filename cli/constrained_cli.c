@@ -212,12 +212,13 @@ static void modes_text(qd_buf *b, const qd_eom *e, const qd_constrained_linear *
     if (res->conservative) {
         for (size_t k = 0; k < res->n; k++) {
             double w2 = res->omega2[k];
-            qd_buf_printf(b, "mode %zu: omega^2 = %.10g", k + 1, w2);
+            qd_buf_printf(b, "mode %zu: w^2 = %.12g", k + 1, w2);
             if (w2 > 0)
-                qd_buf_printf(b, ", omega = %.10g rad/s", sqrt(w2));
+                qd_buf_printf(b, ", w = %.10g rad/s, period = %.10g s", sqrt(w2),
+                              2 * 3.14159265358979323846 / sqrt(w2));
             qd_buf_puts(b, "\n  shape:");
             for (size_t i = 0; i < c->r; i++)
-                qd_buf_printf(b, " %s %.6g", qd_expr_name(e->q[c->indep[i]]),
+                qd_buf_printf(b, "%s %s = %.12g", i ? "," : "", qd_expr_name(e->q[c->indep[i]]),
                               res->shapes[i * res->n + k]);
             qd_buf_puts(b, "\n");
         }

@@ -18,6 +18,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -581,9 +582,17 @@ qd_status qd_constrained_linear_about(qd_ctx *ctx, const qd_eom *e, size_t nvals
     }
     if (!multipliers(c, n, w.out + oA(&w), w.out + oF(&w), out->lambda, work) ||
         !tangent(&w, out->indep, out->dep, r, out->T, work)) {
+        char better[256] = "";
+        if (choose_dep(c, n, w.out + oA(&w), isdep, work))
+            for (size_t j = 0, used = 0; j < n && used < sizeof better; j++)
+                if (!isdep[j])
+                    used += (size_t)snprintf(better + used, sizeof better - used, "%s%s",
+                                             used ? ", " : "", qd_expr_name(e->q[j]));
         qd_ctx_error(ctx, QD_ERR_ARG, "the dependent coordinates do not determine the "
-                                      "constraints at this point (choose other independent "
-                                      "coordinates)");
+                                      "constraints at this point (their columns of the "
+                                      "constraint Jacobian are singular there): choose other "
+                                      "independent coordinates%s%s", better[0] ? ", e.g. " : "",
+                     better);
         st = QD_ERR_ARG;
         goto done;
     }
