@@ -82,7 +82,9 @@ static int reduce(cli_lin_run *r, const double *q0, const char *indep,
         qd_constrained_linear_about(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, ix, c) !=
             QD_OK) {
         cli_diag_error("%s", qd_ctx_message(r->ctx));
-        rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        rc = qd_ctx_status(r->ctx) == QD_ERR_ARG || qd_ctx_status(r->ctx) == QD_ERR_UNSUPPORTED
+                 ? QD_EXIT_USAGE
+                 : QD_EXIT_FAIL;
     }
     free(ix);
     return rc;

@@ -266,7 +266,8 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
         qd_equilibria_find(r->ctx, r->e, r->mf.model, r->st.n, r->st.syms, r->st.vals, &o,
                            out) != QD_OK) {
         cli_diag_error("%s", qd_ctx_message(r->ctx));
-        rc = QD_EXIT_FAIL;
+        /* a constraint the manifold search does not take (with t, with velocities) */
+        rc = qd_ctx_status(r->ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
     }
     free(q);
     free(lo);
