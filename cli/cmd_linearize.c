@@ -343,11 +343,9 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
         cli_diag_error("--independent: the model keeps no constraints");
         return QD_EXIT_USAGE;
     }
-    if (a->lqr || (a->format != F_TEXT && a->format != F_JSON) || qd_model_ninputs(mf->model)) {
-        cli_diag_error("on the constraint manifold linearize gives A (text or json) for a model "
-                      "without inputs; %s is not done yet",
-                      a->lqr ? "--lqr" : qd_model_ninputs(mf->model) ? "B for inputs"
-                                                                    : formats[a->format]);
+    if (a->lqr || (a->format != F_TEXT && a->format != F_JSON)) {
+        cli_diag_error("on the constraint manifold linearize gives A and B (text or json); %s "
+                      "is not done yet", a->lqr ? "--lqr" : formats[a->format]);
         return QD_EXIT_USAGE;
     }
     cli_lin_run r = {.ctx = ctx, .mf = *mf, .e = e};

@@ -289,10 +289,16 @@ int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json
     return rc;
 }
 
+typedef struct con_inputs {
+    size_t nu;
+    const qd_expr **u;
+    double *B; /* 2r * nu */
+} con_inputs;
+
 static void lin_text(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c, const double *A,
-                     const qd_modes_result *res) {
+                     const con_inputs *in, const qd_modes_result *res) {
     size_t N = 2 * c->r;
-    qd_buf_puts(b, "state-space form x' = A x ");
+    qd_buf_puts(b, in->nu ? "state-space form x' = A x + B u " : "state-space form x' = A x ");
     put_head(b, e, c);
     qd_buf_puts(b, "x = (");
     for (size_t i = 0; i < N; i++)
@@ -305,12 +311,24 @@ static void lin_text(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c,
             qd_buf_printf(b, " %14.10g", A[i * N + k]);
         qd_buf_puts(b, "\n");
     }
+    if (in->nu) {
+        qd_buf_puts(b, "u = (");
+        for (size_t k = 0; k < in->nu; k++)
+            qd_buf_printf(b, "%s%s", k ? ", " : "", qd_expr_name(in->u[k]));
+        qd_buf_puts(b, ")\nB =\n");
+        for (size_t i = 0; i < N; i++) {
+            qd_buf_puts(b, " ");
+            for (size_t k = 0; k < in->nu; k++)
+                qd_buf_printf(b, " %14.10g", in->B[i * in->nu + k]);
+            qd_buf_puts(b, "\n");
+        }
+    }
     text_eigs(b, res);
     qd_buf_printf(b, "verdict: %s\n", verdict(res->stable));
 }
 
 static void lin_json(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c, const double *A,
-                     const qd_modes_result *res) {
+                     const con_inputs *in, const qd_modes_result *res) {
     size_t N = 2 * c->r;
     cli_json j;
     cli_json_init(&j, b);
@@ -327,6 +345,13 @@ static void lin_json(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c,
     cli_json_end_array(&j);
     cli_json_key(&j, "A");
     json_matrix(&j, N, N, A);
+    cli_json_key(&j, "inputs");
+    cli_json_begin_array(&j);
+    for (size_t k = 0; k < in->nu; k++)
+        cli_json_string(&j, qd_expr_name(in->u[k]));
+    cli_json_end_array(&j);
+    cli_json_key(&j, "B");
+    json_matrix(&j, N, in->nu, in->B);
     json_eigs(&j, res);
     cli_json_end_object(&j);
     qd_buf_puts(b, "\n");
@@ -337,22 +362,31 @@ int cli_con_linearize(cli_lin_run *r, const double *q0, const char *indep, bool 
     qd_constrained_linear c = {0};
     qd_modes_result res = {0};
     double *A = NULL;
+    con_inputs in = {.nu = qd_model_ninputs(r->mf.model)};
     int rc = reduce(r, q0, indep, &c);
-    if (rc == QD_EXIT_OK && !(A = calloc(4 * c.r * c.r + 1, sizeof *A))) {
+    if (rc == QD_EXIT_OK && (!(A = calloc(4 * c.r * c.r + 1, sizeof *A)) ||
+                             !(in.B = calloc(2 * c.r * in.nu + 1, sizeof *in.B)) ||
+                             !(in.u = calloc(in.nu + 1, sizeof *in.u)))) {
         cli_diag_error("out of memory");
         rc = QD_EXIT_FAIL;
     }
+    for (size_t k = 0; rc == QD_EXIT_OK && k < in.nu; k++)
+        in.u[k] = qd_model_input(r->mf.model, k);
     if (rc == QD_EXIT_OK && (qd_constrained_state_matrix(r->ctx, &c, A) != QD_OK ||
+                             qd_constrained_input_matrix(r->ctx, r->e, &c, in.nu, in.u, r->st.n,
+                                                         r->st.syms, r->st.vals, in.B) != QD_OK ||
                              qd_modes_solve(r->ctx, &c.lin, &res) != QD_OK)) {
         cli_diag_error("%s", qd_ctx_message(r->ctx));
         rc = QD_EXIT_FAIL;
     }
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        (json ? lin_json : lin_text)(&b, r->e, &c, A, &res);
+        (json ? lin_json : lin_text)(&b, r->e, &c, A, &in, &res);
         rc = cli_emit(&b, "state-space form");
     }
     free(A);
+    free(in.B);
+    free(in.u);
     qd_modes_result_free(&res);
     qd_constrained_linear_free(&c);
     return rc;

@@ -85,6 +85,19 @@ QD_API void qd_constrained_linear_free(qd_constrained_linear *c);
 QD_API qd_status qd_constrained_state_matrix(qd_ctx *ctx, const qd_constrained_linear *c,
                                              double *A);
 
+/* The input matrix of the reduced system for the inputs u (nu symbols, the
+ * model's `inputs`): the generalized forces' rates df/du at the point c->q
+ * (at rest; syms/vals as given to qd_constrained_linear_about, which also
+ * fix u0) projected onto the manifold, B = [0; M_r^-1 T^T df/du], 2r*nu
+ * row-major into B.  The multipliers' change with u does not enter: A^T dlambda
+ * is normal to the manifold (T^T A^T = 0).  QD_ERR_SINGULAR when M_r is
+ * singular. */
+QD_API qd_status qd_constrained_input_matrix(qd_ctx *ctx, const qd_eom *e,
+                                             const qd_constrained_linear *c, size_t nu,
+                                             const qd_expr *const *u, size_t nvals,
+                                             const qd_expr *const *syms, const double *vals,
+                                             double *B);
+
 /* The equilibria of a model with constraints (see the head comment); the
  * arguments as for qd_equilibria_find (opts->near: Newton from that guess
  * only).  Each point lists every coordinate of e; the kind, signs and

@@ -647,6 +647,90 @@ qd_status qd_constrained_state_matrix(qd_ctx *ctx, const qd_constrained_linear *
     return ok ? QD_OK : QD_ERR_SINGULAR;
 }
 
+qd_status qd_constrained_input_matrix(qd_ctx *ctx, const qd_eom *e,
+                                      const qd_constrained_linear *c, size_t nu,
+                                      const qd_expr *const *u, size_t nvals,
+                                      const qd_expr *const *syms, const double *vals,
+                                      double *B) {
+    QD_ARGS_CTX(ctx, ctx && e && c && (nu == 0 || u) && (nvals == 0 || syms) &&
+                         (nvals == 0 || vals) && (nu == 0 || B));
+    size_t n = e->n, r = c->r, no = n * nu;
+    if (nu == 0)
+        return QD_OK;
+    if (c->n != n) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the reduction is not of these equations");
+        return QD_ERR_ARG;
+    }
+    const qd_expr **d = qd__calloc(ctx, no + 2 * n + 1, sizeof *d), **zeros = d + no;
+    double *in = NULL, *out = qd__calloc(ctx, no + r * nu + 1, sizeof *out);
+    const qd_expr **ins = NULL;
+    size_t nin = 0;
+    qd_prog *prog = NULL;
+    qd_status st = d && out ? QD_OK : QD_ERR_NOMEM;
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        zeros[j] = qd_int(ctx, 0);
+    for (size_t j = 0; st == QD_OK && j < n; j++)
+        for (size_t k = 0; k < nu; k++)
+            d[j * nu + k] = qd_subs(ctx, qd_diff(ctx, e->f[j], u[k]), n,
+                                    (const qd_expr *const *)e->qd, zeros);
+    if (st == QD_OK && (st = qd_ctx_status(ctx)) == QD_OK &&
+        (ins = qd__num_inputs(ctx, no, d, &nin)))
+        prog = qd_prog_new(ctx, nin, ins, no, d);
+    if (st == QD_OK && !prog)
+        st = qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+    if (st == QD_OK && !(in = qd__calloc(ctx, nin + 1, sizeof *in)))
+        st = QD_ERR_NOMEM;
+    for (size_t i = 0; st == QD_OK && i < nin; i++) {
+        for (size_t k = 0; k < nvals; k++)
+            if (syms[k] == ins[i]) {
+                in[i] = vals[k];
+                break;
+            }
+        for (size_t j = 0; j < n; j++) /* the point on the manifold */
+            if (ins[i] == e->q[j])
+                in[i] = c->q[j];
+    }
+    if (st == QD_OK) {
+        qd_prog_run(prog, in, out);
+        double *X = out + no, *Mc = NULL;
+        for (size_t a = 0; a < r; a++) /* T^T df/du */
+            for (size_t k = 0; k < nu; k++) {
+                double s = 0;
+                for (size_t j = 0; j < n; j++)
+                    s += c->T[j * r + a] * out[j * nu + k];
+                X[a * nu + k] = s;
+            }
+        if (!(Mc = qd__malloc(ctx, (r * r + 1) * sizeof *Mc)))
+            st = QD_ERR_NOMEM;
+        else {
+            memcpy(Mc, c->lin.M, r * r * sizeof *Mc);
+            if (!gauss(r, Mc, X, nu)) {
+                qd_ctx_error(ctx, QD_ERR_SINGULAR, "the reduced mass matrix is singular");
+                st = QD_ERR_SINGULAR;
+            }
+        }
+        qd__free(Mc);
+        if (st == QD_OK) {
+            memset(B, 0, 2 * r * nu * sizeof *B);
+            memcpy(B + r * nu, X, r * nu * sizeof *B);
+            for (size_t i = 0; i < 2 * r * nu; i++)
+                if (!isfinite(B[i])) {
+                    qd_ctx_error(ctx, QD_ERR_NUMERIC, "the input matrix is not finite here");
+                    st = QD_ERR_NUMERIC;
+                    break;
+                }
+        }
+    }
+    if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
+        qd_ctx_error(ctx, st, "out of memory forming the input matrix");
+    qd_prog_free(prog);
+    qd__free(ins);
+    qd__free(in);
+    qd__free(out);
+    qd__free(d);
+    return st;
+}
+
 /* ---- equilibria ---------------------------------------------------------------- */
 
 static double halton(size_t i, unsigned base) {

@@ -449,6 +449,28 @@ static void null_constrained(void **state)
     /* A NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_state_matrix(F.ctx, NULL, NULL));
     reset(&F);
+    /* ---- qd_constrained_input_matrix */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(NULL, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* u NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* B NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
     /* ---- qd_constrained_equilibria_find */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));

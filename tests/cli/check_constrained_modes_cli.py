@@ -11,7 +11,7 @@ coordinates, never output of the code under test:
     bottom (0, -l) a minimum, top (0, l) a maximum; w^2 = g/l (the potential
     m g y is linear: all of it comes from the multiplier's second-order term
     lambda Hess phi); A = [[0, 1], [-g/l, 0]], eigenvalues +-i sqrt(g/l); the
-    top w^2 = -g/l;
+    top w^2 = -g/l; a horizontal force F on the bob: B = (0, 1/m);
   - the double pendulum in Cartesian coordinates with two rod constraints
     against the angle model's two w^2, the roots of det(K - w^2 M) = 0 with
     M = [[(m1+m2) l1^2, m2 l1 l2], [m2 l1 l2, m2 l2^2]],
@@ -65,6 +65,14 @@ coordinates x, y, z
 T = m/2*(x'^2 + y'^2 + z'^2)
 V = m*g*z
 constraint sphere: x^2 + y^2 + z^2 = l^2
+"""
+PEND_IN = f"""parameters m = 1.5, g = {G}, l = {L}
+coordinates x, y
+inputs F
+T = m/2*(x'^2 + y'^2)
+V = m*g*y
+Q[x] = F
+constraint rod: x^2 + y^2 = l^2
 """
 SYMPY_PEND = """parameters m = 0.9, L = 1.3
 coordinates q1, q2
@@ -125,6 +133,14 @@ def pendulum(qdot, d):
         check("pendulum eigenvalues +-i sqrt(g/l)",
               all(abs(s[0]) < 1e-12 for s in ev) and close(ev[0][1], -w) and close(ev[1][1], w),
               str(ev))
+    # a horizontal force F on the bob: x'' = -(g/l) x + F/m at the bottom
+    rc, out, err = run(qdot, "linearize", d / "pend_in.qd", "--about", "x = 0, y = -2",
+                       "--format", "json")
+    check("pendulum input rc", rc == 0, err)
+    if rc == 0:
+        d_ = json.loads(out)
+        check("pendulum B = (0, 1/m)", d_["inputs"] == ["F"] and abs(d_["B"][0][0]) < 1e-15 and
+              close(d_["B"][1][0], 1 / 1.5) and close(d_["A"][1][0], -G / L), str(d_))
     # the user's independent coordinate y cannot parametrize the circle at the bottom
     rc, out, err = run(qdot, "linearize", xy, "--about", "x = 0, y = -2", "--independent", "y")
     check("independent y refused at the bottom", rc == 2 and "choose" in err, err)
@@ -208,7 +224,8 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
         for name, text in (("pend_xy", PEND_XY), ("pend_th", PEND_TH), ("dp_xy", DP_XY),
-                           ("sphere", SPHERE), ("sympy_pend", SYMPY_PEND)):
+                           ("sphere", SPHERE), ("sympy_pend", SYMPY_PEND),
+                           ("pend_in", PEND_IN)):
             (d / f"{name}.qd").write_text(text)
         for f in (pendulum, double_pendulum, sphere, sympy_nonminimal):
             f(qdot, d)
