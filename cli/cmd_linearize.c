@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "json.h"
+#include "linear_cli.h"
 #include "lqr_cli.h"
 #include "model_cli.h"
 #include "qdot/statespace.h"
@@ -22,7 +23,7 @@ enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
 static const char *const formats[] = {"text", "json", "c", "sympy", "octave", NULL};
 
 typedef struct lin_args {
-    const char *file, *about, *lqr;
+    const char *file, *about, *lqr, *independent;
     const char *sets[LIN_MAX_SETS];
     size_t nsets;
     int format;
@@ -31,7 +32,7 @@ typedef struct lin_args {
 static const char usage_text[] =
     "usage: qdot linearize FILE [--about \"q=VALUE, q'=VALUE, F=VALUE, ...\"] "
     "[--set NAME=VALUE]... [--lqr \"Q = diag(...), R = ...\"] "
-    "[--format text|json|c|sympy|octave]";
+    "[--format text|json|c|sympy|octave] [--independent \"q1, ...\"]";
 
 static int parse_option(int argc, char **argv, int *i, void *data) {
     lin_args *a = data;
@@ -40,6 +41,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return cli_choice("--format", v, formats, &a->format);
     if ((v = cli_value(argc, argv, i, "--about")))
         return cli_once("--about", &a->about, v);
+    if ((v = cli_value(argc, argv, i, "--independent")))
+        return cli_once("--independent", &a->independent, v);
     if ((v = cli_value(argc, argv, i, "--lqr")))
         return cli_once("--lqr", &a->lqr, v);
     if ((v = cli_value(argc, argv, i, "--set")))
@@ -333,6 +336,35 @@ static int emit(qd_ctx *ctx, const lin_args *a, const qd_statespace *s,
     return cli_lqr_print_design(stdout, s, lqr, a->format == F_TEXT ? CLI_LQR_TEXT : CLI_LQR_C);
 }
 
+/* A model that keeps holonomic constraints: A over the independent states
+ * on the manifold (constrained_cli.c). */
+static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eom *e) {
+    if (!e->ncon) {
+        cli_diag_error("--independent: the model keeps no constraints");
+        return QD_EXIT_USAGE;
+    }
+    if (a->lqr || (a->format != F_TEXT && a->format != F_JSON)) {
+        cli_diag_error("on the constraint manifold linearize gives A and B (text or json); %s "
+                      "is not done yet", a->lqr ? "--lqr" : formats[a->format]);
+        return QD_EXIT_USAGE;
+    }
+    cli_lin_run r = {.ctx = ctx, .mf = *mf, .e = e};
+    int rc = cli_lin_setup(&r);
+    double *q0 = rc == QD_EXIT_OK ? calloc(e->n + 1, sizeof *q0) : NULL;
+    if (rc == QD_EXIT_OK && !q0) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
+    }
+    if (rc == QD_EXIT_OK)
+        rc = cli_con_point(&r, a->about, a->format == F_JSON, q0);
+    if (rc == QD_EXIT_OK)
+        rc = cli_con_linearize(&r, q0, a->independent, a->format == F_JSON);
+    free(q0);
+    cli_state_free(&r.st);
+    free(r.slot);
+    return rc;
+}
+
 static int run(qd_ctx *ctx, const lin_args *a) {
     cli_model_file mf = {0};
     qd_eom *e = NULL;
@@ -347,6 +379,10 @@ static int run(qd_ctx *ctx, const lin_args *a) {
     }
     if (rc == QD_EXIT_OK)
         rc = cli_load_derive(ctx, a->file, a->nsets, a->sets, false, &eo, &mf, &e);
+    if (rc == QD_EXIT_OK && (e->ncon || a->independent)) {
+        rc = constrained(ctx, a, &mf, e);
+        goto done;
+    }
     if (rc == QD_EXIT_OK && a->about)
         rc = cli_point_read(ctx, a->about, &pt);
     if (rc == QD_EXIT_OK &&
@@ -358,6 +394,7 @@ static int run(qd_ctx *ctx, const lin_args *a) {
         rc = cli_lqr_design(ctx, &s, a->lqr, &lqr);
     if (rc == QD_EXIT_OK)
         rc = emit(ctx, a, &s, a->lqr ? &lqr : NULL);
+done:
     qd_care_result_free(&lqr);
     qd_statespace_free(&s);
     cli_point_free(&pt);

@@ -34,6 +34,7 @@ static const double PI = 3.14159265358979323846;
 
 typedef struct modes_args {
     const char *file, *about, *initial, *scan;
+    const char *independent; /* --independent: a model that keeps constraints */
     size_t steps;   /* --steps: 0 the library's default */
     long at_eq;   /* 1-based; 0: the first minimum, else the first */
     const char *sets[QD_LIN_MAX_SETS];
@@ -62,7 +63,8 @@ typedef struct modes_run {
 static const char usage_text[] =
     "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
     "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--scan NAME=A:B [--steps N]] "
-    "[--set NAME=VALUE]... [--format text|json] [--plot FILE.png|.svg|.pdf] [--symmetry]";
+    "[--set NAME=VALUE]... [--format text|json] [--plot FILE.png|.svg|.pdf] [--symmetry] "
+    "[--independent \"q1, ...\"]";
 
 static const char *const formats[] = {"text", "json", NULL};
 
@@ -103,6 +105,8 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         a->steps = (size_t)k;
         return QD_EXIT_OK;
     }
+    if ((v = cli_value(argc, argv, i, "--independent")))
+        return cli_once("--independent", &a->independent, v);
     if ((v = cli_value(argc, argv, i, "--initial")))
         return cli_once("--initial", &a->initial, v);
     if ((v = cli_value(argc, argv, i, "--set")))
@@ -558,6 +562,16 @@ int cli_cmd_modes(int argc, char **argv) {
     }
     if (rc == QD_EXIT_OK)
         rc = cli_lin_derive(&r.lr);
+    if (rc == QD_EXIT_OK && (r.lr.e->ncon ? a.scan || a.symmetry || a.plot || a.initial
+                                          : a.independent != NULL)) {
+        cli_diag_error(r.lr.e->ncon ? "%s: not yet on the constraint manifold of a model that "
+                                      "keeps constraints with multipliers"
+                                    : "%s: the model keeps no constraints",
+                       r.lr.e->ncon ? (a.scan ? "--scan" : a.symmetry ? "--symmetry"
+                                               : a.plot ? "--plot" : "--initial")
+                                    : "--independent");
+        rc = QD_EXIT_USAGE;
+    }
     if (rc == QD_EXIT_OK && a.scan) {
         rc = cli_scan_modes(&r.lr, a.scan, a.about, a.steps, a.json);
         goto done;
@@ -566,6 +580,10 @@ int cli_cmd_modes(int argc, char **argv) {
         rc = choose_point(&r, &a);
     if (rc == QD_EXIT_OK && r.why && !a.json)
         note_choice(&r);
+    if (rc == QD_EXIT_OK && r.lr.e->ncon) { /* on the manifold (constrained_cli.c) */
+        rc = cli_con_modes(&r.lr, r.q0, a.independent, a.json);
+        goto done;
+    }
     if (rc == QD_EXIT_OK)
         rc = linearize(&r);
     if (rc == QD_EXIT_OK && a.symmetry)

@@ -30,14 +30,13 @@ int cli_lin_derive(cli_lin_run *r) {
     qd_eom_opts opts = {.eliminate = true};
     if (!(r->e = qd_eom_derive_opts(r->ctx, r->mf.model, &opts)))
         return cli_eom_derive_error(r->ctx, &r->mf);
-    int rc;
-    if (r->e->ncon) {
-        cli_diag_error("the model keeps %zu constraint%s with multipliers after elimination: "
-                      "equilibria and modes need independent coordinates", r->e->ncon,
-                      r->e->ncon == 1 ? "" : "s");
-        return QD_EXIT_USAGE;
-    }
-    rc = cli_state_init(r->ctx, r->mf.model, &r->st);
+    return cli_lin_setup(r);
+}
+
+/* The constraints kept with multipliers are reduced on their manifold by
+ * the library (qdot/constrained.h). */
+int cli_lin_setup(cli_lin_run *r) {
+    int rc = cli_state_init(r->ctx, r->mf.model, &r->st);
     if (rc != QD_EXIT_OK)
         return rc;
     /* the slot of each independent coordinate in the model's state */
@@ -267,7 +266,8 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
         qd_equilibria_find(r->ctx, r->e, r->mf.model, r->st.n, r->st.syms, r->st.vals, &o,
                            out) != QD_OK) {
         cli_diag_error("%s", qd_ctx_message(r->ctx));
-        rc = QD_EXIT_FAIL;
+        /* a constraint the manifold search does not take (with t, with velocities) */
+        rc = qd_ctx_status(r->ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
     }
     free(q);
     free(lo);

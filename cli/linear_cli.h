@@ -31,6 +31,9 @@ int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size
 int cli_lin_load_model(cli_lin_run *r, const char *file, const char *const *sets,
                        size_t nsets);
 int cli_lin_derive(cli_lin_run *r);
+/* The state and slots for equations r->e already derived (cli_lin_derive's
+ * second half). */
+int cli_lin_setup(cli_lin_run *r);
 void cli_lin_free(cli_lin_run *r);
 /* The equations' coordinates may be fewer than the model's (constraints
  * eliminated): arrays of values here have e->n entries in the order of e->q.
@@ -60,6 +63,16 @@ int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char
  * parameter, speed or coordinate; steps as --steps), or NULL. */
 int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const char *range,
                      size_t steps, bool json, const char *refuse);
+
+/* ---- models that keep constraints (constrained_cli.c) -----------------------
+ * Modes and the state-space matrix on the constraint manifold about q0 (e->n
+ * values, moved onto the constraints by the dependent coordinates).  indep:
+ * "x, ..." the independent coordinates, or NULL (chosen by the library). */
+int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json);
+int cli_con_linearize(cli_lin_run *r, const double *q0, const char *indep, bool json);
+/* q0 for a model that keeps constraints: --about's values (unnamed 0), else
+ * the equilibrium qd_equilibria_choose takes (a note says which). */
+int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0);
 
 /* ---- --scan (scan_cli.c) --------------------------------------------------- */
 

@@ -84,7 +84,8 @@ typedef struct qd_equilibria_opts {
 QD_API qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi);
 
-/* Find the equilibria of e (derived from m; no multipliers) with the
+/* Find the equilibria of e (derived from m; a model that keeps holonomic
+ * constraints goes to qd_constrained_equilibria_find, qdot/constrained.h) with the
  * parameters at syms/vals (as for qd_eom_eval; exact values from the model
  * for the exact attempt).  opts may be NULL.  count may be 0 (QD_OK). */
 QD_API qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,

@@ -78,7 +78,8 @@ typedef struct qd_modes_result {
 /* Linearize e (from qd_eom_derive on m) about the state syms/vals (as for
  * qd_eom_eval: coordinates, t and parameters; velocities are taken as 0
  * whatever vals says).  Models with constraints (multipliers) are
- * QD_ERR_ARG: derive with eliminate, or choose independent coordinates.
+ * QD_ERR_ARG here: qd_constrained_linear_about (qdot/constrained.h) reduces
+ * them onto the constraint manifold.
  * The symbolic derivatives are computed once per e and kept in a cache
  * private to this call (each call recomputes them: cheap for small n). */
 QD_API qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,

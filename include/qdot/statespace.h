@@ -21,8 +21,8 @@
  * beyond QD_SS_MAX_OPS operations per entry.
  *
  * Models whose equations keep multipliers (constraints) are refused
- * (QD_ERR_ARG): derive them with the constraints eliminated or write them
- * in independent coordinates.
+ * (QD_ERR_ARG): qd_constrained_state_matrix (qdot/constrained.h) gives A
+ * over independent coordinates on the constraint manifold.
  */
 #ifndef QDOT_STATESPACE_H
 #define QDOT_STATESPACE_H

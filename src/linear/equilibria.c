@@ -7,6 +7,7 @@
 
 #include "base/ptrmap.h"
 #include "linear.h"
+#include "qdot/constrained.h"
 #include "../base/mem.h"
 #include "../base/args.h"
 
@@ -582,6 +583,8 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
     QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     memset(out, 0, sizeof *out);
     qd_equilibria_opts o = opts ? *opts : (qd_equilibria_opts){0};
+    if (e->ncon) /* on the constraint manifold (qdot/constrained.h) */
+        return qd_constrained_equilibria_find(ctx, e, m, nvals, syms, vals, opts, out);
     size_t n = e->n;
     out->n = n;
     qd__lin L;

@@ -93,8 +93,8 @@ qd_status qd__lin_init(qd_ctx *ctx, const qd_eom *e, qd__lin *L) {
     if (e->ncon) {
         qd_ctx_error(ctx, QD_ERR_ARG,
                      "the model keeps %zu constraint%s with multipliers: small oscillations need "
-                     "independent coordinates (eliminate the constraints or choose coordinates "
-                     "that satisfy them)", e->ncon, e->ncon == 1 ? "" : "s");
+                     "independent coordinates (qd_constrained_linear_about reduces onto the "
+                     "constraints)", e->ncon, e->ncon == 1 ? "" : "s");
         return QD_ERR_ARG;
     }
     size_t n = e->n, nn = n * n;

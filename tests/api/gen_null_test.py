@@ -37,6 +37,8 @@ NULLABLE = {
     'qd_eom_prog_eval': {'M', 'R', 'f', 'lambda', 'qdd'},
     'qd_eom_reaction': {'residual'},
     'qd_equilibria_find': {'opts'},
+    'qd_constrained_equilibria_find': {'opts'},
+    'qd_constrained_linear_about': {'indep'},
     'qd_eval': {'syms', 'vals'},
     'qd_free_symbols': {'out'},
     'qd_generate': {'H'},

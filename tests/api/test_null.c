@@ -19,6 +19,7 @@
 #include "qdot/canonical.h"
 #include "qdot/certify.h"
 #include "qdot/codegen.h"
+#include "qdot/constrained.h"
 #include "qdot/control.h"
 #include "qdot/equilibria.h"
 #include "qdot/eval.h"
@@ -443,6 +444,85 @@ static void null_codegen(void **state)
     /* ---- qd_native_unload */
     /* nat NULL */
     qd_native_unload(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_constrained(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_constrained_linear_about */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_linear_about(NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.z, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_linear_about(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.z, NULL));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_linear_about(F.ctx, F.eom, 1, NULL, F.d, F.z, NULL));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_linear_about(F.ctx, F.eom, 1, (const qd_expr * const *)F.e, NULL, F.z, NULL));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_linear_about(F.ctx, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.z, NULL));
+    reset(&F);
+    /* ---- qd_constrained_linear_free */
+    /* c NULL */
+    qd_constrained_linear_free(NULL);
+    reset(&F);
+    /* ---- qd_constrained_state_matrix */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_state_matrix(NULL, NULL, F.d));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_state_matrix(F.ctx, NULL, F.d));
+    reset(&F);
+    /* A NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_state_matrix(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_constrained_input_matrix */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(NULL, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* u NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* B NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_constrained_equilibria_find */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, (qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -3799,6 +3879,7 @@ int main(void)
         cmocka_unit_test(null_canonical),
         cmocka_unit_test(null_certify),
         cmocka_unit_test(null_codegen),
+        cmocka_unit_test(null_constrained),
         cmocka_unit_test(null_control),
         cmocka_unit_test(null_equilibria),
         cmocka_unit_test(null_eval),

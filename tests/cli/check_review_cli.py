@@ -157,8 +157,8 @@ CASES = [
      'constraints is not supported'),
     (['stability', str(EXAMPLES / 'pendulum_cartesian.qd'), '--ignore', 'x'], USAGE,
      'constraints are not supported'),
-    (['equilibria', str(EXAMPLES / 'pendulum_cartesian.qd')], USAGE,
-     'need independent coordinates'),
+    (['equilibria', str(EXAMPLES / 'bead_wire_cartesian.qd')], USAGE,
+     'constraint wire depends on t'),
 ]
 
 
