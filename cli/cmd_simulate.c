@@ -116,7 +116,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     if (cli_sim_took_option(argc, argv, i, a, &rc))
         return rc;
     const char *v;
-    bool stop;
     if (!strcmp(argv[*i], "--variational")) {
         sa->variational = 1;
         if (*i + 1 < argc && (!strcmp(argv[*i + 1], "columns") || !strcmp(argv[*i + 1], "matrix")))
@@ -139,21 +138,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
             return QD_EXIT_USAGE;
         }
         a->json = !strcmp(v, "json");
-    } else if ((v = cli_value(argc, argv, i, "--output"))) {
-        a->output = v;
-    } else if ((v = cli_value(argc, argv, i, "--about"))) {
-        return cli_once("--about", &a->about, v);
-    } else if ((v = cli_value(argc, argv, i, "--lqr"))) {
-        return cli_once("--lqr", &a->lqr, v);
-    } else if ((stop = !strncmp(argv[*i], "--stop-at", 9), 0) ||
-               (v = cli_value(argc, argv, i, "--event")) ||
-               (v = cli_value(argc, argv, i, "--stop-at"))) {
-        if (a->nevents == QD_SIM_MAX_LIST) {
-            cli_diag_error("at most %d events", QD_SIM_MAX_LIST);
-            return QD_EXIT_USAGE;
-        }
-        a->event_stop[a->nevents] = stop;
-        a->events[a->nevents++] = v;
     } else if ((rc = cli_plot_option(argc, argv, i, &a->plot))) {
         return rc > 100 ? rc - 100 : QD_EXIT_OK;
     } else {
