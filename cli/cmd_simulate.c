@@ -532,8 +532,11 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
         free(line);
         return QD_EXIT_USAGE;
     }
-    /* a step can span a swing: without --dt a plot samples the dense output */
-    if (a->plot.file && !a->has_dt && qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
+    /* a step can span a swing: without --dt a picture alone samples the
+     * dense output; rows written (--out, --format json) are never changed
+     * by --plot, which then draws those rows (issue 36) */
+    if (a->plot.file && !a->out && !a->json && !a->has_dt &&
+        qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
         c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     sim_out o = {.ncols = ncols,
                  .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
