@@ -44,9 +44,11 @@ enum { QD_SCENE_PARTICLES = 1, QD_SCENE_BODIES = 2, QD_SCENE_POSITIONS = 4 };
 /* The points of model m of the kinds in `which`, particles first, then
  * bodies, then named positions in the order of their definitions; *pts is
  * malloc'd (free() it), *n may be 0.  which == 0: the default, particles
- * and bodies, or named positions when the model has neither. */
+ * and bodies, or named positions when the model has neither.
+ * qd_scene_points_free(*pts) frees them (free() does too). */
 QD_API qd_status qd_scene_points(qd_ctx *ctx, const qd_model *m, unsigned which,
                                  qd_scene_point **pts, size_t *n);
+QD_API void qd_scene_points_free(qd_scene_point *pts);
 
 /* True when a point's name, or one of its component names, is name[0, len). */
 QD_API bool qd_scene_point_is(const qd_scene_point *p, const char *name, size_t len);
@@ -60,7 +62,7 @@ typedef struct qd_scene_shape {
     int plane[2];          /* the drawing plane's axes (x 0, y 1, z 2), or -1 -1: 3-D */
     double lo[3], hi[3];   /* the bounding box of every point over the frames */
     double scale;          /* the largest extent, the tolerances' unit */
-    qd_scene_rod *rods;    /* malloc'd (free() it); nrods may be 0 */
+    qd_scene_rod *rods;    /* malloc'd (qd_scene_shape_free); nrods may be 0 */
     size_t nrods;
 } qd_scene_shape;
 
@@ -69,9 +71,11 @@ typedef struct qd_scene_shape {
  * a rod between two points, or a point and the origin, whose distance is
  * constant (to 1e-6 of the scale) over the frames while one of them moves;
  * pairs listed in skip[2 * k], skip[2 * k + 1] (nskip pairs, springs the
- * caller draws) are not rods. */
+ * caller draws) are not rods.  qd_scene_shape_free frees out's rods (also
+ * after a failure). */
 QD_API qd_status qd_scene_analyse(qd_ctx *ctx, const double *pos, size_t nframes, size_t npts,
                                   const size_t *skip, size_t nskip, qd_scene_shape *out);
+QD_API void qd_scene_shape_free(qd_scene_shape *s);
 
 #ifdef __cplusplus
 }

@@ -255,3 +255,15 @@ qd_status qd_scene_analyse(qd_ctx *ctx, const double *pos, size_t nframes, size_
         }
     return QD_OK;
 }
+
+void qd_scene_points_free(qd_scene_point *pts) {
+    free(pts);
+}
+
+void qd_scene_shape_free(qd_scene_shape *s) {
+    if (!s)
+        return;
+    free(s->rods);
+    s->rods = NULL;
+    s->nrods = 0;
+}

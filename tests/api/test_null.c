@@ -3092,6 +3092,10 @@ static void null_scene(void **state)
     /* n NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_points(F.ctx, F.model, 1, NULL, NULL));
     reset(&F);
+    /* ---- qd_scene_points_free */
+    /* pts NULL */
+    qd_scene_points_free(NULL);
+    reset(&F);
     /* ---- qd_scene_point_is */
     /* p NULL */
     assert_true(qd_scene_point_is(NULL, "q", 1) == 0);
@@ -3105,6 +3109,10 @@ static void null_scene(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_analyse(F.ctx, F.d, 1, 1, F.z, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_shape_free */
+    /* s NULL */
+    qd_scene_shape_free(NULL);
     reset(&F);
     teardown(&F);
 }
