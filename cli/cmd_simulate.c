@@ -38,7 +38,8 @@ static const char usage_text[] =
     "[--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
     "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
-    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q]] "
+    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q] [--title TEXT] "
+    "[--xlabel TEXT] [--ylabel \"TEXT; TEXT\"] [--size WxH]] "
     "[--variational [columns]] [--period T]";
 
 /* --variational (flow.c through qdot/lyapunov.h): after the run, the flow
