@@ -8,10 +8,12 @@
 #include <stdbool.h>
 #include <stdio.h>
 
-#define AN_ORIGIN ((size_t)-1) /* a link's end at the fixed origin (the pivot) */
+#include "qdot/scene.h"
+
+#define AN_ORIGIN QD_SCENE_ORIGIN /* a link's end at the fixed origin (the pivot) */
 
 typedef struct an_point {
-    char name[64];  /* p1, p2, ... for particles; a body's own name */
+    char name[96];  /* p1, p2, ... for particles; a body's own name; x1,y1 or P1 */
     bool body;
     double mass;
 } an_point;
@@ -24,7 +26,8 @@ typedef struct an_link {
 typedef struct an_scene {
     const char *model;           /* the file, for the page's title */
     size_t npts, nbodies, nframes;
-    an_point *pts;               /* particles first, then bodies */
+    an_point *pts;               /* particles, bodies, named positions (qd_scene_points) */
+    qd_scene_point *spts;        /* the same as libqdot lists them */
     double *t, *energy;          /* per frame: t, E(t) - E(t0) (NULL: no energy) */
     double *pos;                 /* [frame][point][3] */
     double *rot;                 /* [frame][body][9], body to space, row-major */
@@ -37,8 +40,7 @@ typedef struct an_scene {
     const char *method;
 } an_scene;
 
-/* Rods between points whose distance stays constant over the frames, and
- * the drawing plane when every point keeps one coordinate fixed. */
+/* The rods and the drawing plane (qd_scene_analyse) added to the scene. */
 int cli_animate_analyse(an_scene *s);
 /* The page: the template (animate_page.html) with the scene as JSON. */
 int cli_animate_write(FILE *f, const an_scene *s);

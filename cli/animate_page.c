@@ -7,6 +7,7 @@
 #include "animate.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
@@ -14,91 +15,28 @@
 extern const unsigned char cli_animate_page_bytes[]; /* generated from animate_page.html */
 #define cli_animate_page ((const char *)cli_animate_page_bytes)
 
-#define FLAT 1e-9   /* an axis no point moves along, relative to the scene */
-#define RIGID 1e-6  /* a distance that stays constant, relative to the scene */
-
-static const double *pos(const an_scene *s, size_t f, size_t i) {
-    return s->pos + (f * s->npts + i) * 3;
-}
-
-/* The largest extent of the motion along an axis, or distance from the
- * origin: the length the tolerances are relative to. */
-static double scene_scale(const an_scene *s, double range[3]) {
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    double scale = 0;
-    for (size_t f = 0; f < s->nframes; f++)
-        for (size_t i = 0; i < s->npts; i++)
-            for (int k = 0; k < 3; k++) {
-                double x = pos(s, f, i)[k];
-                lo[k] = fmin(lo[k], x);
-                hi[k] = fmax(hi[k], x);
-                scale = fmax(scale, fabs(x));
-            }
-    for (int k = 0; k < 3; k++) {
-        range[k] = hi[k] - lo[k];
-        scale = fmax(scale, range[k]);
-    }
-    return scale > 0 ? scale : 1;
-}
-
-/* A plane when some axis is flat for every point: z first (y up on the
- * page), then y, then x. */
-static void find_plane(an_scene *s, const double range[3], double scale) {
-    static const int planes[3][3] = {{2, 0, 1}, {1, 0, 2}, {0, 1, 2}}; /* flat, across, up */
-    s->plane[0] = s->plane[1] = -1;
-    for (int p = 0; p < 3; p++)
-        if (range[planes[p][0]] <= FLAT * scale) {
-            s->plane[0] = planes[p][1];
-            s->plane[1] = planes[p][2];
-            return;
-        }
-}
-
-static double distance(const an_scene *s, size_t f, size_t a, size_t b) {
-    static const double origin[3] = {0, 0, 0};
-    const double *p = a == AN_ORIGIN ? origin : pos(s, f, a);
-    const double *q = b == AN_ORIGIN ? origin : pos(s, f, b);
-    return hypot(hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]);
-}
-
-static bool moves(const an_scene *s, size_t i, double scale) {
-    for (size_t f = 1; i != AN_ORIGIN && f < s->nframes; f++) {
-        const double *p = pos(s, f, i), *p0 = pos(s, 0, i);
-        if (fabs(p[0] - p0[0]) + fabs(p[1] - p0[1]) + fabs(p[2] - p0[2]) > RIGID * scale)
-            return true;
-    }
-    return false;
-}
-
-/* A rod: two points (the origin among them) whose distance is constant over
- * the whole run while at least one of them moves, and not already joined
- * by a spring. */
-static bool rigid(const an_scene *s, size_t a, size_t b, double scale) {
-    for (size_t k = 0; k < s->nlinks; k++)
-        if ((s->links[k].a == a && s->links[k].b == b) || (s->links[k].a == b && s->links[k].b == a))
-            return false;
-    if (!moves(s, a, scale) && !moves(s, b, scale))
-        return false;
-    double d0 = distance(s, 0, a, b);
-    if (d0 <= RIGID * scale)
-        return false;
-    for (size_t f = 1; f < s->nframes; f++)
-        if (fabs(distance(s, f, a, b) - d0) > RIGID * scale)
-            return false;
-    return true;
-}
-
+/* The library finds the plane and the rods; the springs named are not rods. */
 int cli_animate_analyse(an_scene *s) {
-    double range[3];
-    double scale = scene_scale(s, range);
-    find_plane(s, range, scale);
-    for (size_t b = 0; b < s->npts; b++) {
-        if (rigid(s, AN_ORIGIN, b, scale))
-            s->links[s->nlinks++] = (an_link){.a = AN_ORIGIN, .b = b};
-        for (size_t a = 0; a < b; a++)
-            if (rigid(s, a, b, scale))
-                s->links[s->nlinks++] = (an_link){.a = a, .b = b};
+    size_t *skip = malloc((2 * s->nlinks + 1) * sizeof *skip);
+    if (!skip)
+        return QD_EXIT_FAIL;
+    for (size_t k = 0; k < s->nlinks; k++) {
+        skip[2 * k] = s->links[k].a;
+        skip[2 * k + 1] = s->links[k].b;
     }
+    qd_scene_shape sh;
+    qd_status st = qd_scene_analyse(NULL, s->pos, s->nframes, s->npts, skip, s->nlinks, &sh);
+    free(skip);
+    if (st != QD_OK) {
+        free(sh.rods);
+        cli_diag_error("the scene's positions could not be analysed (%s)", qd_status_str(st));
+        return QD_EXIT_FAIL;
+    }
+    s->plane[0] = sh.plane[0];
+    s->plane[1] = sh.plane[1];
+    for (size_t k = 0; k < sh.nrods; k++)
+        s->links[s->nlinks++] = (an_link){.a = sh.rods[k].a, .b = sh.rods[k].b};
+    free(sh.rods);
     return QD_EXIT_OK;
 }
 

@@ -19,9 +19,17 @@
 #include "sim_cli.h"
 
 static const char usage_text[] =
-    "usage: qdot animate FILE -o FILE.html [--t-end T] [--trace NAME]... "
-    "[--spring A,B]... [--dt H | --rtol TOL] [--method M] "
-    "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]...";
+    "usage: qdot animate FILE -o FILE.html [--draw WHAT]... [--trace NAME]... "
+    "[--spring A,B]... [every option of qdot simulate that shapes the motion: --t-end T, "
+    "--dt H, --rtol TOL, --atol TOL, --method M, --initial \"q=VALUE, q'=VALUE\", "
+    "--set NAME=VALUE, --input \"F = EXPR\" | F=FILE.csv | \"F = lqr\", --about POINT, "
+    "--lqr WEIGHTS, --stop-at COND, --event COND, --max-steps N, --no-project, --no-speeds, "
+    "--native, --precision P]\n"
+    "What is drawn: every particle (p1, p2, ...) and body (by its name); a model with "
+    "neither draws its named positions (x1 = ..., y1 = ... [, z1 = ...], named x1,y1, "
+    "or a vector P1 = (x, y, z)).  --draw particles|bodies|positions takes those kinds, "
+    "--draw NAME one point (p2, a body, x1,y1 or x1); repeat it.  Rods join points at a "
+    "constant distance; --spring A,B draws a zigzag.";
 
 #define FPS 60            /* frames per simulated second ... */
 #define MAX_FRAMES 3600   /* ... up to a minute of them: longer runs are coarser */
@@ -30,8 +38,8 @@ static const char usage_text[] =
 typedef struct an_args {
     cli_sim_args a;
     const char *html;
-    const char *traces[QD_SIM_MAX_LIST], *springs[QD_SIM_MAX_LIST];
-    size_t ntraces, nsprings;
+    const char *traces[QD_SIM_MAX_LIST], *springs[QD_SIM_MAX_LIST], *draws[QD_SIM_MAX_LIST];
+    size_t ntraces, nsprings, ndraws;
 } an_args;
 
 static int push(const char **list, size_t *n, const char *v, const char *opt) {
@@ -55,7 +63,15 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
         return push(p->traces, &p->ntraces, v, "--trace");
     else if ((v = cli_value(argc, argv, i, "--spring")))
         return push(p->springs, &p->nsprings, v, "--spring");
-    else {
+    else if ((v = cli_value(argc, argv, i, "--draw")))
+        return push(p->draws, &p->ndraws, v, "--draw");
+    else if (!strcmp(argv[*i], "--format") || !strcmp(argv[*i], "--variational") ||
+             !strcmp(argv[*i], "--period") || !strncmp(argv[*i], "--plot", 6)) {
+        /* simulate's, and they shape its rows, not the motion */
+        cli_diag_error("%s is simulate's: it shapes the rows it writes; animate writes its "
+                       "page with -o FILE.html", argv[*i]);
+        return QD_EXIT_USAGE;
+    } else {
         cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
         return QD_EXIT_USAGE;
     }
@@ -64,11 +80,11 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 
 /* ---- the points and their outputs ------------------------------------------ */
 
-static const qd_expr *component(qd_ctx *ctx, const qd_expr *x) {
-    return x ? x : qd_int(ctx, 0); /* a planar position has no z */
-}
-
 static int mass_of(cli_sim *c, const qd_expr *m, double *out) {
+    if (!m) {
+        *out = 1; /* a named position: every one drawn alike */
+        return QD_EXIT_OK;
+    }
     if (qd_eval(c->ctx, m, c->st.n, c->st.syms, c->st.vals, out) != QD_OK)
         return cli_diag_ctx(c->ctx);
     return QD_EXIT_OK;
@@ -78,31 +94,25 @@ static int mass_of(cli_sim *c, const qd_expr *m, double *out) {
  * the library evaluates them at every row. */
 static int add_point_outputs(cli_sim *c, an_scene *s) {
     const qd_model *m = c->mf.model;
-    size_t np = qd_model_nparticles(m);
-    char name[96];
-    for (size_t i = 0; i < s->npts; i++) {
+    char name[160];
+    for (size_t i = 0, b = 0; i < s->npts; i++) {
+        const qd_scene_point *sp = &s->spts[i];
         an_point *pt = &s->pts[i];
-        pt->body = i >= np;
-        size_t b = i - np;
-        if (pt->body)
-            snprintf(pt->name, sizeof pt->name, "%s", qd_model_body_name(m, b));
-        else
-            snprintf(pt->name, sizeof pt->name, "p%zu", i + 1);
-        int rc = mass_of(c, pt->body ? qd_model_body_mass(m, b) : qd_model_particle_mass(m, i),
-                         &pt->mass);
+        pt->body = sp->kind == QD_SCENE_BODY;
+        snprintf(pt->name, sizeof pt->name, "%s", sp->name);
+        int rc = mass_of(c, sp->mass, &pt->mass);
         for (unsigned k = 0; rc == QD_EXIT_OK && k < 3; k++) {
-            const qd_expr *x = pt->body ? qd_model_body_position(m, b, k)
-                                        : qd_model_particle_position(m, i, k);
             snprintf(name, sizeof name, "animate:%s.%c", pt->name, "xyz"[k]);
-            if (qd_sim_add_output(c->s, name, component(c->ctx, x)) != QD_OK)
+            if (qd_sim_add_output(c->s, name, sp->pos[k]) != QD_OK)
                 return cli_diag_ctx(c->ctx);
         }
         for (unsigned k = 0; rc == QD_EXIT_OK && pt->body && k < 9; k++) {
+            const qd_expr *r = qd_model_body_rotation(m, b, k / 3, k % 3);
             snprintf(name, sizeof name, "animate:%s.R%u%u", pt->name, k / 3, k % 3);
-            if (qd_sim_add_output(c->s, name, component(c->ctx, qd_model_body_rotation(
-                                                                 m, b, k / 3, k % 3))) != QD_OK)
+            if (qd_sim_add_output(c->s, name, r ? r : qd_int(c->ctx, 0)) != QD_OK)
                 return cli_diag_ctx(c->ctx);
         }
+        b += pt->body;
         if (rc != QD_EXIT_OK)
             return rc;
     }
@@ -243,14 +253,15 @@ static int run(cli_sim *c, an_scene *s) {
 
 /* ---- names on the command line ----------------------------------------------- */
 
-/* A point by name (p1, p2, ... or a body's name), or "origin". */
+/* A point by name (p1, p2, ..., a body's name, a named position or one of
+ * its components: x1,y1 or x1 or y1), or "origin". */
 static bool find_point(const an_scene *s, const char *name, size_t len, size_t *at) {
     if (len == 6 && !strncmp(name, "origin", 6)) {
         *at = AN_ORIGIN;
         return true;
     }
     for (size_t i = 0; i < s->npts; i++)
-        if (strlen(s->pts[i].name) == len && !strncmp(s->pts[i].name, name, len)) {
+        if (qd_scene_point_is(&s->spts[i], name, len)) {
             *at = i;
             return true;
         }
@@ -258,21 +269,11 @@ static bool find_point(const an_scene *s, const char *name, size_t len, size_t *
 }
 
 static int unknown_point(const an_scene *s, const char *opt, const char *name, size_t len) {
-    size_t np = s->npts - s->nbodies;
-    char particles[64];
-    if (np == 0)
-        snprintf(particles, sizeof particles, "the model has no particle");
-    else if (np == 1)
-        snprintf(particles, sizeof particles, "the particle is p1");
-    else
-        snprintf(particles, sizeof particles, "the particles are p1..p%zu", np);
-    char bodies[256] = "";
-    for (size_t i = np, at = 0; i < s->npts && at < sizeof bodies; i++)
-        at += (size_t)snprintf(bodies + at, sizeof bodies - at, "%s%s", i > np ? ", " : "; bodies: ",
-                               s->pts[i].name);
-    cli_diag_error("%s: no point '%.*s' (%s%s%s; and `origin`, the fixed origin)", opt, (int)len,
-                  name, particles, np ? ", in the order of the model's `particle` lines" : "",
-                  bodies);
+    char list[512] = "";
+    for (size_t i = 0, at = 0; i < s->npts && at < sizeof list; i++)
+        at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", i ? "; " : "", s->spts[i].name);
+    cli_diag_error("%s: no point '%.*s' (the points drawn: %s; and `origin`, the fixed origin; "
+                   "--draw chooses them)", opt, (int)len, name, list);
     return QD_EXIT_USAGE;
 }
 
@@ -314,6 +315,7 @@ static int name_springs(an_scene *s, const an_args *p) {
 
 static void scene_free(an_scene *s) {
     free(s->pts);
+    free(s->spts);
     free(s->t);
     free(s->energy);
     free(s->pos);
@@ -322,14 +324,69 @@ static void scene_free(an_scene *s) {
     free(s->traces);
 }
 
-/* The points of the model; none is bad input: there is nothing to draw. */
+/* --draw: the kinds named (particles, bodies, positions) and the points
+ * named; none given, the library's default. */
+static unsigned draw_kinds(const an_args *p, bool *by_name) {
+    unsigned which = 0;
+    *by_name = false;
+    for (size_t i = 0; i < p->ndraws; i++) {
+        const char *w = p->draws[i];
+        if (!strcmp(w, "particles"))
+            which |= QD_SCENE_PARTICLES;
+        else if (!strcmp(w, "bodies"))
+            which |= QD_SCENE_BODIES;
+        else if (!strcmp(w, "positions"))
+            which |= QD_SCENE_POSITIONS;
+        else
+            *by_name = true;
+    }
+    return *by_name ? QD_SCENE_PARTICLES | QD_SCENE_BODIES | QD_SCENE_POSITIONS : which;
+}
+
+/* Keep the points --draw names (with every kind --draw names). */
+static int keep_named(an_scene *s, const an_args *p) {
+    bool kind[3] = {0}, *keep = calloc(s->npts + 1, sizeof *keep);
+    if (!keep)
+        return QD_EXIT_FAIL;
+    for (size_t i = 0; i < p->ndraws; i++) {
+        const char *w = p->draws[i];
+        if (!strcmp(w, "particles") || !strcmp(w, "bodies") || !strcmp(w, "positions")) {
+            kind[w[0] == 'p' ? (w[1] == 'a' ? 0 : 2) : 1] = true;
+            continue;
+        }
+        size_t at;
+        if (!find_point(s, w, strlen(w), &at) || at == AN_ORIGIN) {
+            free(keep);
+            return unknown_point(s, "--draw", w, strlen(w));
+        }
+        keep[at] = true;
+    }
+    size_t n = 0;
+    for (size_t i = 0; i < s->npts; i++)
+        if (keep[i] || kind[s->spts[i].kind])
+            s->spts[n++] = s->spts[i];
+    s->npts = n;
+    free(keep);
+    return QD_EXIT_OK;
+}
+
+/* The points to draw (qd_scene_points); none is bad input. */
 static int scene_points(cli_sim *c, an_scene *s, const an_args *p) {
     const qd_model *m = c->mf.model;
-    s->nbodies = qd_model_nbodies(m);
-    s->npts = qd_model_nparticles(m) + s->nbodies;
+    bool by_name;
+    unsigned which = draw_kinds(p, &by_name);
+    if (qd_scene_points(c->ctx, m, which, &s->spts, &s->npts) != QD_OK)
+        return cli_diag_ctx(c->ctx);
+    int rc = by_name ? keep_named(s, p) : QD_EXIT_OK;
+    if (rc != QD_EXIT_OK)
+        return rc;
+    s->nbodies = 0;
+    for (size_t i = 0; i < s->npts; i++)
+        s->nbodies += s->spts[i].kind == QD_SCENE_BODY;
     if (!s->npts) {
-        cli_diag_error("%s: nothing to draw: the model has no `particle` or `body` (animate "
-                      "draws those; a model given only by T, V or L has no positions)", p->a.file);
+        cli_diag_error("%s: nothing to draw: the model has no `particle`, `body` or named "
+                       "position (x1 = ..., y1 = ... or a vector P1 = (x, y, z)); a model given "
+                       "only by T, V or L in its coordinates has no positions", p->a.file);
         return QD_EXIT_USAGE;
     }
     /* springs named plus at most a rod per pair, the origin included */
@@ -338,7 +395,7 @@ static int scene_points(cli_sim *c, an_scene *s, const an_args *p) {
     s->links = malloc((maxlinks + 1) * sizeof *s->links);
     if (!s->pts || !s->links)
         return QD_EXIT_FAIL;
-    int rc = add_point_outputs(c, s);
+    rc = add_point_outputs(c, s);
     if (rc == QD_EXIT_OK)
         rc = name_traces(s, p);
     if (rc == QD_EXIT_OK)
@@ -362,6 +419,10 @@ int cli_cmd_animate(int argc, char **argv) {
     int rc = cli_file_args(argc, argv, "animate", usage_text, &p.a.file, parse_option, &p);
     if (rc == QD_EXIT_OK && !p.html) {
         cli_diag_error("-o FILE.html is missing\n%s", usage_text);
+        rc = QD_EXIT_USAGE;
+    } else if (rc == QD_EXIT_OK && p.a.output) {
+        cli_diag_error("--output is simulate's: it adds columns to its rows; animate writes "
+                       "its page with -o FILE.html");
         rc = QD_EXIT_USAGE;
     } else if (rc == QD_EXIT_OK && p.a.out) {
         /* shared with simulate, where it takes the rows: here it would be ignored */

@@ -143,6 +143,12 @@ int cli_cmd_poincare(int argc, char **argv) {
                        "--phase, not --plot-y");
         rc = QD_EXIT_USAGE;
     }
+    if (rc == QD_EXIT_OK && (p.a.nevents || p.a.output)) {
+        /* shared with simulate; a section's rows are the crossings alone */
+        cli_diag_error("poincare takes its crossings from --section: %s is simulate's",
+                       p.a.output ? "--output" : "--event or --stop-at");
+        rc = QD_EXIT_USAGE;
+    }
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&p.a.plot, "poincare");
     if (rc != QD_EXIT_OK)

@@ -38,7 +38,8 @@ static const char usage_text[] =
     "[--event \"EXPR = 0, EXPR > 0\"]... "
     "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
     "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
-    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q]] "
+    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q] [--title TEXT] "
+    "[--xlabel TEXT] [--ylabel \"TEXT; TEXT\"] [--size WxH]] "
     "[--variational [columns]] [--period T]";
 
 /* --variational (flow.c through qdot/lyapunov.h): after the run, the flow
@@ -116,7 +117,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     if (cli_sim_took_option(argc, argv, i, a, &rc))
         return rc;
     const char *v;
-    bool stop;
     if (!strcmp(argv[*i], "--variational")) {
         sa->variational = 1;
         if (*i + 1 < argc && (!strcmp(argv[*i + 1], "columns") || !strcmp(argv[*i + 1], "matrix")))
@@ -139,21 +139,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
             return QD_EXIT_USAGE;
         }
         a->json = !strcmp(v, "json");
-    } else if ((v = cli_value(argc, argv, i, "--output"))) {
-        a->output = v;
-    } else if ((v = cli_value(argc, argv, i, "--about"))) {
-        return cli_once("--about", &a->about, v);
-    } else if ((v = cli_value(argc, argv, i, "--lqr"))) {
-        return cli_once("--lqr", &a->lqr, v);
-    } else if ((stop = !strncmp(argv[*i], "--stop-at", 9), 0) ||
-               (v = cli_value(argc, argv, i, "--event")) ||
-               (v = cli_value(argc, argv, i, "--stop-at"))) {
-        if (a->nevents == QD_SIM_MAX_LIST) {
-            cli_diag_error("at most %d events", QD_SIM_MAX_LIST);
-            return QD_EXIT_USAGE;
-        }
-        a->event_stop[a->nevents] = stop;
-        a->events[a->nevents++] = v;
     } else if ((rc = cli_plot_option(argc, argv, i, &a->plot))) {
         return rc > 100 ? rc - 100 : QD_EXIT_OK;
     } else {
@@ -559,8 +544,11 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
         free(line);
         return QD_EXIT_USAGE;
     }
-    /* a step can span a swing: without --dt a plot samples the dense output */
-    if (a->plot.file && !a->has_dt && qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
+    /* a step can span a swing: without --dt a picture alone samples the
+     * dense output; rows written (--out, --format json) are never changed
+     * by --plot, which then draws those rows (issue 36) */
+    if (a->plot.file && !a->out && !a->json && !a->has_dt &&
+        qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
         c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     sim_out o = {.ncols = ncols,
                  .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0 ||

@@ -22,17 +22,50 @@ int cli_plot_option(int argc, char **argv, int *i, cli_plot_args *a) {
         rc = cli_once("--plot-y", &a->ycols, v);
     else if ((v = cli_value(argc, argv, i, "--phase")))
         rc = cli_once("--phase", &a->phase, v);
+    else if ((v = cli_value(argc, argv, i, "--title")))
+        rc = cli_once("--title", &a->title, v);
+    else if ((v = cli_value(argc, argv, i, "--xlabel")))
+        rc = cli_once("--xlabel", &a->xlabel, v);
+    else if ((v = cli_value(argc, argv, i, "--ylabel")))
+        rc = cli_once("--ylabel", &a->ylabel, v);
+    else if ((v = cli_value(argc, argv, i, "--size")))
+        rc = cli_once("--size", &a->size, v);
     else
         return 0;
     return rc == QD_EXIT_OK ? 1 : rc + 100;
 }
 
-int cli_plot_check(const cli_plot_args *a, const char *cmd) {
-    if (!a->file && (a->ycols || a->phase)) {
-        cli_diag_error("%s says what to plot: give the file with --plot FILE.png|.svg|.pdf",
-                       a->ycols ? "--plot-y" : "--phase");
+/* --size WxH: two whole numbers of pixels, 100 to 10000 each. */
+static int read_size(cli_plot_args *a) {
+    char *end;
+    long w = strtol(a->size, &end, 10), h = 0;
+    bool ok = end != a->size && (*end == 'x' || *end == 'X');
+    if (ok) {
+        const char *hs = end + 1;
+        h = strtol(hs, &end, 10);
+        ok = end != hs && !*end;
+    }
+    if (!ok || w < 100 || h < 100 || w > 10000 || h > 10000) {
+        cli_diag_error("--size takes WxH in pixels (100 to 10000 each), e.g. 1200x800, not '%s'",
+                       a->size);
         return QD_EXIT_USAGE;
     }
+    a->width = (int)w;
+    a->height = (int)h;
+    return QD_EXIT_OK;
+}
+
+int cli_plot_check(cli_plot_args *a, const char *cmd) {
+    const char *shape = a->ycols ? "--plot-y" : a->phase ? "--phase" : a->title ? "--title"
+                        : a->xlabel ? "--xlabel" : a->ylabel ? "--ylabel" : a->size ? "--size"
+                        : NULL;
+    if (!a->file && shape) {
+        cli_diag_error("%s says how to plot: give the file with --plot FILE.png|.svg|.pdf",
+                       shape);
+        return QD_EXIT_USAGE;
+    }
+    if (a->size && read_size(a) != QD_EXIT_OK)
+        return QD_EXIT_USAGE;
     if (a->ycols && a->phase) {
         cli_diag_error("%s: --plot-y (against t) and --phase (q' against q) are two kinds of "
                        "plot; give one", cmd);
@@ -186,12 +219,21 @@ static qd_status add_series(qd_plot *p, const cli_plot_pick *pk, const cli_plot_
 }
 
 /* Panel g's labels and series. */
-static qd_status fill_panel(qd_plot *p, const cli_plot_pick *pk, size_t g,
+static qd_status fill_panel(qd_plot *p, const cli_plot_args *a, const cli_plot_pick *pk, size_t g,
                             const char *const *names, const cli_plot_rows *r, bool points,
                             double *x, double *y) {
-    const char *xl = pk->x == 0 ? "t (s)" : names[pk->x];
+    const char *xl = a->xlabel ? a->xlabel : pk->x == 0 ? "t (s)" : names[pk->x];
     char yl[256];
     y_label(pk, g, names, r->ncols, yl, sizeof yl);
+    if (a->ylabel) { /* the g-th of "A; B; C" (the last one for the panels after it) */
+        const char *at = a->ylabel, *semi;
+        for (size_t k = 0; k < g && (semi = strchr(at, ';')); k++)
+            at = semi + 1;
+        while (*at == ' ')
+            at++;
+        semi = strchr(at, ';');
+        snprintf(yl, sizeof yl, "%.*s", (int)(semi ? (size_t)(semi - at) : strlen(at)), at);
+    }
     qd_status st = qd_plot_select(p, g);
     if (st == QD_OK)
         st = qd_plot_set_xlabel(p, xl);
@@ -209,11 +251,11 @@ static qd_status fill_panel(qd_plot *p, const cli_plot_pick *pk, size_t g,
     return st;
 }
 
-static qd_status fill(qd_plot *p, const cli_plot_pick *pk, const char *const *names,
+static qd_status fill(qd_plot *p, const cli_plot_args *a, const cli_plot_pick *pk, const char *const *names,
                       const cli_plot_rows *r, bool points, double *x, double *y) {
     qd_status st = pk->npanels > 1 ? qd_plot_panels(p, pk->npanels, 1) : QD_OK;
     for (size_t g = 0; g < pk->npanels && st == QD_OK; g++)
-        st = fill_panel(p, pk, g, names, r, points, x, y);
+        st = fill_panel(p, a, pk, g, names, r, points, x, y);
     return st;
 }
 
@@ -231,11 +273,20 @@ int cli_plot_write_run(qd_ctx *ctx, const cli_plot_args *a, const cli_plot_pick 
     double *x = malloc(r->n * sizeof *x), *y = malloc(r->n * sizeof *y);
     /* one panel: 800 x 500; stacked panels 280 high each, under the title */
     int height = pk->npanels > 1 ? 40 + 280 * (int)pk->npanels : 0;
-    qd_plot *p = x && y ? qd_plot_new(ctx, height ? 800 : 0, height) : NULL;
+    int width = height ? 800 : 0;
+    if (a->width) {
+        width = a->width;
+        height = a->height;
+    }
+    qd_plot *p = x && y ? qd_plot_new(ctx, width, height) : NULL;
     const char *slash = strrchr(title, '/');
-    qd_status st = p ? qd_plot_set_title(p, slash ? slash + 1 : title) : QD_ERR_NOMEM;
+    if (a->title)
+        title = a->title;
+    else if (slash)
+        title = slash + 1;
+    qd_status st = p ? qd_plot_set_title(p, title) : QD_ERR_NOMEM;
     if (st == QD_OK)
-        st = fill(p, pk, names, r, points, x, y);
+        st = fill(p, a, pk, names, r, points, x, y);
     if (st == QD_OK)
         st = qd_plot_write(p, a->file);
     for (size_t g = 0; st == QD_OK && range && g < pk->npanels; g++)

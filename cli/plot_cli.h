@@ -15,6 +15,11 @@ typedef struct cli_plot_args {
     const char *ycols;  /* --plot-y "NAME, NAME; NAME": columns against t (energy_error
                          * too), a panel for each group between semicolons */
     const char *phase;  /* --phase Q: Q' against Q */
+    const char *title;  /* --title TEXT: else the model file's name */
+    const char *xlabel; /* --xlabel TEXT: every panel's x axis */
+    const char *ylabel; /* --ylabel "A; B": each panel's y axis, between semicolons */
+    const char *size;   /* --size WxH in pixels, read by cli_plot_check */
+    int width, height;  /* from --size, or 0: the default */
 } cli_plot_args;
 
 /* One --plot option at argv[*i]: 1 taken, 0 not one, or an exit status +
@@ -23,7 +28,7 @@ int cli_plot_option(int argc, char **argv, int *i, cli_plot_args *a);
 
 /* The options together, before any work: --plot-y or --phase without
  * --plot, both at once, an unknown extension.  Exit status. */
-int cli_plot_check(const cli_plot_args *a, const char *cmd);
+int cli_plot_check(cli_plot_args *a, const char *cmd);
 
 /* The rows of a run (every column), as the sink receives them. */
 typedef struct cli_plot_rows {

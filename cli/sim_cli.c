@@ -147,6 +147,25 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
         a->out = v;
         return 1;
     }
+    if ((v = cli_value(argc, argv, i, "--output"))) {
+        a->output = v;
+        return 1;
+    }
+    /* --input "F = lqr": the operating point and the weights */
+    if ((v = cli_value(argc, argv, i, "--about")))
+        return cli_once("--about", &a->about, v) == QD_EXIT_OK ? 1 : QD_EXIT_USAGE + 100;
+    if ((v = cli_value(argc, argv, i, "--lqr")))
+        return cli_once("--lqr", &a->lqr, v) == QD_EXIT_OK ? 1 : QD_EXIT_USAGE + 100;
+    bool stop = !strncmp(argv[*i], "--stop-at", 9);
+    if ((v = cli_value(argc, argv, i, "--event")) || (v = cli_value(argc, argv, i, "--stop-at"))) {
+        if (a->nevents == QD_SIM_MAX_LIST) {
+            cli_diag_error("at most %d events", QD_SIM_MAX_LIST);
+            return QD_EXIT_USAGE + 100;
+        }
+        a->event_stop[a->nevents] = stop;
+        a->events[a->nevents++] = v;
+        return 1;
+    }
     *i = save;
     return 0;
 }

@@ -31,6 +31,7 @@
 #include "plot.h"
 #include "sweep.h"
 #include "lyapunov.h"
+#include "scene.h"
 #include "metric.h"
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
 #include "relativity.h" /* issue 35: Lorentz kinematics, collisions */

@@ -198,6 +198,24 @@ class SimStats(Structure):
                 ("initial_moved_q", c_double), ("initial_moved_qd", c_double)] + _TAIL
 
 
+class ScenePoint(Structure):
+    """qd_scene_point (qdot/scene.h)."""
+    # an array C returns: no tail, the stride is C's
+    _fields_ = [("name", c_char * 96), ("kind", c_int), ("mass", Expr), ("pos", Expr * 3),
+                ("comp", (c_char * 32) * 3)]
+
+
+class SceneRod(Structure):
+    """qd_scene_rod (qdot/scene.h)."""
+    _fields_ = [("a", c_size_t), ("b", c_size_t), ("length", c_double)]
+
+
+class SceneShape(Structure):
+    """qd_scene_shape (qdot/scene.h)."""
+    _fields_ = [("plane", c_int * 2), ("lo", c_double * 3), ("hi", c_double * 3),
+                ("scale", c_double), ("rods", POINTER(SceneRod)), ("nrods", c_size_t)] + _TAIL
+
+
 class StateSpace(Structure):
     """qd_statespace (qdot/statespace.h)."""
     _fields_ = [("n", c_size_t), ("nx", c_size_t), ("nu", c_size_t), ("ny", c_size_t),
@@ -330,6 +348,13 @@ _PROTOS = {
     "qd_sim_check_opts": (c_int, [c_void_p, POINTER(SimOpts)]),
     "qd_sim_input_expr": (c_int, [c_void_p, c_char_p, Expr]),
     "qd_sim_input_callback": (c_int, [c_void_p, c_char_p, SimInputFn, c_void_p]),
+    # scenes (scene.h)
+    "qd_scene_points": (c_int, [c_void_p, c_void_p, c_uint, POINTER(POINTER(ScenePoint)),
+                                POINTER(c_size_t)]),
+    "qd_scene_points_free": (None, [POINTER(ScenePoint)]),
+    "qd_scene_analyse": (c_int, [c_void_p, DBL, c_size_t, c_size_t, POINTER(c_size_t), c_size_t,
+                                 POINTER(SceneShape)]),
+    "qd_scene_shape_free": (None, [POINTER(SceneShape)]),
     "qd_sim_run": (c_int, [c_void_p, POINTER(SimOpts), SimSink, c_void_p, POINTER(SimStats),
                            DBL]),
 }

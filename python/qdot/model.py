@@ -6,12 +6,13 @@
 # C and Python and frees what the C calls allocate.
 """qdot.Model and the symbolic results it returns."""
 
+import ctypes
 from ctypes import byref
 
 import numpy as np
 
 from ._core import Core, Error, ModelError, name_of
-from ._lib import (lib, EquilibriaOut, EquilibriumChoice, Linear, ModesResult, exprs,
+from ._lib import (lib, ScenePoint, SceneShape, EquilibriaOut, EquilibriumChoice, Linear, ModesResult, exprs,
                    doubles, QD_FMT_SYMPY)
 from . import sim as _sim
 from . import control as _control
@@ -360,6 +361,47 @@ class Model:
         and "t"; names not given are 0; values are numbers or exact text
         ("pi", "1/2").  Models whose equations keep multipliers are refused."""
         return _control.linearize(self._core, about or {})
+
+    def scene(self, which=0):
+        """The points a picture of the motion draws (qd_scene_points,
+        qdot/scene.h): a list of dicts {name, kind ("particle", "body" or
+        "position"), position: three expression texts}.  which: 0 the
+        default (particles and bodies, else the named positions x1,y1 or
+        P1), or a sum of 1 particles, 2 bodies, 4 named positions."""
+        core = self._core
+        pts = ctypes.POINTER(ScenePoint)()
+        n = ctypes.c_size_t()
+        core.check(lib.qd_scene_points(core.ctx, core.model, which, byref(pts), byref(n)))
+        try:
+            kinds = ("particle", "body", "position")
+            return [{"name": pts[i].name.decode(), "kind": kinds[pts[i].kind],
+                     "position": [core.text_of(pts[i].pos[k]) for k in range(3)]}
+                    for i in range(n.value)]
+        finally:
+            lib.qd_scene_points_free(pts)
+
+    @staticmethod
+    def scene_shape(positions):
+        """The plane, bounding box and rods of sampled places
+        (qd_scene_analyse): positions[frame][point] = (x, y, z).  Returns
+        {plane: (u, v) or None for 3-D, lo, hi, rods: [(a, b, length)]}, a
+        rod's end -1 for the origin."""
+        arr = np.ascontiguousarray(positions, dtype=float)
+        if arr.ndim != 3 or arr.shape[2] != 3:
+            raise Error("scene_shape: positions[frame][point] = (x, y, z)")
+        sh = SceneShape()
+        st = lib.qd_scene_analyse(None, arr.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
+                                  arr.shape[0], arr.shape[1], None, 0, byref(sh))
+        try:
+            if st != 0:
+                raise Error("scene_shape: %s" % lib.qd_status_str(st).decode())
+            end = lambda i: -1 if i == ctypes.c_size_t(-1).value else i  # noqa: E731
+            return {"plane": None if sh.plane[0] < 0 else (sh.plane[0], sh.plane[1]),
+                    "lo": list(sh.lo), "hi": list(sh.hi),
+                    "rods": [(end(sh.rods[k].a), end(sh.rods[k].b), sh.rods[k].length)
+                             for k in range(sh.nrods)]}
+        finally:
+            lib.qd_scene_shape_free(byref(sh))
 
     def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
                  events=(), stop_at=None, outputs=(), max_steps=0, speeds=True, inputs=None):

@@ -51,6 +51,8 @@ NULLABLE = {
     'qd_linearize': {'syms', 'vals'},
     'qd_flow_run': {'fo'},
     'qd_lyap_run': {'err'},
+    'qd_scene_points': {'ctx'},
+    'qd_scene_analyse': {'ctx', 'skip'},
     'qd_lyap_run_stats': {'err', 'stats'},
     'qd_model_add_statement': {'diag'},
     'qd_model_parse': {'diag'},

@@ -42,6 +42,7 @@
 #include "qdot/relativity.h"
 #include "qdot/routh.h"
 #include "qdot/scatter.h"
+#include "qdot/scene.h"
 #include "qdot/sim.h"
 #include "qdot/speeds.h"
 #include "qdot/stability.h"
@@ -3190,6 +3191,46 @@ static void null_scatter(void **state)
     teardown(&F);
 }
 
+static void null_scene(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_scene_points */
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_points(F.ctx, NULL, 1, NULL, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_points(F.ctx, F.model, 1, NULL, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_points(F.ctx, F.model, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scene_points_free */
+    /* pts NULL */
+    qd_scene_points_free(NULL);
+    reset(&F);
+    /* ---- qd_scene_point_is */
+    /* p NULL */
+    assert_true(qd_scene_point_is(NULL, "q", 1) == 0);
+    reset(&F);
+    /* name NULL */
+    assert_true(qd_scene_point_is(NULL, NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_scene_analyse */
+    /* pos NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_analyse(F.ctx, NULL, 1, 1, F.z, 1, (qd_scene_shape *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_analyse(F.ctx, F.d, 1, 1, F.z, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_shape_free */
+    /* s NULL */
+    qd_scene_shape_free(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_sim(void **state)
 {
     (void)state;
@@ -3902,6 +3943,7 @@ int main(void)
         cmocka_unit_test(null_relativity),
         cmocka_unit_test(null_routh),
         cmocka_unit_test(null_scatter),
+        cmocka_unit_test(null_scene),
         cmocka_unit_test(null_sim),
         cmocka_unit_test(null_speeds),
         cmocka_unit_test(null_stability),

@@ -125,7 +125,7 @@ def main():
     # bad input: exit 2 with a message, no page
     rc, _, err = run(qdot, 'animate', DP, '--t-end', 1)
     check(rc == 2 and '-o FILE.html is missing' in err, f'no -o: {rc} {err}')
-    rc, _, err = run(qdot, 'animate', EX / 'double_pendulum.qd', '-o', tmp / 'none.html')
+    rc, _, err = run(qdot, 'animate', EX / 'damped_oscillator.qd', '-o', tmp / 'none.html')
     check(rc == 2 and 'nothing to draw' in err and not (tmp / 'none.html').exists(),
           f'model without particles: {rc} {err}')
     rc, _, err = run(qdot, 'animate', DP, '--trace', 'p9', '-o', tmp / 'none.html')
