@@ -742,6 +742,7 @@ static const struct stmt_kw {
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
     {"friction", qd__mdl_stmt_friction, true},
+    {"field", qd__mdl_stmt_field, true},        {"boundary", qd__mdl_stmt_boundary, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -796,6 +797,8 @@ bool qd__mdl_statement(parser *p) {
         return kw->parse(p);
     if (qd__lex_is(lx, "H") && next == TK_EQ)
         return qd__mdl_stmt_hamiltonian(p);
+    if (qd__lex_is(lx, "Ldensity") && next == TK_EQ && p->m->field)
+        return qd__mdl_stmt_ldensity(p);
     if (next == TK_EQ)
         return stmt_definition(p);
     if (next == TK_LBRACK && qd__lex_is(lx, "Q"))
@@ -809,6 +812,8 @@ bool qd__mdl_statement(parser *p) {
 bool qd__mdl_finish(parser *p) {
     qd_model *m = p->m;
     qd_ctx *ctx = C(p);
+    if (m->field || p->field_ok)
+        return qd__mdl_field_finish(p);
     if (m->ncoords == 0)
         return qd__mdl_perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
     if (!qd__mdl_check_integrals(p) || !qd__mdl_friction_finish(p))
