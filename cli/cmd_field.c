@@ -211,6 +211,20 @@ static void modes_json(qd_ctx *ctx, const qd_field *f, const qd_field_modes *r, 
     cli_json_end_object(j);
 }
 
+/* The library's reason, shown at the Ldensity statement (a bad input: 2). */
+static int density_error(qd_ctx *ctx, const cli_model_file *mf) {
+    if (qd_ctx_status(ctx) != QD_ERR_ARG)
+        return cli_diag_ctx(ctx);
+    qd_diag d;
+    if (!qd_model_where(qd_field_model(mf->field), "Ldensity", &d))
+        return cli_diag_ctx(ctx);
+    snprintf(d.message, sizeof d.message, "%s", qd_ctx_message(ctx));
+    snprintf(d.hint, sizeof d.hint, "the modes need Ldensity = rho/2*y_t^2 - tau/2*y_x^2 "
+             "- kappa/2*y^2 with rho, tau, kappa functions of the space variable");
+    cli_diag_show(mf->path, mf->text, &d);
+    return QD_EXIT_USAGE;
+}
+
 int cli_field_modes(const char *file, size_t nsets, const char *const *sets, size_t count,
                     double tol, bool json) {
     qd_ctx *ctx = qd_ctx_new();
@@ -223,11 +237,11 @@ int cli_field_modes(const char *file, size_t nsets, const char *const *sets, siz
     int rc = cli_load_field(ctx, file, nsets, sets, &mf);
     qd_field_modes_opts o = {.count = count, .tol = tol};
     if (rc == QD_EXIT_OK && qd_field_modes_compute(ctx, mf.field, &o, &r) != QD_OK)
-        rc = cli_diag_ctx(ctx);
+        rc = density_error(ctx, &mf);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
         cli_json j;
-        double t = tol > 0 ? tol : 1e-8;
+        double t = tol > 0 ? tol : 1e-6;
         if (json) {
             cli_json_init(&j, &b);
             modes_json(ctx, mf.field, &r, t, &j);

@@ -21,9 +21,11 @@
  * (Galerkin, consistent mass, 3-point Gauss quadrature) on N, 2N, 4N, ...
  * elements give omega^2 = omega_h^2 + O(h^2); Richardson's extrapolation
  * (4 w_2N - w_N)/3 removes the h^2 term, and the error estimate is the
- * difference of two successive extrapolations.  N doubles until every
- * requested mode's estimate is below tol * omega (or the largest N is met:
- * then the result says it did not converge).
+ * difference of two successive extrapolations plus the rounding of the
+ * eigenvalue solver (eps times the largest eigenvalue, which grows as 1/h^2).
+ * N doubles until every requested mode's estimate is below tol * omega; when
+ * refining makes the estimates worse, or the largest N is met, the best
+ * level is kept and the result says it did not converge.
  */
 #ifndef QDOT_FIELD_H
 #define QDOT_FIELD_H
@@ -49,6 +51,9 @@ QD_API qd_field *qd_field_parse(qd_ctx *ctx, const char *text, const qd_model_op
                                 qd_diag *diag);
 QD_API void qd_field_free(qd_field *f);
 
+/* The model the statements filled (for qd_model_where: "field",
+ * "Ldensity", "boundary"); it has no coordinates. */
+QD_API const qd_model *qd_field_model(const qd_field *f);
 QD_API const char *qd_field_name(const qd_field *f);       /* "y" */
 QD_API const char *qd_field_space(const qd_field *f);      /* "x" */
 QD_API const qd_expr *qd_field_density(const qd_field *f); /* as written */
@@ -71,7 +76,7 @@ typedef struct qd_field_mode {
 
 typedef struct qd_field_modes_opts {
     size_t count;          /* modes wanted; 0: 5 */
-    double tol;            /* relative; 0: 1e-8 */
+    double tol;            /* relative; 0: 1e-6 */
     size_t max_elements;   /* 0: 16384 */
 } qd_field_modes_opts;
 

@@ -12,6 +12,7 @@
 #include "../base/mem.h"
 #include "../base/args.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -24,15 +25,22 @@ extern void dsbgv_(const char *jobz, const char *uplo, const int *n, const int *
                    const int *kb, double *ab, const int *ldab, double *bb, const int *ldbb,
                    double *w, double *z, const int *ldz, double *work, int *info);
 
-static const qd_expr *jet(qd_ctx *ctx, const qd__field *f, const char *suffix) {
-    char name[QD_MDL_NAME_MAX + 4];
-    snprintf(name, sizeof name, "%s_%s", f->name, suffix);
+/* NAME_tt, NAME_xt, NAME_xx for the field NAME in the space variable x:
+ * which counts the x's (0, 1, 2). */
+static const qd_expr *jet(qd_ctx *ctx, const qd__field *f, int which) {
+    char name[3 * QD_MDL_NAME_MAX + 8];
+    if (which == 0)
+        snprintf(name, sizeof name, "%s_tt", f->name);
+    else if (which == 1)
+        snprintf(name, sizeof name, "%s_%st", f->name, f->space);
+    else
+        snprintf(name, sizeof name, "%s_%s%s", f->name, f->space, f->space);
     return qd_symbol(ctx, name);
 }
 
 /* d/dt or d/dx (along = 't' or 'x') of g(x, t, y, y_t, y_x). */
 static const qd_expr *total(qd_ctx *ctx, const qd__field *f, const qd_expr *g, char along) {
-    const qd_expr *ytt = jet(ctx, f, "tt"), *yxt = jet(ctx, f, "xt"), *yxx = jet(ctx, f, "xx");
+    const qd_expr *ytt = jet(ctx, f, 0), *yxt = jet(ctx, f, 1), *yxx = jet(ctx, f, 2);
     bool t = along == 't';
     const qd_expr *terms[4] = {
         qd_diff(ctx, g, t ? qd_time(ctx) : f->x),
@@ -135,7 +143,7 @@ static qd_status coef_at(qd_ctx *ctx, const qd__field *f, const qd_expr *c, doub
 
 /* The lowest nw eigenvalues of K Y = lam M Y on ne elements. */
 static qd_status fe_level(qd_ctx *ctx, const qd__field *f, const qd_field_modes *r, size_t ne,
-                          size_t nw, double *lam) {
+                          size_t nw, double *lam, double *lam_max) {
     static const double gs[3] = {-0.7745966692414834, 0, 0.7745966692414834};
     static const double gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
     double a = qd_number_value(f->ends[0]), h = (qd_number_value(f->ends[1]) - a) / (double)ne;
@@ -174,6 +182,9 @@ static qd_status fe_level(qd_ctx *ctx, const qd__field *f, const qd_field_modes 
     if (st == QD_OK && !work)
         st = QD_ERR_NOMEM;
     if (st == QD_OK) {
+        *lam_max = 0; /* about the largest eigenvalue: 4 max K_ii/M_ii (12/h^2 c^2 uniform) */
+        for (size_t g = 0; g < nn; g++)
+            *lam_max = fmax(*lam_max, 4 * fabs(kd[g]) / md[g]);
         for (int j = 0; j < n; j++) {
             size_t g = i0 + (size_t)j;
             ab[2 * j + 1] = kd[g];
@@ -195,39 +206,73 @@ static qd_status fe_level(qd_ctx *ctx, const qd__field *f, const qd_field_modes 
 
 static double root(double lam) { return lam >= 0 ? sqrt(lam) : -sqrt(-lam); }
 
+/* The worst error estimate relative to its omega (modes near 0 against the
+ * largest one). */
+static double worst(const qd_field_modes *r) {
+    double scale = fabs(r->mode[r->n - 1].omega), q = 0;
+    for (size_t i = 0; i < r->n; i++) {
+        const qd_field_mode *md = &r->mode[i];
+        q = fmax(q, md->error / fmax(fabs(md->omega), 1e-6 * scale));
+    }
+    return isnan(q) ? INFINITY : q;
+}
+
+/* N, 2N, 4N, ... elements until the estimates are below tol; when refining
+ * makes them worse (rounding has taken over), the best level is kept. */
 static qd_status discretized(qd_ctx *ctx, const qd__field *f, const qd_field_modes_opts *o,
                              qd_field_modes *r) {
     size_t nw = r->n, ne = 8 * nw > 32 ? 8 * nw : 32;
     double *lam = qd__calloc(ctx, 4 * nw, sizeof *lam);
-    if (!lam)
+    qd_field_mode *best = qd__calloc(ctx, nw, sizeof *best);
+    if (!lam || !best) {
+        qd__free(lam);
+        qd__free(best);
         return QD_ERR_NOMEM;
+    }
     double *prev = lam + nw, *cur = lam + 2 * nw, *rprev = lam + 3 * nw;
+    double best_q = INFINITY;
+    size_t best_ne = 0;
     qd_status st = QD_OK;
-    for (int level = 0; st == QD_OK; level++, ne *= 2) {
-        if (ne > o->max_elements)
+    for (int level = 0; st == QD_OK && ne <= o->max_elements; level++, ne *= 2) {
+        double lam_max;
+        if ((st = fe_level(ctx, f, r, ne, nw, cur, &lam_max)) != QD_OK)
             break;
-        if ((st = fe_level(ctx, f, r, ne, nw, cur)) != QD_OK)
-            break;
-        r->elements = ne;
-        bool done = level >= 2;
+        /* rounding: dsbgv's eigenvalues are good to about eps ||K|| ~ eps lam_max,
+         * which grows as 1/h^2 while the truncation falls as h^4 */
+        double dlam = DBL_EPSILON * lam_max;
         for (size_t i = 0; i < nw; i++) {
             double rich = level ? (4 * cur[i] - prev[i]) / 3 : cur[i];
             qd_field_mode *md = &r->mode[i];
             md->omega2 = rich;
             md->omega = rich >= 0 ? sqrt(rich) : NAN;
-            md->error = level >= 2 ? fabs(root(rich) - root(rprev[i])) : INFINITY;
+            double w = fabs(root(rich));
+            double round = w > 0 ? fmin(dlam / (2 * w), sqrt(dlam)) : sqrt(dlam);
+            md->error = level >= 2 ? fabs(root(rich) - root(rprev[i])) + round : INFINITY;
             md->shape = QD_FIELD_SHAPE_NONE;
-            double scale = fabs(root(cur[nw - 1]));
-            if (!(md->error <= o->tol * fmax(fabs(root(rich)), 1e-6 * scale)))
-                done = false;
             rprev[i] = rich;
             prev[i] = cur[i];
         }
-        if (done) {
-            r->converged = true;
-            break;
+        if (level < 2)
+            continue;
+        double q = worst(r);
+        if (q < best_q) {
+            best_q = q;
+            best_ne = ne;
+            memcpy(best, r->mode, nw * sizeof *best);
         }
+        if (q <= o->tol || q > 4 * best_q)
+            break;
     }
+    if (st == QD_OK && best_ne) {
+        memcpy(r->mode, best, nw * sizeof *best);
+        r->elements = best_ne;
+        r->converged = best_q <= o->tol;
+    } else if (st == QD_OK) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the largest mesh allowed (%zu elements) is too small for "
+                     "an error estimate", o->max_elements);
+        st = QD_ERR_ARG;
+    }
+    qd__free(best);
     qd__free(lam);
     return st;
 }
@@ -240,7 +285,7 @@ qd_status qd_field_modes_compute(qd_ctx *ctx, const qd_field *fld, const qd_fiel
     if (!o.count)
         o.count = 5;
     if (!(o.tol > 0))
-        o.tol = 1e-8;
+        o.tol = 1e-6;
     if (!o.max_elements)
         o.max_elements = 16384;
     if (o.count > 1000) {

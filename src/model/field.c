@@ -57,8 +57,8 @@ static bool define(parser *p, const char *name, const qd_expr *sym, size_t off, 
 
 static const char usage[] = "write: field y(x, t) on x = 0 .. l";
 
-/* A .. B: the lower end is read with '.' ending the expression ("0..l"
- * lexes as the number "0." and a '.'). */
+/* A .. B: the lower end is read with '.' ending the expression (not a
+ * component); "0..l" lexes as 0, '.', '.', l. */
 static bool read_interval(parser *p, qd__field *f) {
     const qd_expr *def;
     p->no_dot = true;
@@ -66,15 +66,11 @@ static bool read_interval(parser *p, qd__field *f) {
     p->no_dot = false;
     if (!ok)
         return false;
-    size_t dot = p->lx.tok.off;
-    if (p->lx.tok.kind != TK_DOT)
-        return qd__mdl_perr_tok(p, usage, "expected '..' between the interval's ends");
-    qd__lex_next(&p->lx);
-    bool number_dot = dot > 0 && p->lx.src[dot - 1] == '.';
-    if (p->lx.tok.kind == TK_DOT)
+    for (int k = 0; k < 2; k++) {
+        if (p->lx.tok.kind != TK_DOT)
+            return qd__mdl_perr_tok(p, usage, "expected '..' between the interval's ends");
         qd__lex_next(&p->lx);
-    else if (!number_dot)
-        return qd__mdl_perr(p, dot, 1, usage, "expected '..' between the interval's ends");
+    }
     size_t off = p->lx.tok.off;
     if (!qd__mdl_parse_constant(p, &def, &f->ends[1], "the interval's upper end"))
         return false;
@@ -136,7 +132,7 @@ bool qd__mdl_stmt_field(parser *p) {
     qd__lex_next(&p->lx);
     if (!expect(p, TK_EQ, usage) || !read_interval(p, f))
         return false;
-    char name[QD_MDL_NAME_MAX + 3];
+    char name[2 * QD_MDL_NAME_MAX + 2];
     qd_ctx *ctx = C(p);
     f->x = qd_symbol(ctx, f->space);
     f->y = qd_symbol(ctx, f->name);
@@ -144,7 +140,7 @@ bool qd__mdl_stmt_field(parser *p) {
     f->yt = qd_symbol(ctx, name);
     bool ok = define(p, f->space, f->x, xt.off, xt.len) && define(p, f->name, f->y, yt.off, yt.len) &&
               define(p, name, f->yt, yt.off, yt.len);
-    snprintf(name, sizeof name, "%s_x", f->name);
+    snprintf(name, sizeof name, "%s_%s", f->name, f->space);
     f->yx = qd_symbol(ctx, name);
     ok = ok && define(p, name, f->yx, yt.off, yt.len);
     if (ok && !qd__mdl_add_where(m, "field", kw, p->lx.tok.off - kw))
@@ -343,6 +339,11 @@ qd_status qd_field_interval(const qd_field *f, double *a, double *b) {
 qd_field_end qd_field_boundary(const qd_field *f, int end) {
     QD_ARGS(QD_FIELD_FIXED, f && (end == 0 || end == 1));
     return (qd_field_end)f->m->field->bc[end];
+}
+
+const qd_model *qd_field_model(const qd_field *f) {
+    QD_ARGS(NULL, f);
+    return f->m;
 }
 
 /* For src/field: the symbols. */
