@@ -58,7 +58,7 @@ const qd_expr *qd_field_equation(qd_ctx *ctx, const qd_field *fld) {
     const qd_expr *e = qd_add(ctx, total(ctx, f, qd_diff(ctx, L, f->yt), 't'),
                               total(ctx, f, qd_diff(ctx, L, f->yx), 'x'));
     e = qd_sub(ctx, e, qd_diff(ctx, L, f->y));
-    return e ? qd_simplify(ctx, qd_expand(ctx, e)) : NULL;
+    return e ? qd_expand(ctx, e) : NULL;
 }
 
 /* ---- the coefficients ---------------------------------------------------- */

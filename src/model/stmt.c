@@ -738,11 +738,11 @@ static const struct stmt_kw {
     {"impulse", qd__mdl_stmt_impulse, true},    {"impact", qd__mdl_stmt_impact, true},
     {"prescribe", qd__mdl_stmt_prescribe, true}, {"speeds", qd__mdl_stmt_speeds, true},
     {"independent", qd__mdl_stmt_independent, true},
+    {"field", qd__mdl_stmt_field, true},        {"boundary", qd__mdl_stmt_boundary, true},
     {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
     {"friction", qd__mdl_stmt_friction, true},
-    {"field", qd__mdl_stmt_field, true},        {"boundary", qd__mdl_stmt_boundary, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -757,13 +757,15 @@ static bool unknown_statement(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {
         /* spaces, not commas: with the circuit statements the whole list
-         * fills the 255 bytes of a diagnostic's hint, so inputs, outputs
-         * and friction are left to "did you mean" above */
+         * fills the 255 bytes of a diagnostic's hint, so inputs, outputs,
+         * friction, field and boundary are left to "did you mean" above */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
             if (statements[i].parse != qd__mdl_stmt_inputs &&
                 statements[i].parse != qd__mdl_stmt_outputs &&
-                statements[i].parse != qd__mdl_stmt_friction)
+                statements[i].parse != qd__mdl_stmt_friction &&
+                statements[i].parse != qd__mdl_stmt_field &&
+                statements[i].parse != qd__mdl_stmt_boundary)
                 n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
             snprintf(hint + n, sizeof hint - n, ") or NAME = ...");

@@ -12,7 +12,7 @@ against the built program.
   n pi c/l with cos(n pi x/l); fixed-free (n - 1/2) pi c/l; a restoring
   term -kappa/2 y^2 adds kappa/rho to omega^2 (the field equation gets
   kappa y).  An interval not at 0 shifts the shapes.
-- The hanging chain (tau = rho g x, x up from the free lower end, fixed at
+- The hanging chain (examples/hanging_chain.qd: tau = rho g x, x up from the free lower end, fixed at
   x = l): by finite elements, omega_n = (j_0n/2) sqrt(g/l) with j_0n the
   zeros of Bessel's J0 (Lord Rayleigh; the standard result), within the
   reported error estimate (and that estimate below the tolerance).
@@ -135,10 +135,8 @@ def converged(name, j, want):
               m['error'] <= 1e-6 * w, '%r vs %r (estimate %r)' % (m['omega'], w, m['error']))
 
 
-def hanging_chain(qdot, tmp):
-    path = write(tmp, 'chain.qd', '# x up from the free lower end\n'
-                 'parameters rho = 1, g = 9.81, l = 2\nfield y(x, t) on x = 0 .. l\n'
-                 'Ldensity = rho/2*y_t^2 - rho*g*x/2*y_x^2\nboundary y(0) free, y(l) = 0\n')
+def hanging_chain(qdot):
+    path = str(EXAMPLES / 'hanging_chain.qd')
     rc, j, err = modes(qdot, path, '--count', '4')
     check('hanging chain runs', rc == 0, err)
     if rc == 0:
@@ -194,7 +192,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         string(qdot)
         free_ends(qdot, tmp)
-        hanging_chain(qdot, tmp)
+        hanging_chain(qdot)
         variable_density(qdot, tmp)
         errors(qdot, tmp)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
