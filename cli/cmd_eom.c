@@ -562,6 +562,14 @@ int cli_cmd_eom(int argc, char **argv) {
     int rc = parse_args(argc, argv, &a);
     if (rc != QD_EXIT_OK)
         return rc;
+    if (cli_model_file_is_field(a.file)) {
+        if (a.solve || a.eliminate || a.appell || a.multipliers || a.hamel_coef || a.method || a.at ||
+            (a.fmt != QD_EOM_TEXT && a.fmt != QD_EOM_JSON)) {
+            cli_diag_error("a field model takes --set and --format text|json only");
+            return QD_EXIT_USAGE;
+        }
+        return cli_field_eom(a.file, a.nsets, a.sets, a.fmt == QD_EOM_JSON);
+    }
     eom_run r = {.ctx = qd_ctx_new()};
     if (!r.ctx) {
         cli_diag_error("out of memory");

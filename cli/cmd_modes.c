@@ -42,6 +42,8 @@ typedef struct modes_args {
     bool json;
     const char *plot;  /* --plot FILE: the mode shapes drawn */
     bool symmetry;     /* --symmetry */
+    size_t count;      /* --count: a field model's number of modes */
+    double tol;        /* --tol: a field model's relative tolerance */
 } modes_args;
 
 typedef struct modes_run {
@@ -64,7 +66,8 @@ static const char usage_text[] =
     "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
     "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--scan NAME=A:B [--steps N]] "
     "[--set NAME=VALUE]... [--format text|json] [--plot FILE.png|.svg|.pdf] [--symmetry] "
-    "[--independent \"q1, ...\"]";
+    "[--independent \"q1, ...\"]\n"
+    "       qdot modes FIELDFILE [--count N] [--tol X] [--set NAME=VALUE]... [--format text|json]";
 
 static const char *const formats[] = {"text", "json", NULL};
 
@@ -107,6 +110,25 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     }
     if ((v = cli_value(argc, argv, i, "--independent")))
         return cli_once("--independent", &a->independent, v);
+    if ((v = cli_value(argc, argv, i, "--count"))) {
+        char *end;
+        long k = strtol(v, &end, 10);
+        if (*end || k < 1 || k > 1000) {
+            cli_diag_error("--count takes a number of modes from 1 to 1000, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+        a->count = (size_t)k;
+        return QD_EXIT_OK;
+    }
+    if ((v = cli_value(argc, argv, i, "--tol"))) {
+        char *end;
+        a->tol = strtod(v, &end);
+        if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1)) {
+            cli_diag_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
+            return QD_EXIT_USAGE;
+        }
+        return QD_EXIT_OK;
+    }
     if ((v = cli_value(argc, argv, i, "--initial")))
         return cli_once("--initial", &a->initial, v);
     if ((v = cli_value(argc, argv, i, "--set")))
@@ -518,6 +540,18 @@ int cli_cmd_modes(int argc, char **argv) {
     int rc = cli_file_args(argc, argv, "modes", usage_text, &a.file, parse_option, &a);
     if (rc != QD_EXIT_OK)
         return rc;
+    if (cli_model_file_is_field(a.file)) {
+        if (a.about || a.at_eq || a.initial || a.scan || a.plot || a.symmetry || a.steps) {
+            cli_diag_error("a field model takes --count, --tol, --set and --format only\n%s",
+                           usage_text);
+            return QD_EXIT_USAGE;
+        }
+        return cli_field_modes(a.file, a.nsets, a.sets, a.count, a.tol, a.json);
+    }
+    if (a.count || a.tol) {
+        cli_diag_error("--count and --tol are for a field model (`field y(x, t) on ...`)");
+        return QD_EXIT_USAGE;
+    }
     if (a.about && a.at_eq) {
         cli_diag_error("give either --at-equilibrium or --about, not both\n%s", usage_text);
         return QD_EXIT_USAGE;

@@ -53,8 +53,10 @@ int cli_bad_option(const char *arg, const char *usage) {
     return QD_EXIT_USAGE;
 }
 
-int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets, bool fix,
-             cli_model_file *mf) {
+typedef int (*file_loader)(qd_ctx *, const char *, const qd_model_opts *, cli_model_file *);
+
+static int load_with(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
+                     bool fix, cli_model_file *mf, file_loader load) {
     char names[QD_CLI_MAX_LIST][128];
     qd_param_value given[QD_CLI_MAX_LIST];
     *mf = (cli_model_file){0};
@@ -75,7 +77,17 @@ int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *set
         given[i].name = names[i];
     }
     qd_model_opts opts = {.params = given, .nparams = nsets, .fix_params = fix};
-    return cli_model_file_load_opts(ctx, file, &opts, mf);
+    return load(ctx, file, &opts, mf);
+}
+
+int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets, bool fix,
+             cli_model_file *mf) {
+    return load_with(ctx, file, nsets, sets, fix, mf, cli_model_file_load_opts);
+}
+
+int cli_load_field(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
+                   cli_model_file *mf) {
+    return load_with(ctx, file, nsets, sets, true, mf, cli_field_file_load);
 }
 
 int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,

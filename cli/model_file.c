@@ -127,6 +127,44 @@ int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts 
     return QD_EXIT_USAGE;
 }
 
+bool cli_model_file_is_field(const char *path) {
+    if (!strcmp(path, "-"))
+        return false;
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return false;
+    char *text;
+    size_t len;
+    read_end how = slurp(fp, &text, &len);
+    fclose(fp);
+    bool field = how == READ_OK && qd_field_declared(text);
+    if (how == READ_OK || how == READ_NUL)
+        free(text);
+    return field;
+}
+
+int cli_field_file_load(qd_ctx *ctx, const char *path, const qd_model_opts *opts,
+                        cli_model_file *mf) {
+    *mf = (cli_model_file){0};
+    int rc = read_text(path, mf);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_diag d;
+    memset(&d, 0, sizeof d);
+    mf->field = qd_field_parse(ctx, mf->text, opts, &d);
+    if (mf->field)
+        return QD_EXIT_OK;
+    if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+        cli_diag_error("out of memory while reading '%s'", mf->path);
+        return QD_EXIT_FAIL;
+    }
+    if (!d.located)
+        cli_diag_error("--set: %s", d.message);
+    else
+        cli_diag_show(mf->path, mf->text, &d);
+    return QD_EXIT_USAGE;
+}
+
 int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {
     return cli_model_file_load_opts(ctx, path, NULL, mf);
 }
@@ -134,6 +172,7 @@ int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {
 void cli_model_file_free(cli_model_file *mf) {
     if (mf->model)
         qd_model_free(mf->model);
+    qd_field_free(mf->field);
     free(mf->text);
     *mf = (cli_model_file){0};
 }

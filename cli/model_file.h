@@ -8,12 +8,14 @@
 #include <stdio.h>
 
 #include "qdot/model.h"
+#include "qdot/field.h"
 
 typedef struct cli_model_file {
     const char *path;  /* as given; "<stdin>" for "-" */
     char *text;        /* the whole file, NUL-terminated; the model points into it */
     size_t len;
     qd_model *model;
+    qd_field *field;   /* cli_field_file_load: the field model instead */
 } cli_model_file;
 
 /* Read and parse path ("-" is standard input).  Prints the diagnostics and
@@ -25,6 +27,14 @@ int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf);
 int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts *opts,
                              cli_model_file *mf);
 void cli_model_file_free(cli_model_file *mf);
+
+/* Does the file at path declare a field (qd_field_declared)?  false for
+ * standard input and a file that cannot be read (the model's loader then
+ * reports why). */
+bool cli_model_file_is_field(const char *path);
+/* Read and parse path as a field model (qd_field_parse) into mf->field. */
+int cli_field_file_load(qd_ctx *ctx, const char *path, const qd_model_opts *opts,
+                        cli_model_file *mf);
 
 /* An error found after parsing (a singular mass matrix), shown at the
  * statement `what` of the model (see qd_model_where) with a caret, or as a

@@ -36,6 +36,7 @@
 #include "symmetry.h"   /* issue 19: symmetry-adapted modes */
 #include "relativity.h" /* issue 35: Lorentz kinematics, collisions */
 #include "form.h"       /* issue 35: quadratic forms */
+#include "field.h"      /* issue 35: continuous systems */
 
 #define QDOT_VERSION "0.1.0"
 

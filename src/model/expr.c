@@ -540,7 +540,7 @@ static bool parse_postfix(parser *p, value *out) {
             qd__lex_next(&p->lx);
             if (!qd__mdl_kernel_ok(p, out))
                 return false;
-        } else if (p->lx.tok.kind == TK_DOT) {
+        } else if (p->lx.tok.kind == TK_DOT && !p->no_dot) {
             qd__lex_next(&p->lx);
             int k = qd__lex_is(&p->lx, "x") ? 0 : qd__lex_is(&p->lx, "y") ? 1 : qd__lex_is(&p->lx, "z") ? 2 : -1;
             if (k < 0)

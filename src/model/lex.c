@@ -45,8 +45,8 @@ static size_t number_len(const char *s) {
         i++;
         while (isdigit((unsigned char)s[i]))
             i++;
-    } else if (s[i] == '.' && i > 0 && !isalpha((unsigned char)s[i + 1])) {
-        i++; /* "2." */
+    } else if (s[i] == '.' && i > 0 && !isalpha((unsigned char)s[i + 1]) && s[i + 1] != '.') {
+        i++; /* "2." (but "0..l" is 0, '.', '.', l: a field's interval) */
     }
     if ((s[i] == 'e' || s[i] == 'E') &&
         (isdigit((unsigned char)s[i + 1]) ||
@@ -100,7 +100,8 @@ void qd__lex_next(lexer *lx) {
             n++;
         t.kind = TK_IDENT;
         t.len = n;
-    } else if (isdigit((unsigned char)*s) || (*s == '.' && isdigit((unsigned char)s[1]))) {
+    } else if (isdigit((unsigned char)*s) ||
+               (*s == '.' && isdigit((unsigned char)s[1]) && !(lx->pos > 0 && s[-1] == '.'))) {
         t.kind = TK_NUMBER;
         t.len = number_len(s);
         if (t.len == 0) /* ".5" */

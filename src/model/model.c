@@ -64,6 +64,7 @@ int qd__mdl_coord_index(const qd_model *m, const qd_expr *sym) {
 void qd_model_free(qd_model *m) {
     if (!m)
         return;
+    qd__mdl_free_field(m);
     for (size_t i = 0; i < m->ndefs; i++)
         qd__free((char *)m->defs[i].name);
     for (size_t i = 0; i < m->nfuncs; i++)

@@ -103,9 +103,8 @@ static bool check_given(parser *p, bool after) {
     return true;
 }
 
-qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
-                              qd_diag *diag) {
-    QD_ARGS(NULL, ctx && text);
+static qd_model *parse_text(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
+                            qd_diag *diag, bool field) {
     qd_model *m = qd__calloc(ctx, 1, sizeof *m);
     bool *used = opts && opts->nparams ? qd__calloc(ctx, opts->nparams, sizeof *used) : NULL;
     if (!m || (opts && opts->nparams && !used)) {
@@ -116,7 +115,8 @@ qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts
     }
     m->ctx = ctx;
     m->text = m->src = text;
-    parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, opts, used, false};
+    parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, opts, used, false, false, false};
+    p.field_ok = field;
     if (check_text(&p, text)) {
         qd__lex_init(&p.lx, text);
         if (check_given(&p, false))
@@ -132,6 +132,17 @@ qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts
         return NULL;
     }
     return m;
+}
+
+qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
+                              qd_diag *diag) {
+    QD_ARGS(NULL, ctx && text);
+    return parse_text(ctx, text, opts, diag, false);
+}
+
+qd_model *qd__mdl_parse_field(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
+                              qd_diag *diag) {
+    return parse_text(ctx, text, opts, diag, true);
 }
 
 qd_model *qd_model_parse(qd_ctx *ctx, const char *text, qd_diag *diag) {
@@ -283,7 +294,7 @@ qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
     bool ok = qd__mdl_push(m->ctx, (void **)&m->added, &nadded, sizeof copy, &copy);
     if (ok) {
         m->src = copy;
-        parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, NULL, NULL, false};
+        parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, NULL, NULL, false, false, false};
         if (check_text(&p, copy)) {
             qd__lex_init(&p.lx, copy);
             read_one(&p);

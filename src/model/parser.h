@@ -99,6 +99,17 @@ typedef struct isoper {
     const qd_expr *lambda;
 } isoper;
 
+/* `field y(x, t) on x = A .. B` with `Ldensity` and `boundary` (field.c):
+ * a continuous system, read only by qd_field_parse (qdot/field.h). */
+typedef struct qd__field {
+    char *name, *space;        /* owned copies: y, x */
+    const qd_expr *y, *yt, *yx, *x;  /* the symbols the density is written in */
+    const qd_expr *ends[2];    /* the interval's ends, numbers */
+    const qd_expr *density;    /* NULL until `Ldensity = ...`; as written */
+    const qd_expr *density_num;/* the same with the parameters' values put in */
+    int bc[2];                 /* -1 not given, else a qd_field_end */
+} qd__field;
+
 typedef struct particle {
     const qd_expr *mass;
     const qd_expr *r[3];
@@ -179,6 +190,7 @@ struct qd_model {
     /* Coulomb friction (friction.c): the contacts, in the order given */
     struct fcontact *contacts;
     size_t ncontacts;
+    qd__field *field;          /* `field ...` (field.c), or NULL */
     /* the name table (names.c) */
     struct qd__name_entry *names;
     size_t names_cap, names_used;
@@ -197,6 +209,8 @@ typedef struct parser {
     const qd_model_opts *opts; /* parameter values given from outside, or NULL */
     bool *set_used;            /* per opts->params entry: a parameter took it */
     bool met_fixed;            /* a fixed parameter was written in as its number */
+    bool field_ok;             /* qd_field_parse: a field model is wanted */
+    bool no_dot;               /* '.' ends the expression (A .. B), not a component */
 } parser;
 
 /* expr.c */
@@ -334,6 +348,19 @@ bool qd__mdl_stmt_inductance(parser *p);
 bool qd__mdl_stmt_capacitance(parser *p);
 bool qd__mdl_stmt_resistance(parser *p);
 bool qd__mdl_stmt_source(parser *p);
+
+/* field.c: `field`, `Ldensity = ...`, `boundary ...`; the checks after the
+ * last line of a field model */
+bool qd__mdl_stmt_field(parser *p);
+bool qd__mdl_stmt_ldensity(parser *p);
+bool qd__mdl_stmt_boundary(parser *p);
+bool qd__mdl_field_finish(parser *p);
+void qd__mdl_free_field(qd_model *m);
+struct qd_field;
+const qd__field *qd__field_data(const struct qd_field *f); /* for src/field */
+/* parse.c: the text read as a field model (p.field_ok) */
+qd_model *qd__mdl_parse_field(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
+                              qd_diag *diag);
 
 /* stmt.c: a constant (numbers and parameters) as written (*def) and its number (*out) */
 bool qd__mdl_parse_constant(parser *p, const qd_expr **def, const qd_expr **out, const char *what);

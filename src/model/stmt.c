@@ -738,6 +738,7 @@ static const struct stmt_kw {
     {"impulse", qd__mdl_stmt_impulse, true},    {"impact", qd__mdl_stmt_impact, true},
     {"prescribe", qd__mdl_stmt_prescribe, true}, {"speeds", qd__mdl_stmt_speeds, true},
     {"independent", qd__mdl_stmt_independent, true},
+    {"field", qd__mdl_stmt_field, true},        {"boundary", qd__mdl_stmt_boundary, true},
     {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
@@ -756,13 +757,15 @@ static bool unknown_statement(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else {
         /* spaces, not commas: with the circuit statements the whole list
-         * fills the 255 bytes of a diagnostic's hint, so inputs, outputs
-         * and friction are left to "did you mean" above */
+         * fills the 255 bytes of a diagnostic's hint, so inputs, outputs,
+         * friction, field and boundary are left to "did you mean" above */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
             if (statements[i].parse != qd__mdl_stmt_inputs &&
                 statements[i].parse != qd__mdl_stmt_outputs &&
-                statements[i].parse != qd__mdl_stmt_friction)
+                statements[i].parse != qd__mdl_stmt_friction &&
+                statements[i].parse != qd__mdl_stmt_field &&
+                statements[i].parse != qd__mdl_stmt_boundary)
                 n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
             snprintf(hint + n, sizeof hint - n, ") or NAME = ...");
@@ -796,6 +799,8 @@ bool qd__mdl_statement(parser *p) {
         return kw->parse(p);
     if (qd__lex_is(lx, "H") && next == TK_EQ)
         return qd__mdl_stmt_hamiltonian(p);
+    if (qd__lex_is(lx, "Ldensity") && next == TK_EQ && p->m->field)
+        return qd__mdl_stmt_ldensity(p);
     if (next == TK_EQ)
         return stmt_definition(p);
     if (next == TK_LBRACK && qd__lex_is(lx, "Q"))
@@ -809,6 +814,8 @@ bool qd__mdl_statement(parser *p) {
 bool qd__mdl_finish(parser *p) {
     qd_model *m = p->m;
     qd_ctx *ctx = C(p);
+    if (m->field || p->field_ok)
+        return qd__mdl_field_finish(p);
     if (m->ncoords == 0)
         return qd__mdl_perr(p, 0, 1, "declare them: coordinates q1, q2", "no coordinates are declared");
     if (!qd__mdl_check_integrals(p) || !qd__mdl_friction_finish(p))

@@ -40,6 +40,8 @@ NULLABLE = {
     'qd_constrained_equilibria_find': {'opts'},
     'qd_constrained_linear_about': {'indep'},
     'qd_eval': {'syms', 'vals'},
+    'qd_field_modes_compute': {'opts'},
+    'qd_field_parse': {'diag', 'opts'},
     'qd_free_symbols': {'out'},
     'qd_generate': {'H'},
     'qd_generate_f2': {'H'},

@@ -24,6 +24,7 @@
 #include "qdot/equilibria.h"
 #include "qdot/eval.h"
 #include "qdot/expr.h"
+#include "qdot/field.h"
 #include "qdot/form.h"
 #include "qdot/hamilton.h"
 #include "qdot/hj.h"
@@ -1232,6 +1233,80 @@ static void null_expr(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_eval(F.ctx, F.q, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_field(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_field_declared */
+    /* text NULL */
+    assert_true(qd_field_declared(NULL) == 0);
+    reset(&F);
+    /* ---- qd_field_parse */
+    /* ctx NULL */
+    assert_null(qd_field_parse(NULL, "q", NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_field_parse(F.ctx, NULL, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_field_free */
+    /* f NULL */
+    qd_field_free(NULL);
+    reset(&F);
+    /* ---- qd_field_model */
+    /* f NULL */
+    assert_null(qd_field_model(NULL));
+    reset(&F);
+    /* ---- qd_field_name */
+    /* f NULL */
+    assert_null(qd_field_name(NULL));
+    reset(&F);
+    /* ---- qd_field_space */
+    /* f NULL */
+    assert_null(qd_field_space(NULL));
+    reset(&F);
+    /* ---- qd_field_density */
+    /* f NULL */
+    assert_null(qd_field_density(NULL));
+    reset(&F);
+    /* ---- qd_field_interval */
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_interval(NULL, F.d, F.d));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_interval(NULL, NULL, F.d));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_interval(NULL, F.d, NULL));
+    reset(&F);
+    /* ---- qd_field_boundary */
+    /* f NULL */
+    (void)qd_field_boundary(NULL, 1);
+    reset(&F);
+    /* ---- qd_field_equation */
+    /* ctx NULL */
+    assert_null(qd_field_equation(NULL, NULL));
+    reset(&F);
+    /* f NULL */
+    assert_null(qd_field_equation(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_field_modes_compute */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_compute(NULL, NULL, NULL, (qd_field_modes *)(void *)F.blob));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_compute(F.ctx, NULL, NULL, (qd_field_modes *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_compute(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_field_modes_free */
+    /* r NULL */
+    qd_field_modes_free(NULL);
     reset(&F);
     teardown(&F);
 }
@@ -3925,6 +4000,7 @@ int main(void)
         cmocka_unit_test(null_equilibria),
         cmocka_unit_test(null_eval),
         cmocka_unit_test(null_expr),
+        cmocka_unit_test(null_field),
         cmocka_unit_test(null_form),
         cmocka_unit_test(null_hamilton),
         cmocka_unit_test(null_hj),

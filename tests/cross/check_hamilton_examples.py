@@ -69,6 +69,10 @@ def check(qdot, path, rng):
     # check_examples.py and check_cov_cli.py hold their Euler-Lagrange equations
     if re.search(r'^\s*independent\s', path.read_text(), re.M):
         return 'skip', 'a functional'
+    # a field model (`field y(x, t) on ...`) has a density, not coordinates:
+    # check_field_cli.py holds its field equation and modes
+    if re.search(r'^\s*field\s', path.read_text(), re.M):
+        return 'skip', 'a field'
     rc, ham, err = sympy_output(qdot, 'hamiltonian', path)
     if rc != 0:
         if 'constraint' in err:
