@@ -865,6 +865,8 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
             Fl += x[p->off_lam + m] * y[p->s->ns + 1 + m];
     }
     out->action = S + Fl;
+    /* p.q' = L + h along the motion, h = E conserved: A = S + E T */
+    out->abbreviated = p->energy ? out->action + p->E * T : NAN;
     /* the second variation along the path: the Jacobi equation from its
      * start (foci.c); a minimum iff no focus in (t0, t1] and Legendre's
      * condition (Desloge ch. 84) */
@@ -881,8 +883,12 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     return true;
 }
 
+#define ALL_SEGMENTS 8  /* multiple shooting of the --all search at fixed energy */
+
 static int by_action(const void *a, const void *b) {
-    double x = ((const qd_path *)a)->action, y = ((const qd_path *)b)->action;
+    const qd_path *pa = a, *pb = b;
+    bool fixed_e = !isnan(pa->abbreviated);  /* Maupertuis: by A, the action he varies */
+    double x = fixed_e ? pa->abbreviated : pa->action, y = fixed_e ? pb->abbreviated : pb->action;
     return (x > y) - (x < y);
 }
 
@@ -1045,6 +1051,11 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     double Tg = energy ? (sr.omega > 0 ? 1 / sr.omega : 1) : o->t1 - o->t0;
     s.hmax = fmin(Tg / 200, sr.omega > 0 ? 0.04 / sr.omega : INFINITY);
     size_t N = o->segments ? o->segments : (size_t)ceil(Tg * sr.omega / 3);
+    /* at fixed energy the time is unknown and omega may be 0 (a uniform
+     * field): a single shot from a far start misses the long paths (the
+     * projectile's high lob), so the multistart shoots in ALL_SEGMENTS */
+    if (energy && o->all && !o->segments && N < ALL_SEGMENTS)
+        N = ALL_SEGMENTS;
     p->N = N < 1 ? 1 : N > PATH_MAXSEG ? PATH_MAXSEG : N;
     shoot_layout(p, o->free0);
     sr.o = o;
