@@ -21,6 +21,10 @@
   closed form: x = vx t + g t^2/2, y = vy t, and A = 2 E T + g vx T^2 +
   g^2 T^3/3 (A = integral v^2 dt, v^2 = 2 (E + g x)).
 
+- a path on a sphere written as a constraint, (1, 0, 0) to (0, 1, 0) in
+  time 1, with no --guess: the great-circle quarter, v0 = (0, pi/2, 0),
+  S = (pi/2)^2/2; --all also finds the way round the other side, 3 pi/2,
+  S = (3 pi/2)^2/2, with its kinetic focus at the antipode, t = 2/3.
 - impulse: a particle bouncing on the floor beside a second particle is no
   collision of the two (the floor's impulse is external: the total momentum
   changes), so no centre-of-mass section; a head-on collision keeps it.
@@ -152,6 +156,14 @@ V = -m*g*x
 """
 
 
+SPHERE = """coordinates x, y, z
+parameters m = 1, R = 1
+particle m at (x, y, z)
+V = 0
+constraint sphere: x^2 + y^2 + z^2 = R^2
+"""
+
+
 def paths(qdot, tmp):
     f = model(tmp, 'free.qd', FREE)
     rc, out, err = run(qdot, 'path', f, '--from', 'x=0, y=0', '--to', 'x=3, y=4', '--energy', '2',
@@ -180,6 +192,22 @@ def paths(qdot, tmp):
         A = 2 * E * T + g * vx * T * T + g * g * T ** 3 / 3
         check('lob least action', close(p.get('least_action'), A, 1e-8), '%r vs %r' % (p.get('least_action'), A))
     check('lobs distinct', len(times) == 2 and abs(times[0] - times[1]) > 0.1, times)
+
+    f = model(tmp, 'sphere.qd', SPHERE)
+    rc, out, err = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0, t=0', '--to', 'x=0, y=1, z=0, t=1',
+                       '--format', 'json')
+    d = json.loads(out) if rc == 0 else {'paths': []}
+    ok = len(d['paths']) == 1
+    p = d['paths'][0] if ok else {'initial_velocities': {}}
+    v = p['initial_velocities']
+    check('sphere path without a guess', ok and close(p.get('action'), math.pi ** 2 / 8, 1e-8) and
+          abs(v.get("x'", 1)) < 1e-8 and close(v.get("y'"), math.pi / 2, 1e-8), out + err)
+    rc, out, err = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0, t=0', '--to', 'x=0, y=1, z=0, t=1',
+                       '--all', '--format', 'json')
+    d = json.loads(out) if rc == 0 else {'paths': []}
+    back = [p for p in d['paths'] if close(p['action'], (1.5 * math.pi) ** 2 / 2, 1e-7)]
+    check('sphere: the other way round', len(back) == 1 and len(back[0]['kinetic_foci']) == 1 and
+          close(back[0]['kinetic_foci'][0], 2 / 3, 1e-6), [p['action'] for p in d['paths']])
 
 
 FLOOR = """coordinates x1, y1, x2
