@@ -127,6 +127,13 @@ typedef struct qd_impulse {
     qd_impulse_check carnot, bertrand, thomson;
     bool collision;                  /* col is filled */
     qd_collision col;
+    /* nmult flags: a row that depends on the others at the impact and is
+     * consistent with them (two points' full velocity vectors prescribed on
+     * one rigid body): reduced by rank, its multiplier set to 0 (the
+     * multipliers are not unique; the velocities after are).  Truly
+     * inconsistent rows are QD_ERR_SINGULAR. */
+    bool *redundant;
+    size_t nredundant;
 } qd_impulse;
 
 /* Solve the impulse equations of m at the state in opts.  Errors:

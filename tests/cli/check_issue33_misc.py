@@ -28,6 +28,10 @@
 - impulse: a particle bouncing on the floor beside a second particle is no
   collision of the two (the floor's impulse is external: the total momentum
   changes), so no centre-of-mass section; a head-on collision keeps it.
+- impulse --prescribe of both ends' full velocities of a rod (4 rows, 3
+  dof): consistent (a translation (1, 0)) is reduced by rank with a note,
+  the velocities after x' = 1, y' = 0, th' = 0 and T = m/2; ends moving
+  apart (1, 0) and (2, 0) are inconsistent and refused.
 
 Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
@@ -235,6 +239,31 @@ def impulses(qdot, tmp):
           out + err)
 
 
+ROD = """coordinates x, y, th
+parameters m = 1, a = 1
+P = (x, y) - a*(cos(th), sin(th))
+Q = (x, y) + a*(cos(th), sin(th))
+T = m/2*(x'^2 + y'^2) + m*a^2/6*th'^2
+initial x = 0, y = 0, th = 0, x' = 0, y' = 0, th' = 0
+"""
+
+
+def redundant(qdot, tmp):
+    f = model(tmp, 'rod.qd', ROD)
+    rc, out, err = run(qdot, 'impulse', f, '--prescribe', "P.x' = 1, P.y' = 0, Q.x' = 1, Q.y' = 0",
+                       '--format', 'json')
+    d = json.loads(out) if rc == 0 else {}
+    after = d.get('velocities_after', {})
+    check('redundant prescription solved', rc == 0 and close(after.get("x'"), 1, 1e-12) and
+          abs(after.get("y'", 1)) < 1e-12 and abs(after.get("th'", 1)) < 1e-12 and
+          close(d.get('kinetic_energy_after'), 0.5, 1e-12), out + err)
+    check('redundant prescription noted', len(d.get('redundant', [])) == 1, d.get('redundant'))
+    rc, out, err = run(qdot, 'impulse', f, '--prescribe', "P.x' = 1, P.y' = 0, Q.x' = 1, Q.y' = 0")
+    check('redundant note in text', rc == 0 and 'note: redundant at the impact' in out, out + err)
+    rc, out, err = run(qdot, 'impulse', f, '--prescribe', "P.x' = 1, P.y' = 0, Q.x' = 2, Q.y' = 0")
+    check('inconsistent prescription refused', rc != 0 and 'inconsistent' in err, out + err)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True)
@@ -246,6 +275,7 @@ def main():
         periodic(qdot, tmp)
         paths(qdot, tmp)
         impulses(qdot, tmp)
+        redundant(qdot, tmp)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
 
