@@ -1,6 +1,7 @@
 /*
  * cli/cmd_expr.c - the kernel on the command line: diff, expand, simplify,
- * print.  Each reads one expression (unknown names become plain symbols),
+ * print.  Each reads one expression (unknown names become plain symbols, or
+ * coordinates when written with a prime: r' is then a symbol of its own),
  * applies one libqdot operation and prints the result.
  */
 #include "cli.h"
@@ -84,9 +85,13 @@ static int run(int argc, char **argv, const char *cmd, size_t min_vars, unary_op
         qd_ctx_free(ctx);
         return QD_EXIT_USAGE;
     }
+    const qd_expr *e0 = e;
     for (size_t i = 0; i < a.nvars && e; i++) {
-        const qd_expr *v = qd_lookup(ctx, a.vars[i]);
-        if (!v) {
+        /* a name or a rate: r, r', theta'' (read against the expression's symbols) */
+        qd_read_opts known = {.new_symbols = false};
+        const qd_expr *v = qd_read(ctx, a.vars[i], &known, NULL);
+        if (!v || qd_expr_kind(v) != QD_SYMBOL || !qd_has(e0, v)) {
+            qd_ctx_clear_error(ctx);
             cli_diag_error("'%s' does not occur in the expression", a.vars[i]);
             qd_ctx_free(ctx);
             return QD_EXIT_USAGE;

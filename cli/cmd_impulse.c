@@ -380,6 +380,14 @@ static void text_impulses(imp_run *r, qd_buf *b) {
         put_value(r, b, exact_mult(r, k), s->mult[k]);
         qd_buf_puts(b, "\n");
     }
+    if (s->nredundant) {
+        qd_buf_puts(b, "note: redundant at the impact (dependent on the others and consistent "
+                       "with them; reduced by rank, multiplier set to 0, not unique):");
+        for (size_t k = 0; k < s->nmult; k++)
+            if (s->redundant[k])
+                qd_buf_printf(b, " %s", s->mult_name[k]);
+        qd_buf_puts(b, "\n");
+    }
     if (s->nreact)
         qd_buf_puts(b, "impulsive reactions:\n");
     for (size_t k = 0; k < s->nreact; k++) {
@@ -538,6 +546,12 @@ static void json_multipliers(imp_run *r, cli_json *j) {
     for (size_t k = 0; k < s->nmult; k++)
         json_num(j, s->mult_name[k], s->mult[k]);
     cli_json_end_object(j);
+    cli_json_key(j, "redundant");
+    cli_json_begin_array(j);
+    for (size_t k = 0; k < s->nmult; k++)
+        if (s->redundant[k])
+            cli_json_string(j, s->mult_name[k]);
+    cli_json_end_array(j);
     cli_json_key(j, "impulsive_reactions");
     cli_json_begin_object(j);
     for (size_t k = 0; k < s->nreact; k++)

@@ -304,6 +304,8 @@ static void write_text(const path_run *r, qd_buf *b) {
             put(b, p->mult[k]);
         }
         if (r->energy) {
+            qd_buf_puts(b, "\n  least action (Maupertuis, integral of p.dq): ");
+            put(b, p->abbreviated);
             qd_buf_puts(b, "\n  time: ");
             put(b, p->t[p->nsamples - 1] - p->t[0]);
         }
@@ -339,6 +341,12 @@ static void write_json(const path_run *r, qd_buf *b) {
         cli_json_begin_object(&j);
         cli_json_key(&j, "action");
         cli_json_number(&j, p->action);
+        if (r->energy) {
+            cli_json_key(&j, "least_action");
+            cli_json_number(&j, p->abbreviated);
+            cli_json_key(&j, "time");
+            cli_json_number(&j, p->t[p->nsamples - 1] - p->t[0]);
+        }
         cli_json_key(&j, "initial_velocities");
         cli_json_begin_object(&j);
         for (size_t k = 0; k < n; k++) {

@@ -72,7 +72,10 @@ typedef struct qd_impulse_check {
  * are of the centres of mass; angles are measured from the relative
  * velocity before, u = v1 - v2, in [0, pi] (0 when a velocity is zero).
  * Filled when the model has exactly two mass elements (particles, then
- * bodies: body 1 is the first) and at least one sudden constraint. */
+ * bodies: body 1 is the first) and at least one sudden constraint, and the
+ * impulses are internal: the total momentum is the same after (to 1e-9 of
+ * the speeds) and the bodies met (u before is not 0).  A rolling contact
+ * with the ground, a pivot or a blow from outside is not a collision. */
 typedef struct qd_collision {
     double m1, m2;
     double w[3];                     /* centre-of-mass velocity */
@@ -124,6 +127,13 @@ typedef struct qd_impulse {
     qd_impulse_check carnot, bertrand, thomson;
     bool collision;                  /* col is filled */
     qd_collision col;
+    /* nmult flags: a row that depends on the others at the impact and is
+     * consistent with them (two points' full velocity vectors prescribed on
+     * one rigid body): reduced by rank, its multiplier set to 0 (the
+     * multipliers are not unique; the velocities after are).  Truly
+     * inconsistent rows are QD_ERR_SINGULAR. */
+    bool *redundant;
+    size_t nredundant;
 } qd_impulse;
 
 /* Solve the impulse equations of m at the state in opts.  Errors:

@@ -81,6 +81,10 @@ typedef struct qd_path {
     size_t nmult;
     double *mult;
     size_t *foci_mult;        /* nfoci multiplicities (qd_path_foci_mult), or NULL */
+    /* at fixed energy E (qd_path_find_energy): Maupertuis' least action
+     * A = integral of p.q' dt = S + E T (T the time taken), the quantity
+     * his principle makes stationary (Desloge ch. 83); NaN otherwise */
+    double abbreviated;
 } qd_path;
 
 typedef struct qd_path_set {
@@ -127,6 +131,8 @@ QD_API void qd_path_foci_mult_free(qd_ctx *ctx, size_t *mult);
 /* Maupertuis / Jacobi: the paths of energy E (the Jacobi integral h) from q0
  * to q1, whatever the time they take: opts.t0 is the start time, opts.t1 is
  * ignored, and each path's t1 (its last sample's time) is the time it takes.
+ * Each path carries both Hamilton's S (action) and Maupertuis' A
+ * (abbreviated), ordered by A.
  * For a natural system these are the geodesics of the Jacobi metric
  * (E - V) M.  Otherwise as qd_path_find. */
 QD_API qd_status qd_path_find_energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e,

@@ -70,6 +70,21 @@ static void describe(qd_collision *c) {
     c->gamma = c->s[1] > 0 ? sqrt(dot(c->w, c->w)) / c->s[1] : 0; /* no CM speed after */
 }
 
+/* A collision of the two bodies: the impulses are internal, so the total
+ * momentum is the same after (w conserved), and they met (u before is not
+ * 0).  A blow from outside, a rolling contact with the ground or a fixed
+ * pivot changes the momentum: the centre-of-mass frame then describes
+ * nothing, and its angles would be meaningless. */
+static bool internal(const qd_collision *c) {
+    double M = c->m1 + c->m2, p1[3], top = 0;
+    for (unsigned k = 0; k < 3; k++) {
+        p1[k] = (c->m1 * c->v1[1][k] + c->m2 * c->v2[1][k]) / M - c->w[k];
+        top = fmax(top, fmax(fmax(fabs(c->v1[0][k]), fabs(c->v2[0][k])),
+                             fmax(fabs(c->v1[1][k]), fabs(c->v2[1][k]))));
+    }
+    return sqrt(dot(p1, p1)) <= 1e-9 * top && c->eps[0] > 0;
+}
+
 qd_status qd__imp_collision(const qd__imp *s, qd_impulse *r) {
     const qd_model *m = s->m;
     if (qd_model_nparticles(m) + qd_model_nbodies(m) != 2 || s->nsudden == 0)
@@ -87,6 +102,6 @@ qd_status qd__imp_collision(const qd__imp *s, qd_impulse *r) {
     if (st != QD_OK || !(c->m1 + c->m2 > 0))
         return st;
     describe(c);
-    r->collision = true;
+    r->collision = internal(c);
     return QD_OK;
 }

@@ -30,6 +30,7 @@ void qd_impulse_free(qd_impulse *r) {
     for (size_t k = 0; r->mult_name && k < r->nmult; k++)
         qd__free((void *)r->mult_name[k]);
     qd__free(r->mult_name);
+    qd__free(r->redundant);
     qd__free(r->react_name);
     qd__free(r->react);
     qd__free(r->qd_after_exact);
@@ -56,10 +57,11 @@ static qd_status alloc_result(const qd__imp *s, qd_impulse *r) {
     r->R = qd__calloc(ctx, n, sizeof *r->R);
     r->mult = qd__calloc(ctx, m, sizeof *r->mult);
     r->mult_name = qd__calloc(ctx, m, sizeof *r->mult_name);
+    r->redundant = qd__calloc(ctx, m, sizeof *r->redundant);
     r->react_name = qd__calloc(ctx, nr, sizeof *r->react_name);
     r->react = qd__calloc(ctx, nr, sizeof *r->react);
     bool ok = q && r->qd_before && r->qd_after && r->Qhat && r->R && r->mult && r->mult_name &&
-              r->react_name && r->react;
+              r->redundant && r->react_name && r->react;
     r->n = s->n;
     r->nmult = ok ? s->nrow : 0;
     for (size_t k = 0; ok && k < s->nrow; k++)
@@ -105,9 +107,11 @@ static qd_status reactions(const qd__imp *s, qd_impulse *r) {
 static qd_status solve(const qd__imp *s, qd_impulse *r) {
     size_t n = s->n;
     qd_status st = s->nonquad ? qd__imp_solve_momenta(s, r->qd_after, r->mult)
-                              : qd__imp_solve(s, NULL, true, r->qd_after, r->mult);
+                              : qd__imp_solve(s, NULL, true, r->qd_after, r->mult, r->redundant);
     if (st != QD_OK)
         return st;
+    for (size_t k = 0; k < s->nrow; k++)
+        r->nredundant += r->redundant[k];
     memcpy(r->qd_before, s->vals + n, n * sizeof *r->qd_before);
     memcpy(r->Qhat, s->Qhat, n * sizeof *r->Qhat);
     for (size_t j = 0; j < n; j++)

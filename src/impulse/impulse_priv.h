@@ -79,10 +79,13 @@ bool qd__imp_saddle(qd_ctx *ctx, size_t n, size_t m, const double *M, const doub
 
 /* The impulse with the rows marked in use (NULL: all): the velocities
  * after (v1) and the multipliers (lambda, nrow, 0 for rows not in use).
- * QD_ERR_SINGULAR naming the rows when they are dependent or inconsistent;
- * report false: no message (a check's re-solve). */
+ * Rows dependent on the others (numeric rank, relative tolerance) are
+ * left out and checked afterwards: consistent, they are flagged in
+ * redundant (nrow; may be NULL) with multiplier 0; else QD_ERR_SINGULAR
+ * naming the inconsistent rows; report false: no message (a check's
+ * re-solve). */
 qd_status qd__imp_solve(const qd__imp *s, const bool *use, bool report, double *v1,
-                        double *lambda);
+                        double *lambda, bool *redundant);
 
 /* A qd_eom view of s with every row as a constraint (for qd__con_report
  * and qd_eom_reaction); nothing to free. */

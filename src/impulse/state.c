@@ -239,8 +239,53 @@ static qd_status diagnose(const qd__imp *s, size_t m, const size_t *idx, const d
     return qd__ctx_nomem(ctx) ? QD_ERR_NOMEM : QD_ERR_SINGULAR;
 }
 
+#define DEP_TOL 1e-10  /* a row within this of the span of those before it (relative) */
+
+/* Mark the rows of B (m x n) that lie in the span of the ones kept before
+ * them (modified Gram-Schmidt on a copy, tolerance relative to the row's
+ * own length); false when out of memory. */
+static bool dependent_rows(qd_ctx *ctx, size_t m, size_t n, const double *B, bool *dep) {
+    double *Q = qd__malloc(ctx, (m * n + 1) * sizeof *Q);
+    if (!Q)
+        return false;
+    size_t kept = 0;
+    for (size_t k = 0; k < m; k++) {
+        double *q = Q + kept * n, len0 = 0, len = 0;
+        memcpy(q, B + k * n, n * sizeof *q);
+        for (size_t j = 0; j < n; j++)
+            len0 += q[j] * q[j];
+        for (size_t i = 0; i < kept; i++) {
+            double d = 0;
+            for (size_t j = 0; j < n; j++)
+                d += Q[i * n + j] * q[j];
+            for (size_t j = 0; j < n; j++)
+                q[j] -= d * Q[i * n + j];
+        }
+        for (size_t j = 0; j < n; j++)
+            len += q[j] * q[j];
+        dep[k] = len0 > 0 && !(sqrt(len) > DEP_TOL * sqrt(len0));
+        if (dep[k] || !(len > 0))
+            continue;
+        for (size_t j = 0; j < n; j++)
+            q[j] /= sqrt(len);
+        kept++;
+    }
+    qd__free(Q);
+    return true;
+}
+
+/* Does row k of B hold at dv, relative to its terms' size? */
+static bool row_holds(size_t n, const double *Bk, double rk, const double *dv) {
+    double sum = 0, size = fabs(rk);
+    for (size_t j = 0; j < n; j++) {
+        sum += Bk[j] * dv[j];
+        size += fabs(Bk[j] * dv[j]);
+    }
+    return fabs(sum - rk) <= 1e-9 * (size > 0 ? size : 1);
+}
+
 qd_status qd__imp_solve(const qd__imp *s, const bool *use, bool report, double *v1,
-                        double *lambda) {
+                        double *lambda, bool *redundant) {
     qd_ctx *ctx = s->ctx;
     size_t n = s->n, m = 0;
     double *B = qd__malloc(ctx, (s->nrow * (n + 3) + n + 1) * sizeof *B);
@@ -260,16 +305,43 @@ qd_status qd__imp_solve(const qd__imp *s, const bool *use, bool report, double *
         idx[m++] = k;
     }
     qd_status st = QD_OK;
-    if (!qd__imp_saddle(ctx, n, m, s->M, B, s->Qhat, r, dv, mu))
-        st = qd__ctx_nomem(ctx) ? QD_ERR_NOMEM
-             : report           ? diagnose(s, m, idx, B, r)
-                                : QD_ERR_SINGULAR;
+    /* the independent rows first: redundant ones (dependent, consistent) are
+     * reduced by rank, the saddle of the rest solved, the others checked */
+    bool *dep = qd__calloc(ctx, m + 1, sizeof *dep);
+    double *Bi = qd__malloc(ctx, (m * (n + 1) + 1) * sizeof *Bi);
+    size_t *ii = qd__malloc(ctx, (m + 1) * sizeof *ii);
+    size_t mi = 0;
+    if (!dep || !Bi || !ii || !dependent_rows(ctx, m, n, B, dep)) {
+        st = nomem(ctx);
+    } else {
+        double *ri = Bi + m * n;
+        for (size_t k = 0; k < m; k++)
+            if (!dep[k]) {
+                memcpy(Bi + mi * n, B + k * n, n * sizeof *Bi);
+                ri[mi] = r[k];
+                ii[mi++] = k;
+            }
+        if (!qd__imp_saddle(ctx, n, mi, s->M, Bi, s->Qhat, ri, dv, mu))
+            st = qd__ctx_nomem(ctx) ? QD_ERR_NOMEM
+                 : report           ? diagnose(s, m, idx, B, r)
+                                    : QD_ERR_SINGULAR;
+        for (size_t k = 0; st == QD_OK && k < m; k++)
+            if (dep[k] && !row_holds(n, B + k * n, r[k], dv))
+                st = report ? diagnose(s, m, idx, B, r) : QD_ERR_SINGULAR;
+    }
     for (size_t j = 0; st == QD_OK && j < n; j++)
         v1[j] = v0[j] + dv[j];
     for (size_t k = 0; st == QD_OK && lambda && k < s->nrow; k++)
         lambda[k] = 0;
-    for (size_t k = 0; st == QD_OK && lambda && k < m; k++)
-        lambda[idx[k]] = mu[k];
+    for (size_t k = 0; st == QD_OK && redundant && k < s->nrow; k++)
+        redundant[k] = false;
+    for (size_t k = 0; st == QD_OK && lambda && k < mi; k++)
+        lambda[idx[ii[k]]] = mu[k];
+    for (size_t k = 0; st == QD_OK && redundant && k < m; k++)
+        redundant[idx[k]] = dep[k];
+    qd__free(dep);
+    qd__free(Bi);
+    qd__free(ii);
     qd__free(B);
     qd__free(idx);
     return st;

@@ -76,7 +76,7 @@ static qd_status bertrand(const qd__imp *s, qd_impulse *r, double *d) {
     for (size_t k = 0; k < s->nheld && st == QD_OK; k++)
         use[k] = true;
     if (st == QD_OK)
-        st = qd__imp_solve(s, use, false, v, NULL);
+        st = qd__imp_solve(s, use, false, v, NULL, NULL);
     if (st == QD_ERR_SINGULAR) /* no motion without the sudden rows: nothing to compare */
         st = QD_OK;
     else if (st == QD_OK && (st = qd__imp_energy(s, v, &c->a)) == QD_OK) {

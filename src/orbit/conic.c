@@ -40,9 +40,14 @@ void qd__orb_conic(qd__orb_env *env, double x0, double xd0, double c0, qd_orbit_
     r->repulsive = k < 0;
     r->nu = sqrt(nu2);
     r->p = 2 * c2 / fabs(k);
-    r->e = e2 > 0 ? sqrt(e2) : 0;
-    r->a = fabs(r->e - 1) < PARABOLA ? INFINITY : r->p / (1 - r->e * r->e);
+    /* e from the state's own components, e cos = p/x0 -+ 1, e sin = p x'/(h nu):
+     * e^2 = 1 + 4 c2 (E - c0)/k^2 cancels to round-off near a circle, which
+     * the square root lifts to 1e-8; these are 0 on an exact circle */
     double ec = r->p / x0 + (r->repulsive ? 1 : -1), es = r->p * xd0 / (h * r->nu);
+    r->e = r->kind == QD_ORBIT_CIRCULAR ? 0 : hypot(ec, es);
+    if (!isfinite(r->e))
+        r->e = e2 > 0 ? sqrt(e2) : 0;
+    r->a = fabs(r->e - 1) < PARABOLA ? INFINITY : r->p / (1 - r->e * r->e);
     r->periapsis = r->e > 1e-12 ? c0 - atan2(es, ec) / r->nu : NAN;
 }
 

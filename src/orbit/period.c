@@ -14,7 +14,8 @@
  *
  * (E = V_eff(x_t)), used while its last term is below 1e-13 of the first,
  * |xc| <= (24e-13 |V1/V4|)^(1/3), so that what it leaves out is at round-off
- * (all of the half-interval when V4 = 0).  Beyond, the difference has lost
+ * (and within the reach that the second and third terms give a geometric
+ * series: V4 may vanish at an end where V5 does not).  Beyond, the difference has lost
  * at most eps |E|/|V1 xc| of its digits.
  */
 #include "orb.h"
@@ -24,6 +25,7 @@
 #include "num/num.h"
 
 #define LAST 24e-13  /* 4! times the last Taylor term's bound, relative to the first */
+#define RHO4 5.6e-4   /* 1e-13^(1/4): the ratio whose fourth power is LAST's 1e-13 */
 #define QTOL 1e-12
 #define ACCEPT 1e-8  /* not converged to QTOL but within this: a result, its error reported */
 
@@ -69,6 +71,13 @@ static double derivatives(qd__orb_env *env, double x, double half, double *d) {
     for (int k = 0; k < 4; k++)
         d[k] = o[QD__ORB_V1 + k];
     double reach = d[3] != 0 ? cbrt(LAST * fabs(d[0] / d[3])) : half;
+    /* V4 may vanish where V5 does not (Kepler's V_eff at r = 5 p/4): the
+     * terms of a series falling geometrically, ratio rho, give the first
+     * omitted one rho^4 from the second (rho) and the third (rho^2) too */
+    if (d[1] != 0)
+        reach = fmin(reach, 2 * RHO4 * fabs(d[0] / d[1]));
+    if (d[2] != 0)
+        reach = fmin(reach, sqrt(6 * RHO4 * RHO4 * fabs(d[0] / d[2])));
     return isfinite(reach) ? fmin(reach, half) : 0;
 }
 

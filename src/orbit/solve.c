@@ -144,13 +144,52 @@ static qd_status allowed_start(qd_ctx *ctx, qd__orb_env *env, double *x0) {
     return QD_ERR_ARG;
 }
 
+/* A turning point found to round-off may lie a few ulps inside the
+ * forbidden region (E - V_eff < 0 there): moved towards from, onto the
+ * allowed side, so the quadratures start where the motion is. */
+static double polish(qd__orb_env *env, double x, double from) {
+    for (int k = 0; k < 64 && qd__orb_gap(env, x) < 0 && x != from; k++)
+        x = nextafter(x, from);
+    return x;
+}
+
+/* A turning point nearer xs than the scan's first step (1e-3 scale: a
+ * near-circle started at or near an apsis, whose other apsis the first step
+ * jumps over): the nearest root towards dir of Taylor's quadratic
+ * E - V_eff(xs + d) ~ g0 - V1 d - V2 d^2/2, bracketed by half and twice its
+ * distance and found by zeroin.  false when there is none that close. */
+static bool near_turn(qd__orb_env *env, double xs, int dir, double *end) {
+    const double *o = qd__orb_at(env, xs);
+    double g0 = env->E - o[QD__ORB_V], v1 = dir * o[QD__ORB_V1], v2 = o[QD__ORB_V2];
+    /* v2/2 s^2 + v1 s - g0 = 0, its least positive root s */
+    double s = NAN;
+    if (v2 != 0) {
+        double disc = v1 * v1 + 2 * v2 * g0;
+        if (disc >= 0) {
+            double r1 = (-v1 + sqrt(disc)) / v2, r2 = (-v1 - sqrt(disc)) / v2;
+            s = r1 > 0 && (r2 <= 0 || r1 < r2) ? r1 : r2 > 0 ? r2 : NAN;
+        }
+    } else if (v1 > 0) {
+        s = g0 / v1;
+    }
+    if (!(s > 0) || s > 1e-3 * env->scale)
+        return false;
+    double a = xs + dir * s / 2, b = xs + dir * 2 * s;
+    if (!(qd__orb_gap(env, a) > 0) || !(qd__orb_gap(env, b) <= 0))
+        return false;
+    *end = polish(env, qd__orb_brent(env, qd__orb_gap, a, b), xs);
+    return true;
+}
+
 /* One side of the motion from xs: a turning point, an open end or a
  * singular point. */
 static qd__orb_end side(qd__orb_env *env, double xs, int dir, double *end) {
     double a, b;
+    if (near_turn(env, xs, dir, end))
+        return QD__ORB_FOUND;
     qd__orb_end e = qd__orb_scan(env, qd__orb_gap, xs, dir, &a, &b);
     if (e == QD__ORB_FOUND)
-        *end = qd__orb_brent(env, qd__orb_gap, a, b);
+        *end = polish(env, qd__orb_brent(env, qd__orb_gap, a, b), a);
     else if (e == QD__ORB_SINGULAR)
         *end = b;
     else
@@ -187,7 +226,7 @@ static void barrier_missed(qd__orb_env *env, double xs, int dir, const qd_orbit_
             continue;
         }
         if (qd__orb_gap(env, prev) > 0) {
-            *end = qd__orb_brent(env, qd__orb_gap, prev, c->x);
+            *end = polish(env, qd__orb_brent(env, qd__orb_gap, prev, c->x), prev);
             *e = QD__ORB_FOUND;
         }
         return;
@@ -289,6 +328,36 @@ static void circular_limits(qd__orb_env *env, double x, qd_orbit_result *r) {
         r->advance[i] = o[QD__ORB_RATE + i] * r->period;
 }
 
+/* A bound motion about a stable circle x_c: E - V_eff, of size V2 A^2/2
+ * for an amplitude A, is formed from E with an absolute error eps |E|, so
+ * the quadratures lose eps |E| / (E - V_eff(x_c)) of their digits; the
+ * small-oscillation expansion (period 2 pi sqrt(M/V2), each ignored
+ * coordinate advancing at its rate at x_c) errs by about (A/x_c)^2.  The
+ * smaller of the two is the result's error; true when that is the
+ * expansion, which is then filled in. */
+static bool near_circle(qd__orb_env *env, qd_orbit_result *r) {
+    const qd_orbit_circle *c = NULL;
+    for (size_t k = 0; k < r->ncircle; k++)
+        if (r->circle[k].stable == 1 && r->circle[k].x > r->lo && r->circle[k].x < r->hi)
+            c = &r->circle[k];
+    if (!c)
+        return false;
+    double A = (r->hi - r->lo) / 2, gap = env->E - c->energy;
+    double expansion = (A / fmax(fabs(c->x), A)) * (A / fmax(fabs(c->x), A));
+    double cancel = 2.2e-16 * (fabs(env->E) + fabs(c->energy)) / gap;
+    if (!(gap > 0) || !(expansion < cancel)) {
+        if (gap > 0)
+            r->quad_error = fmax(r->quad_error, cancel);
+        return false;
+    }
+    const double *o = qd__orb_at(env, c->x);
+    r->period = 2 * PI / sqrt(o[QD__ORB_V2] / o[QD__ORB_M]);
+    for (size_t i = 0; i < r->nign; i++)
+        r->advance[i] = o[QD__ORB_RATE + i] * r->period;
+    r->quad_error = expansion;
+    return true;
+}
+
 /* V_eff not finite at x = 0 and not continuous through it: the centre of a
  * central force (V_eff -> +-inf), not the 0/0 of a centrifugal term with no
  * momentum (a spherical pendulum swinging through the vertical). */
@@ -339,6 +408,36 @@ static void asymptotic(qd__orb_env *env, double xs, qd_orbit_result *r) {
     }
 }
 
+/* da nearer x0 than dc (a tie to the earlier, so that one of -pi, pi stays). */
+static bool nearer(double da, double dc, bool earlier, double scale) {
+    return fabs(da - dc) <= 1e-12 * scale ? earlier : da < dc;
+}
+
+/* A periodic V_eff (an angle coordinate) repeats its circles every 2 pi:
+ * those 2 pi k from one nearer x0, at the same energy and curvature, are the
+ * same motion and are dropped. */
+static void merge_periodic(qd__orb_env *env, double x0, qd_orbit_result *r) {
+    size_t n = 0;
+    for (size_t i = 0; i < r->ncircle; i++) {
+        qd_orbit_circle *c = &r->circle[i];
+        bool dup = false;
+        for (size_t j = 0; j < r->ncircle && !dup; j++) {
+            const qd_orbit_circle *d = &r->circle[j];
+            double turns = (c->x - d->x) / (2 * PI), k = round(turns);
+            dup = j != i && k != 0 && fabs(turns - k) <= 1e-9 * fmax(1, fabs(k)) &&
+                  nearer(fabs(d->x - x0), fabs(c->x - x0), j < i, env->scale) &&
+                  same_energy(c->energy, d->energy) &&
+                  same_energy(c->curvature, d->curvature);
+        }
+        if (dup) {
+            qd__free(c->apsidal);
+            continue;
+        }
+        r->circle[n++] = *c;
+    }
+    r->ncircle = n;
+}
+
 static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, double c0,
                          bool energy_given, qd_orbit_result *r) {
     qd_status st = QD_OK;
@@ -353,7 +452,9 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
         classify(env, xs, r);
     if (r->kind != QD_ORBIT_CIRCULAR)
         asymptotic(env, xs, r);
-    if (r->kind != QD_ORBIT_CIRCULAR && r->kind != QD_ORBIT_ASYMPTOTIC)
+    if (r->kind == QD_ORBIT_BOUND && near_circle(env, r))
+        ; /* the expansion about the circle is the more accurate */
+    else if (r->kind != QD_ORBIT_CIRCULAR && r->kind != QD_ORBIT_ASYMPTOTIC)
         st = qd__orb_quadratures(ctx, env, r);
     for (size_t i = 0; i < r->nign && (r->kind == QD_ORBIT_BOUND || r->kind == QD_ORBIT_CIRCULAR);
          i++) {
@@ -362,6 +463,7 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
         if (fabs(r->precession[i]) <= 8 * fmax(r->quad_error, 1e-13) * fabs(r->advance[i]))
             r->precession[i] = 0; /* closed to within the quadrature's error */
     }
+    merge_periodic(env, xs, r);
     if (st == QD_OK && env->o->kepler) {
         const double *o = qd__orb_at(env, xs);
         double w = 2 * (env->E - o[QD__ORB_V]) / o[QD__ORB_M];

@@ -865,6 +865,8 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
             Fl += x[p->off_lam + m] * y[p->s->ns + 1 + m];
     }
     out->action = S + Fl;
+    /* p.q' = L + h along the motion, h = E conserved: A = S + E T */
+    out->abbreviated = p->energy ? out->action + p->E * T : NAN;
     /* the second variation along the path: the Jacobi equation from its
      * start (foci.c); a minimum iff no focus in (t0, t1] and Legendre's
      * condition (Desloge ch. 84) */
@@ -881,8 +883,12 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
     return true;
 }
 
+#define ALL_SEGMENTS 8  /* multiple shooting of the --all search at fixed energy */
+
 static int by_action(const void *a, const void *b) {
-    double x = ((const qd_path *)a)->action, y = ((const qd_path *)b)->action;
+    const qd_path *pa = a, *pb = b;
+    bool fixed_e = !isnan(pa->abbreviated);  /* Maupertuis: by A, the action he varies */
+    double x = fixed_e ? pa->abbreviated : pa->action, y = fixed_e ? pb->abbreviated : pb->action;
     return (x > y) - (x < y);
 }
 
@@ -904,13 +910,97 @@ static void spread(size_t n, size_t i, size_t count, double *u) {
                       : 2 * halton(i + 1, primes[j % 16]) - 1;
 }
 
+#define PATH_MAXCON 16  /* constraints the start velocities are projected onto */
+
 typedef struct search {
     shoot sh;
     const qd_path_opts *o;
     size_t nstart;
     double omega, span, vscale, lscale;
     double *x, *F;
+    /* the velocity constraints at the start, A v + c = 0 (m rows of n):
+     * every start velocity is projected onto them, so that a constrained
+     * path (a sphere written as a constraint) needs no --guess */
+    size_t ncon;
+    double A[PATH_MAXCON * 32], c[PATH_MAXCON];
 } search;
+
+/* A and c of every constraint at (t0, q0); false when out of memory. */
+static bool start_constraints(sys *s, const qd_path_opts *o, search *sr) {
+    const qd_eom *e = s->e;
+    size_t n = e->n;
+    sr->ncon = 0;
+    if (e->ncon == 0 || e->ncon > PATH_MAXCON)
+        return true;
+    for (size_t k = 0; k < e->ncon; k++) {
+        const qd_expr *outs[33];
+        for (size_t j = 0; j < n; j++)
+            outs[j] = e->con[k].a[j];
+        outs[n] = e->con[k].a0;
+        qd_prog *p = qd_prog_new(s->ctx, s->nsym, s->syms, n + 1, outs);
+        if (!p)
+            return false;
+        double out[33], zero[32] = {0};
+        sys_load(s, o->t0, o->q0, zero);
+        qd_prog_run(p, s->vals, out);
+        qd_prog_free(p);
+        memcpy(sr->A + k * n, out, n * sizeof *out);
+        sr->c[k] = out[n];
+    }
+    sr->ncon = e->ncon;
+    return true;
+}
+
+/* v - A^T y with (A A^T) y = A v + c: the nearest velocity the constraints
+ * admit (least squares; a dependent row is skipped). */
+static void project_start(const search *sr, size_t n, double *v) {
+    size_t m = sr->ncon;
+    if (!m)
+        return;
+    double G[PATH_MAXCON * PATH_MAXCON], r[PATH_MAXCON], y[PATH_MAXCON] = {0};
+    for (size_t a = 0; a < m; a++) {
+        r[a] = sr->c[a];
+        for (size_t j = 0; j < n; j++)
+            r[a] += sr->A[a * n + j] * v[j];
+        for (size_t b = 0; b < m; b++) {
+            G[a * m + b] = 0;
+            for (size_t j = 0; j < n; j++)
+                G[a * m + b] += sr->A[a * n + j] * sr->A[b * n + j];
+        }
+    }
+    /* Gaussian elimination with partial pivoting; a pivot below 1e-12 of
+     * the diagonal's largest is a redundant row, its y left 0 */
+    double top = 0;
+    for (size_t a = 0; a < m; a++)
+        top = fmax(top, fabs(G[a * m + a]));
+    bool used[PATH_MAXCON] = {false};
+    size_t piv[PATH_MAXCON];
+    for (size_t col = 0; col < m; col++) {
+        size_t best = m;
+        for (size_t a = 0; a < m; a++)
+            if (!used[a] && (best == m || fabs(G[a * m + col]) > fabs(G[best * m + col])))
+                best = a;
+        piv[col] = m;
+        if (best == m || !(fabs(G[best * m + col]) > 1e-12 * top))
+            continue;
+        used[best] = true;
+        piv[col] = best;
+        for (size_t a = 0; a < m; a++) {
+            if (a == best)
+                continue;
+            double f = G[a * m + col] / G[best * m + col];
+            for (size_t b = 0; b < m; b++)
+                G[a * m + b] -= f * G[best * m + b];
+            r[a] -= f * r[best];
+        }
+    }
+    for (size_t col = 0; col < m; col++)
+        if (piv[col] < m)
+            y[col] = r[piv[col]] / G[piv[col] * m + col];
+    for (size_t j = 0; j < n; j++)
+        for (size_t a = 0; a < m; a++)
+            v[j] -= sr->A[a * n + j] * y[a];
+}
 
 /* The multipliers' starts: lambda0 + lscale times these, cycled fastest
  * (a multiplier's scale is the problem's, and a wrong sign can make the
@@ -944,6 +1034,7 @@ static void make_start(search *sr, size_t i, double *x) {
                 v[j] += sr->vscale * u[j];
         }
     }
+    project_start(sr, n, v);
     if (p->energy) {  /* v scaled so that h = E, T from the chord at that speed */
         double lh0[2], lh1[2], z[32] = {0};
         lagr_h(p->s, p->t0, p->q0, z, lh0);
@@ -1045,6 +1136,11 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     double Tg = energy ? (sr.omega > 0 ? 1 / sr.omega : 1) : o->t1 - o->t0;
     s.hmax = fmin(Tg / 200, sr.omega > 0 ? 0.04 / sr.omega : INFINITY);
     size_t N = o->segments ? o->segments : (size_t)ceil(Tg * sr.omega / 3);
+    /* at fixed energy the time is unknown and omega may be 0 (a uniform
+     * field): a single shot from a far start misses the long paths (the
+     * projectile's high lob), so the multistart shoots in ALL_SEGMENTS */
+    if (energy && o->all && !o->segments && N < ALL_SEGMENTS)
+        N = ALL_SEGMENTS;
     p->N = N < 1 ? 1 : N > PATH_MAXSEG ? PATH_MAXSEG : N;
     shoot_layout(p, o->free0);
     sr.o = o;
@@ -1060,6 +1156,10 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     sr.vscale = 2.5 * fmax(norm2(n, vbar), sr.omega * fmax(sr.span, 1));
     if (energy)
         sr.vscale = 1.5;
+    if (!start_constraints(&s, o, &sr)) {
+        st = qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
+        goto done;
+    }
     sr.x = qd__malloc(ctx, p->nx * sizeof *sr.x);
     sr.F = qd__malloc(ctx, p->nx * sizeof *sr.F);
     if (!sr.x || !sr.F) {

@@ -20,7 +20,11 @@
  * Names: [A-Za-z_][A-Za-z0-9_]*.  A name is, in this order, a symbol of the
  * context (so a symbol named e stays that symbol), pi, e, t (the time), or a
  * new plain symbol (an error when opts->new_symbols is false); before all
- * these, the name the time prints as (qd_print_set_time_name) is the time.  A name
+ * these, the name the time prints as (qd_print_set_time_name) is the time.
+ * An unknown name that the text writes with a prime anywhere (r' or r'')
+ * is made a coordinate, not a plain symbol, so that r' is a symbol of its own
+ * (a plain symbol's rate would be 0: `m/2*r'^2` must not read as 0); a plain
+ * symbol the context already has, written with a prime, is refused.  A name
  * followed by '(' is a built-in function, sqrt, or a user function; with
  * primes before the '(' it is a derivative of a user function: V'(r) and
  * V''(r) for one argument, V'[1,2](x, y) with 1-based argument slots.
@@ -57,6 +61,7 @@ typedef struct rd {
     int nest;
     bool new_symbols;
     bool failed;
+    const char *primed;  /* "\0"-separated names written as q' in the text, or NULL */
     qd_read_error *err;
 } rd;
 
@@ -262,6 +267,48 @@ static const qd_expr *number(rd *p) {
     return check(p, qd_rat_str(p->ctx, buf), off, len);
 }
 
+/* Is name one of the names the text writes with a prime (prescan)? */
+static bool is_primed(const rd *p, const char *name) {
+    for (const char *q = p->primed; q && *q; q += strlen(q) + 1)
+        if (!strcmp(q, name))
+            return true;
+    return false;
+}
+
+/* The names written q', q'', ... (not V'(r), a function's derivative), as
+ * "\0"-separated strings ending in an empty one, in a buffer the caller
+ * frees; NULL when there are none or out of memory (names then stay plain:
+ * the reader refuses a plain symbol's prime below, so nothing reads as 0). */
+static char *prescan_primed(qd_ctx *ctx, const char *text) {
+    rd q = {.ctx = ctx, .s = text, .depth = 1};
+    size_t n = 0, cap = 0;
+    char *out = NULL;
+    for (next(&q); q.tok != T_EOF && q.tok != T_BAD; next(&q)) {
+        if (q.tok != T_NAME || text[q.pos] != '\'')
+            continue;
+        size_t off = q.tpos, len = q.tlen, after = q.pos;
+        while (text[after] == '\'')
+            after++;
+        while (text[after] == ' ' || text[after] == '\t' || text[after] == '\r' || text[after] == '\n')
+            after++;
+        if (text[after] == '(' || text[after] == '[' || len >= MAX_NAME)
+            continue;
+        if (n + len + 2 > cap) {
+            size_t ncap = 2 * (n + len + 2);
+            char *b = qd__realloc(ctx, out, ncap);
+            if (!b)
+                break;
+            out = b;
+            cap = ncap;
+        }
+        memcpy(out + n, text + off, len);
+        n += len;
+        out[n++] = '\0';
+        out[n] = '\0';
+    }
+    return out;
+}
+
 /* A name standing alone: a symbol, pi, e, t, or a new symbol.  The name t
  * prints as (qd_print_set_time_name: x for `independent x`) is t first,
  * so that what the text printer writes reads back. */
@@ -279,6 +326,8 @@ static const qd_expr *name_value(rd *p, const char *name, size_t off, size_t len
         return check(p, qd_time(p->ctx), off, len);
     if (!p->new_symbols)
         return fail(p, off, len, NULL, "unknown name '%s'", name);
+    if (is_primed(p, name))
+        return check(p, qd_coord(p->ctx, name), off, len);
     return check(p, qd_symbol(p->ctx, name), off, len);
 }
 
@@ -465,6 +514,9 @@ static const qd_expr *primary(rd *p) {
 static const qd_expr *postfix(rd *p) {
     size_t off = p->tpos;
     const qd_expr *e = primary(p);
+    if (e && p->tok == T_PRIME && e->kind == QD_SYMBOL && e->tag == QD_ROLE_PLAIN)
+        return fail(p, off, p->pos - off, "declare it a coordinate, or write it as a symbol of its own",
+                    "'%s' is a plain symbol: its rate would be 0", e->u.sym.name);
     while (e && p->tok == T_PRIME) {
         if (e->kind == QD_SYMBOL && e->tag == QD_ROLE_COORD)
             e = qd_jet(p->ctx, e, e->order + 1u);
@@ -569,6 +621,24 @@ static const qd_expr *sum(rd *p) {
 }
 
 /* input := sum EOF */
+static const qd_expr *read_input(rd *p) {
+    next(p);
+    while (p->tok == T_NEWLINE)
+        next(p);
+    if (p->tok == T_EOF)
+        return fail(p, p->tpos, 0, "write an expression such as x + 1", "empty expression");
+    const qd_expr *e = sum(p);
+    while (e && p->tok == T_NEWLINE)
+        next(p);
+    if (!e || p->tok == T_EOF)
+        return e;
+    if (p->tok == T_RPAR)
+        return fail(p, p->tpos, 1, "remove it, or open it with '(' before", "unmatched ')'");
+    if (p->tok == T_NUM || p->tok == T_NAME || p->tok == T_LPAR)
+        return unexpected(p, "an operator", "write '*' to multiply");
+    return unexpected(p, "an operator or the end of the input", NULL);
+}
+
 const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
                        qd_read_error *err) {
     QD_ARGS(NULL, ctx && text);
@@ -578,19 +648,9 @@ const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
         return NULL;
     rd p = {.ctx = ctx, .s = text ? text : "", .new_symbols = !opts || opts->new_symbols,
             .err = err};
-    next(&p);
-    while (p.tok == T_NEWLINE)
-        next(&p);
-    if (p.tok == T_EOF)
-        return fail(&p, p.tpos, 0, "write an expression such as x + 1", "empty expression");
-    const qd_expr *e = sum(&p);
-    while (e && p.tok == T_NEWLINE)
-        next(&p);
-    if (!e || p.tok == T_EOF)
-        return e;
-    if (p.tok == T_RPAR)
-        return fail(&p, p.tpos, 1, "remove it, or open it with '(' before", "unmatched ')'");
-    if (p.tok == T_NUM || p.tok == T_NAME || p.tok == T_LPAR)
-        return unexpected(&p, "an operator", "write '*' to multiply");
-    return unexpected(&p, "an operator or the end of the input", NULL);
+    char *primed = p.new_symbols ? prescan_primed(ctx, p.s) : NULL;
+    p.primed = primed;
+    const qd_expr *e = read_input(&p);
+    qd__free(primed);
+    return e;
 }
