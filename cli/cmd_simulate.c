@@ -271,6 +271,20 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_end_object(j);
     cli_json_key(j, "events");
     cli_json_number(j, (double)st->events);
+    if (st->events_unresolved) {
+        /* steps where an event function oscillated faster than the search resolves */
+        cli_json_key(j, "events_unresolved");
+        cli_json_begin_object(j);
+        cli_json_key(j, "steps");
+        cli_json_number(j, (double)st->events_unresolved);
+        cli_json_key(j, "event");
+        cli_json_number(j, (double)st->events_unresolved_event + 1);
+        cli_json_key(j, "t");
+        cli_json_number(j, st->events_unresolved_t);
+        cli_json_key(j, "spacing");
+        cli_json_number(j, st->events_unresolved_spacing);
+        cli_json_end_object(j);
+    }
     if (qd_model_nimpacts(c->mf.model))
         impacts_json(j, c, st);
     if (qd_sim_ncontacts(c->s))
@@ -617,6 +631,14 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
                 qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
+        if (st.events_unresolved)
+            fprintf(stderr, "qdot: simulate: note: event %zu oscillates faster than the event "
+                    "search resolves in %zu step%s (the first at t = %.17g): its crossings closer "
+                    "together than %.3g (more than about %.3g per unit time) may have been "
+                    "missed; shorter steps (a smaller --rtol) resolve more\n", st.events_unresolved_event + 1,
+                    st.events_unresolved, st.events_unresolved == 1 ? "" : "s",
+                    st.events_unresolved_t, st.events_unresolved_spacing,
+                    1 / st.events_unresolved_spacing);
         if (st.initial_moved_q > 1e-4 || st.initial_moved_qd > 1e-4) /* far off, not rounding */
             fprintf(stderr, "qdot: simulate: note: the initial state was off the constraints and "
                     "was projected onto them: q moved by %.3g, q' by %.3g\n", st.initial_moved_q,

@@ -284,6 +284,16 @@ typedef struct qd_sim_stats {
      * (Euclidean; the velocities 0 for a system in speeds), so that a
      * caller can say so when it is not small (the CLI prints a note). */
     double initial_moved_q, initial_moved_qd;
+    /* Event functions that oscillate faster than the event search resolves
+     * (docs/design.md, "Events"): the steps where one turned at consecutive
+     * samples of the finest sampling (64 per step), the first such step's
+     * start time and event index (in the order added; then the impacts',
+     * then friction's), and the widest sample spacing among those steps:
+     * crossings closer together than it may have been missed there.  0
+     * when every step was resolved. */
+    size_t events_unresolved;
+    double events_unresolved_t, events_unresolved_spacing;
+    size_t events_unresolved_event;
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the

@@ -195,7 +195,10 @@ class SimStats(Structure):
                 ("contact", c_size_t), ("transitions", c_size_t),
                 ("friction_dissipated", c_double), ("energy_balance_error", c_double),
                 ("surface_work", c_double),
-                ("initial_moved_q", c_double), ("initial_moved_qd", c_double)] + _TAIL
+                ("initial_moved_q", c_double), ("initial_moved_qd", c_double),
+                ("events_unresolved", c_size_t), ("events_unresolved_t", c_double),
+                ("events_unresolved_spacing", c_double),
+                ("events_unresolved_event", c_size_t)] + _TAIL
 
 
 class StateSpace(Structure):

@@ -340,6 +340,7 @@ static void run_free(qd__run *r, qd__integ *it) {
     qd__free(it->y);
     qd__free(r->row);
     qd__free(r->ev_hit);
+    qd__free(r->smp);
     qd__impacts_free(r);
 }
 
@@ -349,7 +350,8 @@ static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     it->y = qd__malloc(s->ctx, (2 * d + 1) * sizeof *it->y);
     r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
     r->ev_hit = qd__calloc(s->ctx, 2 * ne + 1, sizeof *r->ev_hit);
-    if (!it->y || !r->row || !r->ev_hit)
+    r->smp = qd__malloc(s->ctx, ((QD__EV_SAMPLES_MAX + 1) * ne + 2 * ne + 1) * sizeof *r->smp);
+    if (!it->y || !r->row || !r->ev_hit || !r->smp)
         return QD_ERR_NOMEM;
     it->yold = it->y + d;
     r->qd = r->row + 2 * ncols;
@@ -361,6 +363,7 @@ static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     r->ev_y = r->gnew + ne;
     r->ev_t = r->ev_y + ne * d;
     r->ev_ok = r->ev_hit + ne;
+    r->ev_after = r->smp + (QD__EV_SAMPLES_MAX + 1) * ne;
     return QD_OK;
 }
 
@@ -534,6 +537,9 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
             (*nevents)++;
             if (st == QD_OK)
                 emit(em, (int)ke, r->row);
+            /* the same function may cross again later in the step */
+            if (st == QD_OK && !s->ev[ke].stop)
+                st = qd__events_next(r, ke);
         }
         if (st != QD_OK)
             return st;
@@ -883,6 +889,10 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     stats->energy_error_max = den > 0 ? ms.dEmax / den : ms.dEmax;
     stats->constraint_error_max = ms.cmax;
     stats->t = it.t;
+    stats->events_unresolved = r.fast_steps;
+    stats->events_unresolved_t = r.fast_t;
+    stats->events_unresolved_event = r.fast_event;
+    stats->events_unresolved_spacing = r.fast_spacing;
     if (s->fr) {
         stats->transitions = s->fr->ntr;
         stats->friction_dissipated = it.y ? it.y[2 * s->n] : 0;
