@@ -258,8 +258,10 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_number(j, (double)st->rejected);
     cli_json_key(j, "wall_s");
     cli_json_number(j, wall);
-    cli_json_key(j, "energy_error_max");
+    cli_json_key(j, "energy_error_max"); /* over the rows written */
     cli_json_number(j, st->energy_error_max);
+    cli_json_key(j, "energy_error_steps"); /* at the integrator's steps */
+    cli_json_number(j, st->energy_error_steps);
     cli_json_key(j, "constraint_error_max");
     cli_json_number(j, st->constraint_error_max);
     cli_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
@@ -625,9 +627,11 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     } else {
         fprintf(stderr,
                 "qdot: simulate: %s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, "
-                "%.3g s; energy error %.3g, constraint error %.3g%s\n",
+                "%.3g s; energy error %.3g over the rows written (%.3g at the steps), "
+                "constraint error %.3g%s\n",
                 qd_sim_method_name(c->opts.method), c->opts.t0, st.t, st.steps, st.evals,
-                st.rejected, wall, st.energy_error_max, st.constraint_error_max,
+                st.rejected, wall, st.energy_error_max, st.energy_error_steps,
+                st.constraint_error_max,
                 qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");

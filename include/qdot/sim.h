@@ -237,7 +237,12 @@ typedef struct qd_sim_opts {
 
 typedef struct qd_sim_stats {
     size_t steps, evals, rejected;
-    double energy_error_max;     /* max |E(t) - E(0)| / max(|E(0)|, max T) */
+    /* max |E(t) - E(0)| / max(|E(0)|, max T) over the rows the run made
+     * (passed to the sink, or not: at t0, the output grid or every step,
+     * the events, the end), so over what a caller gets: a grid row between
+     * steps carries the dense output's error too.  energy_error_steps (at
+     * the end of the struct) is the same at the integrator's accepted steps. */
+    double energy_error_max;
     double constraint_error_max; /* max |residual| of every constraint (and of
                                     the holonomic ones differentiated) */
     double E0;                   /* the Jacobi integral h = sum q' dL/dq' - L at t0 */
@@ -294,6 +299,7 @@ typedef struct qd_sim_stats {
     size_t events_unresolved;
     double events_unresolved_t, events_unresolved_spacing;
     size_t events_unresolved_event;
+    double energy_error_steps;   /* energy_error_max at the accepted steps */
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the

@@ -198,7 +198,8 @@ class SimStats(Structure):
                 ("initial_moved_q", c_double), ("initial_moved_qd", c_double),
                 ("events_unresolved", c_size_t), ("events_unresolved_t", c_double),
                 ("events_unresolved_spacing", c_double),
-                ("events_unresolved_event", c_size_t)] + _TAIL
+                ("events_unresolved_event", c_size_t),
+                ("energy_error_steps", c_double)] + _TAIL
 
 
 class StateSpace(Structure):

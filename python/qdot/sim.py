@@ -57,7 +57,9 @@ class Result(Table):
         unilateral contacts (a Table, empty without them);
     stats: the run's qd_sim_stats as a dict (steps, evals, rejected,
         energy_error_max, constraint_error_max, E0, events, t, impacts, ...);
-    energy_error_max: max |E(t) - E(0)| / max(|E(0)|, max T) over the run;
+    energy_error_max: max |E(t) - E(0)| / max(|E(0)|, max T) over the rows
+        returned (dense output between steps included);
+    energy_error_steps: the same at the integrator's accepted steps;
     method: the method's name.
     """
 
@@ -70,6 +72,7 @@ class Result(Table):
         self.stats = {name: getattr(stats, name) for name, _ in stats._fields_
                       if not name.startswith("_")}
         self.energy_error_max = stats.energy_error_max
+        self.energy_error_steps = stats.energy_error_steps
         self.method = method
 
     def __repr__(self):

@@ -309,6 +309,7 @@ typedef struct qd__run {
     size_t fast_steps, fast_event;
     double fast_t, fast_spacing;
     struct qd__impacts *imp;           /* the contacts' history (impact.c), or NULL */
+    struct qd__measure *meas;          /* the error measures (run.c), or NULL */
 } qd__run;
 
 /* One contact's history in a run: what the chattering test reads. */
