@@ -31,7 +31,7 @@
 #include "sim_cli.h"
 
 static const char usage_text[] =
-    "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--atol TOL] "
+    "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--every H] [--atol TOL] "
     "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf|taylor] [--precision 64|80|128] "
     "[--out FILE] [--output \"EXPR, ...\"] [--input \"F = EXPR\" | --input F=FILE.csv]... "
     "[--input \"F = lqr\" --about \"q=VALUE, q'=VALUE, F=VALUE\" --lqr \"Q = ..., R = ...\"] "

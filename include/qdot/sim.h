@@ -233,6 +233,12 @@ typedef struct qd_sim_opts {
     /* The Taylor method's arithmetic: 0 or 64 double, 80 long double, 128
      * __float128 (state, time and coefficients; issue 22). */
     int precision;
+    /* The output spacing, for every method (issue 33): rows at t0 + k every
+     * (and t0, the events, the end) from the dense output (the method's
+     * own, else cubic Hermite), whatever the steps are; 0: as dt says
+     * (an adaptive method's dt is its output grid, a fixed step's rows are
+     * its steps).  A grid with more rows than max_steps is refused. */
+    double every;
 } qd_sim_opts;
 
 typedef struct qd_sim_stats {

@@ -182,7 +182,7 @@ class SimOpts(Structure):
                 ("no_project", c_bool), ("max_steps", c_size_t),
                 ("q0", POINTER(c_double)), ("qd0", POINTER(c_double)),
                 ("p0", POINTER(c_double)), ("u0", POINTER(c_double)),
-                ("par", POINTER(c_double)), ("precision", c_int)] + _TAIL
+                ("par", POINTER(c_double)), ("precision", c_int), ("every", c_double)] + _TAIL
 
 
 class SimStats(Structure):

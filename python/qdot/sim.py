@@ -293,7 +293,7 @@ def _add_inputs(core, s, inputs):
 
 
 def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outputs,
-             max_steps, speeds, inputs):
+             max_steps, speeds, inputs, every=None):
     """Model.simulate's work (see there)."""
     kind = _kind(core, speeds and not inputs)
     s, se = _new_sim(core, kind)
@@ -313,7 +313,7 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
         q0, qd0 = doubles(q), doubles(qd)
         opts = SimOpts(method=m, t0=t0, t_end=float(t_end), dt=float(dt or 0),
                        rtol=float(rtol or 0), atol=float(atol or 0), max_steps=max_steps,
-                       q0=q0, qd0=qd0)
+                       q0=q0, qd0=qd0, every=float(every or 0))
         if kind == "hamilton":
             opts.p0 = more
         elif kind == "speeds":

@@ -283,6 +283,19 @@ qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the end time must be after the start time");
         return QD_ERR_ARG;
     }
+    if (!isfinite(o->every) || o->every < 0) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the output spacing must be a positive number (0: "
+                     "rows as the step says), not %g", o->every);
+        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, "every", QD_REASON_NONE, NULL);
+        return QD_ERR_ARG;
+    }
+    if (o->every > 0 && ceil((o->t_end - o->t0) / o->every) > (double)max_steps(o)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the output spacing %.17g from t = %.17g to %.17g asks "
+                     "for %.3g rows, more than the maximum of %zu", o->every, o->t0, o->t_end,
+                     ceil((o->t_end - o->t0) / o->every), max_steps(o));
+        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, "max_steps", QD_REASON_NONE, NULL);
+        return QD_ERR_ARG;
+    }
     if (o->dt < 0) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the step dt must be positive (0: a row at every "
                      "step of an adaptive method), not %g", o->dt);
@@ -516,13 +529,14 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
             *impact = s->nimp;
             *fric = (size_t)-1;
         }
-    bool grid_rows = qd_sim_method_adaptive(o->method) && !o->fixed && o->dt > 0;
+    bool grid_rows = o->every > 0 || (qd_sim_method_adaptive(o->method) && !o->fixed && o->dt > 0);
+    double spacing = o->every > 0 ? o->every : o->dt;
     /* merge grid rows and event rows by time */
     for (;;) {
         double tg = INFINITY, te = INFINITY;
         size_t ke = s->nev;
         if (grid_rows) {
-            double t = o->t0 + (double)*grid * o->dt;
+            double t = o->t0 + (double)*grid * spacing;
             if (t <= tstop && t < o->t_end)
                 tg = t;
         }
@@ -695,7 +709,7 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
     qd_sim *s = r->s;
     qd__integ *it = r->it;
     const qd_sim_opts *o = L->o;
-    bool last, every = L->fixed || !(o->dt > 0);
+    bool last, every = o->every > 0 ? false : L->fixed || !(o->dt > 0);
     bool project = s->m && !o->no_project && o->method != QD_SIM_BDF &&
                    (!s->se || any_holonomic(s));
     size_t N = L->fixed ? (size_t)ceil((o->t_end - o->t0) / o->dt - 1e-9) : 0;
