@@ -31,7 +31,7 @@
 #include "sim_cli.h"
 
 static const char usage_text[] =
-    "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--atol TOL] "
+    "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--every H] [--atol TOL] "
     "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf|taylor] [--precision 64|80|128] "
     "[--out FILE] [--output \"EXPR, ...\"] [--input \"F = EXPR\" | --input F=FILE.csv]... "
     "[--input \"F = lqr\" --about \"q=VALUE, q'=VALUE, F=VALUE\" --lqr \"Q = ..., R = ...\"] "
@@ -243,8 +243,10 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_number(j, (double)st->rejected);
     cli_json_key(j, "wall_s");
     cli_json_number(j, wall);
-    cli_json_key(j, "energy_error_max");
+    cli_json_key(j, "energy_error_max"); /* over the rows written */
     cli_json_number(j, st->energy_error_max);
+    cli_json_key(j, "energy_error_steps"); /* at the integrator's steps */
+    cli_json_number(j, st->energy_error_steps);
     cli_json_key(j, "constraint_error_max");
     cli_json_number(j, st->constraint_error_max);
     cli_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
@@ -256,6 +258,20 @@ static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, 
     cli_json_end_object(j);
     cli_json_key(j, "events");
     cli_json_number(j, (double)st->events);
+    if (st->events_unresolved) {
+        /* steps where an event function oscillated faster than the search resolves */
+        cli_json_key(j, "events_unresolved");
+        cli_json_begin_object(j);
+        cli_json_key(j, "steps");
+        cli_json_number(j, (double)st->events_unresolved);
+        cli_json_key(j, "event");
+        cli_json_number(j, (double)st->events_unresolved_event + 1);
+        cli_json_key(j, "t");
+        cli_json_number(j, st->events_unresolved_t);
+        cli_json_key(j, "spacing");
+        cli_json_number(j, st->events_unresolved_spacing);
+        cli_json_end_object(j);
+    }
     if (qd_model_nimpacts(c->mf.model))
         impacts_json(j, c, st);
     if (qd_sim_ncontacts(c->s))
@@ -610,12 +626,22 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     } else {
         fprintf(stderr,
                 "qdot: simulate: %s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, "
-                "%.3g s; energy error %.3g, constraint error %.3g%s\n",
+                "%.3g s; energy error %.3g over the rows written (%.3g at the steps), "
+                "constraint error %.3g%s\n",
                 qd_sim_method_name(c->opts.method), c->opts.t0, st.t, st.steps, st.evals,
-                st.rejected, wall, st.energy_error_max, st.constraint_error_max,
+                st.rejected, wall, st.energy_error_max, st.energy_error_steps,
+                st.constraint_error_max,
                 qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
         if (st.events)
             fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
+        if (st.events_unresolved)
+            fprintf(stderr, "qdot: simulate: note: event %zu oscillates faster than the event "
+                    "search resolves in %zu step%s (the first at t = %.17g): its crossings closer "
+                    "together than %.3g (more than about %.3g per unit time) may have been "
+                    "missed; shorter steps (a smaller --rtol) resolve more\n", st.events_unresolved_event + 1,
+                    st.events_unresolved, st.events_unresolved == 1 ? "" : "s",
+                    st.events_unresolved_t, st.events_unresolved_spacing,
+                    1 / st.events_unresolved_spacing);
         if (st.initial_moved_q > 1e-4 || st.initial_moved_qd > 1e-4) /* far off, not rounding */
             fprintf(stderr, "qdot: simulate: note: the initial state was off the constraints and "
                     "was projected onto them: q moved by %.3g, q' by %.3g\n", st.initial_moved_q,

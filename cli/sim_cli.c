@@ -95,6 +95,10 @@ int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
         a->has_dt = true;
         return number("--dt", v, &a->dt, true, &a->dt_text);
     }
+    if ((v = cli_value(argc, argv, i, "--every"))) {
+        a->has_every = true;
+        return number("--every", v, &a->every, true, &a->every_text);
+    }
     if ((v = cli_value(argc, argv, i, "--rtol"))) {
         a->has_rtol = true;
         return number("--rtol", v, &a->rtol, true, &a->rtol_text);
@@ -623,6 +627,9 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     int rc = option_value(c, "--t-end", a->t_end_text, false, &t_end);
     if (rc == QD_EXIT_OK)
         rc = option_value(c, "--dt", a->dt_text, true, &dt);
+    double every = a->every;
+    if (rc == QD_EXIT_OK && a->has_every)
+        rc = option_value(c, "--every", a->every_text, true, &every);
     if (rc == QD_EXIT_OK)
         rc = option_value(c, "--rtol", a->rtol_text, true, &rtol);
     if (rc == QD_EXIT_OK)
@@ -630,7 +637,9 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     if (rc != QD_EXIT_OK)
         return rc;
     if (a->has_dt && a->has_rtol && !a->method_name) {
-        cli_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method");
+        cli_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method\n"
+                       "hint: for rows every %g with step control: --every %g --rtol %g (--dt "
+                       "is the step of a fixed-step method)", dt, dt, rtol);
         return QD_EXIT_USAGE;
     }
     if (a->method_name)
@@ -638,6 +647,11 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     else
         o->method = qd_sim_default_method(c->s, a->has_dt);
     o->dt = a->has_dt ? dt : 0;
+    o->every = a->has_every ? every : 0;
+    if (a->has_every && !(every > 0)) {
+        cli_diag_error("--every takes the output spacing, a positive number, not %g", every);
+        return QD_EXIT_USAGE;
+    }
     o->rtol = a->has_rtol ? rtol : 0;
     o->atol = atol;
     o->no_project = a->no_project;

@@ -26,10 +26,11 @@ typedef struct cli_sim_args {
     const char *inputs[QD_SIM_MAX_LIST]; /* --input "F = EXPR" or F=FILE.csv */
     size_t ninputs;
     const char *about, *lqr; /* --input "F = lqr": the operating point, the weights */
-    double t_end, dt, rtol, atol;
+    double t_end, dt, rtol, atol, every;
     /* the same given as expressions in the parameters ("2*pi/w"): read
      * once the model is loaded (cli_sim_setup), else NULL */
-    const char *t_end_text, *dt_text, *rtol_text, *atol_text;
+    const char *t_end_text, *dt_text, *rtol_text, *atol_text, *every_text;
+    bool has_every;
     bool has_t_end, has_dt, has_rtol, native, no_project, json;
     bool no_speeds;    /* a model with speeds: the multiplier form instead */
     size_t max_steps;

@@ -234,11 +234,22 @@ typedef struct qd_sim_opts {
     /* The Taylor method's arithmetic: 0 or 64 double, 80 long double, 128
      * __float128 (state, time and coefficients; issue 22). */
     int precision;
+    /* The output spacing, for every method (issue 33): rows at t0 + k every
+     * (and t0, the events, the end) from the dense output (the method's
+     * own, else cubic Hermite), whatever the steps are; 0: as dt says
+     * (an adaptive method's dt is its output grid, a fixed step's rows are
+     * its steps).  A grid with more rows than max_steps is refused. */
+    double every;
 } qd_sim_opts;
 
 typedef struct qd_sim_stats {
     size_t steps, evals, rejected;
-    double energy_error_max;     /* max |E(t) - E(0)| / max(|E(0)|, max T) */
+    /* max |E(t) - E(0)| / max(|E(0)|, max T) over the rows the run made
+     * (passed to the sink, or not: at t0, the output grid or every step,
+     * the events, the end), so over what a caller gets: a grid row between
+     * steps carries the dense output's error too.  energy_error_steps (at
+     * the end of the struct) is the same at the integrator's accepted steps. */
+    double energy_error_max;
     double constraint_error_max; /* max |residual| of every constraint (and of
                                     the holonomic ones differentiated) */
     double E0;                   /* the Jacobi integral h = sum q' dL/dq' - L at t0 */
@@ -285,6 +296,17 @@ typedef struct qd_sim_stats {
      * (Euclidean; the velocities 0 for a system in speeds), so that a
      * caller can say so when it is not small (the CLI prints a note). */
     double initial_moved_q, initial_moved_qd;
+    /* Event functions that oscillate faster than the event search resolves
+     * (docs/design.md, "Events"): the steps where one turned at consecutive
+     * samples of the finest sampling (64 per step), the first such step's
+     * start time and event index (in the order added; then the impacts',
+     * then friction's), and the widest sample spacing among those steps:
+     * crossings closer together than it may have been missed there.  0
+     * when every step was resolved. */
+    size_t events_unresolved;
+    double events_unresolved_t, events_unresolved_spacing;
+    size_t events_unresolved_event;
+    double energy_error_steps;   /* energy_error_max at the accepted steps */
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the

@@ -182,7 +182,7 @@ class SimOpts(Structure):
                 ("no_project", c_bool), ("max_steps", c_size_t),
                 ("q0", POINTER(c_double)), ("qd0", POINTER(c_double)),
                 ("p0", POINTER(c_double)), ("u0", POINTER(c_double)),
-                ("par", POINTER(c_double)), ("precision", c_int)] + _TAIL
+                ("par", POINTER(c_double)), ("precision", c_int), ("every", c_double)] + _TAIL
 
 
 class SimStats(Structure):
@@ -195,7 +195,11 @@ class SimStats(Structure):
                 ("contact", c_size_t), ("transitions", c_size_t),
                 ("friction_dissipated", c_double), ("energy_balance_error", c_double),
                 ("surface_work", c_double),
-                ("initial_moved_q", c_double), ("initial_moved_qd", c_double)] + _TAIL
+                ("initial_moved_q", c_double), ("initial_moved_qd", c_double),
+                ("events_unresolved", c_size_t), ("events_unresolved_t", c_double),
+                ("events_unresolved_spacing", c_double),
+                ("events_unresolved_event", c_size_t),
+                ("energy_error_steps", c_double)] + _TAIL
 
 
 class ScenePoint(Structure):

@@ -404,7 +404,8 @@ class Model:
             lib.qd_scene_shape_free(byref(sh))
 
     def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
-                 events=(), stop_at=None, outputs=(), max_steps=0, speeds=True, inputs=None):
+                 events=(), stop_at=None, outputs=(), max_steps=0, speeds=True, inputs=None,
+                 every=None):
         """Integrate the equations of motion from the initial state to t_end
         (qd_sim_run) and return a qdot.Result.
 
@@ -413,7 +414,9 @@ class Model:
         (gl4 with a fixed step dt for conservative systems, else dop853;
         dop853 with dt as its output grid when rtol is given too).
         rtol, atol: step control; dt: the fixed step of fixed-step methods,
-        the output grid of adaptive ones.  initial: {name: value} over the
+        the output grid of adaptive ones.  every: the output spacing for
+        any method (rows at t0 + k every from the dense output, as --every;
+        with rtol and no dt an adaptive method).  initial: {name: value} over the
         model's `initial` line (coordinates, velocities "NAME'", "t", the
         momenta of a model given by H).  events: conditions "EXPR = EXPR"
         with optional guards ", EXPR > EXPR" (as --event); their rows are
@@ -435,7 +438,7 @@ class Model:
         return _sim.simulate(self._core, t_end, method=method, rtol=rtol, atol=atol, dt=dt,
                              initial=initial or {}, events=list(events), stop_at=stop_at,
                              outputs=outputs, max_steps=max_steps, speeds=speeds,
-                             inputs=inputs or {})
+                             inputs=inputs or {}, every=every)
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a

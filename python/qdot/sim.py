@@ -57,7 +57,9 @@ class Result(Table):
         unilateral contacts (a Table, empty without them);
     stats: the run's qd_sim_stats as a dict (steps, evals, rejected,
         energy_error_max, constraint_error_max, E0, events, t, impacts, ...);
-    energy_error_max: max |E(t) - E(0)| / max(|E(0)|, max T) over the run;
+    energy_error_max: max |E(t) - E(0)| / max(|E(0)|, max T) over the rows
+        returned (dense output between steps included);
+    energy_error_steps: the same at the integrator's accepted steps;
     method: the method's name.
     """
 
@@ -70,6 +72,7 @@ class Result(Table):
         self.stats = {name: getattr(stats, name) for name, _ in stats._fields_
                       if not name.startswith("_")}
         self.energy_error_max = stats.energy_error_max
+        self.energy_error_steps = stats.energy_error_steps
         self.method = method
 
     def __repr__(self):
@@ -290,7 +293,7 @@ def _add_inputs(core, s, inputs):
 
 
 def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outputs,
-             max_steps, speeds, inputs):
+             max_steps, speeds, inputs, every=None):
     """Model.simulate's work (see there)."""
     kind = _kind(core, speeds and not inputs)
     s, se = _new_sim(core, kind)
@@ -310,7 +313,7 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
         q0, qd0 = doubles(q), doubles(qd)
         opts = SimOpts(method=m, t0=t0, t_end=float(t_end), dt=float(dt or 0),
                        rtol=float(rtol or 0), atol=float(atol or 0), max_steps=max_steps,
-                       q0=q0, qd0=qd0)
+                       q0=q0, qd0=qd0, every=float(every or 0))
         if kind == "hamilton":
             opts.p0 = more
         elif kind == "speeds":

@@ -143,10 +143,12 @@ static qd_status energy_not_finite(qd__run *r, double t, double h) {
     return QD_ERR_NUMERIC;
 }
 
-typedef struct measure {
+struct qd__measure {
     double E0, dEmax, Tmax, cmax;
     double lost; /* h taken by the impacts so far: E(t) is held to E0 - lost */
-} measure;
+    double dErows; /* the largest |E - E0| over the rows made (what a caller gets) */
+};
+typedef struct qd__measure measure;
 
 /* The error measures at state y, t; q' in r->qd.  aux: s->aux_out holds
  * this state's values (a row was just made), else only h and T are
@@ -229,6 +231,14 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
         row[k++] = aux[qd__aux_out(s) + i];
     if (s->uin_bad)
         return qd__sim_uin_failed(s);
+    if (r->meas && isfinite(aux[0])) {
+        /* the energy error of the row itself (a grid row is the dense
+         * output's, between steps): the measure reported */
+        measure *mr = r->meas;
+        double dissipated = s->fr ? y[2 * n] : 0, work = s->fr && s->rheo ? y[2 * n + 1] : 0;
+        mr->dErows = fmax(mr->dErows, fabs(aux[0] + dissipated - work - (mr->E0 - mr->lost)));
+        mr->Tmax = fmax(mr->Tmax, fabs(aux[1]));
+    }
     if (ms)
         return measure_at(r, ms, t, y, true);
     if (!isfinite(aux[0]))
@@ -271,6 +281,19 @@ qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
     }
     if (!(o->t_end > o->t0)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the end time must be after the start time");
+        return QD_ERR_ARG;
+    }
+    if (!isfinite(o->every) || o->every < 0) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the output spacing must be a positive number (0: "
+                     "rows as the step says), not %g", o->every);
+        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, "every", QD_REASON_NONE, NULL);
+        return QD_ERR_ARG;
+    }
+    if (o->every > 0 && ceil((o->t_end - o->t0) / o->every) > (double)max_steps(o)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the output spacing %.17g from t = %.17g to %.17g asks "
+                     "for %.3g rows, more than the maximum of %zu", o->every, o->t0, o->t_end,
+                     ceil((o->t_end - o->t0) / o->every), max_steps(o));
+        qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, "max_steps", QD_REASON_NONE, NULL);
         return QD_ERR_ARG;
     }
     if (o->dt < 0) {
@@ -340,6 +363,7 @@ static void run_free(qd__run *r, qd__integ *it) {
     qd__free(it->y);
     qd__free(r->row);
     qd__free(r->ev_hit);
+    qd__free(r->smp);
     qd__impacts_free(r);
 }
 
@@ -349,7 +373,8 @@ static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     it->y = qd__malloc(s->ctx, (2 * d + 1) * sizeof *it->y);
     r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
     r->ev_hit = qd__calloc(s->ctx, 2 * ne + 1, sizeof *r->ev_hit);
-    if (!it->y || !r->row || !r->ev_hit)
+    r->smp = qd__malloc(s->ctx, ((QD__EV_SAMPLES_MAX + 1) * ne + 2 * ne + 1) * sizeof *r->smp);
+    if (!it->y || !r->row || !r->ev_hit || !r->smp)
         return QD_ERR_NOMEM;
     it->yold = it->y + d;
     r->qd = r->row + 2 * ncols;
@@ -361,6 +386,7 @@ static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
     r->ev_y = r->gnew + ne;
     r->ev_t = r->ev_y + ne * d;
     r->ev_ok = r->ev_hit + ne;
+    r->ev_after = r->smp + (QD__EV_SAMPLES_MAX + 1) * ne;
     return QD_OK;
 }
 
@@ -503,13 +529,14 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
             *impact = s->nimp;
             *fric = (size_t)-1;
         }
-    bool grid_rows = qd_sim_method_adaptive(o->method) && !o->fixed && o->dt > 0;
+    bool grid_rows = o->every > 0 || (qd_sim_method_adaptive(o->method) && !o->fixed && o->dt > 0);
+    double spacing = o->every > 0 ? o->every : o->dt;
     /* merge grid rows and event rows by time */
     for (;;) {
         double tg = INFINITY, te = INFINITY;
         size_t ke = s->nev;
         if (grid_rows) {
-            double t = o->t0 + (double)*grid * o->dt;
+            double t = o->t0 + (double)*grid * spacing;
             if (t <= tstop && t < o->t_end)
                 tg = t;
         }
@@ -534,6 +561,9 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
             (*nevents)++;
             if (st == QD_OK)
                 emit(em, (int)ke, r->row);
+            /* the same function may cross again later in the step */
+            if (st == QD_OK && !s->ev[ke].stop)
+                st = qd__events_next(r, ke);
         }
         if (st != QD_OK)
             return st;
@@ -679,7 +709,7 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
     qd_sim *s = r->s;
     qd__integ *it = r->it;
     const qd_sim_opts *o = L->o;
-    bool last, every = L->fixed || !(o->dt > 0);
+    bool last, every = o->every > 0 ? false : L->fixed || !(o->dt > 0);
     bool project = s->m && !o->no_project && o->method != QD_SIM_BDF &&
                    (!s->se || any_holonomic(s));
     size_t N = L->fixed ? (size_t)ceil((o->t_end - o->t0) / o->dt - 1e-9) : 0;
@@ -868,6 +898,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         }
     }
     emitter em = {.sink = sink, .data = data};
+    r.meas = &ms;
     if (st == QD_OK)
         st = integrate(&r, o, &em, &ms, stats);
     if (st == QD_OK && em.failed) {
@@ -880,9 +911,14 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     stats->rejected = it.rejected;
     stats->E0 = ms.E0;
     double den = fmax(fabs(ms.E0), ms.Tmax);
-    stats->energy_error_max = den > 0 ? ms.dEmax / den : ms.dEmax;
+    stats->energy_error_max = den > 0 ? ms.dErows / den : ms.dErows;
+    stats->energy_error_steps = den > 0 ? ms.dEmax / den : ms.dEmax;
     stats->constraint_error_max = ms.cmax;
     stats->t = it.t;
+    stats->events_unresolved = r.fast_steps;
+    stats->events_unresolved_t = r.fast_t;
+    stats->events_unresolved_event = r.fast_event;
+    stats->events_unresolved_spacing = r.fast_spacing;
     if (s->fr) {
         stats->transitions = s->fr->ntr;
         stats->friction_dissipated = it.y ? it.y[2 * s->n] : 0;

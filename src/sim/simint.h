@@ -300,7 +300,16 @@ typedef struct qd__run {
     double *ev_t, *ev_y;               /* located events of a step: nev times, nev*dim */
     bool *ev_hit, *ev_ok;
     bool slopes;                       /* fa, fb valid for this step */
+    double *smp;                       /* the event functions at the step's samples */
+    size_t nsmp;                       /* sample intervals of the step */
+    double *ev_after;                  /* nev: the far side of each located crossing */
+    /* steps whose event functions turned faster than NSAMPLE_MAX samples
+     * resolve: their count, the first one's time and event, the widest
+     * sample spacing among them */
+    size_t fast_steps, fast_event;
+    double fast_t, fast_spacing;
     struct qd__impacts *imp;           /* the contacts' history (impact.c), or NULL */
+    struct qd__measure *meas;          /* the error measures (run.c), or NULL */
 } qd__run;
 
 /* One contact's history in a run: what the chattering test reads. */
@@ -333,6 +342,11 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
 /* Locate the events that changed sign in the last step: r->ev_hit[k],
  * r->ev_t[k], r->ev_y + k*dim for each that happened (guards true). */
 qd_status qd__events_locate(qd__run *r);
+/* The next crossing of user event k in the step after the one just
+ * located (r->ev_after[k]); r->ev_hit[k] when there is one. */
+qd_status qd__events_next(qd__run *r, size_t k);
+/* The most sample intervals the event search uses in a step. */
+#define QD__EV_SAMPLES_MAX 64
 
 /* ---- unilateral contacts (impact.c) --------------------------------------- */
 

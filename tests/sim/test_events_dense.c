@@ -1,0 +1,155 @@
+/*
+ * tests/sim/test_events_dense.c - crossings that fit inside one step
+ * (issue 33): a force-free particle grazing the unit disc, whose step grows
+ * past the whole crossing, so that the event function has the same sign at
+ * both ends of the step.
+ *
+ *   x(t) = -5 + t, y = b: the circle x^2 + y^2 = 1 is crossed at
+ *   t = 5 -+ sqrt(1 - b^2); a smooth disc (restitution 1) reflects the
+ *   velocity (1, 0) specularly about the normal n = (x_c, b) at the contact
+ *   x_c = -sqrt(1 - b^2): v+ = v - 2 (v.n) n = (1 - 2 x_c^2, -2 x_c b).
+ *
+ * Every method: the adaptive ones with a tolerance, the fixed-step ones with
+ * one step over the whole flight (their interpolant is the cubic Hermite,
+ * exact for a straight line).  And an event function oscillating faster than
+ * any sampling, sin(1e6 t), is reported in stats.events_unresolved.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "qdot/read.h"
+#include "sim_fixture.h"
+
+static const qd_sim_method all[] = {QD_SIM_DOPRI5, QD_SIM_DOP853, QD_SIM_TAYLOR, QD_SIM_BDF,
+                                    QD_SIM_GL2,    QD_SIM_GL4,    QD_SIM_GL6,    QD_SIM_VERLET,
+                                    QD_SIM_YOSHIDA4};
+
+static sim_fix *particle(double b, bool disc) {
+    char text[512];
+    snprintf(text, sizeof text,
+             "coordinates x, y\nparameters m = 1\nparticle m at (x, y)\n%s"
+             "initial x = -5, y = %.17g, x' = 1, y' = 0\n",
+             disc ? "impact disc: sqrt(x^2 + y^2) - 1 >= 0 restitution 1\n" : "", b);
+    sim_fix *f = sf_load(text);
+    assert_non_null(f);
+    return f;
+}
+
+static qd_status run_method(sim_fix *f, qd_sim_method m) {
+    bool adaptive = qd_sim_method_adaptive(m);
+    /* bdf's own error is about its tolerance: a looser one keeps it fast */
+    double rtol = m == QD_SIM_BDF ? 1e-8 : 1e-10;
+    return sf_run(f, m, 10, adaptive ? 0 : 10, adaptive ? rtol : 0, false);
+}
+
+static double tol_of(qd_sim_method m) { return m == QD_SIM_BDF ? 1e-6 : 1e-9; }
+
+/* The impact happens and the final velocity is the specular reflection. */
+static void check_disc(double b) {
+    double xc = -sqrt(1 - b * b), vx = 1 - 2 * xc * xc, vy = -2 * xc * b;
+    for (size_t i = 0; i < sizeof all / sizeof *all; i++) {
+        qd_sim_method m = all[i];
+        sim_fix *f = particle(b, true);
+        assert_int_equal(run_method(f, m), QD_OK);
+        int cx = sf_col(f, m, "x'"), cy = sf_col(f, m, "y'");
+        if (f->stats.impacts != 1 || !(fabs(f->last[cx] - vx) < tol_of(m)) ||
+            !(fabs(f->last[cy] - vy) < tol_of(m)))
+            fail_msg("%s, b = %g: %zu impacts, final velocity (%.17g, %.17g), want 1 and "
+                     "(%.17g, %.17g)", qd_sim_method_name(m), b, f->stats.impacts, f->last[cx],
+                     f->last[cy], vx, vy);
+        /* the contact's time: t = 5 + x_c */
+        assert_true(f->nev == 2 && fabs(f->ev_t[0] - (5 + xc)) < tol_of(m));
+        sf_free(f);
+    }
+}
+
+static void grazing_disc(void **state) {
+    (void)state;
+    check_disc(0.9);
+}
+
+static void near_tangent_disc(void **state) {
+    (void)state;
+    check_disc(0.999999);
+}
+
+/* --event "x^2 + y^2 = 1": two crossings at 5 -+ sqrt(1 - b^2). */
+static void check_circle(double b) {
+    double w = sqrt(1 - b * b);
+    for (size_t i = 0; i < sizeof all / sizeof *all; i++) {
+        qd_sim_method m = all[i];
+        sim_fix *f = particle(b, false);
+        const qd_expr *g = qd_read(f->ctx, "x^2 + y^2 - 1", NULL, NULL);
+        assert_non_null(g);
+        assert_int_equal(qd_sim_add_event(f->s, g, 0, NULL, false), QD_OK);
+        assert_int_equal(run_method(f, m), QD_OK);
+        if (f->nev != 2 || f->stats.events != 2 || !(fabs(f->ev_t[0] - (5 - w)) < tol_of(m)) ||
+            !(fabs(f->ev_t[1] - (5 + w)) < tol_of(m)))
+            fail_msg("%s, b = %g: %zu events (%.17g, %.17g), want 2 at %.17g, %.17g",
+                     qd_sim_method_name(m), b, f->nev, f->nev ? f->ev_t[0] : NAN,
+                     f->nev > 1 ? f->ev_t[1] : NAN, 5 - w, 5 + w);
+        assert_int_equal(f->stats.events_unresolved, 0);
+        sf_free(f);
+    }
+}
+
+static void circle_event(void **state) {
+    (void)state;
+    check_circle(0.9);
+}
+
+static void circle_event_near_tangent(void **state) {
+    (void)state;
+    check_circle(0.999999);
+}
+
+/* sin(t) = 0 over [0, 10] in steps that span several crossings: pi, 2 pi,
+ * 3 pi, each once, and nothing reported unresolved. */
+static void several_in_a_step(void **state) {
+    (void)state;
+    for (size_t i = 0; i < sizeof all / sizeof *all; i++) {
+        qd_sim_method m = all[i];
+        sim_fix *f = particle(0.5, false);
+        const qd_expr *g = qd_read(f->ctx, "sin(t)", NULL, NULL);
+        assert_int_equal(qd_sim_add_event(f->s, g, 0, NULL, false), QD_OK);
+        assert_int_equal(run_method(f, m), QD_OK);
+        if (f->nev != 3)
+            fail_msg("%s: %zu crossings of sin(t) = 0, want 3", qd_sim_method_name(m), f->nev);
+        for (size_t k = 0; k < 3; k++)
+            assert_true(fabs(f->ev_t[k] - (double)(k + 1) * SF_PI) < 1e-9);
+        assert_int_equal(f->stats.events_unresolved, 0);
+        sf_free(f);
+    }
+}
+
+/* sin(1e6 t): no sampling of a step resolves it; the run says so. */
+static void too_fast_is_reported(void **state) {
+    (void)state;
+    for (size_t i = 0; i < sizeof all / sizeof *all; i++) {
+        qd_sim_method m = all[i];
+        sim_fix *f = particle(0.5, false);
+        const qd_expr *g = qd_read(f->ctx, "sin(1000000*t)", NULL, NULL);
+        assert_int_equal(qd_sim_add_event(f->s, g, 0, NULL, false), QD_OK);
+        assert_int_equal(run_method(f, m), QD_OK);
+        if (!(f->stats.events_unresolved > 0 && f->stats.events_unresolved_spacing > 1e-3 &&
+              f->stats.events_unresolved_event == 0))
+            fail_msg("%s: unresolved %zu, spacing %g", qd_sim_method_name(m),
+                     f->stats.events_unresolved, f->stats.events_unresolved_spacing);
+        sf_free(f);
+    }
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(grazing_disc),
+        cmocka_unit_test(near_tangent_disc),
+        cmocka_unit_test(circle_event),
+        cmocka_unit_test(circle_event_near_tangent),
+        cmocka_unit_test(several_in_a_step),
+        cmocka_unit_test(too_fast_is_reported),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
