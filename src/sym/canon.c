@@ -13,10 +13,13 @@
  *   MUL [3, x, y^2]    valid;   MUL [1, x, y] invalid;  MUL [2, x + y] invalid
  *                      (distributed);  MUL [x, x^2] invalid (one base twice);
  *   POW [x, 2]         valid;   POW [2, 3] invalid (folds), POW [2, 10^6] valid
- *                      (too large to fold);  POW [x*y, 2] invalid;
+ *                      (too large to fold), POW [2^100000, 100000] valid (over
+ *                      QD_MAX_FOLD_BITS bits);  POW [x*y, 2] invalid;
  *                      POW [x^a, 2] invalid;  POW [x, 1] invalid.
  */
 #include "node.h"
+
+#include <math.h>
 
 static bool is_exact(const qd_expr *e, long v) {
     return e->kind == QD_RATIONAL && mpz_cmp_ui(mpq_denref(e->u.q), 1) == 0 &&
@@ -27,9 +30,14 @@ static bool is_int(const qd_expr *e) {
     return e->kind == QD_RATIONAL && mpz_cmp_ui(mpq_denref(e->u.q), 1) == 0;
 }
 
-/* An integer exponent qd__num_pow folds a rational base to (number.c). */
-static bool folds(const qd_expr *e) {
-    return is_int(e) && mpz_cmpabs_ui(mpq_numref(e->u.q), QD_MAX_FOLD_EXP) <= 0;
+/* An integer exponent qd__num_pow folds the rational base b to (number.c):
+ * |e| <= QD_MAX_FOLD_EXP and a result of at most QD_MAX_FOLD_BITS bits. */
+static bool folds(const qd_expr *b, const qd_expr *e) {
+    if (!is_int(e) || mpz_cmpabs_ui(mpq_numref(e->u.q), QD_MAX_FOLD_EXP) > 0)
+        return false;
+    double ap = fabs(mpz_get_d(mpq_numref(e->u.q)));
+    return ap * (double)mpz_sizeinbase(mpq_numref(b->u.q), 2) <= (double)QD_MAX_FOLD_BITS &&
+           ap * (double)mpz_sizeinbase(mpq_denref(b->u.q), 2) <= (double)QD_MAX_FOLD_BITS;
 }
 
 /* The factors of a term without its numeric coefficient (add.c's term key). */
@@ -87,7 +95,7 @@ static bool pow_canonical(const qd_expr *b, const qd_expr *e) {
      * SymPy; a number exponent folds */
     if (is_exact(b, 0) && qd__is_num(e))
         return false;
-    if (b->kind == QD_RATIONAL && folds(e))
+    if (b->kind == QD_RATIONAL && folds(b, e))
         return false;
     if (is_int(e) && (b->kind == QD_MUL || b->kind == QD_POW))
         return false;
