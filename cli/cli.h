@@ -2,15 +2,24 @@
  * cli/cli.h - what the command files of the qdot program share.
  *
  * Only the program prints or exits; every command returns an exit status:
- * 0 success, 1 failure (numerical or internal), 2 bad input or usage.
+ * 0 success, 1 failure (numerical or internal), 2 bad input or usage, and 3
+ * a certified "no" to the question a command asks (canonical: the map is not
+ * canonical; check: the model fails a check), printed with its witness.
  */
 #ifndef QDOT_CLI_H
 #define QDOT_CLI_H
 
 #include <stdio.h>
 #include "qdot/qdot.h"
+#include "args.h"
 
-enum { QD_EXIT_OK = 0, QD_EXIT_FAIL = 1, QD_EXIT_USAGE = 2 };
+enum { QD_EXIT_OK = 0, QD_EXIT_FAIL = 1, QD_EXIT_USAGE = 2, QD_EXIT_NO = 3 };
+
+/* The one rule from a library status to the exit status: the input's fault
+ * (a bad argument, text that does not read, a symbol with no value, an exact
+ * division by zero, a form the call needs and the input lacks) is 2; every
+ * other error (numerical, memory, I/O, unsupported) is 1. */
+int cli_exit(qd_status st);
 
 typedef struct cli_cmd {
     const char *name;

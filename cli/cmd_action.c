@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "qdot/action.h"
 #include "qdot/routh.h"
@@ -223,91 +223,91 @@ static void put_text(const qd_action *a, qd_buf *b) {
 
 /* ---- JSON ------------------------------------------------------------------------ */
 
-static void put_coord_json(cli_json *j, const qd_act_coord *c) {
-    cli_json_begin_object(j);
-    cli_json_key(j, "coordinate");
-    cli_json_string(j, qd_expr_name(c->q));
-    cli_json_key(j, "constant");
-    cli_json_string(j, qd_expr_name(c->constant));
-    cli_json_key(j, "value");
-    cli_json_number(j, c->value);
-    cli_json_key(j, "kind");
-    cli_json_string(j, kind_name(c->kind));
-    cli_json_key(j, c->kind == QD_ACT_ROTATION ? "range" : "turning_points");
-    cli_json_begin_array(j);
-    cli_json_number(j, c->lo);
-    cli_json_number(j, c->hi);
-    cli_json_end_array(j);
-    cli_json_key(j, "J");
-    cli_json_number(j, c->J);
-    cli_json_key(j, "omega");
-    cli_json_number(j, c->omega);
-    cli_json_key(j, "angle");
-    cli_json_number(j, c->angle);
-    cli_json_end_object(j);
+static void put_coord_json(qd_json *j, const qd_act_coord *c) {
+    qd_json_begin_object(j);
+    qd_json_key(j, "coordinate");
+    qd_json_string(j, qd_expr_name(c->q));
+    qd_json_key(j, "constant");
+    qd_json_string(j, qd_expr_name(c->constant));
+    qd_json_key(j, "value");
+    qd_json_number(j, c->value);
+    qd_json_key(j, "kind");
+    qd_json_string(j, kind_name(c->kind));
+    qd_json_key(j, c->kind == QD_ACT_ROTATION ? "range" : "turning_points");
+    qd_json_begin_array(j);
+    qd_json_number(j, c->lo);
+    qd_json_number(j, c->hi);
+    qd_json_end_array(j);
+    qd_json_key(j, "J");
+    qd_json_number(j, c->J);
+    qd_json_key(j, "omega");
+    qd_json_number(j, c->omega);
+    qd_json_key(j, "angle");
+    qd_json_number(j, c->angle);
+    qd_json_end_object(j);
 }
 
-static void put_closed_json(cli_json *j, const qd_action *a) {
-    cli_json_key(j, "H_of_J");
+static void put_closed_json(qd_json *j, const qd_action *a) {
+    qd_json_key(j, "H_of_J");
     if (a->closed == QD_ACT_H_NONE) {
-        cli_json_null(j);
+        qd_json_null(j);
         return;
     }
-    cli_json_begin_object(j);
-    cli_json_key(j, "form");
-    cli_json_string(j, a->closed == QD_ACT_H_LINEAR ? "sum omega_k J_k/(2 pi)" : "-c/(sum J_k)^2");
+    qd_json_begin_object(j);
+    qd_json_key(j, "form");
+    qd_json_string(j, a->closed == QD_ACT_H_LINEAR ? "sum omega_k J_k/(2 pi)" : "-c/(sum J_k)^2");
     if (a->closed == QD_ACT_H_KEPLER) {
-        cli_json_key(j, "c");
-        cli_json_number(j, a->closed_c);
+        qd_json_key(j, "c");
+        qd_json_number(j, a->closed_c);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 static void put_json(const qd_action *a, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "separation");
-    cli_json_string(&j, a->form ? a->form : "");
-    cli_json_key(&j, "energy");
-    cli_json_number(&j, a->energy);
-    cli_json_key(&j, "coordinates");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "separation");
+    qd_json_string(&j, a->form ? a->form : "");
+    qd_json_key(&j, "energy");
+    qd_json_number(&j, a->energy);
+    qd_json_key(&j, "coordinates");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < a->n; k++)
         put_coord_json(&j, &a->c[k]);
-    cli_json_end_array(&j);
+    qd_json_end_array(&j);
     const char *keys[] = {"actions", "frequencies", "angles"};
     for (int w = 0; w < 3; w++) {
-        cli_json_key(&j, keys[w]);
-        cli_json_begin_object(&j);
+        qd_json_key(&j, keys[w]);
+        qd_json_begin_object(&j);
         for (size_t k = 0; k < a->n; k++) {
             const qd_act_coord *c = &a->c[k];
-            cli_json_key(&j, qd_expr_name(c->q));
-            cli_json_number(&j, w == 0 ? c->J : w == 1 ? c->omega : c->angle);
+            qd_json_key(&j, qd_expr_name(c->q));
+            qd_json_number(&j, w == 0 ? c->J : w == 1 ? c->omega : c->angle);
         }
-        cli_json_end_object(&j);
+        qd_json_end_object(&j);
     }
-    cli_json_key(&j, "degeneracies");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "degeneracies");
+    qd_json_begin_array(&j);
     for (size_t r = 0; r < a->nratio; r++) {
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "coordinates");
-        cli_json_begin_array(&j);
-        cli_json_string(&j, qd_expr_name(a->c[a->ratio[r].i].q));
-        cli_json_string(&j, qd_expr_name(a->c[a->ratio[r].j].q));
-        cli_json_end_array(&j);
-        cli_json_key(&j, "ratio");
-        cli_json_begin_array(&j);
-        cli_json_number(&j, (double)a->ratio[r].num);
-        cli_json_number(&j, (double)a->ratio[r].den);
-        cli_json_end_array(&j);
-        cli_json_end_object(&j);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "coordinates");
+        qd_json_begin_array(&j);
+        qd_json_string(&j, qd_expr_name(a->c[a->ratio[r].i].q));
+        qd_json_string(&j, qd_expr_name(a->c[a->ratio[r].j].q));
+        qd_json_end_array(&j);
+        qd_json_key(&j, "ratio");
+        qd_json_begin_array(&j);
+        qd_json_number(&j, (double)a->ratio[r].num);
+        qd_json_number(&j, (double)a->ratio[r].den);
+        qd_json_end_array(&j);
+        qd_json_end_object(&j);
     }
-    cli_json_end_array(&j);
+    qd_json_end_array(&j);
     put_closed_json(&j, a);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* ---- the command ------------------------------------------------------------------ */

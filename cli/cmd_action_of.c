@@ -10,7 +10,7 @@
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "state.h"
@@ -161,21 +161,21 @@ static int parse_times(ao_run *r) {
 static int emit(ao_run *r, double S, double dS) {
     qd_buf b = QD_BUF_INIT;
     if (r->json) {
-        cli_json j;
-        cli_json_init(&j, &b);
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "file");
-        cli_json_string(&j, r->mf.path);
-        cli_json_key(&j, "t0");
-        cli_json_number(&j, r->t0);
-        cli_json_key(&j, "t1");
-        cli_json_number(&j, r->t1);
-        cli_json_key(&j, "action");
-        cli_json_number(&j, S);
-        cli_json_key(&j, "first_variation");
-        cli_json_number(&j, dS);
-        cli_json_end_object(&j);
-        b.failed = b.failed || !cli_json_ok(&j);
+        qd_json j;
+        qd_json_init(&j, &b);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "file");
+        qd_json_string(&j, r->mf.path);
+        qd_json_key(&j, "t0");
+        qd_json_number(&j, r->t0);
+        qd_json_key(&j, "t1");
+        qd_json_number(&j, r->t1);
+        qd_json_key(&j, "action");
+        qd_json_number(&j, S);
+        qd_json_key(&j, "first_variation");
+        qd_json_number(&j, dS);
+        qd_json_end_object(&j);
+        b.failed = b.failed || !qd_json_ok(&j);
         qd_buf_puts(&b, "\n");
     } else {
         qd_buf_puts(&b, "action: ");

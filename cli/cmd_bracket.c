@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 
@@ -212,39 +212,39 @@ static const qd_expr *time_derivative(cli_phase *ph, const qd_expr *F) {
     return d ? qd_simplify(ctx, d) : NULL;
 }
 
-static void json_expr(qd_ctx *ctx, cli_json *j, const char *key, const qd_expr *x) {
+static void json_expr(qd_ctx *ctx, qd_json *j, const char *key, const qd_expr *x) {
     qd_buf s = QD_BUF_INIT;
     qd_print(ctx, x, QD_FMT_TEXT, &s);
-    cli_json_key(j, key);
-    cli_json_string(j, qd_buf_str(&s));
+    qd_json_key(j, key);
+    qd_json_string(j, qd_buf_str(&s));
     qd_buf_free(&s);
 }
 
 static void write_json(cli_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,
                        const qd_expr *r, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "momenta");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "momenta");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < ph->n; k++)
-        cli_json_string(&j, qd_expr_name(ph->p[k]));
-    cli_json_end_array(&j);
+        qd_json_string(&j, qd_expr_name(ph->p[k]));
+    qd_json_end_array(&j);
     json_expr(ph->ctx, &j, "F", F);
     if (a->dt) {
         json_expr(ph->ctx, &j, "H", ph->h->H);
         json_expr(ph->ctx, &j, "dF_dt", r);
         if (ph->h->implicit) { /* H and dF_dt are in q' too, defined by p = dL/dq' */
-            cli_json_key(&j, "implicit");
-            cli_json_bool(&j, true);
+            qd_json_key(&j, "implicit");
+            qd_json_bool(&j, true);
         }
     } else {
         json_expr(ph->ctx, &j, "G", G);
         json_expr(ph->ctx, &j, "bracket", r);
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 static void write_line(cli_phase *ph, const br_args *a, const qd_expr *F, const qd_expr *G,

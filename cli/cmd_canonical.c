@@ -15,7 +15,7 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "witness.h"
 #include "model_cli.h"
 #include "model_file.h"
@@ -163,25 +163,25 @@ static char *text_of(qd_ctx *ctx, const qd_expr *x) {
     return s;
 }
 
-static void put_expr(qd_ctx *ctx, cli_json *j, qd_buf *b, const char *key, const qd_expr *x) {
+static void put_expr(qd_ctx *ctx, qd_json *j, qd_buf *b, const char *key, const qd_expr *x) {
     char *s = x ? text_of(ctx, x) : NULL;
     if (j) {
-        cli_json_key(j, key);
+        qd_json_key(j, key);
         if (s)
-            cli_json_string(j, s);
+            qd_json_string(j, s);
         else
-            cli_json_null(j);
+            qd_json_null(j);
     } else if (s) {
         qd_buf_printf(b, "  %s = %s\n", key, s);
     }
     free(s);
 }
 
-static int flush(qd_buf *b, cli_json *j) {
+static int flush(qd_buf *b, qd_json *j) {
     if (j) {
-        cli_json_end_object(j);
+        qd_json_end_object(j);
         qd_buf_puts(b, "\n");
-        b->failed = b->failed || !cli_json_ok(j);
+        b->failed = b->failed || !qd_json_ok(j);
     }
     bool ok = !b->failed;
     if (ok)
@@ -206,28 +206,28 @@ static int answer(const qd_canon_verdict *v, int printed) {
 }
 
 static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *v, qd_buf *b,
-                         cli_json *j);
+                         qd_json *j);
 
 static int write_verdict(can_run *r, const can_args *a, const qd_canon_verdict *v, bool json) {
     qd_ctx *ctx = r->ph.ctx;
     static const char *const kind[] = {"canonical", "scaled", "not canonical", "undecided"};
     qd_buf b = QD_BUF_INIT;
-    cli_json j;
+    qd_json j;
     char pair[128] = "";
     bool failed = v->kind == QD_CANON_NO || v->kind == QD_CANON_UNDECIDED;
     if (failed)
         pair_name(r, v, pair, sizeof pair);
     if (json) {
-        cli_json_init(&j, &b);
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "verdict");
-        cli_json_string(&j, kind[v->kind]);
+        qd_json_init(&j, &b);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "verdict");
+        qd_json_string(&j, kind[v->kind]);
         put_expr(ctx, &j, &b, "scale", failed ? NULL : v->scale);
-        cli_json_key(&j, "bracket");
+        qd_json_key(&j, "bracket");
         if (pair[0])
-            cli_json_string(&j, pair);
+            qd_json_string(&j, pair);
         else
-            cli_json_null(&j);
+            qd_json_null(&j);
         put_expr(ctx, &j, &b, "value", pair[0] ? v->value : NULL);
         put_expr(ctx, &j, &b, "should_be", pair[0] ? v->target : NULL);
         cli_witness_json(&j, &v->check);
@@ -262,39 +262,39 @@ static const char *old_name(const can_run *r, size_t a) {
 }
 
 /* A 2n x 2n matrix as rows of expressions. */
-static void put_matrix(can_run *r, cli_json *j, qd_buf *b, const char *key,
+static void put_matrix(can_run *r, qd_json *j, qd_buf *b, const char *key,
                        const qd_expr *const *M) {
     size_t m = 2 * r->ph.n;
     if (j) {
-        cli_json_key(j, key);
-        cli_json_begin_array(j);
+        qd_json_key(j, key);
+        qd_json_begin_array(j);
     }
     for (size_t x = 0; x < m; x++) {
         if (j)
-            cli_json_begin_array(j);
+            qd_json_begin_array(j);
         else
             qd_buf_puts(b, "  [");
         for (size_t y = 0; y < m; y++) {
             char *s = text_of(r->ph.ctx, M[x * m + y]);
             if (j)
-                cli_json_string(j, s ? s : "?");
+                qd_json_string(j, s ? s : "?");
             else
                 qd_buf_printf(b, "%s%s", y ? ", " : "", s ? s : "?");
             free(s);
         }
         if (j)
-            cli_json_end_array(j);
+            qd_json_end_array(j);
         else
             qd_buf_puts(b, "]\n");
     }
     if (j)
-        cli_json_end_array(j);
+        qd_json_end_array(j);
 }
 
 /* --lagrange: the brackets [u, v] of the old variables and L^T PB = I;
  * --K: F and the new Hamiltonian. */
 static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *v, qd_buf *b,
-                         cli_json *j) {
+                         qd_json *j) {
     qd_ctx *ctx = r->ph.ctx;
     size_t n = r->ph.n;
     if (a->lagrange) {
@@ -312,11 +312,11 @@ static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *
             put_matrix(r, j, b, "poisson_old_in_new", r->lb.PB);
         }
         if (j) {
-            cli_json_key(j, "duality");
+            qd_json_key(j, "duality");
             if (r->lb.singular)
-                cli_json_null(j);
+                qd_json_null(j);
             else
-                cli_json_bool(j, r->lb.dual);
+                qd_json_bool(j, r->lb.dual);
         } else {
             qd_buf_printf(b, "%s\n", r->lb.singular ? "duality: the Jacobian is singular (no inverse map)"
                                     : r->lb.dual    ? "duality: [L]^T (P) = 1 holds"
@@ -326,8 +326,8 @@ static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *
     if (a->newham) {
         if (v->kind == QD_CANON_NO || v->kind == QD_CANON_UNDECIDED) {
             if (j) {
-                cli_json_key(j, "K");
-                cli_json_null(j);
+                qd_json_key(j, "K");
+                qd_json_null(j);
             } else {
                 qd_buf_puts(b, "no new Hamiltonian: the map is neither canonical nor scaled\n");
             }
@@ -390,12 +390,12 @@ static int write_generated(can_run *r, const can_args *a, const qd_expr *F,
     qd_ctx *ctx = r->ph.ctx;
     size_t n = r->ph.n;
     qd_buf b = QD_BUF_INIT;
-    cli_json j, *jp = a->json ? &j : NULL;
+    qd_json j, *jp = a->json ? &j : NULL;
     if (jp) {
-        cli_json_init(jp, &b);
-        cli_json_begin_object(jp);
-        cli_json_key(jp, "type");
-        cli_json_string(jp, a->gen_type);
+        qd_json_init(jp, &b);
+        qd_json_begin_object(jp);
+        qd_json_key(jp, "type");
+        qd_json_string(jp, a->gen_type);
     } else {
         qd_buf_printf(&b, "generating function %s\n", a->gen_type);
     }

@@ -14,7 +14,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "rel_cli.h"
 #include "state.h"
@@ -201,68 +201,68 @@ static int compute(cl_run *r, const cl_args *a) {
     return rc;
 }
 
-static void num(cli_json *j, const char *key, double x) {
-    cli_json_key(j, key);
-    cli_json_number(j, x);
+static void num(qd_json *j, const char *key, double x) {
+    qd_json_key(j, key);
+    qd_json_number(j, x);
 }
 
-static void json_final(const cl_run *r, const cl_args *a, cli_json *j) {
-    cli_json_key(j, a->decay ? "products" : "final");
-    cli_json_begin_array(j);
+static void json_final(const cl_run *r, const cl_args *a, qd_json *j) {
+    qd_json_key(j, a->decay ? "products" : "final");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < r->nsol; k++) {
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         num(j, "cm_angle", r->chi[k]);
         double lab[2] = {qd_rel_lab_angle(r->in, r->out[k], 0),
                          qd_rel_lab_angle(r->in, r->out[k], 1)};
         if (!a->decay)
             rel_json_vec(j, "lab_angles", lab, 2);
-        cli_json_key(j, "particles");
-        cli_json_begin_array(j);
+        qd_json_key(j, "particles");
+        qd_json_begin_array(j);
         rel_json_particle(j, &r->out[k][0]);
         rel_json_particle(j, &r->out[k][1]);
-        cli_json_end_array(j);
-        cli_json_end_object(j);
+        qd_json_end_array(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
     num(j, "conservation_error", r->err);
     if (a->decay)
         num(j, "pstar", r->pstar);
 }
 
 static void write_json(const cl_run *r, const cl_args *a, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     num(&j, "c", r->c);
-    cli_json_key(&j, "particles");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "particles");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < a->n; k++)
         rel_json_particle(&j, &r->in[k]);
-    cli_json_end_array(&j);
+    qd_json_end_array(&j);
     num(&j, "energy", r->tot.E);
     rel_json_vec(&j, "momentum", r->tot.p, 3);
     num(&j, "invariant_mass", r->tot.m);
     rel_json_vec(&j, "velocity", r->tot.v, 3);
     if (a->merge) {
-        cli_json_key(&j, "merged");
+        qd_json_key(&j, "merged");
         rel_json_particle(&j, &r->tot);
     }
     if (a->elastic || a->decay)
         json_final(r, a, &j);
     if (a->threshold) {
-        cli_json_key(&j, "threshold");
-        cli_json_begin_object(&j);
+        qd_json_key(&j, "threshold");
+        qd_json_begin_object(&j);
         num(&j, "products_mass", r->prod_mass);
         num(&j, "kinetic_energy", r->th.K);
         num(&j, "energy", r->th.E);
         num(&j, "speed", r->th.speed);
-        cli_json_key(&j, "allowed");
-        cli_json_bool(&j, r->tot.m >= r->prod_mass);
-        cli_json_end_object(&j);
+        qd_json_key(&j, "allowed");
+        qd_json_bool(&j, r->tot.m >= r->prod_mass);
+        qd_json_end_object(&j);
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 static void value(qd_buf *b, const char *label, double x) {

@@ -24,7 +24,7 @@
 #include "eom_out.h"
 #include "model_cli.h"
 #include "speeds_out.h"
-#include "json.h"
+#include "qdot/json.h"
 
 /* Symbolic accelerations larger than this (count_ops, per entry) are not
  * worth printing: M and f say the same in far less space. */
@@ -458,31 +458,31 @@ static int hamel_coefficients(eom_run *r, const qd_speeds_eom *e, bool json) {
         return cli_diag_ctx(r->ctx);
     }
     qd_buf b = QD_BUF_INIT;
-    cli_json j;
+    qd_json j;
     if (json) {
-        cli_json_init(&j, &b);
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "indices");
-        cli_json_begin_array(&j);
+        qd_json_init(&j, &b);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "indices");
+        qd_json_begin_array(&j);
         for (size_t i = 0; i < n; i++)
-            cli_json_string(&j, hamel_index(e, i));
-        cli_json_end_array(&j);
-        cli_json_key(&j, "gamma");
-        cli_json_begin_array(&j);
+            qd_json_string(&j, hamel_index(e, i));
+        qd_json_end_array(&j);
+        qd_json_key(&j, "gamma");
+        qd_json_begin_array(&j);
         for (size_t i = 0; i < n; i++) {
-            cli_json_begin_array(&j);
+            qd_json_begin_array(&j);
             for (size_t k = 0; k < n; k++) {
-                cli_json_begin_array(&j);
+                qd_json_begin_array(&j);
                 for (size_t m = 0; m < n; m++)
-                    cli_json_expr(&j, r->ctx, g[(i * n + k) * n + m]);
-                cli_json_end_array(&j);
+                    qd_json_expr(&j, r->ctx, g[(i * n + k) * n + m]);
+                qd_json_end_array(&j);
             }
-            cli_json_end_array(&j);
+            qd_json_end_array(&j);
         }
-        cli_json_end_array(&j);
-        cli_json_end_object(&j);
+        qd_json_end_array(&j);
+        qd_json_end_object(&j);
         qd_buf_puts(&b, "\n");
-        b.failed = b.failed || !cli_json_ok(&j);
+        b.failed = b.failed || !qd_json_ok(&j);
     } else {
         qd_buf_puts(&b, "Hamel coefficients gamma[i,k,m] = sum_jl (da_kj/dq_l - da_kl/dq_j) "
                         "b_ji b_lm (Desloge ch. 68), indices ");

@@ -8,7 +8,7 @@
 #include "linear_cli.h"
 
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 
 /* ---- the command ------------------------------------------------------------ */
@@ -85,54 +85,54 @@ static void put_text(cli_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
 
 static void put_json(cli_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
     const qd_eom *e = r->e;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "method");
-    cli_json_string(&j, eq->method);
-    cli_json_key(&j, "exact");
-    cli_json_bool(&j, eq->exact);
-    cli_json_key(&j, "continuum");
-    cli_json_bool(&j, eq->continuum);
-    cli_json_key(&j, "equilibria");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "method");
+    qd_json_string(&j, eq->method);
+    qd_json_key(&j, "exact");
+    qd_json_bool(&j, eq->exact);
+    qd_json_key(&j, "continuum");
+    qd_json_bool(&j, eq->continuum);
+    qd_json_key(&j, "equilibria");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < eq->count; i++) {
         const qd_equilibrium *p = &eq->pts[i];
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "equilibrium");
-        cli_json_begin_object(&j);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "equilibrium");
+        qd_json_begin_object(&j);
         for (size_t k = 0; k < e->n; k++) {
-            cli_json_key(&j, qd_expr_name(e->q[k]));
-            cli_json_number(&j, p->q[k]);
+            qd_json_key(&j, qd_expr_name(e->q[k]));
+            qd_json_number(&j, p->q[k]);
         }
-        cli_json_end_object(&j);
+        qd_json_end_object(&j);
         if (p->exact) {
-            cli_json_key(&j, "exact");
-            cli_json_begin_object(&j);
+            qd_json_key(&j, "exact");
+            qd_json_begin_object(&j);
             for (size_t k = 0; k < e->n; k++) {
-                cli_json_key(&j, qd_expr_name(e->q[k]));
-                cli_json_expr(&j, r->ctx, p->exact[k]);
+                qd_json_key(&j, qd_expr_name(e->q[k]));
+                qd_json_expr(&j, r->ctx, p->exact[k]);
             }
-            cli_json_end_object(&j);
+            qd_json_end_object(&j);
         }
-        cli_json_key(&j, "kind");
-        cli_json_string(&j, qd_eq_kind_name(p->kind));
-        cli_json_key(&j, "hessian_signs");
-        cli_json_begin_array(&j);
-        cli_json_number(&j, (double)p->npos);
-        cli_json_number(&j, (double)p->nneg);
-        cli_json_number(&j, (double)p->nzero);
-        cli_json_end_array(&j);
-        cli_json_key(&j, "symmetric");
-        cli_json_bool(&j, p->symmetric);
-        cli_json_key(&j, "residual");
-        cli_json_number(&j, p->residual);
-        cli_json_end_object(&j);
+        qd_json_key(&j, "kind");
+        qd_json_string(&j, qd_eq_kind_name(p->kind));
+        qd_json_key(&j, "hessian_signs");
+        qd_json_begin_array(&j);
+        qd_json_number(&j, (double)p->npos);
+        qd_json_number(&j, (double)p->nneg);
+        qd_json_number(&j, (double)p->nzero);
+        qd_json_end_array(&j);
+        qd_json_key(&j, "symmetric");
+        qd_json_bool(&j, p->symmetric);
+        qd_json_key(&j, "residual");
+        qd_json_number(&j, p->residual);
+        qd_json_end_object(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_end_object(&j);
+    qd_json_end_array(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 int cli_cmd_equilibria(int argc, char **argv) {

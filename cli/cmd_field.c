@@ -8,7 +8,7 @@
 
 #include <math.h>
 #include <stdio.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 
 static const char *end_name(qd_field_end e) { return e == QD_FIELD_FREE ? "free" : "fixed"; }
@@ -31,30 +31,30 @@ static void put_head(const qd_field *f, qd_buf *b) {
     qd_buf_puts(b, "\n");
 }
 
-static void json_head(qd_ctx *ctx, const qd_field *f, cli_json *j) {
+static void json_head(qd_ctx *ctx, const qd_field *f, qd_json *j) {
     double a, c;
     qd_field_interval(f, &a, &c);
-    cli_json_key(j, "field");
-    cli_json_string(j, qd_field_name(f));
-    cli_json_key(j, "space");
-    cli_json_string(j, qd_field_space(f));
-    cli_json_key(j, "interval");
-    cli_json_begin_array(j);
-    cli_json_number(j, a);
-    cli_json_number(j, c);
-    cli_json_end_array(j);
-    cli_json_key(j, "boundary");
-    cli_json_begin_array(j);
-    cli_json_string(j, end_name(qd_field_boundary(f, 0)));
-    cli_json_string(j, end_name(qd_field_boundary(f, 1)));
-    cli_json_end_array(j);
-    cli_json_key(j, "density");
-    cli_json_expr(j, ctx, qd_field_density(f));
+    qd_json_key(j, "field");
+    qd_json_string(j, qd_field_name(f));
+    qd_json_key(j, "space");
+    qd_json_string(j, qd_field_space(f));
+    qd_json_key(j, "interval");
+    qd_json_begin_array(j);
+    qd_json_number(j, a);
+    qd_json_number(j, c);
+    qd_json_end_array(j);
+    qd_json_key(j, "boundary");
+    qd_json_begin_array(j);
+    qd_json_string(j, end_name(qd_field_boundary(f, 0)));
+    qd_json_string(j, end_name(qd_field_boundary(f, 1)));
+    qd_json_end_array(j);
+    qd_json_key(j, "density");
+    qd_json_expr(j, ctx, qd_field_density(f));
 }
 
-static int emit(qd_buf *b, const cli_json *j, bool json, const char *what) {
-    if (json && !cli_json_ok(j)) {
-        cli_diag_error("cannot print the %s: %s", what, cli_json_why(j));
+static int emit(qd_buf *b, const qd_json *j, bool json, const char *what) {
+    if (json && !qd_json_ok(j)) {
+        cli_diag_error("cannot print the %s: %s", what, qd_json_why(j));
         qd_buf_free(b);
         return QD_EXIT_FAIL;
     }
@@ -74,14 +74,14 @@ int cli_field_eom(const char *file, size_t nsets, const char *const *sets, bool 
         rc = cli_diag_ctx(ctx);
     if (e) {
         qd_buf b = QD_BUF_INIT;
-        cli_json j;
+        qd_json j;
         if (json) {
-            cli_json_init(&j, &b);
-            cli_json_begin_object(&j);
+            qd_json_init(&j, &b);
+            qd_json_begin_object(&j);
             json_head(ctx, mf.field, &j);
-            cli_json_key(&j, "equation");
-            cli_json_expr(&j, ctx, e);
-            cli_json_end_object(&j);
+            qd_json_key(&j, "equation");
+            qd_json_expr(&j, ctx, e);
+            qd_json_end_object(&j);
             qd_buf_puts(&b, "\n");
         } else {
             put_head(mf.field, &b);
@@ -154,61 +154,61 @@ static void modes_text(qd_ctx *ctx, const qd_field *f, const qd_field_modes *r, 
 }
 
 static void modes_json(qd_ctx *ctx, const qd_field *f, const qd_field_modes *r, double tol,
-                       cli_json *j) {
-    cli_json_begin_object(j);
+                       qd_json *j) {
+    qd_json_begin_object(j);
     json_head(ctx, f, j);
-    cli_json_key(j, "rho");
-    cli_json_expr(j, ctx, r->rho);
-    cli_json_key(j, "tau");
-    cli_json_expr(j, ctx, r->tau);
-    cli_json_key(j, "kappa");
-    cli_json_expr(j, ctx, r->kappa);
-    cli_json_key(j, "method");
-    cli_json_string(j, r->exact ? "exact" : "finite elements");
-    cli_json_key(j, "converged");
-    cli_json_bool(j, r->converged);
-    cli_json_key(j, "elements");
+    qd_json_key(j, "rho");
+    qd_json_expr(j, ctx, r->rho);
+    qd_json_key(j, "tau");
+    qd_json_expr(j, ctx, r->tau);
+    qd_json_key(j, "kappa");
+    qd_json_expr(j, ctx, r->kappa);
+    qd_json_key(j, "method");
+    qd_json_string(j, r->exact ? "exact" : "finite elements");
+    qd_json_key(j, "converged");
+    qd_json_bool(j, r->converged);
+    qd_json_key(j, "elements");
     if (r->exact)
-        cli_json_null(j);
+        qd_json_null(j);
     else
-        cli_json_number(j, (double)r->elements);
-    cli_json_key(j, "tolerance");
-    cli_json_number(j, tol);
-    cli_json_key(j, "modes");
-    cli_json_begin_array(j);
+        qd_json_number(j, (double)r->elements);
+    qd_json_key(j, "tolerance");
+    qd_json_number(j, tol);
+    qd_json_key(j, "modes");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r->n; i++) {
         const qd_field_mode *md = &r->mode[i];
-        cli_json_begin_object(j);
-        cli_json_key(j, "omega");
+        qd_json_begin_object(j);
+        qd_json_key(j, "omega");
         if (md->omega2 >= 0)
-            cli_json_number(j, md->omega);
+            qd_json_number(j, md->omega);
         else
-            cli_json_null(j);
-        cli_json_key(j, "omega2");
-        cli_json_number(j, md->omega2);
-        cli_json_key(j, "error");
+            qd_json_null(j);
+        qd_json_key(j, "omega2");
+        qd_json_number(j, md->omega2);
+        qd_json_key(j, "error");
         if (isfinite(md->error))
-            cli_json_number(j, md->error);
+            qd_json_number(j, md->error);
         else
-            cli_json_null(j);
-        cli_json_key(j, "shape");
+            qd_json_null(j);
+        qd_json_key(j, "shape");
         if (md->shape == QD_FIELD_SHAPE_NONE)
-            cli_json_null(j);
+            qd_json_null(j);
         else {
             qd_buf s = QD_BUF_INIT;
             put_shape(&s, f, md);
-            cli_json_string(j, qd_buf_str(&s));
+            qd_json_string(j, qd_buf_str(&s));
             qd_buf_free(&s);
         }
-        cli_json_key(j, "k");
+        qd_json_key(j, "k");
         if (md->shape == QD_FIELD_SHAPE_NONE)
-            cli_json_null(j);
+            qd_json_null(j);
         else
-            cli_json_number(j, md->k);
-        cli_json_end_object(j);
+            qd_json_number(j, md->k);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
-    cli_json_end_object(j);
+    qd_json_end_array(j);
+    qd_json_end_object(j);
 }
 
 /* The library's reason, shown at the Ldensity statement (a bad input: 2). */
@@ -240,10 +240,10 @@ int cli_field_modes(const char *file, size_t nsets, const char *const *sets, siz
         rc = density_error(ctx, &mf);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        cli_json j;
+        qd_json j;
         double t = tol > 0 ? tol : 1e-6;
         if (json) {
-            cli_json_init(&j, &b);
+            qd_json_init(&j, &b);
             modes_json(ctx, mf.field, &r, t, &j);
             qd_buf_puts(&b, "\n");
         } else

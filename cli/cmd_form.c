@@ -7,7 +7,7 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 
 static const char usage_text[] =
     "usage: qdot form EXPR --vars \"x, y, ...\" [--format text|json]";
@@ -129,60 +129,60 @@ static void write_text(qd_ctx *ctx, qd_buf *b, const qd_expr *phi, const qd_qfor
                       f->nzero);
 }
 
-static void write_json(qd_ctx *ctx, cli_json *j, const qd_expr *phi, const qd_qform *f) {
+static void write_json(qd_ctx *ctx, qd_json *j, const qd_expr *phi, const qd_qform *f) {
     size_t n = f->n;
-    cli_json_begin_object(j);
-    cli_json_key(j, "variables");
-    cli_json_begin_array(j);
+    qd_json_begin_object(j);
+    qd_json_key(j, "variables");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++)
-        cli_json_string(j, qd_expr_name(f->x[i]));
-    cli_json_end_array(j);
-    cli_json_key(j, "form");
-    cli_json_expr(j, ctx, phi);
-    cli_json_key(j, "matrix");
-    cli_json_begin_array(j);
+        qd_json_string(j, qd_expr_name(f->x[i]));
+    qd_json_end_array(j);
+    qd_json_key(j, "form");
+    qd_json_expr(j, ctx, phi);
+    qd_json_key(j, "matrix");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < n; k++)
-            cli_json_expr(j, ctx, f->a[i * n + k]);
-        cli_json_end_array(j);
+            qd_json_expr(j, ctx, f->a[i * n + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
-    cli_json_key(j, "coefficients");
-    cli_json_begin_array(j);
+    qd_json_end_array(j);
+    qd_json_key(j, "coefficients");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < f->nsq; k++)
-        cli_json_expr(j, ctx, f->coef[k]);
-    cli_json_end_array(j);
-    cli_json_key(j, "linear_forms");
-    cli_json_begin_array(j);
+        qd_json_expr(j, ctx, f->coef[k]);
+    qd_json_end_array(j);
+    qd_json_key(j, "linear_forms");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < f->nsq; k++)
-        cli_json_expr(j, ctx, f->lin[k]);
-    cli_json_end_array(j);
-    cli_json_key(j, "sum_of_squares");
-    cli_json_expr(j, ctx, squares(ctx, f));
-    cli_json_key(j, "paired");
-    cli_json_bool(j, f->paired);
-    cli_json_key(j, "rank");
-    cli_json_number(j, (double)f->nsq);
-    cli_json_key(j, "inertia");
+        qd_json_expr(j, ctx, f->lin[k]);
+    qd_json_end_array(j);
+    qd_json_key(j, "sum_of_squares");
+    qd_json_expr(j, ctx, squares(ctx, f));
+    qd_json_key(j, "paired");
+    qd_json_bool(j, f->paired);
+    qd_json_key(j, "rank");
+    qd_json_number(j, (double)f->nsq);
+    qd_json_key(j, "inertia");
     if (f->decided) {
-        cli_json_begin_object(j);
-        cli_json_key(j, "positive");
-        cli_json_number(j, (double)f->npos);
-        cli_json_key(j, "negative");
-        cli_json_number(j, (double)f->nneg);
-        cli_json_key(j, "zero");
-        cli_json_number(j, (double)f->nzero);
-        cli_json_end_object(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "positive");
+        qd_json_number(j, (double)f->npos);
+        qd_json_key(j, "negative");
+        qd_json_number(j, (double)f->nneg);
+        qd_json_key(j, "zero");
+        qd_json_number(j, (double)f->nzero);
+        qd_json_end_object(j);
     } else {
-        cli_json_null(j);
+        qd_json_null(j);
     }
-    cli_json_key(j, "kind");
+    qd_json_key(j, "kind");
     if (f->kind)
-        cli_json_string(j, f->kind);
+        qd_json_string(j, f->kind);
     else
-        cli_json_null(j);
-    cli_json_end_object(j);
+        qd_json_null(j);
+    qd_json_end_object(j);
 }
 
 int cli_cmd_form(int argc, char **argv) {
@@ -208,15 +208,15 @@ int cli_cmd_form(int argc, char **argv) {
     }
     if (f) {
         qd_buf b = QD_BUF_INIT;
-        cli_json j;
+        qd_json j;
         if (a.json) {
-            cli_json_init(&j, &b);
+            qd_json_init(&j, &b);
             write_json(ctx, &j, phi, f);
             qd_buf_puts(&b, "\n");
         } else {
             write_text(ctx, &b, phi, f);
         }
-        bool ok = !b.failed && (!a.json || cli_json_ok(&j));
+        bool ok = !b.failed && (!a.json || qd_json_ok(&j));
         if (ok)
             fputs(qd_buf_str(&b), stdout);
         else

@@ -12,7 +12,7 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "eom_out.h"
 #include "model_cli.h"
 #include "model_file.h"
@@ -335,88 +335,88 @@ static void write_sympy(const ham_run *r, qd_buf *b) {
 }
 
 /* A string of x, or its number with --at. */
-static void json_expr(const ham_run *r, cli_json *j, const qd_expr *x) {
+static void json_expr(const ham_run *r, qd_json *j, const qd_expr *x) {
     if (r->at && x && qd_is_number(x))
-        cli_json_number(j, cli_state_value(x));
+        qd_json_number(j, cli_state_value(x));
     else
-        cli_json_expr(j, r->ctx, x);
+        qd_json_expr(j, r->ctx, x);
 }
 
-static void json_list(const ham_run *r, cli_json *j, const char *key, const qd_expr *const *x) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_list(const ham_run *r, qd_json *j, const char *key, const qd_expr *const *x) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t k = 0; k < r->h->n; k++)
         if (x[k])
             json_expr(r, j, x[k]);
         else
-            cli_json_null(j);
-    cli_json_end_array(j);
+            qd_json_null(j);
+    qd_json_end_array(j);
 }
 
-static void json_point(const ham_run *r, cli_json *j) {
-    cli_json_key(j, "at");
-    cli_json_begin_object(j);
+static void json_point(const ham_run *r, qd_json *j) {
+    qd_json_key(j, "at");
+    qd_json_begin_object(j);
     size_t nq = r->h->n;
     for (size_t i = 0; i < r->nsyms; i++)
         if (i < nq || i == 2 * nq || i >= r->st.n) {
-            cli_json_key(j, qd_expr_name(r->syms[i]));
-            cli_json_number(j, r->vals[i]);
+            qd_json_key(j, qd_expr_name(r->syms[i]));
+            qd_json_number(j, r->vals[i]);
         }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 static void write_json(const ham_run *r, qd_buf *b) {
     const qd_ham *h = r->h;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "file");
-    cli_json_string(&j, r->mf.path);
-    cli_json_key(&j, "coordinates");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "file");
+    qd_json_string(&j, r->mf.path);
+    qd_json_key(&j, "coordinates");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < h->n; k++)
-        cli_json_string(&j, qd_expr_name(h->q[k]));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "momenta");
-    cli_json_begin_array(&j);
+        qd_json_string(&j, qd_expr_name(h->q[k]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "momenta");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < h->n; k++)
-        cli_json_string(&j, qd_expr_name(h->p[k]));
-    cli_json_end_array(&j);
+        qd_json_string(&j, qd_expr_name(h->p[k]));
+    qd_json_end_array(&j);
     json_list(r, &j, "definitions", h->pdef);
     json_list(r, &j, "velocities", h->vel);
     if (h->implicit) { /* only then, so the other models' output is unchanged */
-        cli_json_key(&j, "implicit");
-        cli_json_bool(&j, true);
+        qd_json_key(&j, "implicit");
+        qd_json_bool(&j, true);
     }
     if (r->at)
         json_point(r, &j);
-    cli_json_key(&j, "H");
+    qd_json_key(&j, "H");
     json_expr(r, &j, h->H);
     json_list(r, &j, "dq_dt", h->dq);
     json_list(r, &j, "dp_dt", h->dp);
-    cli_json_key(&j, "H_is_energy");
+    qd_json_key(&j, "H_is_energy");
     if (h->H_minus_E)
-        cli_json_bool(&j, h->is_energy);
+        qd_json_bool(&j, h->is_energy);
     else
-        cli_json_null(&j);
-    cli_json_key(&j, "H_minus_energy");
-    cli_json_expr(&j, r->ctx, h->H_minus_E);
-    cli_json_key(&j, "conserved");
-    cli_json_bool(&j, h->conserved);
-    cli_json_key(&j, "H_given");
-    cli_json_bool(&j, h->H_given);
+        qd_json_null(&j);
+    qd_json_key(&j, "H_minus_energy");
+    qd_json_expr(&j, r->ctx, h->H_minus_E);
+    qd_json_key(&j, "conserved");
+    qd_json_bool(&j, h->conserved);
+    qd_json_key(&j, "H_given");
+    qd_json_bool(&j, h->H_given);
     if (h->H_given && !r->at) { /* the inverse Legendre transform, or why there is none */
-        cli_json_key(&j, "L");
+        qd_json_key(&j, "L");
         json_expr(r, &j, h->L_from_H);
-        cli_json_key(&j, "L_error");
+        qd_json_key(&j, "L_error");
         if (h->L_from_H)
-            cli_json_null(&j);
+            qd_json_null(&j);
         else
-            cli_json_string(&j, h->L_why);
+            qd_json_string(&j, h->L_why);
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 static int emit(ham_run *r) {

@@ -9,7 +9,7 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "eom_out.h"
 #include "model_cli.h"
 #include "model_file.h"
@@ -144,77 +144,77 @@ static void write_lines(const hj_run *r, qd_buf *b) {
 }
 
 /* One separated coordinate: its equation, p^2, constant and integral. */
-static void json_sep(const hj_run *r, cli_json *j, const qd_hj_sep *s) {
-    cli_json_begin_object(j);
-    cli_json_key(j, "coordinate");
-    cli_json_string(j, qd_expr_name(s->q));
-    cli_json_key(j, "momentum");
-    cli_json_string(j, qd_expr_name(s->p));
-    cli_json_key(j, "constant");
-    cli_json_string(j, qd_expr_name(s->constant));
-    cli_json_key(j, "equation");
-    cli_json_expr(j, r->ctx, s->equation);
-    cli_json_key(j, "p2");
-    cli_json_expr(j, r->ctx, s->p2);
-    cli_json_key(j, "p");
-    cli_json_expr(j, r->ctx, s->pk);
-    cli_json_key(j, "q_of_p");
-    cli_json_expr(j, r->ctx, s->qk);
-    cli_json_key(j, "cyclic");
-    cli_json_bool(j, s->cyclic);
-    cli_json_key(j, "integral");
-    cli_json_expr(j, r->ctx, s->integral);
+static void json_sep(const hj_run *r, qd_json *j, const qd_hj_sep *s) {
+    qd_json_begin_object(j);
+    qd_json_key(j, "coordinate");
+    qd_json_string(j, qd_expr_name(s->q));
+    qd_json_key(j, "momentum");
+    qd_json_string(j, qd_expr_name(s->p));
+    qd_json_key(j, "constant");
+    qd_json_string(j, qd_expr_name(s->constant));
+    qd_json_key(j, "equation");
+    qd_json_expr(j, r->ctx, s->equation);
+    qd_json_key(j, "p2");
+    qd_json_expr(j, r->ctx, s->p2);
+    qd_json_key(j, "p");
+    qd_json_expr(j, r->ctx, s->pk);
+    qd_json_key(j, "q_of_p");
+    qd_json_expr(j, r->ctx, s->qk);
+    qd_json_key(j, "cyclic");
+    qd_json_bool(j, s->cyclic);
+    qd_json_key(j, "integral");
+    qd_json_expr(j, r->ctx, s->integral);
     if (r->solve) {
-        cli_json_key(j, "motion");
-        cli_json_expr(j, r->ctx, s->motion);
-        cli_json_key(j, "clock");
+        qd_json_key(j, "motion");
+        qd_json_expr(j, r->ctx, s->motion);
+        qd_json_key(j, "clock");
         if (s->clock)
-            cli_json_string(j, qd_expr_name(s->clock));
+            qd_json_string(j, qd_expr_name(s->clock));
         else
-            cli_json_null(j);
+            qd_json_null(j);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 static void write_json(const hj_run *r, qd_buf *b) {
     const qd_hj *h = r->h;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "file");
-    cli_json_string(&j, r->mf.path);
-    cli_json_key(&j, "H");
-    cli_json_expr(&j, r->ctx, h->H);
-    cli_json_key(&j, "equation");
-    cli_json_expr(&j, r->ctx, h->equation);
-    cli_json_key(&j, "time_independent");
-    cli_json_bool(&j, h->time_independent);
-    cli_json_key(&j, "separable");
-    cli_json_bool(&j, h->separable);
-    cli_json_key(&j, "form");
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "file");
+    qd_json_string(&j, r->mf.path);
+    qd_json_key(&j, "H");
+    qd_json_expr(&j, r->ctx, h->H);
+    qd_json_key(&j, "equation");
+    qd_json_expr(&j, r->ctx, h->equation);
+    qd_json_key(&j, "time_independent");
+    qd_json_bool(&j, h->time_independent);
+    qd_json_key(&j, "separable");
+    qd_json_bool(&j, h->separable);
+    qd_json_key(&j, "form");
     if (h->separable)
-        cli_json_string(&j, h->form);
+        qd_json_string(&j, h->form);
     else
-        cli_json_null(&j);
-    cli_json_key(&j, "why");
-    cli_json_string(&j, h->why);
-    cli_json_key(&j, "separation");
-    cli_json_begin_array(&j);
+        qd_json_null(&j);
+    qd_json_key(&j, "why");
+    qd_json_string(&j, h->why);
+    qd_json_key(&j, "separation");
+    qd_json_begin_array(&j);
     for (size_t k = 0; h->separable && k < h->n; k++)
         json_sep(r, &j, &h->sep[k]);
-    cli_json_end_array(&j);
-    cli_json_key(&j, "W");
-    cli_json_expr(&j, r->ctx, h->W);
-    cli_json_key(&j, "constants");
-    cli_json_begin_array(&j);
+    qd_json_end_array(&j);
+    qd_json_key(&j, "W");
+    qd_json_expr(&j, r->ctx, h->W);
+    qd_json_key(&j, "constants");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < h->nconst; k++)
-        cli_json_string(&j, qd_expr_name(h->constants[k]));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "energy_constant");
-    cli_json_string(&j, qd_expr_name(h->energy));
-    cli_json_end_object(&j);
+        qd_json_string(&j, qd_expr_name(h->constants[k]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "energy_constant");
+    qd_json_string(&j, qd_expr_name(h->energy));
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 static void sympy_assign(const hj_run *r, qd_buf *b, const char *name, const qd_expr *x) {

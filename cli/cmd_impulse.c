@@ -18,7 +18,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "state.h"
@@ -513,113 +513,113 @@ static void write_text(imp_run *r, qd_buf *b) {
 
 /* ---- JSON ---------------------------------------------------------------------- */
 
-static void json_num(cli_json *j, const char *key, double x) {
-    cli_json_key(j, key);
-    cli_json_number(j, x == 0 ? 0.0 : x);
+static void json_num(qd_json *j, const char *key, double x) {
+    qd_json_key(j, key);
+    qd_json_number(j, x == 0 ? 0.0 : x);
 }
 
-static void json_vec(cli_json *j, const char *key, const double *v) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_vec(qd_json *j, const char *key, const double *v) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (unsigned k = 0; k < 3; k++)
-        cli_json_number(j, v[k] == 0 ? 0.0 : v[k]);
-    cli_json_end_array(j);
+        qd_json_number(j, v[k] == 0 ? 0.0 : v[k]);
+    qd_json_end_array(j);
 }
 
 /* An object keyed by the coordinates ("x'" with prime), one number each. */
-static void json_by_coord(imp_run *r, cli_json *j, const char *key, const double *x,
+static void json_by_coord(imp_run *r, qd_json *j, const char *key, const double *x,
                           bool prime) {
     char name[80];
-    cli_json_key(j, key);
-    cli_json_begin_object(j);
+    qd_json_key(j, key);
+    qd_json_begin_object(j);
     for (size_t k = 0; k < r->res.n; k++) {
         snprintf(name, sizeof name, "%s%s", qname(r, k), prime ? "'" : "");
         json_num(j, name, x[k]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_multipliers(imp_run *r, cli_json *j) {
+static void json_multipliers(imp_run *r, qd_json *j) {
     const qd_impulse *s = &r->res;
-    cli_json_key(j, "impulsive_multipliers");
-    cli_json_begin_object(j);
+    qd_json_key(j, "impulsive_multipliers");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < s->nmult; k++)
         json_num(j, s->mult_name[k], s->mult[k]);
-    cli_json_end_object(j);
-    cli_json_key(j, "redundant");
-    cli_json_begin_array(j);
+    qd_json_end_object(j);
+    qd_json_key(j, "redundant");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < s->nmult; k++)
         if (s->redundant[k])
-            cli_json_string(j, s->mult_name[k]);
-    cli_json_end_array(j);
-    cli_json_key(j, "impulsive_reactions");
-    cli_json_begin_object(j);
+            qd_json_string(j, s->mult_name[k]);
+    qd_json_end_array(j);
+    qd_json_key(j, "impulsive_reactions");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < s->nreact; k++)
         json_vec(j, s->react_name[k], s->react[k]);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_exact(imp_run *r, cli_json *j) {
+static void json_exact(imp_run *r, qd_json *j) {
     const qd_impulse *s = &r->res;
     char name[80];
-    cli_json_key(j, "exact");
+    qd_json_key(j, "exact");
     if (!s->exact) {
-        cli_json_null(j);
+        qd_json_null(j);
         return;
     }
-    cli_json_begin_object(j);
-    cli_json_key(j, "velocities_after");
-    cli_json_begin_object(j);
+    qd_json_begin_object(j);
+    qd_json_key(j, "velocities_after");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < s->n; k++) {
         snprintf(name, sizeof name, "%s'", qname(r, k));
-        cli_json_key(j, name);
-        cli_json_expr(j, r->ctx, exact_qd(r, k));
+        qd_json_key(j, name);
+        qd_json_expr(j, r->ctx, exact_qd(r, k));
     }
-    cli_json_end_object(j);
-    cli_json_key(j, "impulsive_multipliers");
-    cli_json_begin_object(j);
+    qd_json_end_object(j);
+    qd_json_key(j, "impulsive_multipliers");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < s->nmult; k++) {
-        cli_json_key(j, s->mult_name[k]);
-        cli_json_expr(j, r->ctx, exact_mult(r, k));
+        qd_json_key(j, s->mult_name[k]);
+        qd_json_expr(j, r->ctx, exact_mult(r, k));
     }
-    cli_json_end_object(j);
-    cli_json_key(j, "energy_lost");
-    cli_json_expr(j, r->ctx, exact_lost(r));
-    cli_json_end_object(j);
+    qd_json_end_object(j);
+    qd_json_key(j, "energy_lost");
+    qd_json_expr(j, r->ctx, exact_lost(r));
+    qd_json_end_object(j);
 }
 
 /* One theorem: whether it applies and holds, and its numbers named. */
-static void json_check(cli_json *j, const char *key, const qd_impulse_check *c,
+static void json_check(qd_json *j, const char *key, const qd_impulse_check *c,
                        const char *const names[3]) {
-    cli_json_key(j, key);
-    cli_json_begin_object(j);
-    cli_json_key(j, "applies");
-    cli_json_bool(j, c->applies);
-    cli_json_key(j, "holds");
-    cli_json_bool(j, c->applies && c->holds);
+    qd_json_key(j, key);
+    qd_json_begin_object(j);
+    qd_json_key(j, "applies");
+    qd_json_bool(j, c->applies);
+    qd_json_key(j, "holds");
+    qd_json_bool(j, c->applies && c->holds);
     const double v[3] = {c->a, c->b, c->c};
     for (int k = 0; k < 3 && c->applies; k++)
         if (names[k])
             json_num(j, names[k], v[k]);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_theorems(const imp_run *r, cli_json *j) {
+static void json_theorems(const imp_run *r, qd_json *j) {
     static const char *const carnot[3] = {"energy_lost", "energy_of_change", NULL};
     static const char *const bertrand[3] = {"energy_without", "energy_with",
                                             "energy_of_difference"};
     static const char *const thomson[3] = {"energy_of_change", "least_energy", NULL};
-    cli_json_key(j, "theorems");
-    cli_json_begin_object(j);
+    qd_json_key(j, "theorems");
+    qd_json_begin_object(j);
     json_check(j, "carnot", &r->res.carnot, carnot);
     json_check(j, "bertrand", &r->res.bertrand, bertrand);
     json_check(j, "thomson", &r->res.thomson, thomson);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_collision(const imp_run *r, cli_json *j) {
+static void json_collision(const imp_run *r, qd_json *j) {
     const qd_collision *c = &r->res.col;
-    cli_json_begin_object(j);
+    qd_json_begin_object(j);
     json_num(j, "m1", c->m1);
     json_num(j, "m2", c->m2);
     json_vec(j, "w", c->w);
@@ -638,14 +638,14 @@ static void json_collision(const imp_run *r, cli_json *j) {
     json_num(j, "theta_lab1", c->theta_lab1);
     json_num(j, "theta_lab2", c->theta_lab2);
     json_num(j, "gamma", c->gamma);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 static void write_json(imp_run *r, qd_buf *b) {
     const qd_impulse *s = &r->res;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     json_by_coord(r, &j, "velocities_before", s->qd_before, true);
     json_by_coord(r, &j, "velocities_after", s->qd_after, true);
     json_by_coord(r, &j, "generalized_impulses", s->Qhat, false);
@@ -655,14 +655,14 @@ static void write_json(imp_run *r, qd_buf *b) {
     json_num(&j, "energy_lost", s->energy_lost);
     json_exact(r, &j);
     json_theorems(r, &j);
-    cli_json_key(&j, "collision");
+    qd_json_key(&j, "collision");
     if (s->collision)
         json_collision(r, &j);
     else
-        cli_json_null(&j);
-    cli_json_end_object(&j);
+        qd_json_null(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* ---- LaTeX --------------------------------------------------------------------- */

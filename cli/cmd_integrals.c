@@ -13,7 +13,7 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "state.h"
@@ -311,33 +311,33 @@ static void write_text(const int_run *r, qd_buf *b) {
 
 /* ---- JSON ---------------------------------------------------------------------- */
 
-static void jexpr(const int_run *r, cli_json *j, const char *key, const qd_expr *x) {
-    cli_json_key(j, key);
-    cli_json_expr(j, r->ctx, x);
+static void jexpr(const int_run *r, qd_json *j, const char *key, const qd_expr *x) {
+    qd_json_key(j, key);
+    qd_json_expr(j, r->ctx, x);
 }
 
-static void jbool(cli_json *j, const char *key, bool v) {
-    cli_json_key(j, key);
-    cli_json_bool(j, v);
+static void jbool(qd_json *j, const char *key, bool v) {
+    qd_json_key(j, key);
+    qd_json_bool(j, v);
 }
 
-static void jstr(cli_json *j, const char *key, const char *v) {
-    cli_json_key(j, key);
+static void jstr(qd_json *j, const char *key, const char *v) {
+    qd_json_key(j, key);
     if (v)
-        cli_json_string(j, v);
+        qd_json_string(j, v);
     else
-        cli_json_null(j);
+        qd_json_null(j);
 }
 
-static void json_noether(const int_run *r, cli_json *j, const qd_noether *nt) {
-    cli_json_begin_object(j);
+static void json_noether(const int_run *r, qd_json *j, const qd_noether *nt) {
+    qd_json_begin_object(j);
     jstr(j, "name", nt->name);
-    cli_json_key(j, "field");
-    cli_json_begin_object(j);
+    qd_json_key(j, "field");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < r->e->n; k++)
         if (!qd_is_zero(nt->xi[k]))
             jexpr(r, j, qname(r, k), nt->xi[k]);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     jbool(j, "invariant", nt->invariant);
     jexpr(r, j, "dL_deps", nt->dL);
     jexpr(r, j, "F", nt->F);
@@ -346,48 +346,48 @@ static void json_noether(const int_run *r, cli_json *j, const qd_noether *nt) {
     jbool(j, "conserved", nt->conserved);
     jexpr(r, j, "dIdt", nt->remainder);
     jbool(j, "numeric", nt->numeric);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_cyclic(const int_run *r, cli_json *j) {
-    cli_json_key(j, "cyclic");
-    cli_json_begin_array(j);
+static void json_cyclic(const int_run *r, qd_json *j) {
+    qd_json_key(j, "cyclic");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r->I->ncyclic; i++) {
         const qd_int_cyclic *c = &r->I->cyclic[i];
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         jstr(j, "coordinate", qname(r, c->coord));
         jexpr(r, j, "momentum", c->momentum);
         jbool(j, "conserved", c->conserved);
         jstr(j, "obstruction", c->obstruction);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_jacobi(const int_run *r, cli_json *j) {
+static void json_jacobi(const int_run *r, qd_json *j) {
     const qd_int_jacobi *J = &r->I->jacobi;
-    cli_json_key(j, "jacobi");
-    cli_json_begin_object(j);
+    qd_json_key(j, "jacobi");
+    qd_json_begin_object(j);
     jexpr(r, j, "h", J->h);
     jbool(j, "explicit_t", J->explicit_t);
     jbool(j, "conserved", J->conserved);
     jstr(j, "not_conserved", J->not_conserved);
     jexpr(r, j, "energy", J->energy);
-    cli_json_key(j, "equals_energy");
+    qd_json_key(j, "equals_energy");
     if (J->equals_energy < 0)
-        cli_json_null(j);
+        qd_json_null(j);
     else
-        cli_json_bool(j, J->equals_energy == 1);
+        qd_json_bool(j, J->equals_energy == 1);
     jexpr(r, j, "h_minus_energy", J->h_minus_E);
     jstr(j, "reason", J->reason);
     jbool(j, "numeric", J->numeric);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_balance(const int_run *r, cli_json *j) {
+static void json_balance(const int_run *r, qd_json *j) {
     const qd_int_balance *B = &r->I->balance;
-    cli_json_key(j, "energy_balance");
-    cli_json_begin_object(j);
+    qd_json_key(j, "energy_balance");
+    qd_json_begin_object(j);
     jexpr(r, j, "dhdt", B->dhdt);
     jstr(j, "formula", B->formula);
     jexpr(r, j, "expected", B->expected);
@@ -395,58 +395,58 @@ static void json_balance(const int_run *r, cli_json *j) {
     jbool(j, "verified", B->verified);
     jbool(j, "numeric", B->numeric);
     jexpr(r, j, "remainder", B->remainder);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_lists(const int_run *r, cli_json *j) {
-    cli_json_key(j, "found");
-    cli_json_begin_array(j);
+static void json_lists(const int_run *r, qd_json *j) {
+    qd_json_key(j, "found");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r->I->nfound; i++)
         json_noether(r, j, &r->I->found[i]);
-    cli_json_end_array(j);
-    cli_json_key(j, "tested");
-    cli_json_begin_array(j);
+    qd_json_end_array(j);
+    qd_json_key(j, "tested");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r->I->ntested; i++)
-        cli_json_string(j, r->I->tested[i]);
-    cli_json_end_array(j);
-    cli_json_key(j, "noether");
-    cli_json_begin_array(j);
+        qd_json_string(j, r->I->tested[i]);
+    qd_json_end_array(j);
+    qd_json_key(j, "noether");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r->nnoether; i++)
         json_noether(r, j, &r->noether[i]);
-    cli_json_end_array(j);
-    cli_json_key(j, "proposed");
-    cli_json_begin_array(j);
+    qd_json_end_array(j);
+    qd_json_key(j, "proposed");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r->nproposed; i++) {
         const qd_int_proposed *p = &r->proposed[i];
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         jstr(j, "name", p->name);
         jexpr(r, j, "expr", p->expr);
         jbool(j, "conserved", p->conserved);
         jexpr(r, j, "remainder", p->remainder);
         jbool(j, "numeric", p->numeric);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 static void write_json(const int_run *r, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     jstr(&j, "file", r->mf.path);
-    cli_json_key(&j, "coordinates");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "coordinates");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < r->e->n; k++)
-        cli_json_string(&j, qname(r, k));
-    cli_json_end_array(&j);
+        qd_json_string(&j, qname(r, k));
+    qd_json_end_array(&j);
     jexpr(r, &j, "L", r->I->L);
     json_cyclic(r, &j);
     json_jacobi(r, &j);
     json_balance(r, &j);
     json_lists(r, &j);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 static int emit(int_run *r) {

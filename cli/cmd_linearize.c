@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "linear_cli.h"
 #include "lqr_cli.h"
 #include "model_cli.h"
@@ -168,69 +168,69 @@ static void text(qd_buf *b, qd_ctx *ctx, const qd_statespace *s) {
 
 /* ---- json ------------------------------------------------------------------------ */
 
-static void json_matrix(cli_json *j, const char *key, size_t r, size_t c, const double *x) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_matrix(qd_json *j, const char *key, size_t r, size_t c, const double *x) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < c; k++)
-            cli_json_number(j, x[i * c + k]);
-        cli_json_end_array(j);
+            qd_json_number(j, x[i * c + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_exact(cli_json *j, qd_ctx *ctx, const char *key, size_t r, size_t c,
+static void json_exact(qd_json *j, qd_ctx *ctx, const char *key, size_t r, size_t c,
                        const qd_expr *const *x) {
-    cli_json_key(j, key);
+    qd_json_key(j, key);
     if (!x) {
-        cli_json_null(j);
+        qd_json_null(j);
         return;
     }
-    cli_json_begin_array(j);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < c; k++)
-            cli_json_expr(j, ctx, x[i * c + k]);
-        cli_json_end_array(j);
+            qd_json_expr(j, ctx, x[i * c + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_names(cli_json *j, const char *key, size_t n, const qd_expr *const *syms,
+static void json_names(qd_json *j, const char *key, size_t n, const qd_expr *const *syms,
                        const char *const *names) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++)
-        cli_json_string(j, syms ? qd_expr_name(syms[i]) : names[i]);
-    cli_json_end_array(j);
+        qd_json_string(j, syms ? qd_expr_name(syms[i]) : names[i]);
+    qd_json_end_array(j);
 }
 
-static void json_modes(cli_json *j, const qd_statespace *s, size_t count, const size_t *idx) {
-    cli_json_begin_array(j);
+static void json_modes(qd_json *j, const qd_statespace *s, size_t count, const size_t *idx) {
+    qd_json_begin_array(j);
     for (size_t k = 0; k < count; k++) {
         size_t e = idx[k];
-        cli_json_begin_object(j);
-        cli_json_key(j, "eigenvalue");
-        cli_json_begin_array(j);
-        cli_json_number(j, s->eig_re[e]);
-        cli_json_number(j, s->eig_im[e]);
-        cli_json_end_array(j);
-        cli_json_key(j, "states");
-        cli_json_begin_array(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "eigenvalue");
+        qd_json_begin_array(j);
+        qd_json_number(j, s->eig_re[e]);
+        qd_json_number(j, s->eig_im[e]);
+        qd_json_end_array(j);
+        qd_json_key(j, "states");
+        qd_json_begin_array(j);
         for (size_t i = 0; i < s->nx; i++)
             if (hypot(s->vec_re[i * s->nx + e], s->vec_im[i * s->nx + e]) > 1e-6)
-                cli_json_string(j, qd_expr_name(s->states[i]));
-        cli_json_end_array(j);
-        cli_json_end_object(j);
+                qd_json_string(j, qd_expr_name(s->states[i]));
+        qd_json_end_array(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 static void json(qd_buf *b, qd_ctx *ctx, const qd_statespace *s, const qd_care_result *lqr) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     json_names(&j, "states", s->nx, s->states, NULL);
     json_names(&j, "inputs", s->nu, s->inputs, NULL);
     json_names(&j, "outputs", s->ny, NULL, s->outputs);
@@ -241,37 +241,37 @@ static void json(qd_buf *b, qd_ctx *ctx, const qd_statespace *s, const qd_care_r
     json_matrix(&j, "xdot0", 1, s->nx, s->xdot0);
     json_exact(&j, ctx, "A_exact", s->nx, s->nx, s->Asym);
     json_exact(&j, ctx, "B_exact", s->nx, s->nu, s->Bsym);
-    cli_json_key(&j, "eigenvalues");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "eigenvalues");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < s->nx; k++) {
-        cli_json_begin_array(&j);
-        cli_json_number(&j, s->eig_re[k]);
-        cli_json_number(&j, s->eig_im[k]);
-        cli_json_end_array(&j);
+        qd_json_begin_array(&j);
+        qd_json_number(&j, s->eig_re[k]);
+        qd_json_number(&j, s->eig_im[k]);
+        qd_json_end_array(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_key(&j, "rank_tolerance");
-    cli_json_number(&j, QD_SS_RANK_TOL);
-    cli_json_key(&j, "controllable");
-    cli_json_bool(&j, s->controllable);
-    cli_json_key(&j, "controllability_rank");
-    cli_json_number(&j, (double)s->rank_ctrb);
-    cli_json_key(&j, "uncontrollable_modes");
+    qd_json_end_array(&j);
+    qd_json_key(&j, "rank_tolerance");
+    qd_json_number(&j, QD_SS_RANK_TOL);
+    qd_json_key(&j, "controllable");
+    qd_json_bool(&j, s->controllable);
+    qd_json_key(&j, "controllability_rank");
+    qd_json_number(&j, (double)s->rank_ctrb);
+    qd_json_key(&j, "uncontrollable_modes");
     json_modes(&j, s, s->nuncontrollable, s->uncontrollable);
-    cli_json_key(&j, "observable");
-    cli_json_bool(&j, s->observable);
-    cli_json_key(&j, "observability_rank");
-    cli_json_number(&j, (double)s->rank_obsv);
-    cli_json_key(&j, "unobservable_modes");
+    qd_json_key(&j, "observable");
+    qd_json_bool(&j, s->observable);
+    qd_json_key(&j, "observability_rank");
+    qd_json_number(&j, (double)s->rank_obsv);
+    qd_json_key(&j, "unobservable_modes");
     json_modes(&j, s, s->ny ? s->nunobservable : 0, s->unobservable);
     if (lqr) {
-        cli_json_key(&j, "lqr");
+        qd_json_key(&j, "lqr");
         if (cli_lqr_json_design(&j, s, lqr) != QD_EXIT_OK)
             b->failed = true;
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* ---- code: the exact matrices where known, else the numbers -------------------- */

@@ -10,7 +10,7 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "rel_cli.h"
 #include "state.h"
@@ -188,24 +188,24 @@ static int compute(lz_run *r, const lz_args *a) {
     return rc;
 }
 
-static void num(cli_json *j, const char *key, double x) {
-    cli_json_key(j, key);
-    cli_json_number(j, x);
+static void num(qd_json *j, const char *key, double x) {
+    qd_json_key(j, key);
+    qd_json_number(j, x);
 }
 
 static void write_json(const lz_run *r, const lz_args *a, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     num(&j, "c", r->c);
     if (a->frame) {
         rel_json_vec(&j, "frame", r->V, 3);
         num(&j, "gamma", r->G);
-        cli_json_key(&j, "boost");
-        cli_json_begin_array(&j);
+        qd_json_key(&j, "boost");
+        qd_json_begin_array(&j);
         for (int i = 0; i < 4; i++)
             rel_json_vec(&j, NULL, r->O + 4 * i, 4);
-        cli_json_end_array(&j);
+        qd_json_end_array(&j);
         num(&j, "metric_error", r->err);
     }
     if (a->event)
@@ -235,9 +235,9 @@ static void write_json(const lz_run *r, const lz_args *a, qd_buf *b) {
         num(&j, "proper_time_error", r->tau.error);
         num(&j, "max_speed", r->tau.vmax);
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 static void line(qd_buf *b, const char *label, const double *x, size_t n, const double *y) {

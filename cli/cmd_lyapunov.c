@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "json.h"
+#include "qdot/json.h"
 #include "sim_cli.h"
 
 static const char usage_text[] =
@@ -112,44 +112,44 @@ static void print_text(const ly_result *r) {
     }
 }
 
-static void json_numbers(cli_json *j, const char *key, const double *x, size_t n) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_numbers(qd_json *j, const char *key, const double *x, size_t n) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++)
         if (isnan(x[i]))
-            cli_json_null(j);
+            qd_json_null(j);
         else
-            cli_json_number(j, x[i]);
-    cli_json_end_array(j);
+            qd_json_number(j, x[i]);
+    qd_json_end_array(j);
 }
 
 static int print_json(const ly_result *r, const cli_sim *c, const ly_args *p) {
     qd_buf b = QD_BUF_INIT;
-    cli_json j;
-    cli_json_init(&j, &b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "method");
-    cli_json_string(&j, qd_sim_method_name(c->opts.method));
-    cli_json_key(&j, "t_avg");
-    cli_json_number(&j, r->st.t_avg);
-    cli_json_key(&j, "transient");
-    cli_json_number(&j, p->transient);
-    cli_json_key(&j, "renorm");
-    cli_json_number(&j, p->renorm > 0 ? p->renorm : 1);
-    cli_json_key(&j, "renormalizations");
-    cli_json_number(&j, (double)r->st.renorms);
+    qd_json j;
+    qd_json_init(&j, &b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "method");
+    qd_json_string(&j, qd_sim_method_name(c->opts.method));
+    qd_json_key(&j, "t_avg");
+    qd_json_number(&j, r->st.t_avg);
+    qd_json_key(&j, "transient");
+    qd_json_number(&j, p->transient);
+    qd_json_key(&j, "renorm");
+    qd_json_number(&j, p->renorm > 0 ? p->renorm : 1);
+    qd_json_key(&j, "renormalizations");
+    qd_json_number(&j, (double)r->st.renorms);
     json_numbers(&j, "exponents", r->ex, r->k);
     json_numbers(&j, "errors", r->err, r->k);
-    cli_json_key(&j, "trace_mean");
-    cli_json_number(&j, r->st.trace_mean);
+    qd_json_key(&j, "trace_mean");
+    qd_json_number(&j, r->st.trace_mean);
     if (r->k == r->d) {
-        cli_json_key(&j, "sum");
-        cli_json_number(&j, sum_of(r));
+        qd_json_key(&j, "sum");
+        qd_json_number(&j, sum_of(r));
     }
-    cli_json_key(&j, "conservative");
-    cli_json_bool(&j, r->conservative);
-    cli_json_end_object(&j);
-    bool ok = cli_json_ok(&j);
+    qd_json_key(&j, "conservative");
+    qd_json_bool(&j, r->conservative);
+    qd_json_end_object(&j);
+    bool ok = qd_json_ok(&j);
     if (ok)
         printf("%s\n", qd_buf_str(&b));
     qd_buf_free(&b);

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "qdot/metric.h"
 #include "qdot/read.h"
@@ -220,118 +220,118 @@ static void put_text(qd_ctx *ctx, qd_buf *b, const qd_metric *g, const mt_force 
 
 /* ---- json ---------------------------------------------------------------------- */
 
-static void json_vector(cli_json *j, qd_ctx *ctx, const qd_metric *g, const char *key,
+static void json_vector(qd_json *j, qd_ctx *ctx, const qd_metric *g, const char *key,
                         const qd_expr *const *x) {
-    cli_json_key(j, key);
-    cli_json_begin_object(j);
+    qd_json_key(j, key);
+    qd_json_begin_object(j);
     for (size_t i = 0; i < g->n; i++) {
-        cli_json_key(j, name(g, i));
-        cli_json_expr(j, ctx, x[i]);
+        qd_json_key(j, name(g, i));
+        qd_json_expr(j, ctx, x[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_matrix(cli_json *j, qd_ctx *ctx, const qd_metric *g, const char *key,
+static void json_matrix(qd_json *j, qd_ctx *ctx, const qd_metric *g, const char *key,
                         const qd_expr *const *A) {
-    cli_json_key(j, key);
-    cli_json_begin_object(j);
+    qd_json_key(j, key);
+    qd_json_begin_object(j);
     for (size_t i = 0; i < g->n; i++)
         json_vector(j, ctx, g, name(g, i), A + i * g->n);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_symbols(cli_json *j, qd_ctx *ctx, const qd_metric *g, const char *key,
+static void json_symbols(qd_json *j, qd_ctx *ctx, const qd_metric *g, const char *key,
                          const qd_expr *const *G) {
-    cli_json_key(j, key);
-    cli_json_begin_object(j);
+    qd_json_key(j, key);
+    qd_json_begin_object(j);
     for (size_t l = 0; l < g->n; l++)
         json_matrix(j, ctx, g, name(g, l), G + l * g->n * g->n);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_chart(cli_json *j, qd_ctx *ctx, const qd_metric *g) {
-    cli_json_key(j, "chart");
-    cli_json_begin_object(j);
-    cli_json_key(j, "positions");
-    cli_json_begin_array(j);
+static void json_chart(qd_json *j, qd_ctx *ctx, const qd_metric *g) {
+    qd_json_key(j, "chart");
+    qd_json_begin_object(j);
+    qd_json_key(j, "positions");
+    qd_json_begin_array(j);
     for (size_t a = 0; a < g->npos; a++) {
         char lab[32];
         snprintf(lab, sizeof lab, "%c%zu", "xyz"[g->pos_axis[a]], g->pos_particle[a] + 1);
-        cli_json_begin_object(j);
-        cli_json_key(j, "name");
-        cli_json_string(j, lab);
-        cli_json_key(j, "value");
-        cli_json_expr(j, ctx, g->pos[a]);
+        qd_json_begin_object(j);
+        qd_json_key(j, "name");
+        qd_json_string(j, lab);
+        qd_json_key(j, "value");
+        qd_json_expr(j, ctx, g->pos[a]);
         json_vector(j, ctx, g, "jacobian", g->jac + a * g->n);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
-    cli_json_key(j, "jacobian_det");
-    cli_json_expr(j, ctx, g->jac_det);
-    cli_json_key(j, "positions_metric_det");
-    cli_json_expr(j, ctx, g->e_det);
-    cli_json_key(j, "singular_of");
-    cli_json_expr(j, ctx, g->sing_of);
-    cli_json_key(j, "singular");
-    cli_json_begin_array(j);
+    qd_json_end_array(j);
+    qd_json_key(j, "jacobian_det");
+    qd_json_expr(j, ctx, g->jac_det);
+    qd_json_key(j, "positions_metric_det");
+    qd_json_expr(j, ctx, g->e_det);
+    qd_json_key(j, "singular_of");
+    qd_json_expr(j, ctx, g->sing_of);
+    qd_json_key(j, "singular");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < g->nsing; k++) {
-        cli_json_begin_object(j);
-        cli_json_key(j, "lhs");
-        cli_json_expr(j, ctx, g->sing[k].lhs);
-        cli_json_key(j, "rhs");
-        cli_json_expr(j, ctx, g->sing[k].rhs);
-        cli_json_key(j, "period");
-        cli_json_expr(j, ctx, g->sing[k].period);
-        cli_json_end_object(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "lhs");
+        qd_json_expr(j, ctx, g->sing[k].lhs);
+        qd_json_key(j, "rhs");
+        qd_json_expr(j, ctx, g->sing[k].rhs);
+        qd_json_key(j, "period");
+        qd_json_expr(j, ctx, g->sing[k].period);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
-    cli_json_end_object(j);
+    qd_json_end_array(j);
+    qd_json_end_object(j);
 }
 
 static void put_json(qd_ctx *ctx, qd_buf *b, const qd_metric *g, const mt_force *f) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "coordinates");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "coordinates");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < g->n; i++)
-        cli_json_string(&j, name(g, i));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "source");
-    cli_json_string(&j, g->from_L ? "L" : "T");
-    cli_json_key(&j, "T2");
-    cli_json_expr(&j, ctx, g->T2);
-    cli_json_key(&j, "T1");
-    cli_json_expr(&j, ctx, g->T1);
-    cli_json_key(&j, "T0");
-    cli_json_expr(&j, ctx, g->T0);
+        qd_json_string(&j, name(g, i));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "source");
+    qd_json_string(&j, g->from_L ? "L" : "T");
+    qd_json_key(&j, "T2");
+    qd_json_expr(&j, ctx, g->T2);
+    qd_json_key(&j, "T1");
+    qd_json_expr(&j, ctx, g->T1);
+    qd_json_key(&j, "T0");
+    qd_json_expr(&j, ctx, g->T0);
     json_matrix(&j, ctx, g, "metric", g->g);
     json_matrix(&j, ctx, g, "metric_inverse", g->ginv);
-    cli_json_key(&j, "det");
-    cli_json_expr(&j, ctx, g->det);
+    qd_json_key(&j, "det");
+    qd_json_expr(&j, ctx, g->det);
     json_symbols(&j, ctx, g, "christoffel_first", g->first);
     json_symbols(&j, ctx, g, "christoffel_second", g->second);
     json_vector(&j, ctx, g, "Q", g->Q);
     json_vector(&j, ctx, g, "geodesic", g->geodesic);
-    cli_json_key(&j, "constrained");
-    cli_json_bool(&j, g->constrained);
-    cli_json_key(&j, "force");
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "given");
-    cli_json_bool(&j, f->given);
+    qd_json_key(&j, "constrained");
+    qd_json_bool(&j, g->constrained);
+    qd_json_key(&j, "force");
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "given");
+    qd_json_bool(&j, f->given);
     json_vector(&j, ctx, g, "covariant", f->G);
     json_vector(&j, ctx, g, "contravariant", f->up);
     json_vector(&j, ctx, g, "physical", f->phys);
     json_vector(&j, ctx, g, "ordinary", f->ord);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     json_vector(&j, ctx, g, "scale_factors", g->h);
-    cli_json_key(&j, "scale_from");
-    cli_json_string(&j, g->scale_geometric ? "positions" : "metric");
-    cli_json_key(&j, "orthogonal");
-    cli_json_bool(&j, g->orthogonal);
+    qd_json_key(&j, "scale_from");
+    qd_json_string(&j, g->scale_geometric ? "positions" : "metric");
+    qd_json_key(&j, "orthogonal");
+    qd_json_bool(&j, g->orthogonal);
     json_chart(&j, ctx, g);
-    cli_json_end_object(&j);
-    if (!cli_json_ok(&j))
+    qd_json_end_object(&j);
+    if (!qd_json_ok(&j))
         b->failed = true;
 }
 

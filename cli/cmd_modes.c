@@ -24,7 +24,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "modes_plot.h"
 #include "modes_symmetry.h"
@@ -398,97 +398,97 @@ static void put_text(modes_run *r, qd_buf *b) {
 
 /* ---- json ------------------------------------------------------------------ */
 
-static void json_matrix(cli_json *j, const char *key, size_t n, const double *A) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_matrix(qd_json *j, const char *key, size_t n, const double *A) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < n; k++)
-            cli_json_number(j, A[i * n + k]);
-        cli_json_end_array(j);
+            qd_json_number(j, A[i * n + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 /* The frequencies: w of every mode (conservative; unstable ones left out),
  * or the positive imaginary parts of the state-space eigenvalues. */
-static void json_frequencies(modes_run *r, cli_json *j) {
+static void json_frequencies(modes_run *r, qd_json *j) {
     const qd_modes_result *res = &r->res;
-    cli_json_key(j, "frequencies");
-    cli_json_begin_array(j);
+    qd_json_key(j, "frequencies");
+    qd_json_begin_array(j);
     double *w = malloc((res->neig + 1) * sizeof *w);
     size_t nw = w ? qd_modes_frequencies(res, w) : 0;
     for (size_t k = 0; k < nw; k++)
-        cli_json_number(j, w[k]);
+        qd_json_number(j, w[k]);
     free(w);
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 /* The conservative modes: w^2, w, period, multiplicity, shape, and the
  * exact w^2 and the initial normal coordinates when there are any. */
-static void json_modes(modes_run *r, cli_json *j) {
+static void json_modes(modes_run *r, qd_json *j) {
     const qd_eom *e = r->lr.e;
     const qd_modes_result *res = &r->res;
     size_t n = e->n;
-    cli_json_key(j, "modes");
-    cli_json_begin_array(j);
+    qd_json_key(j, "modes");
+    qd_json_begin_array(j);
     for (size_t k = 0; res->conservative && k < n; k++) {
         double w2 = res->omega2[k];
-        cli_json_begin_object(j);
-        cli_json_frequency(j, w2);
-        cli_json_key(j, "multiplicity");
-        cli_json_number(j, (double)qd_modes_multiplicity(res, k));
-        cli_json_key(j, "shape");
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
+        qd_json_frequency(j, w2);
+        qd_json_key(j, "multiplicity");
+        qd_json_number(j, (double)qd_modes_multiplicity(res, k));
+        qd_json_key(j, "shape");
+        qd_json_begin_object(j);
         for (size_t i = 0; i < n; i++) {
-            cli_json_key(j, qd_expr_name(e->q[i]));
-            cli_json_number(j, res->shapes[i * n + k]);
+            qd_json_key(j, qd_expr_name(e->q[i]));
+            qd_json_number(j, res->shapes[i * n + k]);
         }
-        cli_json_end_object(j);
+        qd_json_end_object(j);
         if (r->have_sym) {
-            cli_json_key(j, "omega2_exact");
-            cli_json_expr(j, r->lr.ctx, r->w2sym[k]);
-            cli_json_key(j, "omega2_exact_in_parameters");
-            cli_json_bool(j, r->sym_exact);
+            qd_json_key(j, "omega2_exact");
+            qd_json_expr(j, r->lr.ctx, r->w2sym[k]);
+            qd_json_key(j, "omega2_exact_in_parameters");
+            qd_json_bool(j, r->sym_exact);
         }
         if (r->Q) {
-            cli_json_key(j, "Q0");
-            cli_json_number(j, r->Q[k]);
-            cli_json_key(j, "Q0_dot");
-            cli_json_number(j, r->Qd[k]);
+            qd_json_key(j, "Q0");
+            qd_json_number(j, r->Q[k]);
+            qd_json_key(j, "Q0_dot");
+            qd_json_number(j, r->Qd[k]);
         }
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 static void put_json(modes_run *r, qd_buf *b) {
     const qd_eom *e = r->lr.e;
     const qd_modes_result *res = &r->res;
     size_t n = e->n;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "equilibrium");
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "equilibrium");
+    qd_json_begin_object(&j);
     for (size_t k = 0; k < n; k++) {
-        cli_json_key(&j, qd_expr_name(e->q[k]));
-        cli_json_number(&j, r->q0[k]);
+        qd_json_key(&j, qd_expr_name(e->q[k]));
+        qd_json_number(&j, r->q0[k]);
     }
-    cli_json_end_object(&j);
-    cli_json_key(&j, "residual");
-    cli_json_number(&j, r->residual);
+    qd_json_end_object(&j);
+    qd_json_key(&j, "residual");
+    qd_json_number(&j, r->residual);
     if (r->why) {
-        cli_json_key(&j, "choice");
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "reason");
-        cli_json_string(&j, r->why);
-        cli_json_key(&j, "others");
-        cli_json_number(&j, (double)r->ch.others);
-        cli_json_end_object(&j);
+        qd_json_key(&j, "choice");
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "reason");
+        qd_json_string(&j, r->why);
+        qd_json_key(&j, "others");
+        qd_json_number(&j, (double)r->ch.others);
+        qd_json_end_object(&j);
     }
-    cli_json_key(&j, "conservative");
-    cli_json_bool(&j, res->conservative);
+    qd_json_key(&j, "conservative");
+    qd_json_bool(&j, res->conservative);
     json_matrix(&j, "M", n, r->lin.M);
     json_matrix(&j, "C", n, r->lin.C);
     json_matrix(&j, "G", n, r->lin.G);
@@ -500,25 +500,25 @@ static void put_json(modes_run *r, qd_buf *b) {
         cli_sym_json_modes(&r->sym, e, &j);
     else
         json_modes(r, &j);
-    cli_json_key(&j, "eigenvalues");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "eigenvalues");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < res->neig; k++) {
-        cli_json_begin_array(&j);
-        cli_json_number(&j, res->eig_re[k]);
-        cli_json_number(&j, res->eig_im[k]);
-        cli_json_end_array(&j);
+        qd_json_begin_array(&j);
+        qd_json_number(&j, res->eig_re[k]);
+        qd_json_number(&j, res->eig_im[k]);
+        qd_json_end_array(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_key(&j, "stable");
+    qd_json_end_array(&j);
+    qd_json_key(&j, "stable");
     if (res->stable == -1)
-        cli_json_null(&j);
+        qd_json_null(&j);
     else
-        cli_json_bool(&j, res->stable == 1);
-    cli_json_key(&j, "verdict");
-    cli_json_string(&j, verdict(res->stable));
-    cli_json_end_object(&j);
+        qd_json_bool(&j, res->stable == 1);
+    qd_json_key(&j, "verdict");
+    qd_json_string(&j, verdict(res->stable));
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* Which equilibrium was taken without --about, and that there are others. */

@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "qdot/orbit.h"
@@ -353,129 +353,129 @@ static void write_text(orbit_run *r, const orbit_args *a, qd_buf *b) {
 /* ---- JSON ------------------------------------------------------------------------ */
 
 /* null for the numbers an orbit does not have (NaN) and for infinity */
-static void jnum(cli_json *j, double x) {
+static void jnum(qd_json *j, double x) {
     if (isfinite(x))
-        cli_json_number(j, x);
+        qd_json_number(j, x);
     else
-        cli_json_null(j);
+        qd_json_null(j);
 }
 
-static void json_by_name(const orbit_run *r, cli_json *j, const char *key, const double *v) {
+static void json_by_name(const orbit_run *r, qd_json *j, const char *key, const double *v) {
     const qd_routh *h = r->o->routh;
-    cli_json_key(j, key);
-    cli_json_begin_object(j);
+    qd_json_key(j, key);
+    qd_json_begin_object(j);
     for (size_t i = 0; i < h->nign; i++) {
-        cli_json_key(j, qd_expr_name(h->ign[i]));
+        qd_json_key(j, qd_expr_name(h->ign[i]));
         jnum(j, v[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_circles(const orbit_run *r, cli_json *j) {
+static void json_circles(const orbit_run *r, qd_json *j) {
     const qd_orbit_result *o = &r->r;
-    cli_json_key(j, "circular");
-    cli_json_begin_array(j);
+    qd_json_key(j, "circular");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < o->ncircle; k++) {
         const qd_orbit_circle *c = &o->circle[k];
-        cli_json_begin_object(j);
-        cli_json_key(j, qd_expr_name(r->o->x));
+        qd_json_begin_object(j);
+        qd_json_key(j, qd_expr_name(r->o->x));
         jnum(j, c->x);
-        cli_json_key(j, "effective_potential");
+        qd_json_key(j, "effective_potential");
         jnum(j, c->energy);
-        cli_json_key(j, "stable");
+        qd_json_key(j, "stable");
         if (c->stable < 0)
-            cli_json_null(j);
+            qd_json_null(j);
         else
-            cli_json_bool(j, c->stable == 1);
-        cli_json_key(j, "omega");
+            qd_json_bool(j, c->stable == 1);
+        qd_json_key(j, "omega");
         jnum(j, c->omega);
         json_by_name(r, j, "apsidal_angle", c->apsidal);
-        cli_json_key(j, "bertrand");
+        qd_json_key(j, "bertrand");
         jnum(j, c->bertrand);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_conic(const orbit_run *r, cli_json *j) {
+static void json_conic(const orbit_run *r, qd_json *j) {
     const qd_orbit_result *o = &r->r;
-    cli_json_key(j, "conic");
+    qd_json_key(j, "conic");
     if (!o->conic) {
-        cli_json_null(j);
+        qd_json_null(j);
         return;
     }
-    cli_json_begin_object(j);
+    qd_json_begin_object(j);
     const char *keys[] = {"p", "e", "a", "nu", "periapsis"};
     double v[] = {o->p, o->e, o->a, o->nu, o->periapsis};
     for (int k = 0; k < 5; k++) {
-        cli_json_key(j, keys[k]);
+        qd_json_key(j, keys[k]);
         jnum(j, v[k]);
     }
-    cli_json_key(j, "repulsive");
-    cli_json_bool(j, o->repulsive);
-    cli_json_end_object(j);
+    qd_json_key(j, "repulsive");
+    qd_json_bool(j, o->repulsive);
+    qd_json_end_object(j);
 }
 
-static void json_equation(orbit_run *r, cli_json *j) {
+static void json_equation(orbit_run *r, qd_json *j) {
     qd_buf b = QD_BUF_INIT;
     put_equation(r, &b);
-    cli_json_key(j, "orbit");
-    cli_json_string(j, qd_buf_str(&b));
+    qd_json_key(j, "orbit");
+    qd_json_string(j, qd_buf_str(&b));
     qd_buf_free(&b);
 }
 
-static void json_motion(const orbit_run *r, cli_json *j) {
+static void json_motion(const orbit_run *r, qd_json *j) {
     const qd_orbit_result *o = &r->r;
-    cli_json_key(j, "kind");
-    cli_json_string(j, qd_orbit_kind_name(o->kind));
-    cli_json_key(j, "turning_points");
-    cli_json_begin_array(j);
+    qd_json_key(j, "kind");
+    qd_json_string(j, qd_orbit_kind_name(o->kind));
+    qd_json_key(j, "turning_points");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < o->nturn; k++)
         jnum(j, o->turn[k]);
-    cli_json_end_array(j);
-    cli_json_key(j, "interval");
-    cli_json_begin_array(j);
+    qd_json_end_array(j);
+    qd_json_key(j, "interval");
+    qd_json_begin_array(j);
     jnum(j, o->lo);
     jnum(j, o->hi);
-    cli_json_end_array(j);
-    cli_json_key(j, "radial_period");
+    qd_json_end_array(j);
+    qd_json_key(j, "radial_period");
     jnum(j, o->period);
     json_by_name(r, j, "advance", o->advance);
     json_by_name(r, j, "apsidal_angle", o->apsidal);
     json_by_name(r, j, "precession_per_period", o->precession);
-    cli_json_key(j, "fall_time");
+    qd_json_key(j, "fall_time");
     jnum(j, o->fall_time);
-    cli_json_key(j, "quadrature_error");
+    qd_json_key(j, "quadrature_error");
     jnum(j, o->quad_error);
 }
 
 static void write_json(orbit_run *r, const orbit_args *a, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "file");
-    cli_json_string(&j, r->mf.path);
-    cli_json_key(&j, "coordinate");
-    cli_json_string(&j, qd_expr_name(r->o->x));
-    cli_json_key(&j, "effective_potential");
-    cli_json_expr(&j, r->ctx, r->o->Veff);
-    cli_json_key(&j, "energy");
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "file");
+    qd_json_string(&j, r->mf.path);
+    qd_json_key(&j, "coordinate");
+    qd_json_string(&j, qd_expr_name(r->o->x));
+    qd_json_key(&j, "effective_potential");
+    qd_json_expr(&j, r->ctx, r->o->Veff);
+    qd_json_key(&j, "energy");
     jnum(&j, r->r.energy);
-    cli_json_key(&j, "momenta");
-    cli_json_begin_object(&j);
+    qd_json_key(&j, "momenta");
+    qd_json_begin_object(&j);
     for (size_t i = 0; i < r->nign; i++) {
-        cli_json_key(&j, qd_expr_name(r->o->routh->beta[i]));
+        qd_json_key(&j, qd_expr_name(r->o->routh->beta[i]));
         jnum(&j, r->r.momenta[i]);
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     json_motion(r, &j);
     json_circles(r, &j);
     json_conic(r, &j);
     if (a->equation)
         json_equation(r, &j);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* ---- run ----------------------------------------------------------------------- */

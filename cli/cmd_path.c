@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "qdot/path.h"
@@ -329,70 +329,70 @@ static void write_text(const path_run *r, qd_buf *b) {
 
 static void write_json(const path_run *r, qd_buf *b) {
     size_t n = r->e->n;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "count");
-    cli_json_number(&j, (double)r->ps.count);
-    cli_json_key(&j, "paths");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "count");
+    qd_json_number(&j, (double)r->ps.count);
+    qd_json_key(&j, "paths");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < r->ps.count; i++) {
         const qd_path *p = &r->ps.paths[i];
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "action");
-        cli_json_number(&j, p->action);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "action");
+        qd_json_number(&j, p->action);
         if (r->energy) {
-            cli_json_key(&j, "least_action");
-            cli_json_number(&j, p->abbreviated);
-            cli_json_key(&j, "time");
-            cli_json_number(&j, p->t[p->nsamples - 1] - p->t[0]);
+            qd_json_key(&j, "least_action");
+            qd_json_number(&j, p->abbreviated);
+            qd_json_key(&j, "time");
+            qd_json_number(&j, p->t[p->nsamples - 1] - p->t[0]);
         }
-        cli_json_key(&j, "initial_velocities");
-        cli_json_begin_object(&j);
+        qd_json_key(&j, "initial_velocities");
+        qd_json_begin_object(&j);
         for (size_t k = 0; k < n; k++) {
             char name[160];
             snprintf(name, sizeof name, "%s'", qd_expr_name(r->e->q[k]));
-            cli_json_key(&j, name);
-            cli_json_number(&j, p->v0[k]);
+            qd_json_key(&j, name);
+            qd_json_number(&j, p->v0[k]);
         }
-        cli_json_end_object(&j);
-        cli_json_key(&j, "multipliers");
-        cli_json_begin_object(&j);
+        qd_json_end_object(&j);
+        qd_json_key(&j, "multipliers");
+        qd_json_begin_object(&j);
         for (size_t k = 0; k < p->nmult; k++) {
-            cli_json_key(&j, mult_name(r, k));
-            cli_json_number(&j, p->mult[k]);
+            qd_json_key(&j, mult_name(r, k));
+            qd_json_number(&j, p->mult[k]);
         }
-        cli_json_end_object(&j);
-        cli_json_key(&j, "residual");
-        cli_json_number(&j, p->residual);
-        cli_json_key(&j, "samples");
-        cli_json_begin_array(&j);
+        qd_json_end_object(&j);
+        qd_json_key(&j, "residual");
+        qd_json_number(&j, p->residual);
+        qd_json_key(&j, "samples");
+        qd_json_begin_array(&j);
         for (size_t s = 0; s < p->nsamples; s++) {
-            cli_json_begin_array(&j);
-            cli_json_number(&j, p->t[s]);
+            qd_json_begin_array(&j);
+            qd_json_number(&j, p->t[s]);
             for (size_t k = 0; k < n; k++)
-                cli_json_number(&j, p->q[s * n + k]);
-            cli_json_end_array(&j);
+                qd_json_number(&j, p->q[s * n + k]);
+            qd_json_end_array(&j);
         }
-        cli_json_end_array(&j);
-        cli_json_key(&j, "kinetic_foci");
-        cli_json_begin_array(&j);
+        qd_json_end_array(&j);
+        qd_json_key(&j, "kinetic_foci");
+        qd_json_begin_array(&j);
         for (size_t k = 0; k < p->nfoci; k++)
-            cli_json_number(&j, p->foci[k]);
-        cli_json_end_array(&j);
-        cli_json_key(&j, "kinetic_foci_multiplicity"); /* Jacobi fields vanishing there */
-        cli_json_begin_array(&j);
+            qd_json_number(&j, p->foci[k]);
+        qd_json_end_array(&j);
+        qd_json_key(&j, "kinetic_foci_multiplicity"); /* Jacobi fields vanishing there */
+        qd_json_begin_array(&j);
         for (size_t k = 0; k < p->nfoci; k++)
-            cli_json_number(&j, p->foci_mult ? (double)p->foci_mult[k] : 1);
-        cli_json_end_array(&j);
-        cli_json_key(&j, "minimum");
-        cli_json_bool(&j, p->minimum);
-        cli_json_key(&j, "examined");  /* false: foci and minimum not decided */
-        cli_json_bool(&j, p->examined);
-        cli_json_end_object(&j);
+            qd_json_number(&j, p->foci_mult ? (double)p->foci_mult[k] : 1);
+        qd_json_end_array(&j);
+        qd_json_key(&j, "minimum");
+        qd_json_bool(&j, p->minimum);
+        qd_json_key(&j, "examined");  /* false: foci and minimum not decided */
+        qd_json_bool(&j, p->examined);
+        qd_json_end_object(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_end_object(&j);
+    qd_json_end_array(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
 }
 

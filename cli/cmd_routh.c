@@ -12,7 +12,7 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "qdot/routh.h"
@@ -292,75 +292,75 @@ static void write_sympy(const routh_run *r, qd_buf *b) {
     qd_buf_printf(b, "routh_conserved = %s\n", h->conserved ? "True" : "False");
 }
 
-static void json_list(const routh_run *r, cli_json *j, const char *key, size_t n,
+static void json_list(const routh_run *r, qd_json *j, const char *key, size_t n,
                       const qd_expr *const *x) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t k = 0; k < n; k++)
-        cli_json_expr(j, r->ctx, x[k]);
-    cli_json_end_array(j);
+        qd_json_expr(j, r->ctx, x[k]);
+    qd_json_end_array(j);
 }
 
-static void json_names(cli_json *j, const char *key, size_t n, const qd_expr *const *x) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_names(qd_json *j, const char *key, size_t n, const qd_expr *const *x) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t k = 0; k < n; k++)
-        cli_json_string(j, qd_expr_name(x[k]));
-    cli_json_end_array(j);
+        qd_json_string(j, qd_expr_name(x[k]));
+    qd_json_end_array(j);
 }
 
-static void json_matrix(const routh_run *r, cli_json *j, const char *key, const qd_expr **A) {
+static void json_matrix(const routh_run *r, qd_json *j, const char *key, const qd_expr **A) {
     size_t nk = r->r->nkeep;
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < nk; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < nk; k++)
-            cli_json_expr(j, r->ctx, A[i * nk + k]);
-        cli_json_end_array(j);
+            qd_json_expr(j, r->ctx, A[i * nk + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 /* The equations by kept coordinate: {"q": name, "M": [row], "f": f}. */
-static void json_equations(const routh_run *r, cli_json *j) {
+static void json_equations(const routh_run *r, qd_json *j) {
     const qd_routh *h = r->r;
-    cli_json_key(j, "equations");
-    cli_json_begin_array(j);
+    qd_json_key(j, "equations");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < h->nkeep; k++) {
-        cli_json_begin_object(j);
-        cli_json_key(j, "q");
-        cli_json_string(j, qd_expr_name(h->keep[k]));
+        qd_json_begin_object(j);
+        qd_json_key(j, "q");
+        qd_json_string(j, qd_expr_name(h->keep[k]));
         json_list(r, j, "M", h->nkeep, h->M + k * h->nkeep);
-        cli_json_key(j, "f");
-        cli_json_expr(j, r->ctx, h->f[k]);
-        cli_json_end_object(j);
+        qd_json_key(j, "f");
+        qd_json_expr(j, r->ctx, h->f[k]);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_quadratures(const routh_run *r, cli_json *j) {
+static void json_quadratures(const routh_run *r, qd_json *j) {
     const qd_routh *h = r->r;
-    cli_json_key(j, "quadratures");
+    qd_json_key(j, "quadratures");
     if (h->implicit) { /* no closed form: the velocities solve momentum_definitions */
-        cli_json_null(j);
+        qd_json_null(j);
         return;
     }
-    cli_json_begin_object(j);
+    qd_json_begin_object(j);
     for (size_t i = 0; i < h->nign; i++) {
-        cli_json_key(j, qd_expr_name(r->e->qd[h->ign_index[i]]));
-        cli_json_expr(j, r->ctx, h->ignvel[i]);
+        qd_json_key(j, qd_expr_name(r->e->qd[h->ign_index[i]]));
+        qd_json_expr(j, r->ctx, h->ignvel[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 static void write_json(const routh_run *r, qd_buf *b) {
     const qd_routh *h = r->r;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "file");
-    cli_json_string(&j, r->mf.path);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "file");
+    qd_json_string(&j, r->mf.path);
     json_names(&j, "ignored", h->nign, h->ign);
     json_names(&j, "momenta", h->nign, h->beta);
     json_names(&j, "kept", h->nkeep, h->keep);
@@ -368,31 +368,31 @@ static void write_json(const routh_run *r, qd_buf *b) {
     const char *names[] = {"R", "R2", "R1", "R0", "effective_potential", "jacobi_integral"};
     const qd_expr *vals[] = {h->R, h->R2, h->R1, h->R0, h->Veff, h->h};
     for (int i = 0; i < 6; i++) {
-        cli_json_key(&j, names[i]);
-        cli_json_expr(&j, r->ctx, vals[i]);
+        qd_json_key(&j, names[i]);
+        qd_json_expr(&j, r->ctx, vals[i]);
     }
     json_equations(r, &j);
     if (h->implicit) {
-        cli_json_key(&j, "gyroscopic");
-        cli_json_null(&j);
+        qd_json_key(&j, "gyroscopic");
+        qd_json_null(&j);
     } else {
         json_matrix(r, &j, "gyroscopic", h->G);
     }
     json_quadratures(r, &j);
-    cli_json_key(&j, "conserved");
-    cli_json_bool(&j, h->conserved);
+    qd_json_key(&j, "conserved");
+    qd_json_bool(&j, h->conserved);
     if (h->forced) { /* only then, so the other models' output is unchanged */
         json_names(&j, "momentum_rates", h->nign, h->betad);
         json_list(r, &j, "momentum_rate_values", h->nign, h->pdot);
         json_list(r, &j, "f_with_momentum_rates", h->nkeep, h->f_betad);
     }
     if (h->implicit) { /* only then, so the other models' output is unchanged */
-        cli_json_key(&j, "implicit");
-        cli_json_bool(&j, true);
+        qd_json_key(&j, "implicit");
+        qd_json_bool(&j, true);
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 static int emit(routh_run *r) {

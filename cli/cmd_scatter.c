@@ -13,7 +13,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "qdot/scatter.h"
@@ -365,64 +365,64 @@ static void write_text(scatter_run *r, qd_buf *b) {
 
 /* ---- JSON ------------------------------------------------------------------------ */
 
-static void jnum(cli_json *j, const char *key, double x) {
-    cli_json_key(j, key);
+static void jnum(qd_json *j, const char *key, double x) {
+    qd_json_key(j, key);
     if (isfinite(x))
-        cli_json_number(j, x);
+        qd_json_number(j, x);
     else if (isinf(x))
-        cli_json_string(j, x > 0 ? "infinite" : "-infinite");
+        qd_json_string(j, x > 0 ? "infinite" : "-infinite");
     else
-        cli_json_null(j);
+        qd_json_null(j);
 }
 
-static void json_pairs(cli_json *j, const char *key, size_t n, const double *bs,
+static void json_pairs(qd_json *j, const char *key, size_t n, const double *bs,
                        const double *th) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         jnum(j, "b", bs[i]);
         jnum(j, "angle", th[i]);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_section(const scatter_run *r, cli_json *j) {
+static void json_section(const scatter_run *r, qd_json *j) {
     const qd_scatter_section *x = &r->sec;
     jnum(j, "cross_section", x->sigma);
-    cli_json_key(j, "branches");
-    cli_json_begin_array(j);
+    qd_json_key(j, "branches");
+    qd_json_begin_array(j);
     for (size_t i = 0; isfinite(x->sigma) && i < x->nbranch; i++) {
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         jnum(j, "b", x->branch[i].b);
         jnum(j, "deflection_signed", x->branch[i].chi);
         jnum(j, "dchi_db", x->branch[i].dchi_db);
         jnum(j, "cross_section", x->branch[i].sigma);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_features(const scatter_run *r, cli_json *j) {
+static void json_features(const scatter_run *r, qd_json *j) {
     const qd_scatter_features *f = &r->feat;
     jnum(j, "range", f->range);
     jnum(j, "total_cross_section", f->total);
     json_pairs(j, "rainbows", f->nrainbow, f->rainbow_b, f->rainbow_theta);
     json_pairs(j, "glories", f->nglory, f->glory_b, f->glory_theta);
-    cli_json_key(j, "orbiting");
+    qd_json_key(j, "orbiting");
     if (f->orbiting) {
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         jnum(j, "b", f->orbit_b);
         jnum(j, "r", f->orbit_r);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     } else {
-        cli_json_null(j);
+        qd_json_null(j);
     }
     jnum(j, "capture_cross_section", f->capture ? PI * f->capture_b * f->capture_b : 0);
 }
 
-static void json_lab(scatter_run *r, cli_json *j) {
+static void json_lab(scatter_run *r, qd_json *j) {
     qd_scatter_lab l;
     if (!r->masses_s || !(r->theta >= 0) ||
         qd_scatter_lab_map(r->ctx, r->m1, r->m2, r->theta, &l) != QD_OK)
@@ -436,39 +436,39 @@ static void json_lab(scatter_run *r, cli_json *j) {
     jnum(j, "recoil_energy_ratio", l.recoil_ratio);
 }
 
-static void json_lab_angles(const scatter_run *r, cli_json *j) {
+static void json_lab_angles(const scatter_run *r, qd_json *j) {
     double sum = 0;
     jnum(j, "gamma", r->m1 / r->m2);
     jnum(j, "lab_angle", r->lab_theta);
-    cli_json_key(j, "cm_angles");
-    cli_json_begin_array(j);
+    qd_json_key(j, "cm_angles");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < r->ncm; k++) {
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         jnum(j, "angle", r->cm[k]);
         jnum(j, "cross_section", r->cm_sigma[k]);
         jnum(j, "jacobian", r->cm_jacobian[k]);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
         sum += r->cm_sigma[k] * r->cm_jacobian[k];
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
     jnum(j, "lab_cross_section", sum);
 }
 
 static void write_json(scatter_run *r, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "file");
-    cli_json_string(&j, r->mf.path);
-    cli_json_key(&j, "potential");
-    cli_json_expr(&j, r->ctx, qd_scatter_potential(r->s));
-    cli_json_key(&j, "radius");
-    cli_json_string(&j, qd_expr_name(qd_scatter_radius(r->s)));
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "file");
+    qd_json_string(&j, r->mf.path);
+    qd_json_key(&j, "potential");
+    qd_json_expr(&j, r->ctx, qd_scatter_potential(r->s));
+    qd_json_key(&j, "radius");
+    qd_json_string(&j, qd_expr_name(qd_scatter_radius(r->s)));
     jnum(&j, "energy", r->E);
     if (r->b_s) {
         jnum(&j, "b", r->b);
-        cli_json_key(&j, "kind");
-        cli_json_string(&j, qd_scatter_kind_name(r->path.kind));
+        qd_json_key(&j, "kind");
+        qd_json_string(&j, qd_scatter_kind_name(r->path.kind));
         jnum(&j, "closest_approach", r->path.r0);
         jnum(&j, "deflection", r->path.theta);
         jnum(&j, "deflection_signed", r->path.chi);
@@ -481,9 +481,9 @@ static void write_json(scatter_run *r, qd_buf *b) {
         json_section(r, &j);
     json_features(r, &j);
     json_lab(r, &j);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* ---- the command ------------------------------------------------------------------ */

@@ -23,7 +23,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "out.h"
 #include "qdot/lyapunov.h"
@@ -54,7 +54,7 @@ typedef struct sim_cmd_args {
 
 typedef struct sim_out {
     FILE *csv;            /* rows as CSV, or NULL */
-    cli_json *json;        /* rows into the JSON document, or NULL */
+    qd_json *json;        /* rows into the JSON document, or NULL */
     size_t ncols, rows;
     bool events;          /* an `event` column */
     double t0, t_end;
@@ -98,12 +98,12 @@ static int sink(void *data, int event, const double *row) {
             return 1;
         }
     } else if (o->json) {
-        cli_json_begin_array(o->json);
+        qd_json_begin_array(o->json);
         for (size_t i = 0; i < o->ncols; i++)
-            cli_json_number(o->json, row[i]);
+            qd_json_number(o->json, row[i]);
         if (o->events)
-            cli_json_number(o->json, event + 1);
-        cli_json_end_array(o->json);
+            qd_json_number(o->json, event + 1);
+        qd_json_end_array(o->json);
     }
     o->last_t = row[0];
     cli_progress_update(&o->bar, (row[0] - o->t0) / (o->t_end - o->t0), row[0]);
@@ -149,26 +149,26 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 }
 
 /* The impacts' part of the JSON summary (models with `impact`s only). */
-static void impacts_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st) {
-    cli_json_key(j, "impacts");
-    cli_json_number(j, (double)st->impacts);
-    cli_json_key(j, "impact_energy_lost");
-    cli_json_number(j, st->impact_energy_lost);
-    cli_json_key(j, "contact");
+static void impacts_json(qd_json *j, const cli_sim *c, const qd_sim_stats *st) {
+    qd_json_key(j, "impacts");
+    qd_json_number(j, (double)st->impacts);
+    qd_json_key(j, "impact_energy_lost");
+    qd_json_number(j, st->impact_energy_lost);
+    qd_json_key(j, "contact");
     if (!st->in_contact) {
-        cli_json_null(j);
+        qd_json_null(j);
         return;
     }
-    cli_json_begin_object(j);
-    cli_json_key(j, "impact");
-    cli_json_string(j, qd_model_impact_name(c->mf.model, st->contact));
-    cli_json_key(j, "t");
-    cli_json_number(j, st->t);
-    cli_json_key(j, "chattering");
-    cli_json_bool(j, st->chattering);
-    cli_json_key(j, "at_rest");
-    cli_json_bool(j, st->at_rest);
-    cli_json_end_object(j);
+    qd_json_begin_object(j);
+    qd_json_key(j, "impact");
+    qd_json_string(j, qd_model_impact_name(c->mf.model, st->contact));
+    qd_json_key(j, "t");
+    qd_json_number(j, st->t);
+    qd_json_key(j, "chattering");
+    qd_json_bool(j, st->chattering);
+    qd_json_key(j, "at_rest");
+    qd_json_bool(j, st->at_rest);
+    qd_json_end_object(j);
 }
 
 /* The impacts on stderr: how many, the energy they took, and where the run
@@ -188,31 +188,31 @@ static void impacts_summary(const cli_sim *c, const qd_sim_stats *st) {
 }
 
 /* Friction (models with contacts): the switches and the energy balance. */
-static void friction_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st) {
+static void friction_json(qd_json *j, const cli_sim *c, const qd_sim_stats *st) {
     static const char *const mode[] = {"stick", "slip"};
     size_t n;
     const qd_sim_transition *tr = qd_sim_transitions(c->s, &n);
-    cli_json_key(j, "friction_dissipated");
-    cli_json_number(j, st->friction_dissipated);
-    cli_json_key(j, "energy_balance_error");
-    cli_json_number(j, st->energy_balance_error);
-    cli_json_key(j, "surface_work");
-    cli_json_number(j, st->surface_work);
-    cli_json_key(j, "transitions");
-    cli_json_begin_array(j);
+    qd_json_key(j, "friction_dissipated");
+    qd_json_number(j, st->friction_dissipated);
+    qd_json_key(j, "energy_balance_error");
+    qd_json_number(j, st->energy_balance_error);
+    qd_json_key(j, "surface_work");
+    qd_json_number(j, st->surface_work);
+    qd_json_key(j, "transitions");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
-        cli_json_begin_object(j);
-        cli_json_key(j, "t");
-        cli_json_number(j, tr[i].t);
-        cli_json_key(j, "contact");
-        cli_json_string(j, qd_model_contact_name(c->mf.model, tr[i].contact));
-        cli_json_key(j, "from");
-        cli_json_string(j, mode[tr[i].from]);
-        cli_json_key(j, "to");
-        cli_json_string(j, mode[tr[i].to]);
-        cli_json_end_object(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "t");
+        qd_json_number(j, tr[i].t);
+        qd_json_key(j, "contact");
+        qd_json_string(j, qd_model_contact_name(c->mf.model, tr[i].contact));
+        qd_json_key(j, "from");
+        qd_json_string(j, mode[tr[i].from]);
+        qd_json_key(j, "to");
+        qd_json_string(j, mode[tr[i].to]);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 /* Friction on stderr: the switches and the energy friction took. */
@@ -229,82 +229,82 @@ static void friction_summary(const cli_sim *c, const qd_sim_stats *st) {
             st->energy_balance_error);
 }
 
-static void summary_json(cli_json *j, const cli_sim *c, const qd_sim_stats *st, double wall,
+static void summary_json(qd_json *j, const cli_sim *c, const qd_sim_stats *st, double wall,
                          const char **names, size_t ncols, const double *final) {
-    cli_json_key(j, "method");
-    cli_json_string(j, qd_sim_method_name(c->opts.method));
-    cli_json_key(j, "speeds"); /* integrated in the model's speeds */
-    cli_json_bool(j, c->se != NULL);
-    cli_json_key(j, "steps");
-    cli_json_number(j, (double)st->steps);
-    cli_json_key(j, "evaluations");
-    cli_json_number(j, (double)st->evals);
-    cli_json_key(j, "rejected");
-    cli_json_number(j, (double)st->rejected);
-    cli_json_key(j, "wall_s");
-    cli_json_number(j, wall);
-    cli_json_key(j, "energy_error_max"); /* over the rows written */
-    cli_json_number(j, st->energy_error_max);
-    cli_json_key(j, "energy_error_steps"); /* at the integrator's steps */
-    cli_json_number(j, st->energy_error_steps);
-    cli_json_key(j, "constraint_error_max");
-    cli_json_number(j, st->constraint_error_max);
-    cli_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
-    cli_json_begin_object(j);
+    qd_json_key(j, "method");
+    qd_json_string(j, qd_sim_method_name(c->opts.method));
+    qd_json_key(j, "speeds"); /* integrated in the model's speeds */
+    qd_json_bool(j, c->se != NULL);
+    qd_json_key(j, "steps");
+    qd_json_number(j, (double)st->steps);
+    qd_json_key(j, "evaluations");
+    qd_json_number(j, (double)st->evals);
+    qd_json_key(j, "rejected");
+    qd_json_number(j, (double)st->rejected);
+    qd_json_key(j, "wall_s");
+    qd_json_number(j, wall);
+    qd_json_key(j, "energy_error_max"); /* over the rows written */
+    qd_json_number(j, st->energy_error_max);
+    qd_json_key(j, "energy_error_steps"); /* at the integrator's steps */
+    qd_json_number(j, st->energy_error_steps);
+    qd_json_key(j, "constraint_error_max");
+    qd_json_number(j, st->constraint_error_max);
+    qd_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
+    qd_json_begin_object(j);
     for (size_t k = 0; k < cli_sim_ncon(c); k++) {
-        cli_json_key(j, cli_sim_con(c, k)->name);
-        cli_json_number(j, qd_sim_constraint_error(c->s, k));
+        qd_json_key(j, cli_sim_con(c, k)->name);
+        qd_json_number(j, qd_sim_constraint_error(c->s, k));
     }
-    cli_json_end_object(j);
-    cli_json_key(j, "events");
-    cli_json_number(j, (double)st->events);
+    qd_json_end_object(j);
+    qd_json_key(j, "events");
+    qd_json_number(j, (double)st->events);
     if (st->events_unresolved) {
         /* steps where an event function oscillated faster than the search resolves */
-        cli_json_key(j, "events_unresolved");
-        cli_json_begin_object(j);
-        cli_json_key(j, "steps");
-        cli_json_number(j, (double)st->events_unresolved);
-        cli_json_key(j, "event");
-        cli_json_number(j, (double)st->events_unresolved_event + 1);
-        cli_json_key(j, "t");
-        cli_json_number(j, st->events_unresolved_t);
-        cli_json_key(j, "spacing");
-        cli_json_number(j, st->events_unresolved_spacing);
-        cli_json_end_object(j);
+        qd_json_key(j, "events_unresolved");
+        qd_json_begin_object(j);
+        qd_json_key(j, "steps");
+        qd_json_number(j, (double)st->events_unresolved);
+        qd_json_key(j, "event");
+        qd_json_number(j, (double)st->events_unresolved_event + 1);
+        qd_json_key(j, "t");
+        qd_json_number(j, st->events_unresolved_t);
+        qd_json_key(j, "spacing");
+        qd_json_number(j, st->events_unresolved_spacing);
+        qd_json_end_object(j);
     }
     if (qd_model_nimpacts(c->mf.model))
         impacts_json(j, c, st);
     if (qd_sim_ncontacts(c->s))
         friction_json(j, c, st);
-    cli_json_key(j, "final");
-    cli_json_begin_object(j);
+    qd_json_key(j, "final");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < ncols; i++) {
-        cli_json_key(j, names[i]);
-        cli_json_number(j, final[i]);
+        qd_json_key(j, names[i]);
+        qd_json_number(j, final[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 /* --plot with --format json: the file and the axes' ranges drawn, so a
  * caller can place more on the picture. */
-static void plot_json(cli_json *j, const char *file, size_t npanels, const double *range) {
-    cli_json_key(j, "plot");
-    cli_json_begin_object(j);
-    cli_json_key(j, "file");
-    cli_json_string(j, file);
-    cli_json_key(j, "panels");
-    cli_json_begin_array(j);
+static void plot_json(qd_json *j, const char *file, size_t npanels, const double *range) {
+    qd_json_key(j, "plot");
+    qd_json_begin_object(j);
+    qd_json_key(j, "file");
+    qd_json_string(j, file);
+    qd_json_key(j, "panels");
+    qd_json_begin_array(j);
     static const char *const keys[] = {"x0", "x1", "y0", "y1"};
     for (size_t g = 0; g < npanels; g++) {
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         for (int k = 0; k < 4; k++) {
-            cli_json_key(j, keys[k]);
-            cli_json_number(j, range[4 * g + (size_t)k]);
+            qd_json_key(j, keys[k]);
+            qd_json_number(j, range[4 * g + (size_t)k]);
         }
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
-    cli_json_end_object(j);
+    qd_json_end_array(j);
+    qd_json_end_object(j);
 }
 
 /* ---- --variational ------------------------------------------------------------- */
@@ -332,16 +332,16 @@ static qd_lyap *flow_model(const cli_sim *c) {
     return l;
 }
 
-static void json_matrix(cli_json *j, const char *key, const double *A, size_t d) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_matrix(qd_json *j, const char *key, const double *A, size_t d) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < d; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < d; k++)
-            cli_json_number(j, A[i * d + k]);
-        cli_json_end_array(j);
+            qd_json_number(j, A[i * d + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 /* The state's names: q..., q'... */
@@ -353,55 +353,55 @@ static void state_names(const cli_sim *c, char (*names)[80]) {
     }
 }
 
-static void flow_json(cli_json *j, const cli_sim *c, const qd_flow *f, const qd_sim_opts *o,
+static void flow_json(qd_json *j, const cli_sim *c, const qd_flow *f, const qd_sim_opts *o,
                       double period) {
     size_t d = f->d;
     char (*names)[80] = malloc(d * sizeof *names);
-    cli_json_key(j, "variational");
-    cli_json_begin_object(j);
-    cli_json_key(j, "method");
-    cli_json_string(j, qd_sim_method_name(o->method));
-    cli_json_key(j, "state");
-    cli_json_begin_array(j);
+    qd_json_key(j, "variational");
+    qd_json_begin_object(j);
+    qd_json_key(j, "method");
+    qd_json_string(j, qd_sim_method_name(o->method));
+    qd_json_key(j, "state");
+    qd_json_begin_array(j);
     if (names) {
         state_names(c, names);
         for (size_t i = 0; i < d; i++)
-            cli_json_string(j, names[i]);
+            qd_json_string(j, names[i]);
     }
-    cli_json_end_array(j);
-    cli_json_end_object(j);
+    qd_json_end_array(j);
+    qd_json_end_object(j);
     free(names);
     json_matrix(j, "flow_jacobian", f->phi, d);
-    cli_json_key(j, "flow_det");
-    cli_json_number(j, f->det);
-    cli_json_key(j, "liouville_det"); /* exp(integral of tr J) */
-    cli_json_number(j, exp(f->trace_integral));
-    cli_json_key(j, "hamiltonian");
-    cli_json_bool(j, f->hamiltonian);
+    qd_json_key(j, "flow_det");
+    qd_json_number(j, f->det);
+    qd_json_key(j, "liouville_det"); /* exp(integral of tr J) */
+    qd_json_number(j, exp(f->trace_integral));
+    qd_json_key(j, "hamiltonian");
+    qd_json_bool(j, f->hamiltonian);
     if (f->hamiltonian) {
         json_matrix(j, "flow_jacobian_canonical", f->phi_c, d);
-        cli_json_key(j, "symplectic_error");
-        cli_json_number(j, f->symplectic_error);
+        qd_json_key(j, "symplectic_error");
+        qd_json_number(j, f->symplectic_error);
     } else {
-        cli_json_key(j, "symplectic_error");
-        cli_json_null(j);
+        qd_json_key(j, "symplectic_error");
+        qd_json_null(j);
     }
-    cli_json_key(j, "multipliers");
-    cli_json_begin_array(j);
+    qd_json_key(j, "multipliers");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < d; i++) {
-        cli_json_begin_array(j);
-        cli_json_number(j, f->mult_re[i]);
-        cli_json_number(j, f->mult_im[i]);
-        cli_json_end_array(j);
+        qd_json_begin_array(j);
+        qd_json_number(j, f->mult_re[i]);
+        qd_json_number(j, f->mult_im[i]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
-    cli_json_key(j, "period");
+    qd_json_end_array(j);
+    qd_json_key(j, "period");
     if (period > 0)
-        cli_json_number(j, period);
+        qd_json_number(j, period);
     else
-        cli_json_null(j);
-    cli_json_key(j, "closure");
-    cli_json_number(j, f->closure);
+        qd_json_null(j);
+    qd_json_key(j, "closure");
+    qd_json_number(j, f->closure);
     if (period > 0)
         json_matrix(j, "monodromy", f->phi, d);
 }
@@ -580,25 +580,25 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
         return orc;
     }
     qd_buf jb = QD_BUF_INIT;
-    cli_json j;
-    cli_json_init(&j, &jb);
+    qd_json j;
+    qd_json_init(&j, &jb);
     if (a->json)
-        cli_json_begin_object(&j);
+        qd_json_begin_object(&j);
     o.csv = file ? file : a->json ? NULL : stdout;
     o.plot = a->plot.file ? &rows : NULL;
     bool picture_only = o.plot && o.csv == stdout; /* --plot: the picture, not CSV on stdout */
     if (picture_only)
         o.csv = NULL;
     else if (!o.csv) {
-        cli_json_key(&j, "columns");
-        cli_json_begin_array(&j);
+        qd_json_key(&j, "columns");
+        qd_json_begin_array(&j);
         for (size_t i = 0; i < ncols; i++)
-            cli_json_string(&j, names[i]);
+            qd_json_string(&j, names[i]);
         if (o.events)
-            cli_json_string(&j, "event");
-        cli_json_end_array(&j);
-        cli_json_key(&j, "rows");
-        cli_json_begin_array(&j);
+            qd_json_string(&j, "event");
+        qd_json_end_array(&j);
+        qd_json_key(&j, "rows");
+        qd_json_begin_array(&j);
         o.json = &j;
     }
     cli_progress_start(&o.bar, "simulate");
@@ -609,7 +609,7 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     cli_interrupt_end();
     double wall = cli_progress_end(&o.bar);
     if (o.json)
-        cli_json_end_array(&j);
+        qd_json_end_array(&j);
     int rc = QD_EXIT_OK;
     /* the rows' file closed and checked first: lost rows fail the run */
     if (o.csv && cli_out_close(o.csv, file ? a->out : "standard output", o.werr) != QD_EXIT_OK)
@@ -664,12 +664,12 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
                 flow_json(&j, c, &f, &fopts, sa->period);
             if (a->plot.file)
                 plot_json(&j, a->plot.file, pick.npanels, range);
-            cli_json_end_object(&j);
-            if (cli_json_ok(&j) && !jb.failed)
+            qd_json_end_object(&j);
+            if (qd_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));
             else {
                 cli_diag_error("cannot write the JSON summary: %s",
-                               jb.failed ? "out of memory" : cli_json_why(&j));
+                               jb.failed ? "out of memory" : qd_json_why(&j));
                 rc = QD_EXIT_FAIL;
             }
         }

@@ -26,7 +26,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "linear_cli.h"
 #include "model_cli.h"
 #include "model_file.h"
@@ -651,130 +651,130 @@ static void text_out(stab_run *r, qd_buf *b) {
     }
 }
 
-static void json_tri(cli_json *j, int v) {
+static void json_tri(qd_json *j, int v) {
     if (v < 0)
-        cli_json_null(j);
+        qd_json_null(j);
     else
-        cli_json_bool(j, v == 1);
+        qd_json_bool(j, v == 1);
 }
 
-static void json_matrix(cli_json *j, const char *key, const double *A, size_t n) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_matrix(qd_json *j, const char *key, const double *A, size_t n) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < n; k++)
-            cli_json_number(j, A[i * n + k]);
-        cli_json_end_array(j);
+            qd_json_number(j, A[i * n + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_roots(cli_json *j, const char *key, const qd_modes_result *m) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_roots(qd_json *j, const char *key, const qd_modes_result *m) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < m->neig; i++) {
-        cli_json_begin_array(j);
-        cli_json_number(j, shown(m, m->eig_re[i]));
-        cli_json_number(j, shown(m, m->eig_im[i]));
-        cli_json_end_array(j);
+        qd_json_begin_array(j);
+        qd_json_number(j, shown(m, m->eig_re[i]));
+        qd_json_number(j, shown(m, m->eig_im[i]));
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_steady(cli_json *j, const qd_steady *s, const qd_steady_point *pt) {
-    cli_json_key(j, "steady");
-    cli_json_begin_object(j);
+static void json_steady(qd_json *j, const qd_steady *s, const qd_steady_point *pt) {
+    qd_json_key(j, "steady");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < s->nkeep; k++) {
-        cli_json_key(j, qd_expr_name(s->keep[k]));
-        cli_json_number(j, pt->x[k]);
+        qd_json_key(j, qd_expr_name(s->keep[k]));
+        qd_json_number(j, pt->x[k]);
     }
     for (size_t c = 0; c < s->ncyc; c++) {
-        cli_json_key(j, qd_expr_name(s->cycd[c]));
-        cli_json_number(j, pt->w[c]);
+        qd_json_key(j, qd_expr_name(s->cycd[c]));
+        qd_json_number(j, pt->w[c]);
         char name[160];
         snprintf(name, sizeof name, "p_%s", qd_expr_name(s->cyc[c]));
-        cli_json_key(j, name);
-        cli_json_number(j, pt->p[c]);
+        qd_json_key(j, name);
+        qd_json_number(j, pt->p[c]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 /* Every motion in short: where it is, its frequencies and verdicts. */
-static void json_all(cli_json *j, stab_run *r) {
-    cli_json_key(j, "steady_motions");
-    cli_json_begin_array(j);
+static void json_all(qd_json *j, stab_run *r) {
+    qd_json_key(j, "steady_motions");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < r->set.count; k++) {
         const qd_stability *an = &r->an[k];
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         json_steady(j, r->s, &r->set.pts[k]);
-        cli_json_key(j, "residual");
-        cli_json_number(j, r->set.residual[k]);
-        cli_json_key(j, "frequencies");
-        cli_json_begin_array(j);
+        qd_json_key(j, "residual");
+        qd_json_number(j, r->set.residual[k]);
+        qd_json_key(j, "frequencies");
+        qd_json_begin_array(j);
         for (size_t i = 0; i < an->nfreq; i++)
-            cli_json_number(j, an->freq[i]);
-        cli_json_end_array(j);
+            qd_json_number(j, an->freq[i]);
+        qd_json_end_array(j);
         json_roots(j, "roots", &an->ordinary);
-        cli_json_key(j, "stable");
+        qd_json_key(j, "stable");
         json_tri(j, an->ordinary_stable);
-        cli_json_key(j, "secular");
+        qd_json_key(j, "secular");
         json_tri(j, an->secular_stable);
-        cli_json_key(j, "verdict");
-        cli_json_string(j, an->verdict);
-        cli_json_end_object(j);
+        qd_json_key(j, "verdict");
+        qd_json_string(j, an->verdict);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
-    cli_json_key(j, "complete");
-    cli_json_bool(j, r->set.complete);
+    qd_json_end_array(j);
+    qd_json_key(j, "complete");
+    qd_json_bool(j, r->set.complete);
 }
 
 static void json_out(stab_run *r, qd_buf *b) {
     const qd_steady *s = r->s;
     const qd_stability *an = &r->an[0];
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "model");
-    cli_json_string(&j, r->mf.path);
-    cli_json_key(&j, "kind");
-    cli_json_string(&j, s->driven ? "driven" : "free");
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "model");
+    qd_json_string(&j, r->mf.path);
+    qd_json_key(&j, "kind");
+    qd_json_string(&j, s->driven ? "driven" : "free");
     json_steady(&j, s, &r->set.pts[0]);
-    cli_json_key(&j, "residual");
-    cli_json_number(&j, r->set.residual[0]);
-    cli_json_key(&j, "Veff");
-    cli_json_expr(&j, r->ctx, s->Veff);
+    qd_json_key(&j, "residual");
+    qd_json_number(&j, r->set.residual[0]);
+    qd_json_key(&j, "Veff");
+    qd_json_expr(&j, r->ctx, s->Veff);
     json_matrix(&j, "M", an->lin.M, an->n);
     json_matrix(&j, "C", an->lin.C, an->n);
     json_matrix(&j, "G", an->lin.G, an->n);
     json_matrix(&j, "K", an->lin.K, an->n);
     json_matrix(&j, "hessian", an->hessian, an->n);
-    cli_json_key(&j, "frequencies");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "frequencies");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < an->nfreq; i++)
-        cli_json_number(&j, an->freq[i]);
-    cli_json_end_array(&j);
+        qd_json_number(&j, an->freq[i]);
+    qd_json_end_array(&j);
     json_roots(&j, "roots", &an->ordinary);
-    cli_json_key(&j, "stable");
+    qd_json_key(&j, "stable");
     json_tri(&j, an->ordinary_stable);
-    cli_json_key(&j, "secular");
+    qd_json_key(&j, "secular");
     json_tri(&j, an->secular_stable);
     if (an->dissipative) {
-        cli_json_key(&j, "dissipation");
-        cli_json_begin_object(&j);
+        qd_json_key(&j, "dissipation");
+        qd_json_begin_object(&j);
         json_roots(&j, "roots", &an->damped);
-        cli_json_key(&j, "stable");
+        qd_json_key(&j, "stable");
         json_tri(&j, an->damped_stable);
-        cli_json_key(&j, "max_re");
-        cli_json_number(&j, max_re(&an->damped));
-        cli_json_end_object(&j);
+        qd_json_key(&j, "max_re");
+        qd_json_number(&j, max_re(&an->damped));
+        qd_json_end_object(&j);
     }
-    cli_json_key(&j, "verdict");
-    cli_json_string(&j, an->verdict);
+    qd_json_key(&j, "verdict");
+    qd_json_string(&j, an->verdict);
     json_all(&j, r);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    if (!cli_json_ok(&j))
+    if (!qd_json_ok(&j))
         b->failed = true;
 }
 

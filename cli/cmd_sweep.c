@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "out.h"
 #include "progress.h"
@@ -437,34 +437,34 @@ static int write_csv(FILE *f, const sweep_result *r) {
 
 static int write_json(FILE *f, const sweep_result *r) {
     qd_buf b = QD_BUF_INIT;
-    cli_json j;
-    cli_json_init(&j, &b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "columns");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, &b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "columns");
+    qd_json_begin_array(&j);
     for (size_t c = 0; c < r->ncols; c++)
-        cli_json_string(&j, r->cols[c]);
-    cli_json_end_array(&j);
-    cli_json_key(&j, "rows"); /* NaN (no value) as null */
-    cli_json_begin_array(&j);
+        qd_json_string(&j, r->cols[c]);
+    qd_json_end_array(&j);
+    qd_json_key(&j, "rows"); /* NaN (no value) as null */
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < r->nruns; k++) {
-        cli_json_begin_array(&j);
+        qd_json_begin_array(&j);
         for (size_t c = 0; c < r->ncols; c++) {
             double x = r->rows[k * r->ncols + c];
             if (isfinite(x))
-                cli_json_number(&j, x);
+                qd_json_number(&j, x);
             else
-                cli_json_null(&j);
+                qd_json_null(&j);
         }
-        cli_json_end_array(&j);
+        qd_json_end_array(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_key(&j, "status");
-    cli_json_begin_array(&j);
+    qd_json_end_array(&j);
+    qd_json_key(&j, "status");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < r->nruns; k++)
-        cli_json_string(&j, status_text(r, k));
-    cli_json_end_array(&j);
-    cli_json_end_object(&j);
+        qd_json_string(&j, status_text(r, k));
+    qd_json_end_array(&j);
+    qd_json_end_object(&j);
     int rc = b.failed ? QD_EXIT_FAIL : QD_EXIT_OK;
     if (rc == QD_EXIT_OK)
         fprintf(f, "%s\n", qd_buf_str(&b));

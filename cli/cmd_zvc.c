@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "qdot/zvc.h"
 
@@ -288,64 +288,64 @@ static void put_csv(zvc_run *r, qd_buf *b) {
         }
 }
 
-static void json_equilibria(zvc_run *r, cli_json *j) {
-    cli_json_key(j, "equilibria");
-    cli_json_begin_array(j);
+static void json_equilibria(zvc_run *r, qd_json *j) {
+    qd_json_key(j, "equilibria");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < r->eq.count; k++) {
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
         for (size_t i = 0; i < r->lr.e->n; i++) {
-            cli_json_key(j, qd_expr_name(r->lr.e->q[i]));
-            cli_json_number(j, r->eq.pts[k].q[i]);
+            qd_json_key(j, qd_expr_name(r->lr.e->q[i]));
+            qd_json_number(j, r->eq.pts[k].q[i]);
         }
-        cli_json_key(j, "kind");
-        cli_json_string(j, qd_eq_kind_name(r->eq.pts[k].kind));
-        cli_json_key(j, "h");
-        cli_json_number(j, W_at(r, r->eq.pts[k].q));
-        cli_json_end_object(j);
+        qd_json_key(j, "kind");
+        qd_json_string(j, qd_eq_kind_name(r->eq.pts[k].kind));
+        qd_json_key(j, "h");
+        qd_json_number(j, W_at(r, r->eq.pts[k].q));
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_curves(zvc_run *r, cli_json *j) {
-    cli_json_key(j, "curves");
-    cli_json_begin_array(j);
+static void json_curves(zvc_run *r, qd_json *j) {
+    qd_json_key(j, "curves");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < r->c.count; k++) {
         const qd_polyline *p = &r->c.lines[k];
-        cli_json_begin_object(j);
-        cli_json_key(j, "closed");
-        cli_json_bool(j, p->closed);
+        qd_json_begin_object(j);
+        qd_json_key(j, "closed");
+        qd_json_bool(j, p->closed);
         for (int axis = 0; axis < 2; axis++) {
-            cli_json_key(j, qd_expr_name(r->lr.e->q[axis ? r->box.iy : r->box.ix]));
-            cli_json_begin_array(j);
+            qd_json_key(j, qd_expr_name(r->lr.e->q[axis ? r->box.iy : r->box.ix]));
+            qd_json_begin_array(j);
             for (size_t i = 0; i < p->count; i++)
-                cli_json_number(j, axis ? p->y[i] : p->x[i]);
-            cli_json_end_array(j);
+                qd_json_number(j, axis ? p->y[i] : p->x[i]);
+            qd_json_end_array(j);
         }
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 static void put_json(zvc_run *r, qd_buf *b) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "h");
-    cli_json_expr(&j, r->lr.ctx, r->z.h);
-    cli_json_key(&j, "W");
-    cli_json_expr(&j, r->lr.ctx, r->z.W);
-    cli_json_key(&j, "level");
-    cli_json_number(&j, r->level);
-    cli_json_key(&j, "grid");
-    cli_json_begin_array(&j);
-    cli_json_number(&j, (double)r->box.nx);
-    cli_json_number(&j, (double)r->box.ny);
-    cli_json_end_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "h");
+    qd_json_expr(&j, r->lr.ctx, r->z.h);
+    qd_json_key(&j, "W");
+    qd_json_expr(&j, r->lr.ctx, r->z.W);
+    qd_json_key(&j, "level");
+    qd_json_number(&j, r->level);
+    qd_json_key(&j, "grid");
+    qd_json_begin_array(&j);
+    qd_json_number(&j, (double)r->box.nx);
+    qd_json_number(&j, (double)r->box.ny);
+    qd_json_end_array(&j);
     json_equilibria(r, &j);
     json_curves(r, &j);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 int cli_cmd_zvc(int argc, char **argv) {

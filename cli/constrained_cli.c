@@ -143,61 +143,61 @@ static void put_head(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c)
     qd_buf_puts(b, "\n");
 }
 
-static void json_head(cli_json *j, const qd_eom *e, const qd_constrained_linear *c) {
-    cli_json_key(j, "independent");
-    cli_json_begin_array(j);
+static void json_head(qd_json *j, const qd_eom *e, const qd_constrained_linear *c) {
+    qd_json_key(j, "independent");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < c->r; i++)
-        cli_json_string(j, qd_expr_name(e->q[c->indep[i]]));
-    cli_json_end_array(j);
-    cli_json_key(j, "dependent");
-    cli_json_begin_array(j);
+        qd_json_string(j, qd_expr_name(e->q[c->indep[i]]));
+    qd_json_end_array(j);
+    qd_json_key(j, "dependent");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < c->ncon; i++)
-        cli_json_string(j, qd_expr_name(e->q[c->dep[i]]));
-    cli_json_end_array(j);
-    cli_json_key(j, "equilibrium");
-    cli_json_begin_object(j);
+        qd_json_string(j, qd_expr_name(e->q[c->dep[i]]));
+    qd_json_end_array(j);
+    qd_json_key(j, "equilibrium");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < c->n; k++) {
-        cli_json_key(j, qd_expr_name(e->q[k]));
-        cli_json_number(j, c->q[k]);
+        qd_json_key(j, qd_expr_name(e->q[k]));
+        qd_json_number(j, c->q[k]);
     }
-    cli_json_end_object(j);
-    cli_json_key(j, "multipliers");
-    cli_json_begin_object(j);
+    qd_json_end_object(j);
+    qd_json_key(j, "multipliers");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < c->ncon; k++) {
-        cli_json_key(j, qd_expr_name(e->con[k].lambda));
-        cli_json_number(j, c->lambda[k]);
+        qd_json_key(j, qd_expr_name(e->con[k].lambda));
+        qd_json_number(j, c->lambda[k]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_matrix(cli_json *j, size_t r, size_t c, const double *x) {
-    cli_json_begin_array(j);
+static void json_matrix(qd_json *j, size_t r, size_t c, const double *x) {
+    qd_json_begin_array(j);
     for (size_t i = 0; i < r; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < c; k++)
-            cli_json_number(j, x[i * c + k]);
-        cli_json_end_array(j);
+            qd_json_number(j, x[i * c + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_eigs(cli_json *j, const qd_modes_result *res) {
-    cli_json_key(j, "eigenvalues");
-    cli_json_begin_array(j);
+static void json_eigs(qd_json *j, const qd_modes_result *res) {
+    qd_json_key(j, "eigenvalues");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < res->neig; k++) {
-        cli_json_begin_array(j);
-        cli_json_number(j, res->eig_re[k]);
-        cli_json_number(j, res->eig_im[k]);
-        cli_json_end_array(j);
+        qd_json_begin_array(j);
+        qd_json_number(j, res->eig_re[k]);
+        qd_json_number(j, res->eig_im[k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
-    cli_json_key(j, "stable");
+    qd_json_end_array(j);
+    qd_json_key(j, "stable");
     if (res->stable == -1)
-        cli_json_null(j);
+        qd_json_null(j);
     else
-        cli_json_bool(j, res->stable == 1);
-    cli_json_key(j, "verdict");
-    cli_json_string(j, verdict(res->stable));
+        qd_json_bool(j, res->stable == 1);
+    qd_json_key(j, "verdict");
+    qd_json_string(j, verdict(res->stable));
 }
 
 static void text_eigs(qd_buf *b, const qd_modes_result *res) {
@@ -231,44 +231,44 @@ static void modes_text(qd_buf *b, const qd_eom *e, const qd_constrained_linear *
 
 static void modes_json(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c,
                        const qd_modes_result *res) {
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     json_head(&j, e, c);
-    cli_json_key(&j, "conservative");
-    cli_json_bool(&j, res->conservative);
+    qd_json_key(&j, "conservative");
+    qd_json_bool(&j, res->conservative);
     const double *mats[] = {c->lin.M, c->lin.C, c->lin.G, c->lin.K};
     const char *keys[] = {"M", "C", "G", "K"};
     for (int i = 0; i < 4; i++) {
-        cli_json_key(&j, keys[i]);
+        qd_json_key(&j, keys[i]);
         json_matrix(&j, c->r, c->r, mats[i]);
     }
     if (res->conservative) {
-        cli_json_key(&j, "modes");
-        cli_json_begin_array(&j);
+        qd_json_key(&j, "modes");
+        qd_json_begin_array(&j);
         for (size_t k = 0; k < res->n; k++) {
-            cli_json_begin_object(&j);
-            cli_json_key(&j, "omega2");
-            cli_json_number(&j, res->omega2[k]);
+            qd_json_begin_object(&j);
+            qd_json_key(&j, "omega2");
+            qd_json_number(&j, res->omega2[k]);
             if (res->omega2[k] >= 0) {
-                cli_json_key(&j, "omega");
-                cli_json_number(&j, sqrt(res->omega2[k]));
+                qd_json_key(&j, "omega");
+                qd_json_number(&j, sqrt(res->omega2[k]));
             }
-            cli_json_key(&j, "shape");
-            cli_json_begin_object(&j);
+            qd_json_key(&j, "shape");
+            qd_json_begin_object(&j);
             for (size_t i = 0; i < c->r; i++) {
-                cli_json_key(&j, qd_expr_name(e->q[c->indep[i]]));
-                cli_json_number(&j, res->shapes[i * res->n + k]);
+                qd_json_key(&j, qd_expr_name(e->q[c->indep[i]]));
+                qd_json_number(&j, res->shapes[i * res->n + k]);
             }
-            cli_json_end_object(&j);
-            cli_json_end_object(&j);
+            qd_json_end_object(&j);
+            qd_json_end_object(&j);
         }
-        cli_json_end_array(&j);
+        qd_json_end_array(&j);
     }
     json_eigs(&j, res);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json) {
@@ -330,32 +330,32 @@ static void lin_text(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c,
 static void lin_json(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c, const double *A,
                      const con_inputs *in, const qd_modes_result *res) {
     size_t N = 2 * c->r;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     json_head(&j, e, c);
-    cli_json_key(&j, "states");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "states");
+    qd_json_begin_array(&j);
     char name[256];
     for (size_t i = 0; i < N; i++) {
         snprintf(name, sizeof name, "%s%s", qd_expr_name(e->q[c->indep[i % c->r]]),
                  i < c->r ? "" : "'");
-        cli_json_string(&j, name);
+        qd_json_string(&j, name);
     }
-    cli_json_end_array(&j);
-    cli_json_key(&j, "A");
+    qd_json_end_array(&j);
+    qd_json_key(&j, "A");
     json_matrix(&j, N, N, A);
-    cli_json_key(&j, "inputs");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "inputs");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < in->nu; k++)
-        cli_json_string(&j, qd_expr_name(in->u[k]));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "B");
+        qd_json_string(&j, qd_expr_name(in->u[k]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "B");
     json_matrix(&j, N, in->nu, in->B);
     json_eigs(&j, res);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 int cli_con_linearize(cli_lin_run *r, const double *q0, const char *indep, bool json) {

@@ -32,7 +32,9 @@ void cli_diag_read(const char *file, const char *text, const qd_diag *err) {
 }
 
 /* a bad argument or an exact division by zero is the input's fault */
-static int exit_status(qd_status st) {
+int cli_exit(qd_status st) {
+    if (st == QD_OK)
+        return QD_EXIT_OK;
     return st == QD_ERR_ARG || st == QD_ERR_DIVZERO || st == QD_ERR_PARSE ||
                    st == QD_ERR_UNBOUND || st == QD_ERR_NONLINEAR
                ? QD_EXIT_USAGE
@@ -50,7 +52,7 @@ int cli_diag_ctx(const qd_ctx *ctx) {
         snprintf(d.message + n, sizeof d.message - n, " (--%s)", opt);
     }
     cli_diag_show("qdot", NULL, &d);
-    return exit_status(qd_ctx_status(ctx));
+    return cli_exit(qd_ctx_status(ctx));
 }
 
 int cli_diag_model(const qd_ctx *ctx, const char *file, const char *text, const qd_model *m) {

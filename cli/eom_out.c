@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 
 bool cli_eom_format_from_name(const char *name, cli_eom_format *out) {
@@ -335,153 +335,153 @@ static qd_status write_latex(const cli_eom_view *v, qd_buf *b) {
 
 /* ---- JSON ------------------------------------------------------------------ */
 
-static qd_status json_entry(const cli_eom_view *v, cli_json *j, const qd_expr *x, qd_buf *tmp) {
+static qd_status json_entry(const cli_eom_view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
     if (v->numeric) {
-        cli_json_number(j, qd_number_value(x));
+        qd_json_number(j, qd_number_value(x));
         return QD_OK;
     }
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
-    cli_json_string(j, qd_buf_str(tmp));
+    qd_json_string(j, qd_buf_str(tmp));
     return st;
 }
 
-static qd_status json_vector(const cli_eom_view *v, cli_json *j, const char *key,
+static qd_status json_vector(const cli_eom_view *v, qd_json *j, const char *key,
                              const qd_expr *const *x, size_t n, qd_buf *tmp) {
     qd_status st = QD_OK;
     if (key)
-        cli_json_key(j, key);
-    cli_json_begin_array(j);
+        qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n && st == QD_OK; i++)
         st = json_entry(v, j, x[i], tmp);
-    cli_json_end_array(j);
+    qd_json_end_array(j);
     return st;
 }
 
-static void json_header(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
+static void json_header(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
     const qd_model *m = v->mf->model;
-    cli_json_key(j, "model");
-    cli_json_string(j, v->mf->path);
-    cli_json_key(j, "coordinates");
-    cli_json_begin_array(j);
+    qd_json_key(j, "model");
+    qd_json_string(j, v->mf->path);
+    qd_json_key(j, "coordinates");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < v->e->n; i++)
-        cli_json_string(j, qname(v, i));
-    cli_json_end_array(j);
-    cli_json_key(j, "parameters");
-    cli_json_begin_object(j);
+        qd_json_string(j, qname(v, i));
+    qd_json_end_array(j);
+    qd_json_key(j, "parameters");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        cli_json_key(j, qd_expr_name(qd_model_param(m, i)));
-        cli_json_number(j, cli_param_value(m, i));
+        qd_json_key(j, qd_expr_name(qd_model_param(m, i)));
+        qd_json_number(j, cli_param_value(m, i));
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     if (!v->numeric)
         return;
-    cli_json_key(j, "state");
-    cli_json_begin_object(j);
+    qd_json_key(j, "state");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < 2 * qd_model_ncoords(m) + 1; i++) {
         qd_buf_clear(tmp);
         qd_print(v->ctx, v->st->syms[i], QD_FMT_TEXT, tmp);
-        cli_json_key(j, qd_buf_str(tmp));
-        cli_json_number(j, v->st->vals[i]);
+        qd_json_key(j, qd_buf_str(tmp));
+        qd_json_number(j, v->st->vals[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static qd_status json_constraint(const cli_eom_view *v, cli_json *j, size_t k, qd_buf *tmp) {
+static qd_status json_constraint(const cli_eom_view *v, qd_json *j, size_t k, qd_buf *tmp) {
     const qd_con *c = &v->e->con[k];
-    cli_json_begin_object(j);
-    cli_json_key(j, "name");
-    cli_json_string(j, c->name);
-    cli_json_key(j, "kind");
-    cli_json_string(j, cli_eom_con_kind_name(c->kind));
-    cli_json_key(j, "expression");
+    qd_json_begin_object(j);
+    qd_json_key(j, "name");
+    qd_json_string(j, c->name);
+    qd_json_key(j, "kind");
+    qd_json_string(j, cli_eom_con_kind_name(c->kind));
+    qd_json_key(j, "expression");
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, tmp);
-    cli_json_string(j, qd_buf_str(tmp));
+    qd_json_string(j, qd_buf_str(tmp));
     if (st == QD_OK && c->integral) {
-        cli_json_key(j, "integral");
+        qd_json_key(j, "integral");
         qd_buf_clear(tmp);
         st = qd_print(v->ctx, c->integral, QD_FMT_TEXT, tmp);
-        cli_json_string(j, qd_buf_str(tmp));
+        qd_json_string(j, qd_buf_str(tmp));
     }
-    cli_json_key(j, "multiplier");
-    cli_json_string(j, qd_expr_name(c->lambda));
+    qd_json_key(j, "multiplier");
+    qd_json_string(j, qd_expr_name(c->lambda));
     if (st == QD_OK)
         st = json_vector(v, j, "A", v->A + k * v->e->n, v->e->n, tmp);
     if (st == QD_OK) {
-        cli_json_key(j, "b");
+        qd_json_key(j, "b");
         st = json_entry(v, j, v->b[k], tmp);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     return st;
 }
 
 /* "constraints" (each with its row of A and b), then the multipliers by
  * constraint name and the constraint forces by coordinate name when known. */
-static qd_status json_constraints(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
+static qd_status json_constraints(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    cli_json_key(j, "constraints");
-    cli_json_begin_array(j);
+    qd_json_key(j, "constraints");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++)
         st = json_constraint(v, j, k, tmp);
-    cli_json_end_array(j);
+    qd_json_end_array(j);
     if (v->lambda) {
-        cli_json_key(j, "multipliers");
-        cli_json_begin_object(j);
+        qd_json_key(j, "multipliers");
+        qd_json_begin_object(j);
         for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
-            cli_json_key(j, v->e->con[k].name);
+            qd_json_key(j, v->e->con[k].name);
             st = json_entry(v, j, v->lambda[k], tmp);
         }
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
     if (v->R) {
-        cli_json_key(j, "constraint_forces");
-        cli_json_begin_object(j);
+        qd_json_key(j, "constraint_forces");
+        qd_json_begin_object(j);
         for (size_t i = 0; i < v->e->n && st == QD_OK; i++) {
-            cli_json_key(j, qname(v, i));
+            qd_json_key(j, qname(v, i));
             st = json_entry(v, j, v->R[i], tmp);
         }
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
     return st;
 }
 
 /* "reactions": name -> [Fx, Fy, Fz]; "reaction_residuals": name -> residual. */
-static qd_status json_reactions(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
+static qd_status json_reactions(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    cli_json_key(j, "reactions");
-    cli_json_begin_object(j);
+    qd_json_key(j, "reactions");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < v->nreact && st == QD_OK; i++) {
-        cli_json_key(j, v->react_name[i]);
+        qd_json_key(j, v->react_name[i]);
         st = json_vector(v, j, NULL, v->react + 3 * i, 3, tmp);
     }
-    cli_json_end_object(j);
-    cli_json_key(j, "reaction_residuals");
-    cli_json_begin_object(j);
+    qd_json_end_object(j);
+    qd_json_key(j, "reaction_residuals");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < v->nreact; i++) {
-        cli_json_key(j, v->react_name[i]);
-        cli_json_number(j, v->react_res[i]);
+        qd_json_key(j, v->react_name[i]);
+        qd_json_number(j, v->react_res[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     return st;
 }
 
-static qd_status json_eliminated(const cli_eom_view *v, cli_json *j, qd_buf *tmp) {
+static qd_status json_eliminated(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    cli_json_key(j, "eliminated");
-    cli_json_begin_object(j);
+    qd_json_key(j, "eliminated");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < v->e->nelim && st == QD_OK; i++) {
-        cli_json_key(j, qd_expr_name(v->e->elim[i].q));
-        cli_json_begin_object(j);
-        cli_json_key(j, "constraint");
-        cli_json_string(j, v->e->elim[i].con);
-        cli_json_key(j, "value");
+        qd_json_key(j, qd_expr_name(v->e->elim[i].q));
+        qd_json_begin_object(j);
+        qd_json_key(j, "constraint");
+        qd_json_string(j, v->e->elim[i].con);
+        qd_json_key(j, "value");
         qd_buf_clear(tmp);
         st = qd_print(v->ctx, v->e->elim[i].value, QD_FMT_TEXT, tmp);
-        cli_json_string(j, qd_buf_str(tmp));
-        cli_json_end_object(j);
+        qd_json_string(j, qd_buf_str(tmp));
+        qd_json_end_object(j);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     return st;
 }
 
@@ -489,24 +489,24 @@ static qd_status write_json(const cli_eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T2", "T1", "T0"};
     size_t n = v->e->n;
     qd_buf tmp = QD_BUF_INIT;
-    cli_json j;
+    qd_json j;
     qd_status st = QD_OK;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     json_header(v, &j, &tmp);
     for (size_t i = 0; v->T[0] && i < 3 && st == QD_OK; i++) {
-        cli_json_key(&j, parts[i]);
+        qd_json_key(&j, parts[i]);
         st = json_entry(v, &j, v->T[i], &tmp);
     }
-    cli_json_key(&j, "mass_matrix");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "mass_matrix");
+    qd_json_begin_array(&j);
     for (size_t r = 0; r < n && st == QD_OK; r++) {
-        cli_json_begin_array(&j);
+        qd_json_begin_array(&j);
         for (size_t k = 0; k < n && st == QD_OK; k++)
             st = json_entry(v, &j, v->M[r * n + k], &tmp);
-        cli_json_end_array(&j);
+        qd_json_end_array(&j);
     }
-    cli_json_end_array(&j);
+    qd_json_end_array(&j);
     if (st == QD_OK)
         st = json_vector(v, &j, "forcing", v->f, n, &tmp);
     if (st == QD_OK && v->acc)
@@ -517,10 +517,10 @@ static qd_status write_json(const cli_eom_view *v, qd_buf *b) {
         st = json_constraints(v, &j, &tmp);
     if (st == QD_OK && v->numeric && qd_model_nreactions(v->mf->model))
         st = json_reactions(v, &j, &tmp);
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);
-    if (st == QD_OK && !cli_json_ok(&j))
+    if (st == QD_OK && !qd_json_ok(&j))
         st = b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
     return st;
 }

@@ -8,7 +8,7 @@
 #define QDOT_CLI_LINEAR_CLI_H
 
 #include "cli.h"
-#include "json.h"
+#include "qdot/json.h"
 #include "model_file.h"
 #include "qdot/equilibria.h"
 #include "qdot/modes.h"
@@ -98,6 +98,6 @@ int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t 
 
 /* A mode's "omega2", "omega" and "period" keys (null where w^2 < 0 has no
  * frequency, or w^2 = 0 no period). */
-void cli_json_frequency(cli_json *j, double w2);
+void qd_json_frequency(qd_json *j, double w2);
 
 #endif

@@ -8,7 +8,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "qdot/control.h"
 #include "qdot/statespace.h"
 
@@ -40,7 +40,7 @@ bool cli_lqr_print(FILE *out, const qd_care_result *r, const char *const *states
 
 /* The design's JSON object into j (the keys above), for a caller that nests
  * it in its own document. */
-void cli_lqr_json(cli_json *j, const qd_care_result *r, const char *const *states,
+void cli_lqr_json(qd_json *j, const qd_care_result *r, const char *const *states,
                   const char *const *inputs);
 
 /* A reader's error under the option's text, with a caret at its place:
@@ -70,7 +70,7 @@ int cli_lqr_design(qd_ctx *ctx, const qd_statespace *s, const char *weights,
  * an object nested under the caller's key (cli_lqr_json). */
 int cli_lqr_print_design(FILE *out, const qd_statespace *s, const qd_care_result *r,
                          cli_lqr_format fmt);
-int cli_lqr_json_design(cli_json *j, const qd_statespace *s, const qd_care_result *r);
+int cli_lqr_json_design(qd_json *j, const qd_statespace *s, const qd_care_result *r);
 
 /* `qdot lqr` (cmd_lqr.c), declared here to leave cli.h to the other commands. */
 int cli_cmd_lqr(int argc, char **argv);

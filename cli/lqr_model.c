@@ -139,7 +139,7 @@ int cli_lqr_print_design(FILE *out, const qd_statespace *s, const qd_care_result
     return QD_EXIT_FAIL;
 }
 
-int cli_lqr_json_design(cli_json *j, const qd_statespace *s, const qd_care_result *r) {
+int cli_lqr_json_design(qd_json *j, const qd_statespace *s, const qd_care_result *r) {
     const char **names = names_of(s);
     if (!names) {
         cli_diag_error("out of memory");

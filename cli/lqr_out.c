@@ -3,7 +3,7 @@
  * lqr_cli.h): for `qdot lqr` and for `qdot linearize --lqr`.
  */
 #include "lqr_cli.h"
-#include "json.h"
+#include "qdot/json.h"
 
 #include <math.h>
 #include <string.h>
@@ -48,57 +48,57 @@ static void put_text(qd_buf *b, const qd_care_result *r, const char *const *stat
     qd_buf_printf(b, "relative residual: %.1e\n", r->residual);
 }
 
-static void json_names(cli_json *j, const char *key, size_t n, const char *const *names) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_names(qd_json *j, const char *key, size_t n, const char *const *names) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t k = 0; k < n; k++)
-        cli_json_string(j, names[k]);
-    cli_json_end_array(j);
+        qd_json_string(j, names[k]);
+    qd_json_end_array(j);
 }
 
-static void json_matrix(cli_json *j, const char *key, size_t rows, size_t cols,
+static void json_matrix(qd_json *j, const char *key, size_t rows, size_t cols,
                         const double *M) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < rows; i++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t k = 0; k < cols; k++)
-            cli_json_number(j, M[i * cols + k]);
-        cli_json_end_array(j);
+            qd_json_number(j, M[i * cols + k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-void cli_lqr_json(cli_json *j, const qd_care_result *r, const char *const *states,
+void cli_lqr_json(qd_json *j, const qd_care_result *r, const char *const *states,
                   const char *const *inputs) {
-    cli_json_begin_object(j);
+    qd_json_begin_object(j);
     json_names(j, "states", r->n, states);
     json_names(j, "inputs", r->m, inputs);
     json_matrix(j, "K", r->m, r->n, r->K);
     json_matrix(j, "X", r->n, r->n, r->X);
-    cli_json_key(j, "closed_loop_eigenvalues");
-    cli_json_begin_array(j);
+    qd_json_key(j, "closed_loop_eigenvalues");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < r->n; k++) {
-        cli_json_begin_array(j);
-        cli_json_number(j, r->eig_re[k]);
-        cli_json_number(j, r->eig_im[k]);
-        cli_json_end_array(j);
+        qd_json_begin_array(j);
+        qd_json_number(j, r->eig_re[k]);
+        qd_json_number(j, r->eig_im[k]);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
-    cli_json_key(j, "residual");
-    cli_json_number(j, r->residual);
-    cli_json_key(j, "rcond");
-    cli_json_number(j, r->rcond);
-    cli_json_end_object(j);
+    qd_json_end_array(j);
+    qd_json_key(j, "residual");
+    qd_json_number(j, r->residual);
+    qd_json_key(j, "rcond");
+    qd_json_number(j, r->rcond);
+    qd_json_end_object(j);
 }
 
 static bool put_json(qd_buf *b, const qd_care_result *r, const char *const *states,
                      const char *const *inputs) {
-    cli_json j;
-    cli_json_init(&j, b);
+    qd_json j;
+    qd_json_init(&j, b);
     cli_lqr_json(&j, r, states, inputs);
     qd_buf_puts(b, "\n");
-    return cli_json_ok(&j);
+    return qd_json_ok(&j);
 }
 
 static void c_matrix(qd_buf *b, const char *name, size_t rows, size_t cols, const double *M) {

@@ -237,168 +237,168 @@ void cli_sym_put_text(const cli_sym_run *s, const qd_eom *e, qd_buf *b) {
 
 /* ---- json ------------------------------------------------------------------ */
 
-static void json_characters(const qd_symmetry *y, cli_json *j) {
-    cli_json_key(j, "characters");
-    cli_json_begin_array(j);
+static void json_characters(const qd_symmetry *y, qd_json *j) {
+    qd_json_key(j, "characters");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < y->nirrep; i++) {
         bool cplx = false;
-        cli_json_begin_object(j);
-        cli_json_key(j, "irrep");
-        cli_json_string(j, y->label[i]);
-        cli_json_key(j, "dimension");
-        cli_json_number(j, (double)y->irrep_dim[i]);
-        cli_json_key(j, "chi");
-        cli_json_begin_array(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "irrep");
+        qd_json_string(j, y->label[i]);
+        qd_json_key(j, "dimension");
+        qd_json_number(j, (double)y->irrep_dim[i]);
+        qd_json_key(j, "chi");
+        qd_json_begin_array(j);
         for (size_t c = 0; c < y->nclass; c++) {
-            cli_json_number(j, y->chi_re[i * y->nclass + c]);
+            qd_json_number(j, y->chi_re[i * y->nclass + c]);
             cplx = cplx || fabs(y->chi_im[i * y->nclass + c]) > 1e-9;
         }
-        cli_json_end_array(j);
+        qd_json_end_array(j);
         if (cplx) {
-            cli_json_key(j, "chi_imag");
-            cli_json_begin_array(j);
+            qd_json_key(j, "chi_imag");
+            qd_json_begin_array(j);
             for (size_t c = 0; c < y->nclass; c++)
-                cli_json_number(j, y->chi_im[i * y->nclass + c]);
-            cli_json_end_array(j);
+                qd_json_number(j, y->chi_im[i * y->nclass + c]);
+            qd_json_end_array(j);
         }
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_classes(const qd_symmetry *y, cli_json *j) {
-    cli_json_key(j, "classes");
-    cli_json_begin_array(j);
+static void json_classes(const qd_symmetry *y, qd_json *j) {
+    qd_json_key(j, "classes");
+    qd_json_begin_array(j);
     for (size_t c = 0; c < y->nclass; c++) {
         char name[24];
         qd_symmetry_class_name(y, c, name, sizeof name);
-        cli_json_begin_object(j);
-        cli_json_key(j, "name");
-        cli_json_string(j, name);
-        cli_json_key(j, "size");
-        cli_json_number(j, (double)y->class_size[c]);
-        cli_json_end_object(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "name");
+        qd_json_string(j, name);
+        qd_json_key(j, "size");
+        qd_json_number(j, (double)y->class_size[c]);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_blocks(const qd_symmetry *y, const qd_eom *e, cli_json *j) {
+static void json_blocks(const qd_symmetry *y, const qd_eom *e, qd_json *j) {
     size_t n = y->n;
-    cli_json_key(j, "blocks");
-    cli_json_begin_array(j);
+    qd_json_key(j, "blocks");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < y->nblock; k++) {
         char lab[32];
         size_t s0 = y->block_start[k], m = y->block_size[k];
         qd_symmetry_block_label(y, k, lab, sizeof lab);
-        cli_json_begin_object(j);
-        cli_json_key(j, "irrep");
-        cli_json_string(j, lab);
-        cli_json_key(j, "K");
-        cli_json_begin_array(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "irrep");
+        qd_json_string(j, lab);
+        qd_json_key(j, "K");
+        qd_json_begin_array(j);
         for (size_t a = 0; a < m; a++) {
-            cli_json_begin_array(j);
+            qd_json_begin_array(j);
             for (size_t c = 0; c < m; c++)
-                cli_json_number(j, y->Kb[(s0 + a) * n + s0 + c]);
-            cli_json_end_array(j);
+                qd_json_number(j, y->Kb[(s0 + a) * n + s0 + c]);
+            qd_json_end_array(j);
         }
-        cli_json_end_array(j);
-        cli_json_key(j, "coordinates");
-        cli_json_begin_array(j);
+        qd_json_end_array(j);
+        qd_json_key(j, "coordinates");
+        qd_json_begin_array(j);
         for (size_t a = 0; a < m; a++) {
-            cli_json_begin_object(j);
+            qd_json_begin_object(j);
             for (size_t i = 0; i < n; i++) {
-                cli_json_key(j, qd_expr_name(e->q[i]));
-                cli_json_number(j, y->U[i * n + s0 + a]);
+                qd_json_key(j, qd_expr_name(e->q[i]));
+                qd_json_number(j, y->U[i * n + s0 + a]);
             }
-            cli_json_end_object(j);
+            qd_json_end_object(j);
         }
-        cli_json_end_array(j);
-        cli_json_end_object(j);
+        qd_json_end_array(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
-static void json_group(const qd_symmetry *y, const qd_eom *e, cli_json *j) {
-    cli_json_key(j, "group");
+static void json_group(const qd_symmetry *y, const qd_eom *e, qd_json *j) {
+    qd_json_key(j, "group");
     if (y->name[0])
-        cli_json_string(j, y->name);
+        qd_json_string(j, y->name);
     else
-        cli_json_null(j);
-    cli_json_key(j, "order");
-    cli_json_number(j, (double)y->order);
+        qd_json_null(j);
+    qd_json_key(j, "order");
+    qd_json_number(j, (double)y->order);
     json_classes(y, j);
     json_characters(y, j);
-    cli_json_key(j, "reducible");
-    cli_json_begin_array(j);
+    qd_json_key(j, "reducible");
+    qd_json_begin_array(j);
     for (size_t c = 0; c < y->nclass; c++)
-        cli_json_number(j, y->chi[c]);
-    cli_json_end_array(j);
-    cli_json_key(j, "multiplicities");
-    cli_json_begin_object(j);
+        qd_json_number(j, y->chi[c]);
+    qd_json_end_array(j);
+    qd_json_key(j, "multiplicities");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < y->nirrep; i++) {
-        cli_json_key(j, y->label[i]);
-        cli_json_number(j, (double)y->mult[i]);
+        qd_json_key(j, y->label[i]);
+        qd_json_number(j, (double)y->mult[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     json_blocks(y, e, j);
 }
 
-void cli_sym_put_json(const cli_sym_run *s, const qd_eom *e, cli_json *j) {
-    cli_json_key(j, "symmetry");
-    cli_json_begin_object(j);
+void cli_sym_put_json(const cli_sym_run *s, const qd_eom *e, qd_json *j) {
+    qd_json_key(j, "symmetry");
+    qd_json_begin_object(j);
     if (s->cyc.n) {
-        cli_json_key(j, "group");
-        cli_json_string(j, "cyclic");
-        cli_json_key(j, "order");
-        cli_json_number(j, (double)s->cyc.cells);
-        cli_json_key(j, "cell");
-        cli_json_number(j, (double)s->cyc.cell);
-        cli_json_key(j, "fast_path");
-        cli_json_bool(j, true);
+        qd_json_key(j, "group");
+        qd_json_string(j, "cyclic");
+        qd_json_key(j, "order");
+        qd_json_number(j, (double)s->cyc.cells);
+        qd_json_key(j, "cell");
+        qd_json_number(j, (double)s->cyc.cell);
+        qd_json_key(j, "fast_path");
+        qd_json_bool(j, true);
     } else {
         json_group(&s->sym, e, j);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-static void json_sym_mode(const qd_symmetry *y, const qd_eom *e, size_t k, cli_json *j) {
+static void json_sym_mode(const qd_symmetry *y, const qd_eom *e, size_t k, qd_json *j) {
     char lab[32];
     qd_symmetry_block_label(y, y->mode_block[k], lab, sizeof lab);
-    cli_json_begin_object(j);
-    cli_json_frequency(j, y->omega2[k]);
-    cli_json_key(j, "irrep");
-    cli_json_string(j, lab);
-    cli_json_key(j, "degeneracy");
-    cli_json_number(j, (double)y->mode_degeneracy[k]);
-    cli_json_key(j, "kind");
-    cli_json_string(j, kind_name(y->mode_kind[k]));
-    cli_json_key(j, "shape");
-    cli_json_begin_object(j);
+    qd_json_begin_object(j);
+    qd_json_frequency(j, y->omega2[k]);
+    qd_json_key(j, "irrep");
+    qd_json_string(j, lab);
+    qd_json_key(j, "degeneracy");
+    qd_json_number(j, (double)y->mode_degeneracy[k]);
+    qd_json_key(j, "kind");
+    qd_json_string(j, kind_name(y->mode_kind[k]));
+    qd_json_key(j, "shape");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < y->n; i++) {
-        cli_json_key(j, qd_expr_name(e->q[i]));
-        cli_json_number(j, y->shapes[i * y->n + k]);
+        qd_json_key(j, qd_expr_name(e->q[i]));
+        qd_json_number(j, y->shapes[i * y->n + k]);
     }
-    cli_json_end_object(j);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
+    qd_json_end_object(j);
 }
 
-void cli_sym_json_modes(const cli_sym_run *s, const qd_eom *e, cli_json *j) {
-    cli_json_key(j, "modes");
-    cli_json_begin_array(j);
+void cli_sym_json_modes(const cli_sym_run *s, const qd_eom *e, qd_json *j) {
+    qd_json_key(j, "modes");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < s->cyc.n; k++) {
         char lab[32];
         snprintf(lab, sizeof lab, "k=%zu", s->cyc.harmonic[k]);
-        cli_json_begin_object(j);
-        cli_json_frequency(j, s->cyc.omega2[k]);
-        cli_json_key(j, "irrep");
-        cli_json_string(j, lab);
-        cli_json_key(j, "harmonic");
-        cli_json_number(j, (double)s->cyc.harmonic[k]);
-        cli_json_key(j, "degeneracy");
-        cli_json_number(j, (double)s->cyc.degeneracy[k]);
-        cli_json_end_object(j);
+        qd_json_begin_object(j);
+        qd_json_frequency(j, s->cyc.omega2[k]);
+        qd_json_key(j, "irrep");
+        qd_json_string(j, lab);
+        qd_json_key(j, "harmonic");
+        qd_json_number(j, (double)s->cyc.harmonic[k]);
+        qd_json_key(j, "degeneracy");
+        qd_json_number(j, (double)s->cyc.degeneracy[k]);
+        qd_json_end_object(j);
     }
     for (size_t k = 0; !s->cyc.n && k < s->sym.n; k++)
         json_sym_mode(&s->sym, e, k, j);
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }

@@ -8,7 +8,7 @@
 #ifndef QDOT_CLI_MODES_SYMMETRY_H
 #define QDOT_CLI_MODES_SYMMETRY_H
 
-#include "json.h"
+#include "qdot/json.h"
 #include "linear_cli.h"
 #include "qdot/symmetry.h"
 
@@ -29,9 +29,9 @@ int cli_sym_compute(cli_lin_run *lr, const qd_linear *lin, cli_sym_run *s);
 /* Text: group, characters, Gamma, coordinates, blocks, modes. */
 void cli_sym_put_text(const cli_sym_run *s, const qd_eom *e, qd_buf *b);
 /* JSON: the "symmetry" object (key included). */
-void cli_sym_put_json(const cli_sym_run *s, const qd_eom *e, cli_json *j);
+void cli_sym_put_json(const cli_sym_run *s, const qd_eom *e, qd_json *j);
 /* JSON: the modes array (key included) with "irrep" on each. */
-void cli_sym_json_modes(const cli_sym_run *s, const qd_eom *e, cli_json *j);
+void cli_sym_json_modes(const cli_sym_run *s, const qd_eom *e, qd_json *j);
 void cli_sym_free(cli_sym_run *s);
 
 #endif

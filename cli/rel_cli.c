@@ -149,24 +149,24 @@ void rel_put_vec(qd_buf *b, const double *v, size_t n) {
     qd_buf_puts(b, ")");
 }
 
-void rel_json_vec(cli_json *j, const char *key, const double *v, size_t n) {
+void rel_json_vec(qd_json *j, const char *key, const double *v, size_t n) {
     if (key)
-        cli_json_key(j, key);
-    cli_json_begin_array(j);
+        qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++)
-        cli_json_number(j, v[i]);
-    cli_json_end_array(j);
+        qd_json_number(j, v[i]);
+    qd_json_end_array(j);
 }
 
-void rel_json_particle(cli_json *j, const qd_rel_particle *p) {
-    cli_json_begin_object(j);
-    cli_json_key(j, "mass");
-    cli_json_number(j, p->m);
+void rel_json_particle(qd_json *j, const qd_rel_particle *p) {
+    qd_json_begin_object(j);
+    qd_json_key(j, "mass");
+    qd_json_number(j, p->m);
     rel_json_vec(j, "velocity", p->v, 3);
-    cli_json_key(j, "energy");
-    cli_json_number(j, p->E);
+    qd_json_key(j, "energy");
+    qd_json_number(j, p->E);
     rel_json_vec(j, "momentum", p->p, 3);
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 void rel_text_particle(qd_buf *b, const char *label, const qd_rel_particle *p) {

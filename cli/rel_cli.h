@@ -7,7 +7,7 @@
 #define QDOT_CLI_REL_H
 
 #include "qdot/qdot.h"
-#include "json.h"
+#include "qdot/json.h"
 
 /* text (what names it: "--frame") as an expression in c (and t when t_ok:
  * *expr gets it with c replaced); a number unless t_ok.  Prints its errors. */
@@ -23,8 +23,8 @@ int rel_particle(qd_ctx *ctx, double c, const char *what, const char *text, qd_r
 int rel_speed_of_light(qd_ctx *ctx, const char *text, double *c);
 
 void rel_put_vec(qd_buf *b, const double *v, size_t n); /* (x, y, z) */
-void rel_json_vec(cli_json *j, const char *key, const double *v, size_t n);
-void rel_json_particle(cli_json *j, const qd_rel_particle *p);
+void rel_json_vec(qd_json *j, const char *key, const double *v, size_t n);
+void rel_json_particle(qd_json *j, const qd_rel_particle *p);
 void rel_text_particle(qd_buf *b, const char *label, const qd_rel_particle *p);
 
 #endif

@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 
 static const char *verdict_name(int s) {
@@ -188,75 +188,75 @@ static void put_text(const cli_scan_view *v, const qd_scan *sc, qd_buf *b) {
 
 /* ---- json ---------------------------------------------------------------------- */
 
-static void json_verdict(cli_json *j, int s) {
-    cli_json_key(j, "stable");
+static void json_verdict(qd_json *j, int s) {
+    qd_json_key(j, "stable");
     if (s == -1)
-        cli_json_null(j);
+        qd_json_null(j);
     else
-        cli_json_bool(j, s == 1);
-    cli_json_key(j, "verdict");
-    cli_json_string(j, verdict_name(s));
+        qd_json_bool(j, s == 1);
+    qd_json_key(j, "verdict");
+    qd_json_string(j, verdict_name(s));
 }
 
-static void json_samples(const cli_scan_view *v, const qd_scan *sc, cli_json *j) {
-    cli_json_key(j, "samples");
-    cli_json_begin_array(j);
+static void json_samples(const cli_scan_view *v, const qd_scan *sc, qd_json *j) {
+    qd_json_key(j, "samples");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < sc->count; k++) {
-        cli_json_begin_object(j);
-        cli_json_key(j, v->param);
-        cli_json_number(j, sc->value[k]);
-        cli_json_key(j, v->key);
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, v->param);
+        qd_json_number(j, sc->value[k]);
+        qd_json_key(j, v->key);
+        qd_json_begin_object(j);
         for (size_t i = 0; i < sc->n; i++) {
-            cli_json_key(j, v->names[i]);
-            cli_json_number(j, sc->q[k * sc->n + i]);
+            qd_json_key(j, v->names[i]);
+            qd_json_number(j, sc->q[k * sc->n + i]);
         }
-        cli_json_end_object(j);
-        cli_json_key(j, sc->conservative[k] ? "min_omega2" : "max_re_s");
-        cli_json_number(j, sc->margin[k]);
+        qd_json_end_object(j);
+        qd_json_key(j, sc->conservative[k] ? "min_omega2" : "max_re_s");
+        qd_json_number(j, sc->margin[k]);
         json_verdict(j, sc->stable[k]);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
 }
 
 static void put_json(const cli_scan_view *v, const qd_scan *sc, qd_buf *b) {
     const char *name = v->param;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "parameter");
-    cli_json_string(&j, name);
-    cli_json_key(&j, "range");
-    cli_json_begin_array(&j);
-    cli_json_number(&j, sc->value[0]);
-    cli_json_number(&j, sc->value[sc->count - 1]);
-    cli_json_end_array(&j);
-    cli_json_key(&j, "steps");
-    cli_json_number(&j, (double)(sc->count - 1));
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "parameter");
+    qd_json_string(&j, name);
+    qd_json_key(&j, "range");
+    qd_json_begin_array(&j);
+    qd_json_number(&j, sc->value[0]);
+    qd_json_number(&j, sc->value[sc->count - 1]);
+    qd_json_end_array(&j);
+    qd_json_key(&j, "steps");
+    qd_json_number(&j, (double)(sc->count - 1));
     json_samples(v, sc, &j);
-    cli_json_key(&j, "transitions");
-    cli_json_begin_array(&j);
+    qd_json_key(&j, "transitions");
+    qd_json_begin_array(&j);
     for (size_t t = 0; t < sc->ntrans; t++) {
         const qd_scan_transition *tr = &sc->trans[t];
-        cli_json_begin_object(&j);
-        cli_json_key(&j, name);
-        cli_json_number(&j, tr->value);
-        cli_json_key(&j, "from");
-        cli_json_string(&j, verdict_name(tr->from));
-        cli_json_key(&j, "to");
-        cli_json_string(&j, verdict_name(tr->to));
-        cli_json_key(&j, "bracket");
-        cli_json_begin_array(&j);
-        cli_json_number(&j, tr->lo);
-        cli_json_number(&j, tr->hi);
-        cli_json_end_array(&j);
-        cli_json_end_object(&j);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, name);
+        qd_json_number(&j, tr->value);
+        qd_json_key(&j, "from");
+        qd_json_string(&j, verdict_name(tr->from));
+        qd_json_key(&j, "to");
+        qd_json_string(&j, verdict_name(tr->to));
+        qd_json_key(&j, "bracket");
+        qd_json_begin_array(&j);
+        qd_json_number(&j, tr->lo);
+        qd_json_number(&j, tr->hi);
+        qd_json_end_array(&j);
+        qd_json_end_object(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_end_object(&j);
+    qd_json_end_array(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* ---- the command ------------------------------------------------------------------- */

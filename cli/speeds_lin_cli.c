@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 #include "qdot/speeds.h"
 
@@ -126,55 +126,55 @@ static void eq_text(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
 static void eq_json(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
     const qd_equilibria *eq = &s->eq;
     const qd_speeds_eom *e = r->e;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "method");
-    cli_json_string(&j, eq->method);
-    cli_json_key(&j, "exact");
-    cli_json_bool(&j, eq->exact);
-    cli_json_key(&j, "continuum");
-    cli_json_bool(&j, eq->continuum);
-    cli_json_key(&j, "speeds");
-    cli_json_begin_array(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "method");
+    qd_json_string(&j, eq->method);
+    qd_json_key(&j, "exact");
+    qd_json_bool(&j, eq->exact);
+    qd_json_key(&j, "continuum");
+    qd_json_bool(&j, eq->continuum);
+    qd_json_key(&j, "speeds");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < e->m; k++)
-        cli_json_string(&j, qd_expr_name(e->u[k]));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "free");
-    cli_json_begin_array(&j);
+        qd_json_string(&j, qd_expr_name(e->u[k]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "free");
+    qd_json_begin_array(&j);
     for (size_t k = 0; k < e->n; k++)
         if (s->free_coord[k])
-            cli_json_string(&j, qd_expr_name(e->q[k]));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "equilibria");
-    cli_json_begin_array(&j);
+            qd_json_string(&j, qd_expr_name(e->q[k]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "equilibria");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < eq->count; i++) {
         const qd_equilibrium *p = &eq->pts[i];
-        cli_json_begin_object(&j);
-        cli_json_key(&j, "equilibrium");
-        cli_json_begin_object(&j);
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "equilibrium");
+        qd_json_begin_object(&j);
         for (size_t k = 0; k < s->nsolved; k++) {
-            cli_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
-            cli_json_number(&j, p->q[k]);
+            qd_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
+            qd_json_number(&j, p->q[k]);
         }
-        cli_json_end_object(&j);
+        qd_json_end_object(&j);
         if (p->exact) {
-            cli_json_key(&j, "exact");
-            cli_json_begin_object(&j);
+            qd_json_key(&j, "exact");
+            qd_json_begin_object(&j);
             for (size_t k = 0; k < s->nsolved; k++) {
-                cli_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
-                cli_json_expr(&j, r->ctx, p->exact[k]);
+                qd_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
+                qd_json_expr(&j, r->ctx, p->exact[k]);
             }
-            cli_json_end_object(&j);
+            qd_json_end_object(&j);
         }
-        cli_json_key(&j, "residual");
-        cli_json_number(&j, p->residual);
-        cli_json_end_object(&j);
+        qd_json_key(&j, "residual");
+        qd_json_number(&j, p->residual);
+        qd_json_end_object(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_end_object(&j);
+    qd_json_end_array(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char *refuse) {
@@ -297,47 +297,47 @@ static void modes_text(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
 static void modes_json(const sp_run *r, const qd_speeds_linear *lin, const qd_modes_result *res,
                        qd_buf *b) {
     const qd_speeds_eom *e = r->e;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "state");
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "state");
+    qd_json_begin_object(&j);
     for (size_t k = 0; k < e->n + e->m; k++) {
-        cli_json_key(&j, qd_expr_name(r->syms[k]));
-        cli_json_number(&j, r->vals[k]);
+        qd_json_key(&j, qd_expr_name(r->syms[k]));
+        qd_json_number(&j, r->vals[k]);
     }
-    cli_json_end_object(&j);
-    cli_json_key(&j, "kept");
-    cli_json_begin_array(&j);
+    qd_json_end_object(&j);
+    qd_json_key(&j, "kept");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < lin->nkept; i++)
-        cli_json_string(&j, qd_expr_name(e->q[lin->kept[i]]));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "ignorable");
-    cli_json_begin_array(&j);
+        qd_json_string(&j, qd_expr_name(e->q[lin->kept[i]]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "ignorable");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < e->n; i++)
         if (lin->ignorable[i])
-            cli_json_string(&j, qd_expr_name(e->q[i]));
-    cli_json_end_array(&j);
-    cli_json_key(&j, "eigenvalues");
-    cli_json_begin_array(&j);
+            qd_json_string(&j, qd_expr_name(e->q[i]));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "eigenvalues");
+    qd_json_begin_array(&j);
     for (size_t i = 0; i < res->neig; i++) {
-        cli_json_begin_array(&j);
-        cli_json_number(&j, res->eig_re[i]);
-        cli_json_number(&j, res->eig_im[i]);
-        cli_json_end_array(&j);
+        qd_json_begin_array(&j);
+        qd_json_number(&j, res->eig_re[i]);
+        qd_json_number(&j, res->eig_im[i]);
+        qd_json_end_array(&j);
     }
-    cli_json_end_array(&j);
-    cli_json_key(&j, "verdict");
-    cli_json_string(&j, res->stable == 1 ? "stable" : res->stable == 0 ? "unstable"
+    qd_json_end_array(&j);
+    qd_json_key(&j, "verdict");
+    qd_json_string(&j, res->stable == 1 ? "stable" : res->stable == 0 ? "unstable"
                                                                          : "borderline");
-    cli_json_key(&j, "stable");
+    qd_json_key(&j, "stable");
     if (res->stable < 0)
-        cli_json_null(&j);
+        qd_json_null(&j);
     else
-        cli_json_bool(&j, res->stable == 1);
-    cli_json_end_object(&j);
+        qd_json_bool(&j, res->stable == 1);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
-    b->failed = b->failed || !cli_json_ok(&j);
+    b->failed = b->failed || !qd_json_ok(&j);
 }
 
 /* --scan NAME=A:B: the verdict at the state as NAME (a parameter, speed or

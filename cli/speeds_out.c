@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
-#include "json.h"
+#include "qdot/json.h"
 #include "model_cli.h"
 
 static const char *qname(const cli_speeds_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
@@ -232,180 +232,180 @@ static qd_status write_latex(const cli_speeds_view *v, qd_buf *b) {
 
 /* ---- JSON ------------------------------------------------------------------ */
 
-static qd_status json_expr(const cli_speeds_view *v, cli_json *j, const qd_expr *x, qd_buf *tmp) {
+static qd_status json_expr(const cli_speeds_view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
-    cli_json_string(j, qd_buf_str(tmp));
+    qd_json_string(j, qd_buf_str(tmp));
     return st;
 }
 
-static void json_names(cli_json *j, const char *key, const qd_expr *const *x, size_t n) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_names(qd_json *j, const char *key, const qd_expr *const *x, size_t n) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++)
-        cli_json_string(j, qd_expr_name(x[i]));
-    cli_json_end_array(j);
+        qd_json_string(j, qd_expr_name(x[i]));
+    qd_json_end_array(j);
 }
 
-static void json_header(const cli_speeds_view *v, cli_json *j) {
+static void json_header(const cli_speeds_view *v, qd_json *j) {
     const qd_model *m = v->mf->model;
-    cli_json_key(j, "model");
-    cli_json_string(j, v->mf->path);
+    qd_json_key(j, "model");
+    qd_json_string(j, v->mf->path);
     json_names(j, "coordinates", v->e->q, v->e->n);
     json_names(j, "speeds", v->e->u, v->e->m);
-    cli_json_key(j, "parameters");
-    cli_json_begin_object(j);
+    qd_json_key(j, "parameters");
+    qd_json_begin_object(j);
     for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        cli_json_key(j, qd_expr_name(qd_model_param(m, i)));
-        cli_json_number(j, cli_param_value(m, i));
+        qd_json_key(j, qd_expr_name(qd_model_param(m, i)));
+        qd_json_number(j, cli_param_value(m, i));
     }
-    cli_json_end_object(j);
-    cli_json_key(j, "method");
-    cli_json_string(j, qd_speeds_method_name(v->e->method));
+    qd_json_end_object(j);
+    qd_json_key(j, "method");
+    qd_json_string(j, qd_speeds_method_name(v->e->method));
 }
 
 /* "kinematics": [{"coordinate": "phi", "expression": "..."}, ...] */
-static qd_status json_kinematics(const cli_speeds_view *v, cli_json *j, qd_buf *tmp) {
+static qd_status json_kinematics(const cli_speeds_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    cli_json_key(j, "kinematics");
-    cli_json_begin_array(j);
+    qd_json_key(j, "kinematics");
+    qd_json_begin_array(j);
     for (size_t i = 0; i < v->e->n && st == QD_OK; i++) {
-        cli_json_begin_object(j);
-        cli_json_key(j, "coordinate");
-        cli_json_string(j, qname(v, i));
-        cli_json_key(j, "expression");
+        qd_json_begin_object(j);
+        qd_json_key(j, "coordinate");
+        qd_json_string(j, qname(v, i));
+        qd_json_key(j, "expression");
         st = json_expr(v, j, v->e->kin[i], tmp);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
     return st;
 }
 
-static qd_status json_dynamics(const cli_speeds_view *v, cli_json *j, qd_buf *tmp) {
+static qd_status json_dynamics(const cli_speeds_view *v, qd_json *j, qd_buf *tmp) {
     size_t m = v->e->m;
     qd_status st = QD_OK;
-    cli_json_key(j, "mass_matrix");
-    cli_json_begin_array(j);
+    qd_json_key(j, "mass_matrix");
+    qd_json_begin_array(j);
     for (size_t r = 0; r < m && st == QD_OK; r++) {
-        cli_json_begin_array(j);
+        qd_json_begin_array(j);
         for (size_t s = 0; s < m && st == QD_OK; s++)
             st = json_expr(v, j, v->e->M[r * m + s], tmp);
-        cli_json_end_array(j);
+        qd_json_end_array(j);
     }
-    cli_json_end_array(j);
-    cli_json_key(j, "forcing");
-    cli_json_begin_array(j);
+    qd_json_end_array(j);
+    qd_json_key(j, "forcing");
+    qd_json_begin_array(j);
     for (size_t r = 0; r < m && st == QD_OK; r++)
         st = json_expr(v, j, v->e->f[r], tmp);
-    cli_json_end_array(j);
+    qd_json_end_array(j);
     if (v->e->acc) {
-        cli_json_key(j, "rates");
-        cli_json_begin_array(j);
+        qd_json_key(j, "rates");
+        qd_json_begin_array(j);
         for (size_t r = 0; r < m && st == QD_OK; r++)
             st = json_expr(v, j, v->e->acc[r], tmp);
-        cli_json_end_array(j);
+        qd_json_end_array(j);
     }
     return st;
 }
 
 /* "constraints" (name, kind, expression, multiplier) and, when computed,
  * "multipliers" by constraint name, as for the coordinates' output. */
-static qd_status json_constraints(const cli_speeds_view *v, cli_json *j, qd_buf *tmp) {
+static qd_status json_constraints(const cli_speeds_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
-    cli_json_key(j, "constraints");
-    cli_json_begin_array(j);
+    qd_json_key(j, "constraints");
+    qd_json_begin_array(j);
     for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
         const qd_con *c = &v->e->con[k];
-        cli_json_begin_object(j);
-        cli_json_key(j, "name");
-        cli_json_string(j, c->name);
-        cli_json_key(j, "kind");
-        cli_json_string(j, cli_eom_con_kind_name(c->kind));
-        cli_json_key(j, "expression");
+        qd_json_begin_object(j);
+        qd_json_key(j, "name");
+        qd_json_string(j, c->name);
+        qd_json_key(j, "kind");
+        qd_json_string(j, cli_eom_con_kind_name(c->kind));
+        qd_json_key(j, "expression");
         st = json_expr(v, j, c->expr, tmp);
-        cli_json_key(j, "multiplier");
-        cli_json_string(j, qd_expr_name(c->lambda));
-        cli_json_end_object(j);
+        qd_json_key(j, "multiplier");
+        qd_json_string(j, qd_expr_name(c->lambda));
+        qd_json_end_object(j);
     }
-    cli_json_end_array(j);
+    qd_json_end_array(j);
     if (!v->e->mult)
         return st;
-    cli_json_key(j, "multipliers");
-    cli_json_begin_object(j);
+    qd_json_key(j, "multipliers");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
-        cli_json_key(j, v->e->con[k].name);
+        qd_json_key(j, v->e->con[k].name);
         st = json_expr(v, j, v->e->mult[k], tmp);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     return st;
 }
 
-static void json_numbers(cli_json *j, const char *key, const double *x, size_t n) {
-    cli_json_key(j, key);
-    cli_json_begin_array(j);
+static void json_numbers(qd_json *j, const char *key, const double *x, size_t n) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
     for (size_t i = 0; i < n; i++)
-        cli_json_number(j, x[i]);
-    cli_json_end_array(j);
+        qd_json_number(j, x[i]);
+    qd_json_end_array(j);
 }
 
 /* --at: "state" (coordinates, speeds, t by name), "velocities" (in the
  * order of "coordinates"), "rates" (of "speeds") and "multipliers". */
-static void json_at(const cli_speeds_view *v, cli_json *j) {
-    cli_json_key(j, "state");
-    cli_json_begin_object(j);
+static void json_at(const cli_speeds_view *v, qd_json *j) {
+    qd_json_key(j, "state");
+    qd_json_begin_object(j);
     for (size_t k = 0; k < v->e->n + v->e->m + 1; k++) {
         size_t i = state_slot(v, k);
-        cli_json_key(j, qd_expr_name(v->st->syms[i]));
-        cli_json_number(j, v->st->vals[i]);
+        qd_json_key(j, qd_expr_name(v->st->syms[i]));
+        qd_json_number(j, v->st->vals[i]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
     json_numbers(j, "velocities", v->qd, v->e->n);
     json_numbers(j, "rates", v->ud, v->e->m);
     if (!v->lambda && !v->multipliers)
         return;
-    cli_json_key(j, "multipliers");
-    cli_json_begin_object(j);
+    qd_json_key(j, "multipliers");
+    qd_json_begin_object(j);
     for (size_t k = 0; v->lambda && k < v->e->ncon; k++) {
-        cli_json_key(j, v->e->con[k].name);
-        cli_json_number(j, v->lambda[k]);
+        qd_json_key(j, v->e->con[k].name);
+        qd_json_number(j, v->lambda[k]);
     }
-    cli_json_end_object(j);
+    qd_json_end_object(j);
 }
 
 static qd_status write_json(const cli_speeds_view *v, qd_buf *b) {
     qd_buf tmp = QD_BUF_INIT;
-    cli_json j;
-    cli_json_init(&j, b);
-    cli_json_begin_object(&j);
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
     json_header(v, &j);
     if (v->st) {
         json_at(v, &j);
-        cli_json_end_object(&j);
+        qd_json_end_object(&j);
         qd_buf_puts(b, "\n");
-        return cli_json_ok(&j) ? QD_OK : b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+        return qd_json_ok(&j) ? QD_OK : b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
     }
     qd_status st = json_kinematics(v, &j, &tmp);
     if (st == QD_OK && v->e->T) {
-        cli_json_key(&j, "T");
+        qd_json_key(&j, "T");
         st = json_expr(v, &j, v->e->T, &tmp);
     }
     if (st == QD_OK)
         st = json_dynamics(v, &j, &tmp);
     if (st == QD_OK && v->e->S) {
-        cli_json_key(&j, "S");
+        qd_json_key(&j, "S");
         st = json_expr(v, &j, v->e->S, &tmp);
     }
     if (st == QD_OK && v->e->ncon)
         st = json_constraints(v, &j, &tmp);
     if (v->multipliers && !v->e->ncon) {
-        cli_json_key(&j, "multipliers");
-        cli_json_begin_object(&j);
-        cli_json_end_object(&j);
+        qd_json_key(&j, "multipliers");
+        qd_json_begin_object(&j);
+        qd_json_end_object(&j);
     }
-    cli_json_end_object(&j);
+    qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);
-    if (st == QD_OK && !cli_json_ok(&j))
+    if (st == QD_OK && !qd_json_ok(&j))
         st = b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
     return st;
 }

@@ -28,32 +28,32 @@ const char *cli_witness_how(const qd_zero_result *z, char *buf, size_t size) {
     return buf;
 }
 
-void cli_witness_json(cli_json *j, const qd_zero_result *z) {
-    cli_json_key(j, "certainty");
-    cli_json_string(j, qd_zero_kind_name(z->kind));
-    cli_json_key(j, "witness");
+void cli_witness_json(qd_json *j, const qd_zero_result *z) {
+    qd_json_key(j, "certainty");
+    qd_json_string(j, qd_zero_kind_name(z->kind));
+    qd_json_key(j, "witness");
     if (z->kind == QD_ZERO_NONZERO) {
-        cli_json_begin_object(j);
-        cli_json_key(j, "point");
-        cli_json_begin_object(j);
+        qd_json_begin_object(j);
+        qd_json_key(j, "point");
+        qd_json_begin_object(j);
         for (size_t i = 0; i < z->witness.n; i++) {
-            cli_json_key(j, qd_expr_name(z->witness.sym[i]));
-            cli_json_number(j, z->witness.at[i]);
+            qd_json_key(j, qd_expr_name(z->witness.sym[i]));
+            qd_json_number(j, z->witness.at[i]);
         }
-        cli_json_end_object(j);
-        cli_json_key(j, "value");
-        cli_json_number(j, z->witness.value);
-        cli_json_key(j, "radius");
-        cli_json_number(j, z->witness.radius);
-        cli_json_end_object(j);
+        qd_json_end_object(j);
+        qd_json_key(j, "value");
+        qd_json_number(j, z->witness.value);
+        qd_json_key(j, "radius");
+        qd_json_number(j, z->witness.radius);
+        qd_json_end_object(j);
     } else {
-        cli_json_null(j);
+        qd_json_null(j);
     }
-    cli_json_key(j, "points");
+    qd_json_key(j, "points");
     if (z->kind == QD_ZERO_NUMERIC)
-        cli_json_number(j, z->points);
+        qd_json_number(j, z->points);
     else
-        cli_json_null(j);
-    cli_json_key(j, "bits");
-    cli_json_number(j, z->bits);
+        qd_json_null(j);
+    qd_json_key(j, "bits");
+    qd_json_number(j, z->bits);
 }

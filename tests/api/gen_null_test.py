@@ -27,6 +27,8 @@ NULLABLE = {
     'qd_action_at': {'opts'},
     'qd_action_of_sep': {'opts'},
     'qd_canonical_check': {'t'},
+    'qd_json_string': {'s'},
+    'qd_json_expr': {'x'},
     'qd_codegen_c': {'h_text'},
     'qd_codegen_speeds_c': {'h_text'},
     'qd_ctx_error_about': {'hint', 'name'},

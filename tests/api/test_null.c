@@ -30,6 +30,7 @@
 #include "qdot/hj.h"
 #include "qdot/impulse.h"
 #include "qdot/integrals.h"
+#include "qdot/json.h"
 #include "qdot/lyapunov.h"
 #include "qdot/mech.h"
 #include "qdot/metric.h"
@@ -1520,6 +1521,75 @@ static void null_integrals(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_integrals_check(F.ctx, NULL, "q", F.q, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_json(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_json_init */
+    /* j NULL */
+    qd_json_init(NULL, &F.buf);
+    reset(&F);
+    /* out NULL */
+    qd_json_init(NULL, NULL);
+    reset(&F);
+    /* ---- qd_json_begin_object */
+    /* j NULL */
+    qd_json_begin_object(NULL);
+    reset(&F);
+    /* ---- qd_json_end_object */
+    /* j NULL */
+    qd_json_end_object(NULL);
+    reset(&F);
+    /* ---- qd_json_begin_array */
+    /* j NULL */
+    qd_json_begin_array(NULL);
+    reset(&F);
+    /* ---- qd_json_end_array */
+    /* j NULL */
+    qd_json_end_array(NULL);
+    reset(&F);
+    /* ---- qd_json_key */
+    /* j NULL */
+    qd_json_key(NULL, "q");
+    reset(&F);
+    /* key NULL */
+    qd_json_key(NULL, NULL);
+    reset(&F);
+    /* ---- qd_json_string */
+    /* j NULL */
+    qd_json_string(NULL, "q");
+    reset(&F);
+    /* ---- qd_json_number */
+    /* j NULL */
+    assert_true(qd_json_number(NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_json_bool */
+    /* j NULL */
+    qd_json_bool(NULL, false);
+    reset(&F);
+    /* ---- qd_json_null */
+    /* j NULL */
+    qd_json_null(NULL);
+    reset(&F);
+    /* ---- qd_json_expr */
+    /* j NULL */
+    qd_json_expr(NULL, F.ctx, F.q);
+    reset(&F);
+    /* ctx NULL */
+    qd_json_expr(NULL, NULL, F.q);
+    reset(&F);
+    /* ---- qd_json_ok */
+    /* j NULL */
+    assert_true(qd_json_ok(NULL) == 0);
+    reset(&F);
+    /* ---- qd_json_why */
+    /* j NULL */
+    assert_null(qd_json_why(NULL));
     reset(&F);
     teardown(&F);
 }
@@ -4006,6 +4076,7 @@ int main(void)
         cmocka_unit_test(null_hj),
         cmocka_unit_test(null_impulse),
         cmocka_unit_test(null_integrals),
+        cmocka_unit_test(null_json),
         cmocka_unit_test(null_lyapunov),
         cmocka_unit_test(null_mech),
         cmocka_unit_test(null_metric),

@@ -1,5 +1,5 @@
 /*
- * tests/cli/test_json_cli.c - the CLI's JSON writer (cli/json.c) says why a
+ * tests/cli/test_json_cli.c - the CLI's JSON writer (src/render/json.c) says why a
  * document could not be written (issue 30): a buffer that ran out of memory
  * is "out of memory", not "a non-finite number" as it once was; a NaN is a
  * non-finite number.
@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "json.h"
+#include "qdot/json.h"
 
 /* An allocator that refuses everything: the first append fails. */
 static void *no_malloc(void *user, size_t size) { (void)user; (void)size; return NULL; }
@@ -28,41 +28,41 @@ static void test_out_of_memory(void **state) {
     const qd_allocator none = {no_malloc, no_realloc, plain_free, NULL};
     qd_buf b = QD_BUF_INIT;
     b.alloc = &none;
-    cli_json j;
-    cli_json_init(&j, &b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "t");
-    assert_true(cli_json_number(&j, 1.5));
-    cli_json_end_object(&j);
-    assert_false(cli_json_ok(&j));
-    assert_string_equal(cli_json_why(&j), "out of memory");
+    qd_json j;
+    qd_json_init(&j, &b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "t");
+    assert_true(qd_json_number(&j, 1.5));
+    qd_json_end_object(&j);
+    assert_false(qd_json_ok(&j));
+    assert_string_equal(qd_json_why(&j), "out of memory");
     qd_buf_free(&b);
 }
 
 static void test_nonfinite(void **state) {
     (void)state;
     qd_buf b = QD_BUF_INIT;
-    cli_json j;
-    cli_json_init(&j, &b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "t");
-    assert_false(cli_json_number(&j, NAN));
-    cli_json_end_object(&j);
-    assert_false(cli_json_ok(&j));
-    assert_non_null(strstr(cli_json_why(&j), "non-finite"));
+    qd_json j;
+    qd_json_init(&j, &b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "t");
+    assert_false(qd_json_number(&j, NAN));
+    qd_json_end_object(&j);
+    assert_false(qd_json_ok(&j));
+    assert_non_null(strstr(qd_json_why(&j), "non-finite"));
     qd_buf_free(&b);
 }
 
 static void test_whole(void **state) {
     (void)state;
     qd_buf b = QD_BUF_INIT;
-    cli_json j;
-    cli_json_init(&j, &b);
-    cli_json_begin_object(&j);
-    cli_json_key(&j, "t");
-    assert_true(cli_json_number(&j, 2));
-    cli_json_end_object(&j);
-    assert_true(cli_json_ok(&j));
+    qd_json j;
+    qd_json_init(&j, &b);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "t");
+    assert_true(qd_json_number(&j, 2));
+    qd_json_end_object(&j);
+    assert_true(qd_json_ok(&j));
     assert_non_null(strstr(qd_buf_str(&b), "\"t\""));
     qd_buf_free(&b);
 }

@@ -1,18 +1,21 @@
 /*
- * cli/json.c - the JSON writer of json.h (RFC 8259: strings, numbers,
+ * src/render/json.c - the JSON writer of qdot/json.h (RFC 8259: strings, numbers,
  * objects, arrays, true, false, null).
  */
-#include "json.h"
+#include "qdot/json.h"
+
+#include "../base/args.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-void cli_json_init(cli_json *j, qd_buf *out) {
-    *j = (cli_json){.out = out};
+void qd_json_init(qd_json *j, qd_buf *out) {
+    QD_ARGS(, j && out);
+    *j = (qd_json){.out = out};
 }
 
-static void indent(cli_json *j) {
+static void indent(qd_json *j) {
     qd_buf_puts(j->out, "\n");
     for (unsigned i = 0; i < j->depth; i++)
         qd_buf_puts(j->out, "  ");
@@ -20,7 +23,7 @@ static void indent(cli_json *j) {
 
 /* Separator before a value (or a key): a comma after an earlier item, and a
  * new line inside objects.  A value right after its key needs neither. */
-static void before_item(cli_json *j) {
+static void before_item(qd_json *j) {
     if (j->after_key) {
         j->after_key = false;
         return;
@@ -35,7 +38,7 @@ static void before_item(cli_json *j) {
         indent(j);
 }
 
-static void open_container(cli_json *j, const char *bracket, bool object) {
+static void open_container(qd_json *j, const char *bracket, bool object) {
     before_item(j);
     if (j->depth >= QD_JSON_MAX_DEPTH) {
         j->failed = true;
@@ -48,7 +51,7 @@ static void open_container(cli_json *j, const char *bracket, bool object) {
     j->depth++;
 }
 
-static void close_container(cli_json *j, const char *bracket) {
+static void close_container(qd_json *j, const char *bracket) {
     if (j->depth == 0) {
         j->failed = true;
         return;
@@ -61,10 +64,14 @@ static void close_container(cli_json *j, const char *bracket) {
     qd_buf_puts(j->out, bracket);
 }
 
-void cli_json_begin_object(cli_json *j) { open_container(j, "{", true); }
-void cli_json_end_object(cli_json *j) { close_container(j, "}"); }
-void cli_json_begin_array(cli_json *j) { open_container(j, "[", false); }
-void cli_json_end_array(cli_json *j) { close_container(j, "]"); }
+void qd_json_begin_object(qd_json *j) {
+    QD_ARGS(, j); open_container(j, "{", true); }
+void qd_json_end_object(qd_json *j) {
+    QD_ARGS(, j); close_container(j, "}"); }
+void qd_json_begin_array(qd_json *j) {
+    QD_ARGS(, j); open_container(j, "[", false); }
+void qd_json_end_array(qd_json *j) {
+    QD_ARGS(, j); close_container(j, "]"); }
 
 static void put_string(qd_buf *b, const char *s) {
     qd_buf_puts(b, "\"");
@@ -87,19 +94,26 @@ static void put_string(qd_buf *b, const char *s) {
     qd_buf_puts(b, "\"");
 }
 
-void cli_json_key(cli_json *j, const char *key) {
+void qd_json_key(qd_json *j, const char *key) {
+    QD_ARGS(, j && key);
     before_item(j);
     put_string(j->out, key);
     qd_buf_puts(j->out, ": ");
     j->after_key = true;
 }
 
-void cli_json_string(cli_json *j, const char *s) {
+void qd_json_string(qd_json *j, const char *s) {
+    QD_ARGS(, j);
+    if (!s) {
+        qd_json_null(j);
+        return;
+    }
     before_item(j);
     put_string(j->out, s);
 }
 
-bool cli_json_number(cli_json *j, double v) {
+bool qd_json_number(qd_json *j, double v) {
+    QD_ARGS(false, j);
     if (!isfinite(v)) {
         j->failed = j->nonfinite = true;
         return false;
@@ -114,34 +128,39 @@ bool cli_json_number(cli_json *j, double v) {
     return true;
 }
 
-void cli_json_bool(cli_json *j, bool v) {
+void qd_json_bool(qd_json *j, bool v) {
+    QD_ARGS(, j);
     before_item(j);
     qd_buf_puts(j->out, v ? "true" : "false");
 }
 
-void cli_json_null(cli_json *j) {
+void qd_json_null(qd_json *j) {
+    QD_ARGS(, j);
     before_item(j);
     qd_buf_puts(j->out, "null");
 }
 
-void cli_json_expr(cli_json *j, qd_ctx *ctx, const qd_expr *x) {
+void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x) {
+    QD_ARGS(, j && ctx);
     if (!x) {
-        cli_json_null(j);
+        qd_json_null(j);
         return;
     }
     qd_buf s = QD_BUF_INIT;
     qd_print(ctx, x, QD_FMT_TEXT, &s);
     if (s.failed)
         j->failed = j->nomem = true;
-    cli_json_string(j, qd_buf_str(&s));
+    qd_json_string(j, qd_buf_str(&s));
     qd_buf_free(&s);
 }
 
-bool cli_json_ok(const cli_json *j) {
+bool qd_json_ok(const qd_json *j) {
+    QD_ARGS(false, j);
     return !j->failed && !j->out->failed && j->depth == 0 && !j->after_key;
 }
 
-const char *cli_json_why(const cli_json *j) {
+const char *qd_json_why(const qd_json *j) {
+    QD_ARGS(NULL, j);
     if (j->out->failed || j->nomem)
         return "out of memory";
     if (j->nonfinite)

@@ -1,0 +1,62 @@
+/*
+ * qdot/json.h - a small JSON writer over qd_buf: the one writer of every
+ * JSON document qdot produces (the program's --format json, Python's data).
+ *
+ * The writer keeps the commas and the indentation: objects put one member on
+ * a line, arrays stay on one line.  Strings are escaped (quotes, backslashes,
+ * control characters); numbers are written with %.17g so that they read back
+ * to the same double.  JSON has no NaN or infinity, so a non-finite number is
+ * refused: the writer then marks itself failed and the caller must not print
+ * the document (qd_json_ok).
+ */
+#ifndef QDOT_JSON_H
+#define QDOT_JSON_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "print.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define QD_JSON_MAX_DEPTH 32
+
+typedef struct qd_json {
+    qd_buf *out;
+    unsigned depth;
+    uint32_t has_items;  /* bit d: the container at depth d has a value already */
+    uint32_t is_object;  /* bit d: the container at depth d is an object */
+    bool after_key;      /* the next value completes a member */
+    bool failed;         /* a non-finite number or nesting beyond QD_JSON_MAX_DEPTH */
+    bool nonfinite;      /* ... because of a non-finite number */
+    bool nomem;          /* an expression could not be printed for want of memory */
+} qd_json;
+
+QD_API void qd_json_init(qd_json *j, qd_buf *out);
+QD_API void qd_json_begin_object(qd_json *j);
+QD_API void qd_json_end_object(qd_json *j);
+QD_API void qd_json_begin_array(qd_json *j);
+QD_API void qd_json_end_array(qd_json *j);
+QD_API void qd_json_key(qd_json *j, const char *key);
+QD_API void qd_json_string(qd_json *j, const char *s); /* null for NULL */
+QD_API bool qd_json_number(qd_json *j, double v); /* false for NaN and infinities */
+QD_API void qd_json_bool(qd_json *j, bool v);
+QD_API void qd_json_null(qd_json *j);
+/* An expression as a string in the text format; null for NULL. */
+QD_API void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x);
+/* The document is complete, nothing was refused and no memory ran out. */
+QD_API bool qd_json_ok(const qd_json *j);
+/* Why the document is not ok: "out of memory", "a non-finite number (JSON
+ * cannot hold it)" or "an unfinished or too deeply nested document". */
+QD_API const char *qd_json_why(const qd_json *j);
+
+#ifdef __cplusplus
+}
+#endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns false or NULL, as its return type has it; a
+ * void function returns.  NULL is an accepted value, as documented at the
+ * function, for: qd_json_string (s, written as null), qd_json_expr (x). */
+#endif
