@@ -3793,6 +3793,39 @@ static void null_stability(void **state)
     /* set NULL */
     qd_steady_set_free(NULL);
     reset(&F);
+    /* ---- qd_steady_derive_named */
+    /* ctx NULL */
+    assert_null(qd_steady_derive_named(NULL, F.model, F.eom, "q", "q", false));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_steady_derive_named(F.ctx, NULL, F.eom, "q", "q", false));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_steady_derive_named(F.ctx, F.model, NULL, "q", "q", false));
+    reset(&F);
+    /* field NULL */
+    assert_null(qd_steady_derive_named(F.ctx, F.model, F.eom, NULL, "q", false));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_steady_derive_named(F.ctx, F.model, F.eom, "q", NULL, false));
+    reset(&F);
+    /* ---- qd_steady_given_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(NULL, NULL, F.model, NULL, (qd_steady_given *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(F.ctx, NULL, F.model, NULL, (qd_steady_given *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(F.ctx, NULL, NULL, NULL, (qd_steady_given *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(F.ctx, NULL, F.model, NULL, NULL));
+    reset(&F);
+    /* ---- qd_steady_given_free */
+    /* g NULL */
+    qd_steady_given_free(NULL);
+    reset(&F);
     /* ---- qd_stability_analyze */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_stability_analyze(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_stability *)(void *)F.blob));
@@ -3812,6 +3845,16 @@ static void null_stability(void **state)
     /* ---- qd_stability_free */
     /* st NULL */
     qd_stability_free(NULL);
+    reset(&F);
+    /* ---- qd_stability_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_print(F.ctx, NULL, false, NULL));
     reset(&F);
     /* ---- qd_stability_scan */
     /* ctx NULL */
