@@ -9,6 +9,7 @@
 
 #include <stdbool.h>
 #include <stdio.h>
+#include "qdot/print.h"
 
 /* path opened for writing ("w"), or NULL with the error printed and *rc
  * set: a directory or a path that cannot be created is bad input (2). */
@@ -27,6 +28,11 @@ bool cli_out_write(FILE *f, const void *data, size_t len, int *err);
  * the errno kept by cli_out_write, or 0).  NAME is "standard output" for
  * stdout.  Returns 0 (QD_EXIT_OK) or 1 (QD_EXIT_FAIL). */
 int cli_out_close(FILE *f, const char *name, int err);
+
+/* b written to path (-o/--out FILE; NULL or "-": standard output), checked
+ * as above, and freed.  Returns the exit status (0, 1 a failed write, 2 a
+ * path that cannot be opened). */
+int cli_out_emit(qd_buf *b, const char *path);
 
 /* Close standard output once, at the end of main: exit status 1 with the
  * message when anything written to it was lost; else rc. */
