@@ -39,7 +39,9 @@ int cli_diag_opts(const qd_ctx *ctx, const cli_spec *spec, const void *args) {
     const qd_diag *d = qd_ctx_diag(ctx);
     const char *text = NULL;
     const cli_opt *o = NULL;
-    if (d->subject == QD_SUBJECT_NONE && d->located && d->name[0]) {
+    /* located records about text have subject TEXT (qd_ctx_error_at) */
+    if ((d->subject == QD_SUBJECT_NONE || d->subject == QD_SUBJECT_TEXT) && d->located &&
+        d->name[0]) {
         o = find(spec->opts, 0, args, d, &text);
         for (const cli_group *g = spec->groups; !o && g && g->opts; g++)
             o = find(g->opts, g->base, args, d, &text);

@@ -9,7 +9,7 @@
 #include "cli.h"
 
 /* The context's error: a record about a field of spec's table (subject
- * QD_SUBJECT_NONE, name "t_end" for --t-end) located in the option's text
+ * QD_SUBJECT_NONE or TEXT, name "t_end" for --t-end) located in the option's text
  * is shown as "--t-end:1:5: error: ..." with that text and a caret (a list
  * option: the item the record's index names); any other as cli_diag_ctx.
  * args is the struct the table fills.  Returns the exit status. */

@@ -10,7 +10,6 @@
  * is qdot/state.h's work (issue 31).
  */
 #include "base/args.h"
-#include "base/diag.h"
 #include "orb.h"
 
 #include <ctype.h>
@@ -102,7 +101,7 @@ static qd_status unknown(qd_ctx *ctx, const ost *s, const char *field, const cha
             snprintf(names[i], sizeof names[i], "%s", qd_expr_name(s->syms[i]));
         ptr[i] = names[i];
     }
-    const char *near = qd__diag_nearest(text + a, b - a, ptr, s->n);
+    const char *near = qd_nearest_name(text + a, b - a, ptr, s->n);
     char hint[200], word[160];
     snprintf(hint, sizeof hint, "did you mean '%s'?", near ? near : "");
     snprintf(word, sizeof word, "%.*s", (int)(b - a), text + a);
@@ -144,6 +143,9 @@ static qd_status split(qd_ctx *ctx, const char *field, const char *text, size_t 
 
 /* The at text: each NAME=VALUE into its slot. */
 static qd_status read_at(qd_ctx *ctx, const qd_model *m, const char *text, ost *s) {
+    bool *given = calloc(s->n, sizeof *given);
+    if (!given)
+        return nomem(ctx);
     qd_status st = QD_OK;
     for (size_t i = 0; st == QD_OK && text[i];) {
         size_t end = item_end(text, i), a = i, b = end, na, nb, va, vb;
@@ -153,11 +155,19 @@ static qd_status read_at(qd_ctx *ctx, const qd_model *m, const char *text, ost *
             const char *x = qd_model_independent(m); /* `independent x`: x is t */
             if (k == s->n && x && strlen(x) == nb - na && !strncmp(x, text + na, nb - na))
                 k = 2 * s->nq;
-            st = k == s->n ? unknown(ctx, s, "at", text, na, nb)
-                           : qd_model_number_field(ctx, m, "at", text, va, vb - va, &s->vals[k]);
+            char word[160];
+            snprintf(word, sizeof word, "%.*s", (int)(nb - na), text + na);
+            st = k == s->n    ? unknown(ctx, s, "at", text, na, nb)
+                 : given[k]   ? refuse(ctx, "at", text, na, nb - na, NULL,
+                                       "'%s' is given twice", word)
+                              : qd_model_number_field(ctx, m, "at", text, va, vb - va,
+                                                      &s->vals[k]);
+            if (k < s->n)
+                given[k] = true;
         }
         i = text[end] ? end + 1 : end;
     }
+    free(given);
     return st;
 }
 
