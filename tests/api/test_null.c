@@ -52,6 +52,7 @@
 #include "qdot/status.h"
 #include "qdot/sweep.h"
 #include "qdot/symmetry.h"
+#include "qdot/version.h"
 #include "qdot/zvc.h"
 
 #if defined(__GNUC__)
@@ -4201,6 +4202,16 @@ static void null_symmetry(void **state)
     teardown(&F);
 }
 
+static void null_version(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_version */
+    /* no pointer argument */
+    teardown(&F);
+}
+
 static void null_zvc(void **state)
 {
     (void)state;
@@ -4289,6 +4300,7 @@ int main(void)
         cmocka_unit_test(null_status),
         cmocka_unit_test(null_sweep),
         cmocka_unit_test(null_symmetry),
+        cmocka_unit_test(null_version),
         cmocka_unit_test(null_zvc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
