@@ -16,8 +16,6 @@ typedef struct cl_args {
     bool merge, elastic;
 } cl_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 #define A(field) offsetof(cl_args, field)
 static const cli_opt opts[] = {
     {"--particle", NULL, CLI_LIST, A(particle), "\"m=M, v=(vx, vy, vz)\"",
@@ -37,9 +35,8 @@ static const cli_opt opts[] = {
      "the threshold for these products on particle 2 at rest", NULL, NULL},
     {"--decay", NULL, CLI_TEXT, A(decay), "\"m1, m2\"", "one particle's two-body decay", NULL,
      NULL},
-    {"--format", NULL, CLI_CHOICE, A(format), "FORMAT", "text or json", formats, NULL},
-    {"--out", "-o", CLI_TEXT, A(out), "FILE",
-     "write the result to FILE (default: standard output)", NULL, NULL},
+    CLI_OPT_FORMAT(cl_args, format),
+    CLI_OPT_OUT(cl_args, out),
     {0},
 };
 #undef A
@@ -67,7 +64,7 @@ int cli_cmd_collide(int argc, char **argv) {
         if (st == QD_OK)
             st = qd_collide_run(ctx, in, out);
         if (st == QD_OK)
-            st = qd_collide_render(ctx, in, out, a.format && a.format[0] == 'j', &b);
+            st = qd_collide_render(ctx, in, out, cli_json(a.format), &b);
         rc = st == QD_OK ? cli_out_emit(&b, a.out) : cli_diag_opts(ctx, &spec, &a);
         qd_buf_free(&b);
     }

@@ -14,8 +14,6 @@ typedef struct lz_args {
     const char *format, *out;
 } lz_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 #define T(field) offsetof(lz_args, t.field)
 static const cli_opt opts[] = {
     {"--frame", NULL, CLI_TEXT, T(frame), "\"Vx, Vy, Vz\"",
@@ -37,10 +35,8 @@ static const cli_opt opts[] = {
     {"--proper-time", NULL, CLI_TEXT, T(proper_time), "\"vx(t), vy(t), vz(t)\"",
      "the proper time along this worldline (with --t)", NULL, NULL},
     {"--t", NULL, CLI_TEXT, T(t), "T0:T1", "the span of --proper-time", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(lz_args, format), "FORMAT", "text or json",
-     formats, NULL},
-    {"--out", "-o", CLI_TEXT, offsetof(lz_args, out), "FILE",
-     "write the result to FILE (default: standard output)", NULL, NULL},
+    CLI_OPT_FORMAT(lz_args, format),
+    CLI_OPT_OUT(lz_args, out),
     {0},
 };
 #undef T
@@ -66,7 +62,7 @@ int cli_cmd_lorentz(int argc, char **argv) {
     if (st == QD_OK)
         st = qd_lorentz_run(ctx, &in, &out);
     if (st == QD_OK)
-        st = qd_lorentz_render(ctx, &in, &out, a.format && a.format[0] == 'j', &b);
+        st = qd_lorentz_render(ctx, &in, &out, cli_json(a.format), &b);
     rc = st == QD_OK ? cli_out_emit(&b, a.out) : cli_diag_opts(ctx, &spec, &a);
     qd_buf_free(&b);
     qd_ctx_free(ctx);

@@ -22,8 +22,6 @@ typedef struct orbit_args {
     bool equation;
 } orbit_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 #define A(field) offsetof(orbit_args, field)
 static const cli_opt opts[] = {
     {"--ignore", NULL, CLI_TEXT, A(ignore), "Q[,Q...]",
@@ -38,9 +36,8 @@ static const cli_opt opts[] = {
     {"--orbit", NULL, CLI_FLAG, A(equation), NULL,
      "also the orbit equation: the conic, else the quadrature", NULL, NULL},
     {"--set", NULL, CLI_LIST, A(sets), "NAME=VALUE", "a parameter's value", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, A(format), "FORMAT", "text or json", formats, NULL},
-    {"--out", "-o", CLI_TEXT, A(out), "FILE",
-     "write the result to FILE (default: standard output)", NULL, NULL},
+    CLI_OPT_FORMAT(orbit_args, format),
+    CLI_OPT_OUT(orbit_args, out),
     {0},
 };
 #undef A
@@ -74,7 +71,7 @@ static int run(orbit_run *r, const orbit_args *a, const char *file) {
     qd_status st = qd_orbit_solve_text(r->ctx, r->o, r->mf.model, &a->t, &r->r);
     if (st == QD_OK)
         st = qd_orbit_render(r->ctx, r->o, &r->r, r->mf.path, a->equation,
-                             a->format && a->format[0] == 'j', &b);
+                             cli_json(a->format), &b);
     rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(r->ctx, &spec, a);
     qd_buf_free(&b);
     return rc;

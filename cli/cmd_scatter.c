@@ -17,8 +17,6 @@ typedef struct sc_args {
     cli_list sets;
 } sc_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 #define T(field) offsetof(sc_args, t.field)
 static const cli_opt opts[] = {
     {"--energy", NULL, CLI_TEXT, T(energy), "E", "the energy at infinity, E > 0", NULL, NULL},
@@ -36,10 +34,8 @@ static const cli_opt opts[] = {
      "the cyclic angle, when two coordinates are cyclic", NULL, NULL},
     {"--set", NULL, CLI_LIST, offsetof(sc_args, sets), "NAME=VALUE", "a parameter's value",
      NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(sc_args, format), "FORMAT", "text or json", formats,
-     NULL},
-    {"--out", "-o", CLI_TEXT, offsetof(sc_args, out), "FILE",
-     "write the result to FILE (default: standard output)", NULL, NULL},
+    CLI_OPT_FORMAT(sc_args, format),
+    CLI_OPT_OUT(sc_args, out),
     {0},
 };
 #undef T
@@ -63,7 +59,7 @@ static int run(qd_ctx *ctx, const sc_args *a, const char *file, cli_model_file *
     if (st == QD_OK)
         st = qd_scatter_answer_query(ctx, *s, &q, &ans);
     if (st == QD_OK)
-        st = qd_scatter_render(ctx, *s, &ans, mf->path, a->format && a->format[0] == 'j', &b);
+        st = qd_scatter_render(ctx, *s, &ans, mf->path, cli_json(a->format), &b);
     rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(ctx, &spec, a);
     qd_buf_free(&b);
     return rc;

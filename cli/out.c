@@ -84,6 +84,12 @@ int cli_out_close(FILE *f, const char *name, int err) {
     return bad ? QD_EXIT_FAIL : QD_EXIT_OK;
 }
 
+const char *const cli_formats_text_json[] = {"text", "json", NULL};
+
+bool cli_json(const char *format) {
+    return format && strcmp(format, "json") == 0;
+}
+
 int cli_out_emit(qd_buf *b, const char *path) {
     int rc = QD_EXIT_OK, err = 0;
     bool to_file = path && strcmp(path, "-") != 0;

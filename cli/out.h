@@ -34,6 +34,18 @@ int cli_out_close(FILE *f, const char *name, int err);
  * path that cannot be opened). */
 int cli_out_emit(qd_buf *b, const char *path);
 
+/* The two options of every command that prints one result: --format
+ * text|json (json: the field is "json") and -o/--out FILE, as table
+ * entries for a struct type with const char * fields. */
+extern const char *const cli_formats_text_json[]; /* "text", "json", NULL */
+#define CLI_OPT_FORMAT(type, field)                                                          \
+    {"--format", NULL, CLI_CHOICE, offsetof(type, field), "FORMAT", "text or json",         \
+     cli_formats_text_json, NULL}
+#define CLI_OPT_OUT(type, field)                                                             \
+    {"--out", "-o", CLI_TEXT, offsetof(type, field), "FILE",                                \
+     "write the result to FILE (default: standard output)", NULL, NULL}
+bool cli_json(const char *format); /* format is "json" */
+
 /* Close standard output once, at the end of main: exit status 1 with the
  * message when anything written to it was lost; else rc. */
 int cli_close_stdout(int rc);
