@@ -84,6 +84,24 @@ int cli_out_close(FILE *f, const char *name, int err) {
     return bad ? QD_EXIT_FAIL : QD_EXIT_OK;
 }
 
+const char *const cli_formats_text_json[] = {"text", "json", NULL};
+
+bool cli_json(const char *format) {
+    return format && strcmp(format, "json") == 0;
+}
+
+int cli_out_emit(qd_buf *b, const char *path) {
+    int rc = QD_EXIT_OK, err = 0;
+    bool to_file = path && strcmp(path, "-") != 0;
+    FILE *f = to_file ? cli_out_open(path, &rc) : stdout;
+    if (f) {
+        cli_out_write(f, qd_buf_str(b), b->len, &err);
+        rc = cli_out_close(f, to_file ? path : "standard output", err);
+    }
+    qd_buf_free(b);
+    return rc;
+}
+
 int cli_close_stdout(int rc) {
     /* as gnulib's close_stdout: a stdout closed before qdot ran (>&-) is
      * an error only when something was to be written to it */

@@ -9,6 +9,7 @@
 
 #include <stdbool.h>
 #include <stdio.h>
+#include "qdot/print.h"
 
 /* path opened for writing ("w"), or NULL with the error printed and *rc
  * set: a directory or a path that cannot be created is bad input (2). */
@@ -27,6 +28,23 @@ bool cli_out_write(FILE *f, const void *data, size_t len, int *err);
  * the errno kept by cli_out_write, or 0).  NAME is "standard output" for
  * stdout.  Returns 0 (QD_EXIT_OK) or 1 (QD_EXIT_FAIL). */
 int cli_out_close(FILE *f, const char *name, int err);
+
+/* b written to path (-o/--out FILE; NULL or "-": standard output), checked
+ * as above, and freed.  Returns the exit status (0, 1 a failed write, 2 a
+ * path that cannot be opened). */
+int cli_out_emit(qd_buf *b, const char *path);
+
+/* The two options of every command that prints one result: --format
+ * text|json (json: the field is "json") and -o/--out FILE, as table
+ * entries for a struct type with const char * fields. */
+extern const char *const cli_formats_text_json[]; /* "text", "json", NULL */
+#define CLI_OPT_FORMAT(type, field)                                                          \
+    {"--format", NULL, CLI_CHOICE, offsetof(type, field), "FORMAT", "text or json",         \
+     cli_formats_text_json, NULL}
+#define CLI_OPT_OUT(type, field)                                                             \
+    {"--out", "-o", CLI_TEXT, offsetof(type, field), "FILE",                                \
+     "write the result to FILE (default: standard output)", NULL, NULL}
+bool cli_json(const char *format); /* format is "json" */
 
 /* Close standard output once, at the end of main: exit status 1 with the
  * message when anything written to it was lost; else rc. */

@@ -343,6 +343,12 @@ QD_API const qd_expr *qd_model_contact_normal_scale(const qd_model *m, size_t i)
  * with the error record located in text.  ctx NULL: QD_ERR_ARG and
  * nothing recorded; m, text or out NULL: QD_ERR_ARG. */
 QD_API qd_status qd_model_number(qd_ctx *ctx, const qd_model *m, const char *text, double *out);
+/* The same for the value text[start, start + len) of an option's field
+ * (qd_diag.name = field, subject QD_SUBJECT_NONE, hint kept), its error
+ * located in the whole of text: what a reader of "m1, m2" or "p_x=VALUE"
+ * calls for each part, so a caret stands under the part at fault. */
+QD_API qd_status qd_model_number_field(qd_ctx *ctx, const qd_model *m, const char *field,
+                                       const char *text, size_t start, size_t len, double *out);
 
 #ifdef __cplusplus
 }

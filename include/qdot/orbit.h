@@ -152,6 +152,32 @@ QD_API qd_status qd_orbit_period(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_
 QD_API const qd_expr *qd_orbit_equation(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
                                         const qd_expr **lhs);
 
+/* ---- the analysis from text, and its output (issue 31) -------------------
+ *
+ * What `qdot orbit` reads: the state is the model's `initial` values (0
+ * where it gives none), then at, "r=r0, r'=0, theta'=1" (a coordinate, a
+ * velocity with a prime, t or a parameter; values constant expressions in
+ * the parameters); momentum, "p_theta=3" (momenta of ignored coordinates,
+ * used instead of their values at the state); energy, an expression in the
+ * parameters and the state's values ("m*g*a").  Each may be NULL.  Errors
+ * name the field (qd_diag.name "at", "momentum", "energy", subject
+ * QD_SUBJECT_NONE) and are located in its text; an unknown name gets "did
+ * you mean"; then qd_orbit_solve's errors.  *out is zeroed first (free it
+ * with qd_orbit_result_free also after an error). */
+typedef struct qd_orbit_text {
+    const char *at, *momentum, *energy;
+} qd_orbit_text;
+QD_API qd_status qd_orbit_solve_text(qd_ctx *ctx, const qd_orbit *o, const qd_model *m,
+                                     const qd_orbit_text *t, qd_orbit_result *out);
+
+/* The analysis as `qdot orbit` prints it, appended to b: text (12
+ * significant digits, "inf" for an open end) or JSON (every digit, null for
+ * what the orbit does not have; the keys of docs/cli.md); model names the
+ * model file; equation adds the orbit equation (qd_orbit_equation, or the
+ * conic with its numbers). */
+QD_API qd_status qd_orbit_render(qd_ctx *ctx, const qd_orbit *o, const qd_orbit_result *r,
+                                 const char *model, bool equation, bool json, qd_buf *b);
+
 #ifdef __cplusplus
 }
 #endif

@@ -18,8 +18,10 @@
 #ifndef QDOT_RELATIVITY_H
 #define QDOT_RELATIVITY_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "expr.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -151,6 +153,141 @@ QD_API qd_status qd_rel_threshold_of(qd_ctx *ctx, double c, double m_a, double m
 QD_API qd_status qd_rel_decay(qd_ctx *ctx, double c, const qd_rel_particle *parent, double m1,
                               double m2, double chi, double phi, qd_rel_particle out[2],
                               double *pstar);
+
+/* ---- text: numbers in which c is the speed of light (issue 31) ---------
+ *
+ * What `qdot lorentz` and `qdot collide` read, for any caller: every value
+ * is an expression in c (the run's speed of light), pi and e ("0.6*c",
+ * "sqrt(3)/2*c").  An error names the value by field (qd_diag.name, subject
+ * QD_SUBJECT_NONE: "frame", "particle") and is located in text (a caller
+ * shows the caret under the item at fault).  Lists are split at the commas
+ * outside brackets, and one bracket around the whole list is dropped. */
+
+/* c itself: a positive finite constant expression (pi, e). */
+QD_API qd_status qd_rel_read_c(qd_ctx *ctx, const char *field, const char *text, double *c);
+/* One number. */
+QD_API qd_status qd_rel_read_number(qd_ctx *ctx, double c, const char *field, const char *text,
+                                    double *out);
+/* "a, b, c" or "(a, b, c)": exactly n numbers (n <= 16). */
+QD_API qd_status qd_rel_read_numbers(qd_ctx *ctx, double c, const char *field, const char *text,
+                                     size_t n, double *out);
+/* "m=MASS, v=(VX, VY, VZ)" (v defaults to rest) as a particle. */
+QD_API qd_status qd_rel_read_particle(qd_ctx *ctx, double c, const char *field, const char *text,
+                                      qd_rel_particle *out);
+
+/* ---- the Lorentz transformation of several quantities at once ----------
+ *
+ * What `qdot lorentz` asks and Python's qdot.lorentz: each part is
+ * computed when its bit is in ask. */
+enum {
+    QD_LORENTZ_FRAME = 1u << 0,        /* gamma of V, the boost and O^T g O - g */
+    QD_LORENTZ_EVENT = 1u << 1,        /* an event (t, x, y, z) */
+    QD_LORENTZ_VELOCITY = 1u << 2,     /* a velocity, and gamma of its image */
+    QD_LORENTZ_ACCELERATION = 1u << 3, /* an acceleration (needs the velocity) */
+    QD_LORENTZ_MOMENTUM = 1u << 4,     /* a four-momentum, and its invariant mass */
+    QD_LORENTZ_COMPOSE = 1u << 5,      /* V (+) u, u (+) V and the Wigner angle */
+    QD_LORENTZ_DILATE = 1u << 6,       /* a proper interval of a clock moving with V */
+    QD_LORENTZ_CONTRACT = 1u << 7,     /* a displacement at rest in S' */
+    QD_LORENTZ_PROPER_TIME = 1u << 8   /* proper time along v(t), t0 <= t <= t1 (no V) */
+};
+
+typedef struct qd_lorentz_in {
+    unsigned ask;          /* the QD_LORENTZ_ bits */
+    double c;              /* the speed of light, > 0 */
+    double frame[3];       /* V (every part but PROPER_TIME needs it) */
+    double event[4], velocity[3], acceleration[3];
+    double energy, momentum[3];
+    double compose[3], dilate, contract[3];
+    const qd_expr *worldline[3]; /* v(t): expressions in t */
+    double t0, t1;
+} qd_lorentz_in;
+
+typedef struct qd_lorentz_out {
+    double gamma, boost[16], metric_error;
+    double event[4], velocity[3], particle_gamma, acceleration[3];
+    double energy, momentum[3], invariant_mass;
+    double composed[3], composed_reverse[3], wigner_angle;
+    double dilated, contracted[3];
+    qd_rel_tau tau;
+} qd_lorentz_out;
+
+/* Every part asked for.  QD_ERR_ARG (the field named, as above) when a
+ * part needs the frame and ask lacks it, an acceleration comes without the
+ * particle's velocity (ch. 86 eq 44 needs it), or a speed reaches c. */
+QD_API qd_status qd_lorentz_run(qd_ctx *ctx, const qd_lorentz_in *in, qd_lorentz_out *out);
+
+/* The same question as text (the values of `qdot lorentz`'s options, NULL
+ * when not given): c (default 1), then each part, momentum as "E, px, py,
+ * pz" or "m=M, v=(...)", proper_time three expressions in t over t as
+ * "T0:T1".  *in gets the numbers and ask the parts given. */
+typedef struct qd_lorentz_text {
+    const char *c, *frame, *event, *velocity, *acceleration, *momentum, *compose, *dilate,
+        *contract, *proper_time, *t;
+} qd_lorentz_text;
+QD_API qd_status qd_lorentz_read(qd_ctx *ctx, const qd_lorentz_text *text, qd_lorentz_in *in);
+
+/* The result as `qdot lorentz` prints it, appended to b: text (12
+ * significant digits) or JSON (every digit; the keys of docs/cli.md). */
+QD_API qd_status qd_lorentz_render(qd_ctx *ctx, const qd_lorentz_in *in,
+                                   const qd_lorentz_out *out, bool json, qd_buf *b);
+
+/* ---- collisions as one question ----------------------------------------- */
+
+#define QD_COLLIDE_MAX 64     /* particles */
+#define QD_COLLIDE_PRODUCTS 16
+
+typedef enum qd_collide_final {
+    QD_COLLIDE_NONE,     /* only the sum */
+    QD_COLLIDE_ELASTIC,  /* two particles' elastic final states */
+    QD_COLLIDE_DECAY     /* one particle's two-body decay */
+} qd_collide_final;
+
+typedef struct qd_collide_in {
+    double c;
+    size_t n;                          /* particles, 1 .. QD_COLLIDE_MAX */
+    qd_rel_particle particle[QD_COLLIDE_MAX];
+    bool merge;                        /* report the perfectly inelastic merge */
+    qd_collide_final final;
+    bool lab;                          /* elastic: at particle 1's lab angle, not cm_angle */
+    double lab_angle, cm_angle, azimuth;
+    size_t nproducts;                  /* threshold (> 0: asked) or decay (2) */
+    double product[QD_COLLIDE_PRODUCTS];
+    bool threshold;
+} qd_collide_in;
+
+typedef struct qd_collide_out {
+    qd_rel_particle total;             /* m the invariant mass, v the CM velocity */
+    size_t nfinal;                     /* final states: elastic 0..2, decay 1 */
+    double cm_angle[2];
+    double lab_angles[2][2];           /* elastic: both particles' lab angles */
+    qd_rel_particle final[2][2];
+    double conservation_error;         /* the largest imbalance of E and p c */
+    double pstar;                      /* decay: the momentum in the parent's frame */
+    double products_mass;              /* threshold: the sum of the products' masses */
+    qd_rel_threshold threshold;
+    bool allowed;                      /* threshold: total.m >= products_mass */
+} qd_collide_out;
+
+/* The sum, and the final states or threshold asked.  QD_ERR_ARG (field
+ * named) when elastic or threshold has not two particles, a decay not one,
+ * or a decay's products are too heavy. */
+QD_API qd_status qd_collide_run(qd_ctx *ctx, const qd_collide_in *in, qd_collide_out *out);
+
+/* The question as the text of `qdot collide`'s options: c (default 1),
+ * the particles ("m=..., v=(...)"), angle (elastic at a lab angle),
+ * cm_angle, azimuth, threshold ("M1, M2, ...") and decay ("m1, m2"). */
+typedef struct qd_collide_text {
+    const char *c;
+    size_t n;
+    const char *const *particle;
+    bool merge, elastic;
+    const char *angle, *cm_angle, *azimuth, *threshold, *decay;
+} qd_collide_text;
+QD_API qd_status qd_collide_read(qd_ctx *ctx, const qd_collide_text *text, qd_collide_in *in);
+
+/* The result as `qdot collide` prints it (text or JSON), appended to b. */
+QD_API qd_status qd_collide_render(qd_ctx *ctx, const qd_collide_in *in,
+                                   const qd_collide_out *out, bool json, qd_buf *b);
 
 #ifdef __cplusplus
 }

@@ -30,8 +30,10 @@
 #ifndef QDOT_SCATTER_H
 #define QDOT_SCATTER_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "expr.h"
+#include "print.h"
 #include "mech.h"
 #include "model.h"
 
@@ -173,6 +175,65 @@ QD_API void qd_scatter_lab_gamma(double gamma, double theta, double *theta_lab,
  * two (or none beyond theta_max = asin(1/gamma)) when gamma > 1.  Returns
  * the count, angles in cm[0..count). */
 QD_API size_t qd_scatter_lab_to_cm(double gamma, double theta_lab, double cm[2]);
+
+/* ---- one question, as `qdot scatter` asks it (issue 31) ------------------
+ *
+ * At the energy E: the orbit of one impact parameter b (and the cross
+ * section at its angle), the cross section at one centre-of-mass angle, or
+ * at one laboratory angle (every CM angle that reaches it, summed through
+ * the Jacobians, Desloge ch. 61 eqs. 36, 67); always the features of the
+ * deflection function at E; with the masses, the laboratory frame. */
+typedef enum qd_scatter_at {
+    QD_SCATTER_AT_B,     /* b */
+    QD_SCATTER_AT_THETA, /* theta in (0, pi) */
+    QD_SCATTER_AT_LAB    /* lab_theta in (0, pi), masses needed */
+} qd_scatter_at;
+
+typedef struct qd_scatter_query {
+    double E;
+    qd_scatter_at at;
+    double b, theta, lab_theta;
+    double core;         /* the hard core's radius (for qd_scatter_from_model), 0: none */
+    bool masses;         /* m1 (projectile) and m2 (target at rest) given */
+    double m1, m2;
+} qd_scatter_query;
+
+/* The query as the text of `qdot scatter`'s options, each NULL when not
+ * given, every value a constant expression in the parameters of m
+ * (qd_model_number): energy, exactly one of b, theta and lab_theta, core,
+ * masses "m1, m2".  QD_ERR_ARG naming the field (qd_diag.name) for a
+ * missing or second angle, lab_theta without masses or outside (0, pi),
+ * masses that are not two positive numbers. */
+typedef struct qd_scatter_text {
+    const char *energy, *b, *theta, *lab_theta, *core, *masses;
+} qd_scatter_text;
+QD_API qd_status qd_scatter_read(qd_ctx *ctx, const qd_model *m, const qd_scatter_text *text,
+                                 qd_scatter_query *out);
+
+typedef struct qd_scatter_answer {
+    qd_scatter_query q;
+    qd_scatter_path path;          /* AT_B: the orbit */
+    qd_scatter_section section;    /* at theta, or at the orbit's angle; sigma NaN: none */
+    size_t ncm;                    /* AT_LAB: the CM angles that reach lab_theta */
+    double cm[2], cm_sigma[2], cm_jacobian[2];
+    double lab_sigma;              /* AT_LAB, or masses: the lab cross section (NaN: none) */
+    bool lab;                      /* masses and a CM angle in [0, pi]: lab_map holds */
+    qd_scatter_lab lab_map;
+    size_t lab_ncm;                /* the CM angles summed into lab_sigma */
+    qd_scatter_features features;
+} qd_scatter_answer;
+
+/* Answer q for s.  The errors of qd_scatter_deflect, _section_at and
+ * _features_at. */
+QD_API qd_status qd_scatter_answer_query(qd_ctx *ctx, qd_scatter *s, const qd_scatter_query *q,
+                                         qd_scatter_answer *out);
+
+/* The answer as `qdot scatter` prints it, appended to b: text (nine
+ * significant digits: the cross sections come from differences of the
+ * deflection) or JSON (every digit; the keys of docs/cli.md); model names
+ * the model file. */
+QD_API qd_status qd_scatter_render(qd_ctx *ctx, const qd_scatter *s, const qd_scatter_answer *a,
+                                   const char *model, bool json, qd_buf *b);
 
 #ifdef __cplusplus
 }

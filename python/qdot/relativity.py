@@ -6,8 +6,7 @@
 # the C library.  The prototypes are declared here, beside their only user.
 """Lorentz transformations and relativistic collisions (internal module)."""
 
-from ctypes import POINTER, Structure, byref, c_double, c_int, c_size_t, c_void_p
-import math
+from ctypes import POINTER, Structure, byref, c_bool, c_double, c_int, c_size_t, c_uint, c_void_p
 
 import numpy as np
 
@@ -30,8 +29,50 @@ class _Tau(Structure):
     _fields_ = [("tau", c_double), ("error", c_double), ("vmax", c_double), ("evals", c_size_t)]
 
 
+class _LorentzIn(Structure):
+    """qd_lorentz_in: the parts asked (QD_LORENTZ_ bits) and their inputs."""
+    _fields_ = [("ask", c_uint), ("c", c_double), ("frame", c_double * 3),
+                ("event", c_double * 4), ("velocity", c_double * 3),
+                ("acceleration", c_double * 3), ("energy", c_double), ("momentum", c_double * 3),
+                ("compose", c_double * 3), ("dilate", c_double), ("contract", c_double * 3),
+                ("worldline", c_void_p * 3), ("t0", c_double), ("t1", c_double)]
+
+
+class _LorentzOut(Structure):
+    _fields_ = [("gamma", c_double), ("boost", c_double * 16), ("metric_error", c_double),
+                ("event", c_double * 4), ("velocity", c_double * 3),
+                ("particle_gamma", c_double), ("acceleration", c_double * 3),
+                ("energy", c_double), ("momentum", c_double * 3), ("invariant_mass", c_double),
+                ("composed", c_double * 3), ("composed_reverse", c_double * 3),
+                ("wigner_angle", c_double), ("dilated", c_double), ("contracted", c_double * 3),
+                ("tau", _Tau)]
+
+
+# QD_LORENTZ_FRAME .. QD_LORENTZ_CONTRACT (relativity.h), in this order
+_PARTS = ["frame", "event", "velocity", "acceleration", "momentum", "compose", "dilate",
+          "contract"]
+_COLLIDE_MAX, _PRODUCTS = 64, 16
+_NONE, _ELASTIC, _DECAY = 0, 1, 2  # qd_collide_final
+
+
+class _CollideIn(Structure):
+    _fields_ = [("c", c_double), ("n", c_size_t), ("particle", Particle * _COLLIDE_MAX),
+                ("merge", c_bool), ("final", c_int), ("lab", c_bool), ("lab_angle", c_double),
+                ("cm_angle", c_double), ("azimuth", c_double), ("nproducts", c_size_t),
+                ("product", c_double * _PRODUCTS), ("threshold", c_bool)]
+
+
+class _CollideOut(Structure):
+    _fields_ = [("total", Particle), ("nfinal", c_size_t), ("cm_angle", c_double * 2),
+                ("lab_angles", (c_double * 2) * 2), ("final", (Particle * 2) * 2),
+                ("conservation_error", c_double), ("pstar", c_double),
+                ("products_mass", c_double), ("threshold", _Threshold), ("allowed", c_bool)]
+
+
 _V = POINTER(c_double)
 _PROTOS = {
+    "qd_lorentz_run": [c_void_p, POINTER(_LorentzIn), POINTER(_LorentzOut)],
+    "qd_collide_run": [c_void_p, POINTER(_CollideIn), POINTER(_CollideOut)],
     "qd_rel_gamma": [c_void_p, c_double, _V, DBL],
     "qd_lorentz_event": [c_void_p, c_double, _V, _V, _V],
     "qd_lorentz_velocity": [c_void_p, c_double, _V, _V, _V],
@@ -120,65 +161,51 @@ def _pdict(p):
     return r
 
 
+def _set(arr, x, n, what):
+    arr[:] = list(_vec(x, n, what))
+
+
 def lorentz(frame, c=1.0, event=None, velocity=None, acceleration=None, momentum=None,
             compose=None, dilate=None, contract=None):
     """The Lorentz transformation to the frame moving with `frame` (a
-    3-vector), as `qdot lorentz`: event (t, x, y, z), velocity, acceleration
-    (with velocity), momentum (E, px, py, pz) or {"m": M, "v": (...)};
-    velocity composition, time dilation, contraction of a displacement."""
-    r = Result()
+    3-vector), as `qdot lorentz` (qd_lorentz_run): event (t, x, y, z),
+    velocity, acceleration (with velocity), momentum (E, px, py, pz) or
+    {"m": M, "v": (...)}; velocity composition, time dilation, contraction
+    of a displacement."""
+    given = dict(frame=frame, event=event, velocity=velocity, acceleration=acceleration,
+                 momentum=momentum, compose=compose, dilate=dilate, contract=contract)
+    a, o = _LorentzIn(c=float(c)), _LorentzOut()
     with _Ctx() as ctx:
-        V = _vec(frame, 3, "frame")
-        O = (c_double * 16)()
-        g = c_double()
-        ctx(lib.qd_lorentz_boost(ctx.ctx, c, V, O))
-        ctx(lib.qd_rel_gamma(ctx.ctx, c, V, byref(g)))
-        r.c, r.frame, r.gamma = float(c), _list(V), g.value
-        r.boost = np.array(_list(O)).reshape(4, 4)
-        r.metric_error = lib.qd_lorentz_metric_error(O)
-        out4, out3, x = (c_double * 4)(), (c_double * 3)(), c_double()
-        if event is not None:
-            ctx(lib.qd_lorentz_event(ctx.ctx, c, V, _vec(event, 4, "event"), out4))
-            r.event = _list(out4)
-        if acceleration is not None and velocity is None:
-            raise Error("acceleration needs velocity")
-        if velocity is not None:
-            v = _vec(velocity, 3, "velocity")
-            ctx(lib.qd_lorentz_velocity(ctx.ctx, c, V, v, out3))
-            r.velocity = _list(out3)
-            ctx(lib.qd_rel_gamma(ctx.ctx, c, out3, byref(x)))
-            r.particle_gamma = x.value
-            if acceleration is not None:
-                ctx(lib.qd_lorentz_acceleration(ctx.ctx, c, V, v,
-                                                _vec(acceleration, 3, "acceleration"), out3))
-                r.acceleration = _list(out3)
-        if momentum is not None:
-            if isinstance(momentum, dict):
-                p = _particle(ctx, c, momentum)
-                E, pv = p.E, p.p
-            else:
-                m4 = _list(momentum)
+        for bit, name in enumerate(_PARTS):
+            x = given[name]
+            if x is None:
+                continue
+            a.ask |= 1 << bit
+            if name == "dilate":
+                a.dilate = float(x)
+            elif name == "momentum" and isinstance(x, dict):
+                p = _particle(ctx, c, x)
+                a.energy, a.momentum[:] = p.E, list(p.p)
+            elif name == "momentum":
+                m4 = _list(x)
                 if len(m4) != 4:
                     raise Error("momentum needs (E, px, py, pz) or {'m': M, 'v': (...)}")
-                E, pv = m4[0], _vec(m4[1:])
-            ctx(lib.qd_lorentz_momentum(ctx.ctx, c, V, E, pv, byref(x), out3))
-            r.energy, r.momentum = x.value, _list(out3)
-            ctx(lib.qd_rel_mass(ctx.ctx, c, E, pv, byref(x)))
-            r.invariant_mass = x.value
-        if compose is not None:
-            u = _vec(compose, 3, "compose")
-            ctx(lib.qd_rel_compose(ctx.ctx, c, V, u, out3))
-            r.composed = _list(out3)
-            ctx(lib.qd_rel_compose(ctx.ctx, c, u, V, out3))
-            r.composed_reverse = _list(out3)
-            ctx(lib.qd_rel_wigner_angle(ctx.ctx, c, V, u, byref(x)))
-            r.wigner_angle = x.value
-        if dilate is not None:
-            ctx(lib.qd_rel_dilate(ctx.ctx, c, V, float(dilate), byref(x)))
-            r.dilated = x.value
-        if contract is not None:
-            ctx(lib.qd_rel_contract(ctx.ctx, c, V, _vec(contract, 3, "contract"), out3))
-            r.contracted = _list(out3)
+                a.energy, a.momentum[:] = m4[0], m4[1:]
+            else:
+                _set(getattr(a, name), x, 4 if name == "event" else 3, name)
+        ctx(lib.qd_lorentz_run(ctx.ctx, byref(a), byref(o)))
+    r = Result()
+    r.c, r.frame, r.gamma = float(c), _list(a.frame), o.gamma
+    r.boost = np.array(_list(o.boost)).reshape(4, 4)
+    r.metric_error = o.metric_error
+    keys = {"event": ["event"], "velocity": ["velocity", "particle_gamma"],
+            "acceleration": ["acceleration"], "momentum": ["energy", "momentum", "invariant_mass"],
+            "compose": ["composed", "composed_reverse", "wigner_angle"], "dilate": ["dilated"],
+            "contract": ["contracted"]}
+    for name, ks in keys.items():
+        for k in ks if given[name] is not None else []:
+            v = getattr(o, k)
+            setattr(r, k, v if isinstance(v, float) else _list(v))
     return r
 
 
@@ -208,52 +235,48 @@ def proper_time(v, t0, t1, c=1.0):
 def collide(particles, c=1.0, merge=False, elastic=False, angle=None, cm_angle=None,
             azimuth=0.0, threshold=None, decay=None):
     """Four-momenta of particles ((m, v) pairs or {"m":, "v":}) and their
-    sum, as `qdot collide`: invariant_mass, velocity (the centre of
-    momentum's, which a perfectly inelastic merge keeps), merged; final
-    (elastic: lab `angle` of particle 1, or `cm_angle`), threshold (the
-    products' masses on particle 2 at rest), decay (two masses)."""
-    r = Result()
+    sum, as `qdot collide` (qd_collide_run): invariant_mass, velocity (the
+    centre of momentum's, which a perfectly inelastic merge keeps), merged;
+    final (elastic: lab `angle` of particle 1, or `cm_angle`), threshold
+    (the products' masses on particle 2 at rest), decay (two masses)."""
+    a, o = _CollideIn(c=float(c), merge=bool(merge)), _CollideOut()
+    masses = _list(threshold if threshold is not None else decay if decay is not None else [])
+    if len(particles) > _COLLIDE_MAX or len(masses) > _PRODUCTS:
+        raise Error("collide takes at most %d particles and %d products" % (_COLLIDE_MAX,
+                                                                            _PRODUCTS))
     with _Ctx() as ctx:
         ps = [_particle(ctx, c, s) for s in particles]
-        arr = (Particle * max(len(ps), 1))(*ps)
-        tot = Particle()
-        ctx(lib.qd_rel_total(ctx.ctx, c, len(ps), arr, byref(tot)))
-        r.c, r.particles = float(c), [_pdict(p) for p in ps]
-        r.energy, r.momentum, r.invariant_mass, r.velocity = (tot.E, _list(tot.p), tot.m,
-                                                              _list(tot.v))
-        if merge:
-            r.merged = _pdict(tot)
-        if elastic or decay is not None:
-            if elastic and len(ps) != 2:
-                raise Error("elastic needs exactly two particles")
-            if decay is not None and len(ps) != 1:
-                raise Error("decay needs exactly one particle")
-            chis = [float(cm_angle or 0)]
-            if elastic and angle is not None:
-                ch, n = (c_double * 2)(), c_size_t()
-                ctx(lib.qd_rel_elastic_lab(ctx.ctx, c, arr, float(angle), ch, byref(n)))
-                chis = list(ch)[:n.value]
-            r.final = []
-            for chi in chis:
-                out, f = (Particle * 2)(), Result()
-                if elastic:
-                    ctx(lib.qd_rel_elastic(ctx.ctx, c, arr, chi, 0.0 if angle is not None
-                                           else float(azimuth), out))
-                    f.lab_angles = [lib.qd_rel_lab_angle(arr, out, k) for k in (0, 1)]
-                else:
-                    ps_ = c_double()
-                    ctx(lib.qd_rel_decay(ctx.ctx, c, arr, float(decay[0]), float(decay[1]),
-                                         chi, float(azimuth), out, byref(ps_)))
-                    r.pstar = ps_.value
-                f.cm_angle, f.particles = chi, [_pdict(out[0]), _pdict(out[1])]
-                r.final.append(f)
-        if threshold is not None:
-            if len(ps) != 2:
-                raise Error("threshold needs exactly two particles (the second the target)")
-            th, M = _Threshold(), math.fsum(float(x) for x in threshold)
-            ctx(lib.qd_rel_threshold_of(ctx.ctx, c, ps[0].m, ps[1].m, M, byref(th)))
-            r.threshold = Result()
-            r.threshold.products_mass, r.threshold.kinetic_energy = M, th.K
-            r.threshold.energy, r.threshold.speed = th.E, th.speed
-            r.threshold.allowed = tot.m >= M
+        a.n = len(ps)
+        for k, p in enumerate(ps):
+            a.particle[k] = p
+        a.final = _ELASTIC if elastic else _DECAY if decay is not None else _NONE
+        a.lab, a.lab_angle = angle is not None, float(angle or 0)
+        a.cm_angle, a.azimuth = float(cm_angle or 0), float(azimuth)
+        a.threshold, a.nproducts = threshold is not None, len(masses)
+        a.product[:len(masses)] = masses
+        ctx(lib.qd_collide_run(ctx.ctx, byref(a), byref(o)))
+    tot = o.total
+    r = Result()
+    r.c, r.particles = float(c), [_pdict(p) for p in ps]
+    r.energy, r.momentum, r.invariant_mass, r.velocity = (tot.E, _list(tot.p), tot.m,
+                                                          _list(tot.v))
+    if merge:
+        r.merged = _pdict(tot)
+    if a.final != _NONE:
+        r.final = []
+        for k in range(o.nfinal):
+            f = Result()
+            f.cm_angle, f.particles = o.cm_angle[k], [_pdict(o.final[k][0]),
+                                                      _pdict(o.final[k][1])]
+            if elastic:
+                f.lab_angles = _list(o.lab_angles[k])
+            r.final.append(f)
+        r.conservation_error = o.conservation_error
+        if decay is not None:
+            r.pstar = o.pstar
+    if threshold is not None:
+        r.threshold = Result()
+        r.threshold.products_mass, r.threshold.kinetic_energy = o.products_mass, o.threshold.K
+        r.threshold.energy, r.threshold.speed = o.threshold.E, o.threshold.speed
+        r.threshold.allowed = o.allowed
     return r

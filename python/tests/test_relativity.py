@@ -58,3 +58,13 @@ def test_refusals():
         qdot.lorentz((1, 0, 0))
     with pytest.raises(qdot.Error, match="not below c = 2"):
         qdot.collide([(1, (0, 2, 0))], c=2)
+
+
+def test_library_decides_what_goes_together():
+    # qd_lorentz_run and qd_collide_run, the same rules as `qdot lorentz` and `qdot collide`
+    with pytest.raises(qdot.Error, match="with the particle's velocity"):
+        qdot.lorentz((0.6, 0, 0), acceleration=(1, 0, 0))
+    with pytest.raises(qdot.Error, match="exactly two particles"):
+        qdot.collide([(1, (0, 0, 0))], elastic=True, cm_angle=1)
+    d = qdot.collide([(1, (0.5, 0, 0))], decay=(0.3, 0.3))
+    assert d.conservation_error < 1e-14

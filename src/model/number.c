@@ -100,3 +100,31 @@ qd_status qd_model_number(qd_ctx *ctx, const qd_model *m, const char *text, doub
     free(vals);
     return st;
 }
+
+qd_status qd_model_number_field(qd_ctx *ctx, const qd_model *m, const char *field,
+                                const char *text, size_t start, size_t len, double *out) {
+    if (!ctx)
+        return QD_ERR_ARG;
+    if (!m || !field || !text || !out || start + len > strlen(text)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "qd_model_number_field: a NULL argument or a bad span");
+        return QD_ERR_ARG;
+    }
+    char *part = malloc(len + 1);
+    if (!part) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return QD_ERR_NOMEM;
+    }
+    memcpy(part, text + start, len);
+    part[len] = '\0';
+    qd_status st = qd_model_number(ctx, m, part, out);
+    free(part);
+    if (st == QD_OK || st == QD_ERR_NOMEM)
+        return st;
+    qd_diag d = *qd_ctx_diag(ctx); /* re-recorded about the field, in the whole text */
+    qd_ctx_clear_error(ctx);
+    qd_ctx_error(ctx, d.status, "%s", d.message);
+    qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, field, d.reason, d.hint[0] ? d.hint : NULL);
+    qd_ctx_error_at(ctx, text, start + (d.located ? d.offset : 0),
+                    d.located ? d.length : (len ? len : 1));
+    return st;
+}

@@ -2307,6 +2307,22 @@ static void null_model(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_model_number(F.ctx, F.model, "q", NULL));
     reset(&F);
+    /* ---- qd_model_number_field */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number_field(NULL, F.model, "q", "q", 1, 1, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number_field(F.ctx, NULL, "q", "q", 1, 1, F.d));
+    reset(&F);
+    /* field NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number_field(F.ctx, F.model, NULL, "q", 1, 1, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number_field(F.ctx, F.model, "q", NULL, 1, 1, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_number_field(F.ctx, F.model, "q", "q", 1, 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2568,6 +2584,32 @@ static void null_orbit(void **state)
     reset(&F);
     /* lhs NULL */
     assert_null(qd_orbit_equation(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_orbit_solve_text */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve_text(NULL, NULL, F.model, NULL, (qd_orbit_result *)(void *)F.blob));
+    reset(&F);
+    /* o NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve_text(F.ctx, NULL, F.model, NULL, (qd_orbit_result *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve_text(F.ctx, NULL, NULL, NULL, (qd_orbit_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_solve_text(F.ctx, NULL, F.model, NULL, NULL));
+    reset(&F);
+    /* ---- qd_orbit_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_render(NULL, NULL, NULL, "q", false, false, &F.buf));
+    reset(&F);
+    /* o NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_render(F.ctx, NULL, NULL, "q", false, false, &F.buf));
+    reset(&F);
+    /* model NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_render(F.ctx, NULL, NULL, NULL, false, false, &F.buf));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_orbit_render(F.ctx, NULL, NULL, "q", false, false, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -3200,6 +3242,112 @@ static void null_relativity(void **state)
     /* pstar NULL */
     assert_int_equal(QD_ERR_ARG, qd_rel_decay(F.ctx, 1, NULL, 1, 1, 1, 1, (qd_rel_particle *)(void *)F.blob, NULL));
     reset(&F);
+    /* ---- qd_rel_read_c */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_c(NULL, "q", "q", F.d));
+    reset(&F);
+    /* field NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_c(F.ctx, NULL, "q", F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_c(F.ctx, "q", NULL, F.d));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_c(F.ctx, "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_rel_read_number */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_number(NULL, 1, "q", "q", F.d));
+    reset(&F);
+    /* field NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_number(F.ctx, 1, NULL, "q", F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_number(F.ctx, 1, "q", NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_number(F.ctx, 1, "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_rel_read_numbers */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_numbers(NULL, 1, "q", "q", 1, F.d));
+    reset(&F);
+    /* field NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_numbers(F.ctx, 1, NULL, "q", 1, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_numbers(F.ctx, 1, "q", NULL, 1, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_numbers(F.ctx, 1, "q", "q", 1, NULL));
+    reset(&F);
+    /* ---- qd_rel_read_particle */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_particle(NULL, 1, "q", "q", (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* field NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_particle(F.ctx, 1, NULL, "q", (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_particle(F.ctx, 1, "q", NULL, (qd_rel_particle *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_rel_read_particle(F.ctx, 1, "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_lorentz_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_run(NULL, NULL, (qd_lorentz_out *)(void *)F.blob));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_run(F.ctx, NULL, (qd_lorentz_out *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_run(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_read(NULL, NULL, NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_read(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_lorentz_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_render(NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_render(F.ctx, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lorentz_render(F.ctx, NULL, NULL, false, NULL));
+    reset(&F);
+    /* ---- qd_collide_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_run(NULL, NULL, (qd_collide_out *)(void *)F.blob));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_run(F.ctx, NULL, (qd_collide_out *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_run(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_collide_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_read(NULL, NULL, NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_read(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_collide_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_render(NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_render(F.ctx, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_collide_render(F.ctx, NULL, NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -3391,6 +3539,42 @@ static void null_scatter(void **state)
     /* ---- qd_scatter_lab_to_cm */
     /* cm NULL */
     assert_true(qd_scatter_lab_to_cm(1, 1, NULL) == 0);
+    reset(&F);
+    /* ---- qd_scatter_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_read(NULL, F.model, NULL, (qd_scatter_query *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_read(F.ctx, NULL, NULL, (qd_scatter_query *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_read(F.ctx, F.model, NULL, (qd_scatter_query *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_read(F.ctx, F.model, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scatter_answer_query */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_answer_query(NULL, NULL, NULL, (qd_scatter_answer *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_answer_query(F.ctx, NULL, NULL, (qd_scatter_answer *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_answer_query(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scatter_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_render(NULL, NULL, NULL, "q", false, &F.buf));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_render(F.ctx, NULL, NULL, "q", false, &F.buf));
+    reset(&F);
+    /* model NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_render(F.ctx, NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scatter_render(F.ctx, NULL, NULL, "q", false, NULL));
     reset(&F);
     teardown(&F);
 }

@@ -183,15 +183,17 @@ def errors(qdot, tmp):
     cases = [
         ('energy <= 0', [rut, '--energy', '0', '--b', '1'], 'energy must be positive'),
         ('b < 0', [rut, '--energy', '1', '--b', '-1'], 'impact parameter must be >= 0'),
-        ('both', [rut, '--energy', '1', '--b', '1', '--theta', '1'], 'one of --b, --theta'),
+        ('both', [rut, '--energy', '1', '--b', '1', '--theta', '1'],
+         'give one of the impact parameter, the centre-of-mass angle and the laboratory angle'),
         ('no cyclic', [str(EXAMPLES / 'kepler_cartesian.qd'), '--energy', '1', '--b', '1'],
          'no cyclic coordinate'),
         ('not central', [str(EXAMPLES / 'spherical_pendulum.qd'), '--energy', '1', '--b', '1'],
          'not a central potential'),
         ('not vanishing', [str(model_file(tmp, 'osc.qd', 'k*r^2')), '--energy', '1', '--b', '1'],
          'does not vanish at infinity'),
-        ('bad number', [rut, '--energy', 'x+', '--b', '1'], '--energy takes a number'),
-        ('lab without masses', [rut, '--energy', '1', '--lab-theta', '1'], 'needs --masses'),
+        ('bad number', [rut, '--energy', 'x+', '--b', '1'], '--energy:1:3: error: expected an operand'),
+        ('unknown name', [rut, '--energy', '2*kk', '--b', '1'], "--energy:1:3: error: unknown name 'kk'"),
+        ('lab without masses', [rut, '--energy', '1', '--lab-theta', '1'], 'depends on the masses: give them (--lab-theta)'),
     ]
     for name, args, msg in cases:
         rc, out, err = run(qdot, 'scatter', *args)
