@@ -52,21 +52,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     return cli_bad_option(argv[*i], usage_text);
 }
 
-/* The end of the item starting at text[a]: the next comma outside
- * parentheses (atan2(y, x) is one item). */
-static size_t item_end(const char *text, size_t a) {
-    int depth = 0;
-    for (; text[a]; a++) {
-        if (text[a] == '(' || text[a] == '[')
-            depth++;
-        else if ((text[a] == ')' || text[a] == ']') && depth > 0)
-            depth--;
-        else if (text[a] == ',' && depth == 0)
-            break;
-    }
-    return a;
-}
-
 static size_t coord_index(const qd_model *m, const char *name, size_t len) {
     for (size_t j = 0; j < qd_model_ncoords(m); j++) {
         const char *q = qd_expr_name(qd_model_coord(m, j));
@@ -118,7 +103,7 @@ static int parse_path(ao_run *r) {
         return QD_EXIT_FAIL;
     const char *text = r->path;
     for (size_t a = 0; text[a];) {
-        size_t b = item_end(text, a);
+        size_t b = qd_state_item_end(text, a);
         int rc = path_item(r, text, a, b);
         if (rc != QD_EXIT_OK)
             return rc;
@@ -133,29 +118,24 @@ static int parse_path(ao_run *r) {
     return QD_EXIT_OK;
 }
 
-/* --t T0:T1, each a number (pi/8 allowed). */
+/* --t T0:T1, each a constant expression in the parameters (pi/8, 2*pi/w). */
 static int parse_times(ao_run *r) {
-    const char *colon = strchr(r->times, ':');
+    const char *text = r->times, *colon = strchr(text, ':');
     if (!colon) {
-        cli_diag_error("--t takes T0:T1, not '%s'", r->times);
+        cli_diag_error("--t takes T0:T1, not '%s'", text);
         return QD_EXIT_USAGE;
     }
-    size_t len = (size_t)(colon - r->times);
-    char *first = malloc(len + 1);
-    if (!first)
-        return QD_EXIT_FAIL;
-    memcpy(first, r->times, len);
-    first[len] = '\0';
+    size_t c = (size_t)(colon - text);
     const qd_expr *x;
-    int rc = cli_state_number(r->ctx, "--t", first, &x, &r->t0);
-    free(first);
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_number(r->ctx, "--t", colon + 1, &x, &r->t1);
-    if (rc == QD_EXIT_OK && !(r->t1 > r->t0)) {
-        cli_diag_error("--t: T1 must be after T0 (%s)", r->times);
-        rc = QD_EXIT_USAGE;
+    if (qd_state_value(r->ctx, r->mf.model, text, 0, c, &x, &r->t0) != QD_OK ||
+        qd_state_value(r->ctx, r->mf.model, text, c + 1, strlen(text) - c - 1, &x, &r->t1) !=
+            QD_OK)
+        return cli_state_diag(r->ctx, "--t", text);
+    if (!(r->t1 > r->t0)) {
+        cli_diag_error("--t: T1 must be after T0 (%s)", text);
+        return QD_EXIT_USAGE;
     }
-    return rc;
+    return QD_EXIT_OK;
 }
 
 static int emit(ao_run *r, double S, double dS) {

@@ -39,7 +39,6 @@ typedef struct imp_run {
     size_t n;
     const qd_expr **q0, **qd0;   /* the state before, exact: n each */
     const qd_expr *t0;
-    cli_state par;               /* the parameters' values, to check --at */
     qd_impulse res;
 } imp_run;
 
@@ -65,20 +64,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 }
 
 /* ---- lists given on the command line --------------------------------------- */
-
-/* End of the item starting at i: the next comma outside brackets. */
-static size_t item_end(const char *text, size_t i) {
-    int depth = 0;
-    for (; text[i]; i++) {
-        if (text[i] == '(' || text[i] == '[')
-            depth++;
-        else if ((text[i] == ')' || text[i] == ']') && depth > 0)
-            depth--;
-        else if (text[i] == ',' && depth == 0)
-            break;
-    }
-    return i;
-}
 
 static bool blank(const char *s, size_t len) {
     for (size_t k = 0; k < len; k++)
@@ -130,7 +115,7 @@ static int add_prescriptions(imp_run *r, const imp_args *a) {
             return QD_EXIT_USAGE;
         }
         for (size_t i = 0; text[i] || i == 0;) {
-            size_t end = item_end(text, i);
+            size_t end = qd_state_item_end(text, i);
             if (blank(text + i, end - i)) {
                 cli_diag_error("--prescribe: an empty item in '%s'", text);
                 return QD_EXIT_USAGE;
@@ -148,134 +133,47 @@ static int add_prescriptions(imp_run *r, const imp_args *a) {
 
 /* ---- the state before ----------------------------------------------------------- */
 
-static void list_coords(const qd_model *m, char *out, size_t cap) {
-    size_t used = 0;
-    out[0] = '\0';
-    for (size_t i = 0; i < qd_model_ncoords(m) && used < cap; i++)
-        used += (size_t)snprintf(out + used, cap - used, "%s%s", i ? ", " : "",
-                                 qd_expr_name(qd_model_coord(m, i)));
-}
-
-/* The slot NAME names, *k: coordinate j (j), its velocity NAME' (n + j) or
- * t (2n); false (with the error printed) for anything else. */
-static bool find_slot(const imp_run *r, const char *name, size_t *k) {
-    size_t len = strlen(name), primes = 0;
-    while (len && name[len - 1] == '\'') {
-        len--;
-        primes++;
-    }
-    if (!strcmp(name, "t")) {
-        *k = 2 * r->n;
-        return true;
-    }
-    for (size_t j = 0; j < r->n && primes < 2; j++) {
-        const char *q = qd_expr_name(qd_model_coord(r->mf.model, j));
-        if (strlen(q) == len && !strncmp(q, name, len)) {
-            *k = primes ? r->n + j : j;
-            return true;
-        }
-    }
-    char known[512];
-    list_coords(r->mf.model, known, sizeof known);
-    cli_diag_error("--at: '%s' is not a coordinate, a velocity or t (the coordinates are %s; "
-                   "velocities are written with a prime; parameters take --set)", name, known);
-    return false;
-}
-
-static const qd_expr **slot_of(imp_run *r, size_t k) {
-    return k == 2 * r->n ? &r->t0 : k >= r->n ? &r->qd0[k - r->n] : &r->q0[k];
-}
-
-/* VALUE, text[a, b): an expression in the parameters, kept exact. */
-static int read_value(imp_run *r, const char *text, size_t a, size_t b, const char *name,
-                      const qd_expr **out) {
-    char *copy = malloc(b - a + 1);
-    if (!copy)
-        return QD_EXIT_FAIL;
-    memcpy(copy, text + a, b - a);
-    copy[b - a] = '\0';
-    const qd_read_opts opts = {.new_symbols = false};
-    qd_diag err;
-    const qd_expr *e = qd_read(r->ctx, copy, &opts, &err);
-    size_t np = qd_model_nparams(r->mf.model), first = r->par.n - np;
-    double v = 0;
-    int rc = QD_EXIT_OK;
-    if (!e) {
-        err.offset += a;
-        cli_diag_read("--at", text, &err);
-        rc = QD_EXIT_USAGE;
-    } else if (qd_eval(r->ctx, e, np, r->par.syms + first, r->par.vals + first, &v) != QD_OK ||
-               !isfinite(v)) {
-        qd_ctx_clear_error(r->ctx);
-        cli_diag_error("--at %s: '%s' is not a finite number (a value may use the parameters, "
-                       "not the coordinates)", name, copy);
-        rc = QD_EXIT_USAGE;
-    } else {
-        *out = e;
-    }
-    free(copy);
-    return rc;
-}
-
-/* One NAME=VALUE of --at, text[a, b). */
-static int at_item(imp_run *r, const char *text, size_t a, size_t b, bool *given) {
-    const char *eq = memchr(text + a, '=', b - a);
-    size_t na = a, nb = eq ? (size_t)(eq - text) : b;
-    while (na < nb && isspace((unsigned char)text[na]))
-        na++;
-    while (nb > na && isspace((unsigned char)text[nb - 1]))
-        nb--;
-    if (!eq || na == nb || nb - na >= 128) {
-        cli_diag_error("--at: expected NAME=VALUE, not '%.*s'", (int)(b - a), text + a);
-        return QD_EXIT_USAGE;
-    }
-    char name[128];
-    memcpy(name, text + na, nb - na);
-    name[nb - na] = '\0';
-    size_t k;
-    if (!find_slot(r, name, &k))
-        return QD_EXIT_USAGE;
-    if (given[k]) {
-        cli_diag_error("--at: '%s' is given twice", name);
-        return QD_EXIT_USAGE;
-    }
-    given[k] = true;
-    return read_value(r, text, (size_t)(eq + 1 - text), b, name, slot_of(r, k));
-}
-
-static int parse_at(imp_run *r, const char *text) {
-    bool *given = calloc(2 * r->n + 1, sizeof *given);
-    if (!given)
-        return QD_EXIT_FAIL;
-    int rc = QD_EXIT_OK;
-    for (size_t i = 0; text[i] && rc == QD_EXIT_OK;) {
-        size_t end = item_end(text, i);
-        if (!blank(text + i, end - i))
-            rc = at_item(r, text, i, end, given);
-        i = text[end] ? end + 1 : end;
-    }
-    free(given);
-    return rc;
-}
-
-/* `initial` as written, then --at; 0 for what neither names. */
+/* `initial` as written, then --at, both kept exact (sin(al) is 1/2 at
+ * al = pi/6); 0 for what neither names.  Parameters are the model's. */
 static int state_before(imp_run *r, const char *at) {
     const qd_model *m = r->mf.model;
-    r->q0 = calloc(r->n + 1, sizeof *r->q0);
-    r->qd0 = calloc(r->n + 1, sizeof *r->qd0);
+    size_t n = r->n;
+    r->q0 = calloc(n + 1, sizeof *r->q0);
+    r->qd0 = calloc(n + 1, sizeof *r->qd0);
     const qd_expr *zero = qd_int(r->ctx, 0);
     if (!r->q0 || !r->qd0 || !zero) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    for (size_t j = 0; j < r->n; j++) {
+    for (size_t j = 0; j < n; j++) {
         const qd_expr *q = qd_model_initial_definition(m, j, 0);
         const qd_expr *v = qd_model_initial_definition(m, j, 1);
         r->q0[j] = q ? q : zero;
         r->qd0[j] = v ? v : zero;
     }
-    int rc = cli_state_init(r->ctx, m, &r->par);
-    return rc == QD_EXIT_OK && at ? parse_at(r, at) : rc;
+    if (!at)
+        return QD_EXIT_OK;
+    cli_state st = {0};
+    int rc = cli_state_init(r->ctx, m, &st);
+    const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
+    if (rc == QD_EXIT_OK && !exact) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
+    }
+    qd_state_read_opts o = {.refuse = QD_STATE_PARAMS, .exact = exact};
+    if (rc == QD_EXIT_OK)
+        rc = cli_state_read(r->ctx, m, "--at", at, &st, &o);
+    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
+        if (exact[qd_slot_coord(n, j)])
+            r->q0[j] = exact[qd_slot_coord(n, j)];
+        if (exact[qd_slot_velocity(n, j)])
+            r->qd0[j] = exact[qd_slot_velocity(n, j)];
+    }
+    if (rc == QD_EXIT_OK)
+        r->t0 = exact[qd_slot_time(n)];
+    free(exact);
+    cli_state_free(&st);
+    return rc;
 }
 
 /* ---- solving -------------------------------------------------------------------- */
@@ -717,7 +615,6 @@ static int emit(imp_run *r, int format) {
 
 static void run_free(imp_run *r) {
     qd_impulse_free(&r->res);
-    cli_state_free(&r->par);
     free(r->q0);
     free(r->qd0);
     cli_model_file_free(&r->mf);
