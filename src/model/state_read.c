@@ -16,7 +16,6 @@
 #include <string.h>
 
 #include "base/args.h"
-#include "base/diag.h"
 #include "qdot/read.h"
 #include "qdot/state.h"
 
@@ -100,7 +99,7 @@ static qd_status refuse_symbol(qd_ctx *ctx, const qd_model *m, const char *text,
     names[1] = "e";
     for (size_t i = 0; i < np; i++)
         names[i + 2] = qd_expr_name(qd_model_param(m, i));
-    const char *near = qd__diag_nearest(name, strlen(name), names, np + 2);
+    const char *near = qd_nearest_name(name, strlen(name), names, np + 2);
     char hint[160];
     snprintf(hint, sizeof hint, "did you mean '%s'?", near ? near : "");
     qd_role role = qd_symbol_role(s);
@@ -230,7 +229,7 @@ static void nearest_hint(const qd_model *m, const qd_state *st, const char *name
             if (qd_expr_name(st->syms[k]))
                 names[count++] = qd_expr_name(st->syms[k]);
     }
-    const char *near = qd__diag_nearest(name, len, names, count);
+    const char *near = qd_nearest_name(name, len, names, count);
     bool coord = false;
     for (size_t j = 0; near && j < ncoord; j++)
         coord = coord || near == names[j];
