@@ -20,36 +20,30 @@
 #define PI 3.14159265358979323846
 
 typedef struct act_args {
-    const char *file, *at, *angle;
-    const char *sets[QD_CLI_MAX_LIST];
-    size_t nsets;
+    const char *file, *at, *angle, *format;
+    cli_list sets;
     bool json;
 } act_args;
 
-static const char usage_text[] =
-    "usage: qdot action FILE [--at \"q1=VALUE, q1'=VALUE (or p1=VALUE), ...\"] "
-    "[--set NAME=VALUE]... "
-    "[--angle q[,q...]] [--format text|json]";
-
 static const char *const formats[] = {"text", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    act_args *a = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        a->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &a->at, v);
-    if ((v = cli_value(argc, argv, i, "--angle")))
-        return cli_once("--angle", &a->angle, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--at", NULL, CLI_TEXT, offsetof(act_args, at), "\"q=V, q'=V (or p=V), ...\"",
+     "the state of the motion (over the model's initial values)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(act_args, sets), "NAME=VALUE",
+     "give a parameter another value", NULL, NULL},
+    {"--angle", NULL, CLI_TEXT, offsetof(act_args, angle), "q[,q...]",
+     "the coordinates whose angle variables to print", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(act_args, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    "action", "FILE [options]",
+    "The action-angle variables of a separable bounded motion: the actions J_k, the "
+    "frequencies, the angles, commensurability and H(J).",
+    opts, NULL, 1, 1, "FILE", false};
 
 /* ---- the state ------------------------------------------------------------------ */
 
@@ -272,7 +266,7 @@ static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const 
 }
 
 static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
-    int rc = cli_load(ctx, a->file, a->nsets, a->sets, false, mf);
+    int rc = cli_load(ctx, a->file, a->sets.n, a->sets.items, false, mf);
     if (rc != QD_EXIT_OK)
         return rc;
     cli_state st = {0};
@@ -297,9 +291,12 @@ static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
 
 int cli_cmd_action(int argc, char **argv) {
     act_args a = {0};
-    int rc = cli_file_args(argc, argv, "action", usage_text, &a.file, parse_option, &a);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &a, pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    a.file = pos[0];
+    a.json = a.format && !strcmp(a.format, "json");
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx) {
         cli_diag_error("out of memory");

@@ -15,42 +15,35 @@
 #include "model_file.h"
 #include "state.h"
 
-#define MAX_SETS QD_CLI_MAX_LIST
-
 typedef struct ao_run {
     qd_ctx *ctx;
     cli_model_file mf;
     qd_eom *e;
     bool json;
-    const char *file, *path, *times, *sets[MAX_SETS];
-    size_t nsets;
+    const char *file, *path, *times, *format;
+    cli_list sets;
     const qd_expr **q;   /* the trial path of each coordinate */
     double t0, t1;
 } ao_run;
 
-static const char usage_text[] =
-    "usage: qdot action-of FILE --path \"q = EXPR(t), ...\" --t T0:T1 [--set NAME=VALUE]... "
-    "[--format text|json]";
-
 static const char *const formats[] = {"text", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    ao_run *r = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        r->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--path")))
-        return cli_once("--path", &r->path, v);
-    if ((v = cli_value(argc, argv, i, "--t")))
-        return cli_once("--t", &r->times, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--path", NULL, CLI_TEXT, offsetof(ao_run, path), "\"q = EXPR(t), ...\"",
+     "the trial path: every coordinate as an expression in t", NULL, NULL},
+    {"--t", NULL, CLI_TEXT, offsetof(ao_run, times), "T0:T1",
+     "the time interval (expressions in the parameters)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(ao_run, sets), "NAME=VALUE",
+     "give a parameter another value", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(ao_run, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    "action-of", "FILE --path \"q = EXPR(t), ...\" --t T0:T1 [options]",
+    "The action of a trial path and the size of its first variation.", opts, NULL, 1, 1,
+    "FILE", false};
 
 static size_t coord_index(const qd_model *m, const char *name, size_t len) {
     for (size_t j = 0; j < qd_model_ncoords(m); j++) {
@@ -144,7 +137,7 @@ static int emit(ao_run *r, double S, double dS) {
         qd_json j;
         qd_json_init(&j, &b);
         qd_json_begin_object(&j);
-        qd_json_key(&j, "file");
+        qd_json_key(&j, "model");
         qd_json_string(&j, r->mf.path);
         qd_json_key(&j, "t0");
         qd_json_number(&j, r->t0);
@@ -169,10 +162,10 @@ static int emit(ao_run *r, double S, double dS) {
 
 static int run(ao_run *r) {
     if (!r->path || !r->times) {
-        cli_diag_error("action-of needs --path and --t\n%s", usage_text);
+        cli_diag_error("action-of needs --path and --t (qdot action-of --help)");
         return QD_EXIT_USAGE;
     }
-    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, false, NULL, &r->mf, &r->e);
+    int rc = cli_load_derive(r->ctx, r->file, r->sets.n, r->sets.items, false, NULL, &r->mf, &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_path(r);
     if (rc == QD_EXIT_OK)
@@ -187,9 +180,12 @@ static int run(ao_run *r) {
 
 int cli_cmd_action_of(int argc, char **argv) {
     ao_run r = {0};
-    int rc = cli_file_args(argc, argv, "action-of", usage_text, &r.file, parse_option, &r);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &r, pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    r.file = pos[0];
+    r.json = r.format && !strcmp(r.format, "json");
     if (!(r.ctx = qd_ctx_new())) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;

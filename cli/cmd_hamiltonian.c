@@ -18,8 +18,6 @@
 #include "model_file.h"
 #include "state.h"
 
-#define MAX_SETS QD_CLI_MAX_LIST
-
 typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } ham_fmt;
 
 typedef struct ham_run {
@@ -28,35 +26,37 @@ typedef struct ham_run {
     qd_eom *e;
     qd_ham *h;
     ham_fmt fmt;
-    const char *file, *at, *sets[MAX_SETS];
-    size_t nsets;
+    const char *file, *at, *format;
+    cli_list sets;
     cli_state st; /* q, q', t, the parameters, then the momenta */
 } ham_run;
 
-static const char usage_text[] =
-    "usage: qdot hamiltonian FILE [--format text|json|latex|sympy] [--set NAME=VALUE]... "
-    "[--at \"q=VALUE, p_q=VALUE, t=VALUE\"]";
-
 static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    ham_run *r = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        r->fmt = (ham_fmt)f;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &r->at, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--at", NULL, CLI_TEXT, offsetof(ham_run, at), "\"q=V, p_q=V, t=V\"",
+     "evaluate H and the equations at this point (momenta named as printed)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(ham_run, sets), "NAME=VALUE",
+     "give a parameter another value (fixed into the expressions)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(ham_run, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    "hamiltonian", "FILE [options]",
+    "The momenta, H(q, p, t) and Hamilton's equations of a model, with the verdicts H = T + V? "
+    "and H conserved?",
+    opts, NULL, 1, 1, "FILE", false};
 
 static int parse_args(int argc, char **argv, ham_run *r) {
-    return cli_file_args(argc, argv, "hamiltonian", usage_text, &r->file, parse_option, r);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, r, pos);
+    r->file = pos[0];
+    for (int k = 0; r->format && formats[k]; k++)
+        if (!strcmp(formats[k], r->format))
+            r->fmt = (ham_fmt)k;
+    return rc;
 }
 
 /* ---- --at ------------------------------------------------------------------ */
@@ -304,7 +304,7 @@ static void write_json(const ham_run *r, qd_buf *b) {
     qd_json j;
     qd_json_init(&j, b);
     qd_json_begin_object(&j);
-    qd_json_key(&j, "file");
+    qd_json_key(&j, "model");
     qd_json_string(&j, r->mf.path);
     qd_json_key(&j, "coordinates");
     qd_json_begin_array(&j);
@@ -365,7 +365,7 @@ static int emit(ham_run *r) {
 }
 
 static int run(ham_run *r) {
-    int rc = cli_load(r->ctx, r->file, r->nsets, r->sets, true, &r->mf);
+    int rc = cli_load(r->ctx, r->file, r->sets.n, r->sets.items, true, &r->mf);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
     /* a singular Hessian named as the Legendre transform sees it, before
      * Lagrange's equations fail on the same matrix */

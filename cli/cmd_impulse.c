@@ -27,10 +27,8 @@
 enum { FMT_TEXT, FMT_JSON, FMT_LATEX };
 
 typedef struct imp_args {
-    const char *file, *at;
-    const char *sets[QD_CLI_MAX_LIST], *pres[QD_CLI_MAX_LIST];
-    size_t nsets, npres;
-    int format;
+    const char *file, *at, *format;
+    cli_list sets, pres;
 } imp_args;
 
 typedef struct imp_run {
@@ -42,26 +40,25 @@ typedef struct imp_run {
     qd_impulse res;
 } imp_run;
 
-static const char usage_text[] =
-    "usage: qdot impulse FILE [--at \"q=..., q'=..., t=...\"] [--set NAME=VALUE]...\n"
-    "                         [--prescribe \"[NAME:] LHS = RHS, ...\"]... "
-    "[--format text|json|latex]";
-
 static const char *const formats[] = {"text", "json", "latex", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    imp_args *a = data;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--format")))
-        return cli_choice("--format", v, formats, &a->format);
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &a->at, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
-    if ((v = cli_value(argc, argv, i, "--prescribe")))
-        return cli_push("--prescribe", a->pres, &a->npres, QD_CLI_MAX_LIST, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--at", NULL, CLI_TEXT, offsetof(imp_args, at), "\"q=V, q'=V, t=V\"",
+     "the state just before (over the model's initial; others 0)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(imp_args, sets), "NAME=VALUE",
+     "give a parameter another value", NULL, NULL},
+    {"--prescribe", NULL, CLI_LIST, offsetof(imp_args, pres), "\"[NAME:] LHS = RHS, ...\"",
+     "velocities to hold just after (Thomson's problem)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(imp_args, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    "impulse", "FILE [options]",
+    "The motion just after a blow, a sudden constraint or a collision: the velocities after, "
+    "the impulsive reactions, the energies and the theorems of impulsive motion.",
+    opts, NULL, 1, 1, "FILE", false};
 
 /* ---- lists given on the command line --------------------------------------- */
 
@@ -108,8 +105,8 @@ static int add_prescription(imp_run *r, const char *text, size_t start, size_t l
 }
 
 static int add_prescriptions(imp_run *r, const imp_args *a) {
-    for (size_t k = 0; k < a->npres; k++) {
-        const char *text = a->pres[k];
+    for (size_t k = 0; k < a->pres.n; k++) {
+        const char *text = a->pres.items[k];
         if (strchr(text, '\n') || strchr(text, '#')) {
             cli_diag_error("--prescribe takes one line of items, without comments");
             return QD_EXIT_USAGE;
@@ -623,9 +620,11 @@ static void run_free(imp_run *r) {
 
 int cli_cmd_impulse(int argc, char **argv) {
     imp_args a = {0};
-    int rc = cli_file_args(argc, argv, "impulse", usage_text, &a.file, parse_option, &a);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &a, pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    a.file = pos[0];
     imp_run r = {0};
     if (!(r.ctx = qd_ctx_new())) {
         cli_diag_error("out of memory");
@@ -633,7 +632,7 @@ int cli_cmd_impulse(int argc, char **argv) {
     }
     /* the closed forms stay in the parameters' names, as the other numeric
      * commands print them; --set gives the values */
-    rc = cli_load(r.ctx, a.file, a.nsets, a.sets, false, &r.mf);
+    rc = cli_load(r.ctx, a.file, a.sets.n, a.sets.items, false, &r.mf);
     if (rc == QD_EXIT_OK) {
         r.n = qd_model_ncoords(r.mf.model);
         rc = add_prescriptions(&r, &a);
@@ -643,7 +642,9 @@ int cli_cmd_impulse(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = solve(&r);
     if (rc == QD_EXIT_OK)
-        rc = emit(&r, a.format);
+        rc = emit(&r, !a.format || !strcmp(a.format, "text") ? FMT_TEXT
+                      : !strcmp(a.format, "json")           ? FMT_JSON
+                                                            : FMT_LATEX);
     run_free(&r);
     return rc;
 }
