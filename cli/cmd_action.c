@@ -20,142 +20,65 @@
 #define PI 3.14159265358979323846
 
 typedef struct act_args {
-    const char *file, *at, *angle;
-    const char *sets[QD_CLI_MAX_LIST];
-    size_t nsets;
+    const char *file, *at, *angle, *format;
+    cli_list sets;
     bool json;
 } act_args;
 
-static const char usage_text[] =
-    "usage: qdot action FILE [--at \"q1=VALUE, q1'=VALUE (or p1=VALUE), ...\"] "
-    "[--set NAME=VALUE]... "
-    "[--angle q[,q...]] [--format text|json]";
-
 static const char *const formats[] = {"text", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    act_args *a = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        a->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &a->at, v);
-    if ((v = cli_value(argc, argv, i, "--angle")))
-        return cli_once("--angle", &a->angle, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--at", NULL, CLI_TEXT, offsetof(act_args, at), "\"q=V, q'=V (or p=V), ...\"",
+     "the state of the motion (over the model's initial values)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(act_args, sets), "NAME=VALUE",
+     "give a parameter another value", NULL, NULL},
+    {"--angle", NULL, CLI_TEXT, offsetof(act_args, angle), "q[,q...]",
+     "the coordinates whose angle variables to print", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(act_args, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    "action", "FILE [options]",
+    "The action-angle variables of a separable bounded motion: the actions J_k, the "
+    "frequencies, the angles, commensurability and H(J).",
+    opts, NULL, 1, 1, "FILE", false};
 
 /* ---- the state ------------------------------------------------------------------ */
 
-enum { MAX_AT = 4096 };
-
-/* The state: the model's `initial` values, --at over them, and for a model
- * given by H the momenta named in --at (syms/vals after the state's). */
-typedef struct act_state {
-    cli_state st;
-    size_t n;                 /* st.n + the momenta given */
-    const qd_expr **syms;
-    double *vals;
-} act_state;
-
-/* The index of the momentum NAME (len bytes) of an H model, or -1. */
-static long momentum_index(const qd_model *m, const char *name, size_t len) {
-    while (len && name[len - 1] == ' ')
-        len--;
-    for (size_t j = 0; qd_model_hamiltonian_given(m) && j < qd_model_ncoords(m); j++) {
-        const char *p = qd_expr_name(qd_model_momentum(m, j));
-        if (p && strlen(p) == len && !strncmp(p, name, len))
-            return (long)j;
+/* The model's `initial` values, --at over them, and for a model given by H
+ * the momenta --at names (after the parameters; those it does not name are
+ * left out, so that qd_action_at takes the velocities instead). */
+static int state_at(qd_ctx *ctx, const qd_model *m, const char *at, cli_state *st) {
+    size_t nq = qd_model_ncoords(m), first = 0;
+    bool *given = NULL;
+    int rc = cli_state_init(ctx, m, st);
+    if (rc == QD_EXIT_OK && qd_state_initial(ctx, m, st) != QD_OK)
+        rc = cli_diag_ctx(ctx);
+    first = st->n;
+    for (size_t j = 0; rc == QD_EXIT_OK && qd_model_hamiltonian_given(m) && j < nq; j++) {
+        const qd_expr *p = qd_model_momentum(m, j);
+        if (p && qd_state_append(ctx, st, 1, &p, NULL) != QD_OK)
+            rc = cli_diag_ctx(ctx);
     }
-    return -1;
-}
-
-/* One "NAME=VALUE" of --at: a momentum is read here, the rest is appended
- * to rest for cli_state_parse. */
-static int at_item(qd_ctx *ctx, const qd_model *m, const char *s, size_t len, char *rest,
-                   act_state *as) {
-    while (len && *s == ' ')
-        s++, len--;
-    const char *eq = memchr(s, '=', len);
-    long j = eq ? momentum_index(m, s, (size_t)(eq - s)) : -1;
-    if (j < 0) {
-        if (rest[0])
-            strcat(rest, ",");
-        strncat(rest, s, len);
-        return QD_EXIT_OK;
-    }
-    char value[MAX_AT];
-    size_t vl = len - (size_t)(eq + 1 - s);
-    memcpy(value, eq + 1, vl);
-    value[vl] = '\0';
-    const qd_expr *p = qd_model_momentum(m, (size_t)j), *exact;
-    as->syms[as->n] = p;
-    return cli_state_number(ctx, qd_expr_name(p), value, &exact, &as->vals[as->n++]);
-}
-
-static int split_at(qd_ctx *ctx, const qd_model *m, const char *at, char *rest, act_state *as) {
-    int depth = 0, rc = QD_EXIT_OK;
-    size_t start = 0, i = 0;
-    rest[0] = '\0';
-    for (; rc == QD_EXIT_OK && at[i]; i++) {
-        depth += (at[i] == '(') - (at[i] == ')');
-        if (at[i] == ',' && !depth) {
-            rc = at_item(ctx, m, at + start, i - start, rest, as);
-            start = i + 1;
-        }
-    }
-    return rc == QD_EXIT_OK ? at_item(ctx, m, at + start, i - start, rest, as) : rc;
-}
-
-static int initial_values(qd_ctx *ctx, const qd_model *m, cli_state *st) {
-    size_t nq = qd_model_ncoords(m);
-    for (size_t i = 0; i < nq; i++)
-        for (unsigned order = 0; order < 2; order++) {
-            const qd_expr *v = qd_model_initial(m, i, order);
-            if (v && qd_eval(ctx, v, st->n, st->syms, st->vals, &st->vals[order * nq + i]) != QD_OK)
-                return cli_diag_ctx(ctx);
-        }
-    return QD_EXIT_OK;
-}
-
-static int state_at(qd_ctx *ctx, const qd_model *m, const char *at, act_state *as) {
-    if (at && strlen(at) >= MAX_AT) {
-        cli_diag_error("--at is too long");
-        return QD_EXIT_USAGE;
-    }
-    int rc = cli_state_init(ctx, m, &as->st);
-    if (rc == QD_EXIT_OK)
-        rc = initial_values(ctx, m, &as->st);
-    size_t nq = qd_model_ncoords(m);
-    as->syms = calloc(as->st.n + nq, sizeof *as->syms);
-    as->vals = calloc(as->st.n + nq, sizeof *as->vals);
-    if (rc == QD_EXIT_OK && (!as->syms || !as->vals)) {
+    if (rc == QD_EXIT_OK && at && !(given = calloc(st->n, sizeof *given))) {
         cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
+        rc = QD_EXIT_FAIL;
     }
-    as->n = as->st.n;
-    char rest[MAX_AT] = "";
+    qd_state_read_opts o = {.given = given};
     if (rc == QD_EXIT_OK && at)
-        rc = split_at(ctx, m, at, rest, as);
-    if (rc == QD_EXIT_OK && rest[0])
-        rc = cli_state_parse(ctx, m, rest, &as->st);
-    if (rc == QD_EXIT_OK) {
-        memcpy(as->syms, as->st.syms, as->st.n * sizeof *as->syms);
-        memcpy(as->vals, as->st.vals, as->st.n * sizeof *as->vals);
-    }
+        rc = cli_state_read(ctx, m, "--at", at, st, &o);
+    size_t kept = first;
+    for (size_t k = first; rc == QD_EXIT_OK && k < st->n; k++)
+        if (given && given[k]) {
+            st->syms[kept] = st->syms[k];
+            st->vals[kept++] = st->vals[k];
+        }
+    if (rc == QD_EXIT_OK)
+        st->n = kept;
+    free(given);
     return rc;
-}
-
-static void state_free(act_state *as) {
-    cli_state_free(&as->st);
-    free(as->syms);
-    free(as->vals);
 }
 
 /* ---- text ------------------------------------------------------------------------ */
@@ -343,10 +266,10 @@ static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const 
 }
 
 static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
-    int rc = cli_load(ctx, a->file, a->nsets, a->sets, false, mf);
+    int rc = cli_load(ctx, a->file, a->sets.n, a->sets.items, false, mf);
     if (rc != QD_EXIT_OK)
         return rc;
-    act_state st = {0};
+    cli_state st = {0};
     rc = state_at(ctx, mf->model, a->at, &st);
     qd_action act = {0};
     const qd_expr *angles[MAX_ANGLES];
@@ -362,15 +285,18 @@ static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
         rc = cli_emit(&b, "actions");
     }
     qd_action_free(&act);
-    state_free(&st);
+    cli_state_free(&st);
     return rc;
 }
 
 int cli_cmd_action(int argc, char **argv) {
     act_args a = {0};
-    int rc = cli_file_args(argc, argv, "action", usage_text, &a.file, parse_option, &a);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &a, pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    a.file = pos[0];
+    a.json = a.format && !strcmp(a.format, "json");
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx) {
         cli_diag_error("out of memory");

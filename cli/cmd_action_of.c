@@ -15,57 +15,35 @@
 #include "model_file.h"
 #include "state.h"
 
-#define MAX_SETS QD_CLI_MAX_LIST
-
 typedef struct ao_run {
     qd_ctx *ctx;
     cli_model_file mf;
     qd_eom *e;
     bool json;
-    const char *file, *path, *times, *sets[MAX_SETS];
-    size_t nsets;
+    const char *file, *path, *times, *format;
+    cli_list sets;
     const qd_expr **q;   /* the trial path of each coordinate */
     double t0, t1;
 } ao_run;
 
-static const char usage_text[] =
-    "usage: qdot action-of FILE --path \"q = EXPR(t), ...\" --t T0:T1 [--set NAME=VALUE]... "
-    "[--format text|json]";
-
 static const char *const formats[] = {"text", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    ao_run *r = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        r->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--path")))
-        return cli_once("--path", &r->path, v);
-    if ((v = cli_value(argc, argv, i, "--t")))
-        return cli_once("--t", &r->times, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--path", NULL, CLI_TEXT, offsetof(ao_run, path), "\"q = EXPR(t), ...\"",
+     "the trial path: every coordinate as an expression in t", NULL, NULL},
+    {"--t", NULL, CLI_TEXT, offsetof(ao_run, times), "T0:T1",
+     "the time interval (expressions in the parameters)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(ao_run, sets), "NAME=VALUE",
+     "give a parameter another value", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(ao_run, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
 
-/* The end of the item starting at text[a]: the next comma outside
- * parentheses (atan2(y, x) is one item). */
-static size_t item_end(const char *text, size_t a) {
-    int depth = 0;
-    for (; text[a]; a++) {
-        if (text[a] == '(' || text[a] == '[')
-            depth++;
-        else if ((text[a] == ')' || text[a] == ']') && depth > 0)
-            depth--;
-        else if (text[a] == ',' && depth == 0)
-            break;
-    }
-    return a;
-}
+static const cli_spec spec = {
+    "action-of", "FILE --path \"q = EXPR(t), ...\" --t T0:T1 [options]",
+    "The action of a trial path and the size of its first variation.", opts, NULL, 1, 1,
+    "FILE", false};
 
 static size_t coord_index(const qd_model *m, const char *name, size_t len) {
     for (size_t j = 0; j < qd_model_ncoords(m); j++) {
@@ -118,7 +96,7 @@ static int parse_path(ao_run *r) {
         return QD_EXIT_FAIL;
     const char *text = r->path;
     for (size_t a = 0; text[a];) {
-        size_t b = item_end(text, a);
+        size_t b = qd_state_item_end(text, a);
         int rc = path_item(r, text, a, b);
         if (rc != QD_EXIT_OK)
             return rc;
@@ -133,29 +111,24 @@ static int parse_path(ao_run *r) {
     return QD_EXIT_OK;
 }
 
-/* --t T0:T1, each a number (pi/8 allowed). */
+/* --t T0:T1, each a constant expression in the parameters (pi/8, 2*pi/w). */
 static int parse_times(ao_run *r) {
-    const char *colon = strchr(r->times, ':');
+    const char *text = r->times, *colon = strchr(text, ':');
     if (!colon) {
-        cli_diag_error("--t takes T0:T1, not '%s'", r->times);
+        cli_diag_error("--t takes T0:T1, not '%s'", text);
         return QD_EXIT_USAGE;
     }
-    size_t len = (size_t)(colon - r->times);
-    char *first = malloc(len + 1);
-    if (!first)
-        return QD_EXIT_FAIL;
-    memcpy(first, r->times, len);
-    first[len] = '\0';
+    size_t c = (size_t)(colon - text);
     const qd_expr *x;
-    int rc = cli_state_number(r->ctx, "--t", first, &x, &r->t0);
-    free(first);
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_number(r->ctx, "--t", colon + 1, &x, &r->t1);
-    if (rc == QD_EXIT_OK && !(r->t1 > r->t0)) {
-        cli_diag_error("--t: T1 must be after T0 (%s)", r->times);
-        rc = QD_EXIT_USAGE;
+    if (qd_state_value(r->ctx, r->mf.model, text, 0, c, &x, &r->t0) != QD_OK ||
+        qd_state_value(r->ctx, r->mf.model, text, c + 1, strlen(text) - c - 1, &x, &r->t1) !=
+            QD_OK)
+        return cli_state_diag(r->ctx, "--t", text);
+    if (!(r->t1 > r->t0)) {
+        cli_diag_error("--t: T1 must be after T0 (%s)", text);
+        return QD_EXIT_USAGE;
     }
-    return rc;
+    return QD_EXIT_OK;
 }
 
 static int emit(ao_run *r, double S, double dS) {
@@ -164,7 +137,7 @@ static int emit(ao_run *r, double S, double dS) {
         qd_json j;
         qd_json_init(&j, &b);
         qd_json_begin_object(&j);
-        qd_json_key(&j, "file");
+        qd_json_key(&j, "model");
         qd_json_string(&j, r->mf.path);
         qd_json_key(&j, "t0");
         qd_json_number(&j, r->t0);
@@ -189,10 +162,10 @@ static int emit(ao_run *r, double S, double dS) {
 
 static int run(ao_run *r) {
     if (!r->path || !r->times) {
-        cli_diag_error("action-of needs --path and --t\n%s", usage_text);
+        cli_diag_error("action-of needs --path and --t (qdot action-of --help)");
         return QD_EXIT_USAGE;
     }
-    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, false, NULL, &r->mf, &r->e);
+    int rc = cli_load_derive(r->ctx, r->file, r->sets.n, r->sets.items, false, NULL, &r->mf, &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_path(r);
     if (rc == QD_EXIT_OK)
@@ -207,9 +180,12 @@ static int run(ao_run *r) {
 
 int cli_cmd_action_of(int argc, char **argv) {
     ao_run r = {0};
-    int rc = cli_file_args(argc, argv, "action-of", usage_text, &r.file, parse_option, &r);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &r, pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    r.file = pos[0];
+    r.json = r.format && !strcmp(r.format, "json");
     if (!(r.ctx = qd_ctx_new())) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;

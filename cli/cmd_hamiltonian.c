@@ -18,9 +18,6 @@
 #include "model_file.h"
 #include "state.h"
 
-#define MAX_SETS QD_CLI_MAX_LIST
-#define MAX_AT 1024
-
 typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } ham_fmt;
 
 typedef struct ham_run {
@@ -29,117 +26,54 @@ typedef struct ham_run {
     qd_eom *e;
     qd_ham *h;
     ham_fmt fmt;
-    const char *file, *at, *sets[MAX_SETS];
-    size_t nsets;
-    cli_state st;
-    const qd_expr **syms; /* the state's symbols, then the momenta */
-    double *vals;
-    size_t nsyms;
+    const char *file, *at, *format;
+    cli_list sets;
+    cli_state st; /* q, q', t, the parameters, then the momenta */
 } ham_run;
-
-static const char usage_text[] =
-    "usage: qdot hamiltonian FILE [--format text|json|latex|sympy] [--set NAME=VALUE]... "
-    "[--at \"q=VALUE, p_q=VALUE, t=VALUE\"]";
 
 static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    ham_run *r = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        r->fmt = (ham_fmt)f;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &r->at, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--at", NULL, CLI_TEXT, offsetof(ham_run, at), "\"q=V, p_q=V, t=V\"",
+     "evaluate H and the equations at this point (momenta named as printed)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(ham_run, sets), "NAME=VALUE",
+     "give a parameter another value (fixed into the expressions)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(ham_run, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    "hamiltonian", "FILE [options]",
+    "The momenta, H(q, p, t) and Hamilton's equations of a model, with the verdicts H = T + V? "
+    "and H conserved?",
+    opts, NULL, 1, 1, "FILE", false};
 
 static int parse_args(int argc, char **argv, ham_run *r) {
-    return cli_file_args(argc, argv, "hamiltonian", usage_text, &r->file, parse_option, r);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, r, pos);
+    r->file = pos[0];
+    for (int k = 0; r->format && formats[k]; k++)
+        if (!strcmp(formats[k], r->format))
+            r->fmt = (ham_fmt)k;
+    return rc;
 }
 
 /* ---- --at ------------------------------------------------------------------ */
 
-static long momentum_index(const ham_run *r, const char *item, size_t len) {
-    while (len && item[len - 1] == ' ')
-        len--;
-    for (size_t j = 0; j < r->h->n; j++) {
-        const char *name = qd_expr_name(r->h->p[j]);
-        if (strlen(name) == len && !strncmp(name, item, len))
-            return (long)j;
-    }
-    return -1;
-}
-
-/* One "NAME=VALUE" of the list: a momentum is read here, the rest is
- * appended to rest for cli_state_parse. */
-static int at_item(ham_run *r, const char *s, size_t len, char *rest) {
-    while (len && *s == ' ')
-        s++, len--;
-    const char *eq = memchr(s, '=', len);
-    long j = eq ? momentum_index(r, s, (size_t)(eq - s)) : -1;
-    if (j < 0) {
-        if (rest[0])
-            strcat(rest, ",");
-        strncat(rest, s, len);
-        return QD_EXIT_OK;
-    }
-    char value[MAX_AT];
-    size_t vl = len - (size_t)(eq + 1 - s);
-    memcpy(value, eq + 1, vl);
-    value[vl] = '\0';
-    const qd_expr *exact;
-    return cli_state_number(r->ctx, qd_expr_name(r->h->p[j]), value, &exact,
-                           &r->vals[r->st.n + (size_t)j]);
-}
-
-static int split_at(ham_run *r, char *rest) {
-    const char *s = r->at;
-    int depth = 0, rc = QD_EXIT_OK;
-    size_t start = 0, i = 0;
-    rest[0] = '\0';
-    for (; rc == QD_EXIT_OK && s[i]; i++) {
-        depth += (s[i] == '(') - (s[i] == ')');
-        if (s[i] == ',' && !depth) {
-            rc = at_item(r, s + start, i - start, rest);
-            start = i + 1;
-        }
-    }
-    return rc == QD_EXIT_OK ? at_item(r, s + start, i - start, rest) : rc;
-}
-
+/* The model's state with the momenta appended, named in --at as they are
+ * printed (p_r=0.3). */
 static int state_at(ham_run *r) {
-    if (strlen(r->at) >= MAX_AT) {
-        cli_diag_error("--at is too long");
-        return QD_EXIT_USAGE;
-    }
     int rc = cli_state_init(r->ctx, r->mf.model, &r->st);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    r->nsyms = r->st.n + r->h->n;
-    r->syms = calloc(r->nsyms, sizeof *r->syms);
-    r->vals = calloc(r->nsyms, sizeof *r->vals);
-    if (!r->syms || !r->vals)
-        return QD_EXIT_FAIL;
-    char rest[MAX_AT];
-    rc = split_at(r, rest);
-    if (rc == QD_EXIT_OK && rest[0])
-        rc = cli_state_parse(r->ctx, r->mf.model, rest, &r->st);
-    memcpy(r->syms, r->st.syms, r->st.n * sizeof *r->syms);
-    memcpy(r->vals, r->st.vals, r->st.n * sizeof *r->vals);
-    memcpy(r->syms + r->st.n, r->h->p, r->h->n * sizeof *r->syms);
-    return rc;
+    if (rc == QD_EXIT_OK && qd_state_append(r->ctx, &r->st, r->h->n, r->h->p, NULL) != QD_OK)
+        rc = cli_diag_ctx(r->ctx);
+    return rc == QD_EXIT_OK ? cli_state_parse(r->ctx, r->mf.model, r->at, &r->st) : rc;
 }
 
 /* x at the --at point as a number node. */
 static const qd_expr *number(ham_run *r, const qd_expr *x) {
     double v;
-    if (qd_eval(r->ctx, x, r->nsyms, r->syms, r->vals, &v) != QD_OK)
+    if (qd_eval(r->ctx, x, r->st.n, r->st.syms, r->st.vals, &v) != QD_OK)
         return NULL;
     return qd_float(r->ctx, v);
 }
@@ -151,11 +85,10 @@ static int implicit_velocities(ham_run *r) {
     double *v = calloc(h->n ? h->n : 1, sizeof *v);
     if (!v)
         return QD_EXIT_FAIL;
-    qd_status st = qd_ham_velocities_at(r->ctx, h, r->nsyms, r->syms, r->vals, v);
+    qd_status st = qd_ham_velocities_at(r->ctx, h, r->st.n, r->st.syms, r->st.vals, v);
     for (size_t j = 0; st == QD_OK && j < h->n; j++) {
-        for (size_t i = 0; i < r->nsyms; i++)
-            if (r->syms[i] == h->qd[j])
-                r->vals[i] = v[j];
+        if (qd_state_find(&r->st, h->qd[j]) < r->st.n)
+            r->st.vals[qd_state_find(&r->st, h->qd[j])] = v[j];
         h->vel[j] = qd_float(r->ctx, v[j]);
     }
     free(v);
@@ -356,11 +289,12 @@ static void json_list(const ham_run *r, qd_json *j, const char *key, const qd_ex
 static void json_point(const ham_run *r, qd_json *j) {
     qd_json_key(j, "at");
     qd_json_begin_object(j);
-    size_t nq = r->h->n;
-    for (size_t i = 0; i < r->nsyms; i++)
-        if (i < nq || i == 2 * nq || i >= r->st.n) {
-            qd_json_key(j, qd_expr_name(r->syms[i]));
-            qd_json_number(j, r->vals[i]);
+    const qd_model *m = r->mf.model;
+    size_t nq = qd_model_ncoords(m), momenta = qd_slot_count(nq, qd_model_nparams(m));
+    for (size_t i = 0; i < r->st.n; i++) /* q, t and p */
+        if (i < nq || i == qd_slot_time(nq) || i >= momenta) {
+            qd_json_key(j, qd_expr_name(r->st.syms[i]));
+            qd_json_number(j, r->st.vals[i]);
         }
     qd_json_end_object(j);
 }
@@ -370,7 +304,7 @@ static void write_json(const ham_run *r, qd_buf *b) {
     qd_json j;
     qd_json_init(&j, b);
     qd_json_begin_object(&j);
-    qd_json_key(&j, "file");
+    qd_json_key(&j, "model");
     qd_json_string(&j, r->mf.path);
     qd_json_key(&j, "coordinates");
     qd_json_begin_array(&j);
@@ -431,7 +365,7 @@ static int emit(ham_run *r) {
 }
 
 static int run(ham_run *r) {
-    int rc = cli_load(r->ctx, r->file, r->nsets, r->sets, true, &r->mf);
+    int rc = cli_load(r->ctx, r->file, r->sets.n, r->sets.items, true, &r->mf);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->mf.model);
     /* a singular Hessian named as the Legendre transform sees it, before
      * Lagrange's equations fail on the same matrix */
@@ -456,8 +390,6 @@ int cli_cmd_hamiltonian(int argc, char **argv) {
         return QD_EXIT_FAIL;
     }
     rc = run(&r);
-    free(r.syms);
-    free(r.vals);
     cli_state_free(&r.st);
     qd_ham_free(r.h);
     qd_eom_free(r.e);

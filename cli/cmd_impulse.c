@@ -27,10 +27,8 @@
 enum { FMT_TEXT, FMT_JSON, FMT_LATEX };
 
 typedef struct imp_args {
-    const char *file, *at;
-    const char *sets[QD_CLI_MAX_LIST], *pres[QD_CLI_MAX_LIST];
-    size_t nsets, npres;
-    int format;
+    const char *file, *at, *format;
+    cli_list sets, pres;
 } imp_args;
 
 typedef struct imp_run {
@@ -39,46 +37,30 @@ typedef struct imp_run {
     size_t n;
     const qd_expr **q0, **qd0;   /* the state before, exact: n each */
     const qd_expr *t0;
-    cli_state par;               /* the parameters' values, to check --at */
     qd_impulse res;
 } imp_run;
 
-static const char usage_text[] =
-    "usage: qdot impulse FILE [--at \"q=..., q'=..., t=...\"] [--set NAME=VALUE]...\n"
-    "                         [--prescribe \"[NAME:] LHS = RHS, ...\"]... "
-    "[--format text|json|latex]";
-
 static const char *const formats[] = {"text", "json", "latex", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    imp_args *a = data;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--format")))
-        return cli_choice("--format", v, formats, &a->format);
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &a->at, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
-    if ((v = cli_value(argc, argv, i, "--prescribe")))
-        return cli_push("--prescribe", a->pres, &a->npres, QD_CLI_MAX_LIST, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--at", NULL, CLI_TEXT, offsetof(imp_args, at), "\"q=V, q'=V, t=V\"",
+     "the state just before (over the model's initial; others 0)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(imp_args, sets), "NAME=VALUE",
+     "give a parameter another value", NULL, NULL},
+    {"--prescribe", NULL, CLI_LIST, offsetof(imp_args, pres), "\"[NAME:] LHS = RHS, ...\"",
+     "velocities to hold just after (Thomson's problem)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(imp_args, format), "F", "output format", formats,
+     NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    "impulse", "FILE [options]",
+    "The motion just after a blow, a sudden constraint or a collision: the velocities after, "
+    "the impulsive reactions, the energies and the theorems of impulsive motion.",
+    opts, NULL, 1, 1, "FILE", false};
 
 /* ---- lists given on the command line --------------------------------------- */
-
-/* End of the item starting at i: the next comma outside brackets. */
-static size_t item_end(const char *text, size_t i) {
-    int depth = 0;
-    for (; text[i]; i++) {
-        if (text[i] == '(' || text[i] == '[')
-            depth++;
-        else if ((text[i] == ')' || text[i] == ']') && depth > 0)
-            depth--;
-        else if (text[i] == ',' && depth == 0)
-            break;
-    }
-    return i;
-}
 
 static bool blank(const char *s, size_t len) {
     for (size_t k = 0; k < len; k++)
@@ -123,14 +105,14 @@ static int add_prescription(imp_run *r, const char *text, size_t start, size_t l
 }
 
 static int add_prescriptions(imp_run *r, const imp_args *a) {
-    for (size_t k = 0; k < a->npres; k++) {
-        const char *text = a->pres[k];
+    for (size_t k = 0; k < a->pres.n; k++) {
+        const char *text = a->pres.items[k];
         if (strchr(text, '\n') || strchr(text, '#')) {
             cli_diag_error("--prescribe takes one line of items, without comments");
             return QD_EXIT_USAGE;
         }
         for (size_t i = 0; text[i] || i == 0;) {
-            size_t end = item_end(text, i);
+            size_t end = qd_state_item_end(text, i);
             if (blank(text + i, end - i)) {
                 cli_diag_error("--prescribe: an empty item in '%s'", text);
                 return QD_EXIT_USAGE;
@@ -148,134 +130,47 @@ static int add_prescriptions(imp_run *r, const imp_args *a) {
 
 /* ---- the state before ----------------------------------------------------------- */
 
-static void list_coords(const qd_model *m, char *out, size_t cap) {
-    size_t used = 0;
-    out[0] = '\0';
-    for (size_t i = 0; i < qd_model_ncoords(m) && used < cap; i++)
-        used += (size_t)snprintf(out + used, cap - used, "%s%s", i ? ", " : "",
-                                 qd_expr_name(qd_model_coord(m, i)));
-}
-
-/* The slot NAME names, *k: coordinate j (j), its velocity NAME' (n + j) or
- * t (2n); false (with the error printed) for anything else. */
-static bool find_slot(const imp_run *r, const char *name, size_t *k) {
-    size_t len = strlen(name), primes = 0;
-    while (len && name[len - 1] == '\'') {
-        len--;
-        primes++;
-    }
-    if (!strcmp(name, "t")) {
-        *k = 2 * r->n;
-        return true;
-    }
-    for (size_t j = 0; j < r->n && primes < 2; j++) {
-        const char *q = qd_expr_name(qd_model_coord(r->mf.model, j));
-        if (strlen(q) == len && !strncmp(q, name, len)) {
-            *k = primes ? r->n + j : j;
-            return true;
-        }
-    }
-    char known[512];
-    list_coords(r->mf.model, known, sizeof known);
-    cli_diag_error("--at: '%s' is not a coordinate, a velocity or t (the coordinates are %s; "
-                   "velocities are written with a prime; parameters take --set)", name, known);
-    return false;
-}
-
-static const qd_expr **slot_of(imp_run *r, size_t k) {
-    return k == 2 * r->n ? &r->t0 : k >= r->n ? &r->qd0[k - r->n] : &r->q0[k];
-}
-
-/* VALUE, text[a, b): an expression in the parameters, kept exact. */
-static int read_value(imp_run *r, const char *text, size_t a, size_t b, const char *name,
-                      const qd_expr **out) {
-    char *copy = malloc(b - a + 1);
-    if (!copy)
-        return QD_EXIT_FAIL;
-    memcpy(copy, text + a, b - a);
-    copy[b - a] = '\0';
-    const qd_read_opts opts = {.new_symbols = false};
-    qd_diag err;
-    const qd_expr *e = qd_read(r->ctx, copy, &opts, &err);
-    size_t np = qd_model_nparams(r->mf.model), first = r->par.n - np;
-    double v = 0;
-    int rc = QD_EXIT_OK;
-    if (!e) {
-        err.offset += a;
-        cli_diag_read("--at", text, &err);
-        rc = QD_EXIT_USAGE;
-    } else if (qd_eval(r->ctx, e, np, r->par.syms + first, r->par.vals + first, &v) != QD_OK ||
-               !isfinite(v)) {
-        qd_ctx_clear_error(r->ctx);
-        cli_diag_error("--at %s: '%s' is not a finite number (a value may use the parameters, "
-                       "not the coordinates)", name, copy);
-        rc = QD_EXIT_USAGE;
-    } else {
-        *out = e;
-    }
-    free(copy);
-    return rc;
-}
-
-/* One NAME=VALUE of --at, text[a, b). */
-static int at_item(imp_run *r, const char *text, size_t a, size_t b, bool *given) {
-    const char *eq = memchr(text + a, '=', b - a);
-    size_t na = a, nb = eq ? (size_t)(eq - text) : b;
-    while (na < nb && isspace((unsigned char)text[na]))
-        na++;
-    while (nb > na && isspace((unsigned char)text[nb - 1]))
-        nb--;
-    if (!eq || na == nb || nb - na >= 128) {
-        cli_diag_error("--at: expected NAME=VALUE, not '%.*s'", (int)(b - a), text + a);
-        return QD_EXIT_USAGE;
-    }
-    char name[128];
-    memcpy(name, text + na, nb - na);
-    name[nb - na] = '\0';
-    size_t k;
-    if (!find_slot(r, name, &k))
-        return QD_EXIT_USAGE;
-    if (given[k]) {
-        cli_diag_error("--at: '%s' is given twice", name);
-        return QD_EXIT_USAGE;
-    }
-    given[k] = true;
-    return read_value(r, text, (size_t)(eq + 1 - text), b, name, slot_of(r, k));
-}
-
-static int parse_at(imp_run *r, const char *text) {
-    bool *given = calloc(2 * r->n + 1, sizeof *given);
-    if (!given)
-        return QD_EXIT_FAIL;
-    int rc = QD_EXIT_OK;
-    for (size_t i = 0; text[i] && rc == QD_EXIT_OK;) {
-        size_t end = item_end(text, i);
-        if (!blank(text + i, end - i))
-            rc = at_item(r, text, i, end, given);
-        i = text[end] ? end + 1 : end;
-    }
-    free(given);
-    return rc;
-}
-
-/* `initial` as written, then --at; 0 for what neither names. */
+/* `initial` as written, then --at, both kept exact (sin(al) is 1/2 at
+ * al = pi/6); 0 for what neither names.  Parameters are the model's. */
 static int state_before(imp_run *r, const char *at) {
     const qd_model *m = r->mf.model;
-    r->q0 = calloc(r->n + 1, sizeof *r->q0);
-    r->qd0 = calloc(r->n + 1, sizeof *r->qd0);
+    size_t n = r->n;
+    r->q0 = calloc(n + 1, sizeof *r->q0);
+    r->qd0 = calloc(n + 1, sizeof *r->qd0);
     const qd_expr *zero = qd_int(r->ctx, 0);
     if (!r->q0 || !r->qd0 || !zero) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    for (size_t j = 0; j < r->n; j++) {
+    for (size_t j = 0; j < n; j++) {
         const qd_expr *q = qd_model_initial_definition(m, j, 0);
         const qd_expr *v = qd_model_initial_definition(m, j, 1);
         r->q0[j] = q ? q : zero;
         r->qd0[j] = v ? v : zero;
     }
-    int rc = cli_state_init(r->ctx, m, &r->par);
-    return rc == QD_EXIT_OK && at ? parse_at(r, at) : rc;
+    if (!at)
+        return QD_EXIT_OK;
+    cli_state st = {0};
+    int rc = cli_state_init(r->ctx, m, &st);
+    const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
+    if (rc == QD_EXIT_OK && !exact) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
+    }
+    qd_state_read_opts o = {.refuse = QD_STATE_PARAMS, .exact = exact};
+    if (rc == QD_EXIT_OK)
+        rc = cli_state_read(r->ctx, m, "--at", at, &st, &o);
+    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
+        if (exact[qd_slot_coord(n, j)])
+            r->q0[j] = exact[qd_slot_coord(n, j)];
+        if (exact[qd_slot_velocity(n, j)])
+            r->qd0[j] = exact[qd_slot_velocity(n, j)];
+    }
+    if (rc == QD_EXIT_OK)
+        r->t0 = exact[qd_slot_time(n)];
+    free(exact);
+    cli_state_free(&st);
+    return rc;
 }
 
 /* ---- solving -------------------------------------------------------------------- */
@@ -717,7 +612,6 @@ static int emit(imp_run *r, int format) {
 
 static void run_free(imp_run *r) {
     qd_impulse_free(&r->res);
-    cli_state_free(&r->par);
     free(r->q0);
     free(r->qd0);
     cli_model_file_free(&r->mf);
@@ -726,9 +620,11 @@ static void run_free(imp_run *r) {
 
 int cli_cmd_impulse(int argc, char **argv) {
     imp_args a = {0};
-    int rc = cli_file_args(argc, argv, "impulse", usage_text, &a.file, parse_option, &a);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &a, pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    a.file = pos[0];
     imp_run r = {0};
     if (!(r.ctx = qd_ctx_new())) {
         cli_diag_error("out of memory");
@@ -736,7 +632,7 @@ int cli_cmd_impulse(int argc, char **argv) {
     }
     /* the closed forms stay in the parameters' names, as the other numeric
      * commands print them; --set gives the values */
-    rc = cli_load(r.ctx, a.file, a.nsets, a.sets, false, &r.mf);
+    rc = cli_load(r.ctx, a.file, a.sets.n, a.sets.items, false, &r.mf);
     if (rc == QD_EXIT_OK) {
         r.n = qd_model_ncoords(r.mf.model);
         rc = add_prescriptions(&r, &a);
@@ -746,7 +642,9 @@ int cli_cmd_impulse(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = solve(&r);
     if (rc == QD_EXIT_OK)
-        rc = emit(&r, a.format);
+        rc = emit(&r, !a.format || !strcmp(a.format, "text") ? FMT_TEXT
+                      : !strcmp(a.format, "json")           ? FMT_JSON
+                                                            : FMT_LATEX);
     run_free(&r);
     return rc;
 }

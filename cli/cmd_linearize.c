@@ -17,37 +17,76 @@
 #include "model_cli.h"
 #include "qdot/statespace.h"
 
-#define LIN_MAX_SETS 64
-
 enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
 static const char *const formats[] = {"text", "json", "c", "sympy", "octave", NULL};
 
 typedef struct lin_args {
-    const char *file, *about, *lqr, *independent;
-    const char *sets[LIN_MAX_SETS];
-    size_t nsets;
+    const char *file, *about, *lqr, *independent, *format_name;
+    cli_list sets;
     int format;
 } lin_args;
 
-static const char usage_text[] =
-    "usage: qdot linearize FILE [--about \"q=VALUE, q'=VALUE, F=VALUE, ...\"] "
-    "[--set NAME=VALUE]... [--lqr \"Q = diag(...), R = ...\"] "
-    "[--format text|json|c|sympy|octave] [--independent \"q1, ...\"]";
+static const cli_opt opts[] = {
+    {"--about", NULL, CLI_TEXT, offsetof(lin_args, about), "\"q=V, q'=V, F=V, ...\"",
+     "the operating point: coordinates, velocities, inputs (others 0)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(lin_args, sets), "NAME=VALUE",
+     "give a parameter another value", NULL, NULL},
+    {"--lqr", NULL, CLI_TEXT, offsetof(lin_args, lqr), "\"Q = ..., R = ...\"",
+     "also the LQR gain for these weights", NULL, NULL},
+    {"--independent", NULL, CLI_TEXT, offsetof(lin_args, independent), "\"q1, ...\"",
+     "the independent coordinates on a constraint manifold", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(lin_args, format_name), "F", "output format",
+     formats, NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    lin_args *a = data;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--format")))
-        return cli_choice("--format", v, formats, &a->format);
-    if ((v = cli_value(argc, argv, i, "--about")))
-        return cli_once("--about", &a->about, v);
-    if ((v = cli_value(argc, argv, i, "--independent")))
-        return cli_once("--independent", &a->independent, v);
-    if ((v = cli_value(argc, argv, i, "--lqr")))
-        return cli_once("--lqr", &a->lqr, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, LIN_MAX_SETS, v);
-    return cli_bad_option(argv[*i], usage_text);
+static const cli_spec spec = {
+    "linearize", "FILE [options]",
+    "The state-space form x' = A x + B u, y = C x + D u about an operating point, the "
+    "eigenvalues of A, controllability and observability.",
+    opts, NULL, 1, 1, "FILE", false};
+
+/* ---- --about ---------------------------------------------------------------------- */
+
+/* The operating point given: the slots --about names (the model's state with
+ * its inputs appended) and their values as read, exact (an expression in the
+ * parameters); qd_linearize takes 0 for the rest. */
+typedef struct lin_point {
+    size_t n;
+    const qd_expr **syms, **vals;
+} lin_point;
+
+static int read_about(qd_ctx *ctx, const qd_model *m, const char *text, lin_point *pt) {
+    cli_state st = {0};
+    int rc = cli_state_init(ctx, m, &st);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < qd_model_ninputs(m); i++) {
+        const qd_expr *u = qd_model_input(m, i);
+        if (qd_state_append(ctx, &st, 1, &u, NULL) != QD_OK)
+            rc = cli_diag_ctx(ctx);
+    }
+    const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
+    pt->syms = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->syms) : NULL;
+    pt->vals = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->vals) : NULL;
+    if (rc == QD_EXIT_OK && (!exact || !pt->syms || !pt->vals)) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
+    }
+    qd_state_read_opts o = {.exact = exact};
+    if (rc == QD_EXIT_OK)
+        rc = cli_state_read(ctx, m, "--about", text, &st, &o);
+    for (size_t k = 0; rc == QD_EXIT_OK && k < st.n; k++)
+        if (exact[k]) {
+            pt->syms[pt->n] = st.syms[k];
+            pt->vals[pt->n++] = exact[k];
+        }
+    free(exact);
+    cli_state_free(&st);
+    return rc;
+}
+
+static void point_free(lin_point *pt) {
+    free(pt->syms);
+    free(pt->vals);
 }
 
 /* ---- text ----------------------------------------------------------------------- */
@@ -368,7 +407,7 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
 static int run(qd_ctx *ctx, const lin_args *a) {
     cli_model_file mf = {0};
     qd_eom *e = NULL;
-    cli_point pt = {0};
+    lin_point pt = {0};
     qd_statespace s = {0};
     qd_care_result lqr = {0};
     qd_eom_opts eo = {.eliminate = true};
@@ -378,13 +417,13 @@ static int run(qd_ctx *ctx, const lin_args *a) {
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK)
-        rc = cli_load_derive(ctx, a->file, a->nsets, a->sets, false, &eo, &mf, &e);
+        rc = cli_load_derive(ctx, a->file, a->sets.n, a->sets.items, false, &eo, &mf, &e);
     if (rc == QD_EXIT_OK && (e->ncon || a->independent)) {
         rc = constrained(ctx, a, &mf, e);
         goto done;
     }
     if (rc == QD_EXIT_OK && a->about)
-        rc = cli_point_read(ctx, a->about, &pt);
+        rc = read_about(ctx, mf.model, a->about, &pt);
     if (rc == QD_EXIT_OK &&
         qd_linearize(ctx, e, mf.model, pt.n, pt.syms, pt.vals, &s) != QD_OK) {
         rc = qd_ctx_status(ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
@@ -397,7 +436,7 @@ static int run(qd_ctx *ctx, const lin_args *a) {
 done:
     qd_care_result_free(&lqr);
     qd_statespace_free(&s);
-    cli_point_free(&pt);
+    point_free(&pt);
     qd_eom_free(e);
     cli_model_file_free(&mf);
     return rc;
@@ -405,9 +444,14 @@ done:
 
 int cli_cmd_linearize(int argc, char **argv) {
     lin_args a = {0};
-    int rc = cli_file_args(argc, argv, "linearize", usage_text, &a.file, parse_option, &a);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &a, pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    a.file = pos[0];
+    for (int k = 0; a.format_name && formats[k]; k++)
+        if (!strcmp(formats[k], a.format_name))
+            a.format = k;
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx) {
         cli_diag_error("out of memory");

@@ -78,15 +78,6 @@ void cli_lin_set_state(cli_lin_run *r, const double *q, const double *qd) {
     }
 }
 
-/* "theta, phi": the independent coordinates, for messages. */
-static void independent_names(const cli_lin_run *r, char *out, size_t cap) {
-    size_t used = 0;
-    out[0] = '\0';
-    for (size_t j = 0; j < r->e->n && used < cap; j++)
-        used += (size_t)snprintf(out + used, cap - used, "%s%s", j ? ", " : "",
-                                 qd_expr_name(r->e->q[j]));
-}
-
 /* The index in e->q of the model's coordinate i, or e->n when a constraint
  * eliminated it. */
 static size_t eom_index(const cli_lin_run *r, size_t i) {
@@ -96,52 +87,31 @@ static size_t eom_index(const cli_lin_run *r, size_t i) {
     return j;
 }
 
-static int eliminated(const cli_lin_run *r, const char *what, const char *name) {
-    char names[512];
-    independent_names(r, names, sizeof names);
-    cli_diag_error("%s: %s is not an independent coordinate here (a constraint eliminates it); "
-                  "give values of %s", what, name, names);
-    return QD_EXIT_USAGE;
-}
-
+/* The reader refuses t, the parameters, the coordinates a constraint
+ * eliminated and, for a point at rest (qd NULL), the velocities. */
 int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q, double *qd) {
     const qd_model *m = r->mf.model;
     size_t nq = qd_model_ncoords(m);
-    cli_state s;
+    cli_state s = {0};
     int rc = cli_state_init(r->ctx, m, &s);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    /* NaN marks what the text does not give: every value read is finite */
-    for (size_t i = 0; i <= 2 * nq; i++)
-        s.vals[i] = NAN;
-    rc = cli_state_parse_as(r->ctx, m, what, text, &s);
-    if (rc == QD_EXIT_OK && !isnan(s.vals[2 * nq])) {
-        cli_diag_error("%s: give coordinates%s only, not the time t", what,
-                      qd ? " and velocities" : "");
-        rc = QD_EXIT_USAGE;
+    bool *given = rc == QD_EXIT_OK ? calloc(s.n, sizeof *given) : NULL;
+    if (rc == QD_EXIT_OK && !given) {
+        cli_diag_error("out of memory");
+        rc = QD_EXIT_FAIL;
     }
-    for (size_t i = 2 * nq + 1; rc == QD_EXIT_OK && i < s.n; i++)
-        if (s.vals[i] != r->st.vals[i]) {
-            cli_diag_error("%s: %s is a parameter: give it with --set", what,
-                          qd_expr_name(s.syms[i]));
-            rc = QD_EXIT_USAGE;
-        }
+    qd_state_read_opts o = {
+        .refuse = QD_STATE_TIME | QD_STATE_PARAMS | (qd ? 0 : QD_STATE_VELOCITIES),
+        .independent = r->e->q, .nindependent = r->e->n, .given = given};
+    if (rc == QD_EXIT_OK)
+        rc = cli_state_read(r->ctx, m, what, text, &s, &o);
     for (size_t i = 0; rc == QD_EXIT_OK && i < nq; i++) {
-        bool given_q = !isnan(s.vals[i]), given_v = !isnan(s.vals[nq + i]);
         size_t j = eom_index(r, i);
-        const char *name = qd_expr_name(s.syms[i]);
-        if ((given_q || given_v) && j == r->e->n)
-            rc = eliminated(r, what, name);
-        else if (given_v && !qd) {
-            cli_diag_error("%s: give coordinates only (a point at rest), not %s'", what, name);
-            rc = QD_EXIT_USAGE;
-        } else {
-            if (given_q)
-                q[j] = s.vals[i];
-            if (given_v)
-                qd[j] = s.vals[nq + i];
-        }
+        if (given[qd_slot_coord(nq, i)])
+            q[j] = s.vals[qd_slot_coord(nq, i)];
+        if (given[qd_slot_velocity(nq, i)])
+            qd[j] = s.vals[qd_slot_velocity(nq, i)];
     }
+    free(given);
     cli_state_free(&s);
     return rc;
 }
@@ -154,89 +124,75 @@ int cli_lin_coords(cli_lin_run *r, const char *what, const char *text, double *q
 
 /* ---- --box ------------------------------------------------------------------ */
 
-static size_t item_end(const char *t, size_t i) {
-    int depth = 0;
-    for (; t[i]; i++) {
-        if (t[i] == '(')
-            depth++;
-        else if (t[i] == ')' && depth)
-            depth--;
-        else if (t[i] == ',' && !depth)
-            break;
-    }
-    return i;
+/* text[a, b) trimmed. */
+static void trim(const char *text, size_t *a, size_t *b) {
+    while (*a < *b && isspace((unsigned char)text[*a]))
+        (*a)++;
+    while (*b > *a && isspace((unsigned char)text[*b - 1]))
+        (*b)--;
 }
 
-static int box_item(cli_lin_run *r, const char *item, double *lo, double *hi, bool *seen) {
-    const char *eq = strchr(item, '='), *dots = eq ? strstr(eq, "..") : NULL;
-    if (!eq || !dots) {
-        cli_diag_error("--box takes NAME=LOW..HIGH items, not '%s'", item);
+/* One NAME=LOW:HIGH of --box, text[a, b): the ends are constant
+ * expressions in the parameters (-pi:pi). */
+static int box_item(cli_lin_run *r, const char *text, size_t a, size_t b, double *lo,
+                    double *hi, bool *seen) {
+    const char *eq = memchr(text + a, '=', b - a);
+    size_t v = eq ? (size_t)(eq - text) + 1 : b, colon = v;
+    while (colon < b && text[colon] != ':')
+        colon++;
+    size_t na = a, nb = eq ? v - 1 : b;
+    trim(text, &na, &nb);
+    if (!eq || colon == b || na == nb) {
+        cli_diag_error("--box takes NAME=LOW:HIGH items, not '%.*s'", (int)(b - a), text + a);
         return QD_EXIT_USAGE;
     }
-    char name[128], a[256], b[256];
-    size_t nl = (size_t)(eq - item);
-    while (nl && isspace((unsigned char)item[nl - 1]))
-        nl--;
-    size_t s = 0;
-    while (s < nl && isspace((unsigned char)item[s]))
-        s++;
-    if (nl - s >= sizeof name || (size_t)(dots - eq - 1) >= sizeof a ||
-        strlen(dots + 2) >= sizeof b) {
-        cli_diag_error("--box: item too long: '%s'", item);
-        return QD_EXIT_USAGE;
-    }
-    memcpy(name, item + s, nl - s);
-    name[nl - s] = '\0';
-    memcpy(a, eq + 1, (size_t)(dots - eq - 1));
-    a[dots - eq - 1] = '\0';
-    strcpy(b, dots + 2);
-    size_t nq = qd_model_ncoords(r->mf.model), i = 0;
-    while (i < nq && strcmp(qd_expr_name(qd_model_coord(r->mf.model, i)), name))
+    const qd_model *m = r->mf.model;
+    size_t nq = qd_model_ncoords(m), i = 0;
+    while (i < nq && (strlen(qd_expr_name(qd_model_coord(m, i))) != nb - na ||
+                      strncmp(qd_expr_name(qd_model_coord(m, i)), text + na, nb - na)))
         i++;
-    if (i == nq) {
-        cli_diag_error("--box: '%s' is not a coordinate", name);
+    const char *name = i < nq ? qd_expr_name(qd_model_coord(m, i)) : NULL;
+    size_t j = i < nq ? eom_index(r, i) : 0;
+    if (!name) {
+        cli_diag_error("--box: '%.*s' is not a coordinate", (int)(nb - na), text + na);
         return QD_EXIT_USAGE;
     }
-    size_t j = eom_index(r, i);
-    if (j == r->e->n)
-        return eliminated(r, "--box", name);
+    if (j == r->e->n) {
+        cli_diag_error("--box: %s is not an independent coordinate here (a constraint "
+                       "eliminates it)", name);
+        return QD_EXIT_USAGE;
+    }
     if (seen[j]) {
         cli_diag_error("--box: %s is given twice", name);
         return QD_EXIT_USAGE;
     }
     seen[j] = true;
     const qd_expr *x;
-    int rc = cli_state_number(r->ctx, "--box", a, &x, &lo[j]);
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_number(r->ctx, "--box", b, &x, &hi[j]);
-    if (rc == QD_EXIT_OK && !(lo[j] < hi[j])) {
+    if (qd_state_value(r->ctx, m, text, v, colon - v, &x, &lo[j]) != QD_OK ||
+        qd_state_value(r->ctx, m, text, colon + 1, b - colon - 1, &x, &hi[j]) != QD_OK)
+        return cli_state_diag(r->ctx, "--box", text);
+    if (!(lo[j] < hi[j])) {
         cli_diag_error("--box: the range of %s is empty", name);
-        rc = QD_EXIT_USAGE;
-    } else if (rc == QD_EXIT_OK && !isfinite(hi[j] - lo[j])) {
-        cli_diag_error("--box: the range of %s is too wide: its width %g - (%g) overflows a double",
-                       name, hi[j], lo[j]);
-        rc = QD_EXIT_USAGE;
+        return QD_EXIT_USAGE;
     }
-    return rc;
+    if (!isfinite(hi[j] - lo[j])) {
+        cli_diag_error("--box: the range of %s is too wide: its width %g - (%g) overflows a "
+                       "double", name, hi[j], lo[j]);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
 }
 
 int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi) {
-    char item[512];
     bool *seen = calloc(r->e->n + 1, sizeof *seen);
     if (!seen)
         return QD_EXIT_FAIL;
     int rc = QD_EXIT_OK;
     for (size_t i = 0; text[i] && rc == QD_EXIT_OK;) {
-        size_t end = item_end(text, i);
-        if (end - i >= sizeof item) {
-            cli_diag_error("--box: item too long");
-            rc = QD_EXIT_USAGE;
-            break;
-        }
-        memcpy(item, text + i, end - i);
-        item[end - i] = '\0';
-        if (strspn(item, " \t") < strlen(item))
-            rc = box_item(r, item, lo, hi, seen);
+        size_t end = qd_state_item_end(text, i), a = i, b = end;
+        trim(text, &a, &b);
+        if (a < b)
+            rc = box_item(r, text, i, end, lo, hi, seen);
         i = text[end] ? end + 1 : end;
     }
     free(seen);

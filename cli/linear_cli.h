@@ -45,7 +45,7 @@ int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q,
 int cli_lin_coords(cli_lin_run *r, const char *what, const char *text, double *q);
 /* Put q and qd (NULL: at rest) into st at the coordinates' slots. */
 void cli_lin_set_state(cli_lin_run *r, const double *q, const double *qd);
-/* "q1=A..B, ...": the box; unnamed coordinates keep lo/hi as given. */
+/* "q1=A:B, ...": the box; unnamed coordinates keep lo/hi as given. */
 int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi);
 /* Equilibria with the options (near, box may be NULL). */
 int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out);

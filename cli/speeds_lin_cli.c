@@ -7,7 +7,6 @@
  * equilibrium or a state given with --about (a steady motion: the disk
  * rolling upright at spin u3 = 6).
  */
-#define _POSIX_C_SOURCE 200809L /* strdup, strtok_r */
 #include "linear_cli.h"
 
 #include <math.h>
@@ -22,15 +21,12 @@ typedef struct sp_run {
     qd_ctx *ctx;
     cli_model_file *mf;   /* borrowed */
     qd_speeds_eom *e;
-    size_t nvals;
-    const qd_expr **syms;   /* coordinates, speeds, t, parameters */
-    double *vals;
+    cli_state st;         /* q, q', t, the parameters, then the speeds */
 } sp_run;
 
 static void sp_free(sp_run *r) {
     qd_speeds_eom_free(r->e);
-    free(r->syms);
-    free(r->vals);
+    cli_state_free(&r->st);
 }
 
 /* Derive, and the state: coordinates, speeds, t at 0, parameters at their values. */
@@ -42,25 +38,16 @@ static int sp_load(sp_run *r, const char *refuse) {
     }
     if (!(r->e = qd_speeds_derive(r->ctx, r->mf->model, NULL)))
         return cli_eom_derive_error(r->ctx, r->mf);
-    const qd_model *m = r->mf->model;
-    size_t n = r->e->n, ns = r->e->m, np = qd_model_nparams(m);
-    r->nvals = n + ns + 1 + np;
-    r->syms = calloc(r->nvals, sizeof *r->syms);
-    r->vals = calloc(r->nvals, sizeof *r->vals);
-    if (!r->syms || !r->vals) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    for (size_t j = 0; j < n; j++)
-        r->syms[j] = r->e->q[j];
-    for (size_t k = 0; k < ns; k++)
-        r->syms[n + k] = r->e->u[k];
-    r->syms[n + ns] = qd_time(r->ctx);
-    for (size_t i = 0; i < np; i++) {
-        r->syms[n + ns + 1 + i] = qd_model_param(m, i);
-        r->vals[n + ns + 1 + i] = cli_param_value(m, i);
-    }
-    return QD_EXIT_OK;
+    int rc = cli_state_init(r->ctx, r->mf->model, &r->st);
+    if (rc == QD_EXIT_OK && qd_state_append(r->ctx, &r->st, r->e->m, r->e->u, NULL) != QD_OK)
+        rc = cli_diag_ctx(r->ctx);
+    return rc;
+}
+
+/* The value of the state at x (a coordinate or speed of the equations). */
+static double *value_of(const sp_run *r, const qd_expr *x) {
+    size_t k = qd_state_find(&r->st, x);
+    return k < r->st.n ? &r->st.vals[k] : NULL;
 }
 
 static void put_names(qd_buf *b, size_t n, const qd_expr *const *syms, const bool *pick) {
@@ -182,7 +169,7 @@ int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char
     qd_speeds_equilibria s = {0};
     int rc = sp_load(&r, refuse);
     if (rc == QD_EXIT_OK &&
-        qd_speeds_equilibria_find(ctx, r.e, r.mf->model, r.nvals, r.syms, r.vals, NULL, &s) !=
+        qd_speeds_equilibria_find(ctx, r.e, r.mf->model, r.st.n, r.st.syms, r.st.vals, NULL, &s) !=
             QD_OK)
         rc = cli_diag_ctx(ctx);
     if (rc == QD_EXIT_OK) {
@@ -199,38 +186,14 @@ int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char
 
 /* "theta=pi/2, u3=6": coordinates and speeds (others keep their values). */
 static int parse_about(sp_run *r, const char *text) {
-    char *copy = strdup(text), *save = NULL;
-    int rc = copy ? QD_EXIT_OK : QD_EXIT_FAIL;
-    size_t nstate = r->e->n + r->e->m;
-    for (char *item = copy ? strtok_r(copy, ",", &save) : NULL; item && rc == QD_EXIT_OK;
-         item = strtok_r(NULL, ",", &save)) {
-        char *eq = strchr(item, '=');
-        while (*item == ' ')
-            item++;
-        size_t len = eq ? (size_t)(eq - item) : 0;
-        while (len && item[len - 1] == ' ')
-            len--;
-        size_t k = 0;
-        while (k < nstate && !(strlen(qd_expr_name(r->syms[k])) == len &&
-                               !strncmp(qd_expr_name(r->syms[k]), item, len)))
-            k++;
-        if (!eq || k == nstate) {
-            cli_diag_error("--about: give NAME=VALUE for coordinates and speeds, not '%s'",
-                           item);
-            rc = QD_EXIT_USAGE;
-            break;
-        }
-        const qd_expr *exact;
-        rc = cli_state_number(r->ctx, "--about", eq + 1, &exact, &r->vals[k]);
-    }
-    free(copy);
-    return rc;
+    qd_state_read_opts o = {.refuse = QD_STATE_VELOCITIES | QD_STATE_TIME | QD_STATE_PARAMS};
+    return cli_state_read(r->ctx, r->mf->model, "--about", text, &r->st, &o);
 }
 
 /* No --about: the first equilibrium listed, free coordinates and speeds 0. */
 static int at_equilibrium(sp_run *r) {
     qd_speeds_equilibria s;
-    if (qd_speeds_equilibria_find(r->ctx, r->e, r->mf->model, r->nvals, r->syms, r->vals, NULL,
+    if (qd_speeds_equilibria_find(r->ctx, r->e, r->mf->model, r->st.n, r->st.syms, r->st.vals, NULL,
                                   &s) != QD_OK)
         return cli_diag_ctx(r->ctx);
     int rc = QD_EXIT_OK;
@@ -239,8 +202,11 @@ static int at_equilibrium(sp_run *r) {
                        "--about");
         rc = QD_EXIT_FAIL;
     }
-    for (size_t j = 0; rc == QD_EXIT_OK && j < s.nsolved; j++)
-        r->vals[s.solved[j]] = s.eq.pts[0].q[j];
+    for (size_t j = 0; rc == QD_EXIT_OK && j < s.nsolved; j++) {
+        double *v = value_of(r, r->e->q[s.solved[j]]);
+        if (v)
+            *v = s.eq.pts[0].q[j];
+    }
     qd_speeds_equilibria_free(&s);
     return rc;
 }
@@ -258,8 +224,10 @@ static void modes_text(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
     const qd_speeds_eom *e = r->e;
     qd_buf_puts(b, "state: ");
     for (size_t k = 0; k < e->n + e->m; k++) {
-        qd_buf_printf(b, "%s%s = ", k ? ", " : "", qd_expr_name(r->syms[k]));
-        cli_state_put_result(b, r->vals[k]);
+        const qd_expr *x = k < e->n ? e->q[k] : e->u[k - e->n];
+        const double *v = value_of(r, x);
+        qd_buf_printf(b, "%s%s = ", k ? ", " : "", qd_expr_name(x));
+        cli_state_put_result(b, v ? *v : NAN);
     }
     qd_buf_puts(b, "\nreduced system: (");
     for (size_t i = 0; i < lin->nkept; i++)
@@ -303,8 +271,10 @@ static void modes_json(const sp_run *r, const qd_speeds_linear *lin, const qd_mo
     qd_json_key(&j, "state");
     qd_json_begin_object(&j);
     for (size_t k = 0; k < e->n + e->m; k++) {
-        qd_json_key(&j, qd_expr_name(r->syms[k]));
-        qd_json_number(&j, r->vals[k]);
+        const qd_expr *x = k < e->n ? e->q[k] : e->u[k - e->n];
+        const double *v = value_of(r, x);
+        qd_json_key(&j, qd_expr_name(x));
+        qd_json_number(&j, v ? *v : NAN);
     }
     qd_json_end_object(&j);
     qd_json_key(&j, "kept");
@@ -347,17 +317,17 @@ static int scan(sp_run *r, const char *range, const char *about, size_t steps, b
     double a, b;
     int rc = cli_scan_range(r->ctx, range, name, sizeof name, &a, &b);
     const qd_expr *what = NULL;
-    for (size_t k = 0; rc == QD_EXIT_OK && k < r->nvals; k++)
-        if (r->syms[k] && !strcmp(qd_expr_name(r->syms[k]), name) &&
-            qd_symbol_role(r->syms[k]) != QD_ROLE_TIME)
-            what = r->syms[k];
+    for (size_t k = 0; rc == QD_EXIT_OK && k < r->st.n; k++)
+        if (r->st.syms[k] && !strcmp(qd_expr_name(r->st.syms[k]), name) &&
+            qd_symbol_role(r->st.syms[k]) != QD_ROLE_TIME)
+            what = r->st.syms[k];
     if (rc == QD_EXIT_OK && !what) {
         cli_diag_error("--scan: %s is not a parameter, coordinate or speed of the model", name);
         return QD_EXIT_USAGE;
     }
     qd_scan_opts o = {.steps = steps};
     qd_scan sc = {0};
-    if (rc == QD_EXIT_OK && qd_speeds_modes_scan(r->ctx, r->e, r->nvals, r->syms, r->vals, what,
+    if (rc == QD_EXIT_OK && qd_speeds_modes_scan(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, what,
                                                  a, b, &o, &sc) != QD_OK) {
         rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
         cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
@@ -386,7 +356,7 @@ int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const c
         return rc;
     }
     if (rc == QD_EXIT_OK &&
-        (qd_speeds_linear_about(ctx, r.e, r.nvals, r.syms, r.vals, &lin) != QD_OK ||
+        (qd_speeds_linear_about(ctx, r.e, r.st.n, r.st.syms, r.st.vals, &lin) != QD_OK ||
          qd_speeds_modes_solve(ctx, &lin, &res) != QD_OK))
         rc = cli_diag_ctx(ctx);
     if (rc == QD_EXIT_OK) {

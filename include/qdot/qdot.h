@@ -10,6 +10,7 @@
 #include "read.h"
 #include "eval.h"
 #include "model.h"
+#include "state.h"       /* issue 31: states and their reader */
 #include "mech.h"
 #include "certify.h"     /* issue 33: certified zero tests */
 #include "canonical.h"

@@ -15,6 +15,7 @@
 #include "base/mem.h"
 #include "mech/mech.h"
 #include "num/num.h"
+#include "qdot/state.h"
 
 #include <math.h>
 #include <string.h>
@@ -48,7 +49,7 @@ static qd_status state_value(qd__imp *s, const qd_expr *const *given, size_t j, 
 
 /* The value of x in the parameters alone (syms from index 2n + 1 on). */
 static qd_status param_value(const qd__imp *s, const qd_expr *x, double *out) {
-    size_t off = 2 * s->n + 1;
+    size_t off = qd_slot_param(s->n, 0);
     qd_status st = qd_eval(s->ctx, x, s->nv - off, s->syms + off, s->vals + off, out);
     if (st == QD_ERR_UNBOUND) {
         qd__ctx_recover(s->ctx);
@@ -61,35 +62,26 @@ static qd_status param_value(const qd__imp *s, const qd_expr *x, double *out) {
 
 qd_status qd__imp_state(qd__imp *s, const qd_impulse_opts *opts) {
     size_t n = s->n, np = qd_model_nparams(s->m);
-    s->nv = 2 * n + 1 + np;
+    s->nv = qd_slot_count(n, np);
     s->syms = qd__calloc(s->ctx, s->nv, sizeof *s->syms);
     s->vals = qd__calloc(s->ctx, s->nv, sizeof *s->vals);
     s->q0 = qd__calloc(s->ctx, n + 1, sizeof *s->q0);
     s->qd0 = qd__calloc(s->ctx, n + 1, sizeof *s->qd0);
     if (!s->syms || !s->vals || !s->q0 || !s->qd0)
         return nomem(s->ctx);
-    qd_status st = QD_OK;
-    for (size_t i = 0; i < np && st == QD_OK; i++) { /* a value may be exact: pi/6 */
-        s->syms[2 * n + 1 + i] = qd_model_param(s->m, i);
-        st = qd_model_param_number(s->m, i, &s->vals[2 * n + 1 + i]);
-        if (st == QD_ERR_ARG)
-            qd_ctx_error(s->ctx, QD_ERR_ARG, "parameter %s has no finite value",
-                         qd_expr_name(qd_model_param(s->m, i)));
-    }
-    s->syms[2 * n] = qd_time(s->ctx);
+    /* q, q', t and the parameters at their values (exact ones too: pi/6) */
+    qd_status st = qd_state_layout(s->ctx, s->m, n, s->e->q, s->syms, s->vals);
     s->t0 = opts && opts->t ? opts->t : qd_int(s->ctx, 0);
     if (st == QD_OK)
-        st = param_value(s, s->t0, &s->vals[2 * n]);
+        st = param_value(s, s->t0, &s->vals[qd_slot_time(n)]);
     for (size_t j = 0; j < n && st == QD_OK; j++) {
-        s->syms[j] = s->e->q[j];
-        s->syms[n + j] = s->e->qd[j];
         st = state_value(s, opts ? opts->q : NULL, j, 0, &s->q0[j]);
         if (st == QD_OK)
             st = state_value(s, opts ? opts->qd : NULL, j, 1, &s->qd0[j]);
         if (st == QD_OK)
             st = param_value(s, s->q0[j], &s->vals[j]);
         if (st == QD_OK)
-            st = param_value(s, s->qd0[j], &s->vals[n + j]);
+            st = param_value(s, s->qd0[j], &s->vals[qd_slot_velocity(n, j)]);
     }
     return st;
 }

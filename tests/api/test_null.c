@@ -48,6 +48,7 @@
 #include "qdot/sim.h"
 #include "qdot/speeds.h"
 #include "qdot/stability.h"
+#include "qdot/state.h"
 #include "qdot/statespace.h"
 #include "qdot/status.h"
 #include "qdot/sweep.h"
@@ -4069,6 +4070,98 @@ static void null_stability(void **state)
     teardown(&F);
 }
 
+static void null_state(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_state_layout */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_layout(NULL, F.model, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_layout(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_layout(F.ctx, F.model, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_layout(F.ctx, F.model, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_state_init */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_init(NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_init(F.ctx, NULL, NULL));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_init(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_state_append */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_append(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_append(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_append(F.ctx, NULL, 1, NULL, F.d));
+    reset(&F);
+    /* ---- qd_state_initial */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_initial(NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_initial(F.ctx, NULL, NULL));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_initial(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_state_find */
+    /* st NULL */
+    assert_true(qd_state_find(NULL, F.q) == 0);
+    reset(&F);
+    /* sym NULL */
+    assert_true(qd_state_find(NULL, NULL) == 0);
+    reset(&F);
+    /* ---- qd_state_free */
+    /* st NULL */
+    qd_state_free(NULL);
+    reset(&F);
+    /* ---- qd_state_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read(NULL, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read(F.ctx, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read(F.ctx, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read(F.ctx, F.model, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_state_value */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_value(NULL, F.model, "q", 1, 1, (const qd_expr * *)F.e, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_value(F.ctx, F.model, NULL, 1, 1, (const qd_expr * *)F.e, F.d));
+    reset(&F);
+    /* exact NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_value(F.ctx, F.model, "q", 1, 1, NULL, F.d));
+    reset(&F);
+    /* val NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_value(F.ctx, F.model, "q", 1, 1, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_state_item_end */
+    /* text NULL */
+    assert_true(qd_state_item_end(NULL, 1) == 0);
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_statespace(void **state)
 {
     (void)state;
@@ -4397,6 +4490,7 @@ int main(void)
         cmocka_unit_test(null_sim),
         cmocka_unit_test(null_speeds),
         cmocka_unit_test(null_stability),
+        cmocka_unit_test(null_state),
         cmocka_unit_test(null_statespace),
         cmocka_unit_test(null_status),
         cmocka_unit_test(null_sweep),

@@ -355,7 +355,7 @@ def errors(build):
             ("collision", [EX / "kepler_polar.qd", "--at", "r=1, r'=0.4, theta'=0"],
              "reaches r = "),
             ("not separable", [quartic, "--at", "x=0.3, y=0.2"], "qdot poincare"),
-            ("bad option", [EX / "action_pendulum.qd", "--bogus"], "usage"),
+            ("bad option", [EX / "action_pendulum.qd", "--bogus"], "has no option"),
             ("time-dependent H", [EX / "action_pendulum_lengthening.qd"], "adiabatic invariant"),
             ("damping", [EX / "damped_oscillator.qd"], "dissipation"),
         ]

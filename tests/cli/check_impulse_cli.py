@@ -583,7 +583,7 @@ def test_errors(qdot, tmp):
                  ex / 'chain_struck.qd', '--prescribe', "th1' = th2', zz' = 1")
     expect_error(qdot, 'at unknown', 2, ['--at', 'zz', 'th1'], ex / 'chain_struck.qd',
                  '--at', 'zz=1')
-    expect_error(qdot, 'at coordinate value', 2, ['--at th1'], ex / 'chain_struck.qd',
+    expect_error(qdot, 'at coordinate value', 2, ['--at:1:5', 'not a constant'], ex / 'chain_struck.qd',
                  '--at', 'th1=x')
     expect_error(qdot, 'no impulse', 2, ['no impulse'], ex / 'atwood.qd')
     expect_error(qdot, 'format', 2, ['--format'], ex / 'chain_struck.qd', '--format', 'csv')

@@ -82,7 +82,7 @@ CASES = [
      "rate theta' is given twice"),
     (['stability', POWER, '--ignore', 'theta', '--momentum', 'p_theta=1, p_theta=2'], USAGE,
      'p_theta is given twice'),
-    (['equilibria', COMPOUND, '--box', 'theta=0..1, theta=1..2'], USAGE, 'theta is given twice'),
+    (['equilibria', COMPOUND, '--box', 'theta=0:1, theta=1:2'], USAGE, 'theta is given twice'),
     # was: --at r=r evaluated the coordinate at 0 ("equations not defined")
     (['stability', POWER, '--ignore', 'theta', '--at', 'r=r'], USAGE,
      "takes only pi, e and the model's parameters"),
@@ -96,7 +96,7 @@ CASES = [
     # eliminated coordinates (was: a heap overflow for --near/--about, and --box,
     # --initial silently applied to the wrong coordinate)
     (['equilibria', COMPOUND, '--near', 'y=0.1'], USAGE, 'y is not an independent coordinate'),
-    (['equilibria', COMPOUND, '--box', 'x=-1..1'], USAGE, 'x is not an independent coordinate'),
+    (['equilibria', COMPOUND, '--box', 'x=-1:1'], USAGE, 'x is not an independent coordinate'),
     (['modes', COMPOUND, '--about', 'x=0.5'], USAGE, 'x is not an independent coordinate'),
     (['modes', COMPOUND, '--initial', "theta=0.1, y'=1"], USAGE,
      'y is not an independent coordinate'),
@@ -104,9 +104,9 @@ CASES = [
     (['modes', COMPOUND, '--about', 'theta=1, m=3'], USAGE, 'm is a parameter'),
     (['modes', COMPOUND, '--about', 'theta=1, t=3'], USAGE, 'not the time t'),
     # errors name the option they come from (was: "--at:" for --near, --about, --initial)
-    (['equilibria', 'one.qd', '--near', 'x'], USAGE, "--near: expected NAME=VALUE, not 'x'"),
+    (['equilibria', 'one.qd', '--near', 'x'], USAGE, "--near:1:1: error: expected NAME=VALUE, not 'x'"),
     (['modes', 'one.qd', '--about', 'x='], USAGE, '--about:1:3: error: empty expression'),
-    (['modes', 'one.qd', '--initial', 'zz=1'], USAGE, "--initial: unknown name 'zz'"),
+    (['modes', 'one.qd', '--initial', 'zz=1'], USAGE, "--initial:1:1: error: unknown name 'zz'"),
     (['modes', 'one.qd', '--at-equilibrium', '2'], USAGE, 'there is 1 equilibrium'),
     # was: -o "" wrote /NAME.c and /NAME.h
     (['codegen', 'one.qd', '-o', ''], USAGE, '-o takes a directory'),
