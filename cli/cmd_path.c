@@ -12,7 +12,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "qdot/path.h"
@@ -256,146 +255,6 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     return QD_EXIT_OK;
 }
 
-static void put(qd_buf *b, double x) {
-    cli_state_put_result(b, x);
-}
-
-/* The name the ends' time goes by: t, or the model's independent x. */
-static const char *time_name(const path_run *r) {
-    const char *x = qd_model_independent(r->mf.model);
-    return x ? x : "t";
-}
-
-static const char *mult_name(const path_run *r, size_t i) {
-    return qd_expr_name(qd_model_isoperimetric_multiplier(r->mf.model, i));
-}
-
-/* Foci and minimum, or why they are not there. */
-static void write_second_variation(const path_run *r, const qd_path *p, qd_buf *b) {
-    if (!p->examined && (p->nmult || r->any_free)) {
-        qd_buf_printf(b, "\n  kinetic foci: not examined (%s)\n  minimum: not examined",
-                      p->nmult ? "isoperimetric constraint" : "free end");
-        return;
-    }
-    qd_buf_puts(b, "\n  kinetic foci:");
-    for (size_t k = 0; k < p->nfoci; k++) {
-        qd_buf_puts(b, k ? ", " : " ");
-        put(b, p->foci[k]);
-        if (p->foci_mult && p->foci_mult[k] > 1) /* J loses more than one rank (foci.c) */
-            qd_buf_printf(b, " (multiplicity %zu)", p->foci_mult[k]);
-    }
-    qd_buf_printf(b, "%s\n  minimum: %s", p->nfoci ? "" : " none", p->minimum ? "yes" : "no");
-}
-
-static void write_text(const path_run *r, qd_buf *b) {
-    size_t n = r->e->n;
-    qd_buf_printf(b, "paths: %zu\n", r->ps.count);
-    for (size_t i = 0; i < r->ps.count; i++) {
-        const qd_path *p = &r->ps.paths[i];
-        qd_buf_printf(b, "path %zu:\n  action: ", i + 1);
-        put(b, p->action);
-        qd_buf_puts(b, "\n  initial velocities: ");
-        for (size_t j = 0; j < n; j++) {
-            qd_buf_printf(b, "%s%s' = ", j ? ", " : "", qd_expr_name(r->e->q[j]));
-            put(b, p->v0[j]);
-        }
-        for (size_t k = 0; k < p->nmult; k++) {
-            qd_buf_printf(b, "%s%s = ", k ? ", " : "\n  multipliers: ", mult_name(r, k));
-            put(b, p->mult[k]);
-        }
-        if (r->energy) {
-            qd_buf_puts(b, "\n  least action (Maupertuis, integral of p.dq): ");
-            put(b, p->abbreviated);
-            qd_buf_puts(b, "\n  time: ");
-            put(b, p->t[p->nsamples - 1] - p->t[0]);
-        }
-        write_second_variation(r, p, b);
-        qd_buf_printf(b, "\n  samples (%s", time_name(r));
-        for (size_t j = 0; j < n; j++)
-            qd_buf_printf(b, ", %s", qd_expr_name(r->e->q[j]));
-        size_t step = p->nsamples > 11 ? (p->nsamples - 1) / 10 : 1;
-        qd_buf_printf(b, "; every %zu of %zu, --format json for all):\n", step, p->nsamples);
-        for (size_t k = 0; k < p->nsamples; k += step) {
-            qd_buf_puts(b, "   ");
-            for (size_t j = 0; j <= n; j++) {
-                qd_buf_puts(b, " ");
-                double x = j ? p->q[k * n + j - 1] : p->t[k];
-                put(b, fabs(x) < 1e-10 ? 0 : x);  /* an end reached to the tolerance */
-            }
-            qd_buf_puts(b, "\n");
-        }
-    }
-}
-
-static void write_json(const path_run *r, qd_buf *b) {
-    size_t n = r->e->n;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "count");
-    qd_json_number(&j, (double)r->ps.count);
-    qd_json_key(&j, "paths");
-    qd_json_begin_array(&j);
-    for (size_t i = 0; i < r->ps.count; i++) {
-        const qd_path *p = &r->ps.paths[i];
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "action");
-        qd_json_number(&j, p->action);
-        if (r->energy) {
-            qd_json_key(&j, "least_action");
-            qd_json_number(&j, p->abbreviated);
-            qd_json_key(&j, "time");
-            qd_json_number(&j, p->t[p->nsamples - 1] - p->t[0]);
-        }
-        qd_json_key(&j, "initial_velocities");
-        qd_json_begin_object(&j);
-        for (size_t k = 0; k < n; k++) {
-            char name[160];
-            snprintf(name, sizeof name, "%s'", qd_expr_name(r->e->q[k]));
-            qd_json_key(&j, name);
-            qd_json_number(&j, p->v0[k]);
-        }
-        qd_json_end_object(&j);
-        qd_json_key(&j, "multipliers");
-        qd_json_begin_object(&j);
-        for (size_t k = 0; k < p->nmult; k++) {
-            qd_json_key(&j, mult_name(r, k));
-            qd_json_number(&j, p->mult[k]);
-        }
-        qd_json_end_object(&j);
-        qd_json_key(&j, "residual");
-        qd_json_number(&j, p->residual);
-        qd_json_key(&j, "samples");
-        qd_json_begin_array(&j);
-        for (size_t s = 0; s < p->nsamples; s++) {
-            qd_json_begin_array(&j);
-            qd_json_number(&j, p->t[s]);
-            for (size_t k = 0; k < n; k++)
-                qd_json_number(&j, p->q[s * n + k]);
-            qd_json_end_array(&j);
-        }
-        qd_json_end_array(&j);
-        qd_json_key(&j, "kinetic_foci");
-        qd_json_begin_array(&j);
-        for (size_t k = 0; k < p->nfoci; k++)
-            qd_json_number(&j, p->foci[k]);
-        qd_json_end_array(&j);
-        qd_json_key(&j, "kinetic_foci_multiplicity"); /* Jacobi fields vanishing there */
-        qd_json_begin_array(&j);
-        for (size_t k = 0; k < p->nfoci; k++)
-            qd_json_number(&j, p->foci_mult ? (double)p->foci_mult[k] : 1);
-        qd_json_end_array(&j);
-        qd_json_key(&j, "minimum");
-        qd_json_bool(&j, p->minimum);
-        qd_json_key(&j, "examined");  /* false: foci and minimum not decided */
-        qd_json_bool(&j, p->examined);
-        qd_json_end_object(&j);
-    }
-    qd_json_end_array(&j);
-    qd_json_end_object(&j);
-    qd_buf_puts(b, "\n");
-}
-
 static int run(path_run *r, const path_args *a) {
     int rc = cli_load_derive(r->ctx, a->file, a->nsets, a->sets, false, NULL, &r->mf, &r->e);
     qd_path_opts o = {0};
@@ -415,10 +274,11 @@ static int run(path_run *r, const path_args *a) {
     if (st != QD_OK)
         return cli_diag_ctx(r->ctx);
     qd_buf b = QD_BUF_INIT;
-    if (a->json)
-        write_json(r, &b);
-    else
-        write_text(r, &b);
+    if ((a->json ? qd_path_json(r->ctx, &r->ps, r->mf.model, r->e, &b)
+                 : qd_path_print(r->ctx, &r->ps, r->mf.model, r->e, &o, &b)) != QD_OK) {
+        qd_buf_free(&b);
+        return cli_diag_ctx(r->ctx);
+    }
     return cli_emit(&b, "paths");
 }
 

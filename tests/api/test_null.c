@@ -1426,6 +1426,29 @@ static void null_hj(void **state)
     /* h NULL */
     assert_int_equal(QD_ERR_ARG, qd_hj_solve(F.ctx, NULL));
     reset(&F);
+    /* ---- qd_hj_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(NULL, NULL, F.model, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(F.ctx, NULL, F.model, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(F.ctx, NULL, NULL, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(F.ctx, NULL, F.model, "q", (qd_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_hj_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_json(NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_json(F.ctx, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_json(F.ctx, NULL, "q", NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -1521,6 +1544,43 @@ static void null_integrals(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_integrals_check(F.ctx, NULL, "q", F.q, NULL));
+    reset(&F);
+    /* ---- qd_integrals_given_derive */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(NULL, NULL, F.model, (qd_integrals_given *)(void *)F.blob));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(F.ctx, NULL, F.model, (qd_integrals_given *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(F.ctx, NULL, NULL, (qd_integrals_given *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(F.ctx, NULL, F.model, NULL));
+    reset(&F);
+    /* ---- qd_integrals_given_free */
+    /* g NULL */
+    qd_integrals_given_free(NULL);
+    reset(&F);
+    /* ---- qd_integrals_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_print(NULL, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_print(F.ctx, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_print(F.ctx, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_integrals_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_json(NULL, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_json(F.ctx, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_json(F.ctx, NULL, NULL, "q", NULL));
     reset(&F);
     teardown(&F);
 }
@@ -1821,6 +1881,26 @@ static void null_metric(void **state)
     reset(&F);
     /* low NULL */
     assert_int_equal(QD_ERR_ARG, qd_metric_lower(F.ctx, NULL, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_metric_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_print(NULL, NULL, (const qd_expr * const *)F.e, (qd_format){0}, &F.buf));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_print(F.ctx, NULL, (const qd_expr * const *)F.e, (qd_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_print(F.ctx, NULL, (const qd_expr * const *)F.e, (qd_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_metric_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_json(NULL, NULL, (const qd_expr * const *)F.e, &F.buf));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_json(F.ctx, NULL, (const qd_expr * const *)F.e, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_json(F.ctx, NULL, (const qd_expr * const *)F.e, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -2623,6 +2703,38 @@ static void null_path(void **state)
     /* first_variation NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, NULL));
     reset(&F);
+    /* ---- qd_path_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(NULL, NULL, F.model, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* ps NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, F.model, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, F.model, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, F.model, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_path_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(NULL, NULL, F.model, F.eom, &F.buf));
+    reset(&F);
+    /* ps NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, F.model, F.eom, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, NULL, F.eom, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, F.model, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, F.model, F.eom, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -3197,6 +3309,38 @@ static void null_routh(void **state)
     /* ---- qd_routh_free */
     /* r NULL */
     qd_routh_free(NULL);
+    reset(&F);
+    /* ---- qd_routh_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(NULL, NULL, F.model, F.eom, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, F.model, F.eom, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, NULL, F.eom, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, F.model, NULL, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, F.model, F.eom, "q", (qd_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_routh_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(NULL, NULL, F.model, F.eom, "q", &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, F.model, F.eom, "q", &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, NULL, F.eom, "q", &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, F.model, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, F.model, F.eom, "q", NULL));
     reset(&F);
     /* ---- qd_routh_lookup */
     /* ctx NULL */
