@@ -12,7 +12,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "qdot/json.h"
 #include "model_cli.h"
 #include "qdot/zvc.h"
 
@@ -30,8 +29,7 @@ typedef struct zvc_run {
     qd_zvc_box box;
     double level;
     double *q;               /* e->n: the other coordinates' values */
-    qd_equilibria eq;        /* in the box */
-    qd_contour c;
+    qd_zvc_picture pic;
 } zvc_run;
 
 static const char usage_text[] =
@@ -168,34 +166,6 @@ static int read_level(zvc_run *r, const zvc_args *a) {
     return cli_state_number(r->lr.ctx, "--level", a->level, &x, &r->level);
 }
 
-/* ---- the work -------------------------------------------------------------------------- */
-
-/* The equilibria in the box (the other coordinates in their default box). */
-static int equilibria(zvc_run *r) {
-    cli_lin_run *lr = &r->lr;
-    size_t n = lr->e->n;
-    double *lo = malloc((n + 1) * sizeof *lo), *hi = malloc((n + 1) * sizeof *hi);
-    bool *angle = malloc((n + 1) * sizeof *angle);
-    int rc = lo && hi && angle ? QD_EXIT_OK : QD_EXIT_FAIL;
-    if (rc == QD_EXIT_OK &&
-        qd_equilibria_default_box(lr->ctx, lr->e, lr->mf.model, angle, lo, hi) != QD_OK)
-        rc = cli_diag_ctx(lr->ctx);
-    if (rc == QD_EXIT_OK) {
-        lo[r->box.ix] = r->box.lo[0];
-        hi[r->box.ix] = r->box.hi[0];
-        lo[r->box.iy] = r->box.lo[1];
-        hi[r->box.iy] = r->box.hi[1];
-        qd_equilibria_opts o = {.lo = lo, .hi = hi, .numeric_only = true};
-        if (qd_equilibria_find(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
-                               &o, &r->eq) != QD_OK)
-            rc = cli_diag_ctx(lr->ctx);
-    }
-    free(lo);
-    free(hi);
-    free(angle);
-    return rc;
-}
-
 static int run(zvc_run *r, const zvc_args *a) {
     cli_lin_run *lr = &r->lr;
     if (lr->e->n < 2) {
@@ -216,136 +186,12 @@ static int run(zvc_run *r, const zvc_args *a) {
         return rc;
     cli_lin_set_state(lr, r->q, NULL);
     r->box.nx = r->box.ny = a->n ? (size_t)a->n : 400;
-    if (qd_zvc_curves(lr->ctx, lr->e, &r->z, &r->box, lr->st.n, lr->st.syms, lr->st.vals,
-                      r->level, &r->c) != QD_OK)
+    /* csv holds the curves only: no equilibria sought */
+    if (qd_zvc_picture_make(lr->ctx, lr->mf.model, lr->e, &r->z, &r->box, lr->st.n,
+                            lr->st.syms, lr->st.vals, r->level, a->format != 1,
+                            &r->pic) != QD_OK)
         return cli_diag_ctx(lr->ctx);
-    return a->format == 1 ? QD_EXIT_OK : equilibria(r);
-}
-
-/* ---- output ------------------------------------------------------------------------------ */
-
-/* W at equilibrium k (the other coordinates as they are in the state). */
-static double W_at(zvc_run *r, const double *q) {
-    cli_lin_run *lr = &r->lr;
-    double w = NAN;
-    cli_lin_set_state(lr, q, NULL);
-    if (qd_eval(lr->ctx, r->z.W, lr->st.n, lr->st.syms, lr->st.vals, &w) != QD_OK)
-        qd_ctx_clear_error(lr->ctx);
-    return w;
-}
-
-static void put_point(zvc_run *r, const double *q, qd_buf *b) {
-    for (size_t j = 0; j < r->lr.e->n; j++) {
-        qd_buf_printf(b, "%s%s = ", j ? ", " : "", qd_expr_name(r->lr.e->q[j]));
-        cli_state_put_result(b, q[j]);
-    }
-}
-
-static void put_text(zvc_run *r, qd_buf *b) {
-    qd_ctx *ctx = r->lr.ctx;
-    const char *x = qd_expr_name(r->lr.e->q[r->box.ix]), *y = qd_expr_name(r->lr.e->q[r->box.iy]);
-    qd_buf_puts(b, "Jacobi's integral: h = ");
-    qd_print(ctx, r->z.h, QD_FMT_TEXT, b);
-    qd_buf_puts(b, "\nat rest: W = ");
-    qd_print(ctx, r->z.W, QD_FMT_TEXT, b);
-    qd_buf_puts(b, "\nlevel: h = ");
-    cli_state_put_result(b, r->level);
-    qd_buf_puts(b, " (zero-velocity curves W = h; the motion stays where W <= h)\n");
-    qd_buf_printf(b, "equilibria in the box (h at rest there):\n");
-    for (size_t k = 0; k < r->eq.count; k++) {
-        qd_buf_puts(b, "  ");
-        put_point(r, r->eq.pts[k].q, b);
-        qd_buf_printf(b, " (%s): h = ", qd_eq_kind_name(r->eq.pts[k].kind));
-        cli_state_put_result(b, W_at(r, r->eq.pts[k].q));
-        qd_buf_puts(b, "\n");
-    }
-    qd_buf_printf(b, "%zu curve%s on a %zu x %zu grid:\n", r->c.count, r->c.count == 1 ? "" : "s",
-                  r->box.nx, r->box.ny);
-    for (size_t k = 0; k < r->c.count; k++) {
-        const qd_polyline *p = &r->c.lines[k];
-        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-        for (size_t i = 0; i < p->count; i++) {
-            x0 = fmin(x0, p->x[i]);
-            x1 = fmax(x1, p->x[i]);
-            y0 = fmin(y0, p->y[i]);
-            y1 = fmax(y1, p->y[i]);
-        }
-        qd_buf_printf(b, "  curve %zu: %s, %zu points, %s in [%.4g, %.4g], %s in [%.4g, %.4g]\n",
-                      k + 1, p->closed ? "closed" : "open", p->count, x, x0, x1, y, y0, y1);
-    }
-}
-
-static void put_csv(zvc_run *r, qd_buf *b) {
-    qd_buf_printf(b, "curve,%s,%s\n", qd_expr_name(r->lr.e->q[r->box.ix]),
-                  qd_expr_name(r->lr.e->q[r->box.iy]));
-    for (size_t k = 0; k < r->c.count; k++)
-        for (size_t i = 0; i < r->c.lines[k].count; i++) {
-            qd_buf_printf(b, "%zu,", k + 1);
-            cli_state_put_double(b, r->c.lines[k].x[i]);
-            qd_buf_puts(b, ",");
-            cli_state_put_double(b, r->c.lines[k].y[i]);
-            qd_buf_puts(b, "\n");
-        }
-}
-
-static void json_equilibria(zvc_run *r, qd_json *j) {
-    qd_json_key(j, "equilibria");
-    qd_json_begin_array(j);
-    for (size_t k = 0; k < r->eq.count; k++) {
-        qd_json_begin_object(j);
-        for (size_t i = 0; i < r->lr.e->n; i++) {
-            qd_json_key(j, qd_expr_name(r->lr.e->q[i]));
-            qd_json_number(j, r->eq.pts[k].q[i]);
-        }
-        qd_json_key(j, "kind");
-        qd_json_string(j, qd_eq_kind_name(r->eq.pts[k].kind));
-        qd_json_key(j, "h");
-        qd_json_number(j, W_at(r, r->eq.pts[k].q));
-        qd_json_end_object(j);
-    }
-    qd_json_end_array(j);
-}
-
-static void json_curves(zvc_run *r, qd_json *j) {
-    qd_json_key(j, "curves");
-    qd_json_begin_array(j);
-    for (size_t k = 0; k < r->c.count; k++) {
-        const qd_polyline *p = &r->c.lines[k];
-        qd_json_begin_object(j);
-        qd_json_key(j, "closed");
-        qd_json_bool(j, p->closed);
-        for (int axis = 0; axis < 2; axis++) {
-            qd_json_key(j, qd_expr_name(r->lr.e->q[axis ? r->box.iy : r->box.ix]));
-            qd_json_begin_array(j);
-            for (size_t i = 0; i < p->count; i++)
-                qd_json_number(j, axis ? p->y[i] : p->x[i]);
-            qd_json_end_array(j);
-        }
-        qd_json_end_object(j);
-    }
-    qd_json_end_array(j);
-}
-
-static void put_json(zvc_run *r, qd_buf *b) {
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "h");
-    qd_json_expr(&j, r->lr.ctx, r->z.h);
-    qd_json_key(&j, "W");
-    qd_json_expr(&j, r->lr.ctx, r->z.W);
-    qd_json_key(&j, "level");
-    qd_json_number(&j, r->level);
-    qd_json_key(&j, "grid");
-    qd_json_begin_array(&j);
-    qd_json_number(&j, (double)r->box.nx);
-    qd_json_number(&j, (double)r->box.ny);
-    qd_json_end_array(&j);
-    json_equilibria(r, &j);
-    json_curves(r, &j);
-    qd_json_end_object(&j);
-    qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    return QD_EXIT_OK;
 }
 
 int cli_cmd_zvc(int argc, char **argv) {
@@ -367,12 +213,15 @@ int cli_cmd_zvc(int argc, char **argv) {
         rc = run(&r, &a);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        (a.format == 0 ? put_text : a.format == 1 ? put_csv : put_json)(&r, &b);
-        rc = cli_emit(&b, "zero-velocity curves");
+        qd_status st = (a.format == 0 ? qd_zvc_print : a.format == 1 ? qd_zvc_csv
+                                                                      : qd_zvc_json)(
+            r.lr.ctx, r.lr.e, &r.pic, &b);
+        rc = st == QD_OK ? cli_emit(&b, "zero-velocity curves") : cli_diag_ctx(r.lr.ctx);
+        if (st != QD_OK)
+            qd_buf_free(&b);
     }
     free(r.q);
-    qd_contour_free(&r.c);
-    qd_equilibria_free(&r.eq);
+    qd_zvc_picture_free(&r.pic);
     cli_lin_free(&r.lr);
     qd_ctx_free(r.lr.ctx);
     return rc;

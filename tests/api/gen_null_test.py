@@ -109,6 +109,7 @@ NULLABLE = {
     'qd_symmetry_from_ops': {'R'},
     'qd_ufunc': {'args'},
     'qd_zvc_curves': {'syms', 'vals'},
+    'qd_zvc_picture_make': {'syms', 'vals'},
 }
 
 # Functions whose result for a NULL argument is not the type's error value

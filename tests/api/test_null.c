@@ -4199,6 +4199,65 @@ static void null_zvc(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_curves(F.ctx, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, NULL));
     reset(&F);
+    /* ---- qd_zvc_picture_make */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(NULL, F.model, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, NULL, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, F.model, NULL, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* z NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, F.model, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, F.model, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, NULL));
+    reset(&F);
+    /* ---- qd_zvc_picture_free */
+    /* p NULL */
+    qd_zvc_picture_free(NULL);
+    reset(&F);
+    /* ---- qd_zvc_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(F.ctx, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(F.ctx, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_zvc_csv */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(F.ctx, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(F.ctx, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_zvc_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(F.ctx, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(F.ctx, F.eom, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
