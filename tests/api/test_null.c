@@ -358,6 +358,73 @@ static void null_canonical(void **state)
     /* k NULL */
     qd_newham_free(NULL);
     reset(&F);
+    /* ---- qd_phase_init */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_init(NULL, F.model, (qd_phase *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_init(F.ctx, NULL, (qd_phase *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_init(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_phase_new_vars */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_new_vars(NULL, NULL));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_new_vars(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_phase_read */
+    /* ctx NULL */
+    assert_null(qd_phase_read(NULL, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_null(qd_phase_read(F.ctx, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_phase_read(F.ctx, NULL, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* err NULL */
+    assert_null(qd_phase_read(F.ctx, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_phase_read_list */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(NULL, NULL, "q", (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, "q", (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, NULL, (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, "q", NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* err NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, "q", (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_phase_ham */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_ham(NULL, NULL, false));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_ham(F.ctx, NULL, false));
+    reset(&F);
+    /* ---- qd_phase_dt */
+    /* ctx NULL */
+    assert_null(qd_phase_dt(NULL, NULL, F.q));
+    reset(&F);
+    /* ph NULL */
+    assert_null(qd_phase_dt(F.ctx, NULL, F.q));
+    reset(&F);
+    /* F NULL */
+    assert_null(qd_phase_dt(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_phase_free */
+    /* ph NULL */
+    qd_phase_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
