@@ -7,58 +7,57 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
 #include "model_cli.h"
 #include "model_file.h"
 
-#define MAX_SETS QD_CLI_MAX_LIST
+typedef struct hj_args {
+    const char *format, *energy;
+    bool solve;
+    cli_list set;
+} hj_args;
 
-typedef enum { FMT_TEXT, FMT_JSON, FMT_LATEX, FMT_SYMPY } hj_fmt;
+static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
+
+static const cli_opt opts[] = {
+    {"--format", NULL, CLI_CHOICE, offsetof(hj_args, format), "FORMAT", "how to write it",
+     formats, NULL},
+    {"--energy", NULL, CLI_TEXT, offsetof(hj_args, energy), "NAME",
+     "the name of the energy constant (default E)", NULL, NULL},
+    {"--solve", NULL, CLI_FLAG, offsetof(hj_args, solve), NULL,
+     "the motion from dW/dalpha = beta where the quadratures close", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(hj_args, set), "NAME=VALUE",
+     "read the model with this parameter value", NULL, NULL},
+    {0},
+};
+
+static const cli_spec spec = {
+    "hj", "FILE [options]",
+    "The Hamilton-Jacobi equation, whether and how it separates, and W.",
+    opts, NULL, 1, 1, "FILE", false,
+};
 
 typedef struct hj_run {
     qd_ctx *ctx;
     cli_model_file mf;
     qd_hj *h;
-    hj_fmt fmt;
-    const char *file, *energy, *sets[MAX_SETS];
-    size_t nsets;
-    bool solve;
+    hj_args a;
+    const char *file;
 } hj_run;
 
-static const char usage_text[] =
-    "usage: qdot hj FILE [--format text|json|latex|sympy] [--set NAME=VALUE]... "
-    "[--energy NAME] [--solve]";
-
-static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
-
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    hj_run *r = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        r->fmt = (hj_fmt)f;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--energy")))
-        return cli_once("--energy", &r->energy, v);
-    if (!strcmp(argv[*i], "--solve")) {
-        r->solve = true;
-        return QD_EXIT_OK;
-    }
-    return cli_bad_option(argv[*i], usage_text);
-}
-
 static int emit(hj_run *r) {
-    static const qd_format fmts[] = {QD_FMT_TEXT, QD_FMT_TEXT, QD_FMT_LATEX, QD_FMT_SYMPY};
+    const char *f = r->a.format ? r->a.format : "text";
     qd_buf b = QD_BUF_INIT;
-    qd_status st = r->fmt == FMT_JSON ? qd_hj_json(r->ctx, r->h, r->mf.path, &b)
-                                      : qd_hj_print(r->ctx, r->h, r->mf.model, r->mf.path,
-                                                    fmts[r->fmt], &b);
+    qd_status st = !strcmp(f, "json")
+                       ? qd_hj_json(r->ctx, r->h, r->mf.path, &b)
+                       : qd_hj_print(r->ctx, r->h, r->mf.model, r->mf.path,
+                                     !strcmp(f, "latex")   ? QD_FMT_LATEX
+                                     : !strcmp(f, "sympy") ? QD_FMT_SYMPY
+                                                           : QD_FMT_TEXT,
+                                     &b);
     if (st != QD_OK) {
         qd_buf_free(&b);
         return cli_diag_ctx(r->ctx);
@@ -67,21 +66,20 @@ static int emit(hj_run *r) {
 }
 
 static int run(hj_run *r) {
-    int rc = cli_load(r->ctx, r->file, r->nsets, r->sets, true, &r->mf);
+    int rc = cli_load(r->ctx, r->file, r->a.set.n, r->a.set.items, true, &r->mf);
     if (rc != QD_EXIT_OK)
         return rc;
-    qd_hj_opts opts = {.energy_name = r->energy};
-    if (!(r->h = qd_hj_derive(r->ctx, r->mf.model, &opts)))
+    qd_hj_opts ho = {.energy_name = r->a.energy};
+    if (!(r->h = qd_hj_derive(r->ctx, r->mf.model, &ho)))
         return cli_eom_derive_error(r->ctx, &r->mf);
-    r->solve = r->solve && r->h->separable;
-    if (r->solve && qd_hj_solve(r->ctx, r->h) != QD_OK)
+    if (r->a.solve && r->h->separable && qd_hj_solve(r->ctx, r->h) != QD_OK)
         return cli_diag_ctx(r->ctx);
     return emit(r);
 }
 
 int cli_cmd_hj(int argc, char **argv) {
-    hj_run r = {.fmt = FMT_TEXT};
-    int rc = cli_file_args(argc, argv, "hj", usage_text, &r.file, parse_option, &r);
+    hj_run r = {0};
+    int rc = cli_parse(&spec, argc, argv, &r.a, &r.file);
     if (rc != QD_EXIT_OK)
         return rc;
     if (!(r.ctx = qd_ctx_new())) {

@@ -11,54 +11,50 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "model_cli.h"
 #include "model_file.h"
-#include "state.h"
 #include "qdot/integrals.h"
 
-#define MAX_OPT QD_CLI_MAX_LIST
+typedef struct int_args {
+    const char *format;
+    bool no_search;
+    cli_list set, symmetry, integral;
+} int_args;
+
+static const char *const formats[] = {"text", "json", NULL};
+
+static const cli_opt opts[] = {
+    {"--format", NULL, CLI_CHOICE, offsetof(int_args, format), "FORMAT", "how to write it",
+     formats, NULL},
+    {"--symmetry", NULL, CLI_LIST, offsetof(int_args, symmetry), "\"[NAME:] x -> x + eps, ...\"",
+     "a symmetry to examine, as the model's `symmetry` statement takes it", NULL, NULL},
+    {"--integral", NULL, CLI_LIST, offsetof(int_args, integral), "\"[NAME:] EXPR\"",
+     "a proposed integral to check, as the `integral` statement takes it", NULL, NULL},
+    {"--no-search", NULL, CLI_FLAG, offsetof(int_args, no_search), NULL,
+     "do not look for symmetries by the coordinates' names", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(int_args, set), "NAME=VALUE",
+     "read the model with this parameter value", NULL, NULL},
+    {0},
+};
+
+static const cli_spec spec = {
+    "integrals", "FILE [options]",
+    "Integrals of motion: cyclic coordinates, Jacobi's integral, the energy balance, Noether.",
+    opts, NULL, 1, 1, "FILE", false,
+};
 
 typedef struct int_run {
     qd_ctx *ctx;
     cli_model_file mf;
     qd_eom *e;
     qd_integrals *I;
-    bool json, search;
-    const char *file, *sets[MAX_OPT], *syms[MAX_OPT], *ints[MAX_OPT];
-    size_t nsets, nsymopt, nintopt;
+    int_args a;
+    const char *file;
     qd_integrals_given g;
 } int_run;
-
-static const char usage_text[] =
-    "usage: qdot integrals FILE [--format text|json] [--set NAME=VALUE]... "
-    "[--symmetry \"[NAME:] x -> x + eps, ...\" | \"[NAME:] delta x = -y, ...\"]... "
-    "[--integral \"[NAME:] EXPR\"]... [--no-search]";
-
-static const char *const formats[] = {"text", "json", NULL};
-
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    int_run *r = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        r->json = f == 1;
-        return rc;
-    }
-    if (!strcmp(argv[*i], "--no-search")) {
-        r->search = false;
-        return QD_EXIT_OK;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", r->sets, &r->nsets, MAX_OPT, v);
-    if ((v = cli_value(argc, argv, i, "--symmetry")))
-        return cli_push("--symmetry", r->syms, &r->nsymopt, MAX_OPT, v);
-    if ((v = cli_value(argc, argv, i, "--integral")))
-        return cli_push("--integral", r->ints, &r->nintopt, MAX_OPT, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
 
 /* ---- --symmetry and --integral ------------------------------------------- */
 
@@ -67,21 +63,22 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 static int parse_given(int_run *r) {
     int rc = QD_EXIT_OK;
     char label[32];
-    for (size_t k = 0; rc == QD_EXIT_OK && k < r->nsymopt; k++) {
+    for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.symmetry.n; k++) {
         snprintf(label, sizeof label, "S%zu", k + 1);
-        rc = cli_symmetry(&r->mf, "--symmetry", r->syms[k], label);
+        rc = cli_symmetry(&r->mf, "--symmetry", r->a.symmetry.items[k], label);
     }
-    for (size_t k = 0; rc == QD_EXIT_OK && k < r->nintopt; k++) {
+    for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.integral.n; k++) {
         snprintf(label, sizeof label, "J%zu", k + 1);
-        rc = cli_integral(&r->mf, "--integral", r->ints[k], label);
+        rc = cli_integral(&r->mf, "--integral", r->a.integral.items[k], label);
     }
     return rc;
 }
 
 static int emit(int_run *r) {
     qd_buf b = QD_BUF_INIT;
-    qd_status st = r->json ? qd_integrals_json(r->ctx, r->I, &r->g, r->mf.path, &b)
-                           : qd_integrals_print(r->ctx, r->I, &r->g, r->mf.path, &b);
+    bool json = r->a.format && !strcmp(r->a.format, "json");
+    qd_status st = json ? qd_integrals_json(r->ctx, r->I, &r->g, r->mf.path, &b)
+                        : qd_integrals_print(r->ctx, r->I, &r->g, r->mf.path, &b);
     if (st != QD_OK) {
         qd_buf_free(&b);
         return cli_diag_ctx(r->ctx);
@@ -90,10 +87,10 @@ static int emit(int_run *r) {
 }
 
 static int run(int_run *r) {
-    int rc = cli_load_derive(r->ctx, r->file, r->nsets, r->sets, true, NULL, &r->mf, &r->e);
+    int rc = cli_load_derive(r->ctx, r->file, r->a.set.n, r->a.set.items, true, NULL, &r->mf, &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_given(r);
-    qd_integrals_opts o = {.search = r->search};
+    qd_integrals_opts o = {.search = !r->a.no_search};
     if (rc == QD_EXIT_OK && !(r->I = qd_integrals_derive(r->ctx, r->mf.model, r->e, &o)))
         rc = cli_diag_ctx(r->ctx);
     if (rc == QD_EXIT_OK && qd_integrals_given_derive(r->ctx, r->I, r->mf.model, &r->g) != QD_OK)
@@ -102,8 +99,8 @@ static int run(int_run *r) {
 }
 
 int cli_cmd_integrals(int argc, char **argv) {
-    int_run r = {.search = true};
-    int rc = cli_file_args(argc, argv, "integrals", usage_text, &r.file, parse_option, &r);
+    int_run r = {0};
+    int rc = cli_parse(&spec, argc, argv, &r.a, &r.file);
     if (rc != QD_EXIT_OK)
         return rc;
     if (!(r.ctx = qd_ctx_new())) {

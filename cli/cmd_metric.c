@@ -9,6 +9,7 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,34 +18,30 @@
 #include "qdot/metric.h"
 #include "qdot/read.h"
 
-static const char usage_text[] =
-    "usage: qdot metric FILE [--force \"G1, G2, ...\"] [--set NAME=VALUE]... "
-    "[--format text|json]";
+typedef struct mt_args {
+    const char *force, *format;
+    cli_list set;
+} mt_args;
 
 static const char *const formats[] = {"text", "json", NULL};
 
-typedef struct mt_args {
-    const char *file, *force;
-    const char *sets[QD_CLI_MAX_LIST];
-    size_t nsets;
-    bool json;
-} mt_args;
+static const cli_opt opts[] = {
+    {"--force", NULL, CLI_TEXT, offsetof(mt_args, force), "\"G1, G2, ...\"",
+     "a force by its covariant components G_i = F . dx/dq_i (default: the model's Q)", NULL,
+     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(mt_args, format), "FORMAT", "how to write it",
+     formats, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(mt_args, set), "NAME=VALUE",
+     "read the model with this parameter value", NULL, NULL},
+    {0},
+};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    mt_args *a = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        a->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--force")))
-        return cli_once("--force", &a->force, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_spec spec = {
+    "metric", "FILE [options]",
+    "The kinetic metric g_ij, Christoffel symbols, the geodesic form, a force's components "
+    "and the chart.",
+    opts, NULL, 1, 1, "FILE", false,
+};
 
 /* --force: n covariant components, comma-separated expressions. */
 static int read_force(qd_ctx *ctx, const char *text, size_t n, const qd_expr **G) {
@@ -79,8 +76,8 @@ static int read_force(qd_ctx *ctx, const char *text, size_t n, const qd_expr **G
     return QD_EXIT_OK;
 }
 
-static int run(qd_ctx *ctx, const mt_args *a, cli_model_file *mf) {
-    int rc = cli_load(ctx, a->file, a->nsets, a->sets, true, mf);
+static int run(qd_ctx *ctx, const char *file, const mt_args *a, cli_model_file *mf) {
+    int rc = cli_load(ctx, file, a->set.n, a->set.items, true, mf);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_metric *g = qd_metric_new(ctx, mf->model);
@@ -95,8 +92,9 @@ static int run(qd_ctx *ctx, const mt_args *a, cli_model_file *mf) {
         rc = read_force(ctx, a->force, g->n, G);
     qd_buf b = QD_BUF_INIT;
     const qd_expr *const *force = a->force ? G : NULL;
-    if (rc == QD_EXIT_OK && (a->json ? qd_metric_json(ctx, g, force, &b)
-                                     : qd_metric_print(ctx, g, force, QD_FMT_TEXT, &b)) != QD_OK)
+    bool json = a->format && !strcmp(a->format, "json");
+    if (rc == QD_EXIT_OK && (json ? qd_metric_json(ctx, g, force, &b)
+                                  : qd_metric_print(ctx, g, force, QD_FMT_TEXT, &b)) != QD_OK)
         rc = cli_diag_ctx(ctx);
     if (rc == QD_EXIT_OK)
         rc = cli_emit(&b, "metric");
@@ -109,14 +107,17 @@ static int run(qd_ctx *ctx, const mt_args *a, cli_model_file *mf) {
 
 int cli_cmd_metric(int argc, char **argv) {
     mt_args a = {0};
-    int rc = cli_file_args(argc, argv, "metric", usage_text, &a.file, parse_option, &a);
+    const char *file;
+    int rc = cli_parse(&spec, argc, argv, &a, &file);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_ctx *ctx = qd_ctx_new();
-    if (!ctx)
+    if (!ctx) {
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
+    }
     cli_model_file mf = {0};
-    rc = run(ctx, &a, &mf);
+    rc = run(ctx, file, &a, &mf);
     cli_model_file_free(&mf);
     qd_ctx_free(ctx);
     return rc;

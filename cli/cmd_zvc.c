@@ -8,19 +8,17 @@
  */
 #include "linear_cli.h"
 
-#include <ctype.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "model_cli.h"
 #include "qdot/zvc.h"
 
 typedef struct zvc_args {
-    const char *file, *box, *level, *through, *at;
-    long n;
-    const char *sets[QD_LIN_MAX_SETS];
-    size_t nsets;
-    int format;   /* 0 text, 1 csv, 2 json */
+    const char *file, *box, *level, *through, *at, *format;
+    size_t cells;
+    cli_list set;
 } zvc_args;
 
 typedef struct zvc_run {
@@ -32,101 +30,31 @@ typedef struct zvc_run {
     qd_zvc_picture pic;
 } zvc_run;
 
-static const char usage_text[] =
-    "usage: qdot zvc FILE --box \"x=A:B, y=C:D\" (--level H | --through \"x=..., y=...\" | "
-    "--at \"x=..., y=..., x'=..., y'=...\") [--n CELLS] [--set NAME=VALUE]... "
-    "[--format text|csv|json]";
-
 static const char *const formats[] = {"text", "csv", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    zvc_args *a = data;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--format")))
-        return cli_choice("--format", v, formats, &a->format);
-    if ((v = cli_value(argc, argv, i, "--box")))
-        return cli_once("--box", &a->box, v);
-    if ((v = cli_value(argc, argv, i, "--level")))
-        return cli_once("--level", &a->level, v);
-    if ((v = cli_value(argc, argv, i, "--through")))
-        return cli_once("--through", &a->through, v);
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &a->at, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--n"))) {
-        char *end;
-        a->n = strtol(v, &end, 10);
-        if (*end || a->n < 2 || a->n > 4000) {
-            cli_diag_error("--n takes a number of grid cells from 2 to 4000, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        return QD_EXIT_OK;
-    }
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--box", NULL, CLI_TEXT, offsetof(zvc_args, box), "\"x=A:B, y=C:D\"",
+     "the plane: two coordinates (across, up) and their ranges (required)", NULL, NULL},
+    {"--level", NULL, CLI_TEXT, offsetof(zvc_args, level), "H",
+     "the level h (an expression in the parameters)", NULL, NULL},
+    {"--through", NULL, CLI_TEXT, offsetof(zvc_args, through), "\"x=..., y=...\"",
+     "the level of W at this point at rest", NULL, NULL},
+    {"--at", NULL, CLI_TEXT, offsetof(zvc_args, at), "\"x=..., x'=..., ...\"",
+     "the level of h at this state", NULL, NULL},
+    {"--cells", NULL, CLI_COUNT, offsetof(zvc_args, cells), "N",
+     "grid cells each way, 2 to 4000 (default 400)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(zvc_args, format), "FORMAT",
+     "how to write it (csv: the curves' points)", formats, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(zvc_args, set), "NAME=VALUE",
+     "read the model with this parameter value", NULL, NULL},
+    {0},
+};
 
-/* ---- the box --------------------------------------------------------------------- */
-
-/* One NAME=A:B item: the coordinate's index (k-th of the box) and range. */
-static int box_item(zvc_run *r, const char *item, size_t k) {
-    const char *eq = strchr(item, '='), *colon = eq ? strchr(eq, ':') : NULL;
-    char name[128], lo[256];
-    size_t s = 0, e = eq ? (size_t)(eq - item) : 0, la = colon ? (size_t)(colon - eq - 1) : 0;
-    while (s < e && isspace((unsigned char)item[s]))
-        s++;
-    while (e > s && isspace((unsigned char)item[e - 1]))
-        e--;
-    if (!colon || e == s || e - s >= sizeof name || la >= sizeof lo) {
-        cli_diag_error("--box takes two NAME=A:B items, not '%s'", item);
-        return QD_EXIT_USAGE;
-    }
-    memcpy(name, item + s, e - s);
-    name[e - s] = '\0';
-    memcpy(lo, eq + 1, la);
-    lo[la] = '\0';
-    const qd_eom *q = r->lr.e;
-    size_t j = 0;
-    while (j < q->n && strcmp(qd_expr_name(q->q[j]), name))
-        j++;
-    if (j == q->n) {
-        cli_diag_error("--box: '%s' is not an independent coordinate", name);
-        return QD_EXIT_USAGE;
-    }
-    const qd_expr *x;
-    int rc = cli_state_number(r->lr.ctx, "--box", lo, &x, &r->box.lo[k]);
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_number(r->lr.ctx, "--box", colon + 1, &x, &r->box.hi[k]);
-    if (rc == QD_EXIT_OK && !(r->box.lo[k] < r->box.hi[k])) {
-        cli_diag_error("--box: the range of %s is empty", name);
-        rc = QD_EXIT_USAGE;
-    }
-    *(k ? &r->box.iy : &r->box.ix) = j;
-    return rc;
-}
-
-static int read_box(zvc_run *r, const char *text) {
-    const char *comma = strchr(text, ',');
-    if (!comma || strchr(comma + 1, ',')) {
-        cli_diag_error("--box takes two items, \"x=A:B, y=C:D\", not '%s'", text);
-        return QD_EXIT_USAGE;
-    }
-    char *first = malloc((size_t)(comma - text) + 1);
-    if (!first)
-        return QD_EXIT_FAIL;
-    memcpy(first, text, (size_t)(comma - text));
-    first[comma - text] = '\0';
-    int rc = box_item(r, first, 0);
-    free(first);
-    if (rc == QD_EXIT_OK)
-        rc = box_item(r, comma + 1, 1);
-    if (rc == QD_EXIT_OK && r->box.ix == r->box.iy) {
-        cli_diag_error("--box names %s twice: give two coordinates",
-                      qd_expr_name(r->lr.e->q[r->box.ix]));
-        rc = QD_EXIT_USAGE;
-    }
-    return rc;
-}
+static const cli_spec spec = {
+    "zvc", "FILE --box \"x=A:B, y=C:D\" (--level H | --through POINT | --at STATE) [options]",
+    "Jacobi's integral and the zero-velocity curves W = h over a box.",
+    opts, NULL, 1, 1, "FILE", false,
+};
 
 /* ---- the level --------------------------------------------------------------------- */
 
@@ -154,20 +82,22 @@ static int level_at(zvc_run *r, const char *what, const char *text, bool rest) {
 static int read_level(zvc_run *r, const zvc_args *a) {
     int given = !!a->level + !!a->through + !!a->at;
     if (given != 1) {
-        cli_diag_error("give the level once: --level H, --through POINT or --at STATE\n%s",
-                      usage_text);
+        cli_diag_error("give the level once: --level H, --through POINT or --at STATE");
         return QD_EXIT_USAGE;
     }
     if (a->through)
         return level_at(r, "--through", a->through, true);
     if (a->at)
         return level_at(r, "--at", a->at, false);
-    const qd_expr *x;
-    return cli_state_number(r->lr.ctx, "--level", a->level, &x, &r->level);
+    if (qd_model_number(r->lr.ctx, r->lr.mf.model, a->level, &r->level) == QD_OK)
+        return QD_EXIT_OK;
+    cli_diag_show("--level", a->level, qd_ctx_diag(r->lr.ctx));
+    return cli_exit(qd_ctx_status(r->lr.ctx));
 }
 
 static int run(zvc_run *r, const zvc_args *a) {
     cli_lin_run *lr = &r->lr;
+    bool csv = a->format && !strcmp(a->format, "csv");
     if (lr->e->n < 2) {
         cli_diag_error("zero-velocity curves need two coordinates; the model has %zu", lr->e->n);
         return QD_EXIT_USAGE;
@@ -175,20 +105,20 @@ static int run(zvc_run *r, const zvc_args *a) {
     r->q = calloc(lr->e->n + 1, sizeof *r->q);
     if (!r->q)
         return QD_EXIT_FAIL;
-    int rc = read_box(r, a->box);
+    if (qd_zvc_box_read(lr->ctx, lr->mf.model, lr->e, a->box, &r->box) != QD_OK) {
+        cli_diag_show("--box", a->box, qd_ctx_diag(lr->ctx));
+        return cli_exit(qd_ctx_status(lr->ctx));
+    }
+    if (qd_zvc_derive(lr->ctx, lr->mf.model, lr->e, &r->z) != QD_OK)
+        return cli_diag_ctx(lr->ctx);
+    int rc = read_level(r, a);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (qd_zvc_derive(lr->ctx, lr->mf.model, lr->e, &r->z) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->ctx));
-        return qd_ctx_status(lr->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
-    }
-    if ((rc = read_level(r, a)) != QD_EXIT_OK)
-        return rc;
     cli_lin_set_state(lr, r->q, NULL);
-    r->box.nx = r->box.ny = a->n ? (size_t)a->n : 400;
+    r->box.nx = r->box.ny = a->cells ? a->cells : 400;
     /* csv holds the curves only: no equilibria sought */
     if (qd_zvc_picture_make(lr->ctx, lr->mf.model, lr->e, &r->z, &r->box, lr->st.n,
-                            lr->st.syms, lr->st.vals, r->level, a->format != 1,
+                            lr->st.syms, lr->st.vals, r->level, !csv,
                             &r->pic) != QD_OK)
         return cli_diag_ctx(lr->ctx);
     return QD_EXIT_OK;
@@ -196,11 +126,12 @@ static int run(zvc_run *r, const zvc_args *a) {
 
 int cli_cmd_zvc(int argc, char **argv) {
     zvc_args a = {0};
-    int rc = cli_file_args(argc, argv, "zvc", usage_text, &a.file, parse_option, &a);
+    int rc = cli_parse(&spec, argc, argv, &a, &a.file);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!a.box) {
-        cli_diag_error("give the plane of the curves with --box \"x=A:B, y=C:D\"\n%s", usage_text);
+    if (!a.box || (a.cells && (a.cells < 2 || a.cells > 4000))) {
+        cli_diag_error(!a.box ? "give the plane of the curves with --box \"x=A:B, y=C:D\""
+                              : "--cells takes a number of grid cells from 2 to 4000");
         return QD_EXIT_USAGE;
     }
     zvc_run r = {.lr = {.ctx = qd_ctx_new()}};
@@ -208,14 +139,15 @@ int cli_cmd_zvc(int argc, char **argv) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = cli_lin_load(&r.lr, a.file, a.sets, a.nsets);
+    rc = cli_lin_load(&r.lr, a.file, a.set.items, a.set.n);
     if (rc == QD_EXIT_OK)
         rc = run(&r, &a);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        qd_status st = (a.format == 0 ? qd_zvc_print : a.format == 1 ? qd_zvc_csv
-                                                                      : qd_zvc_json)(
-            r.lr.ctx, r.lr.e, &r.pic, &b);
+        const char *f = a.format ? a.format : "text";
+        qd_status st = (!strcmp(f, "csv")    ? qd_zvc_csv
+                        : !strcmp(f, "json") ? qd_zvc_json
+                                             : qd_zvc_print)(r.lr.ctx, r.lr.e, &r.pic, &b);
         rc = st == QD_OK ? cli_emit(&b, "zero-velocity curves") : cli_diag_ctx(r.lr.ctx);
         if (st != QD_OK)
             qd_buf_free(&b);

@@ -86,6 +86,14 @@ typedef struct qd_zvc_box {
     size_t nx, ny;
 } qd_zvc_box;
 
+/* "x=A:B, y=C:D" read into box: two different coordinates of e (the
+ * equations of m) across and up, A and B constant expressions in m's
+ * parameters (qd_model_number), A < B; nx and ny are left as they are.
+ * QD_ERR_ARG with the error located in text (an unknown coordinate gets
+ * "did you mean"). */
+QD_API qd_status qd_zvc_box_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                 const char *text, qd_zvc_box *box);
+
 /* The zero-velocity curves W = level (qd_contour_grid on W at the grid's
  * points).  QD_ERR_ARG for a bad box (ix == iy, an index out of range, an
  * empty range, nx or ny 0). */

@@ -4260,6 +4260,22 @@ static void null_zvc(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_derive(F.ctx, F.model, F.eom, NULL));
     reset(&F);
+    /* ---- qd_zvc_box_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(NULL, F.model, F.eom, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, NULL, F.eom, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, F.model, F.eom, NULL, NULL));
+    reset(&F);
+    /* box NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, F.model, F.eom, "q", NULL));
+    reset(&F);
     /* ---- qd_zvc_curves */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_curves(NULL, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, (qd_contour *)(void *)F.blob));
