@@ -101,24 +101,5 @@ int cli_cmd_lorentz(int argc, char **argv);    /* cmd_lorentz.c */
 int cli_cmd_collide(int argc, char **argv);    /* cmd_collide.c */
 int cli_cmd_form(int argc, char **argv);       /* cmd_form.c */
 
-/* A model file with its canonical variables: the coordinates q_j and the
- * plain symbols p_<q_j> (cmd_bracket.c, shared with cmd_canonical.c). */
-typedef struct cli_phase {
-    qd_ctx *ctx;
-    struct cli_model_file *mf;
-    size_t n;
-    const qd_expr **q, **p;
-    qd_eom *e;  /* set by cli_phase_ham */
-    qd_ham *h;
-} cli_phase;
-/* FILE read with the --set list (the values fixed into the expressions). */
-int cli_phase_load(const char *file, size_t nsets, const char *const *sets, cli_phase *ph);
-/* Read text (an expression in q, p, t and the parameters; what names it in
- * diagnostics); unknown names and velocities are errors (exit 2). */
-int cli_phase_read(cli_phase *ph, const char *what, const char *text, const qd_expr **out);
-/* H from hamilton.h; closed: refuse an implicit H (exit 1), for a caller
- * that needs H itself rather than Hamilton's equations. */
-int cli_phase_ham(cli_phase *ph, bool closed);
-void cli_phase_free(cli_phase *ph);
 
 #endif

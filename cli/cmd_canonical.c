@@ -1,18 +1,18 @@
 /*
  * cli/cmd_canonical.c - `qdot canonical FILE --Q "..." --P "..."`: is the
- * change of variables (q, p) -> (Q, P) canonical (qd_canonical_check)?  The
- * verdict answers a yes/no question, so the status carries the answer:
- * canonical exits 0; a scaled map ([Q_i, P_i] = c, c != 1: Goldstein's
- * extended canonical transformation, not a canonical one) and a map with a
- * failing fundamental bracket exit EXIT_NOT_CANONICAL, with the verdict
- * printed as usual (a failure prints nothing on standard output).
+ * change of variables (q, p) -> (Q, P) canonical (qd_canonical_check)?  A
+ * yes/no question, so the status carries the answer: canonical exits 0; a
+ * scaled map ([Q_i, P_i] = c, c != 1: Goldstein's extended canonical
+ * transformation, not a canonical one) and a map with a failing fundamental
+ * bracket are a certified "no", exit 3 (QD_EXIT_NO) with the verdict and its
+ * witness printed; a bracket neither proved nor refuted exits 1.
  * `--generator F1..F4 EXPR` instead gives the transformation a generating
- * function defines and K = H + dF/dt (qd_generate, H from hamilton.h).
- * The new variables are Q, P for a model with one coordinate and Q1..Qn,
- * P1..Pn otherwise: both in the verdict's brackets and in a generator.
+ * function defines and K = H + dF/dt (qd_generate).  The variables are the
+ * library's phase space (qd_phase): new ones Q, P or Q1..Qn, P1..Pn.
  */
 #include "cli.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/json.h"
@@ -20,161 +20,73 @@
 #include "model_cli.h"
 #include "model_file.h"
 
-/* The answer "no"; a failure prints nothing on standard output. */
-enum { EXIT_NOT_CANONICAL = QD_EXIT_FAIL };
-
 typedef struct can_args {
-    const char *file, *Q, *P, *gen_type, *gen;
-    bool json, lagrange, newham;
-    const char *sets[QD_CLI_MAX_LIST];
-    size_t nsets;
+    const char *Q, *P, *gen, *format;
+    bool lagrange, newham;
+    cli_list set;
 } can_args;
 
+static const char *const formats[] = {"text", "json", NULL};
+static const char *const gen_types[] = {"F1", "F2", "F3", "F4", NULL};
+
+static const cli_opt opts[] = {
+    {"--Q", NULL, CLI_TEXT, offsetof(can_args, Q), "\"Q1, ...\"",
+     "the new coordinates, one expression in q, p_q, t per coordinate", NULL, NULL},
+    {"--P", NULL, CLI_TEXT, offsetof(can_args, P), "\"P1, ...\"", "the new momenta, likewise",
+     NULL, NULL},
+    {"--lagrange", NULL, CLI_FLAG, offsetof(can_args, lagrange), NULL,
+     "the Lagrange brackets of the old variables and their duality", NULL, NULL},
+    {"--K", NULL, CLI_FLAG, offsetof(can_args, newham), NULL,
+     "F and the new Hamiltonian K = c H + sum P dQ/dt + dF/dt", NULL, NULL},
+    {"--generator", NULL, CLI_CHOICE, offsetof(can_args, gen), "TYPE",
+     "the map of the generating function EXPR (the argument after FILE) of this type",
+     gen_types, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(can_args, format), "FORMAT", "how to write it",
+     formats, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(can_args, set), "NAME=VALUE",
+     "read the model with this parameter value", NULL, NULL},
+    {0},
+};
+
+static const cli_spec spec = {
+    "canonical", "FILE --Q \"Q1, ...\" --P \"P1, ...\" [options] | FILE --generator TYPE EXPR",
+    "Is (q, p) -> (Q, P) canonical (exit 0 yes, 3 no)?  Or the map a generating function "
+    "gives, with K = H + dF/dt.",
+    opts, NULL, 1, 2, "FILE", true,
+};
+
 typedef struct can_run {
-    cli_phase ph;
-    const qd_expr **Q, **P; /* expressions (--Q/--P) or the new symbols (--generator) */
-    const qd_expr **newQ, **newP;
-    char **names;           /* 2n names of the new variables */
+    qd_ctx *ctx;
+    cli_model_file mf;
+    qd_phase ph;
+    const qd_expr **Q, **P; /* --Q and --P */
     qd_lagrange_result lb;  /* --lagrange */
     qd_newham nh;           /* --K */
+    bool json;
 } can_run;
-
-static const char usage_text[] =
-    "usage: qdot canonical FILE --Q \"Q1, ...\" --P \"P1, ...\" [--lagrange] [--K] "
-    "[--format text|json] [--set NAME=VALUE]...\n"
-    "       qdot canonical FILE --generator F1|F2|F3|F4 EXPR [--format text|json] "
-    "[--set NAME=VALUE]...";
-
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    can_args *a = data;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
-    if ((v = cli_value(argc, argv, i, "--Q")) && !a->Q)
-        a->Q = v;
-    else if ((v = cli_value(argc, argv, i, "--P")) && !a->P)
-        a->P = v;
-    else if (!strcmp(argv[*i], "--lagrange"))
-        a->lagrange = true;
-    else if (!strcmp(argv[*i], "--K"))
-        a->newham = true;
-    else if ((v = cli_value(argc, argv, i, "--format")) && (!strcmp(v, "text") || !strcmp(v, "json")))
-        a->json = !strcmp(v, "json");
-    else if (!strcmp(argv[*i], "--generator") && *i + 2 < argc && !a->gen) {
-        a->gen_type = argv[++*i];
-        a->gen = argv[++*i];
-    } else {
-        cli_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
-static int parse_args(int argc, char **argv, can_args *a) {
-    *a = (can_args){0};
-    int rc = cli_file_args(argc, argv, "canonical", usage_text, &a->file, parse_option, a);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    const char *why = a->gen && (a->Q || a->P) ? "give either --Q and --P or --generator"
-                      : a->gen && (a->lagrange || a->newham) ? "--lagrange and --K go with --Q and --P"
-                      : !a->gen && !a->Q       ? "--Q is missing"
-                      : !a->gen && !a->P       ? "--P is missing"
-                                               : NULL;
-    if (why) {
-        cli_diag_error("%s\n%s", why, usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
-/* The new variables' names and symbols: Q, P or Q1.., P1... */
-static int new_symbols(can_run *r) {
-    size_t n = r->ph.n;
-    r->names = calloc(2 * n, sizeof *r->names);
-    r->newQ = calloc(n + 1, sizeof *r->newQ);
-    r->newP = calloc(n + 1, sizeof *r->newP);
-    if (!r->names || !r->newQ || !r->newP)
-        return QD_EXIT_FAIL;
-    for (size_t k = 0; k < 2 * n; k++) {
-        if (!(r->names[k] = malloc(32)))
-            return QD_EXIT_FAIL;
-        snprintf(r->names[k], 32, n == 1 ? "%c" : "%c%zu", k < n ? 'Q' : 'P', k % n + 1);
-    }
-    return QD_EXIT_OK;
-}
-
-static int make_symbols(can_run *r) {
-    for (size_t k = 0; k < 2 * r->ph.n; k++) {
-        const qd_expr *s = qd_symbol(r->ph.ctx, r->names[k]);
-        if (!s)
-            return cli_diag_ctx(r->ph.ctx);
-        (k < r->ph.n ? r->newQ : r->newP)[k % r->ph.n] = s;
-    }
-    return QD_EXIT_OK;
-}
-
-/* One comma-separated item of --Q or --P; out[k] gets it. */
-static int read_item(can_run *r, const char *what, const char *s, size_t len,
-                     const qd_expr **out) {
-    char *text = malloc(len + 1);
-    if (!text)
-        return QD_EXIT_FAIL;
-    memcpy(text, s, len);
-    text[len] = '\0';
-    int rc = cli_phase_read(&r->ph, what, text, out);
-    free(text);
-    return rc;
-}
-
-/* "e1, e2, ..." split at the commas outside parentheses: exactly n items. */
-static int read_list(can_run *r, const char *what, const char *s, const qd_expr **out) {
-    size_t k = 0, start = 0, i = 0;
-    int depth = 0, rc = QD_EXIT_OK;
-    for (;; i++) {
-        depth += (s[i] == '(') - (s[i] == ')');
-        if (s[i] && (s[i] != ',' || depth))
-            continue;
-        if (k == r->ph.n) {
-            k++;
-            break;
-        }
-        if ((rc = read_item(r, what, s + start, i - start, &out[k++])) != QD_EXIT_OK || !s[i])
-            break;
-        start = i + 1;
-    }
-    if (rc == QD_EXIT_OK && k != r->ph.n) {
-        cli_diag_error("%s needs %zu expression%s, one per coordinate", what, r->ph.n,
-                      r->ph.n == 1 ? "" : "s");
-        rc = QD_EXIT_USAGE;
-    }
-    return rc;
-}
 
 /* ---- output ------------------------------------------------------------------ */
 
 static char *text_of(qd_ctx *ctx, const qd_expr *x) {
     qd_buf b = QD_BUF_INIT;
     qd_print(ctx, x, QD_FMT_TEXT, &b);
-    size_t len = b.failed ? 0 : strlen(qd_buf_str(&b));
-    char *s = b.failed ? NULL : malloc(len + 1);
+    char *s = b.failed ? NULL : malloc(strlen(qd_buf_str(&b)) + 1);
     if (s)
-        memcpy(s, qd_buf_str(&b), len + 1);
+        strcpy(s, qd_buf_str(&b));
     qd_buf_free(&b);
     return s;
 }
 
+/* key = x: a JSON member, or a line "  key = x" (nothing for NULL). */
 static void put_expr(qd_ctx *ctx, qd_json *j, qd_buf *b, const char *key, const qd_expr *x) {
-    char *s = x ? text_of(ctx, x) : NULL;
     if (j) {
         qd_json_key(j, key);
-        if (s)
-            qd_json_string(j, s);
-        else
-            qd_json_null(j);
-    } else if (s) {
-        qd_buf_printf(b, "  %s = %s\n", key, s);
+        qd_json_expr(j, ctx, x);
+    } else if (x) {
+        qd_buf_printf(b, "  %s = ", key);
+        qd_print(ctx, x, QD_FMT_TEXT, b);
+        qd_buf_puts(b, "\n");
     }
-    free(s);
 }
 
 static int flush(qd_buf *b, qd_json *j) {
@@ -183,82 +95,13 @@ static int flush(qd_buf *b, qd_json *j) {
         qd_buf_puts(b, "\n");
         b->failed = b->failed || !qd_json_ok(j);
     }
-    bool ok = !b->failed;
-    if (ok)
-        fputs(qd_buf_str(b), stdout);
-    else
-        cli_diag_error("cannot print the result");
-    qd_buf_free(b);
-    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+    return cli_emit(b, "result");
 }
 
-/* "[Q1, P2]" for the failing bracket of a verdict. */
-static void pair_name(const can_run *r, const qd_canon_verdict *v, char *out, size_t size) {
-    size_t n = r->ph.n;
-    const char *a = r->names[v->pair == QD_PAIR_PP ? n + v->i : v->i];
-    const char *b = r->names[v->pair == QD_PAIR_QQ ? v->j : n + v->j];
-    snprintf(out, size, "[%s, %s]", a, b);
-}
-
-/* The exit status of a printed verdict. */
-static int answer(const qd_canon_verdict *v, int printed) {
-    return printed == QD_EXIT_OK && v->kind != QD_CANON_YES ? EXIT_NOT_CANONICAL : printed;
-}
-
-static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *v, qd_buf *b,
-                         qd_json *j);
-
-static int write_verdict(can_run *r, const can_args *a, const qd_canon_verdict *v, bool json) {
-    qd_ctx *ctx = r->ph.ctx;
-    static const char *const kind[] = {"canonical", "scaled", "not canonical", "undecided"};
-    qd_buf b = QD_BUF_INIT;
-    qd_json j;
-    char pair[128] = "";
-    bool failed = v->kind == QD_CANON_NO || v->kind == QD_CANON_UNDECIDED;
-    if (failed)
-        pair_name(r, v, pair, sizeof pair);
-    if (json) {
-        qd_json_init(&j, &b);
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "verdict");
-        qd_json_string(&j, kind[v->kind]);
-        put_expr(ctx, &j, &b, "scale", failed ? NULL : v->scale);
-        qd_json_key(&j, "bracket");
-        if (pair[0])
-            qd_json_string(&j, pair);
-        else
-            qd_json_null(&j);
-        put_expr(ctx, &j, &b, "value", pair[0] ? v->value : NULL);
-        put_expr(ctx, &j, &b, "should_be", pair[0] ? v->target : NULL);
-        cli_witness_json(&j, &v->check);
-        write_extras(r, a, v, &b, &j);
-        return answer(v, flush(&b, &j));
-    }
-    char *s = text_of(ctx, failed ? v->value : v->scale);
-    char *want = failed ? text_of(ctx, v->target) : NULL;
-    char how[96];
-    cli_witness_how(&v->check, how, sizeof how);
-    if (v->kind == QD_CANON_YES)
-        qd_buf_printf(&b, "canonical%s\n", how);
-    else if (v->kind == QD_CANON_SCALED)
-        qd_buf_printf(&b, "not canonical (a scaled canonical map, c = %s): [Q_i, P_i] = %s%s\n",
-                      s ? s : "?", s ? s : "?", how);
-    else if (v->kind == QD_CANON_UNDECIDED)
-        qd_buf_printf(&b, "could not decide: %s = %s, neither proved nor refuted equal to %s\n",
-                      pair, s ? s : "?", want ? want : "?");
-    else
-        qd_buf_printf(&b, "not canonical: %s = %s (should be %s)\n", pair, s ? s : "?",
-                      want ? want : "?");
-    cli_witness_text(&b, &v->check);
-    free(s);
-    free(want);
-    write_extras(r, a, v, &b, NULL);
-    return answer(v, flush(&b, NULL));
-}
-
-/* The old variables' names: q..., p_q... */
-static const char *old_name(const can_run *r, size_t a) {
-    return qd_expr_name(a < r->ph.n ? r->ph.q[a] : r->ph.p[a - r->ph.n]);
+/* The variables' names: old (q..., p...) or new (Q..., P...), 2n of each. */
+static const char *var_name(const qd_phase *ph, bool new_vars, size_t a) {
+    const qd_expr *const *q = new_vars ? ph->Q : ph->q, *const *p = new_vars ? ph->P : ph->p;
+    return qd_expr_name(a < ph->n ? q[a] : p[a - ph->n]);
 }
 
 /* A 2n x 2n matrix as rows of expressions. */
@@ -275,12 +118,12 @@ static void put_matrix(can_run *r, qd_json *j, qd_buf *b, const char *key,
         else
             qd_buf_puts(b, "  [");
         for (size_t y = 0; y < m; y++) {
-            char *s = text_of(r->ph.ctx, M[x * m + y]);
-            if (j)
-                qd_json_string(j, s ? s : "?");
-            else
-                qd_buf_printf(b, "%s%s", y ? ", " : "", s ? s : "?");
-            free(s);
+            if (j) {
+                qd_json_expr(j, r->ctx, M[x * m + y]);
+                continue;
+            }
+            qd_buf_puts(b, y ? ", " : "");
+            qd_print(r->ctx, M[x * m + y], QD_FMT_TEXT, b);
         }
         if (j)
             qd_json_end_array(j);
@@ -293,16 +136,13 @@ static void put_matrix(can_run *r, qd_json *j, qd_buf *b, const char *key,
 
 /* --lagrange: the brackets [u, v] of the old variables and L^T PB = I;
  * --K: F and the new Hamiltonian. */
-static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *v, qd_buf *b,
-                         qd_json *j) {
-    qd_ctx *ctx = r->ph.ctx;
-    size_t n = r->ph.n;
+static void write_extras(can_run *r, const can_args *a, bool answered, qd_buf *b, qd_json *j) {
     if (a->lagrange) {
         if (!j) {
             qd_buf_puts(b, "Lagrange brackets [u, v] = sum dQ/du dP/dv - dQ/dv dP/du, "
                            "rows and columns ");
-            for (size_t k = 0; k < 2 * n; k++)
-                qd_buf_printf(b, "%s%s", k ? ", " : "", old_name(r, k));
+            for (size_t k = 0; k < 2 * r->ph.n; k++)
+                qd_buf_printf(b, "%s%s", k ? ", " : "", var_name(&r->ph, false, k));
             qd_buf_puts(b, "\n");
         }
         put_matrix(r, j, b, "lagrange", r->lb.L);
@@ -323,87 +163,147 @@ static void write_extras(can_run *r, const can_args *a, const qd_canon_verdict *
                                                     : "duality: [L]^T (P) = 1 FAILS");
         }
     }
-    if (a->newham) {
-        if (v->kind == QD_CANON_NO || v->kind == QD_CANON_UNDECIDED) {
-            if (j) {
-                qd_json_key(j, "K");
-                qd_json_null(j);
-            } else {
-                qd_buf_puts(b, "no new Hamiltonian: the map is neither canonical nor scaled\n");
-            }
-            return;
+    if (!a->newham)
+        return;
+    if (!answered) {
+        if (j) {
+            qd_json_key(j, "K");
+            qd_json_null(j);
+        } else {
+            qd_buf_puts(b, "no new Hamiltonian: the map is neither canonical nor scaled\n");
         }
-        if (!j)
-            qd_buf_puts(b, "new Hamiltonian K = c H + sum P dQ/dt + dF/dt, dF = c p dq - P dQ "
-                           "(fixed t)\n");
-        put_expr(ctx, j, b, j ? "valence" : "c", r->nh.valence);
-        put_expr(ctx, j, b, "F", r->nh.F);
-        put_expr(ctx, j, b, j ? "K_old" : "K(q, p, t)", r->nh.K_old);
-        put_expr(ctx, j, b, j ? "K_new" : "K(Q, P, t)", r->nh.K_new);
-        if (!j && !r->nh.F)
-            qd_buf_puts(b, "  F: the exact form's antiderivative was not found in closed form\n");
+        return;
     }
+    if (!j)
+        qd_buf_puts(b, "new Hamiltonian K = c H + sum P dQ/dt + dF/dt, dF = c p dq - P dQ "
+                       "(fixed t)\n");
+    put_expr(r->ctx, j, b, j ? "valence" : "c", r->nh.valence);
+    put_expr(r->ctx, j, b, "F", r->nh.F);
+    put_expr(r->ctx, j, b, j ? "K_old" : "K(q, p, t)", r->nh.K_old);
+    put_expr(r->ctx, j, b, j ? "K_new" : "K(Q, P, t)", r->nh.K_new);
+    if (!j && !r->nh.F)
+        qd_buf_puts(b, "  F: the exact form's antiderivative was not found in closed form\n");
+}
+
+/* The verdict, its witness and the extras; the exit status carries the
+ * answer: 0 canonical, 3 a certified no (scaled or a failing bracket), 1
+ * undecided. */
+static int write_verdict(can_run *r, const can_args *a, const qd_canon_verdict *v) {
+    static const char *const kind[] = {"canonical", "scaled", "not canonical", "undecided"};
+    qd_ctx *ctx = r->ctx;
+    size_t n = r->ph.n;
+    qd_buf b = QD_BUF_INIT;
+    qd_json j, *jp = r->json ? &j : NULL;
+    char pair[160] = "";
+    bool failed = v->kind == QD_CANON_NO || v->kind == QD_CANON_UNDECIDED;
+    if (failed) /* "[Q1, P2]" */
+        snprintf(pair, sizeof pair, "[%s, %s]",
+                 var_name(&r->ph, true, v->pair == QD_PAIR_PP ? n + v->i : v->i),
+                 var_name(&r->ph, true, v->pair == QD_PAIR_QQ ? v->j : n + v->j));
+    char *s = text_of(ctx, failed ? v->value : v->scale);
+    char *want = failed ? text_of(ctx, v->target) : NULL;
+    if (jp) {
+        qd_json_init(jp, &b);
+        qd_json_begin_object(jp);
+        qd_json_key(jp, "verdict");
+        qd_json_string(jp, kind[v->kind]);
+        put_expr(ctx, jp, &b, "scale", failed ? NULL : v->scale);
+        qd_json_key(jp, "bracket");
+        qd_json_string(jp, failed ? pair : NULL);
+        put_expr(ctx, jp, &b, "value", failed ? v->value : NULL);
+        put_expr(ctx, jp, &b, "should_be", failed ? v->target : NULL);
+        cli_witness_json(jp, &v->check);
+    } else {
+        char how[96];
+        cli_witness_how(&v->check, how, sizeof how);
+        if (v->kind == QD_CANON_YES)
+            qd_buf_printf(&b, "canonical%s\n", how);
+        else if (v->kind == QD_CANON_SCALED)
+            qd_buf_printf(&b, "not canonical (a scaled canonical map, c = %s): [Q_i, P_i] = %s%s\n",
+                          s ? s : "?", s ? s : "?", how);
+        else if (v->kind == QD_CANON_UNDECIDED)
+            qd_buf_printf(&b, "could not decide: %s = %s, neither proved nor refuted equal to %s\n",
+                          pair, s ? s : "?", want ? want : "?");
+        else
+            qd_buf_printf(&b, "not canonical: %s = %s (should be %s)\n", pair, s ? s : "?",
+                          want ? want : "?");
+        cli_witness_text(&b, &v->check);
+    }
+    free(s);
+    free(want);
+    write_extras(r, a, !failed, &b, jp);
+    int rc = flush(&b, jp);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    return v->kind == QD_CANON_YES ? QD_EXIT_OK
+           : v->kind == QD_CANON_UNDECIDED ? QD_EXIT_FAIL
+                                           : QD_EXIT_NO;
 }
 
 /* ---- the two modes -------------------------------------------------------------- */
 
-static int check(can_run *r, const can_args *a, bool json) {
-    size_t n = r->ph.n;
-    r->Q = calloc(n + 1, sizeof *r->Q);
-    r->P = calloc(n + 1, sizeof *r->P);
-    if (!r->Q || !r->P)
+/* --Q or --P: one expression per coordinate; the error shown in the list. */
+static int read_list(can_run *r, const char *what, const char *text, const qd_expr ***out) {
+    qd_diag err;
+    if (!(*out = calloc(r->ph.n + 1, sizeof **out))) {
+        cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
-    int rc = read_list(r, "--Q", a->Q, r->Q);
+    }
+    if (qd_phase_read_list(r->ctx, &r->ph, text, *out, &err) == QD_OK)
+        return QD_EXIT_OK;
+    cli_diag_read(what, text, &err);
+    return cli_exit(err.status);
+}
+
+/* An error after the model was read: at its statement when it is about one. */
+static int failure(const can_run *r) {
+    return cli_diag_model(r->ctx, r->mf.path, r->mf.text, r->mf.model);
+}
+
+static int check(can_run *r, const can_args *a) {
+    qd_ctx *ctx = r->ctx;
+    qd_phase *ph = &r->ph;
+    int rc = read_list(r, "--Q", a->Q, &r->Q);
     if (rc == QD_EXIT_OK)
-        rc = read_list(r, "--P", a->P, r->P);
+        rc = read_list(r, "--P", a->P, &r->P);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_canon_verdict v;
-    if (qd_canonical_check(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, qd_time(r->ph.ctx), &v) !=
-        QD_OK)
-        return cli_diag_ctx(r->ph.ctx);
-    if (a->newham && (rc = cli_phase_ham(&r->ph, true)) != QD_EXIT_OK)
-        return rc;
-    if ((a->lagrange || a->newham) && make_symbols(r) != QD_EXIT_OK)
-        return cli_diag_ctx(r->ph.ctx);
-    if (a->lagrange &&
-        qd_lagrange_brackets(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, &r->lb) != QD_OK)
-        return cli_diag_ctx(r->ph.ctx);
-    if (a->newham && v.kind != QD_CANON_NO && v.kind != QD_CANON_UNDECIDED &&
-        qd_transformed_hamiltonian(r->ph.ctx, n, r->ph.q, r->ph.p, r->Q, r->P, r->newQ, r->newP,
-                                   qd_time(r->ph.ctx), r->ph.h->H, &r->nh) != QD_OK)
-        return cli_diag_ctx(r->ph.ctx);
-    return write_verdict(r, a, &v, json);
-}
-
-static int gen_type(const char *s, qd_gen_type *t) {
-    if ((s[0] == 'F' || s[0] == 'f') && s[1] >= '1' && s[1] <= '4' && !s[2]) {
-        *t = (qd_gen_type)(s[1] - '0');
-        return QD_EXIT_OK;
-    }
-    cli_diag_error("--generator takes a type F1, F2, F3 or F4, not '%s'\n%s", s, usage_text);
-    return QD_EXIT_USAGE;
+    if (qd_canonical_check(ctx, ph->n, ph->q, ph->p, r->Q, r->P, qd_time(ctx), &v) != QD_OK ||
+        (a->newham && qd_phase_ham(ctx, ph, true) != QD_OK) ||
+        ((a->lagrange || a->newham) && qd_phase_new_vars(ctx, ph) != QD_OK) ||
+        (a->lagrange &&
+         qd_lagrange_brackets(ctx, ph->n, ph->q, ph->p, r->Q, r->P, &r->lb) != QD_OK))
+        return failure(r);
+    bool answered = v.kind == QD_CANON_YES || v.kind == QD_CANON_SCALED;
+    if (a->newham && answered &&
+        qd_transformed_hamiltonian(ctx, ph->n, ph->q, ph->p, r->Q, r->P, ph->Q, ph->P,
+                                   qd_time(ctx), ph->h->H, &r->nh) != QD_OK)
+        return failure(r);
+    if (!ph->Q && qd_phase_new_vars(ctx, ph) != QD_OK) /* the names of a failing bracket */
+        return failure(r);
+    return write_verdict(r, a, &v);
 }
 
 static int write_generated(can_run *r, const can_args *a, const qd_expr *F,
                            const qd_gen_result *g) {
-    qd_ctx *ctx = r->ph.ctx;
+    qd_ctx *ctx = r->ctx;
     size_t n = r->ph.n;
     qd_buf b = QD_BUF_INIT;
-    qd_json j, *jp = a->json ? &j : NULL;
+    qd_json j, *jp = r->json ? &j : NULL;
     if (jp) {
         qd_json_init(jp, &b);
         qd_json_begin_object(jp);
         qd_json_key(jp, "type");
-        qd_json_string(jp, a->gen_type);
+        qd_json_string(jp, a->gen);
     } else {
-        qd_buf_printf(&b, "generating function %s\n", a->gen_type);
+        qd_buf_printf(&b, "generating function %s\n", a->gen);
     }
     put_expr(ctx, jp, &b, "F", F);
     if (!jp)
         qd_buf_puts(&b, "transformation (in q, p, t)\n");
     for (size_t k = 0; k < 2 * n; k++)
-        put_expr(ctx, jp, &b, r->names[k], k < n ? g->Q[k] : g->P[k - n]);
+        put_expr(ctx, jp, &b, var_name(&r->ph, true, k), k < n ? g->Q[k] : g->P[k - n]);
     if (!jp)
         qd_buf_puts(&b, "new Hamiltonian K = H + dF/dt\n");
     put_expr(ctx, jp, &b, jp ? "K_old" : "K(q, p, t)", g->K_old);
@@ -411,49 +311,66 @@ static int write_generated(can_run *r, const can_args *a, const qd_expr *F,
     return flush(&b, jp);
 }
 
-static int generate(can_run *r, const can_args *a) {
-    qd_gen_type type;
-    const qd_expr *F;
-    int rc = gen_type(a->gen_type, &type);
-    if (rc == QD_EXIT_OK)
-        rc = make_symbols(r);
-    if (rc == QD_EXIT_OK)
-        rc = cli_phase_read(&r->ph, "generator", a->gen, &F);
-    if (rc == QD_EXIT_OK)
-        rc = cli_phase_ham(&r->ph, true);
-    if (rc != QD_EXIT_OK)
-        return rc;
+static int generate(can_run *r, const can_args *a, const char *text) {
+    qd_ctx *ctx = r->ctx;
+    qd_phase *ph = &r->ph;
+    qd_diag err;
+    if (qd_phase_new_vars(ctx, ph) != QD_OK) /* F is a function of them too */
+        return failure(r);
+    const qd_expr *F = qd_phase_read(ctx, ph, text, &err);
+    if (!F) {
+        cli_diag_read("generator", text, &err);
+        return cli_exit(err.status);
+    }
+    if (qd_phase_ham(ctx, ph, true) != QD_OK)
+        return failure(r);
     qd_gen_result g = {0};
-    qd_status st = qd_generate(r->ph.ctx, type, r->ph.n, r->ph.q, r->ph.p, r->newQ, r->newP, F,
-                               qd_time(r->ph.ctx), r->ph.h->H, &g);
-    rc = st == QD_OK ? write_generated(r, a, F, &g) : cli_diag_ctx(r->ph.ctx);
+    qd_status st = qd_generate(ctx, (qd_gen_type)(a->gen[1] - '0'), ph->n, ph->q, ph->p, ph->Q,
+                               ph->P, F, qd_time(ctx), ph->h->H, &g);
+    int rc = st == QD_OK ? write_generated(r, a, F, &g) : failure(r);
     qd_gen_result_free(&g);
     return rc;
 }
 
-static void can_free(can_run *r) {
-    for (size_t k = 0; r->names && k < 2 * r->ph.n; k++)
-        free(r->names[k]);
-    free(r->names);
-    free(r->newQ);
-    free(r->newP);
-    free(r->Q);
-    free(r->P);
-    qd_lagrange_result_free(&r->lb);
-    cli_phase_free(&r->ph);
+/* The options' combinations: --Q with --P, or --generator with its EXPR. */
+static int combination(const can_args *a, const char *expr) {
+    const char *why = a->gen && (a->Q || a->P) ? "give either --Q and --P or --generator"
+                      : a->gen && (a->lagrange || a->newham)
+                          ? "--lagrange and --K go with --Q and --P"
+                      : a->gen && !expr ? "--generator needs its expression EXPR after FILE"
+                      : !a->gen && expr ? "an expression after FILE goes with --generator"
+                      : !a->gen && !a->Q ? "--Q is missing"
+                      : !a->gen && !a->P ? "--P is missing"
+                                         : NULL;
+    if (!why)
+        return QD_EXIT_OK;
+    cli_diag_error("%s (qdot canonical --help)", why);
+    return QD_EXIT_USAGE;
 }
 
 int cli_cmd_canonical(int argc, char **argv) {
-    can_args a;
-    int rc = parse_args(argc, argv, &a);
+    can_args a = {0};
+    const char *pos[2];
+    int rc = cli_parse(&spec, argc, argv, &a, pos);
+    if (rc == QD_EXIT_OK)
+        rc = combination(&a, pos[1]);
     if (rc != QD_EXIT_OK)
         return rc;
-    can_run r = {0};
-    rc = cli_phase_load(a.file, a.nsets, a.sets, &r.ph);
-    if (rc == QD_EXIT_OK && (rc = new_symbols(&r)) != QD_EXIT_OK)
+    can_run r = {.ctx = qd_ctx_new(), .json = a.format && !strcmp(a.format, "json")};
+    if (!r.ctx) {
         cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    rc = cli_load(r.ctx, pos[0], a.set.n, a.set.items, true, &r.mf);
+    if (rc == QD_EXIT_OK && qd_phase_init(r.ctx, r.mf.model, &r.ph) != QD_OK)
+        rc = cli_diag_ctx(r.ctx);
     if (rc == QD_EXIT_OK)
-        rc = a.gen ? generate(&r, &a) : check(&r, &a, a.json);
-    can_free(&r);
+        rc = a.gen ? generate(&r, &a, pos[1]) : check(&r, &a);
+    free(r.Q);
+    free(r.P);
+    qd_lagrange_result_free(&r.lb);
+    qd_phase_free(&r.ph);
+    cli_model_file_free(&r.mf);
+    qd_ctx_free(r.ctx);
     return rc;
 }

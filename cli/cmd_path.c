@@ -10,57 +10,49 @@
 
 #include <ctype.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 #include "qdot/path.h"
 #include "state.h"
 
-#define MAX_GUESS 16
-
 typedef struct path_args {
-    const char *file, *from, *to, *energy, *segments, *guess[MAX_GUESS], *sets[QD_CLI_MAX_LIST];
-    size_t nguess, nsets;
-    bool json, all;
+    const char *file, *from, *to, *energy, *format;
+    size_t segments;
+    bool all;
+    cli_list guess, set;
 } path_args;
-
-static const char usage_text[] =
-    "usage: qdot path FILE --from \"q=VALUE|free, ..., t=T0\" --to \"q=VALUE|free, ..., t=T1\" "
-    "[--all] "
-    "[--guess \"q'=VALUE, ...\"]... [--energy E] [--segments N] [--format text|json] "
-    "[--set NAME=VALUE]...";
 
 static const char *const formats[] = {"text", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    path_args *a = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        a->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_CLI_MAX_LIST, v);
-    if ((v = cli_value(argc, argv, i, "--guess")))
-        return cli_push("--guess", a->guess, &a->nguess, MAX_GUESS, v);
-    if ((v = cli_value(argc, argv, i, "--from")))
-        return cli_once("--from", &a->from, v);
-    if ((v = cli_value(argc, argv, i, "--to")))
-        return cli_once("--to", &a->to, v);
-    if ((v = cli_value(argc, argv, i, "--energy")))
-        return cli_once("--energy", &a->energy, v);
-    if ((v = cli_value(argc, argv, i, "--segments")))
-        return cli_once("--segments", &a->segments, v);
-    if (!strcmp(argv[*i], "--all")) {
-        a->all = true;
-        return QD_EXIT_OK;
-    }
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--from", NULL, CLI_TEXT, offsetof(path_args, from), "\"q=VALUE|free, ..., t=T0\"",
+     "the start: each coordinate's value (or free) and the time (required)", NULL, NULL},
+    {"--to", NULL, CLI_TEXT, offsetof(path_args, to), "\"q=VALUE|free, ..., t=T1\"",
+     "the end, likewise; its time unless --energy (required)", NULL, NULL},
+    {"--all", NULL, CLI_FLAG, offsetof(path_args, all), NULL,
+     "search for every distinct path, not the first found", NULL, NULL},
+    {"--guess", NULL, CLI_LIST, offsetof(path_args, guess), "\"q'=VALUE, ...\"",
+     "initial velocities to start the search from", NULL, NULL},
+    {"--energy", NULL, CLI_TEXT, offsetof(path_args, energy), "E",
+     "Maupertuis' paths of this energy, whatever their time (an expression in the parameters)",
+     NULL, NULL},
+    {"--segments", NULL, CLI_COUNT, offsetof(path_args, segments), "N",
+     "multiple-shooting segments (default: chosen)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(path_args, format), "FORMAT", "how to write it",
+     formats, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(path_args, set), "NAME=VALUE",
+     "read the model with this parameter value", NULL, NULL},
+    {0},
+};
+
+static const cli_spec spec = {
+    "path", "FILE --from \"q=..., t=T0\" --to \"q=..., t=T1\" [options]",
+    "Stationary paths of the action between two configurations, with their foci.",
+    opts, NULL, 1, 1, "FILE", false,
+};
 
 /* Does the state text give t ("t = 2" among its items)? */
 static bool gives_t(const char *s) {
@@ -74,17 +66,6 @@ static bool gives_t(const char *s) {
             return true;
     }
     return false;
-}
-
-static int parse_args(int argc, char **argv, path_args *a) {
-    int rc = cli_file_args(argc, argv, "path", usage_text, &a->file, parse_option, a);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (!a->from || !a->to) {
-        cli_diag_error("path needs --from and --to\n%s", usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
 }
 
 typedef struct path_run {
@@ -191,16 +172,6 @@ static void free_guesses(path_run *r) {
     }
 }
 
-static int read_number(const char *what, const char *text, double lo, double *x) {
-    char *end;
-    *x = strtod(text, &end);
-    if (end == text || *end || !isfinite(*x) || *x < lo) {
-        cli_diag_error("%s takes a number%s, not '%s'", what, lo > 0 ? " >= 1" : "", text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
 static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     const qd_model *m = r->mf.model;
     size_t n = r->e->n;
@@ -210,7 +181,7 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
         rc = end_text(r, "--to", a->to, r->free1, &to);
     if (rc == QD_EXIT_OK && !r->energy && !gives_t(to)) {
         const char *x = qd_model_independent(m) ? qd_model_independent(m) : "t";
-        cli_diag_error("path: --to needs the end %s=T1 (or give --energy E)\n%s", x, usage_text);
+        cli_diag_error("path: --to needs the end %s=T1 (or give --energy E)", x);
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK)
@@ -225,16 +196,16 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     free(to);
     if (rc == QD_EXIT_OK)
         free_guesses(r);
-    r->guess = calloc(a->nguess * n + 1, sizeof *r->guess);
+    r->guess = calloc(a->guess.n * n + 1, sizeof *r->guess);
     if (rc == QD_EXIT_OK && !r->guess) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    for (size_t k = 0; rc == QD_EXIT_OK && k < a->nguess; k++) {
+    for (size_t k = 0; rc == QD_EXIT_OK && k < a->guess.n; k++) {
         cli_state_free(&r->g);
         rc = cli_state_init(r->ctx, m, &r->g);
         if (rc == QD_EXIT_OK)
-            rc = cli_state_parse_as(r->ctx, m, "--guess", a->guess[k], &r->g);
+            rc = cli_state_parse_as(r->ctx, m, "--guess", a->guess.items[k], &r->g);
         if (rc == QD_EXIT_OK)
             memcpy(r->guess + k * n, r->g.vals + n, n * sizeof *r->guess);
     }
@@ -244,8 +215,8 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     o->q1 = r->to.vals;
     o->t0 = r->from.vals[2 * n];
     o->t1 = r->to.vals[2 * n];
-    o->nguess = a->nguess;
-    o->guess = a->nguess ? r->guess : NULL;
+    o->nguess = a->guess.n;
+    o->guess = a->guess.n ? r->guess : NULL;
     o->all = a->all;
     o->free0 = r->any_free ? r->free0 : NULL;
     o->free1 = r->any_free ? r->free1 : NULL;
@@ -256,175 +227,47 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     return QD_EXIT_OK;
 }
 
-static void put(qd_buf *b, double x) {
-    cli_state_put_result(b, x);
-}
-
-/* The name the ends' time goes by: t, or the model's independent x. */
-static const char *time_name(const path_run *r) {
-    const char *x = qd_model_independent(r->mf.model);
-    return x ? x : "t";
-}
-
-static const char *mult_name(const path_run *r, size_t i) {
-    return qd_expr_name(qd_model_isoperimetric_multiplier(r->mf.model, i));
-}
-
-/* Foci and minimum, or why they are not there. */
-static void write_second_variation(const path_run *r, const qd_path *p, qd_buf *b) {
-    if (!p->examined && (p->nmult || r->any_free)) {
-        qd_buf_printf(b, "\n  kinetic foci: not examined (%s)\n  minimum: not examined",
-                      p->nmult ? "isoperimetric constraint" : "free end");
-        return;
-    }
-    qd_buf_puts(b, "\n  kinetic foci:");
-    for (size_t k = 0; k < p->nfoci; k++) {
-        qd_buf_puts(b, k ? ", " : " ");
-        put(b, p->foci[k]);
-        if (p->foci_mult && p->foci_mult[k] > 1) /* J loses more than one rank (foci.c) */
-            qd_buf_printf(b, " (multiplicity %zu)", p->foci_mult[k]);
-    }
-    qd_buf_printf(b, "%s\n  minimum: %s", p->nfoci ? "" : " none", p->minimum ? "yes" : "no");
-}
-
-static void write_text(const path_run *r, qd_buf *b) {
-    size_t n = r->e->n;
-    qd_buf_printf(b, "paths: %zu\n", r->ps.count);
-    for (size_t i = 0; i < r->ps.count; i++) {
-        const qd_path *p = &r->ps.paths[i];
-        qd_buf_printf(b, "path %zu:\n  action: ", i + 1);
-        put(b, p->action);
-        qd_buf_puts(b, "\n  initial velocities: ");
-        for (size_t j = 0; j < n; j++) {
-            qd_buf_printf(b, "%s%s' = ", j ? ", " : "", qd_expr_name(r->e->q[j]));
-            put(b, p->v0[j]);
-        }
-        for (size_t k = 0; k < p->nmult; k++) {
-            qd_buf_printf(b, "%s%s = ", k ? ", " : "\n  multipliers: ", mult_name(r, k));
-            put(b, p->mult[k]);
-        }
-        if (r->energy) {
-            qd_buf_puts(b, "\n  least action (Maupertuis, integral of p.dq): ");
-            put(b, p->abbreviated);
-            qd_buf_puts(b, "\n  time: ");
-            put(b, p->t[p->nsamples - 1] - p->t[0]);
-        }
-        write_second_variation(r, p, b);
-        qd_buf_printf(b, "\n  samples (%s", time_name(r));
-        for (size_t j = 0; j < n; j++)
-            qd_buf_printf(b, ", %s", qd_expr_name(r->e->q[j]));
-        size_t step = p->nsamples > 11 ? (p->nsamples - 1) / 10 : 1;
-        qd_buf_printf(b, "; every %zu of %zu, --format json for all):\n", step, p->nsamples);
-        for (size_t k = 0; k < p->nsamples; k += step) {
-            qd_buf_puts(b, "   ");
-            for (size_t j = 0; j <= n; j++) {
-                qd_buf_puts(b, " ");
-                double x = j ? p->q[k * n + j - 1] : p->t[k];
-                put(b, fabs(x) < 1e-10 ? 0 : x);  /* an end reached to the tolerance */
-            }
-            qd_buf_puts(b, "\n");
-        }
-    }
-}
-
-static void write_json(const path_run *r, qd_buf *b) {
-    size_t n = r->e->n;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "count");
-    qd_json_number(&j, (double)r->ps.count);
-    qd_json_key(&j, "paths");
-    qd_json_begin_array(&j);
-    for (size_t i = 0; i < r->ps.count; i++) {
-        const qd_path *p = &r->ps.paths[i];
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "action");
-        qd_json_number(&j, p->action);
-        if (r->energy) {
-            qd_json_key(&j, "least_action");
-            qd_json_number(&j, p->abbreviated);
-            qd_json_key(&j, "time");
-            qd_json_number(&j, p->t[p->nsamples - 1] - p->t[0]);
-        }
-        qd_json_key(&j, "initial_velocities");
-        qd_json_begin_object(&j);
-        for (size_t k = 0; k < n; k++) {
-            char name[160];
-            snprintf(name, sizeof name, "%s'", qd_expr_name(r->e->q[k]));
-            qd_json_key(&j, name);
-            qd_json_number(&j, p->v0[k]);
-        }
-        qd_json_end_object(&j);
-        qd_json_key(&j, "multipliers");
-        qd_json_begin_object(&j);
-        for (size_t k = 0; k < p->nmult; k++) {
-            qd_json_key(&j, mult_name(r, k));
-            qd_json_number(&j, p->mult[k]);
-        }
-        qd_json_end_object(&j);
-        qd_json_key(&j, "residual");
-        qd_json_number(&j, p->residual);
-        qd_json_key(&j, "samples");
-        qd_json_begin_array(&j);
-        for (size_t s = 0; s < p->nsamples; s++) {
-            qd_json_begin_array(&j);
-            qd_json_number(&j, p->t[s]);
-            for (size_t k = 0; k < n; k++)
-                qd_json_number(&j, p->q[s * n + k]);
-            qd_json_end_array(&j);
-        }
-        qd_json_end_array(&j);
-        qd_json_key(&j, "kinetic_foci");
-        qd_json_begin_array(&j);
-        for (size_t k = 0; k < p->nfoci; k++)
-            qd_json_number(&j, p->foci[k]);
-        qd_json_end_array(&j);
-        qd_json_key(&j, "kinetic_foci_multiplicity"); /* Jacobi fields vanishing there */
-        qd_json_begin_array(&j);
-        for (size_t k = 0; k < p->nfoci; k++)
-            qd_json_number(&j, p->foci_mult ? (double)p->foci_mult[k] : 1);
-        qd_json_end_array(&j);
-        qd_json_key(&j, "minimum");
-        qd_json_bool(&j, p->minimum);
-        qd_json_key(&j, "examined");  /* false: foci and minimum not decided */
-        qd_json_bool(&j, p->examined);
-        qd_json_end_object(&j);
-    }
-    qd_json_end_array(&j);
-    qd_json_end_object(&j);
-    qd_buf_puts(b, "\n");
+/* A number option, an expression in the parameters: its error shown in it. */
+static int path_number(qd_ctx *ctx, const qd_model *m, const char *opt, const char *text,
+                       double *out) {
+    if (qd_model_number(ctx, m, text, out) == QD_OK)
+        return QD_EXIT_OK;
+    cli_diag_show(opt, text, qd_ctx_diag(ctx));
+    return cli_exit(qd_ctx_status(ctx));
 }
 
 static int run(path_run *r, const path_args *a) {
-    int rc = cli_load_derive(r->ctx, a->file, a->nsets, a->sets, false, NULL, &r->mf, &r->e);
+    int rc = cli_load_derive(r->ctx, a->file, a->set.n, a->set.items, false, NULL, &r->mf, &r->e);
     qd_path_opts o = {0};
-    double E = 0, nseg = 0;
+    double E = 0;
     r->energy = a->energy != NULL;
     if (rc == QD_EXIT_OK && a->energy)
-        rc = read_number("--energy", a->energy, -INFINITY, &E);
-    if (rc == QD_EXIT_OK && a->segments)
-        rc = read_number("--segments", a->segments, 1, &nseg);
+        rc = path_number(r->ctx, r->mf.model, "--energy", a->energy, &E);
     if (rc == QD_EXIT_OK)
         rc = read_ends(r, a, &o);
     if (rc != QD_EXIT_OK)
         return rc;
-    o.segments = (size_t)nseg;
+    o.segments = a->segments;
     qd_status st = r->energy ? qd_path_find_energy(r->ctx, r->mf.model, r->e, E, &o, &r->ps)
                              : qd_path_find(r->ctx, r->mf.model, r->e, &o, &r->ps);
     if (st != QD_OK)
         return cli_diag_ctx(r->ctx);
     qd_buf b = QD_BUF_INIT;
-    if (a->json)
-        write_json(r, &b);
-    else
-        write_text(r, &b);
+    if ((a->format && !strcmp(a->format, "json") ? qd_path_json(r->ctx, &r->ps, r->mf.model, r->e, &b)
+                 : qd_path_print(r->ctx, &r->ps, r->mf.model, r->e, &o, &b)) != QD_OK) {
+        qd_buf_free(&b);
+        return cli_diag_ctx(r->ctx);
+    }
     return cli_emit(&b, "paths");
 }
 
 int cli_cmd_path(int argc, char **argv) {
     path_args a = {0};
-    int rc = parse_args(argc, argv, &a);
+    int rc = cli_parse(&spec, argc, argv, &a, &a.file);
+    if (rc == QD_EXIT_OK && (!a.from || !a.to)) {
+        cli_diag_error("path needs --from and --to (qdot path --help)");
+        rc = QD_EXIT_USAGE;
+    }
     if (rc != QD_EXIT_OK)
         return rc;
     path_run r = {.ctx = qd_ctx_new()};

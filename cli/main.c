@@ -23,7 +23,7 @@ static const cli_cmd commands[] = {
      cli_cmd_hamiltonian, true},
     {"form", "EXPR --vars \"x, y\" [--format F]", "a quadratic form: sum of squares, inertia",
      cli_cmd_form, true},
-    {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", cli_cmd_bracket, false},
+    {"bracket", "FILE F G | FILE --dt F", "Poisson bracket [F, G], or dF/dt", cli_cmd_bracket, true},
     {"canonical", "FILE --Q ... --P ... | --generator", "canonical transformations, K = H + dF/dt",
      cli_cmd_canonical, true},
     {"routh", "FILE --ignore Q[,Q...]", "the Routhian and the reduced equations", cli_cmd_routh, true},

@@ -13,6 +13,8 @@
 #include <stddef.h>
 #include "expr.h"
 #include "certify.h"
+#include "hamilton.h"
+#include "model.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -160,6 +162,52 @@ QD_API qd_status qd_transformed_hamiltonian(qd_ctx *ctx, size_t n, const qd_expr
                                             const qd_expr *const *newP, const qd_expr *t,
                                             const qd_expr *H, qd_newham *out);
 QD_API void qd_newham_free(qd_newham *k);
+
+
+/* ---- a model's phase space (issue 31) ---------------------------------------- */
+
+/* The canonical variables of a model: its coordinates q_j and their momenta
+ * p_j, the model's `momenta` names or else the plain symbols p_<q_j> (as
+ * hamilton.h names them); H once qd_phase_ham has derived it; the new
+ * variables of a transformation once qd_phase_new_vars has made them. */
+typedef struct qd_phase {
+    size_t n;
+    const qd_expr **q, **p;   /* n each */
+    const qd_expr **Q, **P;   /* qd_phase_new_vars: Q, P for one coordinate, else
+                                 Q1..Qn, P1..Pn; NULL before */
+    const qd_model *m;        /* borrowed: it must outlive the phase space */
+    qd_eom *e;                /* qd_phase_ham (NULL for a model given by H) */
+    qd_ham *h;                /* qd_phase_ham */
+} qd_phase;
+
+/* The phase space of m.  Release with qd_phase_free (also after a failure). */
+QD_API qd_status qd_phase_init(qd_ctx *ctx, const qd_model *m, qd_phase *out);
+/* Make the new variables' symbols (after reading expressions that must not
+ * name them: once made, Q and P read as symbols). */
+QD_API qd_status qd_phase_new_vars(qd_ctx *ctx, qd_phase *ph);
+/* A function on phase space read from text: the coordinates, momenta, t,
+ * the parameters (one the model fixed stands for its number) and, once
+ * made, the new variables; an unknown name and a velocity are errors.
+ * NULL on failure with the reason in *err, located in text. */
+QD_API const qd_expr *qd_phase_read(qd_ctx *ctx, const qd_phase *ph, const char *text,
+                                    qd_diag *err);
+/* "E1, E2, ..." (split at the commas outside parentheses): exactly ph->n
+ * expressions into out, each as qd_phase_read; the error in *err located
+ * in the whole text (QD_ERR_ARG for the wrong count). */
+QD_API qd_status qd_phase_read_list(qd_ctx *ctx, const qd_phase *ph, const char *text,
+                                    const qd_expr **out, qd_diag *err);
+/* H of the model (its equations derived first unless it gives H).  closed:
+ * refuse an implicit H (QD_ERR_NONLINEAR), for a caller that needs H itself
+ * rather than Hamilton's equations.  QD_ERR_ARG when H names a momentum
+ * otherwise than ph does; derivation errors as qd_eom_derive and
+ * qd_ham_derive (about a statement of the model: qd_model_locate). */
+QD_API qd_status qd_phase_ham(qd_ctx *ctx, qd_phase *ph, bool closed);
+/* dF/dt along the motion, simplified: [F, H] + dF/dt|explicit + sum_j
+ * dF/dp_j extra_j (the generalized forces and dissipation beyond -dH/dq);
+ * for an implicit H it is in q' too, which solves p = dL/dq'.  Derives H
+ * (qd_phase_ham) when needed.  NULL on failure (reason in ctx). */
+QD_API const qd_expr *qd_phase_dt(qd_ctx *ctx, qd_phase *ph, const qd_expr *F);
+QD_API void qd_phase_free(qd_phase *ph);
 
 #ifdef __cplusplus
 }

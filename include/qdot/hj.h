@@ -31,6 +31,7 @@
 #include <stddef.h>
 #include "expr.h"
 #include "model.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -90,6 +91,7 @@ typedef struct qd_hj {
     /* W = sum_k int p_k dq_k: closed forms where the kernel integrates,
      * integral(EXPR, VAR) otherwise; NULL when not separable */
     const qd_expr *W;
+    bool solved;               /* qd_hj_solve has filled motion, clock and beta */
 } qd_hj;
 
 typedef struct qd_hj_opts {
@@ -118,6 +120,25 @@ QD_API void qd_hj_free(qd_hj *h);
  * separable (QD_ERR_ARG otherwise). */
 QD_API qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h);
 
+/* h (derived from m; model_name names m in the heading, may be NULL)
+ * written for a reader, appended to out.  QD_FMT_TEXT and QD_FMT_LATEX:
+ * H, the equation, whether it separates and why, the separated equations
+ * with p (or p^2, or q of p) and each constant as a first integral, W, and
+ * the motion once solved (LaTeX with "% " before the prose lines).
+ * QD_FMT_SYMPY: a Python script defining H, HJ, separable, W, p2 and
+ * integrals (in coordinate order; None where a representation has none)
+ * and, solved, motion = {coordinate: (clock, q)}; each name gets
+ * underscores appended while the model uses it.  QD_ERR_ARG for another
+ * format, QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_hj_print(qd_ctx *ctx, const qd_hj *h, const qd_model *m,
+                             const char *model_name, qd_format fmt, qd_buf *out);
+/* The same as one JSON document and a newline: "model", "H", "equation",
+ * "time_independent", "separable", "form", "why", "separation" (per
+ * coordinate: "coordinate", "momentum", "constant", "equation", "p2", "p",
+ * "q_of_p", "cyclic", "integral", and once solved "motion", "clock"), "W",
+ * "constants", "energy_constant". */
+QD_API qd_status qd_hj_json(qd_ctx *ctx, const qd_hj *h, const char *model_name, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -126,6 +147,7 @@ QD_API qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h);
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_hj_derive (opts). An array whose count
+ * documented at the function, for: qd_hj_derive (opts); qd_hj_print (model_name); qd_hj_json
+ * (model_name). An array whose count
  * is 0 may be NULL. */
 #endif

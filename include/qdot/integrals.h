@@ -52,6 +52,7 @@
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -140,6 +141,8 @@ typedef struct qd_integrals {
     qd_noether *found;
     size_t ntested;             /* candidates the search tried (found or not) */
     const char **tested;        /* their names (static strings) */
+    bool searched;              /* opts->search was set */
+    bool constrained;           /* the equations carry constraints (no search then) */
     void *priv;
 } qd_integrals;
 
@@ -179,6 +182,38 @@ QD_API void qd_noether_clear(qd_noether *nt);
 QD_API qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *name,
                              const qd_expr *expr, qd_int_proposed *out);
 
+
+/* ---- the model's own statements, and the whole written out --------------- */
+
+/* Noether's integral of each `symmetry` statement of m and the check of
+ * each `integral` statement (qd_integrals_noether, qd_integrals_check), in
+ * the model's order; I derived from m. */
+typedef struct qd_integrals_given {
+    size_t nnoether;
+    qd_noether *noether;
+    size_t nproposed;
+    qd_int_proposed *proposed;
+} qd_integrals_given;
+QD_API qd_status qd_integrals_given_derive(qd_ctx *ctx, qd_integrals *I, const qd_model *m,
+                                           qd_integrals_given *out);
+QD_API void qd_integrals_given_free(qd_integrals_given *g);
+
+/* I and g (may be NULL: none given) written for a reader as text, appended
+ * to out: the cyclic coordinates, Jacobi's integral and the energy, the
+ * energy balance, the symmetries found (when searched), Noether's integrals
+ * of the given symmetries and the proposed integrals; each verdict says
+ * whether it rests on random states only.  model_name (may be NULL) heads
+ * it.  QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_integrals_print(qd_ctx *ctx, const qd_integrals *I,
+                                    const qd_integrals_given *g, const char *model_name,
+                                    qd_buf *out);
+/* The same as one JSON document and a newline: "model", "coordinates", "L",
+ * "cyclic", "jacobi", "energy_balance", "found", "tested", "noether",
+ * "proposed" (docs/cli.md shows one). */
+QD_API qd_status qd_integrals_json(qd_ctx *ctx, const qd_integrals *I,
+                                   const qd_integrals_given *g, const char *model_name,
+                                   qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -187,6 +222,7 @@ QD_API qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *na
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_integrals_derive (opts). An array
+ * documented at the function, for: qd_integrals_derive (opts); qd_integrals_print
+ * (g, model_name); qd_integrals_json (g, model_name). An array
  * whose count is 0 may be NULL. */
 #endif

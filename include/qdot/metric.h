@@ -42,6 +42,7 @@
 #include <stddef.h>
 #include "expr.h"
 #include "model.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -106,6 +107,25 @@ QD_API qd_status qd_metric_force(qd_ctx *ctx, const qd_metric *g, const qd_expr 
 QD_API qd_status qd_metric_lower(qd_ctx *ctx, const qd_metric *g, const qd_expr *const *A,
                                  const qd_expr **low);
 
+
+/* g written for a reader, appended to out: as text (fmt QD_FMT_TEXT) the
+ * metric, det g, the conjugate, the Christoffel symbols of both kinds (the
+ * nonzero ones, i <= j), the geodesic form, a force's components
+ * (covariant, contravariant, physical, ordinary) and the chart's Jacobian
+ * with its singular points.  G: the force's n covariant components, or NULL
+ * for the model's Q (then said so).  QD_ERR_ARG for another format,
+ * QD_ERR_NOMEM when out could not grow, a failure of qd_metric_force. */
+QD_API qd_status qd_metric_print(qd_ctx *ctx, const qd_metric *g, const qd_expr *const *G,
+                                 qd_format fmt, qd_buf *out);
+/* The same as one JSON document: "coordinates", "source", "T2", "T1",
+ * "T0", "metric", "metric_inverse", "det", "christoffel_first",
+ * "christoffel_second", "Q", "geodesic", "constrained", "force" ("given",
+ * "covariant", "contravariant", "physical", "ordinary"), "scale_factors",
+ * "scale_from", "orthogonal", "chart"; tensors as objects keyed by the
+ * coordinates' names. */
+QD_API qd_status qd_metric_json(qd_ctx *ctx, const qd_metric *g, const qd_expr *const *G,
+                                qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -114,5 +134,6 @@ QD_API qd_status qd_metric_lower(qd_ctx *ctx, const qd_metric *g, const qd_expr 
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_metric_force (up, phys, ord). */
+ * documented at the function, for: qd_metric_force (up, phys, ord); qd_metric_print (G);
+ * qd_metric_json (G). */
 #endif

@@ -36,6 +36,7 @@
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -146,6 +147,23 @@ QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom 
                                    const qd_expr *const *path, double t0, double t1,
                                    double *action, double *first_variation);
 
+
+/* ps (found for m and e with opts: its free ends are said so; may be NULL)
+ * written for a reader, appended to out: per path the action, the initial
+ * velocities, the multipliers, at fixed energy the least action and the
+ * time, the kinetic foci and whether it is a minimum (or why not
+ * examined), and every tenth sample.  Numbers have 12 significant digits.
+ * QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_path_print(qd_ctx *ctx, const qd_path_set *ps, const qd_model *m,
+                               const qd_eom *e, const qd_path_opts *opts, qd_buf *out);
+/* The same as one JSON document and a newline, every digit and every
+ * sample: "count", "paths" (each "action", at fixed energy "least_action"
+ * and "time", "initial_velocities", "multipliers", "residual", "samples"
+ * as [t, q...] rows, "kinetic_foci", "kinetic_foci_multiplicity",
+ * "minimum", "examined").  QD_ERR_NUMERIC for a non-finite number. */
+QD_API qd_status qd_path_json(qd_ctx *ctx, const qd_path_set *ps, const qd_model *m,
+                              const qd_eom *e, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -156,5 +174,5 @@ QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom 
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_path_foci (legendre);
  * qd_path_foci_free (ctx, foci); qd_path_foci_mult (legendre, mult);
- * qd_path_foci_mult_free (ctx). An array whose count is 0 may be NULL. */
+ * qd_path_foci_mult_free (ctx); qd_path_print (opts). An array whose count is 0 may be NULL. */
 #endif

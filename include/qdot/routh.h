@@ -49,6 +49,7 @@
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -151,6 +152,31 @@ QD_API qd_status qd_routh_velocities_at(qd_ctx *ctx, const qd_routh *r, const qd
                                         const double *vals, double *out);
 QD_API void qd_routh_free(qd_routh *r);
 
+/* The reduction r of m (e: its equations, as given to qd_routh_derive)
+ * written for a reader, appended to out: fmt QD_FMT_TEXT or QD_FMT_LATEX
+ * gives the heading (model_name, the ignored and kept coordinates), the
+ * momenta and quadratures, R by degree, V_eff, the reduced equations
+ * M q'' = f (entries j <= k of the symmetric M), the forced terms, G and
+ * the Jacobi integral, LaTeX with "% " before the prose lines;
+ * QD_FMT_SYMPY a Python script defining routh_ignored, routh_kept,
+ * routh_momenta, routh_pdef, routh_quadratures, routh_R, routh_R2,
+ * routh_R1, routh_R0, routh_V_eff, routh_jacobi, routh_M, routh_f,
+ * routh_G, routh_conserved (None for the parts an implicit R lacks, and
+ * routh_implicit = True).  model_name may be NULL ("model").  QD_ERR_ARG
+ * for another format, QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_routh_print(qd_ctx *ctx, const qd_routh *r, const qd_model *m,
+                                const qd_eom *e, const char *model_name, qd_format fmt,
+                                qd_buf *out);
+/* The same as one JSON document (and a newline): "model" (model_name, or
+ * null), "ignored", "momenta", "kept", "momentum_definitions", "R", "R2",
+ * "R1", "R0", "effective_potential", "jacobi_integral", "equations" (per
+ * kept coordinate: "q", its row of "M", "f"), "gyroscopic", "quadratures",
+ * "conserved"; for forced coordinates "momentum_rates",
+ * "momentum_rate_values", "f_with_momentum_rates"; "implicit": true only for
+ * an implicit R.  Expressions are strings in the text format. */
+QD_API qd_status qd_routh_json(qd_ctx *ctx, const qd_routh *r, const qd_model *m,
+                               const qd_eom *e, const char *model_name, qd_buf *out);
+
 /* The coordinate of m named name; NULL with QD_ERR_ARG and a message
  * ("unknown coordinate 'phy'; did you mean 'phi'?", "'g' is a parameter,
  * not a coordinate") otherwise. */
@@ -171,6 +197,7 @@ QD_API const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_routh_derive_opts (opts). An array
+ * documented at the function, for: qd_routh_derive_opts (opts); qd_routh_print
+ * (model_name); qd_routh_json (model_name). An array
  * whose count is 0 may be NULL. */
 #endif

@@ -30,6 +30,8 @@
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
+#include "equilibria.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -84,6 +86,14 @@ typedef struct qd_zvc_box {
     size_t nx, ny;
 } qd_zvc_box;
 
+/* "x=A:B, y=C:D" read into box: two different coordinates of e (the
+ * equations of m) across and up, A and B constant expressions in m's
+ * parameters (qd_model_number), A < B; nx and ny are left as they are.
+ * QD_ERR_ARG with the error located in text (an unknown coordinate gets
+ * "did you mean"). */
+QD_API qd_status qd_zvc_box_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                 const char *text, qd_zvc_box *box);
+
 /* The zero-velocity curves W = level (qd_contour_grid on W at the grid's
  * points).  QD_ERR_ARG for a bad box (ix == iy, an index out of range, an
  * empty range, nx or ny 0). */
@@ -91,6 +101,48 @@ QD_API qd_status qd_zvc_curves(qd_ctx *ctx, const qd_eom *e, const qd_zvc *z,
                                const qd_zvc_box *box, size_t nvals,
                                const qd_expr *const *syms, const double *vals, double level,
                                qd_contour *out);
+
+
+/* ---- the whole picture: curves, the equilibria in the box, written out --- */
+
+/* What `qdot zvc` shows: the curves W = level over the box and the
+ * equilibria inside it, each with W there (the level whose curve passes
+ * through it: for the restricted three-body problem the Jacobi constants
+ * of L1..L5, C_J = -2 W). */
+typedef struct qd_zvc_picture {
+    qd_zvc z;
+    qd_zvc_box box;
+    double level;
+    qd_contour curves;
+    qd_equilibria eq;   /* in the box (the other coordinates in their default
+                           box); count 0 when not sought */
+    double *eq_W;       /* eq.count values of W; NaN where it has none */
+} qd_zvc_picture;
+
+/* Trace the curves of z (from qd_zvc_derive for e and m) at level over box,
+ * the other coordinates and the parameters from syms/vals as for
+ * qd_zvc_curves, and, when equilibria is set, find the equilibria of e in
+ * the box with W at each.  Errors as qd_zvc_curves and qd_equilibria_find.
+ * Free with qd_zvc_picture_free (also after a failure). */
+QD_API qd_status qd_zvc_picture_make(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                     const qd_zvc *z, const qd_zvc_box *box, size_t nvals,
+                                     const qd_expr *const *syms, const double *vals,
+                                     double level, bool equilibria, qd_zvc_picture *out);
+QD_API void qd_zvc_picture_free(qd_zvc_picture *p);
+
+/* The picture written for a reader, appended to out: h, W, the level, each
+ * equilibrium with its kind and W, and a line per curve (closed or open,
+ * its points, its extent); results with 12 significant digits. */
+QD_API qd_status qd_zvc_print(qd_ctx *ctx, const qd_eom *e, const qd_zvc_picture *p,
+                              qd_buf *out);
+/* The curves' points as CSV: "curve,X,Y" (the box's coordinates), one row a
+ * point, every digit. */
+QD_API qd_status qd_zvc_csv(qd_ctx *ctx, const qd_eom *e, const qd_zvc_picture *p, qd_buf *out);
+/* The picture as one JSON document and a newline: "h", "W", "level",
+ * "grid" [nx, ny], "equilibria" (the coordinates, "kind", "h": W there),
+ * "curves" ("closed", the two coordinates' arrays). */
+QD_API qd_status qd_zvc_json(qd_ctx *ctx, const qd_eom *e, const qd_zvc_picture *p,
+                             qd_buf *out);
 
 #ifdef __cplusplus
 }
@@ -100,6 +152,6 @@ QD_API qd_status qd_zvc_curves(qd_ctx *ctx, const qd_eom *e, const qd_zvc *z,
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_zvc_curves (syms, vals). An array
- * whose count is 0 may be NULL. */
+ * documented at the function, for: qd_zvc_curves (syms, vals);
+ * qd_zvc_picture_make (syms, vals). An array whose count is 0 may be NULL. */
 #endif

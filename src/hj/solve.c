@@ -190,5 +190,6 @@ qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h) {
         if (!qd__ctx_recover(ctx))
             return QD_ERR_NOMEM;
     }
+    h->solved = true;
     return QD_OK;
 }

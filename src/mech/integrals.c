@@ -384,6 +384,8 @@ qd_integrals *qd_integrals_derive(qd_ctx *ctx, const qd_model *m, qd_eom *e,
         I->q = e->q;
         I->qd = e->qd;
         I->L = s->L;
+        I->searched = opts && opts->search;
+        I->constrained = e->ncon > 0;
         st = cyclic(ctx, s, I);
     }
     if (st == QD_OK)

@@ -51,6 +51,16 @@ NULLABLE = {
     'qd_hj_derive': {'opts'},
     'qd_impulse_solve': {'opts'},
     'qd_integrals_derive': {'opts'},
+    # issue 31's renderers (w31-cmds-a): the model's name, a given force, the find's options
+    'qd_routh_print': {'model_name'},
+    'qd_routh_json': {'model_name'},
+    'qd_hj_print': {'model_name'},
+    'qd_hj_json': {'model_name'},
+    'qd_integrals_print': {'g', 'model_name'},
+    'qd_integrals_json': {'g', 'model_name'},
+    'qd_metric_print': {'G'},
+    'qd_metric_json': {'G'},
+    'qd_path_print': {'opts'},
     'qd_legendre_inverse_p': {'pdef'},
     'qd_linearize': {'syms', 'vals'},
     'qd_lqr_feedback': {'syms', 'vals'},
@@ -106,6 +116,7 @@ NULLABLE = {
     'qd_symmetry_from_ops': {'R'},
     'qd_ufunc': {'args'},
     'qd_zvc_curves': {'syms', 'vals'},
+    'qd_zvc_picture_make': {'syms', 'vals'},
 }
 
 # Functions whose result for a NULL argument is not the type's error value

@@ -360,6 +360,73 @@ static void null_canonical(void **state)
     /* k NULL */
     qd_newham_free(NULL);
     reset(&F);
+    /* ---- qd_phase_init */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_init(NULL, F.model, (qd_phase *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_init(F.ctx, NULL, (qd_phase *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_init(F.ctx, F.model, NULL));
+    reset(&F);
+    /* ---- qd_phase_new_vars */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_new_vars(NULL, NULL));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_new_vars(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_phase_read */
+    /* ctx NULL */
+    assert_null(qd_phase_read(NULL, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_null(qd_phase_read(F.ctx, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_phase_read(F.ctx, NULL, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* err NULL */
+    assert_null(qd_phase_read(F.ctx, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_phase_read_list */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(NULL, NULL, "q", (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, "q", (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, NULL, (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, "q", NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* err NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_read_list(F.ctx, NULL, "q", (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_phase_ham */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_ham(NULL, NULL, false));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_ham(F.ctx, NULL, false));
+    reset(&F);
+    /* ---- qd_phase_dt */
+    /* ctx NULL */
+    assert_null(qd_phase_dt(NULL, NULL, F.q));
+    reset(&F);
+    /* ph NULL */
+    assert_null(qd_phase_dt(F.ctx, NULL, F.q));
+    reset(&F);
+    /* F NULL */
+    assert_null(qd_phase_dt(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_phase_free */
+    /* ph NULL */
+    qd_phase_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -1486,6 +1553,29 @@ static void null_hj(void **state)
     /* h NULL */
     assert_int_equal(QD_ERR_ARG, qd_hj_solve(F.ctx, NULL));
     reset(&F);
+    /* ---- qd_hj_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(NULL, NULL, F.model, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(F.ctx, NULL, F.model, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(F.ctx, NULL, NULL, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_print(F.ctx, NULL, F.model, "q", (qd_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_hj_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_json(NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_json(F.ctx, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_hj_json(F.ctx, NULL, "q", NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -1581,6 +1671,43 @@ static void null_integrals(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_integrals_check(F.ctx, NULL, "q", F.q, NULL));
+    reset(&F);
+    /* ---- qd_integrals_given_derive */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(NULL, NULL, F.model, (qd_integrals_given *)(void *)F.blob));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(F.ctx, NULL, F.model, (qd_integrals_given *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(F.ctx, NULL, NULL, (qd_integrals_given *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_given_derive(F.ctx, NULL, F.model, NULL));
+    reset(&F);
+    /* ---- qd_integrals_given_free */
+    /* g NULL */
+    qd_integrals_given_free(NULL);
+    reset(&F);
+    /* ---- qd_integrals_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_print(NULL, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_print(F.ctx, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_print(F.ctx, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_integrals_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_json(NULL, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_json(F.ctx, NULL, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_json(F.ctx, NULL, NULL, "q", NULL));
     reset(&F);
     teardown(&F);
 }
@@ -1881,6 +2008,26 @@ static void null_metric(void **state)
     reset(&F);
     /* low NULL */
     assert_int_equal(QD_ERR_ARG, qd_metric_lower(F.ctx, NULL, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_metric_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_print(NULL, NULL, (const qd_expr * const *)F.e, (qd_format){0}, &F.buf));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_print(F.ctx, NULL, (const qd_expr * const *)F.e, (qd_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_print(F.ctx, NULL, (const qd_expr * const *)F.e, (qd_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_metric_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_json(NULL, NULL, (const qd_expr * const *)F.e, &F.buf));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_json(F.ctx, NULL, (const qd_expr * const *)F.e, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_json(F.ctx, NULL, (const qd_expr * const *)F.e, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -2725,6 +2872,38 @@ static void null_path(void **state)
     /* first_variation NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, NULL));
     reset(&F);
+    /* ---- qd_path_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(NULL, NULL, F.model, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* ps NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, F.model, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, F.model, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_print(F.ctx, NULL, F.model, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_path_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(NULL, NULL, F.model, F.eom, &F.buf));
+    reset(&F);
+    /* ps NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, F.model, F.eom, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, NULL, F.eom, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, F.model, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_json(F.ctx, NULL, F.model, F.eom, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -3405,6 +3584,38 @@ static void null_routh(void **state)
     /* ---- qd_routh_free */
     /* r NULL */
     qd_routh_free(NULL);
+    reset(&F);
+    /* ---- qd_routh_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(NULL, NULL, F.model, F.eom, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, F.model, F.eom, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, NULL, F.eom, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, F.model, NULL, "q", (qd_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_print(F.ctx, NULL, F.model, F.eom, "q", (qd_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_routh_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(NULL, NULL, F.model, F.eom, "q", &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, F.model, F.eom, "q", &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, NULL, F.eom, "q", &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, F.model, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_json(F.ctx, NULL, F.model, F.eom, "q", NULL));
     reset(&F);
     /* ---- qd_routh_lookup */
     /* ctx NULL */
@@ -4438,6 +4649,22 @@ static void null_zvc(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_derive(F.ctx, F.model, F.eom, NULL));
     reset(&F);
+    /* ---- qd_zvc_box_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(NULL, F.model, F.eom, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, NULL, F.eom, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, F.model, F.eom, NULL, NULL));
+    reset(&F);
+    /* box NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_box_read(F.ctx, F.model, F.eom, "q", NULL));
+    reset(&F);
     /* ---- qd_zvc_curves */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_curves(NULL, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, (qd_contour *)(void *)F.blob));
@@ -4450,6 +4677,65 @@ static void null_zvc(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_curves(F.ctx, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, NULL));
+    reset(&F);
+    /* ---- qd_zvc_picture_make */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(NULL, F.model, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, NULL, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, F.model, NULL, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* z NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, F.model, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, (qd_zvc_picture *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_picture_make(F.ctx, F.model, F.eom, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, 1, false, NULL));
+    reset(&F);
+    /* ---- qd_zvc_picture_free */
+    /* p NULL */
+    qd_zvc_picture_free(NULL);
+    reset(&F);
+    /* ---- qd_zvc_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(F.ctx, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_print(F.ctx, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_zvc_csv */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(F.ctx, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_csv(F.ctx, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_zvc_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(NULL, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(F.ctx, F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_json(F.ctx, F.eom, NULL, NULL));
     reset(&F);
     teardown(&F);
 }

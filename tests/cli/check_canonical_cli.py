@@ -65,7 +65,7 @@ def test_bracket(qdot, free):
 
 def verdict(qdot, one, Q, P):
     """The exit status and the JSON verdict (printed for "yes", exit 0, and
-    for "no", exit 1), or standard error when nothing was printed."""
+    for "no", exit 3), or standard error when nothing was printed."""
     rc, out, err = run(qdot, "canonical", one, "--Q", Q, "--P", P, "--format", "json")
     return rc, (json.loads(out) if out else err)
 
@@ -74,29 +74,29 @@ def test_canonical(qdot, one, free):
     rc, v = verdict(qdot, one, "q^(1/2)*cos(2*p_q)", "q^(1/2)*sin(2*p_q)")
     check("a=1/2 b=2 canonical", rc == 0 and v["verdict"] == "canonical", str(v))
     # a scaled map ([Q, P] = c != 1, Goldstein's extended canonical
-    # transformation) is not canonical: the answer "no" exits 1
+    # transformation) is not canonical: the certified answer "no" exits 3
     rc, v = verdict(qdot, one, "q^(1/2)*cos(p_q)", "q^(1/2)*sin(p_q)")
-    check("b=1 scaled 1/2", rc == 1 and v["verdict"] == "scaled"
+    check("b=1 scaled 1/2", rc == 3 and v["verdict"] == "scaled"
           and same(v["scale"], "1/2", []), str(v))
     # the exchange Q = p, P = q has [Q, P] = -1 (Goldstein ch. 9.1: Q = p,
     # P = -q is the canonical one)
     rc, out, err = run(qdot, "canonical", one, "--Q", "p_q", "--P", "q")
-    check("exchange: not canonical, c = -1, exit 1", rc == 1 and out ==
+    check("exchange: not canonical, c = -1, exit 3", rc == 3 and out ==
           "not canonical (a scaled canonical map, c = -1): [Q_i, P_i] = -1\n", out + err)
     rc, out, err = run(qdot, "canonical", one, "--Q", "p_q", "--P", "-q")
     check("Q = p, P = -q canonical, exit 0", rc == 0 and out == "canonical\n", out + err)
     rc, v = verdict(qdot, one, "q*cos(2*p_q)", "q*sin(2*p_q)")
-    check("a=1 not canonical", rc == 1 and v["verdict"] == "not canonical"
+    check("a=1 not canonical", rc == 3 and v["verdict"] == "not canonical"
           and v["bracket"] == "[Q, P]" and same(v["value"], "2*q", ["q"]), str(v))
     rc, out, err = run(qdot, "canonical", one, "--Q", "q*cos(2*p_q)", "--P", "q*sin(2*p_q)")
-    check("text verdict", rc == 1 and out.startswith("not canonical: [Q, P] = "), out + err)
+    check("text verdict", rc == 3 and out.startswith("not canonical: [Q, P] = "), out + err)
     # linear map Q = A q, P = B p canonical iff B = (A^-1)^T
     rc, out, err = run(qdot, "canonical", free, "--Q", "x + y, y, z",
                        "--P", "p_x, p_y - p_x, p_z", "--format", "json")
     check("linear map canonical", rc == 0 and json.loads(out)["verdict"] == "canonical", out + err)
     rc, out, err = run(qdot, "canonical", free, "--Q", "x + y, y, z",
                        "--P", "p_x, p_y + p_x, p_z", "--format", "json")
-    check("linear map not canonical", rc == 1
+    check("linear map not canonical", rc == 3
           and json.loads(out)["verdict"] == "not canonical", out + err)
     rc, out, err = run(qdot, "canonical", one, "--Q", "q")
     check("missing --P exit 2", rc == 2 and "--P is missing" in err, err)

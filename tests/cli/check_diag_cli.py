@@ -112,7 +112,7 @@ def check_negative_expressions(qdot, cwd):
               'exit %d, out %r, err %r' % (p.returncode, out, p.stderr.decode()[:300]))
     p = run(qdot, cwd, ['bracket', 'ho.qd', '--nosuch', 'x'])
     check('bracket --nosuch is still an unknown option',
-          p.returncode == USAGE and b"unknown option or missing value: '--nosuch'" in p.stderr,
+          p.returncode == USAGE and b"has no option '--nosuch'" in p.stderr,
           p.stderr.decode()[:300])
 
 

@@ -161,7 +161,7 @@ def check_motion(rng, ns, d, coords, to_plain, p2, ranges, consts):
             # both sides are large and a 15-digit absolute test fails on round-off
             a, b = (complex(x.evalf(30, subs=v)) for x in (lhs, rhs))
             r = abs(a - b) / max(1.0, abs(a), abs(b))
-            check('%s motion %s(%s)' % (d['file'], q, clock_name), r < 1e-10, '%r %r' % (a, b))
+            check('%s motion %s(%s)' % (d['model'], q, clock_name), r < 1e-10, '%r %r' % (a, b))
 
 
 def check_textbook(qdot):

@@ -52,15 +52,15 @@ POWER = str(EXAMPLES / 'power_law_orbit.qd')
 USAGE, FAIL = 2, 1
 CASES = [
     # options: missing values, repeated, unknown, bad --format
-    (['routh', KEPLER, '--ignore'], USAGE, "missing value: '--ignore'"),
+    (['routh', KEPLER, '--ignore'], USAGE, "--ignore needs a value"),
     # was: "bad, repeated or incomplete option 'theta'" (the value, not the option)
     (['routh', KEPLER, '--ignore', 'theta', '--ignore', 'theta'], USAGE, '--ignore is given twice'),
     (['routh', KEPLER, '--ignore', 'theta', '--format', 'c'], USAGE,
-     '--format takes text, json, latex or sympy'),
+     "unknown value 'c' (one of text, json, latex, sympy)"),
     (['routh', KEPLER], USAGE, 'routh needs --ignore'),
-    (['integrals', KCART, '--format'], USAGE, "missing value: '--format'"),
-    (['integrals', KCART, '--format', 'latex'], USAGE, '--format takes text or json'),
-    (['integrals', KCART, '--no-search=1'], USAGE, 'unknown option'),
+    (['integrals', KCART, '--format'], USAGE, "--format needs a value"),
+    (['integrals', KCART, '--format', 'latex'], USAGE, "unknown value 'latex' (one of text, json)"),
+    (['integrals', KCART, '--no-search=1'], USAGE, '--no-search takes no value'),
     (['equilibria', 'one.qd', '--near', 'x=1', '--near', 'x=2'], USAGE, '--near is given twice'),
     (['equilibria', 'one.qd', '--format', 'yaml'], USAGE, '--format takes text or json'),
     (['modes', 'one.qd', '--about', 'x=0', '--at-equilibrium', '1'], USAGE, 'not both'),

@@ -265,7 +265,7 @@ def zvc(qdot):
                                              ((pts[2], 0), 0)]),
              ("above L4", h4 + 0.01, 0, [])]
     for name, level, ncurves, where in cases:
-        rc, out, err = run(qdot, "zvc", f, "--box", box, "--level", repr(level), "--n", "320",
+        rc, out, err = run(qdot, "zvc", f, "--box", box, "--level", repr(level), "--cells", "320",
                            "--format", "json")
         if rc:
             check(f"zvc {name} rc", False, err)
@@ -278,7 +278,7 @@ def zvc(qdot):
             check(f"zvc {name} around ({x:.3f}, {y:.3f})", got == k, got)
     osc = model("coordinates x, y\nparameters k = 1\nT = (x'^2 + y'^2)/2\nV = k/2*(x^2 + y^2)\n")
     rc, out, err = run(qdot, "zvc", osc, "--box", "x=-2:2, y=-2:2", "--at", "x=1, x'=1",
-                       "--n", "200", "--format", "csv")
+                       "--cells", "200", "--format", "csv")
     rows = [r.split(",") for r in out.splitlines()[1:]]
     r = [math.hypot(float(a), float(b)) for _, a, b in rows]
     check("zvc circle", rc == 0 and rows and max(abs(v - math.sqrt(2)) for v in r) < 1e-3,
