@@ -266,7 +266,7 @@ static const qd_expr *reduce(cc *c, frac *f) {
         fmpz_mpoly_neg(f->d, f->d, c->m);
     }
     fmpz_clear(z);
-    return qd_mul(c->ctx, from_poly(c, f->n), qd_pow(c->ctx, from_poly(c, f->d), c->ctx->minus_one));
+    return qd_mul(c->ctx, from_poly(c, f->n), qd_pow(c->ctx, from_poly(c, f->d), c->ctx->sym->minus_one));
 }
 
 /* e over one denominator, or NULL with c->failed when it grew too big. */

@@ -266,7 +266,7 @@ const qd_expr *qd_collect(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
     long var = gen_of(&s, x, "collect");
     const qd_poly *p = var >= 0 ? qd__xs_poly(&s, e) : NULL;
     if (p)
-        r = p->n ? gather(&s, p, (uint32_t)var, x) : ctx->zero;
+        r = p->n ? gather(&s, p, (uint32_t)var, x) : ctx->sym->zero;
     qd__xs_free(&s);
     return r;
 }

@@ -167,7 +167,7 @@ static const qd_poly *int_pow(qd_xsess *s, const qd_expr *e, const qd_expr *b, l
         qd_ctx_error(s->ctx, QD_ERR_DIVZERO, "division by zero in expansion");
         return NULL;
     }
-    const qd_expr *g = qd_pow(s->ctx, qd__xs_expr(s, pb), s->ctx->minus_one);
+    const qd_expr *g = qd_pow(s->ctx, qd__xs_expr(s, pb), s->ctx->sym->minus_one);
     if (g && g->kind == QD_POW && qd_is_integer(g->args[1]))
         return own_as(s, e, gen_poly(s, g, -n));
     const qd_poly *pg = g ? qd__xs_poly(s, g) : NULL;
@@ -325,7 +325,7 @@ static const qd_expr *term_expr(qd_xsess *s, const qd_poly *p, size_t t) {
     const qd_pterm *pt = &p->terms[t];
     const qd_expr *c = qd_poly_coef_is_one(p, t) ? NULL : qd_poly_coef_node(s->ctx, p, t);
     if (pt->len == 0)
-        return c ? c : s->ctx->one;
+        return c ? c : s->ctx->sym->one;
     const qd_expr *stack[17], **f = pt->len < 17 ? stack : qd__malloc(s->ctx, (pt->len + 1) * sizeof *f);
     if (!f) {
         qd__oom(s->ctx);
@@ -443,7 +443,7 @@ const qd_expr *qd__xs_expr(qd_xsess *s, const qd_poly *p) {
     if (!p)
         return NULL;
     if (p->n == 0)
-        return s->ctx->zero;
+        return s->ctx->sym->zero;
     if (p->n == 1)
         return term_expr(s, p, 0);
     const qd_expr **terms = qd__malloc(s->ctx, p->n * sizeof *terms);

@@ -25,7 +25,7 @@ static const qd_expr *base_of(const qd_expr *f, const qd_expr **exp, qd_ctx *ctx
         *exp = f->args[1];
         return f->args[0];
     }
-    *exp = ctx->one;
+    *exp = ctx->sym->one;
     return f;
 }
 
@@ -128,7 +128,7 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *s) {
     factors(&s->args[0], &n0);
     const qd_expr *g = content(ctx, s);
     if (!g)
-        g = ctx->one;
+        g = ctx->sym->one;
     common *cm = qd__malloc(ctx, (n0 + 1) * sizeof *cm);
     const qd_expr **parts = qd__malloc(ctx, (s->nargs + n0 + 1) * sizeof *parts);
     const qd_expr *r = NULL;

@@ -75,7 +75,7 @@ static const qd_expr *factor_at(const qd_expr *node, const fterm *t, size_t i) {
 
 static bool split_term(qd_ctx *ctx, const qd_expr *node, fterm *t) {
     t->ok = false;
-    t->coeff = ctx->one;
+    t->coeff = ctx->sym->one;
     t->fs = NULL;
     t->nf = 1;
     if (qd__is_num(node)) {
@@ -83,7 +83,7 @@ static bool split_term(qd_ctx *ctx, const qd_expr *node, fterm *t) {
         t->nf = 0;
     } else if (node->kind == QD_MUL) {
         size_t off = qd__is_num(node->args[0]) ? 1 : 0;
-        t->coeff = off ? node->args[0] : ctx->one;
+        t->coeff = off ? node->args[0] : ctx->sym->one;
         t->fs = node->args + off;
         t->nf = node->nargs - off;
     }
@@ -103,7 +103,7 @@ static bool split_term(qd_ctx *ctx, const qd_expr *node, fterm *t) {
         }
     }
     /* a subset of a canonical factor list is canonical */
-    t->den = nneg == 0 ? ctx->one : nneg == 1 ? neg[0] : qd__mul_raw(ctx, NULL, nneg, neg);
+    t->den = nneg == 0 ? ctx->sym->one : nneg == 1 ? neg[0] : qd__mul_raw(ctx, NULL, nneg, neg);
     if (!t->den)
         return false;
     t->deg = deg;
@@ -293,7 +293,7 @@ static bool factor_poly(qd_ctx *ctx, const gens *g, const fmpz_mpoly_t p,
     }
     const qd_expr *cx = from_poly(ctx, g, c, m);
     for (int pass = 0; pass < 2; pass++) {
-        if (pass == 0 && den == ctx->one && trivial)
+        if (pass == 0 && den == ctx->sym->one && trivial)
             continue;
         if (pass == 1 && !split)
             break;
@@ -537,7 +537,7 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
         }
         /* a polynomial of degree 1 has nothing to factor but content, which
          * factor_terms finds; over a denominator the terms may still group */
-        bool worth = deg >= 2 || s.t[i].den != ctx->one;
+        bool worth = deg >= 2 || s.t[i].den != ctx->sym->one;
         if (k >= 2 && k <= MAX_TERMS && worth && !try_sel(&s, sel, k, s.t[i].den, 0)) {
             if (ctx->status == QD_OK)
                 qd__oom(ctx);

@@ -40,6 +40,7 @@
 #include "../base/arena.h"
 #include "../base/ptrmap.h"
 #include "../base/mem.h"
+#include "../base/ctx.h"
 
 struct qd_expr {
     uint64_t hash;
@@ -74,9 +75,10 @@ typedef struct qd_symtab_entry {
     const qd_expr *sym;
 } qd_symtab_entry;
 
-struct qd_ctx {
-    const qd_allocator *alloc;   /* NULL: the C library's (mem.h) */
-    qd_arena arena;
+/* The kernel's part of a context (base/ctx.h's ctx->sym), attached by
+ * qd_ctx_new_with and released by qd_ctx_free through ctx->detach. */
+typedef struct qd__sym_state qd__sym_state;
+struct qd__sym_state {
     /* unique table: open addressing over (hash, node) slots, the hash kept
      * beside the pointer so that a probe reads the node only on a match */
     struct qd__slot { uint64_t hash; const qd_expr *e; } *table;
@@ -90,8 +92,6 @@ struct qd_ctx {
     size_t nrat, rat_cap;
     /* a few nodes every operation uses */
     const qd_expr *zero, *one, *minus_one, *half, *t;
-    qd_status status;
-    qd_diag diag;                /* the first error's record; diag.status == status */
     const char *tname;           /* how t prints (qd_print_set_time_name); NULL: "t" */
 };
 
@@ -103,8 +103,6 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
                           const qd_expr *const *args);
 const char *qd__intern_name(qd_ctx *ctx, const char *name);
 const char *qd__find_name(const qd_ctx *ctx, const char *name); /* NULL if never interned */
-void *qd__alloc(qd_ctx *ctx, size_t size);
-void qd__oom(qd_ctx *ctx);
 uint64_t qd__hash_mix(uint64_t h, uint64_t v);
 /* The forms listed at the top of this file (canon.c); qd__intern asserts it
  * on every new node unless NDEBUG is defined. */

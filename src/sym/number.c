@@ -166,9 +166,9 @@ const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
 
 const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
     if (a->kind == QD_RATIONAL && b->kind == QD_RATIONAL) {
-        if (a == ctx->one)
+        if (a == ctx->sym->one)
             return b;
-        if (b == ctx->one)
+        if (b == ctx->sym->one)
             return a;
         mpq_t r;
         mpq_init(r);
@@ -217,7 +217,7 @@ const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool
             return NULL;
         }
         *folded = true;
-        return ctx->zero;
+        return ctx->sym->zero;
     }
     /* too many bits to fold (after the root below they only shrink) */
     double bits = (double)ap * (double)mpz_sizeinbase(mpq_numref(a->u.q), 2) / (double)d;

@@ -314,12 +314,12 @@ static bool load(pass *p, const qd_expr *s) {
         if (qd__is_num(x)) {
             t->coeff = x;
         } else if (x->kind != QD_MUL) {
-            t->coeff = p->ctx->one;
+            t->coeff = p->ctx->sym->one;
             t->fs = &s->args[i];
             t->nf = 1;
         } else {
             size_t off = qd__is_num(x->args[0]) ? 1 : 0;
-            t->coeff = off ? x->args[0] : p->ctx->one;
+            t->coeff = off ? x->args[0] : p->ctx->sym->one;
             t->fs = x->args + off;
             t->nf = x->nargs - off;
         }
