@@ -371,7 +371,7 @@ static qd_ham *hamiltonian(qd_ctx *ctx, const qd_model *m, qd_eom **e) {
     if (!*e && !qd_model_hamiltonian_given(m))
         return NULL;
     qd_ham *h = qd_ham_derive(ctx, m, *e);
-    if (qd__ham_closed(ctx, h, "the action variables") != QD_OK) {
+    if (qd__mech_ham_closed(ctx, h, "the action variables") != QD_OK) {
         qd_ham_free(h);
         return NULL;
     }

@@ -18,7 +18,7 @@ qd_ctx *qd__ctx_create(const qd_allocator *a) {
     if (!ctx)
         return NULL;
     ctx->alloc = a;
-    qd_arena_init(&ctx->arena, a);
+    qd__arena_init(&ctx->arena, a);
     return ctx;
 }
 
@@ -27,7 +27,7 @@ void qd_ctx_free(qd_ctx *ctx) {
         return;
     if (ctx->detach)
         ctx->detach(ctx);
-    qd_arena_free(&ctx->arena);
+    qd__arena_free(&ctx->arena);
     qd__free(ctx);
 }
 
@@ -36,7 +36,7 @@ void qd_ctx_free(qd_ctx *ctx) {
 void qd__oom(qd_ctx *ctx) { qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory"); }
 
 void *qd__alloc(qd_ctx *ctx, size_t size) {
-    void *p = qd_arena_alloc(&ctx->arena, size);
+    void *p = qd__arena_alloc(&ctx->arena, size);
     if (!p)
         qd__oom(ctx);
     return p;

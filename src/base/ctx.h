@@ -20,7 +20,7 @@ struct qd__sym_state; /* src/sym/node.h */
 
 struct qd_ctx {
     const qd_allocator *alloc;   /* NULL: the C library's (mem.h) */
-    qd_arena arena;              /* nodes and names, freed with the context */
+    qd__arena arena;              /* nodes and names, freed with the context */
     qd_status status;
     qd_diag diag;                /* the first error's record; diag.status == status */
     struct qd__sym_state *sym;   /* the kernel's state, attached by src/sym */

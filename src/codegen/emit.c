@@ -52,7 +52,7 @@ typedef struct bound {
 } bound;
 
 typedef struct walk {
-    qd_ptrmap seen;
+    qd__ptrmap seen;
     const qd_expr **syms;
     size_t n, cap;
     const qd_expr *bad;   /* a user function */
@@ -60,9 +60,9 @@ typedef struct walk {
 } walk;
 
 static void collect(walk *w, const qd_expr *e) {
-    if (w->oom || qd_ptrmap_has(&w->seen, e))
+    if (w->oom || qd__ptrmap_has(&w->seen, e))
         return;
-    if (!qd_ptrmap_put(&w->seen, e, (void *)e)) {
+    if (!qd__ptrmap_put(&w->seen, e, (void *)e)) {
         w->oom = true;
         return;
     }
@@ -197,7 +197,7 @@ static qd_status block(gen *g, const src *s, size_t nout, const qd_expr *const *
     qd_buf_free(&text);
     if (st == QD_ERR_NOMEM)
         qd__oom(g->ctx);
-    qd_ptrmap_free(&w.seen);
+    qd__ptrmap_free(&w.seen);
     qd__free(w.syms);
     qd__free(vs);
     qd__free(names);
@@ -531,7 +531,7 @@ static bool identifier(const char *s) {
     return true;
 }
 
-qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
+qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                       bool embed, qd_buf *c, qd_buf *h) {
     if (!ctx || !m || !e || !c || (!embed && !h))
         return QD_ERR_ARG;
@@ -583,7 +583,7 @@ qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const ch
                        qd_buf *c_text, qd_buf *h_text) {
     QD_ARGS_CTX(ctx, ctx && m && e && prefix && c_text);
     qd_buf scratch = QD_BUF_WITH(qd__ctx_allocator(ctx));
-    qd_status st = qd__codegen(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
+    qd_status st = qd__cg_emit(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
     qd_buf_free(&scratch);
     return st;
 }

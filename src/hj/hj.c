@@ -59,7 +59,7 @@ static const qd_expr *hamiltonian(qd_ctx *ctx, const qd_model *m, hj_in *in) {
     if (!in->H_given && !e)
         return NULL;
     qd_ham *ham = qd_ham_derive(ctx, m, e);
-    const qd_expr *H = ham && qd__ham_closed(ctx, ham, "the Hamilton-Jacobi equation") == QD_OK
+    const qd_expr *H = ham && qd__mech_ham_closed(ctx, ham, "the Hamilton-Jacobi equation") == QD_OK
                        ? ham->H : NULL;
     for (size_t k = 0; ham && k < ham->n; k++) {
         in->q[k] = ham->q[k];

@@ -127,12 +127,12 @@ static qd_status copy_characters(qd_ctx *ctx, qd_symmetry *s, const qd__chartab 
 static qd_status names(qd_ctx *ctx, qd_symmetry *s, const qd__group *grp,
                        const qd__chartab *t) {
     s->name[0] = 0;
-    if (s->geometric && qd__pointgroup_name(ctx, grp, s->R, s->name) != QD_OK) {
+    if (s->geometric && qd__group_pointgroup_name(ctx, grp, s->R, s->name) != QD_OK) {
         if (!qd__ctx_recover(ctx))
             return QD_ERR_NOMEM;
         s->name[0] = 0;
     }
-    if (qd__irrep_labels(ctx, grp, s->geometric ? s->R : NULL, t, s->label) == QD_OK)
+    if (qd__group_irrep_labels(ctx, grp, s->geometric ? s->R : NULL, t, s->label) == QD_OK)
         return QD_OK;
     if (!qd__ctx_recover(ctx))
         return QD_ERR_NOMEM;
@@ -169,7 +169,7 @@ static qd_status build(qd_ctx *ctx, qd_symmetry *s) {
         st = copy_characters(ctx, s, &tab);
     if (st == QD_OK)
         st = names(ctx, s, &grp, &tab);
-    qd__chartab_free(&tab);
+    qd__group_chartab_free(&tab);
     qd__group_free(&grp);
     return st;
 }
@@ -208,8 +208,8 @@ qd_status qd_symmetry_from_ops(qd_ctx *ctx, const qd_linear *lin, size_t order,
     size_t n = lin->n;
     out->n = n;
     for (size_t g = 0; g < order; g++)
-        if (!qd__symm_invariant(n, S + g * n * n, lin->M) ||
-            !qd__symm_invariant(n, S + g * n * n, lin->K)) {
+        if (!qd__lin_symm_invariant(n, S + g * n * n, lin->M) ||
+            !qd__lin_symm_invariant(n, S + g * n * n, lin->K)) {
             qd_ctx_error(ctx, QD_ERR_ARG, "operation %zu leaves M0 or K0 not invariant", g);
             return QD_ERR_ARG;
         }
@@ -223,10 +223,10 @@ static qd_status find_ops(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
     bool found = false;
     qd_status st = QD_OK;
     if (m && e)
-        st = qd__symm_geometric(ctx, e, m, nvals, syms, vals, lin, ops, &out->rigid,
+        st = qd__lin_symm_geometric(ctx, e, m, nvals, syms, vals, lin, ops, &out->rigid,
                                 &out->nrigid, &out->rigid_kind, &found);
     if (st == QD_OK && !found)
-        st = qd__symm_permutations(ctx, lin, ops);
+        st = qd__lin_symm_permutations(ctx, lin, ops);
     out->geometric = found;
     if (st == QD_OK && ops->overflow) {
         qd_ctx_error(ctx, QD_ERR_TOOBIG, "the symmetry group has more than %d elements",
@@ -254,7 +254,7 @@ qd_status qd_symmetry_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size
     bool geometric = out->geometric;
     if (st == QD_OK)
         st = take_ops(ctx, out, ops.count, ops.S, geometric ? ops.R : NULL);
-    qd__symm_ops_free(&ops);
+    qd__lin_symm_ops_free(&ops);
     return st == QD_OK ? build(ctx, out) : st;
 }
 

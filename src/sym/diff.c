@@ -17,7 +17,7 @@
 typedef struct deriv {
     qd_ctx *ctx;
     const qd_expr *x;  /* the symbol, or NULL for d/dt */
-    qd_ptrmap memo;
+    qd__ptrmap memo;
 } deriv;
 
 static const qd_expr *d(deriv *dv, const qd_expr *e);
@@ -138,7 +138,7 @@ static const qd_expr *d_user(deriv *dv, const qd_expr *e) {
 static const qd_expr *d(deriv *dv, const qd_expr *e) {
     if (!e)
         return NULL;
-    const qd_expr *r = qd_ptrmap_get(&dv->memo, e);
+    const qd_expr *r = qd__ptrmap_get(&dv->memo, e);
     if (r)
         return r;
     qd_ctx *ctx = dv->ctx;
@@ -167,7 +167,7 @@ static const qd_expr *d(deriv *dv, const qd_expr *e) {
     case QD_UFUNC:
     case QD_UDERIV: r = d_user(dv, e); break;
     }
-    if (r && !qd_ptrmap_put(&dv->memo, e, (void *)r)) {
+    if (r && !qd__ptrmap_put(&dv->memo, e, (void *)r)) {
         qd__oom(ctx);
         return NULL;
     }
@@ -179,7 +179,7 @@ static const qd_expr *derive(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
         return NULL;
     deriv dv = {ctx, x, QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
     const qd_expr *r = d(&dv, e);
-    qd_ptrmap_free(&dv.memo);
+    qd__ptrmap_free(&dv.memo);
     return r;
 }
 

@@ -164,8 +164,8 @@ const qd_expr *qd_factor_terms(qd_ctx *ctx, const qd_expr *e) {
     QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = qd__map(ctx, e, &memo, post_factor, NULL);
-    qd_ptrmap_free(&memo);
+    qd__ptrmap_free(&memo);
     return r;
 }

@@ -233,7 +233,7 @@ static void sym_detach(qd_ctx *ctx) {
     qd__free(S->rationals);
     qd__free(S->table);
     qd__free(S->names);
-    qd_ptrmap_free(&S->symtab);
+    qd__ptrmap_free(&S->symtab);
     qd__free(S);
     ctx->sym = NULL;
 }

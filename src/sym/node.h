@@ -84,7 +84,7 @@ struct qd__sym_state {
     struct qd__slot { uint64_t hash; const qd_expr *e; } *table;
     size_t table_cap, table_len;
     /* symbols by name */
-    qd_ptrmap symtab;            /* interned name -> its symbol */
+    qd__ptrmap symtab;            /* interned name -> its symbol */
     const char **names;          /* interned names, open addressing */
     size_t names_cap, names_len;
     /* rational nodes, for mpq_clear at the end */
@@ -168,7 +168,7 @@ double qd__step_value(double x);                       /* step(x), 1/2 at 0 */
 /* ---- map.c ---------------------------------------------------------------- */
 /* Rewrite e bottom-up (map.c has the contract); post may be NULL. */
 typedef const qd_expr *(*qd__post_fn)(qd_ctx *ctx, const qd_expr *e, void *data);
-const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_fn post,
+const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo, qd__post_fn post,
                        void *data);
 double qd__pow_value(double b, double e);
 
