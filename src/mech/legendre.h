@@ -35,8 +35,4 @@ qd_status qd__mech_legendre_singular(qd_ctx *ctx, const qd_expr *const *pdef, si
                                 const qd_expr *const *q, const qd_expr *const *qd,
                                 const char *stmt);
 
-/* QD_ERR_NONLINEAR, with a message saying what (a sentence subject: "the
- * Hamilton-Jacobi equation") needs, when h is implicit (legendre_newton.c). */
-qd_status qd__mech_ham_closed(qd_ctx *ctx, const qd_ham *h, const char *what);
-
 #endif

@@ -135,14 +135,14 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
     for (size_t i = 0; i < n && ok; i++) {
         const qd_expr *x = xs[i];
         if (qd__is_num(x)) {
-            constant = qd__num_add(ctx, constant, x);
+            constant = qd__number_add(ctx, constant, x);
             ok = constant != NULL;
             continue;
         }
         size_t j0 = 0;
         if (x->kind == QD_ADD) {
             if (qd__is_num(x->args[0])) {
-                constant = qd__num_add(ctx, constant, x->args[0]);
+                constant = qd__number_add(ctx, constant, x->args[0]);
                 ok = constant != NULL;
                 j0 = 1;
             }
@@ -178,7 +178,7 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
         size_t j = i + 1;
         const qd_expr *c = v[i].coeff;
         for (; j < len && same_key(&v[i], &v[j]); j++)
-            c = qd__num_add(ctx, c, v[j].coeff);
+            c = qd__number_add(ctx, c, v[j].coeff);
         if (!c)
             ok = false;
         else if (!qd_is_zero(c)) {

@@ -100,7 +100,7 @@ static int same_rank_cmp(const qd_expr *a, const qd_expr *b) {
     switch ((qd_kind)a->kind) {
     case QD_RATIONAL:
     case QD_FLOAT:
-        return qd__num_cmp(a, b);
+        return qd__number_cmp(a, b);
     case QD_CONSTANT:
         return (int)a->tag - (int)b->tag;
     case QD_SYMBOL:

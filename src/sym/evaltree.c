@@ -87,7 +87,7 @@ static double value(walk *w, const qd_expr *e) {
     switch ((qd_kind)e->kind) {
     case QD_RATIONAL:
     case QD_FLOAT:
-        if (w->st == QD_OK && !qd__num_finite(w->ctx, e))
+        if (w->st == QD_OK && !qd__number_finite(w->ctx, e))
             w->st = QD_ERR_NUMERIC;
         return qd_number_value(e);
     case QD_CONSTANT:

@@ -59,7 +59,7 @@ static const qd_expr *min_exp(const qd_expr *a, const qd_expr *b) {
         return a;
     if (!qd__is_rational(a) || !qd__is_rational(b))
         return NULL;
-    return qd__num_cmp(a, b) <= 0 ? a : b;
+    return qd__number_cmp(a, b) <= 0 ? a : b;
 }
 
 static size_t find_common(qd_ctx *ctx, const qd_expr *s, common *out) {

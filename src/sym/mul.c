@@ -85,12 +85,12 @@ static bool gather(qd_ctx *ctx, size_t n, const qd_expr *const *xs, const qd_exp
     for (size_t i = 0; i < n; i++) {
         const qd_expr *x = xs[i];
         if (qd__is_num(x)) {
-            if (!(*coeff = qd__num_mul(ctx, *coeff, x)))
+            if (!(*coeff = qd__number_mul(ctx, *coeff, x)))
                 return false;
         } else if (x->kind == QD_MUL) {
             for (size_t j = 0; j < x->nargs; j++) {
                 if (qd__is_num(x->args[j])) {
-                    if (!(*coeff = qd__num_mul(ctx, *coeff, x->args[j])))
+                    if (!(*coeff = qd__number_mul(ctx, *coeff, x->args[j])))
                         return false;
                 } else if (!push(ctx, v, len, cap, x->args[j])) {
                     qd__oom(ctx);

@@ -114,14 +114,14 @@ bool qd__is_canonical(const qd_expr *proto, size_t nargs, const qd_expr *const *
  * bits (2^26: 8 MiB), so GMP is never asked for more. */
 #define QD_MAX_FOLD_BITS (1UL << 26)
 const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q);
-const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
-const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+const qd_expr *qd__number_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+const qd_expr *qd__number_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
 /* a^e for numbers; NULL result with *exact=false when it does not fold. */
-const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded);
-int qd__num_cmp(const qd_expr *a, const qd_expr *b);
+const qd_expr *qd__number_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded);
+int qd__number_cmp(const qd_expr *a, const qd_expr *b);
 /* Whether number e is a finite double; else QD_ERR_NUMERIC recorded, naming
  * its size ("the number 10^100000 overflows a double"). */
-bool qd__num_finite(qd_ctx *ctx, const qd_expr *e);
+bool qd__number_finite(qd_ctx *ctx, const qd_expr *e);
 bool qd__is_rational(const qd_expr *e);
 bool qd__is_float(const qd_expr *e);
 

@@ -91,7 +91,7 @@ static const qd_expr *split_root(qd_ctx *ctx, const qd_expr *prod, const qd_expr
         if (f->kind == QD_RATIONAL) {
             const qd_expr *c = qd_number_sign(f) < 0 ? qd_neg(ctx, f) : f;
             /* c is NULL when qd_neg ran out of memory (recorded): f stays inside */
-            const qd_expr *cr = c ? qd__num_pow(ctx, c, r, &folded) : NULL;
+            const qd_expr *cr = c ? qd__number_pow(ctx, c, r, &folded) : NULL;
             folded = folded && cr && !qd_is_one(c);
             if (folded) {
                 out[nout++] = cr;
@@ -140,7 +140,7 @@ const qd_expr *qd_pow(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
         return b;
     if (qd__is_num(b) && qd__is_num(e)) {
         bool folded;
-        const qd_expr *r = qd__num_pow(ctx, b, e, &folded);
+        const qd_expr *r = qd__number_pow(ctx, b, e, &folded);
         if (folded)
             return r;
         if (!qd_is_zero(b))

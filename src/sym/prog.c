@@ -106,7 +106,7 @@ static bool is_leaf_kind(const qd_expr *e) {
 /* Can e be computed at all?  (It is not an input: those are indexed first.) */
 static bool computable(comp *c, const qd_expr *e) {
     if (qd__is_num(e))
-        return qd__num_finite(c->ctx, e);
+        return qd__number_finite(c->ctx, e);
     if (e->kind == QD_SYMBOL && e->tag == QD_ROLE_COORD && e->order >= 3) {
         qd_ctx_error(c->ctx, QD_ERR_UNBOUND,
                      "%s is a derivative of order %u: only a coordinate, its velocity (q') "

@@ -163,8 +163,8 @@ static bool poly_form(qd_ctx *ctx, eterm *const *g, size_t n, bool in_sin, const
         long keep = in_sin ? g[i]->al : g[i]->be, drop = in_sin ? g[i]->be : g[i]->al;
         for (long j = 0; j <= drop; j++) {
             const qd_expr *c = qd_int(ctx, (j % 2 ? -1 : 1) * binom(drop, j));
-            c = c ? qd__num_mul(ctx, g[i]->coeff, c) : NULL;
-            if (!c || !(p[keep + j] = qd__num_add(ctx, p[keep + j], c)))
+            c = c ? qd__number_mul(ctx, g[i]->coeff, c) : NULL;
+            if (!c || !(p[keep + j] = qd__number_add(ctx, p[keep + j], c)))
                 return false;
         }
     }
@@ -425,7 +425,7 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
         for (size_t i = 0; ok && i < ne; r /= (size_t)e[i].drop + 1, i++) {
             long j = (long)(r % ((size_t)e[i].drop + 1));
             const qd_expr *bj = qd_int(ctx, (j % 2 ? -1 : 1) * binom(e[i].drop, j));
-            c = bj ? qd__num_mul(ctx, c, bj) : NULL;
+            c = bj ? qd__number_mul(ctx, c, bj) : NULL;
             buf[m++] = qd_powi(ctx, e[i].keep, e[i].keep_exp + 2 * j);
             buf[m++] = qd_powi(ctx, e[i].drop_base, e[i].rest);
             ok = c && buf[m - 1] && buf[m - 2];

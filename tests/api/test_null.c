@@ -1400,6 +1400,16 @@ static void null_hamilton(void **state)
     /* qd_out NULL */
     assert_int_equal(QD_ERR_ARG, qd_ham_velocities_at(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
     reset(&F);
+    /* ---- qd_ham_require_closed */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_require_closed(NULL, NULL, "q"));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_require_closed(F.ctx, NULL, "q"));
+    reset(&F);
+    /* what NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_require_closed(F.ctx, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -3970,6 +3980,16 @@ static void null_symmetry(void **state)
     reset(&F);
     /* lin NULL */
     assert_int_equal(QD_ERR_ARG, qd_symmetry_reduce(F.ctx, NULL, NULL));
+    reset(&F);
+    /* ---- qd_group_characters */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_group_characters(NULL, 1, F.z, F.d, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* table NULL */
+    assert_int_equal(QD_ERR_ARG, qd_group_characters(F.ctx, 1, NULL, F.d, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_group_characters(F.ctx, 1, F.z, F.d, NULL));
     reset(&F);
     /* ---- qd_symmetry_block_label */
     /* sym NULL */
