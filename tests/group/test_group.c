@@ -242,6 +242,36 @@ static void check_vector_rep(const built *b, const std_table *s, const size_t *f
     }
 }
 
+/* The public entry (qd_group_characters, qdot/symmetry.h) from the same
+ * Cayley table: Cotton's name, his class sizes (as a multiset), sum d^2 =
+ * |G| (Burnside), and each of his Mulliken symbols among the labels. */
+static void check_public(const built *b, const std_table *s) {
+    qd_symmetry pub;
+    assert_int_equal(qd_group_characters(b->ctx, b->m->n, b->m->mul, b->m->R, &pub), QD_OK);
+    assert_string_equal(pub.name, s->name);
+    assert_int_equal(pub.nclass, s->nclass);
+    assert_int_equal(pub.nirrep, s->nclass);
+    size_t want[MAXC + 1] = {0}, got[MAXC + 1] = {0}, d2 = 0;
+    for (size_t k = 0; k < s->nclass; k++) {
+        want[s->sizes[k] <= MAXC ? s->sizes[k] : MAXC]++;
+        got[pub.class_size[k] <= MAXC ? pub.class_size[k] : MAXC]++;
+        d2 += pub.irrep_dim[k] * pub.irrep_dim[k];
+    }
+    assert_memory_equal(want, got, sizeof want);
+    assert_int_equal(d2, b->m->n);
+    for (size_t k = 0; k < s->nclass; k++) {
+        bool seen = false;
+        for (size_t i = 0; i < pub.nirrep; i++)
+            seen |= strcmp(pub.label[i], s->labels[k]) == 0;
+        assert_true(seen);
+    }
+    qd_symmetry_free(&pub);
+    /* not a group: refused, nothing to free */
+    size_t bad[4] = {0, 1, 1, 1};
+    assert_int_equal(qd_group_characters(b->ctx, 2, bad, NULL, &pub), QD_ERR_ARG);
+    qd_ctx_clear_error(b->ctx);
+}
+
 static void check_standard(size_t ngen, const double *gens, const std_table *s) {
     built b = build(ngen, gens);
     size_t found[MAXC];
@@ -255,6 +285,7 @@ static void check_standard(size_t ngen, const double *gens, const std_table *s) 
     assert_int_equal(qd__group_irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
     for (size_t k = 0; k < s->nclass; k++)
         assert_string_equal(labels[found[k]], s->labels[k]);
+    check_public(&b, s);
     unbuild(&b);
 }
 
