@@ -20,6 +20,7 @@
 #include "qdot/certify.h"
 #include "qdot/codegen.h"
 #include "qdot/constrained.h"
+#include "qdot/contour.h"
 #include "qdot/control.h"
 #include "qdot/equilibria.h"
 #include "qdot/eval.h"
@@ -526,6 +527,28 @@ static void null_constrained(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_contour(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_contour_grid */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(NULL, 1, 1, F.d, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, NULL, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, F.d, 1, 1, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_contour_free */
+    /* c NULL */
+    qd_contour_free(NULL);
     reset(&F);
     teardown(&F);
 }
@@ -4035,20 +4058,6 @@ static void null_zvc(void **state)
     (void)state;
     static fixture F;
     setup(&F);
-    /* ---- qd_contour_grid */
-    /* ctx NULL */
-    assert_int_equal(QD_ERR_ARG, qd_contour_grid(NULL, 1, 1, F.d, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
-    reset(&F);
-    /* f NULL */
-    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, NULL, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
-    reset(&F);
-    /* out NULL */
-    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, F.d, 1, 1, 1, 1, 1, NULL));
-    reset(&F);
-    /* ---- qd_contour_free */
-    /* c NULL */
-    qd_contour_free(NULL);
-    reset(&F);
     /* ---- qd_zvc_derive */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_derive(NULL, F.model, F.eom, (qd_zvc *)(void *)F.blob));
@@ -4086,6 +4095,7 @@ int main(void)
         cmocka_unit_test(null_certify),
         cmocka_unit_test(null_codegen),
         cmocka_unit_test(null_constrained),
+        cmocka_unit_test(null_contour),
         cmocka_unit_test(null_control),
         cmocka_unit_test(null_equilibria),
         cmocka_unit_test(null_eval),
