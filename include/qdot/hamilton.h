@@ -103,6 +103,12 @@ QD_API qd_status qd_ham_velocities_at(qd_ctx *ctx, const qd_ham *h, size_t nsyms
                                       const qd_expr *const *syms, const double *vals,
                                       double *qd_out);
 
+/* Whether h gives H in closed form, for a computation (what, a sentence
+ * subject: "the Hamilton-Jacobi equation") that needs it: QD_OK when it
+ * does, QD_ERR_NONLINEAR with a message saying what needs it when
+ * h->implicit (p = dL/dq' has no closed-form solution for q'). */
+QD_API qd_status qd_ham_require_closed(qd_ctx *ctx, const qd_ham *h, const char *what);
+
 #ifdef __cplusplus
 }
 #endif

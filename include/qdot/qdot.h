@@ -25,6 +25,7 @@
 #include "routh.h"
 #include "stability.h"
 #include "control.h"
+#include "contour.h"
 #include "zvc.h"
 #include "speeds.h"
 #include "path.h"

@@ -114,6 +114,17 @@ QD_API qd_status qd_symmetry_from_ops(qd_ctx *ctx, const qd_linear *lin, size_t 
  * a projector's rank is not n_i d_i, or Kb is not block diagonal (1e-8). */
 QD_API qd_status qd_symmetry_reduce(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *sym);
 
+/* The classes, character table, Schoenflies name and Mulliken labels of
+ * the finite group with Cayley table table (order*order, row-major:
+ * table[a*order + b] the index of a b), and, when R is not NULL, the 3x3
+ * orthogonal maps of its elements (order*9, for the point-group name and
+ * the labels; NULL: an abstract group, irreps G1, G2, ...).  out is filled
+ * as a qd_symmetry without operations (n = 0, S NULL: no reduction), order,
+ * table and R copied; qd_symmetry_free releases it.  QD_ERR_ARG when the
+ * table is not a group's (closure, identity, inverses, associativity) or
+ * order exceeds 4096; nothing to free on failure. */
+QD_API qd_status qd_group_characters(qd_ctx *ctx, size_t order, const size_t *table,
+                                     const double *R, qd_symmetry *out);
 /* Block b's label: the irrep's, or a complex pair's without the letter a/b
  * where their labels differ ("E" from Ea and Eb, "E1" from E1a and E1b, "E'"
  * from Ea' and Eb'; else "A+B").  cap >= 32. */
@@ -159,6 +170,7 @@ QD_API void qd_cyclic_modes_free(qd_cyclic_modes *c);
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_symmetry_from_ops (R). An array whose
+ * documented at the function, for: qd_symmetry_from_ops (R); qd_group_characters
+ * (R). An array whose
  * count is 0 may be NULL. */
 #endif

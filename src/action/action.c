@@ -12,7 +12,6 @@
 #include <string.h>
 
 #include "base/mem.h"
-#include "mech/legendre.h"
 #include "num/num.h"
 #include "qdot/hamilton.h"
 #include "qdot/mech.h"
@@ -371,7 +370,7 @@ static qd_ham *hamiltonian(qd_ctx *ctx, const qd_model *m, qd_eom **e) {
     if (!*e && !qd_model_hamiltonian_given(m))
         return NULL;
     qd_ham *h = qd_ham_derive(ctx, m, *e);
-    if (qd__ham_closed(ctx, h, "the action variables") != QD_OK) {
+    if (qd_ham_require_closed(ctx, h, "the action variables") != QD_OK) {
         qd_ham_free(h);
         return NULL;
     }

@@ -80,10 +80,13 @@ bool qd__act_fn_init(qd_ctx *ctx, qd__act_fn *f, const qd_expr *p2, const qd_exp
             if (in[i] == q)
                 iq = i;
         if (iq == nin) {
-            in = qd__realloc(ctx, in, (nin + 1) * sizeof *in);
-            ok = in != NULL;
-            if (ok)
+            /* a failed realloc leaves in allocated: keep it to free below */
+            const qd_expr **grown = qd__realloc(ctx, in, (nin + 1) * sizeof *in);
+            ok = grown != NULL;
+            if (ok) {
+                in = grown;
                 in[nin++] = q;
+            }
         }
         if (ok) {
             const qd_expr *t = in[0];

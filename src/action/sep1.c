@@ -80,14 +80,14 @@ typedef struct angle_walk {
     size_t n;
     const qd_expr *const *q;
     bool *angle;
-    qd_ptrmap seen;
+    qd__ptrmap seen;
     bool nomem;
 } angle_walk;
 
 static void mark(angle_walk *w, const qd_expr *x) {
-    if (!x || w->nomem || qd_ptrmap_has(&w->seen, x))
+    if (!x || w->nomem || qd__ptrmap_has(&w->seen, x))
         return;
-    if (!qd_ptrmap_put(&w->seen, x, (void *)x)) {
+    if (!qd__ptrmap_put(&w->seen, x, (void *)x)) {
         w->nomem = true; /* an angle missed would read a rotation as unbounded */
         return;
     }
@@ -121,7 +121,7 @@ bool qd__act_angles(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *con
                 mark(&w, qd_model_body_position(m, i, k));
             mark(&w, qd_model_body_rotation(m, i, k / 3, k % 3));
         }
-    qd_ptrmap_free(&w.seen);
+    qd__ptrmap_free(&w.seen);
     if (w.nomem)
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
     return !w.nomem;

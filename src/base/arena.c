@@ -7,26 +7,27 @@
 
 #define QD_ARENA_BLOCK (64u * 1024u)
 
-struct qd_arena_block {
-    qd_arena_block *next;
+struct qd__arena_block {
+    qd__arena_block *next;
     size_t cap;
     alignas(max_align_t) unsigned char data[];
 };
 
-void qd_arena_init(qd_arena *a, const qd_allocator *al) {
+void qd__arena_init(qd__arena *a, const qd_allocator *al) {
     a->al = al;
     a->head = NULL;
     a->used = 0;
     a->total = 0;
 }
 
-void *qd_arena_alloc(qd_arena *a, size_t size) {
+void *qd__arena_alloc(qd__arena *a, size_t size) {
     const size_t align = alignof(max_align_t);
     size = (size + align - 1) & ~(align - 1);
     if (!a->head || a->head->cap - a->used < size) {
         /* Oversized requests get a block of their own size. */
         size_t cap = size > QD_ARENA_BLOCK ? size : QD_ARENA_BLOCK;
-        qd_arena_block *b = cap > SIZE_MAX - sizeof *b ? NULL : qd__mem_malloc(a->al, sizeof *b + cap);
+        qd__arena_block *b =
+            cap > SIZE_MAX - sizeof *b ? NULL : qd__mem_malloc(a->al, sizeof *b + cap);
         if (!b)
             return NULL;
         b->cap = cap;
@@ -40,12 +41,12 @@ void *qd_arena_alloc(qd_arena *a, size_t size) {
     return p;
 }
 
-void qd_arena_free(qd_arena *a) {
-    qd_arena_block *b = a->head;
+void qd__arena_free(qd__arena *a) {
+    qd__arena_block *b = a->head;
     while (b) {
-        qd_arena_block *next = b->next;
+        qd__arena_block *next = b->next;
         qd__free(b);
         b = next;
     }
-    qd_arena_init(a, a->al);
+    qd__arena_init(a, a->al);
 }

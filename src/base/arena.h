@@ -10,18 +10,18 @@
 #include <stddef.h>
 #include "mem.h"
 
-typedef struct qd_arena_block qd_arena_block;
+typedef struct qd__arena_block qd__arena_block;
 
-typedef struct qd_arena {
-    qd_arena_block *head;
+typedef struct qd__arena {
+    qd__arena_block *head;
     size_t used;       /* bytes used in head */
     size_t total;      /* bytes handed out over all blocks */
     const qd_allocator *al; /* where blocks come from (mem.h) */
-} qd_arena;
+} qd__arena;
 
-void qd_arena_init(qd_arena *a, const qd_allocator *al);
+void qd__arena_init(qd__arena *a, const qd_allocator *al);
 /* size bytes aligned for any object; NULL when out of memory. */
-void *qd_arena_alloc(qd_arena *a, size_t size);
-void qd_arena_free(qd_arena *a);
+void *qd__arena_alloc(qd__arena *a, size_t size);
+void qd__arena_free(qd__arena *a);
 
 #endif

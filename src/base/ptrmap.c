@@ -12,19 +12,19 @@ static size_t slot_of(const void *key, size_t cap) {
     return (size_t)h & (cap - 1);
 }
 
-void qd_ptrmap_free(qd_ptrmap *m) {
+void qd__ptrmap_free(qd__ptrmap *m) {
     qd__free(m->slots);
     m->slots = NULL;
     m->cap = m->len = 0;
 }
 
-void qd_ptrmap_clear(qd_ptrmap *m) {
+void qd__ptrmap_clear(qd__ptrmap *m) {
     for (size_t i = 0; i < m->cap; i++)
         m->slots[i].key = NULL;
     m->len = 0;
 }
 
-static qd_ptrmap_slot *find(const qd_ptrmap *m, const void *key) {
+static qd__ptrmap_slot *find(const qd__ptrmap *m, const void *key) {
     if (!m->cap)
         return NULL;
     size_t i = slot_of(key, m->cap);
@@ -33,19 +33,19 @@ static qd_ptrmap_slot *find(const qd_ptrmap *m, const void *key) {
     return &m->slots[i];
 }
 
-void *qd_ptrmap_get(const qd_ptrmap *m, const void *key) {
-    qd_ptrmap_slot *s = find(m, key);
+void *qd__ptrmap_get(const qd__ptrmap *m, const void *key) {
+    qd__ptrmap_slot *s = find(m, key);
     return s && s->key ? s->val : NULL;
 }
 
-bool qd_ptrmap_has(const qd_ptrmap *m, const void *key) {
-    qd_ptrmap_slot *s = find(m, key);
+bool qd__ptrmap_has(const qd__ptrmap *m, const void *key) {
+    qd__ptrmap_slot *s = find(m, key);
     return s && s->key;
 }
 
-static bool grow(qd_ptrmap *m) {
+static bool grow(qd__ptrmap *m) {
     size_t cap = m->cap ? m->cap * 2 : 64;
-    qd_ptrmap_slot *slots = qd__mem_calloc(m->al, cap, sizeof *slots);
+    qd__ptrmap_slot *slots = qd__mem_calloc(m->al, cap, sizeof *slots);
     if (!slots)
         return false;
     for (size_t i = 0; i < m->cap; i++) {
@@ -62,10 +62,10 @@ static bool grow(qd_ptrmap *m) {
     return true;
 }
 
-bool qd_ptrmap_put(qd_ptrmap *m, const void *key, void *val) {
+bool qd__ptrmap_put(qd__ptrmap *m, const void *key, void *val) {
     if ((m->len + 1) * 2 > m->cap && !grow(m))
         return false;
-    qd_ptrmap_slot *s = find(m, key);
+    qd__ptrmap_slot *s = find(m, key);
     if (!s->key) {
         s->key = key;
         m->len++;

@@ -12,27 +12,27 @@
 #include <stdbool.h>
 #include "mem.h"
 
-typedef struct qd_ptrmap_slot {
+typedef struct qd__ptrmap_slot {
     const void *key;
     void *val;
-} qd_ptrmap_slot;
+} qd__ptrmap_slot;
 
-typedef struct qd_ptrmap {
-    qd_ptrmap_slot *slots;
+typedef struct qd__ptrmap {
+    qd__ptrmap_slot *slots;
     size_t cap;   /* a power of two, or 0 */
     size_t len;
     const qd_allocator *al; /* where slots come from (mem.h) */
-} qd_ptrmap;
+} qd__ptrmap;
 
 #define QD_PTRMAP_INIT {NULL, 0, 0, NULL}      /* the C library's memory */
 #define QD_PTRMAP_AL(a) {NULL, 0, 0, (a)}       /* a context's: qd__ctx_allocator(ctx) */
 
-void qd_ptrmap_free(qd_ptrmap *m);
-void qd_ptrmap_clear(qd_ptrmap *m);
+void qd__ptrmap_free(qd__ptrmap *m);
+void qd__ptrmap_clear(qd__ptrmap *m);
 /* The value stored for key, or NULL (keys must not be NULL). */
-void *qd_ptrmap_get(const qd_ptrmap *m, const void *key);
-bool qd_ptrmap_has(const qd_ptrmap *m, const void *key);
+void *qd__ptrmap_get(const qd__ptrmap *m, const void *key);
+bool qd__ptrmap_has(const qd__ptrmap *m, const void *key);
 /* Insert or replace; false when out of memory. */
-bool qd_ptrmap_put(qd_ptrmap *m, const void *key, void *val);
+bool qd__ptrmap_put(qd__ptrmap *m, const void *key, void *val);
 
 #endif

@@ -43,17 +43,17 @@ static bool expandable(const qd_expr *e) {
 }
 
 typedef struct census {
-    qd_ptrmap seen;     /* every node visited */
-    qd_ptrmap single;   /* sin/cos nodes of a bare symbol */
-    qd_ptrmap angles;   /* symbols in expandable arguments */
+    qd__ptrmap seen;     /* every node visited */
+    qd__ptrmap single;   /* sin/cos nodes of a bare symbol */
+    qd__ptrmap angles;   /* symbols in expandable arguments */
     size_t nsingle, npair, nangles;
     bool oom;
 } census;
 
 static void visit(census *c, const qd_expr *e) {
-    if (qd_ptrmap_has(&c->seen, e))
+    if (qd__ptrmap_has(&c->seen, e))
         return;
-    if (!qd_ptrmap_put(&c->seen, e, (void *)e)) {
+    if (!qd__ptrmap_put(&c->seen, e, (void *)e)) {
         c->oom = true;
         return;
     }
@@ -62,16 +62,16 @@ static void visit(census *c, const qd_expr *e) {
     if (e->kind == QD_FUNC && (e->tag == QD_SIN || e->tag == QD_COS) &&
         e->args[0]->kind == QD_SYMBOL) {
         c->nsingle++;
-        c->oom |= !qd_ptrmap_put(&c->single, e, (void *)e);
+        c->oom |= !qd__ptrmap_put(&c->single, e, (void *)e);
     } else if (expandable(e)) {
         c->npair++;
         for (size_t i = 0; i < 2; i++) {
             const qd_expr *s = NULL;
             if (!plain_term(e->args[0]->args[i], &s))
                 continue;
-            if (!qd_ptrmap_has(&c->angles, s)) {
+            if (!qd__ptrmap_has(&c->angles, s)) {
                 c->nangles++;
-                c->oom |= !qd_ptrmap_put(&c->angles, s, (void *)s);
+                c->oom |= !qd__ptrmap_put(&c->angles, s, (void *)s);
             }
         }
     }
@@ -85,8 +85,8 @@ static size_t calls_after(qd_ctx *ctx, const census *c) {
         const qd_expr *s = c->angles.slots[i].key;
         if (!s)
             continue;
-        extra += !qd_ptrmap_has(&c->single, qd_fn(ctx, QD_SIN, s));
-        extra += !qd_ptrmap_has(&c->single, qd_fn(ctx, QD_COS, s));
+        extra += !qd__ptrmap_has(&c->single, qd_fn(ctx, QD_SIN, s));
+        extra += !qd__ptrmap_has(&c->single, qd_fn(ctx, QD_COS, s));
     }
     return c->nsingle + extra;
 }
@@ -114,19 +114,19 @@ qd_status qd__cg_angle_sums(qd_ctx *ctx, size_t n, const qd_expr **exprs, bool *
         visit(&c, exprs[i]);
     qd_status st = c.oom ? QD_ERR_NOMEM : QD_OK;
     if (st == QD_OK && c.npair && calls_after(ctx, &c) < c.nsingle + c.npair) {
-        qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+        qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
         for (size_t i = 0; i < n && st == QD_OK; i++) {
             exprs[i] = qd__map(ctx, exprs[i], &memo, rewrite, NULL);
             if (!exprs[i])
                 st = qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
         }
-        qd_ptrmap_free(&memo);
+        qd__ptrmap_free(&memo);
         *applied = st == QD_OK;
     }
     if (c.oom)
         qd__oom(ctx);
-    qd_ptrmap_free(&c.seen);
-    qd_ptrmap_free(&c.single);
-    qd_ptrmap_free(&c.angles);
+    qd__ptrmap_free(&c.seen);
+    qd__ptrmap_free(&c.single);
+    qd__ptrmap_free(&c.angles);
     return st;
 }

@@ -18,7 +18,7 @@
 #include <string.h>
 
 typedef struct walk {
-    qd_ptrmap seen;
+    qd__ptrmap seen;
     const qd_expr **syms;
     size_t n, cap;
     const qd_expr *bad; /* a user function: it has no C definition */
@@ -26,9 +26,9 @@ typedef struct walk {
 } walk;
 
 static void collect(walk *w, const qd_expr *e) {
-    if (w->oom || qd_ptrmap_has(&w->seen, e))
+    if (w->oom || qd__ptrmap_has(&w->seen, e))
         return;
-    if (!qd_ptrmap_put(&w->seen, e, (void *)e)) {
+    if (!qd__ptrmap_put(&w->seen, e, (void *)e)) {
         w->oom = true;
         return;
     }
@@ -120,7 +120,7 @@ qd_status qd__cg_block(qd_ctx *ctx, qd_buf *c, size_t nout, const qd_expr *const
     qd_buf_free(&text);
     if (st == QD_ERR_NOMEM)
         qd__oom(ctx);
-    qd_ptrmap_free(&w.seen);
+    qd__ptrmap_free(&w.seen);
     qd__free(w.syms);
     qd__free(vs);
     return st;

@@ -10,7 +10,7 @@
 /* The C of e's equations.  embed: one self-contained file (the header's
  * declarations inlined, no #include "prefix.h"), as native loading compiles
  * it; otherwise c includes "<prefix>.h" and h (not NULL) receives it. */
-qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
+qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                       bool embed, qd_buf *c, qd_buf *h);
 
 /* The generated file's dense solvers (LU with partial pivoting, Cholesky

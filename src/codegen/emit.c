@@ -386,7 +386,7 @@ static qd_status fn_jacobian(gen *g) {
     return st;
 }
 
-qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
+qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                       bool embed, qd_buf *c, qd_buf *h) {
     if (!ctx || !m || !e || !c || (!embed && !h))
         return QD_ERR_ARG;
@@ -436,7 +436,7 @@ qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const ch
                        qd_buf *c_text, qd_buf *h_text) {
     QD_ARGS_CTX(ctx, ctx && m && e && prefix && c_text);
     qd_buf scratch = QD_BUF_WITH(qd__ctx_allocator(ctx));
-    qd_status st = qd__codegen(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
+    qd_status st = qd__cg_emit(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
     qd_buf_free(&scratch);
     return st;
 }

@@ -432,7 +432,7 @@ qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const 
     if (!ctx || !m || !e)
         return QD_ERR_ARG;
     qd_buf text = QD_BUF_WITH(qd__ctx_allocator(ctx));
-    qd_status st = qd__codegen(ctx, m, e, PREFIX, true, &text, NULL);
+    qd_status st = qd__cg_emit(ctx, m, e, PREFIX, true, &text, NULL);
     if (st == QD_OK)
         st = qd__native_object(ctx, qd_buf_str(&text), GENERATOR, cache, out->path,
                                &out->cached, &out->handle);

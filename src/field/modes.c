@@ -53,7 +53,7 @@ static const qd_expr *total(qd_ctx *ctx, const qd__field *f, const qd_expr *g, c
 
 const qd_expr *qd_field_equation(qd_ctx *ctx, const qd_field *fld) {
     QD_ARGS(NULL, ctx && fld);
-    const qd__field *f = qd__field_data(fld);
+    const qd__field *f = qd__mdl_field_data(fld);
     const qd_expr *L = f->density;
     const qd_expr *e = qd_add(ctx, total(ctx, f, qd_diff(ctx, L, f->yt), 't'),
                               total(ctx, f, qd_diff(ctx, L, f->yx), 'x'));
@@ -292,7 +292,7 @@ qd_status qd_field_modes_compute(qd_ctx *ctx, const qd_field *fld, const qd_fiel
         qd_ctx_error(ctx, QD_ERR_ARG, "at most 1000 modes, not %zu", o.count);
         return QD_ERR_ARG;
     }
-    const qd__field *f = qd__field_data(fld);
+    const qd__field *f = qd__mdl_field_data(fld);
     qd_status st = coefficients(ctx, f, out);
     if (st != QD_OK)
         return st;

@@ -40,7 +40,7 @@ static const double TWO_PI = 6.28318530717958647692;
  * vectors (Freivalds) instead of entry by entry: O(n^2) instead of O(n^3). */
 enum { EXACT_CHECK_MAX = 128, BURNSIDE_MAX_CLASSES = 1024 };
 
-void qd__chartab_free(qd__chartab *t) {
+void qd__group_chartab_free(qd__chartab *t) {
     if (!t)
         return;
     qd__free(t->dim);
@@ -577,6 +577,6 @@ qd_status qd__group_characters(qd_ctx *ctx, const qd__group *g, qd__chartab *t) 
         st = verify(ctx, g, t);
     }
     if (st != QD_OK)
-        qd__chartab_free(t);
+        qd__group_chartab_free(t);
     return st;
 }

@@ -31,19 +31,20 @@ typedef struct qd__chartab {
  * the closed forms for cyclic and dihedral groups; rows ordered trivial first,
  * then by dimension; verified by both orthogonality relations (error if not). */
 qd_status qd__group_characters(qd_ctx *ctx, const qd__group *g, qd__chartab *t);
-void qd__chartab_free(qd__chartab *t);
+void qd__group_chartab_free(qd__chartab *t);
 
 /* When the group acts on 3-space: R[a*9 .. a*9+8] the row-major 3x3 orthogonal
  * matrix of element a. Schoenflies name ("C2v", "D3h", "Td", "Oh", "Cinfv"... up to
  * 15 chars) or "" if not a point group; Mulliken labels per irrep (A1, A2, E, T2,
  * Ag, B1u, E', A2'' ...; complex pairs of cyclic groups as E1a/E1b or "E(k)"). */
-qd_status qd__pointgroup_name(qd_ctx *ctx, const qd__group *g, const double *R, char name[16]);
-qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R,
+qd_status qd__group_pointgroup_name(qd_ctx *ctx, const qd__group *g, const double *R,
+                                    char name[16]);
+qd_status qd__group_irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R,
                            const qd__chartab *t, char (*labels)[12]);
 
 /* Additions after the contract (additive only).
- * R may be NULL (an abstract group): qd__pointgroup_name gives "" and
- * qd__irrep_labels Gamma1, Gamma2, ... in the table's row order, both QD_OK;
+ * R may be NULL (an abstract group): qd__group_pointgroup_name gives "" and
+ * qd__group_irrep_labels Gamma1, Gamma2, ... in the table's row order, both QD_OK;
  * so do matrices that are not a faithful orthogonal representation. */
 #define QD__GROUP_MAX_ORDER 4096   /* the table alone is order^2 indices: 128 MiB here */
 

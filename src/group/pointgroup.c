@@ -364,7 +364,8 @@ static qd_status describe(qd_ctx *ctx, const qd__group *g, const double *R, pg *
     return st;
 }
 
-qd_status qd__pointgroup_name(qd_ctx *ctx, const qd__group *g, const double *R, char name[16]) {
+qd_status qd__group_pointgroup_name(qd_ctx *ctx, const qd__group *g, const double *R,
+                                    char name[16]) {
     pg p;
     bool is_pg = false;
     name[0] = '\0';
@@ -449,8 +450,8 @@ static bool all_distinct(size_t n, char (*labels)[12]) {
     return true;
 }
 
-qd_status qd__irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R, const qd__chartab *t,
-                           char (*labels)[12]) {
+qd_status qd__group_irrep_labels(qd_ctx *ctx, const qd__group *g, const double *R,
+                                 const qd__chartab *t, char (*labels)[12]) {
     if (!g || !t || !labels || t->n != g->nclass) {
         qd_ctx_error(ctx, QD_ERR_ARG, "irrep labels: a character table of the group is needed");
         return QD_ERR_ARG;

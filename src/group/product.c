@@ -125,7 +125,7 @@ qd_status qd__group_product_table(qd_ctx *ctx, const qd__group *g, qd__chartab *
             *done = true;
         }
     }
-    qd__chartab_free(&th);
+    qd__group_chartab_free(&th);
     qd__group_free(&h);
     qd__free(idx);
     qd__free(elems);

@@ -15,7 +15,6 @@
 #include <stdio.h>
 #include <string.h>
 #include "base/mem.h"
-#include "mech/legendre.h"
 #include "qdot/hamilton.h"
 #include "qdot/mech.h"
 #include "../base/args.h"
@@ -59,7 +58,7 @@ static const qd_expr *hamiltonian(qd_ctx *ctx, const qd_model *m, hj_in *in) {
     if (!in->H_given && !e)
         return NULL;
     qd_ham *ham = qd_ham_derive(ctx, m, e);
-    const qd_expr *H = ham && qd__ham_closed(ctx, ham, "the Hamilton-Jacobi equation") == QD_OK
+    const qd_expr *H = ham && qd_ham_require_closed(ctx, ham, "the Hamilton-Jacobi equation") == QD_OK
                        ? ham->H : NULL;
     for (size_t k = 0; ham && k < ham->n; k++) {
         in->q[k] = ham->q[k];

@@ -5,7 +5,7 @@
  *
  * The rows are kept as qd_con records (name, velocity coefficients a and
  * velocity-free part a0) so that the mechanics layer's diagnosis
- * (qd__con_report) and reactions (qd_eom_reaction) can be reused on a
+ * (qd__mech_con_report) and reactions (qd_eom_reaction) can be reused on a
  * qd_eom view of them (qd__imp_view).
  */
 #ifndef QD_IMPULSE_PRIV_H
@@ -87,7 +87,7 @@ bool qd__imp_saddle(qd_ctx *ctx, size_t n, size_t m, const double *M, const doub
 qd_status qd__imp_solve(const qd__imp *s, const bool *use, bool report, double *v1,
                         double *lambda, bool *redundant);
 
-/* A qd_eom view of s with every row as a constraint (for qd__con_report
+/* A qd_eom view of s with every row as a constraint (for qd__mech_con_report
  * and qd_eom_reaction); nothing to free. */
 qd_eom qd__imp_view(const qd__imp *s);
 

@@ -85,7 +85,7 @@ static qd_status energy(qd__imp *s) {
         return QD_ERR_ARG;
     }
     qd__vsum v;
-    qd_status st = qd__by_velocity(ctx, T, s->n, s->e->qd, &v);
+    qd_status st = qd__mech_by_velocity(ctx, T, s->n, s->e->qd, &v);
     if ((st == QD_ERR_NONLINEAR || (st == QD_OK && v.top > 2)) && s->e->L)
         return momenta(s);
     if (st == QD_ERR_NONLINEAR || (st == QD_OK && v.top > 2))

@@ -7,8 +7,8 @@
  *
  * (Desloge ch. 57 thm 1 eqs. 4-5 with Newton's law for each sudden row),
  * assembled and solved by the numerics home (src/num); the diagnosis of a
- * singular system is the mechanics layer's (qd__con_deficient,
- * qd__con_report), on a qd_eom view of the rows.
+ * singular system is the mechanics layer's (qd__mech_con_deficient,
+ * qd__mech_con_report), on a qd_eom view of the rows.
  */
 #include "impulse_priv.h"
 
@@ -217,11 +217,11 @@ static qd_status diagnose(const qd__imp *s, size_t m, const size_t *idx, const d
     if (!mu)
         return nomem(ctx);
     double *mu_used = mu + s->nrow;
-    if (qd__con_deficient(ctx, s->n, m, B, SOLVE_TOL * 1e3, mu_used)) {
+    if (qd__mech_con_deficient(ctx, s->n, m, B, SOLVE_TOL * 1e3, mu_used)) {
         for (size_t k = 0; k < m; k++)
             mu[idx[k]] = mu_used[k];
         qd_eom view = qd__imp_view(s);
-        qd__con_report(ctx, &view, mu, combination_nonzero(m, mu_used, r), " at the impact");
+        qd__mech_con_report(ctx, &view, mu, combination_nonzero(m, mu_used, r), " at the impact");
     } else if (!qd__ctx_nomem(ctx)) {
         qd_ctx_error(ctx, QD_ERR_SINGULAR,
                      "the mass matrix is singular at the impact on the motions the constraints "

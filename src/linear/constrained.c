@@ -777,7 +777,7 @@ static qd_status classify(qd_ctx *ctx, cw *w, const double *q, qd_equilibrium *p
                     p->symmetric = false;
         /* K_r a = s M_r a: the signs of K_r relative to the mass, as the
          * unconstrained classification reads the Hessian */
-        if (!qd__sym_eig(ctx, r, lin.K, ev, NULL))
+        if (!qd__lin_sym_eig(ctx, r, lin.K, ev, NULL))
             st = QD_ERR_NUMERIC;
     }
     if (st == QD_OK) {
@@ -837,7 +837,7 @@ static qd_status search(cw *w, const double *lo, const double *hi, const double 
             for (size_t j = 0; j < n; j++)
                 if (fabs(q[j]) < 1e-15 * (1 + max_abs(n, q)))
                     q[j] = 0;
-            if (!qd__roots_add(w->ctx, roots, q, res, NULL))
+            if (!qd__lin_roots_add(w->ctx, roots, q, res, NULL))
                 return QD_ERR_NOMEM;
         }
     }
@@ -909,7 +909,7 @@ done:
                                                  : "finding equilibria failed");
     if (st != QD_OK)
         qd_equilibria_free(out);
-    qd__roots_free(&roots);
+    qd__lin_roots_free(&roots);
     qd__free(angle);
     qd__free(lo);
     qd__free(hi);

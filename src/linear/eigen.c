@@ -33,7 +33,7 @@ extern void dggev_(const char *jobvl, const char *jobvr, const int *n, double *a
                    double *vl, const int *ldvl, double *vr, const int *ldvr, double *work,
                    const int *lwork, int *info);
 
-bool qd__sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs) {
+bool qd__lin_sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs) {
     int ni = (int)n, info = 0, lwork = -1;
     if (n == 0)
         return true;
@@ -300,7 +300,8 @@ qd_status qd_modes_solve(qd_ctx *ctx, const qd_linear *lin, qd_modes_result *out
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < i; j++)
             skew = fmax(skew, fabs(lin->K[i * n + j] - lin->K[j * n + i]));
-    out->conservative = (cg == 0 || qd__negligible(cg, scale)) && qd__negligible(skew, max_abs(nn, lin->K));
+    out->conservative =
+        (cg == 0 || qd__lin_negligible(cg, scale)) && qd__lin_negligible(skew, max_abs(nn, lin->K));
     qd_status st;
     if (out->conservative) {
         out->omega2 = qd__calloc(ctx, n + 1, sizeof *out->omega2);

@@ -32,10 +32,10 @@ const char *qd_eq_kind_name(qd_eq_kind k) {
 
 /* ---- which coordinates are angles ------------------------------------------ */
 
-static void mark_angles(const qd_expr *x, const qd_eom *e, bool *angle, qd_ptrmap *seen) {
-    if (!x || qd_ptrmap_has(seen, x))
+static void mark_angles(const qd_expr *x, const qd_eom *e, bool *angle, qd__ptrmap *seen) {
+    if (!x || qd__ptrmap_has(seen, x))
         return;
-    qd_ptrmap_put(seen, x, (void *)x);
+    qd__ptrmap_put(seen, x, (void *)x);
     if (qd_expr_kind(x) == QD_FUNC &&
         (qd_expr_func(x) == QD_SIN || qd_expr_func(x) == QD_COS || qd_expr_func(x) == QD_TAN)) {
         for (size_t j = 0; j < e->n; j++)
@@ -51,7 +51,7 @@ qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model
                                     double *lo, double *hi) {
     QD_ARGS_CTX(ctx, ctx && e && m && angle && lo && hi);
     (void)ctx;
-    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     for (size_t j = 0; j < e->n; j++)
         angle[j] = false;
     for (size_t j = 0; j < e->n; j++)
@@ -61,7 +61,7 @@ qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model
         mark_angles(qd_model_kinetic(m), e, angle, &seen);
         mark_angles(qd_model_potential(m), e, angle, &seen);
     }
-    qd_ptrmap_free(&seen);
+    qd__ptrmap_free(&seen);
     for (size_t j = 0; lo && hi && j < e->n; j++) {
         lo[j] = angle[j] ? -PI : -10;
         hi[j] = angle[j] ? PI : 10;
@@ -404,7 +404,7 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     p->residual = 0;
     for (size_t j = 0; j < n; j++)
         p->residual = fmax(p->residual, fabs(qd__lin_F(L)[j]));
-    bool ok = qd__sym_eig(L->ctx, n, K, w, NULL);
+    bool ok = qd__lin_sym_eig(L->ctx, n, K, w, NULL);
     double wmax = 0;
     for (size_t j = 0; ok && j < n; j++)
         wmax = fmax(wmax, fabs(w[j]));
@@ -422,7 +422,7 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
             : p->npos == 0 ? QD_EQ_MAXIMUM : QD_EQ_SADDLE;
     qd__free(K);
     qd__free(w);
-    /* qd__sym_eig fails for want of memory as well as in LAPACK */
+    /* qd__lin_sym_eig fails for want of memory as well as in LAPACK */
     return ok ? QD_OK : qd_ctx_status(L->ctx) == QD_ERR_NOMEM ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
 }
 
@@ -482,7 +482,7 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                 JtJ[i * n + j] = s;
             }
         /* the caller found K degenerate: its most nearly null direction */
-        if (qd__sym_eig(L->ctx, n, JtJ, w, v)) {
+        if (qd__lin_sym_eig(L->ctx, n, JtJ, w, v)) {
             double qmax = 0;
             for (size_t i = 0; i < n; i++)
                 qmax = fmax(qmax, fabs(q[i]));
@@ -491,7 +491,7 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                 double h = rel * (1 + qmax), d = 0, res;
                 for (size_t i = 0; i < n; i++)   /* v's first column: w[0]'s vector */
                     t[i] = q[i] + h * v[i];
-                qd__lm_solve(L, t, 0, 200, &res);
+                qd__lin_lm_solve(L, t, 0, 200, &res);
                 for (size_t i = 0; i < n; i++)
                     d = fmax(d, fabs(t[i] - q[i]));
                 cont = res <= ftol && d >= 0.5 * h;
@@ -507,14 +507,14 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
 
 /* The exact branches may reach a root twice (1 - cos th = 0 and sin th = 0
  * both give th = 0 of (1 - cos th)^2), the multistart a degenerate one at
- * points round-off apart: each point once (qd__roots_same: relative to the
+ * points round-off apart: each point once (qd__lin_roots_same: relative to the
  * coordinates' size, angles modulo 2 pi), the first kept. */
 static void drop_duplicates(size_t n, const bool *angle, qd_equilibria *out) {
     size_t kept = 0;
     for (size_t i = 0; i < out->count; i++) {
         bool dup = false;
         for (size_t k = 0; k < kept && !dup; k++)
-            dup = qd__roots_same(n, out->pts[k].q, out->pts[i].q, angle);
+            dup = qd__lin_roots_same(n, out->pts[k].q, out->pts[i].q, angle);
         if (dup) {
             qd__free(out->pts[i].q);
             qd__free(out->pts[i].exact);
@@ -548,7 +548,7 @@ static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const
         } else {
             double res;
             memcpy(p->q, roots->q + i * n, n * sizeof *p->q);
-            qd__lm_solve(L, p->q, 0, 8, &res); /* a few more steps: only improves */
+            qd__lin_lm_solve(L, p->q, 0, 8, &res); /* a few more steps: only improves */
         }
         qd_status st = classify(L, p);
         if (st != QD_OK)
@@ -636,15 +636,15 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
         memcpy(q, o.near, n * sizeof *q);
         double res;
         out->method = "newton";
-        if (!qd__lm_solve(&L, q, ftol, 500, &res)) {
+        if (!qd__lin_lm_solve(&L, q, ftol, 500, &res)) {
             qd_ctx_error(ctx, QD_ERR_NUMERIC,
                          "no convergence: Newton's method from the guess stopped with residual "
                          "%.3g (force scale %.3g)", res, fscale);
             st = QD_ERR_NUMERIC;
             goto done;
         }
-        qd__wrap_angles(n, q, angle);
-        if (!qd__roots_add(ctx, &roots, q, res, angle))
+        qd__lin_wrap_angles(n, q, angle);
+        if (!qd__lin_roots_add(ctx, &roots, q, res, angle))
             st = QD_ERR_NOMEM;
     } else if (!o.numeric_only && solve_exact(ctx, e, m, &L, angle, &x) &&
                exact_verified(ctx, &L, &x, 1e-8 * fscale)) {
@@ -658,7 +658,7 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
         x.nsol = 0;
         out->method = "multistart";
         size_t starts = o.starts ? o.starts : 40 * n + 40;
-        if (!qd__multistart(&L, lo, hi, angle, starts, ftol, &roots))
+        if (!qd__lin_multistart(&L, lo, hi, angle, starts, ftol, &roots))
             st = QD_ERR_NOMEM;
         /* only the roots in the box (Newton may leave it) */
         size_t kept = 0;
@@ -687,7 +687,7 @@ done:
         qd_equilibria_free(out);
     qd__free(x.val);
     qd__free(x.sols);
-    qd__roots_free(&roots);
+    qd__lin_roots_free(&roots);
     qd__free(angle);
     qd__free(lo);
     qd__free(hi);

@@ -265,7 +265,7 @@ static qd_status eigen(qd_ctx *ctx, qd_statespace *s) {
     return st;
 }
 
-qd_status qd__ss_analyse(qd_ctx *ctx, qd_statespace *s) {
+qd_status qd__lin_ss_analyse(qd_ctx *ctx, qd_statespace *s) {
     if (s->nx == 0)
         return QD_OK;
     qd_status st = eigen(ctx, s);

@@ -47,16 +47,16 @@ static inline const double *qd__lin_M(const qd__lin *L) {
  * equilibria): |x| at most QD_LINEAR_ZERO_TOL times the scale of the
  * numbers x came from (a matrix entry against the matrix's own scale). */
 #define QD_LINEAR_ZERO_TOL 1e-12
-bool qd__negligible(double x, double scale);
+bool qd__lin_negligible(double x, double scale);
 /* M0, C0, G0, K0's round-off zeros set to 0, judged in the coordinates where
  * M0's diagonal is 1 against the problem's own rate (linearize.c). */
-void qd__linear_chop(qd_linear *l);
+void qd__lin_linear_chop(qd_linear *l);
 
 /* Eigenvalues (ascending) and, when vecs is not NULL, orthonormal
  * eigenvectors (column-major, vecs[i + j n] = component i of vector j) of
  * the symmetric n*n matrix A (row-major; only its symmetric part is used).
  * false when LAPACK fails. */
-bool qd__sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs);
+bool qd__lin_sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs);
 
 #endif
 
@@ -65,7 +65,7 @@ bool qd__sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs
 struct qd_speeds_eom;
 /* kept[j] (e->n): q_j enters f_u or M_u, or the kinematic row of another
  * kept coordinate; the others are ignorable for the reduced system. */
-void qd__speeds_kept(const struct qd_speeds_eom *e, bool *kept);
+void qd__lin_speeds_kept(const struct qd_speeds_eom *e, bool *kept);
 
 /* ---- numeric root finding (newton.c, multistart.c) ------------------------ */
 
@@ -75,7 +75,7 @@ double qd__lin_scale(qd__lin *L, const double *q);
 
 /* Damped Newton (Levenberg-Marquardt on |F|^2) from q, in place.  true when
  * max |F_j| <= ftol; *res is max |F_j| at the final q. */
-bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res);
+bool qd__lin_lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res);
 
 /* A found root, angles wrapped into (-pi, pi]. */
 typedef struct qd__roots {
@@ -86,14 +86,14 @@ typedef struct qd__roots {
 
 /* Add q unless it duplicates a root already there (the better residual is
  * kept); false when out of memory. */
-bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle);
-void qd__roots_free(qd__roots *r);
-void qd__wrap_angles(size_t n, double *q, const bool *angle);
+bool qd__lin_roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle);
+void qd__lin_roots_free(qd__roots *r);
+void qd__lin_wrap_angles(size_t n, double *q, const bool *angle);
 /* The same point: every coordinate within 1e-6 of the largest (and 1),
  * angles (angle may be NULL) modulo 2 pi. */
-bool qd__roots_same(size_t n, const double *a, const double *b, const bool *angle);
+bool qd__lin_roots_same(size_t n, const double *a, const double *b, const bool *angle);
 
 /* The multi-start search over [lo, hi] (quasi-random starts and axis scans
  * through the centre); roots with max |F| <= ftol go to out. */
-bool qd__multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
+bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
                     size_t starts, double ftol, qd__roots *out);

@@ -143,7 +143,7 @@ void qd_linear_free(qd_linear *l) {
     memset(l, 0, sizeof *l);
 }
 
-bool qd__negligible(double x, double scale) {
+bool qd__lin_negligible(double x, double scale) {
     return fabs(x) <= QD_LINEAR_ZERO_TOL * scale;
 }
 
@@ -154,7 +154,7 @@ bool qd__negligible(double x, double scale) {
  * inertia against 1.  The ring of a rotating bowl has K0[y,y] = -1.5e-13
  * beside K0[x,x] = 952 and G0 = 10: a cancellation, which left as it is
  * gives real roots +-3.7e-7 and "unstable". */
-void qd__linear_chop(qd_linear *l) {
+void qd__lin_linear_chop(qd_linear *l) {
     size_t n = l->n;
     double kmax = 0, gmax = 0, mmax = 0;
 #define D(i) (l->M[(i) * n + (i)] > 0 && isfinite(l->M[(i) * n + (i)]) ? 1 / sqrt(l->M[(i) * n + (i)]) : 1)
@@ -170,13 +170,13 @@ void qd__linear_chop(qd_linear *l) {
         for (size_t j = 0; j < n; j++) {
             size_t k = i * n + j;
             double d = D(i) * D(j);
-            if (qd__negligible(l->K[k] * d, w * w))
+            if (qd__lin_negligible(l->K[k] * d, w * w))
                 l->K[k] = 0;
-            if (qd__negligible(l->G[k] * d, w))
+            if (qd__lin_negligible(l->G[k] * d, w))
                 l->G[k] = 0;
-            if (qd__negligible(l->C[k] * d, w))
+            if (qd__lin_negligible(l->C[k] * d, w))
                 l->C[k] = 0;
-            if (i != j && qd__negligible(l->M[k] * d, mmax))
+            if (i != j && qd__lin_negligible(l->M[k] * d, mmax))
                 l->M[k] = 0;
         }
 #undef D
@@ -225,7 +225,7 @@ qd_status qd_linear_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
                          "of the model)");
             return QD_ERR_NUMERIC;
         }
-    qd__linear_chop(out);
+    qd__lin_linear_chop(out);
     qd__lin_free(&L);
     return QD_OK;
 }

@@ -22,7 +22,7 @@
 
 static const double PI = 3.14159265358979323846;
 
-void qd__wrap_angles(size_t n, double *q, const bool *angle) {
+void qd__lin_wrap_angles(size_t n, double *q, const bool *angle) {
     for (size_t j = 0; angle && j < n; j++)
         if (angle[j] && isfinite(q[j])) {
             double x = fmod(q[j], 2 * PI);
@@ -36,7 +36,7 @@ void qd__wrap_angles(size_t n, double *q, const bool *angle) {
         }
 }
 
-bool qd__roots_same(size_t n, const double *a, const double *b, const bool *angle) {
+bool qd__lin_roots_same(size_t n, const double *a, const double *b, const bool *angle) {
     double big = 1;
     for (size_t j = 0; j < n; j++)
         big = fmax(big, fmax(fabs(a[j]), fabs(b[j])));
@@ -50,10 +50,10 @@ bool qd__roots_same(size_t n, const double *a, const double *b, const bool *angl
     return true;
 }
 
-bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle) {
+bool qd__lin_roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const bool *angle) {
     size_t n = r->n;
     for (size_t i = 0; i < r->count; i++)
-        if (qd__roots_same(n, r->q + i * n, q, angle)) {
+        if (qd__lin_roots_same(n, r->q + i * n, q, angle)) {
             if (res < r->res[i]) {
                 memcpy(r->q + i * n, q, n * sizeof *q);
                 r->res[i] = res;
@@ -77,7 +77,7 @@ bool qd__roots_add(qd_ctx *ctx, qd__roots *r, const double *q, double res, const
     return true;
 }
 
-void qd__roots_free(qd__roots *r) {
+void qd__lin_roots_free(qd__roots *r) {
     qd__free(r->q);
     qd__free(r->res);
     r->q = r->res = NULL;
@@ -97,9 +97,9 @@ static const unsigned primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41
 
 static bool polish(qd__lin *L, double *q, const bool *angle, double ftol, qd__roots *out) {
     double res;
-    if (qd__lm_solve(L, q, ftol, 200, &res)) {
-        qd__wrap_angles(L->n, q, angle);
-        return qd__roots_add(L->ctx, out, q, res, angle);
+    if (qd__lin_lm_solve(L, q, ftol, 200, &res)) {
+        qd__lin_wrap_angles(L->n, q, angle);
+        return qd__lin_roots_add(L->ctx, out, q, res, angle);
     }
     return true;
 }
@@ -143,7 +143,7 @@ static bool scan_axis(qd__lin *L, size_t i, const double *c, const double *lo, c
     return true;
 }
 
-bool qd__multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
+bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
                     size_t starts, double ftol, qd__roots *out) {
     size_t n = L->n;
     double *q = qd__malloc(L->ctx, (n + 1) * sizeof *q), *c = qd__malloc(L->ctx, (n + 1) * sizeof *c);

@@ -48,7 +48,7 @@ double qd__lin_scale(qd__lin *L, const double *q) {
     return isfinite(s) ? s : INFINITY;
 }
 
-bool qd__lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
+bool qd__lin_lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res) {
     size_t n = L->n;
     double *F = qd__malloc(L->ctx, (n + 1) * sizeof *F), *J = qd__malloc(L->ctx, (n * n + 1) * sizeof *J);
     double *A = qd__malloc(L->ctx, (n * n + 1) * sizeof *A), *g = qd__malloc(L->ctx, (n + 1) * sizeof *g);

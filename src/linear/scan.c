@@ -5,7 +5,7 @@
  *
  * Natural-parameter continuation: at each sample the point of the previous
  * one (moved by the change of `about`, when given) starts damped Newton
- * (qd__lm_solve; qd_steady_find for steady motions, the given values held).
+ * (qd__lin_lm_solve; qd_steady_find for steady motions, the given values held).
  * The verdict is the one qd_modes_solve / qd_stability_analyze gives, so a
  * scan agrees with `qdot modes` and `qdot stability` at every value it
  * lists.  A change between two samples is bisected: on the sign of the
@@ -160,11 +160,11 @@ static qd_status about_at(scan_run *r, double *out) {
 static qd_status modes_solve(scan_run *r, double *q) {
     qd__lin_bind(&r->L, r->P.np, r->P.syms, r->P.vals);
     double res, ftol = 1e-11 * qd__lin_scale(&r->L, q);
-    if (!isfinite(ftol) || !qd__lm_solve(&r->L, q, ftol, 200, &res))
+    if (!isfinite(ftol) || !qd__lin_lm_solve(&r->L, q, ftol, 200, &res))
         return qd__ctx_nomem(r->ctx) ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
     /* a few more steps to round-off: the verdict near a collision of
      * eigenvalues is as sensitive to the point as to the parameter */
-    qd__lm_solve(&r->L, q, 0, 4, &res);
+    qd__lin_lm_solve(&r->L, q, 0, 4, &res);
     return qd__ctx_nomem(r->ctx) ? QD_ERR_NOMEM : QD_OK;
 }
 

@@ -48,7 +48,7 @@ static bool has_coord(const qd_expr *x, const qd_expr *q) { return qd_has(x, q);
 
 /* kept[j]: q_j enters f_u or M_u, or the kinematic row of a kept
  * coordinate other than its own. */
-void qd__speeds_kept(const qd_speeds_eom *e, bool *kept) {
+void qd__lin_speeds_kept(const qd_speeds_eom *e, bool *kept) {
     size_t n = e->n, m = e->m;
     for (size_t j = 0; j < n; j++) {
         kept[j] = false;
@@ -216,7 +216,7 @@ static qd_status alloc_linear(qd_ctx *ctx, const qd_speeds_eom *e, qd_speeds_lin
     l->kept = qd__calloc(ctx, n + 1, sizeof *l->kept);
     if (!l->ignorable || !l->kept)
         return QD_ERR_NOMEM;
-    qd__speeds_kept(e, l->ignorable);  /* kept for now; inverted below */
+    qd__lin_speeds_kept(e, l->ignorable);  /* kept for now; inverted below */
     for (size_t j = 0; j < n; j++) {
         if (l->ignorable[j])
             l->kept[l->nkept++] = j;

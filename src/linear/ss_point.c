@@ -8,7 +8,7 @@
 
 #include <string.h>
 
-void qd__point_free(qd__point *pt) {
+void qd__lin_point_free(qd__point *pt) {
     qd__free(pt->from);
     memset(pt, 0, sizeof *pt);
 }
@@ -25,7 +25,7 @@ static qd_status place(qd_ctx *ctx, qd__point *pt, const qd_expr *sym, const qd_
     return QD_ERR_ARG;
 }
 
-qd_status qd__point_make(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t npt,
+qd_status qd__lin_point_make(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t npt,
                          const qd_expr *const *syms, const qd_expr *const *vals, qd__point *pt) {
     size_t n = e->n, nu = qd_model_ninputs(m);
     pt->n = 2 * n + nu + 1;
@@ -50,7 +50,7 @@ qd_status qd__point_make(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t
     return qd_ctx_status(ctx);
 }
 
-qd_status qd__point_numbers(qd_ctx *ctx, const qd_model *m, const qd__point *pt, size_t k,
+qd_status qd__lin_point_numbers(qd_ctx *ctx, const qd_model *m, const qd__point *pt, size_t k,
                             const qd_expr *const *which, double *out) {
     size_t np = qd_model_nparams(m);
     const qd_expr **ps = qd__malloc(ctx, (np + 1) * sizeof *ps);

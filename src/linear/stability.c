@@ -46,13 +46,13 @@ void qd_stability_free(qd_stability *st) {
  * of its expanded terms' sizes. */
 static qd_status eval_chopped(qd_ctx *ctx, const qd__steady_env *env, const qd_expr *x,
                               double *out) {
-    qd_status st = qd__steady_eval(ctx, env, x, out);
+    qd_status st = qd__lin_steady_eval(ctx, env, x, out);
     const qd_expr *ex = st == QD_OK && *out != 0 ? qd_expand(ctx, x) : NULL;
     if (!ex || qd_expr_kind(ex) != QD_ADD)
         return st;
     double scale = 0, t;
     for (size_t i = 0; st == QD_OK && i < qd_expr_nargs(ex); i++)
-        if ((st = qd__steady_eval(ctx, env, qd_expr_arg(ex, i), &t)) == QD_OK)
+        if ((st = qd__lin_steady_eval(ctx, env, qd_expr_arg(ex, i), &t)) == QD_OK)
             scale += fabs(t);
     if (st == QD_OK && fabs(*out) <= CHOP_TOL * scale)
         *out = 0;
@@ -85,7 +85,7 @@ static qd_status linearize(qd_ctx *ctx, const qd_steady *s, const qd__steady_env
     for (size_t a = 0; st == QD_OK && a < n; a++)
         for (size_t b = 0; st == QD_OK && b < n; b++) {
             size_t i = a * n + b;
-            st = qd__steady_eval(ctx, env, s->M[i], &l->M[i]);
+            st = qd__lin_steady_eval(ctx, env, s->M[i], &l->M[i]);
             if (st == QD_OK)
                 st = eval_diff(ctx, env, s->f[a], s->keep[b], NULL, &l->K[i]);
             if (st == QD_OK)
@@ -101,7 +101,7 @@ static qd_status linearize(qd_ctx *ctx, const qd_steady *s, const qd__steady_env
             l->G[a * n + b] = (B[a * n + b] - B[b * n + a]) / 2;
         }
     if (st == QD_OK)
-        qd__linear_chop(l);   /* the matrix-scale test modes and linearize use too */
+        qd__lin_linear_chop(l);   /* the matrix-scale test modes and linearize use too */
     qd__free(B);
     return st;
 }
@@ -114,7 +114,7 @@ static bool has_damping(const qd_linear *l) {
         big = fmax(big, fmax(fabs(l->M[i]), fmax(fabs(l->K[i]), fabs(l->G[i]))));
         c = fmax(c, fabs(l->C[i]));
     }
-    return !qd__negligible(c, big);
+    return !qd__lin_negligible(c, big);
 }
 
 static int cmp_double(const void *a, const void *b) {
@@ -235,7 +235,7 @@ qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     memset(out, 0, sizeof *out);
     out->n = s->nkeep;
     qd__steady_env env;
-    qd_status st = qd__steady_env_init(ctx, s, nvals, syms, vals, &env);
+    qd_status st = qd__lin_steady_env_init(ctx, s, nvals, syms, vals, &env);
     if (st != QD_OK)
         return st;
     for (size_t j = 0; j < s->nkeep; j++)
@@ -246,7 +246,7 @@ qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nvals,
             env.vals[env.p + c] = pt->p[c];
     }
     st = linearize(ctx, s, &env, out);
-    qd__steady_env_free(&env);
+    qd__lin_steady_env_free(&env);
     if (st == QD_OK)
         st = solve_modes(ctx, &out->lin, NULL, out->lin.K, &out->ordinary);
     if (st == QD_OK)

@@ -229,7 +229,8 @@ static qd_status expressions(qd_ctx *ctx, qd_statespace *s, const entries *E) {
         for (size_t j = 0; j < n; j++)
             acc[j] = qd_int(ctx, 0);
     else
-        st = solve_status(ctx, qd__solve_cols(ctx, n, E->M0, 1, E->f0, acc, QD_SS_MAX_OPS), &ok);
+        st = solve_status(ctx, qd__mech_solve_cols(ctx, n, E->M0, 1, E->f0, acc, QD_SS_MAX_OPS),
+                          &ok);
     for (size_t j = 0; st == QD_OK && ok && j < n; j++)
         for (size_t k = 0; k < nz; k++) {
             const qd_expr *r = E->Fz[j * nz + k];
@@ -238,7 +239,7 @@ static qd_status expressions(qd_ctx *ctx, qd_statespace *s, const entries *E) {
             R[j * nz + k] = qd_simplify(ctx, r);
         }
     if (st == QD_OK && ok)
-        st = solve_status(ctx, qd__solve_cols(ctx, n, E->M0, nz, R, X, QD_SS_MAX_OPS), &ok);
+        st = solve_status(ctx, qd__mech_solve_cols(ctx, n, E->M0, nz, R, X, QD_SS_MAX_OPS), &ok);
     for (size_t i = 0; st == QD_OK && ok && i < nx; i++)
         for (size_t k = 0; k < nx + s->nu; k++) {
             const qd_expr *x = i < n ? qd_int(ctx, k == n + i ? 1 : 0) : X[(i - n) * nz + k];
@@ -313,7 +314,7 @@ static qd_status derive(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
         st = QD_ERR_NOMEM;
     if (st == QD_OK) {
         qd0 = v + E.count;
-        st = qd__point_numbers(ctx, m, pt, e->n, e->qd, qd0);
+        st = qd__lin_point_numbers(ctx, m, pt, e->n, e->qd, qd0);
     }
     if (st == QD_OK)
         st = eval_entries(ctx, m, &E, v);
@@ -341,12 +342,12 @@ qd_status qd_linearize(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t n
         return QD_ERR_ARG;
     }
     qd__point pt = {0};
-    qd_status st = qd__point_make(ctx, e, m, npt, syms, vals, &pt);
+    qd_status st = qd__lin_point_make(ctx, e, m, npt, syms, vals, &pt);
     if (st == QD_OK)
         st = derive(ctx, e, m, &pt, out);
     if (st == QD_OK)
-        st = qd__ss_analyse(ctx, out);
-    qd__point_free(&pt);
+        st = qd__lin_ss_analyse(ctx, out);
+    qd__lin_point_free(&pt);
     if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "out of memory linearizing");
     return st;

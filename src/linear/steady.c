@@ -194,14 +194,15 @@ qd_steady *qd_steady_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, siz
 
 /* ---- evaluation environment ------------------------------------------------ */
 
-qd_status qd__steady_env_init(qd_ctx *ctx, const qd_steady *s, size_t nvals, const qd_expr *const *syms,
-                              const double *vals, qd__steady_env *env) {
+qd_status qd__lin_steady_env_init(qd_ctx *ctx, const qd_steady *s, size_t nvals,
+                                  const qd_expr *const *syms, const double *vals,
+                                  qd__steady_env *env) {
     size_t nb = s->beta ? s->ncyc : 0;
     size_t cap = nvals + 2 * s->nkeep + s->ncyc + nb;
     env->syms = qd__calloc(ctx, cap ? cap : 1, sizeof *env->syms);
     env->vals = qd__calloc(ctx, cap ? cap : 1, sizeof *env->vals);
     if (!env->syms || !env->vals) {
-        qd__steady_env_free(env);
+        qd__lin_steady_env_free(env);
         return QD_ERR_NOMEM;
     }
     size_t n = 0;
@@ -228,14 +229,15 @@ qd_status qd__steady_env_init(qd_ctx *ctx, const qd_steady *s, size_t nvals, con
     return QD_OK;
 }
 
-void qd__steady_env_free(qd__steady_env *env) {
+void qd__lin_steady_env_free(qd__steady_env *env) {
     qd__free(env->syms);
     qd__free(env->vals);
     env->syms = NULL;
     env->vals = NULL;
 }
 
-qd_status qd__steady_eval(qd_ctx *ctx, const qd__steady_env *env, const qd_expr *x, double *out) {
+qd_status qd__lin_steady_eval(qd_ctx *ctx, const qd__steady_env *env, const qd_expr *x,
+                              double *out) {
     qd_status st = qd_eval(ctx, x, env->n, env->syms, env->vals, out);
     if (st == QD_OK && !isfinite(*out)) {
         qd_ctx_error(ctx, QD_ERR_SINGULAR,
@@ -251,7 +253,7 @@ qd_status qd__steady_eval(qd_ctx *ctx, const qd__steady_env *env, const qd_expr 
 typedef qd__steady_search search;
 
 static void search_free(search *S) {
-    qd__steady_env_free(&S->env);
+    qd__lin_steady_env_free(&S->env);
     qd__free(S->uslot);
     qd__free(S->F);
     qd__free(S->pgiven);
@@ -263,10 +265,10 @@ static qd_status residual(search *S, const double *u, double *F, double *J) {
         S->env.vals[S->uslot[i]] = u[i];
     qd_status st = QD_OK;
     for (size_t k = 0; st == QD_OK && k < S->neq; k++) {
-        st = qd__steady_eval(S->ctx, &S->env, S->F[k], &F[k]);
+        st = qd__lin_steady_eval(S->ctx, &S->env, S->F[k], &F[k]);
         F[k] -= S->pgiven[k];
         for (size_t i = 0; st == QD_OK && J && i < S->nu; i++)
-            st = qd__steady_eval(S->ctx, &S->env, S->dF[k * S->nu + i], &J[k * S->nu + i]);
+            st = qd__lin_steady_eval(S->ctx, &S->env, S->dF[k * S->nu + i], &J[k * S->nu + i]);
     }
     return st;
 }
@@ -300,13 +302,13 @@ static bool lm_step(const search *S, const double *F, const double *J, double mu
 }
 
 /* The scale of residual k, so that "zero" is relative to the size of the
- * terms that cancel: the sizes of its terms (qd__steady_magnitude), the given
+ * terms that cancel: the sizes of its terms (qd__lin_steady_magnitude), the given
  * momentum, and |J_k| (|u| + 1) for how far a step could move it. */
 static double scale_of(const search *S, const double *J, const double *u, size_t k) {
     double s = fabs(S->pgiven[k]);
     for (size_t i = 0; i < S->nu; i++)
         s += fabs(J[k * S->nu + i]) * (fabs(u[i]) + 1);
-    double m = qd__steady_magnitude(S->ctx, &S->env, S->F[k]);
+    double m = qd__lin_steady_magnitude(S->ctx, &S->env, S->F[k]);
     if (isfinite(m))
         s += m;
     return s > 0 ? s : 1;
@@ -473,7 +475,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
                          double *residual_out) {
     QD_ARGS_CTX(ctx, ctx && s && (nvals == 0 || syms) && (nvals == 0 || vals) && xfix && wfix && pfix && pt);
     search S = {.ctx = ctx, .s = s};
-    qd_status st = qd__steady_env_init(ctx, s, nvals, syms, vals, &S.env);
+    qd_status st = qd__lin_steady_env_init(ctx, s, nvals, syms, vals, &S.env);
     if (st == QD_OK)
         st = setup(&S, xfix, wfix, pfix, pt);
     double *u = st == QD_OK ? qd__calloc(ctx, S.nu + 1, sizeof *u) : NULL;
@@ -488,7 +490,7 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
             pt->x[j] = S.env.vals[S.env.x + j];
         for (size_t c = 0; c < s->ncyc && st == QD_OK; c++) {
             pt->w[c] = S.env.vals[S.env.w + c];
-            st = qd__steady_eval(ctx, &S.env, s->mom[c], &pt->p[c]);
+            st = qd__lin_steady_eval(ctx, &S.env, s->mom[c], &pt->p[c]);
         }
     }
     qd__free(u);
@@ -498,17 +500,17 @@ qd_status qd_steady_find(qd_ctx *ctx, const qd_steady *s, size_t nvals,
 
 /* ---- what steady_all.c shares ---------------------------------------------- */
 
-qd_status qd__steady_search_init(search *S, const bool *xfix, const bool *wfix, const bool *pfix,
-                                 const qd_steady_point *pt, size_t nvals,
-                                 const qd_expr *const *syms, const double *vals) {
-    qd_status st = qd__steady_env_init(S->ctx, S->s, nvals, syms, vals, &S->env);
+qd_status qd__lin_steady_search_init(search *S, const bool *xfix, const bool *wfix,
+                                     const bool *pfix, const qd_steady_point *pt, size_t nvals,
+                                     const qd_expr *const *syms, const double *vals) {
+    qd_status st = qd__lin_steady_env_init(S->ctx, S->s, nvals, syms, vals, &S->env);
     return st == QD_OK ? setup(S, xfix, wfix, pfix, pt) : st;
 }
 
-void qd__steady_search_free(search *S) { search_free(S); }
+void qd__lin_steady_search_free(search *S) { search_free(S); }
 
-qd_status qd__steady_residual(search *S, const double *u, double *F, double *J) {
+qd_status qd__lin_steady_residual(search *S, const double *u, double *F, double *J) {
     return residual(S, u, F, J);
 }
 
-qd_status qd__steady_iterate(search *S, double *u, double *res) { return iterate(S, u, res); }
+qd_status qd__lin_steady_iterate(search *S, double *u, double *res) { return iterate(S, u, res); }

@@ -41,7 +41,7 @@ static const double PI = 3.14159265358979323846;
 typedef struct sizes {
     qd_ctx *ctx;
     const qd__steady_env *env;
-    qd_ptrmap memo;       /* node -> 1 + index into val */
+    qd__ptrmap memo;       /* node -> 1 + index into val */
     double *val;
     size_t n, cap;
 } sizes;
@@ -88,7 +88,7 @@ static double size_uncached(sizes *z, const qd_expr *x) {
 }
 
 static double size_of(sizes *z, const qd_expr *x) {
-    uintptr_t k = (uintptr_t)qd_ptrmap_get(&z->memo, x);
+    uintptr_t k = (uintptr_t)qd__ptrmap_get(&z->memo, x);
     if (k)
         return z->val[k - 1];
     double s = size_uncached(z, x);
@@ -101,25 +101,25 @@ static double size_of(sizes *z, const qd_expr *x) {
         z->cap = cap;
     }
     z->val[z->n++] = s;
-    if (!qd_ptrmap_put(&z->memo, x, (void *)(uintptr_t)z->n))
+    if (!qd__ptrmap_put(&z->memo, x, (void *)(uintptr_t)z->n))
         z->n--;
     return s;
 }
 
-double qd__steady_magnitude(qd_ctx *ctx, const qd__steady_env *env, const qd_expr *x) {
+double qd__lin_steady_magnitude(qd_ctx *ctx, const qd__steady_env *env, const qd_expr *x) {
     sizes z = {.ctx = ctx, .env = env, .memo = QD_PTRMAP_INIT};
     double s = x ? size_of(&z, x) : NAN;
-    qd_ptrmap_free(&z.memo);
+    qd__ptrmap_free(&z.memo);
     qd__free(z.val);
     return s;
 }
 
 /* ---- angles ------------------------------------------------------------- */
 
-static bool in_trig(const qd_expr *x, const qd_expr *q, qd_ptrmap *seen) {
-    if (!x || qd_ptrmap_has(seen, x))
+static bool in_trig(const qd_expr *x, const qd_expr *q, qd__ptrmap *seen) {
+    if (!x || qd__ptrmap_has(seen, x))
         return false;
-    qd_ptrmap_put(seen, x, (void *)x);
+    qd__ptrmap_put(seen, x, (void *)x);
     if (qd_expr_kind(x) == QD_FUNC && (qd_expr_func(x) == QD_SIN || qd_expr_func(x) == QD_COS ||
                                        qd_expr_func(x) == QD_TAN))
         return qd_has(qd_expr_arg(x, 0), q);
@@ -131,13 +131,13 @@ static bool in_trig(const qd_expr *x, const qd_expr *q, qd_ptrmap *seen) {
 
 /* Is kept coordinate j an angle (inside a sin or cos of the equations)? */
 static bool is_angle(const qd_steady *s, size_t j) {
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd__ptrmap seen = QD_PTRMAP_INIT;
     bool a = false;
     for (size_t k = 0; !a && k < s->nkeep; k++)
         a = in_trig(s->res[k], s->keep[j], &seen);
     for (size_t c = 0; !a && c < s->ncyc; c++)
         a = in_trig(s->mom[c], s->keep[j], &seen);
-    qd_ptrmap_free(&seen);
+    qd__ptrmap_free(&seen);
     return a;
 }
 
@@ -198,17 +198,17 @@ static void sub_free(qd__steady_search *sub) {
 static bool on_line(line *L, double t, double *u) {
     qd__steady_search *S = L->S;
     u[L->ifree] = t;
-    qd_status st = qd__steady_residual(S, u, L->F, NULL);
+    qd_status st = qd__lin_steady_residual(S, u, L->F, NULL);
     if (st == QD_OK && L->sub.nu) {
         for (size_t b = 0, i = 0; i < S->nu; i++)
             if (i != L->ifree)
                 L->usub[b++] = u[i];
-        st = qd__steady_iterate(&L->sub, L->usub, NULL);
+        st = qd__lin_steady_iterate(&L->sub, L->usub, NULL);
         for (size_t b = 0, i = 0; st == QD_OK && i < S->nu; i++)
             if (i != L->ifree)
                 u[i] = L->usub[b++];
         if (st == QD_OK)
-            st = qd__steady_residual(S, u, L->F, NULL);
+            st = qd__lin_steady_residual(S, u, L->F, NULL);
     }
     if (st != QD_OK)
         qd__ctx_recover(S->ctx);
@@ -231,11 +231,11 @@ typedef struct found {
 static bool singular_here(qd__steady_search *S, const found *f) {
     for (size_t c = 0; c < S->s->ncyc; c++) {
         double v;
-        if (qd__steady_eval(S->ctx, &S->env, f->mcc[c], &v) != QD_OK) {
+        if (qd__lin_steady_eval(S->ctx, &S->env, f->mcc[c], &v) != QD_OK) {
             qd__ctx_recover(S->ctx);
             return true;
         }
-        double m = qd__steady_magnitude(S->ctx, &S->env, f->mcc[c]);
+        double m = qd__lin_steady_magnitude(S->ctx, &S->env, f->mcc[c]);
         if (fabs(v) <= 1e-10 * (isfinite(m) ? m : 0))
             return true;
     }
@@ -264,12 +264,12 @@ static bool at_scale(qd__steady_search *S, const double *u) {
     bool ok = F != NULL;
     for (size_t i = 0; ok && i < S->nu; i++)
         ok = isfinite(u[i]);
-    if (ok && qd__steady_residual(S, u, F, NULL) != QD_OK) {
+    if (ok && qd__lin_steady_residual(S, u, F, NULL) != QD_OK) {
         qd__ctx_recover(S->ctx);
         ok = false;
     }
     for (size_t k = 0; ok && k < S->neq; k++) {
-        double m = qd__steady_magnitude(S->ctx, &S->env, S->F[k]);
+        double m = qd__lin_steady_magnitude(S->ctx, &S->env, S->F[k]);
         ok = isfinite(F[k]) && isfinite(m) && fabs(F[k]) <= AT_SCALE_TOL * (fabs(S->pgiven[k]) + m);
     }
     qd__free(F);
@@ -279,7 +279,7 @@ static bool at_scale(qd__steady_search *S, const double *u) {
 /* Polish u (a candidate) and keep it when it is a steady motion not seen yet. */
 static qd_status polish_add(qd__steady_search *S, found *f, double *u) {
     double res = 0;
-    qd_status st = qd__steady_iterate(S, u, &res);
+    qd_status st = qd__lin_steady_iterate(S, u, &res);
     if (st != QD_OK) {
         qd__ctx_recover(S->ctx);
         return st == QD_ERR_NOMEM ? st : QD_OK;
@@ -354,7 +354,7 @@ static int row_quadratics(line *L, double *u, double h, double *c) {
         }
         for (size_t k = 0; k < nk; k++) {
             f[p * nk + k] = L->F[k];
-            scale[k] = fmax(scale[k], qd__steady_magnitude(S->ctx, &S->env, S->F[k]));
+            scale[k] = fmax(scale[k], qd__lin_steady_magnitude(S->ctx, &S->env, S->F[k]));
         }
     }
     for (size_t k = 0; rc != -1 && k < nk; k++) {
@@ -427,7 +427,7 @@ static qd_status bisect(line *L, found *f, double *u, size_t k, double a, double
 
 /* Is kept residual k at round-off, against the size of its terms? */
 static bool at_noise(line *L, size_t k) {
-    double m = qd__steady_magnitude(L->S->ctx, &L->S->env, L->S->F[k]);
+    double m = qd__lin_steady_magnitude(L->S->ctx, &L->S->env, L->S->F[k]);
     return fabs(L->F[k]) <= COEFF_TOL * (isfinite(m) ? m : 0);
 }
 
@@ -498,7 +498,7 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
     for (size_t c = 0; st == QD_OK && c < s->ncyc; c++)
         wf[c] = !pguess[c];
     if (st == QD_OK)
-        st = qd__steady_search_init(&S, xf, wf, pguess, pt, nvals, syms, vals);
+        st = qd__lin_steady_search_init(&S, xf, wf, pguess, pt, nvals, syms, vals);
     for (size_t i = 0; st == QD_OK && i < S.nu; i++)
         all[i] = true;
     if (st == QD_OK)
@@ -507,7 +507,7 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
     for (size_t i = 0; u && i < S.nu; i++)
         u[i] = S.env.vals[S.uslot[i]];
     if (st == QD_OK)
-        st = u ? qd__steady_iterate(&sub, u, NULL) : QD_ERR_NOMEM;
+        st = u ? qd__lin_steady_iterate(&sub, u, NULL) : QD_ERR_NOMEM;
     for (size_t c = 0, i = 0; st == QD_OK && c < s->ncyc; c++)
         if (pguess[c])
             pt->w[c] = u[i++];
@@ -516,7 +516,7 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
                               "starting point: %s", qd_ctx_message(ctx));
     qd__free(u);
     sub_free(&sub);
-    qd__steady_search_free(&S);
+    qd__lin_steady_search_free(&S);
     qd__free(xf);
     qd__free(wf);
     qd__free(all);
@@ -621,7 +621,7 @@ static qd_status fill(qd__steady_search *S, const found *f, qd_steady_set *out) 
             p->x[j] = S->env.vals[S->env.x + j];
         for (size_t c = 0; st == QD_OK && c < s->ncyc; c++) {
             p->w[c] = S->env.vals[S->env.w + c];
-            st = qd__steady_eval(S->ctx, &S->env, s->mom[c], &p->p[c]);
+            st = qd__lin_steady_eval(S->ctx, &S->env, s->mom[c], &p->p[c]);
         }
     }
     return st;
@@ -645,7 +645,7 @@ void qd_steady_set_free(qd_steady_set *set) {
 static qd_status from_start(qd__steady_search *S, found *f, const double *u0, double *u) {
     memcpy(u, u0, S->nu * sizeof *u);
     double res = 0;
-    qd_status st = qd__steady_iterate(S, u, &res);
+    qd_status st = qd__lin_steady_iterate(S, u, &res);
     if (st == QD_OK || ((st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) && f->count)) {
         qd__ctx_recover(S->ctx);
         st = st == QD_OK ? polish_add(S, f, u) : QD_OK;
@@ -759,7 +759,7 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     if (st == QD_OK && any_guess)
         st = rates_from_momenta(ctx, s, nvals, syms, vals, pguess, &pt);
     if (st == QD_OK)
-        st = qd__steady_search_init(&S, xfix, wfix, pfix, &pt, nvals, syms, vals);
+        st = qd__lin_steady_search_init(&S, xfix, wfix, pfix, &pt, nvals, syms, vals);
     if (st == QD_OK) {
         u0 = qd__calloc(ctx, S.nu + 1, sizeof *u0);
         u = qd__calloc(ctx, S.nu + 1, sizeof *u);
@@ -790,6 +790,6 @@ qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nvals,
     qd__free(pt.x);
     qd__free(pt.w);
     qd__free(pt.p);
-    qd__steady_search_free(&S);
+    qd__lin_steady_search_free(&S);
     return st;
 }

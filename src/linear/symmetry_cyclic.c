@@ -142,7 +142,7 @@ static qd_status solve_harmonic(qd_ctx *ctx, const qd_linear *lin, size_t c, siz
         return QD_ERR_SINGULAR;
     }
     reduce(m, w->Mh, w->Kh, w->C);
-    if (!qd__sym_eig(ctx, m, w->C, w->w, NULL)) {
+    if (!qd__lin_sym_eig(ctx, m, w->C, w->w, NULL)) {
         qd_ctx_error(ctx, QD_ERR_NUMERIC, "the eigen-solver (dsyev) failed on harmonic %zu", k);
         return QD_ERR_NUMERIC;
     }

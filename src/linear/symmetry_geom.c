@@ -141,7 +141,7 @@ static bool frame(qd_ctx *ctx, geom *g) {
     }
     if (g->len == 0)
         g->len = 1;
-    if (!qd__sym_eig(ctx, 3, C, w, V))
+    if (!qd__lin_sym_eig(ctx, 3, C, w, V))
         return false;
     g->r = 0;
     for (int k = 2; k >= 0; k--) {   /* descending: the spanning axes first */
@@ -279,9 +279,9 @@ static void induce(search *s, const double *R) {
     }
     if (res > 1e-9 * jmax)
         return;
-    if (!qd__symm_invariant(n, s->S, s->lin->M) || !qd__symm_invariant(n, s->S, s->lin->K))
+    if (!qd__lin_symm_invariant(n, s->S, s->lin->M) || !qd__lin_symm_invariant(n, s->S, s->lin->K))
         return;
-    if (!qd__symm_ops_add(s->ctx, s->ops, s->S, R))
+    if (!qd__lin_symm_ops_add(s->ctx, s->ops, s->S, R))
         s->st = QD_ERR_NOMEM;
 }
 
@@ -432,7 +432,7 @@ static qd_status search_run(qd_ctx *ctx, geom *g, const qd_linear *lin, qd__symm
     return s.st;
 }
 
-qd_status qd__symm_geometric(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+qd_status qd__lin_symm_geometric(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                              const qd_expr *const *syms, const double *vals,
                              const qd_linear *lin, qd__symm_ops *ops, double **rigid,
                              size_t *nrigid, qd_mode_kind **rigid_kind, bool *found) {

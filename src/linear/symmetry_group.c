@@ -1,13 +1,13 @@
 /*
  * src/linear/symmetry_group.c - from the operations S_g to a group: the
  * Cayley table (products matched by their action on one fixed vector),
- * classes, characters, Schoenflies name and Mulliken labels (src/group),
+ * classes, characters, Schoenflies name and Mulliken labels
+ * (qd_group_characters, src/group/symmetry.c),
  * and the names of classes and blocks for printing.
  */
 #include "symmetry.h"
 
 #include "base/mem.h"
-#include "group/group.h"
 #include "../base/args.h"
 
 #include <math.h>
@@ -93,54 +93,6 @@ static bool identity_first(qd_symmetry *s) {
     return true;
 }
 
-static qd_status copy_classes(qd_ctx *ctx, qd_symmetry *s, const qd__group *grp) {
-    size_t k = grp->nclass;
-    s->nclass = k;
-    s->class_of = qd__malloc(ctx, (s->order + 1) * sizeof *s->class_of);
-    s->class_size = qd__malloc(ctx, (k + 1) * sizeof *s->class_size);
-    s->class_rep = qd__malloc(ctx, (k + 1) * sizeof *s->class_rep);
-    if (!s->class_of || !s->class_size || !s->class_rep)
-        return QD_ERR_NOMEM;
-    memcpy(s->class_of, grp->class_of, s->order * sizeof *s->class_of);
-    memcpy(s->class_size, grp->class_size, k * sizeof *s->class_size);
-    memcpy(s->class_rep, grp->class_rep, k * sizeof *s->class_rep);
-    return QD_OK;
-}
-
-static qd_status copy_characters(qd_ctx *ctx, qd_symmetry *s, const qd__chartab *t) {
-    size_t ni = t->n, nc = s->nclass;
-    s->nirrep = ni;
-    s->irrep_dim = qd__malloc(ctx, (ni + 1) * sizeof *s->irrep_dim);
-    s->chi_re = qd__malloc(ctx, (ni * nc + 1) * sizeof *s->chi_re);
-    s->chi_im = qd__malloc(ctx, (ni * nc + 1) * sizeof *s->chi_im);
-    s->label = qd__calloc(ctx, ni + 1, sizeof *s->label);
-    if (!s->irrep_dim || !s->chi_re || !s->chi_im || !s->label)
-        return QD_ERR_NOMEM;
-    memcpy(s->irrep_dim, t->dim, ni * sizeof *s->irrep_dim);
-    memcpy(s->chi_re, t->re, ni * nc * sizeof *s->chi_re);
-    memcpy(s->chi_im, t->im, ni * nc * sizeof *s->chi_im);
-    return QD_OK;
-}
-
-/* Name and labels; an abstract group's irreps are G1, G2, ... when the
- * group module has no labels for it. */
-static qd_status names(qd_ctx *ctx, qd_symmetry *s, const qd__group *grp,
-                       const qd__chartab *t) {
-    s->name[0] = 0;
-    if (s->geometric && qd__pointgroup_name(ctx, grp, s->R, s->name) != QD_OK) {
-        if (!qd__ctx_recover(ctx))
-            return QD_ERR_NOMEM;
-        s->name[0] = 0;
-    }
-    if (qd__irrep_labels(ctx, grp, s->geometric ? s->R : NULL, t, s->label) == QD_OK)
-        return QD_OK;
-    if (!qd__ctx_recover(ctx))
-        return QD_ERR_NOMEM;
-    for (size_t i = 0; i < s->nirrep; i++)
-        snprintf(s->label[i], sizeof s->label[i], "G%u", (unsigned)(i + 1) % 1000000u);
-    return QD_OK;
-}
-
 /* Everything after the operations are in s->S (and s->R). */
 static qd_status build(qd_ctx *ctx, qd_symmetry *s) {
     bool nomem = false;
@@ -158,20 +110,24 @@ static qd_status build(qd_ctx *ctx, qd_symmetry *s) {
                      "a group", s->order);
         return QD_ERR_ARG;
     }
-    qd__group grp = {0};
-    qd__chartab tab = {0};
-    qd_status st = qd__group_from_table(ctx, s->order, s->table, &grp);
-    if (st == QD_OK)
-        st = copy_classes(ctx, s, &grp);
-    if (st == QD_OK)
-        st = qd__group_characters(ctx, &grp, &tab);
-    if (st == QD_OK)
-        st = copy_characters(ctx, s, &tab);
-    if (st == QD_OK)
-        st = names(ctx, s, &grp, &tab);
-    qd__chartab_free(&tab);
-    qd__group_free(&grp);
-    return st;
+    qd_symmetry g;
+    qd_status st = qd_group_characters(ctx, s->order, s->table, s->geometric ? s->R : NULL, &g);
+    if (st != QD_OK)
+        return st;
+    /* s keeps its own table and R; the group's analysis moves over */
+    qd__free(g.table);
+    qd__free(g.R);
+    memcpy(s->name, g.name, sizeof s->name);
+    s->nclass = g.nclass;
+    s->class_of = g.class_of;
+    s->class_size = g.class_size;
+    s->class_rep = g.class_rep;
+    s->nirrep = g.nirrep;
+    s->irrep_dim = g.irrep_dim;
+    s->chi_re = g.chi_re;
+    s->chi_im = g.chi_im;
+    s->label = g.label;
+    return QD_OK;
 }
 
 static qd_status take_ops(qd_ctx *ctx, qd_symmetry *s, size_t order, const double *S,
@@ -208,8 +164,8 @@ qd_status qd_symmetry_from_ops(qd_ctx *ctx, const qd_linear *lin, size_t order,
     size_t n = lin->n;
     out->n = n;
     for (size_t g = 0; g < order; g++)
-        if (!qd__symm_invariant(n, S + g * n * n, lin->M) ||
-            !qd__symm_invariant(n, S + g * n * n, lin->K)) {
+        if (!qd__lin_symm_invariant(n, S + g * n * n, lin->M) ||
+            !qd__lin_symm_invariant(n, S + g * n * n, lin->K)) {
             qd_ctx_error(ctx, QD_ERR_ARG, "operation %zu leaves M0 or K0 not invariant", g);
             return QD_ERR_ARG;
         }
@@ -223,10 +179,10 @@ static qd_status find_ops(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_
     bool found = false;
     qd_status st = QD_OK;
     if (m && e)
-        st = qd__symm_geometric(ctx, e, m, nvals, syms, vals, lin, ops, &out->rigid,
+        st = qd__lin_symm_geometric(ctx, e, m, nvals, syms, vals, lin, ops, &out->rigid,
                                 &out->nrigid, &out->rigid_kind, &found);
     if (st == QD_OK && !found)
-        st = qd__symm_permutations(ctx, lin, ops);
+        st = qd__lin_symm_permutations(ctx, lin, ops);
     out->geometric = found;
     if (st == QD_OK && ops->overflow) {
         qd_ctx_error(ctx, QD_ERR_TOOBIG, "the symmetry group has more than %d elements",
@@ -254,7 +210,7 @@ qd_status qd_symmetry_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size
     bool geometric = out->geometric;
     if (st == QD_OK)
         st = take_ops(ctx, out, ops.count, ops.S, geometric ? ops.R : NULL);
-    qd__symm_ops_free(&ops);
+    qd__lin_symm_ops_free(&ops);
     return st == QD_OK ? build(ctx, out) : st;
 }
 

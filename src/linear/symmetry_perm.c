@@ -15,7 +15,7 @@
 #include <math.h>
 #include <string.h>
 
-void qd__symm_matmul(size_t n, const double *A, const double *B, double *C) {
+void qd__lin_symm_matmul(size_t n, const double *A, const double *B, double *C) {
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < n; j++) {
             double t = 0;
@@ -32,7 +32,7 @@ static double max_abs(size_t len, const double *a) {
     return m;
 }
 
-bool qd__symm_invariant(size_t n, const double *S, const double *A) {
+bool qd__lin_symm_invariant(size_t n, const double *S, const double *A) {
     double tol = QD_SYMMETRY_TOL * max_abs(n * n, A);
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < n; j++) {
@@ -54,7 +54,7 @@ static double trace3(const double *R) {
     return R[0] + R[4] + R[8];
 }
 
-bool qd__symm_ops_add(qd_ctx *ctx, qd__symm_ops *o, const double *S, const double *R) {
+bool qd__lin_symm_ops_add(qd_ctx *ctx, qd__symm_ops *o, const double *S, const double *R) {
     size_t nn = o->n * o->n;
     for (size_t g = 0; g < o->count; g++) {
         double *T = o->S + g * nn;
@@ -90,7 +90,7 @@ bool qd__symm_ops_add(qd_ctx *ctx, qd__symm_ops *o, const double *S, const doubl
     return true;
 }
 
-void qd__symm_ops_free(qd__symm_ops *o) {
+void qd__lin_symm_ops_free(qd__symm_ops *o) {
     qd__free(o->S);
     qd__free(o->R);
     memset(o, 0, sizeof *o);
@@ -132,7 +132,7 @@ static void place(perm_search *ps, size_t i) {
         memset(ps->S, 0, n * n * sizeof *ps->S);
         for (size_t a = 0; a < n; a++)
             ps->S[ps->p[a] * n + a] = ps->sg[a];
-        ps->nomem = !qd__symm_ops_add(ps->ctx, ps->ops, ps->S, NULL);
+        ps->nomem = !qd__lin_symm_ops_add(ps->ctx, ps->ops, ps->S, NULL);
         return;
     }
     for (size_t j = 0; j < n; j++)
@@ -146,7 +146,7 @@ static void place(perm_search *ps, size_t i) {
             }
 }
 
-qd_status qd__symm_permutations(qd_ctx *ctx, const qd_linear *lin, qd__symm_ops *ops) {
+qd_status qd__lin_symm_permutations(qd_ctx *ctx, const qd_linear *lin, qd__symm_ops *ops) {
     size_t n = lin->n;
     perm_search ps = {.ctx = ctx, .lin = lin, .ops = ops, .lowest_sign = 1};
     ps.tolM = QD_SYMMETRY_TOL * max_abs(n * n, lin->M);

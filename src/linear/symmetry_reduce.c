@@ -210,11 +210,11 @@ static qd_status block_form(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s) {
         qd__free(Ut);
         return QD_ERR_NOMEM;
     }
-    qd__symm_matmul(n, lin->K, s->U, KU);
+    qd__lin_symm_matmul(n, lin->K, s->U, KU);
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < n; j++)
             Ut[i * n + j] = s->U[j * n + i];
-    qd__symm_matmul(n, Ut, KU, s->Kb);
+    qd__lin_symm_matmul(n, Ut, KU, s->Kb);
     qd__free(KU);
     qd__free(Ut);
     double big = max_abs(nn, s->Kb), off = 0;
@@ -332,7 +332,7 @@ static qd_status solve_block(qd_ctx *ctx, const qd_linear *lin, qd_symmetry *s, 
     for (size_t i = 0; ret == QD_OK && i < m; i++)
         for (size_t j = 0; j < m; j++)
             bs.K[i * m + j] = s->Kb[(st + i) * n + st + j];
-    if (ret == QD_OK && !qd__sym_eig(ctx, m, bs.K, bs.w, bs.V)) {
+    if (ret == QD_OK && !qd__lin_sym_eig(ctx, m, bs.K, bs.w, bs.V)) {
         qd_ctx_error(ctx, QD_ERR_NUMERIC, "the eigen-solver (dsyev) failed on a block");
         ret = QD_ERR_NUMERIC;
     }

@@ -30,8 +30,7 @@ extern void dorgqr_(const int *m, const int *n, const int *k, double *a, const i
 /* A run: the integrator over the augmented state, the sums of log |R_jj|
  * and the running averages kept for the error estimate. */
 typedef struct bench {
-    qd__lyap_ws ws;
-    qd__integ it;
+    qd__lyap_tangent r;     /* the state and k tangent vectors (tangent.c) */
     const qd_sim_opts *o;
     size_t k, d;
     double renorm, ta, T;   /* renormalization period; averaging from ta for T */
@@ -44,14 +43,9 @@ typedef struct bench {
 
 static qd_status check_opts(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
                             const qd_lyap_opts *lo) {
-    qd_status st = qd_sim_check_opts(ctx, o);
+    qd_status st = qd__lyap_check_opts(ctx, o, "Lyapunov exponents are");
     if (st != QD_OK)
         return st;
-    if (o->method != QD_SIM_DOP853 && o->method != QD_SIM_DOPRI5) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "Lyapunov exponents are integrated with dopri5 or "
-                     "dop853, not %s", qd_sim_method_name(o->method));
-        return QD_ERR_ARG;
-    }
     if (lo->nexp < 1 || lo->nexp > 2 * l->n) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the number of exponents must be 1 to %zu (twice the "
                      "degrees of freedom), not %zu", 2 * l->n, lo->nexp);
@@ -66,98 +60,45 @@ static qd_status check_opts(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
                      "the run (t_end - t0 = %.17g)", o->t_end - o->t0);
         return QD_ERR_ARG;
     }
-    if (!o->q0 || !o->qd0) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "the initial coordinates and velocities are needed");
-        return QD_ERR_ARG;
-    }
     return QD_OK;
 }
 
+/* The sums, the running averages kept and QR's workspace. */
 static qd_status bench_alloc(bench *b, qd_ctx *ctx) {
-    size_t dim = b->d + b->d * b->k + 1;
-    b->it.y = qd__calloc(ctx, 2 * dim, sizeof *b->it.y);
     b->sum = qd__calloc(ctx, b->k, sizeof *b->sum);
     /* the renormalizations in the last half, and one more for the end */
     b->caph = (size_t)ceil(b->T / 2 / b->renorm) + 2;
     b->hist = qd__malloc(ctx, b->caph * b->k * sizeof *b->hist);
     b->lwork = (int)(64 * b->d);
     b->tau = qd__malloc(ctx, (b->k + (size_t)b->lwork) * sizeof *b->tau);
-    if (!b->it.y || !b->sum || !b->hist || !b->tau) {
+    if (!b->sum || !b->hist || !b->tau) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory starting the Lyapunov run");
         return QD_ERR_NOMEM;
     }
-    b->it.yold = b->it.y + dim;
     b->work = b->tau + b->k;
-    b->it.dim = dim;
     return QD_OK;
 }
 
 static void bench_free(bench *b) {
-    if (b->it.ops && b->it.priv)
-        b->it.ops->free(&b->it);
-    qd__free(b->it.y);
     qd__free(b->sum);
     qd__free(b->hist);
     qd__free(b->tau);
-    qd__lyap_ws_free(&b->ws);
+    qd__lyap_tangent_free(&b->r);
 }
 
-/* (q0, q'0), the tangent vectors e_1 .. e_k, z = 0; the method started. */
-static qd_status start(bench *b) {
-    const qd_sim_opts *o = b->o;
-    size_t n = b->d / 2;
-    double *y = b->it.y;
-    for (size_t i = 0; i < n; i++) {
-        y[i] = o->q0[i];
-        y[n + i] = o->qd0[i];
-    }
-    for (size_t j = 0; j < b->k; j++)
-        y[b->d + j * b->d + j] = 1;
-    b->ws.w.ext_rhs = qd__lyap_rhs;
-    b->ws.w.ext_data = &b->ws;
-    return b->it.ops->init(&b->it);
-}
-
-/* Integrate to tb exactly (the last step shortened to land there). */
-static qd_status advance(bench *b, double tb) {
-    qd__integ *it = &b->it;
-    size_t max = b->o->max_steps ? b->o->max_steps : QD_SIM_MAX_STEPS;
-    while (it->t < tb) {
-        if (it->steps >= max) {
-            qd_ctx_error(b->ws.w.ctx, QD_ERR_NUMERIC, "more than %zu steps before t = %.17g "
-                         "(at t = %.17g)", max, b->o->t_end, it->t);
-            return QD_ERR_NUMERIC;
-        }
-        double h = it->fixed ? b->o->dt : it->h;
-        bool last = it->t + 1.01 * h >= tb;
-        it->h = last ? tb - it->t : h;
-        b->ws.w.tnow = it->t;
-        qd_status st = it->ops->step(it);
-        if (st != QD_OK)
-            return st;
-        it->steps++;
-        if (last && fabs(it->t - tb) <= 4e-16 * fabs(tb) + 1e-300) {
-            it->t = tb;
-            /* the shortened step says nothing about the step the solution
-             * allows: keep the controller's proposal from before it */
-            if (!it->fixed && it->h < h)
-                it->h = h;
-        }
-    }
-    return QD_OK;
-}
+static qd_status advance(bench *b, double tb) { return qd__lyap_tangent_advance(&b->r, tb); }
 
 /* W = QR; W <- Q; log |R_jj| added to the sums when counted. */
 static qd_status renormalize(bench *b, bool counted) {
     int m = (int)b->d, k = (int)b->k, info = 0;
-    double *W = b->it.y + b->d;
+    double *W = b->r.it.y + b->d;
     dgeqrf_(&m, &k, W, &m, b->tau, b->work, &b->lwork, &info);
     for (size_t j = 0; info == 0 && j < b->k; j++) {
         double r = fabs(W[j * b->d + j]);
         if (!(r > 0) || !isfinite(r)) {
-            qd_ctx_error(b->ws.w.ctx, QD_ERR_NUMERIC, "the tangent vectors collapsed or "
+            qd_ctx_error(b->r.ws.w.ctx, QD_ERR_NUMERIC, "the tangent vectors collapsed or "
                          "overflowed at t = %.17g: shorten the renormalization time",
-                         b->it.t);
+                         b->r.it.t);
             return QD_ERR_NUMERIC;
         }
         if (counted)
@@ -166,17 +107,17 @@ static qd_status renormalize(bench *b, bool counted) {
     if (info == 0)
         dorgqr_(&m, &k, &k, W, &m, b->tau, b->work, &b->lwork, &info);
     if (info != 0) {
-        qd_ctx_error(b->ws.w.ctx, QD_ERR_NUMERIC, "QR factorization failed (LAPACK info %d)",
+        qd_ctx_error(b->r.ws.w.ctx, QD_ERR_NUMERIC, "QR factorization failed (LAPACK info %d)",
                      info);
         return QD_ERR_NUMERIC;
     }
-    b->it.y_changed = true;
+    b->r.it.y_changed = true;
     return QD_OK;
 }
 
 /* The running averages at a renormalization in the last half. */
 static void record(bench *b) {
-    double t = b->it.t - b->ta;
+    double t = b->r.it.t - b->ta;
     if (t < b->T / 2 * (1 - 1e-12) || b->nh >= b->caph)
         return;
     for (size_t j = 0; j < b->k; j++)
@@ -186,7 +127,7 @@ static void record(bench *b) {
 
 /* Through the transient (renormalized, not counted) to ta, z reset there. */
 static qd_status transient(bench *b) {
-    for (size_t i = 1; b->it.t < b->ta; i++) {
+    for (size_t i = 1; b->r.it.t < b->ta; i++) {
         double tb = fmin(b->o->t0 + (double)i * b->renorm, b->ta);
         qd_status st = advance(b, tb);
         if (st == QD_OK)
@@ -194,13 +135,13 @@ static qd_status transient(bench *b) {
         if (st != QD_OK)
             return st;
     }
-    b->it.y[b->d + b->d * b->k] = 0;
-    b->it.y_changed = true;
+    b->r.it.y[b->d + b->d * b->k] = 0;
+    b->r.it.y_changed = true;
     return QD_OK;
 }
 
 static qd_status average(bench *b) {
-    for (size_t i = 1; b->it.t < b->o->t_end; i++) {
+    for (size_t i = 1; b->r.it.t < b->o->t_end; i++) {
         double tb = fmin(b->ta + (double)i * b->renorm, b->o->t_end);
         qd_status st = advance(b, tb);
         if (st == QD_OK)
@@ -238,13 +179,10 @@ static void results(const bench *b, double *exps, double *err) {
         err[j] = e[j];
 }
 
-static qd_status run(bench *b, qd_ctx *ctx, const qd_sim_opts *o) {
-    qd_status st = qd__lyap_ws_init(&b->ws, ctx, b->ws.l, b->k, o->par);
+static qd_status run(bench *b, qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o) {
+    qd_status st = qd__lyap_tangent_start(&b->r, ctx, l, o, b->k, 0, "the Lyapunov run");
     if (st == QD_OK)
         st = bench_alloc(b, ctx);
-    b->it.s = &b->ws.w;
-    if (st == QD_OK)
-        st = start(b);
     if (st == QD_OK)
         st = transient(b);
     if (st == QD_OK)
@@ -264,23 +202,16 @@ qd_status qd_lyap_run_stats(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
     bench b = {.o = o, .k = lo->nexp, .d = 2 * l->n,
                .renorm = lo->renorm > 0 ? lo->renorm : 1,
                .ta = o->t0 + lo->transient, .T = o->t_end - o->t0 - lo->transient};
-    b.ws.l = l;
-    b.it = (qd__integ){.method = o->method,
-                       .ops = o->method == QD_SIM_DOPRI5 ? &qd__dopri5 : &qd__dop853,
-                       .form = QD__LAG, .t = o->t0, .tend = o->t_end,
-                       .rtol = o->rtol > 0 ? o->rtol : 1e-10,
-                       .atol = o->atol > 0 ? o->atol : 1e-12, .fixed = o->fixed,
-                       .h = o->fixed ? o->dt : 0};
-    st = run(&b, ctx, o);
+    st = run(&b, ctx, l, o);
     if (st == QD_OK)
         results(&b, exps, err);
     if (stats) {
         stats->t_avg = b.T;
         stats->renorms = b.renorms;
-        stats->trace_mean = st == QD_OK ? b.it.y[b.d + b.d * b.k] / b.T : NAN;
-        stats->steps = b.it.steps;
-        stats->evals = b.ws.w.evals;
-        stats->rejected = b.it.rejected;
+        stats->trace_mean = st == QD_OK ? b.r.it.y[b.d + b.d * b.k] / b.T : NAN;
+        stats->steps = b.r.it.steps;
+        stats->evals = b.r.ws.w.evals;
+        stats->rejected = b.r.it.rejected;
     }
     if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "the Lyapunov run failed: %s", qd_status_str(st));

@@ -27,8 +27,7 @@ extern void dgeev_(const char *jobvl, const char *jobvr, const int *n, double *a
                    const int *ldvr, double *work, const int *lwork, int *info);
 
 typedef struct flow_run {
-    qd__lyap_ws ws;
-    qd__integ it;
+    qd__lyap_tangent t;     /* the state and d tangent vectors (tangent.c) */
     const qd_sim_opts *o;
     const qd_flow_opts *fo;
     size_t d;
@@ -42,69 +41,28 @@ void qd_flow_free(qd_flow *f) {
     f->y = f->phi = f->phi_c = f->mult_re = f->mult_im = NULL;
 }
 
-static qd_status check_opts(qd_ctx *ctx, const qd_sim_opts *o) {
-    qd_status st = qd_sim_check_opts(ctx, o);
-    if (st != QD_OK)
-        return st;
-    if (o->method != QD_SIM_DOP853 && o->method != QD_SIM_DOPRI5) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "the flow Jacobian is integrated with dopri5 or dop853, "
-                     "not %s", qd_sim_method_name(o->method));
-        return QD_ERR_ARG;
-    }
-    if (!o->q0 || !o->qd0) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "the initial coordinates and velocities are needed");
-        return QD_ERR_ARG;
-    }
-    return QD_OK;
-}
-
 /* Phi row-major from the tangent vectors (column j at y + d + d j). */
 static void read_phi(const flow_run *r, double *phi) {
-    const double *W = r->it.y + r->d;
+    const double *W = r->t.it.y + r->d;
     for (size_t i = 0; i < r->d; i++)
         for (size_t j = 0; j < r->d; j++)
             phi[i * r->d + j] = W[j * r->d + i];
 }
 
-/* Integrate to tb exactly (benettin.c's driver: the last step shortened). */
-static qd_status advance(flow_run *r, double tb) {
-    qd__integ *it = &r->it;
-    size_t max = r->o->max_steps ? r->o->max_steps : QD_SIM_MAX_STEPS;
-    while (it->t < tb) {
-        if (it->steps >= max) {
-            qd_ctx_error(r->ws.w.ctx, QD_ERR_NUMERIC, "more than %zu steps before t = %.17g "
-                         "(at t = %.17g)", max, r->o->t_end, it->t);
-            return QD_ERR_NUMERIC;
-        }
-        double h = it->fixed ? r->o->dt : it->h;
-        bool last = it->t + 1.01 * h >= tb;
-        it->h = last ? tb - it->t : h;
-        r->ws.w.tnow = it->t;
-        qd_status st = it->ops->step(it);
-        if (st != QD_OK)
-            return st;
-        it->steps++;
-        if (last && fabs(it->t - tb) <= 4e-16 * fabs(tb) + 1e-300) {
-            it->t = tb;
-            if (!it->fixed && it->h < h)
-                it->h = h;
-        }
-    }
-    return QD_OK;
-}
+static qd_status advance(flow_run *r, double tb) { return qd__lyap_tangent_advance(&r->t, tb); }
 
 static qd_status integrate(flow_run *r) {
     const qd_sim_opts *o = r->o;
     double every = r->fo && r->fo->every > 0 ? r->fo->every : o->t_end - o->t0;
-    for (size_t i = 1; r->it.t < o->t_end; i++) {
+    for (size_t i = 1; r->t.it.t < o->t_end; i++) {
         double tb = fmin(o->t0 + (double)i * every, o->t_end);
         qd_status st = advance(r, tb);
         if (st != QD_OK)
             return st;
         if (r->fo && r->fo->sink) {
             read_phi(r, r->phi);
-            if (r->fo->sink(r->fo->data, r->it.t, r->it.y, r->phi)) {
-                qd_ctx_error(r->ws.w.ctx, QD_ERR_ARG, "stopped");
+            if (r->fo->sink(r->fo->data, r->t.it.t, r->t.it.y, r->phi)) {
+                qd_ctx_error(r->t.ws.w.ctx, QD_ERR_ARG, "stopped");
                 return QD_ERR_ARG;
             }
         }
@@ -128,7 +86,7 @@ static double det_lu(double *a, int d, int *ipiv) {
 static void legendre_jacobian(flow_run *r, const qd_prog *P, double *pw, double *pout,
                               double t, const double *y, double *lam) {
     size_t n = r->d / 2, d = r->d;
-    qd_sim *s = &r->ws.w;
+    qd_sim *s = &r->t.ws.w;
     memcpy(s->in, y, d * sizeof *y);
     s->in[d] = t;
     qd_prog_eval(P, pw, s->in, pout);
@@ -143,7 +101,7 @@ static void legendre_jacobian(flow_run *r, const qd_prog *P, double *pw, double 
 /* Phi_c = Lambda(end) Phi Lambda(0)^-1 and max |Phi_c^T J Phi_c - J|. */
 static qd_status canonical(flow_run *r, qd_ctx *ctx, const double *y0, qd_flow *f) {
     size_t n = r->d / 2, d = r->d;
-    const qd_eom *e = r->ws.l->sim->e;
+    const qd_eom *e = r->t.ws.l->sim->e;
     const qd_expr **outs = qd__malloc(ctx, (n * d + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
@@ -153,7 +111,7 @@ static qd_status canonical(flow_run *r, qd_ctx *ctx, const double *y0, qd_flow *
             outs[i * d + k] = qd_diff(ctx, p, k < n ? e->q[k] : e->qd[k - n]);
     }
     qd_prog *P = qd_ctx_status(ctx) == QD_OK
-                     ? qd_prog_new(ctx, r->ws.w.nin, r->ws.w.in_syms, n * d, outs) : NULL;
+                     ? qd_prog_new(ctx, r->t.ws.w.nin, r->t.ws.w.in_syms, n * d, outs) : NULL;
     qd__free(outs);
     if (!P)
         return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
@@ -165,7 +123,7 @@ static qd_status canonical(flow_run *r, qd_ctx *ctx, const double *y0, qd_flow *
         double *pout = pw + qd_prog_work_size(P), *l0 = pout + n * d, *l1 = l0 + d * d,
                *A = l1 + d * d;
         legendre_jacobian(r, P, pw, pout, r->o->t0, y0, l0);
-        legendre_jacobian(r, P, pw, pout, r->it.t, f->y, l1);
+        legendre_jacobian(r, P, pw, pout, r->t.it.t, f->y, l1);
         for (size_t i = 0; i < d; i++)           /* A = Lambda(end) Phi */
             for (size_t j = 0; j < d; j++) {
                 double s = 0;
@@ -231,18 +189,18 @@ static qd_status results(flow_run *r, qd_ctx *ctx, qd_flow *f) {
         y0p[i] = r->o->q0[i];
         y0p[d / 2 + i] = r->o->qd0[i];
     }
-    memcpy(f->y, r->it.y, d * sizeof *f->y);
+    memcpy(f->y, r->t.it.y, d * sizeof *f->y);
     read_phi(r, f->phi);
     f->closure = 0;
     for (size_t i = 0; i < d; i++)
         f->closure = fmax(f->closure, fabs(f->y[i] - y0p[i]));
-    f->trace_integral = r->it.y[d + d * d];
+    f->trace_integral = r->t.it.y[d + d * d];
     memcpy(r->phi, f->phi, d * d * sizeof *f->phi);
     int *ipiv = qd__malloc(ctx, (d + 1) * sizeof *ipiv);
     f->det = ipiv ? det_lu(r->phi, (int)d, ipiv) : NAN;
     qd__free(ipiv);
     qd_status st = ipiv ? multipliers(ctx, f) : QD_ERR_NOMEM;
-    f->hamiltonian = qd_sim_conservative(r->ws.l->sim);
+    f->hamiltonian = qd_sim_conservative(r->t.ws.l->sim);
     if (st == QD_OK && f->hamiltonian)
         st = canonical(r, ctx, y0p, f);
     if (!f->hamiltonian)
@@ -252,35 +210,22 @@ static qd_status results(flow_run *r, qd_ctx *ctx, qd_flow *f) {
     return st;
 }
 
-static qd_status run(flow_run *r, qd_ctx *ctx, qd_flow *f) {
-    size_t d = r->d, dim = d + d * d + 1;
-    qd_status st = qd__lyap_ws_init(&r->ws, ctx, r->ws.l, d, r->o->par);
+static qd_status run(flow_run *r, qd_ctx *ctx, const qd_lyap *l, qd_flow *f) {
+    size_t d = r->d;
+    /* Phi's scratch after the state (r->phi) */
+    qd_status st = qd__lyap_tangent_start(&r->t, ctx, l, r->o, d, d * d, "the flow Jacobian");
     /* the flow's arrays in one block: y, phi, phi_c, mult_re, mult_im */
-    f->y = qd__calloc(ctx, d + 2 * d * d + 2 * d, sizeof *f->y);
-    r->it.y = qd__calloc(ctx, 2 * dim + d * d, sizeof *r->it.y);
-    if (st != QD_OK || !f->y || !r->it.y) {
+    f->y = st == QD_OK ? qd__calloc(ctx, d + 2 * d * d + 2 * d, sizeof *f->y) : NULL;
+    if (st != QD_OK || !f->y) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory starting the flow Jacobian");
-        return QD_ERR_NOMEM;
+        return st != QD_OK ? st : QD_ERR_NOMEM;
     }
     f->phi = f->y + d;
     f->phi_c = f->phi + d * d;
     f->mult_re = f->phi_c + d * d;
     f->mult_im = f->mult_re + d;
-    r->it.yold = r->it.y + dim;
-    r->phi = r->it.yold + dim;
-    r->it.dim = dim;
-    r->it.s = &r->ws.w;
-    for (size_t i = 0; i < d / 2; i++) {
-        r->it.y[i] = r->o->q0[i];
-        r->it.y[d / 2 + i] = r->o->qd0[i];
-    }
-    for (size_t j = 0; j < d; j++)
-        r->it.y[d + j * d + j] = 1;
-    r->ws.w.ext_rhs = qd__lyap_rhs;
-    r->ws.w.ext_data = &r->ws;
-    st = r->it.ops->init(&r->it);
-    if (st == QD_OK)
-        st = integrate(r);
+    r->phi = r->t.extra;
+    st = integrate(r);
     if (st == QD_OK)
         st = results(r, ctx, f);
     return st;
@@ -290,26 +235,16 @@ qd_status qd_flow_run(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
                       const qd_flow_opts *fo, qd_flow *out) {
     QD_ARGS_CTX(ctx, ctx && l && o && out);
     *out = (qd_flow){.d = 2 * l->n, .symplectic_error = NAN, .det = NAN, .closure = NAN};
-    qd_status st = check_opts(ctx, o);
+    qd_status st = qd__lyap_check_opts(ctx, o, "the flow Jacobian is");
     if (st != QD_OK)
         return st;
     flow_run r = {.o = o, .fo = fo, .d = 2 * l->n};
-    r.ws.l = l;
-    r.it = (qd__integ){.method = o->method,
-                       .ops = o->method == QD_SIM_DOPRI5 ? &qd__dopri5 : &qd__dop853,
-                       .form = QD__LAG, .t = o->t0, .tend = o->t_end,
-                       .rtol = o->rtol > 0 ? o->rtol : 1e-10,
-                       .atol = o->atol > 0 ? o->atol : 1e-12, .fixed = o->fixed,
-                       .h = o->fixed ? o->dt : 0};
-    st = run(&r, ctx, out);
-    out->steps = r.it.steps;
-    out->evals = r.ws.w.evals;
-    out->rejected = r.it.rejected;
+    st = run(&r, ctx, l, out);
+    out->steps = r.t.it.steps;
+    out->evals = r.t.ws.w.evals;
+    out->rejected = r.t.it.rejected;
     if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "the flow Jacobian run failed: %s", qd_status_str(st));
-    if (r.it.ops && r.it.priv)
-        r.it.ops->free(&r.it);
-    qd__free(r.it.y);
-    qd__lyap_ws_free(&r.ws);
+    qd__lyap_tangent_free(&r.t);
     return st;
 }

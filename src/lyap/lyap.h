@@ -48,4 +48,30 @@ qd_status qd__lyap_rhs(void *ws, double t, const double *y, double *dy);
 qd_status qd__lyap_jacobian(qd_ctx *ctx, const qd_lyap *l, const double *par, double t,
                             const double *x, double *F, double *J);
 
+/* ---- a run of the state and k tangent vectors (tangent.c) ---------------- */
+
+/* The integrator over y = (q, q', the k tangent vectors, z) from
+ * (q0, q'0), e_1 .. e_k and z = 0, with its workspace; extra: the doubles
+ * after y and yold that the caller keeps for itself. */
+typedef struct qd__lyap_tangent {
+    qd__lyap_ws ws;
+    qd__integ it;
+    const qd_sim_opts *o;
+    size_t d, k;           /* d = 2n */
+    double *extra;
+} qd__lyap_tangent;
+
+/* The checks both runs make of o: qd_sim_check_opts, the method (dopri5
+ * or dop853: "SUBJECT integrated with dopri5 or dop853, not ..."), the
+ * initial state given.  QD_ERR_ARG recorded in ctx. */
+qd_status qd__lyap_check_opts(qd_ctx *ctx, const qd_sim_opts *o, const char *subject);
+/* r set up and its method started ("out of memory starting WHAT"); on
+ * failure too, qd__lyap_tangent_free releases it. */
+qd_status qd__lyap_tangent_start(qd__lyap_tangent *r, qd_ctx *ctx, const qd_lyap *l,
+                                 const qd_sim_opts *o, size_t k, size_t extra,
+                                 const char *what);
+/* Integrate to tb exactly (the last step shortened to land there). */
+qd_status qd__lyap_tangent_advance(qd__lyap_tangent *r, double tb);
+void qd__lyap_tangent_free(qd__lyap_tangent *r);
+
 #endif

@@ -42,7 +42,7 @@ static qd_status solve_linear(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
     qd_status st = QD_OK;
     for (size_t j = 0; j < n && st == QD_OK; j++)
         st = qd_linear_coeffs(ctx, qd_expand(ctx, eq[j]), n, xs, A + j * n, r + j);
-    const qd_expr *det = st == QD_OK ? qd_simplify(ctx, qd__det(ctx, n, A)) : NULL;
+    const qd_expr *det = st == QD_OK ? qd_simplify(ctx, qd__mech_det(ctx, n, A)) : NULL;
     if (st == QD_OK && !det)
         st = qd_ctx_status(ctx);
     if (st == QD_OK && qd_is_zero(det)) {
@@ -52,7 +52,7 @@ static qd_status solve_linear(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
     for (size_t k = 0; k < n && st == QD_OK; k++) {
         for (size_t i = 0; i < n * n; i++)
             Ak[i] = i % n == k ? qd_neg(ctx, r[i / n]) : A[i];
-        sol[k] = qd_simplify(ctx, qd_div(ctx, qd__det(ctx, n, Ak), det));
+        sol[k] = qd_simplify(ctx, qd_div(ctx, qd__mech_det(ctx, n, Ak), det));
         if (!sol[k])
             st = qd_ctx_status(ctx);
     }
@@ -70,7 +70,7 @@ static qd_status solve_for(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
     if (st != QD_ERR_NONLINEAR)
         return st;
     qd__ctx_recover(ctx);
-    return qd__isolate(ctx, n, eq, xs, sol, failed);
+    return qd__mech_isolate(ctx, n, eq, xs, sol, failed);
 }
 
 /* The forward relation cx_k = sx dF/dx_k could not be solved for y. */
@@ -124,7 +124,7 @@ static const qd_expr *new_hamiltonian(qd_ctx *ctx, size_t n, const gen_shape *s,
         to[n + j] = qd_mul(ctx, qd_int(ctx, s->sx), qd_diff(ctx, F, x[j]));
     }
     subs_all(ctx, n, to + n, n, x, xs);
-    return qd__untrig(ctx, qd_simplify(ctx, qd_subs(ctx, K, 2 * n, from, to)));
+    return qd__mech_untrig(ctx, qd_simplify(ctx, qd_subs(ctx, K, 2 * n, from, to)));
 }
 
 qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *const *old_q,
@@ -161,10 +161,10 @@ qd_status qd_generate(qd_ctx *ctx, qd_gen_type type, size_t n, const qd_expr *co
             cys[j] = qd_mul(ctx, qd_int(ctx, s->sy), qd_diff(ctx, F, y[j]));
         subs_all(ctx, n, cys, n, y, ys);
         for (size_t j = 0; j < n; j++) /* sin(atan(..)) from an isolated y */
-            cys[j] = qd__untrig(ctx, cys[j]);
+            cys[j] = qd__mech_untrig(ctx, cys[j]);
         const qd_expr *K = H && t ? qd_add(ctx, H, qd_diff(ctx, F, t)) : H;
         if (K) {
-            out->K_old = qd__untrig(ctx, qd_simplify(ctx, qd_subs(ctx, K, n, y, ys)));
+            out->K_old = qd__mech_untrig(ctx, qd_simplify(ctx, qd_subs(ctx, K, n, y, ys)));
             out->K_new = new_hamiltonian(ctx, n, s, F, x, cx, y, cy, K, w);
         }
         st = qd_ctx_status(ctx);

@@ -451,7 +451,7 @@ static qd_status classify_form(const forms *f, qd_con *c) {
     return search_factor(f, c);
 }
 
-qd_status qd__con_classify(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *c) {
+qd_status qd__mech_con_classify(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *c) {
     if (qd_ctx_status(ctx) != QD_OK)
         return qd_ctx_status(ctx);
     if (!has_velocity(n, c)) {
@@ -470,7 +470,7 @@ qd_status qd__con_classify(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_co
     return st != QD_OK && qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : st;
 }
 
-const qd_expr *qd__con_integral(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+const qd_expr *qd__mech_con_integral(qd_ctx *ctx, size_t n, const qd_expr *const *q,
                                const qd_con *c) {
     forms f;
     const qd_expr *phi = NULL;
@@ -480,7 +480,7 @@ const qd_expr *qd__con_integral(qd_ctx *ctx, size_t n, const qd_expr *const *q,
     return phi;
 }
 
-qd_status qd__con_frobenius(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *const *cs,
+qd_status qd__mech_con_frobenius(qd_ctx *ctx, size_t n, const qd_expr *const *q, qd_con *const *cs,
                             size_t m, bool *integrable) {
     *integrable = true;
     if (qd_ctx_status(ctx) != QD_OK)

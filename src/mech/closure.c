@@ -272,13 +272,13 @@ static qd_status kernel_field(closure *c, const size_t *rows,
     for (size_t a = 0; a < r; a++)
         for (size_t b = 0; b < r; b++)
             B[a * r + b] = generic(c, rows[a], cols[b]);
-    f[j] = qd_simplify(ctx, qd__det(ctx, r, B));
+    f[j] = qd_simplify(ctx, qd__mech_det(ctx, r, B));
     for (size_t i = 0; i < r; i++) {
         const qd_expr *Bi[MAXV * MAXV];
         for (size_t a = 0; a < r; a++)
             for (size_t b = 0; b < r; b++)
                 Bi[a * r + b] = b == i ? generic(c, rows[a], j) : B[a * r + b];
-        f[cols[i]] = qd_simplify(ctx, qd_neg(ctx, qd__det(ctx, r, Bi)));
+        f[cols[i]] = qd_simplify(ctx, qd_neg(ctx, qd__mech_det(ctx, r, Bi)));
     }
     for (size_t i = 0; i < c->N; i++)
         if (!f[i])
@@ -501,7 +501,7 @@ static const qd_expr *integrate_combination(closure *c, const qd_con *con, const
     for (size_t j = 0; j < n; j++)
         a[j] = qd_simplify(ctx, a[j]);
     qd_con sum = {.name = "combination", .a = a, .a0 = qd_simplify(ctx, a0)};
-    const qd_expr *phi = qd__con_integral(ctx, n, c->x, &sum);
+    const qd_expr *phi = qd__mech_con_integral(ctx, n, c->x, &sum);
     if (!phi && qd_ctx_status(ctx) != QD_ERR_NOMEM)
         qd__ctx_recover(ctx);
     return phi;
@@ -533,12 +533,12 @@ static size_t combinations(closure *c, const qd_con *con, size_t nrel, const qd_
     return found;
 }
 
-qd_status qd__con_closure(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *con,
+qd_status qd__mech_con_closure(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *con,
                           size_t m, size_t *rank, size_t *relations) {
-    return qd__con_relations(ctx, n, q, con, m, rank, relations, NULL, 0, NULL);
+    return qd__mech_con_relations(ctx, n, q, con, m, rank, relations, NULL, 0, NULL);
 }
 
-qd_status qd__con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *con,
+qd_status qd__mech_con_relations(qd_ctx *ctx, size_t n, const qd_expr *const *q, const qd_con *con,
                             size_t m, size_t *rank, size_t *relations, const qd_expr **integrals,
                             size_t cap, size_t *nintegrals) {
     *rank = *relations = 0;
@@ -582,7 +582,7 @@ qd_status qd_eom_dof(qd_ctx *ctx, const qd_eom *e, qd_dof *d) {
     size_t rank, rel, nint;
     const qd_expr *found[QD_DOF_MAXCOMB];
     *d = (qd_dof){e->n, 0, 0, e->n, e->n, 0, {NULL}};
-    qd_status st = qd__con_relations(ctx, e->n, e->q, e->con, e->ncon, &rank, &rel, found,
+    qd_status st = qd__mech_con_relations(ctx, e->n, e->q, e->con, e->ncon, &rank, &rel, found,
                                      QD_DOF_MAXCOMB, &nint);
     if (st != QD_OK)
         return st;

@@ -40,7 +40,7 @@ static const char *nonlinear_velocity(qd_ctx *ctx, const qd_eom *e, const qd_exp
 /* x grouped by velocity monomials and simplified. */
 static const qd_expr *tidy(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
     qd__vsum v;
-    qd_status st = qd__by_velocity(ctx, x, e->n, e->qd, &v);
+    qd_status st = qd__mech_by_velocity(ctx, x, e->n, e->qd, &v);
     if (st != QD_OK && st != QD_ERR_NONLINEAR)
         return NULL;
     return qd_simplify(ctx, st == QD_OK ? v.all : x);
@@ -175,7 +175,7 @@ static qd_status together(qd_ctx *ctx, const conset *cs, bool *ok) {
     if (count_kind(cs, QD_CON_INTEGRABLE) < 2)
         return QD_OK;
     size_t m = gather(cs, true, NULL, group);
-    return qd__con_frobenius(ctx, cs->n, cs->q, group, m, ok);
+    return qd__mech_con_frobenius(ctx, cs->n, cs->q, group, m, ok);
 }
 
 /* Each nonholonomic constraint of cs tested with the differentials of the
@@ -188,7 +188,7 @@ static qd_status modulo_holonomic(qd_ctx *ctx, conset *cs) {
         if (c->kind != QD_CON_NONHOLONOMIC)
             continue;
         size_t m = gather(cs, false, c, group);
-        qd_status st = qd__con_frobenius(ctx, cs->n, cs->q, group, m, &ok);
+        qd_status st = qd__mech_con_frobenius(ctx, cs->n, cs->q, group, m, &ok);
         if (st != QD_OK)
             return st;
         if (ok)
@@ -216,7 +216,7 @@ typedef struct surface {
 } surface;
 
 static void surface_free(surface *sf) {
-    qd__sys_free(&sf->sys);
+    qd__mech_sys_free(&sf->sys);
     qd__free(sf->elim);
     qd__free(sf->con);
     qd__free(sf->a);
@@ -276,7 +276,7 @@ static qd_status surface_init(qd_ctx *ctx, const qd_eom *e, const qd__sys *s, su
         if (!(sf->sys.Q[j] = qd_int(ctx, 0)))
             st = qd_ctx_status(ctx);
     if (st == QD_OK)
-        st = qd__eliminate(ctx, &sf->sys, &sf->elim, &sf->nelim);
+        st = qd__mech_eliminate(ctx, &sf->sys, &sf->elim, &sf->nelim);
     if (st != QD_OK || sf->nelim == 0) {
         if (st == QD_ERR_NOMEM)
             return st;
@@ -319,7 +319,7 @@ static qd_status on_surface(qd_ctx *ctx, qd_eom *e, surface *sf) {
             r->kind = QD_CON_INTEGRABLE;
             continue;
         }
-        qd_status st = qd__con_classify(ctx, rs.n, rs.q, r);
+        qd_status st = qd__mech_con_classify(ctx, rs.n, rs.q, r);
         if (st != QD_OK)
             return st;
     }
@@ -363,7 +363,7 @@ static qd_status classify_all(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     return st;
 }
 
-qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s, bool with_b) {
+qd_status qd__mech_con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s, bool with_b) {
     size_t n = e->n, m = s->ncon;
     e->ncon = m;
     e->con = qd__calloc(ctx, m ? m : 1, sizeof *e->con);
@@ -375,7 +375,7 @@ qd_status qd__con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s, bool with_b) {
         e->con[k] = (qd_con){.name = s->con_name[k], .expr = s->con_expr[k], .a = e->A + k * n};
         st = row(ctx, e, k, scratch, with_b);
         if (st == QD_OK && e->con[k].kind != QD_CON_HOLONOMIC)
-            st = qd__con_classify(ctx, n, e->q, &e->con[k]);
+            st = qd__mech_con_classify(ctx, n, e->q, &e->con[k]);
     }
     if (st == QD_OK)
         st = classify_all(ctx, e, s);

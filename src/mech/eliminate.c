@@ -131,7 +131,7 @@ static qd_status eliminate_one(qd_ctx *ctx, qd__sys *s, size_t k, size_t j, cons
     return reduce_constraints(ctx, s, k, q, &u);
 }
 
-qd_status qd__eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *nelim) {
+qd_status qd__mech_eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *nelim) {
     qd_elim *rec = qd__malloc(ctx, (s->ncon + 1) * sizeof *rec);
     size_t nrec = 0, k = 0;
     qd_status st = rec ? QD_OK : QD_ERR_NOMEM;

@@ -139,7 +139,7 @@ qd_status qd_eom_prog_eval(qd_ctx *ctx, const qd_eom_prog *p, qd_eom_work *w, si
     for (size_t i = 0; f && i < n; i++)
         f[i] = w->out[n * n + i];
     if (e->ncon)
-        return qdd || lambda || R ? qd__saddle_solve(ctx, e, w->out, w->K, qdd, lambda, R)
+        return qdd || lambda || R ? qd__mech_saddle_solve(ctx, e, w->out, w->K, qdd, lambda, R)
                                   : QD_OK;
     for (size_t i = 0; R && i < n; i++)
         R[i] = 0;
@@ -148,7 +148,7 @@ qd_status qd_eom_prog_eval(qd_ctx *ctx, const qd_eom_prog *p, qd_eom_work *w, si
 
 /* ---- qd_eom_eval's cache in e->priv (one thread) -------------------------- */
 
-void qd__eom_num_free(qd__eom_num *num) {
+void qd__mech_eom_num_free(qd__eom_num *num) {
     if (!num)
         return;
     qd_eom_work_free(num->work);
@@ -157,7 +157,7 @@ void qd__eom_num_free(qd__eom_num *num) {
     num->prog = NULL;
 }
 
-qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
+qd_status qd__mech_eom_compile(qd_ctx *ctx, const qd_eom *e) {
     qd__eom_num *num = e->priv;
     if (num->prog)
         return QD_OK;
@@ -165,7 +165,7 @@ qd_status qd__eom_compile(qd_ctx *ctx, const qd_eom *e) {
     num->work = num->prog ? qd_eom_work_new(ctx, num->prog) : NULL;
     if (num->work)
         return QD_OK;
-    qd__eom_num_free(num);
+    qd__mech_eom_num_free(num);
     if (qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory compiling the equations of motion");
     return qd_ctx_status(ctx);
@@ -175,7 +175,7 @@ qd_status qd_eom_eval(qd_ctx *ctx, const qd_eom *e, size_t nvals, const qd_expr 
                       const double *vals, double *M, double *f, double *qdd, double *lambda,
                       double *R) {
     QD_ARGS_CTX(ctx, ctx && e && (nvals == 0 || syms) && (nvals == 0 || vals));
-    qd_status st = qd__eom_compile(ctx, e);
+    qd_status st = qd__mech_eom_compile(ctx, e);
     if (st != QD_OK)
         return st;
     qd__eom_num *num = e->priv;

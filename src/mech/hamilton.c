@@ -81,9 +81,9 @@ static qd_status row(qd_ctx *ctx, const qd_eom *e, const qd_ham *h, size_t j, co
 static qd_status nonquadratic(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char *stmt) {
     if (!qd__ctx_recover(ctx))
         return QD_ERR_NOMEM;
-    qd_status st = qd__legendre_singular(ctx, h->pdef, e->n, e->q, e->qd, stmt);
+    qd_status st = qd__mech_legendre_singular(ctx, h->pdef, e->n, e->q, e->qd, stmt);
     if (st == QD_OK)
-        st = qd__legendre_family(ctx, e->L, e->n, e->qd, h->p, h->vel, &h->H);
+        st = qd__mech_legendre_family(ctx, e->L, e->n, e->qd, h->p, h->vel, &h->H);
     if (st != QD_ERR_NONLINEAR)
         return st;
     h->H = NULL;
@@ -107,7 +107,7 @@ static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char 
         return nonquadratic(ctx, e, h, stmt);
     }
     if (st == QD_OK)
-        st = qd__gauss_solve(ctx, n, A, h->vel, &bad);
+        st = qd__mech_gauss_solve(ctx, n, A, h->vel, &bad);
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "the mass matrix is singular: the momenta do not determine the "
                               "velocities");
@@ -191,7 +191,7 @@ qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
             return NULL;
         }
         h->H_given = true;
-        if (qd__ham_from_H(ctx, m, h) != QD_OK) {
+        if (qd__mech_ham_from_H(ctx, m, h) != QD_OK) {
             qd_ham_free(h);
             return NULL;
         }

@@ -191,7 +191,7 @@ static const char *energy_reason(qd_ctx *ctx, const qd__intsys *s, bool equal) {
                "coordinates): h = T2 - T0 + V + U0 while E = T2 + T1 + T0 + V + U0";
     if (s->U) {
         qd__vsum v;
-        qd_status st = qd__by_velocity(ctx, s->U, s->n, s->e->qd, &v);
+        qd_status st = qd__mech_by_velocity(ctx, s->U, s->n, s->e->qd, &v);
         if (st != QD_OK || v.top > 1) {
             if (st != QD_OK)
                 qd__ctx_recover(ctx);
@@ -235,7 +235,7 @@ static qd_status jacobi(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
         return qd_ctx_status(ctx);
     J->explicit_t = qd_has(s->L, t);
     const qd_expr *X = qd_sub(ctx, qd_dt(ctx, J->h), manifold_term(ctx, s)), *shown;
-    qd_status st = qd__int_zero(ctx, s, X, &shown, &J->conserved, &J->numeric);
+    qd_status st = qd__mech_int_zero(ctx, s, X, &shown, &J->conserved, &J->numeric);
     if (st != QD_OK)
         return st;
     if (!J->conserved)
@@ -247,7 +247,7 @@ static qd_status jacobi(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
         return qd_ctx_status(ctx);
     J->h_minus_E = qd_simplify(ctx, qd_sub(ctx, J->h, J->energy));
     bool eq, num;
-    st = qd__int_identically_zero(ctx, s, J->h_minus_E, &eq, &num);
+    st = qd__mech_int_identically_zero(ctx, s, J->h_minus_E, &eq, &num);
     if (st != QD_OK)
         return st;
     J->equals_energy = eq;
@@ -272,8 +272,8 @@ static qd_status balance(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
     bool num;
     qd_status st = QD_OK;
     if (s->D) {
-        st = qd__int_identically_zero(ctx, s, qd_sub(ctx, rate, qd_mul(ctx, qd_int(ctx, 2), s->D)),
-                                      &B->D_quadratic, &num);
+        st = qd__mech_int_identically_zero(
+            ctx, s, qd_sub(ctx, rate, qd_mul(ctx, qd_int(ctx, 2), s->D)), &B->D_quadratic, &num);
         if (B->D_quadratic)
             rate = qd_mul(ctx, qd_int(ctx, 2), s->D);
     }
@@ -297,9 +297,9 @@ static qd_status balance(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
     if (!B->expected)
         return qd_ctx_status(ctx);
     const qd_expr *dh = qd_sub(ctx, qd_dt(ctx, I->jacobi.h), manifold_term(ctx, s));
-    st = qd__int_zero(ctx, s, dh, &B->dhdt, &num, &num);
+    st = qd__mech_int_zero(ctx, s, dh, &B->dhdt, &num, &num);
     if (st == QD_OK)
-        st = qd__int_zero(ctx, s, qd_sub(ctx, dh, B->expected), &B->remainder, &B->verified,
+        st = qd__mech_int_zero(ctx, s, qd_sub(ctx, dh, B->expected), &B->remainder, &B->verified,
                           &B->numeric);
     /* Equal along the motion: the short form is the one to show. */
     if (st == QD_OK && B->verified && B->numeric) {
@@ -346,7 +346,7 @@ qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *name, con
                                       "without accelerations");
         return QD_ERR_ARG;
     }
-    return qd__int_zero(ctx, s, qd_dt(ctx, out->expr), &out->remainder, &out->conserved,
+    return qd__mech_int_zero(ctx, s, qd_dt(ctx, out->expr), &out->remainder, &out->conserved,
                         &out->numeric);
 }
 
@@ -393,7 +393,7 @@ qd_integrals *qd_integrals_derive(qd_ctx *ctx, const qd_model *m, qd_eom *e,
     if (st == QD_OK)
         st = balance(ctx, s, I);
     if (st == QD_OK && opts && opts->search && !e->ncon)
-        st = qd__int_search(ctx, I);
+        st = qd__mech_int_search(ctx, I);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "finding first integrals failed");

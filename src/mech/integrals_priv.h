@@ -23,15 +23,15 @@ typedef struct qd__intsys {
  * accelerations and multipliers substituted (when the eom was solved),
  * simplified; *numeric is set when the verdict rests on random states
  * only. */
-qd_status qd__int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
+qd_status qd__mech_int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
                        const qd_expr **shown, bool *zero, bool *numeric);
 
 /* Does X (no accelerations) vanish identically (simplify, then random
  * points; s, for the parameters' values, may be NULL)? */
-qd_status qd__int_identically_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
+qd_status qd__mech_int_identically_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
                                    bool *zero, bool *numeric);
 
 /* The translations and rotations by coordinate names (noether.c). */
-qd_status qd__int_search(qd_ctx *ctx, qd_integrals *I);
+qd_status qd__mech_int_search(qd_ctx *ctx, qd_integrals *I);
 
 #endif

@@ -186,7 +186,7 @@ static const qd_expr *solved(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X)
     return r;
 }
 
-qd_status qd__int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
+qd_status qd__mech_int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
                        const qd_expr **shown, bool *zero, bool *numeric) {
     *zero = *numeric = false;
     *shown = X ? qd_simplify(ctx, solved(ctx, s, X)) : NULL;
@@ -208,7 +208,7 @@ qd_status qd__int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
     return st;
 }
 
-qd_status qd__int_identically_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
+qd_status qd__mech_int_identically_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
                                    bool *zero, bool *numeric) {
     *zero = *numeric = false;
     const qd_expr *x = X ? qd_simplify(ctx, X) : NULL;

@@ -244,7 +244,7 @@ static size_t collect(const qd_expr *e, const qd_expr **found, size_t n, size_t 
     return n;
 }
 
-const qd_expr *qd__untrig(qd_ctx *ctx, const qd_expr *e) {
+const qd_expr *qd__mech_untrig(qd_ctx *ctx, const qd_expr *e) {
     const qd_expr *from[32], *to[32];
     if (!e)
         return NULL;
@@ -273,8 +273,8 @@ static size_t single_unknown(const qd_expr *e, size_t n, const qd_expr *const *x
     return which;
 }
 
-qd_status qd__isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq, const qd_expr *const *xs,
-                      const qd_expr **sol, size_t *failed) {
+qd_status qd__mech_isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
+                           const qd_expr *const *xs, const qd_expr **sol, size_t *failed) {
     const qd_expr **e = qd__malloc(ctx, (2 * n + 1) * sizeof *e);
     bool *done = qd__calloc(ctx, 2 * n + 1, sizeof *done), *used = done + n;
     if (!e || !done) {
@@ -305,7 +305,7 @@ qd_status qd__isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq, const qd_
         if (!used[i])
             *failed = i;
     for (size_t j = 0; j < n && solved == n; j++)
-        sol[j] = qd__untrig(ctx, sol[j]);
+        sol[j] = qd__mech_untrig(ctx, sol[j]);
     qd__free(e);
     qd__free(done);
     if (qd_ctx_status(ctx) != QD_OK)

@@ -44,7 +44,7 @@ static qd_eom *eom_alloc(qd_ctx *ctx, size_t n) {
 void qd_eom_free(qd_eom *e) {
     if (!e)
         return;
-    qd__eom_num_free(e->priv);
+    qd__mech_eom_num_free(e->priv);
     qd__free(e->priv);
     qd__free(e->q);
     qd__free(e->qd);
@@ -94,7 +94,7 @@ static void check_symmetric(qd_ctx *ctx, const qd_eom *e, size_t j, const qd_exp
  * common case), else as it is. */
 static const qd_expr *grouped(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
     qd__vsum v;
-    qd_status st = qd__by_velocity(ctx, x, e->n, e->qd, &v);
+    qd_status st = qd__mech_by_velocity(ctx, x, e->n, e->qd, &v);
     return st == QD_OK ? v.all : st == QD_ERR_NONLINEAR ? x : NULL;
 }
 
@@ -184,13 +184,13 @@ static const qd_expr *grouped_lagrangian(qd_ctx *ctx, const qd_eom *e, const qd_
     return Lg == s->L ? qd_simplify(ctx, s->L) : Lg;
 }
 
-const qd_expr *qd__sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
+const qd_expr *qd__mech_sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     qd__vsum vt = {NULL, {NULL, NULL, NULL}, 0, NULL};
     if (!s->L) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the model gives neither T nor L");
         return NULL;
     }
-    if (s->T && qd__split_kinetic(ctx, s->T, e->n, e->qd, &vt) != QD_OK)
+    if (s->T && qd__mech_split_kinetic(ctx, s->T, e->n, e->qd, &vt) != QD_OK)
         return NULL;
     if (s->T && vt.top <= 2) {
         e->T2 = vt.deg[2];
@@ -200,20 +200,20 @@ const qd_expr *qd__sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     return grouped_lagrangian(ctx, e, s, vt.all);
 }
 
-qd_eom *qd__eom_shell(qd_ctx *ctx, const qd__sys *s) {
+qd_eom *qd__mech_eom_shell(qd_ctx *ctx, const qd__sys *s) {
     qd_eom *e = eom_alloc(ctx, s->n);
     if (!e) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
         return NULL;
     }
-    if (set_coords(ctx, e, s) != QD_OK || qd__con_setup(ctx, e, s, false) != QD_OK) {
+    if (set_coords(ctx, e, s) != QD_OK || qd__mech_con_setup(ctx, e, s, false) != QD_OK) {
         qd_eom_free(e);
         return NULL;
     }
     return e;
 }
 
-qd_status qd__eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L, bool raw) {
+qd_status qd__mech_eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L, bool raw) {
     e->L = L;
     return derive_all(ctx, e, s, L, raw);
 }
@@ -222,13 +222,13 @@ static qd_status derive(qd_ctx *ctx, qd_eom *e, const qd__sys *s) {
     qd_status st = set_coords(ctx, e, s);
     if (st != QD_OK)
         return st;
-    e->L = qd__sys_lagrangian(ctx, e, s);
+    e->L = qd__mech_sys_lagrangian(ctx, e, s);
     if (!e->L)
         return qd_ctx_status(ctx);
     st = derive_all(ctx, e, s, e->L, false);
     if (st == QD_OK)
-        st = qd__con_setup(ctx, e, s, true);
-    if (st == QD_OK && (st = qd__check_singular(ctx, e, s->T)) == QD_ERR_SINGULAR)
+        st = qd__mech_con_setup(ctx, e, s, true);
+    if (st == QD_OK && (st = qd__mech_check_singular(ctx, e, s->T)) == QD_ERR_SINGULAR)
         qd_ctx_error_about(ctx, QD_SUBJECT_STATEMENT, 0, s->L_given ? "L" : "T",
                            QD_REASON_SINGULAR_MASS,
                            "every coordinate needs inertia: its velocity must appear "
@@ -240,9 +240,9 @@ static qd_status derive_sys(qd_ctx *ctx, qd__sys *s, const qd_model *m, const qd
                             qd_eom **out) {
     qd_elim *elim = NULL;
     size_t nelim = 0;
-    qd_status st = qd__sys_from_model(ctx, m, s);
+    qd_status st = qd__mech_sys_from_model(ctx, m, s);
     if (st == QD_OK && opts && opts->eliminate)
-        st = qd__eliminate(ctx, s, &elim, &nelim);
+        st = qd__mech_eliminate(ctx, s, &elim, &nelim);
     if (st == QD_OK && !(*out = eom_alloc(ctx, s->n))) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory deriving the equations of motion");
         st = QD_ERR_NOMEM;
@@ -263,7 +263,7 @@ qd_eom *qd_eom_derive_opts(qd_ctx *ctx, const qd_model *m, const qd_eom_opts *op
     qd__sys s;
     qd_eom *e = NULL;
     qd_status st = derive_sys(ctx, &s, m, opts, &e);
-    qd__sys_free(&s);
+    qd__mech_sys_free(&s);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "deriving the equations of motion failed");
@@ -277,7 +277,7 @@ qd_eom *qd_eom_derive(qd_ctx *ctx, const qd_model *m) { QD_ARGS(NULL, ctx && m);
 
 /* ---- the system a model describes ---------------------------------------- */
 
-void qd__sys_free(qd__sys *s) {
+void qd__mech_sys_free(qd__sys *s) {
     qd__free(s->q);
     qd__free(s->Q);
     qd__free(s->con_name);
@@ -285,7 +285,7 @@ void qd__sys_free(qd__sys *s) {
     *s = (qd__sys){0};
 }
 
-qd_status qd__sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s) {
+qd_status qd__mech_sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s) {
     size_t n = qd_model_ncoords(m), nc = qd_model_nconstraints(m);
     *s = (qd__sys){.n = n, .ncon = nc, .L_given = qd_model_lagrangian_given(m)};
     s->q = qd__malloc(ctx, (n + 1) * sizeof *s->q);

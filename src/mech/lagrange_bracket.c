@@ -41,7 +41,7 @@ void qd_lagrange_result_free(qd_lagrange_result *r) {
 }
 
 static const qd_expr *tidy(qd_ctx *ctx, const qd_expr *e) {
-    return qd__untrig(ctx, qd_simplify(ctx, qd_cancel(ctx, e)));
+    return qd__mech_untrig(ctx, qd_simplify(ctx, qd_cancel(ctx, e)));
 }
 
 qd_status qd_lagrange_brackets(qd_ctx *ctx, size_t n, const qd_expr *const *q,
@@ -77,7 +77,7 @@ qd_status qd_lagrange_brackets(qd_ctx *ctx, size_t n, const qd_expr *const *q,
             L[a * m + b] = L[b * m + a] ? qd_simplify(ctx, qd_neg(ctx, L[b * m + a])) : NULL;
     qd_status st = qd_ctx_status(ctx);
     if (st == QD_OK) {
-        st = qd__solve_cols(ctx, m, J, m, I, Ki, 0); /* Ki = J^-1 = dr/dR */
+        st = qd__mech_solve_cols(ctx, m, J, m, I, Ki, 0); /* Ki = J^-1 = dr/dR */
         if (st == QD_ERR_SINGULAR) {
             out->singular = true;
             st = QD_OK;
@@ -210,13 +210,13 @@ static qd_status solve_old(qd_ctx *ctx, size_t m, const qd_expr *const *eq,
         b[j] = st == QD_OK ? qd_neg(ctx, rest) : NULL;
     }
     if (st == QD_OK)
-        st = qd__solve_cols(ctx, m, A, 1, b, sol, 0);
+        st = qd__mech_solve_cols(ctx, m, A, 1, b, sol, 0);
     qd__free(A);
     if (st == QD_OK)
         return QD_OK;
     qd__ctx_recover(ctx);
     size_t failed;
-    return qd__isolate(ctx, m, eq, r, sol, &failed);
+    return qd__mech_isolate(ctx, m, eq, r, sol, &failed);
 }
 
 void qd_newham_free(qd_newham *k) {
@@ -284,7 +284,7 @@ qd_status qd_transformed_hamiltonian(qd_ctx *ctx, size_t n, const qd_expr *const
     }
     st = solve_old(ctx, m, eq, r, sol);
     if (st == QD_OK)
-        out->K_new = qd__untrig(ctx, tidy(ctx, qd_subs(ctx, out->K_old, m, r, sol)));
+        out->K_new = qd__mech_untrig(ctx, tidy(ctx, qd_subs(ctx, out->K_old, m, r, sol)));
     else
         qd__ctx_recover(ctx);
     qd__free(w);

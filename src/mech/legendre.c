@@ -24,7 +24,7 @@
 
 static const qd_expr **arr(qd_ctx *ctx, size_t n) { return qd__calloc(ctx, n ? n : 1, sizeof(const qd_expr *)); }
 
-qd_status qd__gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
+qd_status qd__mech_gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
                           size_t *bad) {
     size_t w = n + 1;
     for (size_t k = 0; k < n; k++) {
@@ -121,7 +121,7 @@ static qd_status row(qd_ctx *ctx, const hsys *s, const qd_expr *H, size_t j, con
  * sqrt(m^2 c^4 + c^2 p^2) + V gives L = -m c^2 sqrt(1 - q'^2/c^2) - V). */
 static qd_status inverse_family(qd_ctx *ctx, const hsys *s, const qd_expr *H, size_t j,
                                 const qd_expr **pdef, const qd_expr **L) {
-    qd_status st = qd__legendre_family(ctx, H, s->n, s->p, s->qd, pdef, L);
+    qd_status st = qd__mech_legendre_family(ctx, H, s->n, s->p, s->qd, pdef, L);
     if (st == QD_ERR_NONLINEAR)
         not_quadratic(ctx, s, j);
     return st;
@@ -141,7 +141,7 @@ static qd_status inverse(qd_ctx *ctx, const qd_model *m, const hsys *s, const qd
     for (; st == QD_OK && j < n; j++)
         st = row(ctx, s, H, j, A + j * (n + 1));
     if (st == QD_OK)
-        st = qd__gauss_solve(ctx, n, A, pdef, &bad);
+        st = qd__mech_gauss_solve(ctx, n, A, pdef, &bad);
     else if (st == QD_ERR_NONLINEAR) {
         qd__free(A);
         return inverse_family(ctx, s, H, j - 1, pdef, L);
@@ -218,7 +218,7 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const hsys *s, qd_ham
     return QD_OK;
 }
 
-qd_status qd__ham_from_H(qd_ctx *ctx, const qd_model *m, qd_ham *h) {
+qd_status qd__mech_ham_from_H(qd_ctx *ctx, const qd_model *m, qd_ham *h) {
     if (qd_model_nconstraints(m)) {
         qd_ctx_error(ctx, QD_ERR_ARG,
                      "Hamilton's equations with constraints are not supported yet");

@@ -12,30 +12,27 @@
  * pivots that simplify to nonzero, each x simplified.  QD_ERR_SINGULAR with
  * *bad the column with no pivot and NO message set (the caller knows what
  * the matrix means); other failures are the context's. */
-qd_status qd__gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
+qd_status qd__mech_gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
                           size_t *bad);
 
 /* qd_ham_derive for a model given by H: h allocated for n coordinates. */
-qd_status qd__ham_from_H(qd_ctx *ctx, const qd_model *m, qd_ham *h);
+qd_status qd__mech_ham_from_H(qd_ctx *ctx, const qd_model *m, qd_ham *h);
 
 /* Velocities q'(q, p, t) for an L that is not quadratic in them
  * (legendre_family.c): L = F(q'^T G q') + a.q' + L0 with a closed-form
  * inverse fills vel and H = sum p q' - L; QD_ERR_NONLINEAR (no message) when
  * L is not of that form or g(s) = P has no closed form here.  Read the other
  * way (H for L, p for qd, qd for p) it is the inverse transform: p(q') and L. */
-qd_status qd__legendre_family(qd_ctx *ctx, const qd_expr *L, size_t n, const qd_expr *const *qd,
-                              const qd_expr *const *p, const qd_expr **vel, const qd_expr **H);
+qd_status qd__mech_legendre_family(qd_ctx *ctx, const qd_expr *L, size_t n,
+                                   const qd_expr *const *qd, const qd_expr *const *p,
+                                   const qd_expr **vel, const qd_expr **H);
 
 /* QD_ERR_SINGULAR, with the message naming the coordinate, when the Hessian
  * of L (stmt names its statement) in the velocities is singular for a reason
  * it can see: L linear in a velocity, or homogeneous of degree 1 beyond its
  * linear terms; QD_OK when it sees none. */
-qd_status qd__legendre_singular(qd_ctx *ctx, const qd_expr *const *pdef, size_t n,
+qd_status qd__mech_legendre_singular(qd_ctx *ctx, const qd_expr *const *pdef, size_t n,
                                 const qd_expr *const *q, const qd_expr *const *qd,
                                 const char *stmt);
-
-/* QD_ERR_NONLINEAR, with a message saying what (a sentence subject: "the
- * Hamilton-Jacobi equation") needs, when h is implicit (legendre_newton.c). */
-qd_status qd__ham_closed(qd_ctx *ctx, const qd_ham *h, const char *what);
 
 #endif

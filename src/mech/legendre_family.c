@@ -87,7 +87,7 @@ static qd_status metric(qd_ctx *ctx, family *f) {
             memcpy(A + i * (n + 1), f->G + i * n, n * sizeof *A);
             A[i * (n + 1) + n] = qd_int(ctx, i == c);
         }
-        st = qd__gauss_solve(ctx, n, A, x, &bad);
+        st = qd__mech_gauss_solve(ctx, n, A, x, &bad);
         for (size_t i = 0; st == QD_OK && i < n; i++)
             f->Gi[i * n + c] = x[i];
     }
@@ -324,8 +324,9 @@ static qd_status not_family(qd_ctx *ctx, qd_status st) {
     return qd__ctx_recover(ctx) ? QD_ERR_NONLINEAR : QD_ERR_NOMEM;
 }
 
-qd_status qd__legendre_family(qd_ctx *ctx, const qd_expr *L, size_t n, const qd_expr *const *qd,
-                              const qd_expr *const *p, const qd_expr **vel, const qd_expr **H) {
+qd_status qd__mech_legendre_family(qd_ctx *ctx, const qd_expr *L, size_t n,
+                                   const qd_expr *const *qd, const qd_expr *const *p,
+                                   const qd_expr **vel, const qd_expr **H) {
     family f = {0};
     qd_status st = family_init(ctx, n, qd, &f);
     if (st == QD_OK)
@@ -365,7 +366,7 @@ static bool homogeneous_1(qd_ctx *ctx, const qd_expr *const *pdef, size_t n,
     return true;
 }
 
-qd_status qd__legendre_singular(qd_ctx *ctx, const qd_expr *const *pdef, size_t n,
+qd_status qd__mech_legendre_singular(qd_ctx *ctx, const qd_expr *const *pdef, size_t n,
                                 const qd_expr *const *q, const qd_expr *const *qd,
                                 const char *stmt) {
     char hint[512];
@@ -427,7 +428,8 @@ static qd_status regular(qd_ctx *ctx, const qd_model *m, const qd_expr **q, cons
     }
     if (quadratic(ctx, pdef, n, qd, coeffs))
         return qd_ctx_status(ctx);
-    return qd__legendre_singular(ctx, pdef, n, q, qd, qd_model_lagrangian_given(m) ? "L" : "T");
+    return qd__mech_legendre_singular(ctx, pdef, n, q, qd,
+                                      qd_model_lagrangian_given(m) ? "L" : "T");
 }
 
 qd_status qd_ham_regular(qd_ctx *ctx, const qd_model *m) {

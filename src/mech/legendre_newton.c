@@ -206,8 +206,9 @@ qd_status qd_ham_velocities_at(qd_ctx *ctx, const qd_ham *h, size_t nsyms,
     return st;
 }
 
-qd_status qd__ham_closed(qd_ctx *ctx, const qd_ham *h, const char *what) {
-    if (!h || !h->implicit)
+qd_status qd_ham_require_closed(qd_ctx *ctx, const qd_ham *h, const char *what) {
+    QD_ARGS_CTX(ctx, ctx && h && what);
+    if (!h->implicit)
         return QD_OK;
     qd_ctx_error(ctx, QD_ERR_NONLINEAR, "%s needs H in closed form, but L is not quadratic in "
                  "the velocities and p = dL/dq' has no closed-form solution for q' here (H is "

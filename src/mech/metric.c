@@ -53,7 +53,7 @@ static qd_status metric_entries(qd_ctx *ctx, qd_metric *g, const qd_model *m) {
     g->source = T ? T : qd_model_lagrangian(m);
     g->from_L = !T;
     qd__vsum v;
-    qd_status st = qd__split_kinetic(ctx, g->source, n, g->qd, &v);
+    qd_status st = qd__mech_split_kinetic(ctx, g->source, n, g->qd, &v);
     if (st != QD_OK)
         return st;
     if (v.top > 2) {
@@ -84,7 +84,7 @@ static qd_status conjugate(qd_ctx *ctx, qd_metric *g) {
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n * n; i++)
         I[i] = qd_int(ctx, i / n == i % n);
-    g->det = qd__det(ctx, n, g->g);
+    g->det = qd__mech_det(ctx, n, g->g);
     if (g->det)
         g->det = qd_simplify(ctx, g->det);
     qd_status st = g->det ? QD_OK : qd_ctx_status(ctx);
@@ -94,7 +94,7 @@ static qd_status conjugate(qd_ctx *ctx, qd_metric *g) {
         st = QD_ERR_SINGULAR;
     }
     if (st == QD_OK)
-        st = qd__solve_cols(ctx, n, g->g, n, I, g->ginv, 0);
+        st = qd__mech_solve_cols(ctx, n, g->g, n, I, g->ginv, 0);
     if (st == QD_ERR_SINGULAR && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, "the metric is singular");
     qd__free(I);
@@ -233,12 +233,12 @@ static qd_status chart(qd_ctx *ctx, qd_metric *g) {
     if (st == QD_OK)
         st = all_set(ctx, n * n, g->e);
     if (st == QD_OK && r == n) {
-        g->jac_det = qd__det(ctx, n, g->jac);
+        g->jac_det = qd__mech_det(ctx, n, g->jac);
         g->jac_det = g->jac_det ? qd_simplify(ctx, g->jac_det) : NULL;
         st = g->jac_det ? QD_OK : qd_ctx_status(ctx);
     }
     if (st == QD_OK) {
-        g->e_det = qd__det(ctx, n, g->e);
+        g->e_det = qd__mech_det(ctx, n, g->e);
         g->e_det = g->e_det ? qd_simplify(ctx, g->e_det) : NULL;
         st = g->e_det ? QD_OK : qd_ctx_status(ctx);
     }
@@ -506,7 +506,7 @@ qd_status qd_metric_force(qd_ctx *ctx, const qd_metric *g, const qd_expr *const 
     }
     for (size_t i = 0; i < n * n; i++)
         I[i] = qd_int(ctx, i / n == i % n);
-    st = g->e ? qd__solve_cols(ctx, n, g->e, n, I, einv, 0) : QD_OK;
+    st = g->e ? qd__mech_solve_cols(ctx, n, g->e, n, I, einv, 0) : QD_OK;
     if (st == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "the positions' metric e_ij is singular: the particles' "
                      "positions do not determine the coordinates");

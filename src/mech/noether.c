@@ -68,7 +68,8 @@ static const qd_expr *gauge(qd_ctx *ctx, const qd__intsys *s, const qd_expr *dL)
         return NULL;
     F = qd_simplify(ctx, F);
     bool z, num;
-    if (!F || qd__int_identically_zero(ctx, s, qd_sub(ctx, qd_dt(ctx, F), dL), &z, &num) != QD_OK ||
+    if (!F ||
+        qd__mech_int_identically_zero(ctx, s, qd_sub(ctx, qd_dt(ctx, F), dL), &z, &num) != QD_OK ||
         !z)
         return NULL;
     return F;
@@ -125,7 +126,7 @@ qd_status qd_integrals_noether(qd_ctx *ctx, qd_integrals *I, const char *name,
     if (!out->dL || !out->work)
         return qd_ctx_status(ctx);
     bool num = false;
-    st = qd__int_identically_zero(ctx, s, out->dL, &out->invariant, &num);
+    st = qd__mech_int_identically_zero(ctx, s, out->dL, &out->invariant, &num);
     if (st != QD_OK)
         return st;
     out->numeric = num;
@@ -136,7 +137,8 @@ qd_status qd_integrals_noether(qd_ctx *ctx, qd_integrals *I, const char *name,
     out->integral = qd_simplify(ctx, out->F ? qd_sub(ctx, Ix, out->F) : Ix);
     if (!out->integral)
         return qd_ctx_status(ctx);
-    st = qd__int_zero(ctx, s, qd_dt(ctx, out->integral), &out->remainder, &out->conserved, &num);
+    st = qd__mech_int_zero(ctx, s, qd_dt(ctx, out->integral), &out->remainder, &out->conserved,
+                           &num);
     out->numeric = out->numeric || num;
     return st;
 }
@@ -208,7 +210,7 @@ static qd_status rotation(qd_ctx *ctx, qd_integrals *I, char a, char b, const ch
     return any ? try_field(ctx, I, name, xi) : QD_OK;
 }
 
-qd_status qd__int_search(qd_ctx *ctx, qd_integrals *I) {
+qd_status qd__mech_int_search(qd_ctx *ctx, qd_integrals *I) {
     qd__intsys *s = I->priv;
     const qd_expr **xi = qd__calloc(ctx, s->n ? s->n : 1, sizeof *xi);
     I->found = qd__calloc(ctx, 6, sizeof *I->found);

@@ -185,7 +185,7 @@ static qd_status ignored_family(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < r->nign; i++)
         cd[i] = e->qd[r->ign_index[i]];
-    qd_status st = qd__legendre_family(ctx, e->L, r->nign, cd, r->beta, r->ignvel, R);
+    qd_status st = qd__mech_legendre_family(ctx, e->L, r->nign, cd, r->beta, r->ignvel, R);
     qd__free(cd);
     if (st == QD_ERR_NONLINEAR && implicit_ok)
         return keep_implicit(ctx, e, r);
@@ -216,7 +216,8 @@ static qd_status ignored_velocities(qd_ctx *ctx, const qd_eom *e, qd_routh *r, c
     size_t bad;
     if (st == QD_ERR_NONLINEAR)
         st = ignored_family(ctx, e, r, R, implicit_ok);
-    else if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, r->ignvel, &bad)) == QD_ERR_SINGULAR)
+    else if (st == QD_OK &&
+             (st = qd__mech_gauss_solve(ctx, ni, A, r->ignvel, &bad)) == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "the momenta of the ignored coordinates do not determine their "
                               "velocities (no pivot for %s')", qd_expr_name(r->ign[bad]));
     qd__free(A);
@@ -287,7 +288,7 @@ static qd_status routhian(qd_ctx *ctx, const qd_eom *e, qd_routh *r, const qd_ex
     if (!s)
         return qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
     qd__vsum v;
-    qd_status st = qd__by_velocity(ctx, s, r->nkeep, r->keepd, &v);
+    qd_status st = qd__mech_by_velocity(ctx, s, r->nkeep, r->keepd, &v);
     if (Rfam && (st == QD_ERR_NONLINEAR || (st == QD_OK && v.top > 2)))
         return by_value(ctx, r, s);
     if (st == QD_OK && v.top > 2)
@@ -353,7 +354,7 @@ static qd_status ignored_accelerations(qd_ctx *ctx, const qd_eom *e, const qd_ro
         if (st == QD_OK && !(A[i * w + ni] = qd_neg(ctx, rest)))
             st = qd_ctx_status(ctx);
     }
-    if (st == QD_OK && (st = qd__gauss_solve(ctx, ni, A, acc, &bad)) == QD_ERR_SINGULAR)
+    if (st == QD_OK && (st = qd__mech_gauss_solve(ctx, ni, A, acc, &bad)) == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "d^2L/dc'dc' is singular in the ignored velocities: dp/dt = 0 "
                               "does not give %s''", qd_expr_name(r->ign[bad]));
     qd__free(A);

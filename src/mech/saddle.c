@@ -25,7 +25,8 @@
 
 #define SOLVE_TOL 1e-12
 
-bool qd__con_deficient(qd_ctx *ctx, size_t n, size_t m, const double *A, double tol, double *mu) {
+bool qd__mech_con_deficient(qd_ctx *ctx, size_t n, size_t m, const double *A, double tol,
+                            double *mu) {
     /* A^T (n x m) padded with zeros to a square: padded columns come last,
      * so the first column without a pivot is a genuine one when any is. */
     size_t s = n > m ? n : m;
@@ -51,7 +52,7 @@ bool qd__con_deficient(qd_ctx *ctx, size_t n, size_t m, const double *A, double 
     return deficient;
 }
 
-qd_status qd__con_report(qd_ctx *ctx, const qd_eom *e, const double *mu, bool inconsistent,
+qd_status qd__mech_con_report(qd_ctx *ctx, const qd_eom *e, const double *mu, bool inconsistent,
                          const char *where) {
     qd_buf names = QD_BUF_WITH(qd__ctx_allocator(ctx));
     size_t count = 0, last = 0;
@@ -111,8 +112,8 @@ static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
-    if (qd__con_deficient(ctx, e->n, m, out + qd__out_A(e), SOLVE_TOL * 1e3, mu))
-        qd__con_report(ctx, e, mu, combination_nonzero(m, mu, out + qd__out_b(e)),
+    if (qd__mech_con_deficient(ctx, e->n, m, out + qd__out_A(e), SOLVE_TOL * 1e3, mu))
+        qd__mech_con_report(ctx, e, mu, combination_nonzero(m, mu, out + qd__out_b(e)),
                        " at this state");
     else if (qd_ctx_status(ctx) == QD_ERR_NOMEM) /* no verdict: its scratch ran out */
         st = QD_ERR_NOMEM;
@@ -124,7 +125,7 @@ static qd_status singular(qd_ctx *ctx, const qd_eom *e, const double *out) {
     return st;
 }
 
-qd_status qd__saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, double *K,
+qd_status qd__mech_saddle_solve(qd_ctx *ctx, const qd_eom *e, const double *out, double *K,
                            double *x, double *lambda, double *R) {
     size_t n = e->n, m = e->ncon, s = n + m;
     double *rhs = K + s * s;

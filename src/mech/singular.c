@@ -112,7 +112,7 @@ static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *ou
     if (!mu)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
-    if (qd__con_deficient(ctx, e->n, m, out + qd__out_A(e), RANK_TOL, mu)) {
+    if (qd__mech_con_deficient(ctx, e->n, m, out + qd__out_A(e), RANK_TOL, mu)) {
         /* the constraints themselves (not their derivatives) decide
          * consistency: x = 1 and x = 2 have the same rows A */
         const double *g = out + qd__out_g(e);
@@ -121,7 +121,7 @@ static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *ou
             s += mu[k] * g[k];
             top = fmax(top, fabs(g[k]));
         }
-        st = qd__con_report(ctx, e, mu, fabs(s) > 1e-9 * (1 + top), "");
+        st = qd__mech_con_report(ctx, e, mu, fabs(s) > 1e-9 * (1 + top), "");
     } else if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
         st = QD_ERR_NOMEM; /* no verdict on A: its scratch ran out */
     }
@@ -172,7 +172,7 @@ static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, q
 static qd_status symbolic_check(qd_ctx *ctx, const qd_eom *e) {
     if (e->n > 4)
         return QD_OK;
-    const qd_expr *det = qd_simplify(ctx, qd__det(ctx, e->n, e->M));
+    const qd_expr *det = qd_simplify(ctx, qd__mech_det(ctx, e->n, e->M));
     if (!det)
         return qd_ctx_status(ctx);
     if (!qd_is_zero(det))
@@ -183,7 +183,7 @@ static qd_status symbolic_check(qd_ctx *ctx, const qd_eom *e) {
 
 static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick) {
     qd__eom_num *num = e->priv;
-    if (qd__eom_compile(ctx, e) == QD_OK)
+    if (qd__mech_eom_compile(ctx, e) == QD_OK)
         return numeric_check(ctx, e, T, num->prog->prog, num->prog->nin, num->prog->nout, pick);
     if (!qd__ctx_recover(ctx)) /* out of memory is no reason to check otherwise */
         return QD_ERR_NOMEM;
@@ -203,7 +203,7 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
     return st;
 }
 
-qd_status qd__check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T) {
+qd_status qd__mech_check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T) {
     bool *pick = qd__calloc(ctx, e->n ? e->n : 1, sizeof *pick);
     if (!pick)
         return QD_ERR_NOMEM;

@@ -121,7 +121,7 @@ static qd_status bareiss(elim *el) {
     return QD_OK;
 }
 
-const qd_expr *qd__det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
+const qd_expr *qd__mech_det(qd_ctx *ctx, size_t n, const qd_expr *const *M) {
     const qd_expr **A = qd__malloc(ctx, (n ? n * n : 1) * sizeof *A);
     if (!A)
         return NULL;
@@ -264,7 +264,7 @@ qd_status qd_eom_solve(qd_ctx *ctx, qd_eom *e, size_t max_ops) {
     return QD_OK;
 }
 
-qd_status qd__solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
+qd_status qd__mech_solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
                          const qd_expr *const *B, const qd_expr **X, size_t max_ops) {
     if (!n)
         return QD_OK;

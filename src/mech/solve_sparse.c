@@ -6,7 +6,7 @@
  * A row with one unknown left gives that unknown at once (forward); an
  * unknown left in one row only is given by that row once the others are
  * known (backward, in reverse order).  What neither reaches, the core, is
- * solved by qd__solve_cols' fraction-free elimination.  Bareiss on the whole
+ * solved by qd__mech_solve_cols' fraction-free elimination.  Bareiss on the whole
  * system would carry every row's terms through every pivot and leave the
  * determinant in each entry to cancel at the end: on the rolling disk the
  * map is triangular and the core empty, on the bicycle the core is 3 of 6.
@@ -135,7 +135,7 @@ static qd_status core(peel *p, size_t max_ops) {
             for (size_t c = 0; c < nc; c++)
                 SB[a * nc + c] = p->R[rows[a] * nc + c];
         }
-        st = qd__solve_cols(ctx, k, S, nc, SB, SX, max_ops);
+        st = qd__mech_solve_cols(ctx, k, S, nc, SB, SX, max_ops);
         for (size_t b = 0; st == QD_OK && b < k; b++)
             for (size_t c = 0; c < nc; c++)
                 p->X[cols[b] * nc + c] = SX[b * nc + c];
@@ -164,7 +164,7 @@ static qd_status backward(peel *p, const qd_expr *const *B) {
     return QD_OK;
 }
 
-qd_status qd__solve_sparse(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
+qd_status qd__mech_solve_sparse(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
                            const qd_expr *const *B, const qd_expr **X, size_t max_ops,
                            qd__tidy_fn tidy, void *arg) {
     if (!n)

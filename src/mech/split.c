@@ -94,17 +94,17 @@ static size_t max_factors(const qd_expr *x, size_t nt) {
 
 /* Number the distinct monomials of terms[0..nt). */
 static size_t number_buckets(qd_ctx *ctx, vterm *terms, size_t nt, bool *ok) {
-    qd_ptrmap ids = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap ids = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     size_t nb = 0;
     for (size_t i = 0; *ok && i < nt; i++) {
-        size_t id = (size_t)(uintptr_t)qd_ptrmap_get(&ids, terms[i].mono);
+        size_t id = (size_t)(uintptr_t)qd__ptrmap_get(&ids, terms[i].mono);
         if (!id) {
             id = ++nb;
-            *ok = qd_ptrmap_put(&ids, terms[i].mono, (void *)(uintptr_t)id);
+            *ok = qd__ptrmap_put(&ids, terms[i].mono, (void *)(uintptr_t)id);
         }
         terms[i].bucket = id - 1;
     }
-    qd_ptrmap_free(&ids);
+    qd__ptrmap_free(&ids);
     if (!*ok) /* the map cannot say so itself */
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
     return nb;
@@ -176,7 +176,7 @@ static qd_status sort_terms(sorter *s, const qd_expr *x, size_t nt, vterm *terms
     return QD_OK;
 }
 
-qd_status qd__by_velocity(qd_ctx *ctx, const qd_expr *x, size_t n, const qd_expr *const *qd,
+qd_status qd__mech_by_velocity(qd_ctx *ctx, const qd_expr *x, size_t n, const qd_expr *const *qd,
                           qd__vsum *v) {
     *v = (qd__vsum){NULL, {NULL, NULL, NULL}, 0, NULL};
     x = qd_expand(ctx, x);
@@ -211,9 +211,9 @@ static void report_nonpoly(qd_ctx *ctx, const qd_expr *bad, size_t n, const qd_e
     qd_buf_free(&b);
 }
 
-qd_status qd__split_kinetic(qd_ctx *ctx, const qd_expr *T, size_t n, const qd_expr *const *qd,
+qd_status qd__mech_split_kinetic(qd_ctx *ctx, const qd_expr *T, size_t n, const qd_expr *const *qd,
                             qd__vsum *v) {
-    qd_status st = qd__by_velocity(ctx, T, n, qd, v);
+    qd_status st = qd__mech_by_velocity(ctx, T, n, qd, v);
     if (st == QD_ERR_NONLINEAR)
         report_nonpoly(ctx, v->bad, n, qd);
     return st;

@@ -132,7 +132,7 @@ static const char *const clauses[] = {"mass", "inertia", "at", "orientation"};
 
 static int clause_index(const parser *p) {
     for (int i = 0; i < NCLAUSES; i++)
-        if (qd__lex_is(&p->lx, clauses[i]))
+        if (qd__mdl_lex_is(&p->lx, clauses[i]))
             return i;
     return -1;
 }
@@ -149,7 +149,7 @@ static bool unknown_clause(parser *p) {
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     return qd__mdl_perr_tok(p, near ? hint : body_usage,
                     "expected 'mass', 'inertia', 'at' or 'orientation', found %s",
-                    p->lx.tok.kind == TK_IDENT ? word : qd__lex_tk_name(p->lx.tok.kind));
+                    p->lx.tok.kind == TK_IDENT ? word : qd__mdl_lex_tk_name(p->lx.tok.kind));
 }
 
 /* The clauses in any order, each once; v[k] is clause k's value. */
@@ -161,7 +161,7 @@ static bool body_clauses(parser *p, value v[NCLAUSES], bool seen[NCLAUSES]) {
         if (seen[k])
             return qd__mdl_perr_tok(p, body_usage, "'%s' is given twice", clauses[k]);
         seen[k] = true;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         bool ok = k == 0 ? qd__mdl_parse_expr(p, &v[k]) && qd__mdl_need_kind(p, &v[k], VK_SCALAR, "as a mass")
                 : k == 1 ? qd__mdl_parse_expr(p, &v[k])
                 : k == 2 ? qd__mdl_parse_vector(p, &v[k], "a position")
@@ -212,13 +212,14 @@ static bool body_build(parser *p, body *b, value v[NCLAUSES], bool has_R) {
 bool qd__mdl_stmt_body(parser *p) {
     if (!qd__mdl_no_hamiltonian_yet(p, "a body", p->lx.tok.off, p->lx.tok.len))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind != TK_IDENT)
-        return qd__mdl_perr_tok(p, body_usage, "expected a body name, found %s", qd__lex_tk_name(p->lx.tok.kind));
+        return qd__mdl_perr_tok(p, body_usage, "expected a body name, found %s",
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
     token at = p->lx.tok;
     if (!qd__mdl_fresh_name(p, "body"))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value v[NCLAUSES];
     bool seen[NCLAUSES] = {false};
     body b;
@@ -257,12 +258,13 @@ bool qd__mdl_stmt_body(parser *p) {
 const body *qd__mdl_expect_body(parser *p, const char *what) {
     const qd_model *m = p->m;
     if (p->lx.tok.kind != TK_IDENT) {
-        qd__mdl_perr_tok(p, body_usage, "%s needs a body's name, found %s", what, qd__lex_tk_name(p->lx.tok.kind));
+        qd__mdl_perr_tok(p, body_usage, "%s needs a body's name, found %s", what,
+                         qd__mdl_lex_tk_name(p->lx.tok.kind));
         return NULL;
     }
     const body *b = qd__mdl_find_body(m, p->lx.src + p->lx.tok.off, p->lx.tok.len);
     if (b) {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return b;
     }
     char word[64], hint[128];
@@ -289,7 +291,7 @@ bool qd__mdl_is_body_call(const char *name) {
 
 bool qd__mdl_body_call_ahead(const parser *p) {
     lexer lx = p->lx;
-    qd__lex_next(&lx);
+    qd__mdl_lex_next(&lx);
     return lx.tok.kind == TK_IDENT && qd__mdl_find_body(p->m, lx.src + lx.tok.off, lx.tok.len);
 }
 
@@ -298,7 +300,7 @@ static bool body_point(parser *p, const body *b, value *out) {
     if (p->lx.tok.kind != TK_COMMA)
         return qd__mdl_perr_tok(p, "write point(body, (x, y, z)) with (x, y, z) in body axes",
                         "point takes 2 arguments: a body and a point in body axes");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value a;
     if (!qd__mdl_parse_expr(p, &a) || !qd__mdl_need_kind(p, &a, VK_VECTOR, "as a point in body axes"))
         return false;
@@ -313,7 +315,7 @@ static bool body_point(parser *p, const body *b, value *out) {
  * point(NAME, (x, y, z)); the current token is the '('. */
 bool qd__mdl_body_call(parser *p, const char *name, size_t off, value *out) {
     size_t open = p->lx.tok.off;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     const body *b = qd__mdl_expect_body(p, name);
     if (!b)
         return false;
@@ -341,14 +343,14 @@ bool qd__mdl_body_call(parser *p, const char *name, size_t off, value *out) {
 
 /* torque G on NAME: Q_j += G . d(omega_space)/dq'_j */
 bool qd__mdl_stmt_torque(parser *p) {
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value G;
     if (!qd__mdl_parse_vector(p, &G, "a torque"))
         return false;
-    if (!qd__lex_is(&p->lx, "on"))
+    if (!qd__mdl_lex_is(&p->lx, "on"))
         return qd__mdl_perr_tok(p, "write: torque (Gx, Gy, Gz) on BODY", "expected 'on', found %s",
-                        qd__lex_tk_name(p->lx.tok.kind));
-    qd__lex_next(&p->lx);
+                        qd__mdl_lex_tk_name(p->lx.tok.kind));
+    qd__mdl_lex_next(&p->lx);
     const body *b = qd__mdl_expect_body(p, "torque");
     if (!b)
         return false;

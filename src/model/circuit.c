@@ -44,14 +44,14 @@ typedef struct element {
 
 /* The next token is the word; else an error showing the statement. */
 static bool expect_word(parser *p, const char *word, const char *usage) {
-    if (qd__lex_is(&p->lx, word)) {
-        qd__lex_next(&p->lx);
+    if (qd__mdl_lex_is(&p->lx, word)) {
+        qd__mdl_lex_next(&p->lx);
         return true;
     }
     char hint[128];
     snprintf(hint, sizeof hint, "write: %s", usage);
     return qd__mdl_perr_tok(p, hint, "expected '%s', found %s", word,
-                            qd__lex_tk_name(p->lx.tok.kind));
+                            qd__mdl_lex_tk_name(p->lx.tok.kind));
 }
 
 static bool is_coordinate(const parser *p, size_t off, size_t len) {
@@ -70,7 +70,7 @@ static bool lone_name_not_coordinate(parser *p) {
         qd__mdl_find_def(p->m, p->lx.src + at.off, at.len))
         return false;
     lexer save = p->lx;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     tk_kind next = p->lx.tok.kind;
     p->lx = save;
     if (next != TK_NEWLINE && next != TK_EOF && next != TK_COMMA)
@@ -199,7 +199,7 @@ static const qd_expr *add_to(qd_ctx *ctx, const qd_expr *slot, const qd_expr *te
 
 /* value on BRANCH, after the keyword */
 static bool parse_on(parser *p, const element *e, const qd_expr **val, branch *br) {
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value v;
     if (!parse_value(p, &v) || !check_value(p, e, v.c[0], v.off, v.len))
         return false;
@@ -220,8 +220,8 @@ static bool mutual(parser *p, const qd_expr *M, branch *b1, branch *b2) {
     if (p->lx.tok.kind != TK_COMMA)
         return qd__mdl_perr_tok(p, "write: inductance M between q1, q2",
                                 "expected ',' between the two branches, found %s",
-                                qd__lex_tk_name(p->lx.tok.kind));
-    qd__lex_next(&p->lx);
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
+    qd__mdl_lex_next(&p->lx);
     if (!parse_branch(p, b2))
         return false;
     /* M b' b' would be a self-inductance of 2M: say it as one */
@@ -256,14 +256,14 @@ bool qd__mdl_stmt_inductance(parser *p) {
     static const element mut = {"a mutual inductance", "inductance M between q1, q2", -1, false};
     branch b1 = {0}, b2 = {0};
     value v;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (!parse_value(p, &v))
         return false;
-    bool between = qd__lex_is(&p->lx, "between");
+    bool between = qd__mdl_lex_is(&p->lx, "between");
     const element *e = between ? &mut : &own;
     bool ok = check_value(p, e, v.c[0], v.off, v.len);
     if (ok && between) {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         ok = mutual(p, v.c[0], &b1, &b2);
     } else if (ok) {
         ok = self(p, v.c[0], &b1);

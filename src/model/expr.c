@@ -86,7 +86,7 @@ bool qd__mdl_kernel_ok(parser *p, const value *v) {
  * '(' instead. */
 static bool expect_closing(parser *p, size_t open, tk_kind close) {
     if (p->lx.tok.kind == close) {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return true;
     }
     const char *s = p->lx.src;
@@ -95,7 +95,7 @@ static bool expect_closing(parser *p, size_t open, tk_kind close) {
     char hint[160];
     char c = close == TK_RPAREN ? ')' : ']';
     snprintf(hint, sizeof hint, "a '%c' is missing: found %s on line %zu", c,
-             qd__lex_tk_name(p->lx.tok.kind), line);
+             qd__mdl_lex_tk_name(p->lx.tok.kind), line);
     return qd__mdl_perr(p, open, 1, hint, "unclosed '%c'", s[open]);
 }
 
@@ -285,10 +285,10 @@ static bool lookup_name(parser *p, size_t off, size_t n, value *out) {
 static bool parse_args(parser *p, value *args, size_t *nargs, size_t *end) {
     *nargs = 0;
     size_t open = p->lx.tok.off;
-    qd__lex_next(&p->lx); /* '(' */
+    qd__mdl_lex_next(&p->lx); /* '(' */
     if (p->lx.tok.kind == TK_RPAREN) {
         *end = p->lx.tok.off + p->lx.tok.len;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return true;
     }
     for (;;) {
@@ -297,7 +297,7 @@ static bool parse_args(parser *p, value *args, size_t *nargs, size_t *end) {
         if (!parse_sum(p, &args[(*nargs)++]))
             return false;
         if (p->lx.tok.kind == TK_COMMA) {
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
             continue;
         }
         *end = p->lx.tok.off + p->lx.tok.len;
@@ -410,7 +410,7 @@ static bool parse_call(parser *p, size_t off, size_t n, value *out) {
 /* '(' sum (',' sum){0,2} ')': a parenthesized scalar or a vector */
 static bool parse_paren(parser *p, value *out) {
     size_t off = p->lx.tok.off;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value c[3];
     size_t n = 0;
     for (;;) {
@@ -421,7 +421,7 @@ static bool parse_paren(parser *p, value *out) {
             break;
         if (n == 3)
             return qd__mdl_perr_tok(p, NULL, "a vector has at most three components");
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     }
     for (size_t i = 0; n > 1 && i < n; i++)
         if (!need_scalar(p, &c[i], "as a vector component"))
@@ -446,15 +446,16 @@ static bool parse_row(parser *p, const qd_expr **c) {
     size_t off = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LBRACK)
         return qd__mdl_perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
-                        "expected a row '[a, b, c]', found %s", qd__lex_tk_name(p->lx.tok.kind));
-    qd__lex_next(&p->lx);
+                                "expected a row '[a, b, c]', found %s",
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
+    qd__mdl_lex_next(&p->lx);
     for (int i = 0; i < 3; i++) {
         value v;
         if (i > 0 && p->lx.tok.kind != TK_COMMA)
             return qd__mdl_perr_tok(p, NULL, "a row of a matrix has three entries; found %s after %d",
-                            qd__lex_tk_name(p->lx.tok.kind), i);
+                            qd__mdl_lex_tk_name(p->lx.tok.kind), i);
         if (i > 0)
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
         if (!parse_sum(p, &v) || !need_scalar(p, &v, "as a matrix entry"))
             return false;
         c[i] = v.c[0];
@@ -467,15 +468,15 @@ static bool parse_row(parser *p, const qd_expr **c) {
 /* '[' row ',' row ',' row ']' */
 static bool parse_matrix(parser *p, value *out) {
     size_t off = p->lx.tok.off;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value v = {VK_MATRIX, {NULL}, off, 0};
     for (int i = 0; i < 3; i++) {
         if (i > 0 && p->lx.tok.kind != TK_COMMA)
             return qd__mdl_perr_tok(p, "write a matrix as [[a, b, c], [d, e, f], [g, h, i]]",
-                            "a matrix has three rows; found %s after %d", qd__lex_tk_name(p->lx.tok.kind),
-                            i);
+                                    "a matrix has three rows; found %s after %d",
+                                    qd__mdl_lex_tk_name(p->lx.tok.kind), i);
         if (i > 0)
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
         if (!parse_row(p, &v.c[3 * i]))
             return false;
     }
@@ -502,12 +503,12 @@ static bool parse_primary(parser *p, value *out) {
         const qd_expr *e = qd_rat_str(C(p), buf);
         if (!e)
             return qd__mdl_perr_tok(p, "write numbers as 12, 0.5, 3/4 or 1e-3", "'%s' is not a number", buf);
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         *out = scalar(e, t.off, t.len);
         return true;
     }
     case TK_IDENT:
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (p->lx.tok.kind == TK_LPAREN)
             return parse_call(p, t.off, t.len, out);
         return lookup_name(p, t.off, t.len, out);
@@ -516,7 +517,8 @@ static bool parse_primary(parser *p, value *out) {
     case TK_LBRACK:
         return parse_matrix(p, out);
     default:
-        return qd__mdl_perr_tok(p, NULL, "expected an expression, found %s", qd__lex_tk_name(t.kind));
+        return qd__mdl_perr_tok(p, NULL, "expected an expression, found %s",
+                                qd__mdl_lex_tk_name(t.kind));
     }
 }
 
@@ -537,12 +539,15 @@ static bool parse_postfix(parser *p, value *out) {
                                 "a time derivative of order above %d", MAX_PRIMES);
             dt_value(p, out);
             out->len = p->lx.tok.off + 1 - out->off;
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
             if (!qd__mdl_kernel_ok(p, out))
                 return false;
         } else if (p->lx.tok.kind == TK_DOT && !p->no_dot) {
-            qd__lex_next(&p->lx);
-            int k = qd__lex_is(&p->lx, "x") ? 0 : qd__lex_is(&p->lx, "y") ? 1 : qd__lex_is(&p->lx, "z") ? 2 : -1;
+            qd__mdl_lex_next(&p->lx);
+            int k = qd__mdl_lex_is(&p->lx, "x")   ? 0
+                    : qd__mdl_lex_is(&p->lx, "y") ? 1
+                    : qd__mdl_lex_is(&p->lx, "z") ? 2
+                                                  : -1;
             if (k < 0)
                 return qd__mdl_perr_tok(p, "components are .x, .y and .z", "expected a component name");
             if (out->kind != VK_VECTOR)
@@ -551,7 +556,7 @@ static bool parse_postfix(parser *p, value *out) {
                                                    : "R*(1, 0, 0) is the first column of R",
                             "a %s where a vector is needed", qd__mdl_vkind_name(out->kind));
             *out = scalar(out->c[k], out->off, p->lx.tok.off + 1 - out->off);
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
         } else {
             return true;
         }
@@ -564,7 +569,7 @@ static bool parse_power(parser *p, value *out) {
         return false;
     if (p->lx.tok.kind != TK_CARET)
         return true;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value e;
     if (!parse_factor(p, &e))
         return false;
@@ -600,7 +605,7 @@ static bool parse_signed(parser *p, value *out) {
         return parse_power(p, out);
     bool neg = p->lx.tok.kind == TK_MINUS;
     size_t off = p->lx.tok.off;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (!parse_factor(p, out))
         return false;
     if (neg)
@@ -647,7 +652,7 @@ static bool parse_product(parser *p, value *out) {
         fs[n++] = out->c[0];
     while (p->lx.tok.kind == TK_STAR || p->lx.tok.kind == TK_SLASH) {
         bool divide = p->lx.tok.kind == TK_SLASH;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         value b;
         if (!parse_factor(p, &b))
             return false;
@@ -685,7 +690,7 @@ static bool parse_sum(parser *p, value *out) {
     size_t off = p->lx.tok.off;
     if (p->lx.tok.kind == TK_MINUS || p->lx.tok.kind == TK_PLUS) {
         neg = p->lx.tok.kind == TK_MINUS;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     }
     if (!parse_product(p, out))
         return false;
@@ -695,7 +700,7 @@ static bool parse_sum(parser *p, value *out) {
     out->off = off;
     while (p->lx.tok.kind == TK_PLUS || p->lx.tok.kind == TK_MINUS) {
         bool minus = p->lx.tok.kind == TK_MINUS;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         value b;
         if (!parse_product(p, &b) || !add_values(p, out, &b, minus))
             return false;

@@ -36,9 +36,9 @@ static bool tok_copy(parser *p, char **out) {
 
 static bool expect(parser *p, tk_kind k, const char *hint) {
     if (p->lx.tok.kind != k)
-        return qd__mdl_perr_tok(p, hint, "expected %s, found %s", qd__lex_tk_name(k),
-                                qd__lex_tk_name(p->lx.tok.kind));
-    qd__lex_next(&p->lx);
+        return qd__mdl_perr_tok(p, hint, "expected %s, found %s", qd__mdl_lex_tk_name(k),
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
+    qd__mdl_lex_next(&p->lx);
     return true;
 }
 
@@ -69,7 +69,7 @@ static bool read_interval(parser *p, qd__field *f) {
     for (int k = 0; k < 2; k++) {
         if (p->lx.tok.kind != TK_DOT)
             return qd__mdl_perr_tok(p, usage, "expected '..' between the interval's ends");
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     }
     size_t off = p->lx.tok.off;
     if (!qd__mdl_parse_constant(p, &def, &f->ends[1], "the interval's upper end"))
@@ -97,39 +97,39 @@ bool qd__mdl_stmt_field(parser *p) {
         return qd__mdl_perr_tok(p, NULL, "out of memory");
     f->bc[0] = f->bc[1] = -1;
     m->field = f;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     token yt = p->lx.tok;
     if (yt.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, usage, "expected the field's name, found %s",
-                                qd__lex_tk_name(yt.kind));
+                                qd__mdl_lex_tk_name(yt.kind));
     if (!qd__mdl_fresh_name(p, "field") || !tok_copy(p, &f->name))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (!expect(p, TK_LPAREN, usage))
         return false;
     token xt = p->lx.tok;
     if (xt.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, usage, "expected the space variable, found %s",
-                                qd__lex_tk_name(xt.kind));
+                                qd__mdl_lex_tk_name(xt.kind));
     if (qd__mdl_name_is(p->lx.src, xt.off, xt.len, "t"))
         return qd__mdl_perr_tok(p, usage, "t is the time; the space variable comes first");
     if (!qd__mdl_fresh_name(p, "space variable") || !tok_copy(p, &f->space))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (!expect(p, TK_COMMA, usage))
         return false;
-    if (!qd__lex_is(&p->lx, "t"))
+    if (!qd__mdl_lex_is(&p->lx, "t"))
         return qd__mdl_perr_tok(p, usage, "the second variable of a field is the time t");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (!expect(p, TK_RPAREN, usage))
         return false;
-    if (!qd__lex_is(&p->lx, "on"))
+    if (!qd__mdl_lex_is(&p->lx, "on"))
         return qd__mdl_perr_tok(p, usage, "expected 'on' and the interval");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind != TK_IDENT ||
         !qd__mdl_name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, f->space))
         return qd__mdl_perr_tok(p, usage, "expected the space variable '%s'", f->space);
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (!expect(p, TK_EQ, usage) || !read_interval(p, f))
         return false;
     char name[2 * QD_MDL_NAME_MAX + 2];
@@ -154,8 +154,8 @@ bool qd__mdl_stmt_ldensity(parser *p) {
     size_t kw = p->lx.tok.off;
     if (f->density)
         return qd__mdl_perr_tok(p, "a field has one Lagrangian density", "Ldensity is given twice");
-    qd__lex_next(&p->lx);
-    qd__lex_next(&p->lx); /* '=' */
+    qd__mdl_lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx); /* '=' */
     size_t off = p->lx.tok.off;
     if (!qd__mdl_parse_scalar(p, &f->density, "a Lagrangian density"))
         return false;
@@ -179,7 +179,7 @@ static bool read_end(parser *p, qd__field *f) {
     if (p->lx.tok.kind != TK_IDENT ||
         !qd__mdl_name_is(p->lx.src, p->lx.tok.off, p->lx.tok.len, f->name))
         return qd__mdl_perr_tok(p, busage, "expected the field '%s' at an end", f->name);
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     size_t open = p->lx.tok.off;
     if (!expect(p, TK_LPAREN, busage))
         return false;
@@ -198,9 +198,9 @@ static bool read_end(parser *p, qd__field *f) {
                             "%g is not an end of the interval %g .. %g", v, a, b);
     if (f->bc[end] >= 0)
         return qd__mdl_perr(p, off, len, "give each end once", "this end's condition is given twice");
-    if (qd__lex_is(&p->lx, "free")) {
+    if (qd__mdl_lex_is(&p->lx, "free")) {
         f->bc[end] = QD_FIELD_FREE;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return true;
     }
     if (!expect(p, TK_EQ, busage))
@@ -223,13 +223,13 @@ bool qd__mdl_stmt_boundary(parser *p) {
     if (!f)
         return qd__mdl_perr_tok(p, "declare the field first: field y(x, t) on x = 0 .. l",
                                 "boundary conditions without a field");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     for (;;) {
         if (!read_end(p, f))
             return false;
         if (p->lx.tok.kind != TK_COMMA)
             break;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     }
     if (!qd__mdl_add_where(p->m, "boundary", kw, p->lx.tok.off - kw))
         return qd__mdl_perr_tok(p, NULL, "out of memory");
@@ -279,10 +279,10 @@ bool qd_field_declared(const char *text) {
     QD_ARGS(false, text);
     lexer lx;
     bool start = true;
-    for (qd__lex_init(&lx, text); lx.tok.kind != TK_EOF; qd__lex_next(&lx)) {
-        if (start && qd__lex_is(&lx, "field")) {
+    for (qd__mdl_lex_init(&lx, text); lx.tok.kind != TK_EOF; qd__mdl_lex_next(&lx)) {
+        if (start && qd__mdl_lex_is(&lx, "field")) {
             lexer look = lx;
-            qd__lex_next(&look);
+            qd__mdl_lex_next(&look);
             if (look.tok.kind == TK_IDENT)
                 return true;
         }
@@ -347,4 +347,4 @@ const qd_model *qd_field_model(const qd_field *f) {
 }
 
 /* For src/field: the symbols. */
-const qd__field *qd__field_data(const qd_field *f) { return f->m->field; }
+const qd__field *qd__mdl_field_data(const qd_field *f) { return f->m->field; }

@@ -23,7 +23,7 @@ static const char *const usage =
     "write: friction MU normal N, or friction static MU_S kinetic MU_K normal N";
 
 bool qd__mdl_friction_ahead(const parser *p) {
-    return p->lx.tok.kind == TK_IDENT && qd__lex_is(&p->lx, "friction");
+    return p->lx.tok.kind == TK_IDENT && qd__mdl_lex_is(&p->lx, "friction");
 }
 
 /* A coefficient: a constant of the parameters, not negative when read. */
@@ -62,11 +62,11 @@ static bool known_name(const parser *p, const char *name) {
 /* 'normal' (CONSTRAINT | EXPR): a lone name that is no name of an
  * expression is a constraint's, checked at the end of the file. */
 static bool parse_normal(parser *p, fclause *fc) {
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     token at = p->lx.tok;
     if (at.kind == TK_IDENT) {
         lexer ahead = p->lx;
-        qd__lex_next(&ahead);
+        qd__mdl_lex_next(&ahead);
         char name[QD_MDL_NAME_MAX];
         snprintf(name, sizeof name, "%.*s", (int)at.len, p->lx.src + at.off); /* at most 127 */
         bool alone = ahead.tok.kind == TK_NEWLINE || ahead.tok.kind == TK_EOF;
@@ -86,14 +86,14 @@ bool qd__mdl_friction_parse(parser *p, fclause *fc) {
     memset(fc, 0, sizeof *fc);
     fc->off = p->lx.tok.off;
     fc->len = p->lx.tok.len;
-    qd__lex_next(&p->lx);
-    if (qd__lex_is(&p->lx, "static")) {
-        qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
+    if (qd__mdl_lex_is(&p->lx, "static")) {
+        qd__mdl_lex_next(&p->lx);
         if (!parse_mu(p, &fc->mu_s, "a static friction coefficient"))
             return false;
-        if (!qd__lex_is(&p->lx, "kinetic"))
+        if (!qd__mdl_lex_is(&p->lx, "kinetic"))
             return qd__mdl_perr_tok(p, usage, "expected 'kinetic' after the static coefficient");
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (!parse_mu(p, &fc->mu_k, "a kinetic friction coefficient"))
             return false;
     } else {
@@ -101,7 +101,7 @@ bool qd__mdl_friction_parse(parser *p, fclause *fc) {
             return false;
         fc->mu_k = fc->mu_s;
     }
-    if (qd__lex_is(&p->lx, "normal"))
+    if (qd__mdl_lex_is(&p->lx, "normal"))
         return parse_normal(p, fc);
     return true;
 }

@@ -37,16 +37,16 @@ static bool take_name(parser *p, char *buf, size_t cap, token *at, const char *w
     *at = p->lx.tok; /* set on every path: the caller's token is never left unset */
     if (p->lx.tok.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, usage, "expected %s, found %s", what,
-                                qd__lex_tk_name(p->lx.tok.kind));
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
     snprintf(buf, cap, "%.*s", (int)(at->len < cap - 1 ? at->len : cap - 1), p->lx.src + at->off);
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return true;
 }
 
 static bool keyword(parser *p, const char *word) {
-    if (!qd__lex_is(&p->lx, word))
+    if (!qd__mdl_lex_is(&p->lx, word))
         return qd__mdl_perr_tok(p, usage, "expected '%s'", word);
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return true;
 }
 

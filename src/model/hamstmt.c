@@ -45,11 +45,11 @@ bool qd__mdl_stmt_momenta(parser *p) {
     token last = kw;
     bool ok = true;
     do {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         token at = p->lx.tok;
         if (at.kind != TK_IDENT) {
             ok = qd__mdl_perr_tok(p, "write: momenta p_q1, p_q2", "expected a momentum's name, found %s",
-                          qd__lex_tk_name(at.kind));
+                          qd__mdl_lex_tk_name(at.kind));
             break;
         }
         if (n == m->ncoords) {
@@ -74,7 +74,7 @@ bool qd__mdl_stmt_momenta(parser *p) {
         }
         n++;
         last = at;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     if (ok && n < m->ncoords) {
         char hint[256];
@@ -143,8 +143,8 @@ bool qd__mdl_stmt_hamiltonian(parser *p) {
         return qd__mdl_perr(p, at.off, at.len, m->ncoords ? hint : "declare the coordinates and momenta "
                     "first", "H is given before the momenta");
     }
-    qd__lex_next(&p->lx); /* '=' */
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx); /* '=' */
+    qd__mdl_lex_next(&p->lx);
     size_t off = p->lx.tok.off;
     p->momenta_ok = true;
     const qd_expr *H;

@@ -89,7 +89,7 @@ static bool velocity_free(parser *p, const value *v, const char *what) {
 bool qd__mdl_stmt_impulse(parser *p) {
     qd_model *m = p->m;
     size_t start = p->lx.tok.off;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value J;
     if (!qd__mdl_parse_vector(p, &J, "an impulse") || !velocity_free(p, &J, "an impulse"))
         return false;
@@ -99,10 +99,10 @@ bool qd__mdl_stmt_impulse(parser *p) {
     bool ok;
     size_t end;
     value at;
-    if (qd__lex_is(&p->lx, "on")) {
+    if (qd__mdl_lex_is(&p->lx, "on")) {
         /* a couple does the virtual work G . delta(theta), and the angular
          * velocity is linear in the velocities (body.c, torque) */
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         token bt = p->lx.tok;
         const body *b = qd__mdl_expect_body(p, "impulse");
         ok = b != NULL;
@@ -178,13 +178,13 @@ void qd__mdl_free_blows(blow *b, size_t from, size_t n) {
 static bool label(parser *p, const char *prefix, char *name, size_t cap, token *at) {
     lexer save = p->lx;
     *at = p->lx.tok;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (at->kind == TK_IDENT && p->lx.tok.kind == TK_COLON) {
         snprintf(name, cap, "%.*s", (int)(at->len < cap - 1 ? at->len : cap - 1), p->lx.src + at->off);
         if (qd__mdl_constraint_named(p->m, name))
             return qd__mdl_perr(p, at->off, at->len, "give each constraint its own name",
                                 "a constraint named '%s' is already given", name);
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return true;
     }
     p->lx = save;
@@ -236,9 +236,9 @@ static bool check_relation(parser *p, const qd_expr *x, size_t off, size_t len, 
  * [0, 1] at their values. */
 static bool restitution(parser *p, const qd_expr **E) {
     *E = qd_int(C(p), 0);
-    if (!qd__lex_is(&p->lx, "restitution"))
+    if (!qd__mdl_lex_is(&p->lx, "restitution"))
         return true;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     size_t off = p->lx.tok.off;
     if (!qd__mdl_parse_scalar(p, E, "a restitution coefficient"))
         return false;
@@ -278,7 +278,7 @@ static bool push_sudden(parser *p, sudden **list, size_t *n, const char *name, c
 static bool sudden_constraint(parser *p) {
     char name[QD_MDL_NAME_MAX];
     token at;
-    qd__lex_next(&p->lx); /* constraint */
+    qd__mdl_lex_next(&p->lx); /* constraint */
     if (!label(p, "k", name, sizeof name, &at))
         return false;
     size_t off = p->lx.tok.off;
@@ -286,7 +286,7 @@ static bool sudden_constraint(parser *p) {
     if (!qd__mdl_parse_scalar(p, &lhs, "a constraint"))
         return false;
     if (p->lx.tok.kind == TK_EQ) {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (!qd__mdl_parse_scalar(p, &rhs, "a constraint"))
             return false;
     }
@@ -303,10 +303,10 @@ static bool sudden_constraint(parser *p) {
 
 /* impact [NAME ':'] LHS ('>=' | '<=') RHS [restitution E] */
 bool qd__mdl_stmt_impact(parser *p) {
-    qd__lex_next(&p->lx);
-    if (qd__lex_is(&p->lx, "constraint")) {
+    qd__mdl_lex_next(&p->lx);
+    if (qd__mdl_lex_is(&p->lx, "constraint")) {
         lexer save = p->lx;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         bool named_constraint = p->lx.tok.kind == TK_COLON; /* `impact constraint: ...` */
         p->lx = save;
         if (!named_constraint)
@@ -324,8 +324,8 @@ bool qd__mdl_stmt_impact(parser *p) {
     if (rel != TK_GE && rel != TK_LE)
         return qd__mdl_perr_tok(p, "write: impact floor: y >= 0 restitution 0.9 (or impact "
                                 "constraint NAME: ... for a constraint that takes hold)",
-                                "expected '>=' or '<=', found %s", qd__lex_tk_name(rel));
-    qd__lex_next(&p->lx);
+                                "expected '>=' or '<=', found %s", qd__mdl_lex_tk_name(rel));
+    qd__mdl_lex_next(&p->lx);
     if (!qd__mdl_parse_scalar(p, &rhs, "a gap"))
         return false;
     size_t len = p->lx.tok.off > off ? p->lx.tok.off - off : 1;
@@ -343,7 +343,7 @@ bool qd__mdl_stmt_impact(parser *p) {
 /* prescribe [NAME ':'] LHS '=' RHS (',' [NAME ':'] LHS '=' RHS)* */
 bool qd__mdl_stmt_prescribe(parser *p) {
     do {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         char name[QD_MDL_NAME_MAX];
         token at;
         if (!label(p, "v", name, sizeof name, &at))
@@ -354,8 +354,8 @@ bool qd__mdl_stmt_prescribe(parser *p) {
             return false;
         if (p->lx.tok.kind != TK_EQ)
             return qd__mdl_perr_tok(p, "write: prescribe P.y' = v", "expected '=', found %s",
-                                    qd__lex_tk_name(p->lx.tok.kind));
-        qd__lex_next(&p->lx);
+                                    qd__mdl_lex_tk_name(p->lx.tok.kind));
+        qd__mdl_lex_next(&p->lx);
         if (!qd__mdl_parse_scalar(p, &rhs, "a prescribed velocity"))
             return false;
         size_t len = p->lx.tok.off > off ? p->lx.tok.off - off : 1;

@@ -33,11 +33,11 @@ const qd_expr *qd__mdl_find_input(const qd_model *m, const char *name, size_t n)
 }
 
 static bool one_input(parser *p) {
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     token at = p->lx.tok;
     if (at.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, "inputs F, tau", "expected an input's name, found %s",
-                                qd__lex_tk_name(at.kind));
+                                qd__mdl_lex_tk_name(at.kind));
     char name[128];
     snprintf(name, sizeof name, "%.*s", (int)(at.len < 127 ? at.len : 127), p->lx.src + at.off);
     if (!qd__mdl_fresh_name(p, "input"))
@@ -55,7 +55,7 @@ static bool one_input(parser *p) {
     snprintf(what, sizeof what, "input:%s", name);
     if (!qd__mdl_add_where(m, what, at.off, at.len))
         return qd__mdl_perr(p, at.off, at.len, NULL, "out of memory");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return true;
 }
 

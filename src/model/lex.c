@@ -4,10 +4,10 @@
 #include <ctype.h>
 #include <string.h>
 
-void qd__lex_init(lexer *lx, const char *src) {
+void qd__mdl_lex_init(lexer *lx, const char *src) {
     memset(lx, 0, sizeof *lx);
     lx->src = src;
-    qd__lex_next(lx);
+    qd__mdl_lex_next(lx);
 }
 
 /* The bytes of the line end at s: "\n", "\r\n" or a lone "\r" (old Mac
@@ -86,7 +86,7 @@ static tk_kind punct(lexer *lx, char c) {
     }
 }
 
-void qd__lex_next(lexer *lx) {
+void qd__mdl_lex_next(lexer *lx) {
     skip_blanks(lx);
     const char *s = lx->src + lx->pos;
     token t = {TK_EOF, lx->pos, 0};
@@ -126,13 +126,13 @@ void qd__lex_next(lexer *lx) {
     lx->tok = t;
 }
 
-bool qd__lex_is(const lexer *lx, const char *word) {
+bool qd__mdl_lex_is(const lexer *lx, const char *word) {
     size_t n = strlen(word);
     return lx->tok.kind == TK_IDENT && lx->tok.len == n &&
            memcmp(lx->src + lx->tok.off, word, n) == 0;
 }
 
-const char *qd__lex_tk_name(tk_kind k) {
+const char *qd__mdl_lex_tk_name(tk_kind k) {
     static const char *const names[] = {
         "the end of the file", "the end of the line", "a name", "a number",
         "'('", "')'", "'['", "']'", "','", "'='", "'+'", "'-'", "'*'", "'/'", "'^'",

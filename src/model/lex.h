@@ -33,9 +33,9 @@ typedef struct lexer {
     bool too_deep;
 } lexer;
 
-void qd__lex_init(lexer *lx, const char *src);
-void qd__lex_next(lexer *lx);             /* advance lx->tok */
-bool qd__lex_is(const lexer *lx, const char *word); /* current token is this identifier */
-const char *qd__lex_tk_name(tk_kind k);       /* "')'", "a number", ... for messages */
+void qd__mdl_lex_init(lexer *lx, const char *src);
+void qd__mdl_lex_next(lexer *lx);             /* advance lx->tok */
+bool qd__mdl_lex_is(const lexer *lx, const char *word); /* current token is this identifier */
+const char *qd__mdl_lex_tk_name(tk_kind k);       /* "')'", "a number", ... for messages */
 
 #endif

@@ -20,11 +20,11 @@
 static void read_statements(parser *p) {
     while (!p->failed && p->lx.tok.kind != TK_EOF) {
         if (p->lx.tok.kind == TK_NEWLINE) {
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
             continue;
         }
         if (qd__mdl_statement(p) && p->lx.tok.kind == TK_NEWLINE)
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
     }
     if (!p->failed && p->lx.depth > 0) {
         size_t open = p->lx.open[p->lx.depth - 1 < LEX_MAX_DEPTH ? p->lx.depth - 1 : 0];
@@ -63,7 +63,7 @@ static bool check_text(parser *p, const char *text) {
         return false;
     }
     lexer lx;
-    for (qd__lex_init(&lx, text); lx.tok.kind != TK_EOF; qd__lex_next(&lx))
+    for (qd__mdl_lex_init(&lx, text); lx.tok.kind != TK_EOF; qd__mdl_lex_next(&lx))
         if (lx.tok.kind == TK_IDENT && lx.tok.len >= QD_MDL_NAME_MAX) {
             p->lx.src = text;
             return qd__mdl_perr(p, lx.tok.off, lx.tok.len, "choose a shorter name",
@@ -118,7 +118,7 @@ static qd_model *parse_text(qd_ctx *ctx, const char *text, const qd_model_opts *
     parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, opts, used, false, false, false};
     p.field_ok = field;
     if (check_text(&p, text)) {
-        qd__lex_init(&p.lx, text);
+        qd__mdl_lex_init(&p.lx, text);
         if (check_given(&p, false))
             read_statements(&p);
     }
@@ -238,13 +238,13 @@ static void mark_restore(qd_model *m, const mark *k) {
 static bool shape_statement(parser *p) {
     if (p->lx.tok.kind != TK_IDENT)
         return false;
-    const char *what = qd__lex_is(&p->lx, "coordinates") ? "coordinates"
-                       : qd__lex_is(&p->lx, "momenta")   ? "momenta"
+    const char *what = qd__mdl_lex_is(&p->lx, "coordinates") ? "coordinates"
+                       : qd__mdl_lex_is(&p->lx, "momenta")   ? "momenta"
                                                          : NULL;
     if (!what)
         return false;
     lexer save = p->lx;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     bool eq = p->lx.tok.kind == TK_EQ; /* a definition of that name, not the statement */
     p->lx = save;
     if (eq)
@@ -265,7 +265,7 @@ static char *copy_text(qd_ctx *ctx, const char *text) {
 /* One statement of text, with nothing after it but blank lines. */
 static void read_one(parser *p) {
     while (p->lx.tok.kind == TK_NEWLINE)
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind == TK_EOF) {
         qd__mdl_perr(p, 0, 1, "give a statement, e.g. integral m*x'", "no statement to add");
         return;
@@ -273,7 +273,7 @@ static void read_one(parser *p) {
     if (shape_statement(p) || !qd__mdl_statement(p))
         return;
     while (p->lx.tok.kind == TK_NEWLINE)
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind != TK_EOF)
         qd__mdl_perr_tok(p, "add one statement at a time", "a second statement");
     else if (p->lx.depth > 0)
@@ -296,7 +296,7 @@ qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag) {
         m->src = copy;
         parser p = {ctx, {0}, m, diag, false, NULL, false, false, 0, NULL, NULL, false, false, false};
         if (check_text(&p, copy)) {
-            qd__lex_init(&p.lx, copy);
+            qd__mdl_lex_init(&p.lx, copy);
             read_one(&p);
         }
         if (!p.failed)

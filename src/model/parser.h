@@ -357,7 +357,7 @@ bool qd__mdl_stmt_boundary(parser *p);
 bool qd__mdl_field_finish(parser *p);
 void qd__mdl_free_field(qd_model *m);
 struct qd_field;
-const qd__field *qd__field_data(const struct qd_field *f); /* for src/field */
+const qd__field *qd__mdl_field_data(const struct qd_field *f); /* for src/field */
 /* parse.c: the text read as a field model (p.field_ok) */
 qd_model *qd__mdl_parse_field(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
                               qd_diag *diag);

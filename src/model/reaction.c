@@ -35,17 +35,17 @@ static long expect_constraint(parser *p) {
     token at = p->lx.tok;
     if (at.kind != TK_IDENT) {
         qd__mdl_perr_tok(p, "write: reaction CONSTRAINT on (x, y, z)",
-                 "expected a constraint's name, found %s", qd__lex_tk_name(at.kind));
+                 "expected a constraint's name, found %s", qd__mdl_lex_tk_name(at.kind));
         return -1;
     }
     for (size_t k = 0; k < m->ncons; k++)
         if (qd__mdl_name_is(p->lx.src, at.off, at.len, m->con_names[k])) {
-            qd__lex_next(&p->lx);
+            qd__mdl_lex_next(&p->lx);
             return (long)k;
         }
     long s = qd__mdl_find_sudden(m, p->lx.src, at.off, at.len);
     if (s >= 0) { /* an impulsive reaction: encoded past the ordinary ones */
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return (long)m->ncons + s;
     }
     char hint[160] = "declare the constraint (constraint NAME: ...) before its reaction";
@@ -77,13 +77,13 @@ static void label(parser *p, char *name, size_t cap, token *at) {
     lexer save = p->lx;
     *at = p->lx.tok;
     name[0] = '\0';
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (at->kind != TK_IDENT || p->lx.tok.kind != TK_COLON) {
         p->lx = save;
         return;
     }
     snprintf(name, cap, "%.*s", (int)(at->len < cap - 1 ? at->len : cap - 1), p->lx.src + at->off);
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
 }
 
 static bool add(parser *p, const char *name, size_t con, bool sudden, const value *r, token at) {
@@ -106,7 +106,7 @@ static bool add(parser *p, const char *name, size_t con, bool sudden, const valu
 bool qd__mdl_stmt_reaction(parser *p) {
     char name[QD_MDL_NAME_MAX];
     token at;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     label(p, name, sizeof name, &at);
     token con_at = p->lx.tok;
     long k = expect_constraint(p);
@@ -122,10 +122,10 @@ bool qd__mdl_stmt_reaction(parser *p) {
     if (reaction_named(p->m, name))
         return qd__mdl_perr(p, at.off, at.len, "label it: reaction NAME: CONSTRAINT on (x, y, z)",
                     "a reaction named '%s' is already given", name);
-    if (!qd__lex_is(&p->lx, "on"))
+    if (!qd__mdl_lex_is(&p->lx, "on"))
         return qd__mdl_perr_tok(p, "write: reaction CONSTRAINT on (x, y, z)", "expected 'on', found %s",
-                        qd__lex_tk_name(p->lx.tok.kind));
-    qd__lex_next(&p->lx);
+                        qd__mdl_lex_tk_name(p->lx.tok.kind));
+    qd__mdl_lex_next(&p->lx);
     value r;
     if (!qd__mdl_parse_vector(p, &r, "a position") || !velocity_free(p, &r) ||
         !add(p, name, (size_t)k, sudden, &r, at))

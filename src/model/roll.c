@@ -352,18 +352,18 @@ static bool add_friction(parser *p, const rolling *r, fclause *fc, const size_t 
 
 static bool expect_comma(parser *p, const char *hint) {
     if (p->lx.tok.kind == TK_COMMA) {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return true;
     }
-    return qd__mdl_perr_tok(p, hint, "expected ',', found %s", qd__lex_tk_name(p->lx.tok.kind));
+    return qd__mdl_perr_tok(p, hint, "expected ',', found %s", qd__mdl_lex_tk_name(p->lx.tok.kind));
 }
 
 /* An optional label before an argument: plane(normal n, through r0). */
 static void skip_label(parser *p, const char *word) {
-    if (!qd__lex_is(&p->lx, word))
+    if (!qd__mdl_lex_is(&p->lx, word))
         return;
     lexer ahead = p->lx;
-    qd__lex_next(&ahead);
+    qd__mdl_lex_next(&ahead);
     tk_kind k = ahead.tok.kind;
     if (k == TK_LPAREN || k == TK_IDENT || k == TK_NUMBER || k == TK_MINUS)
         p->lx = ahead;
@@ -375,7 +375,7 @@ static bool parse_plane(parser *p, rolling *r) {
     size_t open = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LPAREN)
         return qd__mdl_perr_tok(p, hint, "expected '(' after 'plane'");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value n, r0;
     skip_label(p, "normal");
     if (!qd__mdl_parse_vector(p, &n, "a plane's normal") || !expect_comma(p, hint))
@@ -397,7 +397,7 @@ static bool parse_cylinder(parser *p, rolling *r) {
     size_t open = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LPAREN)
         return qd__mdl_perr_tok(p, hint, "expected '(' after 'cylinder'");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value P0, d;
     if (!qd__mdl_parse_scalar(p, &r->radius, "a radius") || !expect_comma(p, hint) ||
         !qd__mdl_parse_vector(p, &P0, "a point of the axis") || !expect_comma(p, hint) ||
@@ -412,21 +412,22 @@ static bool parse_cylinder(parser *p, rolling *r) {
 
 /* (on | inside) (plane | cylinder) '(' ... ')' */
 static bool parse_surface(parser *p, rolling *r) {
-    bool inside = qd__lex_is(&p->lx, "inside");
-    if (!inside && !qd__lex_is(&p->lx, "on"))
-        return qd__mdl_perr_tok(p, usage, "expected 'on' or 'inside', found %s", qd__lex_tk_name(p->lx.tok.kind));
-    qd__lex_next(&p->lx);
-    if (qd__lex_is(&p->lx, "plane") && !inside) {
+    bool inside = qd__mdl_lex_is(&p->lx, "inside");
+    if (!inside && !qd__mdl_lex_is(&p->lx, "on"))
+        return qd__mdl_perr_tok(p, usage, "expected 'on' or 'inside', found %s",
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
+    qd__mdl_lex_next(&p->lx);
+    if (qd__mdl_lex_is(&p->lx, "plane") && !inside) {
         r->surf = ON_PLANE;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return parse_plane(p, r);
     }
-    if (qd__lex_is(&p->lx, "cylinder")) {
+    if (qd__mdl_lex_is(&p->lx, "cylinder")) {
         r->surf = inside ? IN_CYLINDER : ON_CYLINDER;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return parse_cylinder(p, r);
     }
-    if (qd__lex_is(&p->lx, "plane"))
+    if (qd__mdl_lex_is(&p->lx, "plane"))
         return qd__mdl_perr_tok(p, "a body rolls on a plane, not inside it: rolls BODY on plane(n, r0)",
                         "'inside' a plane");
     return qd__mdl_perr_tok(p, "the surfaces are plane(n, r0) and cylinder(R, P0, d)",
@@ -435,7 +436,7 @@ static bool parse_surface(parser *p, rolling *r) {
 
 static int shape_index(const parser *p) {
     for (int i = 0; i < NSHAPES; i++)
-        if (qd__lex_is(&p->lx, shape_names[i]))
+        if (qd__mdl_lex_is(&p->lx, shape_names[i]))
             return i;
     return -1;
 }
@@ -462,14 +463,14 @@ static bool parse_shape(parser *p, rolling *r) {
     if (k < 0)
         return p->lx.tok.kind == TK_IDENT ? unknown_shape(p)
                                           : qd__mdl_perr_tok(p, usage, "expected a shape, found %s",
-                                                     qd__lex_tk_name(p->lx.tok.kind));
+                                                     qd__mdl_lex_tk_name(p->lx.tok.kind));
     size_t off = p->lx.tok.off;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     size_t open = p->lx.tok.off;
     if (p->lx.tok.kind != TK_LPAREN)
         return qd__mdl_perr_tok(p, "give its radius: sphere(a)", "expected '(' after '%s'",
                         shape_names[k]);
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (!qd__mdl_parse_scalar(p, &r->a, "a radius") || !qd__mdl_expect_close(p, open))
         return false;
     r->sh = (shape)k;
@@ -482,8 +483,8 @@ static bool parse_shape(parser *p, rolling *r) {
 /* (moving V | turning W | as SHAPE)*, each once */
 static bool parse_clauses(parser *p, rolling *r) {
     while (p->lx.tok.kind == TK_IDENT && !qd__mdl_friction_ahead(p)) {
-        bool moving = qd__lex_is(&p->lx, "moving"), turning = qd__lex_is(&p->lx, "turning");
-        bool as = qd__lex_is(&p->lx, "as");
+        bool moving = qd__mdl_lex_is(&p->lx, "moving"), turning = qd__mdl_lex_is(&p->lx, "turning");
+        bool as = qd__mdl_lex_is(&p->lx, "as");
         if (!moving && !turning && !as)
             return qd__mdl_perr_tok(p, "after the surface: as SHAPE, moving (vx, vy, vz) or turning W",
                             "expected 'as', 'moving' or 'turning'");
@@ -492,7 +493,7 @@ static bool parse_clauses(parser *p, rolling *r) {
                             "the surface's motion is given twice");
         if (as && r->has_shape)
             return qd__mdl_perr_tok(p, usage, "the shape is given twice");
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         value v;
         bool ok = moving  ? qd__mdl_parse_vector(p, &v, "the surface's velocity")
                 : turning ? qd__mdl_parse_scalar(p, &r->rate, "a rate of turn")
@@ -511,7 +512,8 @@ static bool parse_clauses(parser *p, rolling *r) {
 static bool parse_body(parser *p, rolling *r) {
     qd_model *m = p->m;
     if (p->lx.tok.kind != TK_IDENT)
-        return qd__mdl_perr_tok(p, usage, "expected a body's name, found %s", qd__lex_tk_name(p->lx.tok.kind));
+        return qd__mdl_perr_tok(p, usage, "expected a body's name, found %s",
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
     r->name = p->lx.tok;
     r->b = qd__mdl_find_body(m, p->lx.src + r->name.off, r->name.len);
     char word[64], hint[160];
@@ -530,12 +532,12 @@ static bool parse_body(parser *p, rolling *r) {
     if (is_zero_vec(C(p), r->b->ws))
         return qd__mdl_perr_tok(p, "give it an orientation that turns: orientation euler(phi, theta, psi)",
                         "body '%s' has no orientation (it cannot turn), so it cannot roll", word);
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return true;
 }
 
 bool qd__mdl_stmt_rolls(parser *p) {
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     rolling r;
     memset(&r, 0, sizeof r);
     if (!parse_body(p, &r) || !parse_surface(p, &r) || !parse_clauses(p, &r))

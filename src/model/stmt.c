@@ -47,9 +47,9 @@ bool qd__mdl_end_of_statement(parser *p) {
         return true;
     if (k == TK_RPAREN || k == TK_RBRACK)
         return qd__mdl_perr_tok(p, "remove it, or add the '(' it should close", "unmatched %s",
-                        qd__lex_tk_name(k));
+                        qd__mdl_lex_tk_name(k));
     return qd__mdl_perr_tok(p, "one statement per line", "unexpected %s after the statement",
-                    qd__lex_tk_name(k));
+                    qd__mdl_lex_tk_name(k));
 }
 
 /* NAME '=' EXPR, one item of a statement that defines new names (outputs,
@@ -61,23 +61,23 @@ bool qd__mdl_named_definition(parser *p, const char *noun, const char *usage,
                               bool (*fresh)(parser *p, const char *name, token at),
                               char name[QD_MDL_NAME_MAX], token *at, value *v) {
     const char *a = strchr("aeiou", noun[0]) ? "an" : "a";
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     *at = p->lx.tok;
     if (at->kind != TK_IDENT)
         return qd__mdl_perr_tok(p, usage, "expected %s %s's name, found %s", a, noun,
-                                qd__lex_tk_name(at->kind));
+                                qd__mdl_lex_tk_name(at->kind));
     snprintf(name, QD_MDL_NAME_MAX, "%.*s",
              (int)(at->len < QD_MDL_NAME_MAX - 1 ? at->len : QD_MDL_NAME_MAX - 1),
              p->lx.src + at->off);
     if (!(fresh ? fresh(p, name, *at) : qd__mdl_fresh_name(p, noun)))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind != TK_EQ) {
         char hint[256];
         snprintf(hint, sizeof hint, "%s %s is defined where it is named: %s", a, noun, usage);
         return qd__mdl_perr(p, at->off, at->len, hint, "%s '%s' has no definition", noun, name);
     }
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     p->defining = name;
     bool ok = qd__mdl_parse_expr(p, v);
     p->defining = NULL;
@@ -135,10 +135,10 @@ static bool stmt_coordinates(parser *p) {
         return qd__mdl_perr_tok(p, "declare every coordinate before the momenta",
                         "coordinates after the momenta");
     do {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (p->lx.tok.kind != TK_IDENT)
             return qd__mdl_perr_tok(p, NULL, "expected a coordinate name, found %s",
-                            qd__lex_tk_name(p->lx.tok.kind));
+                            qd__mdl_lex_tk_name(p->lx.tok.kind));
         char name[128];
         tok_text(p, name, sizeof name);
         if (qd__mdl_names_find(p->m, QD_MDL_NAME_COORD, name, strlen(name)) >= 0)
@@ -166,7 +166,7 @@ static bool stmt_coordinates(parser *p) {
         m->ncoords = n;
         if (!qd__mdl_names_add(m, QD_MDL_NAME_COORD, n - 1))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
 }
@@ -260,22 +260,22 @@ static const qd_expr *param_symbol(parser *p, const char *name, const qd_expr *v
 
 static bool stmt_parameters(parser *p) {
     do {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (p->lx.tok.kind != TK_IDENT)
             return qd__mdl_perr_tok(p, NULL, "expected a parameter name, found %s",
-                            qd__lex_tk_name(p->lx.tok.kind));
+                            qd__mdl_lex_tk_name(p->lx.tok.kind));
         char name[128], hint[192];
         tok_text(p, name, sizeof name);
         token at = p->lx.tok;
         if (!qd__mdl_fresh_name(p, "parameter"))
             return false;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (p->lx.tok.kind != TK_EQ) {
             snprintf(hint, sizeof hint, "give a default value: %.40s = 1 (--set %.40s=... overrides it)",
                      name, name);
             return qd__mdl_perr(p, at.off, at.len, hint, "parameter '%s' has no value", name);
         }
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         const qd_expr *given = given_value(p, name), *def, *v, *sym;
         p->met_fixed = false;
         if (!parse_constant(p, given, &def, &v, "a parameter's value"))
@@ -296,9 +296,10 @@ static bool stmt_parameters(parser *p) {
 /* functions NAME (',' NAME)* */
 static bool stmt_functions(parser *p) {
     do {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (p->lx.tok.kind != TK_IDENT)
-            return qd__mdl_perr_tok(p, NULL, "expected a function name, found %s", qd__lex_tk_name(p->lx.tok.kind));
+            return qd__mdl_perr_tok(p, NULL, "expected a function name, found %s",
+                                    qd__mdl_lex_tk_name(p->lx.tok.kind));
         char name[128];
         tok_text(p, name, sizeof name);
         if (!qd__mdl_fresh_name(p, "function"))
@@ -314,26 +315,27 @@ static bool stmt_functions(parser *p) {
         strcpy(copy, name);
         if (!qd__mdl_names_add(p->m, QD_MDL_NAME_FUNC, p->m->nfuncs - 1))
             return qd__mdl_perr_tok(p, NULL, "out of memory");
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     } while (p->lx.tok.kind == TK_COMMA);
     return qd__mdl_end_of_statement(p);
 }
 
 bool qd__mdl_expect_at(parser *p, const char *stmt) {
-    if (qd__lex_is(&p->lx, "at")) {
-        qd__lex_next(&p->lx);
+    if (qd__mdl_lex_is(&p->lx, "at")) {
+        qd__mdl_lex_next(&p->lx);
         return true;
     }
     char hint[96];
     snprintf(hint, sizeof hint, "write: %s", stmt);
-    return qd__mdl_perr_tok(p, hint, "expected 'at', found %s", qd__lex_tk_name(p->lx.tok.kind));
+    return qd__mdl_perr_tok(p, hint, "expected 'at', found %s",
+                            qd__mdl_lex_tk_name(p->lx.tok.kind));
 }
 
 /* particle MASS at POSITION */
 static bool stmt_particle(parser *p) {
     if (!qd__mdl_no_hamiltonian_yet(p, "a particle", p->lx.tok.off, p->lx.tok.len))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     const qd_expr *mass;
     value r;
     if (!qd__mdl_parse_scalar(p, &mass, "a mass") || !qd__mdl_expect_at(p, "particle m at (x, y, z)") ||
@@ -360,7 +362,7 @@ static bool stmt_particle(parser *p) {
 
 /* force F at POSITION: Q_j += F . dr/dq_j (virtual work at frozen time) */
 static bool stmt_force(parser *p) {
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     value F, r;
     if (!qd__mdl_parse_vector(p, &F, "a force") || !qd__mdl_expect_at(p, "force (Fx, Fy, Fz) at (x, y, z)") ||
         !qd__mdl_parse_vector(p, &r, "a position"))
@@ -408,8 +410,8 @@ static bool not_among(parser *p, bool speeds) {
 static bool no_such_coordinate(parser *p) { return not_among(p, false); }
 
 int qd__mdl_coord_subscript(parser *p, const char *usage) {
-    qd__lex_next(&p->lx); /* the name */
-    qd__lex_next(&p->lx); /* [ */
+    qd__mdl_lex_next(&p->lx); /* the name */
+    qd__mdl_lex_next(&p->lx); /* [ */
     int j = coord_named(p);
     if (p->lx.tok.kind != TK_IDENT || j < 0) {
         if (p->lx.tok.kind == TK_IDENT)
@@ -418,13 +420,13 @@ int qd__mdl_coord_subscript(parser *p, const char *usage) {
             qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
         return -1;
     }
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind != TK_RBRACK)
         return qd__mdl_perr_tok(p, usage, "expected ']'"), -1;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind != TK_EQ)
         return qd__mdl_perr_tok(p, usage, "expected '='"), -1;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return j;
 }
 
@@ -466,13 +468,13 @@ static bool initial_once(parser *p, const char *name, size_t off, size_t len) {
 static bool initial_speed(parser *p, speed *s) {
     if (!initial_once(p, qd_expr_name(s->sym), p->lx.tok.off, p->lx.tok.len))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind == TK_PRIME)
         return qd__mdl_perr_tok(p, "give the speed's own value: initial u1 = 0.3",
                                 "an initial value is for a speed, not its rate");
     if (p->lx.tok.kind != TK_EQ)
         return qd__mdl_perr_tok(p, "write: initial u1 = 0.3", "expected '='");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     const qd_expr *def, *v;
     if (!parse_constant(p, NULL, &def, &v, "an initial value"))
         return false;
@@ -484,7 +486,7 @@ static bool initial_speed(parser *p, speed *s) {
 /* initial NAME ['] = VALUE (',' ...)*, NAME a coordinate or a speed */
 static bool stmt_initial(parser *p) {
     do {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         long k = p->lx.tok.kind == TK_IDENT
                      ? qd__mdl_find_speed(p->m, p->lx.src + p->lx.tok.off, p->lx.tok.len) : -1;
         if (k >= 0) {
@@ -497,9 +499,9 @@ static bool stmt_initial(parser *p) {
             return p->lx.tok.kind == TK_IDENT ? not_among(p, true)
                                               : qd__mdl_perr_tok(p, NULL, "expected a coordinate name");
         token at = p->lx.tok;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         unsigned order = 0;
-        for (; p->lx.tok.kind == TK_PRIME; qd__lex_next(&p->lx))
+        for (; p->lx.tok.kind == TK_PRIME; qd__mdl_lex_next(&p->lx))
             order++;
         if (order > 1)
             return qd__mdl_perr_tok(p, "give positions and velocities: q = ..., q' = ...",
@@ -510,7 +512,7 @@ static bool stmt_initial(parser *p) {
             return false;
         if (p->lx.tok.kind != TK_EQ)
             return qd__mdl_perr_tok(p, "write: initial q = 0.5, q' = 0", "expected '='");
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         const qd_expr *def, *v;
         if (!parse_constant(p, NULL, &def, &v, "an initial value"))
             return false;
@@ -567,18 +569,18 @@ bool qd__mdl_constraint_named(const qd_model *m, const char *name) {
 /* constraint [NAME ':'] LHS ['=' RHS] */
 static bool stmt_constraint(parser *p) {
     qd_model *m = p->m;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     char name[QD_MDL_NAME_MAX];
     token at = p->lx.tok;
     lexer save = p->lx;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     bool named = at.kind == TK_IDENT && p->lx.tok.kind == TK_COLON;
     if (named) {
         snprintf(name, sizeof name, "%.*s", (int)at.len, p->lx.src + at.off); /* at most 127 */
         if (constraint_named(m, name))
             return qd__mdl_perr(p, at.off, at.len, "give each constraint its own name",
                         "constraint '%s' is named twice", name);
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     } else {
         p->lx = save;
         size_t k = m->ncons + 1;
@@ -594,7 +596,7 @@ static bool stmt_constraint(parser *p) {
     if (!qd__mdl_parse_scalar(p, &lhs, "a constraint"))
         return false;
     if (p->lx.tok.kind == TK_EQ) {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         if (!qd__mdl_parse_scalar(p, &rhs, "a constraint"))
             return false;
     }
@@ -693,8 +695,8 @@ static bool stmt_definition(parser *p) {
         return qd__mdl_perr(p, at.off, at.len, "give it once; add the parts in one expression",
                     "%s is given twice (first on line %zu)", name, first.line);
     }
-    qd__lex_next(&p->lx); /* '=' */
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx); /* '=' */
+    qd__mdl_lex_next(&p->lx);
     p->defining = name;
     value v;
     bool ok = qd__mdl_parse_expr(p, &v);
@@ -775,7 +777,7 @@ static bool unknown_statement(parser *p) {
 
 static const struct stmt_kw *keyword_statement(const lexer *lx, bool newer) {
     for (size_t i = 0; i < NSTATEMENTS; i++)
-        if (statements[i].newer == newer && qd__lex_is(lx, statements[i].word))
+        if (statements[i].newer == newer && qd__mdl_lex_is(lx, statements[i].word))
             return &statements[i];
     return NULL;
 }
@@ -785,27 +787,28 @@ bool qd__mdl_statement(parser *p) {
     if (lx->tok.kind != TK_IDENT) {
         if (lx->tok.kind == TK_RPAREN || lx->tok.kind == TK_RBRACK)
             return qd__mdl_end_of_statement(p);
-        return qd__mdl_perr_tok(p, NULL, "expected a statement, found %s", qd__lex_tk_name(lx->tok.kind));
+        return qd__mdl_perr_tok(p, NULL, "expected a statement, found %s",
+                                qd__mdl_lex_tk_name(lx->tok.kind));
     }
     const struct stmt_kw *kw = keyword_statement(lx, false);
     if (kw)
         return kw->parse(p);
     /* NAME '=' or Q '[': look one token ahead without consuming */
     lexer save = *lx;
-    qd__lex_next(lx);
+    qd__mdl_lex_next(lx);
     tk_kind next = lx->tok.kind;
     *lx = save;
     if (next != TK_EQ && (kw = keyword_statement(lx, true)))
         return kw->parse(p);
-    if (qd__lex_is(lx, "H") && next == TK_EQ)
+    if (qd__mdl_lex_is(lx, "H") && next == TK_EQ)
         return qd__mdl_stmt_hamiltonian(p);
-    if (qd__lex_is(lx, "Ldensity") && next == TK_EQ && p->m->field)
+    if (qd__mdl_lex_is(lx, "Ldensity") && next == TK_EQ && p->m->field)
         return qd__mdl_stmt_ldensity(p);
     if (next == TK_EQ)
         return stmt_definition(p);
-    if (next == TK_LBRACK && qd__lex_is(lx, "Q"))
+    if (next == TK_LBRACK && qd__mdl_lex_is(lx, "Q"))
         return stmt_genforce(p);
-    if (next == TK_LBRACK && qd__lex_is(lx, "Qhat"))
+    if (next == TK_LBRACK && qd__mdl_lex_is(lx, "Qhat"))
         return qd__mdl_stmt_qhat(p);
     return unknown_statement(p);
 }

@@ -25,12 +25,12 @@ const qd_expr *qd__mdl_eps_symbol(qd_ctx *ctx) { return qd_symbol(ctx, "eps"); }
 
 /* [NAME ':'] after the keyword: the label's token (kind TK_EOF when none). */
 static token label(parser *p) {
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     token at = p->lx.tok;
     lexer save = p->lx;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (at.kind == TK_IDENT && p->lx.tok.kind == TK_COLON) {
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
         return at;
     }
     p->lx = save;
@@ -101,7 +101,7 @@ static bool not_a_coordinate(parser *p) {
     token t = p->lx.tok;
     if (t.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, "write: symmetry x -> x + eps, or symmetry delta x = 1",
-                        "expected a coordinate, found %s", qd__lex_tk_name(t.kind));
+                        "expected a coordinate, found %s", qd__mdl_lex_tk_name(t.kind));
     const char **names = qd__malloc(p->ctx, (p->m->ncoords + 1) * sizeof *names);
     for (size_t i = 0; names && i < p->m->ncoords; i++)
         names[i] = qd_expr_name(p->m->coords[i]);
@@ -120,7 +120,7 @@ static bool arrow(parser *p) {
     if (t.kind != TK_MINUS || p->lx.src[t.off + 1] != '>')
         return false;
     p->lx.pos = t.off + 2;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return true;
 }
 
@@ -145,12 +145,13 @@ static bool eps_free(parser *p, token kw) {
 static bool item(parser *p, bool finite, const qd_expr **xi) {
     qd_ctx *ctx = C(p);
     if (!finite) {
-        if (!qd__lex_is(&p->lx, "delta"))
+        if (!qd__mdl_lex_is(&p->lx, "delta"))
             return qd__mdl_perr_tok(p, "write every item as delta q = ...",
-                            p->lx.tok.kind == TK_IDENT
-                                ? "one symmetry mixes 'delta q = ...' with 'q -> ...'"
-                                : "expected 'delta q = ...', found %s", qd__lex_tk_name(p->lx.tok.kind));
-        qd__lex_next(&p->lx);
+                                    p->lx.tok.kind == TK_IDENT
+                                        ? "one symmetry mixes 'delta q = ...' with 'q -> ...'"
+                                        : "expected 'delta q = ...', found %s",
+                                    qd__mdl_lex_tk_name(p->lx.tok.kind));
+        qd__mdl_lex_next(&p->lx);
     }
     int j = coord_at(p, p->lx.tok);
     if (j < 0)
@@ -158,17 +159,17 @@ static bool item(parser *p, bool finite, const qd_expr **xi) {
     if (xi[j])
         return qd__mdl_perr_tok(p, "list each coordinate once", "'%s' is moved twice",
                         qd_expr_name(p->m->coords[j]));
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (finite && !arrow(p))
         return qd__mdl_perr_tok(p, p->lx.tok.kind == TK_EQ
                                ? "the field form starts with delta: symmetry delta x = 1"
                                : "write: symmetry x -> x + eps",
-                        "expected '->', found %s", qd__lex_tk_name(p->lx.tok.kind));
+                        "expected '->', found %s", qd__mdl_lex_tk_name(p->lx.tok.kind));
     if (!finite) {
         if (p->lx.tok.kind != TK_EQ)
             return qd__mdl_perr_tok(p, "write: symmetry delta x = -y, delta y = x",
-                            "expected '=', found %s", qd__lex_tk_name(p->lx.tok.kind));
-        qd__lex_next(&p->lx);
+                            "expected '=', found %s", qd__mdl_lex_tk_name(p->lx.tok.kind));
+        qd__mdl_lex_next(&p->lx);
     }
     size_t off = p->lx.tok.off;
     const qd_expr *rhs;
@@ -215,8 +216,8 @@ bool qd__mdl_stmt_symmetry(parser *p) {
         return false;
     token first = p->lx.tok;
     lexer save = p->lx;
-    qd__lex_next(&p->lx);
-    bool finite = !(qd__lex_is(&save, "delta") && p->lx.tok.kind == TK_IDENT);
+    qd__mdl_lex_next(&p->lx);
+    bool finite = !(qd__mdl_lex_is(&save, "delta") && p->lx.tok.kind == TK_IDENT);
     p->lx = save;
     if (finite && !eps_free(p, kw))
         return false;
@@ -227,7 +228,7 @@ bool qd__mdl_stmt_symmetry(parser *p) {
     for (;;) {
         if (!(ok = item(p, finite, xi)) || p->lx.tok.kind != TK_COMMA)
             break;
-        qd__lex_next(&p->lx);
+        qd__mdl_lex_next(&p->lx);
     }
     bool moves = false;
     for (size_t j = 0; ok && j < m->ncoords; j++) {

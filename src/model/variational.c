@@ -39,10 +39,10 @@ bool qd__mdl_stmt_independent(parser *p) {
     size_t kw = p->lx.tok.off;
     if (!in_model_text(p, "the independent variable"))
         return false;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     if (p->lx.tok.kind != TK_IDENT)
         return qd__mdl_perr_tok(p, "write: independent x", "expected a variable name, found %s",
-                                qd__lex_tk_name(p->lx.tok.kind));
+                                qd__mdl_lex_tk_name(p->lx.tok.kind));
     if (m->indep) {
         qd_diag first;
         qd_model_where(m, "independent", &first);
@@ -66,15 +66,15 @@ bool qd__mdl_stmt_independent(parser *p) {
     m->indep = copy;
     if (!qd__mdl_add_where(m, "independent", p->lx.tok.off, p->lx.tok.len))
         return qd__mdl_perr_tok(p, NULL, "out of memory");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return qd__mdl_end_of_statement(p);
 }
 
 bool qd__mdl_integral_ahead(const parser *p) {
-    if (!qd__lex_is(&p->lx, "integral"))
+    if (!qd__mdl_lex_is(&p->lx, "integral"))
         return false;
     lexer look = p->lx;
-    qd__lex_next(&look);
+    qd__mdl_lex_next(&look);
     return look.tok.kind == TK_LPAREN;
 }
 
@@ -87,9 +87,9 @@ bool qd__mdl_isoperimetric_named(const qd_model *m, const char *name) {
 
 /* integral '(' EXPR ')' '=' VALUE, EXPR a function of the coordinates. */
 static bool read_isoperimetric(parser *p, isoper *c) {
-    qd__lex_next(&p->lx); /* integral */
+    qd__mdl_lex_next(&p->lx); /* integral */
     size_t open = p->lx.tok.off;
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     size_t off = p->lx.tok.off;
     if (!qd__mdl_parse_scalar(p, &c->expr, "an integrand"))
         return false;
@@ -103,7 +103,7 @@ static bool read_isoperimetric(parser *p, isoper *c) {
     if (p->lx.tok.kind != TK_EQ)
         return qd__mdl_perr_tok(p, "write: constraint length: integral(sqrt(1 + y'^2)) = l",
                                 "expected '=' and the integral's value");
-    qd__lex_next(&p->lx);
+    qd__mdl_lex_next(&p->lx);
     return qd__mdl_parse_constant(p, &c->value_def, &c->value, "an isoperimetric value");
 }
 

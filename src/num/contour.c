@@ -1,6 +1,6 @@
 /*
  * src/num/contour.c - a level set of gridded values: marching squares, with
- * the segments joined into polylines (qd_contour_grid, qdot/zvc.h).
+ * the segments joined into polylines (qd_contour_grid, qdot/contour.h).
  *
  * Each cell's corners are marked above (f > level) or not; an edge whose
  * ends differ is crossed once, at the linear interpolate.  A cell has 0, 2
@@ -12,7 +12,7 @@
  * polylines are found by walking from segment to segment through shared
  * edges.
  */
-#include "qdot/zvc.h"
+#include "qdot/contour.h"
 #include "base/mem.h"
 #include "../base/args.h"
 

@@ -12,7 +12,7 @@
 
 #include <stdlib.h>
 
-static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const qd_expr ***all,
+static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd__ptrmap *seen, const qd_expr ***all,
                          size_t *len, size_t *cap) {
     size_t k = qd_free_symbols(ctx, x, NULL, 0);
     const qd_expr **syms = qd__malloc(ctx, (k ? k : 1) * sizeof *syms);
@@ -27,7 +27,7 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
     }
     bool ok = true;
     for (size_t i = 0; ok && i < k; i++) {
-        if (qd_ptrmap_has(seen, syms[i]))
+        if (qd__ptrmap_has(seen, syms[i]))
             continue;
         if (*len == *cap) {
             *cap = *cap ? 2 * *cap : 16;
@@ -35,7 +35,7 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
             ok = grown != NULL;
             *all = grown ? grown : *all;
         }
-        ok = ok && qd_ptrmap_put(seen, syms[i], (void *)syms[i]);
+        ok = ok && qd__ptrmap_put(seen, syms[i], (void *)syms[i]);
         if (ok)
             (*all)[(*len)++] = syms[i];
     }
@@ -44,13 +44,13 @@ static bool push_symbols(qd_ctx *ctx, const qd_expr *x, qd_ptrmap *seen, const q
 }
 
 const qd_expr **qd__num_inputs(qd_ctx *ctx, size_t n, const qd_expr *const *exprs, size_t *nin) {
-    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr **all = NULL;
     size_t len = 0, cap = 0;
     bool ok = true;
     for (size_t i = 0; ok && i < n; i++)
         ok = push_symbols(ctx, exprs[i], &seen, &all, &len, &cap);
-    qd_ptrmap_free(&seen);
+    qd__ptrmap_free(&seen);
     if (ok && !all)
         all = qd__malloc(ctx, sizeof *all);
     if (!ok || !all) {

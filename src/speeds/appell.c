@@ -174,7 +174,7 @@ static const qd_expr *drop_free(qd__spd *d, const qd_expr *S) {
     S = qd_sub(ctx, S, qd_subs(ctx, S, m, d->e->ud, zero));
     qd__free(zero);
     qd__vsum v;
-    qd_status st = S ? qd__by_velocity(ctx, S, m, d->e->ud, &v) : QD_ERR_NOMEM;
+    qd_status st = S ? qd__mech_by_velocity(ctx, S, m, d->e->ud, &v) : QD_ERR_NOMEM;
     if (st != QD_OK && st != QD_ERR_NONLINEAR)
         return NULL;
     return qd_simplify(ctx, st == QD_OK ? v.all : S);

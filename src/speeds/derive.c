@@ -9,7 +9,7 @@
  * W, Wc, w are read off as coefficients (velocity_map).  P is sparse in
  * practice (a speed is a few velocities, a rolling constraint three): the
  * rows and columns with one entry are solved directly and only the rest by
- * fraction-free elimination (qd__solve_sparse), so the solution stays short
+ * fraction-free elimination (qd__mech_solve_sparse), so the solution stays short
  * and costs little (the rolling disk's map is triangular).  A singular P is reported at the row that depends on those
  * before it, found numerically at a random state.
  */
@@ -287,7 +287,7 @@ static qd_status velocity_map(qd__spd *d) {
         if (i < nx)
             B[i] = qd_add(ctx, sym[i], B[i]);
     }
-    qd_status st = qd__solve_sparse(ctx, n, d->P, 1, B, X, 0, tidy_linear, &form);
+    qd_status st = qd__mech_solve_sparse(ctx, n, d->P, 1, B, X, 0, tidy_linear, &form);
     if (st == QD_ERR_SINGULAR)
         st = singular_map(d);
     for (size_t j = 0; st == QD_OK && j < n; j++) {
@@ -364,7 +364,7 @@ const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x) {
     qd__vsum v;
     if (!x)
         return NULL;
-    qd_status st = qd__by_velocity(d->ctx, x, d->m, d->e->u, &v);
+    qd_status st = qd__mech_by_velocity(d->ctx, x, d->m, d->e->u, &v);
     if (st != QD_OK && st != QD_ERR_NONLINEAR)
         return NULL;
     return st == QD_OK ? v.all : qd_simplify(d->ctx, x);
@@ -534,16 +534,16 @@ static qd_status check_mass(qd__spd *d) {
 
 static qd_status setup(qd__spd *d, const qd_speeds_opts *opts) {
     qd_ctx *ctx = d->ctx;
-    qd_status st = qd__sys_from_model(ctx, d->model, &d->sys);
+    qd_status st = qd__mech_sys_from_model(ctx, d->model, &d->sys);
     if (st != QD_OK)
         return st;
     d->n = d->sys.n;
     d->m = qd_model_nspeeds(d->model);
     d->nc = d->sys.ncon;
-    d->shell = qd__eom_shell(ctx, &d->sys);
+    d->shell = qd__mech_eom_shell(ctx, &d->sys);
     if (!d->shell)
         return qd_ctx_status(ctx);
-    d->L = qd__sys_lagrangian(ctx, d->shell, &d->sys);
+    d->L = qd__mech_sys_lagrangian(ctx, d->shell, &d->sys);
     if (!d->L)
         return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : nomem(ctx);
     d->e = alloc(ctx, d->n, d->m, d->nc);
@@ -609,7 +609,7 @@ qd_speeds_eom *qd_speeds_derive(qd_ctx *ctx, const qd_model *m, const qd_speeds_
         return NULL;
     qd__spd d = {.ctx = ctx, .model = m};
     qd_status st = run(&d, opts);
-    qd__sys_free(&d.sys);
+    qd__mech_sys_free(&d.sys);
     qd__free(d.P);
     qd__free(d.Pinv);
     qd__free(d.p0);
@@ -633,7 +633,7 @@ qd_status qd_speeds_solve(qd_ctx *ctx, qd_speeds_eom *e, size_t max_ops) {
     const qd_expr **acc = qd__calloc(ctx, m + 1, sizeof *acc);
     if (!acc)
         return nomem(ctx);
-    qd_status st = qd__solve_cols(ctx, m, e->M, 1, e->f, acc, max_ops);
+    qd_status st = qd__mech_solve_cols(ctx, m, e->M, 1, e->f, acc, max_ops);
     if (st != QD_OK) {
         qd__free(acc);
         if (qd_ctx_status(ctx) == QD_OK && st == QD_ERR_TOOBIG)

@@ -156,7 +156,7 @@ qd_status qd_hamel_coefficients(qd_ctx *ctx, size_t n, const qd_expr *const *q,
     }
     for (size_t i = 0; i < n * n; i++)
         I[i] = qd_int(ctx, i / n == i % n);
-    qd_status st = qd__solve_cols(ctx, n, a, n, I, b, 0);
+    qd_status st = qd__mech_solve_cols(ctx, n, a, n, I, b, 0);
     if (st == QD_ERR_SINGULAR)
         qd_ctx_error(ctx, st, "the velocity map is singular: the quasi-velocities are dependent");
     for (size_t i = 0; st == QD_OK && i < n; i++)

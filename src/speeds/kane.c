@@ -42,7 +42,7 @@ qd_status qd__spd_kane(qd__spd *d) {
     qd_speeds_eom *e = d->e;
     qd_eom *sh = d->shell;
     size_t n = d->n, m = d->m;
-    qd_status st = qd__eom_rows(ctx, sh, &d->sys, d->L, true);
+    qd_status st = qd__mech_eom_rows(ctx, sh, &d->sys, d->L, true);
     const qd_expr **buf = qd__calloc(ctx, n * n + n * m + 2 * n + m + 1, sizeof *buf);
     if (st != QD_OK || !buf) {
         qd__free(buf);

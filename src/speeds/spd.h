@@ -50,7 +50,7 @@ const qd_expr *qd__spd_residual(qd__spd *d, size_t j);
 qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows);
 /* x expanded and grouped by monomials in the speeds, each group's
  * coefficient through the trigonometric identities and common factors
- * (qd__by_velocity); the whole simplifier only where x is not polynomial
+ * (qd__mech_by_velocity); the whole simplifier only where x is not polynomial
  * in the speeds. */
 const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x);
 

@@ -55,7 +55,7 @@ const qd_expr *qd__term_coeff(qd_ctx *ctx, const qd_expr *t, const qd_expr *cons
         *rest = NULL;
         *nrest = 0;
     }
-    return ctx->one;
+    return ctx->sym->one;
 }
 
 /* Rebuild a term with a new coefficient, reusing the node when it is unchanged. */
@@ -124,25 +124,25 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
         if (!xs[i])
             return NULL;
     if (n == 0)
-        return ctx->zero;
+        return ctx->sym->zero;
     if (n == 1)
         return xs[0];
 
-    const qd_expr *constant = ctx->zero;
+    const qd_expr *constant = ctx->sym->zero;
     term *v = NULL;
     size_t len = 0, cap = 0;
     bool ok = true;
     for (size_t i = 0; i < n && ok; i++) {
         const qd_expr *x = xs[i];
         if (qd__is_num(x)) {
-            constant = qd__num_add(ctx, constant, x);
+            constant = qd__number_add(ctx, constant, x);
             ok = constant != NULL;
             continue;
         }
         size_t j0 = 0;
         if (x->kind == QD_ADD) {
             if (qd__is_num(x->args[0])) {
-                constant = qd__num_add(ctx, constant, x->args[0]);
+                constant = qd__number_add(ctx, constant, x->args[0]);
                 ok = constant != NULL;
                 j0 = 1;
             }
@@ -178,7 +178,7 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
         size_t j = i + 1;
         const qd_expr *c = v[i].coeff;
         for (; j < len && same_key(&v[i], &v[j]); j++)
-            c = qd__num_add(ctx, c, v[j].coeff);
+            c = qd__number_add(ctx, c, v[j].coeff);
         if (!c)
             ok = false;
         else if (!qd_is_zero(c)) {
@@ -190,7 +190,7 @@ const qd_expr *qd_add_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
     const qd_expr *r = NULL;
     if (ok) {
         if (m == 0)
-            r = qd_is_zero(constant) ? constant : ctx->zero;
+            r = qd_is_zero(constant) ? constant : ctx->sym->zero;
         else if (m == 1)
             r = out[0];
         else {
@@ -210,7 +210,7 @@ const qd_expr *qd_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
     return qd_add_n(ctx, 2, xs);
 }
 
-const qd_expr *qd_neg(qd_ctx *ctx, const qd_expr *a) { QD_ARGS(NULL, ctx && a); return qd_mul(ctx, ctx->minus_one, a); }
+const qd_expr *qd_neg(qd_ctx *ctx, const qd_expr *a) { QD_ARGS(NULL, ctx && a); return qd_mul(ctx, ctx->sym->minus_one, a); }
 
 const qd_expr *qd_sub(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
     QD_ARGS(NULL, ctx && a && b);

@@ -25,9 +25,9 @@
 
 typedef struct cc {
     qd_ctx *ctx;
-    qd_ptrmap *memo;       /* node -> cancelled node, over the whole call */
-    qd_ptrmap atoms;       /* node -> its generator node (or a number) */
-    qd_ptrmap gidx;        /* generator node -> index + 1 */
+    qd__ptrmap *memo;       /* node -> cancelled node, over the whole call */
+    qd__ptrmap atoms;       /* node -> its generator node (or a number) */
+    qd__ptrmap gidx;        /* generator node -> index + 1 */
     const qd_expr **gens;
     size_t ngens, cap;
     fmpz_mpoly_ctx_t m;
@@ -38,7 +38,7 @@ typedef struct frac {
     fmpz_mpoly_t n, d;
 } frac;
 
-static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo);
+static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo);
 
 /* Integer power that is read as arithmetic (not a generator). */
 static bool small_int_exp(const qd_expr *e, long *k) {
@@ -70,7 +70,7 @@ static bool is_arith(const qd_expr *e, long *k) {
 /* Pass 1: find the generators. */
 static bool collect(cc *c, const qd_expr *e) {
     long k;
-    if (e->kind == QD_RATIONAL || qd_ptrmap_has(&c->atoms, e))
+    if (e->kind == QD_RATIONAL || qd__ptrmap_has(&c->atoms, e))
         return true;
     if (is_arith(e, &k)) {
         for (size_t i = 0; i < (e->kind == QD_POW ? 1u : e->nargs); i++)
@@ -80,9 +80,9 @@ static bool collect(cc *c, const qd_expr *e) {
     }
     long pw;
     const qd_expr *g = atom_of(c, e, &pw);
-    if (!g || !qd_ptrmap_put(&c->atoms, e, (void *)g))
+    if (!g || !qd__ptrmap_put(&c->atoms, e, (void *)g))
         return false;
-    if (g->kind == QD_RATIONAL || qd_ptrmap_has(&c->gidx, g))
+    if (g->kind == QD_RATIONAL || qd__ptrmap_has(&c->gidx, g))
         return true;
     if (c->ngens == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 16;
@@ -93,7 +93,7 @@ static bool collect(cc *c, const qd_expr *e) {
         c->cap = cap;
     }
     c->gens[c->ngens++] = g;
-    return qd_ptrmap_put(&c->gidx, g, (void *)(uintptr_t)c->ngens);
+    return qd__ptrmap_put(&c->gidx, g, (void *)(uintptr_t)c->ngens);
 }
 
 /* Does e have a denominator that is not a number? */
@@ -181,13 +181,13 @@ static bool to_frac(cc *c, const qd_expr *e, frac *f) {
         return true;
     }
     if (!is_arith(e, &k)) {
-        const qd_expr *g = qd_ptrmap_get(&c->atoms, e);
+        const qd_expr *g = qd__ptrmap_get(&c->atoms, e);
         if (g->kind == QD_RATIONAL) {
             set_rational(c, f, g);
             return true;
         }
         atom_of(c, e, &k); /* the power only: the node is memoized */
-        fmpz_mpoly_gen(f->n, (slong)(uintptr_t)qd_ptrmap_get(&c->gidx, g) - 1, c->m);
+        fmpz_mpoly_gen(f->n, (slong)(uintptr_t)qd__ptrmap_get(&c->gidx, g) - 1, c->m);
         return frac_pow(c, f, k);
     }
     if (e->kind == QD_POW)
@@ -266,7 +266,7 @@ static const qd_expr *reduce(cc *c, frac *f) {
         fmpz_mpoly_neg(f->d, f->d, c->m);
     }
     fmpz_clear(z);
-    return qd_mul(c->ctx, from_poly(c, f->n), qd_pow(c->ctx, from_poly(c, f->d), c->ctx->minus_one));
+    return qd_mul(c->ctx, from_poly(c, f->n), qd_pow(c->ctx, from_poly(c, f->d), c->ctx->sym->minus_one));
 }
 
 /* e over one denominator, or NULL with c->failed when it grew too big. */
@@ -293,7 +293,7 @@ static const qd_expr *cancel_frac(cc *c, const qd_expr *e) {
     return r;
 }
 
-static const qd_expr *rebuild_args(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo) {
+static const qd_expr *rebuild_args(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo) {
     const qd_expr *stack[8];
     const qd_expr **args = e->nargs <= 8 ? stack : qd__malloc(ctx, e->nargs * sizeof *args);
     if (!args) {
@@ -316,25 +316,25 @@ static const qd_expr *rebuild_args(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *mem
     return r;
 }
 
-static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo) {
+static const qd_expr *cancel_expr(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo) {
     if (!e->nargs)
         return e;
-    const qd_expr *r = qd_ptrmap_get(memo, e);
+    const qd_expr *r = qd__ptrmap_get(memo, e);
     if (r)
         return r;
     long k;
     if (is_arith(e, &k) && has_denominator(e)) {
         cc c = {.ctx = ctx, .memo = memo}; /* the rest zero: empty maps, no generators */
         r = cancel_frac(&c, e);
-        qd_ptrmap_free(&c.atoms);
-        qd_ptrmap_free(&c.gidx);
+        qd__ptrmap_free(&c.atoms);
+        qd__ptrmap_free(&c.gidx);
         qd__free(c.gens);
         if (c.failed && !r)
             r = rebuild_args(ctx, e, memo);
     } else {
         r = rebuild_args(ctx, e, memo);
     }
-    if (r && !qd_ptrmap_put(memo, e, (void *)r)) {
+    if (r && !qd__ptrmap_put(memo, e, (void *)r)) {
         qd__oom(ctx);
         r = NULL;
     }
@@ -345,9 +345,9 @@ const qd_expr *qd_cancel(qd_ctx *ctx, const qd_expr *e) {
     QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     qd_gmp_section outer = qd__gmp_enter(ctx);
     const qd_expr *r = cancel_expr(ctx, e, &memo);
-    qd_ptrmap_free(&memo);
+    qd__ptrmap_free(&memo);
     return qd__gmp_leave(ctx, outer) ? r : NULL;
 }

@@ -30,7 +30,7 @@ static bool is_int(const qd_expr *e) {
     return e->kind == QD_RATIONAL && mpz_cmp_ui(mpq_denref(e->u.q), 1) == 0;
 }
 
-/* An integer exponent qd__num_pow folds the rational base b to (number.c):
+/* An integer exponent qd__number_pow folds the rational base b to (number.c):
  * |e| <= QD_MAX_FOLD_EXP and a result of at most QD_MAX_FOLD_BITS bits. */
 static bool folds(const qd_expr *b, const qd_expr *e) {
     if (!is_int(e) || mpz_cmpabs_ui(mpq_numref(e->u.q), QD_MAX_FOLD_EXP) > 0)

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 
 typedef struct aw {
-    qd_ptrmap memo;  /* node -> index + 1 into vals */
+    qd__ptrmap memo;  /* node -> index + 1 into vals */
     arb_struct *vals;
     size_t n, cap;
     slong prec;
@@ -35,7 +35,7 @@ static arb_struct *slot(aw *w, const qd_expr *e) {
     arb_struct *r = &w->vals[w->n];
     arb_init(r);
     w->n++;
-    if (!qd_ptrmap_put(&w->memo, e, (void *)(uintptr_t)w->n))
+    if (!qd__ptrmap_put(&w->memo, e, (void *)(uintptr_t)w->n))
         w->bad = true;
     return r;
 }
@@ -122,7 +122,7 @@ static void apply_pow(arb_t r, const arb_t b, const qd_expr *ex, const arb_t e, 
 static const arb_struct *aval(aw *w, const qd_expr *e) {
     if (w->bad || w->unknown)
         return NULL;
-    uintptr_t k = (uintptr_t)qd_ptrmap_get(&w->memo, e);
+    uintptr_t k = (uintptr_t)qd__ptrmap_get(&w->memo, e);
     if (k)
         return &w->vals[k - 1];
     /* the arguments first: slot() may move vals */
@@ -145,7 +145,7 @@ static const arb_struct *aval(aw *w, const qd_expr *e) {
             return NULL;
         arb_set_si(r, e->kind == QD_ADD ? 0 : 1);
         for (size_t i = 0; i < e->nargs; i++) {
-            const arb_struct *x = &w->vals[(uintptr_t)qd_ptrmap_get(&w->memo, e->args[i]) - 1];
+            const arb_struct *x = &w->vals[(uintptr_t)qd__ptrmap_get(&w->memo, e->args[i]) - 1];
             if (e->kind == QD_ADD)
                 arb_add(r, r, x, w->prec);
             else
@@ -164,7 +164,7 @@ static const arb_struct *aval(aw *w, const qd_expr *e) {
     if (!r)
         return NULL;
     for (size_t i = 0; i < e->nargs && i < 2; i++)
-        a[i] = &w->vals[(uintptr_t)qd_ptrmap_get(&w->memo, e->args[i]) - 1];
+        a[i] = &w->vals[(uintptr_t)qd__ptrmap_get(&w->memo, e->args[i]) - 1];
     switch ((qd_kind)e->kind) {
     case QD_RATIONAL:
     case QD_FLOAT: set_number(r, e, w->prec); break;
@@ -209,7 +209,7 @@ static pt_kind eval_at(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *c
     for (size_t i = 0; i < w.n; i++)
         arb_clear(&w.vals[i]);
     free(w.vals);
-    qd_ptrmap_free(&w.memo);
+    qd__ptrmap_free(&w.memo);
     return k;
 }
 

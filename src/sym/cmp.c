@@ -100,7 +100,7 @@ static int same_rank_cmp(const qd_expr *a, const qd_expr *b) {
     switch ((qd_kind)a->kind) {
     case QD_RATIONAL:
     case QD_FLOAT:
-        return qd__num_cmp(a, b);
+        return qd__number_cmp(a, b);
     case QD_CONSTANT:
         return (int)a->tag - (int)b->tag;
     case QD_SYMBOL:
@@ -188,7 +188,7 @@ const char *qd_expr_name(const qd_expr *e) {
 size_t qd_uderiv_nslots(const qd_expr *e) { QD_ARGS(0, e); return e->kind == QD_UDERIV ? e->u.fn.nslots : 0; }
 unsigned qd_uderiv_slot(const qd_expr *e, size_t i) { QD_ARGS(0, e); return e->u.fn.slots[i]; }
 
-static bool has_rec(const qd_expr *e, const qd_expr *x, qd_ptrmap *seen) {
+static bool has_rec(const qd_expr *e, const qd_expr *x, qd__ptrmap *seen) {
     if (e == x)
         return true;
     if (!e->nargs)
@@ -204,12 +204,12 @@ static bool has_rec(const qd_expr *e, const qd_expr *x, qd_ptrmap *seen) {
                 return true;
         return false;
     }
-    if (qd_ptrmap_has(seen, e))
+    if (qd__ptrmap_has(seen, e))
         return false;
     for (uint32_t i = 0; i < e->nargs; i++)
         if (has_rec(e->args[i], x, seen))
             return true;
-    qd_ptrmap_put(seen, e, (void *)e); /* on failure we only revisit */
+    qd__ptrmap_put(seen, e, (void *)e); /* on failure we only revisit */
     return false;
 }
 
@@ -217,19 +217,19 @@ bool qd_has(const qd_expr *e, const qd_expr *x) {
     QD_ARGS(false, e && x);
     if (!e || !x)
         return false;
-    qd_ptrmap seen = QD_PTRMAP_INIT;
+    qd__ptrmap seen = QD_PTRMAP_INIT;
     bool r = has_rec(e, x, &seen);
-    qd_ptrmap_free(&seen);
+    qd__ptrmap_free(&seen);
     return r;
 }
 
 /* false when out of memory: a symbol may be missing from syms */
-static bool symbols_rec(const qd_expr *e, qd_ptrmap *seen, qd_ptrmap *syms) {
-    if (qd_ptrmap_has(seen, e))
+static bool symbols_rec(const qd_expr *e, qd__ptrmap *seen, qd__ptrmap *syms) {
+    if (qd__ptrmap_has(seen, e))
         return true;
-    bool ok = qd_ptrmap_put(seen, e, (void *)e);
+    bool ok = qd__ptrmap_put(seen, e, (void *)e);
     if (e->kind == QD_SYMBOL)
-        ok = qd_ptrmap_put(syms, e, (void *)e) && ok;
+        ok = qd__ptrmap_put(syms, e, (void *)e) && ok;
     for (uint32_t i = 0; ok && i < e->nargs; i++)
         ok = symbols_rec(e->args[i], seen, syms);
     return ok;
@@ -243,7 +243,8 @@ size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_
     QD_ARGS(0, ctx && e);
     if (!e)
         return 0;
-    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx)), syms = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx)),
+               syms = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     bool ok = symbols_rec(e, &seen, &syms);
     if (!ok)
         qd__oom(ctx);
@@ -257,7 +258,7 @@ size_t qd_free_symbols(qd_ctx *ctx, const qd_expr *e, const qd_expr **out, size_
     for (size_t i = 0; i < n && i < cap; i++)
         out[i] = all[i];
     size_t total = all ? syms.len : 0; /* 0 and the error in ctx when out of memory */
-    qd_ptrmap_free(&seen);
-    qd_ptrmap_free(&syms);
+    qd__ptrmap_free(&seen);
+    qd__ptrmap_free(&syms);
     return total;
 }

@@ -13,12 +13,12 @@
 #include <stdlib.h>
 
 /* The generator index of x: x must expand to exactly one generator. */
-static long gen_of(qd_xsess *s, const qd_expr *x, const char *what) {
-    const qd_poly *p = qd__xs_poly(s, x);
+static long gen_of(qd__xsess *s, const qd_expr *x, const char *what) {
+    const qd__poly *p = qd__xs_poly(s, x);
     if (!p)
         return -1;
     if (p->n != 1 || p->terms[0].len != 1 || p->pool[p->terms[0].off].exp != 1 ||
-        !qd_poly_coef_is_one(p, 0)) {
+        !qd__poly_coef_is_one(p, 0)) {
         qd_ctx_error(s->ctx, QD_ERR_ARG, "%s: not a symbol or other generator", what);
         return -1;
     }
@@ -32,29 +32,29 @@ static const char *name_of(const qd_expr *x) {
 
 /* The first of the marked nodes found under e (memo: node -> hit, or the
  * memo itself for none). */
-static const qd_expr *find_marked(const qd_expr *e, const qd_ptrmap *marked, qd_ptrmap *memo) {
-    if (qd_ptrmap_has(marked, e))
+static const qd_expr *find_marked(const qd_expr *e, const qd__ptrmap *marked, qd__ptrmap *memo) {
+    if (qd__ptrmap_has(marked, e))
         return e;
     if (!e->nargs)
         return NULL;
-    void *v = qd_ptrmap_get(memo, e);
+    void *v = qd__ptrmap_get(memo, e);
     if (v)
         return v == (void *)memo ? NULL : v;
     const qd_expr *hit = NULL;
     for (uint32_t i = 0; i < e->nargs && !hit; i++)
         hit = find_marked(e->args[i], marked, memo);
-    qd_ptrmap_put(memo, e, hit ? (void *)hit : (void *)memo); /* failure: only a revisit */
+    qd__ptrmap_put(memo, e, hit ? (void *)hit : (void *)memo); /* failure: only a revisit */
     return hit;
 }
 
 typedef struct lin {
-    qd_xsess s;
+    qd__xsess s;
     size_t n;
     long *slot;           /* per generator: index in xs, -1 none, -2 not looked at */
     uint32_t *xvar;       /* the generator of each x */
-    qd_ptrmap marked;     /* the xs */
-    qd_ptrmap memo;
-    qd_poly **parts;      /* [0] the rest, [1 + i] the coefficient of xs[i] */
+    qd__ptrmap marked;     /* the xs */
+    qd__ptrmap memo;
+    qd__poly **parts;      /* [0] the rest, [1 + i] the coefficient of xs[i] */
 } lin;
 
 /* Which x (if any) generator var is or hides; *inside set when it hides one. */
@@ -75,11 +75,11 @@ static long classify(lin *L, uint32_t var, const qd_expr **inside) {
 }
 
 /* Sort term t into its part, or report the symbol that makes it nonlinear. */
-static qd_status place_term(lin *L, const qd_poly *p, size_t t, const qd_expr *const *xs) {
-    const qd_pterm *pt = &p->terms[t];
+static qd_status place_term(lin *L, const qd__poly *p, size_t t, const qd_expr *const *xs) {
+    const qd__pterm *pt = &p->terms[t];
     long which = -1;
     for (uint32_t i = 0; i < pt->len; i++) {
-        qd_pvar v = p->pool[pt->off + i];
+        qd__pvar v = p->pool[pt->off + i];
         const qd_expr *inside;
         long k = classify(L, v.var, &inside);
         if (inside || (k >= 0 && (v.exp != 1 || which >= 0))) {
@@ -91,7 +91,7 @@ static qd_status place_term(lin *L, const qd_poly *p, size_t t, const qd_expr *c
             which = k;
     }
     uint32_t drop = which >= 0 ? L->xvar[which] : UINT32_MAX;
-    if (!qd_poly_append(L->s.ctx, L->parts[which + 1], p, t, drop))
+    if (!qd__poly_append(L->s.ctx, L->parts[which + 1], p, t, drop))
         return QD_ERR_NOMEM;
     return QD_OK;
 }
@@ -99,15 +99,15 @@ static qd_status place_term(lin *L, const qd_poly *p, size_t t, const qd_expr *c
 static qd_status lin_setup(lin *L, qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
     qd__xs_init(&L->s, ctx);
     L->n = n;
-    L->marked = (qd_ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
-    L->memo = (qd_ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    L->marked = (qd__ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    L->memo = (qd__ptrmap)QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     L->slot = NULL;
     L->parts = qd__calloc(ctx, n + 1, sizeof *L->parts);
     L->xvar = qd__malloc(ctx, (n + 1) * sizeof *L->xvar);
     if (!L->parts || !L->xvar)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i <= n; i++)
-        if (!qd__xs_own(&L->s, L->parts[i] = qd_poly_zero(ctx)))
+        if (!qd__xs_own(&L->s, L->parts[i] = qd__poly_zero(ctx)))
             return QD_ERR_NOMEM;
     for (size_t i = 0; i < n; i++) {
         if (!xs[i])
@@ -116,18 +116,18 @@ static qd_status lin_setup(lin *L, qd_ctx *ctx, size_t n, const qd_expr *const *
         if (v < 0)
             return ctx->status;
         L->xvar[i] = (uint32_t)v;
-        if (qd_ptrmap_has(&L->marked, xs[i])) {
+        if (qd__ptrmap_has(&L->marked, xs[i])) {
             qd_ctx_error(ctx, QD_ERR_ARG, "linear_coeffs: %s given twice", name_of(xs[i]));
             return QD_ERR_ARG;
         }
-        if (!qd_ptrmap_put(&L->marked, xs[i], (void *)xs[i]))
+        if (!qd__ptrmap_put(&L->marked, xs[i], (void *)xs[i]))
             return QD_ERR_NOMEM;
     }
     return QD_OK;
 }
 
 static qd_status lin_split(lin *L, const qd_expr *e, const qd_expr *const *xs) {
-    const qd_poly *p = qd__xs_poly(&L->s, e);
+    const qd__poly *p = qd__xs_poly(&L->s, e);
     if (!p)
         return L->s.ctx->status ? L->s.ctx->status : QD_ERR_NOMEM;
     L->slot = qd__malloc(L->s.ctx, (L->s.ngens + 1) * sizeof *L->slot);
@@ -171,8 +171,8 @@ qd_status qd_linear_coeffs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_exp
     qd__free(L.slot);
     qd__free(L.parts);
     qd__free(L.xvar);
-    qd_ptrmap_free(&L.marked);
-    qd_ptrmap_free(&L.memo);
+    qd__ptrmap_free(&L.marked);
+    qd__ptrmap_free(&L.memo);
     qd__xs_free(&L.s);
     return st;
 }
@@ -185,12 +185,12 @@ const qd_expr *qd_coeff(qd_ctx *ctx, const qd_expr *e, const qd_expr *x, long k)
         qd_ctx_error(ctx, QD_ERR_ARG, "coeff: exponent %ld out of range", k);
         return NULL;
     }
-    qd_xsess s;
+    qd__xsess s;
     qd__xs_init(&s, ctx);
     const qd_expr *r = NULL;
     long var = gen_of(&s, x, "coeff");
-    const qd_poly *p = var >= 0 ? qd__xs_poly(&s, e) : NULL;
-    qd_poly *slice = p ? qd_poly_slice(ctx, p, (uint32_t)var, (int32_t)k) : NULL;
+    const qd__poly *p = var >= 0 ? qd__xs_poly(&s, e) : NULL;
+    qd__poly *slice = p ? qd__poly_slice(ctx, p, (uint32_t)var, (int32_t)k) : NULL;
     if (qd__xs_own(&s, slice))
         r = qd__xs_expr(&s, slice);
     qd__xs_free(&s);
@@ -203,9 +203,9 @@ static int cmp_i32(const void *a, const void *b) {
 }
 
 /* The distinct exponents of var in p, sorted; their number. */
-static size_t exponents(const qd_poly *p, uint32_t var, int32_t *out) {
+static size_t exponents(const qd__poly *p, uint32_t var, int32_t *out) {
     for (size_t t = 0; t < p->n; t++)
-        out[t] = qd_poly_exp(p, t, var);
+        out[t] = qd__poly_exp(p, t, var);
     qsort(out, p->n, sizeof *out, cmp_i32);
     size_t m = 0;
     for (size_t t = 0; t < p->n; t++)
@@ -227,20 +227,20 @@ static size_t bucket(const int32_t *ks, size_t m, int32_t k) {
 }
 
 /* sum_k c_k x^k from the buckets of p by the exponent of var. */
-static const qd_expr *gather(qd_xsess *s, const qd_poly *p, uint32_t var, const qd_expr *x) {
+static const qd_expr *gather(qd__xsess *s, const qd__poly *p, uint32_t var, const qd_expr *x) {
     qd_ctx *ctx = s->ctx;
     int32_t *ks = qd__malloc(ctx, (p->n + 1) * sizeof *ks);
     const qd_expr **terms = qd__malloc(ctx, (p->n + 1) * sizeof *terms);
-    qd_poly **parts = qd__malloc(ctx, (p->n + 1) * sizeof *parts);
+    qd__poly **parts = qd__malloc(ctx, (p->n + 1) * sizeof *parts);
     const qd_expr *r = NULL;
     if (!ks || !terms || !parts)
         goto done;
     size_t m = exponents(p, var, ks);
     for (size_t j = 0; j < m; j++)
-        if (!qd__xs_own(s, parts[j] = qd_poly_zero(ctx)))
+        if (!qd__xs_own(s, parts[j] = qd__poly_zero(ctx)))
             goto done;
     for (size_t t = 0; t < p->n; t++)
-        if (!qd_poly_append(ctx, parts[bucket(ks, m, qd_poly_exp(p, t, var))], p, t, var))
+        if (!qd__poly_append(ctx, parts[bucket(ks, m, qd__poly_exp(p, t, var))], p, t, var))
             goto done;
     for (size_t j = 0; j < m; j++) {
         const qd_expr *c = qd__xs_expr(s, parts[j]);
@@ -260,13 +260,13 @@ const qd_expr *qd_collect(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
     QD_ARGS(NULL, ctx && e && x);
     if (!e || !x)
         return NULL;
-    qd_xsess s;
+    qd__xsess s;
     qd__xs_init(&s, ctx);
     const qd_expr *r = NULL;
     long var = gen_of(&s, x, "collect");
-    const qd_poly *p = var >= 0 ? qd__xs_poly(&s, e) : NULL;
+    const qd__poly *p = var >= 0 ? qd__xs_poly(&s, e) : NULL;
     if (p)
-        r = p->n ? gather(&s, p, (uint32_t)var, x) : ctx->zero;
+        r = p->n ? gather(&s, p, (uint32_t)var, x) : ctx->sym->zero;
     qd__xs_free(&s);
     return r;
 }

@@ -127,10 +127,10 @@ static size_t ops_of(const qd_expr *e) {
 
 size_t qd_count_ops(const qd_expr *e) { QD_ARGS(0, e); return e ? ops(e) : 0; }
 
-static void count_dag(const qd_expr *e, qd_ptrmap *seen) {
-    if (qd_ptrmap_has(seen, e))
+static void count_dag(const qd_expr *e, qd__ptrmap *seen) {
+    if (qd__ptrmap_has(seen, e))
         return;
-    qd_ptrmap_put(seen, e, (void *)e);
+    qd__ptrmap_put(seen, e, (void *)e);
     for (size_t i = 0; i < e->nargs; i++)
         count_dag(e->args[i], seen);
 }
@@ -140,9 +140,9 @@ size_t qd_dag_size(qd_ctx *ctx, const qd_expr *e) {
     (void)ctx;
     if (!e)
         return 0;
-    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     count_dag(e, &seen);
     size_t n = seen.len;
-    qd_ptrmap_free(&seen);
+    qd__ptrmap_free(&seen);
     return n;
 }

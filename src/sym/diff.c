@@ -17,7 +17,7 @@
 typedef struct deriv {
     qd_ctx *ctx;
     const qd_expr *x;  /* the symbol, or NULL for d/dt */
-    qd_ptrmap memo;
+    qd__ptrmap memo;
 } deriv;
 
 static const qd_expr *d(deriv *dv, const qd_expr *e);
@@ -25,12 +25,12 @@ static const qd_expr *d(deriv *dv, const qd_expr *e);
 static const qd_expr *d_symbol(deriv *dv, const qd_expr *s) {
     qd_ctx *ctx = dv->ctx;
     if (dv->x)
-        return s == dv->x ? ctx->one : ctx->zero;
+        return s == dv->x ? ctx->sym->one : ctx->sym->zero;
     if (s->tag == QD_ROLE_TIME)
-        return ctx->one;
+        return ctx->sym->one;
     if (s->tag == QD_ROLE_COORD)
         return qd_jet(ctx, s, s->order + 1u);
-    return ctx->zero;
+    return ctx->sym->zero;
 }
 
 static const qd_expr *d_mul(deriv *dv, const qd_expr *e) {
@@ -67,7 +67,7 @@ static const qd_expr *d_pow(deriv *dv, const qd_expr *e) {
     if (!db || !dx)
         return NULL;
     if (qd_is_zero(dx)) /* (b^x)' = x b^(x-1) b' */
-        return qd_mul_n(ctx, 3, (const qd_expr *[]){x, qd_pow(ctx, b, qd_sub(ctx, x, ctx->one)), db});
+        return qd_mul_n(ctx, 3, (const qd_expr *[]){x, qd_pow(ctx, b, qd_sub(ctx, x, ctx->sym->one)), db});
     /* (b^x)' = b^x (x' log b + x b'/b) */
     const qd_expr *inner = qd_add(ctx, qd_mul(ctx, dx, qd_fn(ctx, QD_LOG, b)),
                                   qd_mul_n(ctx, 3, (const qd_expr *[]){x, db, qd_powi(ctx, b, -1)}));
@@ -76,7 +76,7 @@ static const qd_expr *d_pow(deriv *dv, const qd_expr *e) {
 
 /* d f(a)/da for the one-argument built-ins. */
 static const qd_expr *outer(qd_ctx *ctx, qd_func f, const qd_expr *a, const qd_expr *fa) {
-    const qd_expr *one = ctx->one;
+    const qd_expr *one = ctx->sym->one;
     switch (f) {
     case QD_SIN: return qd_fn(ctx, QD_COS, a);
     case QD_COS: return qd_neg(ctx, qd_fn(ctx, QD_SIN, a));
@@ -92,7 +92,7 @@ static const qd_expr *outer(qd_ctx *ctx, qd_func f, const qd_expr *a, const qd_e
     case QD_LOG: return qd_powi(ctx, a, -1);
     case QD_ABS: return qd_fn(ctx, QD_SIGN, a);
     case QD_SIGN:
-    case QD_STEP: return ctx->zero; /* almost everywhere: no delta function in the kernel */
+    case QD_STEP: return ctx->sym->zero; /* almost everywhere: no delta function in the kernel */
     default: return NULL;
     }
 }
@@ -121,7 +121,7 @@ static const qd_expr *d_user(deriv *dv, const qd_expr *e) {
     unsigned slots[64];
     for (size_t k = 0; k < ns; k++)
         slots[k] = e->u.fn.slots[k];
-    const qd_expr *sum = ctx->zero;
+    const qd_expr *sum = ctx->sym->zero;
     for (size_t i = 0; i < n && sum; i++) {
         const qd_expr *da = d(dv, e->args[i]);
         if (!da)
@@ -138,7 +138,7 @@ static const qd_expr *d_user(deriv *dv, const qd_expr *e) {
 static const qd_expr *d(deriv *dv, const qd_expr *e) {
     if (!e)
         return NULL;
-    const qd_expr *r = qd_ptrmap_get(&dv->memo, e);
+    const qd_expr *r = qd__ptrmap_get(&dv->memo, e);
     if (r)
         return r;
     qd_ctx *ctx = dv->ctx;
@@ -146,7 +146,7 @@ static const qd_expr *d(deriv *dv, const qd_expr *e) {
     case QD_RATIONAL:
     case QD_FLOAT:
     case QD_CONSTANT:
-        return ctx->zero;
+        return ctx->sym->zero;
     case QD_SYMBOL:
         return d_symbol(dv, e);
     case QD_ADD: {
@@ -167,7 +167,7 @@ static const qd_expr *d(deriv *dv, const qd_expr *e) {
     case QD_UFUNC:
     case QD_UDERIV: r = d_user(dv, e); break;
     }
-    if (r && !qd_ptrmap_put(&dv->memo, e, (void *)r)) {
+    if (r && !qd__ptrmap_put(&dv->memo, e, (void *)r)) {
         qd__oom(ctx);
         return NULL;
     }
@@ -179,7 +179,7 @@ static const qd_expr *derive(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
         return NULL;
     deriv dv = {ctx, x, QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
     const qd_expr *r = d(&dv, e);
-    qd_ptrmap_free(&dv.memo);
+    qd__ptrmap_free(&dv.memo);
     return r;
 }
 

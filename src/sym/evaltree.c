@@ -53,7 +53,7 @@ double qd__pow_value(double b, double e) {
 
 typedef struct walk {
     qd_ctx *ctx;
-    qd_ptrmap vals; /* node -> index into store */
+    qd__ptrmap vals; /* node -> index into store */
     double *store;
     size_t n, cap;
     qd_status st;
@@ -73,21 +73,21 @@ static double remember(walk *w, const qd_expr *e, double v) {
         w->cap = cap;
     }
     w->store[w->n] = v;
-    if (!qd_ptrmap_put(&w->vals, e, (void *)(uintptr_t)(w->n + 1)))
+    if (!qd__ptrmap_put(&w->vals, e, (void *)(uintptr_t)(w->n + 1)))
         w->st = QD_ERR_NOMEM;
     w->n++;
     return v;
 }
 
 static double value(walk *w, const qd_expr *e) {
-    uintptr_t k = (uintptr_t)qd_ptrmap_get(&w->vals, e);
+    uintptr_t k = (uintptr_t)qd__ptrmap_get(&w->vals, e);
     if (k)
         return w->store[k - 1];
     double v = 0;
     switch ((qd_kind)e->kind) {
     case QD_RATIONAL:
     case QD_FLOAT:
-        if (w->st == QD_OK && !qd__num_finite(w->ctx, e))
+        if (w->st == QD_OK && !qd__number_finite(w->ctx, e))
             w->st = QD_ERR_NUMERIC;
         return qd_number_value(e);
     case QD_CONSTANT:
@@ -135,7 +135,7 @@ qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const 
     for (size_t i = 0; i < n; i++)
         remember(&w, syms[i], vals[i]);
     *out = value(&w, e);
-    qd_ptrmap_free(&w.vals);
+    qd__ptrmap_free(&w.vals);
     qd__free(w.store);
     if (w.st == QD_ERR_NOMEM)
         qd__oom(ctx);

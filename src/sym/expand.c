@@ -33,20 +33,20 @@ typedef struct qd_powslot {
     const qd_expr *node;
 } qd_powslot;
 
-void qd__xs_init(qd_xsess *s, qd_ctx *ctx) {
+void qd__xs_init(qd__xsess *s, qd_ctx *ctx) {
     memset(s, 0, sizeof *s);
     s->ctx = ctx;
 }
 
-void qd__xs_free(qd_xsess *s) {
+void qd__xs_free(qd__xsess *s) {
     for (size_t i = 0; i < s->nowned; i++)
-        qd_poly_free(s->owned[i]);
+        qd__poly_free(s->owned[i]);
     qd__free(s->owned);
     qd__free(s->gens);
     qd__free(s->pows);
-    qd_ptrmap_free(&s->polys);
-    qd_ptrmap_free(&s->exprs);
-    qd_ptrmap_free(&s->genix);
+    qd__ptrmap_free(&s->polys);
+    qd__ptrmap_free(&s->exprs);
+    qd__ptrmap_free(&s->genix);
 }
 
 static bool grow(qd_ctx *ctx, void **v, size_t *cap, size_t need, size_t size) {
@@ -63,11 +63,11 @@ static bool grow(qd_ctx *ctx, void **v, size_t *cap, size_t need, size_t size) {
     return true;
 }
 
-bool qd__xs_own(qd_xsess *s, qd_poly *p) {
+bool qd__xs_own(qd__xsess *s, qd__poly *p) {
     if (!p)
         return false;
     if (!grow(s->ctx, (void **)&s->owned, &s->ocap, s->nowned + 1, sizeof *s->owned)) {
-        qd_poly_free(p);
+        qd__poly_free(p);
         qd__oom(s->ctx);
         return false;
     }
@@ -75,12 +75,12 @@ bool qd__xs_own(qd_xsess *s, qd_poly *p) {
     return true;
 }
 
-long qd__xs_gen(qd_xsess *s, const qd_expr *g) {
-    void *v = qd_ptrmap_get(&s->genix, g);
+long qd__xs_gen(qd__xsess *s, const qd_expr *g) {
+    void *v = qd__ptrmap_get(&s->genix, g);
     if (v)
         return (long)((uintptr_t)v - 1);
     if (!grow(s->ctx, (void **)&s->gens, &s->gcap, s->ngens + 1, sizeof *s->gens) ||
-        !qd_ptrmap_put(&s->genix, g, (void *)(uintptr_t)(s->ngens + 1))) {
+        !qd__ptrmap_put(&s->genix, g, (void *)(uintptr_t)(s->ngens + 1))) {
         qd__oom(s->ctx);
         return -1;
     }
@@ -91,26 +91,26 @@ long qd__xs_gen(qd_xsess *s, const qd_expr *g) {
 /* ---- expression -> polynomial ------------------------------------------------ */
 
 /* Memoize p (a new polynomial, now owned) as the polynomial of e. */
-static const qd_poly *own_as(qd_xsess *s, const qd_expr *e, qd_poly *p) {
+static const qd__poly *own_as(qd__xsess *s, const qd_expr *e, qd__poly *p) {
     if (!qd__xs_own(s, p))
         return NULL;
-    return qd_ptrmap_put(&s->polys, e, p) ? p : (qd__oom(s->ctx), NULL);
+    return qd__ptrmap_put(&s->polys, e, p) ? p : (qd__oom(s->ctx), NULL);
 }
 
-static const qd_poly *alias(qd_xsess *s, const qd_expr *e, const qd_poly *p) {
+static const qd__poly *alias(qd__xsess *s, const qd_expr *e, const qd__poly *p) {
     if (!p)
         return NULL;
-    return qd_ptrmap_put(&s->polys, e, (void *)p) ? p : (qd__oom(s->ctx), NULL);
+    return qd__ptrmap_put(&s->polys, e, (void *)p) ? p : (qd__oom(s->ctx), NULL);
 }
 
-static qd_poly *gen_poly(qd_xsess *s, const qd_expr *g, long k) {
+static qd__poly *gen_poly(qd__xsess *s, const qd_expr *g, long k) {
     long i = qd__xs_gen(s, g);
-    return i < 0 ? NULL : qd_poly_var(s->ctx, (uint32_t)i, (int32_t)k);
+    return i < 0 ? NULL : qd__poly_var(s->ctx, (uint32_t)i, (int32_t)k);
 }
 
-static const qd_poly *sum_poly(qd_xsess *s, const qd_expr *e) {
-    const qd_poly **ps = qd__malloc(s->ctx, e->nargs * sizeof *ps);
-    qd_poly *r = NULL;
+static const qd__poly *sum_poly(qd__xsess *s, const qd_expr *e) {
+    const qd__poly **ps = qd__malloc(s->ctx, e->nargs * sizeof *ps);
+    qd__poly *r = NULL;
     if (!ps) {
         qd__oom(s->ctx);
         return NULL;
@@ -119,18 +119,18 @@ static const qd_poly *sum_poly(qd_xsess *s, const qd_expr *e) {
     for (; i < e->nargs && (ps[i] = qd__xs_poly(s, e->args[i])); i++)
         ;
     if (i == e->nargs)
-        r = qd_poly_add_n(s->ctx, i, (const qd_poly *const *)ps);
+        r = qd__poly_add_n(s->ctx, i, (const qd__poly *const *)ps);
     qd__free(ps);
     return r ? own_as(s, e, r) : NULL;
 }
 
-static const qd_poly *prod_poly(qd_xsess *s, const qd_expr *e) {
-    const qd_poly *acc = qd__xs_poly(s, e->args[0]);
-    qd_poly *mine = NULL; /* acc when it is ours to free */
+static const qd__poly *prod_poly(qd__xsess *s, const qd_expr *e) {
+    const qd__poly *acc = qd__xs_poly(s, e->args[0]);
+    qd__poly *mine = NULL; /* acc when it is ours to free */
     for (size_t i = 1; acc && i < e->nargs; i++) {
-        const qd_poly *f = qd__xs_poly(s, e->args[i]);
-        qd_poly *next = f ? qd_poly_mul(s->ctx, acc, f) : NULL;
-        qd_poly_free(mine);
+        const qd__poly *f = qd__xs_poly(s, e->args[i]);
+        qd__poly *next = f ? qd__poly_mul(s->ctx, acc, f) : NULL;
+        qd__poly_free(mine);
         acc = mine = next;
     }
     return mine ? own_as(s, e, mine) : alias(s, e, acc);
@@ -146,12 +146,12 @@ static bool small_int(const qd_expr *x, long *n) {
 }
 
 /* b^n for an integer n: multiplied out, or the inverse of a sum as a generator. */
-static const qd_poly *int_pow(qd_xsess *s, const qd_expr *e, const qd_expr *b, long n) {
-    const qd_poly *pb = qd__xs_poly(s, b);
+static const qd__poly *int_pow(qd__xsess *s, const qd_expr *e, const qd_expr *b, long n) {
+    const qd__poly *pb = qd__xs_poly(s, b);
     if (!pb)
         return NULL;
     if (n >= 2 || (n <= -2 && pb->n == 1)) {
-        double bytes = qd_poly_pow_bytes(s->ctx, pb, n);
+        double bytes = qd__poly_pow_bytes(s->ctx, pb, n);
         if (bytes < 0)
             return NULL;
         if (bytes > QD_EXPAND_MAX_BYTES) { /* kept as it is, like an exponent beyond MAX_EXPAND_EXP */
@@ -162,20 +162,20 @@ static const qd_poly *int_pow(qd_xsess *s, const qd_expr *e, const qd_expr *b, l
         }
     }
     if (n >= 0 || pb->n == 1)
-        return own_as(s, e, qd_poly_pow(s->ctx, pb, n));
+        return own_as(s, e, qd__poly_pow(s->ctx, pb, n));
     if (pb->n == 0) {
         qd_ctx_error(s->ctx, QD_ERR_DIVZERO, "division by zero in expansion");
         return NULL;
     }
-    const qd_expr *g = qd_pow(s->ctx, qd__xs_expr(s, pb), s->ctx->minus_one);
+    const qd_expr *g = qd_pow(s->ctx, qd__xs_expr(s, pb), s->ctx->sym->minus_one);
     if (g && g->kind == QD_POW && qd_is_integer(g->args[1]))
         return own_as(s, e, gen_poly(s, g, -n));
-    const qd_poly *pg = g ? qd__xs_poly(s, g) : NULL;
-    return pg ? own_as(s, e, qd_poly_pow(s->ctx, pg, -n)) : NULL;
+    const qd__poly *pg = g ? qd__xs_poly(s, g) : NULL;
+    return pg ? own_as(s, e, qd__poly_pow(s->ctx, pg, -n)) : NULL;
 }
 
 /* The generator of r = b^x (not folded): b^(1/q) to the power p when x = p/q. */
-static qd_poly *root_gen(qd_xsess *s, const qd_expr *r) {
+static qd__poly *root_gen(qd__xsess *s, const qd_expr *r) {
     long p, q;
     if (qd_rational_get(r->args[1], &p, &q) && q <= MAX_EXPAND_EXP && p <= MAX_EXPAND_EXP &&
         p >= -MAX_EXPAND_EXP) {
@@ -188,7 +188,7 @@ static qd_poly *root_gen(qd_xsess *s, const qd_expr *r) {
     return gen_poly(s, r, 1);
 }
 
-static const qd_poly *pow_poly(qd_xsess *s, const qd_expr *e) {
+static const qd__poly *pow_poly(qd__xsess *s, const qd_expr *e) {
     long n;
     if (small_int(e->args[1], &n))
         return int_pow(s, e, e->args[0], n);
@@ -206,7 +206,7 @@ static const qd_poly *pow_poly(qd_xsess *s, const qd_expr *e) {
 }
 
 /* A call: a generator once its arguments are expanded. */
-static const qd_poly *call_poly(qd_xsess *s, const qd_expr *e) {
+static const qd__poly *call_poly(qd__xsess *s, const qd_expr *e) {
     const qd_expr *stack[8];
     const qd_expr **args = e->nargs <= 8 ? stack : qd__malloc(s->ctx, e->nargs * sizeof *args);
     if (!args) {
@@ -228,15 +228,15 @@ static const qd_poly *call_poly(qd_xsess *s, const qd_expr *e) {
     return alias(s, e, qd__xs_poly(s, r)); /* the call folded (sin(0), sin(-x)) */
 }
 
-const qd_poly *qd__xs_poly(qd_xsess *s, const qd_expr *e) {
+const qd__poly *qd__xs_poly(qd__xsess *s, const qd_expr *e) {
     if (!e)
         return NULL;
-    const qd_poly *p = qd_ptrmap_get(&s->polys, e);
+    const qd__poly *p = qd__ptrmap_get(&s->polys, e);
     if (p)
         return p;
     switch ((qd_kind)e->kind) {
     case QD_RATIONAL:
-    case QD_FLOAT: return own_as(s, e, qd_poly_number(s->ctx, e));
+    case QD_FLOAT: return own_as(s, e, qd__poly_number(s->ctx, e));
     case QD_SYMBOL:
     case QD_CONSTANT: return own_as(s, e, gen_poly(s, e, 1));
     case QD_ADD: return sum_poly(s, e);
@@ -254,7 +254,7 @@ static uint64_t pow_key(uint32_t var, int32_t exp) {
 }
 
 /* Generator var to the power exp, cached. */
-static const qd_expr *gen_pow(qd_xsess *s, uint32_t var, int32_t exp) {
+static const qd_expr *gen_pow(qd__xsess *s, uint32_t var, int32_t exp) {
     if (exp == 1)
         return s->gens[var];
     uint64_t key = (uint64_t)var << 32 | (uint32_t)exp;
@@ -321,11 +321,11 @@ static void sort_factors(const qd_expr **f, size_t n) {
 
 /* Term t of p as a node: the trusted constructor when the factors are
  * clean, else the constructors and another expansion. */
-static const qd_expr *term_expr(qd_xsess *s, const qd_poly *p, size_t t) {
-    const qd_pterm *pt = &p->terms[t];
-    const qd_expr *c = qd_poly_coef_is_one(p, t) ? NULL : qd_poly_coef_node(s->ctx, p, t);
+static const qd_expr *term_expr(qd__xsess *s, const qd__poly *p, size_t t) {
+    const qd__pterm *pt = &p->terms[t];
+    const qd_expr *c = qd__poly_coef_is_one(p, t) ? NULL : qd__poly_coef_node(s->ctx, p, t);
     if (pt->len == 0)
-        return c ? c : s->ctx->one;
+        return c ? c : s->ctx->sym->one;
     const qd_expr *stack[17], **f = pt->len < 17 ? stack : qd__malloc(s->ctx, (pt->len + 1) * sizeof *f);
     if (!f) {
         qd__oom(s->ctx);
@@ -335,7 +335,7 @@ static const qd_expr *term_expr(qd_xsess *s, const qd_poly *p, size_t t) {
     bool clean = true;
     f[0] = c;
     for (uint32_t i = 0; i < pt->len; i++) {
-        qd_pvar v = p->pool[pt->off + i];
+        qd__pvar v = p->pool[pt->off + i];
         if (!(fs[i] = gen_pow(s, v.var, v.exp)))
             goto done;
         clean = clean && clean_factor(s->gens[v.var], fs[i]);
@@ -357,7 +357,7 @@ done:
 
 /* A term's sort key: its (generator rank, exponent) pairs by rank. */
 typedef struct tkey {
-    const qd_pvar *k;
+    const qd__pvar *k;
     uint32_t len, term;
 } tkey;
 
@@ -379,7 +379,7 @@ static int node_cmp(const void *a, const void *b) {
 /* The ranks of the generators, when every one in p is a symbol, a call or a
  * constant: then factors compare by generator, then numerically by
  * exponent, exactly as qd_expr_cmp orders g^k. */
-static uint32_t *gen_ranks(qd_xsess *s, const qd_poly *p) {
+static uint32_t *gen_ranks(qd__xsess *s, const qd__poly *p) {
     uint32_t *rank = qd__malloc(s->ctx, (s->ngens + 1) * sizeof *rank), nused = 0;
     const qd_expr **used = qd__malloc(s->ctx, (s->ngens + 1) * sizeof *used);
     if (!rank || !used)
@@ -395,7 +395,7 @@ static uint32_t *gen_ranks(qd_xsess *s, const qd_poly *p) {
     }
     qsort(used, nused, sizeof *used, node_cmp);
     for (uint32_t i = 0; i < nused; i++)
-        rank[(uintptr_t)qd_ptrmap_get(&s->genix, used[i]) - 1] = i;
+        rank[(uintptr_t)qd__ptrmap_get(&s->genix, used[i]) - 1] = i;
     qd__free(used);
     return rank;
 fail:
@@ -406,22 +406,22 @@ fail:
 
 /* The terms of p in canonical order (when it can be read off cheaply), so
  * that qd_add_n finds them sorted; else in table order. */
-static uint32_t *term_order(qd_xsess *s, const qd_poly *p) {
+static uint32_t *term_order(qd__xsess *s, const qd__poly *p) {
     bool clean = qd_ctx_status(s->ctx) == QD_OK;
     uint32_t *order = qd__malloc(s->ctx, p->n * sizeof *order);
     uint32_t *rank = order ? gen_ranks(s, p) : NULL;
     tkey *keys = rank ? qd__malloc(s->ctx, p->n * sizeof *keys) : NULL;
-    qd_pvar *buf = keys ? qd__malloc(s->ctx, (p->plen + 1) * sizeof *buf) : NULL;
+    qd__pvar *buf = keys ? qd__malloc(s->ctx, (p->plen + 1) * sizeof *buf) : NULL;
     if (order && !buf && clean && qd__ctx_nomem(s->ctx))
         qd_ctx_clear_error(s->ctx); /* only this sort ran out: table order gives the same sum */
     for (size_t t = 0; order && t < p->n; t++)
         order[t] = (uint32_t)t;
     if (buf) {
         for (size_t t = 0; t < p->n; t++) {
-            const qd_pterm *pt = &p->terms[t];
-            qd_pvar *k = buf + pt->off;
+            const qd__pterm *pt = &p->terms[t];
+            qd__pvar *k = buf + pt->off;
             for (uint32_t i = 0; i < pt->len; i++) {
-                qd_pvar v = {rank[p->pool[pt->off + i].var], p->pool[pt->off + i].exp};
+                qd__pvar v = {rank[p->pool[pt->off + i].var], p->pool[pt->off + i].exp};
                 uint32_t j = i;
                 for (; j > 0 && k[j - 1].var > v.var; j--)
                     k[j] = k[j - 1];
@@ -439,11 +439,11 @@ static uint32_t *term_order(qd_xsess *s, const qd_poly *p) {
     return order;
 }
 
-const qd_expr *qd__xs_expr(qd_xsess *s, const qd_poly *p) {
+const qd_expr *qd__xs_expr(qd__xsess *s, const qd__poly *p) {
     if (!p)
         return NULL;
     if (p->n == 0)
-        return s->ctx->zero;
+        return s->ctx->sym->zero;
     if (p->n == 1)
         return term_expr(s, p, 0);
     const qd_expr **terms = qd__malloc(s->ctx, p->n * sizeof *terms);
@@ -461,14 +461,14 @@ const qd_expr *qd__xs_expr(qd_xsess *s, const qd_poly *p) {
     return r;
 }
 
-const qd_expr *qd__xs_expand(qd_xsess *s, const qd_expr *e) {
+const qd_expr *qd__xs_expand(qd__xsess *s, const qd_expr *e) {
     if (!e || e->nargs == 0)
         return e;
-    const qd_expr *r = qd_ptrmap_get(&s->exprs, e);
+    const qd_expr *r = qd__ptrmap_get(&s->exprs, e);
     if (r)
         return r;
     r = qd__xs_expr(s, qd__xs_poly(s, e));
-    if (r && !qd_ptrmap_put(&s->exprs, e, (void *)r)) {
+    if (r && !qd__ptrmap_put(&s->exprs, e, (void *)r)) {
         qd__oom(s->ctx);
         return NULL;
     }
@@ -479,7 +479,7 @@ const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e) {
     QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
-    qd_xsess s;
+    qd__xsess s;
     qd__xs_init(&s, ctx);
     qd_gmp_section outer = qd__gmp_enter(ctx);
     const qd_expr *r = qd__xs_expand(&s, e);

@@ -25,7 +25,7 @@ static const qd_expr *base_of(const qd_expr *f, const qd_expr **exp, qd_ctx *ctx
         *exp = f->args[1];
         return f->args[0];
     }
-    *exp = ctx->one;
+    *exp = ctx->sym->one;
     return f;
 }
 
@@ -59,7 +59,7 @@ static const qd_expr *min_exp(const qd_expr *a, const qd_expr *b) {
         return a;
     if (!qd__is_rational(a) || !qd__is_rational(b))
         return NULL;
-    return qd__num_cmp(a, b) <= 0 ? a : b;
+    return qd__number_cmp(a, b) <= 0 ? a : b;
 }
 
 static size_t find_common(qd_ctx *ctx, const qd_expr *s, common *out) {
@@ -128,7 +128,7 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *s) {
     factors(&s->args[0], &n0);
     const qd_expr *g = content(ctx, s);
     if (!g)
-        g = ctx->one;
+        g = ctx->sym->one;
     common *cm = qd__malloc(ctx, (n0 + 1) * sizeof *cm);
     const qd_expr **parts = qd__malloc(ctx, (s->nargs + n0 + 1) * sizeof *parts);
     const qd_expr *r = NULL;
@@ -164,8 +164,8 @@ const qd_expr *qd_factor_terms(qd_ctx *ctx, const qd_expr *e) {
     QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = qd__map(ctx, e, &memo, post_factor, NULL);
-    qd_ptrmap_free(&memo);
+    qd__ptrmap_free(&memo);
     return r;
 }

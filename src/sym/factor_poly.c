@@ -75,7 +75,7 @@ static const qd_expr *factor_at(const qd_expr *node, const fterm *t, size_t i) {
 
 static bool split_term(qd_ctx *ctx, const qd_expr *node, fterm *t) {
     t->ok = false;
-    t->coeff = ctx->one;
+    t->coeff = ctx->sym->one;
     t->fs = NULL;
     t->nf = 1;
     if (qd__is_num(node)) {
@@ -83,7 +83,7 @@ static bool split_term(qd_ctx *ctx, const qd_expr *node, fterm *t) {
         t->nf = 0;
     } else if (node->kind == QD_MUL) {
         size_t off = qd__is_num(node->args[0]) ? 1 : 0;
-        t->coeff = off ? node->args[0] : ctx->one;
+        t->coeff = off ? node->args[0] : ctx->sym->one;
         t->fs = node->args + off;
         t->nf = node->nargs - off;
     }
@@ -103,7 +103,7 @@ static bool split_term(qd_ctx *ctx, const qd_expr *node, fterm *t) {
         }
     }
     /* a subset of a canonical factor list is canonical */
-    t->den = nneg == 0 ? ctx->one : nneg == 1 ? neg[0] : qd__mul_raw(ctx, NULL, nneg, neg);
+    t->den = nneg == 0 ? ctx->sym->one : nneg == 1 ? neg[0] : qd__mul_raw(ctx, NULL, nneg, neg);
     if (!t->den)
         return false;
     t->deg = deg;
@@ -114,13 +114,13 @@ static bool split_term(qd_ctx *ctx, const qd_expr *node, fterm *t) {
 /* ---- one group as a polynomial -------------------------------------------- */
 
 typedef struct gens {
-    qd_ptrmap idx;                /* generator -> index + 1 */
+    qd__ptrmap idx;                /* generator -> index + 1 */
     const qd_expr **v;
     size_t n, cap;
 } gens;
 
 static bool gens_add(qd_ctx *ctx, gens *g, const qd_expr *x) {
-    if (qd_ptrmap_has(&g->idx, x))
+    if (qd__ptrmap_has(&g->idx, x))
         return true;
     if (g->n == g->cap) {
         size_t cap = g->cap ? 2 * g->cap : 16;
@@ -131,7 +131,7 @@ static bool gens_add(qd_ctx *ctx, gens *g, const qd_expr *x) {
         g->cap = cap;
     }
     g->v[g->n++] = x;
-    return qd_ptrmap_put(&g->idx, x, (void *)(uintptr_t)g->n);
+    return qd__ptrmap_put(&g->idx, x, (void *)(uintptr_t)g->n);
 }
 
 static int cmp_gen(const void *a, const void *b) {
@@ -200,7 +200,7 @@ static bool build_poly(fsum *s, const size_t *sel, size_t k, gens *g, fmpz_mpoly
                 continue;
             long e;
             const qd_expr *b = gen_of(f, &e);
-            exps[(uintptr_t)qd_ptrmap_get(&g->idx, b) - 1] += (ulong)e;
+            exps[(uintptr_t)qd__ptrmap_get(&g->idx, b) - 1] += (ulong)e;
         }
         mpz_divexact(z, lcm, mpq_denref(t->coeff->u.q));
         mpz_mul(z, z, mpq_numref(t->coeff->u.q));
@@ -293,7 +293,7 @@ static bool factor_poly(qd_ctx *ctx, const gens *g, const fmpz_mpoly_t p,
     }
     const qd_expr *cx = from_poly(ctx, g, c, m);
     for (int pass = 0; pass < 2; pass++) {
-        if (pass == 0 && den == ctx->one && trivial)
+        if (pass == 0 && den == ctx->sym->one && trivial)
             continue;
         if (pass == 1 && !split)
             break;
@@ -400,7 +400,7 @@ static bool try_parts(fsum *s, size_t *sel, size_t k, const qd_expr *den, gens *
             if (neg_power(f))
                 continue;
             long e;
-            size_t v = (uintptr_t)qd_ptrmap_get(&g->idx, gen_of(f, &e)) - 1;
+            size_t v = (uintptr_t)qd__ptrmap_get(&g->idx, gen_of(f, &e)) - 1;
             while (root[v] != v)
                 v = root[v];
             if (first == SIZE_MAX)
@@ -456,7 +456,7 @@ static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int dept
         goto out;
     qsort(g.v, g.n, sizeof *g.v, cmp_gen);
     for (size_t v = 0; v < g.n && ok; v++)
-        ok = qd_ptrmap_put(&g.idx, g.v[v], (void *)(uintptr_t)(v + 1));
+        ok = qd__ptrmap_put(&g.idx, g.v[v], (void *)(uintptr_t)(v + 1));
     if (!ok)
         goto out;
     fmpz_mpoly_ctx_t m;
@@ -481,7 +481,7 @@ static bool try_sel(fsum *s, size_t *sel, size_t k, const qd_expr *den, int dept
     if (ok && s->ops == before && depth == 0 && k >= 3)
         ok = try_parts(s, sel, k, den, &g, depth);
 out:
-    qd_ptrmap_free(&g.idx);
+    qd__ptrmap_free(&g.idx);
     qd__free(g.v);
     return ok;
 }
@@ -510,22 +510,22 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
     s.ops = qd_count_ops(e);
     /* each group: the exact, bounded terms over one denominator, chained
      * through next[] from the group's first term */
-    qd_ptrmap last = QD_PTRMAP_AL(qd__ctx_allocator(ctx)); /* den -> its latest term + 1 */
+    qd__ptrmap last = QD_PTRMAP_AL(qd__ctx_allocator(ctx)); /* den -> its latest term + 1 */
     for (size_t i = 0; i < n; i++) {
         next[i] = SIZE_MAX;
         if (!s.t[i].ok)
             continue;
-        size_t prev = (uintptr_t)qd_ptrmap_get(&last, s.t[i].den);
+        size_t prev = (uintptr_t)qd__ptrmap_get(&last, s.t[i].den);
         if (prev)
             next[prev - 1] = i;
-        if (!qd_ptrmap_put(&last, s.t[i].den, (void *)(uintptr_t)(i + 1))) {
-            qd_ptrmap_free(&last);
+        if (!qd__ptrmap_put(&last, s.t[i].den, (void *)(uintptr_t)(i + 1))) {
+            qd__ptrmap_free(&last);
             qd__oom(ctx);
             goto out;
         }
         done[i] = prev != 0; /* done: not the first of its group */
     }
-    qd_ptrmap_free(&last);
+    qd__ptrmap_free(&last);
     for (size_t i = 0; i < n; i++) {
         if (done[i] || !s.t[i].ok)
             continue;
@@ -537,7 +537,7 @@ static const qd_expr *factor_sum(qd_ctx *ctx, const qd_expr *e) {
         }
         /* a polynomial of degree 1 has nothing to factor but content, which
          * factor_terms finds; over a denominator the terms may still group */
-        bool worth = deg >= 2 || s.t[i].den != ctx->one;
+        bool worth = deg >= 2 || s.t[i].den != ctx->sym->one;
         if (k >= 2 && k <= MAX_TERMS && worth && !try_sel(&s, sel, k, s.t[i].den, 0)) {
             if (ctx->status == QD_OK)
                 qd__oom(ctx);
@@ -578,7 +578,7 @@ static const qd_expr *post_factor(qd_ctx *ctx, const qd_expr *e, void *data) {
     return e->kind == QD_ADD ? factor_sum(ctx, e) : e;
 }
 
-const qd_expr *qd__factor_polys(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo) {
+const qd_expr *qd__factor_polys(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo) {
     if (!e)
         return NULL;
     qd_gmp_section outer = qd__gmp_enter(ctx);

@@ -13,6 +13,6 @@
  * shorter by qd_count_ops; the rest of the sum is left as it is.  memo maps
  * node -> result and may be shared by calls on related expressions (the
  * result depends on the node alone).  NULL on error. */
-const qd_expr *qd__factor_polys(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo);
+const qd_expr *qd__factor_polys(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo);
 
 #endif

@@ -106,7 +106,7 @@ static const qd_expr *first_quadrant(qd_ctx *ctx, qd_func f, long n, long d) {
     if (k >= 0 && f == QD_SIN) /* sqrt(k)/2: 0, 1/2, sqrt(2)/2, sqrt(3)/2, 1 */
         return surd(ctx, k, 1, 2);
     if (k >= 0 && k < 4 && f == QD_TAN)
-        return k == 0 ? ctx->zero : k == 2 ? ctx->one : surd(ctx, tan_x[k], 1, tan_d[k]);
+        return k == 0 ? ctx->sym->zero : k == 2 ? ctx->sym->one : surd(ctx, tan_x[k], 1, tan_d[k]);
     const qd_expr *arg = qd_mul(ctx, qd_rat(ctx, n, d), qd_const(ctx, QD_PI));
     return arg ? call_node(ctx, f, 1, &arg) : NULL;
 }
@@ -152,7 +152,7 @@ static const qd_expr *peel_pi(qd_ctx *ctx, qd_func f, const qd_expr *s) {
     q = ((q % 4) + 4) % 4;
     if (f == QD_TAN) {
         const qd_expr *v = qd_fn(ctx, QD_TAN, rest);
-        return q % 2 ? qd_neg(ctx, qd_pow(ctx, v, ctx->minus_one)) : v;
+        return q % 2 ? qd_neg(ctx, qd_pow(ctx, v, ctx->sym->minus_one)) : v;
     }
     /* sin(y + q pi/2) and cos(y + q pi/2) = sin(y + (q + 1) pi/2) */
     q = (q + (f == QD_COS)) % 4;
@@ -168,13 +168,13 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool
         switch (f) {
         case QD_SIN: case QD_TAN: case QD_ASIN: case QD_ATAN: case QD_SINH:
         case QD_TANH: case QD_ABS: case QD_SIGN:
-            return ctx->zero;
+            return ctx->sym->zero;
         case QD_COS: case QD_COSH: case QD_EXP:
-            return ctx->one;
+            return ctx->sym->one;
         case QD_STEP:
-            return ctx->half;
+            return ctx->sym->half;
         case QD_ACOS:
-            return qd_mul(ctx, ctx->half, qd_const(ctx, QD_PI));
+            return qd_mul(ctx, ctx->sym->half, qd_const(ctx, QD_PI));
         case QD_LOG:
             qd_ctx_error(ctx, QD_ERR_DIVZERO, "log(0) is not a number");
             *err = true;
@@ -191,14 +191,14 @@ static const qd_expr *exact_value(qd_ctx *ctx, qd_func f, const qd_expr *a, bool
         if (f == QD_STEP)
             return qd_rat(ctx, qd_number_sign(a) + 1, 2);
         if (qd_is_one(a) && (f == QD_LOG || f == QD_ACOS))
-            return ctx->zero;
+            return ctx->sym->zero;
         return NULL;
     }
     long num, den;
     if (is_circular(f) && pi_coeff(a, &num, &den))
         return pi_multiple(ctx, f, num, den);
     if (f == QD_LOG && a->kind == QD_CONSTANT && a->tag == QD_E)
-        return ctx->one;
+        return ctx->sym->one;
     if (f == QD_LOG && a->kind == QD_FUNC && a->tag == QD_EXP)
         return a->args[0];
     if (f == QD_EXP && a->kind == QD_FUNC && a->tag == QD_LOG)
@@ -243,7 +243,7 @@ const qd_expr *qd_fn2(qd_ctx *ctx, qd_func f, const qd_expr *y, const qd_expr *x
     if (qd__is_num(y) && qd__is_num(x) && (y->kind == QD_FLOAT || x->kind == QD_FLOAT))
         return qd_float(ctx, atan2(qd_number_value(y), qd_number_value(x)));
     if (qd_is_zero(y) && y->kind == QD_RATIONAL && qd__is_num(x) && qd_number_sign(x) > 0)
-        return ctx->zero;
+        return ctx->sym->zero;
     if (qd__has_minus(y)) /* atan2 is odd in y */
         return qd_neg(ctx, qd_fn2(ctx, f, qd_neg(ctx, y), x));
     const qd_expr *args[2] = {y, x};

@@ -30,7 +30,7 @@ static const qd_expr *int_pow_linear(qd_ctx *ctx, const qd_expr *b, const qd_exp
     const qd_expr *a = slope(ctx, b, x);
     if (!a)
         return NULL;
-    const qd_expr *n1 = qd_add(ctx, n, ctx->one);
+    const qd_expr *n1 = qd_add(ctx, n, ctx->sym->one);
     if (n1 && qd_is_zero(n1))
         return qd_div(ctx, qd_fn(ctx, QD_LOG, b), a);
     return qd_div(ctx, qd_pow(ctx, b, n1), qd_mul(ctx, a, n1));
@@ -64,7 +64,7 @@ static const qd_expr *int_func(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) 
 /* One elementary factor f that depends on x. */
 static const qd_expr *int_factor(qd_ctx *ctx, const qd_expr *f, const qd_expr *x) {
     if (f == x)
-        return qd_mul(ctx, ctx->half, qd_powi(ctx, x, 2));
+        return qd_mul(ctx, ctx->sym->half, qd_powi(ctx, x, 2));
     if (f->kind == QD_FUNC)
         return int_func(ctx, f, x);
     if (f->kind != QD_POW)
@@ -77,7 +77,7 @@ static const qd_expr *int_factor(qd_ctx *ctx, const qd_expr *f, const qd_expr *x
 
 /* A product: the factors free of x times one elementary factor. */
 static const qd_expr *int_mul(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) {
-    const qd_expr *dep = NULL, *rest = ctx->one;
+    const qd_expr *dep = NULL, *rest = ctx->sym->one;
     for (size_t i = 0; i < e->nargs; i++) {
         const qd_expr *f = e->args[i];
         if (!qd_has(f, x)) {

@@ -1,5 +1,6 @@
 /*
- * src/sym/intern.c - the context and its unique table (hash-consing).
+ * src/sym/intern.c - the kernel's part of a context: its unique table
+ * (hash-consing) and interned names, attached to base's context (base/ctx.h).
  *
  * Every node goes through qd__intern: the node's hash is computed from its
  * kind, its payload and its arguments' hashes (never from addresses, so it is
@@ -9,10 +10,8 @@
  */
 #include "node.h"
 #include "../base/args.h"
-#include "../base/diag.h" /* qd__diag_line_col */
 
 #include <assert.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -102,22 +101,13 @@ static bool node_equal(const qd_expr *a, const qd_expr *p, uint64_t h, size_t na
     return true;
 }
 
-void qd__oom(qd_ctx *ctx) { qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory"); }
-
-void *qd__alloc(qd_ctx *ctx, size_t size) {
-    void *p = qd_arena_alloc(&ctx->arena, size);
-    if (!p)
-        qd__oom(ctx);
-    return p;
-}
-
 static bool table_grow(qd_ctx *ctx) {
-    size_t cap = ctx->table_cap ? ctx->table_cap * 2 : 4096;
+    size_t cap = ctx->sym->table_cap ? ctx->sym->table_cap * 2 : 4096;
     struct qd__slot *t = qd__mem_calloc(ctx->alloc, cap, sizeof *t);
     if (!t)
         return false;
-    for (size_t i = 0; i < ctx->table_cap; i++) {
-        struct qd__slot slot = ctx->table[i];
+    for (size_t i = 0; i < ctx->sym->table_cap; i++) {
+        struct qd__slot slot = ctx->sym->table[i];
         if (!slot.e)
             continue;
         size_t j = (size_t)slot.hash & (cap - 1);
@@ -125,22 +115,22 @@ static bool table_grow(qd_ctx *ctx) {
             j = (j + 1) & (cap - 1);
         t[j] = slot;
     }
-    qd__free(ctx->table);
-    ctx->table = t;
-    ctx->table_cap = cap;
+    qd__free(ctx->sym->table);
+    ctx->sym->table = t;
+    ctx->sym->table_cap = cap;
     return true;
 }
 
 static bool remember_rational(qd_ctx *ctx, qd_expr *e) {
-    if (ctx->nrat == ctx->rat_cap) {
-        size_t cap = ctx->rat_cap ? ctx->rat_cap * 2 : 256;
-        qd_expr **r = qd__mem_realloc(ctx->alloc, ctx->rationals, cap * sizeof *r);
+    if (ctx->sym->nrat == ctx->sym->rat_cap) {
+        size_t cap = ctx->sym->rat_cap ? ctx->sym->rat_cap * 2 : 256;
+        qd_expr **r = qd__mem_realloc(ctx->alloc, ctx->sym->rationals, cap * sizeof *r);
         if (!r)
             return false;
-        ctx->rationals = r;
-        ctx->rat_cap = cap;
+        ctx->sym->rationals = r;
+        ctx->sym->rat_cap = cap;
     }
-    ctx->rationals[ctx->nrat++] = e;
+    ctx->sym->rationals[ctx->sym->nrat++] = e;
     return true;
 }
 
@@ -149,15 +139,15 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
     for (size_t i = 0; i < nargs; i++)
         if (!args[i])
             return NULL;
-    if ((ctx->table_len + 1) * 2 > ctx->table_cap && !table_grow(ctx)) {
+    if ((ctx->sym->table_len + 1) * 2 > ctx->sym->table_cap && !table_grow(ctx)) {
         qd__oom(ctx);
         return NULL;
     }
     uint64_t h = node_hash(proto, nargs, args);
-    size_t i = (size_t)h & (ctx->table_cap - 1);
-    for (; ctx->table[i].e; i = (i + 1) & (ctx->table_cap - 1))
-        if (ctx->table[i].hash == h && node_equal(ctx->table[i].e, proto, h, nargs, args))
-            return ctx->table[i].e;
+    size_t i = (size_t)h & (ctx->sym->table_cap - 1);
+    for (; ctx->sym->table[i].e; i = (i + 1) & (ctx->sym->table_cap - 1))
+        if (ctx->sym->table[i].hash == h && node_equal(ctx->sym->table[i].e, proto, h, nargs, args))
+            return ctx->sym->table[i].e;
     assert(qd__is_canonical(proto, nargs, args));
 
     qd_expr *e = qd__alloc(ctx, sizeof *e + nargs * sizeof e->args[0]);
@@ -182,199 +172,98 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
         memcpy(slots, proto->u.fn.slots, proto->u.fn.nslots * sizeof *slots);
         e->u.fn.slots = slots;
     }
-    ctx->table[i] = (struct qd__slot){h, e};
-    ctx->table_len++;
+    ctx->sym->table[i] = (struct qd__slot){h, e};
+    ctx->sym->table_len++;
     return e;
 }
 
 /* Names are interned too, so symbols and functions compare names by pointer. */
 const char *qd__intern_name(qd_ctx *ctx, const char *name) {
-    if ((ctx->names_len + 1) * 2 > ctx->names_cap) {
-        size_t cap = ctx->names_cap ? ctx->names_cap * 2 : 256;
+    if ((ctx->sym->names_len + 1) * 2 > ctx->sym->names_cap) {
+        size_t cap = ctx->sym->names_cap ? ctx->sym->names_cap * 2 : 256;
         const char **t = qd__mem_calloc(ctx->alloc, cap, sizeof *t);
         if (!t) {
             qd__oom(ctx);
             return NULL;
         }
-        for (size_t i = 0; i < ctx->names_cap; i++) {
-            if (!ctx->names[i])
+        for (size_t i = 0; i < ctx->sym->names_cap; i++) {
+            if (!ctx->sym->names[i])
                 continue;
-            size_t j = (size_t)hash_str(ctx->names[i]) & (cap - 1);
+            size_t j = (size_t)hash_str(ctx->sym->names[i]) & (cap - 1);
             while (t[j])
                 j = (j + 1) & (cap - 1);
-            t[j] = ctx->names[i];
+            t[j] = ctx->sym->names[i];
         }
-        qd__free(ctx->names);
-        ctx->names = t;
-        ctx->names_cap = cap;
+        qd__free(ctx->sym->names);
+        ctx->sym->names = t;
+        ctx->sym->names_cap = cap;
     }
-    size_t i = (size_t)hash_str(name) & (ctx->names_cap - 1);
-    for (; ctx->names[i]; i = (i + 1) & (ctx->names_cap - 1))
-        if (strcmp(ctx->names[i], name) == 0)
-            return ctx->names[i];
+    size_t i = (size_t)hash_str(name) & (ctx->sym->names_cap - 1);
+    for (; ctx->sym->names[i]; i = (i + 1) & (ctx->sym->names_cap - 1))
+        if (strcmp(ctx->sym->names[i], name) == 0)
+            return ctx->sym->names[i];
     size_t n = strlen(name) + 1;
     char *s = qd__alloc(ctx, n);
     if (!s)
         return NULL;
     memcpy(s, name, n);
-    ctx->names[i] = s;
-    ctx->names_len++;
+    ctx->sym->names[i] = s;
+    ctx->sym->names_len++;
     return s;
 }
 
 const char *qd__find_name(const qd_ctx *ctx, const char *name) {
-    if (!ctx->names_cap)
+    if (!ctx->sym->names_cap)
         return NULL;
-    size_t i = (size_t)hash_str(name) & (ctx->names_cap - 1);
-    for (; ctx->names[i]; i = (i + 1) & (ctx->names_cap - 1))
-        if (strcmp(ctx->names[i], name) == 0)
-            return ctx->names[i];
+    size_t i = (size_t)hash_str(name) & (ctx->sym->names_cap - 1);
+    for (; ctx->sym->names[i]; i = (i + 1) & (ctx->sym->names_cap - 1))
+        if (strcmp(ctx->sym->names[i], name) == 0)
+            return ctx->sym->names[i];
     return NULL;
+}
+
+/* The kernel's state, released by qd_ctx_free (base/ctx.c) through the
+ * context's detach hook. */
+static void sym_detach(qd_ctx *ctx) {
+    qd__sym_state *S = ctx->sym;
+    if (!S)
+        return;
+    for (size_t i = 0; i < S->nrat; i++)
+        mpq_clear(S->rationals[i]->u.q);
+    qd__free(S->rationals);
+    qd__free(S->table);
+    qd__free(S->names);
+    qd__ptrmap_free(&S->symtab);
+    qd__free(S);
+    ctx->sym = NULL;
 }
 
 qd_ctx *qd_ctx_new(void) { return qd_ctx_new_with(NULL); }
 
+/* A bare context from base, with the unique table attached. */
 qd_ctx *qd_ctx_new_with(const qd_allocator *a) {
     qd__gmp_install();
-    qd_ctx *ctx = qd__mem_calloc(a, 1, sizeof *ctx);
+    qd_ctx *ctx = qd__ctx_create(a);
     if (!ctx)
         return NULL;
-    ctx->alloc = a;
-    ctx->symtab.al = a;
-    qd_arena_init(&ctx->arena, a);
-    ctx->zero = qd_int(ctx, 0);
-    ctx->one = qd_int(ctx, 1);
-    ctx->minus_one = qd_int(ctx, -1);
-    ctx->half = qd_rat(ctx, 1, 2);
-    ctx->t = qd_time(ctx);
-    if (!ctx->zero || !ctx->one || !ctx->minus_one || !ctx->half || !ctx->t) {
+    qd__sym_state *S = qd__mem_calloc(a, 1, sizeof *S);
+    if (!S) {
+        qd_ctx_free(ctx);
+        return NULL;
+    }
+    S->symtab.al = a;
+    ctx->sym = S;
+    ctx->detach = sym_detach;
+    S->zero = qd_int(ctx, 0);
+    S->one = qd_int(ctx, 1);
+    S->minus_one = qd_int(ctx, -1);
+    S->half = qd_rat(ctx, 1, 2);
+    S->t = qd_time(ctx);
+    if (!S->zero || !S->one || !S->minus_one || !S->half || !S->t) {
         qd_ctx_free(ctx);
         return NULL;
     }
     return ctx;
 }
 
-void qd_ctx_free(qd_ctx *ctx) {
-    if (!ctx)
-        return;
-    for (size_t i = 0; i < ctx->nrat; i++)
-        mpq_clear(ctx->rationals[i]->u.q);
-    qd__free(ctx->rationals);
-    qd__free(ctx->table);
-    qd__free(ctx->names);
-    qd_ptrmap_free(&ctx->symtab);
-    qd_arena_free(&ctx->arena);
-    qd__free(ctx);
-}
-
-/* ---- the context's allocation path (mem.h) ------------------------------ */
-
-const qd_allocator *qd__ctx_allocator(const qd_ctx *ctx) { return ctx->alloc; }
-
-void *qd__malloc(qd_ctx *ctx, size_t size) {
-    void *p = qd__mem_malloc(ctx->alloc, size);
-    if (!p)
-        qd__oom(ctx);
-    return p;
-}
-
-void *qd__calloc(qd_ctx *ctx, size_t n, size_t size) {
-    void *p = qd__mem_calloc(ctx->alloc, n, size);
-    if (!p)
-        qd__oom(ctx);
-    return p;
-}
-
-void *qd__realloc(qd_ctx *ctx, void *p, size_t size) {
-    void *q = qd__mem_realloc(ctx->alloc, p, size);
-    if (!q)
-        qd__oom(ctx);
-    return q;
-}
-
-char *qd__strdup(qd_ctx *ctx, const char *s) {
-    size_t n = strlen(s) + 1;
-    char *d = qd__malloc(ctx, n);
-    if (d)
-        memcpy(d, s, n);
-    return d;
-}
-
-qd_status qd_ctx_status(const qd_ctx *ctx) { QD_ARGS(QD_ERR_ARG, ctx); return ctx->status; }
-const char *qd_ctx_message(const qd_ctx *ctx) { QD_ARGS("", ctx); return ctx->diag.message; }
-const qd_diag *qd_ctx_diag(const qd_ctx *ctx) { QD_ARGS(NULL, ctx); return &ctx->diag; }
-size_t qd_ctx_node_count(const qd_ctx *ctx) { QD_ARGS(0, ctx); return ctx->table_len; }
-
-void qd_ctx_clear_error(qd_ctx *ctx) {
-    QD_ARGS(, ctx);
-    ctx->status = QD_OK;
-    memset(&ctx->diag, 0, sizeof ctx->diag);
-}
-
-bool qd__ctx_nomem(const qd_ctx *ctx) { return ctx->status == QD_ERR_NOMEM; }
-
-bool qd__ctx_recover(qd_ctx *ctx) {
-    if (ctx->status == QD_ERR_NOMEM)
-        return false;
-    qd_ctx_clear_error(ctx);
-    return true;
-}
-
-void qd_ctx_error(qd_ctx *ctx, qd_status st, const char *fmt, ...) {
-    QD_ARGS(, ctx && fmt);
-    if (ctx->status != QD_OK)
-        return; /* the first error is the one that explains the rest */
-    ctx->status = st;
-    memset(&ctx->diag, 0, sizeof ctx->diag);
-    ctx->diag.status = st;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(ctx->diag.message, sizeof ctx->diag.message, fmt, ap);
-    va_end(ap);
-}
-
-void qd_ctx_error_about(qd_ctx *ctx, qd_subject subject, size_t index, const char *name,
-                        qd_reason why, const char *hint) {
-    QD_ARGS(, ctx);
-    qd_diag *d = &ctx->diag;
-    if (ctx->status == QD_OK || (d->subject != QD_SUBJECT_NONE && d->subject != QD_SUBJECT_TEXT))
-        return; /* no error to qualify, or it already says what it is about */
-    d->subject = subject;
-    d->index = index;
-    snprintf(d->name, sizeof d->name, "%s", name ? name : "");
-    d->reason = why;
-    if (hint)
-        snprintf(d->hint, sizeof d->hint, "%s", hint);
-}
-
-void qd_ctx_error_at(qd_ctx *ctx, const char *text, size_t offset, size_t length) {
-    QD_ARGS(, ctx && text);
-    qd_diag *d = &ctx->diag;
-    if (ctx->status == QD_OK || d->located || !text)
-        return;
-    size_t n = strlen(text);
-    d->located = true;
-    d->offset = offset < n ? offset : n;
-    d->length = length ? length : 1;
-    qd__diag_line_col(text, d->offset, &d->line, &d->col, NULL); /* \n, \r\n or \r */
-    if (d->subject == QD_SUBJECT_NONE)
-        d->subject = QD_SUBJECT_TEXT;
-}
-
-const char *qd_status_str(qd_status st) {
-    switch (st) {
-    case QD_OK: return "ok";
-    case QD_ERR_NOMEM: return "out of memory";
-    case QD_ERR_DIVZERO: return "division by zero";
-    case QD_ERR_ARG: return "invalid argument";
-    case QD_ERR_PARSE: return "syntax error";
-    case QD_ERR_NONLINEAR: return "not linear";
-    case QD_ERR_UNBOUND: return "symbol without a value";
-    case QD_ERR_SINGULAR: return "singular matrix";
-    case QD_ERR_NUMERIC: return "numerical failure";
-    case QD_ERR_TOOBIG: return "result too large";
-    case QD_ERR_UNSUPPORTED: return "not supported here";
-    case QD_ERR_IO: return "write error";
-    }
-    return "unknown status";
-}
+size_t qd_ctx_node_count(const qd_ctx *ctx) { QD_ARGS(0, ctx); return ctx->sym->table_len; }

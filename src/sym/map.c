@@ -28,9 +28,9 @@ const qd_expr *qd__rebuild(qd_ctx *ctx, const qd_expr *e, const qd_expr *const *
     }
 }
 
-const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_fn post,
+const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo, qd__post_fn post,
                        void *data) {
-    const qd_expr *r = qd_ptrmap_get(memo, e);
+    const qd_expr *r = qd__ptrmap_get(memo, e);
     if (r || !e->nargs)
         return r ? r : e;
     const qd_expr *stack[8];
@@ -49,7 +49,7 @@ const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_
     r = changed ? qd__rebuild(ctx, e, args) : e;
     if (r && post)
         r = post(ctx, r, data);
-    if (r && !qd_ptrmap_put(memo, e, (void *)r)) {
+    if (r && !qd__ptrmap_put(memo, e, (void *)r)) {
         qd__oom(ctx);
         r = NULL;
     }

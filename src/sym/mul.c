@@ -85,12 +85,12 @@ static bool gather(qd_ctx *ctx, size_t n, const qd_expr *const *xs, const qd_exp
     for (size_t i = 0; i < n; i++) {
         const qd_expr *x = xs[i];
         if (qd__is_num(x)) {
-            if (!(*coeff = qd__num_mul(ctx, *coeff, x)))
+            if (!(*coeff = qd__number_mul(ctx, *coeff, x)))
                 return false;
         } else if (x->kind == QD_MUL) {
             for (size_t j = 0; j < x->nargs; j++) {
                 if (qd__is_num(x->args[j])) {
-                    if (!(*coeff = qd__num_mul(ctx, *coeff, x->args[j])))
+                    if (!(*coeff = qd__number_mul(ctx, *coeff, x->args[j])))
                         return false;
                 } else if (!push(ctx, v, len, cap, x->args[j])) {
                     qd__oom(ctx);
@@ -111,11 +111,11 @@ const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
         if (!xs[i])
             return NULL;
     if (n == 0)
-        return ctx->one;
+        return ctx->sym->one;
     if (n == 1)
         return xs[0];
 
-    const qd_expr *coeff = ctx->one;
+    const qd_expr *coeff = ctx->sym->one;
     factor *v = NULL;
     size_t len = 0, cap = 0;
     const qd_expr *r = NULL, **out = NULL;
@@ -139,9 +139,9 @@ const qd_expr *qd_mul_n(qd_ctx *ctx, size_t n, const qd_expr *const *xs) {
         size_t j = i + 1;
         const qd_expr *f = v[i].node;
         if (j < len && v[j].base == v[i].base) {
-            const qd_expr *e = v[i].exp ? v[i].exp : ctx->one;
+            const qd_expr *e = v[i].exp ? v[i].exp : ctx->sym->one;
             for (; j < len && v[j].base == v[i].base; j++)
-                e = qd_add(ctx, e, v[j].exp ? v[j].exp : ctx->one);
+                e = qd_add(ctx, e, v[j].exp ? v[j].exp : ctx->sym->one);
             f = qd_pow(ctx, v[i].base, e);
             if (!f)
                 goto done;
@@ -185,5 +185,5 @@ const qd_expr *qd_div(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
         qd_ctx_error(ctx, QD_ERR_DIVZERO, "division by zero");
         return NULL;
     }
-    return qd_mul(ctx, a, qd_pow(ctx, b, ctx->minus_one));
+    return qd_mul(ctx, a, qd_pow(ctx, b, ctx->sym->minus_one));
 }

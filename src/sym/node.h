@@ -40,6 +40,7 @@
 #include "../base/arena.h"
 #include "../base/ptrmap.h"
 #include "../base/mem.h"
+#include "../base/ctx.h"
 
 struct qd_expr {
     uint64_t hash;
@@ -74,15 +75,16 @@ typedef struct qd_symtab_entry {
     const qd_expr *sym;
 } qd_symtab_entry;
 
-struct qd_ctx {
-    const qd_allocator *alloc;   /* NULL: the C library's (mem.h) */
-    qd_arena arena;
+/* The kernel's part of a context (base/ctx.h's ctx->sym), attached by
+ * qd_ctx_new_with and released by qd_ctx_free through ctx->detach. */
+typedef struct qd__sym_state qd__sym_state;
+struct qd__sym_state {
     /* unique table: open addressing over (hash, node) slots, the hash kept
      * beside the pointer so that a probe reads the node only on a match */
     struct qd__slot { uint64_t hash; const qd_expr *e; } *table;
     size_t table_cap, table_len;
     /* symbols by name */
-    qd_ptrmap symtab;            /* interned name -> its symbol */
+    qd__ptrmap symtab;            /* interned name -> its symbol */
     const char **names;          /* interned names, open addressing */
     size_t names_cap, names_len;
     /* rational nodes, for mpq_clear at the end */
@@ -90,8 +92,6 @@ struct qd_ctx {
     size_t nrat, rat_cap;
     /* a few nodes every operation uses */
     const qd_expr *zero, *one, *minus_one, *half, *t;
-    qd_status status;
-    qd_diag diag;                /* the first error's record; diag.status == status */
     const char *tname;           /* how t prints (qd_print_set_time_name); NULL: "t" */
 };
 
@@ -103,8 +103,6 @@ const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
                           const qd_expr *const *args);
 const char *qd__intern_name(qd_ctx *ctx, const char *name);
 const char *qd__find_name(const qd_ctx *ctx, const char *name); /* NULL if never interned */
-void *qd__alloc(qd_ctx *ctx, size_t size);
-void qd__oom(qd_ctx *ctx);
 uint64_t qd__hash_mix(uint64_t h, uint64_t v);
 /* The forms listed at the top of this file (canon.c); qd__intern asserts it
  * on every new node unless NDEBUG is defined. */
@@ -116,14 +114,14 @@ bool qd__is_canonical(const qd_expr *proto, size_t nargs, const qd_expr *const *
  * bits (2^26: 8 MiB), so GMP is never asked for more. */
 #define QD_MAX_FOLD_BITS (1UL << 26)
 const qd_expr *qd__rat_mpq(qd_ctx *ctx, const mpq_t q);
-const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
-const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+const qd_expr *qd__number_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
+const qd_expr *qd__number_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b);
 /* a^e for numbers; NULL result with *exact=false when it does not fold. */
-const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded);
-int qd__num_cmp(const qd_expr *a, const qd_expr *b);
+const qd_expr *qd__number_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded);
+int qd__number_cmp(const qd_expr *a, const qd_expr *b);
 /* Whether number e is a finite double; else QD_ERR_NUMERIC recorded, naming
  * its size ("the number 10^100000 overflows a double"). */
-bool qd__num_finite(qd_ctx *ctx, const qd_expr *e);
+bool qd__number_finite(qd_ctx *ctx, const qd_expr *e);
 bool qd__is_rational(const qd_expr *e);
 bool qd__is_float(const qd_expr *e);
 
@@ -170,7 +168,7 @@ double qd__step_value(double x);                       /* step(x), 1/2 at 0 */
 /* ---- map.c ---------------------------------------------------------------- */
 /* Rewrite e bottom-up (map.c has the contract); post may be NULL. */
 typedef const qd_expr *(*qd__post_fn)(qd_ctx *ctx, const qd_expr *e, void *data);
-const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd_ptrmap *memo, qd__post_fn post,
+const qd_expr *qd__map(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo, qd__post_fn post,
                        void *data);
 double qd__pow_value(double b, double e);
 

@@ -148,7 +148,7 @@ const qd_expr *qd_const(qd_ctx *ctx, qd_constant c) {
 bool qd__is_rational(const qd_expr *e) { return e->kind == QD_RATIONAL; }
 bool qd__is_float(const qd_expr *e) { return e->kind == QD_FLOAT; }
 
-const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
+const qd_expr *qd__number_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
     if (a->kind == QD_RATIONAL && b->kind == QD_RATIONAL) {
         if (mpq_sgn(a->u.q) == 0)
             return b;
@@ -164,11 +164,11 @@ const qd_expr *qd__num_add(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
     return qd_float(ctx, qd_number_value(a) + qd_number_value(b));
 }
 
-const qd_expr *qd__num_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
+const qd_expr *qd__number_mul(qd_ctx *ctx, const qd_expr *a, const qd_expr *b) {
     if (a->kind == QD_RATIONAL && b->kind == QD_RATIONAL) {
-        if (a == ctx->one)
+        if (a == ctx->sym->one)
             return b;
-        if (b == ctx->one)
+        if (b == ctx->sym->one)
             return a;
         mpq_t r;
         mpq_init(r);
@@ -188,7 +188,7 @@ static bool exact_root(mpz_t out, const mpz_t z, unsigned long k) {
 /* Largest exponent we fold exactly: beyond it the number is astronomically
  * large and almost surely a modelling mistake; keep it as a power. */
 
-const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded) {
+const qd_expr *qd__number_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool *folded) {
     *folded = false;
     if (a->kind == QD_FLOAT || e->kind == QD_FLOAT) {
         double r = pow(qd_number_value(a), qd_number_value(e));
@@ -217,7 +217,7 @@ const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool
             return NULL;
         }
         *folded = true;
-        return ctx->zero;
+        return ctx->sym->zero;
     }
     /* too many bits to fold (after the root below they only shrink) */
     double bits = (double)ap * (double)mpz_sizeinbase(mpq_numref(a->u.q), 2) / (double)d;
@@ -261,7 +261,7 @@ const qd_expr *qd__num_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, bool
     return r;
 }
 
-int qd__num_cmp(const qd_expr *a, const qd_expr *b) {
+int qd__number_cmp(const qd_expr *a, const qd_expr *b) {
     if (a->kind == QD_RATIONAL && b->kind == QD_RATIONAL)
         return mpq_cmp(a->u.q, b->u.q);
     double x = qd_number_value(a), y = qd_number_value(b);
@@ -315,7 +315,7 @@ static double rational_value(const mpq_t q) {
     return mpq_get_d(q);
 }
 
-bool qd__num_finite(qd_ctx *ctx, const qd_expr *e) {
+bool qd__number_finite(qd_ctx *ctx, const qd_expr *e) {
     if (e->kind != QD_RATIONAL || isfinite(rational_value(e->u.q)))
         return true;
     signed long en, ed;

@@ -24,7 +24,7 @@ typedef struct cval {
 
 /* ---- memory ----------------------------------------------------------------- */
 
-void qd_poly_free(qd_poly *p) {
+void qd__poly_free(qd__poly *p) {
     if (!p)
         return;
     for (size_t i = 0; i < p->nbig; i++) {
@@ -37,8 +37,8 @@ void qd_poly_free(qd_poly *p) {
     qd__free(p);
 }
 
-qd_poly *qd_poly_zero(qd_ctx *ctx) {
-    qd_poly *p = qd__calloc(ctx, 1, sizeof *p);
+qd__poly *qd__poly_zero(qd_ctx *ctx) {
+    qd__poly *p = qd__calloc(ctx, 1, sizeof *p);
     if (!p)
         qd__oom(ctx);
     return p;
@@ -59,7 +59,7 @@ static bool grow(qd_ctx *ctx, void **v, size_t *cap, size_t need, size_t size) {
 }
 
 /* A new rational owned by p; its index, or -1. */
-static long new_big(qd_ctx *ctx, qd_poly *p) {
+static long new_big(qd_ctx *ctx, qd__poly *p) {
     if (!grow(ctx, (void **)&p->bigs, &p->bigcap, p->nbig + 1, sizeof *p->bigs))
         return -1;
     mpq_ptr q = qd__malloc(ctx, sizeof *q);
@@ -84,7 +84,7 @@ static void mpq_set_i64(mpq_ptr q, int64_t v) {
     mpz_set_ui(mpq_denref(q), 1);
 }
 
-static cval cv_get(const qd_poly *p, const qd_coef *c) {
+static cval cv_get(const qd__poly *p, const qd__coef *c) {
     cval v = {c->kind, 0, 0.0, NULL};
     if (c->kind == QD_COEF_INT)
         v.i = c->v.i;
@@ -128,7 +128,7 @@ static cval cv_mul(cval a, cval b, mpq_ptr out, mpq_ptr tmp) {
     return r;
 }
 
-static bool coef_store(qd_ctx *ctx, qd_poly *p, qd_coef *c, cval v) {
+static bool coef_store(qd_ctx *ctx, qd__poly *p, qd__coef *c, cval v) {
     c->kind = v.kind;
     if (v.kind == QD_COEF_INT)
         c->v.i = v.i;
@@ -145,7 +145,7 @@ static bool coef_store(qd_ctx *ctx, qd_poly *p, qd_coef *c, cval v) {
 }
 
 /* c += v, c stored in p; tmp is scratch. */
-static bool coef_acc(qd_ctx *ctx, qd_poly *p, qd_coef *c, cval v, mpq_ptr tmp) {
+static bool coef_acc(qd_ctx *ctx, qd__poly *p, qd__coef *c, cval v, mpq_ptr tmp) {
     int64_t sum;
     if (c->kind == QD_COEF_INT && v.kind == QD_COEF_INT &&
         !__builtin_add_overflow(c->v.i, v.i, &sum)) {
@@ -171,7 +171,7 @@ static bool coef_acc(qd_ctx *ctx, qd_poly *p, qd_coef *c, cval v, mpq_ptr tmp) {
     return true;
 }
 
-static bool coef_zero(const qd_poly *p, const qd_coef *c) {
+static bool coef_zero(const qd__poly *p, const qd__coef *c) {
     if (c->kind == QD_COEF_INT)
         return c->v.i == 0;
     if (c->kind == QD_COEF_FLT)
@@ -179,16 +179,16 @@ static bool coef_zero(const qd_poly *p, const qd_coef *c) {
     return mpq_sgn(p->bigs[c->v.big]) == 0;
 }
 
-bool qd_poly_coef_is_zero(const qd_poly *p, size_t t) { return coef_zero(p, &p->terms[t].c); }
+bool qd__poly_coef_is_zero(const qd__poly *p, size_t t) { return coef_zero(p, &p->terms[t].c); }
 
-bool qd_poly_coef_is_one(const qd_poly *p, size_t t) {
-    const qd_coef *c = &p->terms[t].c;
+bool qd__poly_coef_is_one(const qd__poly *p, size_t t) {
+    const qd__coef *c = &p->terms[t].c;
     if (c->kind == QD_COEF_INT)
         return c->v.i == 1;
     return c->kind == QD_COEF_BIG && mpq_cmp_si(p->bigs[c->v.big], 1, 1) == 0;
 }
 
-const qd_expr *qd_poly_coef_node(qd_ctx *ctx, const qd_poly *p, size_t t) {
+const qd_expr *qd__poly_coef_node(qd_ctx *ctx, const qd__poly *p, size_t t) {
     cval v = cv_get(p, &p->terms[t].c);
     if (v.kind == QD_COEF_FLT)
         return qd_float(ctx, v.f);
@@ -214,13 +214,13 @@ static uint64_t pair_hash(uint32_t var, int32_t exp) {
 }
 
 /* The product of two monomials into out; its length, or -1 on overflow. */
-static long mono_mul(qd_pvar *out, const qd_pvar *a, uint32_t na, const qd_pvar *b,
+static long mono_mul(qd__pvar *out, const qd__pvar *a, uint32_t na, const qd__pvar *b,
                      uint32_t nb, uint64_t *hash) {
     uint32_t i = 0, j = 0;
     long n = 0;
     uint64_t h = 0;
     while (i < na || j < nb) {
-        qd_pvar v;
+        qd__pvar v;
         if (j == nb || (i < na && a[i].var < b[j].var))
             v = a[i++];
         else if (i == na || b[j].var < a[i].var)
@@ -242,11 +242,11 @@ static long mono_mul(qd_pvar *out, const qd_pvar *a, uint32_t na, const qd_pvar 
 
 /* The monomial of term t.  A constant term's is empty, and a polynomial of
  * constants has no pool at all: NULL + 0 is undefined in C, so NULL. */
-static const qd_pvar *mono_of(const qd_poly *p, const qd_pterm *t) {
+static const qd__pvar *mono_of(const qd__poly *p, const qd__pterm *t) {
     return t->len ? p->pool + t->off : NULL;
 }
 
-static bool mono_eq(const qd_pvar *a, const qd_pvar *b, uint32_t len) {
+static bool mono_eq(const qd__pvar *a, const qd__pvar *b, uint32_t len) {
     for (uint32_t i = 0; i < len; i++)
         if (a[i].var != b[i].var || a[i].exp != b[i].exp)
             return false;
@@ -257,7 +257,7 @@ static bool mono_eq(const qd_pvar *a, const qd_pvar *b, uint32_t len) {
 
 typedef struct pbuild {
     qd_ctx *ctx;
-    qd_poly *out;
+    qd__poly *out;
     uint32_t *slot; /* term index + 1; 0 is empty */
     size_t mask;
     mpq_t tmp, prod, tmp2;
@@ -287,7 +287,7 @@ static void pb_release(pbuild *b) {
 
 static void pb_fail(pbuild *b) {
     pb_release(b);
-    qd_poly_free(b->out);
+    qd__poly_free(b->out);
     b->out = NULL;
 }
 
@@ -308,9 +308,9 @@ static bool pb_rehash(pbuild *b) {
     return true;
 }
 
-static bool pb_new_term(pbuild *b, size_t i, const qd_pvar *m, uint32_t len, uint64_t h,
+static bool pb_new_term(pbuild *b, size_t i, const qd__pvar *m, uint32_t len, uint64_t h,
                         cval c) {
-    qd_poly *p = b->out;
+    qd__poly *p = b->out;
     if (p->n >= QD_POLY_MAX_TERMS) {
         qd_ctx_error(b->ctx, QD_ERR_TOOBIG, "expansion beyond %u terms", QD_POLY_MAX_TERMS);
         return false;
@@ -318,7 +318,7 @@ static bool pb_new_term(pbuild *b, size_t i, const qd_pvar *m, uint32_t len, uin
     if (!grow(b->ctx, (void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
         !grow(b->ctx, (void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool))
         goto oom;
-    qd_pterm *t = &p->terms[p->n];
+    qd__pterm *t = &p->terms[p->n];
     t->hash = h;
     t->off = (uint32_t)p->plen;
     t->len = len;
@@ -337,10 +337,10 @@ oom:
 }
 
 /* Add c times the monomial m. */
-static bool pb_add(pbuild *b, const qd_pvar *m, uint32_t len, uint64_t h, cval c) {
+static bool pb_add(pbuild *b, const qd__pvar *m, uint32_t len, uint64_t h, cval c) {
     size_t i = h & b->mask;
     for (uint32_t s; (s = b->slot[i]) != 0; i = (i + 1) & b->mask) {
-        qd_pterm *t = &b->out->terms[s - 1];
+        qd__pterm *t = &b->out->terms[s - 1];
         if (t->hash == h && t->len == len && mono_eq(mono_of(b->out, t), m, len)) {
             if (coef_acc(b->ctx, b->out, &t->c, c, b->tmp))
                 return true;
@@ -352,8 +352,8 @@ static bool pb_add(pbuild *b, const qd_pvar *m, uint32_t len, uint64_t h, cval c
 }
 
 /* The result, without the terms that cancelled. */
-static qd_poly *pb_finish(pbuild *b) {
-    qd_poly *p = b->out;
+static qd__poly *pb_finish(pbuild *b) {
+    qd__poly *p = b->out;
     size_t m = 0;
     for (size_t t = 0; t < p->n; t++)
         if (!coef_zero(p, &p->terms[t].c))
@@ -365,7 +365,7 @@ static qd_poly *pb_finish(pbuild *b) {
 
 /* ---- arithmetic ------------------------------------------------------------------ */
 
-static qd_poly *single(qd_ctx *ctx, const qd_pvar *m, uint32_t len, cval c) {
+static qd__poly *single(qd_ctx *ctx, const qd__pvar *m, uint32_t len, cval c) {
     pbuild b;
     uint64_t h = 0;
     for (uint32_t i = 0; i < len; i++)
@@ -377,7 +377,7 @@ static qd_poly *single(qd_ctx *ctx, const qd_pvar *m, uint32_t len, cval c) {
     return pb_finish(&b);
 }
 
-qd_poly *qd_poly_number(qd_ctx *ctx, const qd_expr *num) {
+qd__poly *qd__poly_number(qd_ctx *ctx, const qd_expr *num) {
     cval c = {QD_COEF_FLT, 0, 0.0, NULL};
     if (num->kind == QD_FLOAT) {
         c.f = num->u.f;
@@ -392,13 +392,13 @@ qd_poly *qd_poly_number(qd_ctx *ctx, const qd_expr *num) {
     return single(ctx, NULL, 0, c);
 }
 
-qd_poly *qd_poly_var(qd_ctx *ctx, uint32_t var, int32_t exp) {
-    qd_pvar v = {var, exp};
+qd__poly *qd__poly_var(qd_ctx *ctx, uint32_t var, int32_t exp) {
+    qd__pvar v = {var, exp};
     cval one = {QD_COEF_INT, 1, 0.0, NULL};
     return single(ctx, &v, exp ? 1 : 0, one);
 }
 
-qd_poly *qd_poly_add_n(qd_ctx *ctx, size_t n, const qd_poly *const *ps) {
+qd__poly *qd__poly_add_n(qd_ctx *ctx, size_t n, const qd__poly *const *ps) {
     size_t total = 0;
     for (size_t k = 0; k < n; k++)
         total += ps[k]->n;
@@ -406,9 +406,9 @@ qd_poly *qd_poly_add_n(qd_ctx *ctx, size_t n, const qd_poly *const *ps) {
     if (!pb_init(&b, ctx, total))
         goto fail;
     for (size_t k = 0; k < n; k++) {
-        const qd_poly *p = ps[k];
+        const qd__poly *p = ps[k];
         for (size_t t = 0; t < p->n; t++) {
-            const qd_pterm *pt = &p->terms[t];
+            const qd__pterm *pt = &p->terms[t];
             if (!pb_add(&b, mono_of(p, pt), pt->len, pt->hash, cv_get(p, &pt->c)))
                 goto fail;
         }
@@ -419,7 +419,7 @@ fail:
     return NULL;
 }
 
-static size_t max_len(const qd_poly *p) {
+static size_t max_len(const qd__poly *p) {
     size_t m = 0;
     for (size_t t = 0; t < p->n; t++)
         if (p->terms[t].len > m)
@@ -435,12 +435,12 @@ static size_t max_len(const qd_poly *p) {
 /* log2 of the sum of |numerator| over p's terms (bits of its height bound),
  * and the bits of its largest denominator; float coefficients count as 64
  * bits that do not grow. */
-static void coef_bits(const qd_poly *p, double *num, double *den, bool *flt) {
+static void coef_bits(const qd__poly *p, double *num, double *den, bool *flt) {
     double top = 0, sum = 0;
     *den = 0;
     *flt = false;
     for (size_t t = 0; t < p->n; t++) {
-        const qd_coef *c = &p->terms[t].c;
+        const qd__coef *c = &p->terms[t].c;
         double nb = 0, db = 0; /* log2 |numerator|, bits of the denominator */
         if (c->kind == QD_COEF_INT) {
             nb = c->v.i == 0 ? -1e300 : log2(fabs((double)c->v.i));
@@ -475,7 +475,7 @@ static int vexp_cmp(const void *pa, const void *pb) {
 
 /* The number of monomials in the exponent box of x^n (y NULL) or x*y, and
  * in *nvars the number of generators; a negative number when out of memory. */
-static double box_terms(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, double *nvars) {
+static double box_terms(qd_ctx *ctx, const qd__poly *x, const qd__poly *y, long n, double *nvars) {
     size_t len = x->plen + (y ? y->plen : 0), k = 0;
     vexp *v = qd__malloc(ctx, (len + 1) * sizeof *v);
     if (!v)
@@ -510,10 +510,10 @@ static double degree_terms(size_t t, long n) {
 }
 
 static double bytes_of(double terms, double bits, double mono) {
-    return terms * ((double)sizeof(qd_pterm) + mono * (double)sizeof(qd_pvar) + bits / 8);
+    return terms * ((double)sizeof(qd__pterm) + mono * (double)sizeof(qd__pvar) + bits / 8);
 }
 
-bool qd_poly_fits(qd_ctx *ctx, double bytes) {
+bool qd__poly_fits(qd_ctx *ctx, double bytes) {
     if (bytes >= 0 && bytes <= QD_EXPAND_MAX_BYTES)
         return true;
     if (bytes >= 0)
@@ -523,7 +523,7 @@ bool qd_poly_fits(qd_ctx *ctx, double bytes) {
     return false;
 }
 
-double qd_poly_pow_bytes(qd_ctx *ctx, const qd_poly *a, long n) {
+double qd__poly_pow_bytes(qd_ctx *ctx, const qd__poly *a, long n) {
     if (a->n == 0 || (a->n >= 2 && n < 2))
         return 0;
     if (n < 0) /* one term: its inverse to the -n */
@@ -540,7 +540,7 @@ double qd_poly_pow_bytes(qd_ctx *ctx, const qd_poly *a, long n) {
     return bytes_of(fmin(box, degree_terms(a->n, n)), bits, nvars);
 }
 
-double qd_poly_mul_bytes(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
+double qd__poly_mul_bytes(qd_ctx *ctx, const qd__poly *x, const qd__poly *y) {
     double nx, dx, ny, dy, nvars, box = box_terms(ctx, x, y, 0, &nvars);
     bool fx, fy;
     if (box < 0) {
@@ -553,12 +553,12 @@ double qd_poly_mul_bytes(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
     return bytes_of(fmin(box, (double)x->n * (double)y->n), bits, nvars);
 }
 
-static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) {
+static bool mul_into(pbuild *b, const qd__poly *x, const qd__poly *y, qd__pvar *m) {
     for (size_t i = 0; i < x->n; i++) {
-        const qd_pterm *s = &x->terms[i];
+        const qd__pterm *s = &x->terms[i];
         cval cs = cv_get(x, &s->c);
         for (size_t j = 0; j < y->n; j++) {
-            const qd_pterm *t = &y->terms[j];
+            const qd__pterm *t = &y->terms[j];
             uint64_t h;
             long len = mono_mul(m, mono_of(x, s), s->len, mono_of(y, t), t->len, &h);
             if (len < 0) {
@@ -573,26 +573,26 @@ static bool mul_into(pbuild *b, const qd_poly *x, const qd_poly *y, qd_pvar *m) 
     return true;
 }
 
-qd_poly *qd_poly_mul(qd_ctx *ctx, const qd_poly *x, const qd_poly *y) {
+qd__poly *qd__poly_mul(qd_ctx *ctx, const qd__poly *x, const qd__poly *y) {
     bool done;
-    if (!qd_poly_fits(ctx, qd_poly_mul_bytes(ctx, x, y)))
+    if (!qd__poly_fits(ctx, qd__poly_mul_bytes(ctx, x, y)))
         return NULL;
-    qd_poly *fast = qd_poly_mul_flint(ctx, x, y, &done);
+    qd__poly *fast = qd__poly_mul_flint(ctx, x, y, &done);
     if (!done)
-        fast = qd_poly_mul_packed(ctx, x, y, &done);
+        fast = qd__poly_mul_packed(ctx, x, y, &done);
     if (done)
         return fast;
     /* Like terms usually merge, and a small table stays in cache; it grows
      * when they do not. */
     size_t expect = x->n > y->n ? x->n : y->n;
-    qd_pvar stack[64];
+    qd__pvar stack[64];
     size_t need = max_len(x) + max_len(y);
     pbuild b;
     if (!pb_init(&b, ctx, expect)) {
         pb_fail(&b);
         return NULL;
     }
-    qd_pvar *m = need <= 64 ? stack : qd__malloc(ctx, need * sizeof *m);
+    qd__pvar *m = need <= 64 ? stack : qd__malloc(ctx, need * sizeof *m);
     if (!m)
         qd__oom(ctx);
     bool ok = m && mul_into(&b, x, y, m);
@@ -627,15 +627,15 @@ static cval cv_pow(cval c, long n, mpq_ptr out) {
     return r;
 }
 
-static qd_poly *mono_pow(qd_ctx *ctx, const qd_poly *a, long n) {
-    const qd_pterm *t = &a->terms[0];
-    qd_pvar stack[64];
-    qd_pvar *m = t->len <= 64 ? stack : qd__malloc(ctx, t->len * sizeof *m);
+static qd__poly *mono_pow(qd_ctx *ctx, const qd__poly *a, long n) {
+    const qd__pterm *t = &a->terms[0];
+    qd__pvar stack[64];
+    qd__pvar *m = t->len <= 64 ? stack : qd__malloc(ctx, t->len * sizeof *m);
     if (!m) {
         qd__oom(ctx);
         return NULL;
     }
-    qd_poly *r = NULL;
+    qd__poly *r = NULL;
     bool ok = n <= INT32_MAX && n >= -INT32_MAX;
     for (uint32_t i = 0; ok && i < t->len; i++) {
         m[i] = a->pool[t->off + i];
@@ -654,14 +654,14 @@ static qd_poly *mono_pow(qd_ctx *ctx, const qd_poly *a, long n) {
     return r;
 }
 
-qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
+qd__poly *qd__poly_pow(qd_ctx *ctx, const qd__poly *a, long n) {
     if (n == 0) {
         cval one = {QD_COEF_INT, 1, 0.0, NULL};
         return single(ctx, NULL, 0, one);
     }
     if (a->n == 0)
-        return n > 0 ? qd_poly_zero(ctx) : NULL;
-    if (!qd_poly_fits(ctx, qd_poly_pow_bytes(ctx, a, n)))
+        return n > 0 ? qd__poly_zero(ctx) : NULL;
+    if (!qd__poly_fits(ctx, qd__poly_pow_bytes(ctx, a, n)))
         return NULL;
     if (a->n == 1)
         return mono_pow(ctx, a, n);
@@ -670,40 +670,40 @@ qd_poly *qd_poly_pow(qd_ctx *ctx, const qd_poly *a, long n) {
         return NULL;
     }
     bool done;
-    qd_poly *fast = qd_poly_pow_flint(ctx, a, n, &done);
+    qd__poly *fast = qd__poly_pow_flint(ctx, a, n, &done);
     if (!done)
-        fast = qd_poly_pow_packed(ctx, a, n, &done);
+        fast = qd__poly_pow_packed(ctx, a, n, &done);
     if (done)
         return fast;
     /* Repeated multiplication by the (small) base beats squaring here: the
      * last squaring alone costs |a^(n/2)|^2, more than all n steps. */
-    qd_poly *acc = qd_poly_mul(ctx, a, a);
+    qd__poly *acc = qd__poly_mul(ctx, a, a);
     for (long k = 2; acc && k < n; k++) {
-        qd_poly *next = qd_poly_mul(ctx, acc, a);
-        qd_poly_free(acc);
+        qd__poly *next = qd__poly_mul(ctx, acc, a);
+        qd__poly_free(acc);
         acc = next;
     }
     return acc;
 }
 
-int32_t qd_poly_exp(const qd_poly *p, size_t t, uint32_t var) {
-    const qd_pterm *pt = &p->terms[t];
+int32_t qd__poly_exp(const qd__poly *p, size_t t, uint32_t var) {
+    const qd__pterm *pt = &p->terms[t];
     for (uint32_t i = 0; i < pt->len; i++)
         if (p->pool[pt->off + i].var == var)
             return p->pool[pt->off + i].exp;
     return 0;
 }
 
-bool qd_poly_append(qd_ctx *ctx, qd_poly *dst, const qd_poly *src, size_t t, uint32_t var) {
-    const qd_pterm *st = &src->terms[t];
+bool qd__poly_append(qd_ctx *ctx, qd__poly *dst, const qd__poly *src, size_t t, uint32_t var) {
+    const qd__pterm *st = &src->terms[t];
     if (!grow(ctx, (void **)&dst->terms, &dst->cap, dst->n + 1, sizeof *dst->terms) ||
         !grow(ctx, (void **)&dst->pool, &dst->pcap, dst->plen + st->len, sizeof *dst->pool))
         goto oom;
-    qd_pterm *dt = &dst->terms[dst->n];
+    qd__pterm *dt = &dst->terms[dst->n];
     dt->off = (uint32_t)dst->plen;
     dt->hash = 0;
     for (uint32_t i = 0; i < st->len; i++) {
-        qd_pvar v = src->pool[st->off + i];
+        qd__pvar v = src->pool[st->off + i];
         if (v.var == var)
             continue;
         dst->pool[dst->plen++] = v;
@@ -719,14 +719,14 @@ oom:
     return false;
 }
 
-static bool push(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, cval c) {
+static bool push(qd_ctx *ctx, qd__poly *p, const qd__pvar *m, uint32_t len, cval c) {
     if (!grow(ctx, (void **)&p->terms, &p->cap, p->n + 1, sizeof *p->terms) ||
         !grow(ctx, (void **)&p->pool, &p->pcap, p->plen + len, sizeof *p->pool) ||
         !coef_store(ctx, p, &p->terms[p->n].c, c)) {
         qd__oom(ctx);
         return false;
     }
-    qd_pterm *t = &p->terms[p->n++];
+    qd__pterm *t = &p->terms[p->n++];
     t->off = (uint32_t)p->plen;
     t->len = len;
     t->hash = 0;
@@ -737,12 +737,12 @@ static bool push(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, cval c
     return true;
 }
 
-bool qd_poly_push_int(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, int64_t c) {
+bool qd__poly_push_int(qd_ctx *ctx, qd__poly *p, const qd__pvar *m, uint32_t len, int64_t c) {
     cval v = {QD_COEF_INT, c, 0.0, NULL};
     return push(ctx, p, m, len, v);
 }
 
-bool qd_poly_push_mpq(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, mpq_srcptr c) {
+bool qd__poly_push_mpq(qd_ctx *ctx, qd__poly *p, const qd__pvar *m, uint32_t len, mpq_srcptr c) {
     cval v = {QD_COEF_BIG, 0, 0.0, c};
     if (mpz_cmp_ui(mpq_denref(c), 1) == 0 && mpz_sizeinbase(mpq_numref(c), 2) < 63) {
         v.kind = QD_COEF_INT;
@@ -751,11 +751,11 @@ bool qd_poly_push_mpq(qd_ctx *ctx, qd_poly *p, const qd_pvar *m, uint32_t len, m
     return push(ctx, p, m, len, v);
 }
 
-qd_poly *qd_poly_slice(qd_ctx *ctx, const qd_poly *p, uint32_t var, int32_t exp) {
-    qd_poly *r = qd_poly_zero(ctx);
+qd__poly *qd__poly_slice(qd_ctx *ctx, const qd__poly *p, uint32_t var, int32_t exp) {
+    qd__poly *r = qd__poly_zero(ctx);
     for (size_t t = 0; r && t < p->n; t++) {
-        if (qd_poly_exp(p, t, var) == exp && !qd_poly_append(ctx, r, p, t, var)) {
-            qd_poly_free(r);
+        if (qd__poly_exp(p, t, var) == exp && !qd__poly_append(ctx, r, p, t, var)) {
+            qd__poly_free(r);
             r = NULL;
         }
     }

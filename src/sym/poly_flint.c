@@ -41,7 +41,7 @@ typedef struct fplan {
     bool has_m;
 } fplan;
 
-static uint32_t max_var(const qd_poly *p) {
+static uint32_t max_var(const qd__poly *p) {
     uint32_t m = 0;
     for (size_t i = 0; i < p->plen; i++)
         if (p->pool[i].var > m)
@@ -50,10 +50,10 @@ static uint32_t max_var(const qd_poly *p) {
 }
 
 /* The lcm of the denominators into den; false for a float coefficient. */
-static bool scan_coefs(const qd_poly *p, mpz_ptr den) {
+static bool scan_coefs(const qd__poly *p, mpz_ptr den) {
     mpz_set_ui(den, 1);
     for (size_t t = 0; t < p->n; t++) {
-        const qd_coef *c = &p->terms[t].c;
+        const qd__coef *c = &p->terms[t].c;
         if (c->kind == QD_COEF_FLT)
             return false;
         if (c->kind == QD_COEF_BIG)
@@ -62,9 +62,9 @@ static bool scan_coefs(const qd_poly *p, mpz_ptr den) {
     return true;
 }
 
-static void scan_exps(fplan *pl, const qd_poly *p, int side) {
+static void scan_exps(fplan *pl, const qd__poly *p, int side) {
     for (size_t i = 0; i < p->plen; i++) {
-        qd_pvar v = p->pool[i];
+        qd__pvar v = p->pool[i];
         size_t k = 2 * (pl->slot[v.var] - 1) + (size_t)side;
         if (v.exp < pl->lo[k])
             pl->lo[k] = v.exp;
@@ -85,7 +85,7 @@ static void plan_free(fplan *pl) {
 
 /* Slots, exponent ranges and denominators of x and y (y NULL for a power);
  * -1 out of memory, 0 not for FLINT, 1 ready. */
-static int plan_make(qd_ctx *ctx, fplan *pl, const qd_poly *x, const qd_poly *y) {
+static int plan_make(qd_ctx *ctx, fplan *pl, const qd__poly *x, const qd__poly *y) {
     uint32_t mv = max_var(x);
     if (y && max_var(y) > mv)
         mv = max_var(y);
@@ -98,7 +98,7 @@ static int plan_make(qd_ctx *ctx, fplan *pl, const qd_poly *x, const qd_poly *y)
     if (!pl->slot || !pl->var)
         return -1;
     for (int s = 0; s < 2; s++) {
-        const qd_poly *p = s ? y : x;
+        const qd__poly *p = s ? y : x;
         for (size_t i = 0; p && i < p->plen; i++)
             pl->slot[p->pool[i].var] = 1;
     }
@@ -122,18 +122,18 @@ static int plan_make(qd_ctx *ctx, fplan *pl, const qd_poly *x, const qd_poly *y)
 }
 
 /* p (side s of the plan) as den * p, shifted to nonnegative exponents. */
-static void to_flint(fmpz_mpoly_t a, fplan *pl, const qd_poly *p, int s, ulong *e) {
+static void to_flint(fmpz_mpoly_t a, fplan *pl, const qd__poly *p, int s, ulong *e) {
     fmpz_t c;
     mpz_t z;
     fmpz_init(c);
     mpz_init(z);
     fmpz_mpoly_fit_length(a, (slong)p->n, pl->m);
     for (size_t t = 0; t < p->n; t++) {
-        const qd_pterm *pt = &p->terms[t];
+        const qd__pterm *pt = &p->terms[t];
         for (slong k = 0; k < pl->nv; k++)
             e[k] = (ulong)-pl->lo[2 * k + s];
         for (uint32_t i = 0; i < pt->len; i++) {
-            qd_pvar v = p->pool[pt->off + i];
+            qd__pvar v = p->pool[pt->off + i];
             uint32_t k = pl->slot[v.var] - 1;
             e[k] = (ulong)(v.exp - pl->lo[2 * k + (uint32_t)s]);
         }
@@ -153,10 +153,10 @@ static void to_flint(fmpz_mpoly_t a, fplan *pl, const qd_poly *p, int s, ulong *
     mpz_clear(z);
 }
 
-/* a / den as a qd_poly, exponents shifted by shift[slot]. */
-static qd_poly *from_flint(qd_ctx *ctx, const fplan *pl, const fmpz_mpoly_t a,
-                           const int64_t *shift, mpz_srcptr den, ulong *e, qd_pvar *m) {
-    qd_poly *r = qd_poly_zero(ctx);
+/* a / den as a qd__poly, exponents shifted by shift[slot]. */
+static qd__poly *from_flint(qd_ctx *ctx, const fplan *pl, const fmpz_mpoly_t a,
+                           const int64_t *shift, mpz_srcptr den, ulong *e, qd__pvar *m) {
+    qd__poly *r = qd__poly_zero(ctx);
     bool unit = mpz_cmp_ui(den, 1) == 0;
     mpq_t q;
     mpq_init(q);
@@ -167,20 +167,20 @@ static qd_poly *from_flint(qd_ctx *ctx, const fplan *pl, const fmpz_mpoly_t a,
         for (slong k = 0; k < pl->nv; k++) {
             int64_t x = (int64_t)e[k] + shift[k];
             if (x != 0)
-                m[len++] = (qd_pvar){pl->var[k], (int32_t)x};
+                m[len++] = (qd__pvar){pl->var[k], (int32_t)x};
         }
         const fmpz *c = a->coeffs + t;
         bool ok;
         if (unit && fmpz_fits_si(c)) {
-            ok = qd_poly_push_int(ctx, r, m, len, (int64_t)fmpz_get_si(c));
+            ok = qd__poly_push_int(ctx, r, m, len, (int64_t)fmpz_get_si(c));
         } else {
             fmpz_get_mpz(mpq_numref(q), c);
             mpz_set(mpq_denref(q), den);
             mpq_canonicalize(q);
-            ok = qd_poly_push_mpq(ctx, r, m, len, q);
+            ok = qd__poly_push_mpq(ctx, r, m, len, q);
         }
         if (!ok) {
-            qd_poly_free(r);
+            qd__poly_free(r);
             r = NULL;
         }
     }
@@ -215,7 +215,7 @@ static double pow_terms(size_t t, long n) {
 
 /* den * (x*y) in c (or den^n * x^n when y is NULL); den becomes the
  * result's denominator. */
-static void compute(fmpz_mpoly_t c, fplan *pl, const qd_poly *x, const qd_poly *y, long n,
+static void compute(fmpz_mpoly_t c, fplan *pl, const qd__poly *x, const qd__poly *y, long n,
                     ulong *e) {
     fmpz_mpoly_t a, b;
     fmpz_mpoly_init(a, pl->m);
@@ -234,7 +234,7 @@ static void compute(fmpz_mpoly_t c, fplan *pl, const qd_poly *x, const qd_poly *
 }
 
 /* x*y, or x^n when y is NULL, when there are at most max_vars generators. */
-static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, slong max_vars,
+static qd__poly *run(qd_ctx *ctx, const qd__poly *x, const qd__poly *y, long n, slong max_vars,
                     bool *done) {
     fplan pl;
     int st = plan_make(ctx, &pl, x, y);
@@ -242,8 +242,8 @@ static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, slo
         st = 0;
     int64_t *shift = st > 0 ? qd__malloc(ctx, (size_t)pl.nv * sizeof *shift) : NULL;
     ulong *e = shift ? qd__malloc(ctx, (size_t)pl.nv * sizeof *e) : NULL;
-    qd_pvar *m = e ? qd__malloc(ctx, (size_t)pl.nv * sizeof *m) : NULL;
-    qd_poly *r = NULL;
+    qd__pvar *m = e ? qd__malloc(ctx, (size_t)pl.nv * sizeof *m) : NULL;
+    qd__poly *r = NULL;
     if (st > 0 && !m)
         st = -1;
     double terms = y ? (double)x->n * (double)y->n : pow_terms(x->n, n);
@@ -263,14 +263,14 @@ static qd_poly *run(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, long n, slo
     return r;
 }
 
-qd_poly *qd_poly_mul_flint(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done) {
+qd__poly *qd__poly_mul_flint(qd_ctx *ctx, const qd__poly *x, const qd__poly *y, bool *done) {
     *done = false;
     if ((double)x->n * (double)y->n < MUL_MIN_PAIRS)
         return NULL;
     return run(ctx, x, y, 0, MUL_MAX_VARS, done);
 }
 
-qd_poly *qd_poly_pow_flint(qd_ctx *ctx, const qd_poly *a, long n, bool *done) {
+qd__poly *qd__poly_pow_flint(qd_ctx *ctx, const qd__poly *a, long n, bool *done) {
     *done = false;
     if (a->n < 2 || n < 2 || (double)a->n * pow_terms(a->n, n) < POW_MIN_WORK)
         return NULL;

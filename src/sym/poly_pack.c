@@ -37,13 +37,13 @@ static int slot_of(plan *pl, uint32_t var) {
     return (int)pl->nv++;
 }
 
-static bool scan(plan *pl, const qd_poly *p, int side) {
+static bool scan(plan *pl, const qd__poly *p, int side) {
     for (size_t t = 0; t < p->n; t++) {
-        const qd_pterm *pt = &p->terms[t];
+        const qd__pterm *pt = &p->terms[t];
         if (pt->c.kind != QD_COEF_INT)
             return false;
         for (uint32_t i = 0; i < pt->len; i++) {
-            qd_pvar v = p->pool[pt->off + i];
+            qd__pvar v = p->pool[pt->off + i];
             int k = slot_of(pl, v.var);
             if (k < 0)
                 return false;
@@ -59,7 +59,7 @@ static bool scan(plan *pl, const qd_poly *p, int side) {
 /* Sort the generators (so unpacked monomials come out sorted) and check
  * that every field holds its range: the product of x and y, or x^n when y
  * is NULL. */
-static bool make_plan(plan *pl, const qd_poly *x, const qd_poly *y, long n) {
+static bool make_plan(plan *pl, const qd__poly *x, const qd__poly *y, long n) {
     pl->nv = 0;
     if (!scan(pl, x, 0) || (y && !scan(pl, y, 1)) || pl->nv == 0)
         return false;
@@ -87,12 +87,12 @@ static bool make_plan(plan *pl, const qd_poly *x, const qd_poly *y, long n) {
     return true;
 }
 
-static uint64_t pack(const plan *pl, const qd_poly *p, size_t t, int side) {
-    const qd_pterm *pt = &p->terms[t];
+static uint64_t pack(const plan *pl, const qd__poly *p, size_t t, int side) {
+    const qd__pterm *pt = &p->terms[t];
     int64_t e[MAX_PACKED_VARS] = {0};
     unsigned k = 0;
     for (uint32_t i = 0; i < pt->len; i++) {
-        qd_pvar v = p->pool[pt->off + i];
+        qd__pvar v = p->pool[pt->off + i];
         while (pl->var[k] != v.var)
             k++;
         e[k] = v.exp;
@@ -181,28 +181,29 @@ static int accumulate(qd_ctx *ctx, table *tb, const uint64_t *wx, const int64_t 
     return 1;
 }
 
-static qd_poly *unpack(qd_ctx *ctx, const plan *pl, const table *tb) {
-    qd_poly *r = qd_poly_zero(ctx);
+static qd__poly *unpack(qd_ctx *ctx, const plan *pl, const table *tb) {
+    qd__poly *r = qd__poly_zero(ctx);
     uint64_t field = ((uint64_t)1 << pl->bits) - 1;
     for (size_t s = 0; r && s <= tb->mask; s++) {
         if (tb->key[s] == UINT64_MAX || tb->coef[s] == 0)
             continue;
-        qd_pvar m[MAX_PACKED_VARS];
+        qd__pvar m[MAX_PACKED_VARS];
         uint32_t len = 0;
         for (unsigned k = 0; k < pl->nv; k++) {
             int64_t e = (int64_t)((tb->key[s] >> (k * pl->bits)) & field) + pl->bias[k];
             if (e != 0)
-                m[len++] = (qd_pvar){pl->var[k], (int32_t)e};
+                m[len++] = (qd__pvar){pl->var[k], (int32_t)e};
         }
-        if (!qd_poly_push_int(ctx, r, m, len, tb->coef[s])) {
-            qd_poly_free(r);
+        if (!qd__poly_push_int(ctx, r, m, len, tb->coef[s])) {
+            qd__poly_free(r);
             r = NULL;
         }
     }
     return r;
 }
 
-static bool pack_all(qd_ctx *ctx, const plan *pl, const qd_poly *p, int side, uint64_t **w, int64_t **c) {
+static bool pack_all(qd_ctx *ctx, const plan *pl, const qd__poly *p, int side, uint64_t **w,
+                     int64_t **c) {
     *w = qd__malloc(ctx, (p->n + 1) * sizeof **w);
     *c = qd__malloc(ctx, (p->n + 1) * sizeof **c);
     if (!*w || !*c)
@@ -214,14 +215,14 @@ static bool pack_all(qd_ctx *ctx, const plan *pl, const qd_poly *p, int side, ui
     return true;
 }
 
-qd_poly *qd_poly_mul_packed(qd_ctx *ctx, const qd_poly *x, const qd_poly *y, bool *done) {
+qd__poly *qd__poly_mul_packed(qd_ctx *ctx, const qd__poly *x, const qd__poly *y, bool *done) {
     plan pl;
     *done = false;
     if (x->n < 2 || y->n < 2 || !make_plan(&pl, x, y, 1))
         return NULL;
     uint64_t *wx = NULL, *wy = NULL;
     int64_t *cx = NULL, *cy = NULL;
-    qd_poly *r = NULL;
+    qd__poly *r = NULL;
     table tb = {0};
     size_t cap = 64;
     while (cap < 2 * (x->n > y->n ? x->n : y->n))
@@ -258,7 +259,7 @@ static bool harvest(qd_ctx *ctx, const table *tb, uint64_t **w, int64_t **c, siz
 }
 
 /* a^n by repeated packed multiplication by a: no unpacking in between. */
-qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done) {
+qd__poly *qd__poly_pow_packed(qd_ctx *ctx, const qd__poly *a, long n, bool *done) {
     plan pl;
     *done = false;
     if (a->n < 2 || n < 2 || n > 65536 || !make_plan(&pl, a, NULL, n))
@@ -267,7 +268,7 @@ qd_poly *qd_poly_pow_packed(qd_ctx *ctx, const qd_poly *a, long n, bool *done) {
     int64_t *ca = NULL, *cx = NULL;
     size_t nx = a->n;
     table tb = {0};
-    qd_poly *r = NULL;
+    qd__poly *r = NULL;
     int st = pack_all(ctx, &pl, a, 0, &wa, &ca) && pack_all(ctx, &pl, a, 0, &wx, &cx) ? 1 : -1;
     for (long k = 1; st > 0 && k < n; k++) {
         size_t cap = 64;

@@ -91,12 +91,12 @@ static const qd_expr *split_root(qd_ctx *ctx, const qd_expr *prod, const qd_expr
         if (f->kind == QD_RATIONAL) {
             const qd_expr *c = qd_number_sign(f) < 0 ? qd_neg(ctx, f) : f;
             /* c is NULL when qd_neg ran out of memory (recorded): f stays inside */
-            const qd_expr *cr = c ? qd__num_pow(ctx, c, r, &folded) : NULL;
+            const qd_expr *cr = c ? qd__number_pow(ctx, c, r, &folded) : NULL;
             folded = folded && cr && !qd_is_one(c);
             if (folded) {
                 out[nout++] = cr;
                 if (c != f)
-                    in[nin++] = ctx->minus_one;
+                    in[nin++] = ctx->sym->minus_one;
             }
         } else if (root_splits(f)) {
             out[nout++] = qd_pow(ctx, f, r);
@@ -107,9 +107,9 @@ static const qd_expr *split_root(qd_ctx *ctx, const qd_expr *prod, const qd_expr
     }
     /* (-x^2)^(1/3): -1 alone under the root would fold to the real cube
      * root, -1, where (-x^2)^(1/3) itself is SymPy's principal root */
-    if (!nout || (nin == 1 && in[0] == ctx->minus_one))
+    if (!nout || (nin == 1 && in[0] == ctx->sym->minus_one))
         return NULL;
-    out[nout++] = nin ? qd_pow(ctx, qd_mul_n(ctx, nin, in), r) : ctx->one;
+    out[nout++] = nin ? qd_pow(ctx, qd_mul_n(ctx, nin, in), r) : ctx->sym->one;
     return qd_mul_n(ctx, nout, out);
 }
 
@@ -133,14 +133,14 @@ const qd_expr *qd_pow(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
     if (!b || !e)
         return NULL;
     if (qd_is_zero(e) && e->kind == QD_RATIONAL)
-        return ctx->one;
+        return ctx->sym->one;
     if (qd_is_one(e))
         return b;
     if (qd_is_one(b))
         return b;
     if (qd__is_num(b) && qd__is_num(e)) {
         bool folded;
-        const qd_expr *r = qd__num_pow(ctx, b, e, &folded);
+        const qd_expr *r = qd__number_pow(ctx, b, e, &folded);
         if (folded)
             return r;
         if (!qd_is_zero(b))
@@ -174,7 +174,7 @@ const qd_expr *qd_powi(qd_ctx *ctx, const qd_expr *b, long n) {
     return qd_pow(ctx, b, qd_int(ctx, n));
 }
 
-const qd_expr *qd_sqrt(qd_ctx *ctx, const qd_expr *a) { QD_ARGS(NULL, ctx && a); return qd_pow(ctx, a, ctx->half); }
+const qd_expr *qd_sqrt(qd_ctx *ctx, const qd_expr *a) { QD_ARGS(NULL, ctx && a); return qd_pow(ctx, a, ctx->sym->half); }
 
 const qd_expr *qd__pow_written(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
     if (b && e && b->kind == QD_RATIONAL && qd_is_zero(b) && !qd__is_num(e)) {

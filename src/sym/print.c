@@ -20,19 +20,19 @@ qd_status qd_print_set_time_name(qd_ctx *ctx, const char *name) {
         return QD_ERR_ARG;
     }
     if (!name || !strcmp(name, "t")) {
-        ctx->tname = NULL;
+        ctx->sym->tname = NULL;
         return QD_OK;
     }
     const char *in = qd__intern_name(ctx, name); /* lives as long as ctx */
     if (!in)
         return QD_ERR_NOMEM;
-    ctx->tname = in;
+    ctx->sym->tname = in;
     return QD_OK;
 }
 
 const char *qd_print_time_name(const qd_ctx *ctx) {
     QD_ARGS(NULL, ctx);
-    return ctx && ctx->tname ? ctx->tname : "t";
+    return ctx && ctx->sym->tname ? ctx->sym->tname : "t";
 }
 
 qd_status qd_print(qd_ctx *ctx, const qd_expr *e, qd_format fmt, qd_buf *out) {

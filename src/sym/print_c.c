@@ -35,7 +35,7 @@
 typedef struct cp {
     qd_ctx *ctx;
     qd_buf *b;
-    qd_ptrmap *temps; /* node -> temporary number + 1; NULL outside blocks */
+    qd__ptrmap *temps; /* node -> temporary number + 1; NULL outside blocks */
 } cp;
 
 static void expr(cp *p, const qd_expr *e);
@@ -78,7 +78,7 @@ qd_status qd_c_name(const qd_expr *sym, qd_buf *out) {
 
 static bool is_leaf(const cp *p, const qd_expr *e) {
     return e->kind == QD_SYMBOL || e->kind == QD_CONSTANT || qd__is_num(e) ||
-           (p->temps && qd_ptrmap_get(p->temps, e));
+           (p->temps && qd__ptrmap_get(p->temps, e));
 }
 
 /* 2..4 for x^2..x^4 and x^-2..x^-4, else 0. */
@@ -91,7 +91,7 @@ static int small_power(const qd_expr *e) {
 }
 
 static int prec(const cp *p, const qd_expr *e) {
-    if (p->temps && qd_ptrmap_get(p->temps, e))
+    if (p->temps && qd__ptrmap_get(p->temps, e))
         return QD_PREC_ATOM;
     if (e->kind == QD_POW && !qd__is_recip(e))
         return small_power(e) && is_leaf(p, e->args[0]) ? QD_PREC_PRODUCT : QD_PREC_ATOM;
@@ -172,7 +172,7 @@ static void flipped(cp *p, const qd_expr *f, bool group) {
 static void keep_temps_up(cp *p, qd_split *s) {
     size_t k = 0;
     for (size_t i = 0; i < s->nden; i++) {
-        if (p->temps && qd_ptrmap_get(p->temps, s->den[i]))
+        if (p->temps && qd__ptrmap_get(p->temps, s->den[i]))
             s->num[s->nnum++] = s->den[i];
         else
             s->den[k++] = s->den[i];
@@ -231,7 +231,7 @@ static void sum(cp *p, const qd_expr *e) {
     size_t c = qd__is_num(e->args[0]) ? 1 : 0;
     for (size_t k = c; k < e->nargs + c; k++) {
         const qd_expr *t = e->args[k < e->nargs ? k : 0];
-        bool temp = p->temps && qd_ptrmap_get(p->temps, t);
+        bool temp = p->temps && qd__ptrmap_get(p->temps, t);
         bool minus = !temp && qd__has_minus(t);
         qd_buf_puts(p->b, k == c ? (minus ? "-" : "") : (minus ? " - " : " + "));
         if (temp)
@@ -298,7 +298,7 @@ static void uderiv(cp *p, const qd_expr *e) {
 }
 
 static void expr(cp *p, const qd_expr *e) {
-    uintptr_t k = p->temps ? (uintptr_t)qd_ptrmap_get(p->temps, e) : 0;
+    uintptr_t k = p->temps ? (uintptr_t)qd__ptrmap_get(p->temps, e) : 0;
     if (k) {
         qd_buf_printf(p->b, "qd_t%lu", (unsigned long)k);
         return;
@@ -331,15 +331,15 @@ qd_status qd__print_c(qd_ctx *ctx, const qd_expr *e, qd_buf *out) {
 /* ---- blocks with common subexpressions -------------------------------------- */
 
 typedef struct uses {
-    qd_ptrmap count;        /* node -> uses */
+    qd__ptrmap count;        /* node -> uses */
     const qd_expr **order;  /* first visits in post-order: children first */
     size_t n, cap;
     bool oom;
 } uses;
 
 static void count(uses *u, const qd_expr *e) {
-    uintptr_t c = (uintptr_t)qd_ptrmap_get(&u->count, e);
-    if (!qd_ptrmap_put(&u->count, e, (void *)(c + 1)))
+    uintptr_t c = (uintptr_t)qd__ptrmap_get(&u->count, e);
+    if (!qd__ptrmap_put(&u->count, e, (void *)(c + 1)))
         u->oom = true;
     if (c || u->oom || e->kind == QD_SYMBOL || e->kind == QD_CONSTANT || qd__is_num(e))
         return;
@@ -365,12 +365,12 @@ static void hoist(cp *p, const uses *u) {
     unsigned long k = 0;
     for (size_t i = 0; i < u->n && !p->b->failed; i++) {
         const qd_expr *e = u->order[i];
-        if ((uintptr_t)qd_ptrmap_get(&u->count, e) < 2)
+        if ((uintptr_t)qd__ptrmap_get(&u->count, e) < 2)
             continue;
         qd_buf_printf(p->b, "const double qd_t%lu = ", ++k);
         expr(p, e);
         qd_buf_puts(p->b, ";\n");
-        if (!qd_ptrmap_put(p->temps, e, (void *)(uintptr_t)k))
+        if (!qd__ptrmap_put(p->temps, e, (void *)(uintptr_t)k))
             p->b->failed = true;
     }
 }
@@ -387,7 +387,7 @@ qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
         }
     }
     uses u = {QD_PTRMAP_AL(qd__ctx_allocator(ctx)), NULL, 0, 0, false};
-    qd_ptrmap temps = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap temps = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     cp p = {ctx, out, &temps};
     for (size_t i = 0; i < n; i++)
         count(&u, exprs[i]);
@@ -400,8 +400,8 @@ qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
         expr(&p, exprs[i]);
         qd_buf_puts(out, ";\n");
     }
-    qd_ptrmap_free(&u.count);
-    qd_ptrmap_free(&temps);
+    qd__ptrmap_free(&u.count);
+    qd__ptrmap_free(&temps);
     qd__free(u.order);
     if (out->failed) {
         qd__oom(ctx);

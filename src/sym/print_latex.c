@@ -58,7 +58,7 @@ static void word(lp *p, const char *s, size_t n) {
  * after it when t is renamed (the derivatives are then not in time). */
 static void name(lp *p, const char *s, unsigned order) {
     static const char *const dots[] = {"", "\\dot{", "\\ddot{", "\\dddot{", "\\ddddot{"};
-    if (order && p->ctx->tname) {
+    if (order && p->ctx->sym->tname) {
         name(p, s, 0);
         if (order <= 4)
             qd_buf_putn(p->b, "''''", order);

@@ -258,8 +258,8 @@ qd_status qd__print_sympy(qd_ctx *ctx, const qd_expr *e, qd_buf *out) {
 /* ---- the user functions a script must define ------------------------------ */
 
 typedef struct fn_names {
-    qd_ptrmap seen;     /* nodes visited */
-    qd_ptrmap named;    /* interned names listed */
+    qd__ptrmap seen;     /* nodes visited */
+    qd__ptrmap named;    /* interned names listed */
     const char **list;
     size_t n, cap;
     bool oom;
@@ -267,7 +267,7 @@ typedef struct fn_names {
 } fn_names;
 
 static void add_name(fn_names *c, const char *n) {
-    if (is_reserved(n) || qd_ptrmap_has(&c->named, n))
+    if (is_reserved(n) || qd__ptrmap_has(&c->named, n))
         return;
     if (c->n == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 8;
@@ -280,17 +280,17 @@ static void add_name(fn_names *c, const char *n) {
         c->cap = cap;
     }
     c->list[c->n++] = n;
-    c->oom |= !qd_ptrmap_put(&c->named, n, (void *)n);
+    c->oom |= !qd__ptrmap_put(&c->named, n, (void *)n);
 }
 
 static void collect_names(fn_names *c, const qd_expr *e) {
-    if (!e || !e->nargs || c->oom || qd_ptrmap_has(&c->seen, e))
+    if (!e || !e->nargs || c->oom || qd__ptrmap_has(&c->seen, e))
         return;
     if (e->kind == QD_UFUNC || e->kind == QD_UDERIV)
         add_name(c, e->u.fn.name);
     for (size_t i = 0; i < e->nargs; i++)
         collect_names(c, e->args[i]);
-    c->oom |= !qd_ptrmap_put(&c->seen, e, (void *)e);
+    c->oom |= !qd__ptrmap_put(&c->seen, e, (void *)e);
 }
 
 static int name_order(const void *a, const void *b) {
@@ -310,8 +310,8 @@ qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *const *
         for (size_t i = 0; i < c.n; i++)
             qd_buf_printf(out, "%s = Function('%s')\n", c.list[i], c.list[i]);
     }
-    qd_ptrmap_free(&c.seen);
-    qd_ptrmap_free(&c.named);
+    qd__ptrmap_free(&c.seen);
+    qd__ptrmap_free(&c.named);
     qd__free(c.list);
     if (c.oom || out->failed) {
         qd__oom(ctx);

@@ -47,7 +47,7 @@ typedef struct reglist {
 
 typedef struct comp {
     qd_ctx *ctx;
-    qd_ptrmap index; /* node -> 1 + its position in nodes */
+    qd__ptrmap index; /* node -> 1 + its position in nodes */
     node_info *nodes;
     size_t nnodes, nodes_cap;
     instr *code;
@@ -84,7 +84,7 @@ static void *grow(comp *c, void *arr, size_t *cap, size_t need, size_t size) {
 /* ---- pass 1: the walk ---------------------------------------------------- */
 
 static node_info *info(const comp *c, const qd_expr *e) {
-    return &c->nodes[(uintptr_t)qd_ptrmap_get(&c->index, e) - 1];
+    return &c->nodes[(uintptr_t)qd__ptrmap_get(&c->index, e) - 1];
 }
 
 static bool add_node(comp *c, const qd_expr *e, uint8_t leaf) {
@@ -94,7 +94,7 @@ static bool add_node(comp *c, const qd_expr *e, uint8_t leaf) {
     c->nodes = nodes;
     c->nodes[c->nnodes] = (node_info){e, 0, 0, 0, leaf};
     c->nnodes++;
-    if (!qd_ptrmap_put(&c->index, e, (void *)(uintptr_t)c->nnodes))
+    if (!qd__ptrmap_put(&c->index, e, (void *)(uintptr_t)c->nnodes))
         c->oom = true;
     return !c->oom;
 }
@@ -106,7 +106,7 @@ static bool is_leaf_kind(const qd_expr *e) {
 /* Can e be computed at all?  (It is not an input: those are indexed first.) */
 static bool computable(comp *c, const qd_expr *e) {
     if (qd__is_num(e))
-        return qd__num_finite(c->ctx, e);
+        return qd__number_finite(c->ctx, e);
     if (e->kind == QD_SYMBOL && e->tag == QD_ROLE_COORD && e->order >= 3) {
         qd_ctx_error(c->ctx, QD_ERR_UNBOUND,
                      "%s is a derivative of order %u: only a coordinate, its velocity (q') "
@@ -134,14 +134,14 @@ typedef struct frame {
 #define PENDING ((void *)~(uintptr_t)0)
 
 static bool walk_push(comp *c, frame **st, size_t *n, size_t *cap, const qd_expr *e) {
-    if (qd_ptrmap_has(&c->index, e))
+    if (qd__ptrmap_has(&c->index, e))
         return true;
     if (!computable(c, e))
         return false;
     frame *s = grow(c, *st, cap, *n + 1, sizeof *s);
     if (s)
         *st = s;
-    if (!s || !qd_ptrmap_put(&c->index, e, PENDING)) {
+    if (!s || !qd__ptrmap_put(&c->index, e, PENDING)) {
         c->oom = true;
         return false;
     }
@@ -498,7 +498,7 @@ static bool index_inputs(comp *c, size_t nin, const qd_expr *const *inputs) {
             qd_ctx_error(c->ctx, QD_ERR_ARG, "input %zu of a program is NULL", i);
             return false;
         }
-        if (qd_ptrmap_has(&c->index, inputs[i])) { /* a repeated input: the last wins */
+        if (qd__ptrmap_has(&c->index, inputs[i])) { /* a repeated input: the last wins */
             info(c, inputs[i])->val = (uint32_t)i;
             continue;
         }
@@ -574,7 +574,7 @@ qd_prog *qd_prog_new(qd_ctx *ctx, size_t nin, const qd_expr *const *inputs, size
         p = assemble(&c, nout, outputs);
     if (!p && (c.oom || ctx->status == QD_OK))
         qd__oom(ctx);
-    qd_ptrmap_free(&c.index);
+    qd__ptrmap_free(&c.index);
     qd__free(c.nodes);
     qd__free(c.code);
     qd__free(c.opnd);

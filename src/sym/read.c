@@ -313,7 +313,7 @@ static char *prescan_primed(qd_ctx *ctx, const char *text) {
  * prints as (qd_print_set_time_name: x for `independent x`) is t first,
  * so that what the text printer writes reads back. */
 static const qd_expr *name_value(rd *p, const char *name, size_t off, size_t len) {
-    if (p->ctx->tname && !strcmp(name, p->ctx->tname))
+    if (p->ctx->sym->tname && !strcmp(name, p->ctx->sym->tname))
         return check(p, qd_time(p->ctx), off, len);
     const qd_expr *s = qd_lookup(p->ctx, name);
     if (s)

@@ -111,26 +111,26 @@ static const qd_expr *post(qd_ctx *ctx, const qd_expr *e, void *data) {
 }
 
 /* Does e use tan, exp or a square root (anything post may change)? */
-static bool wants(const qd_expr *e, qd_ptrmap *seen) {
-    if (!e->nargs || qd_ptrmap_has(seen, e))
+static bool wants(const qd_expr *e, qd__ptrmap *seen) {
+    if (!e->nargs || qd__ptrmap_has(seen, e))
         return false;
     if ((e->kind == QD_FUNC && (e->tag == QD_TAN || e->tag == QD_EXP)) || half_sign(e))
         return true;
     for (size_t i = 0; i < e->nargs; i++)
         if (wants(e->args[i], seen))
             return true;
-    qd_ptrmap_put(seen, e, (void *)e);
+    qd__ptrmap_put(seen, e, (void *)e);
     return false;
 }
 
 const qd_expr *qd__rewrite_identities(qd_ctx *ctx, const qd_expr *e) {
-    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     bool w = wants(e, &seen);
-    qd_ptrmap_free(&seen);
+    qd__ptrmap_free(&seen);
     if (!w)
         return e;
-    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = qd__map(ctx, e, &memo, post, NULL);
-    qd_ptrmap_free(&memo);
+    qd__ptrmap_free(&memo);
     return r;
 }

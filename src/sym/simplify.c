@@ -20,15 +20,15 @@
 #include "../base/args.h"
 
 /* A negative numeric power anywhere: a quotient cancel may shorten. */
-static bool has_quotient(const qd_expr *e, qd_ptrmap *seen) {
-    if (!e->nargs || qd_ptrmap_has(seen, e))
+static bool has_quotient(const qd_expr *e, qd__ptrmap *seen) {
+    if (!e->nargs || qd__ptrmap_has(seen, e))
         return false;
     if (e->kind == QD_POW && qd__is_num(e->args[1]) && qd_number_sign(e->args[1]) < 0)
         return true;
     for (size_t i = 0; i < e->nargs; i++)
         if (has_quotient(e->args[i], seen))
             return true;
-    qd_ptrmap_put(seen, e, (void *)e);
+    qd__ptrmap_put(seen, e, (void *)e);
     return false;
 }
 
@@ -41,8 +41,8 @@ typedef struct best {
 
 /* A quotient inside a denominator, x/(y/x + 1) (issue 33): of two
  * candidates of one length, the one without (x^2/(x + y)) wins. */
-static bool nested_walk(const qd_expr *e, bool below, qd_ptrmap *seen) {
-    if (!e->nargs || qd_ptrmap_has(&seen[below], e))
+static bool nested_walk(const qd_expr *e, bool below, qd__ptrmap *seen) {
+    if (!e->nargs || qd__ptrmap_has(&seen[below], e))
         return false;
     bool neg = e->kind == QD_POW && qd__is_num(e->args[1]) && qd_number_sign(e->args[1]) < 0;
     if (neg && below)
@@ -50,15 +50,16 @@ static bool nested_walk(const qd_expr *e, bool below, qd_ptrmap *seen) {
     for (size_t i = 0; i < e->nargs; i++)
         if (nested_walk(e->args[i], below || neg, seen))
             return true;
-    qd_ptrmap_put(&seen[below], e, (void *)e);
+    qd__ptrmap_put(&seen[below], e, (void *)e);
     return false;
 }
 
 static bool nested_quotient(qd_ctx *ctx, const qd_expr *e) {
-    qd_ptrmap seen[2] = {QD_PTRMAP_AL(qd__ctx_allocator(ctx)), QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
+    qd__ptrmap seen[2] = {QD_PTRMAP_AL(qd__ctx_allocator(ctx)),
+                          QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
     bool r = nested_walk(e, false, seen);
-    qd_ptrmap_free(&seen[0]);
-    qd_ptrmap_free(&seen[1]);
+    qd__ptrmap_free(&seen[0]);
+    qd__ptrmap_free(&seen[1]);
     return r;
 }
 
@@ -86,15 +87,15 @@ static void consider(qd_ctx *ctx, best *b, const qd_expr *cand) {
  * distributes over them, trigsimp and factoring rewrite them, cancel needs
  * one in a numerator or denominator to find a common factor): a sum-free
  * expression is canonical already. */
-static bool has_sum(const qd_expr *e, qd_ptrmap *seen) {
+static bool has_sum(const qd_expr *e, qd__ptrmap *seen) {
     if (e->kind == QD_ADD)
         return true;
-    if (!e->nargs || qd_ptrmap_has(seen, e))
+    if (!e->nargs || qd__ptrmap_has(seen, e))
         return false;
     for (size_t i = 0; i < e->nargs; i++)
         if (has_sum(e->args[i], seen))
             return true;
-    qd_ptrmap_put(seen, e, (void *)e);
+    qd__ptrmap_put(seen, e, (void *)e);
     return false;
 }
 
@@ -110,9 +111,9 @@ static void pipeline(qd_ctx *ctx, const qd_expr *e, best *b, const qd_expr **xou
     consider(ctx, b, x);
     x = qd_trigsimp(ctx, x);
     consider(ctx, b, x);
-    qd_ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     bool quotient = x && has_quotient(x, &seen);
-    qd_ptrmap_free(&seen);
+    qd__ptrmap_free(&seen);
     const qd_expr *c = NULL;
     if (quotient) {
         c = qd_cancel(ctx, x);
@@ -128,9 +129,9 @@ const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
     QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
-    qd_ptrmap seen0 = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap seen0 = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     bool sums = has_sum(e, &seen0);
-    qd_ptrmap_free(&seen0);
+    qd__ptrmap_free(&seen0);
     const qd_expr *r = qd__rewrite_identities(ctx, e);
     if (!r)
         return NULL;
@@ -147,7 +148,7 @@ const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
     if (b.failed)
         return NULL;
 
-    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     if (c) {
         consider_if(ctx, &b, qd__factor_polys(ctx, x, &memo), true);
         consider_if(ctx, &b, qd__factor_polys(ctx, c, &memo), true);
@@ -159,7 +160,7 @@ const qd_expr *qd_simplify(qd_ctx *ctx, const qd_expr *e) {
         consider_if(ctx, &b, qd__factor_polys(ctx, c2, &memo), true);
     }
     consider_if(ctx, &b, qd__factor_polys(ctx, b.e, &memo), true);
-    qd_ptrmap_free(&memo);
+    qd__ptrmap_free(&memo);
     if (!b.failed) { /* once more on the result: a factored sum may meet its root */
         const qd_expr *r2 = qd__rewrite_identities(ctx, b.e);
         if (r2 != b.e)

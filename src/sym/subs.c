@@ -15,14 +15,14 @@ const qd_expr *qd_subs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *c
     QD_ARGS(NULL, ctx && e && (n == 0 || from) && (n == 0 || to));
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = e;
     for (size_t i = 0; i < n; i++) {
         if (!from[i] || !to[i]) {
             r = NULL;
             goto done;
         }
-        if (!qd_ptrmap_put(&memo, from[i], (void *)to[i])) {
+        if (!qd__ptrmap_put(&memo, from[i], (void *)to[i])) {
             qd__oom(ctx);
             r = NULL;
             goto done;
@@ -30,6 +30,6 @@ const qd_expr *qd_subs(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *c
     }
     r = qd__map(ctx, e, &memo, NULL, NULL);
 done:
-    qd_ptrmap_free(&memo);
+    qd__ptrmap_free(&memo);
     return r;
 }

@@ -35,7 +35,7 @@ static const qd_expr *make_symbol(qd_ctx *ctx, const char *name, qd_role role, u
     const char *iname = qd__intern_name(ctx, name);
     if (!iname)
         return NULL;
-    const qd_expr *old = qd_ptrmap_get(&ctx->symtab, iname);
+    const qd_expr *old = qd__ptrmap_get(&ctx->sym->symtab, iname);
     if (old) {
         if (old->tag != role || old->order != order) {
             qd_ctx_error(ctx, QD_ERR_ARG, "'%s' is already a %s", name,
@@ -62,7 +62,7 @@ static const qd_expr *make_symbol(qd_ctx *ctx, const char *name, qd_role role, u
         return NULL;
     /* The jet links are caches on our own arena node, not part of its identity. */
     e->u.sym.coord = coord ? coord : e;
-    if (!qd_ptrmap_put(&ctx->symtab, iname, e)) {
+    if (!qd__ptrmap_put(&ctx->sym->symtab, iname, e)) {
         qd__oom(ctx);
         return NULL;
     }
@@ -141,5 +141,5 @@ const qd_expr *qd_jet(qd_ctx *ctx, const qd_expr *coord, unsigned order) {
 const qd_expr *qd_lookup(const qd_ctx *ctx, const char *name) {
     QD_ARGS(NULL, ctx && name);
     const char *iname = qd__find_name(ctx, name);
-    return iname ? qd_ptrmap_get(&ctx->symtab, iname) : NULL;
+    return iname ? qd__ptrmap_get(&ctx->sym->symtab, iname) : NULL;
 }

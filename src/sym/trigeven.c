@@ -117,7 +117,7 @@ static bool split(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, eterm
     size_t nf;
     long a, b;
     *et = (eterm){*slot, NULL, NULL, NULL, 0, 0, NULL, 0, 0, false};
-    factors(slot, &et->coeff, &fs, &nf, ctx->one);
+    factors(slot, &et->coeff, &fs, &nf, ctx->sym->one);
     et->key = et->fs = fs;
     et->nkey = et->nf = nf;
     if (!exponents(fs, nf, g, &a, &b) || (a < 2 && b < 2))
@@ -158,13 +158,13 @@ static long binom(long n, long k) {
 static bool poly_form(qd_ctx *ctx, eterm *const *g, size_t n, bool in_sin, const qd_expr **p,
                       long deg) {
     for (long d = 0; d <= deg; d++)
-        p[d] = ctx->zero;
+        p[d] = ctx->sym->zero;
     for (size_t i = 0; i < n; i++) {
         long keep = in_sin ? g[i]->al : g[i]->be, drop = in_sin ? g[i]->be : g[i]->al;
         for (long j = 0; j <= drop; j++) {
             const qd_expr *c = qd_int(ctx, (j % 2 ? -1 : 1) * binom(drop, j));
-            c = c ? qd__num_mul(ctx, g[i]->coeff, c) : NULL;
-            if (!c || !(p[keep + j] = qd__num_add(ctx, p[keep + j], c)))
+            c = c ? qd__number_mul(ctx, g[i]->coeff, c) : NULL;
+            if (!c || !(p[keep + j] = qd__number_add(ctx, p[keep + j], c)))
                 return false;
         }
     }
@@ -219,7 +219,7 @@ static cost form_cost(qd_ctx *ctx, eterm *const *g, size_t n, way w, const angle
     vec v = {NULL, 0, 0};
     const qd_expr *s = NULL;
     if (form_terms(ctx, g, n, w, a, deg, &v))
-        s = v.n ? qd_add_n(ctx, v.n, v.v) : ctx->zero;
+        s = v.n ? qd_add_n(ctx, v.n, v.v) : ctx->sym->zero;
     qd__free(v.v);
     *ok = *ok && s;
     return s ? cost_of(s) : (cost){0, 0};
@@ -315,7 +315,7 @@ static const qd_expr *reduce_angle(qd_ctx *ctx, const qd_expr *sum, const angle 
     const qd_expr *r = !ok        ? NULL
                        : !changed ? sum
                        : out.n    ? qd_add_n(ctx, out.n, out.v)
-                                  : ctx->zero;
+                                  : ctx->sym->zero;
     if (!ok && ctx->status == QD_OK)
         qd__oom(ctx);
     for (size_t i = 0; t && i < n; i++)
@@ -398,7 +398,7 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
                     vec *out) {
     const qd_expr *coeff, *const *fs;
     size_t nf, ne, combos = 1;
-    factors(slot, &coeff, &fs, &nf, ctx->one);
+    factors(slot, &coeff, &fs, &nf, ctx->sym->one);
     elim *e = qd__malloc(ctx, (nf ? nf : 1) * sizeof *e);
     if (!e)
         return false;
@@ -425,7 +425,7 @@ static bool nf_term(qd_ctx *ctx, const qd_expr *const *slot, const angle *g, siz
         for (size_t i = 0; ok && i < ne; r /= (size_t)e[i].drop + 1, i++) {
             long j = (long)(r % ((size_t)e[i].drop + 1));
             const qd_expr *bj = qd_int(ctx, (j % 2 ? -1 : 1) * binom(e[i].drop, j));
-            c = bj ? qd__num_mul(ctx, c, bj) : NULL;
+            c = bj ? qd__number_mul(ctx, c, bj) : NULL;
             buf[m++] = qd_powi(ctx, e[i].keep, e[i].keep_exp + 2 * j);
             buf[m++] = qd_powi(ctx, e[i].drop_base, e[i].rest);
             ok = c && buf[m - 1] && buf[m - 2];

@@ -314,12 +314,12 @@ static bool load(pass *p, const qd_expr *s) {
         if (qd__is_num(x)) {
             t->coeff = x;
         } else if (x->kind != QD_MUL) {
-            t->coeff = p->ctx->one;
+            t->coeff = p->ctx->sym->one;
             t->fs = &s->args[i];
             t->nf = 1;
         } else {
             size_t off = qd__is_num(x->args[0]) ? 1 : 0;
-            t->coeff = off ? x->args[0] : p->ctx->one;
+            t->coeff = off ? x->args[0] : p->ctx->sym->one;
             t->fs = x->args + off;
             t->nf = x->nargs - off;
         }
@@ -419,8 +419,8 @@ const qd_expr *qd_trigsimp(qd_ctx *ctx, const qd_expr *e) {
     QD_ARGS(NULL, ctx && e);
     if (!e)
         return NULL;
-    qd_ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
     const qd_expr *r = qd__map(ctx, e, &memo, post_trig, NULL);
-    qd_ptrmap_free(&memo);
+    qd__ptrmap_free(&memo);
     return r;
 }

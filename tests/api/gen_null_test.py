@@ -114,6 +114,7 @@ NULLABLE = {
     'qd_sweep_run': {'data', 'progress', 'reasons'},
     'qd_sweep_set_lyap': {'lo'},
     'qd_symmetry_from_ops': {'R'},
+    'qd_group_characters': {'R'},
     'qd_ufunc': {'args'},
     'qd_zvc_curves': {'syms', 'vals'},
     'qd_zvc_picture_make': {'syms', 'vals'},

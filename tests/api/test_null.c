@@ -20,6 +20,7 @@
 #include "qdot/certify.h"
 #include "qdot/codegen.h"
 #include "qdot/constrained.h"
+#include "qdot/contour.h"
 #include "qdot/control.h"
 #include "qdot/equilibria.h"
 #include "qdot/eval.h"
@@ -595,6 +596,28 @@ static void null_constrained(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_contour(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_contour_grid */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(NULL, 1, 1, F.d, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, NULL, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, F.d, 1, 1, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_contour_free */
+    /* c NULL */
+    qd_contour_free(NULL);
     reset(&F);
     teardown(&F);
 }
@@ -1526,6 +1549,16 @@ static void null_hamilton(void **state)
     reset(&F);
     /* qd_out NULL */
     assert_int_equal(QD_ERR_ARG, qd_ham_velocities_at(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_ham_require_closed */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_require_closed(NULL, NULL, "q"));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_require_closed(F.ctx, NULL, "q"));
+    reset(&F);
+    /* what NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_require_closed(F.ctx, NULL, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -4568,6 +4601,16 @@ static void null_symmetry(void **state)
     /* lin NULL */
     assert_int_equal(QD_ERR_ARG, qd_symmetry_reduce(F.ctx, NULL, NULL));
     reset(&F);
+    /* ---- qd_group_characters */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_group_characters(NULL, 1, F.z, F.d, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* table NULL */
+    assert_int_equal(QD_ERR_ARG, qd_group_characters(F.ctx, 1, NULL, F.d, (qd_symmetry *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_group_characters(F.ctx, 1, F.z, F.d, NULL));
+    reset(&F);
     /* ---- qd_symmetry_block_label */
     /* sym NULL */
     qd_symmetry_block_label(NULL, 1, F.c, 1);
@@ -4622,20 +4665,6 @@ static void null_zvc(void **state)
     (void)state;
     static fixture F;
     setup(&F);
-    /* ---- qd_contour_grid */
-    /* ctx NULL */
-    assert_int_equal(QD_ERR_ARG, qd_contour_grid(NULL, 1, 1, F.d, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
-    reset(&F);
-    /* f NULL */
-    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, NULL, 1, 1, 1, 1, 1, (qd_contour *)(void *)F.blob));
-    reset(&F);
-    /* out NULL */
-    assert_int_equal(QD_ERR_ARG, qd_contour_grid(F.ctx, 1, 1, F.d, 1, 1, 1, 1, 1, NULL));
-    reset(&F);
-    /* ---- qd_contour_free */
-    /* c NULL */
-    qd_contour_free(NULL);
-    reset(&F);
     /* ---- qd_zvc_derive */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_zvc_derive(NULL, F.model, F.eom, (qd_zvc *)(void *)F.blob));
@@ -4748,6 +4777,7 @@ int main(void)
         cmocka_unit_test(null_certify),
         cmocka_unit_test(null_codegen),
         cmocka_unit_test(null_constrained),
+        cmocka_unit_test(null_contour),
         cmocka_unit_test(null_control),
         cmocka_unit_test(null_equilibria),
         cmocka_unit_test(null_eval),

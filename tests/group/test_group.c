@@ -126,7 +126,7 @@ static built build(size_t ngen, const double *gens) {
 }
 
 static void unbuild(built *b) {
-    qd__chartab_free(&b->t);
+    qd__group_chartab_free(&b->t);
     qd__group_free(&b->g);
     qd_ctx_free(b->ctx);
     free(b->m);
@@ -242,6 +242,36 @@ static void check_vector_rep(const built *b, const std_table *s, const size_t *f
     }
 }
 
+/* The public entry (qd_group_characters, qdot/symmetry.h) from the same
+ * Cayley table: Cotton's name, his class sizes (as a multiset), sum d^2 =
+ * |G| (Burnside), and each of his Mulliken symbols among the labels. */
+static void check_public(const built *b, const std_table *s) {
+    qd_symmetry pub;
+    assert_int_equal(qd_group_characters(b->ctx, b->m->n, b->m->mul, b->m->R, &pub), QD_OK);
+    assert_string_equal(pub.name, s->name);
+    assert_int_equal(pub.nclass, s->nclass);
+    assert_int_equal(pub.nirrep, s->nclass);
+    size_t want[MAXC + 1] = {0}, got[MAXC + 1] = {0}, d2 = 0;
+    for (size_t k = 0; k < s->nclass; k++) {
+        want[s->sizes[k] <= MAXC ? s->sizes[k] : MAXC]++;
+        got[pub.class_size[k] <= MAXC ? pub.class_size[k] : MAXC]++;
+        d2 += pub.irrep_dim[k] * pub.irrep_dim[k];
+    }
+    assert_memory_equal(want, got, sizeof want);
+    assert_int_equal(d2, b->m->n);
+    for (size_t k = 0; k < s->nclass; k++) {
+        bool seen = false;
+        for (size_t i = 0; i < pub.nirrep; i++)
+            seen |= strcmp(pub.label[i], s->labels[k]) == 0;
+        assert_true(seen);
+    }
+    qd_symmetry_free(&pub);
+    /* not a group: refused, nothing to free */
+    size_t bad[4] = {0, 1, 1, 1};
+    assert_int_equal(qd_group_characters(b->ctx, 2, bad, NULL, &pub), QD_ERR_ARG);
+    qd_ctx_clear_error(b->ctx);
+}
+
 static void check_standard(size_t ngen, const double *gens, const std_table *s) {
     built b = build(ngen, gens);
     size_t found[MAXC];
@@ -250,11 +280,12 @@ static void check_standard(size_t ngen, const double *gens, const std_table *s) 
     match_standard(&b, s, found);
     check_vector_rep(&b, s, found);
     char name[16], labels[MAXC][12];
-    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, b.m->R, name), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(b.ctx, &b.g, b.m->R, name), QD_OK);
     assert_string_equal(name, s->name);
-    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
     for (size_t k = 0; k < s->nclass; k++)
         assert_string_equal(labels[found[k]], s->labels[k]);
+    check_public(&b, s);
     unbuild(&b);
 }
 
@@ -399,7 +430,7 @@ static void check_cyclic(size_t n) {
     if (n <= 50)
         check_theorems(&g, &t);
     free(seen);
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
     free(m);
@@ -447,7 +478,7 @@ static void check_dihedral(size_t n, bool timed) {
             for (size_t b = 0; b < 7; b++)
                 check_class_products(&g, &t, g.class_of[ps[a]], g.class_of[ps[b]]);
     }
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
     free(m);
@@ -523,7 +554,7 @@ static void check_dnh(size_t n, bool timed) {
     if (n <= 50)
         check_theorems(&g, &t);
     free(hit);
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
     free(m);
@@ -571,7 +602,7 @@ static void check_abelian(size_t p, size_t q) {
     if (n <= 128)
         check_theorems(&g, &t);
     free(hit);
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
     free(m);
@@ -612,7 +643,7 @@ static void test_quaternion(void **state) {
     assert_true(chi(&t, 4, g.class_of[4]) == -2);
     for (size_t x = 1; x < 4; x++)
         assert_true(chi(&t, 4, g.class_of[x]) == 0);
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
 }
@@ -677,7 +708,7 @@ static void test_s5(void **state) {
         standard += same;
     }
     assert_int_equal(standard, 1);
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
     free(m);
@@ -782,14 +813,14 @@ static void test_td_vertices(void **state) {
     assert_int_equal(g.identity, 5);
     assert_int_equal(qd__group_characters(b.ctx, &g, &t), QD_OK);
     check_theorems(&g, &t);
-    assert_int_equal(qd__pointgroup_name(b.ctx, &g, R, name), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(b.ctx, &g, R, name), QD_OK);
     assert_string_equal(name, "Td");
-    assert_int_equal(qd__irrep_labels(b.ctx, &g, R, &t, labels), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(b.ctx, &g, R, &t, labels), QD_OK);
     const char *v[5] = {labels[0], labels[1], labels[2], labels[3], labels[4]};
     char all[64];
     join_sorted(5, v, all, sizeof all);
     assert_string_equal(all, "A1 A2 E T1 T2");
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     free(mul);
     unbuild(&b);
@@ -808,9 +839,9 @@ static void check_named(size_t ngen, const double *gens, const named *want) {
     size_t n = b.t.n, nv = 0;
     char name[16], (*labels)[12] = calloc(n, sizeof *labels), all[512], vec[128];
     const char **v = calloc(n, sizeof *v), *vv[3];
-    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, b.m->R, name), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(b.ctx, &b.g, b.m->R, name), QD_OK);
     assert_string_equal(name, want->name);
-    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
     for (size_t i = 0; i < n; i++) {
         v[i] = labels[i];
         double complex m = 0;
@@ -911,7 +942,7 @@ static void test_icosahedral(void **state) {
     const double want[5][5] = {{1, 1, 1, 1, 1}, {3, p, q, 0, -1}, {3, q, p, 0, -1}, {4, -1, -1, 1, 0},
                                {5, 0, 0, -1, 1}};
     char labels[5][12];
-    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(b.ctx, &b.g, b.m->R, &b.t, labels), QD_OK);
     for (size_t k = 0; k < 5; k++) {
         size_t i = 0;
         while (i < 5 && strcmp(labels[i], names[k]))
@@ -934,19 +965,19 @@ static void test_not_point_group(void **state) {
     memcpy(R, b.m->R, sizeof R);
     R[9 * 1 + 0] = 2;  /* not orthogonal */
     char name[16] = "x", labels[4][12];
-    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, R, name), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(b.ctx, &b.g, R, name), QD_OK);
     assert_string_equal(name, "");
     memcpy(R, b.m->R, sizeof R);
     memcpy(R + 9, b.m->R + 18, 9 * sizeof *R);  /* two elements, one matrix */
-    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, R, name), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(b.ctx, &b.g, R, name), QD_OK);
     assert_string_equal(name, "");
-    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, R, &b.t, labels), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(b.ctx, &b.g, R, &b.t, labels), QD_OK);
     assert_string_equal(labels[0], "Gamma1");
     assert_string_equal(labels[3], "Gamma4");
     strcpy(name, "x");  /* no matrices at all: an abstract group, not an error */
-    assert_int_equal(qd__pointgroup_name(b.ctx, &b.g, NULL, name), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(b.ctx, &b.g, NULL, name), QD_OK);
     assert_string_equal(name, "");
-    assert_int_equal(qd__irrep_labels(b.ctx, &b.g, NULL, &b.t, labels), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(b.ctx, &b.g, NULL, &b.t, labels), QD_OK);
     assert_string_equal(labels[1], "Gamma2");
     assert_int_equal(qd_ctx_status(b.ctx), QD_OK);
     unbuild(&b);
@@ -974,8 +1005,8 @@ static void test_ring(void **state) {
     assert_int_equal(qd__group_from_table(ctx, 2 * N, m, &g), QD_OK);
     assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    assert_int_equal(qd__pointgroup_name(ctx, &g, R, name), QD_OK);
-    assert_int_equal(qd__irrep_labels(ctx, &g, R, &t, labels), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(ctx, &g, R, name), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(ctx, &g, R, &t, labels), QD_OK);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     printf("C%dv: name and %zu labels in %.3f s\n", N, t.n,
            (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
@@ -992,7 +1023,7 @@ static void test_ring(void **state) {
             assert_string_equal(labels[i], want);
         }
     }
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
     free(labels);
@@ -1022,9 +1053,9 @@ static void test_ring_in_space(void **state) {
     qd__chartab t;
     assert_int_equal(qd__group_from_table(ctx, M, m, &g), QD_OK);
     assert_int_equal(qd__group_characters(ctx, &g, &t), QD_OK);
-    assert_int_equal(qd__pointgroup_name(ctx, &g, R, name), QD_OK);
+    assert_int_equal(qd__group_pointgroup_name(ctx, &g, R, name), QD_OK);
     assert_string_equal(name, "D1000h");
-    assert_int_equal(qd__irrep_labels(ctx, &g, R, &t, labels), QD_OK);
+    assert_int_equal(qd__group_irrep_labels(ctx, &g, R, &t, labels), QD_OK);
     size_t seen[2][N / 2] = {{0}}, ones = 0;
     for (size_t i = 0; i < t.n; i++) {
         size_t len = strlen(labels[i]);
@@ -1039,7 +1070,7 @@ static void test_ring_in_space(void **state) {
         }
     }
     assert_int_equal(ones, 8);
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     qd_ctx_free(ctx);
     free(labels);
@@ -1068,9 +1099,9 @@ static qd_status fault_body(qd_ctx *ctx, qt_faulty *f, void *data) {
     if (st == QD_OK)
         st = qd__group_characters(ctx, &g, &t);
     if (st == QD_OK)
-        st = qd__pointgroup_name(ctx, &g, c->m->R, name);
+        st = qd__group_pointgroup_name(ctx, &g, c->m->R, name);
     if (st == QD_OK)
-        st = qd__irrep_labels(ctx, &g, c->m->R, &t, labels);
+        st = qd__group_irrep_labels(ctx, &g, c->m->R, &t, labels);
     if (st == QD_OK) {
         assert_string_equal(name, c->name);
         for (size_t i = 0; i < t.n; i++)
@@ -1078,7 +1109,7 @@ static qd_status fault_body(qd_ctx *ctx, qt_faulty *f, void *data) {
         join_sorted(t.n, v, all, sizeof all);
         assert_string_equal(all, c->labels);
     }
-    qd__chartab_free(&t);
+    qd__group_chartab_free(&t);
     qd__group_free(&g);
     return st;
 }

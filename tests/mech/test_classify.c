@@ -65,7 +65,7 @@ static qd_con *con(sys *s, size_t k, const char *name, const qd_expr *const *a,
 }
 
 static qd_con *classify(sys *s, qd_con *c) {
-    qd_status st = qd__con_classify(s->ctx, s->n, s->q, c);
+    qd_status st = qd__mech_con_classify(s->ctx, s->n, s->q, c);
     if (st != QD_OK)
         fail_msg("%s: %s", c->name, qd_ctx_message(s->ctx));
     return c;
@@ -214,7 +214,7 @@ static void test_y_z_x(void **state) {
     assert_null(c->integral);
     qd_con *one[1] = {c};
     bool ok;
-    assert_int_equal(qd__con_frobenius(s->ctx, s->n, s->q, one, 1, &ok), QD_OK);
+    assert_int_equal(qd__mech_con_frobenius(s->ctx, s->n, s->q, one, 1, &ok), QD_OK);
     assert_false(ok);
 }
 
@@ -243,7 +243,7 @@ static void test_rolling_disk(void **state) {
     assert_int_equal(c2->kind, QD_CON_NONHOLONOMIC);
     qd_con *both[2] = {c1, c2};
     bool ok = true;
-    assert_int_equal(qd__con_frobenius(ctx, s->n, s->q, both, 2, &ok), QD_OK);
+    assert_int_equal(qd__mech_con_frobenius(ctx, s->n, s->q, both, 2, &ok), QD_OK);
     assert_false(ok);
 }
 
@@ -274,11 +274,11 @@ static void test_axle(void **state) {
     assert_integral(s, c3);
     bool ok = true;
     qd_con *all[3] = {c1, c2, c3}, *exact[2] = {c3, c4};
-    assert_int_equal(qd__con_frobenius(ctx, s->n, s->q, all, 3, &ok), QD_OK);
+    assert_int_equal(qd__mech_con_frobenius(ctx, s->n, s->q, all, 3, &ok), QD_OK);
     assert_false(ok);
-    assert_int_equal(qd__con_frobenius(ctx, s->n, s->q, exact, 2, &ok), QD_OK);
+    assert_int_equal(qd__mech_con_frobenius(ctx, s->n, s->q, exact, 2, &ok), QD_OK);
     assert_true(ok);
-    assert_int_equal(qd__con_frobenius(ctx, s->n, s->q, all + 2, 1, &ok), QD_OK);
+    assert_int_equal(qd__mech_con_frobenius(ctx, s->n, s->q, all + 2, 1, &ok), QD_OK);
     assert_true(ok);
 }
 
@@ -301,19 +301,19 @@ static void test_frobenius_system(void **state) {
     qd_con *c3 = con(s, 2, "du", du, o);
     qd_con *pair[2] = {c1, c2}, *other[2] = {c1, c3};
     bool ok = false;
-    assert_int_equal(qd__con_frobenius(ctx, s->n, s->q, pair, 2, &ok), QD_OK);
+    assert_int_equal(qd__mech_con_frobenius(ctx, s->n, s->q, pair, 2, &ok), QD_OK);
     assert_true(ok);
-    assert_int_equal(qd__con_frobenius(ctx, s->n, s->q, other, 2, &ok), QD_OK);
+    assert_int_equal(qd__mech_con_frobenius(ctx, s->n, s->q, other, 2, &ok), QD_OK);
     assert_false(ok);
 }
 
 /* ---- the constraints together: relations among the coordinates --------------- */
 
-/* qd__con_closure on the first m constraints of s: the number of
+/* qd__mech_con_closure on the first m constraints of s: the number of
  * independent forms and of relations phi(q, t) = const they imply. */
 static void closure(sys *s, size_t m, size_t rank, size_t relations) {
     size_t r, rel;
-    if (qd__con_closure(s->ctx, s->n, s->q, s->con, m, &r, &rel) != QD_OK)
+    if (qd__mech_con_closure(s->ctx, s->n, s->q, s->con, m, &r, &rel) != QD_OK)
         fail_msg("closure: %s", qd_ctx_message(s->ctx));
     if (r != rank || rel != relations)
         fail_msg("closure: %zu forms and %zu relations, expected %zu and %zu", r, rel, rank,
@@ -345,7 +345,8 @@ static void test_closure_axle(void **state) {
      * axle of length b) */
     size_t r, rel, nint;
     const qd_expr *phi[2];
-    assert_int_equal(qd__con_relations(ctx, 5, s->q, s->con, 3, &r, &rel, phi, 2, &nint), QD_OK);
+    assert_int_equal(qd__mech_con_relations(ctx, 5, s->q, s->con, 3, &r, &rel, phi, 2, &nint),
+                     QD_OK);
     assert_int_equal(nint, 1);
     const qd_expr *d[5];
     for (int j = 0; j < 5; j++)
@@ -486,7 +487,7 @@ static void test_closure_random(void **state) {
         if (qd_is_zero(th[1][2]) && qd_is_zero(th[1][3]))
             continue;
         size_t rank, rel;
-        if (qd__con_closure(ctx, 5, s->q, s->con, 3, &rank, &rel) != QD_OK)
+        if (qd__mech_con_closure(ctx, 5, s->q, s->con, 3, &rank, &rel) != QD_OK)
             fail_msg("case %d (seed %u): %s", i, SEED, qd_ctx_message(ctx));
         if (rank != 3 || rel != 2)
             fail_msg("case %d (seed %u): %zu forms, %zu relations; expected 3 and 2", i, SEED,
@@ -503,7 +504,7 @@ static void test_no_velocity(void **state) {
     sys *s = sys_new(state, 1, names);
     const qd_expr *w[1] = {I(s, 0)};
     qd_con *c = con(s, 0, "none", w, s->q[0]);
-    assert_int_equal(qd__con_classify(s->ctx, 1, s->q, c), QD_ERR_ARG);
+    assert_int_equal(qd__mech_con_classify(s->ctx, 1, s->q, c), QD_ERR_ARG);
 }
 
 /* Random phi(q, t) and g(q, t) > 0: g dphi is integrable (never called
@@ -531,7 +532,7 @@ static void test_random_integrable(void **state) {
         bool moves = !qd_is_zero(w[0]) || !qd_is_zero(w[1]) || !qd_is_zero(w[2]);
         if (!moves)
             continue;
-        if (qd__con_classify(ctx, 3, s->q, c) != QD_OK)
+        if (qd__mech_con_classify(ctx, 3, s->q, c) != QD_OK)
             fail_msg("case %d (seed %u): %s", i, SEED, qd_ctx_message(ctx));
         if (c->kind != QD_CON_INTEGRABLE)
             fail_msg("case %d (seed %u): g dphi called nonholonomic", i, SEED);

@@ -50,7 +50,7 @@ static bool assert_solves(qd_ctx *ctx, const qd_expr *e, const qd_expr *y, doubl
     }
     const qd_expr *eq = qd_sub(ctx, e, r);
     size_t failed;
-    if (qd__isolate(ctx, 1, &eq, &y, &sol, &failed) != QD_OK)
+    if (qd__mech_isolate(ctx, 1, &eq, &y, &sol, &failed) != QD_OK)
         fail_msg("case %d (seed %u): no solution of %s = r: %s", which, SEED, text(ctx, e),
                  qd_ctx_message(ctx));
     assert_false(qd_has(sol, y));
@@ -123,7 +123,7 @@ static void test_shapes(void **state) {
     for (int k = 0; k < 2; k++) {
         const qd_expr *sol;
         size_t failed = 9;
-        assert_int_equal(qd__isolate(ctx, 1, &bad[k], &y, &sol, &failed), QD_ERR_NONLINEAR);
+        assert_int_equal(qd__mech_isolate(ctx, 1, &bad[k], &y, &sol, &failed), QD_ERR_NONLINEAR);
         assert_int_equal(failed, 0);
         assert_int_equal(qd_ctx_status(ctx), QD_OK);
     }
@@ -132,7 +132,7 @@ static void test_shapes(void **state) {
     const qd_expr *eqs[2] = {qd_sub(ctx, qd_add(ctx, qd_powi(ctx, x, 3), y), qd_int(ctx, 2)),
                              qd_sub(ctx, qd_fn(ctx, QD_EXP, x), qd_int(ctx, 3))};
     size_t failed;
-    assert_int_equal(qd__isolate(ctx, 2, eqs, xs, sols, &failed), QD_OK);
+    assert_int_equal(qd__mech_isolate(ctx, 2, eqs, xs, sols, &failed), QD_OK);
     double vy, vx;
     assert_int_equal(qd_eval(ctx, sols[0], 0, NULL, NULL, &vy), QD_OK);
     assert_int_equal(qd_eval(ctx, sols[1], 0, NULL, NULL, &vx), QD_OK);
@@ -151,7 +151,7 @@ static void test_untrig(void **state) {
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             const qd_expr *e = qd_fn(ctx, f[i], qd_fn(ctx, g[j], u));
-            const qd_expr *plain = qd__untrig(ctx, e);
+            const qd_expr *plain = qd__mech_untrig(ctx, e);
             assert_false(qd_has(plain, qd_fn(ctx, g[j], u)));
             static const double at[] = {-0.9, -0.55, -0.2, 0.25, 0.6, 0.85}; /* not 0: tan(acos) */
             for (size_t k = 0; k < sizeof at / sizeof at[0]; k++) {

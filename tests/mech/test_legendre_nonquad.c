@@ -187,6 +187,8 @@ static void test_relativistic_1d(void **state) {
                  "L = -m*c^2*sqrt(1 - x'^2/c^2) - k*x^2/2\n");
     assert_non_null(f.h);
     assert_false(f.h->implicit);
+    /* H in closed form: what needs one may use it */
+    assert_int_equal(qd_ham_require_closed(f.ctx, f.h, "the action variables"), QD_OK);
     assert_H(&f, "sqrt(m^2*c^4 + c^2*p_x^2) + k*x^2/2");
     assert_true(f.h->conserved);
     check_round_trip(&f);
@@ -246,6 +248,12 @@ static void test_implicit_quartic(void **state) {
     assert_non_null(f.h);
     assert_true(f.h->implicit);
     check_round_trip(&f);
+    /* a cubic in x' has no closed-form inverse here: what needs H as a
+     * formula is told so, and by name */
+    assert_int_equal(qd_ham_require_closed(f.ctx, f.h, "the Hamilton-Jacobi equation"),
+                     QD_ERR_NONLINEAR);
+    assert_non_null(strstr(qd_ctx_message(f.ctx), "the Hamilton-Jacobi equation needs H"));
+    qd_ctx_clear_error(f.ctx);
     unload(&f);
     /* the Hessian 3 y'^2 vanishes at Newton's first guess y' = 0 */
     f = load("coordinates x, y\nL = x'^2/2 + y'^4/4 - x^2\n");

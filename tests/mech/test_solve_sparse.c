@@ -83,7 +83,7 @@ static void test_random_systems(void **state) {
             }
         for (size_t i = 0; i < n * nc; i++)
             B[i] = qt_random_expr(ctx, &rng, syms, 3, 2, QT_POLY | QT_TRIG);
-        qd_status st = qd__solve_sparse(ctx, n, A, nc, B, X, 0, NULL, NULL);
+        qd_status st = qd__mech_solve_sparse(ctx, n, A, nc, B, X, 0, NULL, NULL);
         if (st != QD_OK)
             fail_msg("case %d (seed %u, n %zu, pattern %u): %s", k, SEED, n, pattern,
                      qd_ctx_message(ctx));
@@ -116,7 +116,7 @@ static void test_triangular_exact(void **state) {
     /* unknowns q1', q2', q3'; rows u1 = q2', u2 = q3' + sin q2 q1', u3 = cos q2 q1' */
     const qd_expr *A[9] = {z, one, z, qd_fn(ctx, QD_SIN, q2), z, one, qd_fn(ctx, QD_COS, q2), z, z};
     const qd_expr *X[3];
-    assert_int_equal(qd__solve_sparse(ctx, 3, A, 1, u, X, 0, NULL, NULL), QD_OK);
+    assert_int_equal(qd__mech_solve_sparse(ctx, 3, A, 1, u, X, 0, NULL, NULL), QD_OK);
     const qd_expr *want[3] = {qd_div(ctx, u[2], qd_fn(ctx, QD_COS, q2)), u[0],
                               qd_sub(ctx, u[1], qd_div(ctx, qd_mul(ctx, u[2], qd_fn(ctx, QD_SIN, q2)), qd_fn(ctx, QD_COS, q2)))};
     for (int j = 0; j < 3; j++)
@@ -128,7 +128,7 @@ static void assert_singular(qd_ctx *ctx, size_t n, const qd_expr *const *A) {
     const qd_expr *B[4], *X[4];
     for (size_t i = 0; i < n; i++)
         B[i] = qd_int(ctx, (long)i + 1);
-    assert_int_equal(qd__solve_sparse(ctx, n, A, 1, B, X, 0, NULL, NULL), QD_ERR_SINGULAR);
+    assert_int_equal(qd__mech_solve_sparse(ctx, n, A, 1, B, X, 0, NULL, NULL), QD_ERR_SINGULAR);
 }
 
 static void test_singular(void **state) {
