@@ -203,18 +203,18 @@ static int run(cli_sim *c, const ly_args *p) {
 int cli_cmd_lyapunov(int argc, char **argv) {
     ly_args p = {.n = 1};
     int rc = cli_file_args(argc, argv, "lyapunov", usage_text, &p.a.file, parse_option, &p);
-    if (rc == QD_EXIT_OK && !p.a.has_t_end) {
+    if (rc == QD_EXIT_OK && !p.a.t_end) {
         cli_diag_error("--t-end is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
     /* Runge-Kutta: dop853 unless named; --dt makes its step fixed */
-    if (!p.a.method_name)
-        p.a.method_name = "dop853";
+    if (!p.a.method)
+        p.a.method = "dop853";
+    p.a.fixed = true; /* with --dt */
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &p.a);
-    c.opts.fixed = p.a.has_dt;
     if (rc == QD_EXIT_OK)
         rc = run(&c, &p);
     cli_sim_free(&c);

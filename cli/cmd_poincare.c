@@ -23,7 +23,7 @@ static const char usage_text[] =
     "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... [--native] "
     "[--plot FILE.png|.svg|.pdf [--phase Q]]";
 
-#define DEFAULT_T_MAX 1e6
+#define DEFAULT_T_MAX "1e6"
 
 typedef struct pc_args {
     cli_sim_args a;
@@ -143,7 +143,7 @@ int cli_cmd_poincare(int argc, char **argv) {
                        "--phase, not --plot-y");
         rc = QD_EXIT_USAGE;
     }
-    if (rc == QD_EXIT_OK && (p.a.nevents || p.a.output)) {
+    if (rc == QD_EXIT_OK && (p.a.events.n || p.a.stops.n || p.a.output)) {
         /* shared with simulate; a section's rows are the crossings alone */
         cli_diag_error("poincare takes its crossings from --section: %s is simulate's",
                        p.a.output ? "--output" : "--event or --stop-at");
@@ -153,14 +153,9 @@ int cli_cmd_poincare(int argc, char **argv) {
         rc = cli_plot_check(&p.a.plot, "poincare");
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!p.a.has_t_end) {
+    if (!p.a.t_end)
         p.a.t_end = DEFAULT_T_MAX;
-        p.a.has_t_end = true;
-    }
-    p.a.events[0] = p.section;
-    p.a.event_stop[0] = false;
-    p.a.event_label[0] = "--section";
-    p.a.nevents = 1;
+    p.a.section = p.section;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &p.a);
     /* a fixed-step method given --dt: rows only at crossings, so any method works */

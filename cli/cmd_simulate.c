@@ -505,7 +505,7 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
         }
     if (ok)
         cli_out_write(o.out, "\n", 1, &o.err);
-    qd_flow_opts fo = {.every = a->has_dt ? a->dt : (c->opts.t_end - c->opts.t0) / 100,
+    qd_flow_opts fo = {.every = a->dt ? c->opts.dt : (c->opts.t_end - c->opts.t0) / 100,
                        .sink = col_sink, .data = &o};
     double *y0 = calloc(d + d * d, sizeof *y0); /* the first row: y(t0), Phi = I */
     if (!y0) {
@@ -563,11 +563,11 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     /* a step can span a swing: without --dt a picture alone samples the
      * dense output; rows written (--out, --format json) are never changed
      * by --plot, which then draws those rows (issue 36) */
-    if (a->plot.file && !a->out && !a->json && !a->has_dt &&
+    if (a->plot.file && !a->out && !a->json && !a->dt &&
         qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
         c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     sim_out o = {.ncols = ncols,
-                 .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
+                 .events = a->events.n + a->stops.n > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
                            qd_sim_ncontacts(c->s) > 0,
                  .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .names = names, .line = line};
@@ -691,15 +691,14 @@ int cli_cmd_simulate(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&a.plot, "simulate");
     if (rc == QD_EXIT_OK && sa.period > 0) {
-        if (a.has_t_end) {
+        if (a.t_end) {
             cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to "
                            "t0 + T)");
             return QD_EXIT_USAGE;
         }
-        a.has_t_end = true;
-        a.t_end = 1e300; /* t0 + T once the initial state (t0) is read */
+        a.t_end = "1e300"; /* t0 + T once the initial state (t0) is read */
     }
-    if (rc == QD_EXIT_OK && !a.has_t_end) {
+    if (rc == QD_EXIT_OK && !a.t_end) {
         cli_diag_error("--t-end is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;
     }

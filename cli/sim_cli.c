@@ -26,158 +26,104 @@
 #include "model_cli.h"
 #include "qdot/codegen.h"
 
-/* A number, or (text) a constant expression in the model's parameters
- * ("2*pi/w"), read with the model by option_value. */
-static int number(const char *opt, const char *v, double *out, bool positive, const char **text) {
-    char *end;
-    double x = strtod(v, &end);
-    if (text && (end == v || *end || !isfinite(x))) {
-        *text = v;
-        return 1;
-    }
-    if (text)
-        *text = NULL;
-    if (end == v || *end || !isfinite(x) || (positive && !(x > 0))) {
-        cli_diag_error("%s takes a %snumber, not '%s'", opt, positive ? "positive " : "", v);
-        return QD_EXIT_USAGE + 100;
-    }
-    *out = x;
-    return 1;
-}
+static const char *const methods[] = {"dopri5", "dop853", "gl2",     "gl4",      "gl6",
+                                      "verlet", "yoshida4", "yoshida6", "yoshida8", "bdf",
+                                      "taylor", NULL};
+static const char *const precisions[] = {"64", "80", "128", NULL};
 
-/* The value of opt given as an expression text (NULL: *out as given),
- * read against the model: errors shown in the option's text with a caret. */
-static int option_value(cli_sim *c, const char *opt, const char *text, bool positive,
-                        double *out) {
-    if (!text)
-        return QD_EXIT_OK;
-    if (qd_model_number(c->ctx, c->mf.model, text, out) != QD_OK) {
-        const qd_diag *d = qd_ctx_diag(c->ctx);
-        cli_diag_show(opt, text, d);
-        return qd_ctx_status(c->ctx) == QD_ERR_NOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
-    }
-    if (positive && !(*out > 0)) {
-        cli_diag_error("%s takes a positive number; '%s' is %.17g", opt, text, *out);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
+#define SIM(field) offsetof(cli_sim_args, field)
+const cli_opt cli_sim_opts[] = {
+    {"--t-end", NULL, CLI_TEXT, SIM(t_end), "T",
+     "end time (an expression in the parameters)", NULL, NULL},
+    {"--dt", NULL, CLI_TEXT, SIM(dt), "H",
+     "the step of a fixed-step method, the output grid of an adaptive one", NULL, NULL},
+    {"--every", NULL, CLI_TEXT, SIM(every), "H",
+     "a row every H, whatever the steps are", NULL, NULL},
+    {"--rtol", NULL, CLI_TEXT, SIM(rtol), "TOL",
+     "relative tolerance (step control; 1e-10)", NULL, NULL},
+    {"--atol", NULL, CLI_TEXT, SIM(atol), "TOL", "absolute tolerance (1e-12)", NULL, NULL},
+    {"--max-steps", NULL, CLI_TEXT, SIM(max_steps), "N",
+     "the most steps a run takes (1e8)", NULL, NULL},
+    {"--method", NULL, CLI_CHOICE, SIM(method), "M",
+     "the integrator (default dop853; gl4 with --dt for a conservative system)", methods, NULL},
+    {"--precision", NULL, CLI_CHOICE, SIM(precision), "BITS",
+     "the taylor method's arithmetic: 64, 80 or 128 bits", precisions, NULL},
+    {"--initial", NULL, CLI_TEXT, SIM(initial), "STATE",
+     "initial values \"q=VALUE, q'=VALUE, t=VALUE\" (momenta, speeds too)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, SIM(sets), "NAME=VALUE",
+     "a parameter's value (repeatable)", NULL, NULL},
+    {"--output", NULL, CLI_TEXT, SIM(output), "\"EXPR, ...\"",
+     "more columns: expressions in the model's names", NULL, NULL},
+    {"--out", "-o", CLI_TEXT, SIM(out), "FILE", "write the rows to FILE", NULL, NULL},
+    {"--input", NULL, CLI_LIST, SIM(inputs), "\"F = EXPR\"",
+     "an input's source: an expression, F=FILE.csv or \"F = lqr\" (repeatable)", NULL, NULL},
+    {"--about", NULL, CLI_TEXT, SIM(about), "STATE", "the point LQR linearizes about", NULL, NULL},
+    {"--lqr", NULL, CLI_TEXT, SIM(lqr), "\"Q = ..., R = ...\"", "the LQR weights", NULL, NULL},
+    {"--event", NULL, CLI_LIST, SIM(events), "\"EXPR = EXPR[, EXPR > EXPR]\"",
+     "rows where a crossing happens under the conditions (repeatable)", NULL, NULL},
+    {"--stop-at", NULL, CLI_LIST, SIM(stops), "\"EXPR = EXPR[, ...]\"",
+     "an event that ends the run (repeatable; numbered after the --event ones)", NULL, NULL},
+    {"--native", NULL, CLI_FLAG, SIM(native), NULL, "compile the right-hand side to C", NULL, NULL},
+    {"--no-project", NULL, CLI_FLAG, SIM(no_project), NULL,
+     "do not project onto the constraints after each step", NULL, NULL},
+    {"--no-speeds", NULL, CLI_FLAG, SIM(no_speeds), NULL,
+     "a model with speeds: integrate the multiplier form", NULL, NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+#undef SIM
 
-static int push(const char **list, size_t *n, const char *v, const char *opt) {
-    if (*n == QD_SIM_MAX_LIST) {
-        cli_diag_error("at most %d %s options", QD_SIM_MAX_LIST, opt);
-        return QD_EXIT_USAGE + 100;
-    }
-    list[(*n)++] = v;
-    return 1;
-}
-
-int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a) {
-    const char *v;
-    int save = *i;
-    if (!strcmp(argv[*i], "--native")) {
-        a->native = true;
-        return 1;
-    }
-    if (!strcmp(argv[*i], "--no-project")) {
-        a->no_project = true;
-        return 1;
-    }
-    if (!strcmp(argv[*i], "--no-speeds")) {
-        a->no_speeds = true;
-        return 1;
-    }
-    if ((v = cli_value(argc, argv, i, "--t-end"))) {
-        a->has_t_end = true;
-        return number("--t-end", v, &a->t_end, false, &a->t_end_text);
-    }
-    if ((v = cli_value(argc, argv, i, "--dt"))) {
-        a->has_dt = true;
-        return number("--dt", v, &a->dt, true, &a->dt_text);
-    }
-    if ((v = cli_value(argc, argv, i, "--every"))) {
-        a->has_every = true;
-        return number("--every", v, &a->every, true, &a->every_text);
-    }
-    if ((v = cli_value(argc, argv, i, "--rtol"))) {
-        a->has_rtol = true;
-        return number("--rtol", v, &a->rtol, true, &a->rtol_text);
-    }
-    if ((v = cli_value(argc, argv, i, "--atol")))
-        return number("--atol", v, &a->atol, true, &a->atol_text);
-    if ((v = cli_value(argc, argv, i, "--max-steps"))) {
-        double x = 0;
-        int rc = number("--max-steps", v, &x, true, NULL);
-        if (rc == 1 && x != floor(x)) {
-            cli_diag_error("--max-steps takes a whole number, not '%s'", v);
-            return QD_EXIT_USAGE + 100;
-        }
-        /* (size_t)x is undefined beyond SIZE_MAX: clamp first */
-        a->max_steps = rc != 1 ? 0 : x >= 0x1p63 ? (size_t)-1 : (size_t)x;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--precision"))) {
-        if (strcmp(v, "64") && strcmp(v, "80") && strcmp(v, "128")) {
-            cli_diag_error("--precision takes 64, 80 or 128 (double, long double, __float128), "
-                           "not '%s'", v);
-            return QD_EXIT_USAGE + 100;
-        }
-        a->precision = atoi(v);
-        return 1;
-    }
-    if ((v = cli_value(argc, argv, i, "--method"))) {
-        qd_sim_method m;
-        if (!qd_sim_method_from_name(v, &m)) {
-            cli_diag_error("--method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
-                          "yoshida6, yoshida8, bdf or taylor, not '%s'", v);
-            return QD_EXIT_USAGE + 100;
-        }
-        a->method_name = v;
-        return 1;
-    }
-    if ((v = cli_value(argc, argv, i, "--initial"))) {
-        if (a->initial) {
-            cli_diag_error("--initial is given twice; name every value in one list");
-            return QD_EXIT_USAGE + 100;
-        }
-        a->initial = v;
-        return 1;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return push(a->sets, &a->nsets, v, "--set");
-    if ((v = cli_value(argc, argv, i, "--input")))
-        return push(a->inputs, &a->ninputs, v, "--input");
-    if ((v = cli_value(argc, argv, i, "--out"))) {
-        a->out = v;
-        return 1;
-    }
-    if ((v = cli_value(argc, argv, i, "--output"))) {
-        a->output = v;
-        return 1;
-    }
-    /* --input "F = lqr": the operating point and the weights */
-    if ((v = cli_value(argc, argv, i, "--about")))
-        return cli_once("--about", &a->about, v) == QD_EXIT_OK ? 1 : QD_EXIT_USAGE + 100;
-    if ((v = cli_value(argc, argv, i, "--lqr")))
-        return cli_once("--lqr", &a->lqr, v) == QD_EXIT_OK ? 1 : QD_EXIT_USAGE + 100;
-    bool stop = !strncmp(argv[*i], "--stop-at", 9);
-    if ((v = cli_value(argc, argv, i, "--event")) || (v = cli_value(argc, argv, i, "--stop-at"))) {
-        if (a->nevents == QD_SIM_MAX_LIST) {
-            cli_diag_error("at most %d events", QD_SIM_MAX_LIST);
-            return QD_EXIT_USAGE + 100;
-        }
-        a->event_stop[a->nevents] = stop;
-        a->events[a->nevents++] = v;
-        return 1;
-    }
-    *i = save;
-    return 0;
-}
-
+/* The interim reader of one option of the table (until cli_parse). */
 bool cli_sim_took_option(int argc, char **argv, int *i, cli_sim_args *a, int *rc) {
-    int r = cli_sim_option(argc, argv, i, a);
-    *rc = r > 100 ? r - 100 : QD_EXIT_OK;
-    return r != 0;
+    *rc = QD_EXIT_OK;
+    for (const cli_opt *o = cli_sim_opts; o->name; o++) {
+        char *field = (char *)a + o->offset;
+        if (o->kind == CLI_FLAG) {
+            if (strcmp(argv[*i], o->name))
+                continue;
+            *(bool *)field = true;
+            return true;
+        }
+        const char *v = cli_value(argc, argv, i, o->name);
+        if (!v && o->alias)
+            v = cli_value(argc, argv, i, o->alias);
+        if (!v)
+            continue;
+        if (o->kind == CLI_LIST) {
+            cli_list *l = (cli_list *)(void *)field;
+            if (l->n == CLI_LIST_MAX) {
+                cli_diag_error("at most %d %s options", CLI_LIST_MAX, o->name);
+                *rc = QD_EXIT_USAGE;
+            } else {
+                l->items[l->n++] = v;
+            }
+            return true;
+        }
+        if (o->kind == CLI_CHOICE) {
+            size_t k = 0;
+            while (o->choices[k] && strcmp(o->choices[k], v))
+                k++;
+            if (!o->choices[k]) {
+                char list[256];
+                size_t at = 0;
+                for (k = 0; o->choices[k] && at < sizeof list; k++)
+                    at += (size_t)snprintf(list + at, sizeof list - at, "%s%s",
+                                           !k ? "" : o->choices[k + 1] ? ", " : " or ",
+                                           o->choices[k]);
+                cli_diag_error("%s takes %s, not '%s'", o->name, list, v);
+                *rc = QD_EXIT_USAGE;
+                return true;
+            }
+        }
+        if (*(const char **)(void *)field) {
+            cli_diag_error("%s is given twice%s; give it once", o->name,
+                           o->alias ? " (or as its alias)" : "");
+            *rc = QD_EXIT_USAGE;
+            return true;
+        }
+        *(const char **)(void *)field = v;
+        return true;
+    }
+    return false;
 }
 
 /* ---- expressions ---------------------------------------------------------- */
@@ -621,44 +567,65 @@ static int initial_values(cli_sim *c, const cli_sim_args *a) {
     return speeds || c->e ? rc : initial_momenta(c);
 }
 
+/* The value of option opt given as text (NULL: not given, *out unchanged),
+ * an expression in the parameters read against the model: errors shown in
+ * the option's text with a caret. */
+static int option_value(cli_sim *c, const char *opt, const char *text, bool positive,
+                        double *out) {
+    if (!text)
+        return QD_EXIT_OK;
+    if (qd_model_number(c->ctx, c->mf.model, text, out) != QD_OK) {
+        cli_diag_show(opt, text, qd_ctx_diag(c->ctx));
+        return qd_ctx_status(c->ctx) == QD_ERR_NOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
+    }
+    if (positive && !(*out > 0)) {
+        cli_diag_error("%s takes a positive number, not '%s'", opt, text);
+        return QD_EXIT_USAGE;
+    }
+    return QD_EXIT_OK;
+}
+
 static int choose_method(cli_sim *c, const cli_sim_args *a) {
     qd_sim_opts *o = &c->opts;
-    double t_end = a->t_end, dt = a->dt, rtol = a->rtol, atol = a->atol;
-    int rc = option_value(c, "--t-end", a->t_end_text, false, &t_end);
+    double t_end = 0, dt = 0, rtol = 0, atol = 0, every = 0, steps = 0;
+    int rc = option_value(c, "--t-end", a->t_end, false, &t_end);
     if (rc == QD_EXIT_OK)
-        rc = option_value(c, "--dt", a->dt_text, true, &dt);
-    double every = a->every;
-    if (rc == QD_EXIT_OK && a->has_every)
-        rc = option_value(c, "--every", a->every_text, true, &every);
+        rc = option_value(c, "--dt", a->dt, true, &dt);
     if (rc == QD_EXIT_OK)
-        rc = option_value(c, "--rtol", a->rtol_text, true, &rtol);
+        rc = option_value(c, "--every", a->every, true, &every);
     if (rc == QD_EXIT_OK)
-        rc = option_value(c, "--atol", a->atol_text, true, &atol);
+        rc = option_value(c, "--rtol", a->rtol, true, &rtol);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--atol", a->atol, true, &atol);
+    if (rc == QD_EXIT_OK)
+        rc = option_value(c, "--max-steps", a->max_steps, true, &steps);
+    if (rc == QD_EXIT_OK && steps != floor(steps)) {
+        cli_diag_error("--max-steps takes a whole number, not '%s'", a->max_steps);
+        rc = QD_EXIT_USAGE;
+    }
     if (rc != QD_EXIT_OK)
         return rc;
-    if (a->has_dt && a->has_rtol && !a->method_name) {
+    if (a->dt && a->rtol && !a->method) {
         cli_diag_error("give --dt (fixed step) or --rtol (step control), or name a --method\n"
                        "hint: for rows every %g with step control: --every %g --rtol %g (--dt "
                        "is the step of a fixed-step method)", dt, dt, rtol);
         return QD_EXIT_USAGE;
     }
-    if (a->method_name)
-        qd_sim_method_from_name(a->method_name, &o->method);
+    if (a->method)
+        qd_sim_method_from_name(a->method, &o->method);
     else
-        o->method = qd_sim_default_method(c->s, a->has_dt);
-    o->dt = a->has_dt ? dt : 0;
-    o->every = a->has_every ? every : 0;
-    if (a->has_every && !(every > 0)) {
-        cli_diag_error("--every takes the output spacing, a positive number, not %g", every);
-        return QD_EXIT_USAGE;
-    }
-    o->rtol = a->has_rtol ? rtol : 0;
+        o->method = qd_sim_default_method(c->s, a->dt != NULL);
+    o->dt = dt;
+    o->every = every;
+    o->rtol = rtol;
     o->atol = atol;
+    o->fixed = a->fixed && a->dt;
     o->no_project = a->no_project;
-    o->max_steps = a->max_steps;
-    o->precision = a->precision;
-    if (a->precision && a->precision != 64 && o->method != QD_SIM_TAYLOR) {
-        cli_diag_error("--precision %d is for --method taylor", a->precision);
+    /* (size_t)x is undefined beyond SIZE_MAX: clamp first */
+    o->max_steps = steps >= 0x1p63 ? (size_t)-1 : (size_t)steps;
+    o->precision = a->precision ? atoi(a->precision) : 0;
+    if (o->precision && o->precision != 64 && o->method != QD_SIM_TAYLOR) {
+        cli_diag_error("--precision %d is for --method taylor", o->precision);
         return QD_EXIT_USAGE;
     }
     o->t0 = c->st.vals[2 * qd_model_ncoords(c->mf.model)];
@@ -667,7 +634,7 @@ static int choose_method(cli_sim *c, const cli_sim_args *a) {
     o->qd0 = c->qd0;
     o->p0 = c->p0;
     o->u0 = c->u0;
-    if (!qd_sim_method_adaptive(o->method) && !a->has_dt) {
+    if (!qd_sim_method_adaptive(o->method) && !a->dt) {
         cli_diag_error("--method %s takes fixed steps: give --dt", qd_sim_method_name(o->method));
         return QD_EXIT_USAGE;
     }
@@ -736,7 +703,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    int rc = cli_load(c->ctx, a->file, a->nsets, a->sets, false, &c->mf);
+    int rc = cli_load(c->ctx, a->file, a->sets.n, a->sets.items, false, &c->mf);
     if (rc != QD_EXIT_OK)
         return rc;
     if (qd_model_hamiltonian_given(c->mf.model)) {
@@ -767,15 +734,19 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = add_outputs(c, a->output);
     c->about = a->about;
     c->lqr = a->lqr;
-    for (size_t i = 0; rc == QD_EXIT_OK && i < a->ninputs; i++)
-        rc = cli_sim_input(c, a->inputs, i);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < a->inputs.n; i++)
+        rc = cli_sim_input(c, a->inputs.items, i);
     if (rc == QD_EXIT_OK && (a->about || a->lqr) && !c->lqr_used) {
         cli_diag_error("%s is for --input \"NAME = lqr\" (the LQR feedback), which is not given",
                        a->lqr ? "--lqr" : "--about");
         rc = QD_EXIT_USAGE;
     }
-    for (size_t i = 0; rc == QD_EXIT_OK && i < a->nevents; i++)
-        rc = add_event(c, a->events[i], a->event_stop[i], a->event_label[i]);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < a->events.n; i++)
+        rc = add_event(c, a->events.items[i], false, NULL);
+    for (size_t i = 0; rc == QD_EXIT_OK && i < a->stops.n; i++)
+        rc = add_event(c, a->stops.items[i], true, NULL);
+    if (rc == QD_EXIT_OK && a->section)
+        rc = add_event(c, a->section, false, "--section");
     if (rc == QD_EXIT_OK)
         rc = choose_method(c, a);
     if (rc == QD_EXIT_OK && qd_sim_inputs_ready(c->s, c->opts.t0, c->opts.t_end) != QD_OK) {
