@@ -8,6 +8,7 @@
 
 #include <stdbool.h>
 #include "qdot/sim.h"
+#include "qdot/simsetup.h"
 #include "model_file.h"
 #include "plot_cli.h"
 #include "state.h"
@@ -51,17 +52,15 @@ extern const cli_opt cli_sim_opts[];
 typedef struct cli_sim {
     qd_ctx *ctx;
     cli_model_file mf;
-    qd_eom *e;
-    qd_speeds_eom *se; /* a model with speeds (unless --no-speeds): e is NULL */
+    qd_sim_setup *set; /* the library's set-up: equations, state, outputs, events */
+    /* borrowed from set: */
+    const qd_eom *e;           /* Lagrange's form, else NULL */
+    const qd_speeds_eom *se;   /* a model with speeds (unless --no-speeds), else NULL */
     qd_sim *s;
-    cli_state st;
-    void *native;      /* qd_native, when --native loaded one */
+    cli_state st;              /* the initial state (a read-only view) */
     qd_sim_opts opts;
-    double *q0, *qd0;
-    double *p0;        /* a model given by H: momenta from --initial, or NULL */
-    double *u0;        /* a model in speeds: the speeds when any is given, or NULL */
-    const char *about, *lqr; /* from cli_sim_args, for --input "F = lqr" */
-    bool lqr_used;     /* some input took the LQR feedback */
+    const char *about, *lqr;   /* from cli_sim_args, for --input "F = lqr" */
+    bool lqr_used;             /* some input took the LQR feedback */
 } cli_sim;
 
 /* Until every command parses with cli_parse: one option of cli_sim_opts at
