@@ -3815,6 +3815,13 @@ static void null_status(void **state)
     setup(&F);
     /* ---- qd_status_str */
     /* no pointer argument */
+    /* ---- qd_nearest_name */
+    /* word NULL */
+    assert_null(qd_nearest_name(NULL, 1, (const char * const *)F.names, 1));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_nearest_name("q", 1, NULL, 1));
+    reset(&F);
     teardown(&F);
 }
 
