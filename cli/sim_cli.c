@@ -44,9 +44,9 @@ const cli_opt cli_sim_opts[] = {
     {"--max-steps", NULL, CLI_TEXT, SIM(max_steps), "N",
      "the most steps a run takes (1e8)", NULL, NULL},
     {"--method", NULL, CLI_CHOICE, SIM(method), "M",
-     "the integrator (default dop853; gl4 with --dt for a conservative system)", methods, NULL},
+     "the integrator (dop853; gl4 with --dt when conservative)", methods, NULL},
     {"--precision", NULL, CLI_CHOICE, SIM(precision), "BITS",
-     "the taylor method's arithmetic: 64, 80 or 128 bits", precisions, NULL},
+     "the taylor method's arithmetic in bits", precisions, NULL},
     {"--initial", NULL, CLI_TEXT, SIM(initial), "STATE",
      "initial values \"q=VALUE, q'=VALUE, t=VALUE\" (momenta, speeds too)", NULL, NULL},
     {"--set", NULL, CLI_LIST, SIM(sets), "NAME=VALUE",
@@ -70,6 +70,23 @@ const cli_opt cli_sim_opts[] = {
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 #undef SIM
+
+#define PLOT(field) offsetof(cli_plot_args, field)
+const cli_opt cli_sim_plot_opts[] = {
+    {"--plot", NULL, CLI_TEXT, PLOT(file), "FILE", "draw the run: FILE.png, .svg or .pdf", NULL,
+     NULL},
+    {"--plot-y", NULL, CLI_TEXT, PLOT(ycols), "\"NAME, ...; ...\"",
+     "columns against t, a panel for each group between semicolons", NULL, NULL},
+    {"--phase", NULL, CLI_TEXT, PLOT(phase), "Q", "draw Q' against Q", NULL, NULL},
+    {"--title", NULL, CLI_TEXT, PLOT(title), "TEXT", "the picture's title (else the file)",
+     NULL, NULL},
+    {"--xlabel", NULL, CLI_TEXT, PLOT(xlabel), "TEXT", "every panel's x axis", NULL, NULL},
+    {"--ylabel", NULL, CLI_TEXT, PLOT(ylabel), "\"TEXT; ...\"", "each panel's y axis", NULL,
+     NULL},
+    {"--size", NULL, CLI_TEXT, PLOT(size), "WxH", "the picture's size in pixels", NULL, NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+#undef PLOT
 
 /* The interim reader of one option of the table (until cli_parse). */
 bool cli_sim_took_option(int argc, char **argv, int *i, cli_sim_args *a, int *rc) {

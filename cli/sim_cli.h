@@ -48,6 +48,10 @@ extern const cli_opt cli_sim_opts[];
  * as MEMBER: `static const cli_group groups[] = {CLI_SIM_GROUP(my_args, sim),
  * {NULL, 0}};` */
 #define CLI_SIM_GROUP(TYPE, MEMBER) {cli_sim_opts, offsetof(TYPE, MEMBER)}
+/* The --plot options of the commands that draw a run (simulate, poincare):
+ * the fields of the cli_plot_args in MEMBER (a cli_sim_args). */
+extern const cli_opt cli_sim_plot_opts[];
+#define CLI_SIM_PLOT_GROUP(TYPE, MEMBER) {cli_sim_plot_opts, offsetof(TYPE, MEMBER.plot)}
 
 typedef struct cli_sim {
     qd_ctx *ctx;

@@ -14,7 +14,6 @@
 #include <string.h>
 
 #include "../base/args.h"
-#include "base/diag.h"
 #include "qdot/read.h"
 #include "setup.h"
 
@@ -81,7 +80,7 @@ static const char *nearest(const qd_sim_setup *s, const char *name) {
         names[k++] = qd_expr_name(qd_model_input(s->m, i));
     for (size_t i = 0; s->e && i < s->e->ncon; i++)
         names[k++] = qd_expr_name(s->e->con[i].lambda);
-    const char *near = qd__diag_nearest(name, strlen(name), names, k);
+    const char *near = qd_nearest_name(name, strlen(name), names, k);
     free(names);
     return near;
 }

@@ -14,7 +14,6 @@
 #include <string.h>
 
 #include "../base/args.h"
-#include "base/diag.h"
 #include "setup.h"
 
 qd_sim_form qd_sim_form_of(const qd_model *m, bool no_speeds) {
@@ -213,7 +212,7 @@ static size_t slot_of(qd_sim_setup *s, const char *text, size_t at, size_t len) 
                 names[k++] = i == 2 * s->nq && x ? x : qd_expr_name(s->syms[i]);
             }
         }
-        near = qd__diag_nearest(text + at, len, names, k);
+        near = qd_nearest_name(text + at, len, names, k);
     }
     char known[512];
     size_t used = 0;
