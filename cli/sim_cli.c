@@ -175,11 +175,9 @@ static int option_error(cli_sim *c, const cli_sim_args *a) {
             continue;
         if ((d->located && f[i].text) || !f[i].text)
             return fail_in(c, f[i].opt, f[i].text); /* --input: "--input: input F is ..." */
-        /* the library's sentence is said of the field: "--dt takes ..." */
+        /* the library's sentence, then the option it is about */
         qd_diag e = *d;
-        int k = snprintf(e.message, sizeof e.message, "%s ", f[i].opt);
-        if (k > 0 && (size_t)k < sizeof e.message)
-            snprintf(e.message + k, sizeof e.message - (size_t)k, "%.200s", d->message);
+        snprintf(e.message, sizeof e.message, "%.200s (%s)", d->message, f[i].opt);
         cli_diag_show("qdot", NULL, &e);
         return cli_exit(qd_ctx_status(c->ctx));
     }

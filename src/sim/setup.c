@@ -220,10 +220,11 @@ static size_t slot_of(qd_sim_setup *s, const char *text, size_t at, size_t len) 
     for (size_t i = 0; i < s->nq && used < sizeof known; i++)
         used += (size_t)snprintf(known + used, sizeof known - used, "%s%s", i ? ", " : "",
                                  qd_expr_name(s->syms[i]));
-    for (size_t r = 0; s->form != QD_SIM_FORM_HAMILTON && r < s->extra && used < sizeof known;
-         r++)
+    for (size_t r = 0; r < s->extra && used < sizeof known; r++)
         used += (size_t)snprintf(known + used, sizeof known - used, "%s%s",
-                                 r ? ", " : "; the speeds are ",
+                                 r                                ? ", "
+                                 : s->form == QD_SIM_FORM_HAMILTON ? "; the momenta are "
+                                                                   : "; the speeds are ",
                                  qd_expr_name(s->syms[s->n - s->extra + r]));
     qd_ctx_error(s->ctx, QD_ERR_ARG, "unknown name '%.*s' (the coordinates are %s; velocities "
                                      "are written with a prime, and %s is the %s)", (int)len,
@@ -245,7 +246,15 @@ static bool value_of(qd_sim_setup *s, const char *text, size_t a, size_t b, doub
         return nomem(s->ctx);
     memcpy(v, text + a, b - a);
     v[b - a] = '\0';
-    qd_status st = qd_model_number(s->ctx, s->m, v, out);
+    char *end;
+    double x = strtod(v, &end);
+    while (*end && isspace((unsigned char)*end))
+        end++;
+    qd_status st = QD_OK;
+    if (end != v && !*end && !isfinite(x))
+        *out = x; /* "nan", "inf": the run says the initial state is not finite */
+    else
+        st = qd_model_number(s->ctx, s->m, v, out);
     free(v);
     if (st == QD_OK)
         return true;
@@ -285,10 +294,12 @@ qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text) {
         return bad_item(s, text, 0, strlen(text), "the initial state is given twice; name every "
                                                   "value in one list");
     double *g = malloc((s->n + 1) * sizeof *g);
-    if (!g)
+    bool *given = calloc(s->n + 1, sizeof *given); /* (a value may be NaN: refused by the run) */
+    if (!g || !given) {
+        free(g);
+        free(given);
         return nomem(s->ctx), QD_ERR_NOMEM;
-    for (size_t i = 0; i < s->n; i++)
-        g[i] = NAN;
+    }
     qd_status st = QD_OK;
     for (size_t p = 0; text[p] && st == QD_OK;) {
         size_t end = item_end(text, p), na = p;
@@ -306,26 +317,29 @@ qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text) {
             size_t i = slot_of(s, text, na, nb - na);
             if (i == s->n)
                 st = QD_ERR_ARG;
-            else if (!isnan(g[i]))
+            else if (given[i])
                 st = QD_ERR_ARG, qd_ctx_error(s->ctx, st, "'%.*s' is given twice",
                                               (int)(nb - na), text + na),
                 qd_ctx_error_at(s->ctx, text, na, nb - na);
             else if (!value_of(s, text, (size_t)(eq + 1 - text), end, &g[i]))
                 st = qd_ctx_status(s->ctx);
+            else
+                given[i] = true;
         }
         p = text[end] ? end + 1 : end;
     }
     /* velocities given: the model's initial speeds not given follow them */
     bool motion = false;
     for (size_t i = s->nq; i < 2 * s->nq; i++)
-        motion = motion || !isnan(g[i]);
+        motion = motion || given[i];
     size_t at = s->n - s->extra;
     for (size_t i = 0; st == QD_OK && i < s->n; i++)
-        if (!isnan(g[i]))
+        if (given[i])
             s->vals[i] = g[i];
         else if (motion && s->form != QD_SIM_FORM_HAMILTON && i >= at)
             s->vals[i] = NAN;
     free(g);
+    free(given);
     s->initial_given = st == QD_OK;
     return st;
 }
@@ -436,6 +450,12 @@ static qd_status number(qd_sim_setup *s, const char *field, const char *text, bo
                         double *out) {
     if (!text)
         return QD_OK;
+    char *end;
+    double x = strtod(text, &end);
+    if (end != text && !*end && !isfinite(x)) {
+        *out = x; /* "inf", "nan": qd_sim_check_opts says what the number must be */
+        return QD_OK;
+    }
     if (qd_model_number(s->ctx, s->m, text, out) != QD_OK) {
         qd_diag *d = (qd_diag *)qd_ctx_diag(s->ctx);
         if (d->subject == QD_SUBJECT_TEXT || d->subject == QD_SUBJECT_NONE)
@@ -443,7 +463,7 @@ static qd_status number(qd_sim_setup *s, const char *field, const char *text, bo
         return qd_ctx_status(s->ctx);
     }
     if (positive && !(*out > 0))
-        return refuse(s, field, "takes a positive number (%s), not '%s'", noun(field), text);
+        return refuse(s, field, "%s must be a positive number, not '%s'", noun(field), text);
     return QD_OK;
 }
 
@@ -467,7 +487,7 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     QD_ARGS_CTX(s->ctx, o && out);
     double t_end = NAN, dt = 0, rtol = 0, atol = 0, every = 0, steps = 0;
     qd_status st = o->t_end ? number(s, "t_end", o->t_end, false, &t_end)
-                            : refuse(s, "t_end", "is missing (the end time)");
+                            : refuse(s, "t_end", "the end time is missing");
     if (st == QD_OK)
         st = number(s, "dt", o->dt, true, &dt);
     if (st == QD_OK)
@@ -479,7 +499,8 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     if (st == QD_OK)
         st = number(s, "max_steps", o->max_steps, true, &steps);
     if (st == QD_OK && steps != floor(steps))
-        st = refuse(s, "max_steps", "takes a whole number, not '%s'", o->max_steps);
+        st = refuse(s, "max_steps", "the most steps must be a whole number, not '%s'",
+                    o->max_steps);
     if (st != QD_OK)
         return st;
     *out = (qd_sim_opts){0};
@@ -493,17 +514,18 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
         return QD_ERR_ARG;
     }
     if (o->method && !qd_sim_method_from_name(o->method, &out->method))
-        return refuse(s, "method", "takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
+        return refuse(s, "method", "the method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
                       "yoshida6, yoshida8, bdf or taylor, not '%s'", o->method);
     if (!o->method)
         out->method = qd_sim_default_method(s->sim, o->dt != NULL);
     if (o->precision && o->precision != 64 && o->precision != 80 && o->precision != 128)
-        return refuse(s, "precision", "takes 64, 80 or 128 (bits), not %d", o->precision);
+        return refuse(s, "precision", "the precision takes 64, 80 or 128 (bits), not %d",
+                      o->precision);
     if (o->precision && o->precision != 64 && out->method != QD_SIM_TAYLOR)
-        return refuse(s, "precision", "%d is for the taylor method (%s takes doubles)",
+        return refuse(s, "precision", "precision %d is for the taylor method (%s takes doubles)",
                       o->precision, qd_sim_method_name(out->method));
     if (!qd_sim_method_adaptive(out->method) && !o->dt)
-        return refuse(s, "dt", "is needed: the method %s takes fixed steps of dt",
+        return refuse(s, "dt", "the method %s takes fixed steps: give the step",
                       qd_sim_method_name(out->method));
     out->dt = dt;
     out->every = every;
@@ -515,15 +537,17 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     out->precision = o->precision;
     out->t0 = s->vals[2 * s->nq];
     out->t_end = t_end;
-    if (!(t_end > out->t0))
-        return refuse(s, "t_end", "must be after the start time (%g)", out->t0);
     if ((st = initial_values(s)) != QD_OK)
         return st;
     out->q0 = s->q0;
     out->qd0 = s->qd0;
     out->p0 = s->p0;
     out->u0 = s->u0;
-    if ((st = qd_sim_check_opts(s->ctx, out)) != QD_OK || (st = check_gaps(s)) != QD_OK)
+    if ((st = qd_sim_check_opts(s->ctx, out)) != QD_OK)
+        return st;
+    if (!(t_end > out->t0))
+        return refuse(s, "t_end", "the end time must be after the start time (%g)", out->t0);
+    if ((st = check_gaps(s)) != QD_OK)
         return st;
     if ((st = qd_sim_inputs_ready(s->sim, out->t0, out->t_end)) != QD_OK)
         qd_ctx_error_about(s->ctx, QD_SUBJECT_NONE, 0, "inputs", QD_REASON_NONE, NULL);
