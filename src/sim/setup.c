@@ -543,10 +543,10 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     out->qd0 = s->qd0;
     out->p0 = s->p0;
     out->u0 = s->u0;
+    if (isfinite(t_end) && !(t_end > out->t0)) /* (not finite: qd_sim_check_opts says so) */
+        return refuse(s, "t_end", "the end time must be after the start time (%g)", out->t0);
     if ((st = qd_sim_check_opts(s->ctx, out)) != QD_OK)
         return st;
-    if (!(t_end > out->t0))
-        return refuse(s, "t_end", "the end time must be after the start time (%g)", out->t0);
     if ((st = check_gaps(s)) != QD_OK)
         return st;
     if ((st = qd_sim_inputs_ready(s->sim, out->t0, out->t_end)) != QD_OK)
