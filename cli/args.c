@@ -3,6 +3,7 @@
  * commands not yet declared by a table (cli_file_args).
  */
 #include "cli.h"
+#include "out.h"
 
 #include <errno.h>
 #include <stdint.h>
@@ -139,7 +140,7 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
         const char *arg = argv[i];
         if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) {
             cli_usage(spec, stdout); /* asked for, not an error: stdout and 0 */
-            exit(fflush(stdout) || ferror(stdout) ? QD_EXIT_FAIL : QD_EXIT_OK);
+            exit(cli_out_close(stdout, "standard output", 0)); /* a full disk said, with errno */
         }
         if (!strcmp(arg, "--")) { /* the rest are positionals, even "-x" */
             for (i++; i < argc; i++) {

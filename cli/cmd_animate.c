@@ -33,7 +33,7 @@ static const char usage_text[] =
 
 #define FPS 60            /* frames per simulated second ... */
 #define MAX_FRAMES 3600   /* ... up to a minute of them: longer runs are coarser */
-#define DEFAULT_T_END 10.0
+#define DEFAULT_T_END "10"
 
 typedef struct an_args {
     cli_sim_args a;
@@ -57,7 +57,7 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     if (cli_sim_took_option(argc, argv, i, &p->a, &rc))
         return rc;
     const char *v;
-    if ((v = cli_value(argc, argv, i, "-o")) || (v = cli_value(argc, argv, i, "--html")))
+    if ((v = cli_value(argc, argv, i, "--html")))
         p->html = v;
     else if ((v = cli_value(argc, argv, i, "--trace")))
         return push(p->traces, &p->ntraces, v, "--trace");
@@ -417,6 +417,12 @@ static int write_page(const an_scene *s, const char *path) {
 int cli_cmd_animate(int argc, char **argv) {
     an_args p = {0};
     int rc = cli_file_args(argc, argv, "animate", usage_text, &p.a.file, parse_option, &p);
+    if (rc == QD_EXIT_OK && p.html && p.a.out) {
+        cli_diag_error("give the page once: -o FILE.html (--html is the same)");
+        rc = QD_EXIT_USAGE;
+    } else if (rc == QD_EXIT_OK && !p.html) {
+        p.html = p.a.out; /* -o and --out: the simulation group's, here the page */
+    }
     if (rc == QD_EXIT_OK && !p.html) {
         cli_diag_error("-o FILE.html is missing\n%s", usage_text);
         rc = QD_EXIT_USAGE;
@@ -424,17 +430,11 @@ int cli_cmd_animate(int argc, char **argv) {
         cli_diag_error("--output is simulate's: it adds columns to its rows; animate writes "
                        "its page with -o FILE.html");
         rc = QD_EXIT_USAGE;
-    } else if (rc == QD_EXIT_OK && p.a.out) {
-        /* shared with simulate, where it takes the rows: here it would be ignored */
-        cli_diag_error("--out is simulate's; animate writes its page with -o FILE.html");
-        rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!p.a.has_t_end) {
+    if (!p.a.t_end)
         p.a.t_end = DEFAULT_T_END;
-        p.a.has_t_end = true;
-    }
     cli_sim c = {0};
     an_scene s = {.model = p.a.file};
     rc = cli_sim_setup(&c, &p.a);

@@ -9,6 +9,8 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,53 +19,47 @@
 #include "qdot/json.h"
 #include "sim_cli.h"
 
-static const char usage_text[] =
-    "usage: qdot lyapunov FILE --t-end T [--n K] [--renorm DT] [--transient T0] "
-    "[--method dopri5|dop853] [--rtol TOL | --dt H] [--atol TOL] [--max-steps N] "
-    "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... [--format text|json]";
-
 typedef struct ly_args {
     cli_sim_args a;
-    double n, renorm, transient;
+    size_t n;
+    const char *renorm_text, *transient_text, *format;
+    double renorm, transient;
 } ly_args;
 
+static const char *const formats[] = {"text", "json", NULL};
+
+static const cli_opt opts[] = {
+    {"--n", NULL, CLI_COUNT, offsetof(ly_args, n), "K", "the K largest exponents (1)", NULL,
+     NULL},
+    {"--renorm", NULL, CLI_TEXT, offsetof(ly_args, renorm_text), "DT",
+     "the time between renormalizations (1)", NULL, NULL},
+    {"--transient", NULL, CLI_TEXT, offsetof(ly_args, transient_text), "T0",
+     "the time run before the averaging starts (0)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(ly_args, format), "F", "how the result is printed",
+     formats, NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_group groups[] = {
+    CLI_SIM_GROUP(ly_args, a),
+    {NULL, 0},
+};
+
+static const cli_spec spec = {
+    "lyapunov", "FILE --t-end T [options]",
+    "the largest Lyapunov exponents of the motion from the initial state, with error estimates",
+    opts, groups, 1, 1, "FILE", false,
+};
+
+/* A time >= 0, or an exit status. */
 static int number(const char *opt, const char *v, double *out) {
     char *end;
-    double x = strtod(v, &end);
-    if (end == v || *end || !isfinite(x) || x < 0) {
+    double x = v ? strtod(v, &end) : 0;
+    if (v && (end == v || *end || !isfinite(x) || x < 0)) {
         cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
         return QD_EXIT_USAGE;
     }
     *out = x;
-    return QD_EXIT_OK;
-}
-
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    ly_args *p = data;
-    int rc;
-    if (cli_sim_took_option(argc, argv, i, &p->a, &rc))
-        return rc;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--n"))) {
-        if (number("--n", v, &p->n) != QD_EXIT_OK || p->n < 1 || p->n != floor(p->n) ||
-            p->n > 1e6) {
-            cli_diag_error("--n takes a positive whole number, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-    } else if ((v = cli_value(argc, argv, i, "--renorm"))) {
-        return number("--renorm", v, &p->renorm);
-    } else if ((v = cli_value(argc, argv, i, "--transient"))) {
-        return number("--transient", v, &p->transient);
-    } else if ((v = cli_value(argc, argv, i, "--format"))) {
-        if (strcmp(v, "text") && strcmp(v, "json")) {
-            cli_diag_error("--format takes text or json, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        p->a.json = !strcmp(v, "json");
-    } else {
-        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
-    }
     return QD_EXIT_OK;
 }
 
@@ -164,15 +160,15 @@ static int run(cli_sim *c, const ly_args *p) {
         return QD_EXIT_USAGE;
     }
     size_t d = 2 * c->e->n;
-    if (p->n > (double)d) {
+    if (p->n > d) {
         cli_diag_error("--n: the model has %zu exponents (twice its %zu degrees of freedom), "
-                       "not %.0f", d, c->e->n, p->n);
+                       "not %zu", d, c->e->n, p->n);
         return QD_EXIT_USAGE;
     }
     qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
     if (!l)
         return cli_diag_ctx(c->ctx);
-    ly_result r = {.k = p->n >= 1 ? (size_t)p->n : 1, .d = d,
+    ly_result r = {.k = p->n, .d = d,
                    .conservative = qd_sim_conservative(c->s)};
     r.ex = calloc(2 * r.k, sizeof *r.ex);
     r.err = r.ex + r.k;
@@ -202,19 +198,24 @@ static int run(cli_sim *c, const ly_args *p) {
 
 int cli_cmd_lyapunov(int argc, char **argv) {
     ly_args p = {.n = 1};
-    int rc = cli_file_args(argc, argv, "lyapunov", usage_text, &p.a.file, parse_option, &p);
-    if (rc == QD_EXIT_OK && !p.a.has_t_end) {
-        cli_diag_error("--t-end is missing\n%s", usage_text);
+    int rc = cli_parse(&spec, argc, argv, &p, &p.a.file);
+    p.a.json = p.format && !strcmp(p.format, "json");
+    if (rc == QD_EXIT_OK)
+        rc = number("--renorm", p.renorm_text, &p.renorm);
+    if (rc == QD_EXIT_OK)
+        rc = number("--transient", p.transient_text, &p.transient);
+    if (rc == QD_EXIT_OK && !p.a.t_end) {
+        cli_diag_error("--t-end is missing (qdot lyapunov --help)");
         rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
     /* Runge-Kutta: dop853 unless named; --dt makes its step fixed */
-    if (!p.a.method_name)
-        p.a.method_name = "dop853";
+    if (!p.a.method)
+        p.a.method = "dop853";
+    p.a.fixed = true; /* with --dt */
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &p.a);
-    c.opts.fixed = p.a.has_dt;
     if (rc == QD_EXIT_OK)
         rc = run(&c, &p);
     cli_sim_free(&c);

@@ -7,6 +7,8 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
+
 #include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
@@ -17,19 +19,33 @@
 #include "progress.h"
 #include "sim_cli.h"
 
-static const char usage_text[] =
-    "usage: qdot poincare FILE --section \"EXPR = EXPR[, EXPR > EXPR]\" --n N "
-    "[--method M] [--rtol TOL | --dt H] [--atol TOL] [--t-end T_MAX] [--out FILE] "
-    "[--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... [--native] "
-    "[--plot FILE.png|.svg|.pdf [--phase Q]]";
-
-#define DEFAULT_T_MAX 1e6
+#define DEFAULT_T_MAX "1e6"
 
 typedef struct pc_args {
     cli_sim_args a;
     const char *section;
-    double n;
+    size_t n;
 } pc_args;
+
+static const cli_opt opts[] = {
+    {"--section", NULL, CLI_TEXT, offsetof(pc_args, section), "\"EXPR = EXPR[, EXPR > EXPR]\"",
+     "the surface of section: a crossing and its conditions", NULL, NULL},
+    {"--n", NULL, CLI_COUNT, offsetof(pc_args, n), "N", "the crossings to find", NULL, NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_group groups[] = {
+    CLI_SIM_GROUP(pc_args, a),
+    CLI_SIM_PLOT_GROUP(pc_args, a),
+    {NULL, 0},
+};
+
+static const cli_spec spec = {
+    "poincare", "FILE --section \"EXPR = EXPR[, EXPR > EXPR]\" --n N [options]",
+    "a Poincare surface of section: the state at the first N crossings, as CSV (--t-end: "
+    "1e6 at most)",
+    opts, groups, 1, 1, "FILE", false,
+};
 
 typedef struct pc_out {
     FILE *f;
@@ -79,30 +95,6 @@ static int sink(void *data, int event, const double *row) {
     return ++o->got >= o->want || cli_interrupted(); /* ^C: after a whole row */
 }
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    pc_args *p = data;
-    int rc;
-    if (cli_sim_took_option(argc, argv, i, &p->a, &rc))
-        return rc;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--section"))) {
-        p->section = v;
-    } else if ((v = cli_value(argc, argv, i, "--n"))) {
-        char *end;
-        p->n = strtod(v, &end);
-        if (end == v || *end || !(p->n >= 1) || p->n > 1e9 || p->n != (double)(size_t)p->n) {
-            cli_diag_error("--n takes a positive whole number, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-    } else if ((rc = cli_plot_option(argc, argv, i, &p->a.plot))) {
-        return rc > 100 ? rc - 100 : QD_EXIT_OK;
-    } else {
-        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
 /* The section fixes the coordinate it names, so by default the plot shows
  * the first coordinate whose name is not among the section's words. */
 static const char *free_coord(const cli_sim *c, const char *section, const char *const *names) {
@@ -133,9 +125,13 @@ static int pc_plot_pick(const cli_sim *c, pc_args *p, const char **names, size_t
 
 int cli_cmd_poincare(int argc, char **argv) {
     pc_args p = {.n = 0};
-    int rc = cli_file_args(argc, argv, "poincare", usage_text, &p.a.file, parse_option, &p);
-    if (rc == QD_EXIT_OK && (!p.section || !(p.n >= 1))) {
-        cli_diag_error("%s is missing\n%s", p.section ? "--n" : "--section", usage_text);
+    int rc = cli_parse(&spec, argc, argv, &p, &p.a.file);
+    if (rc == QD_EXIT_OK && (!p.section || !p.n)) {
+        cli_diag_error("%s is missing (qdot poincare --help)", p.section ? "--n" : "--section");
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK && p.n > 1000000000) {
+        cli_diag_error("--n takes at most 1e9 crossings, not %zu", p.n);
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK && p.a.plot.ycols) {
@@ -143,7 +139,7 @@ int cli_cmd_poincare(int argc, char **argv) {
                        "--phase, not --plot-y");
         rc = QD_EXIT_USAGE;
     }
-    if (rc == QD_EXIT_OK && (p.a.nevents || p.a.output)) {
+    if (rc == QD_EXIT_OK && (p.a.events.n || p.a.stops.n || p.a.output)) {
         /* shared with simulate; a section's rows are the crossings alone */
         cli_diag_error("poincare takes its crossings from --section: %s is simulate's",
                        p.a.output ? "--output" : "--event or --stop-at");
@@ -153,14 +149,9 @@ int cli_cmd_poincare(int argc, char **argv) {
         rc = cli_plot_check(&p.a.plot, "poincare");
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!p.a.has_t_end) {
+    if (!p.a.t_end)
         p.a.t_end = DEFAULT_T_MAX;
-        p.a.has_t_end = true;
-    }
-    p.a.events[0] = p.section;
-    p.a.event_stop[0] = false;
-    p.a.event_label[0] = "--section";
-    p.a.nevents = 1;
+    p.a.section = p.section;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &p.a);
     /* a fixed-step method given --dt: rows only at crossings, so any method works */
@@ -175,7 +166,7 @@ int cli_cmd_poincare(int argc, char **argv) {
         rc = pc_plot_pick(&c, &p, names, ncols, &pick);
     if (rc == QD_EXIT_OK && names) {
         qd_sim_columns(c.s, c.opts.method, names, ncols);
-        pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = (size_t)p.n, .names = names,
+        pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = p.n, .names = names,
                     .t0 = c.opts.t0, .t_end = c.opts.t_end};
         o.plot = p.a.plot.file ? &rows : NULL;
         qd_sim_stats st;

@@ -16,6 +16,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
+#include <stddef.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,27 +32,42 @@
 #include "progress.h"
 #include "sim_cli.h"
 
-static const char usage_text[] =
-    "usage: qdot simulate FILE --t-end T [--dt H | --rtol TOL] [--every H] [--atol TOL] "
-    "[--method dopri5|dop853|gl2|gl4|gl6|verlet|yoshida4|yoshida6|yoshida8|bdf|taylor] [--precision 64|80|128] "
-    "[--out FILE] [--output \"EXPR, ...\"] [--input \"F = EXPR\" | --input F=FILE.csv]... "
-    "[--input \"F = lqr\" --about \"q=VALUE, q'=VALUE, F=VALUE\" --lqr \"Q = ..., R = ...\"] "
-    "[--event \"EXPR = 0, EXPR > 0\"]... "
-    "[--stop-at \"...\"] [--initial \"q=VALUE, q'=VALUE\"] [--set NAME=VALUE]... "
-    "[--format csv|json] [--native] [--no-project] [--no-speeds] [--max-steps N] "
-    "[--plot FILE.png|.svg|.pdf [--plot-y \"NAME, ...\" | --phase Q] [--title TEXT] "
-    "[--xlabel TEXT] [--ylabel \"TEXT; TEXT\"] [--size WxH]] "
-    "[--variational [columns]] [--period T]";
-
 /* --variational (flow.c through qdot/lyapunov.h): after the run, the flow
  * Jacobian d y(t_end)/d y(t0) and what follows from it; `columns`: instead
  * of the trajectory, CSV rows of t, the state and the Jacobian's entries
  * column by column.  --period T: t_end = t0 + T, the monodromy matrix. */
 typedef struct sim_cmd_args {
     cli_sim_args a;
+    const char *variational_mode; /* "matrix", "columns" or NULL */
+    const char *period_text, *format;
     int variational;      /* 0 none, 1 the matrix, 2 its columns */
     double period;
 } sim_cmd_args;
+
+static const char *const modes[] = {"matrix", "columns", NULL};
+static const char *const formats[] = {"csv", "json", NULL};
+
+static const cli_opt opts[] = {
+    {"--format", NULL, CLI_CHOICE, offsetof(sim_cmd_args, format), "F",
+     "csv rows, or one JSON document (summary, final state, rows)", formats, NULL},
+    {"--variational", NULL, CLI_CHOICE, offsetof(sim_cmd_args, variational_mode), "[columns]",
+     "the flow Jacobian after the run; columns: its entries as CSV rows", modes, NULL},
+    {"--period", NULL, CLI_TEXT, offsetof(sim_cmd_args, period_text), "T",
+     "t_end = t0 + T and the monodromy matrix (with --variational)", NULL, NULL},
+    {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_group groups[] = {
+    CLI_SIM_GROUP(sim_cmd_args, a),
+    CLI_SIM_PLOT_GROUP(sim_cmd_args, a),
+    {NULL, 0},
+};
+
+static const cli_spec spec = {
+    "simulate", "FILE --t-end T [options]",
+    "integrate the equations of motion and write the trajectory (CSV or JSON)",
+    opts, groups, 1, 1, "FILE", false,
+};
 
 typedef struct sim_out {
     FILE *csv;            /* rows as CSV, or NULL */
@@ -108,44 +125,6 @@ static int sink(void *data, int event, const double *row) {
     o->last_t = row[0];
     cli_progress_update(&o->bar, (row[0] - o->t0) / (o->t_end - o->t0), row[0]);
     return cli_interrupted(); /* ^C: stop after a whole row */
-}
-
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    sim_cmd_args *sa = data;
-    cli_sim_args *a = &sa->a;
-    int rc;
-    if (cli_sim_took_option(argc, argv, i, a, &rc))
-        return rc;
-    const char *v;
-    if (!strcmp(argv[*i], "--variational")) {
-        sa->variational = 1;
-        if (*i + 1 < argc && (!strcmp(argv[*i + 1], "columns") || !strcmp(argv[*i + 1], "matrix")))
-            sa->variational = strcmp(argv[++*i], "columns") ? 1 : 2;
-        return QD_EXIT_OK;
-    }
-    if ((v = cli_value(argc, argv, i, "--period"))) {
-        char *end;
-        sa->period = strtod(v, &end);
-        if (end == v || *end || !(sa->period > 0) || !isfinite(sa->period)) {
-            cli_diag_error("--period takes a positive time, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        sa->variational = sa->variational ? sa->variational : 1;
-        return QD_EXIT_OK;
-    }
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        if (strcmp(v, "csv") && strcmp(v, "json")) {
-            cli_diag_error("--format takes csv or json, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        a->json = !strcmp(v, "json");
-    } else if ((rc = cli_plot_option(argc, argv, i, &a->plot))) {
-        return rc > 100 ? rc - 100 : QD_EXIT_OK;
-    } else {
-        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
 }
 
 /* The impacts' part of the JSON summary (models with `impact`s only). */
@@ -505,7 +484,7 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
         }
     if (ok)
         cli_out_write(o.out, "\n", 1, &o.err);
-    qd_flow_opts fo = {.every = a->has_dt ? a->dt : (c->opts.t_end - c->opts.t0) / 100,
+    qd_flow_opts fo = {.every = a->dt ? c->opts.dt : (c->opts.t_end - c->opts.t0) / 100,
                        .sink = col_sink, .data = &o};
     double *y0 = calloc(d + d * d, sizeof *y0); /* the first row: y(t0), Phi = I */
     if (!y0) {
@@ -563,11 +542,11 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     /* a step can span a swing: without --dt a picture alone samples the
      * dense output; rows written (--out, --format json) are never changed
      * by --plot, which then draws those rows (issue 36) */
-    if (a->plot.file && !a->out && !a->json && !a->has_dt &&
+    if (a->plot.file && !a->out && !a->json && !a->dt &&
         qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
         c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
     sim_out o = {.ncols = ncols,
-                 .events = a->nevents > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
+                 .events = a->events.n + a->stops.n > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
                            qd_sim_ncontacts(c->s) > 0,
                  .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .names = names, .line = line};
@@ -683,24 +662,58 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     return rc;
 }
 
+/* --variational takes its mode when one follows ("--variational columns"),
+ * else it is the matrix: argv with the mode joined to it, for the table. */
+static char **join_variational(int argc, char **argv) {
+    char **v = malloc(((size_t)argc + 1) * sizeof *v);
+    int k = 0;
+    for (int i = 0; v && i < argc; i++) {
+        v[k++] = argv[i];
+        if (strcmp(argv[i], "--variational"))
+            continue;
+        bool mode = i + 1 < argc && (!strcmp(argv[i + 1], "columns") ||
+                                     !strcmp(argv[i + 1], "matrix"));
+        v[k - 1] = mode && !strcmp(argv[++i], "columns") ? "--variational=columns"
+                                                          : "--variational=matrix";
+    }
+    if (v)
+        v[k] = NULL;
+    return v;
+}
+
 int cli_cmd_simulate(int argc, char **argv) {
     sim_cmd_args sa = {0};
     cli_sim_args *ap = &sa.a;
 #define a (*ap)
-    int rc = cli_file_args(argc, argv, "simulate", usage_text, &a.file, parse_option, &sa);
+    char **args = join_variational(argc, argv);
+    int n = 0;
+    while (args && args[n])
+        n++;
+    int rc = args ? cli_parse(&spec, n, args, &sa, &a.file) : QD_EXIT_FAIL;
+    free(args);
+    a.json = sa.format && !strcmp(sa.format, "json");
+    sa.variational = !sa.variational_mode ? 0 : !strcmp(sa.variational_mode, "columns") ? 2 : 1;
+    if (rc == QD_EXIT_OK && sa.period_text) {
+        char *end;
+        sa.period = strtod(sa.period_text, &end);
+        if (end == sa.period_text || *end || !(sa.period > 0) || !isfinite(sa.period)) {
+            cli_diag_error("--period takes a positive time, not '%s'", sa.period_text);
+            return QD_EXIT_USAGE;
+        }
+        sa.variational = sa.variational ? sa.variational : 1;
+    }
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&a.plot, "simulate");
     if (rc == QD_EXIT_OK && sa.period > 0) {
-        if (a.has_t_end) {
+        if (a.t_end) {
             cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to "
                            "t0 + T)");
             return QD_EXIT_USAGE;
         }
-        a.has_t_end = true;
-        a.t_end = 1e300; /* t0 + T once the initial state (t0) is read */
+        a.t_end = "1e300"; /* t0 + T once the initial state (t0) is read */
     }
-    if (rc == QD_EXIT_OK && !a.has_t_end) {
-        cli_diag_error("--t-end is missing\n%s", usage_text);
+    if (rc == QD_EXIT_OK && !a.t_end) {
+        cli_diag_error("--t-end is missing (qdot simulate --help)");
         rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)

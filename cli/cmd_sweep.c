@@ -99,8 +99,6 @@ static int own_option(int argc, char **argv, int *i, sweep_args *a) {
         return cli_once("--section", &a->section, v);
     if ((v = cli_value(argc, argv, i, "--format")))
         return cli_once("--format", &a->format, v);
-    if ((v = cli_value(argc, argv, i, "-o")))
-        return cli_once("-o", &a->sim.out, v);
     if ((v = cli_value(argc, argv, i, "--n")))
         return (a->has_n = true), whole("--n", v, &a->n);
     if ((v = cli_value(argc, argv, i, "--seed")))
@@ -111,17 +109,6 @@ static int own_option(int argc, char **argv, int *i, sweep_args *a) {
         return positive("--renorm", v, &a->renorm);
     if ((v = cli_value(argc, argv, i, "--transient")))
         return positive("--transient", v, &a->transient);
-    bool stop = !strncmp(argv[*i], "--stop-at", 9);
-    if ((v = cli_value(argc, argv, i, "--event")) || (v = cli_value(argc, argv, i, "--stop-at"))) {
-        /* one place is kept for --section */
-        if (a->sim.nevents == QD_SIM_MAX_LIST - 1) {
-            cli_diag_error("at most %d events", QD_SIM_MAX_LIST - 1);
-            return QD_EXIT_USAGE;
-        }
-        a->sim.event_stop[a->sim.nevents] = stop;
-        a->sim.events[a->sim.nevents++] = v;
-        return QD_EXIT_OK;
-    }
     cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
     return QD_EXIT_USAGE;
 }
@@ -139,7 +126,7 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
 static int check_args(const sweep_args *a) {
     int how = (a->grid != NULL) + (a->random != NULL) + (a->list != NULL);
     const char *missing = how != 1               ? "one of --grid, --random, --list"
-                          : !a->sim.has_t_end    ? "--t-end"
+                          : !a->sim.t_end        ? "--t-end"
                           : !a->measure          ? "--measure"
                           : a->random && !a->has_n ? "--n (the number of random runs)"
                                                    : NULL;
@@ -235,7 +222,7 @@ static bool has_measure(const char *spec, const char *name) {
 }
 
 static int more_events(sweep_args *a) {
-    a->nuser = a->sim.nevents;
+    a->nuser = a->sim.events.n + a->sim.stops.n;
     if (!a->nuser && has_measure(a->measure, "event")) {
         cli_diag_error("the measure event needs --event or --stop-at (its first is the one)");
         return QD_EXIT_USAGE;
@@ -244,17 +231,14 @@ static int more_events(sweep_args *a) {
         cli_diag_error("the measure poincare-count needs --section");
         return QD_EXIT_USAGE;
     }
-    if (a->section) {
-        a->sim.event_label[a->sim.nevents] = "--section";
-        a->sim.events[a->sim.nevents++] = a->section;
-    }
+    a->sim.section = a->section;
     const char *spec = a->measure;
     for (size_t p = 0; spec[p];) {
         size_t e = cli_item_end(spec, p), x0, x1, h = p;
         while (isspace((unsigned char)spec[h]))
             h++;
         if (!strncmp(spec + h, "escape", 6) && measure_expr(spec, p, e, &x0, &x1)) {
-            if (a->sim.nevents + a->nescapes == QD_SIM_MAX_LIST) {
+            if (a->nuser + (a->section != NULL) + a->nescapes == QD_SIM_MAX_LIST) {
                 cli_diag_error("at most %d events with the escapes", QD_SIM_MAX_LIST);
                 return QD_EXIT_USAGE;
             }

@@ -8,59 +8,69 @@
 
 #include <stdbool.h>
 #include "qdot/sim.h"
+#include "qdot/simsetup.h"
 #include "model_file.h"
 #include "plot_cli.h"
 #include "state.h"
 
-#define QD_SIM_MAX_LIST 64
+#include "args.h"
 
+#define QD_SIM_MAX_LIST CLI_LIST_MAX
+
+/* The simulation options simulate, poincare, lyapunov, animate and sweep
+ * share, as the option table fills them (cli_sim_group).  Numbers are kept
+ * as text: each may be an expression in the model's parameters ("2*pi/w"),
+ * read once the model is loaded (cli_sim_setup); NULL when not given. */
 typedef struct cli_sim_args {
-    const char *file, *initial, *output, *out, *method_name;
-    const char *sets[QD_SIM_MAX_LIST];
-    size_t nsets;
-    const char *events[QD_SIM_MAX_LIST];
-    bool event_stop[QD_SIM_MAX_LIST];
-    const char *event_label[QD_SIM_MAX_LIST]; /* the option it came from (--section), or
-                                               * NULL: --event or --stop-at */
-    size_t nevents;
-    const char *inputs[QD_SIM_MAX_LIST]; /* --input "F = EXPR" or F=FILE.csv */
-    size_t ninputs;
+    const char *t_end, *dt, *rtol, *atol, *every, *max_steps;
+    const char *method;    /* one of the method names, or NULL: the default */
+    const char *precision; /* "64", "80", "128" (taylor), or NULL */
+    const char *initial;   /* --initial "q=VALUE, q'=VALUE, ..." */
+    const char *output;    /* --output "EXPR, ..." (simulate's columns) */
+    const char *out;       /* --out FILE, -o FILE */
+    cli_list sets;         /* --set NAME=VALUE */
+    cli_list inputs;       /* --input "F = EXPR", F=FILE.csv or "F = lqr" */
+    cli_list events;       /* --event "EXPR = EXPR[, EXPR > EXPR]..." */
+    cli_list stops;        /* --stop-at: the same, ending the run (after the events) */
     const char *about, *lqr; /* --input "F = lqr": the operating point, the weights */
-    double t_end, dt, rtol, atol, every;
-    /* the same given as expressions in the parameters ("2*pi/w"): read
-     * once the model is loaded (cli_sim_setup), else NULL */
-    const char *t_end_text, *dt_text, *rtol_text, *atol_text, *every_text;
-    bool has_every;
-    bool has_t_end, has_dt, has_rtol, native, no_project, json;
-    bool no_speeds;    /* a model with speeds: the multiplier form instead */
-    size_t max_steps;
-    cli_plot_args plot; /* --plot: parsed by the commands that draw (simulate, poincare) */
-    int precision;      /* --precision 64|80|128: the taylor method's arithmetic */
+    bool native, no_project, no_speeds;
+    /* set by the command, not by an option of the group */
+    const char *file;      /* the model file */
+    const char *section;   /* an event after the others (poincare, sweep --section) */
+    bool json;             /* --format json */
+    bool fixed;            /* dopri5/dop853 with the constant step --dt (lyapunov) */
+    cli_plot_args plot;    /* --plot: parsed by the commands that draw (simulate, poincare) */
 } cli_sim_args;
+
+/* The group's options, ended by {0}: the fields of a cli_sim_args. */
+extern const cli_opt cli_sim_opts[];
+/* The group of a command whose argument struct TYPE holds its cli_sim_args
+ * as MEMBER: `static const cli_group groups[] = {CLI_SIM_GROUP(my_args, sim),
+ * {NULL, 0}};` */
+#define CLI_SIM_GROUP(TYPE, MEMBER) {cli_sim_opts, offsetof(TYPE, MEMBER)}
+/* The --plot options of the commands that draw a run (simulate, poincare):
+ * the fields of the cli_plot_args in MEMBER (a cli_sim_args). */
+extern const cli_opt cli_sim_plot_opts[];
+#define CLI_SIM_PLOT_GROUP(TYPE, MEMBER) {cli_sim_plot_opts, offsetof(TYPE, MEMBER.plot)}
 
 typedef struct cli_sim {
     qd_ctx *ctx;
     cli_model_file mf;
-    qd_eom *e;
-    qd_speeds_eom *se; /* a model with speeds (unless --no-speeds): e is NULL */
+    qd_sim_setup *set; /* the library's set-up: equations, state, outputs, events */
+    /* borrowed from set: */
+    const qd_eom *e;           /* Lagrange's form, else NULL */
+    const qd_speeds_eom *se;   /* a model with speeds (unless --no-speeds), else NULL */
     qd_sim *s;
-    cli_state st;
-    void *native;      /* qd_native, when --native loaded one */
+    cli_state st;              /* the initial state (a read-only view) */
     qd_sim_opts opts;
-    double *q0, *qd0;
-    double *p0;        /* a model given by H: momenta from --initial, or NULL */
-    double *u0;        /* a model in speeds: the speeds when any is given, or NULL */
-    const char *about, *lqr; /* from cli_sim_args, for --input "F = lqr" */
-    bool lqr_used;     /* some input took the LQR feedback */
+    const char *about, *lqr;   /* from cli_sim_args, for --input "F = lqr" */
+    bool lqr_used;             /* some input took the LQR feedback */
 } cli_sim;
 
-/* One option shared by both commands at argv[*i]: 1 when it was one (and
- * taken), 0 when it is not, or an exit status (QD_EXIT_USAGE) + 100. */
-int cli_sim_option(int argc, char **argv, int *i, cli_sim_args *a);
-/* The same for a command's own option parser: true when argv[*i] was a
- * shared option, taken (*rc = QD_EXIT_OK) or refused (*rc its exit status). */
+/* Until every command parses with cli_parse: one option of cli_sim_opts at
+ * argv[*i], read into *a: true when it was one (taken, *rc = QD_EXIT_OK, or
+ * refused, *rc its exit status). */
 bool cli_sim_took_option(int argc, char **argv, int *i, cli_sim_args *a, int *rc);
-
 
 /* Load, --set, derive, compile, initial values, outputs and events, the
  * method and options.  Returns an exit status; prints its diagnostics. */

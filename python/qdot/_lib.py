@@ -212,6 +212,13 @@ class SimOpts(Structure):
                 ("par", POINTER(c_double)), ("precision", c_int), ("every", c_double)] + _TAIL
 
 
+class SimSetupOpts(Structure):
+    """qd_sim_setup_opts (qdot/simsetup.h): the numbers as text."""
+    _fields_ = [("t_end", c_char_p), ("dt", c_char_p), ("rtol", c_char_p), ("atol", c_char_p),
+                ("every", c_char_p), ("max_steps", c_char_p), ("method", c_char_p),
+                ("precision", c_int), ("no_project", c_bool), ("fixed", c_bool)] + _TAIL
+
+
 class SimStats(Structure):
     """qd_sim_stats (qdot/sim.h)."""
     _fields_ = [("steps", c_size_t), ("evals", c_size_t), ("rejected", c_size_t),
@@ -379,6 +386,17 @@ _PROTOS = {
     "qd_sim_check_opts": (c_int, [c_void_p, POINTER(SimOpts)]),
     "qd_sim_input_expr": (c_int, [c_void_p, c_char_p, Expr]),
     "qd_sim_input_callback": (c_int, [c_void_p, c_char_p, SimInputFn, c_void_p]),
+    # the set-up the command line makes (simsetup.h)
+    "qd_sim_setup_new": (c_void_p, [c_void_p, c_void_p, c_bool]),
+    "qd_sim_setup_free": (None, [c_void_p]),
+    "qd_sim_setup_sim": (c_void_p, [c_void_p]),
+    "qd_sim_setup_form": (c_int, [c_void_p]),
+    "qd_sim_setup_eom": (POINTER(Eom), [c_void_p]),
+    "qd_sim_setup_initial": (c_int, [c_void_p, c_char_p]),
+    "qd_sim_setup_output": (c_int, [c_void_p, c_char_p, c_char_p, c_size_t, c_size_t]),
+    "qd_sim_setup_event": (c_int, [c_void_p, c_char_p, c_bool]),
+    "qd_sim_setup_input": (c_int, [c_void_p, c_char_p, c_char_p, c_size_t, c_size_t]),
+    "qd_sim_setup_options": (c_int, [c_void_p, POINTER(SimSetupOpts), POINTER(SimOpts)]),
     # scenes (scene.h)
     "qd_scene_points": (c_int, [c_void_p, c_void_p, c_uint, POINTER(POINTER(ScenePoint)),
                                 POINTER(c_size_t)]),

@@ -3,7 +3,7 @@
 #
 # The rows the library hands to the sink are copied into numpy arrays; the
 # qd_sim is made and freed inside one call, so nothing of it outlives the
-# run.  Event text is read as `qdot simulate --event` reads it.
+# run.  Event text is read by the library's set-up, as `qdot simulate` reads it.
 """Simulation results and the compiled right-hand side (internal module)."""
 
 import ctypes
@@ -12,8 +12,10 @@ from ctypes import byref
 
 import numpy as np
 
-from ._core import Error, ModelError, name_of, number_expr, take_error
-from ._lib import (lib, SimOpts, SimStats, SimSink, SimInputFn, exprs, doubles, DBL, QD_OK)
+from ._core import (QD_ERR_NOMEM, Error, ModelError, format_diag, name_of, number_expr,
+                    take_error)
+from ._lib import (lib, SimOpts, SimSetupOpts, SimStats, SimSink, SimInputFn, exprs, doubles,
+                   DBL, QD_OK)
 
 
 class Table:
@@ -81,153 +83,30 @@ class Result(Table):
             self.method)
 
 
-def _items(text):
-    """text split at its top-level commas."""
-    out, depth, start = [], 0, 0
-    for i, ch in enumerate(text):
-        depth += ch in "([" and 1 or (ch in ")]" and depth > 0 and -1 or 0)
-        if ch == "," and depth == 0:
-            out.append(text[start:i])
-            start = i + 1
-    out.append(text[start:])
-    return [s for s in out if s.strip()]
+def _text_error(core, what, text):
+    """The context's error about text (the user's): shown in it with a caret
+    when located there, as the command line shows its options."""
+    diag = take_error(core.ctx)
+    if diag.status == QD_ERR_NOMEM:
+        return MemoryError("qdot: out of memory")
+    if diag.located:
+        return ModelError(format_diag(diag, what, text.encode()), diag, what)
+    return Error("%s: %s" % (what, diag.message.decode()), diag.status)
 
 
-def _add_event(core, s, text, stop):
-    """'g1 = g2, a > b, ...': the crossing g1 - g2 and guards a - b > 0."""
-    what = "stop_at" if stop else "events"
-    g, guards = None, []
-    for item in _items(text):
-        ops = [i for i, ch in enumerate(item) if ch in "=<>"]
-        if not ops or (g is None) != (item[ops[0]] == "="):
-            raise Error("%s takes \"EXPR = EXPR[, EXPR > EXPR]...\" (the crossing first, "
-                        "then conditions with > or <), not '%s'" % (what, text))
-        k = ops[0]
-        lhs, rhs = core.read(item[:k], what), core.read(item[k + 1:], what)
-        if item[k] == "=":
-            g = lib.qd_sub(core.ctx, lhs, rhs)
-        else:
-            guards.append(lib.qd_sub(core.ctx, lhs, rhs) if item[k] == ">"
-                          else lib.qd_sub(core.ctx, rhs, lhs))
-    core.check(lib.qd_sim_add_event(s, g, len(guards), exprs(guards), stop))
-
-
-def _add_outputs(core, s, outputs):
-    """Columns: the model's `outputs`, then those of outputs (a list of
-    expressions or {name: expression}), as `qdot simulate` orders them."""
-    m = core.model
-    for i in range(lib.qd_model_noutputs(m)):
-        core.check(lib.qd_sim_add_output(s, lib.qd_model_output_name(m, i),
-                                         lib.qd_model_output(m, i)))
-    items = outputs.items() if isinstance(outputs, dict) else [(o, o) for o in outputs]
-    for name, text in items:
-        core.check(lib.qd_sim_add_output(s, name.encode(), core.read(text, "outputs")))
-
-
-def _initial(core, initial, kind):
-    """q0, qd0, t0 (model order) and the extra initial values (momenta of a
-    model given by H, speeds of a model simulated in them) or None, from the
-    model's `initial` line overridden by the dict initial; a value may be
-    text ("pi/2") in the parameters."""
-    syms, vals = core.state()
-    n = len(core.coords())
-    names = [name_of(x) for x in syms[:2 * n + 1]]
-    extra = _extra(core, kind, syms, vals)
-    names += [name for name, _ in extra]
-    given = [value for _, value in extra]
-    if kind == "speeds" and any(name in initial for name in names[n:2 * n]):
-        given = [None] * len(given)  # velocities named: the speeds follow them
+def _initial_text(initial):
+    """{name: value} as the text qd_sim_setup_initial reads."""
+    items = []
     for name, value in initial.items():
-        if name not in names:
-            raise Error("initial: '%s' is not among %s" % (name, ", ".join(names)))
-        if isinstance(value, str):
-            value = core.eval(core.read(value, "initial " + name), syms, vals)
-        i = names.index(name)
-        if i > 2 * n:
-            given[i - 2 * n - 1] = float(value)
-        else:
-            vals[i] = float(value)
-    more = None
-    if any(v is not None for v in given):
-        more = doubles([_missing(core, kind, r, syms, vals) if v is None else v
-                        for r, v in enumerate(given)])
-    return vals[:n], vals[n:2 * n], vals[2 * n], more
+        if not isinstance(value, str):
+            value = repr(float(value))
+        items.append("%s=%s" % (name, value))
+    return ", ".join(items)
 
 
-def _extra(core, kind, syms, vals):
-    """[(name, initial value or None)] of the momenta or the speeds."""
-    m = core.model
-    if kind == "hamilton":
-        return [(name_of(lib.qd_model_momentum(m, j)), None)
-                for j in range(lib.qd_model_ncoords(m))]
-    if kind != "speeds":
-        return []
-    out = []
-    for r in range(lib.qd_model_nspeeds(m)):
-        x = lib.qd_model_speed_initial(m, r)
-        out.append((name_of(lib.qd_model_speed(m, r)),
-                    core.eval(x, syms, vals) if x else None))
-    return out
-
-
-def _missing(core, kind, r, syms, vals):
-    """A momentum not given is 0; a speed not given is its definition at
-    the initial velocities (as `qdot simulate` takes it)."""
-    if kind != "speeds":
-        return 0.0
-    return core.eval(lib.qd_model_speed_definition(core.model, r), syms, vals)
-
-
-def _method(core, s, method, dt, rtol):
-    """The qd_sim_method by name, or the default the command line uses."""
-    if method is None:  # dt with rtol: the output grid of an adaptive run
-        return lib.qd_sim_default_method(s, dt is not None and rtol is None)
-    m = ctypes.c_int()
-    if not lib.qd_sim_method_from_name(method.encode(), byref(m)):
-        raise Error("method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, yoshida6, "
-                    "yoshida8, bdf or taylor, not '%s'" % method)
-    return m.value
-
-
-def _new_sim(core, kind):
-    """The qd_sim (and the speeds equations it reads, or None): Hamilton's
-    equations for a model given by H, the equations in speeds for a model
-    with `speeds`, else Lagrange's."""
-    se = None
-    if kind == "hamilton":
-        s = lib.qd_sim_new_hamilton(core.ctx, core.model)
-    elif kind == "speeds":
-        se = lib.qd_speeds_derive(core.ctx, core.model, None)
-        if not se:
-            raise core.error(cls=ModelError)
-        s = lib.qd_sim_new_speeds(core.ctx, core.model, se)
-    else:
-        s = lib.qd_sim_new(core.ctx, core.model, core.eom_ptr())
-    if not s:
-        err = core.error(cls=ModelError)
-        if se:
-            lib.qd_speeds_eom_free(se)
-        raise err
-    return s, se
-
-
-def _order(core, kind, q, qd):
-    """The initial values in the order of the equations' coordinates."""
-    if kind != "lagrange":
-        return q, qd
-    coords = core.coords()
-    e = core.eom()
-    pos = [coords.index(e.q[j]) for j in range(e.n)]
-    return [q[i] for i in pos], [qd[i] for i in pos]
-
-
-def _kind(core, speeds):
-    """Which equations simulate integrates."""
-    if lib.qd_model_hamiltonian_given(core.model):
-        return "hamilton"
-    return "speeds" if speeds and lib.qd_model_nspeeds(core.model) else "lagrange"
-
-
+def _number(x):
+    """A number argument as the text the set-up reads (None stays None)."""
+    return None if x is None else repr(float(x)).encode()
 class _InputFn:
     """A Python callable f(t, y) -> float as a qd_sim_input_fn.  y is the
     state (q, q') in model order, a fresh numpy array per call.  The C side
@@ -264,7 +143,7 @@ def _input_names(core):
     return [name_of(lib.qd_model_input(m, k)) for k in range(lib.qd_model_ninputs(m))]
 
 
-def _add_inputs(core, s, inputs):
+def _add_inputs(core, setup, s, inputs):
     """Each input's source: a number (constant), text (an expression in t,
     the state and the parameters, read as --input reads it) or a callable
     f(t, y); the list of _InputFn, which must outlive the run."""
@@ -275,16 +154,20 @@ def _add_inputs(core, s, inputs):
                         % (name, ", ".join(names) or "none"))
         if callable(value):
             coords = core.coords()
-            e = core.eom()
+            e = lib.qd_sim_setup_eom(setup).contents
             pos = [[e.q[j] for j in range(e.n)].index(c) for c in coords]
             fn = _InputFn(name, value, pos)
             core.check(lib.qd_sim_input_callback(s, name.encode(), fn.c, None))
             fns.append(fn)
             continue
+        what = "inputs " + name
         if isinstance(value, str):
-            x = core.read(value, "inputs " + name)
-        elif isinstance(value, numbers.Real) and not isinstance(value, bool):
-            x = number_expr(core.ctx, "inputs " + name, value)
+            if lib.qd_sim_setup_input(setup, name.encode(), value.encode(), 0,
+                                      len(value.encode())) != QD_OK:
+                raise _text_error(core, what, value)
+            continue
+        if isinstance(value, numbers.Real) and not isinstance(value, bool):
+            x = number_expr(core.ctx, what, value)
         else:
             raise Error("inputs: %s takes a number, an expression (text) or a callable "
                         "f(t, y), not %r" % (name, value))
@@ -294,38 +177,39 @@ def _add_inputs(core, s, inputs):
 
 def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outputs,
              max_steps, speeds, inputs, every=None):
-    """Model.simulate's work (see there)."""
-    kind = _kind(core, speeds and not inputs)
-    s, se = _new_sim(core, kind)
+    """Model.simulate's work (see there), by the set-up `qdot simulate`
+    makes (qdot/simsetup.h): the same equations, initial state, names and
+    checks, and the same messages."""
+    setup = lib.qd_sim_setup_new(core.ctx, core.model, not (speeds and not inputs))
+    if not setup:
+        raise core.error(cls=ModelError)
     try:
-        q, qd, t0, more = _initial(core, initial, kind)
-        q, qd = _order(core, kind, q, qd)
-        _add_outputs(core, s, outputs)
-        fns = _add_inputs(core, s, inputs)
-        for text in events:
-            _add_event(core, s, text, False)
-        if stop_at:
-            _add_event(core, s, stop_at, True)
-        m = _method(core, s, method, dt, rtol)
-        if not lib.qd_sim_method_adaptive(m) and dt is None:
-            raise Error("method %s takes fixed steps: give dt" % lib.qd_sim_method_name(m)
-                        .decode())
-        q0, qd0 = doubles(q), doubles(qd)
-        opts = SimOpts(method=m, t0=t0, t_end=float(t_end), dt=float(dt or 0),
-                       rtol=float(rtol or 0), atol=float(atol or 0), max_steps=max_steps,
-                       q0=q0, qd0=qd0, every=float(every or 0))
-        if kind == "hamilton":
-            opts.p0 = more
-        elif kind == "speeds":
-            opts.u0 = more
-        core.check(lib.qd_sim_check_opts(core.ctx, byref(opts)))
+        s = lib.qd_sim_setup_sim(setup)
+        if initial:
+            text = _initial_text(initial)
+            if lib.qd_sim_setup_initial(setup, text.encode()) != QD_OK:
+                raise _text_error(core, "initial", text)
+        items = outputs.items() if isinstance(outputs, dict) else [(o, o) for o in outputs]
+        for name, text in items:
+            if lib.qd_sim_setup_output(setup, name.encode(), text.encode(), 0,
+                                       len(text.encode())) != QD_OK:
+                raise _text_error(core, "outputs", text)
+        fns = _add_inputs(core, setup, s, inputs)
+        for what, text, stop in ([("events", t, False) for t in events] +
+                                 ([("stop_at", stop_at, True)] if stop_at else [])):
+            if lib.qd_sim_setup_event(setup, text.encode(), stop) != QD_OK:
+                raise _text_error(core, what, text)
+        if method is None and dt is not None and rtol is not None:
+            method = "dop853"  # dt with rtol: the output grid of the adaptive default
+        so = SimSetupOpts(t_end=_number(t_end), dt=_number(dt), rtol=_number(rtol),
+                          atol=_number(atol), every=_number(every),
+                          max_steps=str(int(max_steps)).encode() if max_steps else None,
+                          method=method.encode() if method is not None else None)
+        opts = SimOpts()
+        core.check(lib.qd_sim_setup_options(setup, byref(so), byref(opts)))
         return _run(core, s, opts, len(events) + bool(stop_at), fns)
     finally:
-        lib.qd_sim_free(s)
-        if se:
-            lib.qd_speeds_eom_free(se)
-
-
+        lib.qd_sim_setup_free(setup)
 def _run(core, s, opts, nev, fns=()):
     """qd_sim_run with a sink that copies every row; the Result.  An
     exception raised in an input callable (the callback then returns NaN,

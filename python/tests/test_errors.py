@@ -62,7 +62,7 @@ def test_bad_use_raises():
     with pytest.raises(qdot.ModelError, match="unknown parameter 'kk'"):
         m.set(kk=1)
     assert m.params == {"k": 2.0}  # unchanged by the failed set
-    with pytest.raises(qdot.Error, match="not among"):
+    with pytest.raises(qdot.ModelError, match="unknown name 'z'"):
         m.simulate(1, initial={"z": 1})
     with pytest.raises(qdot.Error, match="method takes"):
         m.simulate(1, method="euler")
@@ -86,3 +86,37 @@ def test_set_refuses_what_is_not_a_finite_number():
     m.set(k="pi/6")
     assert m.params["k"] == pytest.approx(math.pi / 6, rel=1e-15)
     assert m.modes()[0].omega2 == pytest.approx(math.pi / 6, rel=1e-12)
+
+
+def cli_simulate_stderr(path, *args):
+    """What `qdot simulate FILE ARGS` prints when refused (exit 2), when the
+    build is known."""
+    exe = os.path.join(BUILD, "qdot")
+    if not os.access(exe, os.X_OK):
+        return None
+    run = subprocess.run([exe, "simulate", str(path), "--t-end", "1", *args],
+                         capture_output=True, text=True)
+    assert run.returncode == 2, run.stderr
+    return run.stderr
+
+
+@pytest.mark.parametrize("kw, args", [
+    ({"outputs": ["2*thetaa + 1"]}, ["--output", "2*thetaa + 1"]),
+    ({"events": ["thetaa = 0, theta' > 0"]}, ["--event", "thetaa = 0, theta' > 0"]),
+    ({"stop_at": "theta = 0, omgea > 0"}, ["--stop-at", "theta = 0, omgea > 0"]),
+    ({"initial": {"thetaa": 1}}, ["--initial", "thetaa=1.0"]),
+])
+def test_same_name_same_message_as_cli(tmp_path, kw, args):
+    # one reader of names (qdot/simsetup.h): Python and the command line say
+    # the same sentence, hint and place for the same misspelt name
+    path = tmp_path / "pend.qd"
+    path.write_text("coordinates theta\nparameters l = 1, g = 9.81, omega = 2\n"
+                    "T = l^2/2*theta'^2\nV = -g*l*cos(theta)\n")
+    with pytest.raises(qdot.ModelError) as err:
+        qdot.Model.load(path).simulate(1, **kw)
+    e = err.value
+    assert "unknown name" in e.message and e.hint.startswith("did you mean")
+    cli = cli_simulate_stderr(path, *args)
+    if cli is not None:
+        assert e.message in cli and e.hint in cli
+        assert ":%d:%d: error: " % (e.line, e.col) in cli  # the same place in the same text

@@ -103,6 +103,8 @@ NULLABLE = {
     'qd_sim_input_callback': {'data'},
     'qd_sim_load_native_taylor': {'cache_dir', 'cached'},
     'qd_sim_run': {'data', 'final', 'sink', 'stats'},
+    'qd_sim_setup_state': {'syms', 'vals'},
+    'qd_sim_setup_native': {'note'},
     'qd_sim_run_with': {'data', 'final', 'sink', 'stats'},
     'qd_speeds_derive': {'opts'},
     'qd_speeds_equilibria_find': {'opts', 'syms', 'vals'},

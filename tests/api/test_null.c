@@ -47,6 +47,7 @@
 #include "qdot/scatter.h"
 #include "qdot/scene.h"
 #include "qdot/sim.h"
+#include "qdot/simsetup.h"
 #include "qdot/speeds.h"
 #include "qdot/stability.h"
 #include "qdot/state.h"
@@ -4060,6 +4061,123 @@ static void null_sim(void **state)
     teardown(&F);
 }
 
+static void null_simsetup(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_sim_form_of */
+    /* m NULL */
+    (void)qd_sim_form_of(NULL, false);
+    reset(&F);
+    /* ---- qd_sim_setup_new */
+    /* ctx NULL */
+    assert_null(qd_sim_setup_new(NULL, F.model, false));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_sim_setup_new(F.ctx, NULL, false));
+    reset(&F);
+    /* ---- qd_sim_setup_free */
+    /* s NULL */
+    qd_sim_setup_free(NULL);
+    reset(&F);
+    /* ---- qd_sim_setup_sim */
+    /* s NULL */
+    assert_null(qd_sim_setup_sim(NULL));
+    reset(&F);
+    /* ---- qd_sim_setup_form */
+    /* s NULL */
+    (void)qd_sim_setup_form(NULL);
+    reset(&F);
+    /* ---- qd_sim_setup_eom */
+    /* s NULL */
+    assert_null(qd_sim_setup_eom(NULL));
+    reset(&F);
+    /* ---- qd_sim_setup_speeds_eom */
+    /* s NULL */
+    assert_null(qd_sim_setup_speeds_eom(NULL));
+    reset(&F);
+    /* ---- qd_sim_setup_ncon */
+    /* s NULL */
+    assert_true(qd_sim_setup_ncon(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_setup_con */
+    /* s NULL */
+    assert_null(qd_sim_setup_con(NULL, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_state */
+    /* s NULL */
+    assert_true(qd_sim_setup_state(NULL, NULL, (const double * *)(void *)F.p) == 0);
+    reset(&F);
+    /* ---- qd_sim_setup_initial */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_initial(NULL, "q"));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_initial(NULL, NULL));
+    reset(&F);
+    /* ---- qd_sim_setup_read */
+    /* s NULL */
+    assert_null(qd_sim_setup_read(NULL, "q", 1, 1));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_sim_setup_read(NULL, NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_outputs */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_outputs(NULL, "q"));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_outputs(NULL, NULL));
+    reset(&F);
+    /* ---- qd_sim_setup_output */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_output(NULL, "q", "q", 1, 1));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_output(NULL, NULL, "q", 1, 1));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_output(NULL, "q", NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_event */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_event(NULL, "q", false));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_event(NULL, NULL, false));
+    reset(&F);
+    /* ---- qd_sim_setup_crossing */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_crossing(NULL, "q", 1, 1, 1, 1));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_crossing(NULL, NULL, 1, 1, 1, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_input */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input(NULL, "q", "q", 1, 1));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input(NULL, NULL, "q", 1, 1));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input(NULL, "q", NULL, 1, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_options */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, (qd_sim_opts *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sim_setup_native */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_native(NULL, NULL, F.c, 1));
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_speeds(void **state)
 {
     (void)state;
@@ -4804,6 +4922,7 @@ int main(void)
         cmocka_unit_test(null_scatter),
         cmocka_unit_test(null_scene),
         cmocka_unit_test(null_sim),
+        cmocka_unit_test(null_simsetup),
         cmocka_unit_test(null_speeds),
         cmocka_unit_test(null_stability),
         cmocka_unit_test(null_state),

@@ -65,7 +65,7 @@ def main():
           "--every 1 with gl4 --dt 0.01: 11 rows within 1e-5 (%.3g)"
           % (worst(g, ref[::5]) if g else float("nan")))
     p, _ = rows(qdot, "--dt", "0.2", "--rtol", "1e-10")
-    check(p.returncode == 2 and "--every 0.2" in p.stderr and p.stdout == "",
+    check(p.returncode == 2 and "every 0.2" in p.stderr and p.stdout == "",
           "--dt 0.2 --rtol 1e-10: exit 2 with the hint")
 
     sys.exit(1 if failures else 0)

@@ -193,7 +193,8 @@ def main():
     check(rc == 0, f'impacts --no-speeds: {rc} {err}')
     # an unknown name in --initial is named as --initial's, with the speeds listed
     rc, out, err = run(qdot, 'simulate', sleigh, '--t-end', 1, '--initial', 'vv=1')
-    check(rc == 2 and "--initial:1:1: error: unknown name 'vv'" in err and 'the speeds are v, w' in err,
+    check(rc == 2 and "--initial:1:1: error: unknown name 'vv'" in err and
+          'the speeds are v, w' in err,
           f'--initial unknown name: {rc} {err}')
 
     shutil.rmtree(tmp, ignore_errors=True)

@@ -1,0 +1,151 @@
+/*
+ * qdot/simsetup.h - a simulation set up from a model as `qdot simulate`
+ * (and Python's Model.simulate) take it: which equations, the initial
+ * state, outputs, events and inputs read in the model's names, the method
+ * and its options from text.  Every decision of the set-up lives here, so
+ * that the command line and Python make the same run, and the same mistake
+ * gets the same message from both.
+ *
+ * Which equations (qd_sim_form_of):
+ *   a model given by H (`momenta`, `H = ...`)  Hamilton's, y = (q, p)
+ *   a model with `speeds` (unless no_speeds)    the speeds form, y = (q, u)
+ *   otherwise                                   Lagrange's, y = (q, q')
+ *
+ * The namespace of outputs, events and inputs (qd_sim_setup_read): the
+ * coordinates, velocities q', t, the parameters, the model's definitions
+ * (`x2 = x1 + l*sin(theta)`, replaced by their values; NAME' is a
+ * definition's time derivative), a speed's name (its definition), the
+ * multipliers lambda_NAME of the constraints (Lagrange's form), the
+ * momenta (a model given by H) and the model's inputs.  Any other name is
+ * QD_ERR_ARG "unknown name 'NAME'", located in the text.
+ *
+ * Errors are recorded in the context: a text's error with its place in
+ * that text (qd_diag offset, length), an option's with qd_diag.name its
+ * field's name ("t_end", "dt", ...) and subject QD_SUBJECT_NONE, so that
+ * each caller names it in its own terms (--t-end, t_end=).
+ */
+#ifndef QDOT_SIMSETUP_H
+#define QDOT_SIMSETUP_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum qd_sim_form {
+    QD_SIM_FORM_LAGRANGE, /* M q'' = f, with multipliers for the constraints */
+    QD_SIM_FORM_HAMILTON, /* the model's H */
+    QD_SIM_FORM_SPEEDS    /* the model's speeds, the constraints eliminated */
+} qd_sim_form;
+
+/* The equations a model is simulated in (see above). */
+QD_API qd_sim_form qd_sim_form_of(const qd_model *m, bool no_speeds);
+
+typedef struct qd_sim_setup qd_sim_setup;
+
+/* The model's equations derived (qd_eom_derive or qd_speeds_derive) and
+ * compiled (qd_sim_new*), the model's `outputs` added as columns, and the
+ * initial state at the model's `initial` values (coordinates and
+ * velocities not named are 0, t = 0, the speeds from the velocities).  m
+ * (with --set applied) must outlive the set-up.  NULL on failure, the
+ * reason in ctx (a derivation's error: qd_model_locate finds its place). */
+QD_API qd_sim_setup *qd_sim_setup_new(qd_ctx *ctx, const qd_model *m, bool no_speeds);
+QD_API void qd_sim_setup_free(qd_sim_setup *s);
+
+QD_API qd_sim *qd_sim_setup_sim(const qd_sim_setup *s);
+QD_API qd_sim_form qd_sim_setup_form(const qd_sim_setup *s);
+/* The equations: Lagrange's form (else NULL), the speeds form (else NULL). */
+QD_API const qd_eom *qd_sim_setup_eom(const qd_sim_setup *s);
+QD_API const qd_speeds_eom *qd_sim_setup_speeds_eom(const qd_sim_setup *s);
+/* The constraints kept by the equations (either form), and constraint k. */
+QD_API size_t qd_sim_setup_ncon(const qd_sim_setup *s);
+QD_API const qd_con *qd_sim_setup_con(const qd_sim_setup *s, size_t k);
+
+/* The initial state: the symbols and their values, n of them: the
+ * coordinates, velocities, t, the parameters (model order), then the
+ * momenta of a model given by H or the speeds of a model with speeds.
+ * Owned by s; the values change with qd_sim_setup_initial. */
+QD_API size_t qd_sim_setup_state(const qd_sim_setup *s, const qd_expr *const **syms,
+                                 const double **vals);
+
+/* "NAME=VALUE, ..." onto the initial state: NAME a coordinate, a velocity
+ * NAME', t (the `independent` variable's name), a parameter, a momentum or
+ * a speed; VALUE a constant expression in the parameters ("pi/2", "r0").
+ * When it names a velocity, the model's initial speeds it does not name
+ * give way (they follow from the velocities); momenta not named are 0.  An
+ * unknown name (with "did you mean" the nearest), a name given twice, an
+ * item that is not NAME=VALUE or a value that does not evaluate is
+ * QD_ERR_ARG located in text.  Once, before qd_sim_setup_options. */
+QD_API qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text);
+
+/* text[a, b) (surrounding blanks skipped) read in the model's names (see
+ * above): the expression, or NULL with the error located in text. */
+QD_API const qd_expr *qd_sim_setup_read(qd_sim_setup *s, const char *text, size_t a, size_t b);
+
+/* Output columns "EXPR, ..." (the items at top-level commas), each named by
+ * its text; errors located in text. */
+QD_API qd_status qd_sim_setup_outputs(qd_sim_setup *s, const char *text);
+/* One output column under name, the expression text[a, b). */
+QD_API qd_status qd_sim_setup_output(qd_sim_setup *s, const char *name, const char *text,
+                                     size_t a, size_t b);
+
+/* An event in the grammar "EXPR = EXPR[, EXPR > EXPR | EXPR < EXPR]...":
+ * the crossing first (g = lhs - rhs), then guards (a > b: a - b > 0).
+ * stop: the run ends at its first time.  Errors located in text. */
+QD_API qd_status qd_sim_setup_event(qd_sim_setup *s, const char *text, bool stop);
+/* An event where text[a0, a1) crosses text[b0, b1) (no guards, not
+ * stopping): a sweep's escape measure. */
+QD_API qd_status qd_sim_setup_crossing(qd_sim_setup *s, const char *text, size_t a0, size_t a1,
+                                       size_t b0, size_t b1);
+
+/* Input name's source: the expression text[a, b) (read in the model's
+ * names; qd_sim_input_expr). */
+QD_API qd_status qd_sim_setup_input(qd_sim_setup *s, const char *name, const char *text,
+                                    size_t a, size_t b);
+
+/* The run's options as given: each number as text (NULL when not given),
+ * an expression in the parameters. */
+typedef struct qd_sim_setup_opts {
+    const char *t_end;     /* required */
+    const char *dt;        /* > 0: a fixed step's size, or an adaptive run's output grid */
+    const char *rtol, *atol, *every; /* > 0 */
+    const char *max_steps; /* a whole number > 0 */
+    const char *method;    /* a name (qd_sim_method_from_name), or NULL for the default */
+    int precision;         /* 0, 64, 80 or 128 (taylor only beyond 64) */
+    bool no_project;
+    bool fixed;            /* with dt, dopri5/dop853 take the constant step dt */
+} qd_sim_setup_opts;
+
+/* The options of the run into *out, with the initial state: the method
+ * (given, else qd_sim_default_method: a fixed-step default when dt is
+ * given), t0 from the state, and the checks before any output: dt with
+ * rtol but no method (ambiguous), a fixed-step method without dt,
+ * precision beyond 64 without taylor, t_end not after t0, the options
+ * qd_sim_check_opts refuses, an impact's gap negative at t0, an input
+ * without a source.  QD_ERR_ARG with the field's name in qd_diag.name (a
+ * number's text error also located in that text). */
+QD_API qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o,
+                                      qd_sim_opts *out);
+
+/* --native: the compiled right-hand side of opts' method loaded when it can
+ * take it (Lagrange's form, an adaptive method; the taylor recurrences in
+ * double), else the compiled programs stay.  QD_OK either way unless out
+ * of memory; note (cap bytes, may be NULL) says why it fell back, "" when
+ * it did not.  After qd_sim_setup_options. */
+QD_API qd_status qd_sim_setup_native(qd_sim_setup *s, const qd_sim_opts *opts, char *note,
+                                     size_t cap);
+
+#ifdef __cplusplus
+}
+#endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it; a void function
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_sim_setup_state (syms, vals);
+ * qd_sim_setup_native (note). An array whose count is 0 may be NULL. */
+#endif

@@ -1,0 +1,28 @@
+/*
+ * src/sim/setup.h - the set-up of a simulation (qdot/simsetup.h), shared by
+ * setup.c (equations, initial state, options) and names.c (expressions in
+ * the model's names: outputs, events, inputs).  Private to src/sim.
+ */
+#ifndef QD_SIM_SETUP_H
+#define QD_SIM_SETUP_H
+
+#include "qdot/codegen.h"
+#include "qdot/simsetup.h"
+
+struct qd_sim_setup {
+    qd_ctx *ctx;
+    const qd_model *m;
+    qd_sim_form form;
+    qd_eom *e;            /* Lagrange's form, else NULL */
+    qd_speeds_eom *se;    /* the speeds form, else NULL */
+    qd_sim *sim;
+    /* the initial state: q, q', t, parameters, then momenta (H) or speeds */
+    size_t n, nq, extra;  /* extra: the momenta or speeds at the end */
+    const qd_expr **syms;
+    double *vals;
+    bool initial_given;
+    double *q0, *qd0, *p0, *u0; /* the run's initial values (qd_sim_setup_options) */
+    qd_native *native;
+};
+
+#endif

@@ -1,0 +1,181 @@
+/*
+ * tests/sim/test_setup.c - the simulation set-up (qdot/simsetup.h) against
+ * closed forms: the oscillator m x'' = -k x (x = cos 2t + sin(2t)/4 from
+ * x = 1, x' = 1/2, w = sqrt(k/m) = 2; Goldstein sec. 1.6) run for one
+ * period given as text in the parameters, its energy (a definition) kept
+ * and its rate 0, the first downward zero of x at t = (pi - atan 4)/2;
+ * Desloge ch. 78's H = p^2 - q with the momentum given (q = 2 p0 t + t^2,
+ * p = p0 + t); and the errors located in the text they are about.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "qdot/qdot.h"
+#include "qdot/simsetup.h"
+
+#define PI 3.14159265358979323846
+
+static const char osc[] = "coordinates x\nparameters m = 2, k = 8, omega = 2\n"
+                          "T = m/2*x'^2\nV = k/2*x^2\nE = m/2*x'^2 + k/2*x^2\n";
+
+typedef struct rows {
+    double last[16], event_t;
+    size_t events, ncols;
+    double worst_e, worst_rate; /* |E - 4.25|, |E'| over the rows */
+} rows;
+
+static int sink(void *data, int event, const double *row) {
+    rows *r = data;
+    memcpy(r->last, row, r->ncols * sizeof *row);
+    if (event == 0 && r->events++ == 0)
+        r->event_t = row[0];
+    double e = fabs(row[r->ncols - 2] - 4.25), rate = fabs(row[r->ncols - 1]);
+    r->worst_e = e > r->worst_e ? e : r->worst_e;
+    r->worst_rate = rate > r->worst_rate ? rate : r->worst_rate;
+    return 0;
+}
+
+static void test_oscillator(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = qd_model_parse(ctx, osc, NULL);
+    qd_sim_setup *s = qd_sim_setup_new(ctx, m, false);
+    assert_non_null(s);
+    assert_int_equal(qd_sim_setup_form(s), QD_SIM_FORM_LAGRANGE);
+    assert_int_equal(qd_sim_setup_initial(s, "x = 1, x' = k/16"), QD_OK);
+    assert_int_equal(qd_sim_setup_outputs(s, "E, E'"), QD_OK);
+    assert_int_equal(qd_sim_setup_event(s, "x = 0, x' < 0", false), QD_OK);
+    qd_sim_setup_opts so = {.t_end = "2*pi*sqrt(m/k)", .rtol = "1e-12", .atol = "1e-14"};
+    qd_sim_opts o;
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_OK);
+    assert_int_equal(o.method, QD_SIM_DOP853); /* the default with step control */
+    rows r = {.ncols = qd_sim_columns(qd_sim_setup_sim(s), o.method, NULL, 0)};
+    assert_true(r.ncols == 6); /* t, x, x', energy, E, E' */
+    qd_sim_stats st;
+    assert_int_equal(qd_sim_run(qd_sim_setup_sim(s), &o, sink, &r, &st, NULL), QD_OK);
+    /* one period: back where it started */
+    assert_true(fabs(r.last[0] - PI) < 1e-14);
+    assert_true(fabs(r.last[1] - 1) < 1e-9 && fabs(r.last[2] - 0.5) < 1e-9);
+    /* E = m x'^2/2 + k x^2/2 = (1/2)^2 + 4 at the start, kept */
+    assert_true(r.worst_e < 1e-9);
+    assert_true(r.worst_rate < 1e-8); /* dE/dt along the motion */
+    assert_int_equal(r.events, 1);
+    assert_true(fabs(r.event_t - (PI - atan(4)) / 2) < 1e-10);
+    qd_sim_setup_free(s);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
+/* H = p^2 - q: q' = 2p, p' = 1, from q = 0 with the momentum p = 1 given. */
+static void test_hamilton(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = qd_model_parse(ctx, "coordinates q\nmomenta p\nH = p^2 - q\n", NULL);
+    assert_int_equal(qd_sim_form_of(m, false), QD_SIM_FORM_HAMILTON);
+    qd_sim_setup *s = qd_sim_setup_new(ctx, m, false);
+    assert_non_null(s);
+    assert_int_equal(qd_sim_setup_initial(s, "p=1"), QD_OK);
+    qd_sim_setup_opts so = {.t_end = "1", .rtol = "1e-12"};
+    qd_sim_opts o;
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_OK);
+    assert_non_null(o.p0);
+    assert_true(o.p0[0] == 1);
+    double final[8];
+    qd_sim_stats st;
+    assert_int_equal(qd_sim_run(qd_sim_setup_sim(s), &o, NULL, NULL, &st, final), QD_OK);
+    assert_true(fabs(final[1] - 3) < 1e-10); /* q = 2 t + t^2 */
+    qd_sim_setup_free(s);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
+static qd_sim_setup *fresh(qd_ctx *ctx, qd_model **m) {
+    qd_ctx_clear_error(ctx);
+    *m = qd_model_parse(ctx, osc, NULL);
+    return qd_sim_setup_new(ctx, *m, false);
+}
+
+static void done(qd_sim_setup *s, qd_model *m) {
+    qd_sim_setup_free(s);
+    qd_model_free(m);
+}
+
+static void test_errors(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m;
+    /* a misspelt name in an output: at its place, the nearest suggested */
+    qd_sim_setup *s = fresh(ctx, &m);
+    assert_int_equal(qd_sim_setup_outputs(s, "x, 2*omgea + 1"), QD_ERR_ARG);
+    const qd_diag *d = qd_ctx_diag(ctx);
+    assert_true(d->located && d->offset == 5 && d->length == 5);
+    assert_non_null(strstr(d->message, "unknown name 'omgea'"));
+    assert_non_null(strstr(d->hint, "did you mean 'omega'?"));
+    done(s, m);
+    /* ... and in the initial state */
+    s = fresh(ctx, &m);
+    assert_int_equal(qd_sim_setup_initial(s, "x=1, omegaa=2"), QD_ERR_ARG);
+    assert_true(d->located && d->offset == 5 && d->length == 6);
+    assert_non_null(strstr(d->hint, "did you mean 'omega'?"));
+    done(s, m);
+    s = fresh(ctx, &m);
+    assert_int_equal(qd_sim_setup_initial(s, "x=1, x=2"), QD_ERR_ARG);
+    assert_non_null(strstr(d->message, "'x' is given twice"));
+    assert_true(d->offset == 5);
+    done(s, m);
+    /* a value in the parameters, misspelt: located in the whole text */
+    s = fresh(ctx, &m);
+    assert_int_equal(qd_sim_setup_initial(s, "x=mm"), QD_ERR_ARG);
+    assert_true(d->located && d->offset == 2);
+    done(s, m);
+    /* the grammar of events: the crossing first */
+    s = fresh(ctx, &m);
+    assert_int_equal(qd_sim_setup_event(s, "x > 0, x = 1", false), QD_ERR_ARG);
+    assert_non_null(strstr(d->message, "EXPR = EXPR"));
+    done(s, m);
+    /* options name their field */
+    s = fresh(ctx, &m);
+    qd_sim_opts o;
+    qd_sim_setup_opts so = {.t_end = "1", .dt = "-m"};
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_ERR_ARG);
+    assert_string_equal(d->name, "dt");
+    assert_non_null(strstr(d->message, "positive"));
+    done(s, m);
+    s = fresh(ctx, &m);
+    so = (qd_sim_setup_opts){.t_end = "1", .method = "verlet"};
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_ERR_ARG);
+    assert_string_equal(d->name, "dt");
+    done(s, m);
+    s = fresh(ctx, &m);
+    so = (qd_sim_setup_opts){.t_end = "-1"};
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_ERR_ARG);
+    assert_string_equal(d->name, "t_end");
+    done(s, m);
+    s = fresh(ctx, &m);
+    so = (qd_sim_setup_opts){.t_end = "1", .precision = 80};
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_ERR_ARG);
+    assert_string_equal(d->name, "precision");
+    done(s, m);
+    /* a fixed step given: the default is a fixed-step method (gl4: unconstrained, conservative) */
+    s = fresh(ctx, &m);
+    so = (qd_sim_setup_opts){.t_end = "1", .dt = "1/64"};
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_OK);
+    assert_int_equal(o.method, QD_SIM_GL4);
+    assert_true(o.dt == 1.0 / 64);
+    done(s, m);
+    qd_ctx_free(ctx);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_oscillator),
+        cmocka_unit_test(test_hamilton),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
