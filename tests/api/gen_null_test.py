@@ -38,6 +38,8 @@ NULLABLE = {
     'qd_eom_eval': {'M', 'R', 'f', 'lambda', 'qdd'},
     'qd_eom_prog_eval': {'M', 'R', 'f', 'lambda', 'qdd'},
     'qd_eom_reaction': {'residual'},
+    'qd_render_eom': {'o'},
+    'qd_render_speeds': {'o'},
     'qd_equilibria_find': {'opts'},
     'qd_constrained_equilibria_find': {'opts'},
     'qd_constrained_linear_about': {'indep'},

@@ -42,6 +42,7 @@
 #include "qdot/print.h"
 #include "qdot/read.h"
 #include "qdot/relativity.h"
+#include "qdot/render.h"
 #include "qdot/routh.h"
 #include "qdot/scatter.h"
 #include "qdot/scene.h"
@@ -3144,6 +3145,61 @@ static void null_relativity(void **state)
     teardown(&F);
 }
 
+static void null_render(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_render_format_name */
+    /* no pointer argument */
+    /* ---- qd_render_format_parse */
+    /* name NULL */
+    assert_true(qd_render_format_parse(NULL, (qd_render_format *)(void *)F.blob) == 0);
+    reset(&F);
+    /* out NULL */
+    assert_true(qd_render_format_parse("q", NULL) == 0);
+    reset(&F);
+    /* ---- qd_con_kind_name */
+    /* no pointer argument */
+    /* ---- qd_render_eom */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(NULL, F.model, F.eom, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(F.ctx, NULL, F.eom, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(F.ctx, F.model, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(F.ctx, F.model, F.eom, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_speeds */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(NULL, F.model, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(F.ctx, NULL, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(F.ctx, F.model, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(F.ctx, F.model, NULL, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_hamel */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamel(NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamel(F.ctx, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamel(F.ctx, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_routh(void **state)
 {
     (void)state;
@@ -4088,6 +4144,7 @@ int main(void)
         cmocka_unit_test(null_print),
         cmocka_unit_test(null_read),
         cmocka_unit_test(null_relativity),
+        cmocka_unit_test(null_render),
         cmocka_unit_test(null_routh),
         cmocka_unit_test(null_scatter),
         cmocka_unit_test(null_scene),

@@ -1,0 +1,99 @@
+/*
+ * qdot/render.h - whole systems printed: the equations M q'' = f of a model
+ * (qdot/mech.h) and its equations in generalized speeds (qdot/speeds.h) as
+ * text, LaTeX, JSON, SymPy or C, appended to a qd_buf (qdot/print.h).
+ *
+ * Text is for reading (entries in the model language's syntax); LaTeX is one
+ * align environment; JSON is for programs (expressions as strings in the text
+ * syntax, numbers as numbers at a state); SymPy is a script that runs as it
+ * is and rebuilds M and f (python: exec it, or see docs/python.md); C is one
+ * qd_print_c_block, so common subexpressions are shared across M and f.
+ * The names a SymPy or C rendering gives its results (M, f, q, qdd, A, b,
+ * lam, ...) get a trailing _ for each clash with a name of the model.
+ *
+ * `qdot eom` is these functions and a few lines of printing.
+ */
+#ifndef QDOT_RENDER_H
+#define QDOT_RENDER_H
+
+#include "mech.h"
+#include "model.h"
+#include "print.h"
+#include "speeds.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum qd_render_format {
+    QD_RENDER_TEXT,
+    QD_RENDER_LATEX,
+    QD_RENDER_JSON,
+    QD_RENDER_SYMPY,
+    QD_RENDER_C
+} qd_render_format;
+
+/* "text", "latex", "json", "sympy", "c"; NULL for another value. */
+QD_API const char *qd_render_format_name(qd_render_format f);
+/* The format of that name; false (and *out unchanged) for another name. */
+QD_API bool qd_render_format_parse(const char *name, qd_render_format *out);
+
+/* "holonomic", "integrable" or "nonholonomic". */
+QD_API const char *qd_con_kind_name(qd_con_kind k);
+
+typedef struct qd_render_opts {
+    /* The model's name in the renderings' headers ("model: NAME", the SymPy
+     * and C comments, JSON "model"); NULL: "model". */
+    const char *source;
+    /* At a state: nstate symbols with their values, as qd_eval takes them
+     * (every coordinate, velocity and t, and the parameters when a value
+     * other than the model's is wanted; a model with speeds: the speeds
+     * instead of the velocities).  The entries of M, f, q'', A, b, the
+     * multipliers, R = A^T lambda, T and the model's `reaction` statements
+     * (qd_eom_reaction) are then printed as numbers.  nstate 0: the
+     * expressions.  Text and JSON only with speeds. */
+    size_t nstate;
+    const qd_expr *const *syms;
+    const double *vals;
+    /* With speeds: the multipliers were asked for, so that the rendering
+     * says "none" for a model without constraints. */
+    bool multipliers;
+    /* Where a note goes (a `reaction` whose constraint was eliminated),
+     * one line each with its newline; NULL: dropped. */
+    qd_buf *notes;
+} qd_render_opts;
+
+/* Append e, the equations of m (qd_eom_derive_opts; solved or not), to out
+ * in fmt.  o NULL: symbolic, source "model".  At a state, a singular mass
+ * matrix is QD_ERR_SINGULAR with the state in the message; another failure
+ * to evaluate is its status with "cannot evaluate the equations at this
+ * state: ..." (both recorded in ctx). */
+QD_API qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                               const qd_render_opts *o, qd_render_format fmt, qd_buf *out);
+
+/* The same for the equations in generalized speeds: q' = W u + w, then
+ * M_u u' = f_u, the rates u' when solved (qd_speeds_solve), S and the
+ * multipliers when derived.  At a state (text and JSON; QD_ERR_ARG for the
+ * others): q', u' and the multipliers as numbers (qd_speeds_eval); a number
+ * that is not finite is QD_ERR_NUMERIC naming it. */
+QD_API qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
+                                  const qd_render_opts *o, qd_render_format fmt, qd_buf *out);
+
+/* Hamel's coefficients gamma_ikm of e (qd_speeds_hamel_coefficients): in
+ * text the nonzero ones by index names (a speed, then a constraint), in
+ * JSON {"indices": [...], "gamma": [i][k][m]}.  QD_ERR_ARG for another
+ * format. */
+QD_API qd_status qd_render_hamel(qd_ctx *ctx, const qd_speeds_eom *e, qd_render_format fmt,
+                                 qd_buf *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it. NULL is an
+ * accepted value, as documented at the function, for: qd_render_eom (o),
+ * qd_render_speeds (o). Exception: qd_render_format_parse(NULL, out) is
+ * false. */
+#endif
