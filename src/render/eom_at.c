@@ -129,11 +129,10 @@ static const qd_expr *at_state(qd__eom_view *v, const qd_render_opts *o, const q
 qd_status qd__eom_numbers(qd__eom_view *v, const qd_render_opts *o) {
     const qd_eom *e = v->e;
     size_t n = e->n, m = e->ncon, total = count_numbers(e);
-    if (!o->syms || !o->vals) {
-        qd_ctx_error(v->ctx, QD_ERR_ARG, "qd_render_eom: a state of %zu values without its "
-                     "symbols or values", o->nstate);
-        return QD_ERR_ARG;
-    }
+    qd_status st = qd__render_state(v->ctx, v->m, o, &v->full);
+    if (st != QD_OK)
+        return st;
+    o = &v->full;
     double *num = qd__calloc(v->ctx, total + 1, sizeof *num);
     v->numbers = qd__malloc(v->ctx, (total + 1) * sizeof *v->numbers);
     if (!num || !v->numbers) {
@@ -141,7 +140,7 @@ qd_status qd__eom_numbers(qd__eom_view *v, const qd_render_opts *o) {
         return QD_ERR_NOMEM;
     }
     double *A = num + n * n + 2 * n, *lambda = A + m * n + m;
-    qd_status st = qd_eom_eval(v->ctx, e, o->nstate, o->syms, o->vals, num, num + n * n,
+    st = qd_eom_eval(v->ctx, e, o->nstate, o->syms, o->vals, num, num + n * n,
                                num + n * n + n, lambda, lambda + m);
     if (st == QD_OK)
         st = constraint_rows(v, o, A);
@@ -156,7 +155,7 @@ qd_status qd__eom_numbers(qd__eom_view *v, const qd_render_opts *o) {
     qd__free(num);
     if (st != QD_OK)
         return failed(v, o, st);
-    v->at = o;
+    v->at = &v->full;
     v->M = v->numbers;
     v->f = v->numbers + n * n;
     v->acc = v->numbers + n * n + n;
@@ -168,6 +167,7 @@ qd_status qd__eom_numbers(qd__eom_view *v, const qd_render_opts *o) {
 }
 
 void qd__eom_view_free(qd__eom_view *v) {
+    qd__render_state_free(&v->full);
     qd__free(v->numbers);
     qd__free(v->react_name);
     qd__free(v->react);

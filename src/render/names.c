@@ -9,6 +9,13 @@
 #include <string.h>
 #include "qdot/json.h"
 #include "../base/args.h"
+#include "../base/mem.h"
+
+static double param_value(const qd_model *m, size_t i) {
+    double x;
+    qd_model_param_number(m, i, &x); /* NaN when it has none */
+    return x;
+}
 
 static bool model_uses(const qd_model *m, const char *name, size_t n,
                        const qd_expr *const *avoid) {
@@ -69,11 +76,6 @@ void qd__render_number(qd_buf *b, double x) {
     qd_buf_put_double(b, x == 0 ? 0.0 : x); /* -0 reads "0" */
 }
 
-static double param_value(const qd_model *m, size_t i) {
-    double x;
-    qd_model_param_number(m, i, &x); /* NaN when it has none */
-    return x;
-}
 
 void qd__render_params(qd_buf *b, const qd_model *m) {
     qd_buf_puts(b, "parameters:");
@@ -93,6 +95,46 @@ void qd__render_json_params(qd_json *j, const qd_model *m) {
         qd_json_number(j, param_value(m, i));
     }
     qd_json_end_object(j);
+}
+
+qd_status qd__render_state(qd_ctx *ctx, const qd_model *m, const qd_render_opts *o,
+                           qd_render_opts *full) {
+    *full = *o;
+    full->syms = NULL;
+    full->vals = NULL;
+    if (!o->syms || !o->vals) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "a state of %zu values without its symbols or values",
+                     o->nstate);
+        return QD_ERR_ARG;
+    }
+    size_t np = qd_model_nparams(m), n = o->nstate;
+    const qd_expr **syms = qd__malloc(ctx, (n + np + 1) * sizeof *syms);
+    double *vals = qd__malloc(ctx, (n + np + 1) * sizeof *vals);
+    if (!syms || !vals) {
+        qd__free(syms);
+        qd__free(vals);
+        return QD_ERR_NOMEM;
+    }
+    memcpy(syms, o->syms, n * sizeof *syms);
+    memcpy(vals, o->vals, n * sizeof *vals);
+    for (size_t i = 0; i < np; i++) {
+        const qd_expr *p = qd_model_param(m, i);
+        if (isnan(qd__render_value(o, p))) { /* not given (or given as NaN: qd_eval says so) */
+            syms[n] = p;
+            vals[n++] = param_value(m, i);
+        }
+    }
+    full->nstate = n;
+    full->syms = syms;
+    full->vals = vals;
+    return QD_OK;
+}
+
+void qd__render_state_free(qd_render_opts *full) {
+    qd__free((void *)full->syms);
+    qd__free((void *)full->vals);
+    full->syms = NULL;
+    full->vals = NULL;
 }
 
 double qd__render_value(const qd_render_opts *o, const qd_expr *sym) {

@@ -32,6 +32,13 @@ void qd__render_params(qd_buf *b, const qd_model *m);
 struct qd_json;
 void qd__render_json_params(struct qd_json *j, const qd_model *m);
 
+/* *full: o with each parameter of m that o's state does not name added at
+ * the model's value (qd_eval needs them all); its arrays are allocated
+ * (qd__render_state_free). */
+qd_status qd__render_state(qd_ctx *ctx, const qd_model *m, const qd_render_opts *o,
+                           qd_render_opts *full);
+void qd__render_state_free(qd_render_opts *full);
+
 /* The value of sym in a state (o->syms, o->vals); NaN when it is absent. */
 double qd__render_value(const qd_render_opts *o, const qd_expr *sym);
 
@@ -53,7 +60,8 @@ typedef struct qd__eom_view {
     const qd_expr **R;              /* n constraint forces A^T lambda (at a state), or NULL */
     const qd_expr *T[3];            /* T2, T1, T0; NULL when L was given without T */
     bool split;                     /* T1 or T0 is not identically zero */
-    const qd_render_opts *at;       /* at a state, else NULL */
+    const qd_render_opts *at;       /* at a state (&full), else NULL */
+    qd_render_opts full;            /* the state with every parameter */
     /* At a state: the model's `reaction` statements that could be computed
      * (qd_eom_reaction), 3 components each, and the relative residual of each. */
     size_t nreact;

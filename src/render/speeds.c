@@ -591,11 +591,6 @@ static qd_status finite_at(qd_ctx *ctx, const qd_speeds_eom *e, const double *nu
 /* q', u' and the multipliers at the state (qd_speeds_eval) into num. */
 static qd_status numbers(const view *v, const qd_render_opts *o, double *num) {
     const qd_speeds_eom *e = v->e;
-    if (!o->syms || !o->vals) {
-        qd_ctx_error(v->ctx, QD_ERR_ARG, "qd_render_speeds: a state of %zu values without its "
-                     "symbols or values", o->nstate);
-        return QD_ERR_ARG;
-    }
     qd_status st = qd_speeds_eval(v->ctx, e, o->nstate, o->syms, o->vals, num, num + e->n,
                                   e->mult ? num + e->n + e->m : NULL);
     if (st == QD_OK)
@@ -631,11 +626,14 @@ qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *
     }
     view v = {.ctx = ctx, .m = m, .source = o && o->source ? o->source : "model", .e = e,
               .multipliers = o && o->multipliers};
+    qd_render_opts full = {0};
     double *num = at ? qd__calloc(ctx, e->n + e->m + e->ncon + 1, sizeof *num) : NULL;
     qd_status st = at && !num ? QD_ERR_NOMEM : QD_OK;
+    if (st == QD_OK && at)
+        st = qd__render_state(ctx, m, o, &full);
     if (st == QD_OK && at) {
-        st = numbers(&v, o, num);
-        v.at = o;
+        st = numbers(&v, &full, num);
+        v.at = &full;
         v.qd = num;
         v.ud = num + e->n;
         v.lambda = e->mult ? num + e->n + e->m : NULL;
@@ -647,5 +645,6 @@ qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *
         st = QD_ERR_NOMEM;
     }
     qd__free(num);
+    qd__render_state_free(&full);
     return st;
 }
