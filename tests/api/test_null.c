@@ -2823,6 +2823,14 @@ static void null_print(void **state)
     /* b NULL */
     qd_buf_put_double(NULL, 1);
     reset(&F);
+    /* ---- qd_result_format */
+    /* out NULL */
+    assert_true(qd_result_format(NULL, 1, 1) == 0);
+    reset(&F);
+    /* ---- qd_buf_put_result */
+    /* b NULL */
+    qd_buf_put_result(NULL, 1, 1);
+    reset(&F);
     /* ---- qd_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_print(NULL, F.q, (qd_format){0}, &F.buf));
