@@ -18,7 +18,7 @@
  */
 #include "cli.h"
 
-#include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
@@ -28,19 +28,16 @@
 /* Symbolic accelerations larger than this (count_ops, per entry) are not
  * worth printing: M and f say the same in far less space. */
 #define SOLVE_MAX_OPS 2000
-#define MAX_SETS QD_CLI_MAX_LIST
 
 typedef struct eom_args {
+    const char *format, *method, *at;
+    bool solve, eliminate;
+    bool appell, multipliers, hamel_coef; /* speeds only */
+    cli_list sets;
+    /* from the above */
     const char *file;
     qd_render_format fmt;
-    bool solve, eliminate;
-    bool appell, multipliers; /* speeds only */
-    bool hamel_coef;          /* speeds only: --hamel-coefficients */
-    const char *method;       /* speeds only: as given, NULL when not */
     qd_speeds_method smethod;
-    const char *sets[MAX_SETS];
-    size_t nsets;
-    const char *at;
 } eom_args;
 
 typedef struct eom_run {
@@ -50,66 +47,44 @@ typedef struct eom_run {
     cli_state st;
 } eom_run;
 
-static const char usage_text[] =
-    "usage: qdot eom FILE [--format text|latex|json|sympy|c] [--solve] [--eliminate] "
-    "[--set NAME=VALUE]... [--at \"q=VALUE, q'=VALUE, t=VALUE\"] "
-    "[--method kane|appell|hamel] [--appell] [--multipliers] [--hamel-coefficients]";
+static const char *const formats[] = {"text", "latex", "json", "sympy", "c", NULL};
+static const char *const methods[] = {"kane", "appell", "hamel", NULL}; /* qd_speeds_method_name */
 
-/* --method NAME: one of the library's names (qd_speeds_method_name). */
-static int parse_method(const char *v, eom_args *a) {
-    const char *names[QD_SPEEDS_METHOD_COUNT + 1];
-    for (int k = 0; k < QD_SPEEDS_METHOD_COUNT; k++)
-        names[k] = qd_speeds_method_name((qd_speeds_method)k);
-    names[QD_SPEEDS_METHOD_COUNT] = NULL;
-    int k = 0, rc = cli_once("--method", &a->method, v);
-    if (rc == QD_EXIT_OK)
-        rc = cli_choice("--method", v, names, &k);
-    a->smethod = (qd_speeds_method)k;
-    return rc;
-}
+#define ARG(f) offsetof(eom_args, f)
+static const cli_opt eom_opts[] = {
+    {"--format", NULL, CLI_CHOICE, ARG(format), "F", "the output format", formats, NULL},
+    {"--solve", NULL, CLI_FLAG, ARG(solve), NULL,
+     "also the accelerations q'' = M^-1 f (or u') and the multipliers, symbolically", NULL, NULL},
+    {"--eliminate", NULL, CLI_FLAG, ARG(eliminate), NULL,
+     "substitute the holonomic constraints that can be solved for a coordinate", NULL, NULL},
+    {"--set", NULL, CLI_LIST, ARG(sets), "NAME=VALUE", "a parameter's value (an expression)",
+     NULL, NULL},
+    {"--at", NULL, CLI_TEXT, ARG(at), "STATE",
+     "the numbers at a state \"q=..., q'=..., t=...\" (with speeds: the speeds)", NULL, NULL},
+    {"--method", NULL, CLI_CHOICE, ARG(method), "M",
+     "speeds: the derivation, kane by default", methods, NULL},
+    {"--appell", NULL, CLI_FLAG, ARG(appell), NULL, "speeds: also the Gibbs-Appell function S",
+     NULL, NULL},
+    {"--multipliers", NULL, CLI_FLAG, ARG(multipliers), NULL,
+     "speeds: also the constraints' multipliers", NULL, NULL},
+    {"--hamel-coefficients", NULL, CLI_FLAG, ARG(hamel_coef), NULL,
+     "speeds: Hamel's coefficients gamma_ikm instead of the equations", NULL, NULL},
+    {0},
+};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    eom_args *a = data;
-    const char *v;
-    if (!strcmp(argv[*i], "--solve")) {
-        a->solve = true;
-    } else if (!strcmp(argv[*i], "--eliminate")) {
-        a->eliminate = true;
-    } else if (!strcmp(argv[*i], "--appell")) {
-        a->appell = true;
-    } else if (!strcmp(argv[*i], "--multipliers")) {
-        a->multipliers = true;
-    } else if (!strcmp(argv[*i], "--hamel-coefficients")) {
-        a->hamel_coef = true;
-    } else if ((v = cli_value(argc, argv, i, "--method"))) {
-        return parse_method(v, a);
-    } else if ((v = cli_value(argc, argv, i, "--format"))) {
-        if (!qd_render_format_parse(v, &a->fmt)) {
-            cli_diag_error("--format takes text, latex, json, sympy or c, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-    } else if ((v = cli_value(argc, argv, i, "--set"))) {
-        if (a->nsets == MAX_SETS) {
-            cli_diag_error("at most %d --set options", MAX_SETS);
-            return QD_EXIT_USAGE;
-        }
-        a->sets[a->nsets++] = v;
-    } else if ((v = cli_value(argc, argv, i, "--at"))) {
-        if (a->at) {
-            cli_diag_error("--at is given twice; name every value in one list");
-            return QD_EXIT_USAGE;
-        }
-        a->at = v;
-    } else {
-        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
+static const cli_spec eom_spec = {
+    "eom", "FILE [options]", "Lagrange's equations of a model, M q'' = f (or in its speeds)",
+    eom_opts, NULL, 1, 1, "FILE", false,
+};
 
 static int parse_args(int argc, char **argv, eom_args *a) {
     *a = (eom_args){.fmt = QD_RENDER_TEXT};
-    return cli_file_args(argc, argv, "eom", usage_text, &a->file, parse_option, a);
+    int rc = cli_parse(&eom_spec, argc, argv, a, &a->file);
+    if (rc == QD_EXIT_OK && a->format && !qd_render_format_parse(a->format, &a->fmt))
+        rc = QD_EXIT_FAIL; /* the table's choices are the library's names */
+    if (rc == QD_EXIT_OK && a->method && !qd_speeds_method_from_name(a->method, &a->smethod))
+        rc = QD_EXIT_FAIL;
+    return rc;
 }
 
 /* --solve: q'' (or u') symbolically; M and f stay when too large. */
@@ -266,14 +241,14 @@ int cli_cmd_eom(int argc, char **argv) {
             cli_diag_error("a field model takes --set and --format text|json only");
             return QD_EXIT_USAGE;
         }
-        return cli_field_eom(a.file, a.nsets, a.sets, a.fmt == QD_RENDER_JSON);
+        return cli_field_eom(a.file, a.sets.n, a.sets.items, a.fmt == QD_RENDER_JSON);
     }
     eom_run r = {.ctx = qd_ctx_new()};
     if (!r.ctx) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = cli_load(r.ctx, a.file, a.nsets, a.sets, true, &r.mf);
+    rc = cli_load(r.ctx, a.file, a.sets.n, a.sets.items, true, &r.mf);
     if (rc == QD_EXIT_OK)
         rc = qd_model_nspeeds(r.mf.model) ? run_speeds(&r, &a) : run_coords(&r, &a);
     cli_state_free(&r.st);
