@@ -86,6 +86,46 @@ QD_API qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speed
 QD_API qd_status qd_render_hamel(qd_ctx *ctx, const qd_speeds_eom *e, qd_render_format fmt,
                                  qd_buf *out);
 
+/* The verdict of `qdot check` from the model's numbers (qd_eom_audit at
+ * the parameters' values and the initial state): ok, or a certified "no"
+ * with its witness.  reason is a machine code next to the English message:
+ * "mass_not_positive_definite" (witness: the pivot of the mass matrix for
+ * coordinate `about`) or "constraint_not_real" (witness: the smallest
+ * residual the constraint `about` reaches near the initial state).
+ * statement: where the model says it, for qd_model_where ("T", "L", a
+ * coordinate, "constraint:NAME"); hint: what to look at.  off_constraint:
+ * the initial state is off a constraint (by residual, over 1e-4), which a
+ * run projects away: a note, not a "no".  No numbers to judge by (a
+ * parameter without a value) is ok, with judged false. */
+typedef struct qd_check_verdict {
+    bool ok, judged;
+    const char *reason; /* NULL when ok */
+    char message[320];
+    const char *about;  /* a coordinate or a constraint name */
+    double witness;
+    char statement[160];
+    const char *hint;
+    bool off_constraint;
+    double residual;
+    const char *residual_con;
+} qd_check_verdict;
+
+/* The verdict of e, the equations of m, into *v; QD_OK (also for a "no"),
+ * QD_ERR_NOMEM. */
+QD_API qd_status qd_check_verdict_of(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                     qd_check_verdict *v);
+
+/* The summary `qdot check` prints of a model whose verdict is v: in text
+ * the coordinates, degrees of freedom, parameters, what T, V, U, D and L
+ * depend on, forces, constraints and their kinds, impulsive statements,
+ * cyclic coordinates, time dependence and the energy integral, the size of
+ * the equations (nothing when v says "no": the caller shows the message at
+ * its statement); in JSON the same as data with "ok", and "reason",
+ * "message" and "witness" for a "no".  QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                 const qd_render_opts *o, const qd_check_verdict *v,
+                                 qd_render_format fmt, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -94,6 +134,6 @@ QD_API qd_status qd_render_hamel(qd_ctx *ctx, const qd_speeds_eom *e, qd_render_
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it. NULL is an
  * accepted value, as documented at the function, for: qd_render_eom (o),
- * qd_render_speeds (o). Exception: qd_render_format_parse(NULL, out) is
+ * qd_render_speeds (o), qd_render_check (o). Exception: qd_render_format_parse(NULL, out) is
  * false. */
 #endif

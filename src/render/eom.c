@@ -683,7 +683,7 @@ static qd_status render(const qd__eom_view *v, qd_render_format fmt, qd_buf *out
 
 qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                         const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
-    QD_ARGS_CTX(ctx, m && e && out);
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
     if ((unsigned)fmt > QD_RENDER_C) {
         qd_ctx_error(ctx, QD_ERR_ARG, "not a format of qd_render_format: %d", (int)fmt);
         return QD_ERR_ARG;

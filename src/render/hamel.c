@@ -63,7 +63,7 @@ static qd_status write_text(qd_ctx *ctx, const qd_speeds_eom *e, const qd_expr *
 
 qd_status qd_render_hamel(qd_ctx *ctx, const qd_speeds_eom *e, qd_render_format fmt,
                           qd_buf *out) {
-    QD_ARGS_CTX(ctx, e && out);
+    QD_ARGS_CTX(ctx, ctx && e && out);
     if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
         qd_ctx_error(ctx, QD_ERR_ARG, "Hamel's coefficients print as text or json");
         return QD_ERR_ARG;

@@ -618,7 +618,7 @@ static qd_status render(const view *v, qd_render_format fmt, qd_buf *out) {
 
 qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
                            const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
-    QD_ARGS_CTX(ctx, m && e && out);
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
     bool at = o && o->nstate;
     if ((unsigned)fmt > QD_RENDER_C || (at && fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON)) {
         qd_ctx_error(ctx, QD_ERR_ARG, "the equations in speeds at a state print as text or json");

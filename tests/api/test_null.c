@@ -3206,6 +3206,35 @@ static void null_render(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_hamel(F.ctx, NULL, (qd_render_format){0}, NULL));
     reset(&F);
+    /* ---- qd_check_verdict_of */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(NULL, F.model, F.eom, (qd_check_verdict *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(F.ctx, NULL, F.eom, (qd_check_verdict *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(F.ctx, F.model, NULL, (qd_check_verdict *)(void *)F.blob));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(F.ctx, F.model, F.eom, NULL));
+    reset(&F);
+    /* ---- qd_render_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(NULL, F.model, F.eom, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, NULL, F.eom, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, NULL, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* o NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, F.eom, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, F.eom, NULL, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
     teardown(&F);
 }
 
