@@ -5,45 +5,30 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/json.h"
 
-static const char usage_text[] =
-    "usage: qdot form EXPR --vars \"x, y, ...\" [--format text|json]";
-
 typedef struct form_args {
-    const char *text, *vars;
-    bool json;
+    const char *format, *vars, *text;
 } form_args;
 
-static int parse_args(int argc, char **argv, form_args *a) {
-    *a = (form_args){0};
-    for (int i = 0; i < argc; i++) {
-        const char *v;
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("%s\n", usage_text);
-            return -1;
-        }
-        if ((v = cli_value(argc, argv, &i, "--vars")) && !a->vars) {
-            a->vars = v;
-        } else if ((v = cli_value(argc, argv, &i, "--format")) &&
-                   (!strcmp(v, "text") || !strcmp(v, "json"))) {
-            a->json = !strcmp(v, "json");
-        } else if (!cli_is_option(argv[i]) && !a->text) {
-            a->text = argv[i];
-        } else {
-            cli_diag_error("bad, repeated or incomplete option '%s'\n%s", argv[i], usage_text);
-            return QD_EXIT_USAGE;
-        }
-    }
-    if (!a->text || !a->vars) {
-        cli_diag_error("%s\n%s", !a->text ? "the form EXPR is missing" : "--vars is missing",
-                       usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
+static const char *const formats[] = {"text", "json", NULL};
+
+static const cli_opt form_opts[] = {
+    {"--vars", NULL, CLI_TEXT, offsetof(form_args, vars), "\"x, y, ...\"",
+     "the variables of the form (required)", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(form_args, format), "F", "the output format",
+     formats, NULL},
+    {0},
+};
+
+static const cli_spec form_spec = {
+    "form", "EXPR --vars \"x, y, ...\" [--format F]",
+    "a quadratic form: its matrix, Lagrange's reduction to a sum of squares, its inertia",
+    form_opts, NULL, 1, 1, "EXPR", true,
+};
 
 /* The names of --vars as symbols (at most cap). */
 static int read_vars(qd_ctx *ctx, const char *list, const qd_expr **x, size_t cap, size_t *n) {
@@ -74,7 +59,7 @@ static int read_vars(qd_ctx *ctx, const char *list, const qd_expr **x, size_t ca
         i = j;
     }
     if (*n == 0) {
-        cli_diag_error("--vars names no variable\n%s", usage_text);
+        cli_diag_error("--vars names no variable");
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
@@ -186,10 +171,15 @@ static void write_json(qd_ctx *ctx, qd_json *j, const qd_expr *phi, const qd_qfo
 }
 
 int cli_cmd_form(int argc, char **argv) {
-    form_args a;
-    int rc = parse_args(argc, argv, &a);
+    form_args a = {0};
+    int rc = cli_parse(&form_spec, argc, argv, &a, &a.text);
     if (rc != QD_EXIT_OK)
-        return rc < 0 ? QD_EXIT_OK : rc;
+        return rc;
+    if (!a.vars) {
+        cli_diag_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
+        return QD_EXIT_USAGE;
+    }
+    bool json = a.format && !strcmp(a.format, "json");
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx) {
         cli_diag_error("out of memory");
@@ -209,14 +199,14 @@ int cli_cmd_form(int argc, char **argv) {
     if (f) {
         qd_buf b = QD_BUF_INIT;
         qd_json j;
-        if (a.json) {
+        if (json) {
             qd_json_init(&j, &b);
             write_json(ctx, &j, phi, f);
             qd_buf_puts(&b, "\n");
         } else {
             write_text(ctx, &b, phi, f);
         }
-        bool ok = !b.failed && (!a.json || qd_json_ok(&j));
+        bool ok = !b.failed && (!json || qd_json_ok(&j));
         if (ok)
             fputs(qd_buf_str(&b), stdout);
         else
