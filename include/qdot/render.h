@@ -20,6 +20,7 @@
 #include "model.h"
 #include "print.h"
 #include "speeds.h"
+#include "form.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -124,6 +125,15 @@ QD_API qd_status qd_check_verdict_of(qd_ctx *ctx, const qd_model *m, const qd_eo
  * "message" and "witness" for a "no".  QD_ERR_ARG for another format. */
 QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                  const qd_render_opts *o, const qd_check_verdict *v,
+                                 qd_render_format fmt, qd_buf *out);
+
+/* The reduction f of the quadratic form phi (qd_qform_reduce): in text the
+ * form, its symmetric matrix, Lagrange's sum of squares c_k y_k^2, the rank
+ * and Sylvester's inertia (or "undecided"); in JSON "variables", "form",
+ * "matrix", "coefficients", "linear_forms", "sum_of_squares", "paired",
+ * "rank", "inertia" ({"positive", "negative", "zero"} or null) and "kind".
+ * QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
                                  qd_render_format fmt, qd_buf *out);
 
 #ifdef __cplusplus

@@ -99,3 +99,11 @@ def test_euler_body_in_its_speeds_gives_eulers_equations():
     # Euler angles give gamma = -eps (Desloge ch. 68)
     gamma = s.hamel("json")["gamma"]
     assert gamma[0][1][2] == "-1" and gamma[0][2][1] == "1"
+
+
+def test_quadratic_form_printers():
+    # x^2 + 4xy + y^2 = (x + 2y)^2 - 3y^2: indefinite, inertia (1, 1, 0) (Sylvester)
+    f = qdot.quadratic_form("x^2 + 4*x*y + y^2", ["x", "y"])
+    assert f.json()["inertia"] == {"positive": 1, "negative": 1, "zero": 0}
+    assert f.json()["matrix"] == [["1", "2"], ["2", "1"]]
+    assert "n+ = 1, n- = 1, n0 = 0" in f.text()

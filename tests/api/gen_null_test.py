@@ -40,6 +40,7 @@ NULLABLE = {
     'qd_eom_reaction': {'residual'},
     'qd_render_eom': {'o'},
     'qd_render_speeds': {'o'},
+    'qd_render_check': {'o'},
     'qd_equilibria_find': {'opts'},
     'qd_constrained_equilibria_find': {'opts'},
     'qd_constrained_linear_about': {'indep'},

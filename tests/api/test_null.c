@@ -3287,11 +3287,24 @@ static void null_render(void **state)
     /* e NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, NULL, NULL, NULL, (qd_render_format){0}, &F.buf));
     reset(&F);
-    /* o NULL */
+    /* v NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, F.eom, NULL, NULL, (qd_render_format){0}, &F.buf));
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, F.eom, NULL, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_qform */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(NULL, F.q, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* phi NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, F.q, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, F.q, NULL, (qd_render_format){0}, NULL));
     reset(&F);
     teardown(&F);
 }
