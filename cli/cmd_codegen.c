@@ -11,6 +11,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -20,34 +21,31 @@
 #include "qdot/codegen.h"
 #include "qdot/speeds.h"
 
-#define MAX_SETS QD_CLI_MAX_LIST
 #define MAX_NAME 64
 
 typedef struct cg_run {
-    const char *file, *dir, *prefix, *sets[MAX_SETS];
-    size_t nsets;
+    const char *file, *dir, *prefix;
+    cli_list sets;
     bool eliminate;
     char name[MAX_NAME];
 } cg_run;
 
-static const char usage_text[] =
-    "usage: qdot codegen FILE [-o DIR] [--prefix NAME] [--set NAME=VALUE]... [--eliminate]";
+static const cli_opt cg_opts[] = {
+    {"--out", "-o", CLI_TEXT, offsetof(cg_run, dir), "DIR",
+     "the directory NAME.c and NAME.h are written to (made when missing; default .)", NULL, NULL},
+    {"--prefix", NULL, CLI_TEXT, offsetof(cg_run, prefix), "NAME",
+     "the C name of the files and functions (default: the file's base name)", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(cg_run, sets), "NAME=VALUE",
+     "a parameter's default value written into the file", NULL, NULL},
+    {"--eliminate", NULL, CLI_FLAG, offsetof(cg_run, eliminate), NULL,
+     "substitute the holonomic constraints that can be solved for a coordinate", NULL, NULL},
+    {0},
+};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    cg_run *r = data;
-    const char *v;
-    if (!strcmp(argv[*i], "--eliminate")) {
-        r->eliminate = true;
-        return QD_EXIT_OK;
-    }
-    if ((v = cli_value(argc, argv, i, "-o")))
-        return cli_once("-o", &r->dir, v);
-    if ((v = cli_value(argc, argv, i, "--prefix")))
-        return cli_once("--prefix", &r->prefix, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", r->sets, &r->nsets, MAX_SETS, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_spec cg_spec = {
+    "codegen", "FILE [-o DIR] [options]", "self-contained C for the right-hand side",
+    cg_opts, NULL, 1, 1, "FILE", false,
+};
 
 /* The file's base name without extension, as a C identifier. */
 static void default_name(cg_run *r) {
@@ -110,7 +108,7 @@ static int generate_speeds(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c
 
 static int generate(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_eom **e, qd_buf *c,
                     qd_buf *h) {
-    int rc = cli_load(ctx, r->file, r->nsets, r->sets, false, mf);
+    int rc = cli_load(ctx, r->file, r->sets.n, r->sets.items, false, mf);
     if (rc != QD_EXIT_OK)
         return rc;
     if (qd_model_nspeeds(mf->model))
@@ -146,7 +144,7 @@ static int run(qd_ctx *ctx, cg_run *r) {
 
 int cli_cmd_codegen(int argc, char **argv) {
     cg_run r = {0};
-    int rc = cli_file_args(argc, argv, "codegen", usage_text, &r.file, parse_option, &r);
+    int rc = cli_parse(&cg_spec, argc, argv, &r, &r.file);
     if (rc != QD_EXIT_OK)
         return rc;
     if (r.prefix) {

@@ -6,52 +6,33 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
 #include <string.h>
 
+#define MAX_VARS 16
+
 typedef struct expr_args {
-    const char *text;
-    const char *vars[16];
-    size_t nvars;
-    qd_format fmt;
+    const char *format;
+    const char *pos[1 + MAX_VARS]; /* EXPR, then the VARs of diff */
 } expr_args;
 
-/* EXPR [VAR...] [--format F]; returns an exit status, QD_EXIT_OK to go on. */
-static int parse_args(int argc, char **argv, expr_args *a, size_t min_vars, const char *cmd) {
-    a->text = NULL;
-    a->nvars = 0;
-    a->fmt = QD_FMT_TEXT;
-    bool has_format = false;
-    for (int i = 0; i < argc; i++) {
-        if (!strcmp(argv[i], "--format")) {
-            if (has_format) {
-                cli_diag_error("--format is given twice; give it once");
-                return QD_EXIT_USAGE;
-            }
-            has_format = true;
-            if (i + 1 >= argc || !cli_format(argv[i + 1], &a->fmt)) {
-                cli_diag_error("--format takes text, latex, c or sympy");
-                return QD_EXIT_USAGE;
-            }
-            i++;
-        } else if (!a->text) {
-            a->text = argv[i];
-        } else if (a->nvars < 16) {
-            a->vars[a->nvars++] = argv[i];
-        } else {
-            cli_diag_error("too many arguments to '%s'", cmd);
-            return QD_EXIT_USAGE;
-        }
-    }
-    if (!a->text || a->nvars < min_vars) {
-        cli_diag_error("usage: qdot %s EXPR%s [--format F]", cmd, min_vars ? " VAR [VAR...]" : "");
-        return QD_EXIT_USAGE;
-    }
-    if (!min_vars && a->nvars) {
-        cli_diag_error("'%s' takes one expression; unexpected '%s'", cmd, a->vars[0]);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
+static const char *const formats[] = {"text", "latex", "c", "sympy", NULL};
+
+static const cli_opt expr_opts[] = {
+    {"--format", NULL, CLI_CHOICE, offsetof(expr_args, format), "F",
+     "how the result is printed", formats, NULL},
+    {0},
+};
+
+#define SPEC(name, syn, summary, maxpos) \
+    {name, syn, summary, expr_opts, NULL, maxpos > 1 ? 2 : 1, maxpos, "EXPR", true}
+static const cli_spec specs[] = {
+    SPEC("diff", "EXPR VAR [VAR...] [--format F]",
+         "partial derivative of EXPR (repeated for each VAR: a name or a rate r')", 1 + MAX_VARS),
+    SPEC("expand", "EXPR [--format F]", "distribute products and powers of sums", 1),
+    SPEC("simplify", "EXPR [--format F]", "expand, trigonometric identities, cancel, factor", 1),
+    SPEC("print", "EXPR [--format F]", "print an expression in canonical form", 1),
+};
 
 static int emit(qd_ctx *ctx, const qd_expr *e, qd_format fmt) {
     if (!e)
@@ -68,31 +49,38 @@ static int emit(qd_ctx *ctx, const qd_expr *e, qd_format fmt) {
 
 typedef const qd_expr *(*unary_op)(qd_ctx *, const qd_expr *);
 
-static int run(int argc, char **argv, const char *cmd, size_t min_vars, unary_op op) {
-    expr_args a;
-    int rc = parse_args(argc, argv, &a, min_vars, cmd);
+static int run(int argc, char **argv, const cli_spec *spec, unary_op op) {
+    expr_args a = {0};
+    int rc = cli_parse(spec, argc, argv, &a, a.pos);
     if (rc != QD_EXIT_OK)
         return rc;
+    qd_format fmt = QD_FMT_TEXT;
+    if (a.format)
+        cli_format(a.format, &fmt);
+    const char *text = a.pos[0];
+    size_t nvars = 0;
+    while (nvars < MAX_VARS && a.pos[1 + nvars])
+        nvars++;
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     qd_diag err;
-    const qd_expr *e = qd_read(ctx, a.text, NULL, &err);
+    const qd_expr *e = qd_read(ctx, text, NULL, &err);
     if (!e) {
-        cli_diag_read("<expression>", a.text, &err);
+        cli_diag_read("<expression>", text, &err);
         qd_ctx_free(ctx);
         return QD_EXIT_USAGE;
     }
     const qd_expr *e0 = e;
-    for (size_t i = 0; i < a.nvars && e; i++) {
+    for (size_t i = 0; i < nvars && e; i++) {
         /* a name or a rate: r, r', theta'' (read against the expression's symbols) */
         qd_read_opts known = {.new_symbols = false};
-        const qd_expr *v = qd_read(ctx, a.vars[i], &known, NULL);
+        const qd_expr *v = qd_read(ctx, a.pos[1 + i], &known, NULL);
         if (!v || qd_expr_kind(v) != QD_SYMBOL || !qd_has(e0, v)) {
             qd_ctx_clear_error(ctx);
-            cli_diag_error("'%s' does not occur in the expression", a.vars[i]);
+            cli_diag_error("'%s' does not occur in the expression", a.pos[1 + i]);
             qd_ctx_free(ctx);
             return QD_EXIT_USAGE;
         }
@@ -100,12 +88,12 @@ static int run(int argc, char **argv, const char *cmd, size_t min_vars, unary_op
     }
     if (op)
         e = op(ctx, e);
-    rc = emit(ctx, e, a.fmt);
+    rc = emit(ctx, e, fmt);
     qd_ctx_free(ctx);
     return rc;
 }
 
-int cli_cmd_diff(int argc, char **argv) { return run(argc, argv, "diff", 1, NULL); }
-int cli_cmd_expand(int argc, char **argv) { return run(argc, argv, "expand", 0, qd_expand); }
-int cli_cmd_simplify(int argc, char **argv) { return run(argc, argv, "simplify", 0, qd_simplify); }
-int cli_cmd_print(int argc, char **argv) { return run(argc, argv, "print", 0, NULL); }
+int cli_cmd_diff(int argc, char **argv) { return run(argc, argv, &specs[0], NULL); }
+int cli_cmd_expand(int argc, char **argv) { return run(argc, argv, &specs[1], qd_expand); }
+int cli_cmd_simplify(int argc, char **argv) { return run(argc, argv, &specs[2], qd_simplify); }
+int cli_cmd_print(int argc, char **argv) { return run(argc, argv, &specs[3], NULL); }

@@ -107,7 +107,7 @@ static void put_shape(qd_buf *b, const qd_field *f, const qd_field_mode *md) {
         return;
     }
     qd_buf_puts(b, md->shape == QD_FIELD_SHAPE_SIN ? "sin(" : "cos(");
-    qd_buf_put_double(b, md->k);
+    qd_buf_put_double(b, md->k); /* an expression one may evaluate: every digit */
     if (a == 0)
         qd_buf_printf(b, "*%s)", qd_field_space(f));
     else {
@@ -134,20 +134,27 @@ static void modes_text(qd_ctx *ctx, const qd_field *f, const qd_field_modes *r, 
                       r->converged ? "every error estimate is below the tolerance"
                                    : "NOT CONVERGED: the estimates exceed the tolerance");
     qd_buf_puts(b, r->exact ? "mode  omega  omega^2  shape\n" : "mode  omega  omega^2  error\n");
+    /* computed results: the digit rule of qd_result_format, each column
+     * against its largest entry (an error against the frequencies) */
+    double w = 0, w2 = 0;
+    for (size_t i = 0; i < r->n; i++) {
+        w = fmax(w, r->mode[i].omega2 >= 0 ? r->mode[i].omega : 0);
+        w2 = fmax(w2, fabs(r->mode[i].omega2));
+    }
     for (size_t i = 0; i < r->n; i++) {
         const qd_field_mode *md = &r->mode[i];
         qd_buf_printf(b, "%zu  ", i + 1);
         if (md->omega2 >= 0)
-            qd_buf_put_double(b, md->omega);
+            qd_buf_put_result(b, md->omega, w);
         else
             qd_buf_puts(b, "unstable");
         qd_buf_puts(b, "  ");
-        qd_buf_put_double(b, md->omega2);
+        qd_buf_put_result(b, md->omega2, w2);
         qd_buf_puts(b, "  ");
         if (r->exact)
             put_shape(b, f, md);
         else
-            qd_buf_put_double(b, md->error);
+            qd_buf_put_result(b, md->error, w);
         qd_buf_puts(b, "\n");
     }
     (void)tol;

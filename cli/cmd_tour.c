@@ -24,12 +24,15 @@ static const qd_expr *read_expr(qd_ctx *ctx, const char *text) {
     return e;
 }
 
+static const cli_opt tour_opts[] = {{0}};
+static const cli_spec tour_spec = {
+    "tour", "", "a one-minute tour of the symbolic kernel", tour_opts, NULL, 0, 0, NULL, false,
+};
+
 int cli_cmd_tour(int argc, char **argv) {
-    (void)argv;
-    if (argc) {
-        cli_diag_error("'tour' takes no arguments");
-        return QD_EXIT_USAGE;
-    }
+    int rc = cli_parse(&tour_spec, argc, argv, NULL, NULL);
+    if (rc != QD_EXIT_OK)
+        return rc;
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx)
         return QD_EXIT_FAIL;

@@ -9,16 +9,16 @@
 #include <string.h>
 
 static const cli_cmd commands[] = {
-    {"tour", "", "a one-minute tour of the symbolic kernel", cli_cmd_tour, false},
+    {"tour", "", "a one-minute tour of the symbolic kernel", cli_cmd_tour, true},
     {"diff", "EXPR VAR [VAR...] [--format F]", "partial derivative (repeated for each VAR)",
-     cli_cmd_diff, false},
-    {"expand", "EXPR [--format F]", "distribute products and powers of sums", cli_cmd_expand, false},
+     cli_cmd_diff, true},
+    {"expand", "EXPR [--format F]", "distribute products and powers of sums", cli_cmd_expand, true},
     {"simplify", "EXPR [--format F]", "expand, trigonometric identities, cancel, factor",
-     cli_cmd_simplify, false},
-    {"print", "EXPR [--format F]", "print an expression in canonical form", cli_cmd_print, false},
+     cli_cmd_simplify, true},
+    {"print", "EXPR [--format F]", "print an expression in canonical form", cli_cmd_print, true},
     {"eom", "FILE [--format F] [OPTIONS]",
      "Lagrange's equations of a model, M q'' = f", cli_cmd_eom, true},
-    {"check", "FILE", "validate a model and summarize it", cli_cmd_check, false},
+    {"check", "FILE [--format F]", "validate a model and summarize it", cli_cmd_check, true},
     {"hamiltonian", "FILE [--format F] [--at ...]", "momenta, H and Hamilton's equations",
      cli_cmd_hamiltonian, true},
     {"form", "EXPR --vars \"x, y\" [--format F]", "a quadratic form: sum of squares, inertia",
@@ -79,7 +79,6 @@ static void usage(FILE *out) {
         fprintf(out, "  %-11s %-34s %s\n", commands[i].name, commands[i].args, commands[i].summary);
     fprintf(out, "\nformats (--format): text (default), json, latex, sympy, c, csv: each command\n"
                  "takes the ones that fit it (qdot COMMAND --help)\n"
-                 "eom options: --solve, --eliminate, --set NAME=VALUE, --at \"q=..., q'=..., t=...\"\n"
                  "Expressions use the model language's syntax: x^2*sin(q) + q'/2.\n"
                  "See docs/cli.md and docs/language.md.\n");
 }
@@ -117,8 +116,8 @@ static int run(int argc, char **argv) {
     }
     for (size_t i = 0; i < NCOMMANDS; i++)
         if (!strcmp(argv[1], commands[i].name)) {
-            /* `qdot CMD --help`: the commands on a model file print their own
-             * usage (args.c); the others their line of the table */
+            /* `qdot CMD --help`: a command with an option table prints its
+             * usage from it (cli_usage); the others their line of this table */
             for (int a = 2; a < argc && !commands[i].own_help; a++)
                 if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) {
                     printf("usage: qdot %s %s\n%s\nSee docs/cli.md.\n", commands[i].name,

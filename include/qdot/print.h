@@ -46,6 +46,26 @@ QD_API size_t qd_double_format(char *out, double x);
 /* The same appended to b. */
 QD_API void qd_buf_put_double(qd_buf *b, double x);
 
+/* The one digit rule for printing numbers (docs/design.md, "printed
+ * numbers"; issue 31).  A number a program may read back (JSON, CSV, a value
+ * the user gave, an expression evaluated at a state) keeps every digit:
+ * qd_double_format.  A computed result shown to a reader (a root, an
+ * eigenvalue or frequency, an iterated or extrapolated value) is printed by
+ * qd_result_format: QD_RESULT_DIGITS significant digits (%.12g), and 0 when
+ * |x| <= QD_RESULT_ZERO * scale, that is below the last digit shown of the
+ * largest number printed with it, where only round-off lives (an eigenvalue
+ * whose real part is 1e-17 against an imaginary part of 3 is on the axis).
+ * scale is the magnitude of the numbers printed together (max |s| for the
+ * parts of eigenvalues, max |q| for the coordinates of a point); scale <= 0
+ * or NaN is 1, for a number of order one on its own.  -0 prints as 0,
+ * infinities and NaN as printf writes them.  Returns the length written to
+ * out (QD_DOUBLE_MAX bytes with the NUL).  Pure: any thread may call it. */
+#define QD_RESULT_DIGITS 12
+#define QD_RESULT_ZERO 1e-12
+QD_API size_t qd_result_format(char *out, double x, double scale);
+/* The same appended to b. */
+QD_API void qd_buf_put_result(qd_buf *b, double x, double scale);
+
 typedef enum qd_format {
     QD_FMT_TEXT,  /* the model language's syntax; qd_parse reads it back to the same node */
     QD_FMT_LATEX, /* q' as \dot{q}, q'' as \ddot{q} */

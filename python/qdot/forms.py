@@ -3,7 +3,8 @@
 """qdot.quadratic_form(expr, variables): the reduction of a quadratic form."""
 
 import ctypes
-from ctypes import POINTER, Structure, byref, c_bool, c_char_p, c_size_t, c_void_p
+import json
+from ctypes import POINTER, Structure, byref, c_bool, c_char_p, c_int, c_size_t, c_void_p
 
 from ._lib import lib, Buf, Diag, buf_text, exprs, QD_FMT_TEXT
 from ._core import Error
@@ -20,7 +21,8 @@ for _name, _res, _args in (
         ("qd_qform_reduce", POINTER(_QForm), [c_void_p, c_void_p, c_size_t, POINTER(c_void_p)]),
         ("qd_qform_free", None, [POINTER(_QForm)]),
         ("qd_symbol", c_void_p, [c_void_p, c_char_p]),
-        ("qd_ctx_message", c_char_p, [c_void_p])):
+        ("qd_ctx_message", c_char_p, [c_void_p]),
+        ("qd_render_qform", c_int, [c_void_p, c_void_p, POINTER(_QForm), c_int, POINTER(Buf)])):
     getattr(lib, _name).restype = _res
     getattr(lib, _name).argtypes = _args
 
@@ -35,6 +37,16 @@ class QuadraticForm:
         self.matrix, self.coefficients, self.linear_forms = matrix, coefficients, linear_forms
         self.inertia, self.kind, self.paired = inertia, kind, paired
         self.rank = len(coefficients)
+
+    _printed = ("", "{}")  # (text, JSON) of qd_render_qform, set by quadratic_form
+
+    def text(self):
+        """The reduction as `qdot form` prints it (qdot/render.h)."""
+        return self._printed[0]
+
+    def json(self):
+        """The reduction as a dict (`qdot form --format json`)."""
+        return json.loads(self._printed[1])
 
     def __repr__(self):
         return "QuadraticForm(%s, inertia=%r)" % (" + ".join(
@@ -71,7 +83,16 @@ def quadratic_form(expr, variables):
             lins = [text(q.lin[k]) for k in range(q.nsq)]
             inertia = (q.npos, q.nneg, q.nzero) if q.decided else None
             kind = q.kind.decode() if q.kind else None
-            return QuadraticForm(matrix, coefs, lins, inertia, kind, bool(q.paired))
+            out = QuadraticForm(matrix, coefs, lins, inertia, kind, bool(q.paired))
+            printed = []
+            for fmt in (0, 2):  # QD_RENDER_TEXT, QD_RENDER_JSON
+                buf = Buf()
+                if lib.qd_render_qform(ctx, phi, f, fmt, byref(buf)) != 0:
+                    lib.qd_buf_free(byref(buf))
+                    raise Error(lib.qd_ctx_message(ctx).decode())
+                printed.append(buf_text(buf))
+            out._printed = tuple(printed)
+            return out
         finally:
             lib.qd_qform_free(f)
     finally:

@@ -7,18 +7,73 @@
 """qdot.Model and the symbolic results it returns."""
 
 import ctypes
-from ctypes import byref
+import json as _json
+from ctypes import POINTER, Structure, byref, c_bool, c_char_p, c_double, c_int, c_size_t, c_void_p
 
 import numpy as np
 
 from ._core import Core, Error, ModelError, name_of
-from ._lib import (lib, ScenePoint, SceneShape, EquilibriaOut, EquilibriumChoice, Linear, ModesResult, exprs,
-                   doubles, QD_FMT_SYMPY)
+from ._lib import (lib, Buf, ScenePoint, SceneShape, EquilibriaOut, EquilibriumChoice, Linear,
+                   ModesResult, buf_text, exprs, doubles, QD_FMT_SYMPY)
 from . import sim as _sim
 from . import control as _control
 
 
-class Equations:
+class _RenderOpts(Structure):
+    """qd_render_opts (qdot/render.h)."""
+    _fields_ = [("source", c_char_p), ("nstate", c_size_t), ("syms", POINTER(c_void_p)),
+                ("vals", POINTER(c_double)), ("multipliers", c_bool), ("notes", POINTER(Buf))]
+
+
+class _SpeedsOpts(Structure):
+    """qd_speeds_opts (qdot/speeds.h)."""
+    _fields_ = [("method", c_int), ("appell", c_bool), ("multipliers", c_bool)]
+
+
+for _name, _res, _args in (
+        ("qd_render_eom", c_int, [c_void_p, c_void_p, c_void_p, POINTER(_RenderOpts), c_int,
+                                  POINTER(Buf)]),
+        ("qd_render_speeds", c_int, [c_void_p, c_void_p, c_void_p, POINTER(_RenderOpts), c_int,
+                                     POINTER(Buf)]),
+        ("qd_render_hamel", c_int, [c_void_p, c_void_p, c_int, POINTER(Buf)]),
+        ("qd_render_format_parse", c_bool, [c_char_p, POINTER(c_int)]),
+        ("qd_speeds_method_from_name", c_bool, [c_char_p, POINTER(c_int)])):
+    getattr(lib, _name).restype = _res
+    getattr(lib, _name).argtypes = _args
+
+
+class _Printed:
+    """The renderings of a whole system (qdot/render.h), as `qdot eom
+    --format F` prints them: text(), latex(), sympy_text(), c_code() and
+    json() (a dict).  at={name: value} (text and JSON): the numbers at that
+    state, the names as `qdot eom --at` takes them (q, q', t, parameters;
+    with speeds the speeds), the others at the model's initial values."""
+
+    _print = None  # set by Model: (format name, at) -> str
+
+    def text(self, at=None):
+        """The equations as `qdot eom` prints them."""
+        return self._print("text", at)
+
+    def latex(self):
+        """One LaTeX align environment."""
+        return self._print("latex", None)
+
+    def sympy_text(self):
+        """A Python script for SymPy that rebuilds the equations (exec it:
+        its M, f, ... are SymPy matrices)."""
+        return self._print("sympy", None)
+
+    def c_code(self):
+        """One C block assigning M, f, ... (common subexpressions shared)."""
+        return self._print("c", None)
+
+    def json(self, at=None):
+        """The equations as a dict (`qdot eom --format json`)."""
+        return _json.loads(self._print("json", at))
+
+
+class Equations(_Printed):
     """Lagrange's equations M(q, q', t) q'' = f(q, q', t) (qdot/mech.h).
 
     coordinates: the names of q in order; M: n lists of n entries; f: n
@@ -36,6 +91,21 @@ class Equations:
 
     def __repr__(self):
         return "Equations(coordinates=%r, M=%r, f=%r)" % (self.coordinates, self.M, self.f)
+
+
+class SpeedsEquations(_Printed):
+    """The equations in generalized speeds (qdot/speeds.h): q' = W u + w
+    (kinematics: one expression per coordinate) and M_u u' = f_u.  Entries
+    are strings in the model language; coordinates and speeds are names.
+    The printers of _Printed give the whole system; hamel() Hamel's
+    coefficients as text."""
+
+    def __init__(self, coordinates, speeds, kinematics, M, f, method):
+        self.coordinates, self.speeds = coordinates, speeds
+        self.kinematics, self.M, self.f, self.method = kinematics, M, f, method
+
+    def __repr__(self):
+        return "SpeedsEquations(speeds=%r, method=%r)" % (self.speeds, self.method)
 
 
 class Hamiltonian:
@@ -103,6 +173,75 @@ class Modes(list):
         self.conservative = conservative
         self.eigenvalues = eigenvalues
         self.stable = stable
+
+
+class _SpeedsHandle:
+    """A qd_speeds_eom kept while a SpeedsEquations uses it."""
+
+    def __init__(self, core, se):
+        self.core, self.se = core, se
+        e = ctypes.cast(se, POINTER(_SpeedsEom)).contents
+        self.speeds = [e.u[r] for r in range(e.m)]
+
+    def __del__(self):
+        if self.se:
+            lib.qd_speeds_eom_free(self.se)
+            self.se = None
+
+
+class _SpeedsEom(Structure):
+    """The head of qd_speeds_eom (qdot/speeds.h) up to f."""
+    _fields_ = [("n", c_size_t), ("m", c_size_t), ("ncon", c_size_t),
+                ("q", POINTER(c_void_p)), ("qd", POINTER(c_void_p)),
+                ("u", POINTER(c_void_p)), ("ud", POINTER(c_void_p)),
+                ("def_", POINTER(c_void_p)), ("W", POINTER(c_void_p)), ("w", POINTER(c_void_p)),
+                ("kin", POINTER(c_void_p)), ("M", POINTER(c_void_p)), ("f", POINTER(c_void_p))]
+
+
+def _speeds_result(core, se, method):
+    """A SpeedsEquations of the qd_speeds_eom se (strings in the model language)."""
+    e = ctypes.cast(se, POINTER(_SpeedsEom)).contents
+    n, m = e.n, e.m
+    text = core.text_of
+    return SpeedsEquations([name_of(e.q[j]) for j in range(n)],
+                           [name_of(e.u[r]) for r in range(m)],
+                           [text(e.kin[j]) for j in range(n)],
+                           [[text(e.M[r * m + k]) for k in range(m)] for r in range(m)],
+                           [text(e.f[r]) for r in range(m)], method)
+
+
+def _state_at(core, at, extra):
+    """syms, vals of the model's initial state (the speeds in extra at 0)
+    with the values of at put in, by name."""
+    syms, vals = core.state()
+    syms, vals = syms + list(extra), vals + [0.0] * len(extra)
+    index = {core.text_of(s): i for i, s in enumerate(syms)}
+    for name, value in at.items():
+        if name not in index:
+            raise Error("at: '%s' is not a name of the state (%s)" % (name, ", ".join(index)))
+        vals[index[name]] = float(value)
+    return syms, vals
+
+
+def _rendered(core, call):
+    """The text call(buf) writes, or the context's error raised."""
+    buf = Buf()
+    st = call(byref(buf))
+    if st != 0:
+        lib.qd_buf_free(byref(buf))
+        core.check(st)
+    return buf_text(buf)
+
+
+def _render(core, fn, e, fmt, at, extra, multipliers=False):
+    """fn (qd_render_eom or qd_render_speeds) of e in format fmt."""
+    k = c_int()
+    lib.qd_render_format_parse(fmt.encode(), byref(k))
+    opts = _RenderOpts(core.file.encode(), 0, None, None, bool(multipliers), None)
+    if at:
+        syms, vals = _state_at(core, at, extra)
+        opts.nstate, opts.syms, opts.vals = len(syms), exprs(syms), doubles(vals)
+    return _rendered(core, lambda buf: fn(core.ctx, core.model, e, byref(opts), k.value, buf))
 
 
 def _sympy_namespace(core, extra=()):
@@ -208,7 +347,37 @@ class Model:
             import sympy as sp
             M, f = sp.Matrix(M), sp.Matrix(f)
         cons = [e.con[k].name.decode() for k in range(e.ncon)]
-        return Equations([name_of(e.q[j]) for j in range(n)], M, f, cons)
+        out = Equations([name_of(e.q[j]) for j in range(n)], M, f, cons)
+        out._print = lambda fmt, at: _render(core, lib.qd_render_eom, core.eom_ptr(), fmt, at, [])
+        return out
+
+    def speeds_eom(self, method="kane", appell=False, multipliers=False):
+        """The equations in the model's generalized speeds (a model with a
+        `speeds` statement; `qdot eom` on it): a SpeedsEquations, derived by
+        method "kane", "appell" or "hamel"; appell: also the Gibbs-Appell
+        function S; multipliers: also the constraints' multipliers."""
+        core = self._core
+        k = c_int()
+        if not isinstance(method, str) or not lib.qd_speeds_method_from_name(method.encode(),
+                                                                               byref(k)):
+            raise Error("speeds_eom: method is kane, appell or hamel, not %r" % (method,))
+        opts = _SpeedsOpts(k.value, bool(appell), bool(multipliers))
+        se = lib.qd_speeds_derive(core.ctx, core.model, byref(opts))
+        if not se:
+            raise core.error(cls=ModelError)
+        ptr = _SpeedsHandle(core, se)  # freed with the result
+        out = _speeds_result(core, se, method)
+        out._handle = ptr
+        out._print = lambda fmt, at: _render(
+            core, lib.qd_render_speeds, ptr.se, fmt, at, ptr.speeds, multipliers=multipliers)
+
+        def hamel(fmt="text"):
+            """Hamel's coefficients gamma_ikm (text, or a dict for "json")."""
+            text = _rendered(core, lambda buf: lib.qd_render_hamel(
+                core.ctx, ptr.se, 0 if fmt == "text" else 2, buf))
+            return text if fmt == "text" else _json.loads(text)
+        out.hamel = hamel
+        return out
 
     def metric(self, sympy=False):
         """The metric of the coordinates (qdot/metric.h, `qdot metric`): an

@@ -43,6 +43,7 @@
 #include "qdot/print.h"
 #include "qdot/read.h"
 #include "qdot/relativity.h"
+#include "qdot/render.h"
 #include "qdot/routh.h"
 #include "qdot/scatter.h"
 #include "qdot/scene.h"
@@ -3137,6 +3138,14 @@ static void null_print(void **state)
     /* b NULL */
     qd_buf_put_double(NULL, 1);
     reset(&F);
+    /* ---- qd_result_format */
+    /* out NULL */
+    assert_true(qd_result_format(NULL, 1, 1) == 0);
+    reset(&F);
+    /* ---- qd_buf_put_result */
+    /* b NULL */
+    qd_buf_put_result(NULL, 1, 1);
+    reset(&F);
     /* ---- qd_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_print(NULL, F.q, (qd_format){0}, &F.buf));
@@ -3561,6 +3570,103 @@ static void null_relativity(void **state)
     reset(&F);
     /* b NULL */
     assert_int_equal(QD_ERR_ARG, qd_collide_render(F.ctx, NULL, NULL, false, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_render(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_render_format_name */
+    /* no pointer argument */
+    /* ---- qd_render_format_parse */
+    /* name NULL */
+    assert_true(qd_render_format_parse(NULL, (qd_render_format *)(void *)F.blob) == 0);
+    reset(&F);
+    /* out NULL */
+    assert_true(qd_render_format_parse("q", NULL) == 0);
+    reset(&F);
+    /* ---- qd_con_kind_name */
+    /* no pointer argument */
+    /* ---- qd_render_eom */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(NULL, F.model, F.eom, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(F.ctx, NULL, F.eom, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(F.ctx, F.model, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_eom(F.ctx, F.model, F.eom, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_speeds */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(NULL, F.model, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(F.ctx, NULL, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(F.ctx, F.model, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_speeds(F.ctx, F.model, NULL, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_hamel */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamel(NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamel(F.ctx, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamel(F.ctx, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_check_verdict_of */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(NULL, F.model, F.eom, (qd_check_verdict *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(F.ctx, NULL, F.eom, (qd_check_verdict *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(F.ctx, F.model, NULL, (qd_check_verdict *)(void *)F.blob));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(F.ctx, F.model, F.eom, NULL));
+    reset(&F);
+    /* ---- qd_render_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(NULL, F.model, F.eom, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, NULL, F.eom, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, NULL, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, F.eom, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_check(F.ctx, F.model, F.eom, NULL, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_qform */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(NULL, F.q, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* phi NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, F.q, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, F.q, NULL, (qd_render_format){0}, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -4918,6 +5024,7 @@ int main(void)
         cmocka_unit_test(null_print),
         cmocka_unit_test(null_read),
         cmocka_unit_test(null_relativity),
+        cmocka_unit_test(null_render),
         cmocka_unit_test(null_routh),
         cmocka_unit_test(null_scatter),
         cmocka_unit_test(null_scene),

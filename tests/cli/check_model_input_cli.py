@@ -20,11 +20,14 @@
 
 Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
+import json
 import os
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
+
+EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
 
 results = {'passed': 0, 'failed': 0}
 HO = b"coordinates q\nparameters m = 1, k = 1\nT = m/2*q'^2\nV = k/2*q^2\n"
@@ -135,13 +138,34 @@ def main():
         expect(qdot, tmp, "initial q' in two statements", ['check', 'dup2.qd'], 2,
                ["dup2.qd:7:9: error: the initial value of q' is given twice (first on line 6)"])
 
-        expect(qdot, tmp, 'm = 0', ['check', 'm0.qd'], 2,
+        # a model that reads but fails the numbers is a certified "no": exit 3
+        expect(qdot, tmp, 'm = 0', ['check', 'm0.qd'], 3,
                ['m0.qd:3:1: error: the mass matrix is not positive definite',
                 'its pivot for q is 0'])
-        expect(qdot, tmp, 'a negative inertia', ['check', 'neg.qd'], 2,
+        expect(qdot, tmp, 'a negative inertia', ['check', 'neg.qd'], 3,
                ['error: the mass matrix is not positive definite', 'its pivot for r is -2'])
-        expect(qdot, tmp, 'x^2 + y^2 = -1', ['check', 'noreal.qd'], 2,
+        expect(qdot, tmp, 'x^2 + y^2 = -1', ['check', 'noreal.qd'], 3,
                ['noreal.qd:3:12: error: constraint a has no real solution'])
+        # the same in JSON: the machine code next to the English, and the witness
+        p = run(qdot, tmp, ['check', 'm0.qd', '--format', 'json'])
+        out = json.loads(p.stdout.decode()) if p.returncode == 3 else {}
+        check('check --format json: m = 0 is a no with its pivot', out.get('ok') is False and
+              out.get('reason') == 'mass_not_positive_definite' and out.get('witness') == 0 and
+              'not positive definite' in out.get('message', ''), p.stdout.decode()[:300])
+        p = run(qdot, tmp, ['check', 'noreal.qd', '--format', 'json'])
+        out = json.loads(p.stdout.decode()) if p.returncode == 3 else {}
+        check('check --format json: no real solution', out.get('reason') ==
+              'constraint_not_real' and out.get('about') == 'a' and out.get('witness', 0) > 0,
+              p.stdout.decode()[:300])
+        # Kepler: theta is cyclic and its momentum, the angular momentum m r^2 theta', is
+        # conserved, and so is the energy (no t, no forces)
+        p = run(qdot, tmp, ['check', str(EXAMPLES / 'kepler_polar.qd'), '--format', 'json'])
+        out = json.loads(p.stdout.decode()) if p.returncode == 0 else {}
+        cyc = out.get('cyclic', [{}])
+        check('check --format json: Kepler', out.get('ok') is True and
+              cyc[0].get('coordinate') == 'theta' and cyc[0].get('conserved') is True and
+              cyc[0].get('momentum') == "m*r^2*theta'" and out.get('energy_conserved') is True and
+              out['depends']['V']['coordinates'] == ['r'], p.stdout.decode()[:300])
         expect(qdot, tmp, 'check notes an initial state off the constraints',
                ['check', 'off.qd'], 0, ['note: the initial state is off constraint rod by 8'])
         p = run(qdot, tmp, ['check', 'on.qd'])

@@ -71,7 +71,7 @@ CASES = [
      '--format takes text or json'),
     (['stability', POWER, '--ignore', 'theta', '--at', 'r=1', '--at', 'r=2'], USAGE,
      '--at is given twice'),
-    (['codegen', 'one.qd', '-o', '.', '-o', '.'], USAGE, '-o is given twice'),
+    (['codegen', 'one.qd', '-o', '.', '-o', '.'], USAGE, '--out is given twice'),
     (['codegen', 'one.qd', '--prefix', '1abc'], USAGE, 'C identifier'),
     # lists with a name twice: was "every coordinate is ignored" / accepted, last one won
     (['routh', KEPLER, '--ignore', 'theta,theta'], USAGE, 'theta is listed twice'),

@@ -1,5 +1,5 @@
 /*
- * cli/eom_out.c - the five renderings of M q'' = f.
+ * src/render/eom.c - the five renderings of M q'' = f (qdot/render.h).
  *
  * Text is for reading (entries in the model language's syntax, numbers in
  * their shortest round-trip form); LaTeX is an align environment; JSON is for
@@ -7,48 +7,40 @@
  * numeric mode); SymPy is a Python snippet that rebuilds M and f; C is one
  * qd_print_c_block so that common subexpressions are shared across M and f.
  */
-#include "eom_out.h"
+#include "render.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli.h"
 #include "qdot/json.h"
-#include "model_cli.h"
+#include "../base/args.h"
+#include "../base/mem.h"
 
-bool cli_eom_format_from_name(const char *name, cli_eom_format *out) {
-    static const char *const names[] = {"text", "latex", "json", "sympy", "c"};
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-        if (!strcmp(name, names[i])) {
-            *out = (cli_eom_format)i;
-            return true;
-        }
-    return false;
-}
 
-static qd_status put(const cli_eom_view *v, qd_buf *b, const qd_expr *x, qd_format fmt) {
-    if (v->numeric && fmt == QD_FMT_TEXT && qd_is_number(x)) {
-        cli_state_put_double(b, qd_number_value(x));
+static qd_status put(const qd__eom_view *v, qd_buf *b, const qd_expr *x, qd_format fmt) {
+    if (v->at && fmt == QD_FMT_TEXT && qd_is_number(x)) {
+        qd__render_number(b, qd_number_value(x));
         return QD_OK;
     }
     return qd_print(v->ctx, x, fmt, b);
 }
 
-static const char *qname(const cli_eom_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
+static const char *qname(const qd__eom_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
 
 /* The name of an output (M, f, qdd, ...) in SymPy and C: one the model does
- * not use (cli_script_name). */
-typedef cli_name out_name;
+ * not use. */
+typedef qd__render_name out_name;
 
-static out_name pick(const cli_eom_view *v, const char *base) {
-    return cli_script_name(v->mf->model, base);
+static out_name pick(const qd__eom_view *v, const char *base) {
+    return qd__render_name_pick(v->m, base, 0, NULL);
 }
 
 /* ---- text ------------------------------------------------------------------ */
 
 /* A functional's model (`independent x`, isoperimetric constraints): the
  * variable the equations are in and what lambda_NAME stands for. */
-static void text_variational(const cli_eom_view *v, qd_buf *b) {
-    const qd_model *m = v->mf->model;
+static void text_variational(const qd__eom_view *v, qd_buf *b) {
+    const qd_model *m = v->m;
     if (qd_model_independent(m))
         qd_buf_printf(b, "independent variable: %s\n", qd_model_independent(m));
     for (size_t i = 0; i < qd_model_nisoperimetric(m); i++) {
@@ -68,40 +60,35 @@ static void text_variational(const cli_eom_view *v, qd_buf *b) {
     }
 }
 
-static void text_header(const cli_eom_view *v, qd_buf *b) {
-    const qd_model *m = v->mf->model;
-    qd_buf_printf(b, "model: %s\ncoordinates:", v->mf->path);
-    for (size_t j = 0; j < v->e->n; j++)
-        qd_buf_printf(b, "%s %s", j ? "," : "", qname(v, j));
-    qd_buf_puts(b, "\nparameters:");
-    for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        qd_buf_printf(b, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        cli_state_put_double(b, cli_param_value(m, i));
-    }
-    if (!qd_model_nparams(m))
-        qd_buf_puts(b, " none");
-    qd_buf_puts(b, "\n");
-    text_variational(v, b);
-    if (!v->numeric)
-        return;
-    qd_buf_puts(b, "at:");
-    for (size_t i = 0; i < 2 * qd_model_ncoords(m) + 1; i++) {
-        qd_buf_puts(b, i ? ", " : " ");
-        qd_print(v->ctx, v->st->syms[i], QD_FMT_TEXT, b);
-        qd_buf_puts(b, " = ");
-        cli_state_put_double(b, v->st->vals[i]);
-    }
-    qd_buf_puts(b, "\n");
+/* The state's coordinates, velocities and t, in that order. */
+static const qd_expr *state_sym(const qd__eom_view *v, size_t i) {
+    size_t n = v->e->n;
+    return i < n ? v->e->q[i] : i < 2 * n ? v->e->qd[i - n] : qd_time(v->ctx);
 }
 
-const char *cli_eom_con_kind_name(qd_con_kind k) {
-    return k == QD_CON_HOLONOMIC ? "holonomic" : k == QD_CON_INTEGRABLE ? "integrable"
-                                                                        : "nonholonomic";
+static void text_header(const qd__eom_view *v, qd_buf *b) {
+    qd_buf_printf(b, "model: %s\ncoordinates:", v->source);
+    for (size_t j = 0; j < v->e->n; j++)
+        qd_buf_printf(b, "%s %s", j ? "," : "", qname(v, j));
+    qd_buf_puts(b, "\n");
+    qd__render_params(b, v->m);
+    qd_buf_puts(b, "\n");
+    text_variational(v, b);
+    if (!v->at)
+        return;
+    qd_buf_puts(b, "at:");
+    for (size_t i = 0; i < 2 * v->e->n + 1; i++) {
+        qd_buf_puts(b, i ? ", " : " ");
+        qd_print(v->ctx, state_sym(v, i), QD_FMT_TEXT, b);
+        qd_buf_puts(b, " = ");
+        qd__render_number(b, qd__render_value(v->at, state_sym(v, i)));
+    }
+    qd_buf_puts(b, "\n");
 }
 
 /* Row j of M q'' = f + A^T lambda, by names: the nonzero entries of M,
  * and lambda_k*(A_kj) for the nonzero A_kj. */
-static qd_status text_row(const cli_eom_view *v, qd_buf *b, size_t j) {
+static qd_status text_row(const qd__eom_view *v, qd_buf *b, size_t j) {
     size_t n = v->e->n;
     bool any = false;
     qd_status st = QD_OK;
@@ -126,10 +113,10 @@ static qd_status text_row(const cli_eom_view *v, qd_buf *b, size_t j) {
     return st;
 }
 
-static qd_status text_constraint(const cli_eom_view *v, qd_buf *b, size_t k) {
+static qd_status text_constraint(const qd__eom_view *v, qd_buf *b, size_t k) {
     const qd_con *c = &v->e->con[k];
     size_t n = v->e->n;
-    qd_buf_printf(b, "  %s (%s): ", c->name, cli_eom_con_kind_name(c->kind));
+    qd_buf_printf(b, "  %s (%s): ", c->name, qd_con_kind_name(c->kind));
     qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, b);
     qd_buf_puts(b, " = 0\n");
     if (st == QD_OK && c->integral) {
@@ -150,7 +137,7 @@ static qd_status text_constraint(const cli_eom_view *v, qd_buf *b, size_t k) {
     return st;
 }
 
-static qd_status text_constraints(const cli_eom_view *v, qd_buf *b) {
+static qd_status text_constraints(const qd__eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\nwith the constraints' multipliers, M q'' = f + A^T lambda:\n");
     for (size_t j = 0; j < v->e->n && st == QD_OK; j++)
@@ -162,7 +149,7 @@ static qd_status text_constraints(const cli_eom_view *v, qd_buf *b) {
     return st;
 }
 
-static qd_status text_forces(const cli_eom_view *v, qd_buf *b) {
+static qd_status text_forces(const qd__eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\nmultipliers:\n");
     for (size_t k = 0; v->lambda && k < v->e->ncon && st == QD_OK; k++) {
@@ -185,7 +172,7 @@ static qd_status text_forces(const cli_eom_view *v, qd_buf *b) {
  * acts elsewhere too (include/qdot/mech.h, qd_eom_reaction). */
 #define REACTION_EXACT 1e-9
 
-static qd_status text_reactions(const cli_eom_view *v, qd_buf *b) {
+static qd_status text_reactions(const qd__eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\nreactions (the force a constraint exerts at a point, Cartesian):\n");
     for (size_t i = 0; i < v->nreact && st == QD_OK; i++) {
@@ -198,14 +185,14 @@ static qd_status text_reactions(const cli_eom_view *v, qd_buf *b) {
         if (v->react_res[i] > REACTION_EXACT) {
             qd_buf_puts(b, "    (least squares: the constraint also acts elsewhere; relative "
                            "residual ");
-            cli_state_put_double(b, v->react_res[i]);
+            qd__render_number(b, v->react_res[i]);
             qd_buf_puts(b, ")\n");
         }
     }
     return st;
 }
 
-static qd_status text_eliminated(const cli_eom_view *v, qd_buf *b) {
+static qd_status text_eliminated(const qd__eom_view *v, qd_buf *b) {
     qd_status st = QD_OK;
     qd_buf_puts(b, "\neliminated with holonomic constraints (substituted before deriving):\n");
     for (size_t i = 0; i < v->e->nelim && st == QD_OK; i++) {
@@ -216,7 +203,7 @@ static qd_status text_eliminated(const cli_eom_view *v, qd_buf *b) {
     return st;
 }
 
-static qd_status write_text(const cli_eom_view *v, qd_buf *b) {
+static qd_status write_text(const qd__eom_view *v, qd_buf *b) {
     size_t n = v->e->n;
     qd_status st = QD_OK;
     text_header(v, b);
@@ -263,7 +250,7 @@ static qd_status write_text(const cli_eom_view *v, qd_buf *b) {
 
 /* ---- LaTeX ----------------------------------------------------------------- */
 
-static qd_status latex_line(const cli_eom_view *v, qd_buf *b, bool *first, const char *lhs,
+static qd_status latex_line(const qd__eom_view *v, qd_buf *b, bool *first, const char *lhs,
                             const qd_expr *rhs) {
     qd_buf_puts(b, *first ? "  " : " \\\\\n  ");
     *first = false;
@@ -272,7 +259,7 @@ static qd_status latex_line(const cli_eom_view *v, qd_buf *b, bool *first, const
 }
 
 /* sum_k M_jk q''_k in LaTeX, into lhs. */
-static qd_status latex_row(const cli_eom_view *v, size_t j, qd_buf *lhs) {
+static qd_status latex_row(const qd__eom_view *v, size_t j, qd_buf *lhs) {
     size_t n = v->e->n;
     const qd_expr *sum = qd_int(v->ctx, 0);
     for (size_t k = 0; k < n; k++)
@@ -284,7 +271,7 @@ static qd_status latex_row(const cli_eom_view *v, size_t j, qd_buf *lhs) {
 }
 
 /* f_j + sum_k lambda_k A_kj. */
-static const qd_expr *with_multipliers(const cli_eom_view *v, size_t j) {
+static const qd_expr *with_multipliers(const qd__eom_view *v, size_t j) {
     const qd_expr *x = v->f[j];
     for (size_t k = 0; k < v->e->ncon; k++)
         x = qd_add(v->ctx, x, qd_mul(v->ctx, v->e->con[k].lambda, v->A[k * v->e->n + j]));
@@ -292,7 +279,7 @@ static const qd_expr *with_multipliers(const cli_eom_view *v, size_t j) {
 }
 
 /* sum_j A_kj q''_j in LaTeX, into lhs. */
-static qd_status latex_constraint_row(const cli_eom_view *v, size_t k, qd_buf *lhs) {
+static qd_status latex_constraint_row(const qd__eom_view *v, size_t k, qd_buf *lhs) {
     size_t n = v->e->n;
     const qd_expr *sum = qd_int(v->ctx, 0);
     for (size_t j = 0; j < n; j++)
@@ -303,7 +290,7 @@ static qd_status latex_constraint_row(const cli_eom_view *v, size_t k, qd_buf *l
     return qd_print(v->ctx, sum, QD_FMT_LATEX, lhs);
 }
 
-static qd_status write_latex(const cli_eom_view *v, qd_buf *b) {
+static qd_status write_latex(const qd__eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T_2", "T_1", "T_0"};
     size_t n = v->e->n;
     bool first = true;
@@ -335,8 +322,8 @@ static qd_status write_latex(const cli_eom_view *v, qd_buf *b) {
 
 /* ---- JSON ------------------------------------------------------------------ */
 
-static qd_status json_entry(const cli_eom_view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
-    if (v->numeric) {
+static qd_status json_entry(const qd__eom_view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
+    if (v->at) {
         qd_json_number(j, qd_number_value(x));
         return QD_OK;
     }
@@ -346,7 +333,7 @@ static qd_status json_entry(const cli_eom_view *v, qd_json *j, const qd_expr *x,
     return st;
 }
 
-static qd_status json_vector(const cli_eom_view *v, qd_json *j, const char *key,
+static qd_status json_vector(const qd__eom_view *v, qd_json *j, const char *key,
                              const qd_expr *const *x, size_t n, qd_buf *tmp) {
     qd_status st = QD_OK;
     if (key)
@@ -358,42 +345,35 @@ static qd_status json_vector(const cli_eom_view *v, qd_json *j, const char *key,
     return st;
 }
 
-static void json_header(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
-    const qd_model *m = v->mf->model;
+static void json_header(const qd__eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_json_key(j, "model");
-    qd_json_string(j, v->mf->path);
+    qd_json_string(j, v->source);
     qd_json_key(j, "coordinates");
     qd_json_begin_array(j);
     for (size_t i = 0; i < v->e->n; i++)
         qd_json_string(j, qname(v, i));
     qd_json_end_array(j);
-    qd_json_key(j, "parameters");
-    qd_json_begin_object(j);
-    for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        qd_json_key(j, qd_expr_name(qd_model_param(m, i)));
-        qd_json_number(j, cli_param_value(m, i));
-    }
-    qd_json_end_object(j);
-    if (!v->numeric)
+    qd__render_json_params(j, v->m);
+    if (!v->at)
         return;
     qd_json_key(j, "state");
     qd_json_begin_object(j);
-    for (size_t i = 0; i < 2 * qd_model_ncoords(m) + 1; i++) {
+    for (size_t i = 0; i < 2 * v->e->n + 1; i++) {
         qd_buf_clear(tmp);
-        qd_print(v->ctx, v->st->syms[i], QD_FMT_TEXT, tmp);
+        qd_print(v->ctx, state_sym(v, i), QD_FMT_TEXT, tmp);
         qd_json_key(j, qd_buf_str(tmp));
-        qd_json_number(j, v->st->vals[i]);
+        qd_json_number(j, qd__render_value(v->at, state_sym(v, i)));
     }
     qd_json_end_object(j);
 }
 
-static qd_status json_constraint(const cli_eom_view *v, qd_json *j, size_t k, qd_buf *tmp) {
+static qd_status json_constraint(const qd__eom_view *v, qd_json *j, size_t k, qd_buf *tmp) {
     const qd_con *c = &v->e->con[k];
     qd_json_begin_object(j);
     qd_json_key(j, "name");
     qd_json_string(j, c->name);
     qd_json_key(j, "kind");
-    qd_json_string(j, cli_eom_con_kind_name(c->kind));
+    qd_json_string(j, qd_con_kind_name(c->kind));
     qd_json_key(j, "expression");
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, tmp);
@@ -418,7 +398,7 @@ static qd_status json_constraint(const cli_eom_view *v, qd_json *j, size_t k, qd
 
 /* "constraints" (each with its row of A and b), then the multipliers by
  * constraint name and the constraint forces by coordinate name when known. */
-static qd_status json_constraints(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_constraints(const qd__eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
     qd_json_key(j, "constraints");
     qd_json_begin_array(j);
@@ -447,7 +427,7 @@ static qd_status json_constraints(const cli_eom_view *v, qd_json *j, qd_buf *tmp
 }
 
 /* "reactions": name -> [Fx, Fy, Fz]; "reaction_residuals": name -> residual. */
-static qd_status json_reactions(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_reactions(const qd__eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
     qd_json_key(j, "reactions");
     qd_json_begin_object(j);
@@ -466,7 +446,7 @@ static qd_status json_reactions(const cli_eom_view *v, qd_json *j, qd_buf *tmp) 
     return st;
 }
 
-static qd_status json_eliminated(const cli_eom_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_eliminated(const qd__eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
     qd_json_key(j, "eliminated");
     qd_json_begin_object(j);
@@ -485,7 +465,7 @@ static qd_status json_eliminated(const cli_eom_view *v, qd_json *j, qd_buf *tmp)
     return st;
 }
 
-static qd_status write_json(const cli_eom_view *v, qd_buf *b) {
+static qd_status write_json(const qd__eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T2", "T1", "T0"};
     size_t n = v->e->n;
     qd_buf tmp = QD_BUF_INIT;
@@ -515,57 +495,25 @@ static qd_status write_json(const cli_eom_view *v, qd_buf *b) {
         st = json_eliminated(v, &j, &tmp);
     if (st == QD_OK && v->e->ncon)
         st = json_constraints(v, &j, &tmp);
-    if (st == QD_OK && v->numeric && qd_model_nreactions(v->mf->model))
+    if (st == QD_OK && v->at && qd_model_nreactions(v->m))
         st = json_reactions(v, &j, &tmp);
     qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);
-    if (st == QD_OK && !qd_json_ok(&j))
-        st = b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
-    return st;
+    return qd__render_json_status(&j, b, st);
 }
 
 /* ---- SymPy ----------------------------------------------------------------- */
 
-/* Bind name to Symbol or Function when the printer prints it bare (a name
- * that would shadow Python or SymPy is printed self-contained instead). */
-void cli_eom_sympy_bind(qd_ctx *ctx, qd_buf *b, const qd_expr *sym, bool fn) {
-    qd_buf tmp = QD_BUF_INIT;
-    const char *name = qd_expr_name(sym), *t = qd_print_time_name(ctx);
-    qd_print(ctx, sym, QD_FMT_SYMPY, &tmp);
-    size_t len = strlen(name);
-    const char *s = qd_buf_str(&tmp);
-    if (!strncmp(s, name, len) &&
-        (fn ? s[len] == '(' && !strncmp(s + len + 1, t, strlen(t)) &&
-                  !strcmp(s + len + 1 + strlen(t), ")")
-            : !s[len]))
-        qd_buf_printf(b, "%s = %s('%s')\n", name, fn ? "Function" : "Symbol", name);
-    qd_buf_free(&tmp);
-}
 
-qd_status cli_eom_sympy_matrix(qd_ctx *ctx, qd_buf *b, const char *name,
-                               const qd_expr *const *x, size_t rows, size_t cols) {
-    qd_status st = QD_OK;
-    qd_buf_printf(b, "%s = Matrix([", name);
-    for (size_t r = 0; r < rows && st == QD_OK; r++) {
-        qd_buf_puts(b, cols > 1 ? "\n    [" : (r ? ", " : ""));
-        for (size_t k = 0; k < cols && st == QD_OK; k++) {
-            qd_buf_puts(b, k ? ", " : "");
-            st = qd_print(ctx, x[r * cols + k], QD_FMT_SYMPY, b);
-        }
-        qd_buf_puts(b, cols > 1 ? "]," : "");
-    }
-    qd_buf_puts(b, cols > 1 ? "\n])\n" : "])\n");
-    return st;
-}
 
-static qd_status sympy_assign(const cli_eom_view *v, qd_buf *b, const char *name,
+static qd_status sympy_assign(const qd__eom_view *v, qd_buf *b, const char *name,
                               const qd_expr *const *x, size_t rows, size_t cols) {
-    return cli_eom_sympy_matrix(v->ctx, b, name, x, rows, cols);
+    return qd__render_sympy_matrix(v->ctx, b, name, x, rows, cols);
 }
 
 /* A, b and the multipliers: M*q'' = f + A.T*lam and A*q'' = b. */
-static qd_status sympy_constraints(const cli_eom_view *v, qd_buf *b) {
+static qd_status sympy_constraints(const qd__eom_view *v, qd_buf *b) {
     size_t n = v->e->n, m = v->e->ncon;
     out_name A = pick(v, "A"), bb = pick(v, "b"), lam = pick(v, "lam"), M = pick(v, "M");
     out_name f = pick(v, "f"), q = pick(v, "q");
@@ -584,40 +532,40 @@ static qd_status sympy_constraints(const cli_eom_view *v, qd_buf *b) {
 }
 
 /* W = Function('W') for the user functions in everything printed below. */
-static qd_status sympy_functions(const cli_eom_view *v, qd_buf *b) {
+static qd_status sympy_functions(const qd__eom_view *v, qd_buf *b) {
     size_t n = v->e->n, m = v->e->ncon, k = 0;
     const qd_expr *const *groups[] = {v->T, v->M, v->f, v->acc, v->A, v->b, v->lambda};
     const size_t sizes[] = {3, n * n, n, n, m * n, m, m};
-    const qd_expr **all = malloc((3 + n * n + 2 * n + m * n + 2 * m) * sizeof *all);
+    const qd_expr **all = qd__malloc(v->ctx, (3 + n * n + 2 * n + m * n + 2 * m) * sizeof *all);
     if (!all)
         return QD_ERR_NOMEM;
     for (size_t g = 0; g < sizeof sizes / sizeof sizes[0]; g++)
         for (size_t i = 0; groups[g] && i < sizes[g]; i++)
             all[k++] = groups[g][i];
     qd_status st = qd_print_sympy_functions(v->ctx, k, all, b);
-    free(all);
+    qd__free(all);
     return st;
 }
 
-static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
+static qd_status write_sympy(const qd__eom_view *v, qd_buf *b) {
     static const char *const parts[] = {"T2", "T1", "T0"};
-    const qd_model *m = v->mf->model;
+    const qd_model *m = v->m;
     size_t n = v->e->n;
     qd_status st = QD_OK;
     out_name M = pick(v, "M"), f = pick(v, "f"), q = pick(v, "q"), qdd = pick(v, "qdd");
     const char *t = qd_print_time_name(v->ctx); /* x for `independent x` */
     qd_buf_printf(b, "# qdot eom %s: %s*%s.diff(%s, 2) = %s\nfrom sympy import *\n\n"
-                  "%s = Symbol('%s')\n", v->mf->path, M.s, q.s, t, f.s, t, t);
+                  "%s = Symbol('%s')\n", v->source, M.s, q.s, t, f.s, t, t);
     for (size_t j = 0; j < n; j++)
-        cli_eom_sympy_bind(v->ctx, b, v->e->q[j], true);
+        qd__render_sympy_bind(v->ctx, b, v->e->q[j], true);
     for (size_t i = 0; i < qd_model_nparams(m); i++)
-        cli_eom_sympy_bind(v->ctx, b, qd_model_param(m, i), false);
+        qd__render_sympy_bind(v->ctx, b, qd_model_param(m, i), false);
     for (size_t i = 0; i < qd_model_ninputs(m); i++) /* inputs print by name, like parameters */
-        cli_eom_sympy_bind(v->ctx, b, qd_model_input(m, i), false);
+        qd__render_sympy_bind(v->ctx, b, qd_model_input(m, i), false);
     for (size_t i = 0; i < qd_model_nisoperimetric(m); i++) { /* constants like the parameters */
         const qd_expr *lam = qd_model_isoperimetric_multiplier(m, i);
         if (qd_expr_kind(lam) == QD_SYMBOL && qd_symbol_role(lam) == QD_ROLE_PLAIN)
-            cli_eom_sympy_bind(v->ctx, b, lam, false);
+            qd__render_sympy_bind(v->ctx, b, lam, false);
     }
     st = sympy_functions(v, b);
     qd_buf_puts(b, "\n");
@@ -641,8 +589,8 @@ static qd_status write_sympy(const cli_eom_view *v, qd_buf *b) {
 
 /* ---- C --------------------------------------------------------------------- */
 
-static void c_inputs(const cli_eom_view *v, qd_buf *b) {
-    const qd_model *m = v->mf->model;
+static void c_inputs(const qd__eom_view *v, qd_buf *b) {
+    const qd_model *m = v->m;
     const qd_eom *e = v->e;
     qd_buf_puts(b, "/* inputs (doubles in scope):");
     for (size_t j = 0; j < 2 * e->n; j++) {
@@ -679,7 +627,7 @@ static void c_add(c_outs *o, const qd_expr *x, const char *fmt, const char *base
     o->n++;
 }
 
-static void c_fill(const cli_eom_view *v, c_outs *o) {
+static void c_fill(const qd__eom_view *v, c_outs *o) {
     size_t n = v->e->n, m = v->e->ncon;
     out_name M = pick(v, "M"), f = pick(v, "f"), qdd = pick(v, "qdd");
     out_name A = pick(v, "A"), b = pick(v, "b");
@@ -695,15 +643,15 @@ static void c_fill(const cli_eom_view *v, c_outs *o) {
         c_add(o, v->b[k], "%s[%zu]", b.s, k, 0, false);
 }
 
-static qd_status write_c(const cli_eom_view *v, qd_buf *b) {
+static qd_status write_c(const qd__eom_view *v, qd_buf *b) {
     size_t n = v->e->n, m = v->e->ncon, nout = n * n + 2 * n + m * n + m;
-    c_outs o = {0, malloc(nout * sizeof *o.x), malloc(nout * sizeof *o.names),
-                malloc(nout * sizeof *o.lhs)};
+    c_outs o = {0, qd__malloc(v->ctx, nout * sizeof *o.x), qd__malloc(v->ctx, nout * sizeof *o.names),
+                qd__malloc(v->ctx, nout * sizeof *o.lhs)};
     qd_status st = QD_ERR_NOMEM;
     out_name M = pick(v, "M"), f = pick(v, "f"), qdd = pick(v, "qdd"), A = pick(v, "A");
     if (o.x && o.names && o.lhs) {
         c_fill(v, &o);
-        qd_buf_printf(b, "/* qdot eom %s: %s q'' = %s", v->mf->path, M.s, f.s);
+        qd_buf_printf(b, "/* qdot eom %s: %s q'' = %s", v->source, M.s, f.s);
         if (m)
             qd_buf_printf(b, " + %s^T lambda, %s q'' = %s", A.s, A.s, pick(v, "b").s);
         if (v->acc && m)
@@ -714,27 +662,43 @@ static qd_status write_c(const cli_eom_view *v, qd_buf *b) {
         c_inputs(v, b);
         st = qd_print_c_block(v->ctx, o.n, o.x, o.lhs, b);
     }
-    free(o.x);
-    free(o.names);
-    free(o.lhs);
+    qd__free(o.x);
+    qd__free(o.names);
+    qd__free(o.lhs);
     return st;
 }
 
-/* ---- derivation errors ------------------------------------------------------ */
 
-/* The derivation recorded what failed (a constraint, the statement giving
- * the inertia) and a hint: shown at that statement of the file. */
-int cli_eom_derive_error(const qd_ctx *ctx, const cli_model_file *mf) {
-    return cli_diag_model(ctx, mf->path, mf->text, mf->model);
-}
 
-qd_status cli_eom_write(const cli_eom_view *v, cli_eom_format fmt, qd_buf *out) {
+static qd_status render(const qd__eom_view *v, qd_render_format fmt, qd_buf *out) {
     switch (fmt) {
-    case QD_EOM_LATEX: return write_latex(v, out);
-    case QD_EOM_JSON: return write_json(v, out);
-    case QD_EOM_SYMPY: return write_sympy(v, out);
-    case QD_EOM_C: return write_c(v, out);
-    case QD_EOM_TEXT: break;
+    case QD_RENDER_LATEX: return write_latex(v, out);
+    case QD_RENDER_JSON: return write_json(v, out);
+    case QD_RENDER_SYMPY: return write_sympy(v, out);
+    case QD_RENDER_C: return write_c(v, out);
+    case QD_RENDER_TEXT: break;
     }
     return write_text(v, out);
+}
+
+qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                        const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
+    if ((unsigned)fmt > QD_RENDER_C) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "not a format of qd_render_format: %d", (int)fmt);
+        return QD_ERR_ARG;
+    }
+    qd__eom_view v = {.ctx = ctx, .m = m, .source = o && o->source ? o->source : "model",
+                      .e = e, .M = e->M, .f = e->f, .acc = e->acc, .A = e->A, .b = e->b,
+                      .lambda = e->mult, .T = {e->T2, e->T1, e->T0}};
+    v.split = e->T2 && e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0));
+    qd_status st = o && o->nstate ? qd__eom_numbers(&v, o) : QD_OK;
+    if (st == QD_OK)
+        st = render(&v, fmt, out);
+    if (st == QD_OK && out->failed) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
+        st = QD_ERR_NOMEM;
+    }
+    qd__eom_view_free(&v);
+    return st;
 }

@@ -1,5 +1,5 @@
 /*
- * cli/speeds_out.c - the five renderings of the equations in generalized
+ * src/render/speeds.c - the five renderings of the equations in generalized
  * speeds: q' = W u + w (the kinematics), M_u u' = f_u, and with --appell
  * and --multipliers S and lambda (qdot/speeds.h).
  *
@@ -10,37 +10,36 @@
  * \dot{w}_{1} (LaTeX), w1(t).diff(t) (SymPy) and w1_d (C).  With --at the
  * text and JSON carry numbers instead: q', u' and the multipliers.
  */
-#include "speeds_out.h"
+#include "render.h"
 
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli.h"
 #include "qdot/json.h"
-#include "model_cli.h"
+#include "../base/args.h"
+#include "../base/mem.h"
 
-static const char *qname(const cli_speeds_view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
-static const char *uname(const cli_speeds_view *v, size_t r) { return qd_expr_name(v->e->u[r]); }
+/* What qd_render_speeds prints: at a state, qd the velocities from the
+ * kinematics (n), ud the speeds' rates (m) and lambda the multipliers
+ * (ncon) or NULL. */
+typedef struct view {
+    qd_ctx *ctx;
+    const qd_model *m;
+    const char *source;
+    const qd_speeds_eom *e;
+    bool multipliers;
+    const qd_render_opts *at;
+    const double *qd, *ud, *lambda;
+} view;
 
-static bool is_speed(const cli_speeds_view *v, const char *name) {
-    for (size_t r = 0; r < v->e->m; r++)
-        if (!strcmp(name, uname(v, r)))
-            return true;
-    return false;
-}
+static const char *qname(const view *v, size_t j) { return qd_expr_name(v->e->q[j]); }
+static const char *uname(const view *v, size_t r) { return qd_expr_name(v->e->u[r]); }
 
-/* The name of an output of the SymPy and C renderings: cli_script_name's,
- * which knows the coordinates, parameters and functions, also kept clear of
+/* The name of an output of the SymPy and C renderings, also kept clear of
  * the speeds (a speed called u must not be overwritten by the vector). */
-static cli_name pick(const cli_speeds_view *v, const char *base) {
-    cli_name n = cli_script_name(v->mf->model, base);
-    size_t len;
-    while (is_speed(v, n.s) && (len = strlen(n.s)) + 2 <= sizeof n.s) {
-        cli_name longer = n;
-        longer.s[len] = '_';
-        longer.s[len + 1] = '\0';
-        n = cli_script_name(v->mf->model, longer.s);
-    }
-    return n;
+static qd__render_name pick(const view *v, const char *base) {
+    return qd__render_name_pick(v->m, base, v->e->m, v->e->u);
 }
 
 /* ---- text ------------------------------------------------------------------ */
@@ -52,22 +51,16 @@ static void text_names(qd_buf *b, const char *what, const qd_expr *const *x, siz
     qd_buf_puts(b, n ? "\n" : " none\n");
 }
 
-static void text_header(const cli_speeds_view *v, qd_buf *b) {
-    const qd_model *m = v->mf->model;
-    qd_buf_printf(b, "model: %s\n", v->mf->path);
+static void text_header(const view *v, qd_buf *b) {
+    qd_buf_printf(b, "model: %s\n", v->source);
     text_names(b, "coordinates", v->e->q, v->e->n);
     text_names(b, "speeds", v->e->u, v->e->m);
-    qd_buf_puts(b, "parameters:");
-    for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        qd_buf_printf(b, "%s %s = ", i ? "," : "", qd_expr_name(qd_model_param(m, i)));
-        cli_state_put_double(b, cli_param_value(m, i));
-    }
-    qd_buf_printf(b, "%s\nmethod: %s\n", qd_model_nparams(m) ? "" : " none",
-                  qd_speeds_method_name(v->e->method));
+    qd__render_params(b, v->m);
+    qd_buf_printf(b, "\nmethod: %s\n", qd_speeds_method_name(v->e->method));
 }
 
 /* "  NAME = EXPR\n" */
-static qd_status text_line(const cli_speeds_view *v, qd_buf *b, const char *name,
+static qd_status text_line(const view *v, qd_buf *b, const char *name,
                            const qd_expr *x) {
     qd_buf_printf(b, "  %s = ", name);
     qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, b);
@@ -75,7 +68,7 @@ static qd_status text_line(const cli_speeds_view *v, qd_buf *b, const char *name
     return st;
 }
 
-static qd_status text_kinematics(const cli_speeds_view *v, qd_buf *b) {
+static qd_status text_kinematics(const view *v, qd_buf *b) {
     qd_status st = QD_OK;
     char lhs[160];
     qd_buf_puts(b, "\nkinematics q' = W u + w:\n");
@@ -89,14 +82,14 @@ static qd_status text_kinematics(const cli_speeds_view *v, qd_buf *b) {
                    "enters):\n");
     for (size_t k = 0; k < v->e->ncon && st == QD_OK; k++) {
         const qd_con *c = &v->e->con[k];
-        qd_buf_printf(b, "  %s (%s): ", c->name, cli_eom_con_kind_name(c->kind));
+        qd_buf_printf(b, "  %s (%s): ", c->name, qd_con_kind_name(c->kind));
         st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, b);
         qd_buf_puts(b, " = 0\n");
     }
     return st;
 }
 
-static qd_status text_dynamics(const cli_speeds_view *v, qd_buf *b) {
+static qd_status text_dynamics(const view *v, qd_buf *b) {
     size_t m = v->e->m;
     qd_status st = QD_OK;
     char lhs[300];
@@ -115,31 +108,29 @@ static qd_status text_dynamics(const cli_speeds_view *v, qd_buf *b) {
 
 /* ---- numbers at a state (--at) ------------------------------------------------ */
 
-/* The k-th value shown of the state (k < n + m + 1): the coordinates, the
- * speeds, then t; the velocity slots are not used, the parameters are in
- * the header. */
-static size_t state_slot(const cli_speeds_view *v, size_t k) {
-    size_t nq = v->e->n, m = v->e->m, first_speed = v->st->n - m;
-    return k < nq ? k : k < nq + m ? first_speed + (k - nq) : 2 * nq;
+/* The k-th symbol shown of the state (k < n + m + 1): the coordinates, the
+ * speeds, then t; the parameters are in the header. */
+static const qd_expr *state_sym(const view *v, size_t k) {
+    size_t nq = v->e->n, m = v->e->m;
+    return k < nq ? v->e->q[k] : k < nq + m ? v->e->u[k - nq] : qd_time(v->ctx);
 }
 
-static void text_state(const cli_speeds_view *v, qd_buf *b) {
+static void text_state(const view *v, qd_buf *b) {
     qd_buf_puts(b, "at:");
     for (size_t k = 0; k < v->e->n + v->e->m + 1; k++) {
-        size_t i = state_slot(v, k);
-        qd_buf_printf(b, "%s%s = ", k ? ", " : " ", qd_expr_name(v->st->syms[i]));
-        cli_state_put_double(b, v->st->vals[i]);
+        qd_buf_printf(b, "%s%s = ", k ? ", " : " ", qd_expr_name(state_sym(v, k)));
+        qd__render_number(b, qd__render_value(v->at, state_sym(v, k)));
     }
     qd_buf_puts(b, "\n");
 }
 
 static void text_number(qd_buf *b, const char *name, const char *suffix, double x) {
     qd_buf_printf(b, "  %s%s = ", name, suffix);
-    cli_state_put_double(b, x);
+    qd__render_number(b, x);
     qd_buf_puts(b, "\n");
 }
 
-static qd_status write_text_at(const cli_speeds_view *v, qd_buf *b) {
+static qd_status write_text_at(const view *v, qd_buf *b) {
     text_state(v, b);
     qd_buf_puts(b, "\nvelocities q' = W u + w:\n");
     for (size_t j = 0; j < v->e->n; j++)
@@ -157,9 +148,9 @@ static qd_status write_text_at(const cli_speeds_view *v, qd_buf *b) {
     return QD_OK;
 }
 
-static qd_status write_text(const cli_speeds_view *v, qd_buf *b) {
+static qd_status write_text(const view *v, qd_buf *b) {
     text_header(v, b);
-    if (v->st)
+    if (v->at)
         return write_text_at(v, b);
     qd_status st = text_kinematics(v, b);
     if (st == QD_OK)
@@ -189,7 +180,7 @@ static qd_status write_text(const cli_speeds_view *v, qd_buf *b) {
 
 /* ---- LaTeX ----------------------------------------------------------------- */
 
-static qd_status latex_line(const cli_speeds_view *v, qd_buf *b, bool *first, const qd_expr *lhs,
+static qd_status latex_line(const view *v, qd_buf *b, bool *first, const qd_expr *lhs,
                             const qd_expr *rhs) {
     qd_buf_puts(b, *first ? "  " : " \\\\\n  ");
     *first = false;
@@ -199,7 +190,7 @@ static qd_status latex_line(const cli_speeds_view *v, qd_buf *b, bool *first, co
 }
 
 /* sum_s M_rs u'_s. */
-static const qd_expr *latex_row(const cli_speeds_view *v, size_t r) {
+static const qd_expr *latex_row(const view *v, size_t r) {
     size_t m = v->e->m;
     const qd_expr *sum = qd_int(v->ctx, 0);
     for (size_t s = 0; s < m; s++)
@@ -207,7 +198,7 @@ static const qd_expr *latex_row(const cli_speeds_view *v, size_t r) {
     return sum;
 }
 
-static qd_status write_latex(const cli_speeds_view *v, qd_buf *b) {
+static qd_status write_latex(const view *v, qd_buf *b) {
     const qd_speeds_eom *e = v->e;
     bool first = true;
     qd_status st = QD_OK;
@@ -232,7 +223,7 @@ static qd_status write_latex(const cli_speeds_view *v, qd_buf *b) {
 
 /* ---- JSON ------------------------------------------------------------------ */
 
-static qd_status json_expr(const cli_speeds_view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
+static qd_status json_expr(const view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
     qd_buf_clear(tmp);
     qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
     qd_json_string(j, qd_buf_str(tmp));
@@ -247,25 +238,18 @@ static void json_names(qd_json *j, const char *key, const qd_expr *const *x, siz
     qd_json_end_array(j);
 }
 
-static void json_header(const cli_speeds_view *v, qd_json *j) {
-    const qd_model *m = v->mf->model;
+static void json_header(const view *v, qd_json *j) {
     qd_json_key(j, "model");
-    qd_json_string(j, v->mf->path);
+    qd_json_string(j, v->source);
     json_names(j, "coordinates", v->e->q, v->e->n);
     json_names(j, "speeds", v->e->u, v->e->m);
-    qd_json_key(j, "parameters");
-    qd_json_begin_object(j);
-    for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        qd_json_key(j, qd_expr_name(qd_model_param(m, i)));
-        qd_json_number(j, cli_param_value(m, i));
-    }
-    qd_json_end_object(j);
+    qd__render_json_params(j, v->m);
     qd_json_key(j, "method");
     qd_json_string(j, qd_speeds_method_name(v->e->method));
 }
 
 /* "kinematics": [{"coordinate": "phi", "expression": "..."}, ...] */
-static qd_status json_kinematics(const cli_speeds_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_kinematics(const view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
     qd_json_key(j, "kinematics");
     qd_json_begin_array(j);
@@ -281,7 +265,7 @@ static qd_status json_kinematics(const cli_speeds_view *v, qd_json *j, qd_buf *t
     return st;
 }
 
-static qd_status json_dynamics(const cli_speeds_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_dynamics(const view *v, qd_json *j, qd_buf *tmp) {
     size_t m = v->e->m;
     qd_status st = QD_OK;
     qd_json_key(j, "mass_matrix");
@@ -310,7 +294,7 @@ static qd_status json_dynamics(const cli_speeds_view *v, qd_json *j, qd_buf *tmp
 
 /* "constraints" (name, kind, expression, multiplier) and, when computed,
  * "multipliers" by constraint name, as for the coordinates' output. */
-static qd_status json_constraints(const cli_speeds_view *v, qd_json *j, qd_buf *tmp) {
+static qd_status json_constraints(const view *v, qd_json *j, qd_buf *tmp) {
     qd_status st = QD_OK;
     qd_json_key(j, "constraints");
     qd_json_begin_array(j);
@@ -320,7 +304,7 @@ static qd_status json_constraints(const cli_speeds_view *v, qd_json *j, qd_buf *
         qd_json_key(j, "name");
         qd_json_string(j, c->name);
         qd_json_key(j, "kind");
-        qd_json_string(j, cli_eom_con_kind_name(c->kind));
+        qd_json_string(j, qd_con_kind_name(c->kind));
         qd_json_key(j, "expression");
         st = json_expr(v, j, c->expr, tmp);
         qd_json_key(j, "multiplier");
@@ -350,13 +334,12 @@ static void json_numbers(qd_json *j, const char *key, const double *x, size_t n)
 
 /* --at: "state" (coordinates, speeds, t by name), "velocities" (in the
  * order of "coordinates"), "rates" (of "speeds") and "multipliers". */
-static void json_at(const cli_speeds_view *v, qd_json *j) {
+static void json_at(const view *v, qd_json *j) {
     qd_json_key(j, "state");
     qd_json_begin_object(j);
     for (size_t k = 0; k < v->e->n + v->e->m + 1; k++) {
-        size_t i = state_slot(v, k);
-        qd_json_key(j, qd_expr_name(v->st->syms[i]));
-        qd_json_number(j, v->st->vals[i]);
+        qd_json_key(j, qd_expr_name(state_sym(v, k)));
+        qd_json_number(j, qd__render_value(v->at, state_sym(v, k)));
     }
     qd_json_end_object(j);
     json_numbers(j, "velocities", v->qd, v->e->n);
@@ -372,17 +355,17 @@ static void json_at(const cli_speeds_view *v, qd_json *j) {
     qd_json_end_object(j);
 }
 
-static qd_status write_json(const cli_speeds_view *v, qd_buf *b) {
+static qd_status write_json(const view *v, qd_buf *b) {
     qd_buf tmp = QD_BUF_INIT;
     qd_json j;
     qd_json_init(&j, b);
     qd_json_begin_object(&j);
     json_header(v, &j);
-    if (v->st) {
+    if (v->at) {
         json_at(v, &j);
         qd_json_end_object(&j);
         qd_buf_puts(b, "\n");
-        return qd_json_ok(&j) ? QD_OK : b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+        return qd__render_json_status(&j, b, QD_OK);
     }
     qd_status st = json_kinematics(v, &j, &tmp);
     if (st == QD_OK && v->e->T) {
@@ -405,19 +388,17 @@ static qd_status write_json(const cli_speeds_view *v, qd_buf *b) {
     qd_json_end_object(&j);
     qd_buf_puts(b, "\n");
     qd_buf_free(&tmp);
-    if (st == QD_OK && !qd_json_ok(&j))
-        st = b->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
-    return st;
+    return qd__render_json_status(&j, b, st);
 }
 
 /* ---- SymPy ----------------------------------------------------------------- */
 
-static qd_status sympy_assign(const cli_speeds_view *v, qd_buf *b, const char *name,
+static qd_status sympy_assign(const view *v, qd_buf *b, const char *name,
                               const qd_expr *const *x, size_t rows, size_t cols) {
-    return cli_eom_sympy_matrix(v->ctx, b, name, x, rows, cols);
+    return qd__render_sympy_matrix(v->ctx, b, name, x, rows, cols);
 }
 
-static qd_status sympy_scalar(const cli_speeds_view *v, qd_buf *b, const char *name,
+static qd_status sympy_scalar(const view *v, qd_buf *b, const char *name,
                               const qd_expr *x) {
     qd_buf_printf(b, "%s = ", name);
     qd_status st = qd_print(v->ctx, x, QD_FMT_SYMPY, b);
@@ -426,10 +407,10 @@ static qd_status sympy_scalar(const cli_speeds_view *v, qd_buf *b, const char *n
 }
 
 /* W = Function('W') for the user functions in everything printed below. */
-static qd_status sympy_functions(const cli_speeds_view *v, qd_buf *b) {
+static qd_status sympy_functions(const view *v, qd_buf *b) {
     const qd_speeds_eom *e = v->e;
     size_t n = e->n, m = e->m, c = e->mult ? e->ncon : 0, k = 0;
-    const qd_expr **all = malloc((n + m * m + m + 2 + c) * sizeof *all);
+    const qd_expr **all = qd__malloc(v->ctx, (n + m * m + m + 2 + c) * sizeof *all);
     if (!all)
         return QD_ERR_NOMEM;
     for (size_t i = 0; i < n; i++)
@@ -445,12 +426,12 @@ static qd_status sympy_functions(const cli_speeds_view *v, qd_buf *b) {
     for (size_t i = 0; i < c; i++)
         all[k++] = e->mult[i];
     qd_status st = qd_print_sympy_functions(v->ctx, k, all, b);
-    free(all);
+    qd__free(all);
     return st;
 }
 
-static qd_status sympy_multipliers(const cli_speeds_view *v, qd_buf *b) {
-    cli_name lam = pick(v, "lam");
+static qd_status sympy_multipliers(const view *v, qd_buf *b) {
+    qd__render_name lam = pick(v, "lam");
     qd_buf_printf(b, "%s = Matrix([", lam.s);
     for (size_t k = 0; k < v->e->ncon; k++)
         qd_buf_printf(b, "%sSymbol('%s')", k ? ", " : "", qd_expr_name(v->e->con[k].lambda));
@@ -458,20 +439,20 @@ static qd_status sympy_multipliers(const cli_speeds_view *v, qd_buf *b) {
     return sympy_assign(v, b, pick(v, "lam_value").s, v->e->mult, v->e->ncon, 1);
 }
 
-static qd_status write_sympy(const cli_speeds_view *v, qd_buf *b) {
-    const qd_model *mdl = v->mf->model;
+static qd_status write_sympy(const view *v, qd_buf *b) {
+    const qd_model *mdl = v->m;
     const qd_speeds_eom *e = v->e;
-    cli_name M = pick(v, "M"), f = pick(v, "f"), q = pick(v, "q"), u = pick(v, "u");
-    cli_name kin = pick(v, "kin");
+    qd__render_name M = pick(v, "M"), f = pick(v, "f"), q = pick(v, "q"), u = pick(v, "u");
+    qd__render_name kin = pick(v, "kin");
     qd_buf_printf(b, "# qdot eom %s (speeds, %s): %s.diff(t) = %s and %s*%s.diff(t) = %s\n"
-                  "from sympy import *\n\nt = Symbol('t')\n", v->mf->path,
+                  "from sympy import *\n\nt = Symbol('t')\n", v->source,
                   qd_speeds_method_name(e->method), q.s, kin.s, M.s, u.s, f.s);
     for (size_t j = 0; j < e->n; j++)
-        cli_eom_sympy_bind(v->ctx, b, e->q[j], true);
+        qd__render_sympy_bind(v->ctx, b, e->q[j], true);
     for (size_t r = 0; r < e->m; r++)
-        cli_eom_sympy_bind(v->ctx, b, e->u[r], true);
+        qd__render_sympy_bind(v->ctx, b, e->u[r], true);
     for (size_t i = 0; i < qd_model_nparams(mdl); i++)
-        cli_eom_sympy_bind(v->ctx, b, qd_model_param(mdl, i), false);
+        qd__render_sympy_bind(v->ctx, b, qd_model_param(mdl, i), false);
     qd_status st = sympy_functions(v, b);
     qd_buf_puts(b, "\n");
     if (st == QD_OK)
@@ -499,8 +480,8 @@ static qd_status write_sympy(const cli_speeds_view *v, qd_buf *b) {
 
 /* The doubles the block reads: q, u, u' (when S or lambda need them), t and
  * the parameters. */
-static void c_inputs(const cli_speeds_view *v, qd_buf *b) {
-    const qd_model *mdl = v->mf->model;
+static void c_inputs(const view *v, qd_buf *b) {
+    const qd_model *mdl = v->m;
     const qd_speeds_eom *e = v->e;
     qd_buf_puts(b, "/* inputs (doubles in scope):");
     for (size_t j = 0; j < e->n; j++) {
@@ -542,10 +523,10 @@ static void c_add(c_outs *o, const qd_expr *x, const char *base, long i, long j)
     o->n++;
 }
 
-static void c_fill(const cli_speeds_view *v, c_outs *o) {
+static void c_fill(const view *v, c_outs *o) {
     const qd_speeds_eom *e = v->e;
     long n = (long)e->n, m = (long)e->m;
-    cli_name qd = pick(v, "qd"), M = pick(v, "M"), f = pick(v, "f");
+    qd__render_name qd = pick(v, "qd"), M = pick(v, "M"), f = pick(v, "f");
     for (long j = 0; j < n; j++)
         c_add(o, e->kin[j], qd.s, j, -1);
     for (long i = 0; i < m * m; i++)
@@ -560,15 +541,15 @@ static void c_fill(const cli_speeds_view *v, c_outs *o) {
         c_add(o, e->mult[k], pick(v, "lambda").s, k, -1);
 }
 
-static qd_status write_c(const cli_speeds_view *v, qd_buf *b) {
+static qd_status write_c(const view *v, qd_buf *b) {
     const qd_speeds_eom *e = v->e;
     size_t nout = e->n + e->m * e->m + 2 * e->m + 1 + e->ncon;
-    c_outs o = {0, malloc(nout * sizeof *o.x), malloc(nout * sizeof *o.names),
-                malloc(nout * sizeof *o.lhs)};
+    c_outs o = {0, qd__malloc(v->ctx, nout * sizeof *o.x), qd__malloc(v->ctx, nout * sizeof *o.names),
+                qd__malloc(v->ctx, nout * sizeof *o.lhs)};
     qd_status st = QD_ERR_NOMEM;
     if (o.x && o.names && o.lhs) {
         c_fill(v, &o);
-        qd_buf_printf(b, "/* qdot eom %s (speeds, %s): q' = %s, %s u' = %s", v->mf->path,
+        qd_buf_printf(b, "/* qdot eom %s (speeds, %s): q' = %s, %s u' = %s", v->source,
                       qd_speeds_method_name(e->method), pick(v, "qd").s, pick(v, "M").s,
                       pick(v, "f").s);
         if (e->acc)
@@ -581,19 +562,89 @@ static qd_status write_c(const cli_speeds_view *v, qd_buf *b) {
         c_inputs(v, b);
         st = qd_print_c_block(v->ctx, o.n, o.x, o.lhs, b);
     }
-    free(o.x);
-    free(o.names);
-    free(o.lhs);
+    qd__free(o.x);
+    qd__free(o.names);
+    qd__free(o.lhs);
     return st;
 }
 
-qd_status cli_speeds_write(const cli_speeds_view *v, cli_eom_format fmt, qd_buf *out) {
+
+/* ---- at a state ------------------------------------------------------------- */
+
+/* Every number at the state is finite; else the error naming the first
+ * that is not (1/sin(theta) at theta = 0: the speed map is singular there). */
+static qd_status finite_at(qd_ctx *ctx, const qd_speeds_eom *e, const double *num) {
+    size_t total = e->n + e->m + (e->mult ? e->ncon : 0);
+    for (size_t i = 0; i < total; i++) {
+        if (isfinite(num[i]))
+            continue;
+        const char *what = i < e->n ? qd_expr_name(e->q[i])
+                         : i < e->n + e->m ? qd_expr_name(e->u[i - e->n])
+                                           : qd_expr_name(e->con[i - e->n - e->m].lambda);
+        qd_ctx_error(ctx, QD_ERR_NUMERIC, "at this state %s%s is not a finite number (the speeds "
+                     "may not determine the velocities there)", what, i < e->n + e->m ? "'" : "");
+        return QD_ERR_NUMERIC;
+    }
+    return QD_OK;
+}
+
+/* q', u' and the multipliers at the state (qd_speeds_eval) into num. */
+static qd_status numbers(const view *v, const qd_render_opts *o, double *num) {
+    const qd_speeds_eom *e = v->e;
+    qd_status st = qd_speeds_eval(v->ctx, e, o->nstate, o->syms, o->vals, num, num + e->n,
+                                  e->mult ? num + e->n + e->m : NULL);
+    if (st == QD_OK)
+        return finite_at(v->ctx, e, num);
+    if (st != QD_ERR_NOMEM) {
+        char why[512];
+        snprintf(why, sizeof why, "%s", qd_ctx_message(v->ctx)[0] ? qd_ctx_message(v->ctx)
+                                                                   : qd_status_str(st));
+        qd_ctx_clear_error(v->ctx);
+        qd_ctx_error(v->ctx, st, "cannot evaluate the equations at this state: %s", why);
+    }
+    return st;
+}
+
+static qd_status render(const view *v, qd_render_format fmt, qd_buf *out) {
     switch (fmt) {
-    case QD_EOM_LATEX: return write_latex(v, out);
-    case QD_EOM_JSON: return write_json(v, out);
-    case QD_EOM_SYMPY: return write_sympy(v, out);
-    case QD_EOM_C: return write_c(v, out);
-    case QD_EOM_TEXT: break;
+    case QD_RENDER_LATEX: return write_latex(v, out);
+    case QD_RENDER_JSON: return write_json(v, out);
+    case QD_RENDER_SYMPY: return write_sympy(v, out);
+    case QD_RENDER_C: return write_c(v, out);
+    case QD_RENDER_TEXT: break;
     }
     return write_text(v, out);
+}
+
+qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
+                           const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
+    bool at = o && o->nstate;
+    if ((unsigned)fmt > QD_RENDER_C || (at && fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON)) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "the equations in speeds at a state print as text or json");
+        return QD_ERR_ARG;
+    }
+    view v = {.ctx = ctx, .m = m, .source = o && o->source ? o->source : "model", .e = e,
+              .multipliers = o && o->multipliers};
+    qd_render_opts full = {0};
+    double *num = at ? qd__calloc(ctx, e->n + e->m + e->ncon + 1, sizeof *num) : NULL;
+    qd_status st = at && !num ? QD_ERR_NOMEM : QD_OK;
+    if (st == QD_OK && at)
+        st = qd__render_state(ctx, m, o, &full);
+    if (st == QD_OK && at) {
+        st = numbers(&v, &full, num);
+        v.at = &full;
+        v.qd = num;
+        v.ud = num + e->n;
+        v.lambda = e->mult ? num + e->n + e->m : NULL;
+    }
+    if (st == QD_OK)
+        st = render(&v, fmt, out);
+    if (st == QD_OK && out->failed) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
+        st = QD_ERR_NOMEM;
+    }
+    qd__free(num);
+    qd__render_state_free(&full);
+    return st;
 }

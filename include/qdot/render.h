@@ -1,0 +1,149 @@
+/*
+ * qdot/render.h - whole systems printed: the equations M q'' = f of a model
+ * (qdot/mech.h) and its equations in generalized speeds (qdot/speeds.h) as
+ * text, LaTeX, JSON, SymPy or C, appended to a qd_buf (qdot/print.h).
+ *
+ * Text is for reading (entries in the model language's syntax); LaTeX is one
+ * align environment; JSON is for programs (expressions as strings in the text
+ * syntax, numbers as numbers at a state); SymPy is a script that runs as it
+ * is and rebuilds M and f (python: exec it, or see docs/python.md); C is one
+ * qd_print_c_block, so common subexpressions are shared across M and f.
+ * The names a SymPy or C rendering gives its results (M, f, q, qdd, A, b,
+ * lam, ...) get a trailing _ for each clash with a name of the model.
+ *
+ * `qdot eom` is these functions and a few lines of printing.
+ */
+#ifndef QDOT_RENDER_H
+#define QDOT_RENDER_H
+
+#include "mech.h"
+#include "model.h"
+#include "print.h"
+#include "speeds.h"
+#include "form.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum qd_render_format {
+    QD_RENDER_TEXT,
+    QD_RENDER_LATEX,
+    QD_RENDER_JSON,
+    QD_RENDER_SYMPY,
+    QD_RENDER_C
+} qd_render_format;
+
+/* "text", "latex", "json", "sympy", "c"; NULL for another value. */
+QD_API const char *qd_render_format_name(qd_render_format f);
+/* The format of that name; false (and *out unchanged) for another name. */
+QD_API bool qd_render_format_parse(const char *name, qd_render_format *out);
+
+/* "holonomic", "integrable" or "nonholonomic". */
+QD_API const char *qd_con_kind_name(qd_con_kind k);
+
+typedef struct qd_render_opts {
+    /* The model's name in the renderings' headers ("model: NAME", the SymPy
+     * and C comments, JSON "model"); NULL: "model". */
+    const char *source;
+    /* At a state: nstate symbols with their values, as qd_eval takes them
+     * (every coordinate, velocity and t, and the parameters when a value
+     * other than the model's is wanted; a model with speeds: the speeds
+     * instead of the velocities).  The entries of M, f, q'', A, b, the
+     * multipliers, R = A^T lambda, T and the model's `reaction` statements
+     * (qd_eom_reaction) are then printed as numbers.  nstate 0: the
+     * expressions.  Text and JSON only with speeds. */
+    size_t nstate;
+    const qd_expr *const *syms;
+    const double *vals;
+    /* With speeds: the multipliers were asked for, so that the rendering
+     * says "none" for a model without constraints. */
+    bool multipliers;
+    /* Where a note goes (a `reaction` whose constraint was eliminated),
+     * one line each with its newline; NULL: dropped. */
+    qd_buf *notes;
+} qd_render_opts;
+
+/* Append e, the equations of m (qd_eom_derive_opts; solved or not), to out
+ * in fmt.  o NULL: symbolic, source "model".  At a state, a singular mass
+ * matrix is QD_ERR_SINGULAR with the state in the message; another failure
+ * to evaluate is its status with "cannot evaluate the equations at this
+ * state: ..." (both recorded in ctx). */
+QD_API qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                               const qd_render_opts *o, qd_render_format fmt, qd_buf *out);
+
+/* The same for the equations in generalized speeds: q' = W u + w, then
+ * M_u u' = f_u, the rates u' when solved (qd_speeds_solve), S and the
+ * multipliers when derived.  At a state (text and JSON; QD_ERR_ARG for the
+ * others): q', u' and the multipliers as numbers (qd_speeds_eval); a number
+ * that is not finite is QD_ERR_NUMERIC naming it. */
+QD_API qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
+                                  const qd_render_opts *o, qd_render_format fmt, qd_buf *out);
+
+/* Hamel's coefficients gamma_ikm of e (qd_speeds_hamel_coefficients): in
+ * text the nonzero ones by index names (a speed, then a constraint), in
+ * JSON {"indices": [...], "gamma": [i][k][m]}.  QD_ERR_ARG for another
+ * format. */
+QD_API qd_status qd_render_hamel(qd_ctx *ctx, const qd_speeds_eom *e, qd_render_format fmt,
+                                 qd_buf *out);
+
+/* The verdict of `qdot check` from the model's numbers (qd_eom_audit at
+ * the parameters' values and the initial state): ok, or a certified "no"
+ * with its witness.  reason is a machine code next to the English message:
+ * "mass_not_positive_definite" (witness: the pivot of the mass matrix for
+ * coordinate `about`) or "constraint_not_real" (witness: the smallest
+ * residual the constraint `about` reaches near the initial state).
+ * statement: where the model says it, for qd_model_where ("T", "L", a
+ * coordinate, "constraint:NAME"); hint: what to look at.  off_constraint:
+ * the initial state is off a constraint (by residual, over 1e-4), which a
+ * run projects away: a note, not a "no".  No numbers to judge by (a
+ * parameter without a value) is ok, with judged false. */
+typedef struct qd_check_verdict {
+    bool ok, judged;
+    const char *reason; /* NULL when ok */
+    char message[320];
+    const char *about;  /* a coordinate or a constraint name */
+    double witness;
+    char statement[160];
+    const char *hint;
+    bool off_constraint;
+    double residual;
+    const char *residual_con;
+} qd_check_verdict;
+
+/* The verdict of e, the equations of m, into *v; QD_OK (also for a "no"),
+ * QD_ERR_NOMEM. */
+QD_API qd_status qd_check_verdict_of(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                     qd_check_verdict *v);
+
+/* The summary `qdot check` prints of a model whose verdict is v: in text
+ * the coordinates, degrees of freedom, parameters, what T, V, U, D and L
+ * depend on, forces, constraints and their kinds, impulsive statements,
+ * cyclic coordinates, time dependence and the energy integral, the size of
+ * the equations (nothing when v says "no": the caller shows the message at
+ * its statement); in JSON the same as data with "ok", and "reason",
+ * "message" and "witness" for a "no".  QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                 const qd_render_opts *o, const qd_check_verdict *v,
+                                 qd_render_format fmt, qd_buf *out);
+
+/* The reduction f of the quadratic form phi (qd_qform_reduce): in text the
+ * form, its symmetric matrix, Lagrange's sum of squares c_k y_k^2, the rank
+ * and Sylvester's inertia (or "undecided"); in JSON "variables", "form",
+ * "matrix", "coefficients", "linear_forms", "sum_of_squares", "paired",
+ * "rank", "inertia" ({"positive", "negative", "zero"} or null) and "kind".
+ * QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
+                                 qd_render_format fmt, qd_buf *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given), NULL, 0, false or NaN, as its return type has it. NULL is an
+ * accepted value, as documented at the function, for: qd_render_eom (o),
+ * qd_render_speeds (o), qd_render_check (o). Exception: qd_render_format_parse(NULL, out) is
+ * false. */
+#endif

@@ -1,0 +1,138 @@
+/*
+ * src/render/qform.c - a quadratic form's reduction printed (qd_render_qform,
+ * qdot/render.h): its matrix, Lagrange's sum of squares and Sylvester's
+ * inertia, as `qdot form` and Python's QuadraticForm show them.
+ */
+#include "render.h"
+
+#include "qdot/json.h"
+#include "../base/args.h"
+
+static void put(qd_ctx *ctx, qd_buf *b, const qd_expr *x) {
+    qd_print(ctx, x, QD_FMT_TEXT, b);
+}
+
+/* sum c_k y_k^2, as written (not expanded). */
+static const qd_expr *squares(qd_ctx *ctx, const qd_qform *f) {
+    const qd_expr *s = qd_int(ctx, 0);
+    for (size_t k = 0; k < f->nsq; k++)
+        s = qd_add(ctx, s, qd_mul(ctx, f->coef[k], qd_powi(ctx, f->lin[k], 2)));
+    return s;
+}
+
+static void write_text(qd_ctx *ctx, qd_buf *b, const qd_expr *phi, const qd_qform *f) {
+    size_t n = f->n;
+    qd_buf_puts(b, "quadratic form in ");
+    for (size_t i = 0; i < n; i++)
+        qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(f->x[i]));
+    qd_buf_puts(b, "\n  phi = ");
+    put(ctx, b, phi);
+    qd_buf_puts(b, "\nmatrix (phi = x^T a x, a symmetric)\n");
+    for (size_t i = 0; i < n; i++) {
+        qd_buf_puts(b, "  [");
+        for (size_t j = 0; j < n; j++) {
+            qd_buf_puts(b, j ? ", " : "");
+            put(ctx, b, f->a[i * n + j]);
+        }
+        qd_buf_puts(b, "]\n");
+    }
+    qd_buf_printf(b, "Lagrange's reduction (completing squares%s)\n",
+                  f->paired ? "; the pair x_i = u + v, x_j = u - v where no square was left" : "");
+    qd_buf_puts(b, "  phi = ");
+    put(ctx, b, squares(ctx, f));
+    qd_buf_puts(b, "\n");
+    for (size_t k = 0; k < f->nsq; k++) {
+        qd_buf_printf(b, "  c%zu = ", k + 1);
+        put(ctx, b, f->coef[k]);
+        qd_buf_printf(b, ", y%zu = ", k + 1);
+        put(ctx, b, f->lin[k]);
+        qd_buf_puts(b, "\n");
+    }
+    qd_buf_printf(b, "rank %zu\n", f->nsq);
+    if (f->decided)
+        qd_buf_printf(b, "inertia (Sylvester): n+ = %zu, n- = %zu, n0 = %zu (%s)\n", f->npos,
+                      f->nneg, f->nzero, f->kind);
+    else
+        qd_buf_printf(b, "inertia: undecided (a coefficient of unknown sign); n0 = %zu\n",
+                      f->nzero);
+}
+
+static void write_json(qd_ctx *ctx, qd_json *j, const qd_expr *phi, const qd_qform *f) {
+    size_t n = f->n;
+    qd_json_begin_object(j);
+    qd_json_key(j, "variables");
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        qd_json_string(j, qd_expr_name(f->x[i]));
+    qd_json_end_array(j);
+    qd_json_key(j, "form");
+    qd_json_expr(j, ctx, phi);
+    qd_json_key(j, "matrix");
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < n; i++) {
+        qd_json_begin_array(j);
+        for (size_t k = 0; k < n; k++)
+            qd_json_expr(j, ctx, f->a[i * n + k]);
+        qd_json_end_array(j);
+    }
+    qd_json_end_array(j);
+    qd_json_key(j, "coefficients");
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < f->nsq; k++)
+        qd_json_expr(j, ctx, f->coef[k]);
+    qd_json_end_array(j);
+    qd_json_key(j, "linear_forms");
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < f->nsq; k++)
+        qd_json_expr(j, ctx, f->lin[k]);
+    qd_json_end_array(j);
+    qd_json_key(j, "sum_of_squares");
+    qd_json_expr(j, ctx, squares(ctx, f));
+    qd_json_key(j, "paired");
+    qd_json_bool(j, f->paired);
+    qd_json_key(j, "rank");
+    qd_json_number(j, (double)f->nsq);
+    qd_json_key(j, "inertia");
+    if (f->decided) {
+        qd_json_begin_object(j);
+        qd_json_key(j, "positive");
+        qd_json_number(j, (double)f->npos);
+        qd_json_key(j, "negative");
+        qd_json_number(j, (double)f->nneg);
+        qd_json_key(j, "zero");
+        qd_json_number(j, (double)f->nzero);
+        qd_json_end_object(j);
+    } else {
+        qd_json_null(j);
+    }
+    qd_json_key(j, "kind");
+    if (f->kind)
+        qd_json_string(j, f->kind);
+    else
+        qd_json_null(j);
+    qd_json_end_object(j);
+}
+
+qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
+                          qd_render_format fmt, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && phi && f && out);
+    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "a quadratic form prints as text or json");
+        return QD_ERR_ARG;
+    }
+    qd_status st = QD_OK;
+    if (fmt == QD_RENDER_JSON) {
+        qd_json j;
+        qd_json_init(&j, out);
+        write_json(ctx, &j, phi, f);
+        qd_buf_puts(out, "\n");
+        st = qd__render_json_status(&j, out, QD_OK);
+    } else {
+        write_text(ctx, out, phi, f);
+    }
+    if (st == QD_OK && out->failed)
+        st = QD_ERR_NOMEM;
+    if (st != QD_OK)
+        qd_ctx_error(ctx, st, "cannot print the quadratic form: %s", qd_status_str(st));
+    return st;
+}
