@@ -24,7 +24,6 @@
 #include "progress.h"
 #include "sim_cli.h"
 #include "sweep_hdf5.h"
-#include "sweep_map.h"
 #include "sweep_mpi.h"
 
 static const char usage_text[] =
@@ -35,11 +34,6 @@ static const char usage_text[] =
     "[--map-measure NAME]] [simulate options: --method, --rtol, --dt, --set, "
     "--initial, --native, ...]";
 
-/* escape:EXPR>VALUE in the --measure text: EXPR at [e0, e1), VALUE at [v0, v1). */
-typedef struct sweep_escape {
-    size_t e0, e1, v0, v1;
-} sweep_escape;
-
 typedef struct sweep_args {
     cli_sim_args sim;
     const char *grid, *random, *list, *measure, *section, *format;
@@ -47,9 +41,7 @@ typedef struct sweep_args {
     double renorm, transient; /* the lyapunov measures */
     bool has_n;
     size_t nuser;          /* --event and --stop-at: the first is the measure event's */
-    sweep_escape escapes[QD_SIM_MAX_LIST]; /* each escape:EXPR>VALUE */
-    size_t nescapes;
-    cli_sweep_map map;     /* --map FILE.png, --map-measure NAME */
+    const char *map, *map_measure; /* --map FILE.png, --map-measure NAME */
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
@@ -103,6 +95,10 @@ static int own_option(int argc, char **argv, int *i, sweep_args *a) {
         return cli_once("-o", &a->sim.out, v);
     if ((v = cli_value(argc, argv, i, "--n")))
         return (a->has_n = true), whole("--n", v, &a->n);
+    if ((v = cli_value(argc, argv, i, "--map")))
+        return cli_once("--map", &a->map, v);
+    if ((v = cli_value(argc, argv, i, "--map-measure")))
+        return cli_once("--map-measure", &a->map_measure, v);
     if ((v = cli_value(argc, argv, i, "--seed")))
         return whole("--seed", v, &a->seed);
     if ((v = cli_value(argc, argv, i, "--threads")))
@@ -131,8 +127,6 @@ static int parse_option(int argc, char **argv, int *i, void *data) {
     int rc;
     if (cli_sim_took_option(argc, argv, i, &a->sim, &rc))
         return rc;
-    if ((rc = cli_sweep_map_option(argc, argv, i, &a->map)) != 0)
-        return rc == 1 ? QD_EXIT_OK : rc - 100;
     return own_option(argc, argv, i, a);
 }
 
@@ -147,6 +141,10 @@ static int check_args(const sweep_args *a) {
         cli_diag_error("%s %s\n%s", how > 1 ? "give only" : "missing:", missing, usage_text);
         return QD_EXIT_USAGE;
     }
+    if (a->map_measure && !a->map) {
+        cli_diag_error("--map-measure says what to draw: give the file with --map FILE.png");
+        return QD_EXIT_USAGE;
+    }
     if (a->has_n && !a->random) {
         cli_diag_error("--n is for --random");
         return QD_EXIT_USAGE;
@@ -154,93 +152,19 @@ static int check_args(const sweep_args *a) {
     return QD_EXIT_OK;
 }
 
-/* ---- measures that read an expression -------------------------------------- */
+/* ---- what the measures need (qd_sweep_needs) ------------------------------ */
 
-/* The EXPR of "max:EXPR", "min:EXPR" or "escape:EXPR>VALUE" at
- * text[a, b), as [*ea, *eb); false for the other measures. */
-static bool measure_expr(const char *text, size_t a, size_t b, size_t *ea, size_t *eb) {
-    const char *colon = memchr(text + a, ':', b - a);
-    if (!colon)
-        return false;
-    size_t h = a, c = (size_t)(colon - text);
-    while (h < c && isspace((unsigned char)text[h]))
-        h++;
-    bool escape = !strncmp(text + h, "escape", 6);
-    if (strncmp(text + h, "max", 3) && strncmp(text + h, "min", 3) && !escape)
-        return false;
-    *ea = c + 1;
-    *eb = b;
-    if (escape)
-        while (*eb > *ea && text[*eb - 1] != '>' && text[*eb - 1] != '<')
-            (*eb)--;
-    if (escape && *eb > *ea)
-        (*eb)--;
-    while (*ea < *eb && isspace((unsigned char)text[*ea]))
-        (*ea)++;
-    while (*eb > *ea && isspace((unsigned char)text[*eb - 1]))
-        (*eb)--;
-    return *eb > *ea;
-}
-
-static bool is_column(const cli_sim *c, const char *name) {
-    size_t nc = qd_sim_columns(c->s, c->opts.method, NULL, 0);
-    const char **names = malloc((nc + 1) * sizeof *names);
-    bool found = false;
-    if (names) {
-        qd_sim_columns(c->s, c->opts.method, names, nc);
-        for (size_t j = 0; j < nc && !found; j++)
-            found = !strcmp(names[j], name);
-    }
-    free(names);
-    return found;
-}
-
-/* Each EXPR that is not a column of the run yet becomes an output column
- * named by its text, which is what the library's measure reads. */
-static int measure_outputs(cli_sim *c, const char *spec) {
-    for (size_t p = 0; spec[p];) {
-        size_t e = cli_item_end(spec, p), a, b;
-        if (measure_expr(spec, p, e, &a, &b)) {
-            char *x = malloc(b - a + 1);
-            if (!x)
-                return QD_EXIT_FAIL;
-            memcpy(x, spec + a, b - a);
-            x[b - a] = '\0';
-            int rc = is_column(c, x) ? QD_EXIT_OK : cli_sim_output_in(c, "--measure", spec, a, b);
-            free(x);
-            if (rc != QD_EXIT_OK)
-                return rc;
-        }
-        p = spec[e] ? e + 1 : e;
-    }
-    return QD_EXIT_OK;
-}
-
-/* After the user's events: the section (poincare-count counts its
- * crossings), then an event EXPR = VALUE per escape:EXPR>VALUE, whose row
- * puts the library's interpolated escape time on the crossing itself. */
-static bool has_measure(const char *spec, const char *name) {
-    size_t len = strlen(name);
-    for (size_t p = 0; spec[p];) {
-        size_t e = cli_item_end(spec, p), a = p, b = e;
-        while (a < b && isspace((unsigned char)spec[a]))
-            a++;
-        while (b > a && isspace((unsigned char)spec[b - 1]))
-            b--;
-        if (b - a == len && !strncmp(spec + a, name, len))
-            return true;
-        p = spec[e] ? e + 1 : e;
-    }
-    return false;
-}
-
+/* Before the model: the event or section a measure needs, and the section
+ * as the event after the user's (poincare-count counts its crossings). */
 static int more_events(sweep_args *a) {
+    unsigned flags;
+    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
     a->nuser = a->sim.nevents;
-    if (!a->nuser && has_measure(a->measure, "event")) {
+    if (!a->nuser && (flags & QD_SWEEP_NEEDS_EVENT)) {
         cli_diag_error("the measure event needs --event or --stop-at (its first is the one)");
         return QD_EXIT_USAGE;
     }
-    if (!a->section && has_measure(a->measure, "poincare-count")) {
+    if (!a->section && (flags & QD_SWEEP_NEEDS_SECTION)) {
         cli_diag_error("the measure poincare-count needs --section");
         return QD_EXIT_USAGE;
     }
@@ -248,37 +172,27 @@ static int more_events(sweep_args *a) {
         a->sim.event_label[a->sim.nevents] = "--section";
         a->sim.events[a->sim.nevents++] = a->section;
     }
-    const char *spec = a->measure;
-    for (size_t p = 0; spec[p];) {
-        size_t e = cli_item_end(spec, p), x0, x1, h = p;
-        while (isspace((unsigned char)spec[h]))
-            h++;
-        if (!strncmp(spec + h, "escape", 6) && measure_expr(spec, p, e, &x0, &x1)) {
-            if (a->sim.nevents + a->nescapes == QD_SIM_MAX_LIST) {
-                cli_diag_error("at most %d events with the escapes", QD_SIM_MAX_LIST);
-                return QD_EXIT_USAGE;
-            }
-            /* EXPR, then the value after its '>' or '<' (added by escape_events) */
-            size_t v = x1;
-            while (v < e && spec[v] != '>' && spec[v] != '<')
-                v++;
-            a->escapes[a->nescapes++] = (sweep_escape){x0, x1, v + (v < e), e};
-        }
-        p = spec[e] ? e + 1 : e;
-    }
     return QD_EXIT_OK;
 }
 
-/* The escapes' events, after the user's and the section, read in the
- * --measure text (errors shown there, where the user wrote them). */
-static int escape_events(cli_sim *c, const sweep_args *a) {
-    for (size_t k = 0; k < a->nescapes; k++) {
-        const sweep_escape *x = &a->escapes[k];
-        int rc = cli_sim_crossing_in(c, "--measure", a->measure, x->e0, x->e1, x->v0, x->v1);
-        if (rc != QD_EXIT_OK)
-            return rc;
+/* The measures' outputs and escape crossings, read as --output and --event
+ * read them (the model's namespace), errors shown in the --measure text. */
+static int measure_needs(cli_sim *c, const char *spec) {
+    qd_sweep_need needs[2 * QD_SIM_MAX_LIST];
+    unsigned flags;
+    size_t n = qd_sweep_needs(c->s, spec, needs, 2 * QD_SIM_MAX_LIST, &flags);
+    if (n > 2 * QD_SIM_MAX_LIST) {
+        cli_diag_error("--measure: at most %d expressions", 2 * QD_SIM_MAX_LIST);
+        return QD_EXIT_USAGE;
     }
-    return QD_EXIT_OK;
+    int rc = QD_EXIT_OK;
+    for (size_t k = 0; rc == QD_EXIT_OK && k < n; k++) {
+        const qd_sweep_need *x = &needs[k];
+        rc = x->kind == QD_SWEEP_NEED_OUTPUT
+                 ? cli_sim_output_in(c, "--measure", spec, x->e0, x->e1)
+                 : cli_sim_crossing_in(c, "--measure", spec, x->e0, x->e1, x->v0, x->v1);
+    }
+    return rc;
 }
 
 /* ---- --list FILE.csv ------------------------------------------------------ */
@@ -533,6 +447,28 @@ static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) 
     return rc != QD_EXIT_OK ? rc : crc;
 }
 
+/* --map (qd_sweep_map): before the runs, what it draws; after, the map. */
+static int map_check(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t *col) {
+    qd_plot_format f;
+    if (a->map && (qd_plot_format_of(ctx, a->map, &f) != QD_OK ||
+                   qd_sweep_map_column(w, a->map_measure, col) != QD_OK))
+        return cli_diag_ctx(ctx);
+    return QD_EXIT_OK;
+}
+
+static int map_write(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, const double *rows,
+                     size_t col) {
+    if (!a->map)
+        return QD_EXIT_OK;
+    qd_plot *p = qd_plot_new(ctx, 0, 0);
+    int rc = p && qd_plot_set_title(p, a->sim.file) == QD_OK &&
+                     qd_sweep_map(w, rows, col, p) == QD_OK && qd_plot_write(p, a->map) == QD_OK
+                 ? QD_EXIT_OK
+                 : cli_diag_ctx(ctx);
+    qd_plot_free(p);
+    return rc;
+}
+
 static void summary(const sweep_result *r, unsigned threads, int ranks) {
     size_t failed = 0;
     for (size_t k = 0; k < r->nruns; k++)
@@ -562,7 +498,7 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         r.cols[j] = qd_sweep_col(w, j);
     size_t mapcol = 0;
     if (rc == QD_EXIT_OK)
-        rc = cli_sweep_map_check(&a->map, w, a->grid != NULL, &mapcol);
+        rc = map_check(c->ctx, w, a, &mapcol);
     /* under mpirun every rank gets here; only rank 0 (done.writer) writes */
     cli_mpi_done done = {.writer = true, .ranks = 1};
     if (rc == QD_EXIT_OK) {
@@ -579,7 +515,7 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     if (rc == QD_EXIT_OK && done.writer)
         rc = write_result(a, fmt, &r);
     if (rc == QD_EXIT_OK && done.writer)
-        rc = cli_sweep_map_write(&a->map, w, r.rows, mapcol, a->sim.file);
+        rc = map_write(c->ctx, w, a, r.rows, mapcol);
     /* the threads the pool started: asked for (0: the cores), at most the runs */
     if (rc == QD_EXIT_OK && done.writer)
         summary(&r, done.ranks > 1 ? done.threads : qd_sweep_threads(done.threads, r.nruns),
@@ -594,7 +530,9 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
 /* The measures lyapunov and lyapunov-spectrum: the variational equations
  * of the same model (qdot/lyapunov.h), or NULL when none is asked for. */
 static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly) {
-    if (!has_measure(a->measure, "lyapunov") && !has_measure(a->measure, "lyapunov-spectrum"))
+    unsigned flags;
+    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
+    if (!(flags & QD_SWEEP_NEEDS_LYAP))
         return QD_EXIT_OK;
     if (!c->e) {
         cli_diag_error("the lyapunov measures take a model in the multiplier form (not given "
@@ -609,9 +547,7 @@ static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly
 }
 
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
-    int rc = escape_events(c, a);
-    if (rc == QD_EXIT_OK)
-        rc = measure_outputs(c, a->measure);
+    int rc = measure_needs(c, a->measure);
     if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_new(c->ctx, c->s, c->mf.model) : NULL;

@@ -3880,6 +3880,40 @@ static void null_sweep(void **state)
     /* w NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_set_lyap(NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_sweep_needs */
+    /* spec NULL */
+    assert_true(qd_sweep_needs(F.sim, NULL, NULL, 1, F.u) == 0);
+    reset(&F);
+    /* flags NULL */
+    assert_true(qd_sweep_needs(F.sim, "q", NULL, 1, NULL) == 0);
+    reset(&F);
+    /* ---- qd_sweep_prepare */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_prepare(NULL, F.sim, "q", NULL, NULL));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_prepare(F.ctx, NULL, "q", NULL, NULL));
+    reset(&F);
+    /* spec NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_prepare(F.ctx, F.sim, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_map_column */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_column(NULL, "q", F.z));
+    reset(&F);
+    /* col NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_column(NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_sweep_map */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, F.d, 1, F.plot));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, NULL, 1, F.plot));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, F.d, 1, NULL));
+    reset(&F);
     /* ---- qd_sweep_nruns */
     /* w NULL */
     assert_true(qd_sweep_nruns(NULL) == 0);
