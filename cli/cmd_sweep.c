@@ -10,7 +10,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
-#include <ctype.h>
 #include <errno.h>
 #include <stdint.h>
 #include <math.h>
@@ -195,84 +194,41 @@ static int measure_needs(cli_sim *c, const char *spec) {
     return rc;
 }
 
-/* ---- --list FILE.csv ------------------------------------------------------ */
+/* ---- --list FILE.csv: the file's text, read by qd_sweep_list_csv ----------- */
 
-typedef struct list_csv {
-    char **names;
-    size_t nnames, nrows;
-    double *values;
-} list_csv;
-
-static void list_free(list_csv *l) {
-    for (size_t k = 0; k < l->nnames; k++)
-        free(l->names[k]);
-    free(l->names);
-    free(l->values);
-}
-
-static int list_header(list_csv *l, char *line) {
-    for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n")) {
-        while (isspace((unsigned char)*tok))
-            tok++;
-        size_t len = strlen(tok);
-        while (len && isspace((unsigned char)tok[len - 1]))
-            tok[--len] = '\0';
-        char **grown = realloc(l->names, (l->nnames + 1) * sizeof *grown);
-        if (!grown || !(grown[l->nnames] = strdup(tok)))
-            return (l->names = grown ? grown : l->names), QD_EXIT_FAIL;
-        l->names = grown;
-        l->nnames++;
-    }
-    return l->nnames ? QD_EXIT_OK : QD_EXIT_USAGE;
-}
-
-static int list_row(list_csv *l, char *line, const char *path, size_t lineno) {
-    double *grown = realloc(l->values, (l->nrows + 1) * l->nnames * sizeof *grown);
-    if (!grown)
-        return QD_EXIT_FAIL;
-    l->values = grown;
-    char *p = line;
-    for (size_t k = 0; k < l->nnames; k++) {
-        char *end;
-        double x = strtod(p, &end);
-        while (isspace((unsigned char)*end))
-            end++;
-        if (end == p || (*end != (k + 1 < l->nnames ? ',' : '\0'))) {
-            cli_diag_error("%s:%zu: expected %zu numbers separated by commas", path, lineno,
-                           l->nnames);
-            return QD_EXIT_USAGE;
-        }
-        grown[l->nrows * l->nnames + k] = x;
-        p = end + 1;
-    }
-    l->nrows++;
-    return QD_EXIT_OK;
-}
-
-static int list_read(const char *path, list_csv *l) {
+static int read_text(const char *path, char **text) {
     int rc = QD_EXIT_OK;
     FILE *f = cli_in_open(path, &rc);
     if (!f)
         return rc;
-    char line[4096];
-    size_t lineno = 0;
+    size_t n = 0, cap = 0;
+    char *t = NULL;
     errno = 0;
-    while (rc == QD_EXIT_OK && fgets(line, sizeof line, f)) {
-        lineno++;
-        line[strcspn(line, "\r\n")] = '\0';
-        if (!line[strspn(line, " \t")])
-            continue;
-        rc = l->nnames ? list_row(l, line, path, lineno) : list_header(l, line);
+    for (;;) {
+        if (cap - n < 4096) {
+            char *grown = cap < SIZE_MAX / 4 ? realloc(t, cap = 2 * cap + 4096) : NULL;
+            if (!grown) {
+                rc = QD_EXIT_FAIL;
+                cli_diag_error("out of memory reading %s", path);
+                break;
+            }
+            t = grown;
+        }
+        size_t k = fread(t + n, 1, cap - n - 1, f);
+        n += k;
+        if (k == 0)
+            break;
     }
     if (rc == QD_EXIT_OK && ferror(f)) {
         cli_diag_error("cannot read %s: %s", path, strerror(errno ? errno : EIO));
         rc = QD_EXIT_USAGE;
     }
     fclose(f);
-    if (rc == QD_EXIT_OK && !l->nrows) {
-        cli_diag_error("%s: a header of names and at least one row of numbers", path);
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK)
+        t[n] = '\0';
+    else
+        free(t);
+    *text = rc == QD_EXIT_OK ? t : NULL;
     return rc;
 }
 
@@ -291,12 +247,11 @@ static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
         return spec_error(ctx, "--random", a->random);
     if (!a->list)
         return QD_EXIT_OK;
-    list_csv l = {0};
-    int rc = list_read(a->list, &l);
-    if (rc == QD_EXIT_OK &&
-        qd_sweep_list(w, l.nnames, (const char *const *)l.names, l.nrows, l.values) != QD_OK)
-        rc = spec_error(ctx, a->list, NULL);
-    list_free(&l);
+    char *text = NULL;
+    int rc = read_text(a->list, &text);
+    if (rc == QD_EXIT_OK && qd_sweep_list_csv(w, text) != QD_OK)
+        rc = spec_error(ctx, a->list, text);
+    free(text);
     return rc;
 }
 

@@ -51,6 +51,11 @@ QD_API qd_status qd_sweep_random(qd_sweep *w, const char *spec, size_t n, uint64
 /* nrows runs, values row-major (nrows * nnames numbers). */
 QD_API qd_status qd_sweep_list(qd_sweep *w, size_t nnames, const char *const *names, size_t nrows,
                                const double *values);
+/* The same from CSV text (qdot sweep --list FILE.csv): a header of names
+ * separated by commas, then one row of numbers a run; blank lines are
+ * skipped.  QD_ERR_PARSE located in text for an empty name, a missing or
+ * extra field, a field that is not a number, or no row. */
+QD_API qd_status qd_sweep_list_csv(qd_sweep *w, const char *text);
 
 /* The measures, in the order given (a later call replaces them). */
 QD_API qd_status qd_sweep_measures(qd_sweep *w, const char *spec);

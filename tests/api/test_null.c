@@ -3861,6 +3861,13 @@ static void null_sweep(void **state)
     /* values NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_list(NULL, 1, (const char * const *)F.names, 1, NULL));
     reset(&F);
+    /* ---- qd_sweep_list_csv */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_list_csv(NULL, "q"));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_list_csv(NULL, NULL));
+    reset(&F);
     /* ---- qd_sweep_measures */
     /* w NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_measures(NULL, "q"));

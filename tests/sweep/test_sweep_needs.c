@@ -11,7 +11,10 @@
  *     an error in an expression located in the measure text;
  *   - the map of the oscillator's period 2 pi sqrt(m/k) over a grid in
  *     (k, m): its range the least and greatest period, its axes the grid's;
- *     a random sweep and an unknown measure refused, naming the option field.
+ *     a random sweep and an unknown measure refused, naming the option field;
+ *   - the runs from CSV text (qd_sweep_list_csv): the file's order, blank
+ *     lines skipped, the oscillator's final x = v sin(w T)/w with w =
+ *     sqrt(k); a field that is not a number located at its line and column.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -138,11 +141,47 @@ static void test_map(void **state) {
     sf_free(f);
 }
 
+static void test_list_csv(void **state) {
+    (void)state;
+    sim_fix *f = sf_load("coordinates x\nparameters k = 1\nT = x'^2/2\nV = k*x^2/2\n"
+                         "initial x = 0, x' = 1\n");
+    assert_int_equal(qd_sim_compile(f->s), QD_OK);
+    qd_sweep *w = qd_sweep_new(f->ctx, f->s, f->m);
+    assert_int_equal(qd_sweep_list_csv(w, " k , x'\r\n4, 0.5\n\n  \n1,2\n9,1"), QD_OK);
+    assert_int_equal(qd_sweep_nruns(w), 3);
+    assert_int_equal(qd_sweep_measures(w, "final"), QD_OK);
+    double row[4], want[3][2] = {{4, 0.5}, {1, 2}, {9, 1}}, T = 1.5;
+    qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = T, .rtol = 1e-12, .atol = 1e-14,
+                     .q0 = f->q0, .qd0 = f->qd0};
+    for (size_t i = 0; i < 3; i++) {
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_true(row[0] == want[i][0] && row[1] == want[i][1]);
+        double om = sqrt(row[0]);
+        assert_true(fabs(row[2] - row[1] * sin(om * T) / om) < 1e-9);
+    }
+    const char *bad = "k,x'\n1,2\n3, y\n";
+    qd_ctx_clear_error(f->ctx);
+    assert_int_equal(qd_sweep_list_csv(w, bad), QD_ERR_PARSE);
+    const qd_diag *d = qd_ctx_diag(f->ctx);
+    assert_true(d->located);
+    assert_int_equal(d->line, 3);
+    assert_int_equal(d->col, 4); /* under the y */
+    qd_ctx_clear_error(f->ctx);
+    assert_int_equal(qd_sweep_list_csv(w, "k,x'\n1,2,3\n"), QD_ERR_PARSE);
+    qd_ctx_clear_error(f->ctx);
+    assert_int_equal(qd_sweep_list_csv(w, "k,x'\n"), QD_ERR_PARSE); /* no row */
+    qd_ctx_clear_error(f->ctx);
+    assert_int_equal(qd_sweep_list_csv(w, "k,z\n1,2\n"), QD_ERR_ARG); /* no input z */
+    qd_sweep_free(w);
+    sf_free(f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_needs),
         cmocka_unit_test(test_prepare_free_particle),
         cmocka_unit_test(test_map),
+        cmocka_unit_test(test_list_csv),
     };
     return cmocka_run_group_tests(tests, 0, NULL);
 }
