@@ -3373,6 +3373,94 @@ static void null_scene(void **state)
     /* s NULL */
     qd_scene_shape_free(NULL);
     reset(&F);
+    /* ---- qd_scene_choose */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(NULL, F.model, (const char * const *)F.names, 1, NULL, F.z));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, NULL, (const char * const *)F.names, 1, NULL, F.z));
+    reset(&F);
+    /* words NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, F.model, NULL, 1, NULL, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, F.model, (const char * const *)F.names, 1, NULL, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, F.model, (const char * const *)F.names, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scene_find */
+    /* pts NULL */
+    assert_true(qd_scene_find(NULL, 1, "q", 1, F.z) == 0);
+    reset(&F);
+    /* name NULL */
+    assert_true(qd_scene_find(NULL, 1, NULL, 1, F.z) == 0);
+    reset(&F);
+    /* at NULL */
+    assert_true(qd_scene_find(NULL, 1, "q", 1, NULL) == 0);
+    reset(&F);
+    /* ---- qd_scene_named */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(NULL, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(F.ctx, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(F.ctx, NULL, 1, NULL, 1, F.z));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(F.ctx, NULL, 1, (const char * const *)F.names, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_pairs */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(NULL, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(F.ctx, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* pairs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(F.ctx, NULL, 1, NULL, 1, F.z));
+    reset(&F);
+    /* ends NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(F.ctx, NULL, 1, (const char * const *)F.names, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_noutputs */
+    /* pts NULL */
+    assert_true(qd_scene_noutputs(NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_scene_add_outputs */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(NULL, F.sim, F.model, NULL, 1));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(F.ctx, NULL, F.model, NULL, 1));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(F.ctx, F.sim, NULL, NULL, 1));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(F.ctx, F.sim, F.model, NULL, 1));
+    reset(&F);
+    /* ---- qd_scene_nframes */
+    /* no pointer argument */
+    /* ---- qd_scene_sample */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(NULL, NULL, 1, F.d, 1, 1, 1, 1, 1, 1, (qd_scene_frames *)(void *)F.blob));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(F.ctx, NULL, 1, F.d, 1, 1, 1, 1, 1, 1, (qd_scene_frames *)(void *)F.blob));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(F.ctx, NULL, 1, NULL, 1, 1, 1, 1, 1, 1, (qd_scene_frames *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(F.ctx, NULL, 1, F.d, 1, 1, 1, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_frames_free */
+    /* f NULL */
+    qd_scene_frames_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 

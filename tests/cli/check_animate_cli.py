@@ -133,7 +133,8 @@ def main():
     rc, _, err = run(qdot, 'animate', DP, '--out', tmp / 'rows.csv', '-o', tmp / 'none.html')
     check(rc == 2 and '--out is simulate' in err, f'--out: {rc} {err}')
     rc, _, err = run(qdot, 'animate', DP, '--spring', 'p1', '-o', tmp / 'none.html')
-    check(rc == 2 and '--spring takes two points' in err, f'--spring p1: {rc} {err}')
+    check(rc == 2 and 'a spring takes two points' in err and '(--spring)' in err,
+          f'--spring p1: {rc} {err}')
 
     # the rods: both pendulum links have constant length; a spring is not a rod
     html = tmp / 'dp.html'
