@@ -17,7 +17,7 @@ build: build/Makefile
 demo:
 	./scripts/deps.sh build
 	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQDOT_TESTS=OFF
-	$(CMAKE) --build build -j $(JOBS) --target qdot_cli
+	$(CMAKE) --build build -j $(JOBS) --target qdot_cli qdot
 	./build/qdot eom examples/double_pendulum.qd
 	./build/qdot modes examples/double_pendulum.qd
 	./build/qdot simulate examples/double_pendulum.qd --t-end 1000 --rtol 1e-12 --initial "theta1=pi/2, theta2=pi/2" --out /dev/null

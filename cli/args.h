@@ -4,7 +4,9 @@
  * A command declares its options in a table, one cli_opt per option; the
  * parser fills the command's argument struct from argv, refuses what the
  * table does not hold (with "did you mean" for a misspelt option or choice),
- * refuses an option given twice unless it is a list, and answers --help with
+ * refuses an option given twice unless it is a list (a CLI_CALL reader too is
+ * called once), takes "--NAME VALUE", "--NAME=VALUE" and, after "--", only
+ * positionals; and answers --help with
  * a usage generated from the same table: one described line per option.
  * Values that may be expressions in the model's parameters (--t-end "2*pi")
  * are kept as text and read after the model is loaded (qd_model_number).

@@ -13,7 +13,9 @@ pkgs="$pkgs libhdf5-dev"    # qdot sweep --format hdf5 (optional: built when fou
 # clang for make test's clang build (built with warnings as errors, not run).
 case $what in
   test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy chromium"
-              pkgs="$pkgs python3-numpy python3-pytest libopenmpi-dev openmpi-bin clang" ;;
+              pkgs="$pkgs python3-numpy python3-pytest libopenmpi-dev openmpi-bin clang"
+              # pip install . of the Python package, offline (tests/python/check_pip_install.py)
+              pkgs="$pkgs python3-pip python3-venv python3-setuptools python3-wheel" ;;
 esac
 case $what in
   bench) pkgs="$pkgs g++ libginac-dev libgsl-dev" ;;

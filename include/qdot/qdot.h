@@ -38,6 +38,6 @@
 #include "form.h"       /* issue 35: quadratic forms */
 #include "field.h"      /* issue 35: continuous systems */
 
-#define QDOT_VERSION "0.1.0"
+#include "version.h"    /* QDOT_VERSION, qd_version() */
 
 #endif

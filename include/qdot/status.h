@@ -98,6 +98,12 @@ typedef struct qd_diag {
 /* A short English name of the status ("division by zero"); never NULL. */
 QD_API const char *qd_status_str(qd_status st);
 
+/* "Did you mean": the name of names[0..count) nearest word[0..n) (a few
+ * edits, scaled to its length), or NULL when none is close; the one rule
+ * of every suggestion qdot makes (model files, option names, states). */
+QD_API const char *qd_nearest_name(const char *word, size_t n, const char *const *names,
+                                   size_t count);
+
 #ifdef __cplusplus
 }
 #endif

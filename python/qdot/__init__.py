@@ -24,4 +24,4 @@ from .forms import QuadraticForm, quadratic_form
 __all__ = ["Model", "ModelError", "Error", "Equations", "Hamiltonian", "Equilibrium",
            "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form"]
-__version__ = "0.1.0"
+from ._lib import VERSION as __version__

@@ -15,16 +15,22 @@ from ctypes import (POINTER, Structure, c_bool, c_char, c_char_p, c_double, c_in
                     c_size_t, c_void_p, c_long, c_uint)
 
 _HERE = os.path.dirname(os.path.abspath(__file__))
-_SONAME = "libqdot.so"
+# The soname: the ABI the package was written for (the unversioned
+# libqdot.so is a development link, absent where only the runtime is).
+_SONAME = "libqdot.so.0"
+# The version of include/qdot/version.h this package was written with.
+VERSION = "0.1.0"
 
 
 def _candidates():
-    """The paths tried for libqdot.so, in the documented order."""
+    """The paths tried for libqdot.so.0, in the documented order."""
     env = os.environ.get("QDOT_LIB")
     if env:
         # a directory (a build tree) or the library file itself
         yield os.path.join(env, _SONAME) if os.path.isdir(env) else env
         return
+    # the package's own copy, put there by `pip install`
+    yield os.path.join(_HERE, _SONAME)
     # python/qdot/ in a source tree: its build/ directory
     yield os.path.join(_HERE, "..", "..", "build", _SONAME)
     try:
@@ -37,6 +43,24 @@ def _candidates():
         yield found
 
 
+def _checked(handle, path):
+    """handle, once its qd_version() is VERSION; else ImportError saying what to do."""
+    try:
+        qd_version = handle.qd_version
+    except AttributeError:
+        raise ImportError("qdot: %s has no qd_version(): it is older than this package "
+                          "(%s); rebuild libqdot from the same source tree, or reinstall "
+                          "with `pip install .`" % (path, VERSION)) from None
+    qd_version.restype = ctypes.c_char_p
+    qd_version.argtypes = []
+    have = qd_version().decode()
+    if have != VERSION:
+        raise ImportError("qdot: the package is %s but %s is libqdot %s; rebuild the library "
+                          "from the same source tree (or point QDOT_LIB at a matching one)"
+                          % (VERSION, path, have))
+    return handle
+
+
 def _load():
     """The first candidate that loads, else ImportError naming them all."""
     tried = []
@@ -45,11 +69,14 @@ def _load():
             tried.append(path)
             continue
         try:
-            return ctypes.CDLL(path)
+            handle = ctypes.CDLL(path)
         except OSError as err:
             tried.append("%s (%s)" % (path, err))
-    raise ImportError("qdot: cannot find libqdot.so; set QDOT_LIB to the library or the "
-                      "build directory (tried: %s)" % (", ".join(tried) or "nothing"))
+            continue
+        return _checked(handle, path)
+    raise ImportError("qdot: cannot find %s; install the package with `pip install .` at the "
+                      "source tree's root, or set QDOT_LIB to the library or the build "
+                      "directory (tried: %s)" % (_SONAME, ", ".join(tried) or "nothing"))
 
 
 lib = _load()

@@ -42,5 +42,43 @@ def test_installed_package_finds_installed_library(tmp_path):
             "print(qdot._lib.lib._name); print(m.modes()[0].omega)")
     out = subprocess.run([sys.executable, "-c", code], cwd=str(tmp_path), env=env,
                          capture_output=True, text=True, check=True).stdout.split()
-    assert out[0].startswith(prefix) and out[0].endswith("libqdot.so")
+    assert out[0].startswith(prefix) and out[0].endswith("libqdot.so.0")
     assert float(out[1]) == pytest.approx(2.0, rel=1e-12)
+
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PKG = os.path.join(ROOT, "python")
+
+
+def test_package_version_is_the_headers():
+    import qdot
+    with open(os.path.join(ROOT, "include", "qdot", "version.h")) as f:
+        assert '#define QDOT_VERSION "%s"' % qdot.__version__ in f.read()
+    assert qdot._lib.lib.qd_version().decode() == qdot.__version__
+
+
+def fake_library(tmp_path, body):
+    """A shared library of one C body, standing in for another libqdot."""
+    cc = shutil.which("gcc") or shutil.which("cc")
+    if not cc:
+        pytest.skip("needs a C compiler")
+    src, so = tmp_path / "fake.c", tmp_path / "libqdot.so.0"
+    src.write_text(body)
+    subprocess.run([cc, "-shared", "-fPIC", "-o", str(so), str(src)], check=True)
+    return str(so)
+
+
+def import_with(lib):
+    env = dict(os.environ, QDOT_LIB=lib, PYTHONPATH=PKG)
+    return subprocess.run([sys.executable, "-c", "import qdot"], env=env, capture_output=True,
+                          text=True)
+
+
+@pytest.mark.parametrize("body,said", [
+    ("int qd_something(void) { return 0; }\n", "has no qd_version()"),
+    ('const char *qd_version(void) { return "9.9.9"; }\n', "is libqdot 9.9.9"),
+])
+def test_another_library_is_refused_at_import(tmp_path, body, said):
+    p = import_with(fake_library(tmp_path, body))
+    assert p.returncode != 0
+    assert "ImportError" in p.stderr and said in p.stderr and "rebuild" in p.stderr

@@ -197,3 +197,8 @@ const char *qd__diag_nearest(const char *word, size_t n, const char *const *name
     }
     return best;
 }
+
+const char *qd_nearest_name(const char *word, size_t n, const char *const *names, size_t count) {
+    QD_ARGS(NULL, word && (names || !count));
+    return qd__diag_nearest(word, n, names, count);
+}

@@ -52,6 +52,7 @@
 #include "qdot/status.h"
 #include "qdot/sweep.h"
 #include "qdot/symmetry.h"
+#include "qdot/version.h"
 #include "qdot/zvc.h"
 
 #if defined(__GNUC__)
@@ -3903,6 +3904,13 @@ static void null_status(void **state)
     setup(&F);
     /* ---- qd_status_str */
     /* no pointer argument */
+    /* ---- qd_nearest_name */
+    /* word NULL */
+    assert_null(qd_nearest_name(NULL, 1, (const char * const *)F.names, 1));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_nearest_name("q", 1, NULL, 1));
+    reset(&F);
     teardown(&F);
 }
 
@@ -4139,6 +4147,16 @@ static void null_symmetry(void **state)
     teardown(&F);
 }
 
+static void null_version(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_version */
+    /* no pointer argument */
+    teardown(&F);
+}
+
 static void null_zvc(void **state)
 {
     (void)state;
@@ -4227,6 +4245,7 @@ int main(void)
         cmocka_unit_test(null_status),
         cmocka_unit_test(null_sweep),
         cmocka_unit_test(null_symmetry),
+        cmocka_unit_test(null_version),
         cmocka_unit_test(null_zvc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
