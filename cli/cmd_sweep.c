@@ -21,49 +21,31 @@
 #include "model_cli.h"
 #include "out.h"
 #include "progress.h"
+#include "args.h"
 #include "sim_cli.h"
+#include "sim_prepass.h"
 #include "sweep_hdf5.h"
 #include "sweep_mpi.h"
 
-static const char usage_text[] =
-    "usage: qdot sweep FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N "
-    "[--seed S] | --list FILE.csv) --t-end T --measure \"M, ...\" [--event \"EXPR = EXPR[, "
-    "EXPR > EXPR]\" | --stop-at ...] [--section \"EXPR = EXPR[, EXPR > EXPR]\"] [--threads N] "
-    "[--renorm DT] [--transient T0] [--format csv|json|hdf5] [-o FILE] [--map FILE.png "
-    "[--map-measure NAME]] [simulate options: --method, --rtol, --dt, --set, "
-    "--initial, --native, ...]";
-
 typedef struct sweep_args {
     cli_sim_args sim;
-    const char *grid, *random, *list, *measure, *section, *format;
-    double n, seed, threads;
+    const char *grid, *random, *list, *measure, *section, *format, *map, *map_measure;
+    size_t n;              /* --n: the random runs (0: not given) */
+    double seed, threads;
     double renorm, transient; /* the lyapunov measures */
-    bool has_n;
     size_t nuser;          /* --event and --stop-at: the first is the measure event's */
-    const char *map, *map_measure; /* --map FILE.png, --map-measure NAME */
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
 
-static int whole(const char *opt, const char *v, double *x) {
+static int whole(const char *opt, const char *v, double *x, double most) {
     char *end;
     *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > 0x1p53) {
-        cli_diag_error("%s takes a whole number >= 0, not '%s'", opt, v);
+    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > most) {
+        cli_diag_error("%s takes a whole number from 0 to %.0f, not '%s'", opt, most, v);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
-}
-
-/* --threads N: 0 (one per core) to QD_SWEEP_MAX_THREADS. */
-static int threads_option(const char *v, double *x) {
-    int rc = whole("--threads", v, x);
-    if (rc == QD_EXIT_OK && *x > QD_SWEEP_MAX_THREADS) {
-        cli_diag_error("--threads takes 0 (one per core) to %d threads, not '%s'",
-                       QD_SWEEP_MAX_THREADS, v);
-        return QD_EXIT_USAGE;
-    }
-    return rc;
 }
 
 static int positive(const char *opt, const char *v, double *x) {
@@ -76,75 +58,74 @@ static int positive(const char *opt, const char *v, double *x) {
     return QD_EXIT_OK;
 }
 
-static int own_option(int argc, char **argv, int *i, sweep_args *a) {
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--grid")))
-        return cli_once("--grid", &a->grid, v);
-    if ((v = cli_value(argc, argv, i, "--random")))
-        return cli_once("--random", &a->random, v);
-    if ((v = cli_value(argc, argv, i, "--list")))
-        return cli_once("--list", &a->list, v);
-    if ((v = cli_value(argc, argv, i, "--measure")))
-        return cli_once("--measure", &a->measure, v);
-    if ((v = cli_value(argc, argv, i, "--section")))
-        return cli_once("--section", &a->section, v);
-    if ((v = cli_value(argc, argv, i, "--format")))
-        return cli_once("--format", &a->format, v);
-    if ((v = cli_value(argc, argv, i, "-o")))
-        return cli_once("-o", &a->sim.out, v);
-    if ((v = cli_value(argc, argv, i, "--n")))
-        return (a->has_n = true), whole("--n", v, &a->n);
-    if ((v = cli_value(argc, argv, i, "--map")))
-        return cli_once("--map", &a->map, v);
-    if ((v = cli_value(argc, argv, i, "--map-measure")))
-        return cli_once("--map-measure", &a->map_measure, v);
-    if ((v = cli_value(argc, argv, i, "--seed")))
-        return whole("--seed", v, &a->seed);
-    if ((v = cli_value(argc, argv, i, "--threads")))
-        return threads_option(v, &a->threads);
-    if ((v = cli_value(argc, argv, i, "--renorm")))
-        return positive("--renorm", v, &a->renorm);
-    if ((v = cli_value(argc, argv, i, "--transient")))
-        return positive("--transient", v, &a->transient);
-    bool stop = !strncmp(argv[*i], "--stop-at", 9);
-    if ((v = cli_value(argc, argv, i, "--event")) || (v = cli_value(argc, argv, i, "--stop-at"))) {
-        /* one place is kept for --section */
-        if (a->sim.nevents == QD_SIM_MAX_LIST - 1) {
-            cli_diag_error("at most %d events", QD_SIM_MAX_LIST - 1);
-            return QD_EXIT_USAGE;
-        }
-        a->sim.event_stop[a->sim.nevents] = stop;
-        a->sim.events[a->sim.nevents++] = v;
-        return QD_EXIT_OK;
-    }
-    cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-    return QD_EXIT_USAGE;
+static int seed_option(const char *v, void *a) {
+    return whole("--seed", v, &((sweep_args *)a)->seed, 0x1p53);
+}
+static int threads_option(const char *v, void *a) { /* 0: one per core */
+    return whole("--threads", v, &((sweep_args *)a)->threads, QD_SWEEP_MAX_THREADS);
+}
+static int renorm_option(const char *v, void *a) {
+    return positive("--renorm", v, &((sweep_args *)a)->renorm);
+}
+static int transient_option(const char *v, void *a) {
+    return positive("--transient", v, &((sweep_args *)a)->transient);
 }
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    sweep_args *a = data;
-    int rc;
-    if (cli_sim_took_option(argc, argv, i, &a->sim, &rc))
-        return rc;
-    return own_option(argc, argv, i, a);
-}
+static const char *const formats[] = {"csv", "json", "hdf5", NULL};
+
+#define OPT(NAME, KIND, FIELD, META, HELP) \
+    {NAME, NULL, KIND, offsetof(sweep_args, FIELD), META, HELP, NULL, NULL}
+#define CALL(NAME, FN, META, HELP) {NAME, NULL, CLI_CALL, 0, META, HELP, NULL, FN}
+static const cli_opt opts[] = {
+    OPT("--grid", CLI_TEXT, grid, "\"NAME=A:B:N, ...\"", "the runs: a grid, the first axis slowest"),
+    OPT("--random", CLI_TEXT, random, "\"NAME=A:B, ...\"", "the runs: --n draws uniform in the box"),
+    OPT("--n", CLI_COUNT, n, "N", "the number of --random runs"),
+    CALL("--seed", seed_option, "S", "the seed of --random (default 1)"),
+    OPT("--list", CLI_TEXT, list, "FILE.csv", "the runs: a header of names, a row a run"),
+    OPT("--measure", CLI_TEXT, measure, "\"M, ...\"",
+        "final, energy_error, event, escape:EXPR>V, max:EXPR, min:EXPR, poincare-count, ..."),
+    OPT("--section", CLI_TEXT, section, "COND", "the section poincare-count counts crossing"),
+    CALL("--threads", threads_option, "N", "threads (0, the default: one per core)"),
+    CALL("--renorm", renorm_option, "DT", "the lyapunov measures' renormalization interval"),
+    CALL("--transient", transient_option, "T0", "the lyapunov measures' transient"),
+    {"--format", NULL, CLI_CHOICE, offsetof(sweep_args, format), "F", "the rows' format", formats,
+     NULL},
+    OPT("--map", CLI_TEXT, map, "FILE.png", "draw a measure of a grid of two axes (.svg, .pdf)"),
+    OPT("--map-measure", CLI_TEXT, map_measure, "NAME", "the column --map draws (default: the "
+        "first measure's)"),
+    {NULL, NULL, 0, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_spec spec = {
+    .name = "sweep",
+    .synopsis = "FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N | --list "
+                "FILE.csv) --t-end T --measure \"M, ...\" [options]",
+    .summary = "Many runs of one model, a row each: the inputs, the measures and the status.\n"
+               "Every option of qdot simulate that shapes a run applies too (--t-end, --method,\n"
+               "--rtol, --atol, --set, --initial, --event, --stop-at, --native, ...; qdot\n"
+               "simulate --help), and -o, --out FILE writes the rows.",
+    .opts = opts,
+    .min_pos = 1,
+    .max_pos = 1,
+    .pos_name = "FILE",
+};
 
 static int check_args(const sweep_args *a) {
     int how = (a->grid != NULL) + (a->random != NULL) + (a->list != NULL);
     const char *missing = how != 1               ? "one of --grid, --random, --list"
                           : !a->sim.has_t_end    ? "--t-end"
                           : !a->measure          ? "--measure"
-                          : a->random && !a->has_n ? "--n (the number of random runs)"
-                                                   : NULL;
+                          : a->random && !a->n   ? "--n (the number of random runs)"
+                                                 : NULL;
     if (missing) {
-        cli_diag_error("%s %s\n%s", how > 1 ? "give only" : "missing:", missing, usage_text);
+        cli_diag_error("%s %s (qdot sweep --help)", how > 1 ? "give only" : "missing:", missing);
         return QD_EXIT_USAGE;
     }
     if (a->map_measure && !a->map) {
         cli_diag_error("--map-measure says what to draw: give the file with --map FILE.png");
         return QD_EXIT_USAGE;
     }
-    if (a->has_n && !a->random) {
+    if (a->n && !a->random) {
         cli_diag_error("--n is for --random");
         return QD_EXIT_USAGE;
     }
@@ -165,6 +146,10 @@ static int more_events(sweep_args *a) {
     }
     if (!a->section && (flags & QD_SWEEP_NEEDS_SECTION)) {
         cli_diag_error("the measure poincare-count needs --section");
+        return QD_EXIT_USAGE;
+    }
+    if (a->section && a->sim.nevents == QD_SIM_MAX_LIST) {
+        cli_diag_error("at most %d events with the --section", QD_SIM_MAX_LIST - 1);
         return QD_EXIT_USAGE;
     }
     if (a->section) {
@@ -243,7 +228,7 @@ static int spec_error(const qd_ctx *ctx, const char *opt, const char *spec) {
 static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
     if (a->grid && qd_sweep_grid(w, a->grid) != QD_OK)
         return spec_error(ctx, "--grid", a->grid);
-    if (a->random && qd_sweep_random(w, a->random, (size_t)a->n, (uint64_t)a->seed) != QD_OK)
+    if (a->random && qd_sweep_random(w, a->random, a->n, (uint64_t)a->seed) != QD_OK)
         return spec_error(ctx, "--random", a->random);
     if (!a->list)
         return QD_EXIT_OK;
@@ -344,20 +329,12 @@ static int write_json(FILE *f, const sweep_result *r) {
 static const struct {
     const char *name;
     int (*write)(FILE *f, const sweep_result *r);
-} formats[] = {{"csv", write_csv}, {"json", write_json}, {"hdf5", NULL}};
-
-static int find_format(const char *name, size_t *k) {
-    for (*k = 0; *k < sizeof formats / sizeof *formats; (*k)++)
-        if (!strcmp(formats[*k].name, name))
-            return QD_EXIT_OK;
-    cli_diag_error("--format takes csv, json or hdf5, not '%s'", name);
-    return QD_EXIT_USAGE;
-}
+} writers[] = {{"csv", write_csv}, {"json", write_json}, {"hdf5", NULL}};
 
 /* --format hdf5 (cli/sweep_hdf5.h): the rows with how the sweep was made. */
 static int write_hdf5(const sweep_args *a, const sweep_result *r) {
     char n[32], seed[32], err[512];
-    snprintf(n, sizeof n, "%.0f", a->n);
+    snprintf(n, sizeof n, "%zu", a->n);
     snprintf(seed, sizeof seed, "%.0f", a->seed);
     const char *names[] = {"model", "measures", a->grid ? "grid" : a->random ? "random" : "list",
                            "n", "seed"};
@@ -375,7 +352,7 @@ static int write_hdf5(const sweep_args *a, const sweep_result *r) {
 
 /* Before the runs: hdf5 is written to a file, by a qdot built with HDF5. */
 static int check_output(const sweep_args *a, size_t fmt) {
-    if (formats[fmt].write)
+    if (writers[fmt].write)
         return QD_EXIT_OK;
     if (!cli_hdf5_built()) {
         cli_diag_error("--format hdf5: this qdot was built without HDF5 (install libhdf5-dev "
@@ -390,13 +367,13 @@ static int check_output(const sweep_args *a, size_t fmt) {
 }
 
 static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) {
-    if (!formats[fmt].write)
+    if (!writers[fmt].write)
         return write_hdf5(a, r);
     int rc = QD_EXIT_OK;
     FILE *f = a->sim.out ? cli_out_open(a->sim.out, &rc) : stdout;
     if (!f)
         return rc;
-    rc = formats[fmt].write(f, r);
+    rc = writers[fmt].write(f, r);
     int err = ferror(f) ? errno : 0;
     int crc = cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err);
     return rc != QD_EXIT_OK ? rc : crc;
@@ -526,12 +503,19 @@ static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
 
 int cli_cmd_sweep(int argc, char **argv) {
     sweep_args a = {.seed = 1};
-    int rc = cli_file_args(argc, argv, "sweep", usage_text, &a.sim.file, parse_option, &a);
+    char **rest = malloc(((size_t)argc + 1) * sizeof *rest);
+    const char *pos[1];
+    int nrest = 0;
+    int rc = rest ? cli_sim_prepass(argc, argv, &a.sim, rest, &nrest) : QD_EXIT_FAIL;
+    if (rc == QD_EXIT_OK)
+        rc = cli_parse(&spec, nrest, rest, &a, pos);
+    free(rest);
+    a.sim.file = pos[0];
     size_t fmt = 0;
+    while (rc == QD_EXIT_OK && a.format && strcmp(writers[fmt].name, a.format))
+        fmt++;
     if (rc == QD_EXIT_OK)
         rc = check_args(&a);
-    if (rc == QD_EXIT_OK && a.format)
-        rc = find_format(a.format, &fmt);
     if (rc == QD_EXIT_OK)
         rc = check_output(&a, fmt);
     if (rc != QD_EXIT_OK)
