@@ -16,65 +16,43 @@
 #include "animate.h"
 #include "progress.h"
 #include "out.h"
+#include "args.h"
 #include "sim_cli.h"
-
-static const char usage_text[] =
-    "usage: qdot animate FILE -o FILE.html [--draw WHAT]... [--trace NAME]... "
-    "[--spring A,B]... [every option of qdot simulate that shapes the motion: --t-end T, "
-    "--dt H, --rtol TOL, --atol TOL, --method M, --initial \"q=VALUE, q'=VALUE\", "
-    "--set NAME=VALUE, --input \"F = EXPR\" | F=FILE.csv | \"F = lqr\", --about POINT, "
-    "--lqr WEIGHTS, --stop-at COND, --event COND, --max-steps N, --no-project, --no-speeds, "
-    "--native, --precision P]\n"
-    "What is drawn: every particle (p1, p2, ...) and body (by its name); a model with "
-    "neither draws its named positions (x1 = ..., y1 = ... [, z1 = ...], named x1,y1, "
-    "or a vector P1 = (x, y, z)).  --draw particles|bodies|positions takes those kinds, "
-    "--draw NAME one point (p2, a body, x1,y1 or x1); repeat it.  Rods join points at a "
-    "constant distance; --spring A,B draws a zigzag.";
+#include "sim_prepass.h"
 
 #define DEFAULT_T_END 10.0
 
 typedef struct an_args {
-    cli_sim_args a;
-    const char *html;
-    const char *traces[QD_SIM_MAX_LIST], *springs[QD_SIM_MAX_LIST], *draws[QD_SIM_MAX_LIST];
-    size_t ntraces, nsprings, ndraws;
+    cli_sim_args a;     /* -o, --out: the page */
+    cli_list traces, springs, draws;
 } an_args;
 
-static int push(const char **list, size_t *n, const char *v, const char *opt) {
-    if (*n == QD_SIM_MAX_LIST) {
-        cli_diag_error("at most %d %s options", QD_SIM_MAX_LIST, opt);
-        return QD_EXIT_USAGE;
-    }
-    list[(*n)++] = v;
-    return QD_EXIT_OK;
-}
+static const cli_opt opts[] = {
+    {"--draw", NULL, CLI_LIST, offsetof(an_args, draws), "WHAT",
+     "particles, bodies, positions, or one point by name (p2, a body, x1,y1 or x1)", NULL, NULL},
+    {"--trace", NULL, CLI_LIST, offsetof(an_args, traces), "NAME", "draw the path of that point",
+     NULL, NULL},
+    {"--spring", NULL, CLI_LIST, offsetof(an_args, springs), "A,B",
+     "a zigzag between two points (origin, p1, a body's name)", NULL, NULL},
+    {NULL, NULL, 0, 0, NULL, NULL, NULL, NULL},
+};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    an_args *p = data;
-    int rc;
-    if (cli_sim_took_option(argc, argv, i, &p->a, &rc))
-        return rc;
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "-o")) || (v = cli_value(argc, argv, i, "--html")))
-        p->html = v;
-    else if ((v = cli_value(argc, argv, i, "--trace")))
-        return push(p->traces, &p->ntraces, v, "--trace");
-    else if ((v = cli_value(argc, argv, i, "--spring")))
-        return push(p->springs, &p->nsprings, v, "--spring");
-    else if ((v = cli_value(argc, argv, i, "--draw")))
-        return push(p->draws, &p->ndraws, v, "--draw");
-    else if (!strcmp(argv[*i], "--format") || !strcmp(argv[*i], "--variational") ||
-             !strcmp(argv[*i], "--period") || !strncmp(argv[*i], "--plot", 6)) {
-        /* simulate's, and they shape its rows, not the motion */
-        cli_diag_error("%s is simulate's: it shapes the rows it writes; animate writes its "
-                       "page with -o FILE.html", argv[*i]);
-        return QD_EXIT_USAGE;
-    } else {
-        cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
+static const cli_spec spec = {
+    .name = "animate",
+    .synopsis = "FILE -o FILE.html [--draw WHAT]... [--trace NAME]... [--spring A,B]... "
+                "[simulate options]",
+    .summary = "Simulate the model and write one self-contained HTML page that plays its\n"
+               "motion: every particle and body, or the named positions of a model with\n"
+               "neither; rods where two points keep their distance.  -o, --out FILE.html is\n"
+               "the page.  Every option of qdot simulate that shapes the motion applies too\n"
+               "(--t-end, default 10, --dt, --rtol, --atol, --method, --initial, --set, --input,\n"
+               "--about, --lqr, --stop-at, --event, --max-steps, --no-project, --no-speeds,\n"
+               "--native, --precision; qdot simulate --help).",
+    .opts = opts,
+    .min_pos = 1,
+    .max_pos = 1,
+    .pos_name = "FILE",
+};
 
 /* ---- the points (qd_scene_choose) and their outputs ----------------------- */
 
@@ -94,7 +72,8 @@ static int masses(cli_sim *c, an_scene *s) {
 /* The points --draw chooses, --trace and --spring name, and their places
  * as outputs of the run. */
 static int scene_points(cli_sim *c, an_scene *s, const an_args *p) {
-    if (qd_scene_choose(c->ctx, c->mf.model, p->draws, p->ndraws, &s->pts, &s->npts) != QD_OK) {
+    if (qd_scene_choose(c->ctx, c->mf.model, p->draws.items, p->draws.n, &s->pts, &s->npts) !=
+        QD_OK) {
         const qd_diag *d = qd_ctx_diag(c->ctx);
         if (d->name[0] || d->status == QD_ERR_NOMEM)
             return cli_diag_ctx(c->ctx);
@@ -102,18 +81,19 @@ static int scene_points(cli_sim *c, an_scene *s, const an_args *p) {
         return QD_EXIT_USAGE;
     }
     /* springs named plus at most a rod per pair, the origin included */
-    size_t maxlinks = p->nsprings + (s->npts + 1) * s->npts / 2;
+    size_t maxlinks = p->springs.n + (s->npts + 1) * s->npts / 2;
     s->links = malloc((maxlinks + 1) * sizeof *s->links);
-    s->traces = malloc((p->ntraces + 1) * sizeof *s->traces);
-    size_t *ends = malloc((2 * p->nsprings + 1) * sizeof *ends);
+    s->traces = malloc((p->traces.n + 1) * sizeof *s->traces);
+    size_t *ends = malloc((2 * p->springs.n + 1) * sizeof *ends);
     int rc = s->links && s->traces && ends ? masses(c, s) : QD_EXIT_FAIL;
     if (rc == QD_EXIT_OK &&
-        (qd_scene_named(c->ctx, s->pts, s->npts, p->traces, p->ntraces, s->traces) != QD_OK ||
-         qd_scene_pairs(c->ctx, s->pts, s->npts, p->springs, p->nsprings, ends) != QD_OK ||
+        (qd_scene_named(c->ctx, s->pts, s->npts, p->traces.items, p->traces.n, s->traces) !=
+             QD_OK ||
+         qd_scene_pairs(c->ctx, s->pts, s->npts, p->springs.items, p->springs.n, ends) != QD_OK ||
          qd_scene_add_outputs(c->ctx, c->s, c->mf.model, s->pts, s->npts) != QD_OK))
         rc = cli_diag_ctx(c->ctx);
-    s->ntraces = p->ntraces;
-    for (size_t k = 0; rc == QD_EXIT_OK && k < p->nsprings; k++)
+    s->ntraces = p->traces.n;
+    for (size_t k = 0; rc == QD_EXIT_OK && k < p->springs.n; k++)
         s->links[s->nlinks++] = (an_link){.a = ends[2 * k], .b = ends[2 * k + 1], .spring = true};
     free(ends);
     return rc;
@@ -218,21 +198,26 @@ static int write_page(const an_scene *s, const char *path) {
 
 int cli_cmd_animate(int argc, char **argv) {
     an_args p = {0};
-    int rc = cli_file_args(argc, argv, "animate", usage_text, &p.a.file, parse_option, &p);
-    if (rc == QD_EXIT_OK && !p.html) {
-        cli_diag_error("-o FILE.html is missing\n%s", usage_text);
+    char **rest = malloc(((size_t)argc + 1) * sizeof *rest);
+    const char *pos[1];
+    int nrest = 0;
+    int rc = rest ? cli_sim_prepass(argc, argv, &p.a, rest, &nrest) : QD_EXIT_FAIL;
+    if (rc == QD_EXIT_OK)
+        rc = cli_parse(&spec, nrest, rest, &p, pos);
+    free(rest);
+    p.a.file = pos[0];
+    const char *html = p.a.out;
+    if (rc == QD_EXIT_OK && !html) {
+        cli_diag_error("-o FILE.html is missing (qdot animate --help)");
         rc = QD_EXIT_USAGE;
     } else if (rc == QD_EXIT_OK && p.a.output) {
         cli_diag_error("--output is simulate's: it adds columns to its rows; animate writes "
                        "its page with -o FILE.html");
         rc = QD_EXIT_USAGE;
-    } else if (rc == QD_EXIT_OK && p.a.out) {
-        /* shared with simulate, where it takes the rows: here it would be ignored */
-        cli_diag_error("--out is simulate's; animate writes its page with -o FILE.html");
-        rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
+    p.a.out = NULL; /* the page, not the rows */
     if (!p.a.has_t_end) {
         p.a.t_end = DEFAULT_T_END;
         p.a.has_t_end = true;
@@ -247,9 +232,9 @@ int cli_cmd_animate(int argc, char **argv) {
     if (rc == QD_EXIT_OK)
         rc = cli_animate_analyse(&s);
     if (rc == QD_EXIT_OK)
-        rc = write_page(&s, p.html);
+        rc = write_page(&s, html);
     if (rc == QD_EXIT_OK)
-        fprintf(stderr, "qdot: animate: wrote %s (%zu point%s, %zu link%s, %s)\n", p.html,
+        fprintf(stderr, "qdot: animate: wrote %s (%zu point%s, %zu link%s, %s)\n", html,
                 s.npts, s.npts == 1 ? "" : "s", s.nlinks, s.nlinks == 1 ? "" : "s",
                 s.plane[0] < 0 ? "3-D" : "in a plane");
     scene_free(&s);
