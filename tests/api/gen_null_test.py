@@ -94,6 +94,7 @@ NULLABLE = {
     'qd_stability_scan': {'opts', 'pguess'},
     'qd_steady_find': {'residual'},
     'qd_steady_find_all': {'pguess'},
+    'qd_plot_pick_columns': {'ycols', 'phase'},
     'qd_sweep_map_column': {'measure'},
     'qd_sweep_needs': {'s', 'needs'},
     'qd_sweep_prepare': {'read', 'data'},

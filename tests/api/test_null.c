@@ -2774,6 +2774,42 @@ static void null_plot(void **state)
     /* zmax NULL */
     assert_true(qd_plot_map_range(F.plot, 1, F.d, NULL) == 0);
     reset(&F);
+    /* ---- qd_plot_pick_columns */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(NULL, "q", "q", (const char * const *)F.names, 1, 1, NULL));
+    reset(&F);
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", NULL, 1, 1, NULL));
+    reset(&F);
+    /* pk NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", (const char * const *)F.names, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_plot_size_of */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(NULL, "q", F.i, F.i));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, NULL, F.i, F.i));
+    reset(&F);
+    /* width NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, "q", NULL, F.i));
+    reset(&F);
+    /* height NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, "q", F.i, NULL));
+    reset(&F);
+    /* ---- qd_plot_run */
+    /* ctx NULL */
+    assert_null(qd_plot_run(NULL, NULL, (const char * const *)F.names, F.d, 1, 1, NULL));
+    reset(&F);
+    /* pk NULL */
+    assert_null(qd_plot_run(F.ctx, NULL, (const char * const *)F.names, F.d, 1, 1, NULL));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_plot_run(F.ctx, NULL, NULL, F.d, 1, 1, NULL));
+    reset(&F);
+    /* rows NULL */
+    assert_null(qd_plot_run(F.ctx, NULL, (const char * const *)F.names, NULL, 1, 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
