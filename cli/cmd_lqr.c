@@ -20,10 +20,8 @@ typedef struct lqr_args {
 } lqr_args;
 
 typedef struct lqr_run {
-    double *A, *B, *Q, *R;
-    size_t n, m;
-    const char **names; /* x1..xn, then u1..um, in store */
-    char (*store)[24];
+    qd_matrix A, B;
+    double *Q, *R;
 } lqr_run;
 
 static int parse_args(int argc, char **argv, lqr_args *a) {
@@ -50,78 +48,54 @@ static int parse_args(int argc, char **argv, lqr_args *a) {
     return QD_EXIT_USAGE;
 }
 
-static int read_system(const lqr_args *a, lqr_run *r) {
-    char err[200];
-    size_t where, rows, cols;
-    if (!cli_matrix_parse(a->A, &r->n, &cols, &r->A, err, sizeof err, &where))
-        return cli_lqr_read_error("--A", a->A, err, where);
-    if (cols != r->n) {
-        cli_diag_error("--A is %zu by %zu; A must be square", r->n, cols);
+static int read_system(qd_ctx *ctx, const lqr_args *a, lqr_run *r) {
+    if (qd_matrix_read(ctx, a->A, &r->A) != QD_OK)
+        return cli_lqr_error(ctx, "--A", a->A);
+    if (r->A.cols != r->A.rows) {
+        cli_diag_error("--A is %zu by %zu; A must be square", r->A.rows, r->A.cols);
         return QD_EXIT_USAGE;
     }
-    if (!cli_matrix_parse(a->B, &rows, &r->m, &r->B, err, sizeof err, &where))
-        return cli_lqr_read_error("--B", a->B, err, where);
-    if (rows != r->n) {
-        cli_diag_error("--B has %zu rows; it needs one per state, %zu", rows, r->n);
+    if (qd_matrix_read(ctx, a->B, &r->B) != QD_OK)
+        return cli_lqr_error(ctx, "--B", a->B);
+    size_t n = r->A.rows, m = r->B.cols;
+    if (r->B.rows != n) {
+        cli_diag_error("--B has %zu rows; it needs one per state, %zu", r->B.rows, n);
         return QD_EXIT_USAGE;
     }
-    r->Q = malloc(r->n * r->n * sizeof *r->Q);
-    r->R = malloc(r->m * r->m * sizeof *r->R);
+    r->Q = malloc(n * n * sizeof *r->Q);
+    r->R = malloc(m * m * sizeof *r->R);
     if (!r->Q || !r->R) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    if (!cli_lqr_parse(a->weights, r->n, r->m, r->Q, r->R, err, sizeof err, &where))
-        return cli_lqr_read_error("--weights", a->weights, err, where);
+    if (qd_lqr_weights_read(ctx, a->weights, n, m, r->Q, r->R) != QD_OK)
+        return cli_lqr_error(ctx, "--weights", a->weights);
     return QD_EXIT_OK;
-}
-
-static int name_variables(lqr_run *r) {
-    size_t total = r->n + r->m;
-    r->names = malloc(total * sizeof *r->names);
-    r->store = malloc(total * sizeof *r->store);
-    if (!r->names || !r->store) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    for (size_t k = 0; k < total; k++) {
-        bool state = k < r->n;
-        snprintf(r->store[k], sizeof r->store[k], "%c%zu", state ? 'x' : 'u',
-                 state ? k + 1 : k - r->n + 1);
-        r->names[k] = r->store[k];
-    }
-    return QD_EXIT_OK;
-}
-
-static void run_free(lqr_run *r) {
-    free(r->names);
-    free(r->store);
-    free(r->A), free(r->B), free(r->Q), free(r->R);
 }
 
 int cli_cmd_lqr(int argc, char **argv) {
     lqr_args a = {0};
     lqr_run r = {0};
-    qd_ctx *ctx = NULL;
     qd_care_result res = {0};
     int rc = parse_args(argc, argv, &a);
-    if (rc == QD_EXIT_OK)
-        rc = read_system(&a, &r);
-    if (rc == QD_EXIT_OK)
-        rc = name_variables(&r);
-    if (rc == QD_EXIT_OK && !(ctx = qd_ctx_new())) {
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_ctx *ctx = qd_ctx_new();
+    if (!ctx) {
         cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
+        return QD_EXIT_FAIL;
     }
-    if (rc == QD_EXIT_OK && qd_care_solve(ctx, r.n, r.m, r.A, r.B, r.Q, r.R, &res) != QD_OK)
+    rc = read_system(ctx, &a, &r);
+    if (rc == QD_EXIT_OK && qd_care_solve(ctx, r.A.rows, r.B.cols, r.A.a, r.B.a, r.Q, r.R,
+                                          &res) != QD_OK)
         rc = cli_diag_ctx(ctx);
-    if (rc == QD_EXIT_OK &&
-        !cli_lqr_print(stdout, &res, r.names, r.names + r.n, (cli_lqr_format)a.format)) {
-        cli_diag_error("out of memory, or a number that is not finite, printing the design");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK)
+        rc = cli_lqr_print_design(stdout, NULL, &res, (cli_lqr_format)a.format);
     qd_care_result_free(&res);
+    qd_matrix_free(&r.A);
+    qd_matrix_free(&r.B);
+    free(r.Q);
+    free(r.R);
     qd_ctx_free(ctx);
-    run_free(&r);
     return rc;
 }

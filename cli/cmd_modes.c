@@ -489,10 +489,10 @@ static void put_json(modes_run *r, qd_buf *b) {
     }
     qd_json_key(&j, "conservative");
     qd_json_bool(&j, res->conservative);
-    json_matrix(&j, "M", n, r->lin.M);
-    json_matrix(&j, "C", n, r->lin.C);
-    json_matrix(&j, "G", n, r->lin.G);
-    json_matrix(&j, "K", n, r->lin.K);
+    json_matrix(&j, "mass_matrix", n, r->lin.M);
+    json_matrix(&j, "damping_matrix", n, r->lin.C);
+    json_matrix(&j, "gyroscopic_matrix", n, r->lin.G);
+    json_matrix(&j, "stiffness_matrix", n, r->lin.K);
     if (r->sym.active)
         cli_sym_put_json(&r->sym, e, &j);
     json_frequencies(r, &j);

@@ -1,8 +1,8 @@
 /*
- * cli/lqr_model.c - an LQR design on a model: the operating point of
- * --about read against the model, the model linearized there, and the
- * weights of --lqr solved for the gain (`qdot linearize --lqr`, and
- * `qdot simulate --input "F = lqr"`).
+ * cli/lqr_model.c - the LQR options on a model: the operating point of
+ * --about read against the model, and the library's design (qd_lqr_design)
+ * and printer (qd_lqr_print) with the errors shown (`qdot linearize --lqr`,
+ * `qdot simulate --input "F = lqr"`, `qdot lqr`).
  */
 #include "cli.h"
 #include "lqr_cli.h"
@@ -11,11 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-int cli_lqr_read_error(const char *opt, const char *text, const char *msg, size_t where) {
-    qd_diag d = {.status = QD_ERR_PARSE, .located = true, .line = 1, .col = where + 1,
-                 .offset = where, .length = 1};
-    snprintf(d.message, sizeof d.message, "%s", msg);
-    cli_diag_show(opt, text, &d);
+int cli_lqr_error(const qd_ctx *ctx, const char *opt, const char *text) {
+    if (qd_ctx_status(ctx) != QD_ERR_PARSE || !qd_ctx_diag(ctx)->located)
+        return cli_diag_ctx(ctx);
+    cli_diag_show(opt, text, qd_ctx_diag(ctx));
     return QD_EXIT_USAGE;
 }
 
@@ -89,63 +88,28 @@ void cli_point_free(cli_point *pt) {
     pt->n = pt->cap = 0;
 }
 
-const qd_expr *cli_point_value(qd_ctx *ctx, const cli_point *pt, const qd_expr *sym) {
-    for (size_t i = 0; i < pt->n; i++)
-        if (pt->syms[i] == sym)
-            return pt->vals[i];
-    return qd_int(ctx, 0); /* qd_linearize's default for a symbol not given */
-}
-
 /* ---- the design ------------------------------------------------------------ */
-
-static const char **names_of(const qd_statespace *s) {
-    const char **names = malloc((s->nx + s->nu + 1) * sizeof *names);
-    for (size_t k = 0; names && k < s->nx + s->nu; k++)
-        names[k] = qd_expr_name(k < s->nx ? s->states[k] : s->inputs[k - s->nx]);
-    return names;
-}
 
 int cli_lqr_design(qd_ctx *ctx, const qd_statespace *s, const char *weights,
                    qd_care_result *out) {
-    if (s->nu == 0) {
-        cli_diag_error("--lqr: the model has no inputs to feed back (declare `inputs F, ...`)");
-        return QD_EXIT_USAGE;
-    }
-    char err[200];
-    size_t where;
-    double *Q = malloc(s->nx * s->nx * sizeof *Q), *R = malloc(s->nu * s->nu * sizeof *R);
-    int rc = QD_EXIT_OK;
-    if (!Q || !R) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    } else if (!cli_lqr_parse(weights, s->nx, s->nu, Q, R, err, sizeof err, &where)) {
-        rc = cli_lqr_read_error("--lqr", weights, err, where);
-    } else if (qd_care_solve(ctx, s->nx, s->nu, s->A, s->B, Q, R, out) != QD_OK) {
-        rc = cli_diag_ctx(ctx);
-    }
-    free(Q);
-    free(R);
-    return rc;
+    return qd_lqr_design(ctx, s, weights, out) == QD_OK ? QD_EXIT_OK
+                                                        : cli_lqr_error(ctx, "--lqr", weights);
 }
 
 int cli_lqr_print_design(FILE *out, const qd_statespace *s, const qd_care_result *r,
                          cli_lqr_format fmt) {
-    const char **names = names_of(s);
-    bool ok = names && cli_lqr_print(out, r, names, names + s->nx, fmt);
-    free(names);
-    if (ok)
-        return QD_EXIT_OK;
-    cli_diag_error("out of memory, or a number that is not finite, printing the design");
-    return QD_EXIT_FAIL;
+    qd_buf b = QD_BUF_INIT;
+    qd_status st = qd_lqr_print(s, r, (qd_lqr_format)fmt, &b);
+    if (st == QD_OK)
+        fputs(qd_buf_str(&b), out);
+    else
+        cli_diag_error("%s printing the design", st == QD_ERR_NOMEM ? "out of memory"
+                                                                    : "a number that is not finite");
+    qd_buf_free(&b);
+    return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
 int cli_lqr_json_design(qd_json *j, const qd_statespace *s, const qd_care_result *r) {
-    const char **names = names_of(s);
-    if (!names) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    cli_lqr_json(j, r, names, names + s->nx);
-    free(names);
+    qd_lqr_json(j, s, r);
     return QD_EXIT_OK;
 }

@@ -1,37 +1,15 @@
 /*
  * cli/sim_lqr_cli.c - `qdot simulate --input "F = lqr" --about "..." --lqr
  * "Q = ..., R = ..."`: the LQR feedback u = u0 - K (x - x0) about the
- * operating point (x0, u0), built as an expression in the state and handed
- * to the simulation like any --input "F = EXPR", so the integrator sees
- * nothing new.
+ * operating point (x0, u0), an expression in the state (qd_lqr_feedback)
+ * handed to the simulation like any --input "F = EXPR", so the integrator
+ * sees nothing new.
  */
 #include "cli.h"
 #include "lqr_cli.h"
 #include "sim_cli.h"
 
-#include <stdlib.h>
 #include <string.h>
-
-/* u0_i - sum_j K[i][j] (x_j - x0_j): the point's values stay exact. */
-static const qd_expr *feedback(qd_ctx *ctx, const qd_statespace *s, const cli_point *pt,
-                               const qd_care_result *r, size_t i) {
-    const qd_expr **terms = malloc((s->nx + 1) * sizeof *terms);
-    if (!terms)
-        return NULL;
-    const qd_expr *u = NULL;
-    terms[0] = cli_point_value(ctx, pt, s->inputs[i]);
-    bool ok = terms[0] != NULL;
-    for (size_t j = 0; ok && j < s->nx; j++) {
-        const qd_expr *dx = qd_sub(ctx, s->states[j], cli_point_value(ctx, pt, s->states[j]));
-        const qd_expr *k = qd_float(ctx, -r->K[i * s->nx + j]);
-        terms[j + 1] = dx && k ? qd_mul(ctx, k, dx) : NULL;
-        ok = terms[j + 1] != NULL;
-    }
-    if (ok)
-        u = qd_add_n(ctx, s->nx + 1, terms);
-    free(terms);
-    return u;
-}
 
 static int input_index(const qd_statespace *s, const char *name, size_t *i) {
     for (*i = 0; *i < s->nu; ++*i)
@@ -77,7 +55,8 @@ static int linearized_gain(cli_sim *c, const char *name) {
         rc = input_index(&s, name, &i);
     if (rc == QD_EXIT_OK)
         rc = cli_lqr_design(c->ctx, &s, c->lqr, &r);
-    const qd_expr *u = rc == QD_EXIT_OK ? feedback(c->ctx, &s, &pt, &r, i) : NULL;
+    const qd_expr *u =
+        rc == QD_EXIT_OK ? qd_lqr_feedback(c->ctx, &s, &r, pt.n, pt.syms, pt.vals, i) : NULL;
     if (rc == QD_EXIT_OK && !u)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && qd_sim_input_expr(c->s, name, u) != QD_OK) {

@@ -31,6 +31,9 @@
 
 #include <stddef.h>
 #include "expr.h"
+#include "json.h"
+#include "print.h"
+#include "statespace.h"
 #include "status.h"
 
 #ifdef __cplusplus
@@ -81,6 +84,71 @@ QD_API qd_status qd_care_solve(qd_ctx *ctx, size_t n, size_t m, const double *A,
                                qd_care_result *out);
 QD_API void qd_care_result_free(qd_care_result *r); /* NULL is fine */
 
+/* ---- weights and matrices from text (src/linear/lqr_read.c) ------------- */
+
+/* Read text into Q (n*n) and R (m*m), row-major arrays the caller owns.
+ * text is "Q = W, R = W" in either order, each given once, where W is
+ *   a number c              c times the identity,
+ *   diag(d1, ..., dk)       k = the size,
+ *   [[a11, a12, ...], ...]  the full matrix, row by row.
+ * QD_ERR_PARSE for text that does not read so, the error located at its
+ * place in text (qd_ctx_diag: offset, line, col), its message what was
+ * expected there.  Symmetry and definiteness are left to qd_care_solve,
+ * which names what is wrong with them. */
+QD_API qd_status qd_lqr_weights_read(qd_ctx *ctx, const char *text, size_t n, size_t m,
+                                     double *Q, double *R);
+
+/* A matrix of numbers, row-major: a[i*cols + j]. */
+typedef struct qd_matrix {
+    size_t rows, cols;
+    double *a;
+} qd_matrix;
+
+/* A matrix "[[a11, a12, ...], [a21, ...], ...]" of any shape (rows of equal
+ * length, at most 4096 of them) into *out; QD_ERR_PARSE located as above
+ * (out zeroed).  qd_matrix_free releases it. */
+QD_API qd_status qd_matrix_read(qd_ctx *ctx, const char *text, qd_matrix *out);
+QD_API void qd_matrix_free(qd_matrix *m); /* NULL is fine */
+
+/* ---- LQR on a model (src/linear/lqr_model.c) ----------------------------- */
+
+/* The LQR design on s (qd_linearize of a model about a point) for the
+ * weights text (as qd_lqr_weights_read: Q on the states dx, R on the inputs
+ * du): out as qd_care_solve's.  QD_ERR_ARG (diag name "lqr") when s has no
+ * inputs to feed back; the reader's QD_ERR_PARSE; qd_care_solve's errors. */
+QD_API qd_status qd_lqr_design(qd_ctx *ctx, const qd_statespace *s, const char *weights,
+                               qd_care_result *out);
+
+/* The feedback of input k (0 <= k < s->nu) as an expression in the states:
+ *     u_k = u0_k - sum_j K[k][j] (x_j - x0_j)
+ * about the point s was linearized at, given as for qd_linearize (npt
+ * symbols syms with exact values vals; a state or input not given is 0),
+ * so the point's values stay exact.  NULL on an error (QD_ERR_ARG for k out
+ * of range or r not a design on s; QD_ERR_NOMEM). */
+QD_API const qd_expr *qd_lqr_feedback(qd_ctx *ctx, const qd_statespace *s,
+                                      const qd_care_result *r, size_t npt,
+                                      const qd_expr *const *syms, const qd_expr *const *vals,
+                                      size_t k);
+
+/* ---- the design printed (src/linear/lqr_print.c) ------------------------- */
+
+typedef enum qd_lqr_format {
+    QD_LQR_TEXT, /* K with the states and inputs named, X, the closed loop, 10 digits */
+    QD_LQR_JSON, /* "states", "inputs", "K", "X", "closed_loop_eigenvalues", "residual",
+                    "rcond": every digit */
+    QD_LQR_C     /* K as a static const double array, every digit, the names in a comment */
+} qd_lqr_format;
+
+/* The design r appended to out in format fmt (JSON ends with a newline).
+ * The states and inputs are named from s (the linearization r was designed
+ * on) or, for s NULL, x1..xn and u1..um.  QD_ERR_NOMEM when out failed,
+ * QD_ERR_NUMERIC (nothing appended) when a number of r is not finite. */
+QD_API qd_status qd_lqr_print(const qd_statespace *s, const qd_care_result *r,
+                              qd_lqr_format fmt, qd_buf *out);
+/* The design's JSON object (the keys above) into j, for a caller that nests
+ * it in its own document; s as for qd_lqr_print. */
+QD_API void qd_lqr_json(qd_json *j, const qd_statespace *s, const qd_care_result *r);
+
 #ifdef __cplusplus
 }
 #endif
@@ -88,6 +156,7 @@ QD_API void qd_care_result_free(qd_care_result *r); /* NULL is fine */
 /* NULL (issue 30): a function of this header given NULL for a pointer it
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
- * returns, and every _free accepts NULL. No pointer argument here accepts
- * NULL otherwise. An array whose count is 0 may be NULL. */
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_lqr_feedback (syms, vals);
+ * qd_lqr_print (s); qd_lqr_json (s). An array whose count is 0 may be NULL. */
 #endif

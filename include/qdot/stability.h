@@ -45,6 +45,7 @@
 #include "mech.h"
 #include "model.h"
 #include "modes.h"
+#include "print.h"
 #include "routh.h"
 
 #ifdef __cplusplus
@@ -145,6 +146,59 @@ QD_API qd_status qd_steady_find_all(qd_ctx *ctx, const qd_steady *s, size_t nval
                                     qd_steady_set *out);
 QD_API void qd_steady_set_free(qd_steady_set *set);
 
+/* ---- a problem stated by name (src/linear/steady_given.c) ---------------- */
+
+/* qd_steady_derive for the cyclic coordinates named in text: "phi, psi"
+ * (driven false), or the items of the driven rates "phi' = Omega, psi"
+ * (driven true: only their coordinates are read here, each once however
+ * often named; a bare name leaves its rate to be found).  field names the
+ * text in errors (qd_diag.name, "ignore" or "driven"): a name that is not a
+ * coordinate, one listed twice, a value in the free list, more than 16, are
+ * QD_ERR_ARG located in text; then qd_steady_derive's errors. */
+QD_API qd_steady *qd_steady_derive_named(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                         const char *field, const char *names, bool driven);
+
+/* The values of the search as text, each "NAME = VALUE, ..." (NULL: none),
+ * every VALUE a constant expression in the parameters (qd_model_number). */
+typedef struct qd_steady_spec {
+    const char *rates;       /* held rates "phi' = 2"; driven: the driven list (a bare
+                                "phi" holds nothing) */
+    const char *rates_field; /* the name of rates in errors: "driven", "omega" (NULL: "rates") */
+    const char *momenta;     /* held momenta "p_phi = 3" (free only): field "momentum" */
+    const char *guess;       /* starting values, not held: kept coordinates, rates "phi'" or
+                                momenta "p_phi" (turned into rates at the start): "guess" */
+    const char *at;          /* held kept coordinates "theta = pi/3": field "at" */
+} qd_steady_spec;
+
+/* What qd_steady_find_all, qd_stability_analyze and qd_stability_scan take,
+ * read from a qd_steady_spec. */
+typedef struct qd_steady_given {
+    size_t nvals;
+    const qd_expr **syms;    /* t, then the parameters */
+    double *vals;            /* t = 0, the parameters at their values in the model */
+    qd_steady_point start;   /* held values and starting guesses: the model's `initial`
+                                values where none is given, else 0 (coordinates), 1 (rates) */
+    bool *xfix, *wfix, *pfix; /* nkeep, ncyc, ncyc: held */
+    bool *pguess;            /* ncyc: start.p[c] is a starting momentum for the rate */
+    bool *wguess;            /* ncyc: start.w[c] was given as a starting value */
+    const qd_expr **held;    /* nkeep + 2 ncyc, in the order (x, w, p): the held values'
+                                expressions, NULL where none (qd_scan_opts.about) */
+} qd_steady_given;
+
+/* Read spec against s (derived from m) into *out: the held values (rates,
+ * momenta, at) before the guesses, which may not change one.  QD_ERR_ARG,
+ * the error named by its field (qd_diag.name) and located in that field's
+ * text (SUBJECT_TEXT: a value's own error, "did you mean", at its place
+ * there), for: a name that is not a coordinate, a rate without a prime, a
+ * rate of a coordinate that is not cyclic, a momentum that is not p_<q> of
+ * a free cyclic coordinate (or any momentum of a driven one), a kept
+ * coordinate written as cyclic or the other way round, a value given twice,
+ * a guess of a held value, a value that is not a constant.  out is zeroed
+ * on an error; qd_steady_given_free releases it. */
+QD_API qd_status qd_steady_given_read(qd_ctx *ctx, const qd_steady *s, const qd_model *m,
+                                      const qd_steady_spec *spec, qd_steady_given *out);
+QD_API void qd_steady_given_free(qd_steady_given *g);
+
 /* The stability of a steady motion. */
 typedef struct qd_stability {
     size_t n;                 /* kept coordinates */
@@ -171,6 +225,35 @@ QD_API qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nv
                                const qd_expr *const *syms, const double *vals,
                                const qd_steady_point *pt, qd_stability *out);
 QD_API void qd_stability_free(qd_stability *st);
+
+/* ---- the report (src/linear/stability_print.c) --------------------------- */
+
+/* Every steady motion found and its analysis, for printing. */
+typedef struct qd_stability_report {
+    const qd_steady *s;
+    const qd_steady_given *given; /* which values were held: "(given)" */
+    const qd_steady_set *set;     /* count >= 1 motions */
+    const qd_stability *an;       /* set->count analyses, in the same order */
+    const char *model;            /* the model's name (its file) */
+} qd_stability_report;
+
+/* r appended to out.  Text: how many motions (and how many left out), then
+ * each: its kept coordinates, rates and momenta, V_eff, M0, C0 (with
+ * dissipation), G0, K0, the Hessian of V_eff, the frequencies, the roots s
+ * and the verdicts, numbers to 12 digits (below 1e-13 a 0; a real or
+ * imaginary part below 1e-13 of the largest |s| a 0: gyroscopic roots are
+ * imaginary exactly).  JSON: "model", "kind" ("free" or "driven"), the
+ * first motion's "steady" (name to value), "residual", "Veff",
+ * "mass_matrix", "damping_matrix", "gyroscopic_matrix", "stiffness_matrix",
+ * "hessian", "frequencies", "eigenvalues" ([re, im] pairs), "stable" and
+ * "secular" (true, false, or null when borderline), "dissipation" (with
+ * dissipation: "eigenvalues", "stable", "max_re"), "verdict"; then
+ * "steady_motions" (each: "steady", "residual", "frequencies",
+ * "eigenvalues", "stable", "secular", "verdict") and "complete".
+ * QD_ERR_ARG for no motion, QD_ERR_NUMERIC (nothing appended) for a JSON
+ * number that is not finite, QD_ERR_NOMEM. */
+QD_API qd_status qd_stability_print(qd_ctx *ctx, const qd_stability_report *r, bool json,
+                                    qd_buf *out);
 
 /* Follow a steady motion as the parameter named param goes from a to b and
  * report where its stability changes: ordinary_stable, or damped_stable when

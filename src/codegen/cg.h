@@ -22,6 +22,41 @@ void qd__cg_solvers(qd_buf *out, size_t nk, bool cholesky);
  * (recorded) when a parameter has no value. */
 qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_buf *c);
 
+/* ---- the pieces of every generated function (block.c) ---- */
+
+/* Where a function reads a symbol's value: array[index]. */
+typedef struct cg_slot {
+    const char *array;
+    size_t index;
+} cg_slot;
+/* The generator's answer for sym (never t, which is an argument): its slot,
+ * or slot->array left NULL when the function has no value for it. */
+typedef qd_status (*cg_bind)(void *data, const qd_expr *sym, cg_slot *slot);
+
+/* The declarations of the symbols out[0..nout) use, then one block
+ * assigning out[i] to lhs[i], appended to c (indented one level).  A user
+ * function without definition is QD_ERR_ARG; a symbol bind has no slot for
+ * is QD_ERR_UNBOUND ("'x' has no value there"). */
+qd_status qd__cg_block(qd_ctx *ctx, qd_buf *c, size_t nout, const qd_expr *const *out,
+                       const char *const *lhs, cg_bind bind, void *data);
+/* The same, the outputs going to array[offset + i]. */
+qd_status qd__cg_block_to(qd_ctx *ctx, qd_buf *c, size_t nout, const qd_expr *const *out,
+                          const char *array, size_t offset, cg_bind bind, void *data);
+/* "array[offset + i]" for i < count, into names (rows of 48), pointed to by lhs. */
+void qd__cg_lhs_names(char (*names)[48], const char **lhs, const char *array, size_t offset,
+                      size_t count);
+void qd__cg_indent(qd_buf *out, const char *text); /* every line, one level in */
+/* "(void)t; (void)qd_par;" and names, for arguments a body may not use. */
+void qd__cg_unused(qd_buf *c, const char *names);
+/* The header's include guard and extern "C" (open), or their ends. */
+void qd__cg_guard(qd_buf *h, const char *P, bool open);
+/* const char *const <P>_<what>_names[] = {"a", "b", 0}; */
+void qd__cg_name_list(qd_buf *c, const char *P, const char *what, size_t n,
+                      const qd_expr *const *syms);
+/* QD_OK when prefix is a C identifier of at most 60 characters, else
+ * QD_ERR_ARG recorded. */
+qd_status qd__cg_prefix(qd_ctx *ctx, const char *prefix);
+
 /* Compile text (one C file) into cache (NULL: qd_native_load's default)
  * unless its object is there, and dlopen it.  generator names the text's
  * kind and version (part of the hash).  path: the object's name; cached:

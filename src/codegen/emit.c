@@ -18,7 +18,6 @@
 #include "sym/node.h"
 #include "../base/args.h"
 
-#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,170 +38,53 @@ typedef struct gen {
 /* Where a function finds its values: q[j] at q[qoff + j] and so on; NULL
  * when the function has none. */
 typedef struct src {
+    const gen *g;
     const char *q, *qd, *z;
     size_t qoff, qdoff;
 } src;
 
-enum { CAT_Q, CAT_QD, CAT_QDD, CAT_LAMBDA, CAT_PAR, CAT_T };
-
-typedef struct bound {
-    const qd_expr *sym;
-    int cat;
-    size_t idx;
-} bound;
-
-typedef struct walk {
-    qd_ptrmap seen;
-    const qd_expr **syms;
-    size_t n, cap;
-    const qd_expr *bad;   /* a user function */
-    bool oom;
-} walk;
-
-static void collect(walk *w, const qd_expr *e) {
-    if (w->oom || qd_ptrmap_has(&w->seen, e))
-        return;
-    if (!qd_ptrmap_put(&w->seen, e, (void *)e)) {
-        w->oom = true;
-        return;
-    }
-    if (e->kind == QD_UFUNC || e->kind == QD_UDERIV)
-        w->bad = e;
-    if (e->kind == QD_SYMBOL) {
-        if (w->n == w->cap) {
-            size_t cap = w->cap ? 2 * w->cap : 32;
-            const qd_expr **v = qd__mem_realloc(w->seen.al, w->syms, cap * sizeof *v);
-            if (!v) {
-                w->oom = true;
-                return;
-            }
-            w->syms = v;
-            w->cap = cap;
-        }
-        w->syms[w->n++] = e;
-    }
-    for (size_t i = 0; i < e->nargs; i++)
-        collect(w, e->args[i]);
-}
-
-static qd_status classify(gen *g, const src *s, const qd_expr *sym, bound *out) {
+/* A coordinate or its rates from q, qd and z (q'' then lambda), a
+ * parameter from qd_par (cg_bind). */
+static qd_status bind(void *data, const qd_expr *sym, cg_slot *at) {
+    const src *s = data;
+    const gen *g = s->g;
     const qd_eom *e = g->e;
-    out->sym = sym;
     switch (qd_symbol_role(sym)) {
-    case QD_ROLE_TIME:
-        out->cat = CAT_T;
-        out->idx = 0;
-        return QD_OK;
     case QD_ROLE_COORD: {
         unsigned order = qd_symbol_order(sym);
         const qd_expr *c = qd_symbol_coord(sym);
-        for (size_t j = 0; j < g->n; j++) {
-            if (e->q[j] != c)
-                continue;
-            out->idx = j;
-            out->cat = order == 0 ? CAT_Q : order == 1 ? CAT_QD : CAT_QDD;
-            const char *have = order == 0 ? s->q : order == 1 ? s->qd : order == 2 ? s->z : NULL;
-            if (have)
-                return QD_OK;
-        }
+        for (size_t j = 0; j < g->n; j++)
+            if (e->q[j] == c) {
+                if (order == 0 && s->q)
+                    *at = (cg_slot){s->q, s->qoff + j};
+                else if (order == 1 && s->qd)
+                    *at = (cg_slot){s->qd, s->qdoff + j};
+                else if (order == 2 && s->z)
+                    *at = (cg_slot){s->z, j};
+            }
         break;
     }
     case QD_ROLE_PARAM:
         for (size_t i = 0; i < g->np; i++)
-            if (qd_model_param(g->m, i) == sym) {
-                out->cat = CAT_PAR;
-                out->idx = i;
-                return QD_OK;
-            }
+            if (qd_model_param(g->m, i) == sym)
+                *at = (cg_slot){"qd_par", i};
         break;
     case QD_ROLE_PLAIN:
         for (size_t k = 0; k < g->nc && s->z; k++)
-            if (e->con[k].lambda == sym) {
-                out->cat = CAT_LAMBDA;
-                out->idx = k;
-                return QD_OK;
-            }
+            if (e->con[k].lambda == sym)
+                *at = (cg_slot){s->z, g->n + k};
+        break;
+    default:
         break;
     }
-    qd_ctx_error(g->ctx, QD_ERR_UNBOUND, "cannot generate C: '%s' has no value there",
-                 qd_expr_name(sym));
-    return QD_ERR_UNBOUND;
+    return QD_OK;
 }
 
-static int bound_cmp(const void *pa, const void *pb) {
-    const bound *a = pa, *b = pb;
-    if (a->cat != b->cat)
-        return a->cat < b->cat ? -1 : 1;
-    return a->idx < b->idx ? -1 : a->idx > b->idx;
-}
-
-static void declare(gen *g, const src *s, const bound *v) {
-    qd_buf *c = g->c;
-    if (v->cat == CAT_T)
-        return;
-    qd_buf_puts(c, "    const double ");
-    qd_c_name(v->sym, c);
-    switch (v->cat) {
-    case CAT_Q: qd_buf_printf(c, " = %s[%zu];\n", s->q, s->qoff + v->idx); break;
-    case CAT_QD: qd_buf_printf(c, " = %s[%zu];\n", s->qd, s->qdoff + v->idx); break;
-    case CAT_QDD: qd_buf_printf(c, " = %s[%zu];\n", s->z, v->idx); break;
-    case CAT_LAMBDA: qd_buf_printf(c, " = %s[%zu];\n", s->z, g->n + v->idx); break;
-    default: qd_buf_printf(c, " = qd_par[%zu];\n", v->idx); break;
-    }
-}
-
-static void indent(qd_buf *out, const char *text) {
-    while (*text) {
-        const char *nl = strchr(text, '\n');
-        size_t len = nl ? (size_t)(nl - text) + 1 : strlen(text);
-        qd_buf_puts(out, "    ");
-        qd_buf_putn(out, text, len);
-        text += len;
-    }
-}
-
-/* The bindings and the block for outputs out[0..nout) assigned to
- * lhs_fmt % index. */
-static qd_status block(gen *g, const src *s, size_t nout, const qd_expr *const *out,
-                       const char *lhs_fmt) {
-    walk w = {QD_PTRMAP_AL(qd__ctx_allocator(g->ctx)), NULL, 0, 0, NULL, false};
-    qd_buf text = QD_BUF_WITH(qd__ctx_allocator(g->ctx));
-    for (size_t i = 0; i < nout; i++)
-        collect(&w, out[i]);
-    qd_status st = w.oom ? QD_ERR_NOMEM : QD_OK;
-    if (st == QD_OK && w.bad) {
-        qd_ctx_error(g->ctx, QD_ERR_ARG,
-                     "cannot generate C: the user function '%s' has no definition",
-                     qd_expr_name(w.bad));
-        st = QD_ERR_ARG;
-    }
-    bound *vs = st == QD_OK ? qd__malloc(g->ctx, (w.n ? w.n : 1) * sizeof *vs) : NULL;
-    char(*names)[40] = st == QD_OK ? qd__malloc(g->ctx, (nout ? nout : 1) * sizeof *names) : NULL;
-    const char **lhs = st == QD_OK ? qd__malloc(g->ctx, (nout ? nout : 1) * sizeof *lhs) : NULL;
-    if (st == QD_OK && (!vs || !names || !lhs))
-        st = QD_ERR_NOMEM;
-    for (size_t i = 0; i < w.n && st == QD_OK; i++)
-        st = classify(g, s, w.syms[i], &vs[i]);
-    if (st == QD_OK) {
-        qsort(vs, w.n, sizeof *vs, bound_cmp);
-        for (size_t i = 0; i < w.n; i++)
-            declare(g, s, &vs[i]);
-        for (size_t i = 0; i < nout; i++) {
-            snprintf(names[i], sizeof names[i], lhs_fmt, i);
-            lhs[i] = names[i];
-        }
-        st = qd_print_c_block(g->ctx, nout, out, lhs, &text);
-        indent(g->c, qd_buf_str(&text));
-    }
-    qd_buf_free(&text);
-    if (st == QD_ERR_NOMEM)
-        qd__oom(g->ctx);
-    qd_ptrmap_free(&w.seen);
-    qd__free(w.syms);
-    qd__free(vs);
-    qd__free(names);
-    qd__free(lhs);
-    return st;
+/* The bindings and the block for outputs out[0..nout) to array[i]. */
+static qd_status block(gen *g, src *s, size_t nout, const qd_expr *const *out,
+                       const char *array) {
+    s->g = g;
+    return qd__cg_block_to(g->ctx, g->c, nout, out, array, 0, bind, s);
 }
 
 /* ---- the expressions ---------------------------------------------------------- */
@@ -334,15 +216,8 @@ static void header(gen *g, qd_buf *h, bool guard) {
         qd_buf_printf(h, " * The argument t is the independent variable %s: q' is dq/d%s.\n",
                       qd_model_independent(g->m), qd_model_independent(g->m));
     qd_buf_puts(h, " * Matrices are row-major.\n */\n");
-    if (guard) {
-        qd_buf_puts(h, "#ifndef ");
-        for (const char *p = P; *p; p++)
-            qd_buf_printf(h, "%c", toupper((unsigned char)*p));
-        qd_buf_puts(h, "_H\n#define ");
-        for (const char *p = P; *p; p++)
-            qd_buf_printf(h, "%c", toupper((unsigned char)*p));
-        qd_buf_puts(h, "_H\n\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
-    }
+    if (guard)
+        qd__cg_guard(h, P, true);
     bool rheo = (e->T1 && !qd_is_zero(e->T1)) || (e->T0 && !qd_is_zero(e->T0));
     qd_buf_printf(h,
                   "#define %s_N %zu    /* coordinates */\n"
@@ -382,18 +257,9 @@ static void header(gen *g, qd_buf *h, bool guard) {
                   "void %s_jacobian(double t, const double *y, const double *par, double *J);\n",
                   P);
     if (guard)
-        qd_buf_puts(h, "\n#ifdef __cplusplus\n}\n#endif\n#endif\n");
+        qd__cg_guard(h, P, false);
 }
 
-static void name_list(qd_buf *c, const char *P, const char *what, size_t n,
-                      const qd_expr *(*get)(const void *, size_t), const void *obj) {
-    qd_buf_printf(c, "const char *const %s_%s_names[] = {", P, what);
-    for (size_t i = 0; i < n; i++)
-        qd_buf_printf(c, "\"%s\", ", qd_expr_name(get(obj, i)));
-    qd_buf_puts(c, "0};\n");
-}
-
-static const qd_expr *get_coord(const void *e, size_t i) { return ((const qd_eom *)e)->q[i]; }
 qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_buf *c) {
     size_t np = qd_model_nparams(m);
     qd_buf_printf(c, "const char *const %s_param_names[] = {", P);
@@ -416,20 +282,18 @@ qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_
 }
 
 static qd_status tables(gen *g) {
-    name_list(g->c, g->P, "coord", g->n, get_coord, g->e);
+    qd__cg_name_list(g->c, g->P, "coord", g->n, g->e->q);
     return qd__cg_param_tables(g->ctx, g->m, g->P, g->c);
 }
 
-static void unused(gen *g, const char *names) {
-    qd_buf_printf(g->c, "    (void)t;\n    (void)qd_par;\n%s", names);
-}
+static void unused(gen *g, const char *names) { qd__cg_unused(g->c, names); }
 
 static qd_status fn_mass(gen *g) {
     qd_buf_printf(g->c, "void %s_mass(double t, const double *qd_q, const double *qd_par, "
                         "double *qd_M) {\n", g->P);
     unused(g, "    (void)qd_q;\n");
-    src s = {"qd_q", NULL, NULL, 0, 0};
-    qd_status st = block(g, &s, g->n * g->n, g->M, "qd_M[%zu]");
+    src s = {.q = "qd_q"};
+    qd_status st = block(g, &s, g->n * g->n, g->M, "qd_M");
     qd_buf_puts(g->c, "}\n\n");
     return st;
 }
@@ -438,15 +302,15 @@ static qd_status fn_forcing(gen *g) {
     qd_buf_printf(g->c, "void %s_forcing(double t, const double *qd_q, const double *qd_qd,\n"
                         "    const double *qd_par, double *qd_f) {\n", g->P);
     unused(g, "    (void)qd_q;\n    (void)qd_qd;\n");
-    src s = {"qd_q", "qd_qd", NULL, 0, 0};
-    qd_status st = block(g, &s, g->n, g->f, "qd_f[%zu]");
+    src s = {.q = "qd_q", .qd = "qd_qd"};
+    qd_status st = block(g, &s, g->n, g->f, "qd_f");
     qd_buf_puts(g->c, "}\n\n");
     return st;
 }
 
 /* K and r in one block (r is stored right after K), so what r shares with
  * K is computed once. */
-static qd_status system_block(gen *g, const src *s) {
+static qd_status system_block(gen *g, src *s) {
     size_t nk = g->nk;
     const qd_expr **out = qd__malloc(g->ctx, (nk * nk + nk) * sizeof *out);
     if (!out) {
@@ -455,7 +319,7 @@ static qd_status system_block(gen *g, const src *s) {
     }
     qd_status st = system_outputs(g, out);
     if (st == QD_OK)
-        st = block(g, s, nk * nk + nk, out, "qd_K[%zu]");
+        st = block(g, s, nk * nk + nk, out, "qd_K");
     qd__free(out);
     return st;
 }
@@ -467,7 +331,7 @@ static qd_status fn_rhs(gen *g) {
     qd_buf_puts(c, "    double qd_K[qd_NK * qd_NK + qd_NK];\n    double *qd_r = qd_K + qd_NK * "
                    "qd_NK;\n    qd_fac qd_fa;\n");
     unused(g, "");
-    src s = {"qd_y", "qd_y", NULL, 0, g->n};
+    src s = {.q = "qd_y", .qd = "qd_y", .qdoff = g->n};
     qd_status st = system_block(g, &s);
     qd_buf_printf(c,
                   "    for (int i = 0; i < %zu; i++)\n        qd_dydt[i] = qd_y[%zu + i];\n"
@@ -486,8 +350,8 @@ static qd_status fn_energy(gen *g) {
     qd_buf_printf(c, "double %s_energy(double t, const double *qd_y, const double *qd_par) {\n"
                      "    double qd_h[1];\n", g->P);
     unused(g, "    (void)qd_y;\n");
-    src s = {"qd_y", "qd_y", NULL, 0, g->n};
-    qd_status st = block(g, &s, 1, &g->h, "qd_h[%zu]");
+    src s = {.q = "qd_y", .qd = "qd_y", .qdoff = g->n};
+    qd_status st = block(g, &s, 1, &g->h, "qd_h");
     qd_buf_puts(c, "    return qd_h[0];\n}\n\n");
     return st;
 }
@@ -501,7 +365,7 @@ static qd_status fn_jacobian(gen *g) {
                      "    double *qd_z = qd_K + qd_NK * qd_NK;\n    qd_fac qd_fa;\n", w * nk);
     unused(g, "    (void)qd_y;\n");
     qd_buf_puts(c, "    {\n");
-    src s = {"qd_y", "qd_y", NULL, 0, n};
+    src s = {.q = "qd_y", .qd = "qd_y", .qdoff = n};
     qd_status st = system_block(g, &s);
     qd_buf_printf(c,
                   "    }\n    for (int i = 0; i < %zu; i++)\n        qd_J[i] = 0.0;\n"
@@ -512,7 +376,7 @@ static qd_status fn_jacobian(gen *g) {
                   w * w, n, w, n, n * w, w * w);
     s.z = "qd_z";
     if (st == QD_OK)
-        st = block(g, &s, w * nk, g->R, "qd_R[%zu]");
+        st = block(g, &s, w * nk, g->R, "qd_R");
     qd_buf_printf(c,
                   "    }\n    for (int k = 0; k < %zu; k++)\n"
                   "        qd_solve(qd_K, &qd_fa, qd_R + k * qd_NK);\n"
@@ -522,24 +386,13 @@ static qd_status fn_jacobian(gen *g) {
     return st;
 }
 
-static bool identifier(const char *s) {
-    if (!s || !(isalpha((unsigned char)*s) || *s == '_') || strlen(s) > 60)
-        return false;
-    for (; *s; s++)
-        if (!isalnum((unsigned char)*s) && *s != '_')
-            return false;
-    return true;
-}
-
 qd_status qd__codegen(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
                       bool embed, qd_buf *c, qd_buf *h) {
     if (!ctx || !m || !e || !c || (!embed && !h))
         return QD_ERR_ARG;
     prefix = prefix ? prefix : "qdot_model";
-    if (!identifier(prefix)) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "the prefix '%s' is not a C identifier", prefix);
+    if (qd__cg_prefix(ctx, prefix) != QD_OK)
         return QD_ERR_ARG;
-    }
     if (!e->n) {
         qd_ctx_error(ctx, QD_ERR_ARG, "cannot generate C: the model has no coordinates");
         return QD_ERR_ARG;

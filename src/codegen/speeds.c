@@ -20,11 +20,9 @@
 #include "cg.h"
 #include "base/mem.h"
 #include "sym/node.h"
-#include "num/num.h"
 #include "qdot/speeds.h"
 #include "../base/args.h"
 
-#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,102 +50,34 @@ typedef struct ssrc {
     const char *q, *u;
     size_t qoff, uoff;
     const char *z;
+    const sgen *g;
 } ssrc;
 
-/* One local constant for sym, or an error when the function has no value
- * for it (a velocity left in the equations, a symbol of no role). */
-static qd_status bind(sgen *g, const ssrc *s, const qd_expr *sym, qd_buf *decl) {
-    if (qd_symbol_role(sym) == QD_ROLE_TIME)
-        return QD_OK;
-    size_t slot = SIZE_MAX;
-    const char *arr = NULL;
+/* A coordinate, a speed or its rate, a parameter (cg_bind); a velocity
+ * left in the equations has no slot. */
+static qd_status bind(void *data, const qd_expr *sym, cg_slot *at) {
+    const ssrc *s = data;
+    const sgen *g = s->g;
     for (size_t j = 0; j < g->n && s->q; j++)
-        if (g->e->q[j] == sym) {
-            arr = s->q;
-            slot = s->qoff + j;
-        }
+        if (g->e->q[j] == sym)
+            *at = (cg_slot){s->q, s->qoff + j};
     for (size_t r = 0; r < g->ns && s->u; r++)
-        if (g->e->u[r] == sym) {
-            arr = s->u;
-            slot = s->uoff + r;
-        }
+        if (g->e->u[r] == sym)
+            *at = (cg_slot){s->u, s->uoff + r};
     for (size_t r = 0; r < g->ns && s->z; r++)
-        if (g->e->ud[r] == sym) {
-            arr = s->z;
-            slot = r;
-        }
-    for (size_t i = 0; i < g->np && !arr; i++)
-        if (qd_model_param(g->m, i) == sym) {
-            arr = "qd_par";
-            slot = i;
-        }
-    if (!arr) {
-        qd_ctx_error(g->ctx, QD_ERR_UNBOUND, "cannot generate C: '%s' has no value there",
-                     qd_expr_name(sym));
-        return QD_ERR_UNBOUND;
-    }
-    qd_buf_puts(decl, "    const double ");
-    qd_c_name(sym, decl);
-    qd_buf_printf(decl, " = %s[%zu];\n", arr, slot);
+        if (g->e->ud[r] == sym)
+            *at = (cg_slot){s->z, r};
+    for (size_t i = 0; i < g->np && !at->array; i++)
+        if (qd_model_param(g->m, i) == sym)
+            *at = (cg_slot){"qd_par", i};
     return QD_OK;
 }
 
-static void indent(qd_buf *out, const char *text) {
-    while (*text) {
-        const char *nl = strchr(text, '\n');
-        size_t len = nl ? (size_t)(nl - text) + 1 : strlen(text);
-        qd_buf_puts(out, "    ");
-        qd_buf_putn(out, text, len);
-        text += len;
-    }
-}
-
-/* The bindings and one block assigning out[i] to lhs[i]. */
-static qd_status block(sgen *g, const ssrc *s, size_t nout, const qd_expr *const *out,
-                       const char *const *lhs) {
-    size_t nin = 0;
-    const qd_expr **in = qd__num_inputs(g->ctx, nout, out, &nin);
-    if (!in)
-        return qd_ctx_status(g->ctx) ? qd_ctx_status(g->ctx) : QD_ERR_NOMEM;
-    qd_buf decl = QD_BUF_WITH(qd__ctx_allocator(g->ctx));
-    qd_buf text = QD_BUF_WITH(qd__ctx_allocator(g->ctx));
-    qd_status st = QD_OK;
-    for (size_t i = 0; i < nin && st == QD_OK; i++)
-        st = bind(g, s, in[i], &decl);
-    if (st == QD_OK)
-        st = qd_print_c_block(g->ctx, nout, out, lhs, &text);
-    if (st == QD_OK) {
-        qd_buf_puts(g->c, qd_buf_str(&decl));
-        indent(g->c, qd_buf_str(&text));
-    }
-    qd_buf_free(&decl);
-    qd_buf_free(&text);
-    qd__free(in);
-    return st;
-}
-
-/* lhs names "arr[off + i]" for i < count, into names (count rows of 48). */
-static void lhs_names(char (*names)[48], const char **lhs, const char *arr, size_t off,
-                      size_t count) {
-    for (size_t i = 0; i < count; i++) {
-        snprintf(names[i], sizeof names[i], "%s[%zu]", arr, off + i);
-        lhs[i] = names[i];
-    }
-}
-
 /* A block whose outputs go to consecutive entries of one array. */
-static qd_status block_to(sgen *g, const ssrc *s, size_t nout, const qd_expr *const *out,
+static qd_status block_to(sgen *g, ssrc *s, size_t nout, const qd_expr *const *out,
                           const char *arr) {
-    char(*names)[48] = qd__malloc(g->ctx, (nout + 1) * sizeof *names);
-    const char **lhs = qd__malloc(g->ctx, (nout + 1) * sizeof *lhs);
-    qd_status st = names && lhs ? QD_OK : QD_ERR_NOMEM;
-    if (st == QD_OK) {
-        lhs_names(names, lhs, arr, 0, nout);
-        st = block(g, s, nout, out, lhs);
-    }
-    qd__free(names);
-    qd__free(lhs);
-    return st;
+    s->g = g;
+    return qd__cg_block_to(g->ctx, g->c, nout, out, arr, 0, bind, s);
 }
 
 /* ---- the expressions ---------------------------------------------------------- */
@@ -235,20 +165,6 @@ static void names_line(qd_buf *h, const char *what, size_t n, const qd_expr *con
     qd_buf_puts(h, n ? ".\n" : " none.\n");
 }
 
-static void guard(qd_buf *h, const char *P, bool open) {
-    if (!open) {
-        qd_buf_puts(h, "\n#ifdef __cplusplus\n}\n#endif\n#endif\n");
-        return;
-    }
-    qd_buf_puts(h, "#ifndef ");
-    for (const char *p = P; *p; p++)
-        qd_buf_printf(h, "%c", toupper((unsigned char)*p));
-    qd_buf_puts(h, "_H\n#define ");
-    for (const char *p = P; *p; p++)
-        qd_buf_printf(h, "%c", toupper((unsigned char)*p));
-    qd_buf_puts(h, "_H\n\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
-}
-
 static void header(sgen *g, qd_buf *h) {
     const char *P = g->P;
     const qd_expr **par = qd__malloc(g->ctx, (g->np + 1) * sizeof *par);
@@ -266,7 +182,7 @@ static void header(sgen *g, qd_buf *h) {
     names_line(h, "Parameters par[0..NPAR), in model order", par ? g->np : 0, par);
     qd__free(par);
     qd_buf_puts(h, " * Matrices are row-major.\n */\n");
-    guard(h, P, true);
+    qd__cg_guard(h, P, true);
     qd_buf_printf(h,
                   "#define %s_N %zu    /* coordinates */\n"
                   "#define %s_M %zu    /* speeds */\n"
@@ -304,33 +220,23 @@ static void header(sgen *g, qd_buf *h) {
                                   "scleronomic and conservative)."
                                 : "NAN: the model gives L (or U), so no energy T + V is known.",
                   P, P);
-    guard(h, P, false);
-}
-
-static void name_list(qd_buf *c, const char *P, const char *what, size_t n,
-                      const qd_expr *const *syms) {
-    qd_buf_printf(c, "const char *const %s_%s_names[] = {", P, what);
-    for (size_t i = 0; i < n; i++)
-        qd_buf_printf(c, "\"%s\", ", qd_expr_name(syms[i]));
-    qd_buf_puts(c, "0};\n");
+    qd__cg_guard(h, P, false);
 }
 
 static qd_status tables(sgen *g) {
     qd_buf *c = g->c;
-    name_list(c, g->P, "coord", g->n, g->e->q);
-    name_list(c, g->P, "speed", g->ns, g->e->u);
+    qd__cg_name_list(c, g->P, "coord", g->n, g->e->q);
+    qd__cg_name_list(c, g->P, "speed", g->ns, g->e->u);
     return qd__cg_param_tables(g->ctx, g->m, g->P, c);
 }
 
-static void unused(sgen *g, const char *names) {
-    qd_buf_printf(g->c, "    (void)t;\n    (void)qd_par;\n%s", names);
-}
+static void unused(sgen *g, const char *names) { qd__cg_unused(g->c, names); }
 
 static qd_status fn_kinematics(sgen *g) {
     qd_buf_printf(g->c, "void %s_kinematics(double t, const double *qd_q, const double *qd_u,\n"
                         "    const double *qd_par, double *qd_qd) {\n", g->P);
     unused(g, "    (void)qd_q;\n    (void)qd_u;\n");
-    ssrc s = {"qd_q", "qd_u", 0, 0, NULL};
+    ssrc s = {"qd_q", "qd_u", 0, 0, NULL, g};
     qd_status st = block_to(g, &s, g->n, kin(g), "qd_qd");
     qd_buf_puts(g->c, "}\n\n");
     return st;
@@ -340,7 +246,7 @@ static qd_status fn_mass(sgen *g) {
     qd_buf_printf(g->c, "void %s_mass(double t, const double *qd_q, const double *qd_par, "
                         "double *qd_M) {\n", g->P);
     unused(g, "    (void)qd_q;\n");
-    ssrc s = {"qd_q", NULL, 0, 0, NULL};
+    ssrc s = {"qd_q", NULL, 0, 0, NULL, g};
     qd_status st = block_to(g, &s, g->ns * g->ns, mass(g), "qd_M");
     qd_buf_puts(g->c, "}\n\n");
     return st;
@@ -350,7 +256,7 @@ static qd_status fn_forcing(sgen *g) {
     qd_buf_printf(g->c, "void %s_forcing(double t, const double *qd_q, const double *qd_u,\n"
                         "    const double *qd_par, double *qd_f) {\n", g->P);
     unused(g, "    (void)qd_q;\n    (void)qd_u;\n");
-    ssrc s = {"qd_q", "qd_u", 0, 0, NULL};
+    ssrc s = {"qd_q", "qd_u", 0, 0, NULL, g};
     qd_status st = block_to(g, &s, g->ns, forcing(g), "qd_f");
     qd_buf_puts(g->c, "}\n\n");
     return st;
@@ -363,10 +269,10 @@ static qd_status rhs_block(sgen *g) {
     const char **lhs = qd__malloc(g->ctx, (nout + 1) * sizeof *lhs);
     qd_status st = names && lhs ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK) {
-        lhs_names(names, lhs, "qd_dydt", 0, n);
-        lhs_names(names + n, lhs + n, "qd_K", 0, ns * ns + ns);
-        ssrc s = {"qd_y", "qd_y", 0, n, NULL};
-        st = block(g, &s, nout, g->all, lhs);
+        qd__cg_lhs_names(names, lhs, "qd_dydt", 0, n);
+        qd__cg_lhs_names(names + n, lhs + n, "qd_K", 0, ns * ns + ns);
+        ssrc s = {"qd_y", "qd_y", 0, n, NULL, g};
+        st = qd__cg_block(g->ctx, g->c, nout, g->all, lhs, bind, &s);
     }
     qd__free(names);
     qd__free(lhs);
@@ -403,7 +309,7 @@ static qd_status fn_energy(sgen *g) {
         return QD_OK;
     }
     qd_buf_puts(c, "    double qd_h[1];\n");
-    ssrc s = {"qd_y", "qd_y", 0, g->n, NULL};
+    ssrc s = {"qd_y", "qd_y", 0, g->n, NULL, g};
     qd_status st = block_to(g, &s, 1, hamilton(g), "qd_h");
     qd_buf_puts(c, "    return qd_h[0];\n}\n");
     return st;
@@ -418,7 +324,7 @@ static qd_status fn_jacobian(sgen *g) {
                      "    double *qd_z = qd_K + qd_NK * qd_NK;\n    qd_fac qd_fa;\n", d * ns);
     unused(g, "    (void)qd_y;\n");
     qd_buf_printf(c, "    for (int i = 0; i < %zu; i++)\n        qd_J[i] = 0.0;\n    {\n", d * d);
-    ssrc s = {"qd_y", "qd_y", 0, n, NULL};
+    ssrc s = {"qd_y", "qd_y", 0, n, NULL, g};
     qd_status st = block_to(g, &s, n * d, dkin(g), "qd_J");
     qd_buf_puts(c, "    }\n    {\n");
     if (st == QD_OK)
@@ -440,20 +346,9 @@ static qd_status fn_jacobian(sgen *g) {
     return st;
 }
 
-static bool identifier(const char *s) {
-    if (!s || !(isalpha((unsigned char)*s) || *s == '_') || strlen(s) > 60)
-        return false;
-    for (; *s; s++)
-        if (!isalnum((unsigned char)*s) && *s != '_')
-            return false;
-    return true;
-}
-
 static qd_status check_args(qd_ctx *ctx, const qd_speeds_eom *e, const char *prefix) {
-    if (!identifier(prefix)) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "the prefix '%s' is not a C identifier", prefix);
+    if (qd__cg_prefix(ctx, prefix) != QD_OK)
         return QD_ERR_ARG;
-    }
     if (!e->n || !e->m) {
         qd_ctx_error(ctx, QD_ERR_ARG, "cannot generate C: the model has no %s",
                      e->n ? "speeds" : "coordinates");
@@ -465,9 +360,6 @@ static qd_status check_args(qd_ctx *ctx, const qd_speeds_eom *e, const char *pre
 qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
                               const char *prefix, qd_buf *c_text, qd_buf *h_text) {
     QD_ARGS_CTX(ctx, ctx && m && e && prefix && c_text);
-    if (!ctx || !m || !e || !c_text)
-        return QD_ERR_ARG;
-    prefix = prefix ? prefix : "qdot_model";
     qd_status st = check_args(ctx, e, prefix);
     if (st != QD_OK)
         return st;

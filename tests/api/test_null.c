@@ -559,6 +559,64 @@ static void null_control(void **state)
     /* r NULL */
     qd_care_result_free(NULL);
     reset(&F);
+    /* ---- qd_lqr_weights_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_weights_read(NULL, "q", 1, 1, F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_weights_read(F.ctx, NULL, 1, 1, F.d, F.d));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_weights_read(F.ctx, "q", 1, 1, NULL, F.d));
+    reset(&F);
+    /* R NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_weights_read(F.ctx, "q", 1, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_matrix_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_matrix_read(NULL, "q", (qd_matrix *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_matrix_read(F.ctx, NULL, (qd_matrix *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_matrix_read(F.ctx, "q", NULL));
+    reset(&F);
+    /* ---- qd_matrix_free */
+    /* m NULL */
+    qd_matrix_free(NULL);
+    reset(&F);
+    /* ---- qd_lqr_design */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_design(NULL, NULL, "q", (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_design(F.ctx, NULL, "q", (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* weights NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_design(F.ctx, NULL, NULL, (qd_care_result *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_design(F.ctx, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_lqr_feedback */
+    /* ctx NULL */
+    assert_null(qd_lqr_feedback(NULL, NULL, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, 1));
+    reset(&F);
+    /* s NULL */
+    assert_null(qd_lqr_feedback(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, 1));
+    reset(&F);
+    /* ---- qd_lqr_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_print(NULL, NULL, (qd_lqr_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_print(NULL, NULL, (qd_lqr_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_lqr_json */
+    /* j NULL */
+    qd_lqr_json(NULL, NULL, NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -3860,6 +3918,39 @@ static void null_stability(void **state)
     /* set NULL */
     qd_steady_set_free(NULL);
     reset(&F);
+    /* ---- qd_steady_derive_named */
+    /* ctx NULL */
+    assert_null(qd_steady_derive_named(NULL, F.model, F.eom, "q", "q", false));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_steady_derive_named(F.ctx, NULL, F.eom, "q", "q", false));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_steady_derive_named(F.ctx, F.model, NULL, "q", "q", false));
+    reset(&F);
+    /* field NULL */
+    assert_null(qd_steady_derive_named(F.ctx, F.model, F.eom, NULL, "q", false));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_steady_derive_named(F.ctx, F.model, F.eom, "q", NULL, false));
+    reset(&F);
+    /* ---- qd_steady_given_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(NULL, NULL, F.model, NULL, (qd_steady_given *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(F.ctx, NULL, F.model, NULL, (qd_steady_given *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(F.ctx, NULL, NULL, NULL, (qd_steady_given *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_steady_given_read(F.ctx, NULL, F.model, NULL, NULL));
+    reset(&F);
+    /* ---- qd_steady_given_free */
+    /* g NULL */
+    qd_steady_given_free(NULL);
+    reset(&F);
     /* ---- qd_stability_analyze */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_stability_analyze(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_stability *)(void *)F.blob));
@@ -3879,6 +3970,16 @@ static void null_stability(void **state)
     /* ---- qd_stability_free */
     /* st NULL */
     qd_stability_free(NULL);
+    reset(&F);
+    /* ---- qd_stability_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_print(F.ctx, NULL, false, NULL));
     reset(&F);
     /* ---- qd_stability_scan */
     /* ctx NULL */

@@ -85,7 +85,7 @@ CASES = [
     (['equilibria', COMPOUND, '--box', 'theta=0..1, theta=1..2'], USAGE, 'theta is given twice'),
     # was: --at r=r evaluated the coordinate at 0 ("equations not defined")
     (['stability', POWER, '--ignore', 'theta', '--at', 'r=r'], USAGE,
-     'only parameters may appear'),
+     "takes only pi, e and the model's parameters"),
     # values: not finite, too large for a double (was: 1e400 taken as inf, exit 0 or 1)
     (['routh', KEPLER, '--ignore', 'theta', '--set', 'm=1/0'], USAGE, 'division by zero'),
     (['routh', KEPLER, '--ignore', 'theta', '--set', 'm=1e400'], USAGE, 'too large'),
@@ -192,8 +192,8 @@ def check_eliminated_values(qdot, cwd):
     d = json.loads(p.stdout)
     M0, K0 = m * (k * k + h * h), m * g * h * math.cos(th0)
     check('about theta0', abs(d['equilibrium']['theta'] - th0) < 1e-12, d['equilibrium'])
-    check('M0 = m (k^2 + h^2)', abs(d['M'][0][0] - M0) < 1e-9, d['M'])
-    check('K0 = m g h cos(theta0)', abs(d['K'][0][0] - K0) < 1e-9, d['K'])
+    check('M0 = m (k^2 + h^2)', abs(d['mass_matrix'][0][0] - M0) < 1e-9, d['mass_matrix'])
+    check('K0 = m g h cos(theta0)', abs(d['stiffness_matrix'][0][0] - K0) < 1e-9, d['stiffness_matrix'])
     check('residual = m g h sin(theta0)',
           abs(d['residual'] - m * g * h * math.sin(th0)) < 1e-9, d['residual'])
     # Q = a^T M0 (q - q0) with a = 1/sqrt(M0): Q = sqrt(M0) (0.6 - 0.5), Q' = sqrt(M0) 2

@@ -123,8 +123,8 @@ def torus(qdot):
     d = js(qdot, 'torus.qd', '--ignore', 'phi', '--at', 'th=pi', '--omega', "phi'=2")
     check('torus inner steady', close(d['steady']['p_phi'], (R - a) ** 2 * w), d['steady'])
     check('torus inner unstable', d['stable'] is False and d['secular'] is False, d['verdict'])
-    check('torus inner growth', close(max(re for re, _ in d['roots']), w * ((R - a) / a) ** 0.5),
-          d['roots'])
+    check('torus inner growth', close(max(re for re, _ in d['eigenvalues']), w * ((R - a) / a) ** 0.5),
+          d['eigenvalues'])
     d = js(qdot, 'torus.qd', '--ignore', 'phi', '--at', 'th=pi', '--momentum', 'p_phi=3')
     check('torus inner from p', close(d['steady']["phi'"], 3 / (R - a) ** 2), d['steady'])
     # a false steady motion still fails, at th = 1 and just off the inner equator

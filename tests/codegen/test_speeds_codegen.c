@@ -304,12 +304,33 @@ static void bad_prefix(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* A user function has no C definition: refused by name, as for the
+ * equations in coordinates (the one block writer, src/codegen/block.c),
+ * not written as a call no compiler can link. */
+static void user_function(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = qt_parse_ok(ctx, "coordinates x\nfunctions W\nT = x'^2/2\nV = W(x)\n"
+                                   "speeds u = x'\n");
+    qd_speeds_eom *e = qd_speeds_derive(ctx, m, NULL);
+    assert_non_null(e);
+    qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
+    assert_int_equal(qd_codegen_speeds_c(ctx, m, e, "uf", &c, &h), QD_ERR_ARG);
+    assert_non_null(strstr(qd_ctx_message(ctx), "user function 'W' has no definition"));
+    qd_buf_free(&c);
+    qd_buf_free(&h);
+    qd_speeds_eom_free(e);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(euler),
         cmocka_unit_test(rolling_disk),
         cmocka_unit_test(sleigh),
         cmocka_unit_test(bad_prefix),
+        cmocka_unit_test(user_function),
     };
     return cmocka_run_group_tests(tests, group_setup, group_teardown);
 }

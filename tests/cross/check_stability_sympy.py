@@ -65,7 +65,7 @@ def main():
         # rotated has 8 roots (both shifts); qdot's 4 must be among them
         P = sp.Poly(rotated, s)
         want = [complex(r) for r in P.nroots(n=30)]
-        got = [complex(re, im) for re, im in d['dissipation']['roots']]
+        got = [complex(re, im) for re, im in d['dissipation']['eigenvalues']]
         ok = all(min(abs(z - y) for y in want) <= 1e-7 * (1 + abs(z)) for z in got)
         re_fixed = max(complex(r).real for r in sp.Poly(fixed, s).nroots(n=30))
         ok = ok and abs(max(z.real for z in got) - re_fixed) <= 1e-8
@@ -78,7 +78,7 @@ def main():
                      '--set', 'p1=%r' % p1, '--set', 'p2=%r' % p2)
         P1, P2, W = (sp.Rational(repr(x)) for x in (p1, p2, w))
         poly = s**4 + (P1**2 + P2**2 + 2 * W**2) * s**2 + (P1**2 - W**2) * (P2**2 - W**2)
-        failed += not agree(poly, d['roots'], 'ellipsoid p1=%g p2=%g w=%g' % (p1, p2, w))
+        failed += not agree(poly, d['eigenvalues'], 'ellipsoid p1=%g p2=%g w=%g' % (p1, p2, w))
         stable = not (min(p1, p2) < w < max(p1, p2))
         if d['stable'] is not stable:
             print('FAIL ellipsoid verdict w=%g: %s' % (w, d['verdict']))
@@ -89,7 +89,7 @@ def main():
                      '--set', 'A=%r' % A)
         NU, AA, mgh = sp.Rational(repr(nu)), sp.Rational(repr(A)), 1  # M g h = 1 in the model
         poly = (AA * s**2 - mgh)**2 + NU**2 * s**2
-        failed += not agree(poly, d['roots'], 'top nu=%g A=%g' % (nu, A))
+        failed += not agree(poly, d['eigenvalues'], 'top nu=%g A=%g' % (nu, A))
     print('%d failed' % failed)
     return 1 if failed else 0
 

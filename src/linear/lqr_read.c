@@ -1,13 +1,16 @@
 /*
- * cli/lqr_cli.c - reading the LQR weights "Q = diag(...), R = ..." of the
- * command line (lqr_cli.h).
+ * src/linear/lqr_read.c - the LQR weights "Q = diag(...), R = ..." and
+ * matrices "[[a, b], [c, d]]" read from text (qdot/control.h), for the
+ * program's --lqr, --weights, --A and --B and for any caller with text.
  *
  * One small recursive-descent reader: weights := item (',' item)*,
  * item := NAME '=' value, value := number | diag(list) | [[list], ...].
- * It stops at the first error and keeps its place, so the caller can point
- * at it.  The same reader takes a matrix of any shape for `qdot lqr`.
+ * It stops at the first error and keeps its place, which the error record
+ * carries (qd_ctx_error_at) so a caller can point at it with a caret.
  */
-#include "lqr_cli.h"
+#include "qdot/control.h"
+#include "../base/args.h"
+#include "../base/mem.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -17,10 +20,10 @@
 #include <string.h>
 
 typedef struct lqr_reader {
+    qd_ctx *ctx; /* its allocator */
     const char *text;
     size_t pos;
-    char *err;
-    size_t errlen;
+    char err[200];
     bool failed;
 } lqr_reader;
 
@@ -29,7 +32,7 @@ static bool oops(lqr_reader *r, const char *fmt, ...) {
     if (r->failed)
         return false;
     va_start(ap, fmt);
-    vsnprintf(r->err, r->errlen, fmt, ap);
+    vsnprintf(r->err, sizeof r->err, fmt, ap);
     va_end(ap);
     r->failed = true;
     return false;
@@ -90,7 +93,7 @@ static bool diag_value(lqr_reader *r, char name, size_t n, double *M) {
     size_t k;
     if (!expect(r, '(', "after diag"))
         return false;
-    double *d = calloc(n, sizeof *d);
+    double *d = qd__mem_calloc(qd__ctx_allocator(r->ctx), n, sizeof *d);
     if (!d)
         return oops(r, "out of memory");
     bool ok = list(r, d, n, &k, "the diagonal") && expect(r, ')', "to close diag(");
@@ -98,7 +101,7 @@ static bool diag_value(lqr_reader *r, char name, size_t n, double *M) {
         ok = oops(r, "diag(...) of %c has %zu entries; %c is %zu by %zu", name, k, name, n, n);
     for (size_t i = 0; ok && i < n; i++)
         M[i * n + i] = d[i];
-    free(d);
+    qd__free(d);
     return ok;
 }
 
@@ -161,12 +164,18 @@ static bool item(lqr_reader *r, size_t n, size_t m, double *Q, double *R, bool s
     return which ? value(r, 'R', m, R) : value(r, 'Q', n, Q);
 }
 
-bool cli_lqr_parse(const char *text, size_t n, size_t m, double *Q, double *R, char *err,
-                   size_t errlen, size_t *where) {
-    lqr_reader r = {.text = text, .err = err, .errlen = errlen};
+/* The reader's error into ctx, located at its place in the text. */
+static qd_status failed(qd_ctx *ctx, const lqr_reader *r) {
+    qd_ctx_error(ctx, QD_ERR_PARSE, "%s", r->err);
+    qd_ctx_error_at(ctx, r->text, r->pos, 1);
+    return QD_ERR_PARSE;
+}
+
+qd_status qd_lqr_weights_read(qd_ctx *ctx, const char *text, size_t n, size_t m, double *Q,
+                              double *R) {
+    QD_ARGS_CTX(ctx, ctx && text && Q && R);
+    lqr_reader r = {.ctx = ctx, .text = text};
     bool seen[2] = {false, false};
-    if (errlen)
-        err[0] = '\0';
     do {
         if (!item(&r, n, m, Q, R, seen))
             break;
@@ -176,21 +185,21 @@ bool cli_lqr_parse(const char *text, size_t n, size_t m, double *Q, double *R, c
         oops(&r, "',' or the end expected");
     if (!r.failed && (!seen[0] || !seen[1])) /* the cost needs both: no silent default */
         oops(&r, "%s missing (give both: \"Q = diag(...), R = ...\")", seen[0] ? "R is" : "Q is");
-    *where = r.pos;
-    return !r.failed;
+    return r.failed ? failed(ctx, &r) : QD_OK;
 }
 
 /* One row "[a, b, ...]" appended to *m (grown by realloc); *cols set by the
  * first row, checked against it by the others. */
 static bool grow_row(lqr_reader *r, double **m, size_t rows, size_t *cols) {
     size_t cap = 16, k = 0;
-    double *row = malloc(cap * sizeof *row), v;
+    double *row = qd__mem_malloc(qd__ctx_allocator(r->ctx), cap * sizeof *row), v;
     bool ok = row && expect(r, '[', "to open a row");
     if (!row)
         oops(r, "out of memory");
     while (ok && (k == 0 || accept(r, ','))) {
         if (k == cap) {
-            double *more = k < 4096 ? realloc(row, 2 * cap * sizeof *row) : NULL;
+            double *more = k < 4096 ? qd__mem_realloc(NULL, row, 2 * cap * sizeof *row)
+                                    : NULL;
             if (!more)
                 ok = oops(r, "a row longer than 4096 entries");
             else
@@ -202,7 +211,9 @@ static bool grow_row(lqr_reader *r, double **m, size_t rows, size_t *cols) {
     ok = ok && expect(r, ']', "to close a row");
     if (ok && rows > 0 && k != *cols)
         ok = oops(r, "row %zu has %zu entries, row 1 has %zu", rows + 1, k, *cols);
-    double *more = ok && rows < 4096 ? realloc(*m, (rows + 1) * k * sizeof **m) : NULL;
+    const qd_allocator *al = qd__ctx_allocator(r->ctx);
+    double *more = ok && rows < 4096 ? qd__mem_realloc(al, *m, (rows + 1) * k * sizeof **m)
+                                     : NULL;
     if (ok && !more)
         ok = oops(r, "more than 4096 rows");
     if (ok) {
@@ -210,22 +221,21 @@ static bool grow_row(lqr_reader *r, double **m, size_t rows, size_t *cols) {
         memcpy(*m + rows * k, row, k * sizeof *row);
         *cols = k;
     }
-    free(row);
+    qd__free(row);
     return ok;
 }
 
-bool cli_matrix_parse(const char *text, size_t *rows, size_t *cols, double **out, char *err,
-                      size_t errlen, size_t *where) {
-    lqr_reader r = {.text = text, .err = err, .errlen = errlen};
+qd_status qd_matrix_read(qd_ctx *ctx, const char *text, qd_matrix *out) {
+    QD_ARGS_CTX(ctx, ctx && text && out);
+    lqr_reader r = {.ctx = ctx, .text = text};
     double *m = NULL;
-    *rows = *cols = 0;
-    if (errlen)
-        err[0] = '\0';
+    *out = (qd_matrix){0};
+    size_t rows = 0, cols = 0;
     if (expect(&r, '[', "to open the matrix, as in [[1, 0], [0, 1]]")) {
         do {
-            if (!grow_row(&r, &m, *rows, cols))
+            if (!grow_row(&r, &m, rows, &cols))
                 break;
-            ++*rows;
+            ++rows;
         } while (accept(&r, ','));
     }
     if (!r.failed)
@@ -233,12 +243,17 @@ bool cli_matrix_parse(const char *text, size_t *rows, size_t *cols, double **out
     skip_space(&r);
     if (!r.failed && text[r.pos] != '\0')
         oops(&r, "the end expected after the matrix");
-    *where = r.pos;
     if (r.failed) {
-        free(m);
-        m = NULL;
-        *rows = *cols = 0;
+        qd__free(m);
+        return failed(ctx, &r);
     }
-    *out = m;
-    return !r.failed;
+    *out = (qd_matrix){rows, cols, m};
+    return QD_OK;
+}
+
+void qd_matrix_free(qd_matrix *m) {
+    if (!m)
+        return;
+    qd__free(m->a);
+    *m = (qd_matrix){0};
 }
