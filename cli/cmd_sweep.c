@@ -255,81 +255,11 @@ static void progress(void *data, size_t done, size_t total) {
 
 /* ---- output: one writer per --format (hdf5 joins the table) ---------------- */
 
-static void csv_field(FILE *f, const char *s) {
-    if (!strpbrk(s, ",\"\n")) {
-        fputs(s, f);
-        return;
-    }
-    fputc('"', f);
-    for (; *s; s++)
-        fputs(*s == '"' ? "\"\"" : (char[2]){*s, 0}, f);
-    fputc('"', f);
-}
-
-static const char *status_text(const sweep_result *r, size_t k) {
-    return r->status[k] == QD_OK ? "ok" : r->reasons + k * QD_SWEEP_REASON;
-}
-
-static int write_csv(FILE *f, const sweep_result *r) {
-    char num[QD_DOUBLE_MAX];
-    for (size_t j = 0; j < r->ncols; j++) {
-        csv_field(f, r->cols[j]);
-        fputc(',', f);
-    }
-    fputs("status\n", f);
-    for (size_t k = 0; k < r->nruns; k++) {
-        for (size_t j = 0; j < r->ncols; j++) {
-            qd_double_format(num, r->rows[k * r->ncols + j]);
-            fputs(num, f);
-            fputc(',', f);
-        }
-        csv_field(f, status_text(r, k));
-        fputc('\n', f);
-    }
-    return QD_EXIT_OK;
-}
-
-static int write_json(FILE *f, const sweep_result *r) {
-    qd_buf b = QD_BUF_INIT;
-    qd_json j;
-    qd_json_init(&j, &b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "columns");
-    qd_json_begin_array(&j);
-    for (size_t c = 0; c < r->ncols; c++)
-        qd_json_string(&j, r->cols[c]);
-    qd_json_end_array(&j);
-    qd_json_key(&j, "rows"); /* NaN (no value) as null */
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < r->nruns; k++) {
-        qd_json_begin_array(&j);
-        for (size_t c = 0; c < r->ncols; c++) {
-            double x = r->rows[k * r->ncols + c];
-            if (isfinite(x))
-                qd_json_number(&j, x);
-            else
-                qd_json_null(&j);
-        }
-        qd_json_end_array(&j);
-    }
-    qd_json_end_array(&j);
-    qd_json_key(&j, "status");
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < r->nruns; k++)
-        qd_json_string(&j, status_text(r, k));
-    qd_json_end_array(&j);
-    qd_json_end_object(&j);
-    int rc = b.failed ? QD_EXIT_FAIL : QD_EXIT_OK;
-    if (rc == QD_EXIT_OK)
-        fprintf(f, "%s\n", qd_buf_str(&b));
-    qd_buf_free(&b);
-    return rc;
-}
-
 static const struct {
     const char *name;
-    int (*write)(FILE *f, const sweep_result *r);
-} writers[] = {{"csv", write_csv}, {"json", write_json}, {"hdf5", NULL}};
+    qd_status (*write)(const qd_sweep *w, const double *rows, const qd_status *status,
+                       const char *reasons, qd_buf *out);
+} writers[] = {{"csv", qd_sweep_csv}, {"json", qd_sweep_json}, {"hdf5", NULL}};
 
 /* --format hdf5 (cli/sweep_hdf5.h): the rows with how the sweep was made. */
 static int write_hdf5(const sweep_args *a, const sweep_result *r) {
@@ -366,17 +296,22 @@ static int check_output(const sweep_args *a, size_t fmt) {
     return QD_EXIT_OK;
 }
 
-static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) {
+static int write_result(const qd_sweep *w, const sweep_args *a, size_t fmt,
+                        const sweep_result *r) {
     if (!writers[fmt].write)
         return write_hdf5(a, r);
-    int rc = QD_EXIT_OK;
+    qd_buf b = QD_BUF_INIT;
+    if (writers[fmt].write(w, r->rows, r->status, r->reasons, &b) != QD_OK) {
+        qd_buf_free(&b);
+        cli_diag_error("out of memory writing the rows");
+        return QD_EXIT_FAIL;
+    }
+    int rc = QD_EXIT_OK, err = 0;
     FILE *f = a->sim.out ? cli_out_open(a->sim.out, &rc) : stdout;
-    if (!f)
-        return rc;
-    rc = writers[fmt].write(f, r);
-    int err = ferror(f) ? errno : 0;
-    int crc = cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err);
-    return rc != QD_EXIT_OK ? rc : crc;
+    if (f)
+        cli_out_write(f, qd_buf_str(&b), strlen(qd_buf_str(&b)), &err);
+    qd_buf_free(&b);
+    return f ? cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err) : rc;
 }
 
 /* --map (qd_sweep_map): before the runs, what it draws; after, the map. */
@@ -445,7 +380,7 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
     }
     if (rc == QD_EXIT_OK && done.writer)
-        rc = write_result(a, fmt, &r);
+        rc = write_result(w, a, fmt, &r);
     if (rc == QD_EXIT_OK && done.writer)
         rc = map_write(c->ctx, w, a, r.rows, mapcol);
     /* the threads the pool started: asked for (0: the cores), at most the runs */

@@ -32,6 +32,7 @@
 #include "lyapunov.h"
 #include "model.h"
 #include "plot.h"
+#include "print.h"
 #include "sim.h"
 
 #ifdef __cplusplus
@@ -174,6 +175,17 @@ QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts 
                               char *reasons, void (*progress)(void *data, size_t done, size_t total),
                               void *data);
 
+/* The rows of runs [0, nruns) as qd_sweep_run fills them (rows, status,
+ * reasons: may be NULL, then a failed run's status is named) appended to
+ * out: CSV, the columns then `status` in a header, a line a run, its
+ * numbers (qd_double_format: nan where none) then "ok" or why it failed;
+ * or JSON, {"columns": [...], "rows": [[...], ...] (null where none),
+ * "status": [...]} and a newline.  QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_sweep_csv(const qd_sweep *w, const double *rows, const qd_status *status,
+                              const char *reasons, qd_buf *out);
+QD_API qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_status *status,
+                               const char *reasons, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -184,5 +196,5 @@ QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts 
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_sweep_set_lyap (lo); qd_sweep_run
  * (data, progress, reasons); qd_sweep_needs (s; needs, when cap is 0);
- * qd_sweep_prepare (read, data); qd_sweep_map_column (measure). An array whose count is 0 may be NULL. */
+ * qd_sweep_prepare (read, data); qd_sweep_map_column (measure); qd_sweep_csv and qd_sweep_json (reasons). An array whose count is 0 may be NULL. */
 #endif

@@ -98,6 +98,8 @@ NULLABLE = {
     'qd_steady_find': {'residual'},
     'qd_steady_find_all': {'pguess'},
     'qd_plot_pick_columns': {'ycols', 'phase'},
+    'qd_sweep_csv': {'reasons'},
+    'qd_sweep_json': {'reasons'},
     'qd_sweep_map_column': {'measure'},
     'qd_sweep_needs': {'s', 'needs'},
     'qd_sweep_prepare': {'read', 'data'},

@@ -4195,6 +4195,32 @@ static void null_sweep(void **state)
     /* status NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, F.d, NULL, F.c, NULL, NULL));
     reset(&F);
+    /* ---- qd_sweep_csv */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, F.st, "q", &F.buf));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, NULL, F.st, "q", &F.buf));
+    reset(&F);
+    /* status NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, F.st, "q", NULL));
+    reset(&F);
+    /* ---- qd_sweep_json */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, F.st, "q", &F.buf));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, NULL, F.st, "q", &F.buf));
+    reset(&F);
+    /* status NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, F.st, "q", NULL));
+    reset(&F);
     teardown(&F);
 }
 

@@ -14,7 +14,10 @@
  *     a random sweep and an unknown measure refused, naming the option field;
  *   - the runs from CSV text (qd_sweep_list_csv): the file's order, blank
  *     lines skipped, the oscillator's final x = v sin(w T)/w with w =
- *     sqrt(k); a field that is not a number located at its line and column.
+ *     sqrt(k); a field that is not a number located at its line and column;
+ *   - the rows written (qd_sweep_csv, qd_sweep_json): read back, the free
+ *     particle's final x = v T in every row, a failed run's reason in its
+ *     status, JSON's null where a measure has no value.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -176,12 +179,54 @@ static void test_list_csv(void **state) {
     sf_free(f);
 }
 
+static void test_write(void **state) {
+    (void)state;
+    sim_fix *f = sf_load("coordinates x\nT = x'^2/2\ninitial x = 0\n");
+    assert_int_equal(qd_sim_compile(f->s), QD_OK);
+    qd_sweep *w = qd_sweep_new(f->ctx, f->s, f->m);
+    assert_int_equal(qd_sweep_grid(w, "x' = 1:3:3"), QD_OK);
+    assert_int_equal(qd_sweep_measures(w, "final, escape:x>2.5"), QD_OK);
+    double rows[3 * 4], T = 2;
+    qd_status st[3];
+    char reasons[3 * QD_SWEEP_REASON];
+    qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = T, .rtol = 1e-12, .atol = 1e-14,
+                     .q0 = f->q0, .qd0 = f->qd0};
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, 1, rows, st, reasons, NULL, NULL), QD_OK);
+    st[2] = QD_ERR_SINGULAR; /* as if the last had failed */
+    snprintf(reasons + 2 * QD_SWEEP_REASON, QD_SWEEP_REASON, "a reason, with a comma");
+    qd_buf b = QD_BUF_INIT;
+    assert_int_equal(qd_sweep_csv(w, rows, st, reasons, &b), QD_OK);
+    const char *text = qd_buf_str(&b);
+    assert_true(!strncmp(text, "x',final_x,final_x',escape:x>2.5,status\n", 40));
+    const char *line = strchr(text, '\n') + 1;
+    for (size_t k = 0; k < 3; k++) {
+        char *end;
+        double v = strtod(line, &end), x = strtod(end + 1, &end);
+        assert_true(v == 1.0 + (double)k);
+        assert_true(fabs(x - v * T) < 1e-9); /* x = v t */
+        line = strchr(line, '\n') + 1;
+    }
+    assert_non_null(strstr(text, ",ok\n"));
+    assert_non_null(strstr(text, ",\"a reason, with a comma\"\n"));
+    qd_buf_free(&b);
+    b = (qd_buf)QD_BUF_INIT;
+    assert_int_equal(qd_sweep_json(w, rows, st, reasons, &b), QD_OK);
+    text = qd_buf_str(&b);
+    assert_non_null(strstr(text, "\"columns\""));
+    assert_non_null(strstr(text, "null")); /* v = 1 never passes 2.5 by t = 2 */
+    assert_null(strstr(text, "nan"));
+    qd_buf_free(&b);
+    qd_sweep_free(w);
+    sf_free(f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_needs),
         cmocka_unit_test(test_prepare_free_particle),
         cmocka_unit_test(test_map),
         cmocka_unit_test(test_list_csv),
+        cmocka_unit_test(test_write),
     };
     return cmocka_run_group_tests(tests, 0, NULL);
 }
