@@ -12,12 +12,6 @@
 
 #define AN_ORIGIN QD_SCENE_ORIGIN /* a link's end at the fixed origin (the pivot) */
 
-typedef struct an_point {
-    char name[96];  /* p1, p2, ... for particles; a body's own name; x1,y1 or P1 */
-    bool body;
-    double mass;
-} an_point;
-
 typedef struct an_link {
     size_t a, b;    /* point indices, or AN_ORIGIN */
     bool spring;    /* a zigzag (--spring); else a rigid rod */
@@ -25,12 +19,10 @@ typedef struct an_link {
 
 typedef struct an_scene {
     const char *model;           /* the file, for the page's title */
-    size_t npts, nbodies, nframes;
-    an_point *pts;               /* particles, bodies, named positions (qd_scene_points) */
-    qd_scene_point *spts;        /* the same as libqdot lists them */
-    double *t, *energy;          /* per frame: t, E(t) - E(t0) (NULL: no energy) */
-    double *pos;                 /* [frame][point][3] */
-    double *rot;                 /* [frame][body][9], body to space, row-major */
+    qd_scene_point *pts;         /* the points drawn (qd_scene_choose) */
+    size_t npts;
+    double *mass;                /* per point (1 for a named position) */
+    qd_scene_frames fr;          /* sampled at the frames (qd_scene_sample) */
     an_link *links;
     size_t nlinks;
     size_t *traces, ntraces;     /* points whose paths are drawn */

@@ -25,7 +25,7 @@ int cli_animate_analyse(an_scene *s) {
         skip[2 * k + 1] = s->links[k].b;
     }
     qd_scene_shape sh;
-    qd_status st = qd_scene_analyse(NULL, s->pos, s->nframes, s->npts, skip, s->nlinks, &sh);
+    qd_status st = qd_scene_analyse(NULL, s->fr.pos, s->fr.nframes, s->npts, skip, s->nlinks, &sh);
     free(skip);
     if (st != QD_OK) {
         free(sh.rods);
@@ -83,8 +83,8 @@ static void json_scene(FILE *f, const an_scene *s) {
     for (size_t i = 0; i < s->npts; i++) {
         fputs(i ? ",{\"name\":" : "{\"name\":", f);
         json_name(f, s->pts[i].name);
-        fprintf(f, ",\"body\":%s,\"mass\":%.7g}", s->pts[i].body ? "true" : "false",
-                s->pts[i].mass);
+        fprintf(f, ",\"body\":%s,\"mass\":%.7g}",
+                s->pts[i].kind == QD_SCENE_BODY ? "true" : "false", s->mass[i]);
     }
     fputs("],\"links\":[", f);
     for (size_t k = 0; k < s->nlinks; k++)
@@ -94,11 +94,12 @@ static void json_scene(FILE *f, const an_scene *s) {
     for (size_t k = 0; k < s->ntraces; k++)
         fprintf(f, "%s%zu", k ? "," : "", s->traces[k]);
     fputc(']', f);
-    json_numbers(f, "t", s->t, s->nframes);
-    if (s->energy)
-        json_numbers(f, "energy_error", s->energy, s->nframes);
-    json_numbers(f, "pos", s->pos, s->nframes * s->npts * 3);
-    json_numbers(f, "rot", s->rot, s->nframes * s->nbodies * 9);
+    const qd_scene_frames *fr = &s->fr;
+    json_numbers(f, "t", fr->t, fr->nframes);
+    if (fr->energy)
+        json_numbers(f, "energy_error", fr->energy, fr->nframes);
+    json_numbers(f, "pos", fr->pos, fr->nframes * s->npts * 3);
+    json_numbers(f, "rot", fr->rot, fr->nframes * fr->nbodies * 9);
     fputc('}', f);
 }
 

@@ -10,7 +10,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
-#include <ctype.h>
 #include <errno.h>
 #include <stdint.h>
 #include <math.h>
@@ -22,57 +21,30 @@
 #include "model_cli.h"
 #include "out.h"
 #include "progress.h"
+#include "args.h"
 #include "sim_cli.h"
 #include "sweep_hdf5.h"
-#include "sweep_map.h"
 #include "sweep_mpi.h"
-
-static const char usage_text[] =
-    "usage: qdot sweep FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N "
-    "[--seed S] | --list FILE.csv) --t-end T --measure \"M, ...\" [--event \"EXPR = EXPR[, "
-    "EXPR > EXPR]\" | --stop-at ...] [--section \"EXPR = EXPR[, EXPR > EXPR]\"] [--threads N] "
-    "[--renorm DT] [--transient T0] [--format csv|json|hdf5] [-o FILE] [--map FILE.png "
-    "[--map-measure NAME]] [simulate options: --method, --rtol, --dt, --set, "
-    "--initial, --native, ...]";
-
-/* escape:EXPR>VALUE in the --measure text: EXPR at [e0, e1), VALUE at [v0, v1). */
-typedef struct sweep_escape {
-    size_t e0, e1, v0, v1;
-} sweep_escape;
 
 typedef struct sweep_args {
     cli_sim_args sim;
-    const char *grid, *random, *list, *measure, *section, *format;
-    double n, seed, threads;
+    const char *grid, *random, *list, *measure, *section, *format, *map, *map_measure;
+    size_t n;              /* --n: the random runs (0: not given) */
+    double seed, threads;
     double renorm, transient; /* the lyapunov measures */
-    bool has_n;
     size_t nuser;          /* --event and --stop-at: the first is the measure event's */
-    sweep_escape escapes[QD_SIM_MAX_LIST]; /* each escape:EXPR>VALUE */
-    size_t nescapes;
-    cli_sweep_map map;     /* --map FILE.png, --map-measure NAME */
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
 
-static int whole(const char *opt, const char *v, double *x) {
+static int whole(const char *opt, const char *v, double *x, double most) {
     char *end;
     *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > 0x1p53) {
-        cli_diag_error("%s takes a whole number >= 0, not '%s'", opt, v);
+    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > most) {
+        cli_diag_error("%s takes a whole number from 0 to %.0f, not '%s'", opt, most, v);
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
-}
-
-/* --threads N: 0 (one per core) to QD_SWEEP_MAX_THREADS. */
-static int threads_option(const char *v, double *x) {
-    int rc = whole("--threads", v, x);
-    if (rc == QD_EXIT_OK && *x > QD_SWEEP_MAX_THREADS) {
-        cli_diag_error("--threads takes 0 (one per core) to %d threads, not '%s'",
-                       QD_SWEEP_MAX_THREADS, v);
-        return QD_EXIT_USAGE;
-    }
-    return rc;
 }
 
 static int positive(const char *opt, const char *v, double *x) {
@@ -85,264 +57,162 @@ static int positive(const char *opt, const char *v, double *x) {
     return QD_EXIT_OK;
 }
 
-static int own_option(int argc, char **argv, int *i, sweep_args *a) {
-    const char *v;
-    if ((v = cli_value(argc, argv, i, "--grid")))
-        return cli_once("--grid", &a->grid, v);
-    if ((v = cli_value(argc, argv, i, "--random")))
-        return cli_once("--random", &a->random, v);
-    if ((v = cli_value(argc, argv, i, "--list")))
-        return cli_once("--list", &a->list, v);
-    if ((v = cli_value(argc, argv, i, "--measure")))
-        return cli_once("--measure", &a->measure, v);
-    if ((v = cli_value(argc, argv, i, "--section")))
-        return cli_once("--section", &a->section, v);
-    if ((v = cli_value(argc, argv, i, "--format")))
-        return cli_once("--format", &a->format, v);
-    if ((v = cli_value(argc, argv, i, "--n")))
-        return (a->has_n = true), whole("--n", v, &a->n);
-    if ((v = cli_value(argc, argv, i, "--seed")))
-        return whole("--seed", v, &a->seed);
-    if ((v = cli_value(argc, argv, i, "--threads")))
-        return threads_option(v, &a->threads);
-    if ((v = cli_value(argc, argv, i, "--renorm")))
-        return positive("--renorm", v, &a->renorm);
-    if ((v = cli_value(argc, argv, i, "--transient")))
-        return positive("--transient", v, &a->transient);
-    cli_diag_error("unknown option or missing value: '%s'\n%s", argv[*i], usage_text);
-    return QD_EXIT_USAGE;
+static int seed_option(const char *v, void *a) {
+    return whole("--seed", v, &((sweep_args *)a)->seed, 0x1p53);
+}
+static int threads_option(const char *v, void *a) { /* 0: one per core */
+    return whole("--threads", v, &((sweep_args *)a)->threads, QD_SWEEP_MAX_THREADS);
+}
+static int renorm_option(const char *v, void *a) {
+    return positive("--renorm", v, &((sweep_args *)a)->renorm);
+}
+static int transient_option(const char *v, void *a) {
+    return positive("--transient", v, &((sweep_args *)a)->transient);
 }
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    sweep_args *a = data;
-    int rc;
-    if (cli_sim_took_option(argc, argv, i, &a->sim, &rc))
-        return rc;
-    if ((rc = cli_sweep_map_option(argc, argv, i, &a->map)) != 0)
-        return rc == 1 ? QD_EXIT_OK : rc - 100;
-    return own_option(argc, argv, i, a);
-}
+static const char *const formats[] = {"csv", "json", "hdf5", NULL};
+
+#define OPT(NAME, KIND, FIELD, META, HELP) \
+    {NAME, NULL, KIND, offsetof(sweep_args, FIELD), META, HELP, NULL, NULL}
+#define CALL(NAME, FN, META, HELP) {NAME, NULL, CLI_CALL, 0, META, HELP, NULL, FN}
+static const cli_opt opts[] = {
+    OPT("--grid", CLI_TEXT, grid, "\"NAME=A:B:N, ...\"", "the runs: a grid, the first axis slowest"),
+    OPT("--random", CLI_TEXT, random, "\"NAME=A:B, ...\"", "the runs: --n draws uniform in the box"),
+    OPT("--n", CLI_COUNT, n, "N", "the number of --random runs"),
+    CALL("--seed", seed_option, "S", "the seed of --random (default 1)"),
+    OPT("--list", CLI_TEXT, list, "FILE.csv", "the runs: a header of names, a row a run"),
+    OPT("--measure", CLI_TEXT, measure, "\"M, ...\"",
+        "final, energy_error, event, escape:EXPR>V, max:EXPR, min:EXPR, poincare-count, ..."),
+    OPT("--section", CLI_TEXT, section, "COND", "the section poincare-count counts crossing"),
+    CALL("--threads", threads_option, "N", "threads (0, the default: one per core)"),
+    CALL("--renorm", renorm_option, "DT", "the lyapunov measures' renormalization interval"),
+    CALL("--transient", transient_option, "T0", "the lyapunov measures' transient"),
+    {"--format", NULL, CLI_CHOICE, offsetof(sweep_args, format), "F", "the rows' format", formats,
+     NULL},
+    OPT("--map", CLI_TEXT, map, "FILE.png", "draw a measure of a grid of two axes (.svg, .pdf)"),
+    OPT("--map-measure", CLI_TEXT, map_measure, "NAME", "the column --map draws (default: the "
+        "first measure's)"),
+    {NULL, NULL, 0, 0, NULL, NULL, NULL, NULL},
+};
+
+static const cli_group groups[] = {CLI_SIM_GROUP(sweep_args, sim), {NULL, 0}};
+
+static const cli_spec spec = {
+    .name = "sweep",
+    .synopsis = "FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N | --list "
+                "FILE.csv) --t-end T --measure \"M, ...\" [options]",
+    .summary = "Many runs of one model, a row each: the inputs, the measures and the status.\n"
+               "Every option of qdot simulate that shapes a run applies too (--t-end, --method,\n"
+               "--rtol, --atol, --set, --initial, --event, --stop-at, --native, ...; qdot\n"
+               "simulate --help), and -o, --out FILE writes the rows.",
+    .opts = opts,
+    .groups = groups,
+    .min_pos = 1,
+    .max_pos = 1,
+    .pos_name = "FILE",
+};
 
 static int check_args(const sweep_args *a) {
     int how = (a->grid != NULL) + (a->random != NULL) + (a->list != NULL);
     const char *missing = how != 1               ? "one of --grid, --random, --list"
                           : !a->sim.t_end        ? "--t-end"
                           : !a->measure          ? "--measure"
-                          : a->random && !a->has_n ? "--n (the number of random runs)"
-                                                   : NULL;
+                          : a->random && !a->n   ? "--n (the number of random runs)"
+                                                 : NULL;
     if (missing) {
-        cli_diag_error("%s %s\n%s", how > 1 ? "give only" : "missing:", missing, usage_text);
+        cli_diag_error("%s %s (qdot sweep --help)", how > 1 ? "give only" : "missing:", missing);
         return QD_EXIT_USAGE;
     }
-    if (a->has_n && !a->random) {
+    if (a->map_measure && !a->map) {
+        cli_diag_error("--map-measure says what to draw: give the file with --map FILE.png");
+        return QD_EXIT_USAGE;
+    }
+    if (a->n && !a->random) {
         cli_diag_error("--n is for --random");
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
 }
 
-/* ---- measures that read an expression -------------------------------------- */
+/* ---- what the measures need (qd_sweep_needs) ------------------------------ */
 
-/* The EXPR of "max:EXPR", "min:EXPR" or "escape:EXPR>VALUE" at
- * text[a, b), as [*ea, *eb); false for the other measures. */
-static bool measure_expr(const char *text, size_t a, size_t b, size_t *ea, size_t *eb) {
-    const char *colon = memchr(text + a, ':', b - a);
-    if (!colon)
-        return false;
-    size_t h = a, c = (size_t)(colon - text);
-    while (h < c && isspace((unsigned char)text[h]))
-        h++;
-    bool escape = !strncmp(text + h, "escape", 6);
-    if (strncmp(text + h, "max", 3) && strncmp(text + h, "min", 3) && !escape)
-        return false;
-    *ea = c + 1;
-    *eb = b;
-    if (escape)
-        while (*eb > *ea && text[*eb - 1] != '>' && text[*eb - 1] != '<')
-            (*eb)--;
-    if (escape && *eb > *ea)
-        (*eb)--;
-    while (*ea < *eb && isspace((unsigned char)text[*ea]))
-        (*ea)++;
-    while (*eb > *ea && isspace((unsigned char)text[*eb - 1]))
-        (*eb)--;
-    return *eb > *ea;
-}
-
-static bool is_column(const cli_sim *c, const char *name) {
-    size_t nc = qd_sim_columns(c->s, c->opts.method, NULL, 0);
-    const char **names = malloc((nc + 1) * sizeof *names);
-    bool found = false;
-    if (names) {
-        qd_sim_columns(c->s, c->opts.method, names, nc);
-        for (size_t j = 0; j < nc && !found; j++)
-            found = !strcmp(names[j], name);
-    }
-    free(names);
-    return found;
-}
-
-/* Each EXPR that is not a column of the run yet becomes an output column
- * named by its text, which is what the library's measure reads. */
-static int measure_outputs(cli_sim *c, const char *spec) {
-    for (size_t p = 0; spec[p];) {
-        size_t e = cli_item_end(spec, p), a, b;
-        if (measure_expr(spec, p, e, &a, &b)) {
-            char *x = malloc(b - a + 1);
-            if (!x)
-                return QD_EXIT_FAIL;
-            memcpy(x, spec + a, b - a);
-            x[b - a] = '\0';
-            int rc = is_column(c, x) ? QD_EXIT_OK : cli_sim_output_in(c, "--measure", spec, a, b);
-            free(x);
-            if (rc != QD_EXIT_OK)
-                return rc;
-        }
-        p = spec[e] ? e + 1 : e;
-    }
-    return QD_EXIT_OK;
-}
-
-/* After the user's events: the section (poincare-count counts its
- * crossings), then an event EXPR = VALUE per escape:EXPR>VALUE, whose row
- * puts the library's interpolated escape time on the crossing itself. */
-static bool has_measure(const char *spec, const char *name) {
-    size_t len = strlen(name);
-    for (size_t p = 0; spec[p];) {
-        size_t e = cli_item_end(spec, p), a = p, b = e;
-        while (a < b && isspace((unsigned char)spec[a]))
-            a++;
-        while (b > a && isspace((unsigned char)spec[b - 1]))
-            b--;
-        if (b - a == len && !strncmp(spec + a, name, len))
-            return true;
-        p = spec[e] ? e + 1 : e;
-    }
-    return false;
-}
-
+/* Before the model: the event or section a measure needs, and the section
+ * as the event after the user's (poincare-count counts its crossings). */
 static int more_events(sweep_args *a) {
+    unsigned flags;
+    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
     a->nuser = a->sim.events.n + a->sim.stops.n;
-    if (!a->nuser && has_measure(a->measure, "event")) {
+    if (!a->nuser && (flags & QD_SWEEP_NEEDS_EVENT)) {
         cli_diag_error("the measure event needs --event or --stop-at (its first is the one)");
         return QD_EXIT_USAGE;
     }
-    if (!a->section && has_measure(a->measure, "poincare-count")) {
+    if (!a->section && (flags & QD_SWEEP_NEEDS_SECTION)) {
         cli_diag_error("the measure poincare-count needs --section");
         return QD_EXIT_USAGE;
     }
-    a->sim.section = a->section;
-    const char *spec = a->measure;
-    for (size_t p = 0; spec[p];) {
-        size_t e = cli_item_end(spec, p), x0, x1, h = p;
-        while (isspace((unsigned char)spec[h]))
-            h++;
-        if (!strncmp(spec + h, "escape", 6) && measure_expr(spec, p, e, &x0, &x1)) {
-            if (a->nuser + (a->section != NULL) + a->nescapes == QD_SIM_MAX_LIST) {
-                cli_diag_error("at most %d events with the escapes", QD_SIM_MAX_LIST);
-                return QD_EXIT_USAGE;
-            }
-            /* EXPR, then the value after its '>' or '<' (added by escape_events) */
-            size_t v = x1;
-            while (v < e && spec[v] != '>' && spec[v] != '<')
-                v++;
-            a->escapes[a->nescapes++] = (sweep_escape){x0, x1, v + (v < e), e};
-        }
-        p = spec[e] ? e + 1 : e;
+    if (a->section && a->nuser == QD_SIM_MAX_LIST) {
+        cli_diag_error("at most %d events with the --section", QD_SIM_MAX_LIST - 1);
+        return QD_EXIT_USAGE;
     }
+    a->sim.section = a->section; /* the event after the user's (cli_sim_setup) */
     return QD_EXIT_OK;
 }
 
-/* The escapes' events, after the user's and the section, read in the
- * --measure text (errors shown there, where the user wrote them). */
-static int escape_events(cli_sim *c, const sweep_args *a) {
-    for (size_t k = 0; k < a->nescapes; k++) {
-        const sweep_escape *x = &a->escapes[k];
-        int rc = cli_sim_crossing_in(c, "--measure", a->measure, x->e0, x->e1, x->v0, x->v1);
-        if (rc != QD_EXIT_OK)
-            return rc;
+/* The measures' outputs and escape crossings, read as --output and --event
+ * read them (the model's namespace), errors shown in the --measure text. */
+static int measure_needs(cli_sim *c, const char *spec) {
+    qd_sweep_need needs[2 * QD_SIM_MAX_LIST];
+    unsigned flags;
+    size_t n = qd_sweep_needs(c->s, spec, needs, 2 * QD_SIM_MAX_LIST, &flags);
+    if (n > 2 * QD_SIM_MAX_LIST) {
+        cli_diag_error("--measure: at most %d expressions", 2 * QD_SIM_MAX_LIST);
+        return QD_EXIT_USAGE;
     }
-    return QD_EXIT_OK;
-}
-
-/* ---- --list FILE.csv ------------------------------------------------------ */
-
-typedef struct list_csv {
-    char **names;
-    size_t nnames, nrows;
-    double *values;
-} list_csv;
-
-static void list_free(list_csv *l) {
-    for (size_t k = 0; k < l->nnames; k++)
-        free(l->names[k]);
-    free(l->names);
-    free(l->values);
-}
-
-static int list_header(list_csv *l, char *line) {
-    for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n")) {
-        while (isspace((unsigned char)*tok))
-            tok++;
-        size_t len = strlen(tok);
-        while (len && isspace((unsigned char)tok[len - 1]))
-            tok[--len] = '\0';
-        char **grown = realloc(l->names, (l->nnames + 1) * sizeof *grown);
-        if (!grown || !(grown[l->nnames] = strdup(tok)))
-            return (l->names = grown ? grown : l->names), QD_EXIT_FAIL;
-        l->names = grown;
-        l->nnames++;
+    int rc = QD_EXIT_OK;
+    for (size_t k = 0; rc == QD_EXIT_OK && k < n; k++) {
+        const qd_sweep_need *x = &needs[k];
+        rc = x->kind == QD_SWEEP_NEED_OUTPUT
+                 ? cli_sim_output_in(c, "--measure", spec, x->e0, x->e1)
+                 : cli_sim_crossing_in(c, "--measure", spec, x->e0, x->e1, x->v0, x->v1);
     }
-    return l->nnames ? QD_EXIT_OK : QD_EXIT_USAGE;
+    return rc;
 }
 
-static int list_row(list_csv *l, char *line, const char *path, size_t lineno) {
-    double *grown = realloc(l->values, (l->nrows + 1) * l->nnames * sizeof *grown);
-    if (!grown)
-        return QD_EXIT_FAIL;
-    l->values = grown;
-    char *p = line;
-    for (size_t k = 0; k < l->nnames; k++) {
-        char *end;
-        double x = strtod(p, &end);
-        while (isspace((unsigned char)*end))
-            end++;
-        if (end == p || (*end != (k + 1 < l->nnames ? ',' : '\0'))) {
-            cli_diag_error("%s:%zu: expected %zu numbers separated by commas", path, lineno,
-                           l->nnames);
-            return QD_EXIT_USAGE;
-        }
-        grown[l->nrows * l->nnames + k] = x;
-        p = end + 1;
-    }
-    l->nrows++;
-    return QD_EXIT_OK;
-}
+/* ---- --list FILE.csv: the file's text, read by qd_sweep_list_csv ----------- */
 
-static int list_read(const char *path, list_csv *l) {
+static int read_text(const char *path, char **text) {
     int rc = QD_EXIT_OK;
     FILE *f = cli_in_open(path, &rc);
     if (!f)
         return rc;
-    char line[4096];
-    size_t lineno = 0;
+    size_t n = 0, cap = 0;
+    char *t = NULL;
     errno = 0;
-    while (rc == QD_EXIT_OK && fgets(line, sizeof line, f)) {
-        lineno++;
-        line[strcspn(line, "\r\n")] = '\0';
-        if (!line[strspn(line, " \t")])
-            continue;
-        rc = l->nnames ? list_row(l, line, path, lineno) : list_header(l, line);
+    for (;;) {
+        if (cap - n < 4096) {
+            char *grown = cap < SIZE_MAX / 4 ? realloc(t, cap = 2 * cap + 4096) : NULL;
+            if (!grown) {
+                rc = QD_EXIT_FAIL;
+                cli_diag_error("out of memory reading %s", path);
+                break;
+            }
+            t = grown;
+        }
+        size_t k = fread(t + n, 1, cap - n - 1, f);
+        n += k;
+        if (k == 0)
+            break;
     }
     if (rc == QD_EXIT_OK && ferror(f)) {
         cli_diag_error("cannot read %s: %s", path, strerror(errno ? errno : EIO));
         rc = QD_EXIT_USAGE;
     }
     fclose(f);
-    if (rc == QD_EXIT_OK && !l->nrows) {
-        cli_diag_error("%s: a header of names and at least one row of numbers", path);
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK)
+        t[n] = '\0';
+    else
+        free(t);
+    *text = rc == QD_EXIT_OK ? t : NULL;
     return rc;
 }
 
@@ -357,16 +227,15 @@ static int spec_error(const qd_ctx *ctx, const char *opt, const char *spec) {
 static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
     if (a->grid && qd_sweep_grid(w, a->grid) != QD_OK)
         return spec_error(ctx, "--grid", a->grid);
-    if (a->random && qd_sweep_random(w, a->random, (size_t)a->n, (uint64_t)a->seed) != QD_OK)
+    if (a->random && qd_sweep_random(w, a->random, a->n, (uint64_t)a->seed) != QD_OK)
         return spec_error(ctx, "--random", a->random);
     if (!a->list)
         return QD_EXIT_OK;
-    list_csv l = {0};
-    int rc = list_read(a->list, &l);
-    if (rc == QD_EXIT_OK &&
-        qd_sweep_list(w, l.nnames, (const char *const *)l.names, l.nrows, l.values) != QD_OK)
-        rc = spec_error(ctx, a->list, NULL);
-    list_free(&l);
+    char *text = NULL;
+    int rc = read_text(a->list, &text);
+    if (rc == QD_EXIT_OK && qd_sweep_list_csv(w, text) != QD_OK)
+        rc = spec_error(ctx, a->list, text);
+    free(text);
     return rc;
 }
 
@@ -385,94 +254,16 @@ static void progress(void *data, size_t done, size_t total) {
 
 /* ---- output: one writer per --format (hdf5 joins the table) ---------------- */
 
-static void csv_field(FILE *f, const char *s) {
-    if (!strpbrk(s, ",\"\n")) {
-        fputs(s, f);
-        return;
-    }
-    fputc('"', f);
-    for (; *s; s++)
-        fputs(*s == '"' ? "\"\"" : (char[2]){*s, 0}, f);
-    fputc('"', f);
-}
-
-static const char *status_text(const sweep_result *r, size_t k) {
-    return r->status[k] == QD_OK ? "ok" : r->reasons + k * QD_SWEEP_REASON;
-}
-
-static int write_csv(FILE *f, const sweep_result *r) {
-    char num[QD_DOUBLE_MAX];
-    for (size_t j = 0; j < r->ncols; j++) {
-        csv_field(f, r->cols[j]);
-        fputc(',', f);
-    }
-    fputs("status\n", f);
-    for (size_t k = 0; k < r->nruns; k++) {
-        for (size_t j = 0; j < r->ncols; j++) {
-            qd_double_format(num, r->rows[k * r->ncols + j]);
-            fputs(num, f);
-            fputc(',', f);
-        }
-        csv_field(f, status_text(r, k));
-        fputc('\n', f);
-    }
-    return QD_EXIT_OK;
-}
-
-static int write_json(FILE *f, const sweep_result *r) {
-    qd_buf b = QD_BUF_INIT;
-    qd_json j;
-    qd_json_init(&j, &b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "columns");
-    qd_json_begin_array(&j);
-    for (size_t c = 0; c < r->ncols; c++)
-        qd_json_string(&j, r->cols[c]);
-    qd_json_end_array(&j);
-    qd_json_key(&j, "rows"); /* NaN (no value) as null */
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < r->nruns; k++) {
-        qd_json_begin_array(&j);
-        for (size_t c = 0; c < r->ncols; c++) {
-            double x = r->rows[k * r->ncols + c];
-            if (isfinite(x))
-                qd_json_number(&j, x);
-            else
-                qd_json_null(&j);
-        }
-        qd_json_end_array(&j);
-    }
-    qd_json_end_array(&j);
-    qd_json_key(&j, "status");
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < r->nruns; k++)
-        qd_json_string(&j, status_text(r, k));
-    qd_json_end_array(&j);
-    qd_json_end_object(&j);
-    int rc = b.failed ? QD_EXIT_FAIL : QD_EXIT_OK;
-    if (rc == QD_EXIT_OK)
-        fprintf(f, "%s\n", qd_buf_str(&b));
-    qd_buf_free(&b);
-    return rc;
-}
-
 static const struct {
     const char *name;
-    int (*write)(FILE *f, const sweep_result *r);
-} formats[] = {{"csv", write_csv}, {"json", write_json}, {"hdf5", NULL}};
-
-static int find_format(const char *name, size_t *k) {
-    for (*k = 0; *k < sizeof formats / sizeof *formats; (*k)++)
-        if (!strcmp(formats[*k].name, name))
-            return QD_EXIT_OK;
-    cli_diag_error("--format takes csv, json or hdf5, not '%s'", name);
-    return QD_EXIT_USAGE;
-}
+    qd_status (*write)(const qd_sweep *w, const double *rows, const qd_status *status,
+                       const char *reasons, qd_buf *out);
+} writers[] = {{"csv", qd_sweep_csv}, {"json", qd_sweep_json}, {"hdf5", NULL}};
 
 /* --format hdf5 (cli/sweep_hdf5.h): the rows with how the sweep was made. */
 static int write_hdf5(const sweep_args *a, const sweep_result *r) {
     char n[32], seed[32], err[512];
-    snprintf(n, sizeof n, "%.0f", a->n);
+    snprintf(n, sizeof n, "%zu", a->n);
     snprintf(seed, sizeof seed, "%.0f", a->seed);
     const char *names[] = {"model", "measures", a->grid ? "grid" : a->random ? "random" : "list",
                            "n", "seed"};
@@ -490,7 +281,7 @@ static int write_hdf5(const sweep_args *a, const sweep_result *r) {
 
 /* Before the runs: hdf5 is written to a file, by a qdot built with HDF5. */
 static int check_output(const sweep_args *a, size_t fmt) {
-    if (formats[fmt].write)
+    if (writers[fmt].write)
         return QD_EXIT_OK;
     if (!cli_hdf5_built()) {
         cli_diag_error("--format hdf5: this qdot was built without HDF5 (install libhdf5-dev "
@@ -504,17 +295,44 @@ static int check_output(const sweep_args *a, size_t fmt) {
     return QD_EXIT_OK;
 }
 
-static int write_result(const sweep_args *a, size_t fmt, const sweep_result *r) {
-    if (!formats[fmt].write)
+static int write_result(const qd_sweep *w, const sweep_args *a, size_t fmt,
+                        const sweep_result *r) {
+    if (!writers[fmt].write)
         return write_hdf5(a, r);
-    int rc = QD_EXIT_OK;
+    qd_buf b = QD_BUF_INIT;
+    if (writers[fmt].write(w, r->rows, r->status, r->reasons, &b) != QD_OK) {
+        qd_buf_free(&b);
+        cli_diag_error("out of memory writing the rows");
+        return QD_EXIT_FAIL;
+    }
+    int rc = QD_EXIT_OK, err = 0;
     FILE *f = a->sim.out ? cli_out_open(a->sim.out, &rc) : stdout;
-    if (!f)
-        return rc;
-    rc = formats[fmt].write(f, r);
-    int err = ferror(f) ? errno : 0;
-    int crc = cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err);
-    return rc != QD_EXIT_OK ? rc : crc;
+    if (f)
+        cli_out_write(f, qd_buf_str(&b), strlen(qd_buf_str(&b)), &err);
+    qd_buf_free(&b);
+    return f ? cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err) : rc;
+}
+
+/* --map (qd_sweep_map): before the runs, what it draws; after, the map. */
+static int map_check(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t *col) {
+    qd_plot_format f;
+    if (a->map && (qd_plot_format_of(ctx, a->map, &f) != QD_OK ||
+                   qd_sweep_map_column(w, a->map_measure, col) != QD_OK))
+        return cli_diag_ctx(ctx);
+    return QD_EXIT_OK;
+}
+
+static int map_write(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, const double *rows,
+                     size_t col) {
+    if (!a->map)
+        return QD_EXIT_OK;
+    qd_plot *p = qd_plot_new(ctx, 0, 0);
+    int rc = p && qd_plot_set_title(p, a->sim.file) == QD_OK &&
+                     qd_sweep_map(w, rows, col, p) == QD_OK && qd_plot_write(p, a->map) == QD_OK
+                 ? QD_EXIT_OK
+                 : cli_diag_ctx(ctx);
+    qd_plot_free(p);
+    return rc;
 }
 
 static void summary(const sweep_result *r, unsigned threads, int ranks) {
@@ -546,7 +364,7 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         r.cols[j] = qd_sweep_col(w, j);
     size_t mapcol = 0;
     if (rc == QD_EXIT_OK)
-        rc = cli_sweep_map_check(&a->map, w, a->grid != NULL, &mapcol);
+        rc = map_check(c->ctx, w, a, &mapcol);
     /* under mpirun every rank gets here; only rank 0 (done.writer) writes */
     cli_mpi_done done = {.writer = true, .ranks = 1};
     if (rc == QD_EXIT_OK) {
@@ -561,9 +379,9 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
     }
     if (rc == QD_EXIT_OK && done.writer)
-        rc = write_result(a, fmt, &r);
+        rc = write_result(w, a, fmt, &r);
     if (rc == QD_EXIT_OK && done.writer)
-        rc = cli_sweep_map_write(&a->map, w, r.rows, mapcol, a->sim.file);
+        rc = map_write(c->ctx, w, a, r.rows, mapcol);
     /* the threads the pool started: asked for (0: the cores), at most the runs */
     if (rc == QD_EXIT_OK && done.writer)
         summary(&r, done.ranks > 1 ? done.threads : qd_sweep_threads(done.threads, r.nruns),
@@ -578,7 +396,9 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
 /* The measures lyapunov and lyapunov-spectrum: the variational equations
  * of the same model (qdot/lyapunov.h), or NULL when none is asked for. */
 static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly) {
-    if (!has_measure(a->measure, "lyapunov") && !has_measure(a->measure, "lyapunov-spectrum"))
+    unsigned flags;
+    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
+    if (!(flags & QD_SWEEP_NEEDS_LYAP))
         return QD_EXIT_OK;
     if (!c->e) {
         cli_diag_error("the lyapunov measures take a model in the multiplier form (not given "
@@ -593,9 +413,7 @@ static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly
 }
 
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
-    int rc = escape_events(c, a);
-    if (rc == QD_EXIT_OK)
-        rc = measure_outputs(c, a->measure);
+    int rc = measure_needs(c, a->measure);
     if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_new(c->ctx, c->s, c->mf.model) : NULL;
@@ -619,12 +437,14 @@ static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
 
 int cli_cmd_sweep(int argc, char **argv) {
     sweep_args a = {.seed = 1};
-    int rc = cli_file_args(argc, argv, "sweep", usage_text, &a.sim.file, parse_option, &a);
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, &a, pos);
+    a.sim.file = pos[0];
     size_t fmt = 0;
+    while (rc == QD_EXIT_OK && a.format && strcmp(writers[fmt].name, a.format))
+        fmt++;
     if (rc == QD_EXIT_OK)
         rc = check_args(&a);
-    if (rc == QD_EXIT_OK && a.format)
-        rc = find_format(a.format, &fmt);
     if (rc == QD_EXIT_OK)
         rc = check_output(&a, fmt);
     if (rc != QD_EXIT_OK)

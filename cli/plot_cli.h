@@ -9,6 +9,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "qdot/qdot.h"
+#include "qdot/plot.h"
 
 typedef struct cli_plot_args {
     const char *file;   /* --plot FILE.png|.svg|.pdf */
@@ -43,22 +44,13 @@ void cli_plot_rows_free(cli_plot_rows *r);
 /* Which columns the plot of a run draws (x and each y), checked against
  * the run's column names (names[0] is t, the coordinates are 1..ndof):
  * exit status 2 with a message for a name that is not a column. */
-typedef struct cli_plot_pick {
-    bool phase;            /* x = ys[0]'s coordinate, y = its velocity */
-    size_t x;              /* column of x (0: t) */
-    size_t ny;
-    size_t y[16];          /* columns of the y series */
-    size_t panel[16];      /* the panel of each */
-    size_t npanels;
-    bool energy_error;     /* ys[k] == ncols: E(t) - E(0) */
-    size_t energy;         /* the energy column */
-} cli_plot_pick;
+typedef qd_plot_pick cli_plot_pick; /* qdot/plot.h */
 
 int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size_t ncols,
                           size_t ndof, cli_plot_pick *pk);
 
 /* The most panels --plot-y makes (one a group). */
-#define CLI_PLOT_MAX_PANELS 6
+#define CLI_PLOT_MAX_PANELS QD_PLOT_MAX_PANELS
 
 /* Draw the rows picked into a->file; title is the model file's name.
  * range (may be NULL) gets each panel's axes' ranges drawn: x0, x1, y0,

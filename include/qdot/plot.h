@@ -125,6 +125,53 @@ QD_API unsigned qd_plot_map_color(double f);
 /* Panel k's map's range of values (false without a map, or every value NaN). */
 QD_API bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, double *zmax);
 
+/* ---- a run's rows drawn (qdot simulate --plot, poincare --plot) -------- */
+
+#define QD_PLOT_MAX_SERIES 16
+#define QD_PLOT_MAX_PANELS 6
+
+/* Which columns of a run a plot draws. */
+typedef struct qd_plot_pick {
+    bool phase;            /* x is a coordinate, y[0] its velocity */
+    size_t x;              /* column of x (0: t) */
+    size_t ny;
+    size_t y[QD_PLOT_MAX_SERIES];     /* columns of the y series (ncols: energy_error) */
+    size_t panel[QD_PLOT_MAX_SERIES]; /* the panel of each */
+    size_t npanels;
+    bool energy_error;     /* a series is E(t) - E(t0) */
+    size_t energy;         /* then: the energy column */
+} qd_plot_pick;
+
+/* The columns of a run (names[0, ncols): t, then the ndof coordinates,
+ * ...): phase Q, Q' against Q; else ycols "a, b'; energy_error", each a
+ * column or energy_error (E - E(t0)) against t, a semicolon starting the
+ * next panel (at most QD_PLOT_MAX_SERIES in QD_PLOT_MAX_PANELS); else (both
+ * NULL) every coordinate against t.  QD_ERR_ARG for a name that is not a
+ * column (the option field "plot_y" or "phase"), or both given. */
+QD_API qd_status qd_plot_pick_columns(qd_ctx *ctx, const char *ycols, const char *phase,
+                                      const char *const *names, size_t ncols, size_t ndof,
+                                      qd_plot_pick *pk);
+
+/* The size "WxH" in pixels, 100 to 10000 each; QD_ERR_ARG (field "size"). */
+QD_API qd_status qd_plot_size_of(qd_ctx *ctx, const char *text, int *width, int *height);
+
+typedef struct qd_plot_run_opts {
+    const char *title;  /* NULL: none */
+    const char *xlabel; /* every panel's x axis; NULL: "t (s)", or the coordinate */
+    const char *ylabel; /* "A; B": each panel's y axis (the last for the panels after); NULL:
+                         * the panel's series' names */
+    int width, height;  /* 0: 800 x 500, or 800 wide and 280 a panel (+ 40) when stacked */
+    bool points;        /* dots (a Poincare section), else lines */
+} qd_plot_run_opts;
+
+/* A plot of the columns pk picks of rows (nrows x ncols, names as for
+ * qd_plot_pick_columns), a panel per group, stacked; NULL on failure (no
+ * rows, the plot's errors), the reason in ctx.  Write it with
+ * qd_plot_write; qd_plot_free. */
+QD_API qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *const *names,
+                            const double *rows, size_t nrows, size_t ncols,
+                            const qd_plot_run_opts *o);
+
 #ifdef __cplusplus
 }
 #endif
@@ -134,5 +181,5 @@ QD_API bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, doub
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_plot_add (index, label);
- * qd_plot_add_map (label). An array whose count is 0 may be NULL. */
+ * qd_plot_add_map (label); qd_plot_pick_columns (ycols, phase). An array whose count is 0 may be NULL. */
 #endif

@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include "expr.h"
 #include "model.h"
+#include "sim.h"
 #include "status.h"
 
 #ifdef __cplusplus
@@ -77,6 +78,77 @@ QD_API qd_status qd_scene_analyse(qd_ctx *ctx, const double *pos, size_t nframes
                                   const size_t *skip, size_t nskip, qd_scene_shape *out);
 QD_API void qd_scene_shape_free(qd_scene_shape *s);
 
+/* ---- choosing the points (qdot animate --draw, --trace, --spring) ------- */
+
+/* The points to draw, chosen by words: "particles", "bodies" and
+ * "positions" take every point of that kind, any other word the one point
+ * it names (qd_scene_find); no words: qd_scene_points' default (which 0).
+ * In qd_scene_points' order; *pts as qd_scene_points gives it.  QD_ERR_ARG
+ * for a word that names no point (the option field "draw", the points
+ * listed in the message) and for nothing to draw (the model has no point
+ * of the kinds asked for). */
+QD_API qd_status qd_scene_choose(qd_ctx *ctx, const qd_model *m, const char *const *words,
+                                 size_t nwords, qd_scene_point **pts, size_t *n);
+
+/* The point among pts[0, n) named name[0, len) (qd_scene_point_is), or
+ * QD_SCENE_ORIGIN for "origin", into *at; false when none is. */
+QD_API bool qd_scene_find(const qd_scene_point *pts, size_t n, const char *name, size_t len,
+                          size_t *at);
+
+/* Each of names (the paths to trace: not the origin) as its index in
+ * pts, into at[0, nnames).  QD_ERR_ARG for a name that is no point, the
+ * option field "trace". */
+QD_API qd_status qd_scene_named(qd_ctx *ctx, const qd_scene_point *pts, size_t n,
+                                const char *const *names, size_t nnames, size_t *at);
+
+/* Each of pairs "A,B" (springs: two different points, the origin one of
+ * them if need be) as ends[2k], ends[2k + 1].  QD_ERR_ARG for no comma, a
+ * name that is no point, or one point twice, the option field "spring". */
+QD_API qd_status qd_scene_pairs(qd_ctx *ctx, const qd_scene_point *pts, size_t n,
+                                const char *const *pairs, size_t npairs, size_t *ends);
+
+/* ---- the points along a run --------------------------------------------- */
+
+/* The outputs qd_scene_add_outputs adds: per point its x, y, z, and after a
+ * body's its rotation (body to space, row-major: nine numbers). */
+QD_API size_t qd_scene_noutputs(const qd_scene_point *pts, size_t n);
+
+/* Add those outputs to s (before qd_sim_compile; ctx the one s was made
+ * with; m the model of s and of pts), named "scene:NAME.x", ...,
+ * "scene:NAME.R00", ..., so that the run evaluates them at every row. */
+QD_API qd_status qd_scene_add_outputs(qd_ctx *ctx, qd_sim *s, const qd_model *m,
+                                      const qd_scene_point *pts, size_t n);
+
+/* Frames per simulated second, and at most this many intervals: a minute
+ * of frames (a longer run gets coarser ones). */
+#define QD_SCENE_FPS 60
+#define QD_SCENE_MAX_FRAMES 3600
+#define QD_SCENE_NONE ((size_t)-1)
+
+/* The frames of a picture of [t0, t_end]: 60 a second, at least 3, at most
+ * QD_SCENE_MAX_FRAMES + 1, the ends included. */
+QD_API size_t qd_scene_nframes(double t0, double t_end);
+
+typedef struct qd_scene_frames {
+    size_t nframes, nbodies;
+    double *t;      /* per frame: the time of the row shown */
+    double *energy; /* per frame: E - E(t0), or NULL (no energy column, or NaN) */
+    double *pos;    /* [frame][point][3] */
+    double *rot;    /* [frame][body][9], in the bodies' order among the points */
+} qd_scene_frames;
+
+/* The frames of a run's rows (nrows rows of width numbers, in time order,
+ * row[0] the time): qd_scene_nframes(t0, t_end) frames at equal times from
+ * t0 to t_end, each the row nearest to its time (a state the integrator
+ * computed, never a blend of two, which would cut the corners of the
+ * motion).  A row's points' outputs (qd_scene_add_outputs' order) start at
+ * column first; energy is its energy column, or QD_SCENE_NONE.  *out is
+ * malloc'd: qd_scene_frames_free. */
+QD_API qd_status qd_scene_sample(qd_ctx *ctx, const qd_scene_point *pts, size_t npts,
+                                 const double *rows, size_t nrows, size_t energy, size_t first,
+                                 size_t width, double t0, double t_end, qd_scene_frames *out);
+QD_API void qd_scene_frames_free(qd_scene_frames *f);
+
 #ifdef __cplusplus
 }
 #endif
@@ -86,5 +158,6 @@ QD_API void qd_scene_shape_free(qd_scene_shape *s);
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_scene_points (ctx); qd_scene_analyse
- * (ctx, skip). An array whose count is 0 may be NULL. */
+ * (ctx, skip); qd_scene_choose, qd_scene_named, qd_scene_pairs and
+ * qd_scene_sample (ctx). An array whose count is 0 may be NULL. */
 #endif

@@ -31,6 +31,8 @@
 #include <stdint.h>
 #include "lyapunov.h"
 #include "model.h"
+#include "plot.h"
+#include "print.h"
 #include "sim.h"
 
 #ifdef __cplusplus
@@ -50,6 +52,11 @@ QD_API qd_status qd_sweep_random(qd_sweep *w, const char *spec, size_t n, uint64
 /* nrows runs, values row-major (nrows * nnames numbers). */
 QD_API qd_status qd_sweep_list(qd_sweep *w, size_t nnames, const char *const *names, size_t nrows,
                                const double *values);
+/* The same from CSV text (qdot sweep --list FILE.csv): a header of names
+ * separated by commas, then one row of numbers a run; blank lines are
+ * skipped.  QD_ERR_PARSE located in text for an empty name, a missing or
+ * extra field, a field that is not a number, or no row. */
+QD_API qd_status qd_sweep_list_csv(qd_sweep *w, const char *text);
 
 /* The measures, in the order given (a later call replaces them). */
 QD_API qd_status qd_sweep_measures(qd_sweep *w, const char *spec);
@@ -74,6 +81,69 @@ QD_API qd_status qd_sweep_set_section(qd_sweep *w, size_t k);
  * degrees of freedom are not s's.  Without l these measures are refused
  * by qd_sweep_run. */
 QD_API qd_status qd_sweep_set_lyap(qd_sweep *w, const qd_lyap *l, const qd_lyap_opts *lo);
+
+/* ---- what the measures ask of the run, before it is compiled ------------
+ *
+ * A measure that reads an expression (max:EXPR, min:EXPR, escape:EXPR>VALUE)
+ * reads the run's column named by EXPR's text: unless EXPR is a column
+ * already, the run needs it as an output.  escape:EXPR>VALUE also needs the
+ * crossing EXPR = VALUE as an event (no guards, not stopping), so the row at
+ * the crossing puts the escape time on it to round-off.  `event` needs an
+ * event of the run, `poincare-count` a section, the Lyapunov measures
+ * qd_sweep_set_lyap. */
+typedef enum qd_sweep_need_kind {
+    QD_SWEEP_NEED_OUTPUT,  /* spec[e0, e1) as an output named by that text */
+    QD_SWEEP_NEED_CROSSING /* an event where spec[e0, e1) crosses spec[v0, v1) */
+} qd_sweep_need_kind;
+
+typedef struct qd_sweep_need {
+    qd_sweep_need_kind kind;
+    size_t e0, e1; /* EXPR: bytes [e0, e1) of the spec, trimmed */
+    size_t v0, v1; /* a crossing's VALUE: bytes [v0, v1) of the spec */
+} qd_sweep_need;
+
+#define QD_SWEEP_NEEDS_EVENT 1u   /* `event`: an event (qd_sweep_set_event) */
+#define QD_SWEEP_NEEDS_SECTION 2u /* `poincare-count`: a section (qd_sweep_set_section) */
+#define QD_SWEEP_NEEDS_LYAP 4u    /* `lyapunov`, `lyapunov-spectrum`: qd_sweep_set_lyap */
+
+/* The needs of the measures spec (as qd_sweep_measures reads it), in the
+ * order written (an escape: its output, then its crossing): the first cap
+ * into needs, the count returned; *flags gets the QD_SWEEP_NEEDS_* of the
+ * measures.  An EXPR that a measure before it reads already needs no second
+ * output, nor one that is a column of s (s may be NULL: every EXPR is
+ * needed).  Text that is not a measure needs nothing (qd_sweep_measures
+ * says why).  Reads text and s's columns only. */
+QD_API size_t qd_sweep_needs(const qd_sim *s, const char *spec, qd_sweep_need *needs, size_t cap,
+                             unsigned *flags);
+
+/* An expression spec[a, b) read in the model's namespace (coordinates,
+ * velocities, t, parameters, definitions...), or NULL with the reason
+ * recorded in ctx, located in spec. */
+typedef const qd_expr *(*qd_sweep_read_fn)(void *data, qd_ctx *ctx, const char *spec, size_t a,
+                                           size_t b);
+
+/* Add to s (not compiled yet; ctx the one s was made with) the outputs and
+ * events the measures spec need (qd_sweep_needs), the events after those s
+ * has, in the order of the escapes.  read: the reader of the expressions; NULL: qd_read (names as
+ * symbols; a definition is not followed).  The first error is returned,
+ * its reason in ctx. */
+QD_API qd_status qd_sweep_prepare(qd_ctx *ctx, qd_sim *s, const char *spec, qd_sweep_read_fn read,
+                                  void *data);
+
+/* ---- a grid of two axes as a colour map (qdot sweep --map) -------------- */
+
+/* The measure column a map draws: measure NULL, the first measure column;
+ * else the measure column so named.  QD_ERR_ARG, the reason in the sweep's
+ * context naming the option field "map" (the runs are not a grid of two
+ * axes, no measures) or "map_measure" (no such measure column). */
+QD_API qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, size_t *col);
+
+/* Add to p (its selected panel) column col of rows (the sweep's nruns x
+ * ncols numbers, in run order, as qd_sweep_run fills them) as a colour map
+ * over the grid's two axes (qd_plot_add_map): the first input across, the
+ * second up, the axes labelled with their names, the colour bar with the
+ * column's.  Errors as qd_sweep_map_column's, or the plot's. */
+QD_API qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plot *p);
 
 QD_API size_t qd_sweep_nruns(const qd_sweep *w);
 QD_API size_t qd_sweep_ninputs(const qd_sweep *w);
@@ -105,6 +175,17 @@ QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts 
                               char *reasons, void (*progress)(void *data, size_t done, size_t total),
                               void *data);
 
+/* The rows of runs [0, nruns) as qd_sweep_run fills them (rows, status,
+ * reasons: may be NULL, then a failed run's status is named) appended to
+ * out: CSV, the columns then `status` in a header, a line a run, its
+ * numbers (qd_double_format: nan where none) then "ok" or why it failed;
+ * or JSON, {"columns": [...], "rows": [[...], ...] (null where none),
+ * "status": [...]} and a newline.  QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_sweep_csv(const qd_sweep *w, const double *rows, const qd_status *status,
+                              const char *reasons, qd_buf *out);
+QD_API qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_status *status,
+                               const char *reasons, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -114,5 +195,6 @@ QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts 
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_sweep_set_lyap (lo); qd_sweep_run
- * (data, progress, reasons). An array whose count is 0 may be NULL. */
+ * (data, progress, reasons); qd_sweep_needs (s; needs, when cap is 0);
+ * qd_sweep_prepare (read, data); qd_sweep_map_column (measure); qd_sweep_csv and qd_sweep_json (reasons). An array whose count is 0 may be NULL. */
 #endif

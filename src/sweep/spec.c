@@ -214,11 +214,11 @@ static const struct {
     {"lyapunov", QD__MS_LYAP},        {"lyapunov-spectrum", QD__MS_LYAPSPEC},
 };
 
-/* Some method's run has a column of that name. */
-static bool is_column(const qd_sweep *w, const char *name) {
+/* Some method's run of s has a column of that name. */
+bool qd__sweep_is_column(const qd_sim *s, const char *name) {
     const char *names[512];
     for (int k = 0; k < QD_SIM_METHOD_COUNT; k++) {
-        size_t nc = qd_sim_columns(w->s, (qd_sim_method)k, names, 512);
+        size_t nc = qd_sim_columns(s, (qd_sim_method)k, names, 512);
         for (size_t j = 0; j < nc && j < 512; j++)
             if (!strcmp(names[j], name))
                 return true;
@@ -241,7 +241,7 @@ static qd_status column_arg(qd_sweep *w, qd__sw_ms *x, const char *text, size_t 
     x->col = copy(w->ctx, text, a, b);
     if (!x->col)
         return QD_ERR_NOMEM;
-    if (a < b && is_column(w, x->col))
+    if (a < b && qd__sweep_is_column(w->s, x->col))
         return QD_OK;
     return FAIL_AT(w->ctx, QD_ERR_ARG, text, a, b,
                    "'%s' is not a column of the run (a coordinate, a velocity NAME', energy, "
@@ -314,4 +314,118 @@ qd_status qd_sweep_measures(qd_sweep *w, const char *spec) {
     if (st != QD_OK)
         qd__sweep_free_measures(w);
     return st;
+}
+
+/* ---- what the measures need before the run is compiled ---------------------- */
+
+/* The needs of the measure text[a, b) (trimmed) into out (at most two: an
+ * escape's output and crossing), as measure() reads it; its flag into
+ * *flags.  Malformed text needs nothing: qd_sweep_measures says why. */
+static size_t item_needs(const char *text, size_t a, size_t b, qd_sweep_need out[2],
+                         unsigned *flags) {
+    static const struct {
+        const char *name;
+        unsigned flag;
+    } flagged[] = {{"event", QD_SWEEP_NEEDS_EVENT},
+                   {"poincare-count", QD_SWEEP_NEEDS_SECTION},
+                   {"lyapunov", QD_SWEEP_NEEDS_LYAP},
+                   {"lyapunov-spectrum", QD_SWEEP_NEEDS_LYAP}};
+    for (size_t k = 0; k < sizeof flagged / sizeof *flagged; k++)
+        if (b - a == strlen(flagged[k].name) && !strncmp(text + a, flagged[k].name, b - a)) {
+            *flags |= flagged[k].flag;
+            return 0;
+        }
+    const char *colon = memchr(text + a, ':', b - a);
+    if (!colon)
+        return 0;
+    size_t c = (size_t)(colon - text), h = a, t = c;
+    trim(text, &h, &t);
+    bool escape = t - h == 6 && !strncmp(text + h, "escape", 6);
+    if (!escape && !(t - h == 3 && (!strncmp(text + h, "max", 3) || !strncmp(text + h, "min", 3))))
+        return 0;
+    size_t e0 = c + 1, e1 = b, v0 = b, v1 = b;
+    if (escape) { /* EXPR before the last '>' or '<', VALUE after it */
+        while (e1 > e0 && text[e1 - 1] != '>' && text[e1 - 1] != '<')
+            e1--;
+        if (e1 == e0)
+            return 0;
+        v0 = e1--;
+        trim(text, &v0, &v1);
+    }
+    trim(text, &e0, &e1);
+    if (e0 == e1 || (escape && v0 == v1))
+        return 0;
+    out[0] = (qd_sweep_need){QD_SWEEP_NEED_OUTPUT, e0, e1, 0, 0};
+    out[1] = (qd_sweep_need){QD_SWEEP_NEED_CROSSING, e0, e1, v0, v1};
+    return escape ? 2 : 1;
+}
+
+/* Calls f(spec, a, b, data) for each item spec[a, b) of spec, trimmed and
+ * not empty, with a < end, until f returns false. */
+static void each_item(const char *spec, size_t end,
+                      bool (*f)(const char *spec, size_t a, size_t b, void *data), void *data) {
+    for (size_t p = 0; spec[p];) {
+        size_t e = item_end(spec, p), a = p, b = e;
+        trim(spec, &a, &b);
+        if (a >= end || (a < b && !f(spec, a, b, data)))
+            return;
+        p = spec[e] ? e + 1 : e;
+    }
+}
+
+typedef struct needs_acc {
+    const qd_sim *s;
+    qd_sweep_need *needs;
+    size_t cap, n;
+    unsigned flags;
+    size_t e0, e1; /* same_output: the EXPR looked for */
+    bool found;
+} needs_acc;
+
+static bool same_output(const char *spec, size_t a, size_t b, void *data) {
+    needs_acc *q = data;
+    qd_sweep_need x[2];
+    unsigned flags = 0;
+    if (item_needs(spec, a, b, x, &flags) && x[0].e1 - x[0].e0 == q->e1 - q->e0 &&
+        !strncmp(spec + x[0].e0, spec + q->e0, q->e1 - q->e0))
+        q->found = true;
+    return !q->found;
+}
+
+/* EXPR spec[e0, e1) of the item at a is a column of s already, or the
+ * output of an item before it. */
+static bool has_output(const qd_sim *s, const char *spec, size_t a, size_t e0, size_t e1) {
+    char name[512];
+    if (s && e1 - e0 < sizeof name) {
+        memcpy(name, spec + e0, e1 - e0);
+        name[e1 - e0] = '\0';
+        if (qd__sweep_is_column(s, name))
+            return true;
+    }
+    needs_acc q = {.e0 = e0, .e1 = e1};
+    each_item(spec, a, same_output, &q);
+    return q.found;
+}
+
+static bool add_needs(const char *spec, size_t a, size_t b, void *data) {
+    needs_acc *q = data;
+    qd_sweep_need x[2];
+    size_t k = item_needs(spec, a, b, x, &q->flags);
+    for (size_t j = 0; j < k; j++) {
+        if (x[j].kind == QD_SWEEP_NEED_OUTPUT && has_output(q->s, spec, a, x[j].e0, x[j].e1))
+            continue;
+        if (q->n < q->cap)
+            q->needs[q->n] = x[j];
+        q->n++;
+    }
+    return true;
+}
+
+size_t qd_sweep_needs(const qd_sim *s, const char *spec, qd_sweep_need *needs, size_t cap,
+                      unsigned *flags) {
+    QD_ARGS(0, spec && (needs || cap == 0) && flags);
+    needs_acc q = {.s = s, .needs = needs, .cap = cap};
+    each_item(spec, (size_t)-1, add_needs, &q);
+    *flags = q.flags;
+    return q.n;
 }

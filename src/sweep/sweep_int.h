@@ -87,6 +87,9 @@ void qd__sweep_free_measures(qd_sweep *w);
  * event, a section); QD_ERR_ARG with the reason in ctx. */
 qd_status qd__sweep_ready(qd_ctx *ctx, const qd_sweep *w);
 
+/* Some method's run of s has a column of that name. */
+bool qd__sweep_is_column(const qd_sim *s, const char *name);
+
 /* Run i's input values (w->nin numbers). */
 void qd__sweep_inputs_of(const qd_sweep *w, size_t i, double *x);
 

@@ -3089,6 +3089,42 @@ static void null_plot(void **state)
     /* zmax NULL */
     assert_true(qd_plot_map_range(F.plot, 1, F.d, NULL) == 0);
     reset(&F);
+    /* ---- qd_plot_pick_columns */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(NULL, "q", "q", (const char * const *)F.names, 1, 1, NULL));
+    reset(&F);
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", NULL, 1, 1, NULL));
+    reset(&F);
+    /* pk NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", (const char * const *)F.names, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_plot_size_of */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(NULL, "q", F.i, F.i));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, NULL, F.i, F.i));
+    reset(&F);
+    /* width NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, "q", NULL, F.i));
+    reset(&F);
+    /* height NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, "q", F.i, NULL));
+    reset(&F);
+    /* ---- qd_plot_run */
+    /* ctx NULL */
+    assert_null(qd_plot_run(NULL, NULL, (const char * const *)F.names, F.d, 1, 1, NULL));
+    reset(&F);
+    /* pk NULL */
+    assert_null(qd_plot_run(F.ctx, NULL, (const char * const *)F.names, F.d, 1, 1, NULL));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_plot_run(F.ctx, NULL, NULL, F.d, 1, 1, NULL));
+    reset(&F);
+    /* rows NULL */
+    assert_null(qd_plot_run(F.ctx, NULL, (const char * const *)F.names, NULL, 1, 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -3968,6 +4004,94 @@ static void null_scene(void **state)
     /* s NULL */
     qd_scene_shape_free(NULL);
     reset(&F);
+    /* ---- qd_scene_choose */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(NULL, F.model, (const char * const *)F.names, 1, NULL, F.z));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, NULL, (const char * const *)F.names, 1, NULL, F.z));
+    reset(&F);
+    /* words NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, F.model, NULL, 1, NULL, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, F.model, (const char * const *)F.names, 1, NULL, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_choose(F.ctx, F.model, (const char * const *)F.names, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scene_find */
+    /* pts NULL */
+    assert_true(qd_scene_find(NULL, 1, "q", 1, F.z) == 0);
+    reset(&F);
+    /* name NULL */
+    assert_true(qd_scene_find(NULL, 1, NULL, 1, F.z) == 0);
+    reset(&F);
+    /* at NULL */
+    assert_true(qd_scene_find(NULL, 1, "q", 1, NULL) == 0);
+    reset(&F);
+    /* ---- qd_scene_named */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(NULL, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(F.ctx, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(F.ctx, NULL, 1, NULL, 1, F.z));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_named(F.ctx, NULL, 1, (const char * const *)F.names, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_pairs */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(NULL, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(F.ctx, NULL, 1, (const char * const *)F.names, 1, F.z));
+    reset(&F);
+    /* pairs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(F.ctx, NULL, 1, NULL, 1, F.z));
+    reset(&F);
+    /* ends NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_pairs(F.ctx, NULL, 1, (const char * const *)F.names, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_noutputs */
+    /* pts NULL */
+    assert_true(qd_scene_noutputs(NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_scene_add_outputs */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(NULL, F.sim, F.model, NULL, 1));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(F.ctx, NULL, F.model, NULL, 1));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(F.ctx, F.sim, NULL, NULL, 1));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_add_outputs(F.ctx, F.sim, F.model, NULL, 1));
+    reset(&F);
+    /* ---- qd_scene_nframes */
+    /* no pointer argument */
+    /* ---- qd_scene_sample */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(NULL, NULL, 1, F.d, 1, 1, 1, 1, 1, 1, (qd_scene_frames *)(void *)F.blob));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(F.ctx, NULL, 1, F.d, 1, 1, 1, 1, 1, 1, (qd_scene_frames *)(void *)F.blob));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(F.ctx, NULL, 1, NULL, 1, 1, 1, 1, 1, 1, (qd_scene_frames *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_sample(F.ctx, NULL, 1, F.d, 1, 1, 1, 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_scene_frames_free */
+    /* f NULL */
+    qd_scene_frames_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -4715,6 +4839,13 @@ static void null_sweep(void **state)
     /* values NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_list(NULL, 1, (const char * const *)F.names, 1, NULL));
     reset(&F);
+    /* ---- qd_sweep_list_csv */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_list_csv(NULL, "q"));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_list_csv(NULL, NULL));
+    reset(&F);
     /* ---- qd_sweep_measures */
     /* w NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_measures(NULL, "q"));
@@ -4733,6 +4864,40 @@ static void null_sweep(void **state)
     /* ---- qd_sweep_set_lyap */
     /* w NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_set_lyap(NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_needs */
+    /* spec NULL */
+    assert_true(qd_sweep_needs(F.sim, NULL, NULL, 1, F.u) == 0);
+    reset(&F);
+    /* flags NULL */
+    assert_true(qd_sweep_needs(F.sim, "q", NULL, 1, NULL) == 0);
+    reset(&F);
+    /* ---- qd_sweep_prepare */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_prepare(NULL, F.sim, "q", NULL, NULL));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_prepare(F.ctx, NULL, "q", NULL, NULL));
+    reset(&F);
+    /* spec NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_prepare(F.ctx, F.sim, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_map_column */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_column(NULL, "q", F.z));
+    reset(&F);
+    /* col NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_column(NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_sweep_map */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, F.d, 1, F.plot));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, NULL, 1, F.plot));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, F.d, 1, NULL));
     reset(&F);
     /* ---- qd_sweep_nruns */
     /* w NULL */
@@ -4774,6 +4939,32 @@ static void null_sweep(void **state)
     reset(&F);
     /* status NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, F.d, NULL, F.c, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_csv */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, F.st, "q", &F.buf));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, NULL, F.st, "q", &F.buf));
+    reset(&F);
+    /* status NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, F.st, "q", NULL));
+    reset(&F);
+    /* ---- qd_sweep_json */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, F.st, "q", &F.buf));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, NULL, F.st, "q", &F.buf));
+    reset(&F);
+    /* status NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, NULL, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, F.st, "q", NULL));
     reset(&F);
     teardown(&F);
 }

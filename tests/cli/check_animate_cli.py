@@ -134,7 +134,8 @@ def main():
     # -o and --out are one option (the page): given twice
     check(rc == 2 and 'given twice' in err, f'--out: {rc} {err}')
     rc, _, err = run(qdot, 'animate', DP, '--spring', 'p1', '-o', tmp / 'none.html')
-    check(rc == 2 and '--spring takes two points' in err, f'--spring p1: {rc} {err}')
+    check(rc == 2 and 'a spring takes two points' in err and '(--spring)' in err,
+          f'--spring p1: {rc} {err}')
 
     # the rods: both pendulum links have constant length; a spring is not a rod
     html = tmp / 'dp.html'

@@ -59,7 +59,7 @@ def main():
     for bad in (['--size', '1200'], ['--size', '50x50'], ['--size', '1200x800x3']):
         p = subprocess.run(base[:-2] + bad + ['--plot', str(tmp / 'c.png')], capture_output=True,
                            text=True, timeout=120)
-        if p.returncode != 2 or '--size takes WxH' not in p.stderr:
+        if p.returncode != 2 or 'takes WxH' not in p.stderr or '(--size)' not in p.stderr:
             failures.append(f'{bad}: exit {p.returncode} {p.stderr}')
     p = subprocess.run(base[:-2] + ['--title', 'x'], capture_output=True, text=True, timeout=120)
     if p.returncode != 2 or 'give the file with --plot' not in p.stderr:

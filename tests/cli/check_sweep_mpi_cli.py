@@ -255,7 +255,8 @@ def colour_map(build, tmp):
     check("map of k: lighter cell by cell up k", monotone(up, 3), str(up))
     r = run(qdot_cmd(build, "sweep", model, "--random", "m=1:2", "--n", 3, "--t-end", 0.1,
                      "--measure", "final", "--map", tmp / "r.png"))
-    check("map of a random sweep: exit 2", r.returncode == 2 and "--grid" in r.stderr, r.stderr)
+    check("map of a random sweep: exit 2", r.returncode == 2 and "grid of two axes" in r.stderr
+          and "(--map)" in r.stderr, r.stderr)
     r = run(qdot_cmd(build, "sweep", *base, "--map", tmp / "x.png", "--map-measure", "peak"))
     check("map of an unknown measure: exit 2", r.returncode == 2 and "'peak'" in r.stderr,
           r.stderr)

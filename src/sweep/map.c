@@ -1,0 +1,84 @@
+/*
+ * src/sweep/map.c - one measure of a grid of two axes drawn as a colour map
+ * (qd_plot_add_map): the first axis across, the second up.  The axes are the
+ * grid's own points (the sweep knows them), so nothing is guessed back from
+ * the rows.
+ */
+#include "sweep_int.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/mem.h"
+#include "../base/args.h"
+
+/* The error just recorded is about the option field name ("map"). */
+static qd_status field(qd_ctx *ctx, qd_status st, const char *name) {
+    qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, name, QD_REASON_NONE, NULL);
+    return st;
+}
+
+qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, size_t *col) {
+    QD_ARGS(QD_ERR_ARG, w && col);
+    if (w->how != QD__SW_GRID) {
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "a map draws a grid of two axes "
+                     "(\"A=a0:a1:N, B=b0:b1:M\"), not random or listed runs");
+        return field(w->ctx, QD_ERR_ARG, "map");
+    }
+    if (w->nin != 2) {
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "a map draws a grid of two axes; this one has %zu",
+                     w->nin);
+        return field(w->ctx, QD_ERR_ARG, "map");
+    }
+    if (w->ncols <= w->nin) {
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "a map draws a measure: the sweep has none");
+        return field(w->ctx, QD_ERR_ARG, "map");
+    }
+    if (!measure) {
+        *col = w->nin;
+        return QD_OK;
+    }
+    for (size_t j = w->nin; j < w->ncols; j++)
+        if (!strcmp(w->cols[j], measure)) {
+            *col = j;
+            return QD_OK;
+        }
+    qd_ctx_error(w->ctx, QD_ERR_ARG, "'%s' is not a measure column of the sweep (the first "
+                 "is '%s')", measure, w->cols[w->nin]);
+    return field(w->ctx, QD_ERR_ARG, "map_measure");
+}
+
+qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plot *p) {
+    QD_ARGS(QD_ERR_ARG, w && rows && p);
+    size_t c = 0;
+    qd_status st = qd_sweep_map_column(w, NULL, &c);
+    if (st != QD_OK)
+        return st;
+    if (col < w->nin || col >= w->ncols) {
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "column %zu is not a measure column of the sweep", col);
+        return QD_ERR_ARG;
+    }
+    size_t nx = w->in[0].npts, ny = w->in[1].npts, n = nx * ny;
+    double *x = qd__malloc(w->ctx, nx * sizeof *x), *y = qd__malloc(w->ctx, ny * sizeof *y);
+    double *z = qd__malloc(w->ctx, n * sizeof *z);
+    st = x && y && z ? QD_OK : QD_ERR_NOMEM;
+    double in[2];
+    /* run k = i * ny + j is (x[i], y[j]): the first axis slowest */
+    for (size_t k = 0; st == QD_OK && k < n; k++) {
+        size_t i = k / ny, j = k % ny;
+        qd__sweep_inputs_of(w, k, in);
+        x[i] = in[0];
+        y[j] = in[1];
+        z[j * nx + i] = rows[k * w->ncols + col];
+    }
+    if (st == QD_OK)
+        st = qd_plot_set_xlabel(p, w->cols[0]);
+    if (st == QD_OK)
+        st = qd_plot_set_ylabel(p, w->cols[1]);
+    if (st == QD_OK)
+        st = qd_plot_add_map(p, w->cols[col], nx, ny, x, y, z);
+    qd__free(x);
+    qd__free(y);
+    qd__free(z);
+    return st;
+}

@@ -1,0 +1,77 @@
+/*
+ * src/sweep/prepare.c - a measure's needs added to the run before it is
+ * compiled: each EXPR of max:EXPR, min:EXPR, escape:EXPR>VALUE that is not a
+ * column yet becomes an output named by its text (the column the measure
+ * reads), and each escape its crossing EXPR = VALUE as an event, so the
+ * escape time is located to round-off rather than at a step.
+ */
+#include "sweep_int.h"
+
+#include <string.h>
+
+#include "base/mem.h"
+#include "qdot/read.h"
+#include "../base/args.h"
+
+/* The library's own reader: qd_read of spec[a, b), names as symbols (no
+ * definitions followed), an error located in spec. */
+static const qd_expr *plain_read(void *data, qd_ctx *ctx, const char *spec, size_t a,
+                                 size_t b) {
+    (void)data;
+    char *text = qd__malloc(ctx, b - a + 1);
+    if (!text)
+        return NULL;
+    memcpy(text, spec + a, b - a);
+    text[b - a] = '\0';
+    qd_diag d;
+    const qd_read_opts opts = {.new_symbols = true};
+    const qd_expr *x = qd_read(ctx, text, &opts, &d);
+    qd__free(text);
+    if (!x) { /* the record again, located in spec rather than in the copy */
+        qd_ctx_clear_error(ctx);
+        qd_ctx_error(ctx, d.status, "%s", d.message);
+        qd_ctx_error_about(ctx, QD_SUBJECT_TEXT, 0, NULL, QD_REASON_NONE, NULL);
+        qd_ctx_error_at(ctx, spec, a + d.offset, d.length ? d.length : 1);
+    }
+    return x;
+}
+
+static qd_status failed(qd_ctx *ctx) {
+    qd_status st = qd_ctx_status(ctx);
+    return st != QD_OK ? st : QD_ERR_PARSE;
+}
+
+qd_status qd_sweep_prepare(qd_ctx *ctx, qd_sim *s, const char *spec, qd_sweep_read_fn read,
+                           void *data) {
+    QD_ARGS_CTX(ctx, ctx && s && spec);
+    if (!read)
+        read = plain_read;
+    unsigned flags;
+    size_t n = qd_sweep_needs(s, spec, NULL, 0, &flags);
+    qd_sweep_need *needs = qd__malloc(ctx, (n + 1) * sizeof *needs);
+    if (!needs)
+        return QD_ERR_NOMEM;
+    qd_sweep_needs(s, spec, needs, n, &flags);
+    qd_status st = QD_OK;
+    for (size_t k = 0; st == QD_OK && k < n; k++) {
+        const qd_sweep_need *x = &needs[k];
+        char *name = qd__malloc(ctx, x->e1 - x->e0 + 1);
+        if (!name) {
+            st = QD_ERR_NOMEM;
+            break;
+        }
+        memcpy(name, spec + x->e0, x->e1 - x->e0);
+        name[x->e1 - x->e0] = '\0';
+        if (x->kind == QD_SWEEP_NEED_OUTPUT) {
+            const qd_expr *e = read(data, ctx, spec, x->e0, x->e1);
+            st = e ? qd_sim_add_output(s, name, e) : failed(ctx);
+        } else if (x->kind == QD_SWEEP_NEED_CROSSING) {
+            const qd_expr *l = read(data, ctx, spec, x->e0, x->e1);
+            const qd_expr *r = l ? read(data, ctx, spec, x->v0, x->v1) : NULL;
+            st = r ? qd_sim_add_event(s, qd_sub(ctx, l, r), 0, NULL, false) : failed(ctx);
+        }
+        qd__free(name);
+    }
+    qd__free(needs);
+    return st;
+}
