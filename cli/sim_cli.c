@@ -88,60 +88,6 @@ const cli_opt cli_sim_plot_opts[] = {
 };
 #undef PLOT
 
-/* The interim reader of one option of the table (until cli_parse). */
-bool cli_sim_took_option(int argc, char **argv, int *i, cli_sim_args *a, int *rc) {
-    *rc = QD_EXIT_OK;
-    for (const cli_opt *o = cli_sim_opts; o->name; o++) {
-        char *field = (char *)a + o->offset;
-        if (o->kind == CLI_FLAG) {
-            if (strcmp(argv[*i], o->name))
-                continue;
-            *(bool *)field = true;
-            return true;
-        }
-        const char *v = cli_value(argc, argv, i, o->name);
-        if (!v && o->alias)
-            v = cli_value(argc, argv, i, o->alias);
-        if (!v)
-            continue;
-        if (o->kind == CLI_LIST) {
-            cli_list *l = (cli_list *)(void *)field;
-            if (l->n == CLI_LIST_MAX) {
-                cli_diag_error("at most %d %s options", CLI_LIST_MAX, o->name);
-                *rc = QD_EXIT_USAGE;
-            } else {
-                l->items[l->n++] = v;
-            }
-            return true;
-        }
-        if (o->kind == CLI_CHOICE) {
-            size_t k = 0;
-            while (o->choices[k] && strcmp(o->choices[k], v))
-                k++;
-            if (!o->choices[k]) {
-                char list[256];
-                size_t at = 0;
-                for (k = 0; o->choices[k] && at < sizeof list; k++)
-                    at += (size_t)snprintf(list + at, sizeof list - at, "%s%s",
-                                           !k ? "" : o->choices[k + 1] ? ", " : " or ",
-                                           o->choices[k]);
-                cli_diag_error("%s takes %s, not '%s'", o->name, list, v);
-                *rc = QD_EXIT_USAGE;
-                return true;
-            }
-        }
-        if (*(const char **)(void *)field) {
-            cli_diag_error("%s is given twice%s; give it once", o->name,
-                           o->alias ? " (or as its alias)" : "");
-            *rc = QD_EXIT_USAGE;
-            return true;
-        }
-        *(const char **)(void *)field = v;
-        return true;
-    }
-    return false;
-}
-
 /* ---- the set-up, in the library (qdot/simsetup.h) --------------------------- */
 
 /* The error just recorded, about the user's option opt of text: shown in

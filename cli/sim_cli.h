@@ -67,11 +67,6 @@ typedef struct cli_sim {
     bool lqr_used;             /* some input took the LQR feedback */
 } cli_sim;
 
-/* Until every command parses with cli_parse: one option of cli_sim_opts at
- * argv[*i], read into *a: true when it was one (taken, *rc = QD_EXIT_OK, or
- * refused, *rc its exit status). */
-bool cli_sim_took_option(int argc, char **argv, int *i, cli_sim_args *a, int *rc);
-
 /* Load, --set, derive, compile, initial values, outputs and events, the
  * method and options.  Returns an exit status; prints its diagnostics. */
 int cli_sim_setup(cli_sim *c, const cli_sim_args *a);
