@@ -68,7 +68,7 @@ CASES = [
     (['modes', 'one.qd', '--at-equilibrium', '1', '--at-equilibrium', '1'], USAGE,
      'given twice'),
     (['stability', POWER, '--ignore', 'theta', '--format', 'latex'], USAGE,
-     '--format takes text or json'),
+     "unknown value 'latex' (one of text, json)"),
     (['stability', POWER, '--ignore', 'theta', '--at', 'r=1', '--at', 'r=2'], USAGE,
      '--at is given twice'),
     (['codegen', 'one.qd', '-o', '.', '-o', '.'], USAGE, '-o is given twice'),
