@@ -64,7 +64,7 @@ CASES = [
     (['equilibria', 'one.qd', '--near', 'x=1', '--near', 'x=2'], USAGE, '--near is given twice'),
     (['equilibria', 'one.qd', '--format', 'yaml'], USAGE, '--format takes text or json'),
     (['modes', 'one.qd', '--about', 'x=0', '--at-equilibrium', '1'], USAGE, 'not both'),
-    (['modes', 'one.qd', '--at-equilibrium', '0'], USAGE, 'takes a number 1, 2'),
+    (['modes', 'one.qd', '--at-equilibrium', '0'], USAGE, "'0' is not a whole number >= 1"),
     (['modes', 'one.qd', '--at-equilibrium', '1', '--at-equilibrium', '1'], USAGE,
      'given twice'),
     (['stability', POWER, '--ignore', 'theta', '--format', 'latex'], USAGE,
