@@ -168,9 +168,10 @@ static size_t item_end(const char *t, size_t i) {
 }
 
 static int box_item(cli_lin_run *r, const char *item, double *lo, double *hi, bool *seen) {
-    const char *eq = strchr(item, '='), *dots = eq ? strstr(eq, "..") : NULL;
+    /* ranges are A:B in every command (issue 31) */
+    const char *eq = strchr(item, '='), *dots = eq ? strchr(eq, ':') : NULL;
     if (!eq || !dots) {
-        cli_diag_error("--box takes NAME=LOW..HIGH items, not '%s'", item);
+        cli_diag_error("--box takes NAME=LOW:HIGH items, not '%s'", item);
         return QD_EXIT_USAGE;
     }
     char name[128], a[256], b[256];
@@ -181,7 +182,7 @@ static int box_item(cli_lin_run *r, const char *item, double *lo, double *hi, bo
     while (s < nl && isspace((unsigned char)item[s]))
         s++;
     if (nl - s >= sizeof name || (size_t)(dots - eq - 1) >= sizeof a ||
-        strlen(dots + 2) >= sizeof b) {
+        strlen(dots + 1) >= sizeof b) {
         cli_diag_error("--box: item too long: '%s'", item);
         return QD_EXIT_USAGE;
     }
@@ -189,7 +190,7 @@ static int box_item(cli_lin_run *r, const char *item, double *lo, double *hi, bo
     name[nl - s] = '\0';
     memcpy(a, eq + 1, (size_t)(dots - eq - 1));
     a[dots - eq - 1] = '\0';
-    strcpy(b, dots + 2);
+    strcpy(b, dots + 1);
     size_t nq = qd_model_ncoords(r->mf.model), i = 0;
     while (i < nq && strcmp(qd_expr_name(qd_model_coord(r->mf.model, i)), name))
         i++;

@@ -80,7 +80,7 @@ def main():
         check("an overflowing coefficient is named", rc != 0 and "overflows a double" in err
               and "2e100000" in err and "equilibri" not in out, f"{rc} {out} {err}")
         pend = EXAMPLES / "double_pendulum.qd"
-        rc, out, err = run(qdot, "equilibria", pend, "--box", "theta1=-1e308..1e308")
+        rc, out, err = run(qdot, "equilibria", pend, "--box", "theta1=-1e308:1e308")
         check("--box too wide", rc == 2 and "too wide" in err and "overflows a double" in err,
               f"{rc} {out} {err}")
 

@@ -262,7 +262,7 @@ def usage(qdot):
                        "r=1.1, phi=0.1, theta=0.1")
     check("near", rc == 0 and "r = 1.1666666666" in out, out + err)
     rc, out, err = run(qdot, "equilibria", str(EX / "double_pendulum.qd"), "--box",
-                       "theta1=1..2")
+                       "theta1=1:2")
     check("box", rc == 0 and out.startswith("0 equilibria"), out + err)
 
 

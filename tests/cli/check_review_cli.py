@@ -62,7 +62,7 @@ CASES = [
     (['integrals', KCART, '--format', 'latex'], USAGE, '--format takes text or json'),
     (['integrals', KCART, '--no-search=1'], USAGE, 'unknown option'),
     (['equilibria', 'one.qd', '--near', 'x=1', '--near', 'x=2'], USAGE, '--near is given twice'),
-    (['equilibria', 'one.qd', '--format', 'yaml'], USAGE, '--format takes text or json'),
+    (['equilibria', 'one.qd', '--format', 'yaml'], USAGE, "unknown value 'yaml' (one of text, json)"),
     (['modes', 'one.qd', '--about', 'x=0', '--at-equilibrium', '1'], USAGE, 'not both'),
     (['modes', 'one.qd', '--at-equilibrium', '0'], USAGE, "'0' is not a whole number >= 1"),
     (['modes', 'one.qd', '--at-equilibrium', '1', '--at-equilibrium', '1'], USAGE,
@@ -82,7 +82,7 @@ CASES = [
      "rate theta' is given twice"),
     (['stability', POWER, '--ignore', 'theta', '--momentum', 'p_theta=1, p_theta=2'], USAGE,
      'p_theta is given twice'),
-    (['equilibria', COMPOUND, '--box', 'theta=0..1, theta=1..2'], USAGE, 'theta is given twice'),
+    (['equilibria', COMPOUND, '--box', 'theta=0:1, theta=1:2'], USAGE, 'theta is given twice'),
     # was: --at r=r evaluated the coordinate at 0 ("equations not defined")
     (['stability', POWER, '--ignore', 'theta', '--at', 'r=r'], USAGE,
      "takes only pi, e and the model's parameters"),
@@ -96,7 +96,7 @@ CASES = [
     # eliminated coordinates (was: a heap overflow for --near/--about, and --box,
     # --initial silently applied to the wrong coordinate)
     (['equilibria', COMPOUND, '--near', 'y=0.1'], USAGE, 'y is not an independent coordinate'),
-    (['equilibria', COMPOUND, '--box', 'x=-1..1'], USAGE, 'x is not an independent coordinate'),
+    (['equilibria', COMPOUND, '--box', 'x=-1:1'], USAGE, 'x is not an independent coordinate'),
     (['modes', COMPOUND, '--about', 'x=0.5'], USAGE, 'x is not an independent coordinate'),
     (['modes', COMPOUND, '--initial', "theta=0.1, y'=1"], USAGE,
      'y is not an independent coordinate'),
