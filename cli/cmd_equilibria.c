@@ -7,6 +7,7 @@
  */
 #include "linear_cli.h"
 
+#include <stddef.h>
 #include <string.h>
 #include "qdot/json.h"
 #include "model_cli.h"
@@ -14,35 +15,28 @@
 /* ---- the command ------------------------------------------------------------ */
 
 typedef struct eq_args {
-    const char *file, *near, *box;
-    const char *sets[QD_LIN_MAX_SETS];
-    size_t nsets;
-    bool json;
+    const char *near, *box, *format;
+    cli_list sets;
 } eq_args;
-
-static const char usage_text[] =
-    "usage: qdot equilibria FILE [--near \"q1=VALUE, ...\"] [--box \"q1=LOW..HIGH, ...\"] "
-    "[--set NAME=VALUE]... [--format text|json]";
 
 static const char *const formats[] = {"text", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    eq_args *a = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        a->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--near")))
-        return cli_once("--near", &a->near, v);
-    if ((v = cli_value(argc, argv, i, "--box")))
-        return cli_once("--box", &a->box, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
-    return cli_bad_option(argv[*i], usage_text);
-}
+static const cli_opt opts[] = {
+    {"--near", NULL, CLI_TEXT, offsetof(eq_args, near), "\"q1=VALUE, ...\"",
+     "Newton from this point (only the equilibrium reached)", NULL, NULL},
+    {"--box", NULL, CLI_TEXT, offsetof(eq_args, box), "\"q1=LOW:HIGH, ...\"",
+     "search this box (default: [-pi, pi] for an angle, else [-10, 10])", NULL, NULL},
+    {"--set", NULL, CLI_LIST, offsetof(eq_args, sets), "NAME=VALUE", "a parameter's value", NULL,
+     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(eq_args, format), "NAME", "text or json", formats,
+     NULL},
+    {0},
+};
+
+static const cli_spec spec = {
+    "equilibria", "FILE [--near \"q1=VALUE, ...\"] [--box \"q1=LOW:HIGH, ...\"] [options]",
+    "the configurations of rest and their kind (the Hessian of the potential)", opts, NULL, 1, 1,
+    "FILE", false};
 
 enum { MAX_FAMILY_SHOWN = 10 };
 
@@ -137,19 +131,21 @@ static void put_json(cli_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
 
 int cli_cmd_equilibria(int argc, char **argv) {
     eq_args a = {0};
-    int rc = cli_file_args(argc, argv, "equilibria", usage_text, &a.file, parse_option, &a);
+    const char *file = NULL;
+    int rc = cli_parse(&spec, argc, argv, &a, &file);
     if (rc != QD_EXIT_OK)
         return rc;
+    bool json = a.format && !strcmp(a.format, "json");
     cli_lin_run r = {.ctx = qd_ctx_new()};
     if (!r.ctx) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     qd_equilibria eq = {0};
-    rc = cli_lin_load_model(&r, a.file, a.sets, a.nsets);
+    rc = cli_lin_load_model(&r, file, a.sets.items, a.sets.n);
     bool speeds = rc == QD_EXIT_OK && qd_model_nspeeds(r.mf.model) > 0;
     if (speeds)
-        rc = cli_speeds_equilibria(r.ctx, &r.mf, a.json, a.near ? "--near" : a.box ? "--box"
+        rc = cli_speeds_equilibria(r.ctx, &r.mf, json, a.near ? "--near" : a.box ? "--box"
                                                                                   : NULL);
     else if (rc == QD_EXIT_OK)
         rc = cli_lin_derive(&r);
@@ -157,7 +153,7 @@ int cli_cmd_equilibria(int argc, char **argv) {
         rc = cli_lin_equilibria(&r, a.near, a.box, &eq);
     if (rc == QD_EXIT_OK && !speeds) {
         qd_buf b = QD_BUF_INIT;
-        (a.json ? put_json : put_text)(&r, &eq, &b);
+        (json ? put_json : put_text)(&r, &eq, &b);
         rc = cli_emit(&b, "equilibria");
     }
     qd_equilibria_free(&eq);

@@ -7,46 +7,44 @@
 #include "lqr_cli.h"
 #include "model_cli.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const char usage_text[] =
-    "usage: qdot lqr --A \"[[...], ...]\" --B \"[[...], ...]\" --weights \"Q = ..., R = ...\" "
-    "[--format text|json|c]";
-
 typedef struct lqr_args {
-    const char *A, *B, *weights;
-    int format;
+    const char *A, *B, *weights, *format;
 } lqr_args;
+
+static const char *const formats[] = {"text", "json", "c", NULL};
+
+static const cli_opt opts[] = {
+    {"--A", NULL, CLI_TEXT, offsetof(lqr_args, A), "\"[[a11, a12, ...], ...]\"",
+     "the state matrix A, n by n, row by row", NULL, NULL},
+    {"--B", NULL, CLI_TEXT, offsetof(lqr_args, B), "\"[[b11, ...], ...]\"",
+     "the input matrix B, n by m", NULL, NULL},
+    {"--weights", NULL, CLI_TEXT, offsetof(lqr_args, weights), "\"Q = W, R = W\"",
+     "the cost: W a number, diag(...) or [[...], ...]", NULL, NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(lqr_args, format), "NAME", "text, json or c",
+     formats, NULL},
+    {0},
+};
+
+static const cli_spec spec = {
+    "lqr", "--A M --B M --weights \"Q = ..., R = ...\" [--format text|json|c]",
+    "the LQR gain of x' = A x + B u (the Riccati equation)", opts, NULL, 0, 0, NULL, false};
+
+static int parse_args(int argc, char **argv, lqr_args *a) {
+    int rc = cli_parse(&spec, argc, argv, a, NULL);
+    if (rc != QD_EXIT_OK || (a->A && a->B && a->weights))
+        return rc;
+    cli_diag_error("qdot lqr needs --A, --B and --weights (qdot lqr --help)");
+    return QD_EXIT_USAGE;
+}
 
 typedef struct lqr_run {
     qd_matrix A, B;
     double *Q, *R;
 } lqr_run;
-
-static int parse_args(int argc, char **argv, lqr_args *a) {
-    static const char *const formats[] = {"text", "json", "c", NULL};
-    for (int i = 0; i < argc; i++) {
-        const char *v;
-        int rc;
-        if ((v = cli_value(argc, argv, &i, "--A")))
-            rc = cli_once("--A", &a->A, v);
-        else if ((v = cli_value(argc, argv, &i, "--B")))
-            rc = cli_once("--B", &a->B, v);
-        else if ((v = cli_value(argc, argv, &i, "--weights")))
-            rc = cli_once("--weights", &a->weights, v);
-        else if ((v = cli_value(argc, argv, &i, "--format")))
-            rc = cli_choice("--format", v, formats, &a->format);
-        else
-            rc = cli_bad_option(argv[i], usage_text);
-        if (rc != QD_EXIT_OK)
-            return rc;
-    }
-    if (a->A && a->B && a->weights)
-        return QD_EXIT_OK;
-    cli_diag_error("qdot lqr needs --A, --B and --weights\n%s", usage_text);
-    return QD_EXIT_USAGE;
-}
 
 static int read_system(qd_ctx *ctx, const lqr_args *a, lqr_run *r) {
     if (qd_matrix_read(ctx, a->A, &r->A) != QD_OK)
@@ -90,7 +88,10 @@ int cli_cmd_lqr(int argc, char **argv) {
                                           &res) != QD_OK)
         rc = cli_diag_ctx(ctx);
     if (rc == QD_EXIT_OK)
-        rc = cli_lqr_print_design(stdout, NULL, &res, (cli_lqr_format)a.format);
+        rc = cli_lqr_print_design(stdout, NULL, &res,
+                                  !a.format || !strcmp(a.format, "text") ? CLI_LQR_TEXT
+                                  : !strcmp(a.format, "json")            ? CLI_LQR_JSON
+                                                                         : CLI_LQR_C);
     qd_care_result_free(&res);
     qd_matrix_free(&r.A);
     qd_matrix_free(&r.B);

@@ -22,6 +22,7 @@
 #include "linear_cli.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/json.h"
@@ -33,12 +34,11 @@
 static const double PI = 3.14159265358979323846;
 
 typedef struct modes_args {
-    const char *file, *about, *initial, *scan;
+    const char *file, *about, *initial, *scan, *format;
     const char *independent; /* --independent: a model that keeps constraints */
     size_t steps;   /* --steps: 0 the library's default */
-    long at_eq;   /* 1-based; 0: the first minimum, else the first */
-    const char *sets[QD_LIN_MAX_SETS];
-    size_t nsets;
+    size_t at_eq;   /* 1-based; 0: the first minimum, else the first */
+    cli_list sets;
     bool json;
     const char *plot;  /* --plot FILE: the mode shapes drawn */
     bool symmetry;     /* --symmetry */
@@ -62,84 +62,64 @@ typedef struct modes_run {
     cli_sym_run sym;            /* --symmetry */
 } modes_run;
 
-static const char usage_text[] =
-    "usage: qdot modes FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] "
-    "[--initial \"q1=VALUE, q1'=VALUE, ...\"] [--scan NAME=A:B [--steps N]] "
-    "[--set NAME=VALUE]... [--format text|json] [--plot FILE.png|.svg|.pdf] [--symmetry] "
-    "[--independent \"q1, ...\"]\n"
-    "       qdot modes FIELDFILE [--count N] [--tol X] [--set NAME=VALUE]... [--format text|json]";
-
 static const char *const formats[] = {"text", "json", NULL};
 
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    modes_args *a = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        a->json = f == 1;
-        return rc;
+static int tol_option(const char *v, void *args) {
+    modes_args *a = args;
+    char *end;
+    a->tol = strtod(v, &end);
+    if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1)) {
+        cli_diag_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
+        return QD_EXIT_USAGE;
     }
-    if ((v = cli_value(argc, argv, i, "--at-equilibrium"))) {
-        char *end;
-        if (a->at_eq) {
-            cli_diag_error("--at-equilibrium is given twice; give it once");
-            return QD_EXIT_USAGE;
-        }
-        a->at_eq = strtol(v, &end, 10);
-        if (*end || a->at_eq < 1) {
-            cli_diag_error("--at-equilibrium takes a number 1, 2, ... (as `qdot equilibria` "
-                          "lists them), not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        return QD_EXIT_OK;
+    return QD_EXIT_OK;
+}
+
+#define OPT(name, kind, field, meta, help) \
+    {name, NULL, kind, offsetof(modes_args, field), meta, help, NULL, NULL}
+static const cli_opt opts[] = {
+    OPT("--at-equilibrium", CLI_COUNT, at_eq, "N", "about equilibrium N, as `qdot equilibria` "
+        "lists them"),
+    OPT("--about", CLI_TEXT, about, "\"q1=VALUE, ...\"", "about this point at rest"),
+    OPT("--initial", CLI_TEXT, initial, "\"q1=VALUE, q1'=VALUE, ...\"", "the motion from these "
+        "initial values, through the normal coordinates"),
+    OPT("--scan", CLI_TEXT, scan, "NAME=A:B", "follow the point as the parameter goes from A to "
+        "B, and where its stability changes"),
+    OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
+    OPT("--symmetry", CLI_FLAG, symmetry, NULL, "the point's symmetry group and the modes "
+        "labelled by irreps"),
+    OPT("--independent", CLI_TEXT, independent, "\"q1, ...\"", "the independent coordinates "
+        "of a model that keeps constraints"),
+    OPT("--plot", CLI_TEXT, plot, "FILE.png|.svg|.pdf", "draw the mode shapes"),
+    OPT("--count", CLI_COUNT, count, "N", "a field model: the number of modes (at most 1000)"),
+    {"--tol", NULL, CLI_CALL, 0, "X", "a field model: the relative tolerance (1e-14 to 0.1)",
+     NULL, tol_option},
+    OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value"),
+    {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json", formats,
+     NULL},
+    {0},
+};
+#undef OPT
+
+static const cli_spec spec = {
+    "modes", "FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] [options]",
+    "small oscillations about an equilibrium: frequencies and mode shapes (a field model: "
+    "FIELDFILE [--count N] [--tol X])", opts, NULL, 1, 1, "FILE", false};
+
+static int parse_args(int argc, char **argv, modes_args *a) {
+    const char *pos[1];
+    int rc = cli_parse(&spec, argc, argv, a, pos);
+    a->file = pos[0];
+    a->json = a->format && !strcmp(a->format, "json");
+    if (rc == QD_EXIT_OK && a->steps > 100000) {
+        cli_diag_error("--steps takes a number of steps from 1 to 100000, not %zu", a->steps);
+        rc = QD_EXIT_USAGE;
     }
-    if ((v = cli_value(argc, argv, i, "--about")))
-        return cli_once("--about", &a->about, v);
-    if ((v = cli_value(argc, argv, i, "--scan")))
-        return cli_once("--scan", &a->scan, v);
-    if ((v = cli_value(argc, argv, i, "--steps"))) {
-        char *end;
-        long k = strtol(v, &end, 10);
-        if (*end || k < 1 || k > 100000) {
-            cli_diag_error("--steps takes a number of steps from 1 to 100000, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        a->steps = (size_t)k;
-        return QD_EXIT_OK;
+    if (rc == QD_EXIT_OK && a->count > 1000) {
+        cli_diag_error("--count takes a number of modes from 1 to 1000, not %zu", a->count);
+        rc = QD_EXIT_USAGE;
     }
-    if ((v = cli_value(argc, argv, i, "--independent")))
-        return cli_once("--independent", &a->independent, v);
-    if ((v = cli_value(argc, argv, i, "--count"))) {
-        char *end;
-        long k = strtol(v, &end, 10);
-        if (*end || k < 1 || k > 1000) {
-            cli_diag_error("--count takes a number of modes from 1 to 1000, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        a->count = (size_t)k;
-        return QD_EXIT_OK;
-    }
-    if ((v = cli_value(argc, argv, i, "--tol"))) {
-        char *end;
-        a->tol = strtod(v, &end);
-        if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1)) {
-            cli_diag_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
-            return QD_EXIT_USAGE;
-        }
-        return QD_EXIT_OK;
-    }
-    if ((v = cli_value(argc, argv, i, "--initial")))
-        return cli_once("--initial", &a->initial, v);
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, QD_LIN_MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--plot")))
-        return cli_once("--plot", &a->plot, v);
-    if (strcmp(argv[*i], "--symmetry") == 0) {
-        a->symmetry = true;
-        return QD_EXIT_OK;
-    }
-    return cli_bad_option(argv[*i], usage_text);
+    return rc;
 }
 
 /* What the library's automatic choice means, for the note and JSON. */
@@ -177,15 +157,15 @@ static int choose_auto(modes_run *r) {
     return QD_EXIT_OK;
 }
 
-static int choose_listed(modes_run *r, long k) {
+static int choose_listed(modes_run *r, size_t k) {
     const qd_equilibria *eq = &r->ch.found;
     int rc = cli_lin_equilibria(&r->lr, NULL, NULL, &r->ch.found);
     if (rc != QD_EXIT_OK)
         return rc;
     if (eq->count == 0)
         return no_equilibrium();
-    if ((size_t)k > eq->count) {
-        cli_diag_error("--at-equilibrium %ld: there %s %zu equilibri%s", k,
+    if (k > eq->count) {
+        cli_diag_error("--at-equilibrium %zu: there %s %zu equilibri%s", k,
                       eq->count == 1 ? "is" : "are", eq->count, eq->count == 1 ? "um" : "a");
         return QD_EXIT_USAGE;
     }
@@ -537,23 +517,22 @@ static void note_choice(const modes_run *r) {
 
 int cli_cmd_modes(int argc, char **argv) {
     modes_args a = {0};
-    int rc = cli_file_args(argc, argv, "modes", usage_text, &a.file, parse_option, &a);
+    int rc = parse_args(argc, argv, &a);
     if (rc != QD_EXIT_OK)
         return rc;
     if (cli_model_file_is_field(a.file)) {
         if (a.about || a.at_eq || a.initial || a.scan || a.plot || a.symmetry || a.steps) {
-            cli_diag_error("a field model takes --count, --tol, --set and --format only\n%s",
-                           usage_text);
+            cli_diag_error("a field model takes --count, --tol, --set and --format only");
             return QD_EXIT_USAGE;
         }
-        return cli_field_modes(a.file, a.nsets, a.sets, a.count, a.tol, a.json);
+        return cli_field_modes(a.file, a.sets.n, a.sets.items, a.count, a.tol, a.json);
     }
     if (a.count || a.tol) {
         cli_diag_error("--count and --tol are for a field model (`field y(x, t) on ...`)");
         return QD_EXIT_USAGE;
     }
     if (a.about && a.at_eq) {
-        cli_diag_error("give either --at-equilibrium or --about, not both\n%s", usage_text);
+        cli_diag_error("give either --at-equilibrium or --about, not both");
         return QD_EXIT_USAGE;
     }
     if (a.scan && (a.at_eq || a.initial)) {
@@ -580,7 +559,7 @@ int cli_cmd_modes(int argc, char **argv) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = cli_lin_load_model(&r.lr, a.file, a.sets, a.nsets);
+    rc = cli_lin_load_model(&r.lr, a.file, a.sets.items, a.sets.n);
     if (rc == QD_EXIT_OK && a.plot && qd_model_nspeeds(r.lr.mf.model)) {
         cli_diag_error("--plot: the modes of a model in speeds are not drawn yet");
         rc = QD_EXIT_USAGE;

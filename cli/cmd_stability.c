@@ -22,6 +22,7 @@
  */
 #include "cli.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "linear_cli.h"
@@ -29,14 +30,10 @@
 #include "model_file.h"
 #include "qdot/stability.h"
 
-#define MAX_SETS QD_CLI_MAX_LIST
-#define MAX_LIST 16
-
 typedef struct stab_args {
-    const char *file, *ignore, *driven[MAX_LIST], *momentum, *omega, *at, *guess, *scan;
+    const char *ignore, *momentum, *omega, *at, *guess, *scan, *format;
+    cli_list driven, sets;
     size_t steps;
-    const char *sets[MAX_SETS];
-    size_t nsets, ndriven;
     bool json;
 } stab_args;
 
@@ -51,66 +48,55 @@ typedef struct stab_run {
     qd_stability *an;    /* set.count analyses */
 } stab_run;
 
-static const char usage_text[] =
-    "usage: qdot stability FILE (--ignore Q[,Q...] [--momentum \"p_Q=VALUE\"] [--omega \"Q'=VALUE\"]"
-    " | --driven \"Q' = VALUE\"...) [--at \"q=VALUE, ...\"] [--guess \"q=VALUE, ...\"] "
-    "[--scan NAME=A:B [--steps N]] [--set NAME=VALUE]... [--format text|json]";
-
 static const char *const formats[] = {"text", "json", NULL};
 
-static int steps_option(const char *v, size_t *steps) {
-    char *end;
-    long k = strtol(v, &end, 10);
-    if (*end || k < 1 || k > 100000) {
-        cli_diag_error("--steps takes a number of steps from 1 to 100000, not '%s'", v);
-        return QD_EXIT_USAGE;
-    }
-    *steps = (size_t)k;
-    return QD_EXIT_OK;
-}
-static int parse_option(int argc, char **argv, int *i, void *data) {
-    stab_args *a = data;
-    const char *v;
-    int f;
-    if ((v = cli_value(argc, argv, i, "--format"))) {
-        int rc = cli_choice("--format", v, formats, &f);
-        a->json = f == 1;
-        return rc;
-    }
-    if ((v = cli_value(argc, argv, i, "--set")))
-        return cli_push("--set", a->sets, &a->nsets, MAX_SETS, v);
-    if ((v = cli_value(argc, argv, i, "--driven")))
-        return cli_push("--driven", a->driven, &a->ndriven, MAX_LIST, v);
-    if ((v = cli_value(argc, argv, i, "--ignore")))
-        return cli_once("--ignore", &a->ignore, v);
-    if ((v = cli_value(argc, argv, i, "--momentum")))
-        return cli_once("--momentum", &a->momentum, v);
-    if ((v = cli_value(argc, argv, i, "--omega")))
-        return cli_once("--omega", &a->omega, v);
-    if ((v = cli_value(argc, argv, i, "--at")))
-        return cli_once("--at", &a->at, v);
-    if ((v = cli_value(argc, argv, i, "--guess")))
-        return cli_once("--guess", &a->guess, v);
-    if ((v = cli_value(argc, argv, i, "--scan")))
-        return cli_once("--scan", &a->scan, v);
-    if ((v = cli_value(argc, argv, i, "--steps")))
-        return steps_option(v, &a->steps);
-    return cli_bad_option(argv[*i], usage_text);
-}
+#define OPT(name, kind, field, meta, help) \
+    {name, NULL, kind, offsetof(stab_args, field), meta, help, NULL, NULL}
+static const cli_opt opts[] = {
+    OPT("--ignore", CLI_TEXT, ignore, "Q[,Q...]", "the cyclic coordinates, momenta free "
+        "(Routhian, V_eff = V + K)"),
+    OPT("--driven", CLI_LIST, driven, "\"Q' = VALUE\"", "a maintained rate (V_eff = V - T0); "
+        "a bare Q leaves it to be found; repeatable"),
+    OPT("--momentum", CLI_TEXT, momentum, "\"p_Q=VALUE, ...\"", "with --ignore: held momenta "
+        "of cyclic coordinates"),
+    OPT("--omega", CLI_TEXT, omega, "\"Q'=VALUE, ...\"", "with --ignore: held steady rates "
+        "instead of momenta"),
+    OPT("--at", CLI_TEXT, at, "\"q=VALUE, ...\"", "kept coordinates held at these values"),
+    OPT("--guess", CLI_TEXT, guess, "\"q=V, Q'=V, p_Q=V\"", "starting values of "
+        "the search, not held (default: the model's initial values)"),
+    OPT("--scan", CLI_TEXT, scan, "NAME=A:B", "follow the steady motion as the parameter goes "
+        "from A to B"),
+    OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
+    OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value (before everything else)"),
+    {"--format", NULL, CLI_CHOICE, offsetof(stab_args, format), "NAME", "text or json", formats,
+     NULL},
+    {0},
+};
+#undef OPT
 
-static int parse_args(int argc, char **argv, stab_args *a) {
-    *a = (stab_args){.json = false};
-    int rc = cli_file_args(argc, argv, "stability", usage_text, &a->file, parse_option, a);
+static const cli_spec spec = {
+    "stability", "FILE (--ignore Q[,Q...] | --driven \"Q' = VALUE\"...) [options]",
+    "steady motions of a system with cyclic coordinates, and their stability", opts, NULL,
+    1, 1, "FILE", false};
+
+static int parse_args(int argc, char **argv, stab_args *a, const char **file) {
+    *a = (stab_args){0};
+    int rc = cli_parse(&spec, argc, argv, a, file);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!a->ignore == !a->ndriven) {
+    a->json = a->format && !strcmp(a->format, "json");
+    if (!a->ignore == !a->driven.n) {
         cli_diag_error("give the cyclic coordinates with either --ignore (free momenta) or "
-                      "--driven (maintained rates)\n%s", usage_text);
+                       "--driven (maintained rates) (qdot stability --help)");
         return QD_EXIT_USAGE;
     }
-    if (a->ndriven && (a->momentum || a->omega)) {
+    if (a->driven.n && (a->momentum || a->omega)) {
         cli_diag_error("--momentum and --omega go with --ignore; a driven rate is given as "
-                      "--driven \"q' = VALUE\"");
+                       "--driven \"q' = VALUE\"");
+        return QD_EXIT_USAGE;
+    }
+    if (a->steps > 100000) {
+        cli_diag_error("--steps takes a number of steps from 1 to 100000, not %zu", a->steps);
         return QD_EXIT_USAGE;
     }
     if (a->steps && !a->scan) {
@@ -156,16 +142,16 @@ static char *join(const char *const *items, size_t n) {
 }
 
 static int prepare(stab_run *r, const stab_args *a) {
-    if (a->ndriven && !(r->driven = join(a->driven, a->ndriven))) {
+    if (a->driven.n && !(r->driven = join(a->driven.items, a->driven.n))) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
     r->s = qd_steady_derive_named(r->ctx, r->mf.model, r->e, a->ignore ? "ignore" : "driven",
-                                  a->ignore ? a->ignore : r->driven, a->ndriven > 0);
+                                  a->ignore ? a->ignore : r->driven, a->driven.n > 0);
     if (!r->s)
         return steady_error(r, a);
-    qd_steady_spec spec = {.rates = a->ndriven ? r->driven : a->omega,
-                           .rates_field = a->ndriven ? "driven" : "omega",
+    qd_steady_spec spec = {.rates = a->driven.n ? r->driven : a->omega,
+                           .rates_field = a->driven.n ? "driven" : "omega",
                            .momenta = a->momentum, .guess = a->guess, .at = a->at};
     if (qd_steady_given_read(r->ctx, r->s, r->mf.model, &spec, &r->g) != QD_OK)
         return steady_error(r, a);
@@ -252,7 +238,8 @@ static int emit(stab_run *r, bool json) {
 
 int cli_cmd_stability(int argc, char **argv) {
     stab_args a;
-    int rc = parse_args(argc, argv, &a);
+    const char *file = NULL;
+    int rc = parse_args(argc, argv, &a, &file);
     if (rc != QD_EXIT_OK)
         return rc;
     stab_run r = {.ctx = qd_ctx_new()};
@@ -260,7 +247,7 @@ int cli_cmd_stability(int argc, char **argv) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    rc = cli_load_derive(r.ctx, a.file, a.nsets, a.sets, false, NULL, &r.mf, &r.e);
+    rc = cli_load_derive(r.ctx, file, a.sets.n, a.sets.items, false, NULL, &r.mf, &r.e);
     if (rc == QD_EXIT_OK)
         rc = prepare(&r, &a);
     if (rc == QD_EXIT_OK)

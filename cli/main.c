@@ -43,7 +43,7 @@ static const cli_cmd commands[] = {
     {"stability", "FILE --ignore Q | --driven ...", "steady motions and their stability",
      cli_cmd_stability, true},
     {"lqr", "--A M --B M --weights \"Q=...,R=...\"", "the LQR gain of x' = A x + B u (Riccati)",
-     cli_cmd_lqr, false},
+     cli_cmd_lqr, true},
     {"orbit", "FILE --ignore Q[,Q...] [--at ...]", "turning points, periods, apsides, conics",
      cli_cmd_orbit, true},
     {"hj", "FILE [--format F] [--solve]", "the Hamilton-Jacobi equation, its separation and W",

@@ -199,7 +199,7 @@ static void put_modes(const qd_symmetry *y, const qd_eom *e, qd_buf *b) {
         qd_symmetry_block_label(y, y->mode_block[j], lab, sizeof lab);
         qd_buf_printf(b, "mode %zu: w^2 = ", j + 1);
         put_w2(b, y->omega2[j]);
-        qd_buf_printf(b, ", %s (degeneracy %zu)", lab, y->mode_degeneracy[j]);
+        qd_buf_printf(b, ", %s (multiplicity %zu)", lab, y->mode_degeneracy[j]);
         if (y->mode_kind[j] != QD_MODE_VIBRATION)
             qd_buf_printf(b, ", %s", kind_name(y->mode_kind[j]));
         qd_buf_puts(b, "\n  shape: ");
@@ -218,7 +218,7 @@ static void put_cyclic(const qd_cyclic_modes *c, qd_buf *b) {
     for (size_t j = 0; j < c->n; j++) {
         qd_buf_printf(b, "mode %zu: w^2 = ", j + 1);
         put_w2(b, c->omega2[j]);
-        qd_buf_printf(b, ", harmonic k = %zu (degeneracy %zu)\n", c->harmonic[j],
+        qd_buf_printf(b, ", harmonic k = %zu (multiplicity %zu)\n", c->harmonic[j],
                       c->degeneracy[j]);
     }
 }
@@ -368,7 +368,7 @@ static void json_sym_mode(const qd_symmetry *y, const qd_eom *e, size_t k, qd_js
     qd_json_frequency(j, y->omega2[k]);
     qd_json_key(j, "irrep");
     qd_json_string(j, lab);
-    qd_json_key(j, "degeneracy");
+    qd_json_key(j, "multiplicity");
     qd_json_number(j, (double)y->mode_degeneracy[k]);
     qd_json_key(j, "kind");
     qd_json_string(j, kind_name(y->mode_kind[k]));
@@ -394,7 +394,7 @@ void cli_sym_json_modes(const cli_sym_run *s, const qd_eom *e, qd_json *j) {
         qd_json_string(j, lab);
         qd_json_key(j, "harmonic");
         qd_json_number(j, (double)s->cyc.harmonic[k]);
-        qd_json_key(j, "degeneracy");
+        qd_json_key(j, "multiplicity");
         qd_json_number(j, (double)s->cyc.degeneracy[k]);
         qd_json_end_object(j);
     }

@@ -733,16 +733,6 @@ qd_status qd_constrained_input_matrix(qd_ctx *ctx, const qd_eom *e,
 
 /* ---- equilibria ---------------------------------------------------------------- */
 
-static double halton(size_t i, unsigned base) {
-    double f = 1, x = 0;
-    for (size_t k = i; k; k /= base) {
-        f /= base;
-        x += f * (double)(k % base);
-    }
-    return x;
-}
-
-static const unsigned primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
 
 /* Classify the root at q: K_r's eigenvalue signs. */
 static qd_status classify(qd_ctx *ctx, cw *w, const double *q, qd_equilibrium *p, double *work) {
@@ -781,19 +771,7 @@ static qd_status classify(qd_ctx *ctx, cw *w, const double *q, qd_equilibrium *p
             st = QD_ERR_NUMERIC;
     }
     if (st == QD_OK) {
-        double big = max_abs(r, ev);
-        for (size_t a = 0; a < r; a++) {
-            if (fabs(ev[a]) <= QD_MODES_ZERO_TOL * big || big == 0)
-                p->nzero++;
-            else if (ev[a] > 0)
-                p->npos++;
-            else
-                p->nneg++;
-        }
-        p->kind = p->nzero ? QD_EQ_DEGENERATE
-                  : p->nneg == 0 ? QD_EQ_MINIMUM
-                  : p->npos == 0 ? QD_EQ_MAXIMUM
-                                 : QD_EQ_SADDLE;
+        qd__lin_eq_classify(r, ev, p);
     }
     qd_linear_free(&lin);
     qd__free(isdep);
@@ -826,7 +804,7 @@ static qd_status search(cw *w, const double *lo, const double *hi, const double 
     for (size_t s = 0; s < (near ? 1 : starts); s++) {
         for (size_t j = 0; j < n; j++)
             q[j] = near ? near[j]
-                        : lo[j] + (hi[j] - lo[j]) * halton(s + 1, primes[j % 16]);
+                        : lo[j] + (hi[j] - lo[j]) * qd__lin_halton(s + 1, qd__lin_halton_primes[j % 16]);
         if (!project(w, q, NULL, sub))
             continue;
         cw_run(w, q);
@@ -872,11 +850,8 @@ qd_status qd_constrained_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_
         st = QD_ERR_NOMEM;
         goto done;
     }
-    qd_equilibria_default_box(ctx, e, m, angle, lo, hi);
-    if (o.lo && o.hi) {
-        memcpy(lo, o.lo, n * sizeof *lo);
-        memcpy(hi, o.hi, n * sizeof *hi);
-    }
+    if ((st = qd__lin_eq_box(ctx, e, m, &o, angle, lo, hi)) != QD_OK)
+        goto done;
     out->method = o.near ? "newton" : "multistart";
     st = search(&w, lo, hi, o.near, o.starts ? o.starts : 40 * n + 40, &roots, work);
     if (st == QD_OK && o.near && roots.count == 0) {

@@ -405,14 +405,43 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     for (size_t j = 0; j < n; j++)
         p->residual = fmax(p->residual, fabs(qd__lin_F(L)[j]));
     bool ok = qd__lin_sym_eig(L->ctx, n, K, w, NULL);
-    double wmax = 0;
-    for (size_t j = 0; ok && j < n; j++)
-        wmax = fmax(wmax, fabs(w[j]));
+    if (ok)
+        qd__lin_eq_classify(n, w, p);
+    qd__free(K);
+    qd__free(w);
+    /* qd__lin_sym_eig fails for want of memory as well as in LAPACK */
+    return ok ? QD_OK : qd_ctx_status(L->ctx) == QD_ERR_NOMEM ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+}
+
+qd_status qd__lin_eq_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                     const qd_equilibria_opts *o, bool *angle, double *lo, double *hi) {
+    size_t n = e->n;
+    qd_equilibria_default_box(ctx, e, m, angle, lo, hi);
+    if (o->lo && o->hi) {
+        memcpy(lo, o->lo, n * sizeof *lo);
+        memcpy(hi, o->hi, n * sizeof *hi);
+    }
+    for (size_t j = 0; j < n; j++) /* the samples are lo + (hi - lo) u: the width must be finite */
+        if (!(lo[j] <= hi[j]) || !isfinite(hi[j] - lo[j])) {
+            const char *name = qd_expr_name(e->q[j]);
+            qd_ctx_error(ctx, QD_ERR_ARG, "the search box of %s, %g:%g, %s", name, lo[j], hi[j],
+                         lo[j] <= hi[j] ? "is too wide: its width overflows a double"
+                                        : "is empty or not a range of numbers");
+            qd_ctx_error_about(ctx, QD_SUBJECT_COORD, j, name, QD_REASON_NONE, NULL);
+            return QD_ERR_ARG;
+        }
+    return QD_OK;
+}
+
+void qd__lin_eq_classify(size_t n, const double *ev, qd_equilibrium *p) {
+    double big = 0;
+    for (size_t j = 0; j < n; j++)
+        big = fmax(big, fabs(ev[j]));
     p->npos = p->nneg = p->nzero = 0;
-    for (size_t j = 0; ok && j < n; j++) {
-        if (fabs(w[j]) <= QD_MODES_ZERO_TOL * wmax || wmax == 0)
+    for (size_t j = 0; j < n; j++) {
+        if (fabs(ev[j]) <= QD_MODES_ZERO_TOL * big || big == 0)
             p->nzero++;
-        else if (w[j] > 0)
+        else if (ev[j] > 0)
             p->npos++;
         else
             p->nneg++;
@@ -420,10 +449,6 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     p->kind = p->nzero ? QD_EQ_DEGENERATE
             : p->nneg == 0 ? QD_EQ_MINIMUM
             : p->npos == 0 ? QD_EQ_MAXIMUM : QD_EQ_SADDLE;
-    qd__free(K);
-    qd__free(w);
-    /* qd__lin_sym_eig fails for want of memory as well as in LAPACK */
-    return ok ? QD_OK : qd_ctx_status(L->ctx) == QD_ERR_NOMEM ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
 }
 
 void qd_equilibria_free(qd_equilibria *r) {
@@ -601,21 +626,8 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
         st = QD_ERR_NOMEM;
         goto done;
     }
-    qd_equilibria_default_box(ctx, e, m, angle, lo, hi);
-    if (o.lo && o.hi) {
-        memcpy(lo, o.lo, n * sizeof *lo);
-        memcpy(hi, o.hi, n * sizeof *hi);
-    }
-    for (size_t j = 0; j < n; j++) /* the samples are lo + (hi - lo) u: the width must be finite */
-        if (!(lo[j] <= hi[j]) || !isfinite(hi[j] - lo[j])) {
-            const char *name = qd_expr_name(e->q[j]);
-            qd_ctx_error(ctx, QD_ERR_ARG, "the search box of %s, %g..%g, %s", name, lo[j], hi[j],
-                         lo[j] <= hi[j] ? "is too wide: its width overflows a double"
-                                        : "is empty or not a range of numbers");
-            qd_ctx_error_about(ctx, QD_SUBJECT_COORD, j, name, QD_REASON_NONE, NULL);
-            st = QD_ERR_ARG;
-            goto done;
-        }
+    if ((st = qd__lin_eq_box(ctx, e, m, &o, angle, lo, hi)) != QD_OK)
+        goto done;
     /* the force scale: the median of the scales at spread points */
     double scales[9];
     for (int s = 0; s < 9; s++) {

@@ -97,3 +97,23 @@ bool qd__lin_roots_same(size_t n, const double *a, const double *b, const bool *
  * through the centre); roots with max |F| <= ftol go to out. */
 bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
                     size_t starts, double ftol, qd__roots *out);
+
+/* The i-th point (i >= 1) of the van der Corput sequence in base, in [0, 1):
+ * coordinate j of a Halton start uses base qd__lin_halton_primes[j % 16]
+ * (multistart.c, constrained.c). */
+double qd__lin_halton(size_t i, unsigned base);
+extern const unsigned qd__lin_halton_primes[16];
+
+/* An equilibrium's kind from the n eigenvalues ev of its stiffness (the
+ * Hessian of the potential, or K_r of the reduced equations): npos, nneg
+ * and nzero (|ev| <= QD_MODES_ZERO_TOL of the largest, or all when every
+ * one is 0) and kind (equilibria.c, constrained.c). */
+struct qd_equilibrium;
+void qd__lin_eq_classify(size_t n, const double *ev, struct qd_equilibrium *p);
+
+/* The search box of qd_equilibria_find into angle, lo, hi (e->n each): the
+ * default box (qd_equilibria_default_box), or o's; QD_ERR_ARG naming the
+ * coordinate when a range is empty or its width overflows a double. */
+struct qd_equilibria_opts;
+qd_status qd__lin_eq_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                     const struct qd_equilibria_opts *o, bool *angle, double *lo, double *hi);

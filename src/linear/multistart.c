@@ -84,7 +84,7 @@ void qd__lin_roots_free(qd__roots *r) {
     r->count = r->cap = 0;
 }
 
-static double halton(size_t i, unsigned base) {
+double qd__lin_halton(size_t i, unsigned base) {
     double f = 1, x = 0;
     for (size_t k = i; k; k /= base) {
         f /= base;
@@ -93,7 +93,7 @@ static double halton(size_t i, unsigned base) {
     return x;
 }
 
-static const unsigned primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
+const unsigned qd__lin_halton_primes[16] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
 
 static bool polish(qd__lin *L, double *q, const bool *angle, double ftol, qd__roots *out) {
     double res;
@@ -156,8 +156,8 @@ bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bo
     for (size_t s = 0; ok && s < starts; s++) {
         for (size_t j = 0; j < n; j++) {
             double u;
-            if (j < sizeof primes / sizeof *primes) {
-                u = halton(s + 1, primes[j]);
+            if (j < sizeof qd__lin_halton_primes / sizeof *qd__lin_halton_primes) {
+                u = qd__lin_halton(s + 1, qd__lin_halton_primes[j]);
             } else {
                 seed ^= seed << 13;
                 seed ^= seed >> 7;

@@ -692,13 +692,13 @@ qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                       .e = e, .M = e->M, .f = e->f, .acc = e->acc, .A = e->A, .b = e->b,
                       .lambda = e->mult, .T = {e->T2, e->T1, e->T0}};
     v.split = e->T2 && e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0));
-    qd_status st = o && o->nstate ? qd__eom_numbers(&v, o) : QD_OK;
+    qd_status st = o && o->nstate ? qd__render_eom_numbers(&v, o) : QD_OK;
     if (st == QD_OK)
         st = render(&v, fmt, out);
     if (st == QD_OK && out->failed) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
         st = QD_ERR_NOMEM;
     }
-    qd__eom_view_free(&v);
+    qd__render_eom_view_free(&v);
     return st;
 }

@@ -126,7 +126,7 @@ static const qd_expr *at_state(qd__eom_view *v, const qd_render_opts *o, const q
     return qd_float(v->ctx, val);
 }
 
-qd_status qd__eom_numbers(qd__eom_view *v, const qd_render_opts *o) {
+qd_status qd__render_eom_numbers(qd__eom_view *v, const qd_render_opts *o) {
     const qd_eom *e = v->e;
     size_t n = e->n, m = e->ncon, total = count_numbers(e);
     qd_status st = qd__render_state(v->ctx, v->m, o, &v->full);
@@ -166,7 +166,7 @@ qd_status qd__eom_numbers(qd__eom_view *v, const qd_render_opts *o) {
     return QD_OK;
 }
 
-void qd__eom_view_free(qd__eom_view *v) {
+void qd__render_eom_view_free(qd__eom_view *v) {
     qd__render_state_free(&v->full);
     qd__free(v->numbers);
     qd__free(v->react_name);

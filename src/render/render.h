@@ -72,8 +72,8 @@ typedef struct qd__eom_view {
 } qd__eom_view;
 
 /* Fill v with the numbers of e at the state o (QD_OK, or the error recorded
- * in ctx); qd__eom_view_free releases them. */
-qd_status qd__eom_numbers(qd__eom_view *v, const qd_render_opts *o);
-void qd__eom_view_free(qd__eom_view *v);
+ * in ctx); qd__render_eom_view_free releases them. */
+qd_status qd__render_eom_numbers(qd__eom_view *v, const qd_render_opts *o);
+void qd__render_eom_view_free(qd__eom_view *v);
 
 #endif

@@ -131,7 +131,7 @@ def triangle(qdot):
     check("triangle text rc", rc == 0, err)
     check("triangle text group", "symmetry group: C3v (order 6, 3 classes)" in out, out)
     check("triangle text Gamma", "Gamma = A1 + A2 + 2E" in out, out)
-    check("triangle text mode", "mode 6: w^2 = 3, w = 1.732050808 rad/s, A1 (degeneracy 1)"
+    check("triangle text mode", "mode 6: w^2 = 3, w = 1.732050808 rad/s, A1 (multiplicity 1)"
           in out, out)
 
 
@@ -185,7 +185,7 @@ def tetrahedron(qdot):
         zero = sorted((x["kind"], x["irrep"]) for x in doc["modes"] if x["omega2"] == 0)
         check(f"tetra kh={kh} zero modes", zero == [("rotation", "T1")] * 3 +
               [("translation", "T2")] * 3, zero)
-        check(f"tetra kh={kh} degeneracy", all(x["degeneracy"] == {"A": 1, "E": 2, "T": 3}
+        check(f"tetra kh={kh} degeneracy", all(x["multiplicity"] == {"A": 1, "E": 2, "T": 3}
                                                 [x["irrep"][0]] for x in doc["modes"]))
 
 

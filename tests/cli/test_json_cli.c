@@ -1,5 +1,5 @@
 /*
- * tests/cli/test_json_cli.c - the CLI's JSON writer (src/render/json.c) says why a
+ * tests/cli/test_json_cli.c - the CLI's JSON writer (src/json/json.c) says why a
  * document could not be written (issue 30): a buffer that ran out of memory
  * is "out of memory", not "a non-finite number" as it once was; a NaN is a
  * non-finite number.

@@ -1,5 +1,5 @@
 /*
- * src/render/json.c - the JSON writer of qdot/json.h (RFC 8259: strings, numbers,
+ * src/json/json.c - the JSON writer of qdot/json.h (RFC 8259: strings, numbers,
  * objects, arrays, true, false, null).
  */
 #include "qdot/json.h"
