@@ -26,7 +26,6 @@ typedef struct cli_cmd {
     const char *args;     /* usage after the name */
     const char *summary;
     int (*run)(int argc, char **argv);
-    bool own_help; /* answers --help with its full usage (cli_file_args) */
 } cli_cmd;
 
 /* Diagnostics (diag.c): "qdot: error: ..." and the caret under a source span. */
@@ -44,12 +43,6 @@ int cli_diag_ctx(const qd_ctx *ctx); /* prints the context's error, returns the 
  * statement, constraint or coordinate it is about, with its hint. */
 int cli_diag_model(const qd_ctx *ctx, const char *file, const char *text, const qd_model *m);
 
-/* FILE and options (args.c): every argument starting with '-' goes to opt,
- * which may take a value by advancing *i; exactly one other is the FILE. */
-typedef int (*cli_option)(int argc, char **argv, int *i, void *data);
-int cli_file_args(int argc, char **argv, const char *cmd, const char *usage,
-                     const char **file, cli_option opt, void *data);
-
 /* Lists like --about "q=pi/2, F=f(1, 2)": the end of the item that starts
  * at text[i], the next comma outside brackets or the end of text. */
 size_t cli_item_end(const char *text, size_t i);
@@ -57,11 +50,6 @@ size_t cli_item_end(const char *text, size_t i);
 /* Is arg an option ("--NAME", "--NAME=V", "-h") where a command also takes
  * expressions?  "-x", "-p_x*2" and "-1" are expressions, not options. */
 bool cli_is_option(const char *arg);
-
-/* The value of option opt given as "--opt VALUE" or "--opt=VALUE" at
- * argv[*i] (advancing *i past a separate VALUE), or NULL when argv[*i] is
- * another option or VALUE is missing. */
-const char *cli_value(int argc, char **argv, int *i, const char *opt);
 
 /* Parse "--format NAME" values; false for an unknown name. */
 bool cli_format(const char *name, qd_format *out);

@@ -13,41 +13,6 @@
 #include "qdot/routh.h"
 #include "state.h"
 
-int cli_once(const char *opt, const char **slot, const char *value) {
-    if (*slot) {
-        cli_diag_error("%s is given twice; give it once", opt);
-        return QD_EXIT_USAGE;
-    }
-    *slot = value;
-    return QD_EXIT_OK;
-}
-
-int cli_push(const char *opt, const char **list, size_t *n, size_t cap, const char *value) {
-    if (*n >= cap) {
-        cli_diag_error("at most %zu %s options", cap, opt);
-        return QD_EXIT_USAGE;
-    }
-    list[(*n)++] = value;
-    return QD_EXIT_OK;
-}
-
-int cli_choice(const char *opt, const char *value, const char *const *names, int *out) {
-    size_t k = 0;
-    for (; names[k]; k++)
-        if (!strcmp(value, names[k])) {
-            *out = (int)k;
-            return QD_EXIT_OK;
-        }
-    char list[256];
-    size_t used = 0;
-    list[0] = '\0';
-    for (size_t i = 0; i < k && used < sizeof list; i++)
-        used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
-                                 i == 0 ? "" : i + 1 == k ? " or " : ", ", names[i]);
-    cli_diag_error("%s takes %s, not '%s'", opt, list, value);
-    return QD_EXIT_USAGE;
-}
-
 int cli_bad_option(const char *arg, const char *usage) {
     cli_diag_error("unknown option or missing value: '%s'\n%s", arg, usage);
     return QD_EXIT_USAGE;

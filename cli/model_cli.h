@@ -15,13 +15,6 @@
 
 #define QD_CLI_MAX_LIST 64
 
-/* An option that takes one value: an error when it is given twice. */
-int cli_once(const char *opt, const char **slot, const char *value);
-/* A repeatable option: value appended to list[*n] (at most cap). */
-int cli_push(const char *opt, const char **list, size_t *n, size_t cap, const char *value);
-/* value among names (NULL-terminated): *out its index; else an error listing
- * them ("--format takes text or json, not 'c'"). */
-int cli_choice(const char *opt, const char *value, const char *const *names, int *out);
 /* The error for argv[i], an unknown option or one without its value. */
 int cli_bad_option(const char *arg, const char *usage);
 

@@ -10,28 +10,6 @@
 #include "cli.h"
 #include "model_cli.h"
 
-int cli_plot_option(int argc, char **argv, int *i, cli_plot_args *a) {
-    const char *v;
-    int rc;
-    if ((v = cli_value(argc, argv, i, "--plot")))
-        rc = cli_once("--plot", &a->file, v);
-    else if ((v = cli_value(argc, argv, i, "--plot-y")))
-        rc = cli_once("--plot-y", &a->ycols, v);
-    else if ((v = cli_value(argc, argv, i, "--phase")))
-        rc = cli_once("--phase", &a->phase, v);
-    else if ((v = cli_value(argc, argv, i, "--title")))
-        rc = cli_once("--title", &a->title, v);
-    else if ((v = cli_value(argc, argv, i, "--xlabel")))
-        rc = cli_once("--xlabel", &a->xlabel, v);
-    else if ((v = cli_value(argc, argv, i, "--ylabel")))
-        rc = cli_once("--ylabel", &a->ylabel, v);
-    else if ((v = cli_value(argc, argv, i, "--size")))
-        rc = cli_once("--size", &a->size, v);
-    else
-        return 0;
-    return rc == QD_EXIT_OK ? 1 : rc + 100;
-}
-
 int cli_plot_check(cli_plot_args *a, const char *cmd) {
     const char *shape = a->ycols ? "--plot-y" : a->phase ? "--phase" : a->title ? "--title"
                         : a->xlabel ? "--xlabel" : a->ylabel ? "--ylabel" : a->size ? "--size"

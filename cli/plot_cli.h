@@ -23,10 +23,6 @@ typedef struct cli_plot_args {
     int width, height;  /* from --size, or 0: the default */
 } cli_plot_args;
 
-/* One --plot option at argv[*i]: 1 taken, 0 not one, or an exit status +
- * 100 (a repeated option). */
-int cli_plot_option(int argc, char **argv, int *i, cli_plot_args *a);
-
 /* The options together, before any work: --plot-y or --phase without
  * --plot, both at once, an unknown extension.  Exit status. */
 int cli_plot_check(cli_plot_args *a, const char *cmd);
