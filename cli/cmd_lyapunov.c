@@ -1,5 +1,5 @@
 /*
- * cli/cmd_lyapunov.c - `qdot lyapunov FILE --t-end T [--n K] [--renorm DT]
+ * cli/cmd_lyapunov.c - `qdot lyapunov FILE --t-end T [--exponents K] [--renorm DT]
  * [--transient T0] [simulate options] [--format text|json]`: the K largest
  * Lyapunov exponents of the motion from the model's initial state
  * (qdot/lyapunov.h), their error estimates, and the check their sum
@@ -29,7 +29,7 @@ typedef struct ly_args {
 static const char *const formats[] = {"text", "json", NULL};
 
 static const cli_opt opts[] = {
-    {"--n", NULL, CLI_COUNT, offsetof(ly_args, n), "K", "the K largest exponents (1)", NULL,
+    {"--exponents", NULL, CLI_COUNT, offsetof(ly_args, n), "K", "the K largest exponents (1)", NULL,
      NULL},
     {"--renorm", NULL, CLI_TEXT, offsetof(ly_args, renorm_text), "DT",
      "the time between renormalizations (1)", NULL, NULL},
@@ -161,7 +161,7 @@ static int run(cli_sim *c, const ly_args *p) {
     }
     size_t d = 2 * c->e->n;
     if (p->n > d) {
-        cli_diag_error("--n: the model has %zu exponents (twice its %zu degrees of freedom), "
+        cli_diag_error("--exponents: the model has %zu exponents (twice its %zu degrees of freedom), "
                        "not %zu", d, c->e->n, p->n);
         return QD_EXIT_USAGE;
     }

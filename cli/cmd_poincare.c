@@ -1,6 +1,6 @@
 /*
  * cli/cmd_poincare.c - `qdot poincare FILE --section "q1 = 0, q1' > 0"
- * --n N`: a Poincare surface of section.  The motion is integrated
+ * --crossings N`: a Poincare surface of section.  The motion is integrated
  * (qdot/sim.h, dop853 at --rtol by default) and the state at each of the
  * first N crossings of the section, located to round-off by the
  * integrator's event machinery, is printed as CSV.
@@ -30,7 +30,7 @@ typedef struct pc_args {
 static const cli_opt opts[] = {
     {"--section", NULL, CLI_TEXT, offsetof(pc_args, section), "\"EXPR = EXPR[, EXPR > EXPR]\"",
      "the surface of section: a crossing and its conditions", NULL, NULL},
-    {"--n", NULL, CLI_COUNT, offsetof(pc_args, n), "N", "the crossings to find", NULL, NULL},
+    {"--crossings", NULL, CLI_COUNT, offsetof(pc_args, n), "N", "the crossings to find", NULL, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 
@@ -41,7 +41,7 @@ static const cli_group groups[] = {
 };
 
 static const cli_spec spec = {
-    "poincare", "FILE --section \"EXPR = EXPR[, EXPR > EXPR]\" --n N [options]",
+    "poincare", "FILE --section \"EXPR = EXPR[, EXPR > EXPR]\" --crossings N [options]",
     "a Poincare surface of section: the state at the first N crossings, as CSV (--t-end: "
     "1e6 at most)",
     opts, groups, 1, 1, "FILE", false,
@@ -127,11 +127,11 @@ int cli_cmd_poincare(int argc, char **argv) {
     pc_args p = {.n = 0};
     int rc = cli_parse(&spec, argc, argv, &p, &p.a.file);
     if (rc == QD_EXIT_OK && (!p.section || !p.n)) {
-        cli_diag_error("%s is missing (qdot poincare --help)", p.section ? "--n" : "--section");
+        cli_diag_error("%s is missing (qdot poincare --help)", p.section ? "--crossings" : "--section");
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK && p.n > 1000000000) {
-        cli_diag_error("--n takes at most 1e9 crossings, not %zu", p.n);
+        cli_diag_error("--crossings takes at most 1e9 crossings, not %zu", p.n);
         rc = QD_EXIT_USAGE;
     }
     if (rc == QD_EXIT_OK && p.a.plot.ycols) {

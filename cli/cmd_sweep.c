@@ -29,7 +29,7 @@
 typedef struct sweep_args {
     cli_sim_args sim;
     const char *grid, *random, *list, *measure, *section, *format, *map, *map_measure;
-    size_t n;              /* --n: the random runs (0: not given) */
+    size_t n;              /* --runs: the random runs (0: not given) */
     double seed, threads;
     double renorm, transient; /* the lyapunov measures */
     size_t nuser;          /* --event and --stop-at: the first is the measure event's */
@@ -77,8 +77,8 @@ static const char *const formats[] = {"csv", "json", "hdf5", NULL};
 #define CALL(NAME, FN, META, HELP) {NAME, NULL, CLI_CALL, 0, META, HELP, NULL, FN}
 static const cli_opt opts[] = {
     OPT("--grid", CLI_TEXT, grid, "\"NAME=A:B:N, ...\"", "the runs: a grid, the first axis slowest"),
-    OPT("--random", CLI_TEXT, random, "\"NAME=A:B, ...\"", "the runs: --n draws uniform in the box"),
-    OPT("--n", CLI_COUNT, n, "N", "the number of --random runs"),
+    OPT("--random", CLI_TEXT, random, "\"NAME=A:B, ...\"", "the runs: uniform in the box (--runs N)"),
+    OPT("--runs", CLI_COUNT, n, "N", "the number of --random runs"),
     CALL("--seed", seed_option, "S", "the seed of --random (default 1)"),
     OPT("--list", CLI_TEXT, list, "FILE.csv", "the runs: a header of names, a row a run"),
     OPT("--measure", CLI_TEXT, measure, "\"M, ...\"",
@@ -99,7 +99,7 @@ static const cli_group groups[] = {CLI_SIM_GROUP(sweep_args, sim), {NULL, 0}};
 
 static const cli_spec spec = {
     .name = "sweep",
-    .synopsis = "FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --n N | --list "
+    .synopsis = "FILE (--grid \"NAME=A:B:N, ...\" | --random \"NAME=A:B, ...\" --runs N | --list "
                 "FILE.csv) --t-end T --measure \"M, ...\" [options]",
     .summary = "Many runs of one model, a row each: the inputs, the measures and the status.\n"
                "Every option of qdot simulate that shapes a run applies too (--t-end, --method,\n"
@@ -117,7 +117,7 @@ static int check_args(const sweep_args *a) {
     const char *missing = how != 1               ? "one of --grid, --random, --list"
                           : !a->sim.t_end        ? "--t-end"
                           : !a->measure          ? "--measure"
-                          : a->random && !a->n   ? "--n (the number of random runs)"
+                          : a->random && !a->n   ? "--runs (the number of random runs)"
                                                  : NULL;
     if (missing) {
         cli_diag_error("%s %s (qdot sweep --help)", how > 1 ? "give only" : "missing:", missing);
@@ -128,7 +128,7 @@ static int check_args(const sweep_args *a) {
         return QD_EXIT_USAGE;
     }
     if (a->n && !a->random) {
-        cli_diag_error("--n is for --random");
+        cli_diag_error("--runs is for --random");
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;

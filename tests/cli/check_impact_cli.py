@@ -120,7 +120,7 @@ def main():
     # poincare on the pendulum at a wall: only the section's crossings (the
     # impacts' rows are not crossings); 1 - cos(a_n) = e^(2n) (1 - cos th0)
     pend = str(ROOT / 'examples' / 'pendulum_wall.qd')
-    rc, out, err = run(qdot, 'poincare', pend, '--section', "th' = 0, th > 0", '--n', 3,
+    rc, out, err = run(qdot, 'poincare', pend, '--section', "th' = 0, th > 0", '--crossings', 3,
                        '--rtol', 1e-12)
     check(rc == 0, f'poincare: exit {rc} {err}')
     a = 0.5

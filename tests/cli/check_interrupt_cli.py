@@ -89,7 +89,7 @@ def main():
                                                 "--max-steps", "1e15", "--out", out2], out2, 2000)
         sec = tmp / "section.csv"
         interrupt("poincare --out", [qdot, "poincare", EX / "double_pendulum.qd", "--section",
-                                     "theta1=0, theta1' > 0", "--n", "100000000",
+                                     "theta1=0, theta1' > 0", "--crossings", "100000000",
                                      "--t-end", "1e9", "--out", sec], sec, 3)
     print("%d passed, %d failed" % (results["passed"], results["failed"]))
     return 1 if results["failed"] else 0

@@ -17,7 +17,7 @@ Expected values are exact or from the literature, computed here:
   the chaotic orbit's lambda_1 is at least 20 times that of the regular orbit
   from y = 0.55 (Skokos, Lect. Notes Phys. 790 (2010) 63);
 - the text format prints the same numbers as the JSON;
-- errors: --n beyond 2n, no --t-end, a method other than dopri5/dop853, a
+- errors: --exponents beyond 2n, no --t-end, a method other than dopri5/dop853, a
   transient as long as the run, a constrained model (exit 2); a mass matrix
   singular on the way (exit 1).
 
@@ -68,7 +68,7 @@ def inverted(qdot, tmp):
     path = model_file(tmp, 'inverted.qd', 'coordinates x\nparameters a = 1\n'
                       'T = x\'^2/2\nV = -a^2/2*x^2\ninitial x = 0, x\' = 0\n')
     for a in (2.0, 0.5):
-        r = lyap(qdot, path, '--set', 'a=%g' % a, '--n', '2', '--t-end', '60',
+        r = lyap(qdot, path, '--set', 'a=%g' % a, '--exponents', '2', '--t-end', '60',
                  '--transient', '20')
         if r:
             close('inverted a=%g lambda_1' % a, r['exponents'][0], a, 1e-6)
@@ -79,7 +79,7 @@ def damped(qdot):
     path = EXAMPLES / 'damped_oscillator.qd'
     m, b = 1.2, 0.4
     for extra, bb in (((), b), (('--set', 'b=0.6'), 0.6)):
-        r = lyap(qdot, path, '--n', '2', '--t-end', '200', *extra)
+        r = lyap(qdot, path, '--exponents', '2', '--t-end', '200', *extra)
         if not r:
             continue
         close('damped b=%g trace' % bb, r['trace_mean'], -bb / m, 1e-9)
@@ -103,7 +103,7 @@ def hh_energy(text):
 def henon_heiles(qdot):
     path = EXAMPLES / 'henon_heiles.qd'
     close('henon-heiles E', hh_energy(path.read_text()), 1 / 8, 1e-15)
-    r = lyap(qdot, path, '--n', '4', '--t-end', '3000')
+    r = lyap(qdot, path, '--exponents', '4', '--t-end', '3000')
     if r:
         ex = r['exponents']
         check('henon-heiles descending', ex == sorted(ex, reverse=True), ex)
@@ -123,8 +123,8 @@ def henon_heiles(qdot):
 
 def text_format(qdot):
     path = EXAMPLES / 'damped_oscillator.qd'
-    rc, out, err = run(qdot, str(path), '--n', '2', '--t-end', '50')
-    r = lyap(qdot, path, '--n', '2', '--t-end', '50')
+    rc, out, err = run(qdot, str(path), '--exponents', '2', '--t-end', '50')
+    r = lyap(qdot, path, '--exponents', '2', '--t-end', '50')
     check('text exit', rc == 0, err)
     lines = [s for s in out.splitlines() if s.startswith('lambda_')]
     check('text lines', len(lines) == 2, out)
@@ -138,7 +138,7 @@ def text_format(qdot):
 def errors(qdot, tmp):
     hh = str(EXAMPLES / 'henon_heiles.qd')
     cases = [
-        ('--n 5', [hh, '--t-end', '10', '--n', '5'], 2, 'not 5'),
+        ('--exponents 5', [hh, '--t-end', '10', '--exponents', '5'], 2, 'not 5'),
         ('no --t-end', [hh], 2, '--t-end'),
         ('gl4', [hh, '--t-end', '10', '--method', 'gl4', '--dt', '0.1'], 2, 'dop853'),
         ('transient', [hh, '--t-end', '10', '--transient', '10'], 2, 'transient'),

@@ -207,7 +207,7 @@ def check_simulate(qdot, spring):
 def check_poincare(qdot, spring):
     period = 2 * math.pi * math.sqrt(2)
     rc, out, err = run(qdot, 'poincare', spring, '--set', 'k=5', '--section', "x' = 0, x < 1",
-                       '--n', 2)
+                       '--crossings', 2)
     ts = [float(r['t']) for r in csv_rows(out)] if rc == 0 else []
     check('poincare: crossings one period apart', len(ts) == 2 and close(ts[0], period, 1e-7)
           and close(ts[1], 2 * period, 1e-7), (ts, err))

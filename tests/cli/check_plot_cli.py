@@ -213,7 +213,7 @@ def main():
 
     # poincare: the section's points, in the coordinate the section leaves free
     dp = EX / 'double_pendulum.qd'
-    rc, out, err = run(qdot, 'poincare', dp, '--section', "theta1 = 0, theta1' > 0", '--n', 40,
+    rc, out, err = run(qdot, 'poincare', dp, '--section', "theta1 = 0, theta1' > 0", '--crossings', 40,
                        '--initial', 'theta1=1, theta2=0.5', '--plot', tmp / 'pc.png')
     check(rc == 0 and len(out.splitlines()) == 41, f'poincare --plot: {rc} {err}')
     if rc == 0:

@@ -27,7 +27,7 @@ DP = EX / 'double_pendulum.qd'
 START = ['--initial', 'theta1=1.5, theta2=1', '--rtol', '1e-12']
 RUNS = {
     'simulate': ['simulate', DP, '--t-end', 50, *START, '--out', os.devnull],
-    'poincare': ['poincare', DP, '--section', "theta1 = 0, theta1' > 0", '--n', 30, *START,
+    'poincare': ['poincare', DP, '--section', "theta1 = 0, theta1' > 0", '--crossings', 30, *START,
                  '--out', os.devnull],
 }
 

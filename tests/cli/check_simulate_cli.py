@@ -150,7 +150,7 @@ def main():
         check(data[0][lam] > 0, 'the sphere pushes outward before (lambda > 0)')
 
     # poincare: n crossings of theta1 = 0 upward
-    rc, out, err = run(qdot, 'poincare', dp, '--section', "theta1 = 0, theta1' > 0", '--n', 4,
+    rc, out, err = run(qdot, 'poincare', dp, '--section', "theta1 = 0, theta1' > 0", '--crossings', 4,
                        '--initial', 'theta1=1, theta2=0.5')
     check(rc == 0, f'poincare: {rc} {err}')
     if rc == 0:
@@ -164,7 +164,7 @@ def main():
     rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, '--dt', 0.1, '--method', 'verlet')
     check(rc == 1 and 'not separable' in err, f'verlet on non-separable H: {rc} {err}')
     check(out == '', f'a refused run prints nothing on stdout, not {out[:80]!r}')
-    rc, out, err = run(qdot, 'poincare', dp, '--section', 'theta1 = 0', '--n', 1, '--dt', 0.1,
+    rc, out, err = run(qdot, 'poincare', dp, '--section', 'theta1 = 0', '--crossings', 1, '--dt', 0.1,
                        '--method', 'yoshida4')
     check(rc == 1 and 'not separable' in err and out == '', f'poincare yoshida4: {rc} {out!r}')
     rc, out, err = run(qdot, 'simulate', EX / 'kepler_polar.qd', '--t-end', 1, '--dt', 10,
@@ -175,7 +175,7 @@ def main():
                  ['--t-end', 1, '--output', 'nosuchname']):
         rc, out, err = run(qdot, 'simulate', dp, *args)
         check(rc == 2, f'usage {args}: {rc} {err}')
-    rc, out, err = run(qdot, 'poincare', dp, '--n', 3)
+    rc, out, err = run(qdot, 'poincare', dp, '--crossings', 3)
     check(rc == 2, f'poincare without --section: {rc}')
 
     # a model given by H with d^2H/dp^2 singular (H = p x: no Lagrangian):

@@ -81,7 +81,7 @@ def rows(text):
 def threads_identical(build):
     def args(seed):
         return [EX / "double_pendulum.qd", "--random", "theta1=-2:2, theta2=-2:2, g=5:15",
-                "--n", 24, "--seed", seed, "--t-end", 8, "--rtol", 1e-9,
+                "--runs", 24, "--seed", seed, "--t-end", 8, "--rtol", 1e-9,
                 "--measure", "final, energy_error, max:theta2, min:y2"]
     one = sweep(build, *args(11), "--threads", 1)
     two = sweep(build, *args(11), "--threads", 2)
@@ -232,9 +232,9 @@ def errors(build, tmp):
         ("duplicate", ["--grid", "k=0:1:3, k=1:2:2"], "given twice"),
         ("malformed", ["--grid", "x=0:1"], "expected A:B:N"),
         ("not a number", ["--grid", "x=0:z:3"], "not a number"),
-        ("random A > B", ["--random", "x=1:0", "--n", 3], "backwards"),
-        ("random without --n", ["--random", "x=0:1"], "--n"),
-        ("two ways", ["--grid", "x=0:1:2", "--random", "x=0:1", "--n", 2], "only"),
+        ("random A > B", ["--random", "x=1:0", "--runs", 3], "backwards"),
+        ("random without --n", ["--random", "x=0:1"], "--runs"),
+        ("two ways", ["--grid", "x=0:1:2", "--random", "x=0:1", "--runs", 2], "only"),
     ]
     for name, extra, words in cases:
         r = qdot(build, "sweep", *base, *extra)

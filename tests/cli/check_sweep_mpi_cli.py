@@ -111,7 +111,7 @@ def rows(text):
 
 def pendulum_args():
     return [EX / "double_pendulum.qd", "--random", "theta1=-2:2, theta2=-2:2, g=5:15",
-            "--n", 40, "--seed", 5, "--t-end", 8, "--rtol", 1e-9,
+            "--runs", 40, "--seed", 5, "--t-end", 8, "--rtol", 1e-9,
             "--measure", "final, energy_error, max:theta2"]
 
 
@@ -253,7 +253,7 @@ def colour_map(build, tmp):
     across, up = map_cells(png)
     check("map of k: one colour along m", len(set(across)) == 1, str(across))
     check("map of k: lighter cell by cell up k", monotone(up, 3), str(up))
-    r = run(qdot_cmd(build, "sweep", model, "--random", "m=1:2", "--n", 3, "--t-end", 0.1,
+    r = run(qdot_cmd(build, "sweep", model, "--random", "m=1:2", "--runs", 3, "--t-end", 0.1,
                      "--measure", "final", "--map", tmp / "r.png"))
     check("map of a random sweep: exit 2", r.returncode == 2 and "grid of two axes" in r.stderr
           and "(--map)" in r.stderr, r.stderr)

@@ -193,7 +193,7 @@ def main():
     sect = []
     for method in ('taylor', 'dop853'):
         rc, out, err = run(qdot, 'poincare', EX / 'double_pendulum.qd', '--section',
-                           "theta1 = 0, theta1' > 0", '--n', 5, '--initial',
+                           "theta1 = 0, theta1' > 0", '--crossings', 5, '--initial',
                            'theta1=1, theta2=0.5', '--method', method, '--rtol', 1e-13,
                            '--atol', 1e-13)
         check(rc == 0, f'poincare {method}: {rc} {err}')

@@ -60,7 +60,7 @@ def commands(osc):
         ["simulate", osc, "--t-end", "1", "--format", "json"],
         # more than a stdio buffer: the failure comes during the run
         ["simulate", osc, "--t-end", "100", "--dt", "0.01", "--method", "verlet"],
-        ["poincare", dp, "--section", "theta1=0", "--n", "3"],
+        ["poincare", dp, "--section", "theta1=0", "--crossings", "3"],
         ["lyapunov", osc, "--t-end", "10"],
         ["codegen", osc, "-o", osc.parent],  # prints "wrote FILE"
         ["equilibria", osc],
@@ -118,7 +118,7 @@ def files_full(qdot, osc, tmp):
         ["simulate", osc, "--t-end", "1", "--out", "/dev/full"],
         ["simulate", osc, "--t-end", "100", "--dt", "0.01", "--method", "verlet",
          "--out", "/dev/full"],
-        ["poincare", dp, "--section", "theta1=0", "--n", "3", "--out", "/dev/full"],
+        ["poincare", dp, "--section", "theta1=0", "--crossings", "3", "--out", "/dev/full"],
         ["simulate", dp, "--t-end", "1", "--variational", "columns", "--out", "/dev/full"],
         ["sweep", osc, "--grid", "m=1:2:2", "--t-end", "1", "--measure", "final",
          "-o", "/dev/full"],
@@ -153,7 +153,7 @@ def directories(qdot, osc, tmp):
     d.mkdir(exist_ok=True)
     cases = [
         (["simulate", osc, "--t-end", "1", "--out", d], "cannot write %s: is a directory"),
-        (["poincare", EX / "double_pendulum.qd", "--section", "theta1=0", "--n", "1",
+        (["poincare", EX / "double_pendulum.qd", "--section", "theta1=0", "--crossings", "1",
           "--out", d], "cannot write %s: is a directory"),
         (["sweep", osc, "--grid", "m=1:2:2", "--t-end", "1", "--measure", "final", "-o", d],
          "cannot write %s: is a directory"),
