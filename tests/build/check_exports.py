@@ -120,8 +120,8 @@ for mod in modules:
             f = l.split()
             if len(f) == 2 and f[0] == "U":
                 undefined.setdefault(mod, set()).add(f[1])
-            elif len(f) == 3:
-                defined[f[2]] = mod
+            elif len(f) == 3 and not f[2].startswith("__odr_asan"):
+                defined[f[2]] = mod  # (AddressSanitizer's ODR indicators are its own)
 for sym, mod in sorted(defined.items()):
     if sym in declared or mod in EXCEPT_MODULES or sym in EXCEPT_NAMES:
         continue

@@ -44,6 +44,7 @@ static void test_choose(void **state) {
     qd_scene_points_free(p);
     assert_int_equal(qd_scene_choose(f->ctx, f->m, all, 1, &p, &n), QD_OK);
     assert_int_equal(n, 2);
+    qd_scene_points_free(p);
     assert_int_equal(qd_scene_choose(f->ctx, f->m, NULL, 0, &p, &n), QD_OK); /* the default */
     assert_int_equal(n, 2);
     size_t at[2], ends[2];
