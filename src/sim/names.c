@@ -15,6 +15,7 @@
 
 #include "../base/args.h"
 #include "qdot/read.h"
+#include "qdot/state.h" /* qd_state_item_end: the one item splitter */
 #include "setup.h"
 
 static bool is_multiplier(const qd_sim_setup *s, const qd_expr *x) {
@@ -159,19 +160,6 @@ const qd_expr *qd_sim_setup_read(qd_sim_setup *s, const char *text, size_t a, si
     return x;
 }
 
-/* End of the item at i: the next comma outside brackets. */
-static size_t item_end(const char *text, size_t i) {
-    int depth = 0;
-    for (; text[i]; i++) {
-        if (text[i] == '(' || text[i] == '[')
-            depth++;
-        else if ((text[i] == ')' || text[i] == ']') && depth > 0)
-            depth--;
-        else if (text[i] == ',' && depth == 0)
-            break;
-    }
-    return i;
-}
 
 qd_status qd_sim_setup_output(qd_sim_setup *s, const char *name, const char *text, size_t a,
                               size_t b) {
@@ -185,7 +173,7 @@ qd_status qd_sim_setup_outputs(qd_sim_setup *s, const char *text) {
     QD_ARGS(QD_ERR_ARG, s);
     QD_ARGS_CTX(s->ctx, text);
     for (size_t p = 0; text[p];) {
-        size_t end = item_end(text, p), a = p, b = end;
+        size_t end = qd_state_item_end(text, p), a = p, b = end;
         while (a < b && isspace((unsigned char)text[a]))
             a++;
         while (b > a && isspace((unsigned char)text[b - 1]))
@@ -215,7 +203,7 @@ qd_status qd_sim_setup_event(qd_sim_setup *s, const char *text, bool stop) {
     const qd_expr *g = NULL, *guards[64];
     size_t ng = 0;
     for (size_t p = 0; text[p] || !g;) {
-        size_t end = item_end(text, p), op = p;
+        size_t end = qd_state_item_end(text, p), op = p;
         while (op < end && text[op] != '=' && text[op] != '>' && text[op] != '<')
             op++;
         if (op == end || (g == NULL) != (text[op] == '=') || ng == 64)

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "../base/args.h"
+#include "qdot/state.h" /* qd_state_item_end: the one item splitter */
 #include "setup.h"
 
 qd_sim_form qd_sim_form_of(const qd_model *m, bool no_speeds) {
@@ -268,18 +269,6 @@ static bool value_of(qd_sim_setup *s, const char *text, size_t a, size_t b, doub
     return false;
 }
 
-static size_t item_end(const char *text, size_t i) {
-    int depth = 0;
-    for (; text[i]; i++) {
-        if (text[i] == '(' || text[i] == '[')
-            depth++;
-        else if ((text[i] == ')' || text[i] == ']') && depth > 0)
-            depth--;
-        else if (text[i] == ',' && depth == 0)
-            break;
-    }
-    return i;
-}
 
 static qd_status bad_item(qd_sim_setup *s, const char *text, size_t a, size_t b, const char *why) {
     qd_ctx_error(s->ctx, QD_ERR_ARG, "%s", why);
@@ -302,7 +291,7 @@ qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text) {
     }
     qd_status st = QD_OK;
     for (size_t p = 0; text[p] && st == QD_OK;) {
-        size_t end = item_end(text, p), na = p;
+        size_t end = qd_state_item_end(text, p), na = p;
         while (na < end && isspace((unsigned char)text[na]))
             na++;
         const char *eq = memchr(text + na, '=', end - na);
