@@ -65,6 +65,11 @@ typedef struct cli_spec {
     bool expressions; /* positionals are expressions: "-x" is one, not an option */
 } cli_spec;
 
+/* One plain entry of a table whose fields sit in the struct TYPE:
+ * CLI_OPT(TYPE, "--t-end", CLI_TEXT, t_end, "T", "the end time"). */
+#define CLI_OPT(TYPE, NAME, KIND, FIELD, META, HELP) \
+    {NAME, NULL, KIND, offsetof(TYPE, FIELD), META, HELP, NULL, NULL}
+
 /* Parse argv[0..argc) (the arguments after the command name) into args and
  * pos[0..spec->max_pos) (unset ones NULL).  --help (or -h) prints the usage
  * on stdout and exits 0.  Returns 0, or 2 after printing why (an unknown or

@@ -75,8 +75,7 @@ static int tol_option(const char *v, void *args) {
     return QD_EXIT_OK;
 }
 
-#define OPT(name, kind, field, meta, help) \
-    {name, NULL, kind, offsetof(modes_args, field), meta, help, NULL, NULL}
+#define OPT(...) CLI_OPT(modes_args, __VA_ARGS__)
 static const cli_opt opts[] = {
     OPT("--at-equilibrium", CLI_COUNT, at_eq, "N", "about equilibrium N, as `qdot equilibria` "
         "lists them"),

@@ -50,8 +50,7 @@ typedef struct stab_run {
 
 static const char *const formats[] = {"text", "json", NULL};
 
-#define OPT(name, kind, field, meta, help) \
-    {name, NULL, kind, offsetof(stab_args, field), meta, help, NULL, NULL}
+#define OPT(...) CLI_OPT(stab_args, __VA_ARGS__)
 static const cli_opt opts[] = {
     OPT("--ignore", CLI_TEXT, ignore, "Q[,Q...]", "the cyclic coordinates, momenta free "
         "(Routhian, V_eff = V + K)"),

@@ -72,8 +72,7 @@ static int transient_option(const char *v, void *a) {
 
 static const char *const formats[] = {"csv", "json", "hdf5", NULL};
 
-#define OPT(NAME, KIND, FIELD, META, HELP) \
-    {NAME, NULL, KIND, offsetof(sweep_args, FIELD), META, HELP, NULL, NULL}
+#define OPT(...) CLI_OPT(sweep_args, __VA_ARGS__)
 #define CALL(NAME, FN, META, HELP) {NAME, NULL, CLI_CALL, 0, META, HELP, NULL, FN}
 static const cli_opt opts[] = {
     OPT("--grid", CLI_TEXT, grid, "\"NAME=A:B:N, ...\"", "the runs: a grid, the first axis slowest"),
