@@ -45,6 +45,11 @@ QD_API void qd_json_bool(qd_json *j, bool v);
 QD_API void qd_json_null(qd_json *j);
 /* An expression as a string in the text format; null for NULL. */
 QD_API void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x);
+/* "key": [[x[0], ..., x[cols-1]], ...]: the rows x 'cols' matrix x stored by
+ * rows (key NULL: the value alone, inside an array).  false if an entry was
+ * refused (not finite). */
+QD_API bool qd_json_matrix(qd_json *j, const char *key, size_t rows, size_t cols,
+                           const double *x);
 /* The document is complete, nothing was refused and no memory ran out. */
 QD_API bool qd_json_ok(const qd_json *j);
 /* Why the document is not ok: "out of memory", "a non-finite number (JSON

@@ -167,3 +167,18 @@ const char *qd_json_why(const qd_json *j) {
         return "a non-finite number (JSON cannot hold it)";
     return "an unfinished or too deeply nested document";
 }
+
+bool qd_json_matrix(qd_json *j, const char *key, size_t rows, size_t cols, const double *x) {
+    bool ok = true;
+    if (key)
+        qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < rows; i++) {
+        qd_json_begin_array(j);
+        for (size_t k = 0; k < cols; k++)
+            ok = qd_json_number(j, x[i * cols + k]) && ok;
+        qd_json_end_array(j);
+    }
+    qd_json_end_array(j);
+    return ok;
+}

@@ -98,26 +98,13 @@ static void json_names(qd_json *j, const char *key, size_t n, const char *const 
     qd_json_end_array(j);
 }
 
-static void json_matrix(qd_json *j, const char *key, size_t rows, size_t cols,
-                        const double *M) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < rows; i++) {
-        qd_json_begin_array(j);
-        for (size_t k = 0; k < cols; k++)
-            qd_json_number(j, M[i * cols + k]);
-        qd_json_end_array(j);
-    }
-    qd_json_end_array(j);
-}
-
 static void put_json_object(qd_json *j, const qd_care_result *r, const char *const *states,
                             const char *const *inputs) {
     qd_json_begin_object(j);
     json_names(j, "states", r->n, states);
     json_names(j, "inputs", r->m, inputs);
-    json_matrix(j, "K", r->m, r->n, r->K);
-    json_matrix(j, "X", r->n, r->n, r->X);
+    qd_json_matrix(j, "K", r->m, r->n, r->K);
+    qd_json_matrix(j, "X", r->n, r->n, r->X);
     qd_json_key(j, "closed_loop_eigenvalues");
     qd_json_begin_array(j);
     for (size_t k = 0; k < r->n; k++) {

@@ -149,18 +149,6 @@ static void json_tri(qd_json *j, int v) {
         qd_json_bool(j, v == 1);
 }
 
-static void json_matrix(qd_json *j, const char *key, const double *A, size_t n) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < n; i++) {
-        qd_json_begin_array(j);
-        for (size_t k = 0; k < n; k++)
-            qd_json_number(j, A[i * n + k]);
-        qd_json_end_array(j);
-    }
-    qd_json_end_array(j);
-}
-
 static void json_roots(qd_json *j, const char *key, const qd_modes_result *m) {
     qd_json_key(j, key);
     qd_json_begin_array(j);
@@ -235,11 +223,11 @@ static bool json_out(qd_ctx *ctx, const qd_stability_report *r, qd_buf *b) {
     qd_json_number(&j, r->set->residual[0]);
     qd_json_key(&j, "Veff");
     qd_json_expr(&j, ctx, s->Veff);
-    json_matrix(&j, "mass_matrix", an->lin.M, an->n);
-    json_matrix(&j, "damping_matrix", an->lin.C, an->n);
-    json_matrix(&j, "gyroscopic_matrix", an->lin.G, an->n);
-    json_matrix(&j, "stiffness_matrix", an->lin.K, an->n);
-    json_matrix(&j, "hessian", an->hessian, an->n);
+    qd_json_matrix(&j, "mass_matrix", an->n, an->n, an->lin.M);
+    qd_json_matrix(&j, "damping_matrix", an->n, an->n, an->lin.C);
+    qd_json_matrix(&j, "gyroscopic_matrix", an->n, an->n, an->lin.G);
+    qd_json_matrix(&j, "stiffness_matrix", an->n, an->n, an->lin.K);
+    qd_json_matrix(&j, "hessian", an->n, an->n, an->hessian);
     qd_json_key(&j, "frequencies");
     qd_json_begin_array(&j);
     for (size_t i = 0; i < an->nfreq; i++)

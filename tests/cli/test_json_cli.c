@@ -53,6 +53,26 @@ static void test_nonfinite(void **state) {
     qd_buf_free(&b);
 }
 
+/* A 2 x 3 matrix stored by rows is written row by row; a NaN entry is refused. */
+static void test_matrix(void **state) {
+    (void)state;
+    const double x[6] = {1, 2, 3, 4, 5, 6.5};
+    qd_buf b = QD_BUF_INIT;
+    qd_json j;
+    qd_json_init(&j, &b);
+    qd_json_begin_object(&j);
+    assert_true(qd_json_matrix(&j, "A", 2, 3, x));
+    qd_json_end_object(&j);
+    assert_true(qd_json_ok(&j));
+    assert_non_null(strstr(b.s, "[[1, 2, 3], [4, 5, 6.5]]"));
+    qd_buf_free(&b);
+    const double bad[1] = {NAN};
+    qd_buf c = QD_BUF_INIT;
+    qd_json_init(&j, &c);
+    assert_false(qd_json_matrix(&j, NULL, 1, 1, bad));
+    qd_buf_free(&c);
+}
+
 static void test_whole(void **state) {
     (void)state;
     qd_buf b = QD_BUF_INIT;
@@ -71,6 +91,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_out_of_memory),
         cmocka_unit_test(test_nonfinite),
+        cmocka_unit_test(test_matrix),
         cmocka_unit_test(test_whole),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
