@@ -129,6 +129,14 @@ static bool looks_like_option(const cli_spec *spec, const char *arg) {
     return cli_is_option(arg) || lookup(spec, arg, option_name_len(arg), &base);
 }
 
+/* One positional more than the command takes. */
+static int too_many(const cli_spec *spec, const char *arg) {
+    cli_diag_error("'%s' takes %s%u %s; unexpected '%s' (qdot %s --help)", spec->name,
+                   spec->min_pos == spec->max_pos ? "" : "at most ", spec->max_pos,
+                   spec->pos_name ? spec->pos_name : "arguments", arg, spec->name);
+    return QD_EXIT_USAGE;
+}
+
 int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const char **pos) {
     unsigned npos = 0;
     const char *seen_name[256];
@@ -145,20 +153,14 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
         if (!strcmp(arg, "--")) { /* the rest are positionals, even "-x" */
             for (i++; i < argc; i++) {
                 if (npos == spec->max_pos)
-                    goto too_many;
+                    return too_many(spec, argv[i]);
                 pos[npos++] = argv[i];
             }
             break;
         }
         if (!looks_like_option(spec, arg)) {
-            if (npos == spec->max_pos) {
-            too_many:
-                cli_diag_error("'%s' takes %s%u %s%s; unexpected '%s' (qdot %s --help)", spec->name,
-                               spec->min_pos == spec->max_pos ? "" : "at most ", spec->max_pos,
-                               spec->pos_name ? spec->pos_name : "arguments",
-                               "", argv[i < argc ? i : argc - 1], spec->name);
-                return QD_EXIT_USAGE;
-            }
+            if (npos == spec->max_pos)
+                return too_many(spec, arg);
             pos[npos++] = arg;
             continue;
         }
@@ -238,10 +240,4 @@ void cli_usage(const cli_spec *spec, FILE *out) {
 
 bool cli_is_option(const char *arg) {
     return (arg[0] == '-' && arg[1] == '-' && arg[2]) || !strcmp(arg, "-h");
-}
-
-size_t cli_item_end(const char *text, size_t i) {
-    for (int depth = 0; text[i] && (text[i] != ',' || depth); i++)
-        depth += text[i] == '(' ? 1 : text[i] == ')' && depth ? -1 : 0;
-    return i;
 }

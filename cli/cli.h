@@ -43,9 +43,6 @@ int cli_diag_ctx(const qd_ctx *ctx); /* prints the context's error, returns the 
  * statement, constraint or coordinate it is about, with its hint. */
 int cli_diag_model(const qd_ctx *ctx, const char *file, const char *text, const qd_model *m);
 
-/* Lists like --about "q=pi/2, F=f(1, 2)": the end of the item that starts
- * at text[i], the next comma outside brackets or the end of text. */
-size_t cli_item_end(const char *text, size_t i);
 
 /* Is arg an option ("--NAME", "--NAME=V", "-h") where a command also takes
  * expressions?  "-x", "-p_x*2" and "-1" are expressions, not options. */

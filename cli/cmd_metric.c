@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "model_cli.h"
+#include "qdot/state.h"
 #include "qdot/metric.h"
 #include "qdot/read.h"
 
@@ -47,7 +48,7 @@ static const cli_spec spec = {
 static int read_force(qd_ctx *ctx, const char *text, size_t n, const qd_expr **G) {
     size_t k = 0;
     for (size_t a = 0; text[a]; k++) {
-        size_t b = cli_item_end(text, a);
+        size_t b = qd_state_item_end(text, a);
         if (k == n) {
             cli_diag_error("--force: the model has %zu coordinates; more components given", n);
             return QD_EXIT_USAGE;

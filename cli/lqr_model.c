@@ -71,7 +71,7 @@ int cli_point_read(qd_ctx *ctx, const char *text, cli_point *pt) {
     pt->vals = pt->syms + pt->cap;
     int rc = QD_EXIT_OK;
     for (size_t i = 0; rc == QD_EXIT_OK && i < len;) {
-        size_t end = cli_item_end(text, i);
+        size_t end = qd_state_item_end(text, i);
         memcpy(item, text + i, end - i);
         item[end - i] = '\0';
         if (strspn(item, " \t") < strlen(item))

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "qdot/state.h"
 #include "qdot/json.h"
 #include "model_cli.h"
 
@@ -128,7 +129,7 @@ int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about) {
     for (size_t j = 0; j < n; j++)
         about[j] = qd_int(r->ctx, 0);
     for (size_t i = 0; rc == QD_EXIT_OK && text[i];) {
-        size_t end = cli_item_end(text, i);
+        size_t end = qd_state_item_end(text, i);
         memcpy(item, text + i, end - i);
         item[end - i] = '\0';
         if (strspn(item, " \t") < strlen(item))

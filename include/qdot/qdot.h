@@ -39,6 +39,13 @@
 #include "relativity.h" /* issue 35: Lorentz kinematics, collisions */
 #include "form.h"       /* issue 35: quadratic forms */
 #include "field.h"      /* issue 35: continuous systems */
+#include "action.h"
+#include "orbit.h"
+#include "statespace.h"
+#include "constrained.h"
+#include "json.h"
+#include "simsetup.h"
+#include "render.h"     /* issue 31: printers of whole results */
 
 #include "version.h"    /* QDOT_VERSION, qd_version() */
 

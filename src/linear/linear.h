@@ -58,8 +58,6 @@ void qd__lin_linear_chop(qd_linear *l);
  * false when LAPACK fails. */
 bool qd__lin_sym_eig(qd_ctx *ctx, size_t n, const double *A, double *w, double *vecs);
 
-#endif
-
 /* ---- models in generalized speeds (speeds_lin.c) ----------------------- */
 
 struct qd_speeds_eom;
@@ -117,3 +115,5 @@ void qd__lin_eq_classify(size_t n, const double *ev, struct qd_equilibrium *p);
 struct qd_equilibria_opts;
 qd_status qd__lin_eq_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                      const struct qd_equilibria_opts *o, bool *angle, double *lo, double *hi);
+
+#endif
