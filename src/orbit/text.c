@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "qdot/read.h"
+#include "qdot/state.h"
 
 typedef struct ost {
     size_t n, cap, nq;
@@ -120,12 +121,6 @@ static void trim(const char *text, size_t *a, size_t *b) {
         (*b)--;
 }
 
-static size_t item_end(const char *text, size_t i) {
-    for (int depth = 0; text[i] && (text[i] != ',' || depth); i++)
-        depth += text[i] == '(' ? 1 : text[i] == ')' && depth ? -1 : 0;
-    return i;
-}
-
 /* One NAME=VALUE of text[a, b): *na, *nb the name, *va, *vb the value. */
 static qd_status split(qd_ctx *ctx, const char *field, const char *text, size_t a, size_t b,
                        size_t *na, size_t *nb, size_t *va, size_t *vb) {
@@ -148,7 +143,7 @@ static qd_status read_at(qd_ctx *ctx, const qd_model *m, const char *text, ost *
         return nomem(ctx);
     qd_status st = QD_OK;
     for (size_t i = 0; st == QD_OK && text[i];) {
-        size_t end = item_end(text, i), a = i, b = end, na, nb, va, vb;
+        size_t end = qd_state_item_end(text, i), a = i, b = end, na, nb, va, vb;
         trim(text, &a, &b);
         if (a < b && (st = split(ctx, "at", text, a, b, &na, &nb, &va, &vb)) == QD_OK) {
             size_t k = slot_of(s, text, na, nb);
@@ -177,7 +172,7 @@ static qd_status read_momenta(qd_ctx *ctx, const qd_orbit *o, const qd_model *m,
     const qd_routh *h = o->routh;
     qd_status st = QD_OK;
     for (size_t i = 0; st == QD_OK && text[i];) {
-        size_t end = item_end(text, i), a = i, b = end, na, nb, va, vb;
+        size_t end = qd_state_item_end(text, i), a = i, b = end, na, nb, va, vb;
         trim(text, &a, &b);
         if (a < b && (st = split(ctx, "momentum", text, a, b, &na, &nb, &va, &vb)) == QD_OK) {
             size_t k = 0;
