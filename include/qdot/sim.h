@@ -242,6 +242,43 @@ typedef struct qd_sim_opts {
     double every;
 } qd_sim_opts;
 
+/* Why a run stopped, as data (issue 31): the code, the time and the
+ * quantity that decided it; qd_stop_str renders the code in English, and
+ * the context's message says the rest (the cause, what to change).
+ * value: the step h for QD_STOP_STEP_UNDERFLOW and QD_STOP_NO_CONVERGENCE,
+ * the residual for QD_STOP_PROJECTION, the offending number (inf, NaN or the
+ * energy) for QD_STOP_NONFINITE, the step limit for QD_STOP_STEP_LIMIT, the
+ * event's index (in the order added) for QD_STOP_EVENT, the impact's for
+ * QD_STOP_CONTACT; NaN where none. */
+typedef enum qd_stop_code {
+    QD_STOP_NONE = 0,        /* not run */
+    QD_STOP_END,             /* reached t_end */
+    QD_STOP_EVENT,           /* a terminal event (qd_sim_add_event stop) */
+    QD_STOP_CONTACT,         /* ended in contact (qd_sim_stats in_contact) */
+    QD_STOP_CALLBACK,        /* the row callback returned nonzero */
+    QD_STOP_REFUSED,         /* refused before the first step (options, initial state) */
+    QD_STOP_STEP_UNDERFLOW,  /* the adaptive step fell below round-off */
+    QD_STOP_NO_CONVERGENCE,  /* an implicit stage's Newton iteration, or the initial momenta */
+    QD_STOP_SOLVER_FAILURE,  /* CVODE failed otherwise */
+    QD_STOP_STEP_LIMIT,      /* more steps than opts.max_steps */
+    QD_STOP_SINGULAR,        /* a singular mass matrix or constrained/impact system */
+    QD_STOP_PROJECTION,      /* the projection onto the constraints failed */
+    QD_STOP_NONFINITE,       /* a state, energy, input or output not finite */
+    QD_STOP_PAINLEVE,        /* friction: no or several consistent stick/slip modes */
+    QD_STOP_FAILURE          /* another failure: the status and message say which */
+} qd_stop_code;
+
+typedef struct qd_sim_stop {
+    qd_stop_code code;
+    double t;     /* when (NaN for QD_STOP_NONE and QD_STOP_REFUSED) */
+    double value; /* the quantity above, or NaN */
+} qd_sim_stop;
+
+/* "reached the end time", "step size underflow", ...; "unknown" outside the enum. */
+QD_API const char *qd_stop_str(qd_stop_code code);
+/* A run that stopped for code ended as asked (END, EVENT, CONTACT), not by failing. */
+QD_API bool qd_stop_ok(qd_stop_code code);
+
 typedef struct qd_sim_stats {
     size_t steps, evals, rejected;
     /* max |E(t) - E(0)| / max(|E(0)|, max T) over the rows the run made
@@ -307,6 +344,7 @@ typedef struct qd_sim_stats {
     double events_unresolved_t, events_unresolved_spacing;
     size_t events_unresolved_event;
     double energy_error_steps;   /* energy_error_max at the accepted steps */
+    qd_sim_stop stop;            /* why the run ended: filled by every run, failed or not */
 } qd_sim_stats;
 
 /* The worst residual of constraint c (in the model's order of the

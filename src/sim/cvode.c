@@ -117,6 +117,8 @@ static qd_status bdf_step(qd__integ *it) {
                                    flag == CV_CONV_FAILURE
                                ? "step size underflow"
                                : "BDF failure";
+        qd__sim_stop(it->s, what[0] == 's' ? QD_STOP_STEP_UNDERFLOW : QD_STOP_SOLVER_FAILURE,
+                     it->t, NAN);
         qd_ctx_error(it->s->ctx, QD_ERR_NUMERIC, "%s at t = %.17g (CVODE %s)", what, it->t,
                      b->message);
         return QD_ERR_NUMERIC;

@@ -38,6 +38,7 @@ double qd__err_rms(const qd__integ *it, const double *err, const double *ynew) {
 }
 
 qd_status qd__underflow(qd__integ *it, double h) {
+    qd__sim_stop(it->s, QD_STOP_STEP_UNDERFLOW, it->t, h);
     qd_ctx_error(it->s->ctx, QD_ERR_NUMERIC,
                  "step size underflow at t = %.17g (h = %.3g): the solution is not smooth "
                  "there or the tolerance is below round-off", it->t, h);

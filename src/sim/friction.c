@@ -307,6 +307,7 @@ qd_status qd__fric_event(qd__run *r, size_t k, double t, const double *y, double
         return QD_OK;
     }
     if (!qd__sim_saddle(s, t, y)) {
+        qd__sim_stop(s, QD_STOP_SINGULAR, t, NAN);
         qd_ctx_error(s->ctx, QD_ERR_SINGULAR, "singular constrained equations at t = %.17g "
                      "(friction contact '%s')", t, fc->name);
         return QD_ERR_SINGULAR;

@@ -189,6 +189,7 @@ static void describe(const qd_sim *s, const qd__fmode *md, char *buf, size_t cap
 
 static qd_status paradox(qd_sim *s, double t, size_t found, const qd__fmode *a,
                          const qd__fmode *b) {
+    qd__sim_stop(s, QD_STOP_PAINLEVE, t, (double)found);
     if (!found) {
         qd_ctx_error(s->ctx, QD_ERR_NUMERIC, "Painleve paradox at t = %.17g: no consistent "
                      "stick/slip mode", t);

@@ -135,6 +135,7 @@ static qd_status solve_stages(qd__integ *it, gl *g, double t0, const double *y0,
             return QD_OK;
         prev = delta;
     }
+    qd__sim_stop(it->s, QD_STOP_NO_CONVERGENCE, t0, h);
     qd_ctx_error(it->s->ctx, QD_ERR_NUMERIC,
                  "no convergence of the Gauss-Legendre iteration (Newton non-convergence) at "
                  "t = %.17g with h = %.3g: take a smaller --dt", t0, h);

@@ -190,6 +190,7 @@ qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const doubl
             return QD_OK;
         memcpy(K, s->acc_out + n, n * n * sizeof *K);
         if (!qd__num_solve(n, K, r, 1e-13 * (double)n)) {
+            qd__sim_stop(s, QD_STOP_SINGULAR, NAN, NAN);
             qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
                          "d^2H/dp^2 is singular: the initial velocities do not determine the "
                          "momenta; give the momenta instead (p = ...)");
@@ -198,6 +199,7 @@ qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const doubl
         for (size_t j = 0; j < n; j++)
             p[j] += r[j];
     }
+    qd__sim_stop(s, QD_STOP_NO_CONVERGENCE, NAN, NAN);
     qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                  "no momenta give the initial velocities (dH/dp = q' has no solution near 0)");
     return QD_ERR_NUMERIC;

@@ -275,6 +275,7 @@ static qd_status law(qd__run *r, size_t i, double t, double *y, bool plastic, do
     qd__prog_at(s, s->acc, s->acc_w, t, y, r->qd, s->acc_out);
     qd__num_saddle(n, rows, s->acc_out, im->zero, im->A, im->b, im->K, im->rhs);
     if (!qd__num_solve(N, im->K, im->rhs, 1e-13 * (double)N)) {
+        qd__sim_stop(s, QD_STOP_SINGULAR, t, NAN);
         qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
                      "impact '%s' at t = %.17g: the impact equations are singular (the gap's "
                      "gradient is a combination of the constraints' rows, or M is singular)",

@@ -225,6 +225,7 @@ void qd__sim_uin_eval(qd_sim *s, double t) {
 
 qd_status qd__sim_uin_failed(qd_sim *s) {
     size_t k = s->uin_bad - 1;
+    qd__sim_stop(s, QD_STOP_NONFINITE, s->uin_bad_t, s->uin_bad_v);
     qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                  "input %s is not finite at t = %.17g (its callback returned %g): the "
                  "callback failed there, or its signal is not defined there",

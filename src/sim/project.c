@@ -45,6 +45,7 @@ static qd_status fail(qd_sim *s, double t, const char *what, double res) {
             top = fabs(g[k]);
             worst = k;
         }
+    qd__sim_stop(s, QD_STOP_PROJECTION, t, res);
     qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                  "constraint %s cannot be satisfied at t = %.17g: the projection onto the "
                  "constraints %s (residual %.3g)", s->cons[worst].name, t, what, res);

@@ -127,6 +127,7 @@ static qd_status check_state(qd__run *r, double t, const double *y) {
               "fast-growing solution; 0/0; or a state outside the domain of the model's "
               "expressions: a square root or logarithm of a negative number, a speed above c "
               "in sqrt(1 - v^2/c^2))";
+    qd__sim_stop(s, QD_STOP_NONFINITE, t, j < d ? y[j] : t);
     qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                  "non-finite state at t = %.17g (%s = %g; the last finite state was at t = "
                  "%.17g): %s", t, j < d ? state_name(r, j) : "t", j < d ? y[j] : t,
@@ -137,6 +138,7 @@ static qd_status check_state(qd__run *r, double t, const double *y) {
 /* A finite state whose energy is not: an overflow (x'^2 past 1e308) or a
  * state outside the model's domain; its row would print inf or NaN. */
 static qd_status energy_not_finite(qd__run *r, double t, double h) {
+    qd__sim_stop(r->s, QD_STOP_NONFINITE, t, h);
     qd_ctx_error(r->s->ctx, QD_ERR_NUMERIC, "non-finite state at t = %.17g (energy = %g; the "
                  "last finite state was at t = %.17g): %s", t, h, r->it->told,
                  qd__sim_nonfinite_cause(r->s, &h, 1));
@@ -570,6 +572,7 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
     }
     if (first < s->nev) {
         *stop = true;
+        qd__sim_stop(s, QD_STOP_EVENT, r->ev_t[first], (double)first);
         it->t = r->ev_t[first];
         memcpy(it->y, r->ev_y + first * it->dim, it->dim * sizeof *it->y);
     }
@@ -624,6 +627,7 @@ static qd_status after_impact(qd__run *r, loop *L, size_t i, const qd__impact_re
     L->stats->impact_energy_lost += res->lost;
     if (res->contact) {
         L->stop = true;
+        qd__sim_stop(s, QD_STOP_CONTACT, res->t_rest, (double)i);
         it->t = res->t_rest;
         L->stats->in_contact = true;
         L->stats->at_rest = res->at_rest;
@@ -796,6 +800,7 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
         return st;
     while (!L.stop && !em->stopped && it->t < o->t_end) {
         if (it->steps >= max_steps(o)) {
+            qd__sim_stop(s, QD_STOP_STEP_LIMIT, it->t, (double)max_steps(o));
             qd_ctx_error(s->ctx, QD_ERR_NUMERIC,
                          "more than %zu steps before t = %.17g (at t = %.17g; raise the "
                          "maximum)", max_steps(o), o->t_end, it->t);
@@ -852,13 +857,32 @@ static void initial_moved(size_t n, const qd_sim_opts *o, const double *q, const
 }
 
 /* The run on s, a copy of the compiled system with its own workspace. */
+/* Why the run ended: what a site recorded (a failure, a terminal event,
+ * contact), else the row callback's stop, an unrecorded failure (before the
+ * first step: refused) or the end time. */
+static qd_sim_stop ended(const qd_sim *s, const emitter *em, qd_status st, bool started,
+                         double t) {
+    if (s->stop.code != QD_STOP_NONE)
+        return s->stop;
+    if (st != QD_OK && !started)
+        return (qd_sim_stop){QD_STOP_REFUSED, NAN, NAN};
+    if (em->stopped)
+        return (qd_sim_stop){QD_STOP_CALLBACK, em->last_t, NAN};
+    if (st != QD_OK)
+        return (qd_sim_stop){QD_STOP_FAILURE, t, NAN};
+    return (qd_sim_stop){QD_STOP_END, t, NAN};
+}
+
 static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *data,
                      qd_sim_stats *stats, double *final) {
+    s->stop = (qd_sim_stop){QD_STOP_NONE, NAN, NAN};
     qd_status st = qd_sim_check_opts(s->ctx, o);
     if (st == QD_OK)
         st = check_system(s, o);
-    if (st != QD_OK)
+    if (st != QD_OK) {
+        stats->stop = (qd_sim_stop){QD_STOP_REFUSED, NAN, NAN};
         return st;
+    }
     qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
                     .dim = s->se ? s->n + s->nu : 2 * s->n + qd__fric_nextra(s),
                     .t = o->t0, .tend = o->t_end,
@@ -899,6 +923,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     }
     emitter em = {.sink = sink, .data = data};
     r.meas = &ms;
+    bool started = st == QD_OK;
     if (st == QD_OK)
         st = integrate(&r, o, &em, &ms, stats);
     if (st == QD_OK && em.failed) {
@@ -925,6 +950,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         stats->energy_balance_error = stats->energy_error_max;
         stats->surface_work = it.y && s->rheo ? it.y[2 * s->n + 1] : 0;
     }
+    stats->stop = ended(s, &em, st, started, it.t);
     if (st == QD_OK && final)
         memcpy(final, r.row, ncols * sizeof *final);
     if (st != QD_OK && qd_ctx_status(s->ctx) == QD_OK)

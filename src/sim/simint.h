@@ -102,6 +102,7 @@ struct qd_sim {
                        so the surfaces' work is one more state, y[2n + 1] */
     /* ---- a run's own ---- */
     qd_ctx *ctx;
+    qd_sim_stop stop; /* the first failure's code, time and quantity (qd__sim_stop) */
     double *in;
     double *acc_out, *con_out, *mom_out, *force_out, *aux_out, *en_out;
     double *acc_w, *con_w, *mom_w, *force_w, *aux_w, *en_w;
@@ -131,6 +132,10 @@ static inline const double *qd__second(const qd_sim *s, const double *y, const d
 
 /* The speeds' block of the inputs (a system in speeds). */
 static inline double *qd__in_speeds(qd_sim *s) { return s->in + 2 * s->n + 1 + s->np; }
+
+/* Record why the run stops (the first record wins, as the context's first
+ * error does); called next to the qd_ctx_error that words it. */
+void qd__sim_stop(qd_sim *s, qd_stop_code code, double t, double value);
 
 /* ---- the model's inputs (input.c) ---------------------------------------- */
 

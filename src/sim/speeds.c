@@ -160,6 +160,7 @@ qd_status qd__speeds_rhs(qd_sim *s, double t, const double *y, double *dy) {
         dy[n + r] = f[r];
     if (qd__num_solve(nu, s->K, dy + n, 1e-13 * (double)nu))
         return QD_OK;
+    qd__sim_stop(s, QD_STOP_SINGULAR, t, NAN);
     qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
                  "singular mass matrix M_u at t = %.17g: the speeds' rates are not "
                  "determined there", t);

@@ -591,6 +591,7 @@ void qd__con_eval(qd_sim *s, double t, const double *q, const double *qd) {
 }
 
 static qd_status singular(qd_sim *s, double t) {
+    qd__sim_stop(s, QD_STOP_SINGULAR, t, NAN);
     if (s->m)
         qd_ctx_error(s->ctx, QD_ERR_SINGULAR,
                      "singular mass matrix at t = %.17g: the constrained equations "
@@ -637,6 +638,7 @@ const char *qd__sim_nonfinite_cause(const qd_sim *s, const double *x, size_t nx)
 
 qd_status qd__sim_not_finite_at(qd_sim *s, double t, const char *what, const double *x,
                                 size_t nx) {
+    qd__sim_stop(s, QD_STOP_NONFINITE, t, nx ? x[0] : NAN);
     qd_ctx_error(s->ctx, QD_ERR_NUMERIC, "%s not finite at t = %.17g: %s", what, t,
                  qd__sim_nonfinite_cause(s, x, nx));
     return QD_ERR_NUMERIC;

@@ -18,15 +18,21 @@
 #include "sim_fixture.h"
 
 static void expect(const char *text, qd_sim_method m, double t_end, double dt, double rtol,
-                   qd_status want, const char *words) {
+                   qd_status want, const char *words, qd_stop_code code) {
     sim_fix *f = sf_load(text);
     assert_non_null(f);
     qd_sim_opts o = {.method = m, .t_end = t_end, .dt = dt, .rtol = rtol, .q0 = f->q0,
                      .qd0 = f->qd0};
-    qd_status st = qd_sim_run(f->s, &o, NULL, NULL, NULL, NULL);
+    qd_sim_stats stats;
+    qd_status st = qd_sim_run(f->s, &o, NULL, NULL, &stats, NULL);
     if (st != want || !strstr(qd_ctx_message(f->ctx), words))
         fail_msg("%s: status %d, message '%s'", qd_sim_method_name(m), (int)st,
                  qd_ctx_message(f->ctx));
+    /* the reason as data agrees with the sentence (issue 31) */
+    if (stats.stop.code != code)
+        fail_msg("%s: stop code %s, want %s ('%s')", qd_sim_method_name(m),
+                 qd_stop_str(stats.stop.code), qd_stop_str(code), qd_ctx_message(f->ctx));
+    assert_false(qd_stop_ok(code));
     sf_free(f);
 }
 
@@ -37,28 +43,42 @@ static const char dp[] =
 
 static void test_not_separable(void **state) {
     (void)state;
-    expect(dp, QD_SIM_VERLET, 1, 0.01, 0, QD_ERR_ARG, "not separable");
-    expect(dp, QD_SIM_YOSHIDA8, 1, 0.01, 0, QD_ERR_ARG, "not separable");
+    expect(dp, QD_SIM_VERLET, 1, 0.01, 0, QD_ERR_ARG, "not separable", QD_STOP_REFUSED);
+    expect(dp, QD_SIM_YOSHIDA8, 1, 0.01, 0, QD_ERR_ARG, "not separable", QD_STOP_REFUSED);
 }
 
 static void test_gauss_divergence(void **state) {
     (void)state;
     static const char stiff[] = "coordinates x\nparameters k = 1e6\nT = x'^2/2\n"
                                 "V = k/2*x^2\ninitial x = 1\n";
-    expect(stiff, QD_SIM_GL4, 1, 0.1, 0, QD_ERR_NUMERIC, "Gauss-Legendre");
+    expect(stiff, QD_SIM_GL4, 1, 0.1, 0, QD_ERR_NUMERIC, "Gauss-Legendre",
+           QD_STOP_NO_CONVERGENCE);
 }
 
 static void test_singular(void **state) {
     (void)state;
     /* M = x^2 vanishes at x = 0 */
     static const char sing[] = "coordinates x\nT = x^2*x'^2/2\nV = x\ninitial x = 0\n";
-    expect(sing, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_SINGULAR, "singular mass matrix");
+    expect(sing, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_SINGULAR, "singular mass matrix",
+           QD_STOP_SINGULAR);
 }
 
 static void test_underflow(void **state) {
     (void)state;
     static const char blow[] = "coordinates x\nT = x'^2/2\nV = -x^4\ninitial x = 1\n";
-    expect(blow, QD_SIM_DOP853, 5, 0, 1e-10, QD_ERR_NUMERIC, "step size underflow");
+    expect(blow, QD_SIM_DOP853, 5, 0, 1e-10, QD_ERR_NUMERIC, "step size underflow",
+           QD_STOP_STEP_UNDERFLOW);
+    /* and where: the blow-up time integral_1^inf dx / sqrt(2 (x^4 - 1)) =
+     * K(1/sqrt 2) / 2 = 0.92704 (K the complete elliptic integral) */
+    sim_fix *f = sf_load(blow);
+    assert_non_null(f);
+    qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = 5, .rtol = 1e-10, .q0 = f->q0,
+                     .qd0 = f->qd0};
+    qd_sim_stats st;
+    assert_int_equal(qd_sim_run(f->s, &o, NULL, NULL, &st, NULL), QD_ERR_NUMERIC);
+    assert_true(fabs(st.stop.t - 0.92704) < 1e-3);
+    assert_true(st.stop.value > 0 && st.stop.value < 1e-6); /* the step h that underflowed */
+    sf_free(f);
 }
 
 static void test_projection(void **state) {
@@ -67,7 +87,8 @@ static void test_projection(void **state) {
     static const char rod[] = "coordinates x, y\nparameters l = 1.4\nparticle 1 at (x, y)\n"
                               "V = 9.81*y\nconstraint rod: x^2 + y^2 = l^2\n"
                               "initial x = 0, y = 0\n";
-    expect(rod, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "cannot be satisfied");
+    expect(rod, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "cannot be satisfied",
+           QD_STOP_PROJECTION);
 }
 
 /* Two parallel wires with currents the opposite way (Byerly ch. V Art. 53):
@@ -109,17 +130,22 @@ static void test_beyond_c(void **state) {
     (void)state;
     static const char fast[] = "coordinates x\nL = -sqrt(1 - x'^2) + x\ninitial x' = 3/2\n";
     static const char light[] = "coordinates x\nL = -sqrt(1 - x'^2) + x\ninitial x' = 1\n";
-    expect(fast, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0");
-    expect(fast, QD_SIM_DOPRI5, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0");
-    expect(fast, QD_SIM_GL4, 1, 0.1, 0, QD_ERR_NUMERIC, "not finite at t = 0");
-    expect(light, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0");
-    expect(light, QD_SIM_GL6, 1, 0.1, 0, QD_ERR_NUMERIC, "not finite at t = 0");
+    expect(fast, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0",
+           QD_STOP_NONFINITE);
+    expect(fast, QD_SIM_DOPRI5, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0",
+           QD_STOP_NONFINITE);
+    expect(fast, QD_SIM_GL4, 1, 0.1, 0, QD_ERR_NUMERIC, "not finite at t = 0",
+           QD_STOP_NONFINITE);
+    expect(light, QD_SIM_DOP853, 1, 0, 1e-8, QD_ERR_NUMERIC, "not finite at t = 0",
+           QD_STOP_NONFINITE);
+    expect(light, QD_SIM_GL6, 1, 0.1, 0, QD_ERR_NUMERIC, "not finite at t = 0",
+           QD_STOP_NONFINITE);
 }
 
 static void test_missing_step(void **state) {
     (void)state;
     /* the message names no option; the record names the field (sim.h) */
-    expect(dp, QD_SIM_GL4, 1, 0, 0, QD_ERR_ARG, "give the step");
+    expect(dp, QD_SIM_GL4, 1, 0, 0, QD_ERR_ARG, "give the step", QD_STOP_REFUSED);
     sim_fix *f = sf_load(dp);
     qd_sim_opts o = {.method = QD_SIM_GL4, .t_end = 1, .q0 = f->q0, .qd0 = f->qd0};
     assert_int_equal(qd_sim_run(f->s, &o, NULL, NULL, NULL, NULL), QD_ERR_ARG);
@@ -128,10 +154,42 @@ static void test_missing_step(void **state) {
     sf_free(f);
 }
 
+/* A run that ends as asked says so too: a body dropped from y = h = 5 reaches
+ * y = 0 at t = sqrt(2 h / g) (Galileo; Desloge ch. 1), a terminal event
+ * there, code QD_STOP_EVENT with that time and the event's index; without
+ * the event it reaches t_end. */
+static void test_stop_as_asked(void **state) {
+    (void)state;
+    static const char fall[] = "coordinates y\nparameters g = 9.81\nT = y'^2/2\nV = g*y\n"
+                               "initial y = 5\n";
+    for (int with_event = 0; with_event < 2; with_event++) {
+        sim_fix *f = sf_load(fall);
+        assert_non_null(f);
+        if (with_event) {
+            const qd_expr *g = qd_read(f->ctx, "y", NULL, NULL);
+            assert_int_equal(qd_sim_add_event(f->s, g, 0, NULL, true), QD_OK);
+        }
+        qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = 2, .rtol = 1e-12, .q0 = f->q0,
+                         .qd0 = f->qd0};
+        qd_sim_stats st;
+        assert_int_equal(qd_sim_run(f->s, &o, NULL, NULL, &st, NULL), QD_OK);
+        assert_true(qd_stop_ok(st.stop.code));
+        if (with_event) {
+            assert_int_equal(st.stop.code, QD_STOP_EVENT);
+            assert_true(fabs(st.stop.t - sqrt(2 * 5 / 9.81)) < 1e-9);
+            assert_true(st.stop.value == 0);
+        } else {
+            assert_int_equal(st.stop.code, QD_STOP_END);
+            assert_true(st.stop.t == 2);
+        }
+        sf_free(f);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_not_separable), cmocka_unit_test(test_gauss_divergence),
-        cmocka_unit_test(test_singular),      cmocka_unit_test(test_underflow),
+        cmocka_unit_test(test_stop_as_asked), cmocka_unit_test(test_singular),      cmocka_unit_test(test_underflow),
         cmocka_unit_test(test_projection),    cmocka_unit_test(test_missing_step),
         cmocka_unit_test(test_stage_out_of_domain),
         cmocka_unit_test(test_beyond_c),
