@@ -219,6 +219,11 @@ class SimSetupOpts(Structure):
                 ("precision", c_int), ("no_project", c_bool), ("fixed", c_bool)] + _TAIL
 
 
+class SimStop(Structure):
+    """qd_sim_stop (qdot/sim.h): why a run stopped, as data."""
+    _fields_ = [("code", c_int), ("t", c_double), ("value", c_double)]
+
+
 class SimStats(Structure):
     """qd_sim_stats (qdot/sim.h)."""
     _fields_ = [("steps", c_size_t), ("evals", c_size_t), ("rejected", c_size_t),
@@ -233,7 +238,7 @@ class SimStats(Structure):
                 ("events_unresolved", c_size_t), ("events_unresolved_t", c_double),
                 ("events_unresolved_spacing", c_double),
                 ("events_unresolved_event", c_size_t),
-                ("energy_error_steps", c_double)] + _TAIL
+                ("energy_error_steps", c_double), ("stop", SimStop)] + _TAIL
 
 
 class ScenePoint(Structure):
@@ -380,6 +385,7 @@ _PROTOS = {
     "qd_sim_add_event": (c_int, [c_void_p, Expr, c_size_t, ExprArray, c_bool]),
     "qd_sim_method_from_name": (c_bool, [c_char_p, POINTER(c_int)]),
     "qd_sim_method_name": (c_char_p, [c_int]),
+    "qd_stop_str": (c_char_p, [c_int]),
     "qd_sim_method_adaptive": (c_bool, [c_int]),
     "qd_sim_default_method": (c_int, [c_void_p, c_bool]),
     "qd_sim_columns": (c_size_t, [c_void_p, c_int, POINTER(c_char_p), c_size_t]),

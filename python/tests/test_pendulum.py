@@ -82,7 +82,8 @@ def test_stats_are_the_runs_counts():
                             "energy_balance_error", "surface_work", "initial_moved_q",
                             "initial_moved_qd", "events_unresolved", "events_unresolved_t",
                             "events_unresolved_spacing", "events_unresolved_event",
-                            "energy_error_steps"}
+                            "energy_error_steps", "stop"}
+    assert r.stop["reason"] == "reached the end time" and r.stop["t"] == 1.0
     # a fixed step: t_end/dt steps, none rejected, E0 = -m g l cos(theta0)
     assert (r.stats["steps"], r.stats["rejected"], r.stats["t"]) == (8, 0, 1.0)
     assert r.stats["E0"] == pytest.approx(-1 * 9.81 * 2 * math.cos(0.3), rel=1e-14)
