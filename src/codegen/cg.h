@@ -62,7 +62,7 @@ qd_status qd__cg_prefix(qd_ctx *ctx, const char *prefix);
  * kind and version (part of the hash).  path: the object's name; cached:
  * it was there.  QD_ERR_UNSUPPORTED when no compiler runs or it fails, or
  * the cache is not the user's alone (see native.c). */
-qd_status qd__native_object(qd_ctx *ctx, const char *text, const char *generator,
+qd_status qd__cg_native_object(qd_ctx *ctx, const char *text, const char *generator,
                             const char *cache, char path[4096], bool *cached, void **handle);
 
 #endif

@@ -368,7 +368,7 @@ static int open_object(int dfd, const char *name, const char **why) {
 
 /* The shared object of text in the cache (compiled unless there), dlopened.
  * generator: part of the hash, the kind and version of the text. */
-qd_status qd__native_object(qd_ctx *ctx, const char *text, const char *generator,
+qd_status qd__cg_native_object(qd_ctx *ctx, const char *text, const char *generator,
                             const char *cache, char path[4096], bool *cached, void **handle) {
     char dir[4000], name[48], key[32];
     int dfd;
@@ -434,7 +434,7 @@ qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const 
     qd_buf text = QD_BUF_WITH(qd__ctx_allocator(ctx));
     qd_status st = qd__cg_emit(ctx, m, e, PREFIX, true, &text, NULL);
     if (st == QD_OK)
-        st = qd__native_object(ctx, qd_buf_str(&text), GENERATOR, cache, out->path,
+        st = qd__cg_native_object(ctx, qd_buf_str(&text), GENERATOR, cache, out->path,
                                &out->cached, &out->handle);
     qd_buf_free(&text);
     if (st == QD_OK)

@@ -55,7 +55,7 @@ qd_status qd__lyap_jacobian(qd_ctx *ctx, const qd_lyap *l, const double *par, do
  * after y and yold that the caller keeps for itself. */
 typedef struct qd__lyap_tangent {
     qd__lyap_ws ws;
-    qd__integ it;
+    qd__sim_integ it;
     const qd_sim_opts *o;
     size_t d, k;           /* d = 2n */
     double *extra;

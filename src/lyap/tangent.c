@@ -33,8 +33,8 @@ qd_status qd__lyap_tangent_start(qd__lyap_tangent *r, qd_ctx *ctx, const qd_lyap
                                  const char *what) {
     size_t d = 2 * l->n, dim = d + d * k + 1;
     *r = (qd__lyap_tangent){.o = o, .d = d, .k = k};
-    r->it = (qd__integ){.method = o->method,
-                        .ops = o->method == QD_SIM_DOPRI5 ? &qd__dopri5 : &qd__dop853,
+    r->it = (qd__sim_integ){.method = o->method,
+                        .ops = o->method == QD_SIM_DOPRI5 ? &qd__sim_dopri5 : &qd__sim_dop853,
                         .form = QD__LAG, .t = o->t0, .tend = o->t_end,
                         .rtol = o->rtol > 0 ? o->rtol : 1e-10,
                         .atol = o->atol > 0 ? o->atol : 1e-12, .fixed = o->fixed,
@@ -62,7 +62,7 @@ qd_status qd__lyap_tangent_start(qd__lyap_tangent *r, qd_ctx *ctx, const qd_lyap
 }
 
 qd_status qd__lyap_tangent_advance(qd__lyap_tangent *r, double tb) {
-    qd__integ *it = &r->it;
+    qd__sim_integ *it = &r->it;
     size_t max = r->o->max_steps ? r->o->max_steps : QD_SIM_MAX_STEPS;
     while (it->t < tb) {
         if (it->steps >= max) {

@@ -24,7 +24,7 @@ typedef struct bdf {
     N_Vector y, tmp;
     SUNMatrix A;
     SUNLinearSolver LS;
-    qd__integ *it;
+    qd__sim_integ *it;
     qd_status rhs_status;
     char message[256];
 } bdf;
@@ -32,7 +32,7 @@ typedef struct bdf {
 static int rhs(realtype t, N_Vector y, N_Vector ydot, void *data) {
     bdf *b = data;
     qd_status st =
-        qd__rhs(b->it->s, b->it->form, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+        qd__sim_rhs(b->it->s, b->it->form, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
     if (st == QD_OK)
         return 0;
     /* a singular state may be an overshooting trial: let CVODE retry smaller */
@@ -47,7 +47,7 @@ static void on_error(int code, const char *module, const char *function, char *m
     snprintf(b->message, sizeof b->message, "%s: %s", function, msg);
 }
 
-static void bdf_free(qd__integ *it) {
+static void bdf_free(qd__sim_integ *it) {
     bdf *b = it->priv;
     if (!b)
         return;
@@ -67,7 +67,7 @@ static void bdf_free(qd__integ *it) {
     it->priv = NULL;
 }
 
-static qd_status bdf_init(qd__integ *it) {
+static qd_status bdf_init(qd__sim_integ *it) {
     bdf *b = qd__calloc(it->s->ctx, 1, sizeof *b);
     if (!b)
         return QD_ERR_NOMEM;
@@ -101,7 +101,7 @@ static qd_status bdf_init(qd__integ *it) {
     return QD_OK;
 }
 
-static qd_status bdf_step(qd__integ *it) {
+static qd_status bdf_step(qd__sim_integ *it) {
     bdf *b = it->priv;
     realtype tret = it->t;
     b->rhs_status = QD_OK;
@@ -130,7 +130,7 @@ static qd_status bdf_step(qd__integ *it) {
     realtype hlast = 0;
     CVodeGetLastStep(b->mem, &hlast);
     if (!(fabs(hlast) > 10 * fabs(nextafter(it->t, INFINITY) - it->t)) || !(tret > it->t))
-        return qd__underflow(it, hlast);
+        return qd__sim_underflow(it, hlast);
     it->told = it->t;
     memcpy(it->yold, it->y, it->dim * sizeof *it->y);
     it->t = tret;
@@ -138,7 +138,7 @@ static qd_status bdf_step(qd__integ *it) {
     return QD_OK;
 }
 
-static void bdf_dense(qd__integ *it, double t, double *y) {
+static void bdf_dense(qd__sim_integ *it, double t, double *y) {
     bdf *b = it->priv;
     if (CVodeGetDky(b->mem, t, 0, b->tmp) == CV_SUCCESS)
         memcpy(y, N_VGetArrayPointer(b->tmp), it->dim * sizeof *y);
@@ -146,4 +146,4 @@ static void bdf_dense(qd__integ *it, double t, double *y) {
         memcpy(y, it->y, it->dim * sizeof *y);
 }
 
-const qd__method qd__bdf = {bdf_init, bdf_step, bdf_dense, NULL, bdf_free};
+const qd__sim_method qd__sim_bdf = {bdf_init, bdf_step, bdf_dense, NULL, bdf_free};

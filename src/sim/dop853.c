@@ -111,7 +111,7 @@ static const double D[4][16] = {
 
 /* The error of the fifth-order formula, scaled by the third-order one so
  * that it stays a valid estimate at large steps (Hairer's err, err2). */
-static double err(const qd__integ *it, const double *const *K, double h, const double *ynew) {
+static double err(const qd__sim_integ *it, const double *const *K, double h, const double *ynew) {
     double e5 = 0, e3 = 0;
     for (size_t i = 0; i < it->dim; i++) {
         double a5 = 0, a3 = 0;
@@ -132,7 +132,7 @@ static double err(const qd__integ *it, const double *const *K, double h, const d
 }
 
 /* coef: 7 rows of dim, F0..F6 of Hairer's contd8 */
-static qd_status dense_prep(qd__integ *it, double **K, double *coef) {
+static qd_status dense_prep(qd__sim_integ *it, double **K, double *coef) {
     size_t d = it->dim;
     double h = it->t - it->told, *ytmp = coef + 7 * d;
     for (int k = 0; k < 3; k++) {
@@ -142,7 +142,7 @@ static qd_status dense_prep(qd__integ *it, double **K, double *coef) {
                 acc += AX[k][j] * K[j][i];
             ytmp[i] = it->yold[i] + h * acc;
         }
-        qd_status st = qd__rhs(it->s, it->form, it->told + C[13 + k] * h, ytmp, K[13 + k]);
+        qd_status st = qd__sim_rhs(it->s, it->form, it->told + C[13 + k] * h, ytmp, K[13 + k]);
         if (st != QD_OK)
             return st;
     }
@@ -161,7 +161,7 @@ static qd_status dense_prep(qd__integ *it, double **K, double *coef) {
     return QD_OK;
 }
 
-static void dense_eval(const qd__integ *it, const double *coef, double x, double *y) {
+static void dense_eval(const qd__sim_integ *it, const double *coef, double x, double *y) {
     size_t d = it->dim;
     for (size_t i = 0; i < d; i++) {
         double acc = 0;
@@ -178,12 +178,12 @@ static void dense_eval(const qd__integ *it, const double *coef, double x, double
  * on the double pendulum at rtol 1e-12 it halves the rejected steps and
  * saves 3% of the evaluations (docs/parts/sim-design.md has the figures). */
 #define BETA 0.04
-static const qd__erk tab = {.s = 12, .order = 7, .nextra = 3, .ndense = 8, .c = C, .a = A,
+static const qd__sim_erk tab = {.s = 12, .order = 7, .nextra = 3, .ndense = 8, .c = C, .a = A,
                             .b = B, .fac1 = 0.333, .fac2 = 6.0, .safe = 0.9, .beta = BETA,
                             .expo = 1.0 / 8 - 0.2 * BETA, .err = err, .dense_prep = dense_prep,
                             .dense_eval = dense_eval};
 
-static qd_status init(qd__integ *it) { return qd__erk_init(it, &tab); }
+static qd_status init(qd__sim_integ *it) { return qd__sim_erk_init(it, &tab); }
 
-const qd__method qd__dop853 = {init, qd__erk_step, qd__erk_dense, qd__erk_redo,
-                               qd__erk_free};
+const qd__sim_method qd__sim_dop853 = {init, qd__sim_erk_step, qd__sim_erk_dense, qd__sim_erk_redo,
+                               qd__sim_erk_free};

@@ -33,7 +33,7 @@ static const double P[7][4] = {
     {0, -282668133.0 / 205662961, 2019193451.0 / 616988883, -1453857185.0 / 822651844},
     {0, 40617522.0 / 29380423, -110615467.0 / 29380423, 69997945.0 / 29380423}};
 
-static double err(const qd__integ *it, const double *const *K, double h, const double *ynew) {
+static double err(const qd__sim_integ *it, const double *const *K, double h, const double *ynew) {
     double sum = 0;
     for (size_t i = 0; i < it->dim; i++) {
         double e = 0;
@@ -46,7 +46,7 @@ static double err(const qd__integ *it, const double *const *K, double h, const d
     return sqrt(sum / (double)it->dim);
 }
 
-static qd_status dense_prep(qd__integ *it, double **K, double *coef) {
+static qd_status dense_prep(qd__sim_integ *it, double **K, double *coef) {
     size_t d = it->dim;
     for (size_t i = 0; i < d; i++)
         for (int k = 0; k < 4; k++) {
@@ -58,7 +58,7 @@ static qd_status dense_prep(qd__integ *it, double **K, double *coef) {
     return QD_OK;
 }
 
-static void dense_eval(const qd__integ *it, const double *coef, double x, double *y) {
+static void dense_eval(const qd__sim_integ *it, const double *coef, double x, double *y) {
     size_t d = it->dim;
     double h = it->t - it->told;
     for (size_t i = 0; i < d; i++) {
@@ -71,12 +71,12 @@ static void dense_eval(const qd__integ *it, const double *coef, double x, double
 
 /* dopri5.f's defaults: fac1 = 0.2, fac2 = 10, safe = 0.9, beta = 0.04,
  * expo = 1/5 - 0.75 beta */
-static const qd__erk tab = {.s = 6, .order = 4, .nextra = 0, .ndense = 4, .c = C, .a = A,
+static const qd__sim_erk tab = {.s = 6, .order = 4, .nextra = 0, .ndense = 4, .c = C, .a = A,
                             .b = B, .fac1 = 0.2, .fac2 = 10.0, .safe = 0.9, .beta = 0.04,
                             .expo = 0.2 - 0.75 * 0.04, .err = err, .dense_prep = dense_prep,
                             .dense_eval = dense_eval};
 
-static qd_status init(qd__integ *it) { return qd__erk_init(it, &tab); }
+static qd_status init(qd__sim_integ *it) { return qd__sim_erk_init(it, &tab); }
 
-const qd__method qd__dopri5 = {init, qd__erk_step, qd__erk_dense, qd__erk_redo,
-                               qd__erk_free};
+const qd__sim_method qd__sim_dopri5 = {init, qd__sim_erk_step, qd__sim_erk_dense, qd__sim_erk_redo,
+                               qd__sim_erk_free};

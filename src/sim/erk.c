@@ -19,7 +19,7 @@
 #define MAX_STAGE_FAILURES 8
 
 typedef struct erk {
-    const qd__erk *tab;
+    const qd__sim_erk *tab;
     double **K, **Kr;     /* stages of the last step; of a redo */
     double *ytmp, *ynew, *coef;
     double *mem;          /* everything above (K rows are swapped) */
@@ -28,7 +28,7 @@ typedef struct erk {
     bool reject;          /* the last attempt was rejected */
 } erk;
 
-double qd__err_rms(const qd__integ *it, const double *err, const double *ynew) {
+double qd__sim_err_rms(const qd__sim_integ *it, const double *err, const double *ynew) {
     double sum = 0;
     for (size_t i = 0; i < it->dim; i++) {
         double sc = it->atol + it->rtol * fmax(fabs(it->y[i]), fabs(ynew[i]));
@@ -37,7 +37,7 @@ double qd__err_rms(const qd__integ *it, const double *err, const double *ynew) {
     return sqrt(sum / (double)it->dim);
 }
 
-qd_status qd__underflow(qd__integ *it, double h) {
+qd_status qd__sim_underflow(qd__sim_integ *it, double h) {
     qd__sim_stop(it->s, QD_STOP_STEP_UNDERFLOW, it->t, h);
     qd_ctx_error(it->s->ctx, QD_ERR_NUMERIC,
                  "step size underflow at t = %.17g (h = %.3g): the solution is not smooth "
@@ -45,7 +45,7 @@ qd_status qd__underflow(qd__integ *it, double h) {
     return QD_ERR_NUMERIC;
 }
 
-static double rms(const qd__integ *it, const double *v) {
+static double rms(const qd__sim_integ *it, const double *v) {
     double sum = 0;
     for (size_t i = 0; i < it->dim; i++) {
         double sc = it->atol + it->rtol * fabs(it->y[i]);
@@ -56,7 +56,7 @@ static double rms(const qd__integ *it, const double *v) {
 
 /* Hairer's starting step: h0 from |y| / |f|, then from an estimate of the
  * second derivative. */
-static qd_status initial_step(qd__integ *it, erk *r) {
+static qd_status initial_step(qd__sim_integ *it, erk *r) {
     size_t d = it->dim;
     double *f0 = r->K[0], *y1 = r->ytmp, *f1 = r->ynew;
     double d0 = rms(it, it->y), d1 = rms(it, f0);
@@ -64,7 +64,7 @@ static qd_status initial_step(qd__integ *it, erk *r) {
     h0 = fmin(h0, fabs(it->tend - it->t));
     for (size_t i = 0; i < d; i++)
         y1[i] = it->y[i] + h0 * f0[i];
-    qd_status st = qd__rhs(it->s, it->form, it->t + h0, y1, f1);
+    qd_status st = qd__sim_rhs(it->s, it->form, it->t + h0, y1, f1);
     if (st != QD_OK && st != QD_ERR_NOMEM && qd__ctx_recover(it->s->ctx)) {
         /* the Euler step left the equations' domain: start with it shorter
          * and let the controller find the rest (failures there are retried) */
@@ -81,7 +81,7 @@ static qd_status initial_step(qd__integ *it, erk *r) {
     return QD_OK;
 }
 
-qd_status qd__erk_init(qd__integ *it, const qd__erk *tab) {
+qd_status qd__sim_erk_init(qd__sim_integ *it, const qd__sim_erk *tab) {
     size_t d = it->dim, rows = (size_t)(tab->s + 1 + tab->nextra);
     erk *r = qd__calloc(it->s->ctx, 1, sizeof *r);
     if (!r)
@@ -102,14 +102,14 @@ qd_status qd__erk_init(qd__integ *it, const qd__erk *tab) {
     r->ytmp = mem + 2 * rows * d;
     r->ynew = r->ytmp + d;
     r->coef = r->ynew + d;
-    qd_status st = qd__rhs(it->s, it->form, it->t, it->y, r->K[0]);
+    qd_status st = qd__sim_rhs(it->s, it->form, it->t, it->y, r->K[0]);
     it->y_changed = false;
     if (st == QD_OK && !it->fixed && !(it->h > 0))
         st = initial_step(it, r);
     return st;
 }
 
-void qd__erk_free(qd__integ *it) {
+void qd__sim_erk_free(qd__sim_integ *it) {
     erk *r = it->priv;
     if (!r)
         return;
@@ -121,7 +121,7 @@ void qd__erk_free(qd__integ *it) {
 
 /* The stages from (t0, y0) with K[0] = f(t0, y0) given; y1 and K[s] =
  * f(t0 + h, y1). */
-static qd_status stages(qd__integ *it, const qd__erk *tab, double t0, const double *y0, double h,
+static qd_status stages(qd__sim_integ *it, const qd__sim_erk *tab, double t0, const double *y0, double h,
                         double **K, double *ytmp, double *y1) {
     size_t d = it->dim;
     int s = tab->s;
@@ -137,7 +137,7 @@ static qd_status stages(qd__integ *it, const qd__erk *tab, double t0, const doub
                     ytmp[i] += a[j] * K[j][i];
         for (size_t i = 0; i < d; i++)
             ytmp[i] = y0[i] + h * ytmp[i];
-        st = qd__rhs(it->s, it->form, t0 + tab->c[k] * h, ytmp, K[k]);
+        st = qd__sim_rhs(it->s, it->form, t0 + tab->c[k] * h, ytmp, K[k]);
     }
     if (st != QD_OK)
         return st;
@@ -149,16 +149,16 @@ static qd_status stages(qd__integ *it, const qd__erk *tab, double t0, const doub
                 y1[i] += tab->b[j] * K[j][i];
     for (size_t i = 0; i < d; i++)
         y1[i] = y0[i] + h * y1[i];
-    return qd__rhs(it->s, it->form, t0 + h, y1, K[s]);
+    return qd__sim_rhs(it->s, it->form, t0 + h, y1, K[s]);
 }
 
-qd_status qd__erk_step(qd__integ *it) {
+qd_status qd__sim_erk_step(qd__sim_integ *it) {
     erk *r = it->priv;
-    const qd__erk *tab = r->tab;
+    const qd__sim_erk *tab = r->tab;
     size_t d = it->dim;
     qd_status st = QD_OK;
     if (it->y_changed)
-        st = qd__rhs(it->s, it->form, it->t, it->y, r->K[0]);
+        st = qd__sim_rhs(it->s, it->form, it->t, it->y, r->K[0]);
     else if (it->steps) {
         /* first same as last: K[s] of the last step is K[0] of this one */
         double *k0 = r->K[0];
@@ -172,7 +172,7 @@ qd_status qd__erk_step(qd__integ *it) {
         if (st != QD_OK)
             return st;
         if (!(fabs(h) > 10 * fabs(nextafter(it->t, INFINITY) - it->t)))
-            return qd__underflow(it, h);
+            return qd__sim_underflow(it, h);
         st = stages(it, tab, it->t, it->y, h, r->K, r->ytmp, r->ynew);
         if (st != QD_OK && st != QD_ERR_NOMEM && !it->fixed && ++failed <= MAX_STAGE_FAILURES &&
             qd__ctx_recover(it->s->ctx)) {
@@ -220,7 +220,7 @@ qd_status qd__erk_step(qd__integ *it) {
     }
 }
 
-void qd__erk_dense(qd__integ *it, double t, double *y) {
+void qd__sim_erk_dense(qd__sim_integ *it, double t, double *y) {
     erk *r = it->priv;
     if (!r->dense_ready) {
         if (r->tab->dense_prep(it, r->K, r->coef) != QD_OK) {
@@ -234,7 +234,7 @@ void qd__erk_dense(qd__integ *it, double t, double *y) {
     r->tab->dense_eval(it, r->coef, h > 0 ? (t - it->told) / h : 1, y);
 }
 
-qd_status qd__erk_redo(qd__integ *it, double h, double *y) {
+qd_status qd__sim_erk_redo(qd__sim_integ *it, double h, double *y) {
     erk *r = it->priv;
     memcpy(r->Kr[0], r->K[0], it->dim * sizeof **r->K);
     return stages(it, r->tab, it->told, it->yold, h, r->Kr, r->ytmp, y);

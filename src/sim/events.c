@@ -22,34 +22,34 @@
 
 /* g_k at (t, y), q' in r->qd: an expression of aux, or a friction
  * contact's switching function (friction.c). */
-static qd_status g_value(qd__run *r, size_t k, double t, const double *y, double *gk) {
+static qd_status g_value(qd__sim_run *r, size_t k, double t, const double *y, double *gk) {
     qd_sim *s = r->s;
-    if (k >= qd__fev0(s))
-        return qd__fric_event(r, k - qd__fev0(s), t, y, gk);
-    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
-    *gk = s->aux_out[qd__aux_ev(s) + k];
+    if (k >= qd__sim_fev0(s))
+        return qd__sim_fric_event(r, k - qd__sim_fev0(s), t, y, gk);
+    qd__sim_aux_eval(s, t, y, qd__sim_second(s, y, r->qd));
+    *gk = s->aux_out[qd__sim_aux_ev(s) + k];
     return QD_OK;
 }
 
 /* g_k at the dense state at t. */
-static qd_status g_dense(qd__run *r, size_t k, double t, double *gk) {
-    qd_status st = qd__run_dense(r, t, r->ytmp);
+static qd_status g_dense(qd__sim_run *r, size_t k, double t, double *gk) {
+    qd_status st = qd__sim_run_dense(r, t, r->ytmp);
     if (st == QD_OK)
-        st = qd__run_velocity(r, t, r->ytmp);
+        st = qd__sim_run_velocity(r, t, r->ytmp);
     return st == QD_OK ? g_value(r, k, t, r->ytmp, gk) : st;
 }
 
 /* g_k after the method's own step of size tau from (told, yold); state in y. */
-static qd_status g_redo(qd__run *r, size_t k, double tau, double *y, double *gk) {
-    qd__integ *it = r->it;
+static qd_status g_redo(qd__sim_run *r, size_t k, double tau, double *y, double *gk) {
+    qd__sim_integ *it = r->it;
     qd_status st = it->ops->redo(it, tau, y);
     if (st == QD_OK)
-        st = qd__run_velocity(r, it->told + tau, y);
+        st = qd__sim_run_velocity(r, it->told + tau, y);
     return st == QD_OK ? g_value(r, k, it->told + tau, y, gk) : st;
 }
 
 /* Illinois: regula falsi with the stale end's value halved. */
-static qd_status root_dense(qd__run *r, size_t k, double a, double ga, double b, double gb,
+static qd_status root_dense(qd__sim_run *r, size_t k, double a, double ga, double b, double gb,
                             double *root, double *after) {
     int side = 0;
     for (int i = 0; i < MAX_ROOT_ITER; i++) {
@@ -82,8 +82,8 @@ static qd_status root_dense(qd__run *r, size_t k, double a, double ga, double b,
 }
 
 /* Secant on the method's step; keeps the dense root when it does not settle. */
-static qd_status polish(qd__run *r, size_t k, double troot, double *y) {
-    qd__integ *it = r->it;
+static qd_status polish(qd__sim_run *r, size_t k, double troot, double *y) {
+    qd__sim_integ *it = r->it;
     double h = it->t - it->told, t0 = troot - it->told;
     double t1 = t0 + h * 1e-7 * (t0 < 0.5 * h ? 1 : -1), g0, g1;
     qd_status st = g_redo(r, k, t0, y, &g0);
@@ -109,8 +109,8 @@ static qd_status polish(qd__run *r, size_t k, double troot, double *y) {
 /* The last of 16 samples of the step where contact i's gap is positive
  * (NAN when none is): the start of the bracket of a landing that follows
  * a rebound inside the same step. */
-static qd_status positive_sample(qd__run *r, size_t k, double *a, double *ga) {
-    qd__integ *it = r->it;
+static qd_status positive_sample(qd__sim_run *r, size_t k, double *a, double *ga) {
+    qd__sim_integ *it = r->it;
     *a = NAN;
     for (int j = 15; j >= 1; j--) {
         double t = it->told + (it->t - it->told) * j / 16, g;
@@ -133,8 +133,8 @@ static qd_status positive_sample(qd__run *r, size_t k, double *a, double *ga) {
  * with no positive sample closes there (*closed).  r->imp->unresolved = i
  * when the step follows its impact and no sample is positive: the rebound
  * and the landing both fell inside the step. */
-static qd_status impact_bracket(qd__run *r, size_t k, double *a, double *ga, bool *closed) {
-    qd__integ *it = r->it;
+static qd_status impact_bracket(qd__sim_run *r, size_t k, double *a, double *ga, bool *closed) {
+    qd__sim_integ *it = r->it;
     size_t i = k - r->s->nev;
     *closed = false;
     if (*ga > 0)
@@ -170,8 +170,8 @@ static qd_status impact_bracket(qd__run *r, size_t k, double *a, double *ga, boo
 #define NSAMPLE_MAX QD__EV_SAMPLES_MAX
 #define DELTA 1e-7
 
-static double sample_t(const qd__run *r, size_t j) {
-    const qd__integ *it = r->it;
+static double sample_t(const qd__sim_run *r, size_t j) {
+    const qd__sim_integ *it = r->it;
     return j == 0 ? it->told : j == r->nsmp ? it->t
                              : it->told + (it->t - it->told) * (double)j / (double)r->nsmp;
 }
@@ -187,8 +187,8 @@ static int direction(double a, double b) {
 /* g_k turns (by more than a thousandth of its range over the step) at two
  * consecutive samples, or at more than a quarter of them: it oscillates
  * faster than the samples resolve. */
-static bool turns_fast(const qd__run *r, size_t k) {
-    size_t ne = qd__nev_all(r->s), n = r->nsmp;
+static bool turns_fast(const qd__sim_run *r, size_t k) {
+    size_t ne = qd__sim_nev_all(r->s), n = r->nsmp;
     const double *v = r->smp;
     double lo = v[k], hi = v[k];
     for (size_t j = 1; j <= n; j++) {
@@ -215,8 +215,8 @@ static bool turns_fast(const qd__run *r, size_t k) {
  * after it) than its fastest change between the samples: above 100, g_k
  * varies on a scale finer than the samples (an aliased oscillation looks
  * smooth at the samples; its rate does not). */
-static double rate_ratio(const qd__run *r, size_t k, double gp) {
-    size_t ne = qd__nev_all(r->s), n = r->nsmp;
+static double rate_ratio(const qd__sim_run *r, size_t k, double gp) {
+    size_t ne = qd__sim_nev_all(r->s), n = r->nsmp;
     const double *v = r->smp;
     double secant = 0, size = 0;
     for (size_t j = 0; j < n; j++) {
@@ -230,8 +230,8 @@ static double rate_ratio(const qd__run *r, size_t k, double gp) {
 }
 
 /* The step's unresolved event k: counted, with the spacing it had. */
-static void unresolved_step(qd__run *r, size_t k) {
-    qd__integ *it = r->it;
+static void unresolved_step(qd__sim_run *r, size_t k) {
+    qd__sim_integ *it = r->it;
     if (!r->fast_steps++) {
         r->fast_t = it->told;
         r->fast_event = k;
@@ -241,9 +241,9 @@ static void unresolved_step(qd__run *r, size_t k) {
 
 /* Every event function at the samples of the step (r->smp, r->nsmp), and a
  * probe of their rate just after the first sample (gp). */
-static qd_status sample_step(qd__run *r) {
-    qd__integ *it = r->it;
-    size_t ne = qd__nev_all(r->s);
+static qd_status sample_step(qd__sim_run *r) {
+    qd__sim_integ *it = r->it;
+    size_t ne = qd__sim_nev_all(r->s);
     double *gp = r->smp + (NSAMPLE_MAX + 1) * ne + ne; /* after ev_after */
     for (size_t n = NSAMPLE;; n *= 2) {
         r->nsmp = n;
@@ -252,9 +252,9 @@ static qd_status sample_step(qd__run *r) {
         for (size_t j = 1; j <= n; j++) {
             double t = j < n ? sample_t(r, j) : sample_t(r, 1) + DELTA * (it->t - it->told);
             double *out = j < n ? r->smp + j * ne : gp;
-            qd_status st = qd__run_dense(r, t, r->ytmp);
+            qd_status st = qd__sim_run_dense(r, t, r->ytmp);
             if (st == QD_OK)
-                st = qd__run_events_at(r, t, r->ytmp, out, NULL);
+                st = qd__sim_run_events_at(r, t, r->ytmp, out, NULL);
             if (st != QD_OK)
                 return st;
         }
@@ -286,7 +286,7 @@ typedef struct bracket {
 
 /* Minimize f = sg g_k over a < b < c (f(b) below f(a), f(c)) until f is
  * below 0 somewhere (br: from the point before to it) or c - a < tol. */
-static qd_status dip(qd__run *r, size_t k, double sg, double a, double fa, double b,
+static qd_status dip(qd__sim_run *r, size_t k, double sg, double a, double fa, double b,
                      double fb, double c, double fc, bracket *br) {
     double tol = DELTA * (r->it->t - r->it->told), w1 = c - a, w2 = c - a;
     for (int i = 0; i < MAX_ROOT_ITER && c - a > tol; i++) {
@@ -331,8 +331,8 @@ static qd_status dip(qd__run *r, size_t k, double sg, double a, double fa, doubl
 
 /* The first sign change of g_k after (a, ga), ga != 0, over the samples j0
  * .. nsmp of the step (all after a). */
-static qd_status search(qd__run *r, size_t k, double a, double ga, size_t j0, bracket *br) {
-    size_t ne = qd__nev_all(r->s), m = r->nsmp - j0 + 1;
+static qd_status search(qd__sim_run *r, size_t k, double a, double ga, size_t j0, bracket *br) {
+    size_t ne = qd__sim_nev_all(r->s), m = r->nsmp - j0 + 1;
     double sg = ga > 0 ? 1 : -1, h = r->it->t - r->it->told;
     double tl = a, vl = ga, tlow = a, vlow = ga;
     int prev = 0;
@@ -376,8 +376,8 @@ static qd_status search(qd__run *r, size_t k, double a, double ga, size_t j0, br
 /* The crossing of event k in br located: the root on the dense output,
  * polished on the method's own step; the state at it in ev_y, its time in
  * ev_t, the far side of the dense bracket in ev_after. */
-static qd_status locate_root(qd__run *r, size_t k, const bracket *br, bool at_start) {
-    qd__integ *it = r->it;
+static qd_status locate_root(qd__sim_run *r, size_t k, const bracket *br, bool at_start) {
+    qd__sim_integ *it = r->it;
     double root = at_start ? br->lo : br->hi, after = root;
     qd_status st = br->ghi == 0 || at_start
                        ? QD_OK : root_dense(r, k, br->lo, br->glo, br->hi, br->ghi, &root, &after);
@@ -388,16 +388,16 @@ static qd_status locate_root(qd__run *r, size_t k, const bracket *br, bool at_st
         st = polish(r, k, root, y);
     else if (st == QD_OK)
         st = root == it->told ? (memcpy(y, it->yold, it->dim * sizeof *y), QD_OK)
-                              : qd__run_dense(r, root, y);
+                              : qd__sim_run_dense(r, root, y);
     if (st == QD_OK)
-        st = qd__run_events_at(r, r->ev_t[k], y, NULL, r->ev_ok);
+        st = qd__sim_run_events_at(r, r->ev_t[k], y, NULL, r->ev_ok);
     return st;
 }
 
 /* The first crossing of event k (not a contact's gap) after time a in the
  * step whose guards hold; r->ev_hit[k] when there is one. */
-static qd_status next_crossing(qd__run *r, size_t k, double a, double ga) {
-    qd__integ *it = r->it;
+static qd_status next_crossing(qd__sim_run *r, size_t k, double a, double ga) {
+    qd__sim_integ *it = r->it;
     size_t j0 = 1;
     r->ev_hit[k] = false;
     while (a < it->t) {
@@ -412,7 +412,7 @@ static qd_status next_crossing(qd__run *r, size_t k, double a, double ga) {
                 return st;
             if (gb == 0) {
                 b = sample_t(r, j0);
-                gb = r->smp[j0 * qd__nev_all(r->s) + k];
+                gb = r->smp[j0 * qd__sim_nev_all(r->s) + k];
             }
             if (b >= it->t)
                 return QD_OK;
@@ -424,7 +424,7 @@ static qd_status next_crossing(qd__run *r, size_t k, double a, double ga) {
         qd_status st = search(r, k, a, ga, j0, &br);
         if (st != QD_OK || !br.found)
             return st;
-        if (k >= qd__fev0(r->s) && !qd__fric_crossing(r->s, k - qd__fev0(r->s), br.glo)) {
+        if (k >= qd__sim_fev0(r->s) && !qd__sim_fric_crossing(r->s, k - qd__sim_fev0(r->s), br.glo)) {
             a = br.hi;
             ga = br.ghi;
             continue;
@@ -443,7 +443,7 @@ static qd_status next_crossing(qd__run *r, size_t k, double a, double ga) {
     return QD_OK;
 }
 
-qd_status qd__events_next(qd__run *r, size_t k) {
+qd_status qd__sim_events_next(qd__sim_run *r, size_t k) {
     double a = r->ev_after[k], ga;
     if (!(a < r->it->t)) {
         r->ev_hit[k] = false;
@@ -454,14 +454,14 @@ qd_status qd__events_next(qd__run *r, size_t k) {
 }
 
 /* Locate event k in the step; r->ev_hit[k] when it happened. */
-static qd_status locate_one(qd__run *r, size_t k) {
+static qd_status locate_one(qd__sim_run *r, size_t k) {
     qd_sim *s = r->s;
-    qd__integ *it = r->it;
-    bool gap = k >= s->nev && k < qd__fev0(s), at_start = false;
+    qd__sim_integ *it = r->it;
+    bool gap = k >= s->nev && k < qd__sim_fev0(s), at_start = false;
     double a = it->told, ga = r->gold[k], gb = r->gnew[k];
     r->ev_hit[k] = false;
     if (!gap)
-        return k >= qd__fev0(s) && ga == 0 ? QD_OK : next_crossing(r, k, a, ga);
+        return k >= qd__sim_fev0(s) && ga == 0 ? QD_OK : next_crossing(r, k, a, ga);
     bracket br = {a, ga, it->t, gb, false};
     if (ga > 0) {
         /* a contact closes (from above), perhaps and opens again in the step */
@@ -480,17 +480,17 @@ static qd_status locate_one(qd__run *r, size_t k) {
     if (st != QD_OK)
         return st;
     /* a contact is struck only while closing: its rate below 0 */
-    r->ev_hit[k] = qd__impact_rate(r, k - s->nev, r->ev_t[k], r->ev_y + k * it->dim) < 0;
+    r->ev_hit[k] = qd__sim_impact_rate(r, k - s->nev, r->ev_t[k], r->ev_y + k * it->dim) < 0;
     return QD_OK;
 }
 
-qd_status qd__events_locate(qd__run *r) {
+qd_status qd__sim_events_locate(qd__sim_run *r) {
     if (r->imp)
         r->imp->unresolved = r->s->nimp;
     qd_status st0 = sample_step(r);
     if (st0 != QD_OK)
         return st0;
-    for (size_t k = 0; k < qd__nev_all(r->s); k++) {
+    for (size_t k = 0; k < qd__sim_nev_all(r->s); k++) {
         qd_status st = locate_one(r, k);
         if (st != QD_OK)
             return st;

@@ -27,12 +27,12 @@
 #include <math.h>
 #include <string.h>
 
-struct qd__fric_last {
+struct qd__sim_fric_last {
     qd_sim_transition *tr;
     size_t n;
 };
 
-qd_status qd__fric_refuse(qd_ctx *ctx, const qd_model *m, const char *what) {
+qd_status qd__sim_fric_refuse(qd_ctx *ctx, const qd_model *m, const char *what) {
     if (!qd_model_ncontacts(m))
         return QD_OK;
     qd_ctx_error(ctx, QD_ERR_ARG,
@@ -49,7 +49,7 @@ static size_t con_index(const qd_sim *s, const char *name) {
     return (size_t)-1;
 }
 
-static qd_status map_contact(qd_sim *s, size_t i, qd__fcon *c) {
+static qd_status map_contact(qd_sim *s, size_t i, qd__sim_fcon *c) {
     const qd_model *m = s->model;
     size_t con[2];
     c->name = qd_model_contact_name(m, i);
@@ -81,7 +81,7 @@ static qd_status compile_fprog(qd_sim *s) {
         return QD_ERR_NOMEM;
     const qd_expr *zero = qd_int(s->ctx, 0);
     for (size_t i = 0; i < s->nfc; i++) {
-        const qd__fcon *c = &s->fc[i];
+        const qd__sim_fcon *c = &s->fc[i];
         const qd_expr *N = qd_model_contact_normal(s->model, i);
         outs[k++] = qd_model_contact_mu(s->model, i, false);
         outs[k++] = qd_model_contact_mu(s->model, i, true);
@@ -94,7 +94,7 @@ static qd_status compile_fprog(qd_sim *s) {
     return s->fprog ? QD_OK : qd_ctx_status(s->ctx);
 }
 
-qd_status qd__fric_setup(qd_sim *s) {
+qd_status qd__sim_fric_setup(qd_sim *s) {
     size_t nfc = qd_model_ncontacts(s->model);
     if (!nfc)
         return QD_OK;
@@ -123,9 +123,9 @@ qd_status qd__fric_setup(qd_sim *s) {
     return compile_fprog(s);
 }
 
-size_t qd__fric_nextra(const qd_sim *s) { return s->nfc ? 1 + (s->rheo ? 1 : 0) : 0; }
+size_t qd__sim_fric_nextra(const qd_sim *s) { return s->nfc ? 1 + (s->rheo ? 1 : 0) : 0; }
 
-void qd__fric_free(qd_sim *s) {
+void qd__sim_fric_free(qd_sim *s) {
     qd_prog_free(s->fprog);
     qd__free(s->fc);
     if (s->flast)
@@ -143,12 +143,12 @@ const qd_sim_transition *qd_sim_transitions(const qd_sim *s, size_t *n) {
 
 /* ---- a run's modes --------------------------------------------------------- */
 
-qd_status qd__fric_run_new(qd_sim *s) {
+qd_status qd__sim_fric_run_new(qd_sim *s) {
     s->fr = NULL;
     s->fprog_out = s->fprog_w = NULL;
     if (!s->nfc)
         return QD_OK;
-    qd__fric_run *fr = qd__calloc(s->ctx, 1, sizeof *fr);
+    qd__sim_fric_run *fr = qd__calloc(s->ctx, 1, sizeof *fr);
     s->fr = fr;
     if (!fr)
         return QD_ERR_NOMEM;
@@ -163,7 +163,7 @@ qd_status qd__fric_run_new(qd_sim *s) {
     fr->trial = fr->mode + s->nfc;
     fr->best = fr->trial + s->nfc;
     for (size_t i = 0; i < s->nfc; i++)
-        fr->mode[i] = (qd__fmode){.slip = false, .dir = {1, 0}, .sn = 1};
+        fr->mode[i] = (qd__sim_fmode){.slip = false, .dir = {1, 0}, .sn = 1};
     for (size_t k = 0; k < s->m; k++)
         fr->on[k] = true;
     return QD_OK;
@@ -171,16 +171,16 @@ qd_status qd__fric_run_new(qd_sim *s) {
 
 /* The switches of a finished run kept for qd_sim_transitions (orig: the
  * caller's qd_sim, which qd_sim_run may write). */
-static void keep_transitions(qd_sim *orig, qd__fric_run *fr) {
-    struct qd__fric_last *last = orig->flast;
+static void keep_transitions(qd_sim *orig, qd__sim_fric_run *fr) {
+    struct qd__sim_fric_last *last = orig->flast;
     qd__free(last->tr);
     last->tr = fr->tr;
     last->n = fr->ntr;
     fr->tr = NULL;
 }
 
-void qd__fric_run_free(qd_sim *s) {
-    qd__fric_run *fr = s->fr;
+void qd__sim_fric_run_free(qd_sim *s) {
+    qd__sim_fric_run *fr = s->fr;
     if (fr) {
         qd__free(fr->mode);
         qd__free(fr->on);
@@ -193,7 +193,7 @@ void qd__fric_run_free(qd_sim *s) {
     s->fr = NULL;
 }
 
-void qd__fric_keep(qd_sim *orig, qd_sim *run) {
+void qd__sim_fric_keep(qd_sim *orig, qd_sim *run) {
     if (run->fr && orig->flast)
         keep_transitions(orig, run->fr);
 }
@@ -204,14 +204,14 @@ static const double *fvals(const qd_sim *s, size_t c) {
     return s->fprog_out + QD__FSTRIDE * c;
 }
 
-double qd__fric_slip(const qd_sim *s, size_t c) {
+double qd__sim_fric_slip(const qd_sim *s, size_t c) {
     const double *f = fvals(s, c);
     return s->fc[c].ncon > 1 ? hypot(f[3], f[4]) : f[3];
 }
 
 /* The unit direction of contact c's kinetic force's opposite: v/|v|, or the
  * mode's direction while v is 0 (the instant it starts to slip). */
-static void slip_dir(const qd_sim *s, size_t c, const qd__fmode *md, double u[2]) {
+static void slip_dir(const qd_sim *s, size_t c, const qd__sim_fmode *md, double u[2]) {
     const double *f = fvals(s, c);
     if (s->fc[c].ncon == 1) {
         u[0] = md->dir[0];
@@ -223,13 +223,13 @@ static void slip_dir(const qd_sim *s, size_t c, const qd__fmode *md, double u[2]
     u[1] = v > 0 ? f[4] / v : md->dir[1];
 }
 
-void qd__fric_saddle(qd_sim *s, double *K, double *rhs) {
-    qd__fric_run *fr = s->fr;
+void qd__sim_fric_saddle(qd_sim *s, double *K, double *rhs) {
+    qd__sim_fric_run *fr = s->fr;
     size_t n = s->n, N = n + s->m;
     qd_prog_eval(s->fprog, s->fprog_w, s->in, s->fprog_out);
     for (size_t c = 0; c < s->nfc; c++) {
-        const qd__fcon *fc = &s->fc[c];
-        const qd__fmode *md = &fr->mode[c];
+        const qd__sim_fcon *fc = &s->fc[c];
+        const qd__sim_fmode *md = &fr->mode[c];
         if (!md->slip)
             continue;
         const double *f = fvals(s, c);
@@ -250,11 +250,11 @@ void qd__fric_saddle(qd_sim *s, double *K, double *rhs) {
     }
 }
 
-double qd__fric_power(const qd_sim *s) {
+double qd__sim_fric_power(const qd_sim *s) {
     double P = 0;
     const double *lambda = s->rhs + s->n;
     for (size_t c = 0; c < s->nfc; c++) {
-        const qd__fcon *fc = &s->fc[c];
+        const qd__sim_fcon *fc = &s->fc[c];
         if (!s->fr->mode[c].slip)
             continue;
         const double *f = fvals(s, c);
@@ -268,7 +268,7 @@ double qd__fric_power(const qd_sim *s) {
  * A q' + a0: lambda . A q' = lambda s - lambda a0 splits the friction's
  * power on the system into the dissipation and the surface's share, so one
  * sum over every row serves both modes. */
-double qd__fric_surface_power(qd_sim *s) {
+double qd__sim_fric_surface_power(qd_sim *s) {
     const double *lambda = s->rhs + s->n;
     qd_prog_eval(s->con, s->con_w, s->in, s->con_out);
     const double *a0 = s->con_out + s->m * s->n;
@@ -279,15 +279,15 @@ double qd__fric_surface_power(qd_sim *s) {
 }
 
 /* |N| of contact c after a saddle solve. */
-double qd__fric_normal(const qd_sim *s, size_t c) {
-    const qd__fcon *fc = &s->fc[c];
+double qd__sim_fric_normal(const qd_sim *s, size_t c) {
+    const qd__sim_fcon *fc = &s->fc[c];
     double scale = fabs(fvals(s, c)[2]); /* N's value, or |N| / |lambda_N| */
     return fc->normal != (size_t)-1 ? scale * fabs(s->rhs[s->n + fc->normal]) : scale;
 }
 
 /* The friction force's size |lambda| of contact c after a saddle solve. */
-double qd__fric_force(const qd_sim *s, size_t c) {
-    const qd__fcon *fc = &s->fc[c];
+double qd__sim_fric_force(const qd_sim *s, size_t c) {
+    const qd__sim_fcon *fc = &s->fc[c];
     const double *lambda = s->rhs + s->n;
     return fc->ncon > 1 ? hypot(lambda[fc->con[0]], lambda[fc->con[1]])
                         : fabs(lambda[fc->con[0]]);
@@ -297,11 +297,11 @@ double qd__fric_force(const qd_sim *s, size_t c) {
  * slipping, v . u_entry (stops as it falls through 0).  Event 2c + 1: the
  * normal multiplier times its assumed sign, while slipping (its sign
  * change makes the kinetic law inconsistent), else 1. */
-qd_status qd__fric_event(qd__run *r, size_t k, double t, const double *y, double *g) {
+qd_status qd__sim_fric_event(qd__sim_run *r, size_t k, double t, const double *y, double *g) {
     qd_sim *s = r->s;
     size_t c = k / 2;
-    const qd__fcon *fc = &s->fc[c];
-    const qd__fmode *md = &s->fr->mode[c];
+    const qd__sim_fcon *fc = &s->fc[c];
+    const qd__sim_fmode *md = &s->fr->mode[c];
     if (k % 2 && (!md->slip || fc->normal == (size_t)-1)) {
         *g = 1;
         return QD_OK;
@@ -316,13 +316,13 @@ qd_status qd__fric_event(qd__run *r, size_t k, double t, const double *y, double
     if (k % 2)
         *g = md->sn * s->rhs[s->n + fc->normal];
     else if (!md->slip)
-        *g = qd__fric_force(s, c) - f[0] * qd__fric_normal(s, c);
+        *g = qd__sim_fric_force(s, c) - f[0] * qd__sim_fric_normal(s, c);
     else
         *g = md->dir[0] * f[3] + (fc->ncon > 1 ? md->dir[1] * f[4] : 0);
     return QD_OK;
 }
 
-bool qd__fric_crossing(const qd_sim *s, size_t k, double ga) {
+bool qd__sim_fric_crossing(const qd_sim *s, size_t k, double ga) {
     bool rising = k % 2 == 0 && !s->fr->mode[k / 2].slip;
     return rising ? ga < 0 : ga > 0;
 }

@@ -29,7 +29,7 @@
 #define REST_TOL 1e-9  /* |v| below this times the speed scale: at rest */
 
 typedef struct choice {
-    qd__fmode cand[QD__FMAX][MAXCAND];
+    qd__sim_fmode cand[QD__FMAX][MAXCAND];
     size_t ncand[QD__FMAX];
     bool rest[QD__FMAX];    /* at rest: a slip candidate must accelerate its way */
 } choice;
@@ -42,7 +42,7 @@ static double speed_scale(const qd_sim *s, const double *y) {
 }
 
 static void lambda_of(const qd_sim *s, size_t c, double l[2]) {
-    const qd__fcon *fc = &s->fc[c];
+    const qd__sim_fcon *fc = &s->fc[c];
     l[0] = s->rhs[s->n + fc->con[0]];
     l[1] = fc->ncon > 1 ? s->rhs[s->n + fc->con[1]] : 0;
 }
@@ -55,7 +55,7 @@ static void slip_of(const qd_sim *s, size_t c, double v[2]) {
 }
 
 static void add(choice *ch, size_t c, bool slip, double d0, double d1, double sn) {
-    ch->cand[c][ch->ncand[c]++] = (qd__fmode){.slip = slip, .dir = {d0, d1}, .sn = sn};
+    ch->cand[c][ch->ncand[c]++] = (qd__sim_fmode){.slip = slip, .dir = {d0, d1}, .sn = sn};
 }
 
 /* Slip candidates of contact c in direction (d0, d1), for each sign of a
@@ -75,9 +75,9 @@ static void against(const double l[2], double *d0, double *d1) {
 
 /* The candidates of every contact; the modes in fr->mode are the ones in
  * force before the switch, and s->rhs holds their solution at the state. */
-static void candidates(qd__run *r, const double *y, size_t ev, choice *ch) {
+static void candidates(qd__sim_run *r, const double *y, size_t ev, choice *ch) {
     qd_sim *s = r->s;
-    const qd__fric_run *fr = s->fr;
+    const qd__sim_fric_run *fr = s->fr;
     double scale = speed_scale(s, y);
     double lnow[QD__FMAX][2];
     for (size_t c = 0; c < s->nfc; c++)
@@ -112,9 +112,9 @@ static void candidates(qd__run *r, const double *y, size_t ev, choice *ch) {
 
 /* 2-D contacts at rest: slip against the force they need with every resting
  * contact stuck (and the moving ones as the candidates say). */
-static void rest_directions(qd__run *r, double t, const double *y, choice *ch) {
+static void rest_directions(qd__sim_run *r, double t, const double *y, choice *ch) {
     qd_sim *s = r->s;
-    qd__fric_run *fr = s->fr;
+    qd__sim_fric_run *fr = s->fr;
     bool any = false;
     for (size_t c = 0; c < s->nfc; c++) {
         fr->mode[c] = ch->cand[c][0];
@@ -134,16 +134,16 @@ static void rest_directions(qd__run *r, double t, const double *y, choice *ch) {
 
 /* Does every contact's law hold in the solution s->rhs of the trial set? */
 static bool consistent(const qd_sim *s, const choice *ch) {
-    const qd__fric_run *fr = s->fr;
+    const qd__sim_fric_run *fr = s->fr;
     size_t n = s->n, m = s->m;
     const double *A = s->acc_out + n * n + n, *b = A + m * n, *qdd = s->rhs;
     for (size_t c = 0; c < s->nfc; c++) {
-        const qd__fcon *fc = &s->fc[c];
-        const qd__fmode *md = &fr->mode[c];
+        const qd__sim_fcon *fc = &s->fc[c];
+        const qd__sim_fmode *md = &fr->mode[c];
         const double *f = s->fprog_out + QD__FSTRIDE * c;
-        double N = qd__fric_normal(s, c);
+        double N = qd__sim_fric_normal(s, c);
         if (!md->slip) {
-            if (qd__fric_force(s, c) > f[0] * N * (1 + 1e-12) + 1e-300)
+            if (qd__sim_fric_force(s, c) > f[0] * N * (1 + 1e-12) + 1e-300)
                 return false;
             continue;
         }
@@ -166,7 +166,7 @@ static bool consistent(const qd_sim *s, const choice *ch) {
     return true;
 }
 
-static size_t nstick(const qd__fmode *md, size_t k) {
+static size_t nstick(const qd__sim_fmode *md, size_t k) {
     size_t c = 0;
     for (size_t i = 0; i < k; i++)
         c += !md[i].slip;
@@ -175,10 +175,10 @@ static size_t nstick(const qd__fmode *md, size_t k) {
 
 /* "A slip (lambda_N > 0), B stick": a slip's normal sign says which of
  * the two solutions of |N| it is. */
-static void describe(const qd_sim *s, const qd__fmode *md, char *buf, size_t cap) {
+static void describe(const qd_sim *s, const qd__sim_fmode *md, char *buf, size_t cap) {
     size_t k = 0;
     for (size_t c = 0; c < s->nfc && k < cap; c++) {
-        const qd__fcon *fc = &s->fc[c];
+        const qd__sim_fcon *fc = &s->fc[c];
         k += (size_t)snprintf(buf + k, cap - k, "%s%s %s", c ? ", " : "", fc->name,
                               md[c].slip ? "slip" : "stick");
         if (md[c].slip && fc->normal != (size_t)-1 && k < cap)
@@ -187,8 +187,8 @@ static void describe(const qd_sim *s, const qd__fmode *md, char *buf, size_t cap
     }
 }
 
-static qd_status paradox(qd_sim *s, double t, size_t found, const qd__fmode *a,
-                         const qd__fmode *b) {
+static qd_status paradox(qd_sim *s, double t, size_t found, const qd__sim_fmode *a,
+                         const qd__sim_fmode *b) {
     qd__sim_stop(s, QD_STOP_PAINLEVE, t, (double)found);
     if (!found) {
         qd_ctx_error(s->ctx, QD_ERR_NUMERIC, "Painleve paradox at t = %.17g: no consistent "
@@ -214,7 +214,7 @@ static bool next_set(const choice *ch, size_t k, size_t *idx) {
 }
 
 static qd_status record(qd_sim *s, double t, size_t c, bool from, bool to) {
-    qd__fric_run *fr = s->fr;
+    qd__sim_fric_run *fr = s->fr;
     if (fr->ntr == fr->cap) {
         size_t cap = fr->cap ? 2 * fr->cap : 16;
         qd_sim_transition *tr = qd__realloc(s->ctx, fr->tr, cap * sizeof *tr);
@@ -232,9 +232,9 @@ static qd_status record(qd_sim *s, double t, size_t c, bool from, bool to) {
 }
 
 /* Put the chosen set in force: the switches, the rows left out. */
-static qd_status adopt(qd_sim *s, double t, const choice *ch, const qd__fmode *prev,
+static qd_status adopt(qd_sim *s, double t, const choice *ch, const qd__sim_fmode *prev,
                        bool start) {
-    qd__fric_run *fr = s->fr;
+    qd__sim_fric_run *fr = s->fr;
     qd_status st = QD_OK;
     for (size_t c = 0; c < s->nfc; c++) {
         fr->mode[c] = fr->best[c];
@@ -247,11 +247,11 @@ static qd_status adopt(qd_sim *s, double t, const choice *ch, const qd__fmode *p
     return st;
 }
 
-qd_status qd__fric_select(qd__run *r, double t, const double *y, size_t ev) {
+qd_status qd__sim_fric_select(qd__sim_run *r, double t, const double *y, size_t ev) {
     qd_sim *s = r->s;
-    qd__fric_run *fr = s->fr;
+    qd__sim_fric_run *fr = s->fr;
     size_t k = s->nfc, idx[QD__FMAX] = {0}, found = 0, top = 0;
-    qd__fmode prev[QD__FMAX], other[QD__FMAX];
+    qd__sim_fmode prev[QD__FMAX], other[QD__FMAX];
     choice ch;
     memcpy(prev, fr->mode, k * sizeof *prev);
     if (!qd__sim_saddle(s, t, y))

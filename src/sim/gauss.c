@@ -43,7 +43,7 @@ static const gl_tab gl3 = {3, {0.5 - R15 / 10, 0.5, 0.5 + R15 / 10},
                             {5.0 / 36 + R15 / 30, 2.0 / 9 + R15 / 15, 5.0 / 36}},
                            {5.0 / 18, 4.0 / 9, 5.0 / 18}};
 
-static qd_status init_tab(qd__integ *it, const gl_tab *tab) {
+static qd_status init_tab(qd__sim_integ *it, const gl_tab *tab) {
     size_t d = it->dim, s = (size_t)tab->s;
     gl *g = qd__calloc(it->s->ctx, 1, sizeof *g);
     double *mem = qd__malloc(it->s->ctx, (4 * s * d + 2 * d + 1) * sizeof *mem);
@@ -64,7 +64,7 @@ static qd_status init_tab(qd__integ *it, const gl_tab *tab) {
     return QD_OK;
 }
 
-static void gl_free(qd__integ *it) {
+static void gl_free(qd__sim_integ *it) {
     gl *g = it->priv;
     if (g)
         qd__free(g->Z);
@@ -74,7 +74,7 @@ static void gl_free(qd__integ *it) {
 
 /* Start values: the last step's collocation polynomial w(x) (w(0) = 0,
  * w(c_j) = Z_j) continued to the new stages, minus the step's increment. */
-static void extrapolate(qd__integ *it, gl *g, double h) {
+static void extrapolate(qd__sim_integ *it, gl *g, double h) {
     const gl_tab *T = g->tab;
     size_t d = it->dim, s = (size_t)T->s;
     if (!g->have_prev || g->hprev != h || it->y_changed) {
@@ -102,7 +102,7 @@ static void extrapolate(qd__integ *it, gl *g, double h) {
 
 /* Solve the stage equations from (t0, y0) with the start in g->Z; g->F
  * holds F(y0 + Z_i) on return. */
-static qd_status solve_stages(qd__integ *it, gl *g, double t0, const double *y0, double h) {
+static qd_status solve_stages(qd__sim_integ *it, gl *g, double t0, const double *y0, double h) {
     const gl_tab *T = g->tab;
     size_t d = it->dim, s = (size_t)T->s;
     double prev = INFINITY, scale = 0;
@@ -113,7 +113,7 @@ static qd_status solve_stages(qd__integ *it, gl *g, double t0, const double *y0,
         for (size_t i = 0; i < s; i++) {
             for (size_t r = 0; r < d; r++)
                 g->yst[r] = y0[r] + g->Z[i * d + r];
-            qd_status st = qd__rhs(it->s, it->form, t0 + T->c[i] * h, g->yst, g->F + i * d);
+            qd_status st = qd__sim_rhs(it->s, it->form, t0 + T->c[i] * h, g->yst, g->F + i * d);
             if (st != QD_OK)
                 return st;
         }
@@ -142,7 +142,7 @@ static qd_status solve_stages(qd__integ *it, gl *g, double t0, const double *y0,
     return QD_ERR_NUMERIC;
 }
 
-static qd_status gl_step(qd__integ *it) {
+static qd_status gl_step(qd__sim_integ *it) {
     gl *g = it->priv;
     const gl_tab *T = g->tab;
     size_t d = it->dim, s = (size_t)T->s;
@@ -172,7 +172,7 @@ static qd_status gl_step(qd__integ *it) {
     return QD_OK;
 }
 
-static qd_status gl_redo(qd__integ *it, double h, double *y) {
+static qd_status gl_redo(qd__sim_integ *it, double h, double *y) {
     gl *g = it->priv;
     const gl_tab *T = g->tab;
     size_t d = it->dim, s = (size_t)T->s;
@@ -191,10 +191,10 @@ static qd_status gl_redo(qd__integ *it, double h, double *y) {
     return st;
 }
 
-static qd_status init1(qd__integ *it) { return init_tab(it, &gl1); }
-static qd_status init2(qd__integ *it) { return init_tab(it, &gl2); }
-static qd_status init3(qd__integ *it) { return init_tab(it, &gl3); }
+static qd_status init1(qd__sim_integ *it) { return init_tab(it, &gl1); }
+static qd_status init2(qd__sim_integ *it) { return init_tab(it, &gl2); }
+static qd_status init3(qd__sim_integ *it) { return init_tab(it, &gl3); }
 
-const qd__method qd__gauss2 = {init1, gl_step, NULL, gl_redo, gl_free};
-const qd__method qd__gauss4 = {init2, gl_step, NULL, gl_redo, gl_free};
-const qd__method qd__gauss6 = {init3, gl_step, NULL, gl_redo, gl_free};
+const qd__sim_method qd__sim_gauss2 = {init1, gl_step, NULL, gl_redo, gl_free};
+const qd__sim_method qd__sim_gauss4 = {init2, gl_step, NULL, gl_redo, gl_free};
+const qd__sim_method qd__sim_gauss6 = {init3, gl_step, NULL, gl_redo, gl_free};

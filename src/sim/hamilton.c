@@ -8,7 +8,7 @@
  * H need not be regular: with d^2H/dp^2 singular (H = p x, linear in p) q'
  * does not determine p and there is no Lagrangian, yet these equations are
  * well defined.  The programs take the momenta where the Lagrangian system
- * takes the velocities (simint.h, qd__second).
+ * takes the velocities (simint.h, qd__sim_second).
  */
 #include "simint.h"
 
@@ -117,7 +117,7 @@ static qd_status compile(qd_sim *s) {
     return st == QD_OK && s->acc ? QD_OK : qd_ctx_status(s->ctx);
 }
 
-void qd__hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x) {
+void qd__sim_hamilton_velocities(qd_sim *s, size_t n, const qd_expr **x) {
     const qd_expr **qd = qd__malloc(s->ctx, (s->n + 1) * sizeof *qd);
     for (size_t j = 0; qd && j < s->n; j++)
         qd[j] = qd_jet(s->ctx, s->in_syms[j], 1);
@@ -167,7 +167,7 @@ qd_sim *qd_sim_new_hamilton(qd_ctx *ctx, const qd_model *m) {
 
 /* Newton's method on dH/dp (q, p, t) = qd from p = 0: one step when H is
  * quadratic in p.  Each step solves d^2H/dp^2 dp = qd - dH/dp. */
-qd_status qd__hamilton_momenta(qd_sim *s, double t, const double *q, const double *qd,
+qd_status qd__sim_hamilton_momenta(qd_sim *s, double t, const double *q, const double *qd,
                                double *p) {
     size_t n = s->n;
     double *K = s->K, *r = s->rhs;

@@ -99,7 +99,7 @@ static qd_status gradient(qd_sim *s, size_t i, const qd_expr **outs) {
     return QD_OK;
 }
 
-qd_status qd__impact_setup(qd_sim *s) {
+qd_status qd__sim_impact_setup(qd_sim *s) {
     size_t ni = qd_model_nimpacts(s->model), n = s->n;
     if (!ni)
         return QD_OK;
@@ -124,7 +124,7 @@ qd_status qd__impact_setup(qd_sim *s) {
     return st;
 }
 
-void qd__impact_free(qd_sim *s) {
+void qd__sim_impact_free(qd_sim *s) {
     qd_prog_free(s->imp);
     qd__free(s->imp_name);
     qd__free(s->imp_gap);
@@ -133,18 +133,18 @@ void qd__impact_free(qd_sim *s) {
 
 /* ---- a run's contacts ---------------------------------------------------------- */
 
-qd_status qd__impacts_new(qd__run *r) {
+qd_status qd__sim_impacts_new(qd__sim_run *r) {
     qd_sim *s = r->s;
     if (!s->nimp)
         return QD_OK;
     size_t n = s->n, N = n + s->m + s->nimp, d = r->it->dim;
-    qd__impacts *im = qd__calloc(s->ctx, 1, sizeof *im);
+    qd__sim_impacts *im = qd__calloc(s->ctx, 1, sizeof *im);
     if (!im)
         return QD_ERR_NOMEM;
     r->imp = im;
     im->c = qd__calloc(s->ctx, s->nimp, sizeof *im->c);
     im->fresh = qd__calloc(s->ctx, 2 * s->nimp, sizeof *im->fresh);
-    im->K = qd__calloc(s->ctx, N * N + N + (N - n) * n + (N - n) + n + 3 * d + qd__nev_all(s),
+    im->K = qd__calloc(s->ctx, N * N + N + (N - n) * n + (N - n) + n + 3 * d + qd__sim_nev_all(s),
                        sizeof *im->K);
     if (!im->c || !im->fresh || !im->K)
         return QD_ERR_NOMEM;
@@ -161,7 +161,7 @@ qd_status qd__impacts_new(qd__run *r) {
     return QD_OK;
 }
 
-void qd__impacts_free(qd__run *r) {
+void qd__sim_impacts_free(qd__sim_run *r) {
     if (!r->imp)
         return;
     qd__free(r->imp->c);
@@ -171,9 +171,9 @@ void qd__impacts_free(qd__run *r) {
     r->imp = NULL;
 }
 
-qd_status qd__impact_check_start(qd__run *r, double t, const double *y) {
+qd_status qd__sim_impact_check_start(qd__sim_run *r, double t, const double *y) {
     qd_sim *s = r->s;
-    qd_status st = qd__run_events_at(r, t, y, r->gold, NULL);
+    qd_status st = qd__sim_run_events_at(r, t, y, r->gold, NULL);
     for (size_t i = 0; st == QD_OK && i < s->nimp; i++) {
         double g = r->gold[s->nev + i];
         if (g < 0 || isnan(g)) {
@@ -188,10 +188,10 @@ qd_status qd__impact_check_start(qd__run *r, double t, const double *y) {
 
 /* a = dGAP/dq and a0 = dGAP/dt of contact i at (t, q) into s->imp_out;
  * returns a q' + a0 with q' in r->qd. */
-static double rate_here(qd__run *r, size_t i, double t, const double *q) {
+static double rate_here(qd__sim_run *r, size_t i, double t, const double *q) {
     qd_sim *s = r->s;
     size_t n = s->n;
-    qd__prog_at(s, s->imp, s->imp_w, t, q, r->qd, s->imp_out);
+    qd__sim_prog_at(s, s->imp, s->imp_w, t, q, r->qd, s->imp_out);
     const double *a = s->imp_out + i * (n + 2);
     double v = a[n];
     for (size_t j = 0; j < n; j++)
@@ -199,8 +199,8 @@ static double rate_here(qd__run *r, size_t i, double t, const double *q) {
     return v;
 }
 
-double qd__impact_rate(qd__run *r, size_t i, double t, const double *y) {
-    if (qd__run_velocity(r, t, y) != QD_OK)
+double qd__sim_impact_rate(qd__sim_run *r, size_t i, double t, const double *y) {
+    if (qd__sim_run_velocity(r, t, y) != QD_OK)
         return NAN;
     return rate_here(r, i, t, y);
 }
@@ -210,17 +210,17 @@ double qd__impact_rate(qd__run *r, size_t i, double t, const double *y) {
  * im->set; their count.  Struck one after the other, the first impact
  * would set the rod turning.  settling: also those just struck with i
  * (fresh, now opening), which come to rest with it. */
-static size_t struck_with(qd__run *r, size_t i, double t, const double *y, bool settling) {
+static size_t struck_with(qd__sim_run *r, size_t i, double t, const double *y, bool settling) {
     qd_sim *s = r->s;
-    qd__impacts *im = r->imp;
+    qd__sim_impacts *im = r->imp;
     size_t n = s->n, count = 0;
     double qmax = 1;
     for (size_t j = 0; j < n; j++)
         qmax = fmax(qmax, fabs(y[j]));
-    if (qd__run_events_at(r, t, y, im->g, NULL) != QD_OK)
-        memset(im->g, 0, qd__nev_all(s) * sizeof *im->g);
+    if (qd__sim_run_events_at(r, t, y, im->g, NULL) != QD_OK)
+        memset(im->g, 0, qd__sim_nev_all(s) * sizeof *im->g);
     for (size_t j = 0; j < s->nimp; j++) {
-        double rate = qd__impact_rate(r, j, t, y), amax = 1;
+        double rate = qd__sim_impact_rate(r, j, t, y), amax = 1;
         for (size_t k = 0; k <= n; k++)
             amax = fmax(amax, fabs(s->imp_out[j * (n + 2) + k]));
         bool closing = rate < 0 || (settling && im->fresh[j]);
@@ -234,12 +234,12 @@ static size_t struck_with(qd__run *r, size_t i, double t, const double *y, bool 
 /* The law's rows: the ordinary constraints, which hold after, and each
  * contact of im->set, whose rate after is -E times its rate before (E = 0
  * for them all when plastic); q' in r->qd. */
-static size_t law_rows(qd__run *r, double t, const double *q, bool plastic) {
+static size_t law_rows(qd__sim_run *r, double t, const double *q, bool plastic) {
     qd_sim *s = r->s;
-    qd__impacts *im = r->imp;
+    qd__sim_impacts *im = r->imp;
     size_t n = s->n, m = s->m, k = m;
     if (m) {
-        qd__con_eval(s, t, q, r->qd);
+        qd__sim_con_eval(s, t, q, r->qd);
         const double *A = s->con_out, *a0 = A + m * n;
         for (size_t c = 0; c < m; c++) {
             double v = a0[c];
@@ -261,18 +261,18 @@ static size_t law_rows(qd__run *r, double t, const double *q, bool plastic) {
 /* Newton's law for the contacts of im->set at (t, y) (i names them in a
  * message): y gets the state after, r->qd its velocities, *lost the energy
  * h lost; *still: T after <= rtol T before. */
-static qd_status law(qd__run *r, size_t i, double t, double *y, bool plastic, double *lost,
+static qd_status law(qd__sim_run *r, size_t i, double t, double *y, bool plastic, double *lost,
                      bool *still) {
     qd_sim *s = r->s;
-    qd__impacts *im = r->imp;
+    qd__sim_impacts *im = r->imp;
     size_t n = s->n;
-    qd_status st = qd__run_velocity(r, t, y);
+    qd_status st = qd__sim_run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    const double *hT = qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
+    const double *hT = qd__sim_energy_eval(s, t, y, qd__sim_second(s, y, r->qd));
     double h_before = hT[0], T_before = hT[1];
     size_t rows = law_rows(r, t, y, plastic), N = n + rows;
-    qd__prog_at(s, s->acc, s->acc_w, t, y, r->qd, s->acc_out);
+    qd__sim_prog_at(s, s->acc, s->acc_w, t, y, r->qd, s->acc_out);
     qd__num_saddle(n, rows, s->acc_out, im->zero, im->A, im->b, im->K, im->rhs);
     if (!qd__num_solve(N, im->K, im->rhs, 1e-13 * (double)N)) {
         qd__sim_stop(s, QD_STOP_SINGULAR, t, NAN);
@@ -285,10 +285,10 @@ static qd_status law(qd__run *r, size_t i, double t, double *y, bool plastic, do
     for (size_t j = 0; j < n; j++)
         r->qd[j] += im->rhs[j];
     if (r->it->form == QD__HAM)
-        qd__momentum(s, t, y, r->qd, y + n);
+        qd__sim_momentum(s, t, y, r->qd, y + n);
     else
         memcpy(y + n, r->qd, n * sizeof *y);
-    hT = qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
+    hT = qd__sim_energy_eval(s, t, y, qd__sim_second(s, y, r->qd));
     *lost = h_before - hT[0];
     *still = !(fabs(hT[1]) > r->it->rtol * fabs(T_before));
     return QD_OK;
@@ -297,7 +297,7 @@ static qd_status law(qd__run *r, size_t i, double t, double *y, bool plastic, do
 /* The time the remaining bounces of contact c take: the geometric series
  * of the flights when they have shrunk in proportion to the rebound rates
  * (each flight d_k ~ vout_k, the ratio r = d_k / d_(k-1)); 0 otherwise. */
-static double remaining_bounces(const qd__contact *c) {
+static double remaining_bounces(const qd__sim_contact *c) {
     if (c->count < 3)
         return 0;
     double d1 = c->t[1] - c->t[0], d2 = c->t[2] - c->t[1];
@@ -311,7 +311,7 @@ static double remaining_bounces(const qd__contact *c) {
 
 /* After a plastic impact at (t, y), velocities in r->qd: at rest in contact
  * from t plus the remaining bounces' time, the positions carried there. */
-static qd_status settle(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
+static qd_status settle(qd__sim_run *r, size_t i, double t, double *y, qd__sim_impact_result *res) {
     qd_sim *s = r->s;
     size_t n = s->n;
     /* not past the end of the run: the bounces left there are below the
@@ -324,11 +324,11 @@ static qd_status settle(qd__run *r, size_t i, double t, double *y, qd__impact_re
         return QD_OK;
     for (size_t j = 0; j < n; j++)
         y[j] += r->qd[j] * dt;
-    qd_status st = s->m ? qd__project(s, res->t_rest, y, r->qd) : QD_OK;
+    qd_status st = s->m ? qd__sim_project(s, res->t_rest, y, r->qd) : QD_OK;
     if (st != QD_OK)
         return st;
     if (r->it->form == QD__HAM)
-        qd__momentum(s, res->t_rest, y, r->qd, y + n);
+        qd__sim_momentum(s, res->t_rest, y, r->qd, y + n);
     else
         memcpy(y + n, r->qd, n * sizeof *y);
     return QD_OK;
@@ -336,16 +336,16 @@ static qd_status settle(qd__run *r, size_t i, double t, double *y, qd__impact_re
 
 /* d^2GAP/dt^2 of contact i at (t, y), q' in r->qd, with the free motion's
  * q'' (the constraints' forces included, no contact force). */
-static qd_status gap_acceleration(qd__run *r, size_t i, double t, const double *y, double *gdd) {
+static qd_status gap_acceleration(qd__sim_run *r, size_t i, double t, const double *y, double *gdd) {
     qd_sim *s = r->s;
-    qd__impacts *im = r->imp;
+    qd__sim_impacts *im = r->imp;
     size_t n = s->n;
     memcpy(im->ylag, y, n * sizeof *y);
     memcpy(im->ylag + n, r->qd, n * sizeof *y);
-    qd_status st = qd__rhs(s, QD__LAG, t, im->ylag, im->dy);
+    qd_status st = qd__sim_rhs(s, QD__LAG, t, im->ylag, im->dy);
     if (st != QD_OK)
         return st;
-    qd__prog_at(s, s->imp, s->imp_w, t, y, r->qd, s->imp_out);
+    qd__sim_prog_at(s, s->imp, s->imp_w, t, y, r->qd, s->imp_out);
     const double *a = s->imp_out + i * (n + 2);
     *gdd = a[n + 1];
     for (size_t j = 0; j < n; j++)
@@ -354,7 +354,7 @@ static qd_status gap_acceleration(qd__run *r, size_t i, double t, const double *
 }
 
 /* Contact i's history: an impact at t with approach rate vin < 0. */
-static void record(qd__contact *c, double t, double vin, double E) {
+static void record(qd__sim_contact *c, double t, double vin, double E) {
     c->vmax = fmax(c->vmax, -vin);
     for (int k = 0; k < 2; k++) {
         c->t[k] = c->t[k + 1];
@@ -365,14 +365,14 @@ static void record(qd__contact *c, double t, double vin, double E) {
     c->count++;
 }
 
-qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
+qd_status qd__sim_impact_apply(qd__sim_run *r, size_t i, double t, double *y, qd__sim_impact_result *res) {
     qd_sim *s = r->s;
-    qd__impacts *im = r->imp;
-    *res = (qd__impact_result){.count = struck_with(r, i, t, y, false)};
+    qd__sim_impacts *im = r->imp;
+    *res = (qd__sim_impact_result){.count = struck_with(r, i, t, y, false)};
     for (size_t j = 0; j < s->nimp; j++)
         if (im->set[j])
-            record(&im->c[j], t, qd__impact_rate(r, j, t, y), s->imp_E[j]);
-    const qd__contact *c = &im->c[i];
+            record(&im->c[j], t, qd__sim_impact_rate(r, j, t, y), s->imp_E[j]);
+    const qd__sim_contact *c = &im->c[i];
     bool rest = !(c->vout[2] > sqrt(r->it->rtol) * c->vmax);
     qd_status st = law(r, i, t, y, rest, &res->lost, &res->at_rest);
     /* a plastic impact rests in contact only while the motion presses the
@@ -386,8 +386,8 @@ qd_status qd__impact_apply(qd__run *r, size_t i, double t, double *y, qd__impact
     return st;
 }
 
-qd_status qd__impact_rest(qd__run *r, size_t i, double t, double *y, qd__impact_result *res) {
-    *res = (qd__impact_result){.count = struck_with(r, i, t, y, true)};
+qd_status qd__sim_impact_rest(qd__sim_run *r, size_t i, double t, double *y, qd__sim_impact_result *res) {
+    *res = (qd__sim_impact_result){.count = struck_with(r, i, t, y, true)};
     qd_status st = law(r, i, t, y, true, &res->lost, &res->at_rest);
     return st == QD_OK ? settle(r, i, t, y, res) : st;
 }

@@ -19,7 +19,7 @@
 
 typedef enum { SRC_NONE, SRC_EXPR, SRC_TABLE, SRC_FN } src_kind;
 
-struct qd__input {
+struct qd__sim_input {
     src_kind kind;
     const qd_expr *expr;
     double *t, *v;          /* the table, t strictly increasing */
@@ -44,7 +44,7 @@ qd_status qd__sim_uin_init(qd_sim *s) {
     return QD_OK;
 }
 
-static void clear_source(struct qd__input *u) {
+static void clear_source(struct qd__sim_input *u) {
     qd__free(u->t);
     memset(u, 0, sizeof *u);
 }
@@ -57,7 +57,7 @@ void qd__sim_uin_free(qd_sim *s) {
 }
 
 /* The input named name, or NULL with QD_ERR_ARG recorded. */
-static struct qd__input *find(qd_sim *s, const char *name) {
+static struct qd__sim_input *find(qd_sim *s, const char *name) {
     if (s->uin_ready) {
         qd_ctx_error(s->ctx, QD_ERR_ARG, "inputs are given before the simulation is compiled");
         return NULL;
@@ -74,7 +74,7 @@ static struct qd__input *find(qd_sim *s, const char *name) {
 
 qd_status qd_sim_input_expr(qd_sim *s, const char *name, const qd_expr *x) {
     QD_ARGS(QD_ERR_ARG, s && name && x);
-    struct qd__input *u = find(s, name);
+    struct qd__sim_input *u = find(s, name);
     if (!u)
         return QD_ERR_ARG;
     for (size_t k = 0; k < s->nuin; k++)
@@ -92,7 +92,7 @@ qd_status qd_sim_input_expr(qd_sim *s, const char *name, const qd_expr *x) {
 qd_status qd_sim_input_table(qd_sim *s, const char *name, size_t n, const double *t,
                              const double *v) {
     QD_ARGS(QD_ERR_ARG, s && name && (n == 0 || t) && (n == 0 || v));
-    struct qd__input *u = find(s, name);
+    struct qd__sim_input *u = find(s, name);
     if (!u)
         return QD_ERR_ARG;
     for (size_t i = 0; i < n; i++)
@@ -119,7 +119,7 @@ qd_status qd_sim_input_table(qd_sim *s, const char *name, size_t n, const double
 
 qd_status qd_sim_input_callback(qd_sim *s, const char *name, qd_sim_input_fn fn, void *data) {
     QD_ARGS(QD_ERR_ARG, s && name);
-    struct qd__input *u = find(s, name);
+    struct qd__sim_input *u = find(s, name);
     if (!u)
         return QD_ERR_ARG;
     u->kind = SRC_FN;
@@ -167,7 +167,7 @@ static bool used(const qd_sim *s, size_t k) {
 qd_status qd__sim_uin_check(qd_sim *s, double t0, double t1) {
     double lo = fmin(t0, t1), hi = fmax(t0, t1);
     for (size_t k = 0; k < s->nuin; k++) {
-        const struct qd__input *u = &s->uin[k];
+        const struct qd__sim_input *u = &s->uin[k];
         const char *name = qd_expr_name(s->in_syms[s->uin_off + k]);
         if (u->kind == SRC_NONE && used(s, k)) {
             qd_ctx_error(s->ctx, QD_ERR_ARG, "input %s is used but not supplied (give it a "
@@ -185,7 +185,7 @@ qd_status qd__sim_uin_check(qd_sim *s, double t0, double t1) {
 
 /* Linear interpolation; clamped to the ends, which the check before the run
  * keeps to round-off. */
-static double interp(const struct qd__input *u, double t) {
+static double interp(const struct qd__sim_input *u, double t) {
     if (t <= u->t[0])
         return u->v[0];
     if (t >= u->t[u->nt - 1])
@@ -207,7 +207,7 @@ void qd__sim_uin_eval(qd_sim *s, double t) {
     if (s->uprog)
         qd_prog_eval(s->uprog, s->uprog_w, s->in, s->uprog_out);
     for (size_t k = 0; k < s->nuin; k++) {
-        const struct qd__input *u = &s->uin[k];
+        const struct qd__sim_input *u = &s->uin[k];
         slot[k] = u->kind == SRC_EXPR    ? s->uprog_out[k]
                   : u->kind == SRC_TABLE ? interp(u, t)
                   : u->kind == SRC_FN    ? u->fn(u->data, t, s->in)

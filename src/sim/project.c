@@ -52,7 +52,7 @@ static qd_status fail(qd_sim *s, double t, const char *what, double res) {
     return QD_ERR_NUMERIC;
 }
 
-qd_status qd__project(qd_sim *s, double t, double *q, double *qd) {
+qd_status qd__sim_project(qd_sim *s, double t, double *q, double *qd) {
     size_t n = s->n, m = s->m;
     if (!m)
         return QD_OK;
@@ -62,7 +62,7 @@ qd_status qd__project(qd_sim *s, double t, double *q, double *qd) {
     for (size_t k = 0; k < m; k++)
         any = any || s->holonomic[k];
     for (int iter = 0; any; iter++) {
-        qd__con_eval(s, t, q, qd);
+        qd__sim_con_eval(s, t, q, qd);
         double res = 0, scale = 1;
         for (size_t k = 0; k < m; k++)
             if (s->holonomic[k])
@@ -85,7 +85,7 @@ qd_status qd__project(qd_sim *s, double t, double *q, double *qd) {
                 if (s->holonomic[k])
                     q[j] -= A[k * n + j] * mu[k];
     }
-    qd__con_eval(s, t, q, qd);
+    qd__sim_con_eval(s, t, q, qd);
     for (size_t k = 0; k < m; k++) {
         double v = a0[k];
         for (size_t j = 0; j < n; j++)

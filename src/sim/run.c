@@ -11,42 +11,42 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const qd__method *const method_ops[QD_SIM_METHOD_COUNT] = {
-    [QD_SIM_DOPRI5] = &qd__dopri5,     [QD_SIM_DOP853] = &qd__dop853,
-    [QD_SIM_GL2] = &qd__gauss2,        [QD_SIM_GL4] = &qd__gauss4,
-    [QD_SIM_GL6] = &qd__gauss6,        [QD_SIM_VERLET] = &qd__verlet,
-    [QD_SIM_YOSHIDA4] = &qd__yoshida4, [QD_SIM_YOSHIDA6] = &qd__yoshida6,
-    [QD_SIM_YOSHIDA8] = &qd__yoshida8, [QD_SIM_BDF] = &qd__bdf,
-    [QD_SIM_TAYLOR] = &qd__taylor,
+static const qd__sim_method *const method_ops[QD_SIM_METHOD_COUNT] = {
+    [QD_SIM_DOPRI5] = &qd__sim_dopri5,     [QD_SIM_DOP853] = &qd__sim_dop853,
+    [QD_SIM_GL2] = &qd__sim_gauss2,        [QD_SIM_GL4] = &qd__sim_gauss4,
+    [QD_SIM_GL6] = &qd__sim_gauss6,        [QD_SIM_VERLET] = &qd__sim_verlet,
+    [QD_SIM_YOSHIDA4] = &qd__sim_yoshida4, [QD_SIM_YOSHIDA6] = &qd__sim_yoshida6,
+    [QD_SIM_YOSHIDA8] = &qd__sim_yoshida8, [QD_SIM_BDF] = &qd__sim_bdf,
+    [QD_SIM_TAYLOR] = &qd__sim_taylor,
 };
 
 static bool symplectic(qd_sim_method m) { return m >= QD_SIM_GL2 && m <= QD_SIM_YOSHIDA8; }
 static bool splitting(qd_sim_method m) { return m >= QD_SIM_VERLET && m <= QD_SIM_YOSHIDA8; }
 
-qd_status qd__run_velocity(qd__run *r, double t, const double *y) {
+qd_status qd__sim_run_velocity(qd__sim_run *r, double t, const double *y) {
     size_t n = r->s->n;
     if (r->it->form == QD__LAG) {
         memcpy(r->qd, y + n, n * sizeof *r->qd);
         return QD_OK;
     }
     if (r->it->form == QD__SPD) {
-        qd__speeds_velocity(r->s, t, y, r->qd);
+        qd__sim_speeds_velocity(r->s, t, y, r->qd);
         return QD_OK;
     }
-    return qd__velocity(r->s, t, y, y + n, r->qd);
+    return qd__sim_velocity(r->s, t, y, y + n, r->qd);
 }
 
-qd_status qd__run_dense(qd__run *r, double t, double *y) {
-    qd__integ *it = r->it;
+qd_status qd__sim_run_dense(qd__sim_run *r, double t, double *y) {
+    qd__sim_integ *it = r->it;
     if (it->ops->dense) {
         it->ops->dense(it, t, y);
         return QD_OK;
     }
     size_t d = it->dim;
     if (!r->slopes) {
-        qd_status st = qd__rhs(r->s, it->form, it->told, it->yold, r->fa);
+        qd_status st = qd__sim_rhs(r->s, it->form, it->told, it->yold, r->fa);
         if (st == QD_OK)
-            st = qd__rhs(r->s, it->form, it->t, it->y, r->fb);
+            st = qd__sim_rhs(r->s, it->form, it->t, it->y, r->fb);
         if (st != QD_OK)
             return st;
         r->slopes = true;
@@ -59,14 +59,14 @@ qd_status qd__run_dense(qd__run *r, double t, double *y) {
     return QD_OK;
 }
 
-qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bool *ok) {
+qd_status qd__sim_run_events_at(qd__sim_run *r, double t, const double *y, double *g, bool *ok) {
     qd_sim *s = r->s;
-    qd_status st = qd__run_velocity(r, t, y);
+    qd_status st = qd__sim_run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
-    const double *gv = s->aux_out + qd__aux_ev(s), *guard = s->aux_out + qd__aux_guard(s);
-    for (size_t k = 0; g && k < qd__fev0(s); k++)
+    qd__sim_aux_eval(s, t, y, qd__sim_second(s, y, r->qd));
+    const double *gv = s->aux_out + qd__sim_aux_ev(s), *guard = s->aux_out + qd__sim_aux_guard(s);
+    for (size_t k = 0; g && k < qd__sim_fev0(s); k++)
         g[k] = gv[k];
     for (size_t k = 0, gi = 0; k < s->nev; k++) {
         bool pass = true;
@@ -75,21 +75,21 @@ qd_status qd__run_events_at(qd__run *r, double t, const double *y, double *g, bo
         if (ok)
             ok[k] = pass;
     }
-    for (size_t k = qd__fev0(s); k < qd__nev_all(s); k++) {
+    for (size_t k = qd__sim_fev0(s); k < qd__sim_nev_all(s); k++) {
         if (ok)
             ok[k] = true;
-        if (g && (st = qd__fric_event(r, k - qd__fev0(s), t, y, &g[k])) != QD_OK)
+        if (g && (st = qd__sim_fric_event(r, k - qd__sim_fev0(s), t, y, &g[k])) != QD_OK)
             return st;
     }
     return QD_OK;
 }
 
 /* The column name of component j of the state y of the run's form. */
-static const char *state_name(const qd__run *r, size_t j) {
+static const char *state_name(const qd__sim_run *r, size_t j) {
     const qd_sim *s = r->s;
     size_t n = s->n;
     if (j >= (s->se ? n + s->nu : 2 * n))
-        return s->names[s->nnames - qd__fric_nextra(s) + (j - 2 * n)];
+        return s->names[s->nnames - qd__sim_fric_nextra(s) + (j - 2 * n)];
     return s->names[r->it->form == QD__HAM && j >= n ? 1 + n + j : 1 + j];
 }
 
@@ -99,7 +99,7 @@ static const char *state_name(const qd__run *r, size_t j) {
  * overflow, and a row of inf or NaN must never be written.  QD_ERR_NUMERIC
  * "non-finite state at t = ...", naming the first such component, the
  * last finite state's time and the cause. */
-static qd_status check_state(qd__run *r, double t, const double *y) {
+static qd_status check_state(qd__sim_run *r, double t, const double *y) {
     qd_sim *s = r->s;
     size_t d = r->it->dim, j = 0;
     while (j < d && isfinite(y[j]))
@@ -137,7 +137,7 @@ static qd_status check_state(qd__run *r, double t, const double *y) {
 
 /* A finite state whose energy is not: an overflow (x'^2 past 1e308) or a
  * state outside the model's domain; its row would print inf or NaN. */
-static qd_status energy_not_finite(qd__run *r, double t, double h) {
+static qd_status energy_not_finite(qd__sim_run *r, double t, double h) {
     qd__sim_stop(r->s, QD_STOP_NONFINITE, t, h);
     qd_ctx_error(r->s->ctx, QD_ERR_NUMERIC, "non-finite state at t = %.17g (energy = %g; the "
                  "last finite state was at t = %.17g): %s", t, h, r->it->told,
@@ -145,20 +145,20 @@ static qd_status energy_not_finite(qd__run *r, double t, double h) {
     return QD_ERR_NUMERIC;
 }
 
-struct qd__measure {
+struct qd__sim_measure {
     double E0, dEmax, Tmax, cmax;
     double lost; /* h taken by the impacts so far: E(t) is held to E0 - lost */
     double dErows; /* the largest |E - E0| over the rows made (what a caller gets) */
 };
-typedef struct qd__measure measure;
+typedef struct qd__sim_measure measure;
 
 /* The error measures at state y, t; q' in r->qd.  aux: s->aux_out holds
  * this state's values (a row was just made), else only h and T are
  * evaluated. */
-static qd_status measure_at(qd__run *r, measure *ms, double t, const double *y, bool aux) {
+static qd_status measure_at(qd__sim_run *r, measure *ms, double t, const double *y, bool aux) {
     qd_sim *s = r->s;
     size_t n = s->n;
-    const double *hT = aux ? s->aux_out : qd__energy_eval(s, t, y, qd__second(s, y, r->qd));
+    const double *hT = aux ? s->aux_out : qd__sim_energy_eval(s, t, y, qd__sim_second(s, y, r->qd));
     if (!isfinite(hT[0]))
         return energy_not_finite(r, t, hT[0]);
     /* friction's share, integrated as y[2n], and a moving surface's work,
@@ -168,7 +168,7 @@ static qd_status measure_at(qd__run *r, measure *ms, double t, const double *y, 
     ms->Tmax = fmax(ms->Tmax, fabs(hT[1]));
     if (!s->m)
         return QD_OK;
-    qd__con_eval(s, t, y, r->qd);
+    qd__sim_con_eval(s, t, y, r->qd);
     const double *A = s->con_out, *a0 = A + s->m * n, *g = a0 + s->m;
     for (size_t c = 0; c < s->m; c++) {
         if (s->fr && !s->fr->on[c])
@@ -187,11 +187,11 @@ static qd_status measure_at(qd__run *r, measure *ms, double t, const double *y, 
 
 /* The friction columns from row[k]: slip_NAME, mode_NAME per contact, then
  * dissipated (and surface_work on a moving surface); the next free index. */
-static size_t friction_columns(qd__run *r, double t, const double *y, double *row, size_t k) {
+static size_t friction_columns(qd__sim_run *r, double t, const double *y, double *row, size_t k) {
     qd_sim *s = r->s;
-    qd__prog_at(s, s->fprog, s->fprog_w, t, y, r->qd, s->fprog_out);
+    qd__sim_prog_at(s, s->fprog, s->fprog_w, t, y, r->qd, s->fprog_out);
     for (size_t c = 0; c < s->nfc; c++) {
-        row[k++] = qd__fric_slip(s, c);
+        row[k++] = qd__sim_fric_slip(s, c);
         row[k++] = s->fr->mode[c].slip ? 1 : 0;
     }
     row[k++] = y[2 * s->n];
@@ -202,17 +202,17 @@ static size_t friction_columns(qd__run *r, double t, const double *y, double *ro
 
 /* The row of state y at t, and (ms not NULL) the error measures there;
  * ms without a row: only the measures. */
-static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, double *row) {
+static qd_status make_row(qd__sim_run *r, measure *ms, double t, const double *y, double *row) {
     qd_sim *s = r->s;
     size_t n = s->n, k = 0;
     qd_status st = check_state(r, t, y);
     if (st == QD_OK)
-        st = qd__run_velocity(r, t, y);
+        st = qd__sim_run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
     if (!row)
         return measure_at(r, ms, t, y, false);
-    qd__aux_eval(s, t, y, qd__second(s, y, r->qd));
+    qd__sim_aux_eval(s, t, y, qd__sim_second(s, y, r->qd));
     const double *aux = s->aux_out;
     row[k++] = t;
     for (size_t j = 0; j < n; j++)
@@ -230,7 +230,7 @@ static qd_status make_row(qd__run *r, measure *ms, double t, const double *y, do
     if (s->fr)
         k = friction_columns(r, t, y, row, k);
     for (size_t i = 0; i < s->nout; i++)
-        row[k++] = aux[qd__aux_out(s) + i];
+        row[k++] = aux[qd__sim_aux_out(s) + i];
     if (s->uin_bad)
         return qd__sim_uin_failed(s);
     if (r->meas && isfinite(aux[0])) {
@@ -359,19 +359,19 @@ static qd_status check_system(const qd_sim *s, const qd_sim_opts *o) {
     return QD_OK;
 }
 
-static void run_free(qd__run *r, qd__integ *it) {
+static void run_free(qd__sim_run *r, qd__sim_integ *it) {
     if (it->ops && it->priv)
         it->ops->free(it);
     qd__free(it->y);
     qd__free(r->row);
     qd__free(r->ev_hit);
     qd__free(r->smp);
-    qd__impacts_free(r);
+    qd__sim_impacts_free(r);
 }
 
-static qd_status run_alloc(qd__run *r, qd__integ *it, size_t ncols) {
+static qd_status run_alloc(qd__sim_run *r, qd__sim_integ *it, size_t ncols) {
     qd_sim *s = r->s;
-    size_t d = it->dim, ne = qd__nev_all(s);
+    size_t d = it->dim, ne = qd__sim_nev_all(s);
     it->y = qd__malloc(s->ctx, (2 * d + 1) * sizeof *it->y);
     r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
     r->ev_hit = qd__calloc(s->ctx, 2 * ne + 1, sizeof *r->ev_hit);
@@ -401,13 +401,13 @@ static bool any_holonomic(const qd_sim *s) {
 
 /* A system in speeds: q of y = (q, u) onto the holonomic constraints; u
  * stays, and q' = kin(q, u) keeps the velocity constraints by itself. */
-static qd_status project_positions(qd__run *r, double t, double *y) {
-    qd__speeds_velocity(r->s, t, y, r->qd);
-    return qd__project(r->s, t, y, r->qd);
+static qd_status project_positions(qd__sim_run *r, double t, double *y) {
+    qd__sim_speeds_velocity(r->s, t, y, r->qd);
+    return qd__sim_project(r->s, t, y, r->qd);
 }
 
 /* y0 = (q0, u0), or u0 from q'0 projected onto the constraints. */
-static qd_status initial_speeds(qd__run *r, const qd_sim_opts *o) {
+static qd_status initial_speeds(qd__sim_run *r, const qd_sim_opts *o) {
     qd_sim *s = r->s;
     double *y = r->it->y;
     bool project = any_holonomic(s) && !o->no_project;
@@ -416,27 +416,27 @@ static qd_status initial_speeds(qd__run *r, const qd_sim_opts *o) {
         return project ? project_positions(r, o->t0, y) : QD_OK;
     }
     memcpy(r->qd, o->qd0, s->n * sizeof *r->qd);
-    qd_status st = s->m && !o->no_project ? qd__project(s, o->t0, y, r->qd) : QD_OK;
+    qd_status st = s->m && !o->no_project ? qd__sim_project(s, o->t0, y, r->qd) : QD_OK;
     if (st == QD_OK)
-        qd__speeds_from(s, o->t0, y, r->qd, y + s->n);
+        qd__sim_speeds_from(s, o->t0, y, r->qd, y + s->n);
     return st;
 }
 
 /* The friction contacts' modes at the start (q in it->y, velocities qd);
  * nothing dissipated, no work done by the surfaces yet. */
-static qd_status initial_modes(qd__run *r, double t0, const double *qd) {
-    qd__integ *it = r->it;
+static qd_status initial_modes(qd__sim_run *r, double t0, const double *qd) {
+    qd__sim_integ *it = r->it;
     size_t n = r->s->n;
     memcpy(it->y + n, qd, n * sizeof *qd);
-    for (size_t i = 0; i < qd__fric_nextra(r->s); i++)
+    for (size_t i = 0; i < qd__sim_fric_nextra(r->s); i++)
         it->y[2 * n + i] = 0;
-    return qd__fric_select(r, t0, it->y, (size_t)-1);
+    return qd__sim_fric_select(r, t0, it->y, (size_t)-1);
 }
 
 /* y0 from q0, q'0: projected onto the constraints, then (q, p) if canonical. */
-static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
+static qd_status initial_state(qd__sim_run *r, const qd_sim_opts *o) {
     qd_sim *s = r->s;
-    qd__integ *it = r->it;
+    qd__sim_integ *it = r->it;
     size_t n = s->n;
     double *q = it->y, *qd = r->qd;
     memcpy(q, o->q0, n * sizeof *q);
@@ -448,17 +448,17 @@ static qd_status initial_state(qd__run *r, const qd_sim_opts *o) {
             memcpy(it->y + n, o->p0, n * sizeof *q);
             return QD_OK;
         }
-        return qd__hamilton_momenta(s, o->t0, q, o->qd0, it->y + n);
+        return qd__sim_hamilton_momenta(s, o->t0, q, o->qd0, it->y + n);
     }
     memcpy(qd, o->qd0, n * sizeof *qd);
     /* the contacts' modes first: a slipping one's row is not projected */
     qd_status st = s->fr ? initial_modes(r, o->t0, qd) : QD_OK;
     if (st == QD_OK && s->m && !o->no_project)
-        st = qd__project(s, o->t0, q, qd);
+        st = qd__sim_project(s, o->t0, q, qd);
     if (st != QD_OK)
         return st;
     if (it->form == QD__HAM)
-        qd__momentum(s, o->t0, q, qd, it->y + n);
+        qd__sim_momentum(s, o->t0, q, qd, it->y + n);
     else
         memcpy(it->y + n, qd, n * sizeof *qd);
     return s->fr ? initial_modes(r, o->t0, qd) : QD_OK;
@@ -483,7 +483,7 @@ static void emit(emitter *em, int event, const double *row) {
 }
 
 /* The earliest contact struck in the step (r->ev_hit), or nimp. */
-static size_t first_impact(const qd__run *r) {
+static size_t first_impact(const qd__sim_run *r) {
     const qd_sim *s = r->s;
     size_t first = s->nimp;
     for (size_t i = 0; i < s->nimp; i++)
@@ -495,10 +495,10 @@ static size_t first_impact(const qd__run *r) {
 
 /* The earliest friction switch in the step (r->ev_hit): its friction
  * event's index (0 .. 2 nfc), or (size_t)-1. */
-static size_t first_friction(const qd__run *r) {
+static size_t first_friction(const qd__sim_run *r) {
     const qd_sim *s = r->s;
-    size_t first = (size_t)-1, k0 = qd__fev0(s);
-    for (size_t k = k0; k < qd__nev_all(s); k++)
+    size_t first = (size_t)-1, k0 = qd__sim_fev0(s);
+    for (size_t k = k0; k < qd__sim_nev_all(s); k++)
         if (r->ev_hit[k] && (first == (size_t)-1 || r->ev_t[k] < r->ev_t[k0 + first]))
             first = k - k0;
     return first;
@@ -508,18 +508,18 @@ static size_t first_friction(const qd__run *r) {
  * time order, up to the first impact (*impact, or nimp) or friction switch
  * (*fric, or (size_t)-1); *stop when a stopping event happened first (the
  * state is then moved to it). */
-static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, size_t *grid,
+static qd_status step_outputs(qd__sim_run *r, const qd_sim_opts *o, emitter *em, size_t *grid,
                               bool *stop, size_t *nevents, size_t *impact, size_t *fric) {
     qd_sim *s = r->s;
-    qd__integ *it = r->it;
+    qd__sim_integ *it = r->it;
     double tstop = it->t;
     size_t first = s->nev;
     *impact = first_impact(r);
     if (*impact < s->nimp)
         tstop = r->ev_t[s->nev + *impact];
     *fric = first_friction(r);
-    if (*fric != (size_t)-1 && r->ev_t[qd__fev0(s) + *fric] <= tstop) {
-        tstop = r->ev_t[qd__fev0(s) + *fric];
+    if (*fric != (size_t)-1 && r->ev_t[qd__sim_fev0(s) + *fric] <= tstop) {
+        tstop = r->ev_t[qd__sim_fev0(s) + *fric];
         *impact = s->nimp;
     } else {
         *fric = (size_t)-1;
@@ -551,7 +551,7 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
             break;
         qd_status st;
         if (tg <= te) {
-            st = qd__run_dense(r, tg, r->ytmp);
+            st = qd__sim_run_dense(r, tg, r->ytmp);
             if (st == QD_OK)
                 st = make_row(r, NULL, tg, r->ytmp, r->row);
             (*grid)++;
@@ -565,7 +565,7 @@ static qd_status step_outputs(qd__run *r, const qd_sim_opts *o, emitter *em, siz
                 emit(em, (int)ke, r->row);
             /* the same function may cross again later in the step */
             if (st == QD_OK && !s->ev[ke].stop)
-                st = qd__events_next(r, ke);
+                st = qd__sim_events_next(r, ke);
         }
         if (st != QD_OK)
             return st;
@@ -593,8 +593,8 @@ typedef struct loop {
 /* Start the method afresh from (it->t, it->y): the state jumped, so the
  * FSAL stage, the dense output, the step history and the collocation
  * start values are stale.  h: the first step (0: the method's choice). */
-static qd_status restart(qd__run *r, loop *L, double h) {
-    qd__integ *it = r->it;
+static qd_status restart(qd__sim_run *r, loop *L, double h) {
+    qd__sim_integ *it = r->it;
     if (it->priv)
         it->ops->free(it);
     it->h = L->fixed ? L->o->dt : h;
@@ -604,13 +604,13 @@ static qd_status restart(qd__run *r, loop *L, double h) {
     it->y_changed = true;
     r->slopes = false;
     if (st == QD_OK)
-        st = qd__run_events_at(r, it->t, it->y, r->gold, NULL);
+        st = qd__sim_run_events_at(r, it->t, it->y, r->gold, NULL);
     return st;
 }
 
 /* Back from the end of the step to (t, y) inside it. */
-static void back_to(qd__run *r, loop *L, double t, const double *y) {
-    qd__integ *it = r->it;
+static void back_to(qd__sim_run *r, loop *L, double t, const double *y) {
+    qd__sim_integ *it = r->it;
     if (L->fixed && t < it->t && L->gk)
         L->gk--; /* that grid point is not reached yet */
     it->t = t;
@@ -619,10 +619,10 @@ static void back_to(qd__run *r, loop *L, double t, const double *y) {
 }
 
 /* The row after contact i's impact; in contact the run ends. */
-static qd_status after_impact(qd__run *r, loop *L, size_t i, const qd__impact_result *res) {
+static qd_status after_impact(qd__sim_run *r, loop *L, size_t i, const qd__sim_impact_result *res) {
     qd_sim *s = r->s;
-    qd__integ *it = r->it;
-    qd__impacts *im = r->imp;
+    qd__sim_integ *it = r->it;
+    qd__sim_impacts *im = r->imp;
     L->ms->lost += res->lost;
     L->stats->impact_energy_lost += res->lost;
     if (res->contact) {
@@ -650,7 +650,7 @@ static qd_status after_impact(qd__run *r, loop *L, size_t i, const qd__impact_re
 
 /* Contact i struck in the step: a row just before, Newton's law, a row
  * just after (both with event index nev + i), and the method restarted. */
-static qd_status strike(qd__run *r, loop *L, size_t i) {
+static qd_status strike(qd__sim_run *r, loop *L, size_t i) {
     qd_sim *s = r->s;
     size_t k = s->nev + i;
     back_to(r, L, r->ev_t[k], r->ev_y + k * r->it->dim);
@@ -658,8 +658,8 @@ static qd_status strike(qd__run *r, loop *L, size_t i) {
     if (st != QD_OK)
         return st;
     emit(L->em, (int)k, r->row);
-    qd__impact_result res;
-    st = qd__impact_apply(r, i, r->it->t, r->it->y, &res);
+    qd__sim_impact_result res;
+    st = qd__sim_impact_apply(r, i, r->it->t, r->it->y, &res);
     L->stats->impacts += res.count;
     return st == QD_OK ? after_impact(r, L, i, &res) : st;
 }
@@ -667,12 +667,12 @@ static qd_status strike(qd__run *r, loop *L, size_t i) {
 /* A friction switch (event fev0 + k) in the step: back to it, the modes
  * chosen again, a row after it (event index nev + nimp + contact), and the
  * method restarted.  A paradox ends the run with a row at it. */
-static qd_status switch_modes(qd__run *r, loop *L, size_t k) {
+static qd_status switch_modes(qd__sim_run *r, loop *L, size_t k) {
     qd_sim *s = r->s;
-    qd__integ *it = r->it;
-    size_t e = qd__fev0(s) + k;
+    qd__sim_integ *it = r->it;
+    size_t e = qd__sim_fev0(s) + k;
     back_to(r, L, r->ev_t[e], r->ev_y + e * it->dim);
-    qd_status st = qd__fric_select(r, it->t, it->y, k);
+    qd_status st = qd__sim_fric_select(r, it->t, it->y, k);
     qd_status st_row = make_row(r, L->ms, it->t, it->y, r->row);
     if (st_row == QD_OK)
         emit(L->em, (int)(s->nev + s->nimp + k / 2), r->row);
@@ -682,7 +682,7 @@ static qd_status switch_modes(qd__run *r, loop *L, size_t k) {
     /* a contact that starts to slip starts at v = 0: no switch there */
     for (size_t c = 0; st == QD_OK && c < s->nfc; c++)
         if (s->fr->fresh[c])
-            r->gold[qd__fev0(s) + 2 * c] = 0;
+            r->gold[qd__sim_fev0(s) + 2 * c] = 0;
     return st;
 }
 
@@ -691,9 +691,9 @@ static qd_status switch_modes(qd__run *r, loop *L, size_t k) {
  * adaptive method retries from just after the impact with a step 16 times
  * shorter; otherwise (or after 6 tries) the rebound is below what the
  * steps resolve, and the contact comes to rest. */
-static qd_status unresolved(qd__run *r, loop *L) {
-    qd__integ *it = r->it;
-    qd__impacts *im = r->imp;
+static qd_status unresolved(qd__sim_run *r, loop *L) {
+    qd__sim_integ *it = r->it;
+    qd__sim_impacts *im = r->imp;
     size_t i = im->unresolved;
     bool fresh = im->fresh[i];
     double h = it->t - it->told;
@@ -703,15 +703,15 @@ static qd_status unresolved(qd__run *r, loop *L) {
         it->rejected++;
         return restart(r, L, h / 16);
     }
-    qd__impact_result res;
-    qd_status st = qd__impact_rest(r, i, it->t, it->y, &res);
+    qd__sim_impact_result res;
+    qd_status st = qd__sim_impact_rest(r, i, it->t, it->y, &res);
     return st == QD_OK ? after_impact(r, L, i, &res) : st;
 }
 
 /* One step with its projection, events and rows. */
-static qd_status step(qd__run *r, loop *L, size_t *grid) {
+static qd_status step(qd__sim_run *r, loop *L, size_t *grid) {
     qd_sim *s = r->s;
-    qd__integ *it = r->it;
+    qd__sim_integ *it = r->it;
     const qd_sim_opts *o = L->o;
     bool last, every = o->every > 0 ? false : L->fixed || !(o->dt > 0);
     bool project = s->m && !o->no_project && o->method != QD_SIM_BDF &&
@@ -749,17 +749,17 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
         it->y_changed = true;
     } else if (project) {
         size_t n = s->n;
-        st = qd__run_velocity(r, it->t, it->y);
+        st = qd__sim_run_velocity(r, it->t, it->y);
         if (st == QD_OK)
-            st = qd__project(s, it->t, it->y, r->qd);
+            st = qd__sim_project(s, it->t, it->y, r->qd);
         if (st != QD_OK)
             return st;
         memcpy(it->y + n, r->qd, n * sizeof *r->qd);
         it->y_changed = true;
     }
-    size_t ne = qd__nev_all(s), impact = s->nimp, fric;
-    if (ne && (st = qd__run_events_at(r, it->t, it->y, r->gnew, NULL)) == QD_OK)
-        st = qd__events_locate(r);
+    size_t ne = qd__sim_nev_all(s), impact = s->nimp, fric;
+    if (ne && (st = qd__sim_run_events_at(r, it->t, it->y, r->gnew, NULL)) == QD_OK)
+        st = qd__sim_events_locate(r);
     if (st != QD_OK)
         return st;
     if (r->imp && r->imp->unresolved < s->nimp)
@@ -785,10 +785,10 @@ static qd_status step(qd__run *r, loop *L, size_t *grid) {
     return QD_OK;
 }
 
-static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measure *ms,
+static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, measure *ms,
                            qd_sim_stats *stats) {
     qd_sim *s = r->s;
-    qd__integ *it = r->it;
+    qd__sim_integ *it = r->it;
     loop L = {.o = o, .em = em, .ms = ms, .stats = stats,
               .fixed = !qd_sim_method_adaptive(o->method) || o->fixed};
     size_t grid = 1;
@@ -796,7 +796,7 @@ static qd_status integrate(qd__run *r, const qd_sim_opts *o, emitter *em, measur
     if (st != QD_OK)
         return st;
     emit(em, -1, r->row);
-    if (qd__nev_all(s) && (st = qd__run_events_at(r, it->t, it->y, r->gold, NULL)) != QD_OK)
+    if (qd__sim_nev_all(s) && (st = qd__sim_run_events_at(r, it->t, it->y, r->gold, NULL)) != QD_OK)
         return st;
     while (!L.stop && !em->stopped && it->t < o->t_end) {
         if (it->steps >= max_steps(o)) {
@@ -832,7 +832,7 @@ static qd_status given_finite(const qd_sim *s, const qd_sim_opts *o) {
 }
 
 /* The state made of them (projected, its momenta) finite. */
-static qd_status initial_finite(qd__run *r) {
+static qd_status initial_finite(qd__sim_run *r) {
     for (size_t j = 0; j < r->it->dim; j++)
         if (!isfinite(r->it->y[j])) {
             qd_ctx_error(r->s->ctx, QD_ERR_ARG, "the initial state is not finite (%s = %g)",
@@ -883,20 +883,20 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         stats->stop = (qd_sim_stop){QD_STOP_REFUSED, NAN, NAN};
         return st;
     }
-    qd__integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
-                    .dim = s->se ? s->n + s->nu : 2 * s->n + qd__fric_nextra(s),
+    qd__sim_integ it = {.s = s, .method = o->method, .ops = method_ops[o->method],
+                    .dim = s->se ? s->n + s->nu : 2 * s->n + qd__sim_fric_nextra(s),
                     .t = o->t0, .tend = o->t_end,
                     .rtol = o->rtol > 0 ? o->rtol : 1e-10, .atol = o->atol > 0 ? o->atol : 1e-12,
                     .fixed = o->fixed, .h = o->fixed ? o->dt : 0, .precision = o->precision};
     it.form = s->se ? QD__SPD
               : s->hamilton || (symplectic(o->method) && s->canonical) ? QD__HAM : QD__LAG;
-    qd__run r = {.s = s, .it = &it};
+    qd__sim_run r = {.s = s, .it = &it};
     size_t ncols = qd_sim_columns(s, o->method, NULL, 0);
     st = run_alloc(&r, &it, ncols);
     if (st == QD_OK)
-        st = qd__impacts_new(&r);
+        st = qd__sim_impacts_new(&r);
     if (st == QD_OK)
-        st = qd__fric_run_new(s);
+        st = qd__sim_fric_run_new(s);
     if (st == QD_OK)
         st = given_finite(s, o);
     if (st == QD_OK)
@@ -904,16 +904,16 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     if (st == QD_OK && s->m && !o->no_project && !s->hamilton) /* what the projection moved */
         initial_moved(s->n, o, it.y, s->se || o->u0 ? NULL : r.qd, stats);
     if (st == QD_OK && s->nimp)
-        st = qd__impact_check_start(&r, it.t, it.y);
+        st = qd__sim_impact_check_start(&r, it.t, it.y);
     if (st == QD_OK)
         st = initial_finite(&r);
     if (st == QD_OK)
         st = it.ops->init(&it);
     measure ms = {0};
     if (st == QD_OK) {
-        st = qd__run_velocity(&r, it.t, it.y);
+        st = qd__sim_run_velocity(&r, it.t, it.y);
         if (st == QD_OK) {
-            qd__aux_eval(s, it.t, it.y, qd__second(s, it.y, r.qd));
+            qd__sim_aux_eval(s, it.t, it.y, qd__sim_second(s, it.y, r.qd));
             ms.E0 = s->aux_out[0];
             /* a start outside the model's domain would print a row of NaN */
             if (!isfinite(ms.E0))
@@ -988,8 +988,8 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
     for (size_t c = 0; con_err && w.con_err && c < s->m; c++)
         con_err[c] = w.con_err[c];
     if (keep)
-        qd__fric_keep(keep, &w);
-    qd__fric_run_free(&w);
+        qd__sim_fric_keep(keep, &w);
+    qd__sim_fric_run_free(&w);
     qd__sim_ws_free(&w);
     return st;
 }

@@ -79,12 +79,12 @@ static qd_status analyse(qd_sim *s) {
     s->has_T = e->T != NULL;
     s->T_expr = s->has_T ? e->T : qd_int(ctx, 0);
     if (s->has_T)
-        qd__speeds_defs(s, 1, &s->T_expr);
+        qd__sim_speeds_defs(s, 1, &s->T_expr);
     s->conservative = !qd_has(L, qd_time(ctx)) && !forces && !(D && !qd_is_zero(D));
     return qd_ctx_status(ctx) == QD_OK && s->h_expr && s->T_expr ? QD_OK : qd_ctx_status(ctx);
 }
 
-void qd__speeds_defs(qd_sim *s, size_t n, const qd_expr **x) {
+void qd__sim_speeds_defs(qd_sim *s, size_t n, const qd_expr **x) {
     const qd_speeds_eom *e = s->se;
     for (size_t i = 0; i < n; i++)
         x[i] = qd_subs(s->ctx, x[i], s->nu, e->u, e->def);
@@ -104,7 +104,7 @@ static qd_status check(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {
         return refuse(ctx, "impacts are not simulated in generalized speeds (Newton's law "
                            "is written for the velocities): integrate the multiplier form "
                            "(--no-speeds)");
-    return qd__fric_refuse(ctx, m, "in generalized speeds (--no-speeds)");
+    return qd__sim_fric_refuse(ctx, m, "in generalized speeds (--no-speeds)");
 }
 
 qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e) {
@@ -139,7 +139,7 @@ size_t qd_sim_nspeeds(const qd_sim *s) { QD_ARGS(0, s); return s->nu; }
 /* q, t and u into the inputs (the velocities' block is left as it is). */
 static void set_qu(qd_sim *s, double t, const double *y) {
     size_t n = s->n;
-    double *u = qd__in_speeds(s);
+    double *u = qd__sim_in_speeds(s);
     for (size_t j = 0; j < n; j++)
         s->in[j] = y[j];
     s->in[2 * n] = t;
@@ -147,7 +147,7 @@ static void set_qu(qd_sim *s, double t, const double *y) {
         u[r] = y[n + r];
 }
 
-qd_status qd__speeds_rhs(qd_sim *s, double t, const double *y, double *dy) {
+qd_status qd__sim_speeds_rhs(qd_sim *s, double t, const double *y, double *dy) {
     size_t n = s->n, nu = s->nu;
     set_qu(s, t, y);
     qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
@@ -167,11 +167,11 @@ qd_status qd__speeds_rhs(qd_sim *s, double t, const double *y, double *dy) {
     return QD_ERR_SINGULAR;
 }
 
-void qd__speeds_velocity(qd_sim *s, double t, const double *y, double *qd) {
+void qd__sim_speeds_velocity(qd_sim *s, double t, const double *y, double *qd) {
     set_qu(s, t, y);
     qd_prog_eval(s->kin, s->kin_w, s->in, qd);
 }
 
-void qd__speeds_from(qd_sim *s, double t, const double *q, const double *qd, double *u) {
-    qd__prog_at(s, s->udef, s->udef_w, t, q, qd, u);
+void qd__sim_speeds_from(qd_sim *s, double t, const double *q, const double *qd, double *u) {
+    qd__sim_prog_at(s, s->udef, s->udef_w, t, q, qd, u);
 }

@@ -46,7 +46,7 @@ static void symmetric(const double *y, size_t m, double *out) {
     out[m] = 1 - 2 * sum;
 }
 
-static qd_status init_w(qd__integ *it, const double *w, size_t nw) {
+static qd_status init_w(qd__sim_integ *it, const double *w, size_t nw) {
     qd_sim *s = it->s;
     if (!s->separable) {
         qd_ctx_error(s->ctx, QD_ERR_ARG,
@@ -72,7 +72,7 @@ static qd_status init_w(qd__integ *it, const double *w, size_t nw) {
     return QD_OK;
 }
 
-static void split_free(qd__integ *it) {
+static void split_free(qd__sim_integ *it) {
     split *sp = it->priv;
     if (sp)
         qd__free(sp->F);
@@ -80,16 +80,16 @@ static void split_free(qd__integ *it) {
     it->priv = NULL;
 }
 
-static void force(qd__integ *it, split *sp, const double *q) {
+static void force(qd__sim_integ *it, split *sp, const double *q) {
     /* F depends on q only: the velocity slots are ignored */
     memset(sp->qd, 0, it->s->n * sizeof *sp->qd);
-    qd__force(it->s, it->t, q, sp->qd, sp->F);
+    qd__sim_force(it->s, it->t, q, sp->qd, sp->F);
     it->s->evals++;
     sp->F_valid = true;
 }
 
 /* The composition from (q, p) in y, in place. */
-static qd_status compose(qd__integ *it, split *sp, double *y, double h) {
+static qd_status compose(qd__sim_integ *it, split *sp, double *y, double h) {
     size_t n = it->s->n;
     double *q = y, *p = y + n;
     for (size_t k = 0; k < sp->nw; k++) {
@@ -98,7 +98,7 @@ static qd_status compose(qd__integ *it, split *sp, double *y, double h) {
             force(it, sp, q);
         for (size_t j = 0; j < n; j++)
             p[j] += 0.5 * hk * sp->F[j];
-        qd_status st = qd__drift_velocity(it->s, p, sp->v);
+        qd_status st = qd__sim_drift_velocity(it->s, p, sp->v);
         if (st != QD_OK)
             return st;
         for (size_t j = 0; j < n; j++)
@@ -110,7 +110,7 @@ static qd_status compose(qd__integ *it, split *sp, double *y, double h) {
     return QD_OK;
 }
 
-static qd_status split_step(qd__integ *it) {
+static qd_status split_step(qd__sim_integ *it) {
     split *sp = it->priv;
     if (it->y_changed)
         sp->F_valid = false;
@@ -122,7 +122,7 @@ static qd_status split_step(qd__integ *it) {
     return st;
 }
 
-static qd_status split_redo(qd__integ *it, double h, double *y) {
+static qd_status split_redo(qd__sim_integ *it, double h, double *y) {
     split *sp = it->priv;
     memcpy(y, it->yold, it->dim * sizeof *y);
     sp->F_valid = false;
@@ -131,10 +131,10 @@ static qd_status split_redo(qd__integ *it, double h, double *y) {
     return st;
 }
 
-static qd_status init2(qd__integ *it) { return init_w(it, W2, 1); }
-static qd_status init4(qd__integ *it) { return init_w(it, W4, 3); }
+static qd_status init2(qd__sim_integ *it) { return init_w(it, W2, 1); }
+static qd_status init4(qd__sim_integ *it) { return init_w(it, W4, 3); }
 /* The weights w_m .. w_0 .. w_m from Yoshida's m into the run's own buffer. */
-static qd_status init_yoshida(qd__integ *it, const double *y, size_t m) {
+static qd_status init_yoshida(qd__sim_integ *it, const double *y, size_t m) {
     qd_status st = init_w(it, NULL, 2 * m + 1);
     if (st == QD_OK) {
         split *sp = it->priv;
@@ -143,10 +143,10 @@ static qd_status init_yoshida(qd__integ *it, const double *y, size_t m) {
     }
     return st;
 }
-static qd_status init6(qd__integ *it) { return init_yoshida(it, Y6, 3); }
-static qd_status init8(qd__integ *it) { return init_yoshida(it, Y8, 7); }
+static qd_status init6(qd__sim_integ *it) { return init_yoshida(it, Y6, 3); }
+static qd_status init8(qd__sim_integ *it) { return init_yoshida(it, Y8, 7); }
 
-const qd__method qd__verlet = {init2, split_step, NULL, split_redo, split_free};
-const qd__method qd__yoshida4 = {init4, split_step, NULL, split_redo, split_free};
-const qd__method qd__yoshida6 = {init6, split_step, NULL, split_redo, split_free};
-const qd__method qd__yoshida8 = {init8, split_step, NULL, split_redo, split_free};
+const qd__sim_method qd__sim_verlet = {init2, split_step, NULL, split_redo, split_free};
+const qd__sim_method qd__sim_yoshida4 = {init4, split_step, NULL, split_redo, split_free};
+const qd__sim_method qd__sim_yoshida6 = {init6, split_step, NULL, split_redo, split_free};
+const qd__sim_method qd__sim_yoshida8 = {init8, split_step, NULL, split_redo, split_free};

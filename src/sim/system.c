@@ -236,7 +236,7 @@ static char *second_name(const qd_sim *s, size_t j) {
 /* t, q, q', p (or, in speeds: t, q, u, q'), energy, res_c. */
 qd_status qd__sim_names(qd_sim *s) {
     size_t n = s->n, k = 0, nsecond = s->se ? s->nu : n;
-    s->nnames = 2 * n + nsecond + 2 + s->m + (s->nfc ? 2 * s->nfc + qd__fric_nextra(s) : 0);
+    s->nnames = 2 * n + nsecond + 2 + s->m + (s->nfc ? 2 * s->nfc + qd__sim_fric_nextra(s) : 0);
     s->names = qd__calloc(s->ctx, s->nnames, sizeof *s->names);
     s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
     s->con_err_last = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err_last);
@@ -291,11 +291,11 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     if (st == QD_OK)
         st = compile_canonical(s);
     if (st == QD_OK)
-        st = qd__fric_setup(s);
+        st = qd__sim_fric_setup(s);
     if (st == QD_OK)
         st = qd__sim_names(s);
     if (st == QD_OK)
-        st = qd__impact_setup(s);
+        st = qd__sim_impact_setup(s);
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "cannot compile the equations for simulation");
@@ -309,9 +309,9 @@ void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
     qd__free(s->con_err_last);
-    qd__impact_free(s);
-    qd__fric_free(s);
-    qd__taylor_native_free(s);
+    qd__sim_impact_free(s);
+    qd__sim_fric_free(s);
+    qd__sim_taylor_native_free(s);
     qd_prog_free(s->acc);
     qd_prog_free(s->con);
     qd_prog_free(s->mom);
@@ -412,17 +412,17 @@ qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
     for (size_t i = 0; i < nguard; i++)
         s->guard_expr[s->nguard++] = guard[i];
     s->ev_expr[s->nev] = g;
-    s->ev[s->nev++] = (qd__event){.stop = stop, .nguard = nguard};
+    s->ev[s->nev++] = (qd__sim_event){.stop = stop, .nguard = nguard};
     return QD_OK;
 }
 
-qd_status qd__aux_compile(qd_sim *s) {
+qd_status qd__sim_aux_compile(qd_sim *s) {
     if (s->aux_ready)
         return QD_OK;
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
     s->aux = s->en = NULL;
-    size_t total = qd__aux_guard(s) + s->nguard, k = 0;
+    size_t total = qd__sim_aux_guard(s) + s->nguard, k = 0;
     const qd_expr **outs = qd__malloc(s->ctx, (total + 1) * sizeof *outs);
     if (!outs)
         return QD_ERR_NOMEM;
@@ -439,9 +439,9 @@ qd_status qd__aux_compile(qd_sim *s) {
     for (size_t i = 0; i < s->nguard; i++)
         outs[k++] = s->guard_expr[i];
     if (s->hamilton)
-        qd__hamilton_velocities(s, k - 2, outs + 2);
+        qd__sim_hamilton_velocities(s, k - 2, outs + 2);
     if (s->se)
-        qd__speeds_defs(s, k - 2, outs + 2);
+        qd__sim_speeds_defs(s, k - 2, outs + 2);
     s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
     s->aux_lambda = s->aux_acc = false;
     /* in speeds the multipliers are not inputs: compiling names them */
@@ -463,7 +463,7 @@ qd_status qd__aux_compile(qd_sim *s) {
 qd_status qd_sim_compile(qd_sim *s) {
     QD_ARGS(QD_ERR_ARG, s);
     qd_status st = qd__sim_uin_compile(s);
-    return st == QD_OK ? qd__aux_compile(s) : st;
+    return st == QD_OK ? qd__sim_aux_compile(s) : st;
 }
 
 bool qd_sim_compiled(const qd_sim *s) { QD_ARGS(false, s); return s->aux_ready; }
@@ -554,13 +554,13 @@ static void set_state(qd_sim *s, double t, const double *q, const double *qd) {
 
 static bool saddle_solve(qd_sim *s, double t, const double *y);
 
-void qd__prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const double *q,
+void qd__sim_prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const double *q,
                  const double *qd, double *out) {
     set_state(s, t, q, qd);
     qd_prog_eval(p, work, s->in, out);
 }
 
-void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
+void qd__sim_aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
     if (s->aux_lambda || s->aux_acc) {
         /* the multipliers and accelerations at this state: the saddle-point
@@ -575,7 +575,7 @@ void qd__aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
     qd_prog_eval(s->aux, s->aux_w, s->in, s->aux_out);
 }
 
-const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double *qd) {
+const double *qd__sim_energy_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
     if (!s->en) {
         qd_prog_eval(s->aux, s->aux_w, s->in, s->aux_out);
@@ -585,7 +585,7 @@ const double *qd__energy_eval(qd_sim *s, double t, const double *q, const double
     return s->en_out;
 }
 
-void qd__con_eval(qd_sim *s, double t, const double *q, const double *qd) {
+void qd__sim_con_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
     qd_prog_eval(s->con, s->con_w, s->in, s->con_out);
 }
@@ -688,7 +688,7 @@ static bool saddle_solve(qd_sim *s, double t, const double *y) {
     const double *A = f + n, *b = A + m * n;
     qd__num_saddle(n, m, M, f, A, b, s->K, s->rhs);
     if (s->fr)
-        qd__fric_saddle(s, s->K, s->rhs);
+        qd__sim_fric_saddle(s, s->K, s->rhs);
     return qd__num_solve(N, s->K, s->rhs, 1e-13 * (double)N);
 }
 
@@ -714,9 +714,9 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         }
         memcpy(dy + n, s->rhs, n * sizeof *dy);
         if (s->fr)
-            dy[2 * n] = qd__fric_power(s);
+            dy[2 * n] = qd__sim_fric_power(s);
         if (s->fr && s->rheo)
-            dy[2 * n + 1] = qd__fric_surface_power(s);
+            dy[2 * n + 1] = qd__sim_fric_surface_power(s);
         return QD_OK;
     }
     set_state(s, t, y, y + n);
@@ -725,7 +725,7 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
     return solve_mass(s, t, M, f, dy + n);
 }
 
-qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, double *qd) {
+qd_status qd__sim_velocity(qd_sim *s, double t, const double *q, const double *p, double *qd) {
     size_t n = s->n;
     if (s->hamilton) {
         set_state(s, t, q, p);
@@ -739,7 +739,7 @@ qd_status qd__velocity(qd_sim *s, double t, const double *q, const double *p, do
     return solve_mass(s, t, s->mom_out, qd, qd);
 }
 
-void qd__momentum(qd_sim *s, double t, const double *q, const double *qd, double *p) {
+void qd__sim_momentum(qd_sim *s, double t, const double *q, const double *qd, double *p) {
     size_t n = s->n;
     set_state(s, t, q, qd);
     qd_prog_eval(s->mom, s->mom_w, s->in, s->mom_out);
@@ -750,12 +750,12 @@ void qd__momentum(qd_sim *s, double t, const double *q, const double *qd, double
     }
 }
 
-void qd__force(qd_sim *s, double t, const double *q, const double *qd, double *F) {
+void qd__sim_force(qd_sim *s, double t, const double *q, const double *qd, double *F) {
     set_state(s, t, q, qd);
     qd_prog_eval(s->force, s->force_w, s->in, F);
 }
 
-qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd) {
+qd_status qd__sim_drift_velocity(qd_sim *s, const double *p, double *qd) {
     if (s->hamilton) {
         /* separable: dH/dp depends on p alone */
         for (size_t j = 0; j < s->n; j++)
@@ -768,19 +768,19 @@ qd_status qd__drift_velocity(qd_sim *s, const double *p, double *qd) {
     return solve_mass(s, s->tnow, s->mom_out, p, qd);
 }
 
-static qd_status form_rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy) {
+static qd_status form_rhs(qd_sim *s, qd__sim_form form, double t, const double *y, double *dy) {
     if (form == QD__LAG)
         return lag_rhs(s, t, y, dy);
     if (form == QD__SPD)
-        return qd__speeds_rhs(s, t, y, dy);
+        return qd__sim_speeds_rhs(s, t, y, dy);
     size_t n = s->n;
-    qd_status st = qd__velocity(s, t, y, y + n, dy);
+    qd_status st = qd__sim_velocity(s, t, y, y + n, dy);
     if (st == QD_OK)
-        qd__force(s, t, y, qd__second(s, y, dy), dy + n);
+        qd__sim_force(s, t, y, qd__sim_second(s, y, dy), dy + n);
     return st;
 }
 
-qd_status qd__rhs(qd_sim *s, qd__form form, double t, const double *y, double *dy) {
+qd_status qd__sim_rhs(qd_sim *s, qd__sim_form form, double t, const double *y, double *dy) {
     s->evals++;
     if (s->ext_rhs)
         return s->ext_rhs(s->ext_data, t, y, dy);

@@ -107,7 +107,7 @@ static qd_status refuse(qd_sim *s, const char *why) {
 }
 
 /* The solve's layout and the sources of the derivatives, per form. */
-static void layout(tay *T, const qd__integ *it) {
+static void layout(tay *T, const qd__sim_integ *it) {
     const qd_sim *s = it->s;
     size_t n = s->n;
     for (size_t i = 0; i < T->dim; i++) {
@@ -155,7 +155,7 @@ static qd__tay_prec prec_of(int precision) {
     return precision == 128 ? QD__TAY_QUAD : precision == 80 ? QD__TAY_LONG : QD__TAY_DOUBLE;
 }
 
-static qd_status check(qd__integ *it) {
+static qd_status check(qd__sim_integ *it) {
     qd_sim *s = it->s;
     if (s->nuin)
         return refuse(s, "a model with inputs (a table or a callback has no Taylor series): "
@@ -175,7 +175,7 @@ static qd_status check(qd__integ *it) {
     return QD_OK;
 }
 
-static qd_status alloc(tay *T, qd__integ *it) {
+static qd_status alloc(tay *T, qd__sim_integ *it) {
     qd_ctx *ctx = it->s->ctx;
     size_t d = T->dim, N = it->s->n + it->s->m + it->s->nu, sz = T->ops->size;
     T->in_of = qd__malloc(ctx, (4 * d + 2 * N + 1) * sizeof *T->in_of);
@@ -205,16 +205,16 @@ static qd_status alloc(tay *T, qd__integ *it) {
 }
 
 /* The Taylor mode of the form's programs, the state and time varying. */
-static qd_status make_tay(tay *T, qd__integ *it) {
+static qd_status make_tay(tay *T, qd__sim_integ *it) {
     qd_sim *s = it->s;
     const qd_prog *progs[2];
     size_t np;
-    qd__taylor_inputs(s, progs, &np, T->var);
+    qd__sim_taylor_inputs(s, progs, &np, T->var);
     T->tp = qd__tay_new(s->ctx, np, progs, T->var, T->pmax, prec_of(it->precision));
     if (!T->tp)
         return qd_ctx_status(s->ctx) != QD_OK ? qd_ctx_status(s->ctx) : QD_ERR_NOMEM;
     if (!it->precision || it->precision == 64)
-        qd__tay_set_native(T->tp, qd__taylor_native_for(s, T->tp));
+        qd__tay_set_native(T->tp, qd__sim_taylor_native_for(s, T->tp));
     size_t sz = T->ops->size;
     /* t = t0 + 1 (t - t0): coefficient 1 is 1, the rest 0 */
     char *tc = qd__tay_in(T->tp, T->tin);
@@ -257,7 +257,7 @@ static void tables(tay *T) {
     }
 }
 
-static qd_status taylor_init(qd__integ *it) {
+static qd_status taylor_init(qd__sim_integ *it) {
     qd_sim *s = it->s;
     qd_status st = check(it);
     if (st != QD_OK)
@@ -288,7 +288,7 @@ static qd_status taylor_init(qd__integ *it) {
 }
 
 /* Jorba and Zou's order and the tolerance's scale m from ||y_0||. */
-static size_t step_order(const qd__integ *it, tay *T, double *m) {
+static size_t step_order(const qd__sim_integ *it, tay *T, double *m) {
     double y0 = T->ops->norm(T, 0);
     bool absolute = it->rtol * y0 <= it->atol;
     *m = absolute ? 1 : y0;
@@ -310,7 +310,7 @@ static double jz_step(tay *T, size_t p, double m) {
     return rho * exp(-2.0 - 0.7 / (double)(p - 1));
 }
 
-static qd_status taylor_step(qd__integ *it) {
+static qd_status taylor_step(qd__sim_integ *it) {
     tay *T = it->priv;
     qd_sim *s = it->s;
     if (it->y_changed)
@@ -333,7 +333,7 @@ static qd_status taylor_step(qd__integ *it) {
     if (!(h > 0) || !isfinite(h))
         return qd__sim_not_finite(s, it->t, "the Taylor series of the solution is");
     if (h <= 1e-14 * fabs(it->t))
-        return qd__underflow(it, h);
+        return qd__sim_underflow(it, h);
     memcpy(it->yold, it->y, it->dim * sizeof *it->y);
     /* the driver cut the step to end at t_end */
     bool to_end = !it->fixed && h == it->h && it->t + h >= it->tend;
@@ -349,12 +349,12 @@ static qd_status taylor_step(qd__integ *it) {
     return QD_OK;
 }
 
-static void taylor_dense(qd__integ *it, double t, double *y) {
+static void taylor_dense(qd__sim_integ *it, double t, double *y) {
     tay *T = it->priv;
     T->ops->dense(T, t - it->told, y);
 }
 
-static void taylor_free(qd__integ *it) {
+static void taylor_free(qd__sim_integ *it) {
     tay *T = it->priv;
     if (!T)
         return;
@@ -368,4 +368,4 @@ static void taylor_free(qd__integ *it) {
     it->priv = NULL;
 }
 
-const qd__method qd__taylor = {taylor_init, taylor_step, taylor_dense, NULL, taylor_free};
+const qd__sim_method qd__sim_taylor = {taylor_init, taylor_step, taylor_dense, NULL, taylor_free};

@@ -24,7 +24,7 @@
 /* The form taylor integrates (run.c: not symplectic). */
 static bool speeds_form(const qd_sim *s) { return s->se != NULL; }
 
-void qd__taylor_inputs(const qd_sim *s, const qd_prog *progs[2], size_t *np, bool *var) {
+void qd__sim_taylor_inputs(const qd_sim *s, const qd_prog *progs[2], size_t *np, bool *var) {
     size_t n = s->n;
     memset(var, 0, s->nin * sizeof *var);
     for (size_t i = 0; i < (speeds_form(s) ? n : 2 * n); i++)
@@ -58,7 +58,7 @@ static qd_status emit(qd_sim *s, qd_buf *text) {
     bool *var = qd__malloc(s->ctx, s->nin + 1);
     if (!var)
         return QD_ERR_NOMEM;
-    qd__taylor_inputs(s, progs, &np, var);
+    qd__sim_taylor_inputs(s, progs, &np, var);
     qd__tay *tp = qd__tay_new(s->ctx, np, progs, var, 1, QD__TAY_DOUBLE);
     qd__free(var);
     if (!tp)
@@ -72,30 +72,30 @@ qd_status qd_sim_load_native_taylor(qd_sim *s, const char *cache_dir, bool *cach
     QD_ARGS(QD_ERR_ARG, s);
     if (!s)
         return QD_ERR_ARG;
-    qd__taylor_native_free(s);
+    qd__sim_taylor_native_free(s);
     qd_buf text = QD_BUF_WITH(qd__ctx_allocator(s->ctx));
     char path[4096];
     bool was = false;
     qd_status st = emit(s, &text);
     if (st == QD_OK)
-        st = qd__native_object(s->ctx, qd_buf_str(&text), GENERATOR, cache_dir, path, &was,
+        st = qd__cg_native_object(s->ctx, qd_buf_str(&text), GENERATOR, cache_dir, path, &was,
                                &s->tay_handle);
     qd_buf_free(&text);
     if (st == QD_OK)
         st = bind(s->ctx, s, path);
     if (st != QD_OK)
-        qd__taylor_native_free(s);
+        qd__sim_taylor_native_free(s);
     if (cached)
         *cached = st == QD_OK && was;
     return st;
 }
 
-qd__tay_native qd__taylor_native_for(const qd_sim *s, const qd__tay *tp) {
+qd__tay_native qd__sim_taylor_native_for(const qd_sim *s, const qd__tay *tp) {
     return s->tay_native && qd__tay_native_fits(tp, s->tay_nreg, s->tay_nlive) ? s->tay_native
                                                                                  : NULL;
 }
 
-void qd__taylor_native_free(qd_sim *s) {
+void qd__sim_taylor_native_free(qd_sim *s) {
     if (s->tay_handle)
         dlclose(s->tay_handle);
     s->tay_handle = NULL;

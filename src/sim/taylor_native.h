@@ -12,11 +12,11 @@
 
 /* The programs (*np of them, at most 2) and var[0..s->nin): the state's
  * inputs in the method's form, and t. */
-void qd__taylor_inputs(const qd_sim *s, const qd_prog *progs[2], size_t *np, bool *var);
+void qd__sim_taylor_inputs(const qd_sim *s, const qd_prog *progs[2], size_t *np, bool *var);
 
 /* s's generated recurrences, when loaded and made for tp; else NULL. */
-qd__tay_native qd__taylor_native_for(const qd_sim *s, const qd__tay *tp);
+qd__tay_native qd__sim_taylor_native_for(const qd_sim *s, const qd__tay *tp);
 
-void qd__taylor_native_free(qd_sim *s);
+void qd__sim_taylor_native_free(qd_sim *s);
 
 #endif

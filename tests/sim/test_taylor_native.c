@@ -97,7 +97,7 @@ static void test_every_operation(void **state) {
     char path[4096];
     bool cached;
     void *h;
-    if (qd__native_object(ctx, qd_buf_str(&text), "test", cache, path, &cached, &h) ==
+    if (qd__cg_native_object(ctx, qd_buf_str(&text), "test", cache, path, &cached, &h) ==
         QD_ERR_UNSUPPORTED) {
         qd_buf_free(&text);
         skip(); /* no C compiler here */
