@@ -90,4 +90,10 @@ bool qd__num_quad_finite(qd__num_fn f, void *data, double a, double b, double to
 /* The integral over [a, inf) (exp-sinh), same conventions (xc = x - a). */
 bool qd__num_quad_upper(qd__num_fn f, void *data, double a, double tol, qd__num_quad *r);
 
+/* The Dormand-Prince 5(4) pair and Shampine's dense output (dopri5.c), one
+ * copy for src/sim's method and src/path's Jacobi fields: nodes c, stage
+ * weights a (row 6: the fifth-order result), error weights e, dense P. */
+extern const double qd__num_dp5_c[7], qd__num_dp5_a[7][6], qd__num_dp5_e[7],
+    qd__num_dp5_p[7][4];
+
 #endif
