@@ -512,7 +512,7 @@ static qd_status rates_from_momenta(qd_ctx *ctx, const qd_steady *s, size_t nval
         if (pguess[c])
             pt->w[c] = u[i++];
     if (st != QD_OK && st != QD_ERR_NOMEM)
-        qd_ctx_error(ctx, st, "the momenta given with --guess do not fix the rates at the "
+        qd_ctx_error(ctx, st, "the momenta given as the guess do not fix the rates at the "
                               "starting point: %s", qd_ctx_message(ctx));
     qd__free(u);
     sub_free(&sub);

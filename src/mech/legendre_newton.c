@@ -212,6 +212,6 @@ qd_status qd_ham_require_closed(qd_ctx *ctx, const qd_ham *h, const char *what) 
         return QD_OK;
     qd_ctx_error(ctx, QD_ERR_NONLINEAR, "%s needs H in closed form, but L is not quadratic in "
                  "the velocities and p = dL/dq' has no closed-form solution for q' here (H is "
-                 "defined implicitly; `qdot hamiltonian --at` evaluates it)", what);
+                 "defined implicitly: it can be evaluated at a state, numerically)", what);
     return QD_ERR_NONLINEAR;
 }

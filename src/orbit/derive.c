@@ -174,7 +174,7 @@ static qd_status bind_input(qd_ctx *ctx, const qd_expr *s, size_t n, const qd_ex
             *v = vals[k];
             return QD_OK;
         }
-    qd_ctx_error(ctx, QD_ERR_UNBOUND, "%s has no value: give it with --set", qd_expr_name(s));
+    qd_ctx_error(ctx, QD_ERR_UNBOUND, "%s has no value: give it one", qd_expr_name(s));
     return QD_ERR_UNBOUND;
 }
 

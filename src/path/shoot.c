@@ -1097,7 +1097,7 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     if (st != QD_OK)
         goto done;
     if (energy && !qd_is_zero(qd_diff(ctx, e->L, qd_time(ctx)))) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "path --energy: L depends on t, so h is not conserved");
+        qd_ctx_error(ctx, QD_ERR_ARG, "a path of given energy: L depends on t, so h is not conserved");
         st = QD_ERR_ARG;
         goto done;
     }

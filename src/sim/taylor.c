@@ -161,13 +161,13 @@ static qd_status check(qd__sim_integ *it) {
         return refuse(s, "a model with inputs (a table or a callback has no Taylor series): "
                          "use dop853");
     if (it->precision && it->precision != 64 && it->precision != 80 && it->precision != 128) {
-        qd_ctx_error(s->ctx, QD_ERR_ARG, "--precision is 64, 80 or 128 (bits of the "
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "the precision is 64, 80 or 128 (bits of the "
                      "significand's type: double, long double, __float128)");
         return QD_ERR_ARG;
     }
 #ifndef QD_HAVE_QUADMATH
     if (it->precision == 128) {
-        qd_ctx_error(s->ctx, QD_ERR_UNSUPPORTED, "--precision 128 needs libquadmath, which "
+        qd_ctx_error(s->ctx, QD_ERR_UNSUPPORTED, "precision 128 needs libquadmath, which "
                      "this build lacks");
         return QD_ERR_UNSUPPORTED;
     }

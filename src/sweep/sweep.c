@@ -119,7 +119,7 @@ qd_status qd_sweep_random(qd_sweep *w, const char *spec, size_t n, uint64_t seed
     qd__sweep_free_inputs(w);
     qd_status st = qd__sweep_parse_axes(w, spec, false);
     if (st == QD_OK && n == 0) {
-        qd_ctx_error(w->ctx, QD_ERR_ARG, "a random sweep needs at least one run (--n)");
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "a random sweep needs at least one run");
         st = QD_ERR_ARG;
     }
     w->how = QD__SW_RANDOM;
