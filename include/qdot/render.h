@@ -21,6 +21,7 @@
 #include "print.h"
 #include "speeds.h"
 #include "form.h"
+#include "impulse.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -135,6 +136,18 @@ QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e
  * QD_ERR_ARG for another format. */
 QD_API qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
                                  qd_render_format fmt, qd_buf *out);
+
+/* ---- impulsive motion (qdot/impulse.h) ----------------------------------- */
+
+/* Append r, the answer of qd_impulse_solve on m, to out: text (the
+ * velocities before and after with their closed forms, the blows'
+ * generalized impulses, the multipliers, redundant rows and reactions, the
+ * energies, the theorems that apply and, for a collision, the lab and
+ * centre-of-mass description), JSON (the same for programs) or LaTeX (one
+ * align of the closed forms).  QD_ERR_ARG for another format; QD_ERR_NOMEM
+ * when out ran out. */
+QD_API qd_status qd_render_impulse(qd_ctx *ctx, const qd_model *m, const qd_impulse *r,
+                                   qd_render_format fmt, qd_buf *out);
 
 #ifdef __cplusplus
 }
