@@ -311,18 +311,6 @@ static qd_lyap *flow_model(const cli_sim *c) {
     return l;
 }
 
-static void json_matrix(qd_json *j, const char *key, const double *A, size_t d) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < d; i++) {
-        qd_json_begin_array(j);
-        for (size_t k = 0; k < d; k++)
-            qd_json_number(j, A[i * d + k]);
-        qd_json_end_array(j);
-    }
-    qd_json_end_array(j);
-}
-
 /* The state's names: q..., q'... */
 static void state_names(const cli_sim *c, char (*names)[80]) {
     size_t n = c->e->n;
@@ -350,7 +338,7 @@ static void flow_json(qd_json *j, const cli_sim *c, const qd_flow *f, const qd_s
     qd_json_end_array(j);
     qd_json_end_object(j);
     free(names);
-    json_matrix(j, "flow_jacobian", f->phi, d);
+    qd_json_matrix(j, "flow_jacobian", d, d, f->phi);
     qd_json_key(j, "flow_det");
     qd_json_number(j, f->det);
     qd_json_key(j, "liouville_det"); /* exp(integral of tr J) */
@@ -358,7 +346,7 @@ static void flow_json(qd_json *j, const cli_sim *c, const qd_flow *f, const qd_s
     qd_json_key(j, "hamiltonian");
     qd_json_bool(j, f->hamiltonian);
     if (f->hamiltonian) {
-        json_matrix(j, "flow_jacobian_canonical", f->phi_c, d);
+        qd_json_matrix(j, "flow_jacobian_canonical", d, d, f->phi_c);
         qd_json_key(j, "symplectic_error");
         qd_json_number(j, f->symplectic_error);
     } else {
@@ -382,7 +370,7 @@ static void flow_json(qd_json *j, const cli_sim *c, const qd_flow *f, const qd_s
     qd_json_key(j, "closure");
     qd_json_number(j, f->closure);
     if (period > 0)
-        json_matrix(j, "monodromy", f->phi, d);
+        qd_json_matrix(j, "monodromy", d, d, f->phi);
 }
 
 static void flow_summary(const qd_flow *f, double period) {
