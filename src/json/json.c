@@ -169,6 +169,7 @@ const char *qd_json_why(const qd_json *j) {
 }
 
 bool qd_json_matrix(qd_json *j, const char *key, size_t rows, size_t cols, const double *x) {
+    QD_ARGS(false, j && (x || !rows || !cols));
     bool ok = true;
     if (key)
         qd_json_key(j, key);

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include "qdot/json.h"
 #include "qdot/render.h"
+#include "../base/args.h"
 
 /* What every printer below reads. */
 typedef struct imp_view {
@@ -420,6 +421,7 @@ static void write_latex(const imp_view *r, qd_buf *b) {
 
 qd_status qd_render_impulse(qd_ctx *ctx, const qd_model *m, const qd_impulse *res,
                             qd_render_format fmt, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && m && res && out);
     const imp_view v = {ctx, m, res};
     if (fmt == QD_RENDER_JSON)
         write_json(&v, out);

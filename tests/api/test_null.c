@@ -1805,6 +1805,16 @@ static void null_json(void **state)
     /* ctx NULL */
     qd_json_expr(NULL, NULL, F.q);
     reset(&F);
+    /* ---- qd_json_matrix */
+    /* j NULL */
+    assert_true(qd_json_matrix(NULL, "q", 1, 1, F.d) == 0);
+    reset(&F);
+    /* key NULL */
+    assert_true(qd_json_matrix(NULL, NULL, 1, 1, F.d) == 0);
+    reset(&F);
+    /* x NULL */
+    assert_true(qd_json_matrix(NULL, "q", 1, 1, NULL) == 0);
+    reset(&F);
     /* ---- qd_json_ok */
     /* j NULL */
     assert_true(qd_json_ok(NULL) == 0);
@@ -3704,6 +3714,19 @@ static void null_render(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, F.q, NULL, (qd_render_format){0}, NULL));
     reset(&F);
+    /* ---- qd_render_impulse */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_impulse(NULL, F.model, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_impulse(F.ctx, NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_impulse(F.ctx, F.model, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_impulse(F.ctx, F.model, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -4237,6 +4260,10 @@ static void null_sim(void **state)
     /* s NULL */
     (void)qd_sim_default_method(NULL, false);
     reset(&F);
+    /* ---- qd_stop_str */
+    /* no pointer argument */
+    /* ---- qd_stop_ok */
+    /* no pointer argument */
     /* ---- qd_sim_constraint_error */
     /* s NULL */
     assert_true(isnan(qd_sim_constraint_error(NULL, 1)));
