@@ -113,12 +113,11 @@ static qd_status bdf_step(qd__sim_integ *it) {
     if (flag < 0) {
         if (b->rhs_status != QD_OK)
             return b->rhs_status;
-        const char *what = flag == CV_TOO_MUCH_ACC || flag == CV_ERR_FAILURE ||
-                                   flag == CV_CONV_FAILURE
-                               ? "step size underflow"
-                               : "BDF failure";
-        qd__sim_stop(it->s, what[0] == 's' ? QD_STOP_STEP_UNDERFLOW : QD_STOP_SOLVER_FAILURE,
-                     it->t, NAN);
+        bool underflow =
+            flag == CV_TOO_MUCH_ACC || flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE;
+        const char *what = underflow ? "step size underflow" : "BDF failure";
+        qd__sim_stop(it->s, underflow ? QD_STOP_STEP_UNDERFLOW : QD_STOP_SOLVER_FAILURE, it->t,
+                     NAN);
         qd_ctx_error(it->s->ctx, QD_ERR_NUMERIC, "%s at t = %.17g (CVODE %s)", what, it->t,
                      b->message);
         return QD_ERR_NUMERIC;
