@@ -238,18 +238,3 @@ void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf
     else
         cli_state_put_result(b, p->q[j]);
 }
-
-void qd_json_frequency(qd_json *j, double w2) {
-    qd_json_key(j, "omega2");
-    qd_json_number(j, w2);
-    qd_json_key(j, "omega");
-    if (w2 >= 0)
-        qd_json_number(j, sqrt(w2));
-    else
-        qd_json_null(j);
-    qd_json_key(j, "period");
-    if (w2 > 0)
-        qd_json_number(j, 2 * 3.14159265358979323846 / sqrt(w2));
-    else
-        qd_json_null(j);
-}

@@ -96,8 +96,4 @@ int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about);
 /* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json);
 
-/* A mode's "omega2", "omega" and "period" keys (null where w^2 < 0 has no
- * frequency, or w^2 = 0 no period). */
-void qd_json_frequency(qd_json *j, double w2);
-
 #endif

@@ -50,6 +50,13 @@ QD_API void qd_json_expr(qd_json *j, qd_ctx *ctx, const qd_expr *x);
  * refused (not finite). */
 QD_API bool qd_json_matrix(qd_json *j, const char *key, size_t rows, size_t cols,
                            const double *x);
+/* "key": [x[0], ..., x[n-1]] (key NULL: the array alone).  false if an entry
+ * was refused (not finite). */
+QD_API bool qd_json_vector(qd_json *j, const char *key, size_t n, const double *x);
+/* A mode's "omega2", "omega" and "period" keys for the squared frequency w2:
+ * omega null where w2 < 0 (no frequency: the mode grows), period null where
+ * w2 <= 0. */
+QD_API void qd_json_frequency(qd_json *j, double w2);
 /* The document is complete, nothing was refused and no memory ran out. */
 QD_API bool qd_json_ok(const qd_json *j);
 /* Why the document is not ok: "out of memory", "a non-finite number (JSON

@@ -183,3 +183,31 @@ bool qd_json_matrix(qd_json *j, const char *key, size_t rows, size_t cols, const
     qd_json_end_array(j);
     return ok;
 }
+
+bool qd_json_vector(qd_json *j, const char *key, size_t n, const double *x) {
+    QD_ARGS(false, j && (x || !n));
+    bool ok = true;
+    if (key)
+        qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        ok = qd_json_number(j, x[i]) && ok;
+    qd_json_end_array(j);
+    return ok;
+}
+
+void qd_json_frequency(qd_json *j, double w2) {
+    QD_ARGS(, j);
+    qd_json_key(j, "omega2");
+    qd_json_number(j, w2);
+    qd_json_key(j, "omega");
+    if (w2 >= 0)
+        qd_json_number(j, sqrt(w2));
+    else
+        qd_json_null(j);
+    qd_json_key(j, "period");
+    if (w2 > 0)
+        qd_json_number(j, 2 * 3.14159265358979323846 / sqrt(w2));
+    else
+        qd_json_null(j);
+}

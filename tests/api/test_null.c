@@ -1815,6 +1815,20 @@ static void null_json(void **state)
     /* x NULL */
     assert_true(qd_json_matrix(NULL, "q", 1, 1, NULL) == 0);
     reset(&F);
+    /* ---- qd_json_vector */
+    /* j NULL */
+    assert_true(qd_json_vector(NULL, "q", 1, F.d) == 0);
+    reset(&F);
+    /* key NULL */
+    assert_true(qd_json_vector(NULL, NULL, 1, F.d) == 0);
+    reset(&F);
+    /* x NULL */
+    assert_true(qd_json_vector(NULL, "q", 1, NULL) == 0);
+    reset(&F);
+    /* ---- qd_json_frequency */
+    /* j NULL */
+    qd_json_frequency(NULL, 1);
+    reset(&F);
     /* ---- qd_json_ok */
     /* j NULL */
     assert_true(qd_json_ok(NULL) == 0);

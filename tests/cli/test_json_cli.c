@@ -73,6 +73,44 @@ static void test_matrix(void **state) {
     qd_buf_free(&c);
 }
 
+static int count(const char *s, const char *what) {
+    int n = 0;
+    for (const char *p = strstr(s, what); p; p = strstr(p + 1, what))
+        n++;
+    return n;
+}
+
+/* A vector is one flat array; a frequency: w^2 = 4 is omega 2 and period
+ * 2 pi / 2 = pi; w^2 = -1 (a growing mode) has neither, w^2 = 0 no period. */
+static void test_vector_frequency(void **state) {
+    (void)state;
+    const double x[3] = {1, -2.5, 0};
+    qd_buf b = QD_BUF_INIT;
+    qd_json j;
+    qd_json_init(&j, &b);
+    qd_json_begin_array(&j);
+    assert_true(qd_json_vector(&j, NULL, 3, x));
+    qd_json_begin_object(&j);
+    qd_json_frequency(&j, 4);
+    qd_json_end_object(&j);
+    qd_json_begin_object(&j);
+    qd_json_frequency(&j, -1);
+    qd_json_end_object(&j);
+    qd_json_begin_object(&j);
+    qd_json_frequency(&j, 0);
+    qd_json_end_object(&j);
+    qd_json_end_array(&j);
+    assert_true(qd_json_ok(&j));
+    const char *s = qd_buf_str(&b);
+    assert_non_null(strstr(s, "1,") && strstr(s, "-2.5,"));
+    assert_non_null(strstr(s, "\"omega\": 2,"));
+    assert_non_null(strstr(s, "\"period\": 3.14159265358979"));
+    assert_int_equal(count(s, "\"omega\": null"), 1);  /* w2 = -1 */
+    assert_int_equal(count(s, "\"omega\": 0"), 1);     /* w2 = 0 */
+    assert_int_equal(count(s, "\"period\": null"), 2); /* w2 = -1 and 0 */
+    qd_buf_free(&b);
+}
+
 static void test_whole(void **state) {
     (void)state;
     qd_buf b = QD_BUF_INIT;
@@ -92,6 +130,7 @@ int main(void) {
         cmocka_unit_test(test_out_of_memory),
         cmocka_unit_test(test_nonfinite),
         cmocka_unit_test(test_matrix),
+        cmocka_unit_test(test_vector_frequency),
         cmocka_unit_test(test_whole),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

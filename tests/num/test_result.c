@@ -1,5 +1,5 @@
 /*
- * tests/render/test_number.c - the digit rule of computed results
+ * tests/num/test_result.c - the digit rule of computed results
  * (qd_result_format, qdot/print.h): 12 significant digits, 0 at or below
  * 1e-12 of the scale, -0 as 0; and that data keep every digit
  * (qd_double_format reads back to the same double).

@@ -1,5 +1,5 @@
 /*
- * src/render/number.c - the digit rule of a computed result shown to a
+ * src/num/result.c - the digit rule of a computed result shown to a
  * reader (qd_result_format, qdot/print.h): 12 significant digits, and 0
  * below the last digit the largest number printed with it shows.
  *
