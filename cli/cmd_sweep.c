@@ -242,8 +242,7 @@ typedef struct sweep_result {
     size_t nruns, ncols, nin;
     const char **cols;
     double *rows;
-    qd_status *status;
-    char *reasons;
+    qd_sweep_outcome *outcome;
     double wall;
 } sweep_result;
 
@@ -255,8 +254,8 @@ static void progress(void *data, size_t done, size_t total) {
 
 static const struct {
     const char *name;
-    qd_status (*write)(const qd_sweep *w, const double *rows, const qd_status *status,
-                       const char *reasons, qd_buf *out);
+    qd_status (*write)(const qd_sweep *w, const double *rows, const qd_sweep_outcome *outcome,
+                       qd_buf *out);
 } writers[] = {{"csv", qd_sweep_csv}, {"json", qd_sweep_json}, {"hdf5", NULL}};
 
 /* --format hdf5 (cli/sweep_hdf5.h): the rows with how the sweep was made. */
@@ -270,7 +269,7 @@ static int write_hdf5(const sweep_args *a, const sweep_result *r) {
                                                                                     : a->list,
                             n, seed};
     cli_h5_sweep h = {.nruns = r->nruns, .ncols = r->ncols, .names = r->cols, .rows = r->rows,
-                      .status = r->status, .reasons = r->reasons, .reason_size = QD_SWEEP_REASON,
+                      .outcome = r->outcome,
                       .nattrs = a->random ? 5 : 3, .attr_names = names, .attr_values = values};
     if (cli_hdf5_write_sweep(a->sim.out, &h, err, sizeof err))
         return QD_EXIT_OK;
@@ -299,7 +298,7 @@ static int write_result(const qd_sweep *w, const sweep_args *a, size_t fmt,
     if (!writers[fmt].write)
         return write_hdf5(a, r);
     qd_buf b = QD_BUF_INIT;
-    if (writers[fmt].write(w, r->rows, r->status, r->reasons, &b) != QD_OK) {
+    if (writers[fmt].write(w, r->rows, r->outcome, &b) != QD_OK) {
         qd_buf_free(&b);
         cli_diag_error("out of memory writing the rows");
         return QD_EXIT_FAIL;
@@ -337,7 +336,7 @@ static int map_write(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, const 
 static void summary(const sweep_result *r, unsigned threads, int ranks) {
     size_t failed = 0;
     for (size_t k = 0; k < r->nruns; k++)
-        failed += r->status[k] != QD_OK;
+        failed += r->outcome[k].status != QD_OK;
     char where[48] = "";
     if (ranks > 1)
         snprintf(where, sizeof where, "%d MPI ranks x ", ranks);
@@ -348,15 +347,14 @@ static void summary(const sweep_result *r, unsigned threads, int ranks) {
 static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     sweep_result r = {.nruns = qd_sweep_nruns(w), .ncols = qd_sweep_ncols(w)};
     /* every row is kept until the end (run order): refuse what cannot be */
-    if (r.nruns > SIZE_MAX / (sizeof(double) * (r.ncols + 1) + QD_SWEEP_REASON)) {
+    if (r.nruns > SIZE_MAX / (sizeof(double) * (r.ncols + 1) + sizeof *r.outcome)) {
         cli_diag_error("%zu runs do not fit in memory", r.nruns);
         return QD_EXIT_USAGE;
     }
     r.cols = malloc((r.ncols + 1) * sizeof *r.cols);
     r.rows = malloc((r.nruns * r.ncols + 1) * sizeof *r.rows);
-    r.status = malloc((r.nruns + 1) * sizeof *r.status);
-    r.reasons = malloc((r.nruns + 1) * QD_SWEEP_REASON);
-    int rc = r.cols && r.rows && r.status && r.reasons ? QD_EXIT_OK : QD_EXIT_FAIL;
+    r.outcome = malloc((r.nruns + 1) * sizeof *r.outcome);
+    int rc = r.cols && r.rows && r.outcome ? QD_EXIT_OK : QD_EXIT_FAIL;
     if (rc != QD_EXIT_OK)
         cli_diag_error("out of memory for %zu runs", r.nruns);
     for (size_t j = 0; rc == QD_EXIT_OK && j < r.ncols; j++)
@@ -371,7 +369,7 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         cli_progress_start(&bar, "sweep");
         bar.label = "runs";
         cli_mpi_job job = {.w = w, .base = &c->opts, .nthreads = (unsigned)a->threads,
-                           .rows = r.rows, .status = r.status, .reasons = r.reasons,
+                           .rows = r.rows, .outcome = r.outcome,
                            .progress = progress, .data = &bar};
         qd_status st = cli_mpi_sweep(c->ctx, &job, &done);
         r.wall = cli_progress_end(&bar);
@@ -387,8 +385,7 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
                 done.ranks);
     free(r.cols);
     free(r.rows);
-    free(r.status);
-    free(r.reasons);
+    free(r.outcome);
     return rc;
 }
 

@@ -87,10 +87,13 @@ static bool put_runs(hid_t file, const cli_h5_sweep *s) {
 static bool put_status(hid_t file, const cli_h5_sweep *s) {
     int *st = malloc((s->nruns ? s->nruns : 1) * sizeof *st);
     const char **why = malloc((s->nruns ? s->nruns : 1) * sizeof *why);
-    bool ok = st && why;
+    char *text = malloc((s->nruns ? s->nruns : 1) * QD_SWEEP_OUTCOME_MAX);
+    bool ok = st && why && text;
     for (size_t i = 0; ok && i < s->nruns; i++) {
-        st[i] = (int)s->status[i];
-        why[i] = s->reasons && st[i] != 0 ? s->reasons + i * s->reason_size : "";
+        st[i] = (int)s->outcome[i].status;
+        why[i] = st[i] == 0 ? "" : qd_sweep_outcome_str(&s->outcome[i],
+                                                        text + i * QD_SWEEP_OUTCOME_MAX,
+                                                        QD_SWEEP_OUTCOME_MAX);
     }
     hid_t d = ok ? put_dataset(file, "status", H5T_STD_I32LE, H5T_NATIVE_INT, s->nruns, 0, st) : -1;
     ok = d >= 0;
@@ -105,6 +108,7 @@ static bool put_status(hid_t file, const cli_h5_sweep *s) {
         H5Tclose(t);
     free(st);
     free(why);
+    free(text);
     return ok;
 }
 

@@ -8,7 +8,8 @@
  *            attribute "columns" names the columns (variable-length strings);
  *   /status  nruns ints: 0 for a run that went through, else the qd_status
  *            it failed with;
- *   /reason  nruns variable-length strings: why it failed ("" when it did not);
+ *   /reason  nruns variable-length strings: why it failed ("" when it did not;
+ *            qd_sweep_outcome_str);
  * and, on the root group, string attributes saying how the sweep was made
  * (the model file, the grid, random or list spec, the measures, qdot's
  * version).  Built only with HDF5 (QDOT_HAVE_HDF5).
@@ -18,15 +19,13 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "qdot/status.h"
+#include "qdot/sweep.h"
 
 typedef struct cli_h5_sweep {
     size_t nruns, ncols;
     const char *const *names; /* ncols column names */
     const double *rows;       /* nruns rows of ncols */
-    const qd_status *status;  /* nruns */
-    const char *reasons;      /* nruns strings reason_size apart; may be NULL */
-    size_t reason_size;
+    const qd_sweep_outcome *outcome; /* nruns: status, and reason worded from it */
     size_t nattrs;            /* root attributes: name = value */
     const char *const *attr_names;
     const char *const *attr_values;

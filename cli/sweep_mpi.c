@@ -4,7 +4,8 @@
  *
  * The protocol is two messages each way.  A worker sends RESULT, a header
  * {first, count} (count 0 at the start: "ready"), followed for count > 0
- * by the chunk's rows, statuses and reasons; rank 0 answers each RESULT
+ * by the chunk's rows and outcomes (qd_sweep_outcome: plain data, sent as
+ * bytes between ranks of one build); rank 0 answers each RESULT
  * with WORK, {first, count}, count 0 meaning "stop".  A worker keeps two
  * requests out (it says "ready" twice), so the answer to one arrives while
  * it runs the chunk the other brought: it never waits for rank 0 to finish
@@ -25,8 +26,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* At most this many runs a chunk: its message (160-byte reasons) stays far
- * inside MPI's int counts, and rank 0's buffers small. */
+/* At most this many runs a chunk: its messages stay far inside MPI's int
+ * counts, and rank 0's buffers small. */
 #define CHUNK_MAX 65536
 
 size_t cli_mpi_chunk(size_t remaining, int ranks, unsigned threads) {
@@ -40,7 +41,7 @@ size_t cli_mpi_chunk(size_t remaining, int ranks, unsigned threads) {
 /* Every run in this process: the plain (or one-rank) sweep. */
 static qd_status run_here(qd_ctx *ctx, const cli_mpi_job *j) {
     return qd_sweep_run(ctx, j->w, j->base, 0, qd_sweep_nruns(j->w), j->nthreads, j->rows,
-                        j->status, j->reasons, j->progress, j->data);
+                        j->outcome, j->progress, j->data);
 }
 
 #ifndef QDOT_HAVE_MPI
@@ -58,7 +59,7 @@ qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, cli_mpi_done *done) {
 #include <mpi.h>
 #include <stdio.h>
 
-enum { TAG_RESULT = 1, TAG_ROWS, TAG_STATUS, TAG_REASONS, TAG_WORK };
+enum { TAG_RESULT = 1, TAG_ROWS, TAG_OUTCOME, TAG_WORK };
 #define SELF_MAX 4 /* rank 0 works too up to this many ranks */
 #define AHEAD 2    /* requests a worker keeps out */
 
@@ -86,32 +87,24 @@ static void die(const char *what, qd_ctx *ctx) {
 typedef struct chunk_buf {
     size_t cap;
     double *rows;
-    qd_status *st;
-    int *ist;
-    char *reasons;
+    qd_sweep_outcome *outcome;
 } chunk_buf;
 
 static void chunk_buf_grow(chunk_buf *b, size_t count, size_t ncols) {
     if (count <= b->cap)
         return;
     free(b->rows);
-    free(b->st);
-    free(b->ist);
-    free(b->reasons);
+    free(b->outcome);
     b->rows = malloc(count * ncols * sizeof *b->rows);
-    b->st = malloc(count * sizeof *b->st);
-    b->ist = malloc(count * sizeof *b->ist);
-    b->reasons = malloc(count * QD_SWEEP_REASON);
-    if (!b->rows || !b->st || !b->ist || !b->reasons)
+    b->outcome = malloc(count * sizeof *b->outcome);
+    if (!b->rows || !b->outcome)
         die("out of memory", NULL);
     b->cap = count;
 }
 
 static void chunk_buf_free(chunk_buf *b) {
     free(b->rows);
-    free(b->st);
-    free(b->ist);
-    free(b->reasons);
+    free(b->outcome);
 }
 
 /* A worker: ask, run, send back (which asks again), until told to stop. */
@@ -129,15 +122,12 @@ static void worker(qd_ctx *ctx, const cli_mpi_job *j) {
         if (count == 0)
             continue; /* the rest of the answers are "stop" too */
         chunk_buf_grow(&b, count, ncols);
-        if (qd_sweep_run(ctx, j->w, j->base, first, count, j->nthreads, b.rows, b.st, b.reasons,
-                         NULL, NULL) != QD_OK)
+        if (qd_sweep_run(ctx, j->w, j->base, first, count, j->nthreads, b.rows, b.outcome, NULL,
+                         NULL) != QD_OK)
             die("a worker rank failed", ctx);
-        for (size_t k = 0; k < count; k++)
-            b.ist[k] = (int)b.st[k];
         MPI_Send(hdr, 2, MPI_UINT64_T, 0, TAG_RESULT, MPI_COMM_WORLD);
         MPI_Send(b.rows, (int)(count * ncols), MPI_DOUBLE, 0, TAG_ROWS, MPI_COMM_WORLD);
-        MPI_Send(b.ist, (int)count, MPI_INT, 0, TAG_STATUS, MPI_COMM_WORLD);
-        MPI_Send(b.reasons, (int)(count * QD_SWEEP_REASON), MPI_CHAR, 0, TAG_REASONS,
+        MPI_Send(b.outcome, (int)(count * sizeof *b.outcome), MPI_BYTE, 0, TAG_OUTCOME,
                  MPI_COMM_WORLD);
         out++;
     }
@@ -150,7 +140,6 @@ typedef struct master {
     size_t nruns, ncols, next, done;
     int ranks, active;   /* requests not yet answered "stop" */
     unsigned threads;    /* per rank, for the chunk size */
-    int *ist;            /* statuses as they travel */
 } master;
 
 /* Receive one RESULT from src and place its chunk where its runs go. */
@@ -165,11 +154,8 @@ static void master_take(master *m, int src) {
     const cli_mpi_job *j = m->j;
     MPI_Recv(j->rows + first * m->ncols, (int)(count * m->ncols), MPI_DOUBLE, src, TAG_ROWS,
              MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    MPI_Recv(m->ist, (int)count, MPI_INT, src, TAG_STATUS, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    for (size_t k = 0; k < count; k++)
-        j->status[first + k] = (qd_status)m->ist[k];
-    MPI_Recv(j->reasons + first * QD_SWEEP_REASON, (int)(count * QD_SWEEP_REASON), MPI_CHAR,
-             src, TAG_REASONS, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    MPI_Recv(j->outcome + first, (int)(count * sizeof *j->outcome), MPI_BYTE, src, TAG_OUTCOME,
+             MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     m->done += count;
     if (j->progress)
         j->progress(j->data, m->done, m->nruns);
@@ -210,8 +196,7 @@ static void master_work(qd_ctx *ctx, master *m) {
     size_t first = m->next;
     m->next += count;
     if (qd_sweep_run(ctx, j->w, j->base, first, count, j->nthreads, j->rows + first * m->ncols,
-                     j->status + first, j->reasons + first * QD_SWEEP_REASON, NULL,
-                     NULL) != QD_OK)
+                     j->outcome + first, NULL, NULL) != QD_OK)
         die("rank 0 failed", ctx);
     m->done += count;
     if (j->progress)
@@ -221,10 +206,6 @@ static void master_work(qd_ctx *ctx, master *m) {
 static void run_master(qd_ctx *ctx, const cli_mpi_job *j, int ranks, unsigned threads) {
     master m = {.j = j, .nruns = qd_sweep_nruns(j->w), .ncols = qd_sweep_ncols(j->w),
                 .ranks = ranks, .active = AHEAD * (ranks - 1), .threads = threads};
-    size_t most = cli_mpi_chunk(m.nruns, ranks, threads);
-    m.ist = malloc((most > 0 ? most : 1) * sizeof *m.ist);
-    if (!m.ist)
-        die("out of memory", NULL);
     bool self = ranks <= SELF_MAX;
     while (m.active > 0 || (self && m.next < m.nruns)) {
         if (self && m.next < m.nruns) {
@@ -235,7 +216,6 @@ static void run_master(qd_ctx *ctx, const cli_mpi_job *j, int ranks, unsigned th
             master_serve(&m, true);
         }
     }
-    free(m.ist);
 }
 
 /* Threads per rank: as asked, and one when not (a launcher starts a rank

@@ -27,16 +27,14 @@ bool cli_mpi_built(void);
 /* Progress over all the runs of the sweep: done of total (rank 0 only). */
 typedef void (*cli_mpi_progress)(void *data, size_t done, size_t total);
 
-/* What one sweep across the ranks needs; rows, status and reasons hold
- * every run (nruns rows of ncols; reasons nruns * QD_SWEEP_REASON chars, not
- * NULL) on rank 0 and may be NULL elsewhere. */
+/* What one sweep across the ranks needs; rows and outcome hold every run
+ * (nruns rows of ncols, nruns outcomes) on rank 0 and may be NULL elsewhere. */
 typedef struct cli_mpi_job {
     const qd_sweep *w;
     const qd_sim_opts *base;
     unsigned nthreads;        /* threads in each rank; 0: all cores */
     double *rows;
-    qd_status *status;
-    char *reasons;
+    qd_sweep_outcome *outcome;
     cli_mpi_progress progress; /* may be NULL */
     void *data;
 } cli_mpi_job;
@@ -51,7 +49,7 @@ typedef struct cli_mpi_done {
 /* Run every run of j->w.  Launched by an MPI launcher: start MPI, share
  * the runs out, finish MPI; only rank 0 is then the writer, holding every
  * row.  Otherwise the runs go to qd_sweep_run in this process, the writer.
- * A failed run is recorded in its row, status and reason; the return is
+ * A failed run is recorded in its row and outcome; the return is
  * not OK only when the sweep as a whole failed (out of memory; reason in
  * ctx).  MPI's own failures abort the job. */
 qd_status cli_mpi_sweep(qd_ctx *ctx, const cli_mpi_job *j, cli_mpi_done *done);

@@ -153,38 +153,56 @@ QD_API const char *qd_sweep_col(const qd_sweep *w, size_t j);
 /* Run i (0 <= i < nruns) alone: thread-safe on a const w (ctx is the
  * caller's own).  row receives ncols numbers (NaN where a measure has no
  * value); a failed run returns its status with the reason in ctx and
- * fills the inputs part of row only (the rest NaN). */
+ * fills the inputs part of row only (the rest NaN).  stop (may be NULL)
+ * receives how the run's integration ended (qd_sim_stats.stop; code
+ * QD_STOP_NONE when it was not integrated: it failed before, or its
+ * measures are Lyapunov exponents only). */
 QD_API qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t i,
-                                  double *row);
+                                  double *row, qd_sim_stop *stop);
+
+/* How one run went, as data (issue 31): its status (QD_OK, or why it
+ * failed) and how its integration ended.  A sweep's rows carry this, not
+ * English: qd_sweep_outcome_str words it. */
+typedef struct qd_sweep_outcome {
+    qd_status status;
+    qd_sim_stop stop;
+} qd_sweep_outcome;
+
+/* "ok"; or why the run failed: the stop's sentence and its time when the
+ * integration failed ("singular equations at t = 0.5"), else the status's
+ * (qd_status_str).  Written into out (cap bytes, truncated, NUL-ended);
+ * returns out. */
+#define QD_SWEEP_OUTCOME_MAX 96
+QD_API const char *qd_sweep_outcome_str(const qd_sweep_outcome *o, char *out, size_t cap);
 
 /* Runs [first, first+count) on nthreads threads (0: all cores), dynamic
- * scheduling; rows[k*ncols..] for run first+k; status[k] per run and the
- * reason text in reasons + k*QD_SWEEP_REASON (caller-allocated
- * count*QD_SWEEP_REASON chars, may be NULL); progress(data, done, count)
+ * scheduling; rows[k*ncols..] and outcome[k] for run first+k;
+ * progress(data, done, count)
  * is called from the calling thread only (may be NULL).  A failed run
  * never stops the others; the call itself fails only when it cannot start
  * (bad range, no memory, no threads). */
-#define QD_SWEEP_REASON 160
 /* nthreads above QD_SWEEP_MAX_THREADS is QD_ERR_ARG.  The pool is
  * qd_sweep_threads(nthreads, count) threads (fewer only when the system
  * refuses to start one; none started is QD_ERR_UNSUPPORTED). */
 #define QD_SWEEP_MAX_THREADS 1024
 QD_API unsigned qd_sweep_threads(unsigned nthreads, size_t count); /* 0: above the most */
 QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
-                              size_t count, unsigned nthreads, double *rows, qd_status *status,
-                              char *reasons, void (*progress)(void *data, size_t done, size_t total),
-                              void *data);
+                              size_t count, unsigned nthreads, double *rows,
+                              qd_sweep_outcome *outcome,
+                              void (*progress)(void *data, size_t done, size_t total), void *data);
 
-/* The rows of runs [0, nruns) as qd_sweep_run fills them (rows, status,
- * reasons: may be NULL, then a failed run's status is named) appended to
- * out: CSV, the columns then `status` in a header, a line a run, its
- * numbers (qd_double_format: nan where none) then "ok" or why it failed;
- * or JSON, {"columns": [...], "rows": [[...], ...] (null where none),
- * "status": [...]} and a newline.  QD_ERR_NOMEM when out could not grow. */
-QD_API qd_status qd_sweep_csv(const qd_sweep *w, const double *rows, const qd_status *status,
-                              const char *reasons, qd_buf *out);
-QD_API qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_status *status,
-                               const char *reasons, qd_buf *out);
+/* The rows and outcomes of runs [0, nruns) as qd_sweep_run fills them,
+ * appended to out: CSV, the columns then `status` in a header, a line a
+ * run, its numbers (qd_double_format: nan where none) then
+ * qd_sweep_outcome_str; or JSON, {"columns": [...], "rows": [[...], ...]
+ * (null where none), "status": [qd_sweep_outcome_str, ...], "stop":
+ * [{"reason": qd_stop_str, "t": T, "value": V}, ...] (null where NaN; the
+ * record Python's Result.stop holds)} and a newline.  QD_ERR_NOMEM when out
+ * could not grow. */
+QD_API qd_status qd_sweep_csv(const qd_sweep *w, const double *rows,
+                              const qd_sweep_outcome *outcome, qd_buf *out);
+QD_API qd_status qd_sweep_json(const qd_sweep *w, const double *rows,
+                               const qd_sweep_outcome *outcome, qd_buf *out);
 
 #ifdef __cplusplus
 }
@@ -195,6 +213,8 @@ QD_API qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_s
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_sweep_set_lyap (lo); qd_sweep_run
- * (data, progress, reasons); qd_sweep_needs (s; needs, when cap is 0);
- * qd_sweep_prepare (read, data); qd_sweep_map_column (measure); qd_sweep_csv and qd_sweep_json (reasons). An array whose count is 0 may be NULL. */
+ * (data, progress); qd_sweep_run_one (stop); qd_sweep_needs (s; needs, when
+ * cap is 0); qd_sweep_prepare (read, data); qd_sweep_map_column (measure).
+ * An array whose count is 0 may be NULL.  qd_sweep_outcome_str returns
+ * NULL for a NULL o or out, or cap 0. */
 #endif

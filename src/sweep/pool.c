@@ -10,6 +10,7 @@
 #include "sweep_int.h"
 #include "../base/args.h"
 
+#include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -23,25 +24,13 @@ typedef struct sw_pool {
     const qd_sim_opts *base;
     size_t first, count;
     double *rows;
-    qd_status *status;
-    char *reasons;
+    qd_sweep_outcome *outcome;
     atomic_size_t next, done;
     pthread_mutex_t lock;  /* with wake: the caller sleeps between runs done */
     pthread_cond_t wake;
     atomic_uint exited;    /* workers that have returned */
 } sw_pool;
 
-static void record(sw_pool *p, qd_ctx *ctx, size_t k, qd_status st) {
-    if (p->status)
-        p->status[k] = st;
-    if (p->reasons) {
-        char *r = p->reasons + k * QD_SWEEP_REASON;
-        snprintf(r, QD_SWEEP_REASON, "%s", st == QD_OK ? "" : qd_ctx_message(ctx));
-        if (st != QD_OK && !r[0])
-            snprintf(r, QD_SWEEP_REASON, "%s", qd_status_str(st));
-    }
-    qd_ctx_clear_error(ctx);
-}
 
 static void wake(sw_pool *p) {
     pthread_mutex_lock(&p->lock);
@@ -55,8 +44,10 @@ static void runs(sw_pool *p, qd_ctx *ctx) {
         size_t k = atomic_fetch_add(&p->next, 1);
         if (k >= p->count)
             break;
-        qd_status st = qd_sweep_run_one(ctx, p->w, p->base, p->first + k, p->rows + k * ncols);
-        record(p, ctx, k, st);
+        qd_sweep_outcome *o = &p->outcome[k];
+        o->status = qd_sweep_run_one(ctx, p->w, p->base, p->first + k, p->rows + k * ncols,
+                                     &o->stop);
+        qd_ctx_clear_error(ctx); /* the outcome holds it; the next run starts clean */
         atomic_fetch_add(&p->done, 1);
         wake(p);
     }
@@ -110,12 +101,8 @@ static void watch(sw_pool *p, unsigned started, void (*progress)(void *, size_t,
 /* Every worker could not start (no memory for its context): the runs
  * nobody took are failures. */
 static void untaken(sw_pool *p) {
-    for (size_t k = atomic_load(&p->next); k < p->count; k++) {
-        if (p->status)
-            p->status[k] = QD_ERR_NOMEM;
-        if (p->reasons)
-            snprintf(p->reasons + k * QD_SWEEP_REASON, QD_SWEEP_REASON, "out of memory");
-    }
+    for (size_t k = atomic_load(&p->next); k < p->count; k++)
+        p->outcome[k] = (qd_sweep_outcome){QD_ERR_NOMEM, {QD_STOP_NONE, NAN, NAN}};
 }
 
 static qd_status start(qd_ctx *ctx, sw_pool *p, unsigned nthreads,
@@ -149,10 +136,9 @@ unsigned qd_sweep_threads(unsigned nthreads, size_t count) {
 }
 
 qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
-                       size_t count, unsigned nthreads, double *rows, qd_status *status,
-                       char *reasons, void (*progress)(void *data, size_t done, size_t total),
-                       void *data) {
-    QD_ARGS_CTX(ctx, ctx && w && base && rows && status);
+                       size_t count, unsigned nthreads, double *rows, qd_sweep_outcome *outcome,
+                       void (*progress)(void *data, size_t done, size_t total), void *data) {
+    QD_ARGS_CTX(ctx, ctx && w && base && rows && outcome);
     if (first > w->nruns || count > w->nruns - first) {
         qd_ctx_error(ctx, QD_ERR_ARG, "runs %zu to %zu of a sweep of %zu", first, first + count,
                      w->nruns);
@@ -168,7 +154,7 @@ qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, 
         return st;
     nthreads = qd_sweep_threads(nthreads, count);
     sw_pool p = {.w = w, .base = base, .first = first, .count = count, .rows = rows,
-                 .status = status, .reasons = reasons};
+                 .outcome = outcome};
     atomic_init(&p.next, 0);
     atomic_init(&p.done, 0);
     atomic_init(&p.exited, 0);

@@ -246,8 +246,10 @@ static qd_status lyap_measures(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts
 }
 
 qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t i,
-                           double *row) {
+                           double *row, qd_sim_stop *stop) {
     QD_ARGS_CTX(ctx, ctx && w && base && row);
+    if (stop)
+        *stop = (qd_sim_stop){QD_STOP_NONE, NAN, NAN};
     for (size_t j = 0; j < w->ncols; j++)
         row[j] = NAN;
     if (i >= w->nruns) {
@@ -275,8 +277,11 @@ qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *ba
         if (qd_sim_method_adaptive(o.method) && !o.fixed)
             o.dt = 0;
         qd_sim_stats stats = {0};
-        if (needs_sim(w))
+        if (needs_sim(w)) {
             st = qd_sim_run_with(ctx, w->s, &o, sink, &a, &stats, final);
+            if (stop)
+                *stop = stats.stop;
+        }
         if (st == QD_OK && w->lyap)
             st = lyap_measures(ctx, w, &o, row);
         if (st == QD_OK)

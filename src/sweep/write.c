@@ -6,17 +6,25 @@
 #include "sweep_int.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "qdot/json.h"
 #include "qdot/print.h"
 #include "../base/args.h"
 
-static const char *status_text(const qd_status *status, const char *reasons, size_t k) {
-    if (status[k] == QD_OK)
-        return "ok";
-    return reasons && reasons[k * QD_SWEEP_REASON] ? reasons + k * QD_SWEEP_REASON
-                                                   : qd_status_str(status[k]);
+const char *qd_sweep_outcome_str(const qd_sweep_outcome *o, char *out, size_t cap) {
+    QD_ARGS(NULL, o && out && cap);
+    const qd_sim_stop *s = &o->stop;
+    if (o->status == QD_OK)
+        snprintf(out, cap, "ok");
+    else if (s->code != QD_STOP_NONE && !qd_stop_ok(s->code) && isfinite(s->t))
+        snprintf(out, cap, "%s at t = %.6g", qd_stop_str(s->code), s->t);
+    else if (s->code != QD_STOP_NONE && !qd_stop_ok(s->code))
+        snprintf(out, cap, "%s", qd_stop_str(s->code));
+    else /* not an integration's failure: before it, or in what follows it */
+        snprintf(out, cap, "%s", qd_status_str(o->status));
+    return out;
 }
 
 /* A CSV field, quoted when it holds a comma, a quote or a newline. */
@@ -31,10 +39,10 @@ static void csv_field(qd_buf *out, const char *s) {
     qd_buf_puts(out, "\"");
 }
 
-qd_status qd_sweep_csv(const qd_sweep *w, const double *rows, const qd_status *status,
-                       const char *reasons, qd_buf *out) {
-    QD_ARGS(QD_ERR_ARG, w && (rows || !w->nruns) && (status || !w->nruns) && out);
-    char num[QD_DOUBLE_MAX];
+qd_status qd_sweep_csv(const qd_sweep *w, const double *rows, const qd_sweep_outcome *outcome,
+                       qd_buf *out) {
+    QD_ARGS(QD_ERR_ARG, w && (rows || !w->nruns) && (outcome || !w->nruns) && out);
+    char num[QD_DOUBLE_MAX], why[QD_SWEEP_OUTCOME_MAX];
     for (size_t j = 0; j < w->ncols; j++) {
         csv_field(out, w->cols[j]);
         qd_buf_puts(out, ",");
@@ -46,15 +54,24 @@ qd_status qd_sweep_csv(const qd_sweep *w, const double *rows, const qd_status *s
             qd_buf_puts(out, num);
             qd_buf_puts(out, ",");
         }
-        csv_field(out, status_text(status, reasons, k));
+        csv_field(out, qd_sweep_outcome_str(&outcome[k], why, sizeof why));
         qd_buf_puts(out, "\n");
     }
     return out->failed ? QD_ERR_NOMEM : QD_OK;
 }
 
-qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_status *status,
-                        const char *reasons, qd_buf *out) {
-    QD_ARGS(QD_ERR_ARG, w && (rows || !w->nruns) && (status || !w->nruns) && out);
+/* A number, or null where NaN (none). */
+static void number_or_null(qd_json *j, double x) {
+    if (isfinite(x))
+        qd_json_number(j, x);
+    else
+        qd_json_null(j);
+}
+
+qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_sweep_outcome *outcome,
+                        qd_buf *out) {
+    QD_ARGS(QD_ERR_ARG, w && (rows || !w->nruns) && (outcome || !w->nruns) && out);
+    char why[QD_SWEEP_OUTCOME_MAX];
     qd_json j;
     qd_json_init(&j, out);
     qd_json_begin_object(&j);
@@ -67,20 +84,29 @@ qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_status *
     qd_json_begin_array(&j);
     for (size_t k = 0; k < w->nruns; k++) {
         qd_json_begin_array(&j);
-        for (size_t c = 0; c < w->ncols; c++) {
-            double x = rows[k * w->ncols + c];
-            if (isfinite(x))
-                qd_json_number(&j, x);
-            else
-                qd_json_null(&j);
-        }
+        for (size_t c = 0; c < w->ncols; c++)
+            number_or_null(&j, rows[k * w->ncols + c]);
         qd_json_end_array(&j);
     }
     qd_json_end_array(&j);
     qd_json_key(&j, "status");
     qd_json_begin_array(&j);
     for (size_t k = 0; k < w->nruns; k++)
-        qd_json_string(&j, status_text(status, reasons, k));
+        qd_json_string(&j, qd_sweep_outcome_str(&outcome[k], why, sizeof why));
+    qd_json_end_array(&j);
+    qd_json_key(&j, "stop");
+    qd_json_begin_array(&j);
+    for (size_t k = 0; k < w->nruns; k++) {
+        const qd_sim_stop *s = &outcome[k].stop;
+        qd_json_begin_object(&j);
+        qd_json_key(&j, "reason");
+        qd_json_string(&j, qd_stop_str(s->code));
+        qd_json_key(&j, "t");
+        number_or_null(&j, s->t);
+        qd_json_key(&j, "value");
+        number_or_null(&j, s->value);
+        qd_json_end_object(&j);
+    }
     qd_json_end_array(&j);
     qd_json_end_object(&j);
     qd_buf_puts(out, "\n");

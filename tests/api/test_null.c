@@ -4958,54 +4958,52 @@ static void null_sweep(void **state)
     reset(&F);
     /* ---- qd_sweep_run_one */
     /* ctx NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(NULL, NULL, NULL, 1, F.d));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(NULL, NULL, NULL, 1, F.d, NULL));
     reset(&F);
     /* w NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(F.ctx, NULL, NULL, 1, F.d));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(F.ctx, NULL, NULL, 1, F.d, NULL));
     reset(&F);
     /* row NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(F.ctx, NULL, NULL, 1, NULL));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_one(F.ctx, NULL, NULL, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_outcome_str */
+    /* o NULL */
+    assert_null(qd_sweep_outcome_str(NULL, F.c, 1));
+    reset(&F);
+    /* out NULL */
+    assert_null(qd_sweep_outcome_str(NULL, NULL, 1));
     reset(&F);
     /* ---- qd_sweep_threads */
     /* no pointer argument */
     /* ---- qd_sweep_run */
     /* ctx NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_run(NULL, NULL, NULL, 1, 1, 1, F.d, F.st, F.c, NULL, NULL));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run(NULL, NULL, NULL, 1, 1, 1, F.d, NULL, NULL, NULL));
     reset(&F);
     /* w NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, F.d, F.st, F.c, NULL, NULL));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, F.d, NULL, NULL, NULL));
     reset(&F);
     /* rows NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, NULL, F.st, F.c, NULL, NULL));
-    reset(&F);
-    /* status NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, F.d, NULL, F.c, NULL, NULL));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run(F.ctx, NULL, NULL, 1, 1, 1, NULL, NULL, NULL, NULL));
     reset(&F);
     /* ---- qd_sweep_csv */
     /* w NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, F.st, "q", &F.buf));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, NULL, &F.buf));
     reset(&F);
     /* rows NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, NULL, F.st, "q", &F.buf));
-    reset(&F);
-    /* status NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, NULL, "q", &F.buf));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, NULL, NULL, &F.buf));
     reset(&F);
     /* out NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, F.st, "q", NULL));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_csv(NULL, F.d, NULL, NULL));
     reset(&F);
     /* ---- qd_sweep_json */
     /* w NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, F.st, "q", &F.buf));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, NULL, &F.buf));
     reset(&F);
     /* rows NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, NULL, F.st, "q", &F.buf));
-    reset(&F);
-    /* status NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, NULL, "q", &F.buf));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, NULL, NULL, &F.buf));
     reset(&F);
     /* out NULL */
-    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, F.st, "q", NULL));
+    assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, NULL, NULL));
     reset(&F);
     teardown(&F);
 }

@@ -103,7 +103,7 @@ static void test_grid_order(void **state) {
                                {0.5 * (1 - SF_PI / 2), 0.1}, {0.5 * (1 - SF_PI / 2), 0.3},
                                {1, 0.1}, {1, 0.3}};
     for (size_t i = 0; i < 6; i++) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         assert_true(row[0] == want[i][0] || fabs(row[0] - want[i][0]) < 1e-15);
         assert_true(row[1] == want[i][1]);
         assert_true(row[2] < 1e-10);
@@ -125,14 +125,14 @@ static void test_random_draw(void **state) {
     double sum = 0, row[3], again[3], other[3];
     size_t same = 0;
     for (size_t i = 0; i < N; i += 1) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         assert_true(row[0] >= -1 && row[0] < 3 && row[1] >= 2 && row[1] < 2.5);
         sum += (row[0] + 1) / 4;
         if (i % 97 == 0) { /* the draw of run i does not depend on what ran before */
-            assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, again), QD_OK);
+            assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, again, NULL), QD_OK);
             assert_memory_equal(row, again, sizeof row);
         }
-        assert_int_equal(qd_sweep_run_one(f->ctx, w2, &o, i, other), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w2, &o, i, other, NULL), QD_OK);
         same += row[0] == other[0];
     }
     /* uniform on [0, 1): mean 1/2, standard error 1/sqrt(12 N) = 0.0046 */
@@ -168,7 +168,7 @@ static void test_oscillator_parameters(void **state) {
     qd_sim_opts o = opts_of(f, t_end);
     double row[9];
     for (size_t i = 0; i < qd_sweep_nruns(w); i++) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         double k = row[0], m = row[1], om = sqrt(k / m), period = 2 * SF_PI / om;
         assert_true(fabs(row[2] - period) < 1e-9 * period);
         assert_true(fabs(row[3]) < 1e-9 && fabs(row[4] - 1) < 1e-9); /* x = 0, x' = 1 there */
@@ -191,7 +191,7 @@ static void test_escape(void **state) {
     qd_sim_opts o = opts_of(f, 2.5);
     double row[3];
     for (size_t i = 0; i < 4; i++) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         assert_true(fabs(row[1] - 1 / row[0]) < 1e-12); /* x = v t: linear, so exact */
         assert_true(isnan(row[2]));                    /* never below -1 */
     }
@@ -208,13 +208,21 @@ static void test_failure_recorded(void **state) {
     assert_int_equal(qd_sweep_measures(w, "final"), QD_OK);
     qd_sim_opts o = opts_of(f, 0.5);
     double rows[3 * 3];
-    qd_status st[3];
-    char reasons[3 * QD_SWEEP_REASON];
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, 2, rows, st, reasons, NULL, NULL), QD_OK);
-    assert_int_equal(st[0], QD_OK);
-    assert_int_equal(st[1], QD_ERR_SINGULAR);
-    assert_int_equal(st[2], QD_OK);
-    assert_non_null(strstr(reasons + QD_SWEEP_REASON, "singular"));
+    qd_sweep_outcome out[3];
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, 2, rows, out, NULL, NULL), QD_OK);
+    assert_int_equal(out[0].status, QD_OK);
+    assert_int_equal(out[1].status, QD_ERR_SINGULAR);
+    assert_int_equal(out[2].status, QD_OK);
+    /* the reason as data: the integration stopped at t = 0 on a singular M,
+     * the others reached t_end; the sentence is worded from the code */
+    assert_int_equal(out[1].stop.code, QD_STOP_SINGULAR);
+    assert_true(out[1].stop.t == 0);
+    assert_int_equal(out[0].stop.code, QD_STOP_END);
+    assert_true(out[2].stop.t == 0.5);
+    char why[QD_SWEEP_OUTCOME_MAX];
+    assert_string_equal(qd_sweep_outcome_str(&out[1], why, sizeof why),
+                        "singular equations at t = 0");
+    assert_string_equal(qd_sweep_outcome_str(&out[0], why, sizeof why), "ok");
     assert_true(rows[3] == 0 && isnan(rows[4]) && isnan(rows[5])); /* the inputs only */
     assert_true(!isnan(rows[1]) && !isnan(rows[7]));
     /* V and T even in x: the run from -1 mirrors the run from 1 */
@@ -234,13 +242,13 @@ static void test_lyapunov(void **state) {
     assert_int_equal(qd_sweep_measures(w, "lyapunov, lyapunov-spectrum"), QD_OK);
     qd_sim_opts o = opts_of(f, 20);
     double row[5];
-    assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, 0, row), QD_ERR_ARG); /* no qd_lyap yet */
+    assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, 0, row, NULL), QD_ERR_ARG); /* no qd_lyap yet */
     qd_ctx_clear_error(f->ctx);
     assert_int_equal(qd_sweep_set_lyap(w, l, NULL), QD_OK);
     assert_string_equal(qd_sweep_col(w, 2), "lyapunov_error");
     assert_string_equal(qd_sweep_col(w, 4), "lyapunov_2");
     for (size_t i = 0; i < 4; i++) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         double a = row[0];
         assert_true(fabs(row[1] - a) <= row[2] && row[2] < 0.15 * a);
         assert_true(fabs(row[3] - row[1]) < 1e-9 && fabs(row[3] + row[4]) < 1e-9);
@@ -257,7 +265,7 @@ static void test_lyapunov(void **state) {
     assert_int_equal(qd_sweep_measures(w, "lyapunov"), QD_OK);
     o = opts_of(f, 200);
     for (size_t i = 0; i < 2; i++) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         assert_true(fabs(row[1]) <= row[2] + 1e-12 && row[2] < 0.01);
     }
     qd_lyap_free(l);
@@ -288,20 +296,22 @@ static void test_threads_identical(void **state) {
     assert_int_equal(qd_sweep_measures(w, "final, energy_error, max:b"), QD_OK);
     size_t nc = qd_sweep_ncols(w);
     double *r1 = calloc(40 * nc, sizeof *r1), *r2 = calloc(40 * nc, sizeof *r2);
-    qd_status s1[40], s2[40];
+    qd_sweep_outcome s1[40], s2[40];
     qd_sim_opts o = opts_of(f, 5);
     o.rtol = 1e-9;
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 40, 1, r1, s1, NULL, NULL, NULL), QD_OK);
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 40, 1, r1, s1, NULL, NULL), QD_OK);
     calls = last_done = 0;
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 40, 2, r2, s2, NULL, count_progress, NULL),
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 40, 2, r2, s2, count_progress, NULL),
                      QD_OK);
     assert_true(calls >= 1 && last_done == 40);
     assert_memory_equal(r1, r2, 40 * nc * sizeof *r1);
-    assert_memory_equal(s1, s2, sizeof s1);
+    for (size_t k = 0; k < 40; k++) /* field by field: a struct's padding is not data */
+        assert_true(s1[k].status == s2[k].status && s1[k].stop.code == s2[k].stop.code &&
+                    s1[k].stop.t == s2[k].stop.t);
     /* a part of the runs: the same rows */
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 10, 5, 2, r2, s2, NULL, NULL, NULL), QD_OK);
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 10, 5, 2, r2, s2, NULL, NULL), QD_OK);
     assert_memory_equal(r1 + 10 * nc, r2, 5 * nc * sizeof *r1);
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 38, 5, 2, r2, s2, NULL, NULL, NULL), QD_ERR_ARG);
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 38, 5, 2, r2, s2, NULL, NULL), QD_ERR_ARG);
     qd_ctx_clear_error(f->ctx);
     free(r1);
     free(r2);

@@ -35,8 +35,12 @@
  * final x, energy_error; run 1 failed (its measures NaN). */
 static const char *const names[NCOLS] = {"x", "x'", "final.x", "energy_error"};
 static double rows[NRUNS * NCOLS];
-static qd_status status[NRUNS] = {QD_OK, QD_ERR_NUMERIC, QD_OK};
-static char reasons[NRUNS * QD_SWEEP_REASON];
+/* run 1: dop853's step fell below round-off at t = 0.25 */
+static qd_sweep_outcome outcome[NRUNS] = {
+    {QD_OK, {QD_STOP_END, 1, NAN}},
+    {QD_ERR_NUMERIC, {QD_STOP_STEP_UNDERFLOW, 0.25, NAN}},
+    {QD_OK, {QD_STOP_END, 1, NAN}},
+};
 
 static void fill(void) {
     for (size_t i = 0; i < NRUNS; i++) {
@@ -45,11 +49,9 @@ static void fill(void) {
         rows[i * NCOLS + 1] = 0;
         rows[i * NCOLS + 2] = x * cos(1.0) + 1.0 / 3.0; /* digits no decimal prints exactly */
         rows[i * NCOLS + 3] = -1e-15 * (double)i;
-        reasons[i * QD_SWEEP_REASON] = '\0';
     }
     rows[1 * NCOLS + 2] = NAN;
     rows[1 * NCOLS + 3] = NAN;
-    snprintf(reasons + QD_SWEEP_REASON, QD_SWEEP_REASON, "step size underflow at t = 0.25");
 }
 
 static char *tmp_path(const char *leaf) {
@@ -65,8 +67,7 @@ static const char *const attr_values[3] = {"examples/oscillator.qd", "x=0.1:0.3:
 
 static cli_h5_sweep the_sweep(void) {
     return (cli_h5_sweep){.nruns = NRUNS, .ncols = NCOLS, .names = names, .rows = rows,
-                          .status = status, .reasons = reasons,
-                          .reason_size = QD_SWEEP_REASON, .nattrs = 3,
+                          .outcome = outcome, .nattrs = 3,
                           .attr_names = attr_names, .attr_values = attr_values};
 }
 
@@ -121,7 +122,7 @@ static void check_status(hid_t f) {
     int st[NRUNS];
     assert_true(H5Dread(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, st) >= 0);
     for (size_t i = 0; i < NRUNS; i++)
-        assert_int_equal(st[i], (int)status[i]);
+        assert_int_equal(st[i], (int)outcome[i].status);
     H5Dclose(d);
     d = H5Dopen2(f, "reason", H5P_DEFAULT);
     assert_true(d >= 0);

@@ -74,7 +74,7 @@ static void test_prepare_free_particle(void **state) {
     qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = T, .rtol = 1e-12, .atol = 1e-14,
                      .q0 = f->q0, .qd0 = f->qd0};
     for (size_t i = 0; i < 4; i++) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         double v = row[0];
         assert_true(fabs(row[1] - 1 / v) < 1e-12);
         assert_true(fabs(row[2] - v * T * v * T) < 1e-9 * v * T * v * T);
@@ -113,11 +113,11 @@ static void test_map(void **state) {
     assert_string_equal(qd_ctx_diag(f->ctx)->name, "map_measure");
     size_t nruns = qd_sweep_nruns(w), ncols = qd_sweep_ncols(w);
     double *rows = malloc(nruns * ncols * sizeof *rows);
-    qd_status st[12];
+    qd_sweep_outcome st[12];
     qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = 10, .rtol = 1e-12, .atol = 1e-14,
                      .q0 = f->q0, .qd0 = f->qd0};
     assert_int_equal(nruns, 12);
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, nruns, 1, rows, st, NULL, NULL, NULL), QD_OK);
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, nruns, 1, rows, st, NULL, NULL), QD_OK);
     qd_plot *p = qd_plot_new(f->ctx, 0, 0);
     assert_int_equal(qd_sweep_map(w, rows, col, p), QD_OK);
     double z0, z1, x0, x1, y0, y1;
@@ -157,7 +157,7 @@ static void test_list_csv(void **state) {
     qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = T, .rtol = 1e-12, .atol = 1e-14,
                      .q0 = f->q0, .qd0 = f->qd0};
     for (size_t i = 0; i < 3; i++) {
-        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row), QD_OK);
+        assert_int_equal(qd_sweep_run_one(f->ctx, w, &o, i, row, NULL), QD_OK);
         assert_true(row[0] == want[i][0] && row[1] == want[i][1]);
         double om = sqrt(row[0]);
         assert_true(fabs(row[2] - row[1] * sin(om * T) / om) < 1e-9);
@@ -187,15 +187,15 @@ static void test_write(void **state) {
     assert_int_equal(qd_sweep_grid(w, "x' = 1:3:3"), QD_OK);
     assert_int_equal(qd_sweep_measures(w, "final, escape:x>2.5"), QD_OK);
     double rows[3 * 4], T = 2;
-    qd_status st[3];
-    char reasons[3 * QD_SWEEP_REASON];
+    qd_sweep_outcome st[3];
     qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = T, .rtol = 1e-12, .atol = 1e-14,
                      .q0 = f->q0, .qd0 = f->qd0};
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, 1, rows, st, reasons, NULL, NULL), QD_OK);
-    st[2] = QD_ERR_SINGULAR; /* as if the last had failed */
-    snprintf(reasons + 2 * QD_SWEEP_REASON, QD_SWEEP_REASON, "a reason, with a comma");
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, 1, rows, st, NULL, NULL), QD_OK);
+    assert_true(st[0].stop.code == QD_STOP_END && st[0].stop.t == T);
+    /* as if the last had failed: the row says so in words made from the code */
+    st[2] = (qd_sweep_outcome){QD_ERR_SINGULAR, {QD_STOP_SINGULAR, 1.5, NAN}};
     qd_buf b = QD_BUF_INIT;
-    assert_int_equal(qd_sweep_csv(w, rows, st, reasons, &b), QD_OK);
+    assert_int_equal(qd_sweep_csv(w, rows, st, &b), QD_OK);
     const char *text = qd_buf_str(&b);
     assert_true(!strncmp(text, "x',final_x,final_x',escape:x>2.5,status\n", 40));
     const char *line = strchr(text, '\n') + 1;
@@ -207,14 +207,18 @@ static void test_write(void **state) {
         line = strchr(line, '\n') + 1;
     }
     assert_non_null(strstr(text, ",ok\n"));
-    assert_non_null(strstr(text, ",\"a reason, with a comma\"\n"));
+    assert_non_null(strstr(text, ",singular equations at t = 1.5\n"));
     qd_buf_free(&b);
     b = (qd_buf)QD_BUF_INIT;
-    assert_int_equal(qd_sweep_json(w, rows, st, reasons, &b), QD_OK);
+    assert_int_equal(qd_sweep_json(w, rows, st, &b), QD_OK);
     text = qd_buf_str(&b);
     assert_non_null(strstr(text, "\"columns\""));
     assert_non_null(strstr(text, "null")); /* v = 1 never passes 2.5 by t = 2 */
     assert_null(strstr(text, "nan"));
+    /* the stop record per run, the keys of Python's Result.stop */
+    assert_non_null(strstr(text, "\"reason\": \"singular equations\""));
+    assert_non_null(strstr(text, "\"reason\": \"reached the end time\""));
+    assert_non_null(strstr(text, "\"t\": 1.5"));
     qd_buf_free(&b);
     qd_sweep_free(w);
     sf_free(f);

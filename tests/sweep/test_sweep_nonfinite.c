@@ -34,13 +34,15 @@ static void test_nan_run_fails(void **state) {
     assert_int_equal(qd_sweep_ncols(w), 4);
     qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = 2, .q0 = f->q0, .qd0 = f->qd0};
     double rows[2 * 4];
-    qd_status st[2];
-    char reasons[2 * QD_SWEEP_REASON];
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 2, 2, rows, st, reasons, NULL, NULL), QD_OK);
+    qd_sweep_outcome out[2];
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 2, 2, rows, out, NULL, NULL), QD_OK);
+    char why[QD_SWEEP_OUTCOME_MAX];
     for (size_t k = 0; k < 2; k++) {
-        if (st[k] != QD_ERR_NUMERIC || !strstr(reasons + k * QD_SWEEP_REASON,
-                                               "step size underflow at t = 0.2"))
-            fail_msg("run %zu: status %d, '%s'", k, (int)st[k], reasons + k * QD_SWEEP_REASON);
+        qd_sweep_outcome_str(&out[k], why, sizeof why);
+        if (out[k].status != QD_ERR_NUMERIC || out[k].stop.code != QD_STOP_STEP_UNDERFLOW ||
+            !strstr(why, "step size underflow at t = 0.2"))
+            fail_msg("run %zu: status %d, stop %d, '%s'", k, (int)out[k].status,
+                     (int)out[k].stop.code, why);
         assert_true(isnan(rows[4 * k + 1]) && isnan(rows[4 * k + 3]));
     }
     qd_sweep_free(w);
@@ -58,14 +60,14 @@ static void test_threads_bounded(void **state) {
     assert_int_equal(qd_sweep_measures(w, "final"), QD_OK);
     qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = 0.1, .q0 = f->q0, .qd0 = f->qd0};
     double rows[3 * 3];
-    qd_status st[3];
+    qd_sweep_outcome st[3];
     /* (unsigned)1e12 = 3567587328, what --threads 1e12 once reached */
-    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, 3567587328u, rows, st, NULL, NULL, NULL),
+    assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, 3567587328u, rows, st, NULL, NULL),
                      QD_ERR_ARG);
     assert_non_null(strstr(qd_ctx_message(f->ctx), "at most 1024"));
     qd_ctx_clear_error(f->ctx);
     assert_int_equal(qd_sweep_run(f->ctx, w, &o, 0, 3, QD_SWEEP_MAX_THREADS, rows, st, NULL,
-                                  NULL, NULL), QD_OK);
+                                  NULL), QD_OK);
     assert_int_equal(qd_sweep_threads(QD_SWEEP_MAX_THREADS, 3), 3);
     assert_int_equal(qd_sweep_threads(2, 3), 2);
     assert_int_equal(qd_sweep_threads(QD_SWEEP_MAX_THREADS + 1, 3), 0);
