@@ -83,6 +83,7 @@ typedef struct qd_field_modes_opts {
 typedef struct qd_field_modes {
     bool exact;            /* constant coefficients: closed form */
     bool converged;        /* discretized: every estimate below tol */
+    double tol;            /* the tolerance the estimates were held to (opts or 1e-6) */
     size_t elements;       /* discretized: the finest mesh used */
     const qd_expr *rho, *tau, *kappa; /* the coefficients, in x */
     size_t n;
@@ -95,6 +96,33 @@ typedef struct qd_field_modes {
 QD_API qd_status qd_field_modes_compute(qd_ctx *ctx, const qd_field *f,
                                         const qd_field_modes_opts *opts, qd_field_modes *out);
 QD_API void qd_field_modes_free(qd_field_modes *r);
+
+/* ---- printers (src/field/print.c) ----------------------------------------
+ * Appended to out.  The head of both: "field y(x, t) on x = A .. B: fixed
+ * at x = A, free at x = B" (text) or the keys field, space, interval,
+ * boundary ("fixed"/"free"), density (JSON).  QD_ERR_NOMEM when out could
+ * not grow, QD_ERR_ARG when a JSON number was not finite (the reason in
+ * ctx). */
+
+/* The field equation E = 0 (E: qd_field_equation): text, or one JSON
+ * document {head..., "equation"} and a newline. */
+QD_API qd_status qd_field_equation_print(qd_ctx *ctx, const qd_field *f, const qd_expr *E,
+                                         qd_buf *out);
+QD_API qd_status qd_field_equation_json(qd_ctx *ctx, const qd_field *f, const qd_expr *E,
+                                        qd_buf *out);
+/* The modes r of f: text (the coefficients, how they were found, a table of
+ * mode, omega ("unstable" where omega^2 < 0), omega^2 and the shape, exact,
+ * or the error estimate; computed results by the digit rule of
+ * qd_result_format, each column against its largest entry), or one JSON
+ * document {head..., rho, tau, kappa, method ("exact" or "finite
+ * elements"), converged, elements (null when exact), tolerance, modes:
+ * [{omega (null when omega^2 < 0), omega2, error, shape ("sin(k*x)", null
+ * when none), k}]} and a newline.  A shape is an expression one may
+ * evaluate: k keeps every digit. */
+QD_API qd_status qd_field_modes_print(qd_ctx *ctx, const qd_field *f, const qd_field_modes *r,
+                                      qd_buf *out);
+QD_API qd_status qd_field_modes_json(qd_ctx *ctx, const qd_field *f, const qd_field_modes *r,
+                                     qd_buf *out);
 
 #ifdef __cplusplus
 }

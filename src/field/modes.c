@@ -296,6 +296,7 @@ qd_status qd_field_modes_compute(qd_ctx *ctx, const qd_field *fld, const qd_fiel
     qd_status st = coefficients(ctx, f, out);
     if (st != QD_OK)
         return st;
+    out->tol = o.tol;
     out->mode = qd__calloc(ctx, o.count, sizeof *out->mode);
     if (!out->mode)
         return QD_ERR_NOMEM;

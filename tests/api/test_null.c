@@ -1461,6 +1461,52 @@ static void null_field(void **state)
     /* r NULL */
     qd_field_modes_free(NULL);
     reset(&F);
+    /* ---- qd_field_equation_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_print(NULL, NULL, F.q, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_print(F.ctx, NULL, F.q, &F.buf));
+    reset(&F);
+    /* E NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_print(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_print(F.ctx, NULL, F.q, NULL));
+    reset(&F);
+    /* ---- qd_field_equation_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_json(NULL, NULL, F.q, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_json(F.ctx, NULL, F.q, &F.buf));
+    reset(&F);
+    /* E NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_json(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_equation_json(F.ctx, NULL, F.q, NULL));
+    reset(&F);
+    /* ---- qd_field_modes_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_print(NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_print(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_print(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_field_modes_json */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_json(NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_json(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_field_modes_json(F.ctx, NULL, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
