@@ -8,7 +8,6 @@
  */
 #include "cli.h"
 
-#include <ctype.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -54,146 +53,64 @@ static const cli_spec spec = {
     opts, NULL, 1, 1, "FILE", false,
 };
 
-/* Does the state text give t ("t = 2" among its items)? */
-static bool gives_t(const char *s) {
-    for (const char *p = s; *p; p++) {
-        if (*p != 't' || (p > s && (isalnum((unsigned char)p[-1]) || p[-1] == '_')))
-            continue;
-        const char *q = p + 1;
-        while (*q == ' ')
-            q++;
-        if (*q == '=')
-            return true;
-    }
-    return false;
-}
-
 typedef struct path_run {
     qd_ctx *ctx;
     cli_model_file mf;
     qd_eom *e;
-    cli_state from, to, g;
+    cli_state g;
     double *q0, *q1, *guess;
     qd_path_set ps;
     bool energy, any_free;
     bool free0[32], free1[32];
 } path_run;
 
-/* ---- the ends' text: `y=free` items and the independent variable's name --- */
-
-static char *trim(char *s) {
-    while (*s == ' ' || *s == '\t')
-        s++;
-    char *e = s + strlen(s);
-    while (e > s && (e[-1] == ' ' || e[-1] == '\t'))
-        *--e = '\0';
-    return s;
-}
-
-/* The coordinate called name, or -1. */
-static long coord_named(const qd_eom *e, const char *name) {
-    for (size_t j = 0; j < e->n; j++)
-        if (!strcmp(qd_expr_name(e->q[j]), name))
-            return (long)j;
-    return -1;
-}
-
-/* One item NAME=VALUE of an end: `free` marks the coordinate free and drops
- * the item; the independent variable's name becomes t. */
-static int end_item(path_run *r, const char *what, char *item, bool *fr, qd_buf *out) {
-    const char *indep = qd_model_independent(r->mf.model);
-    char *eq = strchr(item, '=');
-    if (!*item)
-        return QD_EXIT_OK;
-    if (!eq) {
-        qd_buf_printf(out, "%s%s", out->len ? ", " : "", item);
-        return QD_EXIT_OK;
-    }
-    *eq = '\0';
-    char *name = trim(item), *value = trim(eq + 1);
-    if (!strcmp(value, "free")) {
-        long j = coord_named(r->e, name);
-        if (j < 0 || r->energy) {
-            cli_diag_error("%s: %s=free: %s", what, name,
-                           r->energy ? "free ends need the end times, not --energy"
-                                     : "only a coordinate can be free");
-            return QD_EXIT_USAGE;
-        }
-        fr[j] = r->any_free = true;
-        return QD_EXIT_OK;
-    }
-    bool is_x = indep && !strcmp(name, indep);
-    qd_buf_printf(out, "%s%s=%s", out->len ? ", " : "", is_x ? "t" : name, value);
-    return QD_EXIT_OK;
-}
-
-/* The end's text for cli_state_parse_as (free items out, x as t) in *res
- * (malloc'd); the items split at the commas outside brackets. */
-static int end_text(path_run *r, const char *what, const char *text, bool *fr, char **res) {
-    char *copy = malloc(strlen(text) + 1);
-    qd_buf out = QD_BUF_INIT;
-    int rc = copy ? QD_EXIT_OK : QD_EXIT_FAIL;
-    if (copy)
-        strcpy(copy, text);
-    int depth = 0;
-    for (char *p = copy, *item = copy; rc == QD_EXIT_OK && p; p++) {
-        depth += (*p == '(' || *p == '[') - (*p == ')' || *p == ']');
-        if (*p && (*p != ',' || depth > 0))
-            continue;
-        bool end = !*p;
-        *p = '\0';
-        rc = end_item(r, what, trim(item), fr, &out);
-        item = p + 1;
-        if (end)
-            break;
-    }
-    free(copy);
-    *res = rc == QD_EXIT_OK && !out.failed ? malloc(out.len + 1) : NULL;
-    if (*res) {
-        memcpy(*res, out.s ? out.s : "", out.len);
-        (*res)[out.len] = '\0';
-    }
-    qd_buf_free(&out);
-    if (rc == QD_EXIT_OK && !*res) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
-    return rc;
-}
-
 /* A free coordinate starts from the other end's value (0 if free too). */
 static void free_guesses(path_run *r) {
     size_t n = r->e->n;
     for (size_t j = 0; j < n; j++) {
         if (r->free0[j])
-            r->from.vals[j] = r->free1[j] ? 0 : r->to.vals[j];
+            r->q0[j] = r->free1[j] ? 0 : r->q1[j];
         if (r->free1[j])
-            r->to.vals[j] = r->free0[j] ? 0 : r->from.vals[j];
+            r->q1[j] = r->free0[j] ? 0 : r->q0[j];
     }
+}
+
+/* One end: its error shown in the option's text. */
+static int read_end(path_run *r, const char *what, const char *text, double *q, double *t,
+                    bool *fr) {
+    if (qd_path_end_read(r->ctx, r->mf.model, r->e, text, q, t, fr) != QD_OK)
+        return cli_state_diag(r->ctx, what, text);
+    for (size_t j = 0; j < r->e->n; j++)
+        r->any_free = r->any_free || fr[j];
+    return QD_EXIT_OK;
 }
 
 static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     const qd_model *m = r->mf.model;
     size_t n = r->e->n;
-    char *from = NULL, *to = NULL;
-    int rc = end_text(r, "--from", a->from, r->free0, &from);
+    if (n > sizeof r->free0 / sizeof r->free0[0]) {
+        cli_diag_error("path: at most %zu coordinates", sizeof r->free0 / sizeof r->free0[0]);
+        return QD_EXIT_USAGE;
+    }
+    r->q0 = calloc(n + 1, sizeof *r->q0);
+    r->q1 = calloc(n + 1, sizeof *r->q1);
+    if (!r->q0 || !r->q1) {
+        cli_diag_error("out of memory");
+        return QD_EXIT_FAIL;
+    }
+    double t0 = 0, t1 = NAN;
+    int rc = read_end(r, "--from", a->from, r->q0, &t0, r->free0);
     if (rc == QD_EXIT_OK)
-        rc = end_text(r, "--to", a->to, r->free1, &to);
-    if (rc == QD_EXIT_OK && !r->energy && !gives_t(to)) {
+        rc = read_end(r, "--to", a->to, r->q1, &t1, r->free1);
+    if (rc == QD_EXIT_OK && r->energy && r->any_free) {
+        cli_diag_error("path: free ends need the end times, not --energy");
+        rc = QD_EXIT_USAGE;
+    }
+    if (rc == QD_EXIT_OK && !r->energy && isnan(t1)) {
         const char *x = qd_model_independent(m) ? qd_model_independent(m) : "t";
         cli_diag_error("path: --to needs the end %s=T1 (or give --energy E)", x);
         rc = QD_EXIT_USAGE;
     }
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_init(r->ctx, m, &r->from);
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_parse_as(r->ctx, m, "--from", from, &r->from);
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_init(r->ctx, m, &r->to);
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_parse_as(r->ctx, m, "--to", to, &r->to);
-    free(from);
-    free(to);
     if (rc == QD_EXIT_OK)
         free_guesses(r);
     r->guess = calloc(a->guess.n * n + 1, sizeof *r->guess);
@@ -211,10 +128,10 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     }
     if (rc != QD_EXIT_OK)
         return rc;
-    o->q0 = r->from.vals;
-    o->q1 = r->to.vals;
-    o->t0 = r->from.vals[2 * n];
-    o->t1 = r->to.vals[2 * n];
+    o->q0 = r->q0;
+    o->q1 = r->q1;
+    o->t0 = t0;
+    o->t1 = t1;
     o->nguess = a->guess.n;
     o->guess = a->guess.n ? r->guess : NULL;
     o->all = a->all;
@@ -277,9 +194,9 @@ int cli_cmd_path(int argc, char **argv) {
     }
     rc = run(&r, &a);
     qd_path_set_free(&r.ps);
-    cli_state_free(&r.from);
-    cli_state_free(&r.to);
     cli_state_free(&r.g);
+    free(r.q0);
+    free(r.q1);
     free(r.guess);
     if (r.e)
         qd_eom_free(r.e);

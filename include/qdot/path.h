@@ -148,6 +148,18 @@ QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom 
                                    double *action, double *first_variation);
 
 
+/* One end of a path as the command line and Python give it, "x=0, y=free,
+ * t=2": for each coordinate of e named, its value into q[j] (e->n entries;
+ * the others untouched), or `free` (is_free[j] set, q[j] untouched: a free
+ * end, qd_path_opts.free0/free1); the time (t, or the model's independent
+ * name) into *t, untouched when the text does not give it.  Values are
+ * constant expressions in pi, e and the parameters, read by qd_state_read;
+ * a velocity, a parameter or another slot is refused, and so is `free` on
+ * a name that is not a coordinate.  QD_ERR_ARG (or the reader's error)
+ * with the error record located in text; QD_ERR_NOMEM. */
+QD_API qd_status qd_path_end_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                  const char *text, double *q, double *t, bool *is_free);
+
 /* ps (found for m and e with opts: its free ends are said so; may be NULL)
  * written for a reader, appended to out: per path the action, the initial
  * velocities, the multipliers, at fixed energy the least action and the

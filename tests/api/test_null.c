@@ -2977,6 +2977,28 @@ static void null_path(void **state)
     /* first_variation NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, NULL));
     reset(&F);
+    /* ---- qd_path_end_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_end_read(NULL, F.model, F.eom, "q", F.d, F.d, F.b));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, NULL, F.eom, "q", F.d, F.d, F.b));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, NULL, "q", F.d, F.d, F.b));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, F.eom, NULL, F.d, F.d, F.b));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, F.eom, "q", NULL, F.d, F.b));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, F.eom, "q", F.d, NULL, F.b));
+    reset(&F);
+    /* is_free NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, F.eom, "q", F.d, F.d, NULL));
+    reset(&F);
     /* ---- qd_path_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_print(NULL, NULL, F.model, F.eom, NULL, &F.buf));
