@@ -7,7 +7,6 @@
  */
 #include "cli.h"
 
-#include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/json.h"
@@ -45,84 +44,19 @@ static const cli_spec spec = {
     "The action of a trial path and the size of its first variation.", opts, NULL, 1, 1,
     "FILE", false};
 
-static size_t coord_index(const qd_model *m, const char *name, size_t len) {
-    for (size_t j = 0; j < qd_model_ncoords(m); j++) {
-        const char *q = qd_expr_name(qd_model_coord(m, j));
-        if (strlen(q) == len && !strncmp(q, name, len))
-            return j;
-    }
-    return (size_t)-1;
-}
-
-/* One "NAME = EXPR" of --path, text[a, b). */
-static int path_item(ao_run *r, const char *text, size_t a, size_t b) {
-    const char *eq = memchr(text + a, '=', b - a);
-    size_t na = a, nb = eq ? (size_t)(eq - text) : b;
-    while (na < nb && isspace((unsigned char)text[na]))
-        na++;
-    while (nb > na && isspace((unsigned char)text[nb - 1]))
-        nb--;
-    size_t j = eq ? coord_index(r->mf.model, text + na, nb - na) : (size_t)-1;
-    if (j == (size_t)-1) {
-        cli_diag_error("--path: expected COORDINATE = EXPR(t), not '%.*s'", (int)(b - a),
-                       text + a);
-        return QD_EXIT_USAGE;
-    }
-    if (r->q[j]) {
-        cli_diag_error("--path: '%.*s' is given twice", (int)(nb - na), text + na);
-        return QD_EXIT_USAGE;
-    }
-    size_t va = (size_t)(eq - text) + 1, len = b - va;
-    char *copy = malloc(len + 1);
-    if (!copy)
-        return QD_EXIT_FAIL;
-    memcpy(copy, text + va, len);
-    copy[len] = '\0';
-    const qd_read_opts opts = {.new_symbols = false};
-    qd_diag err;
-    r->q[j] = qd_read(r->ctx, copy, &opts, &err);
-    free(copy);
-    if (!r->q[j]) {
-        err.offset += va;
-        cli_diag_read("--path", text, &err);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
 static int parse_path(ao_run *r) {
     size_t n = qd_model_ncoords(r->mf.model);
     if (!(r->q = calloc(n ? n : 1, sizeof *r->q)))
         return QD_EXIT_FAIL;
-    const char *text = r->path;
-    for (size_t a = 0; text[a];) {
-        size_t b = qd_state_item_end(text, a);
-        int rc = path_item(r, text, a, b);
-        if (rc != QD_EXIT_OK)
-            return rc;
-        a = text[b] ? b + 1 : b;
-    }
-    for (size_t j = 0; j < n; j++)
-        if (!r->q[j]) {
-            cli_diag_error("--path: no trial path for %s (give every coordinate as an "
-                           "expression in t)", qd_expr_name(qd_model_coord(r->mf.model, j)));
-            return QD_EXIT_USAGE;
-        }
+    if (qd_path_trial_read(r->ctx, r->mf.model, r->path, r->q) != QD_OK)
+        return cli_state_diag(r->ctx, "--path", r->path);
     return QD_EXIT_OK;
 }
 
 /* --t T0:T1, each a constant expression in the parameters (pi/8, 2*pi/w). */
 static int parse_times(ao_run *r) {
-    const char *text = r->times, *colon = strchr(text, ':');
-    if (!colon) {
-        cli_diag_error("--t takes T0:T1, not '%s'", text);
-        return QD_EXIT_USAGE;
-    }
-    size_t c = (size_t)(colon - text);
-    const qd_expr *x;
-    if (qd_state_value(r->ctx, r->mf.model, text, 0, c, &x, &r->t0) != QD_OK ||
-        qd_state_value(r->ctx, r->mf.model, text, c + 1, strlen(text) - c - 1, &x, &r->t1) !=
-            QD_OK)
+    const char *text = r->times;
+    if (qd_state_range(r->ctx, r->mf.model, text, 0, strlen(text), &r->t0, &r->t1) != QD_OK)
         return cli_state_diag(r->ctx, "--t", text);
     if (!(r->t1 > r->t0)) {
         cli_diag_error("--t: T1 must be after T0 (%s)", text);

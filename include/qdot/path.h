@@ -160,6 +160,16 @@ QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom 
 QD_API qd_status qd_path_end_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                   const char *text, double *q, double *t, bool *is_free);
 
+/* A trial path for qd_path_action_of, "x = EXPR, y = EXPR": every
+ * coordinate of m once (q has qd_model_ncoords(m) entries, in m's order),
+ * each an expression in t, the parameters and other names m knows.  A name
+ * that is not a coordinate, a coordinate given twice or left out, and the
+ * expression reader's errors are QD_ERR_ARG / QD_ERR_PARSE with the error
+ * record located in text (the last one is not located: it names the
+ * coordinate). */
+QD_API qd_status qd_path_trial_read(qd_ctx *ctx, const qd_model *m, const char *text,
+                                    const qd_expr **q);
+
 /* ps (found for m and e with opts: its free ends are said so; may be NULL)
  * written for a reader, appended to out: per path the action, the initial
  * velocities, the multipliers, at fixed energy the least action and the

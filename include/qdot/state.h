@@ -118,6 +118,14 @@ QD_API qd_status qd_state_read(qd_ctx *ctx, const qd_model *m, qd_state *st, con
 QD_API qd_status qd_state_value(qd_ctx *ctx, const qd_model *m, const char *text, size_t start,
                                 size_t len, const qd_expr **exact, double *val);
 
+/* A range "A:B", text[start, start + len): A and B read as qd_state_value
+ * reads a value (constant expressions in pi, e and m's parameters) into *a
+ * and *b.  No colon outside brackets is an error located at the span, as
+ * every error of the values is located in text.  The order of A and B is
+ * the caller's to check. */
+QD_API qd_status qd_state_range(qd_ctx *ctx, const qd_model *m, const char *text, size_t start,
+                                size_t len, double *a, double *b);
+
 /* The end of the item that starts at text[i] of a comma-separated list:
  * the next comma outside brackets, or the end of text. */
 QD_API size_t qd_state_item_end(const char *text, size_t i);

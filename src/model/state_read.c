@@ -323,6 +323,35 @@ static qd_status resolve(qd_ctx *ctx, const qd_model *m, const qd_state *st, con
     return s;
 }
 
+qd_status qd_state_range(qd_ctx *ctx, const qd_model *m, const char *text, size_t start,
+                         size_t len, double *a, double *b) {
+    QD_ARGS_CTX(ctx, text && a && b);
+    size_t n = strlen(text), end = start + len, colon = start;
+    if (start > n || len > n - start) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "qd_state_range: the range's span is outside the text");
+        return QD_ERR_ARG;
+    }
+    for (int depth = 0; colon < end; colon++) {
+        depth += (text[colon] == '(' || text[colon] == '[') -
+                 (text[colon] == ')' || text[colon] == ']');
+        if (text[colon] == ':' && depth == 0)
+            break;
+    }
+    if (colon == end) {
+        size_t ia = start, ib = end;
+        while (ia < ib && isspace((unsigned char)text[ia]))
+            ia++;
+        while (ib > ia && isspace((unsigned char)text[ib - 1]))
+            ib--;
+        return fail(ctx, text, ia, ib - ia, "a range is A:B, each a number or an expression in "
+                    "the parameters", "expected a range A:B, not '%.*s'", (int)(ib - ia),
+                    text + ia);
+    }
+    const qd_expr *x;
+    qd_status st = qd_state_value(ctx, m, text, start, colon - start, &x, a);
+    return st == QD_OK ? qd_state_value(ctx, m, text, colon + 1, end - colon - 1, &x, b) : st;
+}
+
 /* ---- the list ---------------------------------------------------------------- */
 
 static bool blank(const char *s, size_t a, size_t b) {

@@ -1,6 +1,7 @@
 /*
  * src/path/ends.c - one end of a path as the command line and Python give
- * it, "x=0, y=free, t=2" (qd_path_end_read, qdot/path.h).
+ * it, "x=0, y=free, t=2" (qd_path_end_read, qdot/path.h), and a trial
+ * path, "x = t^2, y = sin(t)" (qd_path_trial_read).
  *
  * The state reader (qdot/state.h) reads every item but `free`: those are
  * marked and blanked in a copy of the same length, so the reader's errors
@@ -13,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "qdot/read.h"
 #include "qdot/state.h"
 #include "../base/args.h"
 
@@ -98,4 +100,74 @@ qd_status qd_path_end_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e, cons
     qd_state_free(&st);
     free(copy);
     return s;
+}
+
+/* text with everything outside [a, b) blanked (line breaks kept): what the
+ * expression reader reads, so its errors carry the caller's offsets. */
+static char *blanked(const char *text, size_t a, size_t b) {
+    size_t n = strlen(text);
+    char *copy = malloc(n + 1);
+    if (!copy)
+        return NULL;
+    for (size_t i = 0; i < n; i++)
+        copy[i] = (i >= a && i < b) || text[i] == '\n' || text[i] == '\r' ? text[i] : ' ';
+    copy[n] = '\0';
+    return copy;
+}
+
+/* One "NAME = EXPR" of a trial path, text[a, b). */
+static qd_status trial_item(qd_ctx *ctx, const qd_model *m, const char *text, size_t a,
+                            size_t b, const qd_expr **q) {
+    const char *eq = memchr(text + a, '=', b - a);
+    size_t na = a, nb = eq ? (size_t)(eq - text) : b, n = qd_model_ncoords(m), j = n;
+    trim(text, &na, &nb);
+    for (size_t k = 0; eq && k < n; k++) {
+        const char *s = qd_expr_name(qd_model_coord(m, k));
+        if (strlen(s) == nb - na && !strncmp(s, text + na, nb - na))
+            j = k;
+    }
+    if (j == n || q[j]) {
+        size_t ia = a, ib = b;
+        trim(text, &ia, &ib);
+        if (j == n)
+            qd_ctx_error(ctx, QD_ERR_ARG, "expected COORDINATE = EXPR(t), not '%.*s'",
+                         (int)(ib - ia), text + ia);
+        else
+            qd_ctx_error(ctx, QD_ERR_ARG, "'%.*s' is given twice", (int)(nb - na), text + na);
+        qd_ctx_error_at(ctx, text, j == n ? ia : na, j == n ? ib - ia : nb - na);
+        return QD_ERR_ARG;
+    }
+    char *copy = blanked(text, (size_t)(eq - text) + 1, b);
+    if (!copy) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory reading a trial path");
+        return QD_ERR_NOMEM;
+    }
+    const qd_read_opts opts = {.new_symbols = false}; /* t, the parameters, known names */
+    q[j] = qd_read(ctx, copy, &opts, NULL);
+    free(copy);
+    return q[j] ? QD_OK : qd_ctx_status(ctx); /* located by the reader */
+}
+
+qd_status qd_path_trial_read(qd_ctx *ctx, const qd_model *m, const char *text,
+                             const qd_expr **q) {
+    QD_ARGS_CTX(ctx, ctx && m && text && q);
+    size_t n = qd_model_ncoords(m);
+    for (size_t j = 0; j < n; j++)
+        q[j] = NULL;
+    for (size_t a = 0; text[a];) {
+        size_t b = qd_state_item_end(text, a);
+        size_t ia = a, ib = b;
+        trim(text, &ia, &ib);
+        qd_status s = ia < ib ? trial_item(ctx, m, text, a, b, q) : QD_OK;
+        if (s != QD_OK)
+            return s;
+        a = text[b] ? b + 1 : b;
+    }
+    for (size_t j = 0; j < n; j++)
+        if (!q[j]) {
+            qd_ctx_error(ctx, QD_ERR_ARG, "no trial path for %s (give every coordinate as an "
+                         "expression in t)", qd_expr_name(qd_model_coord(m, j)));
+            return QD_ERR_ARG;
+        }
+    return QD_OK;
 }

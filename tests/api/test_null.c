@@ -2999,6 +2999,19 @@ static void null_path(void **state)
     /* is_free NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, F.eom, "q", F.d, F.d, NULL));
     reset(&F);
+    /* ---- qd_path_trial_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_trial_read(NULL, F.model, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_trial_read(F.ctx, NULL, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_trial_read(F.ctx, F.model, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_trial_read(F.ctx, F.model, "q", NULL));
+    reset(&F);
     /* ---- qd_path_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_print(NULL, NULL, F.model, F.eom, NULL, &F.buf));
@@ -4855,6 +4868,22 @@ static void null_state(void **state)
     reset(&F);
     /* val NULL */
     assert_int_equal(QD_ERR_ARG, qd_state_value(F.ctx, F.model, "q", 1, 1, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_state_range */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_range(NULL, F.model, "q", 1, 1, F.d, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_range(F.ctx, NULL, "q", 1, 1, F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_range(F.ctx, F.model, NULL, 1, 1, F.d, F.d));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_range(F.ctx, F.model, "q", 1, 1, NULL, F.d));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_range(F.ctx, F.model, "q", 1, 1, F.d, NULL));
     reset(&F);
     /* ---- qd_state_item_end */
     /* text NULL */

@@ -7,7 +7,12 @@
  *     when not, and `y=free` marks a free end without touching its value;
  *   - every error is located in the caller's text, also after a `free`
  *     item (the reader sees a copy of the same length): a misspelt value,
- *     `free` on a parameter, a velocity at an end.
+ *     `free` on a parameter, a velocity at an end;
+ *   - a trial path (qd_path_trial_read) for qd_path_action_of: the falling
+ *     body y = t (1 - t) over [0, 1] (Desloge ch. 83's trial paths) has
+ *     S = integral of m/2 y'^2 - m g y = m/6 - m g/6, the interval read by
+ *     qd_state_range from "0:h/3"; a coordinate twice, a name that is not
+ *     one and a missing coordinate are located errors.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -101,11 +106,45 @@ static void test_independent_name(void **state) {
     unload(&f);
 }
 
+static void test_trial_path(void **state) {
+    (void)state;
+    fix f;
+    load(&f, "coordinates y\nparameters m = 2, g = 9.81, h = 3\nT = m/2*y'^2\nV = m*g*y\n");
+    const qd_expr *q[1];
+    assert_int_equal(qd_path_trial_read(f.ctx, f.m, "y = t*(1 - t)", q), QD_OK);
+    double t0, t1, S, dS;
+    const char *range = "0:h/3";
+    assert_int_equal(qd_state_range(f.ctx, f.m, range, 0, strlen(range), &t0, &t1), QD_OK);
+    assert_true(t0 == 0 && t1 == 1);
+    assert_int_equal(qd_path_action_of(f.ctx, f.m, f.e, q, t0, t1, &S, &dS), QD_OK);
+    assert_true(fabs(S - (2.0 / 6 - 2 * 9.81 / 6)) < 1e-9);
+    assert_true(dS > 1); /* not the true path: y'' = -g, not -2 */
+    /* located errors */
+    assert_int_not_equal(qd_path_trial_read(f.ctx, f.m, "y = t, z = t", q), QD_OK);
+    assert_true(qd_ctx_diag(f.ctx)->located && qd_ctx_diag(f.ctx)->offset == 7);
+    qd_ctx_clear_error(f.ctx);
+    assert_int_not_equal(qd_path_trial_read(f.ctx, f.m, "y = t, y = 2*t", q), QD_OK);
+    assert_non_null(strstr(qd_ctx_message(f.ctx), "given twice"));
+    assert_true(qd_ctx_diag(f.ctx)->offset == 7);
+    qd_ctx_clear_error(f.ctx);
+    assert_int_not_equal(qd_path_trial_read(f.ctx, f.m, "y = t*(1-/t)", q), QD_OK);
+    assert_true(qd_ctx_diag(f.ctx)->located && qd_ctx_diag(f.ctx)->offset == 9);
+    qd_ctx_clear_error(f.ctx);
+    assert_int_not_equal(qd_path_trial_read(f.ctx, f.m, " ", q), QD_OK);
+    assert_non_null(strstr(qd_ctx_message(f.ctx), "no trial path for y"));
+    qd_ctx_clear_error(f.ctx);
+    assert_int_not_equal(qd_state_range(f.ctx, f.m, "0,1", 0, 3, &t0, &t1), QD_OK);
+    assert_non_null(strstr(qd_ctx_message(f.ctx), "expected a range A:B"));
+    qd_ctx_clear_error(f.ctx);
+    unload(&f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_values_time_free),
         cmocka_unit_test(test_errors_located),
         cmocka_unit_test(test_independent_name),
+        cmocka_unit_test(test_trial_path),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
