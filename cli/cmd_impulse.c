@@ -173,15 +173,6 @@ static int state_before(imp_run *r, const char *at) {
 
 /* ---- solving -------------------------------------------------------------------- */
 
-/* The input's fault (exit 2) or a numerical failure (exit 1): dependent or
- * inconsistent sudden constraints are the latter. */
-static int exit_status(qd_status st) {
-    return st == QD_ERR_ARG || st == QD_ERR_PARSE || st == QD_ERR_NONLINEAR ||
-                   st == QD_ERR_UNBOUND || st == QD_ERR_DIVZERO
-               ? QD_EXIT_USAGE
-               : QD_EXIT_FAIL;
-}
-
 /* The solver's error, at the statement it is about when it names one. */
 static int solve_failed(imp_run *r) {
     qd_diag d = *qd_ctx_diag(r->ctx);
@@ -190,7 +181,8 @@ static int solve_failed(imp_run *r) {
         cli_diag_show(r->mf.path, r->mf.text, &d);
     else
         cli_diag_show("qdot", NULL, &d);
-    return exit_status(qd_ctx_status(r->ctx));
+    /* dependent or inconsistent sudden constraints are a numerical failure (exit 1) */
+    return cli_exit(qd_ctx_status(r->ctx));
 }
 
 static int solve(imp_run *r) {
