@@ -81,12 +81,7 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
                    double *b);
 /* How to print a scan: the parameter, a name for each number of a point
  * (sc->n), what was followed (a phrase), the JSON key of a point. */
-typedef struct cli_scan_view {
-    const char *param;
-    const char *const *names;
-    const char *followed;
-    const char *key;
-} cli_scan_view;
+typedef qd_scan_view cli_scan_view; /* qdot/modes.h */
 /* A table of the samples and the transitions (text), or JSON: parameter,
  * range, steps, samples, transitions. */
 int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json);

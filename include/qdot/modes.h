@@ -201,6 +201,29 @@ QD_API qd_status qd_modes_scan(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                                const qd_scan_opts *opts, qd_scan *out);
 QD_API void qd_scan_free(qd_scan *s);
 
+/* How a scan is written (qd_scan_print, qd_scan_json): the parameter's
+ * name, a name for each number of a point (sc->n), what was followed (a
+ * phrase for the text's head: "the equilibrium from x = 1/2 - mu") and the
+ * JSON key of a point ("equilibrium", "steady_motion"). */
+typedef struct qd_scan_view {
+    const char *param;
+    const char *const *names;
+    const char *followed;
+    const char *key;
+} qd_scan_view;
+/* sc (count >= 1) appended to out for a reader: a head, a table of the
+ * parameter, the point and the margin ("min w^2" when every sample is
+ * conservative, else "max Re s") with the verdict, and each transition
+ * ("transition: mu = 0.0385208965, stable -> unstable"), computed results by
+ * qd_result_format; or as one JSON document and a newline: "parameter",
+ * "range", "steps", "samples" (each {PARAM, KEY: {name: value},
+ * "min_omega2" or "max_re_s", "stable" (true, false, null for borderline),
+ * "verdict"}), "transitions" (each {PARAM, "from", "to", "bracket"}).
+ * QD_ERR_NOMEM when out could not grow, QD_ERR_ARG for a number JSON cannot
+ * hold or an empty scan. */
+QD_API qd_status qd_scan_print(const qd_scan_view *v, const qd_scan *sc, qd_buf *out);
+QD_API qd_status qd_scan_json(const qd_scan_view *v, const qd_scan *sc, qd_buf *out);
+
 /* ---- models in generalized speeds (src/linear/speeds_lin.c) ----------------
  *
  * The first-order system y = (q, u) of qd_speeds_derive, q' = kin(q, u, t),

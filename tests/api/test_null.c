@@ -2725,6 +2725,20 @@ static void null_modes(void **state)
     /* s NULL */
     qd_scan_free(NULL);
     reset(&F);
+    /* ---- qd_scan_print */
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scan_print(NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scan_print(NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scan_json */
+    /* v NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scan_json(NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scan_json(NULL, NULL, NULL));
+    reset(&F);
     /* ---- qd_speeds_linear_about */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_speeds_linear *)(void *)F.blob));

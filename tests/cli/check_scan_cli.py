@@ -147,7 +147,14 @@ def scan_errors(qdot):
     rc, out, err = run(qdot, "modes", f, "--scan", "mu=0.01:0.02", "--at-equilibrium", "1")
     check("scan with --at-equilibrium", rc == 2, err)
     rc, out, err = run(qdot, "modes", f, "--scan", "mu=0.01:0.02", "--about", "x = y, y = 1")
-    check("about not in the parameters", rc == 2 and "expression in the parameters" in err, err)
+    # the state reader's one wording, at its place (issue 31)
+    check("about not in the parameters", rc == 2 and "only pi, e and the parameters" in err
+          and "--about:1:5:" in err, err)
+    rc, out, err = run(qdot, "modes", f, "--scan", "mu=0.01:0.02", "--about", "x = 1, z = 1")
+    check("about: not a coordinate, located", rc == 2 and "--about:1:8:" in err
+          and "unknown name 'z'" in err, err)
+    rc, out, err = run(qdot, "modes", f, "--scan", "mu=0.01,0.02")
+    check("scan: not a range, located", rc == 2 and "expected a range A:B" in err, err)
     fold = model("coordinates x\nparameters c = -1\nT = x'^2/2\nV = x^3/3 + c*x\n")
     rc, out, err = run(qdot, "modes", fold, "--scan", "c=-1:1", "--steps", "20", "--about",
                        "x = -1")
