@@ -11,6 +11,7 @@
 #include "args.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static size_t utf8_char(const unsigned char *s, unsigned long *cp);
@@ -201,4 +202,15 @@ const char *qd__diag_nearest(const char *word, size_t n, const char *const *name
 const char *qd_nearest_name(const char *word, size_t n, const char *const *names, size_t count) {
     QD_ARGS(NULL, word && (names || !count));
     return qd__diag_nearest(word, n, names, count);
+}
+
+char *qd__diag_blanked(const char *text, size_t start, size_t end) {
+    size_t n = strlen(text);
+    char *copy = malloc(n + 1);
+    if (!copy)
+        return NULL;
+    for (size_t i = 0; i < n; i++)
+        copy[i] = (i >= start && i < end) || text[i] == '\n' || text[i] == '\r' ? text[i] : ' ';
+    copy[n] = '\0';
+    return copy;
 }

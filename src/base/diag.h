@@ -23,6 +23,11 @@ size_t qd__diag_line_len(const char *s);
  * character), or n when every byte is valid. */
 size_t qd__diag_utf8_check(const char *text, size_t n);
 
+/* A malloc'd copy of text with every byte outside [start, end) a blank
+ * and the line breaks kept, or NULL: what a reader reads so that its errors
+ * carry the offsets, lines and columns of the caller's whole text. */
+char *qd__diag_blanked(const char *text, size_t start, size_t end);
+
 /* The hint of "expression nested too deeply", the same in both readers. */
 #define QD_NEST_HINT "brackets and signs nest at most 256 deep; name a part with a definition"
 

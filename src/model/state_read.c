@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "base/args.h"
+#include "base/diag.h"
 #include "qdot/read.h"
 #include "qdot/state.h"
 
@@ -115,17 +116,6 @@ static qd_status refuse_symbol(qd_ctx *ctx, const qd_model *m, const char *text,
     return st;
 }
 
-/* text with everything outside [start, end) blanked, line breaks kept. */
-static char *blanked(const char *text, size_t start, size_t end) {
-    size_t n = strlen(text);
-    char *copy = malloc(n + 1);
-    if (!copy)
-        return NULL;
-    for (size_t i = 0; i < n; i++)
-        copy[i] = (i >= start && i < end) || text[i] == '\n' || text[i] == '\r' ? text[i] : ' ';
-    copy[n] = '\0';
-    return copy;
-}
 
 /* x's value at m's parameters. */
 static qd_status eval_params(qd_ctx *ctx, const qd_model *m, const qd_expr *x, double *out) {
@@ -153,7 +143,7 @@ qd_status qd_state_value(qd_ctx *ctx, const qd_model *m, const char *text, size_
         qd_ctx_error(ctx, QD_ERR_ARG, "qd_state_value: the value's span is outside the text");
         return QD_ERR_ARG;
     }
-    char *copy = blanked(text, start, end);
+    char *copy = qd__diag_blanked(text, start, end);
     if (!copy)
         return nomem(ctx);
     const qd_read_opts ro = {.new_symbols = true};

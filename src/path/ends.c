@@ -17,6 +17,7 @@
 #include "qdot/read.h"
 #include "qdot/state.h"
 #include "../base/args.h"
+#include "../base/diag.h"
 
 /* text[*a, *b) without its surrounding blanks. */
 static void trim(const char *text, size_t *a, size_t *b) {
@@ -102,18 +103,6 @@ qd_status qd_path_end_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e, cons
     return s;
 }
 
-/* text with everything outside [a, b) blanked (line breaks kept): what the
- * expression reader reads, so its errors carry the caller's offsets. */
-static char *blanked(const char *text, size_t a, size_t b) {
-    size_t n = strlen(text);
-    char *copy = malloc(n + 1);
-    if (!copy)
-        return NULL;
-    for (size_t i = 0; i < n; i++)
-        copy[i] = (i >= a && i < b) || text[i] == '\n' || text[i] == '\r' ? text[i] : ' ';
-    copy[n] = '\0';
-    return copy;
-}
 
 /* One "NAME = EXPR" of a trial path, text[a, b). */
 static qd_status trial_item(qd_ctx *ctx, const qd_model *m, const char *text, size_t a,
@@ -137,7 +126,7 @@ static qd_status trial_item(qd_ctx *ctx, const qd_model *m, const char *text, si
         qd_ctx_error_at(ctx, text, j == n ? ia : na, j == n ? ib - ia : nb - na);
         return QD_ERR_ARG;
     }
-    char *copy = blanked(text, (size_t)(eq - text) + 1, b);
+    char *copy = qd__diag_blanked(text, (size_t)(eq - text) + 1, b);
     if (!copy) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory reading a trial path");
         return QD_ERR_NOMEM;
