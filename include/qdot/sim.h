@@ -499,8 +499,8 @@ QD_API qd_status qd_sim_summary_print(const qd_sim_report *r, const char *prefix
  * "constraint_errors" (constraint name to its worst residual), "events";
  * "events_unresolved" ({"steps", "event" (1-based), "t", "spacing"}) when
  * some were; "stop" ({"code": qd_stop_name, "reason": qd_stop_str, "ok":
- * qd_stop_ok, "t", "value": stats.stop's, null where NaN}) unless the run
- * reached t_end; with impacts "impacts", "impact_energy_lost" and
+ * qd_stop_ok, "t", "value": stats.stop's, null where not finite}) unless
+ * the run reached t_end; with impacts "impacts", "impact_energy_lost" and
  * "contact" (null, or {"impact", "t", "chattering", "at_rest"}); with
  * friction "friction_dissipated", "energy_balance_error", "surface_work"
  * and "transitions" ([{"t", "contact", "from", "to"}], "stick"/"slip");

@@ -141,7 +141,8 @@ qd_status qd_sim_summary_print(const qd_sim_report *r, const char *prefix, qd_bu
 
 /* ---- JSON ------------------------------------------------------------------- */
 
-/* A number that may be NaN by design (the stop record's): null then. */
+/* A number of the stop record, NaN where none (or the non-finite number
+ * that stopped the run): null then. */
 static void number_or_null(qd_json *j, double x) {
     if (isfinite(x))
         qd_json_number(j, x);
