@@ -18,6 +18,7 @@
 
 #include <stddef.h>
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -127,143 +128,6 @@ static int sink(void *data, int event, const double *row) {
     return cli_interrupted(); /* ^C: stop after a whole row */
 }
 
-/* The impacts' part of the JSON summary (models with `impact`s only). */
-static void impacts_json(qd_json *j, const cli_sim *c, const qd_sim_stats *st) {
-    qd_json_key(j, "impacts");
-    qd_json_number(j, (double)st->impacts);
-    qd_json_key(j, "impact_energy_lost");
-    qd_json_number(j, st->impact_energy_lost);
-    qd_json_key(j, "contact");
-    if (!st->in_contact) {
-        qd_json_null(j);
-        return;
-    }
-    qd_json_begin_object(j);
-    qd_json_key(j, "impact");
-    qd_json_string(j, qd_model_impact_name(c->mf.model, st->contact));
-    qd_json_key(j, "t");
-    qd_json_number(j, st->t);
-    qd_json_key(j, "chattering");
-    qd_json_bool(j, st->chattering);
-    qd_json_key(j, "at_rest");
-    qd_json_bool(j, st->at_rest);
-    qd_json_end_object(j);
-}
-
-/* The impacts on stderr: how many, the energy they took, and where the run
- * ended in contact. */
-static void impacts_summary(const cli_sim *c, const qd_sim_stats *st) {
-    if (!qd_model_nimpacts(c->mf.model))
-        return;
-    fprintf(stderr, "qdot: simulate: %zu impact%s, energy lost %.6g\n", st->impacts,
-            st->impacts == 1 ? "" : "s", st->impact_energy_lost);
-    if (st->in_contact)
-        fprintf(stderr, "qdot: simulate: impact '%s': %s%s from t = %.6g after %zu impact%s; "
-                        "the run ends there\n",
-                qd_model_impact_name(c->mf.model, st->contact), st->chattering ? "chattering; " : "",
-                st->at_rest ? "at rest in contact"
-                            : "in sustained contact, still moving (not simulated)",
-                st->t, st->impacts, st->impacts == 1 ? "" : "s");
-}
-
-/* Friction (models with contacts): the switches and the energy balance. */
-static void friction_json(qd_json *j, const cli_sim *c, const qd_sim_stats *st) {
-    static const char *const mode[] = {"stick", "slip"};
-    size_t n;
-    const qd_sim_transition *tr = qd_sim_transitions(c->s, &n);
-    qd_json_key(j, "friction_dissipated");
-    qd_json_number(j, st->friction_dissipated);
-    qd_json_key(j, "energy_balance_error");
-    qd_json_number(j, st->energy_balance_error);
-    qd_json_key(j, "surface_work");
-    qd_json_number(j, st->surface_work);
-    qd_json_key(j, "transitions");
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < n; i++) {
-        qd_json_begin_object(j);
-        qd_json_key(j, "t");
-        qd_json_number(j, tr[i].t);
-        qd_json_key(j, "contact");
-        qd_json_string(j, qd_model_contact_name(c->mf.model, tr[i].contact));
-        qd_json_key(j, "from");
-        qd_json_string(j, mode[tr[i].from]);
-        qd_json_key(j, "to");
-        qd_json_string(j, mode[tr[i].to]);
-        qd_json_end_object(j);
-    }
-    qd_json_end_array(j);
-}
-
-/* Friction on stderr: the switches and the energy friction took. */
-static void friction_summary(const cli_sim *c, const qd_sim_stats *st) {
-    if (!qd_sim_ncontacts(c->s))
-        return;
-    /* the surfaces' work only where they moved: fixed ones print as before */
-    char work[64] = "";
-    if (st->surface_work != 0)
-        snprintf(work, sizeof work, ", work done by moving surfaces %.6g", st->surface_work);
-    fprintf(stderr, "qdot: simulate: %zu stick/slip transition%s, energy dissipated by "
-                    "friction %.6g%s, energy balance error %.3g\n",
-            st->transitions, st->transitions == 1 ? "" : "s", st->friction_dissipated, work,
-            st->energy_balance_error);
-}
-
-static void summary_json(qd_json *j, const cli_sim *c, const qd_sim_stats *st, double wall,
-                         const char **names, size_t ncols, const double *final) {
-    qd_json_key(j, "method");
-    qd_json_string(j, qd_sim_method_name(c->opts.method));
-    qd_json_key(j, "speeds"); /* integrated in the model's speeds */
-    qd_json_bool(j, c->se != NULL);
-    qd_json_key(j, "steps");
-    qd_json_number(j, (double)st->steps);
-    qd_json_key(j, "evaluations");
-    qd_json_number(j, (double)st->evals);
-    qd_json_key(j, "rejected");
-    qd_json_number(j, (double)st->rejected);
-    qd_json_key(j, "wall_s");
-    qd_json_number(j, wall);
-    qd_json_key(j, "energy_error_max"); /* over the rows written */
-    qd_json_number(j, st->energy_error_max);
-    qd_json_key(j, "energy_error_steps"); /* at the integrator's steps */
-    qd_json_number(j, st->energy_error_steps);
-    qd_json_key(j, "constraint_error_max");
-    qd_json_number(j, st->constraint_error_max);
-    qd_json_key(j, "constraint_errors"); /* by constraint: the worst residual of each */
-    qd_json_begin_object(j);
-    for (size_t k = 0; k < cli_sim_ncon(c); k++) {
-        qd_json_key(j, cli_sim_con(c, k)->name);
-        qd_json_number(j, qd_sim_constraint_error(c->s, k));
-    }
-    qd_json_end_object(j);
-    qd_json_key(j, "events");
-    qd_json_number(j, (double)st->events);
-    if (st->events_unresolved) {
-        /* steps where an event function oscillated faster than the search resolves */
-        qd_json_key(j, "events_unresolved");
-        qd_json_begin_object(j);
-        qd_json_key(j, "steps");
-        qd_json_number(j, (double)st->events_unresolved);
-        qd_json_key(j, "event");
-        qd_json_number(j, (double)st->events_unresolved_event + 1);
-        qd_json_key(j, "t");
-        qd_json_number(j, st->events_unresolved_t);
-        qd_json_key(j, "spacing");
-        qd_json_number(j, st->events_unresolved_spacing);
-        qd_json_end_object(j);
-    }
-    if (qd_model_nimpacts(c->mf.model))
-        impacts_json(j, c, st);
-    if (qd_sim_ncontacts(c->s))
-        friction_json(j, c, st);
-    qd_json_key(j, "final");
-    qd_json_begin_object(j);
-    for (size_t i = 0; i < ncols; i++) {
-        qd_json_key(j, names[i]);
-        qd_json_number(j, final[i]);
-    }
-    qd_json_end_object(j);
-}
-
 /* --plot with --format json: the file and the axes' ranges drawn, so a
  * caller can place more on the picture. */
 static void plot_json(qd_json *j, const char *file, size_t npanels, const double *range) {
@@ -288,17 +152,6 @@ static void plot_json(qd_json *j, const char *file, size_t npanels, const double
 
 /* ---- --variational ------------------------------------------------------------- */
 
-/* The flow run's options: the simulation's, with dop853 where its method
- * is not one of the two pairs the tangent system runs with. */
-static qd_sim_opts flow_opts(const cli_sim *c) {
-    qd_sim_opts o = c->opts;
-    if (o.method != QD_SIM_DOPRI5 && o.method != QD_SIM_DOP853) {
-        o.method = QD_SIM_DOP853;
-        o.fixed = false;
-    }
-    return o;
-}
-
 static qd_lyap *flow_model(const cli_sim *c) {
     if (!c->e || c->se) {
         cli_diag_error("--variational takes a model given by T and V or L (its equations M "
@@ -311,88 +164,20 @@ static qd_lyap *flow_model(const cli_sim *c) {
     return l;
 }
 
-/* The state's names: q..., q'... */
-static void state_names(const cli_sim *c, char (*names)[80]) {
-    size_t n = c->e->n;
-    for (size_t i = 0; i < n; i++) {
-        snprintf(names[i], 80, "%s", qd_expr_name(c->e->q[i]));
-        snprintf(names[n + i], 80, "%s'", qd_expr_name(c->e->q[i]));
-    }
-}
-
-static void flow_json(qd_json *j, const cli_sim *c, const qd_flow *f, const qd_sim_opts *o,
-                      double period) {
-    size_t d = f->d;
-    char (*names)[80] = malloc(d * sizeof *names);
-    qd_json_key(j, "variational");
-    qd_json_begin_object(j);
-    qd_json_key(j, "method");
-    qd_json_string(j, qd_sim_method_name(o->method));
-    qd_json_key(j, "state");
-    qd_json_begin_array(j);
-    if (names) {
-        state_names(c, names);
-        for (size_t i = 0; i < d; i++)
-            qd_json_string(j, names[i]);
-    }
-    qd_json_end_array(j);
-    qd_json_end_object(j);
-    free(names);
-    qd_json_matrix(j, "flow_jacobian", d, d, f->phi);
-    qd_json_key(j, "flow_det");
-    qd_json_number(j, f->det);
-    qd_json_key(j, "liouville_det"); /* exp(integral of tr J) */
-    qd_json_number(j, exp(f->trace_integral));
-    qd_json_key(j, "hamiltonian");
-    qd_json_bool(j, f->hamiltonian);
-    if (f->hamiltonian) {
-        qd_json_matrix(j, "flow_jacobian_canonical", d, d, f->phi_c);
-        qd_json_key(j, "symplectic_error");
-        qd_json_number(j, f->symplectic_error);
-    } else {
-        qd_json_key(j, "symplectic_error");
-        qd_json_null(j);
-    }
-    qd_json_key(j, "multipliers");
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < d; i++) {
-        qd_json_begin_array(j);
-        qd_json_number(j, f->mult_re[i]);
-        qd_json_number(j, f->mult_im[i]);
-        qd_json_end_array(j);
-    }
-    qd_json_end_array(j);
-    qd_json_key(j, "period");
-    if (period > 0)
-        qd_json_number(j, period);
+/* A library printer's status: its text on stderr, or out of memory. */
+static int put_stderr(qd_status st, qd_buf *b) {
+    if (st == QD_OK)
+        fputs(qd_buf_str(b), stderr);
     else
-        qd_json_null(j);
-    qd_json_key(j, "closure");
-    qd_json_number(j, f->closure);
-    if (period > 0)
-        qd_json_matrix(j, "monodromy", d, d, f->phi);
+        cli_diag_error("cannot write the summary: %s", qd_status_str(st));
+    qd_buf_free(b);
+    return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
-static void flow_summary(const qd_flow *f, double period) {
-    size_t d = f->d;
-    fprintf(stderr, "qdot: simulate: flow Jacobian d(q, q')(t_end)/d(q, q')(t0), det %.10g "
-                    "(Liouville exp(int tr J) %.10g)", f->det, exp(f->trace_integral));
-    if (f->hamiltonian)
-        fprintf(stderr, ", symplectic error in (q, p) %.3g", f->symplectic_error);
-    fprintf(stderr, "\n");
-    for (size_t i = 0; i < d; i++) {
-        fprintf(stderr, "qdot: simulate:  ");
-        for (size_t k = 0; k < d; k++)
-            fprintf(stderr, " % .10g", f->phi[i * d + k]);
-        fprintf(stderr, "\n");
-    }
-    fprintf(stderr, "qdot: simulate: %s:", period > 0 ? "Floquet multipliers" : "eigenvalues");
-    for (size_t i = 0; i < d; i++)
-        fprintf(stderr, " %.10g%+.10gi", f->mult_re[i], f->mult_im[i]);
-    fprintf(stderr, "%s\n", period > 0 ? "" : " (give --period T for a periodic orbit)");
-    if (period > 0)
-        fprintf(stderr, "qdot: simulate: closure max |y(t0 + T) - y(t0)| = %.3g%s\n", f->closure,
-                f->closure > 1e-6 ? ": the orbit is not periodic with this T" : "");
+/* The flow's text on stderr (qd_flow_print). */
+static int flow_print(const qd_flow *f, double period) {
+    qd_buf b = QD_BUF_INIT;
+    return put_stderr(qd_flow_print(f, period, "qdot: simulate: ", &b), &b);
 }
 
 /* The flow run; *f filled (qd_flow_free). */
@@ -401,7 +186,7 @@ static int flow_compute(cli_sim *c, qd_flow *f, qd_sim_opts *o, const qd_flow_op
     qd_lyap *l = flow_model(c);
     if (!l)
         return QD_EXIT_USAGE;
-    *o = flow_opts(c);
+    qd_flow_sim_opts(&c->opts, o);
     qd_status st = qd_flow_run(c->ctx, l, o, fo, f);
     qd_lyap_free(l);
     if (st == QD_ERR_ARG)
@@ -449,34 +234,30 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
         return QD_EXIT_USAGE;
     }
     size_t d = 2 * c->e->n;
-    char (*names)[80] = malloc(d * sizeof *names);
     col_out o = {.d = d, .line = malloc((d + 1) * (d + 1) * (QD_DOUBLE_MAX + 2) + 16)};
     int rc = QD_EXIT_OK;
-    FILE *file = a->out && names && o.line ? cli_out_open(a->out, &rc) : NULL;
-    if (!names || !o.line || (a->out && !file)) {
-        free(names);
+    FILE *file = a->out && o.line ? cli_out_open(a->out, &rc) : NULL;
+    if (!o.line || (a->out && !file)) {
         free(o.line);
         return rc != QD_EXIT_OK ? rc : QD_EXIT_FAIL;
     }
     o.out = file ? file : stdout;
-    state_names(c, names);
-    /* the header through the row buffer, each name checked like a row */
-    size_t k = (size_t)snprintf(o.line, 2, "t");
-    for (size_t i = 0; i < d; i++)
-        k += (size_t)snprintf(o.line + k, 82, ",%s", names[i]);
-    bool ok = cli_out_write(o.out, o.line, k, &o.err);
-    for (size_t j = 0; ok && j < d; j++)
-        for (size_t i = 0; ok && i < d; i++) {
-            k = (size_t)snprintf(o.line, 166, ",d%s/d%s0", names[i], names[j]);
-            ok = cli_out_write(o.out, o.line, k, &o.err);
-        }
-    if (ok)
-        cli_out_write(o.out, "\n", 1, &o.err);
+    /* the header: the library's column names (t, the state, Phi by columns) */
+    qd_buf hb = QD_BUF_INIT;
+    for (size_t k = 0; k < 1 + d + d * d; k++) {
+        qd_buf_puts(&hb, k ? "," : "");
+        qd_flow_column_name(c->e, k, &hb);
+    }
+    qd_buf_puts(&hb, "\n");
+    if (hb.failed)
+        o.err = ENOMEM;
+    else
+        cli_out_write(o.out, hb.s, hb.len, &o.err);
+    qd_buf_free(&hb);
     qd_flow_opts fo = {.every = a->dt ? c->opts.dt : (c->opts.t_end - c->opts.t0) / 100,
                        .sink = col_sink, .data = &o};
     double *y0 = calloc(d + d * d, sizeof *y0); /* the first row: y(t0), Phi = I */
     if (!y0) {
-        free(names);
         free(o.line);
         if (file)
             fclose(file); /* nothing to keep: the run fails anyway */
@@ -495,13 +276,12 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
     bool computed = !o.err; /* a header already lost: no run */
     rc = computed ? flow_compute(c, &f, &fopts, &fo) : QD_EXIT_OK;
     if (computed && rc == QD_EXIT_OK && !o.err)
-        flow_summary(&f, 0);
+        rc = flow_print(&f, 0);
     if (computed)
         qd_flow_free(&f);
     /* the rows' file closed and checked: lost rows fail the run */
     if (cli_out_close(o.out, file ? a->out : "standard output", o.err) != QD_EXIT_OK)
         rc = QD_EXIT_FAIL;
-    free(names);
     free(o.line);
     return rc;
 }
@@ -591,44 +371,24 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
                         "up to that time\n", o.last_t);
         rc = CLI_EXIT_INTERRUPTED;
     } else {
-        fprintf(stderr,
-                "qdot: simulate: %s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, "
-                "%.3g s; energy error %.3g over the rows written (%.3g at the steps), "
-                "constraint error %.3g%s\n",
-                qd_sim_method_name(c->opts.method), c->opts.t0, st.t, st.steps, st.evals,
-                st.rejected, wall, st.energy_error_max, st.energy_error_steps,
-                st.constraint_error_max,
-                qd_sim_conservative(c->s) ? "" : " (not conserved: forces, damping or t in L)");
-        if (st.events)
-            fprintf(stderr, "qdot: simulate: %zu event%s\n", st.events, st.events == 1 ? "" : "s");
-        if (st.events_unresolved)
-            fprintf(stderr, "qdot: simulate: note: event %zu oscillates faster than the event "
-                    "search resolves in %zu step%s (the first at t = %.17g): its crossings closer "
-                    "together than %.3g (more than about %.3g per unit time) may have been "
-                    "missed; shorter steps (a smaller --rtol) resolve more\n", st.events_unresolved_event + 1,
-                    st.events_unresolved, st.events_unresolved == 1 ? "" : "s",
-                    st.events_unresolved_t, st.events_unresolved_spacing,
-                    1 / st.events_unresolved_spacing);
-        if (st.initial_moved_q > 1e-4 || st.initial_moved_qd > 1e-4) /* far off, not rounding */
-            fprintf(stderr, "qdot: simulate: note: the initial state was off the constraints and "
-                    "was projected onto them: q moved by %.3g, q' by %.3g\n", st.initial_moved_q,
-                    st.initial_moved_qd);
-        impacts_summary(c, &st);
-        friction_summary(c, &st);
+        qd_sim_report rep = {.s = c->s, .opts = &c->opts, .stats = &st, .final = final,
+                             .wall = wall};
+        qd_buf tb = QD_BUF_INIT;
+        rc = put_stderr(qd_sim_summary_print(&rep, "qdot: simulate: ", &tb), &tb);
         double range[4 * CLI_PLOT_MAX_PANELS];
-        if (a->plot.file)
+        if (rc == QD_EXIT_OK && a->plot.file)
             rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false, range);
         qd_flow f = {0};
         qd_sim_opts fopts;
         if (rc == QD_EXIT_OK && sa) {
             rc = flow_compute(c, &f, &fopts, NULL);
             if (rc == QD_EXIT_OK)
-                flow_summary(&f, sa->period);
+                rc = flow_print(&f, sa->period);
         }
         if (rc == QD_EXIT_OK && a->json) {
-            summary_json(&j, c, &st, wall, names, ncols, final);
+            qd_sim_summary_json(&j, &rep);
             if (sa)
-                flow_json(&j, c, &f, &fopts, sa->period);
+                qd_flow_json(&j, &f, c->e, fopts.method, sa->period);
             if (a->plot.file)
                 plot_json(&j, a->plot.file, pick.npanels, range);
             qd_json_end_object(&j);

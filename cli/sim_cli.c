@@ -238,14 +238,6 @@ void cli_sim_free(cli_sim *c) {
     qd_ctx_free(c->ctx);
 }
 
-size_t cli_sim_ncon(const cli_sim *c) {
-    return qd_sim_setup_ncon(c->set);
-}
-
-const qd_con *cli_sim_con(const cli_sim *c, size_t k) {
-    return qd_sim_setup_con(c->set, k);
-}
-
 int cli_sim_fail(cli_sim *c, qd_status st) {
     const char *msg = qd_ctx_message(c->ctx);
     cli_diag_error("%s", msg[0] ? msg : qd_status_str(st));

@@ -72,10 +72,6 @@ typedef struct cli_sim {
 int cli_sim_setup(cli_sim *c, const cli_sim_args *a);
 void cli_sim_free(cli_sim *c);
 
-/* The constraints of the equations simulated (multiplier form or speeds). */
-size_t cli_sim_ncon(const cli_sim *c);
-const qd_con *cli_sim_con(const cli_sim *c, size_t k);
-
 /* --input list[i] given to the simulation (duplicates of list[0..i)
  * refused); an exit status. */
 int cli_sim_input(cli_sim *c, const char *const *list, size_t i);

@@ -24,6 +24,7 @@
 #define QDOT_LYAPUNOV_H
 
 #include <stddef.h>
+#include "json.h"
 #include "mech.h"
 #include "model.h"
 #include "sim.h"
@@ -138,6 +139,59 @@ QD_API qd_status qd_flow_run(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o
                              const qd_flow_opts *fo, qd_flow *out);
 QD_API void qd_flow_free(qd_flow *f);
 
+/* ---- the flow printed (src/lyap/render.c) -------------------------------- */
+
+/* closure (max |y(t_end) - y(t0)|) above which a run over a period given
+ * did not return to its start: the orbit is not periodic with that period
+ * (qd_flow_print says so). */
+#define QD_FLOW_CLOSURE_TOL 1e-6
+
+/* The options of a flow run for a simulation's in: the same, with dop853
+ * (and no fixed step) where in's method is not dopri5 or dop853, the two
+ * pairs the tangent system runs with.  *out written; QD_ERR_ARG for NULL. */
+QD_API qd_status qd_flow_sim_opts(const qd_sim_opts *in, qd_sim_opts *out);
+
+/* The name of entry i of the flow's state y = (q, q') of e appended to out:
+ * the coordinate's name for i < n, the velocity's (name') for n <= i < 2n.
+ * QD_ERR_ARG for i >= 2n, QD_ERR_NOMEM when out ran out. */
+QD_API qd_status qd_flow_state_name(const qd_eom *e, size_t i, qd_buf *out);
+
+/* The name of column k of the flow's rows (qd_flow_sink's t, y, phi as one
+ * row) appended to out: "t" (k = 0), the state's names (1 <= k <= d,
+ * qd_flow_state_name), then the entries of phi column by column,
+ * k = 1 + d + j d + i for d y_i/d y_j(t0), named "dYi/dYj0" ("dx/dx'0").
+ * d = 2n; QD_ERR_ARG for k >= 1 + d + d^2, QD_ERR_NOMEM when out ran out. */
+QD_API qd_status qd_flow_column_name(const qd_eom *e, size_t k, qd_buf *out);
+
+/* f as text appended to out, every line started by prefix (NULL: none):
+ *
+ *   flow Jacobian d(q, q')(t_end)/d(q, q')(t0), det D (Liouville exp(int tr
+ *     J) L)[, symplectic error in (q, p) S]
+ *   one line of phi per row ("% .10g" each)
+ *   Floquet multipliers: a+bi ...    (period > 0: phi is the monodromy matrix)
+ *   eigenvalues: a+bi ... (give the period T for a periodic orbit)   (else)
+ *   closure max |y(t0 + T) - y(t0)| = C[: the orbit is not periodic with
+ *     this T]                        (period > 0; above QD_FLOW_CLOSURE_TOL)
+ *
+ * with 10 significant digits, S and C with 3.  period is t_end - t0 when the
+ * run was over a period, else 0.  QD_ERR_ARG for a flow without its arrays,
+ * QD_ERR_NOMEM when out ran out. */
+QD_API qd_status qd_flow_print(const qd_flow *f, double period, const char *prefix,
+                               qd_buf *out);
+
+/* f as members of the JSON object open in j (the caller's document), the
+ * flow run of equations e with method: "variational" ({"method", "state":
+ * the state's names}), "flow_jacobian" (phi, rows), "flow_det",
+ * "liouville_det" (exp of the integral of tr J), "hamiltonian",
+ * "flow_jacobian_canonical" (phi_c, when hamiltonian), "symplectic_error"
+ * (null unless hamiltonian), "multipliers" ([re, im] pairs), "period"
+ * (null unless period > 0), "closure", and "monodromy" (phi, when period >
+ * 0).  QD_ERR_ARG for a flow without its arrays or whose d is not 2 e->n,
+ * QD_ERR_NUMERIC when a number was not finite (j is then failed),
+ * QD_ERR_NOMEM when memory ran out. */
+QD_API qd_status qd_flow_json(qd_json *j, const qd_flow *f, const qd_eom *e,
+                              qd_sim_method method, double period);
+
 #ifdef __cplusplus
 }
 #endif
@@ -147,5 +201,6 @@ QD_API void qd_flow_free(qd_flow *f);
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
- * (err, stats); qd_flow_run (fo). An array whose count is 0 may be NULL. */
+ * (err, stats); qd_flow_run (fo); qd_flow_print (prefix). An array whose
+ * count is 0 may be NULL. */
 #endif

@@ -26,6 +26,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "expr.h"
+#include "json.h"
 #include "mech.h"
 #include "model.h"
 #include "speeds.h"
@@ -442,6 +443,72 @@ QD_API size_t qd_sim_ncontacts(const qd_sim *s);
  * by s, valid until its next run. */
 QD_API const qd_sim_transition *qd_sim_transitions(const qd_sim *s, size_t *n);
 
+/* ---- the summary of a run (src/sim/summary.c) ------------------------------
+ *
+ * What `qdot simulate` reports after a run, for any caller: the library's
+ * words and numbers, printed from plain data.  r->s is the system after its
+ * qd_sim_run (the per-constraint residuals and the friction switches are
+ * that run's), r->opts the options it ran with (method, t0), r->stats its
+ * statistics, r->final its last row (qd_sim_columns(s, opts->method)
+ * numbers; NULL: no "final" in JSON) and r->wall the seconds it took,
+ * measured by the caller. */
+typedef struct qd_sim_report {
+    const qd_sim *s;
+    const qd_sim_opts *opts;
+    const qd_sim_stats *stats;
+    const double *final;
+    double wall;
+} qd_sim_report;
+
+/* The machine name of a stop code, for programs: "none", "end", "event",
+ * "contact", "callback", "refused", "step_underflow", "no_convergence",
+ * "solver_failure", "step_limit", "singular", "projection", "nonfinite",
+ * "painleve", "failure" (the QD_STOP_ names in lower case); "unknown"
+ * outside the enum.  qd_stop_str is the English for a reader. */
+QD_API const char *qd_stop_name(qd_stop_code code);
+
+/* The note on the initial state's projection (stats initial_moved_q,
+ * initial_moved_qd) is printed when either moved by more than this: far
+ * off the constraints, not rounding. */
+#define QD_SIM_MOVED_NOTE 1e-4
+
+/* The summary of r as text appended to out, every line started by prefix
+ * (NULL: none; the CLI's "qdot: simulate: "):
+ *
+ *   METHOD, t = T0..T: N steps, N evaluations, N rejected, W s; energy error E
+ *     over the rows written (E at the steps), constraint error C[ (not
+ *     conserved: forces, damping or t in L)]
+ *   stopped early: REASON at t = T       a run that did not end as asked
+ *                                        (qd_stop_ok false; qd_stop_str)
+ *   N events                             when there were any
+ *   note: event K oscillates faster ...  events_unresolved (docs/design.md)
+ *   note: the initial state was off the constraints ... (QD_SIM_MOVED_NOTE)
+ *   N impacts, energy lost E             a model with impacts, and where the
+ *   impact 'NAME': ... the run ends there  run ended in contact
+ *   N stick/slip transitions, energy dissipated by friction D[, work done
+ *     by moving surfaces W], energy balance error B   a model with friction
+ *
+ * times with %g (the end of a stop line with every digit), errors with
+ * %.3g, energies with %.6g.  QD_ERR_NOMEM when out ran out. */
+QD_API qd_status qd_sim_summary_print(const qd_sim_report *r, const char *prefix, qd_buf *out);
+
+/* The summary of r as members of the JSON object open in j (the caller's
+ * document): "method", "speeds" (integrated in the model's speeds),
+ * "steps", "evaluations", "rejected", "wall_s", "energy_error_max" (over
+ * the rows), "energy_error_steps", "constraint_error_max",
+ * "constraint_errors" (constraint name to its worst residual), "events";
+ * "events_unresolved" ({"steps", "event" (1-based), "t", "spacing"}) when
+ * some were; "stop" ({"code": qd_stop_name, "reason": qd_stop_str, "ok":
+ * qd_stop_ok, "t", "value": stats.stop's, null where not finite}) unless
+ * the run reached t_end; with impacts "impacts", "impact_energy_lost" and
+ * "contact" (null, or {"impact", "t", "chattering", "at_rest"}); with
+ * friction "friction_dissipated", "energy_balance_error", "surface_work"
+ * and "transitions" ([{"t", "contact", "from", "to"}], "stick"/"slip");
+ * "final" (column name to the last row's value) when r->final is given.
+ * QD_ERR_NUMERIC when a number was not finite (j is then failed:
+ * qd_json_ok), QD_ERR_NOMEM when memory ran out. */
+QD_API qd_status qd_sim_summary_json(qd_json *j, const qd_sim_report *r);
+
 #ifdef __cplusplus
 }
 #endif
@@ -453,6 +520,6 @@ QD_API const qd_sim_transition *qd_sim_transitions(const qd_sim *s, size_t *n);
  * documented at the function, for: qd_sim_input_callback (data);
  * qd_sim_add_event (guard); qd_sim_load_native_taylor (cache_dir, cached);
  * qd_sim_columns (names); qd_sim_run (data, final, sink, stats);
- * qd_sim_run_with (data, final, sink, stats). An array whose count is 0 may
- * be NULL. */
+ * qd_sim_run_with (data, final, sink, stats); qd_sim_summary_print
+ * (prefix). An array whose count is 0 may be NULL. */
 #endif

@@ -1943,6 +1943,44 @@ static void null_lyapunov(void **state)
     /* f NULL */
     qd_flow_free(NULL);
     reset(&F);
+    /* ---- qd_flow_sim_opts */
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_sim_opts(NULL, (qd_sim_opts *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_sim_opts(NULL, NULL));
+    reset(&F);
+    /* ---- qd_flow_state_name */
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_state_name(NULL, 1, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_state_name(F.eom, 1, NULL));
+    reset(&F);
+    /* ---- qd_flow_column_name */
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_column_name(NULL, 1, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_column_name(F.eom, 1, NULL));
+    reset(&F);
+    /* ---- qd_flow_print */
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_print(NULL, 1, "q", &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_print(NULL, 1, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_print(NULL, 1, "q", NULL));
+    reset(&F);
+    /* ---- qd_flow_json */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_json(NULL, NULL, F.eom, (qd_sim_method){0}, 1));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_json(NULL, NULL, NULL, (qd_sim_method){0}, 1));
+    reset(&F);
     teardown(&F);
 }
 
@@ -4423,6 +4461,22 @@ static void null_sim(void **state)
     reset(&F);
     /* n NULL */
     assert_null(qd_sim_transitions(F.sim, NULL));
+    reset(&F);
+    /* ---- qd_stop_name */
+    /* no pointer argument */
+    /* ---- qd_sim_summary_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_summary_print(NULL, "q", &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_summary_print(NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_summary_print(NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_sim_summary_json */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_summary_json(NULL, NULL));
     reset(&F);
     teardown(&F);
 }
