@@ -12,7 +12,6 @@
 #include "../base/mem.h"
 
 #include <math.h>
-#include <stdio.h>
 
 /* A component of an eigenvector that moves its state. */
 #define MOVES 1e-6
