@@ -98,6 +98,71 @@ QD_API qd_status qd_constrained_input_matrix(qd_ctx *ctx, const qd_eom *e,
                                              const qd_expr *const *syms, const double *vals,
                                              double *B);
 
+/* ---- the independent coordinates named (src/linear/constrained_read.c) -- */
+
+/* The independent coordinates named in text, "x, y" (names of e's
+ * coordinates, separated by commas or spaces), as indices into e->q in
+ * ascending order into out (room for e->n - e->ncon), ready for
+ * qd_constrained_linear_about.  QD_ERR_ARG, located in text (qd_ctx_diag:
+ * offset and length), for a name that is not a coordinate of e, one named
+ * twice, or a count other than e->n - e->ncon (located at the name one too
+ * many, else at the whole text). */
+QD_API qd_status qd_constrained_indep_read(qd_ctx *ctx, const qd_eom *e, const char *text,
+                                           size_t *out);
+
+/* ---- printed (src/linear/constrained_print.c) ----------------------------- */
+
+/* What both printers below begin with, c reduced from e.  Text: "on the
+ * constraint manifold (N coordinates, K constraints): independent ...;
+ * dependent ...", then "about q = ..." (the point, every coordinate) and
+ * "multipliers lambda_NAME = ..." (12 digits, qd_buf_put_result with scale
+ * 1).  JSON: "independent", "dependent" (names), "equilibrium" and
+ * "multipliers" (objects name to number).  Both end with the eigenvalues
+ * of the state-space matrix and the verdict: text "eigenvalues of A:" with
+ * one "s = re +- im i" a line (10 digits) unless the modes were printed,
+ * then "verdict: stable|unstable|borderline"; JSON "eigenvalues" ([re, im]
+ * pairs), "stable" (true, false, or null when borderline) and "verdict".
+ *
+ * Each appends to out only when complete (out unchanged on failure) and
+ * returns QD_ERR_ARG when c, e and res do not belong together (their
+ * sizes), QD_ERR_NUMERIC for a number JSON cannot hold (not finite),
+ * QD_ERR_NOMEM; each is recorded in ctx. */
+
+/* The small oscillations about c, res = qd_modes_solve(c->lin), as text or
+ * JSON (json).  Text: "small oscillations " and the head; for a
+ * conservative system each mode "mode K: w^2 = ..., w = ... rad/s, period =
+ * ... s" (w and the period when w^2 > 0) and its shape over the
+ * independent coordinates, else the eigenvalues; the verdict.  JSON: the
+ * head, "conservative", "M", "C", "G", "K" (the reduced r*r matrices), for
+ * a conservative system "modes" (each {"omega2", "omega" when omega2 >= 0,
+ * "shape": name to number}), the eigenvalues and the verdict. */
+QD_API qd_status qd_constrained_modes_print(qd_ctx *ctx, const qd_eom *e,
+                                            const qd_constrained_linear *c,
+                                            const qd_modes_result *res, bool json,
+                                            qd_buf *out);
+
+/* The state-space form on the manifold over x = (y, y'), y the independent
+ * coordinates of a reduction c, for printing. */
+typedef struct qd_constrained_statespace {
+    const double *A;         /* 2r*2r row-major: qd_constrained_state_matrix */
+    size_t nu;               /* inputs */
+    const qd_expr *const *u; /* nu: the inputs (may be NULL when nu is 0) */
+    const double *B;         /* 2r*nu row-major: qd_constrained_input_matrix (likewise) */
+} qd_constrained_statespace;
+
+/* ss about c as text or JSON (json), res = qd_modes_solve(c->lin) for the
+ * eigenvalues.  Text: "state-space form x' = A x " ("+ B u " with inputs)
+ * and the head, "x = (y..., y'...)", A by rows (each entry %14.10g), with
+ * inputs "u = (...)" and B likewise, the eigenvalues and the verdict.
+ * JSON: the head, "states" (the names of x, primed for the rates), "A",
+ * "inputs", "B" (row arrays; B has empty rows without inputs), the
+ * eigenvalues and the verdict. */
+QD_API qd_status qd_constrained_statespace_print(qd_ctx *ctx, const qd_eom *e,
+                                                 const qd_constrained_linear *c,
+                                                 const qd_constrained_statespace *ss,
+                                                 const qd_modes_result *res, bool json,
+                                                 qd_buf *out);
+
 /* The equilibria of a model with constraints (see the head comment); the
  * arguments as for qd_equilibria_find (opts->near: Newton from that guess
  * only).  Each point lists every coordinate of e; the kind, signs and
@@ -118,5 +183,5 @@ QD_API qd_status qd_constrained_equilibria_find(qd_ctx *ctx, const qd_eom *e, co
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_constrained_linear_about (indep);
  * qd_constrained_equilibria_find (opts). An array whose count is 0 may be
- * NULL. */
+ * NULL (qd_constrained_statespace: u and B when nu is 0). */
 #endif

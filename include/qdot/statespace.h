@@ -84,6 +84,56 @@ QD_API qd_status qd_linearize(qd_ctx *ctx, const qd_eom *e, const qd_model *m, s
                               qd_statespace *out);
 QD_API void qd_statespace_free(qd_statespace *s);
 
+/* ---- the state-space form printed (src/linear/statespace_print.c) -------- */
+
+/* The formats of qd_statespace_render (qd_render_format has no Octave, and
+ * the ranks of linear lie below render). */
+typedef enum qd_ss_format {
+    QD_SS_TEXT,   /* for a reader */
+    QD_SS_JSON,   /* for programs */
+    QD_SS_C,      /* static const double arrays */
+    QD_SS_SYMPY,  /* SymPy Matrix assignments */
+    QD_SS_OCTAVE  /* Octave / MATLAB matrix assignments */
+} qd_ss_format;
+
+/* The LQR design of qdot/control.h (qd_lqr_design on s). */
+struct qd_care_result;
+
+/* s, the answer of qd_linearize, appended to out in format fmt, followed by
+ * the LQR design lqr found on s (NULL: none).
+ *
+ * Text: the lines "states:", "inputs:", "outputs:" (the names, or "none");
+ * A, B, C and D as bracketed rows (a matrix with no entries left out), each
+ * number shortest round-trip (qd_double_format) right-aligned to the widest;
+ * x' at the point when it is not an equilibrium; the nonzero exact entries
+ * of the acceleration rows, "A[rate, state] = EXPR" and "B[rate, input] =
+ * EXPR", when the exact form was kept; the eigenvalues of A ("re +- im i");
+ * "controllable:" and, with outputs, "observable:" with the Kalman rank and
+ * QD_SS_RANK_TOL, each followed by the modes B does not reach (C does not
+ * see), each named by its eigenvalue and the states its eigenvector moves
+ * (a component above 1e-6 of the largest); then lqr as qd_lqr_print's text.
+ *
+ * JSON (one object, then a newline): "states", "inputs", "outputs" (names),
+ * "A", "B", "C", "D", "xdot0" (row arrays of numbers), "A_exact",
+ * "B_exact" (row arrays of expressions as text, or null), "eigenvalues"
+ * ([re, im] pairs), "rank_tolerance", "controllable",
+ * "controllability_rank", "uncontrollable_modes", "observable",
+ * "observability_rank", "unobservable_modes" (each mode {"eigenvalue":
+ * [re, im], "states": [...]}), and with lqr, "lqr": qd_lqr_json's object.
+ *
+ * C, SymPy, Octave: a comment naming x and u, then A, B and, with outputs,
+ * C and D as assignments in that language, the exact entries where they
+ * were kept (printed by qd_print in C or SymPy syntax), else the numbers
+ * (every digit; the comment says so); in C lqr follows as qd_lqr_print's C.
+ *
+ * out is unchanged on failure.  QD_ERR_ARG for a format not in
+ * qd_ss_format and for lqr with SymPy or Octave (a design prints as text,
+ * JSON or C); QD_ERR_NUMERIC for a number JSON cannot hold (not finite) or
+ * a design that is not finite; QD_ERR_NOMEM.  Each is recorded in ctx. */
+QD_API qd_status qd_statespace_render(qd_ctx *ctx, const qd_statespace *s,
+                                      const struct qd_care_result *lqr, qd_ss_format fmt,
+                                      qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -92,6 +142,7 @@ QD_API void qd_statespace_free(qd_statespace *s);
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_linearize (syms, vals). An array whose
+ * documented at the function, for: qd_linearize (syms, vals);
+ * qd_statespace_render (lqr). An array whose
  * count is 0 may be NULL. */
 #endif

@@ -580,6 +580,45 @@ static void null_constrained(void **state)
     /* B NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, NULL));
     reset(&F);
+    /* ---- qd_constrained_indep_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_indep_read(NULL, F.eom, "q", F.z));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_indep_read(F.ctx, NULL, "q", F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_indep_read(F.ctx, F.eom, NULL, F.z));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_indep_read(F.ctx, F.eom, "q", NULL));
+    reset(&F);
+    /* ---- qd_constrained_modes_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_modes_print(NULL, F.eom, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_modes_print(F.ctx, NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_modes_print(F.ctx, F.eom, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_modes_print(F.ctx, F.eom, NULL, NULL, false, NULL));
+    reset(&F);
+    /* ---- qd_constrained_statespace_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(NULL, F.eom, NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(F.ctx, NULL, NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(F.ctx, F.eom, NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(F.ctx, F.eom, NULL, NULL, NULL, false, NULL));
+    reset(&F);
     /* ---- qd_constrained_equilibria_find */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));
@@ -4981,6 +5020,16 @@ static void null_statespace(void **state)
     /* ---- qd_statespace_free */
     /* s NULL */
     qd_statespace_free(NULL);
+    reset(&F);
+    /* ---- qd_statespace_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_statespace_render(NULL, NULL, NULL, (qd_ss_format){0}, &F.buf));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_statespace_render(F.ctx, NULL, NULL, (qd_ss_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_statespace_render(F.ctx, NULL, NULL, (qd_ss_format){0}, NULL));
     reset(&F);
     teardown(&F);
 }
