@@ -51,7 +51,7 @@ static void put_text(cli_lin_run *r, const qd_equilibria *eq, qd_buf *b) {
         qd_buf_printf(b, "%3zu  ", i + 1);
         for (size_t j = 0; j < e->n; j++) {
             qd_buf_printf(b, "%s%s = ", j ? ", " : "", qd_expr_name(e->q[j]));
-            cli_lin_put_value(r, p, j, b);
+            qd_equilibrium_put_value(r->ctx, p, j, b);
             if (p->exact && !qd_is_number(p->exact[j])) {
                 qd_buf_puts(b, " (");
                 cli_state_put_result(b, p->q[j]);

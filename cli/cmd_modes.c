@@ -13,7 +13,8 @@
  * Without --about or --at-equilibrium libqdot chooses the equilibrium
  * (qd_equilibria_choose: a minimum of the potential nearest the model's
  * `initial` state, or of lowest V without one); this file says which and
- * how many others there are (stderr in text; JSON "choice").
+ * how many others there are on stderr (text); the JSON has it as "choice".
+ * The printing is libqdot's (qd_modes_print, qdot/modes.h).
  *
  * --symmetry (modes_symmetry.c): the symmetry group of the point, its
  * character table and the modes labelled by irreps, in place of the plain
@@ -21,17 +22,13 @@
  */
 #include "linear_cli.h"
 
-#include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include "qdot/json.h"
 #include "model_cli.h"
 #include "modes_plot.h"
 #include "modes_symmetry.h"
 #include "plot_cli.h"
-
-static const double PI = 3.14159265358979323846;
 
 typedef struct modes_args {
     const char *file, *about, *initial, *scan, *format;
@@ -50,7 +47,7 @@ typedef struct modes_run {
     cli_lin_run lr;
     qd_equilibrium_choice ch;   /* found: the list (--at-equilibrium, automatic choice) */
     const qd_equilibrium *pt;   /* NULL with --about */
-    const char *why;            /* how pt was chosen (automatic choice only) */
+    bool chosen;                /* pt is the library's automatic choice (ch.reason) */
     bool sym_exact;             /* w2sym is in the parameters (else exact numbers) */
     double *q0;
     qd_linear lin;
@@ -121,21 +118,6 @@ static int parse_args(int argc, char **argv, modes_args *a) {
     return rc;
 }
 
-/* What the library's automatic choice means, for the note and JSON. */
-static const char *chosen_why(qd_eq_chosen c) {
-    switch (c) {
-    case QD_EQ_CHOSEN_NEAREST_MINIMUM:
-        return "the minimum of the potential nearest the model's initial state";
-    case QD_EQ_CHOSEN_LOWEST_MINIMUM:
-        return "the minimum of the potential with the lowest V";
-    case QD_EQ_CHOSEN_NEWTON_FROM_INITIAL:
-        return "no minimum of the potential was found: the equilibrium reached by Newton's "
-               "method from the model's initial state";
-    default:
-        return "no minimum of the potential was found: the first equilibrium listed";
-    }
-}
-
 static int no_equilibrium(void) {
     cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
                   "--about");
@@ -152,7 +134,7 @@ static int choose_auto(modes_run *r) {
     if (!r->ch.pt)
         return no_equilibrium();
     r->pt = r->ch.pt;
-    r->why = chosen_why(r->ch.reason);
+    r->chosen = true;
     return QD_EXIT_OK;
 }
 
@@ -231,273 +213,21 @@ static int initial(modes_run *r, const char *text) {
     return rc;
 }
 
-/* ---- text ------------------------------------------------------------------ */
-
-static void put_matrix(qd_buf *b, const char *name, size_t n, const double *A) {
-    qd_buf_printf(b, "%s = [", name);
-    for (size_t i = 0; i < n; i++) {
-        qd_buf_puts(b, i ? ", [" : "[");
-        for (size_t j = 0; j < n; j++) {
-            qd_buf_puts(b, j ? ", " : "");
-            cli_state_put_result(b, A[i * n + j]);
-        }
-        qd_buf_puts(b, "]");
+/* The library's printer (qd_modes_print) on what was computed. */
+static int emit(modes_run *r, bool json) {
+    qd_modes_report rep = {
+        .e = r->lr.e, .q0 = r->q0, .pt = r->pt, .choice = r->chosen ? &r->ch : NULL,
+        .residual = r->residual, .lin = &r->lin, .res = &r->res,
+        .w2exact = r->have_sym ? r->w2sym : NULL, .w2exact_in_params = r->sym_exact,
+        .Q = r->Q, .Qd = r->Qd,
+        .sym = r->sym.active && !r->sym.cyc.n ? &r->sym.sym : NULL,
+        .cyc = r->sym.active && r->sym.cyc.n ? &r->sym.cyc : NULL};
+    qd_buf b = QD_BUF_INIT;
+    if (qd_modes_print(r->lr.ctx, &rep, json, &b) != QD_OK) {
+        b.failed = true; /* "cannot print the modes" */
+        qd_ctx_clear_error(r->lr.ctx);
     }
-    qd_buf_puts(b, "]\n");
-}
-
-static bool all_zero(size_t nn, const double *A) {
-    for (size_t i = 0; i < nn; i++)
-        if (A[i] != 0)
-            return false;
-    return true;
-}
-
-static void put_point(modes_run *r, qd_buf *b) {
-    const qd_eom *e = r->lr.e;
-    qd_buf_puts(b, r->pt ? "equilibrium: " : "about: ");
-    for (size_t j = 0; j < e->n; j++) {
-        qd_buf_printf(b, "%s%s = ", j ? ", " : "", qd_expr_name(e->q[j]));
-        if (r->pt)
-            cli_lin_put_value(&r->lr, r->pt, j, b);
-        else
-            cli_state_put_result(b, r->q0[j]);
-    }
-    if (r->pt)
-        qd_buf_printf(b, " (%s of the potential)", qd_eq_kind_name(r->pt->kind));
-    qd_buf_printf(b, "\n");
-    if (r->residual > 1e-8)
-        qd_buf_printf(b, "note: not an equilibrium: the generalized forces at rest are %.3g "
-                         "there; the linearization drops them\n", r->residual);
-}
-
-static void put_conservative(modes_run *r, qd_buf *b) {
-    const qd_eom *e = r->lr.e;
-    const qd_modes_result *res = &r->res;
-    size_t n = res->n;
-    qd_buf_puts(b, "conservative, no gyroscopic terms: K0 a = w^2 M0 a, a^T M0 a = 1\n");
-    for (size_t j = 0; j < n; j++) {
-        double w2 = res->omega2[j], w = sqrt(fabs(w2));
-        qd_buf_printf(b, "mode %zu: w^2 = ", j + 1);
-        cli_state_put_result(b, w2);
-        if (w2 > 0)
-            qd_buf_printf(b, ", w = %.10g rad/s, period = %.10g s", w, 2 * PI / w);
-        else if (w2 == 0)
-            qd_buf_puts(b, ", zero frequency (neutral: the normal coordinate drifts, Q(0) + "
-                           "Q'(0) t)");
-        else
-            qd_buf_printf(b, ", unstable direction: growth rate %.10g 1/s", w);
-        size_t mult = qd_modes_multiplicity(res, j);
-        if (mult > 1)
-            qd_buf_printf(b, " [repeated x%zu: the shapes are one M0-orthonormal basis of the "
-                             "eigenspace]", mult);
-        qd_buf_puts(b, "\n  shape: ");
-        for (size_t i = 0; i < n; i++) {
-            qd_buf_printf(b, "%s%s = ", i ? ", " : "", qd_expr_name(e->q[i]));
-            double v = res->shapes[i * n + j];
-            cli_state_put_result(b, v);
-        }
-        qd_buf_puts(b, "\n");
-    }
-    if (r->have_sym) {
-        for (size_t j = 0; j < n; j++) {
-            qd_buf_printf(b, r->sym_exact ? "w^2 (exact, mode %zu) = "
-                                          : "w^2 (exact at these parameter values, mode %zu) = ",
-                          j + 1);
-            qd_print(r->lr.ctx, r->w2sym[j], QD_FMT_TEXT, b);
-            qd_buf_puts(b, "\n");
-        }
-    }
-    qd_buf_puts(b, "normal coordinates: Q_j = a_j^T M0 (q - q0), Q_j'' + w_j^2 Q_j = 0\n");
-}
-
-static void put_solution(modes_run *r, qd_buf *b) {
-    const qd_eom *e = r->lr.e;
-    size_t n = e->n;
-    qd_buf_puts(b, "motion from the initial values: q(t) = q0 + sum_j a_j Q_j(t)\n");
-    for (size_t j = 0; j < n; j++) {
-        double w2 = r->res.omega2[j], w = sqrt(fabs(w2));
-        qd_buf_printf(b, "  Q_%zu(t) = ", j + 1);
-        if (w2 > 0)
-            qd_buf_printf(b, "%.10g*cos(%.10g*t) + %.10g*sin(%.10g*t)\n", r->Q[j], w, r->Qd[j] / w,
-                          w);
-        else if (w2 == 0)
-            qd_buf_printf(b, "%.10g + %.10g*t\n", r->Q[j], r->Qd[j]);
-        else
-            qd_buf_printf(b, "%.10g*cosh(%.10g*t) + %.10g*sinh(%.10g*t)\n", r->Q[j], w,
-                          r->Qd[j] / w, w);
-    }
-}
-
-static void put_state_space(modes_run *r, qd_buf *b) {
-    const qd_modes_result *res = &r->res;
-    qd_buf_puts(b, "damped or gyroscopic: state-space eigenvalues s of "
-                   "det(s^2 M0 + s (C0 + G0) + K0) = 0\n");
-    for (size_t i = 0; i < res->neig; i++) {
-        double re = res->eig_re[i], im = res->eig_im[i], mod = hypot(re, im);
-        if (fabs(re) <= 1e-12 * mod)
-            re = 0; /* round-off off the imaginary axis: the verdict already knows */
-        qd_buf_printf(b, "  s = %.10g %s %.10gi", re, im < 0 ? "-" : "+", fabs(im));
-        if (mod > 0 && im > 0)
-            qd_buf_printf(b, "  (frequency %.10g rad/s, damping ratio %.6g)", im, re == 0 ? 0 : -re / mod);
-        qd_buf_puts(b, "\n");
-    }
-}
-
-static const char *verdict(int s) {
-    return s == 1 ? "stable" : s == 0 ? "unstable" : "borderline";
-}
-
-static void put_text(modes_run *r, qd_buf *b) {
-    size_t n = r->lin.n;
-    put_point(r, b);
-    put_matrix(b, "M0", n, r->lin.M);
-    if (!all_zero(n * n, r->lin.C))
-        put_matrix(b, "C0", n, r->lin.C);
-    if (!all_zero(n * n, r->lin.G))
-        put_matrix(b, "G0", n, r->lin.G);
-    put_matrix(b, "K0", n, r->lin.K);
-    if (r->sym.active)
-        cli_sym_put_text(&r->sym, r->lr.e, b);
-    else if (r->res.conservative)
-        put_conservative(r, b);
-    else
-        put_state_space(r, b);
-    if (r->Q)
-        put_solution(r, b);
-    qd_buf_printf(b, "%s", verdict(r->res.stable));
-    if (r->res.stable == -1)
-        qd_buf_puts(b, r->res.conservative ? " (zero-frequency modes: the linear test is not "
-                                             "decisive)" : " (roots on the imaginary axis that "
-                                                           "are zero or repeated)");
-    if (r->pt && r->pt->kind == QD_EQ_MAXIMUM && r->res.stable == 1)
-        qd_buf_puts(b, " (a maximum of the potential, stabilized by the gyroscopic terms)");
-    qd_buf_puts(b, "\n");
-}
-
-/* ---- json ------------------------------------------------------------------ */
-
-static void json_matrix(qd_json *j, const char *key, size_t n, const double *A) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < n; i++) {
-        qd_json_begin_array(j);
-        for (size_t k = 0; k < n; k++)
-            qd_json_number(j, A[i * n + k]);
-        qd_json_end_array(j);
-    }
-    qd_json_end_array(j);
-}
-
-/* The frequencies: w of every mode (conservative; unstable ones left out),
- * or the positive imaginary parts of the state-space eigenvalues. */
-static void json_frequencies(modes_run *r, qd_json *j) {
-    const qd_modes_result *res = &r->res;
-    qd_json_key(j, "frequencies");
-    qd_json_begin_array(j);
-    double *w = malloc((res->neig + 1) * sizeof *w);
-    size_t nw = w ? qd_modes_frequencies(res, w) : 0;
-    for (size_t k = 0; k < nw; k++)
-        qd_json_number(j, w[k]);
-    free(w);
-    qd_json_end_array(j);
-}
-
-/* The conservative modes: w^2, w, period, multiplicity, shape, and the
- * exact w^2 and the initial normal coordinates when there are any. */
-static void json_modes(modes_run *r, qd_json *j) {
-    const qd_eom *e = r->lr.e;
-    const qd_modes_result *res = &r->res;
-    size_t n = e->n;
-    qd_json_key(j, "modes");
-    qd_json_begin_array(j);
-    for (size_t k = 0; res->conservative && k < n; k++) {
-        double w2 = res->omega2[k];
-        qd_json_begin_object(j);
-        qd_json_frequency(j, w2);
-        qd_json_key(j, "multiplicity");
-        qd_json_number(j, (double)qd_modes_multiplicity(res, k));
-        qd_json_key(j, "shape");
-        qd_json_begin_object(j);
-        for (size_t i = 0; i < n; i++) {
-            qd_json_key(j, qd_expr_name(e->q[i]));
-            qd_json_number(j, res->shapes[i * n + k]);
-        }
-        qd_json_end_object(j);
-        if (r->have_sym) {
-            qd_json_key(j, "omega2_exact");
-            qd_json_expr(j, r->lr.ctx, r->w2sym[k]);
-            qd_json_key(j, "omega2_exact_in_parameters");
-            qd_json_bool(j, r->sym_exact);
-        }
-        if (r->Q) {
-            qd_json_key(j, "Q0");
-            qd_json_number(j, r->Q[k]);
-            qd_json_key(j, "Q0_dot");
-            qd_json_number(j, r->Qd[k]);
-        }
-        qd_json_end_object(j);
-    }
-    qd_json_end_array(j);
-}
-
-static void put_json(modes_run *r, qd_buf *b) {
-    const qd_eom *e = r->lr.e;
-    const qd_modes_result *res = &r->res;
-    size_t n = e->n;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "equilibrium");
-    qd_json_begin_object(&j);
-    for (size_t k = 0; k < n; k++) {
-        qd_json_key(&j, qd_expr_name(e->q[k]));
-        qd_json_number(&j, r->q0[k]);
-    }
-    qd_json_end_object(&j);
-    qd_json_key(&j, "residual");
-    qd_json_number(&j, r->residual);
-    if (r->why) {
-        qd_json_key(&j, "choice");
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "reason");
-        qd_json_string(&j, r->why);
-        qd_json_key(&j, "others");
-        qd_json_number(&j, (double)r->ch.others);
-        qd_json_end_object(&j);
-    }
-    qd_json_key(&j, "conservative");
-    qd_json_bool(&j, res->conservative);
-    json_matrix(&j, "mass_matrix", n, r->lin.M);
-    json_matrix(&j, "damping_matrix", n, r->lin.C);
-    json_matrix(&j, "gyroscopic_matrix", n, r->lin.G);
-    json_matrix(&j, "stiffness_matrix", n, r->lin.K);
-    if (r->sym.active)
-        cli_sym_put_json(&r->sym, e, &j);
-    json_frequencies(r, &j);
-    if (r->sym.active)
-        cli_sym_json_modes(&r->sym, e, &j);
-    else
-        json_modes(r, &j);
-    qd_json_key(&j, "eigenvalues");
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < res->neig; k++) {
-        qd_json_begin_array(&j);
-        qd_json_number(&j, res->eig_re[k]);
-        qd_json_number(&j, res->eig_im[k]);
-        qd_json_end_array(&j);
-    }
-    qd_json_end_array(&j);
-    qd_json_key(&j, "stable");
-    if (res->stable == -1)
-        qd_json_null(&j);
-    else
-        qd_json_bool(&j, res->stable == 1);
-    qd_json_key(&j, "verdict");
-    qd_json_string(&j, verdict(res->stable));
-    qd_json_end_object(&j);
-    qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    return cli_emit(&b, "modes");
 }
 
 /* Which equilibrium was taken without --about, and that there are others. */
@@ -505,7 +235,7 @@ static void note_choice(const modes_run *r) {
     fprintf(stderr, "qdot: note: modes about ");
     for (size_t j = 0; j < r->lr.e->n; j++)
         fprintf(stderr, "%s%s = %.12g", j ? ", " : "", qd_expr_name(r->lr.e->q[j]), r->pt->q[j]);
-    fprintf(stderr, ", %s", r->why);
+    fprintf(stderr, ", %s", qd_eq_chosen_name(r->ch.reason));
     size_t others = r->ch.others;
     if (others)
         fprintf(stderr, "; %zu other equilibri%s found%s (qdot equilibria lists them; choose with "
@@ -590,7 +320,7 @@ int cli_cmd_modes(int argc, char **argv) {
     }
     if (rc == QD_EXIT_OK)
         rc = choose_point(&r, &a);
-    if (rc == QD_EXIT_OK && r.why && !a.json)
+    if (rc == QD_EXIT_OK && r.chosen && !a.json)
         note_choice(&r);
     if (rc == QD_EXIT_OK && r.lr.e->ncon) { /* on the manifold (constrained_cli.c) */
         rc = cli_con_modes(&r.lr, r.q0, a.independent, a.json);
@@ -602,11 +332,8 @@ int cli_cmd_modes(int argc, char **argv) {
         rc = cli_sym_compute(&r.lr, &r.lin, &r.sym);
     if (rc == QD_EXIT_OK && a.initial)
         rc = initial(&r, a.initial);
-    if (rc == QD_EXIT_OK) {
-        qd_buf b = QD_BUF_INIT;
-        (a.json ? put_json : put_text)(&r, &b);
-        rc = cli_emit(&b, "modes");
-    }
+    if (rc == QD_EXIT_OK)
+        rc = emit(&r, a.json);
     if (rc == QD_EXIT_OK && a.plot)
         rc = cli_modes_plot(&r.lr, r.q0, &r.res, a.plot, a.file);
 done:

@@ -231,10 +231,3 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
     free(angle);
     return rc;
 }
-
-void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b) {
-    if (p->exact && p->exact[j])
-        qd_print(r->ctx, p->exact[j], QD_FMT_TEXT, b);
-    else
-        cli_state_put_result(b, p->q[j]);
-}

@@ -49,8 +49,6 @@ void cli_lin_set_state(cli_lin_run *r, const double *q, const double *qd);
 int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi);
 /* Equilibria with the options (near, box may be NULL). */
 int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out);
-/* One exact or numeric coordinate value, as text. */
-void cli_lin_put_value(cli_lin_run *r, const qd_equilibrium *p, size_t j, qd_buf *b);
 
 
 /* ---- models with speeds (speeds_lin_cli.c) ---------------------------------

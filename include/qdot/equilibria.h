@@ -132,6 +132,20 @@ QD_API qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_mod
                                       const double *vals, qd_equilibrium_choice *out);
 QD_API void qd_equilibrium_choice_free(qd_equilibrium_choice *c);
 
+/* ---- printed (src/linear/equilibria_print.c) ------------------------------ */
+
+/* What the choice c means, one sentence without a capital or a full stop
+ * ("the minimum of the potential nearest the model's initial state"), for a
+ * note or a JSON "reason".  Static storage. */
+QD_API const char *qd_eq_chosen_name(qd_eq_chosen c);
+
+/* Coordinate j (below the equilibria's n) of p appended to out: its exact
+ * value in the text format (qd_print) when p has one, else the number to
+ * 12 significant digits, 0 at or below 1e-12 (qd_buf_put_result, scale 1).
+ * QD_ERR_NOMEM when out failed; a failure of qd_print is returned. */
+QD_API qd_status qd_equilibrium_put_value(qd_ctx *ctx, const qd_equilibrium *p, size_t j,
+                                          qd_buf *out);
+
 /* max_j |f_j| at the state syms/vals (as for qd_eom_eval; give the
  * velocities as 0 for a point at rest): how far the point is from an
  * equilibrium, in generalized-force units.  Fails as qd_eom_eval does (a

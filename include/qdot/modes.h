@@ -26,6 +26,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include "equilibria.h"
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
@@ -34,7 +35,9 @@
 extern "C" {
 #endif
 
-struct qd_speeds_eom; /* qdot/speeds.h */
+struct qd_speeds_eom;    /* qdot/speeds.h */
+struct qd_symmetry;      /* qdot/symmetry.h */
+struct qd_cyclic_modes;  /* qdot/symmetry.h */
 
 /* The linearization about a state: M q'' + (C + G) q' + K q = 0 (n*n
  * row-major numbers each, malloc'd; qd_linear_free). */
@@ -139,6 +142,61 @@ QD_API qd_status qd_modes_exact_omega2(qd_ctx *ctx, const qd_eom *e, const qd_mo
                                        size_t nvals, const qd_expr *const *syms,
                                        const double *vals, const qd_expr *const *q0,
                                        const qd_expr **w2, bool *in_params);
+
+/* ---- the modes printed (src/linear/modes_print.c) ------------------------- */
+
+/* The small oscillations about one point, for printing: what `qdot modes`
+ * computes.  e, q0, lin and res are required; every other pointer may be
+ * NULL (not there). */
+typedef struct qd_modes_report {
+    const qd_eom *e;                      /* the equations: the coordinates' names */
+    const double *q0;                     /* e->n: the point */
+    const qd_equilibrium *pt;             /* the equilibrium q0 is (its exact values and
+                                             kind), or NULL: a point given */
+    const qd_equilibrium_choice *choice;  /* the automatic choice that gave pt, or NULL */
+    double residual;                      /* qd_eom_rest_residual at q0 */
+    const qd_linear *lin;                 /* the linearization at q0 (n = e->n) */
+    const qd_modes_result *res;           /* qd_modes_solve of lin */
+    const qd_expr *const *w2exact;        /* res->n exact w^2 (qd_modes_exact_omega2), or
+                                             NULL */
+    bool w2exact_in_params;               /* ... in the parameters (else exact numbers) */
+    const double *Q, *Qd;                 /* n: the normal coordinates at t = 0
+                                             (qd_modes_normal_coords), or NULL */
+    const struct qd_symmetry *sym;        /* reduced (qd_symmetry_reduce): the labelled
+                                             modes replace the plain ones; or NULL */
+    const struct qd_cyclic_modes *cyc;    /* the cyclic fast path's modes instead (cyc->n
+                                             > 0), or NULL */
+} qd_modes_report;
+
+/* r appended to out, as text or (json) as one JSON document with a final
+ * newline.
+ *
+ * Text: "equilibrium: q1 = VALUE, ... (KIND of the potential)" (exact values
+ * where pt has them; "about: " and numbers for a point given), a note when
+ * residual > 1e-8 (not an equilibrium), M0, C0 and G0 (when not zero) and
+ * K0; then the symmetry's text (qd_symmetry_print / qd_cyclic_print) when
+ * sym or cyc is given, else the conservative modes (w^2, w, period,
+ * multiplicity, shape; the exact w^2) or the state-space eigenvalues; the
+ * motion from the initial values (Q); the verdict "stable", "unstable" or
+ * "borderline" with why.  Numbers to 12 significant digits by
+ * qd_buf_put_result: matrix entries and w^2 0 at or below 1e-12 (scale 1),
+ * a shape's components at or below 1e-12 of its largest (a shape is small
+ * as a whole when M0 is large); w, periods and eigenvalues to 10 digits.
+ *
+ * JSON: "equilibrium" (name to value), "residual", "choice" (with choice:
+ * "reason", qd_eq_chosen_name, and "others"), "conservative",
+ * "mass_matrix", "damping_matrix", "gyroscopic_matrix", "stiffness_matrix",
+ * "symmetry" (with sym or cyc: qd_symmetry_json / qd_cyclic_json),
+ * "frequencies" (qd_modes_frequencies), "modes" (conservative: each with
+ * "omega2", "omega", "period", "multiplicity", "shape" and, when given,
+ * "omega2_exact", "omega2_exact_in_parameters", "Q0", "Q0_dot"; with sym or
+ * cyc their labelled modes), "eigenvalues" ([re, im] pairs), "stable" (true,
+ * false, null when borderline) and "verdict"; every digit.
+ *
+ * QD_ERR_ARG when a required field is NULL or lin, res and e disagree on n;
+ * QD_ERR_NUMERIC (nothing appended) when a JSON number is not finite;
+ * QD_ERR_NOMEM. */
+QD_API qd_status qd_modes_print(qd_ctx *ctx, const qd_modes_report *r, bool json, qd_buf *out);
 
 /* ---- scans along a parameter (src/linear/scan.c) ---------------------------
  *

@@ -32,6 +32,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "expr.h"
+#include "json.h"
 #include "mech.h"
 #include "model.h"
 #include "modes.h"
@@ -54,6 +55,9 @@ typedef enum qd_mode_kind {
     QD_MODE_ROTATION,      /* a rigid rotation about the centre of mass */
     QD_MODE_ZERO           /* w^2 = 0, not a rigid motion */
 } qd_mode_kind;
+
+/* "vibration", "translation", "rotation" or "zero mode".  Static storage. */
+QD_API const char *qd_mode_kind_name(qd_mode_kind k);
 
 typedef struct qd_symmetry {
     size_t n;              /* coordinates */
@@ -161,6 +165,60 @@ QD_API size_t qd_cyclic_cell(const qd_linear *lin);
 QD_API qd_status qd_cyclic_solve(qd_ctx *ctx, const qd_linear *lin, size_t cell,
                                  qd_cyclic_modes *out);
 QD_API void qd_cyclic_modes_free(qd_cyclic_modes *c);
+
+/* From this many coordinates on, a system invariant under a shift of its
+ * coordinates takes the cyclic fast path (no group table): below it the
+ * group and its character table are cheap and say more. */
+#define QD_SYMMETRY_FAST_N 48
+
+/* Which way the symmetry of lin is had (src/linear/symmetry_method.c): the
+ * cell c of the cyclic fast path (qd_cyclic_cell, qd_cyclic_solve) when
+ * lin->n >= QD_SYMMETRY_FAST_N and lin is shift-invariant, else 0: the
+ * group (qd_symmetry_find, qd_symmetry_reduce). */
+QD_API size_t qd_symmetry_fast_cell(const qd_linear *lin);
+
+/* ---- printed (src/linear/symmetry_print.c) ---------------------------------
+ *
+ * What `qdot modes --symmetry` prints in place of the plain modes (the
+ * whole document: qd_modes_print, qdot/modes.h).  sym: reduced
+ * (qd_symmetry_reduce), its n the number of coordinates of e, whose names
+ * label the coordinates and shapes.  Numbers in the text: 12 significant
+ * digits (qd_buf_put_result), w^2 and K0's blocks 0 at or below 1e-12
+ * (scale 1), a symmetry coordinate's or a shape's components at or below
+ * 1e-12 of its largest; w to 10 digits; characters as integers when they
+ * are (else 4 digits, complex as a+bi).  JSON: every digit. */
+
+/* Text appended to out: "symmetry group: NAME (order N, K classes)" (or an
+ * abstract group's), the character table with the reducible character
+ * Gamma below it, Gamma's decomposition ("Gamma = A1 + A2 + 2E"), the
+ * symmetry coordinates (the columns of U) by block, K0 in them by block,
+ * and each mode: w^2, w (or the growth rate), block label, multiplicity
+ * and, for a rigid or zero mode, its kind; its shape.  QD_ERR_ARG when sym
+ * is not reduced or not on e's coordinates; QD_ERR_NOMEM when out failed. */
+QD_API qd_status qd_symmetry_print(const qd_symmetry *sym, const qd_eom *e, qd_buf *out);
+/* The member "symmetry" (key and object) into j: "group" (the Schoenflies
+ * name, or null for an abstract group), "order", "classes" (each "name",
+ * "size"), "characters" (each "irrep", "dimension", "chi" and, when
+ * complex, "chi_imag"), "reducible", "multiplicities" (irrep to n_i) and
+ * "blocks" (each "irrep", "K", "coordinates": name to value per column).
+ * Nothing when sym is not reduced on e's coordinates. */
+QD_API void qd_symmetry_json(qd_json *j, const qd_symmetry *sym, const qd_eom *e);
+/* The member "modes" (key and array) into j, each mode "omega2", "omega",
+ * "period" (qd_json_frequency), "irrep" (its block's label),
+ * "multiplicity", "kind" (qd_mode_kind_name) and "shape" (name to value).
+ * Nothing when sym is not reduced on e's coordinates. */
+QD_API void qd_symmetry_json_modes(qd_json *j, const qd_symmetry *sym, const qd_eom *e);
+
+/* The fast path's modes as text appended to out: the shift and the group
+ * C_N, then each mode's w^2, w, harmonic k and multiplicity.  QD_ERR_ARG
+ * for an empty c (n = 0); QD_ERR_NOMEM when out failed. */
+QD_API qd_status qd_cyclic_print(const qd_cyclic_modes *c, qd_buf *out);
+/* The member "symmetry" into j: "group" "cyclic", "order" N, "cell" c,
+ * "fast_path" true.  Nothing for an empty c. */
+QD_API void qd_cyclic_json(qd_json *j, const qd_cyclic_modes *c);
+/* The member "modes" into j, each mode "omega2", "omega", "period",
+ * "irrep" ("k=K"), "harmonic" and "multiplicity".  Nothing for an empty c. */
+QD_API void qd_cyclic_json_modes(qd_json *j, const qd_cyclic_modes *c);
 
 #ifdef __cplusplus
 }

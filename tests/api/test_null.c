@@ -824,6 +824,18 @@ static void null_equilibria(void **state)
     /* c NULL */
     qd_equilibrium_choice_free(NULL);
     reset(&F);
+    /* ---- qd_eq_chosen_name */
+    /* no pointer argument */
+    /* ---- qd_equilibrium_put_value */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(NULL, NULL, 1, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(F.ctx, NULL, 1, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(F.ctx, NULL, 1, NULL));
+    reset(&F);
     /* ---- qd_eom_rest_residual */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.d));
@@ -2781,6 +2793,16 @@ static void null_modes(void **state)
     reset(&F);
     /* in_params NULL */
     assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_modes_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_print(F.ctx, NULL, false, NULL));
     reset(&F);
     /* ---- qd_modes_scan */
     /* ctx NULL */
@@ -5227,6 +5249,8 @@ static void null_symmetry(void **state)
     (void)state;
     static fixture F;
     setup(&F);
+    /* ---- qd_mode_kind_name */
+    /* no pointer argument */
     /* ---- qd_symmetry_find */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_symmetry_find(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_symmetry *)(void *)F.blob));
@@ -5314,6 +5338,49 @@ static void null_symmetry(void **state)
     /* ---- qd_cyclic_modes_free */
     /* c NULL */
     qd_cyclic_modes_free(NULL);
+    reset(&F);
+    /* ---- qd_symmetry_fast_cell */
+    /* lin NULL */
+    assert_true(qd_symmetry_fast_cell(NULL) == 0);
+    reset(&F);
+    /* ---- qd_symmetry_print */
+    /* sym NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_print(NULL, F.eom, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_print(NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_print(NULL, F.eom, NULL));
+    reset(&F);
+    /* ---- qd_symmetry_json */
+    /* j NULL */
+    qd_symmetry_json(NULL, NULL, F.eom);
+    reset(&F);
+    /* e NULL */
+    qd_symmetry_json(NULL, NULL, NULL);
+    reset(&F);
+    /* ---- qd_symmetry_json_modes */
+    /* j NULL */
+    qd_symmetry_json_modes(NULL, NULL, F.eom);
+    reset(&F);
+    /* e NULL */
+    qd_symmetry_json_modes(NULL, NULL, NULL);
+    reset(&F);
+    /* ---- qd_cyclic_print */
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_cyclic_print(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_cyclic_print(NULL, NULL));
+    reset(&F);
+    /* ---- qd_cyclic_json */
+    /* j NULL */
+    qd_cyclic_json(NULL, NULL);
+    reset(&F);
+    /* ---- qd_cyclic_json_modes */
+    /* j NULL */
+    qd_cyclic_json_modes(NULL, NULL);
     reset(&F);
     teardown(&F);
 }
