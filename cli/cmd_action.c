@@ -4,7 +4,8 @@
  * actions J_k = oint p_k dq_k at the state, the frequencies
  * omega_k = 2 pi dH/dJ_k, the angles, the commensurate frequencies, and H(J) where it is
  * recognised.  The state starts from the model's `initial` values; a
- * model given by H may take its momenta in --at.
+ * model given by H may take its momenta in --at.  The library writes the
+ * result (qd_action_print).
  */
 #include "cli.h"
 

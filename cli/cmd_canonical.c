@@ -1,6 +1,6 @@
 /*
  * cli/cmd_canonical.c - `qdot canonical FILE --Q "..." --P "..."`: is the
- * change of variables (q, p) -> (Q, P) canonical (qd_canonical_check)?  A
+ * change of variables (q, p) -> (Q, P) canonical (qd_canonical_examine)?  A
  * yes/no question, so the status carries the answer: canonical exits 0; a
  * scaled map ([Q_i, P_i] = c, c != 1: Goldstein's extended canonical
  * transformation, not a canonical one) and a map with a failing fundamental
@@ -8,7 +8,10 @@
  * witness printed; a bracket neither proved nor refuted exits 1.
  * `--generator F1..F4 EXPR` instead gives the transformation a generating
  * function defines and K = H + dF/dt (qd_generate).  The variables are the
- * library's phase space (qd_phase): new ones Q, P or Q1..Qn, P1..Pn.
+ * library's phase space (qd_phase): new ones Q, P or Q1..Qn, P1..Pn.  The
+ * library writes the answers (qd_canon_report_print, qd_gen_result_print);
+ * this file reads the options, shows errors and maps the verdict to the
+ * exit status.
  */
 #include "cli.h"
 
