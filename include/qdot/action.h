@@ -132,6 +132,23 @@ QD_API qd_status qd_action_of_sep(qd_ctx *ctx, const qd_hj *h, const bool *angle
 
 QD_API void qd_action_free(qd_action *a);
 
+/* a, the result of qd_action_at or qd_action_of_sep, appended to out.
+ * Text: "separation: ...", "energy: ...", then for each coordinate its
+ * kind with the turning points (a libration) or the period's range (a
+ * rotation) and its separation constant's value, J_q, omega_q (rad/s) with
+ * the period 2 pi/omega, angle_q; the commensurate pairs ("degenerate:
+ * omega_x : omega_y = 1 : 2 ..."), and H(J) when recognised.  Numbers to 12
+ * significant digits, 0 at and below 1e-12 in size (qd_buf_put_result,
+ * scale 1).  JSON: one object and a newline, "separation", "energy",
+ * "coordinates" (each "coordinate", "constant", "value", "kind",
+ * "turning_points" or "range", "J", "omega", "angle"), "actions",
+ * "frequencies" and "angles" (coordinate name to number), "degeneracies"
+ * (each "coordinates" and "ratio" [num, den]) and "H_of_J" (null, or
+ * "form" and for Kepler's "c"), numbers to 17 digits.  QD_ERR_ARG for an
+ * inconsistent a, QD_ERR_NUMERIC (nothing appended) for a JSON number that
+ * is not finite, QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_action_print(qd_ctx *ctx, const qd_action *a, bool json, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -209,6 +209,68 @@ QD_API qd_status qd_phase_ham(qd_ctx *ctx, qd_phase *ph, bool closed);
 QD_API const qd_expr *qd_phase_dt(qd_ctx *ctx, qd_phase *ph, const qd_expr *F);
 QD_API void qd_phase_free(qd_phase *ph);
 
+/* ---- the question `qdot canonical` asks, and its answers written out ------ */
+
+/* "canonical", "scaled", "not canonical" or "undecided": the JSON names of
+ * the verdicts; NULL for a value outside qd_canon_kind. */
+QD_API const char *qd_canon_kind_name(qd_canon_kind k);
+
+/* Whether a map is canonical with what was asked besides. */
+typedef struct qd_canon_report {
+    qd_canon_verdict v;     /* qd_canonical_check of the map */
+    bool lagrange;          /* asked: the Lagrange brackets, in lb */
+    bool newham;            /* asked: the new Hamiltonian, in nh when v.kind is
+                               QD_CANON_YES or QD_CANON_SCALED (else none) */
+    qd_lagrange_result lb;
+    qd_newham nh;
+} qd_canon_report;
+
+/* Is (q, p) -> (Q, P) canonical on the phase space ph (ph->q, ph->p, t the
+ * context's time), and, when asked, its Lagrange brackets (lagrange) and the
+ * transformed Hamiltonian (newham: H derived first, qd_phase_ham with a
+ * closed H; K only for a canonical or scaled map).  Makes ph's new
+ * variables (qd_phase_new_vars: Q and P must be read before, as they must
+ * not name them), which name the brackets when the report is written.
+ * QD_OK with the report in *out, or the first error of qd_canonical_check,
+ * qd_phase_ham, qd_lagrange_brackets and qd_transformed_hamiltonian (reason
+ * in ctx, about a statement of the model when qd_phase_ham's is).  Release
+ * with qd_canon_report_free (also after a failure). */
+QD_API qd_status qd_canonical_examine(qd_ctx *ctx, qd_phase *ph, const qd_expr *const *Q,
+                                      const qd_expr *const *P, bool lagrange, bool newham,
+                                      qd_canon_report *out);
+QD_API void qd_canon_report_free(qd_canon_report *r);
+
+/* r, the report of qd_canonical_examine on ph, appended to out.  Text: the
+ * verdict's sentence ("canonical", "not canonical (a scaled canonical map,
+ * c = ...): [Q_i, P_i] = ...", "not canonical: [Q, P] = 2*q (should be 1)"
+ * or "could not decide: ..."), how a numerical yes is known and the witness
+ * of a no (qd_zero_result_note, qd_zero_result_print); then, as asked, the
+ * Lagrange-bracket matrix (rows and columns the old variables), the Poisson
+ * brackets of the old variables in the new ones and their duality, and the
+ * valence c, F, K(q, p, t) and K(Q, P, t).  JSON: one object and a newline,
+ * "verdict" (qd_canon_kind_name), "scale" (YES, SCALED), "bracket" ("[Q1,
+ * P2]"), "value" and "should_be" (NO, UNDECIDED), else null; the zero test's
+ * members (qd_zero_result_json); "lagrange" and "poisson_old_in_new" (rows
+ * of expressions) and "duality" (null when the Jacobian is singular); "K"
+ * null for a map neither canonical nor scaled, else "valence", "F", "K_old",
+ * "K_new".  Expressions in the text format.  ph must have its new variables
+ * (QD_ERR_ARG otherwise); QD_ERR_NUMERIC (nothing appended) for a witness
+ * number that is not finite, QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_canon_report_print(qd_ctx *ctx, const qd_phase *ph,
+                                       const qd_canon_report *r, bool json, qd_buf *out);
+
+/* The map g that qd_generate made from the generating function F of the
+ * given type on ph (whose new variables name it), appended to out.  Text:
+ * "generating function F2", F, the transformation (each new variable in q,
+ * p, t) and the new Hamiltonian K(q, p, t), K(Q, P, t) (a line left out
+ * when NULL).  JSON: one object and a newline, "type" ("F1".."F4"), "F",
+ * each new variable by name, "K_old", "K_new" (null when NULL).
+ * QD_ERR_ARG for a type outside qd_gen_type or ph without its new
+ * variables, QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_gen_result_print(qd_ctx *ctx, const qd_phase *ph, qd_gen_type type,
+                                     const qd_expr *F, const qd_gen_result *g, bool json,
+                                     qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -26,6 +26,7 @@
 
 #include <stddef.h>
 #include "expr.h"
+#include "json.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -68,6 +69,25 @@ QD_API qd_status qd_equal_test(qd_ctx *ctx, const qd_expr *e, const qd_expr *tar
 
 /* "proven", "nonzero", "numeric" or "unknown": the JSON names of the kinds. */
 QD_API const char *qd_zero_kind_name(qd_zero_kind k);
+
+/* ---- a verdict's zero test written out (src/mech/certify_out.c) ---------- */
+
+/* The witness of a QD_ZERO_NONZERO result z as one text line appended to
+ * out, the point's values and the difference to 17 digits:
+ *     "  witness: at q = 0.8125 the difference is 0.625 +- 0 (certified,
+ *      128-bit ball arithmetic)\n"
+ * ("at ..." left out when the point binds no symbol); nothing for the
+ * other kinds. */
+QD_API void qd_zero_result_print(qd_buf *out, const qd_zero_result *z);
+/* How a QD_ZERO_NUMERIC result z is known, appended to out to end a
+ * verdict's sentence: " (verified numerically at 12 points, 128 bits)";
+ * nothing for the other kinds. */
+QD_API void qd_zero_result_note(qd_buf *out, const qd_zero_result *z);
+/* z as members of the JSON object j is writing: "certainty" (the kind's
+ * name, qd_zero_kind_name), "witness" ({"point": {symbol: value, ...},
+ * "value", "radius"} for NONZERO, else null), "points" (NUMERIC, else
+ * null) and "bits".  A non-finite number marks j failed (qd_json_ok). */
+QD_API void qd_zero_result_json(qd_json *j, const qd_zero_result *z);
 
 #ifdef __cplusplus
 }

@@ -192,6 +192,16 @@ static void null_action(void **state)
     /* a NULL */
     qd_action_free(NULL);
     reset(&F);
+    /* ---- qd_action_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_print(F.ctx, NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -430,6 +440,51 @@ static void null_canonical(void **state)
     /* ph NULL */
     qd_phase_free(NULL);
     reset(&F);
+    /* ---- qd_canon_kind_name */
+    /* no pointer argument */
+    /* ---- qd_canonical_examine */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_examine(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, false, false, (qd_canon_report *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_examine(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, false, false, (qd_canon_report *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_examine(F.ctx, NULL, NULL, (const qd_expr * const *)F.e, false, false, (qd_canon_report *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_examine(F.ctx, NULL, (const qd_expr * const *)F.e, NULL, false, false, (qd_canon_report *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canonical_examine(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, false, false, NULL));
+    reset(&F);
+    /* ---- qd_canon_report_free */
+    /* r NULL */
+    qd_canon_report_free(NULL);
+    reset(&F);
+    /* ---- qd_canon_report_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canon_report_print(NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canon_report_print(F.ctx, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_canon_report_print(F.ctx, NULL, NULL, false, NULL));
+    reset(&F);
+    /* ---- qd_gen_result_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_gen_result_print(NULL, NULL, (qd_gen_type){0}, F.q, NULL, false, &F.buf));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_gen_result_print(F.ctx, NULL, (qd_gen_type){0}, F.q, NULL, false, &F.buf));
+    reset(&F);
+    /* F NULL */
+    assert_int_equal(QD_ERR_ARG, qd_gen_result_print(F.ctx, NULL, (qd_gen_type){0}, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_gen_result_print(F.ctx, NULL, (qd_gen_type){0}, F.q, NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -463,6 +518,24 @@ static void null_certify(void **state)
     reset(&F);
     /* ---- qd_zero_kind_name */
     /* no pointer argument */
+    /* ---- qd_zero_result_print */
+    /* out NULL */
+    qd_zero_result_print(NULL, NULL);
+    reset(&F);
+    /* z NULL */
+    qd_zero_result_print(&F.buf, NULL);
+    reset(&F);
+    /* ---- qd_zero_result_note */
+    /* out NULL */
+    qd_zero_result_note(NULL, NULL);
+    reset(&F);
+    /* z NULL */
+    qd_zero_result_note(&F.buf, NULL);
+    reset(&F);
+    /* ---- qd_zero_result_json */
+    /* j NULL */
+    qd_zero_result_json(NULL, NULL);
+    reset(&F);
     teardown(&F);
 }
 

@@ -1,34 +1,36 @@
 /*
- * cli/witness.c - printing a verdict's zero test (cli/witness.h).
+ * src/mech/certify_out.c - the zero test behind a yes/no verdict written
+ * out (qdot/certify.h): the witness of a "no", the point count and
+ * precision of a numerical "yes", as text or as JSON members.  In mech, not
+ * beside qd_zero_test in sym: the JSON writer ranks above sym.
  */
-#include "witness.h"
+#include "qdot/certify.h"
+#include "base/args.h"
 
-#include <stdio.h>
-
-void cli_witness_text(qd_buf *b, const qd_zero_result *z) {
+void qd_zero_result_print(qd_buf *out, const qd_zero_result *z) {
+    QD_ARGS(, out && z);
     if (z->kind != QD_ZERO_NONZERO)
         return;
-    qd_buf_puts(b, "  witness: ");
+    qd_buf_puts(out, "  witness: ");
     if (z->witness.n) {
-        qd_buf_puts(b, "at ");
+        qd_buf_puts(out, "at ");
         for (size_t i = 0; i < z->witness.n; i++)
-            qd_buf_printf(b, "%s%s = %.17g", i ? ", " : "", qd_expr_name(z->witness.sym[i]),
+            qd_buf_printf(out, "%s%s = %.17g", i ? ", " : "", qd_expr_name(z->witness.sym[i]),
                           z->witness.at[i]);
-        qd_buf_puts(b, " ");
+        qd_buf_puts(out, " ");
     }
-    qd_buf_printf(b, "the difference is %.17g +- %.3g (certified, %u-bit ball arithmetic)\n",
+    qd_buf_printf(out, "the difference is %.17g +- %.3g (certified, %u-bit ball arithmetic)\n",
                   z->witness.value, z->witness.radius, z->bits);
 }
 
-const char *cli_witness_how(const qd_zero_result *z, char *buf, size_t size) {
+void qd_zero_result_note(qd_buf *out, const qd_zero_result *z) {
+    QD_ARGS(, out && z);
     if (z->kind == QD_ZERO_NUMERIC)
-        snprintf(buf, size, " (verified numerically at %u points, %u bits)", z->points, z->bits);
-    else if (size)
-        buf[0] = 0;
-    return buf;
+        qd_buf_printf(out, " (verified numerically at %u points, %u bits)", z->points, z->bits);
 }
 
-void cli_witness_json(qd_json *j, const qd_zero_result *z) {
+void qd_zero_result_json(qd_json *j, const qd_zero_result *z) {
+    QD_ARGS(, j && z);
     qd_json_key(j, "certainty");
     qd_json_string(j, qd_zero_kind_name(z->kind));
     qd_json_key(j, "witness");
