@@ -5,15 +5,15 @@
  * free (qd_speeds_equilibria_find); modes are the eigenvalues of the
  * reduced first-order system's Jacobian (qd_speeds_linear_about), about an
  * equilibrium or a state given with --about (a steady motion: the disk
- * rolling upright at spin u3 = 6).
+ * rolling upright at spin u3 = 6).  What they print is the library's
+ * (qd_speeds_equilibria_print, qd_speeds_modes_print); this is loading,
+ * options and calls.
  */
 #include "linear_cli.h"
 
-#include <math.h>
-#include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 #include "eom_out.h"
-#include "qdot/json.h"
 #include "model_cli.h"
 #include "qdot/speeds.h"
 
@@ -44,125 +44,7 @@ static int sp_load(sp_run *r, const char *refuse) {
     return rc;
 }
 
-/* The value of the state at x (a coordinate or speed of the equations). */
-static double *value_of(const sp_run *r, const qd_expr *x) {
-    size_t k = qd_state_find(&r->st, x);
-    return k < r->st.n ? &r->st.vals[k] : NULL;
-}
-
-static void put_names(qd_buf *b, size_t n, const qd_expr *const *syms, const bool *pick) {
-    bool first = true;
-    for (size_t j = 0; j < n; j++)
-        if (!pick || pick[j]) {
-            qd_buf_printf(b, "%s%s", first ? "" : ", ", qd_expr_name(syms[j]));
-            first = false;
-        }
-}
-
 /* ---- equilibria --------------------------------------------------------------- */
-
-static void eq_text(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
-    const qd_equilibria *eq = &s->eq;
-    const qd_speeds_eom *e = r->e;
-    qd_buf_printf(b, "%zu equilibri%s (%s%s) with every speed 0: ", eq->count,
-                  eq->count == 1 ? "um" : "a", eq->method,
-                  eq->exact ? ": the complete set, angles in (-pi, pi]" : "");
-    put_names(b, e->m, e->u, NULL);
-    qd_buf_puts(b, "\n");
-    /* a family within the solved coordinates is sampled: a few samples say it */
-    size_t shown = eq->continuum && eq->count > 10 ? 10 : eq->count;
-    for (size_t i = 0; i < shown; i++) {
-        const qd_equilibrium *p = &eq->pts[i];
-        qd_buf_printf(b, "%3zu  ", i + 1);
-        for (size_t j = 0; j < s->nsolved; j++) {
-            qd_buf_printf(b, "%s%s = ", j ? ", " : "", qd_expr_name(e->q[s->solved[j]]));
-            if (p->exact) {
-                qd_print(r->ctx, p->exact[j], QD_FMT_TEXT, b);
-                if (!qd_is_number(p->exact[j])) {
-                    qd_buf_puts(b, " (");
-                    cli_state_put_result(b, p->q[j]);
-                    qd_buf_puts(b, ")");
-                }
-            } else {
-                cli_state_put_result(b, p->q[j]);
-            }
-        }
-        if (!s->nsolved)
-            qd_buf_puts(b, "any configuration");
-        qd_buf_puts(b, p->residual < 1e-14 ? ", residual < 1e-14\n" : "");
-        if (p->residual >= 1e-14)
-            qd_buf_printf(b, ", residual %.3g\n", p->residual);
-    }
-    if (shown < eq->count)
-        qd_buf_printf(b, "  ... and %zu more samples (--format json lists them all)\n",
-                      eq->count - shown);
-    if (eq->continuum && s->nsolved)
-        qd_buf_puts(b, "note: these equilibria are not isolated (a family along a null "
-                       "direction of the equations at rest); the points listed are samples "
-                       "of it\n");
-    if (s->nsolved < e->n) {
-        qd_buf_puts(b, "free (any value: no equation at rest involves them): ");
-        put_names(b, e->n, e->q, s->free_coord);
-        qd_buf_puts(b, "\n");
-    }
-    qd_buf_printf(b, "note: at rest u = 0 and f_u(q, 0) = 0: %zu equation%s not identically 0 "
-                     "in %zu coordinate%s\n", s->nrows, s->nrows == 1 ? "" : "s", e->n,
-                  e->n == 1 ? "" : "s");
-}
-
-static void eq_json(const sp_run *r, const qd_speeds_equilibria *s, qd_buf *b) {
-    const qd_equilibria *eq = &s->eq;
-    const qd_speeds_eom *e = r->e;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "method");
-    qd_json_string(&j, eq->method);
-    qd_json_key(&j, "exact");
-    qd_json_bool(&j, eq->exact);
-    qd_json_key(&j, "continuum");
-    qd_json_bool(&j, eq->continuum);
-    qd_json_key(&j, "speeds");
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < e->m; k++)
-        qd_json_string(&j, qd_expr_name(e->u[k]));
-    qd_json_end_array(&j);
-    qd_json_key(&j, "free");
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < e->n; k++)
-        if (s->free_coord[k])
-            qd_json_string(&j, qd_expr_name(e->q[k]));
-    qd_json_end_array(&j);
-    qd_json_key(&j, "equilibria");
-    qd_json_begin_array(&j);
-    for (size_t i = 0; i < eq->count; i++) {
-        const qd_equilibrium *p = &eq->pts[i];
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "equilibrium");
-        qd_json_begin_object(&j);
-        for (size_t k = 0; k < s->nsolved; k++) {
-            qd_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
-            qd_json_number(&j, p->q[k]);
-        }
-        qd_json_end_object(&j);
-        if (p->exact) {
-            qd_json_key(&j, "exact");
-            qd_json_begin_object(&j);
-            for (size_t k = 0; k < s->nsolved; k++) {
-                qd_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
-                qd_json_expr(&j, r->ctx, p->exact[k]);
-            }
-            qd_json_end_object(&j);
-        }
-        qd_json_key(&j, "residual");
-        qd_json_number(&j, p->residual);
-        qd_json_end_object(&j);
-    }
-    qd_json_end_array(&j);
-    qd_json_end_object(&j);
-    qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
-}
 
 int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char *refuse) {
     sp_run r = {.ctx = ctx, .mf = mf};
@@ -174,7 +56,7 @@ int cli_speeds_equilibria(qd_ctx *ctx, cli_model_file *mf, bool json, const char
         rc = cli_diag_ctx(ctx);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        (json ? eq_json : eq_text)(&r, &s, &b);
+        b.failed = qd_speeds_equilibria_print(ctx, r.e, &s, json, &b) != QD_OK;
         rc = cli_emit(&b, "equilibria");
     }
     qd_speeds_equilibria_free(&s);
@@ -190,124 +72,18 @@ static int parse_about(sp_run *r, const char *text) {
     return cli_state_read(r->ctx, r->mf->model, "--about", text, &r->st, &o);
 }
 
-/* No --about: the first equilibrium listed, free coordinates and speeds 0. */
+/* No --about: the first equilibrium listed, at rest (qd_speeds_equilibria_choose). */
 static int at_equilibrium(sp_run *r) {
-    qd_speeds_equilibria s;
-    if (qd_speeds_equilibria_find(r->ctx, r->e, r->mf->model, r->st.n, r->st.syms, r->st.vals, NULL,
-                                  &s) != QD_OK)
+    bool found;
+    if (qd_speeds_equilibria_choose(r->ctx, r->e, r->mf->model, r->st.n, r->st.syms, r->st.vals,
+                                    &found) != QD_OK)
         return cli_diag_ctx(r->ctx);
-    int rc = QD_EXIT_OK;
-    if (s.eq.count == 0) {
+    if (!found) {
         cli_diag_error("no equilibrium found (qdot equilibria lists none): give a state with "
                        "--about");
-        rc = QD_EXIT_FAIL;
+        return QD_EXIT_FAIL;
     }
-    for (size_t j = 0; rc == QD_EXIT_OK && j < s.nsolved; j++) {
-        double *v = value_of(r, r->e->q[s.solved[j]]);
-        if (v)
-            *v = s.eq.pts[0].q[j];
-    }
-    qd_speeds_equilibria_free(&s);
-    return rc;
-}
-
-static const char *verdict_text(int stable) {
-    return stable == 1 ? "stable (every Re s <= 0; the zero roots semisimple: neighbouring "
-                         "steady motions)"
-         : stable == 0 ? "unstable"
-                       : "borderline (zero or imaginary roots that repeat without as many "
-                         "eigenvectors: the linear motion may drift)";
-}
-
-static void modes_text(const sp_run *r, const qd_speeds_linear *lin, const qd_modes_result *res,
-                       qd_buf *b) {
-    const qd_speeds_eom *e = r->e;
-    qd_buf_puts(b, "state: ");
-    for (size_t k = 0; k < e->n + e->m; k++) {
-        const qd_expr *x = k < e->n ? e->q[k] : e->u[k - e->n];
-        const double *v = value_of(r, x);
-        qd_buf_printf(b, "%s%s = ", k ? ", " : "", qd_expr_name(x));
-        cli_state_put_result(b, v ? *v : NAN);
-    }
-    qd_buf_puts(b, "\nreduced system: (");
-    for (size_t i = 0; i < lin->nkept; i++)
-        qd_buf_printf(b, "%s, ", qd_expr_name(e->q[lin->kept[i]]));
-    put_names(b, e->m, e->u, NULL);
-    qd_buf_puts(b, ")");
-    if (lin->nkept < e->n) {
-        qd_buf_puts(b, "; ignorable, dropped: ");
-        put_names(b, e->n, e->q, lin->ignorable);
-    }
-    double rate = 0;
-    for (size_t i = 0; i < lin->dim; i++)
-        rate = fmax(rate, fabs(lin->rate[i]));
-    qd_buf_puts(b, "\n");
-    if (rate > 1e-8)
-        qd_buf_printf(b, "note: not a stationary point of the reduced system: |y'| = %.3g "
-                         "there; the linearization drops it\n", rate);
-    qd_buf_printf(b, "eigenvalues s of its Jacobian (%zu):\n", res->neig);
-    double big = 0;
-    for (size_t i = 0; i < res->neig; i++)
-        big = fmax(big, hypot(res->eig_re[i], res->eig_im[i]));
-    for (size_t i = 0; i < res->neig; i++) {
-        /* round-off about 0 is not printed: the verdict already judged it */
-        double re = res->eig_re[i], im = res->eig_im[i];
-        re = fabs(re) <= 1e-12 * big ? 0 : re;
-        im = fabs(im) <= 1e-12 * big ? 0 : im;
-        qd_buf_printf(b, "  s = %.10g %s %.10gi", re, im < 0 ? "-" : "+", fabs(im));
-        if (im > 0)
-            qd_buf_printf(b, "  (frequency %.10g rad/s)", im);
-        qd_buf_puts(b, "\n");
-    }
-    qd_buf_printf(b, "%s\n", verdict_text(res->stable));
-}
-
-static void modes_json(const sp_run *r, const qd_speeds_linear *lin, const qd_modes_result *res,
-                       qd_buf *b) {
-    const qd_speeds_eom *e = r->e;
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "state");
-    qd_json_begin_object(&j);
-    for (size_t k = 0; k < e->n + e->m; k++) {
-        const qd_expr *x = k < e->n ? e->q[k] : e->u[k - e->n];
-        const double *v = value_of(r, x);
-        qd_json_key(&j, qd_expr_name(x));
-        qd_json_number(&j, v ? *v : NAN);
-    }
-    qd_json_end_object(&j);
-    qd_json_key(&j, "kept");
-    qd_json_begin_array(&j);
-    for (size_t i = 0; i < lin->nkept; i++)
-        qd_json_string(&j, qd_expr_name(e->q[lin->kept[i]]));
-    qd_json_end_array(&j);
-    qd_json_key(&j, "ignorable");
-    qd_json_begin_array(&j);
-    for (size_t i = 0; i < e->n; i++)
-        if (lin->ignorable[i])
-            qd_json_string(&j, qd_expr_name(e->q[i]));
-    qd_json_end_array(&j);
-    qd_json_key(&j, "eigenvalues");
-    qd_json_begin_array(&j);
-    for (size_t i = 0; i < res->neig; i++) {
-        qd_json_begin_array(&j);
-        qd_json_number(&j, res->eig_re[i]);
-        qd_json_number(&j, res->eig_im[i]);
-        qd_json_end_array(&j);
-    }
-    qd_json_end_array(&j);
-    qd_json_key(&j, "verdict");
-    qd_json_string(&j, res->stable == 1 ? "stable" : res->stable == 0 ? "unstable"
-                                                                         : "borderline");
-    qd_json_key(&j, "stable");
-    if (res->stable < 0)
-        qd_json_null(&j);
-    else
-        qd_json_bool(&j, res->stable == 1);
-    qd_json_end_object(&j);
-    qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
+    return QD_EXIT_OK;
 }
 
 /* --scan NAME=A:B: the verdict at the state as NAME (a parameter, speed or
@@ -361,7 +137,8 @@ int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const c
         rc = cli_diag_ctx(ctx);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        (json ? modes_json : modes_text)(&r, &lin, &res, &b);
+        b.failed = qd_speeds_modes_print(ctx, r.e, r.st.n, r.st.syms, r.st.vals, &lin, &res, json,
+                                         &b) != QD_OK;
         rc = cli_emit(&b, "modes");
     }
     qd_modes_result_free(&res);

@@ -200,6 +200,37 @@ QD_API qd_status qd_speeds_equilibria_find(qd_ctx *ctx, const struct qd_speeds_e
                                            qd_speeds_equilibria *out);
 QD_API void qd_speeds_equilibria_free(qd_speeds_equilibria *r);
 
+/* ---- chosen and printed (src/linear/speeds_choose.c, speeds_print.c) ------ */
+
+/* The state to linearize e (derived from m) about when the caller names
+ * none: the first equilibrium qd_speeds_equilibria_find lists (default
+ * options; syms/vals as there, the parameters' values read from vals), at
+ * rest.  Its solved coordinates are written into vals at their symbols'
+ * slots in syms and every speed of e that syms holds is set to 0; the free
+ * coordinates and every other slot keep their values.  *found false, vals
+ * untouched and QD_OK when none is listed; a failure of the search is
+ * returned with vals untouched. */
+QD_API qd_status qd_speeds_equilibria_choose(qd_ctx *ctx, const struct qd_speeds_eom *e,
+                                             const qd_model *m, size_t nvals,
+                                             const qd_expr *const *syms, double *vals,
+                                             bool *found);
+
+/* s, the equilibria of e (qd_speeds_equilibria_find), appended to out.
+ * Text: how many, the method, the speeds (all 0), then each point's solved
+ * coordinates (exact values with their number beside them when they are
+ * not numbers; numbers in the digit rule of qd_buf_put_result) and
+ * residual; a family (s->eq.continuum) shows its first 10 samples and says
+ * it is not isolated; then the free coordinates and how many equations at
+ * rest were solved.  JSON: "method", "exact", "continuum", "speeds",
+ * "free", "equilibria" (each: "equilibrium" {coordinate: value}, "exact"
+ * {coordinate: expression} when found exactly, "residual"), every digit,
+ * ending with a newline.  QD_ERR_ARG when s is not over e's coordinates,
+ * QD_ERR_NUMERIC (nothing appended) for a JSON number that is not finite,
+ * QD_ERR_NOMEM. */
+QD_API qd_status qd_speeds_equilibria_print(qd_ctx *ctx, const struct qd_speeds_eom *e,
+                                            const qd_speeds_equilibria *s, bool json,
+                                            qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif

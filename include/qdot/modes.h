@@ -335,6 +335,26 @@ QD_API qd_status qd_speeds_modes_scan(qd_ctx *ctx, const struct qd_speeds_eom *e
                                       const qd_expr *what, double a, double b,
                                       const qd_scan_opts *opts, qd_scan *out);
 
+/* ---- printed (src/linear/speeds_print.c) --------------------------------- */
+
+/* The modes of e about the state syms/vals (the one lin was linearized
+ * about: qd_speeds_linear_about, qd_speeds_modes_solve gave res) appended
+ * to out.  Text: the state (every coordinate and speed of e, in the digit
+ * rule of qd_buf_put_result; a value syms lacks is nan), the reduced
+ * system and the ignorable coordinates dropped, a note when the state is
+ * not stationary (|y'| > 1e-8), the eigenvalues s to 10 digits (a part
+ * below 1e-12 of the largest |s| as 0) with the frequency of each Im s > 0,
+ * and the verdict in words.  JSON: "state" {name: value}, "kept",
+ * "ignorable", "eigenvalues" ([re, im] pairs, every digit), "verdict"
+ * ("stable", "unstable" or "borderline") and "stable" (true, false, or null
+ * when borderline), ending with a newline.  QD_ERR_ARG when lin is not of
+ * e, QD_ERR_NUMERIC (nothing appended) for a JSON number that is not
+ * finite (a state value missing), QD_ERR_NOMEM. */
+QD_API qd_status qd_speeds_modes_print(qd_ctx *ctx, const struct qd_speeds_eom *e, size_t nvals,
+                                       const qd_expr *const *syms, const double *vals,
+                                       const qd_speeds_linear *lin, const qd_modes_result *res,
+                                       bool json, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -22,6 +22,7 @@
 #include "speeds.h"
 #include "form.h"
 #include "impulse.h"
+#include "hamilton.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -149,6 +150,63 @@ QD_API qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform
 QD_API qd_status qd_render_impulse(qd_ctx *ctx, const qd_model *m, const qd_impulse *r,
                                    qd_render_format fmt, qd_buf *out);
 
+/* ---- the Hamiltonian (qdot/hamilton.h) ------------------------------------ */
+
+/* H and Hamilton's equations of h (qd_ham_derive) at one point (q, p, t):
+ * numbers, computed by qd_ham_point_eval, for qd_render_hamiltonian and any
+ * caller (arrays of n entries each, the library's: qd_ham_point_free). */
+typedef struct qd_ham_point {
+    size_t n;        /* h->n */
+    double *q, *p;   /* the point's coordinates h->q and momenta h->p */
+    double t;
+    double *qd;      /* the velocities there: h->vel evaluated, or for h->implicit
+                        Newton's solution of p = dL/dq' (qd_ham_velocities_at) */
+    double H;
+    double *dq, *dp; /* dq_j/dt and dp_j/dt */
+    bool solved;     /* qd came from Newton's method (h->implicit) */
+} qd_ham_point;
+
+/* Evaluate h at the state syms/vals (nvals: every coordinate h->q, every
+ * momentum h->p, t and the parameters, as qd_eval takes them; for
+ * h->implicit the velocities given are Newton's first guess, else 0) into
+ * *out.  H, dq and dp are evaluated in that order with the velocities of
+ * the point (for h->implicit, Newton's); out->qd after them.  QD_ERR_ARG
+ * naming it when a coordinate, momentum or t has no value in syms; an
+ * evaluation's or Newton's status with its message (QD_ERR_NUMERIC "not a
+ * finite number: ..." for a value that is not finite).  *out is
+ * overwritten; free it with qd_ham_point_free (also after a failure). */
+QD_API qd_status qd_ham_point_eval(qd_ctx *ctx, const qd_ham *h, size_t nvals,
+                                   const qd_expr *const *syms, const double *vals,
+                                   qd_ham_point *out);
+QD_API void qd_ham_point_free(qd_ham_point *pt);
+
+/* Append h, the Hamiltonian of m (qd_ham_derive), to out in fmt; source
+ * names the model in the headers (NULL: "model"); at (NULL: symbolic) is h
+ * evaluated at a point (qd_ham_point_eval), whose H, Hamilton's equations
+ * and (h->implicit) velocities are then printed as numbers.
+ *   Text and LaTeX: "qdot hamiltonian SOURCE", the momenta p_j = dL/dq'_j
+ *     and the velocities q'_j(q, p, t) (at a point the velocities only for
+ *     h->implicit, Newton's), H, for a model given by H the inverse
+ *     Legendre transform L (or why there is none), Hamilton's equations and
+ *     the verdicts "H = T + V" and "H conserved"; LaTeX rows end in \\ and
+ *     the other lines are % comments.
+ *   JSON: "model", "coordinates", "momenta", "definitions" (pdef, null
+ *     entries when there is none), "velocities", "implicit" (only when
+ *     true), "at" {q..., t, p...} at a point, "H", "dq_dt", "dp_dt" (each
+ *     an expression string, a number at the point), "H_is_energy" (null
+ *     when unknown), "H_minus_energy", "conserved", "H_given", and for a
+ *     model given by H without a point "L" and "L_error"; a newline ends it.
+ *   SymPy: a script defining the symbols, momenta, pdef (None when there
+ *     are none), velocities, implicit (when true), H, L (a model given by
+ *     H), dq_dt and dp_dt, each name with a _ appended while it clashes
+ *     with a name of m, the verdicts as comments.
+ * QD_ERR_ARG for QD_RENDER_C or an at not of h (another n); QD_ERR_NUMERIC
+ * for a JSON number that is not finite; QD_ERR_NOMEM.  Nothing is appended
+ * on an error. */
+QD_API qd_status qd_render_hamiltonian(qd_ctx *ctx, const qd_model *m, const qd_ham *h,
+                                       const char *source, const qd_ham_point *at,
+                                       qd_render_format fmt, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -157,6 +215,7 @@ QD_API qd_status qd_render_impulse(qd_ctx *ctx, const qd_model *m, const qd_impu
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it. NULL is an
  * accepted value, as documented at the function, for: qd_render_eom (o),
- * qd_render_speeds (o), qd_render_check (o). Exception: qd_render_format_parse(NULL, out) is
- * false. */
+ * qd_render_speeds (o), qd_render_check (o), qd_render_hamiltonian (source,
+ * at); qd_ham_point_free accepts NULL. Exception:
+ * qd_render_format_parse(NULL, out) is false. */
 #endif

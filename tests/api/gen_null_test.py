@@ -41,6 +41,7 @@ NULLABLE = {
     'qd_render_eom': {'o'},
     'qd_render_speeds': {'o'},
     'qd_render_check': {'o'},
+    'qd_render_hamiltonian': {'source', 'at'},  # w31-C: the model's name, symbolic
     'qd_equilibria_find': {'opts'},
     'qd_constrained_equilibria_find': {'opts'},
     'qd_constrained_linear_about': {'indep'},

@@ -961,6 +961,35 @@ static void null_equilibria(void **state)
     /* r NULL */
     qd_speeds_equilibria_free(NULL);
     reset(&F);
+    /* ---- qd_speeds_equilibria_choose */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_choose(NULL, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, F.b));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_choose(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, F.b));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_choose(F.ctx, NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, F.b));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_choose(F.ctx, NULL, F.model, 1, NULL, F.d, F.b));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_choose(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, NULL, F.b));
+    reset(&F);
+    /* found NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_choose(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_speeds_equilibria_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_print(NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_print(F.ctx, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_equilibria_print(F.ctx, NULL, NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2960,6 +2989,22 @@ static void null_modes(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.q, 1, 1, NULL, NULL));
     reset(&F);
+    /* ---- qd_speeds_modes_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_print(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_print(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_print(F.ctx, NULL, 1, NULL, F.d, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_print(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_print(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -4007,6 +4052,39 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_impulse(F.ctx, F.model, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_ham_point_eval */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_eval(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_eval(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_eval(F.ctx, NULL, 1, NULL, F.d, (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_eval(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_eval(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_ham_point_free */
+    /* pt NULL */
+    qd_ham_point_free(NULL);
+    reset(&F);
+    /* ---- qd_render_hamiltonian */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamiltonian(NULL, F.model, NULL, "q", NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamiltonian(F.ctx, NULL, NULL, "q", NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamiltonian(F.ctx, F.model, NULL, "q", NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_hamiltonian(F.ctx, F.model, NULL, "q", NULL, (qd_render_format){0}, NULL));
     reset(&F);
     teardown(&F);
 }
