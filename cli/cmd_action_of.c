@@ -86,9 +86,9 @@ static int emit(ao_run *r, double S, double dS) {
         qd_buf_puts(&b, "\n");
     } else {
         qd_buf_puts(&b, "action: ");
-        cli_state_put_result(&b, S);
+        qd_buf_put_result(&b, S, 1);
         qd_buf_puts(&b, "\nfirst_variation: ");
-        cli_state_put_result(&b, dS);
+        qd_buf_put_result(&b, dS, 1);
         qd_buf_puts(&b, "\n");
     }
     return cli_emit(&b, "action");

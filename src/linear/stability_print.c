@@ -10,14 +10,8 @@
 #include <math.h>
 #include <stdio.h>
 
-/* 12 significant digits, below 1e-13 in size a 0 (the program's rule for
- * results of a search). */
-static void put_num(qd_buf *b, double x) {
-    if (fabs(x) < 1e-13)
-        qd_buf_puts(b, "0");
-    else
-        qd_buf_printf(b, "%.12g", x);
-}
+/* A computed result: the digit rule of qd_result_format (qdot/print.h). */
+static void put_num(qd_buf *b, double x) { qd_buf_put_result(b, x, 1); }
 
 static void put_matrix(qd_buf *b, const char *name, const double *A, size_t n) {
     qd_buf_printf(b, "  %s = [", name);
@@ -48,7 +42,7 @@ static double shown(const qd_modes_result *m, double x) {
     double big = 0;
     for (size_t i = 0; i < m->neig; i++)
         big = fmax(big, hypot(m->eig_re[i], m->eig_im[i]));
-    return fabs(x) <= 1e-13 * big ? 0 : x;
+    return fabs(x) <= QD_RESULT_ZERO * big ? 0 : x;
 }
 
 static void put_roots(qd_buf *b, const qd_modes_result *m) {
