@@ -281,6 +281,14 @@ QD_API const qd_expr *qd_model_initial_definition(const qd_model *m, size_t coor
 /* A named definition (`x1 = ...`): its scalar value, or NULL when the name
  * is not defined or is a vector. */
 QD_API const qd_expr *qd_model_definition(const qd_model *m, const char *name);
+/* text[a, b) read as the model language reads an expression after m's
+ * statements: coordinates, velocities, t, parameters, inputs, the
+ * definitions with their rates, vectors and components (P.x, P'.x,
+ * dot(r', r')), position(BODY), omega(BODY), rotations; the momenta when m
+ * is given by H.  The value must be a scalar.  NULL with the error record
+ * located in text (a vector where a scalar is needed, an unknown name). */
+QD_API const qd_expr *qd_model_read_expr(qd_ctx *ctx, const qd_model *m, const char *text,
+                                         size_t a, size_t b);
 
 /* Where a statement of the model stands, for errors found after parsing
  * ("the mass matrix is singular" points at the T line).  what: "T", "V", "L",

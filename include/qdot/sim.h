@@ -466,6 +466,11 @@ typedef struct qd_sim_report {
  * "painleve", "failure" (the QD_STOP_ names in lower case); "unknown"
  * outside the enum.  qd_stop_str is the English for a reader. */
 QD_API const char *qd_stop_name(qd_stop_code code);
+/* The stop record as one JSON object (the value of a "stop" key, or an
+ * array's element): {"code": qd_stop_name, "reason": qd_stop_str, "ok":
+ * qd_stop_ok, "t", "value"}, null where a number is not finite.  The one
+ * shape of `simulate`'s and `sweep`'s records and Python's Result.stop. */
+QD_API void qd_sim_stop_json(qd_json *j, const qd_sim_stop *stop);
 
 /* The note on the initial state's projection (stats initial_moved_q,
  * initial_moved_qd) is printed when either moved by more than this: far

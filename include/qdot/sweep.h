@@ -196,8 +196,7 @@ QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts 
  * run, its numbers (qd_double_format: nan where none) then
  * qd_sweep_outcome_str; or JSON, {"columns": [...], "rows": [[...], ...]
  * (null where none), "status": [qd_sweep_outcome_str, ...], "stop":
- * [{"reason": qd_stop_str, "t": T, "value": V}, ...] (null where NaN; the
- * record Python's Result.stop holds)} and a newline.  QD_ERR_NOMEM when out
+ * [qd_sim_stop_json, ...]} and a newline.  QD_ERR_NOMEM when out
  * could not grow. */
 QD_API qd_status qd_sweep_csv(const qd_sweep *w, const double *rows,
                               const qd_sweep_outcome *outcome, qd_buf *out);

@@ -386,6 +386,8 @@ _PROTOS = {
     "qd_sim_method_from_name": (c_bool, [c_char_p, POINTER(c_int)]),
     "qd_sim_method_name": (c_char_p, [c_int]),
     "qd_stop_str": (c_char_p, [c_int]),
+    "qd_stop_name": (c_char_p, [c_int]),
+    "qd_stop_ok": (c_bool, [c_int]),
     "qd_sim_method_adaptive": (c_bool, [c_int]),
     "qd_sim_default_method": (c_int, [c_void_p, c_bool]),
     "qd_sim_columns": (c_size_t, [c_void_p, c_int, POINTER(c_char_p), c_size_t]),

@@ -62,9 +62,11 @@ class Result(Table):
     energy_error_max: max |E(t) - E(0)| / max(|E(0)|, max T) over the rows
         returned (dense output between steps included);
     energy_error_steps: the same at the integrator's accepted steps;
-    stop: why the run ended (qd_sim_stats.stop): {"reason": "reached the
-        end time" or "a terminal event" ..., "t": when, "value": the
-        quantity that decided it (the event's index, ...), nan where none};
+    stop: why the run ended (qd_sim_stats.stop), the keys of the CLI's
+        JSON "stop": {"code": "end", "event", ... (qd_stop_name), "reason":
+        "reached the end time", "a terminal event" ..., "ok": it ended as
+        asked, "t": when, "value": the quantity that decided it (the
+        event's index, ...), nan where none};
     method: the method's name.
     """
 
@@ -74,7 +76,9 @@ class Result(Table):
         super().__init__(columns, data[ev == -1])
         self.events = [Table(columns, data[ev == k]) for k in range(nev)]
         self.impacts = Table(columns, data[ev >= nev])
-        self.stop = {"reason": lib.qd_stop_str(stats.stop.code).decode(),
+        code = stats.stop.code
+        self.stop = {"code": lib.qd_stop_name(code).decode(),
+                     "reason": lib.qd_stop_str(code).decode(), "ok": bool(lib.qd_stop_ok(code)),
                      "t": stats.stop.t, "value": stats.stop.value}
         self.stats = {name: getattr(stats, name) for name, _ in stats._fields_
                       if not name.startswith("_") and name != "stop"}

@@ -84,6 +84,7 @@ def test_stats_are_the_runs_counts():
                             "events_unresolved_spacing", "events_unresolved_event",
                             "energy_error_steps", "stop"}
     assert r.stop["reason"] == "reached the end time" and r.stop["t"] == 1.0
+    assert r.stop["code"] == "end" and r.stop["ok"] is True
     # a fixed step: t_end/dt steps, none rejected, E0 = -m g l cos(theta0)
     assert (r.stats["steps"], r.stats["rejected"], r.stats["t"]) == (8, 0, 1.0)
     assert r.stats["E0"] == pytest.approx(-1 * 9.81 * 2 * math.cos(0.3), rel=1e-14)

@@ -135,6 +135,11 @@ void qd_ctx_error_at(qd_ctx *ctx, const char *text, size_t offset, size_t length
         d->subject = QD_SUBJECT_TEXT;
 }
 
+void qd__ctx_restore(qd_ctx *ctx, const qd_diag *d) {
+    ctx->diag = *d;
+    ctx->status = d->status;
+}
+
 const char *qd_status_str(qd_status st) {
     switch (st) {
     case QD_OK: return "ok";

@@ -34,6 +34,9 @@ qd_ctx *qd__ctx_create(const qd_allocator *a);
 /* size bytes from the context's arena (freed with the context); NULL with
  * QD_ERR_NOMEM recorded when out of memory. */
 void *qd__alloc(qd_ctx *ctx, size_t size);
+/* The error record d put back as the context's (an alternative tried and
+ * abandoned must not leave its own error). */
+void qd__ctx_restore(qd_ctx *ctx, const qd_diag *d);
 /* Records QD_ERR_NOMEM ("out of memory"). */
 void qd__oom(qd_ctx *ctx);
 

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "../base/args.h"
+#include "../base/ctx.h"
 #include "qdot/read.h"
 #include "qdot/state.h" /* qd_state_item_end: the one item splitter */
 #include "setup.h"
@@ -100,10 +101,34 @@ static const qd_expr *refuse(qd_sim_setup *s, const char *text, size_t a, size_t
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else
         snprintf(hint, sizeof hint, "use coordinates, velocities q', t, parameters, the model's "
-                                    "definitions and the multipliers lambda_<constraint>");
+                                    "definitions (a vector by a component: P.x) and the "
+                                    "multipliers lambda_<constraint>");
     qd_ctx_error_about(s->ctx, QD_SUBJECT_TEXT, 0, name, QD_REASON_NONE, mult ? NULL : hint);
     qd_ctx_error_at(s->ctx, text, word_in(text, a, b, name), strlen(name));
     return NULL;
+}
+
+/* x with every plain name that is not a multiplier, a momentum or an input
+ * replaced by the model's definition of it; an unknown one is an error
+ * located in text[a, b). */
+static const qd_expr *resolve_names(qd_sim_setup *s, const char *text, size_t a, size_t b,
+                                    const qd_expr *x) {
+    size_t k = qd_free_symbols(s->ctx, x, NULL, 0);
+    const qd_expr **syms = malloc((k + 1) * sizeof *syms);
+    if (!syms) {
+        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    qd_free_symbols(s->ctx, x, syms, k);
+    for (size_t i = 0; x && i < k; i++) {
+        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(s, syms[i]) ||
+            is_momentum(s, syms[i]) || is_input(s, syms[i]))
+            continue;
+        const qd_expr *d = definition(s, qd_expr_name(syms[i]));
+        x = d ? qd_subs(s->ctx, x, 1, &syms[i], &d) : refuse(s, text, a, b, qd_expr_name(syms[i]));
+    }
+    free(syms);
+    return x;
 }
 
 const qd_expr *qd_sim_setup_read(qd_sim_setup *s, const char *text, size_t a, size_t b) {
@@ -141,22 +166,21 @@ const qd_expr *qd_sim_setup_read(qd_sim_setup *s, const char *text, size_t a, si
         x = qd_read(s->ctx, copy, &opts, NULL);
     }
     free(copy);
-    size_t k = x ? qd_free_symbols(s->ctx, x, NULL, 0) : 0;
-    const qd_expr **syms = x ? malloc((k + 1) * sizeof *syms) : NULL;
-    if (x && !syms) {
-        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory");
-        return NULL;
-    }
-    if (x)
-        qd_free_symbols(s->ctx, x, syms, k);
-    for (size_t i = 0; x && i < k; i++) {
-        if (qd_symbol_role(syms[i]) != QD_ROLE_PLAIN || is_multiplier(s, syms[i]) ||
-            is_momentum(s, syms[i]) || is_input(s, syms[i]))
-            continue;
-        const qd_expr *d = definition(s, qd_expr_name(syms[i]));
-        x = d ? qd_subs(s->ctx, x, 1, &syms[i], &d) : refuse(s, text, a, b, qd_expr_name(syms[i]));
-    }
-    free(syms);
+    bool syntax = !x; /* the kernel's grammar refused the text (not a name in it) */
+    x = x ? resolve_names(s, text, a, b, x) : NULL;
+    if (x || a == b || qd_ctx_status(s->ctx) == QD_ERR_NOMEM)
+        return x;
+    /* beyond the kernel's grammar: vectors and their components (P.x, P'.x),
+     * position(BODY), omega(BODY), read as the model language reads them.
+     * When that fails too, the error of the larger grammar is the better one
+     * for a syntax error; for a name, the kernel's (it knows the multipliers,
+     * momenta and inputs, and says so) */
+    qd_diag first = *qd_ctx_diag(s->ctx);
+    qd_ctx_clear_error(s->ctx);
+    x = qd_model_read_expr(s->ctx, s->m, text, a, b);
+    x = x ? resolve_names(s, text, a, b, x) : NULL;
+    if (!x && !syntax && qd_ctx_status(s->ctx) != QD_ERR_NOMEM)
+        qd__ctx_restore(s->ctx, &first);
     return x;
 }
 

@@ -32,6 +32,27 @@ const char *qd_stop_str(qd_stop_code code) {
     return "unknown";
 }
 
+const char *qd_stop_name(qd_stop_code code) {
+    switch (code) {
+    case QD_STOP_NONE: return "none";
+    case QD_STOP_END: return "end";
+    case QD_STOP_EVENT: return "event";
+    case QD_STOP_CONTACT: return "contact";
+    case QD_STOP_CALLBACK: return "callback";
+    case QD_STOP_REFUSED: return "refused";
+    case QD_STOP_STEP_UNDERFLOW: return "step_underflow";
+    case QD_STOP_NO_CONVERGENCE: return "no_convergence";
+    case QD_STOP_SOLVER_FAILURE: return "solver_failure";
+    case QD_STOP_STEP_LIMIT: return "step_limit";
+    case QD_STOP_SINGULAR: return "singular";
+    case QD_STOP_PROJECTION: return "projection";
+    case QD_STOP_NONFINITE: return "nonfinite";
+    case QD_STOP_PAINLEVE: return "painleve";
+    case QD_STOP_FAILURE: return "failure";
+    }
+    return "unknown";
+}
+
 bool qd_stop_ok(qd_stop_code code) {
     return code == QD_STOP_END || code == QD_STOP_EVENT || code == QD_STOP_CONTACT;
 }

@@ -15,27 +15,6 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-const char *qd_stop_name(qd_stop_code code) {
-    switch (code) {
-    case QD_STOP_NONE: return "none";
-    case QD_STOP_END: return "end";
-    case QD_STOP_EVENT: return "event";
-    case QD_STOP_CONTACT: return "contact";
-    case QD_STOP_CALLBACK: return "callback";
-    case QD_STOP_REFUSED: return "refused";
-    case QD_STOP_STEP_UNDERFLOW: return "step_underflow";
-    case QD_STOP_NO_CONVERGENCE: return "no_convergence";
-    case QD_STOP_SOLVER_FAILURE: return "solver_failure";
-    case QD_STOP_STEP_LIMIT: return "step_limit";
-    case QD_STOP_SINGULAR: return "singular";
-    case QD_STOP_PROJECTION: return "projection";
-    case QD_STOP_NONFINITE: return "nonfinite";
-    case QD_STOP_PAINLEVE: return "painleve";
-    case QD_STOP_FAILURE: return "failure";
-    }
-    return "unknown";
-}
-
 static bool report_ok(const qd_sim_report *r) {
     return r && r->s && r->opts && r->stats;
 }
@@ -150,8 +129,8 @@ static void number_or_null(qd_json *j, double x) {
         qd_json_null(j);
 }
 
-static void json_stop(qd_json *j, const qd_sim_stop *stop) {
-    qd_json_key(j, "stop");
+void qd_sim_stop_json(qd_json *j, const qd_sim_stop *stop) {
+    QD_ARGS(, j && stop);
     qd_json_begin_object(j);
     qd_json_key(j, "code");
     qd_json_string(j, qd_stop_name(stop->code));
@@ -283,8 +262,10 @@ static void json_out(qd_json *j, const qd_sim_report *r) {
     qd_json_number(j, (double)st->events);
     if (st->events_unresolved)
         json_unresolved(j, st);
-    if (st->stop.code != QD_STOP_END)
-        json_stop(j, &st->stop);
+    if (st->stop.code != QD_STOP_END) {
+        qd_json_key(j, "stop");
+        qd_sim_stop_json(j, &st->stop);
+    }
     if (qd_model_nimpacts(s->model))
         json_impacts(j, r);
     if (qd_sim_ncontacts(s))

@@ -96,17 +96,8 @@ qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_sweep_ou
     qd_json_end_array(&j);
     qd_json_key(&j, "stop");
     qd_json_begin_array(&j);
-    for (size_t k = 0; k < w->nruns; k++) {
-        const qd_sim_stop *s = &outcome[k].stop;
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "reason");
-        qd_json_string(&j, qd_stop_str(s->code));
-        qd_json_key(&j, "t");
-        number_or_null(&j, s->t);
-        qd_json_key(&j, "value");
-        number_or_null(&j, s->value);
-        qd_json_end_object(&j);
-    }
+    for (size_t k = 0; k < w->nruns; k++)
+        qd_sim_stop_json(&j, &outcome[k].stop);
     qd_json_end_array(&j);
     qd_json_end_object(&j);
     qd_buf_puts(out, "\n");

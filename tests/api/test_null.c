@@ -2689,6 +2689,16 @@ static void null_model(void **state)
     /* name NULL */
     assert_null(qd_model_definition(F.model, NULL));
     reset(&F);
+    /* ---- qd_model_read_expr */
+    /* ctx NULL */
+    assert_null(qd_model_read_expr(NULL, F.model, "q", 1, 1));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_model_read_expr(F.ctx, NULL, "q", 1, 1));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_model_read_expr(F.ctx, F.model, NULL, 1, 1));
+    reset(&F);
     /* ---- qd_model_where */
     /* m NULL */
     assert_true(qd_model_where(NULL, "q", NULL) == 0);
@@ -4676,6 +4686,10 @@ static void null_sim(void **state)
     reset(&F);
     /* ---- qd_stop_name */
     /* no pointer argument */
+    /* ---- qd_sim_stop_json */
+    /* j NULL */
+    qd_sim_stop_json(NULL, NULL);
+    reset(&F);
     /* ---- qd_sim_summary_print */
     /* r NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_summary_print(NULL, "q", &F.buf));

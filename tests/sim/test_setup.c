@@ -5,7 +5,11 @@
  * period given as text in the parameters, its energy (a definition) kept
  * and its rate 0, the first downward zero of x at t = (pi - atan 4)/2;
  * Desloge ch. 78's H = p^2 - q with the momentum given (q = 2 p0 t + t^2,
- * p = p0 + t); and the errors located in the text they are about.
+ * p = p0 + t); and the errors located in the text they are about.  A
+ * vector definition read by component (qd_model_read_expr behind
+ * qd_sim_setup_read): the circular orbit r = 1 of V = k r^2/2 with theta' =
+ * sqrt(k/m) = 1 has P = (cos t, sin t), |P'|^2 = 1 and P'.x = -sin t, and
+ * an event on P.x = 0 finds t = pi/2.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -171,8 +175,61 @@ static void test_errors(void **state) {
     qd_ctx_free(ctx);
 }
 
+typedef struct orbit_rows {
+    size_t ncols, events;
+    double worst, event_t;
+} orbit_rows;
+
+/* columns: t, r, theta, r', theta', energy, P.x, P'.x, dot(P', P') */
+static int orbit_sink(void *data, int event, const double *row) {
+    orbit_rows *r = data;
+    const double *o = row + r->ncols - 3, t = row[0];
+    double e = fmax(fabs(o[0] - cos(t)), fmax(fabs(o[1] + sin(t)), fabs(o[2] - 1)));
+    r->worst = fmax(r->worst, e);
+    if (event == 0 && r->events++ == 0)
+        r->event_t = t;
+    return 0;
+}
+
+static void test_vector_components(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = qd_model_parse(ctx, "coordinates r, theta\nparameters m = 1, k = 1\n"
+                                      "P = (r*cos(theta), r*sin(theta), 0)\nparticle m at P\n"
+                                      "V = k/2*r^2\n", NULL);
+    assert_non_null(m);
+    qd_sim_setup *s = qd_sim_setup_new(ctx, m, false);
+    assert_non_null(s);
+    assert_int_equal(qd_sim_setup_initial(s, "r = 1, theta' = 1"), QD_OK);
+    assert_int_equal(qd_sim_setup_outputs(s, "P.x, P'.x, dot(P', P')"), QD_OK);
+    assert_int_equal(qd_sim_setup_event(s, "P.x = 0", false), QD_OK);
+    qd_sim_setup_opts so = {.t_end = "3", .rtol = "1e-12", .atol = "1e-14"};
+    qd_sim_opts o;
+    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_OK);
+    orbit_rows r = {.ncols = qd_sim_columns(qd_sim_setup_sim(s), o.method, NULL, 0)};
+    qd_sim_stats st;
+    assert_int_equal(qd_sim_run(qd_sim_setup_sim(s), &o, orbit_sink, &r, &st, NULL), QD_OK);
+    assert_true(r.worst < 1e-9);
+    assert_int_equal(r.events, 1);
+    assert_true(fabs(r.event_t - PI / 2) < 1e-9);
+    /* a component that is none, and a vector where a scalar is needed: located */
+    const char *bad = "P.w";
+    assert_null(qd_sim_setup_read(s, bad, 0, strlen(bad)));
+    assert_true(qd_ctx_diag(ctx)->located && qd_ctx_diag(ctx)->offset == 2);
+    assert_non_null(strstr(qd_ctx_message(ctx), "component"));
+    qd_ctx_clear_error(ctx);
+    const char *vec = "1 + sin(P)";
+    assert_null(qd_model_read_expr(ctx, m, vec, 0, strlen(vec)));
+    assert_non_null(strstr(qd_ctx_message(ctx), "a vector where a scalar is needed"));
+    qd_ctx_clear_error(ctx);
+    qd_sim_setup_free(s);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_vector_components),
         cmocka_unit_test(test_oscillator),
         cmocka_unit_test(test_hamilton),
         cmocka_unit_test(test_errors),

@@ -219,6 +219,8 @@ static void test_write(void **state) {
     assert_non_null(strstr(text, "\"reason\": \"singular equations\""));
     assert_non_null(strstr(text, "\"reason\": \"reached the end time\""));
     assert_non_null(strstr(text, "\"t\": 1.5"));
+    assert_non_null(strstr(text, "\"code\": \"singular\""));
+    assert_non_null(strstr(text, "\"ok\": false"));
     qd_buf_free(&b);
     qd_sweep_free(w);
     sf_free(f);
