@@ -8,8 +8,6 @@
  */
 #include "linear_cli.h"
 
-#include <ctype.h>
-#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -124,78 +122,29 @@ int cli_lin_coords(cli_lin_run *r, const char *what, const char *text, double *q
 
 /* ---- --box ------------------------------------------------------------------ */
 
-/* text[a, b) trimmed. */
-static void trim(const char *text, size_t *a, size_t *b) {
-    while (*a < *b && isspace((unsigned char)text[*a]))
-        (*a)++;
-    while (*b > *a && isspace((unsigned char)text[*b - 1]))
-        (*b)--;
-}
-
-/* One NAME=LOW:HIGH of --box, text[a, b): the ends are constant
- * expressions in the parameters (-pi:pi). */
-static int box_item(cli_lin_run *r, const char *text, size_t a, size_t b, double *lo,
-                    double *hi, bool *seen) {
-    const char *eq = memchr(text + a, '=', b - a);
-    size_t v = eq ? (size_t)(eq - text) + 1 : b, colon = v;
-    while (colon < b && text[colon] != ':')
-        colon++;
-    size_t na = a, nb = eq ? v - 1 : b;
-    trim(text, &na, &nb);
-    if (!eq || colon == b || na == nb) {
-        cli_diag_error("--box takes NAME=LOW:HIGH items, not '%.*s'", (int)(b - a), text + a);
-        return QD_EXIT_USAGE;
-    }
-    const qd_model *m = r->mf.model;
-    size_t nq = qd_model_ncoords(m), i = 0;
-    while (i < nq && (strlen(qd_expr_name(qd_model_coord(m, i))) != nb - na ||
-                      strncmp(qd_expr_name(qd_model_coord(m, i)), text + na, nb - na)))
-        i++;
-    const char *name = i < nq ? qd_expr_name(qd_model_coord(m, i)) : NULL;
-    size_t j = i < nq ? eom_index(r, i) : 0;
-    if (!name) {
-        cli_diag_error("--box: '%.*s' is not a coordinate", (int)(nb - na), text + na);
-        return QD_EXIT_USAGE;
-    }
-    if (j == r->e->n) {
-        cli_diag_error("--box: %s is not an independent coordinate here (a constraint "
-                       "eliminates it)", name);
-        return QD_EXIT_USAGE;
-    }
-    if (seen[j]) {
-        cli_diag_error("--box: %s is given twice", name);
-        return QD_EXIT_USAGE;
-    }
-    seen[j] = true;
-    const qd_expr *x;
-    if (qd_state_value(r->ctx, m, text, v, colon - v, &x, &lo[j]) != QD_OK ||
-        qd_state_value(r->ctx, m, text, colon + 1, b - colon - 1, &x, &hi[j]) != QD_OK)
-        return cli_state_diag(r->ctx, "--box", text);
-    if (!(lo[j] < hi[j])) {
-        cli_diag_error("--box: the range of %s is empty", name);
-        return QD_EXIT_USAGE;
-    }
-    if (!isfinite(hi[j] - lo[j])) {
-        cli_diag_error("--box: the range of %s is too wide: its width %g - (%g) overflows a "
-                       "double", name, hi[j], lo[j]);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
+/* "q1=A:B, ...": the state reader's ranges (located errors), by slot, put at
+ * the equations' coordinates. */
 int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi) {
-    bool *seen = calloc(r->e->n + 1, sizeof *seen);
-    if (!seen)
-        return QD_EXIT_FAIL;
-    int rc = QD_EXIT_OK;
-    for (size_t i = 0; text[i] && rc == QD_EXIT_OK;) {
-        size_t end = qd_state_item_end(text, i), a = i, b = end;
-        trim(text, &a, &b);
-        if (a < b)
-            rc = box_item(r, text, i, end, lo, hi, seen);
-        i = text[end] ? end + 1 : end;
-    }
-    free(seen);
+    size_t ns = r->st.n;
+    double *l = malloc((ns + 1) * sizeof *l), *h = malloc((ns + 1) * sizeof *h);
+    bool *given = calloc(ns + 1, sizeof *given);
+    int rc = l && h && given ? QD_EXIT_OK : QD_EXIT_FAIL;
+    if (rc != QD_EXIT_OK)
+        cli_diag_error("out of memory");
+    qd_state_read_opts o = {
+        .refuse = QD_STATE_TIME | QD_STATE_PARAMS | QD_STATE_VELOCITIES | QD_STATE_EXTRA,
+        .independent = r->e->q, .nindependent = r->e->n, .given = given};
+    if (rc == QD_EXIT_OK && qd_state_read_ranges(r->ctx, r->mf.model, &r->st, text, &o, l, h) !=
+                                QD_OK)
+        rc = cli_state_diag(r->ctx, "--box", text);
+    for (size_t j = 0; rc == QD_EXIT_OK && j < r->e->n; j++)
+        if (given[r->slot[j]]) {
+            lo[j] = l[r->slot[j]];
+            hi[j] = h[r->slot[j]];
+        }
+    free(l);
+    free(h);
+    free(given);
     return rc;
 }
 

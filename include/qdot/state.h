@@ -109,6 +109,17 @@ typedef struct qd_state_read_opts {
 QD_API qd_status qd_state_read(qd_ctx *ctx, const qd_model *m, qd_state *st, const char *text,
                                const qd_state_read_opts *opts);
 
+/* The same list with a range for each value, "x=-1:1, theta=-pi:pi" (a
+ * search box): the names resolved as qd_state_read resolves them (opts'
+ * refusals and independent coordinates, "did you mean"), each range read by
+ * qd_state_range into lo[slot] and hi[slot] (st->n entries each; the slots
+ * not named untouched; opts->given marks the named ones, opts->exact is not
+ * written).  An empty range (A >= B) or one wider than a double holds is an
+ * error; every error is located in text.  st is only looked up. */
+QD_API qd_status qd_state_read_ranges(qd_ctx *ctx, const qd_model *m, const qd_state *st,
+                                      const char *text, const qd_state_read_opts *opts,
+                                      double *lo, double *hi);
+
 /* One value, text[start, start + len): a constant expression in pi, e and
  * m's parameters (m NULL: in pi and e alone), as qd_state_read reads a
  * VALUE, with errors located in text.  *exact the expression as read (a

@@ -350,9 +350,11 @@ static bool blank(const char *s, size_t a, size_t b) {
     return a == b;
 }
 
-/* One NAME=VALUE, text[a, b). */
+/* One NAME=VALUE, text[a, b); with lo and hi (a range reader), NAME=A:B
+ * into lo[slot] and hi[slot]. */
 static qd_status read_item(qd_ctx *ctx, const qd_model *m, qd_state *st, const char *text,
-                           size_t a, size_t b, bool *seen, const qd_state_read_opts *o) {
+                           size_t a, size_t b, bool *seen, const qd_state_read_opts *o,
+                           double *lo, double *hi) {
     const char *eq = memchr(text + a, '=', b - a);
     size_t na = a, nb = eq ? (size_t)(eq - text) : b;
     while (na < nb && isspace((unsigned char)text[na]))
@@ -365,8 +367,8 @@ static qd_status read_item(qd_ctx *ctx, const qd_model *m, qd_state *st, const c
             ia++;
         while (ib > ia && isspace((unsigned char)text[ib - 1]))
             ib--;
-        return fail(ctx, text, ia, ib - ia, NULL, "expected NAME=VALUE, not '%.*s'",
-                    (int)(ib - ia), text + ia);
+        return fail(ctx, text, ia, ib - ia, NULL, "expected NAME=%s, not '%.*s'",
+                    lo ? "A:B" : "VALUE", (int)(ib - ia), text + ia);
     }
     size_t slot;
     qd_status s = resolve(ctx, m, st, text, na, nb - na, o, &slot);
@@ -377,6 +379,23 @@ static qd_status read_item(qd_ctx *ctx, const qd_model *m, qd_state *st, const c
                     text + na);
     seen[slot] = true;
     size_t v = (size_t)(eq + 1 - text);
+    if (lo) {
+        if ((s = qd_state_range(ctx, m, text, v, b - v, &lo[slot], &hi[slot])) != QD_OK)
+            return s;
+        size_t va = v, vb = b;
+        while (va < vb && isspace((unsigned char)text[va]))
+            va++;
+        while (vb > va && isspace((unsigned char)text[vb - 1]))
+            vb--;
+        if (!(lo[slot] < hi[slot]) || !isfinite(hi[slot] - lo[slot]))
+            return fail(ctx, text, va, vb - va, "give A < B, both finite and their difference too",
+                        "the range of %.*s is %s", (int)(nb - na), text + na,
+                        lo[slot] < hi[slot] ? "too wide: its width overflows a double"
+                                            : "empty");
+        if (o && o->given)
+            o->given[slot] = true;
+        return QD_OK;
+    }
     const qd_expr *exact;
     double val;
     if ((s = qd_state_value(ctx, m, text, v, b - v, &exact, &val)) != QD_OK)
@@ -389,9 +408,24 @@ static qd_status read_item(qd_ctx *ctx, const qd_model *m, qd_state *st, const c
     return QD_OK;
 }
 
+static qd_status read_list(qd_ctx *ctx, const qd_model *m, qd_state *st, const char *text,
+                           const qd_state_read_opts *opts, double *lo, double *hi);
+
 qd_status qd_state_read(qd_ctx *ctx, const qd_model *m, qd_state *st, const char *text,
                         const qd_state_read_opts *opts) {
     QD_ARGS_CTX(ctx, m && st && st->syms && st->vals && text);
+    return read_list(ctx, m, st, text, opts, NULL, NULL);
+}
+
+qd_status qd_state_read_ranges(qd_ctx *ctx, const qd_model *m, const qd_state *st,
+                               const char *text, const qd_state_read_opts *opts, double *lo,
+                               double *hi) {
+    QD_ARGS_CTX(ctx, m && st && st->syms && st->vals && text && lo && hi);
+    return read_list(ctx, m, (qd_state *)st, text, opts, lo, hi); /* st is only looked up */
+}
+
+static qd_status read_list(qd_ctx *ctx, const qd_model *m, qd_state *st, const char *text,
+                           const qd_state_read_opts *opts, double *lo, double *hi) {
     if (st->n < qd_slot_time(qd_model_ncoords(m)) + 1) {
         qd_ctx_error(ctx, QD_ERR_ARG, "qd_state_read: the state has fewer slots than the "
                                       "model's coordinates, velocities and t");
@@ -406,7 +440,7 @@ qd_status qd_state_read(qd_ctx *ctx, const qd_model *m, qd_state *st, const char
     for (size_t i = 0; text[i] && s == QD_OK;) {
         size_t end = qd_state_item_end(text, i);
         if (!blank(text, i, end))
-            s = read_item(ctx, m, st, text, i, end, seen, opts);
+            s = read_item(ctx, m, st, text, i, end, seen, opts, lo, hi);
         i = text[end] ? end + 1 : end;
     }
     free(seen);

@@ -5150,6 +5150,25 @@ static void null_state(void **state)
     /* text NULL */
     assert_int_equal(QD_ERR_ARG, qd_state_read(F.ctx, F.model, NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_state_read_ranges */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_ranges(NULL, F.model, NULL, "q", NULL, F.d, F.d));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_ranges(F.ctx, NULL, NULL, "q", NULL, F.d, F.d));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_ranges(F.ctx, F.model, NULL, "q", NULL, F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_ranges(F.ctx, F.model, NULL, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* lo NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_ranges(F.ctx, F.model, NULL, "q", NULL, NULL, F.d));
+    reset(&F);
+    /* hi NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_ranges(F.ctx, F.model, NULL, "q", NULL, F.d, NULL));
+    reset(&F);
     /* ---- qd_state_value */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_state_value(NULL, F.model, "q", 1, 1, (const qd_expr * *)F.e, F.d));

@@ -82,7 +82,7 @@ CASES = [
      "rate theta' is given twice"),
     (['stability', POWER, '--ignore', 'theta', '--momentum', 'p_theta=1, p_theta=2'], USAGE,
      'p_theta is given twice'),
-    (['equilibria', COMPOUND, '--box', 'theta=0:1, theta=1:2'], USAGE, 'theta is given twice'),
+    (['equilibria', COMPOUND, '--box', 'theta=0:1, theta=1:2'], USAGE, "'theta' is given twice"),
     # was: --at r=r evaluated the coordinate at 0 ("equations not defined")
     (['stability', POWER, '--ignore', 'theta', '--at', 'r=r'], USAGE,
      "takes only pi, e and the model's parameters"),

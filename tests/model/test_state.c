@@ -235,6 +235,42 @@ static void nulls(void **state) {
     qd_ctx_clear_error(f->ctx);
 }
 
+/* A search box: ranges by name, in the parameters (theta = -pi:pi, r =
+ * 0:4 r0 = 0:1), at the slots of the coordinates; the rest untouched; an
+ * empty range, a second range of one name and a plain value are located. */
+static void ranges(void **state) {
+    fx *f = *state;
+    size_t n = f->st.n;
+    double lo[16], hi[16];
+    bool given[16] = {false};
+    assert_true(n <= 16);
+    for (size_t k = 0; k < n; k++)
+        lo[k] = hi[k] = -7;
+    qd_state_read_opts o = {.refuse = QD_STATE_TIME | QD_STATE_PARAMS | QD_STATE_VELOCITIES,
+                            .given = given};
+    assert_int_equal(qd_state_read_ranges(f->ctx, f->m, &f->st, "theta=-pi:pi, r = 0:4*r0", &o,
+                                          lo, hi), QD_OK);
+    assert_true(lo[0] == -PI && hi[0] == PI && lo[1] == 0 && hi[1] == 1);
+    assert_true(given[0] && given[1] && !given[2] && lo[2] == -7);
+    const char *empty = "theta = 1:0";
+    assert_int_not_equal(qd_state_read_ranges(f->ctx, f->m, &f->st, empty, &o, lo, hi), QD_OK);
+    assert_non_null(strstr(qd_ctx_message(f->ctx), "empty"));
+    assert_int_equal(qd_ctx_diag(f->ctx)->offset, 8);
+    qd_ctx_clear_error(f->ctx);
+    const char *twice = "r=0:1, r=1:2";
+    assert_int_not_equal(qd_state_read_ranges(f->ctx, f->m, &f->st, twice, &o, lo, hi), QD_OK);
+    assert_int_equal(qd_ctx_diag(f->ctx)->offset, 7);
+    qd_ctx_clear_error(f->ctx);
+    const char *value = "r=1";
+    assert_int_not_equal(qd_state_read_ranges(f->ctx, f->m, &f->st, value, &o, lo, hi), QD_OK);
+    assert_non_null(strstr(qd_ctx_message(f->ctx), "expected a range A:B"));
+    qd_ctx_clear_error(f->ctx);
+    const char *vel = "r'=0:1";
+    assert_int_not_equal(qd_state_read_ranges(f->ctx, f->m, &f->st, vel, &o, lo, hi), QD_OK);
+    assert_int_equal(qd_ctx_diag(f->ctx)->offset, 0);
+    qd_ctx_clear_error(f->ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(layout, setup, teardown),
@@ -244,6 +280,7 @@ int main(void) {
         cmocka_unit_test_setup_teardown(bad_items, setup, teardown),
         cmocka_unit_test_setup_teardown(refusals, setup, teardown),
         cmocka_unit_test_setup_teardown(values, setup, teardown),
+        cmocka_unit_test_setup_teardown(ranges, setup, teardown),
         cmocka_unit_test_setup_teardown(nulls, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
