@@ -41,6 +41,8 @@ QD_API void qd_json_end_array(qd_json *j);
 QD_API void qd_json_key(qd_json *j, const char *key);
 QD_API void qd_json_string(qd_json *j, const char *s); /* null for NULL */
 QD_API bool qd_json_number(qd_json *j, double v); /* false for NaN and infinities */
+/* v, or null where v is not finite (NaN: none, as a measure with no value). */
+QD_API void qd_json_number_or_null(qd_json *j, double v);
 QD_API void qd_json_bool(qd_json *j, bool v);
 QD_API void qd_json_null(qd_json *j);
 /* An expression as a string in the text format; null for NULL. */

@@ -142,12 +142,9 @@ qd_status qd_field_modes_print(qd_ctx *ctx, const qd_field *f, const qd_field_mo
     return done(ctx, b, NULL);
 }
 
-/* A number, or null where there is none (NaN). */
+/* A number, or null where there is none. */
 static void number_or_null(qd_json *j, bool has, double x) {
-    if (has)
-        qd_json_number(j, x);
-    else
-        qd_json_null(j);
+    qd_json_number_or_null(j, has ? x : NAN);
 }
 
 qd_status qd_field_modes_json(qd_ctx *ctx, const qd_field *f, const qd_field_modes *r,

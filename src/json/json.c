@@ -184,6 +184,14 @@ bool qd_json_matrix(qd_json *j, const char *key, size_t rows, size_t cols, const
     return ok;
 }
 
+void qd_json_number_or_null(qd_json *j, double v) {
+    QD_ARGS(, j);
+    if (isfinite(v))
+        qd_json_number(j, v);
+    else
+        qd_json_null(j);
+}
+
 bool qd_json_vector(qd_json *j, const char *key, size_t n, const double *x) {
     QD_ARGS(false, j && (x || !n));
     bool ok = true;

@@ -120,15 +120,6 @@ qd_status qd_sim_summary_print(const qd_sim_report *r, const char *prefix, qd_bu
 
 /* ---- JSON ------------------------------------------------------------------- */
 
-/* A number of the stop record, NaN where none (or the non-finite number
- * that stopped the run): null then. */
-static void number_or_null(qd_json *j, double x) {
-    if (isfinite(x))
-        qd_json_number(j, x);
-    else
-        qd_json_null(j);
-}
-
 void qd_sim_stop_json(qd_json *j, const qd_sim_stop *stop) {
     QD_ARGS(, j && stop);
     qd_json_begin_object(j);
@@ -139,9 +130,9 @@ void qd_sim_stop_json(qd_json *j, const qd_sim_stop *stop) {
     qd_json_key(j, "ok");
     qd_json_bool(j, qd_stop_ok(stop->code));
     qd_json_key(j, "t");
-    number_or_null(j, stop->t);
+    qd_json_number_or_null(j, stop->t);
     qd_json_key(j, "value");
-    number_or_null(j, stop->value);
+    qd_json_number_or_null(j, stop->value);
     qd_json_end_object(j);
 }
 

@@ -60,14 +60,6 @@ qd_status qd_sweep_csv(const qd_sweep *w, const double *rows, const qd_sweep_out
     return out->failed ? QD_ERR_NOMEM : QD_OK;
 }
 
-/* A number, or null where NaN (none). */
-static void number_or_null(qd_json *j, double x) {
-    if (isfinite(x))
-        qd_json_number(j, x);
-    else
-        qd_json_null(j);
-}
-
 qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_sweep_outcome *outcome,
                         qd_buf *out) {
     QD_ARGS(QD_ERR_ARG, w && (rows || !w->nruns) && (outcome || !w->nruns) && out);
@@ -85,7 +77,7 @@ qd_status qd_sweep_json(const qd_sweep *w, const double *rows, const qd_sweep_ou
     for (size_t k = 0; k < w->nruns; k++) {
         qd_json_begin_array(&j);
         for (size_t c = 0; c < w->ncols; c++)
-            number_or_null(&j, rows[k * w->ncols + c]);
+            qd_json_number_or_null(&j, rows[k * w->ncols + c]);
         qd_json_end_array(&j);
     }
     qd_json_end_array(&j);

@@ -1989,6 +1989,10 @@ static void null_json(void **state)
     /* j NULL */
     assert_true(qd_json_number(NULL, 1) == 0);
     reset(&F);
+    /* ---- qd_json_number_or_null */
+    /* j NULL */
+    qd_json_number_or_null(NULL, 1);
+    reset(&F);
     /* ---- qd_json_bool */
     /* j NULL */
     qd_json_bool(NULL, false);
