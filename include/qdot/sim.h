@@ -155,6 +155,15 @@ QD_API qd_status qd_sim_inputs_ready(qd_sim *s, double t0, double t_end);
 QD_API qd_status qd_sim_input_expr(qd_sim *s, const char *name, const qd_expr *x);
 QD_API qd_status qd_sim_input_table(qd_sim *s, const char *name, size_t n, const double *t,
                                     const double *v);
+/* Input name's table read from text[0, len), the text of a CSV file: rows
+ * "t,value" (blanks around the numbers and a CR before the newline taken;
+ * blank lines skipped; a first line that is not two numbers is a header),
+ * then qd_sim_input_table (times increasing, two rows at least, linear
+ * interpolation).  *bad_line the 1-based line that is not a row, else 0.
+ * QD_ERR_ARG ("line N: expected \"t,value\"", or qd_sim_input_table's
+ * error), QD_ERR_NOMEM. */
+QD_API qd_status qd_sim_input_table_read(qd_sim *s, const char *name, const char *text,
+                                         size_t len, size_t *bad_line);
 QD_API qd_status qd_sim_input_callback(qd_sim *s, const char *name, qd_sim_input_fn fn,
                                        void *data);
 
