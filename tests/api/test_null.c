@@ -4563,6 +4563,19 @@ static void null_sim(void **state)
     /* v NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_input_table(F.sim, "q", 1, F.d, NULL));
     reset(&F);
+    /* ---- qd_sim_input_table_read */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(NULL, "q", "q", 1, F.z));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(F.sim, NULL, "q", 1, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(F.sim, "q", NULL, 1, F.z));
+    reset(&F);
+    /* bad_line NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(F.sim, "q", "q", 1, NULL));
+    reset(&F);
     /* ---- qd_sim_input_callback */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_input_callback(NULL, "q", NULL, NULL));
@@ -4806,6 +4819,36 @@ static void null_simsetup(void **state)
     /* ---- qd_sim_setup_native */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_native(NULL, NULL, F.c, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_lqr */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", "q", "q", (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, NULL, "q", "q", (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* about NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", NULL, "q", (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* weights NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", "q", NULL, (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_sim_lqr_note */
+    /* l NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_lqr_note(NULL, "q", &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_lqr_note(NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_lqr_note(NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_sim_lqr_free */
+    /* l NULL */
+    qd_sim_lqr_free(NULL);
     reset(&F);
     teardown(&F);
 }
