@@ -128,28 +128,6 @@ static int sink(void *data, int event, const double *row) {
     return cli_interrupted(); /* ^C: stop after a whole row */
 }
 
-/* --plot with --format json: the file and the axes' ranges drawn, so a
- * caller can place more on the picture. */
-static void plot_json(qd_json *j, const char *file, size_t npanels, const double *range) {
-    qd_json_key(j, "plot");
-    qd_json_begin_object(j);
-    qd_json_key(j, "file");
-    qd_json_string(j, file);
-    qd_json_key(j, "panels");
-    qd_json_begin_array(j);
-    static const char *const keys[] = {"x0", "x1", "y0", "y1"};
-    for (size_t g = 0; g < npanels; g++) {
-        qd_json_begin_object(j);
-        for (int k = 0; k < 4; k++) {
-            qd_json_key(j, keys[k]);
-            qd_json_number(j, range[4 * g + (size_t)k]);
-        }
-        qd_json_end_object(j);
-    }
-    qd_json_end_array(j);
-    qd_json_end_object(j);
-}
-
 /* ---- --variational ------------------------------------------------------------- */
 
 static qd_lyap *flow_model(const cli_sim *c) {
@@ -310,13 +288,9 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     /* a step can span a swing: without --dt a picture alone samples the
      * dense output; rows written (--out, --format json) are never changed
      * by --plot, which then draws those rows (issue 36) */
-    if (a->plot.file && !a->out && !a->json && !a->dt &&
-        qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
-        c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
-    sim_out o = {.ncols = ncols,
-                 .events = a->events.n + a->stops.n > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
-                           qd_sim_ncontacts(c->s) > 0,
-                 .t0 = c->opts.t0,
+    if (a->plot.file && !a->out && !a->json)
+        qd_sim_opts_sample(&c->opts, 1000);
+    sim_out o = {.ncols = ncols, .events = qd_sim_event_column(c->s), .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .names = names, .line = line};
     FILE *file = NULL;
     int orc = QD_EXIT_OK;
@@ -337,13 +311,7 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     if (picture_only)
         o.csv = NULL;
     else if (!o.csv) {
-        qd_json_key(&j, "columns");
-        qd_json_begin_array(&j);
-        for (size_t i = 0; i < ncols; i++)
-            qd_json_string(&j, names[i]);
-        if (o.events)
-            qd_json_string(&j, "event");
-        qd_json_end_array(&j);
+        qd_sim_columns_json(&j, c->s, c->opts.method); /* a failure is said at the end */
         qd_json_key(&j, "rows");
         qd_json_begin_array(&j);
         o.json = &j;
@@ -390,7 +358,7 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
             if (sa)
                 qd_flow_json(&j, &f, c->e, fopts.method, sa->period);
             if (a->plot.file)
-                plot_json(&j, a->plot.file, pick.npanels, range);
+                qd_sim_plot_json(&j, a->plot.file, pick.npanels, range);
             qd_json_end_object(&j);
             if (qd_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));

@@ -518,6 +518,31 @@ QD_API qd_status qd_sim_summary_print(const qd_sim_report *r, const char *prefix
  * qd_json_ok), QD_ERR_NOMEM when memory ran out. */
 QD_API qd_status qd_sim_summary_json(qd_json *j, const qd_sim_report *r);
 
+/* ---- the rows as `qdot simulate` writes them (src/sim/rows.c) ----------- */
+
+/* Whether a run of s gives its rows an event column (the sink's event >= 0
+ * for some rows): s has events (qd_sim_add_event, stops included), its
+ * model impacts, or friction contacts.  Written as event + 1, 0 for a row
+ * of the grid. */
+QD_API bool qd_sim_event_column(const qd_sim *s);
+/* "columns": the names qd_sim_columns gives for method, and "event" after
+ * them when qd_sim_event_column: the key and array into j's open object.
+ * QD_ERR_NOMEM when memory ran out (j's buffer failed), QD_ERR_NUMERIC
+ * when j refused a number, QD_ERR_ARG when j was already too deep. */
+QD_API qd_status qd_sim_columns_json(qd_json *j, const qd_sim *s, qd_sim_method method);
+/* A run drawn and not written: an adaptive method's rows are its steps,
+ * which can span a swing, so unless o has an output grid (dt > 0) or a
+ * fixed step its dense output is sampled at rows points, dt = (t_end -
+ * t0) / rows.  Other options are left as they are. */
+QD_API void qd_sim_opts_sample(qd_sim_opts *o, size_t rows);
+/* "plot": the picture of a run (qd_plot_run) written to file: {"file",
+ * "panels": [{"x0", "x1", "y0", "y1"}, ...]}, each panel's axis ranges
+ * (range[4 g + 0..3], npanels panels, as qd_plot_ranges gives them), so a
+ * caller can place more on the picture (a range not finite: QD_ERR_NUMERIC,
+ * j failed).  QD_ERR_NOMEM and QD_ERR_ARG as above. */
+QD_API qd_status qd_sim_plot_json(qd_json *j, const char *file, size_t npanels,
+                                  const double *range);
+
 #ifdef __cplusplus
 }
 #endif

@@ -4703,6 +4703,31 @@ static void null_sim(void **state)
     /* j NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_summary_json(NULL, NULL));
     reset(&F);
+    /* ---- qd_sim_event_column */
+    /* s NULL */
+    assert_true(qd_sim_event_column(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_columns_json */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_columns_json(NULL, F.sim, (qd_sim_method){0}));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_columns_json(NULL, NULL, (qd_sim_method){0}));
+    reset(&F);
+    /* ---- qd_sim_opts_sample */
+    /* o NULL */
+    qd_sim_opts_sample(NULL, 1);
+    reset(&F);
+    /* ---- qd_sim_plot_json */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_plot_json(NULL, "q", 1, F.d));
+    reset(&F);
+    /* file NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_plot_json(NULL, NULL, 1, F.d));
+    reset(&F);
+    /* range NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_plot_json(NULL, "q", 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
