@@ -409,18 +409,11 @@ int cli_cmd_simulate(int argc, char **argv) {
     free(args);
     a.json = sa.format && !strcmp(sa.format, "json");
     sa.variational = !sa.variational_mode ? 0 : !strcmp(sa.variational_mode, "columns") ? 2 : 1;
-    if (rc == QD_EXIT_OK && sa.period_text) {
-        char *end;
-        sa.period = strtod(sa.period_text, &end);
-        if (end == sa.period_text || *end || !(sa.period > 0) || !isfinite(sa.period)) {
-            cli_diag_error("--period takes a positive time, not '%s'", sa.period_text);
-            return QD_EXIT_USAGE;
-        }
+    if (rc == QD_EXIT_OK && sa.period_text)
         sa.variational = sa.variational ? sa.variational : 1;
-    }
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&a.plot, "simulate");
-    if (rc == QD_EXIT_OK && sa.period > 0) {
+    if (rc == QD_EXIT_OK && sa.period_text) {
         if (a.t_end) {
             cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to "
                            "t0 + T)");
@@ -436,8 +429,15 @@ int cli_cmd_simulate(int argc, char **argv) {
         return rc;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &a);
-    if (rc == QD_EXIT_OK && sa.period > 0)
-        c.opts.t_end = c.opts.t0 + sa.period;
+    if (rc == QD_EXIT_OK && sa.period_text) {
+        if (qd_sim_setup_period(c.set, sa.period_text, &c.opts, &sa.period) != QD_OK &&
+            qd_ctx_diag(c.ctx)->located) {
+            cli_diag_show("--period", sa.period_text, qd_ctx_diag(c.ctx));
+            rc = cli_exit(qd_ctx_status(c.ctx));
+        } else if (!(sa.period > 0)) {
+            rc = cli_diag_ctx(c.ctx);
+        }
+    }
     if (rc == QD_EXIT_OK && sa.variational == 2)
         rc = run_columns(&c, &a);
     else if (rc == QD_EXIT_OK)

@@ -132,6 +132,14 @@ typedef struct qd_sim_setup_opts {
 QD_API qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o,
                                       qd_sim_opts *out);
 
+/* A run over one period: T read from text (a constant expression in pi, e
+ * and the parameters, "2*pi*sqrt(l/g)"), positive, into *period, and
+ * out->t_end = out->t0 + T.  After qd_sim_setup_options (which gives t0 from the state; its
+ * t_end is then replaced).  QD_ERR_ARG (or the reader's QD_ERR_PARSE) with
+ * the error located in text; out untouched. */
+QD_API qd_status qd_sim_setup_period(qd_sim_setup *s, const char *text, qd_sim_opts *out,
+                                     double *period);
+
 /* --native: the compiled right-hand side of opts' method loaded when it can
  * take it (Lagrange's form, an adaptive method; the taylor recurrences in
  * double), else the compiled programs stay.  QD_OK either way unless out

@@ -4841,6 +4841,19 @@ static void null_simsetup(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_sim_setup_period */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, "q", (qd_sim_opts *)(void *)F.blob, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, NULL, (qd_sim_opts *)(void *)F.blob, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, "q", NULL, F.d));
+    reset(&F);
+    /* period NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, "q", (qd_sim_opts *)(void *)F.blob, NULL));
+    reset(&F);
     /* ---- qd_sim_setup_native */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_native(NULL, NULL, F.c, 1));
