@@ -128,28 +128,6 @@ static int sink(void *data, int event, const double *row) {
     return cli_interrupted(); /* ^C: stop after a whole row */
 }
 
-/* --plot with --format json: the file and the axes' ranges drawn, so a
- * caller can place more on the picture. */
-static void plot_json(qd_json *j, const char *file, size_t npanels, const double *range) {
-    qd_json_key(j, "plot");
-    qd_json_begin_object(j);
-    qd_json_key(j, "file");
-    qd_json_string(j, file);
-    qd_json_key(j, "panels");
-    qd_json_begin_array(j);
-    static const char *const keys[] = {"x0", "x1", "y0", "y1"};
-    for (size_t g = 0; g < npanels; g++) {
-        qd_json_begin_object(j);
-        for (int k = 0; k < 4; k++) {
-            qd_json_key(j, keys[k]);
-            qd_json_number(j, range[4 * g + (size_t)k]);
-        }
-        qd_json_end_object(j);
-    }
-    qd_json_end_array(j);
-    qd_json_end_object(j);
-}
-
 /* ---- --variational ------------------------------------------------------------- */
 
 static qd_lyap *flow_model(const cli_sim *c) {
@@ -310,13 +288,9 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     /* a step can span a swing: without --dt a picture alone samples the
      * dense output; rows written (--out, --format json) are never changed
      * by --plot, which then draws those rows (issue 36) */
-    if (a->plot.file && !a->out && !a->json && !a->dt &&
-        qd_sim_method_adaptive(c->opts.method) && !c->opts.fixed)
-        c->opts.dt = (c->opts.t_end - c->opts.t0) / 1000;
-    sim_out o = {.ncols = ncols,
-                 .events = a->events.n + a->stops.n > 0 || qd_model_nimpacts(c->mf.model) > 0 ||
-                           qd_sim_ncontacts(c->s) > 0,
-                 .t0 = c->opts.t0,
+    if (a->plot.file && !a->out && !a->json)
+        qd_sim_opts_sample(&c->opts, 1000);
+    sim_out o = {.ncols = ncols, .events = qd_sim_event_column(c->s), .t0 = c->opts.t0,
                  .t_end = c->opts.t_end, .names = names, .line = line};
     FILE *file = NULL;
     int orc = QD_EXIT_OK;
@@ -337,13 +311,7 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     if (picture_only)
         o.csv = NULL;
     else if (!o.csv) {
-        qd_json_key(&j, "columns");
-        qd_json_begin_array(&j);
-        for (size_t i = 0; i < ncols; i++)
-            qd_json_string(&j, names[i]);
-        if (o.events)
-            qd_json_string(&j, "event");
-        qd_json_end_array(&j);
+        qd_sim_columns_json(&j, c->s, c->opts.method); /* a failure is said at the end */
         qd_json_key(&j, "rows");
         qd_json_begin_array(&j);
         o.json = &j;
@@ -390,7 +358,7 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
             if (sa)
                 qd_flow_json(&j, &f, c->e, fopts.method, sa->period);
             if (a->plot.file)
-                plot_json(&j, a->plot.file, pick.npanels, range);
+                qd_sim_plot_json(&j, a->plot.file, pick.npanels, range);
             qd_json_end_object(&j);
             if (qd_json_ok(&j) && !jb.failed)
                 printf("%s\n", qd_buf_str(&jb));
@@ -441,18 +409,11 @@ int cli_cmd_simulate(int argc, char **argv) {
     free(args);
     a.json = sa.format && !strcmp(sa.format, "json");
     sa.variational = !sa.variational_mode ? 0 : !strcmp(sa.variational_mode, "columns") ? 2 : 1;
-    if (rc == QD_EXIT_OK && sa.period_text) {
-        char *end;
-        sa.period = strtod(sa.period_text, &end);
-        if (end == sa.period_text || *end || !(sa.period > 0) || !isfinite(sa.period)) {
-            cli_diag_error("--period takes a positive time, not '%s'", sa.period_text);
-            return QD_EXIT_USAGE;
-        }
+    if (rc == QD_EXIT_OK && sa.period_text)
         sa.variational = sa.variational ? sa.variational : 1;
-    }
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&a.plot, "simulate");
-    if (rc == QD_EXIT_OK && sa.period > 0) {
+    if (rc == QD_EXIT_OK && sa.period_text) {
         if (a.t_end) {
             cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to "
                            "t0 + T)");
@@ -468,8 +429,15 @@ int cli_cmd_simulate(int argc, char **argv) {
         return rc;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &a);
-    if (rc == QD_EXIT_OK && sa.period > 0)
-        c.opts.t_end = c.opts.t0 + sa.period;
+    if (rc == QD_EXIT_OK && sa.period_text) {
+        if (qd_sim_setup_period(c.set, sa.period_text, &c.opts, &sa.period) != QD_OK &&
+            qd_ctx_diag(c.ctx)->located) {
+            cli_diag_show("--period", sa.period_text, qd_ctx_diag(c.ctx));
+            rc = cli_exit(qd_ctx_status(c.ctx));
+        } else if (!(sa.period > 0)) {
+            rc = cli_diag_ctx(c.ctx);
+        }
+    }
     if (rc == QD_EXIT_OK && sa.variational == 2)
         rc = run_columns(&c, &a);
     else if (rc == QD_EXIT_OK)

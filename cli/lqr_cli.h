@@ -1,6 +1,6 @@
 /*
  * cli/lqr_cli.h - the LQR options of the qdot program over the library's
- * design (qdot/control.h): --lqr "Q = ..., R = ..." and --about on a model.
+ * design (qdot/control.h): --lqr "Q = ..., R = ..." on a model.
  */
 #ifndef QDOT_LQR_CLI_H
 #define QDOT_LQR_CLI_H
@@ -15,27 +15,16 @@
  * the exit status. */
 int cli_lqr_error(const qd_ctx *ctx, const char *opt, const char *text);
 
-/* An operating point "q=VALUE, q'=VALUE, F=VALUE, ..." (--about): exact
- * values for coordinates, velocities and inputs, read against the model in
- * ctx.  syms and vals share one block; cli_point_free releases it. */
-typedef struct cli_point {
-    size_t n, cap;
-    const qd_expr **syms, **vals;
-} cli_point;
-int cli_point_read(qd_ctx *ctx, const char *text, cli_point *pt);
-void cli_point_free(cli_point *pt);
-
 /* qd_lqr_design for the weights of --lqr: an exit status, the error
  * printed (a weight misread with a caret under it). */
 int cli_lqr_design(qd_ctx *ctx, const qd_statespace *s, const char *weights,
                    qd_care_result *out);
-/* qd_lqr_print on out; qd_lqr_json nested under the caller's key. */
+/* qd_lqr_print on out. */
 typedef enum cli_lqr_format {
     CLI_LQR_TEXT = QD_LQR_TEXT, CLI_LQR_JSON = QD_LQR_JSON, CLI_LQR_C = QD_LQR_C
 } cli_lqr_format;
 int cli_lqr_print_design(FILE *out, const qd_statespace *s, const qd_care_result *r,
                          cli_lqr_format fmt);
-int cli_lqr_json_design(qd_json *j, const qd_statespace *s, const qd_care_result *r);
 
 /* `qdot lqr` (cmd_lqr.c), declared here to leave cli.h to the other commands. */
 int cli_cmd_lqr(int argc, char **argv);

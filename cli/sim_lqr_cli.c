@@ -1,76 +1,35 @@
 /*
  * cli/sim_lqr_cli.c - `qdot simulate --input "F = lqr" --about "..." --lqr
- * "Q = ..., R = ..."`: the LQR feedback u = u0 - K (x - x0) about the
- * operating point (x0, u0), an expression in the state (qd_lqr_feedback)
- * handed to the simulation like any --input "F = EXPR", so the integrator
- * sees nothing new.
+ * "Q = ..., R = ..."`: the library's LQR feedback on the run's input
+ * (qd_sim_setup_lqr, qdot/simsetup.h), its errors named by the option they
+ * are about, and the controller said on stderr (qd_sim_lqr_note).
  */
 #include "cli.h"
 #include "lqr_cli.h"
 #include "sim_cli.h"
 
+#include <stdio.h>
 #include <string.h>
 
-static int input_index(const qd_statespace *s, const char *name, size_t *i) {
-    for (*i = 0; *i < s->nu; ++*i)
-        if (!strcmp(qd_expr_name(s->inputs[*i]), name))
-            return QD_EXIT_OK;
-    cli_diag_error("--input: %s = lqr: %s is not an input of the model", name, name);
-    return QD_EXIT_USAGE;
-}
-
-/* The gain on stderr, so a run says which controller it simulated. */
-static void note_gain(const qd_statespace *s, const qd_care_result *r, size_t i,
-                      const char *name) {
-    fprintf(stderr, "qdot: simulate: %s = lqr: K =", name);
-    for (size_t j = 0; j < s->nx; j++)
-        fprintf(stderr, " %.6g (%s)", r->K[i * s->nx + j], qd_expr_name(s->states[j]));
-    fprintf(stderr, "; closed-loop eigenvalues, largest real part %.6g\n", r->eig_re[0]);
-}
-
-/* Away from an equilibrium x0 is no rest point of the loop: u0 - K (x - x0)
- * then regulates towards where the system cannot stay, so say so. */
-static void note_not_equilibrium(const qd_statespace *s) {
-    for (size_t j = 0; j < s->nx; j++)
-        if (s->xdot0[j] != 0) {
-            fprintf(stderr, "qdot: simulate: note: --about is not an equilibrium (%s' = %.6g "
-                            "there): the loop holds no rest at it\n",
-                    qd_expr_name(s->states[j]), s->xdot0[j]);
-            return;
+/* The error of qd_sim_setup_lqr, under the option it is about. */
+static int lqr_error(cli_sim *c, const char *name, const qd_sim_lqr *l) {
+    const char *part = l->part ? l->part : "";
+    if (!strcmp(part, "about")) {
+        const qd_diag *d = qd_ctx_diag(c->ctx);
+        if (d->located) {
+            cli_diag_show("--about", c->about, d);
+            return cli_exit(qd_ctx_status(c->ctx));
         }
-}
-
-static int linearized_gain(cli_sim *c, const char *name) {
-    cli_point pt = {0};
-    qd_statespace s = {0};
-    qd_care_result r = {0};
-    size_t i = 0;
-    int rc = cli_point_read(c->ctx, c->about, &pt);
-    if (rc == QD_EXIT_OK &&
-        qd_linearize(c->ctx, c->e, c->mf.model, pt.n, pt.syms, pt.vals, &s) != QD_OK) {
-        rc = qd_ctx_status(c->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
-        cli_diag_error("--input: %s = lqr: %s", name, qd_ctx_message(c->ctx));
+        cli_diag_error("--about: %s", qd_ctx_message(c->ctx));
+        return cli_exit(qd_ctx_status(c->ctx));
     }
-    if (rc == QD_EXIT_OK)
-        rc = input_index(&s, name, &i);
-    if (rc == QD_EXIT_OK)
-        rc = cli_lqr_design(c->ctx, &s, c->lqr, &r);
-    const qd_expr *u =
-        rc == QD_EXIT_OK ? qd_lqr_feedback(c->ctx, &s, &r, pt.n, pt.syms, pt.vals, i) : NULL;
-    if (rc == QD_EXIT_OK && !u)
-        rc = cli_diag_ctx(c->ctx);
-    if (rc == QD_EXIT_OK && qd_sim_input_expr(c->s, name, u) != QD_OK) {
-        cli_diag_error("--input: %s", qd_ctx_message(c->ctx));
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK) {
-        note_gain(&s, &r, i, name);
-        note_not_equilibrium(&s);
-    }
-    qd_care_result_free(&r);
-    qd_statespace_free(&s);
-    cli_point_free(&pt);
-    return rc;
+    if (!strcmp(part, "weights"))
+        return cli_lqr_error(c->ctx, "--lqr", c->lqr);
+    if (qd_ctx_status(c->ctx) == QD_ERR_NOMEM)
+        return cli_diag_ctx(c->ctx);
+    cli_diag_error("--input: %s = lqr: %s", name, qd_ctx_message(c->ctx));
+    return strcmp(part, "point") || qd_ctx_status(c->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE
+                                                                         : QD_EXIT_FAIL;
 }
 
 int cli_sim_input_lqr(cli_sim *c, const char *name) {
@@ -81,12 +40,17 @@ int cli_sim_input_lqr(cli_sim *c, const char *name) {
                                            : !c->lqr ? "--lqr" : "--about", name);
         return QD_EXIT_USAGE;
     }
-    if (!c->e) {
-        cli_diag_error("--input \"%s = lqr\": the feedback is designed on the equations in "
-                       "the coordinates (a model given by T and V or L; with speeds, use "
-                       "--no-speeds)", name);
-        return QD_EXIT_USAGE;
-    }
     c->lqr_used = true;
-    return linearized_gain(c, name);
+    qd_sim_lqr l;
+    int rc = QD_EXIT_OK;
+    if (qd_sim_setup_lqr(c->set, name, c->about, c->lqr, &l) != QD_OK)
+        rc = lqr_error(c, name, &l);
+    qd_buf b = QD_BUF_INIT;
+    if (rc == QD_EXIT_OK && qd_sim_lqr_note(&l, "qdot: simulate: ", &b) == QD_OK)
+        fputs(qd_buf_str(&b), stderr);
+    else if (rc == QD_EXIT_OK)
+        rc = cli_diag_ctx(c->ctx);
+    qd_buf_free(&b);
+    qd_sim_lqr_free(&l);
+    return rc;
 }

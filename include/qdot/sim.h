@@ -155,6 +155,15 @@ QD_API qd_status qd_sim_inputs_ready(qd_sim *s, double t0, double t_end);
 QD_API qd_status qd_sim_input_expr(qd_sim *s, const char *name, const qd_expr *x);
 QD_API qd_status qd_sim_input_table(qd_sim *s, const char *name, size_t n, const double *t,
                                     const double *v);
+/* Input name's table read from text[0, len), the text of a CSV file: rows
+ * "t,value" (blanks around the numbers and a CR before the newline taken;
+ * blank lines skipped; a first line that is not two numbers is a header),
+ * then qd_sim_input_table (times increasing, two rows at least, linear
+ * interpolation).  *bad_line the 1-based line that is not a row, else 0.
+ * QD_ERR_ARG ("line N: expected \"t,value\"", or qd_sim_input_table's
+ * error), QD_ERR_NOMEM. */
+QD_API qd_status qd_sim_input_table_read(qd_sim *s, const char *name, const char *text,
+                                         size_t len, size_t *bad_line);
 QD_API qd_status qd_sim_input_callback(qd_sim *s, const char *name, qd_sim_input_fn fn,
                                        void *data);
 
@@ -513,6 +522,31 @@ QD_API qd_status qd_sim_summary_print(const qd_sim_report *r, const char *prefix
  * QD_ERR_NUMERIC when a number was not finite (j is then failed:
  * qd_json_ok), QD_ERR_NOMEM when memory ran out. */
 QD_API qd_status qd_sim_summary_json(qd_json *j, const qd_sim_report *r);
+
+/* ---- the rows as `qdot simulate` writes them (src/sim/rows.c) ----------- */
+
+/* Whether a run of s gives its rows an event column (the sink's event >= 0
+ * for some rows): s has events (qd_sim_add_event, stops included), its
+ * model impacts, or friction contacts.  Written as event + 1, 0 for a row
+ * of the grid. */
+QD_API bool qd_sim_event_column(const qd_sim *s);
+/* "columns": the names qd_sim_columns gives for method, and "event" after
+ * them when qd_sim_event_column: the key and array into j's open object.
+ * QD_ERR_NOMEM when memory ran out (j's buffer failed), QD_ERR_NUMERIC
+ * when j refused a number, QD_ERR_ARG when j was already too deep. */
+QD_API qd_status qd_sim_columns_json(qd_json *j, const qd_sim *s, qd_sim_method method);
+/* A run drawn and not written: an adaptive method's rows are its steps,
+ * which can span a swing, so unless o has an output grid (dt > 0) or a
+ * fixed step its dense output is sampled at rows points, dt = (t_end -
+ * t0) / rows.  Other options are left as they are. */
+QD_API void qd_sim_opts_sample(qd_sim_opts *o, size_t rows);
+/* "plot": the picture of a run (qd_plot_run) written to file: {"file",
+ * "panels": [{"x0", "x1", "y0", "y1"}, ...]}, each panel's axis ranges
+ * (range[4 g + 0..3], npanels panels, as qd_plot_ranges gives them), so a
+ * caller can place more on the picture (a range not finite: QD_ERR_NUMERIC,
+ * j failed).  QD_ERR_NOMEM and QD_ERR_ARG as above. */
+QD_API qd_status qd_sim_plot_json(qd_json *j, const char *file, size_t npanels,
+                                  const double *range);
 
 #ifdef __cplusplus
 }

@@ -29,7 +29,9 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include "control.h"
 #include "sim.h"
+#include "statespace.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -130,6 +132,14 @@ typedef struct qd_sim_setup_opts {
 QD_API qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o,
                                       qd_sim_opts *out);
 
+/* A run over one period: T read from text (a constant expression in pi, e
+ * and the parameters, "2*pi*sqrt(l/g)"), positive, into *period, and
+ * out->t_end = out->t0 + T.  After qd_sim_setup_options (which gives t0 from the state; its
+ * t_end is then replaced).  QD_ERR_ARG (or the reader's QD_ERR_PARSE) with
+ * the error located in text; out untouched. */
+QD_API qd_status qd_sim_setup_period(qd_sim_setup *s, const char *text, qd_sim_opts *out,
+                                     double *period);
+
 /* --native: the compiled right-hand side of opts' method loaded when it can
  * take it (Lagrange's form, an adaptive method; the taylor recurrences in
  * double), else the compiled programs stay.  QD_OK either way unless out
@@ -137,6 +147,44 @@ QD_API qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *
  * it did not.  After qd_sim_setup_options. */
 QD_API qd_status qd_sim_setup_native(qd_sim_setup *s, const qd_sim_opts *opts, char *note,
                                      size_t cap);
+
+/* ---- an input fed back by LQR (src/sim/lqr.c) ------------------------------ */
+
+/* An LQR feedback set up on a simulation's input (qd_sim_setup_lqr). */
+typedef struct qd_sim_lqr {
+    qd_statespace ss;          /* the model linearized about the point */
+    qd_care_result r;          /* the design on ss (K: nu x nx, eig_re sorted) */
+    size_t input;              /* the input's index in ss.inputs (its row of K) */
+    const qd_expr *u;          /* u0 - K (x - x0): what the run takes for the input */
+    size_t npt;                /* the operating point as read: syms = exact vals */
+    const qd_expr **syms, **vals;
+    const char *part;          /* on failure, what the error is about: "about" (the
+                                * point's text, located in it), "point" (the
+                                * linearization there), "weights" (located in that
+                                * text), "name" (not an input; not Lagrange's form) */
+} qd_sim_lqr;
+
+/* Input name of s's run fed back by LQR (issue 31, "LQR on a model"): the
+ * operating point about, "q=VALUE, q'=VALUE, F=VALUE, ..." (coordinates,
+ * velocities and inputs of the model; each VALUE a constant expression in
+ * pi, e and the parameters, kept exact; a name not given is 0), the model
+ * linearized there (qd_linearize), the CARE solved for weights "Q = ...,
+ * R = ..." (qd_lqr_design), and the input set to
+ *     u = u0 - K (x - x0)          (qd_lqr_feedback, qd_sim_input_expr)
+ * with K's row of that input.  Lagrange's form only (not H, not speeds).
+ * *out is overwritten; qd_sim_lqr_free it, also after a failure.  Errors
+ * (in the context): QD_ERR_ARG, QD_ERR_PARSE (a value misread),
+ * QD_ERR_SINGULAR, QD_ERR_NUMERIC, QD_ERR_NOMEM, with out->part saying which
+ * argument the error is about. */
+QD_API qd_status qd_sim_setup_lqr(qd_sim_setup *s, const char *name, const char *about,
+                                  const char *weights, qd_sim_lqr *out);
+/* What the run's controller is, appended to out (each line starts with
+ * prefix): "NAME = lqr: K = k1 (x1) k2 (x2) ...; closed-loop eigenvalues,
+ * largest real part a" (6 digits), and a note when the operating point is
+ * not an equilibrium (its first nonzero x' there).  QD_ERR_NOMEM when out
+ * failed; QD_ERR_ARG for a feedback not set up. */
+QD_API qd_status qd_sim_lqr_note(const qd_sim_lqr *l, const char *prefix, qd_buf *out);
+QD_API void qd_sim_lqr_free(qd_sim_lqr *l); /* NULL is fine */
 
 #ifdef __cplusplus
 }

@@ -4577,6 +4577,19 @@ static void null_sim(void **state)
     /* v NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_input_table(F.sim, "q", 1, F.d, NULL));
     reset(&F);
+    /* ---- qd_sim_input_table_read */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(NULL, "q", "q", 1, F.z));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(F.sim, NULL, "q", 1, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(F.sim, "q", NULL, 1, F.z));
+    reset(&F);
+    /* bad_line NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_input_table_read(F.sim, "q", "q", 1, NULL));
+    reset(&F);
     /* ---- qd_sim_input_callback */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_input_callback(NULL, "q", NULL, NULL));
@@ -4708,6 +4721,31 @@ static void null_sim(void **state)
     /* j NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_summary_json(NULL, NULL));
     reset(&F);
+    /* ---- qd_sim_event_column */
+    /* s NULL */
+    assert_true(qd_sim_event_column(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_columns_json */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_columns_json(NULL, F.sim, (qd_sim_method){0}));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_columns_json(NULL, NULL, (qd_sim_method){0}));
+    reset(&F);
+    /* ---- qd_sim_opts_sample */
+    /* o NULL */
+    qd_sim_opts_sample(NULL, 1);
+    reset(&F);
+    /* ---- qd_sim_plot_json */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_plot_json(NULL, "q", 1, F.d));
+    reset(&F);
+    /* file NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_plot_json(NULL, NULL, 1, F.d));
+    reset(&F);
+    /* range NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_plot_json(NULL, "q", 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -4821,9 +4859,52 @@ static void null_simsetup(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_sim_setup_period */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, "q", (qd_sim_opts *)(void *)F.blob, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, NULL, (qd_sim_opts *)(void *)F.blob, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, "q", NULL, F.d));
+    reset(&F);
+    /* period NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, "q", (qd_sim_opts *)(void *)F.blob, NULL));
+    reset(&F);
     /* ---- qd_sim_setup_native */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_native(NULL, NULL, F.c, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_lqr */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", "q", "q", (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, NULL, "q", "q", (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* about NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", NULL, "q", (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* weights NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", "q", NULL, (qd_sim_lqr *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_lqr(NULL, "q", "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_sim_lqr_note */
+    /* l NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_lqr_note(NULL, "q", &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_lqr_note(NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_lqr_note(NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_sim_lqr_free */
+    /* l NULL */
+    qd_sim_lqr_free(NULL);
     reset(&F);
     teardown(&F);
 }
