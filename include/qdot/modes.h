@@ -362,9 +362,11 @@ QD_API qd_status qd_speeds_modes_print(qd_ctx *ctx, const struct qd_speeds_eom *
  * modes): a panel per mode (at most 3 to a row, 2 x 2 for four), each with
  * the particles at the equilibrium ("equilibrium") and at q0 + s a_j ("mode
  * J: w = W rad/s", or "mode J: unstable, w^2 = W2", 4 significant digits),
- * s scaling the linear displacement so the largest particle displacement is
- * a fifth of the configuration's size (its largest extent along x, y or z;
- * 1 when all particles are at one point), drawn in the plane of the two
+ * s scaling the linear displacement so its largest component (along x, y or
+ * z, over the particles) is a fifth of the configuration's size (its
+ * largest extent along x, y or z; 1 when all particles are at one point;
+ * the displacement per unit s is a forward difference of the positions
+ * with a step 1e-6 of the size along a_j), drawn in the plane of the two
  * axes along which the positions, at rest and moved, spread most, with
  * equal axes.  When they all lie on one line (spread across it below 1e-9
  * of the spread along it: a chain of masses and springs), each particle's
