@@ -3501,6 +3501,13 @@ static void null_plot(void **state)
     /* pk NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", (const char * const *)F.names, 1, 1, NULL));
     reset(&F);
+    /* ---- qd_plot_section_phase */
+    /* section NULL */
+    assert_null(qd_plot_section_phase(NULL, (const char * const *)F.names, 1));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_plot_section_phase("q", NULL, 1));
+    reset(&F);
     /* ---- qd_plot_size_of */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_size_of(NULL, "q", F.i, F.i));
