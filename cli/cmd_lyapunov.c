@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "qdot/json.h"
+#include "qdot/lyapunov.h"
 #include "sim_cli.h"
 
 typedef struct ly_args {
@@ -63,93 +63,14 @@ static int number(const char *opt, const char *v, double *out) {
     return QD_EXIT_OK;
 }
 
-/* What was measured, for either format. */
-typedef struct ly_result {
-    size_t k, d;           /* exponents computed; 2n */
-    double *ex, *err;
-    qd_lyap_stats st;
-    bool conservative;
-} ly_result;
-
-static double sum_of(const ly_result *r) {
-    double s = 0;
-    for (size_t j = 0; j < r->k; j++)
-        s += r->ex[j];
-    return s;
-}
-
-/* Round-off's -0.000000 printed as 0. */
-static double clean(double x) { return fabs(x) < 5e-7 ? 0.0 : x; }
-
-/* Six decimals, the digits the estimates have. */
-static void fixed(const char *before, double x) { printf("%s% .6f", before, clean(x)); }
-
-static void print_text(const ly_result *r) {
-    for (size_t j = 0; j < r->k; j++) {
-        printf("lambda_%zu", j + 1);
-        fixed(" = ", r->ex[j]);
-        if (isnan(r->err[j]))
-            printf("  (no error estimate: fewer than 2 renormalizations in the last half)\n");
-        else
-            printf("  +- %.2g\n", r->err[j]);
-    }
-    fixed("mean tr J = ", r->st.trace_mean);
-    printf("  (the sum of all %zu exponents, Liouville%s)\n", r->d,
-           r->conservative ? "; -> 0 as T grows for a conservative system" : "");
-    if (r->k == r->d)
-        fixed("sum       = ", sum_of(r));
-    if (r->k == r->d)
-        printf("\n");
-    if (r->k == r->d && r->conservative) {
-        printf("conservative: the exponents pair, lambda_i + lambda_%zu-i =", r->d + 1);
-        for (size_t j = 0; j < r->d / 2; j++)
-            printf("%s%.6f", j ? ", " : " ", clean(r->ex[j] + r->ex[r->d - 1 - j]));
-        printf("\n");
-    }
-}
-
-static void json_numbers(qd_json *j, const char *key, const double *x, size_t n) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < n; i++)
-        if (isnan(x[i]))
-            qd_json_null(j);
-        else
-            qd_json_number(j, x[i]);
-    qd_json_end_array(j);
-}
-
-static int print_json(const ly_result *r, const cli_sim *c, const ly_args *p) {
+/* The result in the format asked for, written to standard output. */
+static int emit(const qd_lyap_report *r, bool json) {
     qd_buf b = QD_BUF_INIT;
-    qd_json j;
-    qd_json_init(&j, &b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "method");
-    qd_json_string(&j, qd_sim_method_name(c->opts.method));
-    qd_json_key(&j, "t_avg");
-    qd_json_number(&j, r->st.t_avg);
-    qd_json_key(&j, "transient");
-    qd_json_number(&j, p->transient);
-    qd_json_key(&j, "renorm");
-    qd_json_number(&j, p->renorm > 0 ? p->renorm : 1);
-    qd_json_key(&j, "renormalizations");
-    qd_json_number(&j, (double)r->st.renorms);
-    json_numbers(&j, "exponents", r->ex, r->k);
-    json_numbers(&j, "errors", r->err, r->k);
-    qd_json_key(&j, "trace_mean");
-    qd_json_number(&j, r->st.trace_mean);
-    if (r->k == r->d) {
-        qd_json_key(&j, "sum");
-        qd_json_number(&j, sum_of(r));
-    }
-    qd_json_key(&j, "conservative");
-    qd_json_bool(&j, r->conservative);
-    qd_json_end_object(&j);
-    bool ok = qd_json_ok(&j);
-    if (ok)
-        printf("%s\n", qd_buf_str(&b));
+    qd_status st = json ? qd_lyap_json(r, &b) : qd_lyap_print(r, &b);
+    if (st == QD_OK)
+        fputs(qd_buf_str(&b), stdout);
     qd_buf_free(&b);
-    return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
+    return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
 /* The model made into the tangent system and run; prints the result. */
@@ -168,13 +89,11 @@ static int run(cli_sim *c, const ly_args *p) {
     qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
     if (!l)
         return cli_diag_ctx(c->ctx);
-    ly_result r = {.k = p->n, .d = d,
-                   .conservative = qd_sim_conservative(c->s)};
-    r.ex = calloc(2 * r.k, sizeof *r.ex);
-    r.err = r.ex + r.k;
-    qd_lyap_opts lo = {.nexp = r.k, .renorm = p->renorm, .transient = p->transient};
-    qd_status st = r.ex ? qd_lyap_run_stats(c->ctx, l, &c->opts, &lo, r.ex, r.err, &r.st)
-                        : QD_ERR_NOMEM;
+    qd_lyap_opts lo = {.nexp = p->n, .renorm = p->renorm, .transient = p->transient};
+    qd_lyap_stats ls = {0};
+    double *ex = calloc(2 * lo.nexp, sizeof *ex), *err = ex ? ex + lo.nexp : NULL;
+    qd_status st = ex ? qd_lyap_run_stats(c->ctx, l, &c->opts, &lo, ex, err, &ls)
+                      : QD_ERR_NOMEM;
     int rc;
     if (st == QD_ERR_ARG) {
         rc = cli_diag_ctx(c->ctx);
@@ -183,15 +102,14 @@ static int run(cli_sim *c, const ly_args *p) {
     } else {
         fprintf(stderr, "qdot: lyapunov: %s, averaged over T = %g after a transient of %g, "
                         "%zu renormalizations: %zu steps, %zu evaluations, %zu rejected\n",
-                qd_sim_method_name(c->opts.method), r.st.t_avg, p->transient, r.st.renorms,
-                r.st.steps, r.st.evals, r.st.rejected);
-        rc = QD_EXIT_OK;
-        if (p->a.json)
-            rc = print_json(&r, c, p);
-        else
-            print_text(&r);
+                qd_sim_method_name(c->opts.method), ls.t_avg, p->transient, ls.renorms,
+                ls.steps, ls.evals, ls.rejected);
+        qd_lyap_report r = {.opts = &lo, .ndof = c->e->n, .exps = ex, .err = err,
+                            .stats = &ls, .conservative = qd_sim_conservative(c->s),
+                            .method = c->opts.method};
+        rc = emit(&r, p->a.json);
     }
-    free(r.ex);
+    free(ex);
     qd_lyap_free(l);
     return rc;
 }

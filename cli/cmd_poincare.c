@@ -9,13 +9,13 @@
 
 #include <stddef.h>
 
-#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "out.h"
+#include "qdot/plot.h"
 #include "progress.h"
 #include "sim_cli.h"
 
@@ -95,31 +95,11 @@ static int sink(void *data, int event, const double *row) {
     return ++o->got >= o->want || cli_interrupted(); /* ^C: after a whole row */
 }
 
-/* The section fixes the coordinate it names, so by default the plot shows
- * the first coordinate whose name is not among the section's words. */
-static const char *free_coord(const cli_sim *c, const char *section, const char *const *names) {
-    size_t n = qd_sim_ndof(c->s);
-    for (size_t j = 0; j < n; j++) {
-        const char *q = names[1 + j], *s = section;
-        size_t len = strlen(q);
-        bool named = false;
-        while ((s = strstr(s, q))) {
-            bool before = s > section && (isalnum((unsigned char)s[-1]) || s[-1] == '_');
-            bool after = isalnum((unsigned char)s[len]) || s[len] == '_';
-            named |= !before && !after;
-            s += len;
-        }
-        if (!named)
-            return q;
-    }
-    return n ? names[1] : NULL;
-}
-
 static int pc_plot_pick(const cli_sim *c, pc_args *p, const char **names, size_t ncols,
                         cli_plot_pick *pick) {
     qd_sim_columns(c->s, c->opts.method, names, ncols);
     if (!p->a.plot.phase)
-        p->a.plot.phase = free_coord(c, p->section, names);
+        p->a.plot.phase = qd_plot_section_phase(p->section, names, qd_sim_ndof(c->s));
     return cli_plot_pick_columns(&p->a.plot, names, ncols, qd_sim_ndof(c->s), pick);
 }
 

@@ -192,6 +192,47 @@ QD_API qd_status qd_flow_print(const qd_flow *f, double period, const char *pref
 QD_API qd_status qd_flow_json(qd_json *j, const qd_flow *f, const qd_eom *e,
                               qd_sim_method method, double period);
 
+/* ---- the exponents printed (src/lyap/print.c) ---------------------------- */
+
+/* What a qd_lyap_run_stats measured, with the options it ran with, for
+ * qd_lyap_print and qd_lyap_json. */
+typedef struct qd_lyap_report {
+    const qd_lyap_opts *opts;    /* the options used: nexp exponents, renorm, transient */
+    size_t ndof;                 /* n (qd_lyap_ndof): the state has 2n numbers */
+    const double *exps;          /* opts->nexp exponents, descending */
+    const double *err;           /* opts->nexp error estimates (NaN: none), or NULL: none */
+    const qd_lyap_stats *stats;  /* the run's averaging time, renormalizations, mean tr J */
+    bool conservative;           /* the system is conservative (qd_sim_conservative) */
+    qd_sim_method method;        /* the integrator used */
+} qd_lyap_report;
+
+/* exps[0] + ... + exps[k-1]: with all k = 2n exponents, the time average of
+ * tr J (Liouville), 0 for a conservative system.  NaN for NULL exps with
+ * k > 0. */
+QD_API double qd_lyap_sum(size_t k, const double *exps);
+
+/* r as text appended to out, one line per exponent, "lambda_J = % .6f" (a
+ * value below 5e-7 in size as 0) followed by "  +- E" (E with 2
+ * significant digits) or "  (no error estimate: fewer than 2
+ * renormalizations in the last half)"; then "mean tr J = % .6f  (the sum of
+ * all D exponents, Liouville[; -> 0 as T grows for a conservative
+ * system])"; with all D = 2n exponents "sum       = % .6f" (qd_lyap_sum),
+ * and for a conservative system "conservative: the exponents pair,
+ * lambda_i + lambda_{D+1}-i = P1, P2, ..." (lambda_i + lambda_{D+1-i} for
+ * i <= n, six decimals).  QD_ERR_ARG for a report without opts, stats or
+ * exps, with ndof 0 or opts->nexp outside 1..2n; QD_ERR_NOMEM when out
+ * ran out. */
+QD_API qd_status qd_lyap_print(const qd_lyap_report *r, qd_buf *out);
+
+/* r as one JSON object and a newline appended to out: "method" (its name),
+ * "t_avg", "transient", "renorm" (1 where opts->renorm is 0: the time used),
+ * "renormalizations", "exponents" (the array), "errors" (the array, null
+ * where there is no estimate), "trace_mean", "sum" (only with all 2n
+ * exponents) and "conservative".  Errors as qd_lyap_print's, and
+ * QD_ERR_NUMERIC (nothing appended) when a number other than an error
+ * estimate is not finite. */
+QD_API qd_status qd_lyap_json(const qd_lyap_report *r, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -201,6 +242,6 @@ QD_API qd_status qd_flow_json(qd_json *j, const qd_flow *f, const qd_eom *e,
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
- * (err, stats); qd_flow_run (fo); qd_flow_print (prefix). An array whose
- * count is 0 may be NULL. */
+ * (err, stats); qd_flow_run (fo); qd_flow_print (prefix); qd_lyap_print,
+ * qd_lyap_json (r->err). An array whose count is 0 may be NULL. */
 #endif

@@ -355,6 +355,68 @@ QD_API qd_status qd_speeds_modes_print(qd_ctx *ctx, const struct qd_speeds_eom *
                                        const qd_speeds_linear *lin, const qd_modes_result *res,
                                        bool json, qd_buf *out);
 
+/* ---- the mode shapes drawn (src/linear/modes_plot.c) ----------------------
+ *
+ * A conservative result's modes as a picture.  A model with particles (at
+ * most QD_MODES_PLOT_MAXP of them, and at most QD_MODES_PLOT_MAXPANELS
+ * modes): a panel per mode (at most 3 to a row, 2 x 2 for four), each with
+ * the particles at the equilibrium ("equilibrium") and at q0 + s a_j ("mode
+ * J: w = W rad/s", or "mode J: unstable, w^2 = W2", 4 significant digits),
+ * s scaling the linear displacement so its largest component (along x, y or
+ * z, over the particles) is a fifth of the configuration's size (its
+ * largest extent along x, y or z; 1 when all particles are at one point;
+ * the displacement per unit s is a forward difference of the positions
+ * with a step 1e-6 of the size along a_j), drawn in the plane of the two
+ * axes along which the positions, at rest and moved, spread most, with
+ * equal axes.  When they all lie on one line (spread across it below 1e-9
+ * of the spread along it: a chain of masses and springs), each particle's
+ * displacement along the line is drawn against its place at rest ("x" and
+ * "displacement along x").  Otherwise (no particles, or too many): one
+ * panel with each mode's coordinates a_ij, scaled to a largest |a_ij| of 1,
+ * against the coordinate number i.
+ */
+struct qd_plot;            /* qdot/plot.h */
+
+#define QD_MODES_PLOT_MAXP 64       /* particles drawn at most */
+#define QD_MODES_PLOT_MAXPANELS 24  /* modes drawn as particles at most */
+
+/* The numbers of the particle picture. */
+typedef struct qd_modes_picture {
+    size_t np;          /* particles drawn; 0: the picture shows coordinates */
+    size_t nmode;       /* modes (res->n) */
+    double *rest;       /* np*3: x, y, z of particle i at the equilibrium (0 where the model
+                         * gives fewer); NULL when np is 0 */
+    double *moved;      /* nmode*np*3: particle i in mode j at moved[(j*np + i)*3 + k] */
+    unsigned ax, ay;    /* the plane's axes (0 x, 1 y, 2 z; ax < ay), or ay = 3: the
+                         * particles are on the line of axis ax */
+} qd_modes_picture;
+
+/* The particles of m at the equilibrium and moved along each mode of res,
+ * and the plane to draw them in (see above), into *out (zeroed first;
+ * qd_modes_picture_free).  e: the equations of m whose linearization
+ * (qd_linear_about) res solved; syms/vals: the state it was linearized
+ * about (coordinates of e at the equilibrium q0, t and parameters, as
+ * qd_linear_about takes; velocities are taken as 0).  out->np is 0, with
+ * nothing computed, for a model without particles or with more than the
+ * picture draws.  QD_ERR_ARG for a result that is not conservative (no
+ * real shapes: damping or gyroscopic terms) or whose n is not e->n,
+ * QD_ERR_NOMEM, or the failure of compiling the particles' positions; the
+ * reason in ctx. */
+QD_API qd_status qd_modes_picture_make(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                       size_t nvals, const qd_expr *const *syms,
+                                       const double *vals, const qd_modes_result *res,
+                                       qd_modes_picture *out);
+QD_API void qd_modes_picture_free(qd_modes_picture *pic);
+
+/* The picture of the modes of res (see above) with title title, as a new
+ * plot in *out (qd_plot_write writes it; qd_plot_free).  Arguments as
+ * qd_modes_picture_make's; *out is NULL after a failure: those of
+ * qd_modes_picture_make, and of the plot's construction. */
+QD_API qd_status qd_modes_plot(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                               const qd_expr *const *syms, const double *vals,
+                               const qd_modes_result *res, const char *title,
+                               struct qd_plot **out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -152,6 +152,17 @@ QD_API qd_status qd_plot_pick_columns(qd_ctx *ctx, const char *ycols, const char
                                       const char *const *names, size_t ncols, size_t ndof,
                                       qd_plot_pick *pk);
 
+/* The coordinate a Poincare section's plot shows by default (its phase
+ * for qd_plot_pick_columns): the section "EXPR = EXPR[, EXPR > EXPR]" fixes
+ * the coordinates it names, so the first of names[1 .. ndof] (the run's
+ * coordinates, names as for qd_plot_pick_columns) that is not a word of the
+ * section's text (a name with no letter, digit or '_' either side: "x" is
+ * named in "x' > 0" and "2*x = 1", not in "x2 = 0"); names[1] when the
+ * section names them all; NULL when ndof is 0, or for a NULL section or
+ * names.  The result points into names. */
+QD_API const char *qd_plot_section_phase(const char *section, const char *const *names,
+                                         size_t ndof);
+
 /* The size "WxH" in pixels, 100 to 10000 each; QD_ERR_ARG (field "size"). */
 QD_API qd_status qd_plot_size_of(qd_ctx *ctx, const char *text, int *width, int *height);
 

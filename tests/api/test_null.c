@@ -2138,6 +2138,24 @@ static void null_lyapunov(void **state)
     /* e NULL */
     assert_int_equal(QD_ERR_ARG, qd_flow_json(NULL, NULL, NULL, (qd_sim_method){0}, 1));
     reset(&F);
+    /* ---- qd_lyap_sum */
+    /* exps NULL */
+    assert_true(isnan(qd_lyap_sum(1, NULL)));
+    reset(&F);
+    /* ---- qd_lyap_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_print(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_print(NULL, NULL));
+    reset(&F);
+    /* ---- qd_lyap_json */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_json(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_json(NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -3019,6 +3037,54 @@ static void null_modes(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_modes_print(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, false, NULL));
     reset(&F);
+    /* ---- qd_modes_picture_make */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_picture_make(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_modes_picture *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_picture_make(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_modes_picture *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_picture_make(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_modes_picture *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_picture_make(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, (qd_modes_picture *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_picture_make(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, (qd_modes_picture *)(void *)F.blob));
+    reset(&F);
+    /* res NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_picture_make(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_modes_picture *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_picture_make(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
+    reset(&F);
+    /* ---- qd_modes_picture_free */
+    /* pic NULL */
+    qd_modes_picture_free(NULL);
+    reset(&F);
+    /* ---- qd_modes_plot */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_plot(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_plot(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_plot(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, "q", NULL));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_plot(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, "q", NULL));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* res NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, "q", NULL));
+    reset(&F);
+    /* title NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -3448,6 +3514,13 @@ static void null_plot(void **state)
     reset(&F);
     /* pk NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", (const char * const *)F.names, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_plot_section_phase */
+    /* section NULL */
+    assert_null(qd_plot_section_phase(NULL, (const char * const *)F.names, 1));
+    reset(&F);
+    /* names NULL */
+    assert_null(qd_plot_section_phase("q", NULL, 1));
     reset(&F);
     /* ---- qd_plot_size_of */
     /* ctx NULL */
