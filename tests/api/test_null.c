@@ -440,6 +440,25 @@ static void null_canonical(void **state)
     /* ph NULL */
     qd_phase_free(NULL);
     reset(&F);
+    /* ---- qd_phase_bracket_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(NULL, NULL, F.q, F.q, F.q, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, F.q, F.q, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* F NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, NULL, F.q, F.q, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* G NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, NULL, F.q, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, F.q, NULL, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, F.q, F.q, (qd_format){0}, false, NULL));
+    reset(&F);
     /* ---- qd_canon_kind_name */
     /* no pointer argument */
     /* ---- qd_canonical_examine */
@@ -908,6 +927,19 @@ static void null_equilibria(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(F.ctx, NULL, 1, NULL));
+    reset(&F);
+    /* ---- qd_equilibria_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(NULL, F.eom, NULL, false, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(F.ctx, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* eq NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(F.ctx, F.eom, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(F.ctx, F.eom, NULL, false, NULL));
     reset(&F);
     /* ---- qd_eom_rest_residual */
     /* ctx NULL */
@@ -2291,6 +2323,19 @@ static void null_metric(void **state)
     reset(&F);
     /* G NULL */
     assert_int_equal(QD_ERR_ARG, qd_metric_force(F.ctx, NULL, NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* ---- qd_metric_force_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(NULL, NULL, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(F.ctx, NULL, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(F.ctx, NULL, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* G NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(F.ctx, NULL, "q", NULL));
     reset(&F);
     /* ---- qd_metric_lower */
     /* ctx NULL */
