@@ -563,6 +563,17 @@ static void null_codegen(void **state)
     (void)state;
     static fixture F;
     setup(&F);
+    /* ---- qd_codegen_prefix_valid */
+    /* prefix NULL */
+    assert_true(qd_codegen_prefix_valid(NULL) == 0);
+    reset(&F);
+    /* ---- qd_codegen_prefix_from_path */
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_prefix_from_path(NULL, F.c, 1));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_prefix_from_path("q", NULL, 1));
+    reset(&F);
     /* ---- qd_codegen_c */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_codegen_c(NULL, F.model, F.eom, "q", &F.buf, &F.buf));
@@ -1723,6 +1734,19 @@ static void null_form(void **state)
     /* ---- qd_qform_free */
     /* f NULL */
     qd_qform_free(NULL);
+    reset(&F);
+    /* ---- qd_qform_vars_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(NULL, "q", (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, NULL, (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, "q", NULL, 1, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, "q", (const qd_expr * *)F.e, 1, NULL));
     reset(&F);
     teardown(&F);
 }
