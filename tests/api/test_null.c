@@ -4963,6 +4963,19 @@ static void null_speeds(void **state)
     /* u NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_from_velocities(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
     reset(&F);
+    /* ---- qd_speeds_state_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(NULL, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(F.ctx, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(F.ctx, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(F.ctx, F.model, NULL, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
