@@ -450,9 +450,6 @@ static void null_canonical(void **state)
     /* F NULL */
     assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, NULL, F.q, F.q, (qd_format){0}, false, &F.buf));
     reset(&F);
-    /* G NULL */
-    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, NULL, F.q, (qd_format){0}, false, &F.buf));
-    reset(&F);
     /* r NULL */
     assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, F.q, NULL, (qd_format){0}, false, &F.buf));
     reset(&F);
@@ -3649,6 +3646,16 @@ static void null_read(void **state)
     reset(&F);
     /* text NULL */
     assert_null(qd_read(F.ctx, NULL, NULL, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_read_variable */
+    /* ctx NULL */
+    assert_null(qd_read_variable(NULL, "q", F.q, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_read_variable(F.ctx, NULL, F.q, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* within NULL */
+    assert_null(qd_read_variable(F.ctx, "q", NULL, (qd_read_error *)(void *)F.blob));
     reset(&F);
     /* ---- qd_diag_format */
     /* d NULL */
