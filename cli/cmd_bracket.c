@@ -3,13 +3,13 @@
  * (qd_bracket) in the model's canonical variables (qd_phase); `--dt F`
  * gives dF/dt along the motion (qd_phase_dt: [F, H], the explicit t and the
  * forces' part; for an implicit H in q' too).  F and G are expressions, so
- * "-x" is one and `--` ends the options.
+ * "-x" is one and `--` ends the options.  Written by qd_phase_bracket_print
+ * (qdot/canonical.h).
  */
 #include "cli.h"
 
 #include <stddef.h>
 #include <string.h>
-#include "qdot/json.h"
 #include "model_cli.h"
 #include "model_file.h"
 
@@ -34,56 +34,6 @@ static const cli_spec spec = {
     opts, NULL, 2, 3, "FILE and expressions", true,
 };
 
-static void json_expr(qd_ctx *ctx, qd_json *j, const char *key, const qd_expr *x) {
-    qd_json_key(j, key);
-    qd_json_expr(j, ctx, x);
-}
-
-static void write_json(qd_ctx *ctx, const qd_phase *ph, const qd_expr *F, const qd_expr *G,
-                       const qd_expr *r, qd_buf *b) {
-    qd_json j;
-    qd_json_init(&j, b);
-    qd_json_begin_object(&j);
-    qd_json_key(&j, "momenta");
-    qd_json_begin_array(&j);
-    for (size_t k = 0; k < ph->n; k++)
-        qd_json_string(&j, qd_expr_name(ph->p[k]));
-    qd_json_end_array(&j);
-    json_expr(ctx, &j, "F", F);
-    if (!G) {
-        json_expr(ctx, &j, "H", ph->h->H);
-        json_expr(ctx, &j, "dF_dt", r);
-        if (ph->h->implicit) { /* H and dF_dt are in q' too, defined by p = dL/dq' */
-            qd_json_key(&j, "implicit");
-            qd_json_bool(&j, true);
-        }
-    } else {
-        json_expr(ctx, &j, "G", G);
-        json_expr(ctx, &j, "bracket", r);
-    }
-    qd_json_end_object(&j);
-    qd_buf_puts(b, "\n");
-    b->failed = b->failed || !qd_json_ok(&j);
-}
-
-/* "[F, G] = r" or "d/dt(F) = r", in LaTeX \{F, G\} and \frac{d}{dt}. */
-static void write_line(qd_ctx *ctx, const qd_phase *ph, bool tex, const qd_expr *F,
-                       const qd_expr *G, const qd_expr *r, qd_buf *b) {
-    qd_format f = tex ? QD_FMT_LATEX : QD_FMT_TEXT;
-    qd_buf_puts(b, G ? (tex ? "\\left\\{" : "[") : (tex ? "\\frac{d}{dt}\\left(" : "d/dt("));
-    qd_print(ctx, F, f, b);
-    if (G) {
-        qd_buf_puts(b, ", ");
-        qd_print(ctx, G, f, b);
-    }
-    qd_buf_puts(b, G ? (tex ? "\\right\\} = " : "] = ") : (tex ? "\\right) = " : ") = "));
-    qd_print(ctx, r, f, b);
-    qd_buf_puts(b, "\n");
-    if (!G && ph->h->implicit)
-        qd_buf_puts(b, tex ? "% q' solves p = dL/dq' (no closed form)\n"
-                           : "  (q' solves p = dL/dq': no closed form)\n");
-}
-
 /* Read what (F or G) as a function on phase space; the error shown in it. */
 static int read_fn(qd_ctx *ctx, const qd_phase *ph, const char *what, const char *text,
                    const qd_expr **out) {
@@ -106,10 +56,12 @@ static int run(qd_ctx *ctx, const cli_model_file *mf, qd_phase *ph, const br_arg
     if (!r)
         return cli_diag_model(ctx, mf->path, mf->text, mf->model);
     qd_buf b = QD_BUF_INIT;
-    if (a->format && !strcmp(a->format, "json"))
-        write_json(ctx, ph, F, G, r, &b);
-    else
-        write_line(ctx, ph, a->format && !strcmp(a->format, "latex"), F, G, r, &b);
+    bool json = a->format && !strcmp(a->format, "json");
+    qd_format fmt = a->format && !strcmp(a->format, "latex") ? QD_FMT_LATEX : QD_FMT_TEXT;
+    if (qd_phase_bracket_print(ctx, ph, F, G, r, fmt, json, &b) != QD_OK) {
+        qd_buf_free(&b);
+        return cli_diag_ctx(ctx);
+    }
     return cli_emit(&b, "bracket");
 }
 

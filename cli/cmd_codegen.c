@@ -2,14 +2,14 @@
  * cli/cmd_codegen.c - `qdot codegen FILE [-o DIR] [--prefix NAME] [--set
  * NAME=VALUE]... [--eliminate]`: the equations of motion as self-contained C
  * (qd_codegen_c), written to DIR/NAME.c and DIR/NAME.h.  NAME defaults to
- * the file's base name made into a C identifier, DIR to the current
- * directory.  --set changes the default parameter values written into the
- * file (parameters stay arguments of the functions).
+ * the file's base name made into a C identifier (qd_codegen_prefix_from_path,
+ * qdot/codegen.h), DIR to the current directory.  --set changes the default
+ * parameter values written into the file (parameters stay arguments of the
+ * functions).
  */
 #define _POSIX_C_SOURCE 200809L /* mkdir */
 #include "cli.h"
 
-#include <ctype.h>
 #include <errno.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -21,13 +21,12 @@
 #include "qdot/codegen.h"
 #include "qdot/speeds.h"
 
-#define MAX_NAME 64
 
 typedef struct cg_run {
     const char *file, *dir, *prefix;
     cli_list sets;
     bool eliminate;
-    char name[MAX_NAME];
+    char name[QD_CODEGEN_PREFIX_MAX + 1];
 } cg_run;
 
 static const cli_opt cg_opts[] = {
@@ -46,29 +45,6 @@ static const cli_spec cg_spec = {
     "codegen", "FILE [-o DIR] [options]", "self-contained C for the right-hand side",
     cg_opts, NULL, 1, 1, "FILE", false,
 };
-
-/* The file's base name without extension, as a C identifier. */
-static void default_name(cg_run *r) {
-    const char *base = strrchr(r->file, '/');
-    base = base ? base + 1 : r->file;
-    if (!strcmp(r->file, "-"))
-        base = "model";
-    size_t k = 0;
-    if (!isalpha((unsigned char)*base) && *base != '_')
-        r->name[k++] = 'm';
-    for (; *base && *base != '.' && k + 1 < MAX_NAME; base++)
-        r->name[k++] = isalnum((unsigned char)*base) ? *base : '_';
-    r->name[k] = '\0';
-}
-
-static bool valid_name(const char *s) {
-    if (!*s || strlen(s) >= MAX_NAME || !(isalpha((unsigned char)*s) || *s == '_'))
-        return false;
-    for (; *s; s++)
-        if (!isalnum((unsigned char)*s) && *s != '_')
-            return false;
-    return true;
-}
 
 static int write_text(const char *dir, const char *name, const char *ext, const qd_buf *b) {
     size_t len = strlen(dir) + strlen(name) + 8;
@@ -147,15 +123,14 @@ int cli_cmd_codegen(int argc, char **argv) {
     int rc = cli_parse(&cg_spec, argc, argv, &r, &r.file);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (r.prefix) {
-        if (!valid_name(r.prefix)) {
-            cli_diag_error("--prefix takes a C identifier, not '%s'", r.prefix);
-            return QD_EXIT_USAGE;
-        }
-        strcpy(r.name, r.prefix);
-    } else {
-        default_name(&r);
+    if (r.prefix && !qd_codegen_prefix_valid(r.prefix)) {
+        cli_diag_error("--prefix takes a C identifier, not '%s'", r.prefix);
+        return QD_EXIT_USAGE;
     }
+    if (r.prefix)
+        strcpy(r.name, r.prefix);
+    else
+        qd_codegen_prefix_from_path(r.file, r.name, sizeof r.name);
     if (r.dir && !r.dir[0]) {  /* "" would write to "/NAME.c" */
         cli_diag_error("-o takes a directory, not an empty name");
         return QD_EXIT_USAGE;

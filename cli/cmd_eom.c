@@ -19,7 +19,6 @@
 #include "cli.h"
 
 #include <stddef.h>
-#include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
 #include "model_cli.h"
@@ -157,37 +156,12 @@ static int run_coords(eom_run *r, const eom_args *a) {
     return emit(r, qd_render_eom(r->ctx, r->mf.model, r->e, &o, a->fmt, &b), &b, &notes);
 }
 
-/* The --at state of a model with speeds: cli_state's (q, q', t, the
- * parameters) with the speeds appended, so that --at names them; the
- * velocities follow from the kinematics and must not be given. */
+/* The --at state of a model with speeds: q, t, the parameters and the
+ * speeds (qd_speeds_state_read; the velocities follow from the speeds). */
 static int speeds_state(eom_run *r, const qd_speeds_eom *e, const char *at) {
-    cli_state *st = &r->st;
-    int rc = cli_state_init(r->ctx, r->mf.model, st);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    const qd_expr **syms = realloc(st->syms, (st->n + e->m) * sizeof *syms);
-    if (syms)
-        st->syms = syms;
-    double *vals = syms ? realloc(st->vals, (st->n + e->m) * sizeof *vals) : NULL;
-    if (!vals) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    st->vals = vals;
-    for (size_t i = 0; i < e->m; i++) {
-        st->syms[st->n + i] = e->u[i];
-        st->vals[st->n + i] = 0;
-    }
-    st->n += e->m;
-    rc = cli_state_parse(r->ctx, r->mf.model, at, st);
-    for (size_t j = 0; rc == QD_EXIT_OK && j < e->n; j++)
-        if (st->vals[e->n + j] != 0) {
-            cli_diag_error("--at: %s' is given, but with speeds the velocities follow from "
-                           "them: give the speeds (%s, ...)", qd_expr_name(e->q[j]),
-                           qd_expr_name(e->u[0]));
-            rc = QD_EXIT_USAGE;
-        }
-    return rc;
+    if (qd_speeds_state_read(r->ctx, r->mf.model, e, at, &r->st) == QD_OK)
+        return QD_EXIT_OK;
+    return cli_state_diag(r->ctx, "--at", at);
 }
 
 /* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */

@@ -2,7 +2,8 @@
  * cli/cmd_expr.c - the kernel on the command line: diff, expand, simplify,
  * print.  Each reads one expression (unknown names become plain symbols, or
  * coordinates when written with a prime: r' is then a symbol of its own),
- * applies one libqdot operation and prints the result.
+ * applies one libqdot operation and prints the result; the variables of
+ * diff are read by qd_read_variable (qdot/read.h).
  */
 #include "cli.h"
 
@@ -75,14 +76,12 @@ static int run(int argc, char **argv, const cli_spec *spec, unary_op op) {
     }
     const qd_expr *e0 = e;
     for (size_t i = 0; i < nvars && e; i++) {
-        /* a name or a rate: r, r', theta'' (read against the expression's symbols) */
-        qd_read_opts known = {.new_symbols = false};
-        const qd_expr *v = qd_read(ctx, a.pos[1 + i], &known, NULL);
-        if (!v || qd_expr_kind(v) != QD_SYMBOL || !qd_has(e0, v)) {
-            qd_ctx_clear_error(ctx);
-            cli_diag_error("'%s' does not occur in the expression", a.pos[1 + i]);
+        /* a name or a rate: r, r', theta'' (one of the expression's symbols) */
+        const qd_expr *v = qd_read_variable(ctx, a.pos[1 + i], e0, &err);
+        if (!v) {
+            cli_diag_read("<variable>", a.pos[1 + i], &err);
             qd_ctx_free(ctx);
-            return QD_EXIT_USAGE;
+            return cli_exit(err.status);
         }
         e = qd_diff(ctx, e, v);
     }

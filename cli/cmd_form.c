@@ -1,13 +1,15 @@
 /*
  * cli/cmd_form.c - `qdot form "EXPR" --vars "x, y"`: a quadratic form's
  * matrix, Lagrange's reduction to a sum of squares and its inertia
- * (qd_qform_reduce; Desloge App. 24-27), printed by qd_render_qform.
+ * (qd_qform_reduce; Desloge App. 24-27), printed by qd_render_qform; the
+ * variables read by qd_qform_vars_read (qdot/form.h).
  */
 #include "cli.h"
 
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+#include "qdot/form.h"
 #include "qdot/render.h"
 
 typedef struct form_args {
@@ -29,41 +31,6 @@ static const cli_spec form_spec = {
     "a quadratic form: its matrix, Lagrange's reduction to a sum of squares, its inertia",
     form_opts, NULL, 1, 1, "EXPR", true,
 };
-
-/* The names of --vars as symbols (at most cap). */
-static int read_vars(qd_ctx *ctx, const char *list, const qd_expr **x, size_t cap, size_t *n) {
-    *n = 0;
-    for (size_t i = 0; list[i];) {
-        while (list[i] == ' ' || list[i] == ',')
-            i++;
-        size_t j = i;
-        while (list[j] && list[j] != ',' && list[j] != ' ')
-            j++;
-        if (j == i)
-            break;
-        char name[128];
-        if (j - i >= sizeof name || *n == cap) {
-            cli_diag_error("--vars: too many variables or a name too long");
-            return QD_EXIT_USAGE;
-        }
-        memcpy(name, list + i, j - i);
-        name[j - i] = '\0';
-        const qd_expr *s = qd_lookup(ctx, name);
-        if (!s)
-            s = qd_symbol(ctx, name);
-        if (!s || qd_expr_kind(s) != QD_SYMBOL) {
-            cli_diag_error("--vars: '%s' is not a variable name", name);
-            return QD_EXIT_USAGE;
-        }
-        x[(*n)++] = s;
-        i = j;
-    }
-    if (*n == 0) {
-        cli_diag_error("--vars names no variable");
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
 
 int cli_cmd_form(int argc, char **argv) {
     form_args a = {0};
@@ -87,8 +54,10 @@ int cli_cmd_form(int argc, char **argv) {
     if (!phi) {
         cli_diag_read("<form>", a.text, &err);
         rc = QD_EXIT_USAGE;
-    } else if ((rc = read_vars(ctx, a.vars, x, 64, &n)) == QD_EXIT_OK &&
-               !(f = qd_qform_reduce(ctx, phi, n, x))) {
+    } else if (qd_qform_vars_read(ctx, a.vars, x, 64, &n) != QD_OK) {
+        cli_diag_show("--vars", a.vars, qd_ctx_diag(ctx));
+        rc = cli_exit(qd_ctx_status(ctx));
+    } else if (!(f = qd_qform_reduce(ctx, phi, n, x))) {
         rc = cli_diag_ctx(ctx);
     }
     if (f) {

@@ -15,9 +15,7 @@
 #include <string.h>
 
 #include "model_cli.h"
-#include "qdot/state.h"
 #include "qdot/metric.h"
-#include "qdot/read.h"
 
 typedef struct mt_args {
     const char *force, *format;
@@ -44,39 +42,6 @@ static const cli_spec spec = {
     opts, NULL, 1, 1, "FILE", false,
 };
 
-/* --force: n covariant components, comma-separated expressions. */
-static int read_force(qd_ctx *ctx, const char *text, size_t n, const qd_expr **G) {
-    size_t k = 0;
-    for (size_t a = 0; text[a]; k++) {
-        size_t b = qd_state_item_end(text, a);
-        if (k == n) {
-            cli_diag_error("--force: the model has %zu coordinates; more components given", n);
-            return QD_EXIT_USAGE;
-        }
-        char *copy = malloc(b - a + 1);
-        if (!copy)
-            return QD_EXIT_FAIL;
-        memcpy(copy, text + a, b - a);
-        copy[b - a] = '\0';
-        const qd_read_opts opts = {.new_symbols = false};
-        qd_diag err;
-        G[k] = qd_read(ctx, copy, &opts, &err);
-        free(copy);
-        if (!G[k]) {
-            err.offset += a;
-            cli_diag_read("--force", text, &err);
-            return QD_EXIT_USAGE;
-        }
-        a = text[b] ? b + 1 : b;
-    }
-    if (k != n) {
-        cli_diag_error("--force: %zu component%s for %zu coordinates (give one covariant "
-                       "component G_i = F . dx/dq_i for each)", k, k == 1 ? "" : "s", n);
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
-}
-
 static int run(qd_ctx *ctx, const char *file, const mt_args *a, cli_model_file *mf) {
     int rc = cli_load(ctx, file, a->set.n, a->set.items, true, mf);
     if (rc != QD_EXIT_OK)
@@ -89,8 +54,10 @@ static int run(qd_ctx *ctx, const char *file, const mt_args *a, cli_model_file *
         qd_metric_free(g);
         return QD_EXIT_FAIL;
     }
-    if (a->force)
-        rc = read_force(ctx, a->force, g->n, G);
+    if (a->force && qd_metric_force_read(ctx, g, a->force, G) != QD_OK) {
+        cli_diag_show("--force", a->force, qd_ctx_diag(ctx));
+        rc = cli_exit(qd_ctx_status(ctx));
+    }
     qd_buf b = QD_BUF_INIT;
     const qd_expr *const *force = a->force ? G : NULL;
     bool json = a->format && !strcmp(a->format, "json");

@@ -15,6 +15,7 @@
 #include "certify.h"
 #include "hamilton.h"
 #include "model.h"
+#include "print.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -208,6 +209,21 @@ QD_API qd_status qd_phase_ham(qd_ctx *ctx, qd_phase *ph, bool closed);
  * (qd_phase_ham) when needed.  NULL on failure (reason in ctx). */
 QD_API const qd_expr *qd_phase_dt(qd_ctx *ctx, qd_phase *ph, const qd_expr *F);
 QD_API void qd_phase_free(qd_phase *ph);
+/* [F, G] = r (r = qd_bracket of F and G in ph's q and p) or, G NULL,
+ * dF/dt = r (r = qd_phase_dt of F, which derived ph->h) appended to out:
+ * what `qdot bracket` prints.  Not json: one line in fmt, QD_FMT_TEXT
+ * "[F, G] = r" / "d/dt(F) = r" or QD_FMT_LATEX "\left\{F, G\right\} = r"
+ * / "\frac{d}{dt}\left(F\right) = r", and for dF/dt of an implicit H a
+ * second line saying q' solves p = dL/dq' (a LaTeX comment in LaTeX).
+ * json (fmt not read): {"momenta": [names of ph->p], "F", then "G" and
+ * "bracket", or "H", "dF_dt" and "implicit": true when H is implicit},
+ * expressions as qd_json_expr writes them, ending with a newline.
+ * QD_ERR_ARG for dF/dt with no H in ph, or another fmt; a failure of
+ * qd_print; QD_ERR_NUMERIC (JSON refused a value); QD_ERR_NOMEM.  Nothing
+ * is appended on a failure. */
+QD_API qd_status qd_phase_bracket_print(qd_ctx *ctx, const qd_phase *ph, const qd_expr *F,
+                                        const qd_expr *G, const qd_expr *r, qd_format fmt,
+                                        bool json, qd_buf *out);
 
 /* ---- the question `qdot canonical` asks, and its answers written out ------ */
 
@@ -280,5 +296,5 @@ QD_API qd_status qd_gen_result_print(qd_ctx *ctx, const qd_phase *ph, qd_gen_typ
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_canonical_check (t); qd_generate (H);
- * qd_generate_f2 (H); qd_transformed_hamiltonian (t). An array whose count is 0 may be NULL. */
+ * qd_generate_f2 (H); qd_transformed_hamiltonian (t); qd_phase_bracket_print (G). An array whose count is 0 may be NULL. */
 #endif

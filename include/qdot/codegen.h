@@ -61,6 +61,26 @@ typedef struct qd_native {
     bool cached;               /* true when the .so was already there */
 } qd_native;
 
+/* ---- the prefix (src/codegen/prefix.c) -------------------------------------- */
+
+/* The longest prefix of generated C, in bytes. */
+#define QD_CODEGEN_PREFIX_MAX 60
+
+/* prefix is one qd_codegen_c and qd_codegen_speeds_c take: a C identifier
+ * (a letter or '_', then letters, digits and '_') of 1 to
+ * QD_CODEGEN_PREFIX_MAX bytes.  false for NULL. */
+QD_API bool qd_codegen_prefix_valid(const char *prefix);
+
+/* The prefix a model file's name gives (what `qdot codegen` names NAME.c
+ * and NAME.h by): path's last component up to its first '.', every byte
+ * that is not a letter, digit or '_' made '_', an 'm' in front when it does
+ * not start with a letter or '_', cut at QD_CODEGEN_PREFIX_MAX bytes;
+ * "model" for "-" (standard input).  "dir/double-pendulum.qd" gives
+ * "double_pendulum", "2body.qd" "m2body".  Written to out (cap bytes,
+ * more than QD_CODEGEN_PREFIX_MAX: QD_ERR_ARG otherwise).  An empty base
+ * name ("dir/" or ".qd") gives "m". */
+QD_API qd_status qd_codegen_prefix_from_path(const char *path, char *out, size_t cap);
+
 /* The C text (c_text) and header text (h_text) of e's equations, with every
  * name prefixed by `prefix` (a C identifier; NULL means "qdot_model").  The
  * .c includes "<prefix>.h".  h_text may be NULL when not wanted. */

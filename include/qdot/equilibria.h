@@ -146,6 +146,25 @@ QD_API const char *qd_eq_chosen_name(qd_eq_chosen c);
 QD_API qd_status qd_equilibrium_put_value(qd_ctx *ctx, const qd_equilibrium *p, size_t j,
                                           qd_buf *out);
 
+/* eq, the equilibria of e (qd_equilibria_find), appended to out: what
+ * `qdot equilibria` prints.  Text: "N equilibria (METHOD[: the complete
+ * set, angles in (-pi, pi]])", then a numbered line per point with each
+ * coordinate (qd_equilibrium_put_value, the number beside an exact value
+ * that is not a number in the digit rule of qd_buf_put_result, scale 1)
+ * and a line with its kind (qd_eq_kind_name), the Hessian's signs and the
+ * residual ("< 1e-14" below it, else 3 digits); a family (eq->continuum)
+ * shows its first 10 samples and a note that the points are not isolated.
+ * JSON: {"method", "exact", "continuum", "equilibria": [{"equilibrium":
+ * {coordinate: value}, "exact": {coordinate: expression} (when found
+ * exactly), "kind", "hessian_signs": [positive, negative, zero],
+ * "symmetric", "residual"}]}, every digit, ending with a newline.
+ * QD_ERR_ARG when eq is not over e's coordinates (eq->n != e->n) or has no
+ * method; QD_ERR_NUMERIC (nothing appended) for a JSON number that is not
+ * finite; a failure of qd_print; QD_ERR_NOMEM.  Nothing is appended on a
+ * failure. */
+QD_API qd_status qd_equilibria_print(qd_ctx *ctx, const qd_eom *e, const qd_equilibria *eq,
+                                     bool json, qd_buf *out);
+
 /* max_j |f_j| at the state syms/vals (as for qd_eom_eval; give the
  * velocities as 0 for a point at rest): how far the point is from an
  * equilibrium, in generalized-force units.  Fails as qd_eom_eval does (a

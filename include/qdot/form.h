@@ -65,6 +65,17 @@ QD_API qd_qform *qd_qform_reduce_matrix(qd_ctx *ctx, size_t n, const qd_expr *co
 
 QD_API void qd_qform_free(qd_qform *f);
 
+/* The variables of a form read from text, "x, y, z" (names separated by
+ * commas or spaces), as qd_qform_reduce takes them: each name is the
+ * context's symbol of that name (made when new), in order, into
+ * x[0 .. *n), at most cap.  On failure the context's error record is
+ * located in text (qd_ctx_diag, a caret under the name): QD_ERR_ARG for a
+ * name that is no symbol (a constant such as pi), one given twice, more
+ * than cap, or none at all (the whole text); QD_ERR_NOMEM.  *n is 0 on
+ * entry and counts the variables read. */
+QD_API qd_status qd_qform_vars_read(qd_ctx *ctx, const char *text, const qd_expr **x,
+                                    size_t cap, size_t *n);
+
 #ifdef __cplusplus
 }
 #endif

@@ -103,6 +103,19 @@ QD_API void qd_metric_free(qd_metric *g);
  * orthogonal).  Any output may be NULL.  Each entry simplified. */
 QD_API qd_status qd_metric_force(qd_ctx *ctx, const qd_metric *g, const qd_expr *const *G,
                                  const qd_expr **up, const qd_expr **phys, const qd_expr **ord);
+/* A force by its covariant components read from text, "G1, G2, ..." (split
+ * at the commas outside brackets, qd_state_item_end; a trailing comma ends
+ * the list): exactly g->n expressions into G[0 .. g->n), each read as
+ * qd_read reads with no new symbols (the model's coordinates, velocities,
+ * t and parameters, and names the context already knows).  On failure the
+ * context's error record is located in text (qd_ctx_diag: a caret under
+ * the component that does not read, under the components beyond g->n, or
+ * under the whole text when too few are given), its hint how many to
+ * give; QD_ERR_ARG for the wrong count, the reader's status (QD_ERR_PARSE,
+ * QD_ERR_UNBOUND) for a component, QD_ERR_NOMEM.  G's entries before the
+ * failure are written. */
+QD_API qd_status qd_metric_force_read(qd_ctx *ctx, const qd_metric *g, const char *text,
+                                      const qd_expr **G);
 /* Lowering: low[i] = g_ij A^j for contravariant A (n). */
 QD_API qd_status qd_metric_lower(qd_ctx *ctx, const qd_metric *g, const qd_expr *const *A,
                                  const qd_expr **low);

@@ -32,6 +32,16 @@ typedef struct qd_read_opts {
 QD_API const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
                        qd_read_error *err);
 
+/* A variable of the expression within read from text, as a derivative is
+ * taken by it: a name or a rate ("r", "r'", "theta''"), read against the
+ * context's symbols (no new ones), which must be a symbol that occurs in
+ * within.  NULL on failure, with QD_ERR_ARG ("'zz' does not occur in the
+ * expression": also for text that does not read, or reads as no symbol)
+ * in the context's error record located in text, the whole of it, and a
+ * copy in *err (err may be NULL); QD_ERR_NOMEM. */
+QD_API const qd_expr *qd_read_variable(qd_ctx *ctx, const char *text, const qd_expr *within,
+                                       qd_read_error *err);
+
 /* The one renderer of error records, for every kind of input (a model
  * file, a state string, an expression on the command line):
  *
@@ -54,6 +64,6 @@ QD_API void qd_diag_format(const qd_diag *d, const char *file, const char *text,
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_read (err, opts); qd_diag_format
+ * documented at the function, for: qd_read (err, opts); qd_read_variable (err); qd_diag_format
  * (file, text). An array whose count is 0 may be NULL. */
 #endif

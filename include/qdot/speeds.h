@@ -77,6 +77,7 @@
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
+#include "state.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -172,6 +173,16 @@ QD_API qd_status qd_speeds_eval(qd_ctx *ctx, const qd_speeds_eom *e, size_t nval
 QD_API qd_status qd_speeds_from_velocities(qd_ctx *ctx, const qd_speeds_eom *e, size_t nvals,
                                            const qd_expr *const *syms, const double *vals,
                                            double *u);
+/* A state of m (derived into e) read from text as qd_state_read reads it:
+ * *st is made (qd_state_init: q, q' and t at 0, the parameters at their
+ * values) with e's speeds appended at 0 (qd_state_append), so that text
+ * names q, t, the parameters and the speeds ("x=1, u1=0.3").  A velocity
+ * of e's coordinates named in text is refused, whatever its value: with
+ * speeds the velocities follow from them (QD_ERR_ARG, located under its name in text, the hint
+ * naming the speeds).  Other errors as qd_state_read's, located in text
+ * (qd_ctx_diag).  Free *st with qd_state_free, also after a failure. */
+QD_API qd_status qd_speeds_state_read(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
+                                      const char *text, qd_state *st);
 
 #ifdef __cplusplus
 }

@@ -175,11 +175,7 @@ void qd__cg_name_list(qd_buf *c, const char *P, const char *what, size_t n,
 }
 
 qd_status qd__cg_prefix(qd_ctx *ctx, const char *prefix) {
-    bool ok = prefix && (isalpha((unsigned char)*prefix) || *prefix == '_') &&
-              strlen(prefix) <= 60;
-    for (const char *s = prefix; ok && *s; s++)
-        ok = isalnum((unsigned char)*s) || *s == '_';
-    if (ok)
+    if (prefix && qd_codegen_prefix_valid(prefix))
         return QD_OK;
     qd_ctx_error(ctx, QD_ERR_ARG, "the prefix '%s' is not a C identifier", prefix ? prefix : "");
     return QD_ERR_ARG;

@@ -42,6 +42,8 @@ NULLABLE = {
     'qd_render_speeds': {'o'},
     'qd_render_check': {'o'},
     'qd_render_hamiltonian': {'source', 'at'},  # w31-C: the model's name, symbolic
+    'qd_phase_bracket_print': {'G'},  # w31-H: G NULL is dF/dt
+    'qd_read_variable': {'err'},  # w31-H: the copy of the record not wanted
     'qd_equilibria_find': {'opts'},
     'qd_constrained_equilibria_find': {'opts'},
     'qd_constrained_linear_about': {'indep'},

@@ -440,6 +440,22 @@ static void null_canonical(void **state)
     /* ph NULL */
     qd_phase_free(NULL);
     reset(&F);
+    /* ---- qd_phase_bracket_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(NULL, NULL, F.q, F.q, F.q, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, F.q, F.q, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* F NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, NULL, F.q, F.q, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, F.q, NULL, (qd_format){0}, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_bracket_print(F.ctx, NULL, F.q, F.q, F.q, (qd_format){0}, false, NULL));
+    reset(&F);
     /* ---- qd_canon_kind_name */
     /* no pointer argument */
     /* ---- qd_canonical_examine */
@@ -544,6 +560,17 @@ static void null_codegen(void **state)
     (void)state;
     static fixture F;
     setup(&F);
+    /* ---- qd_codegen_prefix_valid */
+    /* prefix NULL */
+    assert_true(qd_codegen_prefix_valid(NULL) == 0);
+    reset(&F);
+    /* ---- qd_codegen_prefix_from_path */
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_prefix_from_path(NULL, F.c, 1));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_prefix_from_path("q", NULL, 1));
+    reset(&F);
     /* ---- qd_codegen_c */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_codegen_c(NULL, F.model, F.eom, "q", &F.buf, &F.buf));
@@ -908,6 +935,19 @@ static void null_equilibria(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(F.ctx, NULL, 1, NULL));
+    reset(&F);
+    /* ---- qd_equilibria_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(NULL, F.eom, NULL, false, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(F.ctx, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* eq NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(F.ctx, F.eom, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_print(F.ctx, F.eom, NULL, false, NULL));
     reset(&F);
     /* ---- qd_eom_rest_residual */
     /* ctx NULL */
@@ -1692,6 +1732,19 @@ static void null_form(void **state)
     /* f NULL */
     qd_qform_free(NULL);
     reset(&F);
+    /* ---- qd_qform_vars_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(NULL, "q", (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, NULL, (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, "q", NULL, 1, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, "q", (const qd_expr * *)F.e, 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2313,6 +2366,19 @@ static void null_metric(void **state)
     reset(&F);
     /* G NULL */
     assert_int_equal(QD_ERR_ARG, qd_metric_force(F.ctx, NULL, NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* ---- qd_metric_force_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(NULL, NULL, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(F.ctx, NULL, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(F.ctx, NULL, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* G NULL */
+    assert_int_equal(QD_ERR_ARG, qd_metric_force_read(F.ctx, NULL, "q", NULL));
     reset(&F);
     /* ---- qd_metric_lower */
     /* ctx NULL */
@@ -3667,6 +3733,16 @@ static void null_read(void **state)
     reset(&F);
     /* text NULL */
     assert_null(qd_read(F.ctx, NULL, NULL, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_read_variable */
+    /* ctx NULL */
+    assert_null(qd_read_variable(NULL, "q", F.q, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_read_variable(F.ctx, NULL, F.q, (qd_read_error *)(void *)F.blob));
+    reset(&F);
+    /* within NULL */
+    assert_null(qd_read_variable(F.ctx, "q", NULL, (qd_read_error *)(void *)F.blob));
     reset(&F);
     /* ---- qd_diag_format */
     /* d NULL */
@@ -5065,6 +5141,19 @@ static void null_speeds(void **state)
     reset(&F);
     /* u NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_from_velocities(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_speeds_state_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(NULL, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(F.ctx, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(F.ctx, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_state_read(F.ctx, F.model, NULL, NULL, NULL));
     reset(&F);
     teardown(&F);
 }
