@@ -4561,6 +4561,48 @@ static void null_scene(void **state)
     /* f NULL */
     qd_scene_frames_free(NULL);
     reset(&F);
+    /* ---- qd_scene_masses */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(NULL, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* mass NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_scene_links */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(NULL, F.d, 1, 1, F.z, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* pos NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, NULL, 1, 1, F.z, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* springs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, NULL, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* links NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, F.z, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* nlinks NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, F.z, 1, NULL, NULL, F.i));
+    reset(&F);
+    /* plane NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, F.z, 1, NULL, F.z, NULL));
+    reset(&F);
+    /* ---- qd_scene_json */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_json(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_json(NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
