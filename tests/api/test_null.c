@@ -5275,6 +5275,20 @@ static void null_stability(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, "q", 1, 1, F.b, F.b, F.b, F.b, NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_steady_unknown_name */
+    /* s NULL */
+    assert_true(qd_steady_unknown_name(NULL, 1, F.c, 1) == 0);
+    reset(&F);
+    /* out NULL */
+    assert_true(qd_steady_unknown_name(NULL, 1, NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_stability_scan_followed */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_followed(NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_followed(NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
