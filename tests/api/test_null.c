@@ -909,6 +909,16 @@ static void null_equilibria(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(F.ctx, NULL, 1, NULL));
     reset(&F);
+    /* ---- qd_equilibrium_choice_note */
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_choice_note(NULL, NULL, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_choice_note(F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_choice_note(F.eom, NULL, NULL));
+    reset(&F);
     /* ---- qd_eom_rest_residual */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.d));
