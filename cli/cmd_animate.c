@@ -58,47 +58,57 @@ static const cli_spec spec = {
 
 /* ---- the points (qd_scene_choose) and their outputs ----------------------- */
 
-static int masses(cli_sim *c, an_scene *s) {
-    s->mass = malloc((s->npts + 1) * sizeof *s->mass);
-    if (!s->mass)
-        return QD_EXIT_FAIL;
-    for (size_t i = 0; i < s->npts; i++) {
-        s->mass[i] = 1; /* a named position: every one drawn alike */
-        if (s->pts[i].mass &&
-            qd_eval(c->ctx, s->pts[i].mass, c->st.n, c->st.syms, c->st.vals, &s->mass[i]) != QD_OK)
-            return cli_diag_ctx(c->ctx);
-    }
-    return QD_EXIT_OK;
-}
+/* What the page draws (qd_scene), and the arrays it points to, owned here. */
+typedef struct an_scene {
+    qd_scene view;
+    qd_scene_point *pts;
+    double *mass;
+    qd_scene_frames fr;
+    qd_scene_link *links;
+    size_t *springs, nsprings; /* the ends of each --spring (qd_scene_pairs) */
+    size_t *traces;
+} an_scene;
 
-/* The points --draw chooses, --trace and --spring name, and their places
- * as outputs of the run. */
+/* The points --draw chooses, --trace and --spring name, their masses, and
+ * their places as outputs of the run. */
 static int scene_points(cli_sim *c, an_scene *s, const an_args *p) {
-    if (qd_scene_choose(c->ctx, c->mf.model, p->draws.items, p->draws.n, &s->pts, &s->npts) !=
-        QD_OK) {
+    size_t n = 0;
+    if (qd_scene_choose(c->ctx, c->mf.model, p->draws.items, p->draws.n, &s->pts, &n) != QD_OK) {
         const qd_diag *d = qd_ctx_diag(c->ctx);
         if (d->name[0] || d->status == QD_ERR_NOMEM)
             return cli_diag_ctx(c->ctx);
         cli_diag_error("%s: %s", p->a.file, d->message); /* nothing to draw in the file */
         return QD_EXIT_USAGE;
     }
-    /* springs named plus at most a rod per pair, the origin included */
-    size_t maxlinks = p->springs.n + (s->npts + 1) * s->npts / 2;
-    s->links = malloc((maxlinks + 1) * sizeof *s->links);
+    s->view.pts = s->pts;
+    s->view.npts = n;
+    s->mass = malloc((n + 1) * sizeof *s->mass);
     s->traces = malloc((p->traces.n + 1) * sizeof *s->traces);
-    size_t *ends = malloc((2 * p->springs.n + 1) * sizeof *ends);
-    int rc = s->links && s->traces && ends ? masses(c, s) : QD_EXIT_FAIL;
-    if (rc == QD_EXIT_OK &&
-        (qd_scene_named(c->ctx, s->pts, s->npts, p->traces.items, p->traces.n, s->traces) !=
-             QD_OK ||
-         qd_scene_pairs(c->ctx, s->pts, s->npts, p->springs.items, p->springs.n, ends) != QD_OK ||
-         qd_scene_add_outputs(c->ctx, c->s, c->mf.model, s->pts, s->npts) != QD_OK))
-        rc = cli_diag_ctx(c->ctx);
-    s->ntraces = p->traces.n;
-    for (size_t k = 0; rc == QD_EXIT_OK && k < p->springs.n; k++)
-        s->links[s->nlinks++] = (an_link){.a = ends[2 * k], .b = ends[2 * k + 1], .spring = true};
-    free(ends);
-    return rc;
+    s->springs = malloc((2 * p->springs.n + 1) * sizeof *s->springs);
+    if (!s->mass || !s->traces || !s->springs)
+        return QD_EXIT_FAIL;
+    if (qd_scene_masses(c->ctx, s->pts, n, c->st.n, c->st.syms, c->st.vals, s->mass) != QD_OK ||
+        qd_scene_named(c->ctx, s->pts, n, p->traces.items, p->traces.n, s->traces) != QD_OK ||
+        qd_scene_pairs(c->ctx, s->pts, n, p->springs.items, p->springs.n, s->springs) != QD_OK ||
+        qd_scene_add_outputs(c->ctx, c->s, c->mf.model, s->pts, n) != QD_OK)
+        return cli_diag_ctx(c->ctx);
+    s->view.mass = s->mass;
+    s->view.traces = s->traces;
+    s->view.ntraces = p->traces.n;
+    s->nsprings = p->springs.n;
+    return QD_EXIT_OK;
+}
+
+/* The springs, the rods and the drawing plane of the motion (qd_scene_links). */
+static int scene_links(an_scene *s) {
+    qd_status st = qd_scene_links(NULL, s->fr.pos, s->fr.nframes, s->view.npts, s->springs,
+                                  s->nsprings, &s->links, &s->view.nlinks, s->view.plane);
+    if (st != QD_OK) {
+        cli_diag_error("the scene's positions could not be analysed (%s)", qd_status_str(st));
+        return QD_EXIT_FAIL;
+    }
+    s->view.links = s->links;
+    return QD_EXIT_OK;
 }
 
 /* ---- the run: rows kept, then sampled at the frames (qd_scene_sample) ------- */
@@ -162,17 +172,18 @@ static int run(cli_sim *c, an_scene *s) {
         rc = QD_EXIT_FAIL;
     if (rc == QD_EXIT_OK) {
         r.t_end = r.v[(r.n - 1) * r.width]; /* a stop or a contact ends the run early */
-        size_t first = width - qd_scene_noutputs(s->pts, s->npts);
-        if (qd_scene_sample(c->ctx, s->pts, s->npts, r.v, r.n, column(c, "energy"), first,
+        size_t first = width - qd_scene_noutputs(s->pts, s->view.npts);
+        if (qd_scene_sample(c->ctx, s->pts, s->view.npts, r.v, r.n, column(c, "energy"), first,
                             width, c->opts.t0, r.t_end, &s->fr) != QD_OK)
             rc = cli_diag_ctx(c->ctx);
     }
     if (rc == QD_EXIT_OK) {
-        s->energy_error_max = st.energy_error_max;
-        s->conservative = qd_sim_conservative(c->s);
-        s->method = qd_sim_method_name(c->opts.method);
+        s->view.fr = &s->fr;
+        s->view.energy_error_max = st.energy_error_max;
+        s->view.conservative = qd_sim_conservative(c->s);
+        s->view.method = qd_sim_method_name(c->opts.method);
         fprintf(stderr, "qdot: animate: %s, t = %g..%g: %zu frames from %zu steps, %.3g s; "
-                        "energy error %.3g\n", s->method, c->opts.t0, r.t_end, s->fr.nframes,
+                        "energy error %.3g\n", s->view.method, c->opts.t0, r.t_end, s->fr.nframes,
                 st.steps, wall, st.energy_error_max);
     }
     free(r.v);
@@ -184,6 +195,7 @@ static void scene_free(an_scene *s) {
     qd_scene_frames_free(&s->fr);
     free(s->mass);
     free(s->links);
+    free(s->springs);
     free(s->traces);
 }
 
@@ -192,7 +204,7 @@ static int write_page(const an_scene *s, const char *path) {
     FILE *f = cli_out_open(path, &rc);
     if (!f)
         return rc;
-    rc = cli_animate_write(f, s);
+    rc = cli_animate_write(f, &s->view);
     int err = ferror(f) ? errno : 0;
     int crc = cli_out_close(f, path, err);
     return rc != QD_EXIT_OK && !err ? rc : crc;
@@ -218,20 +230,20 @@ int cli_cmd_animate(int argc, char **argv) {
     if (!p.a.t_end)
         p.a.t_end = DEFAULT_T_END;
     cli_sim c = {0};
-    an_scene s = {.model = p.a.file};
+    an_scene s = {.view = {.model = p.a.file}};
     rc = cli_sim_setup(&c, &p.a);
     if (rc == QD_EXIT_OK)
         rc = scene_points(&c, &s, &p);
     if (rc == QD_EXIT_OK)
         rc = run(&c, &s);
     if (rc == QD_EXIT_OK)
-        rc = cli_animate_analyse(&s);
+        rc = scene_links(&s);
     if (rc == QD_EXIT_OK)
         rc = write_page(&s, html);
     if (rc == QD_EXIT_OK)
         fprintf(stderr, "qdot: animate: wrote %s (%zu point%s, %zu link%s, %s)\n", html,
-                s.npts, s.npts == 1 ? "" : "s", s.nlinks, s.nlinks == 1 ? "" : "s",
-                s.plane[0] < 0 ? "3-D" : "in a plane");
+                s.view.npts, s.view.npts == 1 ? "" : "s", s.view.nlinks,
+                s.view.nlinks == 1 ? "" : "s", s.view.plane[0] < 0 ? "3-D" : "in a plane");
     scene_free(&s);
     cli_sim_free(&c);
     return rc;

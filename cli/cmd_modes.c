@@ -230,18 +230,16 @@ static int emit(modes_run *r, bool json) {
     return cli_emit(&b, "modes");
 }
 
-/* Which equilibrium was taken without --about, and that there are others. */
+/* Which equilibrium was taken without --about, and that there are others
+ * (qd_equilibrium_choice_note). */
 static void note_choice(const modes_run *r) {
-    fprintf(stderr, "qdot: note: modes about ");
-    for (size_t j = 0; j < r->lr.e->n; j++)
-        fprintf(stderr, "%s%s = %.12g", j ? ", " : "", qd_expr_name(r->lr.e->q[j]), r->pt->q[j]);
-    fprintf(stderr, ", %s", qd_eq_chosen_name(r->ch.reason));
-    size_t others = r->ch.others;
-    if (others)
-        fprintf(stderr, "; %zu other equilibri%s found%s (qdot equilibria lists them; choose with "
-                "--at-equilibrium N or --about)", others, others == 1 ? "um" : "a",
-                r->ch.found.continuum ? ", not isolated" : "");
-    fprintf(stderr, "\n");
+    qd_buf b = QD_BUF_INIT;
+    if (qd_equilibrium_choice_note(r->lr.e, &r->ch, &b) == QD_OK)
+        fprintf(stderr, "qdot: note: modes about %s%s\n", qd_buf_str(&b),
+                r->ch.others ? " (qdot equilibria lists them; choose with --at-equilibrium N "
+                               "or --about)"
+                             : "");
+    qd_buf_free(&b);
 }
 
 int cli_cmd_modes(int argc, char **argv) {

@@ -178,17 +178,19 @@ static int solve(stab_run *r) {
 
 /* ---- --scan ------------------------------------------------------------------ */
 
-/* Column names: the kept coordinates, Q' and p_Q (room: 64 bytes each). */
-static void scan_names(const qd_steady *s, char (*buf)[64], const char **names) {
-    size_t nk = s->nkeep, nc = s->ncyc;
-    for (size_t j = 0; j < nk; j++)
-        names[j] = qd_expr_name(s->keep[j]);
-    for (size_t c = 0; c < nc; c++) {
-        snprintf(buf[c], sizeof buf[c], "%s'", qd_expr_name(s->cyc[c]));
-        snprintf(buf[nc + c], sizeof buf[nc + c], "p_%s", qd_expr_name(s->cyc[c]));
-        names[nk + c] = buf[c];
-        names[nk + nc + c] = buf[nc + c];
+/* Column names: the kept coordinates, Q' and p_Q (qd_steady_unknown_name),
+ * into one block of text. */
+static char *scan_names(const qd_steady *s, size_t nu, const char **names) {
+    size_t len = 0;
+    for (size_t k = 0; k < nu; k++)
+        len += qd_steady_unknown_name(s, k, NULL, 0) + 1;
+    char *text = malloc(len + 1), *at = text;
+    for (size_t k = 0; text && k < nu; k++) {
+        size_t n = qd_steady_unknown_name(s, k, at, len + 1 - (size_t)(at - text));
+        names[k] = at;
+        at += n + 1;
     }
+    return text;
 }
 
 /* The steady motion followed along a parameter: a table and the changes of
@@ -199,8 +201,8 @@ static int scan(stab_run *r, const stab_args *a) {
     int rc = cli_scan_range(r->ctx, a->scan, name, sizeof name, &lo, &hi);
     size_t nu = r->s->nkeep + 2 * r->s->ncyc;
     const char **names = calloc(nu + 1, sizeof *names);
-    char (*buf)[64] = calloc(2 * r->s->ncyc + 1, sizeof *buf);
-    if (!names || !buf)
+    char *text = names ? scan_names(r->s, nu, names) : NULL;
+    if (!names || !text)
         rc = QD_EXIT_FAIL;
     const qd_steady_given *g = &r->g;
     qd_scan_opts o = {.steps = a->steps, .about = g->held};
@@ -211,17 +213,19 @@ static int scan(stab_run *r, const stab_args *a) {
         rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
         cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
     } else if (rc == QD_EXIT_OK) {
-        scan_names(r->s, buf, names);
-        const char *how = r->s->driven ? "rates maintained: V - T0" : "momenta free: Routhian";
-        char followed[160];
-        snprintf(followed, sizeof followed, "the steady motion (%s); %s stability", how,
-                 sc.damped ? "with the model's damping" : "ordinary");
-        cli_scan_view v = {name, names, followed, "steady_motion"};
-        rc = cli_scan_emit(&v, &sc, a->json);
+        qd_buf followed = QD_BUF_INIT;
+        if (qd_stability_scan_followed(r->s, sc.damped, &followed) != QD_OK) {
+            cli_diag_error("out of memory");
+            rc = QD_EXIT_FAIL;
+        } else {
+            cli_scan_view v = {name, names, qd_buf_str(&followed), "steady_motion"};
+            rc = cli_scan_emit(&v, &sc, a->json);
+        }
+        qd_buf_free(&followed);
     }
     qd_scan_free(&sc);
     free(names);
-    free(buf);
+    free(text);
     return rc;
 }
 

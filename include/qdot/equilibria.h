@@ -165,6 +165,16 @@ QD_API qd_status qd_equilibrium_put_value(qd_ctx *ctx, const qd_equilibrium *p, 
 QD_API qd_status qd_equilibria_print(qd_ctx *ctx, const qd_eom *e, const qd_equilibria *eq,
                                      bool json, qd_buf *out);
 
+/* The automatic choice c said in one line, appended to out: the point,
+ * "theta = 0, phi = 1.5" (the names of e's coordinates, each value to 12
+ * significant digits, 0 at or below 1e-12: qd_buf_put_result, scale 1),
+ * then ", " and what the choice means (qd_eq_chosen_name), then, when
+ * others were found, "; 2 other equilibria found" (", not isolated" when
+ * some are not).  QD_ERR_ARG when c has no point or e is not of c's size;
+ * QD_ERR_NOMEM when out failed. */
+QD_API qd_status qd_equilibrium_choice_note(const qd_eom *e, const qd_equilibrium_choice *c,
+                                            qd_buf *out);
+
 /* max_j |f_j| at the state syms/vals (as for qd_eom_eval; give the
  * velocities as 0 for a point at rest): how far the point is from an
  * equilibrium, in generalized-force units.  Fails as qd_eom_eval does (a

@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include "expr.h"
 #include "model.h"
+#include "print.h"
 #include "sim.h"
 #include "status.h"
 
@@ -149,6 +150,62 @@ QD_API qd_status qd_scene_sample(qd_ctx *ctx, const qd_scene_point *pts, size_t 
                                  size_t width, double t0, double t_end, qd_scene_frames *out);
 QD_API void qd_scene_frames_free(qd_scene_frames *f);
 
+
+/* ---- the scene of a picture: masses, links, its data as JSON ------------ */
+
+/* Each point's mass, evaluated at the values vals of the nsyms symbols syms
+ * (the model's parameters: qd_eval), into mass[0, n); a named position has
+ * none and weighs 1 (every one drawn alike).  Errors: qd_eval's. */
+QD_API qd_status qd_scene_masses(qd_ctx *ctx, const qd_scene_point *pts, size_t n, size_t nsyms,
+                                 const qd_expr *const *syms, const double *vals, double *mass);
+
+typedef struct qd_scene_link {
+    size_t a, b;           /* point indices, or QD_SCENE_ORIGIN */
+    bool spring;           /* a zigzag the caller asked for; else a rigid rod */
+} qd_scene_link;
+
+/* The links of a sampled motion (pos as qd_scene_analyse takes it): first
+ * the nsprings springs springs[2k], springs[2k + 1] (qd_scene_pairs), then
+ * the rods qd_scene_analyse finds among the other pairs; *links is
+ * malloc'd (free() it; never NULL on success), *nlinks its count, and
+ * plane[0], plane[1] the drawing plane's axes (-1 -1: 3-D).  Errors:
+ * qd_scene_analyse's (a position not finite, no frames), QD_ERR_NOMEM. */
+QD_API qd_status qd_scene_links(qd_ctx *ctx, const double *pos, size_t nframes, size_t npts,
+                                const size_t *springs, size_t nsprings, qd_scene_link **links,
+                                size_t *nlinks, int plane[2]);
+
+/* A picture's data: what qd_scene_json writes.  The arrays are the
+ * caller's; mass per point (qd_scene_masses), traces the points whose
+ * paths are drawn (qd_scene_named). */
+typedef struct qd_scene {
+    const char *model;            /* a title (the model's file) */
+    const char *method;           /* the integrator's name (qd_sim_method_name) */
+    const qd_scene_point *pts;
+    size_t npts;
+    const double *mass;
+    const qd_scene_frames *fr;    /* the points at the frames (qd_scene_sample) */
+    const qd_scene_link *links;
+    size_t nlinks;
+    const size_t *traces;
+    size_t ntraces;
+    int plane[2];                 /* qd_scene_links' plane */
+    double energy_error_max;      /* the run's measure (qd_sim_stats) */
+    bool conservative;            /* qd_sim_conservative */
+} qd_scene;
+
+/* The scene as one JSON object appended to out, the data of `qdot
+ * animate`'s page: {"model", "method", "plane": [a, b], "conservative",
+ * "energy_error_max", "points": [{"name", "body", "mass"}...], "links":
+ * [[a, b, spring]...] (an end -1 is the origin, spring 0 or 1), "traces":
+ * [i...], "t": [per frame], "energy_error": [per frame] (only with the
+ * frames' energy), "pos": [frame][point][x, y, z] flat, "rot":
+ * [frame][body][9] flat}.  Numbers to 7 significant digits (a picture
+ * needs no more), null for one not finite; strings escape '"', '\', '<'
+ * and control characters as \u00XX, so that the text may sit inside an
+ * HTML <script>.  QD_ERR_NOMEM when out ran out of memory; model and
+ * method NULL are written as "". */
+QD_API qd_status qd_scene_json(const qd_scene *s, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -159,5 +216,7 @@ QD_API void qd_scene_frames_free(qd_scene_frames *f);
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_scene_points (ctx); qd_scene_analyse
  * (ctx, skip); qd_scene_choose, qd_scene_named, qd_scene_pairs and
- * qd_scene_sample (ctx). An array whose count is 0 may be NULL. */
+ * qd_scene_sample (ctx); qd_scene_masses and qd_scene_links (ctx, and
+ * syms, vals or springs with a count of 0); qd_scene_json's arrays with a
+ * count of 0, its model and method. An array whose count is 0 may be NULL. */
 #endif

@@ -277,6 +277,22 @@ QD_API qd_status qd_stability_scan(qd_ctx *ctx, const qd_steady *s, const qd_mod
                                    const qd_steady_point *start, const qd_scan_opts *opts,
                                    qd_scan *out);
 
+
+/* The name of unknown k of the point u = (x, w, p) of qd_stability_scan
+ * (k < nkeep + 2 ncyc): a kept coordinate's name, then "Q'" for each cyclic
+ * coordinate Q, then "p_Q": the columns of a scan's table.  Written as
+ * snprintf writes (at most cap - 1 characters and a NUL into out; out may
+ * be NULL when cap is 0); returns the length of the whole name, or 0 for k
+ * out of range or s NULL. */
+QD_API size_t qd_steady_unknown_name(const qd_steady *s, size_t k, char *out, size_t cap);
+
+/* What a scan of s follows, one line for its table: "the steady motion
+ * (momenta free: Routhian); ordinary stability", with "rates maintained:
+ * V - T0" for driven rates and "with the model's damping" when the scan
+ * judged damped stability (qd_scan's damped).  Appended to out; QD_ERR_NOMEM
+ * when out ran out of memory. */
+QD_API qd_status qd_stability_scan_followed(const qd_steady *s, bool damped, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif

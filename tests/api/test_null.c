@@ -949,6 +949,16 @@ static void null_equilibria(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_equilibria_print(F.ctx, F.eom, NULL, false, NULL));
     reset(&F);
+    /* ---- qd_equilibrium_choice_note */
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_choice_note(NULL, NULL, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_choice_note(F.eom, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibrium_choice_note(F.eom, NULL, NULL));
+    reset(&F);
     /* ---- qd_eom_rest_residual */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_rest_residual(NULL, F.eom, 1, (const qd_expr * const *)F.e, F.d, F.d));
@@ -4637,6 +4647,48 @@ static void null_scene(void **state)
     /* f NULL */
     qd_scene_frames_free(NULL);
     reset(&F);
+    /* ---- qd_scene_masses */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(NULL, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, F.d));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, NULL, F.d, F.d));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, NULL, F.d));
+    reset(&F);
+    /* mass NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_scene_links */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(NULL, F.d, 1, 1, F.z, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* pos NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, NULL, 1, 1, F.z, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* springs NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, NULL, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* links NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, F.z, 1, NULL, F.z, F.i));
+    reset(&F);
+    /* nlinks NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, F.z, 1, NULL, NULL, F.i));
+    reset(&F);
+    /* plane NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_links(F.ctx, F.d, 1, 1, F.z, 1, NULL, F.z, NULL));
+    reset(&F);
+    /* ---- qd_scene_json */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_json(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_json(NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -5321,6 +5373,20 @@ static void null_stability(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_stability_scan(F.ctx, NULL, F.model, "q", 1, 1, F.b, F.b, F.b, F.b, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_steady_unknown_name */
+    /* s NULL */
+    assert_true(qd_steady_unknown_name(NULL, 1, F.c, 1) == 0);
+    reset(&F);
+    /* out NULL */
+    assert_true(qd_steady_unknown_name(NULL, 1, NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_stability_scan_followed */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_followed(NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_followed(NULL, false, NULL));
     reset(&F);
     teardown(&F);
 }
