@@ -135,7 +135,7 @@ static void test_largest_only(void **state) {
     qd_buf b = QD_BUF_INIT;
     assert_int_equal(qd_lyap_json(&r.r, &b), QD_OK);
     const char *s = qd_buf_str(&b);
-    double ex[1];
+    double ex[1] = {NAN};
     assert_true(numbers(s, "exponents", 1, ex));
     assert_true(fabs(ex[0] - 1) < 1e-3);
     assert_null(member(s, "sum")); /* not all 2n exponents */
