@@ -153,7 +153,7 @@ static int run(qd_ctx *ctx, const lin_args *a) {
         rc = read_about(ctx, mf.model, a->about, &pt);
     if (rc == QD_EXIT_OK &&
         qd_linearize(ctx, e, mf.model, pt.n, pt.syms, pt.vals, &s) != QD_OK) {
-        rc = qd_ctx_status(ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        rc = cli_exit(qd_ctx_status(ctx));
         cli_diag_error("%s", qd_ctx_message(ctx));
     }
     if (rc == QD_EXIT_OK && a->lqr)

@@ -210,7 +210,7 @@ static int scan(stab_run *r, const stab_args *a) {
     if (rc == QD_EXIT_OK && qd_stability_scan(r->ctx, r->s, r->mf.model, name, lo, hi, g->xfix,
                                               g->wfix, g->pfix, g->pguess, &g->start, &o,
                                               &sc) != QD_OK) {
-        rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        rc = cli_exit(qd_ctx_status(r->ctx));
         cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
     } else if (rc == QD_EXIT_OK) {
         qd_buf followed = QD_BUF_INIT;

@@ -105,7 +105,7 @@ static int scan(sp_run *r, const char *range, const char *about, size_t steps, b
     qd_scan sc = {0};
     if (rc == QD_EXIT_OK && qd_speeds_modes_scan(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, what,
                                                  a, b, &o, &sc) != QD_OK) {
-        rc = qd_ctx_status(r->ctx) == QD_ERR_ARG ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        rc = cli_exit(qd_ctx_status(r->ctx));
         cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
     } else if (rc == QD_EXIT_OK) {
         char followed[1024];
