@@ -13,11 +13,6 @@
 #include "qdot/routh.h"
 #include "state.h"
 
-int cli_bad_option(const char *arg, const char *usage) {
-    cli_diag_error("unknown option or missing value: '%s'\n%s", arg, usage);
-    return QD_EXIT_USAGE;
-}
-
 typedef int (*file_loader)(qd_ctx *, const char *, const qd_model_opts *, cli_model_file *);
 
 static int load_with(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
@@ -139,27 +134,6 @@ int cli_symmetry(cli_model_file *mf, const char *opt, const char *text,
 int cli_integral(cli_model_file *mf, const char *opt, const char *text,
                  const char *label) {
     return add_statement(mf, opt, "integral", label, text);
-}
-
-static bool model_uses(const qd_model *m, const char *name) {
-    for (size_t i = 0; i < qd_model_ncoords(m); i++)
-        if (!strcmp(qd_expr_name(qd_model_coord(m, i)), name))
-            return true;
-    for (size_t i = 0; i < qd_model_nparams(m); i++)
-        if (!strcmp(qd_expr_name(qd_model_param(m, i)), name))
-            return true;
-    for (size_t i = 0; i < qd_model_nfunctions(m); i++)
-        if (!strcmp(qd_model_function_name(m, i), name))
-            return true;
-    return !strcmp(name, "t");
-}
-
-cli_name cli_script_name(const qd_model *m, const char *base) {
-    cli_name n;
-    snprintf(n.s, sizeof n.s, "%s", base);
-    for (size_t len = strlen(n.s); model_uses(m, n.s) && len + 1 < sizeof n.s; len++)
-        n.s[len] = '_', n.s[len + 1] = '\0';
-    return n;
 }
 
 /* ---- --ignore ----------------------------------------------------------------- */

@@ -15,9 +15,6 @@
 
 #define QD_CLI_MAX_LIST 64
 
-/* The error for argv[i], an unknown option or one without its value. */
-int cli_bad_option(const char *arg, const char *usage);
-
 /* FILE read and parsed with the --set list as parameter values (qd_model_opts:
  * parameters defined from a set one follow it); fix: the set parameters
  * are written into the expressions as numbers (the symbolic commands print
@@ -44,7 +41,6 @@ int cli_field_eom(const char *file, size_t nsets, const char *const *sets, bool 
 int cli_field_modes(const char *file, size_t nsets, const char *const *sets, size_t count,
                     double tol, bool json);
 
-
 /* --ignore LIST (routh, orbit): the comma-separated coordinates into ign
  * (at most cap), each once; prints its own errors. */
 int cli_ignore_parse(qd_ctx *ctx, const qd_model *m, const char *list, const qd_expr **ign,
@@ -65,11 +61,5 @@ int cli_symmetry(cli_model_file *mf, const char *opt, const char *text,
 int cli_integral(cli_model_file *mf, const char *opt, const char *text,
                  const char *label);
 
-/* The name of an output of a printed script (M, f, H, L, ...): base, with
- * underscores appended while the model uses the name for a coordinate, a
- * parameter or a function, or it is t (a cart of mass M must not be
- * overwritten by the matrix, a length L by the Lagrangian). */
-typedef struct cli_name { char s[32]; } cli_name;
-cli_name cli_script_name(const qd_model *m, const char *base);
 
 #endif

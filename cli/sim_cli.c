@@ -249,13 +249,6 @@ int cli_sim_fail(cli_sim *c, qd_status st) {
 
 /* ---- qdot sweep (issue 21) -------------------------------------------------- */
 
-/* One more output column, read as --output reads it and named by its text:
- * what a sweep's max:EXPR, min:EXPR and escape:EXPR>VALUE measure. */
-int cli_sim_output(cli_sim *c, const char *expr) {
-    return qd_sim_setup_outputs(c->set, expr) == QD_OK ? QD_EXIT_OK
-                                                         : fail_in(c, "--measure", expr);
-}
-
 int cli_sim_output_in(cli_sim *c, const char *what, const char *full, size_t a, size_t b) {
     char *name = malloc(b - a + 1);
     if (!name)

@@ -83,10 +83,6 @@ int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len
  * K) as the input's expression; an exit status (sim_lqr_cli.c). */
 int cli_sim_input_lqr(cli_sim *c, const char *name);
 
-/* qdot sweep: one more output column EXPR (read as --output reads it,
- * named by its text), before qd_sim_compile; an exit status. */
-int cli_sim_output(cli_sim *c, const char *expr);
-
 /* The same for text full[a, b) of a user's option what (--measure): errors
  * shown in full, at their place. */
 int cli_sim_output_in(cli_sim *c, const char *what, const char *full, size_t a, size_t b);

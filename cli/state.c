@@ -9,34 +9,6 @@
 #include <string.h>
 #include "cli.h"
 
-double cli_state_value(const qd_expr *number) {
-    long p, q;
-    /* both exact in a double, so the one division rounds correctly */
-    if (qd_rational_get(number, &p, &q) && fabs((double)p) <= 0x1p53 && (double)q <= 0x1p53)
-        return (double)p / (double)q;
-    return qd_number_value(number);
-}
-
-double cli_param_value(const qd_model *m, size_t i) {
-    double x;
-    qd_model_param_number(m, i, &x); /* NaN when it has none */
-    return x;
-}
-
-void cli_state_put_double(qd_buf *b, double x) {
-    qd_buf_put_double(b, x == 0 ? 0.0 : x); /* -0 reads "0" */
-}
-
-void cli_state_put_result(qd_buf *b, double x) {
-    char s[40];
-    if (fabs(x) < 1e-13) {
-        qd_buf_puts(b, "0");
-        return;
-    }
-    snprintf(s, sizeof s, "%.12g", x);
-    qd_buf_puts(b, s);
-}
-
 int cli_state_diag(const qd_ctx *ctx, const char *what, const char *text) {
     const qd_diag *d = qd_ctx_diag(ctx);
     if (!d->located)

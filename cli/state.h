@@ -16,22 +16,6 @@
  * then what a command appends: the momenta, the speeds). */
 typedef qd_state cli_state;
 
-/* A number node as the nearest double: an exact rational p/q that fits is
- * computed as (double)p/q, correctly rounded (9.81 stays 9.81). */
-double cli_state_value(const qd_expr *number);
-
-/* Parameter i's value as a double, also when it is written as an
- * expression of constants (pi/6); NaN if it cannot be evaluated. */
-double cli_param_value(const qd_model *m, size_t i);
-
-/* x in its shortest %g form that reads back to the same double. */
-void cli_state_put_double(qd_buf *b, double x);
-/* A computed result for a reader (text output of equilibria, modes,
- * stability): 12 significant digits, and 0 below 1e-13, so that a root
- * found by iteration reads 0.49, not 0.48999999999999927.  JSON keeps every
- * digit (cli_state_put_double). */
-void cli_state_put_result(qd_buf *b, double x);
-
 /* The context's error after reading the option what's text: with a caret
  * under its place when it has one.  Returns the exit status. */
 int cli_state_diag(const qd_ctx *ctx, const char *what, const char *text);
