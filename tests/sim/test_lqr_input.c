@@ -52,8 +52,9 @@ static int tilt_sink(void *data, int event, const double *row) {
 }
 
 /* th's largest |value| over a run of the cart from th = 0.2 (feedback or
- * not), and over t >= t_late. */
-static qd_status run_cart(bool lqr, double t_end, tilt *r, qd_sim_lqr *l) {
+ * not), and over t >= t_late; with the feedback, its note into note while
+ * the context that holds its names lives. */
+static qd_status run_cart(bool lqr, double t_end, tilt *r, qd_sim_lqr *l, qd_buf *note) {
     qd_ctx *ctx = qd_ctx_new();
     qd_model *m = qd_model_parse(ctx, cart, NULL);
     qd_sim_setup *s = qd_sim_setup_new(ctx, m, false);
@@ -77,6 +78,8 @@ static qd_status run_cart(bool lqr, double t_end, tilt *r, qd_sim_lqr *l) {
     assert_true(r->col < nc);
     qd_sim_stats st;
     qd_status rs = qd_sim_run(sim, &o, tilt_sink, r, &st, NULL);
+    if (lqr && note)
+        assert_int_equal(qd_sim_lqr_note(l, "p: ", note), QD_OK);
     qd_sim_setup_free(s);
     qd_model_free(m);
     qd_ctx_free(ctx);
@@ -87,7 +90,8 @@ static void test_lqr_keeps_pendulum_up(void **state) {
     (void)state;
     qd_sim_lqr l;
     tilt r = {.t_late = 8};
-    assert_int_equal(run_cart(true, 10, &r, &l), QD_OK);
+    qd_buf b = QD_BUF_INIT;
+    assert_int_equal(run_cart(true, 10, &r, &l, &b), QD_OK);
     /* the loop is stable: every closed-loop eigenvalue in the left half plane */
     double a = l.r.eig_re[0];
     for (size_t i = 0; i < l.ss.nx; i++)
@@ -97,8 +101,6 @@ static void test_lqr_keeps_pendulum_up(void **state) {
     assert_true(r.late < 0.2 * 1e-2);               /* and is upright at the end */
     assert_true(r.last < 0.2 * 50 * exp(a * 10));   /* decaying at the rate of the loop */
     /* the note says the design's gain, entry by entry, in the states' order */
-    qd_buf b = QD_BUF_INIT;
-    assert_int_equal(qd_sim_lqr_note(&l, "p: ", &b), QD_OK);
     const char *p = strstr(qd_buf_str(&b), "K =");
     assert_non_null(p);
     p += 3;
@@ -114,7 +116,7 @@ static void test_lqr_keeps_pendulum_up(void **state) {
     qd_sim_lqr_free(&l);
     /* without the feedback it falls: |th| passes pi/2 well within 3 s */
     tilt open = {.t_late = 0};
-    assert_int_equal(run_cart(false, 3, &open, NULL), QD_OK);
+    assert_int_equal(run_cart(false, 3, &open, NULL, NULL), QD_OK);
     assert_true(open.worst > 1.5);
 }
 
