@@ -9,6 +9,7 @@
 #include "qdot/json.h"
 #include "qdot/print.h"
 #include "../base/args.h"
+#include "linear.h"
 
 const char *qd_eq_chosen_name(qd_eq_chosen c) {
     switch (c) {
@@ -80,24 +81,38 @@ static qd_status list_text(qd_ctx *ctx, const qd_eom *e, const qd_equilibria *eq
     return st == QD_ERR_NOMEM ? QD_OK : st; /* the buffer's failure is the caller's */
 }
 
-static void point_json(qd_ctx *ctx, const qd_eom *e, const qd_equilibrium *p, qd_json *j) {
-    qd_json_begin_object(j);
+void qd__lin_eq_point_json(qd_ctx *ctx, qd_json *j, const qd_equilibrium *p, size_t n,
+                           const qd_expr *const *q, const size_t *idx) {
     qd_json_key(j, "equilibrium");
     qd_json_begin_object(j);
-    for (size_t k = 0; k < e->n; k++) {
-        qd_json_key(j, qd_expr_name(e->q[k]));
+    for (size_t k = 0; k < n; k++) {
+        qd_json_key(j, qd_expr_name(q[idx ? idx[k] : k]));
         qd_json_number(j, p->q[k]);
     }
     qd_json_end_object(j);
-    if (p->exact) {
-        qd_json_key(j, "exact");
-        qd_json_begin_object(j);
-        for (size_t k = 0; k < e->n; k++) {
-            qd_json_key(j, qd_expr_name(e->q[k]));
-            qd_json_expr(j, ctx, p->exact[k]);
-        }
-        qd_json_end_object(j);
+    if (!p->exact)
+        return;
+    qd_json_key(j, "exact");
+    qd_json_begin_object(j);
+    for (size_t k = 0; k < n; k++) {
+        qd_json_key(j, qd_expr_name(q[idx ? idx[k] : k]));
+        qd_json_expr(j, ctx, p->exact[k]);
     }
+    qd_json_end_object(j);
+}
+
+void qd__lin_eq_json_head(qd_json *j, const qd_equilibria *eq) {
+    qd_json_key(j, "method");
+    qd_json_string(j, eq->method);
+    qd_json_key(j, "exact");
+    qd_json_bool(j, eq->exact);
+    qd_json_key(j, "continuum");
+    qd_json_bool(j, eq->continuum);
+}
+
+static void point_json(qd_ctx *ctx, const qd_eom *e, const qd_equilibrium *p, qd_json *j) {
+    qd_json_begin_object(j);
+    qd__lin_eq_point_json(ctx, j, p, e->n, e->q, NULL);
     qd_json_key(j, "kind");
     qd_json_string(j, qd_eq_kind_name(p->kind));
     qd_json_key(j, "hessian_signs");
@@ -117,12 +132,7 @@ static bool list_json(qd_ctx *ctx, const qd_eom *e, const qd_equilibria *eq, qd_
     qd_json j;
     qd_json_init(&j, b);
     qd_json_begin_object(&j);
-    qd_json_key(&j, "method");
-    qd_json_string(&j, eq->method);
-    qd_json_key(&j, "exact");
-    qd_json_bool(&j, eq->exact);
-    qd_json_key(&j, "continuum");
-    qd_json_bool(&j, eq->continuum);
+    qd__lin_eq_json_head(&j, eq);
     qd_json_key(&j, "equilibria");
     qd_json_begin_array(&j);
     for (size_t i = 0; i < eq->count; i++)

@@ -116,4 +116,15 @@ struct qd_equilibria_opts;
 qd_status qd__lin_eq_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                      const struct qd_equilibria_opts *o, bool *angle, double *lo, double *hi);
 
+/* ---- equilibria as JSON (equilibria_print.c), shared with the speeds
+ * printer (speeds_print.c) ------------------------------------------------ */
+struct qd_json;
+/* "method", "exact", "continuum" of eq. */
+void qd__lin_eq_json_head(struct qd_json *j, const qd_equilibria *eq);
+/* The keys "equilibrium" ({name: value}) and, when p was found exactly,
+ * "exact" ({name: expression}) of p, whose k-th value is coordinate
+ * q[idx[k]] (idx NULL: q[k]), n of them, into the open object of j. */
+void qd__lin_eq_point_json(qd_ctx *ctx, struct qd_json *j, const qd_equilibrium *p, size_t n,
+                           const qd_expr *const *q, const size_t *idx);
+
 #endif

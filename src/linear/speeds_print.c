@@ -11,6 +11,7 @@
 #include "qdot/print.h"
 #include "qdot/speeds.h"
 #include "../base/args.h"
+#include "linear.h"
 
 #include <math.h>
 
@@ -100,12 +101,7 @@ static bool eq_json(qd_ctx *ctx, const qd_speeds_eom *e, const qd_speeds_equilib
     qd_json j;
     qd_json_init(&j, b);
     qd_json_begin_object(&j);
-    qd_json_key(&j, "method");
-    qd_json_string(&j, eq->method);
-    qd_json_key(&j, "exact");
-    qd_json_bool(&j, eq->exact);
-    qd_json_key(&j, "continuum");
-    qd_json_bool(&j, eq->continuum);
+    qd__lin_eq_json_head(&j, eq);
     qd_json_key(&j, "speeds");
     qd_json_begin_array(&j);
     for (size_t k = 0; k < e->m; k++)
@@ -122,22 +118,7 @@ static bool eq_json(qd_ctx *ctx, const qd_speeds_eom *e, const qd_speeds_equilib
     for (size_t i = 0; i < eq->count; i++) {
         const qd_equilibrium *p = &eq->pts[i];
         qd_json_begin_object(&j);
-        qd_json_key(&j, "equilibrium");
-        qd_json_begin_object(&j);
-        for (size_t k = 0; k < s->nsolved; k++) {
-            qd_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
-            qd_json_number(&j, p->q[k]);
-        }
-        qd_json_end_object(&j);
-        if (p->exact) {
-            qd_json_key(&j, "exact");
-            qd_json_begin_object(&j);
-            for (size_t k = 0; k < s->nsolved; k++) {
-                qd_json_key(&j, qd_expr_name(e->q[s->solved[k]]));
-                qd_json_expr(&j, ctx, p->exact[k]);
-            }
-            qd_json_end_object(&j);
-        }
+        qd__lin_eq_point_json(ctx, &j, p, s->nsolved, e->q, s->solved);
         qd_json_key(&j, "residual");
         qd_json_number(&j, p->residual);
         qd_json_end_object(&j);
