@@ -96,4 +96,24 @@ bool qd__num_quad_upper(qd__num_fn f, void *data, double a, double tol, qd__num_
 extern const double qd__num_dp5_c[7], qd__num_dp5_a[7][6], qd__num_dp5_e[7],
     qd__num_dp5_p[7][4];
 
+/* A system y' = f(t, y) of n equations: false when f is undefined there. */
+typedef bool (*qd__num_ode_fn)(void *data, double t, const double *y, double *dy);
+
+/* An explicit Runge-Kutta method (rk.c): nodes c, the strictly lower
+ * stages x stages matrix a (row-major), the weights b / bden (integer
+ * numerators over a common denominator keep the classical sums exact). */
+typedef struct qd__num_rk {
+    int stages;
+    const double *c, *a, *b;
+    double bden;
+} qd__num_rk;
+
+/* The classical fourth-order method (b = (1, 2, 2, 1) / 6). */
+extern const qd__num_rk qd__num_rk4;
+
+/* One step of m from (t, y) by h, y replaced by the result; w holds
+ * (stages + 1) n doubles.  False when f fails at a stage (y then as it was). */
+bool qd__num_rk_step(const qd__num_rk *m, qd__num_ode_fn f, void *data, size_t n, double t,
+                     double h, double *y, double *w);
+
 #endif

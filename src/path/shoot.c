@@ -7,7 +7,8 @@
  * initial velocities v0 (and the time T at fixed energy) and the state
  * s_k = (q, q') at the start of each later segment; residuals: the jumps
  * phi_k(s_k) - s_(k+1) between segments, q(t1) - q1 at the end (and
- * h(q0, v0) - E).  Each segment is integrated by classical RK4 with the
+ * h(q0, v0) - E).  Each segment is integrated by classical RK4 (src/num's
+ * tableau, qd__num_rk_step) with the
  * state, the action S (an extra state, S' = L) and the 2n x 2n sensitivity
  * Phi = d(state)/d(start) from the variational equations
  * Phi' = [0 I; dq''/dq dq''/dq'] Phi; the derivatives of q'' are central
@@ -306,28 +307,24 @@ static size_t aug_size(const sys *s, bool sens) {
     return s->ns + 1 + s->nm + (sens ? (s->ns + s->nm) * s->ns : 0);
 }
 
-/* One classical RK4 step of y (augmented, in place) from t by h. */
+/* The augmented right-hand side as num's ODE callback. */
+typedef struct rk_sys {
+    sys *s;
+    bool sens;
+    double *tmp;
+} rk_sys;
+
+static bool rk_rhs(void *data, double t, const double *y, double *dy) {
+    rk_sys *r = data;
+    return rhs(r->s, t, y, dy, r->sens, r->tmp);
+}
+
+/* One classical RK4 step (num's tableau) of y (augmented, in place) from t
+ * by h; w: the stages and the stage state (5 na), then rhs's scratch. */
 static bool rk4_step(sys *s, double *y, double t, double h, bool sens, double *w) {
     size_t na = aug_size(s, sens);
-    double *k1 = w, *k2 = w + na, *k3 = w + 2 * na, *k4 = w + 3 * na, *yt = w + 4 * na;
-    double *tmp = w + 5 * na;
-    if (!rhs(s, t, y, k1, sens, tmp))
-        return false;
-    for (size_t j = 0; j < na; j++)
-        yt[j] = y[j] + h / 2 * k1[j];
-    if (!rhs(s, t + h / 2, yt, k2, sens, tmp))
-        return false;
-    for (size_t j = 0; j < na; j++)
-        yt[j] = y[j] + h / 2 * k2[j];
-    if (!rhs(s, t + h / 2, yt, k3, sens, tmp))
-        return false;
-    for (size_t j = 0; j < na; j++)
-        yt[j] = y[j] + h * k3[j];
-    if (!rhs(s, t + h, yt, k4, sens, tmp))
-        return false;
-    for (size_t j = 0; j < na; j++)
-        y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-    return true;
+    rk_sys r = {s, sens, w + 5 * na};
+    return qd__num_rk_step(&qd__num_rk4, rk_rhs, &r, na, t, h, y, w);
 }
 
 /* The step grid of [ta, tb]: steps of at most hmax. */
