@@ -22,16 +22,13 @@ bool qd__num_rk_step(const qd__num_rk *m, qd__num_ode_fn f, void *data, size_t n
         const double *ai = m->a + i * s;
         const double *arg = y;
         if (i > 0) {
-            /* zero weights are skipped: a row with one entry is y + h a k,
-             * and a non-finite stage never meets a zero */
+            /* zero weights are skipped, so a non-finite stage never
+             * meets a zero (0 + x is x: the classical sums are kept) */
             for (size_t j = 0; j < n; j++) {
                 double sum = 0;
-                bool any = false;
                 for (size_t l = 0; l < i; l++)
-                    if (ai[l] != 0) {
-                        sum = any ? sum + ai[l] * w[l * n + j] : ai[l] * w[l * n + j];
-                        any = true;
-                    }
+                    if (ai[l] != 0)
+                        sum += ai[l] * w[l * n + j];
                 yt[j] = y[j] + h * sum;
             }
             arg = yt;
@@ -42,12 +39,9 @@ bool qd__num_rk_step(const qd__num_rk *m, qd__num_ode_fn f, void *data, size_t n
     double hb = h / m->bden;
     for (size_t j = 0; j < n; j++) {
         double sum = 0;
-        bool any = false;
         for (size_t i = 0; i < s; i++)
-            if (m->b[i] != 0) {
-                sum = any ? sum + m->b[i] * w[i * n + j] : m->b[i] * w[i * n + j];
-                any = true;
-            }
+            if (m->b[i] != 0)
+                sum += m->b[i] * w[i * n + j];
         y[j] += hb * sum;
     }
     return true;
