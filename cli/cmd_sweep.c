@@ -23,8 +23,6 @@
 #include "progress.h"
 #include "args.h"
 #include "sim_cli.h"
-#include "sweep_hdf5.h"
-#include "sweep_mpi.h"
 
 typedef struct sweep_args {
     cli_sim_args sim;
@@ -258,9 +256,10 @@ static const struct {
                        qd_buf *out);
 } writers[] = {{"csv", qd_sweep_csv}, {"json", qd_sweep_json}, {"hdf5", NULL}};
 
-/* --format hdf5 (cli/sweep_hdf5.h): the rows with how the sweep was made. */
-static int write_hdf5(const sweep_args *a, const sweep_result *r) {
-    char n[32], seed[32], err[512];
+/* --format hdf5 (qd_sweep_hdf5): the rows with how the sweep was made. */
+static int write_hdf5(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a,
+                      const sweep_result *r) {
+    char n[32], seed[32];
     snprintf(n, sizeof n, "%zu", a->n);
     snprintf(seed, sizeof seed, "%.0f", a->seed);
     const char *names[] = {"model", "measures", a->grid ? "grid" : a->random ? "random" : "list",
@@ -268,35 +267,31 @@ static int write_hdf5(const sweep_args *a, const sweep_result *r) {
     const char *values[] = {a->sim.file, a->measure, a->grid ? a->grid : a->random ? a->random
                                                                                     : a->list,
                             n, seed};
-    cli_h5_sweep h = {.nruns = r->nruns, .ncols = r->ncols, .names = r->cols, .rows = r->rows,
-                      .outcome = r->outcome,
-                      .nattrs = a->random ? 5 : 3, .attr_names = names, .attr_values = values};
-    if (cli_hdf5_write_sweep(a->sim.out, &h, err, sizeof err))
-        return QD_EXIT_OK;
-    cli_diag_error("%s", err);
-    return QD_EXIT_FAIL;
+    if (qd_sweep_hdf5(ctx, w, r->rows, r->outcome, a->random ? 5 : 3, names, values,
+                      a->sim.out) != QD_OK)
+        return cli_diag_ctx(ctx);
+    return QD_EXIT_OK;
 }
 
-/* Before the runs: hdf5 is written to a file, by a qdot built with HDF5. */
+/* Before the runs: hdf5 is written to a file, by a qdot with its module. */
 static int check_output(const sweep_args *a, size_t fmt) {
     if (writers[fmt].write)
         return QD_EXIT_OK;
-    if (!cli_hdf5_built()) {
-        cli_diag_error("--format hdf5: this qdot was built without HDF5 (install libhdf5-dev "
-                       "and build again)");
-        return QD_EXIT_FAIL;
-    }
     if (!a->sim.out) {
         cli_diag_error("--format hdf5 writes a file: give it with -o FILE.h5");
         return QD_EXIT_USAGE;
     }
-    return QD_EXIT_OK;
+    qd_ctx *ctx = qd_ctx_new();
+    int rc = !ctx ? QD_EXIT_FAIL : qd_sweep_hdf5_ready(ctx) == QD_OK ? QD_EXIT_OK
+                                                                    : cli_diag_ctx(ctx);
+    qd_ctx_free(ctx);
+    return rc;
 }
 
-static int write_result(const qd_sweep *w, const sweep_args *a, size_t fmt,
+static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t fmt,
                         const sweep_result *r) {
     if (!writers[fmt].write)
-        return write_hdf5(a, r);
+        return write_hdf5(ctx, w, a, r);
     qd_buf b = QD_BUF_INIT;
     if (writers[fmt].write(w, r->rows, r->outcome, &b) != QD_OK) {
         qd_buf_free(&b);
@@ -363,20 +358,18 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     if (rc == QD_EXIT_OK)
         rc = map_check(c->ctx, w, a, &mapcol);
     /* under mpirun every rank gets here; only rank 0 (done.writer) writes */
-    cli_mpi_done done = {.writer = true, .ranks = 1};
+    qd_sweep_where done = {.writer = true, .ranks = 1};
     if (rc == QD_EXIT_OK) {
         cli_progress bar;
         cli_progress_start(&bar, "sweep");
         bar.label = "runs";
-        cli_mpi_job job = {.w = w, .base = &c->opts, .nthreads = (unsigned)a->threads,
-                           .rows = r.rows, .outcome = r.outcome,
-                           .progress = progress, .data = &bar};
-        qd_status st = cli_mpi_sweep(c->ctx, &job, &done);
+        qd_status st = qd_sweep_run_all(c->ctx, w, &c->opts, (unsigned)a->threads, r.rows,
+                                        r.outcome, progress, &bar, &done);
         r.wall = cli_progress_end(&bar);
         rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
     }
     if (rc == QD_EXIT_OK && done.writer)
-        rc = write_result(w, a, fmt, &r);
+        rc = write_result(c->ctx, w, a, fmt, &r);
     if (rc == QD_EXIT_OK && done.writer)
         rc = map_write(c->ctx, w, a, r.rows, mapcol);
     /* the threads the pool started: asked for (0: the cores), at most the runs */

@@ -203,6 +203,70 @@ QD_API qd_status qd_sweep_csv(const qd_sweep *w, const double *rows,
 QD_API qd_status qd_sweep_json(const qd_sweep *w, const double *rows,
                                const qd_sweep_outcome *outcome, qd_buf *out);
 
+/* ---- Across MPI ranks, and into HDF5 (optional modules) ------------------
+ * Both are libqdot's optional modules, qdot_mpi.so and qdot_hdf5.so
+ * (docs/design.md, "Running sweeps on a cluster"), opened only by the call
+ * that needs them: a program that never shares a sweep or writes HDF5 never
+ * loads OpenMPI or HDF5.  Without the module (qdot built without MPI or
+ * HDF5, or not installed) those calls fail with QD_ERR_UNSUPPORTED saying
+ * so; everything else works alike. */
+
+/* Was this process started by an MPI launcher (mpirun, mpiexec, srun)?
+ * Read from the environment those launchers set; MPI is not touched. */
+QD_API bool qd_sweep_mpi_launched(void);
+
+/* The chunk rank 0 hands out when `remaining` runs are left among `ranks`
+ * ranks of `threads` threads each: a quarter of an even share, so the last
+ * chunks are small and ranks finish together, but never below one run per
+ * thread (nor above `remaining`), nor above 65536 runs (a message's counts
+ * stay small).  0 when none remain. */
+QD_API size_t qd_sweep_mpi_chunk(size_t remaining, int ranks, unsigned threads);
+
+/* Where the runs of qd_sweep_run_all went. */
+typedef struct qd_sweep_where {
+    bool writer;      /* this process holds every row (and should write them) */
+    int ranks;        /* processes that ran the sweep (1 outside a launcher) */
+    unsigned threads; /* threads in each: as asked; under a launcher 1 when 0 was asked */
+} qd_sweep_where;
+
+/* Every run of w, as qd_sweep_run(ctx, w, base, 0, nruns, nthreads, ...),
+ * in this process; or, started by an MPI launcher, shared out across its
+ * ranks (MPI started and finished inside this call, once per process).
+ * Rank 0 then deals chunks (qd_sweep_mpi_chunk) and gathers every row and
+ * outcome in run order, and it alone is the writer; rows and outcome are
+ * written on the writer only.  Each run depends only on its inputs, so
+ * the rows are bit for bit those of one process.  A chunk that fails as a
+ * whole on some rank (no memory) is recorded as failed runs.  Under a
+ * launcher without the MPI module: QD_ERR_UNSUPPORTED, nothing run (each
+ * rank would otherwise run and write the whole sweep).  progress as for
+ * qd_sweep_run, on the writer. */
+QD_API qd_status qd_sweep_run_all(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
+                                  unsigned nthreads, double *rows, qd_sweep_outcome *outcome,
+                                  void (*progress)(void *data, size_t done, size_t total),
+                                  void *data, qd_sweep_where *where);
+
+/* Can this qdot write HDF5 (qdot_hdf5.so loads)?  QD_OK, or
+ * QD_ERR_UNSUPPORTED with the reason in ctx. */
+QD_API qd_status qd_sweep_hdf5_ready(qd_ctx *ctx);
+
+/* The rows and outcomes of w's runs (as qd_sweep_run fills them) into the
+ * HDF5 file path, replacing it.  The file holds
+ *   /runs    nruns x ncols doubles, the CSV's rows (inputs, then measures;
+ *            NaN where a measure has no value), in run order; its
+ *            attribute "columns" names the columns (variable-length strings);
+ *   /status  nruns ints: 0 for a run that went through, else the qd_status
+ *            it failed with;
+ *   /reason  nruns variable-length strings: qd_sweep_outcome_str ("" for a
+ *            run that went through);
+ * and string attributes on the root group: qdot_version, then the nattrs
+ * pairs attr_names[k] = attr_values[k] (how the sweep was made).  A file
+ * that cannot be made or written is QD_ERR_IO (a partial regular file is
+ * removed); no HDF5 module, QD_ERR_UNSUPPORTED; reason in ctx. */
+QD_API qd_status qd_sweep_hdf5(qd_ctx *ctx, const qd_sweep *w, const double *rows,
+                               const qd_sweep_outcome *outcome, size_t nattrs,
+                               const char *const *attr_names, const char *const *attr_values,
+                               const char *path);
+
 #ifdef __cplusplus
 }
 #endif

@@ -5738,6 +5738,43 @@ static void null_sweep(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_json(NULL, F.d, NULL, NULL));
     reset(&F);
+    /* ---- qd_sweep_mpi_launched */
+    /* no pointer argument */
+    /* ---- qd_sweep_mpi_chunk */
+    /* no pointer argument */
+    /* ---- qd_sweep_run_all */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_all(NULL, NULL, NULL, 1, F.d, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_all(F.ctx, NULL, NULL, 1, F.d, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_run_all(F.ctx, NULL, NULL, 1, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_hdf5_ready */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_ready(NULL));
+    reset(&F);
+    /* ---- qd_sweep_hdf5 */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(NULL, NULL, F.d, NULL, 1, (const char * const *)F.names, (const char * const *)F.names, "q"));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(F.ctx, NULL, F.d, NULL, 1, (const char * const *)F.names, (const char * const *)F.names, "q"));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(F.ctx, NULL, NULL, NULL, 1, (const char * const *)F.names, (const char * const *)F.names, "q"));
+    reset(&F);
+    /* attr_names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(F.ctx, NULL, F.d, NULL, 1, NULL, (const char * const *)F.names, "q"));
+    reset(&F);
+    /* attr_values NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(F.ctx, NULL, F.d, NULL, 1, (const char * const *)F.names, NULL, "q"));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(F.ctx, NULL, F.d, NULL, 1, (const char * const *)F.names, (const char * const *)F.names, NULL));
+    reset(&F);
     teardown(&F);
 }
 

@@ -1,0 +1,98 @@
+/*
+ * src/sweep/mpi.c - qd_sweep_run_all: a sweep in this process, or shared
+ * across the ranks of an MPI job by the optional module qdot_mpi.so
+ * (modules/mpi.c, which holds the protocol; src/sweep/ext.h), opened only
+ * under a launcher.
+ */
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "base/args.h"
+#include "base/module.h"
+#include "ext.h"
+#include "sweep_int.h"
+
+/* At most this many runs a chunk: its messages stay far inside MPI's int
+ * counts, and rank 0's buffers small. */
+#define CHUNK_MAX 65536
+
+size_t qd_sweep_mpi_chunk(size_t remaining, int ranks, unsigned threads) {
+    size_t share = remaining / (4 * (size_t)(ranks > 0 ? ranks : 1));
+    size_t least = threads > 0 ? threads : 1;
+    size_t n = share > least ? share : least;
+    n = n < CHUNK_MAX ? n : CHUNK_MAX > least ? CHUNK_MAX : least;
+    return n < remaining ? n : remaining;
+}
+
+/* OpenMPI's mpirun, MPICH's hydra, PMIx and PMI-2 launchers (srun among
+ * them) set these in each rank's environment; a shell never does. */
+bool qd_sweep_mpi_launched(void) {
+    static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE",
+                                       "MPI_LOCALNRANKS"};
+    for (size_t i = 0; i < sizeof vars / sizeof vars[0]; i++)
+        if (getenv(vars[i]))
+            return true;
+    return false;
+}
+
+/* What a rank's chunks run with: the module calls back into run_chunk. */
+typedef struct mpi_ctx {
+    qd_ctx *ctx;
+    const qd_sweep *w;
+    const qd_sim_opts *base;
+    unsigned nthreads;
+    void (*progress)(void *data, size_t done, size_t total);
+    void *data;
+} mpi_ctx;
+
+static qd_status run_chunk(void *data, size_t first, size_t count, double *rows,
+                           qd_sweep_outcome *outcome) {
+    mpi_ctx *c = data;
+    return qd_sweep_run(c->ctx, c->w, c->base, first, count, c->nthreads, rows, outcome, NULL,
+                        NULL);
+}
+
+static void progress(void *data, size_t done, size_t total) {
+    mpi_ctx *c = data;
+    if (c->progress)
+        c->progress(c->data, done, total);
+}
+
+qd_status qd_sweep_run_all(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
+                           unsigned nthreads, double *rows, qd_sweep_outcome *outcome,
+                           void (*prog)(void *data, size_t done, size_t total), void *data,
+                           qd_sweep_where *where) {
+    QD_ARGS_CTX(ctx, ctx && w && base && rows && outcome && where);
+    *where = (qd_sweep_where){.writer = true, .ranks = 1, .threads = nthreads};
+    if (qd_sweep_mpi_launched()) {
+        /* RTLD_GLOBAL: OpenMPI opens plug-ins of its own that need libmpi's
+         * symbols in the global scope */
+        void *h = qd__module_open(ctx, "mpi", RTLD_GLOBAL, QD__EXT_ABI, "MPI",
+                                  "libopenmpi-dev");
+        qd__mpi_sweep_fn sweep = NULL;
+        if (!h || !qd__module_fn(ctx, h, "qdot_mpi.so", "qd_ext_mpi_sweep", &sweep, sizeof sweep)) {
+            char why[512];
+            snprintf(why, sizeof why, "%s", qd_ctx_diag(ctx)->message);
+            qd_ctx_clear_error(ctx); /* the first error wins: this one says more */
+            qd_ctx_error(ctx, QD_ERR_UNSUPPORTED,
+                         "started by an MPI launcher, but %s; run it without mpirun", why);
+            return QD_ERR_UNSUPPORTED;
+        }
+        /* a launcher starts a rank per core: all cores in every rank
+         * would oversubscribe the node, so one thread unless asked */
+        mpi_ctx c = {.ctx = ctx, .w = w, .base = base, .nthreads = nthreads > 0 ? nthreads : 1,
+                     .progress = prog, .data = data};
+        qd__mpi_job job = {.nruns = w->nruns, .ncols = w->ncols, .nthreads = c.nthreads,
+                           .rows = rows, .outcome = outcome, .run = run_chunk,
+                           .progress = progress, .chunk = qd_sweep_mpi_chunk, .data = &c};
+        qd__mpi_where got = {.writer = 1, .ranks = 1};
+        sweep(&job, &got);
+        *where = (qd_sweep_where){.writer = got.writer, .ranks = got.ranks,
+                                  .threads = c.nthreads};
+        if (got.ranks > 1)
+            return QD_OK;
+        nthreads = c.nthreads; /* one rank: the sweep runs here, as below */
+    }
+    return qd_sweep_run(ctx, w, base, 0, w->nruns, nthreads, rows, outcome, prog, data);
+}
