@@ -44,11 +44,6 @@ PREFIX = {
     "sim": "sim", "sweep": "sweep",
 }
 KERNEL = {"base", "sym"}
-# The one exception list: src/sim's internal names (qd__rhs, qd__erk_step,
-# qd__dopri5, ... more than 30 prefixes) and codegen's qd__cg_native_object,
-# which src/sim calls, wait for the sessions editing src/sim (issue 31).
-EXCEPT_MODULES = {"sim"}
-EXCEPT_NAMES = {"qd__cg_native_object"}
 # Private headers other modules may include: the dense linear algebra every
 # numeric module shares, and the node layout the code generator walks.
 SHARED = {"num/num.h", "sym/node.h"}
