@@ -37,10 +37,21 @@ class BuildWithLibrary(build_py):
         jobs = os.environ.get("QDOT_JOBS", str(os.cpu_count() or 2))
         subprocess.run([cmake, "-S", ROOT, "-B", tree, "-DCMAKE_BUILD_TYPE=Release",
                         "-DQDOT_TESTS=OFF"], check=True)
-        subprocess.run([cmake, "--build", tree, "-j", jobs, "--target", "qdot"], check=True)
+        # libqdot and its optional modules (src/base/module.h): those CMake
+        # configured (Cairo always; MPI and HDF5 when found), which libqdot
+        # finds in qdot-modules/ beside itself
+        targets = ["qdot"] + [t for t in ("qdot_cairo", "qdot_hdf5", "qdot_mpi")
+                              if os.path.isdir(os.path.join(tree, "CMakeFiles", t + ".dir"))]
+        subprocess.run([cmake, "--build", tree, "-j", jobs, "--target"] + targets, check=True)
         dest = os.path.join(self.build_lib, "qdot", SONAME)
         shutil.copyfile(os.path.realpath(os.path.join(tree, SONAME)), dest)
         os.chmod(dest, 0o755)
+        mods = os.path.join(self.build_lib, "qdot", "qdot-modules")
+        os.makedirs(mods, exist_ok=True)
+        for t in targets[1:]:
+            shutil.copyfile(os.path.join(tree, "qdot-modules", t + ".so"),
+                            os.path.join(mods, t + ".so"))
+            os.chmod(os.path.join(mods, t + ".so"), 0o755)
 
 
 class BinaryDistribution(Distribution):

@@ -377,6 +377,9 @@ qd_status qd_plot_layout(qd_plot *p) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot needs at least one series of points");
         return QD_ERR_ARG;
     }
+    /* the legend's widths are the font's: the drawing module measures them */
+    if (!p->canvas && !(p->canvas = qd__plot_canvas(p->ctx)))
+        return QD_ERR_UNSUPPORTED;
     double top = p->title && *p->title ? 32 : 8;
     double cell_h = ((double)p->height - top) / (double)p->rows;
     for (size_t k = 0; k < p->rows * p->cols; k++) {
@@ -419,7 +422,7 @@ size_t qd__plot_legend_rows(const qd_plot *p, size_t k, double width, size_t *ro
         const char *label = p->series[i].label;
         if (!*label || p->series[i].panel != k)
             continue;
-        double w = QD__PLOT_SWATCH + 6 + qd__plot_text_width(label, QD__PLOT_TICK_FONT) + 18;
+        double w = QD__PLOT_SWATCH + 6 + qd__plot_text_width(p, label, QD__PLOT_TICK_FONT) + 18;
         if (rows == 0 || (x > 0 && x + w > width)) {
             rows++;
             x = 0;

@@ -7,6 +7,7 @@
 
 #include <stdbool.h>
 #include "qdot/plot.h"
+#include "canvas.h"
 
 typedef struct qd__plot_series {
     char *label;       /* "" when none */
@@ -48,6 +49,7 @@ struct qd_plot {
     qd__plot_series *series;
     size_t nseries, cap;
     bool laid_out;
+    const qd__canvas_ops *canvas; /* the drawing module's, from the first layout */
 };
 
 /* Sizes of the layout, in pixels (points for SVG and PDF). */
@@ -58,8 +60,11 @@ struct qd_plot {
 #define QD__PLOT_LEGEND_ROW 20.0
 #define QD__PLOT_SWATCH 24.0
 
-/* Width of text in the legend's font, for the layout (draw.c). */
-double qd__plot_text_width(const char *text, double size);
+/* The drawing module's canvas (qdot_cairo.so), NULL with
+ * QD_ERR_UNSUPPORTED in ctx when it cannot be loaded (draw.c). */
+const qd__canvas_ops *qd__plot_canvas(qd_ctx *ctx);
+/* Width of text in the legend's font, for the layout (after p->canvas). */
+double qd__plot_text_width(const qd_plot *p, const char *text, double size);
 
 /* The legend of panel k laid left to right in rows of at most width:
  * row[i] and x offset xoff[i] of series i (either may be NULL); returns the

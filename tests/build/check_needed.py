@@ -1,21 +1,22 @@
 #!/usr/bin/env python3
 """tests/build/check_needed.py - what the qdot program and libqdot.so load
-at start-up (issue 34): never OpenMPI nor HDF5, which only the optional
-modules qdot-modules/qdot_mpi.so and qdot_hdf5.so need, opened by
-dlopen when a sweep runs under mpirun or writes HDF5 (src/sweep/ext.h).
+at start-up (issue 34): never OpenMPI, HDF5 nor Cairo (with X11), which
+only the optional modules qdot-modules/qdot_mpi.so, qdot_hdf5.so and
+qdot_cairo.so need, opened by dlopen when a sweep runs under mpirun or
+writes HDF5, or a plot is drawn (src/sweep/ext.h, src/plot/canvas.h).
 
 - `ldd` of build/qdot and of libqdot.so (every library the loader maps,
   not only the direct NEEDED entries) names no libmpi, libopen-*, libhdf5,
-  libpmix nor libhwloc;
+  libpmix, libhwloc, libcairo, libX11 nor libxcb;
 - each module that was built needs its own library (libmpi, libhdf5) and
-  no libqdot: a module calls nothing of libqdot's, so that a program
+  (libcairo) and no libqdot: a module calls nothing of libqdot's, so that a program
   holding libqdot as an archive never gets a second copy of it.
 
 Usage: check_needed.py --build BUILD_DIR
 """
 import argparse, glob, os, re, subprocess, sys
 
-HEAVY = re.compile(r"lib(mpi|open-rte|open-pal|hdf5|pmix|hwloc)[^ ]*\.so")
+HEAVY = re.compile(r"lib(mpi|open-rte|open-pal|hdf5|pmix|hwloc|cairo|X11|xcb)[^ ]*\.so")
 
 
 def ldd(path):
@@ -44,9 +45,9 @@ def main():
     lib = sorted(glob.glob(os.path.join(b, "libqdot.so.*")))
     for path in [os.path.join(b, "qdot")] + lib[:1]:
         heavy = sorted(set(HEAVY.findall(ldd(path))))
-        check("%s loads neither MPI nor HDF5" % os.path.basename(path), not heavy,
+        check("%s loads no MPI, HDF5 nor Cairo" % os.path.basename(path), not heavy,
               "it maps lib%s" % ", lib".join(heavy))
-    wants = {"mpi": "libmpi.so", "hdf5": "libhdf5"}
+    wants = {"mpi": "libmpi.so", "hdf5": "libhdf5", "cairo": "libcairo"}
     mods = sorted(glob.glob(os.path.join(b, "qdot-modules", "qdot_*.so")))
     for path in mods:
         name = os.path.basename(path)[5:-3]
@@ -56,7 +57,7 @@ def main():
         check("%s needs no libqdot" % os.path.basename(path),
               not any(x.startswith("libqdot") for x in n), " ".join(n))
     if not mods:
-        print("skipped: no module was built (neither MPI nor HDF5 found)")
+        check("the Cairo module is built (Cairo is required)", False, "no qdot-modules/*.so")
     print("%d failed" % failed)
     return 1 if failed else 0
 

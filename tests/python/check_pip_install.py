@@ -10,7 +10,8 @@ then `import qdot` works from another folder with nothing on the path:
 
 The installed package must load the copy inside it (its soname,
 libqdot.so.0), say its version is the library's, and compute: the
-oscillator T = x'^2/2, V = 2 x^2 has omega = 2.  Skips (77) when Debian's
+oscillator T = x'^2/2, V = 2 x^2 has omega = 2; and draw a PNG through the
+optional Cairo module the package carries (qdot-modules/).  Skips (77) when Debian's
 pip, venv or setuptools are missing.
 """
 import argparse
@@ -31,6 +32,27 @@ print(os.path.realpath(qdot.__file__))
 print(os.path.realpath(_lib.lib._name))
 print(qdot.__version__)
 print(repr(m.modes()[0].omega))
+# the plot module inside the package (qdot-modules/qdot_cairo.so beside the
+# library): a PNG drawn through the library's own copy
+import ctypes
+L = _lib.lib
+L.qd_ctx_new.restype = ctypes.c_void_p
+L.qd_plot_new.restype = ctypes.c_void_p
+L.qd_plot_new.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int]
+L.qd_plot_add.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int, ctypes.c_size_t,
+                          ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_double),
+                          ctypes.c_void_p]
+L.qd_plot_write.argtypes = [ctypes.c_void_p, ctypes.c_char_p]
+L.qd_plot_free.argtypes = [ctypes.c_void_p]
+ctx = L.qd_ctx_new()
+p = L.qd_plot_new(ctx, 0, 0)
+xs = (ctypes.c_double * 3)(0, 1, 2)
+ys = (ctypes.c_double * 3)(0, 1, 4)
+assert L.qd_plot_add(p, b"y = x^2", 0, 3, xs, ys, None) == 0
+print(L.qd_plot_write(p, b"plot.png"))
+L.qd_plot_free(p)
+with open("plot.png", "rb") as f:
+    print(f.read(8) == b"\x89PNG\r\n\x1a\n")
 """
 
 
@@ -49,6 +71,7 @@ def run(cmd, **kw):
 def check_import(python, where, env, tmp):
     out = run([python, "-c", CODE], cwd=tmp, env=env).split("\n")
     pkg, lib, version, omega = out[0], out[1], out[2], float(out[3])
+    assert out[4] == "0" and out[5] == "True", ("no plot from the package's Cairo module", out)
     assert pkg.startswith(os.path.realpath(where)), (pkg, where)
     assert os.path.dirname(lib) == os.path.dirname(pkg), ("not the package's own copy", lib)
     assert os.path.basename(lib) == "libqdot.so.0", lib
