@@ -1,8 +1,9 @@
 /*
  * src/num/num.h - the numerics home: the one dense linear solver and the
- * one saddle-point assembly every module uses (mech, sim, linear), and the
- * inputs of compiled programs (the shortest round-trip printing of doubles
- * is public: qd_double_format, shortest.c).  Prefix qd__num_.
+ * one saddle-point assembly every module uses (mech, sim, linear), the
+ * explicit Runge-Kutta tableaux and their one stage loop (sim, path), and
+ * the inputs of compiled programs (the shortest round-trip printing of
+ * doubles is public: qd_double_format, shortest.c).  Prefix qd__num_.
  *
  * This is the module's interface to the others (docs/design.md, the
  * numerics home); the other modules' own headers (mech/mech.h,
