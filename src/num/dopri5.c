@@ -35,3 +35,7 @@ const double qd__num_dp5_p[7][4] = {
      701980252875.0 / 199316789632},
     {0, -282668133.0 / 205662961, 2019193451.0 / 616988883, -1453857185.0 / 822651844},
     {0, 40617522.0 / 29380423, -110615467.0 / 29380423, 69997945.0 / 29380423}};
+
+/* The fifth-order step (the pair's sim method takes it): rows 0-5 of a are
+ * the stages' (6 columns, the stride), row 6 the weights, over 1. */
+const qd__num_rk qd__num_dp5 = {6, qd__num_dp5_c, &qd__num_dp5_a[0][0], qd__num_dp5_a[6], 1};

@@ -1,8 +1,9 @@
 /*
  * src/num/num.h - the numerics home: the one dense linear solver and the
- * one saddle-point assembly every module uses (mech, sim, linear), and the
- * inputs of compiled programs (the shortest round-trip printing of doubles
- * is public: qd_double_format, shortest.c).  Prefix qd__num_.
+ * one saddle-point assembly every module uses (mech, sim, linear), the
+ * explicit Runge-Kutta tableaux and their one stage loop (sim, path), and
+ * the inputs of compiled programs (the shortest round-trip printing of
+ * doubles is public: qd_double_format, shortest.c).  Prefix qd__num_.
  *
  * This is the module's interface to the others (docs/design.md, the
  * numerics home); the other modules' own headers (mech/mech.h,
@@ -96,23 +97,53 @@ bool qd__num_quad_upper(qd__num_fn f, void *data, double a, double tol, qd__num_
 extern const double qd__num_dp5_c[7], qd__num_dp5_a[7][6], qd__num_dp5_e[7],
     qd__num_dp5_p[7][4];
 
+/* DOP853's tables (dop853.c), src/sim's: nodes c (13-15: the dense
+ * output's extra stages), stage weights a (12 x 12) and b, the dense
+ * output's extra stages ax, the third-order weights bhh, the fifth-order
+ * error weights e5 and the dense output's d (Hairer's dop853.f names). */
+extern const double qd__num_dp8_c[16], qd__num_dp8_a[12 * 12], qd__num_dp8_b[12],
+    qd__num_dp8_ax[3][16], qd__num_dp8_bhh[12], qd__num_dp8_e5[12], qd__num_dp8_d[4][16];
+
 /* A system y' = f(t, y) of n equations: false when f is undefined there. */
 typedef bool (*qd__num_ode_fn)(void *data, double t, const double *y, double *dy);
 
 /* An explicit Runge-Kutta method (rk.c): nodes c, the strictly lower
  * stages x stages matrix a (row-major), the weights b / bden (integer
- * numerators over a common denominator keep the classical sums exact). */
+ * numerators over a common denominator keep the classical sums exact;
+ * bden = 1 for tables of fractions, h / 1 being h). */
 typedef struct qd__num_rk {
     int stages;
     const double *c, *a, *b;
     double bden;
 } qd__num_rk;
 
-/* The classical fourth-order method (b = (1, 2, 2, 1) / 6). */
-extern const qd__num_rk qd__num_rk4;
+/* The classical fourth-order method (b = (1, 2, 2, 1) / 6, rk.c); the
+ * fifth-order step of the Dormand-Prince 5(4) pair (dopri5.c, 6 stages:
+ * qd__num_dp5_a's rows 0-5, b its row 6); the eighth-order step of DOP853
+ * (dop853.c, 12 stages).  The pairs' error estimates and dense output stay
+ * with their step size control in src/sim. */
+extern const qd__num_rk qd__num_rk4, qd__num_dp5, qd__num_dp8;
+
+/* The stage loop every explicit method here runs (rk.c): for i = 0 ..
+ * stages - 1, k[i] = f(t + c_i h, y0 + h sum_(j<i) a_ij k[j]) (a zero a_ij
+ * or b_i is skipped, so a non-finite stage never meets a zero), then
+ * y1 = y0 + h / bden sum_i b_i k[i]; y1 may be y0, which is read for the
+ * last time as y1 is written.  With fsal, k[0] = f(t, y0) is given (the
+ * derivative at the last step's result) and k[stages] gets f(t + h, y1),
+ * the next step's k[0]: the rows are pointers so that a caller can swap
+ * them instead of copying.  ytmp: n doubles.  False when f fails: y1 is then
+ * as it was, unless it was fsal's last evaluation that failed. */
+bool qd__num_rk_stages(const qd__num_rk *m, qd__num_ode_fn f, void *data, size_t n, double t,
+                       double h, const double *y0, double *y1, double *const *k, double *ytmp,
+                       bool fsal);
+
+/* The most stages qd__num_rk_step takes: it keeps its row pointers on the
+ * stack (DOP853, the largest table, has 12). */
+#define QD__NUM_RK_MAX_STAGES 16
 
 /* One step of m from (t, y) by h, y replaced by the result; w holds
- * (stages + 1) n doubles.  False when f fails at a stage (y then as it was). */
+ * (stages + 1) n doubles.  False when f fails at a stage (y then as it was)
+ * and for a method of more than QD__NUM_RK_MAX_STAGES stages. */
 bool qd__num_rk_step(const qd__num_rk *m, qd__num_ode_fn f, void *data, size_t n, double t,
                      double h, double *y, double *w);
 

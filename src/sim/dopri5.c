@@ -9,10 +9,8 @@
 
 #include <math.h>
 
-/* The tables are num's (qd__num_dp5_*, shared with src/path). */
-#define A (&qd__num_dp5_a[0][0])
-#define B (qd__num_dp5_a[6])
-#define C qd__num_dp5_c
+/* The tables are num's (qd__num_dp5_*, shared with src/path; the step is
+ * qd__num_dp5 through num's stage loop). */
 #define E qd__num_dp5_e
 #define P qd__num_dp5_p
 
@@ -54,8 +52,8 @@ static void dense_eval(const qd__sim_integ *it, const double *coef, double x, do
 
 /* dopri5.f's defaults: fac1 = 0.2, fac2 = 10, safe = 0.9, beta = 0.04,
  * expo = 1/5 - 0.75 beta */
-static const qd__sim_erk tab = {.s = 6, .order = 4, .nextra = 0, .ndense = 4, .c = C, .a = A,
-                            .b = B, .fac1 = 0.2, .fac2 = 10.0, .safe = 0.9, .beta = 0.04,
+static const qd__sim_erk tab = {.rk = &qd__num_dp5, .order = 4, .nextra = 0, .ndense = 4,
+                            .fac1 = 0.2, .fac2 = 10.0, .safe = 0.9, .beta = 0.04,
                             .expo = 0.2 - 0.75 * 0.04, .err = err, .dense_prep = dense_prep,
                             .dense_eval = dense_eval};
 

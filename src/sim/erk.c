@@ -1,7 +1,9 @@
 /*
- * src/sim/erk.c - the engine of the explicit Runge-Kutta pairs (dopri5.c,
- * dop853.c hold the tableaux): stages, the step size controller and the
- * first step (Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4).  The
+ * src/sim/erk.c - the engine of the explicit Runge-Kutta pairs: the step
+ * size controller, the FSAL stage and the first step (Hairer, Norsett &
+ * Wanner, Solving ODEs I, sec. II.4); dopri5.c and dop853.c hold their
+ * error estimates and dense output, src/num their tableaux and the stage
+ * loop (qd__num_rk_stages, shared with src/path's RK4).  The
  * controller is that of Hairer's dopri5.f/dop853.f: factors bounded by
  * fac1, fac2, safety 0.9, and for dopri5 the Lund stabilization (a PI
  * controller, sec. IV.2) with beta = 0.04, which keeps the step sequence
@@ -9,6 +11,7 @@
  */
 #include "simint.h"
 #include "../base/mem.h"
+#include "num/num.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -82,7 +85,7 @@ static qd_status initial_step(qd__sim_integ *it, erk *r) {
 }
 
 qd_status qd__sim_erk_init(qd__sim_integ *it, const qd__sim_erk *tab) {
-    size_t d = it->dim, rows = (size_t)(tab->s + 1 + tab->nextra);
+    size_t d = it->dim, rows = (size_t)(tab->rk->stages + 1 + tab->nextra);
     erk *r = qd__calloc(it->s->ctx, 1, sizeof *r);
     if (!r)
         return QD_ERR_NOMEM;
@@ -119,37 +122,27 @@ void qd__sim_erk_free(qd__sim_integ *it) {
     it->priv = NULL;
 }
 
+/* The right-hand side as num's ODE callback, its status kept: a failing
+ * stage's (and its message in the context) is the step's. */
+typedef struct erk_rhs {
+    qd__sim_integ *it;
+    qd_status st;
+} erk_rhs;
+
+static bool rhs(void *data, double t, const double *y, double *dy) {
+    erk_rhs *e = data;
+    e->st = qd__sim_rhs(e->it->s, e->it->form, t, y, dy);
+    return e->st == QD_OK;
+}
+
 /* The stages from (t0, y0) with K[0] = f(t0, y0) given; y1 and K[s] =
- * f(t0 + h, y1). */
+ * f(t0 + h, y1).  num's stage loop takes them (zero tableau entries
+ * skipped), as it does RK4's for src/path. */
 static qd_status stages(qd__sim_integ *it, const qd__sim_erk *tab, double t0, const double *y0, double h,
                         double **K, double *ytmp, double *y1) {
-    size_t d = it->dim;
-    int s = tab->s;
-    qd_status st = QD_OK;
-    /* the tableaux are half zeros: skip them (same sums, same order) */
-    for (int k = 1; k < s && st == QD_OK; k++) {
-        const double *a = tab->a + k * s;
-        for (size_t i = 0; i < d; i++)
-            ytmp[i] = 0;
-        for (int j = 0; j < k; j++)
-            if (a[j] != 0)
-                for (size_t i = 0; i < d; i++)
-                    ytmp[i] += a[j] * K[j][i];
-        for (size_t i = 0; i < d; i++)
-            ytmp[i] = y0[i] + h * ytmp[i];
-        st = qd__sim_rhs(it->s, it->form, t0 + tab->c[k] * h, ytmp, K[k]);
-    }
-    if (st != QD_OK)
-        return st;
-    for (size_t i = 0; i < d; i++)
-        y1[i] = 0;
-    for (int j = 0; j < s; j++)
-        if (tab->b[j] != 0)
-            for (size_t i = 0; i < d; i++)
-                y1[i] += tab->b[j] * K[j][i];
-    for (size_t i = 0; i < d; i++)
-        y1[i] = y0[i] + h * y1[i];
-    return qd__sim_rhs(it->s, it->form, t0 + h, y1, K[s]);
+    erk_rhs e = {it, QD_OK};
+    qd__num_rk_stages(tab->rk, rhs, &e, it->dim, t0, h, y0, y1, K, ytmp, true);
+    return e.st;
 }
 
 qd_status qd__sim_erk_step(qd__sim_integ *it) {
@@ -162,8 +155,8 @@ qd_status qd__sim_erk_step(qd__sim_integ *it) {
     else if (it->steps) {
         /* first same as last: K[s] of the last step is K[0] of this one */
         double *k0 = r->K[0];
-        r->K[0] = r->K[tab->s];
-        r->K[tab->s] = k0;
+        r->K[0] = r->K[tab->rk->stages];
+        r->K[tab->rk->stages] = k0;
     }
     it->y_changed = false;
     const double facc1 = 1 / tab->fac1, facc2 = 1 / tab->fac2;

@@ -271,13 +271,14 @@ extern const qd__sim_method qd__sim_dopri5, qd__sim_dop853, qd__sim_gauss2, qd__
     qd__sim_verlet, qd__sim_yoshida4, qd__sim_yoshida6, qd__sim_yoshida8, qd__sim_bdf;
 extern const qd__sim_method qd__sim_taylor; /* taylor.c */
 
-/* An explicit Runge-Kutta pair (erk.c runs it): s stages, the last one's
- * value at t + h the first of the next step (FSAL); err is the error norm
- * of the step (1 = the tolerance), dense_prep the interpolant's
- * coefficients from the stages of the last step. */
+/* An explicit Runge-Kutta pair (erk.c runs it): the step rk (num's tables
+ * and stage loop) of rk->stages stages, the derivative at t + h the first
+ * stage of the next step (FSAL); err is the error norm of the step (1 = the
+ * tolerance), dense_prep the interpolant's coefficients from the stages of
+ * the last step (nextra more of them), in ndense rows. */
 typedef struct qd__sim_erk {
-    int s, order, nextra, ndense;
-    const double *c, *a, *b; /* a: s*s row-major */
+    const struct qd__num_rk *rk;
+    int order, nextra, ndense;
     /* step size control of Hairer's dopri5.f/dop853.f: h_new = h / fac with
      * fac = err^expo / facold^beta / safe kept in [1/fac2, 1/fac1], facold
      * the error of the last accepted step (Lund stabilization, beta > 0) */

@@ -11,46 +11,48 @@ void qd__sim_stop(qd_sim *s, qd_stop_code code, double t, double value) {
         s->stop = (qd_sim_stop){code, t, value};
 }
 
+/* One row per code: the machine name (qd_stop_name) beside the English
+ * (qd_stop_str), so that a new code is given both in one place.  In the
+ * enum's order, QD_STOP_FAILURE last: the count below then catches a code
+ * added without its row. */
+static const struct {
+    qd_stop_code code;
+    const char *name, *words;
+} stops[] = {
+    {QD_STOP_NONE, "none", "not run"},
+    {QD_STOP_END, "end", "reached the end time"},
+    {QD_STOP_EVENT, "event", "a terminal event"},
+    {QD_STOP_CONTACT, "contact", "ended in contact"},
+    {QD_STOP_CALLBACK, "callback", "stopped by the row callback"},
+    {QD_STOP_REFUSED, "refused", "refused before the first step"},
+    {QD_STOP_STEP_UNDERFLOW, "step_underflow", "step size underflow"},
+    {QD_STOP_NO_CONVERGENCE, "no_convergence", "no convergence"},
+    {QD_STOP_SOLVER_FAILURE, "solver_failure", "solver failure"},
+    {QD_STOP_STEP_LIMIT, "step_limit", "step limit"},
+    {QD_STOP_SINGULAR, "singular", "singular equations"},
+    {QD_STOP_PROJECTION, "projection", "projection failure"},
+    {QD_STOP_NONFINITE, "nonfinite", "non-finite state"},
+    {QD_STOP_PAINLEVE, "painleve", "Painleve paradox"},
+    {QD_STOP_FAILURE, "failure", "failure"},
+};
+_Static_assert(sizeof stops / sizeof *stops == QD_STOP_FAILURE + 1, "a row for every stop code");
+
+/* code's row, -1 outside the enum (a cast integer) */
+static int row(qd_stop_code code) {
+    for (size_t i = 0; i < sizeof stops / sizeof *stops; i++)
+        if (stops[i].code == code)
+            return (int)i;
+    return -1;
+}
+
 const char *qd_stop_str(qd_stop_code code) {
-    switch (code) {
-    case QD_STOP_NONE: return "not run";
-    case QD_STOP_END: return "reached the end time";
-    case QD_STOP_EVENT: return "a terminal event";
-    case QD_STOP_CONTACT: return "ended in contact";
-    case QD_STOP_CALLBACK: return "stopped by the row callback";
-    case QD_STOP_REFUSED: return "refused before the first step";
-    case QD_STOP_STEP_UNDERFLOW: return "step size underflow";
-    case QD_STOP_NO_CONVERGENCE: return "no convergence";
-    case QD_STOP_SOLVER_FAILURE: return "solver failure";
-    case QD_STOP_STEP_LIMIT: return "step limit";
-    case QD_STOP_SINGULAR: return "singular equations";
-    case QD_STOP_PROJECTION: return "projection failure";
-    case QD_STOP_NONFINITE: return "non-finite state";
-    case QD_STOP_PAINLEVE: return "Painleve paradox";
-    case QD_STOP_FAILURE: return "failure";
-    }
-    return "unknown";
+    int i = row(code);
+    return i < 0 ? "unknown" : stops[i].words;
 }
 
 const char *qd_stop_name(qd_stop_code code) {
-    switch (code) {
-    case QD_STOP_NONE: return "none";
-    case QD_STOP_END: return "end";
-    case QD_STOP_EVENT: return "event";
-    case QD_STOP_CONTACT: return "contact";
-    case QD_STOP_CALLBACK: return "callback";
-    case QD_STOP_REFUSED: return "refused";
-    case QD_STOP_STEP_UNDERFLOW: return "step_underflow";
-    case QD_STOP_NO_CONVERGENCE: return "no_convergence";
-    case QD_STOP_SOLVER_FAILURE: return "solver_failure";
-    case QD_STOP_STEP_LIMIT: return "step_limit";
-    case QD_STOP_SINGULAR: return "singular";
-    case QD_STOP_PROJECTION: return "projection";
-    case QD_STOP_NONFINITE: return "nonfinite";
-    case QD_STOP_PAINLEVE: return "painleve";
-    case QD_STOP_FAILURE: return "failure";
-    }
-    return "unknown";
+    int i = row(code);
+    return i < 0 ? "unknown" : stops[i].name;
 }
 
 bool qd_stop_ok(qd_stop_code code) {
