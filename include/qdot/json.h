@@ -65,6 +65,14 @@ QD_API bool qd_json_ok(const qd_json *j);
  * cannot hold it)" or "an unfinished or too deeply nested document". */
 QD_API const char *qd_json_why(const qd_json *j);
 
+/* The end of a printer that writes into a scratch buffer b first (so that
+ * a failure leaves out untouched): b's text appended to out when b did
+ * not fail and j (NULL for a text printer) is ok, then b freed.  QD_OK;
+ * QD_ERR_NUMERIC "cannot write the JSON: <qd_json_why>" for a document
+ * refused (a non-finite number); QD_ERR_NOMEM when b, j or out ran out;
+ * the error recorded in ctx. */
+QD_API qd_status qd_json_commit(qd_ctx *ctx, qd_buf *b, const qd_json *j, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -173,26 +173,12 @@ qd_status qd_action_print(qd_ctx *ctx, const qd_action *a, bool json, qd_buf *ou
         }
     qd_buf b = QD_BUF_WITH(out->alloc);
     qd_json j;
-    bool bad = false;
     if (json) {
         qd_json_init(&j, &b);
         put_json(a, &j);
         qd_buf_puts(&b, "\n");
-        bad = !qd_json_ok(&j) && !j.nomem;
     } else {
         put_text(a, &b);
     }
-    bool nomem = b.failed || (json && j.nomem);
-    if (!bad && !nomem)
-        qd_buf_putn(out, qd_buf_str(&b), b.len);
-    qd_buf_free(&b);
-    if (bad) {
-        qd_ctx_error(ctx, QD_ERR_NUMERIC, "cannot write the JSON: %s", qd_json_why(&j));
-        return QD_ERR_NUMERIC;
-    }
-    if (nomem || out->failed) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
-        return QD_ERR_NOMEM;
-    }
-    return QD_OK;
+    return qd_json_commit(ctx, &b, json ? &j : NULL, out);
 }

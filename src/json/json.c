@@ -168,6 +168,23 @@ const char *qd_json_why(const qd_json *j) {
     return "an unfinished or too deeply nested document";
 }
 
+qd_status qd_json_commit(qd_ctx *ctx, qd_buf *b, const qd_json *j, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && b && out);
+    bool nomem = b->failed || (j && j->nomem), bad = j && !nomem && !qd_json_ok(j);
+    if (!nomem && !bad)
+        qd_buf_putn(out, qd_buf_str(b), b->len);
+    qd_buf_free(b);
+    if (bad) {
+        qd_ctx_error(ctx, QD_ERR_NUMERIC, "cannot write the JSON: %s", qd_json_why(j));
+        return QD_ERR_NUMERIC;
+    }
+    if (nomem || out->failed) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+        return QD_ERR_NOMEM;
+    }
+    return QD_OK;
+}
+
 bool qd_json_matrix(qd_json *j, const char *key, size_t rows, size_t cols, const double *x) {
     QD_ARGS(false, j && (x || !rows || !cols));
     bool ok = true;

@@ -71,30 +71,17 @@ qd_status qd_phase_bracket_print(qd_ctx *ctx, const qd_phase *ph, const qd_expr 
         return QD_ERR_ARG;
     }
     qd_buf b = QD_BUF_WITH(out->alloc);
-    qd_status st = QD_OK;
-    bool bad = false;
     qd_json j;
     if (json) {
         qd_json_init(&j, &b);
         put_json(ctx, ph, F, G, r, &j);
         qd_buf_puts(&b, "\n");
-        bad = !b.failed && !j.nomem && !qd_json_ok(&j);
     } else {
-        st = put_line(ctx, ph, fmt == QD_FMT_LATEX, F, G, r, &b);
+        qd_status st = put_line(ctx, ph, fmt == QD_FMT_LATEX, F, G, r, &b);
+        if (st != QD_OK) {
+            qd_buf_free(&b);
+            return st;
+        }
     }
-    bool nomem = b.failed || (json && j.nomem);
-    if (st == QD_OK && !nomem && !bad)
-        qd_buf_putn(out, qd_buf_str(&b), b.len);
-    qd_buf_free(&b);
-    if (st != QD_OK)
-        return st;
-    if (bad) {
-        qd_ctx_error(ctx, QD_ERR_NUMERIC, "cannot write the JSON: %s", qd_json_why(&j));
-        return QD_ERR_NUMERIC;
-    }
-    if (nomem || out->failed) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
-        return QD_ERR_NOMEM;
-    }
-    return QD_OK;
+    return qd_json_commit(ctx, &b, json ? &j : NULL, out);
 }

@@ -174,19 +174,7 @@ static qd_status finish(qd_ctx *ctx, qd_json *j, qd_buf *b, qd_buf *out) {
         qd_json_end_object(j);
         qd_buf_puts(b, "\n");
     }
-    bool nomem = b->failed || (j && j->nomem), bad = j && !nomem && !qd_json_ok(j);
-    if (!nomem && !bad)
-        qd_buf_putn(out, qd_buf_str(b), b->len);
-    qd_buf_free(b);
-    if (bad) {
-        qd_ctx_error(ctx, QD_ERR_NUMERIC, "cannot write the JSON: %s", qd_json_why(j));
-        return QD_ERR_NUMERIC;
-    }
-    if (nomem || out->failed) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
-        return QD_ERR_NOMEM;
-    }
-    return QD_OK;
+    return qd_json_commit(ctx, b, j, out);
 }
 
 static bool has_new_vars(qd_ctx *ctx, const qd_phase *ph, const char *func) {

@@ -28,6 +28,7 @@ NULLABLE = {
     'qd_action_of_sep': {'opts'},
     'qd_canonical_check': {'t'},
     'qd_json_string': {'s'},
+    'qd_json_commit': {'j'},
     'qd_json_expr': {'x'},
     'qd_codegen_c': {'h_text'},
     'qd_codegen_speeds_c': {'h_text'},

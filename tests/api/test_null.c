@@ -2103,6 +2103,16 @@ static void null_json(void **state)
     /* j NULL */
     assert_null(qd_json_why(NULL));
     reset(&F);
+    /* ---- qd_json_commit */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_commit(NULL, &F.buf, NULL, &F.buf));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_commit(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_commit(F.ctx, &F.buf, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
