@@ -8,7 +8,7 @@
  * makes this a hot spot (about 65% of qdot simulate's time when it was
  * snprintf and strtod three times a number): exact 128-bit integer digits
  * for 1e-12 <= |x| < 1e15, snprintf and strtod outside, identical output on
- * 2e7 random doubles (docs/design.md, simulation speed).
+ * 2e7 random doubles (bench/README.md, "Simulation against GSL, CVODE and SciPy").
  */
 #include "qdot/print.h"
 #include "../base/args.h"

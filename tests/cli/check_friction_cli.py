@@ -3,8 +3,8 @@
 
 Each model of examples/friction_*.qd is run with `--format json` and its rows,
 `transitions` and stats are compared with the closed forms, derived here (by
-hand or with SymPy), never from qdot's output; docs/design.md ("Friction: the
-closed forms the tests use") has the derivations.
+hand or with SymPy), never from qdot's output; the derivations and their
+sources are here, next to each check.
 
 - friction_sphere_slides.qd: a ball struck with no spin slides, then rolls
   from t* = 2 v0/(7 mu g) at 5 v0/7 (Byerly Art. 10b, seed-byerly.md TC21),
