@@ -3,7 +3,7 @@
  * simulate the model (the setup of sim_cli.c), sample the positions of its
  * particles and bodies at the frames (outputs of the run: the model's own
  * position and rotation expressions, evaluated by libqdot), and write one
- * self-contained HTML page that plays the motion (animate_page.c).
+ * self-contained HTML page that plays the motion (qd_scene_html).
  */
 #include "cli.h"
 
@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "animate.h"
+#include "qdot/scene.h"
 #include "progress.h"
 #include "out.h"
 #include "args.h"
@@ -111,83 +111,35 @@ static int scene_links(an_scene *s) {
     return QD_EXIT_OK;
 }
 
-/* ---- the run: rows kept, then sampled at the frames (qd_scene_sample) ------- */
+/* ---- the run, sampled at the frames (qd_scene_record) ---------------------- */
 
-typedef struct an_rows {
-    size_t width, n, cap; /* every column of the run */
-    double *v;
-    double t0, t_end;
+typedef struct an_progress {
     cli_progress bar;
-    bool nomem;
-} an_rows;
+    double t0, t_end;
+} an_progress;
 
-static int keep_row(void *data, int event, const double *row) {
-    an_rows *r = data;
-    (void)event; /* an impact's two rows keep the jump sharp */
-    if (r->n == r->cap) {
-        size_t cap = r->cap ? 2 * r->cap : 1024;
-        double *v = realloc(r->v, cap * r->width * sizeof *v);
-        if (!v) {
-            r->nomem = true;
-            return 1;
-        }
-        r->v = v;
-        r->cap = cap;
-    }
-    memcpy(r->v + r->n++ * r->width, row, r->width * sizeof *row);
-    cli_progress_update(&r->bar, (row[0] - r->t0) / (r->t_end - r->t0), row[0]);
-    return 0;
-}
-
-static size_t column(const cli_sim *c, const char *name) {
-    size_t n = qd_sim_columns(c->s, c->opts.method, NULL, 0);
-    const char **names = malloc((n + 1) * sizeof *names);
-    size_t at = QD_SCENE_NONE;
-    if (names) {
-        qd_sim_columns(c->s, c->opts.method, names, n);
-        for (size_t i = 0; i < n && at == QD_SCENE_NONE; i++)
-            if (!strcmp(names[i], name))
-                at = i;
-    }
-    free(names);
-    return at;
+static void progress(void *data, double t) {
+    an_progress *p = data;
+    cli_progress_update(&p->bar, (t - p->t0) / (p->t_end - p->t0), t);
 }
 
 static int run(cli_sim *c, an_scene *s) {
-    size_t width = qd_sim_columns(c->s, c->opts.method, NULL, 0);
-    an_rows r = {.width = width, .t0 = c->opts.t0, .t_end = c->opts.t_end};
-    /* an adaptive method writes its rows at the frames (dense output); its
-     * --dt would only be another output grid */
-    if (qd_sim_method_adaptive(c->opts.method))
-        c->opts.dt = (c->opts.t_end - c->opts.t0) /
-                     (double)(qd_scene_nframes(c->opts.t0, c->opts.t_end) - 1);
+    an_progress pr = {.t0 = c->opts.t0, .t_end = c->opts.t_end};
     qd_sim_stats st;
-    cli_progress_start(&r.bar, "animate");
-    qd_status rs = qd_sim_run(c->s, &c->opts, keep_row, &r, &st, NULL);
-    double wall = cli_progress_end(&r.bar);
-    int rc = r.nomem ? QD_EXIT_FAIL : rs != QD_OK ? cli_sim_fail(c, rs) : QD_EXIT_OK;
-    if (r.nomem)
-        cli_diag_error("out of memory keeping the run's %zu rows", r.n);
-    if (rc == QD_EXIT_OK && r.n == 0)
-        rc = QD_EXIT_FAIL;
-    if (rc == QD_EXIT_OK) {
-        r.t_end = r.v[(r.n - 1) * r.width]; /* a stop or a contact ends the run early */
-        size_t first = width - qd_scene_noutputs(s->pts, s->view.npts);
-        if (qd_scene_sample(c->ctx, s->pts, s->view.npts, r.v, r.n, column(c, "energy"), first,
-                            width, c->opts.t0, r.t_end, &s->fr) != QD_OK)
-            rc = cli_diag_ctx(c->ctx);
-    }
-    if (rc == QD_EXIT_OK) {
-        s->view.fr = &s->fr;
-        s->view.energy_error_max = st.energy_error_max;
-        s->view.conservative = qd_sim_conservative(c->s);
-        s->view.method = qd_sim_method_name(c->opts.method);
-        fprintf(stderr, "qdot: animate: %s, t = %g..%g: %zu frames from %zu steps, %.3g s; "
-                        "energy error %.3g\n", s->view.method, c->opts.t0, r.t_end, s->fr.nframes,
-                st.steps, wall, st.energy_error_max);
-    }
-    free(r.v);
-    return rc;
+    cli_progress_start(&pr.bar, "animate");
+    qd_status rs = qd_scene_record(c->ctx, c->s, &c->opts, s->pts, s->view.npts, progress, &pr,
+                                   &s->fr, &st);
+    double wall = cli_progress_end(&pr.bar);
+    if (rs != QD_OK)
+        return rs == QD_ERR_NOMEM ? cli_diag_ctx(c->ctx) : cli_sim_fail(c, rs);
+    s->view.fr = &s->fr;
+    s->view.energy_error_max = st.energy_error_max;
+    s->view.conservative = qd_sim_conservative(c->s);
+    s->view.method = qd_sim_method_name(c->opts.method);
+    fprintf(stderr, "qdot: animate: %s, t = %g..%g: %zu frames from %zu steps, %.3g s; "
+                    "energy error %.3g\n", s->view.method, c->opts.t0,
+            s->fr.t[s->fr.nframes - 1], s->fr.nframes, st.steps, wall, st.energy_error_max);
+    return QD_EXIT_OK;
 }
 
 static void scene_free(an_scene *s) {
@@ -200,14 +152,18 @@ static void scene_free(an_scene *s) {
 }
 
 static int write_page(const an_scene *s, const char *path) {
-    int rc = QD_EXIT_OK;
+    qd_buf b = QD_BUF_INIT;
+    if (qd_scene_html(&s->view, &b) != QD_OK) {
+        qd_buf_free(&b);
+        cli_diag_error("out of memory writing the page");
+        return QD_EXIT_FAIL;
+    }
+    int rc = QD_EXIT_OK, err = 0;
     FILE *f = cli_out_open(path, &rc);
-    if (!f)
-        return rc;
-    rc = cli_animate_write(f, &s->view);
-    int err = ferror(f) ? errno : 0;
-    int crc = cli_out_close(f, path, err);
-    return rc != QD_EXIT_OK && !err ? rc : crc;
+    if (f)
+        cli_out_write(f, qd_buf_str(&b), b.len, &err);
+    qd_buf_free(&b);
+    return f ? cli_out_close(f, path, err) : rc;
 }
 
 int cli_cmd_animate(int argc, char **argv) {

@@ -150,6 +150,20 @@ QD_API qd_status qd_scene_sample(qd_ctx *ctx, const qd_scene_point *pts, size_t 
                                  size_t width, double t0, double t_end, qd_scene_frames *out);
 QD_API void qd_scene_frames_free(qd_scene_frames *f);
 
+/* A run of s (compiled, with qd_scene_add_outputs of pts; ctx the one s
+ * was made with) from opts, its rows kept and sampled at the frames
+ * (qd_scene_sample), into *fr; stats (may be NULL) the run's.  An
+ * adaptive method writes its rows at the frames' spacing (dense output:
+ * opts->dt is replaced in a copy); a fixed-step method keeps its step and
+ * the frames take the nearest rows.  A run that stops early (a stop event,
+ * a contact) gives the frames of [t0, the last row].  progress (may be
+ * NULL) is called with each row's time.  The run's failures are
+ * qd_sim_run's (reason in ctx); QD_ERR_NOMEM when the rows do not fit. */
+QD_API qd_status qd_scene_record(qd_ctx *ctx, qd_sim *s, const qd_sim_opts *opts,
+                                 const qd_scene_point *pts, size_t npts,
+                                 void (*progress)(void *data, double t), void *data,
+                                 qd_scene_frames *fr, qd_sim_stats *stats);
+
 
 /* ---- the scene of a picture: masses, links, its data as JSON ------------ */
 
@@ -205,6 +219,13 @@ typedef struct qd_scene {
  * HTML <script>.  QD_ERR_NOMEM when out ran out of memory; model and
  * method NULL are written as "". */
 QD_API qd_status qd_scene_json(const qd_scene *s, qd_buf *out);
+
+/* The whole self-contained HTML page that plays the scene (no network:
+ * the player is inline), appended to out: the template src/scene/page.html,
+ * embedded at build time, with qd_scene_json in place of its data marker.
+ * docs/cli.md, "qdot animate", states the drawing rules.  QD_ERR_NOMEM
+ * when out ran out of memory. */
+QD_API qd_status qd_scene_html(const qd_scene *s, qd_buf *out);
 
 #ifdef __cplusplus
 }

@@ -1,13 +1,15 @@
 /*
  * src/scene/page.c - the scene of a picture put together (qdot/scene.h):
  * the points' masses, the links (the springs asked for, then the rods of
- * the motion) with the drawing plane, and the whole as the JSON a page
- * (`qdot animate`'s) plays.
+ * the motion) with the drawing plane, the whole as the JSON a page plays,
+ * and that page: the template page.html, embedded at build time
+ * (cmake/embed.cmake), with the JSON in place of its marker.
  */
 #include "qdot/scene.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "base/args.h"
 
@@ -122,4 +124,24 @@ qd_status qd_scene_json(const qd_scene *s, qd_buf *out) {
     json_numbers(out, "rot", fr->rot, fr->nframes * fr->nbodies * 9);
     qd_buf_puts(out, "}");
     return out->failed ? QD_ERR_NOMEM : QD_OK;
+}
+
+extern const unsigned char qd__scene_page_bytes[]; /* generated from page.html */
+
+qd_status qd_scene_html(const qd_scene *s, qd_buf *out) {
+    QD_ARGS(QD_ERR_ARG, s && out);
+    static const char marker[] = "@QDOT_DATA@";
+    const char *page = (const char *)qd__scene_page_bytes;
+    const char *at = strstr(page, marker);
+    if (!at)
+        return QD_ERR_UNSUPPORTED; /* a build that embedded another file */
+    qd_buf json = QD_BUF_WITH(out->alloc); /* first: a refused scene leaves out as it was */
+    qd_status st = qd_scene_json(s, &json);
+    if (st == QD_OK) {
+        qd_buf_putn(out, page, (size_t)(at - page));
+        qd_buf_putn(out, qd_buf_str(&json), json.len);
+        qd_buf_puts(out, at + strlen(marker));
+    }
+    qd_buf_free(&json);
+    return st == QD_OK && out->failed ? QD_ERR_NOMEM : st;
 }

@@ -4657,6 +4657,19 @@ static void null_scene(void **state)
     /* f NULL */
     qd_scene_frames_free(NULL);
     reset(&F);
+    /* ---- qd_scene_record */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_record(NULL, F.sim, NULL, NULL, 1, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_record(F.ctx, NULL, NULL, NULL, 1, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob));
+    reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_record(F.ctx, F.sim, NULL, NULL, 1, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob));
+    reset(&F);
+    /* stats NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_record(F.ctx, F.sim, NULL, NULL, 1, NULL, NULL, NULL, NULL));
+    reset(&F);
     /* ---- qd_scene_masses */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_masses(NULL, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, F.d));
@@ -4698,6 +4711,13 @@ static void null_scene(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_json(NULL, NULL));
+    reset(&F);
+    /* ---- qd_scene_html */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_html(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_html(NULL, NULL));
     reset(&F);
     teardown(&F);
 }

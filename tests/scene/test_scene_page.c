@@ -11,7 +11,11 @@
  *     the plane (m2 lifted along z) is 3-D;
  *   - qd_scene_json: valid JSON whose points carry the masses, whose links
  *     are those, and whose frames are the positions l1 (sin, -cos)(theta1),
- *     ... at the frame times t[f] (to the 7 digits written).
+ *     ... at the frame times t[f] (to the 7 digits written);
+ *   - qd_scene_record: a real run of the pendulum sampled at the frames
+ *     keeps both rod lengths and the energy at every frame, and the frame
+ *     times step by the frames' spacing; qd_scene_html puts that scene's
+ *     JSON in the page in place of its marker.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -191,11 +195,64 @@ static void test_json(void **state) {
     unload(&f);
 }
 
+static void progress(void *data, double t) {
+    double *last = data;
+    assert_true(t >= *last); /* rows in time order */
+    *last = t;
+}
+
+static void test_record_html(void **state) {
+    (void)state;
+    fix f;
+    load(&f, 0);
+    qd_eom *e = qd_eom_derive(f.ctx, f.m);
+    assert_non_null(e);
+    qd_sim *s = qd_sim_new(f.ctx, f.m, e);
+    assert_non_null(s);
+    assert_int_equal(qd_scene_add_outputs(f.ctx, s, f.m, f.pts, f.npts), QD_OK);
+    assert_int_equal(qd_sim_compile(s), QD_OK);
+    double q0[2] = {0.5, -0.3}, qd0[2] = {0, 0}, last = -1;
+    qd_sim_opts o = {.method = QD_SIM_DOP853, .t_end = 2, .rtol = 1e-11, .atol = 1e-13,
+                     .q0 = q0, .qd0 = qd0};
+    qd_scene_frames fr;
+    qd_sim_stats st;
+    assert_int_equal(qd_scene_record(f.ctx, s, &o, f.pts, f.npts, progress, &last, &fr, &st),
+                     QD_OK);
+    size_t nf = qd_scene_nframes(0, 2);
+    assert_int_equal(fr.nframes, nf);
+    assert_true(last == 2);
+    assert_non_null(fr.energy);
+    const double origin[3] = {0, 0, 0};
+    for (size_t k = 0; k < nf; k++) {
+        const double *p = fr.pos + 6 * k;
+        assert_true(fabs(dist(origin, p) - L1) < 1e-9);
+        assert_true(fabs(dist(p, p + 3) - L2) < 1e-9);
+        assert_true(fabs(fr.energy[k]) < 1e-8);                 /* conserved */
+        assert_true(fabs(fr.t[k] - 2.0 * (double)k / (double)(nf - 1)) < 1e-9); /* dense rows */
+    }
+    double mass[2] = {2, 3};
+    qd_scene sc = {.model = "pendulum.qd", .method = "dop853", .pts = f.pts, .npts = 2,
+                   .mass = mass, .fr = &fr, .plane = {0, 1}};
+    qd_buf b = QD_BUF_INIT;
+    assert_int_equal(qd_scene_html(&sc, &b), QD_OK);
+    const char *page = qd_buf_str(&b);
+    assert_int_equal(strncmp(page, "<!DOCTYPE html>", 15), 0);
+    assert_null(strstr(page, "@QDOT_DATA@"));
+    assert_non_null(strstr(page, "{\"model\":\"pendulum.qd\""));
+    assert_non_null(strstr(page, "</html>"));
+    qd_buf_free(&b);
+    qd_scene_frames_free(&fr);
+    qd_sim_free(s);
+    qd_eom_free(e);
+    unload(&f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_masses),
         cmocka_unit_test(test_links),
         cmocka_unit_test(test_json),
+        cmocka_unit_test(test_record_html),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
