@@ -10,15 +10,14 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
-#include <errno.h>
 #include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "qdot/json.h"
 #include "model_cli.h"
+#include "model_file.h"
 #include "out.h"
 #include "progress.h"
 #include "args.h"
@@ -175,44 +174,6 @@ static int measure_needs(cli_sim *c, const char *spec) {
     return rc;
 }
 
-/* ---- --list FILE.csv: the file's text, read by qd_sweep_list_csv ----------- */
-
-static int read_text(const char *path, char **text) {
-    int rc = QD_EXIT_OK;
-    FILE *f = cli_in_open(path, &rc);
-    if (!f)
-        return rc;
-    size_t n = 0, cap = 0;
-    char *t = NULL;
-    errno = 0;
-    for (;;) {
-        if (cap - n < 4096) {
-            char *grown = cap < SIZE_MAX / 4 ? realloc(t, cap = 2 * cap + 4096) : NULL;
-            if (!grown) {
-                rc = QD_EXIT_FAIL;
-                cli_diag_error("out of memory reading %s", path);
-                break;
-            }
-            t = grown;
-        }
-        size_t k = fread(t + n, 1, cap - n - 1, f);
-        n += k;
-        if (k == 0)
-            break;
-    }
-    if (rc == QD_EXIT_OK && ferror(f)) {
-        cli_diag_error("cannot read %s: %s", path, strerror(errno ? errno : EIO));
-        rc = QD_EXIT_USAGE;
-    }
-    fclose(f);
-    if (rc == QD_EXIT_OK)
-        t[n] = '\0';
-    else
-        free(t);
-    *text = rc == QD_EXIT_OK ? t : NULL;
-    return rc;
-}
-
 /* ---- the runs ----------------------------------------------------------- */
 
 /* Where a bad spec is shown: the option's text with a caret. */
@@ -229,7 +190,8 @@ static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
     if (!a->list)
         return QD_EXIT_OK;
     char *text = NULL;
-    int rc = read_text(a->list, &text);
+    size_t len;
+    int rc = cli_read_text(a->list, "a list of runs", &text, &len);
     if (rc == QD_EXIT_OK && qd_sweep_list_csv(w, text) != QD_OK)
         rc = spec_error(ctx, a->list, text);
     free(text);

@@ -66,41 +66,50 @@ static read_end slurp(FILE *fp, char **text, size_t *len) {
     return READ_OK;
 }
 
-static int read_text(const char *path, cli_model_file *mf) {
+int cli_read_text(const char *path, const char *what, char **text, size_t *len) {
     bool std_in = !strcmp(path, "-");
-    mf->path = std_in ? "<stdin>" : path;
+    const char *shown = std_in ? "<stdin>" : path;
+    *text = NULL;
+    *len = 0;
     int rc = QD_EXIT_USAGE;
     FILE *fp = std_in ? stdin : cli_in_open(path, &rc);
     if (!fp)
         return rc;
     errno = 0;
-    read_end how = slurp(fp, &mf->text, &mf->len);
+    read_end how = slurp(fp, text, len);
     int err = errno;
     if (!std_in)
         fclose(fp);
     if (how == READ_ERRNO) {
-        cli_diag_error("cannot read '%s': %s", mf->path, strerror(err ? err : EIO));
-        return QD_EXIT_USAGE;
+        cli_diag_error("cannot read '%s': %s", shown, strerror(err ? err : EIO));
+        return err == ENOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
     }
     if (how == READ_BIG) {
-        cli_diag_error("'%s' is longer than %zu MiB, the most a model file may be", mf->path,
-                       QD_MODEL_MAX_BYTES >> 20);
+        cli_diag_error("'%s' is longer than %zu MiB, the most %s may be", shown,
+                       QD_MODEL_MAX_BYTES >> 20, what);
         return QD_EXIT_USAGE;
     }
-    if (how == READ_NUL) { /* the parser would stop at it and ignore the rest silently */
+    if (how == READ_NUL) { /* a reader would stop at it and ignore the rest silently */
         qd_diag d;
         memset(&d, 0, sizeof d);
         d.status = QD_ERR_PARSE;
         d.located = true;
-        d.offset = mf->len;
+        d.offset = *len;
         d.length = 1;
         snprintf(d.message, sizeof d.message, "a NUL byte at byte %zu: this is not a text file",
-                 mf->len);
-        snprintf(d.hint, sizeof d.hint, "a model file is UTF-8 text");
-        cli_diag_show(mf->path, mf->text, &d);
+                 *len);
+        snprintf(d.hint, sizeof d.hint, "%s is UTF-8 text", what);
+        cli_diag_show(shown, *text, &d);
+        free(*text);
+        *text = NULL;
         return QD_EXIT_USAGE;
     }
     return QD_EXIT_OK;
+}
+
+static int read_text(const char *path, cli_model_file *mf) {
+    mf->path = !strcmp(path, "-") ? "<stdin>" : path;
+    return cli_read_text(path, "a model file", &mf->text, &mf->len);
 }
 
 int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts *opts,

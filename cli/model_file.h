@@ -18,6 +18,14 @@ typedef struct cli_model_file {
     qd_field *field;   /* cli_field_file_load: the field model instead */
 } cli_model_file;
 
+/* The text of path ("-" is standard input) whole, NUL-terminated, into
+ * *text (malloc'd) and *len; what names the kind of file in the messages
+ * ("a model file").  A file that cannot be read, longer than
+ * QD_MODEL_MAX_BYTES or holding a NUL byte (shown with a caret: a reader
+ * would stop there silently) is printed and QD_EXIT_USAGE; no memory,
+ * QD_EXIT_FAIL. */
+int cli_read_text(const char *path, const char *what, char **text, size_t *len);
+
 /* Read and parse path ("-" is standard input).  Prints the diagnostics and
  * returns the exit status: QD_EXIT_USAGE for a file that cannot be read or a
  * model with an error, QD_EXIT_OK with mf->model set otherwise. */

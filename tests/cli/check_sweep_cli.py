@@ -207,6 +207,12 @@ def listed(build, tmp):
     for r in got:
         w, v = math.sqrt(float(r["k"])), float(r["x'"])
         close("list: final x", float(r["final_x"]), v * math.sin(w) / w, 1e-8)
+    # a NUL byte would end the text early: the runs after it would be lost
+    # silently, so the file is refused where the byte is
+    lst.write_bytes(b"k, x'\n4, 1\n\x001, 2\n")
+    r = qdot(build, "sweep", model, "--list", lst, "--t-end", 1, "--measure", "final")
+    check("list with a NUL byte: refused at it", r.returncode == 2 and not r.stdout and
+          ":3:1: error: a NUL byte" in r.stderr, r.stderr)
 
 
 def failure(build, tmp):
