@@ -198,13 +198,6 @@ static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
     return rc;
 }
 
-typedef struct sweep_result {
-    size_t nruns, ncols, nin;
-    const char **cols;
-    double *rows;
-    qd_sweep_outcome *outcome;
-    double wall;
-} sweep_result;
 
 static void progress(void *data, size_t done, size_t total) {
     cli_progress_update(data, (double)done / (double)total, (double)done);
@@ -220,7 +213,7 @@ static const struct {
 
 /* --format hdf5 (qd_sweep_hdf5): the rows with how the sweep was made. */
 static int write_hdf5(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a,
-                      const sweep_result *r) {
+                      const qd_sweep_result *r) {
     char n[32], seed[32];
     snprintf(n, sizeof n, "%zu", a->n);
     snprintf(seed, sizeof seed, "%.0f", a->seed);
@@ -251,7 +244,7 @@ static int check_output(const sweep_args *a, size_t fmt) {
 }
 
 static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t fmt,
-                        const sweep_result *r) {
+                        const qd_sweep_result *r) {
     if (!writers[fmt].write)
         return write_hdf5(ctx, w, a, r);
     qd_buf b = QD_BUF_INIT;
@@ -290,57 +283,38 @@ static int map_write(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, const 
     return rc;
 }
 
-static void summary(const sweep_result *r, unsigned threads, int ranks) {
-    size_t failed = 0;
-    for (size_t k = 0; k < r->nruns; k++)
-        failed += r->outcome[k].status != QD_OK;
+static void summary(const qd_sweep_result *r, double wall) {
+    /* the threads the pool started: asked for (0: the cores), at most the runs */
+    unsigned threads = r->where.ranks > 1 ? r->where.threads
+                                          : qd_sweep_threads(r->where.threads, r->nruns);
     char where[48] = "";
-    if (ranks > 1)
-        snprintf(where, sizeof where, "%d MPI ranks x ", ranks);
+    if (r->where.ranks > 1)
+        snprintf(where, sizeof where, "%d MPI ranks x ", r->where.ranks);
     fprintf(stderr, "qdot: sweep: %zu run%s on %s%u thread%s, %zu failed, %.3g s\n", r->nruns,
-            r->nruns == 1 ? "" : "s", where, threads, threads == 1 ? "" : "s", failed, r->wall);
+            r->nruns == 1 ? "" : "s", where, threads, threads == 1 ? "" : "s", r->failed, wall);
 }
 
 static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
-    sweep_result r = {.nruns = qd_sweep_nruns(w), .ncols = qd_sweep_ncols(w)};
-    /* every row is kept until the end (run order): refuse what cannot be */
-    if (r.nruns > SIZE_MAX / (sizeof(double) * (r.ncols + 1) + sizeof *r.outcome)) {
-        cli_diag_error("%zu runs do not fit in memory", r.nruns);
-        return QD_EXIT_USAGE;
-    }
-    r.cols = malloc((r.ncols + 1) * sizeof *r.cols);
-    r.rows = malloc((r.nruns * r.ncols + 1) * sizeof *r.rows);
-    r.outcome = malloc((r.nruns + 1) * sizeof *r.outcome);
-    int rc = r.cols && r.rows && r.outcome ? QD_EXIT_OK : QD_EXIT_FAIL;
-    if (rc != QD_EXIT_OK)
-        cli_diag_error("out of memory for %zu runs", r.nruns);
-    for (size_t j = 0; rc == QD_EXIT_OK && j < r.ncols; j++)
-        r.cols[j] = qd_sweep_col(w, j);
     size_t mapcol = 0;
-    if (rc == QD_EXIT_OK)
-        rc = map_check(c->ctx, w, a, &mapcol);
-    /* under mpirun every rank gets here; only rank 0 (done.writer) writes */
-    qd_sweep_where done = {.writer = true, .ranks = 1};
-    if (rc == QD_EXIT_OK) {
-        cli_progress bar;
-        cli_progress_start(&bar, "sweep");
-        bar.label = "runs";
-        qd_status st = qd_sweep_run_all(c->ctx, w, &c->opts, (unsigned)a->threads, r.rows,
-                                        r.outcome, progress, &bar, &done);
-        r.wall = cli_progress_end(&bar);
-        rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
-    }
-    if (rc == QD_EXIT_OK && done.writer)
+    int rc = map_check(c->ctx, w, a, &mapcol);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    /* under mpirun every rank gets here; only rank 0 (where.writer) writes */
+    cli_progress bar;
+    cli_progress_start(&bar, "sweep");
+    bar.label = "runs";
+    qd_sweep_result r;
+    qd_status st = qd_sweep_result_run(c->ctx, w, &c->opts, (unsigned)a->threads, progress, &bar,
+                                       &r);
+    double wall = cli_progress_end(&bar);
+    rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+    if (rc == QD_EXIT_OK && r.where.writer)
         rc = write_result(c->ctx, w, a, fmt, &r);
-    if (rc == QD_EXIT_OK && done.writer)
+    if (rc == QD_EXIT_OK && r.where.writer)
         rc = map_write(c->ctx, w, a, r.rows, mapcol);
-    /* the threads the pool started: asked for (0: the cores), at most the runs */
-    if (rc == QD_EXIT_OK && done.writer)
-        summary(&r, done.ranks > 1 ? done.threads : qd_sweep_threads(done.threads, r.nruns),
-                done.ranks);
-    free(r.cols);
-    free(r.rows);
-    free(r.outcome);
+    if (rc == QD_EXIT_OK && r.where.writer)
+        summary(&r, wall);
+    qd_sweep_result_free(&r);
     return rc;
 }
 

@@ -245,6 +245,25 @@ QD_API qd_status qd_sweep_run_all(qd_ctx *ctx, const qd_sweep *w, const qd_sim_o
                                   void (*progress)(void *data, size_t done, size_t total),
                                   void *data, qd_sweep_where *where);
 
+/* Every run's row and outcome, as the caller of a whole sweep holds them. */
+typedef struct qd_sweep_result {
+    size_t nruns, ncols;       /* qd_sweep_nruns, qd_sweep_ncols */
+    double *rows;              /* nruns x ncols (qd_sweep_run's) */
+    qd_sweep_outcome *outcome; /* nruns */
+    size_t failed;             /* runs whose status is not QD_OK (on the writer) */
+    qd_sweep_where where;
+} qd_sweep_result;
+
+/* qd_sweep_run_all into arrays this call allocates (malloc'd; free with
+ * qd_sweep_result_free, also after a failure).  QD_ERR_NOMEM when the
+ * rows of every run do not fit in memory (they are all kept until the
+ * end, in run order). */
+QD_API qd_status qd_sweep_result_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
+                                     unsigned nthreads,
+                                     void (*progress)(void *data, size_t done, size_t total),
+                                     void *data, qd_sweep_result *r);
+QD_API void qd_sweep_result_free(qd_sweep_result *r); /* NULL is fine */
+
 /* Can this qdot write HDF5 (qdot_hdf5.so loads)?  QD_OK, or
  * QD_ERR_UNSUPPORTED with the reason in ctx. */
 QD_API qd_status qd_sweep_hdf5_ready(qd_ctx *ctx);

@@ -1,11 +1,13 @@
 /*
- * src/sweep/mpi.c - qd_sweep_run_all: a sweep in this process, or shared
+ * src/sweep/mpi.c - qd_sweep_run_all (and qd_sweep_result_run, the same
+ * into arrays of its own): a sweep in this process, or shared
  * across the ranks of an MPI job by the optional module qdot_mpi.so
  * (modules/mpi.c, which holds the protocol; src/sweep/ext.h), opened only
  * under a launcher.
  */
 #include <dlfcn.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "base/args.h"
@@ -95,4 +97,36 @@ qd_status qd_sweep_run_all(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *ba
         nthreads = c.nthreads; /* one rank: the sweep runs here, as below */
     }
     return qd_sweep_run(ctx, w, base, 0, w->nruns, nthreads, rows, outcome, prog, data);
+}
+
+qd_status qd_sweep_result_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
+                              unsigned nthreads,
+                              void (*prog)(void *data, size_t done, size_t total), void *data,
+                              qd_sweep_result *r) {
+    QD_ARGS_CTX(ctx, ctx && w && base && r);
+    *r = (qd_sweep_result){.nruns = w->nruns, .ncols = w->ncols};
+    if (r->nruns > SIZE_MAX / (sizeof(double) * (r->ncols + 1) + sizeof *r->outcome)) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "%zu runs do not fit in memory", r->nruns);
+        return QD_ERR_NOMEM;
+    }
+    r->rows = malloc((r->nruns * r->ncols + 1) * sizeof *r->rows);
+    r->outcome = malloc((r->nruns + 1) * sizeof *r->outcome);
+    if (!r->rows || !r->outcome) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory for %zu runs", r->nruns);
+        return QD_ERR_NOMEM;
+    }
+    qd_status st = qd_sweep_run_all(ctx, w, base, nthreads, r->rows, r->outcome, prog, data,
+                                    &r->where);
+    for (size_t k = 0; st == QD_OK && r->where.writer && k < r->nruns; k++)
+        r->failed += r->outcome[k].status != QD_OK;
+    return st;
+}
+
+void qd_sweep_result_free(qd_sweep_result *r) {
+    if (!r)
+        return;
+    free(r->rows);
+    free(r->outcome);
+    r->rows = NULL;
+    r->outcome = NULL;
 }

@@ -5782,6 +5782,17 @@ static void null_sweep(void **state)
     /* rows NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_run_all(F.ctx, NULL, NULL, 1, NULL, NULL, NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_sweep_result_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_result_run(NULL, NULL, NULL, 1, NULL, NULL, NULL));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_result_run(F.ctx, NULL, NULL, 1, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sweep_result_free */
+    /* r NULL */
+    qd_sweep_result_free(NULL);
+    reset(&F);
     /* ---- qd_sweep_hdf5_ready */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_ready(NULL));

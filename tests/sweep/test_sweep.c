@@ -313,6 +313,18 @@ static void test_threads_identical(void **state) {
     assert_memory_equal(r1 + 10 * nc, r2, 5 * nc * sizeof *r1);
     assert_int_equal(qd_sweep_run(f->ctx, w, &o, 38, 5, 2, r2, s2, NULL, NULL), QD_ERR_ARG);
     qd_ctx_clear_error(f->ctx);
+    /* the whole sweep into arrays of its own, outside a launcher: the same
+     * rows, one process the writer, and the failures counted */
+    qd_sweep_result res;
+    assert_int_equal(qd_sweep_result_run(f->ctx, w, &o, 2, NULL, NULL, &res), QD_OK);
+    assert_true(res.nruns == 40 && res.ncols == nc && res.where.writer && res.where.ranks == 1);
+    assert_memory_equal(r1, res.rows, 40 * nc * sizeof *r1);
+    size_t failed = 0;
+    for (size_t k = 0; k < 40; k++)
+        failed += s1[k].status != QD_OK;
+    assert_int_equal(res.failed, failed);
+    qd_sweep_result_free(&res);
+    qd_sweep_result_free(&res); /* twice is fine */
     free(r1);
     free(r2);
     qd_sweep_free(w);
