@@ -7,6 +7,7 @@
 
 #include "base/ptrmap.h"
 #include "linear.h"
+#include "num/num.h"
 #include "qdot/constrained.h"
 #include "../base/mem.h"
 #include "../base/args.h"
@@ -602,6 +603,69 @@ static bool exact_verified(qd_ctx *ctx, qd__lin *L, const exact *x, double ftol)
     return ok;
 }
 
+/* ---- affine equations: one solve, no search ------------------------------- */
+
+/* Is F affine in q: no entry of J = dF/dq holds a coordinate?  Then F has
+ * one root where J is regular (none or a continuum where it is not), and a
+ * search of the box would only find it again from every start. */
+static bool affine(const qd__lin *L) {
+    size_t n = L->n;
+    for (size_t k = 0; k < n * n; k++)
+        for (size_t j = 0; j < n; j++)
+            if (!L->J[k] || qd_has(L->J[k], L->q[j]))
+                return false;
+    return true;
+}
+
+/* The root of affine F: J q = -F(0) by rank-revealing elimination.  true
+ * with it added to roots when J is regular at the force scale. */
+static bool affine_root(qd__lin *L, double ftol, const bool *angle, qd__roots *roots) {
+    size_t n = L->n;
+    double *A = qd__malloc(L->ctx, (n * n + 1) * sizeof *A), *q = qd__calloc(L->ctx, n + 1, sizeof *q);
+    size_t *pc = qd__malloc(L->ctx, (n + 1) * sizeof *pc);
+    bool ok = false;
+    if (A && q && pc) {
+        qd__lin_run(L, q);
+        memcpy(A, qd__lin_J(L), n * n * sizeof *A);
+        for (size_t j = 0; j < n; j++)
+            q[j] = -qd__lin_F(L)[j];
+        if (qd__num_rank(n, A, q, 1e-12, pc, NULL, NULL) == n) {
+            qd__lin_run(L, q);
+            double res = 0;
+            for (size_t j = 0; j < n; j++)
+                res = fmax(res, fabs(qd__lin_F(L)[j]));
+            ok = res <= ftol || qd__lin_lm_solve(L, q, ftol, 8, &res); /* polish round-off */
+            if (ok) {
+                qd__lin_wrap_angles(n, q, angle);
+                ok = qd__lin_roots_add(L->ctx, roots, q, res, angle);
+            }
+        }
+    }
+    qd__free(A);
+    qd__free(q);
+    qd__free(pc);
+    return ok;
+}
+
+/* Only the roots in the box (Newton may leave it). */
+static void keep_in_box(qd__roots *roots, size_t n, const double *lo, const double *hi) {
+    size_t kept = 0;
+    for (size_t i = 0; i < roots->count; i++) {
+        bool in = true;
+        for (size_t j = 0; j < n; j++) {
+            double v = roots->q[i * n + j], pad = 1e-9 * (1 + fabs(v));
+            if (fabs(v) < 1e-15)
+                roots->q[i * n + j] = v = 0;
+            in = in && v >= lo[j] - pad && v <= hi[j] + pad;
+        }
+        if (in) {
+            memmove(roots->q + kept * n, roots->q + i * n, n * sizeof *roots->q);
+            roots->res[kept++] = roots->res[i];
+        }
+    }
+    roots->count = kept;
+}
+
 qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                              const qd_expr *const *syms, const double *vals,
                              const qd_equilibria_opts *opts, qd_equilibria *out) {
@@ -668,26 +732,19 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
             goto done;
         }
         x.nsol = 0;
-        out->method = "multistart";
-        size_t starts = o.starts ? o.starts : 40 * n + 40;
-        if (!qd__lin_multistart(&L, lo, hi, angle, starts, ftol, &roots))
-            st = QD_ERR_NOMEM;
-        /* only the roots in the box (Newton may leave it) */
-        size_t kept = 0;
-        for (size_t i = 0; i < roots.count; i++) {
-            bool in = true;
-            for (size_t j = 0; j < n; j++) {
-                double v = roots.q[i * n + j], pad = 1e-9 * (1 + fabs(v));
-                if (fabs(v) < 1e-15)
-                    roots.q[i * n + j] = v = 0;
-                in = in && v >= lo[j] - pad && v <= hi[j] + pad;
+        if (affine(&L) && affine_root(&L, ftol, angle, &roots)) {
+            out->method = "linear";
+        } else {
+            if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+                st = QD_ERR_NOMEM;
+                goto done;
             }
-            if (in) {
-                memmove(roots.q + kept * n, roots.q + i * n, n * sizeof *roots.q);
-                roots.res[kept++] = roots.res[i];
-            }
+            out->method = "multistart";
+            size_t starts = o.starts ? o.starts : 40 * n + 40;
+            if (!qd__lin_multistart(&L, lo, hi, angle, starts, ftol, &roots))
+                st = QD_ERR_NOMEM;
         }
-        roots.count = kept;
+        keep_in_box(&roots, n, lo, hi);
     }
     if (st == QD_OK)
         st = assemble(ctx, &L, &roots, out->exact ? &x : NULL, angle, ftol, out);

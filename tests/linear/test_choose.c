@@ -19,7 +19,11 @@
  *   the bead on a hoop spinning at omega (Desloge ch. 50 Ex. 1 eq. 39):
  *     th = 0 holds for every g, a, omega and w^2 = g/a - omega^2 there; the
  *     off-axis point cos th0 = g/(a omega^2) is computed at the values, so
- *     w^2 = omega^2 sin^2 th0 comes out as a number.
+ *     w^2 = omega^2 sin^2 th0 comes out as a number;
+ *   a chain of four springs k from a wall, masses m between them and a
+ *     force P pulling the last one: affine equations (method "linear": one
+ *     solve, no search), the one equilibrium x_j = j P/k, and the
+ *     fixed-free chain's w_j = 2 sqrt(k/m) sin((2j - 1) pi / (2 (2N + 1))).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -214,6 +218,37 @@ static void test_none(void **state) {
     qd_equilibrium_choice_free(&c);
 }
 
+static void test_chain_linear(void **state) {
+    qt_system *s = qt_system_derive(state, "coordinates x1, x2, x3, x4\n"
+                                           "parameters m = 1, k = 2, P = 0.5\n"
+                                           "particle m at (x1, 0)\nparticle m at (x2, 0)\n"
+                                           "particle m at (x3, 0)\nparticle m at (x4, 0)\n"
+                                           "V = k/2*(x1^2 + (x2 - x1)^2 + (x3 - x2)^2 + "
+                                           "(x4 - x3)^2) - P*x4\n", false);
+    qd_equilibrium_choice c;
+    choose(s, &c);
+    assert_string_equal(c.found.method, "linear");
+    assert_int_equal(c.found.count, 1);
+    assert_non_null(c.pt);
+    for (size_t j = 0; j < 4; j++)
+        assert_true(fabs(c.pt->q[j] - (double)(j + 1) * 0.5 / 2) < 1e-12);
+    point p;
+    state_of(s, &p);
+    for (size_t j = 0; j < 4; j++)
+        p.vals[j] = c.pt->q[j];
+    qd_linear lin;
+    qd_modes_result r;
+    assert_int_equal(qd_linear_about(s->ctx, s->eom, s->model, p.n, p.syms, p.vals, &lin), QD_OK);
+    assert_int_equal(qd_modes_solve(s->ctx, &lin, &r), QD_OK);
+    for (size_t j = 0; j < 4; j++) {
+        double w = 2 * sqrt(2.0) * sin((2.0 * (double)j + 1) * PI / 18);
+        assert_true(fabs(r.omega2[j] - w * w) < 1e-10);
+    }
+    qd_linear_free(&lin);
+    qd_modes_result_free(&r);
+    qd_equilibrium_choice_free(&c);
+}
+
 static const char hoop[] =
     "coordinates theta\nparameters m = 0.3, a = 0.8, omega = 4, g = 9.81\n"
     "r = (a*sin(theta)*cos(omega*t), a*sin(theta)*sin(omega*t), -a*cos(theta))\n"
@@ -281,6 +316,7 @@ int main(void) {
         cmocka_unit_test_teardown(test_no_minimum_no_initial, qt_system_teardown),
         cmocka_unit_test_teardown(test_none, qt_system_teardown),
         cmocka_unit_test_teardown(test_hoop_exact, qt_system_teardown),
+        cmocka_unit_test_teardown(test_chain_linear, qt_system_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
