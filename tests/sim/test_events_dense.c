@@ -62,6 +62,24 @@ static void check_disc(double b) {
                      f->last[cy], vx, vy);
         /* the contact's time: t = 5 + x_c */
         assert_true(f->nev == 2 && fabs(f->ev_t[0] - (5 + xc)) < tol_of(m));
+        /* the impact's two rows (before, after) sit at the contact point
+         * (x_c, b) on the circle, the row after already carries the
+         * reflected velocity, and restitution 1 keeps h = |v|^2 / 2 = 1/2
+         * (a missed or doubled impact, or a wrong normal, breaks one) */
+        int px = sf_col(f, m, "x"), py = sf_col(f, m, "y"), ce = sf_col(f, m, "energy");
+        assert_true(px >= 0 && py >= 0 && ce >= 0);
+        for (int j = 0; j < 2; j++)
+            if (!(fabs(f->ev_row[j][px] - xc) < tol_of(m)) ||
+                !(fabs(f->ev_row[j][py] - b) < tol_of(m)))
+                fail_msg("%s, b = %g: impact row %d at (%.17g, %.17g), want (%.17g, %.17g)",
+                         qd_sim_method_name(m), b, j, f->ev_row[j][px], f->ev_row[j][py], xc, b);
+        assert_true(fabs(f->ev_row[1][cx] - vx) < tol_of(m) &&
+                    fabs(f->ev_row[1][cy] - vy) < tol_of(m));
+        if (!(fabs(f->ev_row[1][ce] - 0.5) < tol_of(m)) || !(fabs(f->last[ce] - 0.5) < tol_of(m)) ||
+            !(fabs(f->stats.impact_energy_lost) < tol_of(m)))
+            fail_msg("%s, b = %g: energy %.17g after the impact, %.17g at the end, lost %g; "
+                     "want 0.5, 0.5, 0", qd_sim_method_name(m), b, f->ev_row[1][ce], f->last[ce],
+                     f->stats.impact_energy_lost);
         sf_free(f);
     }
 }
