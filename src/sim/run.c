@@ -64,16 +64,21 @@ qd_status qd__sim_run_events_at(qd__sim_run *r, double t, const double *y, doubl
     qd_status st = qd__sim_run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    qd__sim_aux_eval(s, t, y, qd__sim_second(s, y, r->qd));
-    const double *gv = s->aux_out + qd__sim_aux_ev(s), *guard = s->aux_out + qd__sim_aux_guard(s);
+    /* the events alone when no guard is asked for: the samples of every step */
+    const double *second = qd__sim_second(s, y, r->qd), *gv = NULL;
+    if (g)
+        gv = qd__sim_ev_eval(s, t, y, second);
     for (size_t k = 0; g && k < qd__sim_fev0(s); k++)
         g[k] = gv[k];
-    for (size_t k = 0, gi = 0; k < s->nev; k++) {
+    /* the guards (in aux alone) only when asked for: at a located root */
+    if (ok && s->nguard)
+        qd__sim_aux_eval(s, t, y, second);
+    const double *guard = s->aux_out + qd__sim_aux_guard(s);
+    for (size_t k = 0, gi = 0; ok && k < s->nev; k++) {
         bool pass = true;
         for (size_t j = 0; j < s->ev[k].nguard; j++, gi++)
             pass = pass && guard[gi] > 0;
-        if (ok)
-            ok[k] = pass;
+        ok[k] = pass;
     }
     for (size_t k = qd__sim_fev0(s); k < qd__sim_nev_all(s); k++) {
         if (ok)
