@@ -313,6 +313,10 @@ typedef struct qd__sim_run {
     double *ev_t, *ev_y;               /* located events of a step: nev times, nev*dim */
     bool *ev_hit, *ev_ok;
     bool slopes;                       /* fa, fb valid for this step */
+    /* fb at (fb_t, fb_y) when fb_valid: the next step's fa if it starts there
+     * (restart() clears it: an impact or a mode switch changes the rhs) */
+    double *fb_y, fb_t;
+    bool fb_valid;
     double *smp;                       /* the event functions at the step's samples */
     size_t nsmp;                       /* sample intervals of the step */
     double *ev_after;                  /* nev: the far side of each located crossing */
