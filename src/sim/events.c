@@ -26,8 +26,7 @@ static qd_status g_value(qd__sim_run *r, size_t k, double t, const double *y, do
     qd_sim *s = r->s;
     if (k >= qd__sim_fev0(s))
         return qd__sim_fric_event(r, k - qd__sim_fev0(s), t, y, gk);
-    qd__sim_aux_eval(s, t, y, qd__sim_second(s, y, r->qd));
-    *gk = s->aux_out[qd__sim_aux_ev(s) + k];
+    *gk = qd__sim_ev_eval(s, t, y, qd__sim_second(s, y, r->qd))[k];
     return QD_OK;
 }
 

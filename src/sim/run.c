@@ -44,11 +44,22 @@ qd_status qd__sim_run_dense(qd__sim_run *r, double t, double *y) {
     }
     size_t d = it->dim;
     if (!r->slopes) {
-        qd_status st = qd__sim_rhs(r->s, it->form, it->told, it->yold, r->fa);
+        /* the last step's end slope is this one's start slope when the step
+         * starts at that very state: one right-hand side per step, not two
+         * (a fixed-step method with events samples every step) */
+        qd_status st = QD_OK;
+        if (r->fb_valid && it->told == r->fb_t && !memcmp(it->yold, r->fb_y, d * sizeof *r->fb_y))
+            memcpy(r->fa, r->fb, d * sizeof *r->fa);
+        else
+            st = qd__sim_rhs(r->s, it->form, it->told, it->yold, r->fa);
+        r->fb_valid = false;
         if (st == QD_OK)
             st = qd__sim_rhs(r->s, it->form, it->t, it->y, r->fb);
         if (st != QD_OK)
             return st;
+        r->fb_valid = true;
+        r->fb_t = it->t;
+        memcpy(r->fb_y, it->y, d * sizeof *r->fb_y);
         r->slopes = true;
     }
     double h = it->t - it->told, x = (t - it->told) / h;
@@ -64,16 +75,21 @@ qd_status qd__sim_run_events_at(qd__sim_run *r, double t, const double *y, doubl
     qd_status st = qd__sim_run_velocity(r, t, y);
     if (st != QD_OK)
         return st;
-    qd__sim_aux_eval(s, t, y, qd__sim_second(s, y, r->qd));
-    const double *gv = s->aux_out + qd__sim_aux_ev(s), *guard = s->aux_out + qd__sim_aux_guard(s);
+    /* the events alone when no guard is asked for: the samples of every step */
+    const double *second = qd__sim_second(s, y, r->qd), *gv = NULL;
+    if (g)
+        gv = qd__sim_ev_eval(s, t, y, second);
     for (size_t k = 0; g && k < qd__sim_fev0(s); k++)
         g[k] = gv[k];
-    for (size_t k = 0, gi = 0; k < s->nev; k++) {
+    /* the guards (in aux alone) only when asked for: at a located root */
+    if (ok && s->nguard)
+        qd__sim_aux_eval(s, t, y, second);
+    const double *guard = s->aux_out + qd__sim_aux_guard(s);
+    for (size_t k = 0, gi = 0; ok && k < s->nev; k++) {
         bool pass = true;
         for (size_t j = 0; j < s->ev[k].nguard; j++, gi++)
             pass = pass && guard[gi] > 0;
-        if (ok)
-            ok[k] = pass;
+        ok[k] = pass;
     }
     for (size_t k = qd__sim_fev0(s); k < qd__sim_nev_all(s); k++) {
         if (ok)
@@ -373,7 +389,7 @@ static qd_status run_alloc(qd__sim_run *r, qd__sim_integ *it, size_t ncols) {
     qd_sim *s = r->s;
     size_t d = it->dim, ne = qd__sim_nev_all(s);
     it->y = qd__malloc(s->ctx, (2 * d + 1) * sizeof *it->y);
-    r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 3 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
+    r->row = qd__malloc(s->ctx, (2 * ncols + s->n + 4 * d + 2 * ne + ne * d + ne + 1) * sizeof *r->row);
     r->ev_hit = qd__calloc(s->ctx, 2 * ne + 1, sizeof *r->ev_hit);
     r->smp = qd__malloc(s->ctx, ((QD__EV_SAMPLES_MAX + 1) * ne + 2 * ne + 1) * sizeof *r->smp);
     if (!it->y || !r->row || !r->ev_hit || !r->smp)
@@ -387,6 +403,7 @@ static qd_status run_alloc(qd__sim_run *r, qd__sim_integ *it, size_t ncols) {
     r->gnew = r->gold + ne;
     r->ev_y = r->gnew + ne;
     r->ev_t = r->ev_y + ne * d;
+    r->fb_y = r->ev_t + ne;
     r->ev_ok = r->ev_hit + ne;
     r->ev_after = r->smp + (QD__EV_SAMPLES_MAX + 1) * ne;
     return QD_OK;
@@ -602,7 +619,7 @@ static qd_status restart(qd__sim_run *r, loop *L, double h) {
     /* the steps count on: without this the explicit pairs would take the
      * stale last stage of the step before the jump as their first (FSAL) */
     it->y_changed = true;
-    r->slopes = false;
+    r->slopes = r->fb_valid = false;
     if (st == QD_OK)
         st = qd__sim_run_events_at(r, it->t, it->y, r->gold, NULL);
     return st;

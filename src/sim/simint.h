@@ -41,7 +41,9 @@ struct qd_sim {
     qd_prog *force; /* canonical: dL/dq + Q - dD/dq' (n) */
     qd_prog *aux;   /* h, T, g (m), outputs, events, guards */
     qd_prog *en;    /* h, T alone (the per-step energy measure), when aux has more */
-    size_t acc_n, con_n, mom_n, force_n, aux_n, en_n; /* output counts */
+    qd_prog *evp;   /* the events and the gaps alone (aux's, the same doubles): what
+                       a step's sampling evaluates, many times per step */
+    size_t acc_n, con_n, mom_n, force_n, aux_n, en_n, evp_n; /* output counts */
     bool canonical, separable, conservative, has_T;
     bool hamilton;  /* made from H (hamilton.c): e is NULL, the inputs' second
                        block holds the momenta, mom gives q' = dH/dp, acc
@@ -64,6 +66,7 @@ struct qd_sim {
     const qd_expr **out_expr, **ev_expr, **guard_expr;
     qd__sim_event *ev;
     bool aux_ready, aux_lambda, aux_acc;
+    bool ev_lambda, ev_acc; /* evp reads the multipliers, the accelerations */
     /* column names of the fixed part: t, q, q', p_q, energy, res_c */
     char **names;
     size_t nnames;
@@ -107,6 +110,7 @@ struct qd_sim {
     double *acc_out, *con_out, *mom_out, *force_out, *aux_out, *en_out;
     double *acc_w, *con_w, *mom_w, *force_w, *aux_w, *en_w;
     double *imp_out, *imp_w;
+    double *evp_out, *evp_w;
     double *kin_out, *kin_w, *udef_out, *udef_w;
     double *uprog_out, *uprog_w;
     /* scratch for the linear solves */
@@ -220,6 +224,10 @@ qd_status qd__sim_drift_velocity(qd_sim *s, const double *p, double *qd);
 qd_status qd__sim_aux_compile(qd_sim *s);
 /* Evaluate aux at (q, q', t) into s->aux_out. */
 void qd__sim_aux_eval(qd_sim *s, double t, const double *q, const double *qd);
+/* The event functions at (q, q', t): the user's events, then the gaps (as
+ * in aux_out from qd__sim_aux_ev, and the same doubles), without the rest
+ * of aux. */
+const double *qd__sim_ev_eval(qd_sim *s, double t, const double *q, const double *qd);
 /* h and T at (q, q', t): the first two entries of the result. */
 const double *qd__sim_energy_eval(qd_sim *s, double t, const double *q, const double *qd);
 /* Records "WHAT not finite at t: CAUSE" (QD_ERR_NUMERIC), CAUSE from the
@@ -306,6 +314,10 @@ typedef struct qd__sim_run {
     double *ev_t, *ev_y;               /* located events of a step: nev times, nev*dim */
     bool *ev_hit, *ev_ok;
     bool slopes;                       /* fa, fb valid for this step */
+    /* fb at (fb_t, fb_y) when fb_valid: the next step's fa if it starts there
+     * (restart() clears it: an impact or a mode switch changes the rhs) */
+    double *fb_y, fb_t;
+    bool fb_valid;
     double *smp;                       /* the event functions at the step's samples */
     size_t nsmp;                       /* sample intervals of the step */
     double *ev_after;                  /* nev: the far side of each located crossing */

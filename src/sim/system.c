@@ -318,6 +318,7 @@ void qd_sim_free(qd_sim *s) {
     qd_prog_free(s->force);
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
+    qd_prog_free(s->evp);
     qd_prog_free(s->kin);
     qd_prog_free(s->udef);
     qd__sim_uin_free(s);
@@ -416,12 +417,41 @@ qd_status qd_sim_add_event(qd_sim *s, const qd_expr *g, size_t nguard,
     return QD_OK;
 }
 
+/* aux over outs[0 .. k) and, when there are events (ne from e0), evp over
+ * those alone.  A step's sampling evaluates the events several times per
+ * step; aux would compute h, T, the constraints and the outputs each time
+ * for nothing.  Both programs are compiled from the same expressions after
+ * one angle-sum rewrite of the whole set (qd__sim_prog's, decided for the
+ * set), so that evp gives the doubles aux gives: a sample and a row agree
+ * on an event's sign. */
+static qd_prog *aux_programs(qd_sim *s, size_t k, const qd_expr *const *outs, size_t e0,
+                             size_t ne) {
+    const qd_expr **x = qd__malloc(s->ctx, (k + 1) * sizeof *x);
+    bool applied;
+    qd_prog *p = NULL;
+    s->aux_n = k;
+    s->evp_n = ne;
+    if (!x) {
+        qd_ctx_error(s->ctx, QD_ERR_NOMEM, "out of memory compiling the simulation");
+        return NULL;
+    }
+    memcpy(x, outs, k * sizeof *x);
+    if (qd__cg_angle_sums(s->ctx, k, x, &applied) == QD_OK) {
+        p = qd_prog_new(s->ctx, s->nin, s->in_syms, k, x);
+        if (p && ne)
+            s->evp = qd_prog_new(s->ctx, s->nin, s->in_syms, ne, x + e0);
+    }
+    qd__free(x);
+    return p;
+}
+
 qd_status qd__sim_aux_compile(qd_sim *s) {
     if (s->aux_ready)
         return QD_OK;
     qd_prog_free(s->aux);
     qd_prog_free(s->en);
-    s->aux = s->en = NULL;
+    qd_prog_free(s->evp);
+    s->aux = s->en = s->evp = NULL;
     size_t total = qd__sim_aux_guard(s) + s->nguard, k = 0;
     const qd_expr **outs = qd__malloc(s->ctx, (total + 1) * sizeof *outs);
     if (!outs)
@@ -442,21 +472,28 @@ qd_status qd__sim_aux_compile(qd_sim *s) {
         qd__sim_hamilton_velocities(s, k - 2, outs + 2);
     if (s->se)
         qd__sim_speeds_defs(s, k - 2, outs + 2);
-    s->aux = qd__sim_prog(s, k, outs, &s->aux_n);
-    s->aux_lambda = s->aux_acc = false;
+    size_t e0 = qd__sim_aux_ev(s), ne = s->nev + s->nimp;
+    s->aux = aux_programs(s, k, outs, e0, ne);
+    s->aux_lambda = s->aux_acc = s->ev_lambda = s->ev_acc = false;
     /* in speeds the multipliers are not inputs: compiling names them */
     for (size_t i = 2 + s->m; !s->se && i < k; i++)
-        for (size_t c = 0; c < s->m; c++)
-            s->aux_lambda = s->aux_lambda || qd_has(outs[i], s->cons[c].lambda);
+        for (size_t c = 0; c < s->m; c++) {
+            bool has = qd_has(outs[i], s->cons[c].lambda);
+            s->aux_lambda = s->aux_lambda || has;
+            s->ev_lambda = s->ev_lambda || (has && i >= e0 && i < e0 + ne);
+        }
     /* nor, in speeds or an H model, the accelerations */
-    for (size_t i = 2 + s->m; !s->se && !s->hamilton && i < k; i++)
-        s->aux_acc = s->aux_acc || has_any(outs[i], s->n, s->e->qdd);
+    for (size_t i = 2 + s->m; !s->se && !s->hamilton && i < k; i++) {
+        bool has = has_any(outs[i], s->n, s->e->qdd);
+        s->aux_acc = s->aux_acc || has;
+        s->ev_acc = s->ev_acc || (has && i >= e0 && i < e0 + ne);
+    }
     /* outputs and events are needed at rows and event checks only; the
      * energy measure at every step */
     if (s->aux && k > 2 + s->m)
         s->en = qd__sim_prog(s, 2, outs, &s->en_n);
     qd__free(outs);
-    s->aux_ready = s->aux != NULL && (k == 2 + s->m || s->en != NULL);
+    s->aux_ready = s->aux != NULL && (k == 2 + s->m || s->en != NULL) && (!ne || s->evp);
     return s->aux_ready ? QD_OK : qd_ctx_status(s->ctx);
 }
 
@@ -497,6 +534,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     ok = prog_ws(ctx, w->aux, w->aux_n, &w->aux_out, &w->aux_w) && ok;
     ok = prog_ws(ctx, w->en, w->en_n, &w->en_out, &w->en_w) && ok;
     ok = prog_ws(ctx, w->imp, w->imp_n, &w->imp_out, &w->imp_w) && ok;
+    ok = prog_ws(ctx, w->evp, w->evp_n, &w->evp_out, &w->evp_w) && ok;
     ok = prog_ws(ctx, w->kin, w->kin_n, &w->kin_out, &w->kin_w) && ok;
     ok = prog_ws(ctx, w->udef, w->udef_n, &w->udef_out, &w->udef_w) && ok;
     ok = prog_ws(ctx, w->uprog, w->nuin, &w->uprog_out, &w->uprog_w) && ok;
@@ -513,7 +551,8 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
 void qd__sim_ws_free(qd_sim *w) {
     double *bufs[] = {w->in, w->K, w->con_err, w->acc_out, w->acc_w, w->con_out, w->con_w,
                       w->mom_out, w->mom_w, w->force_out, w->force_w, w->aux_out, w->aux_w,
-                      w->en_out, w->en_w, w->imp_out, w->imp_w, w->kin_out, w->kin_w,
+                      w->en_out, w->en_w, w->imp_out, w->imp_w, w->evp_out, w->evp_w,
+                      w->kin_out, w->kin_w,
                       w->udef_out, w->udef_w, w->uprog_out, w->uprog_w};
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         qd__free(bufs[i]);
@@ -560,19 +599,34 @@ void qd__sim_prog_at(qd_sim *s, const qd_prog *p, double *work, double t, const 
     qd_prog_eval(p, work, s->in, out);
 }
 
+/* The multipliers and accelerations at the state set: the saddle-point
+ * solve of the right-hand side; NaN where it is singular. */
+static void second_inputs(qd_sim *s, double t) {
+    double *lambda = s->in + 2 * s->n + 1 + s->np, *qdd = lambda + s->m;
+    bool ok = saddle_solve(s, t, NULL);
+    for (size_t k = 0; k < s->m; k++)
+        lambda[k] = ok ? s->rhs[s->n + k] : NAN;
+    for (size_t j = 0; j < s->n; j++)
+        qdd[j] = ok ? s->rhs[j] : NAN;
+}
+
 void qd__sim_aux_eval(qd_sim *s, double t, const double *q, const double *qd) {
     set_state(s, t, q, qd);
-    if (s->aux_lambda || s->aux_acc) {
-        /* the multipliers and accelerations at this state: the saddle-point
-         * solve of the right-hand side; NaN where it is singular */
-        double *lambda = s->in + 2 * s->n + 1 + s->np, *qdd = lambda + s->m;
-        bool ok = saddle_solve(s, t, NULL);
-        for (size_t k = 0; k < s->m; k++)
-            lambda[k] = ok ? s->rhs[s->n + k] : NAN;
-        for (size_t j = 0; j < s->n; j++)
-            qdd[j] = ok ? s->rhs[j] : NAN;
-    }
+    if (s->aux_lambda || s->aux_acc)
+        second_inputs(s, t);
     qd_prog_eval(s->aux, s->aux_w, s->in, s->aux_out);
+}
+
+const double *qd__sim_ev_eval(qd_sim *s, double t, const double *q, const double *qd) {
+    if (!s->evp) {
+        qd__sim_aux_eval(s, t, q, qd);
+        return s->aux_out + qd__sim_aux_ev(s);
+    }
+    set_state(s, t, q, qd);
+    if (s->ev_lambda || s->ev_acc)
+        second_inputs(s, t);
+    qd_prog_eval(s->evp, s->evp_w, s->in, s->evp_out);
+    return s->evp_out;
 }
 
 const double *qd__sim_energy_eval(qd_sim *s, double t, const double *q, const double *qd) {

@@ -11,6 +11,10 @@
 - --set e=1: no rest, the energy kept, every flight 2 t1.
 - examples/rhombus_wall.qd (Desloge ch. 57 ex. 1, reference T55): the row
   after the impact has x' = -3/7, th' = 3/7.
+- examples/grazing_disc.qd (issue 33): the grazing pass inside one step of
+  free flight gives exactly one impact, at t = 5 - sqrt(1 - b^2), with the
+  velocity reflected about the normal there and the energy kept; without
+  the disc, --event "x^2 + y^2 = 1" gives both crossings, 5 -+ sqrt(1 - b^2).
 - qdot poincare on examples/pendulum_wall.qd: the amplitudes after each
   impact, 1 - cos(a_n) = e^(2n) (1 - cos th0), and no impact rows.
 - Errors: a restitution outside [0, 1] (--set e=1.5) and a gap negative at
@@ -26,6 +30,7 @@ import json
 import math
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -116,6 +121,38 @@ def main():
         check(abs(float(imp[1]["x'"]) + 3 / 7) < 1e-13 and abs(float(imp[1]["th'"]) - 3 / 7) < 1e-13,
               f'rhombus after: {imp[1]}')
     check('qdot: simulate: 1 impact, energy lost 1.14286' in err.splitlines(), f'rhombus: {err!r}')
+
+    # the grazing disc (issue 33): each step of free flight grows until one
+    # spans the whole pass, so only the dense output's samples see it
+    graze = ROOT / 'examples' / 'grazing_disc.qd'
+    b = 0.9
+    w = math.sqrt(1 - b * b)
+    rc, out, err = run(qdot, 'simulate', graze, '--t-end', 10, '--rtol', 1e-10)
+    check(rc == 0, f'graze: exit {rc} {err}')
+    imp = [x for x in rows(out) if x.get('event') == '1']
+    check(len(imp) == 2, f'graze: {len(imp)} impact rows, want 2 (1 impact)')
+    if len(imp) == 2:
+        xc = -w
+        vx, vy = 1 - 2 * xc * xc, -2 * xc * b  # v - 2 (v.n) n, n = (x_c, b)
+        before, after = imp
+        check(abs(float(before['t']) - (5 - w)) < 1e-9 and abs(float(before['x']) - xc) < 1e-9 and
+              abs(float(before['y']) - b) < 1e-9, f'graze: impact at {before}')
+        check(abs(float(after["x'"]) - vx) < 1e-9 and abs(float(after["y'"]) - vy) < 1e-9,
+              f'graze: velocity after {after}, want ({vx}, {vy})')
+        check(abs(float(after['energy']) - 0.5) < 1e-12, f'graze: energy {after["energy"]}')
+    check(any(line.startswith('qdot: simulate: 1 impact,') for line in err.splitlines()),
+          f'graze: {err!r}')
+    free = Path(tempfile.mkdtemp()) / 'graze_free.qd'
+    free.write_text(''.join(line for line in graze.read_text().splitlines(True)
+                            if not line.startswith('impact ')))
+    rc, out, err = run(qdot, 'simulate', free, '--t-end', 10, '--rtol', 1e-10,
+                       '--event', 'x^2 + y^2 = 1')
+    check(rc == 0, f'graze --event: exit {rc} {err}')
+    ev = [float(x['t']) for x in rows(out) if x.get('event') == '1']
+    check(len(ev) == 2 and abs(ev[0] - (5 - w)) < 1e-9 and abs(ev[1] - (5 + w)) < 1e-9,
+          f'graze --event: crossings {ev}, want {5 - w}, {5 + w}')
+    free.unlink()
+    free.parent.rmdir()
 
     # poincare on the pendulum at a wall: only the section's crossings (the
     # impacts' rows are not crossings); 1 - cos(a_n) = e^(2n) (1 - cos th0)

@@ -169,6 +169,12 @@ def _(q, v, t, p):
     return [-p['g']]
 
 
+@example('grazing_disc', ['x', 'y'], ranges={'x': (1.5, 3.0)})
+def _(q, v, t, p):
+    # between impacts a free particle (Newton's first law): x'' = y'' = 0
+    return [0.0, 0.0]
+
+
 @example('pendulum_wall', ['th'], ranges={'th': (0.0, 1.5)})
 def _(q, v, t, p):
     # between impacts the pendulum, Goldstein sec. 1.6: th'' = -(g/l) sin th
