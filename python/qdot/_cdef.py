@@ -14,6 +14,7 @@
 """The cffi cdef of libqdot, generated from include/qdot (internal)."""
 
 import contextlib
+import hashlib
 import io
 import os
 import re
@@ -102,6 +103,21 @@ def generate(include_dir):
     return "\n".join(lines + sorted(defines)) + "\n"
 
 
+def headers_digest(include_dir):
+    """sha256 of include_dir/qdot/*.h and of this file: what the cdef is made of."""
+    h = hashlib.sha256()
+    qdot = os.path.join(include_dir, "qdot")
+    for name in sorted(os.listdir(qdot)) + [None]:
+        path = os.path.abspath(__file__) if name is None else os.path.join(qdot, name)
+        if name is not None and not name.endswith(".h"):
+            continue
+        with open(path, "rb") as f:
+            data = f.read()
+        h.update(b"%s %d\n" % ((name or "_cdef.py").encode(), len(data)))
+        h.update(data)
+    return h.hexdigest()
+
+
 def ffi_of(include_dir):
     """A cffi.FFI holding the cdef of the headers under include_dir."""
     import cffi
@@ -119,6 +135,8 @@ def write_module(include_dir, path):
     tmp = path + ".tmp"
     with contextlib.redirect_stdout(io.StringIO()):  # cffi says "generating ..."
         ffi.emit_python_code(tmp)
+    with open(tmp, "a") as f:  # a source tree uses it only while this matches
+        f.write("HEADERS = %r\n" % headers_digest(include_dir))
     os.replace(tmp, path)
 
 

@@ -5,8 +5,9 @@
 # declarations are the headers themselves, run through the C preprocessor
 # (python/qdot/_cdef.py).  An installed package carries them as the module
 # qdot._ffi (written by setup.py and make install from the headers of the
-# tree it was built from); in a source tree they are made at import from
-# ../../include.  A field added to a header is therefore in the next
+# tree it was built from); in a source tree they are its build's
+# python/_ffi.py if that was made from the same headers (a digest of them is
+# in it), else made at import from ../../include.  A field added to a header is therefore in the next
 # import's layout, and lib.qd_... has the header's prototype.
 """Low-level cffi bindings of libqdot (internal to the package)."""
 
@@ -22,8 +23,40 @@ VERSION = "0.1.0"
 _SOURCE_INCLUDE = os.path.normpath(os.path.join(_HERE, "..", "..", "include"))
 
 
+def _build_dirs():
+    """Build trees whose python/_ffi.py a source tree's package may use."""
+    env = os.environ.get("QDOT_LIB")
+    if env:
+        yield env if os.path.isdir(env) else os.path.dirname(env)
+    yield os.path.join(_HERE, "..", "..", "build")
+
+
+def _built_for_source():
+    """The FFI of a build tree's python/_ffi.py (CMake's qdot_python_ffi)
+    when it was made from exactly these headers (its HEADERS digest), else
+    None: a header edited since the last make is read afresh."""
+    import importlib.util
+    from . import _cdef
+    digest = None
+    for d in _build_dirs():
+        path = os.path.join(d, "python", "_ffi.py")
+        if not os.path.exists(path):
+            continue
+        digest = digest or _cdef.headers_digest(_SOURCE_INCLUDE)
+        with open(path) as f:
+            if ("HEADERS = %r\n" % digest) not in f.read():
+                continue
+        spec = importlib.util.spec_from_file_location("qdot._ffi", path)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        return mod.ffi
+    return None
+
+
 def _make_ffi():
-    """The FFI of the headers: qdot._ffi when built, else the source tree's."""
+    """The FFI of the headers: qdot._ffi when installed; in a source tree,
+    its build's python/_ffi.py made from the same headers, else the cdef
+    made now from ../../include."""
     try:
         from ._ffi import ffi as built
         return built
@@ -39,7 +72,7 @@ def _make_ffi():
         raise ImportError("qdot: needs cffi (apt-get install python3-cffi)") from None
     from . import _cdef
     try:
-        return _cdef.ffi_of(_SOURCE_INCLUDE)
+        return _built_for_source() or _cdef.ffi_of(_SOURCE_INCLUDE)
     except (OSError, ValueError) as err:  # no cc, or the preprocessor failed
         raise ImportError("qdot: cannot read the headers in %s (%s); install the package "
                           "with `pip install .`" % (_SOURCE_INCLUDE, err)) from None
@@ -73,7 +106,8 @@ def _checked(handle, path):
     """handle, once its qd_version() is VERSION; else ImportError saying what to do."""
     try:
         qd_version = handle.qd_version
-    except AttributeError:
+    # a missing symbol: AttributeError from an in-line FFI, ffi.error from qdot._ffi
+    except (AttributeError, getattr(ffi, "error", AttributeError)):
         raise ImportError("qdot: %s has no qd_version(): it is older than this package "
                           "(%s); rebuild libqdot from the same source tree, or reinstall "
                           "with `pip install .`" % (path, VERSION)) from None
