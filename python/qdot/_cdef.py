@@ -23,7 +23,8 @@ import subprocess
 import sys
 
 _MARKER = re.compile(r'^# (\d+) "([^"]*)"')
-_INT_DEFINE = re.compile(r"^#define (QD_[A-Z0-9_]+) (\(\(size_t\)-?\d+\)|-?\d+|\(\(size_t\)\d+ << \d+\))$")
+_INT_DEFINE = re.compile(r"^#define (QD_[A-Z0-9_]+) "
+                         r"(\(\(size_t\)-?\d+\)|-?\d+|\(\(size_t\)\d+ << \d+\))$")
 
 
 def _compiler():

@@ -138,8 +138,9 @@ class Core:
         if lib.qd_model_locate(self.model, diag) or cls is ModelError:
             return ModelError(format_diag(diag, self.file, self.text), diag, self.file)
         msg = ffi.string(diag.message).decode() or cstr(lib.qd_status_str(diag.status))
-        if diag.subject == 0 and diag.name[0]:  # an option's field (qdot/sim.h): the argument
-            msg += " (the argument %s)" % ffi.string(diag.name).decode()
+        name = ffi.string(diag.name).decode()
+        if diag.subject == 0 and name:  # an option's field (qdot/sim.h): the argument
+            msg += " (the argument %s)" % name
         return (cls or Error)(msg, diag.status)
 
     def check(self, status, cls=None):

@@ -7,8 +7,9 @@
 # qdot._ffi (written by setup.py and make install from the headers of the
 # tree it was built from); in a source tree they are its build's
 # python/_ffi.py if that was made from the same headers (a digest of them is
-# in it), else made at import from ../../include.  A field added to a header is therefore in the next
-# import's layout, and lib.qd_... has the header's prototype.
+# in it), else made at import from ../../include.  A field added to a header
+# is therefore in the next import's layout, and lib.qd_... has the header's
+# prototype.
 """Low-level cffi bindings of libqdot (internal to the package)."""
 
 import ctypes.util

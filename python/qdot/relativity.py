@@ -129,8 +129,8 @@ def proper_time(v, t0, t1, c=1.0):
         xs = []
         for k, text in enumerate(v):
             diag = new("qd_diag")
-            x = lib.qd_read(ctx.ctx, str(text).encode(), new("qd_read_opts", {"new_symbols": True}),
-                            diag)
+            opts = new("qd_read_opts", {"new_symbols": True})
+            x = lib.qd_read(ctx.ctx, str(text).encode(), opts, diag)
             if not x:
                 ctx(diag.status or 1)
             xs.append(x)
