@@ -4,7 +4,8 @@
 # stdbool.h and stdint.h stay out: cffi knows size_t, _Bool, uint64_t).
 # static inline functions are dropped (libqdot does not export them) and the
 # integer #defines of the headers (QD_SCENE_MAX_FRAMES 3600) are appended,
-# since cffi takes "#define NAME 123" in a cdef.
+# since cffi takes "#define NAME 123" in a cdef; the floating ones
+# (QD_SS_RANK_TOL 1e-9) go beside it, as FLOATS.
 #
 # Nothing here is written by hand about a struct, a field or an enum value:
 # a field added to a header is in the next build's cdef.  Run as a program
@@ -25,6 +26,8 @@ import sys
 _MARKER = re.compile(r'^# (\d+) "([^"]*)"')
 _INT_DEFINE = re.compile(r"^#define (QD_[A-Z0-9_]+) "
                          r"(\(\(size_t\)-?\d+\)|-?\d+|\(\(size_t\)\d+ << \d+\))$")
+_FLOAT_DEFINE = re.compile(r"^#define (QD_[A-Z0-9_]+) "
+                           r"(-?(?:\d+\.\d*|\d*\.\d+|\d+)(?:[eE][-+]?\d+)?)$")
 
 
 def _compiler():
@@ -93,15 +96,33 @@ def generate(include_dir):
         if current.startswith(ours):
             keep.append(line)
     text = _drop_inline("\n".join(keep))
-    defines = []
-    seen = set()
-    for line in _run(cc + ["-std=c11", "-E", "-dM", "-I", include_dir, top]).splitlines():
-        m = _INT_DEFINE.match(line.strip())
-        if m and m.group(1) not in seen:
-            seen.add(m.group(1))
-            defines.append("#define %s %d" % (m.group(1), _size_t_value(m.group(2))))
+    ints = _defines(include_dir)[0]
+    defines = ["#define %s %d" % kv for kv in sorted(ints.items())]
     lines = [l for l in text.splitlines() if l.strip()]
-    return "\n".join(lines + sorted(defines)) + "\n"
+    return "\n".join(lines + defines) + "\n"
+
+
+def _defines(include_dir):
+    """({name: int}, {name: float}) of the headers' QD_ #defines that are one
+    number: cffi takes the integers in a cdef, not the floating ones."""
+    include_dir = os.path.abspath(include_dir)
+    top = os.path.join(include_dir, "qdot", "qdot.h")
+    ints, floats = {}, {}
+    for line in _run(_compiler() + ["-std=c11", "-E", "-dM", "-I", include_dir,
+                                    top]).splitlines():
+        m = _INT_DEFINE.match(line.strip())
+        if m:
+            ints[m.group(1)] = _size_t_value(m.group(2))
+            continue
+        m = _FLOAT_DEFINE.match(line.strip())
+        if m:
+            floats[m.group(1)] = float(m.group(2))
+    return ints, floats
+
+
+def floats(include_dir):
+    """{name: value} of the floating #defines (QD_SS_RANK_TOL 1e-9)."""
+    return dict(sorted(_defines(include_dir)[1].items()))
 
 
 def headers_digest(include_dir):
@@ -136,7 +157,10 @@ def write_module(include_dir, path):
     tmp = path + ".tmp"
     with contextlib.redirect_stdout(io.StringIO()):  # cffi says "generating ..."
         ffi.emit_python_code(tmp)
-    with open(tmp, "a") as f:  # a source tree uses it only while this matches
+    with open(tmp, "a") as f:
+        # the floating #defines, which a cdef cannot hold
+        f.write("FLOATS = %r\n" % floats(include_dir))
+        # a source tree uses the module only while this matches
         f.write("HEADERS = %r\n" % headers_digest(include_dir))
     os.replace(tmp, path)
 

@@ -33,7 +33,7 @@ def _build_dirs():
 
 
 def _built_for_source():
-    """The FFI of a build tree's python/_ffi.py (CMake's qdot_python_ffi)
+    """The module python/_ffi.py of a build tree (CMake's qdot_python_ffi)
     when it was made from exactly these headers (its HEADERS digest), else
     None: a header edited since the last make is read afresh."""
     import importlib.util
@@ -50,17 +50,17 @@ def _built_for_source():
         spec = importlib.util.spec_from_file_location("qdot._ffi", path)
         mod = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(mod)
-        return mod.ffi
+        return mod
     return None
 
 
 def _make_ffi():
-    """The FFI of the headers: qdot._ffi when installed; in a source tree,
-    its build's python/_ffi.py made from the same headers, else the cdef
-    made now from ../../include."""
+    """(FFI, floating #defines) of the headers: qdot._ffi when installed; in
+    a source tree, its build's python/_ffi.py made from the same headers,
+    else the cdef made now from ../../include."""
     try:
-        from ._ffi import ffi as built
-        return built
+        from . import _ffi
+        return _ffi.ffi, _ffi.FLOATS
     except ImportError:
         pass
     if not os.path.exists(os.path.join(_SOURCE_INCLUDE, "qdot", "qdot.h")):
@@ -73,13 +73,16 @@ def _make_ffi():
         raise ImportError("qdot: needs cffi (apt-get install python3-cffi)") from None
     from . import _cdef
     try:
-        return _built_for_source() or _cdef.ffi_of(_SOURCE_INCLUDE)
+        built = _built_for_source()
+        if built:
+            return built.ffi, built.FLOATS
+        return _cdef.ffi_of(_SOURCE_INCLUDE), _cdef.floats(_SOURCE_INCLUDE)
     except (OSError, ValueError) as err:  # no cc, or the preprocessor failed
         raise ImportError("qdot: cannot read the headers in %s (%s); install the package "
                           "with `pip install .`" % (_SOURCE_INCLUDE, err)) from None
 
 
-ffi = _make_ffi()
+ffi, FLOATS = _make_ffi()  # FLOATS: {"QD_SS_RANK_TOL": 1e-9, ...}
 
 
 def _candidates():

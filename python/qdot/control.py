@@ -12,7 +12,7 @@ import numbers
 import numpy as np
 
 from ._core import Error, ModelError, format_diag, name_of, number_expr
-from ._lib import lib, new, cstr, exprs, doubles, doubles_of
+from ._lib import lib, new, cstr, exprs, doubles, doubles_of, FLOATS
 
 # qd_care_failure (qdot/control.h), by value
 CARE_FAILURES = ["ok", "R not positive definite", "Q not positive semidefinite",
@@ -95,7 +95,7 @@ class StateSpace:
     point as given.
     """
 
-    rank_tolerance = 1e-9  # QD_SS_RANK_TOL
+    rank_tolerance = FLOATS["QD_SS_RANK_TOL"]  # qdot/statespace.h
 
     def __init__(self, core, s, about):
         self._core = core

@@ -104,6 +104,8 @@ def test_enums_and_defines_are_the_headers():
     assert lib.QD_SCENE_MAX_FRAMES == frames
     assert lib.QD_SCENE_ORIGIN == 2 ** (8 * _lib.ffi.sizeof("size_t")) - 1
     assert lib.QD_OK == 0 and lib.QD_FMT_SYMPY == 3
+    assert _lib.FLOATS["QD_SS_RANK_TOL"] == 1e-9  # a floating #define, beside the cdef
+    assert _lib.FLOATS == _cdef.floats(INCLUDE)
 
 
 def test_every_exported_function_is_declared():
@@ -130,8 +132,9 @@ def test_source_tree_uses_a_build_only_of_the_same_headers(tmp_path, monkeypatch
     (build / "python").mkdir(parents=True)
     _cdef.write_module(INCLUDE, str(build / "python" / "_ffi.py"))  # as make does
     monkeypatch.setenv("QDOT_LIB", str(build))
-    ffi = _lib._built_for_source()
-    assert ffi is not None and ffi.sizeof("qd_eom") == _lib.ffi.sizeof("qd_eom")
+    mod = _lib._built_for_source()
+    assert mod is not None and mod.ffi.sizeof("qd_eom") == _lib.ffi.sizeof("qd_eom")
+    assert mod.FLOATS == _cdef.floats(INCLUDE)
     inc = tmp_path / "include"
     shutil.copytree(INCLUDE, inc)
     with open(inc / "qdot" / "modes.h", "a") as f:
