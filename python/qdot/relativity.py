@@ -11,7 +11,7 @@ import numpy as np
 from ._core import Error, take_error
 from ._lib import ffi, lib, new, exprs
 
-# QD_LORENTZ_FRAME .. QD_LORENTZ_CONTRACT (relativity.h), in this order
+# the parts qd_lorentz_in.ask names, each by its bit QD_LORENTZ_FRAME ... (relativity.h)
 _PARTS = ["frame", "event", "velocity", "acceleration", "momentum", "compose", "dilate",
           "contract"]
 _COLLIDE_MAX, _PRODUCTS = lib.QD_COLLIDE_MAX, lib.QD_COLLIDE_PRODUCTS
@@ -88,11 +88,11 @@ def lorentz(frame, c=1.0, event=None, velocity=None, acceleration=None, momentum
                  momentum=momentum, compose=compose, dilate=dilate, contract=contract)
     a, o = new("qd_lorentz_in", {"c": float(c)}), new("qd_lorentz_out")
     with _Ctx() as ctx:
-        for bit, name in enumerate(_PARTS):
+        for name in _PARTS:
             x = given[name]
             if x is None:
                 continue
-            a.ask |= 1 << bit
+            a.ask |= getattr(lib, "QD_LORENTZ_" + name.upper())
             if name == "dilate":
                 a.dilate = float(x)
             elif name == "momentum" and isinstance(x, dict):
