@@ -14,10 +14,14 @@ import numpy as np
 from ._core import Error, ModelError, format_diag, name_of, number_expr
 from ._lib import lib, new, cstr, exprs, doubles, doubles_of, FLOATS
 
-# qd_care_failure (qdot/control.h), by value
-CARE_FAILURES = ["ok", "R not positive definite", "Q not positive semidefinite",
-                 "not stabilizable", "not detectable", "imaginary axis", "ill-conditioned",
-                 "not stabilizing"]
+# the words of each qd_care_failure (qdot/control.h), by its enum value
+CARE_FAILURES = {lib.QD_CARE_OK: "ok", lib.QD_CARE_R_NOT_PD: "R not positive definite",
+                 lib.QD_CARE_Q_NOT_PSD: "Q not positive semidefinite",
+                 lib.QD_CARE_NOT_STABILIZABLE: "not stabilizable",
+                 lib.QD_CARE_NOT_DETECTABLE: "not detectable",
+                 lib.QD_CARE_IMAGINARY_AXIS: "imaginary axis",
+                 lib.QD_CARE_ILL_CONDITIONED: "ill-conditioned",
+                 lib.QD_CARE_NOT_STABILIZING: "not stabilizing"}
 
 
 def _matrix(ptr, rows, cols):
@@ -135,7 +139,7 @@ class StateSpace:
                                    _flat(Rm), out)
             if st != 0:
                 err = core.error(st)
-                err.failure = CARE_FAILURES[out.failure]
+                err.failure = CARE_FAILURES.get(out.failure, "failure %d" % out.failure)
                 raise err
             return Lqr(_matrix(out.K, nu, nx), _matrix(out.X, nx, nx),
                        np.array([complex(out.eig_re[k], out.eig_im[k]) for k in range(nx)]),

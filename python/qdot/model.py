@@ -509,7 +509,8 @@ class Model:
         core.check(lib.qd_scene_points(core.ctx, core.model, which, pp, n))
         pts = pp[0]
         try:
-            kinds = ("particle", "body", "position")
+            kinds = {lib.QD_SCENE_PARTICLE: "particle", lib.QD_SCENE_BODY: "body",
+                     lib.QD_SCENE_POSITION: "position"}
             return [{"name": cstr(pts[i].name), "kind": kinds[pts[i].kind],
                      "position": [core.text_of(pts[i].pos[k]) for k in range(3)]}
                     for i in range(n[0])]
