@@ -1,12 +1,14 @@
 # setup.py - how `pip install .` builds the qdot package: CMake builds the
 # shared libqdot (no tests, no CLI) in the build's temporary directory, and
 # its soname, libqdot.so.0, is copied into the package next to _lib.py, which
-# loads it from there first.  The version is read from include/qdot/version.h,
-# the one place it is written.
+# loads it from there first; beside it goes qdot/_ffi.py, the cffi
+# declarations python/qdot/_cdef.py makes from include/qdot.  The version is
+# read from include/qdot/version.h, the one place it is written.
 import os
 import re
 import shutil
 import subprocess
+import sys
 
 from setuptools import setup
 from setuptools.command.build_py import build_py
@@ -43,6 +45,11 @@ class BuildWithLibrary(build_py):
         targets = ["qdot"] + [t for t in ("qdot_cairo", "qdot_hdf5", "qdot_mpi")
                               if os.path.isdir(os.path.join(tree, "CMakeFiles", t + ".dir"))]
         subprocess.run([cmake, "--build", tree, "-j", jobs, "--target"] + targets, check=True)
+        # the declarations of libqdot for cffi, made from the headers by the
+        # Python that will run the package (python/qdot/_cdef.py)
+        subprocess.run([sys.executable, os.path.join(ROOT, "python", "qdot", "_cdef.py"),
+                        os.path.join(ROOT, "include"),
+                        os.path.join(self.build_lib, "qdot", "_ffi.py")], check=True)
         dest = os.path.join(self.build_lib, "qdot", SONAME)
         shutil.copyfile(os.path.realpath(os.path.join(tree, SONAME)), dest)
         os.chmod(dest, 0o755)

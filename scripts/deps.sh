@@ -8,12 +8,12 @@ pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev libflint-arb-dev liblapa
 pkgs="$pkgs libcairo2-dev"  # plots (src/plot): Cairo, and its runtime library with it
 pkgs="$pkgs libhdf5-dev"    # qdot sweep --format hdf5 (optional: built when found)
 # Tests: cmocka and SymPy/SciPy for the cross-checks, chromium for the animate
-# page (tests/cli/check_animate_cli.py), numpy/pytest for python/tests, and
+# page (tests/cli/check_animate_cli.py), numpy/cffi/pytest for python/tests, and
 # OpenMPI for the 2-rank sweep test (the CLI is built with MPI when it is found);
 # clang for make test's clang build (built with warnings as errors, not run).
 case $what in
   test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy chromium"
-              pkgs="$pkgs python3-numpy python3-pytest libopenmpi-dev openmpi-bin clang"
+              pkgs="$pkgs python3-numpy python3-cffi python3-pytest libopenmpi-dev openmpi-bin clang"
               # pip install . of the Python package, offline (tests/python/check_pip_install.py)
               pkgs="$pkgs python3-pip python3-venv python3-setuptools python3-wheel" ;;
 esac

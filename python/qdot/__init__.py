@@ -9,9 +9,10 @@
     r = m.simulate(10, rtol=1e-10)
     r.t, r["theta1"], r.energy_error_max
 
-The package is a binding over libqdot (ctypes): every result is computed by
-the C library.  The library is found through QDOT_LIB, the build tree next
-to the package, the installed prefix, then the system's library path.
+The package is a binding over libqdot (cffi, declarations made from the C
+headers): every result is computed by the C library.  The library is found
+through QDOT_LIB, the build tree next to the package, the installed prefix,
+then the system's library path.
 """
 
 from ._core import Error, ModelError

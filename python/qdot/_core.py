@@ -8,13 +8,9 @@
 # equations freed under it.
 """The C objects behind a qdot.Model (internal)."""
 
-import ctypes
-from ctypes import byref
+from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_OK, QD_FMT_TEXT
 
-from ._lib import (lib, Diag, Buf, ModelOpts, ParamValue, ReadOpts, buf_text, exprs,
-                   doubles, QD_OK, QD_FMT_TEXT)
-
-QD_ERR_NOMEM = 1
+QD_ERR_NOMEM = lib.QD_ERR_NOMEM
 
 
 class Error(Exception):
@@ -41,14 +37,14 @@ class ModelError(Error):
         self.file = file
         self.line = diag.line if diag.located else 0
         self.col = diag.col if diag.located else 0
-        self.message = diag.message.decode()
-        self.hint = diag.hint.decode()
+        self.message = ffi.string(diag.message).decode()
+        self.hint = ffi.string(diag.hint).decode()
 
 
 def format_diag(diag, file, text):
-    """qd_diag_format of diag against text (bytes or None)."""
-    buf = Buf()
-    lib.qd_diag_format(byref(diag), file.encode(), text, byref(buf))
+    """qd_diag_format of diag (a qd_diag *) against text (bytes or None)."""
+    buf = new("qd_buf")
+    lib.qd_diag_format(diag, file.encode(), text or ffi.NULL, buf)
     return buf_text(buf).rstrip("\n")
 
 
@@ -56,7 +52,9 @@ def take_error(ctx):
     """A copy of the context's error record, and the record cleared (errors
     are sticky: the next call must not report this one again)."""
     d = lib.qd_ctx_diag(ctx)
-    diag = Diag.from_buffer_copy(d.contents) if d else Diag()
+    diag = new("qd_diag")
+    if d:
+        diag[0] = d[0]
     lib.qd_ctx_clear_error(ctx)
     return diag
 
@@ -70,20 +68,20 @@ def number_expr(ctx, what, value):
     """A value as an exact number node: 9.81 stays 9.81, and a string is
     read in the model language ("pi/6"); what names it in messages."""
     if isinstance(value, str):
-        diag = Diag()
-        opts = ReadOpts(new_symbols=False)
-        x = lib.qd_read(ctx, value.encode(), byref(opts), byref(diag))
+        diag = new("qd_diag")
+        opts = new("qd_read_opts", {"new_symbols": False})
+        x = lib.qd_read(ctx, value.encode(), opts, diag)
         if not x:
             lib.qd_ctx_clear_error(ctx)
             raise ModelError(format_diag(diag, what, value.encode()), diag, what)
         if lib.qd_is_number(x):
             return x
         # a constant expression (pi/6) goes in as its value, as --set gives it
-        out = ctypes.c_double()
-        if lib.qd_eval(ctx, x, 0, None, None, byref(out)) != QD_OK:
+        out = new("double")
+        if lib.qd_eval(ctx, x, 0, ffi.NULL, ffi.NULL, out) != QD_OK:
             lib.qd_ctx_clear_error(ctx)
             raise Error("%s: '%s' is not a number" % (what, value))
-        value = out.value
+        value = out[0]
     x = float(value)
     if isinstance(value, bool) or not x == x or x in (float("inf"), float("-inf")):
         raise Error("%s: %r is not a finite number" % (what, value))
@@ -102,15 +100,18 @@ class Core:
         self.ctx = lib.qd_ctx_new()
         if not self.ctx:
             raise MemoryError("qdot: out of memory")
-        self.text = text  # the model keeps pointers into it: keep it alive
+        self.text = text
+        self._ctext = ffi.new("char[]", text)  # the model keeps pointers into it
         self.file = file
-        vals = (ParamValue * max(len(params), 1))()
+        vals = ffi.new("qd_param_value[]", max(len(params), 1))
+        names = [ffi.new("char[]", name.encode()) for name, _ in params]  # alive for the call
         for i, (name, value) in enumerate(params):
-            vals[i].name = name.encode()
+            vals[i].name = names[i]
             vals[i].value = _number(self.ctx, name, value)
-        opts = ModelOpts(params=vals, nparams=len(params), fix_params=False)
-        diag = Diag()
-        self.model = lib.qd_model_parse_opts(self.ctx, text, byref(opts), byref(diag))
+        opts = new("qd_model_opts", {"params": vals, "nparams": len(params),
+                                     "fix_params": False})
+        diag = new("qd_diag")
+        self.model = lib.qd_model_parse_opts(self.ctx, self._ctext, opts, diag)
         if not self.model:
             lib.qd_ctx_clear_error(self.ctx)
             raise ModelError(format_diag(diag, file, text), diag, file)
@@ -134,11 +135,12 @@ class Core:
             diag.status = status
         if diag.status == QD_ERR_NOMEM:
             return MemoryError("qdot: out of memory")
-        if lib.qd_model_locate(self.model, byref(diag)) or cls is ModelError:
+        if lib.qd_model_locate(self.model, diag) or cls is ModelError:
             return ModelError(format_diag(diag, self.file, self.text), diag, self.file)
-        msg = diag.message.decode() or lib.qd_status_str(diag.status).decode()
-        if diag.subject == 0 and diag.name:  # an option's field (qdot/sim.h): the argument
-            msg += " (the argument %s)" % diag.name.decode()
+        msg = ffi.string(diag.message).decode() or cstr(lib.qd_status_str(diag.status))
+        name = ffi.string(diag.name).decode()
+        if diag.subject == 0 and name:  # an option's field (qdot/sim.h): the argument
+            msg += " (the argument %s)" % name
         return (cls or Error)(msg, diag.status)
 
     def check(self, status, cls=None):
@@ -155,7 +157,7 @@ class Core:
             if not e:
                 raise self.error(cls=ModelError)
             self._eom = e
-        return self._eom.contents
+        return self._eom
 
     def eom_ptr(self):
         """The qd_eom pointer itself, for calls that take it."""
@@ -172,9 +174,9 @@ class Core:
         out = []
         for i in range(lib.qd_model_nparams(self.model)):
             sym = lib.qd_model_param(self.model, i)
-            x = ctypes.c_double()
-            lib.qd_model_param_number(self.model, i, byref(x))
-            out.append((name_of(sym), sym, x.value))
+            x = new("double")
+            lib.qd_model_param_number(self.model, i, x)
+            out.append((name_of(sym), sym, x[0]))
         return out
 
     def state(self):
@@ -194,15 +196,14 @@ class Core:
 
     def eval(self, x, syms, vals):
         """The value of expression x at syms = vals."""
-        out = ctypes.c_double()
-        self.check(lib.qd_eval(self.ctx, x, len(syms), exprs(syms), doubles(vals),
-                               byref(out)))
-        return out.value
+        out = new("double")
+        self.check(lib.qd_eval(self.ctx, x, len(syms), exprs(syms), doubles(vals), out))
+        return out[0]
 
     def text_of(self, x, fmt=QD_FMT_TEXT):
         """x printed (QD_FMT_TEXT or QD_FMT_SYMPY)."""
-        buf = Buf()
-        st = lib.qd_print(self.ctx, x, fmt, byref(buf))
+        buf = new("qd_buf")
+        st = lib.qd_print(self.ctx, x, fmt, buf)
         s = buf_text(buf)
         self.check(st)
         return s
@@ -215,9 +216,9 @@ class Core:
             d = lib.qd_model_definition(self.model, raw[:-1].strip().encode())
             if d:
                 return lib.qd_dt(self.ctx, d)
-        diag = Diag()
-        opts = ReadOpts(new_symbols=True)
-        x = lib.qd_read(self.ctx, raw.encode(), byref(opts), byref(diag))
+        diag = new("qd_diag")
+        opts = new("qd_read_opts", {"new_symbols": True})
+        x = lib.qd_read(self.ctx, raw.encode(), opts, diag)
         if not x:
             lib.qd_ctx_clear_error(self.ctx)
             raise ModelError(format_diag(diag, what, raw.encode()), diag, what)
@@ -225,12 +226,11 @@ class Core:
 
     def _definitions(self, x):
         """x with each plain symbol that names a definition replaced by its value."""
-        QD_ROLE_PLAIN = 0
-        k = lib.qd_free_symbols(self.ctx, x, None, 0)
-        syms = (ctypes.c_void_p * max(k, 1))()
+        k = lib.qd_free_symbols(self.ctx, x, ffi.NULL, 0)
+        syms = ffi.new("const qd_expr *[]", max(k, 1))
         lib.qd_free_symbols(self.ctx, x, syms, k)
         for s in list(syms)[:k]:
-            if lib.qd_symbol_role(s) != QD_ROLE_PLAIN:
+            if lib.qd_symbol_role(s) != lib.QD_ROLE_PLAIN:
                 continue
             d = lib.qd_model_definition(self.model, lib.qd_expr_name(s))
             if d:
@@ -242,4 +242,4 @@ class Core:
 
 def name_of(sym):
     """A symbol's name as str."""
-    return lib.qd_expr_name(sym).decode()
+    return ffi.string(lib.qd_expr_name(sym)).decode()

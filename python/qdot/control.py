@@ -7,34 +7,35 @@
 # (whose context records the errors of a later lqr()).
 """State-space form and linear-quadratic regulation (internal module)."""
 
-from ctypes import byref
 import numbers
 
 import numpy as np
 
 from ._core import Error, ModelError, format_diag, name_of, number_expr
-from ._lib import lib, StateSpace as _SS, CareResult, Diag, ReadOpts, exprs, doubles
+from ._lib import lib, new, cstr, exprs, doubles, doubles_of, FLOATS
 
-# qd_care_failure (qdot/control.h), by value
-CARE_FAILURES = ["ok", "R not positive definite", "Q not positive semidefinite",
-                 "not stabilizable", "not detectable", "imaginary axis", "ill-conditioned",
-                 "not stabilizing"]
+# the words of each qd_care_failure (qdot/control.h), by its enum value
+CARE_FAILURES = {lib.QD_CARE_OK: "ok", lib.QD_CARE_R_NOT_PD: "R not positive definite",
+                 lib.QD_CARE_Q_NOT_PSD: "Q not positive semidefinite",
+                 lib.QD_CARE_NOT_STABILIZABLE: "not stabilizable",
+                 lib.QD_CARE_NOT_DETECTABLE: "not detectable",
+                 lib.QD_CARE_IMAGINARY_AXIS: "imaginary axis",
+                 lib.QD_CARE_ILL_CONDITIONED: "ill-conditioned",
+                 lib.QD_CARE_NOT_STABILIZING: "not stabilizing"}
 
 
 def _matrix(ptr, rows, cols):
     """A row-major C array as a rows x cols numpy array (a copy)."""
-    if rows == 0 or cols == 0 or not ptr:
-        return np.zeros((rows, cols))
-    return np.ctypeslib.as_array(ptr, shape=(rows * cols,)).copy().reshape(rows, cols)
+    return doubles_of(ptr, rows * cols).reshape(rows, cols)
 
 
 def _point_value(core, name, value):
     """A value of the operating point as an exact expression: text is read
     in the model language ("pi", "1/2"), numbers go in as written."""
     if isinstance(value, str):
-        diag = Diag()
-        x = lib.qd_read(core.ctx, value.encode(), byref(ReadOpts(new_symbols=False)),
-                        byref(diag))
+        diag = new("qd_diag")
+        x = lib.qd_read(core.ctx, value.encode(), new("qd_read_opts", {"new_symbols": False}),
+                        diag)
         if not x:
             lib.qd_ctx_clear_error(core.ctx)
             raise ModelError(format_diag(diag, "about " + name, value.encode()), diag,
@@ -66,13 +67,13 @@ def point(core, about):
 def linearize(core, about):
     """Model.linearize's work (see there)."""
     keys, vals = point(core, about)
-    out = _SS()
+    out = new("qd_statespace")
     try:
         core.check(lib.qd_linearize(core.ctx, core.eom_ptr(), core.model, len(keys),
-                                    exprs(keys), exprs(vals), byref(out)))
+                                    exprs(keys), exprs(vals), out))
         return StateSpace(core, out, dict(about))
     finally:
-        lib.qd_statespace_free(byref(out))
+        lib.qd_statespace_free(out)
 
 
 def _exact(core, syms, rows, cols):
@@ -98,7 +99,7 @@ class StateSpace:
     point as given.
     """
 
-    rank_tolerance = 1e-9  # QD_SS_RANK_TOL
+    rank_tolerance = FLOATS["QD_SS_RANK_TOL"]  # qdot/statespace.h
 
     def __init__(self, core, s, about):
         self._core = core
@@ -106,7 +107,7 @@ class StateSpace:
         self.about = about
         self.states = [name_of(s.states[i]) for i in range(nx)]
         self.inputs = [name_of(s.inputs[i]) for i in range(nu)]
-        self.outputs = [s.outputs[i].decode() for i in range(ny)]
+        self.outputs = [cstr(s.outputs[i]) for i in range(ny)]
         self.A, self.B = _matrix(s.A, nx, nx), _matrix(s.B, nx, nu)
         self.C, self.D = _matrix(s.C, ny, nx), _matrix(s.D, ny, nu)
         self.xdot0 = _matrix(s.xdot0, 1, nx)[0]
@@ -131,20 +132,20 @@ class StateSpace:
         ...)."""
         nx, nu = self.A.shape[0], self.B.shape[1]
         Qm, Rm = _square(Q, nx, "Q"), _square(R, nu, "R")
-        out = CareResult()
+        out = new("qd_care_result")
         core = self._core
         try:
             st = lib.qd_care_solve(core.ctx, nx, nu, _flat(self.A), _flat(self.B), _flat(Qm),
-                                   _flat(Rm), byref(out))
+                                   _flat(Rm), out)
             if st != 0:
                 err = core.error(st)
-                err.failure = CARE_FAILURES[out.failure]
+                err.failure = CARE_FAILURES.get(out.failure, "failure %d" % out.failure)
                 raise err
             return Lqr(_matrix(out.K, nu, nx), _matrix(out.X, nx, nx),
                        np.array([complex(out.eig_re[k], out.eig_im[k]) for k in range(nx)]),
                        out.residual, out.rcond)
         finally:
-            lib.qd_care_result_free(byref(out))
+            lib.qd_care_result_free(out)
 
     def __repr__(self):
         return "<qdot.StateSpace states %s, inputs %s>" % (self.states, self.inputs)

@@ -2,29 +2,10 @@
 # squares and Sylvester's inertia (qd_qform_reduce; Desloge App. 27).
 """qdot.quadratic_form(expr, variables): the reduction of a quadratic form."""
 
-import ctypes
 import json
-from ctypes import POINTER, Structure, byref, c_bool, c_char_p, c_int, c_size_t, c_void_p
 
-from ._lib import lib, Buf, Diag, buf_text, exprs, QD_FMT_TEXT
+from ._lib import ffi, lib, new, buf_text, cstr, exprs, QD_FMT_TEXT
 from ._core import Error
-
-
-class _QForm(Structure):
-    _fields_ = [("n", c_size_t), ("x", POINTER(c_void_p)), ("a", POINTER(c_void_p)),
-                ("nsq", c_size_t), ("coef", POINTER(c_void_p)), ("lin", POINTER(c_void_p)),
-                ("npos", c_size_t), ("nneg", c_size_t), ("nzero", c_size_t),
-                ("decided", c_bool), ("kind", c_char_p), ("paired", c_bool)]
-
-
-for _name, _res, _args in (
-        ("qd_qform_reduce", POINTER(_QForm), [c_void_p, c_void_p, c_size_t, POINTER(c_void_p)]),
-        ("qd_qform_free", None, [POINTER(_QForm)]),
-        ("qd_symbol", c_void_p, [c_void_p, c_char_p]),
-        ("qd_ctx_message", c_char_p, [c_void_p]),
-        ("qd_render_qform", c_int, [c_void_p, c_void_p, POINTER(_QForm), c_int, POINTER(Buf)])):
-    getattr(lib, _name).restype = _res
-    getattr(lib, _name).argtypes = _args
 
 
 class QuadraticForm:
@@ -61,35 +42,34 @@ def quadratic_form(expr, variables):
     if not ctx:
         raise MemoryError("qdot: out of memory")
     try:
-        diag = Diag()
-        phi = lib.qd_read(ctx, expr.encode(), None, byref(diag))
+        diag = new("qd_diag")
+        phi = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
         if not phi:
-            raise Error(diag.message.decode() or "cannot read the form")
+            raise Error(ffi.string(diag.message).decode() or "cannot read the form")
         xs = [lib.qd_symbol(ctx, v.encode()) for v in variables]
-        arr = (c_void_p * max(len(xs), 1))(*xs)
-        f = lib.qd_qform_reduce(ctx, phi, len(xs), arr)
+        f = lib.qd_qform_reduce(ctx, phi, len(xs), exprs(xs))
         if not f:
-            raise Error(lib.qd_ctx_message(ctx).decode())
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
         try:
-            q = f.contents
+            q = f
 
             def text(x):
-                buf = Buf()
-                lib.qd_print(ctx, x, QD_FMT_TEXT, byref(buf))
+                buf = new("qd_buf")
+                lib.qd_print(ctx, x, QD_FMT_TEXT, buf)
                 return buf_text(buf)
             n = q.n
             matrix = [[text(q.a[i * n + j]) for j in range(n)] for i in range(n)]
             coefs = [text(q.coef[k]) for k in range(q.nsq)]
             lins = [text(q.lin[k]) for k in range(q.nsq)]
             inertia = (q.npos, q.nneg, q.nzero) if q.decided else None
-            kind = q.kind.decode() if q.kind else None
+            kind = cstr(q.kind)
             out = QuadraticForm(matrix, coefs, lins, inertia, kind, bool(q.paired))
             printed = []
-            for fmt in (0, 2):  # QD_RENDER_TEXT, QD_RENDER_JSON
-                buf = Buf()
-                if lib.qd_render_qform(ctx, phi, f, fmt, byref(buf)) != 0:
-                    lib.qd_buf_free(byref(buf))
-                    raise Error(lib.qd_ctx_message(ctx).decode())
+            for fmt in (lib.QD_RENDER_TEXT, lib.QD_RENDER_JSON):
+                buf = new("qd_buf")
+                if lib.qd_render_qform(ctx, phi, f, fmt, buf) != 0:
+                    lib.qd_buf_free(buf)
+                    raise Error(cstr(lib.qd_ctx_message(ctx)))
                 printed.append(buf_text(buf))
             out._printed = tuple(printed)
             return out

@@ -6,40 +6,14 @@
 # C and Python and frees what the C calls allocate.
 """qdot.Model and the symbolic results it returns."""
 
-import ctypes
 import json as _json
-from ctypes import POINTER, Structure, byref, c_bool, c_char_p, c_double, c_int, c_size_t, c_void_p
 
 import numpy as np
 
 from ._core import Core, Error, ModelError, name_of
-from ._lib import (lib, Buf, ScenePoint, SceneShape, EquilibriaOut, EquilibriumChoice, Linear,
-                   ModesResult, buf_text, exprs, doubles, QD_FMT_SYMPY)
+from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY
 from . import sim as _sim
 from . import control as _control
-
-
-class _RenderOpts(Structure):
-    """qd_render_opts (qdot/render.h)."""
-    _fields_ = [("source", c_char_p), ("nstate", c_size_t), ("syms", POINTER(c_void_p)),
-                ("vals", POINTER(c_double)), ("multipliers", c_bool), ("notes", POINTER(Buf))]
-
-
-class _SpeedsOpts(Structure):
-    """qd_speeds_opts (qdot/speeds.h)."""
-    _fields_ = [("method", c_int), ("appell", c_bool), ("multipliers", c_bool)]
-
-
-for _name, _res, _args in (
-        ("qd_render_eom", c_int, [c_void_p, c_void_p, c_void_p, POINTER(_RenderOpts), c_int,
-                                  POINTER(Buf)]),
-        ("qd_render_speeds", c_int, [c_void_p, c_void_p, c_void_p, POINTER(_RenderOpts), c_int,
-                                     POINTER(Buf)]),
-        ("qd_render_hamel", c_int, [c_void_p, c_void_p, c_int, POINTER(Buf)]),
-        ("qd_render_format_parse", c_bool, [c_char_p, POINTER(c_int)]),
-        ("qd_speeds_method_from_name", c_bool, [c_char_p, POINTER(c_int)])):
-    getattr(lib, _name).restype = _res
-    getattr(lib, _name).argtypes = _args
 
 
 class _Printed:
@@ -180,8 +154,7 @@ class _SpeedsHandle:
 
     def __init__(self, core, se):
         self.core, self.se = core, se
-        e = ctypes.cast(se, POINTER(_SpeedsEom)).contents
-        self.speeds = [e.u[r] for r in range(e.m)]
+        self.speeds = [se.u[r] for r in range(se.m)]
 
     def __del__(self):
         if self.se:
@@ -189,18 +162,9 @@ class _SpeedsHandle:
             self.se = None
 
 
-class _SpeedsEom(Structure):
-    """The head of qd_speeds_eom (qdot/speeds.h) up to f."""
-    _fields_ = [("n", c_size_t), ("m", c_size_t), ("ncon", c_size_t),
-                ("q", POINTER(c_void_p)), ("qd", POINTER(c_void_p)),
-                ("u", POINTER(c_void_p)), ("ud", POINTER(c_void_p)),
-                ("def_", POINTER(c_void_p)), ("W", POINTER(c_void_p)), ("w", POINTER(c_void_p)),
-                ("kin", POINTER(c_void_p)), ("M", POINTER(c_void_p)), ("f", POINTER(c_void_p))]
-
-
 def _speeds_result(core, se, method):
     """A SpeedsEquations of the qd_speeds_eom se (strings in the model language)."""
-    e = ctypes.cast(se, POINTER(_SpeedsEom)).contents
+    e = se
     n, m = e.n, e.m
     text = core.text_of
     return SpeedsEquations([name_of(e.q[j]) for j in range(n)],
@@ -225,23 +189,25 @@ def _state_at(core, at, extra):
 
 def _rendered(core, call):
     """The text call(buf) writes, or the context's error raised."""
-    buf = Buf()
-    st = call(byref(buf))
+    buf = new("qd_buf")
+    st = call(buf)
     if st != 0:
-        lib.qd_buf_free(byref(buf))
+        lib.qd_buf_free(buf)
         core.check(st)
     return buf_text(buf)
 
 
 def _render(core, fn, e, fmt, at, extra, multipliers=False):
     """fn (qd_render_eom or qd_render_speeds) of e in format fmt."""
-    k = c_int()
-    lib.qd_render_format_parse(fmt.encode(), byref(k))
-    opts = _RenderOpts(core.file.encode(), 0, None, None, bool(multipliers), None)
+    k = new("qd_render_format")
+    lib.qd_render_format_parse(fmt.encode(), k)
+    source = ffi.new("char[]", core.file.encode())
+    opts = new("qd_render_opts", {"source": source, "multipliers": bool(multipliers)})
     if at:
         syms, vals = _state_at(core, at, extra)
-        opts.nstate, opts.syms, opts.vals = len(syms), exprs(syms), doubles(vals)
-    return _rendered(core, lambda buf: fn(core.ctx, core.model, e, byref(opts), k.value, buf))
+        csyms, cvals = exprs(syms), doubles(vals)  # alive for the call
+        opts.nstate, opts.syms, opts.vals = len(syms), csyms, cvals
+    return _rendered(core, lambda buf: fn(core.ctx, core.model, e, opts, k[0], buf))
 
 
 def _sympy_namespace(core, extra=()):
@@ -251,7 +217,7 @@ def _sympy_namespace(core, extra=()):
     shadow SymPy, like E, is printed self-contained)."""
     import sympy
     ns = dict(vars(sympy))
-    t = lib.qd_print_time_name(core.ctx).decode()
+    t = cstr(lib.qd_print_time_name(core.ctx))
     ns[t] = sympy.Symbol(t)
     for c in core.coords():
         name = name_of(c)
@@ -339,14 +305,14 @@ class Model:
         core = self._core
         e = core.eom()
         n = e.n
-        lams = [e.con[k].lam for k in range(e.ncon)]
+        lams = [getattr(e.con[k], "lambda") for k in range(e.ncon)]
         conv = _converter(core, sympy, lams)
         M = [[conv(e.M[i * n + j]) for j in range(n)] for i in range(n)]
         f = [conv(e.f[i]) for i in range(n)]
         if sympy:
             import sympy as sp
             M, f = sp.Matrix(M), sp.Matrix(f)
-        cons = [e.con[k].name.decode() for k in range(e.ncon)]
+        cons = [cstr(e.con[k].name) for k in range(e.ncon)]
         out = Equations([name_of(e.q[j]) for j in range(n)], M, f, cons)
         out._print = lambda fmt, at: _render(core, lib.qd_render_eom, core.eom_ptr(), fmt, at, [])
         return out
@@ -357,12 +323,12 @@ class Model:
         method "kane", "appell" or "hamel"; appell: also the Gibbs-Appell
         function S; multipliers: also the constraints' multipliers."""
         core = self._core
-        k = c_int()
-        if not isinstance(method, str) or not lib.qd_speeds_method_from_name(method.encode(),
-                                                                               byref(k)):
+        k = new("qd_speeds_method")
+        if not isinstance(method, str) or not lib.qd_speeds_method_from_name(method.encode(), k):
             raise Error("speeds_eom: method is kane, appell or hamel, not %r" % (method,))
-        opts = _SpeedsOpts(k.value, bool(appell), bool(multipliers))
-        se = lib.qd_speeds_derive(core.ctx, core.model, byref(opts))
+        opts = new("qd_speeds_opts", {"method": k[0], "appell": bool(appell),
+                                      "multipliers": bool(multipliers)})
+        se = lib.qd_speeds_derive(core.ctx, core.model, opts)
         if not se:
             raise core.error(cls=ModelError)
         ptr = _SpeedsHandle(core, se)  # freed with the result
@@ -373,8 +339,8 @@ class Model:
 
         def hamel(fmt="text"):
             """Hamel's coefficients gamma_ikm (text, or a dict for "json")."""
-            text = _rendered(core, lambda buf: lib.qd_render_hamel(
-                core.ctx, ptr.se, 0 if fmt == "text" else 2, buf))
+            k = lib.QD_RENDER_TEXT if fmt == "text" else lib.QD_RENDER_JSON
+            text = _rendered(core, lambda buf: lib.qd_render_hamel(core.ctx, ptr.se, k, buf))
             return text if fmt == "text" else _json.loads(text)
         out.hamel = hamel
         return out
@@ -394,7 +360,7 @@ class Model:
         if not g:
             raise core.error(cls=ModelError)
         try:
-            m = g.contents
+            m = g
             n = m.n
             conv = _converter(core, sympy)
             names = [name_of(m.q[i]) for i in range(n)]
@@ -421,11 +387,11 @@ class Model:
         gives SymPy expressions instead of strings."""
         core = self._core
         given = lib.qd_model_hamiltonian_given(core.model)
-        h = lib.qd_ham_derive(core.ctx, core.model, None if given else core.eom_ptr())
+        h = lib.qd_ham_derive(core.ctx, core.model, ffi.NULL if given else core.eom_ptr())
         if not h:
             raise core.error(cls=ModelError)
         try:
-            hh = h.contents
+            hh = h
             n = hh.n
             conv = _converter(core, sympy, [hh.p[j] for j in range(n)])
             return Hamiltonian(conv(hh.H), [name_of(hh.p[j]) for j in range(n)],
@@ -441,13 +407,13 @@ class Model:
         Newton search over the default box (qd_equilibria_find)."""
         core = self._core
         syms, vals = self._rest_state()
-        out = EquilibriaOut()
+        out = new("qd_equilibria")
         try:
             core.check(lib.qd_equilibria_find(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                              exprs(syms), doubles(vals), None, byref(out)))
+                                              exprs(syms), doubles(vals), ffi.NULL, out))
             return [self._equilibrium(out.pts[k], out.n) for k in range(out.count)]
         finally:
-            lib.qd_equilibria_free(byref(out))
+            lib.qd_equilibria_free(out)
 
     def _rest_state(self):
         """The model's initial state with every velocity 0."""
@@ -462,7 +428,7 @@ class Model:
         q = {names[j]: pt.q[j] for j in range(n)}
         exact = ({names[j]: self._core.text_of(pt.exact[j]) for j in range(n)}
                  if pt.exact else None)
-        kind = lib.qd_eq_kind_name(pt.kind).decode()
+        kind = cstr(lib.qd_eq_kind_name(pt.kind))
         return Equilibrium(q, exact, kind, pt.residual)
 
     def modes(self, about=None):
@@ -489,24 +455,24 @@ class Model:
     def _chosen(self, syms, vals):
         """The equilibrium `qdot modes` would choose (qd_equilibria_choose)."""
         core = self._core
-        choice = EquilibriumChoice()
+        choice = new("qd_equilibrium_choice")
         try:
             core.check(lib.qd_equilibria_choose(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                                exprs(syms), doubles(vals), byref(choice)))
+                                                exprs(syms), doubles(vals), choice))
             if not choice.pt:
                 raise Error("modes: no equilibrium found; give about={...}")
-            return self._equilibrium(choice.pt.contents, choice.found.n)
+            return self._equilibrium(choice.pt, choice.found.n)
         finally:
-            lib.qd_equilibrium_choice_free(byref(choice))
+            lib.qd_equilibrium_choice_free(choice)
 
     def _modes_at(self, e, syms, vals, point):
         """qd_linear_about and qd_modes_solve at the state syms = vals."""
         core = self._core
-        lin, res = Linear(), ModesResult()
+        lin, res = new("qd_linear"), new("qd_modes_result")
         try:
             core.check(lib.qd_linear_about(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                           exprs(syms), doubles(vals), byref(lin)))
-            core.check(lib.qd_modes_solve(core.ctx, byref(lin), byref(res)))
+                                           exprs(syms), doubles(vals), lin))
+            core.check(lib.qd_modes_solve(core.ctx, lin, res))
             n = res.n
             names = [name_of(e.q[j]) for j in range(n)]
             eig = np.array([complex(res.eig_re[k], res.eig_im[k]) for k in range(res.neig)])
@@ -516,8 +482,8 @@ class Model:
                                               for i in range(n)}) for j in range(n)]
             return Modes(modes, point, bool(res.conservative), eig, res.stable)
         finally:
-            lib.qd_modes_result_free(byref(res))
-            lib.qd_linear_free(byref(lin))
+            lib.qd_modes_result_free(res)
+            lib.qd_linear_free(lin)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from
@@ -538,14 +504,16 @@ class Model:
         default (particles and bodies, else the named positions x1,y1 or
         P1), or a sum of 1 particles, 2 bodies, 4 named positions."""
         core = self._core
-        pts = ctypes.POINTER(ScenePoint)()
-        n = ctypes.c_size_t()
-        core.check(lib.qd_scene_points(core.ctx, core.model, which, byref(pts), byref(n)))
+        pp = new("qd_scene_point *")
+        n = new("size_t")
+        core.check(lib.qd_scene_points(core.ctx, core.model, which, pp, n))
+        pts = pp[0]
         try:
-            kinds = ("particle", "body", "position")
-            return [{"name": pts[i].name.decode(), "kind": kinds[pts[i].kind],
+            kinds = {lib.QD_SCENE_PARTICLE: "particle", lib.QD_SCENE_BODY: "body",
+                     lib.QD_SCENE_POSITION: "position"}
+            return [{"name": cstr(pts[i].name), "kind": kinds[pts[i].kind],
                      "position": [core.text_of(pts[i].pos[k]) for k in range(3)]}
-                    for i in range(n.value)]
+                    for i in range(n[0])]
         finally:
             lib.qd_scene_points_free(pts)
 
@@ -558,19 +526,19 @@ class Model:
         arr = np.ascontiguousarray(positions, dtype=float)
         if arr.ndim != 3 or arr.shape[2] != 3:
             raise Error("scene_shape: positions[frame][point] = (x, y, z)")
-        sh = SceneShape()
-        st = lib.qd_scene_analyse(None, arr.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
-                                  arr.shape[0], arr.shape[1], None, 0, byref(sh))
+        sh = new("qd_scene_shape")
+        st = lib.qd_scene_analyse(ffi.NULL, ffi.from_buffer("double[]", arr),
+                                  arr.shape[0], arr.shape[1], ffi.NULL, 0, sh)
         try:
             if st != 0:
-                raise Error("scene_shape: %s" % lib.qd_status_str(st).decode())
-            end = lambda i: -1 if i == ctypes.c_size_t(-1).value else i  # noqa: E731
+                raise Error("scene_shape: %s" % cstr(lib.qd_status_str(st)))
+            end = lambda i: -1 if i == lib.QD_SCENE_ORIGIN else i  # noqa: E731
             return {"plane": None if sh.plane[0] < 0 else (sh.plane[0], sh.plane[1]),
                     "lo": list(sh.lo), "hi": list(sh.hi),
                     "rods": [(end(sh.rods[k].a), end(sh.rods[k].b), sh.rods[k].length)
                              for k in range(sh.nrods)]}
         finally:
-            lib.qd_scene_shape_free(byref(sh))
+            lib.qd_scene_shape_free(sh)
 
     def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
                  events=(), stop_at=None, outputs=(), max_steps=0, speeds=True, inputs=None,

@@ -6,16 +6,13 @@
 # run.  Event text is read by the library's set-up, as `qdot simulate` reads it.
 """Simulation results and the compiled right-hand side (internal module)."""
 
-import ctypes
 import numbers
-from ctypes import byref
 
 import numpy as np
 
 from ._core import (QD_ERR_NOMEM, Error, ModelError, format_diag, name_of, number_expr,
                     take_error)
-from ._lib import (lib, SimOpts, SimSetupOpts, SimStats, SimSink, SimInputFn, exprs, doubles,
-                   DBL, QD_OK)
+from ._lib import ffi, lib, new, cstr, exprs, doubles, QD_OK
 
 
 class Table:
@@ -77,11 +74,12 @@ class Result(Table):
         self.events = [Table(columns, data[ev == k]) for k in range(nev)]
         self.impacts = Table(columns, data[ev >= nev])
         code = stats.stop.code
-        self.stop = {"code": lib.qd_stop_name(code).decode(),
-                     "reason": lib.qd_stop_str(code).decode(), "ok": bool(lib.qd_stop_ok(code)),
+        self.stop = {"code": cstr(lib.qd_stop_name(code)),
+                     "reason": cstr(lib.qd_stop_str(code)), "ok": bool(lib.qd_stop_ok(code)),
                      "t": stats.stop.t, "value": stats.stop.value}
-        self.stats = {name: getattr(stats, name) for name, _ in stats._fields_
-                      if not name.startswith("_") and name != "stop"}
+        # every field of qd_sim_stats (qdot/sim.h), by the header's names
+        self.stats = {name: getattr(stats, name) for name, _ in ffi.typeof(stats[0]).fields
+                      if name != "stop"}
         self.stats["stop"] = self.stop
         self.energy_error_max = stats.energy_error_max
         self.energy_error_steps = stats.energy_error_steps
@@ -101,7 +99,7 @@ def _text_error(core, what, text):
         return MemoryError("qdot: out of memory")
     if diag.located:
         return ModelError(format_diag(diag, what, text.encode()), diag, what)
-    return Error("%s: %s" % (what, diag.message.decode()), diag.status)
+    return Error("%s: %s" % (what, ffi.string(diag.message).decode()), diag.status)
 
 
 def _initial_text(initial):
@@ -130,13 +128,14 @@ class _InputFn:
         # x from C is in the equations' order: model coordinate i is x[pos[i]]
         self.take = np.array(pos + [n + j for j in pos], dtype=int)
         self.error = None
-        self.c = SimInputFn(self._call)  # kept alive with self for the whole run
+        # kept alive with self for the whole run; NaN (ends the run) if _call fails
+        self.c = ffi.callback("qd_sim_input_fn", self._call, error=float("nan"))
 
     def _call(self, _data, t, x):
         if self.error is not None:
             return float("nan")
         try:
-            y = np.ctypeslib.as_array(x, shape=(len(self.take),))[self.take]
+            y = np.frombuffer(ffi.buffer(x, len(self.take) * 8), dtype=float)[self.take]
             v = np.asarray(self.fn(t, y), dtype=float).reshape(-1)
             if v.size != 1:
                 raise ValueError("inputs: %s(t, y) returned %d values, not one number"
@@ -164,10 +163,10 @@ def _add_inputs(core, setup, s, inputs):
                         % (name, ", ".join(names) or "none"))
         if callable(value):
             coords = core.coords()
-            e = lib.qd_sim_setup_eom(setup).contents
+            e = lib.qd_sim_setup_eom(setup)
             pos = [[e.q[j] for j in range(e.n)].index(c) for c in coords]
             fn = _InputFn(name, value, pos)
-            core.check(lib.qd_sim_input_callback(s, name.encode(), fn.c, None))
+            core.check(lib.qd_sim_input_callback(s, name.encode(), fn.c, ffi.NULL))
             fns.append(fn)
             continue
         what = "inputs " + name
@@ -211,12 +210,14 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
                 raise _text_error(core, what, text)
         if method is None and dt is not None and rtol is not None:
             method = "dop853"  # dt with rtol: the output grid of the adaptive default
-        so = SimSetupOpts(t_end=_number(t_end), dt=_number(dt), rtol=_number(rtol),
-                          atol=_number(atol), every=_number(every),
-                          max_steps=str(int(max_steps)).encode() if max_steps else None,
-                          method=method.encode() if method is not None else None)
-        opts = SimOpts()
-        core.check(lib.qd_sim_setup_options(setup, byref(so), byref(opts)))
+        texts = {"t_end": _number(t_end), "dt": _number(dt), "rtol": _number(rtol),
+                 "atol": _number(atol), "every": _number(every),
+                 "max_steps": str(int(max_steps)).encode() if max_steps else None,
+                 "method": method.encode() if method is not None else None}
+        keep = {k: ffi.new("char[]", v) for k, v in texts.items() if v is not None}
+        so = new("qd_sim_setup_opts", keep)
+        opts = new("qd_sim_opts")
+        core.check(lib.qd_sim_setup_options(setup, so, opts))
         return _run(core, s, opts, len(events) + bool(stop_at), fns)
     finally:
         lib.qd_sim_setup_free(setup)
@@ -225,12 +226,12 @@ def _run(core, s, opts, nev, fns=()):
     exception raised in an input callable (the callback then returns NaN,
     which ends the run) or in the sink itself (it then returns -1, a
     failure: qdot/sim.h) is raised here, in place of what the run
-    reported; ctypes cannot unwind through C, and an exception left in a
+    reported; Python cannot unwind through C, and an exception left in a
     callback would only print "Exception ignored"."""
-    ncol = lib.qd_sim_columns(s, opts.method, None, 0)
-    names = (ctypes.c_char_p * ncol)()
+    ncol = lib.qd_sim_columns(s, opts.method, ffi.NULL, 0)
+    names = ffi.new("const char *[]", max(ncol, 1))
     lib.qd_sim_columns(s, opts.method, names, ncol)
-    columns = [x.decode() for x in names]
+    columns = [cstr(names[k]) for k in range(ncol)]
     rows = []
     failed = []
 
@@ -238,21 +239,21 @@ def _run(core, s, opts, nev, fns=()):
         try:
             if any(fn.error is not None for fn in fns):
                 return -1
-            rows.append((event, row[:ncol]))
+            rows.append((event, ffi.unpack(row, ncol)))
             return 0
         except BaseException as err:  # noqa: B036 (re-raised below)
             failed.append(err)
             return -1
 
-    stats = SimStats()
-    callback = SimSink(sink)  # kept alive until qd_sim_run returns
-    st = lib.qd_sim_run(s, byref(opts), callback, None, byref(stats), None)
+    stats = new("qd_sim_stats")
+    callback = ffi.callback("qd_sim_sink", sink, error=-1)  # alive until qd_sim_run returns
+    st = lib.qd_sim_run(s, opts, callback, ffi.NULL, stats, ffi.NULL)
     for err in [fn.error for fn in fns if fn.error is not None] + failed:
         take_error(core.ctx)  # the failure's consequence: not the cause
         raise err
     if st != QD_OK:
         raise core.error(st)
-    return Result(columns, rows, nev, stats, lib.qd_sim_method_name(opts.method).decode())
+    return Result(columns, rows, nev, stats, cstr(lib.qd_sim_method_name(opts.method)))
 
 
 class Rhs:
@@ -277,9 +278,9 @@ class Rhs:
         self._nsyms = len(syms)
         self._syms = exprs(syms)
         self._vals = doubles([0.0] * (2 * n + 1) + [p[2] for p in params])
-        self._vals_np = np.ctypeslib.as_array(self._vals)
+        self._vals_np = np.frombuffer(ffi.buffer(self._vals), dtype=float)
         self._qdd = doubles([0.0] * n)
-        self._qdd_np = np.ctypeslib.as_array(self._qdd)
+        self._qdd_np = np.frombuffer(ffi.buffer(self._qdd), dtype=float)[:n]
         self._prog = lib.qd_eom_compile(core.ctx, core.eom_ptr())
         if not self._prog:
             raise core.error()
@@ -297,8 +298,8 @@ class Rhs:
         self._vals_np[:2 * n] = y
         self._vals_np[2 * n] = t
         st = lib.qd_eom_prog_eval(self._core.ctx, self._prog, self._work, self._nsyms,
-                                  self._syms, self._vals, None, None,
-                                  ctypes.cast(self._qdd, DBL), None, None)
+                                  self._syms, self._vals, ffi.NULL, ffi.NULL, self._qdd,
+                                  ffi.NULL, ffi.NULL)
         if st != QD_OK:
             raise self._core.error(st)
         return np.concatenate([y[n:], self._qdd_np])

@@ -39,7 +39,7 @@ def test_installed_package_finds_installed_library(tmp_path):
     env = {k: v for k, v in os.environ.items() if k not in ("QDOT_LIB", "PYTHONPATH")}
     env["PYTHONPATH"] = site
     code = ("import qdot; m = qdot.Model('coordinates x\\nT = x\\'^2/2\\nV = 2*x^2\\n');"
-            "print(qdot._lib.lib._name); print(m.modes()[0].omega)")
+            "print(qdot._lib.path); print(m.modes()[0].omega)")
     out = subprocess.run([sys.executable, "-c", code], cwd=str(tmp_path), env=env,
                          capture_output=True, text=True, check=True).stdout.split()
     assert out[0].startswith(prefix) and out[0].endswith("libqdot.so.0")
@@ -54,7 +54,7 @@ def test_package_version_is_the_headers():
     import qdot
     with open(os.path.join(ROOT, "include", "qdot", "version.h")) as f:
         assert '#define QDOT_VERSION "%s"' % qdot.__version__ in f.read()
-    assert qdot._lib.lib.qd_version().decode() == qdot.__version__
+    assert qdot._lib.cstr(qdot._lib.lib.qd_version()) == qdot.__version__
 
 
 def fake_library(tmp_path, body):

@@ -29,28 +29,21 @@ import os, qdot
 from qdot import _lib
 m = qdot.Model("coordinates x\nT = x'^2/2\nV = 2*x^2\n")
 print(os.path.realpath(qdot.__file__))
-print(os.path.realpath(_lib.lib._name))
+print(os.path.realpath(_lib.path))
 print(qdot.__version__)
 print(repr(m.modes()[0].omega))
 # the plot module inside the package (qdot-modules/qdot_cairo.so beside the
-# library): a PNG drawn through the library's own copy
-import ctypes
-L = _lib.lib
-L.qd_ctx_new.restype = ctypes.c_void_p
-L.qd_plot_new.restype = ctypes.c_void_p
-L.qd_plot_new.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int]
-L.qd_plot_add.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int, ctypes.c_size_t,
-                          ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_double),
-                          ctypes.c_void_p]
-L.qd_plot_write.argtypes = [ctypes.c_void_p, ctypes.c_char_p]
-L.qd_plot_free.argtypes = [ctypes.c_void_p]
+# library): a PNG drawn through the library's own copy, with the package's
+# declarations (qdot/_ffi.py, made from the headers when it was built)
+L, ffi = _lib.lib, _lib.ffi
 ctx = L.qd_ctx_new()
 p = L.qd_plot_new(ctx, 0, 0)
-xs = (ctypes.c_double * 3)(0, 1, 2)
-ys = (ctypes.c_double * 3)(0, 1, 4)
-assert L.qd_plot_add(p, b"y = x^2", 0, 3, xs, ys, None) == 0
+xs = ffi.new("double[]", [0, 1, 2])
+ys = ffi.new("double[]", [0, 1, 4])
+assert L.qd_plot_add(p, b"y = x^2", 0, 3, xs, ys, ffi.NULL) == 0
 print(L.qd_plot_write(p, b"plot.png"))
 L.qd_plot_free(p)
+print(os.path.exists(os.path.join(os.path.dirname(qdot.__file__), "_ffi.py")))
 with open("plot.png", "rb") as f:
     print(f.read(8) == b"\x89PNG\r\n\x1a\n")
 """
@@ -71,7 +64,8 @@ def run(cmd, **kw):
 def check_import(python, where, env, tmp):
     out = run([python, "-c", CODE], cwd=tmp, env=env).split("\n")
     pkg, lib, version, omega = out[0], out[1], out[2], float(out[3])
-    assert out[4] == "0" and out[5] == "True", ("no plot from the package's Cairo module", out)
+    assert out[4] == "0" and out[6] == "True", ("no plot from the package's Cairo module", out)
+    assert out[5] == "True", ("the package has no qdot/_ffi.py", out)
     assert pkg.startswith(os.path.realpath(where)), (pkg, where)
     assert os.path.dirname(lib) == os.path.dirname(pkg), ("not the package's own copy", lib)
     assert os.path.basename(lib) == "libqdot.so.0", lib
@@ -84,8 +78,8 @@ def check_import(python, where, env, tmp):
 def main():
     argparse.ArgumentParser().parse_known_args()
     if not (os.path.exists(PY) and have("pip") and have("venv") and have("setuptools")
-            and have("wheel") and have("numpy")):
-        print("SKIP: Debian's python3-pip, -venv, -setuptools, -wheel and -numpy are needed")
+            and have("wheel") and have("numpy") and have("cffi")):
+        print("SKIP: Debian's python3-pip, -venv, -setuptools, -wheel, -numpy and -cffi are needed")
         return 77
     env = {k: v for k, v in os.environ.items()
            if k not in ("PYTHONPATH", "QDOT_LIB", "PYTHONHOME", "VIRTUAL_ENV")}
