@@ -50,6 +50,9 @@ bool cli_is_option(const char *arg);
 
 /* Parse "--format NAME" values; false for an unknown name. */
 bool cli_format(const char *name, qd_format *out);
+/* The same for a --format whose other choices (json) print elsewhere:
+ * NULL or a name cli_format does not know is text. */
+qd_format cli_format_or_text(const char *name);
 
 int cli_cmd_tour(int argc, char **argv);
 int cli_cmd_diff(int argc, char **argv);

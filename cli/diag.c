@@ -75,3 +75,10 @@ bool cli_format(const char *name, qd_format *out) {
         }
     return false;
 }
+
+qd_format cli_format_or_text(const char *name) {
+    qd_format f = QD_FMT_TEXT;
+    if (name)
+        cli_format(name, &f);
+    return f;
+}
