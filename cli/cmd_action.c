@@ -7,20 +7,23 @@
  * model given by H may take its momenta in --at.  The library writes the
  * result (qd_action_print).
  */
-#include "cli.h"
+#include "driver.h"
 
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
 #include "qdot/action.h"
 #include "qdot/routh.h"
 #include "state.h"
 
 typedef struct act_args {
-    const char *file, *at, *angle, *format;
+    const char *at, *angle, *format;
     cli_list sets;
-    bool json;
 } act_args;
+
+typedef struct act_run {
+    cli_run c;
+    act_args a;
+} act_run;
 
 static const char *const formats[] = {"text", "json", NULL};
 
@@ -110,8 +113,11 @@ static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const 
     return QD_EXIT_OK;
 }
 
-static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
-    int rc = cli_load(ctx, a->file, a->sets.n, a->sets.items, false, mf);
+static int run(cli_run *c) {
+    const act_args *a = &((act_run *)c)->a;
+    qd_ctx *ctx = c->ctx;
+    cli_model_file *mf = &c->mf;
+    int rc = cli_load(ctx, c->file, a->sets.n, a->sets.items, false, mf);
     if (rc != QD_EXIT_OK)
         return rc;
     cli_state st = {0};
@@ -126,7 +132,7 @@ static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
         rc = cli_diag_model(ctx, mf->path, mf->text, mf->model);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        b.failed = qd_action_print(ctx, &act, a->json, &b) != QD_OK;
+        b.failed = qd_action_print(ctx, &act, cli_json(a->format), &b) != QD_OK;
         rc = cli_emit(&b, "actions");
     }
     qd_action_free(&act);
@@ -135,21 +141,7 @@ static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
 }
 
 int cli_cmd_action(int argc, char **argv) {
-    act_args a = {0};
-    const char *pos[1];
-    int rc = cli_parse(&spec, argc, argv, &a, pos);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    a.file = pos[0];
-    a.json = a.format && !strcmp(a.format, "json");
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    cli_model_file mf = {0};
-    rc = run(ctx, &a, &mf);
-    cli_model_file_free(&mf);
-    qd_ctx_free(ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(act_run, a), 0, NULL, run, NULL};
+    act_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }
