@@ -7,14 +7,9 @@
  * Jacobian with its singular points (qdot/metric.h; Desloge App. 23,
  * ch. 47, ch. 55).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
-#include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-
-#include "model_cli.h"
 #include "qdot/metric.h"
 
 typedef struct mt_args {
