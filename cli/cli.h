@@ -53,6 +53,9 @@ bool cli_format(const char *name, qd_format *out);
 /* The same for a --format whose other choices (json) print elsewhere:
  * NULL or a name cli_format does not know is text. */
 qd_format cli_format_or_text(const char *name);
+/* --format NAME for the library's renderers (qd_render_*): NULL is text;
+ * cli_parse has checked the name against the command's choices. */
+qd_render_format cli_render_format(const char *name);
 
 int cli_cmd_tour(int argc, char **argv);
 int cli_cmd_diff(int argc, char **argv);

@@ -76,6 +76,13 @@ bool cli_format(const char *name, qd_format *out) {
     return false;
 }
 
+qd_render_format cli_render_format(const char *name) {
+    qd_render_format f = QD_RENDER_TEXT;
+    if (name)
+        qd_render_format_parse(name, &f);
+    return f;
+}
+
 qd_format cli_format_or_text(const char *name) {
     qd_format f = QD_FMT_TEXT;
     if (name)
