@@ -6,19 +6,16 @@
  * whether it is a minimum; the isoperimetric multipliers, and free ends
  * written `y=free`.  For an `independent x` model, x names the ends' time.
  */
-#include "cli.h"
+#include "driver.h"
 
 #include <math.h>
-#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
-#include "model_file.h"
 #include "qdot/path.h"
 #include "state.h"
 
 typedef struct path_args {
-    const char *file, *from, *to, *energy, *format;
+    const char *from, *to, *energy, *format;
     size_t segments;
     bool all;
     cli_list guess, set;
@@ -54,8 +51,8 @@ static const cli_spec spec = {
 };
 
 typedef struct path_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
+    path_args a;
     qd_eom *e;
     cli_state g;
     double *q0, *q1, *guess;
@@ -78,15 +75,15 @@ static void free_guesses(path_run *r) {
 /* One end: its error shown in the option's text. */
 static int read_end(path_run *r, const char *what, const char *text, double *q, double *t,
                     bool *fr) {
-    if (qd_path_end_read(r->ctx, r->mf.model, r->e, text, q, t, fr) != QD_OK)
-        return cli_state_diag(r->ctx, what, text);
+    if (qd_path_end_read(r->c.ctx, r->c.mf.model, r->e, text, q, t, fr) != QD_OK)
+        return cli_state_diag(r->c.ctx, what, text);
     for (size_t j = 0; j < r->e->n; j++)
         r->any_free = r->any_free || fr[j];
     return QD_EXIT_OK;
 }
 
 static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
-    const qd_model *m = r->mf.model;
+    const qd_model *m = r->c.mf.model;
     size_t n = r->e->n;
     if (n > sizeof r->free0 / sizeof r->free0[0]) {
         cli_diag_error("path: at most %zu coordinates", sizeof r->free0 / sizeof r->free0[0]);
@@ -120,9 +117,9 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     }
     for (size_t k = 0; rc == QD_EXIT_OK && k < a->guess.n; k++) {
         cli_state_free(&r->g);
-        rc = cli_state_init(r->ctx, m, &r->g);
+        rc = cli_state_init(r->c.ctx, m, &r->g);
         if (rc == QD_EXIT_OK)
-            rc = cli_state_parse_as(r->ctx, m, "--guess", a->guess.items[k], &r->g);
+            rc = cli_state_parse_as(r->c.ctx, m, "--guess", a->guess.items[k], &r->g);
         if (rc == QD_EXIT_OK)
             memcpy(r->guess + k * n, r->g.vals + n, n * sizeof *r->guess);
     }
@@ -153,54 +150,51 @@ static int path_number(qd_ctx *ctx, const qd_model *m, const char *opt, const ch
     return cli_exit(qd_ctx_status(ctx));
 }
 
-static int run(path_run *r, const path_args *a) {
-    int rc = cli_load_derive(r->ctx, a->file, a->set.n, a->set.items, false, NULL, &r->mf, &r->e);
+static int run(cli_run *c) {
+    path_run *r = (path_run *)c;
+    const path_args *a = &r->a;
+    int rc = cli_load_derive(c->ctx, c->file, a->set.n, a->set.items, false, NULL, &c->mf, &r->e);
     qd_path_opts o = {0};
     double E = 0;
     r->energy = a->energy != NULL;
     if (rc == QD_EXIT_OK && a->energy)
-        rc = path_number(r->ctx, r->mf.model, "--energy", a->energy, &E);
+        rc = path_number(r->c.ctx, r->c.mf.model, "--energy", a->energy, &E);
     if (rc == QD_EXIT_OK)
         rc = read_ends(r, a, &o);
     if (rc != QD_EXIT_OK)
         return rc;
     o.segments = a->segments;
-    qd_status st = r->energy ? qd_path_find_energy(r->ctx, r->mf.model, r->e, E, &o, &r->ps)
-                             : qd_path_find(r->ctx, r->mf.model, r->e, &o, &r->ps);
+    qd_status st = r->energy ? qd_path_find_energy(r->c.ctx, r->c.mf.model, r->e, E, &o, &r->ps)
+                             : qd_path_find(r->c.ctx, r->c.mf.model, r->e, &o, &r->ps);
     if (st != QD_OK)
-        return cli_diag_ctx(r->ctx);
+        return cli_diag_ctx(r->c.ctx);
     qd_buf b = QD_BUF_INIT;
-    if ((a->format && !strcmp(a->format, "json") ? qd_path_json(r->ctx, &r->ps, r->mf.model, r->e, &b)
-                 : qd_path_print(r->ctx, &r->ps, r->mf.model, r->e, &o, &b)) != QD_OK) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(r->ctx);
-    }
-    return cli_emit(&b, "paths");
+    st = cli_json(a->format) ? qd_path_json(c->ctx, &r->ps, c->mf.model, r->e, &b)
+                             : qd_path_print(c->ctx, &r->ps, c->mf.model, r->e, &o, &b);
+    return cli_emit_status(c->ctx, st, &b, "paths");
+}
+
+static int check(cli_run *c) {
+    const path_args *a = &((path_run *)c)->a;
+    if (a->from && a->to)
+        return QD_EXIT_OK;
+    cli_diag_error("path needs --from and --to (qdot path --help)");
+    return QD_EXIT_USAGE;
+}
+
+static void run_free(cli_run *c) {
+    path_run *r = (path_run *)c;
+    qd_path_set_free(&r->ps);
+    cli_state_free(&r->g);
+    free(r->q0);
+    free(r->q1);
+    free(r->guess);
+    if (r->e)
+        qd_eom_free(r->e);
 }
 
 int cli_cmd_path(int argc, char **argv) {
-    path_args a = {0};
-    int rc = cli_parse(&spec, argc, argv, &a, &a.file);
-    if (rc == QD_EXIT_OK && (!a.from || !a.to)) {
-        cli_diag_error("path needs --from and --to (qdot path --help)");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc != QD_EXIT_OK)
-        return rc;
-    path_run r = {.ctx = qd_ctx_new()};
-    if (!r.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(&r, &a);
-    qd_path_set_free(&r.ps);
-    cli_state_free(&r.g);
-    free(r.q0);
-    free(r.q1);
-    free(r.guess);
-    if (r.e)
-        qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(path_run, a), 0, check, run, run_free};
+    path_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }
