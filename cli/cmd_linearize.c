@@ -114,7 +114,7 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
                       "is not done yet", a->lqr ? "--lqr" : formats[a->format]);
         return QD_EXIT_USAGE;
     }
-    cli_lin_run r = {.ctx = ctx, .mf = *mf, .e = e};
+    cli_lin_run r = {.c = {.ctx = ctx, .mf = *mf}, .e = e};
     int rc = cli_lin_setup(&r);
     double *q0 = rc == QD_EXIT_OK ? calloc(e->n + 1, sizeof *q0) : NULL;
     if (rc == QD_EXIT_OK && !q0) {
