@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
 #include "qdot/constrained.h"
 
 static int reduce(cli_lin_run *r, const double *q0, const char *indep,
@@ -69,15 +68,6 @@ int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0) {
     return rc;
 }
 
-/* What the library printed into b (status st) to standard output. */
-static int emit(qd_ctx *ctx, qd_status st, qd_buf *b, const char *what) {
-    if (st != QD_OK) {
-        qd_buf_free(b);
-        return cli_diag_ctx(ctx);
-    }
-    return cli_emit(b, what);
-}
-
 int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json) {
     qd_constrained_linear c = {0};
     qd_modes_result res = {0};
@@ -88,8 +78,9 @@ int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json
     }
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        rc = emit(r->c.ctx, qd_constrained_modes_print(r->c.ctx, r->e, &c, &res, json, &b), &b,
-                  "modes");
+        rc = cli_emit_status(r->c.ctx,
+                             qd_constrained_modes_print(r->c.ctx, r->e, &c, &res, json, &b),
+                             &b, "modes");
     }
     qd_modes_result_free(&res);
     qd_constrained_linear_free(&c);
@@ -121,8 +112,9 @@ int cli_con_linearize(cli_lin_run *r, const double *q0, const char *indep, bool 
     if (rc == QD_EXIT_OK) {
         const qd_constrained_statespace ss = {A, nu, u, B};
         qd_buf b = QD_BUF_INIT;
-        rc = emit(r->c.ctx, qd_constrained_statespace_print(r->c.ctx, r->e, &c, &ss, &res, json, &b),
-                  &b, "state-space form");
+        rc = cli_emit_status(
+            r->c.ctx, qd_constrained_statespace_print(r->c.ctx, r->e, &c, &ss, &res, json, &b),
+            &b, "state-space form");
     }
     free(A);
     free(B);
