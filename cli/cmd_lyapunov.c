@@ -14,8 +14,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
+#include "out.h"
 #include "qdot/lyapunov.h"
 #include "sim_cli.h"
 
@@ -117,7 +117,7 @@ static int run(cli_sim *c, const ly_args *p) {
 int cli_cmd_lyapunov(int argc, char **argv) {
     ly_args p = {.n = 1};
     int rc = cli_parse(&spec, argc, argv, &p, &p.a.file);
-    p.a.json = p.format && !strcmp(p.format, "json");
+    p.a.json = cli_json(p.format);
     if (rc == QD_EXIT_OK)
         rc = number("--renorm", p.renorm_text, &p.renorm);
     if (rc == QD_EXIT_OK)

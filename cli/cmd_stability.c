@@ -77,7 +77,7 @@ static const cli_spec spec = {
 
 static int check(cli_run *c) {
     stab_args *a = &((stab_run *)c)->a;
-    a->json = a->format && !strcmp(a->format, "json");
+    a->json = cli_json(a->format);
     if (!a->ignore == !a->driven.n) {
         cli_diag_error("give the cyclic coordinates with either --ignore (free momenta) or "
                        "--driven (maintained rates) (qdot stability --help)");
