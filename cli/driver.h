@@ -1,9 +1,10 @@
 /*
- * cli/driver.h - the one entry point shape of the commands on a model file:
- * parse the arguments, check them, make the context, run, free.  Each
- * command's run state starts with a cli_run, so the driver owns the parts
- * every command has (context, model file, FILE operand) and the command's
- * hooks own the rest.
+ * cli/driver.h - the one entry point shape of the commands: parse the
+ * arguments, check them, make the context, run, free.  Each command's run
+ * state starts with a cli_run, so the driver owns the parts every command
+ * has (context, model file, FILE operand) and the command's hooks own the
+ * rest.  (simulate, poincare, lyapunov, animate and sweep get theirs from
+ * cli_sim_setup instead.)
  */
 #ifndef QDOT_CLI_DRIVER_H
 #define QDOT_CLI_DRIVER_H
@@ -16,7 +17,7 @@
 typedef struct cli_run {
     qd_ctx *ctx;
     cli_model_file mf; /* freed by the driver after the free hook */
-    const char *file;  /* the FILE operand (cli_driver.pos 0) */
+    const char *file;  /* the FILE operand when cli_driver.pos is 0 */
 } cli_run;
 
 /* What a command gives the driver; hooks take the run state by its first
