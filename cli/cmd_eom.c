@@ -190,8 +190,8 @@ static int run_speeds(eom_run *r, const eom_args *a) {
     int rc = QD_EXIT_OK;
     qd_status st = QD_OK;
     if (a->hamel_coef)
-        st = qd_render_hamel(r->c.ctx, e, a->fmt == QD_RENDER_JSON ? QD_RENDER_JSON : QD_RENDER_TEXT,
-                             &b);
+        st = qd_render_hamel(r->c.ctx, e,
+                             a->fmt == QD_RENDER_JSON ? QD_RENDER_JSON : QD_RENDER_TEXT, &b);
     else if (a->at)
         rc = speeds_state(r, e, a->at);
     else if (a->solve)

@@ -83,10 +83,10 @@ static int run(cli_run *c) {
     if (rc == QD_EXIT_OK)
         rc = parse_given(r);
     qd_integrals_opts o = {.search = !r->a.no_search};
-    if (rc == QD_EXIT_OK && !(r->I = qd_integrals_derive(r->c.ctx, r->c.mf.model, r->e, &o)))
-        rc = cli_diag_ctx(r->c.ctx);
-    if (rc == QD_EXIT_OK && qd_integrals_given_derive(r->c.ctx, r->I, r->c.mf.model, &r->g) != QD_OK)
-        rc = cli_diag_ctx(r->c.ctx);
+    if (rc == QD_EXIT_OK && !(r->I = qd_integrals_derive(c->ctx, c->mf.model, r->e, &o)))
+        rc = cli_diag_ctx(c->ctx);
+    if (rc == QD_EXIT_OK && qd_integrals_given_derive(c->ctx, r->I, c->mf.model, &r->g) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 

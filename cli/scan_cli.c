@@ -95,7 +95,8 @@ int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t 
     }
     qd_scan_opts o = {.steps = steps, .about = ab};
     qd_scan sc = {0};
-    if (rc == QD_EXIT_OK && qd_modes_scan(r->c.ctx, r->e, r->c.mf.model, name, a, b, &o, &sc) != QD_OK) {
+    if (rc == QD_EXIT_OK &&
+        qd_modes_scan(r->c.ctx, r->e, r->c.mf.model, name, a, b, &o, &sc) != QD_OK) {
         rc = cli_exit(qd_ctx_status(r->c.ctx));
         cli_diag_error("--scan: %s", qd_ctx_message(r->c.ctx));
     } else if (rc == QD_EXIT_OK) {
