@@ -34,6 +34,13 @@ void cli_diag_error(const char *fmt, ...)
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
+/* The same, for the many places a bad command line ends at: returns
+ * QD_EXIT_USAGE so that they read "return cli_usage_error(...)". */
+int cli_usage_error(const char *fmt, ...)
+#ifdef __GNUC__
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
 /* An error record shown through the library's one renderer: located ones as
  * FILE:LINE:COL, the line of text and a caret, then the hint. */
 void cli_diag_show(const char *file, const char *text, const qd_diag *d);

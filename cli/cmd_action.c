@@ -96,16 +96,13 @@ static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const 
             s++, len--;
         while (len && s[len - 1] == ' ')
             len--;
-        if (!len || len >= sizeof name || *n == MAX_ANGLES) {
-            cli_diag_error("--angle takes a comma-separated list of coordinates, not '%s'", list);
-            return QD_EXIT_USAGE;
-        }
+        if (!len || len >= sizeof name || *n == MAX_ANGLES)
+            return cli_usage_error("--angle takes a comma-separated list of coordinates, not '%s'",
+                                   list);
         memcpy(name, s, len);
         name[len] = '\0';
-        if (!(out[(*n)++] = qd_routh_lookup(ctx, m, name))) {
-            cli_diag_error("--angle: %s", qd_ctx_message(ctx));
-            return QD_EXIT_USAGE;
-        }
+        if (!(out[(*n)++] = qd_routh_lookup(ctx, m, name)))
+            return cli_usage_error("--angle: %s", qd_ctx_message(ctx));
         s += strcspn(s, ",");
         if (!*s)
             break;

@@ -54,10 +54,8 @@ static int parse_times(ao_run *r) {
     const char *text = r->times;
     if (qd_state_range(r->c.ctx, r->c.mf.model, text, 0, strlen(text), &r->t0, &r->t1) != QD_OK)
         return cli_state_diag(r->c.ctx, "--t", text);
-    if (!(r->t1 > r->t0)) {
-        cli_diag_error("--t: T1 must be after T0 (%s)", text);
-        return QD_EXIT_USAGE;
-    }
+    if (!(r->t1 > r->t0))
+        return cli_usage_error("--t: T1 must be after T0 (%s)", text);
     return QD_EXIT_OK;
 }
 
@@ -94,8 +92,7 @@ static int check(cli_run *c) {
     ao_run *r = (ao_run *)c;
     if (r->path && r->times)
         return QD_EXIT_OK;
-    cli_diag_error("action-of needs --path and --t (qdot action-of --help)");
-    return QD_EXIT_USAGE;
+    return cli_usage_error("action-of needs --path and --t (qdot action-of --help)");
 }
 
 static int run(cli_run *c) {

@@ -146,8 +146,7 @@ static int combination(cli_run *c) {
                                          : NULL;
     if (!why)
         return QD_EXIT_OK;
-    cli_diag_error("%s (qdot canonical --help)", why);
-    return QD_EXIT_USAGE;
+    return cli_usage_error("%s (qdot canonical --help)", why);
 }
 
 static int run(cli_run *c) {

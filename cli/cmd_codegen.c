@@ -65,11 +65,9 @@ static int write_text(const char *dir, const char *name, const char *ext, const 
 
 /* A model with speeds: the first-order system in (q, u) (qd_codegen_speeds_c). */
 static int generate_speeds(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c, qd_buf *h) {
-    if (r->eliminate) {
-        cli_diag_error("--eliminate is for models without speeds: the speeds already take the "
-                       "constraints into account");
-        return QD_EXIT_USAGE;
-    }
+    if (r->eliminate)
+        return cli_usage_error("--eliminate is for models without speeds: the speeds already take "
+                               "the constraints into account");
     qd_speeds_eom *se = qd_speeds_derive(ctx, mf->model, NULL);
     if (!se)
         return cli_eom_derive_error(ctx, mf);
@@ -118,17 +116,14 @@ static int run(cli_run *cr) {
 /* --prefix a C identifier (else the name from FILE), -o not empty. */
 static int check(cli_run *c) {
     cg_run *r = (cg_run *)c;
-    if (r->prefix && !qd_codegen_prefix_valid(r->prefix)) {
-        cli_diag_error("--prefix takes a C identifier, not '%s'", r->prefix);
-        return QD_EXIT_USAGE;
-    }
+    if (r->prefix && !qd_codegen_prefix_valid(r->prefix))
+        return cli_usage_error("--prefix takes a C identifier, not '%s'", r->prefix);
     if (r->prefix)
         strcpy(r->name, r->prefix);
     else
         qd_codegen_prefix_from_path(c->file, r->name, sizeof r->name);
     if (r->dir && !r->dir[0]) {  /* "" would write to "/NAME.c" */
-        cli_diag_error("-o takes a directory, not an empty name");
-        return QD_EXIT_USAGE;
+        return cli_usage_error("-o takes a directory, not an empty name");
     }
     r->dir = r->dir ? r->dir : ".";
     return QD_EXIT_OK;

@@ -84,10 +84,8 @@ static int check(cli_run *c) {
         return QD_EXIT_FAIL;
     if ((a->field = cli_model_file_is_field(c->file)) &&
         (a->solve || a->eliminate || a->appell || a->multipliers || a->hamel_coef || a->method ||
-         a->at || (a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON))) {
-        cli_diag_error("a field model takes --set and --format text|json only");
-        return QD_EXIT_USAGE;
-    }
+         a->at || (a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON)))
+        return cli_usage_error("a field model takes --set and --format text|json only");
     return QD_EXIT_OK;
 }
 
@@ -172,15 +170,12 @@ static int speeds_state(eom_run *r, const qd_speeds_eom *e, const char *at) {
 /* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
 static int run_speeds(eom_run *r, const eom_args *a) {
     const char *opt = coords_option(a);
-    if (opt) {
-        cli_diag_error("%s is not available for a model with generalized speeds (%s declares "
-                       "them): qdot eom prints M u' = f in the speeds", opt, r->c.file);
-        return QD_EXIT_USAGE;
-    }
-    if (a->at && a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON) {
-        cli_diag_error("--at with speeds prints text or json");
-        return QD_EXIT_USAGE;
-    }
+    if (opt)
+        return cli_usage_error("%s is not available for a model with generalized speeds (%s "
+                               "declares them): qdot eom prints M u' = f in the speeds",
+                               opt, r->c.file);
+    if (a->at && a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON)
+        return cli_usage_error("--at with speeds prints text or json");
     qd_speeds_opts opts = {.method = a->smethod, .appell = a->appell,
                            .multipliers = a->multipliers};
     qd_speeds_eom *e = qd_speeds_derive(r->c.ctx, r->c.mf.model, &opts);

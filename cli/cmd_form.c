@@ -33,8 +33,7 @@ static const cli_spec form_spec = {
 static int check(cli_run *c) {
     if (((form_args *)c)->vars)
         return QD_EXIT_OK;
-    cli_diag_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
-    return QD_EXIT_USAGE;
+    return cli_usage_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
 }
 
 static int run(cli_run *c) {

@@ -103,16 +103,12 @@ static int add_prescription(imp_run *r, const char *text, size_t start, size_t l
 static int add_prescriptions(imp_run *r, const imp_args *a) {
     for (size_t k = 0; k < a->pres.n; k++) {
         const char *text = a->pres.items[k];
-        if (strchr(text, '\n') || strchr(text, '#')) {
-            cli_diag_error("--prescribe takes one line of items, without comments");
-            return QD_EXIT_USAGE;
-        }
+        if (strchr(text, '\n') || strchr(text, '#'))
+            return cli_usage_error("--prescribe takes one line of items, without comments");
         for (size_t i = 0; text[i] || i == 0;) {
             size_t end = qd_state_item_end(text, i);
-            if (blank(text + i, end - i)) {
-                cli_diag_error("--prescribe: an empty item in '%s'", text);
-                return QD_EXIT_USAGE;
-            }
+            if (blank(text + i, end - i))
+                return cli_usage_error("--prescribe: an empty item in '%s'", text);
             int rc = add_prescription(r, text, i, end - i);
             if (rc != QD_EXIT_OK)
                 return rc;

@@ -100,10 +100,8 @@ static int emit(qd_ctx *ctx, const lin_args *a, const qd_statespace *s,
 /* A model that keeps holonomic constraints: A over the independent states
  * on the manifold (constrained_cli.c). */
 static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eom *e) {
-    if (!e->ncon) {
-        cli_diag_error("--independent: the model keeps no constraints");
-        return QD_EXIT_USAGE;
-    }
+    if (!e->ncon)
+        return cli_usage_error("--independent: the model keeps no constraints");
     if (a->lqr || (a->format != F_TEXT && a->format != F_JSON)) {
         cli_diag_error("on the constraint manifold linearize gives A and B (text or json); %s "
                       "is not done yet", a->lqr ? "--lqr" : formats[a->format]);
@@ -141,10 +139,8 @@ static int check(cli_run *c) {
     for (int k = 0; a->format_name && formats[k]; k++)
         if (!strcmp(formats[k], a->format_name))
             a->format = k;
-    if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C) {
-        cli_diag_error("--lqr prints as text, json or c, not %s", formats[a->format]);
-        return QD_EXIT_USAGE;
-    }
+    if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C)
+        return cli_usage_error("--lqr prints as text, json or c, not %s", formats[a->format]);
     return QD_EXIT_OK;
 }
 

@@ -68,8 +68,7 @@ static int check(cli_run *c) {
     const lqr_args *a = &((lqr_run *)c)->a;
     if (a->A && a->B && a->weights)
         return QD_EXIT_OK;
-    cli_diag_error("qdot lqr needs --A, --B and --weights (qdot lqr --help)");
-    return QD_EXIT_USAGE;
+    return cli_usage_error("qdot lqr needs --A, --B and --weights (qdot lqr --help)");
 }
 
 static int run(cli_run *c) {

@@ -55,10 +55,8 @@ static const cli_spec spec = {
 static int number(const char *opt, const char *v, double *out) {
     char *end;
     double x = v ? strtod(v, &end) : 0;
-    if (v && (end == v || *end || !isfinite(x) || x < 0)) {
-        cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
-        return QD_EXIT_USAGE;
-    }
+    if (v && (end == v || *end || !isfinite(x) || x < 0))
+        return cli_usage_error("%s takes a number >= 0, not '%s'", opt, v);
     *out = x;
     return QD_EXIT_OK;
 }
@@ -75,17 +73,13 @@ static int emit(const qd_lyap_report *r, bool json) {
 
 /* The model made into the tangent system and run; prints the result. */
 static int run(cli_sim *c, const ly_args *p) {
-    if (!c->e) {
-        cli_diag_error("lyapunov takes a model given by T and V or L (its equations M q'' = "
-                       "f), not one given by H or in speeds (try --no-speeds)");
-        return QD_EXIT_USAGE;
-    }
+    if (!c->e)
+        return cli_usage_error("lyapunov takes a model given by T and V or L (its equations M q'' "
+                               "= f), not one given by H or in speeds (try --no-speeds)");
     size_t d = 2 * c->e->n;
-    if (p->n > d) {
-        cli_diag_error("--exponents: the model has %zu exponents (twice its %zu degrees of freedom), "
-                       "not %zu", d, c->e->n, p->n);
-        return QD_EXIT_USAGE;
-    }
+    if (p->n > d)
+        return cli_usage_error("--exponents: the model has %zu exponents (twice its %zu degrees "
+                               "of freedom), not %zu", d, c->e->n, p->n);
     qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
     if (!l)
         return cli_diag_ctx(c->ctx);

@@ -64,10 +64,8 @@ static int tol_option(const char *v, void *args) {
     modes_args *a = args;
     char *end;
     a->tol = strtod(v, &end);
-    if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1)) {
-        cli_diag_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
-        return QD_EXIT_USAGE;
-    }
+    if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1))
+        return cli_usage_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
     return QD_EXIT_OK;
 }
 
@@ -128,11 +126,10 @@ static int choose_listed(modes_run *r, size_t k) {
         return rc;
     if (eq->count == 0)
         return no_equilibrium();
-    if (k > eq->count) {
-        cli_diag_error("--at-equilibrium %zu: there %s %zu equilibri%s", k,
-                      eq->count == 1 ? "is" : "are", eq->count, eq->count == 1 ? "um" : "a");
-        return QD_EXIT_USAGE;
-    }
+    if (k > eq->count)
+        return cli_usage_error("--at-equilibrium %zu: there %s %zu equilibri%s", k,
+                               eq->count == 1 ? "is" : "are", eq->count,
+                               eq->count == 1 ? "um" : "a");
     r->pt = &eq->pts[k - 1];
     return QD_EXIT_OK;
 }
@@ -176,11 +173,9 @@ static int linearize(modes_run *r) {
 static int initial(modes_run *r, const char *text) {
     cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
-    if (!r->res.conservative) {
-        cli_diag_error("--initial: the motion through normal coordinates needs a conservative "
-                      "system without gyroscopic terms");
-        return QD_EXIT_USAGE;
-    }
+    if (!r->res.conservative)
+        return cli_usage_error("--initial: the motion through normal coordinates needs a "
+                               "conservative system without gyroscopic terms");
     double *q = calloc(n + 1, sizeof *q), *qd = calloc(n + 1, sizeof *qd);
     r->Q = calloc(n + 1, sizeof *r->Q);
     r->Qd = calloc(n + 1, sizeof *r->Qd);
@@ -230,48 +225,32 @@ static int check(cli_run *c) {
     modes_args *a = &((modes_run *)c)->a;
     int rc;
     a->json = cli_json(a->format);
-    if (a->steps > 100000) {
-        cli_diag_error("--steps takes a number of steps from 1 to 100000, not %zu", a->steps);
-        return QD_EXIT_USAGE;
-    }
-    if (a->count > 1000) {
-        cli_diag_error("--count takes a number of modes from 1 to 1000, not %zu", a->count);
-        return QD_EXIT_USAGE;
-    }
+    if (a->steps > 100000)
+        return cli_usage_error("--steps takes a number of steps from 1 to 100000, not %zu",
+                               a->steps);
+    if (a->count > 1000)
+        return cli_usage_error("--count takes a number of modes from 1 to 1000, not %zu", a->count);
     if ((a->field = cli_model_file_is_field(c->file))) {
-        if (a->about || a->at_eq || a->initial || a->scan || a->plot || a->symmetry || a->steps) {
-            cli_diag_error("a field model takes --count, --tol, --set and --format only");
-            return QD_EXIT_USAGE;
-        }
+        if (a->about || a->at_eq || a->initial || a->scan || a->plot || a->symmetry || a->steps)
+            return cli_usage_error("a field model takes --count, --tol, --set and --format only");
         return QD_EXIT_OK;
     }
-    if (a->count || a->tol) {
-        cli_diag_error("--count and --tol are for a field model (`field y(x, t) on ...`)");
-        return QD_EXIT_USAGE;
-    }
-    if (a->about && a->at_eq) {
-        cli_diag_error("give either --at-equilibrium or --about, not both");
-        return QD_EXIT_USAGE;
-    }
-    if (a->scan && (a->at_eq || a->initial)) {
-        cli_diag_error("--scan follows the point given with --about (or the equilibrium chosen "
-                      "at the start of the range): give neither --at-equilibrium nor --initial");
-        return QD_EXIT_USAGE;
-    }
-    if (a->plot && a->scan) {
-        cli_diag_error("--plot draws the modes about one point: not with --scan");
-        return QD_EXIT_USAGE;
-    }
+    if (a->count || a->tol)
+        return cli_usage_error("--count and --tol are for a field model (`field y(x, t) on ...`)");
+    if (a->about && a->at_eq)
+        return cli_usage_error("give either --at-equilibrium or --about, not both");
+    if (a->scan && (a->at_eq || a->initial))
+        return cli_usage_error("--scan follows the point given with --about (or the equilibrium "
+                               "chosen at the start of the range): give neither --at-equilibrium "
+                               "nor --initial");
+    if (a->plot && a->scan)
+        return cli_usage_error("--plot draws the modes about one point: not with --scan");
     if (a->plot && (rc = cli_plot_check(&(cli_plot_args){.file = a->plot}, "modes")))
         return rc;
-    if (a->symmetry && a->scan) {
-        cli_diag_error("--symmetry labels the modes about one point: not with --scan");
-        return QD_EXIT_USAGE;
-    }
-    if (a->steps && !a->scan) {
-        cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
-        return QD_EXIT_USAGE;
-    }
+    if (a->symmetry && a->scan)
+        return cli_usage_error("--symmetry labels the modes about one point: not with --scan");
+    if (a->steps && !a->scan)
+        return cli_usage_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
     return QD_EXIT_OK;
 }
 

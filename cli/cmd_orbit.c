@@ -80,8 +80,8 @@ static int run(cli_run *c) {
 static int check(cli_run *c) {
     if (((orbit_run *)c)->a.ignore)
         return QD_EXIT_OK;
-    cli_diag_error("orbit needs --ignore with the cyclic coordinates to ignore (all but one)");
-    return QD_EXIT_USAGE;
+    return cli_usage_error("orbit needs --ignore with the cyclic coordinates to ignore (all but "
+                           "one)");
 }
 
 static void run_free(cli_run *c) {

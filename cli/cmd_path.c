@@ -85,10 +85,9 @@ static int read_end(path_run *r, const char *what, const char *text, double *q, 
 static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     const qd_model *m = r->c.mf.model;
     size_t n = r->e->n;
-    if (n > sizeof r->free0 / sizeof r->free0[0]) {
-        cli_diag_error("path: at most %zu coordinates", sizeof r->free0 / sizeof r->free0[0]);
-        return QD_EXIT_USAGE;
-    }
+    if (n > sizeof r->free0 / sizeof r->free0[0])
+        return cli_usage_error("path: at most %zu coordinates",
+                               sizeof r->free0 / sizeof r->free0[0]);
     r->q0 = calloc(n + 1, sizeof *r->q0);
     r->q1 = calloc(n + 1, sizeof *r->q1);
     if (!r->q0 || !r->q1) {
@@ -134,10 +133,9 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     o->all = a->all;
     o->free0 = r->any_free ? r->free0 : NULL;
     o->free1 = r->any_free ? r->free1 : NULL;
-    if (!r->energy && !(o->t1 > o->t0)) {
-        cli_diag_error("path: the end time %g is not after the start time %g", o->t1, o->t0);
-        return QD_EXIT_USAGE;
-    }
+    if (!r->energy && !(o->t1 > o->t0))
+        return cli_usage_error("path: the end time %g is not after the start time %g",
+                               o->t1, o->t0);
     return QD_EXIT_OK;
 }
 
@@ -178,8 +176,7 @@ static int check(cli_run *c) {
     const path_args *a = &((path_run *)c)->a;
     if (a->from && a->to)
         return QD_EXIT_OK;
-    cli_diag_error("path needs --from and --to (qdot path --help)");
-    return QD_EXIT_USAGE;
+    return cli_usage_error("path needs --from and --to (qdot path --help)");
 }
 
 static void run_free(cli_run *c) {

@@ -76,9 +76,8 @@ static int run(cli_run *c) {
 static int check(cli_run *c) {
     if (((routh_run *)c)->a.ignore)
         return QD_EXIT_OK;
-    cli_diag_error("routh needs --ignore with the cyclic coordinates to ignore "
-                   "(qdot routh --help)");
-    return QD_EXIT_USAGE;
+    return cli_usage_error("routh needs --ignore with the cyclic coordinates to ignore "
+                           "(qdot routh --help)");
 }
 
 static void run_free(cli_run *c) {

@@ -78,24 +78,19 @@ static const cli_spec spec = {
 static int check(cli_run *c) {
     stab_args *a = &((stab_run *)c)->a;
     a->json = cli_json(a->format);
-    if (!a->ignore == !a->driven.n) {
-        cli_diag_error("give the cyclic coordinates with either --ignore (free momenta) or "
-                       "--driven (maintained rates) (qdot stability --help)");
-        return QD_EXIT_USAGE;
-    }
+    if (!a->ignore == !a->driven.n)
+        return cli_usage_error("give the cyclic coordinates with either --ignore (free momenta) or "
+                               "--driven (maintained rates) (qdot stability --help)");
     if (a->driven.n && (a->momentum || a->omega)) {
         cli_diag_error("--momentum and --omega go with --ignore; a driven rate is given as "
                        "--driven \"q' = VALUE\"");
         return QD_EXIT_USAGE;
     }
-    if (a->steps > 100000) {
-        cli_diag_error("--steps takes a number of steps from 1 to 100000, not %zu", a->steps);
-        return QD_EXIT_USAGE;
-    }
-    if (a->steps && !a->scan) {
-        cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
-        return QD_EXIT_USAGE;
-    }
+    if (a->steps > 100000)
+        return cli_usage_error("--steps takes a number of steps from 1 to 100000, not %zu",
+                               a->steps);
+    if (a->steps && !a->scan)
+        return cli_usage_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
     return QD_EXIT_OK;
 }
 

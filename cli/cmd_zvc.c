@@ -80,10 +80,8 @@ static int level_at(zvc_run *r, const char *what, const char *text, bool rest) {
 
 static int read_level(zvc_run *r, const zvc_args *a) {
     int given = !!a->level + !!a->through + !!a->at;
-    if (given != 1) {
-        cli_diag_error("give the level once: --level H, --through POINT or --at STATE");
-        return QD_EXIT_USAGE;
-    }
+    if (given != 1)
+        return cli_usage_error("give the level once: --level H, --through POINT or --at STATE");
     if (a->through)
         return level_at(r, "--through", a->through, true);
     if (a->at)
@@ -127,9 +125,8 @@ static int check(cli_run *c) {
     const zvc_args *a = &((zvc_run *)c)->a;
     if (a->box && (!a->cells || (a->cells >= 2 && a->cells <= 4000)))
         return QD_EXIT_OK;
-    cli_diag_error(!a->box ? "give the plane of the curves with --box \"x=A:B, y=C:D\""
-                           : "--cells takes a number of grid cells from 2 to 4000");
-    return QD_EXIT_USAGE;
+    return cli_usage_error(!a->box ? "give the plane of the curves with --box \"x=A:B, y=C:D\""
+                                   : "--cells takes a number of grid cells from 2 to 4000");
 }
 
 static int run(cli_run *c) {

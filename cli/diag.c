@@ -8,13 +8,25 @@
 #include <stdio.h>
 #include <string.h>
 
-void cli_diag_error(const char *fmt, ...) {
-    va_list ap;
-    va_start(ap, fmt);
+static void verror(const char *fmt, va_list ap) {
     fputs("qdot: error: ", stderr);
     vfprintf(stderr, fmt, ap);
     fputc('\n', stderr);
+}
+
+void cli_diag_error(const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    verror(fmt, ap);
     va_end(ap);
+}
+
+int cli_usage_error(const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    verror(fmt, ap);
+    va_end(ap);
+    return QD_EXIT_USAGE;
 }
 
 /* The library's renderer (qd_diag_format) for every kind of input. */

@@ -78,15 +78,11 @@ static int read_text(const char *path, cli_model_file *mf) {
     int err = errno;
     if (!std_in)
         fclose(fp);
-    if (how == READ_ERRNO) {
-        cli_diag_error("cannot read '%s': %s", mf->path, strerror(err ? err : EIO));
-        return QD_EXIT_USAGE;
-    }
-    if (how == READ_BIG) {
-        cli_diag_error("'%s' is longer than %zu MiB, the most a model file may be", mf->path,
-                       QD_MODEL_MAX_BYTES >> 20);
-        return QD_EXIT_USAGE;
-    }
+    if (how == READ_ERRNO)
+        return cli_usage_error("cannot read '%s': %s", mf->path, strerror(err ? err : EIO));
+    if (how == READ_BIG)
+        return cli_usage_error("'%s' is longer than %zu MiB, the most a model file may be",
+                               mf->path, QD_MODEL_MAX_BYTES >> 20);
     if (how == READ_NUL) { /* the parser would stop at it and ignore the rest silently */
         qd_diag d;
         memset(&d, 0, sizeof d);

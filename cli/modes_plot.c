@@ -11,11 +11,9 @@
 
 int cli_modes_plot(cli_lin_run *lr, const double *q0, const qd_modes_result *res,
                    const char *file, const char *title) {
-    if (!res->conservative || !res->shapes) {
-        cli_diag_error("modes --plot draws mode shapes, which a system with damping or "
-                       "gyroscopic terms does not have (its modes are complex)");
-        return QD_EXIT_USAGE;
-    }
+    if (!res->conservative || !res->shapes)
+        return cli_usage_error("modes --plot draws mode shapes, which a system with damping or "
+                               "gyroscopic terms does not have (its modes are complex)");
     cli_lin_set_state(lr, q0, NULL);
     const char *slash = strrchr(title, '/');
     qd_plot *p = NULL;

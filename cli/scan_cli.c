@@ -23,10 +23,8 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
         s++;
     while (e > s && isspace((unsigned char)text[e - 1]))
         e--;
-    if (!eq || e == s || e - s >= cap) {
-        cli_diag_error("--scan takes NAME=A:B (a parameter and its range), not '%s'", text);
-        return QD_EXIT_USAGE;
-    }
+    if (!eq || e == s || e - s >= cap)
+        return cli_usage_error("--scan takes NAME=A:B (a parameter and its range), not '%s'", text);
     memcpy(name, text + s, e - s);
     name[e - s] = '\0';
     size_t at = (size_t)(eq - text) + 1;
