@@ -116,10 +116,8 @@ int cli_cmd_lyapunov(int argc, char **argv) {
         rc = number("--renorm", p.renorm_text, &p.renorm);
     if (rc == QD_EXIT_OK)
         rc = number("--transient", p.transient_text, &p.transient);
-    if (rc == QD_EXIT_OK && !p.a.t_end) {
-        cli_diag_error("--t-end is missing (qdot lyapunov --help)");
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && !p.a.t_end)
+        rc = cli_usage_error("--t-end is missing (qdot lyapunov --help)");
     if (rc != QD_EXIT_OK)
         return rc;
     /* Runge-Kutta: dop853 unless named; --dt makes its step fixed */

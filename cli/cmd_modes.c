@@ -261,29 +261,24 @@ static int run(cli_run *c) {
         return cli_field_modes(c->ctx, &c->mf, c->file, a->sets.n, a->sets.items, a->count,
                                a->tol, a->json);
     int rc = cli_lin_load_model(&r->lr, c->file, a->sets.items, a->sets.n);
-    if (rc == QD_EXIT_OK && a->plot && qd_model_nspeeds(c->mf.model)) {
-        cli_diag_error("--plot: the modes of a model in speeds are not drawn yet");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK && a->symmetry && qd_model_nspeeds(c->mf.model)) {
-        cli_diag_error("--symmetry: the modes of a model in speeds are not analysed by symmetry");
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && a->plot && qd_model_nspeeds(c->mf.model))
+        rc = cli_usage_error("--plot: the modes of a model in speeds are not drawn yet");
+    if (rc == QD_EXIT_OK && a->symmetry && qd_model_nspeeds(c->mf.model))
+        rc = cli_usage_error("--symmetry: the modes of a model in speeds are not analysed by "
+                             "symmetry");
     if (rc == QD_EXIT_OK && qd_model_nspeeds(c->mf.model))
         return cli_speeds_modes(c->ctx, &c->mf, a->about, a->scan, a->steps, a->json,
                                 a->at_eq ? "--at-equilibrium" : a->initial ? "--initial" : NULL);
     if (rc == QD_EXIT_OK)
         rc = cli_lin_derive(&r->lr);
     if (rc == QD_EXIT_OK && (r->lr.e->ncon ? a->scan || a->symmetry || a->plot || a->initial
-                                           : a->independent != NULL)) {
-        cli_diag_error(r->lr.e->ncon ? "%s: not yet on the constraint manifold of a model that "
-                                       "keeps constraints with multipliers"
-                                     : "%s: the model keeps no constraints",
-                       r->lr.e->ncon ? (a->scan ? "--scan" : a->symmetry ? "--symmetry"
-                                                : a->plot ? "--plot" : "--initial")
-                                     : "--independent");
-        rc = QD_EXIT_USAGE;
-    }
+                                           : a->independent != NULL))
+        rc = cli_usage_error(r->lr.e->ncon ? "%s: not yet on the constraint manifold of a model "
+                                             "that keeps constraints with multipliers"
+                                           : "%s: the model keeps no constraints",
+                             r->lr.e->ncon ? (a->scan ? "--scan" : a->symmetry ? "--symmetry"
+                                                      : a->plot ? "--plot" : "--initial")
+                                           : "--independent");
     if (rc == QD_EXIT_OK && a->scan)
         return cli_scan_modes(&r->lr, a->scan, a->about, a->steps, a->json);
     if (rc == QD_EXIT_OK)

@@ -98,14 +98,11 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     int rc = read_end(r, "--from", a->from, r->q0, &t0, r->free0);
     if (rc == QD_EXIT_OK)
         rc = read_end(r, "--to", a->to, r->q1, &t1, r->free1);
-    if (rc == QD_EXIT_OK && r->energy && r->any_free) {
-        cli_diag_error("path: free ends need the end times, not --energy");
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && r->energy && r->any_free)
+        rc = cli_usage_error("path: free ends need the end times, not --energy");
     if (rc == QD_EXIT_OK && !r->energy && isnan(t1)) {
         const char *x = qd_model_independent(m) ? qd_model_independent(m) : "t";
-        cli_diag_error("path: --to needs the end %s=T1 (or give --energy E)", x);
-        rc = QD_EXIT_USAGE;
+        rc = cli_usage_error("path: --to needs the end %s=T1 (or give --energy E)", x);
     }
     if (rc == QD_EXIT_OK)
         free_guesses(r);

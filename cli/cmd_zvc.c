@@ -70,8 +70,7 @@ static int level_at(zvc_run *r, const char *what, const char *text, bool rest) {
         if (qd_eval(lr->c.ctx, rest ? r->z.W : r->z.h, lr->st.n, lr->st.syms, lr->st.vals,
                     &r->level) != QD_OK || !isfinite(r->level)) {
             qd_ctx_clear_error(lr->c.ctx);
-            cli_diag_error("%s: Jacobi's integral has no finite value there", what);
-            rc = QD_EXIT_USAGE;
+            rc = cli_usage_error("%s: Jacobi's integral has no finite value there", what);
         }
     }
     free(qd);
