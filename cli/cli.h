@@ -41,6 +41,7 @@ int cli_usage_error(const char *fmt, ...)
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
+int cli_out_of_memory(void); /* "out of memory", then QD_EXIT_FAIL */
 /* An error record shown through the library's one renderer: located ones as
  * FILE:LINE:COL, the line of text and a caret, then the hint. */
 void cli_diag_show(const char *file, const char *text, const qd_diag *d);

@@ -62,10 +62,8 @@ static int state_at(qd_ctx *ctx, const qd_model *m, const char *at, cli_state *s
         if (p && qd_state_append(ctx, st, 1, &p, NULL) != QD_OK)
             rc = cli_diag_ctx(ctx);
     }
-    if (rc == QD_EXIT_OK && at && !(given = calloc(st->n, sizeof *given))) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && at && !(given = calloc(st->n, sizeof *given)))
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {.given = given};
     if (rc == QD_EXIT_OK && at)
         rc = cli_state_read(ctx, m, "--at", at, st, &o);

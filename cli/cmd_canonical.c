@@ -71,10 +71,8 @@ static int emit(qd_status st, qd_buf *b) {
 /* --Q or --P: one expression per coordinate; the error shown in the list. */
 static int read_list(can_run *r, const char *what, const char *text, const qd_expr ***out) {
     qd_diag err;
-    if (!(*out = calloc(r->ph.n + 1, sizeof **out))) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!(*out = calloc(r->ph.n + 1, sizeof **out)))
+        return cli_out_of_memory();
     if (qd_phase_read_list(r->c.ctx, &r->ph, text, *out, &err) == QD_OK)
         return QD_EXIT_OK;
     cli_diag_read(what, text, &err);

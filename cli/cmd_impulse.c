@@ -92,10 +92,8 @@ static int add_prescription(imp_run *r, const char *text, size_t start, size_t l
     qd_buf_free(&stmt);
     if (st == QD_OK)
         return QD_EXIT_OK;
-    if (st == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (st == QD_ERR_NOMEM)
+        return cli_out_of_memory();
     show_in_option(d, "--prescribe", text, base, start, len);
     return QD_EXIT_USAGE;
 }
@@ -130,10 +128,8 @@ static int state_before(imp_run *r, const char *at) {
     r->q0 = calloc(n + 1, sizeof *r->q0);
     r->qd0 = calloc(n + 1, sizeof *r->qd0);
     const qd_expr *zero = qd_int(r->c.ctx, 0);
-    if (!r->q0 || !r->qd0 || !zero) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->q0 || !r->qd0 || !zero)
+        return cli_out_of_memory();
     for (size_t j = 0; j < n; j++) {
         const qd_expr *q = qd_model_initial_definition(m, j, 0);
         const qd_expr *v = qd_model_initial_definition(m, j, 1);
@@ -145,10 +141,8 @@ static int state_before(imp_run *r, const char *at) {
     cli_state st = {0};
     int rc = cli_state_init(r->c.ctx, m, &st);
     const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
-    if (rc == QD_EXIT_OK && !exact) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !exact)
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {.refuse = QD_STATE_PARAMS, .exact = exact};
     if (rc == QD_EXIT_OK)
         rc = cli_state_read(r->c.ctx, m, "--at", at, &st, &o);

@@ -63,10 +63,8 @@ static int read_about(qd_ctx *ctx, const qd_model *m, const char *text, lin_poin
     const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
     pt->syms = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->syms) : NULL;
     pt->vals = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->vals) : NULL;
-    if (rc == QD_EXIT_OK && (!exact || !pt->syms || !pt->vals)) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && (!exact || !pt->syms || !pt->vals))
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {.exact = exact};
     if (rc == QD_EXIT_OK)
         rc = cli_state_read(ctx, m, "--about", text, &st, &o);
@@ -110,10 +108,8 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
     cli_lin_run r = {.c = {.ctx = ctx, .mf = *mf}, .e = e};
     int rc = cli_lin_setup(&r);
     double *q0 = rc == QD_EXIT_OK ? calloc(e->n + 1, sizeof *q0) : NULL;
-    if (rc == QD_EXIT_OK && !q0) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !q0)
+        rc = cli_out_of_memory();
     if (rc == QD_EXIT_OK)
         rc = cli_con_point(&r, a->about, a->format == F_JSON, q0);
     if (rc == QD_EXIT_OK)

@@ -55,10 +55,8 @@ static int read_system(qd_ctx *ctx, const lqr_args *a, lqr_run *r) {
     }
     r->Q = malloc(n * n * sizeof *r->Q);
     r->R = malloc(m * m * sizeof *r->R);
-    if (!r->Q || !r->R) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->Q || !r->R)
+        return cli_out_of_memory();
     if (qd_lqr_weights_read(ctx, a->weights, n, m, r->Q, r->R) != QD_OK)
         return cli_lqr_error(ctx, "--weights", a->weights);
     return QD_EXIT_OK;

@@ -90,10 +90,8 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
                                sizeof r->free0 / sizeof r->free0[0]);
     r->q0 = calloc(n + 1, sizeof *r->q0);
     r->q1 = calloc(n + 1, sizeof *r->q1);
-    if (!r->q0 || !r->q1) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->q0 || !r->q1)
+        return cli_out_of_memory();
     double t0 = 0, t1 = NAN;
     int rc = read_end(r, "--from", a->from, r->q0, &t0, r->free0);
     if (rc == QD_EXIT_OK)
@@ -107,10 +105,8 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     if (rc == QD_EXIT_OK)
         free_guesses(r);
     r->guess = calloc(a->guess.n * n + 1, sizeof *r->guess);
-    if (rc == QD_EXIT_OK && !r->guess) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !r->guess)
+        return cli_out_of_memory();
     for (size_t k = 0; rc == QD_EXIT_OK && k < a->guess.n; k++) {
         cli_state_free(&r->g);
         rc = cli_state_init(r->c.ctx, m, &r->g);

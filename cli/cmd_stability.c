@@ -130,10 +130,8 @@ static char *join(const char *const *items, size_t n) {
 }
 
 static int prepare(stab_run *r, const stab_args *a) {
-    if (a->driven.n && !(r->driven = join(a->driven.items, a->driven.n))) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (a->driven.n && !(r->driven = join(a->driven.items, a->driven.n)))
+        return cli_out_of_memory();
     r->s = qd_steady_derive_named(r->c.ctx, r->c.mf.model, r->e, a->ignore ? "ignore" : "driven",
                                   a->ignore ? a->ignore : r->driven, a->driven.n > 0);
     if (!r->s)
@@ -154,10 +152,8 @@ static int solve(stab_run *r) {
                            g->pguess, &g->start, &r->set) != QD_OK)
         return cli_diag_ctx(r->c.ctx);
     r->an = calloc(r->set.count + 1, sizeof *r->an);
-    if (!r->an) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->an)
+        return cli_out_of_memory();
     for (size_t k = 0; k < r->set.count; k++)
         if (qd_stability_analyze(r->c.ctx, r->s, g->nvals, g->syms, g->vals, &r->set.pts[k],
                                  &r->an[k]) != QD_OK)
@@ -204,8 +200,7 @@ static int scan(stab_run *r, const stab_args *a) {
     } else if (rc == QD_EXIT_OK) {
         qd_buf followed = QD_BUF_INIT;
         if (qd_stability_scan_followed(r->s, sc.damped, &followed) != QD_OK) {
-            cli_diag_error("out of memory");
-            rc = QD_EXIT_FAIL;
+            rc = cli_out_of_memory();
         } else {
             cli_scan_view v = {name, names, qd_buf_str(&followed), "steady_motion"};
             rc = cli_scan_emit(&v, &sc, a->json);

@@ -19,10 +19,8 @@ static int reduce(cli_lin_run *r, const double *q0, const char *indep,
     int rc = QD_EXIT_OK;
     if (indep) {
         ix = calloc(r->e->n + 1, sizeof *ix);
-        if (!ix) {
-            cli_diag_error("out of memory");
-            return QD_EXIT_FAIL;
-        }
+        if (!ix)
+            return cli_out_of_memory();
         if (qd_constrained_indep_read(r->c.ctx, r->e, indep, ix) != QD_OK)
             rc = cli_state_diag(r->c.ctx, "--independent", indep);
     }
@@ -96,10 +94,8 @@ int cli_con_linearize(cli_lin_run *r, const double *q0, const char *indep, bool 
     int rc = reduce(r, q0, indep, &c);
     if (rc == QD_EXIT_OK && (!(A = calloc(4 * c.r * c.r + 1, sizeof *A)) ||
                              !(B = calloc(2 * c.r * nu + 1, sizeof *B)) ||
-                             !(u = calloc(nu + 1, sizeof *u)))) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+                             !(u = calloc(nu + 1, sizeof *u))))
+        rc = cli_out_of_memory();
     for (size_t k = 0; rc == QD_EXIT_OK && k < nu; k++)
         u[k] = qd_model_input(r->c.mf.model, k);
     if (rc == QD_EXIT_OK && (qd_constrained_state_matrix(r->c.ctx, &c, A) != QD_OK ||

@@ -21,6 +21,11 @@ void cli_diag_error(const char *fmt, ...) {
     va_end(ap);
 }
 
+int cli_out_of_memory(void) {
+    cli_diag_error("out of memory");
+    return QD_EXIT_FAIL;
+}
+
 int cli_usage_error(const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);

@@ -12,10 +12,8 @@ int cli_drive(const cli_driver *d, cli_run *r, int argc, char **argv) {
         rc = d->check(r);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!(r->ctx = qd_ctx_new())) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!(r->ctx = qd_ctx_new()))
+        return cli_out_of_memory();
     rc = d->run(r);
     if (d->free)
         d->free(r);

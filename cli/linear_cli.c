@@ -40,10 +40,8 @@ int cli_lin_setup(cli_lin_run *r) {
     /* the slot of each independent coordinate in the model's state */
     size_t nq = qd_model_ncoords(r->c.mf.model);
     r->slot = malloc((r->e->n + 1) * sizeof *r->slot);
-    if (!r->slot) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->slot)
+        return cli_out_of_memory();
     for (size_t j = 0; j < r->e->n; j++) {
         r->slot[j] = SIZE_MAX;
         for (size_t i = 0; i < nq; i++)
@@ -93,10 +91,8 @@ int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q,
     cli_state s = {0};
     int rc = cli_state_init(r->c.ctx, m, &s);
     bool *given = rc == QD_EXIT_OK ? calloc(s.n, sizeof *given) : NULL;
-    if (rc == QD_EXIT_OK && !given) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !given)
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {
         .refuse = QD_STATE_TIME | QD_STATE_PARAMS | (qd ? 0 : QD_STATE_VELOCITIES),
         .independent = r->e->q, .nindependent = r->e->n, .given = given};

@@ -114,10 +114,8 @@ static int add_statement(cli_model_file *mf, const char *opt, const char *keywor
     qd_buf_free(&stmt);
     if (st == QD_OK)
         return QD_EXIT_OK;
-    if (st == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (st == QD_ERR_NOMEM)
+        return cli_out_of_memory();
     statement_diag(&d, opt, text, base);
     return QD_EXIT_USAGE;
 }

@@ -46,10 +46,8 @@ int cli_sym_compute(cli_lin_run *lr, const qd_linear *lin, cli_sym_run *s) {
         return fast_path(lr, lin, cell, s);
     qd_status st = qd_symmetry_find(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
                                     lr->st.vals, lin, &s->sym);
-    if (st == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (st == QD_ERR_NOMEM)
+        return cli_out_of_memory();
     if (st != QD_OK) {
         fprintf(stderr, "qdot: note: --symmetry: %s; the plain modes follow\n",
                 qd_ctx_message(lr->c.ctx));

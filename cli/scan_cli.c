@@ -44,8 +44,7 @@ int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about) {
         free(exact);
         free(given);
         free(vals);
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
+        return cli_out_of_memory();
     }
     memcpy(vals, r->st.vals, ns * sizeof *vals); /* the run's own state stays as it is */
     qd_state st = {ns, r->st.syms, vals};
