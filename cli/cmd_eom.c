@@ -219,8 +219,7 @@ static int run(cli_run *c) {
 static void run_free(cli_run *c) {
     eom_run *r = (eom_run *)c;
     cli_state_free(&r->st);
-    if (r->e)
-        qd_eom_free(r->e);
+    qd_eom_free(r->e);
 }
 
 int cli_cmd_eom(int argc, char **argv) {

@@ -179,8 +179,7 @@ static void run_free(cli_run *c) {
     free(r->q0);
     free(r->q1);
     free(r->guess);
-    if (r->e)
-        qd_eom_free(r->e);
+    qd_eom_free(r->e);
 }
 
 int cli_cmd_path(int argc, char **argv) {

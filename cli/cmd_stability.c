@@ -245,8 +245,7 @@ static void run_free(cli_run *c) {
     qd_steady_given_free(&r->g);
     qd_steady_free(r->s);
     free(r->driven);
-    if (r->e)
-        qd_eom_free(r->e);
+    qd_eom_free(r->e);
 }
 
 int cli_cmd_stability(int argc, char **argv) {

@@ -60,8 +60,7 @@ void cli_lin_free(cli_lin_run *r) {
     cli_state_free(&r->st);
     free(r->slot);
     r->slot = NULL;
-    if (r->e)
-        qd_eom_free(r->e);
+    qd_eom_free(r->e);
     r->e = NULL;
     cli_model_file_free(&r->c.mf);
 }
