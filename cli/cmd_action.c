@@ -25,8 +25,6 @@ typedef struct act_run {
     act_args a;
 } act_run;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--at", NULL, CLI_TEXT, offsetof(act_args, at), "\"q=V, q'=V (or p=V), ...\"",
      "the state of the motion (over the model's initial values)", NULL, NULL},
@@ -34,8 +32,8 @@ static const cli_opt opts[] = {
      "give a parameter another value", NULL, NULL},
     {"--angle", NULL, CLI_TEXT, offsetof(act_args, angle), "q[,q...]",
      "the coordinates whose angle variables to print", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(act_args, format), "F", "output format", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(act_args, format), "F", "output format",
+     cli_formats_text_json, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

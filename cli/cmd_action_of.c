@@ -21,8 +21,6 @@ typedef struct ao_run {
     double t0, t1;
 } ao_run;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--path", NULL, CLI_TEXT, offsetof(ao_run, path), "\"q = EXPR(t), ...\"",
      "the trial path: every coordinate as an expression in t", NULL, NULL},
@@ -30,8 +28,8 @@ static const cli_opt opts[] = {
      "the time interval (expressions in the parameters)", NULL, NULL},
     {"--set", NULL, CLI_LIST, offsetof(ao_run, sets), "NAME=VALUE",
      "give a parameter another value", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(ao_run, format), "F", "output format", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(ao_run, format), "F", "output format",
+     cli_formats_text_json, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

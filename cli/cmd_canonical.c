@@ -23,7 +23,6 @@ typedef struct can_args {
     cli_list set;
 } can_args;
 
-static const char *const formats[] = {"text", "json", NULL};
 static const char *const gen_types[] = {"F1", "F2", "F3", "F4", NULL};
 
 static const cli_opt opts[] = {
@@ -39,7 +38,7 @@ static const cli_opt opts[] = {
      "the map of the generating function EXPR (the argument after FILE) of this type",
      gen_types, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(can_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {"--set", NULL, CLI_LIST, offsetof(can_args, set), "NAME=VALUE",
      "read the model with this parameter value", NULL, NULL},
     {0},

@@ -22,12 +22,10 @@ typedef struct check_args {
     const char *format;
 } check_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt check_opts[] = {
     {"--format", NULL, CLI_CHOICE, offsetof(check_args, format), "F",
      "the summary as text or as JSON (with \"ok\", and \"reason\" and \"witness\" for a no)",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {0},
 };
 

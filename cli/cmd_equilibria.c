@@ -17,8 +17,6 @@ typedef struct eq_args {
     cli_list sets;
 } eq_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--near", NULL, CLI_TEXT, offsetof(eq_args, near), "\"q1=VALUE, ...\"",
      "Newton from this point (only the equilibrium reached)", NULL, NULL},
@@ -26,8 +24,8 @@ static const cli_opt opts[] = {
      "search this box (default: [-pi, pi] for an angle, else [-10, 10])", NULL, NULL},
     {"--set", NULL, CLI_LIST, offsetof(eq_args, sets), "NAME=VALUE", "a parameter's value", NULL,
      NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(eq_args, format), "NAME", "text or json", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(eq_args, format), "NAME", "text or json",
+     cli_formats_text_json, NULL},
     {0},
 };
 

@@ -14,13 +14,11 @@ typedef struct form_args {
     const char *format, *vars, *text;
 } form_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt form_opts[] = {
     {"--vars", NULL, CLI_TEXT, offsetof(form_args, vars), "\"x, y, ...\"",
      "the variables of the form (required)", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(form_args, format), "F", "the output format",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {0},
 };
 

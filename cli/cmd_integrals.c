@@ -20,11 +20,9 @@ typedef struct int_args {
     cli_list set, symmetry, integral;
 } int_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--format", NULL, CLI_CHOICE, offsetof(int_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {"--symmetry", NULL, CLI_LIST, offsetof(int_args, symmetry), "\"[NAME:] x -> x + eps, ...\"",
      "a symmetry to examine, as the model's `symmetry` statement takes it", NULL, NULL},
     {"--integral", NULL, CLI_LIST, offsetof(int_args, integral), "\"[NAME:] EXPR\"",

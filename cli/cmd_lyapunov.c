@@ -26,8 +26,6 @@ typedef struct ly_args {
     double renorm, transient;
 } ly_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--exponents", NULL, CLI_COUNT, offsetof(ly_args, n), "K", "the K largest exponents (1)", NULL,
      NULL},
@@ -36,7 +34,7 @@ static const cli_opt opts[] = {
     {"--transient", NULL, CLI_TEXT, offsetof(ly_args, transient_text), "T0",
      "the time run before the averaging starts (0)", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(ly_args, format), "F", "how the result is printed",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

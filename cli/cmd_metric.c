@@ -22,14 +22,12 @@ typedef struct mt_run {
     mt_args a;
 } mt_run;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--force", NULL, CLI_TEXT, offsetof(mt_args, force), "\"G1, G2, ...\"",
      "a force by its covariant components G_i = F . dx/dq_i (default: the model's Q)", NULL,
      NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(mt_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {"--set", NULL, CLI_LIST, offsetof(mt_args, set), "NAME=VALUE",
      "read the model with this parameter value", NULL, NULL},
     {0},

@@ -58,8 +58,6 @@ typedef struct modes_run {
     cli_sym_run sym;            /* --symmetry */
 } modes_run;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static int tol_option(const char *v, void *args) {
     modes_args *a = args;
     char *end;
@@ -88,8 +86,8 @@ static const cli_opt opts[] = {
     {"--tol", NULL, CLI_CALL, 0, "X", "a field model: the relative tolerance (1e-14 to 0.1)",
      NULL, tol_option},
     OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value"),
-    {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json",
+     cli_formats_text_json, NULL},
     {0},
 };
 #undef OPT

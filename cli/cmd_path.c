@@ -21,8 +21,6 @@ typedef struct path_args {
     cli_list guess, set;
 } path_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--from", NULL, CLI_TEXT, offsetof(path_args, from), "\"q=VALUE|free, ..., t=T0\"",
      "the start: each coordinate's value (or free) and the time (required)", NULL, NULL},
@@ -38,7 +36,7 @@ static const cli_opt opts[] = {
     {"--segments", NULL, CLI_COUNT, offsetof(path_args, segments), "N",
      "multiple-shooting segments (default: chosen)", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(path_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {"--set", NULL, CLI_LIST, offsetof(path_args, set), "NAME=VALUE",
      "read the model with this parameter value", NULL, NULL},
     {0},

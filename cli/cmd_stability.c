@@ -45,8 +45,6 @@ typedef struct stab_run {
     qd_stability *an;    /* set.count analyses */
 } stab_run;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 #define OPT(...) CLI_OPT(stab_args, __VA_ARGS__)
 static const cli_opt opts[] = {
     OPT("--ignore", CLI_TEXT, ignore, "Q[,Q...]", "the cyclic coordinates, momenta free "
@@ -64,8 +62,8 @@ static const cli_opt opts[] = {
         "from A to B"),
     OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
     OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value (before everything else)"),
-    {"--format", NULL, CLI_CHOICE, offsetof(stab_args, format), "NAME", "text or json", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(stab_args, format), "NAME", "text or json",
+     cli_formats_text_json, NULL},
     {0},
 };
 #undef OPT
