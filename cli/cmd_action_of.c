@@ -104,8 +104,8 @@ static int run(cli_run *c) {
     if (rc != QD_EXIT_OK)
         return rc;
     double S = 0, dS = 0;
-    if (qd_path_action_of(r->c.ctx, r->c.mf.model, r->e, r->q, r->t0, r->t1, &S, &dS) != QD_OK)
-        return cli_diag_ctx(r->c.ctx);
+    if (qd_path_action_of(c->ctx, c->mf.model, r->e, r->q, r->t0, r->t1, &S, &dS) != QD_OK)
+        return cli_diag_ctx(c->ctx);
     return emit(r, S, dS);
 }
 

@@ -77,16 +77,16 @@ static int emit(ham_run *r) {
 
 static int run(cli_run *c) {
     ham_run *r = (ham_run *)c;
-    int rc = cli_load(r->c.ctx, r->c.file, r->sets.n, r->sets.items, true, &r->c.mf);
-    bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(r->c.mf.model);
+    int rc = cli_load(c->ctx, c->file, r->sets.n, r->sets.items, true, &c->mf);
+    bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(c->mf.model);
     /* a singular Hessian named as the Legendre transform sees it, before
      * Lagrange's equations fail on the same matrix */
-    if (rc == QD_EXIT_OK && !given && qd_ham_regular(r->c.ctx, r->c.mf.model) != QD_OK)
-        rc = cli_eom_derive_error(r->c.ctx, &r->c.mf);
-    if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(r->c.ctx, r->c.mf.model)))
-        rc = cli_eom_derive_error(r->c.ctx, &r->c.mf);
-    if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(r->c.ctx, r->c.mf.model, r->e)))
-        rc = cli_eom_derive_error(r->c.ctx, &r->c.mf);
+    if (rc == QD_EXIT_OK && !given && qd_ham_regular(c->ctx, c->mf.model) != QD_OK)
+        rc = cli_eom_derive_error(c->ctx, &c->mf);
+    if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(c->ctx, c->mf.model)))
+        rc = cli_eom_derive_error(c->ctx, &c->mf);
+    if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(c->ctx, c->mf.model, r->e)))
+        rc = cli_eom_derive_error(c->ctx, &c->mf);
     if (rc == QD_EXIT_OK && r->at)
         rc = evaluate(r);
     return rc == QD_EXIT_OK ? emit(r) : rc;

@@ -60,19 +60,19 @@ static int run(cli_run *c) {
     int rc = cli_load_derive(c->ctx, c->file, a->sets.n, a->sets.items, false, NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_parse(r->c.ctx, r->c.mf.model, a->ignore, ign, MAX_IGN, &nign);
+        rc = cli_ignore_parse(c->ctx, c->mf.model, a->ignore, ign, MAX_IGN, &nign);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_check(r->c.ctx, &r->c.mf, r->e, ign, nign);
-    if (rc == QD_EXIT_OK && !(r->o = qd_orbit_derive(r->c.ctx, r->c.mf.model, r->e, nign, ign)))
-        rc = cli_diag_ctx(r->c.ctx);
+        rc = cli_ignore_check(c->ctx, &c->mf, r->e, ign, nign);
+    if (rc == QD_EXIT_OK && !(r->o = qd_orbit_derive(c->ctx, c->mf.model, r->e, nign, ign)))
+        rc = cli_diag_ctx(c->ctx);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_buf b = QD_BUF_INIT;
-    qd_status st = qd_orbit_solve_text(r->c.ctx, r->o, r->c.mf.model, &a->t, &r->r);
+    qd_status st = qd_orbit_solve_text(c->ctx, r->o, c->mf.model, &a->t, &r->r);
     if (st == QD_OK)
-        st = qd_orbit_render(r->c.ctx, r->o, &r->r, r->c.mf.path, a->equation,
+        st = qd_orbit_render(c->ctx, r->o, &r->r, c->mf.path, a->equation,
                              cli_json(a->format), &b);
-    rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(r->c.ctx, &spec, a);
+    rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(c->ctx, &spec, a);
     qd_buf_free(&b);
     return rc;
 }

@@ -147,16 +147,16 @@ static int run(cli_run *c) {
     double E = 0;
     r->energy = a->energy != NULL;
     if (rc == QD_EXIT_OK && a->energy)
-        rc = path_number(r->c.ctx, r->c.mf.model, "--energy", a->energy, &E);
+        rc = path_number(c->ctx, c->mf.model, "--energy", a->energy, &E);
     if (rc == QD_EXIT_OK)
         rc = read_ends(r, a, &o);
     if (rc != QD_EXIT_OK)
         return rc;
     o.segments = a->segments;
-    qd_status st = r->energy ? qd_path_find_energy(r->c.ctx, r->c.mf.model, r->e, E, &o, &r->ps)
-                             : qd_path_find(r->c.ctx, r->c.mf.model, r->e, &o, &r->ps);
+    qd_status st = r->energy ? qd_path_find_energy(c->ctx, c->mf.model, r->e, E, &o, &r->ps)
+                             : qd_path_find(c->ctx, c->mf.model, r->e, &o, &r->ps);
     if (st != QD_OK)
-        return cli_diag_ctx(r->c.ctx);
+        return cli_diag_ctx(c->ctx);
     qd_buf b = QD_BUF_INIT;
     st = cli_json(a->format) ? qd_path_json(c->ctx, &r->ps, c->mf.model, r->e, &b)
                              : qd_path_print(c->ctx, &r->ps, c->mf.model, r->e, &o, &b);

@@ -60,15 +60,15 @@ static int run(cli_run *c) {
     int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, true, NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_parse(r->c.ctx, r->c.mf.model, r->a.ignore, r->ign, MAX_IGN, &r->nign);
+        rc = cli_ignore_parse(c->ctx, c->mf.model, r->a.ignore, r->ign, MAX_IGN, &r->nign);
     /* forced: a cyclic coordinate with a generalized force is reduced too
      * (Byerly Art. 20a); any other refusal is shown at its statement */
     qd_routh_opts ro = {.implicit = true, .forced = true};
     if (rc == QD_EXIT_OK &&
-        !(r->r = qd_routh_derive_opts(r->c.ctx, r->c.mf.model, r->e, r->nign, r->ign, &ro))) {
-        rc = cli_ignore_check(r->c.ctx, &r->c.mf, r->e, r->ign, r->nign);
+        !(r->r = qd_routh_derive_opts(c->ctx, c->mf.model, r->e, r->nign, r->ign, &ro))) {
+        rc = cli_ignore_check(c->ctx, &c->mf, r->e, r->ign, r->nign);
         if (rc == QD_EXIT_OK)
-            rc = cli_diag_ctx(r->c.ctx);
+            rc = cli_diag_ctx(c->ctx);
     }
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
