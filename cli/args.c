@@ -87,10 +87,8 @@ static int set_count(const cli_spec *spec, const cli_opt *o, const char *v, size
     char *end;
     errno = 0;
     unsigned long long k = (v[0] >= '0' && v[0] <= '9') ? strtoull(v, &end, 10) : 0;
-    if (v[0] < '0' || v[0] > '9' || *end || errno || k < 1 || k > SIZE_MAX / 2) {
-        cli_diag_error("%s %s: '%s' is not a whole number >= 1", spec->name, o->name, v);
-        return QD_EXIT_USAGE;
-    }
+    if (v[0] < '0' || v[0] > '9' || *end || errno || k < 1 || k > SIZE_MAX / 2)
+        return cli_usage_error("%s %s: '%s' is not a whole number >= 1", spec->name, o->name, v);
     *slot = (size_t)k;
     return QD_EXIT_OK;
 }
@@ -103,10 +101,8 @@ static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char
     case CLI_TEXT: *(const char **)(void *)field = v; return QD_EXIT_OK;
     case CLI_LIST: {
         cli_list *l = (cli_list *)(void *)field;
-        if (l->n == CLI_LIST_MAX) {
-            cli_diag_error("%s %s: at most %d of them", spec->name, o->name, CLI_LIST_MAX);
-            return QD_EXIT_USAGE;
-        }
+        if (l->n == CLI_LIST_MAX)
+            return cli_usage_error("%s %s: at most %d of them", spec->name, o->name, CLI_LIST_MAX);
         l->items[l->n++] = v;
         return QD_EXIT_OK;
     }
@@ -183,28 +179,22 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
         const char *v = NULL;
         bool takes = o->metavar != NULL;
         if (arg[len] == '=') {
-            if (!takes) {
-                cli_diag_error("%s takes no value (given '%s')", o->name, arg);
-                return QD_EXIT_USAGE;
-            }
+            if (!takes)
+                return cli_usage_error("%s takes no value (given '%s')", o->name, arg);
             v = arg + len + 1;
         } else if (takes) {
-            if (i + 1 >= argc) {
-                cli_diag_error("%s needs a value: %s %s", o->name, o->name, o->metavar);
-                return QD_EXIT_USAGE;
-            }
+            if (i + 1 >= argc)
+                return cli_usage_error("%s needs a value: %s %s", o->name, o->name, o->metavar);
             v = argv[++i];
         }
         int rc = store(spec, o, base, v, args);
         if (rc != QD_EXIT_OK)
             return rc;
     }
-    if (npos < spec->min_pos) {
-        cli_diag_error("%s is missing (usage: qdot %s %s)",
-                       spec->pos_name ? spec->pos_name : "an argument", spec->name,
-                       spec->synopsis ? spec->synopsis : "");
-        return QD_EXIT_USAGE;
-    }
+    if (npos < spec->min_pos)
+        return cli_usage_error("%s is missing (usage: qdot %s %s)",
+                               spec->pos_name ? spec->pos_name : "an argument", spec->name,
+                               spec->synopsis ? spec->synopsis : "");
     return QD_EXIT_OK;
 }
 

@@ -34,6 +34,14 @@ void cli_diag_error(const char *fmt, ...)
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
+/* The same, for the many places a bad command line ends at: returns
+ * QD_EXIT_USAGE so that they read "return cli_usage_error(...)". */
+int cli_usage_error(const char *fmt, ...)
+#ifdef __GNUC__
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+int cli_out_of_memory(void); /* "out of memory", then QD_EXIT_FAIL */
 /* An error record shown through the library's one renderer: located ones as
  * FILE:LINE:COL, the line of text and a caret, then the hint. */
 void cli_diag_show(const char *file, const char *text, const qd_diag *d);
@@ -50,6 +58,12 @@ bool cli_is_option(const char *arg);
 
 /* Parse "--format NAME" values; false for an unknown name. */
 bool cli_format(const char *name, qd_format *out);
+/* The same for a --format whose other choices (json) print elsewhere:
+ * NULL or a name cli_format does not know is text. */
+qd_format cli_format_or_text(const char *name);
+/* --format NAME for the library's renderers (qd_render_*): NULL is text;
+ * cli_parse has checked the name against the command's choices. */
+qd_render_format cli_render_format(const char *name);
 
 int cli_cmd_tour(int argc, char **argv);
 int cli_cmd_diff(int argc, char **argv);

@@ -7,22 +7,23 @@
  * model given by H may take its momenta in --at.  The library writes the
  * result (qd_action_print).
  */
-#include "cli.h"
+#include "driver.h"
 
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
 #include "qdot/action.h"
 #include "qdot/routh.h"
 #include "state.h"
 
 typedef struct act_args {
-    const char *file, *at, *angle, *format;
+    const char *at, *angle, *format;
     cli_list sets;
-    bool json;
 } act_args;
 
-static const char *const formats[] = {"text", "json", NULL};
+typedef struct act_run {
+    cli_run c;
+    act_args a;
+} act_run;
 
 static const cli_opt opts[] = {
     {"--at", NULL, CLI_TEXT, offsetof(act_args, at), "\"q=V, q'=V (or p=V), ...\"",
@@ -31,8 +32,8 @@ static const cli_opt opts[] = {
      "give a parameter another value", NULL, NULL},
     {"--angle", NULL, CLI_TEXT, offsetof(act_args, angle), "q[,q...]",
      "the coordinates whose angle variables to print", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(act_args, format), "F", "output format", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(act_args, format), "F", "output format",
+     cli_formats_text_json, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 
@@ -59,10 +60,8 @@ static int state_at(qd_ctx *ctx, const qd_model *m, const char *at, cli_state *s
         if (p && qd_state_append(ctx, st, 1, &p, NULL) != QD_OK)
             rc = cli_diag_ctx(ctx);
     }
-    if (rc == QD_EXIT_OK && at && !(given = calloc(st->n, sizeof *given))) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && at && !(given = calloc(st->n, sizeof *given)))
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {.given = given};
     if (rc == QD_EXIT_OK && at)
         rc = cli_state_read(ctx, m, "--at", at, st, &o);
@@ -93,16 +92,13 @@ static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const 
             s++, len--;
         while (len && s[len - 1] == ' ')
             len--;
-        if (!len || len >= sizeof name || *n == MAX_ANGLES) {
-            cli_diag_error("--angle takes a comma-separated list of coordinates, not '%s'", list);
-            return QD_EXIT_USAGE;
-        }
+        if (!len || len >= sizeof name || *n == MAX_ANGLES)
+            return cli_usage_error("--angle takes a comma-separated list of coordinates, not '%s'",
+                                   list);
         memcpy(name, s, len);
         name[len] = '\0';
-        if (!(out[(*n)++] = qd_routh_lookup(ctx, m, name))) {
-            cli_diag_error("--angle: %s", qd_ctx_message(ctx));
-            return QD_EXIT_USAGE;
-        }
+        if (!(out[(*n)++] = qd_routh_lookup(ctx, m, name)))
+            return cli_usage_error("--angle: %s", qd_ctx_message(ctx));
         s += strcspn(s, ",");
         if (!*s)
             break;
@@ -110,8 +106,11 @@ static int angles_parse(qd_ctx *ctx, const qd_model *m, const char *list, const 
     return QD_EXIT_OK;
 }
 
-static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
-    int rc = cli_load(ctx, a->file, a->sets.n, a->sets.items, false, mf);
+static int run(cli_run *c) {
+    const act_args *a = &((act_run *)c)->a;
+    qd_ctx *ctx = c->ctx;
+    cli_model_file *mf = &c->mf;
+    int rc = cli_load(ctx, c->file, a->sets.n, a->sets.items, false, mf);
     if (rc != QD_EXIT_OK)
         return rc;
     cli_state st = {0};
@@ -126,7 +125,7 @@ static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
         rc = cli_diag_model(ctx, mf->path, mf->text, mf->model);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        b.failed = qd_action_print(ctx, &act, a->json, &b) != QD_OK;
+        b.failed = qd_action_print(ctx, &act, cli_json(a->format), &b) != QD_OK;
         rc = cli_emit(&b, "actions");
     }
     qd_action_free(&act);
@@ -135,21 +134,7 @@ static int run(qd_ctx *ctx, const act_args *a, cli_model_file *mf) {
 }
 
 int cli_cmd_action(int argc, char **argv) {
-    act_args a = {0};
-    const char *pos[1];
-    int rc = cli_parse(&spec, argc, argv, &a, pos);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    a.file = pos[0];
-    a.json = a.format && !strcmp(a.format, "json");
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    cli_model_file mf = {0};
-    rc = run(ctx, &a, &mf);
-    cli_model_file_free(&mf);
-    qd_ctx_free(ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(act_run, a), 0, NULL, run, NULL};
+    act_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -5,27 +5,21 @@
  * trial paths of Problems 1-3 compared), to weigh trial paths against each
  * other and against the true one.
  */
-#include "cli.h"
+#include "driver.h"
 
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/json.h"
-#include "model_cli.h"
-#include "model_file.h"
 #include "state.h"
 
 typedef struct ao_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
     qd_eom *e;
-    bool json;
-    const char *file, *path, *times, *format;
+    const char *path, *times, *format;
     cli_list sets;
     const qd_expr **q;   /* the trial path of each coordinate */
     double t0, t1;
 } ao_run;
-
-static const char *const formats[] = {"text", "json", NULL};
 
 static const cli_opt opts[] = {
     {"--path", NULL, CLI_TEXT, offsetof(ao_run, path), "\"q = EXPR(t), ...\"",
@@ -34,8 +28,8 @@ static const cli_opt opts[] = {
      "the time interval (expressions in the parameters)", NULL, NULL},
     {"--set", NULL, CLI_LIST, offsetof(ao_run, sets), "NAME=VALUE",
      "give a parameter another value", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(ao_run, format), "F", "output format", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(ao_run, format), "F", "output format",
+     cli_formats_text_json, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 
@@ -45,34 +39,32 @@ static const cli_spec spec = {
     "FILE", false};
 
 static int parse_path(ao_run *r) {
-    size_t n = qd_model_ncoords(r->mf.model);
+    size_t n = qd_model_ncoords(r->c.mf.model);
     if (!(r->q = calloc(n ? n : 1, sizeof *r->q)))
         return QD_EXIT_FAIL;
-    if (qd_path_trial_read(r->ctx, r->mf.model, r->path, r->q) != QD_OK)
-        return cli_state_diag(r->ctx, "--path", r->path);
+    if (qd_path_trial_read(r->c.ctx, r->c.mf.model, r->path, r->q) != QD_OK)
+        return cli_state_diag(r->c.ctx, "--path", r->path);
     return QD_EXIT_OK;
 }
 
 /* --t T0:T1, each a constant expression in the parameters (pi/8, 2*pi/w). */
 static int parse_times(ao_run *r) {
     const char *text = r->times;
-    if (qd_state_range(r->ctx, r->mf.model, text, 0, strlen(text), &r->t0, &r->t1) != QD_OK)
-        return cli_state_diag(r->ctx, "--t", text);
-    if (!(r->t1 > r->t0)) {
-        cli_diag_error("--t: T1 must be after T0 (%s)", text);
-        return QD_EXIT_USAGE;
-    }
+    if (qd_state_range(r->c.ctx, r->c.mf.model, text, 0, strlen(text), &r->t0, &r->t1) != QD_OK)
+        return cli_state_diag(r->c.ctx, "--t", text);
+    if (!(r->t1 > r->t0))
+        return cli_usage_error("--t: T1 must be after T0 (%s)", text);
     return QD_EXIT_OK;
 }
 
 static int emit(ao_run *r, double S, double dS) {
     qd_buf b = QD_BUF_INIT;
-    if (r->json) {
+    if (cli_json(r->format)) {
         qd_json j;
         qd_json_init(&j, &b);
         qd_json_begin_object(&j);
         qd_json_key(&j, "model");
-        qd_json_string(&j, r->mf.path);
+        qd_json_string(&j, r->c.mf.path);
         qd_json_key(&j, "t0");
         qd_json_number(&j, r->t0);
         qd_json_key(&j, "t1");
@@ -94,12 +86,17 @@ static int emit(ao_run *r, double S, double dS) {
     return cli_emit(&b, "action");
 }
 
-static int run(ao_run *r) {
-    if (!r->path || !r->times) {
-        cli_diag_error("action-of needs --path and --t (qdot action-of --help)");
-        return QD_EXIT_USAGE;
-    }
-    int rc = cli_load_derive(r->ctx, r->file, r->sets.n, r->sets.items, false, NULL, &r->mf, &r->e);
+static int check(cli_run *c) {
+    ao_run *r = (ao_run *)c;
+    if (r->path && r->times)
+        return QD_EXIT_OK;
+    return cli_usage_error("action-of needs --path and --t (qdot action-of --help)");
+}
+
+static int run(cli_run *c) {
+    ao_run *r = (ao_run *)c;
+    int rc = cli_load_derive(c->ctx, c->file, r->sets.n, r->sets.items, false, NULL, &c->mf,
+                             &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_path(r);
     if (rc == QD_EXIT_OK)
@@ -107,27 +104,19 @@ static int run(ao_run *r) {
     if (rc != QD_EXIT_OK)
         return rc;
     double S = 0, dS = 0;
-    if (qd_path_action_of(r->ctx, r->mf.model, r->e, r->q, r->t0, r->t1, &S, &dS) != QD_OK)
-        return cli_diag_ctx(r->ctx);
+    if (qd_path_action_of(c->ctx, c->mf.model, r->e, r->q, r->t0, r->t1, &S, &dS) != QD_OK)
+        return cli_diag_ctx(c->ctx);
     return emit(r, S, dS);
 }
 
+static void run_free(cli_run *c) {
+    ao_run *r = (ao_run *)c;
+    free(r->q);
+    qd_eom_free(r->e);
+}
+
 int cli_cmd_action_of(int argc, char **argv) {
+    static const cli_driver d = {&spec, 0, 0, check, run, run_free};
     ao_run r = {0};
-    const char *pos[1];
-    int rc = cli_parse(&spec, argc, argv, &r, pos);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    r.file = pos[0];
-    r.json = r.format && !strcmp(r.format, "json");
-    if (!(r.ctx = qd_ctx_new())) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(&r);
-    free(r.q);
-    qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -6,12 +6,7 @@
  * "-x" is one and `--` ends the options.  Written by qd_phase_bracket_print
  * (qdot/canonical.h).
  */
-#include "cli.h"
-
-#include <stddef.h>
-#include <string.h>
-#include "model_cli.h"
-#include "model_file.h"
+#include "driver.h"
 
 typedef struct br_args {
     bool dt;
@@ -44,50 +39,53 @@ static int read_fn(qd_ctx *ctx, const qd_phase *ph, const char *what, const char
     return cli_exit(err.status);
 }
 
-static int run(qd_ctx *ctx, const cli_model_file *mf, qd_phase *ph, const br_args *a,
-               const char *const *pos) {
+typedef struct br_run {
+    cli_run c;
+    br_args a;
+    const char *pos[3]; /* FILE, F, G */
+    qd_phase ph;
+} br_run;
+
+static int check(cli_run *c) {
+    const br_run *r = (br_run *)c;
+    if (r->a.dt ? r->pos[2] == NULL : r->pos[2] != NULL)
+        return QD_EXIT_OK;
+    cli_diag_error(r->a.dt ? "bracket --dt takes one expression F" : "bracket needs F and G");
+    cli_usage(&spec, stderr);
+    return QD_EXIT_USAGE;
+}
+
+static int run(cli_run *c) {
+    br_run *rr = (br_run *)c;
+    qd_ctx *ctx = c->ctx;
+    const cli_model_file *mf = &c->mf;
+    const br_args *a = &rr->a;
+    qd_phase *ph = &rr->ph;
+    int rc = cli_load(ctx, rr->pos[0], 0, NULL, true, &c->mf);
+    if (rc == QD_EXIT_OK && qd_phase_init(ctx, mf->model, ph) != QD_OK)
+        rc = cli_diag_ctx(ctx);
     const qd_expr *F, *G = NULL, *r;
-    int rc = read_fn(ctx, ph, "F", pos[1], &F);
+    if (rc == QD_EXIT_OK)
+        rc = read_fn(ctx, ph, "F", rr->pos[1], &F);
     if (rc == QD_EXIT_OK && !a->dt)
-        rc = read_fn(ctx, ph, "G", pos[2], &G);
+        rc = read_fn(ctx, ph, "G", rr->pos[2], &G);
     if (rc != QD_EXIT_OK)
         return rc;
     r = a->dt ? qd_phase_dt(ctx, ph, F) : qd_bracket(ctx, ph->n, ph->q, ph->p, F, G);
     if (!r)
         return cli_diag_model(ctx, mf->path, mf->text, mf->model);
     qd_buf b = QD_BUF_INIT;
-    bool json = a->format && !strcmp(a->format, "json");
-    qd_format fmt = a->format && !strcmp(a->format, "latex") ? QD_FMT_LATEX : QD_FMT_TEXT;
-    if (qd_phase_bracket_print(ctx, ph, F, G, r, fmt, json, &b) != QD_OK) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(ctx);
-    }
-    return cli_emit(&b, "bracket");
+    return cli_emit_status(ctx, qd_phase_bracket_print(ctx, ph, F, G, r,
+                                                       cli_format_or_text(a->format),
+                                                       cli_json(a->format), &b),
+                           &b, "bracket");
 }
 
+static void run_free(cli_run *c) { qd_phase_free(&((br_run *)c)->ph); }
+
 int cli_cmd_bracket(int argc, char **argv) {
-    br_args a = {0};
-    const char *pos[3];
-    int rc = cli_parse(&spec, argc, argv, &a, pos);
-    if (rc == QD_EXIT_OK && (a.dt ? pos[2] != NULL : pos[2] == NULL)) {
-        cli_diag_error(a.dt ? "bracket --dt takes one expression F" : "bracket needs F and G");
-        cli_usage(&spec, stderr);
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc != QD_EXIT_OK)
-        return rc;
-    qd_ctx *ctx = qd_ctx_new();
-    cli_model_file mf = {0};
-    qd_phase ph = {0};
-    if (!ctx)
-        cli_diag_error("out of memory");
-    rc = ctx ? cli_load(ctx, pos[0], 0, NULL, true, &mf) : QD_EXIT_FAIL;
-    if (rc == QD_EXIT_OK && qd_phase_init(ctx, mf.model, &ph) != QD_OK)
-        rc = cli_diag_ctx(ctx);
-    if (rc == QD_EXIT_OK)
-        rc = run(ctx, &mf, &ph, &a, pos);
-    qd_phase_free(&ph);
-    cli_model_file_free(&mf);
-    qd_ctx_free(ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(br_run, a), offsetof(br_run, pos), check, run,
+                                 run_free};
+    br_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -13,13 +13,9 @@
  * this file reads the options, shows errors and maps the verdict to the
  * exit status.
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
 #include <stdlib.h>
-#include <string.h>
-#include "model_cli.h"
-#include "model_file.h"
 
 typedef struct can_args {
     const char *Q, *P, *gen, *format;
@@ -27,7 +23,6 @@ typedef struct can_args {
     cli_list set;
 } can_args;
 
-static const char *const formats[] = {"text", "json", NULL};
 static const char *const gen_types[] = {"F1", "F2", "F3", "F4", NULL};
 
 static const cli_opt opts[] = {
@@ -43,7 +38,7 @@ static const cli_opt opts[] = {
      "the map of the generating function EXPR (the argument after FILE) of this type",
      gen_types, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(can_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {"--set", NULL, CLI_LIST, offsetof(can_args, set), "NAME=VALUE",
      "read the model with this parameter value", NULL, NULL},
     {0},
@@ -57,8 +52,9 @@ static const cli_spec spec = {
 };
 
 typedef struct can_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
+    can_args a;
+    const char *pos[2]; /* FILE and the generator's EXPR */
     qd_phase ph;
     const qd_expr **Q, **P; /* --Q and --P */
     qd_canon_report rep;
@@ -74,11 +70,9 @@ static int emit(qd_status st, qd_buf *b) {
 /* --Q or --P: one expression per coordinate; the error shown in the list. */
 static int read_list(can_run *r, const char *what, const char *text, const qd_expr ***out) {
     qd_diag err;
-    if (!(*out = calloc(r->ph.n + 1, sizeof **out))) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    if (qd_phase_read_list(r->ctx, &r->ph, text, *out, &err) == QD_OK)
+    if (!(*out = calloc(r->ph.n + 1, sizeof **out)))
+        return cli_out_of_memory();
+    if (qd_phase_read_list(r->c.ctx, &r->ph, text, *out, &err) == QD_OK)
         return QD_EXIT_OK;
     cli_diag_read(what, text, &err);
     return cli_exit(err.status);
@@ -86,22 +80,22 @@ static int read_list(can_run *r, const char *what, const char *text, const qd_ex
 
 /* An error after the model was read: at its statement when it is about one. */
 static int failure(const can_run *r) {
-    return cli_diag_model(r->ctx, r->mf.path, r->mf.text, r->mf.model);
+    return cli_diag_model(r->c.ctx, r->c.mf.path, r->c.mf.text, r->c.mf.model);
 }
 
 /* The verdict and the extras asked; the exit status carries the answer: 0
  * canonical, 3 a certified no (scaled or a failing bracket), 1 undecided. */
-static int check(can_run *r, const can_args *a) {
+static int examine(can_run *r, const can_args *a) {
     int rc = read_list(r, "--Q", a->Q, &r->Q);
     if (rc == QD_EXIT_OK)
         rc = read_list(r, "--P", a->P, &r->P);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (qd_canonical_examine(r->ctx, &r->ph, r->Q, r->P, a->lagrange, a->newham, &r->rep) !=
+    if (qd_canonical_examine(r->c.ctx, &r->ph, r->Q, r->P, a->lagrange, a->newham, &r->rep) !=
         QD_OK)
         return failure(r);
     qd_buf b = QD_BUF_INIT;
-    rc = emit(qd_canon_report_print(r->ctx, &r->ph, &r->rep, r->json, &b), &b);
+    rc = emit(qd_canon_report_print(r->c.ctx, &r->ph, &r->rep, r->json, &b), &b);
     qd_canon_kind k = r->rep.v.kind;
     return rc != QD_EXIT_OK          ? rc
            : k == QD_CANON_YES       ? QD_EXIT_OK
@@ -110,7 +104,7 @@ static int check(can_run *r, const can_args *a) {
 }
 
 static int generate(can_run *r, const can_args *a, const char *text) {
-    qd_ctx *ctx = r->ctx;
+    qd_ctx *ctx = r->c.ctx;
     qd_phase *ph = &r->ph;
     qd_diag err;
     if (qd_phase_new_vars(ctx, ph) != QD_OK) /* F is a function of them too */
@@ -134,7 +128,11 @@ static int generate(can_run *r, const can_args *a, const char *text) {
 }
 
 /* The options' combinations: --Q with --P, or --generator with its EXPR. */
-static int combination(const can_args *a, const char *expr) {
+static int combination(cli_run *c) {
+    can_run *r = (can_run *)c;
+    const can_args *a = &r->a;
+    const char *expr = r->pos[1];
+    r->json = cli_json(a->format);
     const char *why = a->gen && (a->Q || a->P) ? "give either --Q and --P or --generator"
                       : a->gen && (a->lagrange || a->newham)
                           ? "--lagrange and --K go with --Q and --P"
@@ -145,33 +143,30 @@ static int combination(const can_args *a, const char *expr) {
                                          : NULL;
     if (!why)
         return QD_EXIT_OK;
-    cli_diag_error("%s (qdot canonical --help)", why);
-    return QD_EXIT_USAGE;
+    return cli_usage_error("%s (qdot canonical --help)", why);
+}
+
+static int run(cli_run *c) {
+    can_run *r = (can_run *)c;
+    int rc = cli_load(c->ctx, r->pos[0], r->a.set.n, r->a.set.items, true, &c->mf);
+    if (rc == QD_EXIT_OK && qd_phase_init(c->ctx, c->mf.model, &r->ph) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
+    if (rc == QD_EXIT_OK)
+        rc = r->a.gen ? generate(r, &r->a, r->pos[1]) : examine(r, &r->a);
+    return rc;
+}
+
+static void run_free(cli_run *c) {
+    can_run *r = (can_run *)c;
+    free(r->Q);
+    free(r->P);
+    qd_canon_report_free(&r->rep);
+    qd_phase_free(&r->ph);
 }
 
 int cli_cmd_canonical(int argc, char **argv) {
-    can_args a = {0};
-    const char *pos[2];
-    int rc = cli_parse(&spec, argc, argv, &a, pos);
-    if (rc == QD_EXIT_OK)
-        rc = combination(&a, pos[1]);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    can_run r = {.ctx = qd_ctx_new(), .json = a.format && !strcmp(a.format, "json")};
-    if (!r.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = cli_load(r.ctx, pos[0], a.set.n, a.set.items, true, &r.mf);
-    if (rc == QD_EXIT_OK && qd_phase_init(r.ctx, r.mf.model, &r.ph) != QD_OK)
-        rc = cli_diag_ctx(r.ctx);
-    if (rc == QD_EXIT_OK)
-        rc = a.gen ? generate(&r, &a, pos[1]) : check(&r, &a);
-    free(r.Q);
-    free(r.P);
-    qd_canon_report_free(&r.rep);
-    qd_phase_free(&r.ph);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(can_run, a), offsetof(can_run, pos),
+                                 combination, run, run_free};
+    can_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -11,25 +11,21 @@
  * 3), its witness shown at the statement to blame or in the JSON.  The
  * verdict and the summary are the library's (qdot/render.h).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
 #include <stdio.h>
 #include "eom_out.h"
-#include "model_file.h"
 #include "qdot/render.h"
 
 typedef struct check_args {
+    cli_run c; /* the option follows */
     const char *format;
-    const char *file;
 } check_args;
-
-static const char *const formats[] = {"text", "json", NULL};
 
 static const cli_opt check_opts[] = {
     {"--format", NULL, CLI_CHOICE, offsetof(check_args, format), "F",
      "the summary as text or as JSON (with \"ok\", and \"reason\" and \"witness\" for a no)",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {0},
 };
 
@@ -61,26 +57,20 @@ static int summarize(qd_ctx *ctx, const cli_model_file *mf, bool json, qd_buf *o
     return v.ok ? QD_EXIT_OK : QD_EXIT_NO;
 }
 
-int cli_cmd_check(int argc, char **argv) {
-    check_args a = {0};
-    int rc = cli_parse(&check_spec, argc, argv, &a, &a.file);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    bool json = a.format && a.format[0] == 'j';
+static int run(cli_run *c) {
+    bool json = cli_json(((check_args *)c)->format);
     qd_buf out = QD_BUF_INIT;
-    cli_model_file mf;
-    rc = cli_model_file_load(ctx, a.file, &mf);
+    int rc = cli_model_file_load(c->ctx, c->file, &c->mf);
     if (rc == QD_EXIT_OK)
-        rc = summarize(ctx, &mf, json, &out);
+        rc = summarize(c->ctx, &c->mf, json, &out);
     if (rc == QD_EXIT_OK || (rc == QD_EXIT_NO && json))
         fputs(qd_buf_str(&out), stdout);
     qd_buf_free(&out);
-    cli_model_file_free(&mf);
-    qd_ctx_free(ctx);
     return rc;
+}
+
+int cli_cmd_check(int argc, char **argv) {
+    static const cli_driver d = {&check_spec, 0, 0, NULL, run, NULL};
+    check_args a = {0};
+    return cli_drive(&d, &a.c, argc, argv);
 }

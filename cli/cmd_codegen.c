@@ -8,22 +8,20 @@
  * functions).
  */
 #define _POSIX_C_SOURCE 200809L /* mkdir */
-#include "cli.h"
+#include "driver.h"
 
 #include <errno.h>
-#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include "eom_out.h"
-#include "model_cli.h"
-#include "out.h"
 #include "qdot/codegen.h"
 #include "qdot/speeds.h"
 
 
 typedef struct cg_run {
-    const char *file, *dir, *prefix;
+    cli_run c; /* the options follow */
+    const char *dir, *prefix;
     cli_list sets;
     bool eliminate;
     char name[QD_CODEGEN_PREFIX_MAX + 1];
@@ -67,11 +65,9 @@ static int write_text(const char *dir, const char *name, const char *ext, const 
 
 /* A model with speeds: the first-order system in (q, u) (qd_codegen_speeds_c). */
 static int generate_speeds(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c, qd_buf *h) {
-    if (r->eliminate) {
-        cli_diag_error("--eliminate is for models without speeds: the speeds already take the "
-                       "constraints into account");
-        return QD_EXIT_USAGE;
-    }
+    if (r->eliminate)
+        return cli_usage_error("--eliminate is for models without speeds: the speeds already take "
+                               "the constraints into account");
     qd_speeds_eom *se = qd_speeds_derive(ctx, mf->model, NULL);
     if (!se)
         return cli_eom_derive_error(ctx, mf);
@@ -84,7 +80,7 @@ static int generate_speeds(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c
 
 static int generate(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_eom **e, qd_buf *c,
                     qd_buf *h) {
-    int rc = cli_load(ctx, r->file, r->sets.n, r->sets.items, false, mf);
+    int rc = cli_load(ctx, r->c.file, r->sets.n, r->sets.items, false, mf);
     if (rc != QD_EXIT_OK)
         return rc;
     if (qd_model_nspeeds(mf->model))
@@ -97,11 +93,11 @@ static int generate(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_eom **e, qd_b
     return QD_EXIT_OK;
 }
 
-static int run(qd_ctx *ctx, cg_run *r) {
-    cli_model_file mf = {0};
+static int run(cli_run *cr) {
+    cg_run *r = (cg_run *)cr;
     qd_eom *e = NULL;
     qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
-    int rc = generate(ctx, r, &mf, &e, &c, &h);
+    int rc = generate(cr->ctx, r, &cr->mf, &e, &c, &h);
     /* -o names the directory to write into: made when missing (not its parents) */
     if (rc == QD_EXIT_OK && mkdir(r->dir, 0777) != 0 && errno != EEXIST) {
         cli_diag_error("cannot create the directory %s: %s", r->dir, strerror(errno));
@@ -114,34 +110,27 @@ static int run(qd_ctx *ctx, cg_run *r) {
     qd_buf_free(&c);
     qd_buf_free(&h);
     qd_eom_free(e);
-    cli_model_file_free(&mf);
     return rc;
 }
 
-int cli_cmd_codegen(int argc, char **argv) {
-    cg_run r = {0};
-    int rc = cli_parse(&cg_spec, argc, argv, &r, &r.file);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (r.prefix && !qd_codegen_prefix_valid(r.prefix)) {
-        cli_diag_error("--prefix takes a C identifier, not '%s'", r.prefix);
-        return QD_EXIT_USAGE;
-    }
-    if (r.prefix)
-        strcpy(r.name, r.prefix);
+/* --prefix a C identifier (else the name from FILE), -o not empty. */
+static int check(cli_run *c) {
+    cg_run *r = (cg_run *)c;
+    if (r->prefix && !qd_codegen_prefix_valid(r->prefix))
+        return cli_usage_error("--prefix takes a C identifier, not '%s'", r->prefix);
+    if (r->prefix)
+        strcpy(r->name, r->prefix);
     else
-        qd_codegen_prefix_from_path(r.file, r.name, sizeof r.name);
-    if (r.dir && !r.dir[0]) {  /* "" would write to "/NAME.c" */
-        cli_diag_error("-o takes a directory, not an empty name");
-        return QD_EXIT_USAGE;
+        qd_codegen_prefix_from_path(c->file, r->name, sizeof r->name);
+    if (r->dir && !r->dir[0]) {  /* "" would write to "/NAME.c" */
+        return cli_usage_error("-o takes a directory, not an empty name");
     }
-    r.dir = r.dir ? r.dir : ".";
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(ctx, &r);
-    qd_ctx_free(ctx);
-    return rc;
+    r->dir = r->dir ? r->dir : ".";
+    return QD_EXIT_OK;
+}
+
+int cli_cmd_codegen(int argc, char **argv) {
+    static const cli_driver d = {&cg_spec, 0, 0, check, run, NULL};
+    cg_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

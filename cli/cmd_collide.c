@@ -4,13 +4,13 @@
  * elastic final states, a reaction's threshold and a two-body decay
  * (qd_collide_read/run/render, qdot/relativity.h).
  */
-#include "cli.h"
+#include "driver.h"
 
 #include <stdlib.h>
 #include "opt_diag.h"
-#include "out.h"
 
 typedef struct cl_args {
+    cli_run run; /* the options follow (c is the speed of light) */
     cli_list particle;
     const char *c, *angle, *cm_angle, *azimuth, *threshold, *decay, *format, *out;
     bool merge, elastic;
@@ -46,30 +46,32 @@ static const cli_spec spec = {
     "relativistic collisions by the conservation of four-momentum", opts, NULL, 0, 0, NULL,
     false};
 
-int cli_cmd_collide(int argc, char **argv) {
-    cl_args a = {0};
-    int rc = cli_parse(&spec, argc, argv, &a, NULL);
-    qd_ctx *ctx = rc == QD_EXIT_OK ? qd_ctx_new() : NULL;
-    qd_collide_in *in = ctx ? malloc(sizeof *in) : NULL;
+static int run(cli_run *c) {
+    const cl_args *a = (cl_args *)c;
+    qd_collide_in *in = malloc(sizeof *in);
     qd_collide_out *out = in ? malloc(sizeof *out) : NULL;
-    if (rc == QD_EXIT_OK && !out) {
+    int rc = QD_EXIT_FAIL;
+    if (!out) {
         cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
-    if (rc == QD_EXIT_OK) {
-        const qd_collide_text t = {a.c, a.particle.n, a.particle.items, a.merge, a.elastic,
-                                   a.angle, a.cm_angle, a.azimuth, a.threshold, a.decay};
+    } else {
+        const qd_collide_text t = {a->c, a->particle.n, a->particle.items, a->merge, a->elastic,
+                                   a->angle, a->cm_angle, a->azimuth, a->threshold, a->decay};
         qd_buf b = QD_BUF_INIT;
-        qd_status st = qd_collide_read(ctx, &t, in);
+        qd_status st = qd_collide_read(c->ctx, &t, in);
         if (st == QD_OK)
-            st = qd_collide_run(ctx, in, out);
+            st = qd_collide_run(c->ctx, in, out);
         if (st == QD_OK)
-            st = qd_collide_render(ctx, in, out, cli_json(a.format), &b);
-        rc = st == QD_OK ? cli_out_emit(&b, a.out) : cli_diag_opts(ctx, &spec, &a);
+            st = qd_collide_render(c->ctx, in, out, cli_json(a->format), &b);
+        rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(c->ctx, &spec, a);
         qd_buf_free(&b);
     }
     free(out);
     free(in);
-    qd_ctx_free(ctx);
     return rc;
+}
+
+int cli_cmd_collide(int argc, char **argv) {
+    static const cli_driver d = {&spec, 0, 0, NULL, run, NULL};
+    cl_args a = {0};
+    return cli_drive(&d, &a.run, argc, argv);
 }

@@ -16,12 +16,10 @@
  * (qd_speeds_eval).  The derivation and the renderings are the library's
  * (qdot/render.h); the options and the state read are here.
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
 #include <string.h>
 #include "eom_out.h"
-#include "model_cli.h"
 #include "qdot/render.h"
 
 /* Symbolic accelerations larger than this (count_ops, per entry) are not
@@ -34,14 +32,14 @@ typedef struct eom_args {
     bool appell, multipliers, hamel_coef; /* speeds only */
     cli_list sets;
     /* from the above */
-    const char *file;
+    bool field; /* FILE declares a field */
     qd_render_format fmt;
     qd_speeds_method smethod;
 } eom_args;
 
 typedef struct eom_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
+    eom_args a;
     qd_eom *e;
     cli_state st;
 } eom_run;
@@ -76,14 +74,19 @@ static const cli_spec eom_spec = {
     eom_opts, NULL, 1, 1, "FILE", false,
 };
 
-static int parse_args(int argc, char **argv, eom_args *a) {
-    *a = (eom_args){.fmt = QD_RENDER_TEXT};
-    int rc = cli_parse(&eom_spec, argc, argv, a, &a->file);
-    if (rc == QD_EXIT_OK && a->format && !qd_render_format_parse(a->format, &a->fmt))
-        rc = QD_EXIT_FAIL; /* the table's choices are the library's names */
-    if (rc == QD_EXIT_OK && a->method && !qd_speeds_method_from_name(a->method, &a->smethod))
-        rc = QD_EXIT_FAIL;
-    return rc;
+/* The names into the library's enums, and the options a field model takes. */
+static int check(cli_run *c) {
+    eom_args *a = &((eom_run *)c)->a;
+    a->fmt = QD_RENDER_TEXT;
+    if (a->format && !qd_render_format_parse(a->format, &a->fmt))
+        return QD_EXIT_FAIL; /* the table's choices are the library's names */
+    if (a->method && !qd_speeds_method_from_name(a->method, &a->smethod))
+        return QD_EXIT_FAIL;
+    if ((a->field = cli_model_file_is_field(c->file)) &&
+        (a->solve || a->eliminate || a->appell || a->multipliers || a->hamel_coef || a->method ||
+         a->at || (a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON)))
+        return cli_usage_error("a field model takes --set and --format text|json only");
+    return QD_EXIT_OK;
 }
 
 /* --solve: q'' (or u') symbolically; M and f stay when too large. */
@@ -93,13 +96,13 @@ static int solved(eom_run *r, qd_status st, const char *what) {
     if (st == QD_ERR_TOOBIG) {
         fprintf(stderr, "qdot: note: the solved %s exceed %d operations; "
                         "printing M and f instead (use --at for numbers)\n", what, SOLVE_MAX_OPS);
-        qd_ctx_clear_error(r->ctx);
+        qd_ctx_clear_error(r->c.ctx);
         return QD_EXIT_OK;
     }
     if (st == QD_ERR_NOMEM)
-        return cli_diag_ctx(r->ctx);
+        return cli_diag_ctx(r->c.ctx);
     cli_diag_error("cannot solve for the %s: %s", !strcmp(what, "rates") ? "speeds' rates"
-                   : what, qd_ctx_message(r->ctx));
+                   : what, qd_ctx_message(r->c.ctx));
     return QD_EXIT_FAIL;
 }
 
@@ -112,11 +115,11 @@ static int emit(eom_run *r, qd_status st, qd_buf *b, qd_buf *notes) {
         fputs(qd_buf_str(b), stdout);
     qd_buf_free(b);
     qd_buf_free(notes);
-    return st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->ctx);
+    return st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->c.ctx);
 }
 
 static qd_render_opts render_opts(eom_run *r, const eom_args *a, qd_buf *notes) {
-    return (qd_render_opts){.source = r->mf.path, .nstate = a->at ? r->st.n : 0,
+    return (qd_render_opts){.source = r->c.mf.path, .nstate = a->at ? r->st.n : 0,
                             .syms = r->st.syms, .vals = r->st.vals,
                             .multipliers = a->multipliers, .notes = notes};
 }
@@ -138,62 +141,59 @@ static int run_coords(eom_run *r, const eom_args *a) {
     if (opt) {
         cli_diag_error("%s is for a model with generalized speeds, and %s declares no speeds "
                        "(a `speeds` statement; without one, --solve gives the multipliers)",
-                       opt, a->file);
+                       opt, r->c.file);
         return QD_EXIT_USAGE;
     }
     qd_eom_opts opts = {.eliminate = a->eliminate};
-    if (!(r->e = qd_eom_derive_opts(r->ctx, r->mf.model, &opts)))
-        return cli_eom_derive_error(r->ctx, &r->mf);
+    if (!(r->e = qd_eom_derive_opts(r->c.ctx, r->c.mf.model, &opts)))
+        return cli_eom_derive_error(r->c.ctx, &r->c.mf);
     int rc = QD_EXIT_OK;
-    if (a->at && (rc = cli_state_init(r->ctx, r->mf.model, &r->st)) == QD_EXIT_OK)
-        rc = cli_state_parse(r->ctx, r->mf.model, a->at, &r->st);
+    if (a->at && (rc = cli_state_init(r->c.ctx, r->c.mf.model, &r->st)) == QD_EXIT_OK)
+        rc = cli_state_parse(r->c.ctx, r->c.mf.model, a->at, &r->st);
     else if (a->solve)
-        rc = solved(r, qd_eom_solve(r->ctx, r->e, SOLVE_MAX_OPS), "accelerations");
+        rc = solved(r, qd_eom_solve(r->c.ctx, r->e, SOLVE_MAX_OPS), "accelerations");
     if (rc != QD_EXIT_OK)
         return rc;
     qd_buf b = QD_BUF_INIT, notes = QD_BUF_INIT;
     qd_render_opts o = render_opts(r, a, &notes);
-    return emit(r, qd_render_eom(r->ctx, r->mf.model, r->e, &o, a->fmt, &b), &b, &notes);
+    return emit(r, qd_render_eom(r->c.ctx, r->c.mf.model, r->e, &o, a->fmt, &b), &b, &notes);
 }
 
 /* The --at state of a model with speeds: q, t, the parameters and the
  * speeds (qd_speeds_state_read; the velocities follow from the speeds). */
 static int speeds_state(eom_run *r, const qd_speeds_eom *e, const char *at) {
-    if (qd_speeds_state_read(r->ctx, r->mf.model, e, at, &r->st) == QD_OK)
+    if (qd_speeds_state_read(r->c.ctx, r->c.mf.model, e, at, &r->st) == QD_OK)
         return QD_EXIT_OK;
-    return cli_state_diag(r->ctx, "--at", at);
+    return cli_state_diag(r->c.ctx, "--at", at);
 }
 
 /* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
 static int run_speeds(eom_run *r, const eom_args *a) {
     const char *opt = coords_option(a);
-    if (opt) {
-        cli_diag_error("%s is not available for a model with generalized speeds (%s declares "
-                       "them): qdot eom prints M u' = f in the speeds", opt, a->file);
-        return QD_EXIT_USAGE;
-    }
-    if (a->at && a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON) {
-        cli_diag_error("--at with speeds prints text or json");
-        return QD_EXIT_USAGE;
-    }
+    if (opt)
+        return cli_usage_error("%s is not available for a model with generalized speeds (%s "
+                               "declares them): qdot eom prints M u' = f in the speeds",
+                               opt, r->c.file);
+    if (a->at && a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON)
+        return cli_usage_error("--at with speeds prints text or json");
     qd_speeds_opts opts = {.method = a->smethod, .appell = a->appell,
                            .multipliers = a->multipliers};
-    qd_speeds_eom *e = qd_speeds_derive(r->ctx, r->mf.model, &opts);
+    qd_speeds_eom *e = qd_speeds_derive(r->c.ctx, r->c.mf.model, &opts);
     if (!e)
-        return cli_eom_derive_error(r->ctx, &r->mf);
+        return cli_eom_derive_error(r->c.ctx, &r->c.mf);
     qd_buf b = QD_BUF_INIT, notes = QD_BUF_INIT;
     int rc = QD_EXIT_OK;
     qd_status st = QD_OK;
     if (a->hamel_coef)
-        st = qd_render_hamel(r->ctx, e, a->fmt == QD_RENDER_JSON ? QD_RENDER_JSON : QD_RENDER_TEXT,
-                             &b);
+        st = qd_render_hamel(r->c.ctx, e,
+                             a->fmt == QD_RENDER_JSON ? QD_RENDER_JSON : QD_RENDER_TEXT, &b);
     else if (a->at)
         rc = speeds_state(r, e, a->at);
     else if (a->solve)
-        rc = solved(r, qd_speeds_solve(r->ctx, e, SOLVE_MAX_OPS), "rates");
+        rc = solved(r, qd_speeds_solve(r->c.ctx, e, SOLVE_MAX_OPS), "rates");
     qd_render_opts o = render_opts(r, a, &notes);
     if (rc == QD_EXIT_OK && !a->hamel_coef)
-        st = qd_render_speeds(r->ctx, r->mf.model, e, &o, a->fmt, &b);
+        st = qd_render_speeds(r->c.ctx, r->c.mf.model, e, &o, a->fmt, &b);
     if (rc == QD_EXIT_OK)
         rc = emit(r, st, &b, &notes);
     else {
@@ -204,31 +204,26 @@ static int run_speeds(eom_run *r, const eom_args *a) {
     return rc;
 }
 
-int cli_cmd_eom(int argc, char **argv) {
-    eom_args a;
-    int rc = parse_args(argc, argv, &a);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (cli_model_file_is_field(a.file)) {
-        if (a.solve || a.eliminate || a.appell || a.multipliers || a.hamel_coef || a.method || a.at ||
-            (a.fmt != QD_RENDER_TEXT && a.fmt != QD_RENDER_JSON)) {
-            cli_diag_error("a field model takes --set and --format text|json only");
-            return QD_EXIT_USAGE;
-        }
-        return cli_field_eom(a.file, a.sets.n, a.sets.items, a.fmt == QD_RENDER_JSON);
-    }
-    eom_run r = {.ctx = qd_ctx_new()};
-    if (!r.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = cli_load(r.ctx, a.file, a.sets.n, a.sets.items, true, &r.mf);
+static int run(cli_run *c) {
+    eom_run *r = (eom_run *)c;
+    const eom_args *a = &r->a;
+    if (a->field)
+        return cli_field_eom(c->ctx, &c->mf, c->file, a->sets.n, a->sets.items,
+                             a->fmt == QD_RENDER_JSON);
+    int rc = cli_load(c->ctx, c->file, a->sets.n, a->sets.items, true, &c->mf);
     if (rc == QD_EXIT_OK)
-        rc = qd_model_nspeeds(r.mf.model) ? run_speeds(&r, &a) : run_coords(&r, &a);
-    cli_state_free(&r.st);
-    if (r.e)
-        qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
+        rc = qd_model_nspeeds(c->mf.model) ? run_speeds(r, a) : run_coords(r, a);
     return rc;
+}
+
+static void run_free(cli_run *c) {
+    eom_run *r = (eom_run *)c;
+    cli_state_free(&r->st);
+    qd_eom_free(r->e);
+}
+
+int cli_cmd_eom(int argc, char **argv) {
+    static const cli_driver d = {&eom_spec, offsetof(eom_run, a), 0, check, run, run_free};
+    eom_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

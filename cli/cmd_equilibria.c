@@ -8,10 +8,7 @@
  */
 #include "linear_cli.h"
 
-#include <stddef.h>
-#include <string.h>
 #include "qdot/equilibria.h"
-#include "model_cli.h"
 
 /* ---- the command ------------------------------------------------------------ */
 
@@ -20,8 +17,6 @@ typedef struct eq_args {
     cli_list sets;
 } eq_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--near", NULL, CLI_TEXT, offsetof(eq_args, near), "\"q1=VALUE, ...\"",
      "Newton from this point (only the equilibrium reached)", NULL, NULL},
@@ -29,8 +24,8 @@ static const cli_opt opts[] = {
      "search this box (default: [-pi, pi] for an angle, else [-10, 10])", NULL, NULL},
     {"--set", NULL, CLI_LIST, offsetof(eq_args, sets), "NAME=VALUE", "a parameter's value", NULL,
      NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(eq_args, format), "NAME", "text or json", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(eq_args, format), "NAME", "text or json",
+     cli_formats_text_json, NULL},
     {0},
 };
 
@@ -39,39 +34,40 @@ static const cli_spec spec = {
     "the configurations of rest and their kind (the Hessian of the potential)", opts, NULL, 1, 1,
     "FILE", false};
 
-int cli_cmd_equilibria(int argc, char **argv) {
-    eq_args a = {0};
-    const char *file = NULL;
-    int rc = cli_parse(&spec, argc, argv, &a, &file);
+typedef struct eq_run {
+    cli_lin_run lr; /* first: the run state starts with its cli_run */
+    eq_args a;
+    qd_equilibria eq;
+} eq_run;
+
+static int run(cli_run *c) {
+    eq_run *r = (eq_run *)c;
+    const eq_args *a = &r->a;
+    bool json = cli_json(a->format);
+    int rc = cli_lin_load_model(&r->lr, c->file, a->sets.items, a->sets.n);
+    if (rc == QD_EXIT_OK && qd_model_nspeeds(c->mf.model) > 0)
+        return cli_speeds_equilibria(c->ctx, &c->mf, json, a->near ? "--near"
+                                                           : a->box ? "--box"
+                                                                    : NULL);
+    if (rc == QD_EXIT_OK)
+        rc = cli_lin_derive(&r->lr);
+    if (rc == QD_EXIT_OK)
+        rc = cli_lin_equilibria(&r->lr, a->near, a->box, &r->eq);
     if (rc != QD_EXIT_OK)
         return rc;
-    bool json = a.format && !strcmp(a.format, "json");
-    cli_lin_run r = {.ctx = qd_ctx_new()};
-    if (!r.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    qd_equilibria eq = {0};
-    rc = cli_lin_load_model(&r, file, a.sets.items, a.sets.n);
-    bool speeds = rc == QD_EXIT_OK && qd_model_nspeeds(r.mf.model) > 0;
-    if (speeds)
-        rc = cli_speeds_equilibria(r.ctx, &r.mf, json, a.near ? "--near" : a.box ? "--box"
-                                                                                  : NULL);
-    else if (rc == QD_EXIT_OK)
-        rc = cli_lin_derive(&r);
-    if (rc == QD_EXIT_OK && !speeds)
-        rc = cli_lin_equilibria(&r, a.near, a.box, &eq);
-    if (rc == QD_EXIT_OK && !speeds) {
-        qd_buf b = QD_BUF_INIT;
-        if (qd_equilibria_print(r.ctx, r.e, &eq, json, &b) == QD_OK)
-            rc = cli_emit(&b, "equilibria");
-        else {
-            qd_buf_free(&b);
-            rc = cli_diag_ctx(r.ctx);
-        }
-    }
-    qd_equilibria_free(&eq);
-    cli_lin_free(&r);
-    qd_ctx_free(r.ctx);
-    return rc;
+    qd_buf b = QD_BUF_INIT;
+    return cli_emit_status(c->ctx, qd_equilibria_print(c->ctx, r->lr.e, &r->eq, json, &b), &b,
+                           "equilibria");
+}
+
+static void run_free(cli_run *c) {
+    eq_run *r = (eq_run *)c;
+    qd_equilibria_free(&r->eq);
+    cli_lin_free(&r->lr);
+}
+
+int cli_cmd_equilibria(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(eq_run, a), 0, NULL, run, run_free};
+    eq_run r = {0};
+    return cli_drive(&d, &r.lr.c, argc, argv);
 }

@@ -5,16 +5,19 @@
  * applies one libqdot operation and prints the result; the variables of
  * diff are read by qd_read_variable (qdot/read.h).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
 #include <string.h>
 
 #define MAX_VARS 16
 
+typedef const qd_expr *(*unary_op)(qd_ctx *, const qd_expr *);
+
 typedef struct expr_args {
+    cli_run c; /* the options follow */
     const char *format;
     const char *pos[1 + MAX_VARS]; /* EXPR, then the VARs of diff */
+    unary_op op;                   /* applied after diff; may be NULL */
 } expr_args;
 
 static const char *const formats[] = {"text", "latex", "c", "sympy", NULL};
@@ -48,51 +51,42 @@ static int emit(qd_ctx *ctx, const qd_expr *e, qd_format fmt) {
     return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
-typedef const qd_expr *(*unary_op)(qd_ctx *, const qd_expr *);
-
-static int run(int argc, char **argv, const cli_spec *spec, unary_op op) {
-    expr_args a = {0};
-    int rc = cli_parse(spec, argc, argv, &a, a.pos);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    qd_format fmt = QD_FMT_TEXT;
-    if (a.format)
-        cli_format(a.format, &fmt);
-    const char *text = a.pos[0];
+static int run(cli_run *c) {
+    const expr_args *a = (expr_args *)c;
+    qd_ctx *ctx = c->ctx;
+    qd_format fmt = cli_format_or_text(a->format);
+    const char *text = a->pos[0];
     size_t nvars = 0;
-    while (nvars < MAX_VARS && a.pos[1 + nvars])
+    while (nvars < MAX_VARS && a->pos[1 + nvars])
         nvars++;
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
     qd_diag err;
     const qd_expr *e = qd_read(ctx, text, NULL, &err);
     if (!e) {
         cli_diag_read("<expression>", text, &err);
-        qd_ctx_free(ctx);
         return QD_EXIT_USAGE;
     }
     const qd_expr *e0 = e;
     for (size_t i = 0; i < nvars && e; i++) {
         /* a name or a rate: r, r', theta'' (one of the expression's symbols) */
-        const qd_expr *v = qd_read_variable(ctx, a.pos[1 + i], e0, &err);
+        const qd_expr *v = qd_read_variable(ctx, a->pos[1 + i], e0, &err);
         if (!v) {
-            cli_diag_read("<variable>", a.pos[1 + i], &err);
-            qd_ctx_free(ctx);
+            cli_diag_read("<variable>", a->pos[1 + i], &err);
             return cli_exit(err.status);
         }
         e = qd_diff(ctx, e, v);
     }
-    if (op)
-        e = op(ctx, e);
-    rc = emit(ctx, e, fmt);
-    qd_ctx_free(ctx);
-    return rc;
+    if (a->op)
+        e = a->op(ctx, e);
+    return emit(ctx, e, fmt);
 }
 
-int cli_cmd_diff(int argc, char **argv) { return run(argc, argv, &specs[0], NULL); }
-int cli_cmd_expand(int argc, char **argv) { return run(argc, argv, &specs[1], qd_expand); }
-int cli_cmd_simplify(int argc, char **argv) { return run(argc, argv, &specs[2], qd_simplify); }
-int cli_cmd_print(int argc, char **argv) { return run(argc, argv, &specs[3], NULL); }
+static int drive(int argc, char **argv, const cli_spec *spec, unary_op op) {
+    const cli_driver d = {spec, 0, offsetof(expr_args, pos), NULL, run, NULL};
+    expr_args a = {.op = op};
+    return cli_drive(&d, &a.c, argc, argv);
+}
+
+int cli_cmd_diff(int argc, char **argv) { return drive(argc, argv, &specs[0], NULL); }
+int cli_cmd_expand(int argc, char **argv) { return drive(argc, argv, &specs[1], qd_expand); }
+int cli_cmd_simplify(int argc, char **argv) { return drive(argc, argv, &specs[2], qd_simplify); }
+int cli_cmd_print(int argc, char **argv) { return drive(argc, argv, &specs[3], NULL); }

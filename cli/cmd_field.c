@@ -19,25 +19,18 @@ static int emit(qd_ctx *ctx, qd_status st, qd_buf *b, const char *what) {
     return cli_emit(b, what);
 }
 
-int cli_field_eom(const char *file, size_t nsets, const char *const *sets, bool json) {
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    cli_model_file mf;
-    int rc = cli_load_field(ctx, file, nsets, sets, &mf);
-    const qd_expr *e = rc == QD_EXIT_OK ? qd_field_equation(ctx, mf.field) : NULL;
+int cli_field_eom(qd_ctx *ctx, cli_model_file *mf, const char *file, size_t nsets,
+                  const char *const *sets, bool json) {
+    int rc = cli_load_field(ctx, file, nsets, sets, mf);
+    const qd_expr *e = rc == QD_EXIT_OK ? qd_field_equation(ctx, mf->field) : NULL;
     if (rc == QD_EXIT_OK && !e)
         rc = cli_diag_ctx(ctx);
     if (e) {
         qd_buf b = QD_BUF_INIT;
-        rc = emit(ctx, json ? qd_field_equation_json(ctx, mf.field, e, &b)
-                       : qd_field_equation_print(ctx, mf.field, e, &b),
+        rc = emit(ctx, json ? qd_field_equation_json(ctx, mf->field, e, &b)
+                       : qd_field_equation_print(ctx, mf->field, e, &b),
                   &b, "field equation");
     }
-    cli_model_file_free(&mf);
-    qd_ctx_free(ctx);
     return rc;
 }
 
@@ -55,23 +48,17 @@ static int density_error(qd_ctx *ctx, const cli_model_file *mf) {
     return QD_EXIT_USAGE;
 }
 
-int cli_field_modes(const char *file, size_t nsets, const char *const *sets, size_t count,
-                    double tol, bool json) {
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    cli_model_file mf;
+int cli_field_modes(qd_ctx *ctx, cli_model_file *mf, const char *file, size_t nsets,
+                    const char *const *sets, size_t count, double tol, bool json) {
     qd_field_modes r = {0};
-    int rc = cli_load_field(ctx, file, nsets, sets, &mf);
+    int rc = cli_load_field(ctx, file, nsets, sets, mf);
     qd_field_modes_opts o = {.count = count, .tol = tol};
-    if (rc == QD_EXIT_OK && qd_field_modes_compute(ctx, mf.field, &o, &r) != QD_OK)
-        rc = density_error(ctx, &mf);
+    if (rc == QD_EXIT_OK && qd_field_modes_compute(ctx, mf->field, &o, &r) != QD_OK)
+        rc = density_error(ctx, mf);
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        rc = emit(ctx, json ? qd_field_modes_json(ctx, mf.field, &r, &b)
-                       : qd_field_modes_print(ctx, mf.field, &r, &b),
+        rc = emit(ctx, json ? qd_field_modes_json(ctx, mf->field, &r, &b)
+                       : qd_field_modes_print(ctx, mf->field, &r, &b),
                   &b, "modes");
         if (rc == QD_EXIT_OK && !r.converged) {
             cli_diag_error("the modes did not converge to --tol on %zu elements: the estimates "
@@ -80,7 +67,5 @@ int cli_field_modes(const char *file, size_t nsets, const char *const *sets, siz
         }
     }
     qd_field_modes_free(&r);
-    cli_model_file_free(&mf);
-    qd_ctx_free(ctx);
     return rc;
 }

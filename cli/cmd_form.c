@@ -4,25 +4,21 @@
  * (qd_qform_reduce; Desloge App. 24-27), printed by qd_render_qform; the
  * variables read by qd_qform_vars_read (qdot/form.h).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
-#include <stdlib.h>
-#include <string.h>
 #include "qdot/form.h"
 #include "qdot/render.h"
 
 typedef struct form_args {
+    cli_run c; /* the options follow */
     const char *format, *vars, *text;
 } form_args;
-
-static const char *const formats[] = {"text", "json", NULL};
 
 static const cli_opt form_opts[] = {
     {"--vars", NULL, CLI_TEXT, offsetof(form_args, vars), "\"x, y, ...\"",
      "the variables of the form (required)", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(form_args, format), "F", "the output format",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {0},
 };
 
@@ -32,42 +28,42 @@ static const cli_spec form_spec = {
     form_opts, NULL, 1, 1, "EXPR", true,
 };
 
-int cli_cmd_form(int argc, char **argv) {
-    form_args a = {0};
-    int rc = cli_parse(&form_spec, argc, argv, &a, &a.text);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (!a.vars) {
-        cli_diag_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
-        return QD_EXIT_USAGE;
-    }
-    bool json = a.format && !strcmp(a.format, "json");
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+static int check(cli_run *c) {
+    if (((form_args *)c)->vars)
+        return QD_EXIT_OK;
+    return cli_usage_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
+}
+
+static int run(cli_run *c) {
+    const form_args *a = (form_args *)c;
+    qd_ctx *ctx = c->ctx;
     qd_diag err;
-    const qd_expr *phi = qd_read(ctx, a.text, NULL, &err), *x[64];
+    const qd_expr *phi = qd_read(ctx, a->text, NULL, &err), *x[64];
     size_t n = 0;
     qd_qform *f = NULL;
+    int rc = QD_EXIT_OK;
     if (!phi) {
-        cli_diag_read("<form>", a.text, &err);
+        cli_diag_read("<form>", a->text, &err);
         rc = QD_EXIT_USAGE;
-    } else if (qd_qform_vars_read(ctx, a.vars, x, 64, &n) != QD_OK) {
-        cli_diag_show("--vars", a.vars, qd_ctx_diag(ctx));
+    } else if (qd_qform_vars_read(ctx, a->vars, x, 64, &n) != QD_OK) {
+        cli_diag_show("--vars", a->vars, qd_ctx_diag(ctx));
         rc = cli_exit(qd_ctx_status(ctx));
     } else if (!(f = qd_qform_reduce(ctx, phi, n, x))) {
         rc = cli_diag_ctx(ctx);
     }
     if (f) {
         qd_buf b = QD_BUF_INIT;
-        if (qd_render_qform(ctx, phi, f, json ? QD_RENDER_JSON : QD_RENDER_TEXT, &b) == QD_OK)
+        if (qd_render_qform(ctx, phi, f, cli_render_format(a->format), &b) == QD_OK)
             fputs(qd_buf_str(&b), stdout);
         rc = qd_ctx_status(ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(ctx);
         qd_buf_free(&b);
     }
     qd_qform_free(f);
-    qd_ctx_free(ctx);
     return rc;
+}
+
+int cli_cmd_form(int argc, char **argv) {
+    static const cli_driver d = {&form_spec, 0, offsetof(form_args, text), check, run, NULL};
+    form_args a = {0};
+    return cli_drive(&d, &a.c, argc, argv);
 }

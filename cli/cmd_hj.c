@@ -5,14 +5,9 @@
  * --solve adds the motion from dW/dalpha = beta where the quadratures close.
  * A system that does not separate is an answer, not an error (exit 0).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
-#include <stdlib.h>
-#include <string.h>
 #include "eom_out.h"
-#include "model_cli.h"
-#include "model_file.h"
 
 typedef struct hj_args {
     const char *format, *energy;
@@ -41,54 +36,37 @@ static const cli_spec spec = {
 };
 
 typedef struct hj_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
     qd_hj *h;
     hj_args a;
-    const char *file;
 } hj_run;
 
 static int emit(hj_run *r) {
-    const char *f = r->a.format ? r->a.format : "text";
     qd_buf b = QD_BUF_INIT;
-    qd_status st = !strcmp(f, "json")
-                       ? qd_hj_json(r->ctx, r->h, r->mf.path, &b)
-                       : qd_hj_print(r->ctx, r->h, r->mf.model, r->mf.path,
-                                     !strcmp(f, "latex")   ? QD_FMT_LATEX
-                                     : !strcmp(f, "sympy") ? QD_FMT_SYMPY
-                                                           : QD_FMT_TEXT,
-                                     &b);
-    if (st != QD_OK) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(r->ctx);
-    }
-    return cli_emit(&b, "Hamilton-Jacobi equation");
+    qd_status st = cli_json(r->a.format)
+                       ? qd_hj_json(r->c.ctx, r->h, r->c.mf.path, &b)
+                       : qd_hj_print(r->c.ctx, r->h, r->c.mf.model, r->c.mf.path,
+                                     cli_format_or_text(r->a.format), &b);
+    return cli_emit_status(r->c.ctx, st, &b, "Hamilton-Jacobi equation");
 }
 
-static int run(hj_run *r) {
-    int rc = cli_load(r->ctx, r->file, r->a.set.n, r->a.set.items, true, &r->mf);
+static int run(cli_run *c) {
+    hj_run *r = (hj_run *)c;
+    int rc = cli_load(c->ctx, c->file, r->a.set.n, r->a.set.items, true, &c->mf);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_hj_opts ho = {.energy_name = r->a.energy};
-    if (!(r->h = qd_hj_derive(r->ctx, r->mf.model, &ho)))
-        return cli_eom_derive_error(r->ctx, &r->mf);
-    if (r->a.solve && r->h->separable && qd_hj_solve(r->ctx, r->h) != QD_OK)
-        return cli_diag_ctx(r->ctx);
+    if (!(r->h = qd_hj_derive(c->ctx, c->mf.model, &ho)))
+        return cli_eom_derive_error(c->ctx, &c->mf);
+    if (r->a.solve && r->h->separable && qd_hj_solve(c->ctx, r->h) != QD_OK)
+        return cli_diag_ctx(c->ctx);
     return emit(r);
 }
 
+static void run_free(cli_run *c) { qd_hj_free(((hj_run *)c)->h); }
+
 int cli_cmd_hj(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(hj_run, a), 0, NULL, run, run_free};
     hj_run r = {0};
-    int rc = cli_parse(&spec, argc, argv, &r.a, &r.file);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (!(r.ctx = qd_ctx_new())) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(&r);
-    qd_hj_free(r.h);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -12,26 +12,24 @@
  * parameters (al = pi/6 stays pi/6, so sin(al) is 1/2 in the closed forms),
  * overridden by --at; a coordinate or velocity named in neither is 0.
  */
-#include "cli.h"
+#include "driver.h"
 
 #include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
-#include "model_file.h"
 #include "state.h"
 #include "qdot/impulse.h"
 #include "qdot/render.h"
 
 typedef struct imp_args {
-    const char *file, *at, *format;
+    const char *at, *format;
     cli_list sets, pres;
 } imp_args;
 
 typedef struct imp_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
+    imp_args a;
     size_t n;
     const qd_expr **q0, **qd0;   /* the state before, exact: n each */
     const qd_expr *t0;
@@ -90,14 +88,12 @@ static int add_prescription(imp_run *r, const char *text, size_t start, size_t l
     qd_diag d;
     memset(&d, 0, sizeof d);
     qd_status st = stmt.failed ? QD_ERR_NOMEM
-                               : qd_model_add_statement(r->mf.model, qd_buf_str(&stmt), &d);
+                               : qd_model_add_statement(r->c.mf.model, qd_buf_str(&stmt), &d);
     qd_buf_free(&stmt);
     if (st == QD_OK)
         return QD_EXIT_OK;
-    if (st == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (st == QD_ERR_NOMEM)
+        return cli_out_of_memory();
     show_in_option(d, "--prescribe", text, base, start, len);
     return QD_EXIT_USAGE;
 }
@@ -105,16 +101,12 @@ static int add_prescription(imp_run *r, const char *text, size_t start, size_t l
 static int add_prescriptions(imp_run *r, const imp_args *a) {
     for (size_t k = 0; k < a->pres.n; k++) {
         const char *text = a->pres.items[k];
-        if (strchr(text, '\n') || strchr(text, '#')) {
-            cli_diag_error("--prescribe takes one line of items, without comments");
-            return QD_EXIT_USAGE;
-        }
+        if (strchr(text, '\n') || strchr(text, '#'))
+            return cli_usage_error("--prescribe takes one line of items, without comments");
         for (size_t i = 0; text[i] || i == 0;) {
             size_t end = qd_state_item_end(text, i);
-            if (blank(text + i, end - i)) {
-                cli_diag_error("--prescribe: an empty item in '%s'", text);
-                return QD_EXIT_USAGE;
-            }
+            if (blank(text + i, end - i))
+                return cli_usage_error("--prescribe: an empty item in '%s'", text);
             int rc = add_prescription(r, text, i, end - i);
             if (rc != QD_EXIT_OK)
                 return rc;
@@ -131,15 +123,13 @@ static int add_prescriptions(imp_run *r, const imp_args *a) {
 /* `initial` as written, then --at, both kept exact (sin(al) is 1/2 at
  * al = pi/6); 0 for what neither names.  Parameters are the model's. */
 static int state_before(imp_run *r, const char *at) {
-    const qd_model *m = r->mf.model;
+    const qd_model *m = r->c.mf.model;
     size_t n = r->n;
     r->q0 = calloc(n + 1, sizeof *r->q0);
     r->qd0 = calloc(n + 1, sizeof *r->qd0);
-    const qd_expr *zero = qd_int(r->ctx, 0);
-    if (!r->q0 || !r->qd0 || !zero) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    const qd_expr *zero = qd_int(r->c.ctx, 0);
+    if (!r->q0 || !r->qd0 || !zero)
+        return cli_out_of_memory();
     for (size_t j = 0; j < n; j++) {
         const qd_expr *q = qd_model_initial_definition(m, j, 0);
         const qd_expr *v = qd_model_initial_definition(m, j, 1);
@@ -149,15 +139,13 @@ static int state_before(imp_run *r, const char *at) {
     if (!at)
         return QD_EXIT_OK;
     cli_state st = {0};
-    int rc = cli_state_init(r->ctx, m, &st);
+    int rc = cli_state_init(r->c.ctx, m, &st);
     const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
-    if (rc == QD_EXIT_OK && !exact) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !exact)
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {.refuse = QD_STATE_PARAMS, .exact = exact};
     if (rc == QD_EXIT_OK)
-        rc = cli_state_read(r->ctx, m, "--at", at, &st, &o);
+        rc = cli_state_read(r->c.ctx, m, "--at", at, &st, &o);
     for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
         if (exact[qd_slot_coord(n, j)])
             r->q0[j] = exact[qd_slot_coord(n, j)];
@@ -175,19 +163,19 @@ static int state_before(imp_run *r, const char *at) {
 
 /* The solver's error, at the statement it is about when it names one. */
 static int solve_failed(imp_run *r) {
-    qd_diag d = *qd_ctx_diag(r->ctx);
+    qd_diag d = *qd_ctx_diag(r->c.ctx);
     bool about = d.subject != QD_SUBJECT_NONE && d.subject != QD_SUBJECT_TEXT;
-    if (about && qd_model_locate(r->mf.model, &d))
-        cli_diag_show(r->mf.path, r->mf.text, &d);
+    if (about && qd_model_locate(r->c.mf.model, &d))
+        cli_diag_show(r->c.mf.path, r->c.mf.text, &d);
     else
         cli_diag_show("qdot", NULL, &d);
     /* dependent or inconsistent sudden constraints are a numerical failure (exit 1) */
-    return cli_exit(qd_ctx_status(r->ctx));
+    return cli_exit(qd_ctx_status(r->c.ctx));
 }
 
 static int solve(imp_run *r) {
     qd_impulse_opts o = {.q = r->q0, .qd = r->qd0, .t = r->t0, .exact = true, .max_ops = 0};
-    if (qd_impulse_solve(r->ctx, r->mf.model, &o, &r->res) != QD_OK)
+    if (qd_impulse_solve(r->c.ctx, r->c.mf.model, &o, &r->res) != QD_OK)
         return solve_failed(r);
     return QD_EXIT_OK;
 }
@@ -196,46 +184,38 @@ static int solve(imp_run *r) {
 
 static int emit(imp_run *r, qd_render_format fmt) {
     qd_buf b = QD_BUF_INIT;
-    if (qd_render_impulse(r->ctx, r->mf.model, &r->res, fmt, &b) == QD_ERR_NOMEM)
+    if (qd_render_impulse(r->c.ctx, r->c.mf.model, &r->res, fmt, &b) == QD_ERR_NOMEM)
         b.failed = true;
     return cli_emit(&b, "result");
 }
 
-static void run_free(imp_run *r) {
+static void run_free(cli_run *c) {
+    imp_run *r = (imp_run *)c;
     qd_impulse_free(&r->res);
     free(r->q0);
     free(r->qd0);
-    cli_model_file_free(&r->mf);
-    qd_ctx_free(r->ctx);
+}
+
+static int run(cli_run *c) {
+    imp_run *r = (imp_run *)c;
+    /* the closed forms stay in the parameters' names, as the other numeric
+     * commands print them; --set gives the values */
+    int rc = cli_load(c->ctx, c->file, r->a.sets.n, r->a.sets.items, false, &c->mf);
+    if (rc == QD_EXIT_OK) {
+        r->n = qd_model_ncoords(c->mf.model);
+        rc = add_prescriptions(r, &r->a);
+    }
+    if (rc == QD_EXIT_OK)
+        rc = state_before(r, r->a.at);
+    if (rc == QD_EXIT_OK)
+        rc = solve(r);
+    if (rc == QD_EXIT_OK)
+        rc = emit(r, cli_render_format(r->a.format));
+    return rc;
 }
 
 int cli_cmd_impulse(int argc, char **argv) {
-    imp_args a = {0};
-    const char *pos[1];
-    int rc = cli_parse(&spec, argc, argv, &a, pos);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    a.file = pos[0];
+    static const cli_driver d = {&spec, offsetof(imp_run, a), 0, NULL, run, run_free};
     imp_run r = {0};
-    if (!(r.ctx = qd_ctx_new())) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    /* the closed forms stay in the parameters' names, as the other numeric
-     * commands print them; --set gives the values */
-    rc = cli_load(r.ctx, a.file, a.sets.n, a.sets.items, false, &r.mf);
-    if (rc == QD_EXIT_OK) {
-        r.n = qd_model_ncoords(r.mf.model);
-        rc = add_prescriptions(&r, &a);
-    }
-    if (rc == QD_EXIT_OK)
-        rc = state_before(&r, a.at);
-    if (rc == QD_EXIT_OK)
-        rc = solve(&r);
-    if (rc == QD_EXIT_OK)
-        rc = emit(&r, !a.format || !strcmp(a.format, "text") ? QD_RENDER_TEXT
-                      : !strcmp(a.format, "json")           ? QD_RENDER_JSON
-                                                            : QD_RENDER_LATEX);
-    run_free(&r);
-    return rc;
+    return cli_drive(&d, &r.c, argc, argv);
 }

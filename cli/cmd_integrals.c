@@ -9,13 +9,9 @@
  * keyword: "[NAME:] x -> x + eps, y -> y" or "[NAME:] delta x = -y,
  * delta y = x", and "[NAME:] EXPR".
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
-#include <stdlib.h>
-#include <string.h>
-#include "model_cli.h"
-#include "model_file.h"
+#include <stdio.h>
 #include "qdot/integrals.h"
 
 typedef struct int_args {
@@ -24,11 +20,9 @@ typedef struct int_args {
     cli_list set, symmetry, integral;
 } int_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--format", NULL, CLI_CHOICE, offsetof(int_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {"--symmetry", NULL, CLI_LIST, offsetof(int_args, symmetry), "\"[NAME:] x -> x + eps, ...\"",
      "a symmetry to examine, as the model's `symmetry` statement takes it", NULL, NULL},
     {"--integral", NULL, CLI_LIST, offsetof(int_args, integral), "\"[NAME:] EXPR\"",
@@ -47,12 +41,10 @@ static const cli_spec spec = {
 };
 
 typedef struct int_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
     qd_eom *e;
     qd_integrals *I;
     int_args a;
-    const char *file;
     qd_integrals_given g;
 } int_run;
 
@@ -65,53 +57,46 @@ static int parse_given(int_run *r) {
     char label[32];
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.symmetry.n; k++) {
         snprintf(label, sizeof label, "S%zu", k + 1);
-        rc = cli_symmetry(&r->mf, "--symmetry", r->a.symmetry.items[k], label);
+        rc = cli_symmetry(&r->c.mf, "--symmetry", r->a.symmetry.items[k], label);
     }
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.integral.n; k++) {
         snprintf(label, sizeof label, "J%zu", k + 1);
-        rc = cli_integral(&r->mf, "--integral", r->a.integral.items[k], label);
+        rc = cli_integral(&r->c.mf, "--integral", r->a.integral.items[k], label);
     }
     return rc;
 }
 
 static int emit(int_run *r) {
     qd_buf b = QD_BUF_INIT;
-    bool json = r->a.format && !strcmp(r->a.format, "json");
-    qd_status st = json ? qd_integrals_json(r->ctx, r->I, &r->g, r->mf.path, &b)
-                        : qd_integrals_print(r->ctx, r->I, &r->g, r->mf.path, &b);
-    if (st != QD_OK) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(r->ctx);
-    }
-    return cli_emit(&b, "integrals");
+    qd_status st = cli_json(r->a.format)
+                       ? qd_integrals_json(r->c.ctx, r->I, &r->g, r->c.mf.path, &b)
+                       : qd_integrals_print(r->c.ctx, r->I, &r->g, r->c.mf.path, &b);
+    return cli_emit_status(r->c.ctx, st, &b, "integrals");
 }
 
-static int run(int_run *r) {
-    int rc = cli_load_derive(r->ctx, r->file, r->a.set.n, r->a.set.items, true, NULL, &r->mf, &r->e);
+static int run(cli_run *c) {
+    int_run *r = (int_run *)c;
+    int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, true, NULL, &c->mf,
+                             &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_given(r);
     qd_integrals_opts o = {.search = !r->a.no_search};
-    if (rc == QD_EXIT_OK && !(r->I = qd_integrals_derive(r->ctx, r->mf.model, r->e, &o)))
-        rc = cli_diag_ctx(r->ctx);
-    if (rc == QD_EXIT_OK && qd_integrals_given_derive(r->ctx, r->I, r->mf.model, &r->g) != QD_OK)
-        rc = cli_diag_ctx(r->ctx);
+    if (rc == QD_EXIT_OK && !(r->I = qd_integrals_derive(c->ctx, c->mf.model, r->e, &o)))
+        rc = cli_diag_ctx(c->ctx);
+    if (rc == QD_EXIT_OK && qd_integrals_given_derive(c->ctx, r->I, c->mf.model, &r->g) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 
+static void run_free(cli_run *c) {
+    int_run *r = (int_run *)c;
+    qd_integrals_given_free(&r->g);
+    qd_integrals_free(r->I);
+    qd_eom_free(r->e);
+}
+
 int cli_cmd_integrals(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(int_run, a), 0, NULL, run, run_free};
     int_run r = {0};
-    int rc = cli_parse(&spec, argc, argv, &r.a, &r.file);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (!(r.ctx = qd_ctx_new())) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(&r);
-    qd_integrals_given_free(&r.g);
-    qd_integrals_free(r.I);
-    qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -6,20 +6,18 @@
  * (qd_lqr_design).  Printed by qd_statespace_render (qdot/statespace.h) in
  * the formats text, json, c, sympy, octave.
  */
-#include "cli.h"
+#include "linear_cli.h"
 
 #include <stdlib.h>
 #include <string.h>
-#include "linear_cli.h"
 #include "lqr_cli.h"
-#include "model_cli.h"
 #include "qdot/statespace.h"
 
 enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
 static const char *const formats[] = {"text", "json", "c", "sympy", "octave", NULL};
 
 typedef struct lin_args {
-    const char *file, *about, *lqr, *independent, *format_name;
+    const char *about, *lqr, *independent, *format_name;
     cli_list sets;
     int format;
 } lin_args;
@@ -65,10 +63,8 @@ static int read_about(qd_ctx *ctx, const qd_model *m, const char *text, lin_poin
     const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
     pt->syms = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->syms) : NULL;
     pt->vals = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->vals) : NULL;
-    if (rc == QD_EXIT_OK && (!exact || !pt->syms || !pt->vals)) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && (!exact || !pt->syms || !pt->vals))
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {.exact = exact};
     if (rc == QD_EXIT_OK)
         rc = cli_state_read(ctx, m, "--about", text, &st, &o);
@@ -95,32 +91,25 @@ static int emit(qd_ctx *ctx, const lin_args *a, const qd_statespace *s,
     static const qd_ss_format fmt[] = {QD_SS_TEXT, QD_SS_JSON, QD_SS_C, QD_SS_SYMPY,
                                        QD_SS_OCTAVE};
     qd_buf b = QD_BUF_INIT;
-    if (qd_statespace_render(ctx, s, lqr, fmt[a->format], &b) != QD_OK) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(ctx);
-    }
-    return cli_emit(&b, "state-space form");
+    return cli_emit_status(ctx, qd_statespace_render(ctx, s, lqr, fmt[a->format], &b), &b,
+                           "state-space form");
 }
 
 /* A model that keeps holonomic constraints: A over the independent states
  * on the manifold (constrained_cli.c). */
 static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eom *e) {
-    if (!e->ncon) {
-        cli_diag_error("--independent: the model keeps no constraints");
-        return QD_EXIT_USAGE;
-    }
+    if (!e->ncon)
+        return cli_usage_error("--independent: the model keeps no constraints");
     if (a->lqr || (a->format != F_TEXT && a->format != F_JSON)) {
         cli_diag_error("on the constraint manifold linearize gives A and B (text or json); %s "
                       "is not done yet", a->lqr ? "--lqr" : formats[a->format]);
         return QD_EXIT_USAGE;
     }
-    cli_lin_run r = {.ctx = ctx, .mf = *mf, .e = e};
+    cli_lin_run r = {.c = {.ctx = ctx, .mf = *mf}, .e = e};
     int rc = cli_lin_setup(&r);
     double *q0 = rc == QD_EXIT_OK ? calloc(e->n + 1, sizeof *q0) : NULL;
-    if (rc == QD_EXIT_OK && !q0) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !q0)
+        rc = cli_out_of_memory();
     if (rc == QD_EXIT_OK)
         rc = cli_con_point(&r, a->about, a->format == F_JSON, q0);
     if (rc == QD_EXIT_OK)
@@ -131,60 +120,58 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
     return rc;
 }
 
-static int run(qd_ctx *ctx, const lin_args *a) {
-    cli_model_file mf = {0};
-    qd_eom *e = NULL;
-    lin_point pt = {0};
-    qd_statespace s = {0};
-    qd_care_result lqr = {0};
+typedef struct lin_run {
+    cli_run c;
+    lin_args a;
+    qd_eom *e;
+    lin_point pt;
+    qd_statespace s;
+    qd_care_result lqr;
+} lin_run;
+
+/* The format's index, and --lqr's formats. */
+static int check(cli_run *c) {
+    lin_args *a = &((lin_run *)c)->a;
+    for (int k = 0; a->format_name && formats[k]; k++)
+        if (!strcmp(formats[k], a->format_name))
+            a->format = k;
+    if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C)
+        return cli_usage_error("--lqr prints as text, json or c, not %s", formats[a->format]);
+    return QD_EXIT_OK;
+}
+
+static int run(cli_run *c) {
+    lin_run *r = (lin_run *)c;
+    const lin_args *a = &r->a;
+    qd_ctx *ctx = c->ctx;
     qd_eom_opts eo = {.eliminate = true};
-    int rc = QD_EXIT_OK;
-    if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C) {
-        cli_diag_error("--lqr prints as text, json or c, not %s", formats[a->format]);
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK)
-        rc = cli_load_derive(ctx, a->file, a->sets.n, a->sets.items, false, &eo, &mf, &e);
-    if (rc == QD_EXIT_OK && (e->ncon || a->independent)) {
-        rc = constrained(ctx, a, &mf, e);
-        goto done;
-    }
+    int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, false, &eo, &c->mf, &r->e);
+    if (rc == QD_EXIT_OK && (r->e->ncon || a->independent))
+        return constrained(ctx, a, &c->mf, r->e);
     if (rc == QD_EXIT_OK && a->about)
-        rc = read_about(ctx, mf.model, a->about, &pt);
+        rc = read_about(ctx, c->mf.model, a->about, &r->pt);
     if (rc == QD_EXIT_OK &&
-        qd_linearize(ctx, e, mf.model, pt.n, pt.syms, pt.vals, &s) != QD_OK) {
+        qd_linearize(ctx, r->e, c->mf.model, r->pt.n, r->pt.syms, r->pt.vals, &r->s) != QD_OK) {
         rc = cli_exit(qd_ctx_status(ctx));
         cli_diag_error("%s", qd_ctx_message(ctx));
     }
     if (rc == QD_EXIT_OK && a->lqr)
-        rc = cli_lqr_design(ctx, &s, a->lqr, &lqr);
+        rc = cli_lqr_design(ctx, &r->s, a->lqr, &r->lqr);
     if (rc == QD_EXIT_OK)
-        rc = emit(ctx, a, &s, a->lqr ? &lqr : NULL);
-done:
-    qd_care_result_free(&lqr);
-    qd_statespace_free(&s);
-    point_free(&pt);
-    qd_eom_free(e);
-    cli_model_file_free(&mf);
+        rc = emit(ctx, a, &r->s, a->lqr ? &r->lqr : NULL);
     return rc;
 }
 
+static void run_free(cli_run *c) {
+    lin_run *r = (lin_run *)c;
+    qd_care_result_free(&r->lqr);
+    qd_statespace_free(&r->s);
+    point_free(&r->pt);
+    qd_eom_free(r->e);
+}
+
 int cli_cmd_linearize(int argc, char **argv) {
-    lin_args a = {0};
-    const char *pos[1];
-    int rc = cli_parse(&spec, argc, argv, &a, pos);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    a.file = pos[0];
-    for (int k = 0; a.format_name && formats[k]; k++)
-        if (!strcmp(formats[k], a.format_name))
-            a.format = k;
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(ctx, &a);
-    qd_ctx_free(ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(lin_run, a), 0, check, run, run_free};
+    lin_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

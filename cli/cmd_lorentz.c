@@ -4,12 +4,12 @@
  * acceleration, a four-momentum; composition, dilation, contraction and
  * proper time (qd_lorentz_read/run/render, qdot/relativity.h).
  */
-#include "cli.h"
+#include "driver.h"
 
 #include "opt_diag.h"
-#include "out.h"
 
 typedef struct lz_args {
+    cli_run c; /* the options follow */
     qd_lorentz_text t;
     const char *format, *out;
 } lz_args;
@@ -46,25 +46,23 @@ static const cli_spec spec = {
     "the Lorentz transformation to a moving frame (values may use c: 0.6*c)", opts, NULL, 0, 0,
     NULL, false};
 
-int cli_cmd_lorentz(int argc, char **argv) {
-    lz_args a = {0};
-    int rc = cli_parse(&spec, argc, argv, &a, NULL);
-    qd_ctx *ctx = rc == QD_EXIT_OK ? qd_ctx_new() : NULL;
-    if (rc != QD_EXIT_OK || !ctx) {
-        if (rc == QD_EXIT_OK)
-            cli_diag_error("out of memory");
-        return rc == QD_EXIT_OK ? QD_EXIT_FAIL : rc;
-    }
+static int run(cli_run *c) {
+    const lz_args *a = (lz_args *)c;
     qd_lorentz_in in;
     qd_lorentz_out out;
     qd_buf b = QD_BUF_INIT;
-    qd_status st = qd_lorentz_read(ctx, &a.t, &in);
+    qd_status st = qd_lorentz_read(c->ctx, &a->t, &in);
     if (st == QD_OK)
-        st = qd_lorentz_run(ctx, &in, &out);
+        st = qd_lorentz_run(c->ctx, &in, &out);
     if (st == QD_OK)
-        st = qd_lorentz_render(ctx, &in, &out, cli_json(a.format), &b);
-    rc = st == QD_OK ? cli_out_emit(&b, a.out) : cli_diag_opts(ctx, &spec, &a);
+        st = qd_lorentz_render(c->ctx, &in, &out, cli_json(a->format), &b);
+    int rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(c->ctx, &spec, a);
     qd_buf_free(&b);
-    qd_ctx_free(ctx);
     return rc;
+}
+
+int cli_cmd_lorentz(int argc, char **argv) {
+    static const cli_driver d = {&spec, 0, 0, NULL, run, NULL};
+    lz_args a = {0};
+    return cli_drive(&d, &a.c, argc, argv);
 }

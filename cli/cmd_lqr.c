@@ -3,9 +3,8 @@
  * the LQR gain of a state-space system given as matrices (qd_care_solve).
  * `qdot linearize --lqr` does the same on the A and B of a model.
  */
-#include "cli.h"
+#include "driver.h"
 #include "lqr_cli.h"
-#include "model_cli.h"
 
 #include <stddef.h>
 #include <stdlib.h>
@@ -33,15 +32,9 @@ static const cli_spec spec = {
     "lqr", "--A M --B M --weights \"Q = ..., R = ...\" [--format text|json|c]",
     "the LQR gain of x' = A x + B u (the Riccati equation)", opts, NULL, 0, 0, NULL, false};
 
-static int parse_args(int argc, char **argv, lqr_args *a) {
-    int rc = cli_parse(&spec, argc, argv, a, NULL);
-    if (rc != QD_EXIT_OK || (a->A && a->B && a->weights))
-        return rc;
-    cli_diag_error("qdot lqr needs --A, --B and --weights (qdot lqr --help)");
-    return QD_EXIT_USAGE;
-}
-
 typedef struct lqr_run {
+    cli_run c;
+    lqr_args a;
     qd_matrix A, B;
     double *Q, *R;
 } lqr_run;
@@ -62,41 +55,47 @@ static int read_system(qd_ctx *ctx, const lqr_args *a, lqr_run *r) {
     }
     r->Q = malloc(n * n * sizeof *r->Q);
     r->R = malloc(m * m * sizeof *r->R);
-    if (!r->Q || !r->R) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->Q || !r->R)
+        return cli_out_of_memory();
     if (qd_lqr_weights_read(ctx, a->weights, n, m, r->Q, r->R) != QD_OK)
         return cli_lqr_error(ctx, "--weights", a->weights);
     return QD_EXIT_OK;
 }
 
-int cli_cmd_lqr(int argc, char **argv) {
-    lqr_args a = {0};
-    lqr_run r = {0};
+static int check(cli_run *c) {
+    const lqr_args *a = &((lqr_run *)c)->a;
+    if (a->A && a->B && a->weights)
+        return QD_EXIT_OK;
+    return cli_usage_error("qdot lqr needs --A, --B and --weights (qdot lqr --help)");
+}
+
+static int run(cli_run *c) {
+    lqr_run *r = (lqr_run *)c;
+    const char *f = r->a.format;
     qd_care_result res = {0};
-    int rc = parse_args(argc, argv, &a);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = read_system(ctx, &a, &r);
-    if (rc == QD_EXIT_OK && qd_care_solve(ctx, r.A.rows, r.B.cols, r.A.a, r.B.a, r.Q, r.R,
-                                          &res) != QD_OK)
-        rc = cli_diag_ctx(ctx);
+    int rc = read_system(c->ctx, &r->a, r);
+    if (rc == QD_EXIT_OK && qd_care_solve(c->ctx, r->A.rows, r->B.cols, r->A.a, r->B.a, r->Q,
+                                          r->R, &res) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK)
         rc = cli_lqr_print_design(stdout, NULL, &res,
-                                  !a.format || !strcmp(a.format, "text") ? CLI_LQR_TEXT
-                                  : !strcmp(a.format, "json")            ? CLI_LQR_JSON
-                                                                         : CLI_LQR_C);
+                                  !f || !strcmp(f, "text") ? CLI_LQR_TEXT
+                                  : !strcmp(f, "json")     ? CLI_LQR_JSON
+                                                           : CLI_LQR_C);
     qd_care_result_free(&res);
-    qd_matrix_free(&r.A);
-    qd_matrix_free(&r.B);
-    free(r.Q);
-    free(r.R);
-    qd_ctx_free(ctx);
     return rc;
+}
+
+static void run_free(cli_run *c) {
+    lqr_run *r = (lqr_run *)c;
+    qd_matrix_free(&r->A);
+    qd_matrix_free(&r->B);
+    free(r->Q);
+    free(r->R);
+}
+
+int cli_cmd_lqr(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(lqr_run, a), 0, check, run, run_free};
+    lqr_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

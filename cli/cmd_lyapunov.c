@@ -14,8 +14,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
+#include "out.h"
 #include "qdot/lyapunov.h"
 #include "sim_cli.h"
 
@@ -26,8 +26,6 @@ typedef struct ly_args {
     double renorm, transient;
 } ly_args;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static const cli_opt opts[] = {
     {"--exponents", NULL, CLI_COUNT, offsetof(ly_args, n), "K", "the K largest exponents (1)", NULL,
      NULL},
@@ -36,7 +34,7 @@ static const cli_opt opts[] = {
     {"--transient", NULL, CLI_TEXT, offsetof(ly_args, transient_text), "T0",
      "the time run before the averaging starts (0)", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(ly_args, format), "F", "how the result is printed",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 
@@ -55,10 +53,8 @@ static const cli_spec spec = {
 static int number(const char *opt, const char *v, double *out) {
     char *end;
     double x = v ? strtod(v, &end) : 0;
-    if (v && (end == v || *end || !isfinite(x) || x < 0)) {
-        cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
-        return QD_EXIT_USAGE;
-    }
+    if (v && (end == v || *end || !isfinite(x) || x < 0))
+        return cli_usage_error("%s takes a number >= 0, not '%s'", opt, v);
     *out = x;
     return QD_EXIT_OK;
 }
@@ -75,17 +71,13 @@ static int emit(const qd_lyap_report *r, bool json) {
 
 /* The model made into the tangent system and run; prints the result. */
 static int run(cli_sim *c, const ly_args *p) {
-    if (!c->e) {
-        cli_diag_error("lyapunov takes a model given by T and V or L (its equations M q'' = "
-                       "f), not one given by H or in speeds (try --no-speeds)");
-        return QD_EXIT_USAGE;
-    }
+    if (!c->e)
+        return cli_usage_error("lyapunov takes a model given by T and V or L (its equations M q'' "
+                               "= f), not one given by H or in speeds (try --no-speeds)");
     size_t d = 2 * c->e->n;
-    if (p->n > d) {
-        cli_diag_error("--exponents: the model has %zu exponents (twice its %zu degrees of freedom), "
-                       "not %zu", d, c->e->n, p->n);
-        return QD_EXIT_USAGE;
-    }
+    if (p->n > d)
+        return cli_usage_error("--exponents: the model has %zu exponents (twice its %zu degrees "
+                               "of freedom), not %zu", d, c->e->n, p->n);
     qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
     if (!l)
         return cli_diag_ctx(c->ctx);
@@ -117,15 +109,13 @@ static int run(cli_sim *c, const ly_args *p) {
 int cli_cmd_lyapunov(int argc, char **argv) {
     ly_args p = {.n = 1};
     int rc = cli_parse(&spec, argc, argv, &p, &p.a.file);
-    p.a.json = p.format && !strcmp(p.format, "json");
+    p.a.json = cli_json(p.format);
     if (rc == QD_EXIT_OK)
         rc = number("--renorm", p.renorm_text, &p.renorm);
     if (rc == QD_EXIT_OK)
         rc = number("--transient", p.transient_text, &p.transient);
-    if (rc == QD_EXIT_OK && !p.a.t_end) {
-        cli_diag_error("--t-end is missing (qdot lyapunov --help)");
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && !p.a.t_end)
+        rc = cli_usage_error("--t-end is missing (qdot lyapunov --help)");
     if (rc != QD_EXIT_OK)
         return rc;
     /* Runge-Kutta: dop853 unless named; --dt makes its step fixed */

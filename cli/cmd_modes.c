@@ -22,21 +22,19 @@
  */
 #include "linear_cli.h"
 
-#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
 #include "modes_plot.h"
 #include "modes_symmetry.h"
 #include "plot_cli.h"
 
 typedef struct modes_args {
-    const char *file, *about, *initial, *scan, *format;
+    const char *about, *initial, *scan, *format;
     const char *independent; /* --independent: a model that keeps constraints */
     size_t steps;   /* --steps: 0 the library's default */
     size_t at_eq;   /* 1-based; 0: the first minimum, else the first */
     cli_list sets;
-    bool json;
+    bool json, field; /* from the above: --format json; FILE declares a field */
     const char *plot;  /* --plot FILE: the mode shapes drawn */
     bool symmetry;     /* --symmetry */
     size_t count;      /* --count: a field model's number of modes */
@@ -44,7 +42,8 @@ typedef struct modes_args {
 } modes_args;
 
 typedef struct modes_run {
-    cli_lin_run lr;
+    cli_lin_run lr; /* first: the run state starts with its cli_run */
+    modes_args a;
     qd_equilibrium_choice ch;   /* found: the list (--at-equilibrium, automatic choice) */
     const qd_equilibrium *pt;   /* NULL with --about */
     bool chosen;                /* pt is the library's automatic choice (ch.reason) */
@@ -59,16 +58,12 @@ typedef struct modes_run {
     cli_sym_run sym;            /* --symmetry */
 } modes_run;
 
-static const char *const formats[] = {"text", "json", NULL};
-
 static int tol_option(const char *v, void *args) {
     modes_args *a = args;
     char *end;
     a->tol = strtod(v, &end);
-    if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1)) {
-        cli_diag_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
-        return QD_EXIT_USAGE;
-    }
+    if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1))
+        return cli_usage_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
     return QD_EXIT_OK;
 }
 
@@ -91,8 +86,8 @@ static const cli_opt opts[] = {
     {"--tol", NULL, CLI_CALL, 0, "X", "a field model: the relative tolerance (1e-14 to 0.1)",
      NULL, tol_option},
     OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value"),
-    {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json",
+     cli_formats_text_json, NULL},
     {0},
 };
 #undef OPT
@@ -102,22 +97,6 @@ static const cli_spec spec = {
     "small oscillations about an equilibrium: frequencies and mode shapes (a field model: "
     "FIELDFILE [--count N] [--tol X])", opts, NULL, 1, 1, "FILE", false};
 
-static int parse_args(int argc, char **argv, modes_args *a) {
-    const char *pos[1];
-    int rc = cli_parse(&spec, argc, argv, a, pos);
-    a->file = pos[0];
-    a->json = a->format && !strcmp(a->format, "json");
-    if (rc == QD_EXIT_OK && a->steps > 100000) {
-        cli_diag_error("--steps takes a number of steps from 1 to 100000, not %zu", a->steps);
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK && a->count > 1000) {
-        cli_diag_error("--count takes a number of modes from 1 to 1000, not %zu", a->count);
-        rc = QD_EXIT_USAGE;
-    }
-    return rc;
-}
-
 static int no_equilibrium(void) {
     cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
                   "--about");
@@ -126,9 +105,9 @@ static int no_equilibrium(void) {
 
 static int choose_auto(modes_run *r) {
     cli_lin_run *lr = &r->lr;
-    if (qd_equilibria_choose(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
+    if (qd_equilibria_choose(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms, lr->st.vals,
                              &r->ch) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->ctx));
+        cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
         return QD_EXIT_FAIL;
     }
     if (!r->ch.pt)
@@ -145,11 +124,10 @@ static int choose_listed(modes_run *r, size_t k) {
         return rc;
     if (eq->count == 0)
         return no_equilibrium();
-    if (k > eq->count) {
-        cli_diag_error("--at-equilibrium %zu: there %s %zu equilibri%s", k,
-                      eq->count == 1 ? "is" : "are", eq->count, eq->count == 1 ? "um" : "a");
-        return QD_EXIT_USAGE;
-    }
+    if (k > eq->count)
+        return cli_usage_error("--at-equilibrium %zu: there %s %zu equilibri%s", k,
+                               eq->count == 1 ? "is" : "are", eq->count,
+                               eq->count == 1 ? "um" : "a");
     r->pt = &eq->pts[k - 1];
     return QD_EXIT_OK;
 }
@@ -172,20 +150,20 @@ static int linearize(modes_run *r) {
     cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
     cli_lin_set_state(lr, r->q0, NULL);
-    if (qd_eom_rest_residual(lr->ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals,
+    if (qd_eom_rest_residual(lr->c.ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals,
                              &r->residual) != QD_OK)
-        qd_ctx_clear_error(lr->ctx);
-    if (qd_linear_about(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms, lr->st.vals,
+        qd_ctx_clear_error(lr->c.ctx);
+    if (qd_linear_about(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms, lr->st.vals,
                         &r->lin) != QD_OK ||
-        qd_modes_solve(lr->ctx, &r->lin, &r->res) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->ctx));
+        qd_modes_solve(lr->c.ctx, &r->lin, &r->res) != QD_OK) {
+        cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
         return QD_EXIT_FAIL;
     }
     if (r->pt && r->pt->exact && n <= 2 && r->res.conservative) {
-        r->have_sym = qd_modes_exact_omega2(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms,
+        r->have_sym = qd_modes_exact_omega2(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
                                             lr->st.vals, r->pt->exact, r->w2sym,
                                             &r->sym_exact) == QD_OK;
-        qd_ctx_clear_error(lr->ctx);
+        qd_ctx_clear_error(lr->c.ctx);
     }
     return QD_EXIT_OK;
 }
@@ -193,11 +171,9 @@ static int linearize(modes_run *r) {
 static int initial(modes_run *r, const char *text) {
     cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
-    if (!r->res.conservative) {
-        cli_diag_error("--initial: the motion through normal coordinates needs a conservative "
-                      "system without gyroscopic terms");
-        return QD_EXIT_USAGE;
-    }
+    if (!r->res.conservative)
+        return cli_usage_error("--initial: the motion through normal coordinates needs a "
+                               "conservative system without gyroscopic terms");
     double *q = calloc(n + 1, sizeof *q), *qd = calloc(n + 1, sizeof *qd);
     r->Q = calloc(n + 1, sizeof *r->Q);
     r->Qd = calloc(n + 1, sizeof *r->Qd);
@@ -223,9 +199,9 @@ static int emit(modes_run *r, bool json) {
         .sym = r->sym.active && !r->sym.cyc.n ? &r->sym.sym : NULL,
         .cyc = r->sym.active && r->sym.cyc.n ? &r->sym.cyc : NULL};
     qd_buf b = QD_BUF_INIT;
-    if (qd_modes_print(r->lr.ctx, &rep, json, &b) != QD_OK) {
+    if (qd_modes_print(r->lr.c.ctx, &rep, json, &b) != QD_OK) {
         b.failed = true; /* "cannot print the modes" */
-        qd_ctx_clear_error(r->lr.ctx);
+        qd_ctx_clear_error(r->lr.c.ctx);
     }
     return cli_emit(&b, "modes");
 }
@@ -242,107 +218,100 @@ static void note_choice(const modes_run *r) {
     qd_buf_free(&b);
 }
 
-int cli_cmd_modes(int argc, char **argv) {
-    modes_args a = {0};
-    int rc = parse_args(argc, argv, &a);
-    if (rc != QD_EXIT_OK)
+/* The options that go together, before anything is read. */
+static int check(cli_run *c) {
+    modes_args *a = &((modes_run *)c)->a;
+    int rc;
+    a->json = cli_json(a->format);
+    if (a->steps > 100000)
+        return cli_usage_error("--steps takes a number of steps from 1 to 100000, not %zu",
+                               a->steps);
+    if (a->count > 1000)
+        return cli_usage_error("--count takes a number of modes from 1 to 1000, not %zu", a->count);
+    if ((a->field = cli_model_file_is_field(c->file))) {
+        if (a->about || a->at_eq || a->initial || a->scan || a->plot || a->symmetry || a->steps)
+            return cli_usage_error("a field model takes --count, --tol, --set and --format only");
+        return QD_EXIT_OK;
+    }
+    if (a->count || a->tol)
+        return cli_usage_error("--count and --tol are for a field model (`field y(x, t) on ...`)");
+    if (a->about && a->at_eq)
+        return cli_usage_error("give either --at-equilibrium or --about, not both");
+    if (a->scan && (a->at_eq || a->initial))
+        return cli_usage_error("--scan follows the point given with --about (or the equilibrium "
+                               "chosen at the start of the range): give neither --at-equilibrium "
+                               "nor --initial");
+    if (a->plot && a->scan)
+        return cli_usage_error("--plot draws the modes about one point: not with --scan");
+    if (a->plot && (rc = cli_plot_check(&(cli_plot_args){.file = a->plot}, "modes")))
         return rc;
-    if (cli_model_file_is_field(a.file)) {
-        if (a.about || a.at_eq || a.initial || a.scan || a.plot || a.symmetry || a.steps) {
-            cli_diag_error("a field model takes --count, --tol, --set and --format only");
-            return QD_EXIT_USAGE;
-        }
-        return cli_field_modes(a.file, a.sets.n, a.sets.items, a.count, a.tol, a.json);
-    }
-    if (a.count || a.tol) {
-        cli_diag_error("--count and --tol are for a field model (`field y(x, t) on ...`)");
-        return QD_EXIT_USAGE;
-    }
-    if (a.about && a.at_eq) {
-        cli_diag_error("give either --at-equilibrium or --about, not both");
-        return QD_EXIT_USAGE;
-    }
-    if (a.scan && (a.at_eq || a.initial)) {
-        cli_diag_error("--scan follows the point given with --about (or the equilibrium chosen "
-                      "at the start of the range): give neither --at-equilibrium nor --initial");
-        return QD_EXIT_USAGE;
-    }
-    if (a.plot && a.scan) {
-        cli_diag_error("--plot draws the modes about one point: not with --scan");
-        return QD_EXIT_USAGE;
-    }
-    if (a.plot && (rc = cli_plot_check(&(cli_plot_args){.file = a.plot}, "modes")))
-        return rc;
-    if (a.symmetry && a.scan) {
-        cli_diag_error("--symmetry labels the modes about one point: not with --scan");
-        return QD_EXIT_USAGE;
-    }
-    if (a.steps && !a.scan) {
-        cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
-        return QD_EXIT_USAGE;
-    }
-    modes_run r = {.lr = {.ctx = qd_ctx_new()}};
-    if (!r.lr.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = cli_lin_load_model(&r.lr, a.file, a.sets.items, a.sets.n);
-    if (rc == QD_EXIT_OK && a.plot && qd_model_nspeeds(r.lr.mf.model)) {
-        cli_diag_error("--plot: the modes of a model in speeds are not drawn yet");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK && a.symmetry && qd_model_nspeeds(r.lr.mf.model)) {
-        cli_diag_error("--symmetry: the modes of a model in speeds are not analysed by symmetry");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK && qd_model_nspeeds(r.lr.mf.model)) {
-        rc = cli_speeds_modes(r.lr.ctx, &r.lr.mf, a.about, a.scan, a.steps, a.json,
-                              a.at_eq ? "--at-equilibrium" : a.initial ? "--initial" : NULL);
-        goto done;
-    }
+    if (a->symmetry && a->scan)
+        return cli_usage_error("--symmetry labels the modes about one point: not with --scan");
+    if (a->steps && !a->scan)
+        return cli_usage_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
+    return QD_EXIT_OK;
+}
+
+static int run(cli_run *c) {
+    modes_run *r = (modes_run *)c;
+    const modes_args *a = &r->a;
+    if (a->field)
+        return cli_field_modes(c->ctx, &c->mf, c->file, a->sets.n, a->sets.items, a->count,
+                               a->tol, a->json);
+    int rc = cli_lin_load_model(&r->lr, c->file, a->sets.items, a->sets.n);
+    if (rc == QD_EXIT_OK && a->plot && qd_model_nspeeds(c->mf.model))
+        rc = cli_usage_error("--plot: the modes of a model in speeds are not drawn yet");
+    if (rc == QD_EXIT_OK && a->symmetry && qd_model_nspeeds(c->mf.model))
+        rc = cli_usage_error("--symmetry: the modes of a model in speeds are not analysed by "
+                             "symmetry");
+    if (rc == QD_EXIT_OK && qd_model_nspeeds(c->mf.model))
+        return cli_speeds_modes(c->ctx, &c->mf, a->about, a->scan, a->steps, a->json,
+                                a->at_eq ? "--at-equilibrium" : a->initial ? "--initial" : NULL);
     if (rc == QD_EXIT_OK)
-        rc = cli_lin_derive(&r.lr);
-    if (rc == QD_EXIT_OK && (r.lr.e->ncon ? a.scan || a.symmetry || a.plot || a.initial
-                                          : a.independent != NULL)) {
-        cli_diag_error(r.lr.e->ncon ? "%s: not yet on the constraint manifold of a model that "
-                                      "keeps constraints with multipliers"
-                                    : "%s: the model keeps no constraints",
-                       r.lr.e->ncon ? (a.scan ? "--scan" : a.symmetry ? "--symmetry"
-                                               : a.plot ? "--plot" : "--initial")
-                                    : "--independent");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK && a.scan) {
-        rc = cli_scan_modes(&r.lr, a.scan, a.about, a.steps, a.json);
-        goto done;
-    }
+        rc = cli_lin_derive(&r->lr);
+    if (rc == QD_EXIT_OK && (r->lr.e->ncon ? a->scan || a->symmetry || a->plot || a->initial
+                                           : a->independent != NULL))
+        rc = cli_usage_error(r->lr.e->ncon ? "%s: not yet on the constraint manifold of a model "
+                                             "that keeps constraints with multipliers"
+                                           : "%s: the model keeps no constraints",
+                             r->lr.e->ncon ? (a->scan ? "--scan" : a->symmetry ? "--symmetry"
+                                                      : a->plot ? "--plot" : "--initial")
+                                           : "--independent");
+    if (rc == QD_EXIT_OK && a->scan)
+        return cli_scan_modes(&r->lr, a->scan, a->about, a->steps, a->json);
     if (rc == QD_EXIT_OK)
-        rc = choose_point(&r, &a);
-    if (rc == QD_EXIT_OK && r.chosen && !a.json)
-        note_choice(&r);
-    if (rc == QD_EXIT_OK && r.lr.e->ncon) { /* on the manifold (constrained_cli.c) */
-        rc = cli_con_modes(&r.lr, r.q0, a.independent, a.json);
-        goto done;
-    }
+        rc = choose_point(r, a);
+    if (rc == QD_EXIT_OK && r->chosen && !a->json)
+        note_choice(r);
+    if (rc == QD_EXIT_OK && r->lr.e->ncon) /* on the manifold (constrained_cli.c) */
+        return cli_con_modes(&r->lr, r->q0, a->independent, a->json);
     if (rc == QD_EXIT_OK)
-        rc = linearize(&r);
-    if (rc == QD_EXIT_OK && a.symmetry)
-        rc = cli_sym_compute(&r.lr, &r.lin, &r.sym);
-    if (rc == QD_EXIT_OK && a.initial)
-        rc = initial(&r, a.initial);
+        rc = linearize(r);
+    if (rc == QD_EXIT_OK && a->symmetry)
+        rc = cli_sym_compute(&r->lr, &r->lin, &r->sym);
+    if (rc == QD_EXIT_OK && a->initial)
+        rc = initial(r, a->initial);
     if (rc == QD_EXIT_OK)
-        rc = emit(&r, a.json);
-    if (rc == QD_EXIT_OK && a.plot)
-        rc = cli_modes_plot(&r.lr, r.q0, &r.res, a.plot, a.file);
-done:
-    free(r.q0);
-    free(r.Q);
-    free(r.Qd);
-    qd_linear_free(&r.lin);
-    qd_modes_result_free(&r.res);
-    cli_sym_free(&r.sym);
-    qd_equilibrium_choice_free(&r.ch);
-    cli_lin_free(&r.lr);
-    qd_ctx_free(r.lr.ctx);
+        rc = emit(r, a->json);
+    if (rc == QD_EXIT_OK && a->plot)
+        rc = cli_modes_plot(&r->lr, r->q0, &r->res, a->plot, c->file);
     return rc;
+}
+
+static void run_free(cli_run *c) {
+    modes_run *r = (modes_run *)c;
+    free(r->q0);
+    free(r->Q);
+    free(r->Qd);
+    qd_linear_free(&r->lin);
+    qd_modes_result_free(&r->res);
+    cli_sym_free(&r->sym);
+    qd_equilibrium_choice_free(&r->ch);
+    cli_lin_free(&r->lr);
+}
+
+int cli_cmd_modes(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(modes_run, a), 0, check, run, run_free};
+    modes_run r = {0};
+    return cli_drive(&d, &r.lr.c, argc, argv);
 }

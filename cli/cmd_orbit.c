@@ -5,12 +5,9 @@
  * Kepler's conic (qd_orbit_derive, qd_orbit_solve_text, qd_orbit_render;
  * qdot/orbit.h).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include "model_cli.h"
-#include "model_file.h"
 #include "opt_diag.h"
-#include "out.h"
 #include "qdot/orbit.h"
 
 #define MAX_IGN 32
@@ -48,54 +45,54 @@ static const cli_spec spec = {
     "FILE", false};
 
 typedef struct orbit_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
+    orbit_args a;
     qd_eom *e;
     qd_orbit *o;
     qd_orbit_result r;
 } orbit_run;
 
-static int run(orbit_run *r, const orbit_args *a, const char *file) {
+static int run(cli_run *c) {
+    orbit_run *r = (orbit_run *)c;
+    const orbit_args *a = &r->a;
     const qd_expr *ign[MAX_IGN];
     size_t nign = 0;
-    int rc = cli_load_derive(r->ctx, file, a->sets.n, a->sets.items, false, NULL, &r->mf, &r->e);
+    int rc = cli_load_derive(c->ctx, c->file, a->sets.n, a->sets.items, false, NULL, &c->mf,
+                             &r->e);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_parse(r->ctx, r->mf.model, a->ignore, ign, MAX_IGN, &nign);
+        rc = cli_ignore_parse(c->ctx, c->mf.model, a->ignore, ign, MAX_IGN, &nign);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_check(r->ctx, &r->mf, r->e, ign, nign);
-    if (rc == QD_EXIT_OK && !(r->o = qd_orbit_derive(r->ctx, r->mf.model, r->e, nign, ign)))
-        rc = cli_diag_ctx(r->ctx);
+        rc = cli_ignore_check(c->ctx, &c->mf, r->e, ign, nign);
+    if (rc == QD_EXIT_OK && !(r->o = qd_orbit_derive(c->ctx, c->mf.model, r->e, nign, ign)))
+        rc = cli_diag_ctx(c->ctx);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_buf b = QD_BUF_INIT;
-    qd_status st = qd_orbit_solve_text(r->ctx, r->o, r->mf.model, &a->t, &r->r);
+    qd_status st = qd_orbit_solve_text(c->ctx, r->o, c->mf.model, &a->t, &r->r);
     if (st == QD_OK)
-        st = qd_orbit_render(r->ctx, r->o, &r->r, r->mf.path, a->equation,
+        st = qd_orbit_render(c->ctx, r->o, &r->r, c->mf.path, a->equation,
                              cli_json(a->format), &b);
-    rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(r->ctx, &spec, a);
+    rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(c->ctx, &spec, a);
     qd_buf_free(&b);
     return rc;
 }
 
+static int check(cli_run *c) {
+    if (((orbit_run *)c)->a.ignore)
+        return QD_EXIT_OK;
+    return cli_usage_error("orbit needs --ignore with the cyclic coordinates to ignore (all but "
+                           "one)");
+}
+
+static void run_free(cli_run *c) {
+    orbit_run *r = (orbit_run *)c;
+    qd_orbit_result_free(&r->r);
+    qd_orbit_free(r->o);
+    qd_eom_free(r->e);
+}
+
 int cli_cmd_orbit(int argc, char **argv) {
-    orbit_args a = {0};
-    const char *file = NULL;
-    int rc = cli_parse(&spec, argc, argv, &a, &file);
-    if (rc == QD_EXIT_OK && !a.ignore) {
-        cli_diag_error("orbit needs --ignore with the cyclic coordinates to ignore (all but one)");
-        rc = QD_EXIT_USAGE;
-    }
-    orbit_run r = {.ctx = rc == QD_EXIT_OK ? qd_ctx_new() : NULL};
-    if (rc != QD_EXIT_OK || !r.ctx) {
-        if (rc == QD_EXIT_OK)
-            cli_diag_error("out of memory");
-        return rc == QD_EXIT_OK ? QD_EXIT_FAIL : rc;
-    }
-    rc = run(&r, &a, file);
-    qd_orbit_result_free(&r.r);
-    qd_orbit_free(r.o);
-    qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(orbit_run, a), 0, check, run, run_free};
+    orbit_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

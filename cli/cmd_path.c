@@ -6,25 +6,20 @@
  * whether it is a minimum; the isoperimetric multipliers, and free ends
  * written `y=free`.  For an `independent x` model, x names the ends' time.
  */
-#include "cli.h"
+#include "driver.h"
 
 #include <math.h>
-#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
-#include "model_file.h"
 #include "qdot/path.h"
 #include "state.h"
 
 typedef struct path_args {
-    const char *file, *from, *to, *energy, *format;
+    const char *from, *to, *energy, *format;
     size_t segments;
     bool all;
     cli_list guess, set;
 } path_args;
-
-static const char *const formats[] = {"text", "json", NULL};
 
 static const cli_opt opts[] = {
     {"--from", NULL, CLI_TEXT, offsetof(path_args, from), "\"q=VALUE|free, ..., t=T0\"",
@@ -41,7 +36,7 @@ static const cli_opt opts[] = {
     {"--segments", NULL, CLI_COUNT, offsetof(path_args, segments), "N",
      "multiple-shooting segments (default: chosen)", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(path_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+     cli_formats_text_json, NULL},
     {"--set", NULL, CLI_LIST, offsetof(path_args, set), "NAME=VALUE",
      "read the model with this parameter value", NULL, NULL},
     {0},
@@ -54,8 +49,8 @@ static const cli_spec spec = {
 };
 
 typedef struct path_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
+    path_args a;
     qd_eom *e;
     cli_state g;
     double *q0, *q1, *guess;
@@ -78,51 +73,43 @@ static void free_guesses(path_run *r) {
 /* One end: its error shown in the option's text. */
 static int read_end(path_run *r, const char *what, const char *text, double *q, double *t,
                     bool *fr) {
-    if (qd_path_end_read(r->ctx, r->mf.model, r->e, text, q, t, fr) != QD_OK)
-        return cli_state_diag(r->ctx, what, text);
+    if (qd_path_end_read(r->c.ctx, r->c.mf.model, r->e, text, q, t, fr) != QD_OK)
+        return cli_state_diag(r->c.ctx, what, text);
     for (size_t j = 0; j < r->e->n; j++)
         r->any_free = r->any_free || fr[j];
     return QD_EXIT_OK;
 }
 
 static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
-    const qd_model *m = r->mf.model;
+    const qd_model *m = r->c.mf.model;
     size_t n = r->e->n;
-    if (n > sizeof r->free0 / sizeof r->free0[0]) {
-        cli_diag_error("path: at most %zu coordinates", sizeof r->free0 / sizeof r->free0[0]);
-        return QD_EXIT_USAGE;
-    }
+    if (n > sizeof r->free0 / sizeof r->free0[0])
+        return cli_usage_error("path: at most %zu coordinates",
+                               sizeof r->free0 / sizeof r->free0[0]);
     r->q0 = calloc(n + 1, sizeof *r->q0);
     r->q1 = calloc(n + 1, sizeof *r->q1);
-    if (!r->q0 || !r->q1) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->q0 || !r->q1)
+        return cli_out_of_memory();
     double t0 = 0, t1 = NAN;
     int rc = read_end(r, "--from", a->from, r->q0, &t0, r->free0);
     if (rc == QD_EXIT_OK)
         rc = read_end(r, "--to", a->to, r->q1, &t1, r->free1);
-    if (rc == QD_EXIT_OK && r->energy && r->any_free) {
-        cli_diag_error("path: free ends need the end times, not --energy");
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && r->energy && r->any_free)
+        rc = cli_usage_error("path: free ends need the end times, not --energy");
     if (rc == QD_EXIT_OK && !r->energy && isnan(t1)) {
         const char *x = qd_model_independent(m) ? qd_model_independent(m) : "t";
-        cli_diag_error("path: --to needs the end %s=T1 (or give --energy E)", x);
-        rc = QD_EXIT_USAGE;
+        rc = cli_usage_error("path: --to needs the end %s=T1 (or give --energy E)", x);
     }
     if (rc == QD_EXIT_OK)
         free_guesses(r);
     r->guess = calloc(a->guess.n * n + 1, sizeof *r->guess);
-    if (rc == QD_EXIT_OK && !r->guess) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !r->guess)
+        return cli_out_of_memory();
     for (size_t k = 0; rc == QD_EXIT_OK && k < a->guess.n; k++) {
         cli_state_free(&r->g);
-        rc = cli_state_init(r->ctx, m, &r->g);
+        rc = cli_state_init(r->c.ctx, m, &r->g);
         if (rc == QD_EXIT_OK)
-            rc = cli_state_parse_as(r->ctx, m, "--guess", a->guess.items[k], &r->g);
+            rc = cli_state_parse_as(r->c.ctx, m, "--guess", a->guess.items[k], &r->g);
         if (rc == QD_EXIT_OK)
             memcpy(r->guess + k * n, r->g.vals + n, n * sizeof *r->guess);
     }
@@ -137,10 +124,9 @@ static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
     o->all = a->all;
     o->free0 = r->any_free ? r->free0 : NULL;
     o->free1 = r->any_free ? r->free1 : NULL;
-    if (!r->energy && !(o->t1 > o->t0)) {
-        cli_diag_error("path: the end time %g is not after the start time %g", o->t1, o->t0);
-        return QD_EXIT_USAGE;
-    }
+    if (!r->energy && !(o->t1 > o->t0))
+        return cli_usage_error("path: the end time %g is not after the start time %g",
+                               o->t1, o->t0);
     return QD_EXIT_OK;
 }
 
@@ -153,54 +139,49 @@ static int path_number(qd_ctx *ctx, const qd_model *m, const char *opt, const ch
     return cli_exit(qd_ctx_status(ctx));
 }
 
-static int run(path_run *r, const path_args *a) {
-    int rc = cli_load_derive(r->ctx, a->file, a->set.n, a->set.items, false, NULL, &r->mf, &r->e);
+static int run(cli_run *c) {
+    path_run *r = (path_run *)c;
+    const path_args *a = &r->a;
+    int rc = cli_load_derive(c->ctx, c->file, a->set.n, a->set.items, false, NULL, &c->mf, &r->e);
     qd_path_opts o = {0};
     double E = 0;
     r->energy = a->energy != NULL;
     if (rc == QD_EXIT_OK && a->energy)
-        rc = path_number(r->ctx, r->mf.model, "--energy", a->energy, &E);
+        rc = path_number(c->ctx, c->mf.model, "--energy", a->energy, &E);
     if (rc == QD_EXIT_OK)
         rc = read_ends(r, a, &o);
     if (rc != QD_EXIT_OK)
         return rc;
     o.segments = a->segments;
-    qd_status st = r->energy ? qd_path_find_energy(r->ctx, r->mf.model, r->e, E, &o, &r->ps)
-                             : qd_path_find(r->ctx, r->mf.model, r->e, &o, &r->ps);
+    qd_status st = r->energy ? qd_path_find_energy(c->ctx, c->mf.model, r->e, E, &o, &r->ps)
+                             : qd_path_find(c->ctx, c->mf.model, r->e, &o, &r->ps);
     if (st != QD_OK)
-        return cli_diag_ctx(r->ctx);
+        return cli_diag_ctx(c->ctx);
     qd_buf b = QD_BUF_INIT;
-    if ((a->format && !strcmp(a->format, "json") ? qd_path_json(r->ctx, &r->ps, r->mf.model, r->e, &b)
-                 : qd_path_print(r->ctx, &r->ps, r->mf.model, r->e, &o, &b)) != QD_OK) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(r->ctx);
-    }
-    return cli_emit(&b, "paths");
+    st = cli_json(a->format) ? qd_path_json(c->ctx, &r->ps, c->mf.model, r->e, &b)
+                             : qd_path_print(c->ctx, &r->ps, c->mf.model, r->e, &o, &b);
+    return cli_emit_status(c->ctx, st, &b, "paths");
+}
+
+static int check(cli_run *c) {
+    const path_args *a = &((path_run *)c)->a;
+    if (a->from && a->to)
+        return QD_EXIT_OK;
+    return cli_usage_error("path needs --from and --to (qdot path --help)");
+}
+
+static void run_free(cli_run *c) {
+    path_run *r = (path_run *)c;
+    qd_path_set_free(&r->ps);
+    cli_state_free(&r->g);
+    free(r->q0);
+    free(r->q1);
+    free(r->guess);
+    qd_eom_free(r->e);
 }
 
 int cli_cmd_path(int argc, char **argv) {
-    path_args a = {0};
-    int rc = cli_parse(&spec, argc, argv, &a, &a.file);
-    if (rc == QD_EXIT_OK && (!a.from || !a.to)) {
-        cli_diag_error("path needs --from and --to (qdot path --help)");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc != QD_EXIT_OK)
-        return rc;
-    path_run r = {.ctx = qd_ctx_new()};
-    if (!r.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(&r, &a);
-    qd_path_set_free(&r.ps);
-    cli_state_free(&r.g);
-    free(r.q0);
-    free(r.q1);
-    free(r.guess);
-    if (r.e)
-        qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(path_run, a), 0, check, run, run_free};
+    path_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

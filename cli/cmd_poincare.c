@@ -106,24 +106,18 @@ static int pc_plot_pick(const cli_sim *c, pc_args *p, const char **names, size_t
 int cli_cmd_poincare(int argc, char **argv) {
     pc_args p = {.n = 0};
     int rc = cli_parse(&spec, argc, argv, &p, &p.a.file);
-    if (rc == QD_EXIT_OK && (!p.section || !p.n)) {
-        cli_diag_error("%s is missing (qdot poincare --help)", p.section ? "--crossings" : "--section");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK && p.n > 1000000000) {
-        cli_diag_error("--crossings takes at most 1e9 crossings, not %zu", p.n);
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc == QD_EXIT_OK && p.a.plot.ycols) {
-        cli_diag_error("poincare --plot draws the crossings as q' against q: choose q with "
-                       "--phase, not --plot-y");
-        rc = QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && (!p.section || !p.n))
+        rc = cli_usage_error("%s is missing (qdot poincare --help)",
+                             p.section ? "--crossings" : "--section");
+    if (rc == QD_EXIT_OK && p.n > 1000000000)
+        rc = cli_usage_error("--crossings takes at most 1e9 crossings, not %zu", p.n);
+    if (rc == QD_EXIT_OK && p.a.plot.ycols)
+        rc = cli_usage_error("poincare --plot draws the crossings as q' against q: choose q with "
+                             "--phase, not --plot-y");
     if (rc == QD_EXIT_OK && (p.a.events.n || p.a.stops.n || p.a.output)) {
         /* shared with simulate; a section's rows are the crossings alone */
-        cli_diag_error("poincare takes its crossings from --section: %s is simulate's",
-                       p.a.output ? "--output" : "--event or --stop-at");
-        rc = QD_EXIT_USAGE;
+        rc = cli_usage_error("poincare takes its crossings from --section: %s is simulate's",
+                             p.a.output ? "--output" : "--event or --stop-at");
     }
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&p.a.plot, "poincare");

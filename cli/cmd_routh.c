@@ -8,13 +8,8 @@
  * When the ignored velocities have no closed form (L not quadratic in them,
  * outside legendre_family.c) R is kept implicit and said so (qdot/routh.h).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
-#include <stdlib.h>
-#include <string.h>
-#include "model_cli.h"
-#include "model_file.h"
 #include "qdot/routh.h"
 
 #define MAX_IGN 32
@@ -43,67 +38,56 @@ static const cli_spec spec = {
 };
 
 typedef struct routh_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
     qd_eom *e;
     qd_routh *r;
     routh_args a;
-    const char *file;
     size_t nign;
     const qd_expr *ign[MAX_IGN];
 } routh_run;
 
 static int emit(routh_run *r) {
-    const char *f = r->a.format ? r->a.format : "text";
     qd_buf b = QD_BUF_INIT;
-    qd_status st = !strcmp(f, "json")
-                       ? qd_routh_json(r->ctx, r->r, r->mf.model, r->e, r->mf.path, &b)
-                       : qd_routh_print(r->ctx, r->r, r->mf.model, r->e, r->mf.path,
-                                        !strcmp(f, "latex")   ? QD_FMT_LATEX
-                                        : !strcmp(f, "sympy") ? QD_FMT_SYMPY
-                                                              : QD_FMT_TEXT,
-                                        &b);
-    if (st != QD_OK) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(r->ctx);
-    }
-    return cli_emit(&b, "Routhian");
+    qd_status st = cli_json(r->a.format)
+                       ? qd_routh_json(r->c.ctx, r->r, r->c.mf.model, r->e, r->c.mf.path, &b)
+                       : qd_routh_print(r->c.ctx, r->r, r->c.mf.model, r->e, r->c.mf.path,
+                                        cli_format_or_text(r->a.format), &b);
+    return cli_emit_status(r->c.ctx, st, &b, "Routhian");
 }
 
-static int run(routh_run *r) {
-    int rc = cli_load_derive(r->ctx, r->file, r->a.set.n, r->a.set.items, true, NULL, &r->mf, &r->e);
+static int run(cli_run *c) {
+    routh_run *r = (routh_run *)c;
+    int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, true, NULL, &c->mf,
+                             &r->e);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_parse(r->ctx, r->mf.model, r->a.ignore, r->ign, MAX_IGN, &r->nign);
+        rc = cli_ignore_parse(c->ctx, c->mf.model, r->a.ignore, r->ign, MAX_IGN, &r->nign);
     /* forced: a cyclic coordinate with a generalized force is reduced too
      * (Byerly Art. 20a); any other refusal is shown at its statement */
     qd_routh_opts ro = {.implicit = true, .forced = true};
     if (rc == QD_EXIT_OK &&
-        !(r->r = qd_routh_derive_opts(r->ctx, r->mf.model, r->e, r->nign, r->ign, &ro))) {
-        rc = cli_ignore_check(r->ctx, &r->mf, r->e, r->ign, r->nign);
+        !(r->r = qd_routh_derive_opts(c->ctx, c->mf.model, r->e, r->nign, r->ign, &ro))) {
+        rc = cli_ignore_check(c->ctx, &c->mf, r->e, r->ign, r->nign);
         if (rc == QD_EXIT_OK)
-            rc = cli_diag_ctx(r->ctx);
+            rc = cli_diag_ctx(c->ctx);
     }
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
 
+static int check(cli_run *c) {
+    if (((routh_run *)c)->a.ignore)
+        return QD_EXIT_OK;
+    return cli_usage_error("routh needs --ignore with the cyclic coordinates to ignore "
+                           "(qdot routh --help)");
+}
+
+static void run_free(cli_run *c) {
+    routh_run *r = (routh_run *)c;
+    qd_routh_free(r->r);
+    qd_eom_free(r->e);
+}
+
 int cli_cmd_routh(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(routh_run, a), 0, check, run, run_free};
     routh_run r = {0};
-    int rc = cli_parse(&spec, argc, argv, &r.a, &r.file);
-    if (rc == QD_EXIT_OK && !r.a.ignore) {
-        cli_diag_error("routh needs --ignore with the cyclic coordinates to ignore "
-                       "(qdot routh --help)");
-        rc = QD_EXIT_USAGE;
-    }
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (!(r.ctx = qd_ctx_new())) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = run(&r);
-    qd_routh_free(r.r);
-    qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
-    return rc;
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -4,12 +4,9 @@
  * in a plane (qd_scatter_read, qd_scatter_answer_query, qd_scatter_render;
  * qdot/scatter.h, Desloge ch. 60-61).
  */
-#include "cli.h"
+#include "driver.h"
 
-#include "model_cli.h"
-#include "model_file.h"
 #include "opt_diag.h"
-#include "out.h"
 
 typedef struct sc_args {
     qd_scatter_text t;
@@ -45,43 +42,45 @@ static const cli_spec spec = {
     "classical scattering by a central potential: deflection and cross sections", opts, NULL, 1,
     1, "FILE", false};
 
-static int run(qd_ctx *ctx, const sc_args *a, const char *file, cli_model_file *mf,
-               qd_eom **e, qd_scatter **s) {
-    int rc = cli_load_derive(ctx, file, a->sets.n, a->sets.items, true, NULL, mf, e);
+typedef struct sc_run {
+    cli_run c;
+    sc_args a;
+    qd_eom *e;
+    qd_scatter *s;
+} sc_run;
+
+static int run(cli_run *c) {
+    sc_run *r = (sc_run *)c;
+    const sc_args *a = &r->a;
+    qd_ctx *ctx = c->ctx;
+    const cli_model_file *mf = &c->mf;
+    int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, true, NULL, &c->mf, &r->e);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_scatter_query q;
     qd_scatter_answer ans;
     qd_buf b = QD_BUF_INIT;
     qd_status st = qd_scatter_read(ctx, mf->model, &a->t, &q);
-    if (st == QD_OK && !(*s = qd_scatter_from_model(ctx, mf->model, *e, a->ignore, q.core, NULL)))
+    if (st == QD_OK &&
+        !(r->s = qd_scatter_from_model(ctx, mf->model, r->e, a->ignore, q.core, NULL)))
         st = qd_ctx_status(ctx);
     if (st == QD_OK)
-        st = qd_scatter_answer_query(ctx, *s, &q, &ans);
+        st = qd_scatter_answer_query(ctx, r->s, &q, &ans);
     if (st == QD_OK)
-        st = qd_scatter_render(ctx, *s, &ans, mf->path, cli_json(a->format), &b);
+        st = qd_scatter_render(ctx, r->s, &ans, mf->path, cli_json(a->format), &b);
     rc = st == QD_OK ? cli_out_emit(&b, a->out) : cli_diag_opts(ctx, &spec, a);
     qd_buf_free(&b);
     return rc;
 }
 
+static void run_free(cli_run *c) {
+    sc_run *r = (sc_run *)c;
+    qd_scatter_free(r->s);
+    qd_eom_free(r->e);
+}
+
 int cli_cmd_scatter(int argc, char **argv) {
-    sc_args a = {0};
-    const char *file = NULL;
-    int rc = cli_parse(&spec, argc, argv, &a, &file);
-    qd_ctx *ctx = rc == QD_EXIT_OK ? qd_ctx_new() : NULL;
-    if (rc != QD_EXIT_OK || !ctx) {
-        if (rc == QD_EXIT_OK)
-            cli_diag_error("out of memory");
-        return rc == QD_EXIT_OK ? QD_EXIT_FAIL : rc;
-    }
-    cli_model_file mf = {0};
-    qd_eom *e = NULL;
-    qd_scatter *s = NULL;
-    rc = run(ctx, &a, file, &mf, &e, &s);
-    qd_scatter_free(s);
-    qd_eom_free(e);
-    cli_model_file_free(&mf);
-    qd_ctx_free(ctx);
-    return rc;
+    static const cli_driver d = {&spec, offsetof(sc_run, a), 0, NULL, run, run_free};
+    sc_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

@@ -20,14 +20,11 @@
  *                               goes from A to B (qd_stability_scan), the
  *                               given values held at their numbers
  */
-#include "cli.h"
+#include "driver.h"
 
-#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "linear_cli.h"
-#include "model_cli.h"
-#include "model_file.h"
 #include "qdot/stability.h"
 
 typedef struct stab_args {
@@ -38,8 +35,8 @@ typedef struct stab_args {
 } stab_args;
 
 typedef struct stab_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;
+    stab_args a;
     qd_eom *e;
     qd_steady *s;
     char *driven;        /* the --driven items joined: "phi' = W, psi" */
@@ -47,8 +44,6 @@ typedef struct stab_run {
     qd_steady_set set;   /* every steady motion found */
     qd_stability *an;    /* set.count analyses */
 } stab_run;
-
-static const char *const formats[] = {"text", "json", NULL};
 
 #define OPT(...) CLI_OPT(stab_args, __VA_ARGS__)
 static const cli_opt opts[] = {
@@ -67,8 +62,8 @@ static const cli_opt opts[] = {
         "from A to B"),
     OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
     OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value (before everything else)"),
-    {"--format", NULL, CLI_CHOICE, offsetof(stab_args, format), "NAME", "text or json", formats,
-     NULL},
+    {"--format", NULL, CLI_CHOICE, offsetof(stab_args, format), "NAME", "text or json",
+     cli_formats_text_json, NULL},
     {0},
 };
 #undef OPT
@@ -78,30 +73,22 @@ static const cli_spec spec = {
     "steady motions of a system with cyclic coordinates, and their stability", opts, NULL,
     1, 1, "FILE", false};
 
-static int parse_args(int argc, char **argv, stab_args *a, const char **file) {
-    *a = (stab_args){0};
-    int rc = cli_parse(&spec, argc, argv, a, file);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    a->json = a->format && !strcmp(a->format, "json");
-    if (!a->ignore == !a->driven.n) {
-        cli_diag_error("give the cyclic coordinates with either --ignore (free momenta) or "
-                       "--driven (maintained rates) (qdot stability --help)");
-        return QD_EXIT_USAGE;
-    }
+static int check(cli_run *c) {
+    stab_args *a = &((stab_run *)c)->a;
+    a->json = cli_json(a->format);
+    if (!a->ignore == !a->driven.n)
+        return cli_usage_error("give the cyclic coordinates with either --ignore (free momenta) or "
+                               "--driven (maintained rates) (qdot stability --help)");
     if (a->driven.n && (a->momentum || a->omega)) {
         cli_diag_error("--momentum and --omega go with --ignore; a driven rate is given as "
                        "--driven \"q' = VALUE\"");
         return QD_EXIT_USAGE;
     }
-    if (a->steps > 100000) {
-        cli_diag_error("--steps takes a number of steps from 1 to 100000, not %zu", a->steps);
-        return QD_EXIT_USAGE;
-    }
-    if (a->steps && !a->scan) {
-        cli_diag_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
-        return QD_EXIT_USAGE;
-    }
+    if (a->steps > 100000)
+        return cli_usage_error("--steps takes a number of steps from 1 to 100000, not %zu",
+                               a->steps);
+    if (a->steps && !a->scan)
+        return cli_usage_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
     return QD_EXIT_OK;
 }
 
@@ -110,7 +97,7 @@ static int parse_args(int argc, char **argv, stab_args *a, const char **file) {
 /* The context's error: one about an option's text under that text with a
  * caret (the library names its field), any other as cli_diag_ctx. */
 static int steady_error(const stab_run *r, const stab_args *a) {
-    const qd_diag *d = qd_ctx_diag(r->ctx);
+    const qd_diag *d = qd_ctx_diag(r->c.ctx);
     const struct { const char *field, *opt, *text; } texts[] = {
         {"ignore", "--ignore", a->ignore}, {"driven", "--driven", r->driven},
         {"omega", "--omega", a->omega},    {"momentum", "--momentum", a->momentum},
@@ -119,9 +106,9 @@ static int steady_error(const stab_run *r, const stab_args *a) {
     for (size_t k = 0; d->located && k < sizeof texts / sizeof texts[0]; k++)
         if (texts[k].text && !strcmp(d->name, texts[k].field)) {
             cli_diag_show(texts[k].opt, texts[k].text, d);
-            return cli_exit(qd_ctx_status(r->ctx));
+            return cli_exit(qd_ctx_status(r->c.ctx));
         }
-    return cli_diag_ctx(r->ctx);
+    return cli_diag_ctx(r->c.ctx);
 }
 
 /* "a, b, c" of the --driven items, one list for the library. */
@@ -141,18 +128,16 @@ static char *join(const char *const *items, size_t n) {
 }
 
 static int prepare(stab_run *r, const stab_args *a) {
-    if (a->driven.n && !(r->driven = join(a->driven.items, a->driven.n))) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    r->s = qd_steady_derive_named(r->ctx, r->mf.model, r->e, a->ignore ? "ignore" : "driven",
+    if (a->driven.n && !(r->driven = join(a->driven.items, a->driven.n)))
+        return cli_out_of_memory();
+    r->s = qd_steady_derive_named(r->c.ctx, r->c.mf.model, r->e, a->ignore ? "ignore" : "driven",
                                   a->ignore ? a->ignore : r->driven, a->driven.n > 0);
     if (!r->s)
         return steady_error(r, a);
     qd_steady_spec spec = {.rates = a->driven.n ? r->driven : a->omega,
                            .rates_field = a->driven.n ? "driven" : "omega",
                            .momenta = a->momentum, .guess = a->guess, .at = a->at};
-    if (qd_steady_given_read(r->ctx, r->s, r->mf.model, &spec, &r->g) != QD_OK)
+    if (qd_steady_given_read(r->c.ctx, r->s, r->c.mf.model, &spec, &r->g) != QD_OK)
         return steady_error(r, a);
     return QD_EXIT_OK;
 }
@@ -161,18 +146,16 @@ static int prepare(stab_run *r, const stab_args *a) {
  * motions where the coordinates are singular (counted in set.nsingular). */
 static int solve(stab_run *r) {
     const qd_steady_given *g = &r->g;
-    if (qd_steady_find_all(r->ctx, r->s, g->nvals, g->syms, g->vals, g->xfix, g->wfix, g->pfix,
+    if (qd_steady_find_all(r->c.ctx, r->s, g->nvals, g->syms, g->vals, g->xfix, g->wfix, g->pfix,
                            g->pguess, &g->start, &r->set) != QD_OK)
-        return cli_diag_ctx(r->ctx);
+        return cli_diag_ctx(r->c.ctx);
     r->an = calloc(r->set.count + 1, sizeof *r->an);
-    if (!r->an) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->an)
+        return cli_out_of_memory();
     for (size_t k = 0; k < r->set.count; k++)
-        if (qd_stability_analyze(r->ctx, r->s, g->nvals, g->syms, g->vals, &r->set.pts[k],
+        if (qd_stability_analyze(r->c.ctx, r->s, g->nvals, g->syms, g->vals, &r->set.pts[k],
                                  &r->an[k]) != QD_OK)
-            return cli_diag_ctx(r->ctx);
+            return cli_diag_ctx(r->c.ctx);
     return QD_EXIT_OK;
 }
 
@@ -198,7 +181,7 @@ static char *scan_names(const qd_steady *s, size_t nu, const char **names) {
 static int scan(stab_run *r, const stab_args *a) {
     char name[128];
     double lo, hi;
-    int rc = cli_scan_range(r->ctx, a->scan, name, sizeof name, &lo, &hi);
+    int rc = cli_scan_range(r->c.ctx, a->scan, name, sizeof name, &lo, &hi);
     size_t nu = r->s->nkeep + 2 * r->s->ncyc;
     const char **names = calloc(nu + 1, sizeof *names);
     char *text = names ? scan_names(r->s, nu, names) : NULL;
@@ -207,16 +190,15 @@ static int scan(stab_run *r, const stab_args *a) {
     const qd_steady_given *g = &r->g;
     qd_scan_opts o = {.steps = a->steps, .about = g->held};
     qd_scan sc = {0};
-    if (rc == QD_EXIT_OK && qd_stability_scan(r->ctx, r->s, r->mf.model, name, lo, hi, g->xfix,
+    if (rc == QD_EXIT_OK && qd_stability_scan(r->c.ctx, r->s, r->c.mf.model, name, lo, hi, g->xfix,
                                               g->wfix, g->pfix, g->pguess, &g->start, &o,
                                               &sc) != QD_OK) {
-        rc = cli_exit(qd_ctx_status(r->ctx));
-        cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
+        rc = cli_exit(qd_ctx_status(r->c.ctx));
+        cli_diag_error("--scan: %s", qd_ctx_message(r->c.ctx));
     } else if (rc == QD_EXIT_OK) {
         qd_buf followed = QD_BUF_INIT;
         if (qd_stability_scan_followed(r->s, sc.damped, &followed) != QD_OK) {
-            cli_diag_error("out of memory");
-            rc = QD_EXIT_FAIL;
+            rc = cli_out_of_memory();
         } else {
             cli_scan_view v = {name, names, qd_buf_str(&followed), "steady_motion"};
             rc = cli_scan_emit(&v, &sc, a->json);
@@ -231,42 +213,41 @@ static int scan(stab_run *r, const stab_args *a) {
 
 static int emit(stab_run *r, bool json) {
     qd_buf b = QD_BUF_INIT;
-    qd_stability_report rep = {r->s, &r->g, &r->set, r->an, r->mf.path};
-    if (qd_stability_print(r->ctx, &rep, json, &b) != QD_OK) {
+    qd_stability_report rep = {r->s, &r->g, &r->set, r->an, r->c.mf.path};
+    if (qd_stability_print(r->c.ctx, &rep, json, &b) != QD_OK) {
         qd_buf_free(&b);
-        return cli_diag_ctx(r->ctx);
+        return cli_diag_ctx(r->c.ctx);
     }
     return cli_emit(&b, "result");
 }
 
-int cli_cmd_stability(int argc, char **argv) {
-    stab_args a;
-    const char *file = NULL;
-    int rc = parse_args(argc, argv, &a, &file);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    stab_run r = {.ctx = qd_ctx_new()};
-    if (!r.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = cli_load_derive(r.ctx, file, a.sets.n, a.sets.items, false, NULL, &r.mf, &r.e);
+static int run(cli_run *c) {
+    stab_run *r = (stab_run *)c;
+    int rc = cli_load_derive(c->ctx, c->file, r->a.sets.n, r->a.sets.items, false, NULL, &c->mf,
+                             &r->e);
     if (rc == QD_EXIT_OK)
-        rc = prepare(&r, &a);
+        rc = prepare(r, &r->a);
     if (rc == QD_EXIT_OK)
-        rc = a.scan ? scan(&r, &a) : solve(&r);
-    if (rc == QD_EXIT_OK && !a.scan)
-        rc = emit(&r, a.json);
-    for (size_t k = 0; r.an && k < r.set.count; k++)
-        qd_stability_free(&r.an[k]);
-    free(r.an);
-    qd_steady_set_free(&r.set);
-    qd_steady_given_free(&r.g);
-    qd_steady_free(r.s);
-    free(r.driven);
-    if (r.e)
-        qd_eom_free(r.e);
-    cli_model_file_free(&r.mf);
-    qd_ctx_free(r.ctx);
+        rc = r->a.scan ? scan(r, &r->a) : solve(r);
+    if (rc == QD_EXIT_OK && !r->a.scan)
+        rc = emit(r, r->a.json);
     return rc;
+}
+
+static void run_free(cli_run *c) {
+    stab_run *r = (stab_run *)c;
+    for (size_t k = 0; r->an && k < r->set.count; k++)
+        qd_stability_free(&r->an[k]);
+    free(r->an);
+    qd_steady_set_free(&r->set);
+    qd_steady_given_free(&r->g);
+    qd_steady_free(r->s);
+    free(r->driven);
+    qd_eom_free(r->e);
+}
+
+int cli_cmd_stability(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(stab_run, a), 0, check, run, run_free};
+    stab_run r = {0};
+    return cli_drive(&d, &r.c, argc, argv);
 }

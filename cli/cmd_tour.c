@@ -7,7 +7,7 @@
  * compiled program.  (The model language, `qdot eom FILE`, will replace this
  * with a real system file.)
  */
-#include "cli.h"
+#include "driver.h"
 
 static void show(qd_ctx *ctx, const char *label, const qd_expr *e, qd_format fmt) {
     qd_buf b = QD_BUF_INIT;
@@ -29,13 +29,8 @@ static const cli_spec tour_spec = {
     "tour", "", "a one-minute tour of the symbolic kernel", tour_opts, NULL, 0, 0, NULL, false,
 };
 
-int cli_cmd_tour(int argc, char **argv) {
-    int rc = cli_parse(&tour_spec, argc, argv, NULL, NULL);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    qd_ctx *ctx = qd_ctx_new();
-    if (!ctx)
-        return QD_EXIT_FAIL;
+static int run(cli_run *c) {
+    qd_ctx *ctx = c->ctx;
     const qd_expr *q1 = qd_coord(ctx, "theta1"), *q2 = qd_coord(ctx, "theta2");
     const char *params[] = {"m1", "m2", "l1", "l2", "g"};
     for (size_t i = 0; i < 5; i++)
@@ -45,10 +40,8 @@ int cli_cmd_tour(int argc, char **argv) {
     const qd_expr *x2 = read_expr(ctx, "l1*sin(theta1) + l2*sin(theta2)");
     const qd_expr *y2 = read_expr(ctx, "-l1*cos(theta1) - l2*cos(theta2)");
     const qd_expr *T = read_expr(ctx, "m1/2*(l1*theta1')^2");
-    if (!x2 || !y2 || !T) {
-        qd_ctx_free(ctx);
+    if (!x2 || !y2 || !T)
         return QD_EXIT_FAIL;
-    }
     show(ctx, "x2 =", x2, QD_FMT_TEXT);
     show(ctx, "y2 =", y2, QD_FMT_TEXT);
 
@@ -73,11 +66,8 @@ int cli_cmd_tour(int argc, char **argv) {
     for (int j = 0; j < 2; j++)
         for (int k = 0; k < 2; k++)
             M[2 * j + k] = qd_simplify(ctx, qd_diff(ctx, qd_diff(ctx, T, v[j]), v[k]));
-    if (qd_ctx_status(ctx) != QD_OK) {
-        int rc = cli_diag_ctx(ctx);
-        qd_ctx_free(ctx);
-        return rc;
-    }
+    if (qd_ctx_status(ctx) != QD_OK)
+        return cli_diag_ctx(ctx);
     show(ctx, "M11 =", M[0], QD_FMT_TEXT);
     show(ctx, "M12 =", M[1], QD_FMT_TEXT);
     show(ctx, "M22 =", M[3], QD_FMT_TEXT);
@@ -97,11 +87,8 @@ int cli_cmd_tour(int argc, char **argv) {
     const qd_expr *in[6] = {q1, q2, qd_lookup(ctx, "m1"), m2, qd_lookup(ctx, "l1"),
                             qd_lookup(ctx, "l2")};
     qd_prog *p = qd_prog_new(ctx, 6, in, 3, outs);
-    if (!p) {
-        int rc = cli_diag_ctx(ctx);
-        qd_ctx_free(ctx);
-        return rc;
-    }
+    if (!p)
+        return cli_diag_ctx(ctx);
     double x[6] = {0.3, -0.2, 1, 1, 1, 1}, y[3];
     qd_prog_run(p, x, y);
     printf("  M = [[%.6f, %.6f], [%.6f, %.6f]]   (%zu instructions)\n", y[0], y[1], y[1], y[2],
@@ -109,6 +96,11 @@ int cli_cmd_tour(int argc, char **argv) {
     qd_prog_free(p);
     printf("\nExpressions are hash-consed: this tour made %zu distinct nodes.\n",
            qd_ctx_node_count(ctx));
-    qd_ctx_free(ctx);
     return QD_EXIT_OK;
+}
+
+int cli_cmd_tour(int argc, char **argv) {
+    static const cli_driver d = {&tour_spec, 0, 0, NULL, run, NULL};
+    cli_run r = {0};
+    return cli_drive(&d, &r, argc, argv);
 }

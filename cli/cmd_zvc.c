@@ -9,20 +9,19 @@
 #include "linear_cli.h"
 
 #include <math.h>
-#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
 #include "qdot/zvc.h"
 
 typedef struct zvc_args {
-    const char *file, *box, *level, *through, *at, *format;
+    const char *box, *level, *through, *at, *format;
     size_t cells;
     cli_list set;
 } zvc_args;
 
 typedef struct zvc_run {
-    cli_lin_run lr;
+    cli_lin_run lr; /* first: the run state starts with its cli_run */
+    zvc_args a;
     qd_zvc z;
     qd_zvc_box box;
     double level;
@@ -68,11 +67,10 @@ static int level_at(zvc_run *r, const char *what, const char *text, bool rest) {
     int rc = cli_lin_point(lr, what, text, r->q, rest ? NULL : qd);
     if (rc == QD_EXIT_OK) {
         cli_lin_set_state(lr, r->q, qd);
-        if (qd_eval(lr->ctx, rest ? r->z.W : r->z.h, lr->st.n, lr->st.syms, lr->st.vals,
+        if (qd_eval(lr->c.ctx, rest ? r->z.W : r->z.h, lr->st.n, lr->st.syms, lr->st.vals,
                     &r->level) != QD_OK || !isfinite(r->level)) {
-            qd_ctx_clear_error(lr->ctx);
-            cli_diag_error("%s: Jacobi's integral has no finite value there", what);
-            rc = QD_EXIT_USAGE;
+            qd_ctx_clear_error(lr->c.ctx);
+            rc = cli_usage_error("%s: Jacobi's integral has no finite value there", what);
         }
     }
     free(qd);
@@ -81,21 +79,19 @@ static int level_at(zvc_run *r, const char *what, const char *text, bool rest) {
 
 static int read_level(zvc_run *r, const zvc_args *a) {
     int given = !!a->level + !!a->through + !!a->at;
-    if (given != 1) {
-        cli_diag_error("give the level once: --level H, --through POINT or --at STATE");
-        return QD_EXIT_USAGE;
-    }
+    if (given != 1)
+        return cli_usage_error("give the level once: --level H, --through POINT or --at STATE");
     if (a->through)
         return level_at(r, "--through", a->through, true);
     if (a->at)
         return level_at(r, "--at", a->at, false);
-    if (qd_model_number(r->lr.ctx, r->lr.mf.model, a->level, &r->level) == QD_OK)
+    if (qd_model_number(r->lr.c.ctx, r->lr.c.mf.model, a->level, &r->level) == QD_OK)
         return QD_EXIT_OK;
-    cli_diag_show("--level", a->level, qd_ctx_diag(r->lr.ctx));
-    return cli_exit(qd_ctx_status(r->lr.ctx));
+    cli_diag_show("--level", a->level, qd_ctx_diag(r->lr.c.ctx));
+    return cli_exit(qd_ctx_status(r->lr.c.ctx));
 }
 
-static int run(zvc_run *r, const zvc_args *a) {
+static int picture(zvc_run *r, const zvc_args *a) {
     cli_lin_run *lr = &r->lr;
     bool csv = a->format && !strcmp(a->format, "csv");
     if (lr->e->n < 2) {
@@ -105,56 +101,57 @@ static int run(zvc_run *r, const zvc_args *a) {
     r->q = calloc(lr->e->n + 1, sizeof *r->q);
     if (!r->q)
         return QD_EXIT_FAIL;
-    if (qd_zvc_box_read(lr->ctx, lr->mf.model, lr->e, a->box, &r->box) != QD_OK) {
-        cli_diag_show("--box", a->box, qd_ctx_diag(lr->ctx));
-        return cli_exit(qd_ctx_status(lr->ctx));
+    if (qd_zvc_box_read(lr->c.ctx, lr->c.mf.model, lr->e, a->box, &r->box) != QD_OK) {
+        cli_diag_show("--box", a->box, qd_ctx_diag(lr->c.ctx));
+        return cli_exit(qd_ctx_status(lr->c.ctx));
     }
-    if (qd_zvc_derive(lr->ctx, lr->mf.model, lr->e, &r->z) != QD_OK)
-        return cli_diag_ctx(lr->ctx);
+    if (qd_zvc_derive(lr->c.ctx, lr->c.mf.model, lr->e, &r->z) != QD_OK)
+        return cli_diag_ctx(lr->c.ctx);
     int rc = read_level(r, a);
     if (rc != QD_EXIT_OK)
         return rc;
     cli_lin_set_state(lr, r->q, NULL);
     r->box.nx = r->box.ny = a->cells ? a->cells : 400;
     /* csv holds the curves only: no equilibria sought */
-    if (qd_zvc_picture_make(lr->ctx, lr->mf.model, lr->e, &r->z, &r->box, lr->st.n,
+    if (qd_zvc_picture_make(lr->c.ctx, lr->c.mf.model, lr->e, &r->z, &r->box, lr->st.n,
                             lr->st.syms, lr->st.vals, r->level, !csv,
                             &r->pic) != QD_OK)
-        return cli_diag_ctx(lr->ctx);
+        return cli_diag_ctx(lr->c.ctx);
     return QD_EXIT_OK;
 }
 
-int cli_cmd_zvc(int argc, char **argv) {
-    zvc_args a = {0};
-    int rc = cli_parse(&spec, argc, argv, &a, &a.file);
+static int check(cli_run *c) {
+    const zvc_args *a = &((zvc_run *)c)->a;
+    if (a->box && (!a->cells || (a->cells >= 2 && a->cells <= 4000)))
+        return QD_EXIT_OK;
+    return cli_usage_error(!a->box ? "give the plane of the curves with --box \"x=A:B, y=C:D\""
+                                   : "--cells takes a number of grid cells from 2 to 4000");
+}
+
+static int run(cli_run *c) {
+    zvc_run *r = (zvc_run *)c;
+    int rc = cli_lin_load(&r->lr, c->file, r->a.set.items, r->a.set.n);
+    if (rc == QD_EXIT_OK)
+        rc = picture(r, &r->a);
     if (rc != QD_EXIT_OK)
         return rc;
-    if (!a.box || (a.cells && (a.cells < 2 || a.cells > 4000))) {
-        cli_diag_error(!a.box ? "give the plane of the curves with --box \"x=A:B, y=C:D\""
-                              : "--cells takes a number of grid cells from 2 to 4000");
-        return QD_EXIT_USAGE;
-    }
-    zvc_run r = {.lr = {.ctx = qd_ctx_new()}};
-    if (!r.lr.ctx) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
-    rc = cli_lin_load(&r.lr, a.file, a.set.items, a.set.n);
-    if (rc == QD_EXIT_OK)
-        rc = run(&r, &a);
-    if (rc == QD_EXIT_OK) {
-        qd_buf b = QD_BUF_INIT;
-        const char *f = a.format ? a.format : "text";
-        qd_status st = (!strcmp(f, "csv")    ? qd_zvc_csv
-                        : !strcmp(f, "json") ? qd_zvc_json
-                                             : qd_zvc_print)(r.lr.ctx, r.lr.e, &r.pic, &b);
-        rc = st == QD_OK ? cli_emit(&b, "zero-velocity curves") : cli_diag_ctx(r.lr.ctx);
-        if (st != QD_OK)
-            qd_buf_free(&b);
-    }
-    free(r.q);
-    qd_zvc_picture_free(&r.pic);
-    cli_lin_free(&r.lr);
-    qd_ctx_free(r.lr.ctx);
-    return rc;
+    qd_buf b = QD_BUF_INIT;
+    const char *f = r->a.format ? r->a.format : "text";
+    qd_status st = (!strcmp(f, "csv")    ? qd_zvc_csv
+                    : !strcmp(f, "json") ? qd_zvc_json
+                                         : qd_zvc_print)(c->ctx, r->lr.e, &r->pic, &b);
+    return cli_emit_status(c->ctx, st, &b, "zero-velocity curves");
+}
+
+static void run_free(cli_run *c) {
+    zvc_run *r = (zvc_run *)c;
+    free(r->q);
+    qd_zvc_picture_free(&r->pic);
+    cli_lin_free(&r->lr);
+}
+
+int cli_cmd_zvc(int argc, char **argv) {
+    static const cli_driver d = {&spec, offsetof(zvc_run, a), 0, check, run, run_free};
+    zvc_run r = {0};
+    return cli_drive(&d, &r.lr.c, argc, argv);
 }

@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "model_cli.h"
 #include "qdot/constrained.h"
 
 static int reduce(cli_lin_run *r, const double *q0, const char *indep,
@@ -20,19 +19,17 @@ static int reduce(cli_lin_run *r, const double *q0, const char *indep,
     int rc = QD_EXIT_OK;
     if (indep) {
         ix = calloc(r->e->n + 1, sizeof *ix);
-        if (!ix) {
-            cli_diag_error("out of memory");
-            return QD_EXIT_FAIL;
-        }
-        if (qd_constrained_indep_read(r->ctx, r->e, indep, ix) != QD_OK)
-            rc = cli_state_diag(r->ctx, "--independent", indep);
+        if (!ix)
+            return cli_out_of_memory();
+        if (qd_constrained_indep_read(r->c.ctx, r->e, indep, ix) != QD_OK)
+            rc = cli_state_diag(r->c.ctx, "--independent", indep);
     }
     cli_lin_set_state(r, q0, NULL);
     if (rc == QD_EXIT_OK &&
-        qd_constrained_linear_about(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, ix, c) !=
+        qd_constrained_linear_about(r->c.ctx, r->e, r->st.n, r->st.syms, r->st.vals, ix, c) !=
             QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(r->ctx));
-        rc = qd_ctx_status(r->ctx) == QD_ERR_ARG || qd_ctx_status(r->ctx) == QD_ERR_UNSUPPORTED
+        cli_diag_error("%s", qd_ctx_message(r->c.ctx));
+        rc = qd_ctx_status(r->c.ctx) == QD_ERR_ARG || qd_ctx_status(r->c.ctx) == QD_ERR_UNSUPPORTED
                  ? QD_EXIT_USAGE
                  : QD_EXIT_FAIL;
     }
@@ -45,9 +42,9 @@ int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0) {
         return cli_lin_coords(r, "--about", about, q0);
     qd_equilibrium_choice ch = {0};
     int rc = QD_EXIT_OK;
-    if (qd_equilibria_choose(r->ctx, r->e, r->mf.model, r->st.n, r->st.syms, r->st.vals, &ch) !=
+    if (qd_equilibria_choose(r->c.ctx, r->e, r->c.mf.model, r->st.n, r->st.syms, r->st.vals, &ch) !=
         QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(r->ctx));
+        cli_diag_error("%s", qd_ctx_message(r->c.ctx));
         rc = QD_EXIT_FAIL;
     } else if (!ch.pt) {
         cli_diag_error("no equilibrium found on the constraints (qdot equilibria lists none): "
@@ -69,27 +66,19 @@ int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0) {
     return rc;
 }
 
-/* What the library printed into b (status st) to standard output. */
-static int emit(qd_ctx *ctx, qd_status st, qd_buf *b, const char *what) {
-    if (st != QD_OK) {
-        qd_buf_free(b);
-        return cli_diag_ctx(ctx);
-    }
-    return cli_emit(b, what);
-}
-
 int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json) {
     qd_constrained_linear c = {0};
     qd_modes_result res = {0};
     int rc = reduce(r, q0, indep, &c);
-    if (rc == QD_EXIT_OK && qd_modes_solve(r->ctx, &c.lin, &res) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(r->ctx));
+    if (rc == QD_EXIT_OK && qd_modes_solve(r->c.ctx, &c.lin, &res) != QD_OK) {
+        cli_diag_error("%s", qd_ctx_message(r->c.ctx));
         rc = QD_EXIT_FAIL;
     }
     if (rc == QD_EXIT_OK) {
         qd_buf b = QD_BUF_INIT;
-        rc = emit(r->ctx, qd_constrained_modes_print(r->ctx, r->e, &c, &res, json, &b), &b,
-                  "modes");
+        rc = cli_emit_status(r->c.ctx,
+                             qd_constrained_modes_print(r->c.ctx, r->e, &c, &res, json, &b),
+                             &b, "modes");
     }
     qd_modes_result_free(&res);
     qd_constrained_linear_free(&c);
@@ -99,30 +88,29 @@ int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json
 int cli_con_linearize(cli_lin_run *r, const double *q0, const char *indep, bool json) {
     qd_constrained_linear c = {0};
     qd_modes_result res = {0};
-    size_t nu = qd_model_ninputs(r->mf.model);
+    size_t nu = qd_model_ninputs(r->c.mf.model);
     double *A = NULL, *B = NULL;
     const qd_expr **u = NULL;
     int rc = reduce(r, q0, indep, &c);
     if (rc == QD_EXIT_OK && (!(A = calloc(4 * c.r * c.r + 1, sizeof *A)) ||
                              !(B = calloc(2 * c.r * nu + 1, sizeof *B)) ||
-                             !(u = calloc(nu + 1, sizeof *u)))) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+                             !(u = calloc(nu + 1, sizeof *u))))
+        rc = cli_out_of_memory();
     for (size_t k = 0; rc == QD_EXIT_OK && k < nu; k++)
-        u[k] = qd_model_input(r->mf.model, k);
-    if (rc == QD_EXIT_OK && (qd_constrained_state_matrix(r->ctx, &c, A) != QD_OK ||
-                             qd_constrained_input_matrix(r->ctx, r->e, &c, nu, u, r->st.n,
+        u[k] = qd_model_input(r->c.mf.model, k);
+    if (rc == QD_EXIT_OK && (qd_constrained_state_matrix(r->c.ctx, &c, A) != QD_OK ||
+                             qd_constrained_input_matrix(r->c.ctx, r->e, &c, nu, u, r->st.n,
                                                          r->st.syms, r->st.vals, B) != QD_OK ||
-                             qd_modes_solve(r->ctx, &c.lin, &res) != QD_OK)) {
-        cli_diag_error("%s", qd_ctx_message(r->ctx));
+                             qd_modes_solve(r->c.ctx, &c.lin, &res) != QD_OK)) {
+        cli_diag_error("%s", qd_ctx_message(r->c.ctx));
         rc = QD_EXIT_FAIL;
     }
     if (rc == QD_EXIT_OK) {
         const qd_constrained_statespace ss = {A, nu, u, B};
         qd_buf b = QD_BUF_INIT;
-        rc = emit(r->ctx, qd_constrained_statespace_print(r->ctx, r->e, &c, &ss, &res, json, &b),
-                  &b, "state-space form");
+        rc = cli_emit_status(
+            r->c.ctx, qd_constrained_statespace_print(r->c.ctx, r->e, &c, &ss, &res, json, &b),
+            &b, "state-space form");
     }
     free(A);
     free(B);

@@ -8,13 +8,30 @@
 #include <stdio.h>
 #include <string.h>
 
-void cli_diag_error(const char *fmt, ...) {
-    va_list ap;
-    va_start(ap, fmt);
+static void verror(const char *fmt, va_list ap) {
     fputs("qdot: error: ", stderr);
     vfprintf(stderr, fmt, ap);
     fputc('\n', stderr);
+}
+
+void cli_diag_error(const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    verror(fmt, ap);
     va_end(ap);
+}
+
+int cli_out_of_memory(void) {
+    cli_diag_error("out of memory");
+    return QD_EXIT_FAIL;
+}
+
+int cli_usage_error(const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    verror(fmt, ap);
+    va_end(ap);
+    return QD_EXIT_USAGE;
 }
 
 /* The library's renderer (qd_diag_format) for every kind of input. */
@@ -74,4 +91,18 @@ bool cli_format(const char *name, qd_format *out) {
             return true;
         }
     return false;
+}
+
+qd_render_format cli_render_format(const char *name) {
+    qd_render_format f = QD_RENDER_TEXT;
+    if (name)
+        qd_render_format_parse(name, &f);
+    return f;
+}
+
+qd_format cli_format_or_text(const char *name) {
+    qd_format f = QD_FMT_TEXT;
+    if (name)
+        cli_format(name, &f);
+    return f;
 }

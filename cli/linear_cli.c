@@ -16,7 +16,7 @@
 
 int cli_lin_load_model(cli_lin_run *r, const char *file, const char *const *sets,
                        size_t nsets) {
-    return cli_load(r->ctx, file, nsets, sets, false, &r->mf);
+    return cli_load(r->c.ctx, file, nsets, sets, false, &r->c.mf);
 }
 
 int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size_t nsets) {
@@ -26,24 +26,22 @@ int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size
 
 int cli_lin_derive(cli_lin_run *r) {
     qd_eom_opts opts = {.eliminate = true};
-    if (!(r->e = qd_eom_derive_opts(r->ctx, r->mf.model, &opts)))
-        return cli_eom_derive_error(r->ctx, &r->mf);
+    if (!(r->e = qd_eom_derive_opts(r->c.ctx, r->c.mf.model, &opts)))
+        return cli_eom_derive_error(r->c.ctx, &r->c.mf);
     return cli_lin_setup(r);
 }
 
 /* The constraints kept with multipliers are reduced on their manifold by
  * the library (qdot/constrained.h). */
 int cli_lin_setup(cli_lin_run *r) {
-    int rc = cli_state_init(r->ctx, r->mf.model, &r->st);
+    int rc = cli_state_init(r->c.ctx, r->c.mf.model, &r->st);
     if (rc != QD_EXIT_OK)
         return rc;
     /* the slot of each independent coordinate in the model's state */
-    size_t nq = qd_model_ncoords(r->mf.model);
+    size_t nq = qd_model_ncoords(r->c.mf.model);
     r->slot = malloc((r->e->n + 1) * sizeof *r->slot);
-    if (!r->slot) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (!r->slot)
+        return cli_out_of_memory();
     for (size_t j = 0; j < r->e->n; j++) {
         r->slot[j] = SIZE_MAX;
         for (size_t i = 0; i < nq; i++)
@@ -62,14 +60,13 @@ void cli_lin_free(cli_lin_run *r) {
     cli_state_free(&r->st);
     free(r->slot);
     r->slot = NULL;
-    if (r->e)
-        qd_eom_free(r->e);
+    qd_eom_free(r->e);
     r->e = NULL;
-    cli_model_file_free(&r->mf);
+    cli_model_file_free(&r->c.mf);
 }
 
 void cli_lin_set_state(cli_lin_run *r, const double *q, const double *qd) {
-    size_t nq = qd_model_ncoords(r->mf.model);
+    size_t nq = qd_model_ncoords(r->c.mf.model);
     for (size_t j = 0; j < r->e->n; j++) {
         r->st.vals[r->slot[j]] = q[j];
         r->st.vals[nq + r->slot[j]] = qd ? qd[j] : 0;
@@ -88,20 +85,18 @@ static size_t eom_index(const cli_lin_run *r, size_t i) {
 /* The reader refuses t, the parameters, the coordinates a constraint
  * eliminated and, for a point at rest (qd NULL), the velocities. */
 int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q, double *qd) {
-    const qd_model *m = r->mf.model;
+    const qd_model *m = r->c.mf.model;
     size_t nq = qd_model_ncoords(m);
     cli_state s = {0};
-    int rc = cli_state_init(r->ctx, m, &s);
+    int rc = cli_state_init(r->c.ctx, m, &s);
     bool *given = rc == QD_EXIT_OK ? calloc(s.n, sizeof *given) : NULL;
-    if (rc == QD_EXIT_OK && !given) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && !given)
+        rc = cli_out_of_memory();
     qd_state_read_opts o = {
         .refuse = QD_STATE_TIME | QD_STATE_PARAMS | (qd ? 0 : QD_STATE_VELOCITIES),
         .independent = r->e->q, .nindependent = r->e->n, .given = given};
     if (rc == QD_EXIT_OK)
-        rc = cli_state_read(r->ctx, m, what, text, &s, &o);
+        rc = cli_state_read(r->c.ctx, m, what, text, &s, &o);
     for (size_t i = 0; rc == QD_EXIT_OK && i < nq; i++) {
         size_t j = eom_index(r, i);
         if (given[qd_slot_coord(nq, i)])
@@ -134,9 +129,9 @@ int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi) {
     qd_state_read_opts o = {
         .refuse = QD_STATE_TIME | QD_STATE_PARAMS | QD_STATE_VELOCITIES | QD_STATE_EXTRA,
         .independent = r->e->q, .nindependent = r->e->n, .given = given};
-    if (rc == QD_EXIT_OK && qd_state_read_ranges(r->ctx, r->mf.model, &r->st, text, &o, l, h) !=
+    if (rc == QD_EXIT_OK && qd_state_read_ranges(r->c.ctx, r->c.mf.model, &r->st, text, &o, l, h) !=
                                 QD_OK)
-        rc = cli_state_diag(r->ctx, "--box", text);
+        rc = cli_state_diag(r->c.ctx, "--box", text);
     for (size_t j = 0; rc == QD_EXIT_OK && j < r->e->n; j++)
         if (given[r->slot[j]]) {
             lo[j] = l[r->slot[j]];
@@ -158,8 +153,8 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
     int rc = q && lo && hi && angle ? QD_EXIT_OK : QD_EXIT_FAIL;
     qd_equilibria_opts o = {0};
     if (rc == QD_EXIT_OK &&
-        qd_equilibria_default_box(r->ctx, r->e, r->mf.model, angle, lo, hi) != QD_OK)
-        rc = cli_diag_ctx(r->ctx);
+        qd_equilibria_default_box(r->c.ctx, r->e, r->c.mf.model, angle, lo, hi) != QD_OK)
+        rc = cli_diag_ctx(r->c.ctx);
     if (rc == QD_EXIT_OK && near && (rc = cli_lin_coords(r, "--near", near, q)) == QD_EXIT_OK)
         o.near = q;
     if (rc == QD_EXIT_OK && box && (rc = cli_lin_box(r, box, lo, hi)) == QD_EXIT_OK) {
@@ -168,11 +163,11 @@ int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equ
         o.numeric_only = true;
     }
     if (rc == QD_EXIT_OK &&
-        qd_equilibria_find(r->ctx, r->e, r->mf.model, r->st.n, r->st.syms, r->st.vals, &o,
+        qd_equilibria_find(r->c.ctx, r->e, r->c.mf.model, r->st.n, r->st.syms, r->st.vals, &o,
                            out) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(r->ctx));
+        cli_diag_error("%s", qd_ctx_message(r->c.ctx));
         /* a constraint the manifold search does not take (with t, with velocities) */
-        rc = qd_ctx_status(r->ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+        rc = qd_ctx_status(r->c.ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
     }
     free(q);
     free(lo);

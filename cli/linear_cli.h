@@ -7,9 +7,8 @@
 #ifndef QDOT_CLI_LINEAR_CLI_H
 #define QDOT_CLI_LINEAR_CLI_H
 
-#include "cli.h"
+#include "driver.h"
 #include "qdot/json.h"
-#include "model_file.h"
 #include "qdot/equilibria.h"
 #include "qdot/modes.h"
 #include "state.h"
@@ -17,8 +16,7 @@
 #define QD_LIN_MAX_SETS 64
 
 typedef struct cli_lin_run {
-    qd_ctx *ctx;
-    cli_model_file mf;
+    cli_run c;          /* first: a driven command's run state may start with this */
     qd_eom *e;
     cli_state st;       /* the model's state: coordinates 0, parameters at their values */
     size_t *slot;      /* e->n: the slot in st of each coordinate of the equations */

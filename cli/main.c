@@ -120,6 +120,5 @@ static int run(int argc, char **argv) {
              * option table (cli_parse) */
             return commands[i].run(argc - 2, argv + 2);
         }
-    cli_diag_error("unknown command '%s' (try 'qdot --help')", argv[1]);
-    return QD_EXIT_USAGE;
+    return cli_usage_error("unknown command '%s' (try 'qdot --help')", argv[1]);
 }

@@ -20,10 +20,8 @@ static int load_with(qd_ctx *ctx, const char *file, size_t nsets, const char *co
     char names[QD_CLI_MAX_LIST][128];
     qd_param_value given[QD_CLI_MAX_LIST];
     *mf = (cli_model_file){0};
-    if (nsets > QD_CLI_MAX_LIST) {
-        cli_diag_error("at most %d parameters can be set", QD_CLI_MAX_LIST);
-        return QD_EXIT_USAGE;
-    }
+    if (nsets > QD_CLI_MAX_LIST)
+        return cli_usage_error("at most %d parameters can be set", QD_CLI_MAX_LIST);
     for (size_t i = 0; i < nsets; i++) {
         int rc = cli_state_read_set(ctx, sets[i], names[i], sizeof names[i], &given[i].value);
         if (rc != QD_EXIT_OK)
@@ -101,10 +99,8 @@ static bool has_label(const char *s) {
 /* "KEYWORD [LABEL: ]TEXT" added to the model as one more statement. */
 static int add_statement(cli_model_file *mf, const char *opt, const char *keyword,
                          const char *label, const char *text) {
-    if (strchr(text, '\n') || strchr(text, '#')) {
-        cli_diag_error("%s takes one statement on one line, without comments", opt);
-        return QD_EXIT_USAGE;
-    }
+    if (strchr(text, '\n') || strchr(text, '#'))
+        return cli_usage_error("%s takes one statement on one line, without comments", opt);
     char lab[80] = "";
     if (!has_label(text))
         snprintf(lab, sizeof lab, "%s: ", label);
@@ -118,10 +114,8 @@ static int add_statement(cli_model_file *mf, const char *opt, const char *keywor
     qd_buf_free(&stmt);
     if (st == QD_OK)
         return QD_EXIT_OK;
-    if (st == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (st == QD_ERR_NOMEM)
+        return cli_out_of_memory();
     statement_diag(&d, opt, text, base);
     return QD_EXIT_USAGE;
 }
@@ -143,22 +137,17 @@ static int ignore_item(qd_ctx *ctx, const qd_model *m, const char *list, const c
     char name[128];
     while (len && (*s == ' ' || s[len - 1] == ' '))
         s += *s == ' ', len -= 1;
-    if (!len || len >= sizeof name || *n == cap) {
-        cli_diag_error("--ignore takes a comma-separated list of coordinates, not '%s'", list);
-        return QD_EXIT_USAGE;
-    }
+    if (!len || len >= sizeof name || *n == cap)
+        return cli_usage_error("--ignore takes a comma-separated list of coordinates, not '%s'",
+                               list);
     memcpy(name, s, len);
     name[len] = '\0';
     const qd_expr *c = qd_routh_lookup(ctx, m, name);
-    if (!c) {
-        cli_diag_error("--ignore: %s", qd_ctx_message(ctx));
-        return QD_EXIT_USAGE;
-    }
+    if (!c)
+        return cli_usage_error("--ignore: %s", qd_ctx_message(ctx));
     for (size_t k = 0; k < *n; k++)
-        if (ign[k] == c) {
-            cli_diag_error("--ignore: %s is listed twice", name);
-            return QD_EXIT_USAGE;
-        }
+        if (ign[k] == c)
+            return cli_usage_error("--ignore: %s is listed twice", name);
     ign[(*n)++] = c;
     return QD_EXIT_OK;
 }

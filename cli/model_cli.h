@@ -36,10 +36,12 @@ int cli_emit(qd_buf *b, const char *what);
 /* cli_load for a field model (mf->field; parameters fixed). */
 int cli_load_field(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
                    cli_model_file *mf);
-/* cmd_field.c: `qdot eom` and `qdot modes` on a field model (qdot/field.h). */
-int cli_field_eom(const char *file, size_t nsets, const char *const *sets, bool json);
-int cli_field_modes(const char *file, size_t nsets, const char *const *sets, size_t count,
-                    double tol, bool json);
+/* cmd_field.c: `qdot eom` and `qdot modes` on a field model (qdot/field.h),
+ * read into mf (the caller's, as ctx, also on error). */
+int cli_field_eom(qd_ctx *ctx, cli_model_file *mf, const char *file, size_t nsets,
+                  const char *const *sets, bool json);
+int cli_field_modes(qd_ctx *ctx, cli_model_file *mf, const char *file, size_t nsets,
+                    const char *const *sets, size_t count, double tol, bool json);
 
 /* --ignore LIST (routh, orbit): the comma-separated coordinates into ign
  * (at most cap), each once; prints its own errors. */

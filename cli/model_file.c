@@ -84,11 +84,9 @@ int cli_read_text(const char *path, const char *what, char **text, size_t *len) 
         cli_diag_error("cannot read '%s': %s", shown, strerror(err ? err : EIO));
         return err == ENOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
     }
-    if (how == READ_BIG) {
-        cli_diag_error("'%s' is longer than %zu MiB, the most %s may be", shown,
-                       QD_MODEL_MAX_BYTES >> 20, what);
-        return QD_EXIT_USAGE;
-    }
+    if (how == READ_BIG)
+        return cli_usage_error("'%s' is longer than %zu MiB, the most %s may be", shown,
+                               QD_MODEL_MAX_BYTES >> 20, what);
     if (how == READ_NUL) { /* a reader would stop at it and ignore the rest silently */
         qd_diag d;
         memset(&d, 0, sizeof d);

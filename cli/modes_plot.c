@@ -11,20 +11,18 @@
 
 int cli_modes_plot(cli_lin_run *lr, const double *q0, const qd_modes_result *res,
                    const char *file, const char *title) {
-    if (!res->conservative || !res->shapes) {
-        cli_diag_error("modes --plot draws mode shapes, which a system with damping or "
-                       "gyroscopic terms does not have (its modes are complex)");
-        return QD_EXIT_USAGE;
-    }
+    if (!res->conservative || !res->shapes)
+        return cli_usage_error("modes --plot draws mode shapes, which a system with damping or "
+                               "gyroscopic terms does not have (its modes are complex)");
     cli_lin_set_state(lr, q0, NULL);
     const char *slash = strrchr(title, '/');
     qd_plot *p = NULL;
-    qd_status st = qd_modes_plot(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms,
+    qd_status st = qd_modes_plot(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
                                  lr->st.vals, res, slash ? slash + 1 : title, &p);
     if (st == QD_OK)
         st = qd_plot_write(p, file);
     qd_plot_free(p);
     if (st == QD_OK)
         return QD_EXIT_OK;
-    return qd_ctx_status(lr->ctx) != QD_OK ? cli_diag_ctx(lr->ctx) : QD_EXIT_FAIL;
+    return qd_ctx_status(lr->c.ctx) != QD_OK ? cli_diag_ctx(lr->c.ctx) : QD_EXIT_FAIL;
 }

@@ -22,14 +22,14 @@ static double seconds(void) {
 static int fast_path(cli_lin_run *lr, const qd_linear *lin, size_t cell, cli_sym_run *s) {
     qd_modes_result full;
     double t0 = seconds();
-    qd_status st = qd_modes_solve(lr->ctx, lin, &full);
+    qd_status st = qd_modes_solve(lr->c.ctx, lin, &full);
     double t1 = seconds();
     if (st == QD_OK)
-        st = qd_cyclic_solve(lr->ctx, lin, cell, &s->cyc);
+        st = qd_cyclic_solve(lr->c.ctx, lin, cell, &s->cyc);
     double t2 = seconds();
     qd_modes_result_free(&full);
     if (st != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->ctx));
+        cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
         return QD_EXIT_FAIL;
     }
     s->active = true;
@@ -44,16 +44,14 @@ int cli_sym_compute(cli_lin_run *lr, const qd_linear *lin, cli_sym_run *s) {
     size_t cell = qd_symmetry_fast_cell(lin);
     if (cell)
         return fast_path(lr, lin, cell, s);
-    qd_status st = qd_symmetry_find(lr->ctx, lr->e, lr->mf.model, lr->st.n, lr->st.syms,
+    qd_status st = qd_symmetry_find(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
                                     lr->st.vals, lin, &s->sym);
-    if (st == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
-    }
+    if (st == QD_ERR_NOMEM)
+        return cli_out_of_memory();
     if (st != QD_OK) {
         fprintf(stderr, "qdot: note: --symmetry: %s; the plain modes follow\n",
-                qd_ctx_message(lr->ctx));
-        qd_ctx_clear_error(lr->ctx);
+                qd_ctx_message(lr->c.ctx));
+        qd_ctx_clear_error(lr->c.ctx);
         return QD_EXIT_OK;
     }
     if (s->sym.order <= 1) {
@@ -61,8 +59,8 @@ int cli_sym_compute(cli_lin_run *lr, const qd_linear *lin, cli_sym_run *s) {
                 "but the identity leaves M0 and K0 invariant); the plain modes follow\n");
         return QD_EXIT_OK;
     }
-    if (qd_symmetry_reduce(lr->ctx, lin, &s->sym) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->ctx));
+    if (qd_symmetry_reduce(lr->c.ctx, lin, &s->sym) != QD_OK) {
+        cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
         return QD_EXIT_FAIL;
     }
     s->active = true;

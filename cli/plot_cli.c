@@ -14,11 +14,9 @@ int cli_plot_check(cli_plot_args *a, const char *cmd) {
     const char *shape = a->ycols ? "--plot-y" : a->phase ? "--phase" : a->title ? "--title"
                         : a->xlabel ? "--xlabel" : a->ylabel ? "--ylabel" : a->size ? "--size"
                         : NULL;
-    if (!a->file && shape) {
-        cli_diag_error("%s says how to plot: give the file with --plot FILE.png|.svg|.pdf",
-                       shape);
-        return QD_EXIT_USAGE;
-    }
+    if (!a->file && shape)
+        return cli_usage_error("%s says how to plot: give the file with --plot FILE.png|.svg|.pdf",
+                               shape);
     qd_ctx *ctx = qd_ctx_new();
     if (!ctx)
         return QD_EXIT_FAIL;

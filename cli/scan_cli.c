@@ -23,10 +23,8 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
         s++;
     while (e > s && isspace((unsigned char)text[e - 1]))
         e--;
-    if (!eq || e == s || e - s >= cap) {
-        cli_diag_error("--scan takes NAME=A:B (a parameter and its range), not '%s'", text);
-        return QD_EXIT_USAGE;
-    }
+    if (!eq || e == s || e - s >= cap)
+        return cli_usage_error("--scan takes NAME=A:B (a parameter and its range), not '%s'", text);
     memcpy(name, text + s, e - s);
     name[e - s] = '\0';
     size_t at = (size_t)(eq - text) + 1;
@@ -46,8 +44,7 @@ int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about) {
         free(exact);
         free(given);
         free(vals);
-        cli_diag_error("out of memory");
-        return QD_EXIT_FAIL;
+        return cli_out_of_memory();
     }
     memcpy(vals, r->st.vals, ns * sizeof *vals); /* the run's own state stays as it is */
     qd_state st = {ns, r->st.syms, vals};
@@ -55,12 +52,12 @@ int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about) {
                                       QD_STATE_EXTRA,
                             .independent = r->e->q, .nindependent = n, .given = given,
                             .exact = exact};
-    int rc = qd_state_read(r->ctx, r->mf.model, &st, text, &o) == QD_OK
+    int rc = qd_state_read(r->c.ctx, r->c.mf.model, &st, text, &o) == QD_OK
                  ? QD_EXIT_OK
-                 : cli_state_diag(r->ctx, "--about", text);
+                 : cli_state_diag(r->c.ctx, "--about", text);
     for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
         size_t k = qd_state_find(&st, r->e->q[j]);
-        about[j] = k < ns && given[k] ? exact[k] : qd_int(r->ctx, 0);
+        about[j] = k < ns && given[k] ? exact[k] : qd_int(r->c.ctx, 0);
     }
     free(exact);
     free(given);
@@ -84,7 +81,7 @@ int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json) {
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json) {
     char name[128];
     double a, b;
-    int rc = cli_scan_range(r->ctx, range, name, sizeof name, &a, &b);
+    int rc = cli_scan_range(r->c.ctx, range, name, sizeof name, &a, &b);
     const qd_expr **ab = NULL;
     const char **names = calloc(r->e->n + 1, sizeof *names);
     if (!names)
@@ -95,9 +92,10 @@ int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t 
     }
     qd_scan_opts o = {.steps = steps, .about = ab};
     qd_scan sc = {0};
-    if (rc == QD_EXIT_OK && qd_modes_scan(r->ctx, r->e, r->mf.model, name, a, b, &o, &sc) != QD_OK) {
-        rc = cli_exit(qd_ctx_status(r->ctx));
-        cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
+    if (rc == QD_EXIT_OK &&
+        qd_modes_scan(r->c.ctx, r->e, r->c.mf.model, name, a, b, &o, &sc) != QD_OK) {
+        rc = cli_exit(qd_ctx_status(r->c.ctx));
+        cli_diag_error("--scan: %s", qd_ctx_message(r->c.ctx));
     } else if (rc == QD_EXIT_OK) {
         char followed[1024];
         snprintf(followed, sizeof followed, about ? "the equilibrium from %s" : "%s",

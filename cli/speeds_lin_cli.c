@@ -31,11 +31,9 @@ static void sp_free(sp_run *r) {
 
 /* Derive, and the state: coordinates, speeds, t at 0, parameters at their values. */
 static int sp_load(sp_run *r, const char *refuse) {
-    if (refuse) {
-        cli_diag_error("%s is not available for a model with speeds (the state is q and u)",
-                       refuse);
-        return QD_EXIT_USAGE;
-    }
+    if (refuse)
+        return cli_usage_error("%s is not available for a model with speeds (the state is q and u)",
+                               refuse);
     if (!(r->e = qd_speeds_derive(r->ctx, r->mf->model, NULL)))
         return cli_eom_derive_error(r->ctx, r->mf);
     int rc = cli_state_init(r->ctx, r->mf->model, &r->st);
@@ -97,10 +95,9 @@ static int scan(sp_run *r, const char *range, const char *about, size_t steps, b
         if (r->st.syms[k] && !strcmp(qd_expr_name(r->st.syms[k]), name) &&
             qd_symbol_role(r->st.syms[k]) != QD_ROLE_TIME)
             what = r->st.syms[k];
-    if (rc == QD_EXIT_OK && !what) {
-        cli_diag_error("--scan: %s is not a parameter, coordinate or speed of the model", name);
-        return QD_EXIT_USAGE;
-    }
+    if (rc == QD_EXIT_OK && !what)
+        return cli_usage_error("--scan: %s is not a parameter, coordinate or speed of the model",
+                               name);
     qd_scan_opts o = {.steps = steps};
     qd_scan sc = {0};
     if (rc == QD_EXIT_OK && qd_speeds_modes_scan(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, what,

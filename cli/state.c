@@ -57,17 +57,13 @@ int cli_state_number(qd_ctx *ctx, const char *what, const char *text, const qd_e
 int cli_state_read_set(qd_ctx *ctx, const char *arg, char *name, size_t cap,
                        const qd_expr **value) {
     const char *eq = strchr(arg, '=');
-    if (!eq || eq == arg) {
-        cli_diag_error("--set takes NAME=VALUE, not '%s'", arg);
-        return QD_EXIT_USAGE;
-    }
+    if (!eq || eq == arg)
+        return cli_usage_error("--set takes NAME=VALUE, not '%s'", arg);
     size_t n = (size_t)(eq - arg);
     while (n && isspace((unsigned char)arg[n - 1]))
         n--;
-    if (n >= cap) {
-        cli_diag_error("--set: the name in '%s' is too long", arg);
-        return QD_EXIT_USAGE;
-    }
+    if (n >= cap)
+        return cli_usage_error("--set: the name in '%s' is too long", arg);
     memcpy(name, arg, n);
     name[n] = '\0';
     double v;
