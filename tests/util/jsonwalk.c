@@ -145,11 +145,26 @@ const char *qt_json_at(const char *arr, size_t i) {
     return p;
 }
 
+/* One pass over the array (counting through qt_json_at would skip the
+ * whole array once per element: quadratic, minutes under ASan on a list
+ * of 500 equilibria). */
 size_t qt_json_len(const char *arr) {
-    size_t n = 0;
-    while (qt_json_at(arr, n))
+    if (!arr || !qt_json_skip(arr))
+        return 0;
+    const char *p = ws(arr);
+    if (*p != '[')
+        return 0;
+    p = ws(p + 1);
+    if (*p == ']')
+        return 0;
+    size_t n = 1;
+    for (;;) {
+        p = ws(qt_json_skip(p));
+        if (*p != ',')
+            return n;
+        p = ws(p + 1);
         n++;
-    return n;
+    }
 }
 
 double qt_json_num(const char *p) {
