@@ -44,16 +44,7 @@ typedef struct modes_args {
 typedef struct modes_run {
     cli_lin_run lr; /* first: the run state starts with its cli_run */
     modes_args a;
-    qd_equilibrium_choice ch;   /* found: the list (--at-equilibrium, automatic choice) */
-    const qd_equilibrium *pt;   /* NULL with --about */
-    bool chosen;                /* pt is the library's automatic choice (ch.reason) */
-    bool sym_exact;             /* w2sym is in the parameters (else exact numbers) */
-    double *q0;
-    qd_linear lin;
-    qd_modes_result res;
-    const qd_expr *w2sym[2];
-    bool have_sym;
-    double residual;
+    qd_modes_at at;             /* the point and the modes there (qdot/modes.h) */
     double *Q, *Qd;             /* --initial: normal coordinates at t = 0 */
     cli_sym_run sym;            /* --symmetry */
 } modes_run;
@@ -97,73 +88,45 @@ static const cli_spec spec = {
     "small oscillations about an equilibrium: frequencies and mode shapes (a field model: "
     "FIELDFILE [--count N] [--tol X])", opts, NULL, 1, 1, "FILE", false};
 
-static int no_equilibrium(void) {
-    cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point with "
-                  "--about");
-    return QD_EXIT_FAIL;
-}
-
-static int choose_auto(modes_run *r) {
+/* The point (qd_modes_at_point): --about's, --at-equilibrium's or the
+ * library's choice. */
+static int choose_point(modes_run *r, const modes_args *a) {
     cli_lin_run *lr = &r->lr;
-    if (qd_equilibria_choose(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms, lr->st.vals,
-                             &r->ch) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
+    double *given = NULL;
+    if (a->about) {
+        if (!(given = calloc(lr->e->n + 1, sizeof *given)))
+            return cli_out_of_memory();
+        int rc = cli_lin_coords(lr, "--about", a->about, given);
+        if (rc != QD_EXIT_OK) {
+            free(given);
+            return rc;
+        }
+    }
+    qd_status st = qd_modes_at_point(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
+                                     lr->st.vals, given, a->at_eq, &r->at);
+    free(given);
+    if (st == QD_ERR_ARG)
+        return cli_usage_error("--at-equilibrium %zu: %s", a->at_eq, qd_ctx_message(lr->c.ctx));
+    if (st != QD_OK) {
+        if (st == QD_ERR_NUMERIC && !r->at.pt)
+            cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point "
+                           "with --about");
+        else
+            cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
         return QD_EXIT_FAIL;
     }
-    if (!r->ch.pt)
-        return no_equilibrium();
-    r->pt = r->ch.pt;
-    r->chosen = true;
     return QD_EXIT_OK;
 }
 
-static int choose_listed(modes_run *r, size_t k) {
-    const qd_equilibria *eq = &r->ch.found;
-    int rc = cli_lin_equilibria(&r->lr, NULL, NULL, &r->ch.found);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (eq->count == 0)
-        return no_equilibrium();
-    if (k > eq->count)
-        return cli_usage_error("--at-equilibrium %zu: there %s %zu equilibri%s", k,
-                               eq->count == 1 ? "is" : "are", eq->count,
-                               eq->count == 1 ? "um" : "a");
-    r->pt = &eq->pts[k - 1];
-    return QD_EXIT_OK;
-}
-
-static int choose_point(modes_run *r, const modes_args *a) {
-    size_t n = r->lr.e->n;
-    r->q0 = calloc(n + 1, sizeof *r->q0);
-    if (!r->q0)
-        return QD_EXIT_FAIL;
-    if (a->about)
-        return cli_lin_coords(&r->lr, "--about", a->about, r->q0);
-    int rc = a->at_eq ? choose_listed(r, a->at_eq) : choose_auto(r);
-    if (rc == QD_EXIT_OK)
-        memcpy(r->q0, r->pt->q, n * sizeof *r->q0);
-    return rc;
-}
-
-/* The state at q0, at rest; the residual of the equations there. */
+/* The modes at the point (qd_modes_at_solve); the state there, at rest, for
+ * what follows (--initial, --symmetry, --plot). */
 static int linearize(modes_run *r) {
     cli_lin_run *lr = &r->lr;
-    size_t n = lr->e->n;
-    cli_lin_set_state(lr, r->q0, NULL);
-    if (qd_eom_rest_residual(lr->c.ctx, lr->e, lr->st.n, lr->st.syms, lr->st.vals,
-                             &r->residual) != QD_OK)
-        qd_ctx_clear_error(lr->c.ctx);
-    if (qd_linear_about(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms, lr->st.vals,
-                        &r->lin) != QD_OK ||
-        qd_modes_solve(lr->c.ctx, &r->lin, &r->res) != QD_OK) {
+    cli_lin_set_state(lr, r->at.q0, NULL);
+    if (qd_modes_at_solve(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms, lr->st.vals,
+                          &r->at) != QD_OK) {
         cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
         return QD_EXIT_FAIL;
-    }
-    if (r->pt && r->pt->exact && n <= 2 && r->res.conservative) {
-        r->have_sym = qd_modes_exact_omega2(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
-                                            lr->st.vals, r->pt->exact, r->w2sym,
-                                            &r->sym_exact) == QD_OK;
-        qd_ctx_clear_error(lr->c.ctx);
     }
     return QD_EXIT_OK;
 }
@@ -171,7 +134,7 @@ static int linearize(modes_run *r) {
 static int initial(modes_run *r, const char *text) {
     cli_lin_run *lr = &r->lr;
     size_t n = lr->e->n;
-    if (!r->res.conservative)
+    if (!r->at.res.conservative)
         return cli_usage_error("--initial: the motion through normal coordinates needs a "
                                "conservative system without gyroscopic terms");
     double *q = calloc(n + 1, sizeof *q), *qd = calloc(n + 1, sizeof *qd);
@@ -179,11 +142,11 @@ static int initial(modes_run *r, const char *text) {
     r->Qd = calloc(n + 1, sizeof *r->Qd);
     int rc = q && qd && r->Q && r->Qd ? QD_EXIT_OK : QD_EXIT_FAIL;
     if (rc == QD_EXIT_OK) {
-        memcpy(q, r->q0, n * sizeof *q);
+        memcpy(q, r->at.q0, n * sizeof *q);
         rc = cli_lin_point(lr, "--initial", text, q, qd);
     }
     if (rc == QD_EXIT_OK)
-        qd_modes_normal_coords(&r->lin, &r->res, r->q0, q, qd, r->Q, r->Qd);
+        qd_modes_normal_coords(&r->at.lin, &r->at.res, r->at.q0, q, qd, r->Q, r->Qd);
     free(q);
     free(qd);
     return rc;
@@ -192,9 +155,10 @@ static int initial(modes_run *r, const char *text) {
 /* The library's printer (qd_modes_print) on what was computed. */
 static int emit(modes_run *r, bool json) {
     qd_modes_report rep = {
-        .e = r->lr.e, .q0 = r->q0, .pt = r->pt, .choice = r->chosen ? &r->ch : NULL,
-        .residual = r->residual, .lin = &r->lin, .res = &r->res,
-        .w2exact = r->have_sym ? r->w2sym : NULL, .w2exact_in_params = r->sym_exact,
+        .e = r->lr.e, .q0 = r->at.q0, .pt = r->at.pt, .choice = r->at.chosen ? &r->at.choice : NULL,
+        .residual = r->at.residual, .lin = &r->at.lin, .res = &r->at.res,
+        .w2exact = r->at.have_exact ? r->at.w2exact : NULL,
+        .w2exact_in_params = r->at.exact_in_params,
         .Q = r->Q, .Qd = r->Qd,
         .sym = r->sym.active && !r->sym.cyc.n ? &r->sym.sym : NULL,
         .cyc = r->sym.active && r->sym.cyc.n ? &r->sym.cyc : NULL};
@@ -210,9 +174,9 @@ static int emit(modes_run *r, bool json) {
  * (qd_equilibrium_choice_note). */
 static void note_choice(const modes_run *r) {
     qd_buf b = QD_BUF_INIT;
-    if (qd_equilibrium_choice_note(r->lr.e, &r->ch, &b) == QD_OK)
+    if (qd_equilibrium_choice_note(r->lr.e, &r->at.choice, &b) == QD_OK)
         fprintf(stderr, "qdot: note: modes about %s%s\n", qd_buf_str(&b),
-                r->ch.others ? " (qdot equilibria lists them; choose with --at-equilibrium N "
+                r->at.choice.others ? " (qdot equilibria lists them; choose with --at-equilibrium N "
                                "or --about)"
                              : "");
     qd_buf_free(&b);
@@ -281,32 +245,29 @@ static int run(cli_run *c) {
         return cli_scan_modes(&r->lr, a->scan, a->about, a->steps, a->json);
     if (rc == QD_EXIT_OK)
         rc = choose_point(r, a);
-    if (rc == QD_EXIT_OK && r->chosen && !a->json)
+    if (rc == QD_EXIT_OK && r->at.chosen && !a->json)
         note_choice(r);
     if (rc == QD_EXIT_OK && r->lr.e->ncon) /* on the manifold (constrained_cli.c) */
-        return cli_con_modes(&r->lr, r->q0, a->independent, a->json);
+        return cli_con_modes(&r->lr, r->at.q0, a->independent, a->json);
     if (rc == QD_EXIT_OK)
         rc = linearize(r);
     if (rc == QD_EXIT_OK && a->symmetry)
-        rc = cli_sym_compute(&r->lr, &r->lin, &r->sym);
+        rc = cli_sym_compute(&r->lr, &r->at.lin, &r->sym);
     if (rc == QD_EXIT_OK && a->initial)
         rc = initial(r, a->initial);
     if (rc == QD_EXIT_OK)
         rc = emit(r, a->json);
     if (rc == QD_EXIT_OK && a->plot)
-        rc = cli_modes_plot(&r->lr, r->q0, &r->res, a->plot, c->file);
+        rc = cli_modes_plot(&r->lr, r->at.q0, &r->at.res, a->plot, c->file);
     return rc;
 }
 
 static void run_free(cli_run *c) {
     modes_run *r = (modes_run *)c;
-    free(r->q0);
     free(r->Q);
     free(r->Qd);
-    qd_linear_free(&r->lin);
-    qd_modes_result_free(&r->res);
+    qd_modes_at_free(&r->at);
     cli_sym_free(&r->sym);
-    qd_equilibrium_choice_free(&r->ch);
     cli_lin_free(&r->lr);
 }
 

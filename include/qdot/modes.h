@@ -143,6 +143,41 @@ QD_API qd_status qd_modes_exact_omega2(qd_ctx *ctx, const qd_eom *e, const qd_mo
                                        const double *vals, const qd_expr *const *q0,
                                        const qd_expr **w2, bool *in_params);
 
+/* ---- the modes about a point, as `qdot modes` takes them (src/linear/modes_at.c)
+ * Step 1 chooses the point, step 2 linearizes and solves there; a model that
+ * keeps constraints takes step 1 only (its modes are on the manifold:
+ * qdot/constrained.h).  syms/vals: the model's state at rest (coordinates,
+ * velocities 0, t, parameters at their values), as for qd_linear_about. */
+typedef struct qd_modes_at {
+    double *q0;                   /* e->n: the point */
+    const qd_equilibrium *pt;     /* the equilibrium q0 is (in choice), or NULL: given */
+    bool chosen;                  /* pt is qd_equilibria_choose's (choice.reason) */
+    qd_equilibrium_choice choice; /* the automatic choice, or the list (at_equilibrium) */
+    double residual;              /* qd_eom_rest_residual at q0 (step 2) */
+    qd_linear lin;                /* the linearization at q0 (step 2) */
+    qd_modes_result res;          /* qd_modes_solve of lin (step 2) */
+    const qd_expr *w2exact[2];    /* exact w^2 with 1 or 2 degrees of freedom about an
+                                     exact equilibrium (have_exact) */
+    bool have_exact, exact_in_params;
+} qd_modes_at;
+
+/* Step 1: q0 is given (e->n values, copied), else equilibrium number
+ * at_equilibrium (1-based) of qd_equilibria_find's list, else (0) the one
+ * qd_equilibria_choose takes.  QD_ERR_NUMERIC "no equilibrium found" when
+ * there is none to take; QD_ERR_ARG for at_equilibrium past the list.  Free
+ * with qd_modes_at_free (also after a failure). */
+QD_API qd_status qd_modes_at_point(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                                   const qd_expr *const *syms, const double *vals,
+                                   const double *given, size_t at_equilibrium, qd_modes_at *out);
+/* Step 2: at the point of step 1 (its coordinates put into a copy of vals),
+ * the residual, qd_linear_about, qd_modes_solve, and the exact w^2 when the
+ * point is an exact equilibrium of 1 or 2 degrees of freedom and the modes
+ * are conservative. */
+QD_API qd_status qd_modes_at_solve(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                                   const qd_expr *const *syms, const double *vals,
+                                   qd_modes_at *at);
+QD_API void qd_modes_at_free(qd_modes_at *at); /* NULL is fine */
+
 /* ---- the modes printed (src/linear/modes_print.c) ------------------------- */
 
 /* The small oscillations about one point, for printing: what `qdot modes`

@@ -29,6 +29,7 @@ NULLABLE = {
     'qd_canonical_check': {'t'},
     'qd_json_string': {'s'},
     'qd_json_commit': {'j'},
+    'qd_modes_at_point': {'given'},
     'qd_json_expr': {'x'},
     'qd_codegen_c': {'h_text'},
     'qd_codegen_speeds_c': {'h_text'},

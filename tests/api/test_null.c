@@ -3014,6 +3014,48 @@ static void null_modes(void **state)
     /* in_params NULL */
     assert_int_equal(QD_ERR_ARG, qd_modes_exact_omega2(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, NULL));
     reset(&F);
+    /* ---- qd_modes_at_point */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_point(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, F.d, 1, (qd_modes_at *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_point(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, F.d, 1, (qd_modes_at *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_point(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, F.d, 1, (qd_modes_at *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_point(F.ctx, F.eom, F.model, 1, NULL, F.d, F.d, 1, (qd_modes_at *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_point(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, F.d, 1, (qd_modes_at *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_point(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, F.d, 1, NULL));
+    reset(&F);
+    /* ---- qd_modes_at_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_solve(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_solve(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_solve(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_solve(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_solve(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_solve(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_modes_at_free */
+    /* at NULL */
+    qd_modes_at_free(NULL);
+    reset(&F);
     /* ---- qd_modes_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_modes_print(NULL, NULL, false, &F.buf));
