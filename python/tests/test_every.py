@@ -45,3 +45,16 @@ def test_oscillator_rows_exact():
     r = osc.simulate(20, dt=0.2)
     assert r.method == "dop853" and len(r) == 101
     assert np.max(np.abs(r["x"] - np.cos(r.t))) < 2e-9
+
+
+def test_energy_error_over_the_rows():
+    """energy_error_max is the worst over the rows returned (dense output
+    between the steps), energy_error_steps the integrator's own."""
+    m = qdot.Model(MODEL)
+    for kw in (dict(method="dop853", rtol=1e-9, dt=0.01), dict(method="dopri5", dt=0.01),
+               dict(step=0.05, dt=0.01)):
+        r = m.simulate(20, **kw)
+        E = r["energy"]
+        want = np.max(np.abs(E - E[0])) / abs(E[0])
+        assert abs(r.energy_error_max - want) <= 1e-9 * want, (kw, r.energy_error_max, want)
+        assert r.stats["energy_error_steps"] < r.energy_error_max
