@@ -529,9 +529,9 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     bool adaptive = qd_sim_method_adaptive(out->method);
     bool fixed = !adaptive || (o->fixed && (step_text || grid_text));
     if (fixed && !step_text && !grid_text)
-        return refuse(s, adaptive ? "step" : "dt",
-                      "the method %s takes fixed steps: give the step (or the output spacing, "
-                      "which is then the step)", qd_sim_method_name(out->method));
+        return refuse(s, "step", "the method %s takes fixed steps: give the step (or the "
+                      "output spacing dt, which is then the step)",
+                      qd_sim_method_name(out->method));
     if (!fixed && o->step)
         return refuse(s, "step", "the step is for a fixed-step method (gl2, gl4, gl6, verlet, "
                       "yoshida*); %s controls its step by rtol (dt is the output spacing)", qd_sim_method_name(out->method));

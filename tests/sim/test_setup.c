@@ -153,7 +153,7 @@ static void test_errors(void **state) {
     s = fresh(ctx, &m);
     so = (qd_sim_setup_opts){.t_end = "1", .method = "verlet"};
     assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_ERR_ARG);
-    assert_string_equal(d->name, "dt");
+    assert_string_equal(d->name, "step");
     done(s, m);
     s = fresh(ctx, &m);
     so = (qd_sim_setup_opts){.t_end = "-1"};
@@ -185,7 +185,7 @@ static void test_errors(void **state) {
         {"0.1", "0.01", "0.2", NULL, NULL, QD_ERR_ARG, 0, 0, 0, "every"},
         {NULL, "0.01", NULL, "1e-10", NULL, QD_ERR_ARG, 0, 0, 0, "step"},
         {NULL, "0.01", NULL, NULL, "dop853", QD_ERR_ARG, 0, 0, 0, "step"},
-        {NULL, NULL, NULL, NULL, "gl4", QD_ERR_ARG, 0, 0, 0, "dt"},
+        {NULL, NULL, NULL, NULL, "gl4", QD_ERR_ARG, 0, 0, 0, "step"},
     };
     for (size_t i = 0; i < sizeof rule / sizeof rule[0]; i++) {
         s = fresh(ctx, &m);
