@@ -137,8 +137,9 @@ static int run(cli_sim *c, an_scene *s) {
     s->view.conservative = qd_sim_conservative(c->s);
     s->view.method = qd_sim_method_name(c->opts.method);
     fprintf(stderr, "qdot: animate: %s, t = %g..%g: %zu frames from %zu steps, %.3g s; "
-                    "energy error %.3g\n", s->view.method, c->opts.t0,
-            s->fr.t[s->fr.nframes - 1], s->fr.nframes, st.steps, wall, st.energy_error_max);
+                    "energy error %.3g over the rows (%.3g at the steps)\n", s->view.method,
+            c->opts.t0, s->fr.t[s->fr.nframes - 1], s->fr.nframes, st.steps, wall,
+            st.energy_error_max, st.energy_error_steps);
     return QD_EXIT_OK;
 }
 

@@ -10,6 +10,7 @@
 #include <stddef.h>
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -162,9 +163,10 @@ int cli_cmd_poincare(int argc, char **argv) {
             rc = CLI_EXIT_INTERRUPTED;
         } else {
             fprintf(stderr, "qdot: poincare: %s, %zu crossings by t = %g: %zu steps, %zu "
-                            "evaluations, %zu rejected; energy error %.3g\n",
+                            "evaluations, %zu rejected; energy error %.3g over the steps and "
+                            "crossings\n",
                     qd_sim_method_name(c.opts.method), o.got, st.t, st.steps, st.evals,
-                    st.rejected, st.energy_error_max);
+                    st.rejected, fmax(st.energy_error_max, st.energy_error_steps));
             if (o.got < o.want)
                 fprintf(stderr, "qdot: poincare: note: only %zu of %zu crossings before "
                                 "t = %g (raise --t-end)\n", o.got, o.want, st.t);

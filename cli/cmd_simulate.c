@@ -201,7 +201,7 @@ static int col_sink(void *data, double t, const double *y, const double *phi) {
 }
 
 /* --variational columns: CSV of t, the state and d y_i / d y_j(t0), column
- * by column, every --dt (else 100 rows). */
+ * by column, every --dt (else --step, else 100 rows). */
 static int run_columns(cli_sim *c, const cli_sim_args *a) {
     if (a->json || a->plot.file) {
         cli_diag_error("--variational columns writes CSV: not with --format json or --plot");
@@ -232,7 +232,9 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
     else
         cli_out_write(o.out, hb.s, hb.len, &o.err);
     qd_buf_free(&hb);
-    qd_flow_opts fo = {.every = a->dt ? c->opts.dt : (c->opts.t_end - c->opts.t0) / 100,
+    double grid = c->opts.every > 0 ? c->opts.every : c->opts.dt;
+    qd_flow_opts fo = {.every = a->dt || a->every || a->step ? grid
+                                                             : (c->opts.t_end - c->opts.t0) / 100,
                        .sink = col_sink, .data = &o};
     double *y0 = calloc(d + d * d, sizeof *y0); /* the first row: y(t0), Phi = I */
     if (!y0) {

@@ -35,16 +35,18 @@ const cli_opt cli_sim_opts[] = {
     {"--t-end", NULL, CLI_TEXT, SIM(t_end), "T",
      "end time (an expression in the parameters)", NULL, NULL},
     {"--dt", NULL, CLI_TEXT, SIM(dt), "H",
-     "the step of a fixed-step method, the output grid of an adaptive one", NULL, NULL},
+     "a row every H, for every method (dense output between the steps)", NULL, NULL},
+    {"--step", NULL, CLI_TEXT, SIM(step), "H",
+     "the step of a fixed-step method (gl4 by default; without it: --dt)", NULL, NULL},
     {"--every", NULL, CLI_TEXT, SIM(every), "H",
-     "a row every H, whatever the steps are", NULL, NULL},
+     "the older name of --dt (with --dt, --dt is then the step)", NULL, NULL},
     {"--rtol", NULL, CLI_TEXT, SIM(rtol), "TOL",
      "relative tolerance (step control; 1e-10)", NULL, NULL},
     {"--atol", NULL, CLI_TEXT, SIM(atol), "TOL", "absolute tolerance (1e-12)", NULL, NULL},
     {"--max-steps", NULL, CLI_TEXT, SIM(max_steps), "N",
      "the most steps a run takes (1e8)", NULL, NULL},
     {"--method", NULL, CLI_CHOICE, SIM(method), "M",
-     "the integrator (dop853; gl4 with --dt when conservative)", methods, NULL},
+     "the integrator (dop853; gl4 with --step when conservative)", methods, NULL},
     {"--precision", NULL, CLI_CHOICE, SIM(precision), "BITS",
      "the taylor method's arithmetic in bits", precisions, NULL},
     {"--initial", NULL, CLI_TEXT, SIM(initial), "STATE",
@@ -110,7 +112,8 @@ static int fail_in(cli_sim *c, const char *opt, const char *text) {
 static int option_error(cli_sim *c, const cli_sim_args *a) {
     const struct { const char *field, *opt, *text; } f[] = {
         {"t_end", "--t-end", a->t_end},    {"dt", "--dt", a->dt},
-        {"every", "--every", a->every},    {"rtol", "--rtol", a->rtol},
+        {"every", "--every", a->every},    {"step", "--step", a->step},
+        {"rtol", "--rtol", a->rtol},
         {"atol", "--atol", a->atol},       {"max_steps", "--max-steps", a->max_steps},
         {"method", "--method", a->method}, {"precision", "--precision", a->precision},
         {"inputs", "--input", NULL},
@@ -217,7 +220,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = events(c, "--stop-at", &a->stops, true);
     if (rc == QD_EXIT_OK && a->section && qd_sim_setup_event(c->set, a->section, false) != QD_OK)
         rc = fail_in(c, "--section", a->section);
-    qd_sim_setup_opts so = {.t_end = a->t_end, .dt = a->dt, .rtol = a->rtol, .atol = a->atol,
+    qd_sim_setup_opts so = {.t_end = a->t_end, .dt = a->dt, .step = a->step, .rtol = a->rtol, .atol = a->atol,
                             .every = a->every, .max_steps = a->max_steps, .method = a->method,
                             .precision = a->precision ? atoi(a->precision) : 0,
                             .no_project = a->no_project, .fixed = a->fixed};

@@ -22,7 +22,7 @@
  * as text: each may be an expression in the model's parameters ("2*pi/w"),
  * read once the model is loaded (cli_sim_setup); NULL when not given. */
 typedef struct cli_sim_args {
-    const char *t_end, *dt, *rtol, *atol, *every, *max_steps;
+    const char *t_end, *dt, *step, *rtol, *atol, *every, *max_steps;
     const char *method;    /* one of the method names, or NULL: the default */
     const char *precision; /* "64", "80", "128" (taylor), or NULL */
     const char *initial;   /* --initial "q=VALUE, q'=VALUE, ..." */

@@ -112,23 +112,30 @@ QD_API qd_status qd_sim_setup_input(qd_sim_setup *s, const char *name, const cha
  * an expression in the parameters. */
 typedef struct qd_sim_setup_opts {
     const char *t_end;     /* required */
-    const char *dt;        /* > 0: a fixed step's size, or an adaptive run's output grid */
-    const char *rtol, *atol, *every; /* > 0 */
+    const char *dt;        /* > 0: the output spacing, for every method (dense output) */
+    const char *step;      /* > 0: the step of a fixed-step method (or of fixed) */
+    const char *rtol, *atol; /* > 0 */
+    const char *every;     /* dt's older name; with dt and no step, dt is the step */
     const char *max_steps; /* a whole number > 0 */
     const char *method;    /* a name (qd_sim_method_from_name), or NULL for the default */
     int precision;         /* 0, 64, 80 or 128 (taylor only beyond 64) */
     bool no_project;
-    bool fixed;            /* with dt, dopri5/dop853 take the constant step dt */
+    bool fixed;            /* dopri5/dop853 take the constant step (step, else dt) */
 } qd_sim_setup_opts;
 
-/* The options of the run into *out, with the initial state: the method
- * (given, else qd_sim_default_method: a fixed-step default when dt is
- * given), t0 from the state, and the checks before any output: dt with
- * rtol but no method (ambiguous), a fixed-step method without dt,
- * precision beyond 64 without taylor, t_end not after t0, the options
- * qd_sim_check_opts refuses, an impact's gap negative at t0, an input
- * without a source.  QD_ERR_ARG with the field's name in qd_diag.name (a
- * number's text error also located in that text). */
+/* The options of the run into *out, with the initial state (issue 33: dt
+ * is the output spacing of every method, step the step of a fixed one).
+ * The method: given, else qd_sim_default_method, a fixed-step default
+ * only when step is given (rows asked for with dt and no step: an
+ * adaptive method, whatever rtol).  A fixed-step method (or fixed) takes
+ * step, else dt as its step; with both, rows every dt from the dense
+ * output (out->every).  Refused before any output: step with rtol but no
+ * method (ambiguous), step with an adaptive method without fixed, a
+ * fixed-step method with neither, precision beyond 64 without taylor,
+ * t_end not after t0, the options qd_sim_check_opts refuses, an impact's
+ * gap negative at t0, an input without a source.  QD_ERR_ARG with the
+ * field's name in qd_diag.name (a number's text error also located in
+ * that text). */
 QD_API qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o,
                                       qd_sim_opts *out);
 

@@ -542,18 +542,18 @@ class Model:
 
     def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
                  events=(), stop_at=None, outputs=(), max_steps=0, speeds=True, inputs=None,
-                 every=None):
+                 every=None, step=None):
         """Integrate the equations of motion from the initial state to t_end
         (qd_sim_run) and return a qdot.Result.
 
         method: "dopri5", "dop853", "gl2", "gl4", "gl6", "verlet",
         "yoshida4/6/8" or "bdf"; None chooses as the command line does
-        (gl4 with a fixed step dt for conservative systems, else dop853;
-        dop853 with dt as its output grid when rtol is given too).
-        rtol, atol: step control; dt: the fixed step of fixed-step methods,
-        the output grid of adaptive ones.  every: the output spacing for
-        any method (rows at t0 + k every from the dense output, as --every;
-        with rtol and no dt an adaptive method).  initial: {name: value} over the
+        (libqdot's qd_sim_setup_options: gl4 when a step is given for a
+        conservative system, else dop853).  rtol, atol: step control.
+        dt: the output spacing, for every method (rows at t0 + k dt from
+        the dense output, as --dt).  step: the step of a fixed-step method
+        (as --step); without it a fixed-step method steps at dt.  every:
+        dt's older name (given with dt, dt is then the step).  initial: {name: value} over the
         model's `initial` line (coordinates, velocities "NAME'", "t", the
         momenta of a model given by H).  events: conditions "EXPR = EXPR"
         with optional guards ", EXPR > EXPR" (as --event); their rows are
@@ -575,7 +575,7 @@ class Model:
         return _sim.simulate(self._core, t_end, method=method, rtol=rtol, atol=atol, dt=dt,
                              initial=initial or {}, events=list(events), stop_at=stop_at,
                              outputs=outputs, max_steps=max_steps, speeds=speeds,
-                             inputs=inputs or {}, every=every)
+                             inputs=inputs or {}, every=every, step=step)
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a

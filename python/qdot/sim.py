@@ -185,7 +185,7 @@ def _add_inputs(core, setup, s, inputs):
 
 
 def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outputs,
-             max_steps, speeds, inputs, every=None):
+             max_steps, speeds, inputs, every=None, step=None):
     """Model.simulate's work (see there), by the set-up `qdot simulate`
     makes (qdot/simsetup.h): the same equations, initial state, names and
     checks, and the same messages."""
@@ -208,10 +208,8 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
                                  ([("stop_at", stop_at, True)] if stop_at else [])):
             if lib.qd_sim_setup_event(setup, text.encode(), stop) != QD_OK:
                 raise _text_error(core, what, text)
-        if method is None and dt is not None and rtol is not None:
-            method = "dop853"  # dt with rtol: the output grid of the adaptive default
         texts = {"t_end": _number(t_end), "dt": _number(dt), "rtol": _number(rtol),
-                 "atol": _number(atol), "every": _number(every),
+                 "atol": _number(atol), "every": _number(every), "step": _number(step),
                  "max_steps": str(int(max_steps)).encode() if max_steps else None,
                  "method": method.encode() if method is not None else None}
         keep = {k: ffi.new("char[]", v) for k, v in texts.items() if v is not None}

@@ -61,7 +61,9 @@ qd_status qd_scene_record(qd_ctx *ctx, qd_sim *s, const qd_sim_opts *opts,
     *fr = (qd_scene_frames){0};
     qd_sim_opts o = *opts;
     /* an adaptive method writes its rows at the frames (dense output); its
-     * dt would only be another output grid */
+     * dt would only be another output grid; a fixed step's rows are its
+     * steps (the frames pick among them), whatever output spacing */
+    o.every = 0;
     if (qd_sim_method_adaptive(o.method))
         o.dt = (o.t_end - o.t0) / (double)(qd_scene_nframes(o.t0, o.t_end) - 1);
     size_t width = qd_sim_columns(s, o.method, NULL, 0);

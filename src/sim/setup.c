@@ -407,8 +407,9 @@ static qd_status initial_values(qd_sim_setup *s) {
 /* What each field is, in the messages (the caller adds its own name of it). */
 static const char *noun(const char *field) {
     static const char *const f[][2] = {
-        {"t_end", "the end time"},      {"dt", "the step"},
-        {"every", "the output spacing"}, {"rtol", "the relative tolerance"},
+        {"t_end", "the end time"},      {"dt", "the output spacing"},
+        {"every", "the output spacing"}, {"step", "the step"},
+        {"rtol", "the relative tolerance"},
         {"atol", "the absolute tolerance"}, {"max_steps", "the most steps"},
     };
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
@@ -474,13 +475,15 @@ static qd_status check_gaps(qd_sim_setup *s) {
 qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_sim_opts *out) {
     QD_ARGS(QD_ERR_ARG, s);
     QD_ARGS_CTX(s->ctx, o && out);
-    double t_end = NAN, dt = 0, rtol = 0, atol = 0, every = 0, steps = 0;
+    double t_end = NAN, dt = 0, rtol = 0, atol = 0, every = 0, step = 0, steps = 0;
     qd_status st = o->t_end ? number(s, "t_end", o->t_end, false, &t_end)
                             : refuse(s, "t_end", "the end time is missing");
     if (st == QD_OK)
         st = number(s, "dt", o->dt, true, &dt);
     if (st == QD_OK)
         st = number(s, "every", o->every, true, &every);
+    if (st == QD_OK)
+        st = number(s, "step", o->step, true, &step);
     if (st == QD_OK)
         st = number(s, "rtol", o->rtol, true, &rtol);
     if (st == QD_OK)
@@ -493,34 +496,54 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     if (st != QD_OK)
         return st;
     *out = (qd_sim_opts){0};
-    if (o->dt && o->rtol && !o->method) {
-        qd_ctx_error(s->ctx, QD_ERR_ARG, "give dt (a fixed step) or rtol (step control), or "
+    /* dt is the output spacing, step the step of a fixed-step method
+     * (issue 33).  every is dt's older name; given with dt (and no step),
+     * dt is the step, as it was then. */
+    const char *step_text = o->step;
+    if (!step_text && o->every && o->dt) {
+        step_text = o->dt;
+        step = dt;
+    }
+    const char *grid_text = o->every ? o->every : o->dt;
+    double grid = o->every ? every : dt;
+    if (o->step && o->every && o->dt && every != dt)
+        return refuse(s, "every", "every (%g) is the older name of dt (%g): give one", every,
+                      dt);
+    if (step_text && o->rtol && !o->method) {
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "give step (a fixed step) or rtol (step control), or "
                                          "name a method");
-        char hint[200];
-        snprintf(hint, sizeof hint, "for rows every %g with step control: every %g with rtol "
-                 "%g (dt is the step of a fixed-step method)", dt, dt, rtol);
-        qd_ctx_error_about(s->ctx, QD_SUBJECT_NONE, 0, NULL, QD_REASON_NONE, hint);
+        qd_ctx_error_about(s->ctx, QD_SUBJECT_NONE, 0, "step", QD_REASON_NONE, NULL);
         return QD_ERR_ARG;
     }
     if (o->method && !qd_sim_method_from_name(o->method, &out->method))
         return refuse(s, "method", "the method takes dopri5, dop853, gl2, gl4, gl6, verlet, yoshida4, "
                       "yoshida6, yoshida8, bdf or taylor, not '%s'", o->method);
-    if (!o->method)
-        out->method = qd_sim_default_method(s->sim, o->dt != NULL);
+    if (!o->method) /* a fixed-step default only when a step is given */
+        out->method = qd_sim_default_method(s->sim, step_text != NULL);
     if (o->precision && o->precision != 64 && o->precision != 80 && o->precision != 128)
         return refuse(s, "precision", "the precision takes 64, 80 or 128 (bits), not %d",
                       o->precision);
     if (o->precision && o->precision != 64 && out->method != QD_SIM_TAYLOR)
         return refuse(s, "precision", "precision %d is for the taylor method (%s takes doubles)",
                       o->precision, qd_sim_method_name(out->method));
-    if (!qd_sim_method_adaptive(out->method) && !o->dt)
-        return refuse(s, "dt", "the method %s takes fixed steps: give the step",
+    bool adaptive = qd_sim_method_adaptive(out->method);
+    bool fixed = !adaptive || (o->fixed && (step_text || grid_text));
+    if (fixed && !step_text && !grid_text)
+        return refuse(s, "step", "the method %s takes fixed steps: give the step (or the "
+                      "output spacing dt, which is then the step)",
                       qd_sim_method_name(out->method));
-    out->dt = dt;
-    out->every = every;
+    if (!fixed && o->step)
+        return refuse(s, "step", "the step is for a fixed-step method (gl2, gl4, gl6, verlet, "
+                      "yoshida*); %s controls its step by rtol (dt is the output spacing)", qd_sim_method_name(out->method));
+    if (fixed) { /* the step: given, else the output spacing; rows at the spacing */
+        out->dt = step_text ? step : grid;
+        out->every = grid_text && out->dt != grid ? grid : 0;
+        out->fixed = o->fixed && adaptive;
+    } else {
+        out->dt = grid; /* an adaptive method's output grid (0: a row at every step) */
+    }
     out->rtol = rtol;
     out->atol = atol;
-    out->fixed = o->fixed && o->dt;
     out->no_project = o->no_project;
     out->max_steps = steps >= 0x1p63 ? (size_t)-1 : (size_t)steps; /* (size_t) of more: UB */
     out->precision = o->precision;

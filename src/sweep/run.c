@@ -276,6 +276,7 @@ qd_status qd_sweep_run_one(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *ba
         /* a row at every step for max, min, escape */
         if (qd_sim_method_adaptive(o.method) && !o.fixed)
             o.dt = 0;
+        o.every = 0;
         qd_sim_stats stats = {0};
         if (needs_sim(w)) {
             st = qd_sim_run_with(ctx, w->s, &o, sink, &a, &stats, final);

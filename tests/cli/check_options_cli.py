@@ -103,8 +103,11 @@ def expressions(qdot, osc):
           r.stderr.startswith("--rtol:1:6: error:") and "did you mean 'pi'?" in r.stderr,
           repr(r.stderr))
     r = run(qdot, "simulate", osc, "--t-end", "1", "--dt", "-m", "--method", "verlet")
-    check("--dt -m: refused as not positive", r.returncode == 2 and "the step must be a "
-          "positive number, not '-m' (--dt)" in r.stderr, repr(r.stderr))
+    check("--dt -m: refused as not positive", r.returncode == 2 and "the output spacing must "
+          "be a positive number, not '-m' (--dt)" in r.stderr, repr(r.stderr))
+    r = run(qdot, "simulate", osc, "--t-end", "1", "--step", "-m", "--method", "verlet")
+    check("--step -m: refused as not positive", r.returncode == 2 and "the step must be a "
+          "positive number, not '-m' (--step)" in r.stderr, repr(r.stderr))
     r = run(qdot, "simulate", osc, "--t-end", "2*x")
     check("--t-end 2*x: a coordinate is not a constant", r.returncode == 2 and
           "'x' is not a constant" in r.stderr, repr(r.stderr))

@@ -66,8 +66,9 @@ def main():
         check("theta1'" in j['final'] and j['final']['t'] == 5, 'final state')
         check('evaluations' in err, 'summary on stderr')
 
-    # CSV: gl4 by default with --dt, momenta columns, one row per step
-    rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, '--dt', 0.01, '--output', 'x2, y2')
+    # CSV: gl4 by default with --step (issue 33: --dt alone is dop853's rows), momenta columns,
+    # one row per step
+    rc, out, err = run(qdot, 'simulate', dp, '--t-end', 1, '--step', 0.01, '--output', 'x2, y2')
     check(rc == 0, f'csv run: {rc} {err}')
     if rc == 0:
         head, data = rows(out)
@@ -75,7 +76,7 @@ def main():
                            'p_theta2', 'energy'], f'header {head}')
         check(head[-2:] == ['x2', 'y2'], f'output columns {head}')
         check(len(data) == 101 and data[-1][0] == 1.0, f'{len(data)} rows')
-        check('gl4' in err, 'default method with --dt is gl4')
+        check('gl4' in err, 'default method with --step is gl4')
         for r in data:
             x2 = math.sin(r[1]) + math.sin(r[2])
             check(abs(r[-2] - x2) < 1e-12, f'x2 at t={r[0]}')

@@ -153,7 +153,7 @@ static void test_errors(void **state) {
     s = fresh(ctx, &m);
     so = (qd_sim_setup_opts){.t_end = "1", .method = "verlet"};
     assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_ERR_ARG);
-    assert_string_equal(d->name, "dt");
+    assert_string_equal(d->name, "step");
     done(s, m);
     s = fresh(ctx, &m);
     so = (qd_sim_setup_opts){.t_end = "-1"};
@@ -165,13 +165,44 @@ static void test_errors(void **state) {
     assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_ERR_ARG);
     assert_string_equal(d->name, "precision");
     done(s, m);
-    /* a fixed step given: the default is a fixed-step method (gl4: unconstrained, conservative) */
-    s = fresh(ctx, &m);
-    so = (qd_sim_setup_opts){.t_end = "1", .dt = "1/64"};
-    assert_int_equal(qd_sim_setup_options(s, &so, &o), QD_OK);
-    assert_int_equal(o.method, QD_SIM_GL4);
-    assert_true(o.dt == 1.0 / 64);
-    done(s, m);
+    /* issue 33: dt is the output spacing, step the fixed step; a fixed-step
+     * default (gl4: unconstrained, conservative) only when a step is given */
+    static const struct {
+        const char *dt, *step, *every, *rtol, *method;
+        qd_status st;
+        qd_sim_method m;
+        double h, every_out; /* qd_sim_opts dt and every */
+        const char *field;   /* refused: the field named */
+    } rule[] = {
+        {"1/64", NULL, NULL, NULL, NULL, QD_OK, QD_SIM_DOP853, 1.0 / 64, 0, NULL},
+        {"0.2", NULL, NULL, "1e-10", NULL, QD_OK, QD_SIM_DOP853, 0.2, 0, NULL},
+        {NULL, "1/64", NULL, NULL, NULL, QD_OK, QD_SIM_GL4, 1.0 / 64, 0, NULL},
+        {"0.5", "1/64", NULL, NULL, NULL, QD_OK, QD_SIM_GL4, 1.0 / 64, 0.5, NULL},
+        {"0.5", "0.5", NULL, NULL, NULL, QD_OK, QD_SIM_GL4, 0.5, 0, NULL},
+        {"0.01", NULL, NULL, NULL, "gl4", QD_OK, QD_SIM_GL4, 0.01, 0, NULL},
+        {"0.01", NULL, "1", NULL, "gl4", QD_OK, QD_SIM_GL4, 0.01, 1, NULL}, /* older spelling */
+        {NULL, NULL, "0.2", "1e-10", NULL, QD_OK, QD_SIM_DOP853, 0.2, 0, NULL},
+        {"0.1", "0.01", "0.2", NULL, NULL, QD_ERR_ARG, 0, 0, 0, "every"},
+        {NULL, "0.01", NULL, "1e-10", NULL, QD_ERR_ARG, 0, 0, 0, "step"},
+        {NULL, "0.01", NULL, NULL, "dop853", QD_ERR_ARG, 0, 0, 0, "step"},
+        {NULL, NULL, NULL, NULL, "gl4", QD_ERR_ARG, 0, 0, 0, "step"},
+    };
+    for (size_t i = 0; i < sizeof rule / sizeof rule[0]; i++) {
+        s = fresh(ctx, &m);
+        so = (qd_sim_setup_opts){.t_end = "1", .dt = rule[i].dt, .step = rule[i].step,
+                                 .every = rule[i].every, .rtol = rule[i].rtol,
+                                 .method = rule[i].method};
+        qd_status st = qd_sim_setup_options(s, &so, &o);
+        if (st != rule[i].st)
+            fail_msg("rule %zu: status %d (%s)", i, (int)st, d->message);
+        if (st == QD_OK && (o.method != rule[i].m || o.dt != rule[i].h ||
+                            o.every != rule[i].every_out || o.fixed))
+            fail_msg("rule %zu: method %s dt %g every %g", i, qd_sim_method_name(o.method),
+                     o.dt, o.every);
+        if (st != QD_OK)
+            assert_string_equal(d->name, rule[i].field);
+        done(s, m);
+    }
     qd_ctx_free(ctx);
 }
 
