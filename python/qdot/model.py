@@ -10,10 +10,11 @@ import json as _json
 
 import numpy as np
 
-from ._core import Core, Error, ModelError, name_of
+from ._core import Core, Error, ModelError, NumericalError, name_of
 from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY
 from . import sim as _sim
 from . import control as _control
+from . import commands as _commands
 
 
 class _Printed:
@@ -97,6 +98,22 @@ class Hamiltonian:
         self.dp = dp
         self.conserved = conserved
         self.is_energy = is_energy
+        self.output = None  # the qdot.Output of `qdot hamiltonian --format json`
+
+    @property
+    def json(self):
+        """The dict `qdot hamiltonian FILE --format json` prints."""
+        return self.output.json
+
+    def __getattr__(self, name):
+        # the other JSON keys (dq_dt, dp_dt, definitions, velocities, ...)
+        out = self.__dict__.get("output")
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("Hamiltonian has no field %r" % name)
+
+    def _repr_latex_(self):
+        return self.output._repr_latex_() if self.output is not None else None
 
     def __repr__(self):
         return "Hamiltonian(H=%r)" % (self.H,)
@@ -382,23 +399,45 @@ class Model:
         finally:
             lib.qd_metric_free(g)
 
-    def hamiltonian(self, sympy=False):
+    def hamiltonian(self, sympy=False, at=None):
         """The Hamiltonian and Hamilton's equations (a Hamiltonian); sympy=True
-        gives SymPy expressions instead of strings."""
+        gives SymPy expressions instead of strings.  Its other attributes
+        are the keys of `qdot hamiltonian --format json` (qd_render_hamiltonian):
+        model, coordinates, momenta, definitions, velocities, H, dq_dt,
+        dp_dt, H_is_energy, H_minus_energy, conserved, H_given (L, L_error
+        for a model given by H); .json is that dict.  at={name: value}
+        (coordinates, momenta named as printed, p_x, t; the others at the
+        model's initial values), as --at: H, dq_dt and dp_dt of the JSON are
+        then numbers there (qd_ham_point_eval), and "at" the point."""
         core = self._core
         given = lib.qd_model_hamiltonian_given(core.model)
         h = lib.qd_ham_derive(core.ctx, core.model, ffi.NULL if given else core.eom_ptr())
         if not h:
             raise core.error(cls=ModelError)
+        pt = new("qd_ham_point")
         try:
             hh = h
             n = hh.n
+            point = ffi.NULL
+            if at:
+                syms, vals = _state_at(core, at, [hh.p[j] for j in range(n)])
+                core.check(lib.qd_ham_point_eval(core.ctx, h, len(syms), exprs(syms),
+                                                 doubles(vals), pt), cls=NumericalError)
+                point = pt
+            src = _commands.source(core)
+            data = _json.loads(_commands.rendered(core, lambda buf: lib.qd_render_hamiltonian(
+                core.ctx, core.model, h, src, point, lib.QD_RENDER_JSON, buf)))
+            latex = _commands.rendered(core, lambda buf: lib.qd_render_hamiltonian(
+                core.ctx, core.model, h, src, ffi.NULL, lib.QD_RENDER_LATEX, buf))
             conv = _converter(core, sympy, [hh.p[j] for j in range(n)])
-            return Hamiltonian(conv(hh.H), [name_of(hh.p[j]) for j in range(n)],
-                               [conv(hh.dq[j]) for j in range(n)],
-                               [conv(hh.dp[j]) for j in range(n)],
-                               bool(hh.conserved), bool(hh.is_energy))
+            out = Hamiltonian(conv(hh.H), [name_of(hh.p[j]) for j in range(n)],
+                              [conv(hh.dq[j]) for j in range(n)],
+                              [conv(hh.dp[j]) for j in range(n)],
+                              bool(hh.conserved), bool(hh.is_energy))
+            out.output = _commands.Output("hamiltonian", data, lambda: latex)
+            return out
         finally:
+            lib.qd_ham_point_free(pt)
             lib.qd_ham_free(h)
 
     def equilibria(self):

@@ -1,0 +1,87 @@
+# python/tests/test_commands.py - the Model methods that stand for CLI
+# commands: each checks the physics of its result, then that its fields are
+# the JSON `qdot CMD FILE --format json` prints for the same model (the
+# same keys and values: the method calls the printer the command calls).
+import math
+import os
+import subprocess
+import json
+
+import numpy as np
+import pytest
+
+import qdot
+
+from conftest import ROOT, EXAMPLES
+
+BUILD = os.environ.get("QDOT_BUILD") or os.path.join(ROOT, "build")
+
+OSCILLATOR = """coordinates x
+parameters m = 2, k = 3
+particle m at (x, 0)
+V = k*x^2/2
+initial x = 1
+"""
+
+PENDULUM = """coordinates theta
+parameters m = 1, l = 2, g = 9.81
+particle m at l*(sin(theta), -cos(theta))
+V = -m*g*l*cos(theta)
+initial theta = 0.3
+"""
+
+
+def model_file(tmp_path, text, name="model.qd"):
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+def cli(*args):
+    """The JSON `qdot ARGS --format json` prints (skip without a build)."""
+    exe = os.path.join(BUILD, "qdot")
+    if not os.access(exe, os.X_OK):
+        pytest.skip("no build/qdot to compare with")
+    run = subprocess.run([exe, *args, "--format", "json"], capture_output=True, text=True)
+    assert run.returncode in (0, 3), run.stderr
+    return json.loads(run.stdout)
+
+
+def same(py, ref):
+    """py (an Output's JSON) equals the CLI's, key by key, numbers to 1e-12."""
+    assert list(py) == list(ref)
+    for key in ref:
+        close(py[key], ref[key], key)
+
+
+def close(a, b, where):
+    if isinstance(b, dict):
+        assert isinstance(a, dict) and list(a) == list(b), where
+        for k in b:
+            close(a[k], b[k], "%s.%s" % (where, k))
+    elif isinstance(b, list):
+        assert isinstance(a, list) and len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            close(x, y, "%s[%d]" % (where, i))
+    elif isinstance(b, float) or (isinstance(b, int) and not isinstance(b, bool)
+                                  and isinstance(a, float)):
+        assert a == pytest.approx(b, rel=1e-12, abs=1e-12), where
+    else:
+        assert a == b, where
+
+
+# ---- hamiltonian -------------------------------------------------------------
+
+def test_hamiltonian_oscillator(tmp_path):
+    path = model_file(tmp_path, OSCILLATOR)
+    m = qdot.Model.load(path)
+    h = m.hamiltonian()
+    assert h.momenta == ["p_x"] and h.conserved and h.H_is_energy
+    x, p, mass, k = 0.5, 2.0, 2.0, 3.0
+    at = m.hamiltonian(at={"x": x, "p_x": p}).output  # H is the formula's attribute
+    assert at.H == pytest.approx(p**2 / (2 * mass) + k * x**2 / 2)
+    assert at.dq_dt == pytest.approx([p / mass]) and at.dp_dt == pytest.approx([-k * x])
+    assert isinstance(at.dq_dt, np.ndarray)
+    same(h.json, cli("hamiltonian", path))
+    same(at.json, cli("hamiltonian", path, "--at", "x=0.5, p_x=2"))
+    assert "\\frac{p_{x}^{2}}{2 m}" in h._repr_latex_()
