@@ -11,7 +11,7 @@ import json as _json
 import numpy as np
 
 from ._core import Core, Error, ModelError, NumericalError, name_of
-from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY
+from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX
 from . import sim as _sim
 from . import control as _control
 from . import commands as _commands
@@ -439,6 +439,54 @@ class Model:
         finally:
             lib.qd_ham_point_free(pt)
             lib.qd_ham_free(h)
+
+    def _ignored(self, ignore, what):
+        """The coordinate symbols of ignore (names, or "a,b" text), each
+        looked up by the library (qd_routh_lookup) and checked cyclic
+        (qd_routh_not_cyclic); ValueError with the library's reason."""
+        core = self._core
+        if isinstance(ignore, str):
+            ignore = [x.strip() for x in ignore.split(",")]
+        if not ignore or not all(isinstance(x, str) and x for x in ignore):
+            raise ValueError("%s: ignore names the cyclic coordinates (\"phi\" or [\"phi\", "
+                             "...]), not %r" % (what, ignore))
+        syms = []
+        for name in ignore:
+            q = lib.qd_routh_lookup(core.ctx, core.model, name.encode())
+            if not q:
+                raise ValueError("%s: %s" % (what, core.error().message))
+            syms.append(q)
+        e = core.eom()
+        why = ffi.new("const char **")
+        for q in syms:
+            for j in range(e.n):
+                if e.q[j] == q and lib.qd_routh_not_cyclic(core.ctx, core.model, e, j, why):
+                    raise ValueError("%s: %s cannot be ignored: %s"
+                                     % (what, name_of(q), cstr(why[0])))
+        return syms
+
+    def routh(self, ignore):
+        """Routh's reduction (`qdot routh FILE --ignore Q[,Q...]`, qd_routh_json):
+        a qdot.Output with model, ignored, momenta, kept,
+        momentum_definitions, R, R2, R1, R0, effective_potential,
+        jacobi_integral, equations, gyroscopic, quadratures, conserved (and
+        the forced and implicit keys where they apply).  ignore: a name, "a,b"
+        or a list of names."""
+        core = self._core
+        ign = self._ignored(ignore, "routh")
+        opts = new("qd_routh_opts", {"implicit": True, "forced": True})  # as `qdot routh`
+        r = lib.qd_routh_derive_opts(core.ctx, core.model, core.eom_ptr(), len(ign),
+                                     exprs(ign), opts)
+        if not r:
+            raise core.error(cls=ModelError)
+        try:
+            src = _commands.source(core)
+            latex = _commands.rendered(core, lambda buf: lib.qd_routh_print(
+                core.ctx, r, core.model, core.eom_ptr(), src, QD_FMT_LATEX, buf))
+            return _commands.output(core, "routh", lambda buf: lib.qd_routh_json(
+                core.ctx, r, core.model, core.eom_ptr(), src, buf), lambda: latex)
+        finally:
+            lib.qd_routh_free(r)
 
     def equilibria(self):
         """Every equilibrium found (a list of Equilibrium, sorted by q): exact

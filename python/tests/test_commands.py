@@ -54,6 +54,16 @@ def same(py, ref):
         close(py[key], ref[key], key)
 
 
+def num(text, **vals):
+    """The value of a formula of the model language (a result's string) at
+    vals (NAME' written NAME_d), read by SymPy: the tests' own reading."""
+    import re
+    import sympy
+    src = re.sub(r"([A-Za-z_]\w*)'", r"\1_d", text).replace("^", "**")
+    names = {k: sympy.Symbol(k) for k in vals}
+    return float(sympy.sympify(src, locals=names).subs({names[k]: v for k, v in vals.items()}))
+
+
 def close(a, b, where):
     if isinstance(b, dict):
         assert isinstance(a, dict) and list(a) == list(b), where
@@ -85,3 +95,24 @@ def test_hamiltonian_oscillator(tmp_path):
     same(h.json, cli("hamiltonian", path))
     same(at.json, cli("hamiltonian", path, "--at", "x=0.5, p_x=2"))
     assert "\\frac{p_{x}^{2}}{2 m}" in h._repr_latex_()
+
+
+# ---- routh -------------------------------------------------------------------
+
+def test_routh_kepler():
+    path = os.path.join("examples", "kepler_polar.qd")
+    m = qdot.Model.load(os.path.join(ROOT, path))
+    r = m.routh("theta")
+    assert r.ignored == ["theta"] and r.kept == ["r"] and r.conserved
+    mass, k, rr, p = 1.3, 4.0, 2.0, 1.5
+    assert num(r.effective_potential, k=k, m=mass, r=rr, p_theta=p) == pytest.approx(
+        -k / rr + p**2 / (2 * mass * rr**2))
+    assert num(r.quadratures["theta'"], m=mass, r=rr, p_theta=p) == pytest.approx(
+        p / (mass * rr**2))
+    assert r.equations[0].q == "r"
+    same(r.json, cli("routh", m._core.file, "--ignore", "theta"))
+    assert "\\frac{p_{\\theta}^{2}}" in r._repr_latex_()
+    with pytest.raises(ValueError):
+        m.routh("r")   # not cyclic: V depends on it
+    with pytest.raises(ValueError):
+        m.routh("rho")
