@@ -488,6 +488,27 @@ class Model:
         finally:
             lib.qd_routh_free(r)
 
+    def integrals(self, search=True):
+        """Integrals of motion (`qdot integrals`, qd_integrals_json): a
+        qdot.Output with model, coordinates, L, cyclic, jacobi,
+        energy_balance, found, tested, noether (of the model's `symmetry`
+        statements), proposed (its `integral` statements).  search=False is
+        --no-search."""
+        core = self._core
+        o = new("qd_integrals_opts", {"search": bool(search)})
+        I = lib.qd_integrals_derive(core.ctx, core.model, core.eom_ptr(), o)  # noqa: E741
+        if not I:
+            raise core.error()
+        g = new("qd_integrals_given")
+        try:
+            core.check(lib.qd_integrals_given_derive(core.ctx, I, core.model, g))
+            src = _commands.source(core)
+            return _commands.output(core, "integrals", lambda buf: lib.qd_integrals_json(
+                core.ctx, I, g, src, buf))
+        finally:
+            lib.qd_integrals_given_free(g)
+            lib.qd_integrals_free(I)
+
     def equilibria(self):
         """Every equilibrium found (a list of Equilibrium, sorted by q): exact
         where the equations solve in closed form, else by a multi-start

@@ -116,3 +116,20 @@ def test_routh_kepler():
         m.routh("r")   # not cyclic: V depends on it
     with pytest.raises(ValueError):
         m.routh("rho")
+
+
+# ---- integrals ---------------------------------------------------------------
+
+def test_integrals_kepler():
+    path = os.path.join(EXAMPLES, "kepler_cartesian.qd")
+    out = qdot.Model.load(path).integrals()
+    assert out.jacobi.conserved and out.jacobi.equals_energy
+    assert out.noether[0].name == "rot" and out.noether[0].conserved
+    L = num(out.noether[0].integral, m=1.3, x=1.0, y=0.5, x_d=0.2, y_d=1.5)
+    assert L == pytest.approx(1.3 * (1.0 * 1.5 - 0.2 * 0.5))   # m (x y' - y x')
+    assert [p.name for p in out.proposed] == ["energy", "Ax", "Ay"]
+    assert all(p.conserved for p in out.proposed)
+    assert "angular momentum about z" in out.tested
+    same(out.json, cli("integrals", path))
+    same(qdot.Model.load(path).integrals(search=False).json,
+         cli("integrals", path, "--no-search"))
