@@ -509,6 +509,28 @@ class Model:
             lib.qd_integrals_given_free(g)
             lib.qd_integrals_free(I)
 
+    def hj(self, solve=False, energy=None):
+        """The Hamilton-Jacobi equation (`qdot hj`, qd_hj_json): a qdot.Output
+        with model, H, equation, time_independent, separable, form, why,
+        separation (per coordinate), W, constants, energy_constant.
+        solve=True is --solve (the motion where the quadratures close);
+        energy names the energy constant (default E)."""
+        core = self._core
+        name = ffi.new("char[]", energy.encode()) if energy else ffi.NULL
+        h = lib.qd_hj_derive(core.ctx, core.model, new("qd_hj_opts", {"energy_name": name}))
+        if not h:
+            raise core.error(cls=ModelError)
+        try:
+            if solve and h.separable:
+                core.check(lib.qd_hj_solve(core.ctx, h))
+            src = _commands.source(core)
+            latex = _commands.rendered(core, lambda buf: lib.qd_hj_print(
+                core.ctx, h, core.model, src, QD_FMT_LATEX, buf))
+            return _commands.output(core, "hj", lambda buf: lib.qd_hj_json(
+                core.ctx, h, src, buf), lambda: latex)
+        finally:
+            lib.qd_hj_free(h)
+
     def equilibria(self):
         """Every equilibrium found (a list of Equilibrium, sorted by q): exact
         where the equations solve in closed form, else by a multi-start

@@ -133,3 +133,18 @@ def test_integrals_kepler():
     same(out.json, cli("integrals", path))
     same(qdot.Model.load(path).integrals(search=False).json,
          cli("integrals", path, "--no-search"))
+
+
+# ---- hj ----------------------------------------------------------------------
+
+def test_hj_oscillator():
+    path = os.path.join(EXAMPLES, "hj_oscillator.qd")
+    m = qdot.Model.load(path)
+    out = m.hj(solve=True)
+    assert out.separable and out.constants == ["E"]
+    mass, k, E, t = 2.0, 8.0, 1.0, 0.3
+    x = num(out.separation[0].motion, k=k, m=mass, E=E, beta_x=0.0, t=t)
+    assert x == pytest.approx(math.sqrt(2 * E / k) * math.sin(math.sqrt(k / mass) * t))
+    same(out.json, cli("hj", path, "--solve"))
+    same(m.hj(energy="h").json, cli("hj", path, "--energy", "h"))
+    assert out._repr_latex_().startswith("$$")
