@@ -531,6 +531,18 @@ class Model:
         finally:
             lib.qd_hj_free(h)
 
+    def check(self):
+        """The verdict and summary of `qdot check` (qd_check_verdict_of,
+        qd_render_check): a qdot.Output whose keys are those of `qdot check
+        --format json` ("ok"; "reason", "message", "witness" for a no)."""
+        core = self._core
+        v = new("qd_check_verdict")
+        core.check(lib.qd_check_verdict_of(core.ctx, core.model, core.eom_ptr(), v))
+        src = _commands.source(core)
+        o = new("qd_render_opts", {"source": src})
+        return _commands.output(core, "check", lambda buf: lib.qd_render_check(
+            core.ctx, core.model, core.eom_ptr(), o, v, lib.QD_RENDER_JSON, buf))
+
     def equilibria(self):
         """Every equilibrium found (a list of Equilibrium, sorted by q): exact
         where the equations solve in closed form, else by a multi-start

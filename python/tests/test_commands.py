@@ -148,3 +148,14 @@ def test_hj_oscillator():
     same(out.json, cli("hj", path, "--solve"))
     same(m.hj(energy="h").json, cli("hj", path, "--energy", "h"))
     assert out._repr_latex_().startswith("$$")
+
+
+# ---- check -------------------------------------------------------------------
+
+def test_check_pendulum(tmp_path):
+    path = model_file(tmp_path, PENDULUM)
+    out = qdot.Model.load(path).check()
+    assert out.ok and out.coordinates == ["theta"]
+    assert out.degrees_of_freedom.configurational == 1
+    assert out.energy_conserved
+    same(out.json, cli("check", path))
