@@ -135,6 +135,24 @@ class Equilibrium:
         return "Equilibrium(q=%r, kind=%r)" % (self.q, self.kind)
 
 
+class Equilibria(list):
+    """The equilibria found (a list of Equilibrium); .output is the
+    qdot.Output of `qdot equilibria --format json`, whose keys (method,
+    exact, continuum, equilibria) are attributes too, .json its dict."""
+
+    output = None
+
+    @property
+    def json(self):
+        return self.output.json
+
+    def __getattr__(self, name):
+        out = self.__dict__.get("output") or type(self).output
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("Equilibria has no field %r" % name)
+
+
 class Mode:
     """One normal mode (qdot/modes.h): omega2 the eigenvalue w^2 of
     K a = w^2 M a (negative: an unstable direction), omega = sqrt(omega2)
@@ -544,16 +562,23 @@ class Model:
             core.ctx, core.model, core.eom_ptr(), o, v, lib.QD_RENDER_JSON, buf))
 
     def equilibria(self):
-        """Every equilibrium found (a list of Equilibrium, sorted by q): exact
-        where the equations solve in closed form, else by a multi-start
-        Newton search over the default box (qd_equilibria_find)."""
+        """Every equilibrium found (an Equilibria: a list of Equilibrium,
+        sorted by q): exact where the equations solve in closed form, else by
+        a multi-start Newton search over the default box
+        (qd_equilibria_find).  Its other attributes are the keys of `qdot
+        equilibria --format json` (qd_equilibria_print): method, exact,
+        continuum, equilibria (each with equilibrium, exact, kind,
+        hessian_signs, symmetric, residual); .json is that dict."""
         core = self._core
         syms, vals = self._rest_state()
         out = new("qd_equilibria")
         try:
             core.check(lib.qd_equilibria_find(core.ctx, core.eom_ptr(), core.model, len(syms),
                                               exprs(syms), doubles(vals), ffi.NULL, out))
-            return [self._equilibrium(out.pts[k], out.n) for k in range(out.count)]
+            found = Equilibria(self._equilibrium(out.pts[k], out.n) for k in range(out.count))
+            found.output = _commands.output(core, "equilibria", lambda buf: (
+                lib.qd_equilibria_print(core.ctx, core.eom_ptr(), out, True, buf)))
+            return found
         finally:
             lib.qd_equilibria_free(out)
 

@@ -159,3 +159,16 @@ def test_check_pendulum(tmp_path):
     assert out.degrees_of_freedom.configurational == 1
     assert out.energy_conserved
     same(out.json, cli("check", path))
+
+
+# ---- equilibria --------------------------------------------------------------
+
+def test_equilibria_pendulum(tmp_path):
+    path = model_file(tmp_path, PENDULUM)
+    eqs = qdot.Model.load(path).equilibria()
+    assert [e.kind for e in eqs] == ["minimum", "maximum"]
+    assert eqs[0].q["theta"] == 0 and eqs[1].q["theta"] == pytest.approx(math.pi)
+    assert eqs.method == "exact" and not eqs.continuum
+    assert [p.exact.theta for p in eqs.equilibria] == ["0", "pi"]
+    assert eqs.equilibria[1].hessian_signs.tolist() == [0, 1, 0]   # one negative direction
+    same(eqs.json, cli("equilibria", path))
