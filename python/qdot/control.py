@@ -12,7 +12,8 @@ import numbers
 import numpy as np
 
 from ._core import Error, ModelError, format_diag, name_of, number_expr
-from ._lib import lib, new, cstr, exprs, doubles, doubles_of, FLOATS
+from ._lib import ffi, lib, new, cstr, exprs, doubles, doubles_of, FLOATS
+from . import commands as _commands
 
 # the words of each qd_care_failure (qdot/control.h), by its enum value
 CARE_FAILURES = {lib.QD_CARE_OK: "ok", lib.QD_CARE_R_NOT_PD: "R not positive definite",
@@ -71,7 +72,10 @@ def linearize(core, about):
     try:
         core.check(lib.qd_linearize(core.ctx, core.eom_ptr(), core.model, len(keys),
                                     exprs(keys), exprs(vals), out))
-        return StateSpace(core, out, dict(about))
+        ss = StateSpace(core, out, dict(about))
+        ss.output = _commands.output(core, "linearize", lambda buf: lib.qd_statespace_render(
+            core.ctx, out, ffi.NULL, lib.QD_SS_JSON, buf))
+        return ss
     finally:
         lib.qd_statespace_free(out)
 
@@ -100,6 +104,23 @@ class StateSpace:
     """
 
     rank_tolerance = FLOATS["QD_SS_RANK_TOL"]  # qdot/statespace.h
+    output = None  # the qdot.Output of `qdot linearize --format json`
+
+    @property
+    def json(self):
+        """The dict `qdot linearize FILE --about ... --format json` prints
+        (qd_statespace_render): states, inputs, outputs, A, B, C, D, xdot0,
+        A_exact, ..., eigenvalues as [re, im] pairs, rank_tolerance,
+        controllable, controllability_rank, uncontrollable_modes,
+        observable, observability_rank, unobservable_modes."""
+        return self.output.json
+
+    def __getattr__(self, name):
+        # the JSON keys the StateSpace has no attribute of (controllability_rank, ...)
+        out = self.__dict__.get("output")
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("StateSpace has no field %r" % name)
 
     def __init__(self, core, s, about):
         self._core = core

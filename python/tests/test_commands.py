@@ -172,3 +172,16 @@ def test_equilibria_pendulum(tmp_path):
     assert [p.exact.theta for p in eqs.equilibria] == ["0", "pi"]
     assert eqs.equilibria[1].hessian_signs.tolist() == [0, 1, 0]   # one negative direction
     same(eqs.json, cli("equilibria", path))
+
+
+# ---- linearize ---------------------------------------------------------------
+
+def test_linearize_cart_pendulum():
+    path = os.path.join(EXAMPLES, "cart_pendulum.qd")
+    ss = qdot.Model.load(path).linearize(about={"th": 0})
+    assert ss.states == ["x", "th", "x'", "th'"] and ss.inputs == ["F"]
+    growth = math.sqrt(9.81 * 1.1 / 0.5)   # the inverted pendulum falls: sqrt(g (M + m)/(M l))
+    assert max(re for re, im in ss.json["eigenvalues"]) == pytest.approx(growth)
+    assert ss.controllable and ss.controllability_rank == 4 and ss.uncontrollable_modes == []
+    assert ss.output.A.shape == (4, 4) and np.allclose(ss.output.A, ss.A)
+    same(ss.json, cli("linearize", path, "--about", "th=0"))
