@@ -146,3 +146,19 @@ def coordinate_symbols(core, names, what):
     if not out:
         raise ValueError("%s: name at least one coordinate" % what)
     return out
+
+
+def text_arg(value, what):
+    """An option's value as the C string the library reads (None stays
+    None): text as given, a number as its repr, {name: value} as
+    "name=value, ..." (the command line's spelling of it)."""
+    if value is None:
+        return None
+    if isinstance(value, dict):
+        value = ", ".join("%s=%s" % (k, v if isinstance(v, str) else repr(float(v)))
+                          for k, v in value.items())
+    elif _is_number(value):
+        value = repr(float(value))
+    elif not isinstance(value, str):
+        raise TypeError("%s: a dict, a number or text, not %s" % (what, type(value).__name__))
+    return ffi.new("char[]", value.encode())

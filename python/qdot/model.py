@@ -506,6 +506,34 @@ class Model:
         finally:
             lib.qd_routh_free(r)
 
+    def orbit(self, ignore, at=None, momentum=None, energy=None, equation=False):
+        """The motion left in one coordinate (`qdot orbit FILE --ignore Q`,
+        qd_orbit_solve_text and qd_orbit_render): a qdot.Output with the keys
+        of `qdot orbit --format json` (V_eff, the turning points and the
+        kind of orbit, the radial period and advances, the circular orbits,
+        Kepler's conic, ...).  ignore: the cyclic coordinates (all but one);
+        at ({name: value} or "r=1, theta'=1.5"), momentum ({"p_theta": 3}
+        or text) and energy (a number or an expression in the parameters)
+        as --at, --momentum and --energy; equation=True is --orbit."""
+        core = self._core
+        ign = self._ignored(ignore, "orbit")
+        o = lib.qd_orbit_derive(core.ctx, core.model, core.eom_ptr(), len(ign), exprs(ign))
+        if not o:
+            raise core.error()
+        res = new("qd_orbit_result")
+        keep = [_commands.text_arg(x, what) for x, what in
+                ((at, "at"), (momentum, "momentum"), (energy, "energy"))]
+        t = new("qd_orbit_text", {k: (ffi.NULL if v is None else v)
+                                  for k, v in zip(("at", "momentum", "energy"), keep)})
+        try:
+            core.check(lib.qd_orbit_solve_text(core.ctx, o, core.model, t, res))
+            src = _commands.source(core)
+            return _commands.output(core, "orbit", lambda buf: lib.qd_orbit_render(
+                core.ctx, o, res, src, bool(equation), True, buf))
+        finally:
+            lib.qd_orbit_result_free(res)
+            lib.qd_orbit_free(o)
+
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a
         qdot.Output with model, coordinates, L, cyclic, jacobi,

@@ -185,3 +185,25 @@ def test_linearize_cart_pendulum():
     assert ss.controllable and ss.controllability_rank == 4 and ss.uncontrollable_modes == []
     assert ss.output.A.shape == (4, 4) and np.allclose(ss.output.A, ss.A)
     same(ss.json, cli("linearize", path, "--about", "th=0"))
+
+
+# ---- orbit -------------------------------------------------------------------
+
+def test_orbit_kepler():
+    path = os.path.join(EXAMPLES, "kepler_polar.qd")
+    m = qdot.Model.load(path)
+    o = m.orbit("theta", equation=True)
+    mass, k = 1.3, 4.0
+    a = o.conic.a
+    assert a == pytest.approx(-k / (2 * o.energy))                 # a = -k/(2E)
+    assert o.radial_period == pytest.approx(2 * math.pi * math.sqrt(mass * a**3 / k))
+    assert o.kind == "bound" and o.advance.theta == pytest.approx(2 * math.pi)
+    assert o.turning_points == pytest.approx([a * (1 - o.conic.e), a * (1 + o.conic.e)])
+    same(o.json, cli("orbit", path, "--ignore", "theta", "--orbit"))
+    o2 = m.orbit(["theta"], at={"r": 1, "theta'": 1.2}, momentum={"p_theta": 1.4})
+    assert o2.momenta.p_theta == pytest.approx(1.4)
+    same(o2.json, cli("orbit", path, "--ignore", "theta", "--at", "r=1, theta'=1.2",
+                      "--momentum", "p_theta=1.4"))
+    assert m.orbit("theta", energy=1.0).kind == "unbound"        # E > 0
+    with pytest.raises(qdot.Error, match="unknown name 'kk'"):
+        m.orbit("theta", energy="kk")
