@@ -458,22 +458,29 @@ class Model:
             lib.qd_ham_point_free(pt)
             lib.qd_ham_free(h)
 
-    def _ignored(self, ignore, what):
-        """The coordinate symbols of ignore (names, or "a,b" text), each
-        looked up by the library (qd_routh_lookup) and checked cyclic
-        (qd_routh_not_cyclic); ValueError with the library's reason."""
+    def _lookup(self, names, what):
+        """The coordinate symbols of names (a list, or "a,b" text), each
+        looked up by the library (qd_routh_lookup); ValueError with its
+        message ("did you mean") for one that is not a coordinate."""
         core = self._core
-        if isinstance(ignore, str):
-            ignore = [x.strip() for x in ignore.split(",")]
-        if not ignore or not all(isinstance(x, str) and x for x in ignore):
-            raise ValueError("%s: ignore names the cyclic coordinates (\"phi\" or [\"phi\", "
-                             "...]), not %r" % (what, ignore))
+        if isinstance(names, str):
+            names = [x.strip() for x in names.split(",")]
+        if not names or not all(isinstance(x, str) and x for x in names):
+            raise ValueError("%s: name coordinates (\"phi\" or [\"phi\", ...]), not %r"
+                             % (what, names))
         syms = []
-        for name in ignore:
+        for name in names:
             q = lib.qd_routh_lookup(core.ctx, core.model, name.encode())
             if not q:
                 raise ValueError("%s: %s" % (what, core.error().message))
             syms.append(q)
+        return syms
+
+    def _ignored(self, ignore, what):
+        """The coordinate symbols of ignore (see _lookup), each checked
+        cyclic (qd_routh_not_cyclic); ValueError with the library's reason."""
+        core = self._core
+        syms = self._lookup(ignore, what)
         e = core.eom()
         why = ffi.new("const char **")
         for q in syms:
@@ -533,6 +540,29 @@ class Model:
         finally:
             lib.qd_orbit_result_free(res)
             lib.qd_orbit_free(o)
+
+    def action(self, at=None, angles=()):
+        """The action-angle variables of a separable bounded motion (`qdot
+        action`, qd_action_at and qd_action_print): a qdot.Output with
+        separation, energy, coordinates (per coordinate: constant, value,
+        kind, turning_points, J, omega, angle), actions, frequencies, angles,
+        degeneracies, H_of_J.  at: {name: value} over the model's initial
+        values (coordinates, velocities "NAME'", t, parameters), as --at;
+        angles: coordinates to take as angles (--angle).  A model given by H
+        takes its velocities from its initial values only (see docs)."""
+        core = self._core
+        syms, vals = _state_at(core, at or {}, [])
+        angle_syms = self._lookup(angles, "action") if angles else []
+        keep = exprs(angle_syms)
+        opts = new("qd_action_opts", {"nangles": len(angle_syms), "angles": keep})
+        act = new("qd_action")
+        try:
+            core.check(lib.qd_action_at(core.ctx, core.model, len(syms), exprs(syms),
+                                        doubles(vals), opts, act))
+            return _commands.output(core, "action", lambda buf: lib.qd_action_print(
+                core.ctx, act, True, buf))
+        finally:
+            lib.qd_action_free(act)
 
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a

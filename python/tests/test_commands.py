@@ -207,3 +207,33 @@ def test_orbit_kepler():
     assert m.orbit("theta", energy=1.0).kind == "unbound"        # E > 0
     with pytest.raises(qdot.Error, match="unknown name 'kk'"):
         m.orbit("theta", energy="kk")
+
+
+# ---- action ------------------------------------------------------------------
+
+def test_action_oscillators_and_pendulum():
+    path = os.path.join(EXAMPLES, "action_anisotropic.qd")
+    m = qdot.Model.load(path)
+    out = m.action()
+    # J = 2 pi E_k/omega_k for each oscillator: E_x = kx/2, E_y = m y'^2/2
+    assert out.frequencies.x == pytest.approx(1.0) and out.frequencies.y == pytest.approx(
+        math.sqrt(2))
+    assert out.actions.x == pytest.approx(2 * math.pi * 0.5 / 1.0)
+    assert out.actions.y == pytest.approx(2 * math.pi * 0.5 / math.sqrt(2))
+    same(out.json, cli("action", path))
+    at = m.action(at={"x": 0.5})
+    assert at.actions.x == pytest.approx(2 * math.pi * 0.125)
+    same(at.json, cli("action", path, "--at", "x=0.5"))
+    # the pendulum from rest at theta0 = 1: T = 4 sqrt(l/g) K(sin(theta0/2))
+    pend = os.path.join(EXAMPLES, "action_pendulum.qd")
+    out = qdot.Model.load(pend).action()
+    k = math.sin(0.5)
+    a, b = 1.0, math.sqrt(1 - k * k)
+    for _ in range(30):
+        a, b = (a + b) / 2, math.sqrt(a * b)
+    period = 4 * math.sqrt(1 / 9.81) * math.pi / (2 * a)
+    assert out.frequencies.theta == pytest.approx(2 * math.pi / period, rel=1e-9)
+    assert out.coordinates[0].kind == "libration"
+    same(out.json, cli("action", pend))
+    with pytest.raises(ValueError, match="unknown coordinate"):
+        m.action(angles=["z"])
