@@ -380,7 +380,7 @@ class Model:
         out.hamel = hamel
         return out
 
-    def metric(self, sympy=False):
+    def metric(self, sympy=False, force=None):
         """The metric of the coordinates (qdot/metric.h, `qdot metric`): an
         object whose attributes are the JSON keys of `qdot metric --format
         json` that come from the library: coordinates, metric,
@@ -388,7 +388,10 @@ class Model:
         (indexed [l][i][j] by coordinate names), T2, T1, T0, Q, geodesic,
         scale_factors, orthogonal, jacobian_det and singular (a list of
         (lhs, rhs, period)).  Expressions are strings, or SymPy values with
-        sympy=True."""
+        sympy=True.  The other keys of the JSON (qd_metric_json: force,
+        chart) are attributes too, .json is the whole dict and .output its
+        qdot.Output; force: "G1, G2, ..." the covariant components of a
+        force, as --force (default: the model's Q)."""
         import types
         core = self._core
         g = lib.qd_metric_new(core.ctx, core.model)
@@ -403,7 +406,15 @@ class Model:
             vec = lambda a, k=0: {names[i]: conv(a[k + i]) for i in range(n)}  # noqa: E731
             mat = lambda a, k=0: {names[i]: vec(a, k + i * n) for i in range(n)}  # noqa: E731
             sym3 = lambda a: {names[l]: mat(a, l * n * n) for l in range(n)}  # noqa: E731,E741
-            return types.SimpleNamespace(
+            G = ffi.new("const qd_expr *[]", n + 1)
+            if force is not None:
+                if not isinstance(force, str):
+                    raise TypeError("metric: force is text \"G1, G2, ...\", not %s"
+                                    % type(force).__name__)
+                core.check(lib.qd_metric_force_read(core.ctx, g, force.encode(), G))
+            out = _commands.output(core, "metric", lambda buf: lib.qd_metric_json(
+                core.ctx, g, G if force is not None else ffi.NULL, buf))
+            ns = types.SimpleNamespace(
                 coordinates=names, source="L" if m.from_L else "T",
                 T2=conv(m.T2), T1=conv(m.T1), T0=conv(m.T0),
                 metric=mat(m.g), metric_inverse=mat(m.ginv), det=conv(m.det),
@@ -414,6 +425,11 @@ class Model:
                 orthogonal=m.orthogonal, jacobian_det=opt(m.jac_det),
                 singular=[(conv(m.sing[k].lhs), conv(m.sing[k].rhs), opt(m.sing[k].period))
                           for k in range(m.nsing)])
+            for key in out.keys():
+                if not hasattr(ns, key):
+                    setattr(ns, key, out[key])
+            ns.json, ns.output = out.json, out
+            return ns
         finally:
             lib.qd_metric_free(g)
 

@@ -237,3 +237,22 @@ def test_action_oscillators_and_pendulum():
     same(out.json, cli("action", pend))
     with pytest.raises(ValueError, match="unknown coordinate"):
         m.action(angles=["z"])
+
+
+# ---- metric ------------------------------------------------------------------
+
+def test_metric_polar():
+    path = os.path.join(EXAMPLES, "kepler_polar.qd")
+    m = qdot.Model.load(path)
+    g = m.metric()
+    mass, r = 1.3, 2.0
+    assert num(g.metric["theta"]["theta"], m=mass, r=r) == pytest.approx(mass * r**2)
+    assert num(g.det, m=mass, r=r) == pytest.approx(mass**2 * r**2)
+    # Gamma^r_{theta theta} = -r, Gamma^theta_{r theta} = 1/r
+    assert num(g.json["christoffel_second"]["r"]["theta"]["theta"], r=r) == pytest.approx(-r)
+    assert num(g.json["christoffel_second"]["theta"]["r"]["theta"], r=r) == pytest.approx(1 / r)
+    assert g.chart["jacobian_det"] == "r" and not g.force["given"]
+    same(g.json, cli("metric", path))
+    f = m.metric(force="0, k")     # a torque k: its physical component k/r
+    assert num(f.force["physical"]["theta"], k=4.0, r=r) == pytest.approx(4.0 / r)
+    same(f.json, cli("metric", path, "--force", "0, k"))
