@@ -10,8 +10,9 @@ import json as _json
 
 import numpy as np
 
-from ._core import Core, Error, ModelError, NumericalError, name_of
-from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX
+from ._core import Core, Error, ModelError, NumericalError, format_diag, name_of
+from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
+                   QD_FMT_TEXT)
 from . import sim as _sim
 from . import control as _control
 from . import commands as _commands
@@ -579,6 +580,44 @@ class Model:
                 core.ctx, act, True, buf))
         finally:
             lib.qd_action_free(act)
+
+    def _phase_read(self, ph, text, what):
+        """text read as a function on phase space (qd_phase_read); a
+        ModelError shown in the text when it does not read."""
+        core = self._core
+        if not isinstance(text, str):
+            raise TypeError("%s is an expression (text), not %s" % (what, type(text).__name__))
+        diag = new("qd_diag")
+        x = lib.qd_phase_read(core.ctx, ph, text.encode(), diag)
+        if not x:
+            lib.qd_ctx_clear_error(core.ctx)
+            raise ModelError(format_diag(diag, what, text.encode()), diag, what)
+        return x
+
+    def bracket(self, F, G=None, dt=False):
+        """The Poisson bracket [F, G] in the model's coordinates and momenta
+        p_<q> (`qdot bracket FILE F G`), or with dt=True and no G the rate
+        dF/dt along the motion (`qdot bracket --dt F`): a qdot.Output with
+        the keys of `qdot bracket --format json` (qd_phase_bracket_print);
+        LaTeX in Jupyter."""
+        core = self._core
+        if bool(dt) == (G is not None):
+            raise ValueError("bracket: give F and G, or F with dt=True")
+        ph = new("qd_phase")
+        try:
+            core.check(lib.qd_phase_init(core.ctx, core.model, ph))
+            f = self._phase_read(ph, F, "F")
+            g = ffi.NULL if dt else self._phase_read(ph, G, "G")
+            r = lib.qd_phase_dt(core.ctx, ph, f) if dt else lib.qd_bracket(
+                core.ctx, ph.n, ph.q, ph.p, f, g)
+            if not r:
+                raise core.error()
+            latex = _commands.rendered(core, lambda buf: lib.qd_phase_bracket_print(
+                core.ctx, ph, f, g, r, QD_FMT_LATEX, False, buf))
+            return _commands.output(core, "bracket", lambda buf: lib.qd_phase_bracket_print(
+                core.ctx, ph, f, g, r, QD_FMT_TEXT, True, buf), lambda: latex)
+        finally:
+            lib.qd_phase_free(ph)
 
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a

@@ -256,3 +256,25 @@ def test_metric_polar():
     f = m.metric(force="0, k")     # a torque k: its physical component k/r
     assert num(f.force["physical"]["theta"], k=4.0, r=r) == pytest.approx(4.0 / r)
     same(f.json, cli("metric", path, "--force", "0, k"))
+
+
+# ---- bracket -----------------------------------------------------------------
+
+def test_bracket_kepler():
+    cart = os.path.join(EXAMPLES, "kepler_cartesian.qd")
+    m = qdot.Model.load(cart)
+    assert m.bracket("x", "p_x").bracket == "1" and m.bracket("x", "p_y").bracket == "0"
+    Lz = "x*p_y - y*p_x"
+    assert num(m.bracket(Lz, "x").bracket, y=0.7) == pytest.approx(0.7)   # {Lz, x} = y
+    assert m.bracket(Lz, dt=True).dF_dt == "0"                           # conserved
+    same(m.bracket(Lz, "x").json, cli("bracket", cart, Lz, "x"))
+    polar = os.path.join(EXAMPLES, "kepler_polar.qd")
+    rate = qdot.Model.load(polar).bracket("p_r", dt=True)
+    k, mass, r, p = 4.0, 1.3, 2.0, 1.5      # p_r' = p_theta^2/(m r^3) - k/r^2
+    assert num(rate.dF_dt, k=k, m=mass, r=r, p_theta=p) == pytest.approx(
+        p**2 / (mass * r**3) - k / r**2)
+    same(rate.json, cli("bracket", polar, "--dt", "p_r"))
+    with pytest.raises(qdot.ModelError, match="no place in a function on phase space"):
+        m.bracket("x'", "x")
+    with pytest.raises(ValueError):
+        m.bracket("x")
