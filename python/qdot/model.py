@@ -619,6 +619,77 @@ class Model:
         finally:
             lib.qd_phase_free(ph)
 
+    def canonical(self, Q=None, P=None, lagrange=False, K=False, generator=None, F=None):
+        """Is (q, p) -> (Q, P) canonical (`qdot canonical FILE --Q ... --P ...`,
+        qd_canonical_examine and qd_canon_report_print)?  Or, with
+        generator="F1".."F4" and its expression F (`--generator TYPE EXPR`),
+        the map the generating function gives and K = H + dF/dt
+        (qd_generate, qd_gen_result_print).  Q, P: "Q1, ..." text (one
+        expression in q, p_q, t per coordinate) or a list of them;
+        lagrange, K as --lagrange and --K.  A qdot.Output with the keys of
+        `qdot canonical --format json`; a "no" is an answer, not an error."""
+        core = self._core
+        if (generator is None) == (Q is None and P is None) or (generator is None) != (
+                F is None) or (generator is None and (Q is None or P is None)):
+            raise ValueError("canonical: give Q and P, or generator (\"F1\".. \"F4\") and F")
+        if generator is not None and (lagrange or K):
+            raise ValueError("canonical: lagrange and K go with Q and P")
+        ph = new("qd_phase")
+        try:
+            core.check(lib.qd_phase_init(core.ctx, core.model, ph))
+            if generator is not None:
+                return self._generate(ph, generator, F)
+            return self._examine(ph, Q, P, lagrange, K)
+        finally:
+            lib.qd_phase_free(ph)
+
+    def _phase_list(self, ph, text, what):
+        """"E1, E2, ..." (or a list) read as ph.n functions on phase space."""
+        core = self._core
+        if isinstance(text, (list, tuple)):
+            text = ", ".join(text)
+        if not isinstance(text, str):
+            raise TypeError("canonical: %s is text \"E1, ...\" or a list, not %s"
+                            % (what, type(text).__name__))
+        out = ffi.new("const qd_expr *[]", ph.n + 1)
+        diag = new("qd_diag")
+        if lib.qd_phase_read_list(core.ctx, ph, text.encode(), out, diag) != 0:
+            lib.qd_ctx_clear_error(core.ctx)
+            raise ModelError(format_diag(diag, what, text.encode()), diag, what)
+        return out
+
+    def _examine(self, ph, Q, P, lagrange, K):
+        core = self._core
+        q, p = self._phase_list(ph, Q, "Q"), self._phase_list(ph, P, "P")
+        rep = new("qd_canon_report")
+        try:
+            st = lib.qd_canonical_examine(core.ctx, ph, q, p, bool(lagrange), bool(K), rep)
+            if st != 0:
+                raise core.error(st)
+            return _commands.output(core, "canonical", lambda buf: lib.qd_canon_report_print(
+                core.ctx, ph, rep, True, buf))
+        finally:
+            lib.qd_canon_report_free(rep)
+
+    def _generate(self, ph, generator, F):
+        core = self._core
+        types_ = {"F1": lib.QD_GEN_F1, "F2": lib.QD_GEN_F2, "F3": lib.QD_GEN_F3,
+                  "F4": lib.QD_GEN_F4}
+        if generator not in types_:
+            raise ValueError("canonical: generator is F1, F2, F3 or F4, not %r" % (generator,))
+        core.check(lib.qd_phase_new_vars(core.ctx, ph))
+        f = self._phase_read(ph, F, "generator")
+        core.check(lib.qd_phase_ham(core.ctx, ph, True))
+        g = new("qd_gen_result")
+        kind = types_[generator]
+        try:
+            core.check(lib.qd_generate(core.ctx, kind, ph.n, ph.q, ph.p, ph.Q, ph.P, f,
+                                       lib.qd_time(core.ctx), ph.h.H, g))
+            return _commands.output(core, "canonical", lambda buf: lib.qd_gen_result_print(
+                core.ctx, ph, kind, f, g, True, buf))
+        finally:
+            lib.qd_gen_result_free(g)
+
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a
         qdot.Output with model, coordinates, L, cyclic, jacobi,

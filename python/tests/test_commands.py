@@ -278,3 +278,30 @@ def test_bracket_kepler():
         m.bracket("x'", "x")
     with pytest.raises(ValueError):
         m.bracket("x")
+
+
+# ---- canonical ---------------------------------------------------------------
+
+def test_canonical_oscillator():
+    path = os.path.join(EXAMPLES, "hj_oscillator.qd")
+    m = qdot.Model.load(path)
+    # the action-angle map of the oscillator: Q = atan(m w x/p), P = E/w
+    Q, P = "atan(sqrt(k*m)*x/p_x)", "(p_x^2 + k*m*x^2)/(2*sqrt(k*m))"
+    out = m.canonical(Q=Q, P=P)
+    assert out.verdict == "canonical" and out.certainty == "proven"
+    same(out.json, cli("canonical", path, "--Q", Q, "--P", P))
+    # x -> x^2 is not: [Q, P] = 2x, and the witness is a point where 2x - 1 != 0
+    no = m.canonical(Q="x^2", P="p_x")
+    assert no.verdict == "not canonical" and no.value == "2*x"
+    assert 2 * no.witness.point.x - 1 == pytest.approx(no.witness.value)
+    same(no.json, cli("canonical", path, "--Q", "x^2", "--P", "p_x"))
+    # p x -> (Q, P) = (p, -x) scaled by 2: [Q, P] = 2, Goldstein's extended map
+    assert m.canonical(Q="p_x", P="-2*x").verdict == "scaled"
+    # F1 = x Q: p = dF/dx = Q, P = -dF/dQ = -x, and K(Q, P) = k P^2/2 + Q^2/(2 m)
+    gen = m.canonical(generator="F1", F="x*Q")
+    assert (gen.Q, gen.P) == ("p_x", "-x")
+    assert num(gen.K_new, P=0.3, Q=0.4, k=8.0, m=2.0) == pytest.approx(
+        8.0 * 0.3**2 / 2 + 0.4**2 / 4)
+    same(gen.json, cli("canonical", path, "--generator", "F1", "x*Q"))
+    with pytest.raises(ValueError):
+        m.canonical(Q="p_x")
