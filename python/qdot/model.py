@@ -690,6 +690,69 @@ class Model:
         finally:
             lib.qd_gen_result_free(g)
 
+    def stability(self, ignore=None, driven=None, momentum=None, omega=None, at=None,
+                  guess=None):
+        """Steady motions of a system with cyclic coordinates and their
+        stability (`qdot stability`, qd_stability_print): a qdot.Output with
+        model, kind ("free" or "driven"), steady, residual, Veff, the
+        mass, damping, gyroscopic and stiffness matrices, hessian,
+        frequencies, eigenvalues ([re, im] pairs), stable, secular,
+        verdict (of the motion nearest the starting values), steady_motions
+        (every one found) and complete.  Give either ignore (the cyclic
+        coordinates, momenta free: "phi" or a list) or driven (maintained
+        rates "phi' = 2", a list or text); momentum ("p_phi=3"), omega
+        ("phi'=2"), at ("theta=pi/3") and guess as --momentum, --omega,
+        --at and --guess (text or {name: value})."""
+        core = self._core
+        if (ignore is None) == (driven is None):
+            raise ValueError("stability: give either ignore (free momenta) or driven "
+                             "(maintained rates)")
+        if driven is not None and (momentum is not None or omega is not None):
+            raise ValueError("stability: momentum and omega go with ignore; a driven rate is "
+                             "given as driven=\"q' = VALUE\"")
+        if isinstance(ignore, (list, tuple)):
+            ignore = ", ".join(ignore)
+        if isinstance(driven, (list, tuple)):
+            driven = ", ".join(driven)
+        texts = {k: _commands.text_arg(v, k) for k, v in
+                 (("ignore", ignore), ("driven", driven), ("momentum", momentum),
+                  ("omega", omega), ("at", at), ("guess", guess))}
+        c = lambda k: texts[k] if texts[k] is not None else ffi.NULL  # noqa: E731
+        field = ffi.new("char[]", b"driven" if driven is not None else b"ignore")
+        rates_field = ffi.new("char[]", b"driven" if driven is not None else b"omega")
+        s_ = lib.qd_steady_derive_named(core.ctx, core.model, core.eom_ptr(), field,
+                                        c("driven") if driven is not None else c("ignore"),
+                                        driven is not None)
+        if not s_:
+            raise core.error()
+        g, found = new("qd_steady_given"), new("qd_steady_set")
+        an = []
+        try:
+            spec = new("qd_steady_spec", {
+                "rates": c("driven") if driven is not None else c("omega"),
+                "rates_field": rates_field, "momenta": c("momentum"), "guess": c("guess"),
+                "at": c("at")})
+            core.check(lib.qd_steady_given_read(core.ctx, s_, core.model, spec, g))
+            # as `qdot stability` does: every steady motion, then each analysed
+            core.check(lib.qd_steady_find_all(core.ctx, s_, g.nvals, g.syms, g.vals, g.xfix,
+                                              g.wfix, g.pfix, g.pguess, ffi.addressof(g.start),
+                                              found), cls=NumericalError)
+            an = ffi.new("qd_stability[]", found.count + 1)
+            for k in range(found.count):
+                core.check(lib.qd_stability_analyze(core.ctx, s_, g.nvals, g.syms, g.vals,
+                                                    ffi.addressof(found.pts[k]), an + k))
+            src = _commands.source(core)
+            rep = new("qd_stability_report", {"s": s_, "given": g, "set": found, "an": an,
+                                              "model": src})
+            return _commands.output(core, "stability", lambda buf: lib.qd_stability_print(
+                core.ctx, rep, True, buf))
+        finally:
+            for k in range(found.count if len(an) else 0):
+                lib.qd_stability_free(an + k)
+            lib.qd_steady_set_free(found)
+            lib.qd_steady_given_free(g)
+            lib.qd_steady_free(s_)
+
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a
         qdot.Output with model, coordinates, L, cyclic, jacobi,

@@ -305,3 +305,26 @@ def test_canonical_oscillator():
     same(gen.json, cli("canonical", path, "--generator", "F1", "x*Q"))
     with pytest.raises(ValueError):
         m.canonical(Q="p_x")
+
+
+# ---- stability ---------------------------------------------------------------
+
+def test_stability_conical_pendulum():
+    path = os.path.join(EXAMPLES, "spherical_pendulum.qd")
+    m = qdot.Model.load(path)
+    out = m.stability(ignore="phi", at={"theta": "pi/3"})
+    g, a, th = 9.81, 0.9, math.pi / 3
+    rate2 = g / (a * math.cos(th))                     # the conical pendulum: phi'^2 = g/(a cos)
+    assert out.steady["phi'"] ** 2 == pytest.approx(rate2)
+    # small oscillations about it: w^2 = phi'^2 (1 + 3 cos^2 theta)
+    assert out.frequencies[0] == pytest.approx(math.sqrt(rate2 * (1 + 3 * math.cos(th) ** 2)))
+    assert out.stable and out.kind == "free" and len(out.steady_motions) == 2
+    same(out.json, cli("stability", path, "--ignore", "phi", "--at", "theta=pi/3"))
+    with pytest.raises(qdot.Error, match="not cyclic"):
+        m.stability(ignore="theta")
+    with pytest.raises(ValueError):
+        m.stability()
+    bowl = os.path.join(EXAMPLES, "rotating_bowl.qd")
+    d = qdot.Model.load(bowl).stability(driven="phi' = 2")
+    assert d.kind == "driven"
+    same(d.json, cli("stability", bowl, "--driven", "phi' = 2"))
