@@ -753,6 +753,40 @@ class Model:
             lib.qd_steady_given_free(g)
             lib.qd_steady_free(s_)
 
+    def zvc(self, box, level, cells=400):
+        """Jacobi's integral and the zero-velocity curves W = level over a
+        box (`qdot zvc FILE --box ... --level H`, qd_zvc_picture_make and
+        qd_zvc_json): a qdot.Output with h, W, level, grid, equilibria (in
+        the box, each with its kind and W there as "h") and curves (each
+        "closed" and the two coordinates' arrays).  box: "x=A:B, y=C:D"
+        (two coordinates, across and up); level: a number or an expression
+        in the parameters; cells: grid cells each way (--cells; the CLI's
+        default 400).  The other coordinates are 0."""
+        core = self._core
+        if not isinstance(box, str):
+            raise TypeError("zvc: box is text \"x=A:B, y=C:D\", not %s" % type(box).__name__)
+        if isinstance(cells, bool) or not isinstance(cells, int) or not 2 <= cells <= 4000:
+            raise ValueError("zvc: cells is a number of grid cells from 2 to 4000, not %r"
+                             % (cells,))
+        e = core.eom_ptr()
+        b, z, pic = new("qd_zvc_box"), new("qd_zvc"), new("qd_zvc_picture")
+        try:
+            core.check(lib.qd_zvc_box_read(core.ctx, core.model, e, box.encode(), b))
+            core.check(lib.qd_zvc_derive(core.ctx, core.model, e, z))
+            h = new("double")
+            core.check(lib.qd_model_number(core.ctx, core.model,
+                                           _commands.text_arg(level, "level"), h))
+            b.nx = b.ny = cells
+            params = core.params()
+            syms = [lib.qd_time(core.ctx)] + [p[1] for p in params]
+            vals = [0.0] + [p[2] for p in params]
+            core.check(lib.qd_zvc_picture_make(core.ctx, core.model, e, z, b, len(syms),
+                                               exprs(syms), doubles(vals), h[0], True, pic))
+            return _commands.output(core, "zvc", lambda buf: lib.qd_zvc_json(
+                core.ctx, e, pic, buf))
+        finally:
+            lib.qd_zvc_picture_free(pic)
+
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a
         qdot.Output with model, coordinates, L, cyclic, jacobi,

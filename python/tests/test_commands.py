@@ -328,3 +328,20 @@ def test_stability_conical_pendulum():
     d = qdot.Model.load(bowl).stability(driven="phi' = 2")
     assert d.kind == "driven"
     same(d.json, cli("stability", bowl, "--driven", "phi' = 2"))
+
+
+# ---- zvc ---------------------------------------------------------------------
+
+def test_zvc_henon_heiles():
+    path = os.path.join(EXAMPLES, "henon_heiles.qd")
+    z = qdot.Model.load(path).zvc("x=-1:1, y=-1:1", 0.125, cells=100)
+    W = lambda x, y: (x**2 + y**2) / 2 + x**2 * y - y**3 / 3   # noqa: E731
+    assert [e.kind for e in z.equilibria].count("saddle") == 3
+    assert all(e.h == pytest.approx(1 / 6) for e in z.equilibria if e.kind == "saddle")
+    assert len(z.curves) == 1 and z.curves[0].closed       # below the escape energy 1/6
+    c = z.curves[0]
+    assert np.abs(W(c.x, c.y) - 0.125).max() < 1e-3          # on W = h
+    same(z.json, cli("zvc", path, "--box", "x=-1:1, y=-1:1", "--level", "0.125",
+                     "--cells", "100"))
+    with pytest.raises(ValueError):
+        qdot.Model.load(path).zvc("x=-1:1, y=-1:1", 0.1, cells=1)
