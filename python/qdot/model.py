@@ -787,6 +787,48 @@ class Model:
         finally:
             lib.qd_zvc_picture_free(pic)
 
+    def impulse(self, at=None):
+        """The motion just after a blow, a sudden constraint or a collision
+        (`qdot impulse`, qd_impulse_solve and qd_render_impulse): a
+        qdot.Output with velocities_before, velocities_after,
+        generalized_impulses, impulsive_multipliers, redundant,
+        impulsive_reactions, kinetic_energy_before, kinetic_energy_after,
+        energy_lost, exact (the closed forms in the parameters), theorems
+        (carnot, bertrand, thomson) and collision.  The state just before
+        is the model's `initial` as written; at={name: value} (coordinates,
+        velocities "NAME'", t; numbers or exact text "pi/6") changes it, as
+        --at.  (--prescribe is not here yet.)"""
+        core = self._core
+        n = lib.qd_model_ncoords(core.model)
+        zero = lib.qd_int(core.ctx, 0)
+        q0 = [lib.qd_model_initial_definition(core.model, j, 0) or zero for j in range(n)]
+        v0 = [lib.qd_model_initial_definition(core.model, j, 1) or zero for j in range(n)]
+        t0 = ffi.NULL
+        names = self.coordinates
+        for name, value in (at or {}).items():
+            x = _control._point_value(core, name, value)
+            if name in names:
+                q0[names.index(name)] = x
+            elif name.endswith("'") and name[:-1] in names:
+                v0[names.index(name[:-1])] = x
+            elif name == cstr(lib.qd_print_time_name(core.ctx)):
+                t0 = x
+            else:
+                raise ValueError("impulse: at names a coordinate, a velocity NAME' or t, not "
+                                 "'%s'" % name)
+        cq, cv = exprs(q0), exprs(v0)
+        opts = new("qd_impulse_opts", {"q": cq, "qd": cv, "t": t0, "exact": True,
+                                       "max_ops": 0})  # as `qdot impulse`
+        res = new("qd_impulse")
+        try:
+            core.check(lib.qd_impulse_solve(core.ctx, core.model, opts, res))
+            latex = _commands.rendered(core, lambda buf: lib.qd_render_impulse(
+                core.ctx, core.model, res, lib.QD_RENDER_LATEX, buf))
+            return _commands.output(core, "impulse", lambda buf: lib.qd_render_impulse(
+                core.ctx, core.model, res, lib.QD_RENDER_JSON, buf), lambda: latex)
+        finally:
+            lib.qd_impulse_free(res)
+
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a
         qdot.Output with model, coordinates, L, cyclic, jacobi,

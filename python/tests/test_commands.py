@@ -345,3 +345,26 @@ def test_zvc_henon_heiles():
                      "--cells", "100"))
     with pytest.raises(ValueError):
         qdot.Model.load(path).zvc("x=-1:1, y=-1:1", 0.1, cells=1)
+
+
+# ---- impulse -----------------------------------------------------------------
+
+def test_impulse_dumbbell():
+    path = os.path.join(EXAMPLES, "dumbbell_struck.qd")
+    m = qdot.Model.load(path)
+    out = m.impulse()
+    M, mm, a, f = 3.0, 1.0, 2.0, 1.0
+    v = out.velocities_after
+    # the blow f along y: momentum M y' + m (y' + a th') = f, none along x
+    assert M * v["y'"] + mm * (v["y'"] + a * v["th'"]) == pytest.approx(f)
+    assert v["x'"] == 0
+    # from rest, T after = (1/2) sum of the generalized impulses times the velocities
+    J = out.generalized_impulses
+    assert out.kinetic_energy_after == pytest.approx(
+        0.5 * sum(J[q] * v[q + "'"] for q in ("x", "y", "th")))
+    assert out.theorems.thomson.applies and out.theorems.thomson.holds
+    same(out.json, cli("impulse", path))
+    same(m.impulse(at={"th": "pi/2"}).json, cli("impulse", path, "--at", "th=pi/2"))
+    assert out._repr_latex_().startswith("$$")
+    with pytest.raises(ValueError):
+        m.impulse(at={"z": 1})
