@@ -829,6 +829,41 @@ class Model:
         finally:
             lib.qd_impulse_free(res)
 
+    def scatter(self, energy, b=None, theta=None, lab_theta=None, masses=None, core=None,
+                ignore=None):
+        """Classical scattering by a central potential (`qdot scatter`,
+        qd_scatter_read, qd_scatter_answer_query and qd_scatter_render): a
+        qdot.Output with the keys of `qdot scatter --format json` (model,
+        potential, radius, energy, b, kind, closest_approach, deflection,
+        cross_section, branches, range, total_cross_section, rainbows,
+        glories, orbiting, capture_cross_section, ...).  energy (> 0) and
+        one of b (impact parameter), theta (a centre-of-mass angle) or
+        lab_theta (with masses "m1,m2" or (m1, m2)); core: a hard core's
+        radius; ignore: the cyclic angle when two are cyclic.  Values are
+        numbers or expressions in the parameters, as the options take them."""
+        cr = self._core
+        if isinstance(masses, (list, tuple)):
+            masses = ",".join(repr(float(x)) for x in masses)
+        vals = {"energy": energy, "b": b, "theta": theta, "lab_theta": lab_theta,
+                "core": core, "masses": masses}
+        keep = {k: _commands.text_arg(v, k) for k, v in vals.items()}
+        t = new("qd_scatter_text", {k: (ffi.NULL if v is None else v) for k, v in keep.items()})
+        q = new("qd_scatter_query")
+        cr.check(lib.qd_scatter_read(cr.ctx, cr.model, t, q))
+        ign = _commands.text_arg(ignore, "ignore")
+        s_ = lib.qd_scatter_from_model(cr.ctx, cr.model, cr.eom_ptr(),
+                                       ign if ign is not None else ffi.NULL, q.core, ffi.NULL)
+        if not s_:
+            raise cr.error()
+        try:
+            ans = new("qd_scatter_answer")
+            cr.check(lib.qd_scatter_answer_query(cr.ctx, s_, q, ans))
+            src = _commands.source(cr)
+            return _commands.output(cr, "scatter", lambda buf: lib.qd_scatter_render(
+                cr.ctx, s_, ans, src, True, buf))
+        finally:
+            lib.qd_scatter_free(s_)
+
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a
         qdot.Output with model, coordinates, L, cyclic, jacobi,

@@ -368,3 +368,22 @@ def test_impulse_dumbbell():
     assert out._repr_latex_().startswith("$$")
     with pytest.raises(ValueError):
         m.impulse(at={"z": 1})
+
+
+# ---- scatter -----------------------------------------------------------------
+
+def test_scatter_rutherford():
+    path = os.path.join(EXAMPLES, "rutherford.qd")
+    m = qdot.Model.load(path)
+    k, E, b = 1.0, 1.0, 0.7
+    out = m.scatter(E, b=b)
+    assert out.deflection == pytest.approx(2 * math.atan(k / (2 * E * b)))   # tan(chi/2)
+    assert out.cross_section == pytest.approx((k / (4 * E)) ** 2 / math.sin(out.deflection / 2)
+                                              ** 4, rel=1e-8)
+    same(out.json, cli("scatter", path, "--energy", "1", "--b", "0.7"))
+    th = m.scatter(E, theta=1.0)
+    assert th.cross_section == pytest.approx((k / (4 * E)) ** 2 / math.sin(0.5) ** 4, rel=1e-8)
+    same(th.json, cli("scatter", path, "--energy", "1", "--theta", "1.0"))
+    lab = m.scatter(E, lab_theta=0.5, masses="1,2")
+    same(lab.json, cli("scatter", path, "--energy", "1", "--lab-theta", "0.5",
+                       "--masses", "1,2"))
