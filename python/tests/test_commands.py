@@ -387,3 +387,32 @@ def test_scatter_rutherford():
     lab = m.scatter(E, lab_theta=0.5, masses="1,2")
     same(lab.json, cli("scatter", path, "--energy", "1", "--lab-theta", "0.5",
                        "--masses", "1,2"))
+
+
+# ---- path --------------------------------------------------------------------
+
+FREE = """coordinates x
+parameters m = 1.5
+T = m*x'^2/2
+"""
+
+
+def test_path_free_particle_and_pendulum(tmp_path):
+    path = model_file(tmp_path, FREE)
+    m = qdot.Model.load(path)
+    out = m.path("x=0, t=0", {"x": 2, "t": 1})
+    p = out.paths[0]
+    assert out.count == 1 and p.minimum
+    assert p.action == pytest.approx(1.5 * 2**2 / (2 * 1))        # S = m d^2/(2 T)
+    assert p.initial_velocities["x'"] == pytest.approx(2)
+    assert p.samples[:, 1] == pytest.approx(2 * p.samples[:, 0])  # the straight line
+    same(out.json, cli("path", path, "--from", "x=0, t=0", "--to", "x=2, t=1"))
+    # the pendulum with omega = pi: past half a period the path has a kinetic
+    # focus near t = pi/omega = 1 and is no longer a minimum
+    pend = os.path.join(EXAMPLES, "path_pendulum.qd")
+    pp = qdot.Model.load(pend).path("th=0.1", "th=0.2, t=1.5")
+    assert pp.paths[0].kinetic_foci[0] == pytest.approx(1.0, rel=0.02)
+    assert not pp.paths[0].minimum
+    same(pp.json, cli("path", pend, "--from", "th=0.1", "--to", "th=0.2, t=1.5"))
+    with pytest.raises(ValueError):
+        m.path("x=0", "x=1")        # no end time, no energy
