@@ -416,3 +416,25 @@ def test_path_free_particle_and_pendulum(tmp_path):
     same(pp.json, cli("path", pend, "--from", "th=0.1", "--to", "th=0.2, t=1.5"))
     with pytest.raises(ValueError):
         m.path("x=0", "x=1")        # no end time, no energy
+
+
+# ---- lqr ---------------------------------------------------------------------
+
+def test_lqr_double_integrator():
+    A, B = [[0, 1], [0, 0]], [[0], [1]]
+    out = qdot.lqr(A, B, "Q = diag(1, 1), R = 1")
+    # x'' = u with Q = I, R = 1: K = [1, sqrt 3], closed loop s^2 + sqrt 3 s + 1 = 0
+    assert out.K == pytest.approx(np.array([[1, math.sqrt(3)]]))
+    eig = sorted((complex(re, im) for re, im in out.closed_loop_eigenvalues),
+                 key=lambda z: z.imag)
+    assert [(z.real, z.imag) for z in eig] == [
+        pytest.approx((-math.sqrt(3) / 2, -0.5)), pytest.approx((-math.sqrt(3) / 2, 0.5))]
+    assert out.residual < 1e-12
+    same(out.json, cli("lqr", "--A", "[[0, 1], [0, 0]]", "--B", "[[0], [1]]",
+                       "--weights", "Q = diag(1, 1), R = 1"))
+    assert qdot.lqr(A, B, ([1, 1], 1)).K == pytest.approx(out.K)
+    with pytest.raises(qdot.Error, match="not stabilizable") as err:
+        qdot.lqr([[1, 0], [0, -1]], B, "Q = 1, R = 1")
+    assert err.value.failure == "not stabilizable"
+    with pytest.raises(ValueError, match="more than 2 entries"):
+        qdot.lqr(A, B, "Q = diag(1, 1, 10), R = 1")
