@@ -438,3 +438,22 @@ def test_lqr_double_integrator():
     assert err.value.failure == "not stabilizable"
     with pytest.raises(ValueError, match="more than 2 entries"):
         qdot.lqr(A, B, "Q = diag(1, 1, 10), R = 1")
+
+
+# ---- lorentz, collide ----------------------------------------------------------
+
+def test_lorentz_and_collide_json():
+    r = qdot.lorentz((0.6, 0, 0), event=(1, 0.5, 0, 0), velocity=(0, 0.5, 0))
+    g = 1 / math.sqrt(1 - 0.36)
+    assert r.json["gamma"] == pytest.approx(g)
+    assert r.json["event"][:2] == pytest.approx([g * (1 - 0.6 * 0.5), g * (0.5 - 0.6)])
+    # the velocity (0, 0.5, 0) seen from the frame: (-V, u/gamma, 0)
+    assert r.json["velocity"][:2] == pytest.approx([-0.6, 0.5 / g])
+    same(r.json, cli("lorentz", "--frame", "0.6, 0, 0", "--event", "1, 0.5, 0, 0",
+                     "--velocity", "0, 0.5, 0"))
+    c = qdot.collide([(1, (0.6, 0, 0)), (2, (-0.8, 0, 0))], merge=True)
+    E = sum(m / math.sqrt(1 - v * v) for m, v in ((1, 0.6), (2, -0.8)))
+    p = sum(m * v / math.sqrt(1 - v * v) for m, v in ((1, 0.6), (2, -0.8)))
+    assert c.json["invariant_mass"] == pytest.approx(math.sqrt(E * E - p * p))
+    same(c.json, cli("collide", "--particle", "m=1, v=(0.6, 0, 0)", "--particle",
+                     "m=2, v=(-0.8, 0, 0)", "--merge"))
