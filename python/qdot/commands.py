@@ -37,14 +37,17 @@ def _value(x):
 
 
 class Fields(dict):
-    """A JSON object: a dict whose keys are also attributes (values as
-    Output gives them)."""
+    """A JSON object: a dict whose keys are also attributes; f.KEY and
+    f["KEY"] give the values as Output gives them."""
 
     __module__ = "qdot"
 
+    def __getitem__(self, key):
+        return _value(dict.__getitem__(self, key))
+
     def __getattr__(self, name):
         try:
-            return _value(self[name])
+            return self[name]
         except KeyError:
             raise AttributeError("no field %r (the fields: %s)"
                                  % (name, ", ".join(self))) from None

@@ -457,3 +457,19 @@ def test_lorentz_and_collide_json():
     assert c.json["invariant_mass"] == pytest.approx(math.sqrt(E * E - p * p))
     same(c.json, cli("collide", "--particle", "m=1, v=(0.6, 0, 0)", "--particle",
                      "m=2, v=(-0.8, 0, 0)", "--merge"))
+
+
+# ---- the result object -------------------------------------------------------
+
+def test_output_fields():
+    out = qdot.Model.load(os.path.join(EXAMPLES, "kepler_polar.qd")).orbit("theta")
+    assert out.keys() == list(out.json) and "conic" in out and "nothing" not in out
+    assert out["energy"] == out.energy and isinstance(out.energy, float)
+    assert isinstance(out.turning_points, np.ndarray)
+    assert isinstance(out.conic, qdot.Fields) and out.conic["a"] == out.conic.a
+    assert repr(out).startswith("<qdot.Output orbit: model=")
+    with pytest.raises(AttributeError, match="no field 'nothing'"):
+        out.nothing
+    with pytest.raises(AttributeError):
+        out.energy = 1.0
+    assert out._repr_latex_() is None         # orbit has no LaTeX printer
