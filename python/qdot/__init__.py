@@ -15,14 +15,16 @@ through QDOT_LIB, the build tree next to the package, the installed prefix,
 then the system's library path.
 """
 
-from ._core import Error, ModelError
-from .model import Model, Equations, Hamiltonian, Equilibrium, Mode, Modes
+from ._core import Error, ModelError, NumericalError
+from .commands import Output, Fields
+from .model import Model, Equations, Hamiltonian, Equilibrium, Equilibria, Mode, Modes
 from .sim import Result, Table, Rhs
-from .control import StateSpace, Lqr
+from .control import StateSpace, Lqr, lqr
 from .relativity import lorentz, proper_time, collide
 from .forms import QuadraticForm, quadratic_form
 
-__all__ = ["Model", "ModelError", "Error", "Equations", "Hamiltonian", "Equilibrium",
-           "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr",
+__all__ = ["Model", "ModelError", "NumericalError", "Error", "Output", "Fields",
+           "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
+           "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form"]
 from ._lib import VERSION as __version__

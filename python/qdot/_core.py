@@ -41,6 +41,14 @@ class ModelError(Error):
         self.hint = ffi.string(diag.hint).decode()
 
 
+class NumericalError(Error):
+    """A computation that failed on its numbers (a value that is not
+    finite, Newton that did not converge, an integration that stopped):
+    message the library's text, status the qd_status."""
+
+    __module__ = "qdot"
+
+
 def format_diag(diag, file, text):
     """qd_diag_format of diag (a qd_diag *) against text (bytes or None)."""
     buf = new("qd_buf")

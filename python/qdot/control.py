@@ -11,8 +11,11 @@ import numbers
 
 import numpy as np
 
-from ._core import Error, ModelError, format_diag, name_of, number_expr
-from ._lib import lib, new, cstr, exprs, doubles, doubles_of, FLOATS
+import json as _json
+
+from ._core import Error, ModelError, NumericalError, format_diag, name_of, number_expr
+from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, doubles_of, FLOATS
+from . import commands as _commands
 
 # the words of each qd_care_failure (qdot/control.h), by its enum value
 CARE_FAILURES = {lib.QD_CARE_OK: "ok", lib.QD_CARE_R_NOT_PD: "R not positive definite",
@@ -71,7 +74,10 @@ def linearize(core, about):
     try:
         core.check(lib.qd_linearize(core.ctx, core.eom_ptr(), core.model, len(keys),
                                     exprs(keys), exprs(vals), out))
-        return StateSpace(core, out, dict(about))
+        ss = StateSpace(core, out, dict(about))
+        ss.output = _commands.output(core, "linearize", lambda buf: lib.qd_statespace_render(
+            core.ctx, out, ffi.NULL, lib.QD_SS_JSON, buf))
+        return ss
     finally:
         lib.qd_statespace_free(out)
 
@@ -100,6 +106,23 @@ class StateSpace:
     """
 
     rank_tolerance = FLOATS["QD_SS_RANK_TOL"]  # qdot/statespace.h
+    output = None  # the qdot.Output of `qdot linearize --format json`
+
+    @property
+    def json(self):
+        """The dict `qdot linearize FILE --about ... --format json` prints
+        (qd_statespace_render): states, inputs, outputs, A, B, C, D, xdot0,
+        A_exact, ..., eigenvalues as [re, im] pairs, rank_tolerance,
+        controllable, controllability_rank, uncontrollable_modes,
+        observable, observability_rank, unobservable_modes."""
+        return self.output.json
+
+    def __getattr__(self, name):
+        # the JSON keys the StateSpace has no attribute of (controllability_rank, ...)
+        out = self.__dict__.get("output")
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("StateSpace has no field %r" % name)
 
     def __init__(self, core, s, about):
         self._core = core
@@ -182,3 +205,52 @@ class Lqr:
 
     def __repr__(self):
         return "Lqr(K=%r)" % (self.K,)
+
+
+def lqr(A, B, weights):
+    """The linear-quadratic regulator of x' = A x + B u (`qdot lqr --A --B
+    --weights`, qd_care_solve and qd_lqr_print): a qdot.Output with states
+    (x1, ...), inputs (u1, ...), K, X, closed_loop_eigenvalues ([re, im]
+    pairs), residual and rcond.  A: n x n, B: n x m (array-likes);
+    weights: "Q = W, R = W" as --weights takes it (W a number, diag(...) or
+    [[...], ...]), or a pair (Q, R) of numbers, diagonals or matrices.
+    qdot.Error with the library's reason when there is no stabilizing
+    solution (its .failure: "not stabilizable", ...)."""
+    from ._core import take_error
+    Am, Bm = np.asarray(A, dtype=float), np.asarray(B, dtype=float)
+    if Am.ndim != 2 or Am.shape[0] != Am.shape[1]:
+        raise ValueError("lqr: A must be square, not shape %s" % (Am.shape,))
+    if Bm.ndim != 2 or Bm.shape[0] != Am.shape[0]:
+        raise ValueError("lqr: B needs one row per state (%d), not shape %s"
+                         % (Am.shape[0], Bm.shape))
+    n, m = Bm.shape
+    ctx = ffi.gc(lib.qd_ctx_new(), lib.qd_ctx_free)
+
+    def fail(cls=Error):
+        d = take_error(ctx)
+        msg = ffi.string(d.message).decode() or cstr(lib.qd_status_str(d.status))
+        return cls(msg, d.status) if cls is Error else cls("lqr: weights: " + msg)
+    if isinstance(weights, str):
+        Q, R = ffi.new("double[]", n * n), ffi.new("double[]", m * m)
+        if lib.qd_lqr_weights_read(ctx, weights.encode(), n, m, Q, R) != 0:
+            raise fail(ValueError)
+    else:
+        try:
+            Qw, Rw = weights
+        except (TypeError, ValueError):
+            raise TypeError("lqr: weights is \"Q = W, R = W\" or a pair (Q, R)") from None
+        Q, R = _flat(_square(Qw, n, "Q")), _flat(_square(Rw, m, "R"))
+    out = new("qd_care_result")
+    try:
+        if lib.qd_care_solve(ctx, n, m, _flat(Am), _flat(Bm), Q, R, out) != 0:
+            err = fail()
+            err.failure = CARE_FAILURES.get(out.failure, "failure %d" % out.failure)
+            raise err
+        buf = new("qd_buf")
+        st = lib.qd_lqr_print(ffi.NULL, out, lib.QD_LQR_JSON, buf)
+        text = buf_text(buf)
+        if st != 0:
+            raise NumericalError("lqr: %s" % cstr(lib.qd_status_str(st)), st)
+        return _commands.Output("lqr", _json.loads(text))
+    finally:
+        lib.qd_care_result_free(out)

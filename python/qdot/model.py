@@ -10,10 +10,12 @@ import json as _json
 
 import numpy as np
 
-from ._core import Core, Error, ModelError, name_of
-from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY
+from ._core import Core, Error, ModelError, NumericalError, format_diag, name_of
+from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
+                   QD_FMT_TEXT)
 from . import sim as _sim
 from . import control as _control
+from . import commands as _commands
 
 
 class _Printed:
@@ -97,6 +99,22 @@ class Hamiltonian:
         self.dp = dp
         self.conserved = conserved
         self.is_energy = is_energy
+        self.output = None  # the qdot.Output of `qdot hamiltonian --format json`
+
+    @property
+    def json(self):
+        """The dict `qdot hamiltonian FILE --format json` prints."""
+        return self.output.json
+
+    def __getattr__(self, name):
+        # the other JSON keys (dq_dt, dp_dt, definitions, velocities, ...)
+        out = self.__dict__.get("output")
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("Hamiltonian has no field %r" % name)
+
+    def _repr_latex_(self):
+        return self.output._repr_latex_() if self.output is not None else None
 
     def __repr__(self):
         return "Hamiltonian(H=%r)" % (self.H,)
@@ -116,6 +134,24 @@ class Equilibrium:
 
     def __repr__(self):
         return "Equilibrium(q=%r, kind=%r)" % (self.q, self.kind)
+
+
+class Equilibria(list):
+    """The equilibria found (a list of Equilibrium); .output is the
+    qdot.Output of `qdot equilibria --format json`, whose keys (method,
+    exact, continuum, equilibria) are attributes too, .json its dict."""
+
+    output = None
+
+    @property
+    def json(self):
+        return self.output.json
+
+    def __getattr__(self, name):
+        out = self.__dict__.get("output") or type(self).output
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("Equilibria has no field %r" % name)
 
 
 class Mode:
@@ -345,7 +381,7 @@ class Model:
         out.hamel = hamel
         return out
 
-    def metric(self, sympy=False):
+    def metric(self, sympy=False, force=None):
         """The metric of the coordinates (qdot/metric.h, `qdot metric`): an
         object whose attributes are the JSON keys of `qdot metric --format
         json` that come from the library: coordinates, metric,
@@ -353,7 +389,10 @@ class Model:
         (indexed [l][i][j] by coordinate names), T2, T1, T0, Q, geodesic,
         scale_factors, orthogonal, jacobian_det and singular (a list of
         (lhs, rhs, period)).  Expressions are strings, or SymPy values with
-        sympy=True."""
+        sympy=True.  The other keys of the JSON (qd_metric_json: force,
+        chart) are attributes too, .json is the whole dict and .output its
+        qdot.Output; force: "G1, G2, ..." the covariant components of a
+        force, as --force (default: the model's Q)."""
         import types
         core = self._core
         g = lib.qd_metric_new(core.ctx, core.model)
@@ -368,7 +407,15 @@ class Model:
             vec = lambda a, k=0: {names[i]: conv(a[k + i]) for i in range(n)}  # noqa: E731
             mat = lambda a, k=0: {names[i]: vec(a, k + i * n) for i in range(n)}  # noqa: E731
             sym3 = lambda a: {names[l]: mat(a, l * n * n) for l in range(n)}  # noqa: E731,E741
-            return types.SimpleNamespace(
+            G = ffi.new("const qd_expr *[]", n + 1)
+            if force is not None:
+                if not isinstance(force, str):
+                    raise TypeError("metric: force is text \"G1, G2, ...\", not %s"
+                                    % type(force).__name__)
+                core.check(lib.qd_metric_force_read(core.ctx, g, force.encode(), G))
+            out = _commands.output(core, "metric", lambda buf: lib.qd_metric_json(
+                core.ctx, g, G if force is not None else ffi.NULL, buf))
+            ns = types.SimpleNamespace(
                 coordinates=names, source="L" if m.from_L else "T",
                 T2=conv(m.T2), T1=conv(m.T1), T0=conv(m.T0),
                 metric=mat(m.g), metric_inverse=mat(m.ginv), det=conv(m.det),
@@ -379,39 +426,559 @@ class Model:
                 orthogonal=m.orthogonal, jacobian_det=opt(m.jac_det),
                 singular=[(conv(m.sing[k].lhs), conv(m.sing[k].rhs), opt(m.sing[k].period))
                           for k in range(m.nsing)])
+            for key in out.keys():
+                if not hasattr(ns, key):
+                    setattr(ns, key, out[key])
+            ns.json, ns.output = out.json, out
+            return ns
         finally:
             lib.qd_metric_free(g)
 
-    def hamiltonian(self, sympy=False):
+    def hamiltonian(self, sympy=False, at=None):
         """The Hamiltonian and Hamilton's equations (a Hamiltonian); sympy=True
-        gives SymPy expressions instead of strings."""
+        gives SymPy expressions instead of strings.  Its other attributes
+        are the keys of `qdot hamiltonian --format json` (qd_render_hamiltonian):
+        model, coordinates, momenta, definitions, velocities, H, dq_dt,
+        dp_dt, H_is_energy, H_minus_energy, conserved, H_given (L, L_error
+        for a model given by H); .json is that dict.  at={name: value}
+        (coordinates, momenta named as printed, p_x, t; the others at the
+        model's initial values), as --at: H, dq_dt and dp_dt of the JSON are
+        then numbers there (qd_ham_point_eval), and "at" the point."""
         core = self._core
         given = lib.qd_model_hamiltonian_given(core.model)
         h = lib.qd_ham_derive(core.ctx, core.model, ffi.NULL if given else core.eom_ptr())
         if not h:
             raise core.error(cls=ModelError)
+        pt = new("qd_ham_point")
         try:
             hh = h
             n = hh.n
+            point = ffi.NULL
+            if at:
+                syms, vals = _state_at(core, at, [hh.p[j] for j in range(n)])
+                core.check(lib.qd_ham_point_eval(core.ctx, h, len(syms), exprs(syms),
+                                                 doubles(vals), pt), cls=NumericalError)
+                point = pt
+            src = _commands.source(core)
+            data = _json.loads(_commands.rendered(core, lambda buf: lib.qd_render_hamiltonian(
+                core.ctx, core.model, h, src, point, lib.QD_RENDER_JSON, buf)))
+            latex = _commands.rendered(core, lambda buf: lib.qd_render_hamiltonian(
+                core.ctx, core.model, h, src, ffi.NULL, lib.QD_RENDER_LATEX, buf))
             conv = _converter(core, sympy, [hh.p[j] for j in range(n)])
-            return Hamiltonian(conv(hh.H), [name_of(hh.p[j]) for j in range(n)],
-                               [conv(hh.dq[j]) for j in range(n)],
-                               [conv(hh.dp[j]) for j in range(n)],
-                               bool(hh.conserved), bool(hh.is_energy))
+            out = Hamiltonian(conv(hh.H), [name_of(hh.p[j]) for j in range(n)],
+                              [conv(hh.dq[j]) for j in range(n)],
+                              [conv(hh.dp[j]) for j in range(n)],
+                              bool(hh.conserved), bool(hh.is_energy))
+            out.output = _commands.Output("hamiltonian", data, lambda: latex)
+            return out
         finally:
+            lib.qd_ham_point_free(pt)
             lib.qd_ham_free(h)
 
+    def _lookup(self, names, what):
+        """The coordinate symbols of names (a list, or "a,b" text), each
+        looked up by the library (qd_routh_lookup); ValueError with its
+        message ("did you mean") for one that is not a coordinate."""
+        core = self._core
+        if isinstance(names, str):
+            names = [x.strip() for x in names.split(",")]
+        if not names or not all(isinstance(x, str) and x for x in names):
+            raise ValueError("%s: name coordinates (\"phi\" or [\"phi\", ...]), not %r"
+                             % (what, names))
+        syms = []
+        for name in names:
+            q = lib.qd_routh_lookup(core.ctx, core.model, name.encode())
+            if not q:
+                raise ValueError("%s: %s" % (what, core.error().message))
+            syms.append(q)
+        return syms
+
+    def _ignored(self, ignore, what):
+        """The coordinate symbols of ignore (see _lookup), each checked
+        cyclic (qd_routh_not_cyclic); ValueError with the library's reason."""
+        core = self._core
+        syms = self._lookup(ignore, what)
+        e = core.eom()
+        why = ffi.new("const char **")
+        for q in syms:
+            for j in range(e.n):
+                if e.q[j] == q and lib.qd_routh_not_cyclic(core.ctx, core.model, e, j, why):
+                    raise ValueError("%s: %s cannot be ignored: %s"
+                                     % (what, name_of(q), cstr(why[0])))
+        return syms
+
+    def routh(self, ignore):
+        """Routh's reduction (`qdot routh FILE --ignore Q[,Q...]`, qd_routh_json):
+        a qdot.Output with model, ignored, momenta, kept,
+        momentum_definitions, R, R2, R1, R0, effective_potential,
+        jacobi_integral, equations, gyroscopic, quadratures, conserved (and
+        the forced and implicit keys where they apply).  ignore: a name, "a,b"
+        or a list of names."""
+        core = self._core
+        ign = self._ignored(ignore, "routh")
+        opts = new("qd_routh_opts", {"implicit": True, "forced": True})  # as `qdot routh`
+        r = lib.qd_routh_derive_opts(core.ctx, core.model, core.eom_ptr(), len(ign),
+                                     exprs(ign), opts)
+        if not r:
+            raise core.error(cls=ModelError)
+        try:
+            src = _commands.source(core)
+            latex = _commands.rendered(core, lambda buf: lib.qd_routh_print(
+                core.ctx, r, core.model, core.eom_ptr(), src, QD_FMT_LATEX, buf))
+            return _commands.output(core, "routh", lambda buf: lib.qd_routh_json(
+                core.ctx, r, core.model, core.eom_ptr(), src, buf), lambda: latex)
+        finally:
+            lib.qd_routh_free(r)
+
+    def orbit(self, ignore, at=None, momentum=None, energy=None, equation=False):
+        """The motion left in one coordinate (`qdot orbit FILE --ignore Q`,
+        qd_orbit_solve_text and qd_orbit_render): a qdot.Output with the keys
+        of `qdot orbit --format json` (V_eff, the turning points and the
+        kind of orbit, the radial period and advances, the circular orbits,
+        Kepler's conic, ...).  ignore: the cyclic coordinates (all but one);
+        at ({name: value} or "r=1, theta'=1.5"), momentum ({"p_theta": 3}
+        or text) and energy (a number or an expression in the parameters)
+        as --at, --momentum and --energy; equation=True is --orbit."""
+        core = self._core
+        ign = self._ignored(ignore, "orbit")
+        o = lib.qd_orbit_derive(core.ctx, core.model, core.eom_ptr(), len(ign), exprs(ign))
+        if not o:
+            raise core.error()
+        res = new("qd_orbit_result")
+        keep = [_commands.text_arg(x, what) for x, what in
+                ((at, "at"), (momentum, "momentum"), (energy, "energy"))]
+        t = new("qd_orbit_text", {k: (ffi.NULL if v is None else v)
+                                  for k, v in zip(("at", "momentum", "energy"), keep)})
+        try:
+            core.check(lib.qd_orbit_solve_text(core.ctx, o, core.model, t, res))
+            src = _commands.source(core)
+            return _commands.output(core, "orbit", lambda buf: lib.qd_orbit_render(
+                core.ctx, o, res, src, bool(equation), True, buf))
+        finally:
+            lib.qd_orbit_result_free(res)
+            lib.qd_orbit_free(o)
+
+    def action(self, at=None, angles=()):
+        """The action-angle variables of a separable bounded motion (`qdot
+        action`, qd_action_at and qd_action_print): a qdot.Output with
+        separation, energy, coordinates (per coordinate: constant, value,
+        kind, turning_points, J, omega, angle), actions, frequencies, angles,
+        degeneracies, H_of_J.  at: {name: value} over the model's initial
+        values (coordinates, velocities "NAME'", t, parameters), as --at;
+        angles: coordinates to take as angles (--angle).  A model given by H
+        takes its velocities from its initial values only (see docs)."""
+        core = self._core
+        syms, vals = _state_at(core, at or {}, [])
+        angle_syms = self._lookup(angles, "action") if angles else []
+        keep = exprs(angle_syms)
+        opts = new("qd_action_opts", {"nangles": len(angle_syms), "angles": keep})
+        act = new("qd_action")
+        try:
+            core.check(lib.qd_action_at(core.ctx, core.model, len(syms), exprs(syms),
+                                        doubles(vals), opts, act))
+            return _commands.output(core, "action", lambda buf: lib.qd_action_print(
+                core.ctx, act, True, buf))
+        finally:
+            lib.qd_action_free(act)
+
+    def _phase_read(self, ph, text, what):
+        """text read as a function on phase space (qd_phase_read); a
+        ModelError shown in the text when it does not read."""
+        core = self._core
+        if not isinstance(text, str):
+            raise TypeError("%s is an expression (text), not %s" % (what, type(text).__name__))
+        diag = new("qd_diag")
+        x = lib.qd_phase_read(core.ctx, ph, text.encode(), diag)
+        if not x:
+            lib.qd_ctx_clear_error(core.ctx)
+            raise ModelError(format_diag(diag, what, text.encode()), diag, what)
+        return x
+
+    def bracket(self, F, G=None, dt=False):
+        """The Poisson bracket [F, G] in the model's coordinates and momenta
+        p_<q> (`qdot bracket FILE F G`), or with dt=True and no G the rate
+        dF/dt along the motion (`qdot bracket --dt F`): a qdot.Output with
+        the keys of `qdot bracket --format json` (qd_phase_bracket_print);
+        LaTeX in Jupyter."""
+        core = self._core
+        if bool(dt) == (G is not None):
+            raise ValueError("bracket: give F and G, or F with dt=True")
+        ph = new("qd_phase")
+        try:
+            core.check(lib.qd_phase_init(core.ctx, core.model, ph))
+            f = self._phase_read(ph, F, "F")
+            g = ffi.NULL if dt else self._phase_read(ph, G, "G")
+            r = lib.qd_phase_dt(core.ctx, ph, f) if dt else lib.qd_bracket(
+                core.ctx, ph.n, ph.q, ph.p, f, g)
+            if not r:
+                raise core.error()
+            latex = _commands.rendered(core, lambda buf: lib.qd_phase_bracket_print(
+                core.ctx, ph, f, g, r, QD_FMT_LATEX, False, buf))
+            return _commands.output(core, "bracket", lambda buf: lib.qd_phase_bracket_print(
+                core.ctx, ph, f, g, r, QD_FMT_TEXT, True, buf), lambda: latex)
+        finally:
+            lib.qd_phase_free(ph)
+
+    def canonical(self, Q=None, P=None, lagrange=False, K=False, generator=None, F=None):
+        """Is (q, p) -> (Q, P) canonical (`qdot canonical FILE --Q ... --P ...`,
+        qd_canonical_examine and qd_canon_report_print)?  Or, with
+        generator="F1".."F4" and its expression F (`--generator TYPE EXPR`),
+        the map the generating function gives and K = H + dF/dt
+        (qd_generate, qd_gen_result_print).  Q, P: "Q1, ..." text (one
+        expression in q, p_q, t per coordinate) or a list of them;
+        lagrange, K as --lagrange and --K.  A qdot.Output with the keys of
+        `qdot canonical --format json`; a "no" is an answer, not an error."""
+        core = self._core
+        if (generator is None) == (Q is None and P is None) or (generator is None) != (
+                F is None) or (generator is None and (Q is None or P is None)):
+            raise ValueError("canonical: give Q and P, or generator (\"F1\".. \"F4\") and F")
+        if generator is not None and (lagrange or K):
+            raise ValueError("canonical: lagrange and K go with Q and P")
+        ph = new("qd_phase")
+        try:
+            core.check(lib.qd_phase_init(core.ctx, core.model, ph))
+            if generator is not None:
+                return self._generate(ph, generator, F)
+            return self._examine(ph, Q, P, lagrange, K)
+        finally:
+            lib.qd_phase_free(ph)
+
+    def _phase_list(self, ph, text, what):
+        """"E1, E2, ..." (or a list) read as ph.n functions on phase space."""
+        core = self._core
+        if isinstance(text, (list, tuple)):
+            text = ", ".join(text)
+        if not isinstance(text, str):
+            raise TypeError("canonical: %s is text \"E1, ...\" or a list, not %s"
+                            % (what, type(text).__name__))
+        out = ffi.new("const qd_expr *[]", ph.n + 1)
+        diag = new("qd_diag")
+        if lib.qd_phase_read_list(core.ctx, ph, text.encode(), out, diag) != 0:
+            lib.qd_ctx_clear_error(core.ctx)
+            raise ModelError(format_diag(diag, what, text.encode()), diag, what)
+        return out
+
+    def _examine(self, ph, Q, P, lagrange, K):
+        core = self._core
+        q, p = self._phase_list(ph, Q, "Q"), self._phase_list(ph, P, "P")
+        rep = new("qd_canon_report")
+        try:
+            st = lib.qd_canonical_examine(core.ctx, ph, q, p, bool(lagrange), bool(K), rep)
+            if st != 0:
+                raise core.error(st)
+            return _commands.output(core, "canonical", lambda buf: lib.qd_canon_report_print(
+                core.ctx, ph, rep, True, buf))
+        finally:
+            lib.qd_canon_report_free(rep)
+
+    def _generate(self, ph, generator, F):
+        core = self._core
+        types_ = {"F1": lib.QD_GEN_F1, "F2": lib.QD_GEN_F2, "F3": lib.QD_GEN_F3,
+                  "F4": lib.QD_GEN_F4}
+        if generator not in types_:
+            raise ValueError("canonical: generator is F1, F2, F3 or F4, not %r" % (generator,))
+        core.check(lib.qd_phase_new_vars(core.ctx, ph))
+        f = self._phase_read(ph, F, "generator")
+        core.check(lib.qd_phase_ham(core.ctx, ph, True))
+        g = new("qd_gen_result")
+        kind = types_[generator]
+        try:
+            core.check(lib.qd_generate(core.ctx, kind, ph.n, ph.q, ph.p, ph.Q, ph.P, f,
+                                       lib.qd_time(core.ctx), ph.h.H, g))
+            return _commands.output(core, "canonical", lambda buf: lib.qd_gen_result_print(
+                core.ctx, ph, kind, f, g, True, buf))
+        finally:
+            lib.qd_gen_result_free(g)
+
+    def stability(self, ignore=None, driven=None, momentum=None, omega=None, at=None,
+                  guess=None):
+        """Steady motions of a system with cyclic coordinates and their
+        stability (`qdot stability`, qd_stability_print): a qdot.Output with
+        model, kind ("free" or "driven"), steady, residual, Veff, the
+        mass, damping, gyroscopic and stiffness matrices, hessian,
+        frequencies, eigenvalues ([re, im] pairs), stable, secular,
+        verdict (of the motion nearest the starting values), steady_motions
+        (every one found) and complete.  Give either ignore (the cyclic
+        coordinates, momenta free: "phi" or a list) or driven (maintained
+        rates "phi' = 2", a list or text); momentum ("p_phi=3"), omega
+        ("phi'=2"), at ("theta=pi/3") and guess as --momentum, --omega,
+        --at and --guess (text or {name: value})."""
+        core = self._core
+        if (ignore is None) == (driven is None):
+            raise ValueError("stability: give either ignore (free momenta) or driven "
+                             "(maintained rates)")
+        if driven is not None and (momentum is not None or omega is not None):
+            raise ValueError("stability: momentum and omega go with ignore; a driven rate is "
+                             "given as driven=\"q' = VALUE\"")
+        if isinstance(ignore, (list, tuple)):
+            ignore = ", ".join(ignore)
+        if isinstance(driven, (list, tuple)):
+            driven = ", ".join(driven)
+        texts = {k: _commands.text_arg(v, k) for k, v in
+                 (("ignore", ignore), ("driven", driven), ("momentum", momentum),
+                  ("omega", omega), ("at", at), ("guess", guess))}
+        c = lambda k: texts[k] if texts[k] is not None else ffi.NULL  # noqa: E731
+        field = ffi.new("char[]", b"driven" if driven is not None else b"ignore")
+        rates_field = ffi.new("char[]", b"driven" if driven is not None else b"omega")
+        s_ = lib.qd_steady_derive_named(core.ctx, core.model, core.eom_ptr(), field,
+                                        c("driven") if driven is not None else c("ignore"),
+                                        driven is not None)
+        if not s_:
+            raise core.error()
+        g, found = new("qd_steady_given"), new("qd_steady_set")
+        an = []
+        try:
+            spec = new("qd_steady_spec", {
+                "rates": c("driven") if driven is not None else c("omega"),
+                "rates_field": rates_field, "momenta": c("momentum"), "guess": c("guess"),
+                "at": c("at")})
+            core.check(lib.qd_steady_given_read(core.ctx, s_, core.model, spec, g))
+            # as `qdot stability` does: every steady motion, then each analysed
+            core.check(lib.qd_steady_find_all(core.ctx, s_, g.nvals, g.syms, g.vals, g.xfix,
+                                              g.wfix, g.pfix, g.pguess, ffi.addressof(g.start),
+                                              found), cls=NumericalError)
+            an = ffi.new("qd_stability[]", found.count + 1)
+            for k in range(found.count):
+                core.check(lib.qd_stability_analyze(core.ctx, s_, g.nvals, g.syms, g.vals,
+                                                    ffi.addressof(found.pts[k]), an + k))
+            src = _commands.source(core)
+            rep = new("qd_stability_report", {"s": s_, "given": g, "set": found, "an": an,
+                                              "model": src})
+            return _commands.output(core, "stability", lambda buf: lib.qd_stability_print(
+                core.ctx, rep, True, buf))
+        finally:
+            for k in range(found.count if len(an) else 0):
+                lib.qd_stability_free(an + k)
+            lib.qd_steady_set_free(found)
+            lib.qd_steady_given_free(g)
+            lib.qd_steady_free(s_)
+
+    def zvc(self, box, level, cells=400):
+        """Jacobi's integral and the zero-velocity curves W = level over a
+        box (`qdot zvc FILE --box ... --level H`, qd_zvc_picture_make and
+        qd_zvc_json): a qdot.Output with h, W, level, grid, equilibria (in
+        the box, each with its kind and W there as "h") and curves (each
+        "closed" and the two coordinates' arrays).  box: "x=A:B, y=C:D"
+        (two coordinates, across and up); level: a number or an expression
+        in the parameters; cells: grid cells each way (--cells; the CLI's
+        default 400).  The other coordinates are 0."""
+        core = self._core
+        if not isinstance(box, str):
+            raise TypeError("zvc: box is text \"x=A:B, y=C:D\", not %s" % type(box).__name__)
+        if isinstance(cells, bool) or not isinstance(cells, int) or not 2 <= cells <= 4000:
+            raise ValueError("zvc: cells is a number of grid cells from 2 to 4000, not %r"
+                             % (cells,))
+        e = core.eom_ptr()
+        b, z, pic = new("qd_zvc_box"), new("qd_zvc"), new("qd_zvc_picture")
+        try:
+            core.check(lib.qd_zvc_box_read(core.ctx, core.model, e, box.encode(), b))
+            core.check(lib.qd_zvc_derive(core.ctx, core.model, e, z))
+            h = new("double")
+            core.check(lib.qd_model_number(core.ctx, core.model,
+                                           _commands.text_arg(level, "level"), h))
+            b.nx = b.ny = cells
+            params = core.params()
+            syms = [lib.qd_time(core.ctx)] + [p[1] for p in params]
+            vals = [0.0] + [p[2] for p in params]
+            core.check(lib.qd_zvc_picture_make(core.ctx, core.model, e, z, b, len(syms),
+                                               exprs(syms), doubles(vals), h[0], True, pic))
+            return _commands.output(core, "zvc", lambda buf: lib.qd_zvc_json(
+                core.ctx, e, pic, buf))
+        finally:
+            lib.qd_zvc_picture_free(pic)
+
+    def impulse(self, at=None):
+        """The motion just after a blow, a sudden constraint or a collision
+        (`qdot impulse`, qd_impulse_solve and qd_render_impulse): a
+        qdot.Output with velocities_before, velocities_after,
+        generalized_impulses, impulsive_multipliers, redundant,
+        impulsive_reactions, kinetic_energy_before, kinetic_energy_after,
+        energy_lost, exact (the closed forms in the parameters), theorems
+        (carnot, bertrand, thomson) and collision.  The state just before
+        is the model's `initial` as written; at={name: value} (coordinates,
+        velocities "NAME'", t; numbers or exact text "pi/6") changes it, as
+        --at.  (--prescribe is not here yet.)"""
+        core = self._core
+        n = lib.qd_model_ncoords(core.model)
+        zero = lib.qd_int(core.ctx, 0)
+        q0 = [lib.qd_model_initial_definition(core.model, j, 0) or zero for j in range(n)]
+        v0 = [lib.qd_model_initial_definition(core.model, j, 1) or zero for j in range(n)]
+        t0 = ffi.NULL
+        names = self.coordinates
+        for name, value in (at or {}).items():
+            x = _control._point_value(core, name, value)
+            if name in names:
+                q0[names.index(name)] = x
+            elif name.endswith("'") and name[:-1] in names:
+                v0[names.index(name[:-1])] = x
+            elif name == cstr(lib.qd_print_time_name(core.ctx)):
+                t0 = x
+            else:
+                raise ValueError("impulse: at names a coordinate, a velocity NAME' or t, not "
+                                 "'%s'" % name)
+        cq, cv = exprs(q0), exprs(v0)
+        opts = new("qd_impulse_opts", {"q": cq, "qd": cv, "t": t0, "exact": True,
+                                       "max_ops": 0})  # as `qdot impulse`
+        res = new("qd_impulse")
+        try:
+            core.check(lib.qd_impulse_solve(core.ctx, core.model, opts, res))
+            latex = _commands.rendered(core, lambda buf: lib.qd_render_impulse(
+                core.ctx, core.model, res, lib.QD_RENDER_LATEX, buf))
+            return _commands.output(core, "impulse", lambda buf: lib.qd_render_impulse(
+                core.ctx, core.model, res, lib.QD_RENDER_JSON, buf), lambda: latex)
+        finally:
+            lib.qd_impulse_free(res)
+
+    def scatter(self, energy, b=None, theta=None, lab_theta=None, masses=None, core=None,
+                ignore=None):
+        """Classical scattering by a central potential (`qdot scatter`,
+        qd_scatter_read, qd_scatter_answer_query and qd_scatter_render): a
+        qdot.Output with the keys of `qdot scatter --format json` (model,
+        potential, radius, energy, b, kind, closest_approach, deflection,
+        cross_section, branches, range, total_cross_section, rainbows,
+        glories, orbiting, capture_cross_section, ...).  energy (> 0) and
+        one of b (impact parameter), theta (a centre-of-mass angle) or
+        lab_theta (with masses "m1,m2" or (m1, m2)); core: a hard core's
+        radius; ignore: the cyclic angle when two are cyclic.  Values are
+        numbers or expressions in the parameters, as the options take them."""
+        cr = self._core
+        if isinstance(masses, (list, tuple)):
+            masses = ",".join(repr(float(x)) for x in masses)
+        vals = {"energy": energy, "b": b, "theta": theta, "lab_theta": lab_theta,
+                "core": core, "masses": masses}
+        keep = {k: _commands.text_arg(v, k) for k, v in vals.items()}
+        t = new("qd_scatter_text", {k: (ffi.NULL if v is None else v) for k, v in keep.items()})
+        q = new("qd_scatter_query")
+        cr.check(lib.qd_scatter_read(cr.ctx, cr.model, t, q))
+        ign = _commands.text_arg(ignore, "ignore")
+        s_ = lib.qd_scatter_from_model(cr.ctx, cr.model, cr.eom_ptr(),
+                                       ign if ign is not None else ffi.NULL, q.core, ffi.NULL)
+        if not s_:
+            raise cr.error()
+        try:
+            ans = new("qd_scatter_answer")
+            cr.check(lib.qd_scatter_answer_query(cr.ctx, s_, q, ans))
+            src = _commands.source(cr)
+            return _commands.output(cr, "scatter", lambda buf: lib.qd_scatter_render(
+                cr.ctx, s_, ans, src, True, buf))
+        finally:
+            lib.qd_scatter_free(s_)
+
+    def path(self, start, end, energy=None, all=False, segments=0):
+        """Stationary paths of the action between two configurations, with
+        their kinetic foci (`qdot path FILE --from ... --to ...`,
+        qd_path_end_read, qd_path_find or qd_path_find_energy, qd_path_json):
+        a qdot.Output with count and paths (each action, initial_velocities,
+        multipliers, residual, samples [[t, q...], ...], kinetic_foci,
+        kinetic_foci_multiplicity, minimum, examined).  start, end: "q=VALUE,
+        ..., t=T" or {name: value}, as --from and --to (the end's time unless
+        energy is given: Maupertuis' paths of that energy); all=True is
+        --all; segments as --segments.  Free ends are not here yet."""
+        core = self._core
+        e = core.eom_ptr()
+        n = e.n
+        E = new("double")
+        if energy is not None:
+            core.check(lib.qd_model_number(core.ctx, core.model,
+                                           _commands.text_arg(energy, "energy"), E))
+        q0, q1 = ffi.new("double[]", n + 1), ffi.new("double[]", n + 1)
+        t0, t1 = new("double", 0.0), new("double", float("nan"))
+        f0, f1 = ffi.new("bool[]", n + 1), ffi.new("bool[]", n + 1)
+        for what, text, q, t, fr in (("from", start, q0, t0, f0), ("to", end, q1, t1, f1)):
+            core.check(lib.qd_path_end_read(core.ctx, core.model, e,
+                                            _commands.text_arg(text, what), q, t, fr))
+            if any(fr[j] for j in range(n)):
+                raise ValueError("path: free ends are not in the Python package yet")
+        if energy is None and not t1[0] > t0[0]:
+            raise ValueError("path: the end needs its time t=T1 after the start's (or give "
+                             "energy)")
+        o = new("qd_path_opts", {"t0": t0[0], "t1": t1[0], "q0": q0, "q1": q1,
+                                 "all": bool(all), "segments": int(segments)})
+        ps = new("qd_path_set")
+        try:
+            if energy is None:
+                core.check(lib.qd_path_find(core.ctx, core.model, e, o, ps), cls=NumericalError)
+            else:
+                core.check(lib.qd_path_find_energy(core.ctx, core.model, e, E[0], o, ps),
+                           cls=NumericalError)
+            return _commands.output(core, "path", lambda buf: lib.qd_path_json(
+                core.ctx, ps, core.model, e, buf))
+        finally:
+            lib.qd_path_set_free(ps)
+
+    def integrals(self, search=True):
+        """Integrals of motion (`qdot integrals`, qd_integrals_json): a
+        qdot.Output with model, coordinates, L, cyclic, jacobi,
+        energy_balance, found, tested, noether (of the model's `symmetry`
+        statements), proposed (its `integral` statements).  search=False is
+        --no-search."""
+        core = self._core
+        o = new("qd_integrals_opts", {"search": bool(search)})
+        I = lib.qd_integrals_derive(core.ctx, core.model, core.eom_ptr(), o)  # noqa: E741
+        if not I:
+            raise core.error()
+        g = new("qd_integrals_given")
+        try:
+            core.check(lib.qd_integrals_given_derive(core.ctx, I, core.model, g))
+            src = _commands.source(core)
+            return _commands.output(core, "integrals", lambda buf: lib.qd_integrals_json(
+                core.ctx, I, g, src, buf))
+        finally:
+            lib.qd_integrals_given_free(g)
+            lib.qd_integrals_free(I)
+
+    def hj(self, solve=False, energy=None):
+        """The Hamilton-Jacobi equation (`qdot hj`, qd_hj_json): a qdot.Output
+        with model, H, equation, time_independent, separable, form, why,
+        separation (per coordinate), W, constants, energy_constant.
+        solve=True is --solve (the motion where the quadratures close);
+        energy names the energy constant (default E)."""
+        core = self._core
+        name = ffi.new("char[]", energy.encode()) if energy else ffi.NULL
+        h = lib.qd_hj_derive(core.ctx, core.model, new("qd_hj_opts", {"energy_name": name}))
+        if not h:
+            raise core.error(cls=ModelError)
+        try:
+            if solve and h.separable:
+                core.check(lib.qd_hj_solve(core.ctx, h))
+            src = _commands.source(core)
+            latex = _commands.rendered(core, lambda buf: lib.qd_hj_print(
+                core.ctx, h, core.model, src, QD_FMT_LATEX, buf))
+            return _commands.output(core, "hj", lambda buf: lib.qd_hj_json(
+                core.ctx, h, src, buf), lambda: latex)
+        finally:
+            lib.qd_hj_free(h)
+
+    def check(self):
+        """The verdict and summary of `qdot check` (qd_check_verdict_of,
+        qd_render_check): a qdot.Output whose keys are those of `qdot check
+        --format json` ("ok"; "reason", "message", "witness" for a no)."""
+        core = self._core
+        v = new("qd_check_verdict")
+        core.check(lib.qd_check_verdict_of(core.ctx, core.model, core.eom_ptr(), v))
+        src = _commands.source(core)
+        o = new("qd_render_opts", {"source": src})
+        return _commands.output(core, "check", lambda buf: lib.qd_render_check(
+            core.ctx, core.model, core.eom_ptr(), o, v, lib.QD_RENDER_JSON, buf))
+
     def equilibria(self):
-        """Every equilibrium found (a list of Equilibrium, sorted by q): exact
-        where the equations solve in closed form, else by a multi-start
-        Newton search over the default box (qd_equilibria_find)."""
+        """Every equilibrium found (an Equilibria: a list of Equilibrium,
+        sorted by q): exact where the equations solve in closed form, else by
+        a multi-start Newton search over the default box
+        (qd_equilibria_find).  Its other attributes are the keys of `qdot
+        equilibria --format json` (qd_equilibria_print): method, exact,
+        continuum, equilibria (each with equilibrium, exact, kind,
+        hessian_signs, symmetric, residual); .json is that dict."""
         core = self._core
         syms, vals = self._rest_state()
         out = new("qd_equilibria")
         try:
             core.check(lib.qd_equilibria_find(core.ctx, core.eom_ptr(), core.model, len(syms),
                                               exprs(syms), doubles(vals), ffi.NULL, out))
-            return [self._equilibrium(out.pts[k], out.n) for k in range(out.count)]
+            found = Equilibria(self._equilibrium(out.pts[k], out.n) for k in range(out.count))
+            found.output = _commands.output(core, "equilibria", lambda buf: (
+                lib.qd_equilibria_print(core.ctx, core.eom_ptr(), out, True, buf)))
+            return found
         finally:
             lib.qd_equilibria_free(out)
 

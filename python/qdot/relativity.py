@@ -9,7 +9,7 @@
 import numpy as np
 
 from ._core import Error, take_error
-from ._lib import ffi, lib, new, exprs
+from ._lib import ffi, lib, new, exprs, buf_text
 
 # the parts qd_lorentz_in.ask names, each by its bit QD_LORENTZ_FRAME ... (relativity.h)
 _PARTS = ["frame", "event", "velocity", "acceleration", "momentum", "compose", "dilate",
@@ -35,6 +35,16 @@ class _Ctx:
     def __call__(self, status):
         if status != 0:
             raise Error(ffi.string(take_error(self.ctx).message).decode(), status)
+
+
+def _rendered(ctx, call):
+    """The JSON call(buf) writes, as a dict (the context's error raised)."""
+    import json
+    buf = new("qd_buf")
+    st = call(buf)
+    text = buf_text(buf)
+    ctx(st)
+    return json.loads(text)
 
 
 def _vec(x, n=3, what="vector"):
@@ -106,7 +116,9 @@ def lorentz(frame, c=1.0, event=None, velocity=None, acceleration=None, momentum
             else:
                 _set(getattr(a, name), x, 4 if name == "event" else 3, name)
         ctx(lib.qd_lorentz_run(ctx.ctx, a, o))
+        data = _rendered(ctx, lambda buf: lib.qd_lorentz_render(ctx.ctx, a, o, True, buf))
     r = Result()
+    r.json = data  # what `qdot lorentz ... --format json` prints
     r.c, r.frame, r.gamma = float(c), _list(a.frame), o.gamma
     r.boost = np.array(_list(o.boost)).reshape(4, 4)
     r.metric_error = o.metric_error
@@ -166,8 +178,10 @@ def collide(particles, c=1.0, merge=False, elastic=False, angle=None, cm_angle=N
         a.threshold, a.nproducts = threshold is not None, len(masses)
         a.product[0:len(masses)] = masses
         ctx(lib.qd_collide_run(ctx.ctx, a, o))
+        data = _rendered(ctx, lambda buf: lib.qd_collide_render(ctx.ctx, a, o, True, buf))
     tot = o.total
     r = Result()
+    r.json = data  # what `qdot collide ... --format json` prints
     r.c, r.particles = float(c), [_pdict(p) for p in ps]
     r.energy, r.momentum, r.invariant_mass, r.velocity = (tot.E, _list(tot.p), tot.m,
                                                           _list(tot.v))
