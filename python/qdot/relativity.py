@@ -34,7 +34,10 @@ class _Ctx:
 
     def __call__(self, status):
         if status != 0:
-            raise Error(ffi.string(take_error(self.ctx).message).decode(), status)
+            # the record held in a name: a field of a temporary cdata does
+            # not keep its owner alive (cffi frees it under the field's view)
+            diag = take_error(self.ctx)
+            raise Error(ffi.string(diag.message).decode(), status)
 
 
 def _rendered(ctx, call):
