@@ -73,6 +73,21 @@ def steady_kepler_beta(qdot):
             check('kepler beta %s momentum as given' % tag, close(s['p_th'], p), s)
         check('kepler beta %s frequency' % tag, d['frequencies'] and close(d['frequencies'][0], r0 ** -1.5), d['frequencies'])
         check('kepler beta %s stable' % tag, d['stable'] is True, d['verdict'])
+    # the circle off the scan's grid about the start r = 1 (issue 33: p_th = 5 and 20 said
+    # "no steady motion found", r0 = 24.9 and 399.9 lying beyond [-10, 10]; p_th = 0.33 put
+    # r0 = 0.0089 next to the pole at 0, no sign change between two grid points)
+    for p in (0.33, 5.0, 20.0, 1000.0):
+        r0 = p * p - 2 * beta
+        try:
+            d = js(qdot, 'stability', f, '--ignore', 'th', '--momentum', 'p_th=%r' % p)
+        except AssertionError as e:
+            check('kepler beta p=%g runs' % p, False, e)
+            continue
+        motions = d.get('steady_motions', [d])
+        s = motions[0]['steady']
+        check('kepler beta p=%g one motion' % p, len(motions) == 1, motions)
+        check('kepler beta p=%g r0' % p, close(s['r'], r0), s)
+        check('kepler beta p=%g rate' % p, close(s["th'"], p / r0 ** 2), s)
     rc, out, err = run(qdot, 'stability', f, '--ignore', 'th', '--momentum', 'p_th=2')
     check('kepler beta text: given once', out.count('(given)') == 1 and 'e+31' not in out, out)
 
