@@ -15,6 +15,7 @@
 #include "num/num.h"
 #include "base/mem.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,8 +82,14 @@ bool qd__lin_lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res
                 A[i * n + j] = s;
             }
         }
+        /* the damping's floor relative to A's own diagonal, not 1e-12 absolute: near a
+         * degenerate root (F ~ th^5 of (1 - cos th)^3) J^T J falls below any fixed
+         * floor and the steps would stall on the plateau |F| < ftol (issue 33) */
+        double amax = 0;
         for (size_t i = 0; i < n; i++)
-            A[i * n + i] += lambda * (A[i * n + i] + 1e-12 * (1 + A[i * n + i]));
+            amax = fmax(amax, A[i * n + i]);
+        for (size_t i = 0; i < n; i++)
+            A[i * n + i] += lambda * (A[i * n + i] + 1e-12 * (amax + A[i * n + i]) + DBL_MIN);
         if (qd__num_rank(n, A, g, 1e-15, pc, NULL, NULL) < n) {
             lambda *= 10;
             continue;

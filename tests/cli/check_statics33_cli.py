@@ -109,6 +109,16 @@ def equilibria_isolation(qdot):
     ths = sorted(p['equilibrium']['th'] for p in d['equilibria'])
     check('(1-cos)^2 two equilibria', len(ths) == 2 and close(ths[0], 0) and close(ths[1], math.pi), ths)
     check('(1-cos)^2 isolated', d['continuum'] is False, d)
+    # (1 - cos th)^3 goes to the multistart (issue 33: 26 "equilibria" between -0.0028 and
+    # 0.0028, each a "minimum", Hessian 1 positive): its force ~ 3 th^5/4 is round-off for
+    # |th| < 2e-4, one plateau about the one root th = 0, degenerate (K = 0 there)
+    f = model('one_minus_cos_cubed', 'coordinates th\nparticle 1 at (th, 0)\nV = (1 - cos(th))^3\n')
+    d = js(qdot, 'equilibria', f)
+    ths = sorted(p['equilibrium']['th'] for p in d['equilibria'])
+    check('(1-cos)^3 two equilibria', len(ths) == 2 and abs(ths[0]) < 1e-3 and close(ths[1], math.pi), ths)
+    zero = [p for p in d['equilibria'] if abs(p['equilibrium']['th']) < 1e-3]
+    check('(1-cos)^3 th = 0 degenerate', zero and zero[0]['kind'] == 'degenerate', zero)
+    check('(1-cos)^3 isolated', d['continuum'] is False, d['continuum'])
     f = model('quartic', 'coordinates x\nparticle 1 at (x, 0)\nV = x^4\n')
     d = js(qdot, 'equilibria', f)
     xs = [p['equilibrium']['x'] for p in d['equilibria']]
