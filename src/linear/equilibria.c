@@ -383,7 +383,11 @@ static bool solve_exact(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const q
 
 /* ---- classification and assembly ------------------------------------------ */
 
-static qd_status classify(qd__lin *L, qd_equilibrium *p) {
+/* kscale: the Hessian's size over the box (the median of the largest |dF/dq|
+ * at spread points).  An eigenvalue below QD_LINEAR_ZERO_TOL of it is zero,
+ * not a curvature: at a degenerate root the multistart polishes to, th ~ 1e-20
+ * of (1 - cos th)^3, K ~ 1e-80 is no minimum's "1 positive" (issue 33). */
+static qd_status classify(qd__lin *L, qd_equilibrium *p, double kscale) {
     size_t n = L->n;
     double *K = qd__malloc(L->ctx, (n * n + 1) * sizeof *K), *w = qd__malloc(L->ctx, (n + 1) * sizeof *w);
     if (!K || !w) {
@@ -406,6 +410,9 @@ static qd_status classify(qd__lin *L, qd_equilibrium *p) {
     for (size_t j = 0; j < n; j++)
         p->residual = fmax(p->residual, fabs(qd__lin_F(L)[j]));
     bool ok = qd__lin_sym_eig(L->ctx, n, K, w, NULL);
+    for (size_t j = 0; ok && j < n; j++)
+        if (qd__lin_negligible(w[j], kscale))
+            w[j] = 0;
     if (ok)
         qd__lin_eq_classify(n, w, p);
     qd__free(K);
@@ -535,13 +542,62 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
  * both give th = 0 of (1 - cos th)^2), the multistart a degenerate one at
  * points round-off apart: each point once (qd__lin_roots_same: relative to the
  * coordinates' size, angles modulo 2 pi), the first kept. */
-static void drop_duplicates(size_t n, const bool *angle, qd_equilibria *out) {
+/* Do degenerate roots a and b found numerically lie on one plateau of
+ * round-off, |F| <= ftol all the way between them?  The multistart stops
+ * anywhere on it: (1 - cos th)^3, whose force is noise for |th| < 2e-4,
+ * gave 26 "equilibria" between -0.0028 and 0.0028 (issue 33).  Two points of
+ * a ring of equilibria are not: its chord leaves the ring. */
+static bool one_plateau(qd__lin *L, const double *a, const double *b, const bool *angle,
+                        double ftol, double *t) {
+    size_t n = L->n;
+    for (int s = 1; s < 8; s++) {
+        for (size_t j = 0; j < n; j++) {
+            double d = b[j] - a[j];
+            if (angle[j] && fabs(d) > PI)
+                d -= copysign(2 * PI, d);
+            t[j] = a[j] + d * s / 8.0;
+        }
+        qd__lin_run(L, t);
+        for (size_t j = 0; j < n; j++)
+            if (!(fabs(qd__lin_F(L)[j]) <= ftol))
+                return false;
+    }
+    return true;
+}
+
+/* The plateau's points merged into their mean (angles about the first one),
+ * the best estimate of the root inside the round-off. */
+static qd_status drop_duplicates(qd__lin *L, size_t n, const bool *angle, double ftol,
+                                 double *t, qd_equilibria *out) {
     size_t kept = 0;
+    double *sum = t ? qd__calloc(L->ctx, out->count * n + 1, sizeof *sum) : NULL;
+    size_t *cnt = t ? qd__calloc(L->ctx, out->count + 1, sizeof *cnt) : NULL;
+    if (t && (!sum || !cnt)) {
+        qd__free(sum);
+        qd__free(cnt);
+        return QD_ERR_NOMEM;
+    }
     for (size_t i = 0; i < out->count; i++) {
-        bool dup = false;
-        for (size_t k = 0; k < kept && !dup; k++)
+        bool dup = false, plateau = false;
+        size_t k = 0;
+        for (; k < kept && !dup; k++) {
             dup = qd__lin_roots_same(n, out->pts[k].q, out->pts[i].q, angle);
+            if (!dup && t && !out->pts[k].exact && !out->pts[i].exact && out->pts[k].nzero &&
+                out->pts[i].nzero)
+                dup = plateau = one_plateau(L, out->pts[k].q, out->pts[i].q, angle, ftol, t);
+            if (dup)
+                break;
+        }
         if (dup) {
+            if (plateau && sum && cnt) {
+                for (size_t j = 0; j < n; j++) {
+                    double d = out->pts[i].q[j] - out->pts[k].q[j];
+                    if (angle[j] && fabs(d) > PI)
+                        d -= copysign(2 * PI, d);
+                    sum[k * n + j] += d;
+                }
+                cnt[k]++;
+            }
             qd__free(out->pts[i].q);
             qd__free(out->pts[i].exact);
         } else {
@@ -549,10 +605,19 @@ static void drop_duplicates(size_t n, const bool *angle, qd_equilibria *out) {
         }
     }
     out->count = kept;
+    for (size_t k = 0; sum && cnt && k < kept; k++)
+        if (cnt[k]) {
+            for (size_t j = 0; j < n; j++)
+                out->pts[k].q[j] += sum[k * n + j] / (double)(cnt[k] + 1);
+            qd__lin_wrap_angles(n, out->pts[k].q, angle);
+        }
+    qd__free(sum);
+    qd__free(cnt);
+    return QD_OK;
 }
 
 static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const exact *x,
-                          const bool *angle, double ftol, qd_equilibria *out) {
+                          const bool *angle, double ftol, double kscale, qd_equilibria *out) {
     size_t n = L->n, cnt = x ? x->nsol : roots->count;
     out->pts = qd__calloc(ctx, cnt + 1, sizeof *out->pts);
     if (!out->pts)
@@ -574,17 +639,28 @@ static qd_status assemble(qd_ctx *ctx, qd__lin *L, const qd__roots *roots, const
         } else {
             double res;
             memcpy(p->q, roots->q + i * n, n * sizeof *p->q);
-            qd__lin_lm_solve(L, p->q, 0, 8, &res); /* a few more steps: only improves */
+            /* on to the root itself (only improves): a regular one in a few steps, a
+             * degenerate one (Newton gains a fixed factor a step) from the plateau
+             * |F| < ftol where the multistart stopped, th = +-0.0028 of
+             * (1 - cos th)^3, so that its copies merge below (issue 33) */
+            qd__lin_lm_solve(L, p->q, 0, 200, &res);
+            qd__lin_wrap_angles(n, p->q, angle);
+            if (qd_ctx_status(ctx) == QD_ERR_NOMEM)
+                return QD_ERR_NOMEM;
         }
-        qd_status st = classify(L, p);
+        qd_status st = classify(L, p, kscale);
         if (st != QD_OK)
             return st;
         if (!out->continuum && p->nzero && on_continuum(L, p->q, ftol))
             out->continuum = true;
     }
     sort_by_q(n, out->pts, out->count);
-    drop_duplicates(n, angle, out);
-    return QD_OK;
+    double *t = out->continuum ? NULL : qd__malloc(ctx, (n + 1) * sizeof *t);
+    if (!out->continuum && !t)
+        return QD_ERR_NOMEM;
+    qd_status st = drop_duplicates(L, n, angle, ftol, t, out);
+    qd__free(t);
+    return st;
 }
 
 /* Exact roots must also be roots numerically: each is checked. */
@@ -647,6 +723,16 @@ static bool affine_root(qd__lin *L, double ftol, const bool *angle, qd__roots *r
     return ok;
 }
 
+static void sort9(double *v) {
+    for (int a = 0; a < 9; a++)
+        for (int b = a + 1; b < 9; b++)
+            if (v[b] < v[a]) {
+                double t = v[a];
+                v[a] = v[b];
+                v[b] = t;
+            }
+}
+
 /* Only the roots in the box (Newton may leave it). */
 static void keep_in_box(qd__roots *roots, size_t n, const double *lo, const double *hi) {
     size_t kept = 0;
@@ -693,20 +779,19 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
     if ((st = qd__lin_eq_box(ctx, e, m, &o, angle, lo, hi)) != QD_OK)
         goto done;
     /* the force scale: the median of the scales at spread points */
-    double scales[9];
+    double scales[9], kscales[9];
     for (int s = 0; s < 9; s++) {
         for (size_t j = 0; j < n; j++)
             q[j] = lo[j] + (hi[j] - lo[j]) * (0.1 + 0.1 * ((s + 3 * (int)j) % 9));
-        scales[s] = qd__lin_scale(&L, q);
+        scales[s] = qd__lin_scale(&L, q);   /* runs L at q */
+        kscales[s] = 0;
+        for (size_t k = 0; k < n * n; k++)
+            kscales[s] = fmax(kscales[s], fabs(qd__lin_J(&L)[k]));
     }
-    for (int a = 0; a < 9; a++)
-        for (int b = a + 1; b < 9; b++)
-            if (scales[b] < scales[a]) {
-                double t = scales[a];
-                scales[a] = scales[b];
-                scales[b] = t;
-            }
+    sort9(scales);
+    sort9(kscales);
     double fscale = isfinite(scales[4]) && scales[4] > 0 ? scales[4] : 1;
+    double kscale = isfinite(kscales[4]) ? kscales[4] : 0;
     double ftol = 1e-11 * fscale;
     if (o.near) {
         memcpy(q, o.near, n * sizeof *q);
@@ -747,7 +832,7 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
         keep_in_box(&roots, n, lo, hi);
     }
     if (st == QD_OK)
-        st = assemble(ctx, &L, &roots, out->exact ? &x : NULL, angle, ftol, out);
+        st = assemble(ctx, &L, &roots, out->exact ? &x : NULL, angle, ftol, kscale, out);
 done:
     if (st != QD_OK && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, st, st == QD_ERR_NOMEM ? "out of memory finding equilibria"

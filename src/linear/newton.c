@@ -81,12 +81,27 @@ bool qd__lin_lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res
                 A[i * n + j] = s;
             }
         }
+        /* the step in coordinates scaled by sqrt(diag(J^T J)) (Marquardt's scaling,
+         * t holding the scales), the damping's floor 1e-12 of the scaled diagonal:
+         * near a degenerate root, F ~ x^5 of (1 - cos x)^3 beside a y^2, J^T J's
+         * x entry falls below any absolute floor and below the solve's relative
+         * rank tolerance against the y entry, and the steps stalled on the
+         * plateau |F| < ftol (issue 33) */
+        for (size_t i = 0; i < n; i++)
+            t[i] = A[i * n + i] > 0 && isfinite(A[i * n + i]) ? sqrt(A[i * n + i]) : 1;
+        for (size_t i = 0; i < n; i++) {
+            g[i] /= t[i];
+            for (size_t j = 0; j < n; j++)
+                A[i * n + j] /= t[i] * t[j];
+        }
         for (size_t i = 0; i < n; i++)
             A[i * n + i] += lambda * (A[i * n + i] + 1e-12 * (1 + A[i * n + i]));
         if (qd__num_rank(n, A, g, 1e-15, pc, NULL, NULL) < n) {
             lambda *= 10;
             continue;
         }
+        for (size_t i = 0; i < n; i++)
+            g[i] /= t[i];
         for (size_t i = 0; i < n; i++)
             t[i] = q[i] + g[i];
         qd__lin_run(L, t);

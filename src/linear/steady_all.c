@@ -12,7 +12,9 @@
  *     A phi'^2 cos th - C n phi' + M g h = 0 gives the slow and the fast
  *     precession (Goldstein 3rd ed. sec. 5.7; Britannica 1911 "Dynamics"
  *     sec. 5 (29)-(30), seed 004);
- *   - a coordinate: every sign change of each f_k over its range, bisected.
+ *   - a coordinate: every sign change of each f_k over its range (an
+ *     angle's period; else a grid about 0 and a geometric ladder out to
+ *     1e12 and in to 1e-9 of the start's scale), bisected.
  * Each candidate is polished by the search of steady.c and kept only when
  * its relative residual is small, so poles and round-off zeros drop out.
  */
@@ -439,21 +441,53 @@ static qd_status family(line *L) {
     return QD_ERR_ARG;
 }
 
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The samples of a free coordinate: an angle's range (-pi, pi] on a grid half
+ * a step off (a root at an end, th = pi, is crossed, not sampled); any other
+ * coordinate on a grid of [-10 s, 10 s] about 0 (s = max(1, |start|)) and, on
+ * each side, a geometric ladder from 1e-9 s to 1e12 s (issue 33: a circle at
+ * r = 24.9 or r = 0.0089 on V = -k/r - beta/r^2 lies off the grid, and a root
+ * next to the pole at 0 changes no sign between two grid points).  Sorted,
+ * count in *n; NULL when out of memory. */
+#define LADDER_LO 1e-9
+#define LADDER_HI 1e12
+#define LADDER_RATIO 1.2
+static double *coord_samples(qd_ctx *ctx, double g, bool angle, size_t *n) {
+    double lo = angle ? -PI : -10 * fmax(1, g);
+    double step = (angle ? 2 * PI : 20 * fmax(1, g)) / SCAN_POINTS;
+    size_t rungs = angle ? 0 : (size_t)ceil(log(LADDER_HI / LADDER_LO) / log(LADDER_RATIO)) + 1;
+    double *t = qd__calloc(ctx, SCAN_POINTS + 1 + 2 * rungs + 1, sizeof *t);
+    if (!t)
+        return NULL;
+    size_t k = 0;
+    for (size_t i = 0; i <= SCAN_POINTS; i++)
+        t[k++] = lo + (i + 0.5) * step;
+    for (size_t i = 0; i < rungs; i++) {
+        double r = LADDER_LO * fmax(1, g) * pow(LADDER_RATIO, (double)i);
+        t[k++] = r;
+        t[k++] = -r;
+    }
+    qsort(t, k, sizeof *t, cmp_double);
+    *n = k;
+    return t;
+}
+
 static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool angle,
                             bool *complete) {
     qd__steady_search *S = L->S;
-    size_t nk = S->s->nkeep, nsamples = 0, nzero = 0;
-    double g = fabs(u0[L->ifree]), lo = angle ? -PI : -10 * fmax(1, g);
-    double step = (angle ? 2 * PI : 20 * fmax(1, g)) / SCAN_POINTS;
+    size_t nk = S->s->nkeep, nsamples = 0, nzero = 0, nt = 0;
+    double *ts = coord_samples(L->S->ctx, fabs(u0[L->ifree]), angle, &nt);
     double *prev = qd__calloc(L->S->ctx, nk + 1, sizeof *prev), tp = 0;
     bool *pzero = qd__calloc(L->S->ctx, nk + 1, sizeof *pzero), *zero = qd__calloc(L->S->ctx, nk + 1, sizeof *zero);
     bool have = false;
-    qd_status st = prev && pzero && zero ? QD_OK : QD_ERR_NOMEM;
+    qd_status st = ts && prev && pzero && zero ? QD_OK : QD_ERR_NOMEM;
     memcpy(u, u0, S->nu * sizeof *u);
-    /* half a step off the grid, one past the end: a root at an end of an
-     * angle's range (th = pi) is crossed, not sampled */
-    for (size_t i = 0; st == QD_OK && i <= SCAN_POINTS; i++) {
-        double t = lo + (i + 0.5) * step;
+    for (size_t i = 0; st == QD_OK && i < nt; i++) {
+        double t = ts[i];
         if (!on_line(L, t, u)) {
             have = false;
             continue;
@@ -477,6 +511,7 @@ static qd_status free_coord(line *L, found *f, double *u, const double *u0, bool
     if (st == QD_OK && nsamples > 1 && nzero == nsamples)
         st = family(L);
     *complete = angle;
+    qd__free(ts);
     qd__free(prev);
     qd__free(pzero);
     qd__free(zero);

@@ -12,6 +12,7 @@
  * seeded by the expression's hash, so every run gives the same verdict.
  */
 #include "integrals_priv.h"
+#include "qdot/certify.h"
 #include "../base/mem.h"
 
 #include <math.h>
@@ -195,6 +196,22 @@ qd_status qd__mech_int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
     if (qd_is_zero(*shown)) {
         *zero = true;
         return QD_OK;
+    }
+    /* with the accelerations solved, *shown is explicit in q, q', t and the
+     * parameters: the certified test (qdot/certify.h) decides it, a "no" only
+     * with a point where its ball excludes 0 (issue 33); the sampling along
+     * the motion below is left for what that cannot decide */
+    if (s->solved) {
+        qd_zero_result z;
+        qd_status zs = qd_zero_test(ctx, *shown, &z);
+        if (zs == QD_ERR_NOMEM)
+            return zs;
+        if (zs == QD_OK && z.kind != QD_ZERO_UNKNOWN) {
+            *zero = z.kind != QD_ZERO_NONZERO;
+            *numeric = z.kind == QD_ZERO_NUMERIC;
+            return QD_OK;
+        }
+        qd__ctx_recover(ctx);
     }
     points p;
     qd_status st = points_init(ctx, s, X, &p);

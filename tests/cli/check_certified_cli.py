@@ -94,6 +94,24 @@ def test_generator_f1(qdot, osc):
     check("F1 p^2", sp.simplify(K**2 * (2 * Qx - K**2 * q**2) - p**2) == 0, out)
 
 
+def test_integrals(qdot, free):
+    # issue 33: a "not conserved" only when certified.  I = q' (sqrt(1 + sinh(40 q)^2)
+    # - cosh(40 q)) + q' is q' (conserved on a free particle), but its dI/dt, which the
+    # simplifier does not reduce, cancels e^40 against e^40: sampled in doubles it read
+    # "not conserved: dI/dt = -40*q'^2*sinh(40*q)*(...)".  Ball arithmetic keeps it zero.
+    I = "I: q'*(sqrt(1 + sinh(40*q)^2) - cosh(40*q)) + q'"
+    rc, out, err = run(qdot, "integrals", free, "--integral", I, "--no-search", "--format", "json")
+    ok = rc == 0
+    if ok:
+        p = json.loads(out)["proposed"][0]
+        ok = p["conserved"] is True and p["numeric"] is True
+    check("sinh(40 q) integral conserved (numerically)", ok, out + err)
+    # and a true "no" stays one: I = q q' has dI/dt = q'^2
+    rc, out, err = run(qdot, "integrals", free, "--integral", "I: q*q'", "--no-search", "--format", "json")
+    ok = rc == 0 and json.loads(out)["proposed"][0]["conserved"] is False
+    check("q q' not conserved", ok, out + err)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
@@ -110,6 +128,10 @@ def main():
         with open(osc, "w") as f:
             f.write(OSC)
         test_generator_f1(qdot, osc)
+        free = os.path.join(d, "free.qd")
+        with open(free, "w") as f:
+            f.write("coordinates q\nT = q'^2/2\n")
+        test_integrals(qdot, free)
     print(f"{results['passed']} passed, {results['failed']} failed")
     return 1 if results["failed"] else 0
 
