@@ -78,6 +78,14 @@ def expressions(qdot):
     # r before r' in the text: still one coordinate
     rc, out, err = run(qdot, 'diff', "r^2*r'", "r'")
     check("diff r^2 r'", rc == 0 and out.strip() == 'r^2', out + err)
+    # the rate of an expression whose unknown name is never primed: refused,
+    # located, not 0 (was "(x*y)'" -> 0, "(r^2*th')'" -> r^2*th'')
+    rc, out, err = run(qdot, 'print', "(x*y)'")
+    check("print (x*y)' refused", rc == 2 and "'x' is a plain symbol" in err and '^~~~~~' in err, out + err)
+    rc, out, err = run(qdot, 'diff', "(r^2*th')'", "r")
+    check("diff (r^2 th')' refused", rc == 2 and "'r' is a plain symbol" in err, out + err)
+    rc, out, err = run(qdot, 'print', "(r^2*r')'")
+    check("print (r^2 r')'", rc == 0 and out.strip() == "2*r*r'^2 + r^2*r''", out + err)
     rc, out, err = run(qdot, 'diff', "x^2", "y")
     check('diff by an absent name', rc == 2 and 'does not occur' in err, out + err)
 
