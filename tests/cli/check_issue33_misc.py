@@ -136,6 +136,33 @@ def kepler(qdot, tmp):
           out + err)
 
 
+SI_KEPLER = """coordinates r, phi
+parameters m = 1000, GM = 3.986e14
+particle m at r*(cos(phi), sin(phi))
+V = -GM*m/r
+"""
+
+
+def kepler_si(qdot, tmp):
+    """A satellite in SI units (Desloge ch. 58, C3): nu = 1 exactly, the conic
+    printed without a factor 1*, its radial period 2 pi sqrt(a^3/GM)."""
+    f = model(tmp, 'kepler_si.qd', SI_KEPLER)
+    GM, r0 = 3.986e14, 6.671e6
+    w = math.sqrt(GM / r0 ** 3)
+    at = "r=6.671e6, r'=100, phi'=%r" % w
+    rc, out, err = run(qdot, 'orbit', f, '--ignore', 'phi', '--at', at, '--format', 'json')
+    d = json.loads(out) if rc == 0 else {'conic': {}}
+    check('SI kepler nu = 1', d['conic'].get('nu') == 1, out + err)
+    v2 = 100 ** 2 + (r0 * w) ** 2
+    a = 1 / (2 / r0 - v2 / GM)
+    check('SI kepler a', close(d['conic'].get('a'), a, 1e-10), d['conic'])
+    check('SI kepler period', close(d.get('radial_period'), 2 * math.pi * math.sqrt(a ** 3 / GM), 1e-10),
+          d.get('radial_period'))
+    rc, out, err = run(qdot, 'orbit', f, '--ignore', 'phi', '--at', at, '--orbit')
+    check('SI kepler text: no nu, no 1*', rc == 0 and 'nu =' not in out and 'cos(1*' not in out,
+          out + err)
+
+
 PERIODIC = """coordinates x, th
 parameters m = 1, g = 1
 T = m/2*(x'^2 + th'^2)
@@ -280,6 +307,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         expressions(qdot)
         kepler(qdot, tmp)
+        kepler_si(qdot, tmp)
         periodic(qdot, tmp)
         paths(qdot, tmp)
         impulses(qdot, tmp)
