@@ -230,6 +230,13 @@ particle m at (x, y)
 V = 0
 """
 
+SPHERE = """coordinates x, y, z
+parameters m = 1, R = 1
+particle m at (x, y, z)
+V = 0
+constraint sphere: x^2 + y^2 + z^2 = R^2
+"""
+
 FALL = """coordinates x, y
 parameters m = 1, g = 9.81
 particle m at (x, y)
@@ -257,6 +264,24 @@ def paths(qdot, tmp):
     check('free particle S = A - E T = 5', ok and close(p.get('action'), 5, 1e-9), out)
     rc, out, err = run(qdot, 'path', f, '--from', 'x=0, y=0', '--to', 'x=3, y=4', '--energy', '2')
     check('text least action', rc == 0 and 'least action' in out and 'time: 2.5' in out, out + err)
+
+    # a free particle on the unit sphere written as a constraint, (1,0,0) to
+    # (0,1,0) in T = 1: the stationary paths run along the great circle at
+    # speed v = (2k + 1/2) pi or (2k + 3/2) pi, S = v^2/2 (Goldstein ch. 1,
+    # seed 002: constraints; issue 33).  The fast ones were RK4's, not the
+    # motion's (S = 1037.53 for 1037.54 at v = 14.5 pi), and one at v = 25.6
+    # pi was no path at all.
+    f = model(tmp, 'sphere.qd', SPHERE)
+    rc, out, err = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0, t=0', '--to', 'x=0, y=1, z=0, t=1',
+                       '--all', '--format', 'json')
+    d = json.loads(out) if rc == 0 else {'paths': []}
+    check('sphere paths found', len(d['paths']) >= 3, out[:300] + err)
+    for p in d['paths']:
+        v = math.sqrt(sum(x * x for x in p['initial_velocities'].values()))
+        half_turns = v / math.pi
+        check('sphere path speed (k + 1/2) pi', abs(half_turns - round(half_turns - 0.5) - 0.5) < 1e-8,
+              half_turns)
+        check('sphere path action v^2/2', close(p['action'], v * v / 2, 1e-9), (p['action'], v * v / 2))
 
     g, E = 9.81, 30.0
     f = model(tmp, 'fall.qd', FALL)
