@@ -20,6 +20,7 @@
 #include "orb.h"
 #include "../base/args.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -36,6 +37,11 @@ void qd__orb_conic(qd__orb_env *env, double x0, double xd0, double c0, qd_orbit_
     if (!(c2 > 0) || !(nu2 > 0) || !isfinite(nu2) || !(fabs(k) > 0))
         return; /* no angular momentum, an inverse-cube force that wins (a spiral), or
                    no 1/r term at all (p infinite) */
+    /* nu^2 is 1 with no inverse-cube term, but c2 and m h^2/2 are formed
+     * apart (h from the state): a difference at round-off is none (issue 33:
+     * an SI Kepler orbit printed nu = 1 and cos(1*(phi + ...))) */
+    if (fabs(nu2 - 1) <= 16 * DBL_EPSILON)
+        nu2 = 1;
     r->conic = true;
     r->repulsive = k < 0;
     r->nu = sqrt(nu2);

@@ -328,11 +328,55 @@ static void circular_limits(qd__orb_env *env, double x, qd_orbit_result *r) {
         r->advance[i] = o[QD__ORB_RATE + i] * r->period;
 }
 
+/* The first and second derivatives at x of output k by central differences
+ * at steps h and 2 h, extrapolated (Richardson): errors h^4 and eps/h^2. */
+static void differences(qd__orb_env *env, int k, double x, double h, double *d1, double *d2) {
+    double f0 = qd__orb_at(env, x)[k];
+    double p1 = qd__orb_at(env, x + h)[k], m1 = qd__orb_at(env, x - h)[k];
+    double p2 = qd__orb_at(env, x + 2 * h)[k], m2 = qd__orb_at(env, x - 2 * h)[k];
+    double a1 = (p1 - m1) / (2 * h), b1 = (p2 - m2) / (4 * h);
+    double a2 = (p1 - 2 * f0 + m1) / (h * h), b2 = (p2 - 2 * f0 + m2) / (4 * h * h);
+    *d1 = (4 * a1 - b1) / 3;
+    *d2 = (4 * a2 - b2) / 3;
+}
+
+/* The small-oscillation expansion about a stable circle x_c to second order
+ * in the amplitude.  In s = integral of sqrt(M) dx from x_c (unit mass), the
+ * motion is s'' = -U'(s), U = u2 s^2/2 + u3 s^3/6 + u4 s^4/24, whose
+ * frequency is w0 (1 + a^2 (u4/(16 u2) - 5 u3^2/(48 u2^2))), w0^2 = u2, and
+ * whose s has mean -u3 a^2/(4 u2) and mean square a^2/2 (Lindstedt), a the
+ * half-width in s; each ignored coordinate advances at its mean rate times
+ * the period.  The V_eff derivatives are exact; M's and the rates' are taken
+ * by differences (their error, about 1e-10, is multiplied by a^2). */
+static void circle_expansion(qd__orb_env *env, double xc, double lo, double hi,
+                             qd_orbit_result *r) {
+    const double *o = qd__orb_at(env, xc);
+    double V2 = o[QD__ORB_V2], V3 = o[QD__ORB_V3], V4 = o[QD__ORB_V4], M = o[QD__ORB_M];
+    double h = 1e-3 * fmax(fabs(xc), fmax(hi - lo, 1e-300)), M1, M2;
+    differences(env, QD__ORB_M, xc, h, &M1, &M2);
+    /* s = b1 d + b2 d^2 + b3 d^3 (d = x - x_c), reverted: d = c1 s + c2 s^2 + c3 s^3 */
+    double sq = sqrt(M), b1 = sq, b2 = M1 / (4 * sq), b3 = M2 / (12 * sq) - M1 * M1 / (24 * M * sq);
+    double c1 = 1 / b1, c2 = -b2 / (b1 * b1 * b1), c3 = (2 * b2 * b2 - b1 * b3) / pow(b1, 5);
+    double u2 = V2 * c1 * c1, u3 = 6 * V2 * c1 * c2 + V3 * c1 * c1 * c1;
+    double u4 = 12 * V2 * (c2 * c2 + 2 * c1 * c3) + 12 * V3 * c1 * c1 * c2 + V4 * pow(c1, 4);
+    double dl = lo - xc, dh = hi - xc;
+    double a = (b1 * (dh - dl) + b2 * (dh * dh - dl * dl) + b3 * (dh * dh * dh - dl * dl * dl)) / 2;
+    double w = sqrt(u2) * (1 + a * a * (u4 / (16 * u2) - 5 * u3 * u3 / (48 * u2 * u2)));
+    r->period = 2 * PI / w;
+    double mean_s = -u3 * a * a / (4 * u2), mean_s2 = a * a / 2;
+    for (size_t i = 0; i < r->nign; i++) {
+        double R0 = qd__orb_at(env, xc)[QD__ORB_RATE + i], R1, R2;
+        differences(env, QD__ORB_RATE + (int)i, xc, h, &R1, &R2);
+        double rho1 = R1 * c1, rho2 = 2 * R1 * c2 + R2 * c1 * c1;
+        r->advance[i] = (R0 + rho1 * mean_s + rho2 * mean_s2 / 2) * r->period;
+    }
+}
+
 /* A bound motion about a stable circle x_c: E - V_eff, of size V2 A^2/2
  * for an amplitude A, is formed from E with an absolute error eps |E|, so
  * the quadratures lose eps |E| / (E - V_eff(x_c)) of their digits; the
- * small-oscillation expansion (period 2 pi sqrt(M/V2), each ignored
- * coordinate advancing at its rate at x_c) errs by about (A/x_c)^2.  The
+ * small-oscillation expansion to second order in A (circle_expansion) errs
+ * by about 10 (A/x_c)^4, and by the differences' 1e-10 in its A^2 terms.  The
  * smaller of the two is the result's error; true when that is the
  * expansion, which is then filled in. */
 static bool near_circle(qd__orb_env *env, qd_orbit_result *r) {
@@ -343,17 +387,15 @@ static bool near_circle(qd__orb_env *env, qd_orbit_result *r) {
     if (!c)
         return false;
     double A = (r->hi - r->lo) / 2, gap = env->E - c->energy;
-    double expansion = (A / fmax(fabs(c->x), A)) * (A / fmax(fabs(c->x), A));
+    double rel2 = (A / fmax(fabs(c->x), A)) * (A / fmax(fabs(c->x), A));
+    double expansion = 10 * rel2 * rel2 + 1e-10 * rel2;
     double cancel = 2.2e-16 * (fabs(env->E) + fabs(c->energy)) / gap;
     if (!(gap > 0) || !(expansion < cancel)) {
         if (gap > 0)
             r->quad_error = fmax(r->quad_error, cancel);
         return false;
     }
-    const double *o = qd__orb_at(env, c->x);
-    r->period = 2 * PI / sqrt(o[QD__ORB_V2] / o[QD__ORB_M]);
-    for (size_t i = 0; i < r->nign; i++)
-        r->advance[i] = o[QD__ORB_RATE + i] * r->period;
+    circle_expansion(env, c->x, r->lo, r->hi, r);
     r->quad_error = expansion;
     return true;
 }

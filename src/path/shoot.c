@@ -1078,6 +1078,32 @@ static void no_path_error(qd_ctx *ctx, const sys *s, double best, double tol, co
                  best, tol, more);
 }
 
+/* A converged x solves the problem discretized at steps hmax; it is a path
+ * of the motion only if it stays converged when the steps are halved (issue
+ * 33: on a sphere, a path at 14.5 half-turns per unit time came out as RK4's,
+ * action 1037.53 for the true 1037.99, and one at 25.6 was no path at all).
+ * The steps are halved, and Newton rerun from x, until the residual at half
+ * the steps is within 10 tol (then Newton polishes it to tol there), at most
+ * RESOLVE times; false (the path is dropped) when it does not settle.  hmax is left at the settled steps, for
+ * the samples and the action; the caller restores it. */
+#define RESOLVE 6
+static bool resolved(shoot *p, double *x, double *F, double tol, double *res) {
+    for (int k = 0; k < RESOLVE; k++) {
+        p->s->hmax /= 2;
+        if (!shoot_eval(p, x, F, NULL))
+            return false;
+        double r = shoot_residual(p->nx, F);
+        if (r <= 10 * tol) { /* settled: converged again at these steps */
+            if (r > tol && !shoot_newton(p, x, tol, res))
+                *res = r;
+            return true;
+        }
+        if (!shoot_newton(p, x, tol, res))
+            return false;
+    }
+    return false;
+}
+
 static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bool energy,
                              double E, const qd_path_opts *o, qd_path_set *out) {
     memset(out, 0, sizeof *out);
@@ -1164,10 +1190,12 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         goto done;
     }
     size_t total = o->nguess + (o->all || !o->nguess ? sr.nstart : 0);
+    double hmax0 = s.hmax;
     for (size_t i = 0; i < total; i++) {
         double res;
         make_start(&sr, i, sr.x);
-        bool ok = shoot_newton(p, sr.x, tol, &res);
+        s.hmax = hmax0;
+        bool ok = shoot_newton(p, sr.x, tol, &res) && resolved(p, sr.x, sr.F, tol, &res);
         if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
             st = QD_ERR_NOMEM;
             goto done;

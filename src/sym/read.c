@@ -62,6 +62,8 @@ typedef struct rd {
     bool new_symbols;
     bool failed;
     const char *primed;  /* "\0"-separated names written as q' in the text, or NULL */
+    const qd_expr **fresh; /* the plain symbols this text created (unknown names) */
+    size_t nfresh, capfresh;
     qd_read_error *err;
 } rd;
 
@@ -328,7 +330,20 @@ static const qd_expr *name_value(rd *p, const char *name, size_t off, size_t len
         return fail(p, off, len, NULL, "unknown name '%s'", name);
     if (is_primed(p, name))
         return check(p, qd_coord(p->ctx, name), off, len);
-    return check(p, qd_symbol(p->ctx, name), off, len);
+    const qd_expr *fresh = check(p, qd_symbol(p->ctx, name), off, len);
+    if (fresh && p->nfresh == p->capfresh) {
+        size_t ncap = p->capfresh ? 2 * p->capfresh : 8;
+        const qd_expr **b = qd__realloc(p->ctx, p->fresh, ncap * sizeof *b);
+        if (!b) {
+            qd__oom(p->ctx);
+            return fail(p, off, len, NULL, "out of memory");
+        }
+        p->fresh = b;
+        p->capfresh = ncap;
+    }
+    if (fresh)
+        p->fresh[p->nfresh++] = fresh;
+    return fresh;
 }
 
 /* args := '(' [ sum { ',' sum } ] ')' */
@@ -510,6 +525,39 @@ static const qd_expr *primary(rd *p) {
     }
 }
 
+/* Is s a plain symbol that this text created (an unknown name)? */
+static bool is_fresh(const rd *p, const qd_expr *s) {
+    for (size_t i = 0; i < p->nfresh; i++)
+        if (p->fresh[i] == s)
+            return true;
+    return false;
+}
+
+/* The first plain symbol in e that the text created (an unknown name, not a
+ * symbol the caller made), or NULL (none, or out of memory: the caller then
+ * goes on, and a constructor's error is reported as usual). */
+static const qd_expr *plain_symbol(rd *p, const qd_expr *e) {
+    qd_ctx *ctx = p->ctx;
+    if (!p->nfresh)
+        return NULL;
+    const qd_expr *buf[16];
+    size_t n = qd_free_symbols(ctx, e, buf, 16);
+    const qd_expr **all = buf;
+    if (n > 16) {
+        all = qd__malloc(ctx, n * sizeof *all);
+        if (!all)
+            return NULL;
+        n = qd_free_symbols(ctx, e, all, n);
+    }
+    const qd_expr *found = NULL;
+    for (size_t i = 0; i < n && !found; i++)
+        if (all[i]->kind == QD_SYMBOL && all[i]->tag == QD_ROLE_PLAIN && is_fresh(p, all[i]))
+            found = all[i];
+    if (all != buf)
+        qd__free(all);
+    return found;
+}
+
 /* postfix := primary { "'" }   (a coordinate steps along its jet, else d/dt) */
 static const qd_expr *postfix(rd *p) {
     size_t off = p->tpos;
@@ -517,6 +565,17 @@ static const qd_expr *postfix(rd *p) {
     if (e && p->tok == T_PRIME && e->kind == QD_SYMBOL && e->tag == QD_ROLE_PLAIN)
         return fail(p, off, p->pos - off, "declare it a coordinate, or write it as a symbol of its own",
                     "'%s' is a plain symbol: its rate would be 0", e->u.sym.name);
+    if (e && p->tok == T_PRIME && e->kind != QD_SYMBOL) {
+        /* the rate of (r^2*th')' or sin(x)' would take each plain symbol in
+         * it as constant (issue 33: (x*y)' read as 0): refused, naming it */
+        const qd_expr *plain = plain_symbol(p, e);
+        if (plain)
+            return fail(p, off, p->pos - off,
+                        "write its rate out, or write the name with a prime elsewhere in the text "
+                        "(it is then a coordinate)",
+                        "'%s' is a plain symbol: its rate in this derivative would be 0",
+                        plain->u.sym.name);
+    }
     while (e && p->tok == T_PRIME) {
         if (e->kind == QD_SYMBOL && e->tag == QD_ROLE_COORD)
             e = qd_jet(p->ctx, e, e->order + 1u);
@@ -652,5 +711,6 @@ const qd_expr *qd_read(qd_ctx *ctx, const char *text, const qd_read_opts *opts,
     p.primed = primed;
     const qd_expr *e = read_input(&p);
     qd__free(primed);
+    qd__free(p.fresh);
     return e;
 }

@@ -78,6 +78,14 @@ def expressions(qdot):
     # r before r' in the text: still one coordinate
     rc, out, err = run(qdot, 'diff', "r^2*r'", "r'")
     check("diff r^2 r'", rc == 0 and out.strip() == 'r^2', out + err)
+    # the rate of an expression whose unknown name is never primed: refused,
+    # located, not 0 (was "(x*y)'" -> 0, "(r^2*th')'" -> r^2*th'')
+    rc, out, err = run(qdot, 'print', "(x*y)'")
+    check("print (x*y)' refused", rc == 2 and "'x' is a plain symbol" in err and '^~~~~~' in err, out + err)
+    rc, out, err = run(qdot, 'diff', "(r^2*th')'", "r")
+    check("diff (r^2 th')' refused", rc == 2 and "'r' is a plain symbol" in err, out + err)
+    rc, out, err = run(qdot, 'print', "(r^2*r')'")
+    check("print (r^2 r')'", rc == 0 and out.strip() == "2*r*r'^2 + r^2*r''", out + err)
     rc, out, err = run(qdot, 'diff', "x^2", "y")
     check('diff by an absent name', rc == 2 and 'does not occur' in err, out + err)
 
@@ -93,9 +101,9 @@ initial r = 1, phi = 0, r' = 0, phi' = 1
 def kepler(qdot, tmp):
     f = model(tmp, 'kepler.qd', KEPLER)
     for at, r0, rd, w, tol in (("r=1, r'=0.6, phi'=1", 1, 0.6, 1, 1e-10),
-                               ("r=1, r'=0, phi'=0.9998", 1, 0, 0.9998, 1e-8),
-                               ("r=1, r'=0, phi'=1+1e-4", 1, 0, 1 + 1e-4, 1e-8),
-                               ("r=1, r'=0, phi'=1+1e-7", 1, 0, 1 + 1e-7, 1e-8)):
+                               ("r=1, r'=0, phi'=0.9998", 1, 0, 0.9998, 1e-12),
+                               ("r=1, r'=0, phi'=1+1e-4", 1, 0, 1 + 1e-4, 1e-12),
+                               ("r=1, r'=0, phi'=1+1e-7", 1, 0, 1 + 1e-7, 1e-12)):
         rc, out, err = run(qdot, 'orbit', f, '--ignore', 'phi', '--at', at, '--format', 'json')
         check('kepler %s runs' % at, rc == 0, err)
         if rc != 0:
@@ -128,6 +136,75 @@ def kepler(qdot, tmp):
           out + err)
 
 
+SI_KEPLER = """coordinates r, phi
+parameters m = 1000, GM = 3.986e14
+particle m at r*(cos(phi), sin(phi))
+V = -GM*m/r
+"""
+
+
+def kepler_si(qdot, tmp):
+    """A satellite in SI units (Desloge ch. 58, C3): nu = 1 exactly, the conic
+    printed without a factor 1*, its radial period 2 pi sqrt(a^3/GM)."""
+    f = model(tmp, 'kepler_si.qd', SI_KEPLER)
+    GM, r0 = 3.986e14, 6.671e6
+    w = math.sqrt(GM / r0 ** 3)
+    at = "r=6.671e6, r'=100, phi'=%r" % w
+    rc, out, err = run(qdot, 'orbit', f, '--ignore', 'phi', '--at', at, '--format', 'json')
+    d = json.loads(out) if rc == 0 else {'conic': {}}
+    check('SI kepler nu = 1', d['conic'].get('nu') == 1, out + err)
+    v2 = 100 ** 2 + (r0 * w) ** 2
+    a = 1 / (2 / r0 - v2 / GM)
+    check('SI kepler a', close(d['conic'].get('a'), a, 1e-10), d['conic'])
+    check('SI kepler period', close(d.get('radial_period'), 2 * math.pi * math.sqrt(a ** 3 / GM), 1e-10),
+          d.get('radial_period'))
+    rc, out, err = run(qdot, 'orbit', f, '--ignore', 'phi', '--at', at, '--orbit')
+    check('SI kepler text: no nu, no 1*', rc == 0 and 'nu =' not in out and 'cos(1*' not in out,
+          out + err)
+
+
+def near_circles(qdot, tmp):
+    """Near-circles (Desloge ch. 58-59, C3 numerics): where the quadrature of
+    E - V_eff would cancel, the expansion about the circle to second order in
+    the amplitude.  The zeroth order, used before, was off by 6e-10 in the
+    period at r' = 1e-4 on V = r^1.5/1.5.  Against mpmath at 50 digits
+    (r = mid - half cos u), for a power law and a radial mass 1 + r^2."""
+    try:
+        import mpmath as mp
+    except ImportError:
+        print('skip near_circles: no mpmath')
+        return
+    mp.mp.dps = 50
+    cases = (
+        ('pow', "T = m/2*(r'^2 + r^2*phi'^2)\nV = r^1.5/1.5",
+         lambda r: r ** mp.mpf(1.5) / mp.mpf(1.5) + 1 / (2 * r ** 2), lambda r: 1),
+        ('varM', "T = m/2*((1 + r^2)*r'^2 + r^2*phi'^2)\nV = -1/r",
+         lambda r: -1 / r + 1 / (2 * r ** 2), lambda r: 1 + r ** 2),
+    )
+    for name, text, Veff, M in cases:
+        f = model(tmp, 'near_%s.qd' % name, 'coordinates r, phi\nparameters m = 1\n%s\n' % text)
+        for rd, tol in (('1e-4', 1e-13), ('2e-5', 1e-13), ('1e-3', 1e-10)):
+            rc, out, err = run(qdot, 'orbit', f, '--ignore', 'phi', '--at', "r=1, r'=%s, phi'=1" % rd,
+                               '--format', 'json')
+            if rc != 0:
+                check('near circle %s %s' % (name, rd), False, err)
+                continue
+            d = json.loads(out)
+            E = M(mp.mpf(1)) * mp.mpf(rd) ** 2 / 2 + Veff(mp.mpf(1))
+            lo, hi = (mp.findroot(lambda x: E - Veff(x), t) for t in sorted(d['turning_points']))
+            mid, half = (lo + hi) / 2, (hi - lo) / 2
+
+            def dt(u):
+                x = mid - half * mp.cos(u)
+                return mp.sqrt(M(x) / (2 * (E - Veff(x)))) * half * mp.sin(u)
+            T = 2 * mp.re(mp.quad(dt, [0, mp.pi]))
+            A = 2 * mp.re(mp.quad(lambda u: dt(u) / (mid - half * mp.cos(u)) ** 2, [0, mp.pi]))
+            check('near circle %s %s period' % (name, rd), abs(d['radial_period'] - T) <= tol * T,
+                  '%r vs %s' % (d['radial_period'], mp.nstr(T, 17)))
+            check('near circle %s %s advance' % (name, rd), abs(d['advance']['phi'] - A) <= tol * A,
+                  '%r vs %s' % (d['advance']['phi'], mp.nstr(A, 17)))
+
+
 PERIODIC = """coordinates x, th
 parameters m = 1, g = 1
 T = m/2*(x'^2 + th'^2)
@@ -151,6 +228,13 @@ FREE = """coordinates x, y
 parameters m = 1
 particle m at (x, y)
 V = 0
+"""
+
+SPHERE = """coordinates x, y, z
+parameters m = 1, R = 1
+particle m at (x, y, z)
+V = 0
+constraint sphere: x^2 + y^2 + z^2 = R^2
 """
 
 FALL = """coordinates x, y
@@ -180,6 +264,24 @@ def paths(qdot, tmp):
     check('free particle S = A - E T = 5', ok and close(p.get('action'), 5, 1e-9), out)
     rc, out, err = run(qdot, 'path', f, '--from', 'x=0, y=0', '--to', 'x=3, y=4', '--energy', '2')
     check('text least action', rc == 0 and 'least action' in out and 'time: 2.5' in out, out + err)
+
+    # a free particle on the unit sphere written as a constraint, (1,0,0) to
+    # (0,1,0) in T = 1: the stationary paths run along the great circle at
+    # speed v = (2k + 1/2) pi or (2k + 3/2) pi, S = v^2/2 (Goldstein ch. 1,
+    # seed 002: constraints; issue 33).  The fast ones were RK4's, not the
+    # motion's (S = 1037.53 for 1037.54 at v = 14.5 pi), and one at v = 25.6
+    # pi was no path at all.
+    f = model(tmp, 'sphere.qd', SPHERE)
+    rc, out, err = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0, t=0', '--to', 'x=0, y=1, z=0, t=1',
+                       '--all', '--format', 'json')
+    d = json.loads(out) if rc == 0 else {'paths': []}
+    check('sphere paths found', len(d['paths']) >= 3, out[:300] + err)
+    for p in d['paths']:
+        v = math.sqrt(sum(x * x for x in p['initial_velocities'].values()))
+        half_turns = v / math.pi
+        check('sphere path speed (k + 1/2) pi', abs(half_turns - round(half_turns - 0.5) - 0.5) < 1e-8,
+              half_turns)
+        check('sphere path action v^2/2', close(p['action'], v * v / 2, 1e-9), (p['action'], v * v / 2))
 
     g, E = 9.81, 30.0
     f = model(tmp, 'fall.qd', FALL)
@@ -272,6 +374,8 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         expressions(qdot)
         kepler(qdot, tmp)
+        kepler_si(qdot, tmp)
+        near_circles(qdot, tmp)
         periodic(qdot, tmp)
         paths(qdot, tmp)
         impulses(qdot, tmp)

@@ -237,6 +237,13 @@ static void test_errors(void **state) {
         {"V''[1](x)", 0, "one prime before an argument list", NULL, false},
         /* a plain symbol's rate would be 0 (issue 33): refused, located */
         {"1 + x'", 4, "'x' is a plain symbol: its rate would be 0", "declare it a coordinate", false},
+        /* nor may the rate of an expression take an unknown name in it as a
+         * constant (issue 33, Goldstein ch. 1 seed 002: (r^2*th')' is not
+         * r^2*th''); a plain symbol the caller made (x) stays a constant */
+        {"2 + (u*theta1)'", 4, "'u' is a plain symbol: its rate in this derivative would be 0",
+         "write its rate out", false},
+        {"sin(w2)'", 0, "'w2' is a plain symbol: its rate in this derivative would be 0", NULL, false},
+        {"(x*w3^2)''", 0, "'w3' is a plain symbol: its rate in this derivative would be 0", NULL, false},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const bad *b = &cases[i];

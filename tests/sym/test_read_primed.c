@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include <setjmp.h>
 #include <cmocka.h>
 
@@ -55,10 +56,34 @@ static void test_prime_later(void **state) {
     qd_ctx_free(c);
 }
 
+/* The rate of an expression: its unknown names written with a prime are
+ * coordinates, so (r^2*r')' = 2 r r'^2 + r^2 r''; one only ever written
+ * inside the derivative is refused, named, not taken as constant (issue 33,
+ * Goldstein ch. 1 seed 002: (x*y)' read as 0). */
+static void test_rate_of_expression(void **state) {
+    (void)state;
+    qd_ctx *c = qd_ctx_new();
+    const qd_expr *e = rd(c, "(r^2*r')'");
+    const qd_expr *r = qd_lookup(c, "r");
+    const qd_expr *r1 = qd_jet(c, r, 1), *r2 = qd_jet(c, r, 2);
+    assert_ptr_equal(e, qd_add(c, qd_mul(c, qd_int(c, 2), qd_mul(c, r, qd_powi(c, r1, 2))),
+                               qd_mul(c, qd_powi(c, r, 2), r2)));
+    qd_read_error err;
+    assert_null(qd_read(c, "(x*y)'", NULL, &err));
+    assert_int_equal(err.offset, 0);
+    assert_non_null(strstr(err.message, "'x' is a plain symbol"));
+    qd_ctx_clear_error(c);
+    assert_null(qd_read(c, "1 + sin(z)'", NULL, &err));
+    assert_int_equal(err.offset, 4);
+    qd_ctx_clear_error(c);
+    qd_ctx_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_polar_kinetic),
         cmocka_unit_test(test_prime_later),
+        cmocka_unit_test(test_rate_of_expression),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
