@@ -314,6 +314,14 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
         rc = map_write(c->ctx, w, a, r.rows, mapcol);
     if (rc == QD_EXIT_OK && r.where.writer)
         summary(&r, wall);
+    /* rows of failures only are no answer: said, and a failure (exit 1),
+     * though the rows are written with each run's reason */
+    if (rc == QD_EXIT_OK && r.where.writer && r.nruns > 0 && r.failed == r.nruns) {
+        char why[QD_SWEEP_OUTCOME_MAX];
+        cli_diag_error("every run failed (the first: %s)",
+                       qd_sweep_outcome_str(&r.outcome[0], why, sizeof why));
+        rc = QD_EXIT_FAIL;
+    }
     qd_sweep_result_free(&r);
     return rc;
 }

@@ -226,6 +226,12 @@ def failure(build, tmp):
           and got[1]["final_x"] == "nan" and got[0]["status"] == "ok" and got[2]["status"] == "ok",
           r.stdout)
     check("singular run: counted", "1 failed" in r.stderr, r.stderr)
+    # every run singular: the rows (with their reasons) and exit 1, said
+    r = qdot(build, "sweep", model, "--grid", "x=0:0:1", "--t-end", 0.5, "--measure", "final")
+    got = rows(r.stdout)
+    check("every run failed: exit 1, said, rows kept",
+          r.returncode == 1 and "every run failed (the first: singular" in r.stderr
+          and len(got) == 1 and got[0]["status"] != "ok", "exit %d: %s" % (r.returncode, r.stderr))
 
 
 def errors(build, tmp):
