@@ -87,17 +87,33 @@ static const char *nearest(const qd_sim_setup *s, const char *name) {
     return near;
 }
 
+/* Is name one of the model's vectors (P = (x, y, 0))?  The model's own
+ * reader knows: it refuses the name alone as a vector where a scalar is
+ * needed.  The context is left as it was. */
+static bool is_vector(qd_sim_setup *s, const char *name) {
+    if (qd_ctx_status(s->ctx) != QD_OK)
+        return false;
+    bool vec = !qd_model_read_expr(s->ctx, s->m, name, 0, strlen(name)) &&
+               !strncmp(qd_ctx_message(s->ctx), "a vector where", 14);
+    qd_ctx_clear_error(s->ctx);
+    return vec;
+}
+
 static const qd_expr *refuse(qd_sim_setup *s, const char *text, size_t a, size_t b,
                              const char *name) {
-    bool mult = speeds_multiplier(s, name);
-    const char *near = mult ? NULL : nearest(s, name);
-    if (mult)
+    bool mult = speeds_multiplier(s, name), vec = !mult && is_vector(s, name);
+    const char *near = mult || vec ? NULL : nearest(s, name);
+    if (vec)
+        qd_ctx_error(s->ctx, QD_ERR_ARG, "'%s' is a vector where a scalar is needed", name);
+    else if (mult)
         qd_ctx_error(s->ctx, QD_ERR_ARG, "the multipliers are not computed in generalized "
                                          "speeds (use --no-speeds): '%s'", name);
     else
         qd_ctx_error(s->ctx, QD_ERR_ARG, "unknown name '%s'", name);
     char hint[256];
-    if (near)
+    if (vec)
+        snprintf(hint, sizeof hint, "give a component: %s.x, %s.y or %s.z", name, name, name);
+    else if (near)
         snprintf(hint, sizeof hint, "did you mean '%s'?", near);
     else
         snprintf(hint, sizeof hint, "use coordinates, velocities q', t, parameters, the model's "

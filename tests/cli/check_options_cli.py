@@ -111,6 +111,17 @@ def expressions(qdot, osc):
     r = run(qdot, "simulate", osc, "--t-end", "2*x")
     check("--t-end 2*x: a coordinate is not a constant", r.returncode == 2 and
           "'x' is not a constant" in r.stderr, repr(r.stderr))
+    # a vector of the model where a scalar is needed is said as such, with
+    # its components, not "unknown name" (the model's reader knows it)
+    vec = Path(osc).with_name("vec.qd")
+    vec.write_text("coordinates x, y\nP = (x, y, 0)\nparticle 1 at P\nV = (x^2 + y^2)/2\n")
+    r = run(qdot, "simulate", vec, "--t-end", "1", "--output", "P")
+    check("--output P (a vector): said so, with its components", r.returncode == 2 and
+          "'P' is a vector where a scalar is needed" in r.stderr and "P.x, P.y or P.z" in r.stderr
+          and "unknown name" not in r.stderr, repr(r.stderr))
+    r = run(qdot, "simulate", vec, "--t-end", "1", "--output", "P.y")
+    check("--output P.y: a component is a column", r.returncode == 0 and
+          r.stdout.splitlines()[0].endswith(",P.y"), repr(r.stdout[:200]) + r.stderr)
 
 
 def measures(qdot, osc):
