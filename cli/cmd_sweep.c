@@ -157,21 +157,9 @@ static int more_events(sweep_args *a) {
 /* The measures' outputs and escape crossings, read as --output and --event
  * read them (the model's namespace), errors shown in the --measure text. */
 static int measure_needs(cli_sim *c, const char *spec) {
-    qd_sweep_need needs[2 * QD_SIM_MAX_LIST];
-    unsigned flags;
-    size_t n = qd_sweep_needs(c->s, spec, needs, 2 * QD_SIM_MAX_LIST, &flags);
-    if (n > 2 * QD_SIM_MAX_LIST) {
-        cli_diag_error("--measure: at most %d expressions", 2 * QD_SIM_MAX_LIST);
-        return QD_EXIT_USAGE;
-    }
-    int rc = QD_EXIT_OK;
-    for (size_t k = 0; rc == QD_EXIT_OK && k < n; k++) {
-        const qd_sweep_need *x = &needs[k];
-        rc = x->kind == QD_SWEEP_NEED_OUTPUT
-                 ? cli_sim_output_in(c, "--measure", spec, x->e0, x->e1)
-                 : cli_sim_crossing_in(c, "--measure", spec, x->e0, x->e1, x->v0, x->v1);
-    }
-    return rc;
+    if (qd_sweep_setup_measures(c->ctx, c->set, spec) != QD_OK)
+        return cli_sim_fail_in(c, "--measure", spec);
+    return QD_EXIT_OK;
 }
 
 /* ---- the runs ----------------------------------------------------------- */

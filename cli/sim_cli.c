@@ -94,7 +94,7 @@ const cli_opt cli_sim_plot_opts[] = {
 
 /* The error just recorded, about the user's option opt of text: shown in
  * the text with a caret when located there, else as "opt: message". */
-static int fail_in(cli_sim *c, const char *opt, const char *text) {
+int cli_sim_fail_in(cli_sim *c, const char *opt, const char *text) {
     const qd_diag *d = qd_ctx_diag(c->ctx);
     if (d->located && text) {
         cli_diag_show(opt, text, d);
@@ -123,7 +123,7 @@ static int option_error(cli_sim *c, const cli_sim_args *a) {
         if (strcmp(d->name, f[i].field))
             continue;
         if ((d->located && f[i].text) || !f[i].text)
-            return fail_in(c, f[i].opt, f[i].text); /* --input: "--input: input F is ..." */
+            return cli_sim_fail_in(c, f[i].opt, f[i].text); /* --input: "--input: input F is ..." */
         /* the library's sentence, then the option it is about */
         qd_diag e = *d;
         snprintf(e.message, sizeof e.message, "%.200s (%s)", d->message, f[i].opt);
@@ -170,14 +170,14 @@ int cli_sim_input(cli_sim *c, const char *const *list, size_t i) {
         return cli_sim_input_lqr(c, name);
     if (qd_sim_setup_input(c->set, name, list[i], (size_t)(va - list[i]),
                            (size_t)(vb - list[i])) != QD_OK)
-        return fail_in(c, "--input", list[i]);
+        return cli_sim_fail_in(c, "--input", list[i]);
     return QD_EXIT_OK;
 }
 
 static int events(cli_sim *c, const char *opt, const cli_list *l, bool stop) {
     for (size_t i = 0; i < l->n; i++)
         if (qd_sim_setup_event(c->set, l->items[i], stop) != QD_OK)
-            return fail_in(c, opt, l->items[i]);
+            return cli_sim_fail_in(c, opt, l->items[i]);
     return QD_EXIT_OK;
 }
 
@@ -202,9 +202,9 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     c->st.syms = (const qd_expr **)(void *)syms; /* a view: read only */
     c->st.vals = (double *)(void *)vals;
     if (a->initial && qd_sim_setup_initial(c->set, a->initial) != QD_OK)
-        return fail_in(c, "--initial", a->initial);
+        return cli_sim_fail_in(c, "--initial", a->initial);
     if (a->output && qd_sim_setup_outputs(c->set, a->output) != QD_OK)
-        return fail_in(c, "--output", a->output);
+        return cli_sim_fail_in(c, "--output", a->output);
     c->about = a->about;
     c->lqr = a->lqr;
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->inputs.n; i++)
@@ -219,7 +219,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     if (rc == QD_EXIT_OK)
         rc = events(c, "--stop-at", &a->stops, true);
     if (rc == QD_EXIT_OK && a->section && qd_sim_setup_event(c->set, a->section, false) != QD_OK)
-        rc = fail_in(c, "--section", a->section);
+        rc = cli_sim_fail_in(c, "--section", a->section);
     qd_sim_setup_opts so = {.t_end = a->t_end, .dt = a->dt, .step = a->step, .rtol = a->rtol, .atol = a->atol,
                             .every = a->every, .max_steps = a->max_steps, .method = a->method,
                             .precision = a->precision ? atoi(a->precision) : 0,
@@ -250,23 +250,4 @@ int cli_sim_fail(cli_sim *c, qd_status st) {
     return st == QD_ERR_UNBOUND ? QD_EXIT_USAGE : QD_EXIT_FAIL;
 }
 
-/* ---- qdot sweep (issue 21) -------------------------------------------------- */
 
-int cli_sim_output_in(cli_sim *c, const char *what, const char *full, size_t a, size_t b) {
-    char *name = malloc(b - a + 1);
-    if (!name)
-        return QD_EXIT_FAIL;
-    memcpy(name, full + a, b - a);
-    name[b - a] = '\0';
-    int rc = qd_sim_setup_output(c->set, name, full, a, b) == QD_OK ? QD_EXIT_OK
-                                                                    : fail_in(c, what, full);
-    free(name);
-    return rc;
-}
-
-int cli_sim_crossing_in(cli_sim *c, const char *what, const char *full, size_t a0, size_t a1,
-                        size_t b0, size_t b1) {
-    if (qd_sim_setup_crossing(c->set, full, a0, a1, b0, b1) != QD_OK)
-        return fail_in(c, what, full);
-    return QD_EXIT_OK;
-}

@@ -83,13 +83,10 @@ int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len
  * K) as the input's expression; an exit status (sim_lqr_cli.c). */
 int cli_sim_input_lqr(cli_sim *c, const char *name);
 
-/* The same for text full[a, b) of a user's option what (--measure): errors
- * shown in full, at their place. */
-int cli_sim_output_in(cli_sim *c, const char *what, const char *full, size_t a, size_t b);
-/* An event (no guards, not stopping) where full[a0, a1) crosses full[b0,
- * b1), read as --event reads them, errors shown in full; an exit status. */
-int cli_sim_crossing_in(cli_sim *c, const char *what, const char *full, size_t a0, size_t a1,
-                        size_t b0, size_t b1);
+/* The context's error about the text of a user's option opt (--measure):
+ * shown in text at its place when located, else after "opt: "; an exit
+ * status. */
+int cli_sim_fail_in(cli_sim *c, const char *opt, const char *text);
 
 /* Print a failed run's message; exit status 1. */
 int cli_sim_fail(cli_sim *c, qd_status st);

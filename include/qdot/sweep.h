@@ -130,6 +130,16 @@ typedef const qd_expr *(*qd_sweep_read_fn)(void *data, qd_ctx *ctx, const char *
 QD_API qd_status qd_sweep_prepare(qd_ctx *ctx, qd_sim *s, const char *spec, qd_sweep_read_fn read,
                                   void *data);
 
+/* The same for a run set up by qd_sim_setup (qdot/simsetup.h), the way
+ * qdot sweep takes its measures: each expression read in the model's
+ * namespace as --output and --event read theirs (qd_sim_setup_output,
+ * qd_sim_setup_crossing: definitions, their rates, vector components),
+ * an error located in spec (the reason in ctx, the context set was made
+ * with). */
+struct qd_sim_setup;
+QD_API qd_status qd_sweep_setup_measures(qd_ctx *ctx, struct qd_sim_setup *set,
+                                         const char *spec); /* ctx: set's */
+
 /* ---- a grid of two axes as a colour map (qdot sweep --map) -------------- */
 
 /* The measure column a map draws: measure NULL, the first measure column;

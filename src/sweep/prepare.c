@@ -11,6 +11,7 @@
 
 #include "base/mem.h"
 #include "qdot/read.h"
+#include "qdot/simsetup.h"
 #include "../base/args.h"
 
 /* The library's own reader: qd_read of spec[a, b), names as symbols (no
@@ -71,6 +72,36 @@ qd_status qd_sweep_prepare(qd_ctx *ctx, qd_sim *s, const char *spec, qd_sweep_re
             st = r ? qd_sim_add_event(s, qd_sub(ctx, l, r), 0, NULL, false) : failed(ctx);
         }
         qd__free(name);
+    }
+    qd__free(needs);
+    return st;
+}
+
+qd_status qd_sweep_setup_measures(qd_ctx *ctx, struct qd_sim_setup *set, const char *spec) {
+    QD_ARGS_CTX(ctx, ctx && set && spec);
+    qd_sim *s = qd_sim_setup_sim(set);
+    unsigned flags;
+    size_t n = qd_sweep_needs(s, spec, NULL, 0, &flags);
+    qd_sweep_need *needs = qd__malloc(ctx, (n + 1) * sizeof *needs);
+    if (!needs)
+        return QD_ERR_NOMEM;
+    qd_sweep_needs(s, spec, needs, n, &flags);
+    qd_status st = QD_OK;
+    for (size_t k = 0; st == QD_OK && k < n; k++) {
+        const qd_sweep_need *x = &needs[k];
+        if (x->kind == QD_SWEEP_NEED_OUTPUT) {
+            char *name = qd__malloc(ctx, x->e1 - x->e0 + 1);
+            if (!name) {
+                st = QD_ERR_NOMEM;
+                break;
+            }
+            memcpy(name, spec + x->e0, x->e1 - x->e0);
+            name[x->e1 - x->e0] = '\0';
+            st = qd_sim_setup_output(set, name, spec, x->e0, x->e1);
+            qd__free(name);
+        } else {
+            st = qd_sim_setup_crossing(set, spec, x->e0, x->e1, x->v0, x->v1);
+        }
     }
     qd__free(needs);
     return st;

@@ -5728,6 +5728,16 @@ static void null_sweep(void **state)
     /* spec NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_prepare(F.ctx, F.sim, NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_sweep_setup_measures */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_setup_measures(NULL, NULL, "q"));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_setup_measures(F.ctx, NULL, "q"));
+    reset(&F);
+    /* spec NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_setup_measures(F.ctx, NULL, NULL));
+    reset(&F);
     /* ---- qd_sweep_map_column */
     /* w NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_map_column(NULL, "q", F.z));
