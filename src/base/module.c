@@ -15,18 +15,24 @@
 #ifndef QDOT_MODULE_INSTALL_DIR
 #define QDOT_MODULE_INSTALL_DIR "/usr/local/lib/qdot-modules"
 #endif
+/* The same relative to the prefix, for a tree installed elsewhere than it
+ * was configured for (make install PREFIX=...): PREFIX/bin/qdot finds
+ * PREFIX/<libdir>/qdot-modules. */
+#ifndef QDOT_MODULE_REL_DIR
+#define QDOT_MODULE_REL_DIR "lib/qdot-modules"
+#endif
 
 /* An object of libqdot's own, whose address dladdr maps to the file that
  * holds libqdot (ISO C has no function-to-object pointer cast). */
 static const char anchor = 0;
 
-/* dir/qdot-modules/qdot_NAME.so, from the directory part of file; false
- * when file has none or the path does not fit. */
-static bool beside(char *out, size_t cap, const char *file, const char *name) {
+/* dir/SUB/qdot_NAME.so, dir the directory part of file; false when file
+ * has none or the path does not fit. */
+static bool beside(char *out, size_t cap, const char *file, const char *sub, const char *name) {
     const char *slash = file ? strrchr(file, '/') : NULL;
     if (!slash)
         return false;
-    int n = snprintf(out, cap, "%.*s/qdot-modules/qdot_%s.so", (int)(slash - file), file, name);
+    int n = snprintf(out, cap, "%.*s/%s/qdot_%s.so", (int)(slash - file), file, sub, name);
     return n > 0 && (size_t)n < cap;
 }
 
@@ -44,23 +50,24 @@ static bool candidate(int k, char *out, size_t cap, const char *name, bool *exis
     }
     case 1: {
         Dl_info info;
-        if (!dladdr(&anchor, &info) || !beside(out, cap, info.dli_fname, name))
+        if (!dladdr(&anchor, &info) || !beside(out, cap, info.dli_fname, "qdot-modules", name))
             return true;
         n = 1;
         break;
     }
-    case 2: {
+    case 2:
+    case 3: { /* beside the running program; then PREFIX/<libdir>/... from PREFIX/bin */
         char exe[PATH_MAX];
         ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
         if (len <= 0)
             return true;
         exe[len] = '\0';
-        if (!beside(out, cap, exe, name))
+        if (!beside(out, cap, exe, k == 2 ? "qdot-modules" : "../" QDOT_MODULE_REL_DIR, name))
             return true;
         n = 1;
         break;
     }
-    case 3:
+    case 4:
         n = snprintf(out, cap, "%s/qdot_%s.so", QDOT_MODULE_INSTALL_DIR, name);
         break;
     default:

@@ -8,7 +8,9 @@
  *   2. qdot-modules/ beside the object that holds libqdot: libqdot.so, or
  *      the program that links its archive (the build tree's ./qdot);
  *   3. qdot-modules/ beside the running program (/proc/self/exe);
- *   4. QDOT_MODULE_INSTALL_DIR, fixed when libqdot was built
+ *   4. ../<libdir>/qdot-modules from the running program (a tree installed
+ *      under another prefix than it was configured for);
+ *   5. QDOT_MODULE_INSTALL_DIR, fixed when libqdot was built
  *      (${libdir}/qdot-modules: an installed /usr/local/bin/qdot).
  * A module is opened once and never closed (MPI cannot be unloaded and
  * started again); dlopen's own reference count makes repeated opens cheap
