@@ -223,16 +223,6 @@ def _state_at(core, at, extra):
     return syms, vals
 
 
-def _rendered(core, call):
-    """The text call(buf) writes, or the context's error raised."""
-    buf = new("qd_buf")
-    st = call(buf)
-    if st != 0:
-        lib.qd_buf_free(buf)
-        core.check(st)
-    return buf_text(buf)
-
-
 def _render(core, fn, e, fmt, at, extra, multipliers=False):
     """fn (qd_render_eom or qd_render_speeds) of e in format fmt."""
     k = new("qd_render_format")
@@ -243,7 +233,7 @@ def _render(core, fn, e, fmt, at, extra, multipliers=False):
         syms, vals = _state_at(core, at, extra)
         csyms, cvals = exprs(syms), doubles(vals)  # alive for the call
         opts.nstate, opts.syms, opts.vals = len(syms), csyms, cvals
-    return _rendered(core, lambda buf: fn(core.ctx, core.model, e, opts, k[0], buf))
+    return _commands.rendered(core, lambda buf: fn(core.ctx, core.model, e, opts, k[0], buf))
 
 
 def _sympy_namespace(core, extra=()):
@@ -376,7 +366,7 @@ class Model:
         def hamel(fmt="text"):
             """Hamel's coefficients gamma_ikm (text, or a dict for "json")."""
             k = lib.QD_RENDER_TEXT if fmt == "text" else lib.QD_RENDER_JSON
-            text = _rendered(core, lambda buf: lib.qd_render_hamel(core.ctx, ptr.se, k, buf))
+            text = _commands.rendered(core, lambda buf: lib.qd_render_hamel(core.ctx, ptr.se, k, buf))
             return text if fmt == "text" else _json.loads(text)
         out.hamel = hamel
         return out

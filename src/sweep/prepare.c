@@ -42,11 +42,13 @@ static qd_status failed(qd_ctx *ctx) {
     return st != QD_OK ? st : QD_ERR_PARSE;
 }
 
-qd_status qd_sweep_prepare(qd_ctx *ctx, qd_sim *s, const char *spec, qd_sweep_read_fn read,
+/* Each need of spec's measures (qd_sweep_needs) handed to add with its
+ * text spec[e0, e1) as a NUL-ended name; the first failure is returned. */
+typedef qd_status (*need_fn)(void *data, const char *spec, const qd_sweep_need *x,
+                             const char *name);
+
+static qd_status each_need(qd_ctx *ctx, const qd_sim *s, const char *spec, need_fn add,
                            void *data) {
-    QD_ARGS_CTX(ctx, ctx && s && spec);
-    if (!read)
-        read = plain_read;
     unsigned flags;
     size_t n = qd_sweep_needs(s, spec, NULL, 0, &flags);
     qd_sweep_need *needs = qd__malloc(ctx, (n + 1) * sizeof *needs);
@@ -63,46 +65,50 @@ qd_status qd_sweep_prepare(qd_ctx *ctx, qd_sim *s, const char *spec, qd_sweep_re
         }
         memcpy(name, spec + x->e0, x->e1 - x->e0);
         name[x->e1 - x->e0] = '\0';
-        if (x->kind == QD_SWEEP_NEED_OUTPUT) {
-            const qd_expr *e = read(data, ctx, spec, x->e0, x->e1);
-            st = e ? qd_sim_add_output(s, name, e) : failed(ctx);
-        } else if (x->kind == QD_SWEEP_NEED_CROSSING) {
-            const qd_expr *l = read(data, ctx, spec, x->e0, x->e1);
-            const qd_expr *r = l ? read(data, ctx, spec, x->v0, x->v1) : NULL;
-            st = r ? qd_sim_add_event(s, qd_sub(ctx, l, r), 0, NULL, false) : failed(ctx);
-        }
+        st = add(data, spec, x, name);
         qd__free(name);
     }
     qd__free(needs);
     return st;
 }
 
+/* qd_sweep_prepare's: read by the caller's reader, added to the qd_sim. */
+typedef struct to_sim {
+    qd_ctx *ctx;
+    qd_sim *s;
+    qd_sweep_read_fn read;
+    void *data;
+} to_sim;
+
+static qd_status add_to_sim(void *data, const char *spec, const qd_sweep_need *x,
+                            const char *name) {
+    to_sim *t = data;
+    if (x->kind == QD_SWEEP_NEED_OUTPUT) {
+        const qd_expr *e = t->read(t->data, t->ctx, spec, x->e0, x->e1);
+        return e ? qd_sim_add_output(t->s, name, e) : failed(t->ctx);
+    }
+    const qd_expr *l = t->read(t->data, t->ctx, spec, x->e0, x->e1);
+    const qd_expr *r = l ? t->read(t->data, t->ctx, spec, x->v0, x->v1) : NULL;
+    return r ? qd_sim_add_event(t->s, qd_sub(t->ctx, l, r), 0, NULL, false) : failed(t->ctx);
+}
+
+qd_status qd_sweep_prepare(qd_ctx *ctx, qd_sim *s, const char *spec, qd_sweep_read_fn read,
+                           void *data) {
+    QD_ARGS_CTX(ctx, ctx && s && spec);
+    to_sim t = {ctx, s, read ? read : plain_read, data};
+    return each_need(ctx, s, spec, add_to_sim, &t);
+}
+
+/* qd_sweep_setup_measures': read in the model's namespace by the setup. */
+static qd_status add_to_setup(void *data, const char *spec, const qd_sweep_need *x,
+                              const char *name) {
+    struct qd_sim_setup *set = data;
+    if (x->kind == QD_SWEEP_NEED_OUTPUT)
+        return qd_sim_setup_output(set, name, spec, x->e0, x->e1);
+    return qd_sim_setup_crossing(set, spec, x->e0, x->e1, x->v0, x->v1);
+}
+
 qd_status qd_sweep_setup_measures(qd_ctx *ctx, struct qd_sim_setup *set, const char *spec) {
     QD_ARGS_CTX(ctx, ctx && set && spec);
-    qd_sim *s = qd_sim_setup_sim(set);
-    unsigned flags;
-    size_t n = qd_sweep_needs(s, spec, NULL, 0, &flags);
-    qd_sweep_need *needs = qd__malloc(ctx, (n + 1) * sizeof *needs);
-    if (!needs)
-        return QD_ERR_NOMEM;
-    qd_sweep_needs(s, spec, needs, n, &flags);
-    qd_status st = QD_OK;
-    for (size_t k = 0; st == QD_OK && k < n; k++) {
-        const qd_sweep_need *x = &needs[k];
-        if (x->kind == QD_SWEEP_NEED_OUTPUT) {
-            char *name = qd__malloc(ctx, x->e1 - x->e0 + 1);
-            if (!name) {
-                st = QD_ERR_NOMEM;
-                break;
-            }
-            memcpy(name, spec + x->e0, x->e1 - x->e0);
-            name[x->e1 - x->e0] = '\0';
-            st = qd_sim_setup_output(set, name, spec, x->e0, x->e1);
-            qd__free(name);
-        } else {
-            st = qd_sim_setup_crossing(set, spec, x->e0, x->e1, x->v0, x->v1);
-        }
-    }
-    qd__free(needs);
-    return st;
+    return each_need(ctx, qd_sim_setup_sim(set), spec, add_to_setup, set);
 }
