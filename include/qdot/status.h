@@ -70,7 +70,8 @@ typedef enum qd_reason {
     QD_REASON_SINGULAR_MASS, /* the mass matrix is singular */
     QD_REASON_TOO_DEEP,      /* text nested beyond the readers' limit (QD_MAX_NEST) */
     QD_REASON_BAD_BYTE,      /* a byte or character the language does not allow there */
-    QD_REASON_DEPENDENT_SPEEDS /* speeds (with the constraints) that do not determine q' */
+    QD_REASON_DEPENDENT_SPEEDS, /* speeds (with the constraints) that do not determine q' */
+    QD_REASON_WRONG_KIND     /* a vector or matrix where a scalar is needed, or the reverse */
 } qd_reason;
 
 /* Brackets and signs nest at most this deep in any text libqdot reads, so a

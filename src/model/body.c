@@ -169,7 +169,7 @@ static bool body_clauses(parser *p, value v[NCLAUSES], bool seen[NCLAUSES]) {
         if (!ok)
             return false;
         if (k == 1 && v[k].kind == VK_SCALAR)
-            return qd__mdl_perr(p, v[k].off, v[k].len,
+            return qd__mdl_perr_why(p, QD_REASON_WRONG_KIND, v[k].off, v[k].len,
                         "give the principal moments (A, B, C) or the tensor [[..], [..], [..]]",
                         "a scalar where a vector or matrix is needed: an inertia is three "
                         "moments or a tensor");

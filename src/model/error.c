@@ -19,14 +19,13 @@
  * message and byte range, and stop) and copy it for qd_model_parse's caller.
  * An error at a byte the lexer could not read names that byte instead, in
  * plain words, whatever the statement expected there. */
-static bool vperr(parser *p, size_t off, size_t len, const char *hint, const char *fmt,
-                  va_list ap) {
+static bool vperr(parser *p, qd_reason why, size_t off, size_t len, const char *hint,
+                  const char *fmt, va_list ap) {
     if (p->failed)
         return false;
     p->failed = true;
     char msg[256];
     vsnprintf(msg, sizeof msg, fmt, ap);
-    qd_reason why = QD_REASON_NONE;
     if (p->lx.tok.kind == TK_BAD && off == p->lx.tok.off) {
         len = qd__diag_bad_char(p->lx.src + off, msg, sizeof msg, &hint);
         why = QD_REASON_BAD_BYTE;
@@ -48,7 +47,16 @@ static bool vperr(parser *p, size_t off, size_t len, const char *hint, const cha
 bool qd__mdl_perr(parser *p, size_t off, size_t len, const char *hint, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    vperr(p, off, len, hint, fmt, ap);
+    vperr(p, QD_REASON_NONE, off, len, hint, fmt, ap);
+    va_end(ap);
+    return false;
+}
+
+bool qd__mdl_perr_why(parser *p, qd_reason why, size_t off, size_t len, const char *hint,
+                      const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vperr(p, why, off, len, hint, fmt, ap);
     va_end(ap);
     return false;
 }
@@ -56,7 +64,7 @@ bool qd__mdl_perr(parser *p, size_t off, size_t len, const char *hint, const cha
 bool qd__mdl_perr_tok(parser *p, const char *hint, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    vperr(p, p->lx.tok.off, p->lx.tok.len, hint, fmt, ap);
+    vperr(p, QD_REASON_NONE, p->lx.tok.off, p->lx.tok.len, hint, fmt, ap);
     va_end(ap);
     return false;
 }

@@ -63,7 +63,8 @@ static const char *kind_hint(vkind have, vkind want) {
 bool qd__mdl_need_kind(parser *p, const value *v, vkind want, const char *where) {
     if (v->kind == want)
         return true;
-    return qd__mdl_perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed%s%s",
+    return qd__mdl_perr_why(p, QD_REASON_WRONG_KIND, v->off, v->len, kind_hint(v->kind, want),
+                            "a %s where a %s is needed%s%s",
                 qd__mdl_vkind_name(v->kind), qd__mdl_vkind_name(want), where ? " " : "", where ? where : "");
 }
 
@@ -551,7 +552,7 @@ static bool parse_postfix(parser *p, value *out) {
             if (k < 0)
                 return qd__mdl_perr_tok(p, "components are .x, .y and .z", "expected a component name");
             if (out->kind != VK_VECTOR)
-                return qd__mdl_perr(p, out->off, out->len,
+                return qd__mdl_perr_why(p, QD_REASON_WRONG_KIND, out->off, out->len,
                             out->kind == VK_SCALAR ? "only a vector has components"
                                                    : "R*(1, 0, 0) is the first column of R",
                             "a %s where a vector is needed", qd__mdl_vkind_name(out->kind));
@@ -621,7 +622,7 @@ static bool parse_signed(parser *p, value *out) {
  * matrix*vector a vector; a vector can only come last. */
 static bool mul_nonscalar(parser *p, value *acc, const value *b) {
     if (acc->kind == VK_VECTOR && b->kind == VK_VECTOR)
-        return qd__mdl_perr(p, b->off, b->len, "use dot(a, b) or cross(a, b)",
+        return qd__mdl_perr_why(p, QD_REASON_WRONG_KIND, b->off, b->len, "use dot(a, b) or cross(a, b)",
                     "a vector where a scalar is needed: cannot multiply two vectors");
     if (acc->kind == VK_VECTOR)
         return qd__mdl_perr(p, b->off, b->len, "write transpose(R)*v for the row vector v^T R",
@@ -719,7 +720,8 @@ static bool parse_kind(parser *p, value *v, vkind want, const char *what) {
         return false;
     if (v->kind == want)
         return true;
-    return qd__mdl_perr(p, v->off, v->len, kind_hint(v->kind, want), "a %s where a %s is needed: %s is a %s",
+    return qd__mdl_perr_why(p, QD_REASON_WRONG_KIND, v->off, v->len, kind_hint(v->kind, want),
+                            "a %s where a %s is needed: %s is a %s",
                 qd__mdl_vkind_name(v->kind), qd__mdl_vkind_name(want), what, qd__mdl_vkind_name(want));
 }
 

@@ -105,7 +105,7 @@ static bool one_output(parser *p) {
     if (!qd__mdl_named_definition(p, "output", OUTPUT_USAGE, output_name_fresh, name, &at, &v))
         return false;
     if (v.kind != VK_SCALAR)
-        return qd__mdl_perr(p, v.off, v.len, "give one output per component",
+        return qd__mdl_perr_why(p, QD_REASON_WRONG_KIND, v.off, v.len, "give one output per component",
                             "a %s where a scalar is needed: an output is a scalar",
                             qd__mdl_vkind_name(v.kind));
     return add_output(p, name, at, v.c[0]);

@@ -395,6 +395,13 @@ bool qd__mdl_perr(parser *p, size_t off, size_t len, const char *hint, const cha
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
+/* The same with a reason code (qd_diag.reason) for callers that branch on it. */
+bool qd__mdl_perr_why(parser *p, qd_reason why, size_t off, size_t len, const char *hint,
+                      const char *fmt, ...)
+#ifdef __GNUC__
+    __attribute__((format(printf, 6, 7)))
+#endif
+    ;
 bool qd__mdl_perr_tok(parser *p, const char *hint, const char *fmt, ...)
 #ifdef __GNUC__
     __attribute__((format(printf, 3, 4)))

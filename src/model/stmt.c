@@ -705,7 +705,7 @@ static bool stmt_definition(parser *p) {
         return false;
     if (slot) {
         if (v.kind != VK_SCALAR)
-            return qd__mdl_perr(p, v.off, v.len, v.kind == VK_VECTOR
+            return qd__mdl_perr_why(p, QD_REASON_WRONG_KIND, v.off, v.len, v.kind == VK_VECTOR
                             ? "an energy is a scalar: use dot(v, v) for |v|^2"
                             : "an energy is a scalar",
                         "a %s where a scalar is needed: %s is a scalar", qd__mdl_vkind_name(v.kind), name);

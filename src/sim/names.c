@@ -88,13 +88,13 @@ static const char *nearest(const qd_sim_setup *s, const char *name) {
 }
 
 /* Is name one of the model's vectors (P = (x, y, 0))?  The model's own
- * reader knows: it refuses the name alone as a vector where a scalar is
- * needed.  The context is left as it was. */
+ * reader knows: it refuses the name alone with QD_REASON_WRONG_KIND (a
+ * vector where a scalar is needed).  The context is left as it was. */
 static bool is_vector(qd_sim_setup *s, const char *name) {
     if (qd_ctx_status(s->ctx) != QD_OK)
         return false;
     bool vec = !qd_model_read_expr(s->ctx, s->m, name, 0, strlen(name)) &&
-               !strncmp(qd_ctx_message(s->ctx), "a vector where", 14);
+               qd_ctx_diag(s->ctx)->reason == QD_REASON_WRONG_KIND;
     qd_ctx_clear_error(s->ctx);
     return vec;
 }

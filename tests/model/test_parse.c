@@ -267,6 +267,11 @@ static void diagnostics(void **state) {
             (b->hint && !strstr(d.hint, b->hint)))
             fail_msg("case %zu: got %zu:%zu: %s [hint: %s]; want %zu:%zu: %s [hint: %s]", i, d.line,
                      d.col, d.message, d.hint, b->line, b->col, b->message, b->hint ? b->hint : "-");
+        /* a value of the wrong kind carries its reason code, so that a
+         * caller (sim/names.c: "give a component: P.x") need not read English */
+        bool kind = strstr(d.message, " where a ") && strstr(d.message, " is needed");
+        if ((d.reason == QD_REASON_WRONG_KIND) != kind)
+            fail_msg("case %zu: reason %d for '%s'", i, (int)d.reason, d.message);
         qd_ctx_free(ctx);
     }
 }
