@@ -70,6 +70,15 @@ typedef struct cli_spec {
 #define CLI_OPT(TYPE, NAME, KIND, FIELD, META, HELP) \
     {NAME, NULL, KIND, offsetof(TYPE, FIELD), META, HELP, NULL, NULL}
 
+/* The options every model command spells alike, one wording for each
+ * (issue 31's one vocabulary): --set NAME=VALUE and --format FORMAT with other choices than
+ * CLI_OPT_FORMAT's text|json (cli/out.h). */
+#define CLI_OPT_SET(TYPE, FIELD)                                                              \
+    {"--set", NULL, CLI_LIST, offsetof(TYPE, FIELD), "NAME=VALUE",                           \
+     "give a parameter a value (a number or an expression in the others)", NULL, NULL}
+#define CLI_OPT_FORMATS(TYPE, FIELD, CHOICES) \
+    {"--format", NULL, CLI_CHOICE, offsetof(TYPE, FIELD), "FORMAT", "the output format", CHOICES, NULL}
+
 /* Parse argv[0..argc) (the arguments after the command name) into args and
  * pos[0..spec->max_pos) (unset ones NULL).  --help (or -h) prints the usage
  * on stdout and exits 0.  Returns 0, or 2 after printing why (an unknown or

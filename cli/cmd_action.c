@@ -28,12 +28,10 @@ typedef struct act_run {
 static const cli_opt opts[] = {
     {"--at", NULL, CLI_TEXT, offsetof(act_args, at), "\"q=V, q'=V (or p=V), ...\"",
      "the state of the motion (over the model's initial values)", NULL, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(act_args, sets), "NAME=VALUE",
-     "give a parameter another value", NULL, NULL},
+    CLI_OPT_SET(act_args, sets),
     {"--angle", NULL, CLI_TEXT, offsetof(act_args, angle), "q[,q...]",
      "the coordinates whose angle variables to print", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(act_args, format), "F", "output format",
-     cli_formats_text_json, NULL},
+    CLI_OPT_FORMAT(act_args, format),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

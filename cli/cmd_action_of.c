@@ -26,10 +26,8 @@ static const cli_opt opts[] = {
      "the trial path: every coordinate as an expression in t", NULL, NULL},
     {"--t", NULL, CLI_TEXT, offsetof(ao_run, times), "T0:T1",
      "the time interval (expressions in the parameters)", NULL, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(ao_run, sets), "NAME=VALUE",
-     "give a parameter another value", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(ao_run, format), "F", "output format",
-     cli_formats_text_json, NULL},
+    CLI_OPT_SET(ao_run, sets),
+    CLI_OPT_FORMAT(ao_run, format),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

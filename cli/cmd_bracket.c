@@ -18,8 +18,7 @@ static const char *const formats[] = {"text", "json", "latex", NULL};
 static const cli_opt opts[] = {
     {"--dt", NULL, CLI_FLAG, offsetof(br_args, dt), NULL,
      "dF/dt along the motion instead of [F, G] (give F only)", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(br_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+    CLI_OPT_FORMATS(br_args, format, formats),
     {0},
 };
 

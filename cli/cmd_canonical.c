@@ -37,10 +37,8 @@ static const cli_opt opts[] = {
     {"--generator", NULL, CLI_CHOICE, offsetof(can_args, gen), "TYPE",
      "the map of the generating function EXPR (the argument after FILE) of this type",
      gen_types, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(can_args, format), "FORMAT", "how to write it",
-     cli_formats_text_json, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(can_args, set), "NAME=VALUE",
-     "read the model with this parameter value", NULL, NULL},
+    CLI_OPT_FORMAT(can_args, format),
+    CLI_OPT_SET(can_args, set),
     {0},
 };
 

@@ -22,10 +22,8 @@ static const cli_opt opts[] = {
      "Newton from this point (only the equilibrium reached)", NULL, NULL},
     {"--box", NULL, CLI_TEXT, offsetof(eq_args, box), "\"q1=LOW:HIGH, ...\"",
      "search this box (default: [-pi, pi] for an angle, else [-10, 10])", NULL, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(eq_args, sets), "NAME=VALUE", "a parameter's value", NULL,
-     NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(eq_args, format), "NAME", "text or json",
-     cli_formats_text_json, NULL},
+    CLI_OPT_SET(eq_args, sets),
+    CLI_OPT_FORMAT(eq_args, format),
     {0},
 };
 

@@ -23,8 +23,7 @@ typedef struct expr_args {
 static const char *const formats[] = {"text", "latex", "c", "sympy", NULL};
 
 static const cli_opt expr_opts[] = {
-    {"--format", NULL, CLI_CHOICE, offsetof(expr_args, format), "F",
-     "how the result is printed", formats, NULL},
+    CLI_OPT_FORMATS(expr_args, format, formats),
     {0},
 };
 

@@ -17,8 +17,7 @@ typedef struct form_args {
 static const cli_opt form_opts[] = {
     {"--vars", NULL, CLI_TEXT, offsetof(form_args, vars), "\"x, y, ...\"",
      "the variables of the form (required)", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(form_args, format), "F", "the output format",
-     cli_formats_text_json, NULL},
+    CLI_OPT_FORMAT(form_args, format),
     {0},
 };
 

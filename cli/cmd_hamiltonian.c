@@ -33,8 +33,7 @@ static const cli_opt opts[] = {
      "evaluate H and the equations at this point (momenta named as printed)", NULL, NULL},
     {"--set", NULL, CLI_LIST, offsetof(ham_run, sets), "NAME=VALUE",
      "give a parameter another value (fixed into the expressions)", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(ham_run, format), "F", "output format", formats,
-     NULL},
+    CLI_OPT_FORMATS(ham_run, format, formats),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

@@ -18,14 +18,12 @@ typedef struct hj_args {
 static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
 
 static const cli_opt opts[] = {
-    {"--format", NULL, CLI_CHOICE, offsetof(hj_args, format), "FORMAT", "how to write it",
-     formats, NULL},
+    CLI_OPT_FORMATS(hj_args, format, formats),
     {"--energy", NULL, CLI_TEXT, offsetof(hj_args, energy), "NAME",
      "the name of the energy constant (default E)", NULL, NULL},
     {"--solve", NULL, CLI_FLAG, offsetof(hj_args, solve), NULL,
      "the motion from dW/dalpha = beta where the quadratures close", NULL, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(hj_args, set), "NAME=VALUE",
-     "read the model with this parameter value", NULL, NULL},
+    CLI_OPT_SET(hj_args, set),
     {0},
 };
 

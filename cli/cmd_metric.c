@@ -26,10 +26,8 @@ static const cli_opt opts[] = {
     {"--force", NULL, CLI_TEXT, offsetof(mt_args, force), "\"G1, G2, ...\"",
      "a force by its covariant components G_i = F . dx/dq_i (default: the model's Q)", NULL,
      NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(mt_args, format), "FORMAT", "how to write it",
-     cli_formats_text_json, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(mt_args, set), "NAME=VALUE",
-     "read the model with this parameter value", NULL, NULL},
+    CLI_OPT_FORMAT(mt_args, format),
+    CLI_OPT_SET(mt_args, set),
     {0},
 };
 

@@ -24,10 +24,8 @@ static const char *const formats[] = {"text", "json", "latex", "sympy", NULL};
 static const cli_opt opts[] = {
     {"--ignore", NULL, CLI_TEXT, offsetof(routh_args, ignore), "Q[,Q...]",
      "the cyclic coordinates to ignore (required)", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(routh_args, format), "FORMAT", "how to write it",
-     formats, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(routh_args, set), "NAME=VALUE",
-     "read the model with this parameter value", NULL, NULL},
+    CLI_OPT_FORMATS(routh_args, format, formats),
+    CLI_OPT_SET(routh_args, set),
     {0},
 };
 

@@ -44,8 +44,7 @@ static const cli_opt opts[] = {
      "grid cells each way, 2 to 4000 (default 400)", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(zvc_args, format), "FORMAT",
      "how to write it (csv: the curves' points)", formats, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(zvc_args, set), "NAME=VALUE",
-     "read the model with this parameter value", NULL, NULL},
+    CLI_OPT_SET(zvc_args, set),
     {0},
 };
 
