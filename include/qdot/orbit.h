@@ -49,8 +49,12 @@ typedef struct qd_orbit {
     const qd_expr *x, *xd;      /* the remaining coordinate and its velocity */
     const qd_expr *Veff;        /* V_eff(x; beta) */
     const qd_expr *dV[4];       /* its derivatives of order 1..4 in x */
-    const qd_expr *mass;        /* M(x): the kinetic part of -R is M x'^2/2 */
+    const qd_expr *mass;        /* M(x): the kinetic part of -R is M x'^2/2 (at x' = 0
+                                   when general) */
     const qd_expr **rate;       /* nign: the ignored velocities at x' = 0 */
+    bool general;               /* -R is not quadratic in x' (a relativistic L: M and
+                                   the rates depend on x'): the quadratures solve
+                                   h(x, x') = E for x' at each point */
     bool central;               /* one ignored coordinate, M free of x and c' x^2 free
                                    of x: a central force in the plane of the orbit */
     bool kepler;                /* central and V_eff = c0 + c1/x + c2/x^2 exactly: the

@@ -19,12 +19,23 @@ struct qd__orb_num {
     qd_prog *prog;
     size_t nin, nout;
     const qd_expr **ins;   /* the program's inputs: x, the momenta, the parameters */
+    /* o->general only: h(x, x'), dh/dx' and the ignored rates c'(x, x'), of
+     * the inputs ins2 (x, x', the momenta, the parameters); and prog's
+     * outputs ih4, ih6: d^4h/dx'^4 and d^6h/dx'^6 at x' = 0 */
+    qd_prog *prog2;
+    size_t nin2, ih4;
+    const qd_expr **ins2;
 };
+
+/* The outputs of prog2. */
+enum { QD__ORB_H, QD__ORB_DH, QD__ORB_RATE2 };
 
 /* One evaluation environment per solve (the program is shared, read-only). */
 typedef struct qd__orb_env {
     const qd_orbit *o;
     double *work, *in, *out;
+    double *work2, *in2, *out2; /* prog2's (o->general) */
+    size_t ix2, ixd2;           /* x's and x''s slots in in2 (SIZE_MAX: absent) */
     size_t ix;             /* x's slot in in[] (SIZE_MAX: V_eff is free of x) */
     double E;              /* the energy */
     double scale;          /* the length of x's scans: |x0|, or 1 */
@@ -42,6 +53,12 @@ const double *qd__orb_at(qd__orb_env *env, double x);
 /* A function of x scanned for sign changes. */
 typedef double (*qd__orb_fn)(qd__orb_env *env, double x);
 double qd__orb_gap(qd__orb_env *env, double x);   /* E - V_eff(x) */
+/* o->general: prog2's outputs at (x, xd). */
+const double *qd__orb_at2(qd__orb_env *env, double x, double xd);
+/* o->general: the speed x' > 0 with h(x, x') = E where E - V_eff(x) = gap
+ * (formed by the caller without cancellation), after qd__orb_at(env, x);
+ * NaN when none is found. */
+double qd__orb_speed(qd__orb_env *env, double x, double gap);
 double qd__orb_slope(qd__orb_env *env, double x); /* V_eff'(x) */
 
 /* How a scan from x0 in direction dir (+1, -1) ended. */

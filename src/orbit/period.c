@@ -3,6 +3,8 @@
  *
  *     T_r = 2 int sqrt(M / (2 (E - V_eff))) dx,   Delta c = 2 int c'(x) sqrt(...) dx
  *
+ * (for a reduced L not quadratic in x', o->general: dx/x' with h(x, x') = E
+ * solved for x' at each abscissa, qd__orb_speed)
  * (an unbound orbit: Delta c from its turning point to infinity and back, by
  * exp-sinh) by tanh-sinh (num/quad.c), whose abscissas crowd double-exponentially at
  * the turning points, where the integrand has its inverse-square-root
@@ -56,6 +58,19 @@ static double integrand_fn(void *data, double x, double xc) {
     double w = gap(g, xc);
     if (!(w > 0))
         return NAN; /* at the turning point itself: the rule drops the abscissa */
+    if (g->env->o->general) {
+        /* dt = dx/x' with h(x, x') = E; the ignored rate is the mean of the
+         * way out and back (c'(x, x') and c'(x, -x')), which also drops a
+         * part linear in x' as the quadratic path's x' = 0 does */
+        double xd = qd__orb_speed(g->env, x, w);
+        if (!(xd > 0))
+            return NAN;
+        if (g->which < 0)
+            return 1 / xd;
+        double out = qd__orb_at2(g->env, x, xd)[QD__ORB_RATE2 + g->which];
+        double back = qd__orb_at2(g->env, x, -xd)[QD__ORB_RATE2 + g->which];
+        return (out + back) / (2 * xd);
+    }
     double dt = sqrt(o[QD__ORB_M] / (2 * w));
     if (g->which < 0)
         return dt;

@@ -494,7 +494,7 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
         classify(env, xs, r);
     if (r->kind != QD_ORBIT_CIRCULAR)
         asymptotic(env, xs, r);
-    if (r->kind == QD_ORBIT_BOUND && near_circle(env, r))
+    if (r->kind == QD_ORBIT_BOUND && !env->o->general && near_circle(env, r))
         ; /* the expansion about the circle is the more accurate */
     else if (r->kind != QD_ORBIT_CIRCULAR && r->kind != QD_ORBIT_ASYMPTOTIC)
         st = qd__orb_quadratures(ctx, env, r);
@@ -537,7 +537,9 @@ qd_status qd_orbit_solve(qd_ctx *ctx, const qd_orbit *o, size_t n, const qd_expr
                      qd_expr_name(o->x), x0);
         st = QD_ERR_ARG;
     } else {
-        env.E = r->energy = energy ? *energy : out[QD__ORB_V] + out[QD__ORB_M] * xd0 * xd0 / 2;
+        env.E = r->energy = energy             ? *energy
+                            : o->general ? qd__orb_at2(&env, x0, xd0)[QD__ORB_H]
+                                         : out[QD__ORB_V] + out[QD__ORB_M] * xd0 * xd0 / 2;
         env.scale = x0 != 0 ? fabs(x0) : 1;
         env.sing0 = singular_at_zero(&env);
         st = analyse(ctx, &env, x0, xd0, c0, energy != NULL, r);
