@@ -14,6 +14,7 @@ from ._core import Core, Error, ModelError, NumericalError, format_diag, name_of
 from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
                    QD_FMT_TEXT)
 from . import sim as _sim
+from . import runs as _runs
 from . import control as _control
 from . import commands as _commands
 
@@ -47,6 +48,12 @@ class _Printed:
     def json(self, at=None):
         """The equations as a dict (`qdot eom --format json`)."""
         return _json.loads(self._print("json", at))
+
+    def _repr_latex_(self):
+        """latex() for Jupyter: its align environment as a displayed aligned block."""
+        rows = [ln for ln in self.latex().splitlines() if not ln.lstrip().startswith("%")]
+        body = "\n".join(rows).replace("{align}", "{aligned}").replace("{align*}", "{aligned}")
+        return "$$%s$$" % body.strip()
 
 
 class Equations(_Printed):
@@ -476,7 +483,7 @@ class Model:
                               [conv(hh.dq[j]) for j in range(n)],
                               [conv(hh.dp[j]) for j in range(n)],
                               bool(hh.conserved), bool(hh.is_energy))
-            out.output = _commands.Output("hamiltonian", data, lambda: latex)
+            out.output = _commands.Output("hamiltonian", data, lambda: latex, core)
             return out
         finally:
             lib.qd_ham_point_free(pt)
@@ -1150,6 +1157,39 @@ class Model:
                              initial=initial or {}, events=list(events), stop_at=stop_at,
                              outputs=outputs, max_steps=max_steps, speeds=speeds,
                              inputs=inputs or {}, every=every, step=step)
+
+    def poincare(self, section, crossings, t_end=None, method=None, rtol=None, atol=None,
+                 dt=None, step=None, initial=None, max_steps=0, speeds=True):
+        """A Poincare surface of section (`qdot poincare FILE --section S
+        --crossings N`): a qdot.Result whose rows are the states at the
+        first `crossings` crossings of section ("q1 = 0, q1' > 0", an event
+        located to round-off), the columns of `qdot poincare`'s CSV.  The
+        run ends at the last one, or at t_end (1e6 by default) with a
+        warning when fewer were found.  The other arguments as simulate's."""
+        return _runs.poincare(self._for("poincare"), section, crossings, t_end, method, rtol,
+                              atol, dt, step, initial, max_steps, speeds)
+
+    def lyapunov(self, t_end, exponents=1, renorm=None, transient=None, method=None,
+                 rtol=None, atol=None, dt=None, initial=None, max_steps=0, speeds=True):
+        """The largest Lyapunov exponents of the motion from the initial
+        state (`qdot lyapunov --format json`, qd_lyap_run_stats and
+        qd_lyap_json): a qdot.Output with the JSON's keys (exponents,
+        errors, sum, ...).  exponents: how many (1 .. 2n); renorm: the time
+        between renormalizations (1); transient: the time run first (0);
+        method dop853 unless named, dt its fixed step, as --dt."""
+        return _runs.lyapunov(self._for("lyapunov"), t_end, exponents, renorm, transient,
+                              method, rtol, atol, dt, initial, max_steps, speeds)
+
+    def animate(self, t_end=None, draw=None, trace=None, spring=None, method=None, rtol=None,
+                atol=None, dt=None, step=None, initial=None, max_steps=0, speeds=True):
+        """The motion as `qdot animate -o FILE.html` plays it (qdot/scene.h):
+        a qdot.Animation, an Output of the scene's data (qd_scene_json: t,
+        pos, points, links, plane, ...) whose .html is the self-contained
+        page (qd_scene_html), shown inline in Jupyter; .save(path) writes
+        it.  t_end 10 by default; draw, trace, spring: names (or lists) as
+        --draw, --trace and --spring; the rest as simulate's."""
+        return _runs.animate(self._for("animate"), t_end, draw, trace, spring, method, rtol,
+                             atol, dt, step, initial, max_steps, speeds)
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a
