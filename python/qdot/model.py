@@ -1180,6 +1180,25 @@ class Model:
         return _runs.lyapunov(self._for("lyapunov"), t_end, exponents, renorm, transient,
                               method, rtol, atol, dt, initial, max_steps, speeds)
 
+    def sweep(self, t_end, measures, grid=None, random=None, runs=None, seed=1, section=None,
+              events=(), stop_at=None, threads=0, renorm=None, transient=None, method=None,
+              rtol=None, atol=None, dt=None, step=None, initial=None, max_steps=0,
+              speeds=True):
+        """Many runs of the model, a row each (`qdot sweep --format json`,
+        qdot/sweep.h): a qdot.Output with columns (the inputs, then the
+        measures' columns), rows (a numpy array, a row a run), status and
+        stop per run.  measures: "final, energy_error, event, escape:EXPR>V,
+        max:EXPR, min:EXPR, poincare-count, lyapunov, lyapunov-spectrum"
+        (docs/cli.md); grid "NAME=A:B:N, ..." or random "NAME=A:B, ..." with
+        runs and seed (NAME a coordinate, a velocity NAME' or a parameter);
+        section the condition poincare-count counts, events/stop_at the
+        events (the measure event reads the first); threads (0: one per
+        core), renorm and transient for the lyapunov measures; the rest as
+        simulate's.  Every run failing raises qdot.NumericalError."""
+        return _runs.sweep(self._for("sweep"), t_end, measures, grid, random, runs, seed,
+                           section, list(events), stop_at, threads, renorm, transient, method,
+                           rtol, atol, dt, step, initial, max_steps, speeds)
+
     def animate(self, t_end=None, draw=None, trace=None, spring=None, method=None, rtol=None,
                 atol=None, dt=None, step=None, initial=None, max_steps=0, speeds=True):
         """The motion as `qdot animate -o FILE.html` plays it (qdot/scene.h):

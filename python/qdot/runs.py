@@ -250,3 +250,80 @@ def _render(core, fn, view):
         lib.qd_buf_free(buf)
         raise MemoryError("qdot: out of memory")
     return buf_text(buf)
+
+
+def sweep(core, t_end, measures, grid, random, runs, seed, section, events, stop_at, threads,
+          renorm, transient, method, rtol, atol, dt, step, initial, max_steps, speeds):
+    """Model.sweep's work, the library calls of `qdot sweep`: the measures'
+    needs (qd_sweep_needs), the events, then the section after them, the
+    measures' outputs and crossings (qd_sweep_setup_measures), the runs
+    (qd_sweep_grid or qd_sweep_random) on the library's thread pool
+    (qd_sweep_result_run) and the rows as `--format json` writes them
+    (qd_sweep_json)."""
+    if not isinstance(measures, str):
+        raise TypeError("sweep: measures is text \"final, max:EXPR, ...\", not %s"
+                        % type(measures).__name__)
+    if (grid is None) == (random is None):
+        raise ValueError("sweep: give grid (\"NAME=A:B:N, ...\") or random (\"NAME=A:B, ...\")"
+                         " with runs")
+    if random is not None:
+        nrand = _count(runs, "sweep: runs (the number of random runs)", 1e12)
+    elif runs is not None:
+        raise ValueError("sweep: runs is for random")
+    flags = new("unsigned")
+    lib.qd_sweep_needs(ffi.NULL, measures.encode(), ffi.NULL, 0, flags)
+    nuser = len(events) + (stop_at is not None)
+    if not nuser and flags[0] & lib.QD_SWEEP_NEEDS_EVENT:
+        raise ValueError("sweep: the measure event needs events or stop_at (its first is the one)")
+    if section is None and flags[0] & lib.QD_SWEEP_NEEDS_SECTION:
+        raise ValueError("sweep: the measure poincare-count needs section")
+    setup = _Setup(core, speeds, initial)
+    for what, text, stop in ([("events", t, False) for t in events] +
+                             ([("stop_at", stop_at, True)] if stop_at is not None else []) +
+                             ([("section", section, False)] if section is not None else [])):
+        if lib.qd_sim_setup_event(setup.ptr, text.encode(), stop) != QD_OK:
+            raise _text_error(core, what, text)
+    if lib.qd_sweep_setup_measures(core.ctx, setup.ptr, measures.encode()) != QD_OK:
+        raise _text_error(core, "measures", measures)
+    opts = setup.options(t_end, method, rtol, atol, dt, step, max_steps)
+    s = setup.sim
+    core.check(lib.qd_sim_compile(s))
+    w = lib.qd_sweep_new(core.ctx, s, core.model)
+    if not w:
+        raise core.error()
+    ly = ffi.NULL
+    r = new("qd_sweep_result")
+    try:
+        for what, text, st in (
+                ("grid", grid, lambda: lib.qd_sweep_grid(w, grid.encode())),
+                ("random", random, lambda: lib.qd_sweep_random(w, random.encode(), nrand,
+                                                               int(seed))),
+                ("measures", measures, lambda: lib.qd_sweep_measures(w, measures.encode()))):
+            if text is not None and st() != QD_OK:
+                raise _text_error(core, what, text)
+        if section is not None:
+            core.check(lib.qd_sweep_set_section(w, nuser))
+        if flags[0] & lib.QD_SWEEP_NEEDS_LYAP:
+            e = lib.qd_sim_setup_eom(setup.ptr)
+            if not e:
+                raise ValueError("sweep: the lyapunov measures take a model in the multiplier "
+                                 "form (not given by H, not in speeds: speeds=False)")
+            ly = lib.qd_lyap_new(core.ctx, core.model, e)
+            lo = new("qd_lyap_opts", {"renorm": float(renorm or 0),
+                                      "transient": float(transient or 0)})
+            if not ly or lib.qd_sweep_set_lyap(w, ly, lo) != QD_OK:
+                raise core.error()
+        core.check(lib.qd_sweep_result_run(core.ctx, w, opts, int(threads), ffi.NULL, ffi.NULL,
+                                           r))
+        if r.nruns and r.failed == r.nruns:
+            why = ffi.new("char[]", lib.QD_SWEEP_OUTCOME_MAX)
+            raise NumericalError("sweep: every run failed (the first: %s)"
+                                 % cstr(lib.qd_sweep_outcome_str(r.outcome, why,
+                                                                 lib.QD_SWEEP_OUTCOME_MAX)))
+        return _commands.output(core, "sweep", lambda buf: lib.qd_sweep_json(
+            w, r.rows, r.outcome, buf))
+    finally:
+        lib.qd_sweep_result_free(r)
+        lib.qd_sweep_free(w)
+        if ly:
+            lib.qd_lyap_free(ly)

@@ -92,3 +92,34 @@ def test_animate_pendulum(tmp_path):
 def test_animate_unknown_point():
     with pytest.raises(qdot.Error, match="draw"):
         qdot.Model.load(os.path.join(EXAMPLES, "double_pendulum.qd")).animate(1, draw="p9")
+
+
+def test_sweep_grid_oscillator(tmp_path):
+    # x(t) = x0 cos(w t), w = sqrt(k/m), m = 2, from rest
+    path = model_file(tmp_path, OSCILLATOR)
+    m = qdot.Model.load(path)
+    out = m.sweep(1, "final, max:x", grid="x=0.5:1:2, k=1:4:2", rtol=1e-12)
+    assert out.columns == ["x", "k", "final_x", "final_x'", "max:x"]
+    assert out.rows.shape == (4, 5) and out.status == ["ok"] * 4
+    for x0, k, xf, vf, xmax in out.rows:
+        w = math.sqrt(k / 2)
+        assert xf == pytest.approx(x0 * math.cos(w), rel=1e-9)
+        assert vf == pytest.approx(-x0 * w * math.sin(w), rel=1e-9)
+        assert xmax == pytest.approx(x0)
+    same(out.json, cli("sweep", path, "--grid", "x=0.5:1:2, k=1:4:2", "--t-end", "1",
+                       "--measure", "final, max:x", "--rtol", "1e-12"))
+
+
+def test_sweep_section_and_lyapunov(tmp_path):
+    m = qdot.Model(OSCILLATOR)
+    # upward zeros of cos(w t) at w t = 3 pi/2 + 2 pi j before t = 20: w = sqrt(3/2)
+    w = math.sqrt(1.5)
+    expect = math.floor((w * 20 - 1.5 * math.pi) / (2 * math.pi)) + 1
+    out = m.sweep(20, "poincare-count", grid="x=1:2:2", section="x = 0, x' > 0")
+    assert list(out.rows[:, 1]) == [expect, expect]
+    with pytest.raises(ValueError, match="needs section"):
+        m.sweep(20, "poincare-count", grid="x=1:2:2")
+    inv = qdot.Model(INVERTED).sweep(100, "lyapunov", grid="x=1e-3:2e-3:2")
+    assert inv.rows[:, 1] == pytest.approx([1, 1], abs=0.02)
+    with pytest.raises(qdot.ModelError, match="grid"):
+        m.sweep(1, "final", grid="y=0:1:2")
