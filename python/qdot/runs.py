@@ -165,6 +165,12 @@ class Animation(_commands.Output):
         super().__init__("animate", data)
         self.__dict__["html"] = html
 
+    def __repr__(self):
+        t = self.json.get("t") or [0]
+        return "<qdot.Animation %s: %d frames, t = %g..%g, %d points, %s>" % (
+            self.json.get("model"), len(t), t[0], t[-1], len(self.json.get("points", [])),
+            self.json.get("method"))
+
     def _repr_html_(self):
         # the page in an iframe of its own: its script and style stay apart
         import html as _html
