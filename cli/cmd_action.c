@@ -108,7 +108,7 @@ static int run(cli_run *c) {
     const act_args *a = &((act_run *)c)->a;
     qd_ctx *ctx = c->ctx;
     cli_model_file *mf = &c->mf;
-    int rc = cli_load(ctx, c->file, a->sets.n, a->sets.items, false, mf);
+    int rc = cli_load(ctx, c->file, a->sets.n, a->sets.items, "action", mf);
     if (rc != QD_EXIT_OK)
         return rc;
     cli_state st = {0};

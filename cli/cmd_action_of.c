@@ -93,7 +93,7 @@ static int check(cli_run *c) {
 
 static int run(cli_run *c) {
     ao_run *r = (ao_run *)c;
-    int rc = cli_load_derive(c->ctx, c->file, r->sets.n, r->sets.items, false, NULL, &c->mf,
+    int rc = cli_load_derive(c->ctx, c->file, r->sets.n, r->sets.items, "action_of", NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_path(r);

@@ -60,7 +60,7 @@ static int run(cli_run *c) {
     const cli_model_file *mf = &c->mf;
     const br_args *a = &rr->a;
     qd_phase *ph = &rr->ph;
-    int rc = cli_load(ctx, rr->pos[0], 0, NULL, true, &c->mf);
+    int rc = cli_load(ctx, rr->pos[0], 0, NULL, "bracket", &c->mf);
     if (rc == QD_EXIT_OK && qd_phase_init(ctx, mf->model, ph) != QD_OK)
         rc = cli_diag_ctx(ctx);
     const qd_expr *F, *G = NULL, *r;

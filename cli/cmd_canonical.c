@@ -146,7 +146,7 @@ static int combination(cli_run *c) {
 
 static int run(cli_run *c) {
     can_run *r = (can_run *)c;
-    int rc = cli_load(c->ctx, r->pos[0], r->a.set.n, r->a.set.items, true, &c->mf);
+    int rc = cli_load(c->ctx, r->pos[0], r->a.set.n, r->a.set.items, "canonical", &c->mf);
     if (rc == QD_EXIT_OK && qd_phase_init(c->ctx, c->mf.model, &r->ph) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK)

@@ -80,7 +80,7 @@ static int generate_speeds(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c
 
 static int generate(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_eom **e, qd_buf *c,
                     qd_buf *h) {
-    int rc = cli_load(ctx, r->c.file, r->sets.n, r->sets.items, false, mf);
+    int rc = cli_load(ctx, r->c.file, r->sets.n, r->sets.items, "codegen", mf);
     if (rc != QD_EXIT_OK)
         return rc;
     if (qd_model_nspeeds(mf->model))

@@ -210,7 +210,7 @@ static int run(cli_run *c) {
     if (a->field)
         return cli_field_eom(c->ctx, &c->mf, c->file, a->sets.n, a->sets.items,
                              a->fmt == QD_RENDER_JSON);
-    int rc = cli_load(c->ctx, c->file, a->sets.n, a->sets.items, true, &c->mf);
+    int rc = cli_load(c->ctx, c->file, a->sets.n, a->sets.items, "eom", &c->mf);
     if (rc == QD_EXIT_OK)
         rc = qd_model_nspeeds(c->mf.model) ? run_speeds(r, a) : run_coords(r, a);
     return rc;

@@ -76,7 +76,7 @@ static int emit(ham_run *r) {
 
 static int run(cli_run *c) {
     ham_run *r = (ham_run *)c;
-    int rc = cli_load(c->ctx, c->file, r->sets.n, r->sets.items, true, &c->mf);
+    int rc = cli_load(c->ctx, c->file, r->sets.n, r->sets.items, "hamiltonian", &c->mf);
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(c->mf.model);
     /* a singular Hessian named as the Legendre transform sees it, before
      * Lagrange's equations fail on the same matrix */

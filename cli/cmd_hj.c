@@ -50,7 +50,7 @@ static int emit(hj_run *r) {
 
 static int run(cli_run *c) {
     hj_run *r = (hj_run *)c;
-    int rc = cli_load(c->ctx, c->file, r->a.set.n, r->a.set.items, true, &c->mf);
+    int rc = cli_load(c->ctx, c->file, r->a.set.n, r->a.set.items, "hj", &c->mf);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_hj_opts ho = {.energy_name = r->a.energy};

@@ -200,7 +200,7 @@ static int run(cli_run *c) {
     imp_run *r = (imp_run *)c;
     /* the closed forms stay in the parameters' names, as the other numeric
      * commands print them; --set gives the values */
-    int rc = cli_load(c->ctx, c->file, r->a.sets.n, r->a.sets.items, false, &c->mf);
+    int rc = cli_load(c->ctx, c->file, r->a.sets.n, r->a.sets.items, "impulse", &c->mf);
     if (rc == QD_EXIT_OK) {
         r->n = qd_model_ncoords(c->mf.model);
         rc = add_prescriptions(r, &r->a);

@@ -76,7 +76,7 @@ static int emit(int_run *r) {
 
 static int run(cli_run *c) {
     int_run *r = (int_run *)c;
-    int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, true, NULL, &c->mf,
+    int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, "integrals", NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
         rc = parse_given(r);

@@ -145,7 +145,7 @@ static int run(cli_run *c) {
     const lin_args *a = &r->a;
     qd_ctx *ctx = c->ctx;
     qd_eom_opts eo = {.eliminate = true};
-    int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, false, &eo, &c->mf, &r->e);
+    int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, "linearize", &eo, &c->mf, &r->e);
     if (rc == QD_EXIT_OK && (r->e->ncon || a->independent))
         return constrained(ctx, a, &c->mf, r->e);
     if (rc == QD_EXIT_OK && a->about)

@@ -42,7 +42,7 @@ static int run(cli_run *c) {
     const mt_args *a = &((mt_run *)c)->a;
     qd_ctx *ctx = c->ctx;
     cli_model_file *mf = &c->mf;
-    int rc = cli_load(ctx, c->file, a->set.n, a->set.items, true, mf);
+    int rc = cli_load(ctx, c->file, a->set.n, a->set.items, "metric", mf);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_metric *g = qd_metric_new(ctx, mf->model);

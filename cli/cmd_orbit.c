@@ -57,7 +57,7 @@ static int run(cli_run *c) {
     const orbit_args *a = &r->a;
     const qd_expr *ign[MAX_IGN];
     size_t nign = 0;
-    int rc = cli_load_derive(c->ctx, c->file, a->sets.n, a->sets.items, false, NULL, &c->mf,
+    int rc = cli_load_derive(c->ctx, c->file, a->sets.n, a->sets.items, "orbit", NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
         rc = cli_ignore_parse(c->ctx, c->mf.model, a->ignore, ign, MAX_IGN, &nign);

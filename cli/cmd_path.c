@@ -142,7 +142,7 @@ static int path_number(qd_ctx *ctx, const qd_model *m, const char *opt, const ch
 static int run(cli_run *c) {
     path_run *r = (path_run *)c;
     const path_args *a = &r->a;
-    int rc = cli_load_derive(c->ctx, c->file, a->set.n, a->set.items, false, NULL, &c->mf, &r->e);
+    int rc = cli_load_derive(c->ctx, c->file, a->set.n, a->set.items, "path", NULL, &c->mf, &r->e);
     qd_path_opts o = {0};
     double E = 0;
     r->energy = a->energy != NULL;

@@ -55,7 +55,7 @@ static int emit(routh_run *r) {
 
 static int run(cli_run *c) {
     routh_run *r = (routh_run *)c;
-    int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, true, NULL, &c->mf,
+    int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, "routh", NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
         rc = cli_ignore_parse(c->ctx, c->mf.model, r->a.ignore, r->ign, MAX_IGN, &r->nign);

@@ -53,7 +53,7 @@ static int run(cli_run *c) {
     const sc_args *a = &r->a;
     qd_ctx *ctx = c->ctx;
     const cli_model_file *mf = &c->mf;
-    int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, true, NULL, &c->mf, &r->e);
+    int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, "scatter", NULL, &c->mf, &r->e);
     if (rc != QD_EXIT_OK)
         return rc;
     qd_scatter_query q;

@@ -223,7 +223,7 @@ static int emit(stab_run *r, bool json) {
 
 static int run(cli_run *c) {
     stab_run *r = (stab_run *)c;
-    int rc = cli_load_derive(c->ctx, c->file, r->a.sets.n, r->a.sets.items, false, NULL, &c->mf,
+    int rc = cli_load_derive(c->ctx, c->file, r->a.sets.n, r->a.sets.items, "stability", NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
         rc = prepare(r, &r->a);

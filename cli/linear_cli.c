@@ -16,7 +16,7 @@
 
 int cli_lin_load_model(cli_lin_run *r, const char *file, const char *const *sets,
                        size_t nsets) {
-    return cli_load(r->c.ctx, file, nsets, sets, false, &r->c.mf);
+    return cli_load(r->c.ctx, file, nsets, sets, "modes", &r->c.mf);
 }
 
 int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size_t nsets) {

@@ -16,7 +16,7 @@
 typedef int (*file_loader)(qd_ctx *, const char *, const qd_model_opts *, cli_model_file *);
 
 static int load_with(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
-                     bool fix, cli_model_file *mf, file_loader load) {
+                     const char *derivation, cli_model_file *mf, file_loader load) {
     char names[QD_CLI_MAX_LIST][128];
     qd_param_value given[QD_CLI_MAX_LIST];
     *mf = (cli_model_file){0};
@@ -34,24 +34,27 @@ static int load_with(qd_ctx *ctx, const char *file, size_t nsets, const char *co
             }
         given[i].name = names[i];
     }
-    qd_model_opts opts = {.params = given, .nparams = nsets, .fix_params = fix};
+    qd_model_opts opts = {.params = given, .nparams = nsets};
+    if (qd_model_opts_for(&opts, derivation) != QD_OK) /* a command missing from the rule */
+        return cli_usage_error("internal: no parameter rule for '%s'", derivation);
     return load(ctx, file, &opts, mf);
 }
 
-int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets, bool fix,
-             cli_model_file *mf) {
-    return load_with(ctx, file, nsets, sets, fix, mf, cli_model_file_load_opts);
+int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
+             const char *derivation, cli_model_file *mf) {
+    return load_with(ctx, file, nsets, sets, derivation, mf, cli_model_file_load_opts);
 }
 
 int cli_load_field(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
                    cli_model_file *mf) {
-    return load_with(ctx, file, nsets, sets, true, mf, cli_field_file_load);
+    return load_with(ctx, file, nsets, sets, "field", mf, cli_field_file_load);
 }
 
 int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
-                    bool fix, const qd_eom_opts *opts, cli_model_file *mf, qd_eom **e) {
+                    const char *derivation, const qd_eom_opts *opts, cli_model_file *mf,
+                    qd_eom **e) {
     *e = NULL;
-    int rc = cli_load(ctx, file, nsets, sets, fix, mf);
+    int rc = cli_load(ctx, file, nsets, sets, derivation, mf);
     if (rc == QD_EXIT_OK && !(*e = qd_eom_derive_opts(ctx, mf->model, opts)))
         rc = cli_eom_derive_error(ctx, mf);
     return rc;

@@ -16,18 +16,18 @@
 #define QD_CLI_MAX_LIST 64
 
 /* FILE read and parsed with the --set list as parameter values (qd_model_opts:
- * parameters defined from a set one follow it); fix: the set parameters
- * are written into the expressions as numbers (the symbolic commands print
- * the equations with the values), else they stay symbols with the new
- * values (numeric commands, generated code). */
-int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets, bool fix,
-             cli_model_file *mf);
+ * parameters defined from a set one follow it), fixed into the formulas or
+ * kept symbols by the library's rule for the command named derivation
+ * (qd_model_opts_for). */
+int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
+             const char *derivation, cli_model_file *mf);
 
 /* What most commands start with: cli_load, then the equations derived
  * with opts (NULL: the defaults).  mf and *e belong to the caller, also on
  * error. */
 int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
-                    bool fix, const qd_eom_opts *opts, cli_model_file *mf, qd_eom **e);
+                    const char *derivation, const qd_eom_opts *opts, cli_model_file *mf,
+                    qd_eom **e);
 
 /* Print b on standard output, or, when building it failed, "cannot print
  * the WHAT"; b is freed. */

@@ -187,7 +187,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         cli_diag_error("out of memory");
         return QD_EXIT_FAIL;
     }
-    int rc = cli_load(c->ctx, a->file, a->sets.n, a->sets.items, false, &c->mf);
+    int rc = cli_load(c->ctx, a->file, a->sets.n, a->sets.items, "simulate", &c->mf);
     if (rc != QD_EXIT_OK)
         return rc;
     c->set = qd_sim_setup_new(c->ctx, c->mf.model, a->no_speeds);

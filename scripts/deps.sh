@@ -15,7 +15,9 @@ case $what in
   test|bench) pkgs="$pkgs libcmocka-dev python3 python3-sympy python3-scipy chromium"
               pkgs="$pkgs python3-numpy python3-cffi python3-pytest libopenmpi-dev openmpi-bin clang"
               # pip install . of the Python package, offline (tests/python/check_pip_install.py)
-              pkgs="$pkgs python3-pip python3-venv python3-setuptools python3-wheel" ;;
+              pkgs="$pkgs python3-pip python3-venv python3-setuptools python3-wheel"
+              # examples/tour.ipynb run by nbconvert (tests/python/check_notebook.py)
+              pkgs="$pkgs jupyter-nbconvert python3-nbconvert python3-ipykernel python3-matplotlib" ;;
 esac
 case $what in
   bench) pkgs="$pkgs g++ libginac-dev libgsl-dev" ;;

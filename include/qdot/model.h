@@ -71,6 +71,18 @@ typedef struct qd_model_opts {
 QD_API qd_model *qd_model_parse_opts(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
                                      qd_diag *diag);
 
+/* The rule of which derivations show the values of opts->params in their
+ * formulas (docs/design.md, "Parameters given from outside"), shared by the
+ * program and the Python package: derivation is a command's name; "eom",
+ * "hamiltonian", "routh", "integrals", "hj", "metric", "bracket",
+ * "canonical", "scatter" and "field" (formulas to read) set
+ * opts->fix_params; "simulate", "poincare", "sweep", "lyapunov", "animate",
+ * "modes", "equilibria", "stability", "linearize", "lqr", "zvc", "orbit",
+ * "path", "action", "action_of", "impulse", "check" and "codegen" (numbers,
+ * or code whose parameters stay adjustable) clear it.  QD_OK; QD_ERR_ARG,
+ * opts unchanged, for NULL or a name not in the rule. */
+QD_API qd_status qd_model_opts_for(qd_model_opts *opts, const char *derivation);
+
 /* Add one statement (a line of the language, without comments) to a parsed
  * model as if it ended the text: a `symmetry`, an `integral`, a constraint,
  * a definition ...; not `coordinates` or `momenta`, which would change the

@@ -19,12 +19,13 @@ from ._core import Error, ModelError, NumericalError
 from .commands import Output, Fields
 from .model import Model, Equations, Hamiltonian, Equilibrium, Equilibria, Mode, Modes
 from .sim import Result, Table, Rhs
+from .runs import Animation
 from .control import StateSpace, Lqr, lqr
 from .relativity import lorentz, proper_time, collide
 from .forms import QuadraticForm, quadratic_form
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "Output", "Fields",
            "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
-           "Mode", "Modes", "Result", "Table", "Rhs", "StateSpace", "Lqr", "lqr",
+           "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form"]
 from ._lib import VERSION as __version__

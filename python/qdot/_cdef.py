@@ -25,7 +25,7 @@ import sys
 
 _MARKER = re.compile(r'^# (\d+) "([^"]*)"')
 _INT_DEFINE = re.compile(r"^#define (QD_[A-Z0-9_]+) "
-                         r"(\(\(size_t\)-?\d+\)|-?\d+|\(\(size_t\)\d+ << \d+\))$")
+                         r"(\(\(size_t\)-?\d+\)|-?\d+u?|\(\(size_t\)\d+ << \d+\))$")
 _FLOAT_DEFINE = re.compile(r"^#define (QD_[A-Z0-9_]+) "
                            r"(-?(?:\d+\.\d*|\d*\.\d+|\d+)(?:[eE][-+]?\d+)?)$")
 
@@ -65,9 +65,9 @@ def _drop_inline(text):
 
 
 def _size_t_value(expr):
-    """The value of a define like 3600, ((size_t)-1) or ((size_t)64 << 20)."""
+    """The value of a define like 3600, 4u, ((size_t)-1) or ((size_t)64 << 20)."""
     if not expr.startswith("((size_t)"):
-        return int(expr)
+        return int(expr.rstrip("u"))  # 4u: an unsigned flag
     body = expr[len("((size_t)"):-1]
     if "<<" in body:
         a, b = body.split("<<")

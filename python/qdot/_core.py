@@ -103,7 +103,10 @@ def number_expr(ctx, what, value):
 class Core:
     """The context, model and (lazily) equations of one parse."""
 
-    def __init__(self, text, file, params):
+    def __init__(self, text, file, params, derivation="simulate"):
+        """text parsed with params [(name, value)] as parameter values, fixed
+        into the formulas or kept symbols as the library's rule says for the
+        command named derivation (qd_model_opts_for)."""
         self.ctx = self.model = self._eom = None
         self.ctx = lib.qd_ctx_new()
         if not self.ctx:
@@ -116,8 +119,9 @@ class Core:
         for i, (name, value) in enumerate(params):
             vals[i].name = names[i]
             vals[i].value = _number(self.ctx, name, value)
-        opts = new("qd_model_opts", {"params": vals, "nparams": len(params),
-                                     "fix_params": False})
+        opts = new("qd_model_opts", {"params": vals, "nparams": len(params)})
+        if lib.qd_model_opts_for(opts, derivation.encode()) != 0:
+            raise ValueError("no parameter rule for %r" % (derivation,))
         diag = new("qd_diag")
         self.model = lib.qd_model_parse_opts(self.ctx, self._ctext, opts, diag)
         if not self.model:

@@ -61,12 +61,13 @@ class Output:
     with attribute access), formulas as strings in the model language;
     out.json is the whole dict as JSON reads it; out.command the command's
     name.  In Jupyter, _repr_latex_ shows the library's LaTeX rendering
-    where the command has one."""
+    where the command has one; out.sympy(KEY) gives a field's formulas as
+    SymPy values."""
 
     __module__ = "qdot"
 
-    def __init__(self, command, data, latex=None):
-        self.__dict__.update(command=command, json=data, _latex=latex)
+    def __init__(self, command, data, latex=None, core=None):
+        self.__dict__.update(command=command, json=data, _latex=latex, _core=core)
 
     def __getattr__(self, name):
         data = self.__dict__.get("json")
@@ -103,6 +104,17 @@ class Output:
             return None
         return latex_display(self._latex())
 
+    def sympy(self, key):
+        """The field key with each formula in it a SymPy value (needs sympy):
+        each string read by the library against the model's names (qd_read)
+        and printed by its SymPy printer (QD_FMT_SYMPY), lists and objects
+        keeping their shape; a string that is not a formula (a reason, a
+        name the model does not know as an expression) stays a string, a
+        number stays a number."""
+        if self._core is None:
+            raise ValueError("%s: its fields are not formulas of a model" % self.command)
+        return _sympy_tree(self._core, self.json[key])
+
 
 def latex_display(text):
     """The rows of a library LaTeX rendering (rows ending in \\\\, % comment
@@ -125,7 +137,40 @@ def rendered(core, call):
 
 def output(core, command, call, latex=None):
     """An Output of the JSON call(buf) writes (see rendered)."""
-    return Output(command, _json.loads(rendered(core, call)), latex)
+    return Output(command, _json.loads(rendered(core, call)), latex, core)
+
+
+def _sympy_tree(core, x):
+    if isinstance(x, dict):
+        return {k: _sympy_tree(core, v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_sympy_tree(core, v) for v in x]
+    if isinstance(x, str):
+        return sympy_of(core, x)
+    return x
+
+
+def sympy_of(core, text):
+    """The formula text (the model language) as SymPy: read by qd_read,
+    printed by QD_FMT_SYMPY and evaluated in a namespace of the model's
+    coordinates (functions of t), parameters and the formula's other
+    symbols (momenta p_x, ...); text that does not read stays text."""
+    from ._core import ModelError, name_of
+    from .model import _sympy_namespace
+    try:
+        x = core.read(text, "formula")
+    except ModelError:
+        return text
+    k = lib.qd_free_symbols(core.ctx, x, ffi.NULL, 0)
+    syms = ffi.new("const qd_expr *[]", max(k, 1))
+    lib.qd_free_symbols(core.ctx, x, syms, k)
+    ns = _sympy_namespace(core, [syms[i] for i in range(k)
+                                 if lib.qd_symbol_role(syms[i]) == lib.QD_ROLE_PLAIN])
+    from ._lib import QD_FMT_SYMPY
+    try:
+        return eval(core.text_of(x, QD_FMT_SYMPY), ns)  # noqa: S307 (the library printer's text)
+    except (NameError, SyntaxError, TypeError):
+        return text
 
 
 def source(core):

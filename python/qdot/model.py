@@ -14,6 +14,7 @@ from ._core import Core, Error, ModelError, NumericalError, format_diag, name_of
 from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
                    QD_FMT_TEXT)
 from . import sim as _sim
+from . import runs as _runs
 from . import control as _control
 from . import commands as _commands
 
@@ -47,6 +48,12 @@ class _Printed:
     def json(self, at=None):
         """The equations as a dict (`qdot eom --format json`)."""
         return _json.loads(self._print("json", at))
+
+    def _repr_latex_(self):
+        """latex() for Jupyter: its align environment as a displayed aligned block."""
+        rows = [ln for ln in self.latex().splitlines() if not ln.lstrip().startswith("%")]
+        body = "\n".join(rows).replace("{align}", "{aligned}").replace("{align*}", "{aligned}")
+        return "$$%s$$" % body.strip()
 
 
 class Equations(_Printed):
@@ -291,6 +298,7 @@ class Model:
                              % (file, line, col, at))
         self._sets = {}
         self._core = Core(text, file, [])
+        self._fixed = None  # the parse with the set() values fixed in, made when needed
 
     @classmethod
     def load(cls, path):
@@ -304,8 +312,24 @@ class Model:
         the initial values follow.  Returns the model itself."""
         sets = dict(self._sets, **params)
         core = Core(self._core.text, self._core.file, list(sets.items()))
-        self._core, self._sets = core, sets
+        self._core, self._sets, self._fixed = core, sets, None
         return self
+
+    def _for(self, derivation):
+        """The parse the command named derivation reads: by the library's
+        rule (qd_model_opts_for, as the command line's --set) the values
+        given by set() are written into its formulas as numbers
+        (hamiltonian, eom, ...), or stay symbols holding them (simulate,
+        modes, ...: self._core)."""
+        opts = new("qd_model_opts")
+        if lib.qd_model_opts_for(opts, derivation.encode()) != 0:
+            raise ValueError("no parameter rule for %r" % (derivation,))
+        if not opts.fix_params or not self._sets:
+            return self._core
+        if self._fixed is None:
+            self._fixed = Core(self._core.text, self._core.file, list(self._sets.items()),
+                               derivation)
+        return self._fixed
 
     @property
     def coordinates(self):
@@ -328,7 +352,7 @@ class Model:
     def eom(self, sympy=False):
         """Lagrange's equations M q'' = f (an Equations); sympy=True gives
         SymPy matrices instead of strings (needs sympy)."""
-        core = self._core
+        core = self._for("eom")
         e = core.eom()
         n = e.n
         lams = [getattr(e.con[k], "lambda") for k in range(e.ncon)]
@@ -348,7 +372,7 @@ class Model:
         `speeds` statement; `qdot eom` on it): a SpeedsEquations, derived by
         method "kane", "appell" or "hamel"; appell: also the Gibbs-Appell
         function S; multipliers: also the constraints' multipliers."""
-        core = self._core
+        core = self._for("eom")
         k = new("qd_speeds_method")
         if not isinstance(method, str) or not lib.qd_speeds_method_from_name(method.encode(), k):
             raise Error("speeds_eom: method is kane, appell or hamel, not %r" % (method,))
@@ -384,7 +408,7 @@ class Model:
         qdot.Output; force: "G1, G2, ..." the covariant components of a
         force, as --force (default: the model's Q)."""
         import types
-        core = self._core
+        core = self._for("metric")
         g = lib.qd_metric_new(core.ctx, core.model)
         if not g:
             raise core.error(cls=ModelError)
@@ -434,7 +458,7 @@ class Model:
         (coordinates, momenta named as printed, p_x, t; the others at the
         model's initial values), as --at: H, dq_dt and dp_dt of the JSON are
         then numbers there (qd_ham_point_eval), and "at" the point."""
-        core = self._core
+        core = self._for("hamiltonian")
         given = lib.qd_model_hamiltonian_given(core.model)
         h = lib.qd_ham_derive(core.ctx, core.model, ffi.NULL if given else core.eom_ptr())
         if not h:
@@ -459,17 +483,17 @@ class Model:
                               [conv(hh.dq[j]) for j in range(n)],
                               [conv(hh.dp[j]) for j in range(n)],
                               bool(hh.conserved), bool(hh.is_energy))
-            out.output = _commands.Output("hamiltonian", data, lambda: latex)
+            out.output = _commands.Output("hamiltonian", data, lambda: latex, core)
             return out
         finally:
             lib.qd_ham_point_free(pt)
             lib.qd_ham_free(h)
 
-    def _lookup(self, names, what):
+    def _lookup(self, names, what, core=None):
         """The coordinate symbols of names (a list, or "a,b" text), each
         looked up by the library (qd_routh_lookup); ValueError with its
         message ("did you mean") for one that is not a coordinate."""
-        core = self._core
+        core = core or self._core
         if isinstance(names, str):
             names = [x.strip() for x in names.split(",")]
         if not names or not all(isinstance(x, str) and x for x in names):
@@ -483,11 +507,11 @@ class Model:
             syms.append(q)
         return syms
 
-    def _ignored(self, ignore, what):
+    def _ignored(self, ignore, what, core=None):
         """The coordinate symbols of ignore (see _lookup), each checked
         cyclic (qd_routh_not_cyclic); ValueError with the library's reason."""
-        core = self._core
-        syms = self._lookup(ignore, what)
+        core = core or self._core
+        syms = self._lookup(ignore, what, core)
         e = core.eom()
         why = ffi.new("const char **")
         for q in syms:
@@ -504,8 +528,8 @@ class Model:
         jacobi_integral, equations, gyroscopic, quadratures, conserved (and
         the forced and implicit keys where they apply).  ignore: a name, "a,b"
         or a list of names."""
-        core = self._core
-        ign = self._ignored(ignore, "routh")
+        core = self._for("routh")
+        ign = self._ignored(ignore, "routh", core)
         opts = new("qd_routh_opts", {"implicit": True, "forced": True})  # as `qdot routh`
         r = lib.qd_routh_derive_opts(core.ctx, core.model, core.eom_ptr(), len(ign),
                                      exprs(ign), opts)
@@ -571,10 +595,10 @@ class Model:
         finally:
             lib.qd_action_free(act)
 
-    def _phase_read(self, ph, text, what):
+    def _phase_read(self, ph, text, what, core=None):
         """text read as a function on phase space (qd_phase_read); a
         ModelError shown in the text when it does not read."""
-        core = self._core
+        core = core or self._core
         if not isinstance(text, str):
             raise TypeError("%s is an expression (text), not %s" % (what, type(text).__name__))
         diag = new("qd_diag")
@@ -590,14 +614,14 @@ class Model:
         dF/dt along the motion (`qdot bracket --dt F`): a qdot.Output with
         the keys of `qdot bracket --format json` (qd_phase_bracket_print);
         LaTeX in Jupyter."""
-        core = self._core
+        core = self._for("bracket")
         if bool(dt) == (G is not None):
             raise ValueError("bracket: give F and G, or F with dt=True")
         ph = new("qd_phase")
         try:
             core.check(lib.qd_phase_init(core.ctx, core.model, ph))
-            f = self._phase_read(ph, F, "F")
-            g = ffi.NULL if dt else self._phase_read(ph, G, "G")
+            f = self._phase_read(ph, F, "F", core)
+            g = ffi.NULL if dt else self._phase_read(ph, G, "G", core)
             r = lib.qd_phase_dt(core.ctx, ph, f) if dt else lib.qd_bracket(
                 core.ctx, ph.n, ph.q, ph.p, f, g)
             if not r:
@@ -618,7 +642,7 @@ class Model:
         expression in q, p_q, t per coordinate) or a list of them;
         lagrange, K as --lagrange and --K.  A qdot.Output with the keys of
         `qdot canonical --format json`; a "no" is an answer, not an error."""
-        core = self._core
+        core = self._for("canonical")
         if (generator is None) == (Q is None and P is None) or (generator is None) != (
                 F is None) or (generator is None and (Q is None or P is None)):
             raise ValueError("canonical: give Q and P, or generator (\"F1\".. \"F4\") and F")
@@ -628,14 +652,14 @@ class Model:
         try:
             core.check(lib.qd_phase_init(core.ctx, core.model, ph))
             if generator is not None:
-                return self._generate(ph, generator, F)
-            return self._examine(ph, Q, P, lagrange, K)
+                return self._generate(ph, generator, F, core)
+            return self._examine(ph, Q, P, lagrange, K, core)
         finally:
             lib.qd_phase_free(ph)
 
-    def _phase_list(self, ph, text, what):
+    def _phase_list(self, ph, text, what, core=None):
         """"E1, E2, ..." (or a list) read as ph.n functions on phase space."""
-        core = self._core
+        core = core or self._core
         if isinstance(text, (list, tuple)):
             text = ", ".join(text)
         if not isinstance(text, str):
@@ -648,9 +672,9 @@ class Model:
             raise ModelError(format_diag(diag, what, text.encode()), diag, what)
         return out
 
-    def _examine(self, ph, Q, P, lagrange, K):
-        core = self._core
-        q, p = self._phase_list(ph, Q, "Q"), self._phase_list(ph, P, "P")
+    def _examine(self, ph, Q, P, lagrange, K, core=None):
+        core = core or self._core
+        q, p = self._phase_list(ph, Q, "Q", core), self._phase_list(ph, P, "P", core)
         rep = new("qd_canon_report")
         try:
             st = lib.qd_canonical_examine(core.ctx, ph, q, p, bool(lagrange), bool(K), rep)
@@ -661,14 +685,14 @@ class Model:
         finally:
             lib.qd_canon_report_free(rep)
 
-    def _generate(self, ph, generator, F):
-        core = self._core
+    def _generate(self, ph, generator, F, core=None):
+        core = core or self._core
         types_ = {"F1": lib.QD_GEN_F1, "F2": lib.QD_GEN_F2, "F3": lib.QD_GEN_F3,
                   "F4": lib.QD_GEN_F4}
         if generator not in types_:
             raise ValueError("canonical: generator is F1, F2, F3 or F4, not %r" % (generator,))
         core.check(lib.qd_phase_new_vars(core.ctx, ph))
-        f = self._phase_read(ph, F, "generator")
+        f = self._phase_read(ph, F, "generator", core)
         core.check(lib.qd_phase_ham(core.ctx, ph, True))
         g = new("qd_gen_result")
         kind = types_[generator]
@@ -831,7 +855,7 @@ class Model:
         lab_theta (with masses "m1,m2" or (m1, m2)); core: a hard core's
         radius; ignore: the cyclic angle when two are cyclic.  Values are
         numbers or expressions in the parameters, as the options take them."""
-        cr = self._core
+        cr = self._for("scatter")
         if isinstance(masses, (list, tuple)):
             masses = ",".join(repr(float(x)) for x in masses)
         vals = {"energy": energy, "b": b, "theta": theta, "lab_theta": lab_theta,
@@ -902,7 +926,7 @@ class Model:
         energy_balance, found, tested, noether (of the model's `symmetry`
         statements), proposed (its `integral` statements).  search=False is
         --no-search."""
-        core = self._core
+        core = self._for("integrals")
         o = new("qd_integrals_opts", {"search": bool(search)})
         I = lib.qd_integrals_derive(core.ctx, core.model, core.eom_ptr(), o)  # noqa: E741
         if not I:
@@ -923,7 +947,7 @@ class Model:
         separation (per coordinate), W, constants, energy_constant.
         solve=True is --solve (the motion where the quadratures close);
         energy names the energy constant (default E)."""
-        core = self._core
+        core = self._for("hj")
         name = ffi.new("char[]", energy.encode()) if energy else ffi.NULL
         h = lib.qd_hj_derive(core.ctx, core.model, new("qd_hj_opts", {"energy_name": name}))
         if not h:
@@ -1133,6 +1157,58 @@ class Model:
                              initial=initial or {}, events=list(events), stop_at=stop_at,
                              outputs=outputs, max_steps=max_steps, speeds=speeds,
                              inputs=inputs or {}, every=every, step=step)
+
+    def poincare(self, section, crossings, t_end=None, method=None, rtol=None, atol=None,
+                 dt=None, step=None, initial=None, max_steps=0, speeds=True):
+        """A Poincare surface of section (`qdot poincare FILE --section S
+        --crossings N`): a qdot.Result whose rows are the states at the
+        first `crossings` crossings of section ("q1 = 0, q1' > 0", an event
+        located to round-off), the columns of `qdot poincare`'s CSV.  The
+        run ends at the last one, or at t_end (1e6 by default) with a
+        warning when fewer were found.  The other arguments as simulate's."""
+        return _runs.poincare(self._for("poincare"), section, crossings, t_end, method, rtol,
+                              atol, dt, step, initial, max_steps, speeds)
+
+    def lyapunov(self, t_end, exponents=1, renorm=None, transient=None, method=None,
+                 rtol=None, atol=None, dt=None, initial=None, max_steps=0, speeds=True):
+        """The largest Lyapunov exponents of the motion from the initial
+        state (`qdot lyapunov --format json`, qd_lyap_run_stats and
+        qd_lyap_json): a qdot.Output with the JSON's keys (exponents,
+        errors, sum, ...).  exponents: how many (1 .. 2n); renorm: the time
+        between renormalizations (1); transient: the time run first (0);
+        method dop853 unless named, dt its fixed step, as --dt."""
+        return _runs.lyapunov(self._for("lyapunov"), t_end, exponents, renorm, transient,
+                              method, rtol, atol, dt, initial, max_steps, speeds)
+
+    def sweep(self, t_end, measures, grid=None, random=None, runs=None, seed=1, section=None,
+              events=(), stop_at=None, threads=0, renorm=None, transient=None, method=None,
+              rtol=None, atol=None, dt=None, step=None, initial=None, max_steps=0,
+              speeds=True):
+        """Many runs of the model, a row each (`qdot sweep --format json`,
+        qdot/sweep.h): a qdot.Output with columns (the inputs, then the
+        measures' columns), rows (a numpy array, a row a run), status and
+        stop per run.  measures: "final, energy_error, event, escape:EXPR>V,
+        max:EXPR, min:EXPR, poincare-count, lyapunov, lyapunov-spectrum"
+        (docs/cli.md); grid "NAME=A:B:N, ..." or random "NAME=A:B, ..." with
+        runs and seed (NAME a coordinate, a velocity NAME' or a parameter);
+        section the condition poincare-count counts, events/stop_at the
+        events (the measure event reads the first); threads (0: one per
+        core), renorm and transient for the lyapunov measures; the rest as
+        simulate's.  Every run failing raises qdot.NumericalError."""
+        return _runs.sweep(self._for("sweep"), t_end, measures, grid, random, runs, seed,
+                           section, list(events), stop_at, threads, renorm, transient, method,
+                           rtol, atol, dt, step, initial, max_steps, speeds)
+
+    def animate(self, t_end=None, draw=None, trace=None, spring=None, method=None, rtol=None,
+                atol=None, dt=None, step=None, initial=None, max_steps=0, speeds=True):
+        """The motion as `qdot animate -o FILE.html` plays it (qdot/scene.h):
+        a qdot.Animation, an Output of the scene's data (qd_scene_json: t,
+        pos, points, links, plane, ...) whose .html is the self-contained
+        page (qd_scene_html), shown inline in Jupyter; .save(path) writes
+        it.  t_end 10 by default; draw, trace, spring: names (or lists) as
+        --draw, --trace and --spring; the rest as simulate's."""
+        return _runs.animate(self._for("animate"), t_end, draw, trace, spring, method, rtol,
+                             atol, dt, step, initial, max_steps, speeds)
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a

@@ -2455,6 +2455,13 @@ static void null_model(void **state)
     /* text NULL */
     assert_null(qd_model_parse_opts(F.ctx, NULL, NULL, (qd_diag *)(void *)F.blob));
     reset(&F);
+    /* ---- qd_model_opts_for */
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_opts_for(NULL, "q"));
+    reset(&F);
+    /* derivation NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_opts_for(NULL, NULL));
+    reset(&F);
     /* ---- qd_model_add_statement */
     /* m NULL */
     assert_int_equal(QD_ERR_ARG, qd_model_add_statement(NULL, "q", (qd_diag *)(void *)F.blob));

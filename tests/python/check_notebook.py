@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""tests/python/check_notebook.py - examples/tour.ipynb, executed as a user
+would run it (`jupyter nbconvert --to notebook --execute`, Debian's
+jupyter-nbconvert and python3-ipykernel), with the package of this tree and
+the library of the build (--build); then its outputs read back and checked
+against the physics, computed here:
+
+  - the double pendulum's modes, w^2 = (g/l)(2 -+ sqrt 2) (Goldstein ch. 6);
+  - the pendulum's H with l set to 2, p^2/(2 m l^2) - m g l cos(theta), the
+    value fixed in (qd_model_opts_for), compared by SymPy;
+  - the chaotic run: the energy conserved, the Lyapunov exponent positive
+    beyond twice its error estimate;
+  - the equations shown as LaTeX, the plot as a PNG (with matplotlib), the
+    animation as inline HTML.
+
+Skips (77) when nbconvert or the kernel is missing.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+NOTEBOOK = os.path.join(ROOT, "examples", "tour.ipynb")
+
+
+def skip(why):
+    print("SKIP: %s" % why)
+    sys.exit(77)
+
+
+def outputs(nb):
+    """Per code cell, the list of its outputs."""
+    return [c.get("outputs", []) for c in nb["cells"] if c["cell_type"] == "code"]
+
+
+def text_of(outs):
+    return "".join("".join(o.get("text", "")) for o in outs if o["output_type"] == "stream")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", required=True)
+    args = ap.parse_args()
+    jupyter = shutil.which("jupyter")
+    if not jupyter or subprocess.run([jupyter, "nbconvert", "--version"],
+                                     capture_output=True).returncode != 0:
+        skip("jupyter nbconvert is not installed (Debian's jupyter-nbconvert)")
+    if not os.path.exists("/usr/share/jupyter/kernels/python3/kernel.json"):
+        skip("no python3 kernel (Debian's python3-ipykernel)")
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "python"), QDOT_LIB=args.build,
+               PYDEVD_DISABLE_FILE_VALIDATION="1", MPLBACKEND="module://matplotlib_inline"
+               ".backend_inline")
+    with tempfile.TemporaryDirectory() as out:
+        run = subprocess.run([jupyter, "nbconvert", "--to", "notebook", "--execute",
+                              "--ExecutePreprocessor.timeout=600", NOTEBOOK, "--output-dir", out],
+                             env=env, capture_output=True, text=True)
+        if run.returncode != 0:
+            print(run.stderr)
+            return 1
+        with open(os.path.join(out, "tour.ipynb")) as fh:
+            nb = json.load(fh)
+    cells = outputs(nb)
+    errors = [o for outs in cells for o in outs if o["output_type"] == "error"]
+    assert not errors, errors
+
+    # the equations, as LaTeX
+    eom = cells[0][0]["data"]
+    assert "\\ddot{\\theta}" in "".join(eom["text/latex"]), eom
+
+    # H with l = 2 fixed in: p^2/(8 m) - 2 m g cos(theta)
+    import sympy
+    H_text = text_of(cells[2]).splitlines()[0]
+    th, p, m, g = sympy.symbols("theta p_theta m g")
+    H = sympy.sympify(H_text.replace("^", "**"), locals={"theta": th, "p_theta": p, "m": m,
+                                                          "g": g})
+    assert sympy.simplify(H - (p**2 / (2 * m * 4) - m * g * 2 * sympy.cos(th))) == 0, H_text
+    assert "text/latex" in cells[1][0]["data"]
+
+    # the modes
+    text = text_of(cells[3])
+    omega2 = [float(x) for x in re.search(r"omega\^2 = \[([^\]]*)\]", text).group(1).split(",")]
+    want = [9.81 * (2 - math.sqrt(2)), 9.81 * (2 + math.sqrt(2))]
+    assert all(abs(a - b) <= 1e-9 * b for a, b in zip(omega2, want)), (omega2, want)
+    ratio = float(re.search(r"theta2/theta1 = (\S+)", text).group(1))
+    assert abs(ratio - math.sqrt(2)) < 1e-9, ratio
+
+    # the chaotic run
+    text = text_of(cells[4])
+    err = float(re.search(r"energy error over the run: (\S+)", text).group(1))
+    lam, lam_err = map(float, re.search(r"exponent: (\S+) \+- (\S+)", text).groups())
+    assert err < 1e-8, err
+    assert lam > 2 * lam_err > 0, (lam, lam_err)
+
+    # the plot (with matplotlib) and the animation
+    plot = cells[5]
+    try:
+        import matplotlib  # noqa: F401
+        assert any("image/png" in o.get("data", {}) for o in plot), plot
+    except ImportError:
+        assert "matplotlib is not installed" in text_of(plot)
+    assert "<iframe srcdoc=" in "".join(cells[6][0]["data"]["text/html"])
+    print("ok: omega^2 = %s, lambda = %.3g +- %.2g, energy error %.2g" % (omega2, lam, lam_err,
+                                                                         err))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
