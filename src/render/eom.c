@@ -600,16 +600,11 @@ static qd_status write_c(const qd__eom_view *v, qd_buf *b) {
     return qd__render_c_block(v->ctx, b, sizeof out / sizeof *out, out);
 }
 
-static qd_status render(const qd__eom_view *v, qd_render_format fmt, qd_buf *out) {
-    switch (fmt) {
-    case QD_RENDER_LATEX: return write_latex(v, out);
-    case QD_RENDER_JSON: return write_json(v, out);
-    case QD_RENDER_SYMPY: return write_sympy(v, out);
-    case QD_RENDER_C: return write_c(v, out);
-    case QD_RENDER_TEXT: break;
-    }
-    return write_text(v, out);
-}
+/* The writer of each format. */
+static qd_status (*const writers[])(const qd__eom_view *, qd_buf *) = {
+    [QD_RENDER_TEXT] = write_text,   [QD_RENDER_LATEX] = write_latex,
+    [QD_RENDER_JSON] = write_json,   [QD_RENDER_SYMPY] = write_sympy,
+    [QD_RENDER_C] = write_c};
 
 qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                         const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
@@ -624,11 +619,7 @@ qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
     v.split = e->T2 && e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0));
     qd_status st = o && o->nstate ? qd__render_eom_numbers(&v, o) : QD_OK;
     if (st == QD_OK)
-        st = render(&v, fmt, out);
-    if (st == QD_OK && out->failed) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
-        st = QD_ERR_NOMEM;
-    }
+        st = qd__render_done(ctx, out, writers[fmt](&v, out));
     qd__render_eom_view_free(&v);
     return st;
 }

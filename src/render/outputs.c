@@ -79,3 +79,11 @@ qd_status qd__render_sympy_functions(qd_ctx *ctx, qd_buf *b, size_t nparts,
     qd__free(all);
     return st;
 }
+
+qd_status qd__render_done(qd_ctx *ctx, const qd_buf *out, qd_status st) {
+    if (st == QD_OK && out->failed) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
+        st = QD_ERR_NOMEM;
+    }
+    return st;
+}

@@ -64,6 +64,10 @@ void qd__render_state_free(qd_render_opts *full);
 /* The value of sym in a state (o->syms, o->vals); NaN when it is absent. */
 double qd__render_value(const qd_render_opts *o, const qd_expr *sym);
 
+/* st, or QD_ERR_NOMEM (recorded) when out ran out while printing the
+ * equations. */
+qd_status qd__render_done(qd_ctx *ctx, const qd_buf *out, qd_status st);
+
 /* The status after a JSON rendering into b: QD_ERR_NOMEM when b ran out,
  * QD_ERR_NUMERIC for a number JSON cannot hold. */
 qd_status qd__render_json_status(const struct qd_json *j, const qd_buf *b, qd_status st);

@@ -521,16 +521,11 @@ static qd_status numbers(const view *v, const qd_render_opts *o, double *num) {
     return st;
 }
 
-static qd_status render(const view *v, qd_render_format fmt, qd_buf *out) {
-    switch (fmt) {
-    case QD_RENDER_LATEX: return write_latex(v, out);
-    case QD_RENDER_JSON: return write_json(v, out);
-    case QD_RENDER_SYMPY: return write_sympy(v, out);
-    case QD_RENDER_C: return write_c(v, out);
-    case QD_RENDER_TEXT: break;
-    }
-    return write_text(v, out);
-}
+/* The writer of each format. */
+static qd_status (*const writers[])(const view *, qd_buf *) = {
+    [QD_RENDER_TEXT] = write_text,   [QD_RENDER_LATEX] = write_latex,
+    [QD_RENDER_JSON] = write_json,   [QD_RENDER_SYMPY] = write_sympy,
+    [QD_RENDER_C] = write_c};
 
 qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
                            const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
@@ -555,11 +550,7 @@ qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *
         v.lambda = e->mult ? num + e->n + e->m : NULL;
     }
     if (st == QD_OK)
-        st = render(&v, fmt, out);
-    if (st == QD_OK && out->failed) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
-        st = QD_ERR_NOMEM;
-    }
+        st = qd__render_done(ctx, out, writers[fmt](&v, out));
     qd__free(num);
     qd__render_state_free(&full);
     return st;
