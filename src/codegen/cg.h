@@ -52,6 +52,11 @@ typedef struct cg_form {
  * qd__cg_block. */
 qd_status qd__cg_system(const cg_form *f);
 
+/* QD_OK when no entry of M[0..nM) involves syms[0..n); else QD_ERR_ARG
+ * recorded: "the mass matrix depends on the WHAT NAME" (rhs factors M before
+ * it reads them, and NAME_mass has no argument for them). */
+qd_status qd__cg_mass_free_of(qd_ctx *ctx, size_t nM, const qd_expr *const *M, size_t n,
+                              const qd_expr *const *syms, const char *what);
 /* The .c file's first lines: its name, <math.h> and "P.h". */
 void qd__cg_preamble(qd_buf *c, const char *P);
 

@@ -101,14 +101,8 @@ static qd_status build(gen *g) {
     qd__free(terms);
     if (qd_ctx_status(ctx) != QD_OK)
         return qd_ctx_status(ctx);
-    for (size_t i = 0; i < n * n; i++)
-        for (size_t j = 0; j < n; j++)
-            if (qd_has(g->M[i], e->qd[j])) {
-                qd_ctx_error(ctx, QD_ERR_ARG,
-                             "cannot generate C: the mass matrix depends on the velocity %s'",
-                             qd_expr_name(e->q[j]));
-                return QD_ERR_ARG;
-            }
+    if (qd__cg_mass_free_of(ctx, n * n, e->M, n, e->qd, "velocity") != QD_OK)
+        return QD_ERR_ARG;
     bool applied;
     qd_status st = qd__cg_angle_sums(ctx, g->nall, g->all, &applied);
     g->h = g->b[nc];
