@@ -156,6 +156,8 @@ static qd_status fn_jacobian(const cg_form *f) {
     qd__cg_unused(c, "    (void)qd_y;\n");
     src s = {.q = "qd_y", .v = "qd_y", .voff = n};
     qd_status st = QD_OK;
+    /* the rows of q': d kin/dy before K, the identity after it (the order
+       each kind of file has always been written in) */
     if (f->kin) {
         qd_buf_printf(c, zero, d * d);
         qd_buf_puts(c, "    {\n");
@@ -168,8 +170,8 @@ static qd_status fn_jacobian(const cg_form *f) {
     qd_buf_puts(c, "    }\n");
     if (!f->kin) {
         qd_buf_printf(c, zero, d * d);
-        qd_buf_printf(c, "    for (int i = 0; i < %zu; i++)\n        qd_J[i * %zu + %zu + i] = 1.0;\n",
-                      n, d, n);
+        qd_buf_printf(c, "    for (int i = 0; i < %zu; i++)\n"
+                         "        qd_J[i * %zu + %zu + i] = 1.0;\n", n, d, n);
     }
     qd_buf_printf(c,
                   "    if (qd_factor(qd_K, &qd_fa)) {\n"
