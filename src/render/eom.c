@@ -327,10 +327,7 @@ static qd_status json_entry(const qd__eom_view *v, qd_json *j, const qd_expr *x,
         qd_json_number(j, qd_number_value(x));
         return QD_OK;
     }
-    qd_buf_clear(tmp);
-    qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
-    return st;
+    return qd__render_json_expr(v->ctx, j, x, tmp);
 }
 
 static qd_status json_vector(const qd__eom_view *v, qd_json *j, const char *key,
@@ -348,11 +345,7 @@ static qd_status json_vector(const qd__eom_view *v, qd_json *j, const char *key,
 static void json_header(const qd__eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_json_key(j, "model");
     qd_json_string(j, v->source);
-    qd_json_key(j, "coordinates");
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < v->e->n; i++)
-        qd_json_string(j, qname(v, i));
-    qd_json_end_array(j);
+    qd__render_json_names(j, "coordinates", v->e->q, v->e->n);
     qd__render_json_params(j, v->m);
     if (!v->at)
         return;
@@ -375,14 +368,10 @@ static qd_status json_constraint(const qd__eom_view *v, qd_json *j, size_t k, qd
     qd_json_key(j, "kind");
     qd_json_string(j, qd_con_kind_name(c->kind));
     qd_json_key(j, "expression");
-    qd_buf_clear(tmp);
-    qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
+    qd_status st = qd__render_json_expr(v->ctx, j, c->expr, tmp);
     if (st == QD_OK && c->integral) {
         qd_json_key(j, "integral");
-        qd_buf_clear(tmp);
-        st = qd_print(v->ctx, c->integral, QD_FMT_TEXT, tmp);
-        qd_json_string(j, qd_buf_str(tmp));
+        st = qd__render_json_expr(v->ctx, j, c->integral, tmp);
     }
     qd_json_key(j, "multiplier");
     qd_json_string(j, qd_expr_name(c->lambda));
@@ -456,9 +445,7 @@ static qd_status json_eliminated(const qd__eom_view *v, qd_json *j, qd_buf *tmp)
         qd_json_key(j, "constraint");
         qd_json_string(j, v->e->elim[i].con);
         qd_json_key(j, "value");
-        qd_buf_clear(tmp);
-        st = qd_print(v->ctx, v->e->elim[i].value, QD_FMT_TEXT, tmp);
-        qd_json_string(j, qd_buf_str(tmp));
+        st = qd__render_json_expr(v->ctx, j, v->e->elim[i].value, tmp);
         qd_json_end_object(j);
     }
     qd_json_end_object(j);

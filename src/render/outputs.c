@@ -8,6 +8,7 @@
 #include "render.h"
 
 #include <stdio.h>
+#include "qdot/json.h"
 #include "../base/mem.h"
 
 static size_t part_size(const qd__render_part *p) {
@@ -86,4 +87,19 @@ qd_status qd__render_done(qd_ctx *ctx, const qd_buf *out, qd_status st) {
         st = QD_ERR_NOMEM;
     }
     return st;
+}
+
+qd_status qd__render_json_expr(qd_ctx *ctx, qd_json *j, const qd_expr *x, qd_buf *tmp) {
+    qd_buf_clear(tmp);
+    qd_status st = qd_print(ctx, x, QD_FMT_TEXT, tmp);
+    qd_json_string(j, qd_buf_str(tmp));
+    return st;
+}
+
+void qd__render_json_names(qd_json *j, const char *key, const qd_expr *const *x, size_t n) {
+    qd_json_key(j, key);
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        qd_json_string(j, qd_expr_name(x[i]));
+    qd_json_end_array(j);
 }

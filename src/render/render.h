@@ -64,6 +64,10 @@ void qd__render_state_free(qd_render_opts *full);
 /* The value of sym in a state (o->syms, o->vals); NaN when it is absent. */
 double qd__render_value(const qd_render_opts *o, const qd_expr *sym);
 
+/* x as a JSON string in the text syntax (printed through tmp). */
+qd_status qd__render_json_expr(qd_ctx *ctx, struct qd_json *j, const qd_expr *x, qd_buf *tmp);
+/* key: [the names of x[0..n)]. */
+void qd__render_json_names(struct qd_json *j, const char *key, const qd_expr *const *x, size_t n);
 /* st, or QD_ERR_NOMEM (recorded) when out ran out while printing the
  * equations. */
 qd_status qd__render_done(qd_ctx *ctx, const qd_buf *out, qd_status st);

@@ -224,25 +224,14 @@ static qd_status write_latex(const view *v, qd_buf *b) {
 /* ---- JSON ------------------------------------------------------------------ */
 
 static qd_status json_expr(const view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
-    qd_buf_clear(tmp);
-    qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
-    return st;
-}
-
-static void json_names(qd_json *j, const char *key, const qd_expr *const *x, size_t n) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < n; i++)
-        qd_json_string(j, qd_expr_name(x[i]));
-    qd_json_end_array(j);
+    return qd__render_json_expr(v->ctx, j, x, tmp);
 }
 
 static void json_header(const view *v, qd_json *j) {
     qd_json_key(j, "model");
     qd_json_string(j, v->source);
-    json_names(j, "coordinates", v->e->q, v->e->n);
-    json_names(j, "speeds", v->e->u, v->e->m);
+    qd__render_json_names(j, "coordinates", v->e->q, v->e->n);
+    qd__render_json_names(j, "speeds", v->e->u, v->e->m);
     qd__render_json_params(j, v->m);
     qd_json_key(j, "method");
     qd_json_string(j, qd_speeds_method_name(v->e->method));
