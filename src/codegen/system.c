@@ -89,7 +89,8 @@ static qd_status rhs_block(const cg_form *f) {
     const qd_expr **out = qd__malloc(f->ctx, (nout + 1) * sizeof *out);
     qd_status st = names && lhs && out ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK) {
-        memcpy(out, f->kin, nkin * sizeof *out);
+        if (nkin) /* memcpy from NULL is undefined even for 0 bytes */
+            memcpy(out, f->kin, nkin * sizeof *out);
         memcpy(out + nkin, f->Kr, nKr * sizeof *out);
         qd__cg_lhs_names(names, lhs, "qd_dydt", 0, nkin);
         qd__cg_lhs_names(names + nkin, lhs + nkin, "qd_K", 0, nKr);
