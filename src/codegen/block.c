@@ -1,11 +1,10 @@
 /*
- * src/codegen/block.c - what every generated function is made of, for the
- * equations in coordinates (emit.c) and in speeds (speeds.c) alike: the
- * symbols its outputs use, each bound to a local constant read from an
- * argument array, then one qd_print_c_block assigning the outputs, so that
- * every subexpression they share is computed once.  The two generators
- * differ only in where a symbol's value is (their cg_bind); the rest of a
- * file's frame (guards, name tables, the prefix check) is here too.
+ * src/codegen/block.c - what every generated function is made of (system.c,
+ * for the equations in coordinates and in speeds alike): the symbols its
+ * outputs use, each bound to a local constant read from an argument array
+ * (the caller's cg_bind says where), then one qd_print_c_block assigning the
+ * outputs, so that every subexpression they share is computed once.  The
+ * rest of a file's frame (guards, name tables, the prefix check) is here too.
  */
 #include "cg.h"
 #include "base/mem.h"

@@ -22,6 +22,44 @@ void qd__cg_solvers(qd_buf *out, size_t nk, bool cholesky);
  * (recorded) when a parameter has no value. */
 qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_buf *c);
 
+/* ---- a first-order system y = (q, v), as every generated file has it (system.c) ---- */
+
+/* What the functions of a generated file are written from: the coordinates'
+ * equations (emit.c: v = q', K = M or [M -A^T; A 0], z = (q'', lambda)) or
+ * the speeds' (speeds.c: v = u, K = M_u, z = u').  The arrays are the
+ * expressions as printed (after the angle-sum rewrite) and stay the
+ * caller's. */
+typedef struct cg_form {
+    qd_ctx *ctx;
+    const qd_model *m;
+    const char *P;      /* the prefix */
+    qd_buf *c;          /* the .c text, appended to */
+    size_t n, nv, nk, np; /* coordinates, the state's second half, unknowns z, parameters */
+    const qd_expr *const *q, *const *v, *const *z; /* their symbols: n, nv, nk */
+    const char *vname;  /* forcing's argument for v: "qd_qd" or "qd_u" */
+    const qd_expr *const *kin;  /* q' = kin (n), with NAME_kinematics; NULL: q' = v */
+    const qd_expr *const *dkin; /* d kin/dy (n rows of n + nv), when kin */
+    const qd_expr *const *M, *const *f; /* NAME_mass (nv*nv), NAME_forcing (nv) */
+    const qd_expr *const *Kr;   /* K (nk*nk) then r (nk), solved by rhs */
+    const qd_expr *const *R;    /* dr/dy_k - (dK/dy_k) z: column k at k*nk */
+    const qd_expr *h;           /* NAME_energy; NULL: it returns NAN */
+    bool h_decl_late;           /* qd_h declared after the (void)s (the speeds' text) */
+    bool cholesky;              /* K symmetric: Cholesky with an LU fallback */
+} cg_form;
+
+/* The solvers, then NAME_kinematics (when kin), _mass, _forcing, _rhs,
+ * _energy and _jacobian, appended to f->c.  QD_ERR_ARG / QD_ERR_UNBOUND as
+ * qd__cg_block. */
+qd_status qd__cg_system(const cg_form *f);
+
+/* QD_OK when no entry of M[0..nM) involves syms[0..n); else QD_ERR_ARG
+ * recorded: "the mass matrix depends on the WHAT NAME" (rhs factors M before
+ * it reads them, and NAME_mass has no argument for them). */
+qd_status qd__cg_mass_free_of(qd_ctx *ctx, size_t nM, const qd_expr *const *M, size_t n,
+                              const qd_expr *const *syms, const char *what);
+/* The .c file's first lines: its name, <math.h> and "P.h". */
+void qd__cg_preamble(qd_buf *c, const char *P);
+
 /* ---- the pieces of every generated function (block.c) ---- */
 
 /* Where a function reads a symbol's value: array[index]. */

@@ -1,18 +1,12 @@
 /*
- * src/codegen/emit.c - the equations of motion as a C file and its header.
+ * src/codegen/emit.c - the equations of motion M q'' = f as a C file and its
+ * header: the expressions of the first-order system y = (q, q') (a cg_form,
+ * written by system.c) and the header's text.
  *
- * Each function binds the symbols its expressions use to local constants
- * named as qdot prints them (theta1, theta1_d, m1), read from the argument
- * arrays, then runs one qd_print_c_block, so every subexpression shared
- * among its outputs is computed once.  The mass matrix and the forcing are
- * printed in one block wherever both are needed (rhs, jacobian).
- *
- * The Jacobian of q'' = M^-1 f differentiates K z = r (K = M, or the
- * saddle-point matrix [M -A^T; A 0], z = (q'', lambda), r = (f, b)):
- * K dz/dy_k = dr/dy_k - (dK/dy_k) z.  The right-hand sides are written
- * symbolically with q'' and lambda as symbols (bound to the solved values
- * at run time), so only the entries of dM/dy_k, dA/dy_k that are not
- * zero cost anything, and K is factored once for all 2n columns.
+ * With constraints the system solved is the saddle point K z = r, K = [M
+ * -A^T; A 0], z = (q'', lambda), r = (f, b); the Jacobian's right-hand sides
+ * dr/dy_k - (dK/dy_k) z are formed here, so only the entries of dM/dy_k,
+ * dA/dy_k that are not zero cost anything.
  */
 #include "cg.h"
 #include "sym/node.h"
@@ -28,64 +22,12 @@ typedef struct gen {
     const qd_eom *e;
     const char *P;
     size_t n, np, nc, nk;
-    qd_buf *c;
     /* every printed expression, rewritten together (angles.c) */
     const qd_expr **M, **f, **A, **b, *h, **R;
     const qd_expr **all;
     size_t nall;
+    const qd_expr **Kr, **z; /* K then r (nk*nk + nk); z = (q'', lambda) */
 } gen;
-
-/* Where a function finds its values: q[j] at q[qoff + j] and so on; NULL
- * when the function has none. */
-typedef struct src {
-    const gen *g;
-    const char *q, *qd, *z;
-    size_t qoff, qdoff;
-} src;
-
-/* A coordinate or its rates from q, qd and z (q'' then lambda), a
- * parameter from qd_par (cg_bind). */
-static qd_status bind(void *data, const qd_expr *sym, cg_slot *at) {
-    const src *s = data;
-    const gen *g = s->g;
-    const qd_eom *e = g->e;
-    switch (qd_symbol_role(sym)) {
-    case QD_ROLE_COORD: {
-        unsigned order = qd_symbol_order(sym);
-        const qd_expr *c = qd_symbol_coord(sym);
-        for (size_t j = 0; j < g->n; j++)
-            if (e->q[j] == c) {
-                if (order == 0 && s->q)
-                    *at = (cg_slot){s->q, s->qoff + j};
-                else if (order == 1 && s->qd)
-                    *at = (cg_slot){s->qd, s->qdoff + j};
-                else if (order == 2 && s->z)
-                    *at = (cg_slot){s->z, j};
-            }
-        break;
-    }
-    case QD_ROLE_PARAM:
-        for (size_t i = 0; i < g->np; i++)
-            if (qd_model_param(g->m, i) == sym)
-                *at = (cg_slot){"qd_par", i};
-        break;
-    case QD_ROLE_PLAIN:
-        for (size_t k = 0; k < g->nc && s->z; k++)
-            if (e->con[k].lambda == sym)
-                *at = (cg_slot){s->z, g->n + k};
-        break;
-    default:
-        break;
-    }
-    return QD_OK;
-}
-
-/* The bindings and the block for outputs out[0..nout) to array[i]. */
-static qd_status block(gen *g, src *s, size_t nout, const qd_expr *const *out,
-                       const char *array) {
-    s->g = g;
-    return qd__cg_block_to(g->ctx, g->c, nout, out, array, 0, bind, s);
-}
 
 /* ---- the expressions ---------------------------------------------------------- */
 
@@ -159,24 +101,25 @@ static qd_status build(gen *g) {
     qd__free(terms);
     if (qd_ctx_status(ctx) != QD_OK)
         return qd_ctx_status(ctx);
-    for (size_t i = 0; i < n * n; i++)
-        for (size_t j = 0; j < n; j++)
-            if (qd_has(g->M[i], e->qd[j])) {
-                qd_ctx_error(ctx, QD_ERR_ARG,
-                             "cannot generate C: the mass matrix depends on the velocity %s'",
-                             qd_expr_name(e->q[j]));
-                return QD_ERR_ARG;
-            }
+    if (qd__cg_mass_free_of(ctx, n * n, e->M, n, e->qd, "velocity") != QD_OK)
+        return QD_ERR_ARG;
     bool applied;
     qd_status st = qd__cg_angle_sums(ctx, g->nall, g->all, &applied);
     g->h = g->b[nc];
     return st;
 }
 
-/* K (nk*nk) and r (nk) for the system solve. */
-static qd_status system_outputs(gen *g, const qd_expr **out) {
+/* K (nk*nk) then r (nk) for the system solve, from the rewritten M, f, A,
+ * b; z = (q'', lambda), their symbols. */
+static qd_status system_outputs(gen *g) {
     qd_ctx *ctx = g->ctx;
     size_t n = g->n, nk = g->nk;
+    g->Kr = qd__malloc(ctx, (nk * nk + nk) * sizeof *g->Kr);
+    g->z = qd__malloc(ctx, nk * sizeof *g->z);
+    if (!g->Kr || !g->z) {
+        qd__oom(ctx);
+        return QD_ERR_NOMEM;
+    }
     for (size_t i = 0; i < nk; i++)
         for (size_t j = 0; j < nk; j++) {
             const qd_expr *x;
@@ -188,10 +131,12 @@ static qd_status system_outputs(gen *g, const qd_expr **out) {
                 x = g->A[(i - n) * n + j];
             else
                 x = qd_int(ctx, 0);
-            out[i * nk + j] = x;
+            g->Kr[i * nk + j] = x;
         }
-    for (size_t i = 0; i < nk; i++)
-        out[nk * nk + i] = i < n ? g->f[i] : g->b[i - n];
+    for (size_t i = 0; i < nk; i++) {
+        g->Kr[nk * nk + i] = i < n ? g->f[i] : g->b[i - n];
+        g->z[i] = i < n ? g->e->qdd[i] : g->e->con[i - n].lambda;
+    }
     return qd_ctx_status(ctx);
 }
 
@@ -281,109 +226,18 @@ qd_status qd__cg_param_tables(qd_ctx *ctx, const qd_model *m, const char *P, qd_
     return QD_OK;
 }
 
-static qd_status tables(gen *g) {
-    qd__cg_name_list(g->c, g->P, "coord", g->n, g->e->q);
-    return qd__cg_param_tables(g->ctx, g->m, g->P, g->c);
+static qd_status tables(gen *g, qd_buf *c) {
+    qd__cg_name_list(c, g->P, "coord", g->n, g->e->q);
+    return qd__cg_param_tables(g->ctx, g->m, g->P, c);
 }
 
-static void unused(gen *g, const char *names) { qd__cg_unused(g->c, names); }
-
-static qd_status fn_mass(gen *g) {
-    qd_buf_printf(g->c, "void %s_mass(double t, const double *qd_q, const double *qd_par, "
-                        "double *qd_M) {\n", g->P);
-    unused(g, "    (void)qd_q;\n");
-    src s = {.q = "qd_q"};
-    qd_status st = block(g, &s, g->n * g->n, g->M, "qd_M");
-    qd_buf_puts(g->c, "}\n\n");
-    return st;
-}
-
-static qd_status fn_forcing(gen *g) {
-    qd_buf_printf(g->c, "void %s_forcing(double t, const double *qd_q, const double *qd_qd,\n"
-                        "    const double *qd_par, double *qd_f) {\n", g->P);
-    unused(g, "    (void)qd_q;\n    (void)qd_qd;\n");
-    src s = {.q = "qd_q", .qd = "qd_qd"};
-    qd_status st = block(g, &s, g->n, g->f, "qd_f");
-    qd_buf_puts(g->c, "}\n\n");
-    return st;
-}
-
-/* K and r in one block (r is stored right after K), so what r shares with
- * K is computed once. */
-static qd_status system_block(gen *g, src *s) {
-    size_t nk = g->nk;
-    const qd_expr **out = qd__malloc(g->ctx, (nk * nk + nk) * sizeof *out);
-    if (!out) {
-        qd__oom(g->ctx);
-        return QD_ERR_NOMEM;
-    }
-    qd_status st = system_outputs(g, out);
-    if (st == QD_OK)
-        st = block(g, s, nk * nk + nk, out, "qd_K");
-    qd__free(out);
-    return st;
-}
-
-static qd_status fn_rhs(gen *g) {
-    qd_buf *c = g->c;
-    qd_buf_printf(c, "int %s_rhs(double t, const double *qd_y, const double *qd_par, "
-                     "double *qd_dydt) {\n", g->P);
-    qd_buf_puts(c, "    double qd_K[qd_NK * qd_NK + qd_NK];\n    double *qd_r = qd_K + qd_NK * "
-                   "qd_NK;\n    qd_fac qd_fa;\n");
-    unused(g, "");
-    src s = {.q = "qd_y", .qd = "qd_y", .qdoff = g->n};
-    qd_status st = system_block(g, &s);
-    qd_buf_printf(c,
-                  "    for (int i = 0; i < %zu; i++)\n        qd_dydt[i] = qd_y[%zu + i];\n"
-                  "    if (qd_factor(qd_K, &qd_fa)) {\n"
-                  "        for (int i = 0; i < %zu; i++)\n            qd_dydt[%zu + i] = NAN;\n"
-                  "        return 1;\n    }\n"
-                  "    qd_solve(qd_K, &qd_fa, qd_r);\n"
-                  "    for (int i = 0; i < %zu; i++)\n        qd_dydt[%zu + i] = qd_r[i];\n"
-                  "    return 0;\n}\n\n",
-                  g->n, g->n, g->n, g->n, g->n, g->n);
-    return st;
-}
-
-static qd_status fn_energy(gen *g) {
-    qd_buf *c = g->c;
-    qd_buf_printf(c, "double %s_energy(double t, const double *qd_y, const double *qd_par) {\n"
-                     "    double qd_h[1];\n", g->P);
-    unused(g, "    (void)qd_y;\n");
-    src s = {.q = "qd_y", .qd = "qd_y", .qdoff = g->n};
-    qd_status st = block(g, &s, 1, &g->h, "qd_h");
-    qd_buf_puts(c, "    return qd_h[0];\n}\n\n");
-    return st;
-}
-
-static qd_status fn_jacobian(gen *g) {
-    qd_buf *c = g->c;
-    size_t n = g->n, nk = g->nk, w = 2 * n;
-    qd_buf_printf(c, "void %s_jacobian(double t, const double *qd_y, const double *qd_par, "
-                     "double *qd_J) {\n", g->P);
-    qd_buf_printf(c, "    double qd_K[qd_NK * qd_NK + qd_NK], qd_R[%zu];\n"
-                     "    double *qd_z = qd_K + qd_NK * qd_NK;\n    qd_fac qd_fa;\n", w * nk);
-    unused(g, "    (void)qd_y;\n");
-    qd_buf_puts(c, "    {\n");
-    src s = {.q = "qd_y", .qd = "qd_y", .qdoff = n};
-    qd_status st = system_block(g, &s);
-    qd_buf_printf(c,
-                  "    }\n    for (int i = 0; i < %zu; i++)\n        qd_J[i] = 0.0;\n"
-                  "    for (int i = 0; i < %zu; i++)\n        qd_J[i * %zu + %zu + i] = 1.0;\n"
-                  "    if (qd_factor(qd_K, &qd_fa)) {\n"
-                  "        for (int i = %zu; i < %zu; i++)\n            qd_J[i] = NAN;\n"
-                  "        return;\n    }\n    qd_solve(qd_K, &qd_fa, qd_z);\n    {\n",
-                  w * w, n, w, n, n * w, w * w);
-    s.z = "qd_z";
-    if (st == QD_OK)
-        st = block(g, &s, w * nk, g->R, "qd_R");
-    qd_buf_printf(c,
-                  "    }\n    for (int k = 0; k < %zu; k++)\n"
-                  "        qd_solve(qd_K, &qd_fa, qd_R + k * qd_NK);\n"
-                  "    for (int i = 0; i < %zu; i++)\n        for (int k = 0; k < %zu; k++)\n"
-                  "            qd_J[(%zu + i) * %zu + k] = qd_R[k * qd_NK + i];\n}\n",
-                  w, n, w, n, w);
-    return st;
+/* The form system.c writes: y = (q, q'), K z = r. */
+static cg_form form(const gen *g, qd_buf *c) {
+    const qd_eom *e = g->e;
+    return (cg_form){.ctx = g->ctx, .m = g->m, .P = g->P, .c = c, .n = g->n, .nv = g->n,
+                     .nk = g->nk, .np = g->np, .q = e->q, .v = e->qd, .z = g->z,
+                     .vname = "qd_qd", .M = g->M, .f = g->f, .Kr = g->Kr, .R = g->R,
+                     .h = g->h, .cholesky = g->nc == 0};
 }
 
 qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
@@ -398,33 +252,26 @@ qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const cha
         return QD_ERR_ARG;
     }
     gen g = {.ctx = ctx, .m = m, .e = e, .P = prefix, .n = e->n,
-             .np = qd_model_nparams(m), .nc = e->ncon, .c = c};
+             .np = qd_model_nparams(m), .nc = e->ncon};
     g.nk = g.n + g.nc;
     qd_status st = build(&g);
+    if (st == QD_OK)
+        st = system_outputs(&g);
     if (st == QD_OK) {
-        if (embed) {
-            header(&g, c, false);
+        header(&g, embed ? c : h, !embed);
+        if (embed)
             qd_buf_puts(c, "\n#include <math.h>\n\n");
-        } else {
-            header(&g, h, true);
-            qd_buf_printf(c, "/* %s.c - generated by qdot codegen (see %s.h). */\n"
-                             "#include <math.h>\n\n#include \"%s.h\"\n\n", prefix, prefix, prefix);
-        }
-        st = tables(&g);
+        else
+            qd__cg_preamble(c, prefix);
+        st = tables(&g, c);
     }
     if (st == QD_OK) {
-        qd__cg_solvers(c, g.nk, g.nc == 0);
-        st = fn_mass(&g);
+        cg_form f = form(&g, c);
+        st = qd__cg_system(&f);
     }
-    if (st == QD_OK)
-        st = fn_forcing(&g);
-    if (st == QD_OK)
-        st = fn_rhs(&g);
-    if (st == QD_OK)
-        st = fn_energy(&g);
-    if (st == QD_OK)
-        st = fn_jacobian(&g);
     qd__free(g.all);
+    qd__free(g.Kr);
+    qd__free(g.z);
     if (st == QD_OK && (c->failed || (h && h->failed))) {
         qd__oom(ctx);
         st = QD_ERR_NOMEM;

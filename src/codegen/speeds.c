@@ -6,15 +6,9 @@
  *     M_u u' = f_u        (solved in the generated code: Cholesky, LU when
  *                          M_u is not positive definite)
  *
- * with the shape of the coordinates' code (emit.c): the symbols a function
- * uses are bound to local constants read from its arguments, then one
- * qd_print_c_block computes the outputs, sharing every common
- * subexpression.  The kinematics, M_u and f_u are printed in one block in
- * rhs, so what they share (sines of the angles, mostly) is computed once.
- *
- * The Jacobian of y' differentiates M_u u' = f_u as emit.c does M q'' = f:
- * M_u du'/dy_k = df_u/dy_k - (dM_u/dy_k) u', with u' a symbol bound to the
- * solved value, M_u factored once for all columns; the kinematic rows are
+ * the expressions of a cg_form (written by system.c, as the coordinates'
+ * M q'' = f of emit.c) and the header's text.  The Jacobian's right-hand
+ * sides are df_u/dy_k - (dM_u/dy_k) u'; the kinematic rows are
  * differentiated directly.
  */
 #include "cg.h"
@@ -43,42 +37,6 @@ typedef struct sgen {
 } sgen;
 
 static size_t dim(const sgen *g) { return g->n + g->ns; }
-
-/* Where a function reads q, u and u': q[qoff + j], u[uoff + r], z[r]; NULL
- * when it has none. */
-typedef struct ssrc {
-    const char *q, *u;
-    size_t qoff, uoff;
-    const char *z;
-    const sgen *g;
-} ssrc;
-
-/* A coordinate, a speed or its rate, a parameter (cg_bind); a velocity
- * left in the equations has no slot. */
-static qd_status bind(void *data, const qd_expr *sym, cg_slot *at) {
-    const ssrc *s = data;
-    const sgen *g = s->g;
-    for (size_t j = 0; j < g->n && s->q; j++)
-        if (g->e->q[j] == sym)
-            *at = (cg_slot){s->q, s->qoff + j};
-    for (size_t r = 0; r < g->ns && s->u; r++)
-        if (g->e->u[r] == sym)
-            *at = (cg_slot){s->u, s->uoff + r};
-    for (size_t r = 0; r < g->ns && s->z; r++)
-        if (g->e->ud[r] == sym)
-            *at = (cg_slot){s->z, r};
-    for (size_t i = 0; i < g->np && !at->array; i++)
-        if (qd_model_param(g->m, i) == sym)
-            *at = (cg_slot){"qd_par", i};
-    return QD_OK;
-}
-
-/* A block whose outputs go to consecutive entries of one array. */
-static qd_status block_to(sgen *g, ssrc *s, size_t nout, const qd_expr *const *out,
-                          const char *arr) {
-    s->g = g;
-    return qd__cg_block_to(g->ctx, g->c, nout, out, arr, 0, bind, s);
-}
 
 /* ---- the expressions ---------------------------------------------------------- */
 
@@ -135,16 +93,9 @@ static qd_status build(sgen *g) {
     qd__free(terms);
     if (qd_ctx_status(g->ctx) != QD_OK)
         return qd_ctx_status(g->ctx);
-    /* M_u = W^T M W is a function of q and t: rhs factors it before u is
-       read, and mass() has no u to read */
-    for (size_t i = 0; i < ns * ns; i++)
-        for (size_t r = 0; r < ns; r++)
-            if (qd_has(e->M[i], e->u[r])) {
-                qd_ctx_error(g->ctx, QD_ERR_ARG,
-                             "cannot generate C: the mass matrix depends on the speed %s",
-                             qd_expr_name(e->u[r]));
-                return QD_ERR_ARG;
-            }
+    /* M_u = W^T M W is a function of q and t */
+    if (qd__cg_mass_free_of(g->ctx, ns * ns, e->M, ns, e->u, "speed") != QD_OK)
+        return QD_ERR_ARG;
     bool applied;
     return qd__cg_angle_sums(g->ctx, g->nall, g->all, &applied);
 }
@@ -230,120 +181,15 @@ static qd_status tables(sgen *g) {
     return qd__cg_param_tables(g->ctx, g->m, g->P, c);
 }
 
-static void unused(sgen *g, const char *names) { qd__cg_unused(g->c, names); }
-
-static qd_status fn_kinematics(sgen *g) {
-    qd_buf_printf(g->c, "void %s_kinematics(double t, const double *qd_q, const double *qd_u,\n"
-                        "    const double *qd_par, double *qd_qd) {\n", g->P);
-    unused(g, "    (void)qd_q;\n    (void)qd_u;\n");
-    ssrc s = {"qd_q", "qd_u", 0, 0, NULL, g};
-    qd_status st = block_to(g, &s, g->n, kin(g), "qd_qd");
-    qd_buf_puts(g->c, "}\n\n");
-    return st;
-}
-
-static qd_status fn_mass(sgen *g) {
-    qd_buf_printf(g->c, "void %s_mass(double t, const double *qd_q, const double *qd_par, "
-                        "double *qd_M) {\n", g->P);
-    unused(g, "    (void)qd_q;\n");
-    ssrc s = {"qd_q", NULL, 0, 0, NULL, g};
-    qd_status st = block_to(g, &s, g->ns * g->ns, mass(g), "qd_M");
-    qd_buf_puts(g->c, "}\n\n");
-    return st;
-}
-
-static qd_status fn_forcing(sgen *g) {
-    qd_buf_printf(g->c, "void %s_forcing(double t, const double *qd_q, const double *qd_u,\n"
-                        "    const double *qd_par, double *qd_f) {\n", g->P);
-    unused(g, "    (void)qd_q;\n    (void)qd_u;\n");
-    ssrc s = {"qd_q", "qd_u", 0, 0, NULL, g};
-    qd_status st = block_to(g, &s, g->ns, forcing(g), "qd_f");
-    qd_buf_puts(g->c, "}\n\n");
-    return st;
-}
-
-/* q' straight into dydt, M_u and f_u into K = [M_u | f_u], in one block. */
-static qd_status rhs_block(sgen *g) {
-    size_t n = g->n, ns = g->ns, nout = n + ns * ns + ns;
-    char(*names)[48] = qd__malloc(g->ctx, (nout + 1) * sizeof *names);
-    const char **lhs = qd__malloc(g->ctx, (nout + 1) * sizeof *lhs);
-    qd_status st = names && lhs ? QD_OK : QD_ERR_NOMEM;
-    if (st == QD_OK) {
-        qd__cg_lhs_names(names, lhs, "qd_dydt", 0, n);
-        qd__cg_lhs_names(names + n, lhs + n, "qd_K", 0, ns * ns + ns);
-        ssrc s = {"qd_y", "qd_y", 0, n, NULL, g};
-        st = qd__cg_block(g->ctx, g->c, nout, g->all, lhs, bind, &s);
-    }
-    qd__free(names);
-    qd__free(lhs);
-    return st;
-}
-
-static qd_status fn_rhs(sgen *g) {
-    qd_buf *c = g->c;
-    size_t n = g->n, ns = g->ns;
-    qd_buf_printf(c, "int %s_rhs(double t, const double *qd_y, const double *qd_par, "
-                     "double *qd_dydt) {\n", g->P);
-    qd_buf_puts(c, "    double qd_K[qd_NK * qd_NK + qd_NK];\n    double *qd_r = qd_K + qd_NK * "
-                   "qd_NK;\n    qd_fac qd_fa;\n");
-    unused(g, "");
-    qd_status st = rhs_block(g);
-    qd_buf_printf(c,
-                  "    if (qd_factor(qd_K, &qd_fa)) {\n"
-                  "        for (int i = 0; i < %zu; i++)\n            qd_dydt[%zu + i] = NAN;\n"
-                  "        return 1;\n    }\n"
-                  "    qd_solve(qd_K, &qd_fa, qd_r);\n"
-                  "    for (int i = 0; i < %zu; i++)\n        qd_dydt[%zu + i] = qd_r[i];\n"
-                  "    return 0;\n}\n",
-                  ns, n, ns, n);
-    return st;
-}
-
-static qd_status fn_energy(sgen *g) {
-    qd_buf *c = g->c;
-    qd_buf_printf(c, "\ndouble %s_energy(double t, const double *qd_y, const double *qd_par) {\n",
-                  g->P);
-    unused(g, "    (void)qd_y;\n");
-    if (!g->has_energy) {
-        qd_buf_puts(c, "    return NAN;\n}\n");
-        return QD_OK;
-    }
-    qd_buf_puts(c, "    double qd_h[1];\n");
-    ssrc s = {"qd_y", "qd_y", 0, g->n, NULL, g};
-    qd_status st = block_to(g, &s, 1, hamilton(g), "qd_h");
-    qd_buf_puts(c, "    return qd_h[0];\n}\n");
-    return st;
-}
-
-static qd_status fn_jacobian(sgen *g) {
-    qd_buf *c = g->c;
-    size_t n = g->n, ns = g->ns, d = dim(g);
-    qd_buf_printf(c, "\nvoid %s_jacobian(double t, const double *qd_y, const double *qd_par, "
-                     "double *qd_J) {\n", g->P);
-    qd_buf_printf(c, "    double qd_K[qd_NK * qd_NK + qd_NK], qd_R[%zu];\n"
-                     "    double *qd_z = qd_K + qd_NK * qd_NK;\n    qd_fac qd_fa;\n", d * ns);
-    unused(g, "    (void)qd_y;\n");
-    qd_buf_printf(c, "    for (int i = 0; i < %zu; i++)\n        qd_J[i] = 0.0;\n    {\n", d * d);
-    ssrc s = {"qd_y", "qd_y", 0, n, NULL, g};
-    qd_status st = block_to(g, &s, n * d, dkin(g), "qd_J");
-    qd_buf_puts(c, "    }\n    {\n");
-    if (st == QD_OK)
-        st = block_to(g, &s, ns * ns + ns, mass(g), "qd_K");
-    qd_buf_printf(c,
-                  "    }\n    if (qd_factor(qd_K, &qd_fa)) {\n"
-                  "        for (int i = %zu; i < %zu; i++)\n            qd_J[i] = NAN;\n"
-                  "        return;\n    }\n    qd_solve(qd_K, &qd_fa, qd_z);\n    {\n",
-                  n * d, d * d);
-    s.z = "qd_z";
-    if (st == QD_OK)
-        st = block_to(g, &s, d * ns, jac_rhs(g), "qd_R");
-    qd_buf_printf(c,
-                  "    }\n    for (int k = 0; k < %zu; k++)\n"
-                  "        qd_solve(qd_K, &qd_fa, qd_R + k * qd_NK);\n"
-                  "    for (int i = 0; i < %zu; i++)\n        for (int k = 0; k < %zu; k++)\n"
-                  "            qd_J[(%zu + i) * %zu + k] = qd_R[k * qd_NK + i];\n}\n",
-                  d, ns, d, n, d);
-    return st;
+/* The form system.c writes: y = (q, u), K = M_u, z = u'. */
+static cg_form form(const sgen *g) {
+    const qd_speeds_eom *e = g->e;
+    return (cg_form){.ctx = g->ctx, .m = g->m, .P = g->P, .c = g->c, .n = g->n, .nv = g->ns,
+                     .nk = g->ns, .np = g->np, .q = e->q, .v = e->u, .z = e->ud,
+                     .vname = "qd_u", .kin = kin(g), .dkin = dkin(g), .M = mass(g),
+                     .f = forcing(g), .Kr = mass(g), .R = jac_rhs(g),
+                     .h = g->has_energy ? *hamilton(g) : NULL, .h_decl_late = true,
+                     .cholesky = true};
 }
 
 static qd_status check_args(qd_ctx *ctx, const qd_speeds_eom *e, const char *prefix) {
@@ -369,24 +215,13 @@ qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const qd_speeds_eo
     st = build(&g);
     if (st == QD_OK) {
         header(&g, h_text ? h_text : &scratch);
-        qd_buf_printf(c_text, "/* %s.c - generated by qdot codegen (see %s.h). */\n"
-                              "#include <math.h>\n\n#include \"%s.h\"\n\n", prefix, prefix, prefix);
+        qd__cg_preamble(c_text, prefix);
         st = tables(&g);
     }
     if (st == QD_OK) {
-        qd__cg_solvers(c_text, g.ns, true);
-        st = fn_kinematics(&g);
+        cg_form f = form(&g);
+        st = qd__cg_system(&f);
     }
-    if (st == QD_OK)
-        st = fn_mass(&g);
-    if (st == QD_OK)
-        st = fn_forcing(&g);
-    if (st == QD_OK)
-        st = fn_rhs(&g);
-    if (st == QD_OK)
-        st = fn_energy(&g);
-    if (st == QD_OK)
-        st = fn_jacobian(&g);
     qd__free(g.all);
     qd_buf_free(&scratch);
     if (st == QD_OK && (c_text->failed || (h_text && h_text->failed)))

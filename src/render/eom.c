@@ -327,10 +327,7 @@ static qd_status json_entry(const qd__eom_view *v, qd_json *j, const qd_expr *x,
         qd_json_number(j, qd_number_value(x));
         return QD_OK;
     }
-    qd_buf_clear(tmp);
-    qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
-    return st;
+    return qd__render_json_expr(v->ctx, j, x, tmp);
 }
 
 static qd_status json_vector(const qd__eom_view *v, qd_json *j, const char *key,
@@ -348,11 +345,7 @@ static qd_status json_vector(const qd__eom_view *v, qd_json *j, const char *key,
 static void json_header(const qd__eom_view *v, qd_json *j, qd_buf *tmp) {
     qd_json_key(j, "model");
     qd_json_string(j, v->source);
-    qd_json_key(j, "coordinates");
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < v->e->n; i++)
-        qd_json_string(j, qname(v, i));
-    qd_json_end_array(j);
+    qd__render_json_names(j, "coordinates", v->e->q, v->e->n);
     qd__render_json_params(j, v->m);
     if (!v->at)
         return;
@@ -375,14 +368,10 @@ static qd_status json_constraint(const qd__eom_view *v, qd_json *j, size_t k, qd
     qd_json_key(j, "kind");
     qd_json_string(j, qd_con_kind_name(c->kind));
     qd_json_key(j, "expression");
-    qd_buf_clear(tmp);
-    qd_status st = qd_print(v->ctx, c->expr, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
+    qd_status st = qd__render_json_expr(v->ctx, j, c->expr, tmp);
     if (st == QD_OK && c->integral) {
         qd_json_key(j, "integral");
-        qd_buf_clear(tmp);
-        st = qd_print(v->ctx, c->integral, QD_FMT_TEXT, tmp);
-        qd_json_string(j, qd_buf_str(tmp));
+        st = qd__render_json_expr(v->ctx, j, c->integral, tmp);
     }
     qd_json_key(j, "multiplier");
     qd_json_string(j, qd_expr_name(c->lambda));
@@ -456,9 +445,7 @@ static qd_status json_eliminated(const qd__eom_view *v, qd_json *j, qd_buf *tmp)
         qd_json_key(j, "constraint");
         qd_json_string(j, v->e->elim[i].con);
         qd_json_key(j, "value");
-        qd_buf_clear(tmp);
-        st = qd_print(v->ctx, v->e->elim[i].value, QD_FMT_TEXT, tmp);
-        qd_json_string(j, qd_buf_str(tmp));
+        st = qd__render_json_expr(v->ctx, j, v->e->elim[i].value, tmp);
         qd_json_end_object(j);
     }
     qd_json_end_object(j);
@@ -505,13 +492,6 @@ static qd_status write_json(const qd__eom_view *v, qd_buf *b) {
 
 /* ---- SymPy ----------------------------------------------------------------- */
 
-
-
-static qd_status sympy_assign(const qd__eom_view *v, qd_buf *b, const char *name,
-                              const qd_expr *const *x, size_t rows, size_t cols) {
-    return qd__render_sympy_matrix(v->ctx, b, name, x, rows, cols);
-}
-
 /* A, b and the multipliers: M*q'' = f + A.T*lam and A*q'' = b. */
 static qd_status sympy_constraints(const qd__eom_view *v, qd_buf *b) {
     size_t n = v->e->n, m = v->e->ncon;
@@ -523,28 +503,22 @@ static qd_status sympy_constraints(const qd__eom_view *v, qd_buf *b) {
     for (size_t k = 0; k < m; k++)
         qd_buf_printf(b, "%sSymbol('%s')", k ? ", " : "", qd_expr_name(v->e->con[k].lambda));
     qd_buf_puts(b, "])\n");
-    qd_status st = sympy_assign(v, b, A.s, v->A, m, n);
+    qd_status st = qd__render_sympy_matrix(v->ctx, b, A.s, v->A, m, n);
     if (st == QD_OK)
-        st = sympy_assign(v, b, bb.s, v->b, m, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, bb.s, v->b, m, 1);
     if (st == QD_OK && v->lambda)
-        st = sympy_assign(v, b, pick(v, "lam_value").s, v->lambda, m, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, pick(v, "lam_value").s, v->lambda, m, 1);
     return st;
 }
 
 /* W = Function('W') for the user functions in everything printed below. */
 static qd_status sympy_functions(const qd__eom_view *v, qd_buf *b) {
-    size_t n = v->e->n, m = v->e->ncon, k = 0;
-    const qd_expr *const *groups[] = {v->T, v->M, v->f, v->acc, v->A, v->b, v->lambda};
-    const size_t sizes[] = {3, n * n, n, n, m * n, m, m};
-    const qd_expr **all = qd__malloc(v->ctx, (3 + n * n + 2 * n + m * n + 2 * m) * sizeof *all);
-    if (!all)
-        return QD_ERR_NOMEM;
-    for (size_t g = 0; g < sizeof sizes / sizeof sizes[0]; g++)
-        for (size_t i = 0; groups[g] && i < sizes[g]; i++)
-            all[k++] = groups[g][i];
-    qd_status st = qd_print_sympy_functions(v->ctx, k, all, b);
-    qd__free(all);
-    return st;
+    size_t n = v->e->n, m = v->e->ncon;
+    const qd__render_part parts[] = {
+        {NULL, v->T, 3, 0, 1},    {NULL, v->M, n, n, 2}, {NULL, v->f, n, 0, 1},
+        {NULL, v->acc, n, 0, 1},  {NULL, v->A, m, n, 2}, {NULL, v->b, m, 0, 1},
+        {NULL, v->lambda, m, 0, 1}};
+    return qd__render_sympy_functions(v->ctx, b, sizeof parts / sizeof *parts, parts);
 }
 
 static qd_status write_sympy(const qd__eom_view *v, qd_buf *b) {
@@ -570,18 +544,18 @@ static qd_status write_sympy(const qd__eom_view *v, qd_buf *b) {
     st = sympy_functions(v, b);
     qd_buf_puts(b, "\n");
     if (st == QD_OK)
-        st = sympy_assign(v, b, q.s, v->e->q, n, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, q.s, v->e->q, n, 1);
     for (size_t i = 0; v->T[0] && i < 3 && st == QD_OK; i++) {
         qd_buf_printf(b, "%s = ", pick(v, parts[i]).s);
         st = qd_print(v->ctx, v->T[i], QD_FMT_SYMPY, b);
         qd_buf_puts(b, "\n");
     }
     if (st == QD_OK)
-        st = sympy_assign(v, b, M.s, v->M, n, n);
+        st = qd__render_sympy_matrix(v->ctx, b, M.s, v->M, n, n);
     if (st == QD_OK)
-        st = sympy_assign(v, b, f.s, v->f, n, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, f.s, v->f, n, 1);
     if (st == QD_OK && v->acc)
-        st = sympy_assign(v, b, qdd.s, v->acc, n, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, qdd.s, v->acc, n, 1);
     if (st == QD_OK && v->e->ncon)
         st = sympy_constraints(v, b);
     return st;
@@ -589,97 +563,35 @@ static qd_status write_sympy(const qd__eom_view *v, qd_buf *b) {
 
 /* ---- C --------------------------------------------------------------------- */
 
-static void c_inputs(const qd__eom_view *v, qd_buf *b) {
-    const qd_model *m = v->m;
-    const qd_eom *e = v->e;
-    qd_buf_puts(b, "/* inputs (doubles in scope):");
-    for (size_t j = 0; j < 2 * e->n; j++) {
-        qd_buf_puts(b, " ");
-        qd_c_name(j < e->n ? e->q[j] : e->qd[j - e->n], b);
-    }
-    qd_buf_puts(b, " t");
-    for (size_t i = 0; i < qd_model_nparams(m); i++) {
-        qd_buf_puts(b, " ");
-        qd_c_name(qd_model_param(m, i), b);
-    }
-    qd_buf_puts(b, " */\n");
-    if (qd_model_independent(m)) /* C keeps t: one spelling for every generated program */
-        qd_buf_printf(b, "/* t is the independent variable %s; the _d, _dd are d/d%s */\n",
-                      qd_model_independent(m), qd_model_independent(m));
-}
-
-/* The C outputs: M, f, q'' (when solved), A, b; names and expressions. */
-typedef struct c_outs {
-    size_t n;
-    const qd_expr **x;
-    char (*names)[96];
-    const char **lhs;
-} c_outs;
-
-static void c_add(c_outs *o, const qd_expr *x, const char *fmt, const char *base, size_t i,
-                  size_t j, bool two) {
-    if (two)
-        snprintf(o->names[o->n], sizeof o->names[0], fmt, base, i, j);
-    else
-        snprintf(o->names[o->n], sizeof o->names[0], fmt, base, i);
-    o->x[o->n] = x;
-    o->lhs[o->n] = o->names[o->n];
-    o->n++;
-}
-
-static void c_fill(const qd__eom_view *v, c_outs *o) {
-    size_t n = v->e->n, m = v->e->ncon;
-    out_name M = pick(v, "M"), f = pick(v, "f"), qdd = pick(v, "qdd");
-    out_name A = pick(v, "A"), b = pick(v, "b");
-    for (size_t i = 0; i < n * n; i++)
-        c_add(o, v->M[i], "%s[%zu][%zu]", M.s, i / n, i % n, true);
-    for (size_t i = 0; i < n; i++)
-        c_add(o, v->f[i], "%s[%zu]", f.s, i, 0, false);
-    for (size_t i = 0; v->acc && i < n; i++)
-        c_add(o, v->acc[i], "%s[%zu]", qdd.s, i, 0, false);
-    for (size_t i = 0; i < m * n; i++)
-        c_add(o, v->A[i], "%s[%zu][%zu]", A.s, i / n, i % n, true);
-    for (size_t k = 0; k < m; k++)
-        c_add(o, v->b[k], "%s[%zu]", b.s, k, 0, false);
-}
-
 static qd_status write_c(const qd__eom_view *v, qd_buf *b) {
-    size_t n = v->e->n, m = v->e->ncon, nout = n * n + 2 * n + m * n + m;
-    c_outs o = {0, qd__malloc(v->ctx, nout * sizeof *o.x), qd__malloc(v->ctx, nout * sizeof *o.names),
-                qd__malloc(v->ctx, nout * sizeof *o.lhs)};
-    qd_status st = QD_ERR_NOMEM;
+    const qd_model *mdl = v->m;
+    size_t n = v->e->n, m = v->e->ncon;
     out_name M = pick(v, "M"), f = pick(v, "f"), qdd = pick(v, "qdd"), A = pick(v, "A");
-    if (o.x && o.names && o.lhs) {
-        c_fill(v, &o);
-        qd_buf_printf(b, "/* qdot eom %s: %s q'' = %s", v->source, M.s, f.s);
-        if (m)
-            qd_buf_printf(b, " + %s^T lambda, %s q'' = %s", A.s, A.s, pick(v, "b").s);
-        if (v->acc && m)
-            qd_buf_printf(b, ", and %s the accelerations that solve them", qdd.s);
-        else if (v->acc)
-            qd_buf_printf(b, ", and %s = %s^-1 %s", qdd.s, M.s, f.s);
-        qd_buf_puts(b, " */\n");
-        c_inputs(v, b);
-        st = qd_print_c_block(v->ctx, o.n, o.x, o.lhs, b);
-    }
-    qd__free(o.x);
-    qd__free(o.names);
-    qd__free(o.lhs);
-    return st;
+    out_name bb = pick(v, "b");
+    qd_buf_printf(b, "/* qdot eom %s: %s q'' = %s", v->source, M.s, f.s);
+    if (m)
+        qd_buf_printf(b, " + %s^T lambda, %s q'' = %s", A.s, A.s, bb.s);
+    if (v->acc && m)
+        qd_buf_printf(b, ", and %s the accelerations that solve them", qdd.s);
+    else if (v->acc)
+        qd_buf_printf(b, ", and %s = %s^-1 %s", qdd.s, M.s, f.s);
+    qd_buf_puts(b, " */\n");
+    const qd__render_part in[] = {{NULL, v->e->q, n, 0, 1}, {NULL, v->e->qd, n, 0, 1}};
+    qd__render_c_inputs(b, mdl, 2, in);
+    if (qd_model_independent(mdl)) /* C keeps t: one spelling for every generated program */
+        qd_buf_printf(b, "/* t is the independent variable %s; the _d, _dd are d/d%s */\n",
+                      qd_model_independent(mdl), qd_model_independent(mdl));
+    const qd__render_part out[] = {{M.s, v->M, n, n, 2}, {f.s, v->f, n, 0, 1},
+                                   {qdd.s, v->acc, n, 0, 1}, {A.s, v->A, m, n, 2},
+                                   {bb.s, v->b, m, 0, 1}};
+    return qd__render_c_block(v->ctx, b, sizeof out / sizeof *out, out);
 }
 
-
-
-static qd_status render(const qd__eom_view *v, qd_render_format fmt, qd_buf *out) {
-    switch (fmt) {
-    case QD_RENDER_LATEX: return write_latex(v, out);
-    case QD_RENDER_JSON: return write_json(v, out);
-    case QD_RENDER_SYMPY: return write_sympy(v, out);
-    case QD_RENDER_C: return write_c(v, out);
-    case QD_RENDER_TEXT: break;
-    }
-    return write_text(v, out);
-}
+/* The writer of each format. */
+static qd_status (*const writers[])(const qd__eom_view *, qd_buf *) = {
+    [QD_RENDER_TEXT] = write_text,   [QD_RENDER_LATEX] = write_latex,
+    [QD_RENDER_JSON] = write_json,   [QD_RENDER_SYMPY] = write_sympy,
+    [QD_RENDER_C] = write_c};
 
 qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                         const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
@@ -694,11 +606,7 @@ qd_status qd_render_eom(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
     v.split = e->T2 && e->T1 && e->T0 && (!qd_is_zero(e->T1) || !qd_is_zero(e->T0));
     qd_status st = o && o->nstate ? qd__render_eom_numbers(&v, o) : QD_OK;
     if (st == QD_OK)
-        st = render(&v, fmt, out);
-    if (st == QD_OK && out->failed) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
-        st = QD_ERR_NOMEM;
-    }
+        st = qd__render_done(ctx, out, writers[fmt](&v, out));
     qd__render_eom_view_free(&v);
     return st;
 }

@@ -1,7 +1,8 @@
 /*
  * src/render/render.h - what the renderers of whole systems share (eom.c,
  * eom_at.c, speeds.c): the names of a script's results, the SymPy lines
- * that bind a model's names, and a number in the digit rule of print.h.
+ * that bind a model's names, the C and SymPy results as parts, and a
+ * number in the digit rule of print.h.
  */
 #ifndef QD_RENDER_RENDER_H
 #define QD_RENDER_RENDER_H
@@ -24,6 +25,27 @@ void qd__render_sympy_bind(qd_ctx *ctx, qd_buf *b, const qd_expr *sym, bool fn);
 qd_status qd__render_sympy_matrix(qd_ctx *ctx, qd_buf *b, const char *name,
                                   const qd_expr *const *x, size_t rows, size_t cols);
 
+/* One result of a rendering (outputs.c): rank 0 the scalar x[0] ("name"),
+ * 1 the vector x[0..rows) ("name[i]"), 2 the rows x cols row-major matrix
+ * ("name[i][j]"); x NULL: none (skipped). */
+typedef struct qd__render_part {
+    const char *name;
+    const qd_expr *const *x;
+    size_t rows, cols;
+    int rank;
+} qd__render_part;
+/* One qd_print_c_block assigning every entry of the parts, in order, so
+ * that their common subexpressions are shared. */
+qd_status qd__render_c_block(qd_ctx *ctx, qd_buf *b, size_t nparts,
+                             const qd__render_part *parts);
+/* The line "inputs (doubles in scope): ..." as a C comment: the C names of the groups'
+ * symbols, t and the parameters of m. */
+void qd__render_c_inputs(qd_buf *b, const qd_model *m, size_t ngroups,
+                         const qd__render_part *groups);
+/* NAME = Function('NAME') for the user functions in the parts' entries. */
+qd_status qd__render_sympy_functions(qd_ctx *ctx, qd_buf *b, size_t nparts,
+                                     const qd__render_part *parts);
+
 /* A value evaluated at a state, in the digits of qd_double_format; -0 as 0. */
 void qd__render_number(qd_buf *b, double x);
 /* "NAME = VALUE, ..." of the parameters of m ("none" without any). */
@@ -41,6 +63,14 @@ void qd__render_state_free(qd_render_opts *full);
 
 /* The value of sym in a state (o->syms, o->vals); NaN when it is absent. */
 double qd__render_value(const qd_render_opts *o, const qd_expr *sym);
+
+/* x as a JSON string in the text syntax (printed through tmp). */
+qd_status qd__render_json_expr(qd_ctx *ctx, struct qd_json *j, const qd_expr *x, qd_buf *tmp);
+/* key: [the names of x[0..n)]. */
+void qd__render_json_names(struct qd_json *j, const char *key, const qd_expr *const *x, size_t n);
+/* st, or QD_ERR_NOMEM (recorded) when out ran out while printing the
+ * equations. */
+qd_status qd__render_done(qd_ctx *ctx, const qd_buf *out, qd_status st);
 
 /* The status after a JSON rendering into b: QD_ERR_NOMEM when b ran out,
  * QD_ERR_NUMERIC for a number JSON cannot hold. */

@@ -224,25 +224,14 @@ static qd_status write_latex(const view *v, qd_buf *b) {
 /* ---- JSON ------------------------------------------------------------------ */
 
 static qd_status json_expr(const view *v, qd_json *j, const qd_expr *x, qd_buf *tmp) {
-    qd_buf_clear(tmp);
-    qd_status st = qd_print(v->ctx, x, QD_FMT_TEXT, tmp);
-    qd_json_string(j, qd_buf_str(tmp));
-    return st;
-}
-
-static void json_names(qd_json *j, const char *key, const qd_expr *const *x, size_t n) {
-    qd_json_key(j, key);
-    qd_json_begin_array(j);
-    for (size_t i = 0; i < n; i++)
-        qd_json_string(j, qd_expr_name(x[i]));
-    qd_json_end_array(j);
+    return qd__render_json_expr(v->ctx, j, x, tmp);
 }
 
 static void json_header(const view *v, qd_json *j) {
     qd_json_key(j, "model");
     qd_json_string(j, v->source);
-    json_names(j, "coordinates", v->e->q, v->e->n);
-    json_names(j, "speeds", v->e->u, v->e->m);
+    qd__render_json_names(j, "coordinates", v->e->q, v->e->n);
+    qd__render_json_names(j, "speeds", v->e->u, v->e->m);
     qd__render_json_params(j, v->m);
     qd_json_key(j, "method");
     qd_json_string(j, qd_speeds_method_name(v->e->method));
@@ -393,11 +382,6 @@ static qd_status write_json(const view *v, qd_buf *b) {
 
 /* ---- SymPy ----------------------------------------------------------------- */
 
-static qd_status sympy_assign(const view *v, qd_buf *b, const char *name,
-                              const qd_expr *const *x, size_t rows, size_t cols) {
-    return qd__render_sympy_matrix(v->ctx, b, name, x, rows, cols);
-}
-
 static qd_status sympy_scalar(const view *v, qd_buf *b, const char *name,
                               const qd_expr *x) {
     qd_buf_printf(b, "%s = ", name);
@@ -409,25 +393,12 @@ static qd_status sympy_scalar(const view *v, qd_buf *b, const char *name,
 /* W = Function('W') for the user functions in everything printed below. */
 static qd_status sympy_functions(const view *v, qd_buf *b) {
     const qd_speeds_eom *e = v->e;
-    size_t n = e->n, m = e->m, c = e->mult ? e->ncon : 0, k = 0;
-    const qd_expr **all = qd__malloc(v->ctx, (n + m * m + m + 2 + c) * sizeof *all);
-    if (!all)
-        return QD_ERR_NOMEM;
-    for (size_t i = 0; i < n; i++)
-        all[k++] = e->kin[i];
-    for (size_t i = 0; i < m * m; i++)
-        all[k++] = e->M[i];
-    for (size_t i = 0; i < m; i++)
-        all[k++] = e->f[i];
-    if (e->T)
-        all[k++] = e->T;
-    if (e->S)
-        all[k++] = e->S;
-    for (size_t i = 0; i < c; i++)
-        all[k++] = e->mult[i];
-    qd_status st = qd_print_sympy_functions(v->ctx, k, all, b);
-    qd__free(all);
-    return st;
+    size_t n = e->n, m = e->m;
+    const qd__render_part parts[] = {
+        {NULL, e->kin, n, 0, 1},          {NULL, e->M, m, m, 2},
+        {NULL, e->f, m, 0, 1},            {NULL, e->T ? &e->T : NULL, 1, 0, 0},
+        {NULL, e->S ? &e->S : NULL, 1, 0, 0}, {NULL, e->mult, e->ncon, 0, 1}};
+    return qd__render_sympy_functions(v->ctx, b, sizeof parts / sizeof *parts, parts);
 }
 
 static qd_status sympy_multipliers(const view *v, qd_buf *b) {
@@ -436,7 +407,7 @@ static qd_status sympy_multipliers(const view *v, qd_buf *b) {
     for (size_t k = 0; k < v->e->ncon; k++)
         qd_buf_printf(b, "%sSymbol('%s')", k ? ", " : "", qd_expr_name(v->e->con[k].lambda));
     qd_buf_puts(b, "])\n");
-    return sympy_assign(v, b, pick(v, "lam_value").s, v->e->mult, v->e->ncon, 1);
+    return qd__render_sympy_matrix(v->ctx, b, pick(v, "lam_value").s, v->e->mult, v->e->ncon, 1);
 }
 
 static qd_status write_sympy(const view *v, qd_buf *b) {
@@ -456,19 +427,19 @@ static qd_status write_sympy(const view *v, qd_buf *b) {
     qd_status st = sympy_functions(v, b);
     qd_buf_puts(b, "\n");
     if (st == QD_OK)
-        st = sympy_assign(v, b, q.s, e->q, e->n, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, q.s, e->q, e->n, 1);
     if (st == QD_OK)
-        st = sympy_assign(v, b, u.s, e->u, e->m, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, u.s, e->u, e->m, 1);
     if (st == QD_OK)
-        st = sympy_assign(v, b, kin.s, e->kin, e->n, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, kin.s, e->kin, e->n, 1);
     if (st == QD_OK && e->T)
         st = sympy_scalar(v, b, pick(v, "T").s, e->T);
     if (st == QD_OK)
-        st = sympy_assign(v, b, M.s, e->M, e->m, e->m);
+        st = qd__render_sympy_matrix(v->ctx, b, M.s, e->M, e->m, e->m);
     if (st == QD_OK)
-        st = sympy_assign(v, b, f.s, e->f, e->m, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, f.s, e->f, e->m, 1);
     if (st == QD_OK && e->acc)
-        st = sympy_assign(v, b, pick(v, "ud").s, e->acc, e->m, 1);
+        st = qd__render_sympy_matrix(v->ctx, b, pick(v, "ud").s, e->acc, e->m, 1);
     if (st == QD_OK && e->S)
         st = sympy_scalar(v, b, pick(v, "S").s, e->S);
     if (st == QD_OK && e->mult)
@@ -478,96 +449,30 @@ static qd_status write_sympy(const view *v, qd_buf *b) {
 
 /* ---- C --------------------------------------------------------------------- */
 
-/* The doubles the block reads: q, u, u' (when S or lambda need them), t and
- * the parameters. */
-static void c_inputs(const view *v, qd_buf *b) {
-    const qd_model *mdl = v->m;
-    const qd_speeds_eom *e = v->e;
-    qd_buf_puts(b, "/* inputs (doubles in scope):");
-    for (size_t j = 0; j < e->n; j++) {
-        qd_buf_puts(b, " ");
-        qd_c_name(e->q[j], b);
-    }
-    for (size_t r = 0; r < e->m; r++) {
-        qd_buf_puts(b, " ");
-        qd_c_name(e->u[r], b);
-    }
-    for (size_t r = 0; (e->S || e->mult) && r < e->m; r++) {
-        qd_buf_puts(b, " ");
-        qd_c_name(e->ud[r], b);
-    }
-    qd_buf_puts(b, " t");
-    for (size_t i = 0; i < qd_model_nparams(mdl); i++) {
-        qd_buf_puts(b, " ");
-        qd_c_name(qd_model_param(mdl, i), b);
-    }
-    qd_buf_puts(b, " */\n");
-}
-
-typedef struct c_outs {
-    size_t n;
-    const qd_expr **x;
-    char (*names)[96];
-    const char **lhs;
-} c_outs;
-
-static void c_add(c_outs *o, const qd_expr *x, const char *base, long i, long j) {
-    if (j >= 0)
-        snprintf(o->names[o->n], sizeof o->names[0], "%s[%ld][%ld]", base, i, j);
-    else if (i >= 0)
-        snprintf(o->names[o->n], sizeof o->names[0], "%s[%ld]", base, i);
-    else
-        snprintf(o->names[o->n], sizeof o->names[0], "%s", base);
-    o->x[o->n] = x;
-    o->lhs[o->n] = o->names[o->n];
-    o->n++;
-}
-
-static void c_fill(const view *v, c_outs *o) {
-    const qd_speeds_eom *e = v->e;
-    long n = (long)e->n, m = (long)e->m;
-    qd__render_name qd = pick(v, "qd"), M = pick(v, "M"), f = pick(v, "f");
-    for (long j = 0; j < n; j++)
-        c_add(o, e->kin[j], qd.s, j, -1);
-    for (long i = 0; i < m * m; i++)
-        c_add(o, e->M[i], M.s, i / m, i % m);
-    for (long r = 0; r < m; r++)
-        c_add(o, e->f[r], f.s, r, -1);
-    for (long r = 0; e->acc && r < m; r++)
-        c_add(o, e->acc[r], pick(v, "ud").s, r, -1);
-    if (e->S)
-        c_add(o, e->S, pick(v, "S").s, -1, -1);
-    for (long k = 0; e->mult && k < (long)e->ncon; k++)
-        c_add(o, e->mult[k], pick(v, "lambda").s, k, -1);
-}
-
 static qd_status write_c(const view *v, qd_buf *b) {
     const qd_speeds_eom *e = v->e;
-    size_t nout = e->n + e->m * e->m + 2 * e->m + 1 + e->ncon;
-    c_outs o = {0, qd__malloc(v->ctx, nout * sizeof *o.x), qd__malloc(v->ctx, nout * sizeof *o.names),
-                qd__malloc(v->ctx, nout * sizeof *o.lhs)};
-    qd_status st = QD_ERR_NOMEM;
-    if (o.x && o.names && o.lhs) {
-        c_fill(v, &o);
-        qd_buf_printf(b, "/* qdot eom %s (speeds, %s): q' = %s, %s u' = %s", v->source,
-                      qd_speeds_method_name(e->method), pick(v, "qd").s, pick(v, "M").s,
-                      pick(v, "f").s);
-        if (e->acc)
-            qd_buf_printf(b, ", the rates that solve them %s", pick(v, "ud").s);
-        if (e->S)
-            qd_buf_printf(b, ", the Gibbs-Appell function %s", pick(v, "S").s);
-        if (e->mult)
-            qd_buf_printf(b, ", the multipliers %s", pick(v, "lambda").s);
-        qd_buf_puts(b, " */\n");
-        c_inputs(v, b);
-        st = qd_print_c_block(v->ctx, o.n, o.x, o.lhs, b);
-    }
-    qd__free(o.x);
-    qd__free(o.names);
-    qd__free(o.lhs);
-    return st;
+    size_t n = e->n, m = e->m;
+    qd__render_name qd = pick(v, "qd"), M = pick(v, "M"), f = pick(v, "f");
+    qd__render_name ud = pick(v, "ud"), S = pick(v, "S"), lambda = pick(v, "lambda");
+    qd_buf_printf(b, "/* qdot eom %s (speeds, %s): q' = %s, %s u' = %s", v->source,
+                  qd_speeds_method_name(e->method), qd.s, M.s, f.s);
+    if (e->acc)
+        qd_buf_printf(b, ", the rates that solve them %s", ud.s);
+    if (e->S)
+        qd_buf_printf(b, ", the Gibbs-Appell function %s", S.s);
+    if (e->mult)
+        qd_buf_printf(b, ", the multipliers %s", lambda.s);
+    qd_buf_puts(b, " */\n");
+    /* the block reads u' only when S or lambda need it */
+    const qd__render_part in[] = {{NULL, e->q, n, 0, 1}, {NULL, e->u, m, 0, 1},
+                                  {NULL, e->S || e->mult ? e->ud : NULL, m, 0, 1}};
+    qd__render_c_inputs(b, v->m, 3, in);
+    const qd__render_part out[] = {{qd.s, e->kin, n, 0, 1},       {M.s, e->M, m, m, 2},
+                                   {f.s, e->f, m, 0, 1},          {ud.s, e->acc, m, 0, 1},
+                                   {S.s, e->S ? &e->S : NULL, 1, 0, 0},
+                                   {lambda.s, e->mult, e->ncon, 0, 1}};
+    return qd__render_c_block(v->ctx, b, sizeof out / sizeof *out, out);
 }
-
 
 /* ---- at a state ------------------------------------------------------------- */
 
@@ -605,16 +510,11 @@ static qd_status numbers(const view *v, const qd_render_opts *o, double *num) {
     return st;
 }
 
-static qd_status render(const view *v, qd_render_format fmt, qd_buf *out) {
-    switch (fmt) {
-    case QD_RENDER_LATEX: return write_latex(v, out);
-    case QD_RENDER_JSON: return write_json(v, out);
-    case QD_RENDER_SYMPY: return write_sympy(v, out);
-    case QD_RENDER_C: return write_c(v, out);
-    case QD_RENDER_TEXT: break;
-    }
-    return write_text(v, out);
-}
+/* The writer of each format. */
+static qd_status (*const writers[])(const view *, qd_buf *) = {
+    [QD_RENDER_TEXT] = write_text,   [QD_RENDER_LATEX] = write_latex,
+    [QD_RENDER_JSON] = write_json,   [QD_RENDER_SYMPY] = write_sympy,
+    [QD_RENDER_C] = write_c};
 
 qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e,
                            const qd_render_opts *o, qd_render_format fmt, qd_buf *out) {
@@ -639,11 +539,7 @@ qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *
         v.lambda = e->mult ? num + e->n + e->m : NULL;
     }
     if (st == QD_OK)
-        st = render(&v, fmt, out);
-    if (st == QD_OK && out->failed) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the equations");
-        st = QD_ERR_NOMEM;
-    }
+        st = qd__render_done(ctx, out, writers[fmt](&v, out));
     qd__free(num);
     qd__render_state_free(&full);
     return st;

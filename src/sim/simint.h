@@ -161,6 +161,16 @@ qd_status qd__sim_uin_failed(qd_sim *s);
 /* Compile outs into a program over s's inputs (angle sums expanded as the
  * generated C does); *count = nout.  NULL on failure, reason in ctx. */
 qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count);
+/* The same over the concatenation of nparts arrays, parts[i] of size[i]
+ * outputs; *count their total. */
+qd_prog *qd__sim_prog_of(qd_sim *s, size_t nparts, const qd_expr *const *const *parts,
+                         const size_t *size, size_t *count);
+/* A system being made: a copy of *init allocated in ctx, or NULL (out of
+ * memory, recorded). */
+qd_sim *qd__sim_alloc(qd_ctx *ctx, const qd_sim *init);
+/* s when st is QD_OK; else NULL with s freed and the error in ctx (what,
+ * when nothing more precise was recorded). */
+qd_sim *qd__sim_made(qd_sim *s, qd_status st, const char *what);
 /* The programs' inputs: q, qd (n each), t, the parameters (their values
  * into s->par) and ntail more that the caller fills (the multipliers, or
  * the speeds). */

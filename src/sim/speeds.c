@@ -39,18 +39,10 @@ static qd_status inputs(qd_sim *s) {
  * the rows, udef for the initial speeds, con for the residuals. */
 static qd_status compile(qd_sim *s) {
     const qd_speeds_eom *e = s->se;
-    size_t n = s->n, nu = s->nu, k = 0;
-    const qd_expr **outs = qd__malloc(s->ctx, (n + nu * nu + nu + 1) * sizeof *outs);
-    if (!outs)
-        return QD_ERR_NOMEM;
-    for (size_t j = 0; j < n; j++)
-        outs[k++] = e->kin[j];
-    for (size_t i = 0; i < nu * nu; i++)
-        outs[k++] = e->M[i];
-    for (size_t r = 0; r < nu; r++)
-        outs[k++] = e->f[r];
-    s->acc = qd__sim_prog(s, k, outs, &s->acc_n);
-    qd__free(outs);
+    size_t n = s->n, nu = s->nu;
+    const qd_expr *const *parts[] = {e->kin, e->M, e->f};
+    const size_t size[] = {n, nu * nu, nu};
+    s->acc = qd__sim_prog_of(s, 3, parts, size, &s->acc_n);
     if (s->acc)
         s->kin = qd__sim_prog(s, n, e->kin, &s->kin_n);
     if (s->kin)
@@ -111,13 +103,10 @@ qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e
     QD_ARGS(NULL, ctx && m && e);
     if (check(ctx, m, e) != QD_OK)
         return NULL;
-    qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
-    if (!s) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+    qd_sim *s = qd__sim_alloc(ctx, &(qd_sim){.ctx = ctx, .model = m, .se = e, .n = e->n,
+                                            .m = e->ncon, .nu = e->m, .cons = e->con});
+    if (!s)
         return NULL;
-    }
-    *s = (qd_sim){.ctx = ctx, .model = m, .se = e, .n = e->n, .m = e->ncon, .nu = e->m,
-                  .cons = e->con};
     qd_status st = inputs(s);
     if (st == QD_OK)
         st = compile(s);
@@ -125,13 +114,7 @@ qd_sim *qd_sim_new_speeds(qd_ctx *ctx, const qd_model *m, const qd_speeds_eom *e
         st = analyse(s);
     if (st == QD_OK)
         st = qd__sim_names(s);
-    if (st != QD_OK) {
-        if (qd_ctx_status(ctx) == QD_OK)
-            qd_ctx_error(ctx, st, "cannot compile the equations in speeds for simulation");
-        qd_sim_free(s);
-        return NULL;
-    }
-    return s;
+    return qd__sim_made(s, st, "cannot compile the equations in speeds for simulation");
 }
 
 size_t qd_sim_nspeeds(const qd_sim *s) { QD_ARGS(0, s); return s->nu; }

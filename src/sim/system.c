@@ -41,12 +41,18 @@ static bool has_any(const qd_expr *x, size_t n, const qd_expr *const *syms) {
  * are expanded first when that saves calls to the maths library (the
  * pendulum chain's cos(theta_j - theta_k): see src/codegen/angles.c), the
  * rewrite the generated C uses, so both paths compute the same formulas. */
-qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count) {
+qd_prog *qd__sim_prog_of(qd_sim *s, size_t nparts, const qd_expr *const *const *parts,
+                         const size_t *size, size_t *count) {
+    size_t nout = 0, k = 0;
+    for (size_t i = 0; i < nparts; i++)
+        nout += size[i];
     const qd_expr **x = qd__malloc(s->ctx, (nout + 1) * sizeof *x);
     bool applied;
     qd_prog *p = NULL;
     if (x) {
-        memcpy(x, outs, nout * sizeof *x);
+        for (size_t i = 0; i < nparts; i++)
+            for (size_t j = 0; j < size[i]; j++)
+                x[k++] = parts[i][j];
         if (qd__cg_angle_sums(s->ctx, nout, x, &applied) == QD_OK)
             p = qd_prog_new(s->ctx, s->nin, s->in_syms, nout, x);
         qd__free(x);
@@ -55,6 +61,10 @@ qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t
     }
     *count = nout;
     return p;
+}
+
+qd_prog *qd__sim_prog(qd_sim *s, size_t nout, const qd_expr *const *outs, size_t *count) {
+    return qd__sim_prog_of(s, 1, &outs, &nout, count);
 }
 
 qd_status qd__sim_inputs(qd_sim *s, const qd_expr *const *q, const qd_expr *const *qd,
@@ -100,20 +110,10 @@ static qd_status setup_inputs(qd_sim *s) {
 
 static qd_status compile_acc(qd_sim *s) {
     const qd_eom *e = s->e;
-    size_t n = s->n, m = s->m, k = 0;
-    const qd_expr **outs = qd__malloc(s->ctx, (n * n + n + 3 * m * (n + 1) + 1) * sizeof *outs);
-    if (!outs)
-        return QD_ERR_NOMEM;
-    for (size_t i = 0; i < n * n; i++)
-        outs[k++] = e->M[i];
-    for (size_t i = 0; i < n; i++)
-        outs[k++] = e->f[i];
-    for (size_t i = 0; i < m * n; i++)
-        outs[k++] = e->A[i];
-    for (size_t i = 0; i < m; i++)
-        outs[k++] = e->b[i];
-    s->acc = qd__sim_prog(s, k, outs, &s->acc_n);
-    qd__free(outs);
+    size_t n = s->n, m = s->m;
+    const qd_expr *const *parts[] = {e->M, e->f, e->A, e->b};
+    const size_t size[] = {n * n, n, m * n, m};
+    s->acc = qd__sim_prog_of(s, 4, parts, size, &s->acc_n);
     if (!s->acc)
         return qd_ctx_status(s->ctx);
     return qd__sim_con_prog(s);
@@ -199,15 +199,9 @@ static qd_status compile_canonical(qd_sim *s) {
     size_t n = s->n;
     if (!s->canonical)
         return QD_OK;
-    const qd_expr **outs = qd__malloc(s->ctx, (n * n + n) * sizeof *outs);
-    if (!outs)
-        return QD_ERR_NOMEM;
-    for (size_t i = 0; i < n * n; i++)
-        outs[i] = s->e->M[i];
-    for (size_t i = 0; i < n; i++)
-        outs[n * n + i] = s->b_expr[i];
-    s->mom = qd__sim_prog(s, n * n + n, outs, &s->mom_n);
-    qd__free(outs);
+    const qd_expr *const *parts[] = {s->e->M, s->b_expr};
+    const size_t size[] = {n * n, n};
+    s->mom = qd__sim_prog_of(s, 2, parts, size, &s->mom_n);
     if (s->mom)
         s->force = qd__sim_prog(s, n, s->force_expr, &s->force_n);
     return s->mom && s->force ? QD_OK : qd_ctx_status(s->ctx);
@@ -270,6 +264,24 @@ qd_status qd__sim_names(qd_sim *s) {
     return QD_OK;
 }
 
+qd_sim *qd__sim_alloc(qd_ctx *ctx, const qd_sim *init) {
+    qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
+    if (!s)
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+    else
+        *s = *init;
+    return s;
+}
+
+qd_sim *qd__sim_made(qd_sim *s, qd_status st, const char *what) {
+    if (st == QD_OK)
+        return s;
+    if (qd_ctx_status(s->ctx) == QD_OK)
+        qd_ctx_error(s->ctx, st, "%s", what);
+    qd_sim_free(s);
+    return NULL;
+}
+
 qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     QD_ARGS(NULL, ctx && m && e);
     if (e->nelim) {
@@ -277,12 +289,10 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
                                       "coordinates");
         return NULL;
     }
-    qd_sim *s = qd__calloc(ctx, 1, sizeof *s);
-    if (!s) {
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
+    qd_sim *s = qd__sim_alloc(ctx, &(qd_sim){.ctx = ctx, .model = m, .e = e, .n = e->n,
+                                            .m = e->ncon, .cons = e->con});
+    if (!s)
         return NULL;
-    }
-    *s = (qd_sim){.ctx = ctx, .model = m, .e = e, .n = e->n, .m = e->ncon, .cons = e->con};
     qd_status st = setup_inputs(s);
     if (st == QD_OK)
         st = compile_acc(s);
@@ -296,13 +306,7 @@ qd_sim *qd_sim_new(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
         st = qd__sim_names(s);
     if (st == QD_OK)
         st = qd__sim_impact_setup(s);
-    if (st != QD_OK) {
-        if (qd_ctx_status(ctx) == QD_OK)
-            qd_ctx_error(ctx, st, "cannot compile the equations for simulation");
-        qd_sim_free(s);
-        return NULL;
-    }
-    return s;
+    return qd__sim_made(s, st, "cannot compile the equations for simulation");
 }
 
 void qd_sim_free(qd_sim *s) {
