@@ -29,7 +29,6 @@ typedef struct sweep_args {
     size_t n;              /* --runs: the random runs (0: not given) */
     double seed, threads;
     double renorm, transient; /* the lyapunov measures */
-    size_t nuser;          /* --event and --stop-at: the first is the measure event's */
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
@@ -37,20 +36,16 @@ typedef struct sweep_args {
 static int whole(const char *opt, const char *v, double *x, double most) {
     char *end;
     *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > most) {
-        cli_diag_error("%s takes a whole number from 0 to %.0f, not '%s'", opt, most, v);
-        return QD_EXIT_USAGE;
-    }
+    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > most)
+        return cli_usage_error("%s takes a whole number from 0 to %.0f, not '%s'", opt, most, v);
     return QD_EXIT_OK;
 }
 
 static int positive(const char *opt, const char *v, double *x) {
     char *end;
     *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || !isfinite(*x)) {
-        cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
-        return QD_EXIT_USAGE;
-    }
+    if (end == v || *end || !(*x >= 0) || !isfinite(*x))
+        return cli_usage_error("%s takes a number >= 0, not '%s'", opt, v);
     return QD_EXIT_OK;
 }
 
@@ -115,77 +110,14 @@ static int check_args(const sweep_args *a) {
                           : !a->measure          ? "--measure"
                           : a->random && !a->n   ? "--runs (the number of random runs)"
                                                  : NULL;
-    if (missing) {
-        cli_diag_error("%s %s (qdot sweep --help)", how > 1 ? "give only" : "missing:", missing);
-        return QD_EXIT_USAGE;
-    }
-    if (a->map_measure && !a->map) {
-        cli_diag_error("--map-measure says what to draw: give the file with --map FILE.png");
-        return QD_EXIT_USAGE;
-    }
-    if (a->n && !a->random) {
-        cli_diag_error("--runs is for --random");
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
+    if (missing)
+        return cli_usage_error("%s %s (qdot sweep --help)", how > 1 ? "give only" : "missing:",
+                               missing);
+    if (a->map_measure && !a->map)
+        return cli_usage_error("--map-measure says what to draw: give the file with --map "
+                               "FILE.png");
+    return a->n && !a->random ? cli_usage_error("--runs is for --random") : QD_EXIT_OK;
 }
-
-/* ---- what the measures need (qd_sweep_needs) ------------------------------ */
-
-/* Before the model: the event or section a measure needs, and the section
- * as the event after the user's (poincare-count counts its crossings). */
-static int more_events(sweep_args *a) {
-    unsigned flags;
-    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
-    a->nuser = a->sim.events.n + a->sim.stops.n;
-    if (!a->nuser && (flags & QD_SWEEP_NEEDS_EVENT)) {
-        cli_diag_error("the measure event needs --event or --stop-at (its first is the one)");
-        return QD_EXIT_USAGE;
-    }
-    if (!a->section && (flags & QD_SWEEP_NEEDS_SECTION)) {
-        cli_diag_error("the measure poincare-count needs --section");
-        return QD_EXIT_USAGE;
-    }
-    if (a->section && a->nuser == QD_SIM_MAX_LIST) {
-        cli_diag_error("at most %d events with the --section", QD_SIM_MAX_LIST - 1);
-        return QD_EXIT_USAGE;
-    }
-    a->sim.section = a->section; /* the event after the user's (cli_sim_setup) */
-    return QD_EXIT_OK;
-}
-
-/* The measures' outputs and escape crossings, read as --output and --event
- * read them (the model's namespace), errors shown in the --measure text. */
-static int measure_needs(cli_sim *c, const char *spec) {
-    if (qd_sweep_setup_measures(c->ctx, c->set, spec) != QD_OK)
-        return cli_sim_fail_in(c, "--measure", spec);
-    return QD_EXIT_OK;
-}
-
-/* ---- the runs ----------------------------------------------------------- */
-
-/* Where a bad spec is shown: the option's text with a caret. */
-static int spec_error(const qd_ctx *ctx, const char *opt, const char *spec) {
-    cli_diag_show(opt, spec, qd_ctx_diag(ctx));
-    return qd_ctx_status(ctx) == QD_ERR_NOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
-}
-
-static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
-    if (a->grid && qd_sweep_grid(w, a->grid) != QD_OK)
-        return spec_error(ctx, "--grid", a->grid);
-    if (a->random && qd_sweep_random(w, a->random, a->n, (uint64_t)a->seed) != QD_OK)
-        return spec_error(ctx, "--random", a->random);
-    if (!a->list)
-        return QD_EXIT_OK;
-    char *text = NULL;
-    size_t len;
-    int rc = cli_read_text(a->list, "a list of runs", &text, &len);
-    if (rc == QD_EXIT_OK && qd_sweep_list_csv(w, text) != QD_OK)
-        rc = spec_error(ctx, a->list, text);
-    free(text);
-    return rc;
-}
-
 
 static void progress(void *data, size_t done, size_t total) {
     cli_progress_update(data, (double)done / (double)total, (double)done);
@@ -216,19 +148,11 @@ static int write_hdf5(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a,
     return QD_EXIT_OK;
 }
 
-/* Before the runs: hdf5 is written to a file, by a qdot with its module. */
+/* Before the model: hdf5 is written to a file. */
 static int check_output(const sweep_args *a, size_t fmt) {
-    if (writers[fmt].write)
-        return QD_EXIT_OK;
-    if (!a->sim.out) {
-        cli_diag_error("--format hdf5 writes a file: give it with -o FILE.h5");
-        return QD_EXIT_USAGE;
-    }
-    qd_ctx *ctx = qd_ctx_new();
-    int rc = !ctx ? QD_EXIT_FAIL : qd_sweep_hdf5_ready(ctx) == QD_OK ? QD_EXIT_OK
-                                                                    : cli_diag_ctx(ctx);
-    qd_ctx_free(ctx);
-    return rc;
+    return writers[fmt].write || a->sim.out
+               ? QD_EXIT_OK
+               : cli_usage_error("--format hdf5 writes a file: give it with -o FILE.h5");
 }
 
 static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t fmt,
@@ -314,45 +238,36 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     return rc;
 }
 
-/* The measures lyapunov and lyapunov-spectrum: the variational equations
- * of the same model (qdot/lyapunov.h), or NULL when none is asked for. */
-static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly) {
-    unsigned flags;
-    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
-    if (!(flags & QD_SWEEP_NEEDS_LYAP))
-        return QD_EXIT_OK;
-    if (!c->e) {
-        cli_diag_error("the lyapunov measures take a model in the multiplier form (not given "
-                       "by H, not in speeds: --no-speeds)");
-        return QD_EXIT_USAGE;
-    }
-    *ly = qd_lyap_new(c->ctx, c->mf.model, c->e);
-    qd_lyap_opts lo = {.renorm = a->renorm, .transient = a->transient};
-    if (!*ly || qd_sweep_set_lyap(w, *ly, &lo) != QD_OK)
-        return cli_diag_ctx(c->ctx);
-    return QD_EXIT_OK;
+/* A refused set-up: shown in the text it is located in, or with its option. */
+static int setup_error(cli_sim *c, const sweep_args *a, const char *where, const char *csv) {
+    const struct { const char *field, *opt, *text; } f[] = {
+        {"grid", "--grid", a->grid}, {"random", "--random", a->random},
+        {"list_csv", a->list, csv}, {"measures", "--measure", a->measure}};
+    for (size_t i = 0; where && i < sizeof f / sizeof f[0]; i++)
+        if (!strcmp(where, f[i].field))
+            return cli_sim_fail_in(c, f[i].opt, f[i].text);
+    return cli_diag_ctx(c->ctx);
 }
 
+/* The sweep set up by the library (qd_sweep_setup_new), then run. */
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
-    int rc = measure_needs(c, a->measure);
-    if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
-        rc = cli_diag_ctx(c->ctx);
-    qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_new(c->ctx, c->s, c->mf.model) : NULL;
-    if (rc == QD_EXIT_OK && !w)
-        rc = cli_diag_ctx(c->ctx);
+    qd_sweep_spec sp = {.grid = a->grid, .random = a->random, .n = a->n,
+                        .seed = (uint64_t)a->seed, .measures = a->measure,
+                        .nevents = a->sim.events.n + a->sim.stops.n, .section = a->section != NULL,
+                        .renorm = a->renorm, .transient = a->transient};
+    char *csv = NULL;
+    size_t len;
+    int rc = a->list ? cli_read_text(a->list, "a list of runs", &csv, &len) : QD_EXIT_OK;
+    if (rc == QD_EXIT_OK && !writers[fmt].write && qd_sweep_hdf5_ready(c->ctx) != QD_OK)
+        rc = cli_diag_ctx(c->ctx); /* before the runs: a qdot without the module */
+    sp.list_csv = csv;
+    const char *where = NULL;
+    qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_setup_new(c->ctx, c->set, c->mf.model, &sp, &where)
+                                   : NULL;
     if (rc == QD_EXIT_OK)
-        rc = set_runs(w, a, c->ctx);
-    if (rc == QD_EXIT_OK && qd_sweep_measures(w, a->measure) != QD_OK)
-        rc = spec_error(c->ctx, "--measure", a->measure);
-    if (rc == QD_EXIT_OK && a->section && qd_sweep_set_section(w, a->nuser) != QD_OK)
-        rc = cli_diag_ctx(c->ctx);
-    qd_lyap *ly = NULL;
-    if (rc == QD_EXIT_OK)
-        rc = lyap_setup(c, w, a, &ly);
-    if (rc == QD_EXIT_OK)
-        rc = run_all(c, w, a, fmt);
+        rc = w ? run_all(c, w, a, fmt) : setup_error(c, a, where, csv);
     qd_sweep_free(w);
-    qd_lyap_free(ly);
+    free(csv);
     return rc;
 }
 
@@ -370,7 +285,9 @@ int cli_cmd_sweep(int argc, char **argv) {
         rc = check_output(&a, fmt);
     if (rc != QD_EXIT_OK)
         return rc;
-    rc = more_events(&a);
+    if (a.section && a.sim.events.n + a.sim.stops.n == QD_SIM_MAX_LIST)
+        return cli_usage_error("at most %d events with the --section", QD_SIM_MAX_LIST - 1);
+    a.sim.section = a.section; /* the event after the user's (cli_sim_setup) */
     cli_sim c = {0};
     if (rc == QD_EXIT_OK)
         rc = cli_sim_setup(&c, &a.sim);

@@ -140,6 +140,31 @@ struct qd_sim_setup;
 QD_API qd_status qd_sweep_setup_measures(qd_ctx *ctx, struct qd_sim_setup *set,
                                          const char *spec); /* ctx: set's */
 
+/* A whole sweep as its texts give it (qdot sweep's options). */
+typedef struct qd_sweep_spec {
+    const char *grid, *random, *list_csv; /* the runs: exactly one (list_csv: CSV text) */
+    size_t n;                  /* random: the number of runs */
+    uint64_t seed;             /* random: the seed */
+    const char *measures;      /* required */
+    size_t nevents;            /* the events set has before the section (`event`: the first) */
+    bool section;              /* event nevents of set is poincare-count's section */
+    double renorm, transient;  /* the Lyapunov measures' qd_lyap_opts (0: the defaults) */
+} qd_sweep_spec;
+
+/* The sweep of sp over set's run: refused first when the measures need
+ * what the run lacks (`event` an event, `poincare-count` the section, the
+ * Lyapunov measures Lagrange's equations) or sp gives not exactly one kind
+ * of runs; then the measures' needs added to set (qd_sweep_setup_measures),
+ * its run compiled, the runs, the measures, the section and the Lyapunov
+ * measures' variational equations (made from m and set's equations, owned
+ * by the sweep).  set and m must outlive the sweep; ctx is set's.  NULL on
+ * failure, the reason in ctx: an error in a text is located in it and
+ * *where (may be NULL) names its field ("grid", "random", "list_csv",
+ * "measures"), else *where is NULL and a refusal names the field it is
+ * about in qd_diag.name ("grid", "event", "section", "no_speeds"). */
+QD_API qd_sweep *qd_sweep_setup_new(qd_ctx *ctx, struct qd_sim_setup *set, const qd_model *m,
+                                    const qd_sweep_spec *sp, const char **where);
+
 /* ---- a grid of two axes as a colour map (qdot sweep --map) -------------- */
 
 /* The measure column a map draws: measure NULL, the first measure column;
@@ -306,7 +331,8 @@ QD_API qd_status qd_sweep_hdf5(qd_ctx *ctx, const qd_sweep *w, const double *row
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_sweep_set_lyap (lo); qd_sweep_run
  * (data, progress); qd_sweep_run_one (stop); qd_sweep_needs (s; needs, when
- * cap is 0); qd_sweep_prepare (read, data); qd_sweep_map_column (measure).
+ * cap is 0); qd_sweep_prepare (read, data); qd_sweep_map_column (measure);
+ * qd_sweep_setup_new (where).
  * An array whose count is 0 may be NULL.  qd_sweep_outcome_str returns
  * NULL for a NULL o or out, or cap 0. */
 #endif

@@ -5738,6 +5738,16 @@ static void null_sweep(void **state)
     /* spec NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_setup_measures(F.ctx, NULL, NULL));
     reset(&F);
+    /* ---- qd_sweep_setup_new */
+    /* ctx NULL */
+    assert_null(qd_sweep_setup_new(NULL, NULL, F.model, NULL, (const char * *)F.names));
+    reset(&F);
+    /* set NULL */
+    assert_null(qd_sweep_setup_new(F.ctx, NULL, F.model, NULL, (const char * *)F.names));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_sweep_setup_new(F.ctx, NULL, NULL, NULL, (const char * *)F.names));
+    reset(&F);
     /* ---- qd_sweep_map_column */
     /* w NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_map_column(NULL, "q", F.z));

@@ -1,0 +1,193 @@
+/*
+ * tests/sweep/test_sweep_setup.c - a whole sweep set up from its texts
+ * (qd_sweep_setup_new, as qdot sweep takes it):
+ *
+ *   - the pendulum's period against the amplitude: from rest at theta0 the
+ *     first downward crossing of theta = 0 is a quarter period,
+ *     T/4 = sqrt(l/g) K(sin(theta0/2)) (Landau & Lifshitz, Mechanics,
+ *     sec. 11, problem 1; K the complete elliptic integral of the first
+ *     kind, here by the arithmetic-geometric mean, K(k) = pi / (2
+ *     AGM(1, sqrt(1 - k^2)))), the `event` measure over a grid of theta0;
+ *   - poincare-count of the oscillator (w = 1) with the section x = 0,
+ *     x' > 0: one crossing a period, floor(t_end / 2 pi) of them from x = 1;
+ *   - the Lyapunov measures made by the set-up: the oscillator's largest
+ *     exponent is 0 (an integrable motion, Lichtenberg & Lieberman sec.
+ *     5.2), the spectrum sums to 0 (Liouville), from a list of runs;
+ *   - the refusals, each naming the field it is about: `event` with no
+ *     event, poincare-count with no section, the Lyapunov measures of a
+ *     model given by H, an error in the grid's or the measures' text
+ *     located there.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "qdot/qdot.h"
+#include "qdot/simsetup.h"
+#include "qdot/sweep.h"
+
+#define PI 3.14159265358979323846
+
+static const char pendulum[] = "coordinates theta\nparameters g = 9.81, l = 2\n"
+                               "T = l^2*theta'^2/2\nV = -g*l*cos(theta)\n";
+static const char osc[] = "coordinates x\nT = x'^2/2\nV = x^2/2\ninitial x = 1\n";
+
+typedef struct fix {
+    qd_ctx *ctx;
+    qd_model *m;
+    qd_sim_setup *set;
+} fix;
+
+static fix load(const char *text) {
+    fix f = {qd_ctx_new(), NULL, NULL};
+    f.m = qd_model_parse(f.ctx, text, NULL);
+    assert_non_null(f.m);
+    f.set = qd_sim_setup_new(f.ctx, f.m, false);
+    assert_non_null(f.set);
+    return f;
+}
+
+static qd_sim_opts options(fix *f, const char *t_end) {
+    qd_sim_setup_opts so = {.t_end = t_end, .rtol = "1e-11", .atol = "1e-13"};
+    qd_sim_opts o;
+    assert_int_equal(qd_sim_setup_options(f->set, &so, &o), QD_OK);
+    return o;
+}
+
+static void unload(fix *f) {
+    qd_sim_setup_free(f->set);
+    qd_model_free(f->m);
+    qd_ctx_free(f->ctx);
+}
+
+static double K(double k) {
+    double a = 1, b = sqrt(1 - k * k);
+    for (int i = 0; i < 40; i++) {
+        double m = (a + b) / 2;
+        b = sqrt(a * b);
+        a = m;
+    }
+    return PI / (2 * a);
+}
+
+static void test_pendulum_period(void **state) {
+    (void)state;
+    fix f = load(pendulum);
+    assert_int_equal(qd_sim_setup_event(f.set, "theta = 0, theta' < 0", false), QD_OK);
+    qd_sim_opts o = options(&f, "10");
+    qd_sweep_spec sp = {.grid = "theta = 0.1:2.9:8", .measures = "event", .nevents = 1};
+    const char *where = "x";
+    qd_sweep *w = qd_sweep_setup_new(f.ctx, f.set, f.m, &sp, &where);
+    assert_non_null(w);
+    assert_null(where);
+    qd_sweep_result r;
+    assert_int_equal(qd_sweep_result_run(f.ctx, w, &o, 2, NULL, NULL, &r), QD_OK);
+    assert_int_equal(r.nruns, 8);
+    assert_int_equal(r.failed, 0);
+    for (size_t i = 0; i < r.nruns; i++) {
+        double th0 = r.rows[i * r.ncols], quarter = sqrt(2 / 9.81) * K(sin(th0 / 2));
+        assert_true(fabs(r.rows[i * r.ncols + 1] - quarter) < 1e-8 * quarter);
+    }
+    qd_sweep_result_free(&r);
+    qd_sweep_free(w);
+    unload(&f);
+}
+
+static void test_section_count(void **state) {
+    (void)state;
+    fix f = load(osc);
+    assert_int_equal(qd_sim_setup_event(f.set, "x = 0, x' > 0", false), QD_OK);
+    qd_sim_opts o = options(&f, "1"); /* each run's own t_end below */
+    qd_sweep_spec sp = {.random = "x' = -0.5:0.5", .n = 6, .seed = 3,
+                        .measures = "poincare-count, final", .section = true};
+    qd_sweep *w = qd_sweep_setup_new(f.ctx, f.set, f.m, &sp, NULL);
+    assert_non_null(w);
+    o.t_end = 20.5; /* 3 periods and a quarter plus: 3 upward crossings of x = 0 */
+    qd_sweep_result r;
+    assert_int_equal(qd_sweep_result_run(f.ctx, w, &o, 1, NULL, NULL, &r), QD_OK);
+    assert_int_equal(r.nruns, 6);
+    for (size_t i = 0; i < r.nruns; i++) {
+        /* x = cos t + v sin t = A cos(t - phi): an upward zero each period */
+        double v = r.rows[i * r.ncols], phi = atan2(v, 1), n = 0;
+        for (int k = 0; k < 10; k++) {
+            double t = phi + 3 * PI / 2 + 2 * PI * (k - 1);
+            n += t > 0 && t < o.t_end;
+        }
+        assert_true(r.rows[i * r.ncols + 1] == n);
+    }
+    qd_sweep_result_free(&r);
+    qd_sweep_free(w);
+    unload(&f);
+}
+
+static void test_lyapunov(void **state) {
+    (void)state;
+    fix f = load(osc);
+    qd_sim_opts o = options(&f, "200");
+    qd_sweep_spec sp = {.list_csv = "x,x'\n1,0\n0.5,0.5\n", .measures = "lyapunov, "
+                        "lyapunov-spectrum", .renorm = 1, .transient = 10};
+    qd_sweep *w = qd_sweep_setup_new(f.ctx, f.set, f.m, &sp, NULL);
+    assert_non_null(w);
+    qd_sweep_result r;
+    assert_int_equal(qd_sweep_result_run(f.ctx, w, &o, 1, NULL, NULL, &r), QD_OK);
+    assert_int_equal(r.failed, 0);
+    assert_int_equal(r.ncols, 2 + 2 + 2);  /* x, x', lyapunov, its error, lambda_1, lambda_2 */
+    for (size_t i = 0; i < r.nruns; i++) {
+        const double *row = r.rows + i * r.ncols;
+        assert_true(fabs(row[2]) < 0.05);            /* ~ log(t)/t of a linear shear */
+        assert_true(fabs(row[4] + row[5]) < 1e-8); /* Liouville */
+    }
+    qd_sweep_result_free(&r);
+    qd_sweep_free(w);
+    unload(&f);
+}
+
+static void refused(const char *text, const qd_sweep_spec *sp, const char *where,
+                    const char *field) {
+    fix f = load(text);
+    const char *got = "x";
+    assert_null(qd_sweep_setup_new(f.ctx, f.set, f.m, sp, &got));
+    const qd_diag *d = qd_ctx_diag(f.ctx);
+    assert_int_not_equal(qd_ctx_status(f.ctx), QD_OK);
+    if (where) {
+        assert_non_null(got);
+        assert_string_equal(got, where);
+        assert_true(d->located);
+    } else {
+        assert_null(got);
+        assert_string_equal(d->name, field);
+    }
+    unload(&f);
+}
+
+static void test_refusals(void **state) {
+    (void)state;
+    qd_sweep_spec ev = {.grid = "x=0:1:2", .measures = "final, event"};
+    refused(osc, &ev, NULL, "event");
+    qd_sweep_spec sec = {.grid = "x=0:1:2", .measures = "poincare-count", .nevents = 0};
+    refused(osc, &sec, NULL, "section");
+    qd_sweep_spec ly = {.grid = "q=0:1:2", .measures = "lyapunov"};
+    refused("coordinates q\nmomenta p\nH = p^2/2 + q^2/2\n", &ly, NULL, "no_speeds");
+    qd_sweep_spec two = {.grid = "x=0:1:2", .random = "x=0:1", .n = 2, .measures = "final"};
+    refused(osc, &two, NULL, "grid");
+    qd_sweep_spec grid = {.grid = "y=0:1:2", .measures = "final"};
+    refused(osc, &grid, "grid", NULL);
+    qd_sweep_spec ms = {.grid = "x=0:1:2", .measures = "max:y"};
+    refused(osc, &ms, "measures", NULL);
+    qd_sweep_spec peak = {.grid = "x=0:1:2", .measures = "peak"};
+    refused(osc, &peak, "measures", NULL);
+    qd_sweep_spec list = {.list_csv = "x\n1,2\n", .measures = "final"};
+    refused(osc, &list, "list_csv", NULL);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pendulum_period), cmocka_unit_test(test_section_count),
+        cmocka_unit_test(test_lyapunov),        cmocka_unit_test(test_refusals),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
