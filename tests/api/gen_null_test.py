@@ -129,6 +129,7 @@ NULLABLE = {
     'qd_sweep_run_one': {'stop'},
     'qd_sweep_set_lyap': {'lo'},
     'qd_sweep_setup_new': {'where'},
+    'qd_lyap_setup_run': {'lo'},
     'qd_symmetry_from_ops': {'R'},
     'qd_group_characters': {'R'},
     'qd_ufunc': {'args'},

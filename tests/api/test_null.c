@@ -2229,6 +2229,20 @@ static void null_lyapunov(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_lyap_json(NULL, NULL));
     reset(&F);
+    /* ---- qd_lyap_setup_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(NULL, NULL, F.model, NULL, NULL, NULL));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(F.ctx, NULL, F.model, NULL, NULL, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(F.ctx, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_lyap_result_free */
+    /* r NULL */
+    qd_lyap_result_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
