@@ -130,6 +130,7 @@ NULLABLE = {
     'qd_sweep_set_lyap': {'lo'},
     'qd_sweep_setup_new': {'where'},
     'qd_lyap_setup_run': {'lo'},
+    'qd_scene_setup_record': {'progress', 'data', 'stats'},
     'qd_symmetry_from_ops': {'R'},
     'qd_group_characters': {'R'},
     'qd_ufunc': {'args'},

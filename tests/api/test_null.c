@@ -4775,6 +4775,28 @@ static void null_scene(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_html(NULL, NULL));
     reset(&F);
+    /* ---- qd_scene_setup_new */
+    /* ctx NULL */
+    assert_null(qd_scene_setup_new(NULL, NULL, F.model, NULL));
+    reset(&F);
+    /* set NULL */
+    assert_null(qd_scene_setup_new(F.ctx, NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_scene_setup_new(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scene_setup_record */
+    /* sc NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_setup_record(NULL, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_scene_setup_scene */
+    /* sc NULL */
+    assert_null(qd_scene_setup_scene(NULL));
+    reset(&F);
+    /* ---- qd_scene_setup_free */
+    /* sc NULL */
+    qd_scene_setup_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
