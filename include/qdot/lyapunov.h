@@ -233,6 +233,35 @@ QD_API qd_status qd_lyap_print(const qd_lyap_report *r, qd_buf *out);
  * estimate is not finite. */
 QD_API qd_status qd_lyap_json(const qd_lyap_report *r, qd_buf *out);
 
+/* ---- a Poincare surface of section (src/lyap/section.c) ---------------- */
+
+typedef struct qd_poincare_opts {
+    int event;     /* the section: this event of the run (qd_sim_add_event's order) */
+    size_t want;   /* the run ends at the want-th crossing (> 0) */
+    /* Every row of the run, crossing true at a crossing of the section
+     * (else a sample or another event's row); nonzero ends the run (a
+     * crossing's row still counted). */
+    int (*sink)(void *data, const double *row, bool crossing);
+    /* May be NULL: after each row, done in [0, 1] the larger of the
+     * crossings found (of want) and the time used (of t_end - t0). */
+    void (*progress)(void *data, double done, double t);
+    void *data;    /* sink's and progress' */
+} qd_poincare_opts;
+
+typedef struct qd_poincare_result {
+    size_t got;          /* the crossings counted */
+    double last_t;       /* the time of the last one (t0: none yet) */
+    qd_sim_stats stats;  /* the run's */
+} qd_poincare_result;
+
+/* Run s from opts (qd_sim_run), the rows given to o->sink, until o->want
+ * crossings of the section, t_end, or the sink says stop (the caller
+ * compares r->got with o->want: fewer crossings than wanted by t_end is
+ * no failure).  The run's failures are qd_sim_run's; QD_ERR_ARG for want
+ * 0 or a NULL sink. */
+QD_API qd_status qd_poincare_run(qd_sim *s, const qd_sim_opts *opts, const qd_poincare_opts *o,
+                                 qd_poincare_result *r);
+
 /* ---- a run set up as qdot lyapunov takes it (src/lyap/setup.c) ---------- */
 
 /* The exponents of one run, with what the printers read of it. */
@@ -267,5 +296,6 @@ QD_API void qd_lyap_result_free(qd_lyap_result *r); /* NULL is fine */
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
  * (err, stats); qd_flow_run (fo); qd_flow_print (prefix); qd_lyap_print,
- * qd_lyap_json (r->err); qd_lyap_setup_run (lo). An array whose count is 0 may be NULL. */
+ * qd_lyap_json (r->err); qd_lyap_setup_run (lo); qd_poincare_run's
+ * o->progress and o->data. An array whose count is 0 may be NULL. */
 #endif

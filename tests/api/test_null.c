@@ -2229,6 +2229,13 @@ static void null_lyapunov(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_lyap_json(NULL, NULL));
     reset(&F);
+    /* ---- qd_poincare_run */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_run(NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
+    reset(&F);
     /* ---- qd_lyap_setup_run */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(NULL, NULL, F.model, NULL, NULL, NULL));
