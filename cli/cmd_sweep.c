@@ -131,23 +131,6 @@ static const struct {
                        qd_buf *out);
 } writers[] = {{"csv", qd_sweep_csv}, {"json", qd_sweep_json}, {"hdf5", NULL}};
 
-/* --format hdf5 (qd_sweep_hdf5): the rows with how the sweep was made. */
-static int write_hdf5(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a,
-                      const qd_sweep_result *r) {
-    char n[32], seed[32];
-    snprintf(n, sizeof n, "%zu", a->n);
-    snprintf(seed, sizeof seed, "%.0f", a->seed);
-    const char *names[] = {"model", "measures", a->grid ? "grid" : a->random ? "random" : "list",
-                           "n", "seed"};
-    const char *values[] = {a->sim.file, a->measure, a->grid ? a->grid : a->random ? a->random
-                                                                                    : a->list,
-                            n, seed};
-    if (qd_sweep_hdf5(ctx, w, r->rows, r->outcome, a->random ? 5 : 3, names, values,
-                      a->sim.out) != QD_OK)
-        return cli_diag_ctx(ctx);
-    return QD_EXIT_OK;
-}
-
 /* Before the model: hdf5 is written to a file. */
 static int check_output(const sweep_args *a, size_t fmt) {
     return writers[fmt].write || a->sim.out
@@ -156,9 +139,11 @@ static int check_output(const sweep_args *a, size_t fmt) {
 }
 
 static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t fmt,
-                        const qd_sweep_result *r) {
-    if (!writers[fmt].write)
-        return write_hdf5(ctx, w, a, r);
+                        const qd_sweep_spec *sp, const qd_sweep_result *r) {
+    if (!writers[fmt].write) /* with how the sweep was made */
+        return qd_sweep_hdf5_made(ctx, w, r, sp, a->sim.file, a->list, a->sim.out) == QD_OK
+                   ? QD_EXIT_OK
+                   : cli_diag_ctx(ctx);
     qd_buf b = QD_BUF_INIT;
     if (writers[fmt].write(w, r->rows, r->outcome, &b) != QD_OK) {
         qd_buf_free(&b);
@@ -173,28 +158,6 @@ static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, siz
     return f ? cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err) : rc;
 }
 
-/* --map (qd_sweep_map): before the runs, what it draws; after, the map. */
-static int map_check(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t *col) {
-    qd_plot_format f;
-    if (a->map && (qd_plot_format_of(ctx, a->map, &f) != QD_OK ||
-                   qd_sweep_map_column(w, a->map_measure, col) != QD_OK))
-        return cli_diag_ctx(ctx);
-    return QD_EXIT_OK;
-}
-
-static int map_write(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, const double *rows,
-                     size_t col) {
-    if (!a->map)
-        return QD_EXIT_OK;
-    qd_plot *p = qd_plot_new(ctx, 0, 0);
-    int rc = p && qd_plot_set_title(p, a->sim.file) == QD_OK &&
-                     qd_sweep_map(w, rows, col, p) == QD_OK && qd_plot_write(p, a->map) == QD_OK
-                 ? QD_EXIT_OK
-                 : cli_diag_ctx(ctx);
-    qd_plot_free(p);
-    return rc;
-}
-
 static void summary(const qd_sweep_result *r, double wall) {
     /* the threads the pool started: asked for (0: the cores), at most the runs */
     unsigned threads = r->where.ranks > 1 ? r->where.threads
@@ -206,11 +169,11 @@ static void summary(const qd_sweep_result *r, double wall) {
             r->nruns == 1 ? "" : "s", where, threads, threads == 1 ? "" : "s", r->failed, wall);
 }
 
-static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
-    size_t mapcol = 0;
-    int rc = map_check(c->ctx, w, a, &mapcol);
-    if (rc != QD_EXIT_OK)
-        return rc;
+static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt,
+                   const qd_sweep_spec *sp) {
+    size_t mapcol = 0; /* --map: what it draws checked before the runs */
+    if (a->map && qd_sweep_map_check(w, a->map, a->map_measure, &mapcol) != QD_OK)
+        return cli_diag_ctx(c->ctx);
     /* under mpirun every rank gets here; only rank 0 (where.writer) writes */
     cli_progress bar;
     cli_progress_start(&bar, "sweep");
@@ -219,11 +182,12 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     qd_status st = qd_sweep_result_run(c->ctx, w, &c->opts, (unsigned)a->threads, progress, &bar,
                                        &r);
     double wall = cli_progress_end(&bar);
-    rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+    int rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && r.where.writer)
-        rc = write_result(c->ctx, w, a, fmt, &r);
-    if (rc == QD_EXIT_OK && r.where.writer)
-        rc = map_write(c->ctx, w, a, r.rows, mapcol);
+        rc = write_result(c->ctx, w, a, fmt, sp, &r);
+    if (rc == QD_EXIT_OK && r.where.writer && a->map &&
+        qd_sweep_map_file(w, r.rows, mapcol, a->sim.file, a->map) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && r.where.writer)
         summary(&r, wall);
     /* rows of failures only are no answer: said, and a failure (exit 1),
@@ -265,7 +229,7 @@ static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
     qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_setup_new(c->ctx, c->set, c->mf.model, &sp, &where)
                                    : NULL;
     if (rc == QD_EXIT_OK)
-        rc = w ? run_all(c, w, a, fmt) : setup_error(c, a, where, csv);
+        rc = w ? run_all(c, w, a, fmt, &sp) : setup_error(c, a, where, csv);
     qd_sweep_free(w);
     free(csv);
     return rc;

@@ -180,6 +180,15 @@ QD_API qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, siz
  * column's.  Errors as qd_sweep_map_column's, or the plot's. */
 QD_API qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plot *p);
 
+/* qdot sweep --map FILE: before the runs, that path's format (a known
+ * ending: qd_plot_format_of) and the column (qd_sweep_map_column) into
+ * *col; after them, qd_sweep_map of rows on a plot of its own titled title
+ * (may be NULL) written to path.  Errors as those calls', in w's context. */
+QD_API qd_status qd_sweep_map_check(const qd_sweep *w, const char *path, const char *measure,
+                                    size_t *col);
+QD_API qd_status qd_sweep_map_file(const qd_sweep *w, const double *rows, size_t col,
+                                   const char *title, const char *path);
+
 QD_API size_t qd_sweep_nruns(const qd_sweep *w);
 QD_API size_t qd_sweep_ninputs(const qd_sweep *w);
 QD_API size_t qd_sweep_ncols(const qd_sweep *w);          /* inputs then measures (numbers only) */
@@ -321,6 +330,14 @@ QD_API qd_status qd_sweep_hdf5(qd_ctx *ctx, const qd_sweep *w, const double *row
                                const char *const *attr_names, const char *const *attr_values,
                                const char *path);
 
+/* qd_sweep_hdf5 of r's rows with how sp made the sweep as the attributes:
+ * model (the caller's name for it; NULL: ""), measures, then grid, random
+ * or list (sp's text; a list's the name list, a file's, as CSV text is no
+ * record; NULL: ""), and for random n and seed. */
+QD_API qd_status qd_sweep_hdf5_made(qd_ctx *ctx, const qd_sweep *w, const qd_sweep_result *r,
+                                    const qd_sweep_spec *sp, const char *model,
+                                    const char *list, const char *path);
+
 #ifdef __cplusplus
 }
 #endif
@@ -332,7 +349,8 @@ QD_API qd_status qd_sweep_hdf5(qd_ctx *ctx, const qd_sweep *w, const double *row
  * documented at the function, for: qd_sweep_set_lyap (lo); qd_sweep_run
  * (data, progress); qd_sweep_run_one (stop); qd_sweep_needs (s; needs, when
  * cap is 0); qd_sweep_prepare (read, data); qd_sweep_map_column (measure);
- * qd_sweep_setup_new (where).
+ * qd_sweep_setup_new (where); qd_sweep_map_check (measure); qd_sweep_map_file
+ * (title); qd_sweep_hdf5_made (model, list).
  * An array whose count is 0 may be NULL.  qd_sweep_outcome_str returns
  * NULL for a NULL o or out, or cap 0. */
 #endif

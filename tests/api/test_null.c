@@ -5808,6 +5808,26 @@ static void null_sweep(void **state)
     /* p NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, F.d, 1, NULL));
     reset(&F);
+    /* ---- qd_sweep_map_check */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_check(NULL, "q", "q", F.z));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_check(NULL, NULL, "q", F.z));
+    reset(&F);
+    /* col NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_check(NULL, "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_sweep_map_file */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_file(NULL, F.d, 1, "q", "q"));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_file(NULL, NULL, 1, "q", "q"));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_file(NULL, F.d, 1, "q", NULL));
+    reset(&F);
     /* ---- qd_sweep_nruns */
     /* w NULL */
     assert_true(qd_sweep_nruns(NULL) == 0);
@@ -5920,6 +5940,16 @@ static void null_sweep(void **state)
     reset(&F);
     /* path NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(F.ctx, NULL, F.d, NULL, 1, (const char * const *)F.names, (const char * const *)F.names, NULL));
+    reset(&F);
+    /* ---- qd_sweep_hdf5_made */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_made(NULL, NULL, NULL, NULL, "q", "q", "q"));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_made(F.ctx, NULL, NULL, NULL, "q", "q", "q"));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_made(F.ctx, NULL, NULL, NULL, "q", "q", NULL));
     reset(&F);
     teardown(&F);
 }

@@ -13,17 +13,24 @@
  *   - the Lyapunov measures made by the set-up: the oscillator's largest
  *     exponent is 0 (an integrable motion, Lichtenberg & Lieberman sec.
  *     5.2), the spectrum sums to 0 (Liouville), from a list of runs;
+ *   - --map over x0 and v0 of the oscillator: final_x is x0 cos t + v0 sin t
+ *     at t_end, drawn to an SVG file;
+ *     a grid of one axis refused naming "map";
  *   - the refusals, each naming the field it is about: `event` with no
  *     event, poincare-count with no section, the Lyapunov measures of a
  *     model given by H, an error in the grid's or the measures' text
  *     located there.
  */
+#define _POSIX_C_SOURCE 200809L /* mkstemp */
 #include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <setjmp.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 #include "qdot/qdot.h"
@@ -146,6 +153,52 @@ static void test_lyapunov(void **state) {
     unload(&f);
 }
 
+/* --map: the grid of two axes drawn to a file of its own; a grid of one
+ * axis and a path of no known format refused before any run. */
+static void test_map(void **state) {
+    (void)state;
+    fix f = load(osc);
+    qd_sim_opts o = options(&f, "3");
+    qd_sweep_spec sp = {.grid = "x = 0.5:1:3, x' = 0:1:2", .measures = "final"};
+    qd_sweep *w = qd_sweep_setup_new(f.ctx, f.set, f.m, &sp, NULL);
+    assert_non_null(w);
+    size_t col = 0;
+    assert_int_equal(qd_sweep_map_check(w, "m.xyz", NULL, &col), QD_ERR_ARG);
+    qd_ctx_clear_error(f.ctx);
+    assert_int_equal(qd_sweep_map_check(w, "m.svg", "final_x", &col), QD_OK);
+    assert_int_equal(col, 2);
+    qd_sweep_result r;
+    assert_int_equal(qd_sweep_result_run(f.ctx, w, &o, 1, NULL, NULL, &r), QD_OK);
+    for (size_t i = 0; i < r.nruns; i++) { /* x(3) = x0 cos 3 + v0 sin 3 */
+        const double *row = r.rows + i * r.ncols;
+        assert_true(fabs(row[2] - (row[0] * cos(3) + row[1] * sin(3))) < 1e-9);
+    }
+    char path[] = "/tmp/qdot_sweep_mapXXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    char svg[64];
+    snprintf(svg, sizeof svg, "%s.svg", path);
+    assert_int_equal(qd_sweep_map_file(w, r.rows, col, "osc", svg), QD_OK);
+    FILE *fp = fopen(svg, "r");
+    char head[8] = "";
+    assert_non_null(fp);
+    assert_true(fread(head, 1, 5, fp) == 5);
+    assert_true(!memcmp(head, "<?xml", 5) || !memcmp(head, "<svg", 4));
+    fclose(fp);
+    remove(svg);
+    remove(path);
+    qd_sweep_result_free(&r);
+    qd_sweep_free(w);
+    qd_sweep_spec one = {.grid = "x = 0.5:1:3", .measures = "final"};
+    w = qd_sweep_setup_new(f.ctx, f.set, f.m, &one, NULL);
+    assert_non_null(w);
+    assert_int_equal(qd_sweep_map_check(w, "m.png", NULL, &col), QD_ERR_ARG);
+    assert_string_equal(qd_ctx_diag(f.ctx)->name, "map");
+    qd_sweep_free(w);
+    unload(&f);
+}
+
 static void refused(const char *text, const qd_sweep_spec *sp, const char *where,
                     const char *field) {
     fix f = load(text);
@@ -187,7 +240,8 @@ static void test_refusals(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pendulum_period), cmocka_unit_test(test_section_count),
-        cmocka_unit_test(test_lyapunov),        cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_lyapunov),        cmocka_unit_test(test_map),
+        cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
