@@ -129,6 +129,7 @@ NULLABLE = {
     'qd_sweep_run_one': {'stop'},
     'qd_sweep_set_lyap': {'lo'},
     'qd_sweep_setup_new': {'where'},
+    'qd_state_named_range': {'m'},
     'qd_sweep_map_check': {'measure'},
     'qd_sweep_map_file': {'title'},
     'qd_sweep_hdf5_made': {'model', 'list'},

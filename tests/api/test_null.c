@@ -5626,6 +5626,41 @@ static void null_state(void **state)
     /* b NULL */
     assert_int_equal(QD_ERR_ARG, qd_state_range(F.ctx, F.model, "q", 1, 1, F.d, NULL));
     reset(&F);
+    /* ---- qd_state_named_range */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(NULL, F.model, "q", F.c, 1, F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, NULL, F.c, 1, F.d, F.d));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, "q", NULL, 1, F.d, F.d));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, "q", F.c, 1, NULL, F.d));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, "q", F.c, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_state_read_point */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(NULL, F.model, NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, NULL, NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, "q", 1, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, "q", 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
     /* ---- qd_state_item_end */
     /* text NULL */
     assert_true(qd_state_item_end(NULL, 1) == 0);
