@@ -159,14 +159,12 @@ static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, siz
 }
 
 static void summary(const qd_sweep_result *r, double wall) {
-    /* the threads the pool started: asked for (0: the cores), at most the runs */
-    unsigned threads = r->where.ranks > 1 ? r->where.threads
-                                          : qd_sweep_threads(r->where.threads, r->nruns);
     char where[48] = "";
     if (r->where.ranks > 1)
         snprintf(where, sizeof where, "%d MPI ranks x ", r->where.ranks);
     fprintf(stderr, "qdot: sweep: %zu run%s on %s%u thread%s, %zu failed, %.3g s\n", r->nruns,
-            r->nruns == 1 ? "" : "s", where, threads, threads == 1 ? "" : "s", r->failed, wall);
+            r->nruns == 1 ? "" : "s", where, r->threads, r->threads == 1 ? "" : "s", r->failed,
+            wall);
 }
 
 static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt,
@@ -190,14 +188,8 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt,
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && r.where.writer)
         summary(&r, wall);
-    /* rows of failures only are no answer: said, and a failure (exit 1),
-     * though the rows are written with each run's reason */
-    if (rc == QD_EXIT_OK && r.where.writer && r.nruns > 0 && r.failed == r.nruns) {
-        char why[QD_SWEEP_OUTCOME_MAX];
-        cli_diag_error("every run failed (the first: %s)",
-                       qd_sweep_outcome_str(&r.outcome[0], why, sizeof why));
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && qd_sweep_result_check(c->ctx, &r) != QD_OK)
+        rc = cli_diag_ctx(c->ctx); /* every run failed: exit 1, the rows written */
     qd_sweep_result_free(&r);
     return rc;
 }

@@ -296,6 +296,8 @@ typedef struct qd_sweep_result {
     qd_sweep_outcome *outcome; /* nruns */
     size_t failed;             /* runs whose status is not QD_OK (on the writer) */
     qd_sweep_where where;
+    unsigned threads;          /* each process's: where.threads across ranks, else the
+                                * pool's (qd_sweep_threads of where.threads) */
 } qd_sweep_result;
 
 /* qd_sweep_run_all into arrays this call allocates (malloc'd; free with
@@ -307,6 +309,12 @@ QD_API qd_status qd_sweep_result_run(qd_ctx *ctx, const qd_sweep *w, const qd_si
                                      void (*progress)(void *data, size_t done, size_t total),
                                      void *data, qd_sweep_result *r);
 QD_API void qd_sweep_result_free(qd_sweep_result *r); /* NULL is fine */
+
+/* Rows of failures only are no answer: QD_ERR_NUMERIC, "every run failed
+ * (the first: REASON)" in ctx, when r (on the writer) has runs and every
+ * one failed (the rows, each with its reason, are still worth writing);
+ * else QD_OK. */
+QD_API qd_status qd_sweep_result_check(qd_ctx *ctx, const qd_sweep_result *r);
 
 /* Can this qdot write HDF5 (qdot_hdf5.so loads)?  QD_OK, or
  * QD_ERR_UNSUPPORTED with the reason in ctx. */

@@ -5953,6 +5953,13 @@ static void null_sweep(void **state)
     /* r NULL */
     qd_sweep_result_free(NULL);
     reset(&F);
+    /* ---- qd_sweep_result_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_result_check(NULL, NULL));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_result_check(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_sweep_hdf5_ready */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_ready(NULL));

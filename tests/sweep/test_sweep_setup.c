@@ -16,6 +16,8 @@
  *   - --map over x0 and v0 of the oscillator: final_x is x0 cos t + v0 sin t
  *     at t_end, drawn to an SVG file;
  *     a grid of one axis refused naming "map";
+ *   - a sweep whose every run fails (a singular mass matrix, m = 0) is no
+ *     answer; one run that goes through is;
  *   - the refusals, each naming the field it is about: `event` with no
  *     event, poincare-count with no section, the Lyapunov measures of a
  *     model given by H, an error in the grid's or the measures' text
@@ -95,6 +97,8 @@ static void test_pendulum_period(void **state) {
     assert_int_equal(qd_sweep_result_run(f.ctx, w, &o, 2, NULL, NULL, &r), QD_OK);
     assert_int_equal(r.nruns, 8);
     assert_int_equal(r.failed, 0);
+    assert_int_equal(r.threads, 2);
+    assert_int_equal(qd_sweep_result_check(f.ctx, &r), QD_OK);
     for (size_t i = 0; i < r.nruns; i++) {
         double th0 = r.rows[i * r.ncols], quarter = sqrt(2 / 9.81) * K(sin(th0 / 2));
         assert_true(fabs(r.rows[i * r.ncols + 1] - quarter) < 1e-8 * quarter);
@@ -199,6 +203,31 @@ static void test_map(void **state) {
     unload(&f);
 }
 
+/* A mass m = 0 makes the mass matrix singular: that run fails alone; a
+ * sweep of such runs only is no answer (qd_sweep_result_check). */
+static void test_all_failed(void **state) {
+    (void)state;
+    const char *grids[] = {"m = 0:1:2", "m = 0:0:1"};
+    for (size_t g = 0; g < 2; g++) {
+        fix f = load("coordinates x\nparameters m = 1\nT = m*x'^2/2\nV = x^2/2\n"
+                     "initial x = 1\n");
+        qd_sim_opts o = options(&f, "1");
+        qd_sweep_spec sp = {.grid = grids[g], .measures = "final"};
+        qd_sweep *w = qd_sweep_setup_new(f.ctx, f.set, f.m, &sp, NULL);
+        assert_non_null(w);
+        qd_sweep_result r;
+        assert_int_equal(qd_sweep_result_run(f.ctx, w, &o, 1, NULL, NULL, &r), QD_OK);
+        assert_int_equal(r.failed, 1);
+        qd_ctx_clear_error(f.ctx);
+        assert_int_equal(qd_sweep_result_check(f.ctx, &r), g ? QD_ERR_NUMERIC : QD_OK);
+        if (g)
+            assert_non_null(strstr(qd_ctx_message(f.ctx), "every run failed (the first: "));
+        qd_sweep_result_free(&r);
+        qd_sweep_free(w);
+        unload(&f);
+    }
+}
+
 static void refused(const char *text, const qd_sweep_spec *sp, const char *where,
                     const char *field) {
     fix f = load(text);
@@ -241,7 +270,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pendulum_period), cmocka_unit_test(test_section_count),
         cmocka_unit_test(test_lyapunov),        cmocka_unit_test(test_map),
-        cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_all_failed),      cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
