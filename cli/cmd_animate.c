@@ -97,17 +97,11 @@ static int run(cli_sim *c, qd_scene_setup *sc) {
 
 static int write_page(const qd_scene *s, const char *path) {
     qd_buf b = QD_BUF_INIT;
-    if (qd_scene_html(s, &b) != QD_OK) {
-        qd_buf_free(&b);
-        cli_diag_error("out of memory writing the page");
-        return QD_EXIT_FAIL;
-    }
-    int rc = QD_EXIT_OK, err = 0;
-    FILE *f = cli_out_open(path, &rc);
-    if (f)
-        cli_out_write(f, qd_buf_str(&b), b.len, &err);
+    if (qd_scene_html(s, &b) == QD_OK)
+        return cli_out_emit(&b, path);
     qd_buf_free(&b);
-    return f ? cli_out_close(f, path, err) : rc;
+    cli_diag_error("out of memory writing the page");
+    return QD_EXIT_FAIL;
 }
 
 int cli_cmd_animate(int argc, char **argv) {

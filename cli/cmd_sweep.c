@@ -145,17 +145,11 @@ static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, siz
                    ? QD_EXIT_OK
                    : cli_diag_ctx(ctx);
     qd_buf b = QD_BUF_INIT;
-    if (writers[fmt].write(w, r->rows, r->outcome, &b) != QD_OK) {
-        qd_buf_free(&b);
-        cli_diag_error("out of memory writing the rows");
-        return QD_EXIT_FAIL;
-    }
-    int rc = QD_EXIT_OK, err = 0;
-    FILE *f = a->sim.out ? cli_out_open(a->sim.out, &rc) : stdout;
-    if (f)
-        cli_out_write(f, qd_buf_str(&b), strlen(qd_buf_str(&b)), &err);
+    if (writers[fmt].write(w, r->rows, r->outcome, &b) == QD_OK)
+        return cli_out_emit(&b, a->sim.out);
     qd_buf_free(&b);
-    return f ? cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err) : rc;
+    cli_diag_error("out of memory writing the rows");
+    return QD_EXIT_FAIL;
 }
 
 static void summary(const qd_sweep_result *r, double wall) {
