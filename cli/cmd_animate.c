@@ -1,17 +1,13 @@
 /*
  * cli/cmd_animate.c - `qdot animate FILE [simulate options] -o FILE.html`:
  * simulate the model (the setup of sim_cli.c), sample the positions of its
- * particles and bodies at the frames (outputs of the run: the model's own
- * position and rotation expressions, evaluated by libqdot), and write one
- * self-contained HTML page that plays the motion (qd_scene_html).
+ * particles and bodies at the frames (qd_scene_setup_new, _record: the
+ * model's own position and rotation expressions as outputs of the run), and
+ * write one self-contained HTML page that plays the motion (qd_scene_html).
  */
 #include "cli.h"
 
-#include <math.h>
-#include <errno.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "qdot/scene.h"
 #include "progress.h"

@@ -2,8 +2,8 @@
  * cli/cmd_poincare.c - `qdot poincare FILE --section "q1 = 0, q1' > 0"
  * --crossings N`: a Poincare surface of section.  The motion is integrated
  * (qdot/sim.h, dop853 at --rtol by default) and the state at each of the
- * first N crossings of the section, located to round-off by the
- * integrator's event machinery, is printed as CSV.
+ * first N crossings of the section (qd_poincare_run), located to round-off
+ * by the integrator's event machinery, is printed as CSV.
  */
 #include "cli.h"
 
@@ -13,7 +13,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "out.h"
 #include "qdot/lyapunov.h"

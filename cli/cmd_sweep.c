@@ -15,8 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "qdot/json.h"
-#include "model_cli.h"
 #include "model_file.h"
 #include "out.h"
 #include "progress.h"
@@ -239,8 +237,7 @@ int cli_cmd_sweep(int argc, char **argv) {
         return cli_usage_error("at most %d events with the --section", QD_SIM_MAX_LIST - 1);
     a.sim.section = a.section; /* the event after the user's (cli_sim_setup) */
     cli_sim c = {0};
-    if (rc == QD_EXIT_OK)
-        rc = cli_sim_setup(&c, &a.sim);
+    rc = cli_sim_setup(&c, &a.sim);
     if (rc == QD_EXIT_OK)
         rc = sweep(&c, &a, fmt);
     cli_sim_free(&c);
