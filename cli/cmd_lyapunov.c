@@ -69,40 +69,21 @@ static int emit(const qd_lyap_report *r, bool json) {
     return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
-/* The model made into the tangent system and run; prints the result. */
+/* The run and its exponents (qd_lyap_setup_run); prints the result. */
 static int run(cli_sim *c, const ly_args *p) {
-    if (!c->e)
-        return cli_usage_error("lyapunov takes a model given by T and V or L (its equations M q'' "
-                               "= f), not one given by H or in speeds (try --no-speeds)");
-    size_t d = 2 * c->e->n;
-    if (p->n > d)
-        return cli_usage_error("--exponents: the model has %zu exponents (twice its %zu degrees "
-                               "of freedom), not %zu", d, c->e->n, p->n);
-    qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
-    if (!l)
-        return cli_diag_ctx(c->ctx);
     qd_lyap_opts lo = {.nexp = p->n, .renorm = p->renorm, .transient = p->transient};
-    qd_lyap_stats ls = {0};
-    double *ex = calloc(2 * lo.nexp, sizeof *ex), *err = ex ? ex + lo.nexp : NULL;
-    qd_status st = ex ? qd_lyap_run_stats(c->ctx, l, &c->opts, &lo, ex, err, &ls)
-                      : QD_ERR_NOMEM;
-    int rc;
-    if (st == QD_ERR_ARG) {
-        rc = cli_diag_ctx(c->ctx);
-    } else if (st != QD_OK) {
-        rc = cli_sim_fail(c, st);
-    } else {
+    qd_lyap_result r;
+    qd_status st = qd_lyap_setup_run(c->ctx, c->set, c->mf.model, &c->opts, &lo, &r);
+    int rc = st == QD_OK ? QD_EXIT_OK : st == QD_ERR_ARG ? cli_diag_ctx(c->ctx)
+                                                         : cli_sim_fail(c, st);
+    if (rc == QD_EXIT_OK) {
         fprintf(stderr, "qdot: lyapunov: %s, averaged over T = %g after a transient of %g, "
                         "%zu renormalizations: %zu steps, %zu evaluations, %zu rejected\n",
-                qd_sim_method_name(c->opts.method), ls.t_avg, p->transient, ls.renorms,
-                ls.steps, ls.evals, ls.rejected);
-        qd_lyap_report r = {.opts = &lo, .ndof = c->e->n, .exps = ex, .err = err,
-                            .stats = &ls, .conservative = qd_sim_conservative(c->s),
-                            .method = c->opts.method};
-        rc = emit(&r, p->a.json);
+                qd_sim_method_name(c->opts.method), r.stats.t_avg, p->transient,
+                r.stats.renorms, r.stats.steps, r.stats.evals, r.stats.rejected);
+        rc = emit(&r.report, p->a.json);
     }
-    free(ex);
-    qd_lyap_free(l);
+    qd_lyap_result_free(&r);
     return rc;
 }
 

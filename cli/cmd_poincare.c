@@ -2,8 +2,8 @@
  * cli/cmd_poincare.c - `qdot poincare FILE --section "q1 = 0, q1' > 0"
  * --crossings N`: a Poincare surface of section.  The motion is integrated
  * (qdot/sim.h, dop853 at --rtol by default) and the state at each of the
- * first N crossings of the section, located to round-off by the
- * integrator's event machinery, is printed as CSV.
+ * first N crossings of the section (qd_poincare_run), located to round-off
+ * by the integrator's event machinery, is printed as CSV.
  */
 #include "cli.h"
 
@@ -13,9 +13,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "out.h"
+#include "qdot/lyapunov.h"
 #include "qdot/plot.h"
 #include "progress.h"
 #include "sim_cli.h"
@@ -51,34 +51,28 @@ static const cli_spec spec = {
 typedef struct pc_out {
     FILE *f;
     cli_plot_rows *plot; /* --plot: the crossings kept, or NULL */
-    size_t ncols, want, got;
+    size_t ncols;
     const char **names; /* the header, written once the run is under way */
     bool header;
-    double t0, t_end;
     cli_progress bar;
-    bool wfailed;  /* a row could not be written: the run was stopped */
-    int werr;      /* its errno */
-    double last_t; /* the time of the last whole row */
+    int werr; /* a row could not be written (its errno): the run was stopped */
 } pc_out;
 
-/* Done is the larger of the crossings found and the time used up. */
-static void progress(pc_out *o, double t) {
-    double by_n = (double)o->got / (double)o->want, by_t = (t - o->t0) / (o->t_end - o->t0);
-    cli_progress_update(&o->bar, by_n > by_t ? by_n : by_t, t);
+static void progress(void *data, double done, double t) {
+    cli_progress_update(&((pc_out *)data)->bar, done, t);
 }
 
-static int sink(void *data, int event, const double *row) {
+/* Every row of the run (qd_poincare_run): the crossings written as CSV. */
+static int sink(void *data, const double *row, bool crossing) {
     pc_out *o = data;
-    if (o->plot && event == 0)
+    if (o->plot && crossing)
         cli_plot_keep(o->plot, row);
-    if (!o->header) {
-        for (size_t i = 0; i < o->ncols; i++)
-            fprintf(o->f, "%s%s", i ? "," : "", o->names[i]);
+    for (size_t i = 0; !o->header && i < o->ncols; i++)
+        fprintf(o->f, "%s%s", i ? "," : "", o->names[i]);
+    if (!o->header)
         fputc('\n', o->f);
-        o->header = true;
-    }
-    progress(o, row[0]);
-    if (event != 0) /* samples, and the rows of the model's impacts */
+    o->header = true;
+    if (!crossing) /* samples, and the rows of the model's impacts */
         return cli_interrupted();
     char num[QD_DOUBLE_MAX];
     for (size_t i = 0; i < o->ncols; i++) {
@@ -88,12 +82,10 @@ static int sink(void *data, int event, const double *row) {
     }
     fputc('\n', o->f);
     if (ferror(o->f)) { /* the data is lost: stop the run */
-        o->wfailed = true;
         o->werr = errno;
         return 1;
     }
-    o->last_t = row[0];
-    return ++o->got >= o->want || cli_interrupted(); /* ^C: after a whole row */
+    return cli_interrupted(); /* ^C: after a whole row */
 }
 
 static int pc_plot_pick(const cli_sim *c, pc_args *p, const char **names, size_t ncols,
@@ -141,13 +133,14 @@ int cli_cmd_poincare(int argc, char **argv) {
         rc = pc_plot_pick(&c, &p, names, ncols, &pick);
     if (rc == QD_EXIT_OK && names) {
         qd_sim_columns(c.s, c.opts.method, names, ncols);
-        pc_out o = {.f = f ? f : stdout, .ncols = ncols, .want = p.n, .names = names,
-                    .t0 = c.opts.t0, .t_end = c.opts.t_end};
-        o.plot = p.a.plot.file ? &rows : NULL;
-        qd_sim_stats st;
+        pc_out o = {.f = f ? f : stdout, .ncols = ncols, .names = names,
+                    .plot = p.a.plot.file ? &rows : NULL};
+        qd_poincare_opts po = {.event = 0, .want = p.n, .sink = sink, .progress = progress,
+                               .data = &o};
+        qd_poincare_result r;
         cli_progress_start(&o.bar, "poincare");
         cli_interrupt_begin();
-        qd_status s = qd_sim_run(c.s, &c.opts, sink, &o, &st, NULL);
+        qd_status s = qd_poincare_run(c.s, &c.opts, &po, &r);
         bool interrupted = cli_interrupted();
         cli_interrupt_end();
         cli_progress_end(&o.bar);
@@ -159,17 +152,18 @@ int cli_cmd_poincare(int argc, char **argv) {
             rc = cli_sim_fail(&c, s);
         } else if (interrupted) {
             fprintf(stderr, "qdot: poincare: interrupted at t = %.17g after %zu crossings; the "
-                            "rows written are whole\n", o.last_t, o.got);
+                            "rows written are whole\n", r.last_t, r.got);
             rc = CLI_EXIT_INTERRUPTED;
         } else {
+            const qd_sim_stats *st = &r.stats;
             fprintf(stderr, "qdot: poincare: %s, %zu crossings by t = %g: %zu steps, %zu "
                             "evaluations, %zu rejected; energy error %.3g over the steps and "
                             "crossings\n",
-                    qd_sim_method_name(c.opts.method), o.got, st.t, st.steps, st.evals,
-                    st.rejected, fmax(st.energy_error_max, st.energy_error_steps));
-            if (o.got < o.want)
+                    qd_sim_method_name(c.opts.method), r.got, st->t, st->steps, st->evals,
+                    st->rejected, fmax(st->energy_error_max, st->energy_error_steps));
+            if (r.got < p.n)
                 fprintf(stderr, "qdot: poincare: note: only %zu of %zu crossings before "
-                                "t = %g (raise --t-end)\n", o.got, o.want, st.t);
+                                "t = %g (raise --t-end)\n", r.got, p.n, st->t);
             if (p.a.plot.file)
                 rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true,
                                         NULL);

@@ -15,8 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "qdot/json.h"
-#include "model_cli.h"
 #include "model_file.h"
 #include "out.h"
 #include "progress.h"
@@ -29,7 +27,6 @@ typedef struct sweep_args {
     size_t n;              /* --runs: the random runs (0: not given) */
     double seed, threads;
     double renorm, transient; /* the lyapunov measures */
-    size_t nuser;          /* --event and --stop-at: the first is the measure event's */
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
@@ -37,20 +34,16 @@ typedef struct sweep_args {
 static int whole(const char *opt, const char *v, double *x, double most) {
     char *end;
     *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > most) {
-        cli_diag_error("%s takes a whole number from 0 to %.0f, not '%s'", opt, most, v);
-        return QD_EXIT_USAGE;
-    }
+    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > most)
+        return cli_usage_error("%s takes a whole number from 0 to %.0f, not '%s'", opt, most, v);
     return QD_EXIT_OK;
 }
 
 static int positive(const char *opt, const char *v, double *x) {
     char *end;
     *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || !isfinite(*x)) {
-        cli_diag_error("%s takes a number >= 0, not '%s'", opt, v);
-        return QD_EXIT_USAGE;
-    }
+    if (end == v || *end || !(*x >= 0) || !isfinite(*x))
+        return cli_usage_error("%s takes a number >= 0, not '%s'", opt, v);
     return QD_EXIT_OK;
 }
 
@@ -115,77 +108,14 @@ static int check_args(const sweep_args *a) {
                           : !a->measure          ? "--measure"
                           : a->random && !a->n   ? "--runs (the number of random runs)"
                                                  : NULL;
-    if (missing) {
-        cli_diag_error("%s %s (qdot sweep --help)", how > 1 ? "give only" : "missing:", missing);
-        return QD_EXIT_USAGE;
-    }
-    if (a->map_measure && !a->map) {
-        cli_diag_error("--map-measure says what to draw: give the file with --map FILE.png");
-        return QD_EXIT_USAGE;
-    }
-    if (a->n && !a->random) {
-        cli_diag_error("--runs is for --random");
-        return QD_EXIT_USAGE;
-    }
-    return QD_EXIT_OK;
+    if (missing)
+        return cli_usage_error("%s %s (qdot sweep --help)", how > 1 ? "give only" : "missing:",
+                               missing);
+    if (a->map_measure && !a->map)
+        return cli_usage_error("--map-measure says what to draw: give the file with --map "
+                               "FILE.png");
+    return a->n && !a->random ? cli_usage_error("--runs is for --random") : QD_EXIT_OK;
 }
-
-/* ---- what the measures need (qd_sweep_needs) ------------------------------ */
-
-/* Before the model: the event or section a measure needs, and the section
- * as the event after the user's (poincare-count counts its crossings). */
-static int more_events(sweep_args *a) {
-    unsigned flags;
-    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
-    a->nuser = a->sim.events.n + a->sim.stops.n;
-    if (!a->nuser && (flags & QD_SWEEP_NEEDS_EVENT)) {
-        cli_diag_error("the measure event needs --event or --stop-at (its first is the one)");
-        return QD_EXIT_USAGE;
-    }
-    if (!a->section && (flags & QD_SWEEP_NEEDS_SECTION)) {
-        cli_diag_error("the measure poincare-count needs --section");
-        return QD_EXIT_USAGE;
-    }
-    if (a->section && a->nuser == QD_SIM_MAX_LIST) {
-        cli_diag_error("at most %d events with the --section", QD_SIM_MAX_LIST - 1);
-        return QD_EXIT_USAGE;
-    }
-    a->sim.section = a->section; /* the event after the user's (cli_sim_setup) */
-    return QD_EXIT_OK;
-}
-
-/* The measures' outputs and escape crossings, read as --output and --event
- * read them (the model's namespace), errors shown in the --measure text. */
-static int measure_needs(cli_sim *c, const char *spec) {
-    if (qd_sweep_setup_measures(c->ctx, c->set, spec) != QD_OK)
-        return cli_sim_fail_in(c, "--measure", spec);
-    return QD_EXIT_OK;
-}
-
-/* ---- the runs ----------------------------------------------------------- */
-
-/* Where a bad spec is shown: the option's text with a caret. */
-static int spec_error(const qd_ctx *ctx, const char *opt, const char *spec) {
-    cli_diag_show(opt, spec, qd_ctx_diag(ctx));
-    return qd_ctx_status(ctx) == QD_ERR_NOMEM ? QD_EXIT_FAIL : QD_EXIT_USAGE;
-}
-
-static int set_runs(qd_sweep *w, const sweep_args *a, qd_ctx *ctx) {
-    if (a->grid && qd_sweep_grid(w, a->grid) != QD_OK)
-        return spec_error(ctx, "--grid", a->grid);
-    if (a->random && qd_sweep_random(w, a->random, a->n, (uint64_t)a->seed) != QD_OK)
-        return spec_error(ctx, "--random", a->random);
-    if (!a->list)
-        return QD_EXIT_OK;
-    char *text = NULL;
-    size_t len;
-    int rc = cli_read_text(a->list, "a list of runs", &text, &len);
-    if (rc == QD_EXIT_OK && qd_sweep_list_csv(w, text) != QD_OK)
-        rc = spec_error(ctx, a->list, text);
-    free(text);
-    return rc;
-}
-
 
 static void progress(void *data, size_t done, size_t total) {
     cli_progress_update(data, (double)done / (double)total, (double)done);
@@ -199,94 +129,41 @@ static const struct {
                        qd_buf *out);
 } writers[] = {{"csv", qd_sweep_csv}, {"json", qd_sweep_json}, {"hdf5", NULL}};
 
-/* --format hdf5 (qd_sweep_hdf5): the rows with how the sweep was made. */
-static int write_hdf5(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a,
-                      const qd_sweep_result *r) {
-    char n[32], seed[32];
-    snprintf(n, sizeof n, "%zu", a->n);
-    snprintf(seed, sizeof seed, "%.0f", a->seed);
-    const char *names[] = {"model", "measures", a->grid ? "grid" : a->random ? "random" : "list",
-                           "n", "seed"};
-    const char *values[] = {a->sim.file, a->measure, a->grid ? a->grid : a->random ? a->random
-                                                                                    : a->list,
-                            n, seed};
-    if (qd_sweep_hdf5(ctx, w, r->rows, r->outcome, a->random ? 5 : 3, names, values,
-                      a->sim.out) != QD_OK)
-        return cli_diag_ctx(ctx);
-    return QD_EXIT_OK;
-}
-
-/* Before the runs: hdf5 is written to a file, by a qdot with its module. */
+/* Before the model: hdf5 is written to a file. */
 static int check_output(const sweep_args *a, size_t fmt) {
-    if (writers[fmt].write)
-        return QD_EXIT_OK;
-    if (!a->sim.out) {
-        cli_diag_error("--format hdf5 writes a file: give it with -o FILE.h5");
-        return QD_EXIT_USAGE;
-    }
-    qd_ctx *ctx = qd_ctx_new();
-    int rc = !ctx ? QD_EXIT_FAIL : qd_sweep_hdf5_ready(ctx) == QD_OK ? QD_EXIT_OK
-                                                                    : cli_diag_ctx(ctx);
-    qd_ctx_free(ctx);
-    return rc;
+    return writers[fmt].write || a->sim.out
+               ? QD_EXIT_OK
+               : cli_usage_error("--format hdf5 writes a file: give it with -o FILE.h5");
 }
 
 static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t fmt,
-                        const qd_sweep_result *r) {
-    if (!writers[fmt].write)
-        return write_hdf5(ctx, w, a, r);
+                        const qd_sweep_spec *sp, const qd_sweep_result *r) {
+    if (!writers[fmt].write) /* with how the sweep was made */
+        return qd_sweep_hdf5_made(ctx, w, r, sp, a->sim.file, a->list, a->sim.out) == QD_OK
+                   ? QD_EXIT_OK
+                   : cli_diag_ctx(ctx);
     qd_buf b = QD_BUF_INIT;
-    if (writers[fmt].write(w, r->rows, r->outcome, &b) != QD_OK) {
-        qd_buf_free(&b);
-        cli_diag_error("out of memory writing the rows");
-        return QD_EXIT_FAIL;
-    }
-    int rc = QD_EXIT_OK, err = 0;
-    FILE *f = a->sim.out ? cli_out_open(a->sim.out, &rc) : stdout;
-    if (f)
-        cli_out_write(f, qd_buf_str(&b), strlen(qd_buf_str(&b)), &err);
+    if (writers[fmt].write(w, r->rows, r->outcome, &b) == QD_OK)
+        return cli_out_emit(&b, a->sim.out);
     qd_buf_free(&b);
-    return f ? cli_out_close(f, a->sim.out ? a->sim.out : "standard output", err) : rc;
-}
-
-/* --map (qd_sweep_map): before the runs, what it draws; after, the map. */
-static int map_check(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, size_t *col) {
-    qd_plot_format f;
-    if (a->map && (qd_plot_format_of(ctx, a->map, &f) != QD_OK ||
-                   qd_sweep_map_column(w, a->map_measure, col) != QD_OK))
-        return cli_diag_ctx(ctx);
-    return QD_EXIT_OK;
-}
-
-static int map_write(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, const double *rows,
-                     size_t col) {
-    if (!a->map)
-        return QD_EXIT_OK;
-    qd_plot *p = qd_plot_new(ctx, 0, 0);
-    int rc = p && qd_plot_set_title(p, a->sim.file) == QD_OK &&
-                     qd_sweep_map(w, rows, col, p) == QD_OK && qd_plot_write(p, a->map) == QD_OK
-                 ? QD_EXIT_OK
-                 : cli_diag_ctx(ctx);
-    qd_plot_free(p);
-    return rc;
+    cli_diag_error("out of memory writing the rows");
+    return QD_EXIT_FAIL;
 }
 
 static void summary(const qd_sweep_result *r, double wall) {
-    /* the threads the pool started: asked for (0: the cores), at most the runs */
-    unsigned threads = r->where.ranks > 1 ? r->where.threads
-                                          : qd_sweep_threads(r->where.threads, r->nruns);
     char where[48] = "";
     if (r->where.ranks > 1)
         snprintf(where, sizeof where, "%d MPI ranks x ", r->where.ranks);
     fprintf(stderr, "qdot: sweep: %zu run%s on %s%u thread%s, %zu failed, %.3g s\n", r->nruns,
-            r->nruns == 1 ? "" : "s", where, threads, threads == 1 ? "" : "s", r->failed, wall);
+            r->nruns == 1 ? "" : "s", where, r->threads, r->threads == 1 ? "" : "s", r->failed,
+            wall);
 }
 
-static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
-    size_t mapcol = 0;
-    int rc = map_check(c->ctx, w, a, &mapcol);
-    if (rc != QD_EXIT_OK)
-        return rc;
+static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt,
+                   const qd_sweep_spec *sp) {
+    size_t mapcol = 0; /* --map: what it draws checked before the runs */
+    if (a->map && qd_sweep_map_check(w, a->map, a->map_measure, &mapcol) != QD_OK)
+        return cli_diag_ctx(c->ctx);
     /* under mpirun every rank gets here; only rank 0 (where.writer) writes */
     cli_progress bar;
     cli_progress_start(&bar, "sweep");
@@ -295,64 +172,50 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt) {
     qd_status st = qd_sweep_result_run(c->ctx, w, &c->opts, (unsigned)a->threads, progress, &bar,
                                        &r);
     double wall = cli_progress_end(&bar);
-    rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
+    int rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && r.where.writer)
-        rc = write_result(c->ctx, w, a, fmt, &r);
-    if (rc == QD_EXIT_OK && r.where.writer)
-        rc = map_write(c->ctx, w, a, r.rows, mapcol);
+        rc = write_result(c->ctx, w, a, fmt, sp, &r);
+    if (rc == QD_EXIT_OK && r.where.writer && a->map &&
+        qd_sweep_map_file(w, r.rows, mapcol, a->sim.file, a->map) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && r.where.writer)
         summary(&r, wall);
-    /* rows of failures only are no answer: said, and a failure (exit 1),
-     * though the rows are written with each run's reason */
-    if (rc == QD_EXIT_OK && r.where.writer && r.nruns > 0 && r.failed == r.nruns) {
-        char why[QD_SWEEP_OUTCOME_MAX];
-        cli_diag_error("every run failed (the first: %s)",
-                       qd_sweep_outcome_str(&r.outcome[0], why, sizeof why));
-        rc = QD_EXIT_FAIL;
-    }
+    if (rc == QD_EXIT_OK && qd_sweep_result_check(c->ctx, &r) != QD_OK)
+        rc = cli_diag_ctx(c->ctx); /* every run failed: exit 1, the rows written */
     qd_sweep_result_free(&r);
     return rc;
 }
 
-/* The measures lyapunov and lyapunov-spectrum: the variational equations
- * of the same model (qdot/lyapunov.h), or NULL when none is asked for. */
-static int lyap_setup(cli_sim *c, qd_sweep *w, const sweep_args *a, qd_lyap **ly) {
-    unsigned flags;
-    qd_sweep_needs(NULL, a->measure, NULL, 0, &flags);
-    if (!(flags & QD_SWEEP_NEEDS_LYAP))
-        return QD_EXIT_OK;
-    if (!c->e) {
-        cli_diag_error("the lyapunov measures take a model in the multiplier form (not given "
-                       "by H, not in speeds: --no-speeds)");
-        return QD_EXIT_USAGE;
-    }
-    *ly = qd_lyap_new(c->ctx, c->mf.model, c->e);
-    qd_lyap_opts lo = {.renorm = a->renorm, .transient = a->transient};
-    if (!*ly || qd_sweep_set_lyap(w, *ly, &lo) != QD_OK)
-        return cli_diag_ctx(c->ctx);
-    return QD_EXIT_OK;
+/* A refused set-up: shown in the text it is located in, or with its option. */
+static int setup_error(cli_sim *c, const sweep_args *a, const char *where, const char *csv) {
+    const struct { const char *field, *opt, *text; } f[] = {
+        {"grid", "--grid", a->grid}, {"random", "--random", a->random},
+        {"list_csv", a->list, csv}, {"measures", "--measure", a->measure}};
+    for (size_t i = 0; where && i < sizeof f / sizeof f[0]; i++)
+        if (!strcmp(where, f[i].field))
+            return cli_sim_fail_in(c, f[i].opt, f[i].text);
+    return cli_diag_ctx(c->ctx);
 }
 
+/* The sweep set up by the library (qd_sweep_setup_new), then run. */
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
-    int rc = measure_needs(c, a->measure);
-    if (rc == QD_EXIT_OK && qd_sim_compile(c->s) != QD_OK)
-        rc = cli_diag_ctx(c->ctx);
-    qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_new(c->ctx, c->s, c->mf.model) : NULL;
-    if (rc == QD_EXIT_OK && !w)
-        rc = cli_diag_ctx(c->ctx);
+    qd_sweep_spec sp = {.grid = a->grid, .random = a->random, .n = a->n,
+                        .seed = (uint64_t)a->seed, .measures = a->measure,
+                        .nevents = a->sim.events.n + a->sim.stops.n, .section = a->section != NULL,
+                        .renorm = a->renorm, .transient = a->transient};
+    char *csv = NULL;
+    size_t len;
+    int rc = a->list ? cli_read_text(a->list, "a list of runs", &csv, &len) : QD_EXIT_OK;
+    if (rc == QD_EXIT_OK && !writers[fmt].write && qd_sweep_hdf5_ready(c->ctx) != QD_OK)
+        rc = cli_diag_ctx(c->ctx); /* before the runs: a qdot without the module */
+    sp.list_csv = csv;
+    const char *where = NULL;
+    qd_sweep *w = rc == QD_EXIT_OK ? qd_sweep_setup_new(c->ctx, c->set, c->mf.model, &sp, &where)
+                                   : NULL;
     if (rc == QD_EXIT_OK)
-        rc = set_runs(w, a, c->ctx);
-    if (rc == QD_EXIT_OK && qd_sweep_measures(w, a->measure) != QD_OK)
-        rc = spec_error(c->ctx, "--measure", a->measure);
-    if (rc == QD_EXIT_OK && a->section && qd_sweep_set_section(w, a->nuser) != QD_OK)
-        rc = cli_diag_ctx(c->ctx);
-    qd_lyap *ly = NULL;
-    if (rc == QD_EXIT_OK)
-        rc = lyap_setup(c, w, a, &ly);
-    if (rc == QD_EXIT_OK)
-        rc = run_all(c, w, a, fmt);
+        rc = w ? run_all(c, w, a, fmt, &sp) : setup_error(c, a, where, csv);
     qd_sweep_free(w);
-    qd_lyap_free(ly);
+    free(csv);
     return rc;
 }
 
@@ -370,10 +233,11 @@ int cli_cmd_sweep(int argc, char **argv) {
         rc = check_output(&a, fmt);
     if (rc != QD_EXIT_OK)
         return rc;
-    rc = more_events(&a);
+    if (a.section && a.sim.events.n + a.sim.stops.n == QD_SIM_MAX_LIST)
+        return cli_usage_error("at most %d events with the --section", QD_SIM_MAX_LIST - 1);
+    a.sim.section = a.section; /* the event after the user's (cli_sim_setup) */
     cli_sim c = {0};
-    if (rc == QD_EXIT_OK)
-        rc = cli_sim_setup(&c, &a.sim);
+    rc = cli_sim_setup(&c, &a.sim);
     if (rc == QD_EXIT_OK)
         rc = sweep(&c, &a, fmt);
     cli_sim_free(&c);

@@ -7,7 +7,6 @@
  */
 #include "linear_cli.h"
 
-#include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/state.h"
@@ -17,52 +16,17 @@
 
 int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double *a,
                    double *b) {
-    const char *eq = strchr(text, '=');
-    size_t s = 0, e = eq ? (size_t)(eq - text) : 0;
-    while (s < e && isspace((unsigned char)text[s]))
-        s++;
-    while (e > s && isspace((unsigned char)text[e - 1]))
-        e--;
-    if (!eq || e == s || e - s >= cap)
-        return cli_usage_error("--scan takes NAME=A:B (a parameter and its range), not '%s'", text);
-    memcpy(name, text + s, e - s);
-    name[e - s] = '\0';
-    size_t at = (size_t)(eq - text) + 1;
-    if (qd_state_range(ctx, NULL, text, at, strlen(text) - at, a, b) != QD_OK)
+    if (qd_state_named_range(ctx, NULL, text, name, cap, a, b) != QD_OK)
         return cli_state_diag(ctx, "--scan", text);
     return QD_EXIT_OK;
 }
 
-/* --about "x = 1/2 - mu, ...": the state reader's exact values, in the
- * order of the equations' coordinates (the eliminated ones refused). */
+/* --about "x = 1/2 - mu, ...": exact values in the equations' coordinates. */
 int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about) {
-    size_t n = r->e->n, ns = r->st.n;
-    const qd_expr **exact = calloc(ns + 1, sizeof *exact);
-    bool *given = calloc(ns + 1, sizeof *given);
-    double *vals = malloc((ns + 1) * sizeof *vals);
-    if (!exact || !given || !vals) {
-        free(exact);
-        free(given);
-        free(vals);
-        return cli_out_of_memory();
-    }
-    memcpy(vals, r->st.vals, ns * sizeof *vals); /* the run's own state stays as it is */
-    qd_state st = {ns, r->st.syms, vals};
-    qd_state_read_opts o = {.refuse = QD_STATE_VELOCITIES | QD_STATE_TIME | QD_STATE_PARAMS |
-                                      QD_STATE_EXTRA,
-                            .independent = r->e->q, .nindependent = n, .given = given,
-                            .exact = exact};
-    int rc = qd_state_read(r->c.ctx, r->c.mf.model, &st, text, &o) == QD_OK
-                 ? QD_EXIT_OK
-                 : cli_state_diag(r->c.ctx, "--about", text);
-    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
-        size_t k = qd_state_find(&st, r->e->q[j]);
-        about[j] = k < ns && given[k] ? exact[k] : qd_int(r->c.ctx, 0);
-    }
-    free(exact);
-    free(given);
-    free(vals);
-    return rc;
+    if (qd_state_read_point(r->c.ctx, r->c.mf.model, &r->st, text, r->e->n, r->e->q, about) !=
+        QD_OK)
+        return cli_state_diag(r->c.ctx, "--about", text);
+    return QD_EXIT_OK;
 }
 
 /* ---- the command ------------------------------------------------------------------- */

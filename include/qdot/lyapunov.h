@@ -233,6 +233,59 @@ QD_API qd_status qd_lyap_print(const qd_lyap_report *r, qd_buf *out);
  * estimate is not finite. */
 QD_API qd_status qd_lyap_json(const qd_lyap_report *r, qd_buf *out);
 
+/* ---- a Poincare surface of section (src/lyap/section.c) ---------------- */
+
+typedef struct qd_poincare_opts {
+    int event;     /* the section: this event of the run (qd_sim_add_event's order) */
+    size_t want;   /* the run ends at the want-th crossing (> 0) */
+    /* Every row of the run, crossing true at a crossing of the section
+     * (else a sample or another event's row); nonzero ends the run (a
+     * crossing's row still counted). */
+    int (*sink)(void *data, const double *row, bool crossing);
+    /* May be NULL: after each row, done in [0, 1] the larger of the
+     * crossings found (of want) and the time used (of t_end - t0). */
+    void (*progress)(void *data, double done, double t);
+    void *data;    /* sink's and progress' */
+} qd_poincare_opts;
+
+typedef struct qd_poincare_result {
+    size_t got;          /* the crossings counted */
+    double last_t;       /* the time of the last one (t0: none yet) */
+    qd_sim_stats stats;  /* the run's */
+} qd_poincare_result;
+
+/* Run s from opts (qd_sim_run), the rows given to o->sink, until o->want
+ * crossings of the section, t_end, or the sink says stop (the caller
+ * compares r->got with o->want: fewer crossings than wanted by t_end is
+ * no failure).  The run's failures are qd_sim_run's; QD_ERR_ARG for want
+ * 0 or a NULL sink. */
+QD_API qd_status qd_poincare_run(qd_sim *s, const qd_sim_opts *opts, const qd_poincare_opts *o,
+                                 qd_poincare_result *r);
+
+/* ---- a run set up as qdot lyapunov takes it (src/lyap/setup.c) ---------- */
+
+/* The exponents of one run, with what the printers read of it. */
+typedef struct qd_lyap_result {
+    qd_lyap_opts opts;      /* as run (nexp 0 asked: 1) */
+    double *exps, *err;     /* opts.nexp each, descending (qd_lyap_run's) */
+    qd_lyap_stats stats;
+    qd_lyap_report report;  /* points into this struct: keep it where it was filled */
+} qd_lyap_result;
+
+/* The lo->nexp (lo NULL or nexp 0: 1) largest exponents of set's run from
+ * opts (qd_sim_setup_options'), by the variational equations of set's
+ * Lagrange equations (m the model set was made from), into r, report
+ * included.  QD_ERR_ARG refusing the run, the reason in ctx naming the
+ * field in qd_diag.name: "no_speeds" (set is not in Lagrange's form: a
+ * model given by H, or in speeds) or "exponents" (nexp above 2n); else the
+ * errors of qd_lyap_new and qd_lyap_run.  Free r with qd_lyap_result_free,
+ * also after a failure. */
+struct qd_sim_setup;
+QD_API qd_status qd_lyap_setup_run(qd_ctx *ctx, const struct qd_sim_setup *set,
+                                   const qd_model *m, const qd_sim_opts *opts,
+                                   const qd_lyap_opts *lo, qd_lyap_result *r);
+QD_API void qd_lyap_result_free(qd_lyap_result *r); /* NULL is fine */
+
 #ifdef __cplusplus
 }
 #endif
@@ -243,5 +296,6 @@ QD_API qd_status qd_lyap_json(const qd_lyap_report *r, qd_buf *out);
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
  * (err, stats); qd_flow_run (fo); qd_flow_print (prefix); qd_lyap_print,
- * qd_lyap_json (r->err). An array whose count is 0 may be NULL. */
+ * qd_lyap_json (r->err); qd_lyap_setup_run (lo); qd_poincare_run's
+ * o->progress and o->data. An array whose count is 0 may be NULL. */
 #endif

@@ -227,6 +227,42 @@ QD_API qd_status qd_scene_json(const qd_scene *s, qd_buf *out);
  * when out ran out of memory. */
 QD_API qd_status qd_scene_html(const qd_scene *s, qd_buf *out);
 
+/* ---- a picture set up as qdot animate takes it (src/scene/setup.c) ------ */
+
+typedef struct qd_scene_setup qd_scene_setup;
+
+/* What to draw, as words (qdot animate's --draw, --trace, --spring). */
+typedef struct qd_scene_spec {
+    const char *const *draws;   /* qd_scene_choose's words (none: its default) */
+    size_t ndraws;
+    const char *const *traces;  /* qd_scene_named's names */
+    size_t ntraces;
+    const char *const *springs; /* qd_scene_pairs' "A,B" */
+    size_t nsprings;
+    const char *title;          /* qd_scene.model (may be NULL) */
+} qd_scene_spec;
+
+/* The points sp chooses among the model m of set (qd_scene_choose), their
+ * masses at set's initial parameter values, the traces and springs it names,
+ * and the points' places added to set's run as outputs (before it compiles:
+ * qd_scene_add_outputs).  set, m and sp's texts must outlive the set-up;
+ * ctx is set's.  NULL on failure, the reason in ctx (the errors of the
+ * calls named: a word naming no point has the option field "draw",
+ * "trace" or "spring" in qd_diag.name; nothing to draw has none). */
+struct qd_sim_setup;
+QD_API qd_scene_setup *qd_scene_setup_new(qd_ctx *ctx, struct qd_sim_setup *set,
+                                          const qd_model *m, const qd_scene_spec *sp);
+/* set's run from opts sampled at the frames (qd_scene_record), then its
+ * links and drawing plane (qd_scene_links), the scene completed: method,
+ * energy error, conservative.  stats (may be NULL) gets the run's.  Once (a
+ * second call is QD_ERR_ARG); * the errors of qd_scene_record, or of the links (reason in ctx). */
+QD_API qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
+                                       void (*progress)(void *data, double t), void *data,
+                                       qd_sim_stats *stats);
+/* The scene, owned by sc (its frames, links and plane once recorded). */
+QD_API const qd_scene *qd_scene_setup_scene(const qd_scene_setup *sc);
+QD_API void qd_scene_setup_free(qd_scene_setup *sc);
+
 #ifdef __cplusplus
 }
 #endif
@@ -239,5 +275,6 @@ QD_API qd_status qd_scene_html(const qd_scene *s, qd_buf *out);
  * (ctx, skip); qd_scene_choose, qd_scene_named, qd_scene_pairs and
  * qd_scene_sample (ctx); qd_scene_masses and qd_scene_links (ctx, and
  * syms, vals or springs with a count of 0); qd_scene_json's arrays with a
- * count of 0, its model and method. An array whose count is 0 may be NULL. */
+ * count of 0, its model and method; qd_scene_setup_record (progress, data,
+ * stats). An array whose count is 0 may be NULL. */
 #endif

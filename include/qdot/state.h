@@ -137,6 +137,26 @@ QD_API qd_status qd_state_value(qd_ctx *ctx, const qd_model *m, const char *text
 QD_API qd_status qd_state_range(qd_ctx *ctx, const qd_model *m, const char *text, size_t start,
                                 size_t len, double *a, double *b);
 
+/* "NAME=A:B" (a scan's parameter and its range: qdot modes --scan): NAME,
+ * blanks trimmed, into name (cap bytes, NUL-ended), the range after '='
+ * read by qd_state_range into *a and *b.  No '=', an empty NAME or one of
+ * cap bytes or more is QD_ERR_ARG located in text; the range's errors are
+ * qd_state_range's.  NAME is not looked up: the caller knows what it may
+ * be. */
+QD_API qd_status qd_state_named_range(qd_ctx *ctx, const qd_model *m, const char *text,
+                                      char *name, size_t cap, double *a, double *b);
+
+/* A point "q = EXPR, ..." of the coordinates q[0, n) (a scan's --about:
+ * the equations' coordinates, eliminated ones refused), read as
+ * qd_state_read reads it on a copy of st's values (st unchanged), with
+ * velocities, t, parameters and extra slots refused: at[j] the exact
+ * expression read for q[j] (kept in the parameters: a scan evaluates it
+ * at each value), 0 for a coordinate not named.  Errors as qd_state_read's,
+ * located in text. */
+QD_API qd_status qd_state_read_point(qd_ctx *ctx, const qd_model *m, const qd_state *st,
+                                     const char *text, size_t n, const qd_expr *const *q,
+                                     const qd_expr **at);
+
 /* The end of the item that starts at text[i] of a comma-separated list:
  * the next comma outside brackets, or the end of text. */
 QD_API size_t qd_state_item_end(const char *text, size_t i);
@@ -150,6 +170,6 @@ QD_API size_t qd_state_item_end(const char *text, size_t i);
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_state_layout (q); qd_state_append
- * (vals); qd_state_read (opts); qd_state_value (m). An array whose count is
- * 0 may be NULL. */
+ * (vals); qd_state_read (opts); qd_state_value (m); qd_state_named_range
+ * (m). An array whose count is 0 may be NULL. */
 #endif

@@ -140,6 +140,31 @@ struct qd_sim_setup;
 QD_API qd_status qd_sweep_setup_measures(qd_ctx *ctx, struct qd_sim_setup *set,
                                          const char *spec); /* ctx: set's */
 
+/* A whole sweep as its texts give it (qdot sweep's options). */
+typedef struct qd_sweep_spec {
+    const char *grid, *random, *list_csv; /* the runs: exactly one (list_csv: CSV text) */
+    size_t n;                  /* random: the number of runs */
+    uint64_t seed;             /* random: the seed */
+    const char *measures;      /* required */
+    size_t nevents;            /* the events set has before the section (`event`: the first) */
+    bool section;              /* event nevents of set is poincare-count's section */
+    double renorm, transient;  /* the Lyapunov measures' qd_lyap_opts (0: the defaults) */
+} qd_sweep_spec;
+
+/* The sweep of sp over set's run: refused first when the measures need
+ * what the run lacks (`event` an event, `poincare-count` the section, the
+ * Lyapunov measures Lagrange's equations) or sp gives not exactly one kind
+ * of runs; then the measures' needs added to set (qd_sweep_setup_measures),
+ * its run compiled, the runs, the measures, the section and the Lyapunov
+ * measures' variational equations (made from m and set's equations, owned
+ * by the sweep).  set and m must outlive the sweep; ctx is set's.  NULL on
+ * failure, the reason in ctx: an error in a text is located in it and
+ * *where (may be NULL) names its field ("grid", "random", "list_csv",
+ * "measures"), else *where is NULL and a refusal names the field it is
+ * about in qd_diag.name ("grid", "event", "section", "no_speeds"). */
+QD_API qd_sweep *qd_sweep_setup_new(qd_ctx *ctx, struct qd_sim_setup *set, const qd_model *m,
+                                    const qd_sweep_spec *sp, const char **where);
+
 /* ---- a grid of two axes as a colour map (qdot sweep --map) -------------- */
 
 /* The measure column a map draws: measure NULL, the first measure column;
@@ -154,6 +179,15 @@ QD_API qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, siz
  * second up, the axes labelled with their names, the colour bar with the
  * column's.  Errors as qd_sweep_map_column's, or the plot's. */
 QD_API qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plot *p);
+
+/* qdot sweep --map FILE: before the runs, that path's format (a known
+ * ending: qd_plot_format_of) and the column (qd_sweep_map_column) into
+ * *col; after them, qd_sweep_map of rows on a plot of its own titled title
+ * (may be NULL) written to path.  Errors as those calls', in w's context. */
+QD_API qd_status qd_sweep_map_check(const qd_sweep *w, const char *path, const char *measure,
+                                    size_t *col);
+QD_API qd_status qd_sweep_map_file(const qd_sweep *w, const double *rows, size_t col,
+                                   const char *title, const char *path);
 
 QD_API size_t qd_sweep_nruns(const qd_sweep *w);
 QD_API size_t qd_sweep_ninputs(const qd_sweep *w);
@@ -262,6 +296,8 @@ typedef struct qd_sweep_result {
     qd_sweep_outcome *outcome; /* nruns */
     size_t failed;             /* runs whose status is not QD_OK (on the writer) */
     qd_sweep_where where;
+    unsigned threads;          /* each process's: where.threads across ranks, else the
+                                * pool's (qd_sweep_threads of where.threads) */
 } qd_sweep_result;
 
 /* qd_sweep_run_all into arrays this call allocates (malloc'd; free with
@@ -273,6 +309,12 @@ QD_API qd_status qd_sweep_result_run(qd_ctx *ctx, const qd_sweep *w, const qd_si
                                      void (*progress)(void *data, size_t done, size_t total),
                                      void *data, qd_sweep_result *r);
 QD_API void qd_sweep_result_free(qd_sweep_result *r); /* NULL is fine */
+
+/* Rows of failures only are no answer: QD_ERR_NUMERIC, "every run failed
+ * (the first: REASON)" in ctx, when r (on the writer) has runs and every
+ * one failed (the rows, each with its reason, are still worth writing);
+ * else QD_OK. */
+QD_API qd_status qd_sweep_result_check(qd_ctx *ctx, const qd_sweep_result *r);
 
 /* Can this qdot write HDF5 (qdot_hdf5.so loads)?  QD_OK, or
  * QD_ERR_UNSUPPORTED with the reason in ctx. */
@@ -296,6 +338,14 @@ QD_API qd_status qd_sweep_hdf5(qd_ctx *ctx, const qd_sweep *w, const double *row
                                const char *const *attr_names, const char *const *attr_values,
                                const char *path);
 
+/* qd_sweep_hdf5 of r's rows with how sp made the sweep as the attributes:
+ * model (the caller's name for it; NULL: ""), measures, then grid, random
+ * or list (sp's text; a list's the name list, a file's, as CSV text is no
+ * record; NULL: ""), and for random n and seed. */
+QD_API qd_status qd_sweep_hdf5_made(qd_ctx *ctx, const qd_sweep *w, const qd_sweep_result *r,
+                                    const qd_sweep_spec *sp, const char *model,
+                                    const char *list, const char *path);
+
 #ifdef __cplusplus
 }
 #endif
@@ -306,7 +356,9 @@ QD_API qd_status qd_sweep_hdf5(qd_ctx *ctx, const qd_sweep *w, const double *row
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_sweep_set_lyap (lo); qd_sweep_run
  * (data, progress); qd_sweep_run_one (stop); qd_sweep_needs (s; needs, when
- * cap is 0); qd_sweep_prepare (read, data); qd_sweep_map_column (measure).
+ * cap is 0); qd_sweep_prepare (read, data); qd_sweep_map_column (measure);
+ * qd_sweep_setup_new (where); qd_sweep_map_check (measure); qd_sweep_map_file
+ * (title); qd_sweep_hdf5_made (model, list).
  * An array whose count is 0 may be NULL.  qd_sweep_outcome_str returns
  * NULL for a NULL o or out, or cap 0. */
 #endif

@@ -114,3 +114,18 @@ qd_status qd_sweep_hdf5(qd_ctx *ctx, const qd_sweep *w, const double *rows,
     qd__free(av);
     return st;
 }
+
+qd_status qd_sweep_hdf5_made(qd_ctx *ctx, const qd_sweep *w, const qd_sweep_result *r,
+                             const qd_sweep_spec *sp, const char *model, const char *list,
+                             const char *path) {
+    QD_ARGS_CTX(ctx, ctx && w && r && sp && sp->measures && path);
+    char n[32], seed[32];
+    snprintf(n, sizeof n, "%zu", sp->n);
+    snprintf(seed, sizeof seed, "%llu", (unsigned long long)sp->seed);
+    const char *how = sp->grid ? "grid" : sp->random ? "random" : "list";
+    const char *names[] = {"model", "measures", how, "n", "seed"};
+    const char *values[] = {model ? model : "", sp->measures,
+                            sp->grid ? sp->grid : sp->random ? sp->random : list ? list : "",
+                            n, seed};
+    return qd_sweep_hdf5(ctx, w, r->rows, r->outcome, sp->random ? 5 : 3, names, values, path);
+}

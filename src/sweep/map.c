@@ -82,3 +82,26 @@ qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plo
     qd__free(z);
     return st;
 }
+
+qd_status qd_sweep_map_check(const qd_sweep *w, const char *path, const char *measure,
+                             size_t *col) {
+    QD_ARGS(QD_ERR_ARG, w && path && col);
+    qd_plot_format f;
+    qd_status st = qd_plot_format_of(w->ctx, path, &f);
+    return st == QD_OK ? qd_sweep_map_column(w, measure, col) : st;
+}
+
+qd_status qd_sweep_map_file(const qd_sweep *w, const double *rows, size_t col, const char *title,
+                            const char *path) {
+    QD_ARGS(QD_ERR_ARG, w && rows && path);
+    qd_plot *p = qd_plot_new(w->ctx, 0, 0);
+    qd_status st = p ? QD_OK : qd_ctx_status(w->ctx);
+    if (st == QD_OK && title)
+        st = qd_plot_set_title(p, title);
+    if (st == QD_OK)
+        st = qd_sweep_map(w, rows, col, p);
+    if (st == QD_OK)
+        st = qd_plot_write(p, path);
+    qd_plot_free(p);
+    return st;
+}

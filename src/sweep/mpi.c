@@ -119,7 +119,20 @@ qd_status qd_sweep_result_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts 
                                     &r->where);
     for (size_t k = 0; st == QD_OK && r->where.writer && k < r->nruns; k++)
         r->failed += r->outcome[k].status != QD_OK;
+    /* the threads the pool started: asked for (0: the cores), at most the runs */
+    r->threads = r->where.ranks > 1 ? r->where.threads
+                                    : qd_sweep_threads(r->where.threads, r->nruns);
     return st;
+}
+
+qd_status qd_sweep_result_check(qd_ctx *ctx, const qd_sweep_result *r) {
+    QD_ARGS_CTX(ctx, ctx && r);
+    if (!r->where.writer || !r->nruns || r->failed < r->nruns)
+        return QD_OK;
+    char why[QD_SWEEP_OUTCOME_MAX];
+    qd_ctx_error(ctx, QD_ERR_NUMERIC, "every run failed (the first: %s)",
+                 qd_sweep_outcome_str(&r->outcome[0], why, sizeof why));
+    return QD_ERR_NUMERIC;
 }
 
 void qd_sweep_result_free(qd_sweep_result *r) {

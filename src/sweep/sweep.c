@@ -75,6 +75,7 @@ void qd_sweep_free(qd_sweep *w) {
     qd__sweep_free_inputs(w);
     qd__sweep_free_measures(w);
     free_columns(w);
+    qd_lyap_free(w->own_lyap);
     qd__free(w->par0);
     qd__free(w);
 }

@@ -63,6 +63,7 @@ struct qd_sweep {
     size_t event, section;
     bool has_section;
     const qd_lyap *lyap;   /* the measures lyapunov, lyapunov-spectrum */
+    qd_lyap *own_lyap;     /* lyap when qd_sweep_setup_new made it (freed with w) */
     qd_lyap_opts lyap_opts;
 };
 

@@ -2229,6 +2229,27 @@ static void null_lyapunov(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_lyap_json(NULL, NULL));
     reset(&F);
+    /* ---- qd_poincare_run */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_run(NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* opts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_lyap_setup_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(NULL, NULL, F.model, NULL, NULL, NULL));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(F.ctx, NULL, F.model, NULL, NULL, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(F.ctx, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_lyap_result_free */
+    /* r NULL */
+    qd_lyap_result_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -4768,6 +4789,28 @@ static void null_scene(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_html(NULL, NULL));
     reset(&F);
+    /* ---- qd_scene_setup_new */
+    /* ctx NULL */
+    assert_null(qd_scene_setup_new(NULL, NULL, F.model, NULL));
+    reset(&F);
+    /* set NULL */
+    assert_null(qd_scene_setup_new(F.ctx, NULL, F.model, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_scene_setup_new(F.ctx, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_scene_setup_record */
+    /* sc NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_setup_record(NULL, NULL, NULL, NULL, (qd_sim_stats *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_scene_setup_scene */
+    /* sc NULL */
+    assert_null(qd_scene_setup_scene(NULL));
+    reset(&F);
+    /* ---- qd_scene_setup_free */
+    /* sc NULL */
+    qd_scene_setup_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -5590,6 +5633,41 @@ static void null_state(void **state)
     /* b NULL */
     assert_int_equal(QD_ERR_ARG, qd_state_range(F.ctx, F.model, "q", 1, 1, F.d, NULL));
     reset(&F);
+    /* ---- qd_state_named_range */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(NULL, F.model, "q", F.c, 1, F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, NULL, F.c, 1, F.d, F.d));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, "q", NULL, 1, F.d, F.d));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, "q", F.c, 1, NULL, F.d));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_named_range(F.ctx, F.model, "q", F.c, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_state_read_point */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(NULL, F.model, NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, NULL, NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, "q", 1, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_state_read_point(F.ctx, F.model, NULL, "q", 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
     /* ---- qd_state_item_end */
     /* text NULL */
     assert_true(qd_state_item_end(NULL, 1) == 0);
@@ -5745,6 +5823,16 @@ static void null_sweep(void **state)
     /* spec NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_setup_measures(F.ctx, NULL, NULL));
     reset(&F);
+    /* ---- qd_sweep_setup_new */
+    /* ctx NULL */
+    assert_null(qd_sweep_setup_new(NULL, NULL, F.model, NULL, (const char * *)F.names));
+    reset(&F);
+    /* set NULL */
+    assert_null(qd_sweep_setup_new(F.ctx, NULL, F.model, NULL, (const char * *)F.names));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_sweep_setup_new(F.ctx, NULL, NULL, NULL, (const char * *)F.names));
+    reset(&F);
     /* ---- qd_sweep_map_column */
     /* w NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_map_column(NULL, "q", F.z));
@@ -5761,6 +5849,26 @@ static void null_sweep(void **state)
     reset(&F);
     /* p NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_map(NULL, F.d, 1, NULL));
+    reset(&F);
+    /* ---- qd_sweep_map_check */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_check(NULL, "q", "q", F.z));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_check(NULL, NULL, "q", F.z));
+    reset(&F);
+    /* col NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_check(NULL, "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_sweep_map_file */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_file(NULL, F.d, 1, "q", "q"));
+    reset(&F);
+    /* rows NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_file(NULL, NULL, 1, "q", "q"));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_map_file(NULL, F.d, 1, "q", NULL));
     reset(&F);
     /* ---- qd_sweep_nruns */
     /* w NULL */
@@ -5852,6 +5960,13 @@ static void null_sweep(void **state)
     /* r NULL */
     qd_sweep_result_free(NULL);
     reset(&F);
+    /* ---- qd_sweep_result_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_result_check(NULL, NULL));
+    reset(&F);
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_result_check(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_sweep_hdf5_ready */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_ready(NULL));
@@ -5874,6 +5989,16 @@ static void null_sweep(void **state)
     reset(&F);
     /* path NULL */
     assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5(F.ctx, NULL, F.d, NULL, 1, (const char * const *)F.names, (const char * const *)F.names, NULL));
+    reset(&F);
+    /* ---- qd_sweep_hdf5_made */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_made(NULL, NULL, NULL, NULL, "q", "q", "q"));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_made(F.ctx, NULL, NULL, NULL, "q", "q", "q"));
+    reset(&F);
+    /* path NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sweep_hdf5_made(F.ctx, NULL, NULL, NULL, "q", "q", NULL));
     reset(&F);
     teardown(&F);
 }

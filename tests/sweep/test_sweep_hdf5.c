@@ -183,6 +183,33 @@ static void test_round_trip(void **state) {
     h5_fix_free(h);
 }
 
+/* qd_sweep_hdf5_made: the attributes say how the sweep was made (a random
+ * draw: its spec, n and the seed as a whole number of 64 bits). */
+static void test_made(void **state) {
+    (void)state;
+    h5_fix *h = h5_fix_new(true);
+    const char *path = tmp_path("made.h5");
+    qd_sweep_result r = {.nruns = NRUNS, .ncols = h->ncols, .rows = h->rows,
+                         .outcome = h->outcome};
+    qd_sweep_spec sp = {.random = "x=0.1:0.3", .n = 3, .seed = 18446744073709551615u,
+                        .measures = "final, energy_error"};
+    assert_int_equal(qd_sweep_hdf5_made(h->f->ctx, h->w, &r, &sp, "osc.qd", NULL, path), QD_OK);
+    hid_t f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    assert_true(f >= 0);
+    check_runs(f, h);
+    const char *names[] = {"model", "measures", "random", "n", "seed"};
+    const char *values[] = {"osc.qd", "final, energy_error", "x=0.1:0.3", "3",
+                            "18446744073709551615"};
+    char text[128];
+    for (size_t k = 0; k < 5; k++) {
+        read_string_attr(f, names[k], text, sizeof text);
+        assert_string_equal(text, values[k]);
+    }
+    H5Fclose(f);
+    remove(path);
+    h5_fix_free(h);
+}
+
 /* A sweep of no runs still makes a readable file of 0 rows. */
 static void test_no_runs(void **state) {
     (void)state;
@@ -281,6 +308,7 @@ int main(int argc, char **argv) {
         return dump(argv[2]);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_round_trip),
+        cmocka_unit_test(test_made),
         cmocka_unit_test(test_no_runs),
         cmocka_unit_test(test_unwritable),
     };
