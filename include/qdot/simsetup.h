@@ -108,6 +108,26 @@ QD_API qd_status qd_sim_setup_crossing(qd_sim_setup *s, const char *text, size_t
 QD_API qd_status qd_sim_setup_input(qd_sim_setup *s, const char *name, const char *text,
                                     size_t a, size_t b);
 
+/* An input's source as one text says it (`qdot simulate --input`):
+ *   "NAME = EXPR"   QD_SIM_INPUT_EXPR: the expression, given to the run
+ *                   (qd_sim_setup_input)
+ *   NAME=FILE.csv   QD_SIM_INPUT_TABLE (a value ending in .csv): the
+ *                   caller reads the file (qd_sim_input_table_read)
+ *   "NAME = lqr"    QD_SIM_INPUT_LQR: the caller sets the feedback up
+ *                   (qd_sim_setup_lqr)
+ * *kind says which, name (cap bytes) holds NAME and [*a, *b) is the
+ * value's place in text, blanks trimmed.  A text without "NAME =", or a
+ * NAME an earlier call gave, is QD_ERR_ARG (not located); an expression's
+ * error is located in text. */
+typedef enum qd_sim_input_kind {
+    QD_SIM_INPUT_EXPR,
+    QD_SIM_INPUT_TABLE,
+    QD_SIM_INPUT_LQR
+} qd_sim_input_kind;
+QD_API qd_status qd_sim_setup_input_text(qd_sim_setup *s, const char *text,
+                                         qd_sim_input_kind *kind, char *name, size_t cap,
+                                         size_t *a, size_t *b);
+
 /* The run's options as given: each number as text (NULL when not given),
  * an expression in the parameters. */
 typedef struct qd_sim_setup_opts {

@@ -116,6 +116,7 @@ void qd_sim_setup_free(qd_sim_setup *s) {
     if (s->native)
         qd_native_unload(s->native);
     free(s->native);
+    free(s->input_given);
     free(s->q0);
     free(s->p0);
     free(s->u0);

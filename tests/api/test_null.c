@@ -5177,6 +5177,22 @@ static void null_simsetup(void **state)
     /* text NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_input(NULL, "q", NULL, 1, 1));
     reset(&F);
+    /* ---- qd_sim_setup_input_text */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, F.c, 1, F.z, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, NULL, NULL, F.c, 1, F.z, F.z));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, NULL, 1, F.z, F.z));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, F.c, 1, NULL, F.z));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, F.c, 1, F.z, NULL));
+    reset(&F);
     /* ---- qd_sim_setup_options */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, (qd_sim_opts *)(void *)F.blob));
