@@ -112,19 +112,15 @@ static int flow_print(const qd_flow *f, double period) {
     return put_stderr(qd_flow_print(f, period, "qdot: simulate: ", &b), &b);
 }
 
-/* The flow run, its rows as CSV into rows when given (qd_flow_run_csv,
+/* The flow run, its rows as CSV into rows when given (qd_flow_run_csv:
  * every --dt, else --step, else 100 rows); *f filled (qd_flow_free). */
-static int flow_compute(cli_sim *c, const cli_sim_args *a, qd_flow *f, qd_sim_opts *o,
-                        cli_out_file *rows) {
+static int flow_compute(cli_sim *c, qd_flow *f, qd_sim_opts *o, cli_out_file *rows) {
     *f = (qd_flow){0};
     qd_lyap *l = flow_model(c);
     if (!l)
         return QD_EXIT_USAGE;
     qd_flow_sim_opts(&c->opts, o);
-    double grid = !(a->dt || a->every || a->step) ? 0
-                  : c->opts.every > 0             ? c->opts.every
-                                                  : c->opts.dt;
-    qd_status st = rows ? qd_flow_run_csv(c->ctx, l, c->e, o, grid, cli_out_put, rows, f)
+    qd_status st = rows ? qd_flow_run_csv(c->ctx, l, c->e, o, 0, cli_out_put, rows, f)
                         : qd_flow_run(c->ctx, l, o, NULL, f);
     qd_lyap_free(l);
     if (st == QD_ERR_IO)
@@ -146,7 +142,7 @@ static int run_columns(cli_sim *c, const cli_sim_args *a) {
         return rc;
     qd_flow f;
     qd_sim_opts fopts;
-    rc = flow_compute(c, a, &f, &fopts, &rows);
+    rc = flow_compute(c, &f, &fopts, &rows);
     if (rc == QD_EXIT_OK)
         rc = flow_print(&f, 0);
     qd_flow_free(&f);
@@ -169,7 +165,7 @@ static int finish(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa,
     qd_flow f = {0};
     qd_sim_opts fopts;
     if (rc == QD_EXIT_OK && sa) {
-        rc = flow_compute(c, a, &f, &fopts, NULL);
+        rc = flow_compute(c, &f, &fopts, NULL);
         if (rc == QD_EXIT_OK)
             rc = flow_print(&f, sa->period);
     }
@@ -251,6 +247,8 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     if (rc != QD_EXIT_OK) {
         if (s != QD_OK && !w.failed)
             cli_sim_fail(c, s);
+    } else if (s != QD_OK && w.failed) { /* JSON rows: memory ran out */
+        rc = cli_out_of_memory();
     } else if (s != QD_OK) {
         rc = cli_sim_fail(c, s);
     } else if (interrupted) {

@@ -167,8 +167,8 @@ QD_API qd_status qd_flow_column_name(const qd_eom *e, size_t k, qd_buf *out);
  * --variational columns`): the header of qd_flow_column_name's names,
  * then the row at t0 (the initial state, phi = I) and a row at every
  * t0 + k every and t_end (qd_flow_opts every), each t, y, then phi column
- * by column in qd_double_format, handed to write(data, ...).  every <= 0
- * gives 100 rows.  A flow run of l with opts as given (qd_flow_sim_opts
+ * by column in qd_double_format, handed to write(data, ...).  every <= 0:
+ * opts' own spacing (every, else dt), else 100 rows.  A flow run of l with opts as given (qd_flow_sim_opts
  * first); *out as qd_flow_run fills it.  A write that fails ends the run:
  * QD_ERR_IO, recorded in ctx; nothing more is written. */
 QD_API qd_status qd_flow_run_csv(qd_ctx *ctx, const qd_lyap *l, const qd_eom *e,

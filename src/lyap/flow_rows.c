@@ -63,8 +63,13 @@ qd_status qd_flow_run_csv(qd_ctx *ctx, const qd_lyap *l, const qd_eom *e,
     QD_ARGS_CTX(ctx, l && e && opts && opts->q0 && opts->qd0 && write && out);
     *out = (qd_flow){0};
     rows_out o = {.write = write, .data = data, .d = 2 * e->n};
-    qd_flow_opts fo = {.every = every > 0 ? every : (opts->t_end - opts->t0) / 100,
-                       .sink = row, .data = &o};
+    /* the spacing asked for, else the run's own (rows every --dt, or a
+     * fixed step), else 100 rows */
+    every = every > 0         ? every
+            : opts->every > 0 ? opts->every
+            : opts->dt > 0    ? opts->dt
+                              : (opts->t_end - opts->t0) / 100;
+    qd_flow_opts fo = {.every = every, .sink = row, .data = &o};
     qd_status st = first_rows(&o, e, opts) ? qd_flow_run(ctx, l, opts, &fo, out) : QD_OK;
     qd_buf_free(&o.line);
     if (!o.lost)

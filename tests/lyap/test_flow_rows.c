@@ -7,8 +7,9 @@
  * variational equations of a linear system are the system), and the
  * state x = cos w t, x' = -w sin w t.  The rows are t, x, x', then Phi
  * column by column (dx/dx0, dx'/dx0, dx/dx'0, dx'/dx'0); the first is t0
- * with Phi = I, then every 0.25 to t_end; without a spacing, 100 rows
- * after the first; a write that fails is QD_ERR_IO.
+ * with Phi = I, then every 0.25 to t_end; without a spacing the run's
+ * own (its dt), else 100 rows after the first; a write that fails is
+ * QD_ERR_IO.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -110,6 +111,14 @@ static void test_rows(void **state) {
     k = (sunk){QD_BUF_INIT, 0, 0};
     assert_int_equal(qd_flow_run_csv(f.ctx, f.l, e, &f.o, 0, put, &k, &fl), QD_OK);
     assert_int_equal(check_rows(qd_buf_str(&k.b)), 101);
+    qd_flow_free(&fl);
+    qd_buf_free(&k.b);
+    /* none asked, but the run has its rows' spacing (--dt 0.5): that one */
+    qd_sim_opts od = f.o;
+    od.dt = 0.5;
+    k = (sunk){QD_BUF_INIT, 0, 0};
+    assert_int_equal(qd_flow_run_csv(f.ctx, f.l, e, &od, 0, put, &k, &fl), QD_OK);
+    assert_int_equal(check_rows(qd_buf_str(&k.b)), 11);
     qd_flow_free(&fl);
     qd_buf_free(&k.b);
     close_fixture(&f);
