@@ -303,31 +303,20 @@ int cli_cmd_simulate(int argc, char **argv) {
         sa.variational = sa.variational ? sa.variational : 1;
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&a.plot, "simulate");
-    if (rc == QD_EXIT_OK && sa.period_text) {
-        if (a.t_end) {
-            cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to "
-                           "t0 + T)");
-            return QD_EXIT_USAGE;
-        }
-        a.t_end = "1e300"; /* t0 + T once the initial state (t0) is read */
+    if (rc == QD_EXIT_OK && sa.period_text && a.t_end) {
+        cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to t0 + T)");
+        return QD_EXIT_USAGE;
     }
-    if (rc == QD_EXIT_OK && !a.t_end) {
+    if (rc == QD_EXIT_OK && !a.t_end && !sa.period_text) {
         cli_diag_error("--t-end is missing (qdot simulate --help)");
         rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
+    a.period = sa.period_text; /* t_end = t0 + T (qd_sim_setup_options) */
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &a);
-    if (rc == QD_EXIT_OK && sa.period_text) {
-        if (qd_sim_setup_period(c.set, sa.period_text, &c.opts, &sa.period) != QD_OK &&
-            qd_ctx_diag(c.ctx)->located) {
-            cli_diag_show("--period", sa.period_text, qd_ctx_diag(c.ctx));
-            rc = cli_exit(qd_ctx_status(c.ctx));
-        } else if (!(sa.period > 0)) {
-            rc = cli_diag_ctx(c.ctx);
-        }
-    }
+    sa.period = sa.period_text ? qd_sim_setup_period_of(c.set) : 0;
     if (rc == QD_EXIT_OK && sa.variational == 2)
         rc = run_columns(&c, &a);
     else if (rc == QD_EXIT_OK)

@@ -110,7 +110,8 @@ int cli_sim_fail_in(cli_sim *c, const char *opt, const char *text) {
 /* An option refused by qd_sim_setup_options: its field named as the option. */
 static int option_error(cli_sim *c, const cli_sim_args *a) {
     const struct { const char *field, *opt, *text; } f[] = {
-        {"t_end", "--t-end", a->t_end},    {"dt", "--dt", a->dt},
+        {"t_end", "--t-end", a->t_end},    {"period", "--period", a->period},
+        {"dt", "--dt", a->dt},
         {"every", "--every", a->every},    {"step", "--step", a->step},
         {"rtol", "--rtol", a->rtol},
         {"atol", "--atol", a->atol},       {"max_steps", "--max-steps", a->max_steps},
@@ -191,8 +192,9 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = events(c, "--stop-at", &a->stops, true);
     if (rc == QD_EXIT_OK && a->section && qd_sim_setup_event(c->set, a->section, false) != QD_OK)
         rc = cli_sim_fail_in(c, "--section", a->section);
-    qd_sim_setup_opts so = {.t_end = a->t_end, .dt = a->dt, .step = a->step, .rtol = a->rtol, .atol = a->atol,
-                            .every = a->every, .max_steps = a->max_steps, .method = a->method,
+    qd_sim_setup_opts so = {.t_end = a->t_end, .period = a->period, .dt = a->dt,
+                            .step = a->step, .rtol = a->rtol, .atol = a->atol, .every = a->every,
+                            .max_steps = a->max_steps, .method = a->method,
                             .precision = a->precision ? atoi(a->precision) : 0,
                             .no_project = a->no_project, .fixed = a->fixed};
     if (rc == QD_EXIT_OK && qd_sim_setup_options(c->set, &so, &c->opts) != QD_OK)

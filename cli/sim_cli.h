@@ -37,6 +37,7 @@ typedef struct cli_sim_args {
     /* set by the command, not by an option of the group */
     const char *file;      /* the model file */
     const char *section;   /* an event after the others (poincare, sweep --section) */
+    const char *period;    /* instead of t_end: one period (simulate --period) */
     bool json;             /* --format json */
     bool fixed;            /* dopri5/dop853 with the constant step --dt (lyapunov) */
     cli_plot_args plot;    /* --plot: parsed by the commands that draw (simulate, poincare) */

@@ -131,7 +131,9 @@ QD_API qd_status qd_sim_setup_input_text(qd_sim_setup *s, const char *text,
 /* The run's options as given: each number as text (NULL when not given),
  * an expression in the parameters. */
 typedef struct qd_sim_setup_opts {
-    const char *t_end;     /* required */
+    const char *t_end;     /* required, unless period */
+    const char *period;    /* instead of t_end: one period T, t_end = t0 + T
+                            * (qd_sim_setup_period; then qd_sim_setup_period_of) */
     const char *dt;        /* > 0: the output spacing, for every method (dense output) */
     const char *step;      /* > 0: the step of a fixed-step method (or of fixed) */
     const char *rtol, *atol; /* > 0 */
@@ -158,6 +160,9 @@ typedef struct qd_sim_setup_opts {
  * that text). */
 QD_API qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o,
                                       qd_sim_opts *out);
+
+/* The period of the last qd_sim_setup_options given one, else NaN. */
+QD_API double qd_sim_setup_period_of(const qd_sim_setup *s);
 
 /* A run over one period: T read from text (a constant expression in pi, e
  * and the parameters, "2*pi*sqrt(l/g)"), positive, into *period, and

@@ -5200,6 +5200,10 @@ static void null_simsetup(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_sim_setup_period_of */
+    /* s NULL */
+    assert_true(isnan(qd_sim_setup_period_of(NULL)));
+    reset(&F);
     /* ---- qd_sim_setup_period */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_period(NULL, "q", (qd_sim_opts *)(void *)F.blob, F.d));
