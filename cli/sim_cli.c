@@ -107,29 +107,22 @@ int cli_sim_fail_in(cli_sim *c, const char *opt, const char *text) {
     return cli_exit(qd_ctx_status(c->ctx));
 }
 
-/* An option refused by qd_sim_setup_options: its field named as the option. */
+/* An option refused by qd_sim_setup_options: shown in its text when the
+ * error is located there, after "--opt: " when not given, else the
+ * library's sentence and the option its field names (cli_diag_ctx). */
 static int option_error(cli_sim *c, const cli_sim_args *a) {
     const struct { const char *field, *opt, *text; } f[] = {
         {"t_end", "--t-end", a->t_end},    {"period", "--period", a->period},
-        {"dt", "--dt", a->dt},
-        {"every", "--every", a->every},    {"step", "--step", a->step},
-        {"rtol", "--rtol", a->rtol},
+        {"dt", "--dt", a->dt},             {"every", "--every", a->every},
+        {"step", "--step", a->step},       {"rtol", "--rtol", a->rtol},
         {"atol", "--atol", a->atol},       {"max_steps", "--max-steps", a->max_steps},
         {"method", "--method", a->method}, {"precision", "--precision", a->precision},
-        {"inputs", "--input", NULL},
+        {"inputs", "--input", NULL}, /* "--input: input F is used but not supplied" */
     };
     const qd_diag *d = qd_ctx_diag(c->ctx);
-    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
-        if (strcmp(d->name, f[i].field))
-            continue;
-        if ((d->located && f[i].text) || !f[i].text)
-            return cli_sim_fail_in(c, f[i].opt, f[i].text); /* --input: "--input: input F is ..." */
-        /* the library's sentence, then the option it is about */
-        qd_diag e = *d;
-        snprintf(e.message, sizeof e.message, "%.200s (%s)", d->message, f[i].opt);
-        cli_diag_show("qdot", NULL, &e);
-        return cli_exit(qd_ctx_status(c->ctx));
-    }
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+        if (!strcmp(d->name, f[i].field) && (d->located || !f[i].text))
+            return cli_sim_fail_in(c, f[i].opt, f[i].text);
     return cli_diag_ctx(c->ctx);
 }
 
