@@ -8,6 +8,7 @@
 # qd_sim_csv_header, qd_sim_csv_row), the bytes `qdot simulate` writes.
 """Simulation results and the compiled right-hand side (internal module)."""
 
+import json
 import numbers
 import time
 
@@ -71,17 +72,20 @@ class Result(Table):
     summary: the lines `qdot simulate` prints on stderr after the run
         (without its "qdot: simulate: " prefix): method, steps, energy and
         constraint errors, events, impacts, friction.
+    record: the same as the members of `qdot simulate --format json`
+        (method, steps, ..., "stop" unless the run reached t_end, "final":
+        column name to the last row's value), a dict;
     csv(): every row in the order of the run, as the CSV `qdot simulate`
         writes.
     """
 
     def __init__(self, columns, rows, nev, stats, method, summary="", header="",
-                 event_column=False):
+                 event_column=False, record=None):
         data = np.array([r[1] for r in rows], dtype=float).reshape(len(rows), len(columns))
         ev = np.array([r[0] for r in rows], dtype=int)
         self._all, self._ev = data, ev
         self._header, self._event_column = header, event_column
-        self.summary = summary
+        self.summary, self.record = summary, record
         super().__init__(columns, data[ev == -1])
         self.events = [Table(columns, data[ev == k]) for k in range(nev)]
         self.impacts = Table(columns, data[ev >= nev])
@@ -282,16 +286,30 @@ def _run(core, s, opts, nev, fns=()):
         raise err
     if st != QD_OK:
         raise core.error(st)
-    summary, header = new("qd_buf"), new("qd_buf")
     rep = new("qd_sim_report", {"s": s, "opts": opts, "stats": stats, "final": final,
                                 "wall": wall})
+    summary, header, record = _report(rep, s, opts.method)
+    return Result(columns, rows, nev, stats, cstr(lib.qd_sim_method_name(opts.method)),
+                  summary, header, bool(lib.qd_sim_event_column(s)), record)
+
+
+def _report(rep, s, method):
+    """The library's words on a run while s lives: the summary's text
+    (qd_sim_summary_print), the CSV header (qd_sim_csv_header) and the
+    summary's JSON members as a dict (qd_sim_summary_json; None when one of
+    its numbers is not finite, as the CLI then refuses the document)."""
+    summary, header, doc = new("qd_buf"), new("qd_buf"), new("qd_buf")
+    j = new("qd_json")
+    lib.qd_json_init(j, doc)
+    lib.qd_json_begin_object(j)
+    st = lib.qd_sim_summary_json(j, rep)
+    lib.qd_json_end_object(j)
     ok = (lib.qd_sim_summary_print(rep, ffi.NULL, summary) == QD_OK and
-          lib.qd_sim_csv_header(s, opts.method, header) == QD_OK)
-    summary, header = buf_text(summary), buf_text(header)
+          lib.qd_sim_csv_header(s, method, header) == QD_OK and st != QD_ERR_NOMEM)
+    summary, header, doc = buf_text(summary), buf_text(header), buf_text(doc)
     if not ok:
         raise MemoryError("qdot: out of memory")
-    return Result(columns, rows, nev, stats, cstr(lib.qd_sim_method_name(opts.method)),
-                  summary, header, bool(lib.qd_sim_event_column(s)))
+    return summary, header, json.loads(doc) if st == QD_OK else None
 
 
 class Rhs:

@@ -1,11 +1,12 @@
 # python/tests/test_sim_output.py - a run's CSV and summary from Python
-# (Result.csv, Result.summary: libqdot's qd_sim_csv_row and
-# qd_sim_summary_print), on the oscillator m x'' = -k x, w = sqrt(k/m) = 2,
+# (Result.csv, Result.summary, Result.record: libqdot's qd_sim_csv_row,
+# qd_sim_summary_print and qd_sim_summary_json), on the oscillator m x'' = -k x, w = sqrt(k/m) = 2,
 # from x = 1 at rest: x = cos 2t, x' = -2 sin 2t, energy
 # h = m x'^2/2 + k x^2/2 = 4 conserved (Goldstein sec. 1.6).  The CSV read
 # back follows the motion, its event column marks the crossings x = 0 at
 # t = pi/4 + k pi/2, and it is the bytes `qdot simulate` writes for the
-# same run, as the summary is its lines.
+# same run, as the summary is its lines and the record its JSON summary.
+import json
 import math
 import os
 import re
@@ -61,3 +62,12 @@ def test_the_bytes_and_lines_of_qdot_simulate(tmp_path):
     prefix = "qdot: simulate: "
     assert lines(r.summary) == [ln[len(prefix):] for ln in lines(p.stderr)]
     assert "energy error" in r.summary and "1 event" in r.summary
+    # the record: --format json's summary members, the final state x = cos 6
+    p = subprocess.run([exe, "simulate", str(model), "--t-end", "3", "--dt", "0.25",
+                        "--rtol", "1e-10", "--event", "x = 0, x' < 0", "--format", "json"],
+                       capture_output=True, text=True, check=True)
+    doc = json.loads(p.stdout)
+    assert abs(r.record["final"]["x"] - math.cos(6)) < 1e-8
+    assert r.record["events"] == 1 and r.record["method"] == "dop853"
+    for key in set(r.record) - {"wall_s"}:
+        assert r.record[key] == doc[key], key
