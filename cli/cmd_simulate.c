@@ -18,13 +18,9 @@
 
 #include <stddef.h>
 
-#include <errno.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
 #include "qdot/json.h"
 #include "model_cli.h"
@@ -70,60 +66,18 @@ static const cli_spec spec = {
     opts, groups, 1, 1, "FILE", false,
 };
 
+/* What a row does besides being written (qd_sim_writer's tap). */
 typedef struct sim_out {
-    FILE *csv;            /* rows as CSV, or NULL */
-    qd_json *json;        /* rows into the JSON document, or NULL */
-    size_t ncols, rows;
-    bool events;          /* an `event` column */
     double t0, t_end;
     cli_progress bar;
-    const char **names;   /* the CSV header, written with the first row */
-    bool header;
-    char *line;           /* one CSV row */
     cli_plot_rows *plot;  /* --plot: every row kept, or NULL */
-    int werr;             /* the errno of the first failed write, or 0 */
-    bool wfailed;         /* a row could not be written: the run was stopped */
-    double last_t;        /* the time of the last whole row */
 } sim_out;
 
-static void write_header(sim_out *o) {
-    for (size_t i = 0; i < o->ncols; i++)
-        fprintf(o->csv, "%s%s", i ? "," : "", o->names[i]);
-    fputs(o->events ? ",event\n" : "\n", o->csv);
-    o->header = true;
-}
-
-static int sink(void *data, int event, const double *row) {
+static int tap(void *data, int event, const double *row) {
+    (void)event;
     sim_out *o = data;
-    o->rows++;
     if (o->plot)
         cli_plot_keep(o->plot, row);
-    if (o->csv) {
-        /* the header only once the run is under way: a refused run prints nothing */
-        if (!o->header)
-            write_header(o);
-        size_t k = 0;
-        for (size_t i = 0; i < o->ncols; i++) {
-            if (i)
-                o->line[k++] = ',';
-            k += qd_double_format(o->line + k, row[i]);
-        }
-        if (o->events)
-            k += (size_t)snprintf(o->line + k, 16, ",%d", event + 1);
-        o->line[k++] = '\n';
-        if (ferror(o->csv) || !cli_out_write(o->csv, o->line, k, &o->werr)) {
-            o->wfailed = true; /* the data is lost: stop the run */
-            return 1;
-        }
-    } else if (o->json) {
-        qd_json_begin_array(o->json);
-        for (size_t i = 0; i < o->ncols; i++)
-            qd_json_number(o->json, row[i]);
-        if (o->events)
-            qd_json_number(o->json, event + 1);
-        qd_json_end_array(o->json);
-    }
-    o->last_t = row[0];
     cli_progress_update(&o->bar, (row[0] - o->t0) / (o->t_end - o->t0), row[0]);
     return cli_interrupted(); /* ^C: stop after a whole row */
 }
@@ -158,225 +112,159 @@ static int flow_print(const qd_flow *f, double period) {
     return put_stderr(qd_flow_print(f, period, "qdot: simulate: ", &b), &b);
 }
 
-/* The flow run; *f filled (qd_flow_free). */
-static int flow_compute(cli_sim *c, qd_flow *f, qd_sim_opts *o, const qd_flow_opts *fo) {
+/* The flow run, its rows as CSV into rows when given (qd_flow_run_csv:
+ * every --dt, else --step, else 100 rows); *f filled (qd_flow_free). */
+static int flow_compute(cli_sim *c, qd_flow *f, qd_sim_opts *o, cli_out_file *rows) {
     *f = (qd_flow){0};
     qd_lyap *l = flow_model(c);
     if (!l)
         return QD_EXIT_USAGE;
     qd_flow_sim_opts(&c->opts, o);
-    qd_status st = qd_flow_run(c->ctx, l, o, fo, f);
+    qd_status st = rows ? qd_flow_run_csv(c->ctx, l, c->e, o, 0, cli_out_put, rows, f)
+                        : qd_flow_run(c->ctx, l, o, NULL, f);
     qd_lyap_free(l);
+    if (st == QD_ERR_IO)
+        return QD_EXIT_FAIL; /* a lost row: said when the file is closed */
     if (st == QD_ERR_ARG)
         return cli_diag_ctx(c->ctx);
     return st == QD_OK ? QD_EXIT_OK : cli_sim_fail(c, st);
 }
 
-typedef struct col_out {
-    FILE *out;
-    size_t d;
-    char *line;
-    int err; /* the first write's errno (cli_out_write) */
-} col_out;
-
-static int col_sink(void *data, double t, const double *y, const double *phi) {
-    col_out *o = data;
-    if (o->err)
-        return 0;
-    size_t k = qd_double_format(o->line, t);
-    for (size_t i = 0; i < o->d; i++) {
-        o->line[k++] = ',';
-        k += qd_double_format(o->line + k, y[i]);
-    }
-    for (size_t j = 0; j < o->d; j++)
-        for (size_t i = 0; i < o->d; i++) {
-            o->line[k++] = ',';
-            k += qd_double_format(o->line + k, phi[i * o->d + j]);
-        }
-    o->line[k++] = '\n';
-    /* a lost row is kept in o->err and said at the close; the flow's own
-     * sink contract would call a stop a failure of the run */
-    cli_out_write(o->out, o->line, k, &o->err);
-    return 0;
-}
-
-/* --variational columns: CSV of t, the state and d y_i / d y_j(t0), column
- * by column, every --dt (else --step, else 100 rows). */
+/* --variational columns: CSV of t, the state and d y_i / d y_j(t0). */
 static int run_columns(cli_sim *c, const cli_sim_args *a) {
     if (a->json || a->plot.file) {
         cli_diag_error("--variational columns writes CSV: not with --format json or --plot");
         return QD_EXIT_USAGE;
     }
-    if (!c->e) {
-        flow_model(c);
-        return QD_EXIT_USAGE;
-    }
-    size_t d = 2 * c->e->n;
-    col_out o = {.d = d, .line = malloc((d + 1) * (d + 1) * (QD_DOUBLE_MAX + 2) + 16)};
     int rc = QD_EXIT_OK;
-    FILE *file = a->out && o.line ? cli_out_open(a->out, &rc) : NULL;
-    if (!o.line || (a->out && !file)) {
-        free(o.line);
-        return rc != QD_EXIT_OK ? rc : QD_EXIT_FAIL;
-    }
-    o.out = file ? file : stdout;
-    /* the header: the library's column names (t, the state, Phi by columns) */
-    qd_buf hb = QD_BUF_INIT;
-    for (size_t k = 0; k < 1 + d + d * d; k++) {
-        qd_buf_puts(&hb, k ? "," : "");
-        qd_flow_column_name(c->e, k, &hb);
-    }
-    qd_buf_puts(&hb, "\n");
-    if (hb.failed)
-        o.err = ENOMEM;
-    else
-        cli_out_write(o.out, hb.s, hb.len, &o.err);
-    qd_buf_free(&hb);
-    double grid = c->opts.every > 0 ? c->opts.every : c->opts.dt;
-    qd_flow_opts fo = {.every = a->dt || a->every || a->step ? grid
-                                                             : (c->opts.t_end - c->opts.t0) / 100,
-                       .sink = col_sink, .data = &o};
-    double *y0 = calloc(d + d * d, sizeof *y0); /* the first row: y(t0), Phi = I */
-    if (!y0) {
-        free(o.line);
-        if (file)
-            fclose(file); /* nothing to keep: the run fails anyway */
-        return QD_EXIT_FAIL;
-    }
-    for (size_t i = 0; i < d / 2; i++) {
-        y0[i] = c->opts.q0[i];
-        y0[d / 2 + i] = c->opts.qd0[i];
-    }
-    for (size_t i = 0; i < d; i++)
-        y0[d + i * d + i] = 1;
-    col_sink(&o, c->opts.t0, y0, y0 + d);
-    free(y0);
+    cli_out_file rows = {a->out ? cli_out_open(a->out, &rc) : stdout, 0};
+    if (!rows.f)
+        return rc;
     qd_flow f;
     qd_sim_opts fopts;
-    bool computed = !o.err; /* a header already lost: no run */
-    rc = computed ? flow_compute(c, &f, &fopts, &fo) : QD_EXIT_OK;
-    if (computed && rc == QD_EXIT_OK && !o.err)
+    rc = flow_compute(c, &f, &fopts, &rows);
+    if (rc == QD_EXIT_OK)
         rc = flow_print(&f, 0);
-    if (computed)
-        qd_flow_free(&f);
+    qd_flow_free(&f);
     /* the rows' file closed and checked: lost rows fail the run */
-    if (cli_out_close(o.out, file ? a->out : "standard output", o.err) != QD_EXIT_OK)
+    if (cli_out_close(rows.f, a->out ? a->out : "standard output", rows.err) != QD_EXIT_OK)
         rc = QD_EXIT_FAIL;
-    free(o.line);
     return rc;
 }
 
+/* After a run that reached its end: the summary on stderr, the picture,
+ * the flow, and the JSON document's rest on stdout. */
+static int finish(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa,
+                  const qd_sim_report *rep, const char **names, cli_plot_pick *pick,
+                  cli_plot_rows *rows, qd_json *j) {
+    qd_buf tb = QD_BUF_INIT;
+    int rc = put_stderr(qd_sim_summary_print(rep, "qdot: simulate: ", &tb), &tb);
+    double range[4 * CLI_PLOT_MAX_PANELS];
+    if (rc == QD_EXIT_OK && a->plot.file)
+        rc = cli_plot_write_run(c->ctx, &a->plot, pick, names, rows, a->file, false, range);
+    qd_flow f = {0};
+    qd_sim_opts fopts;
+    if (rc == QD_EXIT_OK && sa) {
+        rc = flow_compute(c, &f, &fopts, NULL);
+        if (rc == QD_EXIT_OK)
+            rc = flow_print(&f, sa->period);
+    }
+    if (rc == QD_EXIT_OK && a->json) {
+        qd_sim_summary_json(j, rep);
+        if (sa)
+            qd_flow_json(j, &f, c->e, fopts.method, sa->period);
+        if (a->plot.file)
+            qd_sim_plot_json(j, a->plot.file, pick->npanels, range);
+        qd_json_end_object(j);
+        if (qd_json_ok(j) && !j->out->failed) {
+            printf("%s\n", qd_buf_str(j->out));
+        } else {
+            cli_diag_error("cannot write the JSON summary: %s",
+                           j->out->failed ? "out of memory" : qd_json_why(j));
+            rc = QD_EXIT_FAIL;
+        }
+    }
+    qd_flow_free(&f);
+    return rc;
+}
+
+/* The run's rows through the library's writer (qd_sim_writer): CSV to
+ * --out or stdout, else into the JSON document, none for a picture only. */
 static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     size_t ncols = qd_sim_columns(c->s, c->opts.method, NULL, 0);
     const char **names = malloc((ncols + 1) * sizeof *names);
     double *final = malloc((ncols + 1) * sizeof *final);
-    char *line = malloc((ncols + 1) * (QD_DOUBLE_MAX + 1) + 16);
-    if (!names || !final || !line) {
-        free(names);
-        free(final);
-        free(line);
-        return QD_EXIT_FAIL;
-    }
-    qd_sim_columns(c->s, c->opts.method, names, ncols);
     cli_plot_pick pick; /* --plot: its columns named before the run, which may be long */
     cli_plot_rows rows = {.ncols = ncols};
-    if (a->plot.file &&
-        cli_plot_pick_columns(&a->plot, names, ncols, qd_sim_ndof(c->s), &pick) != QD_EXIT_OK) {
+    int rc = names && final ? QD_EXIT_OK : QD_EXIT_FAIL;
+    if (rc == QD_EXIT_OK)
+        qd_sim_columns(c->s, c->opts.method, names, ncols);
+    if (rc == QD_EXIT_OK && a->plot.file &&
+        cli_plot_pick_columns(&a->plot, names, ncols, qd_sim_ndof(c->s), &pick) != QD_EXIT_OK)
+        rc = QD_EXIT_USAGE;
+    cli_out_file out = {stdout, 0};
+    if (rc == QD_EXIT_OK && a->out && !(out.f = cli_out_open(a->out, &rc)))
+        rc = rc != QD_EXIT_OK ? rc : QD_EXIT_FAIL;
+    if (rc != QD_EXIT_OK) {
         free(names);
         free(final);
-        free(line);
-        return QD_EXIT_USAGE;
+        return rc;
     }
     /* a step can span a swing: without --dt a picture alone samples the
      * dense output; rows written (--out, --format json) are never changed
      * by --plot, which then draws those rows (issue 36) */
     if (a->plot.file && !a->out && !a->json)
         qd_sim_opts_sample(&c->opts, 1000);
-    sim_out o = {.ncols = ncols, .events = qd_sim_event_column(c->s), .t0 = c->opts.t0,
-                 .t_end = c->opts.t_end, .names = names, .line = line};
-    FILE *file = NULL;
-    int orc = QD_EXIT_OK;
-    if (a->out && !(file = cli_out_open(a->out, &orc))) {
-        free(names);
-        free(final);
-        free(line);
-        return orc;
-    }
+    sim_out o = {.t0 = c->opts.t0, .t_end = c->opts.t_end, .plot = a->plot.file ? &rows : NULL};
+    qd_sim_writer w = {.tap = tap, .tap_data = &o};
+    qd_sim_writer_init(&w, c->s, c->opts.method);
     qd_buf jb = QD_BUF_INIT;
     qd_json j;
     qd_json_init(&j, &jb);
     if (a->json)
         qd_json_begin_object(&j);
-    o.csv = file ? file : a->json ? NULL : stdout;
-    o.plot = a->plot.file ? &rows : NULL;
-    bool picture_only = o.plot && o.csv == stdout; /* --plot: the picture, not CSV on stdout */
-    if (picture_only)
-        o.csv = NULL;
-    else if (!o.csv) {
+    if (a->out || (!a->json && !a->plot.file)) {
+        w.write = cli_out_put; /* --plot alone: the picture, not CSV on stdout */
+        w.data = &out;
+    } else if (a->json) {
         qd_sim_columns_json(&j, c->s, c->opts.method); /* a failure is said at the end */
         qd_json_key(&j, "rows");
         qd_json_begin_array(&j);
-        o.json = &j;
+        w.json = &j;
     }
     cli_progress_start(&o.bar, "simulate");
     qd_sim_stats st;
     cli_interrupt_begin();
-    qd_status s = qd_sim_run(c->s, &c->opts, sink, &o, &st, final);
+    qd_status s = qd_sim_run(c->s, &c->opts, qd_sim_writer_sink, &w, &st, final);
     bool interrupted = cli_interrupted();
     cli_interrupt_end();
     double wall = cli_progress_end(&o.bar);
-    if (o.json)
+    if (w.json)
         qd_json_end_array(&j);
-    int rc = QD_EXIT_OK;
     /* the rows' file closed and checked first: lost rows fail the run */
-    if (o.csv && cli_out_close(o.csv, file ? a->out : "standard output", o.werr) != QD_EXIT_OK)
+    if (w.write && cli_out_close(out.f, a->out ? a->out : "standard output", out.err))
         rc = QD_EXIT_FAIL;
     if (rc != QD_EXIT_OK) {
-        if (s != QD_OK && !o.wfailed)
+        if (s != QD_OK && !w.failed)
             cli_sim_fail(c, s);
+    } else if (s != QD_OK && w.failed) { /* JSON rows: memory ran out */
+        rc = cli_out_of_memory();
     } else if (s != QD_OK) {
         rc = cli_sim_fail(c, s);
     } else if (interrupted) {
         fprintf(stderr, "qdot: simulate: interrupted at t = %.17g; the rows written are whole, "
-                        "up to that time\n", o.last_t);
+                        "up to that time\n", w.last_t);
         rc = CLI_EXIT_INTERRUPTED;
     } else {
         qd_sim_report rep = {.s = c->s, .opts = &c->opts, .stats = &st, .final = final,
                              .wall = wall};
-        qd_buf tb = QD_BUF_INIT;
-        rc = put_stderr(qd_sim_summary_print(&rep, "qdot: simulate: ", &tb), &tb);
-        double range[4 * CLI_PLOT_MAX_PANELS];
-        if (rc == QD_EXIT_OK && a->plot.file)
-            rc = cli_plot_write_run(c->ctx, &a->plot, &pick, names, &rows, a->file, false, range);
-        qd_flow f = {0};
-        qd_sim_opts fopts;
-        if (rc == QD_EXIT_OK && sa) {
-            rc = flow_compute(c, &f, &fopts, NULL);
-            if (rc == QD_EXIT_OK)
-                rc = flow_print(&f, sa->period);
-        }
-        if (rc == QD_EXIT_OK && a->json) {
-            qd_sim_summary_json(&j, &rep);
-            if (sa)
-                qd_flow_json(&j, &f, c->e, fopts.method, sa->period);
-            if (a->plot.file)
-                qd_sim_plot_json(&j, a->plot.file, pick.npanels, range);
-            qd_json_end_object(&j);
-            if (qd_json_ok(&j) && !jb.failed)
-                printf("%s\n", qd_buf_str(&jb));
-            else {
-                cli_diag_error("cannot write the JSON summary: %s",
-                               jb.failed ? "out of memory" : qd_json_why(&j));
-                rc = QD_EXIT_FAIL;
-            }
-        }
-        qd_flow_free(&f);
+        rc = finish(c, a, sa, &rep, names, &pick, &rows, &j);
     }
+    qd_sim_writer_free(&w);
     cli_plot_rows_free(&rows);
     qd_buf_free(&jb);
     free(names);
     free(final);
-    free(line);
     return rc;
 }
 
@@ -415,31 +303,20 @@ int cli_cmd_simulate(int argc, char **argv) {
         sa.variational = sa.variational ? sa.variational : 1;
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&a.plot, "simulate");
-    if (rc == QD_EXIT_OK && sa.period_text) {
-        if (a.t_end) {
-            cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to "
-                           "t0 + T)");
-            return QD_EXIT_USAGE;
-        }
-        a.t_end = "1e300"; /* t0 + T once the initial state (t0) is read */
+    if (rc == QD_EXIT_OK && sa.period_text && a.t_end) {
+        cli_diag_error("give --period or --t-end, not both (--period T runs from t0 to t0 + T)");
+        return QD_EXIT_USAGE;
     }
-    if (rc == QD_EXIT_OK && !a.t_end) {
+    if (rc == QD_EXIT_OK && !a.t_end && !sa.period_text) {
         cli_diag_error("--t-end is missing (qdot simulate --help)");
         rc = QD_EXIT_USAGE;
     }
     if (rc != QD_EXIT_OK)
         return rc;
+    a.period = sa.period_text; /* t_end = t0 + T (qd_sim_setup_options) */
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &a);
-    if (rc == QD_EXIT_OK && sa.period_text) {
-        if (qd_sim_setup_period(c.set, sa.period_text, &c.opts, &sa.period) != QD_OK &&
-            qd_ctx_diag(c.ctx)->located) {
-            cli_diag_show("--period", sa.period_text, qd_ctx_diag(c.ctx));
-            rc = cli_exit(qd_ctx_status(c.ctx));
-        } else if (!(sa.period > 0)) {
-            rc = cli_diag_ctx(c.ctx);
-        }
-    }
+    sa.period = sa.period_text ? qd_sim_setup_period_of(c.set) : 0;
     if (rc == QD_EXIT_OK && sa.variational == 2)
         rc = run_columns(&c, &a);
     else if (rc == QD_EXIT_OK)

@@ -56,6 +56,13 @@ bool cli_out_write(FILE *f, const void *data, size_t len, int *err) {
     return false;
 }
 
+int cli_out_put(void *data, const char *bytes, size_t len) {
+    cli_out_file *o = data;
+    if (ferror(o->f))
+        return 1; /* an earlier write failed: said at the close */
+    return cli_out_write(o->f, bytes, len, &o->err) ? 0 : 1;
+}
+
 static void cannot_write(const char *name, int err) {
     cli_diag_error("cannot write %s: %s", name, err ? strerror(err) : "write error");
 }

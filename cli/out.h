@@ -22,6 +22,13 @@ FILE *cli_in_open(const char *path, int *rc);
 /* One checked write of len bytes; on failure the first error's errno is
  * kept in *err (0 while all went well).  Returns false on failure. */
 bool cli_out_write(FILE *f, const void *data, size_t len, int *err);
+/* A file the library's writers write to (a qd_sim_write_fn's data):
+ * cli_out_put writes with cli_out_write, the first errno kept in err. */
+typedef struct cli_out_file {
+    FILE *f;
+    int err;
+} cli_out_file;
+int cli_out_put(void *data, const char *bytes, size_t len);
 
 /* Flush and close f (stdout is only flushed: main closes it), then say
  * "cannot write NAME: reason" when this or an earlier write failed (err:

@@ -14,7 +14,6 @@
  */
 #include "sim_cli.h"
 
-#include <ctype.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -108,70 +107,36 @@ int cli_sim_fail_in(cli_sim *c, const char *opt, const char *text) {
     return cli_exit(qd_ctx_status(c->ctx));
 }
 
-/* An option refused by qd_sim_setup_options: its field named as the option. */
+/* An option refused by qd_sim_setup_options: shown in its text when the
+ * error is located there, after "--opt: " when not given, else the
+ * library's sentence and the option its field names (cli_diag_ctx). */
 static int option_error(cli_sim *c, const cli_sim_args *a) {
     const struct { const char *field, *opt, *text; } f[] = {
-        {"t_end", "--t-end", a->t_end},    {"dt", "--dt", a->dt},
-        {"every", "--every", a->every},    {"step", "--step", a->step},
-        {"rtol", "--rtol", a->rtol},
+        {"t_end", "--t-end", a->t_end},    {"period", "--period", a->period},
+        {"dt", "--dt", a->dt},             {"every", "--every", a->every},
+        {"step", "--step", a->step},       {"rtol", "--rtol", a->rtol},
         {"atol", "--atol", a->atol},       {"max_steps", "--max-steps", a->max_steps},
         {"method", "--method", a->method}, {"precision", "--precision", a->precision},
-        {"inputs", "--input", NULL},
+        {"inputs", "--input", NULL}, /* "--input: input F is used but not supplied" */
     };
     const qd_diag *d = qd_ctx_diag(c->ctx);
-    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
-        if (strcmp(d->name, f[i].field))
-            continue;
-        if ((d->located && f[i].text) || !f[i].text)
-            return cli_sim_fail_in(c, f[i].opt, f[i].text); /* --input: "--input: input F is ..." */
-        /* the library's sentence, then the option it is about */
-        qd_diag e = *d;
-        snprintf(e.message, sizeof e.message, "%.200s (%s)", d->message, f[i].opt);
-        cli_diag_show("qdot", NULL, &e);
-        return cli_exit(qd_ctx_status(c->ctx));
-    }
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+        if (!strcmp(d->name, f[i].field) && (d->located || !f[i].text))
+            return cli_sim_fail_in(c, f[i].opt, f[i].text);
     return cli_diag_ctx(c->ctx);
 }
 
-/* The NAME of "NAME = ..." into name (empty when there is no '='). */
-static const char *input_name(const char *text, char *name, size_t cap) {
-    const char *eq = strchr(text, '='), *a = text, *b = eq ? eq : text;
-    while (a < b && isspace((unsigned char)*a))
-        a++;
-    while (b > a && isspace((unsigned char)b[-1]))
-        b--;
-    snprintf(name, cap, "%.*s", (int)((size_t)(b - a) < cap ? b - a : (long)cap - 1), a);
-    return eq;
-}
-
-/* --input "F = EXPR" (read like --output), --input F=FILE.csv (a value
- * ending in .csv) or --input "F = lqr" (the LQR feedback): list[i]. */
-int cli_sim_input(cli_sim *c, const char *const *list, size_t i) {
-    char name[128], other[128];
-    const char *eq = input_name(list[i], name, sizeof name);
-    if (!eq || !name[0]) {
-        cli_diag_error("--input: expected \"NAME = EXPR\" or NAME=FILE.csv, not '%s'", list[i]);
-        return QD_EXIT_USAGE;
-    }
-    for (size_t k = 0; k < i; k++)
-        if (input_name(list[k], other, sizeof other) && !strcmp(name, other)) {
-            cli_diag_error("--input: %s is given twice", name);
-            return QD_EXIT_USAGE;
-        }
-    const char *va = eq + 1, *vb = eq + strlen(eq);
-    while (va < vb && isspace((unsigned char)*va))
-        va++;
-    while (vb > va && isspace((unsigned char)vb[-1]))
-        vb--;
-    size_t vlen = (size_t)(vb - va);
-    if (vlen > 4 && !strncmp(vb - 4, ".csv", 4))
-        return cli_sim_input_csv(c, name, va, vlen);
-    if (vlen == 3 && !strncmp(va, "lqr", 3))
-        return cli_sim_input_lqr(c, name);
-    if (qd_sim_setup_input(c->set, name, list[i], (size_t)(va - list[i]),
-                           (size_t)(vb - list[i])) != QD_OK)
-        return cli_sim_fail_in(c, "--input", list[i]);
-    return QD_EXIT_OK;
+/* One --input (qd_sim_setup_input_text): an expression is the library's;
+ * a table's file is read here (F=FILE.csv); "F = lqr" takes --about, --lqr. */
+static int input(cli_sim *c, const char *text) {
+    char name[128];
+    qd_sim_input_kind kind;
+    size_t a, b;
+    if (qd_sim_setup_input_text(c->set, text, &kind, name, sizeof name, &a, &b) != QD_OK)
+        return cli_sim_fail_in(c, "--input", text);
+    if (kind == QD_SIM_INPUT_TABLE)
+        return cli_sim_input_csv(c, name, text + a, b - a);
+    return kind == QD_SIM_INPUT_LQR ? cli_sim_input_lqr(c, name) : QD_EXIT_OK;
 }
 
 static int events(cli_sim *c, const char *opt, const cli_list *l, bool stop) {
@@ -208,7 +173,7 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
     c->about = a->about;
     c->lqr = a->lqr;
     for (size_t i = 0; rc == QD_EXIT_OK && i < a->inputs.n; i++)
-        rc = cli_sim_input(c, a->inputs.items, i);
+        rc = input(c, a->inputs.items[i]);
     if (rc == QD_EXIT_OK && (a->about || a->lqr) && !c->lqr_used) {
         cli_diag_error("%s is for --input \"NAME = lqr\" (the LQR feedback), which is not given",
                        a->lqr ? "--lqr" : "--about");
@@ -220,8 +185,9 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = events(c, "--stop-at", &a->stops, true);
     if (rc == QD_EXIT_OK && a->section && qd_sim_setup_event(c->set, a->section, false) != QD_OK)
         rc = cli_sim_fail_in(c, "--section", a->section);
-    qd_sim_setup_opts so = {.t_end = a->t_end, .dt = a->dt, .step = a->step, .rtol = a->rtol, .atol = a->atol,
-                            .every = a->every, .max_steps = a->max_steps, .method = a->method,
+    qd_sim_setup_opts so = {.t_end = a->t_end, .period = a->period, .dt = a->dt,
+                            .step = a->step, .rtol = a->rtol, .atol = a->atol, .every = a->every,
+                            .max_steps = a->max_steps, .method = a->method,
                             .precision = a->precision ? atoi(a->precision) : 0,
                             .no_project = a->no_project, .fixed = a->fixed};
     if (rc == QD_EXIT_OK && qd_sim_setup_options(c->set, &so, &c->opts) != QD_OK)

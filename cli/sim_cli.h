@@ -37,6 +37,7 @@ typedef struct cli_sim_args {
     /* set by the command, not by an option of the group */
     const char *file;      /* the model file */
     const char *section;   /* an event after the others (poincare, sweep --section) */
+    const char *period;    /* instead of t_end: one period (simulate --period) */
     bool json;             /* --format json */
     bool fixed;            /* dopri5/dop853 with the constant step --dt (lyapunov) */
     cli_plot_args plot;    /* --plot: parsed by the commands that draw (simulate, poincare) */
@@ -72,9 +73,6 @@ typedef struct cli_sim {
 int cli_sim_setup(cli_sim *c, const cli_sim_args *a);
 void cli_sim_free(cli_sim *c);
 
-/* --input list[i] given to the simulation (duplicates of list[0..i)
- * refused); an exit status. */
-int cli_sim_input(cli_sim *c, const char *const *list, size_t i);
 /* --input NAME=FILE.csv: the file's rows "t,value" (a first line that is
  * not numbers is a header) as a table; an exit status (sim_input_cli.c). */
 int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len);

@@ -163,6 +163,18 @@ QD_API qd_status qd_flow_state_name(const qd_eom *e, size_t i, qd_buf *out);
  * d = 2n; QD_ERR_ARG for k >= 1 + d + d^2, QD_ERR_NOMEM when out ran out. */
 QD_API qd_status qd_flow_column_name(const qd_eom *e, size_t k, qd_buf *out);
 
+/* The flow's rows as CSV (src/lyap/flow_rows.c; `qdot simulate
+ * --variational columns`): the header of qd_flow_column_name's names,
+ * then the row at t0 (the initial state, phi = I) and a row at every
+ * t0 + k every and t_end (qd_flow_opts every), each t, y, then phi column
+ * by column in qd_double_format, handed to write(data, ...).  every <= 0:
+ * opts' own spacing (every, else dt), else 100 rows.  A flow run of l with opts as given (qd_flow_sim_opts
+ * first); *out as qd_flow_run fills it.  A write that fails ends the run:
+ * QD_ERR_IO, recorded in ctx; nothing more is written. */
+QD_API qd_status qd_flow_run_csv(qd_ctx *ctx, const qd_lyap *l, const qd_eom *e,
+                                 const qd_sim_opts *opts, double every, qd_sim_write_fn write,
+                                 void *data, qd_flow *out);
+
 /* f as text appended to out, every line started by prefix (NULL: none):
  *
  *   flow Jacobian d(q, q')(t_end)/d(q, q')(t0), det D (Liouville exp(int tr

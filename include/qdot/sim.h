@@ -548,6 +548,56 @@ QD_API void qd_sim_opts_sample(qd_sim_opts *o, size_t rows);
 QD_API qd_status qd_sim_plot_json(qd_json *j, const char *file, size_t npanels,
                                   const double *range);
 
+/* ---- the rows written (src/sim/writer.c) -----------------------------------
+ *
+ * The CSV of a run as `qdot simulate` writes it: a header of the names
+ * qd_sim_columns gives for the method, then ",event" when
+ * qd_sim_event_column; a line a row, its numbers in qd_double_format
+ * (shortest round trip), then event + 1 (0 for a row of the grid).  In
+ * JSON a row is an array of the same numbers. */
+QD_API qd_status qd_sim_csv_header(const qd_sim *s, qd_sim_method method, qd_buf *out);
+/* Row (ncols numbers) as one CSV line appended to out, with the event
+ * column when event_column.  QD_ERR_NOMEM when out ran out. */
+QD_API qd_status qd_sim_csv_row(size_t ncols, const double *row, bool event_column, int event,
+                                qd_buf *out);
+/* Row as a JSON array, an element of the array open in j. */
+QD_API qd_status qd_sim_json_row(qd_json *j, size_t ncols, const double *row, bool event_column,
+                                 int event);
+
+/* Bytes handed on by a writer: 0 when they were kept, nonzero when they
+ * are lost (a full disk, a closed pipe). */
+typedef int (*qd_sim_write_fn)(void *data, const char *bytes, size_t len);
+
+/* A run's rows written as they come: qd_sim_run(s, opts,
+ * qd_sim_writer_sink, &w, ...).  The caller fills the first fields, then
+ * qd_sim_writer_init the rest.  The CSV header goes out with the first
+ * row, so a run refused before it writes nothing.  A write that fails
+ * ends the run as a sink's failure (qd_sim_run's QD_ERR_ARG) with failed
+ * set; nothing more is written. */
+typedef struct qd_sim_writer {
+    qd_sim_write_fn write; /* CSV lines to write(data, ...), or NULL */
+    void *data;
+    qd_json *json;         /* else rows into the array open in json, or NULL: none */
+    qd_sim_sink tap;       /* called with each row once written (a plot, a progress
+                            * bar), its return the sink's; may be NULL */
+    void *tap_data;
+    /* the writer's (qd_sim_writer_init; read them, do not set them): */
+    const qd_sim *s;
+    qd_sim_method method;
+    size_t ncols, rows;    /* the row's numbers; the rows written */
+    bool event_column, header, failed;
+    double last_t;         /* the time of the last row written (NaN before one) */
+    qd_buf line;
+} qd_sim_writer;
+
+/* w's own fields for runs of s with method; the caller's are kept.  s
+ * must outlive w.  QD_ERR_ARG for NULL. */
+QD_API qd_status qd_sim_writer_init(qd_sim_writer *w, const qd_sim *s, qd_sim_method method);
+/* The qd_sim_sink of w (data): the row written, then w->tap.  -1 (the
+ * sink's failure) when w is NULL or the row could not be written. */
+QD_API int qd_sim_writer_sink(void *w, int event, const double *row);
+QD_API void qd_sim_writer_free(qd_sim_writer *w); /* its memory, not w; NULL is fine */
+
 #ifdef __cplusplus
 }
 #endif

@@ -108,10 +108,32 @@ QD_API qd_status qd_sim_setup_crossing(qd_sim_setup *s, const char *text, size_t
 QD_API qd_status qd_sim_setup_input(qd_sim_setup *s, const char *name, const char *text,
                                     size_t a, size_t b);
 
+/* An input's source as one text says it (`qdot simulate --input`):
+ *   "NAME = EXPR"   QD_SIM_INPUT_EXPR: the expression, given to the run
+ *                   (qd_sim_setup_input)
+ *   NAME=FILE.csv   QD_SIM_INPUT_TABLE (a value ending in .csv): the
+ *                   caller reads the file (qd_sim_input_table_read)
+ *   "NAME = lqr"    QD_SIM_INPUT_LQR: the caller sets the feedback up
+ *                   (qd_sim_setup_lqr)
+ * *kind says which, name (cap bytes) holds NAME and [*a, *b) is the
+ * value's place in text, blanks trimmed.  A text without "NAME =", or a
+ * NAME an earlier call gave, is QD_ERR_ARG (not located); an expression's
+ * error is located in text. */
+typedef enum qd_sim_input_kind {
+    QD_SIM_INPUT_EXPR,
+    QD_SIM_INPUT_TABLE,
+    QD_SIM_INPUT_LQR
+} qd_sim_input_kind;
+QD_API qd_status qd_sim_setup_input_text(qd_sim_setup *s, const char *text,
+                                         qd_sim_input_kind *kind, char *name, size_t cap,
+                                         size_t *a, size_t *b);
+
 /* The run's options as given: each number as text (NULL when not given),
  * an expression in the parameters. */
 typedef struct qd_sim_setup_opts {
-    const char *t_end;     /* required */
+    const char *t_end;     /* required, unless period */
+    const char *period;    /* instead of t_end: one period T, t_end = t0 + T
+                            * (qd_sim_setup_period; then qd_sim_setup_period_of) */
     const char *dt;        /* > 0: the output spacing, for every method (dense output) */
     const char *step;      /* > 0: the step of a fixed-step method (or of fixed) */
     const char *rtol, *atol; /* > 0 */
@@ -138,6 +160,9 @@ typedef struct qd_sim_setup_opts {
  * that text). */
 QD_API qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o,
                                       qd_sim_opts *out);
+
+/* The period of the last qd_sim_setup_options given one, else NaN. */
+QD_API double qd_sim_setup_period_of(const qd_sim_setup *s);
 
 /* A run over one period: T read from text (a constant expression in pi, e
  * and the parameters, "2*pi*sqrt(l/g)"), positive, into *period, and

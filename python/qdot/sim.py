@@ -3,16 +3,20 @@
 #
 # The rows the library hands to the sink are copied into numpy arrays; the
 # qd_sim is made and freed inside one call, so nothing of it outlives the
-# run.  Event text is read by the library's set-up, as `qdot simulate` reads it.
+# run.  Event text is read by the library's set-up, as `qdot simulate` reads
+# it; the summary and the CSV are the library's (qd_sim_summary_print,
+# qd_sim_csv_header, qd_sim_csv_row), the bytes `qdot simulate` writes.
 """Simulation results and the compiled right-hand side (internal module)."""
 
+import json
 import numbers
+import time
 
 import numpy as np
 
 from ._core import (QD_ERR_NOMEM, Error, ModelError, format_diag, name_of, number_expr,
                     take_error)
-from ._lib import ffi, lib, new, cstr, exprs, doubles, QD_OK
+from ._lib import ffi, lib, new, cstr, exprs, doubles, buf_text, QD_OK
 
 
 class Table:
@@ -64,12 +68,24 @@ class Result(Table):
         "reached the end time", "a terminal event" ..., "ok": it ended as
         asked, "t": when, "value": the quantity that decided it (the
         event's index, ...), nan where none};
-    method: the method's name.
+    method: the method's name;
+    summary: the lines `qdot simulate` prints on stderr after the run
+        (without its "qdot: simulate: " prefix): method, steps, energy and
+        constraint errors, events, impacts, friction.
+    record: the same as the members of `qdot simulate --format json`
+        (method, steps, ..., "stop" unless the run reached t_end, "final":
+        column name to the last row's value), a dict;
+    csv(): every row in the order of the run, as the CSV `qdot simulate`
+        writes.
     """
 
-    def __init__(self, columns, rows, nev, stats, method):
+    def __init__(self, columns, rows, nev, stats, method, summary="", header="",
+                 event_column=False, record=None):
         data = np.array([r[1] for r in rows], dtype=float).reshape(len(rows), len(columns))
         ev = np.array([r[0] for r in rows], dtype=int)
+        self._all, self._ev = data, ev
+        self._header, self._event_column = header, event_column
+        self.summary, self.record = summary, record
         super().__init__(columns, data[ev == -1])
         self.events = [Table(columns, data[ev == k]) for k in range(nev)]
         self.impacts = Table(columns, data[ev >= nev])
@@ -84,6 +100,22 @@ class Result(Table):
         self.energy_error_max = stats.energy_error_max
         self.energy_error_steps = stats.energy_error_steps
         self.method = method
+
+    def csv(self):
+        """The rows as the CSV text `qdot simulate` writes (qd_sim_csv_row:
+        shortest round-trip numbers, the event column when the run had
+        events, impacts or friction)."""
+        buf = new("qd_buf")
+        ncol = len(self.columns)
+        try:
+            for event, row in zip(self._ev, self._all):
+                lib.qd_sim_csv_row(ncol, doubles(row), self._event_column, int(event), buf)
+            if buf.failed:
+                raise MemoryError("qdot: out of memory")
+        except BaseException:
+            lib.qd_buf_free(buf)
+            raise
+        return self._header + buf_text(buf)
 
     def __repr__(self):
         return "<qdot.Result %d rows, t = %g..%g, %s>" % (
@@ -244,14 +276,40 @@ def _run(core, s, opts, nev, fns=()):
             return -1
 
     stats = new("qd_sim_stats")
+    final = doubles([0.0] * ncol)
     callback = ffi.callback("qd_sim_sink", sink, error=-1)  # alive until qd_sim_run returns
-    st = lib.qd_sim_run(s, opts, callback, ffi.NULL, stats, ffi.NULL)
+    wall = time.perf_counter()
+    st = lib.qd_sim_run(s, opts, callback, ffi.NULL, stats, final)
+    wall = time.perf_counter() - wall
     for err in [fn.error for fn in fns if fn.error is not None] + failed:
         take_error(core.ctx)  # the failure's consequence: not the cause
         raise err
     if st != QD_OK:
         raise core.error(st)
-    return Result(columns, rows, nev, stats, cstr(lib.qd_sim_method_name(opts.method)))
+    rep = new("qd_sim_report", {"s": s, "opts": opts, "stats": stats, "final": final,
+                                "wall": wall})
+    summary, header, record = _report(rep, s, opts.method)
+    return Result(columns, rows, nev, stats, cstr(lib.qd_sim_method_name(opts.method)),
+                  summary, header, bool(lib.qd_sim_event_column(s)), record)
+
+
+def _report(rep, s, method):
+    """The library's words on a run while s lives: the summary's text
+    (qd_sim_summary_print), the CSV header (qd_sim_csv_header) and the
+    summary's JSON members as a dict (qd_sim_summary_json; None when one of
+    its numbers is not finite, as the CLI then refuses the document)."""
+    summary, header, doc = new("qd_buf"), new("qd_buf"), new("qd_buf")
+    j = new("qd_json")
+    lib.qd_json_init(j, doc)
+    lib.qd_json_begin_object(j)
+    st = lib.qd_sim_summary_json(j, rep)
+    lib.qd_json_end_object(j)
+    ok = (lib.qd_sim_summary_print(rep, ffi.NULL, summary) == QD_OK and
+          lib.qd_sim_csv_header(s, method, header) == QD_OK and st != QD_ERR_NOMEM)
+    summary, header, doc = buf_text(summary), buf_text(header), buf_text(doc)
+    if not ok:
+        raise MemoryError("qdot: out of memory")
+    return summary, header, json.loads(doc) if st == QD_OK else None
 
 
 class Rhs:

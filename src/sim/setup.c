@@ -87,6 +87,7 @@ qd_sim_setup *qd_sim_setup_new(qd_ctx *ctx, const qd_model *m, bool no_speeds) {
         nomem(ctx);
         return NULL;
     }
+    s->period = NAN;
     s->ctx = ctx;
     s->m = m;
     s->form = qd_sim_form_of(m, no_speeds);
@@ -116,6 +117,7 @@ void qd_sim_setup_free(qd_sim_setup *s) {
     if (s->native)
         qd_native_unload(s->native);
     free(s->native);
+    free(s->input_given);
     free(s->q0);
     free(s->p0);
     free(s->u0);
@@ -457,6 +459,20 @@ static qd_status number(qd_sim_setup *s, const char *field, const char *text, bo
     return QD_OK;
 }
 
+/* t_end = t0 + T, T the period text (qd_sim_setup_period), its error
+ * under the field's name. */
+static qd_status period(qd_sim_setup *s, const char *text, qd_sim_opts *out) {
+    qd_status st = qd_sim_setup_period(s, text, out, &s->period);
+    if (st != QD_OK)
+        snprintf(((qd_diag *)qd_ctx_diag(s->ctx))->name, sizeof(qd_diag){0}.name, "period");
+    return st;
+}
+
+double qd_sim_setup_period_of(const qd_sim_setup *s) {
+    QD_ARGS(NAN, s);
+    return s->period;
+}
+
 /* The model's impacts at the initial state: a gap below 0 is bad input. */
 static qd_status check_gaps(qd_sim_setup *s) {
     for (size_t i = 0; i < qd_model_nimpacts(s->m); i++) {
@@ -476,8 +492,12 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     QD_ARGS(QD_ERR_ARG, s);
     QD_ARGS_CTX(s->ctx, o && out);
     double t_end = NAN, dt = 0, rtol = 0, atol = 0, every = 0, step = 0, steps = 0;
-    qd_status st = o->t_end ? number(s, "t_end", o->t_end, false, &t_end)
-                            : refuse(s, "t_end", "the end time is missing");
+    s->period = NAN;
+    qd_status st = o->period && o->t_end ? refuse(s, "period", "give the period or the end "
+                                                  "time, not both")
+                   : o->period           ? QD_OK
+                   : o->t_end            ? number(s, "t_end", o->t_end, false, &t_end)
+                                         : refuse(s, "t_end", "the end time is missing");
     if (st == QD_OK)
         st = number(s, "dt", o->dt, true, &dt);
     if (st == QD_OK)
@@ -549,6 +569,9 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     out->precision = o->precision;
     out->t0 = s->vals[2 * s->nq];
     out->t_end = t_end;
+    if (o->period && (st = period(s, o->period, out)) != QD_OK)
+        return st;
+    t_end = out->t_end;
     if ((st = initial_values(s)) != QD_OK)
         return st;
     out->q0 = s->q0;

@@ -23,6 +23,8 @@ struct qd_sim_setup {
     bool initial_given;
     double *q0, *qd0, *p0, *u0; /* the run's initial values (qd_sim_setup_options) */
     qd_native *native;
+    double period;        /* qd_sim_setup_options' period, else NaN */
+    bool *input_given;    /* per model input: named by qd_sim_setup_input_text */
 };
 
 #endif

@@ -2194,6 +2194,19 @@ static void null_lyapunov(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_flow_column_name(F.eom, 1, NULL));
     reset(&F);
+    /* ---- qd_flow_run_csv */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_run_csv(NULL, NULL, F.eom, NULL, 1, NULL, NULL, (qd_flow *)(void *)F.blob));
+    reset(&F);
+    /* l NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_run_csv(F.ctx, NULL, F.eom, NULL, 1, NULL, NULL, (qd_flow *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_run_csv(F.ctx, NULL, NULL, NULL, 1, NULL, NULL, (qd_flow *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_run_csv(F.ctx, NULL, F.eom, NULL, 1, NULL, NULL, NULL));
+    reset(&F);
     /* ---- qd_flow_print */
     /* f NULL */
     assert_int_equal(QD_ERR_ARG, qd_flow_print(NULL, 1, "q", &F.buf));
@@ -5069,6 +5082,45 @@ static void null_sim(void **state)
     /* range NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_plot_json(NULL, "q", 1, NULL));
     reset(&F);
+    /* ---- qd_sim_csv_header */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_csv_header(NULL, (qd_sim_method){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_csv_header(F.sim, (qd_sim_method){0}, NULL));
+    reset(&F);
+    /* ---- qd_sim_csv_row */
+    /* row NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_csv_row(1, NULL, false, 1, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_csv_row(1, F.d, false, 1, NULL));
+    reset(&F);
+    /* ---- qd_sim_json_row */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_json_row(NULL, 1, F.d, false, 1));
+    reset(&F);
+    /* row NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_json_row(NULL, 1, NULL, false, 1));
+    reset(&F);
+    /* ---- qd_sim_writer_init */
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_writer_init(NULL, F.sim, (qd_sim_method){0}));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_writer_init(NULL, NULL, (qd_sim_method){0}));
+    reset(&F);
+    /* ---- qd_sim_writer_sink */
+    /* w NULL */
+    (void)qd_sim_writer_sink(NULL, 1, F.d);
+    reset(&F);
+    /* row NULL */
+    (void)qd_sim_writer_sink(NULL, 1, NULL);
+    reset(&F);
+    /* ---- qd_sim_writer_free */
+    /* w NULL */
+    qd_sim_writer_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -5175,12 +5227,32 @@ static void null_simsetup(void **state)
     /* text NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_input(NULL, "q", NULL, 1, 1));
     reset(&F);
+    /* ---- qd_sim_setup_input_text */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, F.c, 1, F.z, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, NULL, NULL, F.c, 1, F.z, F.z));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, NULL, 1, F.z, F.z));
+    reset(&F);
+    /* a NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, F.c, 1, NULL, F.z));
+    reset(&F);
+    /* b NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_input_text(NULL, "q", NULL, F.c, 1, F.z, NULL));
+    reset(&F);
     /* ---- qd_sim_setup_options */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, (qd_sim_opts *)(void *)F.blob));
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_options(NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_sim_setup_period_of */
+    /* s NULL */
+    assert_true(isnan(qd_sim_setup_period_of(NULL)));
     reset(&F);
     /* ---- qd_sim_setup_period */
     /* s NULL */

@@ -20,7 +20,8 @@ built program.
   [[D^T, B^T], [C^T, A^T]] for Phi = [[A, B], [C, D]]).
 - A periodic orbit of the pendulum (period 4 K(sin^2(th0/2)) sqrt(l/g)):
   both Floquet multipliers are 1 and the monodromy matrix is not the
-  identity (a Jordan block: the period changes with the energy).
+  identity (a Jordan block: the period changes with the energy); its rows
+  every T/8 over --period T end where they began.
 - Liouville: the damped oscillator's det = exp(-b t/m) (examples/
   damped_oscillator.qd; Goldstein sec. 1.5), and --variational columns
   prints t, the state and the columns, the first row the identity.
@@ -164,6 +165,13 @@ def pendulum(qdot, tmp):
     off = max(abs(M[0][1]), abs(M[1][0]))
     check('pendulum: a Jordan block (monodromy != I)', off > 0.1, M)
     check('pendulum: closure', d['closure'] < 1e-8, d['closure'])
+    # rows every T/8 over the period: counted over T, and back at the start
+    rc, out, err = sim(qdot, str(model), '--period', '%.17g' % period, '--dt',
+                       '%.17g' % (period / 8), '--rtol', '1e-12')
+    rows = [[float(v) for v in ln.split(',')] for ln in out.splitlines()[1:]] if rc == 0 else []
+    check('--period with --dt: rows over one period', len(rows) in (9, 10) and
+          abs(rows[-1][0] - period) < 1e-12 and abs(rows[-1][1] - 1) < 1e-8 and
+          abs(rows[-1][2]) < 1e-8, err or rows[-1:])
 
 
 def damped(qdot):
