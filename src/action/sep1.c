@@ -25,12 +25,17 @@ static const qd_expr *p_squared(qd_ctx *ctx, const qd_ham *h, const qd_expr *E) 
     if (!rest)
         return NULL;
     if (!qd_is_zero(rest) || qd_is_zero(a)) {
-        qd_ctx_error(ctx, QD_ERR_NONLINEAR, "H is not a p^2 + c(q) in %s: p^2 is not a function "
-                                            "of q and E", qd_expr_name(p));
+        qd_ctx_error(ctx, QD_ERR_NONLINEAR, "H is not a(q) %s^2 + c(q)", qd_expr_name(p));
+        /* the hint says which it is: a relativistic H has no linear term,
+         * and "gyroscopic" would send its user looking for one */
+        const char *why =
+            !qd_is_zero(b) ? "a term linear in the momentum (a gyroscopic or moving frame) "
+                             "makes the action depend on the sense of the motion"
+            : qd_has(c, p) ? "the momentum enters H beyond its square (a relativistic H): "
+                             "`qdot simulate` gives the period of such a motion"
+                           : "H does not depend on the momentum's square";
         qd_ctx_error_about(ctx, QD_SUBJECT_COORD, 0, qd_expr_name(h->q[0]),
-                           QD_REASON_NOT_QUADRATIC,
-                           "a term linear in the momentum (a gyroscopic or moving frame) "
-                           "makes the action depend on the sense of the motion");
+                           QD_REASON_NOT_QUADRATIC, why);
         return NULL;
     }
     return qd_simplify(ctx, qd_div(ctx, qd_sub(ctx, E, c), a));
