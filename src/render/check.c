@@ -92,6 +92,11 @@ static void dof(check *c, const qd_eom *e) {
                       "relation%s among the coordinates that none gives alone)\n",
                       d.relations - one_by_one, d.relations - one_by_one,
                       d.relations - one_by_one == 1 ? "" : "s");
+    for (size_t i = 0; i < e->nreduced; i++)
+        qd_buf_printf(c->out,
+                      "note: constraint %s is redundant (its row is a combination of the others' "
+                      "on the constraint manifold, consistently): left out by rank, its "
+                      "multiplier is not determined\n", e->reduced[i]);
     for (size_t i = 0; i < d.ncombined; i++) {
         qd_buf_puts(c->out, "  integral of a combination: ");
         put_expr(c, d.combined[i]);
