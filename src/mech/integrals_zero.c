@@ -205,12 +205,13 @@ static bool certify_state(qd_ctx *ctx, const qd_expr *X, const points *p, qd_zer
         return false;
     }
     *z = r;
-    z->witness.n = 0; /* the point: the state (q, q', t, parameters) */
-    for (size_t i = 0; i < p->nstate && z->witness.n < QD_WITNESS_MAX; i++)
-        if (qd_has(X, p->syms[i])) {
-            z->witness.sym[z->witness.n] = p->syms[i];
-            z->witness.at[z->witness.n++] = p->vals[i];
-        }
+    /* the point: the whole state (q, q', t, parameters), since the
+     * accelerations in X depend on all of it */
+    z->witness.n = 0;
+    for (size_t i = 0; i < p->nstate && z->witness.n < QD_WITNESS_MAX; i++) {
+        z->witness.sym[z->witness.n] = p->syms[i];
+        z->witness.at[z->witness.n++] = p->vals[i];
+    }
     return true;
 }
 
