@@ -368,6 +368,11 @@ static void json_constraints(check *c, qd_json *j, const qd_eom *e) {
         qd_json_end_object(j);
     }
     qd_json_end_array(j);
+    qd_json_key(j, "reduced_by_rank"); /* redundant constraints left out */
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < e->nreduced; k++)
+        qd_json_string(j, e->reduced[k]);
+    qd_json_end_array(j);
 }
 
 static void json_dof(check *c, qd_json *j, const qd_eom *e) {
