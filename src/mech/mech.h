@@ -78,7 +78,8 @@ void qd__mech_random_state(size_t nin, double *in, unsigned k);
  * judged on the holonomic constraints' manifold.  Redundant: the one with
  * the steadiest weight is left out of e (its name appended to e->reduced,
  * e's program freed) and *dropped is true; inconsistent: QD_ERR_SINGULAR
- * with a message and the witness state; no verdict: QD_OK, nothing done. */
+ * with a message and the witness state; independent on the manifold:
+ * QD_OK, nothing done; no verdict: QD_ERR_SINGULAR saying so. */
 qd_status qd__mech_con_reduce(qd_ctx *ctx, qd_eom *e, bool *dropped);
 
 /* The determinant of the n*n matrix A by fraction-free elimination, each

@@ -260,6 +260,33 @@ static qd_status setup(red *r, const qd_expr *const *inputs) {
     return r->p0 ? QD_OK : qd_ctx_status(r->ctx);
 }
 
+/* No verdict to act on, said so (never silently "inconsistent"): the rows
+ * are dependent at every random state, but either too few states reached
+ * the manifold, or the dependence moves between the constraints so that
+ * no one of them can be left out everywhere. */
+static qd_status undecided(qd_ctx *ctx, const qd_eom *e, const double *w, bool consistent) {
+    qd_buf names = QD_BUF_WITH(qd__ctx_allocator(ctx));
+    size_t first = e->ncon, count = 0;
+    for (size_t k = 0; k < e->ncon; k++)
+        if (w[k] > 1e-6) {
+            qd_buf_printf(&names, "%s%s", count++ ? ", " : "", e->con[k].name);
+            first = first < e->ncon ? first : k;
+        }
+    if (consistent)
+        qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                     "constraints %s are redundant (consistent at every state tried), but no "
+                     "one of them can be left out at every state", qd_buf_str(&names));
+    else
+        qd_ctx_error(ctx, QD_ERR_SINGULAR,
+                     "constraints %s are dependent at every state tried; too few states could "
+                     "be brought onto them to decide whether they are redundant or "
+                     "inconsistent", qd_buf_str(&names));
+    qd_buf_free(&names);
+    qd_ctx_error_about(ctx, QD_SUBJECT_CONSTRAINT, first, first < e->ncon ? e->con[first].name : NULL,
+                       QD_REASON_REDUNDANT, "remove the constraints that repeat what the others say");
+    return QD_ERR_SINGULAR;
+}
+
 qd_status qd__mech_con_reduce(qd_ctx *ctx, qd_eom *e, bool *dropped) {
     *dropped = false;
     qd__eom_num *num = e->priv;
@@ -285,8 +312,11 @@ qd_status qd__mech_con_reduce(qd_ctx *ctx, qd_eom *e, bool *dropped) {
     qd__free(r.qi);
     if (st != QD_OK || verdict == -1)
         return st != QD_OK ? st : QD_ERR_SINGULAR;
-    if (!reduce)
+    if (reduce) {
+        *dropped = true;
+        return drop(ctx, e, pick);
+    }
+    if (verdict == 0) /* independent where the motion lives */
         return QD_OK;
-    *dropped = true;
-    return drop(ctx, e, pick);
+    return undecided(ctx, e, r.w, dependent >= 2);
 }
