@@ -72,10 +72,12 @@ typedef struct qd_impulse_check {
  * are of the centres of mass; angles are measured from the relative
  * velocity before, u = v1 - v2, in [0, pi] (0 when a velocity is zero).
  * Filled when the model has exactly two mass elements (particles, then
- * bodies: body 1 is the first) and at least one sudden constraint, and the
+ * bodies: body 1 is the first), its sudden constraints are all gaps that
+ * close (holonomic `impact constraint`s; none prescribed), and the
  * impulses are internal: the total momentum is the same after (to 1e-9 of
- * the speeds) and the bodies met (u before is not 0).  A rolling contact
- * with the ground, a pivot or a blow from outside is not a collision. */
+ * the speeds) and the bodies met (u before is not 0).  A contact with the
+ * ground, a pivot, a blow from outside, a sudden rolling (velocity)
+ * constraint or prescribed velocities are not a collision. */
 typedef struct qd_collision {
     double m1, m2;
     double w[3];                     /* centre-of-mass velocity */

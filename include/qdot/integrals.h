@@ -34,10 +34,12 @@
  * its terms at each of 12 random states (coordinates, velocities, t and every
  * parameter drawn at random), the accelerations computed there from the
  * equations of motion; a state where it clearly does not vanish is a
- * counterexample and wins.  `numeric` flags the verdicts that rest on the
- * random states only; with a negative verdict (not conserved) it means
- * undecided: no counterexample, but too few states where the expression
- * is defined.  Parameters are symbols: a verdict holds for every
+ * counterexample and wins once ball arithmetic at that state excludes 0
+ * (the witness, in `cert`; with solved accelerations qd_zero_test decides
+ * directly).  `numeric` flags the verdicts that rest on the random states
+ * only; with a negative verdict (not conserved) it means could not decide:
+ * no certified counterexample, and too few states where the expression is
+ * defined.  Parameters are symbols: a verdict holds for every
  * value of them (substitute values first with qd_integrals_opts.subs to ask
  * about particular ones).
  *
@@ -49,6 +51,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include "certify.h"
 #include "expr.h"
 #include "mech.h"
 #include "model.h"
@@ -72,6 +75,8 @@ typedef struct qd_int_jacobi {
     bool explicit_t;            /* L contains t */
     bool conserved;             /* dh/dt vanishes along the motion */
     bool numeric;               /* that verdict rests on random states only */
+    qd_zero_result cert;        /* how the verdict on dh/dt is known: NONZERO with the
+                                   witness state of a "no", UNKNOWN when undecided */
     int equals_energy;          /* 1 yes, 0 no, -1 unknown (L given without T) */
     const qd_expr *energy;      /* E = T + V + U0 (U0: U at zero velocities), or NULL */
     const qd_expr *h_minus_E;   /* simplified, NULL when energy is */
@@ -109,6 +114,7 @@ typedef struct qd_noether {
     const qd_expr *remainder;   /* dI/dt along the motion, simplified: 0 when conserved */
     bool conserved;             /* dI/dt vanishes along the motion */
     bool numeric;               /* a verdict rests on random states only */
+    qd_zero_result cert;        /* how conserved is known (as in qd_int_jacobi) */
 } qd_noether;
 
 /* A proposed integral I(q, q', t). */
@@ -118,6 +124,7 @@ typedef struct qd_int_proposed {
     const qd_expr *remainder;   /* dI/dt along the motion, simplified */
     bool conserved;
     bool numeric;
+    qd_zero_result cert;        /* how conserved is known (as in qd_int_jacobi) */
 } qd_int_proposed;
 
 typedef struct qd_integrals_opts {

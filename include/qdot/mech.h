@@ -89,6 +89,11 @@ typedef struct qd_eom {
     /* Coordinates eliminated before deriving (not among q): nelim of them. */
     size_t nelim;
     qd_elim *elim;
+    /* Constraints left out by rank: redundant (their rows a combination of
+     * the others' on the manifold, and consistent with them), so their
+     * multipliers are not determined; names owned by the model. */
+    size_t nreduced;
+    const char **reduced;
     void *priv;                  /* the library's: the compiled numeric program */
 } qd_eom;
 

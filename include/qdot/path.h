@@ -86,6 +86,13 @@ typedef struct qd_path {
      * A = integral of p.q' dt = S + E T (T the time taken), the quantity
      * his principle makes stationary (Desloge ch. 83); NaN otherwise */
     double abbreviated;
+    /* not isolated: the end t1 is a kinetic focus of t0 (examined paths,
+     * not at fixed energy), so a Jacobi field vanishes at both ends and the
+     * stationary paths through these ends form (to first order) a family
+     * of this dimension, the focus's multiplicity (the great circles
+     * between antipodes: 1); this path is one of them, and --all lists a
+     * family once.  0: isolated */
+    size_t family;
 } qd_path;
 
 typedef struct qd_path_set {

@@ -85,9 +85,22 @@ static bool internal(const qd_collision *c) {
     return sqrt(dot(p1, p1)) <= 1e-9 * top && c->eps[0] > 0;
 }
 
+/* Only a contact that closes a gap makes the bodies collide: every sudden
+ * row holonomic (impact constraint g(q) = 0 between them), none prescribed.
+ * A sudden velocity constraint (a rolling contact that grips, a joint made
+ * rigid) or Thomson's prescribed velocities leave the momentum alone too,
+ * but the centres' relative velocity then does not turn as in a collision
+ * and its CM angles describe nothing (issue 33). */
+static bool gap_contacts(const qd__imp *s) {
+    for (size_t k = s->nheld; k < s->nheld + s->nsudden; k++)
+        if (s->row[k].kind != QD_CON_HOLONOMIC)
+            return false;
+    return s->nsudden > 0 && s->npre == 0;
+}
+
 qd_status qd__imp_collision(const qd__imp *s, qd_impulse *r) {
     const qd_model *m = s->m;
-    if (qd_model_nparticles(m) + qd_model_nbodies(m) != 2 || s->nsudden == 0)
+    if (qd_model_nparticles(m) + qd_model_nbodies(m) != 2 || !gap_contacts(s))
         return QD_OK;
     qd_collision *c = &r->col;
     qd_status st = qd__imp_eval(s, mass_of(m, 0), r->qd_before, &c->m1);

@@ -266,13 +266,18 @@ static bool dependent_rows(qd_ctx *ctx, size_t m, size_t n, const double *B, boo
     return true;
 }
 
-/* Does row k of B hold at dv, relative to its terms' size? */
+/* Does row k of B hold at dv, relative to the row's size times dv's?
+ * Not relative to its own terms: a row that holds because dv is 0 where
+ * the row is not (a rod's point prescribed to stay still along the rod)
+ * has terms of rounding size only, and would look violated (issue 33). */
 static bool row_holds(size_t n, const double *Bk, double rk, const double *dv) {
-    double sum = 0, size = fabs(rk);
+    double sum = 0, row = 0, top = 0;
     for (size_t j = 0; j < n; j++) {
         sum += Bk[j] * dv[j];
-        size += fabs(Bk[j] * dv[j]);
+        row += fabs(Bk[j]);
+        top = fmax(top, fabs(dv[j]));
     }
+    double size = fabs(rk) + row * top;
     return fabs(sum - rk) <= 1e-9 * (size > 0 ? size : 1);
 }
 

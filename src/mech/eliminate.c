@@ -86,15 +86,21 @@ static void reduce_forces(qd_ctx *ctx, qd__sys *s, size_t j, const qd_expr *g, c
 }
 
 /* Substitute into the other constraints; drop constraint k.  One that
- * then holds identically (or never) is redundant (inconsistent). */
+ * then holds identically is redundant (left out, named in s->reduced); one
+ * that never holds is inconsistent. */
 static qd_status reduce_constraints(qd_ctx *ctx, qd__sys *s, size_t k, const qd_expr *q,
                                     const subst *u) {
-    for (size_t i = 0, o = 0; i < s->ncon; i++) {
+    size_t o = 0;
+    for (size_t i = 0; i < s->ncon; i++) {
         if (i == k)
             continue;
         const qd_expr *c = qd_simplify(ctx, apply(ctx, u, s->con_expr[i]));
         if (!c)
             return qd_ctx_status(ctx);
+        if (qd_is_zero(c)) { /* redundant: left out, named like a rank reduction */
+            s->reduced[s->nreduced++] = s->con_name[i];
+            continue;
+        }
         if (qd_is_number(c)) {
             qd_ctx_error(ctx, QD_ERR_SINGULAR,
                          "constraints %s and %s are %s: %s %s once %s is used to eliminate %s",
@@ -107,7 +113,7 @@ static qd_status reduce_constraints(qd_ctx *ctx, qd__sys *s, size_t k, const qd_
         s->con_name[o] = s->con_name[i];
         s->con_expr[o++] = c;
     }
-    s->ncon--;
+    s->ncon = o;
     return QD_OK;
 }
 
@@ -134,7 +140,9 @@ static qd_status eliminate_one(qd_ctx *ctx, qd__sys *s, size_t k, size_t j, cons
 qd_status qd__mech_eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *nelim) {
     qd_elim *rec = qd__malloc(ctx, (s->ncon + 1) * sizeof *rec);
     size_t nrec = 0, k = 0;
-    qd_status st = rec ? QD_OK : QD_ERR_NOMEM;
+    if (!s->reduced)
+        s->reduced = qd__malloc(ctx, (s->ncon + 1) * sizeof *s->reduced);
+    qd_status st = rec && s->reduced ? QD_OK : QD_ERR_NOMEM;
     while (st == QD_OK && k < s->ncon) {
         size_t j;
         const qd_expr *g;

@@ -235,7 +235,7 @@ static qd_status jacobi(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
         return qd_ctx_status(ctx);
     J->explicit_t = qd_has(s->L, t);
     const qd_expr *X = qd_sub(ctx, qd_dt(ctx, J->h), manifold_term(ctx, s)), *shown;
-    qd_status st = qd__mech_int_zero(ctx, s, X, &shown, &J->conserved, &J->numeric);
+    qd_status st = qd__mech_int_zero(ctx, s, X, &shown, &J->conserved, &J->numeric, &J->cert);
     if (st != QD_OK)
         return st;
     if (!J->conserved)
@@ -297,10 +297,10 @@ static qd_status balance(qd_ctx *ctx, const qd__intsys *s, qd_integrals *I) {
     if (!B->expected)
         return qd_ctx_status(ctx);
     const qd_expr *dh = qd_sub(ctx, qd_dt(ctx, I->jacobi.h), manifold_term(ctx, s));
-    st = qd__mech_int_zero(ctx, s, dh, &B->dhdt, &num, &num);
+    st = qd__mech_int_zero(ctx, s, dh, &B->dhdt, &num, &num, NULL);
     if (st == QD_OK)
         st = qd__mech_int_zero(ctx, s, qd_sub(ctx, dh, B->expected), &B->remainder, &B->verified,
-                          &B->numeric);
+                          &B->numeric, NULL);
     /* Equal along the motion: the short form is the one to show. */
     if (st == QD_OK && B->verified && B->numeric) {
         B->dhdt = B->expected;
@@ -347,7 +347,7 @@ qd_status qd_integrals_check(qd_ctx *ctx, qd_integrals *I, const char *name, con
         return QD_ERR_ARG;
     }
     return qd__mech_int_zero(ctx, s, qd_dt(ctx, out->expr), &out->remainder, &out->conserved,
-                        &out->numeric);
+                        &out->numeric, &out->cert);
 }
 
 /* ---- derive ------------------------------------------------------------------ */

@@ -77,10 +77,14 @@ static const char *numerically(bool numeric) {
     return numeric ? " (numerically, at random states: the simplifier did not reach 0)" : "";
 }
 
-static const char *undecided(bool numeric) {
-    return numeric ? " (undecided: no counterexample, but too few random states where it is "
-                     "defined)"
-                   : "";
+#define UNDECIDED "could not decide (the simplifier did not reach 0, and no state where it " \
+                  "certainly differs from 0 was found)"
+
+/* After a "no": its witness line, the state where ball arithmetic
+ * excludes 0 (issue 33: a "no" only with a witness). */
+static void witness(qd_buf *b, const qd_zero_result *z) {
+    qd_buf_puts(b, "  ");
+    qd_zero_result_print(b, z);
 }
 
 static void text_noether(const it_out *r, qd_buf *b, const qd_noether *nt, bool found) {
@@ -104,10 +108,15 @@ static void text_noether(const it_out *r, qd_buf *b, const qd_noether *nt, bool 
     put(r, b, nt->integral);
     if (nt->conserved) {
         qd_buf_printf(b, " is conserved%s\n", numerically(nt->numeric));
+    } else if (nt->cert.kind != QD_ZERO_NONZERO) {
+        qd_buf_puts(b, ": conserved? " UNDECIDED ": dI/dt = ");
+        put(r, b, nt->remainder);
+        qd_buf_puts(b, "\n");
     } else {
         qd_buf_puts(b, " is not conserved: the forces work along the field, dI/dt = ");
         put(r, b, nt->remainder);
         qd_buf_puts(b, "\n");
+        witness(b, &nt->cert);
     }
 }
 
@@ -132,8 +141,12 @@ static void text_jacobi(const it_out *r, qd_buf *b) {
     put(r, b, J->h);
     if (J->conserved)
         qd_buf_printf(b, "\n  conserved: yes%s\n", numerically(J->numeric));
-    else
-        qd_buf_printf(b, "\n  conserved: no (%s)%s\n", J->not_conserved, undecided(J->numeric));
+    else if (J->cert.kind != QD_ZERO_NONZERO)
+        qd_buf_puts(b, "\n  conserved: " UNDECIDED "\n");
+    else {
+        qd_buf_printf(b, "\n  conserved: no (%s)\n", J->not_conserved);
+        witness(b, &J->cert);
+    }
     if (J->energy) {
         qd_buf_puts(b, "  energy E = T + V + U0 = ");
         put(r, b, J->energy);
@@ -210,10 +223,15 @@ static void text_proposed(const it_out *r, qd_buf *b) {
         if (p->conserved) {
             qd_buf_printf(b, "\n    conserved: dI/dt = 0 along the motion%s\n",
                           numerically(p->numeric));
+        } else if (p->cert.kind != QD_ZERO_NONZERO) {
+            qd_buf_puts(b, "\n    conserved? " UNDECIDED ": dI/dt = ");
+            put(r, b, p->remainder);
+            qd_buf_puts(b, " along the motion\n");
         } else {
             qd_buf_puts(b, "\n    not conserved: dI/dt = ");
             put(r, b, p->remainder);
-            qd_buf_printf(b, " along the motion%s\n", undecided(p->numeric));
+            qd_buf_puts(b, " along the motion\n");
+            witness(b, &p->cert);
         }
     }
 }
@@ -269,6 +287,7 @@ static void json_noether(const it_out *r, qd_json *j, const qd_noether *nt) {
     jbool(j, "conserved", nt->conserved);
     jexpr(r, j, "dIdt", nt->remainder);
     jbool(j, "numeric", nt->numeric);
+    qd_zero_result_json(j, &nt->cert);
     qd_json_end_object(j);
 }
 
@@ -304,6 +323,7 @@ static void json_jacobi(const it_out *r, qd_json *j) {
     jexpr(r, j, "h_minus_energy", J->h_minus_E);
     jstr(j, "reason", J->reason);
     jbool(j, "numeric", J->numeric);
+    qd_zero_result_json(j, &J->cert);
     qd_json_end_object(j);
 }
 
@@ -347,6 +367,7 @@ static void json_lists(const it_out *r, qd_json *j) {
         jbool(j, "conserved", p->conserved);
         jexpr(r, j, "remainder", p->remainder);
         jbool(j, "numeric", p->numeric);
+        qd_zero_result_json(j, &p->cert);
         qd_json_end_object(j);
     }
     qd_json_end_array(j);

@@ -6,6 +6,7 @@
 #ifndef QD_MECH_INTEGRALS_PRIV_H
 #define QD_MECH_INTEGRALS_PRIV_H
 
+#include "qdot/certify.h"
 #include "qdot/integrals.h"
 
 typedef struct qd__intsys {
@@ -22,9 +23,10 @@ typedef struct qd__intsys {
  * vanish along the motion?  *shown receives X with the solved
  * accelerations and multipliers substituted (when the eom was solved),
  * simplified; *numeric is set when the verdict rests on random states
- * only. */
+ * only.  cert (may be NULL) receives how it is known: PROVEN, NUMERIC,
+ * NONZERO with the witness state, or UNKNOWN (undecided). */
 qd_status qd__mech_int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
-                       const qd_expr **shown, bool *zero, bool *numeric);
+                       const qd_expr **shown, bool *zero, bool *numeric, qd_zero_result *cert);
 
 /* Does X (no accelerations) vanish identically (simplify, then random
  * points; s, for the parameters' values, may be NULL)? */

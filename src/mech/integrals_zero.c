@@ -7,8 +7,9 @@
  * coordinates, velocities, t and parameters drawn at random, the
  * accelerations and multipliers computed there numerically from the
  * equations of motion (qd_eom_eval), and the expression evaluated.  One
- * state where it clearly does not vanish is a counterexample; otherwise it
- * vanishes when it does so at MIN_DEFINED states or more.  The draws are
+ * state where it clearly does not vanish is a counterexample, kept as the
+ * witness once ball arithmetic at that state excludes 0 (else no verdict);
+ * otherwise it vanishes when it does so at MIN_DEFINED states or more.  The draws are
  * seeded by the expression's hash, so every run gives the same verdict.
  */
 #include "integrals_priv.h"
@@ -187,14 +188,46 @@ static const qd_expr *solved(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X)
     return r;
 }
 
+/* The counterexample state of p made a witness: X with every symbol at its
+ * value (the accelerations and multipliers as the equations gave them)
+ * evaluated in ball arithmetic; a "no" only when the ball excludes 0,
+ * else no verdict (false). */
+static bool certify_state(qd_ctx *ctx, const qd_expr *X, const points *p, qd_zero_result *z) {
+    const qd_expr **to = qd__malloc(ctx, (p->ns + 1) * sizeof *to);
+    bool ok = to != NULL;
+    for (size_t i = 0; ok && i < p->ns; i++)
+        ok = (to[i] = qd_float(ctx, p->vals[i])) != NULL;
+    const qd_expr *at = ok ? qd_subs(ctx, X, p->ns, p->syms, to) : NULL;
+    qd__free(to);
+    qd_zero_result r;
+    if (!at || qd_zero_test(ctx, at, &r) != QD_OK || r.kind != QD_ZERO_NONZERO) {
+        qd__ctx_recover(ctx);
+        return false;
+    }
+    *z = r;
+    /* the point: the whole state (q, q', t, parameters), since the
+     * accelerations in X depend on all of it */
+    z->witness.n = 0;
+    for (size_t i = 0; i < p->nstate && z->witness.n < QD_WITNESS_MAX; i++) {
+        z->witness.sym[z->witness.n] = p->syms[i];
+        z->witness.at[z->witness.n++] = p->vals[i];
+    }
+    return true;
+}
+
 qd_status qd__mech_int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
-                       const qd_expr **shown, bool *zero, bool *numeric) {
+                       const qd_expr **shown, bool *zero, bool *numeric, qd_zero_result *cert) {
     *zero = *numeric = false;
+    qd_zero_result none;
+    if (!cert)
+        cert = &none;
+    *cert = (qd_zero_result){.kind = QD_ZERO_UNKNOWN};
     *shown = X ? qd_simplify(ctx, solved(ctx, s, X)) : NULL;
     if (!*shown)
         return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
     if (qd_is_zero(*shown)) {
         *zero = true;
+        cert->kind = QD_ZERO_PROVEN;
         return QD_OK;
     }
     /* with the accelerations solved, *shown is explicit in q, q', t and the
@@ -209,6 +242,7 @@ qd_status qd__mech_int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
         if (zs == QD_OK && z.kind != QD_ZERO_UNKNOWN) {
             *zero = z.kind != QD_ZERO_NONZERO;
             *numeric = z.kind == QD_ZERO_NUMERIC;
+            *cert = z;
             return QD_OK;
         }
         qd__ctx_recover(ctx);
@@ -217,8 +251,13 @@ qd_status qd__mech_int_zero(qd_ctx *ctx, const qd__intsys *s, const qd_expr *X,
     qd_status st = points_init(ctx, s, X, &p);
     if (st == QD_OK) {
         int r = numeric_along(ctx, s, X, &p);
+        /* a counterexample in doubles counts once certified at its state */
+        if (r < 0 && !certify_state(ctx, X, &p, cert))
+            r = 0;
         *zero = r > 0;
         *numeric = r >= 0; /* with *zero false: undecided */
+        if (r > 0)
+            *cert = (qd_zero_result){.kind = QD_ZERO_NUMERIC, .points = NPOINTS, .bits = 53};
     }
     qd__free(p.syms);
     qd__free(p.vals);

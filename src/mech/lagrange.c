@@ -57,6 +57,7 @@ void qd_eom_free(qd_eom *e) {
     qd__free(e->A);
     qd__free(e->b);
     qd__free(e->elim);
+    qd__free(e->reduced);
     qd__free(e);
 }
 
@@ -253,6 +254,10 @@ static qd_status derive_sys(qd_ctx *ctx, qd__sys *s, const qd_model *m, const qd
     }
     (*out)->elim = elim;
     (*out)->nelim = nelim;
+    (*out)->reduced = s->reduced; /* the eom owns them now */
+    (*out)->nreduced = s->nreduced;
+    s->reduced = NULL;
+    s->nreduced = 0;
     return derive(ctx, *out, s);
 }
 
@@ -282,6 +287,7 @@ void qd__mech_sys_free(qd__sys *s) {
     qd__free(s->Q);
     qd__free(s->con_name);
     qd__free(s->con_expr);
+    qd__free(s->reduced);
     *s = (qd__sys){0};
 }
 

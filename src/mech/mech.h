@@ -69,7 +69,18 @@ qd_status qd__mech_split_kinetic(qd_ctx *ctx, const qd_expr *T, size_t n, const 
 /* QD_OK unless e's mass matrix is identically singular; then
  * QD_ERR_SINGULAR, with a message naming the undetermined accelerations.
  * T is the model's kinetic energy (may be NULL), used for the wording. */
-qd_status qd__mech_check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T);
+qd_status qd__mech_check_singular(qd_ctx *ctx, qd_eom *e, const qd_expr *T);
+
+/* The inputs of a random state (singular.c): each in [0.2, 1.8), draw k. */
+void qd__mech_random_state(size_t nin, double *in, unsigned k);
+
+/* Constraints whose rows are dependent at random states (redundant.c):
+ * judged on the holonomic constraints' manifold.  Redundant: the one with
+ * the steadiest weight is left out of e (its name appended to e->reduced,
+ * e's program freed) and *dropped is true; inconsistent: QD_ERR_SINGULAR
+ * with a message and the witness state; independent on the manifold:
+ * QD_OK, nothing done; no verdict: QD_ERR_SINGULAR saying so. */
+qd_status qd__mech_con_reduce(qd_ctx *ctx, qd_eom *e, bool *dropped);
 
 /* The determinant of the n*n matrix A by fraction-free elimination, each
  * step cancelled; NULL on failure (reason in ctx). */
@@ -109,6 +120,8 @@ typedef struct qd__sys {
     size_t ncon;
     const char **con_name;             /* owned by the model */
     const qd_expr **con_expr;          /* = 0 along the motion */
+    size_t nreduced;
+    const char **reduced;              /* ncon entries: redundant ones eliminate left out */
 } qd__sys;
 
 qd_status qd__mech_sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s);

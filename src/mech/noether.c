@@ -138,7 +138,7 @@ qd_status qd_integrals_noether(qd_ctx *ctx, qd_integrals *I, const char *name,
     if (!out->integral)
         return qd_ctx_status(ctx);
     st = qd__mech_int_zero(ctx, s, qd_dt(ctx, out->integral), &out->remainder, &out->conserved,
-                           &num);
+                           &num, &out->cert);
     out->numeric = out->numeric || num;
     return st;
 }

@@ -10,7 +10,8 @@
  * Only when M cannot be compiled (a user function in it) is det M built by
  * fraction-free elimination.  With constraints the matrix to check is
  * [M -A^T; A 0]; when it is singular at every state, rank-deficient rows A
- * name the redundant (or inconsistent) constraints.
+ * name the dependent constraints: redundant ones are left out by rank and
+ * inconsistent ones refused (redundant.c decides which, on the manifold).
  */
 #include "mech.h"
 
@@ -77,7 +78,7 @@ static void report_null(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, const do
     qd_buf_free(&b);
 }
 
-static void random_state(size_t nin, double *in, unsigned k) {
+void qd__mech_random_state(size_t nin, double *in, unsigned k) {
     uint64_t s = 0x9e3779b97f4a7c15u * (k + 1);
     for (size_t i = 0; i < nin; i++) {
         s = s * 6364136223846793005u + 1442695040888963407u;
@@ -129,8 +130,8 @@ static qd_status constraint_check(qd_ctx *ctx, const qd_eom *e, const double *ou
     return st;
 }
 
-static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, qd_prog *p,
-                               size_t nin, size_t nout, bool *pick) {
+static qd_status numeric_check(qd_ctx *ctx, qd_eom *e, const qd_expr *T, qd_prog *p,
+                               size_t nin, size_t nout, bool *pick, bool reducible, bool *again) {
     size_t n = e->n, s = n + e->ncon;
     double *w = qd__malloc(ctx, (nin + nout + s * s + s) * sizeof *w + s * (sizeof(size_t) + 1));
     if (!w)
@@ -141,7 +142,7 @@ static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, q
     bool *free_col = (bool *)(pc + s);
     int sing = 0, tried = 0;
     for (unsigned k = 0; k < NSTATES && !(tried && !sing); k++) {
-        random_state(nin, in, k);
+        qd__mech_random_state(nin, in, k);
         qd_prog_run(p, in, out);
         if (!all_finite(nout, out))
             continue;
@@ -149,6 +150,16 @@ static qd_status numeric_check(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, q
         sing = singular_at(e, out, K, pc, free_col, null);
     }
     qd_status st = tried && sing ? QD_ERR_SINGULAR : QD_OK;
+    if (st != QD_OK && e->ncon && reducible) {
+        /* on the manifold: redundant rows go (*again), inconsistent ones
+         * are refused with their witness */
+        st = qd__mech_con_reduce(ctx, e, again);
+        if (st != QD_OK || *again) {
+            qd__free(w);
+            return st;
+        }
+        st = QD_ERR_SINGULAR;
+    }
     if (st != QD_OK && e->ncon) {
         st = constraint_check(ctx, e, out);
         if (st == QD_OK && !zero_rows(ctx, e, T, pick)) {
@@ -181,10 +192,12 @@ static qd_status symbolic_check(qd_ctx *ctx, const qd_eom *e) {
     return QD_ERR_SINGULAR;
 }
 
-static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, bool *pick) {
+static qd_status check_by_value(qd_ctx *ctx, qd_eom *e, const qd_expr *T, bool *pick,
+                                bool *again) {
     qd__eom_num *num = e->priv;
     if (qd__mech_eom_compile(ctx, e) == QD_OK)
-        return numeric_check(ctx, e, T, num->prog->prog, num->prog->nin, num->prog->nout, pick);
+        return numeric_check(ctx, e, T, num->prog->prog, num->prog->nin, num->prog->nout, pick,
+                             true, again);
     if (!qd__ctx_recover(ctx)) /* out of memory is no reason to check otherwise */
         return QD_ERR_NOMEM;
     size_t nin, nn = e->n * e->n;
@@ -192,7 +205,7 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
     qd_prog *p = in ? qd_prog_new(ctx, nin, in, nn, e->M) : NULL;
     qd_status st;
     if (p) {
-        st = e->ncon ? QD_OK : numeric_check(ctx, e, T, p, nin, nn, pick);
+        st = e->ncon ? QD_OK : numeric_check(ctx, e, T, p, nin, nn, pick, false, again);
     } else if (!qd__ctx_recover(ctx)) {
         st = QD_ERR_NOMEM;
     } else {
@@ -203,13 +216,17 @@ static qd_status check_by_value(qd_ctx *ctx, const qd_eom *e, const qd_expr *T, 
     return st;
 }
 
-qd_status qd__mech_check_singular(qd_ctx *ctx, const qd_eom *e, const qd_expr *T) {
+qd_status qd__mech_check_singular(qd_ctx *ctx, qd_eom *e, const qd_expr *T) {
     bool *pick = qd__calloc(ctx, e->n ? e->n : 1, sizeof *pick);
     if (!pick)
         return QD_ERR_NOMEM;
     qd_status st = QD_ERR_SINGULAR;
-    if (e->ncon || !zero_rows(ctx, e, T, pick))
-        st = check_by_value(ctx, e, T, pick);
+    /* each pass leaves out at most one redundant constraint */
+    for (bool again = true; again;) {
+        again = false;
+        st = e->ncon || !zero_rows(ctx, e, T, pick) ? check_by_value(ctx, e, T, pick, &again)
+                                                    : QD_ERR_SINGULAR;
+    }
     qd__free(pick);
     return st;
 }

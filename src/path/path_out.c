@@ -51,6 +51,10 @@ static void write_second_variation(const pt_out *r, const qd_path *p, qd_buf *b)
             qd_buf_printf(b, " (multiplicity %zu)", p->foci_mult[k]);
     }
     qd_buf_printf(b, "%s\n  minimum: %s", p->nfoci ? "" : " none", p->minimum ? "yes" : "no");
+    if (p->family)
+        qd_buf_printf(b, "\n  family: not isolated, a %zu-parameter family of stationary paths "
+                         "(the end is a kinetic focus of the start); this is one of them",
+                      p->family);
 }
 
 static void write_text(const pt_out *r, qd_buf *b) {
@@ -155,6 +159,8 @@ static bool write_json(const pt_out *r, qd_buf *b) {
         qd_json_bool(&j, p->minimum);
         qd_json_key(&j, "examined");  /* false: foci and minimum not decided */
         qd_json_bool(&j, p->examined);
+        qd_json_key(&j, "family");    /* 0: isolated, else the family's dimension */
+        qd_json_number(&j, (double)p->family);
         qd_json_end_object(&j);
     }
     qd_json_end_array(&j);

@@ -877,7 +877,25 @@ static bool path_fill(shoot *p, const double *x, size_t ns, double res, qd_path 
                           &out->foci_mult, &out->nfoci, &out->legendre) != QD_OK)
         return false;
     out->minimum = out->legendre && out->nfoci == 0;
+    /* the end a focus of the start: a Jacobi field vanishes at both ends,
+     * so the path is not isolated to first order (the great circles
+     * between antipodes); its multiplicity is the family's dimension */
+    size_t last = out->nfoci - 1;
+    if (out->nfoci && !p->energy && fabs(out->foci[last] - (p->t0 + T)) <= 1e-6 * T)
+        out->family = out->foci_mult ? out->foci_mult[last] : 1;
     return true;
+}
+
+/* Is the converged x another member of a's family (the same action, the
+ * end a focus again)?  Then --all reports the family once. */
+static bool family_member(shoot *p, const qd_path *a, const double *x, size_t ns) {
+    if (!a->family)
+        return false;
+    qd_path b;
+    bool same = path_fill(p, x, ns, 0, &b) && b.family == a->family &&
+                fabs(b.action - a->action) <= 1e-8 * (1 + fabs(a->action));
+    path_clear(&b);
+    return same;
 }
 
 #define ALL_SEGMENTS 8  /* multiple shooting of the --all search at fixed energy */
@@ -999,6 +1017,32 @@ static void project_start(const search *sr, size_t n, double *v) {
             v[j] -= sr->A[a * n + j] * y[a];
 }
 
+/* A chord normal to the constraint surface (antipodal points on a sphere)
+ * projects to no velocity at all, a start that stays put: then the
+ * coordinate direction that the constraints admit best, at the chord's
+ * speed, so that a constrained path needs no --guess. */
+static void tangent_start(const search *sr, size_t n, double *v) {
+    double chord = 0, speed = norm2(n, v), best = 0, u[32], w[32];
+    const shoot *p = &sr->sh;
+    for (size_t j = 0; j < n; j++)
+        chord += (p->q1[j] - p->q0[j]) * (p->q1[j] - p->q0[j]);
+    chord = sqrt(chord) / (p->t1 - p->t0);
+    if (!sr->ncon || p->energy || !(speed < 1e-6 * chord))
+        return;
+    for (size_t i = 0; i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            w[j] = i == j;
+        project_start(sr, n, w);
+        double a = norm2(n, w);
+        if (a > best * (1 + 1e-9)) {
+            best = a;
+            memcpy(u, w, n * sizeof *u);
+        }
+    }
+    for (size_t j = 0; best > 0 && j < n; j++)
+        v[j] += chord * u[j] / best;
+}
+
 /* The multipliers' starts: lambda0 + lscale times these, cycled fastest
  * (a multiplier's scale is the problem's, and a wrong sign can make the
  * equations singular at the start: the catenary's w y - lambda = 0). */
@@ -1032,6 +1076,7 @@ static void make_start(search *sr, size_t i, double *x) {
         }
     }
     project_start(sr, n, v);
+    tangent_start(sr, n, v);
     if (p->energy) {  /* v scaled so that h = E, T from the chord at that speed */
         double lh0[2], lh1[2], z[32] = {0};
         lagr_h(p->s, p->t0, p->q0, z, lh0);
@@ -1064,6 +1109,26 @@ static void make_start(search *sr, size_t i, double *x) {
     }
 }
 
+/* On a constraint surface the chord between the ends leaves it (through
+ * the sphere's centre for antipodal points, where the constraint's row
+ * vanishes and no segment can start): each later segment starts instead
+ * where the motion from the previous one's start arrives, so the start is
+ * continuous and on the surface.  Kept as the chord from the first segment
+ * that cannot be followed. */
+static void follow_start(search *sr, double *x) {
+    shoot *p = &sr->sh;
+    size_t n = p->n, na = aug_size(p->s, false);
+    double tau = shoot_T(p, x) / (double)p->N;
+    for (size_t k = 1; k < p->N; k++) {
+        memset(p->y, 0, na * sizeof *p->y);
+        start_state(p, x, k - 1, p->y);
+        double ta = p->t0 + tau * (double)(k - 1);
+        if (!advance(p->s, p->y, ta, ta + tau, false, p->w))
+            return;
+        memcpy(x + shoot_off(p, k), p->y, 2 * n * sizeof *x);
+    }
+}
+
 /* No start converged: the smallest residual, and each isoperimetric
  * condition's own at that start (the one a user can act on). */
 static void no_path_error(qd_ctx *ctx, const sys *s, double best, double tol, const double *iso) {
@@ -1074,7 +1139,9 @@ static void no_path_error(qd_ctx *ctx, const sys *s, double best, double tol, co
                                 "%s integral of constraint %s minus its value: %.3g",
                                 i ? "," : ";", qd_model_isoperimetric_name(s->m, i), iso[i]);
     qd_ctx_error(ctx, QD_ERR_NUMERIC,
-                 "no path converged to the end point: smallest residual %.3g (tolerance %.3g)%s",
+                 "no path converged to the end point: smallest residual %.3g (tolerance %.3g)%s; "
+                 "to ask for more: starts spread around the chord's (--all), your own initial "
+                 "velocities (--guess) or more shooting segments (--segments)",
                  best, tol, more);
 }
 
@@ -1195,6 +1262,8 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         double res;
         make_start(&sr, i, sr.x);
         s.hmax = hmax0;
+        if (sr.ncon && !p->free1)
+            follow_start(&sr, sr.x);
         bool ok = shoot_newton(p, sr.x, tol, &res) && resolved(p, sr.x, sr.F, tol, &res);
         if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
             st = QD_ERR_NOMEM;
@@ -1211,7 +1280,8 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         bool dup = false;
         for (size_t k = 0; k < fd.count && !dup; k++)
             dup = same_path(p, &fd.paths[k], sr.x, T,
-                            fd.paths[k].t[fd.paths[k].nsamples - 1] - o->t0);
+                            fd.paths[k].t[fd.paths[k].nsamples - 1] - o->t0) ||
+                  family_member(p, &fd.paths[k], sr.x, o->nsamples ? o->nsamples : 101);
         if (dup)
             continue;
         if (fd.count == fd.cap) {

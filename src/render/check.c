@@ -92,6 +92,11 @@ static void dof(check *c, const qd_eom *e) {
                       "relation%s among the coordinates that none gives alone)\n",
                       d.relations - one_by_one, d.relations - one_by_one,
                       d.relations - one_by_one == 1 ? "" : "s");
+    for (size_t i = 0; i < e->nreduced; i++)
+        qd_buf_printf(c->out,
+                      "note: constraint %s is redundant (its row is a combination of the others' "
+                      "on the constraint manifold, consistently): left out by rank, its "
+                      "multiplier is not determined\n", e->reduced[i]);
     for (size_t i = 0; i < d.ncombined; i++) {
         qd_buf_puts(c->out, "  integral of a combination: ");
         put_expr(c, d.combined[i]);
@@ -362,6 +367,11 @@ static void json_constraints(check *c, qd_json *j, const qd_eom *e) {
         qd_json_bool(j, qd_has(con->expr, qd_time(c->ctx)));
         qd_json_end_object(j);
     }
+    qd_json_end_array(j);
+    qd_json_key(j, "reduced_by_rank"); /* redundant constraints left out */
+    qd_json_begin_array(j);
+    for (size_t k = 0; k < e->nreduced; k++)
+        qd_json_string(j, e->reduced[k]);
     qd_json_end_array(j);
 }
 

@@ -209,6 +209,10 @@ static qd_status write_text(const qd__eom_view *v, qd_buf *b) {
     text_header(v, b);
     if (v->e->nelim)
         st = text_eliminated(v, b);
+    for (size_t i = 0; i < v->e->nreduced; i++)
+        qd_buf_printf(b, "\nnote: constraint %s is redundant (a combination of the others on the "
+                         "constraint manifold): left out by rank, its multiplier is not "
+                         "determined\n", v->e->reduced[i]);
     if (v->split) {
         static const char *const parts[] = {"T2", "T1", "T0"};
         qd_buf_puts(b, "\nkinetic energy T = T2 + T1 + T0 (T2 quadratic in the velocities, "
@@ -482,6 +486,13 @@ static qd_status write_json(const qd__eom_view *v, qd_buf *b) {
         st = json_eliminated(v, &j, &tmp);
     if (st == QD_OK && v->e->ncon)
         st = json_constraints(v, &j, &tmp);
+    if (v->e->nreduced) { /* left out by rank (redundant) */
+        qd_json_key(&j, "reduced_by_rank");
+        qd_json_begin_array(&j);
+        for (size_t i = 0; i < v->e->nreduced; i++)
+            qd_json_string(&j, v->e->reduced[i]);
+        qd_json_end_array(&j);
+    }
     if (st == QD_OK && v->at && qd_model_nreactions(v->m))
         st = json_reactions(v, &j, &tmp);
     qd_json_end_object(&j);

@@ -178,6 +178,38 @@ static void test_constrained_same_as_angle(void **state) {
     sf_free(fa);
 }
 
+/* A free particle on a sphere of radius 1 (written as a constraint) from
+ * the north pole to the south pole in time pi: every great circle through
+ * the poles at speed 1 is a stationary path, S = m v^2 T/2 = pi/2 (the
+ * geodesics of the sphere; the antipode is conjugate to the pole, Gelfand
+ * and Fomin ch. 5): found with no --guess (the chord is normal to the
+ * sphere, through its centre) and reported as a 1-parameter family.  A
+ * quarter circle (to (1, 0, 0) in pi/2) is isolated, S = pi/4. */
+static void test_sphere_antipodes(void **state) {
+    (void)state;
+    sim_fix *f = sf_load("coordinates x, y, z\nparameters m = 1, R = 1\n"
+                         "T = m/2*(x'^2 + y'^2 + z'^2)\n"
+                         "constraint sphere: x^2 + y^2 + z^2 = R^2\n");
+    assert_non_null(f);
+    double q0[3] = {0, 0, 1}, q1[3] = {0, 0, -1}, pi = 3.14159265358979324;
+    qd_path_opts o = {.t0 = 0, .t1 = pi, .q0 = q0, .q1 = q1};
+    qd_path_set ps;
+    assert_int_equal(qd_path_find(f->ctx, f->m, f->e, &o, &ps), QD_OK);
+    assert_double_equal(ps.paths[0].action, pi / 2, 1e-8);
+    double v = sqrt(ps.paths[0].v0[0] * ps.paths[0].v0[0] + ps.paths[0].v0[1] * ps.paths[0].v0[1]);
+    assert_double_equal(v, 1, 1e-8);
+    assert_double_equal(ps.paths[0].v0[2], 0, 1e-8);
+    assert_int_equal(ps.paths[0].family, 1);
+    qd_path_set_free(&ps);
+    double q2[3] = {1, 0, 0};
+    qd_path_opts oq = {.t0 = 0, .t1 = pi / 2, .q0 = q0, .q1 = q2};
+    assert_int_equal(qd_path_find(f->ctx, f->m, f->e, &oq, &ps), QD_OK);
+    assert_double_equal(ps.paths[0].action, pi / 4, 1e-8);
+    assert_int_equal(ps.paths[0].family, 0);
+    qd_path_set_free(&ps);
+    sf_free(f);
+}
+
 static void test_unreachable(void **state) {
     (void)state;
     sim_fix *f = sf_load("coordinates x, y\nparameters m = 0.6, l = 1.4, g = 9.81\n"
@@ -211,6 +243,7 @@ int main(void) {
         cmocka_unit_test(test_pendulum_several),
         cmocka_unit_test(test_projectile_energy),
         cmocka_unit_test(test_constrained_same_as_angle),
+        cmocka_unit_test(test_sphere_antipodes),
         cmocka_unit_test(test_unreachable),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
