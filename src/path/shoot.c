@@ -762,6 +762,7 @@ static bool ends_on_constraints(sys *s, const qd_path_opts *o, double t1, bool e
 typedef struct found {
     size_t count, cap;
     qd_path *paths;
+    double *xs; /* cap x nx: the converged unknowns of each path kept */
 } found;
 
 /* Has e a nonholonomic constraint (foci.c refuses those)? */
@@ -805,6 +806,36 @@ static bool same_path(const shoot *p, const qd_path *a, const double *x, double 
         if (!near(a->mult[i], x[p->off_lam + i]))
             return false;
     return near(Ta, T);
+}
+
+/* x and xk, two converged starts near each other, one double root?  Where
+ * two stationary paths merge (the end on the envelope of the paths of one
+ * energy) the shooting map is singular, and Newton stops anywhere in a thin
+ * curved valley about the root: two starts may differ by ~1e-5 while each
+ * converged.  Their midpoint lies off the valley by its curvature, and
+ * Newton brings it back to the floor by a step much shorter than their
+ * distance; between two distinct roots there is no floor at the midpoint,
+ * and Newton has to walk about half the distance to one of them. */
+static bool same_root(shoot *p, const double *x, const double *xk, double tol) {
+    size_t nx = p->nx;
+    double d = 0, scale = 0;
+    for (size_t i = 0; i < nx; i++) {
+        d = fmax(d, fabs(x[i] - xk[i]));
+        scale = fmax(scale, fabs(xk[i]));
+    }
+    if (!(d <= 1e-3 * (1 + scale)))
+        return false;
+    double *mid = qd__malloc(p->s->ctx, 2 * nx * sizeof *mid), res;
+    if (!mid)
+        return false;
+    for (size_t i = 0; i < nx; i++)
+        mid[i] = mid[nx + i] = (x[i] + xk[i]) / 2;
+    bool same = shoot_newton(p, mid, tol, &res);
+    for (size_t i = 0; same && i < nx; i++)
+        same = fabs(mid[i] - mid[nx + i]) <= 0.1 * d;
+    qd__free(mid);
+    qd__ctx_recover(p->s->ctx); /* a failed polish is a "no", not an error */
+    return same;
 }
 
 /* Samples and action of a converged x, segment by segment. */
@@ -1182,7 +1213,7 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     memset(&sr, 0, sizeof sr);
     shoot *p = &sr.sh;
     size_t n = e->n;
-    found fd = {0, 0, NULL};
+    found fd = {0, 0, NULL, NULL};
     double best = INFINITY, tol = o->tol > 0 ? o->tol : 1e-10, best_iso[PATH_MAXMULT] = {0};
     if (st != QD_OK)
         goto done;
@@ -1281,19 +1312,24 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         for (size_t k = 0; k < fd.count && !dup; k++)
             dup = same_path(p, &fd.paths[k], sr.x, T,
                             fd.paths[k].t[fd.paths[k].nsamples - 1] - o->t0) ||
-                  family_member(p, &fd.paths[k], sr.x, o->nsamples ? o->nsamples : 101);
+                  family_member(p, &fd.paths[k], sr.x, o->nsamples ? o->nsamples : 101) ||
+                  same_root(p, sr.x, fd.xs + k * p->nx, tol);
         if (dup)
             continue;
         if (fd.count == fd.cap) {
             size_t cap = fd.cap ? 2 * fd.cap : 4;
             qd_path *np = qd__realloc(ctx, fd.paths, cap * sizeof *np);
-            if (!np) {
+            if (np)
+                fd.paths = np;
+            double *nxs = np ? qd__realloc(ctx, fd.xs, cap * p->nx * sizeof *nxs) : NULL;
+            if (!nxs) {
                 st = QD_ERR_NOMEM;
                 goto done;
             }
-            fd.paths = np;
+            fd.xs = nxs;
             fd.cap = cap;
         }
+        memcpy(fd.xs + fd.count * p->nx, sr.x, p->nx * sizeof *sr.x);
         if (!path_fill(p, sr.x, o->nsamples ? o->nsamples : 101, res, &fd.paths[fd.count])) {
             path_clear(&fd.paths[fd.count]);
             st = qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NUMERIC;
@@ -1323,6 +1359,7 @@ done:
     for (size_t k = 0; k < fd.count; k++)
         path_clear(&fd.paths[k]);
     qd__free(fd.paths);
+    qd__free(fd.xs);
     qd__free(sr.x);
     qd__free(sr.F);
     qd__free(p->w);

@@ -149,6 +149,42 @@ static void test_projectile_energy(void **state) {
     sf_free(f);
 }
 
+/* An end on the envelope of the paths of one energy (the parabola of safety,
+ * y = v^2/(2g) - g x^2/(2 v^2); seed-goldstein-britannica.md B19): the high
+ * and the low lob merge into one path, launched at tan(theta) = v^2/(g X).
+ * Newton stops within sqrt(tol) of such a double root anywhere, and --all
+ * listed the one path eight times. */
+static void test_projectile_envelope(void **state) {
+    (void)state;
+    sim_fix *f = sf_load(projectile);
+    assert_non_null(f);
+    double m = 2, g = 9.81, v = 12, E = m * v * v / 2, X = 8;
+    double Y = v * v / (2 * g) - g * X * X / (2 * v * v);
+    double q0[2] = {0, 0}, q1[2] = {X, Y};
+    qd_path_opts o = {.t0 = 0, .q0 = q0, .q1 = q1, .all = true};
+    qd_path_set ps;
+    assert_int_equal(qd_path_find_energy(f->ctx, f->m, f->e, E, &o, &ps), QD_OK);
+    assert_int_equal(ps.count, 1);
+    double ang = atan2(ps.paths[0].v0[1], ps.paths[0].v0[0]);
+    assert_double_equal(ang, atan(v * v / (g * X)), 1e-4); /* a double root: sqrt(tol) */
+    qd_path_set_free(&ps);
+    /* 1e-6 inside the envelope the two lobs are distinct (launch angles
+     * theta = atan((v^2 -+ disc)/(g X)) about 3e-4 apart) and both are kept */
+    q1[1] = Y - 1e-6;
+    assert_int_equal(qd_path_find_energy(f->ctx, f->m, f->e, E, &o, &ps), QD_OK);
+    assert_int_equal(ps.count, 2);
+    double disc = sqrt(v * v * v * v - g * (g * X * X + 2 * q1[1] * v * v));
+    for (size_t i = 0; i < 2; i++) {
+        double a = atan2(ps.paths[i].v0[1], ps.paths[i].v0[0]);
+        double lo = atan((v * v - disc) / (g * X)), hi = atan((v * v + disc) / (g * X));
+        assert_true(fabs(a - lo) < 1e-6 || fabs(a - hi) < 1e-6);
+    }
+    assert_true(fabs(atan2(ps.paths[0].v0[1], ps.paths[0].v0[0]) -
+                     atan2(ps.paths[1].v0[1], ps.paths[1].v0[0])) > 1e-4);
+    qd_path_set_free(&ps);
+    sf_free(f);
+}
+
 /* The action does not depend on the coordinates: the pendulum written with
  * a rod constraint in (x, y) and with its angle give the same path, x'(0) =
  * l th'(0), and the same S (Desloge ch. 82). */
@@ -242,6 +278,7 @@ int main(void) {
         cmocka_unit_test(test_oscillator),
         cmocka_unit_test(test_pendulum_several),
         cmocka_unit_test(test_projectile_energy),
+        cmocka_unit_test(test_projectile_envelope),
         cmocka_unit_test(test_constrained_same_as_angle),
         cmocka_unit_test(test_sphere_antipodes),
         cmocka_unit_test(test_unreachable),
