@@ -9,9 +9,10 @@
 
 /* The C of e's equations.  embed: one self-contained file (the header's
  * declarations inlined, no #include "prefix.h"), as native loading compiles
- * it; otherwise c includes "<prefix>.h" and h (not NULL) receives it. */
+ * it; otherwise c includes "<prefix>.h" and h (not NULL) receives it.
+ * jacobian false leaves <prefix>_jacobian out (declared, not defined). */
 qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
-                      bool embed, qd_buf *c, qd_buf *h);
+                      bool embed, bool jacobian, qd_buf *c, qd_buf *h);
 
 /* The generated file's dense solvers (LU with partial pivoting, Cholesky
  * with an LU fallback), for nk unknowns; appended to out. */
@@ -45,10 +46,12 @@ typedef struct cg_form {
     const qd_expr *h;           /* NAME_energy; NULL: it returns NAN */
     bool h_decl_late;           /* qd_h declared after the (void)s (the speeds' text) */
     bool cholesky;              /* K symmetric: Cholesky with an LU fallback */
+    bool no_jacobian;           /* leave NAME_jacobian out (a run's object: half the
+                                   text and most of the compiler's time) */
 } cg_form;
 
 /* The solvers, then NAME_kinematics (when kin), _mass, _forcing, _rhs,
- * _energy and _jacobian, appended to f->c.  QD_ERR_ARG / QD_ERR_UNBOUND as
+ * _energy and _jacobian (unless no_jacobian), appended to f->c.  QD_ERR_ARG / QD_ERR_UNBOUND as
  * qd__cg_block. */
 qd_status qd__cg_system(const cg_form *f);
 

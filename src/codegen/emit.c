@@ -27,6 +27,7 @@ typedef struct gen {
     const qd_expr **all;
     size_t nall;
     const qd_expr **Kr, **z; /* K then r (nk*nk + nk); z = (q'', lambda) */
+    bool jacobian;           /* emit P_jacobian */
 } gen;
 
 /* ---- the expressions ---------------------------------------------------------- */
@@ -237,11 +238,11 @@ static cg_form form(const gen *g, qd_buf *c) {
     return (cg_form){.ctx = g->ctx, .m = g->m, .P = g->P, .c = c, .n = g->n, .nv = g->n,
                      .nk = g->nk, .np = g->np, .q = e->q, .v = e->qd, .z = g->z,
                      .vname = "qd_qd", .M = g->M, .f = g->f, .Kr = g->Kr, .R = g->R,
-                     .h = g->h, .cholesky = g->nc == 0};
+                     .h = g->h, .cholesky = g->nc == 0, .no_jacobian = !g->jacobian};
 }
 
 qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *prefix,
-                      bool embed, qd_buf *c, qd_buf *h) {
+                      bool embed, bool jacobian, qd_buf *c, qd_buf *h) {
     if (!ctx || !m || !e || !c || (!embed && !h))
         return QD_ERR_ARG;
     prefix = prefix ? prefix : "qdot_model";
@@ -252,7 +253,7 @@ qd_status qd__cg_emit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const cha
         return QD_ERR_ARG;
     }
     gen g = {.ctx = ctx, .m = m, .e = e, .P = prefix, .n = e->n,
-             .np = qd_model_nparams(m), .nc = e->ncon};
+             .np = qd_model_nparams(m), .nc = e->ncon, .jacobian = jacobian};
     g.nk = g.n + g.nc;
     qd_status st = build(&g);
     if (st == QD_OK)
@@ -283,7 +284,7 @@ qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const ch
                        qd_buf *c_text, qd_buf *h_text) {
     QD_ARGS_CTX(ctx, ctx && m && e && prefix && c_text);
     qd_buf scratch = QD_BUF_WITH(qd__ctx_allocator(ctx));
-    qd_status st = qd__cg_emit(ctx, m, e, prefix, false, c_text, h_text ? h_text : &scratch);
+    qd_status st = qd__cg_emit(ctx, m, e, prefix, false, true, c_text, h_text ? h_text : &scratch);
     qd_buf_free(&scratch);
     return st;
 }

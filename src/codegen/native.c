@@ -240,13 +240,14 @@ static void *sym(void *h, const char *name) {
         memcpy(&(dst), &p_, sizeof p_);                                                        \
     } while (0)
 
-static qd_status bind(qd_ctx *ctx, qd_native *out) {
+static qd_status bind(qd_ctx *ctx, qd_native *out, bool jacobian) {
     bool ok = true;
     FN(out->rhs, out->handle, "rhs");
     FN(out->mass, out->handle, "mass");
     FN(out->forcing, out->handle, "forcing");
     FN(out->energy, out->handle, "energy");
-    FN(out->jacobian, out->handle, "jacobian");
+    if (jacobian)
+        FN(out->jacobian, out->handle, "jacobian");
     out->par_default = sym(out->handle, "par_default");
     if (ok && out->par_default)
         return QD_OK;
@@ -423,22 +424,21 @@ qd_status qd__cg_native_object(qd_ctx *ctx, const char *text, const char *genera
     return QD_OK;
 }
 
-qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache,
-                         qd_native *out) {
-    QD_ARGS_CTX(ctx, ctx && m && e && out);
+static qd_status load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache,
+                      bool jacobian, qd_native *out) {
     if (!out)
         return QD_ERR_ARG;
     memset(out, 0, sizeof *out);
     if (!ctx || !m || !e)
         return QD_ERR_ARG;
     qd_buf text = QD_BUF_WITH(qd__ctx_allocator(ctx));
-    qd_status st = qd__cg_emit(ctx, m, e, PREFIX, true, &text, NULL);
+    qd_status st = qd__cg_emit(ctx, m, e, PREFIX, true, jacobian, &text, NULL);
     if (st == QD_OK)
         st = qd__cg_native_object(ctx, qd_buf_str(&text), GENERATOR, cache, out->path,
                                &out->cached, &out->handle);
     qd_buf_free(&text);
     if (st == QD_OK)
-        st = bind(ctx, out);
+        st = bind(ctx, out, jacobian);
     if (st != QD_OK) {
         qd_native_unload(out);
         return st;
@@ -446,6 +446,18 @@ qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const 
     out->n = e->n;
     out->npar = qd_model_nparams(m);
     return QD_OK;
+}
+
+qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache,
+                         qd_native *out) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
+    return load(ctx, m, e, cache, true, out);
+}
+
+qd_status qd_native_load_run(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache,
+                             qd_native *out) {
+    QD_ARGS_CTX(ctx, ctx && m && e && out);
+    return load(ctx, m, e, cache, false, out);
 }
 
 void qd_native_unload(qd_native *nat) {

@@ -202,7 +202,7 @@ qd_status qd__cg_system(const cg_form *f) {
         st = fn_rhs(f);
     if (st == QD_OK)
         st = fn_energy(f);
-    if (st == QD_OK)
+    if (st == QD_OK && !f->no_jacobian)
         st = fn_jacobian(f);
     return st;
 }

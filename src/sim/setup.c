@@ -630,7 +630,7 @@ qd_status qd_sim_setup_native(qd_sim_setup *s, const qd_sim_opts *opts, char *no
     qd_native *nat = calloc(1, sizeof *nat);
     if (!nat)
         return nomem(s->ctx), QD_ERR_NOMEM;
-    if (qd_native_load(s->ctx, s->m, s->e, NULL, nat) != QD_OK) {
+    if (qd_native_load_run(s->ctx, s->m, s->e, NULL, nat) != QD_OK) {
         say(note, cap, "native unavailable (%s); using the compiled programs",
             qd_ctx_message(s->ctx));
         qd_ctx_clear_error(s->ctx);

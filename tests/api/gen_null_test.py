@@ -90,6 +90,7 @@ NULLABLE = {
     'qd_metric_force': {'up', 'phys', 'ord'},
     'qd_modes_scan': {'opts'},
     'qd_native_load': {'cache_dir'},
+    'qd_native_load_run': {'cache_dir'},
     'qd_orbit_derive': {'ign'},
     'qd_orbit_solve': {'energy'},
     'qd_path_foci': {'legendre'},

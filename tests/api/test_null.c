@@ -616,6 +616,19 @@ static void null_codegen(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_native_load(F.ctx, F.model, F.eom, "q", NULL));
     reset(&F);
+    /* ---- qd_native_load_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load_run(NULL, F.model, F.eom, "q", (qd_native *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load_run(F.ctx, NULL, F.eom, "q", (qd_native *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load_run(F.ctx, F.model, NULL, "q", (qd_native *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_native_load_run(F.ctx, F.model, F.eom, "q", NULL));
+    reset(&F);
     /* ---- qd_native_unload */
     /* nat NULL */
     qd_native_unload(NULL);

@@ -270,6 +270,20 @@ static void test_five_links(void **state) {
         check_jacobian(&nat, &p);
         check_energy_TV(s, &nat, &p);
     }
+    /* A run's object (qd_native_load_run): no P_jacobian, a file of its own,
+     * and the same q'' to the bit, since P_rhs is the same text */
+    qd_native run;
+    assert_int_equal(qd_native_load_run(s->ctx, s->model, s->eom, cache, &run), QD_OK);
+    assert_null(run.jacobian);
+    assert_string_not_equal(run.path, nat.path);
+    for (int k = 0; k < NSTATES; k++) {
+        point p;
+        random_point(s, &nat, &p);
+        double a[10], r[10];
+        assert_int_equal(nat.rhs(p.t, p.y, p.par, a), run.rhs(p.t, p.y, p.par, r));
+        assert_memory_equal(a, r, sizeof a);
+    }
+    qd_native_unload(&run);
     qd_native_unload(&nat);
     qd_buf_free(&b);
     qd_buf_free(&c);
