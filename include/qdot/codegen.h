@@ -114,7 +114,7 @@ QD_API qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                          qd_native *out);
 /* The same for a run, which needs only P_rhs: the object is made without
  * P_jacobian (out->jacobian NULL), about half the text and a fifth of the
- * compiler's time for a large model (20 links: 5.4 s of gcc -O2 to 0.9 s),
+ * compiler's time for a large model (20 links: 5.4 s of gcc -O2 to 1.5 s),
  * and cached under its own name. */
 QD_API qd_status qd_native_load_run(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                     const char *cache_dir, qd_native *out);
