@@ -41,12 +41,10 @@ static const char *const formats[] = {"text", "json", "latex", NULL};
 static const cli_opt opts[] = {
     {"--at", NULL, CLI_TEXT, offsetof(imp_args, at), "\"q=V, q'=V, t=V\"",
      "the state just before (over the model's initial; others 0)", NULL, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(imp_args, sets), "NAME=VALUE",
-     "give a parameter another value", NULL, NULL},
+    CLI_OPT_SET(imp_args, sets),
     {"--prescribe", NULL, CLI_LIST, offsetof(imp_args, pres), "\"[NAME:] LHS = RHS, ...\"",
      "velocities to hold just after (Thomson's problem)", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(imp_args, format), "F", "output format", formats,
-     NULL},
+    CLI_OPT_FORMATS(imp_args, format, formats),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

@@ -21,16 +21,14 @@ typedef struct int_args {
 } int_args;
 
 static const cli_opt opts[] = {
-    {"--format", NULL, CLI_CHOICE, offsetof(int_args, format), "FORMAT", "how to write it",
-     cli_formats_text_json, NULL},
+    CLI_OPT_FORMAT(int_args, format),
     {"--symmetry", NULL, CLI_LIST, offsetof(int_args, symmetry), "\"[NAME:] x -> x + eps, ...\"",
      "a symmetry to examine, as the model's `symmetry` statement takes it", NULL, NULL},
     {"--integral", NULL, CLI_LIST, offsetof(int_args, integral), "\"[NAME:] EXPR\"",
      "a proposed integral to check, as the `integral` statement takes it", NULL, NULL},
     {"--no-search", NULL, CLI_FLAG, offsetof(int_args, no_search), NULL,
      "do not look for symmetries by the coordinates' names", NULL, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(int_args, set), "NAME=VALUE",
-     "read the model with this parameter value", NULL, NULL},
+    CLI_OPT_SET(int_args, set),
     {0},
 };
 

@@ -33,8 +33,7 @@ static const cli_opt opts[] = {
      "the time between renormalizations (1)", NULL, NULL},
     {"--transient", NULL, CLI_TEXT, offsetof(ly_args, transient_text), "T0",
      "the time run before the averaging starts (0)", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(ly_args, format), "F", "how the result is printed",
-     cli_formats_text_json, NULL},
+    CLI_OPT_FORMAT(ly_args, format),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 

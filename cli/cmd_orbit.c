@@ -32,7 +32,7 @@ static const cli_opt opts[] = {
      "the energy instead of the state's (an expression in the parameters)", NULL, NULL},
     {"--orbit", NULL, CLI_FLAG, A(equation), NULL,
      "also the orbit equation: the conic, else the quadrature", NULL, NULL},
-    {"--set", NULL, CLI_LIST, A(sets), "NAME=VALUE", "a parameter's value", NULL, NULL},
+    CLI_OPT_SET(orbit_args, sets),
     CLI_OPT_FORMAT(orbit_args, format),
     CLI_OPT_OUT(orbit_args, out),
     {0},

@@ -35,10 +35,8 @@ static const cli_opt opts[] = {
      NULL, NULL},
     {"--segments", NULL, CLI_COUNT, offsetof(path_args, segments), "N",
      "multiple-shooting segments (default: chosen)", NULL, NULL},
-    {"--format", NULL, CLI_CHOICE, offsetof(path_args, format), "FORMAT", "how to write it",
-     cli_formats_text_json, NULL},
-    {"--set", NULL, CLI_LIST, offsetof(path_args, set), "NAME=VALUE",
-     "read the model with this parameter value", NULL, NULL},
+    CLI_OPT_FORMAT(path_args, format),
+    CLI_OPT_SET(path_args, set),
     {0},
 };
 
