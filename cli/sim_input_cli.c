@@ -4,49 +4,11 @@
  * "t,value", linear interpolation, the run's span covered).
  */
 #include "cli.h"
-#include "out.h"
+#include "model_file.h"
 #include "sim_cli.h"
 
-#include <errno.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* The whole of path into *text (*len bytes); an exit status. */
-static int read_file(const char *path, char **text, size_t *len) {
-    int rc = QD_EXIT_OK;
-    FILE *f = cli_in_open(path, &rc);
-    if (!f)
-        return rc;
-    size_t cap = 4096, n = 0;
-    char *s = malloc(cap);
-    errno = 0;
-    while (s) {
-        n += fread(s + n, 1, cap - n, f);
-        if (n < cap)
-            break;
-        char *g = realloc(s, 2 * cap);
-        if (!g)
-            free(s);
-        s = g;
-        cap *= 2;
-    }
-    if (!s) {
-        cli_diag_error("out of memory");
-        rc = QD_EXIT_FAIL;
-    } else if (ferror(f)) {
-        cli_diag_error("cannot read %s: %s", path, strerror(errno ? errno : EIO));
-        rc = QD_EXIT_USAGE;
-    }
-    fclose(f);
-    if (rc != QD_EXIT_OK) {
-        free(s);
-        return rc;
-    }
-    *text = s;
-    *len = n;
-    return rc;
-}
 
 int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len) {
     char *file = malloc(len + 1), *text = NULL;
@@ -57,7 +19,7 @@ int cli_sim_input_csv(cli_sim *c, const char *name, const char *path, size_t len
     }
     memcpy(file, path, len);
     file[len] = '\0';
-    int rc = read_file(file, &text, &n);
+    int rc = cli_read_text(file, "an input table", &text, &n);
     if (rc == QD_EXIT_OK && qd_sim_input_table_read(c->s, name, text, n, &bad) != QD_OK) {
         if (bad)
             cli_diag_error("--input: %s:%zu: expected \"t,value\"", file, bad);
