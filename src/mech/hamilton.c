@@ -9,6 +9,7 @@
  */
 #include "qdot/hamilton.h"
 #include "legendre.h"
+#include "mech.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -98,6 +99,7 @@ static qd_status nonquadratic(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const cha
 typedef struct quad {
     const qd_expr **M;
     const qd_expr *L0;
+    const qd_expr **num, **den; /* q'_j = num_j / den_j (legendre.h, qd__quad_inv) */
 } quad;
 
 static const qd_expr *at_rest(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
@@ -118,7 +120,11 @@ static const qd_expr *at_rest(qd_ctx *ctx, const qd_eom *e, const qd_expr *x) {
 static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char *stmt, quad *qf) {
     size_t n = e->n;
     const qd_expr **A = arr(ctx, n * (n + 1)), **r = arr(ctx, n);
-    qf->M = arr(ctx, n * n);
+    qf->M = arr(ctx, n * n + 2 * n);
+    if (qf->M) {
+        qf->num = qf->M + n * n;
+        qf->den = qf->num + n;
+    }
     if (!A || !r || !qf->M) {
         qd__free(A);
         qd__free(r);
@@ -135,7 +141,8 @@ static qd_status velocities(qd_ctx *ctx, const qd_eom *e, qd_ham *h, const char 
     qd__free(A);
     const qd_expr *half = NULL;
     if (st == QD_OK)
-        st = qd__mech_quad_inverse(ctx, n, qf->M, r, h->vel, &half);
+        st = qd__mech_quad_inverse(ctx, n, qf->M, r, &(qd__quad_inv){h->vel, qf->num, qf->den},
+                                   &half);
     qd__free(r);
     if (st == QD_ERR_NONLINEAR) {
         qd__free(qf->M);
@@ -164,8 +171,44 @@ static qd_status hamiltonian(qd_ctx *ctx, const qd_eom *e, qd_ham *h) {
     return h->H ? QD_OK : qd_ctx_status(ctx);
 }
 
+/* -dH/dq_j = dL/dq_j at q' = q'(q, p) for any Legendre transform (Goldstein
+ * sec. 8.1), and for a quadratic L that is one quotient: with the blocks'
+ * determinants D = prod d_k and q'_i = Y_i / D (Y_i = num_i D / d_i),
+ * dL/dq_j = g2 + g1 + g0 by degree in q' gives
+ * (g2(Y) + D g1(Y)) / D^2 + g0.  Its numerator is a polynomial, simplified
+ * without a quotient to cancel: simplifying -dH/dq as it comes sums
+ * quotients over D^2 term by term, a multivariate gcd for each (the
+ * 4-link pendulum: 30 s for one equation). */
+static const qd_expr *dp_quadratic(qd_ctx *ctx, const qd_eom *e, const quad *qf, size_t j,
+                                   const qd_expr *extra) {
+    size_t n = e->n;
+    const qd_expr *D = qd_int(ctx, 1), **Y = arr(ctx, n);
+    if (!Y)
+        return NULL;
+    for (size_t i = 0; i < n; i++) {
+        size_t k = 0;
+        while (k < i && qf->den[k] != qf->den[i])
+            k++;
+        if (k == i) /* a block's determinant, counted once */
+            D = qd_mul(ctx, D, qf->den[i]);
+    }
+    for (size_t i = 0; i < n; i++)
+        Y[i] = qd_mul(ctx, qf->num[i], qd_div(ctx, D, qf->den[i]));
+    qd__vsum v;
+    const qd_expr *g = qd_diff(ctx, e->L, e->q[j]), *r = NULL;
+    if (g && qd__mech_by_velocity(ctx, g, n, e->qd, &v) == QD_OK && v.top <= 2) {
+        const qd_expr *N = qd_add(ctx, qd_subs(ctx, v.deg[2], n, e->qd, Y),
+                                  qd_mul(ctx, D, qd_subs(ctx, v.deg[1], n, e->qd, Y)));
+        r = qd_add(ctx, qd_div(ctx, qd_simplify(ctx, N), qd_powi(ctx, D, 2)),
+                   qd_simplify(ctx, qd_add(ctx, v.deg[0], extra)));
+    }
+    qd__free(Y);
+    return r;
+}
+
 /* For a quadratic L, dH/dp = M^-1 (p - b) is the velocity solved above
- * (M symmetric, b and L0 free of p), so dq is vel itself. */
+ * (M symmetric, b and L0 free of p), so dq is vel itself; dp as
+ * dp_quadratic has it. */
 static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h,
                            const quad *qf) {
     const qd_expr *D = qd_model_dissipation(m);
@@ -177,8 +220,9 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_h
         h->conserved = h->conserved && (!Q || qd_is_zero(Q));
         h->extra[j] = in_qp(ctx, e, h, x);
         h->dq[j] = qf->M ? h->vel[j] : qd_simplify(ctx, qd_diff(ctx, h->H, h->p[j]));
-        h->dp[j] = qd_simplify(ctx, qd_add(ctx, qd_neg(ctx, qd_diff(ctx, h->H, e->q[j])),
-                                           h->extra[j]));
+        h->dp[j] = qf->M ? dp_quadratic(ctx, e, qf, j, h->extra[j])
+                         : qd_simplify(ctx, qd_add(ctx, qd_neg(ctx, qd_diff(ctx, h->H, e->q[j])),
+                                                   h->extra[j]));
         if (!h->extra[j] || !h->dq[j] || !h->dp[j])
             return qd_ctx_status(ctx);
     }
@@ -223,7 +267,7 @@ static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
 }
 
 static qd_status derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
-    quad qf = {NULL, NULL};
+    quad qf = {NULL, NULL, NULL, NULL};
     qd_status st = momenta(ctx, m, e, h);
     if (st == QD_OK)
         st = velocities(ctx, e, h, qd_model_lagrangian_given(m) ? "L" : "T", &qf);

@@ -70,6 +70,7 @@ static qd_status adjugate(qd_ctx *ctx, size_t k, const qd_expr *const *B, const 
  * r^T adj r / (2 det), each simplified once. */
 static qd_status block_cofactors(qd_ctx *ctx, size_t k, const qd_expr *const *B,
                                  const qd_expr *const *r, const qd_expr **x, const qd_expr **half,
+                                 const qd_expr **num, const qd_expr **den,
                                  const qd_expr **scratch) {
     const qd_expr **adj = scratch, **work = scratch + k * k, *det = NULL;
     qd_status st = adjugate(ctx, k, B, adj, &det, work);
@@ -80,6 +81,8 @@ static qd_status block_cofactors(qd_ctx *ctx, size_t k, const qd_expr *const *B,
         const qd_expr *s = qd_int(ctx, 0);
         for (size_t j = 0; j < k; j++)
             s = qd_add(ctx, s, qd_mul(ctx, adj[i * k + j], r[j]));
+        num[i] = s;
+        den[i] = det;
         x[i] = qd_simplify(ctx, qd_div(ctx, s, det));
         form = qd_add(ctx, form, qd_mul(ctx, r[i], s));
         if (!x[i])
@@ -92,6 +95,7 @@ static qd_status block_cofactors(qd_ctx *ctx, size_t k, const qd_expr *const *B,
 /* One block by elimination (too large for cofactors): x, and r . x / 2. */
 static qd_status block_gauss(qd_ctx *ctx, size_t k, const qd_expr *const *B,
                              const qd_expr *const *r, const qd_expr **x, const qd_expr **half,
+                             const qd_expr **num, const qd_expr **den,
                              const qd_expr **scratch) {
     const qd_expr **A = scratch;
     for (size_t i = 0; i < k; i++) {
@@ -104,17 +108,21 @@ static qd_status block_gauss(qd_ctx *ctx, size_t k, const qd_expr *const *B,
     if (st != QD_OK)
         return st;
     const qd_expr *form = qd_int(ctx, 0);
-    for (size_t i = 0; i < k; i++)
+    for (size_t i = 0; i < k; i++) {
         form = qd_add(ctx, form, qd_mul(ctx, r[i], x[i]));
+        num[i] = x[i];
+        den[i] = qd_int(ctx, 1);
+    }
     *half = qd_simplify(ctx, qd_div(ctx, form, qd_int(ctx, 2)));
     return *half ? QD_OK : qd_ctx_status(ctx);
 }
 
 /* The block of M on the indices idx[0..k): its part of x and of the form. */
 static qd_status block(qd_ctx *ctx, size_t n, const qd_expr *const *M, const qd_expr *const *r,
-                       const size_t *idx, size_t k, const qd_expr **x, const qd_expr **half,
+                       const size_t *idx, size_t k, qd__quad_inv *out, const qd_expr **half,
                        const qd_expr **buf) {
-    const qd_expr **B = buf, **rb = buf + k * k, **xb = rb + k, **scratch = xb + k;
+    const qd_expr **B = buf, **rb = buf + k * k, **xb = rb + k, **nb = xb + k, **db = nb + k,
+                  **scratch = db + k;
     for (size_t i = 0; i < k; i++) {
         rb[i] = r[idx[i]];
         for (size_t j = 0; j < k; j++) {
@@ -122,19 +130,22 @@ static qd_status block(qd_ctx *ctx, size_t n, const qd_expr *const *M, const qd_
             B[i * k + j] = M[a * n + c];
         }
     }
-    qd_status st = k <= COFACTOR_MAX ? block_cofactors(ctx, k, B, rb, xb, half, scratch)
-                                     : block_gauss(ctx, k, B, rb, xb, half, scratch);
-    for (size_t i = 0; st == QD_OK && i < k; i++)
-        x[idx[i]] = xb[i];
+    qd_status st = k <= COFACTOR_MAX ? block_cofactors(ctx, k, B, rb, xb, half, nb, db, scratch)
+                                     : block_gauss(ctx, k, B, rb, xb, half, nb, db, scratch);
+    for (size_t i = 0; st == QD_OK && i < k; i++) {
+        out->x[idx[i]] = xb[i];
+        out->num[idx[i]] = nb[i];
+        out->den[idx[i]] = db[i];
+    }
     return st;
 }
 
 qd_status qd__mech_quad_inverse(qd_ctx *ctx, size_t n, const qd_expr **M, const qd_expr *const *r,
-                                const qd_expr **x, const qd_expr **half) {
+                                qd__quad_inv *out, const qd_expr **half) {
     size_t *up = qd__malloc(ctx, (2 * n + 1) * sizeof *up), *idx = up ? up + n : NULL;
-    /* B, r, x of a block, and the adjugate and a minor (cofactors) or the
-     * augmented system (elimination): at most 3 k^2 + 3 k entries */
-    const qd_expr **buf = qd__calloc(ctx, 3 * n * n + 3 * n + 1, sizeof *buf);
+    /* B, r, x, num, den of a block, and the adjugate and a minor (cofactors)
+     * or the augmented system (elimination): at most 3 k^2 + 5 k entries */
+    const qd_expr **buf = qd__calloc(ctx, 3 * n * n + 5 * n + 1, sizeof *buf);
     qd_status st = up && buf ? QD_OK : QD_ERR_NOMEM;
     for (size_t i = 0; st == QD_OK && i < n; i++)
         up[i] = i;
@@ -154,7 +165,7 @@ qd_status qd__mech_quad_inverse(qd_ctx *ctx, size_t n, const qd_expr **M, const 
             if (root(up, i) == b)
                 idx[k++] = i;
         const qd_expr *hb = NULL;
-        st = block(ctx, n, M, r, idx, k, x, &hb, buf);
+        st = block(ctx, n, M, r, idx, k, out, &hb, buf);
         if (st == QD_OK)
             *half = qd_add(ctx, *half, hb);
     }
