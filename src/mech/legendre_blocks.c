@@ -10,8 +10,9 @@
  * block, by cofactors, gives M^-1 = adj M / det M (Cramer's rule) in a form
  * that one simplification of each entry and of each block's quadratic form
  * keeps textbook-sized: the free body in Euler angles gets det M = A B C
- * sin(theta)^2 straight away.  Blocks larger than COFACTOR_MAX (the k^2
- * minors grow fast) are solved by elimination as before.
+ * sin(theta)^2 straight away, and a dense 5 x 5 block of masses that
+ * elimination took past the expansion limit stays small.  Blocks larger
+ * than COFACTOR_MAX (k^2 minors of order k - 1) are solved by elimination.
  */
 #include "legendre.h"
 #include "mech.h"
@@ -19,7 +20,7 @@
 
 #include <stdlib.h>
 
-enum { COFACTOR_MAX = 4 };
+enum { COFACTOR_MAX = 8 };
 
 /* Union-find root of i (the blocks are the components of M's nonzero
  * off-diagonal pattern). */
