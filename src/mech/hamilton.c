@@ -220,9 +220,10 @@ static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_h
         h->conserved = h->conserved && (!Q || qd_is_zero(Q));
         h->extra[j] = in_qp(ctx, e, h, x);
         h->dq[j] = qf->M ? h->vel[j] : qd_simplify(ctx, qd_diff(ctx, h->H, h->p[j]));
-        h->dp[j] = qf->M ? dp_quadratic(ctx, e, qf, j, h->extra[j])
-                         : qd_simplify(ctx, qd_add(ctx, qd_neg(ctx, qd_diff(ctx, h->H, e->q[j])),
-                                                   h->extra[j]));
+        h->dp[j] = qf->M && h->extra[j] ? dp_quadratic(ctx, e, qf, j, h->extra[j]) : NULL;
+        if (!h->dp[j] && qd_ctx_status(ctx) == QD_OK) /* not quadratic after all: as it comes */
+            h->dp[j] = qd_simplify(ctx, qd_add(ctx, qd_neg(ctx, qd_diff(ctx, h->H, e->q[j])),
+                                               h->extra[j]));
         if (!h->extra[j] || !h->dq[j] || !h->dp[j])
             return qd_ctx_status(ctx);
     }
