@@ -15,6 +15,21 @@
 qd_status qd__mech_gauss_solve(qd_ctx *ctx, size_t n, const qd_expr **A, const qd_expr **x,
                           size_t *bad);
 
+/* What qd__mech_quad_inverse fills, n entries each (the caller's arrays):
+ * x = M^-1 r simplified, and x_i = num_i / den_i unsimplified with den_i
+ * the determinant of i's block (1 for a block solved by elimination). */
+typedef struct qd__quad_inv {
+    const qd_expr **x, **num, **den;
+} qd__quad_inv;
+
+/* x = M^-1 r and *half = r^T M^-1 r / 2 for the symmetric n x n M
+ * (row-major; its entries are replaced by their simplified forms, the upper
+ * triangle is read), block by block of M's pattern, the small blocks by
+ * cofactors (legendre_blocks.c).  QD_ERR_SINGULAR, nothing recorded, when a
+ * block's determinant or a pivot simplifies to 0. */
+qd_status qd__mech_quad_inverse(qd_ctx *ctx, size_t n, const qd_expr **M, const qd_expr *const *r,
+                                qd__quad_inv *out, const qd_expr **half);
+
 /* qd_ham_derive for a model given by H: h allocated for n coordinates. */
 qd_status qd__mech_ham_from_H(qd_ctx *ctx, const qd_model *m, qd_ham *h);
 

@@ -99,6 +99,27 @@ static const qd_expr *content(qd_ctx *ctx, const qd_expr *s) {
     return r;
 }
 
+/* a - b and a / b for numbers without the general constructors (the
+ * exponents and coefficients here are nearly always small rationals, and
+ * qd_sub, qd_div on them were a tenth of a derivation). */
+static const qd_expr *num_op(qd_ctx *ctx, const qd_expr *a, const qd_expr *b, bool divide) {
+    if (!divide && a == b)
+        return ctx->sym->zero;
+    if (divide && b == ctx->sym->one)
+        return a;
+    if (!qd__is_rational(a) || !qd__is_rational(b) || (divide && mpq_sgn(b->u.q) == 0))
+        return divide ? qd_div(ctx, a, b) : qd_sub(ctx, a, b);
+    mpq_t r;
+    mpq_init(r);
+    if (divide)
+        mpq_div(r, a->u.q, b->u.q);
+    else
+        mpq_sub(r, a->u.q, b->u.q);
+    const qd_expr *e = qd__rat_mpq(ctx, r);
+    mpq_clear(r);
+    return e;
+}
+
 /* term / (g * prod common): the coefficient divided, common exponents lowered. */
 static const qd_expr *divide_term(qd_ctx *ctx, const qd_expr *const *slot, const qd_expr *g,
                                   const common *cm, size_t m) {
@@ -110,13 +131,13 @@ static const qd_expr *divide_term(qd_ctx *ctx, const qd_expr *const *slot, const
         qd__oom(ctx);
         return NULL;
     }
-    out[0] = qd_div(ctx, c, g);
+    out[0] = num_op(ctx, c, g, true);
     for (size_t i = 0; i < n; i++) {
         const qd_expr *e, *b = base_of(fs[i], &e, ctx);
         out[i + 1] = fs[i];
         for (size_t k = 0; k < m; k++)
             if (cm[k].base == b)
-                out[i + 1] = qd_pow(ctx, b, qd_sub(ctx, e, cm[k].exp));
+                out[i + 1] = qd_pow(ctx, b, num_op(ctx, e, cm[k].exp, false));
     }
     const qd_expr *r = qd_mul_n(ctx, n + 1, out);
     qd__free(out);

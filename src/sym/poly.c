@@ -258,10 +258,21 @@ static bool mono_eq(const qd__pvar *a, const qd__pvar *b, uint32_t len) {
 typedef struct pbuild {
     qd_ctx *ctx;
     qd__poly *out;
-    uint32_t *slot; /* term index + 1; 0 is empty */
+    uint32_t *slot; /* term index + 1; 0 is empty: small, or allocated */
     size_t mask;
+    uint32_t small[64]; /* most builds are a few terms: no table to allocate */
+    /* Scratch rationals, initialized on the first coefficient that leaves
+     * int64: most builds never need them, and three mpq_init/mpq_clear
+     * pairs (six allocations) per build were an eighth of a derivation. */
+    bool big;
     mpq_t tmp, prod, tmp2;
 } pbuild;
+
+static void pb_big(pbuild *b) {
+    if (!b->big)
+        mpq_inits(b->tmp, b->prod, b->tmp2, NULL);
+    b->big = true;
+}
 
 static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
     size_t cap = 16;
@@ -269,9 +280,14 @@ static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
         cap *= 2;
     b->ctx = ctx;
     b->out = qd__calloc(ctx, 1, sizeof *b->out);
-    b->slot = qd__calloc(ctx, cap, sizeof *b->slot);
+    if (cap <= sizeof b->small / sizeof b->small[0]) {
+        memset(b->small, 0, cap * sizeof b->small[0]);
+        b->slot = b->small;
+    } else {
+        b->slot = qd__calloc(ctx, cap, sizeof *b->slot);
+    }
     b->mask = cap - 1;
-    mpq_inits(b->tmp, b->prod, b->tmp2, NULL);
+    b->big = false;
     if (!b->out || !b->slot) {
         qd__oom(ctx);
         return false;
@@ -280,9 +296,12 @@ static bool pb_init(pbuild *b, qd_ctx *ctx, size_t expect) {
 }
 
 static void pb_release(pbuild *b) {
-    qd__free(b->slot);
+    if (b->slot != b->small)
+        qd__free(b->slot);
     b->slot = NULL;
-    mpq_clears(b->tmp, b->prod, b->tmp2, NULL);
+    if (b->big)
+        mpq_clears(b->tmp, b->prod, b->tmp2, NULL);
+    b->big = false;
 }
 
 static void pb_fail(pbuild *b) {
@@ -293,7 +312,7 @@ static void pb_fail(pbuild *b) {
 
 static bool pb_rehash(pbuild *b) {
     size_t cap = (b->mask + 1) * 2;
-    uint32_t *slot = qd__calloc(b->ctx, cap, sizeof *slot);
+    uint32_t *slot = qd__calloc(b->ctx, cap, sizeof *slot); /* small is the table read */
     if (!slot)
         return false;
     for (size_t t = 0; t < b->out->n; t++) {
@@ -302,7 +321,8 @@ static bool pb_rehash(pbuild *b) {
             i = (i + 1) & (cap - 1);
         slot[i] = (uint32_t)t + 1;
     }
-    qd__free(b->slot);
+    if (b->slot != b->small)
+        qd__free(b->slot);
     b->slot = slot;
     b->mask = cap - 1;
     return true;
@@ -342,6 +362,10 @@ static bool pb_add(pbuild *b, const qd__pvar *m, uint32_t len, uint64_t h, cval 
     for (uint32_t s; (s = b->slot[i]) != 0; i = (i + 1) & b->mask) {
         qd__pterm *t = &b->out->terms[s - 1];
         if (t->hash == h && t->len == len && mono_eq(mono_of(b->out, t), m, len)) {
+            int64_t sum;
+            if (t->c.kind != QD_COEF_INT || c.kind != QD_COEF_INT ||
+                __builtin_add_overflow(t->c.v.i, c.i, &sum))
+                pb_big(b);
             if (coef_acc(b->ctx, b->out, &t->c, c, b->tmp))
                 return true;
             qd__oom(b->ctx);
@@ -541,15 +565,22 @@ double qd__poly_pow_bytes(qd_ctx *ctx, const qd__poly *a, long n) {
 }
 
 double qd__poly_mul_bytes(qd_ctx *ctx, const qd__poly *x, const qd__poly *y) {
-    double nx, dx, ny, dy, nvars, box = box_terms(ctx, x, y, 0, &nvars);
+    double nx, dx, ny, dy, nvars;
     bool fx, fy;
+    coef_bits(x, &nx, &dx, &fx);
+    coef_bits(y, &ny, &dy, &fy);
+    double bits = fx || fy ? 64 : nx + ny + dx + dy + 1; /* |num| <= sum|x| sum|y| */
+    /* x->n * y->n terms of at most max_len(x) + max_len(y) generators bound
+     * the box's count from above: when that bound fits, the sorted box (most
+     * of the cost of a small product) is not needed. */
+    double cheap = bytes_of((double)x->n * (double)y->n, bits, (double)(max_len(x) + max_len(y)));
+    if (cheap <= QD_EXPAND_MAX_BYTES)
+        return cheap;
+    double box = box_terms(ctx, x, y, 0, &nvars);
     if (box < 0) {
         qd__oom(ctx);
         return -1;
     }
-    coef_bits(x, &nx, &dx, &fx);
-    coef_bits(y, &ny, &dy, &fy);
-    double bits = fx || fy ? 64 : nx + ny + dx + dy + 1; /* |num| <= sum|x| sum|y| */
     return bytes_of(fmin(box, (double)x->n * (double)y->n), bits, nvars);
 }
 
@@ -565,7 +596,15 @@ static bool mul_into(pbuild *b, const qd__poly *x, const qd__poly *y, qd__pvar *
                 qd_ctx_error(b->ctx, QD_ERR_TOOBIG, "exponent overflow in expansion");
                 return false;
             }
-            cval c = cv_mul(cs, cv_get(y, &t->c), b->prod, b->tmp2);
+            cval c = cv_get(y, &t->c);
+            int64_t prod;
+            if (cs.kind == QD_COEF_INT && c.kind == QD_COEF_INT &&
+                !__builtin_mul_overflow(cs.i, c.i, &prod))
+                c.i = prod; /* no scratch needed */
+            else {
+                pb_big(b);
+                c = cv_mul(cs, c, b->prod, b->tmp2);
+            }
             if (!pb_add(b, m, (uint32_t)len, h, c))
                 return false;
         }

@@ -35,9 +35,9 @@ EXAMPLES = Path(__file__).resolve().parents[2] / 'examples'
 DIGITS = 25
 
 
-# A derivation's time limit: the Legendre inverse of a rigid body in Euler
-# angles takes about 12 s in a release build (hoop_struck), and a Debug build
-# under AddressSanitizer runs about 10 times slower.
+# A derivation's time limit, generous: every example now takes well under a
+# second (the rigid bodies in Euler angles took 8-55 s before issue 34), and
+# a Debug build under AddressSanitizer runs about 10 times slower.
 TIMEOUT = 120
 
 

@@ -7,7 +7,9 @@
  * but not T + V); the Kepler problem in polar coordinates,
  * seed-desloge-B.md C3 (H = p_r^2/2m + p_theta^2/(2 m r^2) - k/r); the
  * charged particle, seed-goldstein-britannica.md C3 and seed-desloge-A.md
- * T35 (H = (p - qA)^2/2m + q phi).  Each is compared by value at random
+ * T35 (H = (p - qA)^2/2m + q phi); the free body in Euler angles,
+ * seed-desloge-C.md C11 (H from the body's angular momentum), and a chain
+ * of springs in relative coordinates.  Each is compared by value at random
  * points.  The consistency test: at random (q, q'), with p = dL/dq',
  * dH/dp gives q' back and dp/dt equals dL/dq + Q - dD/dq' (Lagrange's
  * equations written for p).
@@ -202,6 +204,64 @@ static void test_damped_rotating_lagrange(void **state) {
     unload(&f);
 }
 
+/* The free rigid body in Euler angles (z-x-z), Desloge ch. 68 Example 2
+ * (seed-desloge-C.md C11): w = J q', p = J^T I w, so the body components
+ * of the angular momentum are L1 = sin(psi) (p_phi - cos(theta) p_psi) /
+ * sin(theta) + cos(psi) p_theta, L2 = cos(psi) (p_phi - cos(theta) p_psi) /
+ * sin(theta) - sin(psi) p_theta, L3 = p_psi, and H = L1^2/2A + L2^2/2B +
+ * L3^2/2C.  One 3 x 3 block, inverted by cofactors (legendre_blocks.c). */
+static void test_euler_free_body(void **state) {
+    (void)state;
+    fix f = load("coordinates phi, theta, psi\n"
+                 "parameters A = 1.1, B = 2.3, C = 2.9, G1 = 0.3, G2 = -0.2, G3 = 0.5\n"
+                 "body b mass 1 inertia (A, B, C) at (0, 0, 0) orientation euler(phi, theta, psi)\n"
+                 "torque rotation(b)*(G1, G2, G3) on b\n");
+    assert_non_null(f.h);
+    assert_H(&f, "(sin(psi)*(p_phi - cos(theta)*p_psi)/sin(theta) + cos(psi)*p_theta)^2/(2*A)"
+                 " + (cos(psi)*(p_phi - cos(theta)*p_psi)/sin(theta) - sin(psi)*p_theta)^2/(2*B)"
+                 " + p_psi^2/(2*C)");
+    assert_true(f.h->is_energy);
+    check_lagrange(&f);
+    unload(&f);
+}
+
+/* Two blocks with different determinants (a double pendulum beside a
+ * mass on a spring): the equations share the product of both. */
+static void test_two_blocks_lagrange(void **state) {
+    (void)state;
+    fix f = load("coordinates theta1, theta2, x\n"
+                 "parameters m1 = 1, m2 = 1.5, m3 = 0.8, l1 = 1, l2 = 0.7, g = 9.81, k = 3\n"
+                 "x1 = l1*sin(theta1)\ny1 = -l1*cos(theta1)\n"
+                 "x2 = x1 + l2*sin(theta2)\ny2 = y1 - l2*cos(theta2)\n"
+                 "T = m1/2*(x1'^2 + y1'^2) + m2/2*(x2'^2 + y2'^2) + m3/2*x'^2\n"
+                 "V = m1*g*y1 + m2*g*y2 + k/2*x^2\n");
+    assert_non_null(f.h);
+    assert_true(f.h->is_energy);
+    check_lagrange(&f);
+    unload(&f);
+}
+
+/* Five masses in a line, each coordinate the stretch of one spring, so
+ * x_i = q1 + ... + qi and M is dense: one 5 x 5 block (elimination on it
+ * ran past the expansion limit; its cofactors do not).  The momentum conjugate to q_i is the total
+ * momentum of masses i..5, so H = sum (p_i - p_i+1)^2 / 2 m_i (p_6 = 0)
+ * plus the springs. */
+static void test_chain_elimination(void **state) {
+    (void)state;
+    fix f = load("coordinates q1, q2, q3, q4, q5\n"
+                 "parameters m1 = 1, m2 = 1.3, m3 = 0.7, m4 = 2, m5 = 0.9, k = 2.5\n"
+                 "x1 = q1\nx2 = x1 + q2\nx3 = x2 + q3\nx4 = x3 + q4\nx5 = x4 + q5\n"
+                 "T = m1/2*x1'^2 + m2/2*x2'^2 + m3/2*x3'^2 + m4/2*x4'^2 + m5/2*x5'^2\n"
+                 "V = k/2*(q1^2 + q2^2 + q3^2 + q4^2 + q5^2)\n");
+    assert_non_null(f.h);
+    assert_H(&f, "(p_q1 - p_q2)^2/(2*m1) + (p_q2 - p_q3)^2/(2*m2) + (p_q3 - p_q4)^2/(2*m3)"
+                 " + (p_q4 - p_q5)^2/(2*m4) + p_q5^2/(2*m5)"
+                 " + k/2*(q1^2 + q2^2 + q3^2 + q4^2 + q5^2)");
+    assert_true(f.h->is_energy);
+    check_lagrange(&f);
+    unload(&f);
+}
+
 static void test_constrained_refused(void **state) {
     (void)state;
     fix f = load("coordinates x, y\nparameters m = 0.6, l = 1.4, g = 9.81\n"
@@ -219,6 +279,9 @@ int main(void) {
         cmocka_unit_test(test_charged_particle),
         cmocka_unit_test(test_double_pendulum_lagrange),
         cmocka_unit_test(test_damped_rotating_lagrange),
+        cmocka_unit_test(test_euler_free_body),
+        cmocka_unit_test(test_two_blocks_lagrange),
+        cmocka_unit_test(test_chain_elimination),
         cmocka_unit_test(test_constrained_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
