@@ -115,8 +115,7 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
     if (rc == QD_EXIT_OK)
         rc = cli_con_linearize(&r, q0, a->independent, a->format == F_JSON);
     free(q0);
-    cli_state_free(&r.st);
-    free(r.slot);
+    qd_linpoint_free(&r.pt);
     return rc;
 }
 

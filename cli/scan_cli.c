@@ -33,38 +33,6 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
     return QD_EXIT_OK;
 }
 
-/* --about "x = 1/2 - mu, ...": the state reader's exact values, in the
- * order of the equations' coordinates (the eliminated ones refused). */
-int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about) {
-    size_t n = r->e->n, ns = r->st.n;
-    const qd_expr **exact = calloc(ns + 1, sizeof *exact);
-    bool *given = calloc(ns + 1, sizeof *given);
-    double *vals = malloc((ns + 1) * sizeof *vals);
-    if (!exact || !given || !vals) {
-        free(exact);
-        free(given);
-        free(vals);
-        return cli_out_of_memory();
-    }
-    memcpy(vals, r->st.vals, ns * sizeof *vals); /* the run's own state stays as it is */
-    qd_state st = {ns, r->st.syms, vals};
-    qd_state_read_opts o = {.refuse = QD_STATE_VELOCITIES | QD_STATE_TIME | QD_STATE_PARAMS |
-                                      QD_STATE_EXTRA,
-                            .independent = r->e->q, .nindependent = n, .given = given,
-                            .exact = exact};
-    int rc = qd_state_read(r->c.ctx, r->c.mf.model, &st, text, &o) == QD_OK
-                 ? QD_EXIT_OK
-                 : cli_state_diag(r->c.ctx, "--about", text);
-    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
-        size_t k = qd_state_find(&st, r->e->q[j]);
-        about[j] = k < ns && given[k] ? exact[k] : qd_int(r->c.ctx, 0);
-    }
-    free(exact);
-    free(given);
-    free(vals);
-    return rc;
-}
-
 /* ---- the command ------------------------------------------------------------------- */
 
 int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json) {
@@ -88,7 +56,10 @@ int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t 
         rc = QD_EXIT_FAIL;
     if (rc == QD_EXIT_OK && about) {
         ab = calloc(r->e->n + 1, sizeof *ab);
-        rc = ab ? cli_scan_about(r, about, ab) : QD_EXIT_FAIL;
+        rc = !ab ? cli_out_of_memory()
+             : qd_linpoint_read_exact(r->c.ctx, &r->pt, about, ab) == QD_OK
+                 ? QD_EXIT_OK
+                 : cli_state_diag(r->c.ctx, "--about", about);
     }
     qd_scan_opts o = {.steps = steps, .about = ab};
     qd_scan sc = {0};
