@@ -5805,6 +5805,19 @@ static void null_statespace(void **state)
     /* s NULL */
     qd_statespace_free(NULL);
     reset(&F);
+    /* ---- qd_linearize_about */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(NULL, F.eom, F.model, "q", (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(F.ctx, NULL, F.model, "q", (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(F.ctx, F.eom, NULL, "q", (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(F.ctx, F.eom, F.model, "q", NULL));
+    reset(&F);
     /* ---- qd_statespace_render */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_statespace_render(NULL, NULL, NULL, (qd_ss_format){0}, &F.buf));
