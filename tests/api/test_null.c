@@ -842,6 +842,26 @@ static void null_control(void **state)
     /* m NULL */
     qd_matrix_free(NULL);
     reset(&F);
+    /* ---- qd_lqr_system_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(NULL, "q", "q", "q", (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* A NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, NULL, "q", "q", (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* B NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, "q", NULL, "q", (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* weights NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, "q", "q", NULL, (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, "q", "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_lqr_system_free */
+    /* s NULL */
+    qd_lqr_system_free(NULL);
+    reset(&F);
     /* ---- qd_lqr_design */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_lqr_design(NULL, NULL, "q", (qd_care_result *)(void *)F.blob));
