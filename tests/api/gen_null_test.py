@@ -52,6 +52,7 @@ NULLABLE = {
     'qd_constrained_at_solve': {'indep'},
     'qd_modes_at_choose': {'about'},
     'qd_linearize_about': {'about'},
+    'qd_eom_request_render': {'failed'},
     'qd_linpoint_read': {'qd'},
     'qd_linpoint_set': {'qd'},
     'qd_eval': {'syms', 'vals'},

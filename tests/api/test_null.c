@@ -4380,6 +4380,22 @@ static void null_render(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_hamel(F.ctx, NULL, (qd_render_format){0}, NULL));
     reset(&F);
+    /* ---- qd_eom_request_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(NULL, F.model, NULL, &F.buf, &F.buf, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, NULL, NULL, &F.buf, &F.buf, NULL));
+    reset(&F);
+    /* rq NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, F.model, NULL, &F.buf, &F.buf, NULL));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, F.model, NULL, NULL, &F.buf, NULL));
+    reset(&F);
+    /* notes NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, F.model, NULL, &F.buf, NULL, NULL));
+    reset(&F);
     /* ---- qd_check_verdict_of */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_check_verdict_of(NULL, F.model, F.eom, (qd_check_verdict *)(void *)F.blob));
