@@ -13,8 +13,8 @@
  * q' = W u + w and M_u u' = f_u (qd_speeds_derive, by --method kane, appell
  * or hamel), with --appell the Gibbs-Appell function, with --multipliers
  * the constraint forces, and with --at the numbers at a state of q, u and t
- * (qd_speeds_eval).  The derivation and the renderings are the library's
- * (qdot/render.h); the options and the state read are here.
+ * (qd_speeds_eval).  The derivation, the state read and the renderings are
+ * the library's (qd_eom_request_render, qdot/render.h); the options are here.
  */
 #include "driver.h"
 
@@ -40,8 +40,6 @@ typedef struct eom_args {
 typedef struct eom_run {
     cli_run c;
     eom_args a;
-    qd_eom *e;
-    cli_state st;
 } eom_run;
 
 static const char *const formats[] = {"text", "latex", "json", "sympy", "c", NULL};
@@ -89,41 +87,6 @@ static int check(cli_run *c) {
     return QD_EXIT_OK;
 }
 
-/* --solve: q'' (or u') symbolically; M and f stay when too large. */
-static int solved(eom_run *r, qd_status st, const char *what) {
-    if (st == QD_OK)
-        return QD_EXIT_OK;
-    if (st == QD_ERR_TOOBIG) {
-        fprintf(stderr, "qdot: note: the solved %s exceed %d operations; "
-                        "printing M and f instead (use --at for numbers)\n", what, SOLVE_MAX_OPS);
-        qd_ctx_clear_error(r->c.ctx);
-        return QD_EXIT_OK;
-    }
-    if (st == QD_ERR_NOMEM)
-        return cli_diag_ctx(r->c.ctx);
-    cli_diag_error("cannot solve for the %s: %s", !strcmp(what, "rates") ? "speeds' rates"
-                   : what, qd_ctx_message(r->c.ctx));
-    return QD_EXIT_FAIL;
-}
-
-/* The rendering on stdout, its notes on stderr; the error if it failed. */
-static int emit(eom_run *r, qd_status st, qd_buf *b, qd_buf *notes) {
-    const char *s = qd_buf_str(notes), *nl;
-    for (; *s && (nl = strchr(s, '\n')); s = nl + 1)
-        fprintf(stderr, "qdot: note: %.*s\n", (int)(nl - s), s);
-    if (st == QD_OK)
-        fputs(qd_buf_str(b), stdout);
-    qd_buf_free(b);
-    qd_buf_free(notes);
-    return st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(r->c.ctx);
-}
-
-static qd_render_opts render_opts(eom_run *r, const eom_args *a, qd_buf *notes) {
-    return (qd_render_opts){.source = r->c.mf.path, .nstate = a->at ? r->st.n : 0,
-                            .syms = r->st.syms, .vals = r->st.vals,
-                            .multipliers = a->multipliers, .notes = notes};
-}
-
 /* An option of one kind of model given for the other: its name, or NULL. */
 static const char *speeds_option(const eom_args *a) {
     return a->method ? "--method" : a->appell ? "--appell" : a->multipliers ? "--multipliers"
@@ -131,77 +94,47 @@ static const char *speeds_option(const eom_args *a) {
                                                                           : NULL;
 }
 
-static const char *coords_option(const eom_args *a) {
-    return a->eliminate ? "--eliminate" : NULL;
-}
-
-/* Lagrange's equations in the coordinates: M q'' = f (+ A^T lambda). */
-static int run_coords(eom_run *r, const eom_args *a) {
-    const char *opt = speeds_option(a);
-    if (opt) {
+/* The options of the other kind of model refused, in the words of each. */
+static int refuse(const eom_run *r, const eom_args *a, bool speeds) {
+    const char *opt = speeds ? (a->eliminate ? "--eliminate" : NULL) : speeds_option(a);
+    if (opt && !speeds) {
         cli_diag_error("%s is for a model with generalized speeds, and %s declares no speeds "
                        "(a `speeds` statement; without one, --solve gives the multipliers)",
                        opt, r->c.file);
         return QD_EXIT_USAGE;
     }
-    qd_eom_opts opts = {.eliminate = a->eliminate};
-    if (!(r->e = qd_eom_derive_opts(r->c.ctx, r->c.mf.model, &opts)))
-        return cli_eom_derive_error(r->c.ctx, &r->c.mf);
-    int rc = QD_EXIT_OK;
-    if (a->at && (rc = cli_state_init(r->c.ctx, r->c.mf.model, &r->st)) == QD_EXIT_OK)
-        rc = cli_state_parse(r->c.ctx, r->c.mf.model, a->at, &r->st);
-    else if (a->solve)
-        rc = solved(r, qd_eom_solve(r->c.ctx, r->e, SOLVE_MAX_OPS), "accelerations");
-    if (rc != QD_EXIT_OK)
-        return rc;
-    qd_buf b = QD_BUF_INIT, notes = QD_BUF_INIT;
-    qd_render_opts o = render_opts(r, a, &notes);
-    return emit(r, qd_render_eom(r->c.ctx, r->c.mf.model, r->e, &o, a->fmt, &b), &b, &notes);
-}
-
-/* The --at state of a model with speeds: q, t, the parameters and the
- * speeds (qd_speeds_state_read; the velocities follow from the speeds). */
-static int speeds_state(eom_run *r, const qd_speeds_eom *e, const char *at) {
-    if (qd_speeds_state_read(r->c.ctx, r->c.mf.model, e, at, &r->st) == QD_OK)
-        return QD_EXIT_OK;
-    return cli_state_diag(r->c.ctx, "--at", at);
-}
-
-/* The equations in the model's speeds: q' = W u + w, M_u u' = f_u. */
-static int run_speeds(eom_run *r, const eom_args *a) {
-    const char *opt = coords_option(a);
     if (opt)
         return cli_usage_error("%s is not available for a model with generalized speeds (%s "
                                "declares them): qdot eom prints M u' = f in the speeds",
                                opt, r->c.file);
-    if (a->at && a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON)
+    if (speeds && a->at && a->fmt != QD_RENDER_TEXT && a->fmt != QD_RENDER_JSON)
         return cli_usage_error("--at with speeds prints text or json");
-    qd_speeds_opts opts = {.method = a->smethod, .appell = a->appell,
-                           .multipliers = a->multipliers};
-    qd_speeds_eom *e = qd_speeds_derive(r->c.ctx, r->c.mf.model, &opts);
-    if (!e)
+    return QD_EXIT_OK;
+}
+
+/* The library's notes on stderr, the rendering on stdout; the error of the
+ * step that failed. */
+static int emit(eom_run *r, qd_status st, qd_eom_step step, qd_buf *b, qd_buf *notes) {
+    const char *s = qd_buf_str(notes), *nl;
+    for (; *s && (nl = strchr(s, '\n')); s = nl + 1)
+        fprintf(stderr, "qdot: note: %.*s\n", (int)(nl - s), s);
+    if (st == QD_OK)
+        fputs(qd_buf_str(b), stdout);
+    qd_buf_free(b);
+    qd_buf_free(notes);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    if (step == QD_EOM_STEP_DERIVE)
         return cli_eom_derive_error(r->c.ctx, &r->c.mf);
-    qd_buf b = QD_BUF_INIT, notes = QD_BUF_INIT;
-    int rc = QD_EXIT_OK;
-    qd_status st = QD_OK;
-    if (a->hamel_coef)
-        st = qd_render_hamel(r->c.ctx, e,
-                             a->fmt == QD_RENDER_JSON ? QD_RENDER_JSON : QD_RENDER_TEXT, &b);
-    else if (a->at)
-        rc = speeds_state(r, e, a->at);
-    else if (a->solve)
-        rc = solved(r, qd_speeds_solve(r->c.ctx, e, SOLVE_MAX_OPS), "rates");
-    qd_render_opts o = render_opts(r, a, &notes);
-    if (rc == QD_EXIT_OK && !a->hamel_coef)
-        st = qd_render_speeds(r->c.ctx, r->c.mf.model, e, &o, a->fmt, &b);
-    if (rc == QD_EXIT_OK)
-        rc = emit(r, st, &b, &notes);
-    else {
-        qd_buf_free(&b);
-        qd_buf_free(&notes);
+    if (step == QD_EOM_STEP_AT)
+        return cli_state_diag(r->c.ctx, "--at", r->a.at);
+    if (step == QD_EOM_STEP_SOLVE && st != QD_ERR_NOMEM) {
+        cli_diag_error("cannot solve for the %s: %s",
+                       qd_model_nspeeds(r->c.mf.model) ? "speeds' rates" : "accelerations",
+                       qd_ctx_message(r->c.ctx));
+        return QD_EXIT_FAIL;
     }
-    qd_speeds_eom_free(e);
-    return rc;
+    return cli_diag_ctx(r->c.ctx);
 }
 
 static int run(cli_run *c) {
@@ -212,18 +145,22 @@ static int run(cli_run *c) {
                              a->fmt == QD_RENDER_JSON);
     int rc = cli_load(c->ctx, c->file, a->sets.n, a->sets.items, "eom", &c->mf);
     if (rc == QD_EXIT_OK)
-        rc = qd_model_nspeeds(c->mf.model) ? run_speeds(r, a) : run_coords(r, a);
-    return rc;
-}
-
-static void run_free(cli_run *c) {
-    eom_run *r = (eom_run *)c;
-    cli_state_free(&r->st);
-    qd_eom_free(r->e);
+        rc = refuse(r, a, qd_model_nspeeds(c->mf.model) > 0);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_eom_request rq = {.fmt = a->fmt, .source = c->mf.path, .at = a->at, .solve = a->solve,
+                         .max_ops = SOLVE_MAX_OPS, .eliminate = a->eliminate,
+                         .speeds = {.method = a->smethod, .appell = a->appell,
+                                    .multipliers = a->multipliers},
+                         .hamel = a->hamel_coef};
+    qd_buf b = QD_BUF_INIT, notes = QD_BUF_INIT;
+    qd_eom_step step;
+    qd_status st = qd_eom_request_render(c->ctx, c->mf.model, &rq, &b, &notes, &step);
+    return emit(r, st, step, &b, &notes);
 }
 
 int cli_cmd_eom(int argc, char **argv) {
-    static const cli_driver d = {&eom_spec, offsetof(eom_run, a), 0, check, run, run_free};
+    static const cli_driver d = {&eom_spec, offsetof(eom_run, a), 0, check, run, NULL};
     eom_run r = {0};
     return cli_drive(&d, &r.c, argc, argv);
 }

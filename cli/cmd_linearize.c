@@ -1,7 +1,7 @@
 /*
  * cli/cmd_linearize.c - `qdot linearize FILE --about "q=..., q'=..., F=..."`:
  * the state-space form x' = A x + B u, y = C x + D u about an operating
- * point (qd_linearize), the eigenvalues of A, and controllability and
+ * point (qd_linearize_about), the eigenvalues of A, and controllability and
  * observability; with --lqr "Q = ..., R = ...", the LQR gain on A and B
  * (qd_lqr_design).  Printed by qd_statespace_render (qdot/statespace.h) in
  * the formats text, json, c, sympy, octave.
@@ -42,47 +42,6 @@ static const cli_spec spec = {
     "eigenvalues of A, controllability and observability.",
     opts, NULL, 1, 1, "FILE", false};
 
-/* ---- --about ---------------------------------------------------------------------- */
-
-/* The operating point given: the slots --about names (the model's state with
- * its inputs appended) and their values as read, exact (an expression in the
- * parameters); qd_linearize takes 0 for the rest. */
-typedef struct lin_point {
-    size_t n;
-    const qd_expr **syms, **vals;
-} lin_point;
-
-static int read_about(qd_ctx *ctx, const qd_model *m, const char *text, lin_point *pt) {
-    cli_state st = {0};
-    int rc = cli_state_init(ctx, m, &st);
-    for (size_t i = 0; rc == QD_EXIT_OK && i < qd_model_ninputs(m); i++) {
-        const qd_expr *u = qd_model_input(m, i);
-        if (qd_state_append(ctx, &st, 1, &u, NULL) != QD_OK)
-            rc = cli_diag_ctx(ctx);
-    }
-    const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
-    pt->syms = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->syms) : NULL;
-    pt->vals = rc == QD_EXIT_OK ? calloc(st.n, sizeof *pt->vals) : NULL;
-    if (rc == QD_EXIT_OK && (!exact || !pt->syms || !pt->vals))
-        rc = cli_out_of_memory();
-    qd_state_read_opts o = {.exact = exact};
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_read(ctx, m, "--about", text, &st, &o);
-    for (size_t k = 0; rc == QD_EXIT_OK && k < st.n; k++)
-        if (exact[k]) {
-            pt->syms[pt->n] = st.syms[k];
-            pt->vals[pt->n++] = exact[k];
-        }
-    free(exact);
-    cli_state_free(&st);
-    return rc;
-}
-
-static void point_free(lin_point *pt) {
-    free(pt->syms);
-    free(pt->vals);
-}
-
 /* The state-space form, then the design when there is one (text and C
  * print it after the matrices, JSON nests it under "lqr"): the library's
  * printer, in the format chosen. */
@@ -115,8 +74,7 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
     if (rc == QD_EXIT_OK)
         rc = cli_con_linearize(&r, q0, a->independent, a->format == F_JSON);
     free(q0);
-    cli_state_free(&r.st);
-    free(r.slot);
+    qd_linpoint_free(&r.pt);
     return rc;
 }
 
@@ -124,7 +82,6 @@ typedef struct lin_run {
     cli_run c;
     lin_args a;
     qd_eom *e;
-    lin_point pt;
     qd_statespace s;
     qd_care_result lqr;
 } lin_run;
@@ -148,10 +105,9 @@ static int run(cli_run *c) {
     int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, "linearize", &eo, &c->mf, &r->e);
     if (rc == QD_EXIT_OK && (r->e->ncon || a->independent))
         return constrained(ctx, a, &c->mf, r->e);
-    if (rc == QD_EXIT_OK && a->about)
-        rc = read_about(ctx, c->mf.model, a->about, &r->pt);
-    if (rc == QD_EXIT_OK &&
-        qd_linearize(ctx, r->e, c->mf.model, r->pt.n, r->pt.syms, r->pt.vals, &r->s) != QD_OK) {
+    if (rc == QD_EXIT_OK && qd_linearize_about(ctx, r->e, c->mf.model, a->about, &r->s) != QD_OK) {
+        if (qd_ctx_diag(ctx)->located)
+            return cli_state_diag(ctx, "--about", a->about);
         rc = cli_exit(qd_ctx_status(ctx));
         cli_diag_error("%s", qd_ctx_message(ctx));
     }
@@ -166,7 +122,6 @@ static void run_free(cli_run *c) {
     lin_run *r = (lin_run *)c;
     qd_care_result_free(&r->lqr);
     qd_statespace_free(&r->s);
-    point_free(&r->pt);
     qd_eom_free(r->e);
 }
 

@@ -1,13 +1,13 @@
 /*
  * cli/cmd_lqr.c - `qdot lqr --A ... --B ... --weights "Q = ..., R = ..."`:
- * the LQR gain of a state-space system given as matrices (qd_care_solve).
+ * the LQR gain of a state-space system given as matrices (qd_lqr_system_read,
+ * qd_care_solve).
  * `qdot linearize --lqr` does the same on the A and B of a model.
  */
 #include "driver.h"
 #include "lqr_cli.h"
 
 #include <stddef.h>
-#include <stdlib.h>
 #include <string.h>
 
 typedef struct lqr_args {
@@ -35,31 +35,15 @@ static const cli_spec spec = {
 typedef struct lqr_run {
     cli_run c;
     lqr_args a;
-    qd_matrix A, B;
-    double *Q, *R;
+    qd_lqr_system sys;
 } lqr_run;
 
-static int read_system(qd_ctx *ctx, const lqr_args *a, lqr_run *r) {
-    if (qd_matrix_read(ctx, a->A, &r->A) != QD_OK)
-        return cli_lqr_error(ctx, "--A", a->A);
-    if (r->A.cols != r->A.rows) {
-        cli_diag_error("--A is %zu by %zu; A must be square", r->A.rows, r->A.cols);
-        return QD_EXIT_USAGE;
-    }
-    if (qd_matrix_read(ctx, a->B, &r->B) != QD_OK)
-        return cli_lqr_error(ctx, "--B", a->B);
-    size_t n = r->A.rows, m = r->B.cols;
-    if (r->B.rows != n) {
-        cli_diag_error("--B has %zu rows; it needs one per state, %zu", r->B.rows, n);
-        return QD_EXIT_USAGE;
-    }
-    r->Q = malloc(n * n * sizeof *r->Q);
-    r->R = malloc(m * m * sizeof *r->R);
-    if (!r->Q || !r->R)
-        return cli_out_of_memory();
-    if (qd_lqr_weights_read(ctx, a->weights, n, m, r->Q, r->R) != QD_OK)
-        return cli_lqr_error(ctx, "--weights", a->weights);
-    return QD_EXIT_OK;
+/* The reader's error shown under the text it names (qd_lqr_system_read). */
+static int system_error(qd_ctx *ctx, const lqr_args *a) {
+    const char *f = qd_ctx_diag(ctx)->name;
+    bool isA = !strcmp(f, "A"), isB = !strcmp(f, "B");
+    return cli_lqr_error(ctx, isA ? "--A" : isB ? "--B" : "--weights",
+                         isA ? a->A : isB ? a->B : a->weights);
 }
 
 static int check(cli_run *c) {
@@ -73,9 +57,12 @@ static int run(cli_run *c) {
     lqr_run *r = (lqr_run *)c;
     const char *f = r->a.format;
     qd_care_result res = {0};
-    int rc = read_system(c->ctx, &r->a, r);
-    if (rc == QD_EXIT_OK && qd_care_solve(c->ctx, r->A.rows, r->B.cols, r->A.a, r->B.a, r->Q,
-                                          r->R, &res) != QD_OK)
+    const qd_lqr_system *s = &r->sys;
+    int rc = qd_lqr_system_read(c->ctx, r->a.A, r->a.B, r->a.weights, &r->sys) == QD_OK
+                 ? QD_EXIT_OK
+                 : system_error(c->ctx, &r->a);
+    if (rc == QD_EXIT_OK && qd_care_solve(c->ctx, s->A.rows, s->B.cols, s->A.a, s->B.a, s->Q,
+                                          s->R, &res) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK)
         rc = cli_lqr_print_design(stdout, NULL, &res,
@@ -86,13 +73,7 @@ static int run(cli_run *c) {
     return rc;
 }
 
-static void run_free(cli_run *c) {
-    lqr_run *r = (lqr_run *)c;
-    qd_matrix_free(&r->A);
-    qd_matrix_free(&r->B);
-    free(r->Q);
-    free(r->R);
-}
+static void run_free(cli_run *c) { qd_lqr_system_free(&((lqr_run *)c)->sys); }
 
 int cli_cmd_lqr(int argc, char **argv) {
     static const cli_driver d = {&spec, offsetof(lqr_run, a), 0, check, run, run_free};

@@ -88,68 +88,52 @@ static const cli_spec spec = {
     "small oscillations about an equilibrium: frequencies and mode shapes (a field model: "
     "FIELDFILE [--count N] [--tol X])", opts, NULL, 1, 1, "FILE", false};
 
-/* The point (qd_modes_at_point): --about's, --at-equilibrium's or the
+/* The point (qd_modes_at_choose): --about's, --at-equilibrium's or the
  * library's choice. */
 static int choose_point(modes_run *r, const modes_args *a) {
-    cli_lin_run *lr = &r->lr;
-    double *given = NULL;
-    if (a->about) {
-        if (!(given = calloc(lr->e->n + 1, sizeof *given)))
-            return cli_out_of_memory();
-        int rc = cli_lin_coords(lr, "--about", a->about, given);
-        if (rc != QD_EXIT_OK) {
-            free(given);
-            return rc;
-        }
-    }
-    qd_status st = qd_modes_at_point(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
-                                     lr->st.vals, given, a->at_eq, &r->at);
-    free(given);
+    qd_ctx *ctx = r->lr.c.ctx;
+    qd_status st = qd_modes_at_choose(ctx, &r->lr.pt, a->about, a->at_eq, &r->at);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    if (a->about && qd_ctx_diag(ctx)->located)
+        return cli_state_diag(ctx, "--about", a->about);
     if (st == QD_ERR_ARG)
-        return cli_usage_error("--at-equilibrium %zu: %s", a->at_eq, qd_ctx_message(lr->c.ctx));
-    if (st != QD_OK) {
-        if (st == QD_ERR_NUMERIC && !r->at.pt)
-            cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point "
-                           "with --about");
-        else
-            cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
-        return QD_EXIT_FAIL;
-    }
-    return QD_EXIT_OK;
+        return cli_usage_error("--at-equilibrium %zu: %s", a->at_eq, qd_ctx_message(ctx));
+    if (st == QD_ERR_NUMERIC && !r->at.pt)
+        cli_diag_error("no equilibrium found (qdot equilibria lists none): give a point "
+                       "with --about");
+    else
+        cli_diag_error("%s", qd_ctx_message(ctx));
+    return QD_EXIT_FAIL;
 }
 
 /* The modes at the point (qd_modes_at_solve); the state there, at rest, for
  * what follows (--initial, --symmetry, --plot). */
 static int linearize(modes_run *r) {
     cli_lin_run *lr = &r->lr;
-    cli_lin_set_state(lr, r->at.q0, NULL);
-    if (qd_modes_at_solve(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms, lr->st.vals,
-                          &r->at) != QD_OK) {
+    const qd_state *s = &lr->pt.st;
+    qd_linpoint_set(&lr->pt, r->at.q0, NULL);
+    if (qd_modes_at_solve(lr->c.ctx, lr->e, lr->c.mf.model, s->n, s->syms, s->vals, &r->at) !=
+        QD_OK) {
         cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
         return QD_EXIT_FAIL;
     }
     return QD_EXIT_OK;
 }
 
+/* --initial in the normal coordinates (qd_modes_at_initial). */
 static int initial(modes_run *r, const char *text) {
-    cli_lin_run *lr = &r->lr;
-    size_t n = lr->e->n;
-    if (!r->at.res.conservative)
-        return cli_usage_error("--initial: the motion through normal coordinates needs a "
-                               "conservative system without gyroscopic terms");
-    double *q = calloc(n + 1, sizeof *q), *qd = calloc(n + 1, sizeof *qd);
-    r->Q = calloc(n + 1, sizeof *r->Q);
-    r->Qd = calloc(n + 1, sizeof *r->Qd);
-    int rc = q && qd && r->Q && r->Qd ? QD_EXIT_OK : QD_EXIT_FAIL;
-    if (rc == QD_EXIT_OK) {
-        memcpy(q, r->at.q0, n * sizeof *q);
-        rc = cli_lin_point(lr, "--initial", text, q, qd);
-    }
-    if (rc == QD_EXIT_OK)
-        qd_modes_normal_coords(&r->at.lin, &r->at.res, r->at.q0, q, qd, r->Q, r->Qd);
-    free(q);
-    free(qd);
-    return rc;
+    qd_ctx *ctx = r->lr.c.ctx;
+    size_t n = r->lr.e->n;
+    if (!(r->Q = calloc(n + 1, sizeof *r->Q)) || !(r->Qd = calloc(n + 1, sizeof *r->Qd)))
+        return cli_out_of_memory();
+    if (qd_modes_at_initial(ctx, &r->lr.pt, &r->at, text, r->Q, r->Qd) == QD_OK)
+        return QD_EXIT_OK;
+    if (qd_ctx_diag(ctx)->located)
+        return cli_state_diag(ctx, "--initial", text);
+    if (qd_ctx_status(ctx) != QD_ERR_ARG)
+        return cli_diag_ctx(ctx);
+    return cli_usage_error("--initial: %s", qd_ctx_message(ctx));
 }
 
 /* The library's printer (qd_modes_print) on what was computed. */

@@ -12,17 +12,16 @@
  *   --guess "r=1"               starting values of the search, not held: kept
  *                               coordinates, rates ("phi'=2") or momenta
  *                               ("p_phi=3", turned into rates at the start)
- * Every steady motion for the values given is found (qd_steady_find_all:
- * the two precessions of a top) and each is analysed; the first printed is
- * the one nearest the starting values.
+ * The library states, solves and scans the problem (qd_stability_problem:
+ * every steady motion for the values given, the two precessions of a top,
+ * each analysed; the first printed is the one nearest the starting values).
  * Values are expressions in the parameters (--set applies first).
  *   --scan NAME=A:B [--steps N] the steady motion followed as the parameter
- *                               goes from A to B (qd_stability_scan), the
- *                               given values held at their numbers
+ *                               goes from A to B (qd_stability_problem_scan),
+ *                               the given values held at their numbers
  */
 #include "driver.h"
 
-#include <stdlib.h>
 #include <string.h>
 #include "linear_cli.h"
 #include "qdot/stability.h"
@@ -38,11 +37,7 @@ typedef struct stab_run {
     cli_run c;
     stab_args a;
     qd_eom *e;
-    qd_steady *s;
-    char *driven;        /* the --driven items joined: "phi' = W, psi" */
-    qd_steady_given g;   /* the values held and the starting guesses */
-    qd_steady_set set;   /* every steady motion found */
-    qd_stability *an;    /* set.count analyses */
+    qd_stability_problem p;  /* the steady motions and their analyses */
 } stab_run;
 
 #define OPT(...) CLI_OPT(stab_args, __VA_ARGS__)
@@ -99,7 +94,7 @@ static int check(cli_run *c) {
 static int steady_error(const stab_run *r, const stab_args *a) {
     const qd_diag *d = qd_ctx_diag(r->c.ctx);
     const struct { const char *field, *opt, *text; } texts[] = {
-        {"ignore", "--ignore", a->ignore}, {"driven", "--driven", r->driven},
+        {"ignore", "--ignore", a->ignore}, {"driven", "--driven", r->p.driven},
         {"omega", "--omega", a->omega},    {"momentum", "--momentum", a->momentum},
         {"guess", "--guess", a->guess},    {"at", "--at", a->at},
     };
@@ -111,109 +106,37 @@ static int steady_error(const stab_run *r, const stab_args *a) {
     return cli_diag_ctx(r->c.ctx);
 }
 
-/* "a, b, c" of the --driven items, one list for the library. */
-static char *join(const char *const *items, size_t n) {
-    size_t len = 1;
-    for (size_t i = 0; i < n; i++)
-        len += strlen(items[i]) + 2;
-    char *s = malloc(len);
-    if (!s)
-        return NULL;
-    s[0] = '\0';
-    for (size_t i = 0; i < n; i++) {
-        strcat(s, i ? ", " : "");
-        strcat(s, items[i]);
-    }
-    return s;
-}
-
-static int prepare(stab_run *r, const stab_args *a) {
-    if (a->driven.n && !(r->driven = join(a->driven.items, a->driven.n)))
-        return cli_out_of_memory();
-    r->s = qd_steady_derive_named(r->c.ctx, r->c.mf.model, r->e, a->ignore ? "ignore" : "driven",
-                                  a->ignore ? a->ignore : r->driven, a->driven.n > 0);
-    if (!r->s)
-        return steady_error(r, a);
-    qd_steady_spec spec = {.rates = a->driven.n ? r->driven : a->omega,
-                           .rates_field = a->driven.n ? "driven" : "omega",
-                           .momenta = a->momentum, .guess = a->guess, .at = a->at};
-    if (qd_steady_given_read(r->c.ctx, r->s, r->c.mf.model, &spec, &r->g) != QD_OK)
-        return steady_error(r, a);
-    return QD_EXIT_OK;
-}
-
-/* Every steady motion and its analysis: the library has left out the
- * motions where the coordinates are singular (counted in set.nsingular). */
-static int solve(stab_run *r) {
-    const qd_steady_given *g = &r->g;
-    if (qd_steady_find_all(r->c.ctx, r->s, g->nvals, g->syms, g->vals, g->xfix, g->wfix, g->pfix,
-                           g->pguess, &g->start, &r->set) != QD_OK)
-        return cli_diag_ctx(r->c.ctx);
-    r->an = calloc(r->set.count + 1, sizeof *r->an);
-    if (!r->an)
-        return cli_out_of_memory();
-    for (size_t k = 0; k < r->set.count; k++)
-        if (qd_stability_analyze(r->c.ctx, r->s, g->nvals, g->syms, g->vals, &r->set.pts[k],
-                                 &r->an[k]) != QD_OK)
-            return cli_diag_ctx(r->c.ctx);
-    return QD_EXIT_OK;
-}
-
-/* ---- --scan ------------------------------------------------------------------ */
-
-/* Column names: the kept coordinates, Q' and p_Q (qd_steady_unknown_name),
- * into one block of text. */
-static char *scan_names(const qd_steady *s, size_t nu, const char **names) {
-    size_t len = 0;
-    for (size_t k = 0; k < nu; k++)
-        len += qd_steady_unknown_name(s, k, NULL, 0) + 1;
-    char *text = malloc(len + 1), *at = text;
-    for (size_t k = 0; text && k < nu; k++) {
-        size_t n = qd_steady_unknown_name(s, k, at, len + 1 - (size_t)(at - text));
-        names[k] = at;
-        at += n + 1;
-    }
-    return text;
-}
-
-/* The steady motion followed along a parameter: a table and the changes of
- * its stability. */
+/* The steady motion followed along a parameter (qd_stability_problem_scan):
+ * a table and the changes of its stability. */
 static int scan(stab_run *r, const stab_args *a) {
     char name[128];
     double lo, hi;
-    int rc = cli_scan_range(r->c.ctx, a->scan, name, sizeof name, &lo, &hi);
-    size_t nu = r->s->nkeep + 2 * r->s->ncyc;
-    const char **names = calloc(nu + 1, sizeof *names);
-    char *text = names ? scan_names(r->s, nu, names) : NULL;
-    if (!names || !text)
-        rc = QD_EXIT_FAIL;
-    const qd_steady_given *g = &r->g;
-    qd_scan_opts o = {.steps = a->steps, .about = g->held};
+    qd_ctx *ctx = r->c.ctx;
+    int rc = cli_scan_range(ctx, a->scan, name, sizeof name, &lo, &hi);
     qd_scan sc = {0};
-    if (rc == QD_EXIT_OK && qd_stability_scan(r->c.ctx, r->s, r->c.mf.model, name, lo, hi, g->xfix,
-                                              g->wfix, g->pfix, g->pguess, &g->start, &o,
-                                              &sc) != QD_OK) {
-        rc = cli_exit(qd_ctx_status(r->c.ctx));
-        cli_diag_error("--scan: %s", qd_ctx_message(r->c.ctx));
+    qd_buf b = QD_BUF_INIT;
+    qd_status st = QD_OK;
+    if (rc == QD_EXIT_OK && qd_stability_problem_scan(ctx, &r->p, r->c.mf.model, name, lo, hi,
+                                                      a->steps, &sc) != QD_OK) {
+        rc = cli_exit(qd_ctx_status(ctx));
+        cli_diag_error("--scan: %s", qd_ctx_message(ctx));
+    } else if (rc == QD_EXIT_OK &&
+               (st = qd_stability_scan_write(ctx, &r->p, name, &sc, a->json, &b)) != QD_OK) {
+        cli_diag_error("cannot print the scan: %s", st == QD_ERR_NOMEM ? "out of memory"
+                                                                     : "a number JSON cannot hold");
+        rc = QD_EXIT_FAIL;
     } else if (rc == QD_EXIT_OK) {
-        qd_buf followed = QD_BUF_INIT;
-        if (qd_stability_scan_followed(r->s, sc.damped, &followed) != QD_OK) {
-            rc = cli_out_of_memory();
-        } else {
-            cli_scan_view v = {name, names, qd_buf_str(&followed), "steady_motion"};
-            rc = cli_scan_emit(&v, &sc, a->json);
-        }
-        qd_buf_free(&followed);
+        rc = cli_emit(&b, "scan");
     }
+    qd_buf_free(&b);
     qd_scan_free(&sc);
-    free(names);
-    free(text);
     return rc;
 }
 
 static int emit(stab_run *r, bool json) {
     qd_buf b = QD_BUF_INIT;
-    qd_stability_report rep = {r->s, &r->g, &r->set, r->an, r->c.mf.path};
+    const qd_stability_problem *p = &r->p;
+    qd_stability_report rep = {p->s, &p->given, &p->set, p->an, r->c.mf.path};
     if (qd_stability_print(r->c.ctx, &rep, json, &b) != QD_OK) {
         qd_buf_free(&b);
         return cli_diag_ctx(r->c.ctx);
@@ -225,24 +148,22 @@ static int run(cli_run *c) {
     stab_run *r = (stab_run *)c;
     int rc = cli_load_derive(c->ctx, c->file, r->a.sets.n, r->a.sets.items, "stability", NULL, &c->mf,
                              &r->e);
-    if (rc == QD_EXIT_OK)
-        rc = prepare(r, &r->a);
-    if (rc == QD_EXIT_OK)
-        rc = r->a.scan ? scan(r, &r->a) : solve(r);
-    if (rc == QD_EXIT_OK && !r->a.scan)
-        rc = emit(r, r->a.json);
-    return rc;
+    const stab_args *a = &r->a;
+    qd_stability_spec ss = {a->ignore, (const char *const *)a->driven.items, a->driven.n,
+                            a->momentum, a->omega, a->at, a->guess};
+    if (rc == QD_EXIT_OK && qd_stability_problem_read(c->ctx, c->mf.model, r->e, &ss, &r->p) !=
+                                QD_OK)
+        rc = steady_error(r, a);
+    if (rc == QD_EXIT_OK && a->scan)
+        return scan(r, a);
+    if (rc == QD_EXIT_OK && qd_stability_problem_solve(c->ctx, &r->p) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
+    return rc == QD_EXIT_OK ? emit(r, a->json) : rc;
 }
 
 static void run_free(cli_run *c) {
     stab_run *r = (stab_run *)c;
-    for (size_t k = 0; r->an && k < r->set.count; k++)
-        qd_stability_free(&r->an[k]);
-    free(r->an);
-    qd_steady_set_free(&r->set);
-    qd_steady_given_free(&r->g);
-    qd_steady_free(r->s);
-    free(r->driven);
+    qd_stability_problem_free(&r->p);
     qd_eom_free(r->e);
 }
 

@@ -65,8 +65,8 @@ static int level_at(zvc_run *r, const char *what, const char *text, bool rest) {
         return QD_EXIT_FAIL;
     int rc = cli_lin_point(lr, what, text, r->q, rest ? NULL : qd);
     if (rc == QD_EXIT_OK) {
-        cli_lin_set_state(lr, r->q, qd);
-        if (qd_eval(lr->c.ctx, rest ? r->z.W : r->z.h, lr->st.n, lr->st.syms, lr->st.vals,
+        qd_linpoint_set(&lr->pt, r->q, qd);
+        if (qd_eval(lr->c.ctx, rest ? r->z.W : r->z.h, lr->pt.st.n, lr->pt.st.syms, lr->pt.st.vals,
                     &r->level) != QD_OK || !isfinite(r->level)) {
             qd_ctx_clear_error(lr->c.ctx);
             rc = cli_usage_error("%s: Jacobi's integral has no finite value there", what);
@@ -109,11 +109,11 @@ static int picture(zvc_run *r, const zvc_args *a) {
     int rc = read_level(r, a);
     if (rc != QD_EXIT_OK)
         return rc;
-    cli_lin_set_state(lr, r->q, NULL);
+    qd_linpoint_set(&lr->pt, r->q, NULL);
     r->box.nx = r->box.ny = a->cells ? a->cells : 400;
     /* csv holds the curves only: no equilibria sought */
-    if (qd_zvc_picture_make(lr->c.ctx, lr->c.mf.model, lr->e, &r->z, &r->box, lr->st.n,
-                            lr->st.syms, lr->st.vals, r->level, !csv,
+    if (qd_zvc_picture_make(lr->c.ctx, lr->c.mf.model, lr->e, &r->z, &r->box, lr->pt.st.n,
+                            lr->pt.st.syms, lr->pt.st.vals, r->level, !csv,
                             &r->pic) != QD_OK)
         return cli_diag_ctx(lr->c.ctx);
     return QD_EXIT_OK;

@@ -10,6 +10,7 @@
 #include "driver.h"
 #include "qdot/json.h"
 #include "qdot/equilibria.h"
+#include "qdot/linpoint.h"
 #include "qdot/modes.h"
 #include "state.h"
 
@@ -18,8 +19,7 @@
 typedef struct cli_lin_run {
     cli_run c;          /* first: a driven command's run state may start with this */
     qd_eom *e;
-    cli_state st;       /* the model's state: coordinates 0, parameters at their values */
-    size_t *slot;      /* e->n: the slot in st of each coordinate of the equations */
+    qd_linpoint pt;     /* the model's state and the slots of e's coordinates */
 } cli_lin_run;
 
 /* Load FILE, apply the --set list, derive, fill the state. */
@@ -29,22 +29,13 @@ int cli_lin_load(cli_lin_run *r, const char *file, const char *const *sets, size
 int cli_lin_load_model(cli_lin_run *r, const char *file, const char *const *sets,
                        size_t nsets);
 int cli_lin_derive(cli_lin_run *r);
-/* The state and slots for equations r->e already derived (cli_lin_derive's
- * second half). */
+/* The point for equations r->e already derived (cli_lin_derive's second
+ * half: qd_linpoint_init). */
 int cli_lin_setup(cli_lin_run *r);
 void cli_lin_free(cli_lin_run *r);
-/* The equations' coordinates may be fewer than the model's (constraints
- * eliminated): arrays of values here have e->n entries in the order of e->q.
- * "q1=VALUE, q1'=VALUE, ..." (what: "--initial"): the values named go to q
- * and qd (the others keep theirs); velocities are refused when qd is NULL,
- * and so are t, parameters and eliminated coordinates. */
+/* qd_linpoint_read (qd NULL: qd_linpoint_read_coords) of the option what's
+ * text ("--initial"), its error shown under that text. */
 int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q, double *qd);
-/* "q1=VALUE, ..." (what: "--near"): coordinate values (unnamed ones 0). */
-int cli_lin_coords(cli_lin_run *r, const char *what, const char *text, double *q);
-/* Put q and qd (NULL: at rest) into st at the coordinates' slots. */
-void cli_lin_set_state(cli_lin_run *r, const double *q, const double *qd);
-/* "q1=A:B, ...": the box; unnamed coordinates keep lo/hi as given. */
-int cli_lin_box(cli_lin_run *r, const char *text, double *lo, double *hi);
 /* Equilibria with the options (near, box may be NULL). */
 int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out);
 
@@ -81,9 +72,6 @@ typedef qd_scan_view cli_scan_view; /* qdot/modes.h */
 /* A table of the samples and the transitions (text), or JSON: parameter,
  * range, steps, samples, transitions. */
 int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json);
-/* "x = 1/2 - mu, ...": an expression in the parameters for each coordinate
- * (e->n; unnamed ones 0). */
-int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about);
 /* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json);
 

@@ -14,11 +14,11 @@ int cli_modes_plot(cli_lin_run *lr, const double *q0, const qd_modes_result *res
     if (!res->conservative || !res->shapes)
         return cli_usage_error("modes --plot draws mode shapes, which a system with damping or "
                                "gyroscopic terms does not have (its modes are complex)");
-    cli_lin_set_state(lr, q0, NULL);
+    qd_linpoint_set(&lr->pt, q0, NULL);
     const char *slash = strrchr(title, '/');
     qd_plot *p = NULL;
-    qd_status st = qd_modes_plot(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
-                                 lr->st.vals, res, slash ? slash + 1 : title, &p);
+    qd_status st = qd_modes_plot(lr->c.ctx, lr->e, lr->c.mf.model, lr->pt.st.n, lr->pt.st.syms,
+                                 lr->pt.st.vals, res, slash ? slash + 1 : title, &p);
     if (st == QD_OK)
         st = qd_plot_write(p, file);
     qd_plot_free(p);

@@ -44,8 +44,8 @@ int cli_sym_compute(cli_lin_run *lr, const qd_linear *lin, cli_sym_run *s) {
     size_t cell = qd_symmetry_fast_cell(lin);
     if (cell)
         return fast_path(lr, lin, cell, s);
-    qd_status st = qd_symmetry_find(lr->c.ctx, lr->e, lr->c.mf.model, lr->st.n, lr->st.syms,
-                                    lr->st.vals, lin, &s->sym);
+    qd_status st = qd_symmetry_find(lr->c.ctx, lr->e, lr->c.mf.model, lr->pt.st.n, lr->pt.st.syms,
+                                    lr->pt.st.vals, lin, &s->sym);
     if (st == QD_ERR_NOMEM)
         return cli_out_of_memory();
     if (st != QD_OK) {

@@ -21,14 +21,6 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
     return QD_EXIT_OK;
 }
 
-/* --about "x = 1/2 - mu, ...": exact values in the equations' coordinates. */
-int cli_scan_about(cli_lin_run *r, const char *text, const qd_expr **about) {
-    if (qd_state_read_point(r->c.ctx, r->c.mf.model, &r->st, text, r->e->n, r->e->q, about) !=
-        QD_OK)
-        return cli_state_diag(r->c.ctx, "--about", text);
-    return QD_EXIT_OK;
-}
-
 /* ---- the command ------------------------------------------------------------------- */
 
 int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json) {
@@ -52,7 +44,10 @@ int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t 
         rc = QD_EXIT_FAIL;
     if (rc == QD_EXIT_OK && about) {
         ab = calloc(r->e->n + 1, sizeof *ab);
-        rc = ab ? cli_scan_about(r, about, ab) : QD_EXIT_FAIL;
+        rc = !ab ? cli_out_of_memory()
+             : qd_linpoint_read_exact(r->c.ctx, &r->pt, about, ab) == QD_OK
+                 ? QD_EXIT_OK
+                 : cli_state_diag(r->c.ctx, "--about", about);
     }
     qd_scan_opts o = {.steps = steps, .about = ab};
     qd_scan sc = {0};

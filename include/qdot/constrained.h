@@ -98,6 +98,29 @@ QD_API qd_status qd_constrained_input_matrix(qd_ctx *ctx, const qd_eom *e,
                                              const qd_expr *const *syms, const double *vals,
                                              double *B);
 
+/* ---- the analysis at a point (src/linear/constrained_at.c) ---------------
+ * What `qdot modes` and `qdot linearize` compute on the manifold. */
+typedef struct qd_constrained_at {
+    qd_constrained_linear c;  /* the reduction (qd_constrained_linear_about) */
+    qd_modes_result res;      /* qd_modes_solve(c.lin) */
+    size_t nu;                /* m's inputs (with statespace) */
+    const qd_expr **u;        /* nu: the inputs, or NULL */
+    double *A, *B;            /* with statespace: 2r*2r and 2r*nu (the matrices above), else
+                                 NULL */
+} qd_constrained_at;
+
+/* The reduction about the point syms/vals (arguments as for
+ * qd_constrained_linear_about), its modes and, when statespace, the
+ * state-space matrices with m's inputs.  The errors of the calls: QD_ERR_ARG
+ * and QD_ERR_UNSUPPORTED come only from the reduction (a point or a model
+ * it does not take).  Free with qd_constrained_at_free (also after a
+ * failure). */
+QD_API qd_status qd_constrained_at_solve(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                         size_t nvals, const qd_expr *const *syms,
+                                         const double *vals, const size_t *indep,
+                                         bool statespace, qd_constrained_at *out);
+QD_API void qd_constrained_at_free(qd_constrained_at *a);
+
 /* ---- the independent coordinates named (src/linear/constrained_read.c) -- */
 
 /* The independent coordinates named in text, "x, y" (names of e's
@@ -182,6 +205,7 @@ QD_API qd_status qd_constrained_equilibria_find(qd_ctx *ctx, const qd_eom *e, co
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_constrained_linear_about (indep);
+ * qd_constrained_at_solve (indep);
  * qd_constrained_equilibria_find (opts). An array whose count is 0 may be
  * NULL (qd_constrained_statespace: u and B when nu is 0). */
 #endif

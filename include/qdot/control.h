@@ -110,6 +110,23 @@ typedef struct qd_matrix {
 QD_API qd_status qd_matrix_read(qd_ctx *ctx, const char *text, qd_matrix *out);
 QD_API void qd_matrix_free(qd_matrix *m); /* NULL is fine */
 
+/* ---- a system given as text (src/linear/lqr_system.c) ------------------- */
+
+/* x' = A x + B u and its LQR weights, as `qdot lqr` takes them. */
+typedef struct qd_lqr_system {
+    qd_matrix A, B;          /* n*n, n*m */
+    double *Q, *R;           /* n*n, m*m */
+} qd_lqr_system;
+
+/* A and B by qd_matrix_read, the weights by qd_lqr_weights_read, into *out
+ * (overwritten; qd_lqr_system_free, also after a failure).  Each error
+ * names its text (qd_diag.name "A", "B" or "weights"): the readers'
+ * QD_ERR_PARSE located in it, QD_ERR_ARG for an A that is not square or a
+ * B without one row per state. */
+QD_API qd_status qd_lqr_system_read(qd_ctx *ctx, const char *A, const char *B,
+                                    const char *weights, qd_lqr_system *out);
+QD_API void qd_lqr_system_free(qd_lqr_system *s);
+
 /* ---- LQR on a model (src/linear/lqr_model.c) ----------------------------- */
 
 /* The LQR design on s (qd_linearize of a model about a point) for the

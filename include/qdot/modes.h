@@ -38,6 +38,7 @@ extern "C" {
 struct qd_speeds_eom;    /* qdot/speeds.h */
 struct qd_symmetry;      /* qdot/symmetry.h */
 struct qd_cyclic_modes;  /* qdot/symmetry.h */
+struct qd_linpoint;      /* qdot/linpoint.h */
 
 /* The linearization about a state: M q'' + (C + G) q' + K q = 0 (n*n
  * row-major numbers each, malloc'd; qd_linear_free). */
@@ -177,6 +178,19 @@ QD_API qd_status qd_modes_at_solve(qd_ctx *ctx, const qd_eom *e, const qd_model 
                                    const qd_expr *const *syms, const double *vals,
                                    qd_modes_at *at);
 QD_API void qd_modes_at_free(qd_modes_at *at); /* NULL is fine */
+/* Step 1 from text, as `qdot modes` takes it: about "q1=VALUE, ..." (the
+ * unnamed coordinates 0; qd_linpoint_read_coords, its errors located in
+ * about), or NULL: qd_modes_at_point at_equilibrium with p's state. */
+QD_API qd_status qd_modes_at_choose(qd_ctx *ctx, const struct qd_linpoint *p, const char *about,
+                                    size_t at_equilibrium, qd_modes_at *out);
+/* After step 2, the motion from initial values: the state read from text
+ * "q1=VALUE, q1'=VALUE, ..." (qd_linpoint_read, its errors located in text;
+ * the unnamed coordinates at at->q0, velocities 0) in the normal
+ * coordinates Q, Qd (e->n each, qd_modes_normal_coords).  QD_ERR_ARG, not
+ * located, when at's modes are not conservative. */
+QD_API qd_status qd_modes_at_initial(qd_ctx *ctx, const struct qd_linpoint *p,
+                                     const qd_modes_at *at, const char *text, double *Q,
+                                     double *Qd);
 
 /* ---- the modes printed (src/linear/modes_print.c) ------------------------- */
 
@@ -460,6 +474,6 @@ QD_API qd_status qd_modes_plot(qd_ctx *ctx, const qd_eom *e, const qd_model *m, 
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_modes_scan (opts);
+ * documented at the function, for: qd_modes_scan (opts); qd_modes_at_choose (about);
  * qd_speeds_modes_scan (opts). An array whose count is 0 may be NULL. */
 #endif

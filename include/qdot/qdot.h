@@ -22,6 +22,7 @@
 #include "codegen.h"
 #include "equilibria.h"
 #include "modes.h"
+#include "linpoint.h"     /* issue 31: the point of a linear analysis */
 #include "routh.h"
 #include "stability.h"
 #include "control.h"

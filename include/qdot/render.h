@@ -89,6 +89,39 @@ QD_API qd_status qd_render_speeds(qd_ctx *ctx, const qd_model *m, const qd_speed
 QD_API qd_status qd_render_hamel(qd_ctx *ctx, const qd_speeds_eom *e, qd_render_format fmt,
                                  qd_buf *out);
 
+/* ---- `qdot eom` as one call (src/render/eom_request.c) ------------------- */
+
+/* What to print of a model's equations: in its speeds when it declares
+ * `speeds` (qd_speeds_derive with speeds), else Lagrange's. */
+typedef struct qd_eom_request {
+    qd_render_format fmt;
+    const char *source;      /* the model's name (qd_render_opts.source) */
+    const char *at;          /* the numbers at a state "q=..., q'=..., t=..." (with speeds
+                                qd_speeds_state_read's), or NULL: the expressions */
+    bool solve;              /* without at: q'' (u') solved symbolically; a solution larger
+                                than max_ops operations an entry leaves M and f, with a note */
+    size_t max_ops;
+    bool eliminate;          /* coordinates: qd_eom_opts.eliminate */
+    qd_speeds_opts speeds;   /* speeds: the method, S and the multipliers */
+    bool hamel;              /* speeds: Hamel's coefficients (qd_render_hamel) instead */
+} qd_eom_request;
+
+/* The step of qd_eom_request_render that failed. */
+typedef enum qd_eom_step {
+    QD_EOM_STEP_NONE,
+    QD_EOM_STEP_DERIVE,      /* the derivation (the model's fault: its errors) */
+    QD_EOM_STEP_AT,          /* the state read: located in rq->at */
+    QD_EOM_STEP_SOLVE,       /* solving for q'' or u' */
+    QD_EOM_STEP_RENDER
+} qd_eom_step;
+
+/* Derive m's equations as rq says and append their rendering to out, the
+ * notes (one line each with its newline: a solution too large, the
+ * renderer's) to notes.  *failed (may be NULL) names the step that failed,
+ * QD_EOM_STEP_NONE on success; the errors are that step's. */
+QD_API qd_status qd_eom_request_render(qd_ctx *ctx, const qd_model *m, const qd_eom_request *rq,
+                                       qd_buf *out, qd_buf *notes, qd_eom_step *failed);
+
 /* The verdict of `qdot check` from the model's numbers (qd_eom_audit at
  * the parameters' values and the initial state): ok, or a certified "no"
  * with its witness.  reason is a machine code next to the English message:

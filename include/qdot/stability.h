@@ -226,6 +226,53 @@ QD_API qd_status qd_stability_analyze(qd_ctx *ctx, const qd_steady *s, size_t nv
                                const qd_steady_point *pt, qd_stability *out);
 QD_API void qd_stability_free(qd_stability *st);
 
+/* ---- the whole problem stated by name (src/linear/stability_problem.c) ----
+ * What `qdot stability` and Python state: the cyclic coordinates, the values
+ * held and the guesses as text (each NULL when not given). */
+typedef struct qd_stability_spec {
+    const char *ignore;          /* free momenta: the cyclic coordinates "phi, psi" */
+    const char *const *driven;   /* or maintained rates: ndriven items "phi' = W", "psi" */
+    size_t ndriven;
+    const char *momentum;        /* free only: held momenta "p_phi = 3" */
+    const char *omega;           /* free only: held rates "phi' = 2" */
+    const char *at, *guess;      /* held kept coordinates; starting values (qd_steady_spec) */
+} qd_stability_spec;
+
+typedef struct qd_stability_problem {
+    qd_steady *s;
+    char *driven;                /* the driven items joined, "phi' = W, psi": the text
+                                    an error of field "driven" is located in */
+    qd_steady_given given;
+    qd_steady_set set;           /* qd_stability_problem_solve: every motion ... */
+    qd_stability *an;            /* ... and set.count analyses */
+} qd_stability_problem;
+
+/* qd_steady_derive_named and qd_steady_given_read of spec for model m
+ * derived as e, into *out (overwritten; free it with
+ * qd_stability_problem_free, also after a failure).  Their errors, each
+ * naming its field (qd_diag.name: "ignore", "driven", "omega", "momentum",
+ * "guess", "at") and located in its text; QD_ERR_ARG, not located, when not
+ * exactly one of ignore and driven is given, or momentum or omega with
+ * driven. */
+QD_API qd_status qd_stability_problem_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                           const qd_stability_spec *spec,
+                                           qd_stability_problem *out);
+/* Every steady motion (qd_steady_find_all) and the analysis of each
+ * (qd_stability_analyze) into p->set and p->an; their errors. */
+QD_API qd_status qd_stability_problem_solve(qd_ctx *ctx, qd_stability_problem *p);
+/* qd_stability_scan of p's motion along param from a to b (steps as
+ * qd_scan_opts'), the held values following their expressions. */
+QD_API qd_status qd_stability_problem_scan(qd_ctx *ctx, const qd_stability_problem *p,
+                                           const qd_model *m, const char *param, double a,
+                                           double b, size_t steps, qd_scan *out);
+/* A scan sc of p along param printed by qd_scan_print (json: qd_scan_json)
+ * with the columns qd_steady_unknown_name and qd_stability_scan_followed's
+ * line; their errors (QD_ERR_NOMEM also when out ran out of memory). */
+QD_API qd_status qd_stability_scan_write(qd_ctx *ctx, const qd_stability_problem *p,
+                                         const char *param, const qd_scan *sc, bool json,
+                                         qd_buf *out);
+QD_API void qd_stability_problem_free(qd_stability_problem *p);
+
 /* ---- the report (src/linear/stability_print.c) --------------------------- */
 
 /* Every steady motion found and its analysis, for printing. */

@@ -83,6 +83,13 @@ QD_API qd_status qd_linearize(qd_ctx *ctx, const qd_eom *e, const qd_model *m, s
                               const qd_expr *const *syms, const qd_expr *const *vals,
                               qd_statespace *out);
 QD_API void qd_statespace_free(qd_statespace *s);
+/* qd_linearize about a point written "q=V, q'=V, F=V, ..." (about NULL:
+ * every value 0): coordinates, velocities, m's inputs and t, each value
+ * kept exact (qd_state_read's exact values: pi/6 stays pi/6).  The reader's
+ * errors located in about; then qd_linearize's (a parameter named is its
+ * QD_ERR_ARG).  Free out with qd_statespace_free (also after a failure). */
+QD_API qd_status qd_linearize_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                    const char *about, qd_statespace *out);
 
 /* ---- the state-space form printed (src/linear/statespace_print.c) -------- */
 
@@ -142,7 +149,7 @@ QD_API qd_status qd_statespace_render(qd_ctx *ctx, const qd_statespace *s,
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_linearize (syms, vals);
+ * documented at the function, for: qd_linearize (syms, vals); qd_linearize_about (about);
  * qd_statespace_render (lqr). An array whose
  * count is 0 may be NULL. */
 #endif

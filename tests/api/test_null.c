@@ -32,6 +32,7 @@
 #include "qdot/impulse.h"
 #include "qdot/integrals.h"
 #include "qdot/json.h"
+#include "qdot/linpoint.h"
 #include "qdot/lyapunov.h"
 #include "qdot/mech.h"
 #include "qdot/metric.h"
@@ -693,6 +694,29 @@ static void null_constrained(void **state)
     /* B NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_input_matrix(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e, F.d, NULL));
     reset(&F);
+    /* ---- qd_constrained_at_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_at_solve(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, F.z, false, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_at_solve(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, F.z, false, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_at_solve(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, F.z, false, NULL));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_at_solve(F.ctx, F.eom, F.model, 1, NULL, F.d, F.z, false, NULL));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_at_solve(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, F.z, false, NULL));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_constrained_at_solve(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, F.z, false, NULL));
+    reset(&F);
+    /* ---- qd_constrained_at_free */
+    /* a NULL */
+    qd_constrained_at_free(NULL);
+    reset(&F);
     /* ---- qd_constrained_indep_read */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_indep_read(NULL, F.eom, "q", F.z));
@@ -830,6 +854,26 @@ static void null_control(void **state)
     /* ---- qd_matrix_free */
     /* m NULL */
     qd_matrix_free(NULL);
+    reset(&F);
+    /* ---- qd_lqr_system_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(NULL, "q", "q", "q", (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* A NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, NULL, "q", "q", (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* B NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, "q", NULL, "q", (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* weights NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, "q", "q", NULL, (qd_lqr_system *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_lqr_system_read(F.ctx, "q", "q", "q", NULL));
+    reset(&F);
+    /* ---- qd_lqr_system_free */
+    /* s NULL */
+    qd_lqr_system_free(NULL);
     reset(&F);
     /* ---- qd_lqr_design */
     /* ctx NULL */
@@ -2129,6 +2173,93 @@ static void null_json(void **state)
     teardown(&F);
 }
 
+static void null_linpoint(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_linpoint_init */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_init(NULL, F.model, F.eom, (qd_linpoint *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_init(F.ctx, NULL, F.eom, (qd_linpoint *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_init(F.ctx, F.model, NULL, (qd_linpoint *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_init(F.ctx, F.model, F.eom, NULL));
+    reset(&F);
+    /* ---- qd_linpoint_free */
+    /* p NULL */
+    qd_linpoint_free(NULL);
+    reset(&F);
+    /* ---- qd_linpoint_set */
+    /* p NULL */
+    qd_linpoint_set(NULL, F.d, F.d);
+    reset(&F);
+    /* q NULL */
+    qd_linpoint_set(NULL, NULL, F.d);
+    reset(&F);
+    /* ---- qd_linpoint_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read(NULL, NULL, "q", F.d, F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read(F.ctx, NULL, "q", F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read(F.ctx, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read(F.ctx, NULL, "q", NULL, F.d));
+    reset(&F);
+    /* ---- qd_linpoint_read_coords */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_coords(NULL, NULL, "q", F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_coords(F.ctx, NULL, "q", F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_coords(F.ctx, NULL, NULL, F.d));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_coords(F.ctx, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_linpoint_read_box */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_box(NULL, NULL, "q", F.d, F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_box(F.ctx, NULL, "q", F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_box(F.ctx, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* lo NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_box(F.ctx, NULL, "q", NULL, F.d));
+    reset(&F);
+    /* hi NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_box(F.ctx, NULL, "q", F.d, NULL));
+    reset(&F);
+    /* ---- qd_linpoint_read_exact */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_exact(NULL, NULL, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_exact(F.ctx, NULL, "q", (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_exact(F.ctx, NULL, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* about NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_read_exact(F.ctx, NULL, "q", NULL));
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_lyapunov(void **state)
 {
     (void)state;
@@ -3109,6 +3240,32 @@ static void null_modes(void **state)
     /* ---- qd_modes_at_free */
     /* at NULL */
     qd_modes_at_free(NULL);
+    reset(&F);
+    /* ---- qd_modes_at_choose */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_choose(NULL, NULL, "q", 1, (qd_modes_at *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_choose(F.ctx, NULL, "q", 1, (qd_modes_at *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_choose(F.ctx, NULL, "q", 1, NULL));
+    reset(&F);
+    /* ---- qd_modes_at_initial */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_initial(NULL, NULL, NULL, "q", F.d, F.d));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_initial(F.ctx, NULL, NULL, "q", F.d, F.d));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_initial(F.ctx, NULL, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_initial(F.ctx, NULL, NULL, "q", NULL, F.d));
+    reset(&F);
+    /* Qd NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_at_initial(F.ctx, NULL, NULL, "q", F.d, NULL));
     reset(&F);
     /* ---- qd_modes_print */
     /* ctx NULL */
@@ -4276,6 +4433,22 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_hamel(F.ctx, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_eom_request_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(NULL, F.model, NULL, &F.buf, &F.buf, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, NULL, NULL, &F.buf, &F.buf, NULL));
+    reset(&F);
+    /* rq NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, F.model, NULL, &F.buf, &F.buf, NULL));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, F.model, NULL, NULL, &F.buf, NULL));
+    reset(&F);
+    /* notes NULL */
+    assert_int_equal(QD_ERR_ARG, qd_eom_request_render(F.ctx, F.model, NULL, &F.buf, NULL, NULL));
     reset(&F);
     /* ---- qd_check_verdict_of */
     /* ctx NULL */
@@ -5546,6 +5719,62 @@ static void null_stability(void **state)
     /* st NULL */
     qd_stability_free(NULL);
     reset(&F);
+    /* ---- qd_stability_problem_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_read(NULL, F.model, F.eom, NULL, (qd_stability_problem *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_read(F.ctx, NULL, F.eom, NULL, (qd_stability_problem *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_read(F.ctx, F.model, NULL, NULL, (qd_stability_problem *)(void *)F.blob));
+    reset(&F);
+    /* spec NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_read(F.ctx, F.model, F.eom, NULL, (qd_stability_problem *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_read(F.ctx, F.model, F.eom, NULL, NULL));
+    reset(&F);
+    /* ---- qd_stability_problem_solve */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_solve(NULL, NULL));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_solve(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_stability_problem_scan */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_scan(NULL, NULL, F.model, "q", 1, 1, 1, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_scan(F.ctx, NULL, F.model, "q", 1, 1, 1, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_scan(F.ctx, NULL, NULL, "q", 1, 1, 1, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* param NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_scan(F.ctx, NULL, F.model, NULL, 1, 1, 1, (qd_scan *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_problem_scan(F.ctx, NULL, F.model, "q", 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_stability_scan_write */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_write(NULL, NULL, "q", NULL, false, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_write(F.ctx, NULL, "q", NULL, false, &F.buf));
+    reset(&F);
+    /* param NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_write(F.ctx, NULL, NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_stability_scan_write(F.ctx, NULL, "q", NULL, false, NULL));
+    reset(&F);
+    /* ---- qd_stability_problem_free */
+    /* p NULL */
+    qd_stability_problem_free(NULL);
+    reset(&F);
     /* ---- qd_stability_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_stability_print(NULL, NULL, false, &F.buf));
@@ -5781,6 +6010,19 @@ static void null_statespace(void **state)
     /* ---- qd_statespace_free */
     /* s NULL */
     qd_statespace_free(NULL);
+    reset(&F);
+    /* ---- qd_linearize_about */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(NULL, F.eom, F.model, "q", (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(F.ctx, NULL, F.model, "q", (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(F.ctx, F.eom, NULL, "q", (qd_statespace *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linearize_about(F.ctx, F.eom, F.model, "q", NULL));
     reset(&F);
     /* ---- qd_statespace_render */
     /* ctx NULL */
@@ -6368,6 +6610,7 @@ int main(void)
         cmocka_unit_test(null_impulse),
         cmocka_unit_test(null_integrals),
         cmocka_unit_test(null_json),
+        cmocka_unit_test(null_linpoint),
         cmocka_unit_test(null_lyapunov),
         cmocka_unit_test(null_mech),
         cmocka_unit_test(null_metric),
