@@ -144,6 +144,14 @@ def _load():
 lib, path = _load()
 NULL = ffi.NULL
 
+# The destructors are resolved now, not at their first call: in ABI mode
+# cffi builds a function on first access under its parser's lock, and a
+# __del__ run by the garbage collector inside ffi.new (which holds that
+# lock) would wait for it forever.
+for _name in dir(lib):
+    if _name.endswith(("_free", "_unload")):
+        getattr(lib, _name)
+
 QD_OK = lib.QD_OK
 QD_FMT_TEXT, QD_FMT_LATEX, QD_FMT_C, QD_FMT_SYMPY = (lib.QD_FMT_TEXT, lib.QD_FMT_LATEX,
                                                      lib.QD_FMT_C, lib.QD_FMT_SYMPY)
