@@ -24,6 +24,7 @@
 
 #include <math.h>
 
+#include "base/mem.h"
 #include "num/num.h"
 
 #define LAST 24e-13  /* 4! times the last Taylor term's bound, relative to the first */
@@ -132,6 +133,34 @@ static qd_status swept(qd_ctx *ctx, qd__orb_env *env, qd_orbit_result *r) {
     return st;
 }
 
+/* A fall into the centre whose ignored rate grows like 1/distance or
+ * faster there (V_eff = 2 lam r, its 1/r^2 terms cancelled, with angular
+ * momentum: theta' = p/r^2 while r' stays finite, Desloge ch. 58, seed C
+ * T9) turns infinitely often on the way: the advance diverges while the
+ * fall time is finite.  Told from a quadrature that failed otherwise by
+ * the integrand itself: x f(x) not falling as x nears the singular end. */
+static bool spirals(integrand *g) {
+    double L = g->hi - g->lo, f[3];
+    bool at_lo = !g->turn_lo; /* the singular end */
+    for (int k = 0; k < 3; k++) {
+        double d = L * pow(1e-3, k + 2); /* 1e-6, 1e-9, 1e-12 of the interval */
+        f[k] = d * integrand_fn(g, at_lo ? g->lo + d : g->hi - d, at_lo ? d : -d);
+        if (!isfinite(f[k]) || f[k] == 0)
+            return false;
+    }
+    return fabs(f[2]) >= 0.5 * fabs(f[1]) && fabs(f[1]) >= 0.5 * fabs(f[0]) &&
+           (f[0] > 0) == (f[2] > 0);
+}
+
+static qd_status spiral(qd_ctx *ctx, integrand *g, double *advance) {
+    bool at_lo = !g->turn_lo;
+    double d = (g->hi - g->lo) * 1e-9;
+    double f = integrand_fn(g, at_lo ? g->lo + d : g->hi - d, at_lo ? d : -d);
+    *advance = copysign(INFINITY, f);
+    qd__ctx_recover(ctx); /* the failed quadrature's message: the answer is infinity */
+    return QD_OK;
+}
+
 qd_status qd__orb_quadratures(qd_ctx *ctx, qd__orb_env *env, qd_orbit_result *r) {
     if (r->kind == QD_ORBIT_UNBOUND)
         return r->nturn == 1 && r->turn[0] == r->lo && isinf(r->hi) ? swept(ctx, env, r) : QD_OK;
@@ -153,6 +182,8 @@ qd_status qd__orb_quadratures(qd_ctx *ctx, qd__orb_env *env, qd_orbit_result *r)
         g.which = (int)i;
         st = integrate(ctx, &g, &v, &r->quad_error);
         r->advance[i] = twice * v;
+        if (st == QD_ERR_NUMERIC && !bound && spirals(&g))
+            st = spiral(ctx, &g, &r->advance[i]);
     }
     return st;
 }

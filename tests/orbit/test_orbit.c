@@ -614,6 +614,26 @@ static void test_heavy_top(void **state) {
 
 /* ---- errors ------------------------------------------------------------------------ */
 
+/* Desloge ch. 58, seed-desloge-C.md T9: V = 2 lam r - mu^2/(2 r^2) with
+ * p_theta = mu, so V_eff = 2 lam r: from rest at r = a the particle falls
+ * into the centre in sqrt(a/lam) with r' finite there and theta' = mu/r^2,
+ * so it turns infinitely often on the way.  The advance is infinite, not a
+ * failed quadrature (it was "did not converge", exit 1). */
+static void test_cancelled_centrifugal(void **state) {
+    (void)state;
+    fix f;
+    load(&f, "coordinates r, theta\nparameters lam = 0.8, mu = 1.1\n"
+             "particle 1 at r*(cos(theta), sin(theta))\nV = 2*lam*r - mu^2/(2*r^2)\n");
+    assert_int_equal(reduce(&f, THETA), QD_OK);
+    set(&f, "r", 2);
+    set(&f, "theta'", 1.1 / 4);
+    assert_int_equal(solve(&f, NULL), QD_OK);
+    assert_int_equal(f.r.kind, QD_ORBIT_CAPTURE);
+    near(f.r.fall_time, sqrt(2 / 0.8), 1e-9);
+    assert_true(isinf(f.r.advance[0]) && f.r.advance[0] > 0);
+    unload(&f);
+}
+
 /* ---- a reduced L not quadratic in r' ----------------------------------------- */
 
 /* The relativistic Kepler problem (seed-desloge-D.md T19; Desloge ch. 89
@@ -716,6 +736,7 @@ int main(void) {
         cmocka_unit_test(test_radial_infall),    cmocka_unit_test(test_yukawa_and_string),
         cmocka_unit_test(test_spherical_pendulum), cmocka_unit_test(test_planar_pendulum),
         cmocka_unit_test(test_heavy_top),        cmocka_unit_test(test_relativistic_kepler),
+        cmocka_unit_test(test_cancelled_centrifugal),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
