@@ -80,7 +80,8 @@ print("finished", flush=True)
 
 
 def test_sigint_to_a_long_run_raises_keyboard_interrupt():
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p),
+               QDOT_PROGRESS_DELAY="0")
     child = subprocess.Popen([sys.executable, "-c", CHILD, OSC], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=env)
     try:
@@ -93,6 +94,31 @@ def test_sigint_to_a_long_run_raises_keyboard_interrupt():
     assert child.returncode in (-signal.SIGINT, 130, 1), errs
     assert "KeyboardInterrupt: qdot: simulate: interrupted" in errs
     assert "Exception ignored" not in errs and "Sanitizer" not in errs
+    assert "qdot: simulate [" not in errs             # stderr not a terminal: no bar
+
+
+def test_progress_bar_on_a_terminal():
+    import pty
+    master, slave = pty.openpty()
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p),
+               QDOT_PROGRESS_DELAY="0")
+    code = ("import qdot; qdot.Model(%r).poincare(\"x = 0, x' > 0\", 200, rtol=1e-12)"
+            % OSCILLATOR)
+    child = subprocess.Popen([sys.executable, "-c", code], stderr=slave, env=env)
+    os.close(slave)
+    seen = b""
+    while True:
+        try:
+            chunk = os.read(master, 4096)
+        except OSError:  # the child closed its end
+            break
+        if not chunk:
+            break
+        seen += chunk
+    os.close(master)
+    assert child.wait(timeout=120) == 0, seen
+    assert b"qdot: poincare [" in seen and b"%" in seen
+    assert seen.endswith(b"\r")  # the bar cleared at the end, as the CLI clears it
 
 
 def cli_error(*args):
