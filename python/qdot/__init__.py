@@ -15,7 +15,7 @@ through QDOT_LIB, the build tree next to the package, the installed prefix,
 then the system's library path.
 """
 
-from ._core import Error, ModelError, NumericalError
+from ._core import Error, ArgumentError, ModelError, NumericalError
 from .commands import Output, Fields
 from .model import Model, Equations, Hamiltonian, Equilibrium, Equilibria, Mode, Modes
 from .sim import Result, Table, Rhs
@@ -24,7 +24,7 @@ from .control import StateSpace, Lqr, lqr
 from .relativity import lorentz, proper_time, collide
 from .forms import QuadraticForm, quadratic_form
 
-__all__ = ["Model", "ModelError", "NumericalError", "Error", "Output", "Fields",
+__all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
            "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
            "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form"]

@@ -11,6 +11,7 @@
 from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, QD_OK, QD_FMT_TEXT
 
 QD_ERR_NOMEM = lib.QD_ERR_NOMEM
+QD_ERR_ARG = lib.QD_ERR_ARG
 
 
 class Error(Exception):
@@ -39,6 +40,18 @@ class ModelError(Error):
         self.col = diag.col if diag.located else 0
         self.message = ffi.string(diag.message).decode()
         self.hint = ffi.string(diag.hint).decode()
+
+
+class ArgumentError(Error, ValueError):
+    """An argument the library refused (the CLI's "... (--exponents)"):
+    a qdot.Error that is also a ValueError, its message naming the
+    argument."""
+
+    __module__ = "qdot"
+
+
+# option fields (qd_diag.name) whose Model argument has another name
+_ARGUMENT = {"event": "events or stop_at", "no_speeds": "speeds"}
 
 
 class NumericalError(Error):
@@ -152,7 +165,9 @@ class Core:
         msg = ffi.string(diag.message).decode() or cstr(lib.qd_status_str(diag.status))
         name = ffi.string(diag.name).decode()
         if diag.subject == 0 and name:  # an option's field (qdot/sim.h): the argument
-            msg += " (the argument %s)" % name
+            msg += " (the argument %s)" % _ARGUMENT.get(name, name)
+            if cls is None and diag.status == QD_ERR_ARG:
+                cls = ArgumentError
         return (cls or Error)(msg, diag.status)
 
     def check(self, status, cls=None):

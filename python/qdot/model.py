@@ -1172,7 +1172,7 @@ class Model:
     def lyapunov(self, t_end, exponents=1, renorm=None, transient=None, method=None,
                  rtol=None, atol=None, dt=None, initial=None, max_steps=0, speeds=True):
         """The largest Lyapunov exponents of the motion from the initial
-        state (`qdot lyapunov --format json`, qd_lyap_run_stats and
+        state (`qdot lyapunov --format json`, qd_lyap_setup_run and
         qd_lyap_json): a qdot.Output with the JSON's keys (exponents,
         errors, sum, ...).  exponents: how many (1 .. 2n); renorm: the time
         between renormalizations (1); transient: the time run first (0);

@@ -17,6 +17,7 @@ import numpy as np
 from ._core import (QD_ERR_NOMEM, Error, ModelError, format_diag, name_of, number_expr,
                     take_error)
 from ._lib import ffi, lib, new, cstr, exprs, doubles, buf_text, QD_OK
+from ._progress import Run
 
 
 class Table:
@@ -178,21 +179,13 @@ class _InputFn:
             return float("nan")
 
 
-def _input_names(core):
-    """The names of the model's inputs, in declaration order."""
-    m = core.model
-    return [name_of(lib.qd_model_input(m, k)) for k in range(lib.qd_model_ninputs(m))]
-
-
 def _add_inputs(core, setup, s, inputs):
     """Each input's source: a number (constant), text (an expression in t,
     the state and the parameters, read as --input reads it) or a callable
-    f(t, y); the list of _InputFn, which must outlive the run."""
-    names, fns = _input_names(core), []
+    f(t, y); the list of _InputFn, which must outlive the run.  A name that
+    is not an input is the library's refusal, as --input's."""
+    fns = []
     for name, value in inputs.items():
-        if name not in names:
-            raise Error("inputs: '%s' is not an input of the model (inputs: %s)"
-                        % (name, ", ".join(names) or "none"))
         if callable(value):
             coords = core.coords()
             e = lib.qd_sim_setup_eom(setup)
@@ -264,33 +257,38 @@ def _run(core, s, opts, nev, fns=()):
     columns = [cstr(names[k]) for k in range(ncol)]
     rows = []
     failed = []
+    t0, span = opts.t0, opts.t_end - opts.t0
 
-    def sink(_data, event, row):
-        try:
-            if any(fn.error is not None for fn in fns):
+    with Run("simulate") as run:
+        def sink(_data, event, row):
+            try:
+                if any(fn.error is not None for fn in fns):
+                    return -1
+                rows.append((event, ffi.unpack(row, ncol)))
+                run.update((row[0] - t0) / span if span > 0 else 1.0, row[0])
+                return 1 if run.stop else 0  # ^C: the run ends after a whole row
+            except BaseException as err:  # noqa: B036 (re-raised below)
+                failed.append(err)
                 return -1
-            rows.append((event, ffi.unpack(row, ncol)))
-            return 0
-        except BaseException as err:  # noqa: B036 (re-raised below)
-            failed.append(err)
-            return -1
 
-    stats = new("qd_sim_stats")
-    final = doubles([0.0] * ncol)
-    callback = ffi.callback("qd_sim_sink", sink, error=-1)  # alive until qd_sim_run returns
-    wall = time.perf_counter()
-    st = lib.qd_sim_run(s, opts, callback, ffi.NULL, stats, final)
-    wall = time.perf_counter() - wall
-    for err in [fn.error for fn in fns if fn.error is not None] + failed:
-        take_error(core.ctx)  # the failure's consequence: not the cause
-        raise err
-    if st != QD_OK:
-        raise core.error(st)
-    rep = new("qd_sim_report", {"s": s, "opts": opts, "stats": stats, "final": final,
-                                "wall": wall})
-    summary, header, record = _report(rep, s, opts.method)
-    return Result(columns, rows, nev, stats, cstr(lib.qd_sim_method_name(opts.method)),
-                  summary, header, bool(lib.qd_sim_event_column(s)), record)
+        stats = new("qd_sim_stats")
+        final = doubles([0.0] * ncol)
+        callback = ffi.callback("qd_sim_sink", sink, error=-1)  # alive until qd_sim_run returns
+        wall = time.perf_counter()
+        st = lib.qd_sim_run(s, opts, callback, ffi.NULL, stats, final)
+        wall = time.perf_counter() - wall
+        for err in [fn.error for fn in fns if fn.error is not None] + failed:
+            take_error(core.ctx)  # the failure's consequence: not the cause
+            raise err
+        if st != QD_OK:
+            raise core.error(st)
+        rep = new("qd_sim_report", {"s": s, "opts": opts, "stats": stats, "final": final,
+                                    "wall": wall})
+        summary, header, record = _report(rep, s, opts.method)
+        run.partial = Result(columns, rows, nev, stats,
+                             cstr(lib.qd_sim_method_name(opts.method)), summary, header,
+                             bool(lib.qd_sim_event_column(s)), record)
+        return run.partial
 
 
 def _report(rep, s, method):

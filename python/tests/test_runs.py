@@ -117,7 +117,7 @@ def test_sweep_section_and_lyapunov(tmp_path):
     expect = math.floor((w * 20 - 1.5 * math.pi) / (2 * math.pi)) + 1
     out = m.sweep(20, "poincare-count", grid="x=1:2:2", section="x = 0, x' > 0")
     assert list(out.rows[:, 1]) == [expect, expect]
-    with pytest.raises(ValueError, match="needs section"):
+    with pytest.raises(ValueError, match="needs a section"):
         m.sweep(20, "poincare-count", grid="x=1:2:2")
     inv = qdot.Model(INVERTED).sweep(100, "lyapunov", grid="x=1e-3:2e-3:2")
     assert inv.rows[:, 1] == pytest.approx([1, 1], abs=0.02)

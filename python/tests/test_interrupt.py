@@ -1,0 +1,147 @@
+# python/tests/test_interrupt.py - Ctrl-C from Python (issue 32) and the
+# refusals of the library's set-ups as the CLI words them.  A run whose
+# callback sees the stop flag ends after a whole row and raises
+# KeyboardInterrupt carrying the rows kept; those rows are still the
+# motion: the forced-free oscillator x = x0 cos(w t) + v0/w sin(w t)
+# (Goldstein ch. 6 -- here F = 0) and the upward zeros of x = cos(w t),
+# w t = 3 pi/2 + 2 pi j.  A SIGINT sent to a long Python run ends it with
+# KeyboardInterrupt, never a crash nor "Exception ignored".
+import math
+import os
+import signal
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import qdot
+from qdot import _progress
+from test_commands import BUILD, OSCILLATOR, model_file
+
+OSC = """
+coordinates x
+parameters w = 3
+inputs F
+T = x'^2/2
+V = w^2*x^2/2
+Q[x] = F
+initial x = 0.1, x' = 0.2
+"""
+
+
+def test_simulate_stopped_by_sigint_keeps_whole_rows():
+    def force(t, _y):  # the input callable presses Ctrl-C once, at t = 2
+        if t >= 2 and not force.sent:
+            force.sent = True
+            signal.raise_signal(signal.SIGINT)
+        return 0.0
+    force.sent = False
+    with pytest.raises(KeyboardInterrupt) as err:
+        qdot.Model(OSC).simulate(100, inputs={"F": force}, rtol=1e-12, atol=1e-14, dt=0.25)
+    r = err.value.result
+    assert force.sent and 2 <= r.t[-1] < 3      # stopped early, after the flag
+    assert r.data.shape[1] == len(r.columns) and np.isfinite(r.data).all()
+    x = 0.1 * np.cos(3 * r.t) + 0.2 / 3 * np.sin(3 * r.t)
+    assert np.max(np.abs(r["x"] - x)) < 1e-8    # every row kept is the motion
+    # the handler is back: a later SIGINT is Python's own KeyboardInterrupt
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_poincare_stopped_by_its_progress_callback(monkeypatch):
+    update = _progress.Run.update
+
+    def stop_late(self, frac, t):  # the flag as the SIGINT handler sets it
+        if t > 20:
+            self.stop = True
+        update(self, frac, t)
+    monkeypatch.setattr(_progress.Run, "update", stop_late)
+    with pytest.raises(KeyboardInterrupt) as err:
+        qdot.Model(OSCILLATOR).poincare("x = 0, x' > 0", 1000, rtol=1e-12)
+    p = err.value.result
+    w = math.sqrt(3 / 2)
+    assert 0 < len(p) < 1000
+    assert p.t == pytest.approx([(1.5 * math.pi + 2 * math.pi * j) / w
+                                 for j in range(len(p))], rel=1e-9)
+    assert p["x'"] == pytest.approx([w] * len(p), rel=1e-9)
+
+
+CHILD = r"""
+import sys, qdot
+def force(t, y):
+    if not force.told:
+        force.told = True
+        print("running", flush=True)
+    return 0.0
+force.told = False
+qdot.Model(sys.argv[1]).simulate(1e7, inputs={"F": force}, dt=1.0, rtol=1e-13)
+print("finished", flush=True)
+"""
+
+
+def test_sigint_to_a_long_run_raises_keyboard_interrupt():
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p),
+               QDOT_PROGRESS_DELAY="0")
+    child = subprocess.Popen([sys.executable, "-c", CHILD, OSC], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        assert child.stdout.readline() == "running\n"  # inside the run
+        child.send_signal(signal.SIGINT)
+        out, errs = child.communicate(timeout=120)      # a guard against a hang, no timing
+    finally:
+        child.kill()
+    assert "finished" not in out
+    assert child.returncode in (-signal.SIGINT, 130, 1), errs
+    assert "KeyboardInterrupt: qdot: simulate: interrupted" in errs
+    assert "Exception ignored" not in errs and "Sanitizer" not in errs
+    assert "qdot: simulate [" not in errs             # stderr not a terminal: no bar
+
+
+def test_progress_bar_on_a_terminal():
+    import pty
+    master, slave = pty.openpty()
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p),
+               QDOT_PROGRESS_DELAY="0")
+    code = ("import qdot; qdot.Model(%r).poincare(\"x = 0, x' > 0\", 200, rtol=1e-12)"
+            % OSCILLATOR)
+    child = subprocess.Popen([sys.executable, "-c", code], stderr=slave, env=env)
+    os.close(slave)
+    seen = b""
+    while True:
+        try:
+            chunk = os.read(master, 4096)
+        except OSError:  # the child closed its end
+            break
+        if not chunk:
+            break
+        seen += chunk
+    os.close(master)
+    assert child.wait(timeout=120) == 0, seen
+    assert b"qdot: poincare [" in seen and b"%" in seen
+    assert seen.endswith(b"\r")  # the bar cleared at the end, as the CLI clears it
+
+
+def cli_error(*args):
+    exe = os.path.join(BUILD, "qdot")
+    if not os.access(exe, os.X_OK):
+        pytest.skip("no build/qdot to compare with")
+    run = subprocess.run([exe, *args], capture_output=True, text=True)
+    assert run.returncode == 2, run.stderr
+    return run.stderr.strip()
+
+
+@pytest.mark.parametrize("call, args, option", [
+    (lambda m: m.sweep(5, "final, poincare-count", grid="x=0:1:3"),
+     ["sweep", "--grid", "x=0:1:3", "--t-end", "5", "--measure", "final, poincare-count"],
+     "section"),
+    (lambda m: m.lyapunov(5, exponents=3), ["lyapunov", "--t-end", "5", "--exponents", "3"],
+     "exponents"),
+])
+def test_refusals_are_the_clis(tmp_path, call, args, option):
+    path = model_file(tmp_path, OSCILLATOR)
+    with pytest.raises(ValueError) as err:   # a qdot.ArgumentError
+        call(qdot.Model.load(path))
+    assert isinstance(err.value, qdot.Error)
+    said = cli_error(args[0], path, *args[1:])
+    assert said.startswith("qdot: error: ") and said.endswith(" (--%s)" % option)
+    assert str(err.value) == "%s (the argument %s)" % (said[13:-len(" (--%s)" % option)], option)
