@@ -6,7 +6,7 @@
  * Not a Risch integrator: a sum is integrated term by term, a product must
  * be (factors free of x) * (one elementary factor in x), and the elementary
  * factors are x^n and (a x + b)^n (n a number; n = -1 gives log), c^(a x + b)
- * for c free of x, and sin, cos, exp, sinh, cosh of (a x + b).  When the
+ * for c free of x, and sin, cos, exp, sinh, cosh, log of (a x + b).  When the
  * input as given does not fit, its expansion is tried once (x (x + 1) is
  * x^2 + x).  Anything else is QD_ERR_ARG: the caller decides what to do
  * without an antiderivative.  Logarithms are written log(u), not log|u|.
@@ -56,6 +56,9 @@ static const qd_expr *int_func(qd_ctx *ctx, const qd_expr *e, const qd_expr *x) 
     case QD_EXP: f = e; break;
     case QD_SINH: f = qd_fn(ctx, QD_COSH, u); break;
     case QD_COSH: f = qd_fn(ctx, QD_SINH, u); break;
+    /* u log(u) - u: by parts, the generating functions' p log(p) (Desloge
+     * ch. 84, seed C T27) */
+    case QD_LOG: f = qd_sub(ctx, qd_mul(ctx, u, e), u); break;
     default: return NULL;
     }
     return qd_div(ctx, f, a);

@@ -163,6 +163,21 @@ def test_nonlinear_generator(qdot, osc, one):
           "cannot solve p_q = dF/dq for Q in closed form" in err, err)
 
 
+def test_log_generator(qdot, one):
+    """Desloge ch. 84 (seed-desloge-C.md T27): Q = log p, P = -(1 + q + log p) p
+    is canonical, and F with dF = p dq - P dQ is elementary, q p + p log p
+    (it needs the integral of log p; it was "not found in closed form")."""
+    rc, out, err = run(qdot, "canonical", one, "--Q", "log(p_q)", "--P", "-(1+q+log(p_q))*p_q",
+                       "--K", "--format", "json")
+    d = json.loads(out) if rc == 0 else {}
+    check("log map canonical", d.get("verdict") == "canonical", err)
+    q, p = sp.symbols("q p", positive=True)
+    F = sp.sympify(str(d.get("F")).replace("^", "**"), locals={"q": q, "p_q": p})
+    Q, P = sp.log(p), -(1 + q + sp.log(p)) * p
+    check("log map F", sp.simplify(sp.diff(F, q) - p) == 0 and
+          sp.simplify(sp.diff(F, p) + P * sp.diff(Q, p)) == 0, str(d.get("F")))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
@@ -176,6 +191,7 @@ def main():
         test_bracket(qdot, free)
         test_canonical(qdot, one, free)
         test_generator(qdot, one)
+        test_log_generator(qdot, one)
         osc = os.path.join(d, "osc.qd")
         with open(osc, "w") as f:
             f.write(OSC)

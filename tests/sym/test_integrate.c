@@ -158,6 +158,8 @@ static void test_table(void **state) {
         qd_pow(c, qd_const(c, QD_E), qd_mul(c, qd_int(c, 3), x)), qd_powi(c, x, 0),
         qd_mul(c, v.y, qd_fn(c, QD_SIN, qd_mul(c, v.y, x))),
         qd_mul(c, x, qd_add(c, x, v.y)), qd_powi(c, qd_add(c, x, v.k), 2),
+        /* by parts: u log(u) - u (a generating function's p log p, seed C T27) */
+        qd_fn(c, QD_LOG, x), qd_mul(c, v.y, qd_fn(c, QD_LOG, lin)),
     };
     for (size_t i = 0; i < sizeof fs / sizeof fs[0]; i++) {
         char what[32];
@@ -182,7 +184,7 @@ static void test_refused(void **state) {
         qd_fn(c, QD_SIN, x2),
         qd_mul(c, x, qd_fn(c, QD_EXP, x)),                   /* needs parts */
         qd_powi(c, qd_add(c, x2, qd_int(c, 1)), -1),         /* atan: not in the table */
-        qd_fn(c, QD_LOG, x),
+        qd_fn(c, QD_LOG, x2),                                /* log of a non-linear argument */
         qd_fn(c, QD_TAN, x),
         qd_ufunc(c, "f", 1, arg),
         qd_pow(c, x, v.k),                                   /* symbolic n may be -1 */
