@@ -6,6 +6,7 @@
 #include "out.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -93,6 +94,15 @@ static int set_count(const cli_spec *spec, const cli_opt *o, const char *v, size
     return QD_EXIT_OK;
 }
 
+static int set_nonneg(const cli_spec *spec, const cli_opt *o, const char *v, double *slot) {
+    char *end;
+    double x = strtod(v, &end);
+    if (end == v || *end || !isfinite(x) || x < 0)
+        return cli_usage_error("%s %s takes a number >= 0, not '%s'", spec->name, o->name, v);
+    *slot = x;
+    return QD_EXIT_OK;
+}
+
 /* Store the value v (NULL for a flag) of option o into args + base. */
 static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char *v, void *args) {
     char *field = (char *)args + base + o->offset;
@@ -108,6 +118,7 @@ static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char
     }
     case CLI_CHOICE: return set_choice(spec, o, v, (const char **)(void *)field);
     case CLI_COUNT: return set_count(spec, o, v, (size_t *)(void *)field);
+    case CLI_NONNEG: return set_nonneg(spec, o, v, (double *)(void *)field);
     case CLI_CALL: return o->call(v, (char *)args + base);
     }
     return QD_EXIT_FAIL;

@@ -32,6 +32,7 @@ typedef enum cli_kind {
     CLI_LIST,   /* cli_list: may be given again, each time one more item */
     CLI_CHOICE, /* const char *: one of choices (a misspelt one gets "did you mean") */
     CLI_COUNT,  /* size_t: a whole number >= 1 */
+    CLI_NONNEG, /* double: a finite number >= 0 (a time, an interval) */
     CLI_CALL    /* call(value, args): the command's own reader (value NULL for a flag) */
 } cli_kind;
 

@@ -11,7 +11,6 @@
 
 #include <stddef.h>
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -22,16 +21,16 @@
 typedef struct ly_args {
     cli_sim_args a;
     size_t n;
-    const char *renorm_text, *transient_text, *format;
+    const char *format;
     double renorm, transient;
 } ly_args;
 
 static const cli_opt opts[] = {
     {"--exponents", NULL, CLI_COUNT, offsetof(ly_args, n), "K", "the K largest exponents (1)", NULL,
      NULL},
-    {"--renorm", NULL, CLI_TEXT, offsetof(ly_args, renorm_text), "DT",
+    {"--renorm", NULL, CLI_NONNEG, offsetof(ly_args, renorm), "DT",
      "the time between renormalizations (1)", NULL, NULL},
-    {"--transient", NULL, CLI_TEXT, offsetof(ly_args, transient_text), "T0",
+    {"--transient", NULL, CLI_NONNEG, offsetof(ly_args, transient), "T0",
      "the time run before the averaging starts (0)", NULL, NULL},
     CLI_OPT_FORMAT(ly_args, format),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
@@ -47,16 +46,6 @@ static const cli_spec spec = {
     "the largest Lyapunov exponents of the motion from the initial state, with error estimates",
     opts, groups, 1, 1, "FILE", false,
 };
-
-/* A time >= 0, or an exit status. */
-static int number(const char *opt, const char *v, double *out) {
-    char *end;
-    double x = v ? strtod(v, &end) : 0;
-    if (v && (end == v || *end || !isfinite(x) || x < 0))
-        return cli_usage_error("%s takes a number >= 0, not '%s'", opt, v);
-    *out = x;
-    return QD_EXIT_OK;
-}
 
 /* The result in the format asked for, written to standard output. */
 static int emit(const qd_lyap_report *r, bool json) {
@@ -90,10 +79,6 @@ int cli_cmd_lyapunov(int argc, char **argv) {
     ly_args p = {.n = 1};
     int rc = cli_parse(&spec, argc, argv, &p, &p.a.file);
     p.a.json = cli_json(p.format);
-    if (rc == QD_EXIT_OK)
-        rc = number("--renorm", p.renorm_text, &p.renorm);
-    if (rc == QD_EXIT_OK)
-        rc = number("--transient", p.transient_text, &p.transient);
     if (rc == QD_EXIT_OK && !p.a.t_end)
         rc = cli_usage_error("--t-end is missing (qdot lyapunov --help)");
     if (rc != QD_EXIT_OK)

@@ -39,25 +39,11 @@ static int whole(const char *opt, const char *v, double *x, double most) {
     return QD_EXIT_OK;
 }
 
-static int positive(const char *opt, const char *v, double *x) {
-    char *end;
-    *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || !isfinite(*x))
-        return cli_usage_error("%s takes a number >= 0, not '%s'", opt, v);
-    return QD_EXIT_OK;
-}
-
 static int seed_option(const char *v, void *a) {
     return whole("--seed", v, &((sweep_args *)a)->seed, 0x1p53);
 }
 static int threads_option(const char *v, void *a) { /* 0: one per core */
     return whole("--threads", v, &((sweep_args *)a)->threads, QD_SWEEP_MAX_THREADS);
-}
-static int renorm_option(const char *v, void *a) {
-    return positive("--renorm", v, &((sweep_args *)a)->renorm);
-}
-static int transient_option(const char *v, void *a) {
-    return positive("--transient", v, &((sweep_args *)a)->transient);
 }
 
 static const char *const formats[] = {"csv", "json", "hdf5", NULL};
@@ -74,8 +60,8 @@ static const cli_opt opts[] = {
         "final, energy_error, event, escape:EXPR>V, max:EXPR, min:EXPR, poincare-count, ..."),
     OPT("--section", CLI_TEXT, section, "COND", "the section poincare-count counts crossing"),
     CALL("--threads", threads_option, "N", "threads (0, the default: one per core)"),
-    CALL("--renorm", renorm_option, "DT", "the lyapunov measures' renormalization interval"),
-    CALL("--transient", transient_option, "T0", "the lyapunov measures' transient"),
+    OPT("--renorm", CLI_NONNEG, renorm, "DT", "the lyapunov measures' renormalization interval"),
+    OPT("--transient", CLI_NONNEG, transient, "T0", "the lyapunov measures' transient"),
     {"--format", NULL, CLI_CHOICE, offsetof(sweep_args, format), "F", "the rows' format", formats,
      NULL},
     OPT("--map", CLI_TEXT, map, "FILE.png", "draw a measure of a grid of two axes (.svg, .pdf)"),
