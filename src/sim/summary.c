@@ -82,13 +82,16 @@ static void text_friction(const qd_sim_report *r, const char *pre, qd_buf *b) {
 
 static void text_out(const qd_sim_report *r, const char *pre, qd_buf *b) {
     const qd_sim_stats *st = r->stats;
+    /* where h is not conserved its drift is physics, not an error of the
+     * integrator: "energy error 2.14" read like a fault (audit) */
+    bool cons = qd_sim_conservative(r->s);
     line(b, pre,
-         "%s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, %.3g s; energy error %.3g "
+         "%s, t = %g..%g: %zu steps, %zu evaluations, %zu rejected, %.3g s; energy %s %.3g "
          "over the rows written (%.3g at the steps), constraint error %.3g%s\n",
          qd_sim_method_name(r->opts->method), r->opts->t0, st->t, st->steps, st->evals,
-         st->rejected, r->wall, st->energy_error_max, st->energy_error_steps,
-         st->constraint_error_max,
-         qd_sim_conservative(r->s) ? "" : " (not conserved: forces, damping or t in L)");
+         st->rejected, r->wall, cons ? "error" : "change", st->energy_error_max,
+         st->energy_error_steps, st->constraint_error_max,
+         cons ? "" : " (not conserved: forces, damping or t in L)");
     if (!qd_stop_ok(st->stop.code))
         line(b, pre, "stopped early: %s at t = %.17g\n", qd_stop_str(st->stop.code),
              st->stop.t);
