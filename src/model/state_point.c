@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "base/args.h"
+#include "base/mem.h"
 #include "qdot/state.h"
 
 qd_status qd_state_named_range(qd_ctx *ctx, const qd_model *m, const char *text, char *name,
@@ -38,12 +39,10 @@ qd_status qd_state_read_point(qd_ctx *ctx, const qd_model *m, const qd_state *st
                               const qd_expr **at) {
     QD_ARGS_CTX(ctx, m && st && text && (n == 0 || (q && at)));
     size_t ns = st->n;
-    const qd_expr **exact = calloc(ns + 1, sizeof *exact);
-    bool *given = calloc(ns + 1, sizeof *given);
-    double *vals = malloc((ns + 1) * sizeof *vals);
+    const qd_expr **exact = qd__calloc(ctx, ns + 1, sizeof *exact);
+    bool *given = qd__calloc(ctx, ns + 1, sizeof *given);
+    double *vals = qd__malloc(ctx, (ns + 1) * sizeof *vals); /* NOMEM recorded */
     qd_status r = exact && given && vals ? QD_OK : QD_ERR_NOMEM;
-    if (r == QD_ERR_NOMEM)
-        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory");
     if (r == QD_OK) {
         memcpy(vals, st->vals, ns * sizeof *vals); /* st itself stays as it is */
         qd_state copy = {ns, st->syms, vals};
@@ -57,8 +56,8 @@ qd_status qd_state_read_point(qd_ctx *ctx, const qd_model *m, const qd_state *st
             at[j] = k < ns && given[k] ? exact[k] : qd_int(ctx, 0);
         }
     }
-    free(exact);
-    free(given);
-    free(vals);
+    qd__free(exact);
+    qd__free(given);
+    qd__free(vals);
     return r;
 }

@@ -25,12 +25,25 @@ static void part_name(const qd__render_part *p, size_t k, char *out, size_t cap)
         snprintf(out, cap, "%s", p->name);
 }
 
+/* Every part's expressions in order, in one array (qd__free it); *n their
+ * count.  NULL for want of memory. */
+static const qd_expr **flatten(qd_ctx *ctx, size_t nparts, const qd__render_part *parts,
+                               size_t *n) {
+    *n = 0;
+    for (size_t i = 0; i < nparts; i++)
+        *n += parts[i].x ? part_size(&parts[i]) : 0;
+    const qd_expr **all = qd__malloc(ctx, (*n + 1) * sizeof *all);
+    size_t k = 0;
+    for (size_t i = 0; all && i < nparts; i++)
+        for (size_t j = 0; parts[i].x && j < part_size(&parts[i]); j++)
+            all[k++] = parts[i].x[j];
+    return all;
+}
+
 qd_status qd__render_c_block(qd_ctx *ctx, qd_buf *b, size_t nparts,
                              const qd__render_part *parts) {
-    size_t nout = 0, k = 0;
-    for (size_t i = 0; i < nparts; i++)
-        nout += parts[i].x ? part_size(&parts[i]) : 0;
-    const qd_expr **x = qd__malloc(ctx, (nout + 1) * sizeof *x);
+    size_t nout, k = 0;
+    const qd_expr **x = flatten(ctx, nparts, parts, &nout);
     char(*names)[96] = qd__malloc(ctx, (nout + 1) * sizeof *names);
     const char **lhs = qd__malloc(ctx, (nout + 1) * sizeof *lhs);
     qd_status st = QD_ERR_NOMEM;
@@ -38,7 +51,6 @@ qd_status qd__render_c_block(qd_ctx *ctx, qd_buf *b, size_t nparts,
         for (size_t i = 0; i < nparts; i++)
             for (size_t j = 0; parts[i].x && j < part_size(&parts[i]); j++, k++) {
                 part_name(&parts[i], j, names[k], sizeof names[k]);
-                x[k] = parts[i].x[j];
                 lhs[k] = names[k];
             }
         st = qd_print_c_block(ctx, nout, x, lhs, b);
@@ -67,16 +79,11 @@ void qd__render_c_inputs(qd_buf *b, const qd_model *m, size_t ngroups,
 
 qd_status qd__render_sympy_functions(qd_ctx *ctx, qd_buf *b, size_t nparts,
                                      const qd__render_part *parts) {
-    size_t nout = 0, k = 0;
-    for (size_t i = 0; i < nparts; i++)
-        nout += parts[i].x ? part_size(&parts[i]) : 0;
-    const qd_expr **all = qd__malloc(ctx, (nout + 1) * sizeof *all);
+    size_t nout;
+    const qd_expr **all = flatten(ctx, nparts, parts, &nout);
     if (!all)
         return QD_ERR_NOMEM;
-    for (size_t i = 0; i < nparts; i++)
-        for (size_t j = 0; parts[i].x && j < part_size(&parts[i]); j++)
-            all[k++] = parts[i].x[j];
-    qd_status st = qd_print_sympy_functions(ctx, k, all, b);
+    qd_status st = qd_print_sympy_functions(ctx, nout, all, b);
     qd__free(all);
     return st;
 }
