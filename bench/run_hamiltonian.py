@@ -22,13 +22,12 @@ bench/README.md.
 import argparse
 import os
 import random
-import resource
 import signal
-import statistics
 import subprocess
 import sys
 import time
 
+from timing import timed  # bench/timing.py, beside this script
 from sympy import Float, Function, Matrix, Symbol, cos, count_ops, simplify, sin
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -47,19 +46,6 @@ def run(cmd):
     if p.returncode != 0:
         raise RuntimeError('%s: exit %d: %s' % (' '.join(cmd), p.returncode, p.stderr[:400]))
     return p.stdout
-
-
-def timed(cmd, reps):
-    """Median wall and processor (user + system of the child) time."""
-    wall, cpu = [], []
-    for _ in range(reps):
-        r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-        t0 = time.perf_counter()
-        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-        wall.append(time.perf_counter() - t0)
-        r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpu.append(r1.ru_utime - r0.ru_utime + r1.ru_stime - r0.ru_stime)
-    return statistics.median(wall), statistics.median(cpu)
 
 
 def plain(ns, names):

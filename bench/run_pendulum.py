@@ -16,16 +16,14 @@ import argparse
 import json
 import os
 import random
-import resource
-import statistics
 import subprocess
 import sys
 import tempfile
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import pendulum_sympy as ps  # noqa: E402
+from timing import timed  # noqa: E402
 
 PYTHON = '/usr/bin/python3'
 N_QDOT = [2, 4, 6, 8, 10, 12, 16, 32]
@@ -97,16 +95,7 @@ def qdot_entries(build, tmp, n):
 
 def cli_time(build, path, reps):
     """Wall and processor time (user + system of the child) of `qdot eom`."""
-    wall, cpu = [], []
-    cmd = [os.path.join(build, 'qdot'), 'eom', path, '--format', 'json']
-    for _ in range(reps):
-        r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-        t0 = time.perf_counter()
-        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-        wall.append(time.perf_counter() - t0)
-        r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpu.append(r1.ru_utime - r0.ru_utime + r1.ru_stime - r0.ru_stime)
-    return statistics.median(wall), statistics.median(cpu)
+    return timed([os.path.join(build, 'qdot'), 'eom', path, '--format', 'json'], reps)
 
 
 def ginac_entries(build, n):
