@@ -116,7 +116,7 @@ def poincare(core, section, crossings, t_end, method, rtol, atol, dt, step, init
         if st != QD_OK:
             raise core.error(st, cls=NumericalError)
         out = Result(columns, rows, 0, ffi.addressof(r, "stats"),
-                     cstr(lib.qd_sim_method_name(opts.method)))
+                     cstr(lib.qd_sim_method_name(opts.method)), ndof=lib.qd_sim_ndof(s))
         run.partial = out
         if r.got < want and not run.stop:  # the CLI's note
             warnings.warn("poincare: only %d of %d crossings before t = %g (raise t_end)"

@@ -81,7 +81,7 @@ class Result(Table):
     """
 
     def __init__(self, columns, rows, nev, stats, method, summary="", header="",
-                 event_column=False, record=None):
+                 event_column=False, record=None, ndof=0):
         data = np.array([r[1] for r in rows], dtype=float).reshape(len(rows), len(columns))
         ev = np.array([r[0] for r in rows], dtype=int)
         self._all, self._ev = data, ev
@@ -101,6 +101,7 @@ class Result(Table):
         self.energy_error_max = stats.energy_error_max
         self.energy_error_steps = stats.energy_error_steps
         self.method = method
+        self._ndof = ndof  # the coordinates' columns follow t (for plots)
 
     def csv(self):
         """The rows as the CSV text `qdot simulate` writes (qd_sim_csv_row:
@@ -118,10 +119,107 @@ class Result(Table):
             raise
         return self._header + buf_text(buf)
 
+    def _pick(self, y, phase):
+        """qd_plot_pick_columns on these columns: which the plot draws."""
+        ctx = lib.qd_ctx_new()
+        if ctx == ffi.NULL:
+            raise MemoryError("qdot: out of memory")
+        try:
+            names = [ffi.new("char[]", c.encode()) for c in self.columns]
+            arr = ffi.new("const char *[]", names)
+            pk = new("qd_plot_pick")
+            keep = [ffi.new("char[]", v.encode()) if v is not None else ffi.NULL
+                    for v in (y, phase)]
+            if lib.qd_plot_pick_columns(ctx, keep[0], keep[1], arr, len(self.columns),
+                                        self._ndof, pk) != QD_OK:
+                raise _text_error_ctx(ctx, "plot")
+            return pk
+        finally:
+            lib.qd_ctx_free(ctx)
+
+    def png(self, y=None, phase=None, title=None, xlabel=None, ylabel=None, size=None):
+        """The rows drawn as `qdot simulate --plot FILE.png` draws them (the
+        library's qd_plot_run), as PNG bytes.  y: the columns, as --plot-y
+        ("x, x'; energy_error": a semicolon starts a panel); phase: a
+        coordinate Q for Q' against Q (as --phase); neither: every
+        coordinate against t.  title, xlabel, ylabel ("A; B" per panel) and
+        size ("WxH" pixels) as the CLI's options."""
+        import os
+        import tempfile
+        pk = self._pick(y, phase)
+        ctx = lib.qd_ctx_new()
+        if ctx == ffi.NULL:
+            raise MemoryError("qdot: out of memory")
+        fd, path = tempfile.mkstemp(suffix=".png")
+        os.close(fd)
+        try:
+            width, height = ffi.new("int *"), ffi.new("int *")
+            if size is not None and lib.qd_plot_size_of(ctx, size.encode(), width,
+                                                         height) != QD_OK:
+                raise _text_error_ctx(ctx, "size")
+            texts = {k: ffi.new("char[]", v.encode()) for k, v in
+                     (("title", title), ("xlabel", xlabel), ("ylabel", ylabel)) if v is not None}
+            o = new("qd_plot_run_opts", dict(texts, width=width[0], height=height[0]))
+            names = [ffi.new("char[]", c.encode()) for c in self.columns]
+            arr = ffi.new("const char *[]", names)
+            data = np.ascontiguousarray(self.data, dtype=float)
+            plot = lib.qd_plot_run(ctx, pk, arr, ffi.cast("const double *", data.ctypes.data),
+                                   data.shape[0], len(self.columns), o)
+            if plot == ffi.NULL:
+                raise _text_error_ctx(ctx, "plot")
+            try:
+                if lib.qd_plot_write(plot, path.encode()) != QD_OK:
+                    raise _text_error_ctx(ctx, "plot")
+            finally:
+                lib.qd_plot_free(plot)
+            with open(path, "rb") as f:
+                return f.read()
+        finally:
+            os.unlink(path)
+            lib.qd_ctx_free(ctx)
+
+    def _repr_png_(self):
+        """Jupyter shows a run as its plot (every coordinate against t)."""
+        return self.png() if len(self) else None
+
+    def plot(self, y=None, phase=None, ax=None):
+        """A matplotlib figure of the same columns as png() (for users who
+        style it themselves); ax: draw into these axes (one panel).  Needs
+        matplotlib (Debian's python3-matplotlib)."""
+        import matplotlib.pyplot as plt
+        pk = self._pick(y, phase)
+        if ax is not None:
+            fig, axes = ax.figure, [ax] * pk.npanels
+        else:
+            fig, axes = plt.subplots(pk.npanels, 1, sharex=not pk.phase, squeeze=False)
+            axes = [a[0] for a in axes]
+        energy = self.data[:, pk.energy] if pk.energy_error else None
+        for k in range(pk.ny):
+            col = pk.y[k]
+            if col == len(self.columns):  # E(t) - E(t0)
+                yv, label = energy - energy[0], "energy error"
+            else:
+                yv, label = self.data[:, col], self.columns[col]
+            axes[pk.panel[k]].plot(self.data[:, pk.x], yv, label=label)
+        for a in set(axes):
+            a.legend()
+        axes[-1].set_xlabel(self.columns[pk.x] if pk.phase else "t")
+        return fig
+
     def __repr__(self):
         return "<qdot.Result %d rows, t = %g..%g, %s>" % (
             len(self), self.t[0] if len(self) else 0, self.t[-1] if len(self) else 0,
             self.method)
+
+
+def _text_error_ctx(ctx, what):
+    """The context's error, unlocated, as an Error (ArgumentError for bad
+    input)."""
+    from ._core import ArgumentError
+    diag = take_error(ctx)
+    if diag.status == QD_ERR_NOMEM:
+        return MemoryError("qdot: out of memory")
+    return ArgumentError("%s: %s" % (what, ffi.string(diag.message).decode()), diag.status)
 
 
 def _text_error(core, what, text):
@@ -287,7 +385,7 @@ def _run(core, s, opts, nev, fns=()):
         summary, header, record = _report(rep, s, opts.method)
         run.partial = Result(columns, rows, nev, stats,
                              cstr(lib.qd_sim_method_name(opts.method)), summary, header,
-                             bool(lib.qd_sim_event_column(s)), record)
+                             bool(lib.qd_sim_event_column(s)), record, lib.qd_sim_ndof(s))
         return run.partial
 
 
