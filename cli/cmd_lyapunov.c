@@ -15,6 +15,7 @@
 #include <stdlib.h>
 
 #include "out.h"
+#include "progress.h"
 #include "qdot/lyapunov.h"
 #include "sim_cli.h"
 
@@ -57,11 +58,21 @@ static int emit(const qd_lyap_report *r, bool json) {
     return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
-/* The run and its exponents (qd_lyap_setup_run); prints the result. */
+static int progress(void *data, double done, double t) {
+    cli_progress_update(data, done, t);
+    return 0;
+}
+
+/* The run and its exponents (qd_lyap_setup_run), with a bar on a terminal;
+ * prints the result. */
 static int run(cli_sim *c, const ly_args *p) {
-    qd_lyap_opts lo = {.nexp = p->n, .renorm = p->renorm, .transient = p->transient};
+    cli_progress bar;
+    cli_progress_start(&bar, "lyapunov");
+    qd_lyap_opts lo = {.nexp = p->n, .renorm = p->renorm, .transient = p->transient,
+                       .progress = progress, .data = &bar};
     qd_lyap_result r;
     qd_status st = qd_lyap_setup_run(c->ctx, c->set, c->mf.model, &c->opts, &lo, &r);
+    cli_progress_end(&bar);
     int rc = st == QD_OK ? QD_EXIT_OK : st == QD_ERR_ARG ? cli_diag_ctx(c->ctx)
                                                          : cli_sim_fail(c, st);
     if (rc == QD_EXIT_OK) {

@@ -103,8 +103,9 @@ static int check_args(const sweep_args *a) {
     return a->n && !a->random ? cli_usage_error("--runs is for --random") : QD_EXIT_OK;
 }
 
-static void progress(void *data, size_t done, size_t total) {
+static int progress(void *data, size_t done, size_t total) {
     cli_progress_update(data, (double)done / (double)total, (double)done);
+    return 0;
 }
 
 /* ---- output: one writer per --format (hdf5 joins the table) ---------------- */

@@ -50,6 +50,11 @@ typedef struct qd_lyap_opts {
     size_t nexp;          /* exponents wanted: 1 (largest, Benettin) .. 2n (spectrum by QR) */
     double renorm;        /* time between renormalizations (0: 1) */
     double transient;     /* time integrated before averaging starts (>= 0) */
+    /* May be NULL: after each renormalization, done in [0, 1] (the time
+     * integrated, of t_end - t0) and the time t; nonzero stops the run
+     * (QD_ERR_ARG, "stopped at t = T"): a progress bar, or ^C from Python. */
+    int (*progress)(void *data, double done, double t);
+    void *data;           /* progress' */
 } qd_lyap_opts;
 
 /* What a run measured besides the exponents (qd_lyap_run_stats). */
@@ -308,6 +313,7 @@ QD_API void qd_lyap_result_free(qd_lyap_result *r); /* NULL is fine */
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
  * (err, stats); qd_flow_run (fo); qd_flow_print (prefix); qd_lyap_print,
- * qd_lyap_json (r->err); qd_lyap_setup_run (lo); qd_poincare_run's
+ * qd_lyap_json (r->err); qd_lyap_setup_run (lo); lo->progress and
+ * lo->data; qd_poincare_run's
  * o->progress and o->data. An array whose count is 0 may be NULL. */
 #endif

@@ -219,12 +219,20 @@ typedef struct qd_sweep_outcome {
 #define QD_SWEEP_OUTCOME_MAX 96
 QD_API const char *qd_sweep_outcome_str(const qd_sweep_outcome *o, char *out, size_t cap);
 
+/* The progress of a sweep: done of total runs.  Called from the calling
+ * thread only, when a run ends and at least ten times a second; nonzero
+ * stops the sweep: no run starts after it, the runs under way end, and
+ * the call returns QD_ERR_ARG ("stopped after DONE of TOTAL runs"), the
+ * runs never started with outcome QD_ERR_ARG, stop QD_STOP_CALLBACK (a
+ * progress bar, or ^C from Python).  Under an MPI launcher it is called on
+ * the writer, and a stop is not heeded (the ranks run on). */
+typedef int (*qd_sweep_progress)(void *data, size_t done, size_t total);
+
 /* Runs [first, first+count) on nthreads threads (0: all cores), dynamic
- * scheduling; rows[k*ncols..] and outcome[k] for run first+k;
- * progress(data, done, count)
- * is called from the calling thread only (may be NULL).  A failed run
- * never stops the others; the call itself fails only when it cannot start
- * (bad range, no memory, no threads). */
+ * scheduling; rows[k*ncols..] and outcome[k] for run first+k; progress
+ * (may be NULL) as qd_sweep_progress says.  A failed run never stops the
+ * others; the call itself fails only when it cannot start (bad range, no
+ * memory, no threads) or progress stops it. */
 /* nthreads above QD_SWEEP_MAX_THREADS is QD_ERR_ARG.  The pool is
  * qd_sweep_threads(nthreads, count) threads (fewer only when the system
  * refuses to start one; none started is QD_ERR_UNSUPPORTED). */
@@ -233,7 +241,7 @@ QD_API unsigned qd_sweep_threads(unsigned nthreads, size_t count); /* 0: above t
 QD_API qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
                               size_t count, unsigned nthreads, double *rows,
                               qd_sweep_outcome *outcome,
-                              void (*progress)(void *data, size_t done, size_t total), void *data);
+                              qd_sweep_progress progress, void *data);
 
 /* The rows and outcomes of runs [0, nruns) as qd_sweep_run fills them,
  * appended to out: CSV, the columns then `status` in a header, a line a
@@ -286,7 +294,7 @@ typedef struct qd_sweep_where {
  * qd_sweep_run, on the writer. */
 QD_API qd_status qd_sweep_run_all(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
                                   unsigned nthreads, double *rows, qd_sweep_outcome *outcome,
-                                  void (*progress)(void *data, size_t done, size_t total),
+                                  qd_sweep_progress progress,
                                   void *data, qd_sweep_where *where);
 
 /* Every run's row and outcome, as the caller of a whole sweep holds them. */
@@ -306,7 +314,7 @@ typedef struct qd_sweep_result {
  * end, in run order). */
 QD_API qd_status qd_sweep_result_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
                                      unsigned nthreads,
-                                     void (*progress)(void *data, size_t done, size_t total),
+                                     qd_sweep_progress progress,
                                      void *data, qd_sweep_result *r);
 QD_API void qd_sweep_result_free(qd_sweep_result *r); /* NULL is fine */
 

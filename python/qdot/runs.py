@@ -128,17 +128,25 @@ def lyapunov(core, t_end, exponents, renorm, transient, method, rtol, atol, dt, 
              max_steps, speeds):
     """Model.lyapunov's work: qd_lyap_setup_run on the set-up's run, the
     report printed by qd_lyap_json, as `qdot lyapunov --format json`."""
-    lo = new("qd_lyap_opts", {"nexp": _count(exponents, "lyapunov: exponents", 1e9),
-                              "renorm": _time(renorm, "lyapunov: renorm"),
-                              "transient": _time(transient, "lyapunov: transient")})
+    fields = {"nexp": _count(exponents, "lyapunov: exponents", 1e9),
+              "renorm": _time(renorm, "lyapunov: renorm"),
+              "transient": _time(transient, "lyapunov: transient")}
     setup = _Setup(core, speeds, initial)
     # Runge-Kutta: dop853 unless named; dt makes its step fixed (as the CLI)
     opts = setup.options(t_end, "dop853" if method is None else method, rtol, atol, dt, None,
                          max_steps, fixed=True)
     r = new("qd_lyap_result")
     try:
-        with Run("lyapunov"):  # no hook to stop it: ^C is raised once it returns
+        with Run("lyapunov") as run:
+            def progress(_data, done, t):
+                run.update(done, t)
+                return 1 if run.stop else 0  # ^C: stops after this renormalization
+            progress_c = ffi.callback("int(void *, double, double)", progress, error=1)
+            lo = new("qd_lyap_opts", dict(fields, progress=progress_c))
             st = lib.qd_lyap_setup_run(core.ctx, setup.ptr, core.model, opts, lo, r)
+            if run.stop:
+                take_error(core.ctx)  # "stopped at t": KeyboardInterrupt says it
+                return None
         if st != QD_OK:
             raise core.error(st, cls=None if st == lib.QD_ERR_ARG else NumericalError)
         return _commands.output(core, "lyapunov",
@@ -185,11 +193,17 @@ def sweep(core, t_end, measures, grid, random, runs, seed, section, events, stop
         raise core.error()
     r = new("qd_sweep_result")
     try:
-        with Run("sweep", "runs") as run:  # the pool has no stop hook: ^C once it returns
-            progress_c = ffi.callback("void(void *, size_t, size_t)",
-                                      lambda _d, done, total: run.update(done / total, done))
-            core.check(lib.qd_sweep_result_run(core.ctx, w, opts, int(threads), progress_c,
-                                               ffi.NULL, r))
+        with Run("sweep", "runs") as run:
+            def progress(_data, done, total):
+                run.update(done / total, done)
+                return 1 if run.stop else 0  # ^C: no run starts after it
+            progress_c = ffi.callback("int(void *, size_t, size_t)", progress, error=1)
+            st = lib.qd_sweep_result_run(core.ctx, w, opts, int(threads), progress_c,
+                                         ffi.NULL, r)
+            if run.stop:
+                take_error(core.ctx)  # "stopped after": KeyboardInterrupt says it
+                return None
+            core.check(st)
         if lib.qd_sweep_result_check(core.ctx, r) != QD_OK:
             raise core.error(cls=NumericalError)
         return _commands.output(core, "sweep", lambda buf: lib.qd_sweep_json(

@@ -66,6 +66,27 @@ def test_poincare_stopped_by_its_progress_callback(monkeypatch):
     assert p["x'"] == pytest.approx([w] * len(p), rel=1e-9)
 
 
+def test_lyapunov_and_sweep_stop_mid_run(monkeypatch):
+    """The library's hooks (qd_lyap_opts.progress, qd_sweep_progress) end
+    the run when Ctrl-C's flag is set, long before it would end."""
+    update = _progress.Run.update
+    seen = []
+
+    def stop_early(self, frac, t):  # the flag as the SIGINT handler sets it
+        seen.append(frac)
+        if frac > 0.01:
+            self.stop = True
+        update(self, frac, t)
+    monkeypatch.setattr(_progress.Run, "update", stop_early)
+    with pytest.raises(KeyboardInterrupt, match="lyapunov"):
+        qdot.Model(OSCILLATOR).lyapunov(1e6, renorm=1)
+    assert 0.01 < seen[-1] < 0.5      # stopped after the renormalization that saw it
+    seen.clear()
+    with pytest.raises(KeyboardInterrupt, match="sweep"):
+        qdot.Model(OSCILLATOR).sweep(2000, "final", grid="k=1:3:400", threads=1)
+    assert 0.01 < seen[-1] < 0.5      # most of the 400 runs never started
+
+
 CHILD = r"""
 import sys, qdot
 def force(t, y):

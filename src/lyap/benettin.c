@@ -32,6 +32,7 @@ extern void dorgqr_(const int *m, const int *n, const int *k, double *a, const i
 typedef struct bench {
     qd__lyap_tangent r;     /* the state and k tangent vectors (tangent.c) */
     const qd_sim_opts *o;
+    const qd_lyap_opts *lo; /* its progress hook */
     size_t k, d;
     double renorm, ta, T;   /* renormalization period; averaging from ta for T */
     double *sum;            /* k */
@@ -115,6 +116,17 @@ static qd_status renormalize(bench *b, bool counted) {
     return QD_OK;
 }
 
+/* The caller's hook after a renormalization: nonzero stops the run. */
+static qd_status report(bench *b) {
+    if (!b->lo->progress)
+        return QD_OK;
+    double span = b->o->t_end - b->o->t0, t = b->r.it.t;
+    if (b->lo->progress(b->lo->data, span > 0 ? (t - b->o->t0) / span : 1, t) == 0)
+        return QD_OK;
+    qd_ctx_error(b->r.ws.w.ctx, QD_ERR_ARG, "stopped at t = %.17g", t);
+    return QD_ERR_ARG;
+}
+
 /* The running averages at a renormalization in the last half. */
 static void record(bench *b) {
     double t = b->r.it.t - b->ta;
@@ -132,6 +144,8 @@ static qd_status transient(bench *b) {
         qd_status st = advance(b, tb);
         if (st == QD_OK)
             st = renormalize(b, false);
+        if (st == QD_OK)
+            st = report(b);
         if (st != QD_OK)
             return st;
     }
@@ -150,6 +164,8 @@ static qd_status average(bench *b) {
             return st;
         b->renorms++;
         record(b);
+        if ((st = report(b)) != QD_OK)
+            return st;
     }
     return QD_OK;
 }
@@ -199,7 +215,7 @@ qd_status qd_lyap_run_stats(qd_ctx *ctx, const qd_lyap *l, const qd_sim_opts *o,
     qd_status st = check_opts(ctx, l, o, lo);
     if (st != QD_OK)
         return st;
-    bench b = {.o = o, .k = lo->nexp, .d = 2 * l->n,
+    bench b = {.o = o, .lo = lo, .k = lo->nexp, .d = 2 * l->n,
                .renorm = lo->renorm > 0 ? lo->renorm : 1,
                .ta = o->t0 + lo->transient, .T = o->t_end - o->t0 - lo->transient};
     st = run(&b, ctx, l, o);

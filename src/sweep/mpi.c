@@ -44,7 +44,7 @@ typedef struct mpi_ctx {
     const qd_sweep *w;
     const qd_sim_opts *base;
     unsigned nthreads;
-    void (*progress)(void *data, size_t done, size_t total);
+    qd_sweep_progress progress;
     void *data;
 } mpi_ctx;
 
@@ -55,15 +55,17 @@ static qd_status run_chunk(void *data, size_t first, size_t count, double *rows,
                         NULL);
 }
 
+/* The writer's progress under a launcher: a stop is not heeded (the
+ * ranks share the runs; qd_sweep_progress). */
 static void progress(void *data, size_t done, size_t total) {
     mpi_ctx *c = data;
     if (c->progress)
-        c->progress(c->data, done, total);
+        (void)c->progress(c->data, done, total);
 }
 
 qd_status qd_sweep_run_all(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
                            unsigned nthreads, double *rows, qd_sweep_outcome *outcome,
-                           void (*prog)(void *data, size_t done, size_t total), void *data,
+                           qd_sweep_progress prog, void *data,
                            qd_sweep_where *where) {
     QD_ARGS_CTX(ctx, ctx && w && base && rows && outcome && where);
     *where = (qd_sweep_where){.writer = true, .ranks = 1, .threads = nthreads};
@@ -101,7 +103,7 @@ qd_status qd_sweep_run_all(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *ba
 
 qd_status qd_sweep_result_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base,
                               unsigned nthreads,
-                              void (*prog)(void *data, size_t done, size_t total), void *data,
+                              qd_sweep_progress prog, void *data,
                               qd_sweep_result *r) {
     QD_ARGS_CTX(ctx, ctx && w && base && r);
     *r = (qd_sweep_result){.nruns = w->nruns, .ncols = w->ncols};

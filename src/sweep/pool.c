@@ -29,6 +29,7 @@ typedef struct sw_pool {
     pthread_mutex_t lock;  /* with wake: the caller sleeps between runs done */
     pthread_cond_t wake;
     atomic_uint exited;    /* workers that have returned */
+    atomic_bool stop;      /* progress said stop: no run starts after it */
 } sw_pool;
 
 
@@ -40,7 +41,7 @@ static void wake(sw_pool *p) {
 
 static void runs(sw_pool *p, qd_ctx *ctx) {
     size_t ncols = qd_sweep_ncols(p->w);
-    for (;;) {
+    while (!atomic_load(&p->stop)) {
         size_t k = atomic_fetch_add(&p->next, 1);
         if (k >= p->count)
             break;
@@ -69,18 +70,16 @@ static unsigned cores(void) {
     return n > 0 ? (unsigned)n : 1u;
 }
 
-/* Wait for the workers, calling progress when runs are done (at most ten
- * times a second) and at the end. */
-static void watch(sw_pool *p, unsigned started, void (*progress)(void *, size_t, size_t),
-                  void *data) {
-    size_t shown = (size_t)-1;
+/* Wait for the workers, calling progress when a run is done, at least
+ * every 0.1 s (a stop is heard while long runs go on) and at the end. */
+static void watch(sw_pool *p, unsigned started, qd_sweep_progress progress, void *data) {
     pthread_mutex_lock(&p->lock);
     for (;;) {
         size_t done = atomic_load(&p->done);
-        if (progress && done != shown) {
+        if (progress) {
             pthread_mutex_unlock(&p->lock);
-            progress(data, done, p->count);
-            shown = done;
+            if (progress(data, done, p->count) != 0)
+                atomic_store(&p->stop, true);
             pthread_mutex_lock(&p->lock);
         }
         if (done >= p->count || atomic_load(&p->exited) == started)
@@ -98,15 +97,18 @@ static void watch(sw_pool *p, unsigned started, void (*progress)(void *, size_t,
     pthread_mutex_unlock(&p->lock);
 }
 
-/* Every worker could not start (no memory for its context): the runs
- * nobody took are failures. */
+/* The runs nobody took: stopped by progress, or (every worker could not
+ * start: no memory for its context) failures. */
 static void untaken(sw_pool *p) {
+    bool stopped = atomic_load(&p->stop);
+    qd_sweep_outcome o = stopped ? (qd_sweep_outcome){QD_ERR_ARG, {QD_STOP_CALLBACK, NAN, NAN}}
+                                 : (qd_sweep_outcome){QD_ERR_NOMEM, {QD_STOP_NONE, NAN, NAN}};
     for (size_t k = atomic_load(&p->next); k < p->count; k++)
-        p->outcome[k] = (qd_sweep_outcome){QD_ERR_NOMEM, {QD_STOP_NONE, NAN, NAN}};
+        p->outcome[k] = o;
 }
 
-static qd_status start(qd_ctx *ctx, sw_pool *p, unsigned nthreads,
-                       void (*progress)(void *, size_t, size_t), void *data) {
+static qd_status start(qd_ctx *ctx, sw_pool *p, unsigned nthreads, qd_sweep_progress progress,
+                       void *data) {
     pthread_t *tid = calloc(nthreads, sizeof *tid);
     if (!tid) {
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory starting the sweep's threads");
@@ -137,7 +139,7 @@ unsigned qd_sweep_threads(unsigned nthreads, size_t count) {
 
 qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, size_t first,
                        size_t count, unsigned nthreads, double *rows, qd_sweep_outcome *outcome,
-                       void (*progress)(void *data, size_t done, size_t total), void *data) {
+                       qd_sweep_progress progress, void *data) {
     QD_ARGS_CTX(ctx, ctx && w && base && rows && outcome);
     if (first > w->nruns || count > w->nruns - first) {
         qd_ctx_error(ctx, QD_ERR_ARG, "runs %zu to %zu of a sweep of %zu", first, first + count,
@@ -158,12 +160,18 @@ qd_status qd_sweep_run(qd_ctx *ctx, const qd_sweep *w, const qd_sim_opts *base, 
     atomic_init(&p.next, 0);
     atomic_init(&p.done, 0);
     atomic_init(&p.exited, 0);
+    atomic_init(&p.stop, false);
     pthread_mutex_init(&p.lock, NULL);
     pthread_cond_init(&p.wake, NULL);
     st = start(ctx, &p, nthreads, progress, data);
     pthread_cond_destroy(&p.wake);
     pthread_mutex_destroy(&p.lock);
-    if (st == QD_OK && atomic_load(&p.done) < count)
+    size_t done = atomic_load(&p.done);
+    if (st == QD_OK && done < count)
         untaken(&p);
+    if (st == QD_OK && atomic_load(&p.stop) && done < count) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "stopped after %zu of %zu runs", done, count);
+        st = QD_ERR_ARG;
+    }
     return st;
 }

@@ -23,6 +23,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include <setjmp.h>
 #include <cmocka.h>
 
@@ -277,11 +278,19 @@ static void test_lyapunov(void **state) {
 
 static size_t calls, last_done;
 
-static void count_progress(void *data, size_t done, size_t total) {
+static int count_progress(void *data, size_t done, size_t total) {
     (void)data;
     assert_true(done <= total && done >= last_done);
     last_done = done;
     calls++;
+    return 0;
+}
+
+/* Stop once a run is done (as Python's ^C does). */
+static int stop_progress(void *data, size_t done, size_t total) {
+    (void)data;
+    (void)total;
+    return done >= 1;
 }
 
 static void test_threads_identical(void **state) {
@@ -308,6 +317,25 @@ static void test_threads_identical(void **state) {
     for (size_t k = 0; k < 40; k++) /* field by field: a struct's padding is not data */
         assert_true(s1[k].status == s2[k].status && s1[k].stop.code == s2[k].stop.code &&
                     s1[k].stop.t == s2[k].stop.t);
+    /* stopped once a run is done, on one thread: the runs that ran keep
+     * their rows (the full sweep's), the rest are "stopped" (if the worker
+     * finished them all before the stop was heard, nothing is stopped) */
+    qd_status st = qd_sweep_run(f->ctx, w, &o, 0, 40, 1, r2, s2, stop_progress, NULL);
+    size_t ran = 0;
+    for (size_t k = 0; k < 40; k++) {
+        bool stopped = s2[k].status == QD_ERR_ARG && s2[k].stop.code == QD_STOP_CALLBACK;
+        assert_true(stopped || (s2[k].status == s1[k].status &&
+                                memcmp(r1 + k * nc, r2 + k * nc, nc * sizeof *r1) == 0));
+        ran += !stopped;
+    }
+    assert_true(ran >= 1);
+    if (ran < 40) {
+        assert_int_equal(st, QD_ERR_ARG);
+        assert_non_null(strstr(qd_ctx_diag(f->ctx)->message, "stopped after"));
+        qd_ctx_clear_error(f->ctx);
+    } else {
+        assert_int_equal(st, QD_OK);
+    }
     /* a part of the runs: the same rows */
     assert_int_equal(qd_sweep_run(f->ctx, w, &o, 10, 5, 2, r2, s2, NULL, NULL), QD_OK);
     assert_memory_equal(r1 + 10 * nc, r2, 5 * nc * sizeof *r1);
