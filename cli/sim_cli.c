@@ -63,6 +63,7 @@ const cli_opt cli_sim_opts[] = {
     {"--stop-at", NULL, CLI_LIST, SIM(stops), "\"EXPR = EXPR[, ...]\"",
      "an event that ends the run (repeatable; numbered after the --event ones)", NULL, NULL},
     {"--native", NULL, CLI_FLAG, SIM(native), NULL, "compile the right-hand side to C", NULL, NULL},
+    {"--jit", NULL, CLI_FLAG, SIM(jit), NULL, "run the compiled programs as machine code (LLVM)", NULL, NULL},
     {"--no-project", NULL, CLI_FLAG, SIM(no_project), NULL,
      "do not project onto the constraints after each step", NULL, NULL},
     {"--no-speeds", NULL, CLI_FLAG, SIM(no_speeds), NULL,
@@ -196,6 +197,10 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         qd_sim_setup_native(c->set, &c->opts, note, sizeof note) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && note[0])
+        fprintf(stderr, "qdot: note: --%s\n", note);
+    if (rc == QD_EXIT_OK && a->jit && qd_sim_setup_jit(c->set, note, sizeof note) != QD_OK)
+        rc = cli_diag_ctx(c->ctx);
+    if (rc == QD_EXIT_OK && a->jit && note[0])
         fprintf(stderr, "qdot: note: --%s\n", note);
     return rc;
 }

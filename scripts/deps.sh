@@ -7,6 +7,7 @@ what=${1:-build}
 pkgs="cmake make gcc pkg-config libgmp-dev libflint-dev libflint-arb-dev liblapack-dev libsundials-dev"
 pkgs="$pkgs libcairo2-dev"  # plots (src/plot): Cairo, and its runtime library with it
 pkgs="$pkgs libhdf5-dev"    # qdot sweep --format hdf5 (optional: built when found)
+pkgs="$pkgs llvm-14-dev"    # the JIT (modules/llvm.c, optional: built when found)
 # Tests: cmocka and SymPy/SciPy for the cross-checks, chromium for the animate
 # page (tests/cli/check_animate_cli.py), numpy/cffi/pytest for python/tests, and
 # OpenMPI for the 2-rank sweep test (the CLI is built with MPI when it is found);

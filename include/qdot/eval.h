@@ -39,6 +39,15 @@ QD_API void qd_prog_eval(const qd_prog *p, double *work, const double *in, doubl
 
 QD_API size_t qd_prog_ninstr(const qd_prog *p);  /* instructions after sharing */
 
+/* Machine code for p in this process, by LLVM's ORC JIT (the optional
+ * module qdot_llvm.so, opened on first use): qd_prog_eval then runs it,
+ * giving the interpreter's numbers bit for bit (the same operations in
+ * the same order, the same libm).  Call it before p is shared between
+ * threads.  QD_ERR_UNSUPPORTED (p still interpreted) when the module is
+ * missing or LLVM fails, saying why; QD_OK at once when already done. */
+QD_API qd_status qd_prog_jit(qd_ctx *ctx, qd_prog *p);
+QD_API bool qd_prog_jitted(const qd_prog *p); /* qd_prog_jit succeeded */
+
 #ifdef __cplusplus
 }
 #endif

@@ -381,6 +381,13 @@ QD_API qd_status qd_sim_check_opts(qd_ctx *ctx, const qd_sim_opts *opts);
 /* Compile the outputs and events (after the last add): from here on s is
  * immutable.  Idempotent.  A failure is recorded in s's context. */
 QD_API qd_status qd_sim_compile(qd_sim *s);
+
+/* qd_sim_compile, then every compiled program of s as machine code in this
+ * process (qd_prog_jit, LLVM's ORC JIT): the runs give the interpreter's
+ * numbers bit for bit, faster.  QD_ERR_UNSUPPORTED, saying why in s's
+ * context, when the JIT module is missing or fails: the programs not
+ * compiled stay interpreted, and s still runs. */
+QD_API qd_status qd_sim_jit(qd_sim *s);
 QD_API bool qd_sim_compiled(const qd_sim *s);
 
 /* Receives every row (event -1: a sample; else the index of the event in

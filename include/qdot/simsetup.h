@@ -180,6 +180,14 @@ QD_API qd_status qd_sim_setup_period(qd_sim_setup *s, const char *text, qd_sim_o
 QD_API qd_status qd_sim_setup_native(qd_sim_setup *s, const qd_sim_opts *opts, char *note,
                                      size_t cap);
 
+/* --jit: the set-up's compiled programs as machine code (qd_sim_jit, LLVM's
+ * ORC JIT in this process, no compiler run): the interpreter's numbers bit
+ * for bit.  When the JIT cannot (the module missing, LLVM failing), note
+ * (cap bytes, may be NULL) says why and the run stays interpreted: QD_OK.
+ * Other failures (no memory) are the status.  After the options, events
+ * and outputs are set. */
+QD_API qd_status qd_sim_setup_jit(qd_sim_setup *s, char *note, size_t cap);
+
 /* ---- an input fed back by LQR (src/sim/lqr.c) ------------------------------ */
 
 /* An LQR feedback set up on a simulation's input (qd_sim_setup_lqr). */
@@ -227,5 +235,5 @@ QD_API void qd_sim_lqr_free(qd_sim_lqr *l); /* NULL is fine */
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_sim_setup_state (syms, vals);
- * qd_sim_setup_native (note). An array whose count is 0 may be NULL. */
+ * qd_sim_setup_native (note); qd_sim_setup_jit (note). An array whose count is 0 may be NULL. */
 #endif

@@ -36,6 +36,12 @@ const qd_expr **qd__num_inputs(qd_ctx *ctx, size_t n, const qd_expr *const *expr
 /* max_i sum_j |A_ij| of an n x n row-major matrix: the scale of "zero" pivots. */
 double qd__num_norm_inf(size_t n, const double *A);
 bool qd__num_solve(size_t n, double *A, double *b, double tol);
+/* A x = b, A symmetric (its lower triangle read, overwritten by the
+ * Cholesky factor), b overwritten by x: false, with A and b spoilt, when a
+ * pivot is not above tol times the largest diagonal entry (A not positive
+ * definite or nearly singular: then solve with qd__num_solve, whose
+ * equilibrated test decides singularity).  cholesky.c. */
+bool qd__num_solve_spd(size_t n, double *A, double *b, double tol);
 
 /* The same elimination, rank-revealing: a column whose best pivot is not
  * above tol |A|_inf is skipped and marked in free_col (may be NULL); pc is

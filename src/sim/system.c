@@ -528,7 +528,9 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     size_t n = w->n, N = n + w->m;
     w->ctx = ctx;
     w->in = qd__calloc(ctx, w->nin + 1, sizeof *w->in);
-    w->K = qd__malloc(ctx, (N * N + 2 * N + 4 * n + 1) * sizeof *w->K);
+    /* K: the matrix, rhs (N), tmp (N + 4n), the right-hand side kept for
+     * solve_mass's second try (n) */
+    w->K = qd__malloc(ctx, (N * N + 2 * N + 5 * n + 1) * sizeof *w->K);
     w->pc = qd__malloc(ctx, (N + 1) * sizeof *w->pc);
     w->con_err = qd__calloc(ctx, w->m + 1, sizeof *w->con_err);
     bool ok = prog_ws(ctx, w->acc, w->acc_n, &w->acc_out, &w->acc_w);
@@ -719,15 +721,23 @@ static bool matrices_finite(const qd_sim *s) {
     return all_finite(s->acc_out, n * n) && all_finite(s->acc_out + n * n + n, s->m * n);
 }
 
-/* Solve the n*n matrix M x = r in scratch; x may alias r. */
+/* Solve the n*n matrix M x = r in scratch; x may alias r.  Cholesky
+ * first (M is symmetric, and positive definite for a kinetic energy: half
+ * the LU's work), the equilibrated LU when a pivot is not positive (an
+ * indefinite velocity part of L) or small, which then decides singularity
+ * as before; r is kept in K's spare room for that second try. */
 static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *r, double *x) {
     size_t n = s->n;
     if (!all_finite(M, n * n))
         return qd__sim_not_finite_at(s, t, "the mass matrix is", M, n * n);
-    for (size_t i = 0; i < n * n; i++)
-        s->K[i] = M[i];
-    for (size_t i = 0; x != r && i < n; i++)
-        x[i] = r[i];
+    double *r0 = s->K + (n + s->m) * (n + s->m) + 2 * (n + s->m) + 4 * n; /* its own room */
+    memcpy(s->K, M, n * n * sizeof *M);
+    memcpy(r0, r, n * sizeof *r);
+    memcpy(x, r0, n * sizeof *x);
+    if (qd__num_solve_spd(n, s->K, x, 1e-10))
+        return QD_OK;
+    memcpy(s->K, M, n * n * sizeof *M);
+    memcpy(x, r0, n * sizeof *x);
     if (!qd__num_solve(n, s->K, x, 1e-13 * (double)n))
         return singular(s, t);
     return QD_OK;

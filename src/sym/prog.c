@@ -587,6 +587,7 @@ qd_prog *qd_prog_new(qd_ctx *ctx, size_t nin, const qd_expr *const *inputs, size
 void qd_prog_free(qd_prog *p) {
     if (!p)
         return;
+    qd__prog_jit_release(p);
     qd__free(p->code);
     qd__free(p->opnd);
     qd__free(p->regs);
@@ -646,6 +647,10 @@ void qd_prog_eval(const qd_prog *p, double *work, const double *in, double *out)
     QD_ARGS(, p && work && in && out);
     if (!p)
         return;
+    if (p->jit) { /* the same numbers, bit for bit (src/sym/jit.h) */
+        p->jit(in, out);
+        return;
+    }
     double *r = work;
     const uint32_t *opnd = p->opnd;
     if (p->nin)

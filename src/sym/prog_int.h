@@ -7,6 +7,7 @@
 #define QD_SYM_PROG_INT_H
 
 #include "node.h"
+#include "jit.h"
 #include "qdot/eval.h"
 
 #include <stdint.h>
@@ -40,6 +41,11 @@ struct qd_prog {
     double *consts; /* nconst constants, registers nin .. nin + nconst */
     size_t nconst;
     uint32_t *out;
+    qd__jit_fn jit;    /* machine code for the program (qd_prog_jit), or NULL */
+    void *jit_code;    /* what the JIT module releases */
 };
+
+/* The JIT's code released (prog_jit.c): qd_prog_free's. */
+void qd__prog_jit_release(qd_prog *p);
 
 #endif

@@ -1137,6 +1137,17 @@ static void null_eval(void **state)
     reset(&F);
     /* ---- qd_prog_ninstr */
     /* no pointer argument */
+    /* ---- qd_prog_jit */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_prog_jit(NULL, F.prog));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_prog_jit(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_prog_jitted */
+    /* p NULL */
+    assert_true(qd_prog_jitted(NULL) == 0);
+    reset(&F);
     teardown(&F);
 }
 
@@ -5191,6 +5202,10 @@ static void null_sim(void **state)
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_compile(NULL));
     reset(&F);
+    /* ---- qd_sim_jit */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_jit(NULL));
+    reset(&F);
     /* ---- qd_sim_compiled */
     /* s NULL */
     assert_true(qd_sim_compiled(NULL) == 0);
@@ -5456,6 +5471,13 @@ static void null_simsetup(void **state)
     /* ---- qd_sim_setup_native */
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_native(NULL, NULL, F.c, 1));
+    reset(&F);
+    /* ---- qd_sim_setup_jit */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_jit(NULL, F.c, 1));
+    reset(&F);
+    /* note NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_jit(NULL, NULL, 1));
     reset(&F);
     /* ---- qd_sim_setup_lqr */
     /* s NULL */

@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """tests/build/check_needed.py - what the qdot program and libqdot.so load
-at start-up (issue 34): never OpenMPI, HDF5 nor Cairo (with X11), which
-only the optional modules qdot-modules/qdot_mpi.so, qdot_hdf5.so and
-qdot_cairo.so need, opened by dlopen when a sweep runs under mpirun or
-writes HDF5, or a plot is drawn (src/sweep/ext.h, src/plot/canvas.h).
+at start-up (issue 34): never OpenMPI, HDF5, Cairo (with X11) nor LLVM, which
+only the optional modules qdot-modules/qdot_mpi.so, qdot_hdf5.so,
+qdot_cairo.so and qdot_llvm.so need, opened by dlopen when a sweep runs under mpirun or
+writes HDF5, a plot is drawn or a program is jitted (src/sweep/ext.h,
+src/plot/canvas.h, src/sym/jit.h).
 
 - `ldd` of build/qdot and of libqdot.so (every library the loader maps,
   not only the direct NEEDED entries) names no libmpi, libopen-*, libhdf5,
-  libpmix, libhwloc, libcairo, libX11 nor libxcb;
+  libpmix, libhwloc, libcairo, libX11, libxcb nor libLLVM;
 - each module that was built needs its own library (libmpi, libhdf5) and
   (libcairo) and no libqdot: a module calls nothing of libqdot's, so that a program
   holding libqdot as an archive never gets a second copy of it.
@@ -16,7 +17,7 @@ Usage: check_needed.py --build BUILD_DIR
 """
 import argparse, glob, os, re, subprocess, sys
 
-HEAVY = re.compile(r"lib(mpi|open-rte|open-pal|hdf5|pmix|hwloc|cairo|X11|xcb)[^ ]*\.so")
+HEAVY = re.compile(r"lib(mpi|open-rte|open-pal|hdf5|pmix|hwloc|cairo|X11|xcb|LLVM)[^ ]*\.so")
 
 
 def ldd(path):
@@ -47,7 +48,7 @@ def main():
         heavy = sorted(set(HEAVY.findall(ldd(path))))
         check("%s loads no MPI, HDF5 nor Cairo" % os.path.basename(path), not heavy,
               "it maps lib%s" % ", lib".join(heavy))
-    wants = {"mpi": "libmpi.so", "hdf5": "libhdf5", "cairo": "libcairo"}
+    wants = {"mpi": "libmpi.so", "hdf5": "libhdf5", "cairo": "libcairo", "llvm": "libLLVM"}
     mods = sorted(glob.glob(os.path.join(b, "qdot-modules", "qdot_*.so")))
     for path in mods:
         name = os.path.basename(path)[5:-3]

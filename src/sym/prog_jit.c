@@ -1,0 +1,61 @@
+/*
+ * src/sym/prog_jit.c - qd_prog_jit: a program's machine code by the JIT
+ * module (modules/llvm.c over LLVM's ORC, src/sym/jit.h), opened on first
+ * use so that only a call that compiles loads LLVM.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "prog_int.h"
+#include "base/module.h"
+#include "../base/args.h"
+
+#include <dlfcn.h>
+#include <pthread.h>
+#include <stdio.h>
+
+typedef const qd__jit_ops *(*ops_fn)(void);
+
+static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+static const qd__jit_ops *ops; /* set once, under lock */
+
+/* The module's operations, or NULL with why in ctx. */
+static const qd__jit_ops *jit_ops(qd_ctx *ctx) {
+    pthread_mutex_lock(&lock);
+    const qd__jit_ops *o = ops;
+    if (!o) {
+        void *h = qd__module_open(ctx, "llvm", 0, QD__JIT_ABI, "the JIT (LLVM)", "llvm-14-dev");
+        ops_fn fn = NULL;
+        if (h && qd__module_fn(ctx, h, "qdot_llvm.so", "qd_ext_llvm_ops", &fn, sizeof fn))
+            o = ops = fn();
+    }
+    pthread_mutex_unlock(&lock);
+    return o;
+}
+
+qd_status qd_prog_jit(qd_ctx *ctx, qd_prog *p) {
+    QD_ARGS_CTX(ctx, ctx && p);
+    if (p->jit)
+        return QD_OK;
+    const qd__jit_ops *o = jit_ops(ctx);
+    if (!o)
+        return QD_ERR_UNSUPPORTED;
+    static const qd__jit_env env = {qd__pow_value, qd__step_value};
+    char err[512] = "";
+    qd__jit_fn fn = NULL;
+    void *code = o->compile(p, &env, &fn, err, sizeof err);
+    if (!code) {
+        qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "the JIT did not compile the program: %s", err);
+        return QD_ERR_UNSUPPORTED;
+    }
+    p->jit_code = code;
+    p->jit = fn;
+    return QD_OK;
+}
+
+bool qd_prog_jitted(const qd_prog *p) { return p && p->jit; }
+
+void qd__prog_jit_release(qd_prog *p) {
+    if (p->jit_code && ops)
+        ops->release(p->jit_code);
+    p->jit_code = NULL;
+    p->jit = NULL;
+}
