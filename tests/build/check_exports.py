@@ -55,14 +55,11 @@ PRIVATE_LEFT = {
     ("src/linear/statespace.c", "mech/mech.h"): "the sparse exact solve of M x = f",
     ("src/speeds/spd.h", "mech/mech.h"): "Kane's and Appell's forms extend mech's system",
     ("src/lyap/lyap.h", "sim/simint.h"): "the tangent flow runs on sim's Runge-Kutta pairs",
-    ("src/sweep/run.c", "sim/simint.h"): "sweep runs compiled systems (src/sweep: T5)",
-    ("src/sweep/sweep.c", "sim/simint.h"): "sweep runs compiled systems (src/sweep: T5)",
     ("src/sim/system.c", "codegen/angles.h"): "angle sums expanded as the generated C (src/sim: T2)",
     ("src/sim/taylor_native.c", "codegen/cg.h"): "the Taylor method's native code (src/sim: T2)",
     ("src/sim/taylor_native.h", "sym/taylor_prog.h"): "the Taylor recurrences (src/sim: T2)",
     ("src/model/expr.c", "sym/written.h"): "how a model's expression was written",
     ("src/field/modes.c", "model/parser.h"): "field statements read by the model's parser",
-    ("src/scene/scene.c", "model/parser.h"): "scene statements read by the model's parser",
 }
 
 ap = argparse.ArgumentParser()
