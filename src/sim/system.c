@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "codegen/angles.h"
+#include "codegen/codegen_export.h"
 #include "num/num.h"
 #include "base/mem.h"
 #include "../base/args.h"
