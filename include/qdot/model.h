@@ -91,6 +91,9 @@ QD_API qd_status qd_model_opts_for(qd_model_opts *opts, const char *derivation);
  * was, or QD_ERR_NOMEM. */
 QD_API qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag);
 QD_API void qd_model_free(qd_model *m);
+/* The context m was read in, where its expressions live (m's, not the
+ * caller's to free); NULL for NULL. */
+QD_API qd_ctx *qd_model_ctx(const qd_model *m);
 
 QD_API size_t qd_model_ncoords(const qd_model *m);
 QD_API const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in declaration order */
@@ -293,6 +296,15 @@ QD_API const qd_expr *qd_model_initial_definition(const qd_model *m, size_t coor
 /* A named definition (`x1 = ...`): its scalar value, or NULL when the name
  * is not defined or is a vector. */
 QD_API const qd_expr *qd_model_definition(const qd_model *m, const char *name);
+/* Every named definition, in the order written (`x1 = ...`, `P1 = [..]`,
+ * `R = rot_z(th)`): their number; the i-th one's name (owned by m; NULL
+ * when i is out of range); its size, 1 for a scalar, 3 for a vector, 9 for
+ * a 3x3 matrix (0 out of range); and its component k < size (a matrix by
+ * rows; NULL out of range). */
+QD_API size_t qd_model_ndefinitions(const qd_model *m);
+QD_API const char *qd_model_definition_name(const qd_model *m, size_t i);
+QD_API size_t qd_model_definition_size(const qd_model *m, size_t i);
+QD_API const qd_expr *qd_model_definition_component(const qd_model *m, size_t i, size_t k);
 /* text[a, b) read as the model language reads an expression after m's
  * statements: coordinates, velocities, t, parameters, inputs, the
  * definitions with their rates, vectors and components (P.x, P'.x,

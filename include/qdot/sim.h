@@ -199,6 +199,9 @@ QD_API qd_status qd_sim_load_native_taylor(qd_sim *s, const char *cache_dir, boo
 QD_API size_t qd_sim_ndof(const qd_sim *s);
 QD_API size_t qd_sim_ncon(const qd_sim *s);
 QD_API size_t qd_sim_nspeeds(const qd_sim *s);   /* m of qd_sim_new_speeds, else 0 */
+/* The events added by qd_sim_add_event (their indices 0 .. nevents-1 in a
+ * sink's rows); the contacts' impacts and friction switches not counted. */
+QD_API size_t qd_sim_nevents(const qd_sim *s);
 QD_API bool qd_sim_canonical(const qd_sim *s);   /* (q, p) form available */
 QD_API bool qd_sim_separable(const qd_sim *s);   /* H = T(p) + V(q), p-free forces */
 QD_API bool qd_sim_conservative(const qd_sim *s);/* no t in L, no forces, no dissipation */

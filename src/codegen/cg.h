@@ -1,10 +1,11 @@
 /*
- * src/codegen/cg.h - what the code generator's files share.
+ * src/codegen/cg.h - what the code generator's files share (beyond
+ * codegen_export.h, what src/sim uses too).
  */
 #ifndef QD_CODEGEN_CG_H
 #define QD_CODEGEN_CG_H
 
-#include "angles.h"
+#include "codegen_export.h"
 #include "qdot/codegen.h"
 
 /* The C of e's equations.  embed: one self-contained file (the header's
@@ -97,13 +98,5 @@ void qd__cg_name_list(qd_buf *c, const char *P, const char *what, size_t n,
 /* QD_OK when prefix is a C identifier of at most 60 characters, else
  * QD_ERR_ARG recorded. */
 qd_status qd__cg_prefix(qd_ctx *ctx, const char *prefix);
-
-/* Compile text (one C file) into cache (NULL: qd_native_load's default)
- * unless its object is there, and dlopen it.  generator names the text's
- * kind and version (part of the hash).  path: the object's name; cached:
- * it was there.  QD_ERR_UNSUPPORTED when no compiler runs or it fails, or
- * the cache is not the user's alone (see native.c). */
-qd_status qd__cg_native_object(qd_ctx *ctx, const char *text, const char *generator,
-                            const char *cache, char path[4096], bool *cached, void **handle);
 
 #endif

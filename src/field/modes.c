@@ -7,7 +7,7 @@
  * in closed form for constant coefficients, else by linear finite elements
  * and Richardson's extrapolation in h^2 (the header gives the details).
  */
-#include "../model/parser.h"
+#include "../model/model_export.h"
 #include "qdot/field.h"
 #include "../base/mem.h"
 #include "../base/args.h"

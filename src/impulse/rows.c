@@ -15,7 +15,7 @@
 #include "impulse_priv.h"
 
 #include "base/mem.h"
-#include "mech/mech.h"
+#include "mech/mech_export.h"
 
 #include <string.h>
 

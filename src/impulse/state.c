@@ -13,7 +13,7 @@
 #include "impulse_priv.h"
 
 #include "base/mem.h"
-#include "mech/mech.h"
+#include "mech/mech_export.h"
 #include "num/num.h"
 #include "qdot/state.h"
 

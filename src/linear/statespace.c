@@ -15,7 +15,7 @@
 #include "ss.h"
 
 #include "base/mem.h"
-#include "mech/mech.h"
+#include "mech/mech_export.h"
 #include "num/num.h"
 #include "../base/args.h"
 

@@ -6,7 +6,7 @@
 #define QD_LYAP_LYAP_H
 
 #include "qdot/lyapunov.h"
-#include "sim/simint.h"
+#include "sim/sim_export.h"
 
 /* The compiled system: the qd_sim of the equations (its acc program gives
  * M and f) and jac, the derivatives of the equations of motion:

@@ -1,13 +1,14 @@
 /*
- * src/mech/mech.h - what the mechanics files share: the numeric cache of a
- * qd_eom, the split of T by degree, the singularity check and a small dense
- * solver.
+ * src/mech/mech.h - what the mechanics files share beyond mech_export.h
+ * (what modules above use): the numeric cache of a qd_eom, the split of T
+ * by degree, the singularity check, the constraints' set-up.
  */
 #ifndef QD_MECH_MECH_H
 #define QD_MECH_MECH_H
 
 #include "qdot/eval.h"
 #include "qdot/mech.h"
+#include "mech_export.h"
 
 /* A compiled qd_eom (eval.c): immutable once made.  M and f compiled
  * once, with every free symbol of M and f as an input, so a state that
@@ -45,21 +46,6 @@ static inline size_t qd__out_len(const qd_eom *e) { return qd__out_g(e) + e->nco
 qd_status qd__mech_eom_compile(qd_ctx *ctx, const qd_eom *e);
 void qd__mech_eom_num_free(qd__eom_num *num);
 
-/* An expression grouped by its monomials in the velocities: every group's
- * coefficient simplified on its own. */
-typedef struct qd__vsum {
-    const qd_expr *all;    /* the sum of every group */
-    const qd_expr *deg[3]; /* the groups of degree 0, 1 and 2 */
-    long top;              /* the highest degree */
-    const qd_expr *bad;    /* when not a polynomial: a factor that is not */
-} qd__vsum;
-
-/* Group the expansion of x by monomials in the velocities qd[0..n).
- * QD_ERR_NONLINEAR, with v->bad set and nothing recorded in ctx, when x is
- * not a polynomial in them. */
-qd_status qd__mech_by_velocity(qd_ctx *ctx, const qd_expr *x, size_t n, const qd_expr *const *qd,
-                          qd__vsum *v);
-
 /* The kinetic energy grouped: T = T2 + T1 + T0 by degree in the velocities
  * (v->deg, valid when v->top <= 2).  Velocities in anything but a
  * polynomial are QD_ERR_NONLINEAR, with the reason in ctx. */
@@ -86,61 +72,7 @@ qd_status qd__mech_con_reduce(qd_ctx *ctx, qd_eom *e, bool *dropped);
  * step cancelled; NULL on failure (reason in ctx). */
 const qd_expr *qd__mech_det(qd_ctx *ctx, size_t n, const qd_expr *const *A);
 
-/* Solve A X = B symbolically (A n*n, B and X n*ncols, row-major) by the
- * fraction-free elimination of qd_eom_solve, each entry simplified.
- * QD_ERR_SINGULAR, nothing recorded, when det A simplifies to 0;
- * QD_ERR_TOOBIG, nothing recorded, when an entry would exceed max_ops
- * operations (0: no limit). */
-qd_status qd__mech_solve_cols(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
-                         const qd_expr *const *B, const qd_expr **X, size_t max_ops);
-
-/* The same for sparse A (solve_sparse.c): rows and columns with a single
- * entry are solved directly, only the rest by elimination.  Each unknown
- * X_j (column c) solved by a singleton row or column is passed through tidy
- * (with arg, j and c) as soon as it is known, since the rows still to come
- * substitute it: the caller knows the shape of the solution (linear in some
- * symbols, say) and can tidy it more cheaply than qd_simplify, the default
- * (tidy NULL). */
-typedef const qd_expr *(*qd__tidy_fn)(void *arg, size_t j, size_t c, const qd_expr *x);
-qd_status qd__mech_solve_sparse(qd_ctx *ctx, size_t n, const qd_expr *const *A, size_t ncols,
-                           const qd_expr *const *B, const qd_expr **X, size_t max_ops,
-                           qd__tidy_fn tidy, void *arg);
-
 /* ---- constraints ---------------------------------------------------------- */
-
-/* What Lagrange's equations are derived from: a model's content, or that
- * content after coordinates were eliminated (eliminate.c).  The arrays are
- * malloc'd (qd__mech_sys_free); the expressions belong to the context. */
-typedef struct qd__sys {
-    size_t n;
-    const qd_expr **q;                 /* n coordinates */
-    const qd_expr **Q;                 /* n generalized forces */
-    const qd_expr *T, *V, *U, *L, *D;  /* NULL where the model has none */
-    bool L_given;
-    size_t ncon;
-    const char **con_name;             /* owned by the model */
-    const qd_expr **con_expr;          /* = 0 along the motion */
-    size_t nreduced;
-    const char **reduced;              /* ncon entries: redundant ones eliminate left out */
-} qd__sys;
-
-qd_status qd__mech_sys_from_model(qd_ctx *ctx, const qd_model *m, qd__sys *s);
-void qd__mech_sys_free(qd__sys *s);
-
-/* A qd_eom with e's coordinates and constraints (qd__mech_con_setup) but no
- * Lagrange rows (M and f NULL) and no closing rows (b[k] NULL): what the
- * equations in speeds start from (they need the velocity rows only). */
-qd_eom *qd__mech_eom_shell(qd_ctx *ctx, const qd__sys *s);
-
-/* Lagrange's rows M q'' = f of a shell from s with the Lagrangian L (as
- * qd__mech_sys_lagrangian gives it): e->M, e->f, e->L; each entry simplified
- * (f grouped by velocity monomials first) unless raw, for a caller that
- * combines them and simplifies only the combinations. */
-qd_status qd__mech_eom_rows(qd_ctx *ctx, qd_eom *e, const qd__sys *s, const qd_expr *L, bool raw);
-
-/* L of s grouped by velocity monomials (as qd_eom_derive differentiates it),
- * e's coordinates set; T's split goes to e->T2, T1, T0. */
-const qd_expr *qd__mech_sys_lagrangian(qd_ctx *ctx, qd_eom *e, const qd__sys *s);
 
 /* --eliminate: solve the holonomic constraints of s that allow it for one
  * coordinate each and substitute (docs in qdot/mech.h, qd_eom_opts).  s
@@ -151,17 +83,6 @@ qd_status qd__mech_eliminate(qd_ctx *ctx, qd__sys *s, qd_elim **elim, size_t *ne
  * coefficients, multipliers and the closing rows A q'' = b (with_b; else
  * every b[k] stays NULL: the closing rows cost more than the rest). */
 qd_status qd__mech_con_setup(qd_ctx *ctx, qd_eom *e, const qd__sys *s, bool with_b);
-
-/* Is A (m*n, row-major) of rank below m?  Then mu (m) receives a vector
- * with A^T mu = 0, largest entry 1 in magnitude.  tol is relative. */
-bool qd__mech_con_deficient(qd_ctx *ctx, size_t n, size_t m, const double *A, double tol,
-                            double *mu);
-
-/* Report rank-deficient constraints: those with a weight in mu, named;
- * inconsistent when some combination mu of the constraints (g, or b at the
- * acceleration level) is not zero.  where: "" or " at this state". */
-qd_status qd__mech_con_report(qd_ctx *ctx, const qd_eom *e, const double *mu, bool inconsistent,
-                         const char *where);
 
 /* Solve [M -A^T; A 0] [x; lambda] = [f; b] from the compiled outputs out,
  * in the scratch K ((n+m)^2 + n+m doubles); x (n) and lambda (m) may be

@@ -20,7 +20,7 @@
 #include "parser.h"
 #include "base/diag.h"
 #include "base/mem.h"
-#include "sym/written.h"
+#include "sym/sym_export.h"
 
 #include <ctype.h>
 #include <stdio.h>

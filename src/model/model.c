@@ -396,6 +396,34 @@ const qd_expr *qd_model_definition(const qd_model *m, const char *name) {
     return d && d->v.kind == VK_SCALAR ? d->v.c[0] : NULL;
 }
 
+qd_ctx *qd_model_ctx(const qd_model *m) {
+    QD_ARGS(NULL, m);
+    return m->ctx;
+}
+
+size_t qd_model_ndefinitions(const qd_model *m) {
+    QD_ARGS(0, m);
+    return m->ndefs;
+}
+
+const char *qd_model_definition_name(const qd_model *m, size_t i) {
+    QD_ARGS(NULL, m);
+    return i < m->ndefs ? m->defs[i].name : NULL;
+}
+
+size_t qd_model_definition_size(const qd_model *m, size_t i) {
+    QD_ARGS(0, m);
+    if (i >= m->ndefs)
+        return 0;
+    vkind k = m->defs[i].v.kind;
+    return k == VK_SCALAR ? 1 : k == VK_VECTOR ? 3 : 9;
+}
+
+const qd_expr *qd_model_definition_component(const qd_model *m, size_t i, size_t k) {
+    QD_ARGS(NULL, m);
+    return k < qd_model_definition_size(m, i) ? m->defs[i].v.c[k] : NULL;
+}
+
 bool qd_model_where(const qd_model *m, const char *what, qd_diag *out) {
     QD_ARGS(false, m && what);
     long i = qd__mdl_names_find(m, QD_MDL_NAME_WHERE, what, strlen(what));

@@ -10,12 +10,9 @@
 #define QD_MODEL_PARSER_H
 
 #include "qdot/model.h"
+#include "model_export.h"
 #include "lex.h"
 #include "base/diag.h" /* qd__diag_nearest: "did you mean" */
-
-/* A name is at most QD_MDL_NAME_MAX - 1 bytes (a longer one is refused
- * where it is read, parse.c), so a buffer of QD_MDL_NAME_MAX holds it whole. */
-#define QD_MDL_NAME_MAX 128
 
 /* A value of the language: a scalar, a vector of three components, or a
  * 3x3 matrix (a rotation, an inertia tensor), stored by rows. */
@@ -98,17 +95,6 @@ typedef struct isoper {
     const qd_expr *value_def;  /* as written, in the parameters */
     const qd_expr *lambda;
 } isoper;
-
-/* `field y(x, t) on x = A .. B` with `Ldensity` and `boundary` (field.c):
- * a continuous system, read only by qd_field_parse (qdot/field.h). */
-typedef struct qd__field {
-    char *name, *space;        /* owned copies: y, x */
-    const qd_expr *y, *yt, *yx, *x;  /* the symbols the density is written in */
-    const qd_expr *ends[2];    /* the interval's ends, numbers */
-    const qd_expr *density;    /* NULL until `Ldensity = ...`; as written */
-    const qd_expr *density_num;/* the same with the parameters' values put in */
-    int bc[2];                 /* -1 not given, else a qd_field_end */
-} qd__field;
 
 typedef struct particle {
     const qd_expr *mass;
@@ -356,8 +342,6 @@ bool qd__mdl_stmt_ldensity(parser *p);
 bool qd__mdl_stmt_boundary(parser *p);
 bool qd__mdl_field_finish(parser *p);
 void qd__mdl_free_field(qd_model *m);
-struct qd_field;
-const qd__field *qd__mdl_field_data(const struct qd_field *f); /* for src/field */
 /* parse.c: the text read as a field model (p.field_ok) */
 qd_model *qd__mdl_parse_field(qd_ctx *ctx, const char *text, const qd_model_opts *opts,
                               qd_diag *diag);

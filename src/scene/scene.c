@@ -10,7 +10,6 @@
 #include <string.h>
 
 #include "base/args.h"
-#include "model/parser.h"
 
 #define FLAT 1e-9   /* an axis no point moves along, relative to the scale */
 #define RIGID 1e-6  /* a distance that stays constant, relative to the scale */
@@ -34,50 +33,55 @@ static bool is_place(qd_ctx *ctx, const qd_expr *x) {
     return moves;
 }
 
-/* The scalar definition named prefix + suffix, when a place. */
-static const def *scalar_place(qd_ctx *ctx, const qd_model *m, char prefix, const char *suffix) {
-    char name[QD_MDL_NAME_MAX + 1];
+/* The scalar definition named prefix + suffix, when a place: its value. */
+static const qd_expr *scalar_place(qd_ctx *ctx, const qd_model *m, char prefix,
+                                   const char *suffix) {
+    char name[256]; /* longer than any name a model has */
     int len = snprintf(name, sizeof name, "%c%s", prefix, suffix);
     if (len < 0 || (size_t)len >= sizeof name)
         return NULL;
-    const def *d = qd__mdl_find_def(m, name, (size_t)len);
-    return d && d->v.kind == VK_SCALAR && is_place(ctx, d->v.c[0]) ? d : NULL;
+    const qd_expr *v = qd_model_definition(m, name);
+    return v && is_place(ctx, v) ? v : NULL;
 }
 
-static bool vector_place(qd_ctx *ctx, const def *d) {
-    if (d->v.kind != VK_VECTOR || d->name[0] != 'P')
+static bool vector_place(qd_ctx *ctx, const qd_model *m, size_t i) {
+    if (qd_model_definition_size(m, i) != 3 || qd_model_definition_name(m, i)[0] != 'P')
         return false;
     bool any = false;
-    for (int k = 0; k < 3; k++)
-        any |= is_place(ctx, d->v.c[k]);
+    for (size_t k = 0; k < 3; k++)
+        any |= is_place(ctx, qd_model_definition_component(m, i, k));
     return any;
 }
 
 /* The named positions: a pair x<S>, y<S> (and z<S> when defined) found at
  * the x definition, or a vector P<S>. */
 static size_t positions(qd_ctx *ctx, const qd_model *m, qd_scene_point *out) {
-    size_t n = 0;
-    for (size_t i = 0; i < m->ndefs; i++) {
-        const def *d = &m->defs[i];
+    size_t n = 0, nd = qd_model_ndefinitions(m);
+    for (size_t i = 0; i < nd; i++) {
+        const char *name = qd_model_definition_name(m, i);
+        const qd_expr *x = qd_model_definition_component(m, i, 0);
         qd_scene_point p = {.kind = QD_SCENE_POSITION};
-        if (d->name[0] == 'x' && d->v.kind == VK_SCALAR && is_place(ctx, d->v.c[0])) {
-            const char *suffix = d->name + 1;
-            const def *y = scalar_place(ctx, m, 'y', suffix), *z = scalar_place(ctx, m, 'z', suffix);
+        if (name[0] == 'x' && qd_model_definition_size(m, i) == 1 && is_place(ctx, x)) {
+            const char *suffix = name + 1;
+            const qd_expr *y = scalar_place(ctx, m, 'y', suffix), *z = scalar_place(ctx, m, 'z', suffix);
             if (!y)
                 continue;
-            p.pos[0] = d->v.c[0];
-            p.pos[1] = y->v.c[0];
-            p.pos[2] = z ? z->v.c[0] : qd_int(ctx, 0);
-            snprintf(p.name, sizeof p.name, "%s,%s%s%s", d->name, y->name, z ? "," : "",
-                     z ? z->name : "");
-            snprintf(p.comp[0], sizeof p.comp[0], "%s", d->name);
-            snprintf(p.comp[1], sizeof p.comp[1], "%s", y->name);
-            snprintf(p.comp[2], sizeof p.comp[2], "%s", z ? z->name : "");
-        } else if (vector_place(ctx, d)) {
-            for (int k = 0; k < 3; k++)
-                p.pos[k] = d->v.c[k];
-            snprintf(p.name, sizeof p.name, "%s", d->name);
-            snprintf(p.comp[0], sizeof p.comp[0], "%s", d->name);
+            p.pos[0] = x;
+            p.pos[1] = y;
+            p.pos[2] = z ? z : qd_int(ctx, 0);
+            if (z)
+                snprintf(p.name, sizeof p.name, "%s,y%s,z%s", name, suffix, suffix);
+            else
+                snprintf(p.name, sizeof p.name, "%s,y%s", name, suffix);
+            snprintf(p.comp[0], sizeof p.comp[0], "%s", name);
+            snprintf(p.comp[1], sizeof p.comp[1], "y%s", suffix);
+            if (z)
+                snprintf(p.comp[2], sizeof p.comp[2], "z%s", suffix);
+        } else if (vector_place(ctx, m, i)) {
+            for (size_t k = 0; k < 3; k++)
+                p.pos[k] = qd_model_definition_component(m, i, k);
+            snprintf(p.name, sizeof p.name, "%s", name);
+            snprintf(p.comp[0], sizeof p.comp[0], "%s", name);
         } else {
             continue;
         }
@@ -97,7 +101,7 @@ qd_status qd_scene_points(qd_ctx *ctx, const qd_model *m, unsigned which, qd_sce
     QD_ARGS_CTX(ctx, m && pts && n);
     *pts = NULL;
     *n = 0;
-    qd_ctx *c = m->ctx;
+    qd_ctx *c = qd_model_ctx(m);
     size_t np = qd_model_nparticles(m), nb = qd_model_nbodies(m);
     if (!which)
         which = np + nb ? QD_SCENE_PARTICLES | QD_SCENE_BODIES : QD_SCENE_POSITIONS;

@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "codegen/angles.h"
+#include "codegen/codegen_export.h"
 #include "num/num.h"
 #include "base/mem.h"
 #include "../base/args.h"
@@ -346,6 +346,7 @@ void qd_sim_free(qd_sim *s) {
 
 size_t qd_sim_ndof(const qd_sim *s) { QD_ARGS(0, s); return s->n; }
 size_t qd_sim_ncon(const qd_sim *s) { QD_ARGS(0, s); return s->m; }
+size_t qd_sim_nevents(const qd_sim *s) { QD_ARGS(0, s); return s->nev; }
 bool qd_sim_canonical(const qd_sim *s) { QD_ARGS(false, s); return s->canonical; }
 double qd_sim_constraint_error(const qd_sim *s, size_t c) {
     QD_ARGS(NAN, s);

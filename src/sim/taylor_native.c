@@ -11,7 +11,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "taylor_native.h"
-#include "codegen/cg.h"
+#include "codegen/codegen_export.h"
 #include "base/mem.h"
 #include "../base/args.h"
 

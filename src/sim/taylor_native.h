@@ -8,7 +8,7 @@
 #define QD_SIM_TAYLOR_NATIVE_H
 
 #include "simint.h"
-#include "sym/taylor_prog.h"
+#include "sym/sym_export.h"
 
 /* The programs (*np of them, at most 2) and var[0..s->nin): the state's
  * inputs in the method's form, and t. */

@@ -6,8 +6,9 @@
 #ifndef QD_SPEEDS_SPD_H
 #define QD_SPEEDS_SPD_H
 
+#include "qdot/eval.h"
 #include "qdot/speeds.h"
-#include "../mech/mech.h"
+#include "../mech/mech_export.h"
 
 /* The private part of a qd_speeds_eom (its priv field). */
 typedef struct qd__spd_priv {

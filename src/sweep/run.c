@@ -11,7 +11,6 @@
 #include <string.h>
 
 #include "base/mem.h"
-#include "sim/simint.h"
 #include "../base/args.h"
 
 /* What the sink keeps of a run. */
@@ -149,7 +148,7 @@ static void run_inputs(const qd_sweep *w, const qd_sim_opts *base, const double 
 
 qd_status qd__sweep_ready(qd_ctx *ctx, const qd_sweep *w) {
     for (size_t k = 0; k < w->nms; k++) {
-        if (w->ms[k].kind == QD__MS_EVENT && w->event >= w->s->nev) {
+        if (w->ms[k].kind == QD__MS_EVENT && w->event >= qd_sim_nevents(w->s)) {
             qd_ctx_error(ctx, QD_ERR_ARG, "the measure event needs an event of the simulation");
             return QD_ERR_ARG;
         }

@@ -13,7 +13,6 @@
 #include <string.h>
 
 #include "base/mem.h"
-#include "sim/simint.h"
 #include "../base/args.h"
 
 qd_sweep *qd_sweep_new(qd_ctx *ctx, const qd_sim *s, const qd_model *m) {
@@ -315,10 +314,10 @@ qd_status qd__sweep_columns(qd_sweep *w) {
 /* ---- accessors ------------------------------------------------------------- */
 
 static qd_status event_index(qd_sweep *w, size_t k, const char *what) {
-    if (k < w->s->nev)
+    if (k < qd_sim_nevents(w->s))
         return QD_OK;
     qd_ctx_error(w->ctx, QD_ERR_ARG, "%s: event %zu, but the simulation has %zu", what, k,
-                 w->s->nev);
+                 qd_sim_nevents(w->s));
     return QD_ERR_ARG;
 }
 

@@ -12,7 +12,7 @@
  */
 #include "node.h"
 #include "../base/args.h"
-#include "written.h"
+#include "sym_export.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -20,7 +20,7 @@
  */
 #include "node.h"
 #include "../base/args.h"
-#include "written.h"
+#include "sym_export.h"
 
 static const qd_expr *pow_node(qd_ctx *ctx, const qd_expr *b, const qd_expr *e) {
     qd_expr proto = {0};

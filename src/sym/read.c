@@ -36,7 +36,7 @@
  */
 #include "qdot/read.h"
 #include "node.h"
-#include "written.h"
+#include "sym_export.h"
 #include "base/diag.h"
 #include "../base/args.h"
 

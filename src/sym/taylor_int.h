@@ -6,7 +6,7 @@
 #ifndef QD_SYM_TAYLOR_INT_H
 #define QD_SYM_TAYLOR_INT_H
 
-#include "taylor_prog.h"
+#include "sym_export.h"
 
 typedef enum top {
     T_ADD, T_SUB, T_MUL, T_DIV, T_NEG, T_RECIP, T_SQRT, T_POWC, T_SINCOS, T_SINHCOSH,

@@ -1,11 +1,11 @@
 /*
  * src/sym/taylor_prog.c - Taylor mode of the straight-line programs
- * (taylor_prog.h): the programs renamed into single assignment with binary
+ * (sym_export.h): the programs renamed into single assignment with binary
  * operations and auxiliary series, then the recurrences of taylor_rec.h
  * instantiated for double, long double and qd__f128.
  */
 #include "prog_int.h"
-#include "taylor_prog.h"
+#include "sym_export.h"
 #include "taylor_int.h"
 #include "base/mem.h"
 

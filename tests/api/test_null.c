@@ -2662,6 +2662,10 @@ static void null_model(void **state)
     /* m NULL */
     qd_model_free(NULL);
     reset(&F);
+    /* ---- qd_model_ctx */
+    /* m NULL */
+    assert_null(qd_model_ctx(NULL));
+    reset(&F);
     /* ---- qd_model_ncoords */
     /* m NULL */
     assert_true(qd_model_ncoords(NULL) == 0);
@@ -2992,6 +2996,22 @@ static void null_model(void **state)
     reset(&F);
     /* name NULL */
     assert_null(qd_model_definition(F.model, NULL));
+    reset(&F);
+    /* ---- qd_model_ndefinitions */
+    /* m NULL */
+    assert_true(qd_model_ndefinitions(NULL) == 0);
+    reset(&F);
+    /* ---- qd_model_definition_name */
+    /* m NULL */
+    assert_null(qd_model_definition_name(NULL, 1));
+    reset(&F);
+    /* ---- qd_model_definition_size */
+    /* m NULL */
+    assert_true(qd_model_definition_size(NULL, 1) == 0);
+    reset(&F);
+    /* ---- qd_model_definition_component */
+    /* m NULL */
+    assert_null(qd_model_definition_component(NULL, 1, 1));
     reset(&F);
     /* ---- qd_model_read_expr */
     /* ctx NULL */
@@ -5162,6 +5182,10 @@ static void null_sim(void **state)
     /* ---- qd_sim_nspeeds */
     /* s NULL */
     assert_true(qd_sim_nspeeds(NULL) == 0);
+    reset(&F);
+    /* ---- qd_sim_nevents */
+    /* s NULL */
+    assert_true(qd_sim_nevents(NULL) == 0);
     reset(&F);
     /* ---- qd_sim_canonical */
     /* s NULL */

@@ -16,10 +16,12 @@ src/ reaches above itself (docs/design.md, "Architecture").
    down); a module may call (a symbol of its objects resolved in another
    module's) and include (`#include "M/x.h"` or "../M/x.h") only modules of
    lower rank.  A private header (src/M/x.h) is included only inside M,
-   except base's (the bottom layer every module uses) and the shared
-   internal interfaces SHARED; the includes still waiting for a public API
-   are listed, each with its reason, in PRIVATE_LEFT, and one that goes
-   away must leave the list (so it only shrinks).
+   except base's (the bottom layer every module uses), the shared internal
+   interfaces SHARED, and a module's interface header src/M/M_export.h:
+   what M deliberately gives the modules above it when a public API would
+   be wrong.  An interface header declares only M's internal names (its
+   prefix), includes only public, base, SHARED or lower interface headers
+   (so it cannot pass M's private headers on), and is used above M.
 """
 import argparse, glob, os, re, subprocess, sys
 
@@ -47,23 +49,10 @@ KERNEL = {"base", "sym"}
 # Private headers other modules may include: the dense linear algebra every
 # numeric module shares, and the node layout the code generator walks.
 SHARED = {"num/num.h", "sym/node.h"}
-# Private headers still included from another module, with why (issue 31):
-# each wants a public API, or the module merged into the one it extends.
-PRIVATE_LEFT = {
-    ("src/impulse/rows.c", "mech/mech.h"): "the velocity-form constraint rows",
-    ("src/impulse/state.c", "mech/mech.h"): "the constraints' classification",
-    ("src/linear/statespace.c", "mech/mech.h"): "the sparse exact solve of M x = f",
-    ("src/speeds/spd.h", "mech/mech.h"): "Kane's and Appell's forms extend mech's system",
-    ("src/lyap/lyap.h", "sim/simint.h"): "the tangent flow runs on sim's Runge-Kutta pairs",
-    ("src/sweep/run.c", "sim/simint.h"): "sweep runs compiled systems (src/sweep: T5)",
-    ("src/sweep/sweep.c", "sim/simint.h"): "sweep runs compiled systems (src/sweep: T5)",
-    ("src/sim/system.c", "codegen/angles.h"): "angle sums expanded as the generated C (src/sim: T2)",
-    ("src/sim/taylor_native.c", "codegen/cg.h"): "the Taylor method's native code (src/sim: T2)",
-    ("src/sim/taylor_native.h", "sym/taylor_prog.h"): "the Taylor recurrences (src/sim: T2)",
-    ("src/model/expr.c", "sym/written.h"): "how a model's expression was written",
-    ("src/field/modes.c", "model/parser.h"): "field statements read by the model's parser",
-    ("src/scene/scene.c", "model/parser.h"): "scene statements read by the model's parser",
-}
+# A module's interface to the modules above it (docs/design.md, "Architecture").
+def interface(hdr):
+    mod, name = hdr.split("/", 1)
+    return name == f"{mod}_export.h"
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--build", required=True)
@@ -139,11 +128,13 @@ for (mod, to), syms in sorted(calls.items()):
 
 # ---- 3. include lines ----------------------------------------------------------
 inc = re.compile(r'^\s*#\s*include\s+"(?:\.\./)?([a-z_]+)/([\w.]+)"', re.M)
-seen_left = set()
+inc_local = re.compile(r'^\s*#\s*include\s+"([\w.]+)"', re.M)
+used_above = set()
 for path in sorted(glob.glob(os.path.join(a.root, "src", "*", "*.[ch]"))):
     rel = os.path.relpath(path, a.root)
     mod = rel.split(os.sep)[1]
-    for m in inc.finditer(open(path, encoding="utf-8").read()):
+    text = open(path, encoding="utf-8").read()
+    for m in inc.finditer(text):
         to, hdr = m.group(1), f"{m.group(1)}/{m.group(2)}"
         if to == "qdot" or to == mod or to not in RANK or mod not in RANK:
             continue
@@ -151,17 +142,45 @@ for path in sorted(glob.glob(os.path.join(a.root, "src", "*", "*.[ch]"))):
             problems.append(f"{rel} (rank {RANK[mod]}) includes {hdr} (rank {RANK[to]})")
         if to == "base" or hdr in SHARED:
             continue
-        if (rel, hdr) in PRIVATE_LEFT:
-            seen_left.add((rel, hdr))
+        if interface(hdr):
+            used_above.add(hdr)
         else:
-            problems.append(f"{rel} includes {hdr}, a private header of src/{to}")
-for k in sorted(set(PRIVATE_LEFT) - seen_left):
-    problems.append(f"{k[0]} no longer includes {k[1]}: take it off PRIVATE_LEFT")
+            problems.append(f"{rel} includes {hdr}, a private header of src/{to} "
+                            f"(what a higher module needs is public API or {to}/{to}_export.h)")
+
+# ---- 4. the interface headers ----------------------------------------------------
+decl = re.compile(r"^[A-Za-z_][\w \t*]*?\b(qd_\w+)\s*\(", re.M)
+for path in sorted(glob.glob(os.path.join(a.root, "src", "*", "*_export.h"))):
+    rel = os.path.relpath(path, a.root)
+    mod, name = rel.split(os.sep)[1], os.path.basename(path)
+    hdr = f"{mod}/{name}"
+    if not interface(hdr):
+        problems.append(f"{rel}: an interface header is named after its module ({mod}_export.h)")
+        continue
+    if mod not in RANK:
+        continue
+    text = open(path, encoding="utf-8").read()
+    for m in inc.finditer(text):
+        to, h = m.group(1), f"{m.group(1)}/{m.group(2)}"
+        if not (to in ("qdot", "base") or h in SHARED or (interface(h) and h != hdr)):
+            problems.append(f"{rel} includes {h}: an interface header passes on no private header")
+    for m in inc_local.finditer(text):
+        problems.append(f"{rel} includes \"{m.group(1)}\": an interface header passes on "
+                        "no private header")
+    for m in decl.finditer(text):
+        f = m.group(1)
+        ok = (f.startswith("qd__") and not any(f.startswith(f"qd__{t}_") for t in PREFIX.values())
+              if mod in KERNEL else f.startswith(f"qd__{PREFIX[mod]}_"))
+        if not ok:
+            problems.append(f"{rel} declares {f}: not src/{mod}'s internal prefix")
+    if hdr not in used_above:
+        problems.append(f"{rel}: no module above {mod} includes it (then it is private: "
+                        "fold it back into the module's own headers)")
 
 for p in problems:
     print(p)
 ncalls = len({k for k in calls})
 print(f"{len(exported)} exported, {len(declared)} declared; {len(defined)} globals in "
       f"{len(modules)} modules, {ncalls} module-to-module call edges all downward; "
-      f"{len(PRIVATE_LEFT)} private includes across modules left")
+      f"{len(used_above)} module interface headers used above their module")
 sys.exit(1 if problems else 0)

@@ -54,6 +54,7 @@ static void check_disc(double b) {
     for (size_t i = 0; i < sizeof all / sizeof *all; i++) {
         qd_sim_method m = all[i];
         sim_fix *f = particle(b, true);
+        assert_int_equal(qd_sim_nevents(f->s), 0); /* the contact is no added event */
         assert_int_equal(run_method(f, m), QD_OK);
         int cx = sf_col(f, m, "x'"), cy = sf_col(f, m, "y'");
         if (f->stats.impacts != 1 || !(fabs(f->last[cx] - vx) < tol_of(m)) ||
@@ -104,6 +105,7 @@ static void check_circle(double b) {
         const qd_expr *g = qd_read(f->ctx, "x^2 + y^2 - 1", NULL, NULL);
         assert_non_null(g);
         assert_int_equal(qd_sim_add_event(f->s, g, 0, NULL, false), QD_OK);
+        assert_int_equal(qd_sim_nevents(f->s), 1);
         assert_int_equal(run_method(f, m), QD_OK);
         if (f->nev != 2 || f->stats.events != 2 || !(fabs(f->ev_t[0] - (5 - w)) < tol_of(m)) ||
             !(fabs(f->ev_t[1] - (5 + w)) < tol_of(m)))

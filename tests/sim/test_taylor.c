@@ -14,7 +14,7 @@
 
 #include "sim_fixture.h"
 #include "qdot/read.h"
-#include "sym/taylor_prog.h"
+#include "sym/sym_export.h"
 #ifdef QD_HAVE_QUADMATH
 #include <quadmath.h>
 #endif

@@ -15,7 +15,7 @@
 #include "sim_fixture.h"
 #include "qdot/read.h"
 #include "codegen/cg.h"
-#include "sym/taylor_prog.h"
+#include "sym/sym_export.h"
 
 #include <dirent.h>
 #include <dlfcn.h>

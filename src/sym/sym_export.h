@@ -1,9 +1,15 @@
 /*
- * src/sym/taylor_prog.h - Taylor mode of compiled straight-line programs:
- * the normalized Taylor coefficients x_k = x^(k)(t0)/k! of every register,
- * order by order, by the recurrences of automatic differentiation
- * (Moore 1966; Griewank and Walther 2008, ch. 13; Jorba and Zou 2005,
- * sec. 2).  The Taylor integrator (src/sim/taylor.c) is built on it.
+ * src/sym/sym_export.h - sym's interface to the modules above it beyond
+ * the public expression API (docs/design.md, "Architecture"), in two parts.
+ * Internal (prefix qd__), not public: each has one client, which builds a
+ * public feature on it.
+ *
+ * 1. For src/sim's Taylor integrator: the Taylor mode of compiled
+ * straight-line programs, the normalized Taylor coefficients
+ * x_k = x^(k)(t0)/k! of every register, order by order, by the recurrences
+ * of automatic differentiation (Moore 1966; Griewank and Walther 2008,
+ * ch. 13; Jorba and Zou 2005, sec. 2), built on the programs' internals
+ * (prog_int.h), which is why it lives here (taylor_prog.c, taylor_emit.c).
  *
  * A qd__tay is made from one or more qd_progs over the same inputs: their
  * registers are renamed into single assignment (the evaluator reuses dead
@@ -18,15 +24,23 @@
  * for k = 1, 2, ...: write the varying inputs' coefficient k, run order k.
  * Outputs are read as coefficient arrays.  One workspace per qd__tay, in the
  * floating type chosen at creation (double, long double, __float128).
+ *
+ * 2. For src/model's parser: the constructors for what a reader has just
+ * read (the expression reader, read.c, and the model files' parser,
+ * model/expr.c), stricter than the constructors the library uses inside,
+ * where an exact 0^q can arise from a substitution and stays a node.
  */
-#ifndef QD_SYM_TAYLOR_PROG_H
-#define QD_SYM_TAYLOR_PROG_H
+#ifndef QD_SYM_SYM_EXPORT_H
+#define QD_SYM_SYM_EXPORT_H
 
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "qdot/eval.h"
+#include "qdot/expr.h"
 #include "qdot/print.h"
+
+/* ---- 1. the Taylor mode of programs (taylor_prog.c, taylor_emit.c) ------- */
 
 typedef struct qd__tay qd__tay;
 
@@ -68,5 +82,14 @@ qd_status qd__tay_emit_c(const qd__tay *tp, qd_buf *out);
 bool qd__tay_native_fits(const qd__tay *tp, unsigned long nreg, unsigned long nlive);
 /* Orders >= 1 of a double workspace by fn from now on (NULL: interpreted). */
 void qd__tay_set_native(qd__tay *tp, qd__tay_native fn);
+
+/* ---- 2. expressions as written (pow.c, func.c) ---------------------------- */
+
+/* b^e as written: an exact 0 to a power that is not a number (0^q, defined
+ * only for q > 0) is refused, QD_ERR_ARG; else qd_pow. */
+const qd_expr *qd__pow_written(qd_ctx *ctx, const qd_expr *b, const qd_expr *e);
+/* atan2(y, x) as written: atan2(0, 0) with exact zeros, which has no value,
+ * is refused (QD_ERR_DIVZERO); else qd_fn2. */
+const qd_expr *qd__atan2_written(qd_ctx *ctx, const qd_expr *y, const qd_expr *x);
 
 #endif
