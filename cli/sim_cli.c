@@ -63,7 +63,8 @@ const cli_opt cli_sim_opts[] = {
     {"--stop-at", NULL, CLI_LIST, SIM(stops), "\"EXPR = EXPR[, ...]\"",
      "an event that ends the run (repeatable; numbered after the --event ones)", NULL, NULL},
     {"--native", NULL, CLI_FLAG, SIM(native), NULL, "compile the right-hand side to C", NULL, NULL},
-    {"--jit", NULL, CLI_FLAG, SIM(jit), NULL, "run the compiled programs as machine code (LLVM)", NULL, NULL},
+    {"--jit", NULL, CLI_FLAG, SIM(jit), NULL, "machine code from the start (default: once the run is long)", NULL, NULL},
+    {"--no-jit", NULL, CLI_FLAG, SIM(no_jit), NULL, "interpret the compiled programs throughout", NULL, NULL},
     {"--no-project", NULL, CLI_FLAG, SIM(no_project), NULL,
      "do not project onto the constraints after each step", NULL, NULL},
     {"--no-speeds", NULL, CLI_FLAG, SIM(no_speeds), NULL,
@@ -198,6 +199,11 @@ int cli_sim_setup(cli_sim *c, const cli_sim_args *a) {
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && note[0])
         fprintf(stderr, "qdot: note: --%s\n", note);
+    if (rc == QD_EXIT_OK && a->jit && a->no_jit) {
+        cli_diag_error("--jit and --no-jit: give one");
+        rc = QD_EXIT_USAGE;
+    }
+    c->opts.jit = a->jit ? QD_SIM_JIT_ON : a->no_jit ? QD_SIM_JIT_OFF : QD_SIM_JIT_AUTO;
     if (rc == QD_EXIT_OK && a->jit && qd_sim_setup_jit(c->set, note, sizeof note) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && a->jit && note[0])

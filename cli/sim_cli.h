@@ -33,7 +33,7 @@ typedef struct cli_sim_args {
     cli_list events;       /* --event "EXPR = EXPR[, EXPR > EXPR]..." */
     cli_list stops;        /* --stop-at: the same, ending the run (after the events) */
     const char *about, *lqr; /* --input "F = lqr": the operating point, the weights */
-    bool native, jit, no_project, no_speeds;
+    bool native, jit, no_jit, no_project, no_speeds;
     /* set by the command, not by an option of the group */
     const char *file;      /* the model file */
     const char *section;   /* an event after the others (poincare, sweep --section) */

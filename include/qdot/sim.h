@@ -253,7 +253,19 @@ typedef struct qd_sim_opts {
      * (an adaptive method's dt is its output grid, a fixed step's rows are
      * its steps).  A grid with more rows than max_steps is refused. */
     double every;
+    /* Machine code for the compiled programs (qd_prog_jit): QD_SIM_JIT_AUTO
+     * (0) once the run has interpreted about as much work as compiling
+     * costs (QD_SIM_JIT_WORK instruction evaluations: short runs never
+     * compile), QD_SIM_JIT_ON from the start, QD_SIM_JIT_OFF never.  The
+     * numbers are the same bit for bit; without the JIT module (a build
+     * without LLVM) the run is interpreted. */
+    int jit;
 } qd_sim_opts;
+
+enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
+/* Instructions evaluated before AUTO compiles: about the 0.1 s that LLVM
+ * takes to load and compile a 20-link pendulum's programs, interpreted. */
+#define QD_SIM_JIT_WORK 50000000.0
 
 /* Why a run stopped, as data (issue 31): the code, the time and the
  * quantity that decided it; qd_stop_str renders the code in English, and
@@ -357,6 +369,7 @@ typedef struct qd_sim_stats {
     double events_unresolved_t, events_unresolved_spacing;
     size_t events_unresolved_event;
     double energy_error_steps;   /* energy_error_max at the accepted steps */
+    bool jit;                    /* the run ended on machine code (qd_sim_opts.jit) */
     qd_sim_stop stop;            /* why the run ended: filled by every run, failed or not */
 } qd_sim_stats;
 

@@ -1123,7 +1123,7 @@ class Model:
 
     def simulate(self, t_end, method=None, rtol=None, atol=None, dt=None, initial=None,
                  events=(), stop_at=None, outputs=(), max_steps=0, speeds=True, inputs=None,
-                 every=None, step=None):
+                 every=None, step=None, jit=None):
         """Integrate the equations of motion from the initial state to t_end
         (qd_sim_run) and return a qdot.Result.
 
@@ -1151,12 +1151,15 @@ class Model:
         linearize().states), called at every evaluation of the right-hand
         side; an exception it raises ends the run and is raised here.  A
         run with inputs takes the form (q, q'), even for a model with
-        `speeds`.
+        `speeds`.  jit: True compiles the programs to machine code from the
+        start (as --jit), False never (as --no-jit), None once the run is
+        long enough to pay for it (qd_sim_opts.jit); the numbers are the
+        same bit for bit, result.stats["jit"] says whether it ended so.
         """
         return _sim.simulate(self._core, t_end, method=method, rtol=rtol, atol=atol, dt=dt,
                              initial=initial or {}, events=list(events), stop_at=stop_at,
                              outputs=outputs, max_steps=max_steps, speeds=speeds,
-                             inputs=inputs or {}, every=every, step=step)
+                             inputs=inputs or {}, every=every, step=step, jit=jit)
 
     def poincare(self, section, crossings, t_end=None, method=None, rtol=None, atol=None,
                  dt=None, step=None, initial=None, max_steps=0, speeds=True):

@@ -308,7 +308,7 @@ def _add_inputs(core, setup, s, inputs):
 
 
 def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outputs,
-             max_steps, speeds, inputs, every=None, step=None):
+             max_steps, speeds, inputs, every=None, step=None, jit=None):
     """Model.simulate's work (see there), by the set-up `qdot simulate`
     makes (qdot/simsetup.h): the same equations, initial state, names and
     checks, and the same messages."""
@@ -339,6 +339,10 @@ def simulate(core, t_end, method, rtol, atol, dt, initial, events, stop_at, outp
         so = new("qd_sim_setup_opts", keep)
         opts = new("qd_sim_opts")
         core.check(lib.qd_sim_setup_options(setup, so, opts))
+        if jit is not None and not isinstance(jit, bool):
+            raise TypeError("simulate: jit is True, False or None, not %r" % (jit,))
+        opts.jit = (lib.QD_SIM_JIT_AUTO if jit is None else
+                    lib.QD_SIM_JIT_ON if jit else lib.QD_SIM_JIT_OFF)
         return _run(core, s, opts, len(events) + bool(stop_at), fns)
     finally:
         lib.qd_sim_setup_free(setup)

@@ -950,6 +950,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     }
     stats->steps = it.steps;
     stats->evals = s->evals;
+    stats->jit = s->acc && qd_prog_jitted(s->acc);
     stats->rejected = it.rejected;
     stats->E0 = ms.E0;
     double den = fmax(fabs(ms.E0), ms.Tmax);
@@ -994,6 +995,10 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
     *stats = (qd_sim_stats){0};
     qd_sim w = *s;
     qd_status st = qd__sim_ws_alloc(&w, ctx);
+    w.jit_mode = o->jit;
+    w.jit_tried = false;
+    if (st == QD_OK && o->jit == QD_SIM_JIT_ON)
+        qd__sim_jit_tier(&w, true);
     if (st == QD_OK && o->par)
         use_par(&w, o->par);
     if (st == QD_OK)

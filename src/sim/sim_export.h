@@ -120,6 +120,10 @@ struct qd_sim {
     double *K, *rhs, *tmp;
     size_t *pc;
     size_t evals;
+    /* the JIT (jit.c): qd_sim_opts.jit of the run, and whether it has
+     * compiled (or tried to) */
+    int jit_mode;
+    bool jit_tried;
     double *con_err;  /* m: the worst residual of each constraint in this run */
     double tnow;  /* for messages */
     /* A run's own right-hand side in place of the form's, for a caller that

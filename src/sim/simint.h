@@ -98,6 +98,10 @@ static inline size_t qd__sim_fev0(const qd_sim *s) { return s->nev + s->nimp; }
 /* y' = F(t, y) in either form; QD_ERR_SINGULAR (message with the time)
  * when M or the saddle matrix is singular. */
 qd_status qd__sim_rhs(qd_sim *s, qd__sim_form form, double t, const double *y, double *dy);
+/* The run's programs as machine code (jit.c): at once when now, else once
+ * its evaluations have done QD_SIM_JIT_WORK instructions' worth of
+ * interpreting; tried once per run, a failure leaving them interpreted. */
+void qd__sim_jit_tier(qd_sim *s, bool now);
 /* q' from (q, p) at t (canonical form). */
 qd_status qd__sim_velocity(qd_sim *s, double t, const double *q, const double *p, double *qd);
 /* p from (q, q'). */

@@ -850,7 +850,8 @@ static qd_status form_rhs(qd_sim *s, qd__sim_form form, double t, const double *
 }
 
 qd_status qd__sim_rhs(qd_sim *s, qd__sim_form form, double t, const double *y, double *dy) {
-    s->evals++;
+    if ((++s->evals & 4095) == 0 && s->jit_mode == QD_SIM_JIT_AUTO && !s->jit_tried)
+        qd__sim_jit_tier(s, false);
     if (s->ext_rhs)
         return s->ext_rhs(s->ext_data, t, y, dy);
     /* an input callback that failed ends the run: no more calls to it */

@@ -647,8 +647,9 @@ void qd_prog_eval(const qd_prog *p, double *work, const double *in, double *out)
     QD_ARGS(, p && work && in && out);
     if (!p)
         return;
-    if (p->jit) { /* the same numbers, bit for bit (src/sym/jit.h) */
-        p->jit(in, out);
+    qd__jit_fn jit = atomic_load_explicit(&p->jit, memory_order_acquire);
+    if (jit) { /* the same numbers, bit for bit (src/sym/jit.h) */
+        jit(in, out);
         return;
     }
     double *r = work;

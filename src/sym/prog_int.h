@@ -10,6 +10,7 @@
 #include "jit.h"
 #include "qdot/eval.h"
 
+#include <stdatomic.h>
 #include <stdint.h>
 
 typedef enum op {
@@ -41,7 +42,11 @@ struct qd_prog {
     double *consts; /* nconst constants, registers nin .. nin + nconst */
     size_t nconst;
     uint32_t *out;
-    qd__jit_fn jit;    /* machine code for the program (qd_prog_jit), or NULL */
+    /* Machine code for the program (qd_prog_jit), or NULL.  Atomic: a run
+     * may switch its programs to machine code while other threads evaluate
+     * them (the tier-up of src/sim/jit.c), and either way gives the same
+     * numbers. */
+    _Atomic(qd__jit_fn) jit;
     void *jit_code;    /* what the JIT module releases */
 };
 

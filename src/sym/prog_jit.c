@@ -31,31 +31,41 @@ static const qd__jit_ops *jit_ops(qd_ctx *ctx) {
     return o;
 }
 
+/* Under lock: one compile of a program even when two runs tier up at once. */
 qd_status qd_prog_jit(qd_ctx *ctx, qd_prog *p) {
     QD_ARGS_CTX(ctx, ctx && p);
-    if (p->jit)
+    if (atomic_load_explicit(&p->jit, memory_order_acquire))
         return QD_OK;
     const qd__jit_ops *o = jit_ops(ctx);
     if (!o)
         return QD_ERR_UNSUPPORTED;
     static const qd__jit_env env = {qd__pow_value, qd__step_value};
     char err[512] = "";
-    qd__jit_fn fn = NULL;
-    void *code = o->compile(p, &env, &fn, err, sizeof err);
-    if (!code) {
-        qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "the JIT did not compile the program: %s", err);
-        return QD_ERR_UNSUPPORTED;
+    qd_status st = QD_OK;
+    pthread_mutex_lock(&lock);
+    if (!atomic_load_explicit(&p->jit, memory_order_relaxed)) {
+        qd__jit_fn fn = NULL;
+        void *code = o->compile(p, &env, &fn, err, sizeof err);
+        if (code) {
+            p->jit_code = code;
+            atomic_store_explicit(&p->jit, fn, memory_order_release);
+        } else {
+            st = QD_ERR_UNSUPPORTED;
+        }
     }
-    p->jit_code = code;
-    p->jit = fn;
-    return QD_OK;
+    pthread_mutex_unlock(&lock);
+    if (st != QD_OK)
+        qd_ctx_error(ctx, st, "the JIT did not compile the program: %s", err);
+    return st;
 }
 
-bool qd_prog_jitted(const qd_prog *p) { return p && p->jit; }
+bool qd_prog_jitted(const qd_prog *p) {
+    return p && atomic_load_explicit(&p->jit, memory_order_acquire) != NULL;
+}
 
 void qd__prog_jit_release(qd_prog *p) {
     if (p->jit_code && ops)
         ops->release(p->jit_code);
     p->jit_code = NULL;
-    p->jit = NULL;
+    atomic_store_explicit(&p->jit, NULL, memory_order_relaxed);
 }
