@@ -23,9 +23,10 @@ from .runs import Animation
 from .control import StateSpace, Lqr, lqr
 from .relativity import lorentz, proper_time, collide
 from .forms import QuadraticForm, quadratic_form
+from .field import Field
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
            "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
            "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
-           "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form"]
+           "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Field"]
 from ._lib import VERSION as __version__

@@ -1183,6 +1183,21 @@ class Model:
         return _runs.lyapunov(self._for("lyapunov"), t_end, exponents, renorm, transient,
                               method, rtol, atol, dt, initial, max_steps, speeds)
 
+    def flow(self, t_end=None, period=None, method=None, rtol=None, atol=None, dt=None,
+             initial=None, max_steps=0):
+        """The flow Jacobian d(q, q')(t_end)/d(q, q')(t0) from the initial
+        state (`qdot simulate --variational --format json`, qd_flow_run and
+        qd_flow_json): a qdot.Output with flow_jacobian, flow_det,
+        liouville_det, hamiltonian, flow_jacobian_canonical and
+        symplectic_error (max |M^T J M - J| in (q, p), for a conservative
+        model), multipliers ([re, im]) and closure.  period T (a number or an
+        expression in the parameters, "2*pi*sqrt(l/g)") instead of t_end:
+        one period, the matrix also as monodromy, its eigenvalues the
+        Floquet multipliers.  method dopri5 or dop853 (the default); the
+        rest as simulate's.  A model given by H is refused (qdot.Error)."""
+        return _runs.flow(self._for("lyapunov"), t_end, period, method, rtol, atol, dt,
+                          initial, max_steps)
+
     def sweep(self, t_end, measures, grid=None, random=None, runs=None, seed=1, section=None,
               events=(), stop_at=None, threads=0, renorm=None, transient=None, method=None,
               rtol=None, atol=None, dt=None, step=None, initial=None, max_steps=0,

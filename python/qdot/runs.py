@@ -1,17 +1,17 @@
 # python/qdot/runs.py - the runs that are not one simulation's rows:
 # poincare (the state at each crossing of a section), lyapunov (the
-# exponents of the tangent flow), sweep (many runs, a row each) and animate
+# exponents of the tangent flow), flow (its Jacobian), sweep (many runs, a row each) and animate
 # (the page qd_scene_html writes).  Each is the library's set-up of its
 # command (qd_sim_setup, then qd_poincare_run, qd_lyap_setup_run,
 # qd_sweep_setup_new, qd_scene_setup_new), called as cli/cmd_*.c call them,
 # so the same defaults, checks and messages apply; here are only Python's
 # argument types, the progress bar and Ctrl-C (_progress.Run).
-"""Model.poincare, Model.lyapunov, Model.sweep and Model.animate (see there)."""
+"""Model.poincare, Model.lyapunov, Model.flow, Model.sweep and Model.animate (see there)."""
 
 import json as _json
 import warnings
 
-from ._core import ModelError, NumericalError, take_error
+from ._core import Error, ModelError, NumericalError, take_error
 from ._lib import ffi, lib, new, cstr, buf_text
 from . import commands as _commands
 from ._progress import Run
@@ -48,9 +48,15 @@ class _Setup:
         if lib.qd_sim_setup_event(self.ptr, text.encode(), stop) != QD_OK:
             raise _text_error(self.core, what, text)
 
-    def options(self, t_end, method, rtol, atol, dt, step, max_steps, fixed=False):
-        """The run's qd_sim_opts by the library's rule (qd_sim_setup_options)."""
-        texts = {"t_end": _number(t_end), "dt": _number(dt), "rtol": _number(rtol),
+    def options(self, t_end, method, rtol, atol, dt, step, max_steps, fixed=False, period=None):
+        """The run's qd_sim_opts by the library's rule (qd_sim_setup_options);
+        period (a number or an expression in the parameters) instead of t_end."""
+        if isinstance(period, str):
+            period = period.encode()
+        elif period is not None:
+            period = _number(period)
+        texts = {"t_end": _number(t_end), "period": period, "dt": _number(dt),
+                 "rtol": _number(rtol),
                  "atol": _number(atol), "step": _number(step),
                  "max_steps": str(int(max_steps)).encode() if max_steps else None,
                  "method": method.encode() if method is not None else None}
@@ -153,6 +159,44 @@ def lyapunov(core, t_end, exponents, renorm, transient, method, rtol, atol, dt, 
                                 lambda buf: lib.qd_lyap_json(ffi.addressof(r, "report"), buf))
     finally:
         lib.qd_lyap_result_free(r)
+
+
+def flow(core, t_end, period, method, rtol, atol, dt, initial, max_steps):
+    """Model.flow's work, `qdot simulate --variational [--period T]
+    --format json`'s flow: qd_flow_run on the Lagrange equations of the
+    set-up (qd_lyap_new, qd_flow_sim_opts), its members by qd_flow_json."""
+    if (t_end is None) == (period is None):
+        raise ValueError("flow: give t_end or period (one of them), not %s"
+                         % ("both" if period is not None else "neither"))
+    setup = _Setup(core, False, initial)
+    e = lib.qd_sim_setup_eom(setup.ptr)
+    if e == ffi.NULL:
+        raise Error("flow takes a model given by T and V or L (its equations M q'' = f), "
+                         "not one given by H")
+    opts = setup.options(t_end, method, rtol, atol, dt, None, max_steps, period=period)
+    T = lib.qd_sim_setup_period_of(setup.ptr) if period is not None else 0.0
+    l = lib.qd_lyap_new(core.ctx, core.model, e)
+    if l == ffi.NULL:
+        raise core.error(cls=ModelError)
+    fopts, f = new("qd_sim_opts"), new("qd_flow")
+    try:
+        core.check(lib.qd_flow_sim_opts(opts, fopts))
+        with Run("flow"):  # no hook to stop it: ^C is raised once it returns
+            st = lib.qd_flow_run(core.ctx, l, fopts, ffi.NULL, f)
+        if st != QD_OK:
+            raise core.error(st, cls=None if st == lib.QD_ERR_ARG else NumericalError)
+
+        def members(buf):
+            j = new("qd_json")
+            lib.qd_json_init(j, buf)
+            lib.qd_json_begin_object(j)
+            st = lib.qd_flow_json(j, f, e, fopts.method, T)
+            lib.qd_json_end_object(j)
+            return st
+        return _commands.output(core, "flow", members)
+    finally:
+        lib.qd_flow_free(f)
+        lib.qd_lyap_free(l)
 
 
 def sweep(core, t_end, measures, grid, random, runs, seed, section, events, stop_at, threads,

@@ -1,4 +1,4 @@
-# python/tests/test_runs.py - Model.poincare, Model.lyapunov, Model.animate:
+# python/tests/test_runs.py - Model.poincare, Model.lyapunov, Model.flow, Model.animate:
 # the physics of each result, then the same numbers as the CLI's on the same
 # model (`qdot poincare` CSV, `qdot lyapunov --format json`, `qdot animate`'s
 # page).  Physics: the oscillator x = cos(w t), w = sqrt(k/m), crosses x = 0
@@ -71,6 +71,33 @@ def test_lyapunov_inverted_oscillator(tmp_path):
     same(out.json, cli("lyapunov", path, "--t-end", "200", "--exponents", "2"))
     with pytest.raises(ValueError):
         qdot.Model(INVERTED).lyapunov(10, exponents=3)   # 2n = 2
+
+
+def test_flow_oscillator_and_damped(tmp_path):
+    # the oscillator's flow is the rotation [[cos wt, sin wt/w], [-w sin wt, cos wt]]
+    # (w = sqrt(k/m)); over the period 2 pi sqrt(m/k) the monodromy is I, both Floquet
+    # multipliers 1, and the map is symplectic (Britannica 1911 "Dynamics" sec. 9)
+    path = model_file(tmp_path, OSCILLATOR)
+    m = qdot.Model.load(path)
+    w, t = math.sqrt(3 / 2), 0.7
+    out = m.flow(t_end=t, rtol=1e-12, atol=1e-12)
+    rot = [[math.cos(w * t), math.sin(w * t) / w], [-w * math.sin(w * t), math.cos(w * t)]]
+    assert out.flow_jacobian == pytest.approx(np.array(rot), abs=1e-9)
+    assert out.hamiltonian and out.symplectic_error < 1e-9
+    per = m.flow(period="2*pi*sqrt(m/k)")
+    assert per.period == pytest.approx(2 * math.pi / w, rel=1e-15)
+    assert per.monodromy == pytest.approx(np.eye(2), abs=1e-8)
+    assert per.multipliers == pytest.approx(np.array([[1, 0], [1, 0]]), abs=1e-8)
+    same(per.json, {k: v for k, v in cli("simulate", path, "--variational", "--period",
+                                          "2*pi*sqrt(m/k)").items() if k in per.json})
+    # Liouville: det = exp(-b t/m) with damping b (examples/damped_oscillator.qd)
+    d = qdot.Model.load(os.path.join(EXAMPLES, "damped_oscillator.qd")).flow(t_end=2)
+    assert d.flow_det == pytest.approx(math.exp(-0.4 * 2 / 1.2), rel=1e-8)
+    assert not d.hamiltonian and d.symplectic_error is None
+    with pytest.raises(ValueError):
+        m.flow()                                          # neither t_end nor period
+    with pytest.raises(qdot.Error, match="given by H"):
+        qdot.Model("coordinates x\nmomenta p\nH = p^2/2 + x^2/2\n").flow(t_end=1)
 
 
 def test_animate_pendulum(tmp_path):

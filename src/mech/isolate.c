@@ -19,7 +19,9 @@
  * comes out without atan.
  *
  * Several equations: one with a single unknown is solved and substituted
- * into the rest, until all are solved.
+ * into the rest, until all are solved; when every equation left has several,
+ * one is solved for one of them (the others as parameters) and that is
+ * substituted into the rest and into the solutions found before.
  */
 #include "mech.h"
 #include "base/mem.h"
@@ -285,19 +287,30 @@ qd_status qd__mech_isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq,
     for (size_t i = 0; i < n; i++)
         e[i] = eq[i];
     size_t solved = 0;
-    for (bool progress = true; progress && solved < n;) {
+    for (bool progress = true, coupled = false; solved < n && (progress || !coupled);) {
+        /* coupled: no equation has one unknown left (the action-angle map,
+         * Q = atan(m w q/p), P = H/w); one is then solved for one of its
+         * unknowns, the others standing as parameters, and that solution is
+         * put into the equations left and into the solutions so far */
+        coupled = !progress;
         progress = false;
-        for (size_t i = 0; i < n; i++) {
+        for (size_t i = 0; i < n && !(coupled && progress); i++) {
             size_t j = used[i] ? n : single_unknown(e[i], n, xs, done);
-            const qd_expr *s = j < n ? solve1(ctx, e[i], xs[j], 0) : NULL;
+            const qd_expr *s = j < n && !coupled ? solve1(ctx, e[i], xs[j], 0) : NULL;
+            for (size_t k = 0; coupled && !used[i] && !s && k < n; k++)
+                if (!done[k] && qd_has(e[i], xs[k]) && (s = solve1(ctx, e[i], xs[k], 0)))
+                    j = k;
             if (!s)
                 continue;
             sol[j] = s;
             done[j] = used[i] = progress = true;
             solved++;
-            for (size_t k = 0; k < n; k++) /* the solutions so far hold no unknown */
+            for (size_t k = 0; k < n; k++) {
                 if (!used[k])
                     e[k] = qd_subs(ctx, e[k], 1, &xs[j], &s);
+                if (done[k] && k != j && qd_has(sol[k], xs[j]))
+                    sol[k] = qd_simplify(ctx, qd_subs(ctx, sol[k], 1, &xs[j], &s));
+            }
         }
     }
     *failed = n;

@@ -106,7 +106,8 @@ qd_status qd__mech_con_frobenius(qd_ctx *ctx, size_t n, const qd_expr *const *q,
 
 /* Solve the n equations eq_i = 0 for the unknowns xs (isolate.c): each
  * unknown isolated where it occurs once or can be made to (see the head
- * comment), one equation with one unknown at a time, on principal branches.
+ * comment), one equation with one unknown at a time (or, when none has one,
+ * for one of its unknowns in the others), on principal branches.
  * QD_ERR_NONLINEAR, with ctx clean, when some equation could not be solved:
  * *failed is its index. */
 qd_status qd__mech_isolate(qd_ctx *ctx, size_t n, const qd_expr *const *eq,

@@ -8,7 +8,9 @@ Each expected value is the seed's (reference notes in ../shared/reference/):
   seed-desloge-C.md T29, T37: Q = q + t e^p, P = p is canonical with
   F = -t (p - 1) e^p and K = Q + e^P for H = q + t e^p; ch. 84 Thms 2-3,
   seed-desloge-D.md C10 and P14: a scaling Q = 2q, P = 3p has valence 6 and
-  K = 6 H; ch. 80 Thm 1, C15: L^T PB = 1 for any invertible map).
+  K = 6 H; ch. 80 Thm 1, C15: L^T PB = 1 for any invertible map; T27, ch. 74
+  P3: F = q p + p ln p; T39, ch. 76 P7: the oscillator's action-angle map
+  gives K = w P).
 - Hamel's gamma_ikm (Desloge ch. 68 Ex. 1, T1: polar r, th with the areal
   velocity: gamma_122 = -2/r, gamma_221 = 2/r; pitfall 2: Euler angles give
   gamma = -eps).
@@ -87,6 +89,30 @@ def test_canonical(qdot, d):
     check("non-canonical rc 3", rc == 3, err)
     check("non-canonical duality", "duality: [L]^T (P) = 1 holds" in out, out)
     check("non-canonical no K", "no new Hamiltonian" in out, out)
+    # T27 (ch. 74 P3): Q = ln p, P = -(1 + q + ln p) p, F = q p + p ln p; K(Q, P) is H at
+    # q = -P e^-Q - 1 - Q, p = e^Q (solved by hand from the map)
+    sho = write(d, "sho.qd", "coordinates q\nmomenta p_q\nH = p_q^2/2 + q^2/2\n")
+    rc, out, err = run(qdot, "canonical", sho, "--Q", "log(p_q)", "--P",
+                       "-(1 + q + log(p_q))*p_q", "--K", "--format", "json")
+    check("T27 canonical rc", rc == 0, err)
+    if rc == 0:
+        j = json.loads(out)
+        check("T27 F = q p + p ln p", same(j["F"], "q*p_q + p_q*log(p_q)", names), out)
+        Qs, Ps = sp.Symbol("Q"), sp.Symbol("P")
+        back = (-Ps * sp.exp(-Qs) - 1 - Qs) ** 2 / 2 + sp.exp(2 * Qs) / 2
+        check("T27 K(Q, P)", j["K_new"] is not None and
+              sp.simplify(expr(j["K_new"], names) - back) == 0, out)
+    # T39 (ch. 76 P7): the oscillator's action-angle map, C = sqrt(m w), K = w P; neither
+    # relation has one old variable alone, so the map is inverted as a coupled pair
+    osc = write(d, "osc.qd", "coordinates q\nparameters m = 3/2, w = 2\nmomenta p_q\n"
+                "H = p_q^2/(2*m) + m*w^2*q^2/2\n")
+    rc, out, err = run(qdot, "canonical", osc, "--Q", "atan(m*w*q/p_q)", "--P",
+                       "p_q^2/(2*m*w) + m*w*q^2/2", "--K", "--format", "json")
+    check("T39 canonical rc", rc == 0, err)
+    if rc == 0:
+        j = json.loads(out)
+        check("T39 K = w P", j["K_new"] is not None and
+              same(j["K_new"], "w*P", names + ["m", "w"]), out)
     rc, out, err = run(qdot, "canonical", one, "--generator", "F2", "q*P", "--lagrange")
     check("--lagrange with --generator refused", rc == 2 and "--lagrange" in err, err)
 

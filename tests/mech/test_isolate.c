@@ -141,6 +141,43 @@ static void test_shapes(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* Coupled equations, none with a single unknown: the harmonic oscillator's
+ * action-angle map (Desloge ch. 76 P7, seed-desloge-C.md T39, C = 1:
+ * Q = atan(q/p), P = (p^2 + q^2)/2) inverted to q = sqrt(2P) sin Q,
+ * p = sqrt(2P) cos Q on the principal branch (p > 0); and a pair that
+ * stays unsolved (x + e^y = 0, y + e^x = 0: Lambert again), ctx clean. */
+static void test_coupled(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *q = qd_symbol(ctx, "q"), *p = qd_symbol(ctx, "p");
+    const qd_expr *Q = qd_symbol(ctx, "Q"), *P = qd_symbol(ctx, "P");
+    const qd_expr *two = qd_int(ctx, 2), *xs[2] = {q, p}, *sols[2];
+    const qd_expr *eqs[2] = {
+        qd_sub(ctx, qd_fn(ctx, QD_ATAN, qd_div(ctx, q, p)), Q),
+        qd_sub(ctx, qd_div(ctx, qd_add(ctx, qd_powi(ctx, p, 2), qd_powi(ctx, q, 2)), two), P)};
+    size_t failed = 9;
+    assert_int_equal(qd__mech_isolate(ctx, 2, eqs, xs, sols, &failed), QD_OK);
+    static const double at[][2] = {{0.3, 0.5}, {-1.2, 2.0}, {1.4, 0.01}};
+    for (size_t k = 0; k < 3; k++) {
+        const qd_expr *syms[2] = {Q, P};
+        double v[2] = {at[k][0], at[k][1]}, gq, gp;
+        assert_false(qd_has(sols[0], q) || qd_has(sols[0], p));
+        assert_false(qd_has(sols[1], q) || qd_has(sols[1], p));
+        assert_int_equal(qd_eval(ctx, sols[0], 2, syms, v, &gq), QD_OK);
+        assert_int_equal(qd_eval(ctx, sols[1], 2, syms, v, &gp), QD_OK);
+        if (!(fabs(gq - sqrt(2 * v[1]) * sin(v[0])) < 1e-13 &&
+              fabs(gp - sqrt(2 * v[1]) * cos(v[0])) < 1e-13))
+            fail_msg("Q = %g, P = %g: q = %s = %.17g, p = %s", v[0], v[1], text(ctx, sols[0]), gq,
+                     text(ctx, sols[1]));
+    }
+    const qd_expr *x = qd_symbol(ctx, "x"), *y = qd_symbol(ctx, "y"), *ys[2] = {x, y};
+    const qd_expr *lam[2] = {qd_add(ctx, x, qd_fn(ctx, QD_EXP, y)),
+                             qd_add(ctx, y, qd_fn(ctx, QD_EXP, x))};
+    assert_int_equal(qd__mech_isolate(ctx, 2, lam, ys, sols, &failed), QD_ERR_NONLINEAR);
+    assert_int_equal(qd_ctx_status(ctx), QD_OK);
+    qd_ctx_free(ctx);
+}
+
 /* sin, cos, tan of asin, acos, atan written without the inverse: equal
  * values on the principal domains. */
 static void test_untrig(void **state) {
@@ -171,6 +208,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_chains),
         cmocka_unit_test(test_shapes),
+        cmocka_unit_test(test_coupled),
         cmocka_unit_test(test_untrig),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
