@@ -82,7 +82,7 @@ def test_stats_are_the_runs_counts():
                             "energy_balance_error", "surface_work", "initial_moved_q",
                             "initial_moved_qd", "events_unresolved", "events_unresolved_t",
                             "events_unresolved_spacing", "events_unresolved_event",
-                            "energy_error_steps", "stop"}
+                            "energy_error_steps", "jit", "stop"}
     assert r.stop["reason"] == "reached the end time" and r.stop["t"] == 1.0
     assert r.stop["code"] == "end" and r.stop["ok"] is True
     # a fixed step: t_end/dt steps, none rejected, E0 = -m g l cos(theta0)
