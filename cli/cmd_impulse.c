@@ -14,7 +14,6 @@
  */
 #include "driver.h"
 
-#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,68 +52,6 @@ static const cli_spec spec = {
     "The motion just after a blow, a sudden constraint or a collision: the velocities after, "
     "the impulsive reactions, the energies and the theorems of impulsive motion.",
     opts, NULL, 1, 1, "FILE", false};
-
-/* ---- lists given on the command line --------------------------------------- */
-
-static bool blank(const char *s, size_t len) {
-    for (size_t k = 0; k < len; k++)
-        if (!isspace((unsigned char)s[k]))
-            return false;
-    return true;
-}
-
-/* A parser's record d about the statement "prescribe ITEM" (ITEM from byte
- * base on) shown against the whole option text, where ITEM starts at start. */
-static void show_in_option(qd_diag d, const char *opt, const char *text, size_t base,
-                           size_t start, size_t len) {
-    bool inside = d.offset >= base && d.offset - base <= len;
-    d.offset = inside ? d.offset - base + start : start;
-    if (!inside || d.length == 0 || d.offset + d.length > start + len)
-        d.length = 1;
-    d.line = d.col = 0;
-    cli_diag_read(opt, text, &d);
-}
-
-/* One item of --prescribe, text[start, start + len), added to the model as
- * its own statement `prescribe ITEM`, so the model language checks it as it
- * would in the file. */
-static int add_prescription(imp_run *r, const char *text, size_t start, size_t len) {
-    qd_buf stmt = QD_BUF_INIT;
-    qd_buf_puts(&stmt, "prescribe ");
-    size_t base = stmt.len;
-    qd_buf_putn(&stmt, text + start, len);
-    qd_diag d;
-    memset(&d, 0, sizeof d);
-    qd_status st = stmt.failed ? QD_ERR_NOMEM
-                               : qd_model_add_statement(r->c.mf.model, qd_buf_str(&stmt), &d);
-    qd_buf_free(&stmt);
-    if (st == QD_OK)
-        return QD_EXIT_OK;
-    if (st == QD_ERR_NOMEM)
-        return cli_out_of_memory();
-    show_in_option(d, "--prescribe", text, base, start, len);
-    return QD_EXIT_USAGE;
-}
-
-static int add_prescriptions(imp_run *r, const imp_args *a) {
-    for (size_t k = 0; k < a->pres.n; k++) {
-        const char *text = a->pres.items[k];
-        if (strchr(text, '\n') || strchr(text, '#'))
-            return cli_usage_error("--prescribe takes one line of items, without comments");
-        for (size_t i = 0; text[i] || i == 0;) {
-            size_t end = qd_state_item_end(text, i);
-            if (blank(text + i, end - i))
-                return cli_usage_error("--prescribe: an empty item in '%s'", text);
-            int rc = add_prescription(r, text, i, end - i);
-            if (rc != QD_EXIT_OK)
-                return rc;
-            if (!text[end])
-                break;
-            i = end + 1;
-        }
-    }
-    return QD_EXIT_OK;
-}
 
 /* ---- the state before ----------------------------------------------------------- */
 
@@ -201,7 +138,8 @@ static int run(cli_run *c) {
     int rc = cli_load(c->ctx, c->file, r->a.sets.n, r->a.sets.items, "impulse", &c->mf);
     if (rc == QD_EXIT_OK) {
         r->n = qd_model_ncoords(c->mf.model);
-        rc = add_prescriptions(r, &r->a);
+        for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.pres.n; k++) /* Thomson's problem */
+            rc = cli_model_add_given(&c->mf, "--prescribe", "prescribe", NULL, r->a.pres.items[k]);
     }
     if (rc == QD_EXIT_OK)
         rc = state_before(r, r->a.at);

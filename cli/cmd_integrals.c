@@ -55,11 +55,13 @@ static int parse_given(int_run *r) {
     char label[32];
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.symmetry.n; k++) {
         snprintf(label, sizeof label, "S%zu", k + 1);
-        rc = cli_symmetry(&r->c.mf, "--symmetry", r->a.symmetry.items[k], label);
+        rc = cli_model_add_given(&r->c.mf, "--symmetry", "symmetry", label,
+                                 r->a.symmetry.items[k]);
     }
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.integral.n; k++) {
         snprintf(label, sizeof label, "J%zu", k + 1);
-        rc = cli_integral(&r->c.mf, "--integral", r->a.integral.items[k], label);
+        rc = cli_model_add_given(&r->c.mf, "--integral", "integral", label,
+                                 r->a.integral.items[k]);
     }
     return rc;
 }

@@ -489,37 +489,28 @@ class Model:
             lib.qd_ham_point_free(pt)
             lib.qd_ham_free(h)
 
-    def _lookup(self, names, what, core=None):
-        """The coordinate symbols of names (a list, or "a,b" text), each
-        looked up by the library (qd_routh_lookup); ValueError with its
-        message ("did you mean") for one that is not a coordinate."""
+    def _lookup(self, names, what, core=None, cyclic=False):
+        """The coordinate symbols of names (a list, or "a,b" text), read by
+        the library as --ignore is (qd_routh_ignore_read: each a coordinate,
+        none twice, and with cyclic=True each cyclic); ValueError with its
+        message ("did you mean", "r cannot be ignored: ...")."""
         core = core or self._core
-        if isinstance(names, str):
-            names = [x.strip() for x in names.split(",")]
-        if not names or not all(isinstance(x, str) and x for x in names):
-            raise ValueError("%s: name coordinates (\"phi\" or [\"phi\", ...]), not %r"
-                             % (what, names))
-        syms = []
-        for name in names:
-            q = lib.qd_routh_lookup(core.ctx, core.model, name.encode())
-            if not q:
-                raise ValueError("%s: %s" % (what, core.error().message))
-            syms.append(q)
-        return syms
+        if not isinstance(names, str):
+            if not names or not all(isinstance(x, str) and x for x in names):
+                raise ValueError("%s: name coordinates (\"phi\" or [\"phi\", ...]), not %r"
+                                 % (what, names))
+            names = ", ".join(names)
+        cap = lib.qd_model_ncoords(core.model)
+        syms, n = ffi.new("const qd_expr *[]", cap or 1), ffi.new("size_t *")
+        e = core.eom_ptr() if cyclic else ffi.NULL
+        if lib.qd_routh_ignore_read(core.ctx, core.model, e, names.encode(), syms, cap, n,
+                                    ffi.NULL) != lib.QD_OK:
+            raise ValueError("%s: %s" % (what, core.error().message))
+        return [syms[i] for i in range(n[0])]
 
     def _ignored(self, ignore, what, core=None):
-        """The coordinate symbols of ignore (see _lookup), each checked
-        cyclic (qd_routh_not_cyclic); ValueError with the library's reason."""
-        core = core or self._core
-        syms = self._lookup(ignore, what, core)
-        e = core.eom()
-        why = ffi.new("const char **")
-        for q in syms:
-            for j in range(e.n):
-                if e.q[j] == q and lib.qd_routh_not_cyclic(core.ctx, core.model, e, j, why):
-                    raise ValueError("%s: %s cannot be ignored: %s"
-                                     % (what, name_of(q), cstr(why[0])))
-        return syms
+        """The coordinate symbols of ignore, each cyclic (see _lookup)."""
+        return self._lookup(ignore, what, core, cyclic=True)
 
     def routh(self, ignore):
         """Routh's reduction (`qdot routh FILE --ignore Q[,Q...]`, qd_routh_json):

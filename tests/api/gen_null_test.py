@@ -68,6 +68,7 @@ NULLABLE = {
     # issue 31's renderers (w31-cmds-a): the model's name, a given force, the find's options
     'qd_routh_print': {'model_name'},
     'qd_routh_json': {'model_name'},
+    'qd_routh_ignore_read': {'e', 'where'},
     'qd_hj_print': {'model_name'},
     'qd_hj_json': {'model_name'},
     'qd_integrals_print': {'g', 'model_name'},
@@ -90,6 +91,7 @@ NULLABLE = {
     'qd_scene_analyse': {'ctx', 'skip'},
     'qd_lyap_run_stats': {'err', 'stats'},
     'qd_model_add_statement': {'diag'},
+    'qd_model_add_given': {'label', 'diag'},
     'qd_model_parse': {'diag'},
     'qd_model_parse_opts': {'diag', 'opts'},
     'qd_model_where': {'where'},

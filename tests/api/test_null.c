@@ -2647,6 +2647,16 @@ static void null_model(void **state)
     /* text NULL */
     assert_int_equal(QD_ERR_ARG, qd_model_add_statement(F.model, NULL, (qd_diag *)(void *)F.blob));
     reset(&F);
+    /* ---- qd_model_add_given */
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_given(NULL, "q", "q", "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* keyword NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_given(F.model, NULL, "q", "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_given(F.model, "q", "q", NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
     /* ---- qd_model_free */
     /* m NULL */
     qd_model_free(NULL);
@@ -4649,6 +4659,22 @@ static void null_routh(void **state)
     reset(&F);
     /* why NULL */
     assert_null(qd_routh_not_cyclic(F.ctx, F.model, F.eom, 1, NULL));
+    reset(&F);
+    /* ---- qd_routh_ignore_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(NULL, F.model, F.eom, "q", (const qd_expr * *)F.e, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, NULL, F.eom, "q", (const qd_expr * *)F.e, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* list NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, F.model, F.eom, NULL, (const qd_expr * *)F.e, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* ign NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, F.model, F.eom, "q", NULL, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, F.model, F.eom, "q", (const qd_expr * *)F.e, 1, NULL, (const char * *)F.names));
     reset(&F);
     teardown(&F);
 }
