@@ -103,6 +103,23 @@ static int set_nonneg(const cli_spec *spec, const cli_opt *o, const char *v, dou
     return QD_EXIT_OK;
 }
 
+/* A number within o's bounds (CLI_RANGE), or a whole one (CLI_WHOLE, into
+ * a uint64_t). */
+static int set_in(const cli_spec *spec, const cli_opt *o, const char *v, void *slot) {
+    char *end;
+    double lo = strtod(o->choices[0], NULL), hi = strtod(o->choices[1], NULL), x = strtod(v, &end);
+    bool whole = o->kind == CLI_WHOLE;
+    if (end == v || *end || !(x >= lo && x <= hi) || (whole && x != floor(x)))
+        return cli_usage_error(whole ? "%s %s takes a whole number from %.0f to %.0f, not '%s'"
+                                     : "%s %s takes a number from %g to %g, not '%s'",
+                               spec->name, o->name, lo, hi, v);
+    if (whole)
+        *(uint64_t *)slot = (uint64_t)x;
+    else
+        *(double *)slot = x;
+    return QD_EXIT_OK;
+}
+
 /* Store the value v (NULL for a flag) of option o into args + base. */
 static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char *v, void *args) {
     char *field = (char *)args + base + o->offset;
@@ -119,6 +136,8 @@ static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char
     case CLI_CHOICE: return set_choice(spec, o, v, (const char **)(void *)field);
     case CLI_COUNT: return set_count(spec, o, v, (size_t *)(void *)field);
     case CLI_NONNEG: return set_nonneg(spec, o, v, (double *)(void *)field);
+    case CLI_WHOLE:
+    case CLI_RANGE: return set_in(spec, o, v, field);
     case CLI_CALL: return o->call(v, (char *)args + base);
     }
     return QD_EXIT_FAIL;

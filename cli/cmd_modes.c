@@ -49,15 +49,6 @@ typedef struct modes_run {
     cli_sym_run sym;            /* --symmetry */
 } modes_run;
 
-static int tol_option(const char *v, void *args) {
-    modes_args *a = args;
-    char *end;
-    a->tol = strtod(v, &end);
-    if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1))
-        return cli_usage_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
-    return QD_EXIT_OK;
-}
-
 #define OPT(...) CLI_OPT(modes_args, __VA_ARGS__)
 static const cli_opt opts[] = {
     OPT("--at-equilibrium", CLI_COUNT, at_eq, "N", "about equilibrium N, as `qdot equilibria` "
@@ -74,8 +65,8 @@ static const cli_opt opts[] = {
         "of a model that keeps constraints"),
     OPT("--plot", CLI_TEXT, plot, "FILE.png|.svg|.pdf", "draw the mode shapes"),
     OPT("--count", CLI_COUNT, count, "N", "a field model: the number of modes (at most 1000)"),
-    {"--tol", NULL, CLI_CALL, 0, "X", "a field model: the relative tolerance (1e-14 to 0.1)",
-     NULL, tol_option},
+    CLI_OPT_IN(modes_args, "--tol", CLI_RANGE, tol, "X", "a field model: the relative tolerance "
+               "(1e-14 to 0.1)", 1e-14, 0.1),
     OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value"),
     {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json",
      cli_formats_text_json, NULL},
