@@ -84,18 +84,6 @@ static int tap(void *data, int event, const double *row) {
 
 /* ---- --variational ------------------------------------------------------------- */
 
-static qd_lyap *flow_model(const cli_sim *c) {
-    if (!c->e || c->se) {
-        cli_diag_error("--variational takes a model given by T and V or L (its equations M "
-                       "q'' = f), not one given by H or in speeds (try --no-speeds)");
-        return NULL;
-    }
-    qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
-    if (!l)
-        cli_diag_ctx(c->ctx);
-    return l;
-}
-
 /* A library printer's status: its text on stderr, or out of memory. */
 static int put_stderr(qd_status st, qd_buf *b) {
     if (st == QD_OK)
@@ -112,17 +100,11 @@ static int flow_print(const qd_flow *f, double period) {
     return put_stderr(qd_flow_print(f, period, "qdot: simulate: ", &b), &b);
 }
 
-/* The flow run, its rows as CSV into rows when given (qd_flow_run_csv:
+/* The flow run, its rows as CSV into rows when given (qd_flow_setup_run:
  * every --dt, else --step, else 100 rows); *f filled (qd_flow_free). */
 static int flow_compute(cli_sim *c, qd_flow *f, qd_sim_opts *o, cli_out_file *rows) {
-    *f = (qd_flow){0};
-    qd_lyap *l = flow_model(c);
-    if (!l)
-        return QD_EXIT_USAGE;
-    qd_flow_sim_opts(&c->opts, o);
-    qd_status st = rows ? qd_flow_run_csv(c->ctx, l, c->e, o, 0, cli_out_put, rows, f)
-                        : qd_flow_run(c->ctx, l, o, NULL, f);
-    qd_lyap_free(l);
+    qd_status st = qd_flow_setup_run(c->ctx, c->set, c->mf.model, &c->opts,
+                                     rows ? cli_out_put : NULL, rows, o, f);
     if (st == QD_ERR_IO)
         return QD_EXIT_FAIL; /* a lost row: said when the file is closed */
     if (st == QD_ERR_ARG)

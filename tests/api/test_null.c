@@ -2407,6 +2407,16 @@ static void null_lyapunov(void **state)
     /* r NULL */
     qd_lyap_result_free(NULL);
     reset(&F);
+    /* ---- qd_flow_setup_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_setup_run(NULL, NULL, F.model, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_setup_run(F.ctx, NULL, F.model, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_setup_run(F.ctx, NULL, NULL, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
