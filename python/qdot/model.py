@@ -869,7 +869,7 @@ class Model:
         finally:
             lib.qd_scatter_free(s_)
 
-    def path(self, start, end, energy=None, all=False, segments=0):
+    def path(self, start, end, energy=None, all=False, segments=0, guess=None):
         """Stationary paths of the action between two configurations, with
         their kinetic foci (`qdot path FILE --from ... --to ...`,
         qd_path_end_read, qd_path_find or qd_path_find_energy, qd_path_json):
@@ -878,29 +878,25 @@ class Model:
         kinetic_foci_multiplicity, minimum, examined).  start, end: "q=VALUE,
         ..., t=T" or {name: value}, as --from and --to (the end's time unless
         energy is given: Maupertuis' paths of that energy); all=True is
-        --all; segments as --segments.  Free ends are not here yet."""
+        --all; segments as --segments; a free end "y=free" as in --from and --to;
+        guess a list of starting velocities ("x'=1" or {name: value}) as --guess
+        (qd_path_ends_read reads them all, as for the command line)."""
         core = self._core
         e = core.eom_ptr()
-        n = e.n
         E = new("double")
         if energy is not None:
             core.check(lib.qd_model_number(core.ctx, core.model,
                                            _commands.text_arg(energy, "energy"), E))
-        q0, q1 = ffi.new("double[]", n + 1), ffi.new("double[]", n + 1)
-        t0, t1 = new("double", 0.0), new("double", float("nan"))
-        f0, f1 = ffi.new("bool[]", n + 1), ffi.new("bool[]", n + 1)
-        for what, text, q, t, fr in (("from", start, q0, t0, f0), ("to", end, q1, t1, f1)):
-            core.check(lib.qd_path_end_read(core.ctx, core.model, e,
-                                            _commands.text_arg(text, what), q, t, fr))
-            if any(fr[j] for j in range(n)):
-                raise ValueError("path: free ends are not in the Python package yet")
-        if energy is None and not t1[0] > t0[0]:
-            raise ValueError("path: the end needs its time t=T1 after the start's (or give "
-                             "energy)")
-        o = new("qd_path_opts", {"t0": t0[0], "t1": t1[0], "q0": q0, "q1": q1,
-                                 "all": bool(all), "segments": int(segments)})
+        ends = new("qd_path_ends")
+        keep = [_commands.text_arg(g, "guess") for g in guess or []]
+        gs = ffi.new("const char *[]", keep) if keep else []
+        o = new("qd_path_opts", {"all": bool(all), "segments": int(segments)})
         ps = new("qd_path_set")
         try:
+            core.check(lib.qd_path_ends_read(
+                core.ctx, core.model, e, _commands.text_arg(start, "from"),
+                _commands.text_arg(end, "to"), len(gs), gs or ffi.NULL, energy is not None,
+                ends, o))
             if energy is None:
                 core.check(lib.qd_path_find(core.ctx, core.model, e, o, ps), cls=NumericalError)
             else:
@@ -910,6 +906,7 @@ class Model:
                 core.ctx, ps, core.model, e, buf))
         finally:
             lib.qd_path_set_free(ps)
+            lib.qd_path_ends_free(ends)
 
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a

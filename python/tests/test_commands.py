@@ -416,6 +416,13 @@ def test_path_free_particle_and_pendulum(tmp_path):
     same(pp.json, cli("path", pend, "--from", "th=0.1", "--to", "th=0.2, t=1.5"))
     with pytest.raises(ValueError):
         m.path("x=0", "x=1")        # no end time, no energy
+    # a free end: m x'(1) = 0 there (the natural boundary condition, Gelfand &
+    # Fomin sec. 6), so the free particle stays where it starts, at no action
+    fr = m.path("x=0.5, t=0", "x=free, t=1", guess=["x'=3"])
+    assert fr.paths[0].initial_velocities["x'"] == pytest.approx(0, abs=1e-9)
+    assert fr.paths[0].action == pytest.approx(0, abs=1e-9)
+    same(fr.json, cli("path", path, "--from", "x=0.5, t=0", "--to", "x=free, t=1", "--guess",
+                      "x'=3"))
 
 
 # ---- lqr ---------------------------------------------------------------------

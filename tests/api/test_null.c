@@ -3669,6 +3669,32 @@ static void null_path(void **state)
     /* is_free NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, F.eom, "q", F.d, F.d, NULL));
     reset(&F);
+    /* ---- qd_path_ends_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(NULL, F.model, F.eom, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, NULL, F.eom, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, NULL, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* from NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, NULL, "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* to NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, "q", NULL, 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* guess NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, "q", "q", 1, NULL, false, NULL, NULL));
+    reset(&F);
+    /* ends NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* ---- qd_path_ends_free */
+    /* ends NULL */
+    qd_path_ends_free(NULL);
+    reset(&F);
     /* ---- qd_path_trial_read */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_trial_read(NULL, F.model, "q", (const qd_expr * *)F.e));
