@@ -55,43 +55,15 @@ static const cli_spec spec = {
 
 /* ---- the state before ----------------------------------------------------------- */
 
-/* `initial` as written, then --at, both kept exact (sin(al) is 1/2 at
- * al = pi/6); 0 for what neither names.  Parameters are the model's. */
+/* `initial` as written, then --at, exact (qd_impulse_state_read). */
 static int state_before(imp_run *r, const char *at) {
-    const qd_model *m = r->c.mf.model;
-    size_t n = r->n;
-    r->q0 = calloc(n + 1, sizeof *r->q0);
-    r->qd0 = calloc(n + 1, sizeof *r->qd0);
-    const qd_expr *zero = qd_int(r->c.ctx, 0);
-    if (!r->q0 || !r->qd0 || !zero)
+    r->q0 = calloc(r->n + 1, sizeof *r->q0);
+    r->qd0 = calloc(r->n + 1, sizeof *r->qd0);
+    if (!r->q0 || !r->qd0)
         return cli_out_of_memory();
-    for (size_t j = 0; j < n; j++) {
-        const qd_expr *q = qd_model_initial_definition(m, j, 0);
-        const qd_expr *v = qd_model_initial_definition(m, j, 1);
-        r->q0[j] = q ? q : zero;
-        r->qd0[j] = v ? v : zero;
-    }
-    if (!at)
-        return QD_EXIT_OK;
-    cli_state st = {0};
-    int rc = cli_state_init(r->c.ctx, m, &st);
-    const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
-    if (rc == QD_EXIT_OK && !exact)
-        rc = cli_out_of_memory();
-    qd_state_read_opts o = {.refuse = QD_STATE_PARAMS, .exact = exact};
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_read(r->c.ctx, m, "--at", at, &st, &o);
-    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
-        if (exact[qd_slot_coord(n, j)])
-            r->q0[j] = exact[qd_slot_coord(n, j)];
-        if (exact[qd_slot_velocity(n, j)])
-            r->qd0[j] = exact[qd_slot_velocity(n, j)];
-    }
-    if (rc == QD_EXIT_OK)
-        r->t0 = exact[qd_slot_time(n)];
-    free(exact);
-    cli_state_free(&st);
-    return rc;
+    if (qd_impulse_state_read(r->c.ctx, r->c.mf.model, at, r->q0, r->qd0, &r->t0) != QD_OK)
+        return cli_state_diag(r->c.ctx, "--at", at);
+    return QD_EXIT_OK;
 }
 
 /* ---- solving -------------------------------------------------------------------- */

@@ -10,7 +10,8 @@ import json as _json
 
 import numpy as np
 
-from ._core import Core, Error, ModelError, NumericalError, format_diag, name_of
+from ._core import (ArgumentError, Core, Error, ModelError, NumericalError, format_diag,
+                    name_of)
 from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
                    QD_FMT_TEXT)
 from . import sim as _sim
@@ -792,7 +793,7 @@ class Model:
         finally:
             lib.qd_zvc_picture_free(pic)
 
-    def impulse(self, at=None):
+    def impulse(self, at=None, prescribe=None):
         """The motion just after a blow, a sudden constraint or a collision
         (`qdot impulse`, qd_impulse_solve and qd_render_impulse): a
         qdot.Output with velocities_before, velocities_after,
@@ -800,29 +801,27 @@ class Model:
         impulsive_reactions, kinetic_energy_before, kinetic_energy_after,
         energy_lost, exact (the closed forms in the parameters), theorems
         (carnot, bertrand, thomson) and collision.  The state just before
-        is the model's `initial` as written; at={name: value} (coordinates,
-        velocities "NAME'", t; numbers or exact text "pi/6") changes it, as
-        --at.  (--prescribe is not here yet.)"""
+        is the model's `initial` as written; at={name: value} or "th=pi/2"
+        (coordinates, velocities "NAME'", t; numbers or exact text "pi/6")
+        changes it, as --at (qd_impulse_state_read).  prescribe: velocities
+        held just after, "x' = 1, up: y' = 0" or a list of such, as
+        --prescribe (Thomson's problem; qd_model_add_given)."""
         core = self._core
+        if prescribe:  # added to a parse of its own: the model keeps its statements
+            core = Core(self._core.text, self._core.file, list(self._sets.items()), "impulse")
+            for text in [prescribe] if isinstance(prescribe, str) else prescribe:
+                d = new("qd_diag")
+                if lib.qd_model_add_given(core.model, b"prescribe", ffi.NULL,
+                                          text.encode(), d) != lib.QD_OK:
+                    lib.qd_ctx_clear_error(core.ctx)
+                    raise ArgumentError(format_diag(d, "prescribe", text.encode()), d.status)
         n = lib.qd_model_ncoords(core.model)
-        zero = lib.qd_int(core.ctx, 0)
-        q0 = [lib.qd_model_initial_definition(core.model, j, 0) or zero for j in range(n)]
-        v0 = [lib.qd_model_initial_definition(core.model, j, 1) or zero for j in range(n)]
-        t0 = ffi.NULL
-        names = self.coordinates
-        for name, value in (at or {}).items():
-            x = _control._point_value(core, name, value)
-            if name in names:
-                q0[names.index(name)] = x
-            elif name.endswith("'") and name[:-1] in names:
-                v0[names.index(name[:-1])] = x
-            elif name == cstr(lib.qd_print_time_name(core.ctx)):
-                t0 = x
-            else:
-                raise ValueError("impulse: at names a coordinate, a velocity NAME' or t, not "
-                                 "'%s'" % name)
-        cq, cv = exprs(q0), exprs(v0)
-        opts = new("qd_impulse_opts", {"q": cq, "qd": cv, "t": t0, "exact": True,
+        q0, v0 = ffi.new("const qd_expr *[]", n or 1), ffi.new("const qd_expr *[]", n or 1)
+        t0 = ffi.new("const qd_expr **")
+        at_text = _commands.text_arg(at, "at") if at else ffi.NULL
+        if lib.qd_impulse_state_read(core.ctx, core.model, at_text, q0, v0, t0) != lib.QD_OK:
+            raise core.error(cls=ArgumentError)
+        opts = new("qd_impulse_opts", {"q": q0, "qd": v0, "t": t0[0], "exact": True,
                                        "max_ops": 0})  # as `qdot impulse`
         res = new("qd_impulse")
         try:

@@ -368,6 +368,18 @@ def test_impulse_dumbbell():
     assert out._repr_latex_().startswith("$$")
     with pytest.raises(ValueError):
         m.impulse(at={"z": 1})
+    # Bertrand (Britannica 1911 "Dynamics" B03, examples/chain_struck.qd): the
+    # joint made rigid takes the energy from 7 J^2/(4 m) to J^2/m, and with B
+    # held it is 3 J^2/(2 m); the model itself keeps no prescription
+    chain = os.path.join(EXAMPLES, "chain_struck.qd")
+    c = qdot.Model.load(chain)
+    assert c.impulse(prescribe="th1' = th2'").kinetic_energy_after == pytest.approx(1.0)
+    held = c.impulse(prescribe=["x' = 0, y' = 0"])
+    assert held.kinetic_energy_after == pytest.approx(1.5)
+    same(held.json, cli("impulse", chain, "--prescribe", "x' = 0, y' = 0"))
+    assert c.impulse().kinetic_energy_after == pytest.approx(7 / 4)
+    with pytest.raises(ValueError):
+        c.impulse(prescribe="x' = , y' = 0")
 
 
 # ---- scatter -----------------------------------------------------------------

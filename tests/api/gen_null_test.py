@@ -24,6 +24,7 @@ import sys
 # Arguments documented as accepting NULL with a meaning (defaults, "not
 # wanted"): the call with that one NULL is not made, since it may succeed.
 NULLABLE = {
+    'qd_impulse_state_read': {'at'},
     'qd_flow_setup_run': {'write', 'data'},
     'qd_action_at': {'opts'},
     'qd_action_of_sep': {'opts'},

@@ -1952,6 +1952,22 @@ static void null_impulse(void **state)
     /* r NULL */
     qd_impulse_free(NULL);
     reset(&F);
+    /* ---- qd_impulse_state_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(NULL, F.model, "q", (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, NULL, "q", (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, F.model, "q", NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* qd NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, F.model, "q", (const qd_expr * *)F.e, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, F.model, "q", (const qd_expr * *)F.e, (const qd_expr * *)F.e, NULL));
+    reset(&F);
     teardown(&F);
 }
 
