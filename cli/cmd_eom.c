@@ -159,8 +159,4 @@ static int run(cli_run *c) {
     return emit(r, st, step, &b, &notes);
 }
 
-int cli_cmd_eom(int argc, char **argv) {
-    static const cli_driver d = {&eom_spec, offsetof(eom_run, a), 0, check, run, NULL};
-    eom_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(eom, eom_run, &eom_spec, offsetof(eom_run, a), 0, check, run, NULL)

@@ -122,8 +122,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_impulse(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(imp_run, a), 0, NULL, run, run_free};
-    imp_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(impulse, imp_run, &spec, offsetof(imp_run, a), 0, NULL, run, run_free)

@@ -95,8 +95,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_integrals(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(int_run, a), 0, NULL, run, run_free};
-    int_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(integrals, int_run, &spec, offsetof(int_run, a), 0, NULL, run, run_free)

@@ -246,8 +246,4 @@ static void run_free(cli_run *c) {
     cli_lin_free(&r->lr);
 }
 
-int cli_cmd_modes(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(modes_run, a), 0, check, run, run_free};
-    modes_run r = {0};
-    return cli_drive(&d, &r.lr.c, argc, argv);
-}
+CLI_COMMAND(modes, modes_run, &spec, offsetof(modes_run, a), 0, check, run, run_free)

@@ -89,8 +89,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_orbit(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(orbit_run, a), 0, check, run, run_free};
-    orbit_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(orbit, orbit_run, &spec, offsetof(orbit_run, a), 0, check, run, run_free)

@@ -100,8 +100,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_path(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(path_run, a), 0, check, run, run_free};
-    path_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(path, path_run, &spec, offsetof(path_run, a), 0, check, run, run_free)

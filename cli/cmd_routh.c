@@ -88,8 +88,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_routh(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(routh_run, a), 0, check, run, run_free};
-    routh_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(routh, routh_run, &spec, offsetof(routh_run, a), 0, check, run, run_free)

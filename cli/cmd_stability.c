@@ -167,8 +167,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_stability(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(stab_run, a), 0, check, run, run_free};
-    stab_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(stability, stab_run, &spec, offsetof(stab_run, a), 0, check, run, run_free)
