@@ -67,9 +67,8 @@ static const cli_opt opts[] = {
     OPT("--count", CLI_COUNT, count, "N", "a field model: the number of modes (at most 1000)"),
     CLI_OPT_IN(modes_args, "--tol", CLI_RANGE, tol, "X", "a field model: the relative tolerance "
                "(1e-14 to 0.1)", 1e-14, 0.1),
-    OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value"),
-    {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json",
-     cli_formats_text_json, NULL},
+    CLI_OPT_SET(modes_args, sets),
+    CLI_OPT_FORMAT(modes_args, format),
     {0},
 };
 #undef OPT

@@ -56,9 +56,8 @@ static const cli_opt opts[] = {
     OPT("--scan", CLI_TEXT, scan, "NAME=A:B", "follow the steady motion as the parameter goes "
         "from A to B"),
     OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
-    OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value (before everything else)"),
-    {"--format", NULL, CLI_CHOICE, offsetof(stab_args, format), "NAME", "text or json",
-     cli_formats_text_json, NULL},
+    CLI_OPT_SET(stab_args, sets),
+    CLI_OPT_FORMAT(stab_args, format),
     {0},
 };
 #undef OPT
