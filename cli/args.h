@@ -16,6 +16,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h> /* CLI_WHOLE's uint64_t */
 #include <stdio.h>
 
 /* The most items a list option (--set, --event, ...) takes in one run. */

@@ -29,7 +29,7 @@
 typedef struct stab_args {
     const char *ignore, *momentum, *omega, *at, *guess, *scan, *format;
     cli_list driven, sets;
-    size_t steps;
+    uint64_t steps;
     bool json;
 } stab_args;
 
@@ -55,7 +55,8 @@ static const cli_opt opts[] = {
         "the search, not held (default: the model's initial values)"),
     OPT("--scan", CLI_TEXT, scan, "NAME=A:B", "follow the steady motion as the parameter goes "
         "from A to B"),
-    OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
+    CLI_OPT_IN(stab_args, "--steps", CLI_WHOLE, steps, "N", "steps of --scan (at most 100000)",
+               1, 100000),
     CLI_OPT_SET(stab_args, sets),
     CLI_OPT_FORMAT(stab_args, format),
     {0},
@@ -78,9 +79,6 @@ static int check(cli_run *c) {
                        "--driven \"q' = VALUE\"");
         return QD_EXIT_USAGE;
     }
-    if (a->steps > 100000)
-        return cli_usage_error("--steps takes a number of steps from 1 to 100000, not %zu",
-                               a->steps);
     if (a->steps && !a->scan)
         return cli_usage_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
     return QD_EXIT_OK;
