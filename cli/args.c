@@ -133,7 +133,8 @@ static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char
         l->items[l->n++] = v;
         return QD_EXIT_OK;
     }
-    case CLI_CHOICE: return set_choice(spec, o, v, (const char **)(void *)field);
+    case CLI_CHOICE:
+    case CLI_MAYBE: return set_choice(spec, o, v, (const char **)(void *)field);
     case CLI_COUNT: return set_count(spec, o, v, (size_t *)(void *)field);
     case CLI_NONNEG: return set_nonneg(spec, o, v, (double *)(void *)field);
     case CLI_WHOLE:
@@ -212,6 +213,11 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
             if (!takes)
                 return cli_usage_error("%s takes no value (given '%s')", o->name, arg);
             v = arg + len + 1;
+        } else if (o->kind == CLI_MAYBE) { /* the next word when it is a choice */
+            v = o->choices[0];
+            for (size_t k = 0; i + 1 < argc && o->choices[k]; k++)
+                if (!strcmp(argv[i + 1], o->choices[k]))
+                    v = argv[++i];
         } else if (takes) {
             if (i + 1 >= argc)
                 return cli_usage_error("%s needs a value: %s %s", o->name, o->name, o->metavar);
@@ -236,7 +242,7 @@ static void usage_line(FILE *out, const cli_opt *o) {
     if (o->kind == CLI_LIST && n > 0 && (size_t)n + 4 < sizeof left)
         strcat(left, " ...");
     fprintf(out, "  %-26s %s", left, o->help ? o->help : "");
-    if (o->kind == CLI_CHOICE && o->choices) {
+    if ((o->kind == CLI_CHOICE || o->kind == CLI_MAYBE) && o->choices) {
         fputs(" (", out);
         for (size_t k = 0; o->choices[k]; k++)
             fprintf(out, "%s%s", k ? ", " : "", o->choices[k]);

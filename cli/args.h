@@ -36,6 +36,8 @@ typedef enum cli_kind {
     CLI_NONNEG, /* double: a finite number >= 0 (a time, an interval) */
     CLI_WHOLE,  /* uint64_t: a whole number from the bounds' first to their second */
     CLI_RANGE,  /* double: a number from the bounds' first to their second (a tolerance) */
+    CLI_MAYBE,  /* const char *: CLI_CHOICE whose value may be left out: choices[0] then
+                 * ("--variational" or "--variational columns") */
     CLI_CALL    /* call(value, args): the command's own reader (value NULL for a flag) */
 } cli_kind;
 

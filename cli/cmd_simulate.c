@@ -47,7 +47,7 @@ static const char *const formats[] = {"csv", "json", NULL};
 static const cli_opt opts[] = {
     {"--format", NULL, CLI_CHOICE, offsetof(sim_cmd_args, format), "F",
      "csv rows, or one JSON document (summary, final state, rows)", formats, NULL},
-    {"--variational", NULL, CLI_CHOICE, offsetof(sim_cmd_args, variational_mode), "[columns]",
+    {"--variational", NULL, CLI_MAYBE, offsetof(sim_cmd_args, variational_mode), "[columns]",
      "the flow Jacobian after the run; columns: its entries as CSV rows", modes, NULL},
     {"--period", NULL, CLI_TEXT, offsetof(sim_cmd_args, period_text), "T",
      "t_end = t0 + T and the monodromy matrix (with --variational)", NULL, NULL},
@@ -250,35 +250,11 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     return rc;
 }
 
-/* --variational takes its mode when one follows ("--variational columns"),
- * else it is the matrix: argv with the mode joined to it, for the table. */
-static char **join_variational(int argc, char **argv) {
-    char **v = malloc(((size_t)argc + 1) * sizeof *v);
-    int k = 0;
-    for (int i = 0; v && i < argc; i++) {
-        v[k++] = argv[i];
-        if (strcmp(argv[i], "--variational"))
-            continue;
-        bool mode = i + 1 < argc && (!strcmp(argv[i + 1], "columns") ||
-                                     !strcmp(argv[i + 1], "matrix"));
-        v[k - 1] = mode && !strcmp(argv[++i], "columns") ? "--variational=columns"
-                                                          : "--variational=matrix";
-    }
-    if (v)
-        v[k] = NULL;
-    return v;
-}
-
 int cli_cmd_simulate(int argc, char **argv) {
     sim_cmd_args sa = {0};
     cli_sim_args *ap = &sa.a;
 #define a (*ap)
-    char **args = join_variational(argc, argv);
-    int n = 0;
-    while (args && args[n])
-        n++;
-    int rc = args ? cli_parse(&spec, n, args, &sa, &a.file) : QD_EXIT_FAIL;
-    free(args);
+    int rc = cli_parse(&spec, argc, argv, &sa, &a.file);
     a.json = sa.format && !strcmp(sa.format, "json");
     sa.variational = !sa.variational_mode ? 0 : !strcmp(sa.variational_mode, "columns") ? 2 : 1;
     if (rc == QD_EXIT_OK && sa.period_text)

@@ -31,6 +31,7 @@ typedef struct cmd_args {
     int calls;
     uint64_t seed;
     double tol;
+    const char *mode;
 } cmd_args;
 
 static int count_call(const char *value, void *args) {
@@ -40,6 +41,7 @@ static int count_call(const char *value, void *args) {
 }
 
 static const char *const formats[] = {"text", "json", "latex", NULL};
+static const char *const modes[] = {"matrix", "columns", NULL};
 
 static const cli_opt cmd_opts[] = {
     {"--quiet", NULL, CLI_FLAG, offsetof(cmd_args, quiet), NULL, "print nothing", NULL, NULL},
@@ -50,6 +52,8 @@ static const cli_opt cmd_opts[] = {
     {"--mark", NULL, CLI_CALL, 0, "X", "the command's own reader", NULL, count_call},
     CLI_OPT_IN(cmd_args, "--seed", CLI_WHOLE, seed, "S", "a seed", 0, 9007199254740992),
     CLI_OPT_IN(cmd_args, "--tol", CLI_RANGE, tol, "X", "a tolerance", 1e-14, 0.1),
+    {"--mode", NULL, CLI_MAYBE, offsetof(cmd_args, mode), "[columns]", "a value that may be left "
+     "out", modes, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 
@@ -117,6 +121,17 @@ static void test_values(void **state) {
                            "--tol", "1e-14", (const char *)NULL), QD_EXIT_OK);
     assert_true(a.seed == UINT64_C(9007199254740992));
     assert_true(a.tol == 1e-14);
+    /* a value that may be left out: the next word only when it is a choice */
+    assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "--mode", "m.qd", (const char *)NULL),
+                     QD_EXIT_OK);
+    assert_string_equal(a.mode, "matrix");
+    assert_string_equal(pos[0], "m.qd");
+    assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "m.qd", "--mode", "columns",
+                           (const char *)NULL), QD_EXIT_OK);
+    assert_string_equal(a.mode, "columns");
+    assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "m.qd", "--mode=colums",
+                           (const char *)NULL), QD_EXIT_USAGE);
+    assert_non_null(strstr(err, "did you mean 'columns'?"));
 }
 
 static void test_refusals(void **state) {
