@@ -18,26 +18,12 @@
 
 #include "qdot/qdot.h"
 #include "qdot/model.h"
+#include "util/check.h"
 
 static const char *PLANE = "coordinates x, y\nparameters m = 3, k = 1\n"
                            "T = m/2*(x'^2 + y'^2)\nV = -k/sqrt(x^2 + y^2)\n";
 
-static qd_model *plane(qd_ctx *ctx) {
-    qd_diag d;
-    qd_model *m = qd_model_parse(ctx, PLANE, &d);
-    assert_non_null(m);
-    return m;
-}
-
-/* e equals the model-language text want (read with the same symbols). */
-static void assert_is(qd_ctx *ctx, const qd_expr *e, const char *want) {
-    qd_read_error err;
-    const qd_read_opts opts = {.new_symbols = true};
-    const qd_expr *w = qd_read(ctx, want, &opts, &err);
-    assert_non_null(w);
-    assert_non_null(e);
-    assert_true(qd_is_zero(qd_simplify(ctx, qd_sub(ctx, e, w))));
-}
+static qd_model *plane(qd_ctx *ctx) { return qt_parse_ok(ctx, PLANE); }
 
 /* A label is added unless the text has its own; the field is the rotation's. */
 static void labelled(void **state) {
@@ -54,8 +40,8 @@ static void labelled(void **state) {
     assert_string_equal(qd_model_symmetry_name(m, 0), "S1");
     assert_string_equal(qd_model_symmetry_name(m, 1), "rot");
     for (size_t i = 0; i < 2; i++) {
-        assert_is(ctx, qd_model_symmetry_field(m, i, 0), "-y");
-        assert_is(ctx, qd_model_symmetry_field(m, i, 1), "x");
+        qt_assert_is(ctx, qd_model_symmetry_field(m, i, 0), "-y");
+        qt_assert_is(ctx, qd_model_symmetry_field(m, i, 1), "x");
     }
     assert_int_equal(qd_model_nintegrals(m), 1);
     qd_model_free(m);
@@ -73,8 +59,8 @@ static void items(void **state) {
                                         &d), QD_OK);
     assert_int_equal(qd_model_nprescribed(m), 2);
     assert_string_equal(qd_model_prescribed_name(m, 1), "up");
-    assert_is(ctx, qd_model_prescribed(m, 0), "x' - 1");
-    assert_is(ctx, qd_model_prescribed(m, 1), "y' - atan2(x, y)*x'");
+    qt_assert_is(ctx, qd_model_prescribed(m, 0), "x' - 1");
+    qt_assert_is(ctx, qd_model_prescribed(m, 1), "y' - atan2(x, y)*x'");
     qd_model_free(m);
     qd_ctx_free(ctx);
 }
