@@ -103,6 +103,23 @@ static int set_nonneg(const cli_spec *spec, const cli_opt *o, const char *v, dou
     return QD_EXIT_OK;
 }
 
+/* A number within o's bounds (CLI_RANGE), or a whole one (CLI_WHOLE, into
+ * a uint64_t). */
+static int set_in(const cli_spec *spec, const cli_opt *o, const char *v, void *slot) {
+    char *end;
+    double lo = strtod(o->choices[0], NULL), hi = strtod(o->choices[1], NULL), x = strtod(v, &end);
+    bool whole = o->kind == CLI_WHOLE;
+    if (end == v || *end || !(x >= lo && x <= hi) || (whole && x != floor(x)))
+        return cli_usage_error(whole ? "%s %s takes a whole number from %.0f to %.0f, not '%s'"
+                                     : "%s %s takes a number from %g to %g, not '%s'",
+                               spec->name, o->name, lo, hi, v);
+    if (whole)
+        *(uint64_t *)slot = (uint64_t)x;
+    else
+        *(double *)slot = x;
+    return QD_EXIT_OK;
+}
+
 /* Store the value v (NULL for a flag) of option o into args + base. */
 static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char *v, void *args) {
     char *field = (char *)args + base + o->offset;
@@ -116,9 +133,12 @@ static int store(const cli_spec *spec, const cli_opt *o, size_t base, const char
         l->items[l->n++] = v;
         return QD_EXIT_OK;
     }
-    case CLI_CHOICE: return set_choice(spec, o, v, (const char **)(void *)field);
+    case CLI_CHOICE:
+    case CLI_MAYBE: return set_choice(spec, o, v, (const char **)(void *)field);
     case CLI_COUNT: return set_count(spec, o, v, (size_t *)(void *)field);
     case CLI_NONNEG: return set_nonneg(spec, o, v, (double *)(void *)field);
+    case CLI_WHOLE:
+    case CLI_RANGE: return set_in(spec, o, v, field);
     case CLI_CALL: return o->call(v, (char *)args + base);
     }
     return QD_EXIT_FAIL;
@@ -193,6 +213,11 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
             if (!takes)
                 return cli_usage_error("%s takes no value (given '%s')", o->name, arg);
             v = arg + len + 1;
+        } else if (o->kind == CLI_MAYBE) { /* the next word when it is a choice */
+            v = o->choices[0];
+            for (size_t k = 0; i + 1 < argc && o->choices[k]; k++)
+                if (!strcmp(argv[i + 1], o->choices[k]))
+                    v = argv[++i];
         } else if (takes) {
             if (i + 1 >= argc)
                 return cli_usage_error("%s needs a value: %s %s", o->name, o->name, o->metavar);
@@ -217,7 +242,7 @@ static void usage_line(FILE *out, const cli_opt *o) {
     if (o->kind == CLI_LIST && n > 0 && (size_t)n + 4 < sizeof left)
         strcat(left, " ...");
     fprintf(out, "  %-26s %s", left, o->help ? o->help : "");
-    if (o->kind == CLI_CHOICE && o->choices) {
+    if ((o->kind == CLI_CHOICE || o->kind == CLI_MAYBE) && o->choices) {
         fputs(" (", out);
         for (size_t k = 0; o->choices[k]; k++)
             fprintf(out, "%s%s", k ? ", " : "", o->choices[k]);

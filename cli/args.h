@@ -16,6 +16,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h> /* CLI_WHOLE's uint64_t */
 #include <stdio.h>
 
 /* The most items a list option (--set, --event, ...) takes in one run. */
@@ -33,6 +34,10 @@ typedef enum cli_kind {
     CLI_CHOICE, /* const char *: one of choices (a misspelt one gets "did you mean") */
     CLI_COUNT,  /* size_t: a whole number >= 1 */
     CLI_NONNEG, /* double: a finite number >= 0 (a time, an interval) */
+    CLI_WHOLE,  /* uint64_t: a whole number from the bounds' first to their second */
+    CLI_RANGE,  /* double: a number from the bounds' first to their second (a tolerance) */
+    CLI_MAYBE,  /* const char *: CLI_CHOICE whose value may be left out: choices[0] then
+                 * ("--variational" or "--variational columns") */
     CLI_CALL    /* call(value, args): the command's own reader (value NULL for a flag) */
 } cli_kind;
 
@@ -43,7 +48,8 @@ typedef struct cli_opt {
     size_t offset;        /* of the field in the argument struct (offsetof) */
     const char *metavar;  /* "T" in "--t-end T"; NULL: the option takes no value */
     const char *help;     /* one line for --help */
-    const char *const *choices;                 /* CLI_CHOICE: NULL-terminated */
+    const char *const *choices; /* CLI_CHOICE: NULL-terminated; CLI_WHOLE, CLI_RANGE: the
+                                 * bounds {"MIN", "MAX"} (CLI_OPT_IN) */
     int (*call)(const char *value, void *args); /* CLI_CALL: returns an exit status */
 } cli_opt;
 
@@ -70,6 +76,14 @@ typedef struct cli_spec {
  * CLI_OPT(TYPE, "--t-end", CLI_TEXT, t_end, "T", "the end time"). */
 #define CLI_OPT(TYPE, NAME, KIND, FIELD, META, HELP) \
     {NAME, NULL, KIND, offsetof(TYPE, FIELD), META, HELP, NULL, NULL}
+/* An entry whose values lie from MIN to MAX, numbers or macros of numbers
+ * (CLI_WHOLE, CLI_RANGE): CLI_OPT_IN(TYPE, "--seed", CLI_WHOLE, seed, "S",
+ * "the seed", 0, 9007199254740992). */
+#define CLI_OPT_IN(TYPE, NAME, KIND, FIELD, META, HELP, MIN, MAX)                   \
+    {NAME, NULL, KIND, offsetof(TYPE, FIELD), META, HELP,                            \
+     (const char *const[]){CLI_STR_(MIN), CLI_STR_(MAX), NULL}, NULL}
+#define CLI_STR_(X) CLI_STR__(X)
+#define CLI_STR__(X) #X
 
 /* The options every model command spells alike, one wording for each
  * (issue 31's one vocabulary): --set NAME=VALUE and --format FORMAT with other choices than

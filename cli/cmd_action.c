@@ -131,8 +131,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_action(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(act_run, a), 0, NULL, run, NULL};
-    act_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(action, act_run, &spec, offsetof(act_run, a), 0, NULL, run, NULL)

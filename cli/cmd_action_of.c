@@ -113,8 +113,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_action_of(int argc, char **argv) {
-    static const cli_driver d = {&spec, 0, 0, check, run, run_free};
-    ao_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(action_of, ao_run, &spec, 0, 0, check, run, run_free)

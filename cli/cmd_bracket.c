@@ -82,9 +82,5 @@ static int run(cli_run *c) {
 
 static void run_free(cli_run *c) { qd_phase_free(&((br_run *)c)->ph); }
 
-int cli_cmd_bracket(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(br_run, a), offsetof(br_run, pos), check, run,
-                                 run_free};
-    br_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(bracket, br_run, &spec, offsetof(br_run, a),
+            offsetof(br_run, pos), check, run, run_free)

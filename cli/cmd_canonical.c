@@ -162,9 +162,5 @@ static void run_free(cli_run *c) {
     qd_phase_free(&r->ph);
 }
 
-int cli_cmd_canonical(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(can_run, a), offsetof(can_run, pos),
-                                 combination, run, run_free};
-    can_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(canonical, can_run, &spec, offsetof(can_run, a),
+            offsetof(can_run, pos), combination, run, run_free)

@@ -69,8 +69,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_check(int argc, char **argv) {
-    static const cli_driver d = {&check_spec, 0, 0, NULL, run, NULL};
-    check_args a = {0};
-    return cli_drive(&d, &a.c, argc, argv);
-}
+CLI_COMMAND(check, check_args, &check_spec, 0, 0, NULL, run, NULL)

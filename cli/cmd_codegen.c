@@ -129,8 +129,4 @@ static int check(cli_run *c) {
     return QD_EXIT_OK;
 }
 
-int cli_cmd_codegen(int argc, char **argv) {
-    static const cli_driver d = {&cg_spec, 0, 0, check, run, NULL};
-    cg_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(codegen, cg_run, &cg_spec, 0, 0, check, run, NULL)

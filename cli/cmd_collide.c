@@ -70,8 +70,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_collide(int argc, char **argv) {
-    static const cli_driver d = {&spec, 0, 0, NULL, run, NULL};
-    cl_args a = {0};
-    return cli_drive(&d, &a.run, argc, argv);
-}
+CLI_COMMAND(collide, cl_args, &spec, 0, 0, NULL, run, NULL)

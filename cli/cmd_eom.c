@@ -52,8 +52,7 @@ static const cli_opt eom_opts[] = {
      "also the accelerations q'' = M^-1 f (or u') and the multipliers, symbolically", NULL, NULL},
     {"--eliminate", NULL, CLI_FLAG, ARG(eliminate), NULL,
      "substitute the holonomic constraints that can be solved for a coordinate", NULL, NULL},
-    {"--set", NULL, CLI_LIST, ARG(sets), "NAME=VALUE", "a parameter's value (an expression)",
-     NULL, NULL},
+    CLI_OPT_SET(eom_args, sets),
     {"--at", NULL, CLI_TEXT, ARG(at), "STATE",
      "the numbers at a state \"q=..., q'=..., t=...\" (with speeds: the speeds)", NULL, NULL},
     {"--method", NULL, CLI_CHOICE, ARG(method), "M",
@@ -159,8 +158,4 @@ static int run(cli_run *c) {
     return emit(r, st, step, &b, &notes);
 }
 
-int cli_cmd_eom(int argc, char **argv) {
-    static const cli_driver d = {&eom_spec, offsetof(eom_run, a), 0, check, run, NULL};
-    eom_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(eom, eom_run, &eom_spec, offsetof(eom_run, a), 0, check, run, NULL)

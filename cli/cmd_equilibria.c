@@ -64,8 +64,4 @@ static void run_free(cli_run *c) {
     cli_lin_free(&r->lr);
 }
 
-int cli_cmd_equilibria(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(eq_run, a), 0, NULL, run, run_free};
-    eq_run r = {0};
-    return cli_drive(&d, &r.lr.c, argc, argv);
-}
+CLI_COMMAND(equilibria, eq_run, &spec, offsetof(eq_run, a), 0, NULL, run, run_free)

@@ -61,8 +61,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_form(int argc, char **argv) {
-    static const cli_driver d = {&form_spec, 0, offsetof(form_args, text), check, run, NULL};
-    form_args a = {0};
-    return cli_drive(&d, &a.c, argc, argv);
-}
+CLI_COMMAND(form, form_args, &form_spec, 0, offsetof(form_args, text), check, run, NULL)

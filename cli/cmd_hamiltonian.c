@@ -99,8 +99,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_hamiltonian(int argc, char **argv) {
-    static const cli_driver d = {&spec, 0, 0, NULL, run, run_free};
-    ham_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(hamiltonian, ham_run, &spec, 0, 0, NULL, run, run_free)

@@ -63,8 +63,4 @@ static int run(cli_run *c) {
 
 static void run_free(cli_run *c) { qd_hj_free(((hj_run *)c)->h); }
 
-int cli_cmd_hj(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(hj_run, a), 0, NULL, run, run_free};
-    hj_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(hj, hj_run, &spec, offsetof(hj_run, a), 0, NULL, run, run_free)

@@ -14,7 +14,6 @@
  */
 #include "driver.h"
 
-#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,107 +53,17 @@ static const cli_spec spec = {
     "the impulsive reactions, the energies and the theorems of impulsive motion.",
     opts, NULL, 1, 1, "FILE", false};
 
-/* ---- lists given on the command line --------------------------------------- */
-
-static bool blank(const char *s, size_t len) {
-    for (size_t k = 0; k < len; k++)
-        if (!isspace((unsigned char)s[k]))
-            return false;
-    return true;
-}
-
-/* A parser's record d about the statement "prescribe ITEM" (ITEM from byte
- * base on) shown against the whole option text, where ITEM starts at start. */
-static void show_in_option(qd_diag d, const char *opt, const char *text, size_t base,
-                           size_t start, size_t len) {
-    bool inside = d.offset >= base && d.offset - base <= len;
-    d.offset = inside ? d.offset - base + start : start;
-    if (!inside || d.length == 0 || d.offset + d.length > start + len)
-        d.length = 1;
-    d.line = d.col = 0;
-    cli_diag_read(opt, text, &d);
-}
-
-/* One item of --prescribe, text[start, start + len), added to the model as
- * its own statement `prescribe ITEM`, so the model language checks it as it
- * would in the file. */
-static int add_prescription(imp_run *r, const char *text, size_t start, size_t len) {
-    qd_buf stmt = QD_BUF_INIT;
-    qd_buf_puts(&stmt, "prescribe ");
-    size_t base = stmt.len;
-    qd_buf_putn(&stmt, text + start, len);
-    qd_diag d;
-    memset(&d, 0, sizeof d);
-    qd_status st = stmt.failed ? QD_ERR_NOMEM
-                               : qd_model_add_statement(r->c.mf.model, qd_buf_str(&stmt), &d);
-    qd_buf_free(&stmt);
-    if (st == QD_OK)
-        return QD_EXIT_OK;
-    if (st == QD_ERR_NOMEM)
-        return cli_out_of_memory();
-    show_in_option(d, "--prescribe", text, base, start, len);
-    return QD_EXIT_USAGE;
-}
-
-static int add_prescriptions(imp_run *r, const imp_args *a) {
-    for (size_t k = 0; k < a->pres.n; k++) {
-        const char *text = a->pres.items[k];
-        if (strchr(text, '\n') || strchr(text, '#'))
-            return cli_usage_error("--prescribe takes one line of items, without comments");
-        for (size_t i = 0; text[i] || i == 0;) {
-            size_t end = qd_state_item_end(text, i);
-            if (blank(text + i, end - i))
-                return cli_usage_error("--prescribe: an empty item in '%s'", text);
-            int rc = add_prescription(r, text, i, end - i);
-            if (rc != QD_EXIT_OK)
-                return rc;
-            if (!text[end])
-                break;
-            i = end + 1;
-        }
-    }
-    return QD_EXIT_OK;
-}
-
 /* ---- the state before ----------------------------------------------------------- */
 
-/* `initial` as written, then --at, both kept exact (sin(al) is 1/2 at
- * al = pi/6); 0 for what neither names.  Parameters are the model's. */
+/* `initial` as written, then --at, exact (qd_impulse_state_read). */
 static int state_before(imp_run *r, const char *at) {
-    const qd_model *m = r->c.mf.model;
-    size_t n = r->n;
-    r->q0 = calloc(n + 1, sizeof *r->q0);
-    r->qd0 = calloc(n + 1, sizeof *r->qd0);
-    const qd_expr *zero = qd_int(r->c.ctx, 0);
-    if (!r->q0 || !r->qd0 || !zero)
+    r->q0 = calloc(r->n + 1, sizeof *r->q0);
+    r->qd0 = calloc(r->n + 1, sizeof *r->qd0);
+    if (!r->q0 || !r->qd0)
         return cli_out_of_memory();
-    for (size_t j = 0; j < n; j++) {
-        const qd_expr *q = qd_model_initial_definition(m, j, 0);
-        const qd_expr *v = qd_model_initial_definition(m, j, 1);
-        r->q0[j] = q ? q : zero;
-        r->qd0[j] = v ? v : zero;
-    }
-    if (!at)
-        return QD_EXIT_OK;
-    cli_state st = {0};
-    int rc = cli_state_init(r->c.ctx, m, &st);
-    const qd_expr **exact = rc == QD_EXIT_OK ? calloc(st.n, sizeof *exact) : NULL;
-    if (rc == QD_EXIT_OK && !exact)
-        rc = cli_out_of_memory();
-    qd_state_read_opts o = {.refuse = QD_STATE_PARAMS, .exact = exact};
-    if (rc == QD_EXIT_OK)
-        rc = cli_state_read(r->c.ctx, m, "--at", at, &st, &o);
-    for (size_t j = 0; rc == QD_EXIT_OK && j < n; j++) {
-        if (exact[qd_slot_coord(n, j)])
-            r->q0[j] = exact[qd_slot_coord(n, j)];
-        if (exact[qd_slot_velocity(n, j)])
-            r->qd0[j] = exact[qd_slot_velocity(n, j)];
-    }
-    if (rc == QD_EXIT_OK)
-        r->t0 = exact[qd_slot_time(n)];
-    free(exact);
-    cli_state_free(&st);
-    return rc;
+    if (qd_impulse_state_read(r->c.ctx, r->c.mf.model, at, r->q0, r->qd0, &r->t0) != QD_OK)
+        return cli_state_diag(r->c.ctx, "--at", at);
+    return QD_EXIT_OK;
 }
 
 /* ---- solving -------------------------------------------------------------------- */
@@ -201,7 +110,8 @@ static int run(cli_run *c) {
     int rc = cli_load(c->ctx, c->file, r->a.sets.n, r->a.sets.items, "impulse", &c->mf);
     if (rc == QD_EXIT_OK) {
         r->n = qd_model_ncoords(c->mf.model);
-        rc = add_prescriptions(r, &r->a);
+        for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.pres.n; k++) /* Thomson's problem */
+            rc = cli_model_add_given(&c->mf, "--prescribe", "prescribe", NULL, r->a.pres.items[k]);
     }
     if (rc == QD_EXIT_OK)
         rc = state_before(r, r->a.at);
@@ -212,8 +122,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_impulse(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(imp_run, a), 0, NULL, run, run_free};
-    imp_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(impulse, imp_run, &spec, offsetof(imp_run, a), 0, NULL, run, run_free)

@@ -55,11 +55,13 @@ static int parse_given(int_run *r) {
     char label[32];
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.symmetry.n; k++) {
         snprintf(label, sizeof label, "S%zu", k + 1);
-        rc = cli_symmetry(&r->c.mf, "--symmetry", r->a.symmetry.items[k], label);
+        rc = cli_model_add_given(&r->c.mf, "--symmetry", "symmetry", label,
+                                 r->a.symmetry.items[k]);
     }
     for (size_t k = 0; rc == QD_EXIT_OK && k < r->a.integral.n; k++) {
         snprintf(label, sizeof label, "J%zu", k + 1);
-        rc = cli_integral(&r->c.mf, "--integral", r->a.integral.items[k], label);
+        rc = cli_model_add_given(&r->c.mf, "--integral", "integral", label,
+                                 r->a.integral.items[k]);
     }
     return rc;
 }
@@ -93,8 +95,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_integrals(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(int_run, a), 0, NULL, run, run_free};
-    int_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(integrals, int_run, &spec, offsetof(int_run, a), 0, NULL, run, run_free)

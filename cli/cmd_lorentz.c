@@ -61,8 +61,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_lorentz(int argc, char **argv) {
-    static const cli_driver d = {&spec, 0, 0, NULL, run, NULL};
-    lz_args a = {0};
-    return cli_drive(&d, &a.c, argc, argv);
-}
+CLI_COMMAND(lorentz, lz_args, &spec, 0, 0, NULL, run, NULL)

@@ -69,8 +69,4 @@ static int run(cli_run *c) {
     return rc;
 }
 
-int cli_cmd_metric(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(mt_run, a), 0, NULL, run, NULL};
-    mt_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(metric, mt_run, &spec, offsetof(mt_run, a), 0, NULL, run, NULL)

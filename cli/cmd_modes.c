@@ -31,13 +31,13 @@
 typedef struct modes_args {
     const char *about, *initial, *scan, *format;
     const char *independent; /* --independent: a model that keeps constraints */
-    size_t steps;   /* --steps: 0 the library's default */
+    uint64_t steps; /* --steps: 0 the library's default */
     size_t at_eq;   /* 1-based; 0: the first minimum, else the first */
     cli_list sets;
     bool json, field; /* from the above: --format json; FILE declares a field */
     const char *plot;  /* --plot FILE: the mode shapes drawn */
     bool symmetry;     /* --symmetry */
-    size_t count;      /* --count: a field model's number of modes */
+    uint64_t count;    /* --count: a field model's number of modes */
     double tol;        /* --tol: a field model's relative tolerance */
 } modes_args;
 
@@ -49,15 +49,6 @@ typedef struct modes_run {
     cli_sym_run sym;            /* --symmetry */
 } modes_run;
 
-static int tol_option(const char *v, void *args) {
-    modes_args *a = args;
-    char *end;
-    a->tol = strtod(v, &end);
-    if (*end || !(a->tol >= 1e-14 && a->tol <= 0.1))
-        return cli_usage_error("--tol takes a relative tolerance from 1e-14 to 0.1, not '%s'", v);
-    return QD_EXIT_OK;
-}
-
 #define OPT(...) CLI_OPT(modes_args, __VA_ARGS__)
 static const cli_opt opts[] = {
     OPT("--at-equilibrium", CLI_COUNT, at_eq, "N", "about equilibrium N, as `qdot equilibria` "
@@ -67,18 +58,19 @@ static const cli_opt opts[] = {
         "initial values, through the normal coordinates"),
     OPT("--scan", CLI_TEXT, scan, "NAME=A:B", "follow the point as the parameter goes from A to "
         "B, and where its stability changes"),
-    OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
+    CLI_OPT_IN(modes_args, "--steps", CLI_WHOLE, steps, "N", "steps of --scan (at most 100000)",
+               1, 100000),
     OPT("--symmetry", CLI_FLAG, symmetry, NULL, "the point's symmetry group and the modes "
         "labelled by irreps"),
     OPT("--independent", CLI_TEXT, independent, "\"q1, ...\"", "the independent coordinates "
         "of a model that keeps constraints"),
     OPT("--plot", CLI_TEXT, plot, "FILE.png|.svg|.pdf", "draw the mode shapes"),
-    OPT("--count", CLI_COUNT, count, "N", "a field model: the number of modes (at most 1000)"),
-    {"--tol", NULL, CLI_CALL, 0, "X", "a field model: the relative tolerance (1e-14 to 0.1)",
-     NULL, tol_option},
-    OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value"),
-    {"--format", NULL, CLI_CHOICE, offsetof(modes_args, format), "NAME", "text or json",
-     cli_formats_text_json, NULL},
+    CLI_OPT_IN(modes_args, "--count", CLI_WHOLE, count, "N", "a field model: the number of modes "
+               "(at most 1000)", 1, 1000),
+    CLI_OPT_IN(modes_args, "--tol", CLI_RANGE, tol, "X", "a field model: the relative tolerance "
+               "(1e-14 to 0.1)", 1e-14, 0.1),
+    CLI_OPT_SET(modes_args, sets),
+    CLI_OPT_FORMAT(modes_args, format),
     {0},
 };
 #undef OPT
@@ -171,11 +163,6 @@ static int check(cli_run *c) {
     modes_args *a = &((modes_run *)c)->a;
     int rc;
     a->json = cli_json(a->format);
-    if (a->steps > 100000)
-        return cli_usage_error("--steps takes a number of steps from 1 to 100000, not %zu",
-                               a->steps);
-    if (a->count > 1000)
-        return cli_usage_error("--count takes a number of modes from 1 to 1000, not %zu", a->count);
     if ((a->field = cli_model_file_is_field(c->file))) {
         if (a->about || a->at_eq || a->initial || a->scan || a->plot || a->symmetry || a->steps)
             return cli_usage_error("a field model takes --count, --tol, --set and --format only");
@@ -255,8 +242,4 @@ static void run_free(cli_run *c) {
     cli_lin_free(&r->lr);
 }
 
-int cli_cmd_modes(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(modes_run, a), 0, check, run, run_free};
-    modes_run r = {0};
-    return cli_drive(&d, &r.lr.c, argc, argv);
-}
+CLI_COMMAND(modes, modes_run, &spec, offsetof(modes_run, a), 0, check, run, run_free)

@@ -60,9 +60,7 @@ static int run(cli_run *c) {
     int rc = cli_load_derive(c->ctx, c->file, a->sets.n, a->sets.items, "orbit", NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_parse(c->ctx, c->mf.model, a->ignore, ign, MAX_IGN, &nign);
-    if (rc == QD_EXIT_OK)
-        rc = cli_ignore_check(c->ctx, &c->mf, r->e, ign, nign);
+        rc = cli_ignore(c->ctx, &c->mf, r->e, a->ignore, ign, MAX_IGN, &nign);
     if (rc == QD_EXIT_OK && !(r->o = qd_orbit_derive(c->ctx, c->mf.model, r->e, nign, ign)))
         rc = cli_diag_ctx(c->ctx);
     if (rc != QD_EXIT_OK)
@@ -91,8 +89,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_orbit(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(orbit_run, a), 0, check, run, run_free};
-    orbit_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(orbit, orbit_run, &spec, offsetof(orbit_run, a), 0, check, run, run_free)

@@ -8,11 +8,8 @@
  */
 #include "driver.h"
 
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
 #include "qdot/path.h"
-#include "state.h"
+#include "opt_diag.h"
 
 typedef struct path_args {
     const char *from, *to, *energy, *format;
@@ -50,83 +47,9 @@ typedef struct path_run {
     cli_run c;
     path_args a;
     qd_eom *e;
-    cli_state g;
-    double *q0, *q1, *guess;
+    qd_path_ends ends; /* the arrays of the problem (qd_path_ends_read) */
     qd_path_set ps;
-    bool energy, any_free;
-    bool free0[32], free1[32];
 } path_run;
-
-/* A free coordinate starts from the other end's value (0 if free too). */
-static void free_guesses(path_run *r) {
-    size_t n = r->e->n;
-    for (size_t j = 0; j < n; j++) {
-        if (r->free0[j])
-            r->q0[j] = r->free1[j] ? 0 : r->q1[j];
-        if (r->free1[j])
-            r->q1[j] = r->free0[j] ? 0 : r->q0[j];
-    }
-}
-
-/* One end: its error shown in the option's text. */
-static int read_end(path_run *r, const char *what, const char *text, double *q, double *t,
-                    bool *fr) {
-    if (qd_path_end_read(r->c.ctx, r->c.mf.model, r->e, text, q, t, fr) != QD_OK)
-        return cli_state_diag(r->c.ctx, what, text);
-    for (size_t j = 0; j < r->e->n; j++)
-        r->any_free = r->any_free || fr[j];
-    return QD_EXIT_OK;
-}
-
-static int read_ends(path_run *r, const path_args *a, qd_path_opts *o) {
-    const qd_model *m = r->c.mf.model;
-    size_t n = r->e->n;
-    if (n > sizeof r->free0 / sizeof r->free0[0])
-        return cli_usage_error("path: at most %zu coordinates",
-                               sizeof r->free0 / sizeof r->free0[0]);
-    r->q0 = calloc(n + 1, sizeof *r->q0);
-    r->q1 = calloc(n + 1, sizeof *r->q1);
-    if (!r->q0 || !r->q1)
-        return cli_out_of_memory();
-    double t0 = 0, t1 = NAN;
-    int rc = read_end(r, "--from", a->from, r->q0, &t0, r->free0);
-    if (rc == QD_EXIT_OK)
-        rc = read_end(r, "--to", a->to, r->q1, &t1, r->free1);
-    if (rc == QD_EXIT_OK && r->energy && r->any_free)
-        rc = cli_usage_error("path: free ends need the end times, not --energy");
-    if (rc == QD_EXIT_OK && !r->energy && isnan(t1)) {
-        const char *x = qd_model_independent(m) ? qd_model_independent(m) : "t";
-        rc = cli_usage_error("path: --to needs the end %s=T1 (or give --energy E)", x);
-    }
-    if (rc == QD_EXIT_OK)
-        free_guesses(r);
-    r->guess = calloc(a->guess.n * n + 1, sizeof *r->guess);
-    if (rc == QD_EXIT_OK && !r->guess)
-        return cli_out_of_memory();
-    for (size_t k = 0; rc == QD_EXIT_OK && k < a->guess.n; k++) {
-        cli_state_free(&r->g);
-        rc = cli_state_init(r->c.ctx, m, &r->g);
-        if (rc == QD_EXIT_OK)
-            rc = cli_state_parse_as(r->c.ctx, m, "--guess", a->guess.items[k], &r->g);
-        if (rc == QD_EXIT_OK)
-            memcpy(r->guess + k * n, r->g.vals + n, n * sizeof *r->guess);
-    }
-    if (rc != QD_EXIT_OK)
-        return rc;
-    o->q0 = r->q0;
-    o->q1 = r->q1;
-    o->t0 = t0;
-    o->t1 = t1;
-    o->nguess = a->guess.n;
-    o->guess = a->guess.n ? r->guess : NULL;
-    o->all = a->all;
-    o->free0 = r->any_free ? r->free0 : NULL;
-    o->free1 = r->any_free ? r->free1 : NULL;
-    if (!r->energy && !(o->t1 > o->t0))
-        return cli_usage_error("path: the end time %g is not after the start time %g",
-                               o->t1, o->t0);
-    return QD_EXIT_OK;
-}
 
 /* A number option, an expression in the parameters: its error shown in it. */
 static int path_number(qd_ctx *ctx, const qd_model *m, const char *opt, const char *text,
@@ -143,15 +66,17 @@ static int run(cli_run *c) {
     int rc = cli_load_derive(c->ctx, c->file, a->set.n, a->set.items, "path", NULL, &c->mf, &r->e);
     qd_path_opts o = {0};
     double E = 0;
-    r->energy = a->energy != NULL;
     if (rc == QD_EXIT_OK && a->energy)
         rc = path_number(c->ctx, c->mf.model, "--energy", a->energy, &E);
-    if (rc == QD_EXIT_OK)
-        rc = read_ends(r, a, &o);
+    if (rc == QD_EXIT_OK && qd_path_ends_read(c->ctx, c->mf.model, r->e, a->from, a->to,
+                                              a->guess.n, a->guess.items, a->energy, &r->ends,
+                                              &o) != QD_OK)
+        rc = cli_diag_opts(c->ctx, &spec, a);
     if (rc != QD_EXIT_OK)
         return rc;
+    o.all = a->all;
     o.segments = a->segments;
-    qd_status st = r->energy ? qd_path_find_energy(c->ctx, c->mf.model, r->e, E, &o, &r->ps)
+    qd_status st = a->energy ? qd_path_find_energy(c->ctx, c->mf.model, r->e, E, &o, &r->ps)
                              : qd_path_find(c->ctx, c->mf.model, r->e, &o, &r->ps);
     if (st != QD_OK)
         return cli_diag_ctx(c->ctx);
@@ -171,15 +96,8 @@ static int check(cli_run *c) {
 static void run_free(cli_run *c) {
     path_run *r = (path_run *)c;
     qd_path_set_free(&r->ps);
-    cli_state_free(&r->g);
-    free(r->q0);
-    free(r->q1);
-    free(r->guess);
+    qd_path_ends_free(&r->ends);
     qd_eom_free(r->e);
 }
 
-int cli_cmd_path(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(path_run, a), 0, check, run, run_free};
-    path_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(path, path_run, &spec, offsetof(path_run, a), 0, check, run, run_free)

@@ -58,15 +58,19 @@ static int run(cli_run *c) {
     int rc = cli_load_derive(c->ctx, c->file, r->a.set.n, r->a.set.items, "routh", NULL, &c->mf,
                              &r->e);
     if (rc == QD_EXIT_OK)
-        rc = cli_ignore_parse(c->ctx, c->mf.model, r->a.ignore, r->ign, MAX_IGN, &r->nign);
+        rc = cli_ignore(c->ctx, &c->mf, NULL, r->a.ignore, r->ign, MAX_IGN, &r->nign);
     /* forced: a cyclic coordinate with a generalized force is reduced too
      * (Byerly Art. 20a); any other refusal is shown at its statement */
     qd_routh_opts ro = {.implicit = true, .forced = true};
     if (rc == QD_EXIT_OK &&
         !(r->r = qd_routh_derive_opts(c->ctx, c->mf.model, r->e, r->nign, r->ign, &ro))) {
-        rc = cli_ignore_check(c->ctx, &c->mf, r->e, r->ign, r->nign);
-        if (rc == QD_EXIT_OK)
-            rc = cli_diag_ctx(c->ctx);
+        qd_diag why = *qd_ctx_diag(c->ctx); /* shown when every one is cyclic */
+        qd_ctx_clear_error(c->ctx);
+        if ((rc = cli_ignore(c->ctx, &c->mf, r->e, r->a.ignore, r->ign, MAX_IGN, &r->nign)) ==
+            QD_EXIT_OK) {
+            cli_diag_show("qdot", NULL, &why);
+            rc = cli_exit(why.status);
+        }
     }
     return rc == QD_EXIT_OK ? emit(r) : rc;
 }
@@ -84,8 +88,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_routh(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(routh_run, a), 0, check, run, run_free};
-    routh_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(routh, routh_run, &spec, offsetof(routh_run, a), 0, check, run, run_free)

@@ -78,8 +78,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_scatter(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(sc_run, a), 0, NULL, run, run_free};
-    sc_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(scatter, sc_run, &spec, offsetof(sc_run, a), 0, NULL, run, run_free)

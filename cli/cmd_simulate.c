@@ -47,7 +47,7 @@ static const char *const formats[] = {"csv", "json", NULL};
 static const cli_opt opts[] = {
     {"--format", NULL, CLI_CHOICE, offsetof(sim_cmd_args, format), "F",
      "csv rows, or one JSON document (summary, final state, rows)", formats, NULL},
-    {"--variational", NULL, CLI_CHOICE, offsetof(sim_cmd_args, variational_mode), "[columns]",
+    {"--variational", NULL, CLI_MAYBE, offsetof(sim_cmd_args, variational_mode), "[columns]",
      "the flow Jacobian after the run; columns: its entries as CSV rows", modes, NULL},
     {"--period", NULL, CLI_TEXT, offsetof(sim_cmd_args, period_text), "T",
      "t_end = t0 + T and the monodromy matrix (with --variational)", NULL, NULL},
@@ -84,18 +84,6 @@ static int tap(void *data, int event, const double *row) {
 
 /* ---- --variational ------------------------------------------------------------- */
 
-static qd_lyap *flow_model(const cli_sim *c) {
-    if (!c->e || c->se) {
-        cli_diag_error("--variational takes a model given by T and V or L (its equations M "
-                       "q'' = f), not one given by H or in speeds (try --no-speeds)");
-        return NULL;
-    }
-    qd_lyap *l = qd_lyap_new(c->ctx, c->mf.model, c->e);
-    if (!l)
-        cli_diag_ctx(c->ctx);
-    return l;
-}
-
 /* A library printer's status: its text on stderr, or out of memory. */
 static int put_stderr(qd_status st, qd_buf *b) {
     if (st == QD_OK)
@@ -112,17 +100,11 @@ static int flow_print(const qd_flow *f, double period) {
     return put_stderr(qd_flow_print(f, period, "qdot: simulate: ", &b), &b);
 }
 
-/* The flow run, its rows as CSV into rows when given (qd_flow_run_csv:
+/* The flow run, its rows as CSV into rows when given (qd_flow_setup_run:
  * every --dt, else --step, else 100 rows); *f filled (qd_flow_free). */
 static int flow_compute(cli_sim *c, qd_flow *f, qd_sim_opts *o, cli_out_file *rows) {
-    *f = (qd_flow){0};
-    qd_lyap *l = flow_model(c);
-    if (!l)
-        return QD_EXIT_USAGE;
-    qd_flow_sim_opts(&c->opts, o);
-    qd_status st = rows ? qd_flow_run_csv(c->ctx, l, c->e, o, 0, cli_out_put, rows, f)
-                        : qd_flow_run(c->ctx, l, o, NULL, f);
-    qd_lyap_free(l);
+    qd_status st = qd_flow_setup_run(c->ctx, c->set, c->mf.model, &c->opts,
+                                     rows ? cli_out_put : NULL, rows, o, f);
     if (st == QD_ERR_IO)
         return QD_EXIT_FAIL; /* a lost row: said when the file is closed */
     if (st == QD_ERR_ARG)
@@ -268,35 +250,11 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     return rc;
 }
 
-/* --variational takes its mode when one follows ("--variational columns"),
- * else it is the matrix: argv with the mode joined to it, for the table. */
-static char **join_variational(int argc, char **argv) {
-    char **v = malloc(((size_t)argc + 1) * sizeof *v);
-    int k = 0;
-    for (int i = 0; v && i < argc; i++) {
-        v[k++] = argv[i];
-        if (strcmp(argv[i], "--variational"))
-            continue;
-        bool mode = i + 1 < argc && (!strcmp(argv[i + 1], "columns") ||
-                                     !strcmp(argv[i + 1], "matrix"));
-        v[k - 1] = mode && !strcmp(argv[++i], "columns") ? "--variational=columns"
-                                                          : "--variational=matrix";
-    }
-    if (v)
-        v[k] = NULL;
-    return v;
-}
-
 int cli_cmd_simulate(int argc, char **argv) {
     sim_cmd_args sa = {0};
     cli_sim_args *ap = &sa.a;
 #define a (*ap)
-    char **args = join_variational(argc, argv);
-    int n = 0;
-    while (args && args[n])
-        n++;
-    int rc = args ? cli_parse(&spec, n, args, &sa, &a.file) : QD_EXIT_FAIL;
-    free(args);
+    int rc = cli_parse(&spec, argc, argv, &sa, &a.file);
     a.json = sa.format && !strcmp(sa.format, "json");
     sa.variational = !sa.variational_mode ? 0 : !strcmp(sa.variational_mode, "columns") ? 2 : 1;
     if (rc == QD_EXIT_OK && sa.period_text)

@@ -29,7 +29,7 @@
 typedef struct stab_args {
     const char *ignore, *momentum, *omega, *at, *guess, *scan, *format;
     cli_list driven, sets;
-    size_t steps;
+    uint64_t steps;
     bool json;
 } stab_args;
 
@@ -55,10 +55,10 @@ static const cli_opt opts[] = {
         "the search, not held (default: the model's initial values)"),
     OPT("--scan", CLI_TEXT, scan, "NAME=A:B", "follow the steady motion as the parameter goes "
         "from A to B"),
-    OPT("--steps", CLI_COUNT, steps, "N", "steps of --scan (at most 100000)"),
-    OPT("--set", CLI_LIST, sets, "NAME=VALUE", "a parameter's value (before everything else)"),
-    {"--format", NULL, CLI_CHOICE, offsetof(stab_args, format), "NAME", "text or json",
-     cli_formats_text_json, NULL},
+    CLI_OPT_IN(stab_args, "--steps", CLI_WHOLE, steps, "N", "steps of --scan (at most 100000)",
+               1, 100000),
+    CLI_OPT_SET(stab_args, sets),
+    CLI_OPT_FORMAT(stab_args, format),
     {0},
 };
 #undef OPT
@@ -79,9 +79,6 @@ static int check(cli_run *c) {
                        "--driven \"q' = VALUE\"");
         return QD_EXIT_USAGE;
     }
-    if (a->steps > 100000)
-        return cli_usage_error("--steps takes a number of steps from 1 to 100000, not %zu",
-                               a->steps);
     if (a->steps && !a->scan)
         return cli_usage_error("--steps is the number of steps of --scan: give --scan NAME=A:B");
     return QD_EXIT_OK;
@@ -167,8 +164,4 @@ static void run_free(cli_run *c) {
     qd_eom_free(r->e);
 }
 
-int cli_cmd_stability(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(stab_run, a), 0, check, run, run_free};
-    stab_run r = {0};
-    return cli_drive(&d, &r.c, argc, argv);
-}
+CLI_COMMAND(stability, stab_run, &spec, offsetof(stab_run, a), 0, check, run, run_free)

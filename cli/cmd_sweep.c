@@ -11,7 +11,6 @@
 #include "cli.h"
 
 #include <stdint.h>
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -25,41 +24,27 @@ typedef struct sweep_args {
     cli_sim_args sim;
     const char *grid, *random, *list, *measure, *section, *format, *map, *map_measure;
     size_t n;              /* --runs: the random runs (0: not given) */
-    double seed, threads;
+    uint64_t seed, threads; /* threads 0: one per core */
     double renorm, transient; /* the lyapunov measures */
 } sweep_args;
 
 /* ---- options ---------------------------------------------------------------- */
 
-static int whole(const char *opt, const char *v, double *x, double most) {
-    char *end;
-    *x = strtod(v, &end);
-    if (end == v || *end || !(*x >= 0) || *x != floor(*x) || *x > most)
-        return cli_usage_error("%s takes a whole number from 0 to %.0f, not '%s'", opt, most, v);
-    return QD_EXIT_OK;
-}
-
-static int seed_option(const char *v, void *a) {
-    return whole("--seed", v, &((sweep_args *)a)->seed, 0x1p53);
-}
-static int threads_option(const char *v, void *a) { /* 0: one per core */
-    return whole("--threads", v, &((sweep_args *)a)->threads, QD_SWEEP_MAX_THREADS);
-}
-
 static const char *const formats[] = {"csv", "json", "hdf5", NULL};
 
 #define OPT(...) CLI_OPT(sweep_args, __VA_ARGS__)
-#define CALL(NAME, FN, META, HELP) {NAME, NULL, CLI_CALL, 0, META, HELP, NULL, FN}
 static const cli_opt opts[] = {
     OPT("--grid", CLI_TEXT, grid, "\"NAME=A:B:N, ...\"", "the runs: a grid, the first axis slowest"),
     OPT("--random", CLI_TEXT, random, "\"NAME=A:B, ...\"", "the runs: uniform in the box (--runs N)"),
     OPT("--runs", CLI_COUNT, n, "N", "the number of --random runs"),
-    CALL("--seed", seed_option, "S", "the seed of --random (default 1)"),
+    CLI_OPT_IN(sweep_args, "--seed", CLI_WHOLE, seed, "S", "the seed of --random (default 1)", 0,
+               9007199254740992),
     OPT("--list", CLI_TEXT, list, "FILE.csv", "the runs: a header of names, a row a run"),
     OPT("--measure", CLI_TEXT, measure, "\"M, ...\"",
         "final, energy_error, event, escape:EXPR>V, max:EXPR, min:EXPR, poincare-count, ..."),
     OPT("--section", CLI_TEXT, section, "COND", "the section poincare-count counts crossing"),
-    CALL("--threads", threads_option, "N", "threads (0, the default: one per core)"),
+    CLI_OPT_IN(sweep_args, "--threads", CLI_WHOLE, threads, "N", "threads (0, the default: one "
+               "per core)", 0, QD_SWEEP_MAX_THREADS),
     OPT("--renorm", CLI_NONNEG, renorm, "DT", "the lyapunov measures' renormalization interval"),
     OPT("--transient", CLI_NONNEG, transient, "T0", "the lyapunov measures' transient"),
     {"--format", NULL, CLI_CHOICE, offsetof(sweep_args, format), "F", "the rows' format", formats,
@@ -187,7 +172,7 @@ static int setup_error(cli_sim *c, const sweep_args *a, const char *where, const
 /* The sweep set up by the library (qd_sweep_setup_new), then run. */
 static int sweep(cli_sim *c, const sweep_args *a, size_t fmt) {
     qd_sweep_spec sp = {.grid = a->grid, .random = a->random, .n = a->n,
-                        .seed = (uint64_t)a->seed, .measures = a->measure,
+                        .seed = a->seed, .measures = a->measure,
                         .nevents = a->sim.events.n + a->sim.stops.n, .section = a->section != NULL,
                         .renorm = a->renorm, .transient = a->transient};
     char *csv = NULL;

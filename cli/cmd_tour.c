@@ -99,8 +99,4 @@ static int run(cli_run *c) {
     return QD_EXIT_OK;
 }
 
-int cli_cmd_tour(int argc, char **argv) {
-    static const cli_driver d = {&tour_spec, 0, 0, NULL, run, NULL};
-    cli_run r = {0};
-    return cli_drive(&d, &r, argc, argv);
-}
+CLI_COMMAND(tour, cli_run, &tour_spec, 0, 0, NULL, run, NULL)

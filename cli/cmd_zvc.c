@@ -149,8 +149,4 @@ static void run_free(cli_run *c) {
     cli_lin_free(&r->lr);
 }
 
-int cli_cmd_zvc(int argc, char **argv) {
-    static const cli_driver d = {&spec, offsetof(zvc_run, a), 0, check, run, run_free};
-    zvc_run r = {0};
-    return cli_drive(&d, &r.lr.c, argc, argv);
-}
+CLI_COMMAND(zvc, zvc_run, &spec, offsetof(zvc_run, a), 0, check, run, run_free)

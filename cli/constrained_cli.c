@@ -50,15 +50,10 @@ int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0) {
         rc = QD_EXIT_FAIL;
     } else {
         memcpy(q0, ch.pt->q, r->e->n * sizeof *q0);
-        if (!quiet) {
-            fprintf(stderr, "qdot: note: about ");
-            for (size_t j = 0; j < r->e->n; j++)
-                fprintf(stderr, "%s%s = %.12g", j ? ", " : "", qd_expr_name(r->e->q[j]), q0[j]);
-            fprintf(stderr, ", %s (%zu other equilibri%s found; choose with --about)\n",
-                    ch.pt->kind == QD_EQ_MINIMUM ? "a minimum of the potential on the constraints"
-                                                 : "the first equilibrium found",
-                    ch.others, ch.others == 1 ? "um" : "a");
-        }
+        qd_buf b = QD_BUF_INIT; /* which point, as modes says it (qd_equilibrium_choice_note) */
+        if (!quiet && qd_equilibrium_choice_note(r->e, &ch, &b) == QD_OK)
+            fprintf(stderr, "qdot: note: about %s (choose with --about)\n", qd_buf_str(&b));
+        qd_buf_free(&b);
     }
     qd_equilibrium_choice_free(&ch);
     return rc;

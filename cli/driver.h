@@ -36,6 +36,16 @@ typedef struct cli_driver {
  * Returns the first exit status that is not QD_EXIT_OK, or run's. */
 int cli_drive(const cli_driver *d, cli_run *r, int argc, char **argv);
 
+/* The entry point `int cli_cmd_NAME(int argc, char **argv)` of a command
+ * whose run state TYPE starts with its cli_run, zeroed: cli_drive with the
+ * cli_driver whose fields follow (spec, args, pos, check, run, free). */
+#define CLI_COMMAND(NAME, TYPE, ...)                                     \
+    int cli_cmd_##NAME(int argc, char **argv) {                          \
+        static const cli_driver d = {__VA_ARGS__};                       \
+        TYPE r = {0};                                                    \
+        return cli_drive(&d, (cli_run *)(void *)&r, argc, argv);         \
+    }
+
 /* What the library printed into b with status st: on error b is freed and
  * the context's error shown, else b goes to standard output (cli_emit). */
 int cli_emit_status(const qd_ctx *ctx, qd_status st, qd_buf *b, const char *what);

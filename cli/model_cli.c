@@ -4,12 +4,10 @@
  */
 #include "model_cli.h"
 
-#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
-#include "qdot/read.h"
 #include "qdot/routh.h"
 #include "state.h"
 
@@ -70,119 +68,26 @@ int cli_emit(qd_buf *b, const char *what) {
     return ok ? QD_EXIT_OK : QD_EXIT_FAIL;
 }
 
-/* A diagnostic of the combined text shown against the option's text when it
- * lies there (else at the start of it: the keyword the CLI added). */
-static void statement_diag(const qd_diag *d, const char *opt, const char *text, size_t base) {
-    qd_read_error err;
-    memset(&err, 0, sizeof err);
-    size_t len = strlen(text);
-    err.offset = d->offset >= base ? d->offset - base : 0;
-    if (err.offset > len)
-        err.offset = len;
-    err.length = d->offset >= base ? d->length : 1;
-    /* the parser's messages are short: cut at the reader's size */
-    memcpy(err.message, d->message, sizeof err.message - 1);
-    memcpy(err.hint, d->hint, sizeof err.hint - 1);
-    cli_diag_read(opt, text, &err);
-}
-
-/* The text starts with a label "NAME:". */
-static bool has_label(const char *s) {
-    while (isspace((unsigned char)*s))
-        s++;
-    if (!isalpha((unsigned char)*s) && *s != '_')
-        return false;
-    while (isalnum((unsigned char)*s) || *s == '_')
-        s++;
-    while (isspace((unsigned char)*s))
-        s++;
-    return *s == ':';
-}
-
-/* "KEYWORD [LABEL: ]TEXT" added to the model as one more statement. */
-static int add_statement(cli_model_file *mf, const char *opt, const char *keyword,
-                         const char *label, const char *text) {
-    if (strchr(text, '\n') || strchr(text, '#'))
-        return cli_usage_error("%s takes one statement on one line, without comments", opt);
-    char lab[80] = "";
-    if (!has_label(text))
-        snprintf(lab, sizeof lab, "%s: ", label);
-    qd_buf stmt = QD_BUF_INIT;
-    qd_buf_printf(&stmt, "%s %s", keyword, lab);
-    size_t base = stmt.len;
-    qd_buf_puts(&stmt, text);
+int cli_model_add_given(cli_model_file *mf, const char *opt, const char *keyword,
+                        const char *label, const char *text) {
     qd_diag d;
-    memset(&d, 0, sizeof d);
-    qd_status st = stmt.failed ? QD_ERR_NOMEM : qd_model_add_statement(mf->model, qd_buf_str(&stmt), &d);
-    qd_buf_free(&stmt);
-    if (st == QD_OK)
-        return QD_EXIT_OK;
+    qd_status st = qd_model_add_given(mf->model, keyword, label, text, &d);
     if (st == QD_ERR_NOMEM)
         return cli_out_of_memory();
-    statement_diag(&d, opt, text, base);
-    return QD_EXIT_USAGE;
+    if (st != QD_OK)
+        cli_diag_read(opt, text, &d);
+    return st == QD_OK ? QD_EXIT_OK : QD_EXIT_USAGE;
 }
 
-int cli_symmetry(cli_model_file *mf, const char *opt, const char *text,
-                 const char *label) {
-    return add_statement(mf, opt, "symmetry", label, text);
-}
-
-int cli_integral(cli_model_file *mf, const char *opt, const char *text,
-                 const char *label) {
-    return add_statement(mf, opt, "integral", label, text);
-}
-
-/* ---- --ignore ----------------------------------------------------------------- */
-
-static int ignore_item(qd_ctx *ctx, const qd_model *m, const char *list, const char *s,
-                       size_t len, const qd_expr **ign, size_t cap, size_t *n) {
-    char name[128];
-    while (len && (*s == ' ' || s[len - 1] == ' '))
-        s += *s == ' ', len -= 1;
-    if (!len || len >= sizeof name || *n == cap)
-        return cli_usage_error("--ignore takes a comma-separated list of coordinates, not '%s'",
-                               list);
-    memcpy(name, s, len);
-    name[len] = '\0';
-    const qd_expr *c = qd_routh_lookup(ctx, m, name);
-    if (!c)
+int cli_ignore(qd_ctx *ctx, const cli_model_file *mf, const qd_eom *e, const char *list,
+               const qd_expr **ign, size_t cap, size_t *n) {
+    const char *where;
+    qd_status st = qd_routh_ignore_read(ctx, mf->model, e, list, ign, cap, n, &where);
+    if (st == QD_OK || st != QD_ERR_ARG)
+        return st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(ctx);
+    if (!where)
         return cli_usage_error("--ignore: %s", qd_ctx_message(ctx));
-    for (size_t k = 0; k < *n; k++)
-        if (ign[k] == c)
-            return cli_usage_error("--ignore: %s is listed twice", name);
-    ign[(*n)++] = c;
-    return QD_EXIT_OK;
-}
-
-int cli_ignore_parse(qd_ctx *ctx, const qd_model *m, const char *list, const qd_expr **ign,
-                     size_t cap, size_t *n) {
-    const char *s = list;
-    int rc = QD_EXIT_OK;
-    *n = 0;
-    while (rc == QD_EXIT_OK) {
-        const char *comma = strchr(s, ',');
-        rc = ignore_item(ctx, m, list, s, comma ? (size_t)(comma - s) : strlen(s), ign, cap, n);
-        if (!comma)
-            break;
-        s = comma + 1;
-    }
-    return rc;
-}
-
-int cli_ignore_check(qd_ctx *ctx, const cli_model_file *mf, const qd_eom *e,
-                     const qd_expr *const *ign, size_t n) {
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < e->n; j++) {
-            const char *why = NULL, *where = NULL;
-            if (e->q[j] != ign[i] || !(where = qd_routh_not_cyclic(ctx, mf->model, e, j, &why)))
-                continue;
-            char msg[512];
-            snprintf(msg, sizeof msg, "%s cannot be ignored: %s", qd_expr_name(ign[i]), why);
-            cli_model_file_error(mf, where, msg,
-                                 "only cyclic coordinates can be ignored: absent from L, with no "
-                                 "generalized force and no dissipation");
-            return QD_EXIT_USAGE;
-        }
-    return QD_EXIT_OK;
+    cli_model_file_error(mf, where, qd_ctx_message(ctx), "only cyclic coordinates can be "
+                         "ignored: absent from L, with no generalized force and no dissipation");
+    return QD_EXIT_USAGE;
 }

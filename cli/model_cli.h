@@ -43,25 +43,17 @@ int cli_field_eom(qd_ctx *ctx, cli_model_file *mf, const char *file, size_t nset
 int cli_field_modes(qd_ctx *ctx, cli_model_file *mf, const char *file, size_t nsets,
                     const char *const *sets, size_t count, double tol, bool json);
 
-/* --ignore LIST (routh, orbit): the comma-separated coordinates into ign
- * (at most cap), each once; prints its own errors. */
-int cli_ignore_parse(qd_ctx *ctx, const qd_model *m, const char *list, const qd_expr **ign,
-                     size_t cap, size_t *n);
-/* Every coordinate of ign is cyclic in e; else the error at the statement
- * that makes it not, and QD_EXIT_USAGE. */
-int cli_ignore_check(qd_ctx *ctx, const cli_model_file *mf, const qd_eom *e,
-                     const qd_expr *const *ign, size_t n);
+/* --ignore LIST (routh, orbit; qd_routh_ignore_read): the coordinates into
+ * ign (at most cap), each once, and each cyclic in e when e is given; a
+ * coordinate that is not is shown at the statement that makes it not. */
+int cli_ignore(qd_ctx *ctx, const cli_model_file *mf, const qd_eom *e, const char *list,
+               const qd_expr **ign, size_t cap, size_t *n);
 
-/* A symmetry or an integral given on the command line (--symmetry, --integral:
- * what follows the keyword of the statement), added to the model as the
- * statement "KEYWORD [label: ]TEXT" (qd_model_add_statement), so the model
- * language's own parser checks it as it would in the file; errors point into
- * text under the option's name opt.  label names it when text has no
- * "NAME:" of its own.  It is then the model's last symmetry or integral. */
-int cli_symmetry(cli_model_file *mf, const char *opt, const char *text,
-                 const char *label);
-int cli_integral(cli_model_file *mf, const char *opt, const char *text,
-                 const char *label);
-
+/* text given with the option opt added to the model as statements KEYWORD
+ * (qd_model_add_given: label, for --symmetry and --integral, names it when
+ * text has no "NAME:"; NULL: an item each, --prescribe); an error is shown
+ * in text under opt. */
+int cli_model_add_given(cli_model_file *mf, const char *opt, const char *keyword,
+                        const char *label, const char *text);
 
 #endif

@@ -110,6 +110,19 @@ static int read_text(const char *path, cli_model_file *mf) {
     return cli_read_text(path, "a model file", &mf->text, &mf->len);
 }
 
+/* The parser's refusal d of mf's text (a model's or a field's). */
+static int parse_error(const qd_ctx *ctx, const cli_model_file *mf, const qd_diag *d) {
+    if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+        cli_diag_error("out of memory while reading '%s'", mf->path);
+        return QD_EXIT_FAIL;
+    }
+    if (!d->located) /* not in the text: a value given on the command line */
+        cli_diag_error("--set: %s", d->message);
+    else
+        cli_diag_show(mf->path, mf->text, d);
+    return QD_EXIT_USAGE;
+}
+
 int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts *opts,
                              cli_model_file *mf) {
     *mf = (cli_model_file){0};
@@ -121,17 +134,7 @@ int cli_model_file_load_opts(qd_ctx *ctx, const char *path, const qd_model_opts 
     mf->model = qd_model_parse_opts(ctx, mf->text, opts, &d);
     if (mf->model && qd_model_independent(mf->model)) /* print x, not t, everywhere */
         qd_print_set_time_name(ctx, qd_model_independent(mf->model));
-    if (mf->model)
-        return QD_EXIT_OK;
-    if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory while reading '%s'", mf->path);
-        return QD_EXIT_FAIL;
-    }
-    if (!d.located) /* not in the text: a value given on the command line */
-        cli_diag_error("--set: %s", d.message);
-    else
-        cli_diag_show(mf->path, mf->text, &d);
-    return QD_EXIT_USAGE;
+    return mf->model ? QD_EXIT_OK : parse_error(ctx, mf, &d);
 }
 
 bool cli_model_file_is_field(const char *path) {
@@ -159,17 +162,7 @@ int cli_field_file_load(qd_ctx *ctx, const char *path, const qd_model_opts *opts
     qd_diag d;
     memset(&d, 0, sizeof d);
     mf->field = qd_field_parse(ctx, mf->text, opts, &d);
-    if (mf->field)
-        return QD_EXIT_OK;
-    if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
-        cli_diag_error("out of memory while reading '%s'", mf->path);
-        return QD_EXIT_FAIL;
-    }
-    if (!d.located)
-        cli_diag_error("--set: %s", d.message);
-    else
-        cli_diag_show(mf->path, mf->text, &d);
-    return QD_EXIT_USAGE;
+    return mf->field ? QD_EXIT_OK : parse_error(ctx, mf, &d);
 }
 
 int cli_model_file_load(qd_ctx *ctx, const char *path, cli_model_file *mf) {

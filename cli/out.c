@@ -19,33 +19,21 @@ static bool is_dir(const char *path) {
     return stat(path, &sb) == 0 && S_ISDIR(sb.st_mode);
 }
 
-FILE *cli_out_open(const char *path, int *rc) {
-    if (is_dir(path)) {
-        cli_diag_error("cannot write %s: is a directory", path);
-        *rc = QD_EXIT_USAGE;
-        return NULL;
-    }
-    FILE *f = fopen(path, "w");
+/* path opened with mode "w" or "r", or why not ("cannot write ...") and
+ * *rc the usage error. */
+static FILE *open_file(const char *path, const char *mode, int *rc) {
+    const char *verb = mode[0] == 'w' ? "write" : "read";
+    FILE *f = is_dir(path) ? NULL : fopen(path, mode);
     if (!f) {
-        cli_diag_error("cannot write %s: %s", path, strerror(errno));
+        cli_diag_error("cannot %s %s: %s", verb, path, is_dir(path) ? "is a directory"
+                                                                    : strerror(errno));
         *rc = QD_EXIT_USAGE;
     }
     return f;
 }
 
-FILE *cli_in_open(const char *path, int *rc) {
-    if (is_dir(path)) {
-        cli_diag_error("cannot read %s: is a directory", path);
-        *rc = QD_EXIT_USAGE;
-        return NULL;
-    }
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        cli_diag_error("cannot read %s: %s", path, strerror(errno));
-        *rc = QD_EXIT_USAGE;
-    }
-    return f;
-}
+FILE *cli_out_open(const char *path, int *rc) { return open_file(path, "w", rc); }
+FILE *cli_in_open(const char *path, int *rc) { return open_file(path, "r", rc); }
 
 bool cli_out_write(FILE *f, const void *data, size_t len, int *err) {
     errno = 0;

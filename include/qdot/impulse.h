@@ -151,6 +151,18 @@ QD_API qd_status qd_impulse_solve(qd_ctx *ctx, const qd_model *m, const qd_impul
                                   qd_impulse *out);
 QD_API void qd_impulse_free(qd_impulse *r);
 
+/* The state just before, for qd_impulse_opts, as `qdot impulse --at`
+ * takes it: each coordinate and velocity the model's `initial` as written
+ * (qd_model_initial_definition, exact in the parameters), overridden by the
+ * items of at ("q=V, q'=V, t=V", read by qd_state_read and kept exact;
+ * parameters refused; at may be NULL), 0 where neither names it; *t the
+ * time at gives, else NULL.  q and qd have qd_model_ncoords(m) entries
+ * each; the expressions are the context's.  QD_OK; else the reader's error
+ * located in at; QD_ERR_NOMEM. */
+QD_API qd_status qd_impulse_state_read(qd_ctx *ctx, const qd_model *m, const char *at,
+                                       const qd_expr **q, const qd_expr **qd,
+                                       const qd_expr **t);
+
 #ifdef __cplusplus
 }
 #endif
@@ -159,6 +171,6 @@ QD_API void qd_impulse_free(qd_impulse *r);
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_impulse_solve (opts). An array whose
- * count is 0 may be NULL. */
+ * documented at the function, for: qd_impulse_solve (opts);
+ * qd_impulse_state_read (at). An array whose count is 0 may be NULL. */
 #endif

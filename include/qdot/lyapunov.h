@@ -303,6 +303,20 @@ QD_API qd_status qd_lyap_setup_run(qd_ctx *ctx, const struct qd_sim_setup *set,
                                    const qd_lyap_opts *lo, qd_lyap_result *r);
 QD_API void qd_lyap_result_free(qd_lyap_result *r); /* NULL is fine */
 
+/* The flow Jacobian of set's run from opts (qd_sim_setup_options'), as
+ * `qdot simulate --variational` takes it: the variational equations of
+ * set's Lagrange equations (m the model set was made from) run with
+ * qd_flow_sim_opts(opts), written to *used (for qd_flow_json); with write
+ * given, the rows as CSV too (qd_flow_run_csv at opts' spacing).  *f filled
+ * (qd_flow_free, also after a failure).  QD_ERR_ARG naming the field
+ * "no_speeds" (qd_diag.name) for a set not in Lagrange's form (a model
+ * given by H, or in speeds); else the errors of qd_lyap_new and
+ * qd_flow_run or qd_flow_run_csv. */
+QD_API qd_status qd_flow_setup_run(qd_ctx *ctx, const struct qd_sim_setup *set,
+                                   const qd_model *m, const qd_sim_opts *opts,
+                                   qd_sim_write_fn write, void *data, qd_sim_opts *used,
+                                   qd_flow *f);
+
 #ifdef __cplusplus
 }
 #endif
@@ -313,7 +327,7 @@ QD_API void qd_lyap_result_free(qd_lyap_result *r); /* NULL is fine */
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
  * (err, stats); qd_flow_run (fo); qd_flow_print (prefix); qd_lyap_print,
- * qd_lyap_json (r->err); qd_lyap_setup_run (lo); lo->progress and
- * lo->data; qd_poincare_run's
+ * qd_lyap_json (r->err); qd_lyap_setup_run (lo); lo->progress and lo->data;
+ * qd_flow_setup_run (write, data); qd_poincare_run's
  * o->progress and o->data. An array whose count is 0 may be NULL. */
 #endif

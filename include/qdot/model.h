@@ -90,6 +90,18 @@ QD_API qd_status qd_model_opts_for(qd_model_opts *opts, const char *derivation);
  * with *diag located in text (line 1 is its first line) and the model as it
  * was, or QD_ERR_NOMEM. */
 QD_API qd_status qd_model_add_statement(qd_model *m, const char *text, qd_diag *diag);
+/* Add text given apart from the model's text (a command-line option, a
+ * Python argument) as statements of the language: with label non-NULL one
+ * statement "KEYWORD LABEL: TEXT", or "KEYWORD TEXT" when text starts with
+ * its own "NAME:" (`symmetry`, `integral`); with label NULL a statement
+ * "KEYWORD ITEM" for each item of the comma-separated text, commas inside
+ * brackets not splitting (`prescribe`).  text is one line without comments.
+ * QD_OK; else *diag (may be NULL) is located in text itself, not in the
+ * statement built around it: QD_ERR_PARSE for what the language refuses,
+ * QD_ERR_ARG for a second line, a comment or an empty item; QD_ERR_NOMEM.
+ * The items before a failing one stay added. */
+QD_API qd_status qd_model_add_given(qd_model *m, const char *keyword, const char *label,
+                                    const char *text, qd_diag *diag);
 QD_API void qd_model_free(qd_model *m);
 /* The context m was read in, where its expressions live (m's, not the
  * caller's to free); NULL for NULL. */
@@ -392,5 +404,5 @@ QD_API qd_status qd_model_number_field(qd_ctx *ctx, const qd_model *m, const cha
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_model_parse (diag);
  * qd_model_parse_opts (diag, opts); qd_model_add_statement (diag);
- * qd_model_where (where). An array whose count is 0 may be NULL. */
+ * qd_model_add_given (label, diag); qd_model_where (where). An array whose count is 0 may be NULL. */
 #endif

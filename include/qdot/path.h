@@ -167,6 +167,33 @@ QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom 
 QD_API qd_status qd_path_end_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                   const char *text, double *q, double *t, bool *is_free);
 
+/* The arrays of a problem read by qd_path_ends_read (free with
+ * qd_path_ends_free; q1, guess and free1 lie in q0's and free0's blocks). */
+typedef struct qd_path_ends {
+    double *q0, *q1;      /* n each */
+    double *guess;        /* nguess rows of n initial velocities */
+    bool *free0, *free1;  /* n each */
+} qd_path_ends;
+
+/* The ends and guesses of qd_path_find's problem from text, as `qdot path`
+ * and Python's Model.path take them: from and to as qd_path_end_read reads
+ * them (t = 0 at the start when not given; the end's time is required
+ * unless energy, the problem of qd_path_find_energy, which takes no free
+ * ends), nguess texts "q'=VALUE, ..." each a row of starting velocities (a
+ * velocity not named 0).  A free coordinate starts from the other end's
+ * value (0 when free at both).  Fills *ends and opts' t0, t1, q0, q1,
+ * free0, free1 (NULL when none is free), nguess and guess; the rest of
+ * opts is left as given.  QD_OK; else QD_ERR_ARG (or the reader's error)
+ * with the error record naming the field "from", "to", "energy" or
+ * "guess" (qd_diag.name; for a guess, index is which), located in that
+ * text when the error is in it; QD_ERR_NOMEM.  *ends is the caller's to
+ * free, also after an error. */
+QD_API qd_status qd_path_ends_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                   const char *from, const char *to, size_t nguess,
+                                   const char *const *guess, bool energy, qd_path_ends *ends,
+                                   qd_path_opts *opts);
+QD_API void qd_path_ends_free(qd_path_ends *ends); /* NULL is fine */
+
 /* A trial path for qd_path_action_of, "x = EXPR, y = EXPR": every
  * coordinate of m once (q has qd_model_ncoords(m) entries, in m's order),
  * each an expression in t, the parameters and other names m knows.  A name

@@ -189,6 +189,18 @@ QD_API const qd_expr *qd_routh_lookup(qd_ctx *ctx, const qd_model *m, const char
 QD_API const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j,
                                 const char **why);
 
+/* The coordinates named in list, comma-separated ("theta, phi"), into
+ * ign[0, cap) and their count into *n: each a coordinate of m
+ * (qd_routh_lookup), none twice, and, when e is given, each cyclic in e
+ * (qd_routh_not_cyclic).  QD_OK; else QD_ERR_ARG with the context's message
+ * ("phi is listed twice", "r cannot be ignored: it appears in the kinetic
+ * energy") and, for a coordinate that is not cyclic, *where (where may be
+ * NULL) the statement to point at, as qd_routh_not_cyclic returns it (NULL
+ * otherwise); QD_ERR_NOMEM.  ign's entries are borrowed from m. */
+QD_API qd_status qd_routh_ignore_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
+                                      const char *list, const qd_expr **ign, size_t cap,
+                                      size_t *n, const char **where);
+
 #ifdef __cplusplus
 }
 #endif
@@ -198,6 +210,6 @@ QD_API const char *qd_routh_not_cyclic(qd_ctx *ctx, const qd_model *m, const qd_
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_routh_derive_opts (opts); qd_routh_print
- * (model_name); qd_routh_json (model_name). An array
- * whose count is 0 may be NULL. */
+ * (model_name); qd_routh_json (model_name); qd_routh_ignore_read (e, where).
+ * An array whose count is 0 may be NULL. */
 #endif

@@ -10,7 +10,8 @@ import json as _json
 
 import numpy as np
 
-from ._core import Core, Error, ModelError, NumericalError, format_diag, name_of
+from ._core import (ArgumentError, Core, Error, ModelError, NumericalError, format_diag,
+                    name_of)
 from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
                    QD_FMT_TEXT)
 from . import sim as _sim
@@ -489,37 +490,28 @@ class Model:
             lib.qd_ham_point_free(pt)
             lib.qd_ham_free(h)
 
-    def _lookup(self, names, what, core=None):
-        """The coordinate symbols of names (a list, or "a,b" text), each
-        looked up by the library (qd_routh_lookup); ValueError with its
-        message ("did you mean") for one that is not a coordinate."""
+    def _lookup(self, names, what, core=None, cyclic=False):
+        """The coordinate symbols of names (a list, or "a,b" text), read by
+        the library as --ignore is (qd_routh_ignore_read: each a coordinate,
+        none twice, and with cyclic=True each cyclic); ValueError with its
+        message ("did you mean", "r cannot be ignored: ...")."""
         core = core or self._core
-        if isinstance(names, str):
-            names = [x.strip() for x in names.split(",")]
-        if not names or not all(isinstance(x, str) and x for x in names):
-            raise ValueError("%s: name coordinates (\"phi\" or [\"phi\", ...]), not %r"
-                             % (what, names))
-        syms = []
-        for name in names:
-            q = lib.qd_routh_lookup(core.ctx, core.model, name.encode())
-            if not q:
-                raise ValueError("%s: %s" % (what, core.error().message))
-            syms.append(q)
-        return syms
+        if not isinstance(names, str):
+            if not names or not all(isinstance(x, str) and x for x in names):
+                raise ValueError("%s: name coordinates (\"phi\" or [\"phi\", ...]), not %r"
+                                 % (what, names))
+            names = ", ".join(names)
+        cap = lib.qd_model_ncoords(core.model)
+        syms, n = ffi.new("const qd_expr *[]", cap or 1), ffi.new("size_t *")
+        e = core.eom_ptr() if cyclic else ffi.NULL
+        if lib.qd_routh_ignore_read(core.ctx, core.model, e, names.encode(), syms, cap, n,
+                                    ffi.NULL) != lib.QD_OK:
+            raise ValueError("%s: %s" % (what, core.error().message))
+        return [syms[i] for i in range(n[0])]
 
     def _ignored(self, ignore, what, core=None):
-        """The coordinate symbols of ignore (see _lookup), each checked
-        cyclic (qd_routh_not_cyclic); ValueError with the library's reason."""
-        core = core or self._core
-        syms = self._lookup(ignore, what, core)
-        e = core.eom()
-        why = ffi.new("const char **")
-        for q in syms:
-            for j in range(e.n):
-                if e.q[j] == q and lib.qd_routh_not_cyclic(core.ctx, core.model, e, j, why):
-                    raise ValueError("%s: %s cannot be ignored: %s"
-                                     % (what, name_of(q), cstr(why[0])))
-        return syms
+        """The coordinate symbols of ignore, each cyclic (see _lookup)."""
+        return self._lookup(ignore, what, core, cyclic=True)
 
     def routh(self, ignore):
         """Routh's reduction (`qdot routh FILE --ignore Q[,Q...]`, qd_routh_json):
@@ -801,7 +793,7 @@ class Model:
         finally:
             lib.qd_zvc_picture_free(pic)
 
-    def impulse(self, at=None):
+    def impulse(self, at=None, prescribe=None):
         """The motion just after a blow, a sudden constraint or a collision
         (`qdot impulse`, qd_impulse_solve and qd_render_impulse): a
         qdot.Output with velocities_before, velocities_after,
@@ -809,29 +801,27 @@ class Model:
         impulsive_reactions, kinetic_energy_before, kinetic_energy_after,
         energy_lost, exact (the closed forms in the parameters), theorems
         (carnot, bertrand, thomson) and collision.  The state just before
-        is the model's `initial` as written; at={name: value} (coordinates,
-        velocities "NAME'", t; numbers or exact text "pi/6") changes it, as
-        --at.  (--prescribe is not here yet.)"""
+        is the model's `initial` as written; at={name: value} or "th=pi/2"
+        (coordinates, velocities "NAME'", t; numbers or exact text "pi/6")
+        changes it, as --at (qd_impulse_state_read).  prescribe: velocities
+        held just after, "x' = 1, up: y' = 0" or a list of such, as
+        --prescribe (Thomson's problem; qd_model_add_given)."""
         core = self._core
+        if prescribe:  # added to a parse of its own: the model keeps its statements
+            core = Core(self._core.text, self._core.file, list(self._sets.items()), "impulse")
+            for text in [prescribe] if isinstance(prescribe, str) else prescribe:
+                d = new("qd_diag")
+                if lib.qd_model_add_given(core.model, b"prescribe", ffi.NULL,
+                                          text.encode(), d) != lib.QD_OK:
+                    lib.qd_ctx_clear_error(core.ctx)
+                    raise ArgumentError(format_diag(d, "prescribe", text.encode()), d.status)
         n = lib.qd_model_ncoords(core.model)
-        zero = lib.qd_int(core.ctx, 0)
-        q0 = [lib.qd_model_initial_definition(core.model, j, 0) or zero for j in range(n)]
-        v0 = [lib.qd_model_initial_definition(core.model, j, 1) or zero for j in range(n)]
-        t0 = ffi.NULL
-        names = self.coordinates
-        for name, value in (at or {}).items():
-            x = _control._point_value(core, name, value)
-            if name in names:
-                q0[names.index(name)] = x
-            elif name.endswith("'") and name[:-1] in names:
-                v0[names.index(name[:-1])] = x
-            elif name == cstr(lib.qd_print_time_name(core.ctx)):
-                t0 = x
-            else:
-                raise ValueError("impulse: at names a coordinate, a velocity NAME' or t, not "
-                                 "'%s'" % name)
-        cq, cv = exprs(q0), exprs(v0)
-        opts = new("qd_impulse_opts", {"q": cq, "qd": cv, "t": t0, "exact": True,
+        q0, v0 = ffi.new("const qd_expr *[]", n or 1), ffi.new("const qd_expr *[]", n or 1)
+        t0 = ffi.new("const qd_expr **")
+        at_text = _commands.text_arg(at, "at") if at else ffi.NULL
+        if lib.qd_impulse_state_read(core.ctx, core.model, at_text, q0, v0, t0) != lib.QD_OK:
+            raise core.error(cls=ArgumentError)
+        opts = new("qd_impulse_opts", {"q": q0, "qd": v0, "t": t0[0], "exact": True,
                                        "max_ops": 0})  # as `qdot impulse`
         res = new("qd_impulse")
         try:
@@ -878,7 +868,7 @@ class Model:
         finally:
             lib.qd_scatter_free(s_)
 
-    def path(self, start, end, energy=None, all=False, segments=0):
+    def path(self, start, end, energy=None, all=False, segments=0, guess=None):
         """Stationary paths of the action between two configurations, with
         their kinetic foci (`qdot path FILE --from ... --to ...`,
         qd_path_end_read, qd_path_find or qd_path_find_energy, qd_path_json):
@@ -887,29 +877,25 @@ class Model:
         kinetic_foci_multiplicity, minimum, examined).  start, end: "q=VALUE,
         ..., t=T" or {name: value}, as --from and --to (the end's time unless
         energy is given: Maupertuis' paths of that energy); all=True is
-        --all; segments as --segments.  Free ends are not here yet."""
+        --all; segments as --segments; a free end "y=free" as in --from and --to;
+        guess a list of starting velocities ("x'=1" or {name: value}) as --guess
+        (qd_path_ends_read reads them all, as for the command line)."""
         core = self._core
         e = core.eom_ptr()
-        n = e.n
         E = new("double")
         if energy is not None:
             core.check(lib.qd_model_number(core.ctx, core.model,
                                            _commands.text_arg(energy, "energy"), E))
-        q0, q1 = ffi.new("double[]", n + 1), ffi.new("double[]", n + 1)
-        t0, t1 = new("double", 0.0), new("double", float("nan"))
-        f0, f1 = ffi.new("bool[]", n + 1), ffi.new("bool[]", n + 1)
-        for what, text, q, t, fr in (("from", start, q0, t0, f0), ("to", end, q1, t1, f1)):
-            core.check(lib.qd_path_end_read(core.ctx, core.model, e,
-                                            _commands.text_arg(text, what), q, t, fr))
-            if any(fr[j] for j in range(n)):
-                raise ValueError("path: free ends are not in the Python package yet")
-        if energy is None and not t1[0] > t0[0]:
-            raise ValueError("path: the end needs its time t=T1 after the start's (or give "
-                             "energy)")
-        o = new("qd_path_opts", {"t0": t0[0], "t1": t1[0], "q0": q0, "q1": q1,
-                                 "all": bool(all), "segments": int(segments)})
+        ends = new("qd_path_ends")
+        keep = [_commands.text_arg(g, "guess") for g in guess or []]
+        gs = ffi.new("const char *[]", keep) if keep else []
+        o = new("qd_path_opts", {"all": bool(all), "segments": int(segments)})
         ps = new("qd_path_set")
         try:
+            core.check(lib.qd_path_ends_read(
+                core.ctx, core.model, e, _commands.text_arg(start, "from"),
+                _commands.text_arg(end, "to"), len(gs), gs or ffi.NULL, energy is not None,
+                ends, o))
             if energy is None:
                 core.check(lib.qd_path_find(core.ctx, core.model, e, o, ps), cls=NumericalError)
             else:
@@ -919,6 +905,7 @@ class Model:
                 core.ctx, ps, core.model, e, buf))
         finally:
             lib.qd_path_set_free(ps)
+            lib.qd_path_ends_free(ends)
 
     def integrals(self, search=True):
         """Integrals of motion (`qdot integrals`, qd_integrals_json): a

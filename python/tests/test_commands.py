@@ -368,6 +368,18 @@ def test_impulse_dumbbell():
     assert out._repr_latex_().startswith("$$")
     with pytest.raises(ValueError):
         m.impulse(at={"z": 1})
+    # Bertrand (Britannica 1911 "Dynamics" B03, examples/chain_struck.qd): the
+    # joint made rigid takes the energy from 7 J^2/(4 m) to J^2/m, and with B
+    # held it is 3 J^2/(2 m); the model itself keeps no prescription
+    chain = os.path.join(EXAMPLES, "chain_struck.qd")
+    c = qdot.Model.load(chain)
+    assert c.impulse(prescribe="th1' = th2'").kinetic_energy_after == pytest.approx(1.0)
+    held = c.impulse(prescribe=["x' = 0, y' = 0"])
+    assert held.kinetic_energy_after == pytest.approx(1.5)
+    same(held.json, cli("impulse", chain, "--prescribe", "x' = 0, y' = 0"))
+    assert c.impulse().kinetic_energy_after == pytest.approx(7 / 4)
+    with pytest.raises(ValueError):
+        c.impulse(prescribe="x' = , y' = 0")
 
 
 # ---- scatter -----------------------------------------------------------------
@@ -416,6 +428,13 @@ def test_path_free_particle_and_pendulum(tmp_path):
     same(pp.json, cli("path", pend, "--from", "th=0.1", "--to", "th=0.2, t=1.5"))
     with pytest.raises(ValueError):
         m.path("x=0", "x=1")        # no end time, no energy
+    # a free end: m x'(1) = 0 there (the natural boundary condition, Gelfand &
+    # Fomin sec. 6), so the free particle stays where it starts, at no action
+    fr = m.path("x=0.5, t=0", "x=free, t=1", guess=["x'=3"])
+    assert fr.paths[0].initial_velocities["x'"] == pytest.approx(0, abs=1e-9)
+    assert fr.paths[0].action == pytest.approx(0, abs=1e-9)
+    same(fr.json, cli("path", path, "--from", "x=0.5, t=0", "--to", "x=free, t=1", "--guess",
+                      "x'=3"))
 
 
 # ---- lqr ---------------------------------------------------------------------

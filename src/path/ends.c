@@ -160,3 +160,92 @@ qd_status qd_path_trial_read(qd_ctx *ctx, const qd_model *m, const char *text,
         }
     return QD_OK;
 }
+
+/* ---- the whole problem's ends (qd_path_ends_read) ------------------------------ */
+
+/* The error just recorded is about the text of field (its item index),
+ * where it was located. */
+static qd_status about(qd_ctx *ctx, const char *field, size_t index) {
+    const qd_diag *d = qd_ctx_diag(ctx);
+    qd_ctx_error_about(ctx, d->subject, index, field, d->reason, NULL);
+    return qd_ctx_status(ctx);
+}
+
+static qd_status refuse(qd_ctx *ctx, const char *field, const char *msg, double a, double b) {
+    qd_ctx_error(ctx, QD_ERR_ARG, msg, a, b);
+    return about(ctx, field, 0);
+}
+
+/* Guess k: the velocities of text read over a state at rest. */
+static qd_status guess_row(qd_ctx *ctx, const qd_model *m, size_t n, const char *text,
+                           double *row) {
+    qd_state st = {0};
+    qd_status s = qd_state_init(ctx, m, &st);
+    if (s == QD_OK)
+        s = qd_state_read(ctx, m, &st, text, NULL);
+    if (s == QD_OK)
+        memcpy(row, st.vals + n, n * sizeof *row);
+    qd_state_free(&st);
+    return s;
+}
+
+qd_status qd_path_ends_read(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *from,
+                            const char *to, size_t nguess, const char *const *guess,
+                            bool energy, qd_path_ends *ends, qd_path_opts *opts) {
+    if (ends)
+        *ends = (qd_path_ends){0};
+    QD_ARGS_CTX(ctx, ctx && m && e && from && to && (guess || !nguess) && ends && opts);
+    size_t n = e->n;
+    ends->q0 = calloc(2 * n + nguess * n + 1, sizeof *ends->q0);
+    ends->free0 = calloc(2 * n + 1, sizeof *ends->free0);
+    if (!ends->q0 || !ends->free0) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory reading a path's ends");
+        return QD_ERR_NOMEM;
+    }
+    ends->q1 = ends->q0 + n;
+    ends->guess = ends->q1 + n;
+    ends->free1 = ends->free0 + n;
+    double t0 = 0, t1 = NAN;
+    if (qd_path_end_read(ctx, m, e, from, ends->q0, &t0, ends->free0) != QD_OK)
+        return about(ctx, "from", 0);
+    if (qd_path_end_read(ctx, m, e, to, ends->q1, &t1, ends->free1) != QD_OK)
+        return about(ctx, "to", 0);
+    bool any_free = false;
+    for (size_t j = 0; j < 2 * n; j++)
+        any_free = any_free || ends->free0[j];
+    if (energy && any_free)
+        return refuse(ctx, "energy", "free ends need the end times, not an energy", 0, 0);
+    if (!energy && isnan(t1)) {
+        const char *x = qd_model_independent(m) ? qd_model_independent(m) : "t";
+        qd_ctx_error(ctx, QD_ERR_ARG, "the end needs its time %s=T1 (or an energy)", x);
+        return about(ctx, "to", 0);
+    }
+    for (size_t j = 0; j < n; j++) { /* a free coordinate starts from the other end's value */
+        if (ends->free0[j])
+            ends->q0[j] = ends->free1[j] ? 0 : ends->q1[j];
+        if (ends->free1[j])
+            ends->q1[j] = ends->free0[j] ? 0 : ends->q0[j];
+    }
+    for (size_t k = 0; k < nguess; k++)
+        if (guess_row(ctx, m, n, guess[k], ends->guess + k * n) != QD_OK)
+            return about(ctx, "guess", k);
+    if (!energy && !(t1 > t0))
+        return refuse(ctx, "to", "the end time %g is not after the start time %g", t1, t0);
+    opts->t0 = t0;
+    opts->t1 = t1;
+    opts->q0 = ends->q0;
+    opts->q1 = ends->q1;
+    opts->nguess = nguess;
+    opts->guess = nguess ? ends->guess : NULL;
+    opts->free0 = any_free ? ends->free0 : NULL;
+    opts->free1 = any_free ? ends->free1 : NULL;
+    return QD_OK;
+}
+
+void qd_path_ends_free(qd_path_ends *ends) {
+    if (!ends)
+        return;
+    free(ends->q0);
+    free(ends->free0);
+    *ends = (qd_path_ends){0};
+}

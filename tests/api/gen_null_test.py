@@ -24,6 +24,8 @@ import sys
 # Arguments documented as accepting NULL with a meaning (defaults, "not
 # wanted"): the call with that one NULL is not made, since it may succeed.
 NULLABLE = {
+    'qd_impulse_state_read': {'at'},
+    'qd_flow_setup_run': {'write', 'data'},
     'qd_action_at': {'opts'},
     'qd_action_of_sep': {'opts'},
     'qd_canonical_check': {'t'},
@@ -68,6 +70,7 @@ NULLABLE = {
     # issue 31's renderers (w31-cmds-a): the model's name, a given force, the find's options
     'qd_routh_print': {'model_name'},
     'qd_routh_json': {'model_name'},
+    'qd_routh_ignore_read': {'e', 'where'},
     'qd_hj_print': {'model_name'},
     'qd_hj_json': {'model_name'},
     'qd_integrals_print': {'g', 'model_name'},
@@ -90,6 +93,7 @@ NULLABLE = {
     'qd_scene_analyse': {'ctx', 'skip'},
     'qd_lyap_run_stats': {'err', 'stats'},
     'qd_model_add_statement': {'diag'},
+    'qd_model_add_given': {'label', 'diag'},
     'qd_model_parse': {'diag'},
     'qd_model_parse_opts': {'diag', 'opts'},
     'qd_model_where': {'where'},

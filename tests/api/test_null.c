@@ -1963,6 +1963,22 @@ static void null_impulse(void **state)
     /* r NULL */
     qd_impulse_free(NULL);
     reset(&F);
+    /* ---- qd_impulse_state_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(NULL, F.model, "q", (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, NULL, "q", (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, F.model, "q", NULL, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* qd NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, F.model, "q", (const qd_expr * *)F.e, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_impulse_state_read(F.ctx, F.model, "q", (const qd_expr * *)F.e, (const qd_expr * *)F.e, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2418,6 +2434,16 @@ static void null_lyapunov(void **state)
     /* r NULL */
     qd_lyap_result_free(NULL);
     reset(&F);
+    /* ---- qd_flow_setup_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_setup_run(NULL, NULL, F.model, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_setup_run(F.ctx, NULL, F.model, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_flow_setup_run(F.ctx, NULL, NULL, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2657,6 +2683,16 @@ static void null_model(void **state)
     reset(&F);
     /* text NULL */
     assert_int_equal(QD_ERR_ARG, qd_model_add_statement(F.model, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ---- qd_model_add_given */
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_given(NULL, "q", "q", "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* keyword NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_given(F.model, NULL, "q", "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_model_add_given(F.model, "q", "q", NULL, (qd_diag *)(void *)F.blob));
     reset(&F);
     /* ---- qd_model_free */
     /* m NULL */
@@ -3680,6 +3716,32 @@ static void null_path(void **state)
     /* is_free NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_end_read(F.ctx, F.model, F.eom, "q", F.d, F.d, NULL));
     reset(&F);
+    /* ---- qd_path_ends_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(NULL, F.model, F.eom, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, NULL, F.eom, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, NULL, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* from NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, NULL, "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* to NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, "q", NULL, 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* guess NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, "q", "q", 1, NULL, false, NULL, NULL));
+    reset(&F);
+    /* ends NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_ends_read(F.ctx, F.model, F.eom, "q", "q", 1, (const char * const *)F.names, false, NULL, NULL));
+    reset(&F);
+    /* ---- qd_path_ends_free */
+    /* ends NULL */
+    qd_path_ends_free(NULL);
+    reset(&F);
     /* ---- qd_path_trial_read */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_trial_read(NULL, F.model, "q", (const qd_expr * *)F.e));
@@ -4680,6 +4742,22 @@ static void null_routh(void **state)
     reset(&F);
     /* why NULL */
     assert_null(qd_routh_not_cyclic(F.ctx, F.model, F.eom, 1, NULL));
+    reset(&F);
+    /* ---- qd_routh_ignore_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(NULL, F.model, F.eom, "q", (const qd_expr * *)F.e, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, NULL, F.eom, "q", (const qd_expr * *)F.e, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* list NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, F.model, F.eom, NULL, (const qd_expr * *)F.e, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* ign NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, F.model, F.eom, "q", NULL, 1, F.z, (const char * *)F.names));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, F.model, F.eom, "q", (const qd_expr * *)F.e, 1, NULL, (const char * *)F.names));
     reset(&F);
     teardown(&F);
 }

@@ -29,6 +29,9 @@ typedef struct cmd_args {
     size_t n;
     shared_args sim;
     int calls;
+    uint64_t seed;
+    double tol;
+    const char *mode;
 } cmd_args;
 
 static int count_call(const char *value, void *args) {
@@ -38,6 +41,7 @@ static int count_call(const char *value, void *args) {
 }
 
 static const char *const formats[] = {"text", "json", "latex", NULL};
+static const char *const modes[] = {"matrix", "columns", NULL};
 
 static const cli_opt cmd_opts[] = {
     {"--quiet", NULL, CLI_FLAG, offsetof(cmd_args, quiet), NULL, "print nothing", NULL, NULL},
@@ -46,6 +50,10 @@ static const cli_opt cmd_opts[] = {
      NULL},
     {"--n", NULL, CLI_COUNT, offsetof(cmd_args, n), "N", "how many", NULL, NULL},
     {"--mark", NULL, CLI_CALL, 0, "X", "the command's own reader", NULL, count_call},
+    CLI_OPT_IN(cmd_args, "--seed", CLI_WHOLE, seed, "S", "a seed", 0, 9007199254740992),
+    CLI_OPT_IN(cmd_args, "--tol", CLI_RANGE, tol, "X", "a tolerance", 1e-14, 0.1),
+    {"--mode", NULL, CLI_MAYBE, offsetof(cmd_args, mode), "[columns]", "a value that may be left "
+     "out", modes, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 
@@ -108,6 +116,22 @@ static void test_values(void **state) {
     assert_string_equal(a.sim.sets.items[0], "m=1");
     assert_string_equal(a.sim.sets.items[1], "g=9.8");
     assert_int_equal(a.calls, 1); /* the command's reader, called with its value */
+    /* the bounds are taken: 2^53 is the last whole number a double holds exactly */
+    assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "m.qd", "--seed", "9007199254740992",
+                           "--tol", "1e-14", (const char *)NULL), QD_EXIT_OK);
+    assert_true(a.seed == UINT64_C(9007199254740992));
+    assert_true(a.tol == 1e-14);
+    /* a value that may be left out: the next word only when it is a choice */
+    assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "--mode", "m.qd", (const char *)NULL),
+                     QD_EXIT_OK);
+    assert_string_equal(a.mode, "matrix");
+    assert_string_equal(pos[0], "m.qd");
+    assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "m.qd", "--mode", "columns",
+                           (const char *)NULL), QD_EXIT_OK);
+    assert_string_equal(a.mode, "columns");
+    assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "m.qd", "--mode=colums",
+                           (const char *)NULL), QD_EXIT_USAGE);
+    assert_non_null(strstr(err, "did you mean 'columns'?"));
 }
 
 static void test_refusals(void **state) {
@@ -145,6 +169,15 @@ static void test_refusals(void **state) {
                            (const char *)NULL), QD_EXIT_USAGE); /* only a list repeats */
     assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "m.qd", "--mark", "bad",
                            (const char *)NULL), QD_EXIT_USAGE);
+    const char *out_of_range[][2] = {{"--seed", "1.5"}, {"--seed", "-1"},
+                                     {"--seed", "9007199254740993.5"}, {"--tol", "0.2"},
+                                     {"--tol", "0"}, {"--tol", "nan"}, {"--tol", "1e-3x"}};
+    for (size_t k = 0; k < sizeof out_of_range / sizeof out_of_range[0]; k++) {
+        assert_int_equal(parse(&spec, &a, pos, err, sizeof err, "m.qd", out_of_range[k][0],
+                               out_of_range[k][1], (const char *)NULL), QD_EXIT_USAGE);
+        assert_non_null(strstr(err, out_of_range[k][0]));
+        assert_non_null(strstr(err, "from"));
+    }
 }
 
 /* A command whose positionals are expressions: "-x" is one. */

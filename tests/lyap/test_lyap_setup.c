@@ -11,7 +11,10 @@
  *     of tr J = -b (Liouville), and the report says the system is not
  *     conservative;
  *   - the refusals, naming their field: a model given by H (no_speeds),
- *     more exponents than 2n (exponents).
+ *     more exponents than 2n (exponents);
+ *   - the flow of such a run (qd_flow_setup_run): the oscillator's flow at
+ *     t is the rotation [[cos t, sin t], [-sin t, cos t]] of (x, x'), its
+ *     determinant 1 (Liouville); a quarter period swaps x and x'.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -112,10 +115,43 @@ static void test_refusals(void **state) {
     refused("coordinates x\nT = x'^2/2\nV = x^2/2\ninitial x = 1\n", 3, "exponents");
 }
 
+/* The CSV rows' lines, counted. */
+static int count_lines(void *data, const char *bytes, size_t len) {
+    for (size_t k = 0; k < len; k++)
+        *(size_t *)data += bytes[k] == '\n';
+    return 0;
+}
+
+static void test_flow(void **state) {
+    (void)state;
+    fix f = load("coordinates x\nT = x'^2/2\nV = x^2/2\ninitial x = 1\n", "pi/2");
+    qd_flow fl;
+    qd_sim_opts used;
+    size_t lines = 0;
+    assert_int_equal(qd_flow_setup_run(f.ctx, f.set, f.m, &f.o, count_lines, &lines, &used, &fl),
+                     QD_OK);
+    const double want[4] = {0, 1, -1, 0};
+    for (size_t k = 0; k < 4; k++)
+        assert_true(fabs(fl.phi[k] - want[k]) < 1e-8);
+    assert_true(fabs(fl.det - 1) < 1e-8);
+    assert_true(fabs(fl.y[0]) < 1e-8 && fabs(fl.y[1] + 1) < 1e-8); /* x = cos t, x' = -sin t */
+    assert_int_equal(used.method, f.o.method);
+    assert_int_equal(lines, 102); /* the header, the row at t0 and 100 more */
+    qd_flow_free(&fl);
+    unload(&f);
+    f = load("coordinates q\nmomenta p\nH = p^2/2 + q^2/2\ninitial q = 1\n", "1");
+    assert_int_equal(qd_flow_setup_run(f.ctx, f.set, f.m, &f.o, NULL, NULL, &used, &fl),
+                     QD_ERR_ARG);
+    assert_string_equal(qd_ctx_diag(f.ctx)->name, "no_speeds");
+    qd_flow_free(&fl);
+    unload(&f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_oscillator), cmocka_unit_test(test_inverted),
         cmocka_unit_test(test_damped),     cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_flow),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,7 +12,12 @@
  *     body y = t (1 - t) over [0, 1] (Desloge ch. 83's trial paths) has
  *     S = integral of m/2 y'^2 - m g y = m/6 - m g/6, the interval read by
  *     qd_state_range from "0:h/3"; a coordinate twice, a name that is not
- *     one and a missing coordinate are located errors.
+ *     one and a missing coordinate are located errors;
+ *   - the whole problem (qd_path_ends_read): the body thrown from (0, 0) to
+ *     (1, 0) in t = 1 starts with (x', y') = (1, g/2), from y = v t - g t^2/2;
+ *     with y free at the end, dL/dy' = m y' = 0 there (the natural boundary
+ *     condition, Gelfand & Fomin sec. 6), so y'(0) = g; each refusal names
+ *     its field.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -139,12 +144,68 @@ static void test_trial_path(void **state) {
     unload(&f);
 }
 
+static void test_problem(void **state) {
+    (void)state;
+    fix f;
+    load(&f, plane);
+    qd_path_ends ends;
+    qd_path_opts o = {.all = false};
+    const char *guess[] = {"x'=1, y'=4"};
+    assert_int_equal(qd_path_ends_read(f.ctx, f.m, f.e, "x=0, y=0", "x=1, y=0, t=1", 1, guess,
+                                       false, &ends, &o), QD_OK);
+    assert_true(o.t0 == 0 && o.t1 == 1 && !o.free0 && !o.free1 && o.nguess == 1);
+    assert_true(o.guess[0] == 1 && o.guess[1] == 4);
+    qd_path_set ps;
+    assert_int_equal(qd_path_find(f.ctx, f.m, f.e, &o, &ps), QD_OK);
+    assert_true(fabs(ps.paths[0].v0[0] - 1) < 1e-8 && fabs(ps.paths[0].v0[1] - 9.81 / 2) < 1e-8);
+    qd_path_set_free(&ps);
+    qd_path_ends_free(&ends);
+    /* a free end starts from the other end's value and ends at rest in y */
+    assert_int_equal(qd_path_ends_read(f.ctx, f.m, f.e, "x=0, y=2", "x=1, y=free, t=1", 0, NULL,
+                                       false, &ends, &o), QD_OK);
+    assert_true(o.free1 && o.free1[1] && !o.free1[0] && o.q1[1] == 2 && !o.guess);
+    assert_int_equal(qd_path_find(f.ctx, f.m, f.e, &o, &ps), QD_OK);
+    assert_true(fabs(ps.paths[0].v0[1] - 9.81) < 1e-8);
+    qd_path_set_free(&ps);
+    qd_path_ends_free(&ends);
+    unload(&f);
+}
+
+/* Each refusal names the field it is about. */
+static void test_problem_refused(void **state) {
+    (void)state;
+    const struct { const char *from, *to, *guess; bool energy; const char *field; } bad[] = {
+        {"x=0, y=0", "x=1, y=free, t=1", NULL, true, "energy"},
+        {"x=0, y=0", "x=1, y=0", NULL, false, "to"},
+        {"x=0, y=0, t=2", "x=1, y=0, t=1", NULL, false, "to"},
+        {"x=0, yy=0", "x=1, y=0, t=1", NULL, false, "from"},
+        {"x=0, y=0", "x=1, y=0, t=1", "x'=1, zz'=0", false, "guess"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        fix f;
+        load(&f, plane);
+        qd_path_ends ends;
+        qd_path_opts o = {0};
+        const char *guess[] = {"y'=0", bad[k].guess};
+        assert_int_equal(qd_path_ends_read(f.ctx, f.m, f.e, bad[k].from, bad[k].to,
+                                           bad[k].guess ? 2 : 0, guess, bad[k].energy, &ends,
+                                           &o), QD_ERR_ARG);
+        assert_string_equal(qd_ctx_diag(f.ctx)->name, bad[k].field);
+        if (bad[k].guess)
+            assert_true(qd_ctx_diag(f.ctx)->index == 1 && qd_ctx_diag(f.ctx)->located);
+        qd_path_ends_free(&ends);
+        unload(&f);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_values_time_free),
         cmocka_unit_test(test_errors_located),
         cmocka_unit_test(test_independent_name),
         cmocka_unit_test(test_trial_path),
+        cmocka_unit_test(test_problem),
+        cmocka_unit_test(test_problem_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
