@@ -38,6 +38,12 @@ typedef struct qd_scene_point {
     /* a named position's component names ("x1", "y1", "z1" or "P1"), for
      * choosing it by any of them; "" when none */
     char comp[3][32];
+    /* a body's: its inertia (row-major, body axes) and `shape` statement
+     * (qd_model_body_shape); else NULL and QD_SHAPE_NONE */
+    const qd_expr *inertia[9];
+    qd_body_shape shape;
+    const qd_expr *size[3];
+    int axis;
 } qd_scene_point;
 
 /* Which points to take: bit 1 particles, 2 bodies, 4 named positions. */
@@ -173,6 +179,26 @@ QD_API qd_status qd_scene_record(qd_ctx *ctx, qd_sim *s, const qd_sim_opts *opts
 QD_API qd_status qd_scene_masses(qd_ctx *ctx, const qd_scene_point *pts, size_t n, size_t nsyms,
                                  const qd_expr *const *syms, const double *vals, double *mass);
 
+/* What a body is drawn as: its `shape` statement, else a slender rod when
+ * its inertia is one (diagonal, one moment 0 and the other two equal I:
+ * a rod of length sqrt(12 I / M) along the axis of the 0), else nothing
+ * (a dot with its body axes: a disk's moments are a ring's of another
+ * radius, a ball's a shell's or a cube's, so they are not guessed). */
+typedef struct qd_scene_look {
+    qd_body_shape shape;   /* QD_SHAPE_NONE for a particle, a position, an unknown shape */
+    double size[3];        /* as qd_model_body_shape's sizes, evaluated; 0 when unused */
+    int axis;              /* the rod's axis or the disk's or ring's normal (body 0, 1, 2) */
+    bool inferred;         /* from the inertia, not from a shape statement */
+} qd_scene_look;
+
+/* Each point's look (above), its sizes and inertia evaluated at the values
+ * vals of the nsyms symbols syms (the parameters), into out[0, n).
+ * Errors: qd_eval's; QD_ERR_ARG for a shape's size that is not a positive
+ * number (the body named in the message). */
+QD_API qd_status qd_scene_looks(qd_ctx *ctx, const qd_scene_point *pts, size_t n, size_t nsyms,
+                                const qd_expr *const *syms, const double *vals,
+                                qd_scene_look *out);
+
 typedef struct qd_scene_link {
     size_t a, b;           /* point indices, or QD_SCENE_ORIGIN */
     bool spring;           /* a zigzag the caller asked for; else a rigid rod */
@@ -197,6 +223,7 @@ typedef struct qd_scene {
     const qd_scene_point *pts;
     size_t npts;
     const double *mass;
+    const qd_scene_look *looks;   /* per point (qd_scene_looks), or NULL: none */
     const qd_scene_frames *fr;    /* the points at the frames (qd_scene_sample) */
     const qd_scene_link *links;
     size_t nlinks;
@@ -209,7 +236,8 @@ typedef struct qd_scene {
 
 /* The scene as one JSON object appended to out, the data of `qdot
  * animate`'s page: {"model", "method", "plane": [a, b], "conservative",
- * "energy_error_max", "points": [{"name", "body", "mass"}...], "links":
+ * "energy_error_max", "points": [{"name", "body", "mass"[, "shape": "rod",
+ * "disk", "ring", "sphere" or "box", "size": [3], "axis", "inferred"]}...], "links":
  * [[a, b, spring]...] (an end -1 is the origin, spring 0 or 1), "traces":
  * [i...], "t": [per frame], "energy_error": [per frame] (only with the
  * frames' energy), "pos": [frame][point][x, y, z] flat, "rot":
@@ -275,6 +303,7 @@ QD_API void qd_scene_setup_free(qd_scene_setup *sc);
  * (ctx, skip); qd_scene_choose, qd_scene_named, qd_scene_pairs and
  * qd_scene_sample (ctx); qd_scene_masses and qd_scene_links (ctx, and
  * syms, vals or springs with a count of 0); qd_scene_json's arrays with a
- * count of 0, its model and method; qd_scene_setup_record (progress, data,
+ * count of 0, its model, method and looks; qd_scene_looks (ctx, and syms,
+ * vals with a count of 0); qd_scene_setup_record (progress, data,
  * stats). An array whose count is 0 may be NULL. */
 #endif

@@ -744,7 +744,7 @@ static const struct stmt_kw {
     {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
-    {"friction", qd__mdl_stmt_friction, true},
+    {"friction", qd__mdl_stmt_friction, true},  {"shape", qd__mdl_stmt_shape, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 

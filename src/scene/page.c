@@ -85,6 +85,16 @@ static void json_numbers(qd_buf *b, const char *key, const double *v, size_t n) 
     qd_buf_puts(b, "]");
 }
 
+/* A body's shape, when it has one: ,"shape":"rod","size":[l,0,0],"axis":2,... */
+static void json_look(qd_buf *b, const qd_scene_look *l) {
+    static const char *const names[] = {"", "rod", "disk", "ring", "sphere", "box"};
+    if (!l || l->shape <= QD_SHAPE_NONE || l->shape > QD_SHAPE_BOX)
+        return;
+    qd_buf_printf(b, ",\"shape\":\"%s\"", names[l->shape]);
+    json_numbers(b, "size", l->size, 3);
+    qd_buf_printf(b, ",\"axis\":%d,\"inferred\":%s", l->axis, l->inferred ? "true" : "false");
+}
+
 static long link_end(size_t i) {
     return i == QD_SCENE_ORIGIN ? -1 : (long)i;
 }
@@ -106,8 +116,10 @@ qd_status qd_scene_json(const qd_scene *s, qd_buf *out) {
     for (size_t i = 0; i < s->npts; i++) {
         qd_buf_puts(out, i ? ",{\"name\":" : "{\"name\":");
         json_name(out, s->pts[i].name);
-        qd_buf_printf(out, ",\"body\":%s,\"mass\":%.7g}",
+        qd_buf_printf(out, ",\"body\":%s,\"mass\":%.7g",
                       s->pts[i].kind == QD_SCENE_BODY ? "true" : "false", s->mass[i]);
+        json_look(out, s->looks ? &s->looks[i] : NULL);
+        qd_buf_puts(out, "}");
     }
     qd_buf_puts(out, "],\"links\":[");
     for (size_t k = 0; k < s->nlinks; k++)

@@ -1,7 +1,7 @@
 /*
  * src/scene/setup.c - a picture set up as `qdot animate` takes it
  * (qd_scene_setup_new, qd_scene_setup_record): the points the words
- * choose, their masses, the traces and springs they name, their places as
+ * choose, their masses and looks (shapes), the traces and springs they name, their places as
  * outputs of the run; then the run sampled at the frames, the links and
  * the drawing plane.  The set-up owns every array its qd_scene points to.
  */
@@ -19,6 +19,7 @@ struct qd_scene_setup {
     qd_scene view;
     qd_scene_point *pts;
     double *mass;
+    qd_scene_look *looks;
     size_t *traces, *springs, nsprings;
     qd_scene_frames fr;
     qd_scene_link *links;
@@ -31,6 +32,7 @@ void qd_scene_setup_free(qd_scene_setup *sc) {
     qd_scene_frames_free(&sc->fr);
     free(sc->links);
     qd__free(sc->mass);
+    qd__free(sc->looks);
     qd__free(sc->traces);
     qd__free(sc->springs);
     qd__free(sc);
@@ -43,21 +45,23 @@ static qd_status points(qd_scene_setup *sc, const qd_model *m, const qd_scene_sp
     if (st != QD_OK)
         return st;
     sc->mass = qd__malloc(sc->ctx, (n + 1) * sizeof *sc->mass);
+    sc->looks = qd__malloc(sc->ctx, (n + 1) * sizeof *sc->looks);
     sc->traces = qd__malloc(sc->ctx, (sp->ntraces + 1) * sizeof *sc->traces);
     sc->springs = qd__malloc(sc->ctx, (2 * sp->nsprings + 1) * sizeof *sc->springs);
-    if (!sc->mass || !sc->traces || !sc->springs)
+    if (!sc->mass || !sc->looks || !sc->traces || !sc->springs)
         return QD_ERR_NOMEM;
     const qd_expr *const *syms;
     const double *vals;
     size_t ns = qd_sim_setup_state(sc->set, &syms, &vals);
     if ((st = qd_scene_masses(sc->ctx, sc->pts, n, ns, syms, vals, sc->mass)) != QD_OK ||
+        (st = qd_scene_looks(sc->ctx, sc->pts, n, ns, syms, vals, sc->looks)) != QD_OK ||
         (st = qd_scene_named(sc->ctx, sc->pts, n, sp->traces, sp->ntraces, sc->traces)) != QD_OK ||
         (st = qd_scene_pairs(sc->ctx, sc->pts, n, sp->springs, sp->nsprings, sc->springs)) !=
             QD_OK)
         return st;
     sc->nsprings = sp->nsprings;
     sc->view = (qd_scene){.model = sp->title, .pts = sc->pts, .npts = n, .mass = sc->mass,
-                          .traces = sc->traces, .ntraces = sp->ntraces};
+                          .looks = sc->looks, .traces = sc->traces, .ntraces = sp->ntraces};
     return qd_scene_add_outputs(sc->ctx, qd_sim_setup_sim(sc->set), m, sc->pts, n);
 }
 

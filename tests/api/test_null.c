@@ -2819,6 +2819,16 @@ static void null_model(void **state)
     /* m NULL */
     assert_null(qd_model_body_omega_space(NULL, 1, 1));
     reset(&F);
+    /* ---- qd_model_body_shape */
+    /* m NULL */
+    (void)qd_model_body_shape(NULL, 1, (const qd_expr * *)F.e, F.i);
+    reset(&F);
+    /* size NULL */
+    (void)qd_model_body_shape(F.model, 1, NULL, F.i);
+    reset(&F);
+    /* axis NULL */
+    (void)qd_model_body_shape(F.model, 1, (const qd_expr * *)F.e, NULL);
+    reset(&F);
     /* ---- qd_model_hamiltonian_given */
     /* m NULL */
     assert_true(qd_model_hamiltonian_given(NULL) == 0);
@@ -4954,6 +4964,22 @@ static void null_scene(void **state)
     reset(&F);
     /* mass NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_scene_looks */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(NULL, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, NULL, F.d, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, NULL, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, NULL));
     reset(&F);
     /* ---- qd_scene_links */
     /* ctx NULL */
