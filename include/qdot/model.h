@@ -194,6 +194,11 @@ typedef enum qd_body_shape {
  * disk's or ring's normal (2 for the others). */
 QD_API qd_body_shape qd_model_body_shape(const qd_model *m, size_t i, const qd_expr *size[3],
                                          int *axis);
+/* The fixed plane body i's first `rolls BODY on plane(n, r0)` names (not a
+ * moving one: its picture's ground), n into n[0..2] and r0 into r0[0..2],
+ * owned by the model; false (n, r0 untouched) when it has none. */
+QD_API bool qd_model_body_ground(const qd_model *m, size_t i, const qd_expr *n[3],
+                                 const qd_expr *r0[3]);
 
 /* Hamiltonian models (`momenta p_r, ...` and `H = ...`).  The momenta are
  * plain symbols; `momenta` with T or L (no H) only names them. */

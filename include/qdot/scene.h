@@ -44,6 +44,7 @@ typedef struct qd_scene_point {
     qd_body_shape shape;
     const qd_expr *size[3];
     int axis;
+    const qd_expr *ground[6]; /* qd_model_body_ground's n, r0, or NULL */
 } qd_scene_point;
 
 /* Which points to take: bit 1 particles, 2 bodies, 4 named positions. */
@@ -189,9 +190,12 @@ typedef struct qd_scene_look {
     double size[3];        /* as qd_model_body_shape's sizes, evaluated; 0 when unused */
     int axis;              /* the rod's axis or the disk's or ring's normal (body 0, 1, 2) */
     bool inferred;         /* from the inertia, not from a shape statement */
+    bool has_ground;       /* the body rolls on a fixed plane: */
+    double ground[6];      /* its normal n and a point r0 */
 } qd_scene_look;
 
-/* Each point's look (above), its sizes and inertia evaluated at the values
+/* Each point's look (above) and the ground its `rolls` names, its sizes,
+ * inertia and ground evaluated at the values
  * vals of the nsyms symbols syms (the parameters), into out[0, n).
  * Errors: qd_eval's; QD_ERR_ARG for a shape's size that is not a positive
  * number (the body named in the message). */
@@ -237,7 +241,8 @@ typedef struct qd_scene {
 /* The scene as one JSON object appended to out, the data of `qdot
  * animate`'s page: {"model", "method", "plane": [a, b], "conservative",
  * "energy_error_max", "points": [{"name", "body", "mass"[, "shape": "rod",
- * "disk", "ring", "sphere" or "box", "size": [3], "axis", "inferred"]}...], "links":
+ * "disk", "ring", "sphere" or "box", "size": [3], "axis", "inferred"][,
+ * "ground": [nx, ny, nz, x0, y0, z0]]}...], "links":
  * [[a, b, spring]...] (an end -1 is the origin, spring 0 or 1), "traces":
  * [i...], "t": [per frame], "energy_error": [per frame] (only with the
  * frames' energy), "pos": [frame][point][x, y, z] flat, "rot":

@@ -40,6 +40,7 @@ typedef struct body {
     int shape;             /* qd_body_shape: `shape BODY as ...` (shape.c), else NONE */
     const qd_expr *size[3]; /* its sizes (qd_model_body_shape) */
     int axis;              /* a rod's axis, a disk's or ring's normal: 0 x, 1 y, 2 z */
+    const qd_expr *ground[6]; /* the fixed plane its first `rolls` names: n, r0; else NULL */
 } body;
 
 /* `reaction [LABEL:] CON on r`: the force of constraint con at the point r

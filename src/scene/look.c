@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "base/args.h"
 
@@ -51,17 +52,26 @@ qd_status qd_scene_looks(qd_ctx *ctx, const qd_scene_point *pts, size_t n, size_
     QD_ARGS_CTX(ctx, (pts || !n) && (out || !n) && ((syms && vals) || !nsyms));
     for (size_t i = 0; i < n; i++) {
         const qd_scene_point *p = &pts[i];
+        double g[6] = {0};
         out[i] = (qd_scene_look){.shape = QD_SHAPE_NONE, .axis = 2};
         if (p->kind != QD_SCENE_BODY)
             continue;
+        for (int k = 0; k < 6 && p->ground[0]; k++) {
+            qd_status st = qd_eval(ctx, p->ground[k], nsyms, syms, vals, &g[k]);
+            if (st != QD_OK)
+                return st;
+        }
+        bool ground = p->ground[0] != NULL;
         if (p->shape == QD_SHAPE_NONE) {
             qd_status st = rod_from_inertia(ctx, p, nsyms, syms, vals, &out[i]);
             if (st != QD_OK)
                 return st;
-            continue;
+        } else {
+            out[i] = (qd_scene_look){.shape = p->shape, .axis = p->axis};
         }
-        out[i] = (qd_scene_look){.shape = p->shape, .axis = p->axis};
-        for (int k = 0; k < 3 && p->size[k]; k++) {
+        out[i].has_ground = ground;
+        memcpy(out[i].ground, g, sizeof g);
+        for (int k = 0; k < 3 && p->shape != QD_SHAPE_NONE && p->size[k]; k++) {
             qd_status st = qd_eval(ctx, p->size[k], nsyms, syms, vals, &out[i].size[k]);
             if (st != QD_OK)
                 return st;

@@ -85,9 +85,11 @@ static void json_numbers(qd_buf *b, const char *key, const double *v, size_t n) 
     qd_buf_puts(b, "]");
 }
 
-/* A body's shape, when it has one: ,"shape":"rod","size":[l,0,0],"axis":2,... */
+/* A body's ground and shape, when it has them: ,"ground":[6],"shape":"rod","size":[l,0,0],"axis":2,... */
 static void json_look(qd_buf *b, const qd_scene_look *l) {
     static const char *const names[] = {"", "rod", "disk", "ring", "sphere", "box"};
+    if (l && l->has_ground)
+        json_numbers(b, "ground", l->ground, 6);
     if (!l || l->shape <= QD_SHAPE_NONE || l->shape > QD_SHAPE_BOX)
         return;
     qd_buf_printf(b, ",\"shape\":\"%s\"", names[l->shape]);

@@ -127,6 +127,7 @@ qd_status qd_scene_points(qd_ctx *ctx, const qd_model *m, unsigned which, qd_sce
         for (unsigned k = 0; k < 9; k++)
             q->inertia[k] = qd_model_body_inertia(m, b, k / 3, k % 3);
         q->shape = qd_model_body_shape(m, b, q->size, &q->axis);
+        qd_model_body_ground(m, b, q->ground, q->ground + 3);
     }
     if (nn)
         positions(c, m, p + np + nb);

@@ -2829,6 +2829,16 @@ static void null_model(void **state)
     /* axis NULL */
     (void)qd_model_body_shape(F.model, 1, (const qd_expr * *)F.e, NULL);
     reset(&F);
+    /* ---- qd_model_body_ground */
+    /* m NULL */
+    assert_true(qd_model_body_ground(NULL, 1, (const qd_expr * *)F.e, (const qd_expr * *)F.e) == 0);
+    reset(&F);
+    /* n NULL */
+    assert_true(qd_model_body_ground(F.model, 1, NULL, (const qd_expr * *)F.e) == 0);
+    reset(&F);
+    /* r0 NULL */
+    assert_true(qd_model_body_ground(F.model, 1, (const qd_expr * *)F.e, NULL) == 0);
+    reset(&F);
     /* ---- qd_model_hamiltonian_given */
     /* m NULL */
     assert_true(qd_model_hamiltonian_given(NULL) == 0);
