@@ -45,7 +45,8 @@ static int kind_index(parser *p) {
     char word[64], hint[160];
     size_t n = p->lx.tok.len < 63 ? p->lx.tok.len : 63;
     snprintf(word, sizeof word, "%.*s", (int)n, p->lx.src + p->lx.tok.off);
-    const char *near = p->lx.tok.kind == TK_IDENT ? qd__diag_nearest(word, n, kinds, NKINDS) : NULL;
+    const char *near =
+        p->lx.tok.kind == TK_IDENT ? qd__diag_nearest(word, n, kinds, NKINDS) : NULL;
     if (!near && (!strcmp(word, "hoop") || !strcmp(word, "shell") || !strcmp(word, "cylinder")))
         near = !strcmp(word, "hoop") ? "ring" : !strcmp(word, "shell") ? "sphere" : "disk";
     if (near)

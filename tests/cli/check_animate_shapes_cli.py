@@ -99,7 +99,8 @@ def main():
         w, h, px = read_png(png)
         check((w, h) == WINDOW, f'{name}: screenshot {w}x{h}')
         tr = json.loads(st['transform'])
-        return px, tr, lambda q: (round(tr['ox'] + tr['s'] * q[0]), round(tr['oy'] - tr['s'] * q[1]))
+        return px, tr, lambda q: (round(tr['ox'] + tr['s'] * q[0]),
+                                  round(tr['oy'] - tr['s'] * q[1]))
 
     px, tr, pixel = shot(disk, 1, 'disk')
     if px:
@@ -109,7 +110,8 @@ def main():
         xr, yr = pixel((c[0], c[1] + A))   # the rim above the centre (a 2 px line)
         check(found(px, xr, yr, P1_RGB, tol=40, r=2), f'disk rim not at {xr},{yr}: {px(xr, yr)}')
         xg, yg = pixel((c[0] - A * n[0], c[1] - A * n[1]))     # the contact, on the incline
-        check(found(px, xg, yg, GROUND_RGB, tol=40, r=2), f'incline not at {xg},{yg}: {px(xg, yg)}')
+        check(found(px, xg, yg, GROUND_RGB, tol=40, r=2),
+              f'incline not at {xg},{yg}: {px(xg, yg)}')
         check(not found(px, xg, yg - round(2 * A * tr['s']) - 8, GROUND_RGB, tol=40, r=2),
               'the incline line drawn above the disk')
 

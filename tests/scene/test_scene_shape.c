@@ -132,7 +132,8 @@ static void test_double_rod(void **state) {
     fix f = record(text, "3");
     const qd_scene *v = f.v;
     assert_int_equal(v->npts, 2);
-    assert_true(fabs(v->looks[0].size[0] - 1.2) < 1e-12 && fabs(v->looks[1].size[0] - 0.9) < 1e-12);
+    assert_true(fabs(v->looks[0].size[0] - 1.2) < 1e-12);
+    assert_true(fabs(v->looks[1].size[0] - 0.9) < 1e-12);
     for (size_t k = 0; k < v->fr->nframes; k++) {
         double e1[2][3], e2[2][3], best = INFINITY;
         for (int s = 0; s < 2; s++) {
