@@ -203,6 +203,28 @@ QD_API qd_status qd_scene_looks(qd_ctx *ctx, const qd_scene_point *pts, size_t n
                                 const qd_expr *const *syms, const double *vals,
                                 qd_scene_look *out);
 
+/* A plane x_axis = at that a point of a constrained model slides on (a
+ * floor, a wall): side +1 or -1 the side of x_axis the points' bodies are
+ * on (the solid lies on the other), 0 when both or none. */
+typedef struct qd_scene_wall {
+    int axis;
+    double at;
+    int side;
+} qd_scene_wall;
+
+/* The walls of a sampled motion (fr: qd_scene_sample's frames of pts, npts
+ * points; looks per point, or NULL): every plane x_k = c that a point keeps
+ * (to 1e-6 of the scene's size, as a rod its length: the frames are dense output, between the projected steps) while it moves (10^-3 of the size), the points being each
+ * particle, named position and body centre and both ends of a body drawn
+ * as a rod; not the drawing plane (plane as qd_scene_links gives it).
+ * *walls malloc'd (free(); never NULL on success).  The caller decides
+ * whether the model constrains them (qd_scene_setup: a model with a
+ * constraint).  QD_ERR_NOMEM. */
+QD_API qd_status qd_scene_walls(qd_ctx *ctx, const qd_scene_point *pts,
+                                const qd_scene_look *looks, const qd_scene_frames *fr,
+                                size_t npts, const int plane[2], qd_scene_wall **walls,
+                                size_t *nwalls);
+
 typedef struct qd_scene_link {
     size_t a, b;           /* point indices, or QD_SCENE_ORIGIN */
     bool spring;           /* a zigzag the caller asked for; else a rigid rod */
@@ -234,6 +256,8 @@ typedef struct qd_scene {
     const size_t *traces;
     size_t ntraces;
     int plane[2];                 /* qd_scene_links' plane */
+    const qd_scene_wall *walls;   /* qd_scene_walls' (may be NULL with nwalls 0) */
+    size_t nwalls;
     double energy_error_max;      /* the run's measure (qd_sim_stats) */
     bool conservative;            /* qd_sim_conservative */
 } qd_scene;
@@ -244,8 +268,8 @@ typedef struct qd_scene {
  * "disk", "ring", "sphere" or "box", "size": [3], "axis", "inferred"][,
  * "ground": [nx, ny, nz, x0, y0, z0]]}...], "links":
  * [[a, b, spring]...] (an end -1 is the origin, spring 0 or 1), "traces":
- * [i...], "t": [per frame], "energy_error": [per frame] (only with the
- * frames' energy), "pos": [frame][point][x, y, z] flat, "rot":
+ * [i...], "walls": [[axis, at, side]...], "t": [per frame], "energy_error":
+ * [per frame] (only with the frames' energy), "pos": [frame][point][x, y, z] flat, "rot":
  * [frame][body][9] flat}.  Numbers to 7 significant digits (a picture
  * needs no more), null for one not finite; strings escape '"', '\', '<'
  * and control characters as \u00XX, so that the text may sit inside an
@@ -286,7 +310,8 @@ struct qd_sim_setup;
 QD_API qd_scene_setup *qd_scene_setup_new(qd_ctx *ctx, struct qd_sim_setup *set,
                                           const qd_model *m, const qd_scene_spec *sp);
 /* set's run from opts sampled at the frames (qd_scene_record), then its
- * links and drawing plane (qd_scene_links), the scene completed: method,
+ * links and drawing plane (qd_scene_links), for a model with a constraint
+ * its walls (qd_scene_walls), the scene completed: method,
  * energy error, conservative.  stats (may be NULL) gets the run's.  Once (a
  * second call is QD_ERR_ARG); * the errors of qd_scene_record, or of the links (reason in ctx). */
 QD_API qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
@@ -308,7 +333,7 @@ QD_API void qd_scene_setup_free(qd_scene_setup *sc);
  * (ctx, skip); qd_scene_choose, qd_scene_named, qd_scene_pairs and
  * qd_scene_sample (ctx); qd_scene_masses and qd_scene_links (ctx, and
  * syms, vals or springs with a count of 0); qd_scene_json's arrays with a
- * count of 0, its model, method and looks; qd_scene_looks (ctx, and syms,
+ * count of 0, its model, method, looks and walls; qd_scene_walls (ctx, looks); qd_scene_looks (ctx, and syms,
  * vals with a count of 0); qd_scene_setup_record (progress, data,
  * stats). An array whose count is 0 may be NULL. */
 #endif

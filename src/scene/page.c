@@ -103,7 +103,8 @@ static long link_end(size_t i) {
 
 qd_status qd_scene_json(const qd_scene *s, qd_buf *out) {
     QD_ARGS(QD_ERR_ARG, s && out && s->fr && (s->pts || !s->npts) && (s->mass || !s->npts) &&
-                            (s->links || !s->nlinks) && (s->traces || !s->ntraces));
+                            (s->links || !s->nlinks) && (s->traces || !s->ntraces) &&
+                            (s->walls || !s->nwalls));
     const qd_scene_frames *fr = s->fr;
     QD_ARGS(QD_ERR_ARG, (fr->t || !fr->nframes) && (fr->pos || !fr->nframes || !s->npts) &&
                             (fr->rot || !fr->nframes || !fr->nbodies));
@@ -130,6 +131,10 @@ qd_status qd_scene_json(const qd_scene *s, qd_buf *out) {
     qd_buf_puts(out, "],\"traces\":[");
     for (size_t k = 0; k < s->ntraces; k++)
         qd_buf_printf(out, "%s%zu", k ? "," : "", s->traces[k]);
+    qd_buf_puts(out, "],\"walls\":[");
+    for (size_t k = 0; k < s->nwalls; k++)
+        qd_buf_printf(out, "%s[%d,%.7g,%d]", k ? "," : "", s->walls[k].axis, s->walls[k].at,
+                      s->walls[k].side);
     qd_buf_puts(out, "]");
     json_numbers(out, "t", fr->t, fr->nframes);
     if (fr->energy)

@@ -2,8 +2,8 @@
  * src/scene/setup.c - a picture set up as `qdot animate` takes it
  * (qd_scene_setup_new, qd_scene_setup_record): the points the words
  * choose, their masses and looks (shapes), the traces and springs they name, their places as
- * outputs of the run; then the run sampled at the frames, the links and
- * the drawing plane.  The set-up owns every array its qd_scene points to.
+ * outputs of the run; then the run sampled at the frames, the links, the
+ * drawing plane and, for a constrained model, the walls its points slide on.  The set-up owns every array its qd_scene points to.
  */
 #include "qdot/scene.h"
 
@@ -23,6 +23,8 @@ struct qd_scene_setup {
     size_t *traces, *springs, nsprings;
     qd_scene_frames fr;
     qd_scene_link *links;
+    qd_scene_wall *walls;
+    bool constrained; /* the model has a constraint: its points' walls are drawn */
 };
 
 void qd_scene_setup_free(qd_scene_setup *sc) {
@@ -31,6 +33,7 @@ void qd_scene_setup_free(qd_scene_setup *sc) {
     qd_scene_points_free(sc->pts);
     qd_scene_frames_free(&sc->fr);
     free(sc->links);
+    free(sc->walls);
     qd__free(sc->mass);
     qd__free(sc->looks);
     qd__free(sc->traces);
@@ -73,6 +76,7 @@ qd_scene_setup *qd_scene_setup_new(qd_ctx *ctx, struct qd_sim_setup *set, const 
         return NULL;
     sc->ctx = ctx;
     sc->set = set;
+    sc->constrained = qd_model_nconstraints(m) > 0;
     if (points(sc, m, sp) != QD_OK) {
         qd_scene_setup_free(sc);
         return NULL;
@@ -99,6 +103,12 @@ qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
                      qd_status_str(rs));
         return rs;
     }
+    if (sc->constrained)
+        rs = qd_scene_walls(sc->ctx, sc->pts, sc->looks, &sc->fr, sc->view.npts, sc->view.plane,
+                            &sc->walls, &sc->view.nwalls);
+    if (rs != QD_OK)
+        return rs;
+    sc->view.walls = sc->walls;
     sc->view.links = sc->links;
     sc->view.fr = &sc->fr;
     sc->view.energy_error_max = st.energy_error_max;

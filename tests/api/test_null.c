@@ -4991,6 +4991,19 @@ static void null_scene(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, NULL));
     reset(&F);
+    /* ---- qd_scene_walls */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(NULL, NULL, NULL, NULL, 1, F.i, NULL, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(F.ctx, NULL, NULL, NULL, 1, F.i, NULL, F.z));
+    reset(&F);
+    /* plane NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(F.ctx, NULL, NULL, NULL, 1, NULL, NULL, F.z));
+    reset(&F);
+    /* nwalls NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(F.ctx, NULL, NULL, NULL, 1, F.i, NULL, NULL));
+    reset(&F);
     /* ---- qd_scene_links */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_links(NULL, F.d, 1, 1, F.z, 1, NULL, F.z, F.i));

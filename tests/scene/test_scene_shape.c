@@ -16,6 +16,7 @@
  *     `shape disk as disk(a)` line): its drawn circle's lowest point,
  *     c_z - a sqrt(1 - k_z^2) with k the disk's normal R e_z, is on the
  *     plane at every frame (the rolling contact, held by the constraint).
+ *   - the ladder's wall and floor found from its ends' motion;
  *   - the shape statement's refusals, located, with their hints; a size
  *     that is not positive refused when the scene is set up.
  */
@@ -178,6 +179,36 @@ static void test_rolling_disk(void **state) {
     unload(&f);
 }
 
+/* The ladder (examples/ladder.qd; Desloge ch. 50 Problem 8): a rod of length l = 3 whose top slides
+ * on the wall x = 0 and foot on the floor y = 0 (constraints in x, y,
+ * theta); the page's walls are those two planes, the bodies on their
+ * positive sides.  The rod pendulum, with no constraint, has none. */
+static void test_walls(void **state) {
+    (void)state;
+    static const char text[] =
+        "coordinates x, y, theta\n"
+        "parameters m = 2, l = 3, g = 9.81\n"
+        "body rod mass m inertia rod(m, l) at (x, y, 0) orientation rot_z(theta)*rot_x(-pi/2)\n"
+        "V = m*g*y\n"
+        "constraint wall: x - l/2*sin(theta) = 0\n"
+        "constraint floor: y - l/2*cos(theta) = 0\n"
+        "initial x = 0.75, y = 1.299038105676658, theta = pi/6\n";
+    fix f = record(text, "0.8");
+    const qd_scene *v = f.v;
+    assert_int_equal(v->nwalls, 2);
+    bool wall = false, floor = false;
+    for (size_t k = 0; k < 2; k++) {
+        assert_true(fabs(v->walls[k].at) < 1e-6 && v->walls[k].side == 1);
+        wall |= v->walls[k].axis == 0;
+        floor |= v->walls[k].axis == 1;
+    }
+    assert_true(wall && floor);
+    unload(&f);
+    f = record(rod_pendulum, "1");
+    assert_int_equal(f.v->nwalls, 0);
+    unload(&f);
+}
+
 /* A model whose shape lines are refused at line:col, the message and the
  * hint containing what is said. */
 static void refused(const char *shape_lines, int line, int col, const char *msg,
@@ -249,6 +280,7 @@ int main(void) {
         cmocka_unit_test(test_hung_rod),
         cmocka_unit_test(test_double_rod),
         cmocka_unit_test(test_rolling_disk),
+        cmocka_unit_test(test_walls),
         cmocka_unit_test(test_statement_errors),
         cmocka_unit_test(test_accessor_and_size),
     };
