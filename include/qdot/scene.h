@@ -310,9 +310,10 @@ struct qd_sim_setup;
 QD_API qd_scene_setup *qd_scene_setup_new(qd_ctx *ctx, struct qd_sim_setup *set,
                                           const qd_model *m, const qd_scene_spec *sp);
 /* set's run from opts sampled at the frames (qd_scene_record), then its
- * links and drawing plane (qd_scene_links), for a model with a constraint
- * its walls (qd_scene_walls), the scene completed: method,
- * energy error, conservative.  stats (may be NULL) gets the run's.  Once (a
+ * links and drawing plane (qd_scene_links; 3-D instead when a body drawn
+ * as a shape turns about another axis than the plane's normal), for a
+ * model with a constraint its walls (qd_scene_walls), the scene completed:
+ * method, energy error, conservative.  stats (may be NULL) gets the run's.  Once (a
  * second call is QD_ERR_ARG); * the errors of qd_scene_record, or of the links (reason in ctx). */
 QD_API qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
                                        void (*progress)(void *data, double t), void *data,

@@ -7,6 +7,7 @@
  */
 #include "qdot/scene.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "base/args.h"
@@ -84,6 +85,26 @@ qd_scene_setup *qd_scene_setup_new(qd_ctx *ctx, struct qd_sim_setup *set, const 
     return sc;
 }
 
+/* A drawing plane holds the bodies' shapes too: each shaped body turns
+ * about the flat axis only (the flat row of its rotation is the same in
+ * every frame); else the picture is 3-D (a box tumbling about its centre). */
+static bool shapes_in_plane(const qd_scene_setup *sc, int flat) {
+    const qd_scene_frames *fr = &sc->fr;
+    for (size_t i = 0, b = 0; i < sc->view.npts; i++) {
+        if (sc->pts[i].kind != QD_SCENE_BODY)
+            continue;
+        bool shaped = sc->looks[i].shape != QD_SHAPE_NONE;
+        for (size_t f = 1; shaped && f < fr->nframes; f++)
+            for (int c = 0; c < 3; c++) {
+                const double *r0 = fr->rot + 9 * b, *r = fr->rot + 9 * (f * fr->nbodies + b);
+                if (fabs(r[3 * flat + c] - r0[3 * flat + c]) > 1e-9)
+                    return false;
+            }
+        b++;
+    }
+    return true;
+}
+
 qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
                                 void (*progress)(void *data, double t), void *data,
                                 qd_sim_stats *stats) {
@@ -103,6 +124,9 @@ qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
                      qd_status_str(rs));
         return rs;
     }
+    int *pl = sc->view.plane;
+    if (pl[0] >= 0 && !shapes_in_plane(sc, 3 - pl[0] - pl[1]))
+        pl[0] = pl[1] = -1;
     if (sc->constrained)
         rs = qd_scene_walls(sc->ctx, sc->pts, sc->looks, &sc->fr, sc->view.npts, sc->view.plane,
                             &sc->walls, &sc->view.nwalls);

@@ -16,6 +16,7 @@
  *     `shape disk as disk(a)` line): its drawn circle's lowest point,
  *     c_z - a sqrt(1 - k_z^2) with k the disk's normal R e_z, is on the
  *     plane at every frame (the rolling contact, held by the constraint).
+ *   - a tumbling box drawn in 3-D, though its centre stays put;
  *   - the ladder's wall and floor found from its ends' motion;
  *   - the shape statement's refusals, located, with their hints; a size
  *     that is not positive refused when the scene is set up.
@@ -135,6 +136,7 @@ static void test_double_rod(void **state) {
     assert_int_equal(v->npts, 2);
     assert_true(fabs(v->looks[0].size[0] - 1.2) < 1e-12);
     assert_true(fabs(v->looks[1].size[0] - 0.9) < 1e-12);
+    assert_true(v->plane[0] == 0 && v->plane[1] == 1); /* the rods turn about z only */
     for (size_t k = 0; k < v->fr->nframes; k++) {
         double e1[2][3], e2[2][3], best = INFINITY;
         for (int s = 0; s < 2; s++) {
@@ -176,6 +178,21 @@ static void test_rolling_disk(void **state) {
         lowest = fmax(lowest, fabs(c[2] - l->size[0] * sqrt(1 - kz * kz)));
     }
     assert_true(lowest < 1e-7);
+    unload(&f);
+}
+
+/* A free box tumbling about its fixed centre (examples/euler_free_body.qd,
+ * Euler's equations): its centre keeps every coordinate, but its shape
+ * turns out of any plane, so the picture is 3-D. */
+static void test_tumbling_box_is_3d(void **state) {
+    (void)state;
+    static const char text[] =
+        "coordinates phi, theta, psi\n"
+        "body b mass 1 inertia (1, 2, 3) at (0, 0, 0) orientation euler(phi, theta, psi)\n"
+        "shape b as box(1, 0.6, 0.3)\n"
+        "initial theta = 1, phi' = 0.3, theta' = 1, psi' = 0.2\n";
+    fix f = record(text, "1");
+    assert_true(f.v->plane[0] == -1 && f.v->plane[1] == -1);
     unload(&f);
 }
 
@@ -281,6 +298,7 @@ int main(void) {
         cmocka_unit_test(test_double_rod),
         cmocka_unit_test(test_rolling_disk),
         cmocka_unit_test(test_walls),
+        cmocka_unit_test(test_tumbling_box_is_3d),
         cmocka_unit_test(test_statement_errors),
         cmocka_unit_test(test_accessor_and_size),
     };
