@@ -214,9 +214,11 @@ typedef struct qd_scene_wall {
 
 /* The walls of a sampled motion (fr: qd_scene_sample's frames of pts, npts
  * points; looks per point, or NULL): every plane x_k = c that a point keeps
- * (to 1e-6 of the scene's size, as a rod its length: the frames are dense output, between the projected steps) while it moves (10^-3 of the size), the points being each
- * particle, named position and body centre and both ends of a body drawn
- * as a rod; not the drawing plane (plane as qd_scene_links gives it).
+ * while it moves (to 1e-6 of the scene's size, as a rod its length: the
+ * frames are dense output between the projected steps; moving: 1e-3 of
+ * it), the points being each particle and named position and both ends of
+ * a body drawn as a rod (not a body's centre, which is off what it slides
+ * on); not the drawing plane (plane as qd_scene_links gives it).
  * *walls malloc'd (free(); never NULL on success).  The caller decides
  * whether the model constrains them (qd_scene_setup: a model with a
  * constraint).  QD_ERR_NOMEM. */

@@ -2,9 +2,10 @@
  * src/scene/wall.c - the walls and floors a constrained model's points slide
  * on (qd_scene_walls): found from the sampled motion, as the rods are, not
  * guessed from the constraints' text.  A drawn point (a particle, a named
- * position, a body's centre, or either end of a body drawn as a rod) that
- * keeps one space coordinate while it moves is held on that coordinate's
- * plane: a ladder's foot on the floor, its top on the wall.
+ * position, or either end of a body drawn as a rod: a body's centre is not
+ * where it touches) that keeps one space coordinate while it moves is held
+ * on that coordinate's plane: a ladder's foot on the floor, its top on the
+ * wall.
  */
 #include "qdot/scene.h"
 
@@ -81,6 +82,8 @@ qd_status qd_scene_walls(qd_ctx *ctx, const qd_scene_point *pts, const qd_scene_
     for (size_t i = 0; i < npts && fr->nframes > 1 && scale > 0 && isfinite(scale); i++) {
         for (int c = 0; c < 3; c++) {
             double p0[3], c0[3], lo_p[3], hi_p[3], p[3], cen[3];
+            if (c == 0 && pts[i].kind == QD_SCENE_BODY)
+                continue; /* a body's centre is off the surface it slides on */
             if (!candidate(&w, i, body, c, 0, p0, c0))
                 break;
             for (int k = 0; k < 3; k++)
