@@ -2,7 +2,8 @@
  * cli/cmd_animate.c - `qdot animate FILE [simulate options] -o FILE.html`:
  * simulate the model (the setup of sim_cli.c), sample the positions of its
  * particles and bodies at the frames (qd_scene_setup_new, _record: the
- * model's own position and rotation expressions as outputs of the run), and
+ * model's own position and rotation expressions as outputs of the run; the
+ * bodies' shapes and grounds from the model, qd_scene_looks), and
  * write one self-contained HTML page that plays the motion (qd_scene_html).
  */
 #include "cli.h"
@@ -39,12 +40,18 @@ static const cli_spec spec = {
     .synopsis = "FILE -o FILE.html [--draw WHAT]... [--trace NAME]... [--spring A,B]... "
                 "[simulate options]",
     .summary = "Simulate the model and write one self-contained HTML page that plays its\n"
-               "motion: every particle and body, or the named positions of a model with\n"
-               "neither; rods where two points keep their distance.  -o, --out FILE.html is\n"
-               "the page.  Every option of qdot simulate that shapes the motion applies too\n"
-               "(--t-end, default 10, --dt, --rtol, --atol, --method, --initial, --set, --input,\n"
-               "--about, --lqr, --stop-at, --event, --max-steps, --no-project, --no-speeds,\n"
-               "--native, --precision; qdot simulate --help).",
+               "motion.  -o, --out FILE.html is the page.  What is drawn: every particle and\n"
+               "body, or the named positions (x1 = ..., y1 = ...; P1 = (x, y, z)) of a model\n"
+               "with neither; --draw particles|bodies|positions|NAME chooses (repeatable).  A\n"
+               "body is drawn as the model's `shape BODY as rod(l)|disk(a)|ring(a)|sphere(a)|\n"
+               "box(a, b, c) [along x|y|z]` says (docs/language.md), else as a rod when its\n"
+               "inertia is a slender rod's, else as a dot with its axes; the plane a `rolls`\n"
+               "names is drawn as the ground; rods where two points keep their distance;\n"
+               "--spring A,B a zigzag; --trace NAME a path.  Every option of qdot simulate\n"
+               "that shapes the motion applies too (--t-end, default 10, --dt, --rtol, --atol,\n"
+               "--method, --initial, --set, --input, --about, --lqr, --stop-at, --event,\n"
+               "--max-steps, --no-project, --no-speeds, --native, --precision; qdot simulate\n"
+               "--help).",
     .opts = opts,
     .groups = groups,
     .min_pos = 1,

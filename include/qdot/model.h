@@ -197,6 +197,24 @@ QD_API const qd_expr *qd_model_body_rotation(const qd_model *m, size_t i, unsign
 QD_API const qd_expr *qd_model_body_omega(const qd_model *m, size_t i, unsigned k);
 QD_API const qd_expr *qd_model_body_omega_space(const qd_model *m, size_t i, unsigned k);
 
+/* What a picture draws a body as (`shape BODY as ...`, docs/language.md). */
+typedef enum qd_body_shape {
+    QD_SHAPE_NONE, QD_SHAPE_ROD, QD_SHAPE_DISK, QD_SHAPE_RING, QD_SHAPE_SPHERE, QD_SHAPE_BOX
+} qd_body_shape;
+/* Body i's `shape` statement: its kind (QD_SHAPE_NONE when it has none or
+ * i is out of range); into size[0..2] (may be NULL) its sizes, expressions
+ * in the parameters owned by the model (a rod's length; a disk's, ring's
+ * or sphere's radius; a box's edges along body x, y, z; NULL when unused);
+ * into *axis (may be NULL) the body axis, 0 x, 1 y, 2 z, of a rod or of a
+ * disk's or ring's normal (2 for the others). */
+QD_API qd_body_shape qd_model_body_shape(const qd_model *m, size_t i, const qd_expr *size[3],
+                                         int *axis);
+/* The fixed plane body i's first `rolls BODY on plane(n, r0)` names (not a
+ * moving one: its picture's ground), n into n[0..2] and r0 into r0[0..2],
+ * owned by the model; false (n, r0 untouched) when it has none. */
+QD_API bool qd_model_body_ground(const qd_model *m, size_t i, const qd_expr *n[3],
+                                 const qd_expr *r0[3]);
+
 /* Hamiltonian models (`momenta p_r, ...` and `H = ...`).  The momenta are
  * plain symbols; `momenta` with T or L (no H) only names them. */
 QD_API bool qd_model_hamiltonian_given(const qd_model *m);

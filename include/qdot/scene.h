@@ -38,6 +38,13 @@ typedef struct qd_scene_point {
     /* a named position's component names ("x1", "y1", "z1" or "P1"), for
      * choosing it by any of them; "" when none */
     char comp[3][32];
+    /* a body's: its inertia (row-major, body axes) and `shape` statement
+     * (qd_model_body_shape); else NULL and QD_SHAPE_NONE */
+    const qd_expr *inertia[9];
+    qd_body_shape shape;
+    const qd_expr *size[3];
+    int axis;
+    const qd_expr *ground[6]; /* qd_model_body_ground's n, r0, or NULL */
 } qd_scene_point;
 
 /* Which points to take: bit 1 particles, 2 bodies, 4 named positions. */
@@ -173,6 +180,53 @@ QD_API qd_status qd_scene_record(qd_ctx *ctx, qd_sim *s, const qd_sim_opts *opts
 QD_API qd_status qd_scene_masses(qd_ctx *ctx, const qd_scene_point *pts, size_t n, size_t nsyms,
                                  const qd_expr *const *syms, const double *vals, double *mass);
 
+/* What a body is drawn as: its `shape` statement, else a slender rod when
+ * its inertia is one (diagonal, one moment 0 and the other two equal I:
+ * a rod of length sqrt(12 I / M) along the axis of the 0), else nothing
+ * (a dot with its body axes: a disk's moments are a ring's of another
+ * radius, a ball's a shell's or a cube's, so they are not guessed). */
+typedef struct qd_scene_look {
+    qd_body_shape shape;   /* QD_SHAPE_NONE for a particle, a position, an unknown shape */
+    double size[3];        /* as qd_model_body_shape's sizes, evaluated; 0 when unused */
+    int axis;              /* the rod's axis or the disk's or ring's normal (body 0, 1, 2) */
+    bool inferred;         /* from the inertia, not from a shape statement */
+    bool has_ground;       /* the body rolls on a fixed plane: */
+    double ground[6];      /* its normal n and a point r0 */
+} qd_scene_look;
+
+/* Each point's look (above) and the ground its `rolls` names, its sizes,
+ * inertia and ground evaluated at the values
+ * vals of the nsyms symbols syms (the parameters), into out[0, n).
+ * Errors: qd_eval's; QD_ERR_ARG for a shape's size that is not a positive
+ * number (the body named in the message). */
+QD_API qd_status qd_scene_looks(qd_ctx *ctx, const qd_scene_point *pts, size_t n, size_t nsyms,
+                                const qd_expr *const *syms, const double *vals,
+                                qd_scene_look *out);
+
+/* A plane x_axis = at that a point of a constrained model slides on (a
+ * floor, a wall): side +1 or -1 the side of x_axis the points' bodies are
+ * on (the solid lies on the other), 0 when both or none. */
+typedef struct qd_scene_wall {
+    int axis;
+    double at;
+    int side;
+} qd_scene_wall;
+
+/* The walls of a sampled motion (fr: qd_scene_sample's frames of pts, npts
+ * points; looks per point, or NULL): every plane x_k = c that a point keeps
+ * while it moves (to 1e-6 of the scene's size, as a rod its length: the
+ * frames are dense output between the projected steps; moving: 1e-3 of
+ * it), the points being each particle and named position and both ends of
+ * a body drawn as a rod (not a body's centre, which is off what it slides
+ * on); not the drawing plane (plane as qd_scene_links gives it).
+ * *walls malloc'd (free(); never NULL on success).  The caller decides
+ * whether the model constrains them (qd_scene_setup: a model with a
+ * constraint).  QD_ERR_NOMEM. */
+QD_API qd_status qd_scene_walls(qd_ctx *ctx, const qd_scene_point *pts,
+                                const qd_scene_look *looks, const qd_scene_frames *fr,
+                                size_t npts, const int plane[2], qd_scene_wall **walls,
+                                size_t *nwalls);
+
 typedef struct qd_scene_link {
     size_t a, b;           /* point indices, or QD_SCENE_ORIGIN */
     bool spring;           /* a zigzag the caller asked for; else a rigid rod */
@@ -197,22 +251,27 @@ typedef struct qd_scene {
     const qd_scene_point *pts;
     size_t npts;
     const double *mass;
+    const qd_scene_look *looks;   /* per point (qd_scene_looks), or NULL: none */
     const qd_scene_frames *fr;    /* the points at the frames (qd_scene_sample) */
     const qd_scene_link *links;
     size_t nlinks;
     const size_t *traces;
     size_t ntraces;
     int plane[2];                 /* qd_scene_links' plane */
+    const qd_scene_wall *walls;   /* qd_scene_walls' (may be NULL with nwalls 0) */
+    size_t nwalls;
     double energy_error_max;      /* the run's measure (qd_sim_stats) */
     bool conservative;            /* qd_sim_conservative */
 } qd_scene;
 
 /* The scene as one JSON object appended to out, the data of `qdot
  * animate`'s page: {"model", "method", "plane": [a, b], "conservative",
- * "energy_error_max", "points": [{"name", "body", "mass"}...], "links":
+ * "energy_error_max", "points": [{"name", "body", "mass"[, "shape": "rod",
+ * "disk", "ring", "sphere" or "box", "size": [3], "axis", "inferred"][,
+ * "ground": [nx, ny, nz, x0, y0, z0]]}...], "links":
  * [[a, b, spring]...] (an end -1 is the origin, spring 0 or 1), "traces":
- * [i...], "t": [per frame], "energy_error": [per frame] (only with the
- * frames' energy), "pos": [frame][point][x, y, z] flat, "rot":
+ * [i...], "walls": [[axis, at, side]...], "t": [per frame], "energy_error":
+ * [per frame] (only with the frames' energy), "pos": [frame][point][x, y, z] flat, "rot":
  * [frame][body][9] flat}.  Numbers to 7 significant digits (a picture
  * needs no more), null for one not finite; strings escape '"', '\', '<'
  * and control characters as \u00XX, so that the text may sit inside an
@@ -253,8 +312,10 @@ struct qd_sim_setup;
 QD_API qd_scene_setup *qd_scene_setup_new(qd_ctx *ctx, struct qd_sim_setup *set,
                                           const qd_model *m, const qd_scene_spec *sp);
 /* set's run from opts sampled at the frames (qd_scene_record), then its
- * links and drawing plane (qd_scene_links), the scene completed: method,
- * energy error, conservative.  stats (may be NULL) gets the run's.  Once (a
+ * links and drawing plane (qd_scene_links; 3-D instead when a body drawn
+ * as a shape turns about another axis than the plane's normal), for a
+ * model with a constraint its walls (qd_scene_walls), the scene completed:
+ * method, energy error, conservative.  stats (may be NULL) gets the run's.  Once (a
  * second call is QD_ERR_ARG); * the errors of qd_scene_record, or of the links (reason in ctx). */
 QD_API qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
                                        void (*progress)(void *data, double t), void *data,
@@ -275,6 +336,7 @@ QD_API void qd_scene_setup_free(qd_scene_setup *sc);
  * (ctx, skip); qd_scene_choose, qd_scene_named, qd_scene_pairs and
  * qd_scene_sample (ctx); qd_scene_masses and qd_scene_links (ctx, and
  * syms, vals or springs with a count of 0); qd_scene_json's arrays with a
- * count of 0, its model and method; qd_scene_setup_record (progress, data,
+ * count of 0, its model, method, looks and walls; qd_scene_walls (ctx, looks); qd_scene_looks (ctx, and syms,
+ * vals with a count of 0); qd_scene_setup_record (progress, data,
  * stats). An array whose count is 0 may be NULL. */
 #endif

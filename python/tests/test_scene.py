@@ -28,3 +28,23 @@ def test_rod_and_plane_from_frames():
     assert shape["plane"] == (0, 1)
     assert [(a, b) for a, b, _ in shape["rods"]] == [(-1, 0)]
     assert abs(shape["rods"][0][2] - 1) < 1e-12
+
+
+def test_bodies_drawn_as_their_shapes():
+    # Desloge ch. 50 Problem 1: rods read off their inertia rod(m, l), meeting at
+    # the hinge at every frame; Byerly Art. 9c: the disk of its shape line on the
+    # incline its `rolls` names
+    a = qdot.Model.load(os.path.join(EX, "double_rod_pendulum.qd")).animate(1)
+    rods = a.json["points"]
+    assert [(p["shape"], p["size"][0], p["axis"]) for p in rods] == [("rod", 1.2, 2),
+                                                                     ("rod", 0.9, 2)]
+    pos = np.array(a.json["pos"]).reshape(-1, 2, 3)
+    rot = np.array(a.json["rot"]).reshape(-1, 2, 3, 3)
+    ends = [pos[:, i] + s * rods[i]["size"][0] / 2 * rot[:, i, :, 2]
+            for i in (0, 1) for s in (-1, 1)]
+    hinge = np.min([np.linalg.norm(ends[i] - ends[j], axis=1) for i in (0, 1) for j in (2, 3)],
+                   axis=0)
+    assert hinge.max() < 1e-5  # the page's 7 digits
+    d = qdot.Model.load(os.path.join(EX, "disk_incline_shape.qd")).animate(1).json["points"][0]
+    assert d["shape"] == "disk" and d["size"][0] == 0.3 and not d["inferred"]
+    assert np.allclose(d["ground"], [np.sin(0.3), np.cos(0.3), 0, 0, 0, 0], atol=1e-7)

@@ -322,6 +322,28 @@ const qd_expr *qd_model_body_inertia(const qd_model *m, size_t i, unsigned row, 
     return b && row < 3 && col < 3 ? b->I[3 * row + col] : NULL;
 }
 
+qd_body_shape qd_model_body_shape(const qd_model *m, size_t i, const qd_expr *size[3],
+                                  int *axis) {
+    QD_ARGS(QD_SHAPE_NONE, m);
+    const body *b = body_at(m, i);
+    for (int k = 0; size && k < 3; k++)
+        size[k] = b ? b->size[k] : NULL;
+    if (axis)
+        *axis = b && b->shape ? b->axis : 2;
+    return b ? (qd_body_shape)b->shape : QD_SHAPE_NONE;
+}
+
+bool qd_model_body_ground(const qd_model *m, size_t i, const qd_expr *n[3],
+                          const qd_expr *r0[3]) {
+    QD_ARGS(false, m && n && r0);
+    const body *b = body_at(m, i);
+    if (!b || !b->ground[0])
+        return false;
+    memcpy(n, b->ground, 3 * sizeof *n);
+    memcpy(r0, b->ground + 3, 3 * sizeof *r0);
+    return true;
+}
+
 const qd_expr *qd_model_body_position(const qd_model *m, size_t i, unsigned k) {
     QD_ARGS(NULL, m);
     const body *b = body_at(m, i);

@@ -34,6 +34,10 @@ typedef struct body {
     const qd_expr *R[9];   /* body components -> space components */
     const qd_expr *w[3];   /* angular velocity, body axes (simplified) */
     const qd_expr *ws[3];  /* angular velocity, space axes: R w (simplified) */
+    int shape;             /* qd_body_shape: `shape BODY as ...` (shape.c), else NONE */
+    const qd_expr *size[3]; /* its sizes (qd_model_body_shape) */
+    int axis;              /* a rod's axis, a disk's or ring's normal: 0 x, 1 y, 2 z */
+    const qd_expr *ground[6]; /* the fixed plane its first `rolls` names: n, r0; else NULL */
 } body;
 
 /* `reaction [LABEL:] CON on r`: the force of constraint con at the point r
@@ -351,6 +355,7 @@ bool qd__mdl_parse_constant(parser *p, const qd_expr **def, const qd_expr **out,
 
 /* reaction.c */
 bool qd__mdl_stmt_rolls(parser *p);     /* roll.c */
+bool qd__mdl_stmt_shape(parser *p);     /* shape.c */
 bool qd__mdl_stmt_reaction(parser *p);
 
 /* The body the current token names (consumed), or NULL after an error

@@ -555,5 +555,10 @@ bool qd__mdl_stmt_rolls(parser *p) {
     size_t idx[3];
     if (!generate(p, &r, idx))
         return false;
+    body *b = (body *)(size_t)r.b; /* the model's own: the plane kept for pictures */
+    if (r.surf == ON_PLANE && !r.moving && !b->ground[0]) {
+        memcpy(b->ground, r.n, sizeof r.n);
+        memcpy(b->ground + 3, r.r0, sizeof r.r0);
+    }
     return !friction || add_friction(p, &r, &fc, idx);
 }

@@ -744,7 +744,7 @@ static const struct stmt_kw {
     {"inputs", qd__mdl_stmt_inputs, true},      {"outputs", qd__mdl_stmt_outputs, true},
     {"inductance", qd__mdl_stmt_inductance, true}, {"capacitance", qd__mdl_stmt_capacitance, true},
     {"resistance", qd__mdl_stmt_resistance, true}, {"source", qd__mdl_stmt_source, true},
-    {"friction", qd__mdl_stmt_friction, true},
+    {"friction", qd__mdl_stmt_friction, true},  {"shape", qd__mdl_stmt_shape, true},
 };
 #define NSTATEMENTS (sizeof statements / sizeof statements[0])
 
@@ -760,14 +760,15 @@ static bool unknown_statement(parser *p) {
     else {
         /* spaces, not commas: with the circuit statements the whole list
          * fills the 255 bytes of a diagnostic's hint, so inputs, outputs,
-         * friction, field and boundary are left to "did you mean" above */
+         * friction, field, boundary and shape are left to "did you mean" above */
         size_t n = (size_t)snprintf(hint, sizeof hint, "a statement starts with a keyword (");
         for (size_t i = 0; i < NSTATEMENTS && n < sizeof hint; i++)
             if (statements[i].parse != qd__mdl_stmt_inputs &&
                 statements[i].parse != qd__mdl_stmt_outputs &&
                 statements[i].parse != qd__mdl_stmt_friction &&
                 statements[i].parse != qd__mdl_stmt_field &&
-                statements[i].parse != qd__mdl_stmt_boundary)
+                statements[i].parse != qd__mdl_stmt_boundary &&
+                statements[i].parse != qd__mdl_stmt_shape)
                 n += (size_t)snprintf(hint + n, sizeof hint - n, "%s%s", i ? " " : "", words[i]);
         if (n < sizeof hint)
             snprintf(hint + n, sizeof hint - n, ") or NAME = ...");

@@ -85,13 +85,26 @@ static void json_numbers(qd_buf *b, const char *key, const double *v, size_t n) 
     qd_buf_puts(b, "]");
 }
 
+/* A body's ground and shape, when it has them: ,"ground":[6],"shape":"rod","size":[l,0,0],"axis":2,... */
+static void json_look(qd_buf *b, const qd_scene_look *l) {
+    static const char *const names[] = {"", "rod", "disk", "ring", "sphere", "box"};
+    if (l && l->has_ground)
+        json_numbers(b, "ground", l->ground, 6);
+    if (!l || l->shape <= QD_SHAPE_NONE || l->shape > QD_SHAPE_BOX)
+        return;
+    qd_buf_printf(b, ",\"shape\":\"%s\"", names[l->shape]);
+    json_numbers(b, "size", l->size, 3);
+    qd_buf_printf(b, ",\"axis\":%d,\"inferred\":%s", l->axis, l->inferred ? "true" : "false");
+}
+
 static long link_end(size_t i) {
     return i == QD_SCENE_ORIGIN ? -1 : (long)i;
 }
 
 qd_status qd_scene_json(const qd_scene *s, qd_buf *out) {
     QD_ARGS(QD_ERR_ARG, s && out && s->fr && (s->pts || !s->npts) && (s->mass || !s->npts) &&
-                            (s->links || !s->nlinks) && (s->traces || !s->ntraces));
+                            (s->links || !s->nlinks) && (s->traces || !s->ntraces) &&
+                            (s->walls || !s->nwalls));
     const qd_scene_frames *fr = s->fr;
     QD_ARGS(QD_ERR_ARG, (fr->t || !fr->nframes) && (fr->pos || !fr->nframes || !s->npts) &&
                             (fr->rot || !fr->nframes || !fr->nbodies));
@@ -106,8 +119,10 @@ qd_status qd_scene_json(const qd_scene *s, qd_buf *out) {
     for (size_t i = 0; i < s->npts; i++) {
         qd_buf_puts(out, i ? ",{\"name\":" : "{\"name\":");
         json_name(out, s->pts[i].name);
-        qd_buf_printf(out, ",\"body\":%s,\"mass\":%.7g}",
+        qd_buf_printf(out, ",\"body\":%s,\"mass\":%.7g",
                       s->pts[i].kind == QD_SCENE_BODY ? "true" : "false", s->mass[i]);
+        json_look(out, s->looks ? &s->looks[i] : NULL);
+        qd_buf_puts(out, "}");
     }
     qd_buf_puts(out, "],\"links\":[");
     for (size_t k = 0; k < s->nlinks; k++)
@@ -116,6 +131,10 @@ qd_status qd_scene_json(const qd_scene *s, qd_buf *out) {
     qd_buf_puts(out, "],\"traces\":[");
     for (size_t k = 0; k < s->ntraces; k++)
         qd_buf_printf(out, "%s%zu", k ? "," : "", s->traces[k]);
+    qd_buf_puts(out, "],\"walls\":[");
+    for (size_t k = 0; k < s->nwalls; k++)
+        qd_buf_printf(out, "%s[%d,%.7g,%d]", k ? "," : "", s->walls[k].axis, s->walls[k].at,
+                      s->walls[k].side);
     qd_buf_puts(out, "]");
     json_numbers(out, "t", fr->t, fr->nframes);
     if (fr->energy)

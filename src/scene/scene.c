@@ -128,6 +128,10 @@ qd_status qd_scene_points(qd_ctx *ctx, const qd_model *m, unsigned which, qd_sce
         q->mass = qd_model_body_mass(m, b);
         for (unsigned k = 0; k < 3; k++)
             q->pos[k] = or_zero(c, qd_model_body_position(m, b, k));
+        for (unsigned k = 0; k < 9; k++)
+            q->inertia[k] = qd_model_body_inertia(m, b, k / 3, k % 3);
+        q->shape = qd_model_body_shape(m, b, q->size, &q->axis);
+        qd_model_body_ground(m, b, q->ground, q->ground + 3);
     }
     if (nn)
         positions(c, m, p + np + nb);

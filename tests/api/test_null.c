@@ -2870,6 +2870,26 @@ static void null_model(void **state)
     /* m NULL */
     assert_null(qd_model_body_omega_space(NULL, 1, 1));
     reset(&F);
+    /* ---- qd_model_body_shape */
+    /* m NULL */
+    (void)qd_model_body_shape(NULL, 1, (const qd_expr * *)F.e, F.i);
+    reset(&F);
+    /* size NULL */
+    (void)qd_model_body_shape(F.model, 1, NULL, F.i);
+    reset(&F);
+    /* axis NULL */
+    (void)qd_model_body_shape(F.model, 1, (const qd_expr * *)F.e, NULL);
+    reset(&F);
+    /* ---- qd_model_body_ground */
+    /* m NULL */
+    assert_true(qd_model_body_ground(NULL, 1, (const qd_expr * *)F.e, (const qd_expr * *)F.e) == 0);
+    reset(&F);
+    /* n NULL */
+    assert_true(qd_model_body_ground(F.model, 1, NULL, (const qd_expr * *)F.e) == 0);
+    reset(&F);
+    /* r0 NULL */
+    assert_true(qd_model_body_ground(F.model, 1, (const qd_expr * *)F.e, NULL) == 0);
+    reset(&F);
     /* ---- qd_model_hamiltonian_given */
     /* m NULL */
     assert_true(qd_model_hamiltonian_given(NULL) == 0);
@@ -5063,6 +5083,35 @@ static void null_scene(void **state)
     reset(&F);
     /* mass NULL */
     assert_int_equal(QD_ERR_ARG, qd_scene_masses(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_scene_looks */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(NULL, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, NULL, F.d, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, NULL, (qd_scene_look *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_looks(F.ctx, NULL, 1, 1, (const qd_expr * const *)F.e, F.d, NULL));
+    reset(&F);
+    /* ---- qd_scene_walls */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(NULL, NULL, NULL, NULL, 1, F.i, NULL, F.z));
+    reset(&F);
+    /* pts NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(F.ctx, NULL, NULL, NULL, 1, F.i, NULL, F.z));
+    reset(&F);
+    /* plane NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(F.ctx, NULL, NULL, NULL, 1, NULL, NULL, F.z));
+    reset(&F);
+    /* nwalls NULL */
+    assert_int_equal(QD_ERR_ARG, qd_scene_walls(F.ctx, NULL, NULL, NULL, 1, F.i, NULL, NULL));
     reset(&F);
     /* ---- qd_scene_links */
     /* ctx NULL */
