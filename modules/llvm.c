@@ -21,6 +21,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -105,8 +106,12 @@ static LLVMValueRef prodn(build *s, const uint32_t *a) {
 static LLVMValueRef instruction(build *s, const qd_prog *p, const instr *i,
                                 const qd__jit_env *env) {
     LLVMBuilderRef b = s->b;
-    LLVMValueRef x = s->v[i->arg[0]], y = s->v[i->arg[1]], zero = LLVMConstReal(s->d, 0.0);
-    const uint32_t *a = p->opnd + i->arg[0];
+    /* ADD3, MUL3, SUMN and PRODN find their registers in the operand
+     * list at arg[0]; the others read the registers arg[0] and arg[1] */
+    bool nary = i->op == OP_ADD3 || i->op == OP_MUL3 || i->op == OP_SUMN || i->op == OP_PRODN;
+    const uint32_t *a = nary ? p->opnd + i->arg[0] : NULL;
+    LLVMValueRef x = nary ? NULL : s->v[i->arg[0]], y = nary ? NULL : s->v[i->arg[1]];
+    LLVMValueRef zero = LLVMConstReal(s->d, 0.0);
     switch ((op)i->op) {
     case OP_ADD: return LLVMBuildFAdd(b, x, y, "");
     case OP_SUB: return LLVMBuildFSub(b, x, y, "");
