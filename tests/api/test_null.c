@@ -404,6 +404,19 @@ static void null_canonical(void **state)
     /* err NULL */
     assert_null(qd_phase_read(F.ctx, NULL, "q", NULL));
     reset(&F);
+    /* ---- qd_phase_read_h */
+    /* ctx NULL */
+    assert_null(qd_phase_read_h(NULL, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_null(qd_phase_read_h(F.ctx, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_phase_read_h(F.ctx, NULL, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* err NULL */
+    assert_null(qd_phase_read_h(F.ctx, NULL, "q", NULL));
+    reset(&F);
     /* ---- qd_phase_read_list */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_phase_read_list(NULL, NULL, "q", (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
