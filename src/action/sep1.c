@@ -12,7 +12,6 @@
 
 #include "base/mem.h"
 #include "base/ptrmap.h"
-#include "mech/mech.h"
 
 /* ---- the separation ------------------------------------------------------------ */
 
@@ -33,9 +32,7 @@ static const qd_expr *p_squared_even(qd_ctx *ctx, const qd_ham *h, const qd_expr
     const qd_expr *u = qd_symbol_positive(ctx, name, QD_ROLE_PLAIN), *su = qd_sqrt(ctx, u);
     const qd_expr *eq = qd_simplify(ctx, qd_sub(ctx, qd_subs(ctx, H, 1, &p, &su), E));
     const qd_expr *sol = NULL;
-    size_t failed = 0;
-    if (!eq || qd_has(eq, p) || qd__mech_isolate(ctx, 1, &eq, &u, &sol, &failed) != QD_OK ||
-        !sol || qd_has(sol, u)) {
+    if (!eq || qd_has(eq, p) || qd_isolate(ctx, eq, u, &sol) != QD_OK || qd_has(sol, u)) {
         qd_ctx_clear_error(ctx);
         return NULL;
     }

@@ -2549,6 +2549,19 @@ static void null_mech(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_audit(F.ctx, F.model, F.eom, NULL));
     reset(&F);
+    /* ---- qd_isolate */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(NULL, F.q, F.q, (const qd_expr * *)F.e));
+    reset(&F);
+    /* eq NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(F.ctx, NULL, F.q, (const qd_expr * *)F.e));
+    reset(&F);
+    /* y NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(F.ctx, F.q, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* sol NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(F.ctx, F.q, F.q, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -4694,6 +4707,10 @@ static void null_scatter(void **state)
     /* ---- qd_scatter_free */
     /* s NULL */
     qd_scatter_free(NULL);
+    reset(&F);
+    /* ---- qd_scatter_set_absorbing */
+    /* s NULL */
+    qd_scatter_set_absorbing(NULL, false);
     reset(&F);
     /* ---- qd_scatter_potential */
     /* s NULL */
