@@ -151,6 +151,20 @@ _gb = [
 
 # an orbit off the origin closes on itself: advance 0, precession 0 (REPORT section 5)
 _extra = [
+    ("B19 one path at the envelope", "seed-goldstein-britannica.md B19: at O' = (0.5773503, "
+     "0.3333333), on the envelope for v^2/g = 1, the two paths of the energy coincide",
+     ["path", "gb_b19.qd", "--from", "x=0, y=0", "--to", "x=1/sqrt(3), y=1/3", "--energy", "0.5",
+      "--all"], r"paths: (\d+)", 1, 0),
+    ("B19 two paths inside the envelope", "seed-goldstein-britannica.md B19 and G's projectile: "
+     "inside y < v^2/(2g) - g x^2/(2 v^2) two paths of one energy, the low and the high lob",
+     ["path", "gb_b19.qd", "--from", "x=0, y=0", "--to", "x=0.3, y=0.3", "--energy", "0.5",
+      "--all"], r"paths: (\d+)", 2, 0),
+    ("B19 the high lob 54 times longer", "the projectile's two flights at speed v through "
+     "(X, Y): T^2 = 2 (v^2 - g Y +- sqrt((v^2 - g Y)^2 - g^2 (X^2 + Y^2)))/g^2 (the two roots "
+     "of the seed's launch angles); here X = 2, Y = -1, v^2 = 60, g = 1 (issue 33)",
+     ["path", "gb_b19.qd", "--from", "x=0, y=0", "--to", "x=2, y=-1", "--energy", "30",
+      "--all"], r"time: \S+\n(?:.*\n)*?  time: (\S+)",
+     sqrt(2 * (60 + 1 + sqrt(61 ** 2 - 5))), 1e-9),
     ("cyclotron circle off the origin", "Goldstein sec. 1.5 (the Lorentz force): a circle "
      "that does not enclose the origin sweeps no net angle",
      ["orbit", "x_cyc.qd", "--ignore", "th"], r"precession per period: th (\S+)", 0.0, 1e-12),
