@@ -2,9 +2,9 @@
  * cli/cmd_bracket.c - `qdot bracket FILE F G`: the Poisson bracket [F, G]
  * (qd_bracket) in the model's canonical variables (qd_phase); `--dt F`
  * gives dF/dt along the motion (qd_phase_dt: [F, H], the explicit t and the
- * forces' part; for an implicit H in q' too).  F and G are expressions, so
- * "-x" is one and `--` ends the options.  Written by qd_phase_bracket_print
- * (qdot/canonical.h).
+ * forces' part; for an implicit H in q' too).  F and G are expressions (H
+ * the model's Hamiltonian), so "-x" is one and `--` ends the options.
+ * Written by qd_phase_bracket_print (qdot/canonical.h).
  */
 #include "driver.h"
 
@@ -28,11 +28,11 @@ static const cli_spec spec = {
     opts, NULL, 2, 3, "FILE and expressions", true,
 };
 
-/* Read what (F or G) as a function on phase space; the error shown in it. */
-static int read_fn(qd_ctx *ctx, const qd_phase *ph, const char *what, const char *text,
+/* Read what (F or G, H the model's H) on phase space; the error shown in it. */
+static int read_fn(qd_ctx *ctx, qd_phase *ph, const char *what, const char *text,
                    const qd_expr **out) {
     qd_diag err;
-    if ((*out = qd_phase_read(ctx, ph, text, &err)))
+    if ((*out = qd_phase_read_h(ctx, ph, text, &err)))
         return QD_EXIT_OK;
     cli_diag_read(what, text, &err);
     return cli_exit(err.status);

@@ -1,8 +1,7 @@
 /*
- * cli/cmd_scatter.c - `qdot scatter FILE --energy E --b B | --theta TH |
- * --lab-theta TH`: classical scattering by the central potential of a model
- * in a plane (qd_scatter_read, qd_scatter_answer_query, qd_scatter_render;
- * qdot/scatter.h, Desloge ch. 60-61).
+ * cli/cmd_scatter.c - `qdot scatter`: classical scattering by the central
+ * potential of a model in a plane (qd_scatter_read, qd_scatter_answer_query,
+ * qd_scatter_render; qdot/scatter.h, Desloge ch. 60-61).
  */
 #include "driver.h"
 
@@ -25,8 +24,9 @@ static const cli_opt opts[] = {
      "one laboratory angle (with --masses): every CM angle that reaches it", NULL, NULL},
     {"--masses", NULL, CLI_TEXT, T(masses), "m1,m2",
      "projectile and target at rest: the laboratory frame", NULL, NULL},
-    {"--core", NULL, CLI_TEXT, T(core), "A", "a hard core of radius A (an exact wall)", NULL,
-     NULL},
+    {"--core", NULL, CLI_TEXT, T(core), "A", "a hard core of radius A (a wall)", NULL, NULL},
+    {"--absorbing", NULL, CLI_FLAG, T(absorbing), NULL, "the core absorbs: capture", NULL, NULL},
+    {"--recoil", NULL, CLI_FLAG, T(recoil), NULL, "count the target too (identical)", NULL, NULL},
     {"--ignore", NULL, CLI_TEXT, offsetof(sc_args, ignore), "Q",
      "the cyclic angle, when two coordinates are cyclic", NULL, NULL},
     CLI_OPT_SET(sc_args, sets),

@@ -192,6 +192,12 @@ QD_API qd_status qd_phase_new_vars(qd_ctx *ctx, qd_phase *ph);
  * NULL on failure with the reason in *err, located in text. */
 QD_API const qd_expr *qd_phase_read(qd_ctx *ctx, const qd_phase *ph, const char *text,
                                     qd_diag *err);
+/* As qd_phase_read, and the name H, unless the model names something H,
+ * stands for the model's Hamiltonian in closed form (qd_phase_ham, derived
+ * when needed; an implicit H is refused): what `qdot bracket F H` reads.
+ * NULL on failure with the reason in *err. */
+QD_API const qd_expr *qd_phase_read_h(qd_ctx *ctx, qd_phase *ph, const char *text,
+                                      qd_diag *err);
 /* "E1, E2, ..." (split at the commas outside parentheses): exactly ph->n
  * expressions into out, each as qd_phase_read; the error in *err located
  * in the whole text (QD_ERR_ARG for the wrong count). */

@@ -91,6 +91,10 @@ typedef struct qd_hj {
     /* W = sum_k int p_k dq_k: closed forms where the kernel integrates,
      * integral(EXPR, VAR) otherwise; NULL when not separable */
     const qd_expr *W;
+    /* an explicit t with every coordinate cyclic (form "cyclic, explicit t"):
+     * S = W + time_part, time_part = f(t) = -int_0^t H(alpha, t') dt', and
+     * qd_hj_solve's motion is q_k = beta_k - df/dalpha_k; NULL otherwise */
+    const qd_expr *time_part;
     bool solved;               /* qd_hj_solve has filled motion, clock and beta */
 } qd_hj;
 

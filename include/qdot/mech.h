@@ -234,6 +234,12 @@ typedef struct qd_audit {
 /* QD_ERR_UNBOUND when a parameter has no number; QD_ERR_NOMEM. */
 QD_API qd_status qd_eom_audit(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_audit *out);
 
+/* Solve eq = 0 for y in closed form by isolating it (src/mech/isolate.c:
+ * what is done to y undone, outermost first, on principal branches, so a
+ * squaring's condition is the caller's to check).  The solution in *sol,
+ * free of y; QD_ERR_NONLINEAR, ctx clean, when y does not isolate. */
+QD_API qd_status qd_isolate(qd_ctx *ctx, const qd_expr *eq, const qd_expr *y, const qd_expr **sol);
+
 #ifdef __cplusplus
 }
 #endif

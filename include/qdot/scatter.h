@@ -60,6 +60,12 @@ QD_API qd_scatter *qd_scatter_new(qd_ctx *ctx, const qd_expr *V, const qd_expr *
 QD_API qd_scatter *qd_scatter_from_model(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                          const char *ignore, double core, double *mass);
 QD_API void qd_scatter_free(qd_scatter *s);
+/* Make the hard core absorb what reaches it (on) or reflect it (off, the
+ * default): an orbit that meets r = core is then captured, and the capture
+ * cross section pi b_c^2 has b_c^2 = min over r >= core of r^2 (1 - V/E)
+ * (Desloge ch. 60 P5: pi a^2 (1 + k/(E a^n)) for -k/r^n when the core a is
+ * outside the barrier).  No effect without a core. */
+QD_API void qd_scatter_set_absorbing(qd_scatter *s, bool on);
 
 QD_API const qd_expr *qd_scatter_potential(const qd_scatter *s); /* V(r) */
 QD_API const qd_expr *qd_scatter_radius(const qd_scatter *s);    /* r */
@@ -194,7 +200,11 @@ typedef struct qd_scatter_query {
     qd_scatter_at at;
     double b, theta, lab_theta;
     double core;         /* the hard core's radius (for qd_scatter_from_model), 0: none */
+    bool absorbing;      /* the core absorbs (qd_scatter_set_absorbing) */
     bool masses;         /* m1 (projectile) and m2 (target at rest) given */
+    bool recoil;         /* count the recoiling target too (identical particles, both
+                            detected): the lab cross section adds the CM angle
+                            pi - 2 theta_lab through the recoil's Jacobian */
     double m1, m2;
 } qd_scatter_query;
 
@@ -206,6 +216,7 @@ typedef struct qd_scatter_query {
  * masses that are not two positive numbers. */
 typedef struct qd_scatter_text {
     const char *energy, *b, *theta, *lab_theta, *core, *masses;
+    bool absorbing, recoil; /* copied to the query */
 } qd_scatter_text;
 QD_API qd_status qd_scatter_read(qd_ctx *ctx, const qd_model *m, const qd_scatter_text *text,
                                  qd_scatter_query *out);
@@ -216,14 +227,17 @@ typedef struct qd_scatter_answer {
     qd_scatter_section section;    /* at theta, or at the orbit's angle; sigma NaN: none */
     size_t ncm;                    /* AT_LAB: the CM angles that reach lab_theta */
     double cm[2], cm_sigma[2], cm_jacobian[2];
-    double lab_sigma;              /* AT_LAB, or masses: the lab cross section (NaN: none) */
+    double lab_sigma;              /* AT_LAB, or masses: the lab cross section (NaN: none),
+                                      the recoil's part included when q.recoil */
+    double recoil_sigma;           /* q.recoil: the recoil's part of lab_sigma (0 beyond
+                                      pi/2, where no recoil goes; NaN: not counted) */
     bool lab;                      /* masses and a CM angle in [0, pi]: lab_map holds */
     qd_scatter_lab lab_map;
     size_t lab_ncm;                /* the CM angles summed into lab_sigma */
     qd_scatter_features features;
 } qd_scatter_answer;
 
-/* Answer q for s.  The errors of qd_scatter_deflect, _section_at and
+/* Answer q for s (made absorbing as q says).  The errors of qd_scatter_deflect, _section_at and
  * _features_at. */
 QD_API qd_status qd_scatter_answer_query(qd_ctx *ctx, qd_scatter *s, const qd_scatter_query *q,
                                          qd_scatter_answer *out);

@@ -834,7 +834,7 @@ class Model:
             lib.qd_impulse_free(res)
 
     def scatter(self, energy, b=None, theta=None, lab_theta=None, masses=None, core=None,
-                ignore=None):
+                ignore=None, absorbing=False, recoil=False):
         """Classical scattering by a central potential (`qdot scatter`,
         qd_scatter_read, qd_scatter_answer_query and qd_scatter_render): a
         qdot.Output with the keys of `qdot scatter --format json` (model,
@@ -843,7 +843,9 @@ class Model:
         glories, orbiting, capture_cross_section, ...).  energy (> 0) and
         one of b (impact parameter), theta (a centre-of-mass angle) or
         lab_theta (with masses "m1,m2" or (m1, m2)); core: a hard core's
-        radius; ignore: the cyclic angle when two are cyclic.  Values are
+        radius (absorbing: it captures what reaches it); recoil: count the
+        target too (identical particles); ignore: the cyclic angle when two
+        are cyclic.  Values are
         numbers or expressions in the parameters, as the options take them."""
         cr = self._for("scatter")
         if isinstance(masses, (list, tuple)):
@@ -852,6 +854,7 @@ class Model:
                 "core": core, "masses": masses}
         keep = {k: _commands.text_arg(v, k) for k, v in vals.items()}
         t = new("qd_scatter_text", {k: (ffi.NULL if v is None else v) for k, v in keep.items()})
+        t.absorbing, t.recoil = bool(absorbing), bool(recoil)
         q = new("qd_scatter_query")
         cr.check(lib.qd_scatter_read(cr.ctx, cr.model, t, q))
         ign = _commands.text_arg(ignore, "ignore")

@@ -401,6 +401,27 @@ def test_scatter_rutherford():
                        "--masses", "1,2"))
 
 
+
+def test_scatter_absorbing_and_recoil(tmp_path):
+    # Desloge ch. 60 P5 (seed-desloge-B.md T19): an absorbing sphere a >= r*
+    # in -k/r^4 captures pi a^2 (1 + k/(E a^4)); ch. 61 P3 (T23): two protons,
+    # both counted, Q = (k/E_lab)^2 (sin^-4 + cos^-4) cos, E_lab = 2 E here
+    path = model_file(tmp_path, "coordinates r, ph\nparameters m = 1, k = 1\n"
+                      "particle m at (r*cos(ph), r*sin(ph))\nV = -k/r^4\n")
+    m = qdot.Model.load(path)
+    out = m.scatter(1, b=0.5, core=1.5, absorbing=True)
+    assert out.kind == "captured"
+    assert out.capture_cross_section == pytest.approx(math.pi * 2.25 * (1 + 1 / 1.5 ** 4),
+                                                      rel=1e-10)
+    same(out.json, cli("scatter", path, "--energy", "1", "--b", "0.5", "--core", "1.5",
+                       "--absorbing"))
+    ru = qdot.Model.load(os.path.join(EXAMPLES, "rutherford.qd"))
+    lab = ru.scatter(1, lab_theta=0.5, masses="2,2", recoil=True)
+    El, c, s_ = 2.0, math.cos(0.5), math.sin(0.5)   # reduced mass m = 1 of two m = 2
+    assert lab.lab_cross_section == pytest.approx((1 / El) ** 2 * (s_ ** -4 + c ** -4) * c,
+                                                  rel=1e-7)
+
+
 # ---- path --------------------------------------------------------------------
 
 FREE = """coordinates x

@@ -242,6 +242,17 @@ static qd_status one_coord(qd_ctx *ctx, const qd_hj *h, size_t k, bool angle, co
     if (!qd__act_fn_init(ctx, &f, h->sep[k].p2, h->sep[k].q, h->nconst, h->constants, cv, nvals,
                          syms, vals))
         return qd_ctx_status(ctx);
+    double p0, p2 = qd__act_p2(&f, q0);
+    if (lookup(h->sep[k].p, nvals, syms, vals, &p0) &&
+        !(fabs(p2 - p0 * p0) <= 1e-8 * (1 + p0 * p0 + fabs(p2)))) {
+        /* a separation on the wrong branch (sep1.c) would take the action
+         * of another motion: never silently */
+        qd_ctx_error(ctx, QD_ERR_NUMERIC, "the separated %s^2 = %.12g at the state, where "
+                     "%s^2 = %.12g: the separation does not hold on this motion's branch",
+                     qd_expr_name(h->sep[k].p), p2, qd_expr_name(h->sep[k].p), p0 * p0);
+        qd__act_fn_free(&f);
+        return QD_ERR_NUMERIC;
+    }
     qd__act_cycle c;
     qd_act_fail why = qd__act_cycle_find(&f, q0, angle, &c);
     qd_status st = QD_OK;

@@ -1,16 +1,43 @@
 /*
  * src/action/sep1.c - one degree of freedom, separated without qd_hj:
  * H(q, p) = a(q) p^2 + c(q) = E is its own separated equation, with
- * p^2 = (E - c(q)) / a(q) (Desloge ch. 79: the energy is the one constant
+ * p^2 = (E - c(q)) / a(q), or p^2 isolated from H = E when H is even in p
+ * (Desloge ch. 79: the energy is the one constant
  * of a conservative system with one coordinate).  Also which coordinates
  * are angles, for every separation.
  */
 #include "act.h"
 
+#include <stdio.h>
+
 #include "base/mem.h"
 #include "base/ptrmap.h"
 
 /* ---- the separation ------------------------------------------------------------ */
+
+/* H even in p but not a p^2 + c (the relativistic oscillator H =
+ * sqrt(p^2 + 1) + x^2/2, Desloge D T25): H(q, p) = E solved for u = p^2 by
+ * isolating it (p = sqrt(u), u > 0).  Isolation squares on principal
+ * branches (sqrt(A) = B gives A = B^2, true only where B >= 0), so the
+ * result is checked where the motion is: one_coord (action.c) refuses a
+ * p^2(q) that does not give the state's p.  NULL, ctx clean, when H is not
+ * even or u does not isolate. */
+static const qd_expr *p_squared_even(qd_ctx *ctx, const qd_ham *h, const qd_expr *E) {
+    const qd_expr *p = h->p[0], *H = h->H, *mp = qd_neg(ctx, p);
+    const qd_expr *odd = qd_simplify(ctx, qd_sub(ctx, qd_subs(ctx, H, 1, &p, &mp), H));
+    if (!odd || !qd_is_zero(odd))
+        return NULL;
+    char name[256];
+    snprintf(name, sizeof name, "__%s_squared", qd_expr_name(p));
+    const qd_expr *u = qd_symbol_positive(ctx, name, QD_ROLE_PLAIN), *su = qd_sqrt(ctx, u);
+    const qd_expr *eq = qd_simplify(ctx, qd_sub(ctx, qd_subs(ctx, H, 1, &p, &su), E));
+    const qd_expr *sol = NULL;
+    if (!eq || qd_has(eq, p) || qd_isolate(ctx, eq, u, &sol) != QD_OK || qd_has(sol, u)) {
+        qd_ctx_clear_error(ctx);
+        return NULL;
+    }
+    return qd_simplify(ctx, sol);
+}
 
 /* p^2 = (E - c)/a from H = a p^2 + b p + c with b = 0. */
 static const qd_expr *p_squared(qd_ctx *ctx, const qd_ham *h, const qd_expr *E) {
@@ -24,6 +51,10 @@ static const qd_expr *p_squared(qd_ctx *ctx, const qd_ham *h, const qd_expr *E) 
         ctx, qd_sub(ctx, H, qd_add(ctx, qd_mul(ctx, a, qd_powi(ctx, p, 2)), c)));
     if (!rest)
         return NULL;
+    /* c(q) holds p too when H is not polynomial in it */
+    const qd_expr *even = qd_is_zero(rest) && !qd_has(c, p) ? NULL : p_squared_even(ctx, h, E);
+    if (even)
+        return even;
     if (!qd_is_zero(rest) || qd_is_zero(a)) {
         qd_ctx_error(ctx, QD_ERR_NONLINEAR, "H is not a(q) %s^2 + c(q)", qd_expr_name(p));
         /* the hint says which it is: a relativistic H has no linear term,
@@ -31,8 +62,9 @@ static const qd_expr *p_squared(qd_ctx *ctx, const qd_ham *h, const qd_expr *E) 
         const char *why =
             !qd_is_zero(b) ? "a term linear in the momentum (a gyroscopic or moving frame) "
                              "makes the action depend on the sense of the motion"
-            : qd_has(c, p) ? "the momentum enters H beyond its square (a relativistic H): "
-                             "`qdot simulate` gives the period of such a motion"
+            : qd_has(c, p) ? "the momentum enters H beyond its square, and H is not even in "
+                             "it or p^2 does not isolate from H = E: `qdot simulate` gives "
+                             "the period of such a motion"
                            : "H does not depend on the momentum's square";
         qd_ctx_error_about(ctx, QD_SUBJECT_COORD, 0, qd_expr_name(h->q[0]),
                            QD_REASON_NOT_QUADRATIC, why);

@@ -167,8 +167,11 @@ static qd_status fill(qd_ctx *ctx, const qd_model *m, const qd_hj_opts *opts, qd
     h->time_independent = !qd_has(h->H, qd_time(ctx));
     if (!h->time_independent) {
         snprintf(h->why, sizeof h->why, "H depends on t explicitly: only the time-independent "
-                 "equation H(q, dW/dq) = E is separated here");
-        return QD_OK;
+                 "equation H(q, dW/dq) = E, or every coordinate cyclic, is separated here");
+        qd_status st = qd__hj_time_part(ctx, h, in->q, in->p);
+        if (st == QD_OK && h->separable)
+            integrals_in_velocities(ctx, h, in);
+        return st;
     }
     qd_status st = separate(ctx, h, in);
     if (st != QD_OK || !h->separable) {

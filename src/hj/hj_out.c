@@ -84,7 +84,8 @@ static void write_sep(const hj_out *r, qd_buf *b, const qd_hj_sep *s, const char
 /* --solve: q_k(t), or the orbit q_k(q_j), where the quadrature closes. */
 static void write_motion(const hj_out *r, qd_buf *b, const char *cmt) {
     const qd_hj *h = r->h;
-    qd_buf_printf(b, "%smotion from dW/dalpha = beta (beta_q: the constant of integration)\n", cmt);
+    qd_buf_printf(b, "%smotion from d%s/dalpha = beta (beta_q: the constant of integration)\n", cmt,
+                  h->time_part ? "S" : "W");
     for (size_t k = 0; k < h->n; k++) {
         const qd_hj_sep *s = &h->sep[k];
         if (!s->motion) {
@@ -118,10 +119,13 @@ static void write_lines(const hj_out *r, qd_buf *b) {
     for (size_t k = 0; k < h->n; k++)
         write_sep(r, b, &h->sep[k], cmt);
     qd_buf_printf(b, "%scomplete integral (%s)\n", cmt,
-                  h->n == 1 && h->sep[0].qk ? "momentum representation, W(p) = -int q dp"
+                  h->time_part ? "S = W + f(t), f' = -H(alpha, t)"
+                  : h->n == 1 && h->sep[0].qk ? "momentum representation, W(p) = -int q dp"
                   : h->n == 1 && h->sep[0].pk ? "W = int p dq"
                                               : "p = +sqrt(p^2) on each branch");
     line(r, b, "W", h->W);
+    if (h->time_part)
+        line(r, b, "f(t)", h->time_part);
     if (r->h->solved)
         write_motion(r, b, cmt);
 }
@@ -188,6 +192,10 @@ static void write_json(const hj_out *r, qd_buf *b) {
     qd_json_end_array(&j);
     qd_json_key(&j, "W");
     qd_json_expr(&j, r->ctx, h->W);
+    if (h->time_part) { /* S = W + time_part (an explicit t) */
+        qd_json_key(&j, "time_part");
+        qd_json_expr(&j, r->ctx, h->time_part);
+    }
     qd_json_key(&j, "constants");
     qd_json_begin_array(&j);
     for (size_t k = 0; k < h->nconst; k++)
@@ -272,6 +280,8 @@ static void write_sympy(const hj_out *r, qd_buf *b) {
     sympy_assign(r, b, "HJ", h->equation);
     qd_buf_printf(b, "separable = %s\n", h->separable ? "True" : "False");
     sympy_assign(r, b, "W", h->W);
+    if (h->time_part)
+        sympy_assign(r, b, "f_t", h->time_part);
     sympy_list(r, b, "p2", offsetof(qd_hj_sep, p2));
     sympy_list(r, b, "integrals", offsetof(qd_hj_sep, integral));
     if (r->h->solved)

@@ -40,4 +40,12 @@ const qd_expr *qd__hj_integral(qd_ctx *ctx, const qd_expr *f, const qd_expr *x);
  * -1, 1, or 0 when it is not known (or c is 0). */
 int qd__hj_sign(const qd_expr *c);
 
+/* An explicit t with every coordinate cyclic (time_part.c): p_k = alpha_k,
+ * W = sum alpha_k q_k and h->time_part f(t) = -int_0^t H(alpha, t') dt';
+ * nothing is filled when a coordinate appears in H. */
+qd_status qd__hj_time_part(qd_ctx *ctx, qd_hj *h, const qd_expr *const *q,
+                           const qd_expr *const *p);
+/* Its motion from dS/dalpha_k = beta_k: q_k = beta_k - df/dalpha_k. */
+qd_status qd__hj_time_solve(qd_ctx *ctx, qd_hj *h);
+
 #endif

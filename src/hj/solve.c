@@ -185,6 +185,8 @@ qd_status qd_hj_solve(qd_ctx *ctx, qd_hj *h) {
             qd_ctx_error(ctx, QD_ERR_ARG, "the motion needs a separated Hamilton-Jacobi equation");
         return QD_ERR_ARG;
     }
+    if (h->time_part) /* an explicit t (time_part.c) */
+        return qd__hj_time_solve(ctx, h);
     for (size_t k = 0; k < h->n; k++) {
         solve_one(ctx, h, k);
         if (!qd__ctx_recover(ctx))

@@ -455,6 +455,23 @@ static bool nearer(double da, double dc, bool earlier, double scale) {
     return fabs(da - dc) <= 1e-12 * scale ? earlier : da < dc;
 }
 
+/* Revolutions about the origin per radial period, the precession's
+ * reference: one either way when the ignored rate keeps its sign (Kepler's
+ * ellipse), else the nearest whole number of turns, as for an orbit that
+ * does not enclose the origin (a cyclotron circle off the centre: advance
+ * 0, which is its own closed figure, not a precession of -2 pi; audit,
+ * issue 33). */
+static double revolutions(qd__orb_env *env, const qd_orbit_result *r, size_t i) {
+    double adv = r->advance[i];
+    if (r->kind == QD_ORBIT_BOUND && r->nturn == 2) {
+        double a = qd__orb_at(env, r->turn[0])[QD__ORB_RATE + i];
+        double b = qd__orb_at(env, r->turn[1])[QD__ORB_RATE + i];
+        if (!(a * b > 0))
+            return nearbyint(adv / (2 * PI));
+    }
+    return adv < 0 ? -1 : 1;
+}
+
 /* A periodic V_eff (an angle coordinate) repeats its circles every 2 pi:
  * those 2 pi k from one nearer x0, at the same energy and curvature, are the
  * same motion and are dropped. */
@@ -501,7 +518,7 @@ static qd_status analyse(qd_ctx *ctx, qd__orb_env *env, double x0, double xd0, d
     for (size_t i = 0; i < r->nign && (r->kind == QD_ORBIT_BOUND || r->kind == QD_ORBIT_CIRCULAR);
          i++) {
         r->apsidal[i] = fabs(r->advance[i]) / 2; /* an angle between apsides, either way round */
-        r->precession[i] = r->advance[i] - 2 * PI * (r->advance[i] < 0 ? -1 : 1);
+        r->precession[i] = r->advance[i] - 2 * PI * revolutions(env, r, i);
         if (fabs(r->precession[i]) <= 8 * fmax(r->quad_error, 1e-13) * fabs(r->advance[i]))
             r->precession[i] = 0; /* closed to within the quadrature's error */
     }

@@ -1080,9 +1080,41 @@ static void tangent_start(const search *sr, size_t n, double *v) {
 static const double lam_steps[] = {0, -1, 1, -2, 2, -4, 4, -8, 8, -0.5, 0.5, -16, 16};
 #define NLAM (sizeof lam_steps / sizeof lam_steps[0])
 
+/* The ballistic aim of make_start (lob 1 the low flight, 2 the high):
+ * v and *T replaced, a the acceleration; false when the parabola cannot
+ * reach q1 at this speed or the acceleration is 0 (a straight line). */
+static bool ballistic_aim(shoot *p, double *v, double *T, double *a, int lob) {
+    size_t n = p->n;
+    double u[3 * 32] = {0}, d[32], s2 = 0, da = 0, aa = 0, dd = 0;
+    memcpy(u, p->q0, n * sizeof *u);
+    memcpy(u + n, v, n * sizeof *u);
+    if (!accel(p->s, p->t0, u, a))
+        return false;
+    for (size_t j = 0; j < n; j++) {
+        d[j] = p->q1[j] - p->q0[j];
+        s2 += v[j] * v[j], da += d[j] * a[j], aa += a[j] * a[j], dd += d[j] * d[j];
+    }
+    double disc = (da + s2) * (da + s2) - aa * dd;
+    if (!(aa > 0) || !isfinite(aa) || !(disc >= 0))
+        return false;
+    double T2 = (da + s2 + (lob == 2 ? 1 : -1) * sqrt(disc)) / (aa / 2);
+    if (!(T2 > 0))
+        return false;
+    *T = sqrt(T2);
+    for (size_t j = 0; j < n; j++)
+        v[j] = d[j] / *T - a[j] * *T / 2;
+    return true;
+}
+
 /* The start vector number i: v0 (and T) then every later segment's state
- * from a straight-line interpolation at the velocity v0. */
-static void make_start(search *sr, size_t i, double *x) {
+ * from a straight-line interpolation at the velocity v0.  A ballistic start
+ * (lob 1 or 2, at fixed energy with --all) aims instead as a projectile
+ * would under the start's own acceleration a held constant: at the speed s
+ * of the chord's start, q1 - q0 = d = v T + a T^2/2 with |v| = s gives
+ * (a.a/4) T^4 - (d.a + s^2) T^2 + d.d = 0, the low and the high flight,
+ * v = d/T - a T/2, and the segments' states on that parabola (issue 33: the
+ * projectile's high lob, 54 chord times long, was missed). */
+static void make_start(search *sr, size_t i, double *x, int lob) {
     shoot *p = &sr->sh;
     size_t n = p->n;
     const qd_path_opts *o = sr->o;
@@ -1121,6 +1153,11 @@ static void make_start(search *sr, size_t i, double *x) {
             T *= 1 + (double)((i - o->nguess) % 3);
         x[n] = T;
     }
+    double acc[32] = {0};
+    if (lob && !ballistic_aim(p, v, &T, acc, lob))
+        memset(acc, 0, sizeof acc); /* no such flight: the chord's start again */
+    if (p->energy)
+        x[n] = T;
     memcpy(x, v, n * sizeof *v);
     for (size_t j = 0; j < n; j++)
         if (p->fidx[j] >= 0)
@@ -1132,6 +1169,10 @@ static void make_start(search *sr, size_t i, double *x) {
         for (size_t j = 0; j < n; j++) {
             s[j] = p->q0[j] + (p->q1[j] - p->q0[j]) * tk / T;
             s[n + j] = (p->q1[j] - p->q0[j]) / T;
+            if (lob) {
+                s[j] = p->q0[j] + v[j] * tk + acc[j] * tk * tk / 2;
+                s[n + j] = v[j] + acc[j] * tk;
+            }
             if (p->free1 && p->free1[j]) {  /* no end to aim at: the line at v0 */
                 s[j] = p->q0[j] + v[j] * tk;
                 s[n + j] = v[j];
@@ -1287,11 +1328,12 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         st = QD_ERR_NOMEM;
         goto done;
     }
-    size_t total = o->nguess + (o->all || !o->nguess ? sr.nstart : 0);
+    size_t plain = o->nguess + (o->all || !o->nguess ? sr.nstart : 0);
+    size_t total = plain + (energy && o->all && !s.nm ? 2 : 0); /* the two lobs */
     double hmax0 = s.hmax;
     for (size_t i = 0; i < total; i++) {
         double res;
-        make_start(&sr, i, sr.x);
+        make_start(&sr, i < plain ? i : o->nguess, sr.x, i < plain ? 0 : (int)(i - plain) + 1);
         s.hmax = hmax0;
         if (sr.ncon && !p->free1)
             follow_start(&sr, sr.x);

@@ -63,9 +63,32 @@ qd_status qd_scatter_read(qd_ctx *ctx, const qd_model *m, const qd_scatter_text 
         return refuse(ctx, "lab_theta", "the laboratory angle must lie in (0, pi)");
     if (st == QD_OK)
         st = number(ctx, m, "core", t->core, &q->core);
+    q->absorbing = t->absorbing;
+    q->recoil = t->recoil;
     if (st == QD_OK && t->masses)
         st = masses(ctx, m, t->masses, q);
     return st;
+}
+
+/* The target recoils at (pi - Theta)/2 whatever the masses (Desloge ch. 61):
+ * counted too (identical particles, both detected: Desloge ch. 61 pb. 3, two
+ * protons), it adds sigma_cm(pi - 2 theta_lab) dOmega_cm/dOmega_recoil to
+ * the lab cross section below pi/2 and nothing beyond. */
+static qd_status recoil_sum(qd_ctx *ctx, qd_scatter *s, const qd_scatter_query *q,
+                            double theta_lab, qd_scatter_answer *a) {
+    a->recoil_sigma = 0;
+    if (!(theta_lab < PI / 2))
+        return QD_OK;
+    qd_scatter_section x;
+    qd_scatter_lab l;
+    qd_status st = qd_scatter_section_at(ctx, s, q->E, PI - 2 * theta_lab, &x);
+    if (st == QD_OK)
+        st = qd_scatter_lab_map(ctx, q->m1, q->m2, PI - 2 * theta_lab, &l);
+    if (st != QD_OK)
+        return st;
+    a->recoil_sigma = x.sigma * l.recoil_jacobian;
+    a->lab_sigma += a->recoil_sigma;
+    return QD_OK;
 }
 
 /* The lab cross section at theta_lab: every CM angle that reaches it, each
@@ -92,7 +115,7 @@ static qd_status lab_sum(qd_ctx *ctx, qd_scatter *s, const qd_scatter_query *q, 
     }
     if (keep)
         a->ncm = n;
-    return QD_OK;
+    return q->recoil ? recoil_sum(ctx, s, q, theta_lab, a) : QD_OK;
 }
 
 /* With the masses and a CM angle: the projectile's and the target's lab
@@ -115,10 +138,11 @@ static qd_status lab_frame(qd_ctx *ctx, qd_scatter *s, const qd_scatter_query *q
 qd_status qd_scatter_answer_query(qd_ctx *ctx, qd_scatter *s, const qd_scatter_query *q,
                                   qd_scatter_answer *a) {
     QD_ARGS_CTX(ctx, ctx && s && q && a);
-    *a = (qd_scatter_answer){.q = *q, .lab_sigma = NAN};
+    *a = (qd_scatter_answer){.q = *q, .lab_sigma = NAN, .recoil_sigma = NAN};
     a->section.sigma = NAN;
     double theta = q->theta;
     qd_status st = QD_OK;
+    qd_scatter_set_absorbing(s, q->absorbing);
     if (q->at == QD_SCATTER_AT_B) {
         st = qd_scatter_deflect(ctx, s, q->E, q->b, &a->path);
         theta = a->path.theta;

@@ -114,8 +114,8 @@ static qd_scatter_kind turning_point(radial *R, double *r0) {
             return QD_SCATTER_DEFLECTED;
         if (R->lo <= bottom || R->lo <= s->core) {
             if (s->core > 0 && R->lo <= s->core) {
-                *r0 = s->core;
-                return QD_SCATTER_REFLECTED;
+                *r0 = s->core; /* an absorbing core takes what reaches it */
+                return s->absorbing ? QD_SCATTER_CAPTURED : QD_SCATTER_REFLECTED;
             }
             *r0 = 0;
             return QD_SCATTER_CAPTURED;
@@ -247,14 +247,16 @@ static void head_on(radial *R, qd_scatter_path *out) {
     qd_scatter_kind k = turning_point(R, &r0);
     out->kind = k;
     out->r0 = r0;
-    if (k == QD_SCATTER_CAPTURED) {
+    if (k == QD_SCATTER_CAPTURED && !(R->s->absorbing && R->s->core > 0)) {
         double L = qd__sct_scale(R->s, 0), lo, hi;
         qd__sct_segment(R->s, L * 1e-9, +1, &lo, &hi);
         if (!(fabs(qd__sct_V(R->s, L * 1e-9, lo, hi)) < 1e12 * R->E))
             return;
         out->kind = QD_SCATTER_DEFLECTED;
     }
-    out->alpha = k == QD_SCATTER_CAPTURED ? PI / 2 : 0;
+    if (out->kind == QD_SCATTER_CAPTURED)
+        return; /* absorbed by the core */
+    out->alpha = k == QD_SCATTER_CAPTURED ? PI / 2 : 0; /* through the centre, or back */
     out->chi = PI - 2 * out->alpha;
     out->theta = fold(out->chi);
 }

@@ -38,6 +38,11 @@ qd_status qd_scatter_lab_map(qd_ctx *ctx, double m1, double m2, double theta,
     return QD_OK;
 }
 
+static bool maps_to(double gamma, double cm, double theta_lab) {
+    double s = sin(cm), c = cos(cm) + gamma;
+    return fabs(s) + fabs(c) > 1e-12 && fabs(atan2(s, c) - theta_lab) <= 1e-9;
+}
+
 size_t qd_scatter_lab_to_cm(double gamma, double theta_lab, double cm[2]) {
     QD_ARGS(0, cm);
     /* sin(Theta - theta_lab) = gamma sin theta_lab (Desloge eq. 36) */
@@ -47,9 +52,11 @@ size_t qd_scatter_lab_to_cm(double gamma, double theta_lab, double cm[2]) {
     double a = asin(x);
     size_t n = 0;
     double c1 = theta_lab + a, c2 = theta_lab + PI - a;
-    if (c1 >= 0 && c1 <= PI)
+    /* a root of the sine relation must map back to theta_lab: gamma = 1
+     * beyond pi/2 gives Theta = pi, where the projectile stops (no angle) */
+    if (c1 >= 0 && c1 <= PI && maps_to(gamma, c1, theta_lab))
         cm[n++] = c1;
-    if (gamma > 1 && c2 >= 0 && c2 <= PI && c2 != c1)
+    if (gamma > 1 && c2 >= 0 && c2 <= PI && c2 != c1 && maps_to(gamma, c2, theta_lab))
         cm[n++] = c2;
     return n;
 }

@@ -190,6 +190,11 @@ void qd_scatter_free(qd_scatter *s) {
     qd__free(s);
 }
 
+void qd_scatter_set_absorbing(qd_scatter *s, bool on) {
+    if (s)
+        s->absorbing = on;
+}
+
 const qd_expr *qd_scatter_potential(const qd_scatter *s) { QD_ARGS(NULL, s); return s->V; }
 const qd_expr *qd_scatter_radius(const qd_scatter *s) { QD_ARGS(NULL, s); return s->r; }
 size_t qd_scatter_njumps(const qd_scatter *s) { QD_ARGS(0, s); return s->njump; }

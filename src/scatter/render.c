@@ -83,6 +83,12 @@ static void text_features(const qd_scatter_features *f, qd_buf *b) {
     }
 }
 
+/* The recoil's part, when the target is counted too (--recoil). */
+static void text_recoil(const qd_scatter_answer *a, qd_buf *b) {
+    if (isfinite(a->recoil_sigma))
+        put(b, "  of which the recoiling target (counted too): ", a->recoil_sigma, "\n");
+}
+
 static void text_lab(const qd_scatter_answer *a, qd_buf *b) {
     const qd_scatter_lab *l = &a->lab_map;
     put(b, "lab frame (target at rest, gamma = m1/m2 = ", l->gamma, "):\n");
@@ -94,6 +100,8 @@ static void text_lab(const qd_scatter_answer *a, qd_buf *b) {
     }
     angle(b, "\n  recoil: angle ", l->recoil_angle, "");
     put(b, ", energy / projectile's ", l->recoil_ratio, "\n");
+    if (isfinite(a->lab_sigma))
+        text_recoil(a, b);
 }
 
 static void text_lab_angles(const qd_scatter_answer *a, qd_buf *b) {
@@ -107,6 +115,7 @@ static void text_lab_angles(const qd_scatter_answer *a, qd_buf *b) {
     put(b, "  lab_cross_section: ", a->lab_sigma, "");
     qd_buf_printf(b, " (%zu CM angle%s%s)\n", a->ncm, a->ncm == 1 ? "" : "s",
                   a->ncm ? "" : ": beyond the largest lab angle, asin(m2/m1)");
+    text_recoil(a, b);
 }
 
 static qd_status text(qd_ctx *ctx, const qd_scatter *s, const qd_scatter_answer *a,
@@ -188,6 +197,8 @@ static void json_lab(const qd_scatter_answer *a, qd_json *j) {
     jnum(j, "lab_angle", l->theta_lab);
     jnum(j, "lab_energy_ratio", l->energy_ratio);
     jnum(j, "lab_cross_section", a->lab_sigma);
+    if (isfinite(a->recoil_sigma))
+        jnum(j, "recoil_cross_section", a->recoil_sigma);
     jnum(j, "recoil_angle", l->recoil_angle);
     jnum(j, "recoil_energy_ratio", l->recoil_ratio);
 }
@@ -206,6 +217,8 @@ static void json_lab_angles(const qd_scatter_answer *a, qd_json *j) {
     }
     qd_json_end_array(j);
     jnum(j, "lab_cross_section", a->lab_sigma);
+    if (isfinite(a->recoil_sigma))
+        jnum(j, "recoil_cross_section", a->recoil_sigma);
 }
 
 static void json_path(const qd_scatter_answer *a, qd_json *j) {

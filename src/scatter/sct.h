@@ -16,6 +16,7 @@ struct qd_scatter {
     const qd_expr *V, *r;
     qd_prog *prog;      /* r -> V, V', V'', V''' (the derivatives away from the jumps) */
     double core;        /* hard core radius, 0 when none */
+    bool absorbing;     /* the core absorbs what reaches it (qd_scatter_set_absorbing) */
     size_t njump;
     double jump[QD_SCT_MAX_JUMPS]; /* ascending, all > core */
     double range;       /* V = 0 beyond it, or +inf */

@@ -305,6 +305,31 @@ static double b_limit(qd_ctx *ctx, qd_scatter *s, double E, double theta, qd_sta
     return bmax;
 }
 
+/* An absorbing core captures every b whose orbit reaches it: those below
+ * b_c, b_c^2 = min over r >= core of r^2 (1 - V/E) (a barrier outside the
+ * core, or the core itself: Desloge ch. 60 P5).  Found by bisection on the
+ * deflection's own verdict (captured or not is monotone in b: the radial
+ * g = 1 - V/E - b^2/r^2 falls as b grows), so it agrees with every orbit
+ * shown; b_c <= core sqrt(1 - V(core)/E), the value at r = core. */
+static qd_status absorbed_b(qd_ctx *ctx, qd_scatter *s, double E, qd_scatter_features *f) {
+    double V = qd__sct_V(s, s->core, s->core, s->njump ? s->jump[0] : INFINITY);
+    double lo = 0, hi = s->core * sqrt(fmax(0, 1 - V / E));
+    qd_scatter_path p;
+    qd_status st = qd_scatter_deflect(ctx, s, E, 0, &p);
+    if (st != QD_OK || p.kind != QD_SCATTER_CAPTURED)
+        return st; /* not even head-on: a wall or barrier keeps everything out */
+    if ((st = qd_scatter_deflect(ctx, s, E, hi, &p)) == QD_OK && p.kind == QD_SCATTER_CAPTURED)
+        lo = hi;
+    for (int i = 0; i < 200 && st == QD_OK && hi - lo > 4e-16 * hi; i++) {
+        double mid = (lo + hi) / 2;
+        if ((st = qd_scatter_deflect(ctx, s, E, mid, &p)) == QD_OK)
+            *(p.kind == QD_SCATTER_CAPTURED ? &lo : &hi) = mid;
+    }
+    f->capture = true;
+    f->capture_b = lo;
+    return st;
+}
+
 qd_status qd_scatter_features_at(qd_ctx *ctx, qd_scatter *s, double E, qd_scatter_features *f) {
     QD_ARGS_CTX(ctx, ctx && s && f);
     *f = (qd_scatter_features){.E = E, .range = s->range};
@@ -322,6 +347,8 @@ qd_status qd_scatter_features_at(qd_ctx *ctx, qd_scatter *s, double E, qd_scatte
         f->capture = p.kind == QD_SCATTER_CAPTURED;
         f->capture_b = f->capture ? f->orbit_b : 0;
     }
+    if (st == QD_OK && s->absorbing && s->core > 0)
+        st = absorbed_b(ctx, s, E, f);
     double k[MAX_KINKS];
     size_t nk = kinks(s, E, k);
     sct_grid g = {0};

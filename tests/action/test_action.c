@@ -172,6 +172,36 @@ static void test_pendulum_period_sim(void **state) {
     sf_free(s.f);
 }
 
+/* A one-degree H that is not a p^2 + c, the relativistic oscillator
+ * (seed-desloge-D.md T25, m = k = c = 1, amplitude 1): H = sqrt(p^2 + 1)
+ * + x^2/2 is even in p, so p^2 = (E - x^2/2)^2 - 1 is isolated from H = E.
+ * The period is 4 int_0^1 dx / sqrt(1 - 1/gamma^2), gamma = 1 + (1 - x^2)/2
+ * = 7.38068454944 (the seed's value), and J = oint p dq = 4 int_0^1
+ * sqrt(gamma^2 - 1) dx, computed here with x = sin(u) (a smooth integrand,
+ * Simpson's rule). */
+static void test_relativistic_oscillator(void **state) {
+    (void)state;
+    at s;
+    at_load(&s, "coordinates x\nparameters m = 1, k = 1, c = 1\n"
+                "L = -m*c^2*sqrt(1 - x'^2/c^2) - k*x^2/2\n");
+    at_set(&s, "x", 1);
+    at_set(&s, "x'", 0);
+    qd_action a;
+    run_at(&s, &a);
+    close_to("E", a.energy, 1.5, 1e-15);
+    assert_int_equal(a.c[0].kind, QD_ACT_LIBRATION);
+    close_to("turning point", a.c[0].hi, 1, 1e-12);
+    close_to("period (seed T25)", 2 * PI / a.c[0].omega, 7.38068454944, 1e-11);
+    double J = 0, h = (PI / 2) / 2000;
+    for (int i = 0; i <= 2000; i++) {
+        double x = sin(i * h), g = 1 + (1 - x * x) / 2;
+        J += (i == 0 || i == 2000 ? 1 : i % 2 ? 4 : 2) * sqrt(g * g - 1) * cos(i * h);
+    }
+    close_to("J = oint p dx", a.c[0].J, 4 * J * h / 3, 1e-10);
+    qd_action_free(&a);
+    sf_free(s.f);
+}
+
 static void test_pendulum_rotation(void **state) {
     (void)state;
     double m = 1.1, l = 1.3, g = 9.81;
@@ -676,6 +706,7 @@ int main(void) {
         cmocka_unit_test(test_pendulum_libration),
         cmocka_unit_test(test_pendulum_period_sim),
         cmocka_unit_test(test_pendulum_rotation),
+        cmocka_unit_test(test_relativistic_oscillator),
         cmocka_unit_test(test_separatrix),
         cmocka_unit_test(test_unbounded),
         cmocka_unit_test(test_double_well),

@@ -404,6 +404,19 @@ static void null_canonical(void **state)
     /* err NULL */
     assert_null(qd_phase_read(F.ctx, NULL, "q", NULL));
     reset(&F);
+    /* ---- qd_phase_read_h */
+    /* ctx NULL */
+    assert_null(qd_phase_read_h(NULL, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_null(qd_phase_read_h(F.ctx, NULL, "q", (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* text NULL */
+    assert_null(qd_phase_read_h(F.ctx, NULL, NULL, (qd_diag *)(void *)F.blob));
+    reset(&F);
+    /* err NULL */
+    assert_null(qd_phase_read_h(F.ctx, NULL, "q", NULL));
+    reset(&F);
     /* ---- qd_phase_read_list */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_phase_read_list(NULL, NULL, "q", (const qd_expr * *)F.e, (qd_diag *)(void *)F.blob));
@@ -2572,6 +2585,19 @@ static void null_mech(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_eom_audit(F.ctx, F.model, F.eom, NULL));
+    reset(&F);
+    /* ---- qd_isolate */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(NULL, F.q, F.q, (const qd_expr * *)F.e));
+    reset(&F);
+    /* eq NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(F.ctx, NULL, F.q, (const qd_expr * *)F.e));
+    reset(&F);
+    /* y NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(F.ctx, F.q, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* sol NULL */
+    assert_int_equal(QD_ERR_ARG, qd_isolate(F.ctx, F.q, F.q, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -4810,6 +4836,10 @@ static void null_scatter(void **state)
     /* ---- qd_scatter_free */
     /* s NULL */
     qd_scatter_free(NULL);
+    reset(&F);
+    /* ---- qd_scatter_set_absorbing */
+    /* s NULL */
+    qd_scatter_set_absorbing(NULL, false);
     reset(&F);
     /* ---- qd_scatter_potential */
     /* s NULL */

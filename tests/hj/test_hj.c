@@ -382,6 +382,32 @@ static void test_time_dependent(void **state) {
     unload(&f);
 }
 
+/* An explicit t with every coordinate cyclic (Desloge ch. 78 P3,
+ * seed-desloge-C.md T51: the particle on the wire y = x + a t^2/2):
+ * S = alpha x + f(t) solves dS/dt + H(x, dS/dx, t) = 0, alpha = m (2 x' +
+ * a t) is the conserved p, and from rest at the origin (alpha = 0, beta = 0)
+ * x = -a t^2/4. */
+static void test_time_part(void **state) {
+    (void)state;
+    fix f = load("coordinates x\nparameters m = 3, a = 0.8\n"
+                 "particle m at (x, x + a*t^2/2)\n");
+    assert_false(f.h->time_independent);
+    assert_true(f.h->separable);
+    assert_non_null(f.h->time_part);
+    qd_ctx *c = f.ctx;
+    const qd_hj_sep *s = &f.h->sep[0];
+    const qd_expr *S = qd_add(c, f.h->W, f.h->time_part), *t = qd_time(c);
+    const qd_expr *dSdx = qd_diff(c, S, s->q);
+    const qd_expr *hj = qd_add(c, qd_diff(c, S, t), qd_subs(c, f.ham->H, 1, &s->p, &dSdx));
+    assert_same(&f, hj, "0");
+    assert_same(&f, s->integral, "m*(2*x' + a*t)");
+    assert_int_equal(qd_hj_solve(c, f.h), QD_OK);
+    const qd_expr *zero = qd_int(c, 0), *b = s->beta;
+    const qd_expr *x = qd_subs(c, qd_subs(c, s->motion, 1, &s->constant, &zero), 1, &b, &zero);
+    assert_same(&f, x, "-a*t^2/4");
+    unload(&f);
+}
+
 static void expect_error(const char *text, qd_status st, const char *words) {
     qd_ctx *ctx = qd_ctx_new();
     qd_model *m = qd_model_parse(ctx, text, NULL);
@@ -563,6 +589,7 @@ int main(void) {
         cmocka_unit_test(test_kepler_polar), cmocka_unit_test(test_kepler_spherical),
         cmocka_unit_test(test_stark),        cmocka_unit_test(test_two_centres),
         cmocka_unit_test(test_coupled),      cmocka_unit_test(test_time_dependent),
+        cmocka_unit_test(test_time_part),
         cmocka_unit_test(test_errors),       cmocka_unit_test(test_energy_name),
         cmocka_unit_test(test_solve),        cmocka_unit_test(test_staeckel),
         cmocka_unit_test(test_desloge78_p6), cmocka_unit_test(test_prolate),

@@ -113,6 +113,35 @@ static void test_dt(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* The name H in a bracket's operand is the model's Hamiltonian (audit,
+ * Desloge C T57): [x, H] = p/m and [p, H] = -k x for the oscillator
+ * (Hamilton's equations, Goldstein ch. 9.5); a parameter named H keeps its
+ * meaning, and other unknown names are still refused. */
+static void test_read_h(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_model *m = parse(ctx, OSC);
+    qd_phase ph;
+    qd_diag err;
+    assert_int_equal(qd_phase_init(ctx, m, &ph), QD_OK);
+    const qd_expr *H = qd_phase_read_h(ctx, &ph, "H", &err);
+    const qd_expr *x = qd_phase_read_h(ctx, &ph, "x", &err);
+    const qd_expr *p = qd_phase_read_h(ctx, &ph, "p_x", &err);
+    assert_same(ctx, qd_bracket(ctx, 1, ph.q, ph.p, x, H), "p_x/m");
+    assert_same(ctx, qd_bracket(ctx, 1, ph.q, ph.p, p, H), "-k*x");
+    assert_null(qd_phase_read_h(ctx, &ph, "Hz", &err));
+    qd_phase_free(&ph);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+    ctx = qd_ctx_new(); /* a fresh context: the name H is a symbol in the old one */
+    qd_model *mh = parse(ctx, "coordinates x\nparameters H = 2\nT = x'^2/2\nV = H*x\n");
+    assert_int_equal(qd_phase_init(ctx, mh, &ph), QD_OK);
+    assert_same(ctx, qd_phase_read_h(ctx, &ph, "H*x", &err), "H*x");
+    qd_phase_free(&ph);
+    qd_model_free(mh);
+    qd_ctx_free(ctx);
+}
+
 /* A parameter fixed when the model is read stands for its number in what
  * is read beside it; the new variables are Q, P or Q1.., P1... */
 static void test_fixed_and_new_vars(void **state) {
@@ -189,6 +218,7 @@ int main(void) {
         cmocka_unit_test(test_read_and_bracket),
         cmocka_unit_test(test_read_list),
         cmocka_unit_test(test_dt),
+        cmocka_unit_test(test_read_h),
         cmocka_unit_test(test_fixed_and_new_vars),
         cmocka_unit_test(test_given),
     };

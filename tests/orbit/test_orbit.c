@@ -682,6 +682,37 @@ static void test_relativistic_kepler(void **state) {
     rel_kepler_at(0.2, 0.4); /* started between the apsides: E from h(r, r') */
 }
 
+/* A charge in a uniform field B (L = T + q B r^2 theta'/2, A = B (-y, x)/2):
+ * a circle of radius R = v/w_c, w_c = q B/m, run clockwise (the Lorentz
+ * force from the velocity-dependent potential, Goldstein sec. 1.5).  Started at r = d + R, theta
+ * = 0 with velocity (0, -w_c R) it is centred at (d, 0): the turning points
+ * |d - R| and d + R, the radial period 2 pi/w_c.  Off the centre (d > R)
+ * theta swings back and forth, advance 0, and the figure is closed:
+ * precession 0 (it was -2 pi, "one revolution" assumed; audit, issue 33).
+ * Round the centre (d < R) theta loses 2 pi per period: precession 0 too. */
+static void test_cyclotron(void **state) {
+    (void)state;
+    const double m = 1.3, q = 0.8, B = 2, wc = q * B / m, R = 0.5;
+    const double d[] = {1.3, 0.3}, adv[] = {0, -2 * PI};
+    for (int k = 0; k < 2; k++) {
+        fix f;
+        load(&f, "coordinates r, theta\nparameters m = 1.3, q = 0.8, B = 2\n"
+                 "T = m/2*(r'^2 + r^2*theta'^2)\nU = -q*B/2*r^2*theta'\n");
+        assert_int_equal(reduce(&f, THETA), QD_OK);
+        set(&f, "r", d[k] + R);
+        set(&f, "r'", 0);
+        set(&f, "theta'", -wc * R / (d[k] + R));
+        assert_int_equal(solve(&f, NULL), QD_OK);
+        assert_int_equal(f.r.kind, QD_ORBIT_BOUND);
+        near(f.r.turn[0], fabs(d[k] - R), 1e-10);
+        near(f.r.turn[1], d[k] + R, 1e-10);
+        near(f.r.period, 2 * PI / wc, 1e-9);
+        near(f.r.advance[0], adv[k], 1e-9);
+        near(f.r.precession[0], 0, 1e-9);
+        unload(&f);
+    }
+}
+
 static void test_errors(void **state) {
     (void)state;
     fix f;
@@ -737,6 +768,7 @@ int main(void) {
         cmocka_unit_test(test_spherical_pendulum), cmocka_unit_test(test_planar_pendulum),
         cmocka_unit_test(test_heavy_top),        cmocka_unit_test(test_relativistic_kepler),
         cmocka_unit_test(test_cancelled_centrifugal),
+        cmocka_unit_test(test_cyclotron),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

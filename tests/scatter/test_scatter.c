@@ -262,6 +262,40 @@ static void test_capture(void **state) {
     qd_ctx_free(c);
 }
 
+/* T19's other branch (Desloge ch. 60 pb. 5): an absorbing sphere of radius
+ * a >= r* captures sigma = pi a^2 (1 + k/(E a^n)); inside the barrier (a <
+ * r*) the capture is the orbiting one, 2 pi at n = 4, k = E = 1.  Just
+ * outside b_c the orbit is deflected, below it captured; a reflecting core
+ * of the same radius captures nothing. */
+static void test_absorbing_core(void **state) {
+    (void)state;
+    qd_ctx *c = qd_ctx_new();
+    const double a[] = {1.5, 2.5, 0.5}, E[] = {1, 0.3, 1};
+    for (int i = 0; i < 3; i++) {
+        qd_scatter *s = make(c, "-1/r^4", a[i]);
+        qd_scatter_set_absorbing(s, true);
+        qd_scatter_features f;
+        assert_int_equal(qd_scatter_features_at(c, s, E[i], &f), QD_OK);
+        assert_true(f.capture);
+        double rs = pow(2 / (2 * E[i]), 0.25); /* r*^n = (n - 2) k/(2E) */
+        double want = a[i] >= rs ? PI * a[i] * a[i] * (1 + 1 / (E[i] * pow(a[i], 4)))
+                                 : PI * 4 * pow(2, -0.5) * pow(1 / (2 * E[i]), 0.5);
+        assert_close(PI * f.capture_b * f.capture_b, want, 1e-12);
+        qd_scatter_path p;
+        assert_int_equal(qd_scatter_deflect(c, s, E[i], f.capture_b * (1 - 1e-6), &p), QD_OK);
+        assert_int_equal(p.kind, QD_SCATTER_CAPTURED);
+        assert_int_equal(qd_scatter_deflect(c, s, E[i], f.capture_b * (1 + 1e-6), &p), QD_OK);
+        assert_true(p.kind == QD_SCATTER_DEFLECTED);
+        assert_int_equal(qd_scatter_deflect(c, s, E[i], 0, &p), QD_OK);
+        assert_int_equal(p.kind, QD_SCATTER_CAPTURED);
+        qd_scatter_set_absorbing(s, false);
+        assert_int_equal(qd_scatter_deflect(c, s, E[i], 0, &p), QD_OK);
+        assert_int_equal(p.kind, QD_SCATTER_REFLECTED);
+        qd_scatter_free(s);
+    }
+    qd_ctx_free(c);
+}
+
 /* T25 (Desloge ch. 61 pb. 7), equal masses: the projectile at Theta/2 with
  * speed V cos(Theta/2), the target at (pi - Theta)/2 with V sin(Theta/2). */
 static void test_lab_equal_masses(void **state) {
@@ -426,6 +460,7 @@ int main(void) {
         cmocka_unit_test(test_glory),
         cmocka_unit_test(test_rainbow),
         cmocka_unit_test(test_capture),
+        cmocka_unit_test(test_absorbing_core),
         cmocka_unit_test(test_lab_equal_masses),
         cmocka_unit_test(test_lab_proton_proton),
         cmocka_unit_test(test_lab_gamma),

@@ -102,6 +102,29 @@ static void lab_angle_two_branches(void **state) {
     done(&f);
 }
 
+/* Identical particles, both counted (Desloge ch. 61 pb. 3, seed-desloge-B.md
+ * T23, two protons): equal masses, lab energy E_lab = 2 E (E the relative
+ * energy, mu = m/2 here mu = 1, so the proton's m = 2), Q = (k/E_lab)^2
+ * (sin^-4 + cos^-4) cos(theta) below pi/2, the recoil's part (k/E_lab)^2
+ * cos/cos^4; beyond pi/2 nothing recoils there. */
+static void recoil_counted(void **state) {
+    (void)state;
+    fix f;
+    const qd_scatter_text t = {.energy = "E0", .lab_theta = "0.5", .masses = "2, 2",
+                               .recoil = true};
+    assert_int_equal(ask(&f, &t), QD_OK);
+    double El = 4, th = 0.5, c = cos(th), s = sin(th);
+    near(f.a.lab_sigma, (1 / (El * El)) * (pow(s, -4) + pow(c, -4)) * c, 1e-8);
+    near(f.a.recoil_sigma, (1 / (El * El)) * pow(c, -3), 1e-8);
+    done(&f);
+    const qd_scatter_text t2 = {.energy = "E0", .lab_theta = "2", .masses = "2, 2",
+                                .recoil = true};
+    assert_int_equal(ask(&f, &t2), QD_OK);
+    assert_int_equal(f.a.ncm, 0);
+    near(f.a.recoil_sigma, 0, 0);
+    done(&f);
+}
+
 /* tan(Theta/2) = k/(2 E b) for one impact parameter. */
 static void impact_parameter(void **state) {
     (void)state;
@@ -142,6 +165,7 @@ int main(void) {
         cmocka_unit_test(theta_and_lab),
         cmocka_unit_test(lab_angle_two_branches),
         cmocka_unit_test(impact_parameter),
+        cmocka_unit_test(recoil_counted),
         cmocka_unit_test(errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
