@@ -82,6 +82,7 @@ static void save(void *cv) { cairo_save(CR(cv)); }
 static void restore(void *cv) { cairo_restore(CR(cv)); }
 static void translate(void *cv, double x, double y) { cairo_translate(CR(cv), x, y); }
 static void rotate(void *cv, double a) { cairo_rotate(CR(cv), a); }
+static void scale(void *cv, double s) { cairo_scale(CR(cv), s, s); }
 static void clip(void *cv) { cairo_clip(CR(cv)); }
 static void antialias(void *cv, bool on) {
     cairo_set_antialias(CR(cv), on ? CAIRO_ANTIALIAS_DEFAULT : CAIRO_ANTIALIAS_NONE);
@@ -115,9 +116,10 @@ static double text_width(const char *family, const char *s, double size) {
 }
 
 static const qd__canvas_ops ops = {
-    open_canvas, close_canvas, rgb,     line_width, round_ends, move_to,   line_to,
-    rect,        circle,       stroke,  fill,       paint,      save,      restore,
-    translate,   rotate,       clip,    antialias,  font,       text,      text_width,
+    open_canvas, close_canvas, rgb,       line_width, round_ends, move_to, line_to,
+    rect,        circle,       stroke,    fill,       paint,      save,    restore,
+    translate,   rotate,       scale,     clip,       antialias,  font,    text,
+    text_width,
 };
 
 const qd__canvas_ops *qd_ext_cairo_ops(void) { return &ops; }

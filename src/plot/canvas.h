@@ -17,7 +17,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#define QD__CANVAS_ABI 1
+#define QD__CANVAS_ABI 2
 
 enum { QD__CANVAS_PNG, QD__CANVAS_SVG, QD__CANVAS_PDF };
 
@@ -45,6 +45,7 @@ typedef struct qd__canvas_ops {
     void (*restore)(void *cv);
     void (*translate)(void *cv, double x, double y);
     void (*rotate)(void *cv, double radians);
+    void (*scale)(void *cv, double s);               /* both axes: a PNG's --dpi */
     void (*clip)(void *cv);                          /* to the current path */
     void (*antialias)(void *cv, bool on);
     void (*font)(void *cv, const char *family, double size, bool bold);

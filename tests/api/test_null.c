@@ -3702,6 +3702,10 @@ static void null_plot(void **state)
     (void)state;
     static fixture F;
     setup(&F);
+    /* ---- qd_plot_math_text */
+    /* text NULL */
+    assert_true(qd_plot_math_text(NULL, F.c, 1) == 0);
+    reset(&F);
     /* ---- qd_plot_format_of */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_format_of(NULL, "q", (qd_plot_format *)(void *)F.blob));
@@ -3770,6 +3774,26 @@ static void null_plot(void **state)
     /* ---- qd_plot_nseries */
     /* p NULL */
     assert_true(qd_plot_nseries(NULL) == 0);
+    reset(&F);
+    /* ---- qd_plot_add_mark */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add_mark(NULL, (qd_plot_mark){0}, 1, 1, 1, 1));
+    reset(&F);
+    /* ---- qd_plot_set_heading */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_heading(NULL, "q"));
+    reset(&F);
+    /* ---- qd_plot_set_note */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_note(NULL, "q"));
+    reset(&F);
+    /* ---- qd_plot_share_legend */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_share_legend(NULL, false));
+    reset(&F);
+    /* ---- qd_plot_set_dpi */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_dpi(NULL, 1));
     reset(&F);
     /* ---- qd_plot_color */
     /* p NULL */
