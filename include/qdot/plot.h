@@ -121,6 +121,12 @@ QD_API qd_status qd_plot_share_legend(qd_plot *p, bool shared);
  * direction; SVG and PDF are vector drawings in points and do not change.
  * qd_plot_to_pixel stays in the layout's pixels (multiply by dpi/96). */
 QD_API qd_status qd_plot_set_dpi(qd_plot *p, double dpi);
+/* dpi is a resolution qd_plot_set_dpi takes; QD_ERR_ARG (field "dpi"). */
+QD_API qd_status qd_plot_dpi_check(qd_ctx *ctx, double dpi);
+
+/* The picture's size, as qd_plot_new takes it (0, 0: the default), before
+ * the layout. */
+QD_API qd_status qd_plot_set_size(qd_plot *p, int width, int height);
 
 /* Series i's colour as 0xRRGGBB: the palette's k-th (cycling) for the k-th
  * series of its panel. */
@@ -222,6 +228,12 @@ typedef struct qd_plot_run_opts {
     double dpi;         /* 0: 96 (qd_plot_set_dpi) */
     bool points;        /* dots (a Poincare section), else lines */
 } qd_plot_run_opts;
+
+/* The options of o that are given, applied to a plot made elsewhere (the
+ * mode shapes, a sweep's map): title, xlabel on every panel, ylabel "A;
+ * B" on each panel in turn (the last for the panels after), the size when
+ * width is not 0, dpi when not 0; points is not used.  The plot's errors. */
+QD_API qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o);
 
 /* A plot of the columns pk picks of rows (nrows x ncols, names as for
  * qd_plot_pick_columns), a panel per group, stacked; NULL on failure (no

@@ -62,11 +62,36 @@ qd_status qd_plot_share_legend(qd_plot *p, bool shared) {
 
 qd_status qd_plot_set_dpi(qd_plot *p, double dpi) {
     QD_ARGS(QD_ERR_ARG, p);
-    if (!(dpi >= 72 && dpi <= 1200)) {
-        qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot's resolution is 72 to 1200 dpi, not %g", dpi);
+    qd_status st = qd_plot_dpi_check(p->ctx, dpi);
+    if (st == QD_OK)
+        p->dpi = dpi;
+    return st;
+    return QD_OK;
+}
+
+qd_status qd_plot_dpi_check(qd_ctx *ctx, double dpi) {
+    QD_ARGS_CTX(ctx, ctx);
+    if (dpi >= 72 && dpi <= 1200)
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_ARG, "a plot's resolution is 72 to 1200 dpi, not %g", dpi);
+    qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, "dpi", QD_REASON_NONE, NULL);
+    return QD_ERR_ARG;
+}
+
+qd_status qd_plot_set_size(qd_plot *p, int width, int height) {
+    QD_ARGS(QD_ERR_ARG, p);
+    if (!width && !height) {
+        width = 800;
+        height = 500;
+    }
+    if (width < 200 || height < 200 || width > 10000 || height > 10000) {
+        qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot is 200 to 10000 pixels wide and high, not %d x %d",
+                     width, height);
         return QD_ERR_ARG;
     }
-    p->dpi = dpi;
+    p->width = width;
+    p->height = height;
+    p->laid_out = false;
     return QD_OK;
 }
 

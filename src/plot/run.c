@@ -198,6 +198,28 @@ static qd_status fill_panel(qd_plot *p, const run_rows *r, size_t g, const qd_pl
     return st;
 }
 
+qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o) {
+    QD_ARGS(QD_ERR_ARG, p && o);
+    qd_status st = o->title ? qd_plot_set_title(p, o->title) : QD_OK;
+    if (st == QD_OK && o->width)
+        st = qd_plot_set_size(p, o->width, o->height);
+    if (st == QD_OK && o->dpi)
+        st = qd_plot_set_dpi(p, o->dpi);
+    size_t cur = p->cur;
+    for (size_t g = 0; g < qd_plot_npanels(p) && st == QD_OK; g++) {
+        char yl[256];
+        p->cur = g;
+        if (o->xlabel)
+            st = qd_plot_set_xlabel(p, o->xlabel);
+        if (st == QD_OK && o->ylabel) {
+            y_label(NULL, g, o->ylabel, yl, sizeof yl);
+            st = qd_plot_set_ylabel(p, yl);
+        }
+    }
+    p->cur = cur;
+    return st;
+}
+
 qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *const *names,
                      const double *rows, size_t nrows, size_t ncols, const qd_plot_run_opts *o) {
     QD_ARGS(NULL, ctx && pk && names && rows && o);
@@ -220,6 +242,8 @@ qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *const *nam
     qd_plot *p = x && y ? qd_plot_new(ctx, width, height) : NULL;
     const char *title = o->title ? o->title : "";
     qd_status st = p ? qd_plot_set_title(p, title) : QD_ERR_NOMEM;
+    if (st == QD_OK && o->dpi)
+        st = qd_plot_set_dpi(p, o->dpi);
     if (st == QD_OK && pk->npanels > 1)
         st = qd_plot_panels(p, pk->npanels, 1);
     run_rows r = {.pk = pk, .names = names, .v = rows, .n = nrows, .ncols = ncols};

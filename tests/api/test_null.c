@@ -3795,6 +3795,14 @@ static void null_plot(void **state)
     /* p NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_set_dpi(NULL, 1));
     reset(&F);
+    /* ---- qd_plot_dpi_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_dpi_check(NULL, 1));
+    reset(&F);
+    /* ---- qd_plot_set_size */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_size(NULL, 1, 1));
+    reset(&F);
     /* ---- qd_plot_color */
     /* p NULL */
     (void)qd_plot_color(NULL, 1);
@@ -3897,6 +3905,13 @@ static void null_plot(void **state)
     reset(&F);
     /* height NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, "q", F.i, NULL));
+    reset(&F);
+    /* ---- qd_plot_apply */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_apply(NULL, NULL));
+    reset(&F);
+    /* o NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_apply(F.plot, NULL));
     reset(&F);
     /* ---- qd_plot_run */
     /* ctx NULL */
