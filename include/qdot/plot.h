@@ -46,7 +46,7 @@ typedef enum qd_plot_format { QD_PLOT_PNG, QD_PLOT_SVG, QD_PLOT_PDF } qd_plot_fo
  * text of a plot (title, axis labels, legend, notes) goes through it. */
 
 /* text with its names as mathematics into out (cap bytes, NUL-terminated,
- * truncated to fit): a word (letters and digits, starting with a letter,
+ * truncated to fit at a whole UTF-8 character): a word (letters and digits, starting with a letter,
  * no '_', not next to '.' or '/', so file names stay) that names a Greek
  * letter ("theta", "Omega") becomes the letter, its trailing digits
  * subscripts, one or two primes after it a dot or two over it:

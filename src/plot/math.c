@@ -96,7 +96,21 @@ size_t qd_plot_math_text(const char *text, char *out, size_t cap) {
             p += run;
         }
     }
-    if (cap)
-        out[s.n < cap ? s.n : cap - 1] = 0;
+    if (!cap)
+        return s.n;
+    size_t end = s.n < cap ? s.n : cap - 1;
+    if (end < s.n) { /* cut at a whole character: Cairo refuses broken UTF-8 */
+        size_t k = end;
+        while (k > 0 && ((unsigned char)out[k - 1] & 0xc0) == 0x80)
+            k--;
+        /* k - 1 leads a sequence: keep it only when all of it fits */
+        if (k > 0 && ((unsigned char)out[k - 1] & 0x80)) {
+            unsigned char lead = (unsigned char)out[k - 1];
+            size_t len = lead >= 0xf0 ? 4 : lead >= 0xe0 ? 3 : 2;
+            if (k - 1 + len > end)
+                end = k - 1;
+        }
+    }
+    out[end] = 0;
     return s.n;
 }
