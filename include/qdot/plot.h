@@ -46,12 +46,13 @@ typedef enum qd_plot_format { QD_PLOT_PNG, QD_PLOT_SVG, QD_PLOT_PDF } qd_plot_fo
  * text of a plot (title, axis labels, legend, notes) goes through it. */
 
 /* text with its names as mathematics into out (cap bytes, NUL-terminated,
- * truncated to fit at a whole UTF-8 character): a word (letters and digits, starting with a letter,
- * no '_', not next to '.' or '/', so file names stay) that names a Greek
- * letter ("theta", "Omega") becomes the letter, its trailing digits
- * subscripts, one or two primes after it a dot or two over it:
- * "theta1'" is a dotted theta with subscript 1 (U+03B8 U+0307 U+2081),
- * "x2''" x with two dots and subscript 2.  Other text is copied.  Returns
+ * truncated to fit at a whole UTF-8 character): a name (a word of letters
+ * and digits after one letter or a Greek letter's name, "theta", "Omega";
+ * no '_', not next to '.' or '/', so file names stay) becomes the letter,
+ * its trailing digits subscripts, one or two primes after it a dot or two
+ * over it: "theta1'" is a dotted theta with subscript 1 (U+03B8 U+0307
+ * U+2081), "x2''" x with two dots and subscript 2, "E0" E with subscript 0.
+ * Longer words ("gl4", "th'") and other text are copied.  Returns
  * the length the whole result needs (as snprintf); out may be NULL when cap
  * is 0. */
 QD_API size_t qd_plot_math_text(const char *text, char *out, size_t cap);

@@ -1,7 +1,9 @@
 /*
  * src/plot/math.c - a label's names as a textbook prints them
  * (qd_plot_math_text, qdot/plot.h): Greek letter names as Greek letters,
- * trailing digits as subscripts, primes as dots over the letter.  Plain
+ * trailing digits as subscripts, primes as dots over the letter, for names
+ * that are a Greek letter's or one letter (x1', E0, A1): a longer word is
+ * a word (the method gl4, th').  Plain
  * UTF-8 with combining dots, so Cairo's text draws it and the layout
  * measures it like any text.
  */
@@ -55,6 +57,10 @@ static void put_name(sink *s, const char *w, size_t len, size_t np) {
     while (stem > 1 && isdigit((unsigned char)w[stem - 1]))
         stem--;
     const char *g = greek_of(w, stem);
+    if (!g && stem > 1) { /* a word (gl4, dop853, th'): as written */
+        put(s, w, len + np);
+        return;
+    }
     if (g)
         put(s, g, strlen(g));
     else

@@ -6,7 +6,8 @@
  *               Newton's dot for the time derivative, the index below;
  *   x2''     -> x, two dots (U+0308), subscript 2;
  *   Omega    -> capital omega (U+03A9); "omega = 2 rad/s" keeps the rest;
- *   words that are not names stay: "time since release", "t (s)",
+ *   words longer than a letter that name no Greek letter stay (gl4, th'),
+ *   and so do other words: "time since release", "t (s)",
  *   a file's name ("ring6.qd", "a/x1"), names with '_' ("energy_error"),
  *   numbers ("1e-05");
  *   the length needed is returned as snprintf does, the output truncated
@@ -48,6 +49,9 @@ static void test_left_alone(void **state) {
     check("a/x1", "a/x1");
     check("energy_error", "energy_error");
     check("1e-05", "1e-05");
+    check("gl4 and dop853", "gl4 and dop853"); /* methods' names: words */
+    check("th'", "th'");
+    check("E - E0", "E - E\xe2\x82\x80");
     check("x'''", "x'''"); /* three primes: no dots for them */
 }
 
