@@ -53,8 +53,11 @@ void cli_plot_rows_free(cli_plot_rows *r);
  * exit status 2 with a message for a name that is not a column. */
 typedef qd_plot_pick cli_plot_pick; /* qdot/plot.h */
 
+/* m (may be NULL; mctx its context) gives the coordinates' units
+ * (qd_model_coord_unit), so the default plot puts a unit to a panel and
+ * the labels say it. */
 int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size_t ncols,
-                          size_t ndof, cli_plot_pick *pk);
+                          size_t ndof, qd_ctx *mctx, const qd_model *m, cli_plot_pick *pk);
 
 /* The most panels --plot-y makes (one a group). */
 #define CLI_PLOT_MAX_PANELS QD_PLOT_MAX_PANELS

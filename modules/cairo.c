@@ -104,6 +104,17 @@ static void text(void *cv, const char *s, double x, double y, double ax, double 
     cairo_show_text(CR(cv), s);
 }
 
+static void extents(void *cv, const char *s, double *xb, double *yb, double *w, double *h,
+                    double *advance) {
+    cairo_text_extents_t e;
+    cairo_text_extents(CR(cv), s, &e);
+    *xb = e.x_bearing;
+    *yb = e.y_bearing;
+    *w = e.width;
+    *h = e.height;
+    *advance = e.x_advance;
+}
+
 static double text_width(const char *family, const char *s, double size) {
     cairo_surface_t *sf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
     cairo_t *cr = cairo_create(sf);
@@ -119,7 +130,7 @@ static const qd__canvas_ops ops = {
     open_canvas, close_canvas, rgb,       line_width, round_ends, move_to, line_to,
     rect,        circle,       stroke,    fill,       paint,      save,    restore,
     translate,   rotate,       scale,     clip,       antialias,  font,    text,
-    text_width,
+    extents,     text_width,
 };
 
 const qd__canvas_ops *qd_ext_cairo_ops(void) { return &ops; }

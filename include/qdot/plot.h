@@ -194,6 +194,8 @@ typedef struct qd_plot_pick {
     size_t npanels;
     bool energy_error;     /* a series is E(t) - E(t0) */
     size_t energy;         /* then: the energy column */
+    const char *unit[QD_PLOT_MAX_SERIES]; /* each y series' unit, NULL unknown */
+    const char *xunit;     /* x's (phase), NULL unknown */
 } qd_plot_pick;
 
 /* The columns of a run (names[0, ncols): t, then the ndof coordinates,
@@ -205,6 +207,16 @@ typedef struct qd_plot_pick {
 QD_API qd_status qd_plot_pick_columns(qd_ctx *ctx, const char *ycols, const char *phase,
                                       const char *const *names, size_t ncols, size_t ndof,
                                       qd_plot_pick *pk);
+
+/* The units of pk's columns from units[0, ncols) (each a unit, "rad", or
+ * NULL unknown; units[0], t's, is s); with split (the default pick, every
+ * coordinate against t) the series are grouped into panels by unit in the
+ * order the units first come (one unit per panel: metres and radians never
+ * share an axis), at most QD_PLOT_MAX_PANELS.  qd_plot_run then ends a
+ * panel's y label with its unit, "theta1, theta2 (rad)", when its series
+ * share one. */
+QD_API void qd_plot_pick_units(qd_plot_pick *pk, const char *const *units, size_t ncols,
+                               bool split);
 
 /* The coordinate a Poincare section's plot shows by default (its phase
  * for qd_plot_pick_columns): the section "EXPR = EXPR[, EXPR > EXPR]" fixes

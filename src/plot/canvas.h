@@ -52,6 +52,10 @@ typedef struct qd__canvas_ops {
     /* text with its anchor at (x, y): ax 0 left, 0.5 centre, 1 right of the
      * text; ay likewise from the top (0) to the bottom (1) of its ink */
     void (*text)(void *cv, const char *text, double x, double y, double ax, double ay);
+    /* text's ink in the current font: x and y bearings from the origin on
+     * the baseline, width and height, and the advance */
+    void (*extents)(void *cv, const char *text, double *xb, double *yb, double *w, double *h,
+                    double *advance);
     /* the advance of text in family at size (regular), without a surface */
     double (*text_width)(const char *family, const char *text, double size);
 } qd__canvas_ops;

@@ -16,12 +16,6 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* The canvas a plot paints on: the module's primitives and its surface. */
-typedef struct pen {
-    const qd__canvas_ops *op;
-    void *cv;
-} pen;
-
 const qd__canvas_ops *qd__plot_canvas(qd_ctx *ctx) {
     void *h = qd__module_open(ctx, "cairo", 0, QD__CANVAS_ABI, "Cairo", "libcairo2-dev");
     qd__canvas_ops_fn ops = NULL;
@@ -32,7 +26,7 @@ const qd__canvas_ops *qd__plot_canvas(qd_ctx *ctx) {
 
 double qd__plot_text_width(const qd_plot *p, const char *text, double size) {
     char m[QD__PLOT_TEXT_MAX];
-    qd_plot_math_text(text, m, sizeof m);
+    qd__plot_plain_math(text, m, sizeof m, NULL, NULL);
     return p->canvas->text_width(QD__PLOT_FONT, m, size);
 }
 
@@ -40,11 +34,9 @@ static void use_font(const pen *cr, double size, bool bold) {
     cr->op->font(cr->cv, QD__PLOT_FONT, size, bold);
 }
 
-/* Every text is drawn as mathematics (qd_plot_math_text). */
+/* Every text is drawn as mathematics (qd__plot_math_at, text.c). */
 static void text_at(const pen *cr, const char *text, double x, double y, double ax, double ay) {
-    char m[QD__PLOT_TEXT_MAX];
-    qd_plot_math_text(text, m, sizeof m);
-    cr->op->text(cr->cv, m, x, y, ax, ay);
+    qd__plot_math_at(cr, text, x, y, ax, ay);
 }
 
 /* A tick value with the decimals its step needs, -0 printed as 0. */

@@ -67,6 +67,23 @@ struct qd_plot {
     const qd__canvas_ops *canvas; /* the drawing module's, from the first layout */
 };
 
+/* The canvas a plot paints on: the module's primitives and its surface. */
+typedef struct qd__plot_pen {
+    const qd__canvas_ops *op;
+    void *cv;
+} pen;
+
+/* text as mathematics (qd_plot_math_text) without its combining dots,
+ * into out; with base and dots (QD__PLOT_TEXT_MAX each, may be NULL) the
+ * byte where each dotted letter starts in out and its dots (1 or 2),
+ * returning how many (text.c). */
+size_t qd__plot_plain_math(const char *text, char *out, size_t cap, size_t *base,
+                           unsigned *dots);
+/* text drawn as mathematics anchored as the canvas's text op: the dots,
+ * which fonts put over a short letter's height and so inside a theta,
+ * painted over each dotted letter's ink. */
+void qd__plot_math_at(const pen *cr, const char *text, double x, double y, double ax, double ay);
+
 /* Sizes of the layout, in pixels (points for SVG and PDF). */
 #define QD__PLOT_FONT "sans-serif"
 #define QD__PLOT_TICK_FONT 12.0

@@ -150,8 +150,31 @@ static double value(const run_rows *r, size_t row, size_t col) {
     return r->v[row * r->ncols + col];
 }
 
-/* Panel g's y label: its series' names, "theta1, theta2", or the g-th of
- * the labels "A; B; C" given (the last one for the panels after it). */
+void qd_plot_pick_units(qd_plot_pick *pk, const char *const *units, size_t ncols, bool split) {
+    QD_ARGS(, pk && units);
+    for (size_t i = 0; i < pk->ny; i++)
+        pk->unit[i] = pk->y[i] < ncols ? units[pk->y[i]] : NULL;
+    pk->xunit = pk->x < ncols ? units[pk->x] : NULL;
+    if (!split || pk->phase)
+        return;
+    /* the panel of a unit: the place its unit first comes among the series */
+    const char *seen[QD_PLOT_MAX_SERIES];
+    size_t nseen = 0;
+    for (size_t i = 0; i < pk->ny; i++) {
+        size_t g = 0;
+        while (g < nseen && !(seen[g] == pk->unit[i] ||
+                              (seen[g] && pk->unit[i] && !strcmp(seen[g], pk->unit[i]))))
+            g++;
+        if (g == nseen && nseen < QD_PLOT_MAX_PANELS)
+            seen[nseen++] = pk->unit[i];
+        pk->panel[i] = g < nseen ? g : nseen - 1;
+    }
+    pk->npanels = nseen ? nseen : 1;
+}
+
+/* Panel g's y label: its series' names, "theta1, theta2", and their unit
+ * when they share one, or the g-th of the labels "A; B; C" given (the last
+ * one for the panels after it). */
 static void y_label(const run_rows *r, size_t g, const char *ylabel, char *buf, size_t cap) {
     if (ylabel) {
         const char *at = ylabel, *semi;
@@ -164,16 +187,29 @@ static void y_label(const run_rows *r, size_t g, const char *ylabel, char *buf, 
         return;
     }
     size_t k = 0;
+    const char *unit = NULL;
+    bool one = true, first = true;
     buf[0] = 0;
-    for (size_t i = 0; i < r->pk->ny && k + 1 < cap; i++)
-        if (r->pk->panel[i] == g)
+    for (size_t i = 0; i < r->pk->ny; i++) {
+        if (r->pk->panel[i] != g)
+            continue;
+        if (k + 1 < cap)
             k += (size_t)snprintf(buf + k, cap - k, "%s%s", k ? ", " : "", series_name(r, i));
+        const char *u = r->pk->unit[i];
+        one &= first || (u && unit && !strcmp(u, unit));
+        unit = first ? u : unit;
+        first = false;
+    }
+    if (one && unit && k + 1 < cap)
+        snprintf(buf + k, cap - k, " (%s)", unit);
 }
 
 static qd_status fill_panel(qd_plot *p, const run_rows *r, size_t g, const qd_plot_run_opts *o,
                             double *x, double *y) {
     const qd_plot_pick *pk = r->pk;
-    const char *xl = o->xlabel ? o->xlabel : pk->x == 0 ? "t (s)" : r->names[pk->x];
+    char xu[160]; /* a phase plot's coordinate, with its unit */
+    snprintf(xu, sizeof xu, pk->xunit ? "%s (%s)" : "%s", r->names[pk->x], pk->xunit);
+    const char *xl = o->xlabel ? o->xlabel : pk->x == 0 ? "t (s)" : xu;
     char yl[256];
     y_label(r, g, o->ylabel, yl, sizeof yl);
     qd_status st = qd_plot_select(p, g);

@@ -2659,6 +2659,13 @@ static void null_model(void **state)
     /* m NULL */
     assert_null(qd_model_coord(NULL, 1));
     reset(&F);
+    /* ---- qd_model_coord_unit */
+    /* ctx NULL */
+    assert_null(qd_model_coord_unit(NULL, F.model, 1));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_model_coord_unit(F.ctx, NULL, 1));
+    reset(&F);
     /* ---- qd_model_nparams */
     /* m NULL */
     assert_true(qd_model_nparams(NULL) == 0);
@@ -3885,6 +3892,13 @@ static void null_plot(void **state)
     reset(&F);
     /* pk NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", (const char * const *)F.names, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_plot_pick_units */
+    /* pk NULL */
+    qd_plot_pick_units(NULL, (const char * const *)F.names, 1, false);
+    reset(&F);
+    /* units NULL */
+    qd_plot_pick_units(NULL, NULL, 1, false);
     reset(&F);
     /* ---- qd_plot_section_phase */
     /* section NULL */

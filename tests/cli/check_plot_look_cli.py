@@ -9,8 +9,15 @@ in the pixels (tests/util/png.py): --dpi, and --title, --size on modes.
 - modes --plot takes the same options: --size 1200x800 gives 1200 x 800,
   --title changes the title band and nothing inside the panels (the
   springs and masses are the same); --symmetry writes each panel's irrep
-  in its top-left corner, so the pictures with and without it differ there.
+  in its top-left corner, so the pictures with and without it differ there;
+- one unit to a panel: the spring pendulum (examples/spring_pendulum.qd, r
+  in the length's unit, theta an angle: its positions and V repeat in 2 pi
+  of theta, not of r) drawn by default gets two panels, r's range (about
+  l0 = 1 stretched, 1.2 at the start) in the first and theta's (within
+  +-0.35 rad of a 0.3 rad start) in the second; the double pendulum's two
+  angles share one panel.
 """
+import json
 import argparse
 import subprocess
 import sys
@@ -83,6 +90,21 @@ def main():
         top = differ(m2, range(0, w, 2), range(0, 30))
         if notes < 20 or top:
             failures.append(f'--symmetry changed {notes} pixels in the panels, {top} above')
+    def panels(model):
+        p = subprocess.run([qdot, 'simulate', str(EX / model), '--t-end', '5', '--format', 'json',
+                            '--plot', str(tmp / 'u.png')], capture_output=True, text=True,
+                           timeout=120)
+        if p.returncode:
+            failures.append(f'{model}: exit {p.returncode} {p.stderr}')
+            return []
+        return json.loads(p.stdout)['plot']['panels']
+
+    sp = panels('spring_pendulum.qd')
+    if len(sp) != 2 or not (1.0 < sp[0]['y0'] < 1.2 < sp[0]['y1'] < 1.6) or \
+            not (-0.4 < sp[1]['y0'] < -0.3 and 0.3 < sp[1]['y1'] < 0.4):
+        failures.append(f'spring pendulum: panels {sp} (r, then theta)')
+    if len(panels('double_pendulum.qd')) != 1:
+        failures.append('double pendulum: its two angles in more than one panel')
     for f in failures:
         print('FAIL:', f)
     print('check_plot_look_cli:', 'FAIL' if failures else 'ok')
