@@ -35,7 +35,8 @@ typedef struct qd_plot qd_plot;
 
 typedef enum qd_plot_style {
     QD_PLOT_LINE,   /* points joined in order: a time series, a phase curve */
-    QD_PLOT_POINTS, /* dots: a Poincare section */
+    QD_PLOT_POINTS, /* dots: a Poincare section; 2.5 px up to 500 points, finer as
+                     * 1/sqrt(n) for more (at least 0.8 px) */
     QD_PLOT_LINE_POINTS, /* a line with a dot at each point */
     QD_PLOT_DOTS    /* large dots, unjoined: the particles of a mode shape */
 } qd_plot_style;
