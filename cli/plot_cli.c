@@ -82,25 +82,6 @@ void cli_plot_rows_free(cli_plot_rows *r) {
     r->n = r->cap = 0;
 }
 
-/* Each column's unit: a coordinate's (qd_model_coord_unit), per second
- * for its velocity NAME'; t in s. */
-static void column_units(qd_ctx *ctx, const qd_model *m, const char *const *names, size_t ncols,
-                         const char **units) {
-    static const char *const rates[][2] = {{"rad", "rad/s"}};
-    units[0] = "s";
-    for (size_t k = 1; k < ncols; k++) {
-        units[k] = NULL;
-        size_t len = strlen(names[k]), base = len && names[k][len - 1] == '\'' ? len - 1 : len;
-        for (size_t i = 0; m && i < qd_model_ncoords(m); i++) {
-            const char *q = qd_expr_name(qd_model_coord(m, i));
-            if (!q || strlen(q) != base || strncmp(q, names[k], base))
-                continue;
-            const char *u = qd_model_coord_unit(ctx, m, i);
-            units[k] = base == len || !u ? u : !strcmp(u, rates[0][0]) ? rates[0][1] : NULL;
-        }
-    }
-}
-
 int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size_t ncols,
                           size_t ndof, qd_ctx *mctx, const qd_model *m, cli_plot_pick *pk) {
     qd_ctx *ctx = qd_ctx_new();
@@ -110,7 +91,8 @@ int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size
                  ? QD_EXIT_OK
                  : cli_diag_ctx(ctx);
     if (rc == QD_EXIT_OK) {
-        column_units(mctx, m, names, ncols, units);
+        for (size_t k = 0; k < ncols; k++)
+            units[k] = m ? qd_model_column_unit(mctx, m, names[k]) : k ? NULL : "s";
         qd_plot_pick_units(pk, units, ncols, !a->ycols && !a->phase);
     }
     free(units);

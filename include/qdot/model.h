@@ -102,6 +102,10 @@ QD_API const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in decla
  * cannot be evaluated without velocities gives NULL, nothing recorded in
  * ctx.  The string is static. */
 QD_API const char *qd_model_coord_unit(qd_ctx *ctx, const qd_model *m, size_t i);
+/* The unit of a run's column named name: "s" for t, a coordinate's unit
+ * (qd_model_coord_unit) for its name, and per second for its velocity
+ * NAME' ("rad/s"); NULL for any other column or an unknown unit. */
+QD_API const char *qd_model_column_unit(qd_ctx *ctx, const qd_model *m, const char *name);
 QD_API size_t qd_model_nparams(const qd_model *m);
 /* The user functions the model declares (`functions W, h`), in order. */
 QD_API size_t qd_model_nfunctions(const qd_model *m);

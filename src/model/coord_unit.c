@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define MAXOUT 200 /* positions of the first 64 particles and V */
 
@@ -81,4 +82,20 @@ const char *qd_model_coord_unit(qd_ctx *ctx, const qd_model *m, size_t i) {
     free(syms);
     free(in);
     return unit;
+}
+
+const char *qd_model_column_unit(qd_ctx *ctx, const qd_model *m, const char *name) {
+    QD_ARGS(NULL, ctx && m && name);
+    if (!strcmp(name, "t"))
+        return "s";
+    size_t len = strlen(name), base = len && name[len - 1] == '\'' ? len - 1 : len;
+    for (size_t i = 0; i < qd_model_ncoords(m); i++) {
+        const char *q = qd_expr_name(qd_model_coord(m, i));
+        if (!q || strlen(q) != base || strncmp(q, name, base))
+            continue;
+        const char *u = qd_model_coord_unit(ctx, m, i);
+        /* the only unit said is rad: its rate is rad/s */
+        return base == len || !u ? u : "rad/s";
+    }
+    return NULL;
 }

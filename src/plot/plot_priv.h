@@ -84,6 +84,9 @@ size_t qd__plot_plain_math(const char *text, char *out, size_t cap, size_t *base
  * painted over each dotted letter's ink. */
 void qd__plot_math_at(const pen *cr, const char *text, double x, double y, double ax, double ay);
 
+/* Panel k's marks painted (marks_draw.c), in its clip. */
+void qd__plot_draw_marks(const qd_plot *p, size_t k, const pen *cr);
+
 /* Sizes of the layout, in pixels (points for SVG and PDF). */
 #define QD__PLOT_FONT "sans-serif"
 #define QD__PLOT_TICK_FONT 12.0

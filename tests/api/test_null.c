@@ -2666,6 +2666,16 @@ static void null_model(void **state)
     /* m NULL */
     assert_null(qd_model_coord_unit(F.ctx, NULL, 1));
     reset(&F);
+    /* ---- qd_model_column_unit */
+    /* ctx NULL */
+    assert_null(qd_model_column_unit(NULL, F.model, "q"));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_model_column_unit(F.ctx, NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_model_column_unit(F.ctx, F.model, NULL));
+    reset(&F);
     /* ---- qd_model_nparams */
     /* m NULL */
     assert_true(qd_model_nparams(NULL) == 0);

@@ -8,7 +8,8 @@
  *   the double pendulum given by T and V alone (no particles): V's
  *     -cos theta_i make both angles;
  *   the cart-pendulum: x a length, th an angle;
- *   a coordinate out of range: NULL.
+ *   a coordinate out of range: NULL; a run's columns: t in s, an angle's
+ *   velocity in rad/s, energy unknown.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -30,6 +31,12 @@ static void test_spring_pendulum(void **state) {
     assert_null(qd_model_coord_unit(s->ctx, s->model, 0));
     assert_string_equal(qd_model_coord_unit(s->ctx, s->model, 1), "rad");
     assert_null(qd_model_coord_unit(s->ctx, s->model, 2));
+    /* a run's columns: t in s, theta in rad, its velocity in rad/s */
+    assert_string_equal(qd_model_column_unit(s->ctx, s->model, "t"), "s");
+    assert_string_equal(qd_model_column_unit(s->ctx, s->model, "theta"), "rad");
+    assert_string_equal(qd_model_column_unit(s->ctx, s->model, "theta'"), "rad/s");
+    assert_null(qd_model_column_unit(s->ctx, s->model, "r'"));
+    assert_null(qd_model_column_unit(s->ctx, s->model, "energy"));
 }
 
 static void test_given_by_t_and_v(void **state) {
