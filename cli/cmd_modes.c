@@ -37,6 +37,7 @@ typedef struct modes_args {
     bool json, field; /* from the above: --format json; FILE declares a field */
     const char *plot;  /* --plot FILE: the mode shapes drawn */
     bool symmetry;     /* --symmetry */
+    cli_plot_args look; /* --title, --size, ... of --plot */
     uint64_t count;    /* --count: a field model's number of modes */
     double tol;        /* --tol: a field model's relative tolerance */
 } modes_args;
@@ -48,6 +49,8 @@ typedef struct modes_run {
     double *Q, *Qd;             /* --initial: normal coordinates at t = 0 */
     cli_sym_run sym;            /* --symmetry */
 } modes_run;
+
+static const cli_group groups[] = {CLI_PLOT_LOOK_GROUP(modes_args, look), {NULL, 0}};
 
 #define OPT(...) CLI_OPT(modes_args, __VA_ARGS__)
 static const cli_opt opts[] = {
@@ -78,7 +81,7 @@ static const cli_opt opts[] = {
 static const cli_spec spec = {
     "modes", "FILE [--at-equilibrium N | --about \"q1=VALUE, ...\"] [options]",
     "small oscillations about an equilibrium: frequencies and mode shapes (a field model: "
-    "FIELDFILE [--count N] [--tol X])", opts, NULL, 1, 1, "FILE", false};
+    "FIELDFILE [--count N] [--tol X])", opts, groups, 1, 1, "FILE", false};
 
 /* The point (qd_modes_at_choose): --about's, --at-equilibrium's or the
  * library's choice. */
@@ -178,7 +181,8 @@ static int check(cli_run *c) {
                                "nor --initial");
     if (a->plot && a->scan)
         return cli_usage_error("--plot draws the modes about one point: not with --scan");
-    if (a->plot && (rc = cli_plot_check(&(cli_plot_args){.file = a->plot}, "modes")))
+    a->look.file = a->plot;
+    if ((rc = cli_plot_check(&a->look, "modes")))
         return rc;
     if (a->symmetry && a->scan)
         return cli_usage_error("--symmetry labels the modes about one point: not with --scan");
@@ -229,7 +233,7 @@ static int run(cli_run *c) {
     if (rc == QD_EXIT_OK)
         rc = emit(r, a->json);
     if (rc == QD_EXIT_OK && a->plot)
-        rc = cli_modes_plot(&r->lr, r->at.q0, &r->at.res, a->plot, c->file);
+        rc = cli_modes_plot(&r->lr, r->at.q0, &r->at.res, &a->look, c->file, &r->sym);
     return rc;
 }
 

@@ -93,7 +93,8 @@ static int pc_plot_pick(const cli_sim *c, pc_args *p, const char **names, size_t
     qd_sim_columns(c->s, c->opts.method, names, ncols);
     if (!p->a.plot.phase)
         p->a.plot.phase = qd_plot_section_phase(p->section, names, qd_sim_ndof(c->s));
-    return cli_plot_pick_columns(&p->a.plot, names, ncols, qd_sim_ndof(c->s), pick);
+    return cli_plot_pick_columns(&p->a.plot, names, ncols, qd_sim_ndof(c->s), c->ctx, c->mf.model,
+                                 pick);
 }
 
 int cli_cmd_poincare(int argc, char **argv) {

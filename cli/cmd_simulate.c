@@ -182,7 +182,8 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
     if (rc == QD_EXIT_OK)
         qd_sim_columns(c->s, c->opts.method, names, ncols);
     if (rc == QD_EXIT_OK && a->plot.file &&
-        cli_plot_pick_columns(&a->plot, names, ncols, qd_sim_ndof(c->s), &pick) != QD_EXIT_OK)
+        cli_plot_pick_columns(&a->plot, names, ncols, qd_sim_ndof(c->s), c->ctx, c->mf.model,
+                              &pick) != QD_EXIT_OK)
         rc = QD_EXIT_USAGE;
     cli_out_file out = {stdout, 0};
     if (rc == QD_EXIT_OK && a->out && !(out.f = cli_out_open(a->out, &rc)))

@@ -9,6 +9,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "qdot/qdot.h"
+#include "args.h"
 #include "qdot/plot.h"
 
 typedef struct cli_plot_args {
@@ -21,7 +22,17 @@ typedef struct cli_plot_args {
     const char *ylabel; /* --ylabel "A; B": each panel's y axis, between semicolons */
     const char *size;   /* --size WxH in pixels, read by cli_plot_check */
     int width, height;  /* from --size, or 0: the default */
+    double dpi;         /* --dpi: a PNG's resolution (0: 96) */
 } cli_plot_args;
+
+/* The picture's options of every command that draws (--title, --xlabel,
+ * --ylabel, --size, --dpi): the fields of the cli_plot_args at MEMBER. */
+extern const cli_opt cli_plot_look_opts[];
+#define CLI_PLOT_LOOK_GROUP(TYPE, MEMBER) {cli_plot_look_opts, offsetof(TYPE, MEMBER)}
+
+/* The options as the library's (qd_plot_apply); title the model file's
+ * name, without its path, where --title is not given. */
+qd_plot_run_opts cli_plot_opts(const cli_plot_args *a, const char *title);
 
 /* The options together, before any work: --plot-y or --phase without
  * --plot, both at once, an unknown extension.  Exit status. */
@@ -42,8 +53,11 @@ void cli_plot_rows_free(cli_plot_rows *r);
  * exit status 2 with a message for a name that is not a column. */
 typedef qd_plot_pick cli_plot_pick; /* qdot/plot.h */
 
+/* m (may be NULL; mctx its context) gives the coordinates' units
+ * (qd_model_coord_unit), so the default plot puts a unit to a panel and
+ * the labels say it. */
 int cli_plot_pick_columns(const cli_plot_args *a, const char *const *names, size_t ncols,
-                          size_t ndof, cli_plot_pick *pk);
+                          size_t ndof, qd_ctx *mctx, const qd_model *m, cli_plot_pick *pk);
 
 /* The most panels --plot-y makes (one a group). */
 #define CLI_PLOT_MAX_PANELS QD_PLOT_MAX_PANELS

@@ -80,12 +80,6 @@ const cli_opt cli_sim_plot_opts[] = {
     {"--plot-y", NULL, CLI_TEXT, PLOT(ycols), "\"NAME, ...; ...\"",
      "columns against t, a panel for each group between semicolons", NULL, NULL},
     {"--phase", NULL, CLI_TEXT, PLOT(phase), "Q", "draw Q' against Q", NULL, NULL},
-    {"--title", NULL, CLI_TEXT, PLOT(title), "TEXT", "the picture's title (else the file)",
-     NULL, NULL},
-    {"--xlabel", NULL, CLI_TEXT, PLOT(xlabel), "TEXT", "every panel's x axis", NULL, NULL},
-    {"--ylabel", NULL, CLI_TEXT, PLOT(ylabel), "\"TEXT; ...\"", "each panel's y axis", NULL,
-     NULL},
-    {"--size", NULL, CLI_TEXT, PLOT(size), "WxH", "the picture's size in pixels", NULL, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 #undef PLOT

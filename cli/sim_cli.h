@@ -52,7 +52,8 @@ extern const cli_opt cli_sim_opts[];
 /* The --plot options of the commands that draw a run (simulate, poincare):
  * the fields of the cli_plot_args in MEMBER (a cli_sim_args). */
 extern const cli_opt cli_sim_plot_opts[];
-#define CLI_SIM_PLOT_GROUP(TYPE, MEMBER) {cli_sim_plot_opts, offsetof(TYPE, MEMBER.plot)}
+#define CLI_SIM_PLOT_GROUP(TYPE, MEMBER)                                                       \
+    {cli_sim_plot_opts, offsetof(TYPE, MEMBER.plot)}, CLI_PLOT_LOOK_GROUP(TYPE, MEMBER.plot)
 
 typedef struct cli_sim {
     qd_ctx *ctx;

@@ -82,6 +82,7 @@ static void save(void *cv) { cairo_save(CR(cv)); }
 static void restore(void *cv) { cairo_restore(CR(cv)); }
 static void translate(void *cv, double x, double y) { cairo_translate(CR(cv), x, y); }
 static void rotate(void *cv, double a) { cairo_rotate(CR(cv), a); }
+static void scale(void *cv, double s) { cairo_scale(CR(cv), s, s); }
 static void clip(void *cv) { cairo_clip(CR(cv)); }
 static void antialias(void *cv, bool on) {
     cairo_set_antialias(CR(cv), on ? CAIRO_ANTIALIAS_DEFAULT : CAIRO_ANTIALIAS_NONE);
@@ -103,6 +104,17 @@ static void text(void *cv, const char *s, double x, double y, double ax, double 
     cairo_show_text(CR(cv), s);
 }
 
+static void extents(void *cv, const char *s, double *xb, double *yb, double *w, double *h,
+                    double *advance) {
+    cairo_text_extents_t e;
+    cairo_text_extents(CR(cv), s, &e);
+    *xb = e.x_bearing;
+    *yb = e.y_bearing;
+    *w = e.width;
+    *h = e.height;
+    *advance = e.x_advance;
+}
+
 static double text_width(const char *family, const char *s, double size) {
     cairo_surface_t *sf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
     cairo_t *cr = cairo_create(sf);
@@ -115,9 +127,10 @@ static double text_width(const char *family, const char *s, double size) {
 }
 
 static const qd__canvas_ops ops = {
-    open_canvas, close_canvas, rgb,     line_width, round_ends, move_to,   line_to,
-    rect,        circle,       stroke,  fill,       paint,      save,      restore,
-    translate,   rotate,       clip,    antialias,  font,       text,      text_width,
+    open_canvas, close_canvas, rgb,       line_width, round_ends, move_to, line_to,
+    rect,        circle,       stroke,    fill,       paint,      save,    restore,
+    translate,   rotate,       scale,     clip,       antialias,  font,    text,
+    extents,     text_width,
 };
 
 const qd__canvas_ops *qd_ext_cairo_ops(void) { return &ops; }

@@ -109,6 +109,18 @@ QD_API qd_ctx *qd_model_ctx(const qd_model *m);
 
 QD_API size_t qd_model_ncoords(const qd_model *m);
 QD_API const qd_expr *qd_model_coord(const qd_model *m, size_t i);   /* in declaration order */
+/* Coordinate i's unit where the model states it through its geometry:
+ * "rad" when the particles' positions and V (each as a function of the
+ * coordinates, parameters and t) repeat when it grows by 2 pi, and change
+ * when it grows by 1: an angle.  NULL otherwise (a length, a charge, or not
+ * said: the model writes no units), and for i out of range; a V that
+ * cannot be evaluated without velocities gives NULL, nothing recorded in
+ * ctx.  The string is static. */
+QD_API const char *qd_model_coord_unit(qd_ctx *ctx, const qd_model *m, size_t i);
+/* The unit of a run's column named name: "s" for t, a coordinate's unit
+ * (qd_model_coord_unit) for its name, and per second for its velocity
+ * NAME' ("rad/s"); NULL for any other column or an unknown unit. */
+QD_API const char *qd_model_column_unit(qd_ctx *ctx, const qd_model *m, const char *name);
 QD_API size_t qd_model_nparams(const qd_model *m);
 /* The user functions the model declares (`functions W, h`), in order. */
 QD_API size_t qd_model_nfunctions(const qd_model *m);

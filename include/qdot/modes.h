@@ -410,14 +410,18 @@ QD_API qd_status qd_speeds_modes_print(qd_ctx *ctx, const struct qd_speeds_eom *
  * most QD_MODES_PLOT_MAXP of them, and at most QD_MODES_PLOT_MAXPANELS
  * modes): a panel per mode (at most 3 to a row, 2 x 2 for four), each with
  * the particles at the equilibrium ("equilibrium") and at q0 + s a_j ("mode
- * J: w = W rad/s", or "mode J: unstable, w^2 = W2", 4 significant digits),
+ * shape"), headed "mode J: omega = W rad/s" or "mode J: unstable, omega^2 =
+ * W2" (4 significant digits),
  * s scaling the linear displacement so its largest component (along x, y or
  * z, over the particles) is a fifth of the configuration's size (its
  * largest extent along x, y or z; 1 when all particles are at one point;
  * the displacement per unit s is a forward difference of the positions
  * with a step 1e-6 of the size along a_j), drawn in the plane of the two
  * axes along which the positions, at rest and moved, spread most, with
- * equal axes.  When they all lie on one line (spread across it below 1e-9
+ * equal axes, with the springs and rods that join them (qd_modes_link),
+ * drawn moved, an arrow from each particle's place at rest to its place in
+ * the mode, and a pivot at the origin where a rod reaches it; one legend
+ * under the title for the whole picture.  When they all lie on one line (spread across it below 1e-9
  * of the spread along it: a chain of masses and springs), each particle's
  * displacement along the line is drawn against its place at rest ("x" and
  * "displacement along x").  Otherwise (no particles, or too many): one
@@ -429,6 +433,20 @@ struct qd_plot;            /* qdot/plot.h */
 #define QD_MODES_PLOT_MAXP 64       /* particles drawn at most */
 #define QD_MODES_PLOT_MAXPANELS 24  /* modes drawn as particles at most */
 
+#define QD_MODES_PLOT_MAXLINKS 256   /* springs and rods drawn at most */
+
+/* What joins two particles in the picture (src/linear/modes_links.c): a
+ * spring where V couples a coordinate that moves only particle a with one
+ * that moves only b (K0's entry not 0: a distance term of V, such as
+ * k/2 (|ra - rb| - L)^2); a rod where their distance is not 0 and no
+ * coordinate changes it to first order (a pendulum's links); a to the
+ * origin (b == np) is a rod of constant length from a pivot there. */
+typedef enum qd_modes_link { QD_MODES_SPRING, QD_MODES_ROD } qd_modes_link;
+typedef struct qd_modes_link_of {
+    size_t a, b;            /* particles, b == np: the pivot at the origin */
+    qd_modes_link kind;
+} qd_modes_link_of;
+
 /* The numbers of the particle picture. */
 typedef struct qd_modes_picture {
     size_t np;          /* particles drawn; 0: the picture shows coordinates */
@@ -438,6 +456,9 @@ typedef struct qd_modes_picture {
     double *moved;      /* nmode*np*3: particle i in mode j at moved[(j*np + i)*3 + k] */
     unsigned ax, ay;    /* the plane's axes (0 x, 1 y, 2 z; ax < ay), or ay = 3: the
                          * particles are on the line of axis ax */
+    size_t nlinks;      /* the springs and rods found (at most QD_MODES_PLOT_MAXLINKS) */
+    qd_modes_link_of links[QD_MODES_PLOT_MAXLINKS];
+    bool pivot;         /* a rod reaches the origin: a fixed support drawn there */
 } qd_modes_picture;
 
 /* The particles of m at the equilibrium and moved along each mode of res,

@@ -35,11 +35,28 @@ typedef struct qd_plot qd_plot;
 
 typedef enum qd_plot_style {
     QD_PLOT_LINE,   /* points joined in order: a time series, a phase curve */
-    QD_PLOT_POINTS, /* dots: a Poincare section */
-    QD_PLOT_LINE_POINTS /* a line with a dot at each point: particles of a mode shape */
+    QD_PLOT_POINTS, /* dots: a Poincare section; 2.5 px up to 500 points, finer as
+                     * 1/sqrt(n) for more (at least 0.8 px) */
+    QD_PLOT_LINE_POINTS, /* a line with a dot at each point */
+    QD_PLOT_DOTS    /* large dots, unjoined: the particles of a mode shape */
 } qd_plot_style;
 
 typedef enum qd_plot_format { QD_PLOT_PNG, QD_PLOT_SVG, QD_PLOT_PDF } qd_plot_format;
+
+/* Labels are drawn as a textbook prints names (qd_plot_math_text): every
+ * text of a plot (title, axis labels, legend, notes) goes through it. */
+
+/* text with its names as mathematics into out (cap bytes, NUL-terminated,
+ * truncated to fit at a whole UTF-8 character): a name (a word of letters
+ * and digits after one letter or a Greek letter's name, "theta", "Omega";
+ * no '_', not next to '.' or '/', so file names stay) becomes the letter,
+ * its trailing digits subscripts, one or two primes after it a dot or two
+ * over it: "theta1'" is a dotted theta with subscript 1 (U+03B8 U+0307
+ * U+2081), "x2''" x with two dots and subscript 2, "E0" E with subscript 0.
+ * Longer words ("gl4", "th'") and other text are copied.  Returns
+ * the length the whole result needs (as snprintf); out may be NULL when cap
+ * is 0. */
+QD_API size_t qd_plot_math_text(const char *text, char *out, size_t cap);
 
 /* The format named by path's extension (case-insensitive); QD_ERR_ARG with
  * a message for any other. */
@@ -74,6 +91,44 @@ QD_API qd_status qd_plot_set_equal_axes(qd_plot *p, bool equal);
 QD_API qd_status qd_plot_add(qd_plot *p, const char *label, qd_plot_style style, size_t n,
                              const double *x, const double *y, size_t *index);
 QD_API size_t qd_plot_nseries(const qd_plot *p);
+
+/* Figures of a configuration (the mode shapes of qdot modes --plot), in
+ * the current panel's data coordinates, drawn under its series and taken
+ * into its axes' ranges. */
+typedef enum qd_plot_mark {
+    QD_PLOT_SPRING, /* a zigzag from (x0, y0) to (x1, y1), grey */
+    QD_PLOT_ROD,    /* a straight bar from (x0, y0) to (x1, y1), dark grey */
+    QD_PLOT_ARROW,  /* an arrow from (x0, y0), its head at (x1, y1), red */
+    QD_PLOT_PIVOT   /* a fixed support at (x0, y0): a hatched triangle (x1, y1 unused) */
+} qd_plot_mark;
+
+/* One mark of kind with finite coordinates; QD_ERR_ARG for others. */
+QD_API qd_status qd_plot_add_mark(qd_plot *p, qd_plot_mark kind, double x0, double y0,
+                                  double x1, double y1);
+
+/* The current panel's heading (a line above its area, centred: "mode 2:
+ * omega = 1.2 rad/s") and note (bold, in the area's top-left corner: an
+ * irrep's name), copied; NULL or "" for none. */
+QD_API qd_status qd_plot_set_heading(qd_plot *p, const char *text);
+QD_API qd_status qd_plot_set_note(qd_plot *p, const char *text);
+
+/* One legend for the whole plot, in a strip under the title, instead of
+ * one over each panel: an entry for each label, drawn as its first series
+ * (a grid of panels drawing the same things alike).  Before the layout. */
+QD_API qd_status qd_plot_share_legend(qd_plot *p, bool shared);
+
+/* Dots per inch of a PNG (72 to 1200; 96, the default, draws the layout's
+ * pixels as they are): the picture is drawn larger by dpi/96, lines and
+ * letters with it, so the image is dpi/96 times the plot's size in each
+ * direction; SVG and PDF are vector drawings in points and do not change.
+ * qd_plot_to_pixel stays in the layout's pixels (multiply by dpi/96). */
+QD_API qd_status qd_plot_set_dpi(qd_plot *p, double dpi);
+/* dpi is a resolution qd_plot_set_dpi takes; QD_ERR_ARG (field "dpi"). */
+QD_API qd_status qd_plot_dpi_check(qd_ctx *ctx, double dpi);
+
+/* The picture's size, as qd_plot_new takes it (0, 0: the default), before
+ * the layout. */
+QD_API qd_status qd_plot_set_size(qd_plot *p, int width, int height);
 
 /* Series i's colour as 0xRRGGBB: the palette's k-th (cycling) for the k-th
  * series of its panel. */
@@ -140,6 +195,8 @@ typedef struct qd_plot_pick {
     size_t npanels;
     bool energy_error;     /* a series is E(t) - E(t0) */
     size_t energy;         /* then: the energy column */
+    const char *unit[QD_PLOT_MAX_SERIES]; /* each y series' unit, NULL unknown */
+    const char *xunit;     /* x's (phase), NULL unknown */
 } qd_plot_pick;
 
 /* The columns of a run (names[0, ncols): t, then the ndof coordinates,
@@ -151,6 +208,16 @@ typedef struct qd_plot_pick {
 QD_API qd_status qd_plot_pick_columns(qd_ctx *ctx, const char *ycols, const char *phase,
                                       const char *const *names, size_t ncols, size_t ndof,
                                       qd_plot_pick *pk);
+
+/* The units of pk's columns from units[0, ncols) (each a unit, "rad", or
+ * NULL unknown; units[0], t's, is s); with split (the default pick, every
+ * coordinate against t) the series are grouped into panels by unit in the
+ * order the units first come (one unit per panel: metres and radians never
+ * share an axis), at most QD_PLOT_MAX_PANELS.  qd_plot_run then ends a
+ * panel's y label with its unit, "theta1, theta2 (rad)", when its series
+ * share one. */
+QD_API void qd_plot_pick_units(qd_plot_pick *pk, const char *const *units, size_t ncols,
+                               bool split);
 
 /* The coordinate a Poincare section's plot shows by default (its phase
  * for qd_plot_pick_columns): the section "EXPR = EXPR[, EXPR > EXPR]" fixes
@@ -172,8 +239,15 @@ typedef struct qd_plot_run_opts {
     const char *ylabel; /* "A; B": each panel's y axis (the last for the panels after); NULL:
                          * the panel's series' names */
     int width, height;  /* 0: 800 x 500, or 800 wide and 280 a panel (+ 40) when stacked */
+    double dpi;         /* 0: 96 (qd_plot_set_dpi) */
     bool points;        /* dots (a Poincare section), else lines */
 } qd_plot_run_opts;
+
+/* The options of o that are given, applied to a plot made elsewhere (the
+ * mode shapes, a sweep's map): title, xlabel on every panel, ylabel "A;
+ * B" on each panel in turn (the last for the panels after), the size when
+ * width is not 0, dpi when not 0; points is not used.  The plot's errors. */
+QD_API qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o);
 
 /* A plot of the columns pk picks of rows (nrows x ncols, names as for
  * qd_plot_pick_columns), a panel per group, stacked; NULL on failure (no
@@ -192,5 +266,6 @@ QD_API qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *con
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_plot_add (index, label);
- * qd_plot_add_map (label); qd_plot_pick_columns (ycols, phase). An array whose count is 0 may be NULL. */
+ * qd_plot_add_map (label); qd_plot_pick_columns (ycols, phase); qd_plot_math_text (out, when
+ * cap is 0); qd_plot_set_heading, qd_plot_set_note (text). An array whose count is 0 may be NULL. */
 #endif

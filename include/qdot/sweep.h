@@ -177,7 +177,8 @@ QD_API qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, siz
  * ncols numbers, in run order, as qd_sweep_run fills them) as a colour map
  * over the grid's two axes (qd_plot_add_map): the first input across, the
  * second up, the axes labelled with their names, the colour bar with the
- * column's.  Errors as qd_sweep_map_column's, or the plot's. */
+ * column's and the unit the measure fixes ("lyapunov (1/s)", "event_t
+ * (s)", "poincare-count (crossings)").  Errors as qd_sweep_map_column's, or the plot's. */
 QD_API qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plot *p);
 
 /* qdot sweep --map FILE: before the runs, that path's format (a known

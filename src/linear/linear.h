@@ -31,6 +31,13 @@ typedef struct qd__lin {
  * multipliers (constraints kept). */
 qd_status qd__lin_init(qd_ctx *ctx, const qd_eom *e, qd__lin *L);
 void qd__lin_free(qd__lin *L);
+/* The springs and rods of pic (its np and rest set) into pic->links and
+ * pic->pivot (modes_links.c): jac[(j*np + i)*3 + k] = d(position k of
+ * particle i)/dq_j at the equilibrium, far (laid out alike) the positions
+ * at q0 + size/1000 along q_j, K the n x n K0 (NULL: no springs), size the
+ * configuration's, owner n to work in. */
+void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double *far, size_t n,
+                         const double *K, double size, size_t *owner);
 /* Set every input from syms/vals (the rest 0). */
 void qd__lin_bind(qd__lin *L, size_t nvals, const qd_expr *const *syms, const double *vals);
 /* Evaluate at q (n values; NULL keeps the bound ones): L->out then holds

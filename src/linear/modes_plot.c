@@ -13,7 +13,7 @@
  * move along it, so there each particle's displacement is drawn across the
  * line, against its place at rest: the textbook picture of a chain's modes.
  */
-#include "qdot/modes.h"
+#include "linear.h"
 #include "qdot/eval.h"
 #include "qdot/plot.h"
 #include "../base/args.h"
@@ -85,6 +85,44 @@ static void move_along_modes(const qd_eom *e, size_t nvals, const qd_expr *const
         for (size_t k = 0; k < 3 * np; k++)
             mv[k] = pic->rest[k] + s * mv[k];
     }
+}
+
+/* What joins the particles: the positions' Jacobian along each coordinate
+ * (forward differences, as the modes') and K0 (modes_links.c). */
+static qd_status find_links(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                            const qd_expr *const *syms, const double *vals, qd_prog *prog,
+                            const double *q0, qd_modes_picture *pic, double *w, double *q) {
+    size_t n = e->n, np = pic->np;
+    double size = fmax(fmax(spread(pic->rest, np, 0), spread(pic->rest, np, 1)),
+                       spread(pic->rest, np, 2));
+    size = size > 0 ? size : 1;
+    double *jac = malloc((6 * np * n + 1) * sizeof *jac), *far = jac ? jac + 3 * np * n : NULL;
+    double h = 1e-6 * size;
+    size_t *owner = malloc((n + 1) * sizeof *owner);
+    qd_linear lin = {0};
+    bool have_k = jac && owner &&
+                  qd_linear_about(ctx, e, m, nvals, syms, vals, &lin) == QD_OK;
+    if (!have_k)
+        qd_ctx_clear_error(ctx); /* no springs drawn, the rest of the picture stands */
+    for (size_t j = 0; jac && owner && j < n; j++) {
+        memcpy(q, q0, n * sizeof *q);
+        q[j] += h;
+        put_state(e, nvals, syms, w, q);
+        double *d = jac + j * 3 * np;
+        qd_prog_run(prog, w, d);
+        for (size_t k = 0; k < 3 * np; k++)
+            d[k] = (d[k] - pic->rest[k]) / h;
+        q[j] = q0[j] + 1e-3 * size; /* a rod's length is kept at any step */
+        put_state(e, nvals, syms, w, q);
+        qd_prog_run(prog, w, far + j * 3 * np);
+    }
+    if (jac && owner)
+        qd__lin_modes_links(pic, jac, far, n, have_k ? lin.K : NULL, size, owner);
+    qd_linear_free(&lin);
+    qd_status st = jac && owner ? QD_OK : QD_ERR_NOMEM;
+    free(jac);
+    free(owner);
+    return st;
 }
 
 /* The two axes where the positions, at rest and moved, spread most
@@ -175,6 +213,7 @@ qd_status qd_modes_picture_make(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                     q0[j] = vals[k];
         move_along_modes(e, nvals, syms, prog, q0, res, out, w, q);
         choose_plane(out);
+        st = find_links(ctx, e, m, nvals, syms, vals, prog, q0, out, w, q);
     }
     qd_prog_free(prog);
     free(q0);
@@ -189,23 +228,56 @@ static const char *axis_name(unsigned k) {
     return names[k];
 }
 
+/* omega, drawn as the Greek letter (qd_plot_math_text) */
 static void mode_label(const qd_modes_result *res, size_t j, char *buf, size_t cap) {
     double w2 = res->omega2[j];
     if (w2 >= 0)
-        snprintf(buf, cap, "mode %zu: w = %.4g rad/s", j + 1, sqrt(w2));
+        snprintf(buf, cap, "mode %zu: omega = %.4g rad/s", j + 1, sqrt(w2));
     else
-        snprintf(buf, cap, "mode %zu: unstable, w^2 = %.4g", j + 1, w2);
+        snprintf(buf, cap, "mode %zu: unstable, omega^2 = %.4g", j + 1, w2);
+}
+
+/* Particle i (np: the origin) at pos in the picture's axes: in the plane,
+ * or on a line its place at rest across and its displacement up. */
+static void pic_xy(const qd_modes_picture *pic, const double *pos, size_t i, double *x,
+                   double *y) {
+    unsigned ax = pic->ax, ay = pic->ay;
+    if (i == pic->np) {
+        *x = *y = 0;
+        return;
+    }
+    *x = ay == 3 ? pic->rest[3 * i + ax] : pos[3 * i + ax];
+    *y = ay == 3 ? pos[3 * i + ax] - pic->rest[3 * i + ax] : pos[3 * i + ay];
+}
+
+/* Mode j's springs and rods (moved), its arrows from rest, the pivot. */
+static qd_status add_marks(qd_plot *p, const qd_modes_picture *pic, size_t j) {
+    const double *mv = pic->moved + j * 3 * pic->np;
+    qd_status st = QD_OK;
+    for (size_t l = 0; l < pic->nlinks && st == QD_OK; l++) {
+        double ax, ay, bx, by;
+        pic_xy(pic, mv, pic->links[l].a, &ax, &ay);
+        pic_xy(pic, mv, pic->links[l].b, &bx, &by);
+        st = qd_plot_add_mark(p, pic->links[l].kind == QD_MODES_SPRING ? QD_PLOT_SPRING
+                                                                       : QD_PLOT_ROD,
+                              ax, ay, bx, by);
+    }
+    for (size_t i = 0; i < pic->np && st == QD_OK; i++) {
+        double ax, ay, bx, by;
+        pic_xy(pic, pic->rest, i, &ax, &ay);
+        pic_xy(pic, mv, i, &bx, &by);
+        st = qd_plot_add_mark(p, QD_PLOT_ARROW, ax, ay, bx, by);
+    }
+    if (st == QD_OK && pic->pivot && pic->ay != 3)
+        st = qd_plot_add_mark(p, QD_PLOT_PIVOT, 0, 0, 0, 0);
+    return st;
 }
 
 static qd_status add_particles(qd_plot *p, const qd_modes_picture *pic, const double *pos,
                                const char *label, double *x, double *y) {
-    unsigned ax = pic->ax, ay = pic->ay;
-    const double *rest = pic->rest;
-    for (size_t i = 0; i < pic->np; i++) {
-        x[i] = ay == 3 ? rest[3 * i + ax] : pos[3 * i + ax];
-        y[i] = ay == 3 ? pos[3 * i + ax] - rest[3 * i + ax] : pos[3 * i + ay];
-    }
-    return qd_plot_add(p, label, QD_PLOT_LINE_POINTS, pic->np, x, y, NULL);
+    for (size_t i = 0; i < pic->np; i++)
+        pic_xy(pic, pos, i, &x[i], &y[i]);
+    return qd_plot_add(p, label, QD_PLOT_DOTS, pic->np, x, y, NULL);
 }
 
 static qd_status draw_particles(qd_plot *p, const qd_modes_picture *pic,
@@ -219,15 +291,19 @@ static qd_status draw_particles(qd_plot *p, const qd_modes_picture *pic,
         mode_label(res, j, label, sizeof label);
         st = qd_plot_select(p, j);
         if (st == QD_OK)
+            st = qd_plot_set_heading(p, label);
+        if (st == QD_OK)
             st = qd_plot_set_xlabel(p, axis_name(ax));
         if (st == QD_OK)
             st = qd_plot_set_ylabel(p, ay == 3 ? yl : axis_name(ay));
         if (st == QD_OK && ay != 3) /* positions in the plane: true shape */
             st = qd_plot_set_equal_axes(p, true);
         if (st == QD_OK)
-            st = add_particles(p, pic, pic->rest, "equilibrium", x, y);
+            st = add_marks(p, pic, j);
         if (st == QD_OK)
-            st = add_particles(p, pic, pic->moved + j * 3 * pic->np, label, x, y);
+            st = add_particles(p, pic, pic->moved + j * 3 * pic->np, "mode shape", x, y);
+        if (st == QD_OK)
+            st = add_particles(p, pic, pic->rest, "equilibrium", x, y);
     }
     return st;
 }
@@ -236,8 +312,8 @@ static qd_status draw_particles(qd_plot *p, const qd_modes_picture *pic,
  * 330 x 330. */
 static qd_plot *new_grid(qd_ctx *ctx, size_t nmode) {
     size_t cols = nmode <= 3 ? nmode : nmode == 4 ? 2 : 3, rows = (nmode + cols - 1) / cols;
-    qd_plot *p = qd_plot_new(ctx, cols == 1 ? 500 : 330 * (int)cols, 40 + 330 * (int)rows);
-    if (p && qd_plot_panels(p, rows, cols) != QD_OK) {
+    qd_plot *p = qd_plot_new(ctx, cols == 1 ? 500 : 330 * (int)cols, 60 + 340 * (int)rows);
+    if (p && (qd_plot_panels(p, rows, cols) != QD_OK || qd_plot_share_legend(p, true) != QD_OK)) {
         qd_plot_free(p);
         return NULL;
     }

@@ -17,7 +17,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#define QD__CANVAS_ABI 1
+#define QD__CANVAS_ABI 2
 
 enum { QD__CANVAS_PNG, QD__CANVAS_SVG, QD__CANVAS_PDF };
 
@@ -45,12 +45,17 @@ typedef struct qd__canvas_ops {
     void (*restore)(void *cv);
     void (*translate)(void *cv, double x, double y);
     void (*rotate)(void *cv, double radians);
+    void (*scale)(void *cv, double s);               /* both axes: a PNG's --dpi */
     void (*clip)(void *cv);                          /* to the current path */
     void (*antialias)(void *cv, bool on);
     void (*font)(void *cv, const char *family, double size, bool bold);
     /* text with its anchor at (x, y): ax 0 left, 0.5 centre, 1 right of the
      * text; ay likewise from the top (0) to the bottom (1) of its ink */
     void (*text)(void *cv, const char *text, double x, double y, double ax, double ay);
+    /* text's ink in the current font: x and y bearings from the origin on
+     * the baseline, width and height, and the advance */
+    void (*extents)(void *cv, const char *text, double *xb, double *yb, double *w, double *h,
+                    double *advance);
     /* the advance of text in family at size (regular), without a surface */
     double (*text_width)(const char *family, const char *text, double size);
 } qd__canvas_ops;

@@ -16,12 +16,6 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* The canvas a plot paints on: the module's primitives and its surface. */
-typedef struct pen {
-    const qd__canvas_ops *op;
-    void *cv;
-} pen;
-
 const qd__canvas_ops *qd__plot_canvas(qd_ctx *ctx) {
     void *h = qd__module_open(ctx, "cairo", 0, QD__CANVAS_ABI, "Cairo", "libcairo2-dev");
     qd__canvas_ops_fn ops = NULL;
@@ -31,15 +25,18 @@ const qd__canvas_ops *qd__plot_canvas(qd_ctx *ctx) {
 }
 
 double qd__plot_text_width(const qd_plot *p, const char *text, double size) {
-    return p->canvas->text_width(QD__PLOT_FONT, text, size);
+    char m[QD__PLOT_TEXT_MAX];
+    qd__plot_plain_math(text, m, sizeof m, NULL, NULL);
+    return p->canvas->text_width(QD__PLOT_FONT, m, size);
 }
 
 static void use_font(const pen *cr, double size, bool bold) {
     cr->op->font(cr->cv, QD__PLOT_FONT, size, bold);
 }
 
+/* Every text is drawn as mathematics (qd__plot_math_at, text.c). */
 static void text_at(const pen *cr, const char *text, double x, double y, double ax, double ay) {
-    cr->op->text(cr->cv, text, x, y, ax, ay);
+    qd__plot_math_at(cr, text, x, y, ax, ay);
 }
 
 /* A tick value with the decimals its step needs, -0 printed as 0. */
@@ -115,10 +112,13 @@ static void draw_series(const qd_plot *p, const pen *cr, const qd__plot_series *
     size_t pan = s->panel;
     double px, py;
     cr->op->rgb(cr->cv, rgb);
-    if (s->style == QD_PLOT_POINTS) {
+    /* a section of many crossings in finer dots, so its structure shows
+     * rather than a blot: 2.5 px up to 500 points, then as 1/sqrt(n) */
+    double dot = fmax(0.8, fmin(2.5, 2.5 * sqrt(500.0 / (double)s->n)));
+    if (s->style == QD_PLOT_POINTS || s->style == QD_PLOT_DOTS) {
         for (size_t k = 0; k < s->n; k++) {
             qd_plot_to_pixel(p, pan, s->x[k], s->y[k], &px, &py);
-            cr->op->circle(cr->cv, px, py, 2.5);
+            cr->op->circle(cr->cv, px, py, s->style == QD_PLOT_DOTS ? 5 : dot);
         }
         cr->op->fill(cr->cv);
         return;
@@ -209,26 +209,37 @@ static void draw_data(const qd_plot *p, size_t k, const pen *cr) {
     cr->op->clip(cr->cv);
     if (f->map)
         draw_map(p, k, cr);
+    qd__plot_draw_marks(p, k, cr);
     for (size_t i = 0; i < p->nseries; i++)
         if (p->series[i].panel == k)
             draw_series(p, cr, &p->series[i], qd_plot_color(p, i));
+    if (f->note) {
+        cr->op->rgb(cr->cv, 0x000000);
+        use_font(cr, QD__PLOT_LABEL_FONT, true);
+        text_at(cr, f->note, f->left + 8, f->top + 8, 0, 0);
+    }
     cr->op->restore(cr->cv);
 }
 
+/* The legend of panel k over its area, or (k QD__PLOT_ANY_PANEL) the
+ * plot's shared one under the title. */
 static void draw_legend(const qd_plot *p, size_t k, const pen *cr, size_t *row, double *xoff) {
-    const qd__plot_panel *f = &p->panels[k];
-    qd__plot_legend_rows(p, k, f->width, row, xoff);
+    bool all = k == QD__PLOT_ANY_PANEL;
+    const qd__plot_panel *f = all ? NULL : &p->panels[k];
+    double left = all ? 24 : f->left, top = all ? (p->title && *p->title ? 32 : 8) : f->legend_top;
+    qd__plot_legend_rows(p, k, all ? (double)p->width - 48 : f->width, row, xoff);
     use_font(cr, QD__PLOT_TICK_FONT, false);
     for (size_t i = 0; i < p->nseries; i++) {
         const qd__plot_series *s = &p->series[i];
-        if (!*s->label || s->panel != k)
+        if (!*s->label || (all ? !qd__plot_legend_first(p, i) : s->panel != k))
             continue;
-        double x = f->left + xoff[i], y = f->legend_top + ((double)row[i] + 0.5) * QD__PLOT_LEGEND_ROW;
+        double x = left + xoff[i], y = top + ((double)row[i] + 0.5) * QD__PLOT_LEGEND_ROW;
         cr->op->rgb(cr->cv, qd_plot_color(p, i));
-        if (s->style == QD_PLOT_POINTS) {
-            cr->op->circle(cr->cv, x + QD__PLOT_SWATCH / 2, y, 3);
+        if (s->style != QD_PLOT_LINE) {
+            cr->op->circle(cr->cv, x + QD__PLOT_SWATCH / 2, y, s->style == QD_PLOT_POINTS ? 3 : 4);
             cr->op->fill(cr->cv);
-        } else {
+        }
+        if (s->style == QD_PLOT_LINE || s->style == QD_PLOT_LINE_POINTS) {
             cr->op->line_width(cr->cv, 2);
             cr->op->move_to(cr->cv, x, y);
             cr->op->line_to(cr->cv, x + QD__PLOT_SWATCH, y);
@@ -237,6 +248,13 @@ static void draw_legend(const qd_plot *p, size_t k, const pen *cr, size_t *row, 
         cr->op->rgb(cr->cv, 0x000000);
         text_at(cr, s->label, x + QD__PLOT_SWATCH + 6, y, 0, 0.5);
     }
+}
+
+static bool has_marks(const qd_plot *p, size_t k) {
+    for (size_t i = 0; i < p->nmarks; i++)
+        if (p->marks[i].panel == k)
+            return true;
+    return false;
 }
 
 static qd_status draw(const qd_plot *p, const pen *cr) {
@@ -250,14 +268,25 @@ static qd_status draw(const qd_plot *p, const pen *cr) {
     cr->op->rgb(cr->cv, 0xffffff);
     cr->op->paint(cr->cv);
     for (size_t k = 0; k < p->rows * p->cols; k++) {
-        if (!p->panels[k].nseries && !p->panels[k].map)
+        const qd__plot_panel *f = &p->panels[k];
+        if (!f->nseries && !f->map && !f->heading && !f->note && !has_marks(p, k))
             continue; /* the grid's unused cells stay blank */
         draw_data(p, k, cr);
         draw_axes(p, k, cr);
-        if (p->panels[k].map)
+        if (f->map)
             draw_bar(p, k, cr);
-        draw_legend(p, k, cr, row, xoff);
+        if (!p->shared_legend)
+            draw_legend(p, k, cr, row, xoff);
+        if (f->heading) {
+            cr->op->rgb(cr->cv, 0x000000);
+            use_font(cr, QD__PLOT_LABEL_FONT, false);
+            text_at(cr, f->heading, f->left + f->width / 2,
+                    f->legend_top + ((double)f->legend_rows + 0.5) * QD__PLOT_LEGEND_ROW, 0.5,
+                    0.5);
+        }
     }
+    if (p->shared_legend)
+        draw_legend(p, QD__PLOT_ANY_PANEL, cr, row, xoff);
     if (p->title && *p->title) {
         cr->op->rgb(cr->cv, 0x000000);
         use_font(cr, QD__PLOT_TITLE_FONT, true);
@@ -288,11 +317,16 @@ static bool to_file(void *closure, const unsigned char *data, size_t length) {
 static qd_status render(const qd_plot *p, qd_plot_format fmt, plot_out *out) {
     int format = fmt == QD_PLOT_SVG ? QD__CANVAS_SVG : fmt == QD_PLOT_PDF ? QD__CANVAS_PDF
                                                                           : QD__CANVAS_PNG;
-    pen cr = {p->canvas, p->canvas->open(format, p->width, p->height, to_file, out)};
+    /* --dpi: a PNG drawn larger, everything with it; vector formats are in points */
+    double zoom = format == QD__CANVAS_PNG ? p->dpi / 96 : 1;
+    int w = (int)lround(p->width * zoom), h = (int)lround(p->height * zoom);
+    pen cr = {p->canvas, p->canvas->open(format, w, h, to_file, out)};
     if (!cr.cv) {
         qd_ctx_error(p->ctx, QD_ERR_NOMEM, "out of memory for the plot's surface");
         return QD_ERR_NOMEM;
     }
+    if (zoom != 1)
+        cr.op->scale(cr.cv, zoom);
     qd_status st = draw(p, &cr);
     const char *why = cr.op->close(cr.cv);
     if (st == QD_OK && why && !out->err) {

@@ -61,6 +61,7 @@ qd_plot *qd_plot_new(qd_ctx *ctx, int width, int height) {
     p->height = height;
     p->panels = one;
     p->rows = p->cols = 1;
+    p->dpi = 96;
     return p;
 }
 
@@ -68,6 +69,8 @@ static void free_panels(qd_plot *p) {
     for (size_t k = 0; k < p->rows * p->cols; k++) {
         qd__free(p->panels[k].xlabel);
         qd__free(p->panels[k].ylabel);
+        qd__free(p->panels[k].heading);
+        qd__free(p->panels[k].note);
         qd__plot_map_free(p->panels[k].map);
     }
     qd__free(p->panels);
@@ -75,7 +78,7 @@ static void free_panels(qd_plot *p) {
 
 qd_status qd_plot_panels(qd_plot *p, size_t rows, size_t cols) {
     QD_ARGS(QD_ERR_ARG, p);
-    bool used = p->nseries || p->panels[0].map;
+    bool used = p->nseries || p->nmarks || p->panels[0].map;
     if (used || rows < 1 || cols < 1 || rows > 8 || cols > 8) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, used ? "a plot is divided into panels before "
                      "any series is added" : "a plot has 1 to 8 rows and columns of panels, "
@@ -127,6 +130,7 @@ void qd_plot_free(qd_plot *p) {
     }
     qd__free(p->series);
     qd__free(p->title);
+    qd__plot_marks_free(p);
     free_panels(p);
     qd__free(p);
 }
@@ -244,6 +248,14 @@ size_t qd_plot_nice_ticks(double lo, double hi, size_t max_ticks, double *step, 
     return 0; /* unreachable: 50 decades span the range in at most 2 */
 }
 
+/* Panel k has marks (a figure): its ranges take them in, padded. */
+static bool panel_marks(const qd_plot *p, size_t k) {
+    for (size_t i = 0; i < p->nmarks; i++)
+        if (p->marks[i].panel == k)
+            return true;
+    return false;
+}
+
 /* A series whose x never decreases is a graph over x (a time axis): its x
  * range is drawn exactly.  Others (a phase loop, dots) need room. */
 static bool graph(const qd__plot_series *s) {
@@ -273,6 +285,8 @@ static void data_range(const qd_plot *p, size_t k, bool want_y, double *lo, doub
             *hi = fmax(*hi, v[k]);
         }
     }
+    qd__plot_marks_range(p, k, want_y, lo, hi);
+    *points |= panel_marks(p, k);
 }
 
 /* An axis over [lo, hi]: a constant is widened around itself; padded by
@@ -341,21 +355,22 @@ static void map_ranges(const qd_plot *p, size_t k, qd__plot_panel *f) {
 static qd_status layout_panel(qd_plot *p, size_t k, double cell_top, double cell_h) {
     qd__plot_panel *f = &p->panels[k];
     double lo, hi, cell_w = (double)p->width / (double)p->cols;
-    bool points;
+    bool points, any = f->nseries || panel_marks(p, k);
     if (f->map) {
         map_ranges(p, k, f);
     } else {
         data_range(p, k, false, &lo, &hi, &points);
-        axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, points, 10, &f->x0, &f->x1);
+        axis_range(any ? lo : 0, any ? hi : 1, points, 10, &f->x0, &f->x1);
         data_range(p, k, true, &lo, &hi, &points);
-        axis_range(f->nseries ? lo : 0, f->nseries ? hi : 1, true, 8, &f->y0, &f->y1);
+        axis_range(any ? lo : 0, any ? hi : 1, true, 8, &f->y0, &f->y1);
     }
     bool ylab = f->ylabel && *f->ylabel, xlab = f->xlabel && *f->xlabel;
     f->left = cell_w * (double)(k % p->cols) + (ylab ? 84 : 64);
     f->width = cell_w - (ylab ? 84 : 64) - 24 - (f->map ? QD__PLOT_BAR_ROOM : 0);
     f->legend_top = cell_top + 4;
-    f->legend_rows = qd__plot_legend_rows(p, k, f->width, NULL, NULL);
-    f->top = f->legend_top + (double)f->legend_rows * QD__PLOT_LEGEND_ROW + 8;
+    f->legend_rows = p->shared_legend ? 0 : qd__plot_legend_rows(p, k, f->width, NULL, NULL);
+    f->top = f->legend_top + (double)(f->legend_rows + (f->heading ? 1 : 0)) *
+                                 QD__PLOT_LEGEND_ROW + 8;
     f->height = cell_top + cell_h - f->top - (xlab ? 52 : 32);
     if (f->width < 50 || f->height < 50) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "no room to plot in %d x %d with %zu x %zu panels "
@@ -373,7 +388,7 @@ qd_status qd_plot_layout(qd_plot *p) {
     bool any_map = false;
     for (size_t k = 0; k < p->rows * p->cols; k++)
         any_map |= p->panels[k].map != NULL;
-    if (p->nseries == 0 && !any_map) {
+    if (p->nseries == 0 && !any_map && !p->nmarks) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot needs at least one series of points");
         return QD_ERR_ARG;
     }
@@ -381,6 +396,10 @@ qd_status qd_plot_layout(qd_plot *p) {
     if (!p->canvas && !(p->canvas = qd__plot_canvas(p->ctx)))
         return QD_ERR_UNSUPPORTED;
     double top = p->title && *p->title ? 32 : 8;
+    p->shared_rows = p->shared_legend ? qd__plot_legend_rows(p, QD__PLOT_ANY_PANEL,
+                                                             (double)p->width - 48, NULL, NULL)
+                                      : 0;
+    top += (double)p->shared_rows * QD__PLOT_LEGEND_ROW;
     double cell_h = ((double)p->height - top) / (double)p->rows;
     for (size_t k = 0; k < p->rows * p->cols; k++) {
         qd_status st = layout_panel(p, k, top + cell_h * (double)(k / p->cols), cell_h);
@@ -420,7 +439,8 @@ size_t qd__plot_legend_rows(const qd_plot *p, size_t k, double width, size_t *ro
     double x = 0;
     for (size_t i = 0; i < p->nseries; i++) {
         const char *label = p->series[i].label;
-        if (!*label || p->series[i].panel != k)
+        if (!*label || (k == QD__PLOT_ANY_PANEL ? !qd__plot_legend_first(p, i)
+                                                : p->series[i].panel != k))
             continue;
         double w = QD__PLOT_SWATCH + 6 + qd__plot_text_width(p, label, QD__PLOT_TICK_FONT) + 18;
         if (rows == 0 || (x > 0 && x + w > width)) {

@@ -18,6 +18,14 @@ typedef struct qd__plot_series {
     double *x, *y;
 } qd__plot_series;
 
+/* A mark of a figure (qd_plot_add_mark): a spring or rod between two
+ * points, an arrow from the first to the second, or a pivot at the first. */
+typedef struct qd__plot_mark {
+    qd_plot_mark kind;
+    size_t panel;
+    double x0, y0, x1, y1;
+} qd__plot_mark;
+
 /* A colour map (qd_plot_add_map): nx x ny values over a grid, and its
  * value range (zmin == zmax when constant; both NaN when every value is). */
 typedef struct qd__plot_map {
@@ -31,6 +39,8 @@ typedef struct qd__plot_map {
  * maps data onto it. */
 typedef struct qd__plot_panel {
     char *xlabel, *ylabel;
+    char *heading;                     /* above the area (qd_plot_set_heading); NULL none */
+    char *note;                        /* in its top-left corner (qd_plot_set_note) */
     size_t nseries;
     bool equal;                        /* one data unit is as long on both axes */
     double left, top, width, height;   /* the plot area, in pixels */
@@ -48,9 +58,34 @@ struct qd_plot {
     size_t rows, cols, cur;
     qd__plot_series *series;
     size_t nseries, cap;
+    qd__plot_mark *marks;
+    size_t nmarks, capm;
+    bool shared_legend;                /* one legend under the title (qd_plot_share_legend) */
+    size_t shared_rows;                /* its rows, after the layout */
+    double dpi;                        /* 96: a pixel a unit of the layout */
     bool laid_out;
     const qd__canvas_ops *canvas; /* the drawing module's, from the first layout */
 };
+
+/* The canvas a plot paints on: the module's primitives and its surface. */
+typedef struct qd__plot_pen {
+    const qd__canvas_ops *op;
+    void *cv;
+} pen;
+
+/* text as mathematics (qd_plot_math_text) without its combining dots,
+ * into out; with base and dots (QD__PLOT_TEXT_MAX each, may be NULL) the
+ * byte where each dotted letter starts in out and its dots (1 or 2),
+ * returning how many (text.c). */
+size_t qd__plot_plain_math(const char *text, char *out, size_t cap, size_t *base,
+                           unsigned *dots);
+/* text drawn as mathematics anchored as the canvas's text op: the dots,
+ * which fonts put over a short letter's height and so inside a theta,
+ * painted over each dotted letter's ink. */
+void qd__plot_math_at(const pen *cr, const char *text, double x, double y, double ax, double ay);
+
+/* Panel k's marks painted (marks_draw.c), in its clip. */
+void qd__plot_draw_marks(const qd_plot *p, size_t k, const pen *cr);
 
 /* Sizes of the layout, in pixels (points for SVG and PDF). */
 #define QD__PLOT_FONT "sans-serif"
@@ -59,6 +94,7 @@ struct qd_plot {
 #define QD__PLOT_TITLE_FONT 16.0
 #define QD__PLOT_LEGEND_ROW 20.0
 #define QD__PLOT_SWATCH 24.0
+#define QD__PLOT_TEXT_MAX 1024 /* a text drawn, as mathematics, in bytes */
 
 /* The drawing module's canvas (qdot_cairo.so), NULL with
  * QD_ERR_UNSUPPORTED in ctx when it cannot be loaded (draw.c). */
@@ -70,6 +106,14 @@ double qd__plot_text_width(const qd_plot *p, const char *text, double size);
  * row[i] and x offset xoff[i] of series i (either may be NULL); returns the
  * row count (0 without labels). */
 size_t qd__plot_legend_rows(const qd_plot *p, size_t k, double width, size_t *row, double *xoff);
+/* The shared legend's entries: series i is in it when it is the first of
+ * its label (every panel's series with one label are drawn alike). */
+bool qd__plot_legend_first(const qd_plot *p, size_t i);
+#define QD__PLOT_ANY_PANEL ((size_t)-1) /* qd__plot_legend_rows over the whole plot */
+
+/* The marks of panel k widen lo/hi (x, else y) to take them in. */
+void qd__plot_marks_range(const qd_plot *p, size_t k, bool want_y, double *lo, double *hi);
+void qd__plot_marks_free(qd_plot *p);
 
 /* The map's cells: the edges of cell i along an axis of n points v,
  * halfway to its neighbours (the end cells as wide as the next one in). */

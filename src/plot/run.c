@@ -150,8 +150,31 @@ static double value(const run_rows *r, size_t row, size_t col) {
     return r->v[row * r->ncols + col];
 }
 
-/* Panel g's y label: its series' names, "theta1, theta2", or the g-th of
- * the labels "A; B; C" given (the last one for the panels after it). */
+void qd_plot_pick_units(qd_plot_pick *pk, const char *const *units, size_t ncols, bool split) {
+    QD_ARGS(, pk && units);
+    for (size_t i = 0; i < pk->ny; i++)
+        pk->unit[i] = pk->y[i] < ncols ? units[pk->y[i]] : NULL;
+    pk->xunit = pk->x < ncols ? units[pk->x] : NULL;
+    if (!split || pk->phase)
+        return;
+    /* the panel of a unit: the place its unit first comes among the series */
+    const char *seen[QD_PLOT_MAX_SERIES];
+    size_t nseen = 0;
+    for (size_t i = 0; i < pk->ny; i++) {
+        size_t g = 0;
+        while (g < nseen && !(seen[g] == pk->unit[i] ||
+                              (seen[g] && pk->unit[i] && !strcmp(seen[g], pk->unit[i]))))
+            g++;
+        if (g == nseen && nseen < QD_PLOT_MAX_PANELS)
+            seen[nseen++] = pk->unit[i];
+        pk->panel[i] = g < nseen ? g : nseen - 1;
+    }
+    pk->npanels = nseen ? nseen : 1;
+}
+
+/* Panel g's y label: its series' names, "theta1, theta2", and their unit
+ * when they share one, or the g-th of the labels "A; B; C" given (the last
+ * one for the panels after it). */
 static void y_label(const run_rows *r, size_t g, const char *ylabel, char *buf, size_t cap) {
     if (ylabel) {
         const char *at = ylabel, *semi;
@@ -164,16 +187,29 @@ static void y_label(const run_rows *r, size_t g, const char *ylabel, char *buf, 
         return;
     }
     size_t k = 0;
+    const char *unit = NULL;
+    bool one = true, first = true;
     buf[0] = 0;
-    for (size_t i = 0; i < r->pk->ny && k + 1 < cap; i++)
-        if (r->pk->panel[i] == g)
+    for (size_t i = 0; i < r->pk->ny; i++) {
+        if (r->pk->panel[i] != g)
+            continue;
+        if (k + 1 < cap)
             k += (size_t)snprintf(buf + k, cap - k, "%s%s", k ? ", " : "", series_name(r, i));
+        const char *u = r->pk->unit[i];
+        one &= first || (u && unit && !strcmp(u, unit));
+        unit = first ? u : unit;
+        first = false;
+    }
+    if (one && unit && k + 1 < cap)
+        snprintf(buf + k, cap - k, " (%s)", unit);
 }
 
 static qd_status fill_panel(qd_plot *p, const run_rows *r, size_t g, const qd_plot_run_opts *o,
                             double *x, double *y) {
     const qd_plot_pick *pk = r->pk;
-    const char *xl = o->xlabel ? o->xlabel : pk->x == 0 ? "t (s)" : r->names[pk->x];
+    char xu[160]; /* a phase plot's coordinate, with its unit */
+    snprintf(xu, sizeof xu, pk->xunit ? "%s (%s)" : "%s", r->names[pk->x], pk->xunit);
+    const char *xl = o->xlabel ? o->xlabel : pk->x == 0 ? "t (s)" : xu;
     char yl[256];
     y_label(r, g, o->ylabel, yl, sizeof yl);
     qd_status st = qd_plot_select(p, g);
@@ -195,6 +231,28 @@ static qd_status fill_panel(qd_plot *p, const run_rows *r, size_t g, const qd_pl
         st = qd_plot_add(p, pk->phase ? pair : label, o->points ? QD_PLOT_POINTS : QD_PLOT_LINE,
                          r->n, x, y, NULL);
     }
+    return st;
+}
+
+qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o) {
+    QD_ARGS(QD_ERR_ARG, p && o);
+    qd_status st = o->title ? qd_plot_set_title(p, o->title) : QD_OK;
+    if (st == QD_OK && o->width)
+        st = qd_plot_set_size(p, o->width, o->height);
+    if (st == QD_OK && o->dpi)
+        st = qd_plot_set_dpi(p, o->dpi);
+    size_t cur = p->cur;
+    for (size_t g = 0; g < qd_plot_npanels(p) && st == QD_OK; g++) {
+        char yl[256];
+        p->cur = g;
+        if (o->xlabel)
+            st = qd_plot_set_xlabel(p, o->xlabel);
+        if (st == QD_OK && o->ylabel) {
+            y_label(NULL, g, o->ylabel, yl, sizeof yl);
+            st = qd_plot_set_ylabel(p, yl);
+        }
+    }
+    p->cur = cur;
     return st;
 }
 
@@ -220,6 +278,8 @@ qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *const *nam
     qd_plot *p = x && y ? qd_plot_new(ctx, width, height) : NULL;
     const char *title = o->title ? o->title : "";
     qd_status st = p ? qd_plot_set_title(p, title) : QD_ERR_NOMEM;
+    if (st == QD_OK && o->dpi)
+        st = qd_plot_set_dpi(p, o->dpi);
     if (st == QD_OK && pk->npanels > 1)
         st = qd_plot_panels(p, pk->npanels, 1);
     run_rows r = {.pk = pk, .names = names, .v = rows, .n = nrows, .ncols = ncols};

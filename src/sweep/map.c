@@ -7,6 +7,7 @@
 #include "sweep_int.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "base/mem.h"
@@ -48,6 +49,18 @@ qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, size_t *co
     return field(w->ctx, QD_ERR_ARG, "map_measure");
 }
 
+/* The colour bar's label: the measure's column and, where the measure
+ * fixes it, its unit (a Lyapunov exponent is a rate, 1/s; an event's time
+ * in s; a count of crossings has none but what it counts).  A coordinate's
+ * or energy's unit is the model's, which it does not state. */
+static void bar_label(const char *name, char *buf, size_t cap) {
+    const char *unit = !strncmp(name, "lyapunov", 8) ? "1/s"
+                       : !strcmp(name, "event_t")     ? "s"
+                       : !strcmp(name, "poincare-count") ? "crossings"
+                                                         : NULL;
+    snprintf(buf, cap, unit ? "%s (%s)" : "%s", name, unit);
+}
+
 qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plot *p) {
     QD_ARGS(QD_ERR_ARG, w && rows && p);
     size_t c = 0;
@@ -75,8 +88,10 @@ qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plo
         st = qd_plot_set_xlabel(p, w->cols[0]);
     if (st == QD_OK)
         st = qd_plot_set_ylabel(p, w->cols[1]);
+    char label[200];
+    bar_label(w->cols[col], label, sizeof label);
     if (st == QD_OK)
-        st = qd_plot_add_map(p, w->cols[col], nx, ny, x, y, z);
+        st = qd_plot_add_map(p, label, nx, ny, x, y, z);
     qd__free(x);
     qd__free(y);
     qd__free(z);

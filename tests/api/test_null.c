@@ -2736,6 +2736,23 @@ static void null_model(void **state)
     /* m NULL */
     assert_null(qd_model_coord(NULL, 1));
     reset(&F);
+    /* ---- qd_model_coord_unit */
+    /* ctx NULL */
+    assert_null(qd_model_coord_unit(NULL, F.model, 1));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_model_coord_unit(F.ctx, NULL, 1));
+    reset(&F);
+    /* ---- qd_model_column_unit */
+    /* ctx NULL */
+    assert_null(qd_model_column_unit(NULL, F.model, "q"));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_model_column_unit(F.ctx, NULL, "q"));
+    reset(&F);
+    /* name NULL */
+    assert_null(qd_model_column_unit(F.ctx, F.model, NULL));
+    reset(&F);
     /* ---- qd_model_nparams */
     /* m NULL */
     assert_true(qd_model_nparams(NULL) == 0);
@@ -3841,6 +3858,10 @@ static void null_plot(void **state)
     (void)state;
     static fixture F;
     setup(&F);
+    /* ---- qd_plot_math_text */
+    /* text NULL */
+    assert_true(qd_plot_math_text(NULL, F.c, 1) == 0);
+    reset(&F);
     /* ---- qd_plot_format_of */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_format_of(NULL, "q", (qd_plot_format *)(void *)F.blob));
@@ -3909,6 +3930,34 @@ static void null_plot(void **state)
     /* ---- qd_plot_nseries */
     /* p NULL */
     assert_true(qd_plot_nseries(NULL) == 0);
+    reset(&F);
+    /* ---- qd_plot_add_mark */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_add_mark(NULL, (qd_plot_mark){0}, 1, 1, 1, 1));
+    reset(&F);
+    /* ---- qd_plot_set_heading */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_heading(NULL, "q"));
+    reset(&F);
+    /* ---- qd_plot_set_note */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_note(NULL, "q"));
+    reset(&F);
+    /* ---- qd_plot_share_legend */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_share_legend(NULL, false));
+    reset(&F);
+    /* ---- qd_plot_set_dpi */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_dpi(NULL, 1));
+    reset(&F);
+    /* ---- qd_plot_dpi_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_dpi_check(NULL, 1));
+    reset(&F);
+    /* ---- qd_plot_set_size */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_size(NULL, 1, 1));
     reset(&F);
     /* ---- qd_plot_color */
     /* p NULL */
@@ -3993,6 +4042,13 @@ static void null_plot(void **state)
     /* pk NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_pick_columns(F.ctx, "q", "q", (const char * const *)F.names, 1, 1, NULL));
     reset(&F);
+    /* ---- qd_plot_pick_units */
+    /* pk NULL */
+    qd_plot_pick_units(NULL, (const char * const *)F.names, 1, false);
+    reset(&F);
+    /* units NULL */
+    qd_plot_pick_units(NULL, NULL, 1, false);
+    reset(&F);
     /* ---- qd_plot_section_phase */
     /* section NULL */
     assert_null(qd_plot_section_phase(NULL, (const char * const *)F.names, 1));
@@ -4012,6 +4068,13 @@ static void null_plot(void **state)
     reset(&F);
     /* height NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_size_of(F.ctx, "q", F.i, NULL));
+    reset(&F);
+    /* ---- qd_plot_apply */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_apply(NULL, NULL));
+    reset(&F);
+    /* o NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_apply(F.plot, NULL));
     reset(&F);
     /* ---- qd_plot_run */
     /* ctx NULL */

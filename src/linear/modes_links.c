@@ -1,0 +1,108 @@
+/*
+ * src/linear/modes_links.c - what joins the particles of a mode picture
+ * (qd_modes_picture's links, qdot/modes.h): springs from V, rods from
+ * distances that do not change, and a pivot at the origin.
+ *
+ * Both are read off numbers the picture has already: the positions'
+ * Jacobian at the equilibrium (a forward difference per coordinate) and
+ * K0 = d2V/dq2.  A coordinate that moves one particle only is that
+ * particle's own; a distance term k/2 (|ri - rj| - a)^2 in V couples the
+ * own coordinates of i and j in K0, and nothing else of V does (a spring
+ * to a wall or a potential of one particle stays in its own block).  A
+ * rod is a distance that a step of any one coordinate leaves as it is (to
+ * 1e-9, the step a thousandth of the configuration's size: a first-order
+ * test would take |r2| of a pendulum hanging straight for a rod too, its
+ * change being of second order): the links of a pendulum, |r1| about the
+ * pivot and |r2 - r1|.
+ */
+#include "linear.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MULTI ((size_t)-1) /* a coordinate that moves several particles */
+#define NONE ((size_t)-2)  /* one that moves none */
+
+/* jac[(j*np + i)*3 + k]: d(position k of particle i)/dq_j.  The owner of
+ * each coordinate: the one particle it moves, NONE or MULTI. */
+static void owners(const double *jac, size_t n, size_t np, double tiny, size_t *owner) {
+    for (size_t j = 0; j < n; j++) {
+        owner[j] = NONE;
+        for (size_t i = 0; i < np; i++) {
+            const double *d = jac + (j * np + i) * 3;
+            if (fabs(d[0]) + fabs(d[1]) + fabs(d[2]) > tiny)
+                owner[j] = owner[j] == NONE ? i : MULTI;
+        }
+    }
+}
+
+/* K0 couples an own coordinate of a with one of b. */
+static bool coupled(const double *K, size_t n, const size_t *owner, size_t a, size_t b,
+                    double kmax) {
+    for (size_t u = 0; u < n; u++)
+        for (size_t v = 0; v < n; v++)
+            if (owner[u] == a && owner[v] == b && fabs(K[u * n + v]) > 1e-9 * kmax)
+                return true;
+    return false;
+}
+
+/* |pos_a - pos_b| (b == np: the origin) */
+static double distance(const double *pos, size_t np, size_t a, size_t b) {
+    double d2 = 0;
+    for (unsigned k = 0; k < 3; k++) {
+        double d = pos[3 * a + k] - (b < np ? pos[3 * b + k] : 0);
+        d2 += d * d;
+    }
+    return sqrt(d2);
+}
+
+/* The distance from a to b (b == np: the origin) is not zero, the step
+ * of each coordinate (far) keeps it, and some coordinate moves a against b. */
+static bool rigid(const double *rest, const double *jac, const double *far, size_t n, size_t np,
+                  size_t a, size_t b, double size, double jmax) {
+    double dist = distance(rest, np, a, b);
+    if (!(dist > 1e-6 * size))
+        return false;
+    bool moves = false;
+    for (size_t j = 0; j < n; j++) {
+        const double *da = jac + (j * np + a) * 3, *db = b < np ? jac + (j * np + b) * 3 : NULL;
+        if (fabs(distance(far + j * 3 * np, np, a, b) - dist) > 1e-9 * dist)
+            return false;
+        for (unsigned k = 0; k < 3; k++)
+            moves |= fabs(da[k] - (db ? db[k] : 0)) > 1e-6 * jmax;
+    }
+    return moves;
+}
+
+static bool add_link(qd_modes_picture *pic, size_t a, size_t b, qd_modes_link kind) {
+    if (pic->nlinks == QD_MODES_PLOT_MAXLINKS)
+        return false;
+    pic->links[pic->nlinks++] = (qd_modes_link_of){a, b, kind};
+    return true;
+}
+
+void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double *far, size_t n,
+                         const double *K, double size, size_t *owner) {
+    size_t np = pic->np;
+    double jmax = 0, kmax = 0;
+    for (size_t k = 0; k < 3 * np * n; k++)
+        jmax = fmax(jmax, fabs(jac[k]));
+    for (size_t k = 0; K && k < n * n; k++)
+        kmax = fmax(kmax, fabs(K[k]));
+    if (!(jmax > 0))
+        return;
+    owners(jac, n, np, 1e-9 * jmax, owner);
+    for (size_t a = 0; a < np; a++) {
+        if (rigid(pic->rest, jac, far, n, np, a, np, size, jmax)) {
+            pic->pivot = true;
+            add_link(pic, np, a, QD_MODES_ROD);
+        }
+        for (size_t b = a + 1; b < np; b++) {
+            if (rigid(pic->rest, jac, far, n, np, b, a, size, jmax))
+                add_link(pic, a, b, QD_MODES_ROD);
+            else if (K && kmax > 0 && coupled(K, n, owner, a, b, kmax))
+                add_link(pic, a, b, QD_MODES_SPRING);
+        }
+    }
+}
