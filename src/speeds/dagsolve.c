@@ -10,12 +10,15 @@
  * plain Gaussian elimination whose entries are never expanded: each step
  * adds a few nodes to the shared DAG, the compiled program evaluates every
  * node once, so the solve happens numerically at run time.  Pivots are
- * chosen by the reduced entries' values at a few sample states (the same
- * elimination run in doubles alongside): the entry whose smallest |value|
- * over the samples is largest, so that a pivot that is identically zero
- * (a sum that would cancel) is never taken; one that vanishes only at a
- * special state could still be, which the callers' numeric check of the
- * mass matrix and the tests at random states guard against.
+ * chosen by the reduced entries' values at sample states, the parameters
+ * at their values (the same elimination run in doubles alongside): the
+ * entry whose smallest |value| over the samples is largest, so that a pivot
+ * that is identically zero (a sum that would cancel) is never taken.  One
+ * sample is the reference state q = 0 (a vehicle upright): a pivot that
+ * vanishes there (the bicycle's lean enters as sin(q2)) divides 0 by 0 near
+ * it, so it is avoided whenever another candidate is nonzero there.  A pivot
+ * that vanishes elsewhere could still be taken, which the numeric check of
+ * the mass matrix and the tests at random states guard against.
  */
 #include "spd.h"
 
@@ -23,7 +26,7 @@
 
 #include <math.h>
 
-#define SAMPLES 3
+#define SAMPLES 4
 #define MAXSYMS 96
 
 /* The free symbols of the n*n entries, at most MAXSYMS (more: no numeric
@@ -49,8 +52,8 @@ static size_t gather(qd_ctx *ctx, size_t n, const qd_expr *const *P, const qd_ex
     return ns;
 }
 
-qd_status qd__spd_dag_solve(qd_ctx *ctx, size_t n, const qd_expr *const *P, size_t nc,
-                            const qd_expr *const *B, const qd_expr **X) {
+qd_status qd__spd_dag_solve(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *const *P,
+                            size_t nc, const qd_expr *const *B, const qd_expr **X) {
     size_t w = n + nc;
     const qd_expr **A = qd__malloc(ctx, (n * w + 1) * sizeof *A);
     const qd_expr **syms = qd__malloc(ctx, (MAXSYMS + 1) * sizeof *syms);
@@ -70,8 +73,12 @@ qd_status qd__spd_dag_solve(qd_ctx *ctx, size_t n, const qd_expr *const *P, size
     bool numeric = ns <= MAXSYMS;
     for (size_t s = 0; numeric && s < SAMPLES; s++) {
         double vals[MAXSYMS + 1];
-        for (size_t i = 0; i < ns; i++) /* spread in (0.2, 1.2), different per sample */
-            vals[i] = 0.2 + (double)((i * 7919 + 613 * s + 17) % 101) / 101.0;
+        for (size_t i = 0; i < ns; i++) { /* parameters at their values; sample 0 at q = 0 */
+            vals[i] = s == 0 ? 0 : 0.2 + (double)((i * 7919 + 613 * s + 17) % 101) / 101.0;
+            for (size_t k = 0; m && k < qd_model_nparams(m); k++)
+                if (qd_model_param(m, k) == syms[i] && qd_model_param_number(m, k, &vals[i]) != QD_OK)
+                    qd__ctx_recover(ctx);
+        }
         for (size_t i = 0; numeric && i < n * n; i++)
             if (qd_eval(ctx, P[i], ns, syms, vals, &num[s * n * n + i]) != QD_OK ||
                 !isfinite(num[s * n * n + i])) {
@@ -84,12 +91,19 @@ qd_status qd__spd_dag_solve(qd_ctx *ctx, size_t n, const qd_expr *const *P, size
     for (size_t k = 0; st == QD_OK && k < n; k++) {
         size_t best = n;
         double best_v = 0;
+        bool zero_ok = false;
+        for (size_t r = k; numeric && r < n; r++)
+            zero_ok = zero_ok || (!qd_is_zero(A[r * w + k]) && fabs(num[r * n + k]) > 1e-9);
         for (size_t r = k; r < n; r++) {
             if (qd_is_zero(A[r * w + k]))
                 continue;
+            /* the smallest |value| over the samples; the reference state q = 0
+             * counts only where some candidate is nonzero there */
             double v = INFINITY;
-            for (size_t s = 0; numeric && s < SAMPLES; s++)
+            for (size_t s = 1; numeric && s < SAMPLES; s++)
                 v = fmin(v, fabs(num[s * n * n + r * n + k]));
+            if (numeric && zero_ok)
+                v = fmin(v, fabs(num[r * n + k]));
             if (best == n || v > best_v)
                 best = r, best_v = v;
             if (!numeric)
@@ -157,7 +171,7 @@ qd_status qd__spd_big_map(qd__spd *d) {
             B[i * nc + c] = qd_int(ctx, i == c);
         B[i * nc + nx] = qd_neg(ctx, d->p0[i]);
     }
-    qd_status st = qd__spd_dag_solve(ctx, n, d->P, nc, B, X);
+    qd_status st = qd__spd_dag_solve(ctx, d->model, n, d->P, nc, B, X);
     for (size_t j = 0; st == QD_OK && j < n; j++) {
         const qd_expr *kin = e->w[j] = X[j * nc + nx];
         for (size_t r = 0; r < nx; r++) {

@@ -59,8 +59,8 @@ const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x);
  * velocity map when the exact solve swells.  X's entries are new
  * expressions of ctx.  QD_ERR_SINGULAR when a column has no pivot that is
  * nonzero at the samples, QD_ERR_NOMEM. */
-qd_status qd__spd_dag_solve(qd_ctx *ctx, size_t n, const qd_expr *const *P, size_t nc,
-                            const qd_expr *const *B, const qd_expr **X);
+qd_status qd__spd_dag_solve(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *const *P,
+                            size_t nc, const qd_expr *const *B, const qd_expr **X);
 /* The velocity map (e->W, e->w, e->kin, d->Pinv) from d->P and d->p0 by
  * qd__spd_dag_solve: what velocity_map falls back to when the exact solve
  * is too large. */
