@@ -69,9 +69,15 @@ qd_status qd__spd_big_map(qd__spd *d);
  * distinct nodes.  Larger expressions stay as they are (a DAG the compiled
  * program evaluates), since simplifying them costs more than their size. */
 #define QD__SPD_TIDY_MAX 300
+/* ... and at most this many nodes as a tree: some of the simplifier's
+ * passes walk trees, and a small DAG can be a large tree. */
+#define QD__SPD_TIDY_MAX_TREE 3000
 /* The largest entry of the velocity map (in DAG nodes) solved exactly. */
 #define QD__SPD_EXACT_MAX 32
 bool qd__spd_small(qd__spd *d, const qd_expr *x);
+/* qd_simplify(x) when x is small and its expansion fits, else x itself
+ * (the size limit's error cleared); NULL only out of memory. */
+const qd_expr *qd__spd_simplify(qd__spd *d, const qd_expr *x);
 
 /* The methods: each fills e->M and e->f. */
 qd_status qd__spd_kane(qd__spd *d);
