@@ -16,7 +16,8 @@ contact height, computed from the geometry in plain Python):
      (central differences of the wheel's rigid motion along q'): rolling
      without slip (Kane and Levinson, Dynamics, 1985, sec. 6.1; Desloge
      ch. 64, seed-desloge-B.md C11);
-  2. the speeds' rates u' (Kane, the default) equal the accelerations of the
+  2. the speeds' rates u' by each method (Kane, Gibbs-Appell,
+     Boltzmann-Hamel) equal the accelerations of the
      same model in multiplier form, M q'' = f + A^T lambda, A q'' = b (the
      two formulations are the same dynamics, Desloge ch. 69 thm 2), to 1e-10;
   3. energy: the bicycle has no dissipation and ideal rolling constraints,
@@ -41,6 +42,7 @@ ROOT = Path(__file__).resolve().parents[2]
 MODEL = ROOT / 'tests' / 'speeds' / 'whipple_speeds.qd'
 COORDS = ['x', 'y', 'q1', 'q2', 'q3', 'q4', 'q5', 'q6']
 SPEEDS = {'u2': 'q2', 'u3': 'q3', 'u5': 'q5'}
+METHODS = ['kane', 'appell', 'hamel']
 ACC_TOL = 1e-10
 KIN_TOL = 1e-7     # central differences, h = 1e-5: truncation ~1e-10
 ENERGY_TOL = 1e-8
@@ -199,9 +201,10 @@ def main():
             q['q4'] = solve_pitch(P, q)
             u = {'u2': rng.uniform(-1, 1), 'u3': rng.uniform(5, 20), 'u5': rng.uniform(-1, 1)}
             at = ','.join('%s=%.17g' % kv for kv in list(q.items()) + list(u.items()))
-            d = json.loads(qdot(a.build, 'eom', str(MODEL), '--at', at, '--format', 'json'))
+            runs = {m: json.loads(qdot(a.build, 'eom', str(MODEL), '--at', at, '--method', m,
+                                       '--format', 'json')) for m in METHODS}
+            d = runs['kane']
             v = dict(zip(COORDS, d['velocities']))
-            rates = dict(zip(d['speeds'], d['rates']))
             kin = all(abs(v[c] - u[s]) <= 1e-12 * (1 + abs(u[s])) for s, c in SPEEDS.items())
             h = 1e-5
             dh = (front_height(P, moved(q, v, h)) - front_height(P, moved(q, v, -h))) / (2 * h)
@@ -216,8 +219,11 @@ def main():
                             [(c + "'", v[c]) for c in COORDS])
             dm = json.loads(qdot(a.build, 'eom', str(mult), '--at', at_m, '--format', 'json'))
             acc = dict(zip(COORDS, dm['accelerations']))
-            err = max(abs(rates[s] - acc[c]) / (1 + abs(acc[c])) for s, c in SPEEDS.items())
-            report(err <= ACC_TOL, "state %d: u' (Kane) = q'' (multipliers), error %.1e" % (k, err))
+            for m, dd in runs.items():
+                rates = dict(zip(dd['speeds'], dd['rates']))
+                err = max(abs(rates[s] - acc[c]) / (1 + abs(acc[c])) for s, c in SPEEDS.items())
+                report(err <= ACC_TOL, "state %d: u' (%s) = q'' (multipliers), error %.1e"
+                       % (k, m, err))
         out = qdot(a.build, 'simulate', str(MODEL), '--t-end', '5', '--rtol', '1e-10', '--dt', '5')
         rows = [r.split(',') for r in out.strip().splitlines()]
         head = rows[0]
