@@ -143,15 +143,57 @@ static bool independent_at(closure *c, int k, double *v) {
     return true;
 }
 
+/* component_at for all N components at every point, for big fields: one
+ * compiled program of the components and their top-level terms, run at
+ * each point (qd_eval per component walks the shared DAG again each time).
+ * ok[k] false where a value is not finite; false when it cannot compile. */
+static bool big_values(closure *c, const qd_expr *const *f, double v[NPTS][MAXV], bool *ok) {
+    size_t nout = 0;
+    for (size_t i = 0; i < c->N; i++)
+        nout += 1 + (qd_expr_kind(f[i]) == QD_ADD ? qd_expr_nargs(f[i]) : 0);
+    const qd_expr **outs = qd__malloc(c->ctx, (nout + 1) * sizeof *outs);
+    double *val = qd__malloc(c->ctx, (nout + 1) * sizeof *val);
+    qd_prog *p = NULL;
+    if (outs && val) {
+        size_t o = 0;
+        for (size_t i = 0; i < c->N; i++) {
+            outs[o++] = f[i];
+            for (size_t t = 0; qd_expr_kind(f[i]) == QD_ADD && t < qd_expr_nargs(f[i]); t++)
+                outs[o++] = qd_expr_arg(f[i], t);
+        }
+        p = qd_prog_new(c->ctx, c->ns, c->syms, nout, outs);
+    }
+    for (int k = 0; p && k < NPTS; k++) {
+        qd_prog_run(p, c->pt[k], val);
+        ok[k] = true;
+        for (size_t i = 0, o = 0; i < c->N; i++) {
+            double x = val[o++], scale = fabs(x);
+            for (size_t t = 0; qd_expr_kind(f[i]) == QD_ADD && t < qd_expr_nargs(f[i]); t++)
+                scale = fmax(scale, fabs(val[o++]));
+            ok[k] = ok[k] && isfinite(x);
+            v[k][i] = qd_is_zero(f[i]) || fabs(x) <= RANK_TOL * 1e-3 * scale ? 0 : x;
+        }
+    }
+    if (!p && !qd__ctx_nomem(c->ctx))
+        qd__ctx_recover(c->ctx); /* not compilable: component by component */
+    qd_prog_free(p);
+    qd__free(outs);
+    qd__free(val);
+    return p != NULL;
+}
+
 /* Keep the field f (N components) when it raises the rank at some point. */
 static void offer(closure *c, const qd_expr *const *f) {
     double v[NPTS][MAXV];
-    bool raises[NPTS] = {false}, any = false;
+    bool raises[NPTS] = {false}, any = false, okb[NPTS];
     if (c->nkept >= c->N)
         return;
+    bool fast = c->big && big_values(c, f, v, okb);
     for (int k = 0; k < NPTS; k++) {
         bool ok = true;
-        for (size_t i = 0; i < c->N && ok; i++)
+        if (fast)
+            ok = okb[k];
+        for (size_t i = 0; !fast && i < c->N && ok; i++)
             ok = component_at(c, f[i], k, &v[k][i]);
         raises[k] = ok && independent_at(c, k, v[k]);
         any |= raises[k];
@@ -362,17 +404,28 @@ static qd_status kernel_field(closure *c, const size_t *rows,
     return QD_OK;
 }
 
-/* [X, Y]^i = sum_j X^j dY^i/dx_j - Y^j dX^i/dx_j, simplified. */
-static qd_status bracket(closure *c, const qd_expr *const *X, const qd_expr *const *Y,
-                         const qd_expr **out) {
+/* The Jacobian dF^i/dx_j of a field into J (N*N): each field's once, since
+ * it enters many brackets and differentiating a large DAG is the cost. */
+static qd_status jacobian(closure *c, const qd_expr *const *F, const qd_expr **J) {
+    for (size_t i = 0; i < c->N; i++)
+        for (size_t j = 0; j < c->N; j++)
+            if (!(J[i * c->N + j] = qd_is_zero(F[i]) ? F[i] : qd_diff(c->ctx, F[i], c->x[j])))
+                return qd_ctx_status(c->ctx) != QD_OK ? qd_ctx_status(c->ctx) : QD_ERR_NOMEM;
+    return QD_OK;
+}
+
+/* [X, Y]^i = sum_j X^j dY^i/dx_j - Y^j dX^i/dx_j (JX, JY the Jacobians),
+ * simplified unless big. */
+static qd_status bracket(closure *c, const qd_expr *const *X, const qd_expr *const *JX,
+                         const qd_expr *const *Y, const qd_expr *const *JY, const qd_expr **out) {
     qd_ctx *ctx = c->ctx;
     for (size_t i = 0; i < c->N; i++) {
         const qd_expr *s = qd_int(ctx, 0);
         for (size_t j = 0; j < c->N; j++) {
             if (!qd_is_zero(X[j]))
-                s = qd_add(ctx, s, qd_mul(ctx, X[j], qd_diff(ctx, Y[i], c->x[j])));
+                s = qd_add(ctx, s, qd_mul(ctx, X[j], JY[i * c->N + j]));
             if (!qd_is_zero(Y[j]))
-                s = qd_sub(ctx, s, qd_mul(ctx, Y[j], qd_diff(ctx, X[i], c->x[j])));
+                s = qd_sub(ctx, s, qd_mul(ctx, Y[j], JX[i * c->N + j]));
         }
         if (!(out[i] = c->big ? s : qd_simplify(ctx, s)))
             return qd_ctx_status(ctx) != QD_OK ? qd_ctx_status(ctx) : QD_ERR_NOMEM;
@@ -448,19 +501,27 @@ static qd_status kernel(closure *c, size_t m, size_t *rank) {
 /* D_{k+1} = D_k + [D_0, D_k] until nothing is added. */
 static qd_status close_up(closure *c) {
     const qd_expr *f[MAXV];
-    size_t from = 0;
-    while (from < c->nkept && generic_rank(c) < c->N) {
+    size_t from = 0, NN = c->N * c->N, njk = 0;
+    /* Jacobians: the base fields', then the kept ones' as they are needed */
+    const qd_expr **jb = qd__malloc(c->ctx, (c->nbase + MAXV) * NN * sizeof *jb + 1);
+    const qd_expr **jk = jb + c->nbase * NN;
+    qd_status st = jb ? QD_OK : QD_ERR_NOMEM;
+    for (size_t b = 0; st == QD_OK && b < c->nbase; b++)
+        st = jacobian(c, c->base + b * c->N, jb + b * NN);
+    while (st == QD_OK && from < c->nkept && generic_rank(c) < c->N) {
         size_t upto = c->nkept;
-        for (size_t b = 0; b < c->nbase; b++)
-            for (size_t k = from; k < upto && c->nkept < c->N; k++) {
-                qd_status st = bracket(c, c->base + b * c->N, c->kept[k], f);
-                if (st != QD_OK)
-                    return st;
-                offer(c, f);
+        for (; st == QD_OK && njk < upto; njk++)
+            st = jacobian(c, c->kept[njk], jk + njk * NN);
+        for (size_t b = 0; st == QD_OK && b < c->nbase; b++)
+            for (size_t k = from; st == QD_OK && k < upto && c->nkept < c->N; k++) {
+                st = bracket(c, c->base + b * c->N, jb + b * NN, c->kept[k], jk + k * NN, f);
+                if (st == QD_OK)
+                    offer(c, f);
             }
         from = upto;
     }
-    return QD_OK;
+    qd__free(jb);
+    return st;
 }
 
 /* ---- the relations themselves ------------------------------------------------ *
