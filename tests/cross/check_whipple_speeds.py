@@ -20,7 +20,12 @@ contact height, computed from the geometry in plain Python):
      Boltzmann-Hamel) equal the accelerations of the
      same model in multiplier form, M q'' = f + A^T lambda, A q'' = b (the
      two formulations are the same dynamics, Desloge ch. 69 thm 2), to 1e-10;
-  3. energy: the bicycle has no dissipation and ideal rolling constraints,
+  3. `qdot check` (the closure's numeric path, the forms being large):
+     the benchmark's 3 degrees of freedom (lean, steer, rear wheel; Meijaard
+     et al. sec. 2) and 7 configurational (8 coordinates less the front
+     contact; the 4 rolling constraints are not integrable, together or
+     alone), in speeds and in multiplier form;
+  4. energy: the bicycle has no dissipation and ideal rolling constraints,
      so T + V is conserved (Desloge ch. 52); T + V computed here from the
      geometry (body velocities and angular velocities by central
      differences) at the start and after 5 s of `simulate` at rtol 1e-10,
@@ -224,6 +229,12 @@ def main():
                 err = max(abs(rates[s] - acc[c]) / (1 + abs(acc[c])) for s, c in SPEEDS.items())
                 report(err <= ACC_TOL, "state %d: u' (%s) = q'' (multipliers), error %.1e"
                        % (k, m, err))
+        for f in (MODEL, mult):
+            out = qdot(a.build, 'check', str(f))
+            m = re.search(r'degrees of freedom: (\d+) configurational, (\d+) motional', out)
+            report(bool(m) and m.groups() == ('7', '3') and 'could not decide' not in out,
+                   'check %s: %s configurational, %s motional (the benchmark: 7 and 3)'
+                   % (f.name, *(m.groups() if m else ('?', '?'))))
         out = qdot(a.build, 'simulate', str(MODEL), '--t-end', '5', '--rtol', '1e-10', '--dt', '5')
         rows = [r.split(',') for r in out.strip().splitlines()]
         head = rows[0]
