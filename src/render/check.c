@@ -77,7 +77,9 @@ static void dof(check *c, const qd_eom *e) {
     }
     size_t one_by_one = count[QD_CON_HOLONOMIC] + count[QD_CON_INTEGRABLE];
     qd_dof d;
+    bool undecided = false;
     if (qd_eom_dof(c->ctx, e, &d) != QD_OK) { /* a coefficient with no value: one by one */
+        undecided = qd_ctx_status(c->ctx) == QD_ERR_NUMERIC; /* the numeric closure's doubt */
         qd_ctx_clear_error(c->ctx);
         d = (qd_dof){e->n, e->ncon, one_by_one, e->n - one_by_one, e->n - e->ncon, 0, {NULL}};
     }
@@ -86,6 +88,9 @@ static void dof(check *c, const qd_eom *e) {
                   "constraints: %zu holonomic, %zu integrable, %zu nonholonomic)\n",
                   d.configurational, d.motional, e->n + e->nelim, count[QD_CON_HOLONOMIC],
                   count[QD_CON_INTEGRABLE], count[QD_CON_NONHOLONOMIC]);
+    if (undecided)
+        qd_buf_printf(c->out, "note: could not decide whether the constraints together imply "
+                              "more relations: the counts are the constraints' one by one\n");
     if (d.relations > one_by_one)
         qd_buf_printf(c->out,
                       "integrable combinations: %zu (the constraints together imply %zu "

@@ -173,11 +173,15 @@ static const qd_expr *drop_free(qd__spd *d, const qd_expr *S) {
         zero[r] = qd_int(ctx, 0);
     S = qd_sub(ctx, S, qd_subs(ctx, S, m, d->e->ud, zero));
     qd__free(zero);
+    if (S && !qd__spd_small(d, S)) /* too large to group: kept as a DAG */
+        return S;
     qd__vsum v;
     qd_status st = S ? qd__mech_by_velocity(ctx, S, m, d->e->ud, &v) : QD_ERR_NOMEM;
+    if (st == QD_ERR_TOOBIG && qd__ctx_recover(ctx))
+        return S;
     if (st != QD_OK && st != QD_ERR_NONLINEAR)
         return NULL;
-    return qd_simplify(ctx, st == QD_OK ? v.all : S);
+    return qd__spd_simplify(d, st == QD_OK ? v.all : S);
 }
 
 qd_status qd__spd_appell(qd__spd *d, bool fill) {

@@ -243,6 +243,18 @@ static const qd_expr *tidy_linear(void *arg, size_t j, size_t col, const qd_expr
     return sum;
 }
 
+/* Whether an entry of P has more than QD__SPD_EXACT_MAX nodes: then its
+ * exact solve swells (measured: the examples' maps have entries of at most
+ * 6 nodes and solve exactly in microseconds; the Whipple bicycle's front
+ * contact has 57 and its 2x2 core exceeds the expansion limit after
+ * seconds of cancellation), and the map is solved on the DAG instead. */
+static bool big_rows(const qd__spd *d) {
+    for (size_t i = 0; i < d->n * d->n; i++)
+        if (qd_dag_size(d->ctx, d->P[i]) > QD__SPD_EXACT_MAX)
+            return true;
+    return false;
+}
+
 /* The velocities as linear expressions: P q' = (u - b, s - c0) solved
  * with the speeds u (and, when need_wc, one symbol s_k per constraint) in
  * the right-hand side, one column: carrying u through the elimination
@@ -287,9 +299,16 @@ static qd_status velocity_map(qd__spd *d) {
         if (i < nx)
             B[i] = qd_add(ctx, sym[i], B[i]);
     }
-    qd_status st = qd__mech_solve_sparse(ctx, n, d->P, 1, B, X, 0, tidy_linear, &form);
+    qd_status st = big_rows(d) ? QD_ERR_TOOBIG
+                               : qd__mech_solve_sparse(ctx, n, d->P, 1, B, X, 0, tidy_linear, &form);
     if (st == QD_ERR_SINGULAR)
         st = singular_map(d);
+    if (st == QD_ERR_TOOBIG && qd__ctx_recover(ctx)) { /* the exact solve swells: on the DAG */
+        qd__free(B);
+        qd__free(done);
+        st = qd__spd_big_map(d);
+        return st == QD_ERR_SINGULAR ? singular_map(d) : st;
+    }
     for (size_t j = 0; st == QD_OK && j < n; j++) {
         const qd_expr **c = coef + j * nx;
         if (!done[j]) { /* from the elimination of the core: read off and tidied here */
@@ -360,14 +379,66 @@ const qd_expr *qd__spd_dt(qd__spd *d, const qd_expr *x) {
     return x ? qd_subs(d->ctx, qd_dt(d->ctx, x), d->n, e->qd, e->kin) : NULL;
 }
 
+/* Walks x as a tree, spending one of *budget per node; false when it runs
+ * out (so the walk costs at most the budget, however much x shares). */
+static bool tree_within(const qd_expr *x, size_t *budget) {
+    if (*budget == 0)
+        return false;
+    --*budget;
+    for (size_t i = 0; i < qd_expr_nargs(x); i++)
+        if (!tree_within(qd_expr_arg(x, i), budget))
+            return false;
+    return true;
+}
+
+bool qd__spd_small(qd__spd *d, const qd_expr *x) {
+    size_t budget = QD__SPD_TIDY_MAX_TREE;
+    return x && qd_dag_size(d->ctx, x) <= QD__SPD_TIDY_MAX && tree_within(x, &budget);
+}
+
+const qd_expr *qd__spd_simplify(qd__spd *d, const qd_expr *x) {
+    if (!x || !qd__spd_small(d, x))
+        return x;
+    const qd_expr *y = qd_simplify(d->ctx, x);
+    if (!y && qd_ctx_status(d->ctx) == QD_ERR_TOOBIG && qd__ctx_recover(d->ctx))
+        return x; /* a small DAG whose expansion is large: kept */
+    return y;
+}
+
 const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x) {
     qd__vsum v;
-    if (!x)
-        return NULL;
+    if (!x || !qd__spd_small(d, x))
+        return x;
     qd_status st = qd__mech_by_velocity(d->ctx, x, d->m, d->e->u, &v);
+    /* too large to expand (the estimate comes before the work): kept as it is */
+    if (st == QD_ERR_TOOBIG && qd__ctx_recover(d->ctx))
+        return x;
     if (st != QD_OK && st != QD_ERR_NONLINEAR)
         return NULL;
-    return st == QD_OK ? v.all : qd_simplify(d->ctx, x);
+    return st == QD_OK ? v.all : qd__spd_simplify(d, x);
+}
+
+/* The coefficients of u' in a large row and its rest, on the DAG: d row/du'_s
+ * and the row at u' = 0 (qd_linear_coeffs would expand it).  The rows are
+ * linear in u' by construction (dS/du' of S quadratic in u', Hamel's
+ * M_u u' + ...), which qd_linear_coeffs checks on the small ones. */
+static qd_status big_coeffs(qd__spd *d, const qd_expr *row, const qd_expr **c,
+                            const qd_expr **rest) {
+    qd_ctx *ctx = d->ctx;
+    size_t m = d->m;
+    const qd_expr **zero = qd__malloc(ctx, (m + 1) * sizeof *zero);
+    if (!zero)
+        return nomem(ctx);
+    for (size_t s = 0; s < m; s++) {
+        zero[s] = qd_int(ctx, 0);
+        c[s] = qd_subs(ctx, qd_diff(ctx, row, d->e->ud[s]), m, d->e->ud, zero);
+    }
+    *rest = qd_subs(ctx, row, m, d->e->ud, zero);
+    qd__free(zero);
+    for (size_t s = 0; s < m; s++)
+        if (!c[s])
+            return nomem(ctx);
+    return *rest ? QD_OK : nomem(ctx);
 }
 
 qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows) {
@@ -380,7 +451,8 @@ qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows) {
     qd_status st = QD_OK;
     for (size_t r = 0; st == QD_OK && r < m; r++) {
         const qd_expr *rest = NULL;
-        st = qd_linear_coeffs(ctx, rows[r], m, e->ud, c, &rest);
+        st = qd__spd_small(d, rows[r]) ? qd_linear_coeffs(ctx, rows[r], m, e->ud, c, &rest)
+                                       : big_coeffs(d, rows[r], c, &rest);
         if (st == QD_ERR_NONLINEAR) {
             qd__ctx_recover(ctx);
             qd_ctx_error(ctx, st, "the equation of speed %s is not linear in the speeds' rates",
@@ -389,7 +461,7 @@ qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows) {
                                NULL);
         }
         for (size_t s = 0; st == QD_OK && s < m; s++)
-            if (!(e->M[r * m + s] = qd_simplify(ctx, c[s])))
+            if (!(e->M[r * m + s] = qd__spd_simplify(d, c[s])))
                 st = nomem(ctx);
         if (st == QD_OK && !(e->f[r] = qd__spd_tidy(d, qd_neg(ctx, rest))))
             st = nomem(ctx);

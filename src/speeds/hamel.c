@@ -82,7 +82,7 @@ static const qd_expr *bracket(hamel *h, size_t s, size_t r) {
         }
         B = qd_add(ctx, B, qd_mul(ctx, Wjr, x));
     }
-    return B ? qd_simplify(ctx, B) : NULL;
+    return B ? qd__spd_simplify(d, B) : NULL;
 }
 
 /* The nonconservative forces the kinetic part and L* leave: Q - dD/dq'. */

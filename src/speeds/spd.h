@@ -55,6 +55,31 @@ qd_status qd__spd_rows(qd__spd *d, const qd_expr *const *rows);
  * in the speeds. */
 const qd_expr *qd__spd_tidy(qd__spd *d, const qd_expr *x);
 
+/* P X = B (P n*n, B and X n*nc, row-major) by Gaussian elimination on the
+ * DAG, nothing expanded, pivots chosen at sample states (dagsolve.c): the
+ * velocity map when the exact solve swells.  X's entries are new
+ * expressions of ctx.  QD_ERR_SINGULAR when a column has no pivot that is
+ * nonzero at the samples, QD_ERR_NOMEM. */
+qd_status qd__spd_dag_solve(qd_ctx *ctx, const qd_model *m, size_t n, const qd_expr *const *P,
+                            size_t nc, const qd_expr *const *B, const qd_expr **X);
+/* The velocity map (e->W, e->w, e->kin, d->Pinv) from d->P and d->p0 by
+ * qd__spd_dag_solve: what velocity_map falls back to when the exact solve
+ * is too large. */
+qd_status qd__spd_big_map(qd__spd *d);
+/* Whether x is small enough for the simplifier: at most QD__SPD_TIDY_MAX
+ * distinct nodes.  Larger expressions stay as they are (a DAG the compiled
+ * program evaluates), since simplifying them costs more than their size. */
+#define QD__SPD_TIDY_MAX 300
+/* ... and at most this many nodes as a tree: some of the simplifier's
+ * passes walk trees, and a small DAG can be a large tree. */
+#define QD__SPD_TIDY_MAX_TREE 3000
+/* The largest entry of the velocity map (in DAG nodes) solved exactly. */
+#define QD__SPD_EXACT_MAX 32
+bool qd__spd_small(qd__spd *d, const qd_expr *x);
+/* qd_simplify(x) when x is small and its expansion fits, else x itself
+ * (the size limit's error cleared); NULL only out of memory. */
+const qd_expr *qd__spd_simplify(qd__spd *d, const qd_expr *x);
+
 /* The methods: each fills e->M and e->f. */
 qd_status qd__spd_kane(qd__spd *d);
 qd_status qd__spd_hamel(qd__spd *d);
