@@ -70,7 +70,7 @@ def main():
                                                    "1st native"))
     for name, path, t_end, rtol in cases:
         base = [qdot, "simulate", path, "--t-end", t_end, "--method", "dop853", "--rtol", rtol]
-        first = timed(base + ["--native"], 1)[0]  # compiles and caches the object
+        first = timed(base + ["--native"], 1, quiet=True)[0]  # compiles and caches the object
         runs, wall = {}, {}
         ref = in_run(base + ["--no-jit"])[1]
         for label, extra in (("interp", ["--no-jit"]), ("default", []), ("jit", ["--jit"]),
@@ -82,7 +82,7 @@ def main():
                 if label != "native" and rows != ref:
                     sys.exit("%s %s: the rows differ from the interpreter's" % (name, label))
             runs[label] = statistics.median(ts)
-            wall[label] = timed(base + extra, REPS)[0]
+            wall[label] = timed(base + extra, REPS, quiet=True)[0]
         print("%-16s %9.3f %9.3f %9.3f %9.3f %8.2f %8.2f %10.2f   (in the run, s)"
               % (name, runs["interp"], runs["default"], runs["jit"], runs["native"],
                  runs["default"] / runs["native"], runs["interp"] / runs["jit"], first))
