@@ -18,6 +18,7 @@ from . import sim as _sim
 from . import runs as _runs
 from . import control as _control
 from . import commands as _commands
+from . import linear as _linear
 
 
 class _Printed:
@@ -185,12 +186,29 @@ class Modes(list):
     2n state-space eigenvalues s (numpy complex array); stable: 1 stable,
     0 unstable, -1 borderline (qd_modes_result.stable)."""
 
+    output = None  # the qdot.Output of `qdot modes --format json`
+    choice_note = None  # which equilibrium the library chose, when it chose
+    equilibrium = None  # the Equilibrium the point is, or None for a point given
+    residual = None  # the generalized forces left at rest there
+
     def __init__(self, modes, about, conservative, eigenvalues, stable):
         super().__init__(modes)
         self.about = about
         self.conservative = conservative
         self.eigenvalues = eigenvalues
         self.stable = stable
+
+    @property
+    def json(self):
+        """The dict `qdot modes FILE --format json` prints."""
+        return self.output.json
+
+    def __getattr__(self, name):
+        # the other JSON keys (mass_matrix, frequencies, verdict, symmetry, ...)
+        out = self.__dict__.get("output") or type(self).output
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("Modes has no field %r" % name)
 
 
 class _SpeedsHandle:
@@ -965,96 +983,38 @@ class Model:
         return _commands.output(core, "check", lambda buf: lib.qd_render_check(
             core.ctx, core.model, core.eom_ptr(), o, v, lib.QD_RENDER_JSON, buf))
 
-    def equilibria(self):
+    def equilibria(self, near=None, box=None):
         """Every equilibrium found (an Equilibria: a list of Equilibrium,
-        sorted by q): exact where the equations solve in closed form, else by
-        a multi-start Newton search over the default box
-        (qd_equilibria_find).  Its other attributes are the keys of `qdot
+        sorted by q), as `qdot equilibria` finds them (qd_equilibria_find_text
+        on the equations with the holonomic constraints eliminated): exact
+        where the equations solve in closed form, else by a multi-start
+        Newton search over the default box.  near ({coordinate: value} or
+        "q1=VALUE, ..."; an Equilibrium): Newton from there only, as --near;
+        box ({coordinate: (low, high)} or "q1=LOW:HIGH, ..."): the numeric
+        search there, as --box.  Its other attributes are the keys of `qdot
         equilibria --format json` (qd_equilibria_print): method, exact,
         continuum, equilibria (each with equilibrium, exact, kind,
         hessian_signs, symmetric, residual); .json is that dict."""
-        core = self._core
-        syms, vals = self._rest_state()
-        out = new("qd_equilibria")
-        try:
-            core.check(lib.qd_equilibria_find(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                              exprs(syms), doubles(vals), ffi.NULL, out))
-            found = Equilibria(self._equilibrium(out.pts[k], out.n) for k in range(out.count))
-            found.output = _commands.output(core, "equilibria", lambda buf: (
-                lib.qd_equilibria_print(core.ctx, core.eom_ptr(), out, True, buf)))
-            return found
-        finally:
-            lib.qd_equilibria_free(out)
+        return _linear.equilibria(self._for("equilibria"), near, box)
 
-    def _rest_state(self):
-        """The model's initial state with every velocity 0."""
-        syms, vals = self._core.state()
-        n = len(self._core.coords())
-        vals[n:2 * n] = [0.0] * n  # at rest
-        return syms, vals
-
-    def _equilibrium(self, pt, n):
-        """An Equilibrium from the C struct pt (n coordinates)."""
-        names = [name_of(self._core.eom().q[j]) for j in range(n)]
-        q = {names[j]: pt.q[j] for j in range(n)}
-        exact = ({names[j]: self._core.text_of(pt.exact[j]) for j in range(n)}
-                 if pt.exact else None)
-        kind = cstr(lib.qd_eq_kind_name(pt.kind))
-        return Equilibrium(q, exact, kind, pt.residual)
-
-    def modes(self, about=None):
-        """Small oscillations about a point at rest (a Modes list of Mode).
-
-        about: {coordinate: value} or an Equilibrium; None chooses as
-        `qdot modes` does (qd_equilibria_choose: the minimum nearest the
-        initial state, or the lowest).  Coordinates not named are 0."""
-        core = self._core
-        e = core.eom()
-        syms, vals = self._rest_state()
-        if about is None:
-            about = self._chosen(syms, vals)
-        if isinstance(about, Equilibrium):
-            about = about.q
-        names = [name_of(c) for c in core.coords()]
-        for name, value in about.items():
-            if name not in names:
-                raise Error("modes: '%s' is not a coordinate (%s)" % (name, ", ".join(names)))
-        point = {name: float(about.get(name, 0.0)) for name in names}
-        vals[:len(names)] = [point[name] for name in names]
-        return self._modes_at(e, syms, vals, point)
-
-    def _chosen(self, syms, vals):
-        """The equilibrium `qdot modes` would choose (qd_equilibria_choose)."""
-        core = self._core
-        choice = new("qd_equilibrium_choice")
-        try:
-            core.check(lib.qd_equilibria_choose(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                                exprs(syms), doubles(vals), choice))
-            if not choice.pt:
-                raise Error("modes: no equilibrium found; give about={...}")
-            return self._equilibrium(choice.pt, choice.found.n)
-        finally:
-            lib.qd_equilibrium_choice_free(choice)
-
-    def _modes_at(self, e, syms, vals, point):
-        """qd_linear_about and qd_modes_solve at the state syms = vals."""
-        core = self._core
-        lin, res = new("qd_linear"), new("qd_modes_result")
-        try:
-            core.check(lib.qd_linear_about(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                           exprs(syms), doubles(vals), lin))
-            core.check(lib.qd_modes_solve(core.ctx, lin, res))
-            n = res.n
-            names = [name_of(e.q[j]) for j in range(n)]
-            eig = np.array([complex(res.eig_re[k], res.eig_im[k]) for k in range(res.neig)])
-            modes = []
-            if res.conservative:
-                modes = [Mode(res.omega2[j], {names[i]: res.shapes[i * n + j]
-                                              for i in range(n)}) for j in range(n)]
-            return Modes(modes, point, bool(res.conservative), eig, res.stable)
-        finally:
-            lib.qd_modes_result_free(res)
-            lib.qd_linear_free(lin)
+    def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False):
+        """Small oscillations about a point at rest (a Modes list of Mode),
+        as `qdot modes` takes it: about ({coordinate: value}, the others 0,
+        an Equilibrium, or "q1=VALUE, ..." text; --about), at_equilibrium
+        (N, 1-based, as equilibria() lists them; --at-equilibrium), or
+        neither: the library's choice (qd_modes_at_choose: a minimum of the
+        potential nearest the model's `initial` state, or of lowest V), said
+        in .choice_note.  A point that is not an equilibrium gives the
+        command's note as a UserWarning (qd_modes_rest_note).  initial
+        ("q1=VALUE, q1'=VALUE" or a dict; --initial): the motion from there
+        in normal coordinates (the JSON's Q0, Q0_dot).  symmetry=True
+        (--symmetry): the point's group and the modes labelled by irreps
+        (qd_modes_symmetry) in the JSON's "symmetry" and "modes"; a point
+        without symmetry gives the library's note as a UserWarning.  The
+        other attributes are the keys of `qdot modes --format json`
+        (qd_modes_print): equilibrium, residual, choice, mass_matrix,
+        stiffness_matrix, frequencies, verdict, ...; .json is that dict."""
+        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from

@@ -27,6 +27,15 @@ static double column_scale(const double *A, size_t n, size_t col) {
 
 /* ---- text ------------------------------------------------------------------ */
 
+bool qd_modes_rest_note(double residual, qd_buf *out) {
+    if (!(residual > QD_MODES_REST_TOL))
+        return false;
+    if (out)
+        qd_buf_printf(out, "not an equilibrium: the generalized forces at rest are %.3g there; "
+                           "the linearization drops them", residual);
+    return true;
+}
+
 static void put_matrix(qd_buf *b, const char *name, size_t n, const double *A) {
     qd_buf_printf(b, "%s = [", name);
     for (size_t i = 0; i < n; i++) {
@@ -60,9 +69,11 @@ static void put_point(qd_ctx *ctx, const qd_modes_report *r, qd_buf *b) {
     if (r->pt)
         qd_buf_printf(b, " (%s of the potential)", qd_eq_kind_name(r->pt->kind));
     qd_buf_printf(b, "\n");
-    if (r->residual > 1e-8)
-        qd_buf_printf(b, "note: not an equilibrium: the generalized forces at rest are %.3g "
-                         "there; the linearization drops them\n", r->residual);
+    if (qd_modes_rest_note(r->residual, NULL)) {
+        qd_buf_puts(b, "note: ");
+        qd_modes_rest_note(r->residual, b);
+        qd_buf_puts(b, "\n");
+    }
 }
 
 static void put_conservative(qd_ctx *ctx, const qd_modes_report *r, qd_buf *b) {

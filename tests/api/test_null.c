@@ -617,6 +617,16 @@ static void null_codegen(void **state)
     /* c_text NULL */
     assert_int_equal(QD_ERR_ARG, qd_codegen_speeds_c(F.ctx, F.model, NULL, "q", NULL, &F.buf));
     reset(&F);
+    /* ---- qd_codegen_model_c */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_model_c(NULL, F.model, false, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_model_c(F.ctx, NULL, false, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* c_text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_model_c(F.ctx, F.model, false, "q", NULL, &F.buf));
+    reset(&F);
     /* ---- qd_native_load */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_native_load(NULL, F.model, F.eom, "q", (qd_native *)(void *)F.blob));
@@ -970,6 +980,16 @@ static void null_equilibria(void **state)
     /* ---- qd_equilibria_free */
     /* r NULL */
     qd_equilibria_free(NULL);
+    reset(&F);
+    /* ---- qd_equilibria_find_text */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find_text(NULL, NULL, "q", "q", (qd_equilibria *)(void *)F.blob, (const char * *)F.names));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find_text(F.ctx, NULL, "q", "q", (qd_equilibria *)(void *)F.blob, (const char * *)F.names));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find_text(F.ctx, NULL, "q", "q", NULL, (const char * *)F.names));
     reset(&F);
     /* ---- qd_equilibria_choose */
     /* ctx NULL */
@@ -3397,6 +3417,8 @@ static void null_modes(void **state)
     /* Qd NULL */
     assert_int_equal(QD_ERR_ARG, qd_modes_at_initial(F.ctx, NULL, NULL, "q", F.d, NULL));
     reset(&F);
+    /* ---- qd_modes_rest_note */
+    /* no pointer argument */
     /* ---- qd_modes_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_modes_print(NULL, NULL, false, &F.buf));
@@ -3756,6 +3778,16 @@ static void null_path(void **state)
     reset(&F);
     /* first_variation NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_path_action_of_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of_print(NULL, "q", 1, 1, 1, 1, false, &F.buf));
+    reset(&F);
+    /* source NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of_print(F.ctx, NULL, 1, 1, 1, 1, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of_print(F.ctx, "q", 1, 1, 1, 1, false, NULL));
     reset(&F);
     /* ---- qd_path_end_read */
     /* ctx NULL */
@@ -6694,6 +6726,28 @@ static void null_symmetry(void **state)
     /* ---- qd_symmetry_fast_cell */
     /* lin NULL */
     assert_true(qd_symmetry_fast_cell(NULL) == 0);
+    reset(&F);
+    /* ---- qd_modes_symmetry */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* note NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, NULL));
     reset(&F);
     /* ---- qd_symmetry_print */
     /* sym NULL */
