@@ -1875,6 +1875,16 @@ static void null_hamilton(void **state)
     /* h NULL */
     qd_ham_free(NULL);
     reset(&F);
+    /* ---- qd_ham2_derive */
+    /* ctx NULL */
+    assert_null(qd_ham2_derive(NULL, F.model, F.eom));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_ham2_derive(F.ctx, NULL, F.eom));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_ham2_derive(F.ctx, F.model, NULL));
+    reset(&F);
     /* ---- qd_legendre_inverse */
     /* ctx NULL */
     assert_null(qd_legendre_inverse(NULL, F.model));
