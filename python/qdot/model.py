@@ -1006,7 +1006,8 @@ class Model:
         """Small oscillations about a point at rest (a Modes list of Mode).
 
         about: {coordinate: value} or an Equilibrium; None chooses as
-        `qdot modes` does (qd_equilibria_choose: the minimum nearest the
+        `qdot modes` does (qd_equilibria_choose: the initial state itself
+        when it is a minimum-like equilibrium, else the minimum nearest the
         initial state, or the lowest).  Coordinates not named are 0."""
         core = self._core
         e = core.eom()

@@ -496,7 +496,7 @@ static void sort_by_q(size_t n, qd_equilibrium *pts, size_t count) {
  * isolated): along a null direction v of J, Newton from q + h v is run to
  * convergence; an isolated root draws it back to q (however slowly, a
  * degenerate root), a family (a ring of relative equilibria) holds it on a
- * root about h away.  Both h = 1e-2 and 1e-3 (times 1 + |q|) must find a
+ * root about h away (h |v|_inf in the largest coordinate).  Both h = 1e-2 and 1e-3 (times 1 + |q|) must find a
  * neighbour, so a root that is flat to round-off at one radius only is not
  * a family.  A free particle (J = 0, F = 0 everywhere) is a family. */
 static bool on_continuum(qd__lin *L, const double *q, double ftol) {
@@ -519,6 +519,11 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
             double qmax = 0;
             for (size_t i = 0; i < n; i++)
                 qmax = fmax(qmax, fabs(q[i]));
+            /* the step's largest component: h/sqrt(n) along a ring's rotation, whose
+               unit null vector is spread over every coordinate */
+            double vmax = 0;
+            for (size_t i = 0; i < n; i++)
+                vmax = fmax(vmax, fabs(v[i]));
             cont = true;
             for (double rel = 1e-2; cont && rel >= 1e-3; rel /= 10) {
                 double h = rel * (1 + qmax), d = 0, res;
@@ -527,7 +532,7 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                 qd__lin_lm_solve(L, t, 0, 200, &res);
                 for (size_t i = 0; i < n; i++)
                     d = fmax(d, fabs(t[i] - q[i]));
-                cont = res <= ftol && d >= 0.5 * h;
+                cont = res <= ftol && d >= 0.5 * h * vmax;
             }
         }
     }
