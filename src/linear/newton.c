@@ -70,17 +70,23 @@ bool qd__lin_lm_solve(qd__lin *L, double *q, double ftol, int maxit, double *res
             ok = true;
             break;
         }
-        for (size_t i = 0; i < n; i++) {
-            g[i] = 0;
-            for (size_t k = 0; k < n; k++)
-                g[i] -= J[k * n + i] * F[k];
-            for (size_t j = 0; j < n; j++) {
-                double s = 0;
-                for (size_t k = 0; k < n; k++)
-                    s += J[k * n + i] * J[k * n + j];
-                A[i * n + j] = s;
+        /* g = -J^T F and A = J^T J by rows of J (each sum still in the order of k,
+         * so the same numbers as column by column), the upper triangle mirrored:
+         * a third of the time of the strided loops at n = 100 (issue 34) */
+        memset(g, 0, n * sizeof *g);
+        memset(A, 0, n * n * sizeof *A);
+        for (size_t k = 0; k < n; k++) {
+            const double *row = J + k * n;
+            for (size_t i = 0; i < n; i++) {
+                double jki = row[i], *Ai = A + i * n;
+                g[i] -= jki * F[k];
+                for (size_t j = i; j < n; j++)
+                    Ai[j] += jki * row[j];
             }
         }
+        for (size_t i = 0; i < n; i++)
+            for (size_t j = i + 1; j < n; j++)
+                A[j * n + i] = A[i * n + j];
         /* the step in coordinates scaled by sqrt(diag(J^T J)) (Marquardt's scaling,
          * t holding the scales), the damping's floor 1e-12 of the scaled diagonal:
          * near a degenerate root, F ~ x^5 of (1 - cos x)^3 beside a y^2, J^T J's
