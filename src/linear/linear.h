@@ -99,9 +99,11 @@ void qd__lin_wrap_angles(size_t n, double *q, const bool *angle);
 bool qd__lin_roots_same(size_t n, const double *a, const double *b, const bool *angle);
 
 /* The multi-start search over [lo, hi] (quasi-random starts and axis scans
- * through the centre); roots with max |F| <= ftol go to out. */
-bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
-                    size_t starts, double ftol, qd__roots *out);
+ * through the centre); roots with max |F| <= ftol go to out.  Each scan and
+ * start is reported to the context's progress function (qd_ctx_set_progress);
+ * QD_ERR_ARG, recorded, when it asks to stop; QD_ERR_NOMEM. */
+qd_status qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
+                             size_t starts, double ftol, qd__roots *out);
 
 /* The i-th point (i >= 1) of the van der Corput sequence in base, in [0, 1):
  * coordinate j of a Halton start uses base qd__lin_halton_primes[j % 16]

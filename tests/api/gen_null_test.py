@@ -40,6 +40,7 @@ NULLABLE = {
     'qd_equilibria_find_text': {'near', 'box', 'where'},  # issue 32: options not given
     'qd_ctx_error_about': {'hint', 'name'},
     'qd_ctx_new_with': {'a'},
+    'qd_ctx_set_progress': {'fn', 'data'},  # issue 34: NULL turns the progress off
     'qd_diag_format': {'file', 'text'},
     'qd_eom_derive_opts': {'opts'},
     'qd_eom_eval': {'M', 'R', 'f', 'lambda', 'qdd'},

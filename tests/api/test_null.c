@@ -1235,6 +1235,10 @@ static void null_expr(void **state)
     /* ctx NULL */
     assert_true(qd_ctx_node_count(NULL) == 0);
     reset(&F);
+    /* ---- qd_ctx_set_progress */
+    /* ctx NULL */
+    qd_ctx_set_progress(NULL, NULL, NULL);
+    reset(&F);
     /* ---- qd_int */
     /* ctx NULL */
     assert_null(qd_int(NULL, 1));
