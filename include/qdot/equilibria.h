@@ -165,6 +165,11 @@ QD_API void qd_equilibrium_choice_free(qd_equilibrium_choice *c);
  * ("the minimum of the potential nearest the model's initial state"), for a
  * note or a JSON "reason".  Static storage. */
 QD_API const char *qd_eq_chosen_name(qd_eq_chosen c);
+/* Its machine code, for programs (a JSON "code" next to that "reason"):
+ * "nearest_minimum", "lowest_minimum", "newton_from_initial",
+ * "first_listed" (the QD_EQ_CHOSEN_ names in lower case); "unknown"
+ * outside the enum.  Static storage. */
+QD_API const char *qd_eq_chosen_code(qd_eq_chosen c);
 
 /* Coordinate j (below the equilibria's n) of p appended to out: its exact
  * value in the text format (qd_print) when p has one, else the number to

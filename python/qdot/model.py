@@ -980,7 +980,7 @@ class Model:
     def check(self):
         """The verdict and summary of `qdot check` (qd_check_verdict_of,
         qd_render_check): a qdot.Output whose keys are those of `qdot check
-        --format json` ("ok"; "reason", "message", "witness" for a no)."""
+        --format json` ("ok"; "code", "reason", "message", "witness" for a no)."""
         core = self._core
         v = new("qd_check_verdict")
         core.check(lib.qd_check_verdict_of(core.ctx, core.model, core.eom_ptr(), v))

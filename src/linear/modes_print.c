@@ -249,6 +249,8 @@ static void json_head(const qd_modes_report *r, qd_json *j) {
     if (r->choice) {
         qd_json_key(j, "choice");
         qd_json_begin_object(j);
+        qd_json_key(j, "code");
+        qd_json_string(j, qd_eq_chosen_code(r->choice->reason));
         qd_json_key(j, "reason");
         qd_json_string(j, qd_eq_chosen_name(r->choice->reason));
         qd_json_key(j, "others");

@@ -82,6 +82,9 @@ NULLABLE = {
     'qd_metric_print': {'G'},
     'qd_metric_json': {'G'},
     'qd_path_print': {'opts'},
+    'qd_poincare_summary_print': {'prefix'},  # issue 31: poincare --format json
+    'qd_poincare_json_begin': {'model', 'names'},
+    'qd_json_add_model': {'model'},
     'qd_legendre_inverse_p': {'pdef'},
     'qd_linearize': {'syms', 'vals'},
     'qd_lqr_feedback': {'syms', 'vals'},

@@ -1016,6 +1016,8 @@ static void null_equilibria(void **state)
     reset(&F);
     /* ---- qd_eq_chosen_name */
     /* no pointer argument */
+    /* ---- qd_eq_chosen_code */
+    /* no pointer argument */
     /* ---- qd_equilibrium_put_value */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(NULL, NULL, 1, &F.buf));
@@ -2226,6 +2228,29 @@ static void null_json(void **state)
     /* j NULL */
     qd_json_frequency(NULL, 1);
     reset(&F);
+    /* ---- qd_json_expr_result */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(NULL, "q", "q", 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* operation NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, NULL, "q", 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* input NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", NULL, 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* vars NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, NULL, F.q, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, (const char * const *)F.names, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, (const char * const *)F.names, F.q, NULL));
+    reset(&F);
+    /* ---- qd_json_add_model */
+    /* doc NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_add_model(NULL, "q"));
+    reset(&F);
     /* ---- qd_json_ok */
     /* j NULL */
     assert_true(qd_json_ok(NULL) == 0);
@@ -2466,6 +2491,24 @@ static void null_lyapunov(void **state)
     reset(&F);
     /* opts NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_poincare_summary_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", NULL));
+    reset(&F);
+    /* ---- qd_poincare_json_begin */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_begin(NULL, "q", 1, (const char * const *)F.names, false));
+    reset(&F);
+    /* ---- qd_poincare_json_end */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_end(NULL, F.sim, NULL, NULL, NULL, 1, false));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_end(NULL, NULL, NULL, NULL, NULL, 1, false));
     reset(&F);
     /* ---- qd_lyap_setup_run */
     /* ctx NULL */
