@@ -997,7 +997,8 @@ class Model:
         hessian_signs, symmetric, residual); .json is that dict."""
         return _linear.equilibria(self._for("equilibria"), near, box)
 
-    def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False):
+    def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False,
+              independent=None):
         """Small oscillations about a point at rest (a Modes list of Mode),
         as `qdot modes` takes it: about ({coordinate: value}, the others 0,
         an Equilibrium, or "q1=VALUE, ..." text; --about), at_equilibrium
@@ -1013,8 +1014,18 @@ class Model:
         without symmetry gives the library's note as a UserWarning.  The
         other attributes are the keys of `qdot modes --format json`
         (qd_modes_print): equilibrium, residual, choice, mass_matrix,
-        stiffness_matrix, frequencies, verdict, ...; .json is that dict."""
-        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry)
+        stiffness_matrix, frequencies, verdict, ...; .json is that dict.
+        A model that keeps constraints with multipliers: the modes on the
+        constraint manifold (qd_constrained_at_solve), over the independent
+        coordinates independent names ("x" or a list; --independent) or
+        the library chooses, the JSON's keys those of
+        qd_constrained_modes_print (independent, dependent, multipliers, M,
+        K, modes, ...).  A model with `speeds`: the eigenvalues of the
+        reduced system about about's coordinates and speeds, or the first
+        equilibrium (qd_speeds_modes_print's keys: state, kept, ignorable,
+        eigenvalues, verdict)."""
+        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry,
+                             independent)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from
