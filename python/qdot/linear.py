@@ -85,17 +85,108 @@ def equilibrium(core, names, pt):
     return Equilibrium(q, exact, cstr(lib.qd_eq_kind_name(pt.kind)), pt.residual)
 
 
-def _refuse_speeds(core, what):
-    if lib.qd_model_nspeeds(core.model):
-        raise Error("%s: a model with `speeds` is not analysed from Python yet (`qdot %s` "
-                    "takes it); give speeds=False-style models, or use the command line"
-                    % (what, what))
+class SpeedsPoint:
+    """A model with `speeds`: its equations in the speeds and the state
+    (q, q', t, the parameters, then the speeds u), as `qdot equilibria` and
+    `qdot modes` take them (qd_speeds_derive, qd_state_init, qd_state_append)."""
+
+    def __init__(self, core):
+        self.core, self.st = core, new("qd_state")
+        self.se = lib.qd_speeds_derive(core.ctx, core.model, ffi.NULL)
+        if not self.se:
+            raise core.error(cls=ModelError)
+        try:
+            core.check(lib.qd_state_init(core.ctx, core.model, self.st))
+            core.check(lib.qd_state_append(core.ctx, self.st, self.se.m, self.se.u, ffi.NULL))
+        except BaseException:
+            self.free()
+            raise
+        self.names = [cstr(lib.qd_expr_name(self.se.q[j])) for j in range(self.se.n)]
+
+    def free(self):
+        lib.qd_state_free(self.st)
+        lib.qd_speeds_eom_free(self.se)
+        self.se = ffi.NULL
+
+
+def _refuse(what, **given):
+    """A model with `speeds` takes none of these arguments (the command's
+    refusal of the same options)."""
+    for name, value in given.items():
+        if value not in (None, False):
+            raise ValueError("%s: %s is not available for a model with speeds (the state is q "
+                             "and u)" % (what, name))
+
+
+def speeds_equilibria(core):
+    """qd_speeds_equilibria_find at the model's state: an Equilibria whose
+    points give the coordinates the equations at rest solve (kind None: no
+    Hessian is taken in the speeds)."""
+    from .model import Equilibria, Equilibrium
+    p = SpeedsPoint(core)
+    out = new("qd_speeds_equilibria")
+    try:
+        core.check(lib.qd_speeds_equilibria_find(core.ctx, p.se, core.model, p.st.n, p.st.syms,
+                                                 p.st.vals, ffi.NULL, out), NumericalError)
+        eq = out.eq
+        names = [p.names[out.solved[j]] for j in range(out.nsolved)]
+        found = Equilibria()
+        for k in range(eq.count):
+            pt = eq.pts[k]
+            q = {names[j]: pt.q[j] for j in range(len(names))}
+            exact = ({names[j]: core.text_of(pt.exact[j]) for j in range(len(names))}
+                     if pt.exact else None)
+            found.append(Equilibrium(q, exact, None, pt.residual))
+        found.output = _commands.output(core, "equilibria", lambda buf: (
+            lib.qd_speeds_equilibria_print(core.ctx, p.se, out, True, buf)))
+        return found
+    finally:
+        lib.qd_speeds_equilibria_free(out)
+        p.free()
+
+
+def speeds_modes(core, about):
+    """The eigenvalues of the reduced first-order system about a state
+    (qd_speeds_linear_about, qd_speeds_modes_solve, qd_speeds_modes_print):
+    about's coordinates and speeds ("theta=pi/2, u3=6"), else the first
+    equilibrium at rest (qd_speeds_equilibria_choose)."""
+    from .model import Modes
+    p = SpeedsPoint(core)
+    lin, res = new("qd_speeds_linear"), new("qd_modes_result")
+    text = _commands.text_arg(_point_text(about, "about"), "about")
+    try:
+        if text is not None:
+            o = new("qd_state_read_opts", {"refuse": lib.QD_STATE_VELOCITIES |
+                                           lib.QD_STATE_TIME | lib.QD_STATE_PARAMS})
+            if lib.qd_state_read(core.ctx, core.model, p.st, text, o) != lib.QD_OK:
+                raise located(core, "about", ffi.string(text))
+        else:
+            found = ffi.new("bool *")
+            core.check(lib.qd_speeds_equilibria_choose(core.ctx, p.se, core.model, p.st.n,
+                                                       p.st.syms, p.st.vals, found))
+            if not found[0]:
+                raise NumericalError("modes: no equilibrium found (Model.equilibria() lists "
+                                     "none): give a state with about={...}", QD_ERR_NUMERIC)
+        core.check(lib.qd_speeds_linear_about(core.ctx, p.se, p.st.n, p.st.syms, p.st.vals, lin))
+        core.check(lib.qd_speeds_modes_solve(core.ctx, lin, res), NumericalError)
+        output = _commands.output(core, "modes", lambda buf: lib.qd_speeds_modes_print(
+            core.ctx, p.se, p.st.n, p.st.syms, p.st.vals, lin, res, True, buf))
+        eig = np.array([complex(res.eig_re[k], res.eig_im[k]) for k in range(res.neig)])
+        out = Modes([], dict(output.json["state"]), False, eig, res.stable)
+        out.output = output
+        return out
+    finally:
+        lib.qd_modes_result_free(res)
+        lib.qd_speeds_linear_free(lin)
+        p.free()
 
 
 def equilibria(core, near=None, box=None):
     """qd_equilibria_find_text from near and box; an Equilibria."""
     from .model import Equilibria
-    _refuse_speeds(core, "equilibria")
+    if lib.qd_model_nspeeds(core.model):
+        _refuse("equilibria", near=near, box=box)
+        return speeds_equilibria(core)
     p = Point(core)
     out = new("qd_equilibria")
     where = ffi.new("const char **")
@@ -162,7 +253,8 @@ def _initial(core, p, at, initial):
     return Q, Qd
 
 
-def modes(core, about=None, at_equilibrium=None, initial=None, symmetry=False):
+def modes(core, about=None, at_equilibrium=None, initial=None, symmetry=False,
+          independent=None):
     """The modes about the point `qdot modes` takes (a Modes)."""
     from .model import Mode, Modes
     if about is not None and at_equilibrium is not None:
@@ -171,15 +263,23 @@ def modes(core, about=None, at_equilibrium=None, initial=None, symmetry=False):
                                        not isinstance(at_equilibrium, int) or at_equilibrium < 1):
         raise ValueError("modes: at_equilibrium is a number from 1, as equilibria() lists "
                          "them, not %r" % (at_equilibrium,))
-    _refuse_speeds(core, "modes")
+    if lib.qd_model_nspeeds(core.model):
+        _refuse("modes", at_equilibrium=at_equilibrium, initial=initial, symmetry=symmetry,
+                independent=independent)
+        return speeds_modes(core, about)
     p = Point(core)
-    if p.e.ncon:
+    if p.e.ncon and (initial is not None or symmetry):
         p.free()
-        raise Error("modes: a model that keeps constraints with multipliers is not analysed "
-                    "from Python yet (`qdot modes` reduces it onto the constraints)")
+        raise ValueError("modes: %s: not yet on the constraint manifold of a model that keeps "
+                         "constraints with multipliers" % ("symmetry" if symmetry else "initial"))
+    if not p.e.ncon and independent is not None:
+        p.free()
+        raise ValueError("modes: independent: the model keeps no constraints")
     at, sym, cyc = new("qd_modes_at"), new("qd_symmetry"), new("qd_cyclic_modes")
     try:
         _choose(core, p, about, at_equilibrium or 0, at)
+        if p.e.ncon:
+            return _constrained(core, p, at, independent)
         lib.qd_linpoint_set(p.pt, at.q0, ffi.NULL)
         st_ = p.pt.st
         core.check(lib.qd_modes_at_solve(core.ctx, p.e, core.model, st_.n, st_.syms, st_.vals,
@@ -231,3 +331,45 @@ def _choice_note(p, at):
         lib.qd_buf_free(buf)
         return None
     return buf_text(buf)
+
+
+def _constrained(core, p, at, independent):
+    """A model that keeps constraints: the modes on the constraint manifold
+    about the point chosen (qd_constrained_at_solve over the independent
+    coordinates named, or the library's; qd_constrained_modes_print)."""
+    from .model import Mode, Modes
+    e = p.e
+    ix = ffi.NULL
+    if independent is not None:
+        if isinstance(independent, (list, tuple)):
+            independent = ", ".join(independent)
+        text = _commands.text_arg(independent, "independent")
+        ix = ffi.new("size_t[]", e.n + 1)
+        if lib.qd_constrained_indep_read(core.ctx, e, text, ix) != lib.QD_OK:
+            raise located(core, "independent", ffi.string(text))
+    lib.qd_linpoint_set(p.pt, at.q0, ffi.NULL)
+    st_, ca = p.pt.st, new("qd_constrained_at")
+    try:
+        st = lib.qd_constrained_at_solve(core.ctx, e, core.model, st_.n, st_.syms, st_.vals, ix,
+                                         False, ca)
+        if st != lib.QD_OK:
+            raise core.error(st, cls=ArgumentError if st in (lib.QD_ERR_ARG,
+                                                             lib.QD_ERR_UNSUPPORTED) else None)
+        c, res = ca.c, ca.res
+        output = _commands.output(core, "modes", lambda buf: lib.qd_constrained_modes_print(
+            core.ctx, e, ffi.addressof(ca.c), ffi.addressof(ca.res), True, buf))
+        r = c.r
+        names = [p.names[c.indep[i]] for i in range(r)]
+        eig = np.array([complex(res.eig_re[k], res.eig_im[k]) for k in range(res.neig)])
+        shapes = []
+        if res.conservative:
+            shapes = [Mode(res.omega2[j], {names[i]: res.shapes[i * r + j] for i in range(r)})
+                      for j in range(r)]
+        out = Modes(shapes, {p.names[j]: c.q[j] for j in range(e.n)}, bool(res.conservative),
+                    eig, res.stable)
+        out.output, out.residual = output, c.force_res
+        out.equilibrium = equilibrium(core, p.names, at.pt) if at.pt else None
+        out.choice_note = _choice_note(p, at) if at.chosen else None
+        return out
+    finally:
+        lib.qd_constrained_at_free(ca)

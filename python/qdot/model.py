@@ -1003,7 +1003,8 @@ class Model:
         hessian_signs, symmetric, residual); .json is that dict."""
         return _linear.equilibria(self._for("equilibria"), near, box)
 
-    def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False):
+    def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False,
+              independent=None):
         """Small oscillations about a point at rest (a Modes list of Mode),
         as `qdot modes` takes it: about ({coordinate: value}, the others 0,
         an Equilibrium, or "q1=VALUE, ..." text; --about), at_equilibrium
@@ -1019,8 +1020,18 @@ class Model:
         without symmetry gives the library's note as a UserWarning.  The
         other attributes are the keys of `qdot modes --format json`
         (qd_modes_print): equilibrium, residual, choice, mass_matrix,
-        stiffness_matrix, frequencies, verdict, ...; .json is that dict."""
-        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry)
+        stiffness_matrix, frequencies, verdict, ...; .json is that dict.
+        A model that keeps constraints with multipliers: the modes on the
+        constraint manifold (qd_constrained_at_solve), over the independent
+        coordinates independent names ("x" or a list; --independent) or
+        the library chooses, the JSON's keys those of
+        qd_constrained_modes_print (independent, dependent, multipliers, M,
+        K, modes, ...).  A model with `speeds`: the eigenvalues of the
+        reduced system about about's coordinates and speeds, or the first
+        equilibrium (qd_speeds_modes_print's keys: state, kept, ignorable,
+        eigenvalues, verdict)."""
+        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry,
+                             independent)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from
@@ -1183,6 +1194,63 @@ class Model:
         --draw, --trace and --spring; the rest as simulate's."""
         return _runs.animate(self._for("animate"), t_end, draw, trace, spring, method, rtol,
                              atol, dt, step, initial, max_steps, speeds)
+
+    def action_of(self, path, t):
+        """The action of a trial path and the size of its first variation
+        (`qdot action-of FILE --path ... --t T0:T1`, qd_path_action_of and
+        qd_path_action_of_print; Desloge ch. 83): a qdot.Output with model,
+        t0, t1, action (the integral of L along the path) and
+        first_variation (the L2 norm over [t0, t1] of Lagrange's residual
+        along it: 0 on a true path).  path: every coordinate as an
+        expression in t and the parameters, "x = v*t, y = ..." or {name:
+        expression}; t: "T0:T1" (expressions in the parameters) or a pair
+        (t0, t1)."""
+        core = self._for("action_of")
+        e = core.eom_ptr()
+        if isinstance(path, dict):
+            path = ", ".join("%s = %s" % (k, v) for k, v in path.items())
+        if isinstance(t, (tuple, list)) and len(t) == 2:
+            t = ":".join(x if isinstance(x, str) else repr(float(x)) for x in t)
+        for value, what in ((path, "path"), (t, "t")):
+            if not isinstance(value, str):
+                raise TypeError("action_of: %s is text, not %s" % (what, type(value).__name__))
+        ptext, ttext = ffi.new("char[]", path.encode()), ffi.new("char[]", t.encode())
+        q = ffi.new("const qd_expr *[]", lib.qd_model_ncoords(core.model) + 1)
+        if lib.qd_path_trial_read(core.ctx, core.model, ptext, q) != lib.QD_OK:
+            raise _linear.located(core, "path", path.encode())
+        t0, t1 = new("double"), new("double")
+        if lib.qd_state_range(core.ctx, core.model, ttext, 0, len(t.encode()), t0, t1) != 0:
+            raise _linear.located(core, "t", t.encode())
+        S, dS = new("double"), new("double")
+        st = lib.qd_path_action_of(core.ctx, core.model, e, q, t0[0], t1[0], S, dS)
+        if st != lib.QD_OK:
+            raise core.error(st, cls=ArgumentError if st == lib.QD_ERR_ARG else NumericalError)
+        return _commands.output(core, "action_of", lambda buf: lib.qd_path_action_of_print(
+            core.ctx, _commands.source(core), t0[0], t1[0], S[0], dS[0], True, buf))
+
+    def codegen(self, prefix=None, eliminate=False):
+        """The self-contained C of `qdot codegen FILE` (qd_codegen_model_c):
+        a qdot.Code with .prefix, .c and .h (the texts of PREFIX.c and
+        PREFIX.h) and .save(directory).  prefix: the C name of the files and
+        functions (a C identifier; default from the model's file name, as
+        the command names them); eliminate: substitute the holonomic
+        constraints that solve for a coordinate (--eliminate)."""
+        from .kernel import Code
+        core = self._for("codegen")
+        if prefix is None:
+            name = ffi.new("char[]", lib.QD_CODEGEN_PREFIX_MAX + 1)
+            lib.qd_codegen_prefix_from_path(core.file.encode(), name, len(name))
+            prefix = ffi.string(name).decode()
+        elif not isinstance(prefix, str) or not lib.qd_codegen_prefix_valid(prefix.encode()):
+            raise ValueError("codegen: prefix is a C identifier (up to %d bytes), not %r"
+                             % (lib.QD_CODEGEN_PREFIX_MAX, prefix))
+        c, h = new("qd_buf"), new("qd_buf")
+        st = lib.qd_codegen_model_c(core.ctx, core.model, bool(eliminate), prefix.encode(), c, h)
+        if st != lib.QD_OK:
+            lib.qd_buf_free(c)
+            lib.qd_buf_free(h)
+            raise core.error(st)
+        return Code(prefix, buf_text(c), buf_text(h))
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a

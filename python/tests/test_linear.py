@@ -118,3 +118,61 @@ def test_equilibria_near_and_box_as_the_cli(dp):
     assert (err.value.file, err.value.col) == ("near", 13)
     with pytest.raises(TypeError):
         dp.equilibria(box={"theta1": 3})
+
+
+DISK = os.path.join(EXAMPLES, "rolling_disk_speeds.qd")
+
+
+def test_speeds_modes_of_the_rolling_disk():
+    # the thin disk rolling upright at spin W (Neimark and Fufaev ch. III;
+    # Routh, Advanced Rigid Dynamics art. 244): the lean's root
+    # s^2 = -(4/5)(3 W^2 - g/a), stable iff W^2 > g/(3a)
+    disk = qdot.Model.load(DISK)
+    a, g = disk.params["r"], disk.params["g"]
+    fast = disk.modes(about={"u2": 6})
+    assert max(fast.eigenvalues.imag) == pytest.approx(math.sqrt(0.8 * (3 * 36 - g / a)),
+                                                       rel=1e-10)
+    assert fast.verdict == "stable" and fast.about["u2"] == 6 and len(fast) == 0
+    slow = disk.modes(about="u2=2")
+    assert max(slow.eigenvalues.real) == pytest.approx(math.sqrt(0.8 * (g / a - 12)), rel=1e-10)
+    assert slow.stable == 0 and slow.json["stable"] is False
+    same(fast.json, cli("modes", DISK, "--about", "u2=6"))
+    with pytest.raises(ValueError, match="not available for a model with speeds"):
+        disk.modes(symmetry=True)
+    with pytest.raises(qdot.ModelError, match="unknown name 'theta'"):
+        disk.modes(about="theta=1")
+
+
+def test_speeds_equilibria_of_the_rolling_disk():
+    # at rest the disk stands upright or upside down (q2 = 0, pi), anywhere
+    # and at any heading and spin angle: x, y, q1, q3 free
+    eqs = qdot.Model.load(DISK).equilibria()
+    assert [e.exact["q2"] for e in eqs] == ["0", "pi"] and eqs.free == ["x", "y", "q1", "q3"]
+    assert all(e.kind is None and e.residual < 1e-12 for e in eqs)
+    same(eqs.json, cli("equilibria", DISK))
+    with pytest.raises(ValueError, match="near is not available"):
+        qdot.Model.load(DISK).equilibria(near="q2=0.1")
+
+
+def test_constrained_modes_on_the_manifold():
+    # the pendulum in (x, y) with x^2 + y^2 = l^2 kept by a multiplier:
+    # w^2 = g/l about the bottom, and the rod's tension m g there
+    # (lambda = -m g/(2 l) for the constraint written x^2 + y^2 - l^2;
+    # Britannica (1911) Dynamics sec. 3 (28)-(30), seed-goldstein-britannica.md B23)
+    path = os.path.join(EXAMPLES, "pendulum_cartesian.qd")
+    pend = qdot.Model.load(path)
+    p = pend.params
+    modes = pend.modes()
+    assert modes.about["y"] == pytest.approx(-p["l"], rel=1e-12)
+    assert [m.omega2 for m in modes] == pytest.approx([p["g"] / p["l"]], rel=1e-12)
+    assert modes.independent == ["x"] and modes.verdict == "stable"
+    # at rest at the bottom the tension is S = m g: lambda_rod = -S/(2 l)
+    assert modes.multipliers.lambda_rod == pytest.approx(-p["m"] * p["g"] / (2 * p["l"]),
+                                                         rel=1e-12)
+    same(modes.json, cli("modes", path))
+    with pytest.raises(qdot.ArgumentError, match="choose other independent coordinates"):
+        pend.modes(independent="y")
+    with pytest.raises(ValueError, match="not yet on the constraint manifold"):
+        pend.modes(symmetry=True)
+    with pytest.raises(ValueError, match="keeps no constraints"):
+        qdot.Model.load(DP).modes(independent="theta1")
