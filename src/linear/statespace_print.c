@@ -124,8 +124,11 @@ static qd_status text(qd_ctx *ctx, const qd_statespace *s, qd_buf *b) {
         put_eig(b, s->eig_re[j], s->eig_im[j]);
     }
     qd_buf_puts(b, "\n");
-    put_rank(b, "controllable", s->controllable, s->rank_ctrb, s->nx);
-    put_modes(b, "uncontrollable", s, s->nuncontrollable, s->uncontrollable);
+    if (s->nu) { /* without inputs every mode is out of reach: no list of them */
+        put_rank(b, "controllable", s->controllable, s->rank_ctrb, s->nx);
+        put_modes(b, "uncontrollable", s, s->nuncontrollable, s->uncontrollable);
+    } else
+        qd_buf_puts(b, "controllable: no inputs\n");
     if (s->ny) {
         put_rank(b, "observable", s->observable, s->rank_obsv, s->nx);
         put_modes(b, "unobservable", s, s->nunobservable, s->unobservable);
