@@ -31,8 +31,11 @@
  * d phi/dq; the dependent velocities are those of the dependent
  * coordinates, then pivots of the velocity constraints' coefficients A,
  * taken first among the velocities of coordinates that occur in neither M
- * nor f (a contact point, a heading, a wheel's angle), so that shape
- * velocities (lean and steer rates) stay independent where they can.
+ * nor f (a contact point, a heading, a wheel's angle), then the others,
+ * and last those the point gives a value other than 0: shape velocities
+ * (lean and steer rates) and the rates the caller set (a wheel's spin)
+ * stay independent where they can.  A dependent state the point gave
+ * another value is solved all the same: qd_conlin_print names it.
  *
  * A state no other non-ignorable state's rate depends on (its column of
  * A, in the rows not yet ignorable, below 1e-13 of A's largest entry,
@@ -66,6 +69,7 @@ typedef struct qd_conlin {
     size_t *dep;            /* nhol + ncon indices into z, ascending */
     const qd_expr **zsym;   /* 2n: the states' symbols, q_j then q'_j */
     double *z;              /* 2n: the point, on the manifold */
+    double *given;          /* 2n: the point as given, before Newton */
     double moved;           /* max |z - z_given| over the dependent states */
     double residual;        /* max |C(z)| after Newton */
     bool *ignorable;        /* nx */
@@ -104,7 +108,9 @@ QD_API qd_status qd_conlin_point(qd_ctx *ctx, const qd_model *m, qd_linpoint *pt
 typedef struct qd_conlin_cross {
     double at;              /* the parameter's value */
     double omega;           /* |Im s| of the eigenvalues that cross there (0: a real one) */
-    bool to_stable;         /* the largest Re s of the core turns negative there */
+    bool to_stable;         /* no core eigenvalue has Re s > 0 above it */
+    bool marginal;          /* on the stable side the largest Re s is 0 (to the tolerance):
+                               eigenvalues on the imaginary axis (a conservative core) */
 } qd_conlin_cross;
 
 typedef struct qd_conlin_scan {
@@ -112,6 +118,7 @@ typedef struct qd_conlin_scan {
     double *p;              /* nsamples: the parameter's values */
     double *re, *im;        /* nsamples * nx: the eigenvalues at each (as qd_conlin's ss) */
     double *margin;         /* nsamples: the largest Re s of the core */
+    bool *unstable;         /* nsamples: margin above 1e-10 of the core's largest |s| */
     size_t ncross;
     qd_conlin_cross *cross; /* where margin changes sign, in order of p */
     bool nudged;            /* the parameter is assumed positive and the range starts at 0:
@@ -121,8 +128,9 @@ typedef struct qd_conlin_scan {
 /* The linearization at steps + 1 values of the parameter name from a to b
  * (m's parameter set each time with qd_model_set_param, so the `initial`
  * point follows it; about and independent as for qd_conlin_point and
- * qd_conlin_about, pt refilled), and each zero of the core's margin
- * between two samples, bisected to 1e-12 of |b - a|.  A parameter the
+ * qd_conlin_about, pt refilled), and each value between two samples where
+ * the core turns unstable or back (its margin through 1e-10 of its
+ * largest |s|), bisected to 1e-10 of |b - a|.  A parameter the
  * model assumes positive (qd_symbol_is_positive: its value was when the
  * model was read) starts just above a = 0 (out->nudged) and refuses a < 0.  m's parameter is
  * given back its value.  QD_ERR_ARG for an unknown parameter, a >= b,
@@ -139,7 +147,9 @@ QD_API void qd_conlin_scan_free(qd_conlin_scan *s);
 /* What precedes the state-space form on the manifold: text "on the
  * manifold of N constraints (K holonomic): independent ...; dependent
  * ...", "point: NAME = V, ..." (every coordinate and velocity, the
- * dependent ones solved) and "ignorable: ..." (or none), each a line;
+ * dependent ones solved), "solved from the constraints: NAME = V (was W),
+ * ..." for the dependent states Newton changed (when any), "ignorable:
+ * ..." (or none) and the core's eigenvalues, each a line;
  * JSON: the members "independent", "dependent", "ignorable" (names),
  * "point" (object) and "core_eigenvalues" ([re, im] pairs), written
  * without braces, to precede qd_statespace_render's keys.  QD_ERR_NOMEM
@@ -161,10 +171,13 @@ QD_API qd_status qd_conlin_render(qd_ctx *ctx, const qd_conlin *c,
 QD_API bool qd_conlin_needed(const qd_eom *e);
 
 /* The scan: text, a table "NAME  max Re s (core)  eigenvalues" a sample a
- * line, then a line per crossing ("NAME = V: a complex pair crosses at
- * s = +-W i (weave-like), stable above" or "a real eigenvalue crosses 0");
- * JSON {"parameter", "samples": [{"value", "margin", "eigenvalues"}],
- * "crossings": [{"value", "omega", "to_stable"}]}.  QD_ERR_NUMERIC for a
+ * line, then a line per crossing ("NAME = V: stable above; a complex
+ * pair crosses the imaginary axis at s = +-W i", "... a real eigenvalue
+ * crosses 0", or, marginally stable above, "a real pair meets at s = 0 and
+ * turns imaginary");
+ * JSON {"parameter", "starts_above_zero", "samples": [{"value", "margin",
+ * "eigenvalues"}], "crossings": [{"value", "omega", "to_stable",
+ * "marginal"}]}.  QD_ERR_NUMERIC for a
  * number JSON cannot hold, QD_ERR_NOMEM (out unchanged). */
 QD_API qd_status qd_conlin_scan_print(const qd_conlin_scan *s, const char *name, bool json,
                                       qd_buf *out);

@@ -148,7 +148,7 @@ static size_t pivots(const cl_work *w, const size_t *rows, size_t nr, const size
         free(v);
         return 0;
     }
-    for (int pass = 0; pass < 3 && rank < nr; pass++)
+    for (int pass = 0; pass < 4 && rank < nr; pass++)
         for (; rank < nr;) {
             size_t best = SIZE_MAX;
             double bn = 1e-10 * scale;
@@ -212,7 +212,9 @@ static int cmp_size(const void *a, const void *b) {
 
 /* The dependent states at the point: coordinates from d phi/dq, velocities
  * from A: those of the dependent coordinates first, then those of the
- * coordinates M and f do not involve, then the others. */
+ * coordinates M and f do not involve, then the others, and last the
+ * velocities the point gives a value other than 0 (the rolling disc's spin:
+ * what the caller set stays set). */
 static qd_status choose(cl_work *w, size_t *dep) {
     size_t n = w->n, nd = 0, d = w->d;
     size_t *rows = calloc(d + 1, sizeof *rows), *cols = calloc(2 * n + 1, sizeof *cols);
@@ -238,7 +240,7 @@ static qd_status choose(cl_work *w, size_t *dep) {
             for (size_t k = 0; k < w->nh; k++)
                 depq = depq || dep[k] == j;
             cols[j] = n + j;
-            cls[j] = depq ? 0 : occurs(w->e, w->e->q[j]) ? 2 : 1;
+            cls[j] = depq ? 0 : w->val[n + j] != 0 ? 3 : occurs(w->e, w->e->q[j]) ? 2 : 1;
         }
         if (pivots(w, rows, w->nc, cols, n, cls, dep, &nd, Q) < w->nc) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the velocity constraints are not independent at "
@@ -608,7 +610,7 @@ static qd_status setup(cl_work *w, const qd_eom *e, const qd_model *m, const qd_
     }
     *c = (qd_conlin){.n = n, .nhol = w->nh, .ncon = w->nc, .nx = 2 * n - w->d};
     c->indep = qd__calloc(w->ctx, 2 * n + 1, sizeof *c->indep);
-    c->z = qd__calloc(w->ctx, 2 * n + 1, sizeof *c->z);
+    c->z = qd__calloc(w->ctx, 4 * n + 1, sizeof *c->z);
     c->ignorable = qd__calloc(w->ctx, c->nx + 1, sizeof *c->ignorable);
     c->zsym = qd__calloc(w->ctx, 2 * n + 1, sizeof *c->zsym);
     if (!c->indep || !c->z || !c->ignorable || !c->zsym)
@@ -618,6 +620,7 @@ static qd_status setup(cl_work *w, const qd_eom *e, const qd_model *m, const qd_
         c->zsym[n + j] = e->qd[j];
     }
     c->dep = c->indep + c->nx;
+    c->given = c->z + 2 * n;
     qd_status st = make_inputs(w, m, &pt->st);
     return st == QD_OK ? make_tangents(w) : st;
 }
@@ -685,6 +688,8 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
         st = independent ? read_indep(&w, independent, out->dep) : con_eval(&w);
     if (st == QD_OK && !independent)
         st = choose(&w, out->dep);
+    for (size_t k = 0; st == QD_OK && k < 2 * n; k++)
+        out->given[k] = w.val[k];
     if (st == QD_OK)
         st = newton(&w, out->dep, &out->moved, &out->residual);
     for (size_t k = 0, i = 0, dd = 0; st == QD_OK && k < 2 * n; k++) {

@@ -44,6 +44,18 @@ static void text(qd_buf *b, const qd_conlin *c) {
         qd_double_format(v, c->z[k] == 0 ? 0 : c->z[k]);
         qd_buf_printf(b, "%s %s = %s", k ? "," : "", zname(c, k), v);
     }
+    size_t nm = 0;
+    for (size_t i = 0; i < d; i++) {
+        size_t k = c->dep[i];
+        double was = c->given[k];
+        if (fabs(c->z[k] - was) <= 1e-9 * fmax(1, fabs(was)))
+            continue;
+        char v[QD_DOUBLE_MAX], g[QD_DOUBLE_MAX];
+        qd_double_format(v, c->z[k] == 0 ? 0 : c->z[k]);
+        qd_double_format(g, was == 0 ? 0 : was);
+        qd_buf_printf(b, "%s %s = %s (was %s)", nm++ ? "," : "\nsolved from the constraints:",
+                      zname(c, k), v, g);
+    }
     qd_buf_puts(b, "\nignorable (no state's rate depends on them; an eigenvalue 0 each): ");
     size_t ni = 0;
     for (size_t i = 0; i < c->nx; i++)
@@ -120,9 +132,13 @@ qd_status qd_conlin_print(const qd_conlin *c, bool as_json, qd_buf *out) {
 /* ---- the scan ----------------------------------------------------------------- */
 
 static void cross_text(qd_buf *b, const char *name, const qd_conlin_cross *x) {
-    qd_buf_printf(b, "  %s = %.12g: %s above; ", name, x->at, x->to_stable ? "stable" : "unstable");
+    qd_buf_printf(b, "  %s = %.12g: %s above; ", name, x->at,
+                  !x->to_stable ? "unstable" : x->marginal ? "marginally stable (Re s = 0)"
+                                                            : "stable");
     if (x->omega > 0)
         qd_buf_printf(b, "a complex pair crosses the imaginary axis at s = +-%.10gi\n", x->omega);
+    else if (x->marginal)
+        qd_buf_puts(b, "a real pair meets at s = 0 and turns imaginary\n");
     else
         qd_buf_puts(b, "a real eigenvalue crosses 0\n");
 }
@@ -170,6 +186,8 @@ qd_status qd_conlin_scan_print(const qd_conlin_scan *s, const char *name, bool a
             qd_json_number(&j, s->cross[i].omega);
             qd_json_key(&j, "to_stable");
             qd_json_bool(&j, s->cross[i].to_stable);
+            qd_json_key(&j, "marginal");
+            qd_json_bool(&j, s->cross[i].marginal);
             qd_json_end_object(&j);
         }
         qd_json_end_array(&j);

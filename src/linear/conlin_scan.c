@@ -3,7 +3,9 @@
  * along a parameter: at each sample the model's parameter is set (the
  * `initial` point follows it), the point solved onto the manifold again
  * and A's core eigenvalues taken; where the core's margin (its largest
- * Re s) changes sign between two samples, bisection on that sign finds the
+ * Re s) crosses 0 between two samples (above 1e-10 of the core's largest
+ * |s|: round-off puts a conservative core's imaginary pairs at +-1e-16),
+ * bisection on that test finds the
  * value: a real eigenvalue through 0 or a complex pair through the
  * imaginary axis (the Whipple bicycle's capsize and weave speeds,
  * Meijaard et al. 2007, sec. 5).
@@ -18,6 +20,7 @@
 
 #define BISECT_TOL 1e-12
 #define MAX_STEPS 100000
+#define MARGIN_TOL 1e-10
 
 typedef struct sc_run {
     qd_ctx *ctx;
@@ -25,7 +28,12 @@ typedef struct sc_run {
     qd_model *m;
     qd_linpoint *pt;
     const char *about, *indep, *name;
+    double tol;  /* at the last point: MARGIN_TOL times the core's largest |s| */
 } sc_run;
+
+/* Unstable: a core eigenvalue with Re s above the tolerance (round-off puts
+ * the imaginary pairs of a conservative core at +-1e-16). */
+static bool unstable(const sc_run *r, double margin) { return margin > r->tol; }
 
 /* The linearization at p: margin, the |Im s| of its eigenvalue, all eigenvalues (re, im may
  * be NULL). */
@@ -40,6 +48,10 @@ static qd_status at(sc_run *r, double p, double *margin, double *omega, double *
     if (st == QD_OK)
         st = qd_conlin_about(r->ctx, r->e, r->m, r->pt, r->indep, &c);
     if (st == QD_OK) {
+        double big = 1;
+        for (size_t k = 0; k < c.ncore; k++)
+            big = fmax(big, hypot(c.core_re[k], c.core_im[k]));
+        r->tol = MARGIN_TOL * big;
         *margin = c.ncore ? c.core_re[0] : -INFINITY;
         *omega = c.ncore ? fabs(c.core_im[0]) : 0;
         for (size_t k = 0; re && k < c.nx; k++) {
@@ -56,10 +68,11 @@ void qd_conlin_scan_free(qd_conlin_scan *s) {
         return;
     qd__free(s->p);
     qd__free(s->cross);
+    qd__free(s->unstable);
     memset(s, 0, sizeof *s);
 }
 
-static qd_status bisect(sc_run *r, double lo, double mlo, double hi, qd_conlin_cross *x) {
+static qd_status bisect(sc_run *r, double lo, bool ulo, double hi, qd_conlin_cross *x) {
     double tol = BISECT_TOL * fabs(hi - lo) * 1e2, mid = lo, mm = 0, om = 0;
     qd_status st = QD_OK;
     for (int it = 0; it < 200 && hi - lo > fmax(tol, 4e-16 * fabs(lo)) && st == QD_OK; it++) {
@@ -67,7 +80,7 @@ static qd_status bisect(sc_run *r, double lo, double mlo, double hi, qd_conlin_c
         st = at(r, mid, &mm, &om, NULL, NULL);
         if (st != QD_OK)
             break;
-        if ((mm > 0) == (mlo > 0))
+        if (unstable(r, mm) == ulo)
             lo = mid;
         else
             hi = mid;
@@ -76,7 +89,11 @@ static qd_status bisect(sc_run *r, double lo, double mlo, double hi, qd_conlin_c
         st = at(r, 0.5 * (lo + hi), &mm, &om, NULL, NULL);
     x->at = 0.5 * (lo + hi);
     x->omega = om;
-    x->to_stable = mlo > 0;
+    x->to_stable = ulo;
+    double side = 0, os;
+    if (st == QD_OK) /* the stable side: on the imaginary axis, or inside */
+        st = at(r, ulo ? hi : lo, &side, &os, NULL, NULL);
+    x->marginal = st == QD_OK && side >= -r->tol;
     return st;
 }
 
@@ -106,11 +123,12 @@ qd_status qd_conlin_scan_run(qd_ctx *ctx, const qd_eom *e, qd_model *m, qd_linpo
     double keep = 0;
     if (qd_model_param_number(m, ip, &keep) != QD_OK)
         return qd_ctx_status(ctx);
-    sc_run r = {ctx, e, m, pt, about, independent, name};
+    sc_run r = {ctx, e, m, pt, about, independent, name, 0};
     size_t ns = steps + 1, nx = 2 * e->n;
     out->p = qd__calloc(ctx, ns * (3 + 2 * nx) + 1, sizeof *out->p);
     out->cross = qd__calloc(ctx, ns + 1, sizeof *out->cross);
-    if (!out->p || !out->cross)
+    out->unstable = qd__calloc(ctx, ns + 1, sizeof *out->unstable);
+    if (!out->p || !out->cross || !out->unstable)
         return QD_ERR_NOMEM;
     out->re = out->p + ns;
     out->im = out->re + ns * nx;
@@ -123,6 +141,7 @@ qd_status qd_conlin_scan_run(qd_ctx *ctx, const qd_eom *e, qd_model *m, qd_linpo
         if (i == 0 && out->nudged)
             out->p[0] = p = a + 1e-6 * (b - a);
         st = at(&r, p, &out->margin[i], &om, out->re + i * nx, out->im + i * nx);
+        out->unstable[i] = st == QD_OK && unstable(&r, out->margin[i]);
         if (st != QD_OK) {
             char why[512];
             snprintf(why, sizeof why, "%s", qd_ctx_message(ctx));
@@ -141,9 +160,9 @@ qd_status qd_conlin_scan_run(qd_ctx *ctx, const qd_eom *e, qd_model *m, qd_linpo
             out->im[i * out->nx + k] = out->im[i * nx + k];
         }
     for (size_t i = 0; i + 1 < ns && st == QD_OK; i++) {
-        double m0 = out->margin[i], m1 = out->margin[i + 1];
-        if ((m0 > 0 && m1 <= 0) || (m0 <= 0 && m1 > 0))
-            st = bisect(&r, out->p[i], m0, out->p[i + 1], &out->cross[out->ncross++]);
+        if (out->unstable[i] != out->unstable[i + 1])
+            st = bisect(&r, out->p[i], out->unstable[i], out->p[i + 1],
+                        &out->cross[out->ncross++]);
     }
     qd_status back = qd_model_set_param(ctx, m, name, qd_float(ctx, keep));
     if (back == QD_OK)

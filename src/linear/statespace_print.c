@@ -275,7 +275,7 @@ static void code(qd_ctx *ctx, const qd_statespace *s, qd_ss_format fmt, qd_buf *
     qd_buf_printf(b, "], u = [");
     for (size_t i = 0; i < s->nu; i++)
         qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(s->inputs[i]));
-    qd_buf_printf(b, "]%s\n", s->Asym ? "" : " (numbers: the exact form grew too large)");
+    qd_buf_printf(b, "]%s\n", s->Asym ? "" : " (numbers: the exact form was not kept)");
     code_matrix(b, ctx, fmt, "A", s->nx, s->nx, s->Asym, s->A);
     code_matrix(b, ctx, fmt, "B", s->nx, s->nu, s->Bsym, s->B);
     if (s->ny) {
