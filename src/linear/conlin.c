@@ -576,6 +576,32 @@ static qd_status core_eigen(qd_ctx *ctx, qd_conlin *c) {
     return QD_OK;
 }
 
+/* The eigenvalues of the ignorable states are exactly 0: dgeev's nearest
+ * ones (within 1e-8 of the spectrum's scale: rounding) are set to 0. */
+static void zero_ignorable(qd_conlin *c) {
+    qd_statespace *s = &c->ss;
+    double big = 1;
+    for (size_t j = 0; j < s->nx; j++)
+        big = fmax(big, hypot(s->eig_re[j], s->eig_im[j]));
+    size_t left = c->nx - c->ncore;
+    for (size_t j = 0; j < s->nx && left; j++)
+        left -= s->eig_re[j] == 0 && s->eig_im[j] == 0;
+    for (; left; left--) {
+        size_t best = SIZE_MAX;
+        double bv = 1e-8 * big;
+        for (size_t j = 0; j < s->nx; j++) {
+            double a = hypot(s->eig_re[j], s->eig_im[j]);
+            if (a != 0 && a <= bv) {
+                bv = a;
+                best = j;
+            }
+        }
+        if (best == SIZE_MAX)
+            break;
+        s->eig_re[best] = s->eig_im[best] = 0;
+    }
+}
+
 /* ---- the linearization ------------------------------------------------------- */
 
 void qd_conlin_free(qd_conlin *c) {
@@ -715,6 +741,8 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     }
     if (st == QD_OK)
         st = core_eigen(ctx, out);
+    if (st == QD_OK)
+        zero_ignorable(out);
     if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory linearizing on the constraint manifold");
     qd__free(dF);

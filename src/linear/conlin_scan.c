@@ -72,15 +72,19 @@ void qd_conlin_scan_free(qd_conlin_scan *s) {
     memset(s, 0, sizeof *s);
 }
 
+/* The crossing between lo (unstable when ulo) and hi.  When the stable side
+ * is inside (not marginal), on the sign of the margin itself, so the value
+ * is not moved by the tolerance; else on the tolerance's test. */
 static qd_status bisect(sc_run *r, double lo, bool ulo, double hi, qd_conlin_cross *x) {
-    double tol = BISECT_TOL * fabs(hi - lo) * 1e2, mid = lo, mm = 0, om = 0;
-    qd_status st = QD_OK;
+    double tol = BISECT_TOL * fabs(hi - lo) * 1e2, mid = lo, mm = 0, om = 0, side = 0, os;
+    qd_status st = at(r, ulo ? hi : lo, &side, &os, NULL, NULL);
+    x->marginal = st == QD_OK && side >= -r->tol;
     for (int it = 0; it < 200 && hi - lo > fmax(tol, 4e-16 * fabs(lo)) && st == QD_OK; it++) {
         mid = 0.5 * (lo + hi);
         st = at(r, mid, &mm, &om, NULL, NULL);
         if (st != QD_OK)
             break;
-        if (unstable(r, mm) == ulo)
+        if ((x->marginal ? unstable(r, mm) : mm > 0) == ulo)
             lo = mid;
         else
             hi = mid;
@@ -90,10 +94,6 @@ static qd_status bisect(sc_run *r, double lo, bool ulo, double hi, qd_conlin_cro
     x->at = 0.5 * (lo + hi);
     x->omega = om;
     x->to_stable = ulo;
-    double side = 0, os;
-    if (st == QD_OK) /* the stable side: on the imaginary axis, or inside */
-        st = at(r, ulo ? hi : lo, &side, &os, NULL, NULL);
-    x->marginal = st == QD_OK && side >= -r->tol;
     return st;
 }
 
