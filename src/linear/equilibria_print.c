@@ -17,6 +17,8 @@ const char *qd_eq_chosen_code(qd_eq_chosen c) {
         return "nearest_minimum";
     case QD_EQ_CHOSEN_LOWEST_MINIMUM:
         return "lowest_minimum";
+    case QD_EQ_CHOSEN_INITIAL_STATE:
+        return "initial_state";
     case QD_EQ_CHOSEN_NEWTON_FROM_INITIAL:
         return "newton_from_initial";
     case QD_EQ_CHOSEN_FIRST_LISTED:
