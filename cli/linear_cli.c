@@ -47,33 +47,15 @@ int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q,
     return st == QD_OK ? QD_EXIT_OK : cli_state_diag(r->c.ctx, what, text);
 }
 
-/* The search in the default box (qd_equilibria_default_box), --box's
- * ranges over it. */
+/* --near's and --box's search (qd_linpoint_equilibria). */
 int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out) {
-    size_t n = r->e->n;
-    qd_ctx *ctx = r->c.ctx;
-    double *q = malloc((n + 1) * sizeof *q), *lo = malloc((n + 1) * sizeof *lo);
-    double *hi = malloc((n + 1) * sizeof *hi);
-    bool *angle = malloc((n + 1) * sizeof *angle);
-    int rc = q && lo && hi && angle ? QD_EXIT_OK : cli_out_of_memory();
-    qd_equilibria_opts o = {.near = near ? q : NULL, .lo = box ? lo : NULL,
-                            .hi = box ? hi : NULL, .numeric_only = box != NULL};
-    if (rc == QD_EXIT_OK && qd_equilibria_default_box(ctx, r->e, r->c.mf.model, angle, lo, hi) !=
-                                QD_OK)
-        rc = cli_diag_ctx(ctx);
-    if (rc == QD_EXIT_OK && near)
-        rc = cli_lin_point(r, "--near", near, q, NULL);
-    if (rc == QD_EXIT_OK && box && qd_linpoint_read_box(ctx, &r->pt, box, lo, hi) != QD_OK)
-        rc = cli_state_diag(ctx, "--box", box);
-    if (rc == QD_EXIT_OK && qd_equilibria_find(ctx, r->e, r->c.mf.model, r->pt.st.n,
-                                               r->pt.st.syms, r->pt.st.vals, &o, out) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(ctx));
-        /* a constraint the manifold search does not take (with t, with velocities) */
-        rc = qd_ctx_status(ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
-    }
-    free(q);
-    free(lo);
-    free(hi);
-    free(angle);
-    return rc;
+    const char *bad;
+    qd_status st = qd_linpoint_equilibria(r->c.ctx, &r->pt, near, box, &bad, out);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    if (bad)
+        return cli_state_diag(r->c.ctx, bad == near ? "--near" : "--box", bad);
+    cli_diag_error("%s", qd_ctx_message(r->c.ctx));
+    /* a constraint the manifold search does not take (with t, with velocities) */
+    return st == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
 }

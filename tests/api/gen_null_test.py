@@ -58,6 +58,7 @@ NULLABLE = {
     'qd_eom_request_render': {'failed'},
     'qd_linpoint_read': {'qd'},
     'qd_linpoint_set': {'qd'},
+    'qd_linpoint_equilibria': {'near', 'box'},
     'qd_eval': {'syms', 'vals'},
     'qd_field_modes_compute': {'opts'},
     'qd_field_parse': {'diag', 'opts'},

@@ -2301,6 +2301,19 @@ static void null_linpoint(void **state)
     /* about NULL */
     assert_int_equal(QD_ERR_ARG, qd_linpoint_read_exact(F.ctx, NULL, "q", NULL));
     reset(&F);
+    /* ---- qd_linpoint_equilibria */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_equilibria(NULL, NULL, "q", "q", (const char * *)F.names, (struct qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_equilibria(F.ctx, NULL, "q", "q", (const char * *)F.names, (struct qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* bad NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_equilibria(F.ctx, NULL, "q", "q", NULL, (struct qd_equilibria *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_linpoint_equilibria(F.ctx, NULL, "q", "q", (const char * *)F.names, NULL));
+    reset(&F);
     teardown(&F);
 }
 
