@@ -69,7 +69,7 @@ typedef struct qd_equilibria {
                                 (-pi, pi]) */
     bool continuum;          /* some equilibria are not isolated (a singular Jacobian
                                 with a null direction along which F stays 0) */
-    const char *method;      /* "exact", "linear" (affine equations: one solve), "newton" or "multistart" */
+    const char *method;      /* "exact", "linear" (affine: one solve), "newton", "multistart", "none" */
 } qd_equilibria;
 
 typedef struct qd_equilibria_opts {
