@@ -6,8 +6,6 @@
  */
 #include "linear_cli.h"
 
-#include <stdlib.h>
-#include <string.h>
 #include "eom_out.h"
 #include "model_cli.h"
 
@@ -47,15 +45,15 @@ int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q,
     return st == QD_OK ? QD_EXIT_OK : cli_state_diag(r->c.ctx, what, text);
 }
 
-/* --near's and --box's search (qd_linpoint_equilibria). */
+/* The library's search from the options (qd_equilibria_find_text). */
 int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out) {
-    const char *bad;
-    qd_status st = qd_linpoint_equilibria(r->c.ctx, &r->pt, near, box, &bad, out);
-    if (st == QD_OK)
+    const char *where = NULL;
+    qd_ctx *ctx = r->c.ctx;
+    if (qd_equilibria_find_text(ctx, &r->pt, near, box, out, &where) == QD_OK)
         return QD_EXIT_OK;
-    if (bad)
-        return cli_state_diag(r->c.ctx, bad == near ? "--near" : "--box", bad);
-    cli_diag_error("%s", qd_ctx_message(r->c.ctx));
+    if (where)
+        return cli_state_diag(ctx, where == near ? "--near" : "--box", where);
+    cli_diag_error("%s", qd_ctx_message(ctx));
     /* a constraint the manifold search does not take (with t, with velocities) */
-    return st == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
+    return qd_ctx_status(ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
 }

@@ -96,6 +96,23 @@ QD_API qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model
                              const qd_equilibria_opts *opts, qd_equilibria *out);
 QD_API void qd_equilibria_free(qd_equilibria *r);
 
+struct qd_linpoint; /* qdot/linpoint.h */
+
+/* The search `qdot equilibria --near ... --box ...` makes, for the
+ * equations and state of p (qd_linpoint_init; parameters at their values):
+ * near "q1=VALUE, ..." (qd_linpoint_read_coords, the unnamed coordinates 0)
+ * is Newton from there only; box "q1=LOW:HIGH, ..." (qd_linpoint_read_box
+ * over qd_equilibria_default_box's ranges) the multi-start search there,
+ * numerically only; both NULL the default (the exact attempt, then the
+ * default box).  An error in reading near or box is located in that text
+ * and *where (may be NULL) set to it; *where is NULL for every other
+ * failure (the search's: QD_ERR_UNSUPPORTED for a constraint the manifold
+ * search does not take).  Free out with qd_equilibria_free (also after a
+ * failure). */
+QD_API qd_status qd_equilibria_find_text(qd_ctx *ctx, const struct qd_linpoint *p,
+                                         const char *near, const char *box, qd_equilibria *out,
+                                         const char **where);
+
 /* Which equilibrium to use when the caller names none (small oscillations
  * with no point given).  Newton's method runs from the model's `initial`
  * state first (when it has one).  When that state is itself an equilibrium
@@ -148,6 +165,11 @@ QD_API void qd_equilibrium_choice_free(qd_equilibrium_choice *c);
  * ("the minimum of the potential nearest the model's initial state"), for a
  * note or a JSON "reason".  Static storage. */
 QD_API const char *qd_eq_chosen_name(qd_eq_chosen c);
+/* Its machine code, for programs (a JSON "code" next to that "reason"):
+ * "nearest_minimum", "lowest_minimum", "newton_from_initial",
+ * "first_listed", "initial_state" (the QD_EQ_CHOSEN_ names in lower case);
+ * "unknown" outside the enum.  Static storage. */
+QD_API const char *qd_eq_chosen_code(qd_eq_chosen c);
 
 /* Coordinate j (below the equilibria's n) of p appended to out: its exact
  * value in the text format (qd_print) when p has one, else the number to

@@ -62,19 +62,6 @@ QD_API qd_status qd_linpoint_read_box(qd_ctx *ctx, const qd_linpoint *p, const c
 QD_API qd_status qd_linpoint_read_exact(qd_ctx *ctx, const qd_linpoint *p, const char *text,
                                         const qd_expr **about);
 
-struct qd_equilibria;
-/* The equilibria of p's equations as `qdot equilibria` asks for them
- * (qd_equilibria_find with p's state): near "q1=VALUE, ..." (Newton from
- * it; qd_linpoint_read_coords) or NULL; box "q1=LOW:HIGH, ..." over the
- * default box (qd_equilibria_default_box, qd_linpoint_read_box: the
- * multistart in it, no exact attempt) or NULL; neither: every equilibrium.
- * A mistake in near or box is the reader's error located in that text, with
- * *bad set to it (near or box; NULL for any other failure, the search's
- * own).  Free out with qd_equilibria_free (also after a failure). */
-QD_API qd_status qd_linpoint_equilibria(qd_ctx *ctx, const qd_linpoint *p, const char *near,
-                                        const char *box, const char **bad,
-                                        struct qd_equilibria *out);
-
 #ifdef __cplusplus
 }
 #endif
@@ -83,6 +70,5 @@ QD_API qd_status qd_linpoint_equilibria(qd_ctx *ctx, const qd_linpoint *p, const
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given); a void function returns, and qd_linpoint_free accepts NULL. NULL
  * is an accepted value, as documented at the function, for:
- * qd_linpoint_set (qd); qd_linpoint_read (qd); qd_linpoint_equilibria (near,
- * box). */
+ * qd_linpoint_set (qd); qd_linpoint_read (qd). */
 #endif

@@ -11,6 +11,22 @@
 #include "../base/args.h"
 #include "linear.h"
 
+const char *qd_eq_chosen_code(qd_eq_chosen c) {
+    switch (c) {
+    case QD_EQ_CHOSEN_NEAREST_MINIMUM:
+        return "nearest_minimum";
+    case QD_EQ_CHOSEN_LOWEST_MINIMUM:
+        return "lowest_minimum";
+    case QD_EQ_CHOSEN_NEWTON_FROM_INITIAL:
+        return "newton_from_initial";
+    case QD_EQ_CHOSEN_FIRST_LISTED:
+        return "first_listed";
+    case QD_EQ_CHOSEN_INITIAL_STATE:
+        return "initial_state";
+    }
+    return "unknown";
+}
+
 const char *qd_eq_chosen_name(qd_eq_chosen c) {
     switch (c) {
     case QD_EQ_CHOSEN_NEAREST_MINIMUM:
