@@ -13,7 +13,8 @@
     joined by a spring have the free translation x = y of w^2 = 0, whose
     linear terms cannot decide (null);
   - exit statuses: 0 an answer, 2 bad input (an unknown option, a model that
-    does not read), 1 a failure with nothing on stdout (no lob of energy
+    does not read, a parameter with no value in any command, an unknown name
+    in an option's expression), 1 a failure with nothing on stdout (no lob of energy
     E = m g h with h = 1 reaches y = 3: Desloge ch. 83, Byerly ch. IV, as
     examples/path_projectile.qd), 3 a certified "no" printed with its
     witness (Q = p, P = q has [Q, P] = -1: not canonical, Goldstein 9.4;
@@ -233,6 +234,30 @@ def exits(qdot, t):
               r.returncode == 2 and r.stdout == "", "%d %r" % (r.returncode, r.stderr))
 
 
+def unbound(qdot, t):
+    """One rule from status to exit code: a parameter with no value is bad
+    input (2) in every command, shown at its place in the model file, and so
+    is an unknown name in an option's expression, shown in the option."""
+    f = t / "unbound.qd"
+    f.write_text("coordinates x\nparameters m, k = 1\nT = m*x'^2/2\nV = k*x^2/2\n"
+                 "initial x = 1, x' = 0\n")
+    for args in (["simulate", "--t-end", "1"], ["poincare", "--section", "x = 0", "--crossings",
+                 "1"], ["lyapunov", "--t-end", "1"], ["equilibria"], ["modes"], ["linearize"],
+                 ["action"], ["orbit", "--ignore", "x"], ["zvc", "--box", "x=-1:1",
+                 "--level", "1"], ["impulse"], ["scatter", "--energy", "1", "--b", "1"],
+                 ["sweep", "--grid", "k=1:2:2", "--t-end", "1", "--measure", "final"],
+                 ["check"], ["eom"], ["hamiltonian"]):
+        r = run(qdot, args[0], f, *args[1:])
+        check("exit 2: %s with m unbound, at its place" % args[0], r.returncode == 2 and
+              "unbound.qd:2:12: error: parameter 'm' has no value" in r.stderr,
+              "%d %r" % (r.returncode, r.stderr[:200]))
+    for opt, text, place in (("--output", "zz", "--output:1:1:"),
+                             ("--event", "zz = 0", "--event:1:1:")):
+        r = run(qdot, "simulate", t / "one.qd", "--t-end", "1", "--initial", "q=1", opt, text)
+        check("exit 2: simulate %s %r, at its place" % (opt, text), r.returncode == 2 and
+              place in r.stderr and r.stdout == "", "%d %r" % (r.returncode, r.stderr[:200]))
+
+
 def poincare(qdot):
     args = [EX / "double_pendulum.qd", "--section", "theta1 = 0, theta1' > 0",
             "--crossings", "3", "--initial", "theta1=1, theta2=0.5"]
@@ -305,6 +330,7 @@ def main():
         vocabulary(qdot, t)
         stable(qdot, t)
         exits(qdot, t)
+        unbound(qdot, t)
         poincare(qdot)
         expressions(qdot)
         ranges(qdot)
