@@ -178,6 +178,8 @@ def vocabulary(qdot, t):
         check("%s: exit 0" % name, r.returncode == 0, r.stderr)
         check("%s: \"model\" first, the file as given" % name,
               list(d)[:1] == ["model"] and d["model"] == str(args[1]), list(d)[:3])
+        check("%s: \"model\" once (JSON would keep the last of two)" % name,
+              r.stdout.count('\n  "model": ') == 1, r.stdout[:200])
         for path, k, v in walk(d):
             if k in FORBIDDEN and not (k == "file" and path.endswith("/plot")):
                 check("%s: no key %r (the word is %r)" % (name, k, FORBIDDEN[k]), False,
