@@ -234,6 +234,12 @@ QD_API void qd_ham_point_free(qd_ham_point *pt);
  *     are none), velocities, implicit (when true), H, L (a model given by
  *     H), dq_dt and dp_dt, each name with a _ appended while it clashes
  *     with a name of m, the verdicts as comments.
+ * For h->second_kind (qd_ham2_derive) the same with s, K and T in place of
+ * p, H and L: the header "qdot hamiltonian --second-kind SOURCE", a section
+ * "generalized forces" (Q_<q> = h->extra), "Hamilton's equations of the
+ * second kind" and the verdicts "K = T", "s = p", "K conserved"; JSON
+ * "kind": "second" after "model", "K", "forces", "dq_dt", "ds_dt", "K_is_T",
+ * "K_minus_T", "s_is_p", "conserved" (no H keys); SymPy K, forces, ds_dt.
  * QD_ERR_ARG for QD_RENDER_C or an at not of h (another n); QD_ERR_NUMERIC
  * for a JSON number that is not finite; QD_ERR_NOMEM.  Nothing is appended
  * on an error. */

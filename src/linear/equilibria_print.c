@@ -21,6 +21,8 @@ const char *qd_eq_chosen_code(qd_eq_chosen c) {
         return "newton_from_initial";
     case QD_EQ_CHOSEN_FIRST_LISTED:
         return "first_listed";
+    case QD_EQ_CHOSEN_INITIAL_STATE:
+        return "initial_state";
     }
     return "unknown";
 }
@@ -31,6 +33,9 @@ const char *qd_eq_chosen_name(qd_eq_chosen c) {
         return "the minimum of the potential nearest the model's initial state";
     case QD_EQ_CHOSEN_LOWEST_MINIMUM:
         return "the minimum of the potential with the lowest V";
+    case QD_EQ_CHOSEN_INITIAL_STATE:
+        return "the model's initial state is an equilibrium (a minimum of the potential; no "
+               "search made)";
     case QD_EQ_CHOSEN_NEWTON_FROM_INITIAL:
         return "no minimum of the potential was found: the equilibrium reached by Newton's "
                "method from the model's initial state";
