@@ -4370,6 +4370,13 @@ static void null_print(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_print_c_block(F.ctx, 1, (const qd_expr * const *)F.e, (const char * const *)F.names, NULL));
     reset(&F);
+    /* ---- qd_tour_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tour_print(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tour_print(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_c_name */
     /* sym NULL */
     assert_int_equal(QD_ERR_ARG, qd_c_name(NULL, &F.buf));
