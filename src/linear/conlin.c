@@ -21,6 +21,8 @@ extern void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int
                    const int *ldb, int *info);
 
 #define NEWTON_ITERS 60
+
+static const qd_expr *speed_velocity(const qd_model *m, size_t i);
 #define IGNORABLE_TOL 1e-13
 
 /* What one linearization works with.  The tangents' inputs are
@@ -28,6 +30,7 @@ extern void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int
 typedef struct cl_work {
     qd_ctx *ctx;
     const qd_eom *e;
+    const qd_model *m;
     size_t n, nu, nc, nh, d;     /* d = nh + nc constraint functions */
     size_t nin;
     const qd_expr **in;
@@ -240,7 +243,10 @@ static qd_status choose(cl_work *w, size_t *dep) {
             for (size_t k = 0; k < w->nh; k++)
                 depq = depq || dep[k] == j;
             cols[j] = n + j;
-            cls[j] = depq ? 0 : w->val[n + j] != 0 ? 3 : occurs(w->e, w->e->q[j]) ? 2 : 1;
+            bool speed = false;
+            for (size_t i = 0; i < qd_model_nspeeds(w->m); i++)
+                speed = speed || speed_velocity(w->m, i) == w->e->qd[j];
+            cls[j] = depq ? 0 : w->val[n + j] != 0 || speed ? 3 : occurs(w->e, w->e->q[j]) ? 2 : 1;
         }
         if (pivots(w, rows, w->nc, cols, n, cls, dep, &nd, Q) < w->nc) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the velocity constraints are not independent at "
@@ -620,6 +626,7 @@ static qd_status setup(cl_work *w, const qd_eom *e, const qd_model *m, const qd_
                        qd_conlin *c) {
     size_t n = e->n;
     w->e = e;
+    w->m = m;
     w->n = n;
     w->nc = e->ncon;
     w->nu = qd_model_ninputs(m);
@@ -750,12 +757,80 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     return st;
 }
 
+/* A speed defined as one velocity (u2 = q2'): that velocity, else NULL. */
+static const qd_expr *speed_velocity(const qd_model *m, size_t i) {
+    const qd_expr *d = qd_model_speed_definition(m, i);
+    return d && qd_expr_kind(d) == QD_SYMBOL && qd_symbol_order(d) == 1 ? d : NULL;
+}
+
+/* The speeds' initial values (`initial u3 = v/rr`) into their velocities. */
+static qd_status speeds_initial(qd_ctx *ctx, const qd_model *m, qd_state *st, bool about) {
+    for (size_t i = 0; i < qd_model_nspeeds(m); i++) {
+        const qd_expr *u0 = qd_model_speed_initial(m, i), *v = speed_velocity(m, i);
+        size_t k = v ? qd_state_find(st, v) : st->n;
+        if (u0 && k < st->n)
+            st->vals[k] = qd_number_value(u0);
+        else if (u0 && !about) {
+            qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "the speed %s is not one velocity, so its "
+                         "initial value does not give the point: give the velocities with "
+                         "--about", qd_expr_name(qd_model_speed(m, i)));
+            return QD_ERR_UNSUPPORTED;
+        }
+    }
+    return QD_OK;
+}
+
 qd_status qd_conlin_point(qd_ctx *ctx, const qd_model *m, qd_linpoint *pt, const char *about) {
     if (!ctx || !m || !pt)
         return QD_ERR_ARG;
     qd_status st = qd_state_initial(ctx, m, &pt->st);
+    if (st == QD_OK)
+        st = speeds_initial(ctx, m, &pt->st, about != NULL);
     qd_state_read_opts o = {.refuse = QD_STATE_TIME | QD_STATE_PARAMS | QD_STATE_EXTRA};
     if (st == QD_OK && about)
         st = qd_state_read(ctx, m, &pt->st, about, &o);
     return st;
+}
+
+qd_status qd_conlin_keep_core(qd_ctx *ctx, qd_conlin *c) {
+    if (!ctx || !c || !c->ss.A)
+        return QD_ERR_ARG;
+    const qd_statespace *o = &c->ss;
+    size_t m = c->ncore, nu = o->nu, nx = o->nx;
+    qd_statespace s = {.nx = m, .nu = nu};
+    s.states = qd__calloc(ctx, m + nu + 1, sizeof *s.states);
+    s.outputs = qd__calloc(ctx, 1, sizeof *s.outputs);
+    s.A = qd__calloc(ctx, m * m + m * nu + 2 * m + 1, sizeof *s.A);
+    if (!s.states || !s.outputs || !s.A) {
+        qd_statespace_free(&s);
+        return QD_ERR_NOMEM;
+    }
+    s.inputs = s.states + m;
+    s.B = s.A + m * m;
+    s.C = s.D = s.B + m * nu;
+    s.xdot0 = s.C;
+    s.y0 = s.xdot0 + m;
+    for (size_t i = 0, r = 0; i < nx; i++) {
+        if (c->ignorable[i])
+            continue;
+        s.states[r] = o->states[i];
+        s.n += c->indep[i] < c->n;
+        s.xdot0[r] = o->xdot0[i];
+        for (size_t j = 0, k = 0; j < nx; j++)
+            if (!c->ignorable[j])
+                s.A[r * m + k++] = o->A[i * nx + j];
+        for (size_t u = 0; u < nu; u++)
+            s.B[r * nu + u] = o->B[i * nu + u];
+        r++;
+    }
+    for (size_t u = 0; u < nu; u++)
+        s.inputs[u] = o->inputs[u];
+    qd_status st = qd__lin_ss_analyse(ctx, &s);
+    if (st != QD_OK) {
+        qd_statespace_free(&s);
+        return st;
+    }
+    qd_statespace_free(&c->ss);
+    c->ss = s;
+    return QD_OK;
 }
