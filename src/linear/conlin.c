@@ -137,20 +137,26 @@ static qd_status con_eval(cl_work *w) {
  * rows[0..nr) of Cz: the pivots taken, the columns of class 0 before those
  * of class 1 (cls NULL: one class), into dep (appended at *nd).  Returns
  * the rank reached.  forced: columns taken first whatever their size. */
+/* pivots' scratch: a flag per column, a vector per row, the basis Q. */
+typedef struct piv_scratch {
+    bool *used;
+    double *v, *Q;
+} piv_scratch;
+
 static size_t pivots(const cl_work *w, const size_t *rows, size_t nr, const size_t *cols,
-                     size_t ncols, const int *cls, size_t *dep, size_t *nd, double *Q) {
+                     size_t ncols, const int *cls, size_t *dep, size_t *nd,
+                     const piv_scratch *sc) {
+    double *Q = sc->Q;
     size_t nv = 2 * w->n + w->nu, rank = 0;
     double scale = 0;
     for (size_t r = 0; r < nr; r++)
         for (size_t c = 0; c < ncols; c++)
             scale = fmax(scale, fabs(w->Cz[rows[r] * nv + cols[c]]));
-    bool *used = calloc(ncols + 1, 1);
-    double *v = malloc((nr + 1) * sizeof *v);
-    if (!used || !v || scale == 0) {
-        free(used);
-        free(v);
+    bool *used = sc->used;
+    double *v = sc->v;
+    memset(used, 0, ncols * sizeof *used);
+    if (scale == 0)
         return 0;
-    }
     for (int pass = 0; pass < 4 && rank < nr; pass++)
         for (; rank < nr;) {
             size_t best = SIZE_MAX;
@@ -193,8 +199,6 @@ static size_t pivots(const cl_work *w, const size_t *rows, size_t nr, const size
                 Q[rank * nr + r] = v[r] / bn;
             rank++;
         }
-    free(used);
-    free(v);
     return rank;
 }
 
@@ -220,16 +224,18 @@ static int cmp_size(const void *a, const void *b) {
  * what the caller set stays set). */
 static qd_status choose(cl_work *w, size_t *dep) {
     size_t n = w->n, nd = 0, d = w->d;
-    size_t *rows = calloc(d + 1, sizeof *rows), *cols = calloc(2 * n + 1, sizeof *cols);
-    int *cls = calloc(2 * n + 1, sizeof *cls);
-    double *Q = calloc(d * (d + 1) + 1, sizeof *Q);
-    qd_status st = rows && cols && cls && Q ? QD_OK : QD_ERR_NOMEM;
+    size_t *rows = qd__calloc(w->ctx, d + 2 * n + 2, sizeof *rows), *cols = rows + d + 1;
+    int *cls = qd__calloc(w->ctx, 2 * n + 1, sizeof *cls);
+    double *Q = qd__calloc(w->ctx, d * (d + 1) + d + 1, sizeof *Q);
+    bool *used = qd__calloc(w->ctx, 2 * n + 1, sizeof *used);
+    piv_scratch sc = {used, Q ? Q + d * (d + 1) : NULL, Q};
+    qd_status st = rows && cls && Q && used ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK) {
         for (size_t r = 0; r < w->nh; r++)
             rows[r] = r;
         for (size_t j = 0; j < n; j++)
             cols[j] = j;
-        if (w->nh && pivots(w, rows, w->nh, cols, n, NULL, dep, &nd, Q) < w->nh) {
+        if (w->nh && pivots(w, rows, w->nh, cols, n, NULL, dep, &nd, &sc) < w->nh) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the holonomic constraints are not independent at "
                          "the point (d phi/dq has rank below %zu): give another point", w->nh);
             st = QD_ERR_ARG;
@@ -248,7 +254,7 @@ static qd_status choose(cl_work *w, size_t *dep) {
                 speed = speed || speed_velocity(w->m, i) == w->e->qd[j];
             cls[j] = depq ? 0 : w->val[n + j] != 0 || speed ? 3 : occurs(w->e, w->e->q[j]) ? 2 : 1;
         }
-        if (pivots(w, rows, w->nc, cols, n, cls, dep, &nd, Q) < w->nc) {
+        if (pivots(w, rows, w->nc, cols, n, cls, dep, &nd, &sc) < w->nc) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the velocity constraints are not independent at "
                          "the point (their coefficients have rank below %zu)", w->nc);
             st = QD_ERR_ARG;
@@ -256,17 +262,17 @@ static qd_status choose(cl_work *w, size_t *dep) {
     }
     if (st == QD_OK)
         qsort(dep, d, sizeof *dep, cmp_size);
-    free(rows);
-    free(cols);
-    free(cls);
-    free(Q);
+    qd__free(rows);
+    qd__free(cls);
+    qd__free(Q);
+    qd__free(used);
     return st;
 }
 
 /* "x, q2, q5'": the independent states named, as the complement into dep. */
 static qd_status read_indep(cl_work *w, const char *text, size_t *dep) {
     size_t n = w->n, nq = 0, nv = 0;
-    bool *named = calloc(2 * n + 1, 1);
+    bool *named = qd__calloc(w->ctx, 2 * n + 1, sizeof *named);
     if (!named)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -312,7 +318,7 @@ static qd_status read_indep(cl_work *w, const char *text, size_t *dep) {
     for (size_t k = 0, nd = 0; st == QD_OK && k < 2 * n; k++)
         if (!named[k])
             dep[nd++] = k;
-    free(named);
+    qd__free(named);
     return st;
 }
 
