@@ -84,8 +84,9 @@ typedef struct qd_conlin {
 /* The linearization of e (derived from m, with constraints) about the
  * point pt->st (its coordinates and velocities; t, the parameters at their
  * values; m's inputs at 0).  independent: "x, q2, q5'" (coordinates and
- * velocities of e, n - nhol and n - ncon of them, by commas or spaces), or
- * NULL to choose.  QD_ERR_ARG, located in independent, for a name that is
+ * velocities of e, n - nhol and n - ncon of them, by commas or spaces; or
+ * the n - nhol coordinates alone, the velocities then chosen), or NULL to
+ * choose.  QD_ERR_ARG, located in independent, for a name that is
  * no coordinate or velocity of e, a count other than those, or a choice
  * whose dependent states the constraints do not determine there (the
  * message says which); QD_ERR_ARG when Newton does not reach the manifold

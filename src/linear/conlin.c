@@ -222,8 +222,8 @@ static int cmp_size(const void *a, const void *b) {
  * coordinates M and f do not involve, then the others, and last the
  * velocities the point gives a value other than 0 (the rolling disc's spin:
  * what the caller set stays set). */
-static qd_status choose(cl_work *w, size_t *dep) {
-    size_t n = w->n, nd = 0, d = w->d;
+static qd_status choose(cl_work *w, size_t *dep, bool coords_given) {
+    size_t n = w->n, nd = coords_given ? w->nh : 0, d = w->d;
     size_t *rows = qd__calloc(w->ctx, d + 2 * n + 2, sizeof *rows), *cols = rows + d + 1;
     int *cls = qd__calloc(w->ctx, 2 * n + 1, sizeof *cls);
     double *Q = qd__calloc(w->ctx, d * (d + 1) + d + 1, sizeof *Q);
@@ -235,7 +235,8 @@ static qd_status choose(cl_work *w, size_t *dep) {
             rows[r] = r;
         for (size_t j = 0; j < n; j++)
             cols[j] = j;
-        if (w->nh && pivots(w, rows, w->nh, cols, n, NULL, dep, &nd, &sc) < w->nh) {
+        if (w->nh && !coords_given &&
+            pivots(w, rows, w->nh, cols, n, NULL, dep, &nd, &sc) < w->nh) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the holonomic constraints are not independent at "
                          "the point (d phi/dq has rank below %zu): give another point", w->nh);
             st = QD_ERR_ARG;
@@ -270,7 +271,7 @@ static qd_status choose(cl_work *w, size_t *dep) {
 }
 
 /* "x, q2, q5'": the independent states named, as the complement into dep. */
-static qd_status read_indep(cl_work *w, const char *text, size_t *dep) {
+static qd_status read_indep(cl_work *w, const char *text, size_t *dep, bool *coords_only) {
     size_t n = w->n, nq = 0, nv = 0;
     bool *named = qd__calloc(w->ctx, 2 * n + 1, sizeof *named);
     if (!named)
@@ -308,16 +309,18 @@ static qd_status read_indep(cl_work *w, const char *text, size_t *dep) {
                 nv++;
         }
     }
-    if (st == QD_OK && (nq != n - w->nh || nv != n - w->nc)) {
+    *coords_only = st == QD_OK && nv == 0 && nq == n - w->nh;
+    if (st == QD_OK && !*coords_only && (nq != n - w->nh || nv != n - w->nc)) {
         qd_ctx_error(w->ctx, QD_ERR_ARG, "the independent states are %zu coordinates and %zu "
-                     "velocities (%zu coordinates, %zu holonomic constraints, %zu in all), not "
-                     "%zu and %zu", n - w->nh, n - w->nc, n, w->nh, w->nc, nq, nv);
+                     "velocities, or the coordinates alone (%zu coordinates, %zu holonomic "
+                     "constraints, %zu in all), not %zu and %zu", n - w->nh, n - w->nc, n,
+                     w->nh, w->nc, nq, nv);
         qd_ctx_error_at(w->ctx, text, 0, len);
         st = QD_ERR_ARG;
     }
-    for (size_t k = 0, nd = 0; st == QD_OK && k < 2 * n; k++)
+    for (size_t k = 0, nd = 0; st == QD_OK && k < (*coords_only ? n : 2 * n); k++)
         if (!named[k])
-            dep[nd++] = k;
+            dep[nd++] = k; /* coordinates alone: their velocities are chosen (choose) */
     qd__free(named);
     return st;
 }
@@ -723,10 +726,13 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     qd_status st = setup(&w, e, m, pt, out);
     size_t n = e->n, nx = out->nx, nv = 2 * n + w.nu;
     double *dF = NULL, *g = NULL, *T = NULL;
+    bool coords_only = false;
     if (st == QD_OK)
-        st = independent ? read_indep(&w, independent, out->dep) : con_eval(&w);
-    if (st == QD_OK && !independent)
-        st = choose(&w, out->dep);
+        st = independent ? read_indep(&w, independent, out->dep, &coords_only) : QD_OK;
+    if (st == QD_OK && (!independent || coords_only))
+        st = con_eval(&w);
+    if (st == QD_OK && (!independent || coords_only))
+        st = choose(&w, out->dep, coords_only);
     for (size_t k = 0; st == QD_OK && k < 2 * n; k++)
         out->given[k] = w.val[k];
     if (st == QD_OK)

@@ -129,6 +129,11 @@ static void test_pendulum(void **state) {
     assert_true(fabs(c.ss.A[0] - 0) < 1e-15 && fabs(c.ss.A[1] - 1) < 1e-15);
     assert_true(fabs(c.ss.A[2] + 9.8 / 1.3) < 1e-12 && fabs(c.ss.A[3]) < 1e-15);
     qd_conlin_free(&c);
+    /* the coordinate named alone: its velocity chosen, the same A */
+    assert_int_equal(qd_conlin_about(ctx, e, m, &pt, "q2", &c), QD_OK);
+    assert_int_equal(c.nx, 2);
+    assert_true(fabs(c.ss.A[2] + 9.8 / 1.3) < 1e-12 && c.indep[1] == 3);
+    qd_conlin_free(&c);
     unload(m, e, &pt);
     qd_ctx_free(ctx);
 }
