@@ -144,7 +144,8 @@ typedef struct qd_conlin_scan {
  * point follows it; about and independent as for qd_conlin_point and
  * qd_conlin_about, pt refilled), and each value between two samples where
  * the core turns unstable or back (its margin through 1e-10 of its
- * largest |s|), bisected to 1e-10 of |b - a|.  A parameter the
+ * largest |s|), bisected to 1e-10 of the samples' spacing (on the sign of
+ * the margin itself when the stable side is inside the left half-plane).  A parameter the
  * model assumes positive (qd_symbol_is_positive: its value was when the
  * model was read) starts just above a = 0 (out->nudged) and refuses a < 0.  m's parameter is
  * given back its value.  QD_ERR_ARG for an unknown parameter, a >= b,
