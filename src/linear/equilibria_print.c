@@ -23,8 +23,6 @@ const char *qd_eq_chosen_code(qd_eq_chosen c) {
         return "newton_from_initial";
     case QD_EQ_CHOSEN_FIRST_LISTED:
         return "first_listed";
-    case QD_EQ_CHOSEN_INITIAL_STATE:
-        return "initial_state";
     }
     return "unknown";
 }

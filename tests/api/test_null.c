@@ -687,6 +687,13 @@ static void null_conlin(void **state)
     /* c NULL */
     qd_conlin_free(NULL);
     reset(&F);
+    /* ---- qd_conlin_keep_core */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_keep_core(NULL, NULL));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_keep_core(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_conlin_point */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_point(NULL, F.model, (qd_linpoint *)(void *)F.blob, "q"));
