@@ -1212,6 +1212,35 @@ static bool ballistic_aim(shoot *p, double *v, double *T, double *a, int lob) {
     return true;
 }
 
+/* At fixed energy, the times at which the motion from (q0, v) comes
+ * nearest q1: the local minima of |q(t) - q1| over 12 chord times, sampled
+ * 600 times, into tmin (at most cap, ascending); their count.  The k-th of
+ * them is start k's duration, so that the search aims at the first pass,
+ * the way round and the next turn alike (issue 33: on a sphere the way
+ * round, 3 pi/2 long, was never started near, even from --guess). */
+static size_t near_passes(shoot *p, const double *v, double Tc, double *tmin, size_t cap) {
+    sys *s = p->s;
+    size_t n = p->n, na = aug_size(s, false), count = 0, steps = 600;
+    double *y = p->y, h = 12 * Tc / (double)steps, dprev = INFINITY, dprev2 = INFINITY;
+    memset(y, 0, na * sizeof *y);
+    memcpy(y, p->q0, n * sizeof *y);
+    memcpy(y + n, v, n * sizeof *y);
+    for (size_t k = 0; k <= steps && count < cap; k++) {
+        double d = 0;
+        for (size_t j = 0; j < n; j++)
+            d += (y[j] - p->q1[j]) * (y[j] - p->q1[j]);
+        if (k >= 2 && dprev < dprev2 && dprev <= d)
+            tmin[count++] = h * (double)(k - 1);
+        dprev2 = dprev;
+        dprev = d;
+        if (k < steps && !rk4_step(s, y, p->t0 + h * (double)k, h, false, p->w))
+            break;
+    }
+    s->st = QD_OK;
+    qd_ctx_clear_error(s->ctx);
+    return count;
+}
+
 /* The start vector number i: v0 (and T) then every later segment's state
  * from a straight-line interpolation at the velocity v0.  A ballistic start
  * (lob 1 or 2, at fixed energy with --all) aims instead as a projectile
@@ -1253,10 +1282,13 @@ static void make_start(search *sr, size_t i, double *x, int lob) {
         double a = (lh1[1] - lh0[1]) > 0 && p->E > lh0[1] ? sqrt((p->E - lh0[1]) / (lh1[1] - lh0[1])) : 1;
         for (size_t j = 0; j < n; j++)
             v[j] *= a;
-        double nv = norm2(n, v);
+        double nv = norm2(n, v), tmin[3];
         T = nv > 0 ? sr->span / nv : 1;
-        if (i >= o->nguess && sr->nstart > 1)  /* longer lobs too */
-            T *= 1 + (double)((i - o->nguess) % 3);
+        /* the k-th near pass of the motion from v (k = 0 for a guess), or
+         * longer lobs of the chord's time */
+        size_t k = i >= o->nguess && sr->nstart > 1 ? (i - o->nguess) % 3 : 0;
+        size_t np = nv > 0 ? near_passes(p, v, T, tmin, 3) : 0;
+        T = k < np ? tmin[k] : T * (1 + (double)k);
         x[n] = T;
     }
     double acc[32] = {0};
