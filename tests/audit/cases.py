@@ -202,6 +202,8 @@ _brach_a, _brach_th = 0.572917037532, 2.41201114391  # D T35's endpoint (1, 1)
 _b23_th, _b23_thd = 0.7, 1.3                  # B23: the pendulum at th, th' (l = 1.5)
 _b23_at = ["eom", "gb_b23.qd", "--at",
            "x=1.5*sin(0.7), y=-1.5*cos(0.7), x'=1.5*1.3*cos(0.7), y'=1.5*1.3*sin(0.7)"]
+_t21 = ["stability", "da_t21.qd", "--ignore", "ph", "--momentum",
+        "p_ph=%r" % ((4 / 3 + 0.5 * (4 / 3) ** 2) * 0.75 * sqrt(3 * 9.81 / 2))]
 _second = [
     ("B T53 beaded string, slowest mode", "seed-desloge-B.md T53: w^2 = tau/(6 a m)",
      ["modes", "db_t53.qd"], r"mode 1: w\^2 = (\S+),", 3 / (6 * 0.5), 1e-12),
@@ -311,6 +313,13 @@ _second = [
     ("TC21 billiard ball: final speed", "seed-byerly.md TC21 (D): 5 u0/7",
      ["simulate", "by_tc21.qd", "--t-end", "1"], r"^1,(?:[^,]*,){5}([^,]+),", 5 * 1.4 / 7,
      1e-9),
+    ("A T21 rod with a sliding bead: the cone", "seed-desloge-A.md T21: th = pi/3, x = 4a/3 "
+     "with n = 6 al, p_ph = (4/3 m a^2 + al m x^2) sin^2 th ph', no --guess (the model's start "
+     "th = 0 is singular for V_eff)", _t21, r"^  th = (\S+)$", pi / 3, 1e-10),
+    ("A T21 rod with a sliding bead: the bead", "seed-desloge-A.md T21: x = 4a/3", _t21,
+     r"^  x = (\S+)$", 4 / 3, 1e-10),
+    ("A T21 rod with a sliding bead: the rate", "seed-desloge-A.md T21: ph'^2 = 3 g/(2 a)", _t21,
+     r"^  ph' = (\S+), p_ph", sqrt(3 * 9.81 / 2), 1e-10),
     ("TC07 particle in a turning tube", "seed-byerly.md TC07: r = a cosh(omega t)",
      ["simulate", "by_tc07.qd", "--t-end", "1", "--rtol", "1e-12"], r"^1,(\S+?),",
      0.5 * cosh(2), 1e-9),
