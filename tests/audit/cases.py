@@ -204,6 +204,8 @@ _b23_at = ["eom", "gb_b23.qd", "--at",
            "x=1.5*sin(0.7), y=-1.5*cos(0.7), x'=1.5*1.3*cos(0.7), y'=1.5*1.3*sin(0.7)"]
 _t21 = ["stability", "da_t21.qd", "--ignore", "ph", "--momentum",
         "p_ph=%r" % ((4 / 3 + 0.5 * (4 / 3) ** 2) * 0.75 * sqrt(3 * 9.81 / 2))]
+_tc29 = ["impulse", "by_tc29.qd", "--prescribe", "major: z' - a*be' = U, minor: z' + b*al' = V"]
+_tc31 = ["impulse", "by_tc31.qd", "--prescribe", "gx: x' - a*be' = 0, gy: y' + a*al' = 0"]
 _second = [
     ("B T53 beaded string, slowest mode", "seed-desloge-B.md T53: w^2 = tau/(6 a m)",
      ["modes", "db_t53.qd"], r"mode 1: w\^2 = (\S+),", 3 / (6 * 0.5), 1e-12),
@@ -320,6 +322,20 @@ _second = [
      r"^  x = (\S+)$", 4 / 3, 1e-10),
     ("A T21 rod with a sliding bead: the rate", "seed-desloge-A.md T21: ph'^2 = 3 g/(2 a)", _t21,
      r"^  ph' = (\S+), p_ph", sqrt(3 * 9.81 / 2), 1e-10),
+    ("TC29 elliptic disk, the centre", "seed-byerly.md TC29: v_G = (U + V)/6 = 0.5 (U = 1, "
+     "V = 2, a = 3, b = 1)", _tc29, r"^  z'\+ = .* = (\S+)$", 0.5, 1e-10),
+    ("TC29 elliptic disk, w1", "seed-byerly.md TC29: w1 = (5V - U)/(6b) = 1.5", _tc29,
+     r"^  al'\+ = .* = (\S+)$", 1.5, 1e-10),
+    ("TC29 elliptic disk, w2", "seed-byerly.md TC29: w2 = (V - 5U)/(6a) = -1/6", _tc29,
+     r"^  be'\+ = .* = (\S+)$", -1 / 6, 1e-10),
+    ("TC31 spinning sphere set down, x'", "seed-byerly.md TC31: x' = (2/7) a Omega2", _tc31,
+     r"^  x'\+ = .* = (\S+)$", 2 / 7 * 0.5 * -2, 1e-10),
+    ("TC31 spinning sphere set down, y'", "seed-byerly.md TC31: y' = -(2/7) a Omega1", _tc31,
+     r"^  y'\+ = .* = (\S+)$", -2 / 7 * 0.5 * 3, 1e-10),
+    ("TC31 spinning sphere set down, w1", "seed-byerly.md TC31: w1 = k^2 Omega1/(a^2 + k^2) = "
+     "(2/7) Omega1", _tc31, r"^  al'\+ = .* = (\S+)$", 2 / 7 * 3, 1e-10),
+    ("TC31 spinning sphere set down, w3", "seed-byerly.md TC31: w3 = Omega3", _tc31,
+     r"^  ga'\+ = .* = (\S+)$", 5.0, 1e-10),
     ("TC07 particle in a turning tube", "seed-byerly.md TC07: r = a cosh(omega t)",
      ["simulate", "by_tc07.qd", "--t-end", "1", "--rtol", "1e-12"], r"^1,(\S+?),",
      0.5 * cosh(2), 1e-9),
