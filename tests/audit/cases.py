@@ -336,6 +336,16 @@ _second = [
      "(2/7) Omega1", _tc31, r"^  al'\+ = .* = (\S+)$", 2 / 7 * 3, 1e-10),
     ("TC31 spinning sphere set down, w3", "seed-byerly.md TC31: w3 = Omega3", _tc31,
      r"^  ga'\+ = .* = (\S+)$", 5.0, 1e-10),
+    ("B T51 rough sphere in a rocking bowl, slow", "seed-desloge-B.md T51: w^2 = x g/b, 156 x^2 "
+     "- 260 x + 75 = 0, x = (65 - 10 sqrt 13)/78",
+     ["modes", "db_t51.qd", "--about", "x=0, phi=0, th=0"], r"mode 2: w\^2 = (\S+),",
+     9.81 * (65 - 10 * sqrt(13)) / 78, 1e-10),
+    ("B T51 rough sphere in a rocking bowl, fast", "seed-desloge-B.md T51: x = (65 + 10 sqrt 13)"
+     "/78", ["modes", "db_t51.qd", "--about", "x=0, phi=0, th=0"], r"mode 3: w\^2 = (\S+),",
+     9.81 * (65 + 10 * sqrt(13)) / 78, 1e-10),
+    ("B T51 rough sphere in a rocking bowl, the slide", "seed-desloge-B.md T51: a zero-frequency "
+     "horizontal translation", ["modes", "db_t51.qd", "--about", "x=0, phi=0, th=0"],
+     r"mode 1: w\^2 = (\S+),", 0.0, 1e-12),
     ("TC07 particle in a turning tube", "seed-byerly.md TC07: r = a cosh(omega t)",
      ["simulate", "by_tc07.qd", "--t-end", "1", "--rtol", "1e-12"], r"^1,(\S+?),",
      0.5 * cosh(2), 1e-9),
