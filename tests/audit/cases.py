@@ -7,7 +7,9 @@ formula cited).  No value here was taken from qdot's output.
 A case is (name, citation, args, regex, expected, rel): args are the command
 and its arguments, a model named by its file under models/; regex has one
 group, the number; expected is the reference value (a formula in the model's
-parameters, evaluated here); rel the relative tolerance.
+parameters, evaluated here); rel the relative tolerance (None: want is the
+exact text).  A seventh entry, when there, is the exit status wanted (3: a
+verdict "no"); else 0.
 """
 from math import pi, sqrt, sin, cos, asin, atan, acos, atan2, exp, cosh
 
@@ -346,6 +348,14 @@ _second = [
     ("B T51 rough sphere in a rocking bowl, the slide", "seed-desloge-B.md T51: a zero-frequency "
      "horizontal translation", ["modes", "db_t51.qd", "--about", "x=0, phi=0, th=0"],
      r"mode 1: w\^2 = (\S+),", 0.0, 1e-12),
+    ("C T31 linear map, B = (A^-1)^T", "seed-desloge-C.md T31: Q = A q, P = B p is canonical "
+     "iff B = (A^-1)^T; A = [[1, 1], [0, 1]], B = [[1, 0], [-1, 1]]",
+     ["canonical", "dc_t33.qd", "--Q", "q1 + q2, q2", "--P", "p_q1, p_q2 - p_q1"],
+     r"^(canonical)", "canonical", None),
+    ("C T31 linear map, B = I", "seed-desloge-C.md T31: B = I is not (A^-1)^T: not canonical, "
+     "[Q1, P2] = a_12 = 1 where 0 is needed (exit 3)",
+     ["canonical", "dc_t33.qd", "--Q", "q1 + q2, q2", "--P", "p_q1, p_q2"],
+     r"^not canonical: \[Q1, P2\] = (\S+) \(should be 0\)", 1.0, 1e-12, 3),
     ("TC07 particle in a turning tube", "seed-byerly.md TC07: r = a cosh(omega t)",
      ["simulate", "by_tc07.qd", "--t-end", "1", "--rtol", "1e-12"], r"^1,(\S+?),",
      0.5 * cosh(2), 1e-9),
