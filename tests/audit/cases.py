@@ -356,6 +356,24 @@ _second = [
      "[Q1, P2] = a_12 = 1 where 0 is needed (exit 3)",
      ["canonical", "dc_t33.qd", "--Q", "q1 + q2, q2", "--P", "p_q1, p_q2"],
      r"^not canonical: \[Q1, P2\] = (\S+) \(should be 0\)", 1.0, 1e-12, 3),
+    ("A T57 hinged rods struck, PQ's centre", "seed-desloge-A.md T57: 5 J/(4 m) along J",
+     ["impulse", "da_t57.qd"], r"^  y1'\+ = .* = (\S+)$", 5 * 2 / (4 * 1.5), 1e-10),
+    ("A T57 hinged rods struck, PQ turns", "seed-desloge-A.md T57: 9 J/(4 m a) (P struck along "
+     "+y turns PQ clockwise)", ["impulse", "da_t57.qd"], r"^  th1'\+ = .* = (\S+)$",
+     -9 * 2 / (4 * 1.5 * 0.4), 1e-10),
+    ("A T57 hinged rods struck, QR turns", "seed-desloge-A.md T57: 3 J/(4 m a), the opposite "
+     "sense", ["impulse", "da_t57.qd"], r"^  th2'\+ = .* = (\S+)$", 3 * 2 / (4 * 1.5 * 0.4),
+     1e-10),
+    ("A T47 cylinder on a free wedge, the wedge", "seed-desloge-A.md T47: 2 m g sin al cos al/"
+     "(3 (M + m) - 2 m cos^2 al), opposite to the cylinder's horizontal motion",
+     ["eom", "da_t47.qd", "--at", "X=0"], r"^  X'' = (\S+)$",
+     -2 * 2 * 9.81 * sin(0.6) * cos(0.6) / (15 - 4 * cos(0.6) ** 2), 1e-12),
+    ("A T47 cylinder on a free wedge, the roll", "seed-desloge-A.md T47: s'' = 2 (M + m) g sin al"
+     "/(3 (M + m) - 2 m cos^2 al)", ["eom", "da_t47.qd", "--at", "X=0"], r"^  s'' = (\S+)$",
+     2 * 5 * 9.81 * sin(0.6) / (15 - 4 * cos(0.6) ** 2), 1e-12),
+    ("A T53 hoop on a free incline", "seed-desloge-A.md T53: s'' = (M + m) g sin al/(2 (M + m) - "
+     "m cos^2 al)", ["eom", "da_t53.qd", "--at", "x=0"], r"^  s'' = (\S+)$",
+     5 * 9.81 * sin(0.6) / (10 - 2 * cos(0.6) ** 2), 1e-12),
     ("TC07 particle in a turning tube", "seed-byerly.md TC07: r = a cosh(omega t)",
      ["simulate", "by_tc07.qd", "--t-end", "1", "--rtol", "1e-12"], r"^1,(\S+?),",
      0.5 * cosh(2), 1e-9),
