@@ -208,6 +208,7 @@ _t21 = ["stability", "da_t21.qd", "--ignore", "ph", "--momentum",
         "p_ph=%r" % ((4 / 3 + 0.5 * (4 / 3) ** 2) * 0.75 * sqrt(3 * 9.81 / 2))]
 _tc29 = ["impulse", "by_tc29.qd", "--prescribe", "major: z' - a*be' = U, minor: z' + b*al' = V"]
 _tc31 = ["impulse", "by_tc31.qd", "--prescribe", "gx: x' - a*be' = 0, gy: y' + a*al' = 0"]
+_g03 = ["eom", "gb_g03.qd", "--at", "r=1.5, th=0.7*0.4, r'=0.3, th'=0.7, t=0.4"]
 _second = [
     ("B T53 beaded string, slowest mode", "seed-desloge-B.md T53: w^2 = tau/(6 a m)",
      ["modes", "db_t53.qd"], r"mode 1: w\^2 = (\S+),", 3 / (6 * 0.5), 1e-12),
@@ -374,6 +375,11 @@ _second = [
     ("A T53 hoop on a free incline", "seed-desloge-A.md T53: s'' = (M + m) g sin al/(2 (M + m) - "
      "m cos^2 al)", ["eom", "da_t53.qd", "--at", "x=0"], r"^  s'' = (\S+)$",
      5 * 9.81 * sin(0.6) / (10 - 2 * cos(0.6) ** 2), 1e-12),
+    ("G03 bead on a turning wire, r''", "seed-goldstein-britannica.md G03: r'' = omega^2 r",
+     _g03, r"^  r'' = (\S+)$", 0.7 ** 2 * 1.5, 1e-12),
+    ("G03 bead on a turning wire, the torque", "seed-goldstein-britannica.md G03: the "
+     "multiplier of th - omega t = 0 is the torque 2 m omega r r'", _g03,
+     r"^  lambda_wire = (\S+)$", 2 * 1.3 * 0.7 * 1.5 * 0.3, 1e-12),
     ("TC07 particle in a turning tube", "seed-byerly.md TC07: r = a cosh(omega t)",
      ["simulate", "by_tc07.qd", "--t-end", "1", "--rtol", "1e-12"], r"^1,(\S+?),",
      0.5 * cosh(2), 1e-9),

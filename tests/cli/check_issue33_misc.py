@@ -36,6 +36,10 @@
   the velocities after x' = 1, y' = 0, th' = 0 and T = m/2; ends moving
   apart (1, 0) and (2, 0) are inconsistent and refused.
 
+- simulate on a bead on a turning wire written as th = omega t: the summary
+  says "energy change" (the wire does work; "energy error" read like the
+  integrator's fault), the reduced Jacobi integral m/2 (r'^2 - w^2 r^2) kept.
+
 Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
 import json
@@ -356,6 +360,29 @@ initial x1 = 0, y1 = 0, x2 = 3, x1' = 1, y1' = -2, x2' = 0
 """
 
 
+WIRE = """coordinates r, th
+parameters m = 1.3, omega = 0.7
+particle m at r*(cos(th), sin(th))
+constraint wire: th = omega*t
+initial r = 1, th = 0, r' = 0.2, th' = omega
+"""
+
+
+def moving_constraint(qdot, tmp):
+    """A bead on a straight wire turning at omega, the wire written as the constraint
+    th = omega t (Goldstein sec. 1.6 example 3, seed 002): the wire does work, T + V is not
+    conserved (the summary called its change an energy "error" of the integrator), while
+    the Jacobi integral of the reduced motion, m/2 (r'^2 - omega^2 r^2), is."""
+    f = model(tmp, 'wire.qd', WIRE)
+    rc, out, err = run(qdot, 'simulate', f, '--t-end', '2', '--dt', '0.1', '--rtol', '1e-12')
+    check('wire: an energy change, not an error', rc == 0 and 'energy change' in err and
+          'moving constraint' in err, err)
+    rows = [l.split(',') for l in out.strip().splitlines()[1:]]
+    h = [1.3 / 2 * (float(r[3]) ** 2 - 0.49 * float(r[1]) ** 2) for r in rows]
+    check('wire: the Jacobi integral kept', len(h) > 10 and max(abs(x - h[0]) for x in h) < 1e-10, h[:3])
+    check('wire: T + V changed', abs(float(rows[-1][5]) - float(rows[0][5])) > 0.1, rows[-1])
+
+
 def impulses(qdot, tmp):
     f = model(tmp, 'floor.qd', FLOOR)
     rc, out, err = run(qdot, 'impulse', f)
@@ -411,6 +438,7 @@ def main():
         paths(qdot, tmp)
         impulses(qdot, tmp)
         redundant(qdot, tmp)
+        moving_constraint(qdot, tmp)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
 
