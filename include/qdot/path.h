@@ -139,6 +139,11 @@ QD_API void qd_path_foci_mult_free(qd_ctx *ctx, size_t *mult);
 /* Maupertuis / Jacobi: the paths of energy E (the Jacobi integral h) from q0
  * to q1, whatever the time they take: opts.t0 is the start time, opts.t1 is
  * ignored, and each path's t1 (its last sample's time) is the time it takes.
+ * Each start's duration is a time at which the motion from q0 at its
+ * velocity passes nearest q1 (with all, the first, second and third such
+ * pass within 12 chord times, so the way round a sphere is aimed at too);
+ * an end beyond the energy's reach, or a start where the speed vanishes
+ * (E the energy at rest there), is QD_ERR_NUMERIC before any search.
  * Each path carries both Hamilton's S (action) and Maupertuis' A
  * (abbreviated), ordered by A.
  * For a natural system these are the geodesics of the Jacobi metric
@@ -214,7 +219,9 @@ QD_API qd_status qd_path_trial_read(qd_ctx *ctx, const qd_model *m, const char *
                                     const qd_expr **q);
 
 /* ps (found for m and e with opts: its free ends are said so; may be NULL)
- * written for a reader, appended to out: per path the action, the initial
+ * written for a reader, appended to out: with opts->all a note that more
+ * stationary paths may exist beyond what the starts aimed at, and how to
+ * ask for them; per path the action, the initial
  * velocities, the multipliers, at fixed energy the least action and the
  * time, the kinetic foci and whether it is a minimum (or why not
  * examined), and every tenth sample.  Numbers have 12 significant digits.

@@ -400,7 +400,7 @@ static qd_status iterate(search *S, double *u, double *res_out) {
     if (st == QD_OK && worst > 1e-8) {
         qd_ctx_error(S->ctx, QD_ERR_NUMERIC,
                      nu ? "no steady motion found from these starting values (no convergence: "
-                          "relative residual %.3g); give other values with --at"
+                          "relative residual %.3g); give other starting values with --guess"
                         : "the values given are not a steady motion (relative residual %.3g)",
                      worst);
         st = QD_ERR_NUMERIC;

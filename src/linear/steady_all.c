@@ -677,10 +677,58 @@ void qd_steady_set_free(qd_steady_set *set) {
 
 /* The search from the start, last: its message is the one left when nothing
  * is found; a failure is no error once the structured search found some. */
+/* Halton's radical inverse of i in base b, in [0, 1). */
+static double radical(size_t i, unsigned b) {
+    double f = 1, r = 0;
+    for (; i; i /= b) {
+        f /= b;
+        r += f * (double)(i % b);
+    }
+    return r;
+}
+
+#define SPREAD_STARTS 48  /* the fallback's starts (spread_starts) */
+
+/* The start failed and nothing was found: starts spread (a Halton sequence)
+ * over the box u0 +- 2 max(1, |u0|) in the unknowns, each polished and kept
+ * as any other (issue 33: a rod with a sliding bead, Desloge A T21, started
+ * at th = 0, where V_eff's p^2/sin^2 th is singular, and its steady cone at
+ * th = pi/3, x = 4a/3 was "not found" without --guess).  QD_OK when one
+ * converged; else the first start's error stands. */
+static qd_status spread_starts(qd__steady_search *S, found *f, const double *u0, double *u) {
+    static const unsigned primes[] = {2, 3, 5, 7, 11, 13, 17, 19};
+    size_t nu = S->nu;
+    if (nu == 0 || nu > sizeof primes / sizeof primes[0])
+        return QD_ERR_NUMERIC;
+    for (size_t k = 1; k <= SPREAD_STARTS; k++) {
+        for (size_t i = 0; i < nu; i++)
+            u[i] = u0[i] + 2 * fmax(1, fabs(u0[i])) * (2 * radical(k, primes[i]) - 1);
+        double res = 0;
+        qd_status st = qd__lin_steady_iterate(S, u, &res);
+        if (st == QD_ERR_NOMEM)
+            return st;
+        qd__ctx_recover(S->ctx);
+        if (st == QD_OK && (st = polish_add(S, f, u)) != QD_OK)
+            return st;
+    }
+    return f->count ? QD_OK : QD_ERR_NUMERIC;
+}
+
 static qd_status from_start(qd__steady_search *S, found *f, const double *u0, double *u) {
     memcpy(u, u0, S->nu * sizeof *u);
     double res = 0;
     qd_status st = qd__lin_steady_iterate(S, u, &res);
+    if ((st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) && f->count == 0 && f->nsingular == 0) {
+        qd_diag first = *qd_ctx_diag(S->ctx);  /* the start's own error, kept if none is found */
+        qd__ctx_recover(S->ctx);
+        qd_status sp = spread_starts(S, f, u0, u);
+        if (sp == QD_ERR_NOMEM)
+            return sp;
+        if (sp != QD_OK)
+            qd_ctx_error(S->ctx, st, "%s", first.message);
+        else
+            st = QD_ERR_NUMERIC; /* found: the branch below keeps what the spread found */
+    }
     if (st == QD_OK || ((st == QD_ERR_NUMERIC || st == QD_ERR_SINGULAR) && f->count)) {
         qd__ctx_recover(S->ctx);
         st = st == QD_OK ? polish_add(S, f, u) : QD_OK;

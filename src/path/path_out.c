@@ -14,6 +14,7 @@ typedef struct pt_out {
     const qd_model *m;
     const qd_eom *e;
     bool any_free;
+    bool all;            /* the --all search */
 } pt_out;
 
 /* A computed number for a reader: the one digit rule (qd_buf_put_result). */
@@ -50,9 +51,24 @@ static void write_second_variation(const pt_out *r, const qd_path *p, qd_buf *b)
                       p->family);
 }
 
+/* --all: what the multistart covers, and how to ask for more (issue 33: a
+ * search that stops short of a longer path must say so). */
+static void write_search_note(const pt_out *r, qd_buf *b) {
+    bool energy = r->ps->count && !isnan(r->ps->paths[0].abbreviated);
+    qd_buf_printf(b, "note: more stationary paths may exist beyond those the starts aimed at "
+                     "(%s); to ask for more: --guess \"q'=...\"%s, --segments N\n",
+                  energy ? "the first three near passes of each start's motion, within 12 "
+                           "chord times"
+                         : "velocities spread about the chord's, to 2.5 times its speed or the "
+                           "motion's own rate",
+                  energy ? " (aimed at its motion's nearest pass)" : "");
+}
+
 static void write_text(const pt_out *r, qd_buf *b) {
     size_t n = r->e->n;
     qd_buf_printf(b, "paths: %zu\n", r->ps->count);
+    if (r->all)
+        write_search_note(r, b);
     for (size_t i = 0; i < r->ps->count; i++) {
         const qd_path *p = &r->ps->paths[i];
         qd_buf_printf(b, "path %zu:\n  action: ", i + 1);
@@ -173,7 +189,7 @@ static bool pt_any_free(const qd_path_set *ps, const qd_path_opts *opts) {
 qd_status qd_path_print(qd_ctx *ctx, const qd_path_set *ps, const qd_model *m, const qd_eom *e,
                         const qd_path_opts *opts, qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && ps && m && e && out);
-    pt_out o = {ps, m, e, pt_any_free(ps, opts)};
+    pt_out o = {ps, m, e, pt_any_free(ps, opts), opts && opts->all};
     write_text(&o, out);
     if (!out->failed)
         return QD_OK;
@@ -184,7 +200,7 @@ qd_status qd_path_print(qd_ctx *ctx, const qd_path_set *ps, const qd_model *m, c
 qd_status qd_path_json(qd_ctx *ctx, const qd_path_set *ps, const qd_model *m, const qd_eom *e,
                        qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && ps && m && e && out);
-    pt_out o = {ps, m, e, false};
+    pt_out o = {ps, m, e, false, false};
     if (write_json(&o, out))
         return QD_OK;
     qd_ctx_error(ctx, out->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC, "%s",

@@ -38,6 +38,7 @@
 #include "../base/args.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
@@ -45,6 +46,7 @@
 #define PATH_MAXSEG 64
 #define PATH_MAXIT 60
 #define PATH_MAXMULT 8
+#define RESOLVE 6       /* halvings of the steps a converged path must settle within */
 
 typedef struct sys {
     qd_ctx *ctx;
@@ -759,6 +761,110 @@ static bool ends_on_constraints(sys *s, const qd_path_opts *o, double t1, bool e
     return true;
 }
 
+/* "x = 0, y = 0": an end written for a message (cut to the buffer), led
+ * by the independent variable of a functional (the time is left out). */
+static void point_text(const sys *s, double t, const double *q, char *buf, size_t cap) {
+    const char *x = qd_model_independent(s->m);
+    size_t len = x ? (size_t)snprintf(buf, cap, "%s = %.6g", x, t) : 0;
+    buf[len] = 0;
+    for (size_t j = 0; j < s->n && len + 1 < cap; j++)
+        len += (size_t)snprintf(buf + len, cap - len, "%s%s = %.6g", len ? ", " : "",
+                                qd_expr_name(s->e->q[j]), q[j]);
+}
+
+/* The error, and what to do in its hint (each has 255 bytes of its own). */
+static void path_error(qd_ctx *ctx, const char *hint, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static void path_error(qd_ctx *ctx, const char *hint, const char *fmt, ...) {
+    char msg[sizeof ((qd_diag *)0)->message];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    qd_ctx_error(ctx, QD_ERR_NUMERIC, "%s", msg);
+    qd_ctx_error_about(ctx, QD_SUBJECT_NONE, 0, NULL, QD_REASON_NONE, hint);
+}
+
+/* Are L and q'' finite at (t, q) with the velocity v or at rest?  A
+ * cusp of the problem, where the motion's speed vanishes and its slope is
+ * infinite (the brachistochrone released from rest: L = sqrt((1 + y'^2)/
+ * (2 g y)) at y = 0), is singular at every velocity, and no shot can start
+ * or end there. */
+static bool state_finite(sys *s, double t, const double *q, const double *v) {
+    double u[3 * 32] = {0}, a[32], zero[32] = {0};
+    for (int k = 0; k < 2; k++) {
+        memcpy(u, q, s->n * sizeof *u);
+        memcpy(u + s->n, k ? zero : v, s->n * sizeof *u);
+        memcpy(u + 2 * s->n, s->lam0, s->nm * sizeof *u);
+        bool ok = isfinite(aux_at(s, t, u)[0]) && accel(s, t, u, a);
+        for (size_t j = 0; ok && j < s->n; j++)
+            ok = isfinite(a[j]);
+        s->st = QD_OK;
+        qd_ctx_clear_error(s->ctx);
+        if (ok)
+            return true;
+    }
+    return false;
+}
+
+static bool ends_regular(sys *s, const qd_path_opts *o, double t1, bool energy, const double *v) {
+    /* with isoperimetric multipliers the singular points move with them (the
+     * catenary's w y = lambda): left to the search */
+    for (int end = 0; end < 2 && s->nm == 0; end++) {
+        const double *q = end ? o->q1 : o->q0;
+        double t = end && !energy ? t1 : o->t0;
+        if (state_finite(s, t, q, v))
+            continue;
+        char at[160];
+        point_text(s, t, q, at, sizeof at);
+        path_error(s->ctx, "shooting integrates from a regular state: begin the path at a point "
+                           "just off the singular one",
+                   "no path: the equations are singular at the %s (%s): L or the accelerations "
+                   "are not finite there, at the chord's velocity or at rest (a cusp, where the "
+                   "speed vanishes: the brachistochrone released from rest)",
+                   end ? "end" : "start", at);
+        return false;
+    }
+    return true;
+}
+
+/* At fixed energy: each end within the region h(q, 0) <= E (h at rest is
+ * the least h at q when T2 is positive definite: h = T2 - T0 + V), and the
+ * start not on its edge, where the speed vanishes: there the energy row
+ * h - E = |v|^2/2 + ... fixes v only to the square root of its tolerance
+ * (the fall from rest of a projectile at E = V came out with x' = 7.6e-6
+ * and its time 5e-6 off), and every path of that energy leaves along the
+ * motion from rest (a cusp of the Jacobi metric (E - V) M). */
+static bool ends_reachable(sys *s, const qd_path_opts *o, double E) {
+    double zero[32] = {0}, lh[2];
+    for (int end = 0; end < 2; end++) {
+        const double *q = end ? o->q1 : o->q0;
+        lagr_h(s, o->t0, q, zero, lh);
+        double h0 = lh[1], scale = fmax(fabs(E), fabs(h0));
+        char at[160];
+        point_text(s, o->t0, q, at, sizeof at);
+        if (E < h0 - 1e-12 * scale) {
+            path_error(s->ctx, "a motion of energy E stays where the energy at rest is at most "
+                               "E: a larger --energy, or an end within reach",
+                       "no path: the %s (%s) is out of reach at the energy %.10g: the energy at "
+                       "rest there is %.10g", end ? "end" : "start", at, E, h0);
+            return false;
+        }
+        if (!end && E <= h0 + 1e-9 * scale) {
+            char hint[256];
+            snprintf(hint, sizeof hint, "the motion from rest there is qdot simulate's; the "
+                                        "paths of an energy above %.10g leave with a speed",
+                     h0);
+            path_error(s->ctx, hint,
+                       "no path: the speed vanishes at the start (%s): the energy %.10g is the "
+                       "energy at rest there, a cusp where every path of this energy leaves "
+                       "along the motion from rest", at, E);
+            return false;
+        }
+    }
+    return true;
+}
+
 typedef struct found {
     size_t count, cap;
     qd_path *paths;
@@ -1106,6 +1212,35 @@ static bool ballistic_aim(shoot *p, double *v, double *T, double *a, int lob) {
     return true;
 }
 
+/* At fixed energy, the times at which the motion from (q0, v) comes
+ * nearest q1: the local minima of |q(t) - q1| over 12 chord times, sampled
+ * 600 times, into tmin (at most cap, ascending); their count.  The k-th of
+ * them is start k's duration, so that the search aims at the first pass,
+ * the way round and the next turn alike (issue 33: on a sphere the way
+ * round, 3 pi/2 long, was never started near, even from --guess). */
+static size_t near_passes(shoot *p, const double *v, double Tc, double *tmin, size_t cap) {
+    sys *s = p->s;
+    size_t n = p->n, na = aug_size(s, false), count = 0, steps = 600;
+    double *y = p->y, h = 12 * Tc / (double)steps, dprev = INFINITY, dprev2 = INFINITY;
+    memset(y, 0, na * sizeof *y);
+    memcpy(y, p->q0, n * sizeof *y);
+    memcpy(y + n, v, n * sizeof *y);
+    for (size_t k = 0; k <= steps && count < cap; k++) {
+        double d = 0;
+        for (size_t j = 0; j < n; j++)
+            d += (y[j] - p->q1[j]) * (y[j] - p->q1[j]);
+        if (k >= 2 && dprev < dprev2 && dprev <= d)
+            tmin[count++] = h * (double)(k - 1);
+        dprev2 = dprev;
+        dprev = d;
+        if (k < steps && !rk4_step(s, y, p->t0 + h * (double)k, h, false, p->w))
+            break;
+    }
+    s->st = QD_OK;
+    qd_ctx_clear_error(s->ctx);
+    return count;
+}
+
 /* The start vector number i: v0 (and T) then every later segment's state
  * from a straight-line interpolation at the velocity v0.  A ballistic start
  * (lob 1 or 2, at fixed energy with --all) aims instead as a projectile
@@ -1147,10 +1282,13 @@ static void make_start(search *sr, size_t i, double *x, int lob) {
         double a = (lh1[1] - lh0[1]) > 0 && p->E > lh0[1] ? sqrt((p->E - lh0[1]) / (lh1[1] - lh0[1])) : 1;
         for (size_t j = 0; j < n; j++)
             v[j] *= a;
-        double nv = norm2(n, v);
+        double nv = norm2(n, v), tmin[3];
         T = nv > 0 ? sr->span / nv : 1;
-        if (i >= o->nguess && sr->nstart > 1)  /* longer lobs too */
-            T *= 1 + (double)((i - o->nguess) % 3);
+        /* the k-th near pass of the motion from v (k = 0 for a guess), or
+         * longer lobs of the chord's time */
+        size_t k = i >= o->nguess && sr->nstart > 1 ? (i - o->nguess) % 3 : 0;
+        size_t np = nv > 0 ? near_passes(p, v, T, tmin, 3) : 0;
+        T = k < np ? tmin[k] : T * (1 + (double)k);
         x[n] = T;
     }
     double acc[32] = {0};
@@ -1203,13 +1341,31 @@ static void follow_start(search *sr, double *x) {
 
 /* No start converged: the smallest residual, and each isoperimetric
  * condition's own at that start (the one a user can act on). */
-static void no_path_error(qd_ctx *ctx, const sys *s, double best, double tol, const double *iso) {
+static void no_path_error(qd_ctx *ctx, const sys *s, double best, double tol, const double *iso,
+                          size_t unsettled, size_t N) {
     char more[256] = "";
     size_t len = 0;
     for (size_t i = 0; i < s->nm && len < sizeof more - 1; i++)
         len += (size_t)snprintf(more + len, sizeof more - len,
                                 "%s integral of constraint %s minus its value: %.3g",
                                 i ? "," : ";", qd_model_isoperimetric_name(s->m, i), iso[i]);
+    if (unsettled) {  /* converged, then lost when the steps were halved (resolved) */
+        char hint[256];
+        snprintf(hint, sizeof hint, "more shooting segments (--segments %zu) or your own initial "
+                                    "velocities (--guess)", 2 * N > PATH_MAXSEG ? PATH_MAXSEG : 2 * N);
+        path_error(ctx, hint,
+                   "no path found: %zu start%s converged but did not settle when the steps were halved "
+                   "%d times (a path of the discretized problem, not of the motion: faster than "
+                   "the steps resolve, or through a singular point)%s",
+                   unsettled, unsettled == 1 ? "" : "s", RESOLVE, more);
+        return;
+    }
+    if (!isfinite(best)) {  /* every shot met a state where q'' or L is not finite */
+        path_error(ctx, "starts of your own (--guess) or more shooting segments (--segments)",
+                   "no path converged to the end point: every start ran into a state where the "
+                   "equations are not finite (a singular point on the way)%s", more);
+        return;
+    }
     qd_ctx_error(ctx, QD_ERR_NUMERIC,
                  "no path converged to the end point: smallest residual %.3g (tolerance %.3g)%s; "
                  "to ask for more: starts spread around the chord's (--all), your own initial "
@@ -1225,7 +1381,6 @@ static void no_path_error(qd_ctx *ctx, const sys *s, double best, double tol, co
  * the steps is within 10 tol (then Newton polishes it to tol there), at most
  * RESOLVE times; false (the path is dropped) when it does not settle.  hmax is left at the settled steps, for
  * the samples and the action; the caller restores it. */
-#define RESOLVE 6
 static bool resolved(shoot *p, double *x, double *F, double tol, double *res) {
     for (int k = 0; k < RESOLVE; k++) {
         p->s->hmax /= 2;
@@ -1268,6 +1423,13 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         goto done;
     }
     if (!ends_on_constraints(&s, o, o->t1, energy)) {
+        st = qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NUMERIC;
+        goto done;
+    }
+    double chord_v[32];
+    for (size_t j = 0; j < n; j++)
+        chord_v[j] = energy ? o->q1[j] - o->q0[j] : (o->q1[j] - o->q0[j]) / (o->t1 - o->t0);
+    if (!ends_regular(&s, o, o->t1, energy, chord_v) || (energy && !ends_reachable(&s, o, E))) {
         st = qd_ctx_status(ctx) ? qd_ctx_status(ctx) : QD_ERR_NUMERIC;
         goto done;
     }
@@ -1331,13 +1493,16 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
     size_t plain = o->nguess + (o->all || !o->nguess ? sr.nstart : 0);
     size_t total = plain + (energy && o->all && !s.nm ? 2 : 0); /* the two lobs */
     double hmax0 = s.hmax;
+    size_t unsettled = 0;
     for (size_t i = 0; i < total; i++) {
         double res;
         make_start(&sr, i < plain ? i : o->nguess, sr.x, i < plain ? 0 : (int)(i - plain) + 1);
         s.hmax = hmax0;
         if (sr.ncon && !p->free1)
             follow_start(&sr, sr.x);
-        bool ok = shoot_newton(p, sr.x, tol, &res) && resolved(p, sr.x, sr.F, tol, &res);
+        bool conv = shoot_newton(p, sr.x, tol, &res);
+        bool ok = conv && resolved(p, sr.x, sr.F, tol, &res);
+        unsettled += conv && !ok;
         if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
             st = QD_ERR_NOMEM;
             goto done;
@@ -1386,7 +1551,7 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
             break;
     }
     if (fd.count == 0) {
-        no_path_error(ctx, &s, best, tol, best_iso);
+        no_path_error(ctx, &s, best, tol, best_iso, unsettled, p->N);
         st = QD_ERR_NUMERIC;
         goto done;
     }

@@ -91,7 +91,7 @@ static void text_out(const qd_sim_report *r, const char *pre, qd_buf *b) {
          qd_sim_method_name(r->opts->method), r->opts->t0, st->t, st->steps, st->evals,
          st->rejected, r->wall, cons ? "error" : "change", st->energy_error_max,
          st->energy_error_steps, st->constraint_error_max,
-         cons ? "" : " (not conserved: forces, damping or t in L)");
+         cons ? "" : " (not conserved: forces, damping, t in L or a moving constraint)");
     if (!qd_stop_ok(st->stop.code))
         line(b, pre, "stopped early: %s at t = %.17g\n", qd_stop_str(st->stop.code),
              st->stop.t);

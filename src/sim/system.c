@@ -145,6 +145,23 @@ static size_t model_index(const qd_sim *s, const qd_expr *q) {
     return (size_t)-1;
 }
 
+/* A constraint that moves with t (phi(q, t) with dphi/dt = a0 != 0, or t in
+ * its coefficients) does work on the system, so h is not conserved: a bead
+ * on a wire turning at omega, written as th = omega t, changed its T + V by
+ * 54% in a unit of time, and the summary called that an energy "error"
+ * (issue 33). */
+static bool moving_constraint(const qd_eom *e, const qd_expr *t) {
+    for (size_t k = 0; k < e->ncon; k++) {
+        const qd_con *c = &e->con[k];
+        if (c->a0 && !qd_is_zero(c->a0))
+            return true;
+        for (size_t j = 0; j < e->n; j++)
+            if (c->a[j] && qd_has(c->a[j], t))
+                return true;
+    }
+    return false;
+}
+
 /* h = sum q' dL/dq' - L, T, the canonical pieces and what the system is. */
 static qd_status analyse(qd_sim *s) {
     qd_ctx *ctx = s->ctx;
@@ -190,7 +207,8 @@ static qd_status analyse(qd_sim *s) {
     s->h_expr = qd_simplify(ctx, h);
     s->has_T = e->T2 != NULL;
     s->T_expr = s->has_T ? qd_add(ctx, qd_add(ctx, e->T2, e->T1), e->T0) : qd_int(ctx, 0);
-    s->conservative = !qd_has(L, t) && !forces && !(D && !qd_is_zero(D)) && s->nuin == 0;
+    s->conservative = !qd_has(L, t) && !forces && !(D && !qd_is_zero(D)) && s->nuin == 0 &&
+                      !moving_constraint(e, t);
     qd__free(zeros);
     return qd_ctx_status(ctx) == QD_OK && s->h_expr ? QD_OK : qd_ctx_status(ctx);
 }

@@ -24,7 +24,10 @@
 - a path on a sphere written as a constraint, (1, 0, 0) to (0, 1, 0) in
   time 1, with no --guess: the great-circle quarter, v0 = (0, pi/2, 0),
   S = (pi/2)^2/2; --all also finds the way round the other side, 3 pi/2,
-  S = (3 pi/2)^2/2, with its kinetic focus at the antipode, t = 2/3.
+  S = (3 pi/2)^2/2, with its kinetic focus at the antipode, t = 2/3; at
+  the energy 1/2 (speed 1) the arcs pi/2, 3 pi/2 and 5 pi/2, time = arc =
+  A, without hints, a note that more may exist, and --guess "y'=-1" the
+  way round.
 - impulse: a particle bouncing on the floor beside a second particle is no
   collision of the two (the floor's impulse is external: the total momentum
   changes), so no centre-of-mass section; a head-on collision keeps it.
@@ -33,10 +36,15 @@
   the velocities after x' = 1, y' = 0, th' = 0 and T = m/2; ends moving
   apart (1, 0) and (2, 0) are inconsistent and refused.
 
+- simulate on a bead on a turning wire written as th = omega t: the summary
+  says "energy change" (the wire does work; "energy error" read like the
+  integrator's fault), the reduced Jacobi integral m/2 (r'^2 - w^2 r^2) kept.
+
 Prints "N passed, N failed"; exit 1 on failure."""
 import argparse
 import json
 import math
+import re
 import subprocess
 import sys
 import tempfile
@@ -315,6 +323,33 @@ def paths(qdot, tmp):
     check('sphere: the other way round', len(back) == 1 and len(back[0]['kinetic_foci']) == 1 and
           close(back[0]['kinetic_foci'][0], 2 / 3, 1e-6), [p['action'] for p in d['paths']])
 
+    # the same sphere at the energy E = 1/2 (speed 1; Maupertuis, Desloge ch. 83): the
+    # geodesics from (1,0,0) to (0,1,0) are the great circle's arcs pi/2 + 2 pi k one way and
+    # 3 pi/2 + 2 pi k the other, time = arc, A = integral p.dq = v^2 T = T.  --all found only
+    # pi/2 (issue 33: every start's time was 1-3 chord times, none near the way round, even
+    # from --guess "y'=-1"); now each start aims at its motion's passes near the end, and the
+    # text says that more may exist
+    rc, out, err = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0', '--to', 'x=0, y=1, z=0',
+                       '--energy', '1/2', '--all')
+    check('sphere at E: the note', rc == 0 and 'more stationary paths may exist' in out and
+          '--segments N' in out, out[:400] + err)
+    times = [float(t) for t in re.findall(r'^  time: (\S+)$', out, re.M)]
+    least = [float(a) for a in re.findall(r'^  least action \(Maupertuis, integral of p.dq\): (\S+)$',
+                                          out, re.M)]
+    check('sphere at E: A = T', len(least) == len(times) and
+          all(close(a, t, 1e-8) for a, t in zip(least, times)), (least, times))
+    for t in times:
+        k = (t - math.pi / 2) / math.pi  # pi/2 + k pi, k = 0, 1, 2, ...
+        check('sphere at E: arc pi/2 + k pi', abs(k - round(k)) < 1e-7, t)
+    arcs = sorted(times)
+    check('sphere at E: pi/2, 3 pi/2 and 5 pi/2 found', len(arcs) >= 3 and
+          all(close(a, (2 * k + 1) * math.pi / 2, 1e-8) for k, a in enumerate(arcs[:3])), arcs)
+    rc, out, err = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0', '--to', 'x=0, y=1, z=0',
+                       '--energy', '1/2', '--guess', "y'=-1", '--format', 'json')
+    d = json.loads(out) if rc == 0 else {'paths': []}
+    check('sphere at E: --guess the way round', len(d['paths']) == 1 and
+          close(d['paths'][0]['time'], 1.5 * math.pi, 1e-8), out[:300] + err)
+
 
 FLOOR = """coordinates x1, y1, x2
 parameters m1 = 1, m2 = 3
@@ -323,6 +358,29 @@ particle m2 at (x2, 5)
 impact constraint floor: y1 = 0 restitution 1/2
 initial x1 = 0, y1 = 0, x2 = 3, x1' = 1, y1' = -2, x2' = 0
 """
+
+
+WIRE = """coordinates r, th
+parameters m = 1.3, omega = 0.7
+particle m at r*(cos(th), sin(th))
+constraint wire: th = omega*t
+initial r = 1, th = 0, r' = 0.2, th' = omega
+"""
+
+
+def moving_constraint(qdot, tmp):
+    """A bead on a straight wire turning at omega, the wire written as the constraint
+    th = omega t (Goldstein sec. 1.6 example 3, seed 002): the wire does work, T + V is not
+    conserved (the summary called its change an energy "error" of the integrator), while
+    the Jacobi integral of the reduced motion, m/2 (r'^2 - omega^2 r^2), is."""
+    f = model(tmp, 'wire.qd', WIRE)
+    rc, out, err = run(qdot, 'simulate', f, '--t-end', '2', '--dt', '0.1', '--rtol', '1e-12')
+    check('wire: an energy change, not an error', rc == 0 and 'energy change' in err and
+          'moving constraint' in err, err)
+    rows = [l.split(',') for l in out.strip().splitlines()[1:]]
+    h = [1.3 / 2 * (float(r[3]) ** 2 - 0.49 * float(r[1]) ** 2) for r in rows]
+    check('wire: the Jacobi integral kept', len(h) > 10 and max(abs(x - h[0]) for x in h) < 1e-10, h[:3])
+    check('wire: T + V changed', abs(float(rows[-1][5]) - float(rows[0][5])) > 0.1, rows[-1])
 
 
 def impulses(qdot, tmp):
@@ -380,6 +438,7 @@ def main():
         paths(qdot, tmp)
         impulses(qdot, tmp)
         redundant(qdot, tmp)
+        moving_constraint(qdot, tmp)
     print('%d passed, %d failed' % (results['passed'], results['failed']))
     return 1 if results['failed'] else 0
 

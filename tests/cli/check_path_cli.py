@@ -19,7 +19,7 @@ Hamilton's principle and Maupertuis'; Byerly ch. IV; seed-desloge-D.md):
   pi sqrt(l/g) and no minimum past it, a minimum before it;
 - errors: an end off the rod of examples/pendulum_cartesian.qd (exit 1, the
   constraint and the residual named); at fixed energy an end beyond the
-  turning point (exit 1, "smallest residual"); bad options (exit 2);
+  turning point (exit 1, "out of reach"); bad options (exit 2);
 - isoperimetric (Desloge vol. 2 App. 32 Thm 5, seed-desloge-D.md C15, P19):
   examples/catenary.qd from (0,0) to (2,1) with l = 3 (and --set w=2, l=4):
   y = c + a cosh((x - x0)/a) with sqrt(l^2 - h^2) = 2 a sinh(d/(2a)) (a by
@@ -180,7 +180,8 @@ def errors(qdot):
     # from (0,0) at E = m g y_max with y_max = 1 the point (0, 3) is out of reach
     rc, out, err = run(qdot, 'path', proj, '--from', 'x=0, y=0', '--to', 'x=0, y=3',
                        '--energy', '19.62')
-    check('beyond reach exit 1', rc == 1 and 'smallest residual' in err, (rc, err))
+    # said before any search: V = m g y = 58.86 at y = 3, the energy at rest there, exceeds E
+    check('beyond reach exit 1', rc == 1 and 'out of reach' in err and '58.86' in err, (rc, err))
     for bad in (['--from', 'x=0, y=0, t=0'],
                 ['--from', 'x=0, y=0, t=0', '--to', 'x=1, y=0'],
                 ['--from', 'x=0, y=0, t=1', '--to', 'x=1, y=0, t=0'],
