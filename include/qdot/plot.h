@@ -126,6 +126,11 @@ QD_API qd_status qd_plot_set_dpi(qd_plot *p, double dpi);
 /* dpi is a resolution qd_plot_set_dpi takes; QD_ERR_ARG (field "dpi"). */
 QD_API qd_status qd_plot_dpi_check(qd_ctx *ctx, double dpi);
 
+/* The radius of QD_PLOT_POINTS' dots in the layout's pixels, 0.2 to 20
+ * (0, the default: by their number, as there).  QD_ERR_ARG (field
+ * "point_size") for others. */
+QD_API qd_status qd_plot_set_point_size(qd_plot *p, double radius);
+
 /* The picture's size, as qd_plot_new takes it (0, 0: the default), before
  * the layout. */
 QD_API qd_status qd_plot_set_size(qd_plot *p, int width, int height);
@@ -241,6 +246,16 @@ typedef struct qd_plot_run_opts {
     int width, height;  /* 0: 800 x 500, or 800 wide and 280 a panel (+ 40) when stacked */
     double dpi;         /* 0: 96 (qd_plot_set_dpi) */
     bool points;        /* dots (a Poincare section), else lines */
+    double point_size;  /* the dots' radius in pixels (qd_plot_set_point_size); 0: by their
+                         * number */
+    /* Orbits (qdot poincare with several --initial): norbits > 1 says the
+     * rows are norbits orbits one after another, orbit k's orbit_rows[k]
+     * of them (summing to nrows); each series is then drawn once an
+     * orbit, in the palette's k-th colour, labelled orbit_labels[k] in the
+     * legend ("orbit K" where orbit_labels or its entry is NULL). */
+    size_t norbits;
+    const size_t *orbit_rows;
+    const char *const *orbit_labels;
 } qd_plot_run_opts;
 
 /* The options of o that are given, applied to a plot made elsewhere (the
@@ -251,7 +266,8 @@ QD_API qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o);
 
 /* A plot of the columns pk picks of rows (nrows x ncols, names as for
  * qd_plot_pick_columns), a panel per group, stacked; NULL on failure (no
- * rows, the plot's errors), the reason in ctx.  Write it with
+ * rows, orbits whose rows do not sum to nrows, the plot's errors), the
+ * reason in ctx.  Write it with
  * qd_plot_write; qd_plot_free. */
 QD_API qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *const *names,
                             const double *rows, size_t nrows, size_t ncols,

@@ -2433,6 +2433,46 @@ static void null_lyapunov(void **state)
     /* opts NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_poincare_orbits_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_check(NULL, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_check(F.ctx, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_check(F.ctx, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_poincare_orbits_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_run(NULL, NULL, NULL, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_run(F.ctx, NULL, NULL, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_run(F.ctx, NULL, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_poincare_csv */
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_csv(1, NULL, F.d, 1, 1, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_csv(1, (const char * const *)F.names, F.d, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_poincare_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, "q", "q", &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, NULL, "q", &F.buf));
+    reset(&F);
+    /* t_end_name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, "q", NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, "q", "q", NULL));
+    reset(&F);
     /* ---- qd_lyap_setup_run */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(NULL, NULL, F.model, NULL, NULL, NULL));
@@ -3954,6 +3994,10 @@ static void null_plot(void **state)
     /* ---- qd_plot_dpi_check */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_dpi_check(NULL, 1));
+    reset(&F);
+    /* ---- qd_plot_set_point_size */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_point_size(NULL, 1));
     reset(&F);
     /* ---- qd_plot_set_size */
     /* p NULL */
@@ -5624,6 +5668,16 @@ static void null_simsetup(void **state)
     /* text NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_initial(NULL, NULL));
     reset(&F);
+    /* ---- qd_sim_setup_restart */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_restart(NULL, "q", (qd_sim_opts *)(void *)F.blob));
+    reset(&F);
+    /* initial NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_restart(NULL, NULL, (qd_sim_opts *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_restart(NULL, "q", NULL));
+    reset(&F);
     /* ---- qd_sim_setup_read */
     /* s NULL */
     assert_null(qd_sim_setup_read(NULL, "q", 1, 1));
@@ -6733,6 +6787,28 @@ static void null_symmetry(void **state)
     /* ---- qd_cyclic_json_modes */
     /* j NULL */
     qd_cyclic_json_modes(NULL, NULL);
+    reset(&F);
+    /* ---- qd_symmetry_modes_plot */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* res NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* title NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, NULL));
     reset(&F);
     teardown(&F);
 }
