@@ -182,6 +182,12 @@ QD_API qd_status qd_plot_add_map(qd_plot *p, const char *label, size_t nx, size_
  * is drawn in the colour of 0.5. */
 QD_API unsigned qd_plot_map_color(double f);
 
+/* Panel k's axis labels and its map's colour-bar label, as given (before
+ * they are drawn as mathematics), "" for none; the strings are the plot's.
+ * false for no such panel. */
+QD_API bool qd_plot_labels(const qd_plot *p, size_t panel, const char **xlabel,
+                           const char **ylabel, const char **bar);
+
 /* Panel k's map's range of values (false without a map, or every value NaN). */
 QD_API bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, double *zmax);
 

@@ -4066,6 +4066,19 @@ static void null_plot(void **state)
     reset(&F);
     /* ---- qd_plot_map_color */
     /* no pointer argument */
+    /* ---- qd_plot_labels */
+    /* p NULL */
+    assert_true(qd_plot_labels(NULL, 1, (const char * *)F.names, (const char * *)F.names, (const char * *)F.names) == 0);
+    reset(&F);
+    /* xlabel NULL */
+    assert_true(qd_plot_labels(F.plot, 1, NULL, (const char * *)F.names, (const char * *)F.names) == 0);
+    reset(&F);
+    /* ylabel NULL */
+    assert_true(qd_plot_labels(F.plot, 1, (const char * *)F.names, NULL, (const char * *)F.names) == 0);
+    reset(&F);
+    /* bar NULL */
+    assert_true(qd_plot_labels(F.plot, 1, (const char * *)F.names, (const char * *)F.names, NULL) == 0);
+    reset(&F);
     /* ---- qd_plot_map_range */
     /* p NULL */
     assert_true(qd_plot_map_range(NULL, 1, F.d, F.d) == 0);
