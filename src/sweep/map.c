@@ -57,7 +57,7 @@ qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, size_t *co
  * energy's unit is the model's, which it does not state: NULL. */
 static const char *column_unit(const qd_sweep *w, const char *name) {
     static const char *const read[] = {"final_", "event_", "max:", "min:"};
-    if (!strncmp(name, "lyapunov", 8) && !strstr(name, "error"))
+    if (!strncmp(name, "lyapunov", 8)) /* an exponent, or its error */
         return "1/s";
     if (!strcmp(name, "event_t") || !strncmp(name, "escape:", 7))
         return "s";

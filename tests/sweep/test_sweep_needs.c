@@ -235,7 +235,7 @@ static void test_write(void **state) {
 /* A pendulum's map over (theta, theta'): theta is an angle (the bob's
  * position and V repeat in 2 pi), so its axis says rad, its velocity's
  * rad/s, and a measure reading theta' (max:theta') has theta''s unit; a
- * Lyapunov exponent is a rate, 1/s. */
+ * Lyapunov exponent is a rate, 1/s, and so is its error. */
 static void test_map_units(void **state) {
     (void)state;
     sim_fix *f = sf_load("coordinates theta\nparameters m = 1, l = 1, g = 9.81\n"
@@ -249,8 +249,9 @@ static void test_map_units(void **state) {
     assert_true(qd_sweep_ncols(w) <= 8);
     static const char *const want[][2] = {{"max:theta'", "max:theta' (rad/s)"},
                                           {"final_theta", "final_theta (rad)"},
-                                          {"lyapunov", "lyapunov (1/s)"}};
-    for (size_t k = 0; k < 3; k++) {
+                                          {"lyapunov", "lyapunov (1/s)"},
+                                          {"lyapunov_error", "lyapunov_error (1/s)"}};
+    for (size_t k = 0; k < 4; k++) {
         size_t col;
         assert_int_equal(qd_sweep_map_column(w, want[k][0], &col), QD_OK);
         qd_plot *p = qd_plot_new(f->ctx, 0, 0);
