@@ -99,7 +99,9 @@ typedef enum qd_plot_mark {
     QD_PLOT_SPRING, /* a zigzag from (x0, y0) to (x1, y1), grey */
     QD_PLOT_ROD,    /* a straight bar from (x0, y0) to (x1, y1), dark grey */
     QD_PLOT_ARROW,  /* an arrow from (x0, y0), its head at (x1, y1), red */
-    QD_PLOT_PIVOT   /* a fixed support at (x0, y0): a hatched triangle (x1, y1 unused) */
+    QD_PLOT_PIVOT,  /* a fixed support at (x0, y0): a hatched triangle (x1, y1 unused) */
+    QD_PLOT_WALL    /* a wall through (x0, y0) facing (x1, y1) (where what it holds is): a
+                     * line 26 px long across that direction, hatched on the far side */
 } qd_plot_mark;
 
 /* One mark of kind with finite coordinates; QD_ERR_ARG for others. */

@@ -15,7 +15,7 @@ qd_status qd_plot_add_mark(qd_plot *p, qd_plot_mark kind, double x0, double y0, 
     QD_ARGS(QD_ERR_ARG, p);
     if (kind == QD_PLOT_PIVOT)
         x1 = x0, y1 = y0;
-    if ((unsigned)kind > QD_PLOT_PIVOT || !isfinite(x0) || !isfinite(y0) || !isfinite(x1) ||
+    if ((unsigned)kind > QD_PLOT_WALL || !isfinite(x0) || !isfinite(y0) || !isfinite(x1) ||
         !isfinite(y1)) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot's mark needs a known kind and finite points");
         return QD_ERR_ARG;
