@@ -160,7 +160,6 @@ int cli_cmd_poincare(int argc, char **argv) {
         bool interrupted = cli_interrupted();
         cli_interrupt_end();
         cli_progress_end(&o.bar);
-        qd_buf_free(&o.b);
         int wrc = cli_out_close(o.f, f ? p.a.out : "standard output", o.werr);
         f = NULL; /* closed */
         if (wrc != QD_EXIT_OK) {
@@ -168,15 +167,13 @@ int cli_cmd_poincare(int argc, char **argv) {
         } else if (s != QD_OK) {
             rc = cli_sim_fail(&c, s);
         } else if (interrupted) {
-            fprintf(stderr, "qdot: poincare: interrupted at t = %.17g after %zu crossings%s; the "
-                            "rows written are whole\n", r[at].last_t, r[at].got,
-                    orb.n > 1 ? " of the orbit" : "");
+            fprintf(stderr, "qdot: poincare: interrupted at t = %.17g after %zu crossings (orbit "
+                            "%zu); the rows written are whole\n", r[at].last_t, r[at].got, at + 1);
             rc = CLI_EXIT_INTERRUPTED;
         } else {
-            qd_buf b = QD_BUF_INIT;
-            qd_poincare_print(r, orb.n, c.opts.method, p.n, "qdot: poincare: ", "--t-end", &b);
-            fputs(qd_buf_str(&b), stderr);
-            qd_buf_free(&b);
+            qd_buf_clear(&o.b);
+            qd_poincare_print(r, orb.n, c.opts.method, p.n, "qdot: poincare: ", "--t-end", &o.b);
+            fputs(qd_buf_str(&o.b), stderr);
             p.a.plot.norbits = orb.n;
             p.a.plot.orbit_rows = o.rows;
             p.a.plot.orbit_labels = orb.initial;
@@ -184,6 +181,7 @@ int cli_cmd_poincare(int argc, char **argv) {
                 rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true,
                                         NULL);
         }
+        qd_buf_free(&o.b);
     } else if (rc == QD_EXIT_OK) {
         rc = QD_EXIT_FAIL;
     }

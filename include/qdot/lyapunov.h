@@ -309,7 +309,7 @@ QD_API qd_status qd_poincare_orbits_check(qd_ctx *ctx, struct qd_sim_setup *set,
  * another, the rows to o->sink, orbit k's result into r[k] (orbits->n of
  * them).  Every initial state is read first (qd_poincare_orbits_check).  o->progress'
  * done is over all orbits.  When the sink says stop, the orbits after it
- * are not run (their r[k].got 0).  On failure *at is the orbit the error
+ * are not run (their r[k].got 0) and *at is the orbit it stopped in.  On failure *at is the orbit the error
  * concerns (an initial state's error is located in orbits->initial[*at]),
  * the orbits before it done.  QD_ERR_ARG for want 0 or a NULL sink; else
  * the errors of qd_poincare_orbits_check and qd_poincare_run. */

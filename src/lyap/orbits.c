@@ -66,9 +66,9 @@ qd_status qd_poincare_orbits_run(qd_ctx *ctx, qd_sim_setup *set, qd_sim_opts *op
                              .progress = on_progress, .data = &w};
     for (size_t k = 0; k < orbits->n && st == QD_OK; k++) {
         r[k] = (qd_poincare_result){.last_t = opts->t0};
-        *at = w.k = k;
         if (w.stopped)
             continue; /* not run: r[k] counts no crossing */
+        *at = w.k = k; /* the orbit run (the one stopped in, after a stop) */
         st = qd_sim_setup_restart(set, orbits->initial[k], opts);
         if (st == QD_OK && orbits->start)
             orbits->start(o->data, k);

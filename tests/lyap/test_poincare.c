@@ -171,7 +171,7 @@ static void test_orbits(void **state) {
     po.data = &s3;
     orb = (qd_poincare_orbits){2, init, orbit_start};
     assert_int_equal(qd_poincare_orbits_run(ctx, set, &o, &po, &orb, r, &at), QD_OK);
-    assert_true(r[0].got == 5 && r[1].got == 0 && s3.rows[1] == 0);
+    assert_true(r[0].got == 5 && r[1].got == 0 && s3.rows[1] == 0 && at == 0);
     qd_buf b = QD_BUF_INIT;
     assert_int_equal(qd_poincare_print(r, 2, o.method, 5, "P: ", "t_end", &b), QD_OK);
     assert_non_null(strstr(qd_buf_str(&b), "P: orbit 1: dop853, 5 crossings by t = "));
