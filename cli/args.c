@@ -258,9 +258,11 @@ void cli_usage(const cli_spec *spec, FILE *out) {
     fputs("\noptions:\n", out);
     for (const cli_opt *o = spec->opts; o && o->name; o++)
         usage_line(out, o);
+    size_t base;
     for (const cli_group *g = spec->groups; g && g->opts; g++)
         for (const cli_opt *o = g->opts; o->name; o++)
-            usage_line(out, o);
+            if (lookup(spec, o->name, strlen(o->name), &base) == o) /* not the command's own */
+                usage_line(out, o);
     fprintf(out, "  %-26s %s\n", "-h, --help", "this help");
 }
 

@@ -2,9 +2,10 @@
  * cli/cmd_poincare.c - `qdot poincare FILE --section "q1 = 0, q1' > 0"
  * --crossings N`: a Poincare surface of section.  The motion is integrated
  * (qdot/sim.h, dop853 at --rtol by default) and the state at each of the
- * first N crossings of the section (qd_poincare_run), located to round-off
- * by the integrator's event machinery, is printed as CSV or as JSON of
- * simulate's shape (qd_poincare_json_begin, _end).
+ * first N crossings of the section (qd_poincare_orbits_run), located to
+ * round-off by the integrator's event machinery, is printed as CSV (for
+ * each --initial an orbit, its rows after an orbit column when several) or,
+ * for one orbit, as JSON of simulate's shape (qd_poincare_json_begin, _end).
  */
 #include "cli.h"
 
@@ -28,6 +29,7 @@ typedef struct pc_args {
     cli_sim_args a;
     const char *section;
     size_t n;
+    cli_list initial; /* the orbits' initial states (the group's --initial, given again) */
     const char *format;
 } pc_args;
 
@@ -37,6 +39,10 @@ static const cli_opt opts[] = {
     {"--section", NULL, CLI_TEXT, offsetof(pc_args, section), "\"EXPR = EXPR[, EXPR > EXPR]\"",
      "the surface of section: a crossing and its conditions", NULL, NULL},
     {"--crossings", NULL, CLI_COUNT, offsetof(pc_args, n), "N", "the crossings to find", NULL, NULL},
+    {"--initial", NULL, CLI_LIST, offsetof(pc_args, initial), "STATE", "an orbit's initial "
+     "values \"q=VALUE, q'=VALUE\"; again for more orbits (each its colour in --plot)", NULL, NULL},
+    CLI_OPT_IN(pc_args, "--point-size", CLI_RANGE, a.plot.point_size, "PX", "--plot's dots' "
+               "radius in pixels (0.2 to 20; default by their number)", 0.2, 20),
     CLI_OPT_FORMATS(pc_args, format, formats),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
@@ -63,7 +69,13 @@ typedef struct pc_out {
     bool header;
     cli_progress bar;
     int werr; /* a row could not be written (its errno): the run was stopped */
+    size_t orbit, norbits, rows[QD_POINCARE_MAX_ORBITS]; /* the crossings kept of each */
+    qd_buf b;
 } pc_out;
+
+static void start(void *data, size_t k) {
+    ((pc_out *)data)->orbit = k;
+}
 
 static void progress(void *data, double done, double t) {
     cli_progress_update(&((pc_out *)data)->bar, done, t);
@@ -72,26 +84,23 @@ static void progress(void *data, double done, double t) {
 /* Every row of the run (qd_poincare_run): the crossings written as CSV. */
 static int sink(void *data, const double *row, bool crossing) {
     pc_out *o = data;
-    if (o->plot && crossing)
+    if (o->plot && crossing) {
         cli_plot_keep(o->plot, row);
+        o->rows[o->orbit]++;
+    }
     if (o->json && crossing)
         qd_json_vector(o->json, NULL, o->ncols, row);
     if (o->json) /* a failure is said at the end */
         return cli_interrupted();
-    for (size_t i = 0; !o->header && i < o->ncols; i++)
-        fprintf(o->f, "%s%s", i ? "," : "", o->names[i]);
+    qd_buf_clear(&o->b); /* the header once the run is under way, then each crossing */
     if (!o->header)
-        fputc('\n', o->f);
+        qd_poincare_csv(o->ncols, o->names, NULL, o->norbits, 0, &o->b);
     o->header = true;
+    if (crossing)
+        qd_poincare_csv(o->ncols, o->names, row, o->norbits, o->orbit, &o->b);
+    fputs(qd_buf_str(&o->b), o->f);
     if (!crossing) /* samples, and the rows of the model's impacts */
         return cli_interrupted();
-    char num[QD_DOUBLE_MAX];
-    for (size_t i = 0; i < o->ncols; i++) {
-        if (i)
-            fputc(',', o->f);
-        fwrite(num, 1, qd_double_format(num, row[i]), o->f);
-    }
-    fputc('\n', o->f);
     if (ferror(o->f)) { /* the data is lost: stop the run */
         o->werr = errno;
         return 1;
@@ -124,6 +133,10 @@ int cli_cmd_poincare(int argc, char **argv) {
         rc = cli_usage_error("poincare takes its crossings from --section: %s is simulate's",
                              p.a.output ? "--output" : "--event or --stop-at");
     }
+    bool json = p.format && !strcmp(p.format, "json");
+    if (rc == QD_EXIT_OK && json && p.initial.n > 1)
+        rc = cli_usage_error("poincare --format json takes one orbit (one --initial); several "
+                             "orbits are CSV, with an orbit column");
     if (rc == QD_EXIT_OK)
         rc = cli_plot_check(&p.a.plot, "poincare");
     if (rc != QD_EXIT_OK)
@@ -133,6 +146,12 @@ int cli_cmd_poincare(int argc, char **argv) {
     p.a.section = p.section;
     cli_sim c = {0};
     rc = cli_sim_setup(&c, &p.a);
+    /* the orbits: each --initial, or the model's own initial state */
+    qd_poincare_orbits orb = {p.initial.n ? p.initial.n : 1,
+                              p.initial.n ? p.initial.items : (const char *[]){NULL}, start};
+    size_t at = 0;
+    if (rc == QD_EXIT_OK && qd_poincare_orbits_check(c.ctx, c.set, &c.opts, &orb, &at) != QD_OK)
+        rc = cli_sim_fail_in(&c, "--initial", orb.n > at ? orb.initial[at] : NULL);
     /* a fixed-step method given --dt: rows only at crossings, so any method works */
     size_t ncols = rc == QD_EXIT_OK ? qd_sim_columns(c.s, c.opts.method, NULL, 0) : 0;
     const char **names = rc == QD_EXIT_OK ? malloc((ncols + 1) * sizeof *names) : NULL;
@@ -143,22 +162,22 @@ int cli_cmd_poincare(int argc, char **argv) {
     cli_plot_pick pick; /* --plot: its columns named before the run */
     if (rc == QD_EXIT_OK && names && p.a.plot.file)
         rc = pc_plot_pick(&c, &p, names, ncols, &pick);
-    bool json = p.format && !strcmp(p.format, "json");
     qd_buf jb = QD_BUF_INIT;
     qd_json j;
     qd_json_init(&j, &jb);
     if (rc == QD_EXIT_OK && names) {
         qd_sim_columns(c.s, c.opts.method, names, ncols);
         pc_out o = {.f = f ? f : stdout, .ncols = ncols, .names = names,
-                    .plot = p.a.plot.file ? &rows : NULL, .json = json && !f ? &j : NULL};
+                    .plot = p.a.plot.file ? &rows : NULL, .json = json && !f ? &j : NULL,
+                    .norbits = orb.n};
         if (json)
             qd_poincare_json_begin(&j, c.mf.path, ncols, names, o.json);
         qd_poincare_opts po = {.event = 0, .want = p.n, .sink = sink, .progress = progress,
                                .data = &o};
-        qd_poincare_result r;
+        qd_poincare_result r[QD_POINCARE_MAX_ORBITS];
         cli_progress_start(&o.bar, "poincare");
         cli_interrupt_begin();
-        qd_status s = qd_poincare_run(c.s, &c.opts, &po, &r);
+        qd_status s = qd_poincare_orbits_run(c.ctx, c.set, &c.opts, &po, &orb, r, &at);
         bool interrupted = cli_interrupted();
         cli_interrupt_end();
         double wall = cli_progress_end(&o.bar);
@@ -169,18 +188,17 @@ int cli_cmd_poincare(int argc, char **argv) {
         } else if (s != QD_OK) {
             rc = cli_sim_fail(&c, s);
         } else if (interrupted) {
-            fprintf(stderr, "qdot: poincare: interrupted at t = %.17g after %zu crossings; the "
-                            "rows written are whole\n", r.last_t, r.got);
+            fprintf(stderr, "qdot: poincare: interrupted at t = %.17g after %zu crossings (orbit "
+                            "%zu); the rows written are whole\n", r[at].last_t, r[at].got, at + 1);
             rc = CLI_EXIT_INTERRUPTED;
         } else {
-            qd_buf tb = QD_BUF_INIT;
-            qd_poincare_summary_print(&r, c.opts.method, "qdot: poincare: ", &tb);
-            fputs(qd_buf_str(&tb), stderr);
-            qd_buf_free(&tb);
-            if (r.got < p.n)
-                fprintf(stderr, "qdot: poincare: note: only %zu of %zu crossings before "
-                                "t = %g (raise --t-end)\n", r.got, p.n, r.stats.t);
-            if (json && qd_poincare_json_end(&j, c.s, &c.opts, &po, &r, wall, o.json) != QD_OK) {
+            qd_buf_clear(&o.b);
+            qd_poincare_print(r, orb.n, c.opts.method, p.n, "qdot: poincare: ", "--t-end", &o.b);
+            fputs(qd_buf_str(&o.b), stderr);
+            p.a.plot.norbits = orb.n;
+            p.a.plot.orbit_rows = o.rows;
+            p.a.plot.orbit_labels = orb.initial;
+            if (json && qd_poincare_json_end(&j, c.s, &c.opts, &po, r, wall, o.json) != QD_OK) {
                 cli_diag_error("cannot write the JSON: %s", qd_json_why(&j));
                 rc = QD_EXIT_FAIL;
             } else if (json) {
@@ -190,6 +208,7 @@ int cli_cmd_poincare(int argc, char **argv) {
                 rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true,
                                         NULL);
         }
+        qd_buf_free(&o.b);
     } else if (rc == QD_EXIT_OK) {
         rc = QD_EXIT_FAIL;
     }

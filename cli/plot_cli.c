@@ -28,13 +28,15 @@ qd_plot_run_opts cli_plot_opts(const cli_plot_args *a, const char *title) {
     const char *slash = title ? strrchr(title, '/') : NULL;
     return (qd_plot_run_opts){.title = a->title ? a->title : slash ? slash + 1 : title,
                               .xlabel = a->xlabel, .ylabel = a->ylabel, .width = a->width,
-                              .height = a->height, .dpi = a->dpi};
+                              .height = a->height, .dpi = a->dpi, .point_size = a->point_size,
+                              .norbits = a->norbits, .orbit_rows = a->orbit_rows,
+                              .orbit_labels = a->orbit_labels};
 }
 
 int cli_plot_check(cli_plot_args *a, const char *cmd) {
     const char *shape = a->ycols ? "--plot-y" : a->phase ? "--phase" : a->title ? "--title"
                         : a->xlabel ? "--xlabel" : a->ylabel ? "--ylabel" : a->size ? "--size"
-                        : a->dpi ? "--dpi" : NULL;
+                        : a->dpi ? "--dpi" : a->point_size ? "--point-size" : NULL;
     if (!a->file && shape)
         return cli_usage_error("%s says how to plot: give the file with --plot FILE.png|.svg|.pdf",
                                shape);

@@ -23,6 +23,10 @@ typedef struct cli_plot_args {
     const char *size;   /* --size WxH in pixels, read by cli_plot_check */
     int width, height;  /* from --size, or 0: the default */
     double dpi;         /* --dpi: a PNG's resolution (0: 96) */
+    double point_size;  /* poincare --point-size (0: by the dots' number) */
+    size_t norbits;     /* set by the command: the orbits (qd_plot_run_opts) */
+    const size_t *orbit_rows;
+    const char *const *orbit_labels;
 } cli_plot_args;
 
 /* The picture's options of every command that draws (--title, --xlabel,

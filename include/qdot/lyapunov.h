@@ -304,6 +304,65 @@ QD_API qd_status qd_poincare_json_end(qd_json *j, const qd_sim *s, const qd_sim_
                                       const qd_poincare_opts *o, const qd_poincare_result *r,
                                       double wall, bool rows);
 
+/* ---- several orbits through one section (src/lyap/orbits.c) ------------ */
+
+#define QD_POINCARE_MAX_ORBITS 16
+
+typedef struct qd_poincare_orbits {
+    size_t n;                   /* orbits, 1 .. QD_POINCARE_MAX_ORBITS */
+    const char *const *initial; /* n initial states, each "q=VALUE, q'=VALUE, ..." onto the
+                                 * model's own (qd_sim_setup_initial); an entry NULL: the
+                                 * model's own */
+    /* May be NULL: called with the sink's data before orbit k's first row
+     * (k from 0). */
+    void (*start)(void *data, size_t k);
+} qd_poincare_orbits;
+
+struct qd_sim_setup;
+/* Every initial state of orbits read (qd_sim_setup_restart on set, opts
+ * from qd_sim_setup_options; their values are the last orbit's after), so
+ * a mistake is told before any run.  QD_ERR_ARG for 0 or more than
+ * QD_POINCARE_MAX_ORBITS orbits; else qd_sim_setup_restart's errors, *at
+ * the orbit (its initial state's error located in orbits->initial[*at]). */
+QD_API qd_status qd_poincare_orbits_check(qd_ctx *ctx, struct qd_sim_setup *set,
+                                          qd_sim_opts *opts, const qd_poincare_orbits *orbits,
+                                          size_t *at);
+/* The orbits of orbits through one section: each from its initial state
+ * (qd_sim_setup_restart on set; opts from qd_sim_setup_options, its initial
+ * values replaced) run as qd_poincare_run runs it (o: the section's event,
+ * the crossings wanted of each orbit, the sink and progress), one after
+ * another, the rows to o->sink, orbit k's result into r[k] (orbits->n of
+ * them).  Every initial state is read first (qd_poincare_orbits_check).  o->progress'
+ * done is over all orbits.  When the sink says stop, the orbits after it
+ * are not run (their r[k].got 0) and *at is the orbit it stopped in.  On failure *at is the orbit the error
+ * concerns (an initial state's error is located in orbits->initial[*at]),
+ * the orbits before it done.  QD_ERR_ARG for want 0 or a NULL sink; else
+ * the errors of qd_poincare_orbits_check and qd_poincare_run. */
+QD_API qd_status qd_poincare_orbits_run(qd_ctx *ctx, struct qd_sim_setup *set,
+                                        qd_sim_opts *opts, const qd_poincare_opts *o,
+                                        const qd_poincare_orbits *orbits,
+                                        qd_poincare_result *r, size_t *at);
+
+/* A line of a section's CSV (qdot poincare) appended to out: row NULL,
+ * the header names[0, ncols) (names is needed either way); else row's ncols numbers (qd_buf_put_double:
+ * the fewest digits that read back).  With norbits > 1 an orbit column
+ * first: "orbit" in the header, orbit + 1 in a row.  QD_ERR_NOMEM when out
+ * ran out of memory. */
+QD_API qd_status qd_poincare_csv(size_t ncols, const char *const *names, const double *row,
+                                 size_t norbits, size_t orbit, qd_buf *out);
+
+/* The end of a section's run, a line an orbit appended to out, each
+ * starting with prefix ("qdot: poincare: "), "orbit K: " after it when
+ * norbits > 1: "dop853, 200 crossings by t = 1480.3: 9120 steps, 109450
+ * evaluations, 12 rejected; energy error 3.1e-12 over the steps and
+ * crossings" (the method, r[k]'s counts and its largest energy error),
+ * and a line "note: only N of want crossings before t = T (raise
+ * t_end_name)" for an orbit that found fewer.  QD_ERR_NOMEM when out ran
+ * out of memory. */
+QD_API qd_status qd_poincare_print(const qd_poincare_result *r, size_t norbits,
+                                   qd_sim_method method, size_t want, const char *prefix,
+                                   const char *t_end_name, qd_buf *out);
+
 /* ---- a run set up as qdot lyapunov takes it (src/lyap/setup.c) ---------- */
 
 /* The exponents of one run, with what the printers read of it. */
@@ -322,7 +381,6 @@ typedef struct qd_lyap_result {
  * model given by H, or in speeds) or "exponents" (nexp above 2n); else the
  * errors of qd_lyap_new and qd_lyap_run.  Free r with qd_lyap_result_free,
  * also after a failure. */
-struct qd_sim_setup;
 QD_API qd_status qd_lyap_setup_run(qd_ctx *ctx, const struct qd_sim_setup *set,
                                    const qd_model *m, const qd_sim_opts *opts,
                                    const qd_lyap_opts *lo, qd_lyap_result *r);
@@ -353,8 +411,9 @@ QD_API qd_status qd_flow_setup_run(qd_ctx *ctx, const struct qd_sim_setup *set,
  * documented at the function, for: qd_lyap_run (err); qd_lyap_run_stats
  * (err, stats); qd_flow_run (fo); qd_flow_print (prefix); qd_lyap_print,
  * qd_lyap_json (r->err); qd_lyap_setup_run (lo); lo->progress and lo->data;
- * qd_flow_setup_run (write, data); qd_poincare_run's
- * o->progress and o->data; qd_poincare_summary_print (prefix);
- * qd_poincare_json_begin (model; names when !rows). An array whose count is
- * 0 may be NULL. */
+ * qd_flow_setup_run (write, data); qd_poincare_run's and
+ * qd_poincare_orbits_run's o->progress and o->data; orbits->start and an
+ * entry of orbits->initial; qd_poincare_csv (row: the header);
+ * qd_poincare_summary_print (prefix); qd_poincare_json_begin (model; names
+ * when !rows). An array whose count is 0 may be NULL. */
 #endif

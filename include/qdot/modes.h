@@ -447,13 +447,22 @@ struct qd_plot;            /* qdot/plot.h */
 #define QD_MODES_PLOT_MAXPANELS 24  /* modes drawn as particles at most */
 
 #define QD_MODES_PLOT_MAXLINKS 256   /* springs and rods drawn at most */
+#define QD_MODES_PLOT_MAXWALLS 16    /* springs to walls drawn at most */
 
 /* What joins two particles in the picture (src/linear/modes_links.c): a
  * spring where V couples a coordinate that moves only particle a with one
  * that moves only b (K0's entry not 0: a distance term of V, such as
  * k/2 (|ra - rb| - L)^2); a rod where their distance is not 0 and no
  * coordinate changes it to first order (a pendulum's links); a to the
- * origin (b == np) is a rod of constant length from a pivot there. */
+ * origin (b == np) is a rod of constant length from a pivot there.  A
+ * spring to a wall (b > np: wall b - np - 1 of the picture's walls) where
+ * the configuration can be moved rigidly along an axis by each particle's
+ * own coordinates and K0 does not let it (K0 T != 0 on a's coordinate
+ * along the axis: something fixed holds a, such as k/2 x1^2 in V); the
+ * wall is drawn on a's side of the configuration's middle along the axis,
+ * the nearest two particles' distance from a (the configuration's size for
+ * one particle): where the wall is the model does not say, only that it is
+ * fixed. */
 typedef enum qd_modes_link { QD_MODES_SPRING, QD_MODES_ROD } qd_modes_link;
 typedef struct qd_modes_link_of {
     size_t a, b;            /* particles, b == np: the pivot at the origin */
@@ -472,6 +481,10 @@ typedef struct qd_modes_picture {
     size_t nlinks;      /* the springs and rods found (at most QD_MODES_PLOT_MAXLINKS) */
     qd_modes_link_of links[QD_MODES_PLOT_MAXLINKS];
     bool pivot;         /* a rod reaches the origin: a fixed support drawn there */
+    size_t nwalls;      /* the walls springs reach (at most QD_MODES_PLOT_MAXWALLS) */
+    double wall[3 * QD_MODES_PLOT_MAXWALLS];  /* wall w's point: x, y, z at 3w */
+    unsigned wall_axis[QD_MODES_PLOT_MAXWALLS]; /* its axis (0 x, 1 y, 2 z): the wall is
+                                                 * across it */
 } qd_modes_picture;
 
 /* The particles of m at the equilibrium and moved along each mode of res,

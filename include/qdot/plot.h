@@ -99,7 +99,9 @@ typedef enum qd_plot_mark {
     QD_PLOT_SPRING, /* a zigzag from (x0, y0) to (x1, y1), grey */
     QD_PLOT_ROD,    /* a straight bar from (x0, y0) to (x1, y1), dark grey */
     QD_PLOT_ARROW,  /* an arrow from (x0, y0), its head at (x1, y1), red */
-    QD_PLOT_PIVOT   /* a fixed support at (x0, y0): a hatched triangle (x1, y1 unused) */
+    QD_PLOT_PIVOT,  /* a fixed support at (x0, y0): a hatched triangle (x1, y1 unused) */
+    QD_PLOT_WALL    /* a wall through (x0, y0) facing (x1, y1) (where what it holds is): a
+                     * line 26 px long across that direction, hatched on the far side */
 } qd_plot_mark;
 
 /* One mark of kind with finite coordinates; QD_ERR_ARG for others. */
@@ -125,6 +127,11 @@ QD_API qd_status qd_plot_share_legend(qd_plot *p, bool shared);
 QD_API qd_status qd_plot_set_dpi(qd_plot *p, double dpi);
 /* dpi is a resolution qd_plot_set_dpi takes; QD_ERR_ARG (field "dpi"). */
 QD_API qd_status qd_plot_dpi_check(qd_ctx *ctx, double dpi);
+
+/* The radius of QD_PLOT_POINTS' dots in the layout's pixels, 0.2 to 20
+ * (0, the default: by their number, as there).  QD_ERR_ARG (field
+ * "point_size") for others. */
+QD_API qd_status qd_plot_set_point_size(qd_plot *p, double radius);
 
 /* The picture's size, as qd_plot_new takes it (0, 0: the default), before
  * the layout. */
@@ -176,6 +183,12 @@ QD_API qd_status qd_plot_add_map(qd_plot *p, const char *label, size_t nx, size_
  * viridis sampled at nine points and linearly interpolated.  A constant map
  * is drawn in the colour of 0.5. */
 QD_API unsigned qd_plot_map_color(double f);
+
+/* Panel k's axis labels and its map's colour-bar label, as given (before
+ * they are drawn as mathematics), "" for none; the strings are the plot's.
+ * false for no such panel. */
+QD_API bool qd_plot_labels(const qd_plot *p, size_t panel, const char **xlabel,
+                           const char **ylabel, const char **bar);
 
 /* Panel k's map's range of values (false without a map, or every value NaN). */
 QD_API bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, double *zmax);
@@ -241,6 +254,16 @@ typedef struct qd_plot_run_opts {
     int width, height;  /* 0: 800 x 500, or 800 wide and 280 a panel (+ 40) when stacked */
     double dpi;         /* 0: 96 (qd_plot_set_dpi) */
     bool points;        /* dots (a Poincare section), else lines */
+    double point_size;  /* the dots' radius in pixels (qd_plot_set_point_size); 0: by their
+                         * number */
+    /* Orbits (qdot poincare with several --initial): norbits > 1 says the
+     * rows are norbits orbits one after another, orbit k's orbit_rows[k]
+     * of them (summing to nrows); each series is then drawn once an
+     * orbit, in the palette's k-th colour, labelled orbit_labels[k] in the
+     * legend ("orbit K" where orbit_labels or its entry is NULL). */
+    size_t norbits;
+    const size_t *orbit_rows;
+    const char *const *orbit_labels;
 } qd_plot_run_opts;
 
 /* The options of o that are given, applied to a plot made elsewhere (the
@@ -251,7 +274,8 @@ QD_API qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o);
 
 /* A plot of the columns pk picks of rows (nrows x ncols, names as for
  * qd_plot_pick_columns), a panel per group, stacked; NULL on failure (no
- * rows, the plot's errors), the reason in ctx.  Write it with
+ * rows, orbits whose rows do not sum to nrows, the plot's errors), the
+ * reason in ctx.  Write it with
  * qd_plot_write; qd_plot_free. */
 QD_API qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *const *names,
                             const double *rows, size_t nrows, size_t ncols,

@@ -83,6 +83,18 @@ QD_API size_t qd_sim_setup_state(const qd_sim_setup *s, const qd_expr *const **s
  * QD_ERR_ARG located in text.  Once, before qd_sim_setup_options. */
 QD_API qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text);
 
+/* The run again from another initial state (several orbits through one
+ * section, qd_poincare_orbits_run): the model's own initial state (as
+ * qd_sim_setup_new made it, the earlier qd_sim_setup_initial undone), then
+ * initial onto it as qd_sim_setup_initial reads it (NULL: none), and out's
+ * t0 and initial values (q0, qd0, p0, u0) replaced; its other options (an
+ * earlier qd_sim_setup_options') stay, t_end included.  After
+ * qd_sim_setup_options; the values out points to change at the next
+ * restart.  Errors as qd_sim_setup_initial's (out untouched), and
+ * QD_ERR_ARG (field "t_end") when t_end is not after the new t0, or for
+ * an impact's gap negative at t0. */
+QD_API qd_status qd_sim_setup_restart(qd_sim_setup *s, const char *initial, qd_sim_opts *out);
+
 /* text[a, b) (surrounding blanks skipped) read in the model's names (see
  * above): the expression, or NULL with the error located in text. */
 QD_API const qd_expr *qd_sim_setup_read(qd_sim_setup *s, const char *text, size_t a, size_t b);

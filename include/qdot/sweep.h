@@ -176,9 +176,14 @@ QD_API qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, siz
 /* Add to p (its selected panel) column col of rows (the sweep's nruns x
  * ncols numbers, in run order, as qd_sweep_run fills them) as a colour map
  * over the grid's two axes (qd_plot_add_map): the first input across, the
- * second up, the axes labelled with their names, the colour bar with the
- * column's and the unit the measure fixes ("lyapunov (1/s)", "event_t
- * (s)", "poincare-count (crossings)").  Errors as qd_sweep_map_column's, or the plot's. */
+ * second up, the axes labelled with their names and units, the colour bar
+ * with the column's name and unit: an input's or a run column's unit as
+ * the model says it (qd_model_column_unit: "theta (rad)", "theta'
+ * (rad/s)"), a measure's of a column that of the column ("max:theta'
+ * (rad/s)", "final_theta (rad)", "event_theta (rad)"), or the one the
+ * measure fixes ("lyapunov (1/s)", "event_t (s)", "escape:x>1 (s)",
+ * "poincare-count (crossings)"); none where the model states none (a
+ * length, an energy).  Errors as qd_sweep_map_column's, or the plot's. */
 QD_API qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plot *p);
 
 /* qdot sweep --map FILE: before the runs, that path's format (a known

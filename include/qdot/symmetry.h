@@ -236,6 +236,20 @@ QD_API void qd_cyclic_json(qd_json *j, const qd_cyclic_modes *c);
  * "irrep" ("k=K"), "harmonic" and "multiplicity".  Nothing for an empty c. */
 QD_API void qd_cyclic_json_modes(qd_json *j, const qd_cyclic_modes *c);
 
+/* The mode picture (qd_modes_plot, qdot/modes.h) of s's modes, ordered
+ * and paired as its irreps are (s->omega2, s->shapes), each panel noting
+ * its mode's irrep ("A1", "E": qd_plot_set_note) when the picture has a
+ * panel a mode (particles drawn); s NULL, of order 1 or without modes of
+ * res's size (the cyclic fast path): res's modes, as qd_modes_plot draws
+ * them.  Arguments and errors as qd_modes_plot's; *out NULL after a
+ * failure. */
+struct qd_plot;
+QD_API qd_status qd_symmetry_modes_plot(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                        size_t nvals, const qd_expr *const *syms,
+                                        const double *vals, const qd_modes_result *res,
+                                        const qd_symmetry *s, const char *title,
+                                        struct qd_plot **out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -245,6 +259,6 @@ QD_API void qd_cyclic_json_modes(qd_json *j, const qd_cyclic_modes *c);
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_symmetry_from_ops (R); qd_group_characters
- * (R). An array whose
+ * (R); qd_symmetry_modes_plot (s, and what qd_modes_plot accepts). An array whose
  * count is 0 may be NULL. */
 #endif

@@ -86,48 +86,70 @@ def _time(value, what):
 def poincare(core, section, crossings, t_end, method, rtol, atol, dt, step, initial,
              max_steps, speeds):
     """Model.poincare's work: the section the run's one event, its crossings
-    kept by qd_poincare_run (the run ended at the last one wanted), as
-    `qdot poincare` does."""
+    kept by qd_poincare_orbits_run (each orbit ended at the last one
+    wanted), as `qdot poincare` does; initial a list: an orbit each, every
+    initial state read before the first run, a Result each."""
     want = _count(crossings, "poincare: crossings", 1e9)
-    setup = _Setup(core, speeds, initial)
+    several = isinstance(initial, (list, tuple))
+    orbits = list(initial) if several else [initial]
+    if not 1 <= len(orbits) <= lib.QD_POINCARE_MAX_ORBITS:
+        raise ValueError("poincare: initial takes 1 to %d orbits, not %d"
+                         % (lib.QD_POINCARE_MAX_ORBITS, len(orbits)))
+    texts = [_initial_text(o) if o else None for o in orbits]
+    setup = _Setup(core, speeds, None)
     setup.event("section", section)
     opts = setup.options(1e6 if t_end is None else t_end, method, rtol, atol, dt, step,
                          max_steps)
+    keep = [ffi.new("char[]", t.encode()) if t is not None else ffi.NULL for t in texts]
+    orb = new("qd_poincare_orbits", {"n": len(orbits),
+                                     "initial": ffi.new("const char *[]", keep)})
+    at = ffi.new("size_t *")
+    if lib.qd_poincare_orbits_check(core.ctx, setup.ptr, opts, orb, at) != QD_OK:
+        raise _text_error(core, "initial", texts[at[0]] or "")
     s = setup.sim
     ncol = lib.qd_sim_columns(s, opts.method, ffi.NULL, 0)
     names = ffi.new("const char *[]", max(ncol, 1))
     lib.qd_sim_columns(s, opts.method, names, ncol)
     columns = [cstr(names[k]) for k in range(ncol)]
-    rows, failed = [], []
+    rows, failed = [[] for _ in orbits], []
     with Run("poincare") as run:
         def sink(_data, row, crossing):
             try:
                 if crossing:
-                    rows.append((-1, ffi.unpack(row, ncol)))
+                    rows[now[0]].append((-1, ffi.unpack(row, ncol)))
                 return 1 if run.stop else 0  # ^C: after a whole row
             except BaseException as err:  # noqa: B036 (re-raised below)
                 failed.append(err)
                 return -1
 
+        now = [0]
         sink_c = ffi.callback("int(void *, const double *, bool)", sink, error=-1)
         progress_c = ffi.callback("void(void *, double, double)",
                                   lambda _d, done, t: run.update(done, t))
+        start_c = ffi.callback("void(void *, size_t)", lambda _d, k: now.__setitem__(0, k))
+        orb.start = start_c
         po = new("qd_poincare_opts", {"event": 0, "want": want, "sink": sink_c,
                                       "progress": progress_c})
-        r = new("qd_poincare_result")
-        st = lib.qd_poincare_run(s, opts, po, r)
+        r = ffi.new("qd_poincare_result[]", len(orbits))
+        st = lib.qd_poincare_orbits_run(core.ctx, setup.ptr, opts, po, orb, r, at)
         if failed:
             take_error(core.ctx)
             raise failed[0]
         if st != QD_OK:
             raise core.error(st, cls=NumericalError)
-        out = Result(columns, rows, 0, ffi.addressof(r, "stats"),
-                     cstr(lib.qd_sim_method_name(opts.method)), ndof=lib.qd_sim_ndof(s))
-        run.partial = out
-        if r.got < want and not run.stop:  # the CLI's note
-            warnings.warn("poincare: only %d of %d crossings before t = %g (raise t_end)"
-                          % (r.got, want, r.stats.t), stacklevel=3)
-        return out
+        out = []
+        for k, text in enumerate(texts):
+            res = Result(columns, rows[k], 0, ffi.addressof(r[k], "stats"),
+                         cstr(lib.qd_sim_method_name(opts.method)), ndof=lib.qd_sim_ndof(s))
+            res._section, res.label = True, text
+            out.append(res)
+        run.partial = out if several else out[0]
+        for k in range(len(orbits)):
+            if r[k].got < want and not run.stop:  # the CLI's note
+                warnings.warn("poincare: %sonly %d of %d crossings before t = %g (raise t_end)"
+                              % ("orbit %d: " % (k + 1) if several else "", r[k].got, want,
+                                 r[k].stats.t), stacklevel=3)
+        return out if several else out[0]
 
 
 def lyapunov(core, t_end, exponents, renorm, transient, method, rtol, atol, dt, initial,

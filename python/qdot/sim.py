@@ -137,15 +137,23 @@ class Result(Table):
         finally:
             lib.qd_ctx_free(ctx)
 
-    def png(self, y=None, phase=None, title=None, xlabel=None, ylabel=None, size=None):
+    def png(self, y=None, phase=None, title=None, xlabel=None, ylabel=None, size=None,
+            point_size=None, orbits=()):
         """The rows drawn as `qdot simulate --plot FILE.png` draws them (the
         library's qd_plot_run), as PNG bytes.  y: the columns, as --plot-y
         ("x, x'; energy_error": a semicolon starts a panel); phase: a
         coordinate Q for Q' against Q (as --phase); neither: every
         coordinate against t.  title, xlabel, ylabel ("A; B" per panel) and
-        size ("WxH" pixels) as the CLI's options."""
+        size ("WxH" pixels) as the CLI's options.  A section's (Model.poincare)
+        crossings are dots, point_size their radius in pixels (as --point-size);
+        orbits: more sections' Results of the same model, each drawn in its own
+        colour, the legend naming each by its initial state (as `qdot poincare`
+        with --initial given again)."""
         import os
         import tempfile
+        mine = [self, *orbits]
+        if any(list(o.columns) != list(self.columns) for o in mine):
+            raise ValueError("png: the orbits' columns differ from this Result's")
         pk = self._pick(y, phase)
         ctx = lib.qd_ctx_new()
         if ctx == ffi.NULL:
@@ -159,12 +167,20 @@ class Result(Table):
                 raise _text_error_ctx(ctx, "size")
             texts = {k: ffi.new("char[]", v.encode()) for k, v in
                      (("title", title), ("xlabel", xlabel), ("ylabel", ylabel)) if v is not None}
-            o = new("qd_plot_run_opts", dict(texts, width=width[0], height=height[0]))
+            labels = [ffi.new("char[]", o.label.encode()) if getattr(o, "label", None)
+                      else ffi.NULL for o in mine]
+            counts = ffi.new("size_t[]", [o.data.shape[0] for o in mine])
+            label_arr = ffi.new("const char *[]", labels)
+            opts = new("qd_plot_run_opts", dict(texts, width=width[0], height=height[0],
+                                                points=bool(getattr(self, "_section", False)),
+                                                point_size=float(point_size or 0),
+                                                norbits=len(mine), orbit_rows=counts,
+                                                orbit_labels=label_arr))
             names = [ffi.new("char[]", c.encode()) for c in self.columns]
             arr = ffi.new("const char *[]", names)
-            data = np.ascontiguousarray(self.data, dtype=float)
+            data = np.ascontiguousarray(np.vstack([r.data for r in mine]), dtype=float)
             plot = lib.qd_plot_run(ctx, pk, arr, ffi.cast("const double *", data.ctypes.data),
-                                   data.shape[0], len(self.columns), o)
+                                   data.shape[0], len(self.columns), opts)
             if plot == ffi.NULL:
                 raise _text_error_ctx(ctx, "plot")
             try:

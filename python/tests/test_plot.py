@@ -88,3 +88,43 @@ def test_matplotlib_lines_are_the_motion():
     (ax,) = fig.axes
     q, qd = ax.lines[0].get_data()
     assert np.max(np.abs(q * q + qd * qd - 1)) < 1e-8  # the phase circle
+
+
+def test_poincare_orbits_png_is_the_cli_plot():
+    """Model.poincare(initial=[...]): a Result an orbit, each through the
+    section at its own energy (Henon-Heiles, examples/henon_heiles.qd: E =
+    (x'^2 + y'^2)/2 + V is conserved, here x = y' = 0 at the start); their
+    picture (png(orbits=...)) is the CLI's with --initial given twice, pixel
+    for pixel, each orbit's dots in its own colour."""
+    model = os.path.join(os.path.dirname(HERE), "..", "examples", "henon_heiles.qd")
+    m = qdot.Model.load(model)
+    starts = [{"y": -0.25, "x'": 0.42}, {"y": 0.55, "x'": 0.3}]
+    rs = m.poincare("x = 0, x' > 0", 30, initial=starts)
+    assert isinstance(rs, list) and [len(r) for r in rs] == [30, 30]
+    for r, s in zip(rs, starts):
+        y0 = s["y"]
+        e = s["x'"] ** 2 / 2 + y0 ** 2 / 2 - y0 ** 3 / 3
+        x, y, xd, yd = r["x"], r["y"], r["x'"], r["y'"]
+        energy = (xd ** 2 + yd ** 2) / 2 + (x ** 2 + y ** 2) / 2 + x ** 2 * y - y ** 3 / 3
+        assert np.abs(energy - e).max() < 1e-8 and np.abs(x).max() < 1e-9 and (xd > 0).all()
+    with pytest.raises(qdot.ModelError, match="unknown name 'z'"):
+        m.poincare("x = 0, x' > 0", 3, initial=[{"y": 0.1}, {"z": 1}])
+    mine = _png_file(rs[0].png(phase="y", point_size=2, orbits=rs[1:], size="640x420"))
+    with tempfile.TemporaryDirectory() as d:
+        cli = os.path.join(d, "cli.png")
+        qdot_exe = os.path.join(os.environ["QDOT_BUILD"], "qdot")
+        args = [qdot_exe, "poincare", model, "--section", "x = 0, x' > 0", "--crossings", "30",
+                "--phase", "y", "--point-size", "2", "--size", "640x420", "--plot", cli,
+                "--title", ""]
+        for r in rs:
+            args += ["--initial", r.label]
+        subprocess.run(args, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        w1, h1, px1 = read_png(mine)
+        w2, h2, px2 = read_png(cli)
+    os.unlink(mine)
+    assert (w1, h1) == (w2, h2) == (640, 420)
+    assert sum(px1(x, y) != px2(x, y) for x in range(w1) for y in range(0, h1, 2)) == 0
+    blue, orange = (0x1f, 0x77, 0xb4), (0xff, 0x7f, 0x0e)
+    seen = {c: sum(px1(x, y) == c for x in range(w1) for y in range(60, h1)) for c in
+            (blue, orange)}
+    assert seen[blue] > 100 and seen[orange] > 100

@@ -13,7 +13,12 @@
  * 1e-9, the step a thousandth of the configuration's size: a first-order
  * test would take |r2| of a pendulum hanging straight for a rod too, its
  * change being of second order): the links of a pendulum, |r1| about the
- * pivot and |r2 - r1|.
+ * pivot and |r2 - r1|.  A spring to a wall: where each particle has a
+ * coordinate of its own moving it along an axis alone (a chain, particles
+ * in the plane), those together translate the whole configuration, which
+ * springs between particles let be (K0 T = 0 on their coordinates); K0 T
+ * not 0 on a particle's coordinate is a force from something fixed (k/2
+ * x1^2, k/2 (x3 - L)^2 in V).
  */
 #include "linear.h"
 
@@ -82,6 +87,64 @@ static bool add_link(qd_modes_picture *pic, size_t a, size_t b, qd_modes_link ki
     return true;
 }
 
+/* The coordinate of its own that moves particle i along axis e alone (to
+ * 1e-6 of its step), or n for none. */
+static size_t along(const double *jac, size_t n, size_t np, const size_t *owner, size_t i,
+                    unsigned e) {
+    for (size_t u = 0; u < n; u++) {
+        const double *d = jac + (u * np + i) * 3;
+        double rest = fabs(d[(e + 1) % 3]) + fabs(d[(e + 2) % 3]);
+        if (owner[u] == i && fabs(d[e]) > 0 && rest <= 1e-6 * fabs(d[e]))
+            return u;
+    }
+    return n;
+}
+
+/* The nearest two particles' distance at rest, or size for one. */
+static double spacing(const qd_modes_picture *pic, double size) {
+    double best = INFINITY;
+    for (size_t a = 0; a < pic->np; a++)
+        for (size_t b = a + 1; b < pic->np; b++) {
+            double d = distance(pic->rest, pic->np, a, b);
+            if (d > 1e-9 * size)
+                best = fmin(best, d);
+        }
+    return isfinite(best) ? best : size;
+}
+
+/* Springs to walls along axis e: every particle moved along e by a
+ * coordinate of its own (T, a rigid translation of the configuration), and
+ * K0 T not 0 on particle a's coordinate: a is held by something fixed. */
+static void walls_along(qd_modes_picture *pic, const double *jac, size_t n, const double *K,
+                        double kmax, const size_t *owner, unsigned e, double size) {
+    size_t np = pic->np, own[QD_MODES_PLOT_MAXP];
+    double *T = calloc(n + 1, sizeof *T), mid = 0, tmax = 0;
+    for (size_t i = 0; T && i < np; i++) {
+        if ((own[i] = along(jac, n, np, owner, i, e)) == n) {
+            free(T);
+            return; /* a particle that cannot follow: no rigid translation */
+        }
+        T[own[i]] = 1 / jac[(own[i] * np + i) * 3 + e];
+        tmax = fmax(tmax, fabs(T[own[i]]));
+        mid += pic->rest[3 * i + e] / (double)np;
+    }
+    for (size_t a = 0; T && a < np && pic->nwalls < QD_MODES_PLOT_MAXWALLS; a++) {
+        double f = 0;
+        for (size_t v = 0; v < n; v++)
+            f += K[own[a] * n + v] * T[v];
+        if (!(fabs(f) > 1e-9 * kmax * tmax) || pic->nlinks == QD_MODES_PLOT_MAXLINKS)
+            continue;
+        double *w = pic->wall + 3 * pic->nwalls, side = pic->rest[3 * a + e] > mid ? 1 : -1;
+        for (unsigned k = 0; k < 3; k++)
+            w[k] = pic->rest[3 * a + k];
+        w[e] += side * spacing(pic, size);
+        pic->wall_axis[pic->nwalls] = e;
+        pic->links[pic->nlinks++] = (qd_modes_link_of){a, np + 1 + pic->nwalls++,
+                                                       QD_MODES_SPRING};
+    }
+    free(T);
+}
+
 void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double *far, size_t n,
                          const double *K, double size, size_t *owner) {
     size_t np = pic->np;
@@ -105,4 +168,6 @@ void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double 
                 add_link(pic, a, b, QD_MODES_SPRING);
         }
     }
+    for (unsigned e = 0; K && kmax > 0 && e < 3; e++)
+        walls_along(pic, jac, n, K, kmax, owner, e, size);
 }

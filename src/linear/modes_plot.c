@@ -250,12 +250,36 @@ static void pic_xy(const qd_modes_picture *pic, const double *pos, size_t i, dou
     *y = ay == 3 ? pos[3 * i + ax] - pic->rest[3 * i + ax] : pos[3 * i + ay];
 }
 
+/* A spring to wall w (from particle a at pos): the spring and the wall,
+ * which stays where it is; none for a wall across the axis out of the
+ * picture's plane. */
+static qd_status add_wall(qd_plot *p, const qd_modes_picture *pic, const double *pos, size_t a,
+                          size_t w) {
+    unsigned e = pic->wall_axis[w];
+    if (e != pic->ax && e != pic->ay)
+        return QD_OK;
+    const double *at = pic->wall + 3 * w;
+    double ax, ay, wx, wy, rx, ry;
+    pic_xy(pic, pos, a, &ax, &ay);
+    pic_xy(pic, pic->rest, a, &rx, &ry);
+    /* the wall's point in the picture's axes: on a line, at rest across */
+    wx = pic->ay == 3 ? at[pic->ax] : e == pic->ax ? at[e] : rx;
+    wy = pic->ay == 3 ? 0 : e == pic->ay ? at[e] : ry;
+    qd_status st = qd_plot_add_mark(p, QD_PLOT_SPRING, ax, ay, wx, wy);
+    return st == QD_OK ? qd_plot_add_mark(p, QD_PLOT_WALL, wx, wy, rx, pic->ay == 3 ? 0 : ry)
+                       : st;
+}
+
 /* Mode j's springs and rods (moved), its arrows from rest, the pivot. */
 static qd_status add_marks(qd_plot *p, const qd_modes_picture *pic, size_t j) {
     const double *mv = pic->moved + j * 3 * pic->np;
     qd_status st = QD_OK;
     for (size_t l = 0; l < pic->nlinks && st == QD_OK; l++) {
         double ax, ay, bx, by;
+        if (pic->links[l].b > pic->np) {
+            st = add_wall(p, pic, mv, pic->links[l].a, pic->links[l].b - pic->np - 1);
+            continue;
+        }
         pic_xy(pic, mv, pic->links[l].a, &ax, &ay);
         pic_xy(pic, mv, pic->links[l].b, &bx, &by);
         st = qd_plot_add_mark(p, pic->links[l].kind == QD_MODES_SPRING ? QD_PLOT_SPRING

@@ -114,7 +114,8 @@ static void draw_series(const qd_plot *p, const pen *cr, const qd__plot_series *
     cr->op->rgb(cr->cv, rgb);
     /* a section of many crossings in finer dots, so its structure shows
      * rather than a blot: 2.5 px up to 500 points, then as 1/sqrt(n) */
-    double dot = fmax(0.8, fmin(2.5, 2.5 * sqrt(500.0 / (double)s->n)));
+    double dot = p->point_size > 0 ? p->point_size
+                                    : fmax(0.8, fmin(2.5, 2.5 * sqrt(500.0 / (double)s->n)));
     if (s->style == QD_PLOT_POINTS || s->style == QD_PLOT_DOTS) {
         for (size_t k = 0; k < s->n; k++) {
             qd_plot_to_pixel(p, pan, s->x[k], s->y[k], &px, &py);

@@ -125,3 +125,15 @@ bool qd_plot_map_range(const qd_plot *p, size_t panel, double *zmin, double *zma
     *zmax = p->panels[panel].map->zmax;
     return true;
 }
+
+bool qd_plot_labels(const qd_plot *p, size_t panel, const char **xlabel, const char **ylabel,
+                    const char **bar) {
+    QD_ARGS(false, p && xlabel && ylabel && bar);
+    if (panel >= p->rows * p->cols)
+        return false;
+    const qd__plot_panel *g = &p->panels[panel];
+    *xlabel = g->xlabel ? g->xlabel : "";
+    *ylabel = g->ylabel ? g->ylabel : "";
+    *bar = g->map && g->map->label ? g->map->label : "";
+    return true;
+}

@@ -15,7 +15,7 @@ qd_status qd_plot_add_mark(qd_plot *p, qd_plot_mark kind, double x0, double y0, 
     QD_ARGS(QD_ERR_ARG, p);
     if (kind == QD_PLOT_PIVOT)
         x1 = x0, y1 = y0;
-    if ((unsigned)kind > QD_PLOT_PIVOT || !isfinite(x0) || !isfinite(y0) || !isfinite(x1) ||
+    if ((unsigned)kind > QD_PLOT_WALL || !isfinite(x0) || !isfinite(y0) || !isfinite(x1) ||
         !isfinite(y1)) {
         qd_ctx_error(p->ctx, QD_ERR_ARG, "a plot's mark needs a known kind and finite points");
         return QD_ERR_ARG;
@@ -66,7 +66,18 @@ qd_status qd_plot_set_dpi(qd_plot *p, double dpi) {
     if (st == QD_OK)
         p->dpi = dpi;
     return st;
-    return QD_OK;
+}
+
+qd_status qd_plot_set_point_size(qd_plot *p, double radius) {
+    QD_ARGS(QD_ERR_ARG, p);
+    if (radius == 0 || (radius >= 0.2 && radius <= 20)) {
+        p->point_size = radius;
+        return QD_OK;
+    }
+    qd_ctx_error(p->ctx, QD_ERR_ARG, "a point's radius is 0.2 to 20 pixels (0: by the points' "
+                 "number), not %g", radius);
+    qd_ctx_error_about(p->ctx, QD_SUBJECT_NONE, 0, "point_size", QD_REASON_NONE, NULL);
+    return QD_ERR_ARG;
 }
 
 qd_status qd_plot_dpi_check(qd_ctx *ctx, double dpi) {

@@ -1,6 +1,6 @@
 /*
  * src/plot/marks_draw.c - a panel's figure painted (qd_plot_add_mark's
- * springs, rods, arrows and pivots), under its series.
+ * springs, rods, arrows, pivots and walls), under its series.
  */
 #include "plot_priv.h"
 
@@ -54,9 +54,26 @@ static void draw_pivot(const pen *cr, double x, double y) {
     cr->op->stroke(cr->cv);
 }
 
+/* A wall through (x, y) across the direction to (fx, fy): its line, and
+ * the hatching on the side away from what it holds. */
+static void draw_wall(const pen *cr, double x, double y, double fx, double fy) {
+    double dx = fx - x, dy = fy - y, len = hypot(dx, dy);
+    if (!(len > 0))
+        return;
+    double ux = dx / len, uy = dy / len, vx = -uy, vy = ux; /* u: towards it, v: along */
+    cr->op->move_to(cr->cv, x - 13 * vx, y - 13 * vy);
+    cr->op->line_to(cr->cv, x + 13 * vx, y + 13 * vy);
+    for (int t = 0; t < 5; t++) {
+        double s = -12 + 6 * t;
+        cr->op->move_to(cr->cv, x + s * vx, y + s * vy);
+        cr->op->line_to(cr->cv, x + (s - 5) * vx - 6 * ux, y + (s - 5) * vy - 6 * uy);
+    }
+    cr->op->stroke(cr->cv);
+}
+
 void qd__plot_draw_marks(const qd_plot *p, size_t k, const pen *cr) {
-    static const unsigned colour[] = {0x8c8c8c, 0x404040, 0xd62728, 0x000000};
-    static const double width[] = {1.5, 3, 1.5, 1.2};
+    static const unsigned colour[] = {0x8c8c8c, 0x404040, 0xd62728, 0x000000, 0x000000};
+    static const double width[] = {1.5, 3, 1.5, 1.2, 1.2};
     cr->op->round_ends(cr->cv);
     for (size_t i = 0; i < p->nmarks; i++) {
         const qd__plot_mark *m = &p->marks[i];
@@ -73,6 +90,8 @@ void qd__plot_draw_marks(const qd_plot *p, size_t k, const pen *cr) {
             draw_arrow(cr, ax, ay, bx, by);
         else if (m->kind == QD_PLOT_PIVOT)
             draw_pivot(cr, ax, ay);
+        else if (m->kind == QD_PLOT_WALL)
+            draw_wall(cr, ax, ay, bx, by);
     }
     /* the rods over the springs' ends, then the arrows' heads over both */
     for (size_t i = 0; i < p->nmarks; i++) {

@@ -63,6 +63,7 @@ struct qd_plot {
     bool shared_legend;                /* one legend under the title (qd_plot_share_legend) */
     size_t shared_rows;                /* its rows, after the layout */
     double dpi;                        /* 96: a pixel a unit of the layout */
+    double point_size;                 /* QD_PLOT_POINTS' radius; 0: by their number */
     bool laid_out;
     const qd__canvas_ops *canvas; /* the drawing module's, from the first layout */
 };

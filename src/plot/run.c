@@ -138,6 +138,7 @@ typedef struct run_rows {
     const char *const *names;
     const double *v;
     size_t n, ncols;
+    size_t norbits; /* 1, or the orbits the rows are in turn (o->orbit_rows) */
 } run_rows;
 
 static const char *series_name(const run_rows *r, size_t i) {
@@ -217,6 +218,9 @@ static qd_status fill_panel(qd_plot *p, const run_rows *r, size_t g, const qd_pl
         st = qd_plot_set_xlabel(p, xl);
     if (st == QD_OK)
         st = qd_plot_set_ylabel(p, yl);
+    size_t inpanel = 0;
+    for (size_t i = 0; i < pk->ny; i++)
+        inpanel += pk->panel[i] == g;
     for (size_t i = 0; i < pk->ny && st == QD_OK; i++) {
         if (pk->panel[i] != g)
             continue;
@@ -224,14 +228,40 @@ static qd_status fill_panel(qd_plot *p, const run_rows *r, size_t g, const qd_pl
         const char *label = series_name(r, i);
         if (pk->phase)
             snprintf(pair, sizeof pair, "(%s, %s)", r->names[pk->x], label);
-        for (size_t k = 0; k < r->n; k++) {
-            x[k] = value(r, k, pk->x);
-            y[k] = value(r, k, pk->y[i]);
+        label = pk->phase ? pair : label;
+        size_t from = 0;
+        for (size_t orbit = 0; orbit < r->norbits && st == QD_OK; orbit++) {
+            size_t n = r->norbits > 1 ? o->orbit_rows[orbit] : r->n;
+            for (size_t k = 0; k < n; k++) {
+                x[k] = value(r, from + k, pk->x);
+                y[k] = value(r, from + k, pk->y[i]);
+            }
+            char on[128], named[300]; /* an orbit's series: the orbit, after the series */
+            const char *ol = o->orbit_labels ? o->orbit_labels[orbit] : NULL;
+            if (ol)
+                snprintf(on, sizeof on, "%s", ol);
+            else
+                snprintf(on, sizeof on, "orbit %zu", orbit + 1);
+            snprintf(named, sizeof named, inpanel > 1 ? "%s: %s" : "%.0s%s", label, on);
+            if (n) /* an orbit without rows is left out */
+                st = qd_plot_add(p, r->norbits > 1 ? named : label,
+                                 o->points ? QD_PLOT_POINTS : QD_PLOT_LINE, n, x, y, NULL);
+            from += n;
         }
-        st = qd_plot_add(p, pk->phase ? pair : label, o->points ? QD_PLOT_POINTS : QD_PLOT_LINE,
-                         r->n, x, y, NULL);
     }
     return st;
+}
+
+/* The orbits' rows sum to the rows drawn. */
+static qd_status check_orbits(qd_ctx *ctx, const qd_plot_run_opts *o, size_t nrows) {
+    size_t sum = 0;
+    for (size_t k = 0; o->norbits > 1 && o->orbit_rows && k < o->norbits; k++)
+        sum += o->orbit_rows[k];
+    if (o->norbits <= 1 || (o->orbit_rows && sum == nrows))
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_ARG, "the orbits' rows (%zu) are not the rows drawn (%zu)", sum,
+                 nrows);
+    return QD_ERR_ARG;
 }
 
 qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o) {
@@ -241,6 +271,8 @@ qd_status qd_plot_apply(qd_plot *p, const qd_plot_run_opts *o) {
         st = qd_plot_set_size(p, o->width, o->height);
     if (st == QD_OK && o->dpi)
         st = qd_plot_set_dpi(p, o->dpi);
+    if (st == QD_OK && o->point_size)
+        st = qd_plot_set_point_size(p, o->point_size);
     size_t cur = p->cur;
     for (size_t g = 0; g < qd_plot_npanels(p) && st == QD_OK; g++) {
         char yl[256];
@@ -274,15 +306,20 @@ qd_plot *qd_plot_run(qd_ctx *ctx, const qd_plot_pick *pk, const char *const *nam
         width = o->width;
         height = o->height;
     }
+    if (check_orbits(ctx, o, nrows) != QD_OK)
+        return NULL;
     double *x = qd__malloc(ctx, nrows * sizeof *x), *y = qd__malloc(ctx, nrows * sizeof *y);
     qd_plot *p = x && y ? qd_plot_new(ctx, width, height) : NULL;
     const char *title = o->title ? o->title : "";
     qd_status st = p ? qd_plot_set_title(p, title) : QD_ERR_NOMEM;
     if (st == QD_OK && o->dpi)
         st = qd_plot_set_dpi(p, o->dpi);
+    if (st == QD_OK && o->point_size)
+        st = qd_plot_set_point_size(p, o->point_size);
     if (st == QD_OK && pk->npanels > 1)
         st = qd_plot_panels(p, pk->npanels, 1);
-    run_rows r = {.pk = pk, .names = names, .v = rows, .n = nrows, .ncols = ncols};
+    run_rows r = {.pk = pk, .names = names, .v = rows, .n = nrows, .ncols = ncols,
+                  .norbits = o->norbits > 1 ? o->norbits : 1};
     for (size_t g = 0; g < pk->npanels && st == QD_OK; g++)
         st = fill_panel(p, &r, g, o, x, y);
     qd__free(x);

@@ -101,6 +101,10 @@ qd_sim_setup *qd_sim_setup_new(qd_ctx *ctx, const qd_model *m, bool no_speeds) {
         s->sim = s->e ? qd_sim_new(ctx, m, s->e) : NULL;
     }
     bool ok = s->sim && state_init(s);
+    if (ok && !(s->vals0 = malloc((s->n + 1) * sizeof *s->vals0)))
+        ok = nomem(ctx);
+    if (ok) /* the model's own initial state, for qd_sim_setup_restart */
+        memcpy(s->vals0, s->vals, s->n * sizeof *s->vals);
     for (size_t i = 0; ok && i < qd_model_noutputs(m); i++) /* before any caller's */
         ok = qd_sim_add_output(s->sim, qd_model_output_name(m, i), qd_model_output(m, i)) ==
              QD_OK;
@@ -128,6 +132,7 @@ void qd_sim_setup_free(qd_sim_setup *s) {
         qd_eom_free(s->e);
     free(s->syms);
     free(s->vals);
+    free(s->vals0);
     free(s);
 }
 
@@ -587,6 +592,26 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
     if ((st = qd_sim_inputs_ready(s->sim, out->t0, out->t_end)) != QD_OK)
         qd_ctx_error_about(s->ctx, QD_SUBJECT_NONE, 0, "inputs", QD_REASON_NONE, NULL);
     return st;
+}
+
+qd_status qd_sim_setup_restart(qd_sim_setup *s, const char *initial, qd_sim_opts *out) {
+    QD_ARGS(QD_ERR_ARG, s);
+    QD_ARGS_CTX(s->ctx, out);
+    memcpy(s->vals, s->vals0, s->n * sizeof *s->vals);
+    s->initial_given = false;
+    qd_status st = initial ? qd_sim_setup_initial(s, initial) : QD_OK;
+    if (st == QD_OK)
+        st = initial_values(s);
+    if (st != QD_OK)
+        return st;
+    out->t0 = s->vals[2 * s->nq];
+    out->q0 = s->q0;
+    out->qd0 = s->qd0;
+    out->p0 = s->p0;
+    out->u0 = s->u0;
+    if (!(out->t_end > out->t0))
+        return refuse(s, "t_end", "the end time must be after the start time (%g)", out->t0);
+    return check_gaps(s);
 }
 
 /* ---- --native ------------------------------------------------------------------ */

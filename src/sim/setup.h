@@ -20,6 +20,7 @@ struct qd_sim_setup {
     size_t n, nq, extra;  /* extra: the momenta or speeds at the end */
     const qd_expr **syms;
     double *vals;
+    double *vals0;        /* the model's own initial state (qd_sim_setup_restart) */
     bool initial_given;
     double *q0, *qd0, *p0, *u0; /* the run's initial values (qd_sim_setup_options) */
     qd_native *native;

@@ -49,15 +49,29 @@ qd_status qd_sweep_map_column(const qd_sweep *w, const char *measure, size_t *co
     return field(w->ctx, QD_ERR_ARG, "map_measure");
 }
 
-/* The colour bar's label: the measure's column and, where the measure
- * fixes it, its unit (a Lyapunov exponent is a rate, 1/s; an event's time
- * in s; a count of crossings has none but what it counts).  A coordinate's
- * or energy's unit is the model's, which it does not state. */
-static void bar_label(const char *name, char *buf, size_t cap) {
-    const char *unit = !strncmp(name, "lyapunov", 8) ? "1/s"
-                       : !strcmp(name, "event_t")     ? "s"
-                       : !strcmp(name, "poincare-count") ? "crossings"
-                                                         : NULL;
+/* A column's unit: an input's or a run column's (qd_model_column_unit:
+ * s, an angle's rad, its velocity's rad/s), that of the column a measure
+ * reads (final_X, event_X, max:X, min:X), or the one the measure fixes (a
+ * Lyapunov exponent is a rate, 1/s; an event's and an escape's time, s; a
+ * count of crossings has none but what it counts).  A length's or an
+ * energy's unit is the model's, which it does not state: NULL. */
+static const char *column_unit(const qd_sweep *w, const char *name) {
+    static const char *const read[] = {"final_", "event_", "max:", "min:"};
+    if (!strncmp(name, "lyapunov", 8)) /* an exponent, or its error */
+        return "1/s";
+    if (!strcmp(name, "event_t") || !strncmp(name, "escape:", 7))
+        return "s";
+    if (!strcmp(name, "poincare-count"))
+        return "crossings";
+    for (size_t k = 0; k < sizeof read / sizeof read[0]; k++)
+        if (!strncmp(name, read[k], strlen(read[k])))
+            name += strlen(read[k]);
+    return qd_model_column_unit(w->ctx, w->m, name); /* records nothing */
+}
+
+/* "NAME (UNIT)", or NAME where the unit is not known. */
+static void with_unit(const qd_sweep *w, const char *name, char *buf, size_t cap) {
+    const char *unit = column_unit(w, name);
     snprintf(buf, cap, unit ? "%s (%s)" : "%s", name, unit);
 }
 
@@ -84,12 +98,14 @@ qd_status qd_sweep_map(const qd_sweep *w, const double *rows, size_t col, qd_plo
         y[j] = in[1];
         z[j * nx + i] = rows[k * w->ncols + col];
     }
-    if (st == QD_OK)
-        st = qd_plot_set_xlabel(p, w->cols[0]);
-    if (st == QD_OK)
-        st = qd_plot_set_ylabel(p, w->cols[1]);
     char label[200];
-    bar_label(w->cols[col], label, sizeof label);
+    with_unit(w, w->cols[0], label, sizeof label);
+    if (st == QD_OK)
+        st = qd_plot_set_xlabel(p, label);
+    with_unit(w, w->cols[1], label, sizeof label);
+    if (st == QD_OK)
+        st = qd_plot_set_ylabel(p, label);
+    with_unit(w, w->cols[col], label, sizeof label);
     if (st == QD_OK)
         st = qd_plot_add_map(p, label, nx, ny, x, y, z);
     qd__free(x);

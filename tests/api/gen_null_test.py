@@ -122,6 +122,8 @@ NULLABLE = {
     'qd_path_foci_mult_free': {'ctx'},
     'qd_plot_add': {'index', 'label'},
     'qd_plot_add_map': {'label'},
+    'qd_poincare_csv': {'row'},  # the header
+    'qd_symmetry_modes_plot': {'s'},  # res's own modes
     'qd_plot_math_text': {'out'},
     'qd_plot_set_heading': {'text'},
     'qd_plot_set_note': {'text'},

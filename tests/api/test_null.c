@@ -2611,6 +2611,46 @@ static void null_lyapunov(void **state)
     /* s NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_json_end(NULL, NULL, NULL, NULL, NULL, 1, false));
     reset(&F);
+    /* ---- qd_poincare_orbits_check */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_check(NULL, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_check(F.ctx, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_check(F.ctx, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_poincare_orbits_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_run(NULL, NULL, NULL, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* set NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_run(F.ctx, NULL, NULL, NULL, NULL, NULL, F.z));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_orbits_run(F.ctx, NULL, NULL, NULL, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_poincare_csv */
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_csv(1, NULL, F.d, 1, 1, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_csv(1, (const char * const *)F.names, F.d, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_poincare_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, "q", "q", &F.buf));
+    reset(&F);
+    /* prefix NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, NULL, "q", &F.buf));
+    reset(&F);
+    /* t_end_name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, "q", NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_print(NULL, 1, (qd_sim_method){0}, 1, "q", "q", NULL));
+    reset(&F);
     /* ---- qd_lyap_setup_run */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_lyap_setup_run(NULL, NULL, F.model, NULL, NULL, NULL));
@@ -4145,6 +4185,10 @@ static void null_plot(void **state)
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_dpi_check(NULL, 1));
     reset(&F);
+    /* ---- qd_plot_set_point_size */
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_plot_set_point_size(NULL, 1));
+    reset(&F);
     /* ---- qd_plot_set_size */
     /* p NULL */
     assert_int_equal(QD_ERR_ARG, qd_plot_set_size(NULL, 1, 1));
@@ -4212,6 +4256,19 @@ static void null_plot(void **state)
     reset(&F);
     /* ---- qd_plot_map_color */
     /* no pointer argument */
+    /* ---- qd_plot_labels */
+    /* p NULL */
+    assert_true(qd_plot_labels(NULL, 1, (const char * *)F.names, (const char * *)F.names, (const char * *)F.names) == 0);
+    reset(&F);
+    /* xlabel NULL */
+    assert_true(qd_plot_labels(F.plot, 1, NULL, (const char * *)F.names, (const char * *)F.names) == 0);
+    reset(&F);
+    /* ylabel NULL */
+    assert_true(qd_plot_labels(F.plot, 1, (const char * *)F.names, NULL, (const char * *)F.names) == 0);
+    reset(&F);
+    /* bar NULL */
+    assert_true(qd_plot_labels(F.plot, 1, (const char * *)F.names, (const char * *)F.names, NULL) == 0);
+    reset(&F);
     /* ---- qd_plot_map_range */
     /* p NULL */
     assert_true(qd_plot_map_range(NULL, 1, F.d, F.d) == 0);
@@ -5821,6 +5878,16 @@ static void null_simsetup(void **state)
     /* text NULL */
     assert_int_equal(QD_ERR_ARG, qd_sim_setup_initial(NULL, NULL));
     reset(&F);
+    /* ---- qd_sim_setup_restart */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_restart(NULL, "q", (qd_sim_opts *)(void *)F.blob));
+    reset(&F);
+    /* initial NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_restart(NULL, NULL, (qd_sim_opts *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_sim_setup_restart(NULL, "q", NULL));
+    reset(&F);
     /* ---- qd_sim_setup_read */
     /* s NULL */
     assert_null(qd_sim_setup_read(NULL, "q", 1, 1));
@@ -6952,6 +7019,28 @@ static void null_symmetry(void **state)
     /* ---- qd_cyclic_json_modes */
     /* j NULL */
     qd_cyclic_json_modes(NULL, NULL);
+    reset(&F);
+    /* ---- qd_symmetry_modes_plot */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* res NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* title NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, NULL));
     reset(&F);
     teardown(&F);
 }

@@ -12,6 +12,13 @@
  *     diagonals, the six distance terms of its V;
  *   the linear triatomic molecule (Desloge ch. 66; symmetric_triatomic.qd):
  *     two bonds, 1-2 and 2-3, and none between the end masses;
+ *   three equal masses between two walls, four springs (Goldstein ch. 6,
+ *     the chain held at its ends: V = k/2 (x1^2 + (x2 - x1)^2 + (x3 - x2)^2
+ *     + x3^2)): the two springs between neighbours, and a spring from each
+ *     end mass to a wall beyond it, across x, one spacing out (x = 0 and
+ *     4); none from the middle mass; the free triatomic has no wall; in
+ *     the PNG the springs' ink between each end mass and its wall, and
+ *     the wall's dark line there;
  *   a double pendulum of point masses hung from the origin: two rods (the
  *     origin to bob 1, bob 1 to bob 2) and the pivot; no rod from the
  *     origin to bob 2, whose distance changes at second order only about
@@ -52,6 +59,11 @@
     "coordinates x1, x2, x3\nparameters m = 1, M = 3, k = 2, a = 1\n"                          \
     "particle m at (x1, 0)\nparticle M at (x2, 0)\nparticle m at (x3, 0)\n"                    \
     "V = k/2*((x2 - x1 - a)^2 + (x3 - x2 - a)^2)\n"
+
+#define WALLED                                                                                 \
+    "coordinates x1, x2, x3\nparameters m = 1, k = 1, a = 1\n"                                  \
+    "particle m at (a + x1, 0)\nparticle m at (2*a + x2, 0)\nparticle m at (3*a + x3, 0)\n"    \
+    "V = k/2*(x1^2 + (x2 - x1)^2 + (x3 - x2)^2 + x3^2)\n"
 
 #define PENDULUM                                                                               \
     "coordinates th1, th2\nparameters m1 = 1.2, m2 = 0.7, l1 = 1.1, l2 = 0.8, g = 9.81\n"      \
@@ -225,6 +237,64 @@ static void test_triatomic_links(void **state) {
     qd_modes_result_free(&res);
 }
 
+static void test_walled_chain(void **state) {
+    qt_system *s = qt_system_derive(state, WALLED, false);
+    const double q[3] = {0, 0, 0};
+    point p;
+    at(s, q, &p);
+    qd_modes_result res;
+    qd_modes_picture pic;
+    picture(s, &p, &res, &pic);
+    assert_int_equal(pic.nwalls, 2);
+    assert_int_equal(pic.nlinks, 4);
+    assert_true(joined(&pic, 0, 1, QD_MODES_SPRING) && joined(&pic, 1, 2, QD_MODES_SPRING));
+    assert_true(joined(&pic, 0, 4, QD_MODES_SPRING) && joined(&pic, 2, 5, QD_MODES_SPRING));
+    /* the walls across x, one spacing beyond the end masses */
+    assert_true(pic.wall_axis[0] == 0 && pic.wall_axis[1] == 0);
+    assert_true(fabs(pic.wall[0] - 0) < 1e-9 && fabs(pic.wall[3] - 4) < 1e-9);
+    assert_true(fabs(pic.wall[1]) < 1e-12 && fabs(pic.wall[4]) < 1e-12);
+    /* in the PNG: each mode's panel has the spring from the moved end masses
+     * to their walls, the walls' dark lines at x = 0 and 4 (across the line,
+     * at displacement 0) */
+    qd_plot *plot = NULL;
+    assert_int_equal(qd_modes_plot(s->ctx, s->eom, s->model, p.n, p.syms, p.vals, &res,
+                                   "walls", &plot), QD_OK);
+    assert_int_equal(qd_plot_write(plot, "test_modes_figure_walls.png"), QD_OK);
+    image im = {cairo_image_surface_create_from_png("test_modes_figure_walls.png"), 0, 0, 0,
+                NULL};
+    assert_int_equal(cairo_surface_status(im.s), CAIRO_STATUS_SUCCESS);
+    im.w = cairo_image_surface_get_width(im.s);
+    im.h = cairo_image_surface_get_height(im.s);
+    im.stride = cairo_image_surface_get_stride(im.s);
+    im.data = cairo_image_surface_get_data(im.s);
+    assert_int_equal(pic.ay, 3); /* on one line: displacements across it */
+    for (size_t j = 0; j < res.n; j++) {
+        const double *mv = pic.moved + j * 9;
+        for (size_t end = 0; end < 2; end++) {
+            size_t a = end ? 2 : 0;
+            double ax = pic.rest[3 * a], ay = mv[3 * a] - pic.rest[3 * a];
+            double wx = pic.wall[3 * end], px, py;
+            for (double f = 0.3; f <= 0.7 + 1e-9; f += 0.1) {
+                assert_true(qd_plot_to_pixel(plot, j, ax + f * (wx - ax), (1 - f) * ay, &px,
+                                             &py));
+                assert_true(ink_near(&im, px, py));
+            }
+            assert_true(qd_plot_to_pixel(plot, j, wx, 0, &px, &py));
+            bool dark = false;
+            for (int dy = -10; dy <= 10; dy++)
+                for (int dx = -3; dx <= 3; dx++) { /* every channel dark: the wall's black */
+                    unsigned v = pixel(&im, (int)lround(px) + dx, (int)lround(py) + dy);
+                    dark |= (v >> 16) < 0x40 && ((v >> 8) & 0xff) < 0x40 && (v & 0xff) < 0x40;
+                }
+            assert_true(dark);
+        }
+    }
+    cairo_surface_destroy(im.s);
+    qd_plot_free(plot);
+    qd_modes_picture_free(&pic);
+    qd_modes_result_free(&res);
+}
+
 static void test_pendulum_rods(void **state) {
     qt_system *s = qt_system_derive(state, PENDULUM, false);
     const double q[2] = {0, 0};
@@ -248,6 +318,7 @@ int main(void) {
         cmocka_unit_test_teardown(test_ring_pixels, qt_system_teardown),
         cmocka_unit_test_teardown(test_square_links, qt_system_teardown),
         cmocka_unit_test_teardown(test_triatomic_links, qt_system_teardown),
+        cmocka_unit_test_teardown(test_walled_chain, qt_system_teardown),
         cmocka_unit_test_teardown(test_pendulum_rods, qt_system_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

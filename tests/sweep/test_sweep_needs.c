@@ -129,6 +129,12 @@ static void test_map(void **state) {
     assert_true(qd_plot_ranges(p, 0, &x0, &x1, &y0, &y1));
     assert_true(fabs(x0 - 0.5) < 1e-12 && fabs(x1 - 4.5) < 1e-12);
     assert_true(fabs(y0 - 0.75) < 1e-12 && fabs(y1 - 2.25) < 1e-12);
+    /* the labels: k and m state no unit; the period is a time */
+    const char *xl, *yl, *bar;
+    assert_true(qd_plot_labels(p, 0, &xl, &yl, &bar));
+    assert_string_equal(xl, "k");
+    assert_string_equal(yl, "m");
+    assert_string_equal(bar, "event_t (s)");
     qd_plot_free(p);
     free(rows);
     /* a random draw is no grid */
@@ -226,11 +232,47 @@ static void test_write(void **state) {
     sf_free(f);
 }
 
+/* A pendulum's map over (theta, theta'): theta is an angle (the bob's
+ * position and V repeat in 2 pi), so its axis says rad, its velocity's
+ * rad/s, and a measure reading theta' (max:theta') has theta''s unit; a
+ * Lyapunov exponent is a rate, 1/s, and so is its error. */
+static void test_map_units(void **state) {
+    (void)state;
+    sim_fix *f = sf_load("coordinates theta\nparameters m = 1, l = 1, g = 9.81\n"
+                         "bob = l*(sin(theta), -cos(theta))\nparticle m at bob\n"
+                         "V = m*g*bob.y\ninitial theta = 0.1\n");
+    assert_int_equal(qd_sim_compile(f->s), QD_OK);
+    qd_sweep *w = qd_sweep_new(f->ctx, f->s, f->m);
+    assert_int_equal(qd_sweep_grid(w, "theta = 0:1:2, theta' = 0:1:2"), QD_OK);
+    assert_int_equal(qd_sweep_measures(w, "max:theta', final, lyapunov"), QD_OK);
+    double rows[4 * 8] = {0};
+    assert_true(qd_sweep_ncols(w) <= 8);
+    static const char *const want[][2] = {{"max:theta'", "max:theta' (rad/s)"},
+                                          {"final_theta", "final_theta (rad)"},
+                                          {"lyapunov", "lyapunov (1/s)"},
+                                          {"lyapunov_error", "lyapunov_error (1/s)"}};
+    for (size_t k = 0; k < 4; k++) {
+        size_t col;
+        assert_int_equal(qd_sweep_map_column(w, want[k][0], &col), QD_OK);
+        qd_plot *p = qd_plot_new(f->ctx, 0, 0);
+        assert_int_equal(qd_sweep_map(w, rows, col, p), QD_OK);
+        const char *xl, *yl, *bar;
+        assert_true(qd_plot_labels(p, 0, &xl, &yl, &bar));
+        assert_string_equal(xl, "theta (rad)");
+        assert_string_equal(yl, "theta' (rad/s)");
+        assert_string_equal(bar, want[k][1]);
+        qd_plot_free(p);
+    }
+    qd_sweep_free(w);
+    sf_free(f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_needs),
         cmocka_unit_test(test_prepare_free_particle),
         cmocka_unit_test(test_map),
+        cmocka_unit_test(test_map_units),
         cmocka_unit_test(test_list_csv),
         cmocka_unit_test(test_write),
     };

@@ -1,0 +1,42 @@
+/*
+ * src/linear/symmetry_plot.c - the mode picture of a symmetry's modes
+ * (qd_symmetry_modes_plot, qdot/symmetry.h): `qdot modes --plot
+ * --symmetry` draws the modes ordered and paired as the irreps are, each
+ * panel noting its irrep.
+ */
+#include "qdot/symmetry.h"
+#include "qdot/plot.h"
+#include "../base/args.h"
+
+/* Panel j (mode j of the symmetry's) notes its irrep, "A1", "E". */
+static qd_status note_irreps(qd_plot *p, const qd_symmetry *s) {
+    qd_status st = QD_OK;
+    for (size_t j = 0; j < s->n && j < qd_plot_npanels(p) && st == QD_OK; j++) {
+        st = qd_plot_select(p, j);
+        if (st == QD_OK)
+            st = qd_plot_set_note(p, s->label[s->block_irrep[s->mode_block[j]]]);
+    }
+    return st;
+}
+
+qd_status qd_symmetry_modes_plot(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                                 const qd_expr *const *syms, const double *vals,
+                                 const qd_modes_result *res, const qd_symmetry *s,
+                                 const char *title, qd_plot **out) {
+    QD_ARGS_CTX(ctx, ctx && res && out);
+    /* the cyclic fast path's harmonics are not a point group's: plain modes there */
+    bool irreps = s && s->order > 1 && s->omega2 && s->shapes && s->n == res->n;
+    qd_modes_result by_sym = *res;
+    if (irreps) {
+        by_sym.omega2 = s->omega2;
+        by_sym.shapes = s->shapes;
+    }
+    qd_status st = qd_modes_plot(ctx, e, m, nvals, syms, vals, &by_sym, title, out);
+    if (st == QD_OK && irreps && qd_plot_npanels(*out) == res->n)
+        st = note_irreps(*out, s);
+    if (st != QD_OK) {
+        qd_plot_free(*out);
+        *out = NULL;
+    }
+    return st;
+}
