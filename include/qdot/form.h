@@ -29,6 +29,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "expr.h"
+#include "certify.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -75,6 +76,51 @@ QD_API void qd_qform_free(qd_qform *f);
  * entry and counts the variables read. */
 QD_API qd_status qd_qform_vars_read(qd_ctx *ctx, const char *text, const qd_expr **x,
                                     size_t cap, size_t *n);
+
+/* ---- homogeneity (Desloge App. 20) ----------------------------------------
+ * f(x_1..x_r, y) is homogeneous of degree n in x when f(lambda x, y) =
+ * lambda^n f(x, y) for every lambda > 0 (App. 20 eq. 1; the other symbols y
+ * are passive).  Euler's theorem (eq. 2) and its converse: that holds iff
+ * sum_i x_i df/dx_i = n f identically (d/dlambda of lambda^-n f(lambda x)
+ * is lambda^(-n-1) (sum x_i df/dx_i - n f)(lambda x)).  So the degree is
+ * (sum x_i df/dx_i) / f when that is free of x, confirmed by the zero test
+ * (qd_equal_test, qdot/certify.h); when it is not, any homogeneous f has
+ * f(x) f(4x) = f(2x)^2 (both 4^n f(x)^2), and a point where they certainly
+ * differ (f, f(2x) and f(4x) each defined there and evaluated in ball
+ * arithmetic at the points qd_zero_test would pick) is the witness that f is
+ * not homogeneous.  When neither holds the
+ * degree is estimated as log2(f(2x)/f(x)) at a point, rounded to p/q
+ * (q <= 12) and confirmed the same way, or the verdict is undecided. */
+typedef enum qd_homog_verdict {
+    QD_HOMOG_YES,       /* homogeneous of degree `degree` */
+    QD_HOMOG_EVERY,     /* f is 0: homogeneous of every degree */
+    QD_HOMOG_NO,        /* not homogeneous: test.witness the point where
+                           f(x) f(4x) - f(2x)^2 (probe) is certainly not 0 */
+    QD_HOMOG_UNDECIDED  /* neither: a ratio that does not simplify, no witness */
+} qd_homog_verdict;
+
+typedef struct qd_homog {
+    qd_homog_verdict verdict;
+    const qd_expr *f;      /* f simplified */
+    const qd_expr *euler;  /* sum_i x_i df/dx_i, simplified */
+    const qd_expr *degree; /* YES: n, free of x (a number, or in the passive
+                              symbols: x^a has degree a); else NULL */
+    const qd_expr *probe;  /* f(x) f(4x) - f(2x)^2 when it was tested, else NULL */
+    qd_zero_result test;   /* YES: the test of euler - n f (proven or numeric);
+                              NO: of probe, with its witness; UNDECIDED: the
+                              last test made (kind UNKNOWN when none) */
+} qd_homog;
+
+/* The homogeneity of f in the n variables x (symbols, none twice) into *out,
+ * as above; the other symbols of f are passive.  QD_ERR_ARG for no
+ * variables or one that is not a symbol; errors of simplification.  *out
+ * holds expressions of ctx only (nothing to free). */
+QD_API qd_status qd_homogeneity(qd_ctx *ctx, const qd_expr *f, size_t n,
+                                const qd_expr *const *x, qd_homog *out);
+
+/* "homogeneous", "every degree", "not homogeneous", "undecided": the
+ * verdict in words (JSON "verdict"). */
+QD_API const char *qd_homog_verdict_name(qd_homog_verdict v);
 
 #ifdef __cplusplus
 }

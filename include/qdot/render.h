@@ -171,6 +171,19 @@ QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e
 QD_API qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
                                  qd_render_format fmt, qd_buf *out);
 
+/* The homogeneity h of a function in the n variables x (qd_homogeneity,
+ * qdot/form.h; Desloge App. 20): in text "homogeneity in x, y (...)", f,
+ * sum x_i df/dx_i and the verdict: "homogeneous of degree N: ..." (with
+ * qd_zero_result_note when verified numerically), "f is 0: homogeneous of
+ * every degree", "not homogeneous: ..." with the witness line
+ * (qd_zero_result_print), or "could not decide: ..."; in JSON
+ * "variables", "f", "euler", "verdict" (qd_homog_verdict_name),
+ * "homogeneous" (null when undecided), "degree" (null unless homogeneous
+ * of one degree) and qd_zero_result_json's "certainty", "witness",
+ * "points", "bits".  QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_homog(qd_ctx *ctx, const qd_homog *h, size_t n,
+                                 const qd_expr *const *x, qd_render_format fmt, qd_buf *out);
+
 /* ---- impulsive motion (qdot/impulse.h) ----------------------------------- */
 
 /* Append r, the answer of qd_impulse_solve on m, to out: text (the

@@ -77,3 +77,66 @@ def quadratic_form(expr, variables):
             lib.qd_qform_free(f)
     finally:
         lib.qd_ctx_free(ctx)
+
+
+class Homogeneity:
+    """The homogeneity of a function (qd_homogeneity, Desloge App. 20):
+    homogeneous (True, False, or None when undecided), degree (text, or
+    None), verdict ("homogeneous", "every degree", "not homogeneous",
+    "undecided"), euler (sum x_i df/dx_i), witness ({"point": {...},
+    "value", "radius"} for "not homogeneous", else None); json() the dict of
+    `qdot form --homogeneity --format json`, text() its text."""
+
+    __module__ = "qdot"
+
+    def __init__(self, printed):
+        self._printed = printed
+        d = json.loads(printed[1])
+        self.homogeneous, self.degree, self.verdict = d["homogeneous"], d["degree"], d["verdict"]
+        self.euler, self.witness, self.certainty = d["euler"], d["witness"], d["certainty"]
+
+    def text(self):
+        return self._printed[0]
+
+    def json(self):
+        return json.loads(self._printed[1])
+
+    def __repr__(self):
+        return "Homogeneity(%s%s)" % (self.verdict,
+                                      ", degree=%s" % self.degree if self.degree else "")
+
+
+def homogeneity(expr, variables):
+    """The degree of homogeneity of expr (model-language text) in the named
+    variables, the others passive (`qdot form EXPR --vars ... --homogeneity`):
+    a Homogeneity; qdot.Error when expr does not read, ValueError when a
+    variable is not a name (as --vars reads them: pi, t' refused)."""
+    ctx = lib.qd_ctx_new()
+    if not ctx:
+        raise MemoryError("qdot: out of memory")
+    try:
+        diag = new("qd_diag")
+        f = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
+        if not f:
+            raise Error(ffi.string(diag.message).decode() or "cannot read the function")
+        if isinstance(variables, str):
+            variables = [variables]
+        names = ", ".join(variables).encode()
+        xs_c = ffi.new("const qd_expr *[]", max(1, len(variables)))
+        count = ffi.new("size_t *")
+        if lib.qd_qform_vars_read(ctx, names, xs_c, len(variables), count) != 0:
+            raise ValueError(cstr(lib.qd_ctx_message(ctx)))  # pi, t' (= 1), a name twice
+        xs = [xs_c[k] for k in range(count[0])]
+        h = new("qd_homog")
+        if lib.qd_homogeneity(ctx, f, len(xs), exprs(xs), h) != 0:
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        printed = []
+        for fmt in (lib.QD_RENDER_TEXT, lib.QD_RENDER_JSON):
+            buf = new("qd_buf")
+            if lib.qd_render_homog(ctx, h, len(xs), exprs(xs), fmt, buf) != 0:
+                lib.qd_buf_free(buf)
+                raise Error(cstr(lib.qd_ctx_message(ctx)))
+            printed.append(buf_text(buf))
+        return Homogeneity(tuple(printed))
+    finally:
+        lib.qd_ctx_free(ctx)

@@ -136,3 +136,89 @@ qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
         qd_ctx_error(ctx, st, "cannot print the quadratic form: %s", qd_status_str(st));
     return st;
 }
+
+/* ---- homogeneity (qd_homogeneity, Desloge App. 20) ------------------------ */
+
+static void homog_text(qd_ctx *ctx, qd_buf *b, const qd_homog *h, size_t n,
+                       const qd_expr *const *x) {
+    qd_buf_puts(b, "homogeneity in ");
+    for (size_t i = 0; i < n; i++)
+        qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(x[i]));
+    qd_buf_puts(b, " (Desloge App. 20: f(lambda x) = lambda^n f(x) for every lambda > 0)\n  f = ");
+    put(ctx, b, h->f);
+    qd_buf_puts(b, "\n  sum x_i df/dx_i = ");
+    put(ctx, b, h->euler);
+    qd_buf_puts(b, "\n");
+    switch (h->verdict) {
+    case QD_HOMOG_YES:
+        qd_buf_puts(b, "homogeneous of degree ");
+        put(ctx, b, h->degree);
+        qd_buf_puts(b, ": sum x_i df/dx_i = (");
+        put(ctx, b, h->degree);
+        qd_buf_puts(b, ") f (Euler's theorem and its converse)");
+        qd_zero_result_note(b, &h->test);
+        qd_buf_puts(b, "\n");
+        break;
+    case QD_HOMOG_EVERY:
+        qd_buf_puts(b, "f is 0: homogeneous of every degree\n");
+        break;
+    case QD_HOMOG_NO:
+        qd_buf_puts(b, "not homogeneous: f(x) f(4 x) - f(2 x)^2 is not 0, as it would be if "
+                       "f(lambda x) = lambda^n f(x)\n");
+        qd_zero_result_print(b, &h->test);
+        break;
+    case QD_HOMOG_UNDECIDED:
+        qd_buf_puts(b, "could not decide: (sum x_i df/dx_i)/f is not shown free of the variables, "
+                       "and no point shows f(x) f(4 x) != f(2 x)^2\n");
+        break;
+    }
+}
+
+static void homog_json(qd_ctx *ctx, qd_json *j, const qd_homog *h, size_t n,
+                       const qd_expr *const *x) {
+    qd_json_begin_object(j);
+    qd_json_key(j, "variables");
+    qd_json_begin_array(j);
+    for (size_t i = 0; i < n; i++)
+        qd_json_string(j, qd_expr_name(x[i]));
+    qd_json_end_array(j);
+    qd_json_key(j, "f");
+    qd_json_expr(j, ctx, h->f);
+    qd_json_key(j, "euler");
+    qd_json_expr(j, ctx, h->euler);
+    qd_json_key(j, "verdict");
+    qd_json_string(j, qd_homog_verdict_name(h->verdict));
+    qd_json_key(j, "homogeneous");
+    if (h->verdict == QD_HOMOG_UNDECIDED)
+        qd_json_null(j);
+    else
+        qd_json_bool(j, h->verdict != QD_HOMOG_NO);
+    qd_json_key(j, "degree");
+    qd_json_expr(j, ctx, h->degree);
+    qd_zero_result_json(j, &h->test);
+    qd_json_end_object(j);
+}
+
+qd_status qd_render_homog(qd_ctx *ctx, const qd_homog *h, size_t n, const qd_expr *const *x,
+                          qd_render_format fmt, qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && h && h->f && h->euler && (x || !n) && out);
+    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "a homogeneity prints as text or json");
+        return QD_ERR_ARG;
+    }
+    qd_status st = QD_OK;
+    if (fmt == QD_RENDER_JSON) {
+        qd_json j;
+        qd_json_init(&j, out);
+        homog_json(ctx, &j, h, n, x);
+        qd_buf_puts(out, "\n");
+        st = qd__render_json_status(&j, out, QD_OK);
+    } else {
+        homog_text(ctx, out, h, n, x);
+    }
+    if (st == QD_OK && out->failed)
+        st = QD_ERR_NOMEM;
+    if (st != QD_OK)
+        qd_ctx_error(ctx, st, "cannot print the homogeneity: %s", qd_status_str(st));
+    return st;
+}

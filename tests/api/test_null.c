@@ -1836,6 +1836,21 @@ static void null_form(void **state)
     /* n NULL */
     assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, "q", (const qd_expr * *)F.e, 1, NULL));
     reset(&F);
+    /* ---- qd_homogeneity */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(NULL, F.q, 1, (const qd_expr * const *)F.e, (qd_homog *)(void *)F.blob));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (qd_homog *)(void *)F.blob));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(F.ctx, F.q, 1, NULL, (qd_homog *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(F.ctx, F.q, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_homog_verdict_name */
+    /* no pointer argument */
     teardown(&F);
 }
 
@@ -4703,6 +4718,19 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, F.q, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_homog */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(NULL, NULL, 1, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(F.ctx, NULL, 1, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
     reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */
