@@ -38,49 +38,40 @@ static int check(cli_run *c) {
     return cli_usage_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
 }
 
-/* --homogeneity: a "no" exits 3, undecided 1. */
-static int homogeneity(qd_ctx *ctx, const qd_expr *f, const qd_expr *const *x, size_t n,
-                       const char *format) {
-    qd_homog h;
+/* The reduction, or (--homogeneity) the degree: a "no" exits 3, undecided 1. */
+static int answer(qd_ctx *ctx, const form_args *a, const qd_expr *phi, const qd_expr *const *x,
+                  size_t n) {
     qd_buf b = QD_BUF_INIT;
-    if (qd_homogeneity(ctx, f, n, x, &h) != QD_OK ||
-        qd_render_homog(ctx, &h, n, x, cli_render_format(format), &b) != QD_OK) {
+    qd_homog h = {.verdict = QD_HOMOG_YES};
+    qd_qform *f = a->homog ? NULL : qd_qform_reduce(ctx, phi, n, x);
+    qd_render_format fmt = cli_render_format(a->format);
+    bool ok = a->homog ? qd_homogeneity(ctx, phi, n, x, &h) == QD_OK &&
+                             qd_render_homog(ctx, &h, n, x, fmt, &b) == QD_OK
+                       : f && qd_render_qform(ctx, phi, f, fmt, &b) == QD_OK;
+    qd_qform_free(f);
+    if (!ok) {
         qd_buf_free(&b);
         return cli_diag_ctx(ctx);
     }
-    int rc = cli_emit(&b, "homogeneity");
-    return rc ? rc : h.verdict == QD_HOMOG_NO ? QD_EXIT_NO : h.verdict == QD_HOMOG_YES ||
-                     h.verdict == QD_HOMOG_EVERY ? QD_EXIT_OK : QD_EXIT_FAIL;
+    int rc = cli_emit(&b, a->homog ? "homogeneity" : "quadratic form");
+    return rc ? rc : h.verdict == QD_HOMOG_NO ? QD_EXIT_NO
+                   : h.verdict == QD_HOMOG_UNDECIDED ? QD_EXIT_FAIL : QD_EXIT_OK;
 }
 
 static int run(cli_run *c) {
     const form_args *a = (form_args *)c;
-    qd_ctx *ctx = c->ctx;
     qd_diag err;
-    const qd_expr *phi = qd_read(ctx, a->text, NULL, &err), *x[64];
+    const qd_expr *phi = qd_read(c->ctx, a->text, NULL, &err), *x[64];
     size_t n = 0;
-    qd_qform *f = NULL;
-    int rc = QD_EXIT_OK;
     if (!phi) {
         cli_diag_read("<form>", a->text, &err);
-        rc = QD_EXIT_USAGE;
-    } else if (qd_qform_vars_read(ctx, a->vars, x, 64, &n) != QD_OK) {
-        cli_diag_show("--vars", a->vars, qd_ctx_diag(ctx));
-        rc = cli_exit(qd_ctx_status(ctx));
-    } else if (a->homog) {
-        return homogeneity(ctx, phi, x, n, a->format);
-    } else if (!(f = qd_qform_reduce(ctx, phi, n, x))) {
-        rc = cli_diag_ctx(ctx);
+        return QD_EXIT_USAGE;
     }
-    if (f) {
-        qd_buf b = QD_BUF_INIT;
-        if (qd_render_qform(ctx, phi, f, cli_render_format(a->format), &b) == QD_OK)
-            fputs(qd_buf_str(&b), stdout);
-        rc = qd_ctx_status(ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(ctx);
-        qd_buf_free(&b);
+    if (qd_qform_vars_read(c->ctx, a->vars, x, 64, &n) != QD_OK) {
+        cli_diag_show("--vars", a->vars, qd_ctx_diag(c->ctx));
+        return cli_exit(qd_ctx_status(c->ctx));
     }
-    qd_qform_free(f);
-    return rc;
+    return answer(c->ctx, a, phi, x, n);
 }
 
 CLI_COMMAND(form, form_args, &form_spec, 0, offsetof(form_args, text), check, run, NULL)
