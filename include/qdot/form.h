@@ -1,7 +1,8 @@
 /*
  * qdot/form.h - real quadratic forms: Lagrange's reduction to a sum of
  * squares and Sylvester's law of inertia (Desloge, Classical Mechanics,
- * App. 24-27).
+ * App. 24-27); below them, any function's degree of homogeneity (App. 20)
+ * and periods (App. 31).
  *
  * phi(x) = sum_ij a_ij x_i x_j with a symmetric (App. 27 eqs. 1-3).
  * Lagrange's reduction (App. 27 Thm 3) completes the square on a nonzero
@@ -122,6 +123,48 @@ QD_API qd_status qd_homogeneity(qd_ctx *ctx, const qd_expr *f, size_t n,
  * verdict in words (JSON "verdict"). */
 QD_API const char *qd_homog_verdict_name(qd_homog_verdict v);
 
+/* ---- multiply periodic functions (Desloge App. 31) ------------------------
+ * f(x, y) is periodic in x with the period w when f(x + w, y) = f(x, y) for
+ * every x (eq. 1).  Integer combinations of periods are periods (Thms 1-3),
+ * and the periods have a fundamental system w(1..k), k <= r, of which every
+ * period is an integer combination (Thm 4, eq. 3).  For g given vectors w_j
+ * whose components are all rational multiples of one constant (the unit:
+ * 2 pi, pi, 1, ...), qd_periods_reduce finds that system for the lattice
+ * they generate: a basis by integer row reduction (Hermite's normal form of
+ * the integer matrix w L / unit), and each w_j's integer coordinates in it.
+ * With f given, each w_j is also tested as a period of f (qd_zero_test of
+ * f(x + w_j) - f(x)). */
+typedef struct qd_periods {
+    size_t g, r;              /* vectors given, variables */
+    const qd_expr *unit;      /* every component is a rational multiple of it */
+    size_t rank;              /* the fundamental system's size k <= min(g, r) */
+    const qd_expr **basis;    /* rank * r, row-major, in Hermite's normal form
+                                 (the first nonzero component of each positive) */
+    long *coords;             /* g * rank: w_j = sum_k coords[j rank + k] basis_k */
+    bool tested;              /* f was given */
+    qd_zero_result *test;     /* g: f(x + w_j) - f(x) zero-tested, when tested */
+} qd_periods;
+
+/* The fundamental system of the n-vectors w (g of them, row-major g * n:
+ * w[j n + i] the shift of x_i) and, when f is not NULL, the test of each as
+ * a period of f in the variables x.  QD_ERR_ARG for a component that is not
+ * a rational multiple of the unit (the first nonzero component), naming
+ * both; QD_ERR_TOOBIG when the integers outgrow a long.  NULL on failure,
+ * reason in ctx; free with qd_periods_free. */
+QD_API qd_periods *qd_periods_reduce(qd_ctx *ctx, const qd_expr *f, size_t n,
+                                     const qd_expr *const *x, size_t g,
+                                     const qd_expr *const *w);
+QD_API void qd_periods_free(qd_periods *p);
+
+/* Vectors of n components from text: "2*pi, 0; 0, 2*pi" (vectors separated
+ * by ';', components by ','), each component an expression, into a new
+ * array of *g * n expressions (*out; the caller frees it with
+ * qd_periods_vectors_free).  QD_ERR_PARSE or QD_ERR_ARG (a vector of
+ * another length, none given) located in text (qd_ctx_diag). */
+QD_API qd_status qd_periods_vectors_read(qd_ctx *ctx, const char *text, size_t n, size_t *g,
+                                         const qd_expr ***out);
+QD_API void qd_periods_vectors_free(const qd_expr **w);
+
 #ifdef __cplusplus
 }
 #endif
@@ -129,6 +172,7 @@ QD_API const char *qd_homog_verdict_name(qd_homog_verdict v);
 /* NULL (issue 30): a function of this header given NULL for a pointer it
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
- * returns, and every _free accepts NULL. An array whose count is 0 may be
- * NULL. */
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_periods_reduce (f). An array whose
+ * count is 0 may be NULL. */
 #endif

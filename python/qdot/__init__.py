@@ -22,12 +22,12 @@ from .sim import Result, Table, Rhs
 from .runs import Animation
 from .control import StateSpace, Lqr, lqr
 from .relativity import lorentz, proper_time, collide
-from .forms import Homogeneity, QuadraticForm, homogeneity, quadratic_form
+from .forms import Homogeneity, Periods, QuadraticForm, homogeneity, periods, quadratic_form
 from .field import Field
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
            "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
            "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Homogeneity",
-           "homogeneity", "Field"]
+           "homogeneity", "Periods", "periods", "Field"]
 from ._lib import VERSION as __version__

@@ -40,3 +40,16 @@ def test_homogeneity_witness():
 def test_homogeneity_refuses_constants():
     with pytest.raises(ValueError, match="not a variable name"):
         qdot.homogeneity("x^2", ["pi"])
+
+
+def test_periods_fundamental_system():
+    # Desloge App. 31 Thm 4: 2 pi and 4 pi/3 are periods of sin(3x), and
+    # their fundamental system is 2 pi/3 (2 pi = 3 e, 4 pi/3 = 2 e, eq. 3)
+    p = qdot.periods("sin(3*x)", ["x"], [["2*pi"], ["4*pi/3"]])
+    assert p.is_period == [True, True] and p.fundamental == [["2*pi/3"]]
+    assert p.coordinates == [[3], [2]] and p.rank == 1
+
+
+def test_periods_incommensurable():
+    with pytest.raises(qdot.Error, match="not a rational multiple"):
+        qdot.periods("x", ["x"], "1; sqrt(2)")

@@ -1851,6 +1851,37 @@ static void null_form(void **state)
     reset(&F);
     /* ---- qd_homog_verdict_name */
     /* no pointer argument */
+    /* ---- qd_periods_reduce */
+    /* ctx NULL */
+    assert_null(qd_periods_reduce(NULL, F.q, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_periods_reduce(F.ctx, F.q, 1, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* w NULL */
+    assert_null(qd_periods_reduce(F.ctx, F.q, 1, (const qd_expr * const *)F.e, 1, NULL));
+    reset(&F);
+    /* ---- qd_periods_free */
+    /* p NULL */
+    qd_periods_free(NULL);
+    reset(&F);
+    /* ---- qd_periods_vectors_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(NULL, "q", 1, F.z, NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(F.ctx, NULL, 1, F.z, NULL));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(F.ctx, "q", 1, NULL, NULL));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(F.ctx, "q", 1, F.z, NULL));
+    reset(&F);
+    /* ---- qd_periods_vectors_free */
+    /* w NULL */
+    qd_periods_vectors_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -4731,6 +4762,22 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_homog(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_periods */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(NULL, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, NULL, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
     reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */
