@@ -209,6 +209,18 @@ QD_API void qd_symmetry_json(qd_json *j, const qd_symmetry *sym, const qd_eom *e
  * Nothing when sym is not reduced on e's coordinates. */
 QD_API void qd_symmetry_json_modes(qd_json *j, const qd_symmetry *sym, const qd_eom *e);
 
+/* qd_modes_plot with a symmetry: the modes sym reduced (sym->omega2,
+ * sym->shapes), ordered and paired as its irreps are, each panel noting its
+ * irrep ("A1", "E"), when sym is a group of order > 1 with its modes; res's
+ * own modes otherwise (sym NULL, the identity alone, or a cyclic fast path,
+ * whose harmonics are not a point group's).  Arguments and failures as
+ * qd_modes_plot's. */
+QD_API qd_status qd_symmetry_modes_plot(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                        size_t nvals, const qd_expr *const *syms,
+                                        const double *vals, const qd_modes_result *res,
+                                        const qd_symmetry *sym, const char *title,
+                                        struct qd_plot **out);
+
 /* The fast path's modes as text appended to out: the shift and the group
  * C_N, then each mode's w^2, w, harmonic k and multiplicity.  QD_ERR_ARG
  * for an empty c (n = 0); QD_ERR_NOMEM when out failed. */
