@@ -9,7 +9,6 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include "qdot/json.h"
 #include "state.h"
 
 typedef struct ao_run {
@@ -57,31 +56,9 @@ static int parse_times(ao_run *r) {
 
 static int emit(ao_run *r, double S, double dS) {
     qd_buf b = QD_BUF_INIT;
-    if (cli_json(r->format)) {
-        qd_json j;
-        qd_json_init(&j, &b);
-        qd_json_begin_object(&j);
-        qd_json_key(&j, "model");
-        qd_json_string(&j, r->c.mf.path);
-        qd_json_key(&j, "t0");
-        qd_json_number(&j, r->t0);
-        qd_json_key(&j, "t1");
-        qd_json_number(&j, r->t1);
-        qd_json_key(&j, "action");
-        qd_json_number(&j, S);
-        qd_json_key(&j, "first_variation");
-        qd_json_number(&j, dS);
-        qd_json_end_object(&j);
-        b.failed = b.failed || !qd_json_ok(&j);
-        qd_buf_puts(&b, "\n");
-    } else {
-        qd_buf_puts(&b, "action: ");
-        qd_buf_put_result(&b, S, 1);
-        qd_buf_puts(&b, "\nfirst_variation: ");
-        qd_buf_put_result(&b, dS, 1);
-        qd_buf_puts(&b, "\n");
-    }
-    return cli_emit(&b, "action");
+    return cli_emit_status(r->c.ctx, qd_path_action_of_print(r->c.ctx, r->c.mf.path, r->t0, r->t1,
+                                                            S, dS, cli_json(r->format), &b),
+                           &b, "action");
 }
 
 static int check(cli_run *c) {

@@ -16,7 +16,6 @@
 #include <sys/stat.h>
 #include "eom_out.h"
 #include "qdot/codegen.h"
-#include "qdot/speeds.h"
 
 
 typedef struct cg_run {
@@ -63,41 +62,21 @@ static int write_text(const char *dir, const char *name, const char *ext, const 
     return rc;
 }
 
-/* A model with speeds: the first-order system in (q, u) (qd_codegen_speeds_c). */
-static int generate_speeds(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c, qd_buf *h) {
-    if (r->eliminate)
-        return cli_usage_error("--eliminate is for models without speeds: the speeds already take "
-                               "the constraints into account");
-    qd_speeds_eom *se = qd_speeds_derive(ctx, mf->model, NULL);
-    if (!se)
-        return cli_eom_derive_error(ctx, mf);
-    int rc = QD_EXIT_OK;
-    if (qd_codegen_speeds_c(ctx, mf->model, se, r->name, c, h) != QD_OK)
-        rc = cli_diag_ctx(ctx);
-    qd_speeds_eom_free(se);
-    return rc;
-}
-
-static int generate(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_eom **e, qd_buf *c,
-                    qd_buf *h) {
+/* The library's files for the model (qd_codegen_model_c). */
+static int generate(qd_ctx *ctx, cg_run *r, cli_model_file *mf, qd_buf *c, qd_buf *h) {
     int rc = cli_load(ctx, r->c.file, r->sets.n, r->sets.items, "codegen", mf);
-    if (rc != QD_EXIT_OK)
+    if (rc != QD_EXIT_OK || qd_codegen_model_c(ctx, mf->model, r->eliminate, r->name, c, h) ==
+                                QD_OK)
         return rc;
-    if (qd_model_nspeeds(mf->model))
-        return generate_speeds(ctx, r, mf, c, h);
-    qd_eom_opts opts = {r->eliminate};
-    if (!(*e = qd_eom_derive_opts(ctx, mf->model, &opts)))
-        return cli_eom_derive_error(ctx, mf);
-    if (qd_codegen_c(ctx, mf->model, *e, r->name, c, h) != QD_OK)
-        return cli_diag_ctx(ctx);
-    return QD_EXIT_OK;
+    if (qd_ctx_status(ctx) == QD_ERR_ARG && !strcmp(qd_ctx_diag(ctx)->name, "eliminate"))
+        return cli_usage_error("--%s", qd_ctx_message(ctx));
+    return cli_eom_derive_error(ctx, mf);
 }
 
 static int run(cli_run *cr) {
     cg_run *r = (cg_run *)cr;
-    qd_eom *e = NULL;
     qd_buf c = QD_BUF_INIT, h = QD_BUF_INIT;
-    int rc = generate(cr->ctx, r, &cr->mf, &e, &c, &h);
+    int rc = generate(cr->ctx, r, &cr->mf, &c, &h);
     /* -o names the directory to write into: made when missing (not its parents) */
     if (rc == QD_EXIT_OK && mkdir(r->dir, 0777) != 0 && errno != EEXIST) {
         cli_diag_error("cannot create the directory %s: %s", r->dir, strerror(errno));
@@ -109,7 +88,6 @@ static int run(cli_run *cr) {
         rc = write_text(r->dir, r->name, "h", &h);
     qd_buf_free(&c);
     qd_buf_free(&h);
-    qd_eom_free(e);
     return rc;
 }
 

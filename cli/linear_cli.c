@@ -6,8 +6,6 @@
  */
 #include "linear_cli.h"
 
-#include <stdlib.h>
-#include <string.h>
 #include "eom_out.h"
 #include "model_cli.h"
 
@@ -47,33 +45,15 @@ int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q,
     return st == QD_OK ? QD_EXIT_OK : cli_state_diag(r->c.ctx, what, text);
 }
 
-/* The search in the default box (qd_equilibria_default_box), --box's
- * ranges over it. */
+/* The library's search from the options (qd_equilibria_find_text). */
 int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out) {
-    size_t n = r->e->n;
+    const char *where = NULL;
     qd_ctx *ctx = r->c.ctx;
-    double *q = malloc((n + 1) * sizeof *q), *lo = malloc((n + 1) * sizeof *lo);
-    double *hi = malloc((n + 1) * sizeof *hi);
-    bool *angle = malloc((n + 1) * sizeof *angle);
-    int rc = q && lo && hi && angle ? QD_EXIT_OK : cli_out_of_memory();
-    qd_equilibria_opts o = {.near = near ? q : NULL, .lo = box ? lo : NULL,
-                            .hi = box ? hi : NULL, .numeric_only = box != NULL};
-    if (rc == QD_EXIT_OK && qd_equilibria_default_box(ctx, r->e, r->c.mf.model, angle, lo, hi) !=
-                                QD_OK)
-        rc = cli_diag_ctx(ctx);
-    if (rc == QD_EXIT_OK && near)
-        rc = cli_lin_point(r, "--near", near, q, NULL);
-    if (rc == QD_EXIT_OK && box && qd_linpoint_read_box(ctx, &r->pt, box, lo, hi) != QD_OK)
-        rc = cli_state_diag(ctx, "--box", box);
-    if (rc == QD_EXIT_OK && qd_equilibria_find(ctx, r->e, r->c.mf.model, r->pt.st.n,
-                                               r->pt.st.syms, r->pt.st.vals, &o, out) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(ctx));
-        /* a constraint the manifold search does not take (with t, with velocities) */
-        rc = qd_ctx_status(ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
-    }
-    free(q);
-    free(lo);
-    free(hi);
-    free(angle);
-    return rc;
+    if (qd_equilibria_find_text(ctx, &r->pt, near, box, out, &where) == QD_OK)
+        return QD_EXIT_OK;
+    if (where)
+        return cli_state_diag(ctx, where == near ? "--near" : "--box", where);
+    cli_diag_error("%s", qd_ctx_message(ctx));
+    /* a constraint the manifold search does not take (with t, with velocities) */
+    return qd_ctx_status(ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;
 }

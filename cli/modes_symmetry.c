@@ -1,9 +1,8 @@
 /*
- * cli/modes_symmetry.c - `qdot modes --symmetry`: runs what libqdot
- * chooses (qd_symmetry_fast_cell): the cyclic fast path (qd_cyclic_solve),
- * timed against the full eigenproblem for a note, or the group
- * (qd_symmetry_find, qd_symmetry_reduce), with a note on stderr when there
- * is none.  The printing is the library's (qd_modes_print with the
+ * cli/modes_symmetry.c - `qdot modes --symmetry`: what libqdot chooses
+ * and computes (qd_modes_symmetry: the cyclic fast path, or the group), its
+ * note on stderr when there is none, and the fast path timed against the
+ * full eigenproblem for a note.  The printing is the library's (qd_modes_print with the
  * symmetry, qdot/symmetry.h).
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
@@ -18,52 +17,40 @@ static double seconds(void) {
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-/* The fast path, timed against the full eigenproblem for the note. */
-static int fast_path(cli_lin_run *lr, const qd_linear *lin, size_t cell, cli_sym_run *s) {
+/* The full eigenproblem's time, for the fast path's note. */
+static void fast_note(const cli_lin_run *lr, const qd_linear *lin, const qd_cyclic_modes *c,
+                      double fast) {
     qd_modes_result full;
     double t0 = seconds();
     qd_status st = qd_modes_solve(lr->c.ctx, lin, &full);
     double t1 = seconds();
-    if (st == QD_OK)
-        st = qd_cyclic_solve(lr->c.ctx, lin, cell, &s->cyc);
-    double t2 = seconds();
     qd_modes_result_free(&full);
     if (st != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
-        return QD_EXIT_FAIL;
+        qd_ctx_clear_error(lr->c.ctx);
+        return;
     }
-    s->active = true;
     fprintf(stderr, "qdot: note: cyclic fast path: %zu cells of %zu coordinate%s, %zu harmonics "
             "solved in %.3g s against %.3g s for the full eigenproblem (%.0fx faster)\n",
-            s->cyc.cells, cell, cell == 1 ? "" : "s", s->cyc.cells / 2 + 1, t2 - t1, t1 - t0,
-            (t1 - t0) / fmax(t2 - t1, 1e-9));
-    return QD_EXIT_OK;
+            c->cells, c->cell, c->cell == 1 ? "" : "s", c->cells / 2 + 1, fast, t1 - t0,
+            (t1 - t0) / fmax(fast, 1e-9));
 }
 
+/* The library's choice and computation (qd_modes_symmetry); its note. */
 int cli_sym_compute(cli_lin_run *lr, const qd_linear *lin, cli_sym_run *s) {
-    size_t cell = qd_symmetry_fast_cell(lin);
-    if (cell)
-        return fast_path(lr, lin, cell, s);
-    qd_status st = qd_symmetry_find(lr->c.ctx, lr->e, lr->c.mf.model, lr->pt.st.n, lr->pt.st.syms,
-                                    lr->pt.st.vals, lin, &s->sym);
-    if (st == QD_ERR_NOMEM)
-        return cli_out_of_memory();
-    if (st != QD_OK) {
-        fprintf(stderr, "qdot: note: --symmetry: %s; the plain modes follow\n",
-                qd_ctx_message(lr->c.ctx));
-        qd_ctx_clear_error(lr->c.ctx);
-        return QD_EXIT_OK;
-    }
-    if (s->sym.order <= 1) {
-        fprintf(stderr, "qdot: note: --symmetry: the equilibrium has no symmetry (no operation "
-                "but the identity leaves M0 and K0 invariant); the plain modes follow\n");
-        return QD_EXIT_OK;
-    }
-    if (qd_symmetry_reduce(lr->c.ctx, lin, &s->sym) != QD_OK) {
-        cli_diag_error("%s", qd_ctx_message(lr->c.ctx));
-        return QD_EXIT_FAIL;
-    }
-    s->active = true;
+    qd_buf note = QD_BUF_INIT;
+    const qd_state *st = &lr->pt.st;
+    double t0 = seconds();
+    qd_status rc = qd_modes_symmetry(lr->c.ctx, lr->e, lr->c.mf.model, st->n, st->syms,
+                                     st->vals, lin, &s->sym, &s->cyc, &note);
+    double t1 = seconds();
+    if (rc == QD_OK && qd_buf_str(&note)[0])
+        fprintf(stderr, "qdot: note: --symmetry: %s\n", qd_buf_str(&note));
+    qd_buf_free(&note);
+    if (rc != QD_OK)
+        return cli_diag_ctx(lr->c.ctx);
+    s->active = s->cyc.n > 0 || s->sym.order > 1;
+    if (s->cyc.n)
+        fast_note(lr, lin, &s->cyc, t1 - t0);
     return QD_EXIT_OK;
 }
 

@@ -108,6 +108,17 @@ QD_API qd_status qd_codegen_c(qd_ctx *ctx, const qd_model *m, const qd_eom *e, c
 QD_API qd_status qd_codegen_speeds_c(qd_ctx *ctx, const qd_model *m, const struct qd_speeds_eom *e,
                                      const char *prefix, qd_buf *c_text, qd_buf *h_text);
 
+/* What `qdot codegen` writes for m (the files NAME.c and NAME.h): for a
+ * model with `speeds` the system in (q, u) (qd_speeds_derive,
+ * qd_codegen_speeds_c), else Lagrange's equations (qd_eom_derive_opts with
+ * eliminate: the holonomic constraints solved for a coordinate substituted;
+ * qd_codegen_c).  eliminate with speeds is QD_ERR_ARG about the option
+ * "eliminate" (the speeds already take the constraints into account).  A
+ * derivation's error is left in ctx as the derivation recorded it
+ * (qd_model_locate places it in the model).  h_text may be NULL. */
+QD_API qd_status qd_codegen_model_c(qd_ctx *ctx, const qd_model *m, bool eliminate,
+                                    const char *prefix, qd_buf *c_text, qd_buf *h_text);
+
 /* Generate, compile (or reuse) and load.  cache_dir NULL: $XDG_CACHE_HOME/qdot,
  * else $HOME/.cache/qdot (created 0700 when missing).  On failure *out is zeroed. */
 QD_API qd_status qd_native_load(qd_ctx *ctx, const qd_model *m, const qd_eom *e, const char *cache_dir,

@@ -194,6 +194,19 @@ QD_API qd_status qd_modes_at_initial(qd_ctx *ctx, const struct qd_linpoint *p,
 
 /* ---- the modes printed (src/linear/modes_print.c) ------------------------- */
 
+/* The largest generalized force at rest (qd_eom_rest_residual) a point may
+ * leave and still be taken for an equilibrium. */
+#define QD_MODES_REST_TOL 1e-8
+
+/* The note on a point that is not an equilibrium, the one `qdot modes`
+ * prints and Python's Model.modes warns with: true when residual (the
+ * generalized forces at rest there, qd_modes_at.residual) is above
+ * QD_MODES_REST_TOL, and then, unless out is NULL, "not an equilibrium: the
+ * generalized forces at rest are R there; the linearization drops them"
+ * appended to out (no newline).  false, out untouched, otherwise (NaN
+ * included: no residual was measured). */
+QD_API bool qd_modes_rest_note(double residual, qd_buf *out);
+
 /* The small oscillations about one point, for printing: what `qdot modes`
  * computes.  e, q0, lin and res are required; every other pointer may be
  * NULL (not there). */
@@ -222,7 +235,7 @@ typedef struct qd_modes_report {
  *
  * Text: "equilibrium: q1 = VALUE, ... (KIND of the potential)" (exact values
  * where pt has them; "about: " and numbers for a point given), a note when
- * residual > 1e-8 (not an equilibrium), M0, C0 and G0 (when not zero) and
+ * qd_modes_rest_note (not an equilibrium), M0, C0 and G0 (when not zero) and
  * K0; then the symmetry's text (qd_symmetry_print / qd_cyclic_print) when
  * sym or cyc is given, else the conservative modes (w^2, w, period,
  * multiplicity, shape; the exact w^2) or the state-space eigenvalues; the

@@ -153,6 +153,15 @@ QD_API qd_status qd_path_find_energy(qd_ctx *ctx, const qd_model *m, const qd_eo
 QD_API qd_status qd_path_action_of(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                    const qd_expr *const *path, double t0, double t1,
                                    double *action, double *first_variation);
+/* The result of qd_path_action_of as `qdot action-of` prints it, appended
+ * to out: text "action: S" and "first_variation: R" lines (12 significant
+ * digits, qd_buf_put_result), or (json) one JSON document and a newline
+ * with "model" (source, the model's name), "t0", "t1", "action" and
+ * "first_variation", every digit.  QD_ERR_NUMERIC (JSON) when a number is
+ * not finite; QD_ERR_NOMEM. */
+QD_API qd_status qd_path_action_of_print(qd_ctx *ctx, const char *source, double t0, double t1,
+                                         double action, double first_variation, bool json,
+                                         qd_buf *out);
 
 
 /* One end of a path as the command line and Python give it, "x=0, y=free,

@@ -135,7 +135,8 @@ QD_API qd_status qd_eom_request_render(qd_ctx *ctx, const qd_model *m, const qd_
  * parameter without a value) is ok, with judged false. */
 typedef struct qd_check_verdict {
     bool ok, judged;
-    const char *reason; /* NULL when ok */
+    const char *reason; /* the machine code ("mass_not_positive_definite",
+                         * "constraint_not_real"; JSON "code"), NULL when ok */
     char message[320];
     const char *about;  /* a coordinate or a constraint name */
     double witness;
@@ -156,8 +157,8 @@ QD_API qd_status qd_check_verdict_of(qd_ctx *ctx, const qd_model *m, const qd_eo
  * depend on, forces, constraints and their kinds, impulsive statements,
  * cyclic coordinates, time dependence and the energy integral, the size of
  * the equations (nothing when v says "no": the caller shows the message at
- * its statement); in JSON the same as data with "ok", and "reason",
- * "message" and "witness" for a "no".  QD_ERR_ARG for another format. */
+ * its statement); in JSON the same as data with "ok", and "code" (v->reason),
+ * "reason" (its English), "message" and "witness" for a "no".  QD_ERR_ARG for another format. */
 QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                  const qd_render_opts *o, const qd_check_verdict *v,
                                  qd_render_format fmt, qd_buf *out);

@@ -177,6 +177,22 @@ QD_API void qd_cyclic_modes_free(qd_cyclic_modes *c);
  * group (qd_symmetry_find, qd_symmetry_reduce). */
 QD_API size_t qd_symmetry_fast_cell(const qd_linear *lin);
 
+/* What `qdot modes --symmetry` and Python's Model.modes(symmetry=True)
+ * compute about the point syms/vals (lin its linearization there, e
+ * derived from m): the cyclic fast path when qd_symmetry_fast_cell gives a
+ * cell (cyc filled, cyc->n > 0), else the group (qd_symmetry_find, then
+ * qd_symmetry_reduce: sym filled, order > 1).  When the point has no
+ * symmetry (order 1) or its group cannot be had (qd_symmetry_find failed
+ * other than for memory: damped, too large), neither is filled, a sentence
+ * saying why, ending "; the plain modes follow", is appended to note, the
+ * error is cleared and QD_OK returned: the plain modes stand.  sym and cyc
+ * are zeroed first; free both (qd_symmetry_free, qd_cyclic_modes_free),
+ * also after a failure. */
+QD_API qd_status qd_modes_symmetry(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                                   const qd_expr *const *syms, const double *vals,
+                                   const qd_linear *lin, qd_symmetry *sym, qd_cyclic_modes *cyc,
+                                   qd_buf *note);
+
 /* ---- printed (src/linear/symmetry_print.c) ---------------------------------
  *
  * What `qdot modes --symmetry` prints in place of the plain modes (the

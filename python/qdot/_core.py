@@ -120,7 +120,7 @@ class Core:
         """text parsed with params [(name, value)] as parameter values, fixed
         into the formulas or kept symbols as the library's rule says for the
         command named derivation (qd_model_opts_for)."""
-        self.ctx = self.model = self._eom = None
+        self.ctx = self.model = self._eom = self._eom_elim = None
         self.ctx = lib.qd_ctx_new()
         if not self.ctx:
             raise MemoryError("qdot: out of memory")
@@ -145,6 +145,8 @@ class Core:
         """Free the equations, the model, then the context that owns their nodes."""
         if self._eom:
             lib.qd_eom_free(self._eom)
+        if self._eom_elim:
+            lib.qd_eom_free(self._eom_elim)
         if self.model:
             lib.qd_model_free(self.model)
         if self.ctx:
@@ -185,6 +187,18 @@ class Core:
                 raise self.error(cls=ModelError)
             self._eom = e
         return self._eom
+
+    def eom_eliminated(self):
+        """The qd_eom `qdot equilibria`, `modes` and `linearize` analyse: the
+        holonomic constraints that solve for a coordinate eliminated
+        (qd_eom_opts.eliminate; derived once)."""
+        if not self._eom_elim:
+            e = lib.qd_eom_derive_opts(self.ctx, self.model, new("qd_eom_opts",
+                                                                 {"eliminate": True}))
+            if not e:
+                raise self.error(cls=ModelError)
+            self._eom_elim = e
+        return self._eom_elim
 
     def eom_ptr(self):
         """The qd_eom pointer itself, for calls that take it."""

@@ -7,14 +7,12 @@
 # (whose context records the errors of a later lqr()).
 """State-space form and linear-quadratic regulation (internal module)."""
 
-import numbers
-
 import numpy as np
 
 import json as _json
 
-from ._core import Error, ModelError, NumericalError, format_diag, name_of, number_expr
-from ._lib import ffi, lib, new, buf_text, cstr, exprs, doubles, doubles_of, FLOATS
+from ._core import Error, NumericalError, name_of
+from ._lib import ffi, lib, new, buf_text, cstr, doubles, doubles_of, FLOATS
 from . import commands as _commands
 
 # the words of each qd_care_failure (qdot/control.h), by its enum value
@@ -32,49 +30,28 @@ def _matrix(ptr, rows, cols):
     return doubles_of(ptr, rows * cols).reshape(rows, cols)
 
 
-def _point_value(core, name, value):
-    """A value of the operating point as an exact expression: text is read
-    in the model language ("pi", "1/2"), numbers go in as written."""
-    if isinstance(value, str):
-        diag = new("qd_diag")
-        x = lib.qd_read(core.ctx, value.encode(), new("qd_read_opts", {"new_symbols": False}),
-                        diag)
-        if not x:
-            lib.qd_ctx_clear_error(core.ctx)
-            raise ModelError(format_diag(diag, "about " + name, value.encode()), diag,
-                             "about " + name)
-        return x
-    if not isinstance(value, numbers.Real) or isinstance(value, bool):
-        raise Error("about: %s takes a number or text, not %r" % (name, value))
-    return number_expr(core.ctx, "about " + name, value)
-
-
-def point(core, about):
-    """The symbols and exact values of the operating point {name: value};
-    names are coordinates, velocities "NAME'", inputs and "t"."""
-    coords = core.coords()
-    syms = (coords + [lib.qd_jet(core.ctx, c, 1) for c in coords] +
-            [lib.qd_model_input(core.model, k) for k in range(lib.qd_model_ninputs(core.model))]
-            + [lib.qd_time(core.ctx)])
-    names = [name_of(x) for x in syms]
-    keys, vals = [], []
-    for name, value in about.items():
-        if name not in names:
-            raise Error("about: '%s' is not a coordinate, velocity or input of the model "
-                        "(%s)" % (name, ", ".join(names)))
-        keys.append(syms[names.index(name)])
-        vals.append(_point_value(core, name, value))
-    return keys, vals
-
-
 def linearize(core, about):
-    """Model.linearize's work (see there)."""
-    keys, vals = point(core, about)
+    """Model.linearize's work (see there): qd_linearize_about on the
+    equations `qdot linearize` takes (holonomic constraints eliminated), the
+    point read from about's text as --about is."""
+    from .linear import located
+    if about is not None and not isinstance(about, (dict, str)):
+        raise TypeError("linearize: about is a dict {name: value} or text, not %s"
+                        % type(about).__name__)
+    e = core.eom_eliminated()
+    if e.ncon:
+        raise Error("linearize: a model that keeps constraints with multipliers is not "
+                    "linearized from Python yet (`qdot linearize` reduces it onto the "
+                    "constraints)")
+    text = _commands.text_arg(about, "about") if about else None
     out = new("qd_statespace")
     try:
-        core.check(lib.qd_linearize(core.ctx, core.eom_ptr(), core.model, len(keys),
-                                    exprs(keys), exprs(vals), out))
-        ss = StateSpace(core, out, dict(about))
+        if lib.qd_linearize_about(core.ctx, e, core.model,
+                                  text if text is not None else ffi.NULL, out) != lib.QD_OK:
+            if text is not None and lib.qd_ctx_diag(core.ctx).located:
+                raise located(core, "about", ffi.string(text))
+            raise core.error()
+        ss = StateSpace(core, out, dict(about) if isinstance(about, dict) else about or {})
         ss.output = _commands.output(core, "linearize", lambda buf: lib.qd_statespace_render(
             core.ctx, out, ffi.NULL, lib.QD_SS_JSON, buf))
         return ss

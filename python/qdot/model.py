@@ -18,6 +18,7 @@ from . import sim as _sim
 from . import runs as _runs
 from . import control as _control
 from . import commands as _commands
+from . import linear as _linear
 
 
 class _Printed:
@@ -185,12 +186,29 @@ class Modes(list):
     2n state-space eigenvalues s (numpy complex array); stable: 1 stable,
     0 unstable, -1 borderline (qd_modes_result.stable)."""
 
+    output = None  # the qdot.Output of `qdot modes --format json`
+    choice_note = None  # which equilibrium the library chose, when it chose
+    equilibrium = None  # the Equilibrium the point is, or None for a point given
+    residual = None  # the generalized forces left at rest there
+
     def __init__(self, modes, about, conservative, eigenvalues, stable):
         super().__init__(modes)
         self.about = about
         self.conservative = conservative
         self.eigenvalues = eigenvalues
         self.stable = stable
+
+    @property
+    def json(self):
+        """The dict `qdot modes FILE --format json` prints."""
+        return self.output.json
+
+    def __getattr__(self, name):
+        # the other JSON keys (mass_matrix, frequencies, verdict, symmetry, ...)
+        out = self.__dict__.get("output") or type(self).output
+        if out is not None and name in out:
+            return out[name]
+        raise AttributeError("Modes has no field %r" % name)
 
 
 class _SpeedsHandle:
@@ -962,7 +980,7 @@ class Model:
     def check(self):
         """The verdict and summary of `qdot check` (qd_check_verdict_of,
         qd_render_check): a qdot.Output whose keys are those of `qdot check
-        --format json` ("ok"; "reason", "message", "witness" for a no)."""
+        --format json` ("ok"; "code", "reason", "message", "witness" for a no)."""
         core = self._core
         v = new("qd_check_verdict")
         core.check(lib.qd_check_verdict_of(core.ctx, core.model, core.eom_ptr(), v))
@@ -971,96 +989,49 @@ class Model:
         return _commands.output(core, "check", lambda buf: lib.qd_render_check(
             core.ctx, core.model, core.eom_ptr(), o, v, lib.QD_RENDER_JSON, buf))
 
-    def equilibria(self):
+    def equilibria(self, near=None, box=None):
         """Every equilibrium found (an Equilibria: a list of Equilibrium,
-        sorted by q): exact where the equations solve in closed form, else by
-        a multi-start Newton search over the default box
-        (qd_equilibria_find).  Its other attributes are the keys of `qdot
+        sorted by q), as `qdot equilibria` finds them (qd_equilibria_find_text
+        on the equations with the holonomic constraints eliminated): exact
+        where the equations solve in closed form, else by a multi-start
+        Newton search over the default box.  near ({coordinate: value} or
+        "q1=VALUE, ..."; an Equilibrium): Newton from there only, as --near;
+        box ({coordinate: (low, high)} or "q1=LOW:HIGH, ..."): the numeric
+        search there, as --box.  Its other attributes are the keys of `qdot
         equilibria --format json` (qd_equilibria_print): method, exact,
         continuum, equilibria (each with equilibrium, exact, kind,
         hessian_signs, symmetric, residual); .json is that dict."""
-        core = self._core
-        syms, vals = self._rest_state()
-        out = new("qd_equilibria")
-        try:
-            core.check(lib.qd_equilibria_find(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                              exprs(syms), doubles(vals), ffi.NULL, out))
-            found = Equilibria(self._equilibrium(out.pts[k], out.n) for k in range(out.count))
-            found.output = _commands.output(core, "equilibria", lambda buf: (
-                lib.qd_equilibria_print(core.ctx, core.eom_ptr(), out, True, buf)))
-            return found
-        finally:
-            lib.qd_equilibria_free(out)
+        return _linear.equilibria(self._for("equilibria"), near, box)
 
-    def _rest_state(self):
-        """The model's initial state with every velocity 0."""
-        syms, vals = self._core.state()
-        n = len(self._core.coords())
-        vals[n:2 * n] = [0.0] * n  # at rest
-        return syms, vals
-
-    def _equilibrium(self, pt, n):
-        """An Equilibrium from the C struct pt (n coordinates)."""
-        names = [name_of(self._core.eom().q[j]) for j in range(n)]
-        q = {names[j]: pt.q[j] for j in range(n)}
-        exact = ({names[j]: self._core.text_of(pt.exact[j]) for j in range(n)}
-                 if pt.exact else None)
-        kind = cstr(lib.qd_eq_kind_name(pt.kind))
-        return Equilibrium(q, exact, kind, pt.residual)
-
-    def modes(self, about=None):
-        """Small oscillations about a point at rest (a Modes list of Mode).
-
-        about: {coordinate: value} or an Equilibrium; None chooses as
-        `qdot modes` does (qd_equilibria_choose: the minimum nearest the
-        initial state, or the lowest).  Coordinates not named are 0."""
-        core = self._core
-        e = core.eom()
-        syms, vals = self._rest_state()
-        if about is None:
-            about = self._chosen(syms, vals)
-        if isinstance(about, Equilibrium):
-            about = about.q
-        names = [name_of(c) for c in core.coords()]
-        for name, value in about.items():
-            if name not in names:
-                raise Error("modes: '%s' is not a coordinate (%s)" % (name, ", ".join(names)))
-        point = {name: float(about.get(name, 0.0)) for name in names}
-        vals[:len(names)] = [point[name] for name in names]
-        return self._modes_at(e, syms, vals, point)
-
-    def _chosen(self, syms, vals):
-        """The equilibrium `qdot modes` would choose (qd_equilibria_choose)."""
-        core = self._core
-        choice = new("qd_equilibrium_choice")
-        try:
-            core.check(lib.qd_equilibria_choose(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                                exprs(syms), doubles(vals), choice))
-            if not choice.pt:
-                raise Error("modes: no equilibrium found; give about={...}")
-            return self._equilibrium(choice.pt, choice.found.n)
-        finally:
-            lib.qd_equilibrium_choice_free(choice)
-
-    def _modes_at(self, e, syms, vals, point):
-        """qd_linear_about and qd_modes_solve at the state syms = vals."""
-        core = self._core
-        lin, res = new("qd_linear"), new("qd_modes_result")
-        try:
-            core.check(lib.qd_linear_about(core.ctx, core.eom_ptr(), core.model, len(syms),
-                                           exprs(syms), doubles(vals), lin))
-            core.check(lib.qd_modes_solve(core.ctx, lin, res))
-            n = res.n
-            names = [name_of(e.q[j]) for j in range(n)]
-            eig = np.array([complex(res.eig_re[k], res.eig_im[k]) for k in range(res.neig)])
-            modes = []
-            if res.conservative:
-                modes = [Mode(res.omega2[j], {names[i]: res.shapes[i * n + j]
-                                              for i in range(n)}) for j in range(n)]
-            return Modes(modes, point, bool(res.conservative), eig, res.stable)
-        finally:
-            lib.qd_modes_result_free(res)
-            lib.qd_linear_free(lin)
+    def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False,
+              independent=None):
+        """Small oscillations about a point at rest (a Modes list of Mode),
+        as `qdot modes` takes it: about ({coordinate: value}, the others 0,
+        an Equilibrium, or "q1=VALUE, ..." text; --about), at_equilibrium
+        (N, 1-based, as equilibria() lists them; --at-equilibrium), or
+        neither: the library's choice (qd_modes_at_choose: a minimum of the
+        potential nearest the model's `initial` state, or of lowest V), said
+        in .choice_note.  A point that is not an equilibrium gives the
+        command's note as a UserWarning (qd_modes_rest_note).  initial
+        ("q1=VALUE, q1'=VALUE" or a dict; --initial): the motion from there
+        in normal coordinates (the JSON's Q0, Q0_dot).  symmetry=True
+        (--symmetry): the point's group and the modes labelled by irreps
+        (qd_modes_symmetry) in the JSON's "symmetry" and "modes"; a point
+        without symmetry gives the library's note as a UserWarning.  The
+        other attributes are the keys of `qdot modes --format json`
+        (qd_modes_print): equilibrium, residual, choice, mass_matrix,
+        stiffness_matrix, frequencies, verdict, ...; .json is that dict.
+        A model that keeps constraints with multipliers: the modes on the
+        constraint manifold (qd_constrained_at_solve), over the independent
+        coordinates independent names ("x" or a list; --independent) or
+        the library chooses, the JSON's keys those of
+        qd_constrained_modes_print (independent, dependent, multipliers, M,
+        K, modes, ...).  A model with `speeds`: the eigenvalues of the
+        reduced system about about's coordinates and speeds, or the first
+        equilibrium (qd_speeds_modes_print's keys: state, kept, ignorable,
+        eigenvalues, verdict)."""
+        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry,
+                             independent)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from
@@ -1223,6 +1194,63 @@ class Model:
         --draw, --trace and --spring; the rest as simulate's."""
         return _runs.animate(self._for("animate"), t_end, draw, trace, spring, method, rtol,
                              atol, dt, step, initial, max_steps, speeds)
+
+    def action_of(self, path, t):
+        """The action of a trial path and the size of its first variation
+        (`qdot action-of FILE --path ... --t T0:T1`, qd_path_action_of and
+        qd_path_action_of_print; Desloge ch. 83): a qdot.Output with model,
+        t0, t1, action (the integral of L along the path) and
+        first_variation (the L2 norm over [t0, t1] of Lagrange's residual
+        along it: 0 on a true path).  path: every coordinate as an
+        expression in t and the parameters, "x = v*t, y = ..." or {name:
+        expression}; t: "T0:T1" (expressions in the parameters) or a pair
+        (t0, t1)."""
+        core = self._for("action_of")
+        e = core.eom_ptr()
+        if isinstance(path, dict):
+            path = ", ".join("%s = %s" % (k, v) for k, v in path.items())
+        if isinstance(t, (tuple, list)) and len(t) == 2:
+            t = ":".join(x if isinstance(x, str) else repr(float(x)) for x in t)
+        for value, what in ((path, "path"), (t, "t")):
+            if not isinstance(value, str):
+                raise TypeError("action_of: %s is text, not %s" % (what, type(value).__name__))
+        ptext, ttext = ffi.new("char[]", path.encode()), ffi.new("char[]", t.encode())
+        q = ffi.new("const qd_expr *[]", lib.qd_model_ncoords(core.model) + 1)
+        if lib.qd_path_trial_read(core.ctx, core.model, ptext, q) != lib.QD_OK:
+            raise _linear.located(core, "path", path.encode())
+        t0, t1 = new("double"), new("double")
+        if lib.qd_state_range(core.ctx, core.model, ttext, 0, len(t.encode()), t0, t1) != 0:
+            raise _linear.located(core, "t", t.encode())
+        S, dS = new("double"), new("double")
+        st = lib.qd_path_action_of(core.ctx, core.model, e, q, t0[0], t1[0], S, dS)
+        if st != lib.QD_OK:
+            raise core.error(st, cls=ArgumentError if st == lib.QD_ERR_ARG else NumericalError)
+        return _commands.output(core, "action_of", lambda buf: lib.qd_path_action_of_print(
+            core.ctx, _commands.source(core), t0[0], t1[0], S[0], dS[0], True, buf))
+
+    def codegen(self, prefix=None, eliminate=False):
+        """The self-contained C of `qdot codegen FILE` (qd_codegen_model_c):
+        a qdot.Code with .prefix, .c and .h (the texts of PREFIX.c and
+        PREFIX.h) and .save(directory).  prefix: the C name of the files and
+        functions (a C identifier; default from the model's file name, as
+        the command names them); eliminate: substitute the holonomic
+        constraints that solve for a coordinate (--eliminate)."""
+        from .kernel import Code
+        core = self._for("codegen")
+        if prefix is None:
+            name = ffi.new("char[]", lib.QD_CODEGEN_PREFIX_MAX + 1)
+            lib.qd_codegen_prefix_from_path(core.file.encode(), name, len(name))
+            prefix = ffi.string(name).decode()
+        elif not isinstance(prefix, str) or not lib.qd_codegen_prefix_valid(prefix.encode()):
+            raise ValueError("codegen: prefix is a C identifier (up to %d bytes), not %r"
+                             % (lib.QD_CODEGEN_PREFIX_MAX, prefix))
+        c, h = new("qd_buf"), new("qd_buf")
+        st = lib.qd_codegen_model_c(core.ctx, core.model, bool(eliminate), prefix.encode(), c, h)
+        if st != lib.QD_OK:
+            lib.qd_buf_free(c)
+            lib.qd_buf_free(h)
+            raise core.error(st)
+        return Code(prefix, buf_text(c), buf_text(h))
 
     def compile(self):
         """The right-hand side of the first-order system y = (q, q') as a

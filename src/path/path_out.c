@@ -16,15 +16,8 @@ typedef struct pt_out {
     bool any_free;
 } pt_out;
 
-/* A computed number for a reader: 12 significant digits, 0 below 1e-13
- * (the program's rule for results found by iteration). */
-static void put(qd_buf *b, double x) {
-    if (fabs(x) < 1e-13) {
-        qd_buf_puts(b, "0");
-        return;
-    }
-    qd_buf_printf(b, "%.12g", x);
-}
+/* A computed number for a reader: the one digit rule (qd_buf_put_result). */
+static void put(qd_buf *b, double x) { qd_buf_put_result(b, x, 1); }
 
 /* The name the ends' time goes by: t, or the model's independent x. */
 static const char *time_name(const pt_out *r) {
@@ -198,4 +191,46 @@ qd_status qd_path_json(qd_ctx *ctx, const qd_path_set *ps, const qd_model *m, co
                  out->failed ? "out of memory writing the paths"
                              : "a path holds a non-finite number (JSON cannot hold it)");
     return out->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+}
+
+/* ---- the action of a trial path (qd_path_action_of_print) ----------------- */
+
+static bool action_of_json(const char *source, const double v[4], qd_buf *out) {
+    static const char *const keys[4] = {"t0", "t1", "action", "first_variation"};
+    qd_json j;
+    qd_json_init(&j, out);
+    qd_json_begin_object(&j);
+    qd_json_key(&j, "model");
+    qd_json_string(&j, source);
+    for (size_t k = 0; k < 4; k++) {
+        qd_json_key(&j, keys[k]);
+        qd_json_number(&j, v[k]);
+    }
+    qd_json_end_object(&j);
+    qd_buf_puts(out, "\n");
+    return qd_json_ok(&j) && !out->failed;
+}
+
+qd_status qd_path_action_of_print(qd_ctx *ctx, const char *source, double t0, double t1,
+                                  double action, double first_variation, bool json,
+                                  qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && source && out);
+    const double v[4] = {t0, t1, action, first_variation};
+    if (json && !action_of_json(source, v, out)) {
+        qd_ctx_error(ctx, out->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC, "%s",
+                     out->failed ? "out of memory writing the action"
+                                 : "the action is not a finite number (JSON cannot hold it)");
+        return out->failed ? QD_ERR_NOMEM : QD_ERR_NUMERIC;
+    }
+    if (!json) {
+        qd_buf_puts(out, "action: ");
+        qd_buf_put_result(out, action, 1);
+        qd_buf_puts(out, "\nfirst_variation: ");
+        qd_buf_put_result(out, first_variation, 1);
+        qd_buf_puts(out, "\n");
+    }
+    if (!out->failed)
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory writing the action");
+    return QD_ERR_NOMEM;
 }

@@ -35,8 +35,12 @@ NULLABLE = {
     'qd_json_expr': {'x'},
     'qd_codegen_c': {'h_text'},
     'qd_codegen_speeds_c': {'h_text'},
+    'qd_codegen_model_c': {'h_text', 'prefix'},  # issue 32: as qd_codegen_c's
+    'qd_modes_rest_note': {'out'},  # issue 32: NULL asks only whether there is a note
+    'qd_equilibria_find_text': {'near', 'box', 'where'},  # issue 32: options not given
     'qd_ctx_error_about': {'hint', 'name'},
     'qd_ctx_new_with': {'a'},
+    'qd_ctx_set_progress': {'fn', 'data'},  # issue 34: NULL turns the progress off
     'qd_diag_format': {'file', 'text'},
     'qd_eom_derive_opts': {'opts'},
     'qd_eom_eval': {'M', 'R', 'f', 'lambda', 'qdd'},
@@ -54,6 +58,12 @@ NULLABLE = {
     'qd_constrained_at_solve': {'indep'},
     'qd_modes_at_choose': {'about'},
     'qd_linearize_about': {'about'},
+    'qd_tangent_new': {'vary'},
+    'qd_tangent_jacobian': {'out'},
+    'qd_conlin_about': {'independent'},
+    'qd_conlin_point': {'about'},
+    'qd_conlin_scan_run': {'about', 'independent'},
+    'qd_conlin_render': {'lqr'},
     'qd_eom_request_render': {'failed'},
     'qd_linpoint_read': {'qd'},
     'qd_linpoint_set': {'qd'},
@@ -80,6 +90,9 @@ NULLABLE = {
     'qd_metric_print': {'G'},
     'qd_metric_json': {'G'},
     'qd_path_print': {'opts'},
+    'qd_poincare_summary_print': {'prefix'},  # issue 31: poincare --format json
+    'qd_poincare_json_begin': {'model', 'names'},
+    'qd_json_add_model': {'model'},
     'qd_legendre_inverse_p': {'pdef'},
     'qd_linearize': {'syms', 'vals'},
     'qd_lqr_feedback': {'syms', 'vals'},

@@ -19,6 +19,7 @@
 #include "qdot/canonical.h"
 #include "qdot/certify.h"
 #include "qdot/codegen.h"
+#include "qdot/conlin.h"
 #include "qdot/constrained.h"
 #include "qdot/contour.h"
 #include "qdot/control.h"
@@ -57,6 +58,7 @@
 #include "qdot/status.h"
 #include "qdot/sweep.h"
 #include "qdot/symmetry.h"
+#include "qdot/tangent.h"
 #include "qdot/version.h"
 #include "qdot/zvc.h"
 
@@ -617,6 +619,16 @@ static void null_codegen(void **state)
     /* c_text NULL */
     assert_int_equal(QD_ERR_ARG, qd_codegen_speeds_c(F.ctx, F.model, NULL, "q", NULL, &F.buf));
     reset(&F);
+    /* ---- qd_codegen_model_c */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_model_c(NULL, F.model, false, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_model_c(F.ctx, NULL, false, "q", &F.buf, &F.buf));
+    reset(&F);
+    /* c_text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_codegen_model_c(F.ctx, F.model, false, "q", NULL, &F.buf));
+    reset(&F);
     /* ---- qd_native_load */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_native_load(NULL, F.model, F.eom, "q", (qd_native *)(void *)F.blob));
@@ -646,6 +658,105 @@ static void null_codegen(void **state)
     /* ---- qd_native_unload */
     /* nat NULL */
     qd_native_unload(NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_conlin(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_conlin_about */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(NULL, F.eom, F.model, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, NULL, F.model, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, F.eom, NULL, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, F.eom, F.model, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, F.eom, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_conlin_free */
+    /* c NULL */
+    qd_conlin_free(NULL);
+    reset(&F);
+    /* ---- qd_conlin_keep_core */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_keep_core(NULL, NULL));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_keep_core(F.ctx, NULL));
+    reset(&F);
+    /* ---- qd_conlin_point */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_point(NULL, F.model, (qd_linpoint *)(void *)F.blob, "q"));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_point(F.ctx, NULL, (qd_linpoint *)(void *)F.blob, "q"));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_point(F.ctx, F.model, NULL, "q"));
+    reset(&F);
+    /* ---- qd_conlin_scan_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(NULL, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, NULL, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, NULL, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, F.model, NULL, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", NULL, 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_conlin_scan_free */
+    /* s NULL */
+    qd_conlin_scan_free(NULL);
+    reset(&F);
+    /* ---- qd_conlin_print */
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_print(NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_print(NULL, false, NULL));
+    reset(&F);
+    /* ---- qd_conlin_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_render(NULL, NULL, NULL, (qd_ss_format){0}, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_render(F.ctx, NULL, NULL, (qd_ss_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_render(F.ctx, NULL, NULL, (qd_ss_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_conlin_needed */
+    /* e NULL */
+    assert_true(qd_conlin_needed(NULL) == 0);
+    reset(&F);
+    /* ---- qd_conlin_scan_print */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_print(NULL, "q", false, &F.buf));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_print(NULL, "q", false, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -971,6 +1082,16 @@ static void null_equilibria(void **state)
     /* r NULL */
     qd_equilibria_free(NULL);
     reset(&F);
+    /* ---- qd_equilibria_find_text */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find_text(NULL, NULL, "q", "q", (qd_equilibria *)(void *)F.blob, (const char * *)F.names));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find_text(F.ctx, NULL, "q", "q", (qd_equilibria *)(void *)F.blob, (const char * *)F.names));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_equilibria_find_text(F.ctx, NULL, "q", "q", NULL, (const char * *)F.names));
+    reset(&F);
     /* ---- qd_equilibria_choose */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_equilibria_choose(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, (qd_equilibrium_choice *)(void *)F.blob));
@@ -995,6 +1116,8 @@ static void null_equilibria(void **state)
     qd_equilibrium_choice_free(NULL);
     reset(&F);
     /* ---- qd_eq_chosen_name */
+    /* no pointer argument */
+    /* ---- qd_eq_chosen_code */
     /* no pointer argument */
     /* ---- qd_equilibrium_put_value */
     /* ctx NULL */
@@ -1214,6 +1337,10 @@ static void null_expr(void **state)
     /* ---- qd_ctx_node_count */
     /* ctx NULL */
     assert_true(qd_ctx_node_count(NULL) == 0);
+    reset(&F);
+    /* ---- qd_ctx_set_progress */
+    /* ctx NULL */
+    qd_ctx_set_progress(NULL, NULL, NULL);
     reset(&F);
     /* ---- qd_int */
     /* ctx NULL */
@@ -2248,6 +2375,29 @@ static void null_json(void **state)
     /* j NULL */
     qd_json_frequency(NULL, 1);
     reset(&F);
+    /* ---- qd_json_expr_result */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(NULL, "q", "q", 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* operation NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, NULL, "q", 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* input NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", NULL, 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* vars NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, NULL, F.q, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, (const char * const *)F.names, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, (const char * const *)F.names, F.q, NULL));
+    reset(&F);
+    /* ---- qd_json_add_model */
+    /* doc NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_add_model(NULL, "q"));
+    reset(&F);
     /* ---- qd_json_ok */
     /* j NULL */
     assert_true(qd_json_ok(NULL) == 0);
@@ -2488,6 +2638,24 @@ static void null_lyapunov(void **state)
     reset(&F);
     /* opts NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_poincare_summary_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", NULL));
+    reset(&F);
+    /* ---- qd_poincare_json_begin */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_begin(NULL, "q", 1, (const char * const *)F.names, false));
+    reset(&F);
+    /* ---- qd_poincare_json_end */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_end(NULL, F.sim, NULL, NULL, NULL, 1, false));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_end(NULL, NULL, NULL, NULL, NULL, 1, false));
     reset(&F);
     /* ---- qd_lyap_setup_run */
     /* ctx NULL */
@@ -3453,6 +3621,8 @@ static void null_modes(void **state)
     /* Qd NULL */
     assert_int_equal(QD_ERR_ARG, qd_modes_at_initial(F.ctx, NULL, NULL, "q", F.d, NULL));
     reset(&F);
+    /* ---- qd_modes_rest_note */
+    /* no pointer argument */
     /* ---- qd_modes_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_modes_print(NULL, NULL, false, &F.buf));
@@ -3812,6 +3982,16 @@ static void null_path(void **state)
     reset(&F);
     /* first_variation NULL */
     assert_int_equal(QD_ERR_ARG, qd_path_action_of(F.ctx, F.model, F.eom, (const qd_expr * const *)F.e, 1, 1, F.d, NULL));
+    reset(&F);
+    /* ---- qd_path_action_of_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of_print(NULL, "q", 1, 1, 1, 1, false, &F.buf));
+    reset(&F);
+    /* source NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of_print(F.ctx, NULL, 1, 1, 1, 1, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_path_action_of_print(F.ctx, "q", 1, 1, 1, 1, false, NULL));
     reset(&F);
     /* ---- qd_path_end_read */
     /* ctx NULL */
@@ -4242,6 +4422,13 @@ static void null_print(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_print_c_block(F.ctx, 1, (const qd_expr * const *)F.e, (const char * const *)F.names, NULL));
+    reset(&F);
+    /* ---- qd_tour_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tour_print(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tour_print(F.ctx, NULL));
     reset(&F);
     /* ---- qd_c_name */
     /* sym NULL */
@@ -6780,6 +6967,28 @@ static void null_symmetry(void **state)
     /* lin NULL */
     assert_true(qd_symmetry_fast_cell(NULL) == 0);
     reset(&F);
+    /* ---- qd_modes_symmetry */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* lin NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* note NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_symmetry(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, NULL));
+    reset(&F);
     /* ---- qd_symmetry_print */
     /* sym NULL */
     assert_int_equal(QD_ERR_ARG, qd_symmetry_print(NULL, F.eom, &F.buf));
@@ -6840,6 +7049,63 @@ static void null_symmetry(void **state)
     /* ---- qd_cyclic_json_modes */
     /* j NULL */
     qd_cyclic_json_modes(NULL, NULL);
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_tangent(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_tangent_new */
+    /* ctx NULL */
+    assert_null(qd_tangent_new(NULL, 1, (const qd_expr * const *)F.e, F.b, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* inputs NULL */
+    assert_null(qd_tangent_new(F.ctx, 1, NULL, F.b, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* outputs NULL */
+    assert_null(qd_tangent_new(F.ctx, 1, (const qd_expr * const *)F.e, F.b, 1, NULL));
+    reset(&F);
+    /* ---- qd_tangent_free */
+    /* t NULL */
+    qd_tangent_free(NULL);
+    reset(&F);
+    /* ---- qd_tangent_nin */
+    /* t NULL */
+    assert_true(qd_tangent_nin(NULL) == 0);
+    reset(&F);
+    /* ---- qd_tangent_nvar */
+    /* t NULL */
+    assert_true(qd_tangent_nvar(NULL) == 0);
+    reset(&F);
+    /* ---- qd_tangent_nout */
+    /* t NULL */
+    assert_true(qd_tangent_nout(NULL) == 0);
+    reset(&F);
+    /* ---- qd_tangent_eval */
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_eval(NULL, F.d, F.d));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_eval(NULL, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_eval(NULL, F.d, NULL));
+    reset(&F);
+    /* ---- qd_tangent_jacobian */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(NULL, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(F.ctx, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(F.ctx, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* J NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(F.ctx, NULL, F.d, F.d, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -6970,6 +7236,7 @@ int main(void)
         cmocka_unit_test(null_canonical),
         cmocka_unit_test(null_certify),
         cmocka_unit_test(null_codegen),
+        cmocka_unit_test(null_conlin),
         cmocka_unit_test(null_constrained),
         cmocka_unit_test(null_contour),
         cmocka_unit_test(null_control),
@@ -7008,6 +7275,7 @@ int main(void)
         cmocka_unit_test(null_status),
         cmocka_unit_test(null_sweep),
         cmocka_unit_test(null_symmetry),
+        cmocka_unit_test(null_tangent),
         cmocka_unit_test(null_version),
         cmocka_unit_test(null_zvc),
     };
