@@ -2,7 +2,10 @@
  * cli/cmd_form.c - `qdot form "EXPR" --vars "x, y"`: a quadratic form's
  * matrix, Lagrange's reduction to a sum of squares and its inertia
  * (qd_qform_reduce; Desloge App. 24-27), printed by qd_render_qform; the
- * variables read by qd_qform_vars_read (qdot/form.h).
+ * variables read by qd_qform_vars_read (qdot/form.h).  --homogeneity: any
+ * function's degree of homogeneity (qd_homogeneity, App. 20); --periods:
+ * shifts tested as periods, and their fundamental system (qd_periods_reduce,
+ * App. 31).
  */
 #include "driver.h"
 
@@ -11,19 +14,25 @@
 
 typedef struct form_args {
     cli_run c; /* the options follow */
-    const char *format, *vars, *text;
+    const char *format, *vars, *text, *periods;
+    bool homog;
 } form_args;
 
 static const cli_opt form_opts[] = {
     {"--vars", NULL, CLI_TEXT, offsetof(form_args, vars), "\"x, y, ...\"",
      "the variables of the form (required)", NULL, NULL},
+    {"--homogeneity", NULL, CLI_FLAG, offsetof(form_args, homog), NULL,
+     "the degree of homogeneity of EXPR in the variables (Euler's theorem), or a witness", NULL, NULL},
+    {"--periods", NULL, CLI_TEXT, offsetof(form_args, periods), "\"W1; W2 ...\"",
+     "test these shifts as periods of EXPR, and their fundamental system (App. 31)", NULL, NULL},
     CLI_OPT_FORMAT(form_args, format),
     {0},
 };
 
 static const cli_spec form_spec = {
-    "form", "EXPR --vars \"x, y, ...\" [--format F]",
-    "a quadratic form: its matrix, Lagrange's reduction to a sum of squares, its inertia",
+    "form", "EXPR --vars \"x, y, ...\" [--homogeneity | --periods \"W; ...\"] [--format F]",
+    "a quadratic form: its matrix, Lagrange's reduction to a sum of squares, its inertia; "
+    "or (--homogeneity) any function's degree of homogeneity, or (--periods) its periods",
     form_opts, NULL, 1, 1, "EXPR", true,
 };
 
@@ -33,31 +42,50 @@ static int check(cli_run *c) {
     return cli_usage_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
 }
 
+/* The reduction, or (--homogeneity) the degree: a "no" exits 3, undecided 1. */
+static int answer(qd_ctx *ctx, const form_args *a, const qd_expr *phi, const qd_expr *const *x,
+                  size_t n, size_t g, const qd_expr *const *w) {
+    qd_buf b = QD_BUF_INIT;
+    qd_homog h = {.verdict = QD_HOMOG_YES};
+    qd_periods *p = w ? qd_periods_reduce(ctx, phi, n, x, g, w) : NULL;
+    qd_qform *f = a->homog || w ? NULL : qd_qform_reduce(ctx, phi, n, x);
+    qd_render_format fmt = cli_render_format(a->format);
+    bool ok = w         ? p && qd_render_periods(ctx, phi, p, x, w, fmt, &b) == QD_OK
+              : a->homog ? qd_homogeneity(ctx, phi, n, x, &h) == QD_OK &&
+                               qd_render_homog(ctx, &h, n, x, fmt, &b) == QD_OK
+                         : f && qd_render_qform(ctx, phi, f, fmt, &b) == QD_OK;
+    for (size_t j = 0; p && j < g; j++) /* a shift that is certainly no period: a "no" */
+        h.verdict = p->test[j].kind == QD_ZERO_NONZERO ? QD_HOMOG_NO : h.verdict;
+    qd_qform_free(f);
+    qd_periods_free(p);
+    if (!ok) {
+        qd_buf_free(&b);
+        return cli_diag_ctx(ctx);
+    }
+    int rc = cli_emit(&b, a->homog ? "homogeneity" : "quadratic form");
+    return rc ? rc : h.verdict == QD_HOMOG_NO ? QD_EXIT_NO
+                   : h.verdict == QD_HOMOG_UNDECIDED ? QD_EXIT_FAIL : QD_EXIT_OK;
+}
+
 static int run(cli_run *c) {
     const form_args *a = (form_args *)c;
-    qd_ctx *ctx = c->ctx;
     qd_diag err;
-    const qd_expr *phi = qd_read(ctx, a->text, NULL, &err), *x[64];
-    size_t n = 0;
-    qd_qform *f = NULL;
-    int rc = QD_EXIT_OK;
+    const qd_expr *phi = qd_read(c->ctx, a->text, NULL, &err), *x[64], **w = NULL;
+    size_t n = 0, g = 0;
     if (!phi) {
         cli_diag_read("<form>", a->text, &err);
-        rc = QD_EXIT_USAGE;
-    } else if (qd_qform_vars_read(ctx, a->vars, x, 64, &n) != QD_OK) {
-        cli_diag_show("--vars", a->vars, qd_ctx_diag(ctx));
-        rc = cli_exit(qd_ctx_status(ctx));
-    } else if (!(f = qd_qform_reduce(ctx, phi, n, x))) {
-        rc = cli_diag_ctx(ctx);
+        return QD_EXIT_USAGE;
     }
-    if (f) {
-        qd_buf b = QD_BUF_INIT;
-        if (qd_render_qform(ctx, phi, f, cli_render_format(a->format), &b) == QD_OK)
-            fputs(qd_buf_str(&b), stdout);
-        rc = qd_ctx_status(ctx) == QD_OK ? QD_EXIT_OK : cli_diag_ctx(ctx);
-        qd_buf_free(&b);
+    if (qd_qform_vars_read(c->ctx, a->vars, x, 64, &n) != QD_OK) {
+        cli_diag_show("--vars", a->vars, qd_ctx_diag(c->ctx));
+        return cli_exit(qd_ctx_status(c->ctx));
     }
-    qd_qform_free(f);
+    if (a->periods && qd_periods_vectors_read(c->ctx, a->periods, n, &g, &w) != QD_OK) {
+        cli_diag_show("--periods", a->periods, qd_ctx_diag(c->ctx));
+        return cli_exit(qd_ctx_status(c->ctx));
+    }
+    int rc = answer(c->ctx, a, phi, x, n, g, w);
+    qd_periods_vectors_free(w);
     return rc;
 }
 

@@ -1,6 +1,6 @@
 /*
  * cli/modes_plot.c - `qdot modes --plot FILE`: the mode shapes drawn
- * (qd_modes_plot, qdot/modes.h), the picture's options applied
+ * (qd_symmetry_modes_plot, qdot/symmetry.h), the picture's options applied
  * (qd_plot_apply) and written to FILE.
  */
 #include "modes_plot.h"

@@ -1,7 +1,8 @@
 /*
  * qdot/form.h - real quadratic forms: Lagrange's reduction to a sum of
  * squares and Sylvester's law of inertia (Desloge, Classical Mechanics,
- * App. 24-27).
+ * App. 24-27); below them, any function's degree of homogeneity (App. 20)
+ * and periods (App. 31).
  *
  * phi(x) = sum_ij a_ij x_i x_j with a symmetric (App. 27 eqs. 1-3).
  * Lagrange's reduction (App. 27 Thm 3) completes the square on a nonzero
@@ -29,6 +30,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "expr.h"
+#include "certify.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -76,6 +78,93 @@ QD_API void qd_qform_free(qd_qform *f);
 QD_API qd_status qd_qform_vars_read(qd_ctx *ctx, const char *text, const qd_expr **x,
                                     size_t cap, size_t *n);
 
+/* ---- homogeneity (Desloge App. 20) ----------------------------------------
+ * f(x_1..x_r, y) is homogeneous of degree n in x when f(lambda x, y) =
+ * lambda^n f(x, y) for every lambda > 0 (App. 20 eq. 1; the other symbols y
+ * are passive).  Euler's theorem (eq. 2) and its converse: that holds iff
+ * sum_i x_i df/dx_i = n f identically (d/dlambda of lambda^-n f(lambda x)
+ * is lambda^(-n-1) (sum x_i df/dx_i - n f)(lambda x)).  So the degree is
+ * (sum x_i df/dx_i) / f when that is free of x, confirmed by the zero test
+ * (qd_equal_test, qdot/certify.h); when it is not, any homogeneous f has
+ * f(x) f(4x) = f(2x)^2 (both 4^n f(x)^2), and a point where they certainly
+ * differ (f, f(2x) and f(4x) each defined there and evaluated in ball
+ * arithmetic at the points qd_zero_test would pick) is the witness that f is
+ * not homogeneous.  When neither holds the
+ * degree is estimated as log2(f(2x)/f(x)) at a point, rounded to p/q
+ * (q <= 12) and confirmed the same way, or the verdict is undecided. */
+typedef enum qd_homog_verdict {
+    QD_HOMOG_YES,       /* homogeneous of degree `degree` */
+    QD_HOMOG_EVERY,     /* f is 0: homogeneous of every degree */
+    QD_HOMOG_NO,        /* not homogeneous: test.witness the point where
+                           f(x) f(4x) - f(2x)^2 (probe) is certainly not 0 */
+    QD_HOMOG_UNDECIDED  /* neither: a ratio that does not simplify, no witness */
+} qd_homog_verdict;
+
+typedef struct qd_homog {
+    qd_homog_verdict verdict;
+    const qd_expr *f;      /* f simplified */
+    const qd_expr *euler;  /* sum_i x_i df/dx_i, simplified */
+    const qd_expr *degree; /* YES: n, free of x (a number, or in the passive
+                              symbols: x^a has degree a); else NULL */
+    const qd_expr *probe;  /* f(x) f(4x) - f(2x)^2 when it was tested, else NULL */
+    qd_zero_result test;   /* YES: the test of euler - n f (proven or numeric);
+                              NO: of probe, with its witness; UNDECIDED: the
+                              last test made (kind UNKNOWN when none) */
+} qd_homog;
+
+/* The homogeneity of f in the n variables x (symbols, none twice) into *out,
+ * as above; the other symbols of f are passive.  QD_ERR_ARG for no
+ * variables or one that is not a symbol; errors of simplification.  *out
+ * holds expressions of ctx only (nothing to free). */
+QD_API qd_status qd_homogeneity(qd_ctx *ctx, const qd_expr *f, size_t n,
+                                const qd_expr *const *x, qd_homog *out);
+
+/* "homogeneous", "every degree", "not homogeneous", "undecided": the
+ * verdict in words (JSON "verdict"). */
+QD_API const char *qd_homog_verdict_name(qd_homog_verdict v);
+
+/* ---- multiply periodic functions (Desloge App. 31) ------------------------
+ * f(x, y) is periodic in x with the period w when f(x + w, y) = f(x, y) for
+ * every x (eq. 1).  Integer combinations of periods are periods (Thms 1-3),
+ * and the periods have a fundamental system w(1..k), k <= r, of which every
+ * period is an integer combination (Thm 4, eq. 3).  For g given vectors w_j
+ * whose components are all rational multiples of one constant (the unit:
+ * 2 pi, pi, 1, ...), qd_periods_reduce finds that system for the lattice
+ * they generate: a basis by integer row reduction (Hermite's normal form of
+ * the integer matrix w L / unit), and each w_j's integer coordinates in it.
+ * With f given, each w_j is also tested as a period of f (qd_zero_test of
+ * f(x + w_j) - f(x)). */
+typedef struct qd_periods {
+    size_t g, r;              /* vectors given, variables */
+    const qd_expr *unit;      /* every component is a rational multiple of it */
+    size_t rank;              /* the fundamental system's size k <= min(g, r) */
+    const qd_expr **basis;    /* rank * r, row-major, in Hermite's normal form
+                                 (the first nonzero component of each positive) */
+    long *coords;             /* g * rank: w_j = sum_k coords[j rank + k] basis_k */
+    bool tested;              /* f was given */
+    qd_zero_result *test;     /* g: f(x + w_j) - f(x) zero-tested, when tested */
+} qd_periods;
+
+/* The fundamental system of the n-vectors w (g of them, row-major g * n:
+ * w[j n + i] the shift of x_i) and, when f is not NULL, the test of each as
+ * a period of f in the variables x.  QD_ERR_ARG for a component that is not
+ * a rational multiple of the unit (the first nonzero component), naming
+ * both; QD_ERR_TOOBIG when the integers outgrow a long.  NULL on failure,
+ * reason in ctx; free with qd_periods_free. */
+QD_API qd_periods *qd_periods_reduce(qd_ctx *ctx, const qd_expr *f, size_t n,
+                                     const qd_expr *const *x, size_t g,
+                                     const qd_expr *const *w);
+QD_API void qd_periods_free(qd_periods *p);
+
+/* Vectors of n components from text: "2*pi, 0; 0, 2*pi" (vectors separated
+ * by ';', components by ','), each component an expression, into a new
+ * array of *g * n expressions (*out; the caller frees it with
+ * qd_periods_vectors_free).  QD_ERR_PARSE or QD_ERR_ARG (a vector of
+ * another length, none given) located in text (qd_ctx_diag). */
+QD_API qd_status qd_periods_vectors_read(qd_ctx *ctx, const char *text, size_t n, size_t *g,
+                                         const qd_expr ***out);
+QD_API void qd_periods_vectors_free(const qd_expr **w);
+
 #ifdef __cplusplus
 }
 #endif
@@ -83,6 +172,7 @@ QD_API qd_status qd_qform_vars_read(qd_ctx *ctx, const char *text, const qd_expr
 /* NULL (issue 30): a function of this header given NULL for a pointer it
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
- * returns, and every _free accepts NULL. An array whose count is 0 may be
- * NULL. */
+ * returns, and every _free accepts NULL. NULL is an accepted value, as
+ * documented at the function, for: qd_periods_reduce (f). An array whose
+ * count is 0 may be NULL. */
 #endif

@@ -172,6 +172,31 @@ QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e
 QD_API qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
                                  qd_render_format fmt, qd_buf *out);
 
+/* The homogeneity h of a function in the n variables x (qd_homogeneity,
+ * qdot/form.h; Desloge App. 20): in text "homogeneity in x, y (...)", f,
+ * sum x_i df/dx_i and the verdict: "homogeneous of degree N: ..." (with
+ * qd_zero_result_note when verified numerically), "f is 0: homogeneous of
+ * every degree", "not homogeneous: ..." with the witness line
+ * (qd_zero_result_print), or "could not decide: ..."; in JSON
+ * "variables", "f", "euler", "verdict" (qd_homog_verdict_name),
+ * "homogeneous" (null when undecided), "degree" (null unless homogeneous
+ * of one degree) and qd_zero_result_json's "certainty", "witness",
+ * "points", "bits".  QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_homog(qd_ctx *ctx, const qd_homog *h, size_t n,
+                                 const qd_expr *const *x, qd_render_format fmt, qd_buf *out);
+
+/* The fundamental period system p (qd_periods_reduce, qdot/form.h; Desloge
+ * App. 31) of the vectors w (p->g * p->r) in the variables x, with f (NULL:
+ * none tested): in text each w_j and, when tested, "a period of f" or "not
+ * a period of f" with its witness line, the fundamental periods e_k and each
+ * w_j as an integer combination of them; in JSON "variables", "f",
+ * "periods", "tests" ({"is_period", and qd_zero_result_json's keys} per
+ * vector, [] when not tested), "unit", "rank", "fundamental" and
+ * "coordinates" (g rows of rank integers).  QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_periods(qd_ctx *ctx, const qd_expr *f, const qd_periods *p,
+                                   const qd_expr *const *x, const qd_expr *const *w,
+                                   qd_render_format fmt, qd_buf *out);
+
 /* ---- impulsive motion (qdot/impulse.h) ----------------------------------- */
 
 /* Append r, the answer of qd_impulse_solve on m, to out: text (the
@@ -255,7 +280,7 @@ QD_API qd_status qd_render_hamiltonian(qd_ctx *ctx, const qd_model *m, const qd_
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it. NULL is an
  * accepted value, as documented at the function, for: qd_render_eom (o),
- * qd_render_speeds (o), qd_render_check (o), qd_render_hamiltonian (source,
+ * qd_render_speeds (o), qd_render_check (o), qd_render_periods (f), qd_render_hamiltonian (source,
  * at); qd_ham_point_free accepts NULL. Exception:
  * qd_render_format_parse(NULL, out) is false. */
 #endif

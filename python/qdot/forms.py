@@ -1,7 +1,7 @@
 # python/qdot/forms.py - quadratic forms: Lagrange's reduction to a sum of
 # squares and Sylvester's inertia (qd_qform_reduce; Desloge App. 27).
 """qdot.quadratic_form(expr, variables): the reduction of a quadratic form;
-qdot.tour(): the kernel's tour."""
+qdot.homogeneity, qdot.periods (App. 20, App. 31); qdot.tour(): the kernel's tour."""
 
 import json
 
@@ -77,6 +77,140 @@ def quadratic_form(expr, variables):
         finally:
             lib.qd_qform_free(f)
     finally:
+        lib.qd_ctx_free(ctx)
+
+
+class Homogeneity:
+    """The homogeneity of a function (qd_homogeneity, Desloge App. 20):
+    homogeneous (True, False, or None when undecided), degree (text, or
+    None), verdict ("homogeneous", "every degree", "not homogeneous",
+    "undecided"), euler (sum x_i df/dx_i), witness ({"point": {...},
+    "value", "radius"} for "not homogeneous", else None); json() the dict of
+    `qdot form --homogeneity --format json`, text() its text."""
+
+    __module__ = "qdot"
+
+    def __init__(self, printed):
+        self._printed = printed
+        d = json.loads(printed[1])
+        self.homogeneous, self.degree, self.verdict = d["homogeneous"], d["degree"], d["verdict"]
+        self.euler, self.witness, self.certainty = d["euler"], d["witness"], d["certainty"]
+
+    def text(self):
+        return self._printed[0]
+
+    def json(self):
+        return json.loads(self._printed[1])
+
+    def __repr__(self):
+        return "Homogeneity(%s%s)" % (self.verdict,
+                                      ", degree=%s" % self.degree if self.degree else "")
+
+
+def homogeneity(expr, variables):
+    """The degree of homogeneity of expr (model-language text) in the named
+    variables, the others passive (`qdot form EXPR --vars ... --homogeneity`):
+    a Homogeneity; qdot.Error when expr does not read, ValueError when a
+    variable is not a name (as --vars reads them: pi, t' refused)."""
+    ctx = lib.qd_ctx_new()
+    if not ctx:
+        raise MemoryError("qdot: out of memory")
+    try:
+        diag = new("qd_diag")
+        f = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
+        if not f:
+            raise Error(ffi.string(diag.message).decode() or "cannot read the function")
+        if isinstance(variables, str):
+            variables = [variables]
+        names = ", ".join(variables).encode()
+        xs_c = ffi.new("const qd_expr *[]", max(1, len(variables)))
+        count = ffi.new("size_t *")
+        if lib.qd_qform_vars_read(ctx, names, xs_c, len(variables), count) != 0:
+            raise ValueError(cstr(lib.qd_ctx_message(ctx)))  # pi, t' (= 1), a name twice
+        xs = [xs_c[k] for k in range(count[0])]
+        h = new("qd_homog")
+        if lib.qd_homogeneity(ctx, f, len(xs), exprs(xs), h) != 0:
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        printed = []
+        for fmt in (lib.QD_RENDER_TEXT, lib.QD_RENDER_JSON):
+            buf = new("qd_buf")
+            if lib.qd_render_homog(ctx, h, len(xs), exprs(xs), fmt, buf) != 0:
+                lib.qd_buf_free(buf)
+                raise Error(cstr(lib.qd_ctx_message(ctx)))
+            printed.append(buf_text(buf))
+        return Homogeneity(tuple(printed))
+    finally:
+        lib.qd_ctx_free(ctx)
+
+
+class Periods:
+    """Shifts tested as periods of a function and the fundamental system of
+    their integer combinations (qd_periods_reduce, Desloge App. 31):
+    fundamental (rows of texts), coordinates (each shift's integers in it),
+    is_period (True, False, or None when undecided, per shift), rank, unit;
+    json() the dict of `qdot form --periods --format json`, text() its text."""
+
+    __module__ = "qdot"
+
+    def __init__(self, printed):
+        self._printed = printed
+        d = json.loads(printed[1])
+        self.fundamental, self.coordinates = d["fundamental"], d["coordinates"]
+        self.rank, self.unit = d["rank"], d["unit"]
+        self.is_period = [t["is_period"] for t in d["tests"]]
+
+    def text(self):
+        return self._printed[0]
+
+    def json(self):
+        return json.loads(self._printed[1])
+
+    def __repr__(self):
+        return "Periods(fundamental=%r)" % (self.fundamental,)
+
+
+def periods(expr, variables, shifts):
+    """The shifts (a list of vectors, each a list of model-language texts,
+    one per variable; or the --periods text "2*pi, 0; 0, 2*pi") tested as
+    periods of expr, and their fundamental system (`qdot form EXPR --vars
+    ... --periods ...`): a Periods; ValueError for a bad variable or shift,
+    qdot.Error when the shifts are not commensurable."""
+    if not isinstance(shifts, str):
+        shifts = "; ".join(", ".join(str(c) for c in v) for v in shifts)
+    if isinstance(variables, str):
+        variables = [variables]
+    ctx = lib.qd_ctx_new()
+    if not ctx:
+        raise MemoryError("qdot: out of memory")
+    w = ffi.new("const qd_expr ***")
+    try:
+        diag = new("qd_diag")
+        f = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
+        if not f:
+            raise Error(ffi.string(diag.message).decode() or "cannot read the function")
+        xs = ffi.new("const qd_expr *[]", max(1, len(variables)))
+        n, g = ffi.new("size_t *"), ffi.new("size_t *")
+        if lib.qd_qform_vars_read(ctx, ", ".join(variables).encode(), xs, len(variables), n) != 0:
+            raise ValueError(cstr(lib.qd_ctx_message(ctx)))
+        if lib.qd_periods_vectors_read(ctx, shifts.encode(), n[0], g, w) != 0:
+            raise ValueError(cstr(lib.qd_ctx_message(ctx)))
+        p = lib.qd_periods_reduce(ctx, f, n[0], xs, g[0], w[0])
+        if not p:
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        try:
+            printed = []
+            for fmt in (lib.QD_RENDER_TEXT, lib.QD_RENDER_JSON):
+                buf = new("qd_buf")
+                if lib.qd_render_periods(ctx, f, p, xs, w[0], fmt, buf) != 0:
+                    lib.qd_buf_free(buf)
+                    raise Error(cstr(lib.qd_ctx_message(ctx)))
+                printed.append(buf_text(buf))
+            return Periods(tuple(printed))
+        finally:
+            lib.qd_periods_free(p)
+    finally:
+        if w[0] != ffi.NULL:
+            lib.qd_periods_vectors_free(w[0])
         lib.qd_ctx_free(ctx)
 
 

@@ -19,3 +19,37 @@ def test_pair_substitution():
 def test_not_quadratic():
     with pytest.raises(qdot.Error):
         qdot.quadratic_form("x^2 + x", ["x"])
+
+
+def test_homogeneity_euler():
+    # Desloge App. 20 (seed-desloge-D.md T27): T in the velocities has
+    # degree 2, so sum q' dT/dq' = 2T
+    h = qdot.homogeneity("m/2*(r'^2 + r^2*phi'^2)", ["r'", "phi'"])
+    assert h.homogeneous is True and h.degree == "2" and h.certainty == "proven"
+    assert h.euler == "m*(phi'^2*r^2 + r'^2)"
+
+
+def test_homogeneity_witness():
+    # x^2 + x: f(x) f(4x) - f(2x)^2 = 4 x^3, which the witness's value is
+    h = qdot.homogeneity("x^2 + x", ["x"])
+    assert h.homogeneous is False and h.degree is None
+    x = h.witness["point"]["x"]
+    assert h.witness["value"] == pytest.approx(4 * x**3, rel=1e-14)
+
+
+def test_homogeneity_refuses_constants():
+    with pytest.raises(ValueError, match="not a variable name"):
+        qdot.homogeneity("x^2", ["pi"])
+
+
+def test_periods_fundamental_system():
+    # Desloge App. 31 Thm 4: 2 pi and 4 pi/3 are periods of sin(3x), and
+    # their fundamental system is 2 pi/3 (2 pi = 3 e, 4 pi/3 = 2 e, eq. 3)
+    p = qdot.periods("sin(3*x)", ["x"], [["2*pi"], ["4*pi/3"]])
+    assert p.is_period == [True, True] and p.fundamental == [["2*pi/3"]]
+    assert p.coordinates == [[3], [2]] and p.rank == 1
+
+
+def test_periods_incommensurable():
+    with pytest.raises(qdot.Error, match="not a rational multiple"):
+        qdot.periods("x", ["x"], "1; sqrt(2)")

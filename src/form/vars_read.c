@@ -5,6 +5,7 @@
  */
 #include <stdio.h>
 #include "qdot/form.h"
+#include "qdot/read.h"
 #include "base/args.h"
 #include "base/diag.h"
 #include "base/mem.h"
@@ -46,9 +47,8 @@ qd_status qd_qform_vars_read(qd_ctx *ctx, const char *text, const qd_expr **x, s
         for (size_t k = i; k < j; k++)
             name[k - i] = text[k];
         name[j - i] = '\0';
-        const qd_expr *s = qd_lookup(ctx, name);
-        if (!s)
-            s = qd_symbol(ctx, name);
+        /* read as an expression reads it: pi is the constant, t' is 1 */
+        const qd_expr *s = qd_read(ctx, name, NULL, NULL);
         qd__free(name);
         if (!s && qd_ctx_status(ctx) == QD_ERR_NOMEM)
             return QD_ERR_NOMEM;

@@ -213,6 +213,12 @@ static pt_kind eval_at(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *c
     return k;
 }
 
+bool qd__ball_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *syms,
+                   const double *at, double *mid, double *rad) {
+    pt_kind k = eval_at(ctx, e, n, syms, at, 128, mid, rad);
+    return k != PT_BAD && k != PT_UNKNOWN && isfinite(*mid) && isfinite(*rad);
+}
+
 static uint64_t next_rand(uint64_t *s) {
     *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
     return *s >> 33;

@@ -99,6 +99,12 @@ struct qd__sym_state {
 /* Intern a node of the given kind/tag with args; the payload is compared and
  * hashed by the kind's rules.  proto carries the payload (only the union and
  * tag/order are read). */
+/* e in ball arithmetic (certify.c, 128 bits) at syms[i] = at[i], not
+ * simplified first: false where e is undefined there or not computable
+ * (a user function); else *mid and *rad (a bound of the ball's radius). */
+bool qd__ball_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *syms,
+                   const double *at, double *mid, double *rad);
+
 const qd_expr *qd__intern(qd_ctx *ctx, const qd_expr *proto, size_t nargs,
                           const qd_expr *const *args);
 const char *qd__intern_name(qd_ctx *ctx, const char *name);

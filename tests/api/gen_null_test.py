@@ -68,6 +68,8 @@ NULLABLE = {
     'qd_linpoint_read': {'qd'},
     'qd_linpoint_set': {'qd'},
     'qd_eval': {'syms', 'vals'},
+    'qd_periods_reduce': {'f'},  # no function: the fundamental system alone
+    'qd_render_periods': {'f'},
     'qd_field_modes_compute': {'opts'},
     'qd_field_parse': {'diag', 'opts'},
     'qd_free_symbols': {'out'},

@@ -1963,6 +1963,52 @@ static void null_form(void **state)
     /* n NULL */
     assert_int_equal(QD_ERR_ARG, qd_qform_vars_read(F.ctx, "q", (const qd_expr * *)F.e, 1, NULL));
     reset(&F);
+    /* ---- qd_homogeneity */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(NULL, F.q, 1, (const qd_expr * const *)F.e, (qd_homog *)(void *)F.blob));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (qd_homog *)(void *)F.blob));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(F.ctx, F.q, 1, NULL, (qd_homog *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_homogeneity(F.ctx, F.q, 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_homog_verdict_name */
+    /* no pointer argument */
+    /* ---- qd_periods_reduce */
+    /* ctx NULL */
+    assert_null(qd_periods_reduce(NULL, F.q, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_periods_reduce(F.ctx, F.q, 1, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* w NULL */
+    assert_null(qd_periods_reduce(F.ctx, F.q, 1, (const qd_expr * const *)F.e, 1, NULL));
+    reset(&F);
+    /* ---- qd_periods_free */
+    /* p NULL */
+    qd_periods_free(NULL);
+    reset(&F);
+    /* ---- qd_periods_vectors_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(NULL, "q", 1, F.z, NULL));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(F.ctx, NULL, 1, F.z, NULL));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(F.ctx, "q", 1, NULL, NULL));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_periods_vectors_read(F.ctx, "q", 1, F.z, NULL));
+    reset(&F);
+    /* ---- qd_periods_vectors_free */
+    /* w NULL */
+    qd_periods_vectors_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -4948,6 +4994,35 @@ static void null_render(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_qform(F.ctx, F.q, NULL, (qd_render_format){0}, NULL));
     reset(&F);
+    /* ---- qd_render_homog */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(NULL, NULL, 1, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(F.ctx, NULL, 1, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_homog(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_periods */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(NULL, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, NULL, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* w NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
+    reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_impulse(NULL, F.model, NULL, (qd_render_format){0}, &F.buf));
@@ -7004,6 +7079,28 @@ static void null_symmetry(void **state)
     reset(&F);
     /* e NULL */
     qd_symmetry_json_modes(NULL, NULL, NULL);
+    reset(&F);
+    /* ---- qd_symmetry_modes_plot */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* res NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* title NULL */
+    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, NULL));
     reset(&F);
     /* ---- qd_cyclic_print */
     /* c NULL */
