@@ -344,6 +344,19 @@ typedef struct qd_scan_view {
 QD_API qd_status qd_scan_print(const qd_scan_view *v, const qd_scan *sc, qd_buf *out);
 QD_API qd_status qd_scan_json(const qd_scan_view *v, const qd_scan *sc, qd_buf *out);
 
+/* What `qdot modes --scan NAME=A:B [--about ...] [--steps N]` writes, for
+ * the equations and state of p (qdot/linpoint.h): range "NAME=A:B" read by
+ * qd_state_named_range, about (NULL: the equilibrium qd_equilibria_choose
+ * takes at A) by qd_linpoint_read_exact (kept in the parameters, evaluated
+ * at each value), steps as qd_scan_opts.steps; then qd_modes_scan and the
+ * scan appended to out (qd_scan_print, or qd_scan_json when json).  An
+ * error in reading range or about is located in that text and *where (may
+ * be NULL) set to it, else *where is NULL (the scan's errors: QD_ERR_ARG
+ * for the parameter, QD_ERR_NUMERIC for an equilibrium lost). */
+QD_API qd_status qd_modes_scan_text(qd_ctx *ctx, const struct qd_linpoint *p, const char *range,
+                                    const char *about, size_t steps, bool json, qd_buf *out,
+                                    const char **where);
+
 /* ---- models in generalized speeds (src/linear/speeds_lin.c) ----------------
  *
  * The first-order system y = (q, u) of qd_speeds_derive, q' = kin(q, u, t),

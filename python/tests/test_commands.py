@@ -328,6 +328,27 @@ def test_stability_conical_pendulum():
     d = qdot.Model.load(bowl).stability(driven="phi' = 2")
     assert d.kind == "driven"
     same(d.json, cli("stability", bowl, "--driven", "phi' = 2"))
+    with pytest.raises(qdot.ModelError, match="not a coordinate") as err:
+        m.stability(ignore="phi", at={"thta": 1})
+    assert err.value.file == "at" and err.value.hint == "did you mean 'theta'?"
+
+
+def test_stability_scan_sleeping_top():
+    # the sleeping top (Britannica 1911 Dynamics sec. 6 (1), seed 004;
+    # seed-goldstein-britannica.md B11) is stable while nu^2 > 4 A M g h:
+    # with nu = 3, A = 1, M = 1, h = 1/2, up to g = 4.5
+    path = os.path.join(EXAMPLES, "sleeping_top.qd")
+    top = qdot.Model.load(path)
+    s = top.stability(ignore="psi", momentum="p_psi=3", scan="g=1:8")
+    assert s.transitions[-1].g == pytest.approx(9 / (4 * 1 * 1 * 0.5), rel=1e-9)
+    assert s.transitions[-1].to == "unstable" and s.samples[0].verdict == "stable"
+    same(s.json, cli("stability", path, "--ignore", "psi", "--momentum", "p_psi=3",
+                     "--scan", "g=1:8"))
+    with pytest.raises(qdot.ModelError) as err:
+        top.stability(ignore="psi", momentum="p_psi=3", scan="g=1")
+    assert err.value.file == "scan"
+    with pytest.raises(ValueError, match="steps is the number of steps of scan"):
+        top.stability(ignore="psi", steps=3)
 
 
 # ---- zvc ---------------------------------------------------------------------
@@ -345,6 +366,29 @@ def test_zvc_henon_heiles():
                      "--cells", "100"))
     with pytest.raises(ValueError):
         qdot.Model.load(path).zvc("x=-1:1, y=-1:1", 0.1, cells=1)
+
+
+def test_zvc_level_through_a_point_and_at_a_state():
+    # Henon-Heiles (examples/henon_heiles.qd): W = (x^2 + y^2)/2 + x^2 y - y^3/3,
+    # h = W + (x'^2 + y'^2)/2: through (0.5, 0) at rest, or from the origin
+    # with x' = 0.5, the level is 1/8
+    path = os.path.join(EXAMPLES, "henon_heiles.qd")
+    hh = qdot.Model.load(path)
+    through = hh.zvc("x=-1:1, y=-1:1", through={"x": 0.5, "y": 0}, cells=60)
+    at = hh.zvc("x=-1:1, y=-1:1", at="x=0, y=0, x'=0.5", cells=60)
+    assert through.level == at.level == pytest.approx(0.125, rel=1e-15)
+    assert through.json == hh.zvc("x=-1:1, y=-1:1", 0.125, cells=60).json
+    same(through.json, cli("zvc", path, "--box", "x=-1:1, y=-1:1", "--through", "x=0.5, y=0",
+                           "--cells", "60"))
+    with pytest.raises(qdot.ModelError) as err:
+        hh.zvc("x=-1:1, y=-1:1", through="x=0.5, x'=1")
+    assert err.value.file == "through"
+    with pytest.raises(qdot.ArgumentError, match="give the level once"):
+        hh.zvc("x=-1:1, y=-1:1", 0.1, through="x=0")
+    with pytest.raises(qdot.ModelError) as err:
+        hh.zvc("x=-1:1, z=-1:1", 0.1)
+    assert err.value.file == "box"
+
 
 
 # ---- impulse -----------------------------------------------------------------

@@ -3463,6 +3463,19 @@ static void null_modes(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_scan_json(NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_modes_scan_text */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(NULL, NULL, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(F.ctx, NULL, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* range NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(F.ctx, NULL, NULL, "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(F.ctx, NULL, "q", "q", 1, false, NULL, (const char * *)F.names));
+    reset(&F);
     /* ---- qd_speeds_linear_about */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_speeds_linear *)(void *)F.blob));
@@ -6867,6 +6880,19 @@ static void null_zvc(void **state)
     /* ---- qd_zvc_picture_free */
     /* p NULL */
     qd_zvc_picture_free(NULL);
+    reset(&F);
+    /* ---- qd_zvc_level_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(NULL, NULL, NULL, "q", "q", "q", F.d, F.d, (const char * *)F.names));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(F.ctx, NULL, NULL, "q", "q", "q", F.d, F.d, (const char * *)F.names));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(F.ctx, NULL, NULL, "q", "q", "q", NULL, F.d, (const char * *)F.names));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(F.ctx, NULL, NULL, "q", "q", "q", F.d, NULL, (const char * *)F.names));
     reset(&F);
     /* ---- qd_zvc_print */
     /* ctx NULL */
