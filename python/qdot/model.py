@@ -249,17 +249,51 @@ def _state_at(core, at, extra):
     return syms, vals
 
 
-def _render(core, fn, e, fmt, at, extra, multipliers=False):
-    """fn (qd_render_eom or qd_render_speeds) of e in format fmt."""
+def _render_lagrange(core, fmt, at):
+    """qd_render_eom of Lagrange's equations of a model that declares
+    `speeds` (`qdot eom` renders its speeds form: Model.speeds_eom), at's
+    names read by _state_at."""
     k = new("qd_render_format")
-    lib.qd_render_format_parse(fmt.encode(), k)
+    if not lib.qd_render_format_parse(fmt.encode(), k):
+        raise ValueError("eom: no format %r" % (fmt,))
     source = ffi.new("char[]", core.file.encode())
-    opts = new("qd_render_opts", {"source": source, "multipliers": bool(multipliers)})
+    opts = new("qd_render_opts", {"source": source})
     if at:
-        syms, vals = _state_at(core, at, extra)
+        syms, vals = _state_at(core, at, [])
         csyms, cvals = exprs(syms), doubles(vals)  # alive for the call
         opts.nstate, opts.syms, opts.vals = len(syms), csyms, cvals
-    return _commands.rendered(core, lambda buf: fn(core.ctx, core.model, e, opts, k[0], buf))
+    return _commands.rendered(core, lambda buf: lib.qd_render_eom(
+        core.ctx, core.model, core.eom_ptr(), opts, k[0], buf))
+
+
+def _render(core, fmt, at, speeds=None):
+    """What `qdot eom --format fmt [--at ...]` prints (qd_eom_request_render:
+    the library derives, reads at's state and renders); speeds: the
+    qd_speeds_opts of a model with `speeds`.  A note the command prints
+    (a solution too large, the renderer's) is a UserWarning; an error in at
+    a ModelError shown in its text."""
+    import warnings
+    from .linear import located
+    k = new("qd_render_format")
+    if not lib.qd_render_format_parse(fmt.encode(), k):
+        raise ValueError("eom: no format %r" % (fmt,))
+    src = _commands.source(core)
+    text = _commands.text_arg(at, "at") if at else None
+    rq = new("qd_eom_request", {"fmt": k[0], "source": src,
+                                "at": text if text is not None else ffi.NULL})
+    if speeds is not None:
+        rq.speeds = speeds[0]
+    out, notes, step = new("qd_buf"), new("qd_buf"), new("qd_eom_step")
+    st = lib.qd_eom_request_render(core.ctx, core.model, rq, out, notes, step)
+    note = buf_text(notes)
+    if st != lib.QD_OK:
+        lib.qd_buf_free(out)
+        if step[0] == lib.QD_EOM_STEP_AT and text is not None:
+            raise located(core, "at", ffi.string(text))
+        raise core.error(st, cls=ModelError if step[0] == lib.QD_EOM_STEP_DERIVE else None)
+    for line in note.splitlines():
+        warnings.warn("eom: " + line, UserWarning, stacklevel=4)
+    return buf_text(out)
 
 
 def _sympy_namespace(core, extra=()):
@@ -383,7 +417,10 @@ class Model:
             M, f = sp.Matrix(M), sp.Matrix(f)
         cons = [cstr(e.con[k].name) for k in range(e.ncon)]
         out = Equations([name_of(e.q[j]) for j in range(n)], M, f, cons)
-        out._print = lambda fmt, at: _render(core, lib.qd_render_eom, core.eom_ptr(), fmt, at, [])
+        if lib.qd_model_nspeeds(core.model):
+            out._print = lambda fmt, at: _render_lagrange(core, fmt, at)
+        else:
+            out._print = lambda fmt, at: _render(core, fmt, at)
         return out
 
     def speeds_eom(self, method="kane", appell=False, multipliers=False):
@@ -403,8 +440,7 @@ class Model:
         ptr = _SpeedsHandle(core, se)  # freed with the result
         out = _speeds_result(core, se, method)
         out._handle = ptr
-        out._print = lambda fmt, at: _render(
-            core, lib.qd_render_speeds, ptr.se, fmt, at, ptr.speeds, multipliers=multipliers)
+        out._print = lambda fmt, at: _render(core, fmt, at, opts)
 
         def hamel(fmt="text"):
             """Hamel's coefficients gamma_ikm (text, or a dict for "json")."""
