@@ -509,10 +509,11 @@ class Model:
         are the keys of `qdot hamiltonian --format json` (qd_render_hamiltonian):
         model, coordinates, momenta, definitions, velocities, H, dq_dt,
         dp_dt, H_is_energy, H_minus_energy, conserved, H_given (L, L_error
-        for a model given by H); .json is that dict.  at={name: value}
-        (coordinates, momenta named as printed, p_x, t; the others at the
-        model's initial values), as --at: H, dq_dt and dp_dt of the JSON are
-        then numbers there (qd_ham_point_eval), and "at" the point."""
+        for a model given by H); .json is that dict.  at={name: value} or
+        text (coordinates, momenta named as printed, p_x, t; the others 0,
+        not the model's initial values), read as --at is (qd_ham_point_at):
+        H, dq_dt and dp_dt of the JSON are then numbers there, and "at" the
+        point."""
         core = self._for("hamiltonian")
         given = lib.qd_model_hamiltonian_given(core.model)
         h = lib.qd_ham_derive(core.ctx, core.model, ffi.NULL if given else core.eom_ptr())
@@ -523,10 +524,13 @@ class Model:
             hh = h
             n = hh.n
             point = ffi.NULL
-            if at:
-                syms, vals = _state_at(core, at, [hh.p[j] for j in range(n)])
-                core.check(lib.qd_ham_point_eval(core.ctx, h, len(syms), exprs(syms),
-                                                 doubles(vals), pt), cls=NumericalError)
+            if at:  # read and evaluated as --at is (qd_ham_point_at)
+                from .linear import located
+                text = _commands.text_arg(at, "at")
+                if lib.qd_ham_point_at(core.ctx, core.model, h, text, pt) != lib.QD_OK:
+                    if lib.qd_ctx_diag(core.ctx).located:
+                        raise located(core, "at", ffi.string(text))
+                    raise core.error(cls=NumericalError)
                 point = pt
             src = _commands.source(core)
             data = _json.loads(_commands.rendered(core, lambda buf: lib.qd_render_hamiltonian(

@@ -557,3 +557,17 @@ def test_output_fields():
     with pytest.raises(AttributeError):
         out.energy = 1.0
     assert out._repr_latex_() is None         # orbit has no LaTeX printer
+
+
+def test_hamiltonian_at_reads_as_the_cli(tmp_path):
+    # H = p^2/(2m) + k x^2/2; the names --at does not give are 0, not the
+    # model's initial x = 1: at p_x = 2 alone H = 4/4 = 1
+    path = model_file(tmp_path, OSCILLATOR)
+    h = qdot.Model.load(path).hamiltonian(at={"p_x": 2})
+    assert h.output.H == pytest.approx(2.0**2 / (2 * 2), rel=1e-15)
+    assert h.output.dp_dt == pytest.approx([0.0], abs=0)
+    assert h.output.dq_dt == pytest.approx([2.0 / 2], rel=1e-15)
+    same(h.json, cli("hamiltonian", path, "--at", "p_x=2"))
+    with pytest.raises(qdot.ModelError, match="unknown name") as err:
+        qdot.Model.load(path).hamiltonian(at="p_y=1")
+    assert err.value.file == "at"

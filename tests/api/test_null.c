@@ -4772,6 +4772,22 @@ static void null_render(void **state)
     /* pt NULL */
     qd_ham_point_free(NULL);
     reset(&F);
+    /* ---- qd_ham_point_at */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(NULL, F.model, NULL, "q", (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, NULL, NULL, "q", (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, F.model, NULL, "q", (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, F.model, NULL, NULL, (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, F.model, NULL, "q", NULL));
+    reset(&F);
     /* ---- qd_render_hamiltonian */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_hamiltonian(NULL, F.model, NULL, "q", NULL, (qd_render_format){0}, &F.buf));
