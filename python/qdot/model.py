@@ -629,21 +629,29 @@ class Model:
         kind, turning_points, J, omega, angle), actions, frequencies, angles,
         degeneracies, H_of_J.  at: {name: value} over the model's initial
         values (coordinates, velocities "NAME'", t, parameters), as --at;
-        angles: coordinates to take as angles (--angle).  A model given by H
-        takes its velocities from its initial values only (see docs)."""
-        core = self._core
-        syms, vals = _state_at(core, at or {}, [])
-        angle_syms = self._lookup(angles, "action") if angles else []
+        angles: coordinates to take as angles (--angle).  The state is read
+        as --at is (qd_action_state_read): over the model's initial values,
+        and for a model given by H the momenta at names."""
+        from .linear import located
+        core = self._for("action")
+        angle_syms = self._lookup(angles, "action", core) if angles else []
         keep = exprs(angle_syms)
         opts = new("qd_action_opts", {"nangles": len(angle_syms), "angles": keep})
-        act = new("qd_action")
-        try:
-            core.check(lib.qd_action_at(core.ctx, core.model, len(syms), exprs(syms),
-                                        doubles(vals), opts, act))
+        act, st = new("qd_action"), new("qd_state")
+        text = _commands.text_arg(at, "at") if at else None
+        try:  # the state read as --at is (qd_action_state_read)
+            if lib.qd_action_state_read(core.ctx, core.model,
+                                        text if text is not None else ffi.NULL, st) != lib.QD_OK:
+                if text is not None and lib.qd_ctx_diag(core.ctx).located:
+                    raise located(core, "at", ffi.string(text))
+                raise core.error()
+            core.check(lib.qd_action_at(core.ctx, core.model, st.n, st.syms, st.vals, opts,
+                                        act))
             return _commands.output(core, "action", lambda buf: lib.qd_action_print(
                 core.ctx, act, True, buf))
         finally:
             lib.qd_action_free(act)
+            lib.qd_state_free(st)
 
     def _phase_read(self, ph, text, what, core=None):
         """text read as a function on phase space (qd_phase_read); a

@@ -571,3 +571,20 @@ def test_hamiltonian_at_reads_as_the_cli(tmp_path):
     with pytest.raises(qdot.ModelError, match="unknown name") as err:
         qdot.Model.load(path).hamiltonian(at="p_y=1")
     assert err.value.file == "at"
+
+
+def test_action_of_a_model_given_by_h_takes_its_momenta(tmp_path):
+    # H = p^2/(2m) + k q^2/2 at q = 1, p = 0.5: E = 0.625, J = 2 pi E/omega,
+    # omega = sqrt(k/m) = 2; q' = p/m = 0.25 gives the same J
+    text = "coordinates q\nmomenta p\nparameters m = 2, k = 8\nH = p^2/(2*m) + k*q^2/2\n"
+    path = model_file(tmp_path, text)
+    m = qdot.Model.load(path)
+    E = 0.5**2 / (2 * 2) + 8 / 2
+    by_p = m.action(at={"q": 1, "p": 0.5})
+    assert by_p.energy == pytest.approx(E, rel=1e-15)
+    assert by_p.actions.q == pytest.approx(2 * math.pi * E / 2, rel=1e-12)
+    assert m.action(at="q=1, q'=0.25").actions.q == pytest.approx(by_p.actions.q, rel=1e-14)
+    same(by_p.json, cli("action", path, "--at", "q=1.0, p=0.5"))
+    with pytest.raises(qdot.ModelError, match="unknown name") as err:
+        m.action(at="z=1")
+    assert err.value.file == "at"

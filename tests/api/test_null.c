@@ -170,6 +170,16 @@ static void null_action(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_action_at(F.ctx, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
     reset(&F);
+    /* ---- qd_action_state_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_state_read(NULL, F.model, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_state_read(F.ctx, NULL, "q", NULL));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_state_read(F.ctx, F.model, "q", NULL));
+    reset(&F);
     /* ---- qd_action_of_sep */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_action_of_sep(NULL, NULL, F.b, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_action *)(void *)F.blob));
