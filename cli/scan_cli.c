@@ -21,17 +21,6 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
 
 /* ---- the command ------------------------------------------------------------------- */
 
-int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json) {
-    qd_buf out = QD_BUF_INIT;
-    if ((json ? qd_scan_json(v, sc, &out) : qd_scan_print(v, sc, &out)) != QD_OK) {
-        cli_diag_error("cannot print the scan: %s", out.failed ? "out of memory"
-                                                                : "a number JSON cannot hold");
-        qd_buf_free(&out);
-        return QD_EXIT_FAIL;
-    }
-    return cli_emit(&out, "scan");
-}
-
 /* The library's scan from the options (qd_modes_scan_text). */
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json) {
     const char *where = NULL;

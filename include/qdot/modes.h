@@ -410,6 +410,21 @@ QD_API qd_status qd_speeds_modes_scan(qd_ctx *ctx, const struct qd_speeds_eom *e
                                       const qd_expr *what, double a, double b,
                                       const qd_scan_opts *opts, qd_scan *out);
 
+/* What `qdot modes --scan NAME=A:B` writes for a model with `speeds`, at
+ * the state syms/vals (the model's, its speeds appended, with --about's
+ * values or at the first equilibrium): range "NAME=A:B" read by
+ * qd_state_named_range, NAME a parameter, coordinate or speed among syms
+ * (not t; QD_ERR_ARG naming it otherwise); qd_speeds_modes_scan with steps;
+ * the scan appended to out (qd_scan_print, or qd_scan_json when json), its
+ * head naming about (the text the state was given by, or NULL: the first
+ * equilibrium).  An error about range has *where (may be NULL) set to it
+ * (located in it when the reader's), else NULL. */
+QD_API qd_status qd_speeds_modes_scan_text(qd_ctx *ctx, const struct qd_speeds_eom *e,
+                                           size_t nvals, const qd_expr *const *syms,
+                                           const double *vals, const char *range,
+                                           const char *about, size_t steps, bool json,
+                                           qd_buf *out, const char **where);
+
 /* ---- printed (src/linear/speeds_print.c) --------------------------------- */
 
 /* The modes of e about the state syms/vals (the one lin was linearized

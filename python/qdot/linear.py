@@ -145,7 +145,15 @@ def speeds_equilibria(core):
         p.free()
 
 
-def speeds_modes(core, about):
+def _steps(steps, what):
+    if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or
+                              not 1 <= steps <= 100000):
+        raise ValueError("%s: steps is a number of steps from 1 to 100000, not %r"
+                         % (what, steps))
+    return steps or 0
+
+
+def speeds_modes(core, about, scan_=None, steps=None):
     """The eigenvalues of the reduced first-order system about a state
     (qd_speeds_linear_about, qd_speeds_modes_solve, qd_speeds_modes_print):
     about's coordinates and speeds ("theta=pi/2, u3=6"), else the first
@@ -167,6 +175,8 @@ def speeds_modes(core, about):
             if not found[0]:
                 raise NumericalError("modes: no equilibrium found (Model.equilibria() lists "
                                      "none): give a state with about={...}", QD_ERR_NUMERIC)
+        if scan_ is not None:  # qd_speeds_modes_scan_text at that state
+            return _speeds_scan(core, p, _range_arg(scan_, "modes"), text, _steps(steps, "modes"))
         core.check(lib.qd_speeds_linear_about(core.ctx, p.se, p.st.n, p.st.syms, p.st.vals, lin))
         core.check(lib.qd_speeds_modes_solve(core.ctx, lin, res), NumericalError)
         output = _commands.output(core, "modes", lambda buf: lib.qd_speeds_modes_print(
@@ -321,8 +331,7 @@ def modes(core, about=None, at_equilibrium=None, initial=None, symmetry=False,
                              "equilibrium chosen at the start of the range): give neither "
                              "at_equilibrium, initial, symmetry nor independent")
         if lib.qd_model_nspeeds(core.model):
-            raise ValueError("modes: scan of a model with speeds is not from Python yet "
-                             "(`qdot modes --scan` takes it)")
+            return speeds_modes(core, about, scan_, steps)
         return scan(core, scan_, about, steps)
     if steps is not None:
         raise ValueError("modes: steps is the number of steps of scan: give scan=\"NAME=A:B\"")
@@ -442,3 +451,20 @@ def _constrained(core, p, at, independent):
         return out
     finally:
         lib.qd_constrained_at_free(ca)
+
+
+def _speeds_scan(core, p, range_, about, steps):
+    """`qdot modes --scan` of a model with speeds: an Output of the scan."""
+    rtext, where = _commands.text_arg(range_, "scan"), ffi.new("const char **")
+
+    def call(buf):
+        st = lib.qd_speeds_modes_scan_text(core.ctx, p.se, p.st.n, p.st.syms, p.st.vals, rtext,
+                                           about if about is not None else ffi.NULL, steps,
+                                           True, buf, where)
+        if st != lib.QD_OK:
+            lib.qd_buf_free(buf)
+            if where[0] != ffi.NULL:
+                raise located(core, "scan", ffi.string(rtext))
+            raise core.error(st, cls=ArgumentError if st == lib.QD_ERR_ARG else NumericalError)
+        return st
+    return _commands.output(core, "modes", call)

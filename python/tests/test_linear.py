@@ -200,3 +200,20 @@ def test_modes_scan_finds_the_hoops_threshold():
         hoop.modes(scan="omega=-1:2")
     with pytest.raises(ValueError, match="steps is the number of steps of scan"):
         hoop.modes(steps=5)
+
+
+def test_speeds_modes_scan_finds_the_disks_threshold():
+    # the disk rolling upright is stable iff W^2 > g/(3a) (Neimark and
+    # Fufaev ch. III): the scan along the spin u2 crosses at sqrt(g/(3a)),
+    # where the lean's root is double (s = 0 twice: its eigenvalues move as
+    # the square root of the error, so the verdict's place is good to ~1e-9,
+    # the CLI's check_speeds_linear_cli allows 1e-8)
+    disk = qdot.Model.load(DISK)
+    a, g = disk.params["r"], disk.params["g"]
+    s = disk.modes(about="u2=6", scan="u2=1:8")
+    (t,) = s.transitions
+    assert t.u2 == pytest.approx(math.sqrt(g / (3 * a)), rel=1e-8)
+    assert (t["from"], t.to) == ("unstable", "stable")
+    same(s.json, cli("modes", DISK, "--about", "u2=6", "--scan", "u2=1:8"))
+    with pytest.raises(qdot.ArgumentError, match="not a parameter, coordinate or speed"):
+        disk.modes(scan="t=0:1")

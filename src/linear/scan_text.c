@@ -12,6 +12,7 @@
 #include "../base/mem.h"
 
 #include <stdio.h>
+#include <string.h>
 
 /* The scan read and run: *where names the text an error is located in. */
 static qd_status scan(qd_ctx *ctx, const qd_linpoint *p, const char *range, const char *about,
@@ -59,5 +60,53 @@ qd_status qd_modes_scan_text(qd_ctx *ctx, const qd_linpoint *p, const char *rang
     qd_scan_free(&sc);
     qd__free(ab);
     qd__free(names);
+    return st;
+}
+
+/* The slot of syms named name that a scan may follow: a parameter, a
+ * coordinate or a speed (not t). */
+static const qd_expr *scan_slot(size_t nvals, const qd_expr *const *syms, const char *name) {
+    const qd_expr *what = NULL;
+    for (size_t k = 0; k < nvals; k++)
+        if (syms[k] && !strcmp(qd_expr_name(syms[k]), name) &&
+            qd_symbol_role(syms[k]) != QD_ROLE_TIME)
+            what = syms[k];
+    return what;
+}
+
+qd_status qd_speeds_modes_scan_text(qd_ctx *ctx, const struct qd_speeds_eom *e, size_t nvals,
+                                    const qd_expr *const *syms, const double *vals,
+                                    const char *range, const char *about, size_t steps,
+                                    bool json, qd_buf *out, const char **where) {
+    QD_ARGS_CTX(ctx, ctx && e && nvals && syms && vals && range && out);
+    if (where)
+        *where = NULL;
+    char name[128], followed[1024];
+    double a, b;
+    qd_status st = qd_state_named_range(ctx, NULL, range, name, sizeof name, &a, &b);
+    const qd_expr *what = st == QD_OK ? scan_slot(nvals, syms, name) : NULL;
+    if (st == QD_OK && !what) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "%s is not a parameter, coordinate or speed of the model",
+                     name);
+        st = QD_ERR_ARG;
+    }
+    if (st != QD_OK) {
+        if (where)
+            *where = range;
+        return st;
+    }
+    qd_scan_opts o = {.steps = steps};
+    qd_scan sc = {0};
+    st = qd_speeds_modes_scan(ctx, e, nvals, syms, vals, what, a, b, &o, &sc);
+    if (st == QD_OK) {
+        snprintf(followed, sizeof followed, "the state %s",
+                 about ? about : "of the first equilibrium (every speed 0)");
+        qd_scan_view v = {name, NULL, followed, "state"};
+        st = json ? qd_scan_json(&v, &sc, out) : qd_scan_print(&v, &sc, out);
+        if (st != QD_OK)
+            qd_ctx_error(ctx, st, "cannot print the scan: %s",
+                         out->failed ? "out of memory" : "a number JSON cannot hold");
+    }
+    qd_scan_free(&sc);
     return st;
 }

@@ -41,6 +41,7 @@ NULLABLE = {
     'qd_modes_scan_text': {'about', 'where'},  # issue 32: the chosen equilibrium; not wanted
     'qd_zvc_level_read': {'level', 'through', 'at', 'where'},  # issue 32: one of three
     'qd_action_state_read': {'at'},  # issue 32: the model's initial state alone
+    'qd_speeds_modes_scan_text': {'about', 'where'},  # issue 32: the first equilibrium
     'qd_ctx_error_about': {'hint', 'name'},
     'qd_ctx_new_with': {'a'},
     'qd_diag_format': {'file', 'text'},

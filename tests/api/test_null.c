@@ -3535,6 +3535,25 @@ static void null_modes(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.q, 1, 1, NULL, NULL));
     reset(&F);
+    /* ---- qd_speeds_modes_scan_text */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, NULL, F.d, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* range NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, "q", "q", 1, false, NULL, (const char * *)F.names));
+    reset(&F);
     /* ---- qd_speeds_modes_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_modes_print(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, false, &F.buf));
