@@ -77,20 +77,27 @@ typedef struct an_progress {
     double t0, t_end;
 } an_progress;
 
-static void progress(void *data, double t) {
+static int progress(void *data, double t) {
     an_progress *p = data;
     cli_progress_update(&p->bar, (t - p->t0) / (p->t_end - p->t0), t);
+    return cli_interrupted(); /* ^C: the page of the motion so far */
 }
 
-static int run(cli_sim *c, qd_scene_setup *sc) {
+static int run(cli_sim *c, qd_scene_setup *sc, bool *interrupted) {
     an_progress pr = {.t0 = c->opts.t0, .t_end = c->opts.t_end};
     qd_sim_stats st;
     cli_progress_start(&pr.bar, "animate");
+    cli_interrupt_begin();
     qd_status rs = qd_scene_setup_record(sc, &c->opts, progress, &pr, &st);
+    *interrupted = cli_interrupted();
+    cli_interrupt_end();
     double wall = cli_progress_end(&pr.bar);
     if (rs != QD_OK)
         return cli_sim_fail(c, rs);
     const qd_scene *v = qd_scene_setup_scene(sc);
+    if (*interrupted)
+        fprintf(stderr, "qdot: animate: interrupted at t = %.17g; the page shows the motion "
+                        "up to that time\n", v->fr->t[v->fr->nframes - 1]);
     fprintf(stderr, "qdot: animate: %s, t = %g..%g: %zu frames from %zu steps, %.3g s; "
                     "energy error %.3g over the rows (%.3g at the steps)\n", v->method,
             c->opts.t0, v->fr->t[v->fr->nframes - 1], v->fr->nframes, st.steps, wall,
@@ -128,12 +135,15 @@ int cli_cmd_animate(int argc, char **argv) {
     rc = cli_sim_setup(&c, &p.a);
     if (rc == QD_EXIT_OK)
         rc = scene_points(&c, &p, &sc);
+    bool interrupted = false;
     if (rc == QD_EXIT_OK)
-        rc = run(&c, sc);
+        rc = run(&c, sc, &interrupted);
     const qd_scene *v = qd_scene_setup_scene(sc);
     if (rc == QD_EXIT_OK)
         rc = write_page(v, html);
-    if (rc == QD_EXIT_OK)
+    if (rc == QD_EXIT_OK && interrupted)
+        rc = CLI_EXIT_INTERRUPTED;
+    if (rc == QD_EXIT_OK || rc == CLI_EXIT_INTERRUPTED)
         fprintf(stderr, "qdot: animate: wrote %s (%zu point%s, %zu link%s, %s)\n", html,
                 v->npts, v->npts == 1 ? "" : "s", v->nlinks, v->nlinks == 1 ? "" : "s",
                 v->plane[0] < 0 ? "3-D" : "in a plane");

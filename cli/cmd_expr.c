@@ -2,12 +2,15 @@
  * cli/cmd_expr.c - the kernel on the command line: diff, expand, simplify,
  * print.  Each reads one expression (unknown names become plain symbols, or
  * coordinates when written with a prime: r' is then a symbol of its own),
- * applies one libqdot operation and prints the result; the variables of
- * diff are read by qd_read_variable (qdot/read.h).
+ * applies one libqdot operation and prints the result (--format json: the
+ * library's qd_json_expr_result); the variables of diff are read by
+ * qd_read_variable (qdot/read.h).
  */
 #include "driver.h"
 
 #include <string.h>
+
+#include "qdot/json.h"
 
 #define MAX_VARS 16
 
@@ -18,9 +21,10 @@ typedef struct expr_args {
     const char *format;
     const char *pos[1 + MAX_VARS]; /* EXPR, then the VARs of diff */
     unary_op op;                   /* applied after diff; may be NULL */
+    const char *name;              /* the command's */
 } expr_args;
 
-static const char *const formats[] = {"text", "latex", "c", "sympy", NULL};
+static const char *const formats[] = {"text", "latex", "c", "sympy", "json", NULL};
 
 static const cli_opt expr_opts[] = {
     CLI_OPT_FORMATS(expr_args, format, formats),
@@ -37,13 +41,15 @@ static const cli_spec specs[] = {
     SPEC("print", "EXPR [--format F]", "print an expression in canonical form", 1),
 };
 
-static int emit(qd_ctx *ctx, const qd_expr *e, qd_format fmt) {
+static int emit(qd_ctx *ctx, const qd_expr *e, const expr_args *a, size_t nvars) {
     if (!e)
         return cli_diag_ctx(ctx);
     qd_buf b = QD_BUF_INIT;
-    qd_status st = qd_print(ctx, e, fmt, &b);
+    qd_status st = cli_json(a->format)
+                       ? qd_json_expr_result(ctx, a->name, a->pos[0], nvars, a->pos + 1, e, &b)
+                       : qd_print(ctx, e, cli_format_or_text(a->format), &b);
     if (st == QD_OK)
-        printf("%s\n", qd_buf_str(&b));
+        printf("%s%s", qd_buf_str(&b), cli_json(a->format) ? "" : "\n"); /* JSON has it */
     else
         cli_diag_error("cannot print: %s", qd_status_str(st));
     qd_buf_free(&b);
@@ -53,7 +59,6 @@ static int emit(qd_ctx *ctx, const qd_expr *e, qd_format fmt) {
 static int run(cli_run *c) {
     const expr_args *a = (expr_args *)c;
     qd_ctx *ctx = c->ctx;
-    qd_format fmt = cli_format_or_text(a->format);
     const char *text = a->pos[0];
     size_t nvars = 0;
     while (nvars < MAX_VARS && a->pos[1 + nvars])
@@ -76,12 +81,12 @@ static int run(cli_run *c) {
     }
     if (a->op)
         e = a->op(ctx, e);
-    return emit(ctx, e, fmt);
+    return emit(ctx, e, a, nvars);
 }
 
 static int drive(int argc, char **argv, const cli_spec *spec, unary_op op) {
     const cli_driver d = {spec, 0, offsetof(expr_args, pos), NULL, run, NULL};
-    expr_args a = {.op = op};
+    expr_args a = {.op = op, .name = spec->name};
     return cli_drive(&d, &a.c, argc, argv);
 }
 

@@ -21,6 +21,7 @@ typedef struct ham_run {
     qd_eom *e;
     qd_ham *h;
     const char *at, *format;
+    bool second; /* --second-kind: qd_ham2_derive */
     cli_list sets;
     qd_ham_point pt; /* H and the equations at --at */
 } ham_run;
@@ -32,6 +33,9 @@ static const cli_opt opts[] = {
      "evaluate H and the equations at this point (momenta named as printed)", NULL, NULL},
     {"--set", NULL, CLI_LIST, offsetof(ham_run, sets), "NAME=VALUE",
      "give a parameter another value (fixed into the expressions)", NULL, NULL},
+    {"--second-kind", NULL, CLI_FLAG, offsetof(ham_run, second), NULL,
+     "Hamilton's equations of the second kind: K from T, every other force in Q (Desloge ch. 72)",
+     NULL, NULL},
     CLI_OPT_FORMATS(ham_run, format, formats),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
@@ -69,11 +73,12 @@ static int run(cli_run *c) {
     bool given = rc == QD_EXIT_OK && qd_model_hamiltonian_given(c->mf.model);
     /* a singular Hessian named as the Legendre transform sees it, before
      * Lagrange's equations fail on the same matrix */
-    if (rc == QD_EXIT_OK && !given && qd_ham_regular(c->ctx, c->mf.model) != QD_OK)
+    if (rc == QD_EXIT_OK && !given && !r->second && qd_ham_regular(c->ctx, c->mf.model) != QD_OK)
         rc = cli_eom_derive_error(c->ctx, &c->mf);
     if (rc == QD_EXIT_OK && !given && !(r->e = qd_eom_derive(c->ctx, c->mf.model)))
         rc = cli_eom_derive_error(c->ctx, &c->mf);
-    if (rc == QD_EXIT_OK && !(r->h = qd_ham_derive(c->ctx, c->mf.model, r->e)))
+    if (rc == QD_EXIT_OK && !(r->h = (r->second ? qd_ham2_derive : qd_ham_derive)(
+                                  c->ctx, c->mf.model, r->e)))
         rc = cli_eom_derive_error(c->ctx, &c->mf);
     if (rc == QD_EXIT_OK && r->at)
         rc = evaluate(r);

@@ -11,13 +11,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include "lqr_cli.h"
+#include "qdot/conlin.h"
 #include "qdot/statespace.h"
 
 enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
 static const char *const formats[] = {"text", "json", "c", "sympy", "octave", NULL};
 
 typedef struct lin_args {
-    const char *about, *lqr, *independent, *format_name;
+    const char *about, *lqr, *independent, *format_name, *scan;
     cli_list sets;
     int format;
 } lin_args;
@@ -31,6 +32,8 @@ static const cli_opt opts[] = {
      "also the LQR gain for these weights", NULL, NULL},
     {"--independent", NULL, CLI_TEXT, offsetof(lin_args, independent), "\"q1, ...\"",
      "the independent coordinates on a constraint manifold", NULL, NULL},
+    {"--scan", NULL, CLI_TEXT, offsetof(lin_args, scan), "NAME=A:B", "constraints: the "
+     "eigenvalues at 101 values of a parameter, and where stability changes", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(lin_args, format_name), "F", "output format",
      formats, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
@@ -54,24 +57,57 @@ static int emit(qd_ctx *ctx, const lin_args *a, const qd_statespace *s,
                            "state-space form");
 }
 
-/* A model that keeps holonomic constraints: A over the independent states
- * on the manifold (constrained_cli.c). */
+/* Velocity constraints, --lqr, --scan, code: the manifold's states (qdot/conlin.h). */
+static int manifold(qd_ctx *ctx, const lin_args *a, cli_lin_run *r, int fmt) {
+    qd_conlin c = {0};
+    qd_conlin_scan sc = {0};
+    qd_care_result lqr = {0};
+    qd_buf b = QD_BUF_INIT;
+    char name[128];
+    double lo = 0, hi = 0;
+    int rc = a->scan ? cli_scan_range(ctx, a->scan, name, sizeof name, &lo, &hi) : QD_EXIT_OK;
+    if (rc == QD_EXIT_OK && qd_conlin_point(ctx, r->c.mf.model, &r->pt, a->about) != QD_OK)
+        rc = cli_state_diag(ctx, "--about", a->about);
+    else if (rc == QD_EXIT_OK && a->scan &&
+             qd_conlin_scan_run(ctx, r->e, r->c.mf.model, &r->pt, a->about, a->independent, name,
+                                lo, hi, 100, &sc) != QD_OK)
+        rc = cli_state_diag(ctx, "--independent", a->independent);
+    else if (rc == QD_EXIT_OK && a->scan)
+        rc = cli_emit_status(ctx, qd_conlin_scan_print(&sc, name, fmt == QD_SS_JSON, &b), &b,
+                             "scan");
+    else if (rc == QD_EXIT_OK &&
+             qd_conlin_about(ctx, r->e, r->c.mf.model, &r->pt, a->independent, &c) != QD_OK)
+        rc = cli_state_diag(ctx, "--independent", a->independent);
+    else if (rc == QD_EXIT_OK && a->lqr)
+        rc = cli_lqr_design(ctx, &c.ss, a->lqr, &lqr);
+    if (rc == QD_EXIT_OK && !a->scan)
+        rc = cli_emit_status(ctx, qd_conlin_render(ctx, &c, a->lqr ? &lqr : NULL, fmt, &b), &b,
+                             "state-space form");
+    qd_care_result_free(&lqr);
+    qd_conlin_scan_free(&sc);
+    qd_conlin_free(&c);
+    return rc;
+}
+
+/* A model that keeps constraints: A over the independent states on the
+ * manifold (constrained_cli.c, or manifold above). */
 static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eom *e) {
+    static const qd_ss_format fmt[] = {QD_SS_TEXT, QD_SS_JSON, QD_SS_C, QD_SS_SYMPY,
+                                       QD_SS_OCTAVE};
     if (!e->ncon)
-        return cli_usage_error("--independent: the model keeps no constraints");
-    if (a->lqr || (a->format != F_TEXT && a->format != F_JSON)) {
-        cli_diag_error("on the constraint manifold linearize gives A and B (text or json); %s "
-                      "is not done yet", a->lqr ? "--lqr" : formats[a->format]);
-        return QD_EXIT_USAGE;
-    }
+        return cli_usage_error("%s: the model keeps no constraints",
+                               a->scan ? "--scan" : "--independent");
     cli_lin_run r = {.c = {.ctx = ctx, .mf = *mf}, .e = e};
     int rc = cli_lin_setup(&r);
-    double *q0 = rc == QD_EXIT_OK ? calloc(e->n + 1, sizeof *q0) : NULL;
-    if (rc == QD_EXIT_OK && !q0)
+    bool conlin = qd_conlin_needed(e) || a->lqr || a->scan || a->format > F_JSON;
+    double *q0 = rc == QD_EXIT_OK && !conlin ? calloc(e->n + 1, sizeof *q0) : NULL;
+    if (rc == QD_EXIT_OK && conlin)
+        rc = manifold(ctx, a, &r, fmt[a->format]);
+    else if (rc == QD_EXIT_OK && !q0)
         rc = cli_out_of_memory();
-    if (rc == QD_EXIT_OK)
+    if (rc == QD_EXIT_OK && !conlin)
         rc = cli_con_point(&r, a->about, a->format == F_JSON, q0);
-    if (rc == QD_EXIT_OK)
+    if (rc == QD_EXIT_OK && !conlin)
         rc = cli_con_linearize(&r, q0, a->independent, a->format == F_JSON);
     free(q0);
     qd_linpoint_free(&r.pt);
@@ -103,7 +139,7 @@ static int run(cli_run *c) {
     qd_ctx *ctx = c->ctx;
     qd_eom_opts eo = {.eliminate = true};
     int rc = cli_load_derive(ctx, c->file, a->sets.n, a->sets.items, "linearize", &eo, &c->mf, &r->e);
-    if (rc == QD_EXIT_OK && (r->e->ncon || a->independent))
+    if (rc == QD_EXIT_OK && (r->e->ncon || a->independent || a->scan))
         return constrained(ctx, a, &c->mf, r->e);
     if (rc == QD_EXIT_OK && qd_linearize_about(ctx, r->e, c->mf.model, a->about, &r->s) != QD_OK) {
         if (qd_ctx_diag(ctx)->located)

@@ -17,6 +17,7 @@
 #include "out.h"
 #include "progress.h"
 #include "qdot/lyapunov.h"
+#include "model_cli.h"
 #include "sim_cli.h"
 
 typedef struct ly_args {
@@ -51,11 +52,8 @@ static const cli_spec spec = {
 /* The result in the format asked for, written to standard output. */
 static int emit(const qd_lyap_report *r, bool json) {
     qd_buf b = QD_BUF_INIT;
-    qd_status st = json ? qd_lyap_json(r, &b) : qd_lyap_print(r, &b);
-    if (st == QD_OK)
-        fputs(qd_buf_str(&b), stdout);
-    qd_buf_free(&b);
-    return st == QD_OK ? QD_EXIT_OK : QD_EXIT_FAIL;
+    b.failed |= (json ? qd_lyap_json(r, &b) : qd_lyap_print(r, &b)) != QD_OK;
+    return cli_emit(&b, "exponents"); /* JSON: "model" first */
 }
 
 static int progress(void *data, double done, double t) {

@@ -3,7 +3,8 @@
  * --crossings N`: a Poincare surface of section.  The motion is integrated
  * (qdot/sim.h, dop853 at --rtol by default) and the state at each of the
  * first N crossings of the section (qd_poincare_run), located to round-off
- * by the integrator's event machinery, is printed as CSV.
+ * by the integrator's event machinery, is printed as CSV or as JSON of
+ * simulate's shape (qd_poincare_json_begin, _end).
  */
 #include "cli.h"
 
@@ -13,6 +14,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "out.h"
 #include "qdot/lyapunov.h"
@@ -26,12 +28,16 @@ typedef struct pc_args {
     cli_sim_args a;
     const char *section;
     size_t n;
+    const char *format;
 } pc_args;
+
+static const char *const formats[] = {"csv", "json", NULL};
 
 static const cli_opt opts[] = {
     {"--section", NULL, CLI_TEXT, offsetof(pc_args, section), "\"EXPR = EXPR[, EXPR > EXPR]\"",
      "the surface of section: a crossing and its conditions", NULL, NULL},
     {"--crossings", NULL, CLI_COUNT, offsetof(pc_args, n), "N", "the crossings to find", NULL, NULL},
+    CLI_OPT_FORMATS(pc_args, format, formats),
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
 
@@ -43,14 +49,15 @@ static const cli_group groups[] = {
 
 static const cli_spec spec = {
     "poincare", "FILE --section \"EXPR = EXPR[, EXPR > EXPR]\" --crossings N [options]",
-    "a Poincare surface of section: the state at the first N crossings, as CSV (--t-end: "
-    "1e6 at most)",
+    "a Poincare surface of section: the state at the first N crossings, as CSV or JSON "
+    "(--t-end: 1e6 at most)",
     opts, groups, 1, 1, "FILE", false,
 };
 
 typedef struct pc_out {
     FILE *f;
     cli_plot_rows *plot; /* --plot: the crossings kept, or NULL */
+    qd_json *json;       /* --format json without --out: the rows go there */
     size_t ncols;
     const char **names; /* the header, written once the run is under way */
     bool header;
@@ -67,6 +74,10 @@ static int sink(void *data, const double *row, bool crossing) {
     pc_out *o = data;
     if (o->plot && crossing)
         cli_plot_keep(o->plot, row);
+    if (o->json && crossing)
+        qd_json_vector(o->json, NULL, o->ncols, row);
+    if (o->json) /* a failure is said at the end */
+        return cli_interrupted();
     for (size_t i = 0; !o->header && i < o->ncols; i++)
         fprintf(o->f, "%s%s", i ? "," : "", o->names[i]);
     if (!o->header)
@@ -132,10 +143,16 @@ int cli_cmd_poincare(int argc, char **argv) {
     cli_plot_pick pick; /* --plot: its columns named before the run */
     if (rc == QD_EXIT_OK && names && p.a.plot.file)
         rc = pc_plot_pick(&c, &p, names, ncols, &pick);
+    bool json = p.format && !strcmp(p.format, "json");
+    qd_buf jb = QD_BUF_INIT;
+    qd_json j;
+    qd_json_init(&j, &jb);
     if (rc == QD_EXIT_OK && names) {
         qd_sim_columns(c.s, c.opts.method, names, ncols);
         pc_out o = {.f = f ? f : stdout, .ncols = ncols, .names = names,
-                    .plot = p.a.plot.file ? &rows : NULL};
+                    .plot = p.a.plot.file ? &rows : NULL, .json = json && !f ? &j : NULL};
+        if (json)
+            qd_poincare_json_begin(&j, c.mf.path, ncols, names, o.json);
         qd_poincare_opts po = {.event = 0, .want = p.n, .sink = sink, .progress = progress,
                                .data = &o};
         qd_poincare_result r;
@@ -144,7 +161,7 @@ int cli_cmd_poincare(int argc, char **argv) {
         qd_status s = qd_poincare_run(c.s, &c.opts, &po, &r);
         bool interrupted = cli_interrupted();
         cli_interrupt_end();
-        cli_progress_end(&o.bar);
+        double wall = cli_progress_end(&o.bar);
         int wrc = cli_out_close(o.f, f ? p.a.out : "standard output", o.werr);
         f = NULL; /* closed */
         if (wrc != QD_EXIT_OK) {
@@ -156,15 +173,19 @@ int cli_cmd_poincare(int argc, char **argv) {
                             "rows written are whole\n", r.last_t, r.got);
             rc = CLI_EXIT_INTERRUPTED;
         } else {
-            const qd_sim_stats *st = &r.stats;
-            fprintf(stderr, "qdot: poincare: %s, %zu crossings by t = %g: %zu steps, %zu "
-                            "evaluations, %zu rejected; energy error %.3g over the steps and "
-                            "crossings\n",
-                    qd_sim_method_name(c.opts.method), r.got, st->t, st->steps, st->evals,
-                    st->rejected, fmax(st->energy_error_max, st->energy_error_steps));
+            qd_buf tb = QD_BUF_INIT;
+            qd_poincare_summary_print(&r, c.opts.method, "qdot: poincare: ", &tb);
+            fputs(qd_buf_str(&tb), stderr);
+            qd_buf_free(&tb);
             if (r.got < p.n)
                 fprintf(stderr, "qdot: poincare: note: only %zu of %zu crossings before "
-                                "t = %g (raise --t-end)\n", r.got, p.n, st->t);
+                                "t = %g (raise --t-end)\n", r.got, p.n, r.stats.t);
+            if (json && qd_poincare_json_end(&j, c.s, &c.opts, &po, &r, wall, o.json) != QD_OK) {
+                cli_diag_error("cannot write the JSON: %s", qd_json_why(&j));
+                rc = QD_EXIT_FAIL;
+            } else if (json) {
+                printf("%s\n", qd_buf_str(&jb));
+            }
             if (p.a.plot.file)
                 rc = cli_plot_write_run(c.ctx, &p.a.plot, &pick, names, &rows, p.a.file, true,
                                         NULL);
@@ -173,6 +194,7 @@ int cli_cmd_poincare(int argc, char **argv) {
         rc = QD_EXIT_FAIL;
     }
     cli_plot_rows_free(&rows);
+    qd_buf_free(&jb);
     if (f)
         fclose(f);
     free(names);

@@ -158,6 +158,7 @@ static int finish(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa,
         if (a->plot.file)
             qd_sim_plot_json(j, a->plot.file, pick->npanels, range);
         qd_json_end_object(j);
+        qd_json_add_model(j->out, c->mf.path);
         if (qd_json_ok(j) && !j->out->failed) {
             printf("%s\n", qd_buf_str(j->out));
         } else {

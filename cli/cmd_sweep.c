@@ -115,7 +115,8 @@ static int write_result(qd_ctx *ctx, const qd_sweep *w, const sweep_args *a, siz
                    ? QD_EXIT_OK
                    : cli_diag_ctx(ctx);
     qd_buf b = QD_BUF_INIT;
-    if (writers[fmt].write(w, r->rows, r->outcome, &b) == QD_OK)
+    if (writers[fmt].write(w, r->rows, r->outcome, &b) == QD_OK &&
+        (fmt != 1 || qd_json_add_model(&b, a->sim.file) == QD_OK)) /* JSON: "model" first */
         return cli_out_emit(&b, a->sim.out);
     qd_buf_free(&b);
     cli_diag_error("out of memory writing the rows");

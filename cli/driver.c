@@ -3,6 +3,7 @@
  * cmd_*.c keeps only what is its own: its options, checks, run and frees.
  */
 #include "driver.h"
+#include "progress.h"
 
 int cli_drive(const cli_driver *d, cli_run *r, int argc, char **argv) {
     char *base = (char *)r;
@@ -14,7 +15,11 @@ int cli_drive(const cli_driver *d, cli_run *r, int argc, char **argv) {
         return rc;
     if (!(r->ctx = qd_ctx_new()))
         return cli_out_of_memory();
+    cli_progress bar; /* the library's long searches (qd_ctx_set_progress), on a terminal */
+    cli_progress_start(&bar, d->spec->name);
+    qd_ctx_set_progress(r->ctx, cli_progress_steps, &bar);
     rc = d->run(r);
+    cli_progress_end(&bar);
     if (d->free)
         d->free(r);
     cli_model_file_free(&r->mf);

@@ -8,10 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include "eom_out.h"
+#include "qdot/json.h"
 #include "qdot/routh.h"
 #include "state.h"
 
 typedef int (*file_loader)(qd_ctx *, const char *, const qd_model_opts *, cli_model_file *);
+
+static const char *loaded; /* the model file this run read: its JSON's "model" (cli_emit) */
 
 static int load_with(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
                      const char *derivation, cli_model_file *mf, file_loader load) {
@@ -35,7 +38,9 @@ static int load_with(qd_ctx *ctx, const char *file, size_t nsets, const char *co
     qd_model_opts opts = {.params = given, .nparams = nsets};
     if (qd_model_opts_for(&opts, derivation) != QD_OK) /* a command missing from the rule */
         return cli_usage_error("internal: no parameter rule for '%s'", derivation);
-    return load(ctx, file, &opts, mf);
+    int rc = load(ctx, file, &opts, mf);
+    loaded = rc == QD_EXIT_OK ? mf->path : loaded;
+    return rc;
 }
 
 int cli_load(qd_ctx *ctx, const char *file, size_t nsets, const char *const *sets,
@@ -59,6 +64,8 @@ int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *con
 }
 
 int cli_emit(qd_buf *b, const char *what) {
+    if (loaded && qd_buf_str(b)[0] == '{') /* a JSON document: its model first */
+        qd_json_add_model(b, loaded);
     bool ok = !b->failed;
     if (ok)
         fputs(qd_buf_str(b), stdout);

@@ -30,7 +30,8 @@ int cli_load_derive(qd_ctx *ctx, const char *file, size_t nsets, const char *con
                     qd_eom **e);
 
 /* Print b on standard output, or, when building it failed, "cannot print
- * the WHAT"; b is freed. */
+ * the WHAT"; b is freed.  A JSON document (b starts with '{') of a run that
+ * read a model (cli_load) gets "model" first (qd_json_add_model). */
 int cli_emit(qd_buf *b, const char *what);
 
 /* cli_load for a field model (mf->field; parameters fixed). */

@@ -88,3 +88,13 @@ double cli_progress_end(cli_progress *p) {
     p->shown = false;
     return seconds(&p->start, &now);
 }
+
+int cli_progress_steps(void *p, const char *what, size_t done, size_t total) {
+    cli_progress *bar = p;
+    (void)what;
+    bar->label = "step";
+    cli_progress_update(bar, total ? (double)done / (double)total : 1, (double)done);
+    if (done >= total)
+        cli_progress_end(bar);
+    return 0;
+}

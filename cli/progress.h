@@ -6,6 +6,7 @@
 #define QDOT_CLI_PROGRESS_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <time.h>
 
 typedef struct cli_progress {
@@ -25,5 +26,7 @@ void cli_progress_start(cli_progress *p, const char *what);
 void cli_progress_update(cli_progress *p, double frac, double t);
 /* Erase the bar (when it was shown); returns the wall time in seconds. */
 double cli_progress_end(cli_progress *p);
+/* A qd_progress_fn (qd_ctx_set_progress) drawing p, erased at done == total. */
+int cli_progress_steps(void *p, const char *what, size_t done, size_t total);
 
 #endif

@@ -77,6 +77,9 @@ typedef struct qd_equilibria_opts {
     const double *lo, *hi;   /* n each: the search box; NULL: qd_equilibria_default_box */
     size_t starts;           /* multi-start points; 0: 40 n + 40 */
     bool numeric_only;       /* skip the exact attempt */
+    bool no_search;          /* no multistart: the exact attempt and the solve of affine
+                                equations only (method "none" and count 0 when neither
+                                applies) */
 } qd_equilibria_opts;
 
 /* Which coordinates are angles (appear inside sin or cos of f at rest, T or
@@ -111,11 +114,17 @@ QD_API qd_status qd_equilibria_find_text(qd_ctx *ctx, const struct qd_linpoint *
                                          const char **where);
 
 /* Which equilibrium to use when the caller names none (small oscillations
- * with no point given).  Among the equilibria found (qd_equilibria_find with
- * default options) and the point Newton reaches from the model's `initial`
- * state (when it has one), a minimum of the potential up to rigid motions
- * (no negative stiffness direction; zero ones allowed when some are
- * positive) is preferred:
+ * with no point given).  Newton's method runs from the model's `initial`
+ * state first (when it has one).  When that state is itself an equilibrium
+ * (Newton stays on it, relative 1e-7) and a minimum of the potential up to
+ * rigid motions (no negative stiffness direction; zero ones allowed when
+ * some are positive), it is the choice and no search is made (found is
+ * qd_equilibria_find with opts.no_search: the exact set when the equations
+ * come apart, else empty):
+ *   QD_EQ_CHOSEN_INITIAL_STATE        the initial state, an equilibrium.
+ * Otherwise, among the equilibria found (qd_equilibria_find with default
+ * options) and the point Newton reached from the initial state, a minimum
+ * up to rigid motions is preferred:
  *   QD_EQ_CHOSEN_NEAREST_MINIMUM      the minimum nearest the initial state;
  *   QD_EQ_CHOSEN_LOWEST_MINIMUM       no initial state: the minimum of lowest V;
  *   QD_EQ_CHOSEN_NEWTON_FROM_INITIAL  no minimum: where Newton from the
@@ -128,7 +137,8 @@ typedef enum qd_eq_chosen {
     QD_EQ_CHOSEN_NEAREST_MINIMUM,
     QD_EQ_CHOSEN_LOWEST_MINIMUM,
     QD_EQ_CHOSEN_NEWTON_FROM_INITIAL,
-    QD_EQ_CHOSEN_FIRST_LISTED
+    QD_EQ_CHOSEN_FIRST_LISTED,
+    QD_EQ_CHOSEN_INITIAL_STATE
 } qd_eq_chosen;
 
 typedef struct qd_equilibrium_choice {
@@ -155,6 +165,11 @@ QD_API void qd_equilibrium_choice_free(qd_equilibrium_choice *c);
  * ("the minimum of the potential nearest the model's initial state"), for a
  * note or a JSON "reason".  Static storage. */
 QD_API const char *qd_eq_chosen_name(qd_eq_chosen c);
+/* Its machine code, for programs (a JSON "code" next to that "reason"):
+ * "nearest_minimum", "lowest_minimum", "initial_state", "newton_from_initial",
+ * "first_listed" (the QD_EQ_CHOSEN_ names in lower case); "unknown"
+ * outside the enum.  Static storage. */
+QD_API const char *qd_eq_chosen_code(qd_eq_chosen c);
 
 /* Coordinate j (below the equilibria's n) of p appended to out: its exact
  * value in the text format (qd_print) when p has one, else the number to

@@ -77,6 +77,18 @@ QD_API void qd_ctx_error_about(qd_ctx *ctx, qd_subject subject, size_t index, co
 QD_API void qd_ctx_error_at(qd_ctx *ctx, const char *text, size_t offset, size_t length);
 QD_API size_t qd_ctx_node_count(const qd_ctx *ctx);    /* distinct nodes made so far */
 
+/* The progress of a long computation that has no parameter of its own for
+ * it (today the multistart search for equilibria, qdot/equilibria.h, which
+ * `qdot modes` and `qdot stability` run when no point is given): fn(data,
+ * what, done, total) is called on the computing thread with what is being
+ * done ("equilibria: multistart"), done of total steps, once a step; a
+ * nonzero return stops the computation, which fails with QD_ERR_ARG
+ * ("stopped").  One per context, as SQLite's sqlite3_progress_handler is
+ * one per connection; fn NULL turns it off.  The library never prints: a
+ * program draws the bar (the CLI on a terminal only, past one second). */
+typedef int (*qd_progress_fn)(void *data, const char *what, size_t done, size_t total);
+QD_API void qd_ctx_set_progress(qd_ctx *ctx, qd_progress_fn fn, void *data);
+
 /* ---- node kinds --------------------------------------------------------- */
 
 typedef enum qd_kind {
@@ -271,7 +283,7 @@ QD_API qd_status qd_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr 
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_ctx_new_with (a); qd_ctx_error_about
- * (hint, name); qd_ufunc (args); qd_free_symbols (out); qd_eval (syms,
+ * (hint, name); qd_ctx_set_progress (fn, data); qd_ufunc (args); qd_free_symbols (out); qd_eval (syms,
  * vals). An array whose count is 0 may be NULL.
  * Exception: qd_ctx_message(NULL) is "". */
 #endif

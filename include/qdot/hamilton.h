@@ -57,6 +57,17 @@ typedef struct qd_ham {
                                inverse: vel_j is q'_j itself, defined by pdef_j = p_j, and
                                H = sum p q' - L, dq, dp are in q, q', p, t (so dq_j = q'_j,
                                dp_j = dL/dq_j + extra_j); qd_ham_velocities_at gives q' */
+    /* Hamilton's equations of the second kind (qd_ham2_derive): the fields
+     * above read with T in place of L, s for p and K for H.  p are then the
+     * symbols s_<q>, pdef s_j = dT/dq'_j, vel q'(q, s, t), H is
+     * K = sum s q' - T, dq = dK/ds, dp = ds_j/dt = -dK/dq_j + Q_j, extra the
+     * whole generalized force Q_j (the given forces, -dV/dq_j, the
+     * generalized potential's d/dt(dU/dq'_j) - dU/dq_j and -dD/dq'_j),
+     * H_minus_E K - T (0 when T is homogeneous quadratic in q', Desloge
+     * ch. 72 eq. 5) with is_energy K = T, conserved: K free of t and every
+     * Q_j 0; s_is_p: s_j = p_j = dL/dq'_j for every j (eq. 6: U = U(q, t)). */
+    bool second_kind;
+    bool s_is_p;
 } qd_ham;
 
 /* The Hamiltonian of model m from its derived equations e (qd_eom_derive).
@@ -71,6 +82,25 @@ typedef struct qd_ham {
  * L_from_H is filled when H is regular; constraints are QD_ERR_ARG. */
 QD_API qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
 QD_API void qd_ham_free(qd_ham *h);
+
+/* Hamilton's equations of the second kind (Desloge ch. 72 Thm 1): the
+ * Legendre transform of the kinetic energy T(q, q', t) instead of L,
+ *
+ *     s_j = dT/dq'_j,   K = sum_j s_j q'_j - T   (in q, s, t),
+ *     dq_j/dt = dK/ds_j,   ds_j/dt = -dK/dq_j + Q_j,
+ *
+ * where Q_j is every force not in T: the given forces (Q[q], force ... at),
+ * -dV/dq_j, the generalized potential's d/dt(dU/dq'_j) - dU/dq_j and the
+ * dissipation's -dD/dq'_j (Desloge ch. 72 eq. 1), so that dissipative
+ * forces need no potential.  The result is a qd_ham with second_kind set
+ * (its fields read as the comment there says); free it with qd_ham_free.
+ * e is m's qd_eom_derive (NULL only for a model given by H, which is
+ * refused).  A model that gives L or H instead of T is QD_ERR_ARG ("built
+ * from T"), as are constraints; a U whose force holds
+ * accelerations (U not linear in the velocities) is QD_ERR_NONLINEAR; a
+ * singular d^2T/dq'dq' QD_ERR_SINGULAR.  NULL on failure, reason in the
+ * context. */
+QD_API qd_ham *qd_ham2_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e);
 
 /* The inverse Legendre transform of a model given by H (Desloge ch. 71,
  * Appendix 22): q' = dH/dp solved for p, L = sum p q' - H, simplified, in

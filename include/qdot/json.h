@@ -59,6 +59,23 @@ QD_API bool qd_json_vector(qd_json *j, const char *key, size_t n, const double *
  * omega null where w2 < 0 (no frequency: the mode grows), period null where
  * w2 <= 0. */
 QD_API void qd_json_frequency(qd_json *j, double w2);
+/* The result e of an operation on one expression (`qdot diff`, `expand`,
+ * `simplify`, `print` --format json; src/json/expr_result.c) as one object
+ * and a newline appended to out: "operation" (its name), "input" (the
+ * expression as given), "variables" (diff's, as given; [] for the others),
+ * and e as "result" (the text format, which reads back), "latex", "c" and
+ * "sympy".  QD_OK; QD_ERR_NOMEM (recorded in ctx), out then untouched. */
+QD_API qd_status qd_json_expr_result(qd_ctx *ctx, const char *operation, const char *input,
+                                     size_t nvars, const char *const *vars,
+                                     const qd_expr *e, qd_buf *out);
+/* "model": model (the model file's name as the caller has it; NULL: null)
+ * put first into the JSON object doc holds, a document of this writer's
+ * layout ("{" first, a member on a line): the one key every command's JSON
+ * that reads a model starts with (src/json/model_key.c).  A document whose
+ * first member is "model" already is left as it is.  QD_OK; QD_ERR_ARG when
+ * doc does not hold an object; QD_ERR_NOMEM with doc failed (a document is
+ * not printed without its model). */
+QD_API qd_status qd_json_add_model(qd_buf *doc, const char *model);
 /* The document is complete, nothing was refused and no memory ran out. */
 QD_API bool qd_json_ok(const qd_json *j);
 /* Why the document is not ok: "out of memory", "a non-finite number (JSON

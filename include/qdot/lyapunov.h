@@ -279,6 +279,31 @@ typedef struct qd_poincare_result {
 QD_API qd_status qd_poincare_run(qd_sim *s, const qd_sim_opts *opts, const qd_poincare_opts *o,
                                  qd_poincare_result *r);
 
+/* The line `qdot poincare` says after a run r of method (src/lyap/section_out.c),
+ * prefix (NULL: none) before it, appended to out:
+ *   METHOD, N crossings by t = T: S steps, E evaluations, R rejected; energy
+ *   error X over the steps and crossings
+ * QD_ERR_NOMEM when out ran out. */
+QD_API qd_status qd_poincare_summary_print(const qd_poincare_result *r, qd_sim_method method,
+                                           const char *prefix, qd_buf *out);
+/* `qdot poincare --format json`, the shape of simulate's document: begin
+ * opens the object in j with "model" (the model file, NULL: null) and, when
+ * rows, "columns" (names[0..ncols)) and an open "rows" array, to which the
+ * caller adds each crossing's row (qd_json_vector, key NULL); end closes
+ * the rows (when rows), writes the run's summary (qd_sim_summary_json's
+ * keys, no "final"; a run that found o->want crossings has the "stop" of a
+ * terminal event of the section, {"code": "event", "t": the last
+ * crossing's time, "value": o->event}), "crossings" (r->got) and "wanted"
+ * (o->want), and closes the object.  Without rows (the rows written as CSV
+ * elsewhere) the document is the summary alone.  QD_ERR_NUMERIC when a
+ * number was not finite (j failed: qd_json_ok), QD_ERR_NOMEM when memory
+ * ran out. */
+QD_API qd_status qd_poincare_json_begin(qd_json *j, const char *model, size_t ncols,
+                                        const char *const *names, bool rows);
+QD_API qd_status qd_poincare_json_end(qd_json *j, const qd_sim *s, const qd_sim_opts *opts,
+                                      const qd_poincare_opts *o, const qd_poincare_result *r,
+                                      double wall, bool rows);
+
 /* ---- a run set up as qdot lyapunov takes it (src/lyap/setup.c) ---------- */
 
 /* The exponents of one run, with what the printers read of it. */
@@ -329,5 +354,7 @@ QD_API qd_status qd_flow_setup_run(qd_ctx *ctx, const struct qd_sim_setup *set,
  * (err, stats); qd_flow_run (fo); qd_flow_print (prefix); qd_lyap_print,
  * qd_lyap_json (r->err); qd_lyap_setup_run (lo); lo->progress and lo->data;
  * qd_flow_setup_run (write, data); qd_poincare_run's
- * o->progress and o->data. An array whose count is 0 may be NULL. */
+ * o->progress and o->data; qd_poincare_summary_print (prefix);
+ * qd_poincare_json_begin (model; names when !rows). An array whose count is
+ * 0 may be NULL. */
 #endif

@@ -135,7 +135,8 @@ QD_API qd_status qd_eom_request_render(qd_ctx *ctx, const qd_model *m, const qd_
  * parameter without a value) is ok, with judged false. */
 typedef struct qd_check_verdict {
     bool ok, judged;
-    const char *reason; /* NULL when ok */
+    const char *reason; /* the machine code ("mass_not_positive_definite",
+                         * "constraint_not_real"; JSON "code"), NULL when ok */
     char message[320];
     const char *about;  /* a coordinate or a constraint name */
     double witness;
@@ -156,8 +157,8 @@ QD_API qd_status qd_check_verdict_of(qd_ctx *ctx, const qd_model *m, const qd_eo
  * depend on, forces, constraints and their kinds, impulsive statements,
  * cyclic coordinates, time dependence and the energy integral, the size of
  * the equations (nothing when v says "no": the caller shows the message at
- * its statement); in JSON the same as data with "ok", and "reason",
- * "message" and "witness" for a "no".  QD_ERR_ARG for another format. */
+ * its statement); in JSON the same as data with "ok", and "code" (v->reason),
+ * "reason" (its English), "message" and "witness" for a "no".  QD_ERR_ARG for another format. */
 QD_API qd_status qd_render_check(qd_ctx *ctx, const qd_model *m, const qd_eom *e,
                                  const qd_render_opts *o, const qd_check_verdict *v,
                                  qd_render_format fmt, qd_buf *out);
@@ -243,6 +244,12 @@ QD_API qd_status qd_ham_point_at(qd_ctx *ctx, const qd_model *m, const qd_ham *h
  *     are none), velocities, implicit (when true), H, L (a model given by
  *     H), dq_dt and dp_dt, each name with a _ appended while it clashes
  *     with a name of m, the verdicts as comments.
+ * For h->second_kind (qd_ham2_derive) the same with s, K and T in place of
+ * p, H and L: the header "qdot hamiltonian --second-kind SOURCE", a section
+ * "generalized forces" (Q_<q> = h->extra), "Hamilton's equations of the
+ * second kind" and the verdicts "K = T", "s = p", "K conserved"; JSON
+ * "kind": "second" after "model", "K", "forces", "dq_dt", "ds_dt", "K_is_T",
+ * "K_minus_T", "s_is_p", "conserved" (no H keys); SymPy K, forces, ds_dt.
  * QD_ERR_ARG for QD_RENDER_C or an at not of h (another n); QD_ERR_NUMERIC
  * for a JSON number that is not finite; QD_ERR_NOMEM.  Nothing is appended
  * on an error. */

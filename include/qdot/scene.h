@@ -164,11 +164,13 @@ QD_API void qd_scene_frames_free(qd_scene_frames *f);
  * opts->dt is replaced in a copy); a fixed-step method keeps its step and
  * the frames take the nearest rows.  A run that stops early (a stop event,
  * a contact) gives the frames of [t0, the last row].  progress (may be
- * NULL) is called with each row's time.  The run's failures are
- * qd_sim_run's (reason in ctx); QD_ERR_NOMEM when the rows do not fit. */
+ * NULL) is called with each row's time; a nonzero return ends the run
+ * after that row, as a stop event does (a Ctrl-C: the frames of [t0, t],
+ * QD_OK; the caller knows it asked).  The run's failures are qd_sim_run's
+ * (reason in ctx); QD_ERR_NOMEM when the rows do not fit. */
 QD_API qd_status qd_scene_record(qd_ctx *ctx, qd_sim *s, const qd_sim_opts *opts,
                                  const qd_scene_point *pts, size_t npts,
-                                 void (*progress)(void *data, double t), void *data,
+                                 int (*progress)(void *data, double t), void *data,
                                  qd_scene_frames *fr, qd_sim_stats *stats);
 
 
@@ -315,10 +317,13 @@ QD_API qd_scene_setup *qd_scene_setup_new(qd_ctx *ctx, struct qd_sim_setup *set,
  * links and drawing plane (qd_scene_links; 3-D instead when a body drawn
  * as a shape turns about another axis than the plane's normal), for a
  * model with a constraint its walls (qd_scene_walls), the scene completed:
- * method, energy error, conservative.  stats (may be NULL) gets the run's.  Once (a
- * second call is QD_ERR_ARG); * the errors of qd_scene_record, or of the links (reason in ctx). */
+ * method, energy error, conservative.  progress as qd_scene_record's: a
+ * nonzero return ends the run there and the scene is that of [t0, t].
+ * stats (may be NULL) gets the run's.  Once (a second call is
+ * QD_ERR_ARG); the errors of qd_scene_record, or of the links (reason in
+ * ctx). */
 QD_API qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
-                                       void (*progress)(void *data, double t), void *data,
+                                       int (*progress)(void *data, double t), void *data,
                                        qd_sim_stats *stats);
 /* The scene, owned by sc (its frames, links and plane once recorded). */
 QD_API const qd_scene *qd_scene_setup_scene(const qd_scene_setup *sc);

@@ -287,9 +287,9 @@ typedef struct qd_stability_report {
 /* r appended to out.  Text: how many motions (and how many left out), then
  * each: its kept coordinates, rates and momenta, V_eff, M0, C0 (with
  * dissipation), G0, K0, the Hessian of V_eff, the frequencies, the roots s
- * and the verdicts, numbers to 12 digits (below 1e-13 a 0; a real or
- * imaginary part below 1e-13 of the largest |s| a 0: gyroscopic roots are
- * imaginary exactly).  JSON: "model", "kind" ("free" or "driven"), the
+ * and the verdicts, numbers by the digit rule of qd_result_format (12
+ * digits; at or below 1e-12 a 0; a real or imaginary part at or below 1e-12
+ * of the largest |s| a 0: gyroscopic roots are imaginary exactly).  JSON: "model", "kind" ("free" or "driven"), the
  * first motion's "steady" (name to value), "residual", "Veff",
  * "mass_matrix", "damping_matrix", "gyroscopic_matrix", "stiffness_matrix",
  * "hessian", "frequencies", "eigenvalues" ([re, im] pairs), "stable" and

@@ -131,7 +131,8 @@ QD_API qd_status qd_state_value(qd_ctx *ctx, const qd_model *m, const char *text
 
 /* A range "A:B", text[start, start + len): A and B read as qd_state_value
  * reads a value (constant expressions in pi, e and m's parameters) into *a
- * and *b.  No colon outside brackets is an error located at the span, as
+ * and *b (the older "A..B" is read the same).  No colon outside brackets is
+ * an error located at the span, as
  * every error of the values is located in text.  The order of A and B is
  * the caller's to check. */
 QD_API qd_status qd_state_range(qd_ctx *ctx, const qd_model *m, const char *text, size_t start,

@@ -136,8 +136,13 @@ def rendered(core, call):
 
 
 def output(core, command, call, latex=None):
-    """An Output of the JSON call(buf) writes (see rendered)."""
-    return Output(command, _json.loads(rendered(core, call)), latex, core)
+    """An Output of the JSON call(buf) writes (see rendered), with "model"
+    (the model's file) first, as every command's JSON that reads a model
+    has it (qd_json_add_model)."""
+    def with_model(buf):
+        st = call(buf)
+        return st if st != 0 else lib.qd_json_add_model(buf, source(core))
+    return Output(command, _json.loads(rendered(core, with_model)), latex, core)
 
 
 def _sympy_tree(core, x):

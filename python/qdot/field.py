@@ -71,6 +71,8 @@ class Field:
     def _output(self, command, printer):
         buf = new("qd_buf")
         st = printer(buf)
+        if st == QD_OK:  # "model" first, as the command's JSON has it
+            st = lib.qd_json_add_model(buf, ffi.new("char[]", self.file.encode()))
         if st != QD_OK:
             lib.qd_buf_free(buf)
             diag = take_error(self.ctx)

@@ -503,7 +503,7 @@ class Model:
         finally:
             lib.qd_metric_free(g)
 
-    def hamiltonian(self, sympy=False, at=None):
+    def hamiltonian(self, sympy=False, at=None, second_kind=False):
         """The Hamiltonian and Hamilton's equations (a Hamiltonian); sympy=True
         gives SymPy expressions instead of strings.  Its other attributes
         are the keys of `qdot hamiltonian --format json` (qd_render_hamiltonian):
@@ -513,10 +513,16 @@ class Model:
         text (coordinates, momenta named as printed, p_x, t; the others 0,
         not the model's initial values), read as --at is (qd_ham_point_at):
         H, dq_dt and dp_dt of the JSON are then numbers there, and "at" the
-        point."""
+        point.  second_kind=True gives Hamilton's equations of the second
+        kind (qd_ham2_derive, Desloge ch. 72 Thm 1, `hamiltonian
+        --second-kind`): H is then K = sum s q' - T, momenta the s_q =
+        dT/dq', dp the ds/dt = -dK/dq + Q, is_energy K = T; the JSON keys K,
+        forces, ds_dt, K_is_T, K_minus_T, s_is_p replace H, dp_dt and the H
+        verdicts."""
         core = self._for("hamiltonian")
         given = lib.qd_model_hamiltonian_given(core.model)
-        h = lib.qd_ham_derive(core.ctx, core.model, ffi.NULL if given else core.eom_ptr())
+        derive = lib.qd_ham2_derive if second_kind else lib.qd_ham_derive
+        h = derive(core.ctx, core.model, ffi.NULL if given else core.eom_ptr())
         if not h:
             raise core.error(cls=ModelError)
         pt = new("qd_ham_point")
@@ -1052,7 +1058,7 @@ class Model:
     def check(self):
         """The verdict and summary of `qdot check` (qd_check_verdict_of,
         qd_render_check): a qdot.Output whose keys are those of `qdot check
-        --format json` ("ok"; "reason", "message", "witness" for a no)."""
+        --format json` ("ok"; "code", "reason", "message", "witness" for a no)."""
         core = self._core
         v = new("qd_check_verdict")
         core.check(lib.qd_check_verdict_of(core.ctx, core.model, core.eom_ptr(), v))

@@ -319,15 +319,19 @@ def animate(core, t_end, draw, trace, spring, method, rtol, atol, dt, step, init
         raise core.error()
     try:
         t0, t1 = opts.t0, opts.t_end
-        with Run("animate") as run:  # no stop hook in the recording: ^C once it returns
-            progress_c = ffi.callback("void(void *, double)",
-                                      lambda _d, t: run.update((t - t0) / (t1 - t0), t))
+        with Run("animate") as run:
+            def progress(_data, t):
+                run.update((t - t0) / (t1 - t0), t)
+                return 1 if run.stop else 0  # ^C: the motion so far, after a whole row
+            progress_c = ffi.callback("int(void *, double)", progress, error=1)
             st = lib.qd_scene_setup_record(sc, opts, progress_c, ffi.NULL, ffi.NULL)
-        if st != QD_OK:
-            raise core.error(st, cls=NumericalError)
-        view = lib.qd_scene_setup_scene(sc)
-        return Animation(_json.loads(_render(lib.qd_scene_json, view)),
-                         _render(lib.qd_scene_html, view))
+            if st != QD_OK:
+                raise core.error(st, cls=NumericalError)
+            view = lib.qd_scene_setup_scene(sc)
+            anim = Animation(_json.loads(_render(lib.qd_scene_json, view)),
+                             _render(lib.qd_scene_html, view))
+            run.partial = anim  # KeyboardInterrupt's .result: the page up to the stop
+        return anim
     finally:
         lib.qd_scene_setup_free(sc)
 

@@ -29,6 +29,14 @@ Q[x] = F
 initial x = 0.1, x' = 0.2
 """
 
+OSCILLATOR_DRAWN = """
+coordinates x
+parameters w = 3, m = 1
+particle m at (x, 0)
+V = w^2*x^2/2
+initial x = 0.1, x' = 0.2
+"""
+
 
 def test_simulate_stopped_by_sigint_keeps_whole_rows():
     def force(t, _y):  # the input callable presses Ctrl-C once, at t = 2
@@ -85,6 +93,29 @@ def test_lyapunov_and_sweep_stop_mid_run(monkeypatch):
     with pytest.raises(KeyboardInterrupt, match="sweep"):
         qdot.Model(OSCILLATOR).sweep(2000, "final", grid="k=1:3:400", threads=1)
     assert 0.01 < seen[-1] < 0.5      # most of the 400 runs never started
+
+
+
+def test_animate_stopped_keeps_the_page_so_far(monkeypatch):
+    """qd_scene_setup_record's progress returning nonzero ends the run after
+    a whole row; the KeyboardInterrupt's .result is the Animation of the
+    motion up to then, and its frames are still x = 0.1 cos 3t + (0.2/3)
+    sin 3t (the oscillator above with F = 0)."""
+    update = _progress.Run.update
+
+    def stop_late(self, frac, t):  # the flag as the SIGINT handler sets it
+        if t > 2:
+            self.stop = True
+        update(self, frac, t)
+    monkeypatch.setattr(_progress.Run, "update", stop_late)
+    with pytest.raises(KeyboardInterrupt, match="animate") as err:
+        qdot.Model(OSCILLATOR_DRAWN).animate(100, rtol=1e-12)
+    a = err.value.result
+    t = np.asarray(a.json["t"])
+    assert 2 < t[-1] < 3 and t[0] == 0     # 100 s asked, stopped past t = 2
+    x = np.asarray(a.json["pos"]).reshape(len(t), 3)[:, 0]   # the page's 7 digits
+    assert np.max(np.abs(x - (0.1 * np.cos(3 * t) + 0.2 / 3 * np.sin(3 * t)))) < 1e-6
+    assert "<html" in a.html.lower()
 
 
 CHILD = r"""

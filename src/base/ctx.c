@@ -31,6 +31,17 @@ void qd_ctx_free(qd_ctx *ctx) {
     qd__free(ctx);
 }
 
+void qd_ctx_set_progress(qd_ctx *ctx, qd_progress_fn fn, void *data) {
+    if (!ctx)
+        return;
+    ctx->progress = fn;
+    ctx->progress_data = fn ? data : NULL;
+}
+
+int qd__ctx_progress(qd_ctx *ctx, const char *what, size_t done, size_t total) {
+    return ctx && ctx->progress ? ctx->progress(ctx->progress_data, what, done, total) : 0;
+}
+
 /* ---- the context's allocation path (mem.h) ------------------------------ */
 
 void qd__oom(qd_ctx *ctx) { qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory"); }

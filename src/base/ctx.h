@@ -25,6 +25,8 @@ struct qd_ctx {
     qd_diag diag;                /* the first error's record; diag.status == status */
     struct qd__sym_state *sym;   /* the kernel's state, attached by src/sym */
     void (*detach)(qd_ctx *ctx); /* releases sym (qd_ctx_free); NULL: nothing attached */
+    qd_progress_fn progress;     /* qd_ctx_set_progress's, NULL: none */
+    void *progress_data;
 };
 
 /* A context with nothing attached (allocator a, empty arena, no error);

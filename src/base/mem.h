@@ -37,5 +37,8 @@ char *qd__strdup(qd_ctx *ctx, const char *s);
  * true; with QD_ERR_NOMEM recorded it leaves it and returns false. */
 bool qd__ctx_nomem(const qd_ctx *ctx);
 bool qd__ctx_recover(qd_ctx *ctx);
+/* Report done of total steps of what to the context's progress function
+ * (qd_ctx_set_progress, ctx.c); nonzero when it asks to stop (0 without one). */
+int qd__ctx_progress(qd_ctx *ctx, const char *what, size_t done, size_t total);
 
 #endif

@@ -9,6 +9,9 @@
  * must oscillate about the equilateral triangle, not about the first (a
  * collinear, unstable) configuration in the sorted list.
  *
+ * When the model's initial state is itself a minimum-like equilibrium it is
+ * taken as it is and no multistart is run (issue 34).
+ *
  * Allocations (for the context allocator): work_init (calloc x2),
  * qd_equilibria_choose (calloc x2), qd_equilibrium_exact_in_parameters
  * (calloc x3); each freed before return.
@@ -186,14 +189,30 @@ static void pick(chooser *c, qd_equilibrium_choice *ch) {
     ch->others = eq->count - (best && best >= eq->pts && best < eq->pts + eq->count);
 }
 
+/* Newton from the initial state stayed on it, and it is a minimum up to
+ * rigid motions: the initial state is the choice, found or not. */
+static bool initial_is_minimum(const chooser *c, const qd_equilibrium_choice *ch) {
+    if (!c->init || !ch->from_initial.count || !minimum_like(&ch->from_initial.pts[0]))
+        return false;
+    const double *q = ch->from_initial.pts[0].q;
+    for (size_t j = 0; j < c->w.n; j++)
+        if (!(fabs(gap(c, j, q[j], c->init[j])) <= SAME_TOL * (1 + fabs(c->init[j]))))
+            return false;
+    return true;
+}
+
+static void pick_initial(const chooser *c, qd_equilibrium_choice *ch) {
+    const qd_equilibrium *p = reached(c, ch);
+    ch->pt = p;
+    ch->reason = QD_EQ_CHOSEN_INITIAL_STATE;
+    ch->others = ch->found.count - (p >= ch->found.pts && p < ch->found.pts + ch->found.count);
+}
+
 qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
                                const qd_expr *const *syms, const double *vals,
                                qd_equilibrium_choice *out) {
     QD_ARGS_CTX(ctx, ctx && e && m && (nvals == 0 || syms) && (nvals == 0 || vals) && out);
     memset(out, 0, sizeof *out);
-    qd_status st = qd_equilibria_find(ctx, e, m, nvals, syms, vals, NULL, &out->found);
-    if (st != QD_OK)
-        return st;
     chooser c = {.ctx = ctx, .m = m};
     size_t n = e->n;
     /* init, then the box qd_equilibria_default_box fills beside the angle flags */
@@ -213,11 +232,19 @@ qd_status qd_equilibria_choose(qd_ctx *ctx, const qd_eom *e, const qd_model *m, 
         if (qd_equilibria_find(ctx, e, m, nvals, syms, vals, &o, &out->from_initial) != QD_OK)
             qd__ctx_recover(ctx); /* Newton failing from there only leaves the list */
     }
-    pick(&c, out);
+    /* the initial state an equilibrium: no search (a ring of 100 springs took
+       72-109 s in the multistart, issue 34), only the exact set when there is one */
+    bool at_init = initial_is_minimum(&c, out);
+    qd_equilibria_opts o = {.no_search = at_init};
+    qd_status st = qd_equilibria_find(ctx, e, m, nvals, syms, vals, &o, &out->found);
+    if (st == QD_OK && at_init)
+        pick_initial(&c, out);
+    else if (st == QD_OK)
+        pick(&c, out);
     qd__free(init);
     qd__free(c.angle);
     work_free(&c.w);
-    return QD_OK;
+    return st;
 }
 
 void qd_equilibrium_choice_free(qd_equilibrium_choice *c) {

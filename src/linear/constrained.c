@@ -802,6 +802,11 @@ static qd_status search(cw *w, const double *lo, const double *hi, const double 
     size_t n = w->n, c = w->c, N = n + c;
     double *q = work, *lambda = q + n, *sub = lambda + c;
     for (size_t s = 0; s < (near ? 1 : starts); s++) {
+        if (!near && qd__ctx_progress(w->ctx, "equilibria: multistart", s, starts)) {
+            qd_ctx_error(w->ctx, QD_ERR_ARG, "the search for equilibria was stopped after %zu "
+                         "of %zu starts", s, starts);
+            return QD_ERR_ARG;
+        }
         for (size_t j = 0; j < n; j++)
             q[j] = near ? near[j]
                         : lo[j] + (hi[j] - lo[j]) * qd__lin_halton(s + 1, qd__lin_halton_primes[j % 16]);
@@ -820,6 +825,8 @@ static qd_status search(cw *w, const double *lo, const double *hi, const double 
         }
     }
     (void)N;
+    if (!near)
+        qd__ctx_progress(w->ctx, "equilibria: multistart", starts, starts);
     return QD_OK;
 }
 
@@ -852,8 +859,9 @@ qd_status qd_constrained_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_
     }
     if ((st = qd__lin_eq_box(ctx, e, m, &o, angle, lo, hi)) != QD_OK)
         goto done;
-    out->method = o.near ? "newton" : "multistart";
-    st = search(&w, lo, hi, o.near, o.starts ? o.starts : 40 * n + 40, &roots, work);
+    out->method = o.near ? "newton" : o.no_search ? "none" : "multistart";
+    st = search(&w, lo, hi, o.near, o.no_search ? 0 : o.starts ? o.starts : 40 * n + 40, &roots,
+                work);
     if (st == QD_OK && o.near && roots.count == 0) {
         qd_ctx_error(ctx, QD_ERR_NUMERIC, "no convergence: Newton's method on the constraint "
                                           "manifold from the guess found no equilibrium");

@@ -9,6 +9,7 @@
 #include "qdot/json.h"
 #include "qdot/print.h"
 #include "../base/args.h"
+#include "linear.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -75,8 +76,8 @@ static void json_eigs(qd_json *j, const qd_modes_result *res) {
     qd_json_begin_array(j);
     for (size_t k = 0; k < res->neig; k++) {
         qd_json_begin_array(j);
-        qd_json_number(j, res->eig_re[k]);
-        qd_json_number(j, res->eig_im[k]);
+        qd_json_number(j, qd__lin_root_shown(res, res->eig_re[k]));
+        qd_json_number(j, qd__lin_root_shown(res, res->eig_im[k]));
         qd_json_end_array(j);
     }
     qd_json_end_array(j);
@@ -91,9 +92,11 @@ static void json_eigs(qd_json *j, const qd_modes_result *res) {
 
 static void text_eigs(qd_buf *b, const qd_modes_result *res) {
     qd_buf_puts(b, "eigenvalues of A:\n");
-    for (size_t k = 0; k < res->neig; k++)
-        qd_buf_printf(b, "  s = %.10g %s %.10gi\n", res->eig_re[k], res->eig_im[k] < 0 ? "-" : "+",
-                      fabs(res->eig_im[k]));
+    for (size_t k = 0; k < res->neig; k++) {
+        double re = qd__lin_root_shown(res, res->eig_re[k]);
+        double im = qd__lin_root_shown(res, res->eig_im[k]);
+        qd_buf_printf(b, "  s = %.10g %s %.10gi\n", re, im < 0 ? "-" : "+", fabs(im));
+    }
 }
 
 /* ---- the modes ------------------------------------------------------------- */

@@ -176,6 +176,13 @@ static qd_status sort_eigs(qd_ctx *ctx, qd_modes_result *r) {
     return QD_OK;
 }
 
+double qd__lin_root_shown(const qd_modes_result *r, double x) {
+    double big = 0;
+    for (size_t i = 0; i < r->neig; i++)
+        big = fmax(big, hypot(r->eig_re[i], r->eig_im[i]));
+    return fabs(x) <= QD_RESULT_ZERO * big ? 0 : x;
+}
+
 /* Stable when every Re s < 0, or Re s = 0 only on simple nonzero roots. */
 static int verdict(const qd_modes_result *r) {
     double big = 0;

@@ -496,7 +496,7 @@ static void sort_by_q(size_t n, qd_equilibrium *pts, size_t count) {
  * isolated): along a null direction v of J, Newton from q + h v is run to
  * convergence; an isolated root draws it back to q (however slowly, a
  * degenerate root), a family (a ring of relative equilibria) holds it on a
- * root about h away.  Both h = 1e-2 and 1e-3 (times 1 + |q|) must find a
+ * root about h away (h |v|_inf in the largest coordinate).  Both h = 1e-2 and 1e-3 (times 1 + |q|) must find a
  * neighbour, so a root that is flat to round-off at one radius only is not
  * a family.  A free particle (J = 0, F = 0 everywhere) is a family. */
 static bool on_continuum(qd__lin *L, const double *q, double ftol) {
@@ -519,6 +519,11 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
             double qmax = 0;
             for (size_t i = 0; i < n; i++)
                 qmax = fmax(qmax, fabs(q[i]));
+            /* the step's largest component: h/sqrt(n) along a ring's rotation, whose
+               unit null vector is spread over every coordinate */
+            double vmax = 0;
+            for (size_t i = 0; i < n; i++)
+                vmax = fmax(vmax, fabs(v[i]));
             cont = true;
             for (double rel = 1e-2; cont && rel >= 1e-3; rel /= 10) {
                 double h = rel * (1 + qmax), d = 0, res;
@@ -527,7 +532,7 @@ static bool on_continuum(qd__lin *L, const double *q, double ftol) {
                 qd__lin_lm_solve(L, t, 0, 200, &res);
                 for (size_t i = 0; i < n; i++)
                     d = fmax(d, fabs(t[i] - q[i]));
-                cont = res <= ftol && d >= 0.5 * h;
+                cont = res <= ftol && d >= 0.5 * h * vmax;
             }
         }
     }
@@ -723,6 +728,30 @@ static bool affine_root(qd__lin *L, double ftol, const bool *angle, qd__roots *r
     return ok;
 }
 
+/* Affine F = J q + b with a singular J (the rotation of a ring of springs,
+ * the translations of a free molecule): its roots, when there are any, are
+ * one affine family, and a single damped Newton run (Levenberg-Marquardt on
+ * |F|^2, a convex quadratic here) from the box's centre c reaches a point of
+ * it, as each of the multistart's 40 n + 40 starts would (a ring of 100
+ * masses: 4,140 runs of O(n^3) steps, 72-109 s, issue 34).  false when the
+ * run does not reach ftol (b outside J's range, or a slow run): the caller
+ * then searches. */
+static bool affine_family(qd__lin *L, const double *lo, const double *hi, double ftol,
+                          const bool *angle, qd__roots *roots) {
+    size_t n = L->n;
+    double *q = qd__malloc(L->ctx, (n + 1) * sizeof *q), res;
+    bool ok = q != NULL;
+    for (size_t j = 0; ok && j < n; j++)
+        q[j] = lo[j] <= 0 && hi[j] >= 0 ? 0 : (lo[j] + hi[j]) / 2;
+    ok = ok && qd__lin_lm_solve(L, q, ftol, 200, &res);
+    if (ok) {
+        qd__lin_wrap_angles(n, q, angle);
+        ok = qd__lin_roots_add(L->ctx, roots, q, res, angle);
+    }
+    qd__free(q);
+    return ok;
+}
+
 static void sort9(double *v) {
     for (int a = 0; a < 9; a++)
         for (int b = a + 1; b < 9; b++)
@@ -817,17 +846,20 @@ qd_status qd_equilibria_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, si
             goto done;
         }
         x.nsol = 0;
-        if (affine(&L) && affine_root(&L, ftol, angle, &roots)) {
+        bool lin = affine(&L);
+        if (lin && (affine_root(&L, ftol, angle, &roots) ||
+                    (qd_ctx_status(ctx) != QD_ERR_NOMEM &&
+                     affine_family(&L, lo, hi, ftol, angle, &roots)))) {
             out->method = "linear";
+        } else if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
+            st = QD_ERR_NOMEM;
+            goto done;
+        } else if (o.no_search) {
+            out->method = "none";
         } else {
-            if (qd_ctx_status(ctx) == QD_ERR_NOMEM) {
-                st = QD_ERR_NOMEM;
-                goto done;
-            }
             out->method = "multistart";
             size_t starts = o.starts ? o.starts : 40 * n + 40;
-            if (!qd__lin_multistart(&L, lo, hi, angle, starts, ftol, &roots))
-                st = QD_ERR_NOMEM;
+            st = qd__lin_multistart(&L, lo, hi, angle, starts, ftol, &roots);
         }
         keep_in_box(&roots, n, lo, hi);
     }

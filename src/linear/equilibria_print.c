@@ -11,12 +11,31 @@
 #include "../base/args.h"
 #include "linear.h"
 
+const char *qd_eq_chosen_code(qd_eq_chosen c) {
+    switch (c) {
+    case QD_EQ_CHOSEN_NEAREST_MINIMUM:
+        return "nearest_minimum";
+    case QD_EQ_CHOSEN_LOWEST_MINIMUM:
+        return "lowest_minimum";
+    case QD_EQ_CHOSEN_INITIAL_STATE:
+        return "initial_state";
+    case QD_EQ_CHOSEN_NEWTON_FROM_INITIAL:
+        return "newton_from_initial";
+    case QD_EQ_CHOSEN_FIRST_LISTED:
+        return "first_listed";
+    }
+    return "unknown";
+}
+
 const char *qd_eq_chosen_name(qd_eq_chosen c) {
     switch (c) {
     case QD_EQ_CHOSEN_NEAREST_MINIMUM:
         return "the minimum of the potential nearest the model's initial state";
     case QD_EQ_CHOSEN_LOWEST_MINIMUM:
         return "the minimum of the potential with the lowest V";
+    case QD_EQ_CHOSEN_INITIAL_STATE:
+        return "the model's initial state is an equilibrium (a minimum of the potential; no "
+               "search made)";
     case QD_EQ_CHOSEN_NEWTON_FROM_INITIAL:
         return "no minimum of the potential was found: the equilibrium reached by Newton's "
                "method from the model's initial state";

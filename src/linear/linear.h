@@ -59,6 +59,14 @@ bool qd__lin_negligible(double x, double scale);
  * M0's diagonal is 1 against the problem's own rate (linearize.c). */
 void qd__lin_linear_chop(qd_linear *l);
 
+/* A part x of one of r's state-space roots as every printer shows it (text
+ * and JSON of modes, stability and constrained modes): 0 when |x| is within
+ * QD_RESULT_ZERO of the largest |s|, the eigen-solver's round-off (a bowl's
+ * ring of relative equilibria turning at w = 3 printed s = 2.1e-17 beside
+ * s = 0 and +-3.79i; issue 33).  The result's own numbers stay as solved:
+ * the scan bisects the margin's sign. */
+double qd__lin_root_shown(const qd_modes_result *r, double x);
+
 /* Eigenvalues (ascending) and, when vecs is not NULL, orthonormal
  * eigenvectors (column-major, vecs[i + j n] = component i of vector j) of
  * the symmetric n*n matrix A (row-major; only its symmetric part is used).
@@ -99,9 +107,11 @@ void qd__lin_wrap_angles(size_t n, double *q, const bool *angle);
 bool qd__lin_roots_same(size_t n, const double *a, const double *b, const bool *angle);
 
 /* The multi-start search over [lo, hi] (quasi-random starts and axis scans
- * through the centre); roots with max |F| <= ftol go to out. */
-bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
-                    size_t starts, double ftol, qd__roots *out);
+ * through the centre); roots with max |F| <= ftol go to out.  Each scan and
+ * start is reported to the context's progress function (qd_ctx_set_progress);
+ * QD_ERR_ARG, recorded, when it asks to stop; QD_ERR_NOMEM. */
+qd_status qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
+                             size_t starts, double ftol, qd__roots *out);
 
 /* The i-th point (i >= 1) of the van der Corput sequence in base, in [0, 1):
  * coordinate j of a Halton start uses base qd__lin_halton_primes[j % 16]

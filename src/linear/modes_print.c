@@ -10,6 +10,7 @@
 #include "qdot/symmetry.h"
 #include "../base/args.h"
 #include "../base/mem.h"
+#include "linear.h"
 
 #include <math.h>
 
@@ -135,9 +136,12 @@ static void put_state_space(const qd_modes_result *res, qd_buf *b) {
     qd_buf_puts(b, "damped or gyroscopic: state-space eigenvalues s of "
                    "det(s^2 M0 + s (C0 + G0) + K0) = 0\n");
     for (size_t i = 0; i < res->neig; i++) {
-        double re = res->eig_re[i], im = res->eig_im[i], mod = hypot(re, im);
+        /* round-off against the largest root (or off the imaginary axis
+         * against its own size): the verdict already knows */
+        double re = qd__lin_root_shown(res, res->eig_re[i]);
+        double im = qd__lin_root_shown(res, res->eig_im[i]), mod = hypot(re, im);
         if (fabs(re) <= 1e-12 * mod)
-            re = 0; /* round-off off the imaginary axis: the verdict already knows */
+            re = 0;
         qd_buf_printf(b, "  s = %.10g %s %.10gi", re, im < 0 ? "-" : "+", fabs(im));
         if (mod > 0 && im > 0)
             qd_buf_printf(b, "  (frequency %.10g rad/s, damping ratio %.6g)", im,
@@ -249,6 +253,8 @@ static void json_head(const qd_modes_report *r, qd_json *j) {
     if (r->choice) {
         qd_json_key(j, "choice");
         qd_json_begin_object(j);
+        qd_json_key(j, "code");
+        qd_json_string(j, qd_eq_chosen_code(r->choice->reason));
         qd_json_key(j, "reason");
         qd_json_string(j, qd_eq_chosen_name(r->choice->reason));
         qd_json_key(j, "others");
@@ -286,8 +292,8 @@ static bool put_json(qd_ctx *ctx, const qd_modes_report *r, qd_buf *b) {
     qd_json_begin_array(&j);
     for (size_t k = 0; k < res->neig; k++) {
         qd_json_begin_array(&j);
-        qd_json_number(&j, res->eig_re[k]);
-        qd_json_number(&j, res->eig_im[k]);
+        qd_json_number(&j, qd__lin_root_shown(res, res->eig_re[k]));
+        qd_json_number(&j, qd__lin_root_shown(res, res->eig_im[k]));
         qd_json_end_array(&j);
     }
     qd_json_end_array(&j);

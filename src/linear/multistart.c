@@ -143,17 +143,29 @@ static bool scan_axis(qd__lin *L, size_t i, const double *c, const double *lo, c
     return true;
 }
 
-bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
-                    size_t starts, double ftol, qd__roots *out) {
-    size_t n = L->n;
+/* Each axis scan and each start is a step of the progress reported to the
+ * context (qd_ctx_set_progress): n + starts steps. */
+static bool stop_asked(qd__lin *L, size_t done, size_t total) {
+    if (!qd__ctx_progress(L->ctx, "equilibria: multistart", done, total))
+        return false;
+    qd_ctx_error(L->ctx, QD_ERR_ARG, "the search for equilibria was stopped after %zu of %zu "
+                 "starts", done, total);
+    return true;
+}
+
+qd_status qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bool *angle,
+                             size_t starts, double ftol, qd__roots *out) {
+    size_t n = L->n, total = n + starts;
     double *q = qd__malloc(L->ctx, (n + 1) * sizeof *q), *c = qd__malloc(L->ctx, (n + 1) * sizeof *c);
-    bool ok = q && c;
+    bool ok = q && c, stopped = false;
     for (size_t j = 0; ok && j < n; j++)
         c[j] = lo[j] <= 0 && hi[j] >= 0 ? 0 : (lo[j] + hi[j]) / 2;
-    for (size_t i = 0; ok && i < n; i++)
+    for (size_t i = 0; ok && !stopped && i < n; i++) {
         ok = scan_axis(L, i, c, lo, hi, angle, ftol, q, out);
+        stopped = stop_asked(L, i + 1, total);
+    }
     unsigned long long seed = 88172645463325252ULL;
-    for (size_t s = 0; ok && s < starts; s++) {
+    for (size_t s = 0; ok && !stopped && s < starts; s++) {
         for (size_t j = 0; j < n; j++) {
             double u;
             if (j < sizeof qd__lin_halton_primes / sizeof *qd__lin_halton_primes) {
@@ -167,8 +179,9 @@ bool qd__lin_multistart(qd__lin *L, const double *lo, const double *hi, const bo
             q[j] = lo[j] + (hi[j] - lo[j]) * u;
         }
         ok = polish(L, q, angle, ftol, out);
+        stopped = stop_asked(L, n + s + 1, total);
     }
     qd__free(q);
     qd__free(c);
-    return ok;
+    return !ok ? QD_ERR_NOMEM : stopped ? QD_ERR_ARG : QD_OK;
 }

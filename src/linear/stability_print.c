@@ -6,6 +6,7 @@
 #include "qdot/stability.h"
 #include "qdot/json.h"
 #include "../base/args.h"
+#include "linear.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -38,12 +39,7 @@ static double max_re(const qd_modes_result *m) {
 
 /* Rounding noise (1e-16 against roots of order 1) printed as 0: the real
  * parts of undamped gyroscopic roots are 0 exactly. */
-static double shown(const qd_modes_result *m, double x) {
-    double big = 0;
-    for (size_t i = 0; i < m->neig; i++)
-        big = fmax(big, hypot(m->eig_re[i], m->eig_im[i]));
-    return fabs(x) <= QD_RESULT_ZERO * big ? 0 : x;
-}
+static double shown(const qd_modes_result *m, double x) { return qd__lin_root_shown(m, x); }
 
 static void put_roots(qd_buf *b, const qd_modes_result *m) {
     for (size_t i = 0; i < m->neig; i++) {

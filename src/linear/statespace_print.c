@@ -124,8 +124,11 @@ static qd_status text(qd_ctx *ctx, const qd_statespace *s, qd_buf *b) {
         put_eig(b, s->eig_re[j], s->eig_im[j]);
     }
     qd_buf_puts(b, "\n");
-    put_rank(b, "controllable", s->controllable, s->rank_ctrb, s->nx);
-    put_modes(b, "uncontrollable", s, s->nuncontrollable, s->uncontrollable);
+    if (s->nu) { /* without inputs every mode is out of reach: no list of them */
+        put_rank(b, "controllable", s->controllable, s->rank_ctrb, s->nx);
+        put_modes(b, "uncontrollable", s, s->nuncontrollable, s->uncontrollable);
+    } else
+        qd_buf_puts(b, "controllable: no inputs\n");
     if (s->ny) {
         put_rank(b, "observable", s->observable, s->rank_obsv, s->nx);
         put_modes(b, "unobservable", s, s->nunobservable, s->unobservable);
@@ -272,7 +275,7 @@ static void code(qd_ctx *ctx, const qd_statespace *s, qd_ss_format fmt, qd_buf *
     qd_buf_printf(b, "], u = [");
     for (size_t i = 0; i < s->nu; i++)
         qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(s->inputs[i]));
-    qd_buf_printf(b, "]%s\n", s->Asym ? "" : " (numbers: the exact form grew too large)");
+    qd_buf_printf(b, "]%s\n", s->Asym ? "" : " (numbers: the exact form was not kept)");
     code_matrix(b, ctx, fmt, "A", s->nx, s->nx, s->Asym, s->A);
     code_matrix(b, ctx, fmt, "B", s->nx, s->nu, s->Bsym, s->B);
     if (s->ny) {

@@ -90,14 +90,8 @@ void qd_zvc_picture_free(qd_zvc_picture *p) {
 
 /* ---- written out ---------------------------------------------------------- */
 
-/* A computed number for a reader: 12 significant digits, 0 below 1e-13
- * (the program's rule for results found by iteration). */
-static void zv_put(qd_buf *b, double x) {
-    if (fabs(x) < 1e-13)
-        qd_buf_puts(b, "0");
-    else
-        qd_buf_printf(b, "%.12g", x);
-}
+/* A computed number for a reader: the one digit rule (qd_buf_put_result). */
+static void zv_put(qd_buf *b, double x) { qd_buf_put_result(b, x, 1); }
 
 static qd_status zv_done(qd_ctx *ctx, const qd_buf *b) {
     if (!b->failed)

@@ -57,9 +57,10 @@ static qd_ham *ham_alloc(qd_ctx *ctx, size_t n) {
 static qd_status momenta(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h) {
     for (size_t j = 0; j < e->n; j++) {
         char name[256];
-        snprintf(name, sizeof name, "p_%s", qd_expr_name(e->q[j]));
+        snprintf(name, sizeof name, "%s_%s", h->second_kind ? "s" : "p", qd_expr_name(e->q[j]));
         h->qd[j] = e->qd[j];
-        h->p[j] = qd_model_momentum(m, j) ? qd_model_momentum(m, j) : qd_symbol(ctx, name);
+        h->p[j] = qd_model_momentum(m, j) && !h->second_kind ? qd_model_momentum(m, j)
+                                                               : qd_symbol(ctx, name);
         h->pdef[j] = qd_simplify(ctx, qd_diff(ctx, e->L, e->qd[j]));
         if (!h->p[j] || !h->pdef[j])
             return qd_ctx_status(ctx);
@@ -206,19 +207,47 @@ static const qd_expr *dp_quadratic(qd_ctx *ctx, const qd_eom *e, const quad *qf,
     return r;
 }
 
+/* The force on q_j that L does not hold: Q_j - dD/dq'_j. */
+static const qd_expr *force1(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j) {
+    const qd_expr *D = qd_model_dissipation(m), *Q = qd_model_force(m, j);
+    const qd_expr *x = Q ? Q : qd_int(ctx, 0);
+    return D ? qd_sub(ctx, x, qd_diff(ctx, D, e->qd[j])) : x;
+}
+
+/* The force on q_j that T does not hold (Desloge ch. 72 eq. 1):
+ * Q_j - dD/dq'_j - dV/dq_j + d/dt(dU/dq'_j) - dU/dq_j.  U's term may not
+ * hold accelerations: U at most linear in the velocities. */
+static const qd_expr *force2(qd_ctx *ctx, const qd_model *m, const qd_eom *e, size_t j) {
+    const qd_expr *V = qd_model_potential(m), *U = qd_model_gen_potential(m);
+    const qd_expr *x = force1(ctx, m, e, j);
+    if (V)
+        x = qd_sub(ctx, x, qd_diff(ctx, V, e->q[j]));
+    if (!U)
+        return x;
+    const qd_expr *g = qd_simplify(ctx, qd_dt(ctx, qd_diff(ctx, U, e->qd[j])));
+    for (size_t k = 0; g && k < e->n; k++)
+        if (qd_has(g, e->qdd[k])) {
+            qd_ctx_error(ctx, QD_ERR_NONLINEAR, "U is not linear in the velocities: its force "
+                         "d/dt(dU/d%s') holds accelerations, so it is no force of the second "
+                         "kind", qd_expr_name(e->q[j]));
+            return NULL;
+        }
+    return qd_sub(ctx, qd_add(ctx, x, g), qd_diff(ctx, U, e->q[j]));
+}
+
 /* For a quadratic L, dH/dp = M^-1 (p - b) is the velocity solved above
  * (M symmetric, b and L0 free of p), so dq is vel itself; dp as
- * dp_quadratic has it. */
+ * dp_quadratic has it.  The second kind: L is T and the forces force2's. */
 static qd_status equations(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham *h,
                            const quad *qf) {
     const qd_expr *D = qd_model_dissipation(m);
-    h->conserved = !qd_has(h->H, qd_time(ctx)) && (!D || qd_is_zero(D));
+    h->conserved = !qd_has(h->H, qd_time(ctx)) && (h->second_kind || !D || qd_is_zero(D));
     for (size_t j = 0; j < e->n; j++) {
-        const qd_expr *Q = qd_model_force(m, j), *x = Q ? Q : qd_int(ctx, 0);
-        if (D)
-            x = qd_sub(ctx, x, qd_diff(ctx, D, e->qd[j]));
-        h->conserved = h->conserved && (!Q || qd_is_zero(Q));
-        h->extra[j] = in_qp(ctx, e, h, x);
+        const qd_expr *Q = qd_model_force(m, j);
+        const qd_expr *x = h->second_kind ? force2(ctx, m, e, j) : force1(ctx, m, e, j);
+        h->extra[j] = x ? in_qp(ctx, e, h, x) : NULL;
+        h->conserved = h->conserved && (h->second_kind ? h->extra[j] && qd_is_zero(h->extra[j])
+                                                       : !Q || qd_is_zero(Q));
         h->dq[j] = qf->M ? h->vel[j] : qd_simplify(ctx, qd_diff(ctx, h->H, h->p[j]));
         h->dp[j] = qf->M && h->extra[j] ? dp_quadratic(ctx, e, qf, j, h->extra[j]) : NULL;
         if (!h->dp[j] && qd_ctx_status(ctx) == QD_OK) /* not quadratic after all: as it comes */
@@ -251,8 +280,8 @@ static qd_status energy(qd_ctx *ctx, const qd_model *m, const qd_eom *e, qd_ham 
     const qd_expr *T = qd_model_kinetic(m), *V = qd_model_potential(m), *U = qd_model_gen_potential(m);
     if (!T || qd_model_lagrangian_given(m))
         return QD_OK;
-    const qd_expr *E = qd_add(ctx, T, V ? V : qd_int(ctx, 0));
-    if (U)
+    const qd_expr *E = h->second_kind ? T : qd_add(ctx, T, V ? V : qd_int(ctx, 0));
+    if (U && !h->second_kind)
         E = qd_add(ctx, E, at_rest(ctx, e, U));
     const qd_expr *d = qf->M ? quad_minus(ctx, e, qf, E) : NULL;
     if (d && qd_is_zero(d))
@@ -313,6 +342,66 @@ qd_ham *qd_ham_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
     if (st != QD_OK) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, st, "forming the Hamiltonian failed");
+        qd_ham_free(h);
+        return NULL;
+    }
+    return h;
+}
+
+/* s = p (Desloge ch. 72 eq. 6): dT/dq'_j - dL/dq'_j simplifies to 0 for
+ * every j. */
+static bool s_is_p(qd_ctx *ctx, const qd_eom *e, const qd_ham *h) {
+    for (size_t j = 0; j < e->n; j++) {
+        const qd_expr *d = qd_simplify(ctx, qd_sub(ctx, qd_diff(ctx, e->L, e->qd[j]), h->pdef[j]));
+        if (!d || !qd_is_zero(d))
+            return false;
+    }
+    return true;
+}
+
+/* Why m has no equations of the second kind (Desloge ch. 72 Thm 1 needs T
+ * and no constraints), or QD_OK. */
+static qd_status second_kind_refused(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    const char *why = NULL;
+    if (qd_model_hamiltonian_given(m) || qd_model_lagrangian_given(m) || !qd_model_kinetic(m))
+        why = qd_model_hamiltonian_given(m) ? "H" : "L";
+    if (why) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "Hamilton's equations of the second kind are built from "
+                     "the kinetic energy T (Desloge ch. 72), and the model gives %s: give T = ... "
+                     "with V = ..., forces or dissipation", why);
+        return QD_ERR_ARG;
+    }
+    if (!e) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "qd_ham2_derive: no equations of motion (e is NULL)");
+        return QD_ERR_ARG;
+    }
+    if (e->ncon || e->nelim) {
+        qd_ctx_error(ctx, QD_ERR_ARG, "Hamilton's equations of the second kind with constraints "
+                                      "are not supported yet");
+        return QD_ERR_ARG;
+    }
+    return QD_OK;
+}
+
+qd_ham *qd_ham2_derive(qd_ctx *ctx, const qd_model *m, const qd_eom *e) {
+    QD_ARGS(NULL, ctx && m);
+    if (second_kind_refused(ctx, m, e) != QD_OK)
+        return NULL;
+    qd_ham *h = ham_alloc(ctx, e->n);
+    if (!h) {
+        qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory forming K");
+        return NULL;
+    }
+    qd_eom et = *e; /* the Legendre transform of T in place of L */
+    et.L = qd_model_kinetic(m);
+    h->q = e->q;
+    h->second_kind = true;
+    qd_status st = derive(ctx, m, &et, h);
+    if (st == QD_OK)
+        h->s_is_p = s_is_p(ctx, e, h);
+    if (st != QD_OK || qd_ctx_status(ctx) != QD_OK) {
+        if (qd_ctx_status(ctx) == QD_OK)
+            qd_ctx_error(ctx, st, "forming K failed");
         qd_ham_free(h);
         return NULL;
     }

@@ -228,7 +228,7 @@ static void put_json(qd_ctx *ctx, qd_buf *b, const qd_metric *g, const mt_force 
     for (size_t i = 0; i < g->n; i++)
         qd_json_string(&j, name(g, i));
     qd_json_end_array(&j);
-    qd_json_key(&j, "source");
+    qd_json_key(&j, "from"); /* until issue 31 "source" */
     qd_json_string(&j, g->from_L ? "L" : "T");
     qd_json_key(&j, "T2");
     qd_json_expr(&j, ctx, g->T2);

@@ -267,7 +267,8 @@ static void json_matrix(const rt_out *r, qd_json *j, const char *key, const qd_e
     qd_json_end_array(j);
 }
 
-/* The equations by kept coordinate: {"q": name, "M": [row], "f": f}. */
+/* The equations by kept coordinate: {"q": name, "mass_matrix": [row], "forcing": f}
+ * (until issue 31 "M" and "f"). */
 static void json_equations(const rt_out *r, qd_json *j) {
     const qd_routh *h = r->r;
     qd_json_key(j, "equations");
@@ -276,8 +277,8 @@ static void json_equations(const rt_out *r, qd_json *j) {
         qd_json_begin_object(j);
         qd_json_key(j, "q");
         qd_json_string(j, qd_expr_name(h->keep[k]));
-        json_list(r, j, "M", h->nkeep, h->M + k * h->nkeep);
-        qd_json_key(j, "f");
+        json_list(r, j, "mass_matrix", h->nkeep, h->M + k * h->nkeep);
+        qd_json_key(j, "forcing");
         qd_json_expr(j, r->ctx, h->f[k]);
         qd_json_end_object(j);
     }

@@ -313,20 +313,31 @@ static qd_status resolve(qd_ctx *ctx, const qd_model *m, const qd_state *st, con
     return s;
 }
 
+/* The first place of sep in text[start, end) outside brackets; end if none. */
+static size_t range_split(const char *text, size_t start, size_t end, const char *sep) {
+    size_t k = strlen(sep);
+    for (int depth = 0; start + k <= end; start++) {
+        depth += (text[start] == '(' || text[start] == '[') -
+                 (text[start] == ')' || text[start] == ']');
+        if (depth == 0 && !strncmp(text + start, sep, k))
+            return start;
+    }
+    return end;
+}
+
 qd_status qd_state_range(qd_ctx *ctx, const qd_model *m, const char *text, size_t start,
                          size_t len, double *a, double *b) {
     QD_ARGS_CTX(ctx, text && a && b);
-    size_t n = strlen(text), end = start + len, colon = start;
+    size_t n = strlen(text), end = start + len;
     if (start > n || len > n - start) {
         qd_ctx_error(ctx, QD_ERR_ARG, "qd_state_range: the range's span is outside the text");
         return QD_ERR_ARG;
     }
-    for (int depth = 0; colon < end; colon++) {
-        depth += (text[colon] == '(' || text[colon] == '[') -
-                 (text[colon] == ')' || text[colon] == ']');
-        if (text[colon] == ':' && depth == 0)
-            break;
-    }
+    /* A:B; the old spelling A..B (equilibria --box before issue 31) is still
+     * read: ".." is no part of an expression, so it cannot be misread */
+    size_t sep = 1, colon = range_split(text, start, end, ":");
+    if (colon == end && (colon = range_split(text, start, end, "..")) != end)
+        sep = 2;
     if (colon == end) {
         size_t ia = start, ib = end;
         while (ia < ib && isspace((unsigned char)text[ia]))
@@ -339,7 +350,7 @@ qd_status qd_state_range(qd_ctx *ctx, const qd_model *m, const char *text, size_
     }
     const qd_expr *x;
     qd_status st = qd_state_value(ctx, m, text, start, colon - start, &x, a);
-    return st == QD_OK ? qd_state_value(ctx, m, text, colon + 1, end - colon - 1, &x, b) : st;
+    return st == QD_OK ? qd_state_value(ctx, m, text, colon + sep, end - colon - sep, &x, b) : st;
 }
 
 /* ---- the list ---------------------------------------------------------------- */

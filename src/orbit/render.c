@@ -1,7 +1,7 @@
 /*
  * src/orbit/render.c - an orbit analysis as text and JSON (qd_orbit_render,
- * orbit.h): the output of `qdot orbit`.  Text shows 12 significant digits
- * and 0 below 1e-13, as the program's other computed results; JSON keeps
+ * orbit.h): the output of `qdot orbit`.  Text shows computed results by
+ * the one digit rule (qd_result_format: 12 digits, 0 at or below 1e-12); JSON keeps
  * every digit and writes null for what the orbit does not have (a NaN) and
  * for an open end (JSON has no infinity).
  */
@@ -12,14 +12,9 @@
 
 #include "qdot/json.h"
 
-static void num(qd_buf *b, double x) {
-    if (isinf(x))
-        qd_buf_puts(b, x > 0 ? "inf" : "-inf");
-    else if (fabs(x) < 1e-13)
-        qd_buf_puts(b, "0");
-    else
-        qd_buf_printf(b, "%.12g", x);
-}
+/* A computed result: the one digit rule (qd_buf_put_result, scale 1;
+ * an open end prints inf). */
+static void num(qd_buf *b, double x) { qd_buf_put_result(b, x, 1); }
 
 static void put(qd_buf *b, const char *before, double x, const char *after) {
     qd_buf_puts(b, before);

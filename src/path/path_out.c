@@ -16,15 +16,8 @@ typedef struct pt_out {
     bool any_free;
 } pt_out;
 
-/* A computed number for a reader: 12 significant digits, 0 below 1e-13
- * (the program's rule for results found by iteration). */
-static void put(qd_buf *b, double x) {
-    if (fabs(x) < 1e-13) {
-        qd_buf_puts(b, "0");
-        return;
-    }
-    qd_buf_printf(b, "%.12g", x);
-}
+/* A computed number for a reader: the one digit rule (qd_buf_put_result). */
+static void put(qd_buf *b, double x) { qd_buf_put_result(b, x, 1); }
 
 /* The name the ends' time goes by: t, or the model's independent x. */
 static const char *time_name(const pt_out *r) {

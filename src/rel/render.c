@@ -2,8 +2,9 @@
  * src/rel/render.c - the results of qd_lorentz_run and qd_collide_run as
  * text and JSON (qd_lorentz_render, qd_collide_render; relativity.h): the
  * output of `qdot lorentz` and `qdot collide`, keys as docs/cli.md lists.
- * Text shows 12 significant digits and 0 below 1e-13, as the program's
- * other computed results; JSON every digit.
+ * Text shows computed results by the one digit rule (qd_result_format:
+ * 12 digits, 0 at or below 1e-12 of a vector's largest component); JSON
+ * every digit.
  */
 #include "base/args.h"
 #include "rel.h"
@@ -13,19 +14,18 @@
 
 #include "qdot/json.h"
 
-static void num(qd_buf *b, double x) {
-    if (fabs(x) < 1e-13)
-        qd_buf_puts(b, "0");
-    else
-        qd_buf_printf(b, "%.12g", x);
-}
+static void num(qd_buf *b, double x) { qd_buf_put_result(b, x, 1); }
 
+/* A vector's components against its largest (the digit rule's scale). */
 static void vec(qd_buf *b, const double *v, size_t n) {
+    double big = 0;
+    for (size_t i = 0; i < n; i++)
+        big = fmax(big, fabs(v[i]));
     qd_buf_puts(b, "(");
     for (size_t i = 0; i < n; i++) {
         if (i)
             qd_buf_puts(b, ", ");
-        num(b, v[i]);
+        qd_buf_put_result(b, v[i], big);
     }
     qd_buf_puts(b, ")");
 }

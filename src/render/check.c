@@ -438,14 +438,25 @@ static void json_forces(check *c, qd_json *j) {
     qd_json_end_object(j);
 }
 
+/* The English of a verdict's machine code (v->reason), for JSON's "reason". */
+static const char *verdict_words(const char *code) {
+    if (code && !strcmp(code, "mass_not_positive_definite"))
+        return "the mass matrix is not positive definite";
+    if (code && !strcmp(code, "constraint_not_real"))
+        return "a constraint has no real solution near the initial state";
+    return code;
+}
+
 static void json_verdict(qd_json *j, const qd_check_verdict *v) {
     qd_json_key(j, "ok");
     qd_json_bool(j, v->ok);
     qd_json_key(j, "judged");
     qd_json_bool(j, v->judged);
     if (!v->ok) {
-        qd_json_key(j, "reason");
+        qd_json_key(j, "code"); /* until issue 31 "reason" held the code */
         qd_json_string(j, v->reason);
+        qd_json_key(j, "reason");
+        qd_json_string(j, verdict_words(v->reason));
         qd_json_key(j, "message");
         qd_json_string(j, v->message);
         qd_json_key(j, "about");

@@ -8,6 +8,7 @@
  */
 #include "render.h"
 
+#include <stdio.h>
 #include <string.h>
 #include "qdot/json.h"
 #include "../base/args.h"
@@ -53,8 +54,23 @@ static void line(const ham_view *v, qd_buf *b, const qd_expr *lhs_x, const char 
     qd_buf_puts(b, v->fmt == QD_RENDER_LATEX ? " \\\\\n" : "\n");
 }
 
+/* The second kind's (Desloge ch. 72 eqs. 5-6). */
+static void verdicts2(const ham_view *v, qd_buf *b, const char *cmt) {
+    const qd_ham *h = v->h;
+    qd_buf_printf(b, "%sK = T: %s", cmt, h->is_energy ? "yes" : "no, K - T = ");
+    if (!h->is_energy)
+        qd_print(v->ctx, h->H_minus_E, QD_FMT_TEXT, b);
+    qd_buf_printf(b, "\n%ss = p: %s\n%sK conserved: %s\n", cmt,
+                  h->s_is_p ? "yes" : "no (U depends on the velocities)", cmt,
+                  h->conserved ? "yes" : "no (explicit t or forces)");
+}
+
 static void verdicts(const ham_view *v, qd_buf *b, const char *cmt) {
     const qd_ham *h = v->h;
+    if (h->second_kind) {
+        verdicts2(v, b, cmt);
+        return;
+    }
     if (h->H_minus_E) {
         qd_buf_printf(b, "%sH = T + V: %s", cmt, h->is_energy ? "yes" : "no, H - (T + V) = ");
         if (!h->is_energy)
@@ -68,11 +84,23 @@ static void verdicts(const ham_view *v, qd_buf *b, const char *cmt) {
                   h->conserved ? "yes" : "no (explicit t, generalized forces or dissipation)");
 }
 
+/* The second kind's forces Q_j, printed as Q_<q> = ... */
+static void forces(const ham_view *v, qd_buf *b, const char *cmt) {
+    const qd_ham *h = v->h;
+    qd_buf_printf(b, "%sgeneralized forces (all but T's: given, -dV/dq, U's, -dD/dq')\n", cmt);
+    for (size_t j = 0; j < h->n; j++) {
+        char lhs[272];
+        snprintf(lhs, sizeof lhs, "Q_%s", qd_expr_name(h->q[j]));
+        line(v, b, NULL, lhs, h->extra[j]);
+    }
+}
+
 static void write_lines(const ham_view *v, qd_buf *b) {
     const qd_ham *h = v->h;
-    const bool latex = v->fmt == QD_RENDER_LATEX, at = v->at != NULL;
+    const bool latex = v->fmt == QD_RENDER_LATEX, at = v->at != NULL, k2 = h->second_kind;
     const char *cmt = latex ? "% " : "";
-    qd_buf_printf(b, "%sqdot hamiltonian %s\n%smomenta%s\n", cmt, v->source, cmt,
+    qd_buf_printf(b, "%sqdot hamiltonian %s%s\n%smomenta%s%s\n", cmt,
+                  k2 ? "--second-kind " : "", v->source, cmt, k2 ? " of T" : "",
                   h->implicit ? " (no closed form for the velocities: they solve these)"
                   : at        ? ""
                               : " and velocities");
@@ -88,11 +116,14 @@ static void write_lines(const ham_view *v, qd_buf *b) {
             line(v, b, h->qd[j], "", v->vel[j]);
     }
     if (h->implicit && !at)
-        qd_buf_printf(b, "%sHamiltonian (defined implicitly: sum p q' - L at those "
-                         "velocities)\n", cmt);
+        qd_buf_printf(b, "%s%s (defined implicitly: sum %s q' - %s at those velocities)\n", cmt,
+                      k2 ? "K" : "Hamiltonian", k2 ? "s" : "p", k2 ? "T" : "L");
     else
-        qd_buf_printf(b, "%sHamiltonian%s\n", cmt, at ? " at the point" : "");
-    line(v, b, NULL, "H", v->H);
+        qd_buf_printf(b, "%s%s%s\n", cmt, k2 ? "K = sum s q' - T" : "Hamiltonian",
+                      at ? " at the point" : "");
+    line(v, b, NULL, k2 ? "K" : "H", v->H);
+    if (k2 && !at)
+        forces(v, b, cmt);
     if (h->H_given && !at) {
         qd_buf_printf(b, "%sLagrangian (inverse Legendre transform)\n", cmt);
         if (h->L_from_H)
@@ -100,7 +131,7 @@ static void write_lines(const ham_view *v, qd_buf *b) {
         else
             qd_buf_printf(b, "%s  none: %s\n", cmt, h->L_why);
     }
-    qd_buf_printf(b, "%sHamilton's equations\n", cmt);
+    qd_buf_printf(b, "%sHamilton's equations%s\n", cmt, k2 ? " of the second kind" : "");
     for (size_t j = 0; j < h->n; j++) {
         qd_buf_printf(b, "  d%s/dt = ", qd_expr_name(h->q[j]));
         put(v, b, v->dq[j]);
@@ -126,14 +157,14 @@ static void sympy_list(const ham_view *v, qd_buf *b, const char *base,
 /* W = Function('W') for the user functions in H, L and the lists. */
 static qd_status sympy_functions(const ham_view *v, qd_buf *b) {
     const qd_ham *h = v->h;
-    const qd_expr *const *lists[4] = {h->pdef, v->vel, v->dq, v->dp};
-    const qd_expr **all = qd__malloc(v->ctx, (2 + 4 * h->n) * sizeof *all);
+    const qd_expr *const *lists[5] = {h->pdef, v->vel, v->dq, v->dp, h->extra};
+    const qd_expr **all = qd__malloc(v->ctx, (2 + 5 * h->n) * sizeof *all);
     if (!all)
         return QD_ERR_NOMEM;
     size_t k = 0;
     all[k++] = v->H;
     all[k++] = h->L_from_H;
-    for (size_t i = 0; i < 4; i++)
+    for (size_t i = 0; i < (h->second_kind ? 5u : 4u); i++)
         for (size_t j = 0; j < h->n; j++)
             all[k++] = lists[i][j];
     qd_status st = qd_print_sympy_functions(v->ctx, k, all, b);
@@ -148,8 +179,9 @@ static qd_status write_sympy(const ham_view *v, qd_buf *b) {
     const qd_ham *h = v->h;
     const qd_model *m = v->m;
     const char *t = qd_print_time_name(v->ctx); /* x for `independent x` */
-    qd_buf_printf(b, "# qdot hamiltonian %s\nfrom sympy import *\n\n%s = Symbol('%s')\n",
-                  v->source, t, t);
+    const bool k2 = h->second_kind;
+    qd_buf_printf(b, "# qdot hamiltonian %s%s\nfrom sympy import *\n\n%s = Symbol('%s')\n",
+                  k2 ? "--second-kind " : "", v->source, t, t);
     for (size_t j = 0; j < h->n; j++)
         qd_buf_printf(b, "%s = Function('%s')\n%s = Symbol('%s')\n", qd_expr_name(h->q[j]),
                       qd_expr_name(h->q[j]), qd_expr_name(h->p[j]), qd_expr_name(h->p[j]));
@@ -170,9 +202,11 @@ static qd_status write_sympy(const ham_view *v, qd_buf *b) {
     sympy_list(v, b, "velocities", v->vel);
     if (h->implicit) /* velocities are then the symbols q' themselves, tied to p by pdef */
         qd_buf_printf(b, "%s = True\n", name(v, "implicit").s);
-    qd_buf_printf(b, "%s = ", name(v, "H").s);
+    qd_buf_printf(b, "%s = ", name(v, k2 ? "K" : "H").s);
     put(v, b, v->H);
     qd_buf_puts(b, "\n");
+    if (k2)
+        sympy_list(v, b, "forces", h->extra);
     if (h->H_given) {
         qd_buf_printf(b, "%s = ", name(v, "L").s);
         if (h->L_from_H)
@@ -182,7 +216,7 @@ static qd_status write_sympy(const ham_view *v, qd_buf *b) {
         qd_buf_puts(b, "\n");
     }
     sympy_list(v, b, "dq_dt", v->dq);
-    sympy_list(v, b, "dp_dt", v->dp);
+    sympy_list(v, b, k2 ? "ds_dt" : "dp_dt", v->dp);
     verdicts(v, b, "# ");
     return QD_OK;
 }
@@ -236,13 +270,31 @@ static void json_point(const ham_view *v, qd_json *j) {
     qd_json_end_object(j);
 }
 
+/* The second kind's verdicts (Desloge ch. 72 eqs. 5-6). */
+static void json_verdicts2(const ham_view *v, qd_json *j) {
+    const qd_ham *h = v->h;
+    qd_json_key(j, "K_is_T");
+    qd_json_bool(j, h->is_energy);
+    qd_json_key(j, "K_minus_T");
+    qd_json_expr(j, v->ctx, h->H_minus_E);
+    qd_json_key(j, "s_is_p");
+    qd_json_bool(j, h->s_is_p);
+    qd_json_key(j, "conserved");
+    qd_json_bool(j, h->conserved);
+}
+
 static bool write_json(const ham_view *v, qd_buf *b) {
     const qd_ham *h = v->h;
+    const bool k2 = h->second_kind;
     qd_json j;
     qd_json_init(&j, b);
     qd_json_begin_object(&j);
     qd_json_key(&j, "model");
     qd_json_string(&j, v->source);
+    if (k2) {
+        qd_json_key(&j, "kind");
+        qd_json_string(&j, "second");
+    }
     qd_json_key(&j, "coordinates");
     qd_json_begin_array(&j);
     for (size_t k = 0; k < h->n; k++)
@@ -261,10 +313,18 @@ static bool write_json(const ham_view *v, qd_buf *b) {
     }
     if (v->at)
         json_point(v, &j);
-    qd_json_key(&j, "H");
+    qd_json_key(&j, k2 ? "K" : "H");
     json_expr(v, &j, v->H);
+    if (k2)
+        json_list(v, &j, "forces", h->extra);
     json_list(v, &j, "dq_dt", v->dq);
-    json_list(v, &j, "dp_dt", v->dp);
+    json_list(v, &j, k2 ? "ds_dt" : "dp_dt", v->dp);
+    if (k2) {
+        json_verdicts2(v, &j);
+        qd_json_end_object(&j);
+        qd_buf_puts(b, "\n");
+        return qd_json_ok(&j);
+    }
     qd_json_key(&j, "H_is_energy");
     if (h->H_minus_E)
         qd_json_bool(&j, h->is_energy);

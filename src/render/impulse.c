@@ -22,22 +22,16 @@ typedef struct imp_view {
 
 static const char *qname(const imp_view *r, size_t j) { return qd_expr_name(r->res->q[j]); }
 
-/* A result in 12 significant digits; below 1e-13 in size, 0 (round-off). */
-static void put_num(qd_buf *b, double x) {
-    char s[40];
-    if (fabs(x) < 1e-13) {
-        qd_buf_puts(b, "0");
-        return;
-    }
-    snprintf(s, sizeof s, "%.12g", x);
-    qd_buf_puts(b, s);
-}
+/* A result: the one digit rule (qd_buf_put_result, scale 1). */
+static void put_num(qd_buf *b, double x) { qd_buf_put_result(b, x, 1); }
 
+/* A vector's components against its largest (the digit rule's scale). */
 static void put_vec(qd_buf *b, const double *v) {
+    double big = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
     qd_buf_puts(b, "(");
     for (unsigned k = 0; k < 3; k++) {
         qd_buf_puts(b, k ? ", " : "");
-        put_num(b, v[k]);
+        qd_buf_put_result(b, v[k], big);
     }
     qd_buf_puts(b, ")");
 }

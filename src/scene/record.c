@@ -13,7 +13,7 @@
 typedef struct rows {
     size_t width, n, cap;
     double *v;
-    void (*progress)(void *data, double t);
+    int (*progress)(void *data, double t);
     void *data;
     bool nomem;
 } rows;
@@ -33,9 +33,8 @@ static int keep_row(void *data, int event, const double *row) {
         r->cap = cap;
     }
     memcpy(r->v + r->n++ * r->width, row, r->width * sizeof *row);
-    if (r->progress)
-        r->progress(r->data, row[0]);
-    return 0;
+    /* a stop asked for (^C) ends the run after a whole row, as a stop event */
+    return r->progress && r->progress(r->data, row[0]) ? 1 : 0;
 }
 
 /* The column called name among the run's, or QD_SCENE_NONE. */
@@ -55,7 +54,7 @@ static size_t column(const qd_sim *s, qd_sim_method method, const char *name) {
 
 qd_status qd_scene_record(qd_ctx *ctx, qd_sim *s, const qd_sim_opts *opts,
                           const qd_scene_point *pts, size_t npts,
-                          void (*progress)(void *data, double t), void *data,
+                          int (*progress)(void *data, double t), void *data,
                           qd_scene_frames *fr, qd_sim_stats *stats) {
     QD_ARGS_CTX(ctx, ctx && s && opts && (pts || !npts) && fr);
     *fr = (qd_scene_frames){0};

@@ -106,7 +106,7 @@ static bool shapes_in_plane(const qd_scene_setup *sc, int flat) {
 }
 
 qd_status qd_scene_setup_record(qd_scene_setup *sc, const qd_sim_opts *opts,
-                                void (*progress)(void *data, double t), void *data,
+                                int (*progress)(void *data, double t), void *data,
                                 qd_sim_stats *stats) {
     QD_ARGS(QD_ERR_ARG, sc && opts && !sc->view.fr);
     qd_sim_stats st;

@@ -44,6 +44,7 @@ NULLABLE = {
     'qd_speeds_modes_scan_text': {'about', 'where'},  # issue 32: the first equilibrium
     'qd_ctx_error_about': {'hint', 'name'},
     'qd_ctx_new_with': {'a'},
+    'qd_ctx_set_progress': {'fn', 'data'},  # issue 34: NULL turns the progress off
     'qd_diag_format': {'file', 'text'},
     'qd_eom_derive_opts': {'opts'},
     'qd_eom_eval': {'M', 'R', 'f', 'lambda', 'qdd'},
@@ -61,6 +62,12 @@ NULLABLE = {
     'qd_constrained_at_solve': {'indep'},
     'qd_modes_at_choose': {'about'},
     'qd_linearize_about': {'about'},
+    'qd_tangent_new': {'vary'},
+    'qd_tangent_jacobian': {'out'},
+    'qd_conlin_about': {'independent'},
+    'qd_conlin_point': {'about'},
+    'qd_conlin_scan_run': {'about', 'independent'},
+    'qd_conlin_render': {'lqr'},
     'qd_eom_request_render': {'failed'},
     'qd_linpoint_read': {'qd'},
     'qd_linpoint_set': {'qd'},
@@ -85,6 +92,9 @@ NULLABLE = {
     'qd_metric_print': {'G'},
     'qd_metric_json': {'G'},
     'qd_path_print': {'opts'},
+    'qd_poincare_summary_print': {'prefix'},  # issue 31: poincare --format json
+    'qd_poincare_json_begin': {'model', 'names'},
+    'qd_json_add_model': {'model'},
     'qd_legendre_inverse_p': {'pdef'},
     'qd_linearize': {'syms', 'vals'},
     'qd_lqr_feedback': {'syms', 'vals'},

@@ -19,6 +19,7 @@
 #include "qdot/canonical.h"
 #include "qdot/certify.h"
 #include "qdot/codegen.h"
+#include "qdot/conlin.h"
 #include "qdot/constrained.h"
 #include "qdot/contour.h"
 #include "qdot/control.h"
@@ -57,6 +58,7 @@
 #include "qdot/status.h"
 #include "qdot/sweep.h"
 #include "qdot/symmetry.h"
+#include "qdot/tangent.h"
 #include "qdot/version.h"
 #include "qdot/zvc.h"
 
@@ -670,6 +672,98 @@ static void null_codegen(void **state)
     teardown(&F);
 }
 
+static void null_conlin(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_conlin_about */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(NULL, F.eom, F.model, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, NULL, F.model, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, F.eom, NULL, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, F.eom, F.model, NULL, "q", (qd_conlin *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_about(F.ctx, F.eom, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* ---- qd_conlin_free */
+    /* c NULL */
+    qd_conlin_free(NULL);
+    reset(&F);
+    /* ---- qd_conlin_point */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_point(NULL, F.model, (qd_linpoint *)(void *)F.blob, "q"));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_point(F.ctx, NULL, (qd_linpoint *)(void *)F.blob, "q"));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_point(F.ctx, F.model, NULL, "q"));
+    reset(&F);
+    /* ---- qd_conlin_scan_run */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(NULL, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, NULL, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, NULL, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, F.model, NULL, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", NULL, 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, NULL));
+    reset(&F);
+    /* ---- qd_conlin_scan_free */
+    /* s NULL */
+    qd_conlin_scan_free(NULL);
+    reset(&F);
+    /* ---- qd_conlin_print */
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_print(NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_print(NULL, false, NULL));
+    reset(&F);
+    /* ---- qd_conlin_render */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_render(NULL, NULL, NULL, (qd_ss_format){0}, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_render(F.ctx, NULL, NULL, (qd_ss_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_render(F.ctx, NULL, NULL, (qd_ss_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_conlin_needed */
+    /* e NULL */
+    assert_true(qd_conlin_needed(NULL) == 0);
+    reset(&F);
+    /* ---- qd_conlin_scan_print */
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_print(NULL, "q", false, &F.buf));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_print(NULL, "q", false, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_constrained(void **state)
 {
     (void)state;
@@ -1026,6 +1120,8 @@ static void null_equilibria(void **state)
     reset(&F);
     /* ---- qd_eq_chosen_name */
     /* no pointer argument */
+    /* ---- qd_eq_chosen_code */
+    /* no pointer argument */
     /* ---- qd_equilibrium_put_value */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_equilibrium_put_value(NULL, NULL, 1, &F.buf));
@@ -1244,6 +1340,10 @@ static void null_expr(void **state)
     /* ---- qd_ctx_node_count */
     /* ctx NULL */
     assert_true(qd_ctx_node_count(NULL) == 0);
+    reset(&F);
+    /* ---- qd_ctx_set_progress */
+    /* ctx NULL */
+    qd_ctx_set_progress(NULL, NULL, NULL);
     reset(&F);
     /* ---- qd_int */
     /* ctx NULL */
@@ -1885,6 +1985,16 @@ static void null_hamilton(void **state)
     /* h NULL */
     qd_ham_free(NULL);
     reset(&F);
+    /* ---- qd_ham2_derive */
+    /* ctx NULL */
+    assert_null(qd_ham2_derive(NULL, F.model, F.eom));
+    reset(&F);
+    /* m NULL */
+    assert_null(qd_ham2_derive(F.ctx, NULL, F.eom));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_ham2_derive(F.ctx, F.model, NULL));
+    reset(&F);
     /* ---- qd_legendre_inverse */
     /* ctx NULL */
     assert_null(qd_legendre_inverse(NULL, F.model));
@@ -2222,6 +2332,29 @@ static void null_json(void **state)
     /* j NULL */
     qd_json_frequency(NULL, 1);
     reset(&F);
+    /* ---- qd_json_expr_result */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(NULL, "q", "q", 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* operation NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, NULL, "q", 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* input NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", NULL, 1, (const char * const *)F.names, F.q, &F.buf));
+    reset(&F);
+    /* vars NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, NULL, F.q, &F.buf));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, (const char * const *)F.names, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_expr_result(F.ctx, "q", "q", 1, (const char * const *)F.names, F.q, NULL));
+    reset(&F);
+    /* ---- qd_json_add_model */
+    /* doc NULL */
+    assert_int_equal(QD_ERR_ARG, qd_json_add_model(NULL, "q"));
+    reset(&F);
     /* ---- qd_json_ok */
     /* j NULL */
     assert_true(qd_json_ok(NULL) == 0);
@@ -2462,6 +2595,24 @@ static void null_lyapunov(void **state)
     reset(&F);
     /* opts NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
+    reset(&F);
+    /* ---- qd_poincare_summary_print */
+    /* r NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", NULL));
+    reset(&F);
+    /* ---- qd_poincare_json_begin */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_begin(NULL, "q", 1, (const char * const *)F.names, false));
+    reset(&F);
+    /* ---- qd_poincare_json_end */
+    /* j NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_end(NULL, F.sim, NULL, NULL, NULL, 1, false));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_poincare_json_end(NULL, NULL, NULL, NULL, NULL, 1, false));
     reset(&F);
     /* ---- qd_lyap_setup_run */
     /* ctx NULL */
@@ -6849,6 +7000,63 @@ static void null_symmetry(void **state)
     teardown(&F);
 }
 
+static void null_tangent(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_tangent_new */
+    /* ctx NULL */
+    assert_null(qd_tangent_new(NULL, 1, (const qd_expr * const *)F.e, F.b, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* inputs NULL */
+    assert_null(qd_tangent_new(F.ctx, 1, NULL, F.b, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* outputs NULL */
+    assert_null(qd_tangent_new(F.ctx, 1, (const qd_expr * const *)F.e, F.b, 1, NULL));
+    reset(&F);
+    /* ---- qd_tangent_free */
+    /* t NULL */
+    qd_tangent_free(NULL);
+    reset(&F);
+    /* ---- qd_tangent_nin */
+    /* t NULL */
+    assert_true(qd_tangent_nin(NULL) == 0);
+    reset(&F);
+    /* ---- qd_tangent_nvar */
+    /* t NULL */
+    assert_true(qd_tangent_nvar(NULL) == 0);
+    reset(&F);
+    /* ---- qd_tangent_nout */
+    /* t NULL */
+    assert_true(qd_tangent_nout(NULL) == 0);
+    reset(&F);
+    /* ---- qd_tangent_eval */
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_eval(NULL, F.d, F.d));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_eval(NULL, NULL, F.d));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_eval(NULL, F.d, NULL));
+    reset(&F);
+    /* ---- qd_tangent_jacobian */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(NULL, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* t NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(F.ctx, NULL, F.d, F.d, F.d));
+    reset(&F);
+    /* in NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(F.ctx, NULL, NULL, F.d, F.d));
+    reset(&F);
+    /* J NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tangent_jacobian(F.ctx, NULL, F.d, F.d, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_version(void **state)
 {
     (void)state;
@@ -6988,6 +7196,7 @@ int main(void)
         cmocka_unit_test(null_canonical),
         cmocka_unit_test(null_certify),
         cmocka_unit_test(null_codegen),
+        cmocka_unit_test(null_conlin),
         cmocka_unit_test(null_constrained),
         cmocka_unit_test(null_contour),
         cmocka_unit_test(null_control),
@@ -7026,6 +7235,7 @@ int main(void)
         cmocka_unit_test(null_status),
         cmocka_unit_test(null_sweep),
         cmocka_unit_test(null_symmetry),
+        cmocka_unit_test(null_tangent),
         cmocka_unit_test(null_version),
         cmocka_unit_test(null_zvc),
     };

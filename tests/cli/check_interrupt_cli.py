@@ -4,7 +4,9 @@
 on stderr and exits 130 (128 + SIGINT); every line of the file is a whole
 row, the last one at t = T.  The signal is sent once the file has rows, so
 the check does not depend on the machine's speed (the runs would take
-hours).
+hours).  `qdot animate` stops the same way and still writes its page, of
+the motion up to T; its signal is sent once the process catches SIGINT
+(/proc/PID/status SigCgt: the run has begun).
 
     python3 tests/cli/check_interrupt_cli.py --build BUILD_DIR
 """
@@ -72,6 +74,44 @@ def interrupt(name, argv, out, min_lines):
               float(m.group(1)) == values[-1][0], "%s vs %r" % (m.group(1), values[-1][0]))
 
 
+def catches_sigint(pid):
+    try:
+        for line in Path("/proc/%d/status" % pid).read_text().splitlines():
+            if line.startswith("SigCgt:"):
+                return int(line.split()[1], 16) & (1 << (signal.SIGINT - 1)) != 0
+    except OSError:
+        pass
+    return False
+
+
+def interrupt_animate(qdot, model, page):
+    name = "animate -o"
+    p = subprocess.Popen([str(qdot), "animate", str(model), "--t-end", "1e7", "--rtol", "1e-12",
+                          "-o", str(page)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                         text=True)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and p.poll() is None and not catches_sigint(p.pid):
+        time.sleep(0.01)
+    if p.poll() is not None:
+        check("%s: still running when interrupted (precondition)" % name, False, p.stderr.read())
+        return
+    p.send_signal(signal.SIGINT)
+    try:
+        _, err = p.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        p.communicate()
+        check("%s: stops after SIGINT" % name, False)
+        return
+    check("%s: exit 130" % name, p.returncode == 130, "exit %d %r" % (p.returncode, err))
+    m = re.search(r"interrupted at t = (\S+?)[;, ]", err)
+    check("%s: says where it was interrupted" % name, m is not None, repr(err))
+    html = page.read_text() if page.exists() else ""
+    check("%s: the page is written" % name, "</html>" in html.lower(), repr(html[-80:]))
+    if m:
+        check("%s: stopped long before the end" % name, 0 < float(m.group(1)) < 1e7, m.group(1))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
@@ -91,6 +131,9 @@ def main():
         interrupt("poincare --out", [qdot, "poincare", EX / "double_pendulum.qd", "--section",
                                      "theta1=0, theta1' > 0", "--crossings", "100000000",
                                      "--t-end", "1e9", "--out", sec], sec, 3)
+        drawn = tmp / "drawn.qd"
+        drawn.write_text(OSC.replace("T = m*x'^2/2", "particle m at (x, 0)"))
+        interrupt_animate(qdot, drawn, tmp / "page.html")
     print("%d passed, %d failed" % (results["passed"], results["failed"]))
     return 1 if results["failed"] else 0
 

@@ -150,11 +150,12 @@ def main():
         p = run(qdot, tmp, ['check', 'm0.qd', '--format', 'json'])
         out = json.loads(p.stdout.decode()) if p.returncode == 3 else {}
         check('check --format json: m = 0 is a no with its pivot', out.get('ok') is False and
-              out.get('reason') == 'mass_not_positive_definite' and out.get('witness') == 0 and
+              out.get('code') == 'mass_not_positive_definite' and out.get('witness') == 0 and
+              out.get('reason') == 'the mass matrix is not positive definite' and
               'not positive definite' in out.get('message', ''), p.stdout.decode()[:300])
         p = run(qdot, tmp, ['check', 'noreal.qd', '--format', 'json'])
         out = json.loads(p.stdout.decode()) if p.returncode == 3 else {}
-        check('check --format json: no real solution', out.get('reason') ==
+        check('check --format json: no real solution', out.get('code') ==
               'constraint_not_real' and out.get('about') == 'a' and out.get('witness', 0) > 0,
               p.stdout.decode()[:300])
         # Kepler: theta is cyclic and its momentum, the angular momentum m r^2 theta', is

@@ -52,8 +52,8 @@ def test_wire_periods(qdot):
     h = 1e-5
 
     def f(x):
-        return ev(eq['f'], dict(base, x=x))
-    M = ev(eq['M'][0], dict(base, x=a))
+        return ev(eq['forcing'], dict(base, x=x))
+    M = ev(eq['mass_matrix'][0], dict(base, x=a))
     check('wire steady', abs(f(a)) < 1e-9, 'f(a) = %g' % f(a))
     w2 = -(f(a + h) - f(a - h)) / (2 * h) / M
     free = 2 * math.pi * math.sqrt(17 * a / (24 * g))

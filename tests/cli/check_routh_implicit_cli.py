@@ -55,7 +55,7 @@ def implicit_json(qdot):
     data = json.loads(out)
     check('json says implicit', data.get('implicit') is True, out)
     check('no effective potential in closed form', data.get('effective_potential') is None, out)
-    M, f = data['equations'][0]['M'][0], data['equations'][0]['f']
+    M, f = data['equations'][0]['mass_matrix'][0], data['equations'][0]['forcing']
     rng = random.Random(1779)
     worst = worst_R = 0.0
     for _ in range(20):

@@ -166,7 +166,7 @@ def test_routh(qdot, d):
         M = m / 2 * a**2 * sp.sin(th)**2 * thd**2 - px**2 / (2 * m) - a * sp.cos(th) * thd * px
         check("Byerly's M = -R", sp.simplify(e(j["R"]) + M) == 0, j["R"])
         check("p_x' = F sin th", sp.simplify(e(j["momentum_rate_values"][0]) - F * sp.sin(th)) == 0, out)
-        Mth = e(j["equations"]["M"][0][0]) if isinstance(j["equations"], dict) else None
+        Mth = e(j["equations"]["mass_matrix"][0][0]) if isinstance(j["equations"], dict) else None
         fd = e(j["f_with_momentum_rates"][0])
         # M th'' = f': m a^2 sin^2 th th'' = -m a^2 sin th cos th th'^2 + a cos th p_x'
         check("reduced equation with p_x'",

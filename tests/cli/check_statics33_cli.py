@@ -157,6 +157,14 @@ def modes_bowl(qdot):
         check('bowl w=%g K0 singular exactly' % w, d['stiffness_matrix'][1][1] == 0, d['stiffness_matrix'])
         re = [abs(e[0]) for e in d['eigenvalues']]
         check('bowl w=%g no real roots' % w, max(re) <= 1e-12, d['eigenvalues'])
+        # the double root s = 0 is exactly 0, not the eigen-solver's round-off (w = 3 printed
+        # s = 2.1e-17 + 0i): zero relative to the largest root, in the library's result
+        zeros = [e for e in d['eigenvalues'] if abs(complex(*e)) < 1e-6]
+        check('bowl w=%g zero roots exactly 0' % w, len(zeros) == 2 and all(e == [0, 0] for e in zeros),
+              d['eigenvalues'])
+        rc, out, err = run(qdot, 'modes', bowl_model(w), '--about', 'x=%r, y=0' % rho)
+        check('bowl w=%g text: s = 0 + 0i twice' % w, out.count('s = 0 + 0i') == 2 and 'e-1' not in out,
+              out + err)
         check('bowl w=%g borderline' % w, d['stable'] is None, d['verdict'])
         im = max(e[1] for e in d['eigenvalues'])
         check('bowl w=%g frequency' % w, close(im, w * math.sqrt(1 + 3 * c * c), 1e-9), im)

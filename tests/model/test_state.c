@@ -236,7 +236,7 @@ static void nulls(void **state) {
 }
 
 /* A search box: ranges by name, in the parameters (theta = -pi:pi, r =
- * 0:4 r0 = 0:1), at the slots of the coordinates; the rest untouched; an
+ * 0:4 r0 = 0:1; A..B the same), at the slots of the coordinates; the rest untouched; an
  * empty range, a second range of one name and a plain value are located. */
 static void ranges(void **state) {
     fx *f = *state;
@@ -252,6 +252,11 @@ static void ranges(void **state) {
                                           lo, hi), QD_OK);
     assert_true(lo[0] == -PI && hi[0] == PI && lo[1] == 0 && hi[1] == 1);
     assert_true(given[0] && given[1] && !given[2] && lo[2] == -7);
+    /* the old spelling A..B reads the same box (issue 31: A:B is the one
+     * written, A..B still read) */
+    assert_int_equal(qd_state_read_ranges(f->ctx, f->m, &f->st, "theta=-pi/2..pi/2, r=0..4*r0",
+                                          &o, lo, hi), QD_OK);
+    assert_true(lo[0] == -PI / 2 && hi[0] == PI / 2 && lo[1] == 0 && hi[1] == 1);
     const char *empty = "theta = 1:0";
     assert_int_not_equal(qd_state_read_ranges(f->ctx, f->m, &f->st, empty, &o, lo, hi), QD_OK);
     assert_non_null(strstr(qd_ctx_message(f->ctx), "empty"));

@@ -195,10 +195,11 @@ static void test_json(void **state) {
     unload(&f);
 }
 
-static void progress(void *data, double t) {
+static int progress(void *data, double t) {
     double *last = data;
     assert_true(t >= *last); /* rows in time order */
     *last = t;
+    return 0; /* go on */
 }
 
 static void test_record_html(void **state) {

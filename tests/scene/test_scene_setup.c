@@ -11,7 +11,10 @@
  *     trace is the point named; named positions weigh 1;
  *   - the energy is kept (a conservative system): the frames' E - E(t0)
  *     below the run's tolerance;
- *   - a word naming no point refused with the option field it is in.
+ *   - a word naming no point refused with the option field it is in;
+ *   - a progress callback that asks to stop (a Ctrl-C) ends the run after
+ *     a whole row: the frames cover [0, the stop], the first row past it,
+ *     and are still the motion (the rods keep their lengths).
  */
 #include <math.h>
 #include <stdarg.h>
@@ -101,6 +104,45 @@ static void test_double_pendulum(void **state) {
     unload(&f);
 }
 
+typedef struct stopper {
+    double at, last;
+    int calls;
+} stopper;
+
+static int stop_at(void *data, double t) {
+    stopper *s = data;
+    s->calls++;
+    s->last = t;
+    return t >= s->at;
+}
+
+static void test_stopped_by_progress(void **state) {
+    (void)state;
+    fix f = load();
+    qd_scene_spec sp = {.title = "pendulum"};
+    qd_scene_setup *sc = qd_scene_setup_new(f.ctx, f.set, f.m, &sp);
+    assert_non_null(sc);
+    qd_sim_setup_opts so = {.t_end = "10", .rtol = "1e-10", .atol = "1e-12"};
+    qd_sim_opts o;
+    assert_int_equal(qd_sim_setup_options(f.set, &so, &o), QD_OK);
+    stopper s = {.at = 1};
+    assert_int_equal(qd_scene_setup_record(sc, &o, stop_at, &s, NULL), QD_OK);
+    const qd_scene *v = qd_scene_setup_scene(sc);
+    double t_last = v->fr->t[v->fr->nframes - 1];
+    /* rows come at the frames' spacing: the stop is the first row at or past 1 */
+    double frame = 10.0 / (double)(qd_scene_nframes(0, 10) - 1);
+    assert_true(s.last >= 1 && s.last < 1 + frame + 1e-12);
+    assert_true(t_last <= s.last + 1e-12 && t_last > 1 - frame);
+    assert_true(v->fr->nframes > 2 && v->fr->nframes < qd_scene_nframes(0, 10));
+    for (size_t k = 0; k < v->fr->nframes; k++) {
+        const double *p = v->fr->pos + 6 * k;
+        assert_true(fabs(hypot(p[0], p[1]) - 1) < 1e-9);
+        assert_true(fabs(hypot(p[3] - p[0], p[4] - p[1]) - 2) < 1e-9);
+    }
+    qd_scene_setup_free(sc);
+    unload(&f);
+}
+
 static void refused(const char *const *draws, const char *const *traces,
                     const char *const *springs, const char *field) {
     fix f = load();
@@ -124,6 +166,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_double_pendulum),
         cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_stopped_by_progress),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
