@@ -73,6 +73,7 @@ bench:
 	./bench/run_kernel.sh build-bench
 	/usr/bin/python3 bench/run_pendulum.py build-bench
 	/usr/bin/python3 bench/run_hamiltonian.py build-bench
+	/usr/bin/python3 bench/run_modes.py build-bench
 	/usr/bin/python3 bench/run_jit.py build-bench
 	/usr/bin/python3 bench/run_rhs.py build-bench
 	/usr/bin/python3 bench/run_simulate.py build-bench

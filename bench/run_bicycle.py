@@ -16,6 +16,11 @@ machine down):
                   at a state (--at: the numbers; the text of the unsimplified
                   DAG parts is not the point)
   check           qdot check on the model in speeds and in multiplier form
+  linearize       qdot linearize on examples/whipple_bicycle.qd (multiplier
+                  form, the state manifold's path) at v = 2, 4, 5, 6, each a
+                  whole derivation; their sum against the goal < 10 s (the
+                  eigenvalues are tests/cli/check_whipple_cli.py's to check);
+                  and --scan v=0:10
   chain           bench/chain_model.py's chain of --links bodies (3 angles
                   each, spherical joints): qdot simulate 10 s at rtol 1e-10,
                   derivation included; the energy error simulate reports
@@ -46,6 +51,7 @@ KANE3 = Path('/usr/lib/python3/dist-packages/sympy/physics/mechanics/tests/test_
 PYTHON = '/usr/bin/python3'
 LIMIT_AS = 3_000_000_000
 TIMEOUT = 120
+LIN_SPEEDS = (2, 4, 5, 6)
 STATE = 'x=0,y=0,q1=0.1,q2=0.2,q3=0.3,q4=0,q5=0.4,q6=0,u2=0.5,u3=3,u5=0.2'
 MULT_STATE = ("x=0,y=0,q1=0.1,q2=0.2,q3=0.3,q4=0,q5=0.4,q6=0,x'=0.9,y'=0.09,q1'=-0.37,"
               "q2'=0.5,q3'=3,q4'=0.01,q5'=0.2,q6'=2.8")
@@ -135,6 +141,12 @@ def main():
         work.append(('chain of %d bodies: derive + simulate 10 s, rtol 1e-10' % a.links,
                      [qdot, 'simulate', str(chain), '--t-end', '10', '--rtol', '1e-10',
                       '--dt', '10'], (2.0, None)))
+        bike = str(ROOT / 'examples' / 'whipple_bicycle.qd')
+        for v in LIN_SPEEDS:
+            work.append(('bicycle: derive + linearize (multiplier form), v = %g' % v,
+                         [qdot, 'linearize', bike, '--set', 'v=%g' % v], None))
+        work.append(('bicycle: linearize --scan v=0:10 (101 speeds, weave and capsize)',
+                     [qdot, 'linearize', bike, '--scan', 'v=0:10'], None))
         for name, cmd, goal in work:
             print('running %s' % name, file=sys.stderr, flush=True)
             r = measure(cmd, a.reps)
@@ -154,6 +166,10 @@ def main():
                 if goal and goal[1] and r['rss'] > goal[1]:
                     note += ' (goal < %d MB: missed)' % goal[1]
             rows.append((name, r.get('wall'), r.get('rss'), note))
+    lin = [w for n, w, _, _ in rows if n.startswith('bicycle: derive + linearize')]
+    if len(lin) == len(LIN_SPEEDS) and None not in lin:
+        rows.append(('bicycle: derive and linearize at four speeds, in all', sum(lin), None,
+                     '' if sum(lin) < 10 else '(goal < 10 s: missed)'))
     if not a.no_sympy:
         print('running SymPy KanesMethod (test_kane3)', file=sys.stderr, flush=True)
         r = sympy_kane()

@@ -24,7 +24,7 @@ typedef struct check_args {
 
 static const cli_opt check_opts[] = {
     {"--format", NULL, CLI_CHOICE, offsetof(check_args, format), "F",
-     "the summary as text or as JSON (with \"ok\", and \"reason\" and \"witness\" for a no)",
+     "the summary as text or as JSON (with \"ok\", and \"code\", \"reason\" and \"witness\" for a no)",
      cli_formats_text_json, NULL},
     {0},
 };

@@ -78,8 +78,9 @@ static int manifold(qd_ctx *ctx, const lin_args *a, cli_lin_run *r, int fmt) {
     else if (rc == QD_EXIT_OK &&
              qd_conlin_about(ctx, r->e, r->c.mf.model, &r->pt, a->independent, &c) != QD_OK)
         rc = cli_state_diag(ctx, "--independent", a->independent);
-    else if (rc == QD_EXIT_OK && a->lqr)
-        rc = cli_lqr_design(ctx, &c.ss, a->lqr, &lqr);
+    else if (rc == QD_EXIT_OK && a->lqr) /* on the core: the ignorable states' s = 0 */
+        rc = qd_conlin_keep_core(ctx, &c) ? cli_diag_ctx(ctx)
+                                          : cli_lqr_design(ctx, &c.ss, a->lqr, &lqr);
     if (rc == QD_EXIT_OK && !a->scan)
         rc = cli_emit_status(ctx, qd_conlin_render(ctx, &c, a->lqr ? &lqr : NULL, fmt, &b), &b,
                              "state-space form");

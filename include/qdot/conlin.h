@@ -32,7 +32,9 @@
  * coordinates, then pivots of the velocity constraints' coefficients A,
  * taken first among the velocities of coordinates that occur in neither M
  * nor f (a contact point, a heading, a wheel's angle), then the others,
- * and last those the point gives a value other than 0: shape velocities
+ * and last those the point gives a value other than 0 or the model's
+ * `speeds` define (u2 = q2': a model in speeds keeps them independent):
+ * shape velocities
  * (lean and steer rates) and the rates the caller set (a wheel's spin)
  * stay independent where they can.  A dependent state the point gave
  * another value is solved all the same: qd_conlin_print names it.
@@ -82,8 +84,9 @@ typedef struct qd_conlin {
 /* The linearization of e (derived from m, with constraints) about the
  * point pt->st (its coordinates and velocities; t, the parameters at their
  * values; m's inputs at 0).  independent: "x, q2, q5'" (coordinates and
- * velocities of e, n - nhol and n - ncon of them, by commas or spaces), or
- * NULL to choose.  QD_ERR_ARG, located in independent, for a name that is
+ * velocities of e, n - nhol and n - ncon of them, by commas or spaces; or
+ * the n - nhol coordinates alone, the velocities then chosen), or NULL to
+ * choose.  QD_ERR_ARG, located in independent, for a name that is
  * no coordinate or velocity of e, a count other than those, or a choice
  * whose dependent states the constraints do not determine there (the
  * message says which); QD_ERR_ARG when Newton does not reach the manifold
@@ -97,9 +100,20 @@ QD_API qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m
                                  qd_conlin *out);
 QD_API void qd_conlin_free(qd_conlin *c);
 
-/* pt->st's coordinates and velocities from m's `initial`, then from about
- * ("q=V, q'=V", NULL: none; qd_state_read, errors located in about).
- * QD_ERR_ARG for about naming t, a parameter or an input. */
+/* c->ss replaced by the state-space form over the core states alone (A's
+ * rows and columns and B's rows of the states not ignorable), analysed
+ * again: what an LQR design takes, the ignorable states' zero modes being
+ * out of every input's reach and acting on nothing (`linearize --lqr`).
+ * The notes (qd_conlin_print) still name every state.  QD_ERR_NOMEM, the
+ * errors of the analysis (c unchanged then). */
+QD_API qd_status qd_conlin_keep_core(qd_ctx *ctx, qd_conlin *c);
+
+/* pt->st's coordinates and velocities from m's `initial` (a speed defined
+ * as one velocity, `speeds u3 = q3'`, gives that velocity its initial
+ * value), then from about ("q=V, q'=V", NULL: none; qd_state_read, errors
+ * located in about).  QD_ERR_ARG for about naming t, a parameter or an
+ * input; QD_ERR_UNSUPPORTED, without about, for a speed with an initial
+ * value that is not one velocity (u = r*pr': give the velocities). */
 QD_API qd_status qd_conlin_point(qd_ctx *ctx, const qd_model *m, qd_linpoint *pt,
                                  const char *about);
 
@@ -130,7 +144,8 @@ typedef struct qd_conlin_scan {
  * point follows it; about and independent as for qd_conlin_point and
  * qd_conlin_about, pt refilled), and each value between two samples where
  * the core turns unstable or back (its margin through 1e-10 of its
- * largest |s|), bisected to 1e-10 of |b - a|.  A parameter the
+ * largest |s|), bisected to 1e-10 of the samples' spacing (on the sign of
+ * the margin itself when the stable side is inside the left half-plane).  A parameter the
  * model assumes positive (qd_symbol_is_positive: its value was when the
  * model was read) starts just above a = 0 (out->nudged) and refuses a < 0.  m's parameter is
  * given back its value.  QD_ERR_ARG for an unknown parameter, a >= b,

@@ -156,7 +156,8 @@ QD_API qd_status qd_constrained_indep_read(qd_ctx *ctx, const qd_eom *e, const c
  * conservative system each mode "mode K: w^2 = ..., w = ... rad/s, period =
  * ... s" (w and the period when w^2 > 0) and its shape over the
  * independent coordinates, else the eigenvalues; the verdict.  JSON: the
- * head, "conservative", "M", "C", "G", "K" (the reduced r*r matrices), for
+ * head, "conservative", "mass_matrix", "damping_matrix", "gyroscopic_matrix",
+ * "stiffness_matrix" (the reduced r*r matrices M, C, G, K), for
  * a conservative system "modes" (each {"omega2", "omega" when omega2 >= 0,
  * "shape": name to number}), the eigenvalues and the verdict. */
 QD_API qd_status qd_constrained_modes_print(qd_ctx *ctx, const qd_eom *e,

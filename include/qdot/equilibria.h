@@ -69,7 +69,7 @@ typedef struct qd_equilibria {
                                 (-pi, pi]) */
     bool continuum;          /* some equilibria are not isolated (a singular Jacobian
                                 with a null direction along which F stays 0) */
-    const char *method;      /* "exact", "linear" (affine equations: one solve), "newton" or "multistart" */
+    const char *method;      /* "exact", "linear" (affine: one solve), "newton", "multistart", "none" */
 } qd_equilibria;
 
 typedef struct qd_equilibria_opts {
@@ -166,9 +166,9 @@ QD_API void qd_equilibrium_choice_free(qd_equilibrium_choice *c);
  * note or a JSON "reason".  Static storage. */
 QD_API const char *qd_eq_chosen_name(qd_eq_chosen c);
 /* Its machine code, for programs (a JSON "code" next to that "reason"):
- * "nearest_minimum", "lowest_minimum", "initial_state", "newton_from_initial",
- * "first_listed" (the QD_EQ_CHOSEN_ names in lower case); "unknown"
- * outside the enum.  Static storage. */
+ * "nearest_minimum", "lowest_minimum", "newton_from_initial",
+ * "first_listed", "initial_state" (the QD_EQ_CHOSEN_ names in lower case);
+ * "unknown" outside the enum.  Static storage. */
 QD_API const char *qd_eq_chosen_code(qd_eq_chosen c);
 
 /* Coordinate j (below the equilibria's n) of p appended to out: its exact

@@ -102,6 +102,15 @@ QD_API qd_status qd_print_sympy_functions(qd_ctx *ctx, size_t n, const qd_expr *
 QD_API qd_status qd_print_c_block(qd_ctx *ctx, size_t n, const qd_expr *const *exprs,
                            const char *const *lhs, qd_buf *out);
 
+/* `qdot tour`: a one-minute tour of the kernel on the double pendulum
+ * (positions read from text, velocities by d/dt, T expanded and simplified,
+ * the mass matrix m2 l1 l2 cos(theta1 - theta2) by differentiation, its
+ * LaTeX, SymPy and C forms, its value from a compiled program), appended to
+ * out; it makes its symbols in ctx (coordinates theta1, theta2, parameters
+ * m1, m2, l1, l2, g).  QD_OK, or the kernel's error recorded in ctx
+ * (QD_ERR_NOMEM). src/sym/tour.c. */
+QD_API qd_status qd_tour_print(qd_ctx *ctx, qd_buf *out);
+
 /* The C identifier qdot uses for a symbol (theta' -> theta_d). */
 QD_API qd_status qd_c_name(const qd_expr *sym, qd_buf *out);
 

@@ -44,6 +44,8 @@
 #include "orbit.h"
 #include "statespace.h"
 #include "constrained.h"
+#include "tangent.h"      /* issue 37: forward-mode Jacobians of compiled programs */
+#include "conlin.h"       /* issue 37: linearization of constrained systems */
 #include "json.h"
 #include "simsetup.h"
 #include "render.h"     /* issue 31: printers of whole results */

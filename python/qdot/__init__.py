@@ -22,13 +22,13 @@ from .sim import Result, Table, Rhs
 from .runs import Animation
 from .control import StateSpace, Lqr, lqr
 from .relativity import lorentz, proper_time, collide
-from .forms import QuadraticForm, quadratic_form
+from .forms import QuadraticForm, quadratic_form, tour
 from .field import Field
 from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
            "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
            "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
-           "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Field",
+           "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "tour", "Field",
            "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr"]
 from ._lib import VERSION as __version__

@@ -1,6 +1,7 @@
 # python/qdot/forms.py - quadratic forms: Lagrange's reduction to a sum of
 # squares and Sylvester's inertia (qd_qform_reduce; Desloge App. 27).
-"""qdot.quadratic_form(expr, variables): the reduction of a quadratic form."""
+"""qdot.quadratic_form(expr, variables): the reduction of a quadratic form;
+qdot.tour(): the kernel's tour."""
 
 import json
 
@@ -75,5 +76,21 @@ def quadratic_form(expr, variables):
             return out
         finally:
             lib.qd_qform_free(f)
+    finally:
+        lib.qd_ctx_free(ctx)
+
+
+def tour():
+    """The text of `qdot tour` (qd_tour_print): the kernel on the double
+    pendulum, from the bobs' positions to the mass matrix's compiled value."""
+    ctx = lib.qd_ctx_new()
+    if not ctx:
+        raise MemoryError("qdot: out of memory")
+    try:
+        buf = new("qd_buf")
+        if lib.qd_tour_print(ctx, buf) != 0:
+            lib.qd_buf_free(buf)
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        return buf_text(buf)
     finally:
         lib.qd_ctx_free(ctx)

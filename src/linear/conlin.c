@@ -21,6 +21,8 @@ extern void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int
                    const int *ldb, int *info);
 
 #define NEWTON_ITERS 60
+
+static const qd_expr *speed_velocity(const qd_model *m, size_t i);
 #define IGNORABLE_TOL 1e-13
 
 /* What one linearization works with.  The tangents' inputs are
@@ -28,6 +30,7 @@ extern void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int
 typedef struct cl_work {
     qd_ctx *ctx;
     const qd_eom *e;
+    const qd_model *m;
     size_t n, nu, nc, nh, d;     /* d = nh + nc constraint functions */
     size_t nin;
     const qd_expr **in;
@@ -134,20 +137,26 @@ static qd_status con_eval(cl_work *w) {
  * rows[0..nr) of Cz: the pivots taken, the columns of class 0 before those
  * of class 1 (cls NULL: one class), into dep (appended at *nd).  Returns
  * the rank reached.  forced: columns taken first whatever their size. */
+/* pivots' scratch: a flag per column, a vector per row, the basis Q. */
+typedef struct piv_scratch {
+    bool *used;
+    double *v, *Q;
+} piv_scratch;
+
 static size_t pivots(const cl_work *w, const size_t *rows, size_t nr, const size_t *cols,
-                     size_t ncols, const int *cls, size_t *dep, size_t *nd, double *Q) {
+                     size_t ncols, const int *cls, size_t *dep, size_t *nd,
+                     const piv_scratch *sc) {
+    double *Q = sc->Q;
     size_t nv = 2 * w->n + w->nu, rank = 0;
     double scale = 0;
     for (size_t r = 0; r < nr; r++)
         for (size_t c = 0; c < ncols; c++)
             scale = fmax(scale, fabs(w->Cz[rows[r] * nv + cols[c]]));
-    bool *used = calloc(ncols + 1, 1);
-    double *v = malloc((nr + 1) * sizeof *v);
-    if (!used || !v || scale == 0) {
-        free(used);
-        free(v);
+    bool *used = sc->used;
+    double *v = sc->v;
+    memset(used, 0, ncols * sizeof *used);
+    if (scale == 0)
         return 0;
-    }
     for (int pass = 0; pass < 4 && rank < nr; pass++)
         for (; rank < nr;) {
             size_t best = SIZE_MAX;
@@ -190,8 +199,6 @@ static size_t pivots(const cl_work *w, const size_t *rows, size_t nr, const size
                 Q[rank * nr + r] = v[r] / bn;
             rank++;
         }
-    free(used);
-    free(v);
     return rank;
 }
 
@@ -215,18 +222,21 @@ static int cmp_size(const void *a, const void *b) {
  * coordinates M and f do not involve, then the others, and last the
  * velocities the point gives a value other than 0 (the rolling disc's spin:
  * what the caller set stays set). */
-static qd_status choose(cl_work *w, size_t *dep) {
-    size_t n = w->n, nd = 0, d = w->d;
-    size_t *rows = calloc(d + 1, sizeof *rows), *cols = calloc(2 * n + 1, sizeof *cols);
-    int *cls = calloc(2 * n + 1, sizeof *cls);
-    double *Q = calloc(d * (d + 1) + 1, sizeof *Q);
-    qd_status st = rows && cols && cls && Q ? QD_OK : QD_ERR_NOMEM;
+static qd_status choose(cl_work *w, size_t *dep, bool coords_given) {
+    size_t n = w->n, nd = coords_given ? w->nh : 0, d = w->d;
+    size_t *rows = qd__calloc(w->ctx, d + 2 * n + 2, sizeof *rows), *cols = rows + d + 1;
+    int *cls = qd__calloc(w->ctx, 2 * n + 1, sizeof *cls);
+    double *Q = qd__calloc(w->ctx, d * (d + 1) + d + 1, sizeof *Q);
+    bool *used = qd__calloc(w->ctx, 2 * n + 1, sizeof *used);
+    piv_scratch sc = {used, Q ? Q + d * (d + 1) : NULL, Q};
+    qd_status st = rows && cls && Q && used ? QD_OK : QD_ERR_NOMEM;
     if (st == QD_OK) {
         for (size_t r = 0; r < w->nh; r++)
             rows[r] = r;
         for (size_t j = 0; j < n; j++)
             cols[j] = j;
-        if (w->nh && pivots(w, rows, w->nh, cols, n, NULL, dep, &nd, Q) < w->nh) {
+        if (w->nh && !coords_given &&
+            pivots(w, rows, w->nh, cols, n, NULL, dep, &nd, &sc) < w->nh) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the holonomic constraints are not independent at "
                          "the point (d phi/dq has rank below %zu): give another point", w->nh);
             st = QD_ERR_ARG;
@@ -240,9 +250,12 @@ static qd_status choose(cl_work *w, size_t *dep) {
             for (size_t k = 0; k < w->nh; k++)
                 depq = depq || dep[k] == j;
             cols[j] = n + j;
-            cls[j] = depq ? 0 : w->val[n + j] != 0 ? 3 : occurs(w->e, w->e->q[j]) ? 2 : 1;
+            bool speed = false;
+            for (size_t i = 0; i < qd_model_nspeeds(w->m); i++)
+                speed = speed || speed_velocity(w->m, i) == w->e->qd[j];
+            cls[j] = depq ? 0 : w->val[n + j] != 0 || speed ? 3 : occurs(w->e, w->e->q[j]) ? 2 : 1;
         }
-        if (pivots(w, rows, w->nc, cols, n, cls, dep, &nd, Q) < w->nc) {
+        if (pivots(w, rows, w->nc, cols, n, cls, dep, &nd, &sc) < w->nc) {
             qd_ctx_error(w->ctx, QD_ERR_ARG, "the velocity constraints are not independent at "
                          "the point (their coefficients have rank below %zu)", w->nc);
             st = QD_ERR_ARG;
@@ -250,17 +263,17 @@ static qd_status choose(cl_work *w, size_t *dep) {
     }
     if (st == QD_OK)
         qsort(dep, d, sizeof *dep, cmp_size);
-    free(rows);
-    free(cols);
-    free(cls);
-    free(Q);
+    qd__free(rows);
+    qd__free(cls);
+    qd__free(Q);
+    qd__free(used);
     return st;
 }
 
 /* "x, q2, q5'": the independent states named, as the complement into dep. */
-static qd_status read_indep(cl_work *w, const char *text, size_t *dep) {
+static qd_status read_indep(cl_work *w, const char *text, size_t *dep, bool *coords_only) {
     size_t n = w->n, nq = 0, nv = 0;
-    bool *named = calloc(2 * n + 1, 1);
+    bool *named = qd__calloc(w->ctx, 2 * n + 1, sizeof *named);
     if (!named)
         return QD_ERR_NOMEM;
     qd_status st = QD_OK;
@@ -296,17 +309,19 @@ static qd_status read_indep(cl_work *w, const char *text, size_t *dep) {
                 nv++;
         }
     }
-    if (st == QD_OK && (nq != n - w->nh || nv != n - w->nc)) {
+    *coords_only = st == QD_OK && nv == 0 && nq == n - w->nh;
+    if (st == QD_OK && !*coords_only && (nq != n - w->nh || nv != n - w->nc)) {
         qd_ctx_error(w->ctx, QD_ERR_ARG, "the independent states are %zu coordinates and %zu "
-                     "velocities (%zu coordinates, %zu holonomic constraints, %zu in all), not "
-                     "%zu and %zu", n - w->nh, n - w->nc, n, w->nh, w->nc, nq, nv);
+                     "velocities, or the coordinates alone (%zu coordinates, %zu holonomic "
+                     "constraints, %zu in all), not %zu and %zu", n - w->nh, n - w->nc, n,
+                     w->nh, w->nc, nq, nv);
         qd_ctx_error_at(w->ctx, text, 0, len);
         st = QD_ERR_ARG;
     }
-    for (size_t k = 0, nd = 0; st == QD_OK && k < 2 * n; k++)
+    for (size_t k = 0, nd = 0; st == QD_OK && k < (*coords_only ? n : 2 * n); k++)
         if (!named[k])
-            dep[nd++] = k;
-    free(named);
+            dep[nd++] = k; /* coordinates alone: their velocities are chosen (choose) */
+    qd__free(named);
     return st;
 }
 
@@ -620,6 +635,7 @@ static qd_status setup(cl_work *w, const qd_eom *e, const qd_model *m, const qd_
                        qd_conlin *c) {
     size_t n = e->n;
     w->e = e;
+    w->m = m;
     w->n = n;
     w->nc = e->ncon;
     w->nu = qd_model_ninputs(m);
@@ -710,10 +726,13 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     qd_status st = setup(&w, e, m, pt, out);
     size_t n = e->n, nx = out->nx, nv = 2 * n + w.nu;
     double *dF = NULL, *g = NULL, *T = NULL;
+    bool coords_only = false;
     if (st == QD_OK)
-        st = independent ? read_indep(&w, independent, out->dep) : con_eval(&w);
-    if (st == QD_OK && !independent)
-        st = choose(&w, out->dep);
+        st = independent ? read_indep(&w, independent, out->dep, &coords_only) : QD_OK;
+    if (st == QD_OK && (!independent || coords_only))
+        st = con_eval(&w);
+    if (st == QD_OK && (!independent || coords_only))
+        st = choose(&w, out->dep, coords_only);
     for (size_t k = 0; st == QD_OK && k < 2 * n; k++)
         out->given[k] = w.val[k];
     if (st == QD_OK)
@@ -750,12 +769,80 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     return st;
 }
 
+/* A speed defined as one velocity (u2 = q2'): that velocity, else NULL. */
+static const qd_expr *speed_velocity(const qd_model *m, size_t i) {
+    const qd_expr *d = qd_model_speed_definition(m, i);
+    return d && qd_expr_kind(d) == QD_SYMBOL && qd_symbol_order(d) == 1 ? d : NULL;
+}
+
+/* The speeds' initial values (`initial u3 = v/rr`) into their velocities. */
+static qd_status speeds_initial(qd_ctx *ctx, const qd_model *m, qd_state *st, bool about) {
+    for (size_t i = 0; i < qd_model_nspeeds(m); i++) {
+        const qd_expr *u0 = qd_model_speed_initial(m, i), *v = speed_velocity(m, i);
+        size_t k = v ? qd_state_find(st, v) : st->n;
+        if (u0 && k < st->n)
+            st->vals[k] = qd_number_value(u0);
+        else if (u0 && !about) {
+            qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "the speed %s is not one velocity, so its "
+                         "initial value does not give the point: give the velocities with "
+                         "--about", qd_expr_name(qd_model_speed(m, i)));
+            return QD_ERR_UNSUPPORTED;
+        }
+    }
+    return QD_OK;
+}
+
 qd_status qd_conlin_point(qd_ctx *ctx, const qd_model *m, qd_linpoint *pt, const char *about) {
     if (!ctx || !m || !pt)
         return QD_ERR_ARG;
     qd_status st = qd_state_initial(ctx, m, &pt->st);
+    if (st == QD_OK)
+        st = speeds_initial(ctx, m, &pt->st, about != NULL);
     qd_state_read_opts o = {.refuse = QD_STATE_TIME | QD_STATE_PARAMS | QD_STATE_EXTRA};
     if (st == QD_OK && about)
         st = qd_state_read(ctx, m, &pt->st, about, &o);
     return st;
+}
+
+qd_status qd_conlin_keep_core(qd_ctx *ctx, qd_conlin *c) {
+    if (!ctx || !c || !c->ss.A)
+        return QD_ERR_ARG;
+    const qd_statespace *o = &c->ss;
+    size_t m = c->ncore, nu = o->nu, nx = o->nx;
+    qd_statespace s = {.nx = m, .nu = nu};
+    s.states = qd__calloc(ctx, m + nu + 1, sizeof *s.states);
+    s.outputs = qd__calloc(ctx, 1, sizeof *s.outputs);
+    s.A = qd__calloc(ctx, m * m + m * nu + 2 * m + 1, sizeof *s.A);
+    if (!s.states || !s.outputs || !s.A) {
+        qd_statespace_free(&s);
+        return QD_ERR_NOMEM;
+    }
+    s.inputs = s.states + m;
+    s.B = s.A + m * m;
+    s.C = s.D = s.B + m * nu;
+    s.xdot0 = s.C;
+    s.y0 = s.xdot0 + m;
+    for (size_t i = 0, r = 0; i < nx; i++) {
+        if (c->ignorable[i])
+            continue;
+        s.states[r] = o->states[i];
+        s.n += c->indep[i] < c->n;
+        s.xdot0[r] = o->xdot0[i];
+        for (size_t j = 0, k = 0; j < nx; j++)
+            if (!c->ignorable[j])
+                s.A[r * m + k++] = o->A[i * nx + j];
+        for (size_t u = 0; u < nu; u++)
+            s.B[r * nu + u] = o->B[i * nu + u];
+        r++;
+    }
+    for (size_t u = 0; u < nu; u++)
+        s.inputs[u] = o->inputs[u];
+    qd_status st = qd__lin_ss_analyse(ctx, &s);
+    if (st != QD_OK) {
+        qd_statespace_free(&s);
+        return st;
+    }
+    qd_statespace_free(&c->ss);
+    c->ss = s;
+    return QD_OK;
 }

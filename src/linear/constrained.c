@@ -56,8 +56,9 @@ static qd_status supported(qd_ctx *ctx, const qd_eom *e) {
         const qd_con *c = &e->con[k];
         if (c->kind != QD_CON_HOLONOMIC) {
             qd_ctx_error(ctx, QD_ERR_UNSUPPORTED,
-                         "constraint %s constrains velocities (%s): equilibria, modes and "
-                         "linearization on the manifold take holonomic constraints only", c->name,
+                         "constraint %s constrains velocities (%s): equilibria and modes on "
+                         "the manifold take holonomic constraints only (`qdot linearize` takes "
+                         "it: qd_conlin_about)", c->name,
                          c->kind == QD_CON_NONHOLONOMIC ? "nonholonomic" : "Pfaffian");
             return QD_ERR_UNSUPPORTED;
         }

@@ -130,7 +130,9 @@ static void modes_json(qd_json *j, const qd_eom *e, const qd_constrained_linear 
     qd_json_key(j, "conservative");
     qd_json_bool(j, res->conservative);
     const double *mats[] = {c->lin.M, c->lin.C, c->lin.G, c->lin.K};
-    const char *keys[] = {"M", "C", "G", "K"};
+    /* the names plain modes uses (until issue 31 "M", "C", "G", "K") */
+    const char *keys[] = {"mass_matrix", "damping_matrix", "gyroscopic_matrix",
+                          "stiffness_matrix"};
     for (int i = 0; i < 4; i++)
         qd_json_matrix(j, keys[i], c->r, c->r, mats[i]);
     if (res->conservative) {

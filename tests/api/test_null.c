@@ -697,6 +697,13 @@ static void null_conlin(void **state)
     /* c NULL */
     qd_conlin_free(NULL);
     reset(&F);
+    /* ---- qd_conlin_keep_core */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_keep_core(NULL, NULL));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_keep_core(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_conlin_point */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_point(NULL, F.model, (qd_linpoint *)(void *)F.blob, "q"));
@@ -4411,6 +4418,13 @@ static void null_print(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_print_c_block(F.ctx, 1, (const qd_expr * const *)F.e, (const char * const *)F.names, NULL));
+    reset(&F);
+    /* ---- qd_tour_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tour_print(NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_tour_print(F.ctx, NULL));
     reset(&F);
     /* ---- qd_c_name */
     /* sym NULL */

@@ -92,6 +92,8 @@ def main():
                 continue
             r = json.loads(p.stdout)
             check(r['choice']['reason'].startswith(reason), 'reason %r' % r['choice'])
+            check(r['choice'].get('code') == ('initial_state' if initial else 'lowest_minimum'),
+                  'code %r' % r['choice'])
             w = sorted(r['frequencies'])
             check(len(w) == N, '%d frequencies' % len(w))
             err = max(abs(a - b) for a, b in zip(w, want))

@@ -25,7 +25,13 @@ that the paper's A = [0 I; -M^-1 (g K0 + v^2 K2)  -v M^-1 C1].  Checked:
      paper's 4.2924 and 6.0243 m/s, sec. 5), a complex pair at the weave
      speed and a real eigenvalue at capsize;
   4. `--lqr` on a model without inputs, and a wrong `--independent`, are
-     clear errors (exit 2).
+     clear errors (exit 2);
+  5. the same bicycle in generalized speeds (tests/speeds/whipple_speeds.qd):
+     its speeds' velocities independent, the point from `initial u3 = v/rr`,
+     the paper's eigenvalues at v = 5;
+  6. a steer torque input: B = M^-1 (0, 1) (the paper's eq. 5.3 with the
+     torque on the right), and `--lqr` on the core closes the loop;
+  7. `simulate` at v = 5 from a lean rate: the lean dies out, T + V kept.
 
 Usage: check_whipple_cli.py --build BUILD_DIR
 """
@@ -176,6 +182,67 @@ def main():
                'scan: capsize speed %.9f (paper\'s A %.9f, paper 6.0243), a real eigenvalue'
                % (capsize['value'], want[1]), str(capsize))
     report(s.get('starts_above_zero') is True, 'scan: v assumed positive, starts above 0')
+
+    # 5. the same bicycle written in generalized speeds (tests/speeds/whipple_speeds.qd:
+    # `speeds u2 = q2', u3 = q3', u5 = q5'`, `initial u3 = v/rr` with a lean rate u2 = 0.5,
+    # which --about sets back to 0): the speeds' velocities stay independent, and A has the
+    # same eigenvalues as the paper's at v = 5
+    p = subprocess.run([qdot, 'linearize', str(ROOT / 'tests' / 'speeds' / 'whipple_speeds.qd'),
+                        '--about', "q2' = 0", '--format', 'json'], capture_output=True,
+                       text=True, timeout=600)
+    d = json.loads(p.stdout) if p.returncode == 0 else {}
+    core = [complex(a, b) for a, b in d.get('core_eigenvalues', [])]
+    report(p.returncode == 0 and d['point']["q3'"] == 5 / 0.3 and
+           all(s in d['independent'] for s in ("q2'", "q3'", "q5'")) and
+           same_eigs(core, np.linalg.eigvals(paper_A(5.0)), 1e-10),
+           'in speeds: u3 = v/rr from initial, the speeds independent, the paper\'s eigenvalues',
+           '%s %s' % (core, p.stderr))
+
+    # 6. a steer torque Td (Q[q5] = Td): B's lean/steer rows are the paper's M^-1 (0, 1)
+    # (up to the steer's sign, SymPy's frames against the paper's), the core is
+    # controllable, and --lqr (designed on the core: the ignorable states' s = 0 are out
+    # of reach) closes the loop with every Re s < 0
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        text = MODEL.read_text().replace('parameters mfork = 4',
+                                         'inputs Td\nQ[q5] = Td\nparameters mfork = 4')
+        tq = Path(tmp) / 'torque.qd'
+        tq.write_text(text)
+        p = subprocess.run([qdot, 'linearize', str(tq), '--independent', INDEP, '--format',
+                            'json'], capture_output=True, text=True, timeout=600)
+        d = json.loads(p.stdout) if p.returncode == 0 else {}
+        B = np.array(d.get('B', [[0]] * 10))
+        rows = [d['states'].index(s) for s in ("q2'", "q5'")] if d else [0, 1]
+        want = np.linalg.inv(M) @ np.array([0.0, 1.0])
+        report(p.returncode == 0 and np.allclose(np.abs(B[rows, 0]), np.abs(want),
+                                                 rtol=1e-10, atol=1e-12),
+               'steer torque: B = M^-1 (0, 1) in the lean and steer rates', '%s %s %s'
+               % (B[rows, 0], want, p.stderr))
+        p = subprocess.run([qdot, 'linearize', str(tq), '--lqr', 'Q = 1, R = 1', '--format',
+                            'json'], capture_output=True, text=True, timeout=600)
+        d = json.loads(p.stdout) if p.returncode == 0 else {}
+        cl = d.get('lqr', {}).get('closed_loop_eigenvalues', [])
+        report(p.returncode == 0 and d.get('controllable') is True and len(cl) == 4 and
+               all(re < 0 for re, im in cl) and sorted(d['states']) ==
+               sorted(["q2", "q5", "q2'", "q5'"]),
+               '--lqr: on the core (lean, steer and their rates), closed loop stable',
+               '%s %s' % (cl, p.stderr))
+
+    # 7. self-stability (Meijaard et al. sec. 5: stable between the weave and capsize
+    # speeds): at v = 5 a lean rate of 0.5 rad/s dies out, the lean under 0.01 rad after
+    # 10 s (the slowest mode, -0.3229, takes it down e^-3.2 ~ 1/25 from its peak ~0.03),
+    # and T + V is conserved (no dissipation, ideal rolling: Desloge ch. 52) to 1e-8
+    p = subprocess.run([qdot, 'simulate', str(MODEL), '--initial', "q2'=0.5", '--t-end', '10',
+                        '--dt', '0.5', '--rtol', '1e-10'], capture_output=True, text=True,
+                       timeout=600)
+    rows = [l.split(',') for l in p.stdout.splitlines()]
+    col = rows[0].index('q2') if rows else 0
+    lean = [abs(float(r[col])) for r in rows[1:]]
+    m = __import__('re').search(r'energy error ([0-9.e+-]+)', p.stderr)
+    report(p.returncode == 0 and lean and max(lean) > 0.02 and max(lean[-4:]) < 0.01 and
+           m and float(m.group(1)) < 1e-8,
+           'v=5: a lean disturbance dies out (self-stable), energy conserved',
+           '%s %s' % (lean[-4:], p.stderr[-300:]))
 
     # 4. errors
     rc, out, err = run(qdot, '--lqr', 'Q = 1, R = 1')

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "qdot/json.h"
+#include "qdot/read.h"
 
 /* An allocator that refuses everything: the first append fails. */
 static void *no_malloc(void *user, size_t size) { (void)user; (void)size; return NULL; }
@@ -125,6 +126,76 @@ static void test_whole(void **state) {
     qd_buf_free(&b);
 }
 
+/* A document of the writer's layout: members name[i] = value[i] (strings). */
+static void doc(qd_buf *b, size_t n, const char *const *name, const char *const *value) {
+    qd_json j;
+    qd_json_init(&j, b);
+    qd_json_begin_object(&j);
+    for (size_t i = 0; i < n; i++) {
+        qd_json_key(&j, name[i]);
+        qd_json_string(&j, value[i]);
+    }
+    qd_json_end_object(&j);
+}
+
+/* qd_json_add_model (issue 31): "model" put first is the document the writer
+ * makes with it first, for an object with members and an empty one; a
+ * document with its model first already, or not an object, is untouched; a
+ * name with a quote is escaped; memory that runs out fails the document. */
+static void test_add_model(void **state) {
+    (void)state;
+    const char *k[] = {"model", "a", "b"}, *v[] = {"dir/m \"1\".qd", "x", "y"};
+    qd_buf got = QD_BUF_INIT, want = QD_BUF_INIT;
+    doc(&got, 2, k + 1, v + 1);
+    doc(&want, 3, k, v);
+    assert_int_equal(qd_json_add_model(&got, v[0]), QD_OK);
+    assert_string_equal(qd_buf_str(&got), qd_buf_str(&want));
+    assert_int_equal(qd_json_add_model(&got, "other.qd"), QD_OK); /* it has one */
+    assert_string_equal(qd_buf_str(&got), qd_buf_str(&want));
+    qd_buf_clear(&got);
+    qd_buf_clear(&want);
+    doc(&got, 0, k, v);
+    doc(&want, 1, k, v);
+    assert_int_equal(qd_json_add_model(&got, v[0]), QD_OK);
+    assert_string_equal(qd_buf_str(&got), qd_buf_str(&want));
+    qd_buf_clear(&got);
+    qd_buf_puts(&got, "[1, 2]");
+    assert_int_equal(qd_json_add_model(&got, v[0]), QD_ERR_ARG);
+    assert_string_equal(qd_buf_str(&got), "[1, 2]");
+    qd_buf_free(&got);
+    qd_buf_free(&want);
+    const qd_allocator none = {no_malloc, no_realloc, plain_free, NULL};
+    qd_buf b = QD_BUF_INIT;
+    qd_buf_puts(&b, "{}");
+    b.alloc = &none; /* the new document cannot be made */
+    assert_int_equal(qd_json_add_model(&b, "m.qd"), QD_ERR_NOMEM);
+    assert_true(b.failed);
+    qd_buf_free(&b);
+}
+
+/* qd_json_expr_result: d(x^2 sin y)/dx = 2 x sin y, and the "result" text
+ * reads back to the derivative's own node (hash-consing: the same pointer). */
+static void test_expr_result(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *e = qd_read(ctx, "x^2*sin(y)", NULL, NULL);
+    const qd_expr *d = qd_diff(ctx, e, qd_lookup(ctx, "x"));
+    const char *vars[] = {"x"};
+    qd_buf b = QD_BUF_INIT;
+    assert_int_equal(qd_json_expr_result(ctx, "diff", "x^2*sin(y)", 1, vars, d, &b), QD_OK);
+    const char *s = qd_buf_str(&b), *r = strstr(s, "\"result\": \"");
+    assert_non_null(strstr(s, "\"operation\": \"diff\""));
+    assert_non_null(strstr(s, "\"variables\": [\"x\"]"));
+    assert_non_null(r);
+    char text[64] = "";
+    r += strlen("\"result\": \"");
+    memcpy(text, r, (size_t)(strchr(r, '"') - r));
+    assert_ptr_equal(qd_read(ctx, text, NULL, NULL), d);
+    assert_ptr_equal(d, qd_read(ctx, "2*x*sin(y)", NULL, NULL));
+    qd_buf_free(&b);
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_out_of_memory),
@@ -132,6 +203,8 @@ int main(void) {
         cmocka_unit_test(test_matrix),
         cmocka_unit_test(test_vector_frequency),
         cmocka_unit_test(test_whole),
+        cmocka_unit_test(test_add_model),
+        cmocka_unit_test(test_expr_result),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

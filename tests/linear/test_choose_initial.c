@@ -169,6 +169,7 @@ static void test_ring_initial_state(void **state) {
         assert_true(fabs(c.pt->q[i]) < 1e-12);
     assert_ring_modes(s, c.pt);
     assert_non_null(strstr(qd_eq_chosen_name(c.reason), "initial state is an equilibrium"));
+    assert_string_equal(qd_eq_chosen_code(c.reason), "initial_state");
     qd_equilibrium_choice_free(&c);
 }
 

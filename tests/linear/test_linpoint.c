@@ -11,6 +11,8 @@
  *     that mode alone (its normal coordinate, the other 0);
  *   two masses tied by y = x on springs k: eliminated to one coordinate of
  *     mass 2m and stiffness 2k, w^2 = k/m; the eliminated one is refused;
+ *   its equilibria from --near and --box text (qd_equilibria_find_text):
+ *     sin theta1 = sin theta2 = 0, the points Newton and a box reach;
  *   the pendulum x^2 + y^2 = l^2 kept with a multiplier: on the manifold
  *     w^2 = g/l and A = [0 1; -g/l 0] (qdot/constrained.h; Desloge ch. 65).
  */
@@ -67,6 +69,43 @@ static void test_double_pendulum(void **state) {
     assert_int_equal(qd_modes_at_choose(s->ctx, &p, "theta1 = 0, thta2 = 1", 0, &at), QD_ERR_ARG);
     assert_true(qd_ctx_diag(s->ctx)->located && qd_ctx_diag(s->ctx)->offset == 12);
     qd_modes_at_free(&at);
+    qd_linpoint_free(&p);
+}
+
+/* --near and --box of `qdot equilibria` (qd_equilibria_find_text): V =
+ * -m g l (2 cos theta1 + cos theta2), so sin theta1 = sin theta2 = 0, the
+ * four points (0 or pi, 0 or pi); Newton from near (3, 0.2) reaches (pi, 0);
+ * the box theta1 in [-1, 1], theta2 in [2, 4] holds (0, pi) alone. */
+static void test_equilibria_text(void **state) {
+    qt_system *s = qt_system_derive(state, double_pendulum, true);
+    qd_linpoint p;
+    assert_int_equal(qd_linpoint_init(s->ctx, s->model, s->eom, &p), QD_OK);
+    qd_equilibria eq;
+    const char *bad = "unset";
+    assert_int_equal(qd_equilibria_find_text(s->ctx, &p, NULL, NULL, &eq, &bad), QD_OK);
+    assert_true(bad == NULL && eq.count == 4 && eq.exact);
+    qd_equilibria_free(&eq);
+    assert_int_equal(qd_equilibria_find_text(s->ctx, &p, "theta1 = 3, theta2 = 0.2", NULL, &eq,
+                                             &bad), QD_OK);
+    assert_string_equal(eq.method, "newton");
+    assert_true(eq.count == 1 && fabs(eq.pts[0].q[0] - PI) < 1e-12 &&
+                fabs(eq.pts[0].q[1]) < 1e-12);
+    qd_equilibria_free(&eq);
+    const char *box = "theta1 = -1:1, theta2 = 2:4";
+    assert_int_equal(qd_equilibria_find_text(s->ctx, &p, NULL, box, &eq, &bad), QD_OK);
+    assert_string_equal(eq.method, "multistart");
+    assert_true(eq.count == 1 && fabs(eq.pts[0].q[0]) < 1e-12 &&
+                fabs(eq.pts[0].q[1] - PI) < 1e-12);
+    qd_equilibria_free(&eq);
+    /* mistakes are the readers', located in their own text */
+    const char *near = "thta1 = 1";
+    assert_int_equal(qd_equilibria_find_text(s->ctx, &p, near, NULL, &eq, &bad), QD_ERR_ARG);
+    assert_true(bad == near && qd_ctx_diag(s->ctx)->located && qd_ctx_diag(s->ctx)->offset == 0);
+    qd_ctx_clear_error(s->ctx);
+    box = "theta1 = 1:0";
+    assert_int_equal(qd_equilibria_find_text(s->ctx, &p, NULL, box, &eq, &bad), QD_ERR_ARG);
+    assert_true(bad == box && eq.count == 0);
+    qd_ctx_clear_error(s->ctx);
     qd_linpoint_free(&p);
 }
 
@@ -151,6 +190,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_teardown(test_double_pendulum, qt_system_teardown),
         cmocka_unit_test_teardown(test_readers, qt_system_teardown),
+        cmocka_unit_test_teardown(test_equilibria_text, qt_system_teardown),
         cmocka_unit_test_teardown(test_eliminated, qt_system_teardown),
         cmocka_unit_test_teardown(test_constrained_at, qt_system_teardown),
     };
