@@ -41,40 +41,6 @@ static const cli_spec spec = {
     "frequencies, the angles, commensurability and H(J).",
     opts, NULL, 1, 1, "FILE", false};
 
-/* ---- the state ------------------------------------------------------------------ */
-
-/* The model's `initial` values, --at over them, and for a model given by H
- * the momenta --at names (after the parameters; those it does not name are
- * left out, so that qd_action_at takes the velocities instead). */
-static int state_at(qd_ctx *ctx, const qd_model *m, const char *at, cli_state *st) {
-    size_t nq = qd_model_ncoords(m), first = 0;
-    bool *given = NULL;
-    int rc = cli_state_init(ctx, m, st);
-    if (rc == QD_EXIT_OK && qd_state_initial(ctx, m, st) != QD_OK)
-        rc = cli_diag_ctx(ctx);
-    first = st->n;
-    for (size_t j = 0; rc == QD_EXIT_OK && qd_model_hamiltonian_given(m) && j < nq; j++) {
-        const qd_expr *p = qd_model_momentum(m, j);
-        if (p && qd_state_append(ctx, st, 1, &p, NULL) != QD_OK)
-            rc = cli_diag_ctx(ctx);
-    }
-    if (rc == QD_EXIT_OK && at && !(given = calloc(st->n, sizeof *given)))
-        rc = cli_out_of_memory();
-    qd_state_read_opts o = {.given = given};
-    if (rc == QD_EXIT_OK && at)
-        rc = cli_state_read(ctx, m, "--at", at, st, &o);
-    size_t kept = first;
-    for (size_t k = first; rc == QD_EXIT_OK && k < st->n; k++)
-        if (given && given[k]) {
-            st->syms[kept] = st->syms[k];
-            st->vals[kept++] = st->vals[k];
-        }
-    if (rc == QD_EXIT_OK)
-        st->n = kept;
-    free(given);
-    return rc;
-}
-
 /* ---- the command ------------------------------------------------------------------ */
 
 enum { MAX_ANGLES = 16 };
@@ -112,7 +78,9 @@ static int run(cli_run *c) {
     if (rc != QD_EXIT_OK)
         return rc;
     cli_state st = {0};
-    rc = state_at(ctx, mf->model, a->at, &st);
+    if (qd_action_state_read(ctx, mf->model, a->at, &st) != QD_OK)
+        rc = a->at && qd_ctx_diag(ctx)->located ? cli_state_diag(ctx, "--at", a->at)
+                                                : cli_diag_ctx(ctx);
     qd_action act = {0};
     const qd_expr *angles[MAX_ANGLES];
     qd_action_opts opts = {.angles = angles};

@@ -23,7 +23,6 @@ typedef struct ham_run {
     const char *at, *format;
     bool second; /* --second-kind: qd_ham2_derive */
     cli_list sets;
-    cli_state st; /* q, q', t, the parameters, then the momenta */
     qd_ham_point pt; /* H and the equations at --at */
 } ham_run;
 
@@ -49,24 +48,14 @@ static const cli_spec spec = {
 
 /* ---- --at ------------------------------------------------------------------ */
 
-/* The model's state with the momenta appended, named in --at as they are
- * printed (p_r=0.3). */
-static int state_at(ham_run *r) {
-    int rc = cli_state_init(r->c.ctx, r->c.mf.model, &r->st);
-    if (rc == QD_EXIT_OK && qd_state_append(r->c.ctx, &r->st, r->h->n, r->h->p, NULL) != QD_OK)
-        rc = cli_diag_ctx(r->c.ctx);
-    return rc == QD_EXIT_OK ? cli_state_parse(r->c.ctx, r->c.mf.model, r->at, &r->st) : rc;
-}
-
-/* H and the equations at the --at point (qd_ham_point_eval). */
+/* H and the equations at the --at point (qd_ham_point_at). */
 static int evaluate(ham_run *r) {
-    int rc = state_at(r);
-    if (rc == QD_EXIT_OK &&
-        qd_ham_point_eval(r->c.ctx, r->h, r->st.n, r->st.syms, r->st.vals, &r->pt) != QD_OK) {
-        cli_diag_error("cannot evaluate at this point: %s", qd_ctx_message(r->c.ctx));
-        rc = QD_EXIT_FAIL;
-    }
-    return rc;
+    if (qd_ham_point_at(r->c.ctx, r->c.mf.model, r->h, r->at, &r->pt) == QD_OK)
+        return QD_EXIT_OK;
+    if (qd_ctx_diag(r->c.ctx)->located)
+        return cli_state_diag(r->c.ctx, "--at", r->at);
+    cli_diag_error("cannot evaluate at this point: %s", qd_ctx_message(r->c.ctx));
+    return QD_EXIT_FAIL;
 }
 
 /* The library's rendering (qd_render_hamiltonian) of the format asked for. */
@@ -98,7 +87,6 @@ static int run(cli_run *c) {
 
 static void run_free(cli_run *c) {
     ham_run *r = (ham_run *)c;
-    cli_state_free(&r->st);
     qd_ham_point_free(&r->pt);
     qd_ham_free(r->h);
     qd_eom_free(r->e);

@@ -8,7 +8,6 @@
  */
 #include "linear_cli.h"
 
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "qdot/zvc.h"
@@ -56,38 +55,23 @@ static const cli_spec spec = {
 
 /* ---- the level --------------------------------------------------------------------- */
 
-/* h (or W, at rest) at the point or state given. */
-static int level_at(zvc_run *r, const char *what, const char *text, bool rest) {
-    cli_lin_run *lr = &r->lr;
-    size_t n = lr->e->n;
-    double *qd = calloc(n + 1, sizeof *qd);
-    if (!qd)
-        return QD_EXIT_FAIL;
-    int rc = cli_lin_point(lr, what, text, r->q, rest ? NULL : qd);
-    if (rc == QD_EXIT_OK) {
-        qd_linpoint_set(&lr->pt, r->q, qd);
-        if (qd_eval(lr->c.ctx, rest ? r->z.W : r->z.h, lr->pt.st.n, lr->pt.st.syms, lr->pt.st.vals,
-                    &r->level) != QD_OK || !isfinite(r->level)) {
-            qd_ctx_clear_error(lr->c.ctx);
-            rc = cli_usage_error("%s: Jacobi's integral has no finite value there", what);
-        }
-    }
-    free(qd);
-    return rc;
-}
-
+/* The level (qd_zvc_level_read): --level, --through or --at; an error in
+ * one shown under its text. */
 static int read_level(zvc_run *r, const zvc_args *a) {
-    int given = !!a->level + !!a->through + !!a->at;
-    if (given != 1)
-        return cli_usage_error("give the level once: --level H, --through POINT or --at STATE");
-    if (a->through)
-        return level_at(r, "--through", a->through, true);
-    if (a->at)
-        return level_at(r, "--at", a->at, false);
-    if (qd_model_number(r->lr.c.ctx, r->lr.c.mf.model, a->level, &r->level) == QD_OK)
+    qd_ctx *ctx = r->lr.c.ctx;
+    const char *where = NULL;
+    if (qd_zvc_level_read(ctx, &r->lr.pt, &r->z, a->level, a->through, a->at, r->q, &r->level,
+                          &where) == QD_OK)
         return QD_EXIT_OK;
-    cli_diag_show("--level", a->level, qd_ctx_diag(r->lr.c.ctx));
-    return cli_exit(qd_ctx_status(r->lr.c.ctx));
+    if (!where && qd_ctx_status(ctx) == QD_ERR_ARG)
+        return cli_usage_error("give the level once: --level H, --through POINT or --at STATE");
+    if (!where)
+        return cli_diag_ctx(ctx);
+    const char *opt = where == a->level ? "--level" : where == a->through ? "--through" : "--at";
+    if (!qd_ctx_diag(ctx)->located)
+        return cli_usage_error("%s: %s", opt, qd_ctx_message(ctx));
+    cli_diag_show(opt, where, qd_ctx_diag(ctx));
+    return cli_exit(qd_ctx_status(ctx));
 }
 
 static int picture(zvc_run *r, const zvc_args *a) {
@@ -109,7 +93,6 @@ static int picture(zvc_run *r, const zvc_args *a) {
     int rc = read_level(r, a);
     if (rc != QD_EXIT_OK)
         return rc;
-    qd_linpoint_set(&lr->pt, r->q, NULL);
     r->box.nx = r->box.ny = a->cells ? a->cells : 400;
     /* csv holds the curves only: no equilibria sought */
     if (qd_zvc_picture_make(lr->c.ctx, lr->c.mf.model, lr->e, &r->z, &r->box, lr->pt.st.n,

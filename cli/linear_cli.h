@@ -66,12 +66,6 @@ int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0);
 /* "NAME=A:B": the parameter's name (cap bytes) and the range's ends. */
 int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double *a,
                    double *b);
-/* How to print a scan: the parameter, a name for each number of a point
- * (sc->n), what was followed (a phrase), the JSON key of a point. */
-typedef qd_scan_view cli_scan_view; /* qdot/modes.h */
-/* A table of the samples and the transitions (text), or JSON: parameter,
- * range, steps, samples, transitions. */
-int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json);
 /* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json);
 

@@ -7,8 +7,6 @@
  */
 #include "linear_cli.h"
 
-#include <stdlib.h>
-#include <string.h>
 #include "qdot/state.h"
 #include "model_cli.h"
 
@@ -23,49 +21,16 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
 
 /* ---- the command ------------------------------------------------------------------- */
 
-int cli_scan_emit(const cli_scan_view *v, const qd_scan *sc, bool json) {
-    qd_buf out = QD_BUF_INIT;
-    if ((json ? qd_scan_json(v, sc, &out) : qd_scan_print(v, sc, &out)) != QD_OK) {
-        cli_diag_error("cannot print the scan: %s", out.failed ? "out of memory"
-                                                                : "a number JSON cannot hold");
-        qd_buf_free(&out);
-        return QD_EXIT_FAIL;
-    }
-    return cli_emit(&out, "scan");
-}
-
+/* The library's scan from the options (qd_modes_scan_text). */
 int cli_scan_modes(cli_lin_run *r, const char *range, const char *about, size_t steps, bool json) {
-    char name[128];
-    double a, b;
-    int rc = cli_scan_range(r->c.ctx, range, name, sizeof name, &a, &b);
-    const qd_expr **ab = NULL;
-    const char **names = calloc(r->e->n + 1, sizeof *names);
-    if (!names)
-        rc = QD_EXIT_FAIL;
-    if (rc == QD_EXIT_OK && about) {
-        ab = calloc(r->e->n + 1, sizeof *ab);
-        rc = !ab ? cli_out_of_memory()
-             : qd_linpoint_read_exact(r->c.ctx, &r->pt, about, ab) == QD_OK
-                 ? QD_EXIT_OK
-                 : cli_state_diag(r->c.ctx, "--about", about);
-    }
-    qd_scan_opts o = {.steps = steps, .about = ab};
-    qd_scan sc = {0};
-    if (rc == QD_EXIT_OK &&
-        qd_modes_scan(r->c.ctx, r->e, r->c.mf.model, name, a, b, &o, &sc) != QD_OK) {
-        rc = cli_exit(qd_ctx_status(r->c.ctx));
-        cli_diag_error("--scan: %s", qd_ctx_message(r->c.ctx));
-    } else if (rc == QD_EXIT_OK) {
-        char followed[1024];
-        snprintf(followed, sizeof followed, about ? "the equilibrium from %s" : "%s",
-                 about ? about : "the equilibrium chosen at the start (as `qdot modes` does)");
-        for (size_t j = 0; j < r->e->n; j++)
-            names[j] = qd_expr_name(r->e->q[j]);
-        cli_scan_view v = {name, names, followed, "equilibrium"};
-        rc = cli_scan_emit(&v, &sc, json);
-    }
-    qd_scan_free(&sc);
-    free(ab);
-    free(names);
-    return rc;
+    const char *where = NULL;
+    qd_ctx *ctx = r->c.ctx;
+    qd_buf out = QD_BUF_INIT;
+    if (qd_modes_scan_text(ctx, &r->pt, range, about, steps, json, &out, &where) == QD_OK)
+        return cli_emit(&out, "scan");
+    qd_buf_free(&out);
+    if (where)
+        return cli_state_diag(ctx, where == range ? "--scan" : "--about", where);
+    cli_diag_error("--scan: %s", qd_ctx_message(ctx));
+    return cli_exit(qd_ctx_status(ctx));
 }

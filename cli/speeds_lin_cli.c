@@ -11,8 +11,6 @@
  */
 #include "linear_cli.h"
 
-#include <stdio.h>
-#include <string.h>
 #include "eom_out.h"
 #include "model_cli.h"
 #include "qdot/speeds.h"
@@ -85,34 +83,20 @@ static int at_equilibrium(sp_run *r) {
 }
 
 /* --scan NAME=A:B: the verdict at the state as NAME (a parameter, speed or
- * coordinate) goes from A to B. */
+ * coordinate) goes from A to B (qd_speeds_modes_scan_text). */
 static int scan(sp_run *r, const char *range, const char *about, size_t steps, bool json) {
-    char name[128];
-    double a, b;
-    int rc = cli_scan_range(r->ctx, range, name, sizeof name, &a, &b);
-    const qd_expr *what = NULL;
-    for (size_t k = 0; rc == QD_EXIT_OK && k < r->st.n; k++)
-        if (r->st.syms[k] && !strcmp(qd_expr_name(r->st.syms[k]), name) &&
-            qd_symbol_role(r->st.syms[k]) != QD_ROLE_TIME)
-            what = r->st.syms[k];
-    if (rc == QD_EXIT_OK && !what)
-        return cli_usage_error("--scan: %s is not a parameter, coordinate or speed of the model",
-                               name);
-    qd_scan_opts o = {.steps = steps};
-    qd_scan sc = {0};
-    if (rc == QD_EXIT_OK && qd_speeds_modes_scan(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, what,
-                                                 a, b, &o, &sc) != QD_OK) {
-        rc = cli_exit(qd_ctx_status(r->ctx));
-        cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
-    } else if (rc == QD_EXIT_OK) {
-        char followed[1024];
-        snprintf(followed, sizeof followed, "the state %s",
-                 about ? about : "of the first equilibrium (every speed 0)");
-        cli_scan_view v = {name, NULL, followed, "state"};
-        rc = cli_scan_emit(&v, &sc, json);
-    }
-    qd_scan_free(&sc);
-    return rc;
+    const char *where = NULL;
+    qd_buf out = QD_BUF_INIT;
+    if (qd_speeds_modes_scan_text(r->ctx, r->e, r->st.n, r->st.syms, r->st.vals, range, about,
+                                  steps, json, &out, &where) == QD_OK)
+        return cli_emit(&out, "scan");
+    qd_buf_free(&out);
+    if (where && qd_ctx_diag(r->ctx)->located)
+        return cli_state_diag(r->ctx, "--scan", range);
+    if (where)
+        return cli_usage_error("--scan: %s", qd_ctx_message(r->ctx));
+    cli_diag_error("--scan: %s", qd_ctx_message(r->ctx));
+    return cli_exit(qd_ctx_status(r->ctx));
 }
 
 int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const char *range,

@@ -122,6 +122,18 @@ QD_API qd_status qd_action_at(qd_ctx *ctx, const qd_model *m, size_t nvals,
                               const qd_expr *const *syms, const double *vals,
                               const qd_action_opts *opts, qd_action *out);
 
+struct qd_state; /* qdot/state.h */
+
+/* The state `qdot action --at` and Python's Model.action(at=) take the
+ * actions at, into *st (overwritten; free it with qd_state_free, also after
+ * a failure): m's state at its `initial` values (qd_state_init,
+ * qd_state_initial), at (NULL: none) read over it (qd_state_read, its
+ * errors located in at), and for a model given by H the momenta at names
+ * (after the parameters; those it does not name are left out, so that
+ * qd_action_at takes the velocities instead). */
+QD_API qd_status qd_action_state_read(qd_ctx *ctx, const qd_model *m, const char *at,
+                                      struct qd_state *st);
+
 /* The same from a separation already made (h->separable): angle[k] marks
  * the coordinates that are angles (period 2 pi); the constants take their
  * values from the integrals evaluated at syms/vals, which must give every

@@ -344,6 +344,19 @@ typedef struct qd_scan_view {
 QD_API qd_status qd_scan_print(const qd_scan_view *v, const qd_scan *sc, qd_buf *out);
 QD_API qd_status qd_scan_json(const qd_scan_view *v, const qd_scan *sc, qd_buf *out);
 
+/* What `qdot modes --scan NAME=A:B [--about ...] [--steps N]` writes, for
+ * the equations and state of p (qdot/linpoint.h): range "NAME=A:B" read by
+ * qd_state_named_range, about (NULL: the equilibrium qd_equilibria_choose
+ * takes at A) by qd_linpoint_read_exact (kept in the parameters, evaluated
+ * at each value), steps as qd_scan_opts.steps; then qd_modes_scan and the
+ * scan appended to out (qd_scan_print, or qd_scan_json when json).  An
+ * error in reading range or about is located in that text and *where (may
+ * be NULL) set to it, else *where is NULL (the scan's errors: QD_ERR_ARG
+ * for the parameter, QD_ERR_NUMERIC for an equilibrium lost). */
+QD_API qd_status qd_modes_scan_text(qd_ctx *ctx, const struct qd_linpoint *p, const char *range,
+                                    const char *about, size_t steps, bool json, qd_buf *out,
+                                    const char **where);
+
 /* ---- models in generalized speeds (src/linear/speeds_lin.c) ----------------
  *
  * The first-order system y = (q, u) of qd_speeds_derive, q' = kin(q, u, t),
@@ -396,6 +409,21 @@ QD_API qd_status qd_speeds_modes_scan(qd_ctx *ctx, const struct qd_speeds_eom *e
                                       const qd_expr *const *syms, const double *vals,
                                       const qd_expr *what, double a, double b,
                                       const qd_scan_opts *opts, qd_scan *out);
+
+/* What `qdot modes --scan NAME=A:B` writes for a model with `speeds`, at
+ * the state syms/vals (the model's, its speeds appended, with --about's
+ * values or at the first equilibrium): range "NAME=A:B" read by
+ * qd_state_named_range, NAME a parameter, coordinate or speed among syms
+ * (not t; QD_ERR_ARG naming it otherwise); qd_speeds_modes_scan with steps;
+ * the scan appended to out (qd_scan_print, or qd_scan_json when json), its
+ * head naming about (the text the state was given by, or NULL: the first
+ * equilibrium).  An error about range has *where (may be NULL) set to it
+ * (located in it when the reader's), else NULL. */
+QD_API qd_status qd_speeds_modes_scan_text(qd_ctx *ctx, const struct qd_speeds_eom *e,
+                                           size_t nvals, const qd_expr *const *syms,
+                                           const double *vals, const char *range,
+                                           const char *about, size_t steps, bool json,
+                                           qd_buf *out, const char **where);
 
 /* ---- printed (src/linear/speeds_print.c) --------------------------------- */
 

@@ -238,6 +238,16 @@ QD_API qd_status qd_ham_point_eval(qd_ctx *ctx, const qd_ham *h, size_t nvals,
                                    const qd_expr *const *syms, const double *vals,
                                    qd_ham_point *out);
 QD_API void qd_ham_point_free(qd_ham_point *pt);
+/* h evaluated where `qdot hamiltonian --at` and Python's
+ * Model.hamiltonian(at=) ask: the state of m with every coordinate,
+ * velocity and t 0 and the parameters at their values (qd_state_init, not
+ * the model's `initial`), h's momenta after it at 0, and the values at
+ * names read into it (qd_state_read: "x=0.5, p_x=2", the momenta named as
+ * printed); then qd_ham_point_eval.  The reader's errors located in at;
+ * qd_ham_point_eval's.  Free out with qd_ham_point_free (also after a
+ * failure). */
+QD_API qd_status qd_ham_point_at(qd_ctx *ctx, const qd_model *m, const qd_ham *h, const char *at,
+                                 qd_ham_point *out);
 
 /* Append h, the Hamiltonian of m (qd_ham_derive), to out in fmt; source
  * names the model in the headers (NULL: "model"); at (NULL: symbolic) is h

@@ -104,6 +104,24 @@ QD_API qd_status qd_zvc_picture_make(qd_ctx *ctx, const qd_model *m, const qd_eo
                                      double level, bool equilibria, qd_zvc_picture *out);
 QD_API void qd_zvc_picture_free(qd_zvc_picture *p);
 
+struct qd_linpoint; /* qdot/linpoint.h */
+
+/* The level of the curves as `qdot zvc` takes it, exactly one of: level, a
+ * number or a constant expression in the parameters (qd_model_number); the
+ * value of W at a point at rest, through "x=..., y=..." (the unnamed
+ * coordinates 0, qd_linpoint_read_coords); the value of h at a state, at
+ * "x=..., x'=..." (qd_linpoint_read).  z from qd_zvc_derive on p's
+ * equations.  The level into *h, the point into q (p->e->n values: the
+ * other coordinates' values the curves are drawn at, 0 for a level given
+ * as a number), and p's state left at q, at rest.  QD_ERR_ARG unless
+ * exactly one is given; an error in the text given (the reader's, located
+ * there; or QD_ERR_ARG "Jacobi's integral has no finite value there", not
+ * located, its diag.name "through" or "at") with *where (may be NULL)
+ * set to that text, else NULL. */
+QD_API qd_status qd_zvc_level_read(qd_ctx *ctx, struct qd_linpoint *p, const qd_zvc *z,
+                                   const char *level, const char *through, const char *at,
+                                   double *q, double *h, const char **where);
+
 /* The picture written for a reader, appended to out: h, W, the level, each
  * equilibrium with its kind and W, and a line per curve (closed or open,
  * its points, its extent); results with 12 significant digits. */

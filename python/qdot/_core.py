@@ -221,19 +221,17 @@ class Core:
         return out
 
     def state(self):
-        """The symbols and values of a state: every coordinate and velocity
-        at its `initial` value (0 when none), t = 0, the parameters."""
-        q = self.coords()
-        syms = q + [lib.qd_jet(self.ctx, c, 1) for c in q] + [lib.qd_time(self.ctx)]
-        syms += [p[1] for p in self.params()]
-        vals = [0.0] * (2 * len(q) + 1) + [p[2] for p in self.params()]
-        n = len(q)
-        for i in range(n):
-            for order in (0, 1):
-                x = lib.qd_model_initial(self.model, i, order)
-                if x:
-                    vals[order * n + i] = self.eval(x, syms, vals)
-        return syms, vals
+        """The symbols and values of the model's state at its `initial`
+        values (qd_state_init, qd_state_initial: every coordinate and
+        velocity at its `initial` value, 0 when none, t = 0, the
+        parameters), as lists."""
+        st = new("qd_state")
+        try:
+            self.check(lib.qd_state_init(self.ctx, self.model, st))
+            self.check(lib.qd_state_initial(self.ctx, self.model, st))
+            return [st.syms[k] for k in range(st.n)], [st.vals[k] for k in range(st.n)]
+        finally:
+            lib.qd_state_free(st)
 
     def eval(self, x, syms, vals):
         """The value of expression x at syms = vals."""

@@ -12,7 +12,7 @@ import warnings
 
 import numpy as np
 
-from ._core import ArgumentError, Error, ModelError, NumericalError, format_diag, take_error
+from ._core import ArgumentError, ModelError, NumericalError, format_diag, take_error
 from ._lib import ffi, lib, new, buf_text, cstr
 from . import commands as _commands
 
@@ -145,7 +145,15 @@ def speeds_equilibria(core):
         p.free()
 
 
-def speeds_modes(core, about):
+def _steps(steps, what):
+    if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or
+                              not 1 <= steps <= 100000):
+        raise ValueError("%s: steps is a number of steps from 1 to 100000, not %r"
+                         % (what, steps))
+    return steps or 0
+
+
+def speeds_modes(core, about, scan_=None, steps=None):
     """The eigenvalues of the reduced first-order system about a state
     (qd_speeds_linear_about, qd_speeds_modes_solve, qd_speeds_modes_print):
     about's coordinates and speeds ("theta=pi/2, u3=6"), else the first
@@ -167,6 +175,8 @@ def speeds_modes(core, about):
             if not found[0]:
                 raise NumericalError("modes: no equilibrium found (Model.equilibria() lists "
                                      "none): give a state with about={...}", QD_ERR_NUMERIC)
+        if scan_ is not None:  # qd_speeds_modes_scan_text at that state
+            return _speeds_scan(core, p, _range_arg(scan_, "modes"), text, _steps(steps, "modes"))
         core.check(lib.qd_speeds_linear_about(core.ctx, p.se, p.st.n, p.st.syms, p.st.vals, lin))
         core.check(lib.qd_speeds_modes_solve(core.ctx, lin, res), NumericalError)
         output = _commands.output(core, "modes", lambda buf: lib.qd_speeds_modes_print(
@@ -253,10 +263,78 @@ def _initial(core, p, at, initial):
     return Q, Qd
 
 
+def _range_arg(range_, what):
+    """A scan's range as --scan's text: "NAME=A:B", or (name, a, b)."""
+    if isinstance(range_, (tuple, list)) and len(range_) == 3:
+        name, a, b = range_
+        range_ = "%s=%s:%s" % (name, *(x if isinstance(x, str) else repr(float(x))
+                                       for x in (a, b)))
+    if not isinstance(range_, str):
+        raise TypeError("%s: scan is \"NAME=A:B\" or (name, a, b), not %r" % (what, range_))
+    return range_
+
+
+def scan_range(core, range_, what):
+    """(name, a, b) of a scan's range, read as --scan is
+    (qd_state_named_range: A and B constant expressions in the parameters);
+    an error shown in its text."""
+    text = _range_arg(range_, what).encode()
+    name = ffi.new("char[]", 128)
+    a, b = new("double"), new("double")
+    if lib.qd_state_named_range(core.ctx, ffi.NULL, text, name, 128, a, b) != lib.QD_OK:
+        raise located(core, "scan", text)
+    return name, a[0], b[0]
+
+
+def scan(core, range_, about, steps):
+    """`qdot modes --scan NAME=A:B` (qd_modes_scan_text): an Output of the
+    scan's JSON."""
+    range_ = _range_arg(range_, "modes")
+    if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or
+                              not 1 <= steps <= 100000):
+        raise ValueError("modes: steps is a number of steps from 1 to 100000, not %r" % (steps,))
+    p = Point(core)
+    texts = {"scan": _commands.text_arg(range_, "scan"),
+             "about": _commands.text_arg(_point_text(about, "about"), "about")}
+    where = ffi.new("const char **")
+    try:
+        if p.e.ncon:
+            raise ValueError("modes: scan: not yet on the constraint manifold of a model that "
+                             "keeps constraints with multipliers")
+        return _commands.output(core, "modes", lambda buf: _scanned(core, p, texts, steps or 0,
+                                                                     where, buf))
+    finally:
+        p.free()
+
+
+def _scanned(core, p, texts, steps, where, buf):
+    about = texts["about"] if texts["about"] is not None else ffi.NULL
+    st = lib.qd_modes_scan_text(core.ctx, p.pt, texts["scan"], about, steps, True, buf, where)
+    if st != lib.QD_OK and where[0] != ffi.NULL:
+        which = "scan" if where[0] == texts["scan"] else "about"
+        lib.qd_buf_free(buf)
+        raise located(core, which, ffi.string(texts[which]))
+    if st != lib.QD_OK:
+        lib.qd_buf_free(buf)
+        raise core.error(st, cls=ArgumentError if st == lib.QD_ERR_ARG else NumericalError)
+    return st
+
+
 def modes(core, about=None, at_equilibrium=None, initial=None, symmetry=False,
-          independent=None):
-    """The modes about the point `qdot modes` takes (a Modes)."""
+          independent=None, scan_=None, steps=None):
+    """The modes about the point `qdot modes` takes (a Modes); with scan_
+    the scan's Output."""
     from .model import Mode, Modes
+    if scan_ is not None:
+        if at_equilibrium is not None or initial is not None or symmetry or independent:
+            raise ValueError("modes: scan follows the point given with about (or the "
+                             "equilibrium chosen at the start of the range): give neither "
+                             "at_equilibrium, initial, symmetry nor independent")
+        if lib.qd_model_nspeeds(core.model):
+            return speeds_modes(core, about, scan_, steps)
+        return scan(core, scan_, about, steps)
+    if steps is not None:
+        raise ValueError("modes: steps is the number of steps of scan: give scan=\"NAME=A:B\"")
     if about is not None and at_equilibrium is not None:
         raise ValueError("modes: give either about or at_equilibrium, not both")
     if at_equilibrium is not None and (isinstance(at_equilibrium, bool) or
@@ -373,3 +451,20 @@ def _constrained(core, p, at, independent):
         return out
     finally:
         lib.qd_constrained_at_free(ca)
+
+
+def _speeds_scan(core, p, range_, about, steps):
+    """`qdot modes --scan` of a model with speeds: an Output of the scan."""
+    rtext, where = _commands.text_arg(range_, "scan"), ffi.new("const char **")
+
+    def call(buf):
+        st = lib.qd_speeds_modes_scan_text(core.ctx, p.se, p.st.n, p.st.syms, p.st.vals, rtext,
+                                           about if about is not None else ffi.NULL, steps,
+                                           True, buf, where)
+        if st != lib.QD_OK:
+            lib.qd_buf_free(buf)
+            if where[0] != ffi.NULL:
+                raise located(core, "scan", ffi.string(rtext))
+            raise core.error(st, cls=ArgumentError if st == lib.QD_ERR_ARG else NumericalError)
+        return st
+    return _commands.output(core, "modes", call)

@@ -249,17 +249,51 @@ def _state_at(core, at, extra):
     return syms, vals
 
 
-def _render(core, fn, e, fmt, at, extra, multipliers=False):
-    """fn (qd_render_eom or qd_render_speeds) of e in format fmt."""
+def _render_lagrange(core, fmt, at):
+    """qd_render_eom of Lagrange's equations of a model that declares
+    `speeds` (`qdot eom` renders its speeds form: Model.speeds_eom), at's
+    names read by _state_at."""
     k = new("qd_render_format")
-    lib.qd_render_format_parse(fmt.encode(), k)
+    if not lib.qd_render_format_parse(fmt.encode(), k):
+        raise ValueError("eom: no format %r" % (fmt,))
     source = ffi.new("char[]", core.file.encode())
-    opts = new("qd_render_opts", {"source": source, "multipliers": bool(multipliers)})
+    opts = new("qd_render_opts", {"source": source})
     if at:
-        syms, vals = _state_at(core, at, extra)
+        syms, vals = _state_at(core, at, [])
         csyms, cvals = exprs(syms), doubles(vals)  # alive for the call
         opts.nstate, opts.syms, opts.vals = len(syms), csyms, cvals
-    return _commands.rendered(core, lambda buf: fn(core.ctx, core.model, e, opts, k[0], buf))
+    return _commands.rendered(core, lambda buf: lib.qd_render_eom(
+        core.ctx, core.model, core.eom_ptr(), opts, k[0], buf))
+
+
+def _render(core, fmt, at, speeds=None):
+    """What `qdot eom --format fmt [--at ...]` prints (qd_eom_request_render:
+    the library derives, reads at's state and renders); speeds: the
+    qd_speeds_opts of a model with `speeds`.  A note the command prints
+    (a solution too large, the renderer's) is a UserWarning; an error in at
+    a ModelError shown in its text."""
+    import warnings
+    from .linear import located
+    k = new("qd_render_format")
+    if not lib.qd_render_format_parse(fmt.encode(), k):
+        raise ValueError("eom: no format %r" % (fmt,))
+    src = _commands.source(core)
+    text = _commands.text_arg(at, "at") if at else None
+    rq = new("qd_eom_request", {"fmt": k[0], "source": src,
+                                "at": text if text is not None else ffi.NULL})
+    if speeds is not None:
+        rq.speeds = speeds[0]
+    out, notes, step = new("qd_buf"), new("qd_buf"), new("qd_eom_step")
+    st = lib.qd_eom_request_render(core.ctx, core.model, rq, out, notes, step)
+    note = buf_text(notes)
+    if st != lib.QD_OK:
+        lib.qd_buf_free(out)
+        if step[0] == lib.QD_EOM_STEP_AT and text is not None:
+            raise located(core, "at", ffi.string(text))
+        raise core.error(st, cls=ModelError if step[0] == lib.QD_EOM_STEP_DERIVE else None)
+    for line in note.splitlines():
+        warnings.warn("eom: " + line, UserWarning, stacklevel=4)
+    return buf_text(out)
 
 
 def _sympy_namespace(core, extra=()):
@@ -383,7 +417,10 @@ class Model:
             M, f = sp.Matrix(M), sp.Matrix(f)
         cons = [cstr(e.con[k].name) for k in range(e.ncon)]
         out = Equations([name_of(e.q[j]) for j in range(n)], M, f, cons)
-        out._print = lambda fmt, at: _render(core, lib.qd_render_eom, core.eom_ptr(), fmt, at, [])
+        if lib.qd_model_nspeeds(core.model):
+            out._print = lambda fmt, at: _render_lagrange(core, fmt, at)
+        else:
+            out._print = lambda fmt, at: _render(core, fmt, at)
         return out
 
     def speeds_eom(self, method="kane", appell=False, multipliers=False):
@@ -403,8 +440,7 @@ class Model:
         ptr = _SpeedsHandle(core, se)  # freed with the result
         out = _speeds_result(core, se, method)
         out._handle = ptr
-        out._print = lambda fmt, at: _render(
-            core, lib.qd_render_speeds, ptr.se, fmt, at, ptr.speeds, multipliers=multipliers)
+        out._print = lambda fmt, at: _render(core, fmt, at, opts)
 
         def hamel(fmt="text"):
             """Hamel's coefficients gamma_ikm (text, or a dict for "json")."""
@@ -473,15 +509,16 @@ class Model:
         are the keys of `qdot hamiltonian --format json` (qd_render_hamiltonian):
         model, coordinates, momenta, definitions, velocities, H, dq_dt,
         dp_dt, H_is_energy, H_minus_energy, conserved, H_given (L, L_error
-        for a model given by H); .json is that dict.  at={name: value}
-        (coordinates, momenta named as printed, p_x, t; the others at the
-        model's initial values), as --at: H, dq_dt and dp_dt of the JSON are
-        then numbers there (qd_ham_point_eval), and "at" the point.
-        second_kind=True gives Hamilton's equations of the second kind
-        (qd_ham2_derive, Desloge ch. 72 Thm 1, `hamiltonian --second-kind`):
-        H is then K = sum s q' - T, momenta the s_q = dT/dq', dp the
-        ds/dt = -dK/dq + Q, is_energy K = T; the JSON keys K, forces, ds_dt,
-        K_is_T, K_minus_T, s_is_p replace H, dp_dt and the H verdicts."""
+        for a model given by H); .json is that dict.  at={name: value} or
+        text (coordinates, momenta named as printed, p_x, t; the others 0,
+        not the model's initial values), read as --at is (qd_ham_point_at):
+        H, dq_dt and dp_dt of the JSON are then numbers there, and "at" the
+        point.  second_kind=True gives Hamilton's equations of the second
+        kind (qd_ham2_derive, Desloge ch. 72 Thm 1, `hamiltonian
+        --second-kind`): H is then K = sum s q' - T, momenta the s_q =
+        dT/dq', dp the ds/dt = -dK/dq + Q, is_energy K = T; the JSON keys K,
+        forces, ds_dt, K_is_T, K_minus_T, s_is_p replace H, dp_dt and the H
+        verdicts."""
         core = self._for("hamiltonian")
         given = lib.qd_model_hamiltonian_given(core.model)
         derive = lib.qd_ham2_derive if second_kind else lib.qd_ham_derive
@@ -493,10 +530,13 @@ class Model:
             hh = h
             n = hh.n
             point = ffi.NULL
-            if at:
-                syms, vals = _state_at(core, at, [hh.p[j] for j in range(n)])
-                core.check(lib.qd_ham_point_eval(core.ctx, h, len(syms), exprs(syms),
-                                                 doubles(vals), pt), cls=NumericalError)
+            if at:  # read and evaluated as --at is (qd_ham_point_at)
+                from .linear import located
+                text = _commands.text_arg(at, "at")
+                if lib.qd_ham_point_at(core.ctx, core.model, h, text, pt) != lib.QD_OK:
+                    if lib.qd_ctx_diag(core.ctx).located:
+                        raise located(core, "at", ffi.string(text))
+                    raise core.error(cls=NumericalError)
                 point = pt
             src = _commands.source(core)
             data = _json.loads(_commands.rendered(core, lambda buf: lib.qd_render_hamiltonian(
@@ -595,21 +635,29 @@ class Model:
         kind, turning_points, J, omega, angle), actions, frequencies, angles,
         degeneracies, H_of_J.  at: {name: value} over the model's initial
         values (coordinates, velocities "NAME'", t, parameters), as --at;
-        angles: coordinates to take as angles (--angle).  A model given by H
-        takes its velocities from its initial values only (see docs)."""
-        core = self._core
-        syms, vals = _state_at(core, at or {}, [])
-        angle_syms = self._lookup(angles, "action") if angles else []
+        angles: coordinates to take as angles (--angle).  The state is read
+        as --at is (qd_action_state_read): over the model's initial values,
+        and for a model given by H the momenta at names."""
+        from .linear import located
+        core = self._for("action")
+        angle_syms = self._lookup(angles, "action", core) if angles else []
         keep = exprs(angle_syms)
         opts = new("qd_action_opts", {"nangles": len(angle_syms), "angles": keep})
-        act = new("qd_action")
-        try:
-            core.check(lib.qd_action_at(core.ctx, core.model, len(syms), exprs(syms),
-                                        doubles(vals), opts, act))
+        act, st = new("qd_action"), new("qd_state")
+        text = _commands.text_arg(at, "at") if at else None
+        try:  # the state read as --at is (qd_action_state_read)
+            if lib.qd_action_state_read(core.ctx, core.model,
+                                        text if text is not None else ffi.NULL, st) != lib.QD_OK:
+                if text is not None and lib.qd_ctx_diag(core.ctx).located:
+                    raise located(core, "at", ffi.string(text))
+                raise core.error()
+            core.check(lib.qd_action_at(core.ctx, core.model, st.n, st.syms, st.vals, opts,
+                                        act))
             return _commands.output(core, "action", lambda buf: lib.qd_action_print(
                 core.ctx, act, True, buf))
         finally:
             lib.qd_action_free(act)
+            lib.qd_state_free(st)
 
     def _phase_read(self, ph, text, what, core=None):
         """text read as a function on phase space (qd_phase_read); a
@@ -721,101 +769,131 @@ class Model:
             lib.qd_gen_result_free(g)
 
     def stability(self, ignore=None, driven=None, momentum=None, omega=None, at=None,
-                  guess=None):
+                  guess=None, scan=None, steps=None):
         """Steady motions of a system with cyclic coordinates and their
-        stability (`qdot stability`, qd_stability_print): a qdot.Output with
-        model, kind ("free" or "driven"), steady, residual, Veff, the
-        mass, damping, gyroscopic and stiffness matrices, hessian,
-        frequencies, eigenvalues ([re, im] pairs), stable, secular,
-        verdict (of the motion nearest the starting values), steady_motions
-        (every one found) and complete.  Give either ignore (the cyclic
-        coordinates, momenta free: "phi" or a list) or driven (maintained
-        rates "phi' = 2", a list or text); momentum ("p_phi=3"), omega
-        ("phi'=2"), at ("theta=pi/3") and guess as --momentum, --omega,
-        --at and --guess (text or {name: value})."""
-        core = self._core
-        if (ignore is None) == (driven is None):
-            raise ValueError("stability: give either ignore (free momenta) or driven "
-                             "(maintained rates)")
-        if driven is not None and (momentum is not None or omega is not None):
-            raise ValueError("stability: momentum and omega go with ignore; a driven rate is "
-                             "given as driven=\"q' = VALUE\"")
+        stability (`qdot stability`: qd_stability_problem_read and _solve,
+        qd_stability_print): a qdot.Output with model, kind ("free" or
+        "driven"), steady, residual, Veff, the mass, damping, gyroscopic and
+        stiffness matrices, hessian, frequencies, eigenvalues ([re, im]
+        pairs), stable, secular, verdict (of the motion nearest the starting
+        values), steady_motions (every one found) and complete.  Give either
+        ignore (the cyclic coordinates, momenta free: "phi" or a list) or
+        driven (maintained rates "phi' = 2", a list or text); momentum
+        ("p_phi=3"), omega ("phi'=2"), at ("theta=pi/3") and guess as
+        --momentum, --omega, --at and --guess (text or {name: value}).  An
+        error in one of them is a qdot.ModelError shown in its text, the
+        library's refusals (neither or both of ignore and driven) a
+        qdot.ArgumentError.  scan ("NAME=A:B" or (name, a, b); --scan, steps
+        as --steps): the steady motion followed along the parameter
+        (qd_stability_problem_scan, qd_stability_scan_write), an Output
+        with parameter, range, steps, samples and transitions."""
+        from .linear import located
+        core = self._for("stability")
+        if steps is not None and scan is None:
+            raise ValueError("stability: steps is the number of steps of scan: give "
+                             "scan=\"NAME=A:B\"")
         if isinstance(ignore, (list, tuple)):
             ignore = ", ".join(ignore)
-        if isinstance(driven, (list, tuple)):
-            driven = ", ".join(driven)
+        items = [driven] if isinstance(driven, str) else list(driven or [])
         texts = {k: _commands.text_arg(v, k) for k, v in
-                 (("ignore", ignore), ("driven", driven), ("momentum", momentum),
-                  ("omega", omega), ("at", at), ("guess", guess))}
+                 (("ignore", ignore), ("momentum", momentum), ("omega", omega), ("at", at),
+                  ("guess", guess))}
+        keep = [_commands.text_arg(x, "driven") for x in items]
+        dr = ffi.new("const char *[]", keep) if keep else ffi.NULL
         c = lambda k: texts[k] if texts[k] is not None else ffi.NULL  # noqa: E731
-        field = ffi.new("char[]", b"driven" if driven is not None else b"ignore")
-        rates_field = ffi.new("char[]", b"driven" if driven is not None else b"omega")
-        s_ = lib.qd_steady_derive_named(core.ctx, core.model, core.eom_ptr(), field,
-                                        c("driven") if driven is not None else c("ignore"),
-                                        driven is not None)
-        if not s_:
-            raise core.error()
-        g, found = new("qd_steady_given"), new("qd_steady_set")
-        an = []
+        spec = new("qd_stability_spec", {"ignore": c("ignore"), "driven": dr,
+                                         "ndriven": len(keep), "momentum": c("momentum"),
+                                         "omega": c("omega"), "at": c("at"),
+                                         "guess": c("guess")})
+        p = new("qd_stability_problem")
         try:
-            spec = new("qd_steady_spec", {
-                "rates": c("driven") if driven is not None else c("omega"),
-                "rates_field": rates_field, "momenta": c("momentum"), "guess": c("guess"),
-                "at": c("at")})
-            core.check(lib.qd_steady_given_read(core.ctx, s_, core.model, spec, g))
-            # as `qdot stability` does: every steady motion, then each analysed
-            core.check(lib.qd_steady_find_all(core.ctx, s_, g.nvals, g.syms, g.vals, g.xfix,
-                                              g.wfix, g.pfix, g.pguess, ffi.addressof(g.start),
-                                              found), cls=NumericalError)
-            an = ffi.new("qd_stability[]", found.count + 1)
-            for k in range(found.count):
-                core.check(lib.qd_stability_analyze(core.ctx, s_, g.nvals, g.syms, g.vals,
-                                                    ffi.addressof(found.pts[k]), an + k))
+            if lib.qd_stability_problem_read(core.ctx, core.model, core.eom_ptr(), spec,
+                                             p) != lib.QD_OK:
+                d = lib.qd_ctx_diag(core.ctx)
+                field = ffi.string(d.name).decode()
+                text = p.driven if field == "driven" else texts.get(field)
+                if d.located and text:
+                    raise located(core, field, ffi.string(text))
+                raise core.error(cls=ArgumentError if d.status == lib.QD_ERR_ARG else None)
             src = _commands.source(core)
-            rep = new("qd_stability_report", {"s": s_, "given": g, "set": found, "an": an,
+            if scan is not None:
+                return self._stability_scan(core, p, scan, steps, src)
+            core.check(lib.qd_stability_problem_solve(core.ctx, p), NumericalError)
+            rep = new("qd_stability_report", {"s": p.s, "given": ffi.addressof(p.given),
+                                              "set": ffi.addressof(p.set), "an": p.an,
                                               "model": src})
             return _commands.output(core, "stability", lambda buf: lib.qd_stability_print(
                 core.ctx, rep, True, buf))
         finally:
-            for k in range(found.count if len(an) else 0):
-                lib.qd_stability_free(an + k)
-            lib.qd_steady_set_free(found)
-            lib.qd_steady_given_free(g)
-            lib.qd_steady_free(s_)
+            lib.qd_stability_problem_free(p)
 
-    def zvc(self, box, level, cells=400):
+    def _stability_scan(self, core, p, scan, steps, src):
+        """stability(scan=...): qd_stability_problem_scan and its JSON."""
+        from .linear import scan_range
+        name, a, b = scan_range(core, scan, "stability")
+        if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or
+                                  not 1 <= steps <= 100000):
+            raise ValueError("stability: steps is a number from 1 to 100000, not %r" % (steps,))
+        sc = new("qd_scan")
+        try:
+            core.check(lib.qd_stability_problem_scan(core.ctx, p, core.model, name, a, b,
+                                                     steps or 0, sc), NumericalError)
+            return _commands.output(core, "stability", lambda buf: lib.qd_stability_scan_write(
+                core.ctx, p, name, sc, True, buf))
+        finally:
+            lib.qd_scan_free(sc)
+
+    def zvc(self, box, level=None, cells=400, through=None, at=None):
         """Jacobi's integral and the zero-velocity curves W = level over a
         box (`qdot zvc FILE --box ... --level H`, qd_zvc_picture_make and
         qd_zvc_json): a qdot.Output with h, W, level, grid, equilibria (in
         the box, each with its kind and W there as "h") and curves (each
         "closed" and the two coordinates' arrays).  box: "x=A:B, y=C:D"
-        (two coordinates, across and up); level: a number or an expression
-        in the parameters; cells: grid cells each way (--cells; the CLI's
-        default 400).  The other coordinates are 0."""
-        core = self._core
+        (two coordinates, across and up); the level, exactly one of
+        (qd_zvc_level_read): level, a number or an expression in the
+        parameters (--level); through, a point at rest ({name: value} or
+        "x=..., y=..."; --through), the level W there; at, a state
+        ("x=..., x'=..."; --at), h there.  The other coordinates are those
+        of the point (0 for a level).  cells: grid cells each way (--cells;
+        the CLI's default 400).  Errors in a text are qdot.ModelErrors shown
+        in it."""
+        from .linear import Point, located
+        core = self._for("zvc")
         if not isinstance(box, str):
             raise TypeError("zvc: box is text \"x=A:B, y=C:D\", not %s" % type(box).__name__)
         if isinstance(cells, bool) or not isinstance(cells, int) or not 2 <= cells <= 4000:
             raise ValueError("zvc: cells is a number of grid cells from 2 to 4000, not %r"
                              % (cells,))
-        e = core.eom_ptr()
+        p = Point(core)
+        e = p.e
         b, z, pic = new("qd_zvc_box"), new("qd_zvc"), new("qd_zvc_picture")
+        texts = {k: _commands.text_arg(v, k) for k, v in
+                 (("level", level), ("through", through), ("at", at))}
+        c = {k: v if v is not None else ffi.NULL for k, v in texts.items()}
         try:
-            core.check(lib.qd_zvc_box_read(core.ctx, core.model, e, box.encode(), b))
+            if e.n < 2:
+                raise ValueError("zvc: zero-velocity curves need two coordinates; the model "
+                                 "has %d" % e.n)
+            if lib.qd_zvc_box_read(core.ctx, core.model, e, box.encode(), b) != lib.QD_OK:
+                raise located(core, "box", box.encode())
             core.check(lib.qd_zvc_derive(core.ctx, core.model, e, z))
-            h = new("double")
-            core.check(lib.qd_model_number(core.ctx, core.model,
-                                           _commands.text_arg(level, "level"), h))
+            q, h = ffi.new("double[]", e.n + 1), new("double")
+            where = ffi.new("const char **")
+            if lib.qd_zvc_level_read(core.ctx, p.pt, z, c["level"], c["through"], c["at"], q,
+                                     h, where) != lib.QD_OK:
+                if where[0] == ffi.NULL:
+                    raise core.error(cls=ArgumentError)
+                which = next(k for k in c if c[k] == where[0])
+                raise located(core, which, ffi.string(texts[which]))
             b.nx = b.ny = cells
-            params = core.params()
-            syms = [lib.qd_time(core.ctx)] + [p[1] for p in params]
-            vals = [0.0] + [p[2] for p in params]
-            core.check(lib.qd_zvc_picture_make(core.ctx, core.model, e, z, b, len(syms),
-                                               exprs(syms), doubles(vals), h[0], True, pic))
+            st = p.pt.st
+            core.check(lib.qd_zvc_picture_make(core.ctx, core.model, e, z, b, st.n, st.syms,
+                                               st.vals, h[0], True, pic))
             return _commands.output(core, "zvc", lambda buf: lib.qd_zvc_json(
                 core.ctx, e, pic, buf))
         finally:
             lib.qd_zvc_picture_free(pic)
+            p.free()
 
     def impulse(self, at=None, prescribe=None):
         """The motion just after a blow, a sudden constraint or a collision
@@ -1004,7 +1082,7 @@ class Model:
         return _linear.equilibria(self._for("equilibria"), near, box)
 
     def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False,
-              independent=None):
+              independent=None, scan=None, steps=None):
         """Small oscillations about a point at rest (a Modes list of Mode),
         as `qdot modes` takes it: about ({coordinate: value}, the others 0,
         an Equilibrium, or "q1=VALUE, ..." text; --about), at_equilibrium
@@ -1029,9 +1107,16 @@ class Model:
         K, modes, ...).  A model with `speeds`: the eigenvalues of the
         reduced system about about's coordinates and speeds, or the first
         equilibrium (qd_speeds_modes_print's keys: state, kept, ignorable,
-        eigenvalues, verdict)."""
+        eigenvalues, verdict).
+
+        scan ("NAME=A:B" or (name, a, b); --scan): the point (about, which
+        may be written in the parameters, "x = 1/2 - mu", or the equilibrium
+        chosen at A) followed as the parameter goes from A to B in steps
+        (--steps; 200 by default), and where its stability changes
+        (qd_modes_scan_text): a qdot.Output with parameter, range, steps,
+        samples and transitions, not a Modes."""
         return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry,
-                             independent)
+                             independent, scan, steps)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from

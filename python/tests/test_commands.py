@@ -328,6 +328,27 @@ def test_stability_conical_pendulum():
     d = qdot.Model.load(bowl).stability(driven="phi' = 2")
     assert d.kind == "driven"
     same(d.json, cli("stability", bowl, "--driven", "phi' = 2"))
+    with pytest.raises(qdot.ModelError, match="not a coordinate") as err:
+        m.stability(ignore="phi", at={"thta": 1})
+    assert err.value.file == "at" and err.value.hint == "did you mean 'theta'?"
+
+
+def test_stability_scan_sleeping_top():
+    # the sleeping top (Britannica 1911 Dynamics sec. 6 (1), seed 004;
+    # seed-goldstein-britannica.md B11) is stable while nu^2 > 4 A M g h:
+    # with nu = 3, A = 1, M = 1, h = 1/2, up to g = 4.5
+    path = os.path.join(EXAMPLES, "sleeping_top.qd")
+    top = qdot.Model.load(path)
+    s = top.stability(ignore="psi", momentum="p_psi=3", scan="g=1:8")
+    assert s.transitions[-1].g == pytest.approx(9 / (4 * 1 * 1 * 0.5), rel=1e-9)
+    assert s.transitions[-1].to == "unstable" and s.samples[0].verdict == "stable"
+    same(s.json, cli("stability", path, "--ignore", "psi", "--momentum", "p_psi=3",
+                     "--scan", "g=1:8"))
+    with pytest.raises(qdot.ModelError) as err:
+        top.stability(ignore="psi", momentum="p_psi=3", scan="g=1")
+    assert err.value.file == "scan"
+    with pytest.raises(ValueError, match="steps is the number of steps of scan"):
+        top.stability(ignore="psi", steps=3)
 
 
 # ---- zvc ---------------------------------------------------------------------
@@ -345,6 +366,29 @@ def test_zvc_henon_heiles():
                      "--cells", "100"))
     with pytest.raises(ValueError):
         qdot.Model.load(path).zvc("x=-1:1, y=-1:1", 0.1, cells=1)
+
+
+def test_zvc_level_through_a_point_and_at_a_state():
+    # Henon-Heiles (examples/henon_heiles.qd): W = (x^2 + y^2)/2 + x^2 y - y^3/3,
+    # h = W + (x'^2 + y'^2)/2: through (0.5, 0) at rest, or from the origin
+    # with x' = 0.5, the level is 1/8
+    path = os.path.join(EXAMPLES, "henon_heiles.qd")
+    hh = qdot.Model.load(path)
+    through = hh.zvc("x=-1:1, y=-1:1", through={"x": 0.5, "y": 0}, cells=60)
+    at = hh.zvc("x=-1:1, y=-1:1", at="x=0, y=0, x'=0.5", cells=60)
+    assert through.level == at.level == pytest.approx(0.125, rel=1e-15)
+    assert through.json == hh.zvc("x=-1:1, y=-1:1", 0.125, cells=60).json
+    same(through.json, cli("zvc", path, "--box", "x=-1:1, y=-1:1", "--through", "x=0.5, y=0",
+                           "--cells", "60"))
+    with pytest.raises(qdot.ModelError) as err:
+        hh.zvc("x=-1:1, y=-1:1", through="x=0.5, x'=1")
+    assert err.value.file == "through"
+    with pytest.raises(qdot.ArgumentError, match="give the level once"):
+        hh.zvc("x=-1:1, y=-1:1", 0.1, through="x=0")
+    with pytest.raises(qdot.ModelError) as err:
+        hh.zvc("x=-1:1, z=-1:1", 0.1)
+    assert err.value.file == "box"
+
 
 
 # ---- impulse -----------------------------------------------------------------
@@ -513,3 +557,34 @@ def test_output_fields():
     with pytest.raises(AttributeError):
         out.energy = 1.0
     assert out._repr_latex_() is None         # orbit has no LaTeX printer
+
+
+def test_hamiltonian_at_reads_as_the_cli(tmp_path):
+    # H = p^2/(2m) + k x^2/2; the names --at does not give are 0, not the
+    # model's initial x = 1: at p_x = 2 alone H = 4/4 = 1
+    path = model_file(tmp_path, OSCILLATOR)
+    h = qdot.Model.load(path).hamiltonian(at={"p_x": 2})
+    assert h.output.H == pytest.approx(2.0**2 / (2 * 2), rel=1e-15)
+    assert h.output.dp_dt == pytest.approx([0.0], abs=0)
+    assert h.output.dq_dt == pytest.approx([2.0 / 2], rel=1e-15)
+    same(h.json, cli("hamiltonian", path, "--at", "p_x=2"))
+    with pytest.raises(qdot.ModelError, match="unknown name") as err:
+        qdot.Model.load(path).hamiltonian(at="p_y=1")
+    assert err.value.file == "at"
+
+
+def test_action_of_a_model_given_by_h_takes_its_momenta(tmp_path):
+    # H = p^2/(2m) + k q^2/2 at q = 1, p = 0.5: E = 0.625, J = 2 pi E/omega,
+    # omega = sqrt(k/m) = 2; q' = p/m = 0.25 gives the same J
+    text = "coordinates q\nmomenta p\nparameters m = 2, k = 8\nH = p^2/(2*m) + k*q^2/2\n"
+    path = model_file(tmp_path, text)
+    m = qdot.Model.load(path)
+    E = 0.5**2 / (2 * 2) + 8 / 2
+    by_p = m.action(at={"q": 1, "p": 0.5})
+    assert by_p.energy == pytest.approx(E, rel=1e-15)
+    assert by_p.actions.q == pytest.approx(2 * math.pi * E / 2, rel=1e-12)
+    assert m.action(at="q=1, q'=0.25").actions.q == pytest.approx(by_p.actions.q, rel=1e-14)
+    same(by_p.json, cli("action", path, "--at", "q=1.0, p=0.5"))
+    with pytest.raises(qdot.ModelError, match="unknown name") as err:
+        m.action(at="z=1")
+    assert err.value.file == "at"

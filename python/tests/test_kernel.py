@@ -135,3 +135,18 @@ def test_codegen_compiles_to_the_equations(tmp_path):
     assert e == pytest.approx(-9.81 * (2 * math.cos(0.5) + math.cos(0.5)), rel=1e-12)
     with pytest.raises(ValueError, match="C identifier"):
         model.codegen(prefix="2x")
+
+
+def test_eom_at_a_state_is_the_clis_request():
+    # the double pendulum at rest at theta1 = 0.3, theta2 = 0 (Goldstein
+    # ch. 1 Ex. 22): M = [[2, cos 0.3], [cos 0.3, 1]], the forcing
+    # (-(m1 + m2) g l1 sin 0.3, 0)
+    path = os.path.join(EXAMPLES, "double_pendulum.qd")
+    e = qdot.Model.load(path).eom()
+    j = e.json(at={"theta1": 0.3})
+    assert j["mass_matrix"][0][1] == pytest.approx(math.cos(0.3), rel=1e-15)
+    assert j["forcing"] == pytest.approx([-2 * 9.81 * math.sin(0.3), 0], rel=1e-15)
+    assert j == cli("eom", path, "--at", "theta1=0.3")
+    with pytest.raises(qdot.ModelError, match="unknown name") as err:
+        e.json(at="theta3=1")
+    assert err.value.file == "at"

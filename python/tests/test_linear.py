@@ -176,3 +176,44 @@ def test_constrained_modes_on_the_manifold():
         pend.modes(symmetry=True)
     with pytest.raises(ValueError, match="keeps no constraints"):
         qdot.Model.load(DP).modes(independent="theta1")
+
+
+def test_modes_scan_finds_the_hoops_threshold():
+    # the bead on a hoop spinning at omega (Desloge ch. 50 ex. 1 eq. 39,
+    # seed 000): the bottom's stiffness m a^2 (g/a - omega^2) changes sign at
+    # omega = sqrt(g/a); below it w^2 = g/a - omega^2
+    path = os.path.join(EXAMPLES, "bead_spinning_hoop.qd")
+    hoop = qdot.Model.load(path)
+    g, a = hoop.params["g"], hoop.params["a"]
+    s = hoop.modes(scan="omega=1:6", about={"theta": 0}, steps=50)
+    (t,) = s.transitions
+    assert t.omega == pytest.approx(math.sqrt(g / a), rel=1e-12)
+    assert (t["from"], t.to) == ("stable", "unstable")
+    assert s.samples[0].min_omega2 == pytest.approx(g / a - 1, rel=1e-12)
+    same(s.json, cli("modes", path, "--scan", "omega=1:6", "--about", "theta=0",
+                     "--steps", "50"))
+    assert hoop.modes(scan=("omega", 1, 6), about="theta=0", steps=50).json == s.json
+    with pytest.raises(qdot.ModelError, match="unknown name") as err:
+        hoop.modes(scan="omega=1:6", about="thta=0")
+    assert err.value.file == "about"
+    with pytest.raises(qdot.ArgumentError, match="assumed positive"):
+        hoop.modes(scan="omega=-1:2")
+    with pytest.raises(ValueError, match="steps is the number of steps of scan"):
+        hoop.modes(steps=5)
+
+
+def test_speeds_modes_scan_finds_the_disks_threshold():
+    # the disk rolling upright is stable iff W^2 > g/(3a) (Neimark and
+    # Fufaev ch. III): the scan along the spin u2 crosses at sqrt(g/(3a)),
+    # where the lean's root is double (s = 0 twice: its eigenvalues move as
+    # the square root of the error, so the verdict's place is good to ~1e-9,
+    # the CLI's check_speeds_linear_cli allows 1e-8)
+    disk = qdot.Model.load(DISK)
+    a, g = disk.params["r"], disk.params["g"]
+    s = disk.modes(about="u2=6", scan="u2=1:8")
+    (t,) = s.transitions
+    assert t.u2 == pytest.approx(math.sqrt(g / (3 * a)), rel=1e-8)
+    assert (t["from"], t.to) == ("unstable", "stable")
+    same(s.json, cli("modes", DISK, "--about", "u2=6", "--scan", "u2=1:8"))
+    with pytest.raises(qdot.ArgumentError, match="not a parameter, coordinate or speed"):
+        disk.modes(scan="t=0:1")

@@ -7,6 +7,7 @@
  * and the equations are then in q, q', p, t.
  */
 #include "render.h"
+#include "qdot/state.h"
 
 #include <math.h>
 #include <string.h>
@@ -118,4 +119,22 @@ qd_status qd_ham_point_eval(qd_ctx *ctx, const qd_ham *h, size_t nvals,
     qd__free(s2);
     qd__free(v2);
     return st;
+}
+
+/* The state `qdot hamiltonian --at` reads: m's (every coordinate, velocity
+ * and t 0, the parameters at their values) with h's momenta after it. */
+qd_status qd_ham_point_at(qd_ctx *ctx, const qd_model *m, const qd_ham *h, const char *at,
+                          qd_ham_point *out) {
+    QD_ARGS_CTX(ctx, ctx && m && h && at && out);
+    memset(out, 0, sizeof *out);
+    qd_state st = {0};
+    qd_status s = qd_state_init(ctx, m, &st);
+    if (s == QD_OK)
+        s = qd_state_append(ctx, &st, h->n, h->p, NULL);
+    if (s == QD_OK)
+        s = qd_state_read(ctx, m, &st, at, NULL);
+    if (s == QD_OK)
+        s = qd_ham_point_eval(ctx, h, st.n, st.syms, st.vals, out);
+    qd_state_free(&st);
+    return s;
 }

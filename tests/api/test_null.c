@@ -172,6 +172,16 @@ static void null_action(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_action_at(F.ctx, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL));
     reset(&F);
+    /* ---- qd_action_state_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_state_read(NULL, F.model, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_state_read(F.ctx, NULL, "q", NULL));
+    reset(&F);
+    /* st NULL */
+    assert_int_equal(QD_ERR_ARG, qd_action_state_read(F.ctx, F.model, "q", NULL));
+    reset(&F);
     /* ---- qd_action_of_sep */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_action_of_sep(NULL, NULL, F.b, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_action *)(void *)F.blob));
@@ -3707,6 +3717,19 @@ static void null_modes(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_scan_json(NULL, NULL, NULL));
     reset(&F);
+    /* ---- qd_modes_scan_text */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(NULL, NULL, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(F.ctx, NULL, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* range NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(F.ctx, NULL, NULL, "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_modes_scan_text(F.ctx, NULL, "q", "q", 1, false, NULL, (const char * *)F.names));
+    reset(&F);
     /* ---- qd_speeds_linear_about */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_linear_about(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, (qd_speeds_linear *)(void *)F.blob));
@@ -3755,6 +3778,25 @@ static void null_modes(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, F.q, 1, 1, NULL, NULL));
+    reset(&F);
+    /* ---- qd_speeds_modes_scan_text */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(NULL, NULL, 1, (const qd_expr * const *)F.e, F.d, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* syms NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, NULL, F.d, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* vals NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, NULL, "q", "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* range NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, "q", 1, false, &F.buf, (const char * *)F.names));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_speeds_modes_scan_text(F.ctx, NULL, 1, (const qd_expr * const *)F.e, F.d, "q", "q", 1, false, NULL, (const char * *)F.names));
     reset(&F);
     /* ---- qd_speeds_modes_print */
     /* ctx NULL */
@@ -5055,6 +5097,22 @@ static void null_render(void **state)
     /* ---- qd_ham_point_free */
     /* pt NULL */
     qd_ham_point_free(NULL);
+    reset(&F);
+    /* ---- qd_ham_point_at */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(NULL, F.model, NULL, "q", (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, NULL, NULL, "q", (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, F.model, NULL, "q", (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* at NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, F.model, NULL, NULL, (qd_ham_point *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_ham_point_at(F.ctx, F.model, NULL, "q", NULL));
     reset(&F);
     /* ---- qd_render_hamiltonian */
     /* ctx NULL */
@@ -7275,6 +7333,19 @@ static void null_zvc(void **state)
     /* ---- qd_zvc_picture_free */
     /* p NULL */
     qd_zvc_picture_free(NULL);
+    reset(&F);
+    /* ---- qd_zvc_level_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(NULL, NULL, NULL, "q", "q", "q", F.d, F.d, (const char * *)F.names));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(F.ctx, NULL, NULL, "q", "q", "q", F.d, F.d, (const char * *)F.names));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(F.ctx, NULL, NULL, "q", "q", "q", NULL, F.d, (const char * *)F.names));
+    reset(&F);
+    /* h NULL */
+    assert_int_equal(QD_ERR_ARG, qd_zvc_level_read(F.ctx, NULL, NULL, "q", "q", "q", F.d, NULL, (const char * *)F.names));
     reset(&F);
     /* ---- qd_zvc_print */
     /* ctx NULL */
