@@ -7138,28 +7138,6 @@ static void null_symmetry(void **state)
     /* e NULL */
     qd_symmetry_json_modes(NULL, NULL, NULL);
     reset(&F);
-    /* ---- qd_symmetry_modes_plot */
-    /* ctx NULL */
-    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
-    reset(&F);
-    /* e NULL */
-    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, NULL, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
-    reset(&F);
-    /* m NULL */
-    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, NULL, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
-    reset(&F);
-    /* syms NULL */
-    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, NULL, F.d, NULL, NULL, "q", NULL));
-    reset(&F);
-    /* vals NULL */
-    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, NULL, NULL, NULL, "q", NULL));
-    reset(&F);
-    /* res NULL */
-    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, "q", NULL));
-    reset(&F);
-    /* title NULL */
-    assert_int_equal(QD_ERR_ARG, qd_symmetry_modes_plot(F.ctx, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, NULL, NULL, NULL));
-    reset(&F);
     /* ---- qd_cyclic_print */
     /* c NULL */
     assert_int_equal(QD_ERR_ARG, qd_cyclic_print(NULL, &F.buf));
