@@ -101,8 +101,9 @@ def poincare(core, section, crossings, t_end, method, rtol, atol, dt, step, init
     opts = setup.options(1e6 if t_end is None else t_end, method, rtol, atol, dt, step,
                          max_steps)
     keep = [ffi.new("char[]", t.encode()) if t is not None else ffi.NULL for t in texts]
-    orb = new("qd_poincare_orbits", {"n": len(orbits),
-                                     "initial": ffi.new("const char *[]", keep)})
+    # a struct field does not own what it points to: the array lives in a name
+    initial_c = ffi.new("const char *[]", keep)
+    orb = new("qd_poincare_orbits", {"n": len(orbits), "initial": initial_c})
     at = ffi.new("size_t *")
     if lib.qd_poincare_orbits_check(core.ctx, setup.ptr, opts, orb, at) != QD_OK:
         raise _text_error(core, "initial", texts[at[0]] or "")
