@@ -74,11 +74,12 @@ QD_API size_t qd_sim_setup_state(const qd_sim_setup *s, const qd_expr *const **s
                                  const double **vals);
 
 /* "NAME=VALUE, ..." onto the initial state: NAME a coordinate, a velocity
- * NAME', t (the `independent` variable's name), a parameter, a momentum or
- * a speed; VALUE a constant expression in the parameters ("pi/2", "r0").
- * When it names a velocity, the model's initial speeds it does not name
- * give way (they follow from the velocities); momenta not named are 0.  An
- * unknown name (with "did you mean" the nearest), a name given twice, an
+ * NAME', t (the `independent` variable's name), a momentum or a speed;
+ * VALUE a constant expression in the parameters ("pi/2", "r0").  When it
+ * names a velocity, the model's initial speeds it does not name give way
+ * (they follow from the velocities); momenta not named are 0.  An unknown
+ * name (with "did you mean" the nearest), a parameter (its value is the
+ * model's, or --set's: a run never changes it), a name given twice, an
  * item that is not NAME=VALUE or a value that does not evaluate is
  * QD_ERR_ARG located in text.  Once, before qd_sim_setup_options. */
 QD_API qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text);

@@ -313,6 +313,12 @@ qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text) {
             size_t i = slot_of(s, text, na, nb - na);
             if (i == s->n)
                 st = QD_ERR_ARG;
+            else if (i > 2 * s->nq && i < s->n - s->extra) /* the run's parameters are fixed */
+                st = QD_ERR_ARG, qd_ctx_error(s->ctx, st, "'%.*s' is a parameter, not part of "
+                                              "the state: its value is given by --set %.*s=VALUE",
+                                              (int)(nb - na), text + na, (int)(nb - na),
+                                              text + na),
+                qd_ctx_error_at(s->ctx, text, na, nb - na);
             else if (given[i])
                 st = QD_ERR_ARG, qd_ctx_error(s->ctx, st, "'%.*s' is given twice",
                                               (int)(nb - na), text + na),

@@ -132,6 +132,14 @@ static void test_errors(void **state) {
     assert_non_null(strstr(d->message, "'x' is given twice"));
     assert_true(d->offset == 5);
     done(s, m);
+    /* a parameter is not the state's: a run never changes it (it was
+     * taken and ignored, the motion that of the model's k) */
+    s = fresh(ctx, &m);
+    assert_int_equal(qd_sim_setup_initial(s, "x=1, k=2"), QD_ERR_ARG);
+    assert_true(d->located && d->offset == 5 && d->length == 1);
+    assert_non_null(strstr(d->message, "'k' is a parameter"));
+    assert_non_null(strstr(d->message, "--set k=VALUE"));
+    done(s, m);
     /* a value in the parameters, misspelt: located in the whole text */
     s = fresh(ctx, &m);
     assert_int_equal(qd_sim_setup_initial(s, "x=mm"), QD_ERR_ARG);
