@@ -37,17 +37,18 @@ def check(name, ok, detail=""):
         print("FAIL %s %s" % (name, detail))
 
 
-def interrupt(name, argv, out, min_lines):
+def run_and_interrupt(name, argv, ready):
+    """argv started, SIGINT sent once ready(p) holds; its exit 130 and its
+    "interrupted at t = T" checked.  The match of T, or None (and False when
+    the run could not be interrupted)."""
     p = subprocess.Popen([str(a) for a in argv], stdout=subprocess.DEVNULL,
                          stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + 120
-    while time.monotonic() < deadline and p.poll() is None:
-        if out.exists() and out.read_bytes().count(b"\n") >= min_lines:
-            break
+    while time.monotonic() < deadline and p.poll() is None and not ready(p):
         time.sleep(0.01)
     if p.poll() is not None:
         check("%s: still running when interrupted (precondition)" % name, False, p.stderr.read())
-        return
+        return False
     p.send_signal(signal.SIGINT)
     try:
         _, err = p.communicate(timeout=60)
@@ -55,10 +56,18 @@ def interrupt(name, argv, out, min_lines):
         p.kill()
         p.communicate()
         check("%s: stops after SIGINT" % name, False)
-        return
+        return False
     check("%s: exit 130" % name, p.returncode == 130, "exit %d %r" % (p.returncode, err))
     m = re.search(r"interrupted at t = (\S+?)[;, ]", err)
     check("%s: says where it was interrupted" % name, m is not None, repr(err))
+    return m
+
+
+def interrupt(name, argv, out, min_lines):
+    m = run_and_interrupt(name, argv, lambda _p: out.exists() and
+                          out.read_bytes().count(b"\n") >= min_lines)
+    if m is False:
+        return
     data = out.read_bytes().decode()
     check("%s: the file ends with a whole line" % name, data.endswith("\n"), repr(data[-80:]))
     lines = data.splitlines()
@@ -86,26 +95,10 @@ def catches_sigint(pid):
 
 def interrupt_animate(qdot, model, page):
     name = "animate -o"
-    p = subprocess.Popen([str(qdot), "animate", str(model), "--t-end", "1e7", "--rtol", "1e-12",
-                          "-o", str(page)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                         text=True)
-    deadline = time.monotonic() + 120
-    while time.monotonic() < deadline and p.poll() is None and not catches_sigint(p.pid):
-        time.sleep(0.01)
-    if p.poll() is not None:
-        check("%s: still running when interrupted (precondition)" % name, False, p.stderr.read())
+    m = run_and_interrupt(name, [qdot, "animate", model, "--t-end", "1e7", "--rtol", "1e-12",
+                                 "-o", page], lambda p: catches_sigint(p.pid))
+    if m is False:
         return
-    p.send_signal(signal.SIGINT)
-    try:
-        _, err = p.communicate(timeout=60)
-    except subprocess.TimeoutExpired:
-        p.kill()
-        p.communicate()
-        check("%s: stops after SIGINT" % name, False)
-        return
-    check("%s: exit 130" % name, p.returncode == 130, "exit %d %r" % (p.returncode, err))
-    m = re.search(r"interrupted at t = (\S+?)[;, ]", err)
-    check("%s: says where it was interrupted" % name, m is not None, repr(err))
     html = page.read_text() if page.exists() else ""
     check("%s: the page is written" % name, "</html>" in html.lower(), repr(html[-80:]))
     if m:
