@@ -45,9 +45,23 @@ static const cli_opt stdout_opt = {"--out", "-o", CLI_TEXT, 0, "FILE",
                                    "write the output to FILE (default: standard output)", NULL,
                                    NULL};
 
+/* Options renamed so that one word means one thing in every command
+ * (issue 31): the old spelling still works where the command has the new
+ * one, with a warning. */
+static const struct {
+    const char *old, *now, *why;
+} renamed[] = {
+    {"--near", "--guess", "the starting point of a search, as in stability and path"},
+};
+
 static const cli_opt *lookup_or_out(const cli_spec *spec, const char *arg, size_t len,
                                     size_t *base) {
     const cli_opt *o = lookup(spec, arg, len, base);
+    for (size_t k = 0; !o && k < sizeof renamed / sizeof renamed[0]; k++)
+        if (same(renamed[k].old, arg, len) &&
+            (o = lookup(spec, renamed[k].now, strlen(renamed[k].now), base)) != NULL)
+            fprintf(stderr, "qdot: warning: %s is now %s (%s)\n", renamed[k].old,
+                    renamed[k].now, renamed[k].why);
     if (!o && (same(stdout_opt.name, arg, len) || same(stdout_opt.alias, arg, len)) &&
         !lookup(spec, stdout_opt.name, strlen(stdout_opt.name), base))
         o = &stdout_opt;

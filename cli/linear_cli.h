@@ -1,7 +1,7 @@
 /*
  * cli/linear_cli.h - what `qdot equilibria` and `qdot modes` share: a model
  * loaded with its --set values, its equations derived (holonomic
- * constraints eliminated), the state of the parameters, and the --near /
+ * constraints eliminated), the state of the parameters, and the --guess /
  * --box / --about lists read against the coordinates.
  */
 #ifndef QDOT_CLI_LINEAR_CLI_H
@@ -36,8 +36,8 @@ void cli_lin_free(cli_lin_run *r);
 /* qd_linpoint_read (qd NULL: qd_linpoint_read_coords) of the option what's
  * text ("--initial"), its error shown under that text. */
 int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q, double *qd);
-/* Equilibria with the options (near, box may be NULL). */
-int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out);
+/* Equilibria with the options (guess, box may be NULL). */
+int cli_lin_equilibria(cli_lin_run *r, const char *guess, const char *box, qd_equilibria *out);
 
 
 /* ---- models with speeds (speeds_lin_cli.c) ---------------------------------
