@@ -37,7 +37,7 @@ NULLABLE = {
     'qd_codegen_speeds_c': {'h_text'},
     'qd_codegen_model_c': {'h_text', 'prefix'},  # issue 32: as qd_codegen_c's
     'qd_modes_rest_note': {'out'},  # issue 32: NULL asks only whether there is a note
-    'qd_equilibria_find_text': {'near', 'box', 'where'},  # issue 32: options not given
+    'qd_equilibria_find_text': {'guess', 'box', 'where'},  # issue 32: options not given
     'qd_modes_scan_text': {'about', 'where'},  # issue 32: the chosen equilibrium; not wanted
     'qd_zvc_level_read': {'level', 'through', 'at', 'where'},  # issue 32: one of three
     'qd_action_state_read': {'at'},  # issue 32: the model's initial state alone
