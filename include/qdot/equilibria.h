@@ -82,8 +82,12 @@ typedef struct qd_equilibria_opts {
                                 applies) */
 } qd_equilibria_opts;
 
-/* Which coordinates are angles (appear inside sin or cos of f at rest, T or
- * V), and the default box: angles [-pi, pi], others [-10, 10]. */
+/* Which coordinates are angles, and the default box: angles [-pi, pi],
+ * others [-10, 10].  An angle is a coordinate the equations f, L, T and V
+ * are 2 pi-periodic in: it appears inside sin, cos or tan and only there,
+ * each time as k q + (terms free of q) with k a nonzero integer (a pendulum
+ * angle that a spring also stretches, V = k/2 (th2 - th1)^2, is not one).
+ * QD_ERR_NOMEM when memory runs out. */
 QD_API qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi);
 
