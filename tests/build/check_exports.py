@@ -23,7 +23,9 @@ src/ reaches above itself (docs/design.md, "Architecture").
    explicit list (INTERFACE): a new user, a new interface header, or an
    entry no longer used fails.  An interface header declares only M's
    internal names (its prefix), includes only public, base, SHARED or lower
-   interface headers (so it cannot pass M's private headers on).
+   interface headers (so it cannot pass M's private headers on).  A type
+   defined in src/ with the public prefix qd_ is a public one (an opaque
+   type's body); internal types carry the internal prefix.
 4. The program: cli/ includes only public headers (qdot/x.h) and its own,
    and stays within CLI_MAX_LINES (issue 31: a thin program over libqdot).
 
@@ -161,10 +163,21 @@ if not a.layers_only:
 inc = re.compile(r'^\s*#\s*include\s+"(?:\.\./)?([a-z_]+)/([\w.]+)"', re.M)
 inc_local = re.compile(r'^\s*#\s*include\s+"([\w.]+)"', re.M)
 used_by = {}  # interface header -> the modules above it that include it
+# A type named qd_... in src/ is a public one's (its body, an opaque type's):
+# internal types carry the internal prefix, as internal globals do.
+public_names = set()
+for h in glob.glob(os.path.join(a.root, "include/qdot/*.h")):
+    public_names |= set(re.findall(r"\bqd_[a-z]\w*", open(h, encoding="utf-8").read()))
+typedef = re.compile(r"^\s*(?:typedef\s+)?(?:struct|union|enum)\s+(qd_[a-z]\w*)\s*\{"
+                     r"|^\s*\}\s*(qd_[a-z]\w*)\s*;|^\s*typedef\b[^;{]*?\b(qd_[a-z]\w*)\s*;", re.M)
 for path in sorted(glob.glob(os.path.join(a.root, "src", "*", "*.[ch]"))):
     rel = os.path.relpath(path, a.root)
     mod = rel.split(os.sep)[1]
     text = open(path, encoding="utf-8").read()
+    for t in sorted({n for m in typedef.finditer(text) for n in m.groups() if n}):
+        if t not in public_names:
+            problems.append(f"{rel}: internal type {t} has the public prefix qd_ "
+                            f"(internal: qd__{'' if mod in KERNEL else PREFIX.get(mod, '?') + '_'}...)")
     for m in inc.finditer(text):
         to, hdr = m.group(1), f"{m.group(1)}/{m.group(2)}"
         if to == "qdot" or to == mod or to not in RANK or mod not in RANK:

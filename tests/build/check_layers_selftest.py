@@ -3,15 +3,16 @@
 tests/build/check_exports.py fail when broken (issue 31).
 
 check_exports.py passing on the tree shows only that nothing is broken
-today.  Here each rule is broken once, in a copy of src/ and cli/, and
+today.  Here each rule is broken once, in a copy of src/, cli/ and include/, and
 check_exports.py --layers-only must exit 1 naming that break, while the
 untouched copy passes: a private header of mech included from hj (the
 include the issue counted, mech/legendre.h), an interface header included
 by a module its allow-list does not name, an include reaching above the
 including module, an interface header passing on its module's private
 header, an interface header the list does not know, a listed user that no
-longer includes its interface, a private header included from cli/, and
-cli/ grown past its line budget.
+longer includes its interface, an internal type named with the public
+prefix, a private header included from cli/, and cli/ grown past its line
+budget.
 """
 import argparse, os, re, shutil, subprocess, sys, tempfile
 
@@ -23,7 +24,7 @@ failures = []
 
 
 def copy_tree(dst):
-    for d in ("src", "cli"):
+    for d in ("src", "cli", "include"):
         shutil.copytree(os.path.join(a.root, d), os.path.join(dst, d),
                         ignore=shutil.ignore_patterns("*.o", "__pycache__"))
 
@@ -95,6 +96,9 @@ CASES = [
      lambda r: [drop_include(r, f, "mech/mech_export.h")
                 for f in users_of(r, "mech/mech_export.h") if f.startswith("src/linear/")],
      "INTERFACE lists src/linear for mech/mech_export.h, which it no longer includes"),
+    ("an internal type with the public prefix",
+     lambda r: add_include(r, "src/sym/prec.h", "typedef struct qd_split { int n; } qd_split;"),
+     "src/sym/prec.h: internal type qd_split has the public prefix qd_"),
     ("a private header included from the program",
      lambda r: add_include(r, "cli/main.c", '#include "../src/sim/simint.h"'),
      "cli/main.c includes ../src/sim/simint.h: the program includes only public headers"),
