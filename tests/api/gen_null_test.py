@@ -94,7 +94,6 @@ NULLABLE = {
     'qd_metric_print': {'G'},
     'qd_metric_json': {'G'},
     'qd_path_print': {'opts'},
-    'qd_poincare_summary_print': {'prefix'},  # issue 31: poincare --format json
     'qd_poincare_json_begin': {'model', 'names'},
     'qd_json_add_model': {'model'},
     'qd_legendre_inverse_p': {'pdef'},

@@ -2649,13 +2649,6 @@ static void null_lyapunov(void **state)
     /* opts NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
     reset(&F);
-    /* ---- qd_poincare_summary_print */
-    /* r NULL */
-    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", &F.buf));
-    reset(&F);
-    /* out NULL */
-    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", NULL));
-    reset(&F);
     /* ---- qd_poincare_json_begin */
     /* j NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_json_begin(NULL, "q", 1, (const char * const *)F.names, false));
