@@ -65,7 +65,7 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
                                a->scan ? "--scan" : "--independent");
     cli_lin_run r = {.c = {.ctx = ctx, .mf = *mf}, .e = e};
     const cli_conlin_args ca = {a->about, a->independent, a->scan, a->lqr, fmt[a->format], 0,
-                                false};
+                                false, NULL, NULL};
     int rc = cli_lin_setup(&r);
     if (rc == QD_EXIT_OK)
         rc = cli_conlin(&r, &ca);

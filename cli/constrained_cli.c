@@ -47,12 +47,12 @@ int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json
 }
 
 /* The point (qd_conlin_start), a note naming the equilibrium it took. */
-static int start(cli_lin_run *r, const cli_conlin_args *a) {
+static int start(cli_lin_run *r, const cli_conlin_args *a, const char *opt) {
     qd_equilibrium_choice ch = {0};
     qd_ctx *ctx = r->c.ctx;
     int rc = QD_EXIT_OK;
     if (qd_conlin_start(ctx, r->e, r->c.mf.model, &r->pt, a->about, &ch) != QD_OK)
-        rc = a->about && qd_ctx_diag(ctx)->located ? cli_state_diag(ctx, "--about", a->about)
+        rc = a->about && qd_ctx_diag(ctx)->located ? cli_state_diag(ctx, opt, a->about)
                                                    : cli_diag_ctx(ctx);
     qd_buf b = QD_BUF_INIT;
     if (rc == QD_EXIT_OK && ch.pt && a->fmt == QD_SS_TEXT &&
@@ -71,9 +71,10 @@ int cli_conlin(cli_lin_run *r, const cli_conlin_args *a) {
     qd_buf b = QD_BUF_INIT;
     char name[128];
     double lo = 0, hi = 0;
+    const char *opt = a->about_opt ? a->about_opt : "--about";
     int rc = a->scan ? cli_scan_range(ctx, a->scan, name, sizeof name, &lo, &hi) : QD_EXIT_OK;
     if (rc == QD_EXIT_OK && a->scan && qd_conlin_point(ctx, r->c.mf.model, &r->pt, a->about))
-        rc = cli_state_diag(ctx, "--about", a->about);
+        rc = cli_state_diag(ctx, opt, a->about);
     else if (rc == QD_EXIT_OK && a->scan &&
              qd_conlin_scan_run(ctx, r->e, r->c.mf.model, &r->pt, a->about, a->independent, name,
                                 lo, hi, a->steps ? a->steps : 100, &sc) != QD_OK)
@@ -81,9 +82,11 @@ int cli_conlin(cli_lin_run *r, const cli_conlin_args *a) {
     else if (rc == QD_EXIT_OK && a->scan)
         rc = cli_emit_status(ctx, qd_conlin_scan_print(&sc, name, a->fmt == QD_SS_JSON, &b), &b,
                              "scan");
-    else if (rc == QD_EXIT_OK && (rc = start(r, a)) == QD_EXIT_OK &&
+    else if (rc == QD_EXIT_OK && (rc = start(r, a, opt)) == QD_EXIT_OK &&
              qd_conlin_about(ctx, r->e, r->c.mf.model, &r->pt, a->independent, &c) != QD_OK)
         rc = cli_state_diag(ctx, "--independent", a->independent);
+    else if (rc == QD_EXIT_OK && a->ignore && qd_conlin_require_ignorable(ctx, &c, a->ignore))
+        rc = cli_state_diag(ctx, "--ignore", a->ignore);
     else if (rc == QD_EXIT_OK && a->lqr) /* on the core: the ignorable states' s = 0 */
         rc = qd_conlin_keep_core(ctx, &c) ? cli_diag_ctx(ctx)
                                           : cli_lqr_design(ctx, &c.ss, a->lqr, &lqr);

@@ -66,6 +66,8 @@ typedef struct cli_conlin_args {
     int fmt;        /* qd_ss_format */
     size_t steps;
     bool modes;
+    const char *ignore;   /* stability --ignore: these must be ignorable, or NULL */
+    const char *about_opt; /* the option about came from (NULL: "--about") */
 } cli_conlin_args;
 int cli_conlin(cli_lin_run *r, const cli_conlin_args *a);
 

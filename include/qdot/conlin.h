@@ -88,7 +88,9 @@ typedef struct qd_conlin {
     const qd_expr **lambda_sym; /* ncon: their symbols (lambda_NAME) */
     double margin;          /* the core's largest Re s (-inf without a core) */
     double tol;             /* QD_CONLIN_MARGIN_TOL times the core's largest |s| (and 1) */
-    bool stable;            /* margin <= tol: no core eigenvalue has Re s > 0 */
+    bool steady;            /* x' vanishes in every core state (to 1e-9 of the point's
+                               scale): a steady motion, which the verdict is about */
+    bool stable;            /* steady and margin <= tol: no core eigenvalue has Re s > 0 */
     bool marginal;          /* stable with margin >= -tol: eigenvalues on the imaginary
                                axis (a conservative core, a family of steady motions) */
     qd_statespace ss;       /* A, B over the independent states (ss.states: q_j, q'_j),
@@ -150,6 +152,15 @@ QD_API qd_status qd_conlin_point(qd_ctx *ctx, const qd_model *m, qd_linpoint *pt
 QD_API qd_status qd_conlin_start(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
                                  qd_linpoint *pt, const char *about,
                                  qd_equilibrium_choice *choice);
+
+/* `qdot stability --ignore q1, x, y` on the manifold: each coordinate
+ * named (commas or spaces) is independent and ignorable in c, its
+ * steady motion's cyclic coordinate (src/linear/conlin_start.c).
+ * QD_ERR_ARG located at the first that is no coordinate of the
+ * equations, a dependent one, or not ignorable (another rate depends on
+ * it), and for a list of none. */
+QD_API qd_status qd_conlin_require_ignorable(qd_ctx *ctx, const qd_conlin *c,
+                                             const char *names);
 
 /* ---- along a parameter (src/linear/conlin_scan.c) ------------------------ */
 

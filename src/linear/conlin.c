@@ -401,6 +401,37 @@ static qd_status newton(cl_work *w, const size_t *dep, double *moved, double *re
     return st;
 }
 
+/* The caller's choice failed at the point: the error says which states
+ * the library would take there ("e.g. independent x, x'"), from the
+ * point as given. */
+static void suggest(cl_work *w, const double *given) {
+    size_t d = w->d, n = w->n;
+    size_t *dep = qd__calloc(w->ctx, d + 1, sizeof *dep);
+    char why[512];
+    snprintf(why, sizeof why, "%s", qd_ctx_message(w->ctx));
+    memcpy(w->val, given, 2 * n * sizeof *w->val);
+    qd_status st = dep ? con_eval(w) : QD_ERR_NOMEM;
+    qd_ctx_clear_error(w->ctx);
+    if (st == QD_OK && choose(w, dep, false) == QD_OK) {
+        qd_buf b = QD_BUF_INIT;
+        char nm[160];
+        for (size_t k = 0, dd = 0, i = 0; k < 2 * n; k++) {
+            if (dd < d && dep[dd] == k)
+                dd++;
+            else
+                qd_buf_printf(&b, "%s%s", i++ ? ", " : "", state_name(w, k, nm, sizeof nm));
+        }
+        qd_ctx_clear_error(w->ctx);
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "%s; e.g. --independent \"%s\"", why,
+                     b.failed ? "..." : qd_buf_str(&b));
+        qd_buf_free(&b);
+    } else {
+        qd_ctx_clear_error(w->ctx);
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "%s", why);
+    }
+    qd__free(dep);
+}
+
 /* ---- the Jacobians ------------------------------------------------------------- */
 
 /* dF/d(z, u) (2n rows, nv = 2n + nu columns) at the point, and q'' there. */
@@ -752,7 +783,14 @@ static void judge(qd_conlin *c) {
         big = fmax(big, hypot(c->core_re[k], c->core_im[k]));
     c->tol = QD_CONLIN_MARGIN_TOL * big;
     c->margin = c->ncore ? c->core_re[0] : -INFINITY;
-    c->stable = c->margin <= c->tol;
+    double scale = 1, moving = 0;
+    for (size_t k = 0; k < 2 * c->n; k++)
+        scale = fmax(scale, fabs(c->z[k]));
+    for (size_t i = 0; i < c->nx; i++)
+        if (!c->ignorable[i])
+            moving = fmax(moving, fabs(c->ss.xdot0[i]));
+    c->steady = moving <= 1e-9 * scale;
+    c->stable = c->steady && c->margin <= c->tol;
     c->marginal = c->stable && c->margin >= -c->tol;
 }
 
@@ -785,6 +823,8 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
         out->given[k] = w.val[k];
     if (st == QD_OK)
         st = newton(&w, out->dep, &out->moved, &out->residual);
+    if (st == QD_ERR_ARG && independent)
+        suggest(&w, out->given);
     for (size_t k = 0, i = 0, dd = 0; st == QD_OK && k < 2 * n; k++) {
         if (dd < w.d && out->dep[dd] == k)
             dd++;

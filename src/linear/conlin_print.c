@@ -80,14 +80,18 @@ static void text(qd_buf *b, const qd_conlin *c) {
 }
 
 static const char *verdict(const qd_conlin *c) {
-    return !c->stable ? "unstable" : c->marginal ? "marginally stable" : "stable";
+    return !c->steady ? "not steady" : !c->stable ? "unstable"
+           : c->marginal ? "marginally stable" : "stable";
 }
 
 /* The verdict line of the text: the core decides (qdot/conlin.h). */
 static void verdict_text(qd_buf *b, const qd_conlin *c) {
     char v[QD_DOUBLE_MAX];
     qd_double_format(v, c->margin == 0 ? 0 : c->margin);
-    if (!c->ncore)
+    if (!c->steady)
+        qd_buf_puts(b, "verdict: none (not a steady motion: the states not ignorable move, "
+                       "x' != 0 there)\n");
+    else if (!c->ncore)
         qd_buf_puts(b, "verdict: marginally stable (every state ignorable: only zero "
                        "eigenvalues)\n");
     else if (!c->stable)
@@ -139,7 +143,10 @@ static void json(qd_json *j, const qd_conlin *c) {
     }
     qd_json_end_object(j);
     qd_json_key(j, "stable");
-    qd_json_bool(j, c->stable);
+    if (c->steady)
+        qd_json_bool(j, c->stable);
+    else
+        qd_json_null(j);
     qd_json_key(j, "marginal");
     qd_json_bool(j, c->marginal);
     qd_json_key(j, "verdict");
