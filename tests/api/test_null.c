@@ -714,6 +714,35 @@ static void null_conlin(void **state)
     /* pt NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_point(F.ctx, F.model, NULL, "q"));
     reset(&F);
+    /* ---- qd_conlin_start */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(NULL, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, NULL, F.model, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, NULL, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* about NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, NULL, NULL));
+    reset(&F);
+    /* choice NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* ---- qd_conlin_require_ignorable */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_require_ignorable(NULL, NULL, "q"));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_require_ignorable(F.ctx, NULL, "q"));
+    reset(&F);
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_require_ignorable(F.ctx, NULL, NULL));
+    reset(&F);
     /* ---- qd_conlin_scan_run */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(NULL, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
@@ -753,6 +782,16 @@ static void null_conlin(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_render(F.ctx, NULL, NULL, (qd_ss_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_conlin_modes_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_modes_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_modes_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_modes_print(F.ctx, NULL, false, NULL));
     reset(&F);
     /* ---- qd_conlin_needed */
     /* e NULL */
