@@ -260,6 +260,13 @@ typedef struct qd_sim_opts {
      * numbers are the same bit for bit; without the JIT module (a build
      * without LLVM) the run is interpreted. */
     int jit;
+    /* Called after every step with its time (may be NULL): a progress bar,
+     * ^C.  A nonzero return stops the run there as the row callback's does
+     * (QD_STOP_CALLBACK): the rows written are whole.  A run whose rows are
+     * sparse (an output grid --dt, a crawl near a singular point) is then
+     * still seen and stopped between its rows. */
+    int (*progress)(void *data, double t);
+    void *progress_data;
 } qd_sim_opts;
 
 enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
@@ -270,7 +277,8 @@ enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
 /* Why a run stopped, as data (issue 31): the code, the time and the
  * quantity that decided it; qd_stop_str renders the code in English, and
  * the context's message says the rest (the cause, what to change).
- * value: the step h for QD_STOP_STEP_UNDERFLOW and QD_STOP_NO_CONVERGENCE,
+ * value: the step h for QD_STOP_STEP_UNDERFLOW, QD_STOP_STEP_COLLAPSE and
+ * QD_STOP_NO_CONVERGENCE,
  * the residual for QD_STOP_PROJECTION, the offending number (inf, NaN or the
  * energy) for QD_STOP_NONFINITE, the step limit for QD_STOP_STEP_LIMIT, the
  * event's index (in the order added) for QD_STOP_EVENT, the impact's for
@@ -290,6 +298,8 @@ typedef enum qd_stop_code {
     QD_STOP_PROJECTION,      /* the projection onto the constraints failed */
     QD_STOP_NONFINITE,       /* a state, energy, input or output not finite */
     QD_STOP_PAINLEVE,        /* friction: no or several consistent stick/slip modes */
+    QD_STOP_STEP_COLLAPSE,   /* the adaptive step shrank so far that max_steps cannot reach
+                              * t_end at its pace (a singular point: it crawls, not underflows) */
     QD_STOP_FAILURE          /* another failure: the status and message say which */
 } qd_stop_code;
 
@@ -495,7 +505,7 @@ typedef struct qd_sim_report {
 /* The machine name of a stop code, for programs: "none", "end", "event",
  * "contact", "callback", "refused", "step_underflow", "no_convergence",
  * "solver_failure", "step_limit", "singular", "projection", "nonfinite",
- * "painleve", "failure" (the QD_STOP_ names in lower case); "unknown"
+ * "painleve", "step_collapse", "failure" (the QD_STOP_ names in lower case); "unknown"
  * outside the enum.  qd_stop_str is the English for a reader. */
 QD_API const char *qd_stop_name(qd_stop_code code);
 /* The stop record as one JSON object (the value of a "stop" key, or an

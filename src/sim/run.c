@@ -802,6 +802,45 @@ static qd_status step(qd__sim_run *r, loop *L, size_t *grid) {
     return QD_OK;
 }
 
+/* An adaptive step that shrinks without reaching round-off (the methods'
+ * underflow test, 10 ulp of t) can crawl for hours near a point where the
+ * equations are singular: issue 37's Whipple bicycle, fallen over with its
+ * front wheel flat on the ground (where the rolling contact is undefined),
+ * took steps of 1e-8 s at a constant pace, the step limit of 1e8 hours
+ * away.  Every COLLAPSE_WINDOW steps the pace of the window is compared with
+ * the fastest window's and extrapolated to t_end: fallen more than
+ * COLLAPSE_DROP times and needing more than max_steps at that pace, the
+ * step has collapsed, named with its time and step.  Either test alone
+ * would misname a run: a pericentre passage slows a run briefly, and a run
+ * given few steps needs more than it has from the start. */
+#define COLLAPSE_WINDOW 1000
+#define COLLAPSE_DROP 1e3
+
+typedef struct pace {
+    double mark;    /* t at the window's start */
+    double fastest; /* the longest mean step of a window so far */
+} pace;
+
+static qd_status collapsed(qd__sim_run *r, const qd_sim_opts *o, pace *p) {
+    qd__sim_integ *it = r->it;
+    double mean = (it->t - p->mark) / COLLAPSE_WINDOW, left = o->t_end - it->t;
+    p->mark = it->t;
+    if (!(mean > 0)) /* an impact or a switch went back: no pace */
+        return QD_OK;
+    p->fastest = fmax(p->fastest, mean);
+    double need = left / mean;
+    if (mean * COLLAPSE_DROP > p->fastest || need <= (double)(max_steps(o) - it->steps))
+        return QD_OK;
+    qd__sim_stop(r->s, QD_STOP_STEP_COLLAPSE, it->t, it->h);
+    qd_ctx_error(r->s->ctx, QD_ERR_NUMERIC,
+                 "step size collapse at t = %.17g: %d steps of %.3g on average, %.2g times "
+                 "shorter than before; at that pace the end is %.3g steps away (the most is "
+                 "%zu): the equations are singular near there", it->t, COLLAPSE_WINDOW, mean,
+                 p->fastest / mean, need, max_steps(o));
+    qd_ctx_error_about(r->s->ctx, QD_SUBJECT_NONE, 0, "max_steps", QD_REASON_NONE, NULL);
+    return QD_ERR_NUMERIC;
+}
+
 static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, measure *ms,
                            qd_sim_stats *stats) {
     qd_sim *s = r->s;
@@ -809,6 +848,7 @@ static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, me
     loop L = {.o = o, .em = em, .ms = ms, .stats = stats,
               .fixed = !qd_sim_method_adaptive(o->method) || o->fixed};
     size_t grid = 1;
+    pace p = {it->t, 0};
     qd_status st = make_row(r, ms, it->t, it->y, r->row);
     if (st != QD_OK)
         return st;
@@ -826,6 +866,12 @@ static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, me
         }
         if ((st = step(r, &L, &grid)) != QD_OK)
             return st;
+        if (!L.fixed && it->steps % COLLAPSE_WINDOW == 0 && (st = collapsed(r, o, &p)) != QD_OK)
+            return st;
+        if (o->progress && !em->stopped && o->progress(o->progress_data, it->t)) {
+            em->stopped = true; /* as the row callback's stop: the rows written are whole */
+            em->last_t = it->t;
+        }
     }
     /* the final row: the state where the run ended */
     return make_row(r, NULL, it->t, it->y, r->row);
