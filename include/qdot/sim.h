@@ -230,6 +230,15 @@ typedef struct qd_sim_opts {
      * an adaptive run that reaches it stops with QD_ERR_NUMERIC. */
     size_t max_steps;
     const double *q0, *qd0; /* n initial coordinates and velocities */
+    /* n flags (may be NULL): the velocities of qd0 the caller gave (the
+     * CLI's --initial), which the start of a constrained run keeps: the
+     * others are solved from the velocity constraints A q' + a0 = 0 (the
+     * least change of them; which ones changed: stats.initial_solved and
+     * qd_sim_initial_solved), and a constraint that only given velocities
+     * enter and that they violate is refused (QD_ERR_ARG, naming it and
+     * its residual; subject name "initial").  NULL or none set: every
+     * velocity is moved the least (the projection of qd0). */
+    const bool *qd0_given;
     /* A system made from H (qd_sim_new_hamilton): n initial momenta, or
      * NULL to find them from qd0 (dH/dp = q', solved by Newton's method:
      * QD_ERR_SINGULAR when d^2H/dp^2 is singular, as for H = p x). */
@@ -368,6 +377,9 @@ typedef struct qd_sim_stats {
      * (Euclidean; the velocities 0 for a system in speeds), so that a
      * caller can say so when it is not small (the CLI prints a note). */
     double initial_moved_q, initial_moved_qd;
+    /* With qd0_given: how many velocities not given were solved from the
+     * constraints (changed by the start); which: qd_sim_initial_solved. */
+    size_t initial_solved;
     /* Event functions that oscillate faster than the event search resolves
      * (docs/design.md, "Events"): the steps where one turned at consecutive
      * samples of the finest sampling (64 per step), the first such step's
@@ -388,6 +400,10 @@ typedef struct qd_sim_stats {
  * holonomic one and its velocity form, |A q' + a0| for a Pfaffian one; 0 for
  * c out of range.  stats.constraint_error_max is the largest of these. */
 QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
+/* Whether velocity j (the equations' order) was solved from the velocity
+ * constraints at the start of the last run, which kept the velocities
+ * given (qd_sim_opts.qd0_given); false for j out of range. */
+QD_API bool qd_sim_initial_solved(const qd_sim *s, size_t j);
 
 /* The columns of a run with method: t, the coordinates, the speeds (a
  * system in speeds), the velocities (name'), the momenta (p_name,

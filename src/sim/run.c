@@ -433,7 +433,8 @@ static qd_status initial_speeds(qd__sim_run *r, const qd_sim_opts *o) {
         return project ? project_positions(r, o->t0, y) : QD_OK;
     }
     memcpy(r->qd, o->qd0, s->n * sizeof *r->qd);
-    qd_status st = s->m && !o->no_project ? qd__sim_project(s, o->t0, y, r->qd) : QD_OK;
+    qd_status st = s->m && !o->no_project ? qd__sim_project_start(s, o->t0, y, r->qd,
+                                                                   o->qd0_given) : QD_OK;
     if (st == QD_OK)
         qd__sim_speeds_from(s, o->t0, y, r->qd, y + s->n);
     return st;
@@ -471,7 +472,7 @@ static qd_status initial_state(qd__sim_run *r, const qd_sim_opts *o) {
     /* the contacts' modes first: a slipping one's row is not projected */
     qd_status st = s->fr ? initial_modes(r, o->t0, qd) : QD_OK;
     if (st == QD_OK && s->m && !o->no_project)
-        st = qd__sim_project(s, o->t0, q, qd);
+        st = qd__sim_project_start(s, o->t0, q, qd, o->qd0_given);
     if (st != QD_OK)
         return st;
     if (it->form == QD__HAM)
@@ -966,6 +967,8 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         st = initial_state(&r, o);
     if (st == QD_OK && s->m && !o->no_project && !s->hamilton) /* what the projection moved */
         initial_moved(s->n, o, it.y, s->se || o->u0 ? NULL : r.qd, stats);
+    for (size_t j = 0; st == QD_OK && j < s->n; j++)
+        stats->initial_solved += s->solved[j];
     if (st == QD_OK && s->nimp)
         st = qd__sim_impact_check_start(&r, it.t, it.y);
     if (st == QD_OK)
@@ -1055,6 +1058,8 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
         st = run(&w, o, sink, data, stats, final);
     for (size_t c = 0; con_err && w.con_err && c < s->m; c++)
         con_err[c] = w.con_err[c];
+    for (size_t j = 0; keep && w.solved && j < s->n; j++)
+        keep->solved_last[j] = w.solved[j];
     if (keep)
         qd__sim_fric_keep(keep, &w);
     qd__sim_fric_run_free(&w);
