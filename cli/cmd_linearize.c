@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "lqr_cli.h"
+#include "plot_cli.h"
 #include "qdot/conlin.h"
 #include "qdot/statespace.h"
 
@@ -21,6 +22,7 @@ typedef struct lin_args {
     const char *about, *lqr, *independent, *format_name, *scan;
     cli_list sets;
     int format;
+    cli_plot_args look; /* --plot with --scan: the eigenvalues against the parameter */
 } lin_args;
 
 static const cli_opt opts[] = {
@@ -36,14 +38,19 @@ static const cli_opt opts[] = {
      "eigenvalues at 101 values of a parameter, and where stability changes", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(lin_args, format_name), "F", "output format",
      formats, NULL},
+    {"--plot", NULL, CLI_TEXT, offsetof(lin_args, look.file), "FILE.png|.svg|.pdf",
+     "with --scan: the eigenvalues against the parameter, each change of stability marked",
+     NULL, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
+
+static const cli_group groups[] = {CLI_PLOT_LOOK_GROUP(lin_args, look), {NULL, 0}};
 
 static const cli_spec spec = {
     "linearize", "FILE [options]",
     "The state-space form x' = A x + B u, y = C x + D u about an operating point, the "
     "eigenvalues of A, controllability and observability.",
-    opts, NULL, 1, 1, "FILE", false};
+    opts, groups, 1, 1, "FILE", false};
 
 /* The state-space form, then the design when there is one (text and C
  * print it after the matrices, JSON nests it under "lqr"): the library's
@@ -75,6 +82,8 @@ static int manifold(qd_ctx *ctx, const lin_args *a, cli_lin_run *r, int fmt) {
     else if (rc == QD_EXIT_OK && a->scan)
         rc = cli_emit_status(ctx, qd_conlin_scan_print(&sc, name, fmt == QD_SS_JSON, &b), &b,
                              "scan");
+    if (rc == QD_EXIT_OK && a->scan && a->look.file)
+        rc = cli_scan_plot(ctx, &sc, name, &a->look, r->c.mf.path);
     else if (rc == QD_EXIT_OK &&
              qd_conlin_about(ctx, r->e, r->c.mf.model, &r->pt, a->independent, &c) != QD_OK)
         rc = cli_state_diag(ctx, "--independent", a->independent);
@@ -131,7 +140,9 @@ static int check(cli_run *c) {
             a->format = k;
     if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C)
         return cli_usage_error("--lqr prints as text, json or c, not %s", formats[a->format]);
-    return QD_EXIT_OK;
+    if (a->look.file && !a->scan)
+        return cli_usage_error("--plot draws the eigenvalues of --scan NAME=A:B: give --scan");
+    return cli_plot_check(&a->look, "linearize");
 }
 
 static int run(cli_run *c) {

@@ -64,6 +64,12 @@ int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0);
 /* ---- --scan (scan_cli.c) --------------------------------------------------- */
 
 /* "NAME=A:B": the parameter's name (cap bytes) and the range's ends. */
+/* linearize --scan --plot FILE: the scan's eigenvalues drawn (qd_conlin_scan_plot) with
+ * the picture's options, the title the model file's name unless --title. */
+struct qd_conlin_scan;
+struct cli_plot_args;
+int cli_scan_plot(qd_ctx *ctx, const struct qd_conlin_scan *sc, const char *name,
+                  const struct cli_plot_args *look, const char *model_path);
 int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double *a,
                    double *b);
 /* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */
