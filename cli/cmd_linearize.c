@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "lqr_cli.h"
+#include "plot_cli.h"
 #include "qdot/statespace.h"
 
 enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
@@ -20,6 +21,7 @@ typedef struct lin_args {
     const char *about, *lqr, *independent, *format_name, *scan;
     cli_list sets;
     int format;
+    cli_plot_args look; /* --plot with --scan: the eigenvalues against the parameter */
 } lin_args;
 
 static const cli_opt opts[] = {
@@ -35,14 +37,19 @@ static const cli_opt opts[] = {
      "eigenvalues at 101 values of a parameter, and where stability changes", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(lin_args, format_name), "F", "output format",
      formats, NULL},
+    {"--plot", NULL, CLI_TEXT, offsetof(lin_args, look.file), "FILE.png|.svg|.pdf",
+     "with --scan: the eigenvalues against the parameter, each change of stability marked",
+     NULL, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
+
+static const cli_group groups[] = {CLI_PLOT_LOOK_GROUP(lin_args, look), {NULL, 0}};
 
 static const cli_spec spec = {
     "linearize", "FILE [options]",
     "The state-space form x' = A x + B u, y = C x + D u about an operating point, the "
     "eigenvalues of A, controllability and observability.",
-    opts, NULL, 1, 1, "FILE", false};
+    opts, groups, 1, 1, "FILE", false};
 
 /* The state-space form, then the design when there is one (text and C
  * print it after the matrices, JSON nests it under "lqr"): the library's
@@ -65,7 +72,7 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
                                a->scan ? "--scan" : "--independent");
     cli_lin_run r = {.c = {.ctx = ctx, .mf = *mf}, .e = e};
     const cli_conlin_args ca = {a->about, a->independent, a->scan, a->lqr, fmt[a->format], 0,
-                                false, NULL, NULL};
+                                false, NULL, NULL, &a->look};
     int rc = cli_lin_setup(&r);
     if (rc == QD_EXIT_OK)
         rc = cli_conlin(&r, &ca);
@@ -89,7 +96,9 @@ static int check(cli_run *c) {
             a->format = k;
     if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C)
         return cli_usage_error("--lqr prints as text, json or c, not %s", formats[a->format]);
-    return QD_EXIT_OK;
+    if (a->look.file && !a->scan)
+        return cli_usage_error("--plot draws the eigenvalues of --scan NAME=A:B: give --scan");
+    return cli_plot_check(&a->look, "linearize");
 }
 
 static int run(cli_run *c) {

@@ -90,6 +90,8 @@ int cli_conlin(cli_lin_run *r, const cli_conlin_args *a) {
     else if (rc == QD_EXIT_OK && a->lqr) /* on the core: the ignorable states' s = 0 */
         rc = qd_conlin_keep_core(ctx, &c) ? cli_diag_ctx(ctx)
                                           : cli_lqr_design(ctx, &c.ss, a->lqr, &lqr);
+    if (rc == QD_EXIT_OK && a->scan && a->look && a->look->file)
+        rc = cli_scan_plot(ctx, &sc, name, a->look, r->c.mf.path);
     if (rc == QD_EXIT_OK && !a->scan && a->modes)
         rc = cli_emit_status(ctx, qd_conlin_modes_print(ctx, &c, a->fmt == QD_SS_JSON, &b), &b,
                              "modes");

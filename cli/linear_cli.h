@@ -68,12 +68,19 @@ typedef struct cli_conlin_args {
     bool modes;
     const char *ignore;   /* stability --ignore: these must be ignorable, or NULL */
     const char *about_opt; /* the option about came from (NULL: "--about") */
+    const struct cli_plot_args *look; /* --scan --plot FILE: the eigenvalues drawn, or NULL */
 } cli_conlin_args;
 int cli_conlin(cli_lin_run *r, const cli_conlin_args *a);
 
 /* ---- --scan (scan_cli.c) --------------------------------------------------- */
 
 /* "NAME=A:B": the parameter's name (cap bytes) and the range's ends. */
+/* linearize --scan --plot FILE: the scan's eigenvalues drawn (qd_conlin_scan_plot) with
+ * the picture's options, the title the model file's name unless --title. */
+struct qd_conlin_scan;
+struct cli_plot_args;
+int cli_scan_plot(qd_ctx *ctx, const struct qd_conlin_scan *sc, const char *name,
+                  const struct cli_plot_args *look, const char *model_path);
 int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double *a,
                    double *b);
 /* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */

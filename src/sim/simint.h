@@ -340,5 +340,10 @@ double qd__sim_fric_slip(const qd_sim *s, size_t c);
  * constraint Jacobian) and q' onto A q' + a0 = 0.  QD_ERR_NUMERIC naming the
  * constraint when positions cannot be brought to it. */
 qd_status qd__sim_project(qd_sim *s, double t, double *q, double *qd);
+/* The start's projection: as qd__sim_project, the velocities given
+ * (given[j], may be NULL) kept and the others solved (s->solved marks
+ * those that changed); QD_ERR_ARG when a constraint only given velocities
+ * enter is violated by them. */
+qd_status qd__sim_project_start(qd_sim *s, double t, double *q, double *qd, const bool *given);
 
 #endif

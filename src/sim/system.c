@@ -252,7 +252,8 @@ qd_status qd__sim_names(qd_sim *s) {
     s->names = qd__calloc(s->ctx, s->nnames, sizeof *s->names);
     s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
     s->con_err_last = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err_last);
-    if (!s->names || !s->holonomic || !s->con_err_last)
+    s->solved_last = qd__calloc(s->ctx, n + 1, sizeof *s->solved_last);
+    if (!s->names || !s->holonomic || !s->con_err_last || !s->solved_last)
         return QD_ERR_NOMEM;
     s->names[k++] = dup_printf(s->ctx, "t", "", "");
     for (size_t j = 0; j < n; j++)
@@ -331,6 +332,7 @@ void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
     qd__free(s->con_err_last);
+    qd__free(s->solved_last);
     qd__sim_impact_free(s);
     qd__sim_fric_free(s);
     qd__sim_taylor_native_free(s);
@@ -369,6 +371,10 @@ bool qd_sim_canonical(const qd_sim *s) { QD_ARGS(false, s); return s->canonical;
 double qd_sim_constraint_error(const qd_sim *s, size_t c) {
     QD_ARGS(NAN, s);
     return c < s->m ? s->con_err_last[c] : 0;
+}
+bool qd_sim_initial_solved(const qd_sim *s, size_t j) {
+    QD_ARGS(false, s);
+    return j < s->n && s->solved_last && s->solved_last[j];
 }
 bool qd_sim_separable(const qd_sim *s) { QD_ARGS(false, s); return s->separable; }
 bool qd_sim_conservative(const qd_sim *s) { QD_ARGS(false, s); return s->conservative; }
@@ -552,6 +558,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     w->K = qd__malloc(ctx, (N * N + 2 * N + 5 * n + 1) * sizeof *w->K);
     w->pc = qd__malloc(ctx, (N + 1) * sizeof *w->pc);
     w->con_err = qd__calloc(ctx, w->m + 1, sizeof *w->con_err);
+    w->solved = qd__calloc(ctx, n + 1, sizeof *w->solved);
     bool ok = prog_ws(ctx, w->acc, w->acc_n, &w->acc_out, &w->acc_w);
     ok = prog_ws(ctx, w->con, w->con_n, &w->con_out, &w->con_w) && ok;
     ok = prog_ws(ctx, w->mom, w->mom_n, &w->mom_out, &w->mom_w) && ok;
@@ -563,7 +570,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     ok = prog_ws(ctx, w->kin, w->kin_n, &w->kin_out, &w->kin_w) && ok;
     ok = prog_ws(ctx, w->udef, w->udef_n, &w->udef_out, &w->udef_w) && ok;
     ok = prog_ws(ctx, w->uprog, w->nuin, &w->uprog_out, &w->uprog_w) && ok;
-    if (!ok || !w->in || !w->K || !w->pc || !w->con_err)
+    if (!ok || !w->in || !w->K || !w->pc || !w->con_err || !w->solved)
         return QD_ERR_NOMEM;
     w->rhs = w->K + N * N;
     w->tmp = w->rhs + N;
@@ -582,6 +589,7 @@ void qd__sim_ws_free(qd_sim *w) {
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         qd__free(bufs[i]);
     qd__free(w->pc);
+    qd__free(w->solved);
 }
 
 size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap) {
