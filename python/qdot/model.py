@@ -12,7 +12,7 @@ import numpy as np
 
 from ._core import (ArgumentError, Core, Error, ModelError, NumericalError, format_diag,
                     name_of)
-from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
+from ._lib import (ffi, lib, new, buf_text, cstr, exprs, QD_FMT_SYMPY, QD_FMT_LATEX,
                    QD_FMT_TEXT)
 from . import sim as _sim
 from . import runs as _runs
@@ -24,9 +24,10 @@ from . import linear as _linear
 class _Printed:
     """The renderings of a whole system (qdot/render.h), as `qdot eom
     --format F` prints them: text(), latex(), sympy_text(), c_code() and
-    json() (a dict).  at={name: value} (text and JSON): the numbers at that
-    state, the names as `qdot eom --at` takes them (q, q', t, parameters;
-    with speeds the speeds), the others at the model's initial values."""
+    json() (a dict).  at={name: value} or text (text and JSON): the numbers
+    at that state, read by the library as `qdot eom --at` reads it (q, q',
+    t, parameters; with speeds the speeds; the names not given at 0), an
+    error in it a qdot.ModelError shown in its text."""
 
     _print = None  # set by Model: (format name, at) -> str
 
@@ -236,34 +237,31 @@ def _speeds_result(core, se, method):
                            [text(e.f[r]) for r in range(m)], method)
 
 
-def _state_at(core, at, extra):
-    """syms, vals of the model's initial state (the speeds in extra at 0)
-    with the values of at put in, by name."""
-    syms, vals = core.state()
-    syms, vals = syms + list(extra), vals + [0.0] * len(extra)
-    index = {core.text_of(s): i for i, s in enumerate(syms)}
-    for name, value in at.items():
-        if name not in index:
-            raise Error("at: '%s' is not a name of the state (%s)" % (name, ", ".join(index)))
-        vals[index[name]] = float(value)
-    return syms, vals
-
-
 def _render_lagrange(core, fmt, at):
     """qd_render_eom of Lagrange's equations of a model that declares
-    `speeds` (`qdot eom` renders its speeds form: Model.speeds_eom), at's
-    names read by _state_at."""
+    `speeds` (`qdot eom` renders its speeds form: Model.speeds_eom).  at
+    ({name: value} or text) is read by the library's state reader as
+    `qdot eom --at` reads it on a model without speeds (qd_state_init: the
+    names not given at 0; qd_state_read), an error in it a ModelError
+    shown in its text (file `at`)."""
+    from .linear import located
     k = new("qd_render_format")
     if not lib.qd_render_format_parse(fmt.encode(), k):
         raise ValueError("eom: no format %r" % (fmt,))
     source = ffi.new("char[]", core.file.encode())
     opts = new("qd_render_opts", {"source": source})
-    if at:
-        syms, vals = _state_at(core, at, [])
-        csyms, cvals = exprs(syms), doubles(vals)  # alive for the call
-        opts.nstate, opts.syms, opts.vals = len(syms), csyms, cvals
-    return _commands.rendered(core, lambda buf: lib.qd_render_eom(
-        core.ctx, core.model, core.eom_ptr(), opts, k[0], buf))
+    st = new("qd_state")
+    try:
+        if at:
+            text = _commands.text_arg(at, "at")
+            core.check(lib.qd_state_init(core.ctx, core.model, st))
+            if lib.qd_state_read(core.ctx, core.model, st, text, ffi.NULL) != lib.QD_OK:
+                raise located(core, "at", ffi.string(text))
+            opts.nstate, opts.syms, opts.vals = st.n, st.syms, st.vals
+        return _commands.rendered(core, lambda buf: lib.qd_render_eom(
+            core.ctx, core.model, core.eom_ptr(), opts, k[0], buf))
+    finally:
+        lib.qd_state_free(st)
 
 
 def _render(core, fmt, at, speeds=None):
