@@ -30,6 +30,10 @@ class QuadraticForm:
         """The reduction as a dict (`qdot form --format json`)."""
         return json.loads(self._printed[1])
 
+    def _repr_html_(self):
+        from . import display
+        return display.fields(self.json(), "qdot form")
+
     def __repr__(self):
         return "QuadraticForm(%s, inertia=%r)" % (" + ".join(
             "(%s)*(%s)^2" % (c, y) for c, y in zip(self.coefficients, self.linear_forms)) or "0",
@@ -126,6 +130,10 @@ class Homogeneity:
     def json(self):
         return json.loads(self._printed[1])
 
+    def _repr_html_(self):
+        from . import display
+        return display.fields(self.json(), "qdot form --homogeneity")
+
     def __repr__(self):
         return "Homogeneity(%s%s)" % (self.verdict,
                                       ", degree=%s" % self.degree if self.degree else "")
@@ -181,6 +189,10 @@ class Periods:
 
     def json(self):
         return json.loads(self._printed[1])
+
+    def _repr_html_(self):
+        from . import display
+        return display.fields(self.json(), "qdot form --periods")
 
     def __repr__(self):
         return "Periods(fundamental=%r)" % (self.fundamental,)

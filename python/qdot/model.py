@@ -19,6 +19,7 @@ from . import runs as _runs
 from . import control as _control
 from . import commands as _commands
 from . import linear as _linear
+from . import _progress
 
 
 class _Printed:
@@ -145,6 +146,9 @@ class Equilibrium:
     def __repr__(self):
         return "Equilibrium(q=%r, kind=%r)" % (self.q, self.kind)
 
+    def _repr_html_(self):
+        return _equilibria_html([self], "qdot equilibrium")
+
 
 class Equilibria(list):
     """The equilibria found (a list of Equilibrium); .output is the
@@ -163,6 +167,26 @@ class Equilibria(list):
             return out[name]
         raise AttributeError("Equilibria has no field %r" % name)
 
+    def __repr__(self):
+        return "<qdot.Equilibria %d: %s>" % (len(self), "; ".join(
+            "%s %s" % (e.kind, ", ".join("%s = %.6g" % kv for kv in e.q.items())) for e in self))
+
+    def _repr_html_(self):
+        return _equilibria_html(self, "qdot equilibria")
+
+
+def _equilibria_html(eqs, title):
+    """A table of equilibria: a row each, the coordinates' values, the
+    kind, the exact values (as the library printed them) and the residual."""
+    from . import display
+    if not eqs:
+        return display.block(title, "none found")
+    names = list(eqs[0].q)
+    rows = [[e.q[k] for k in names] + [e.kind, ", ".join(
+        "%s = %s" % kv for kv in e.exact.items()) if e.exact else None, e.residual]
+        for e in eqs]
+    return display.block(title, display.table(names + ["kind", "exact", "residual"], rows))
+
 
 class Mode:
     """One normal mode (qdot/modes.h): omega2 the eigenvalue w^2 of
@@ -177,6 +201,10 @@ class Mode:
 
     def __repr__(self):
         return "Mode(omega=%.12g, shape=%r)" % (self.omega, self.shape)
+
+    def _repr_html_(self):
+        from . import display
+        return display.fields({"omega": self.omega, "omega2": self.omega2, "shape": self.shape})
 
 
 class Modes(list):
@@ -210,6 +238,32 @@ class Modes(list):
         if out is not None and name in out:
             return out[name]
         raise AttributeError("Modes has no field %r" % name)
+
+    def __repr__(self):
+        about = ", ".join("%s = %.6g" % kv for kv in (self.about or {}).items())
+        if not self.conservative:
+            return "<qdot.Modes about %s: eigenvalues %s>" % (about, np.round(
+                self.eigenvalues, 6).tolist())
+        return "<qdot.Modes about %s: omega = %s>" % (
+            about, ", ".join("%.10g" % m.omega for m in self))
+
+    def _repr_html_(self):
+        """The modes as a table (omega^2, omega, the shape's entries), or the
+        eigenvalues when the system is not conservative."""
+        from . import display
+        about = ", ".join("%s = %s" % (k, display.number(v))
+                          for k, v in (self.about or {}).items())
+        verdict = {1: "stable", 0: "unstable", -1: "borderline"}.get(self.stable, "")
+        title = "qdot modes about %s (%s)" % (about, verdict)
+        eig = display.table(["Re s", "Im s"], [[z.real, z.imag] for z in self.eigenvalues],
+                            caption="eigenvalues s of the state-space form")
+        if not len(self):
+            return display.block(title, eig)
+        names = list(self[0].shape)
+        rows = [[m.omega2, m.omega] + [m.shape[k] for k in names] for m in self]
+        return display.block(title, display.table(["omega^2", "omega"] + names, rows,
+                                                  caption="shapes normalized a^T M a = 1"),
+                             eig)
 
 
 class _SpeedsHandle:
@@ -787,43 +841,44 @@ class Model:
         with parameter, range, steps, samples and transitions."""
         from .linear import located
         core = self._for("stability")
-        if steps is not None and scan is None:
-            raise ValueError("stability: steps is the number of steps of scan: give "
-                             "scan=\"NAME=A:B\"")
-        if isinstance(ignore, (list, tuple)):
-            ignore = ", ".join(ignore)
-        items = [driven] if isinstance(driven, str) else list(driven or [])
-        texts = {k: _commands.text_arg(v, k) for k, v in
-                 (("ignore", ignore), ("momentum", momentum), ("omega", omega), ("at", at),
-                  ("guess", guess))}
-        keep = [_commands.text_arg(x, "driven") for x in items]
-        dr = ffi.new("const char *[]", keep) if keep else ffi.NULL
-        c = lambda k: texts[k] if texts[k] is not None else ffi.NULL  # noqa: E731
-        spec = new("qd_stability_spec", {"ignore": c("ignore"), "driven": dr,
-                                         "ndriven": len(keep), "momentum": c("momentum"),
-                                         "omega": c("omega"), "at": c("at"),
-                                         "guess": c("guess")})
-        p = new("qd_stability_problem")
-        try:
-            if lib.qd_stability_problem_read(core.ctx, core.model, core.eom_ptr(), spec,
-                                             p) != lib.QD_OK:
-                d = lib.qd_ctx_diag(core.ctx)
-                field = ffi.string(d.name).decode()
-                text = p.driven if field == "driven" else texts.get(field)
-                if d.located and text:
-                    raise located(core, field, ffi.string(text))
-                raise core.error(cls=ArgumentError if d.status == lib.QD_ERR_ARG else None)
-            src = _commands.source(core)
-            if scan is not None:
-                return self._stability_scan(core, p, scan, steps, src)
-            core.check(lib.qd_stability_problem_solve(core.ctx, p), NumericalError)
-            rep = new("qd_stability_report", {"s": p.s, "given": ffi.addressof(p.given),
-                                              "set": ffi.addressof(p.set), "an": p.an,
-                                              "model": src})
-            return _commands.output(core, "stability", lambda buf: lib.qd_stability_print(
-                core.ctx, rep, True, buf))
-        finally:
-            lib.qd_stability_problem_free(p)
+        with _progress.watch(core, "stability"):  # the multistart's steps, Ctrl-C
+            if steps is not None and scan is None:
+                raise ValueError("stability: steps is the number of steps of scan: give "
+                                 "scan=\"NAME=A:B\"")
+            if isinstance(ignore, (list, tuple)):
+                ignore = ", ".join(ignore)
+            items = [driven] if isinstance(driven, str) else list(driven or [])
+            texts = {k: _commands.text_arg(v, k) for k, v in
+                     (("ignore", ignore), ("momentum", momentum), ("omega", omega), ("at", at),
+                      ("guess", guess))}
+            keep = [_commands.text_arg(x, "driven") for x in items]
+            dr = ffi.new("const char *[]", keep) if keep else ffi.NULL
+            c = lambda k: texts[k] if texts[k] is not None else ffi.NULL  # noqa: E731
+            spec = new("qd_stability_spec", {"ignore": c("ignore"), "driven": dr,
+                                             "ndriven": len(keep), "momentum": c("momentum"),
+                                             "omega": c("omega"), "at": c("at"),
+                                             "guess": c("guess")})
+            p = new("qd_stability_problem")
+            try:
+                if lib.qd_stability_problem_read(core.ctx, core.model, core.eom_ptr(), spec,
+                                                 p) != lib.QD_OK:
+                    d = lib.qd_ctx_diag(core.ctx)
+                    field = ffi.string(d.name).decode()
+                    text = p.driven if field == "driven" else texts.get(field)
+                    if d.located and text:
+                        raise located(core, field, ffi.string(text))
+                    raise core.error(cls=ArgumentError if d.status == lib.QD_ERR_ARG else None)
+                src = _commands.source(core)
+                if scan is not None:
+                    return self._stability_scan(core, p, scan, steps, src)
+                core.check(lib.qd_stability_problem_solve(core.ctx, p), NumericalError)
+                rep = new("qd_stability_report", {"s": p.s, "given": ffi.addressof(p.given),
+                                                  "set": ffi.addressof(p.set), "an": p.an,
+                                                  "model": src})
+                return _commands.output(core, "stability", lambda buf: lib.qd_stability_print(
+                    core.ctx, rep, True, buf))
+            finally:
+                lib.qd_stability_problem_free(p)
 
     def _stability_scan(self, core, p, scan, steps, src):
         """stability(scan=...): qd_stability_problem_scan and its JSON."""
@@ -1077,7 +1132,9 @@ class Model:
         equilibria --format json` (qd_equilibria_print): method, exact,
         continuum, equilibria (each with equilibrium, exact, kind,
         hessian_signs, symmetric, residual); .json is that dict."""
-        return _linear.equilibria(self._for("equilibria"), near, box)
+        core = self._for("equilibria")
+        with _progress.watch(core, "equilibria"):  # the multistart's steps, Ctrl-C
+            return _linear.equilibria(core, near, box)
 
     def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False,
               independent=None, scan=None, steps=None):
@@ -1113,8 +1170,10 @@ class Model:
         (--steps; 200 by default), and where its stability changes
         (qd_modes_scan_text): a qdot.Output with parameter, range, steps,
         samples and transitions, not a Modes."""
-        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry,
-                             independent, scan, steps)
+        core = self._for("modes")
+        with _progress.watch(core, "modes"):  # the multistart's steps, Ctrl-C
+            return _linear.modes(core, about, at_equilibrium, initial, symmetry, independent,
+                                 scan, steps)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from

@@ -68,6 +68,10 @@ class Result:
         return "%s(%s)" % (type(self).__name__, ", ".join(
             "%s=%r" % kv for kv in sorted(vars(self).items())))
 
+    def _repr_html_(self):
+        from . import display
+        return display.fields(dict(sorted(vars(self).items())), "qdot " + type(self).__name__)
+
 
 def _particle(ctx, c, spec):
     """(m, v), {"m": .., "v": ..} or a Particle into a Particle."""
