@@ -114,6 +114,7 @@ class Run:
             err = KeyboardInterrupt("qdot: %s: interrupted%s" % (
                 self.what, "; the rows kept are whole" if self.partial is not None else ""))
             err.result = self.partial
+            err.__suppress_context__ = True  # the library's "stopped" is this interrupt
             raise err
         return False
 

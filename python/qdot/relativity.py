@@ -70,7 +70,8 @@ class Result:
 
     def _repr_html_(self):
         from . import display
-        return display.fields(dict(sorted(vars(self).items())), "qdot " + type(self).__name__)
+        data = vars(self).get("json") or dict(sorted(vars(self).items()))  # the command's JSON
+        return display.fields(data, "qdot " + type(self).__name__)
 
 
 def _particle(ctx, c, spec):
