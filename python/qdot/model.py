@@ -266,6 +266,23 @@ class Modes(list):
                              eig)
 
 
+class Metric:
+    """What Model.metric returns: its attributes are given by name (see
+    Model.metric); in Jupyter the table of `qdot metric --format json`."""
+
+    __module__ = "qdot"
+
+    def __init__(self, **fields):
+        self.__dict__.update(fields)
+
+    def __repr__(self):
+        return "<qdot.Metric of %s: det g = %s%s>" % (
+            ", ".join(self.coordinates), self.det, ", orthogonal" if self.orthogonal else "")
+
+    def _repr_html_(self):
+        return self.output.html()
+
+
 class _SpeedsHandle:
     """A qd_speeds_eom kept while a SpeedsEquations uses it."""
 
@@ -514,7 +531,6 @@ class Model:
         chart) are attributes too, .json is the whole dict and .output its
         qdot.Output; force: "G1, G2, ..." the covariant components of a
         force, as --force (default: the model's Q)."""
-        import types
         core = self._for("metric")
         g = lib.qd_metric_new(core.ctx, core.model)
         if not g:
@@ -536,7 +552,7 @@ class Model:
                 core.check(lib.qd_metric_force_read(core.ctx, g, force.encode(), G))
             out = _commands.output(core, "metric", lambda buf: lib.qd_metric_json(
                 core.ctx, g, G if force is not None else ffi.NULL, buf))
-            ns = types.SimpleNamespace(
+            ns = Metric(
                 coordinates=names, source="L" if m.from_L else "T",
                 T2=conv(m.T2), T1=conv(m.T1), T0=conv(m.T0),
                 metric=mat(m.g), metric_inverse=mat(m.ginv), det=conv(m.det),

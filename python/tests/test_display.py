@@ -246,11 +246,14 @@ def test_forms_relativity_fields_and_every_repr(dp):
     assert np.min(np.abs(numbers(parsed(lo._repr_html_()).cells) - 1.25)) < 1e-12   # gamma
     kep = qdot.Model.load(os.path.join(EXAMPLES, "kepler_polar.qd"))
     parsed(kep.orbit("theta").conic._repr_html_())
+    g = kep.metric()
+    pg = parsed(g._repr_html_())
+    assert "m*r^2" in pg.cells and repr(g) == "<qdot.Metric of r, theta: det g = m^2*r^2, orthogonal>"
     # every object a call returns has a repr of its own, not object's
     objs = [dp, dp.eom(), dp.hamiltonian(), dp.equilibria(), dp.equilibria()[0], dp.modes(),
             dp.modes()[0], dp.compile(), dp.codegen(), dp.animate(0.2), dp.simulate(0.2),
             qdot.Model(OSCILLATOR).linearize(), kep.orbit("theta"), f, lo,
-            qdot.parse("x^2")]
+            qdot.parse("x^2"), g, kep.flow(period="1"), kep.integrals()]
     for o in objs:
         assert " object at 0x" not in repr(o), type(o)
 
