@@ -29,8 +29,8 @@ from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
 from ._progress import set_progress
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
-           "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
-           "Mode", "Modes", "Metric", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
+           "Equations", "Hamiltonian", "Equilibrium", "Equilibria", "Metric",
+           "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Homogeneity",
            "homogeneity", "Periods", "periods", "tour", "Field",
            "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr", "set_progress"]

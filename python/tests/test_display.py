@@ -248,7 +248,8 @@ def test_forms_relativity_fields_and_every_repr(dp):
     parsed(kep.orbit("theta").conic._repr_html_())
     g = kep.metric()
     pg = parsed(g._repr_html_())
-    assert "m*r^2" in pg.cells and repr(g) == "<qdot.Metric of r, theta: det g = m^2*r^2, orthogonal>"
+    assert "m*r^2" in pg.cells
+    assert repr(g) == "<qdot.Metric of r, theta: det g = m^2*r^2, orthogonal>"
     # every object a call returns has a repr of its own, not object's
     objs = [dp, dp.eom(), dp.hamiltonian(), dp.equilibria(), dp.equilibria()[0], dp.modes(),
             dp.modes()[0], dp.compile(), dp.codegen(), dp.animate(0.2), dp.simulate(0.2),
