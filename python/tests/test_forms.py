@@ -35,6 +35,9 @@ def test_quadratic_form_refuses_constants():
     # the variables as --vars reads them: the reduction is the same
     f = qdot.quadratic_form("x^2 + 4*x*y + y^2", "x y".split())
     assert f.coefficients == ["1", "-3"]
+    # pi as a coefficient is the positive constant: Sylvester's inertia decided
+    f = qdot.quadratic_form("x^2 - pi*y^2", ["x", "y"])
+    assert f.inertia == (1, 1, 0) and f.kind == "indefinite"
 
 
 def test_homogeneity_euler():
