@@ -126,7 +126,8 @@ def test_lagrange_form_of_a_speeds_model_at_a_state_read_by_the_library():
         assert j["forcing"][1] == pytest.approx(-m_ * r * w**2 * math.sin(q2), rel=1e-13)
     for bad, col, words in (("q2=1, thet=2", 7, "unknown name 'thet'"),
                             ("q2=2*/3", 6, "expected an expression"),
-                            ("q2=1, q2=2", 7, "'q2' is given twice")):
+                            ("q2=1, q2=2", 7, "'q2' is given twice"),
+                            ("u1=1", 1, "'u1' is a speed")):
         with pytest.raises(qdot.ModelError) as err:
             e.text(at=bad)
         assert (err.value.file, err.value.line, err.value.col) == ("at", 1, col)
