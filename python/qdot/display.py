@@ -17,6 +17,7 @@ import numbers
 import numpy as np
 
 _ROWS = 12  # rows of a long table shown: the first ones, then how many are left out
+_COLS = 16  # columns likewise (a curve's thousand points, a grid's row)
 _STYLE = "border-collapse:collapse;text-align:right"
 _CELL = "padding:1px 6px;border:1px solid #ccc"
 
@@ -42,9 +43,15 @@ def _is_number(x):
     return isinstance(x, (numbers.Number, np.number)) and not isinstance(x, (bool, np.bool_))
 
 
+class _Raw(str):
+    """HTML made here (not a value to escape)."""
+
+
 def value(x):
     """The HTML of a value: a number, a string (as code), a list or an
     array (a table), a dict (a table of its keys), None (a dash)."""
+    if isinstance(x, _Raw):
+        return str(x)
     if x is None:
         return "&mdash;"
     if isinstance(x, (bool, np.bool_)):
@@ -76,6 +83,11 @@ def table(header, rows, row_names=None, caption=None):
     """A <table>: header (column names or None), rows (lists of values),
     row_names (a name per row or None), caption (text or None).  A long
     table shows its first rows and says how many more there are."""
+    width = max((len(r) for r in rows), default=0)
+    if width > _COLS:  # the first columns, then how many more
+        more = "&hellip; %d more" % (width - _COLS)
+        rows = [list(r[:_COLS]) + [_Raw(more)] for r in rows]
+        header = list(header[:_COLS]) + [""] if header is not None else None
     out = ['<table style="%s">' % _STYLE]
     if caption:
         out.append("<caption>%s</caption>" % _esc(caption))

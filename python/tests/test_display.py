@@ -264,3 +264,13 @@ def test_text_is_escaped():
     from qdot import display
     p = parsed(display.fields({"a<b": "x < y & <script>", "n": [1, 2.5]}))
     assert p.cells == ["a<b", "x < y & <script>", "n", "1", "2.5"]
+
+
+def test_long_tables_say_what_they_leave_out():
+    from qdot import display
+    p = parsed(display.table([str(j) for j in range(20)],
+                             [[i * 100 + j for j in range(20)] for i in range(30)]))
+    assert p.cells[:16] == [str(j) for j in range(16)] and p.cells[16] == ""
+    body = p.cells[17:]
+    assert body[:17] == [str(j) for j in range(16)] + ["\u2026 4 more"]
+    assert body[-1] == "\u2026 18 more rows" and len(body) == 12 * 17 + 1
