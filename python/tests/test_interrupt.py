@@ -188,6 +188,28 @@ def test_a_progress_function_stops_the_call():
         qdot.set_progress(3)
 
 
+def test_sigint_stops_the_multistart_search():
+    """Ctrl-C during the multistart (the handler's flag, seen by the
+    context's progress function) stops the library at its next start:
+    KeyboardInterrupt, the handler restored, the model usable after."""
+    def press(what, frac, value):  # Ctrl-C once, a few starts in
+        if frac > 0.05 and not press.sent:
+            press.sent = True
+            signal.raise_signal(signal.SIGINT)
+        press.after += press.sent
+    press.sent, press.after = False, 0
+    old = qdot.set_progress(press)
+    try:
+        m = qdot.Model(MULTISTART)
+        with pytest.raises(KeyboardInterrupt, match="equilibria: multistart"):
+            m.equilibria()
+        assert press.sent and press.after <= 2          # stopped at the next step
+        assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    finally:
+        qdot.set_progress(old)
+    assert len(m.equilibria()) == 3
+
+
 def test_notebook_shows_an_updating_line(monkeypatch):
     """In an IPython kernel (stderr no terminal) the bar is one display,
     updated in place and cleared at the end; IPython is only imported
