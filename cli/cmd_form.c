@@ -5,7 +5,8 @@
  * variables read by qd_qform_vars_read (qdot/form.h).  --homogeneity: any
  * function's degree of homogeneity (qd_homogeneity, App. 20); --periods:
  * shifts tested as periods, and their fundamental system (qd_periods_reduce,
- * App. 31).
+ * App. 31); --gram-schmidt: vectors orthogonalized under the form's matrix
+ * (qd_gram_schmidt, App. 21).
  */
 #include "driver.h"
 
@@ -14,7 +15,7 @@
 
 typedef struct form_args {
     cli_run c; /* the options follow */
-    const char *format, *vars, *text, *periods;
+    const char *format, *vars, *text, *periods, *gram;
     bool homog;
 } form_args;
 
@@ -25,21 +26,50 @@ static const cli_opt form_opts[] = {
      "the degree of homogeneity of EXPR in the variables (Euler's theorem), or a witness", NULL, NULL},
     {"--periods", NULL, CLI_TEXT, offsetof(form_args, periods), "\"W1; W2 ...\"",
      "test these shifts as periods of EXPR, and their fundamental system (App. 31)", NULL, NULL},
+    {"--gram-schmidt", NULL, CLI_TEXT, offsetof(form_args, gram), "\"A1; A2 ...\"",
+     "orthogonalize these vectors under the form's matrix: b(i)^T a b(j) = 0 (App. 21)", NULL,
+     NULL},
     CLI_OPT_FORMAT(form_args, format),
     {0},
 };
 
 static const cli_spec form_spec = {
-    "form", "EXPR --vars \"x, y, ...\" [--homogeneity | --periods \"W; ...\"] [--format F]",
+    "form", "EXPR --vars \"x, y, ...\" [--homogeneity | --periods \"W; ...\" | "
+    "--gram-schmidt \"A; ...\"] [--format F]",
     "a quadratic form: its matrix, Lagrange's reduction to a sum of squares, its inertia; "
-    "or (--homogeneity) any function's degree of homogeneity, or (--periods) its periods",
+    "or (--homogeneity) any function's degree of homogeneity, or (--periods) its periods, "
+    "or (--gram-schmidt) vectors orthogonalized under its matrix",
     form_opts, NULL, 1, 1, "EXPR", true,
 };
 
 static int check(cli_run *c) {
-    if (((form_args *)c)->vars)
+    const form_args *a = (form_args *)c;
+    if (a->gram && (a->periods || a->homog))
+        return cli_usage_error("--gram-schmidt is not taken with --periods or --homogeneity");
+    if (a->vars)
         return QD_EXIT_OK;
     return cli_usage_error("--vars is missing (usage: qdot form %s)", form_spec.synopsis);
+}
+
+/* --gram-schmidt: the s vectors a orthogonalized under the form's matrix
+ * (Thm 1 when it is the identity, x^2 + y^2 + ...). */
+static int gram(qd_ctx *ctx, const form_args *a, const qd_expr *phi, const qd_expr *const *x,
+                size_t n, size_t s, const qd_expr *const *v) {
+    qd_qform *f = qd_qform_reduce(ctx, phi, n, x);
+    bool unit = f != NULL;
+    for (size_t i = 0; f && i < n * n; i++)
+        unit = unit && qd_is_zero(qd_sub(ctx, f->a[i], qd_int(ctx, i / n == i % n)));
+    const qd_expr *const *T = f && !unit ? f->a : NULL;
+    qd_gram *g = f ? qd_gram_schmidt(ctx, n, T, s, v) : NULL;
+    qd_buf b = QD_BUF_INIT;
+    bool ok = g && qd_render_gram(ctx, g, x, T, cli_render_format(a->format), &b) == QD_OK;
+    qd_gram_free(g);
+    qd_qform_free(f);
+    if (!ok) {
+        qd_buf_free(&b);
+        return cli_diag_ctx(ctx);
+    }
+    return cli_emit(&b, "orthogonalization");
 }
 
 /* The reduction, or (--homogeneity) the degree: a "no" exits 3, undecided 1. */
@@ -80,11 +110,12 @@ static int run(cli_run *c) {
         cli_diag_show("--vars", a->vars, qd_ctx_diag(c->ctx));
         return cli_exit(qd_ctx_status(c->ctx));
     }
-    if (a->periods && qd_periods_vectors_read(c->ctx, a->periods, n, &g, &w) != QD_OK) {
-        cli_diag_show("--periods", a->periods, qd_ctx_diag(c->ctx));
+    const char *vecs = a->gram ? a->gram : a->periods;
+    if (vecs && qd_periods_vectors_read(c->ctx, vecs, n, &g, &w) != QD_OK) {
+        cli_diag_show(a->gram ? "--gram-schmidt" : "--periods", vecs, qd_ctx_diag(c->ctx));
         return cli_exit(qd_ctx_status(c->ctx));
     }
-    int rc = answer(c->ctx, a, phi, x, n, g, w);
+    int rc = a->gram ? gram(c->ctx, a, phi, x, n, g, w) : answer(c->ctx, a, phi, x, n, g, w);
     qd_periods_vectors_free(w);
     return rc;
 }

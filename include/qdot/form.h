@@ -165,6 +165,40 @@ QD_API qd_status qd_periods_vectors_read(qd_ctx *ctx, const char *text, size_t n
                                          const qd_expr ***out);
 QD_API void qd_periods_vectors_free(const qd_expr **w);
 
+/* ---- Gram-Schmidt orthogonalization (Desloge App. 21) ---------------------
+ * s linearly independent vectors a(1..s) of n components, and a symmetric
+ * n x n matrix T (NULL: the identity), give
+ *
+ *     b(1) = a(1),   b(r) = a(r) - sum_{j<r} [a(r)^T T b(j) / b(j)^T T b(j)] b(j)
+ *
+ * (Thm 2, eqs. 3a-3b; with T the identity Thm 1, eqs. 1a-1b), vectors that
+ * span the same space with b(i)^T T b(j) = 0 for i != j (eq. 4).  Exact in
+ * rational or symbolic entries; eq. 4 is checked afterwards by the zero
+ * test (qdot/certify.h).  The kinetic metric as T orthogonalizes the
+ * coordinate tangents (`qdot metric --gram-schmidt`); the mass matrix, the
+ * modal vectors of a repeated frequency (Desloge ch. 65). */
+typedef struct qd_gram {
+    size_t n, s;              /* components, vectors */
+    bool euclidean;           /* T was the identity (Thm 1) */
+    const qd_expr **a;        /* s * n: the given vectors, simplified */
+    const qd_expr **b;        /* s * n: the orthogonal ones, row-major */
+    const qd_expr **norm;     /* s: b(r)^T T b(r) */
+    const qd_expr **coef;     /* s * s: coef[r s + j] = a(r)^T T b(j) / b(j)^T T b(j)
+                                 for j < r, 0 for j >= r: a(r) = b(r) + sum_j coef b(j) */
+    qd_zero_kind check;       /* eq. 4's zero tests: QD_ZERO_PROVEN for all, or
+                                 QD_ZERO_NUMERIC when one was verified numerically */
+} qd_gram;
+
+/* The orthogonalization above of the s vectors a (row-major s * n) under T
+ * (n * n, row-major, or NULL).  NULL on failure, reason in ctx: QD_ERR_ARG
+ * for no vectors, more than n, an asymmetric T, or an a(r) that is a
+ * linear combination of those before it (b(r) = 0, named); QD_ERR_SINGULAR
+ * for a b(r) != 0 with b(r)^T T b(r) = 0 (T not definite: the process
+ * divides by it).  Free with qd_gram_free. */
+QD_API qd_gram *qd_gram_schmidt(qd_ctx *ctx, size_t n, const qd_expr *const *T, size_t s,
+                                const qd_expr *const *a);
+QD_API void qd_gram_free(qd_gram *g);
+
 #ifdef __cplusplus
 }
 #endif
@@ -173,6 +207,6 @@ QD_API void qd_periods_vectors_free(const qd_expr **w);
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_periods_reduce (f). An array whose
+ * documented at the function, for: qd_periods_reduce (f), qd_gram_schmidt (T). An array whose
  * count is 0 may be NULL. */
 #endif
