@@ -56,13 +56,9 @@ static int check(cli_run *c) {
 static int gram(qd_ctx *ctx, const form_args *a, const qd_expr *phi, const qd_expr *const *x,
                 size_t n, size_t s, const qd_expr *const *v) {
     qd_qform *f = qd_qform_reduce(ctx, phi, n, x);
-    bool unit = f != NULL;
-    for (size_t i = 0; f && i < n * n; i++)
-        unit = unit && qd_is_zero(qd_sub(ctx, f->a[i], qd_int(ctx, i / n == i % n)));
-    const qd_expr *const *T = f && !unit ? f->a : NULL;
-    qd_gram *g = f ? qd_gram_schmidt(ctx, n, T, s, v) : NULL;
+    qd_gram *g = f ? qd_gram_schmidt(ctx, n, f->a, s, v) : NULL;
     qd_buf b = QD_BUF_INIT;
-    bool ok = g && qd_render_gram(ctx, g, x, T, cli_render_format(a->format), &b) == QD_OK;
+    bool ok = g && qd_render_gram(ctx, g, x, f->a, cli_render_format(a->format), &b) == QD_OK;
     qd_gram_free(g);
     qd_qform_free(f);
     if (!ok) {

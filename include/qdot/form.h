@@ -179,7 +179,7 @@ QD_API void qd_periods_vectors_free(const qd_expr **w);
  * modal vectors of a repeated frequency (Desloge ch. 65). */
 typedef struct qd_gram {
     size_t n, s;              /* components, vectors */
-    bool euclidean;           /* T was the identity (Thm 1) */
+    bool euclidean;           /* T was NULL or the identity (Thm 1) */
     const qd_expr **a;        /* s * n: the given vectors, simplified */
     const qd_expr **b;        /* s * n: the orthogonal ones, row-major */
     const qd_expr **norm;     /* s: b(r)^T T b(r) */

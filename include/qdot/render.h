@@ -202,7 +202,7 @@ QD_API qd_status qd_render_periods(qd_ctx *ctx, const qd_expr *f, const qd_perio
  * components named by x (n, or NULL): in text T, the a's, each b(r) as
  * a(r) less its components along the b's before it with its norm
  * b(r)^T T b(r), and the check of eq. 4; in JSON "variables" ([] without
- * x), "euclidean", "metric" (T's rows, null for the identity), "vectors",
+ * x), "euclidean", "metric" (T's rows, null when euclidean), "vectors",
  * "orthogonal", "norms", "coefficients" (s rows of s: a(r)'s along b(j),
  * j < r) and "certainty" ("proven" or "numeric").  QD_ERR_ARG for another
  * format. */

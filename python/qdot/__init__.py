@@ -25,6 +25,7 @@ from .relativity import lorentz, proper_time, collide
 from .forms import (Homogeneity, Periods, QuadraticForm, homogeneity, periods, quadratic_form,
                     tour)
 from .field import Field
+from .appendix import GramSchmidt, gram_schmidt
 from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
@@ -32,5 +33,6 @@ __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "O
            "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Homogeneity",
            "homogeneity", "Periods", "periods", "tour", "Field",
-           "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr"]
+           "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr",
+           "GramSchmidt", "gram_schmidt"]
 from ._lib import VERSION as __version__

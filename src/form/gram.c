@@ -157,7 +157,11 @@ qd_gram *qd_gram_schmidt(qd_ctx *ctx, size_t n, const qd_expr *const *T, size_t 
     qd_gram *g = gram_alloc(ctx, n, s);
     if (!g)
         return NULL;
-    g->euclidean = T == NULL;
+    bool unit = true; /* T the identity is Thm 1 */
+    for (size_t i = 0; T && i < n * n; i++)
+        unit = unit && (i / n == i % n ? qd_is_one(T[i]) : qd_is_zero(T[i]));
+    T = unit ? NULL : T;
+    g->euclidean = unit;
     for (size_t i = 0; i < s * n; i++)
         g->a[i] = tidy(ctx, a[i]);
     for (size_t r = 0; r < s; r++)

@@ -38,6 +38,7 @@ static void recipe(qd_ctx *ctx, qd_buf *b, const qd_gram *g, size_t r) {
 static void gram_text(qd_ctx *ctx, qd_buf *b, const qd_gram *g, const qd_expr *const *x,
                       const qd_expr *const *T) {
     size_t n = g->n;
+    T = g->euclidean ? NULL : T;
     qd_buf_puts(b, g->euclidean ? "Gram-Schmidt orthogonalization (Desloge App. 21 Thm 1: "
                                   "b(i).b(j) = 0 for i != j)\n"
                                 : "Gram-Schmidt orthogonalization under T (Desloge App. 21 Thm 2: "
@@ -99,7 +100,7 @@ static void gram_json(qd_ctx *ctx, qd_json *j, const qd_gram *g, const qd_expr *
     qd_json_end_array(j);
     qd_json_key(j, "euclidean");
     qd_json_bool(j, g->euclidean);
-    if (T) {
+    if (T && !g->euclidean) {
         json_rows(ctx, j, "metric", T, n, n);
     } else {
         qd_json_key(j, "metric");

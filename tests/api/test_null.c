@@ -2019,6 +2019,17 @@ static void null_form(void **state)
     /* w NULL */
     qd_periods_vectors_free(NULL);
     reset(&F);
+    /* ---- qd_gram_schmidt */
+    /* ctx NULL */
+    assert_null(qd_gram_schmidt(NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_gram_schmidt(F.ctx, 1, (const qd_expr * const *)F.e, 1, NULL));
+    reset(&F);
+    /* ---- qd_gram_free */
+    /* g NULL */
+    qd_gram_free(NULL);
+    reset(&F);
     teardown(&F);
 }
 
@@ -5064,6 +5075,16 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_gram */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
     reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */
