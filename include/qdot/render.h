@@ -209,6 +209,17 @@ QD_API qd_status qd_render_periods(qd_ctx *ctx, const qd_expr *f, const qd_perio
 QD_API qd_status qd_render_gram(qd_ctx *ctx, const qd_gram *g, const qd_expr *const *x,
                                 const qd_expr *const *T, qd_render_format fmt, qd_buf *out);
 
+/* The change of variables c (qd_change_vars, qdot/form.h; Desloge App. 19):
+ * in text the map x = x(y), the Jacobian matrix, J(x/y), J(y/x), J's sign,
+ * |J|, f and f(x(y)) |J| when f was given, and where J = 0; in JSON
+ * "variables", "new_variables", "map" (by old variable), "jacobian" (rows
+ * dx_i/dy_j), "jacobian_det", "inverse_det", "sign" ("nonnegative",
+ * "nonpositive", "unknown"), "abs_det", "f", "integrand" (null without f)
+ * and "singular" ({"lhs", "rhs", "period"}, as qdot metric's chart).
+ * QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_change(qd_ctx *ctx, const qd_change *c, qd_render_format fmt,
+                                  qd_buf *out);
+
 /* ---- impulsive motion (qdot/impulse.h) ----------------------------------- */
 
 /* Append r, the answer of qd_impulse_solve on m, to out: text (the

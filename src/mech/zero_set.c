@@ -138,9 +138,11 @@ qd_status qd__zero_set(qd_ctx *ctx, const qd_expr *det, size_t n, const qd_expr 
     size_t ns = 0;
     for (size_t i = 0; i < nf; i++) {
         const qd_expr *f = nf > 1 || qd_expr_kind(d) == QD_MUL ? qd_expr_arg(d, i) : d;
-        if (qd_expr_kind(f) == QD_POW && qd_is_number(qd_expr_arg(f, 1)) &&
-            qd_number_sign(qd_expr_arg(f, 1)) > 0)
+        if (qd_expr_kind(f) == QD_POW && qd_is_number(qd_expr_arg(f, 1))) {
+            if (qd_number_sign(qd_expr_arg(f, 1)) < 0)
+                continue; /* 1/sin(th/2)^2 is never 0 (a pole, not a zero) */
             f = qd_expr_arg(f, 0);
+        }
         bool vars_in = false;
         for (size_t j = 0; j < n; j++)
             vars_in = vars_in || qd_has(f, q[j]);
