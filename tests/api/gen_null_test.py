@@ -74,6 +74,9 @@ NULLABLE = {
     'qd_eval': {'syms', 'vals'},
     'qd_periods_reduce': {'f'},  # no function: the fundamental system alone
     'qd_render_periods': {'f'},
+    'qd_gram_schmidt': {'T'},  # the identity (App. 21 Thm 1)
+    'qd_render_gram': {'x', 'T'},  # no names; the identity
+    'qd_change_vars': {'f'},  # the Jacobian alone
     'qd_field_modes_compute': {'opts'},
     'qd_field_parse': {'diag', 'opts'},
     'qd_free_symbols': {'out'},

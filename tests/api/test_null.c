@@ -2058,6 +2058,60 @@ static void null_form(void **state)
     /* w NULL */
     qd_periods_vectors_free(NULL);
     reset(&F);
+    /* ---- qd_gram_schmidt */
+    /* ctx NULL */
+    assert_null(qd_gram_schmidt(NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_gram_schmidt(F.ctx, 1, (const qd_expr * const *)F.e, 1, NULL));
+    reset(&F);
+    /* ---- qd_gram_free */
+    /* g NULL */
+    qd_gram_free(NULL);
+    reset(&F);
+    /* ---- qd_change_vars */
+    /* ctx NULL */
+    assert_null(qd_change_vars(NULL, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_change_vars(F.ctx, F.q, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* y NULL */
+    assert_null(qd_change_vars(F.ctx, F.q, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* map NULL */
+    assert_null(qd_change_vars(F.ctx, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_change_free */
+    /* c NULL */
+    qd_change_free(NULL);
+    reset(&F);
+    /* ---- qd_change_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(F.ctx, "q", 1, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* map NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(F.ctx, "q", 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_qform_positive_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(NULL, "q", (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(F.ctx, NULL, (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(F.ctx, "q", NULL, 1, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(F.ctx, "q", (const qd_expr * *)F.e, 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -5096,6 +5150,26 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_gram */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_change */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_change(NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_change(F.ctx, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_change(F.ctx, NULL, (qd_render_format){0}, NULL));
     reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */
