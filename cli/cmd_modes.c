@@ -220,7 +220,7 @@ static int run(cli_run *c) {
                                            : "--independent");
     /* velocity constraints (steady motions: the rolling disc), --scan: the state manifold */
     const cli_conlin_args ca = {a->about, a->independent, a->scan, NULL,
-                                a->json ? QD_SS_JSON : QD_SS_TEXT, a->steps, true, NULL, NULL};
+                                a->json ? QD_SS_JSON : QD_SS_TEXT, a->steps, true, NULL, NULL, NULL};
     if (rc == QD_EXIT_OK && r->lr.e->ncon && (qd_conlin_needed(r->lr.e) || a->scan))
         return cli_conlin(&r->lr, &ca);
     if (rc == QD_EXIT_OK && a->scan)

@@ -158,7 +158,7 @@ static int on_manifold(stab_run *r, const stab_args *a) {
         return cli_eom_derive_error(r->c.ctx, &r->c.mf);
     cli_lin_run lr = {.c = {.ctx = r->c.ctx, .mf = r->c.mf}, .e = r->e};
     const cli_conlin_args ca = {a->at, NULL, a->scan, NULL, a->json ? QD_SS_JSON : QD_SS_TEXT,
-                                a->steps, true, a->scan ? NULL : a->ignore, "--at"};
+                                a->steps, true, a->scan ? NULL : a->ignore, "--at", NULL};
     int rc = r->e->ncon ? cli_lin_setup(&lr) : cli_usage_error("steady motions on constraints "
                                                                "that can be eliminated: write "
                                                                "the model in independent "

@@ -8,6 +8,7 @@
  * the options, calls and writes what the library prints.
  */
 #include "linear_cli.h"
+#include "plot_cli.h"
 
 #include <stdio.h>
 #include <stdlib.h>
