@@ -81,6 +81,16 @@ static int run(cli_run *c) {
     }
     if (a->op)
         e = a->op(ctx, e);
+    /* expand only: simplify factors on purpose, (x + y)^2 */
+    const qd_expr *kept = e && a->op == qd_expand ? qd_expand_kept(ctx, e) : NULL;
+    if (kept) { /* said, not handed back as if expanded */
+        qd_buf k = QD_BUF_INIT;
+        if (qd_print(ctx, kept, QD_FMT_TEXT, &k) == QD_OK)
+            fprintf(stderr, "qdot: note: %.*s%s is kept as a power: its expansion would exceed "
+                            "64 MiB (docs/language.md, expand)\n",
+                    k.len > 80 ? 77 : (int)k.len, qd_buf_str(&k), k.len > 80 ? "..." : "");
+        qd_buf_free(&k);
+    }
     return emit(ctx, e, a, nvars);
 }
 

@@ -181,7 +181,14 @@ def diff(expr, *variables):
 def expand(expr):
     """Products and powers of sums distributed (`qdot expand`, qd_expand)."""
     x = parse(expr)
-    return _result(x._owner, lib.qd_expand(x._owner.ctx, x._node))
+    r = _result(x._owner, lib.qd_expand(x._owner.ctx, x._node))
+    kept = lib.qd_expand_kept(r._owner.ctx, r._node)
+    if kept != ffi.NULL:  # said, as `qdot expand` says it
+        import warnings
+        warnings.warn("%s is kept as a power: its expansion would exceed 64 MiB "
+                      "(docs/language.md, expand)" % _result(r._owner, kept), UserWarning,
+                      stacklevel=2)
+    return r
 
 
 def simplify(expr):

@@ -61,6 +61,25 @@ def test_expand_and_simplify_are_identities():
         assert str(fn(text)) == qdot_out(name, text).strip()
 
 
+def test_a_power_too_large_to_expand_is_said():
+    # docs/language.md: a power whose expansion would exceed 64 MiB stays a
+    # power; it is said (issue 33), as the CLI says it, never handed back silently
+    with pytest.warns(UserWarning, match=r"\(x \+ y\)\^100000 is kept as a power"):
+        e = qdot.expand("(x + y)^100000*z + z")
+    assert str(e) == "z + z*(x + y)^100000"
+    r = subprocess.run([os.path.join(BUILD, "qdot"), "expand", "(x + y)^100000"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0 and r.stdout == "(x + y)^100000\n"
+    assert "(x + y)^100000 is kept as a power: its expansion would exceed 64 MiB" in r.stderr
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # nothing said when all is expanded
+        assert str(qdot.expand("(x + y)^2")) == "2*x*y + x^2 + y^2"
+    r = subprocess.run([os.path.join(BUILD, "qdot"), "simplify", "x^2 + 2*x*y + y^2"],
+                       capture_output=True, text=True)
+    assert r.stdout == "(x + y)^2\n" and r.stderr == ""  # simplify factors on purpose
+
+
 @pytest.mark.parametrize("fmt", ["text", "latex", "c", "sympy"])
 def test_print_expr_formats_as_the_cli(fmt):
     text = "sin(th)*l^2/2 + r'^2 + exp(2)"

@@ -475,6 +475,36 @@ const qd_expr *qd__xs_expand(qd__xsess *s, const qd_expr *e) {
     return r;
 }
 
+/* The first power of a sum sum_to_pos_int finds under e, each shared node
+ * visited once. */
+static const qd_expr *kept_in(const qd_expr *e, qd__ptrmap *seen, bool *oom) {
+    if (qd__ptrmap_has(seen, e))
+        return NULL;
+    if (!qd__ptrmap_put(seen, e, (void *)e)) {
+        *oom = true;
+        return NULL;
+    }
+    if (sum_to_pos_int(e))
+        return e;
+    for (size_t i = 0; i < e->nargs && !*oom; i++) {
+        const qd_expr *k = kept_in(e->args[i], seen, oom);
+        if (k)
+            return k;
+    }
+    return NULL;
+}
+
+const qd_expr *qd_expand_kept(qd_ctx *ctx, const qd_expr *e) {
+    QD_ARGS(NULL, ctx && e);
+    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    bool oom = false;
+    const qd_expr *k = kept_in(e, &seen, &oom);
+    qd__ptrmap_free(&seen);
+    if (oom)
+        qd__oom(ctx);
+    return oom ? NULL : k;
+}
+
 const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e) {
     QD_ARGS(NULL, ctx && e);
     if (!e)

@@ -1753,6 +1753,13 @@ static void null_expr(void **state)
     /* e NULL */
     assert_null(qd_expand(F.ctx, NULL));
     reset(&F);
+    /* ---- qd_expand_kept */
+    /* ctx NULL */
+    assert_null(qd_expand_kept(NULL, F.q));
+    reset(&F);
+    /* e NULL */
+    assert_null(qd_expand_kept(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_linear_coeffs */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_linear_coeffs(NULL, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));

@@ -4,7 +4,9 @@
  * until the stack overflows, a power of a sum whose expansion would exceed
  * QD_EXPAND_MAX_BYTES (64 MiB) stays a power, and a product that large is
  * refused with QD_ERR_TOOBIG ("expression too large") before GMP or FLINT
- * is asked for the memory.
+ * is asked for the memory.  qd_expand_kept names the power left, so that
+ * `qdot expand` says so (issue 33: "(x + y)^100000" came back as it was,
+ * exit 0, as if it were the expansion).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -53,6 +55,14 @@ static void test_large_power_kept(void **state) {
     assert_non_null(w);
     assert_int_equal(qd_expr_kind(w), QD_ADD);
     assert_int_equal(qd_expr_nargs(w), 2001);
+    /* what was kept, and nothing when all was expanded */
+    assert_ptr_equal(qd_expand_kept(ctx, qd_expand(ctx, e)), e);
+    assert_ptr_equal(qd_expand_kept(ctx, qd_expand(ctx, p)), e);
+    assert_null(qd_expand_kept(ctx, w));
+    const qd_expr *big = rd(ctx, "(x+1)^16777217");
+    assert_ptr_equal(qd_expand_kept(ctx, qd_expand(ctx, rd(ctx, "cos((x+1)^16777217) + y"))), big);
+    /* a power of a sum with a negative or fractional exponent is expanded as far as it goes */
+    assert_null(qd_expand_kept(ctx, qd_expand(ctx, rd(ctx, "(x+1)^-3 + sqrt(x+1)"))));
     assert_int_equal(qd_ctx_status(ctx), QD_OK);
     qd_ctx_free(ctx);
 }
