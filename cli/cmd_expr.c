@@ -87,7 +87,7 @@ static int run(cli_run *c) {
         qd_buf k = QD_BUF_INIT;
         if (qd_print(ctx, kept, QD_FMT_TEXT, &k) == QD_OK)
             fprintf(stderr, "qdot: note: %.*s%s is kept as a power: its expansion would exceed "
-                            "64 MiB (docs/language.md, expand)\n",
+                            "64 MiB (docs/cli.md, qdot expand)\n",
                     k.len > 80 ? 77 : (int)k.len, qd_buf_str(&k), k.len > 80 ? "..." : "");
         qd_buf_free(&k);
     }

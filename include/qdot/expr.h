@@ -229,8 +229,8 @@ QD_API const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e);
 /* What qd_expand left as it was in its result e, so that a caller can say
  * so instead of handing back an expression that looks unexpanded: the
  * first positive integer power of a sum in e (one whose expansion would
- * exceed 64 MiB, or whose exponent is past 2^24: docs/language.md,
- * "expand"), or NULL when there is none.  NULL also when ctx runs out of
+ * exceed 64 MiB, or whose exponent is past 2^24: docs/cli.md,
+ * "qdot expand"), or NULL when there is none.  NULL also when ctx runs out of
  * memory (recorded). */
 QD_API const qd_expr *qd_expand_kept(qd_ctx *ctx, const qd_expr *e);
 

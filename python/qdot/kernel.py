@@ -186,7 +186,7 @@ def expand(expr):
     if kept != ffi.NULL:  # said, as `qdot expand` says it
         import warnings
         warnings.warn("%s is kept as a power: its expansion would exceed 64 MiB "
-                      "(docs/language.md, expand)" % _result(r._owner, kept), UserWarning,
+                      "(docs/cli.md, qdot expand)" % _result(r._owner, kept), UserWarning,
                       stacklevel=2)
     return r
 
