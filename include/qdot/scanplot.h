@@ -30,4 +30,8 @@ QD_API qd_status qd_conlin_scan_plot(qd_ctx *ctx, const qd_conlin_scan *s, const
 }
 #endif
 
+/* NULL (issue 30): a function of this header given NULL for a pointer it
+ * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
+ * given). NULL is an accepted value, as documented at the function, for:
+ * qd_conlin_scan_plot (title). */
 #endif

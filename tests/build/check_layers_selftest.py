@@ -72,7 +72,7 @@ def users_of(root, hdr):
 
 
 def pad_cli(root):
-    open(os.path.join(root, "cli", "padding.c"), "w").write("int cli_pad;\n" * 7001)
+    open(os.path.join(root, "cli", "padding.c"), "w").write("int cli_pad;\n" * 7101)
 
 
 # (what is broken, how, a phrase the checker's complaint must contain)
@@ -103,7 +103,7 @@ CASES = [
      lambda r: add_include(r, "cli/main.c", '#include "../src/sim/simint.h"'),
      "cli/main.c includes ../src/sim/simint.h: the program includes only public headers"),
     ("the program over its line budget",
-     pad_cli, "more than 7000 (issue 31)"),
+     pad_cli, "lines, more than 7100 (issue 31)"),
 ]
 
 with tempfile.TemporaryDirectory(prefix="qdot-layers-") as tmp:
