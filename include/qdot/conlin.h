@@ -213,8 +213,8 @@ QD_API void qd_conlin_scan_free(qd_conlin_scan *s);
  * V, ..." (with constraints), each a line;
  * JSON one object: "independent", "dependent", "ignorable" (names),
  * "point" (object), "core_eigenvalues" ([re, im] pairs), "multipliers"
- * ({lambda_NAME: V}), "stable", "marginal" (c's) and "verdict" ("stable",
- * "marginally stable", "unstable").  QD_ERR_NUMERIC for a number JSON
+ * ({lambda_NAME: V}), "stable" (null when not steady), "marginal" (c's)
+ * and "verdict" ("stable", "marginally stable", "unstable", "not steady").  QD_ERR_NUMERIC for a number JSON
  * cannot hold, QD_ERR_NOMEM (out unchanged). */
 QD_API qd_status qd_conlin_print(const qd_conlin *c, bool json, qd_buf *out);
 
@@ -233,7 +233,8 @@ QD_API qd_status qd_conlin_render(qd_ctx *ctx, const qd_conlin *c,
  * the eigenvalues of A a line each ("s = RE +- IM i", with w = Im s for
  * Im s > 0) and the verdict line, the same as qd_conlin_render's: "verdict:
  * stable", "marginally stable" (the core's largest Re s within c->tol of
- * 0: the linearization does not decide) or "unstable", with that Re s;
+ * 0: the linearization does not decide) or "unstable", with that Re s, or
+ * "verdict: none" when c is not steady (JSON "not steady", "stable" null);
  * JSON one object: the notes' members (their "stable", "marginal",
  * "verdict"), "states" and "eigenvalues" ([re, im] pairs, as in
  * qd_statespace_render), then a newline.  QD_ERR_NUMERIC for a number JSON

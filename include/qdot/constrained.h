@@ -165,28 +165,6 @@ QD_API qd_status qd_constrained_modes_print(qd_ctx *ctx, const qd_eom *e,
                                             const qd_modes_result *res, bool json,
                                             qd_buf *out);
 
-/* The state-space form on the manifold over x = (y, y'), y the independent
- * coordinates of a reduction c, for printing. */
-typedef struct qd_constrained_statespace {
-    const double *A;         /* 2r*2r row-major: qd_constrained_state_matrix */
-    size_t nu;               /* inputs */
-    const qd_expr *const *u; /* nu: the inputs (may be NULL when nu is 0) */
-    const double *B;         /* 2r*nu row-major: qd_constrained_input_matrix (likewise) */
-} qd_constrained_statespace;
-
-/* ss about c as text or JSON (json), res = qd_modes_solve(c->lin) for the
- * eigenvalues.  Text: "state-space form x' = A x " ("+ B u " with inputs)
- * and the head, "x = (y..., y'...)", A by rows (each entry %14.10g), with
- * inputs "u = (...)" and B likewise, the eigenvalues and the verdict.
- * JSON: the head, "states" (the names of x, primed for the rates), "A",
- * "inputs", "B" (row arrays; B has empty rows without inputs), the
- * eigenvalues and the verdict. */
-QD_API qd_status qd_constrained_statespace_print(qd_ctx *ctx, const qd_eom *e,
-                                                 const qd_constrained_linear *c,
-                                                 const qd_constrained_statespace *ss,
-                                                 const qd_modes_result *res, bool json,
-                                                 qd_buf *out);
-
 /* The equilibria of a model with constraints (see the head comment); the
  * arguments as for qd_equilibria_find (opts->near: Newton from that guess
  * only).  Each point lists every coordinate of e; the kind, signs and
@@ -208,5 +186,5 @@ QD_API qd_status qd_constrained_equilibria_find(qd_ctx *ctx, const qd_eom *e, co
  * documented at the function, for: qd_constrained_linear_about (indep);
  * qd_constrained_at_solve (indep);
  * qd_constrained_equilibria_find (opts). An array whose count is 0 may be
- * NULL (qd_constrained_statespace: u and B when nu is 0). */
+ * NULL. */
 #endif

@@ -21,8 +21,8 @@
  * beyond QD_SS_MAX_OPS operations per entry.
  *
  * Models whose equations keep multipliers (constraints) are refused
- * (QD_ERR_ARG): qd_constrained_state_matrix (qdot/constrained.h) gives A
- * over independent coordinates on the constraint manifold.
+ * (QD_ERR_ARG): qd_conlin_about (qdot/conlin.h) gives A, B, C, D over
+ * the independent states on their state manifold.
  */
 #ifndef QDOT_STATESPACE_H
 #define QDOT_STATESPACE_H

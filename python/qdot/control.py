@@ -30,20 +30,21 @@ def _matrix(ptr, rows, cols):
     return doubles_of(ptr, rows * cols).reshape(rows, cols)
 
 
-def linearize(core, about):
+def linearize(core, about, independent=None):
     """Model.linearize's work (see there): qd_linearize_about on the
     equations `qdot linearize` takes (holonomic constraints eliminated), the
-    point read from about's text as --about is."""
+    point read from about's text as --about is; on the state manifold
+    (qd_conlin_about) when they keep constraints."""
     from .linear import located
     if about is not None and not isinstance(about, (dict, str)):
         raise TypeError("linearize: about is a dict {name: value} or text, not %s"
                         % type(about).__name__)
     e = core.eom_eliminated()
-    if e.ncon:
-        raise Error("linearize: a model that keeps constraints with multipliers is not "
-                    "linearized from Python yet (`qdot linearize` reduces it onto the "
-                    "constraints)")
     text = _commands.text_arg(about, "about") if about else None
+    if e.ncon:
+        return _on_manifold(core, e, about, text, independent)
+    if independent is not None:
+        raise Error("linearize: independent: the model keeps no constraints")
     out = new("qd_statespace")
     try:
         if lib.qd_linearize_about(core.ctx, e, core.model,
@@ -57,6 +58,37 @@ def linearize(core, about):
         return ss
     finally:
         lib.qd_statespace_free(out)
+
+
+def _on_manifold(core, e, about, text, independent):
+    """A model that keeps constraints: the point as `qdot linearize` takes it
+    (qd_conlin_start), A, B, C, D over the independent states (qd_conlin_about),
+    the JSON of `qdot linearize --format json` (qd_conlin_render)."""
+    from .linear import located
+    if isinstance(independent, (list, tuple)):
+        independent = ", ".join(independent)
+    ind = _commands.text_arg(independent, "independent") if independent else None
+    pt, ch, c = new("qd_linpoint"), new("qd_equilibrium_choice"), new("qd_conlin")
+    try:
+        core.check(lib.qd_linpoint_init(core.ctx, core.model, e, pt))
+        if lib.qd_conlin_start(core.ctx, e, core.model, pt,
+                               text if text is not None else ffi.NULL, ch) != lib.QD_OK:
+            if text is not None and lib.qd_ctx_diag(core.ctx).located:
+                raise located(core, "about", ffi.string(text))
+            raise core.error()
+        if lib.qd_conlin_about(core.ctx, e, core.model, pt, ind if ind is not None else ffi.NULL,
+                               c) != lib.QD_OK:
+            if ind is not None and lib.qd_ctx_diag(core.ctx).located:
+                raise located(core, "independent", ffi.string(ind))
+            raise core.error()
+        ss = StateSpace(core, c.ss, dict(about) if isinstance(about, dict) else about or {})
+        ss.output = _commands.output(core, "linearize", lambda buf: lib.qd_conlin_render(
+            core.ctx, c, ffi.NULL, lib.QD_SS_JSON, buf))
+        return ss
+    finally:
+        lib.qd_conlin_free(c)
+        lib.qd_equilibrium_choice_free(ch)
+        lib.qd_linpoint_free(pt)
 
 
 def _exact(core, syms, rows, cols):

@@ -1199,7 +1199,7 @@ class Model:
             return _linear.modes(core, about, at_equilibrium, initial, symmetry, independent,
                                  scan, steps)
 
-    def linearize(self, about=None):
+    def linearize(self, about=None, independent=None):
         """The state-space form about an operating point (a StateSpace, from
         qd_linearize): A, B, C, D as numpy arrays with the names of the
         states (the coordinates, then their velocities, in model order),
@@ -1208,8 +1208,19 @@ class Model:
 
         about: {name: value} over coordinates, velocities "NAME'", inputs
         and "t"; names not given are 0; values are numbers or exact text
-        ("pi", "1/2").  Models whose equations keep multipliers are refused."""
-        return _control.linearize(self._core, about or {})
+        ("pi", "1/2").
+
+        A model whose equations keep constraints (multipliers, `rolls`) is
+        linearized on its state manifold as `qdot linearize` does it
+        (qd_conlin_about, qdot/conlin.h): the point is the model's initial
+        state with about (holonomic constraints alone and no about: the
+        equilibrium `qdot modes` takes), the dependent states solved there;
+        A, B, C, D are over the independent states (independent:
+        "q2, q2'" or a list of names, as --independent; None: chosen), and
+        .json is the CLI's JSON with independent, dependent, ignorable,
+        point, core_eigenvalues, multipliers, stable, marginal and verdict
+        (also readable as attributes: ss.verdict)."""
+        return _control.linearize(self._core, about or {}, independent)
 
     def scene(self, which=0):
         """The points a picture of the motion draws (qd_scene_points,

@@ -821,9 +821,8 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
         st = choose(&w, out->dep, coords_only);
     for (size_t k = 0; st == QD_OK && k < 2 * n; k++)
         out->given[k] = w.val[k];
-    if (st == QD_OK)
-        st = newton(&w, out->dep, &out->moved, &out->residual);
-    if (st == QD_ERR_ARG && independent)
+    if (st == QD_OK && (st = newton(&w, out->dep, &out->moved, &out->residual)) == QD_ERR_ARG &&
+        independent)
         suggest(&w, out->given);
     for (size_t k = 0, i = 0, dd = 0; st == QD_OK && k < 2 * n; k++) {
         if (dd < w.d && out->dep[dd] == k)

@@ -1,9 +1,9 @@
 /*
- * src/linear/constrained_print.c - the small oscillations and the
- * state-space form of a model on its constraint manifold as text or JSON
- * (qd_constrained_modes_print, qd_constrained_statespace_print,
- * qdot/constrained.h): what `qdot modes` and `qdot linearize` print for a
- * model that keeps constraints, for any caller.
+ * src/linear/constrained_print.c - the small oscillations of a model on
+ * its holonomic constraint manifold as text or JSON
+ * (qd_constrained_modes_print, qdot/constrained.h): what `qdot modes`
+ * prints for such a model, for any caller.  Its state-space form is
+ * qdot/conlin.h's (one path for every constrained linearization).
  */
 #include "qdot/constrained.h"
 #include "qdot/json.h"
@@ -161,70 +161,11 @@ static void modes_json(qd_json *j, const qd_eom *e, const qd_constrained_linear 
     qd_json_end_object(j);
 }
 
-/* ---- the state-space form --------------------------------------------------- */
-
-static void put_rows(qd_buf *b, size_t rows, size_t cols, const double *x) {
-    for (size_t i = 0; i < rows; i++) {
-        qd_buf_puts(b, " ");
-        for (size_t k = 0; k < cols; k++)
-            qd_buf_printf(b, " %14.10g", x[i * cols + k]);
-        qd_buf_puts(b, "\n");
-    }
-}
-
-static void ss_text(qd_buf *b, const qd_eom *e, const qd_constrained_linear *c,
-                    const qd_constrained_statespace *ss, const qd_modes_result *res) {
-    size_t N = 2 * c->r;
-    qd_buf_puts(b, ss->nu ? "state-space form x' = A x + B u " : "state-space form x' = A x ");
-    put_head(b, e, c);
-    qd_buf_puts(b, "x = (");
-    for (size_t i = 0; i < N; i++)
-        qd_buf_printf(b, "%s%s%s", i ? ", " : "", qd_expr_name(e->q[c->indep[i % c->r]]),
-                      i < c->r ? "" : "'");
-    qd_buf_puts(b, ")\nA =\n");
-    put_rows(b, N, N, ss->A);
-    if (ss->nu) {
-        qd_buf_puts(b, "u = (");
-        for (size_t k = 0; k < ss->nu; k++)
-            qd_buf_printf(b, "%s%s", k ? ", " : "", qd_expr_name(ss->u[k]));
-        qd_buf_puts(b, ")\nB =\n");
-        put_rows(b, N, ss->nu, ss->B);
-    }
-    text_eigs(b, res);
-    qd_buf_printf(b, "verdict: %s\n", verdict(res->stable));
-}
-
-static void ss_json(qd_json *j, const qd_eom *e, const qd_constrained_linear *c,
-                    const qd_constrained_statespace *ss, const qd_modes_result *res) {
-    size_t N = 2 * c->r;
-    qd_json_begin_object(j);
-    json_head(j, e, c);
-    qd_json_key(j, "states");
-    qd_json_begin_array(j);
-    char name[256];
-    for (size_t i = 0; i < N; i++) {
-        snprintf(name, sizeof name, "%s%s", qd_expr_name(e->q[c->indep[i % c->r]]),
-                 i < c->r ? "" : "'");
-        qd_json_string(j, name);
-    }
-    qd_json_end_array(j);
-    qd_json_matrix(j, "A", N, N, ss->A);
-    qd_json_key(j, "inputs");
-    qd_json_begin_array(j);
-    for (size_t k = 0; k < ss->nu; k++)
-        qd_json_string(j, qd_expr_name(ss->u[k]));
-    qd_json_end_array(j);
-    qd_json_matrix(j, "B", N, ss->nu, ss->B);
-    json_eigs(j, res);
-    qd_json_end_object(j);
-}
-
-/* ---- the two entry points ----------------------------------------------------- */
+/* ---- the entry point ----------------------------------------------------- */
 
 typedef struct con_view {
     const qd_eom *e;
     const qd_constrained_linear *c;
-    const qd_constrained_statespace *ss; /* NULL: the modes */
     const qd_modes_result *res;
 } con_view;
 
@@ -236,18 +177,13 @@ static qd_status print(qd_ctx *ctx, const con_view *v, bool json, const char *wh
     if (json) {
         qd_json j;
         qd_json_init(&j, &b);
-        if (v->ss)
-            ss_json(&j, v->e, v->c, v->ss, v->res);
-        else
-            modes_json(&j, v->e, v->c, v->res);
+        modes_json(&j, v->e, v->c, v->res);
         qd_buf_puts(&b, "\n");
         if (!b.failed && !qd_json_ok(&j)) {
             qd_ctx_error(ctx, QD_ERR_NUMERIC, "cannot print the %s: %s", what, qd_json_why(&j));
             st = QD_ERR_NUMERIC;
         }
-    } else if (v->ss)
-        ss_text(&b, v->e, v->c, v->ss, v->res);
-    else
+    } else
         modes_text(&b, v->e, v->c, v->res);
     if (st == QD_OK && !b.failed)
         qd_buf_putn(out, qd_buf_str(&b), b.len);
@@ -275,18 +211,6 @@ qd_status qd_constrained_modes_print(qd_ctx *ctx, const qd_eom *e, const qd_cons
     QD_ARGS_CTX(ctx, ctx && e && c && res && out);
     if (!fits(ctx, e, c, res))
         return QD_ERR_ARG;
-    const con_view v = {e, c, NULL, res};
+    const con_view v = {e, c, res};
     return print(ctx, &v, json, "modes", out);
-}
-
-qd_status qd_constrained_statespace_print(qd_ctx *ctx, const qd_eom *e,
-                                          const qd_constrained_linear *c,
-                                          const qd_constrained_statespace *ss,
-                                          const qd_modes_result *res, bool json, qd_buf *out) {
-    QD_ARGS_CTX(ctx, ctx && e && c && ss && ss->A && (ss->nu == 0 || (ss->u && ss->B)) && res &&
-                         out);
-    if (!fits(ctx, e, c, res))
-        return QD_ERR_ARG;
-    const con_view v = {e, c, ss, res};
-    return print(ctx, &v, json, "state-space form", out);
 }

@@ -917,19 +917,6 @@ static void null_constrained(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_modes_print(F.ctx, F.eom, NULL, NULL, false, NULL));
     reset(&F);
-    /* ---- qd_constrained_statespace_print */
-    /* ctx NULL */
-    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(NULL, F.eom, NULL, NULL, NULL, false, &F.buf));
-    reset(&F);
-    /* e NULL */
-    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(F.ctx, NULL, NULL, NULL, NULL, false, &F.buf));
-    reset(&F);
-    /* c NULL */
-    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(F.ctx, F.eom, NULL, NULL, NULL, false, &F.buf));
-    reset(&F);
-    /* out NULL */
-    assert_int_equal(QD_ERR_ARG, qd_constrained_statespace_print(F.ctx, F.eom, NULL, NULL, NULL, false, NULL));
-    reset(&F);
     /* ---- qd_constrained_equilibria_find */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_constrained_equilibria_find(NULL, F.eom, F.model, 1, (const qd_expr * const *)F.e, F.d, NULL, (qd_equilibria *)(void *)F.blob));

@@ -31,7 +31,10 @@ that the paper's A = [0 I; -M^-1 (g K0 + v^2 K2)  -v M^-1 C1].  Checked:
      the paper's eigenvalues at v = 5;
   6. a steer torque input: B = M^-1 (0, 1) (the paper's eq. 5.3 with the
      torque on the right), and `--lqr` on the core closes the loop;
-  7. `simulate` at v = 5 from a lean rate: the lean dies out, T + V kept.
+  7. `simulate` at v = 5 from a lean rate: the lean dies out, T + V kept;
+  8. `modes` and `stability --ignore "x, y, q1"` at v = 3 and 5: linearize's
+     eigenvalues and verdict (unstable below the weave speed, stable above),
+     and `modes --scan v=0:10` its weave and capsize speeds.
 
 Usage: check_whipple_cli.py --build BUILD_DIR
 """
@@ -243,6 +246,28 @@ def main():
            m and float(m.group(1)) < 1e-8,
            'v=5: a lean disturbance dies out (self-stable), energy conserved',
            '%s %s' % (lean[-4:], p.stderr[-300:]))
+
+    # 8. modes and stability of the straight run take linearize's path (issue 37): the same
+    # eigenvalues and verdict at v = 3 (below the weave speed: unstable) and v = 5 (between
+    # weave and capsize: stable, Meijaard et al. sec. 5), and modes --scan the same weave and
+    # capsize speeds
+    def cmd(*args):
+        p = subprocess.run([qdot, *args], capture_output=True, text=True, timeout=600)
+        return json.loads(p.stdout) if p.returncode == 0 else {'stderr': p.stderr}
+    for v, want in ((3.0, 'unstable'), (5.0, 'stable')):
+        ds = [cmd(c, str(MODEL), '--set', 'v=%r' % v, *extra, '--format', 'json')
+              for c, extra in (('linearize', ()), ('modes', ()),
+                               ('stability', ('--ignore', 'x, y, q1')))]
+        report(all(d.get('verdict') == want for d in ds) and
+               all(np.allclose(d['eigenvalues'], ds[0]['eigenvalues'], atol=1e-14) for d in ds)
+               and same_eigs([complex(a, b) for a, b in ds[1]['core_eigenvalues']],
+                             np.linalg.eigvals(paper_A(v)), 1e-10),
+               'v=%g: modes and stability = linearize = the paper (%s)' % (v, want),
+               str([d.get('verdict', d.get('stderr')) for d in ds]))
+    ms = cmd('modes', str(MODEL), '--scan', 'v=0:10', '--format', 'json')
+    report([c['value'] for c in ms.get('crossings', [])] == [c['value'] for c in cross] and
+           len(cross) == 2, 'modes --scan v=0:10: the weave and capsize speeds of linearize\'s',
+           str(ms.get('crossings', ms)))
 
     # 4. errors
     rc, out, err = run(qdot, '--lqr', 'Q = 1, R = 1')

@@ -19,6 +19,10 @@
    Fufaev, Dynamics of Nonholonomic Systems, ch. III: the upright disc is
    stable for w > 1/sqrt(3)); at w = 1/sqrt(3) all vanish (SymPy's own
    assertion there).
+3. `modes` and `stability --ignore q1, x, y` on the disc's steady motion take
+   the same path: the same eigenvalues and verdict as `linearize` at
+   w = 0.3 (unstable) and 0.8 (marginally stable), and `--scan w=0:1.5` the
+   critical spin 1/sqrt(3); a lean named cyclic is refused.
 
 Usage: check_conlin_sympy.py --build BUILD_DIR
 """
@@ -174,6 +178,29 @@ def main():
                cr[0]['to_stable'] and cr[0]['marginal'],
                'rolling disc scan: marginally stable (s = +-i w) from w = 1/sqrt(3)',
                '%s %s' % (cr, err))
+        # 3. modes and stability of the disc's steady motion (issue 37): the same path as
+        # linearize, so the same eigenvalues and verdict; the critical spin from either scan
+        for w in [0.3, 0.8]:
+            lin = run(qdot, 'linearize', d / 'disc.qd', '--set', 'w=%r' % w, '--format', 'json')
+            mod = run(qdot, 'modes', d / 'disc.qd', '--set', 'w=%r' % w, '--format', 'json')
+            stb = run(qdot, 'stability', d / 'disc.qd', '--ignore', 'q1, x, y', '--set',
+                      'w=%r' % w, '--format', 'json')
+            ds = [json.loads(out) if rc == 0 else {} for rc, out, _ in (lin, mod, stb)]
+            want = 'unstable' if 4 / 5 - 12 * w * w / 5 > 0 else 'marginally stable'
+            report(all(x.get('verdict') == want for x in ds) and
+                   all(np.allclose(x['eigenvalues'], ds[0]['eigenvalues'], atol=1e-14)
+                       for x in ds),
+                   'rolling disc w=%g: modes and stability = linearize (%s)' % (w, want),
+                   '%s %s' % ([x.get('verdict') for x in ds], [e for _, _, e in (lin, mod, stb)]))
+        for cmd in (['modes', d / 'disc.qd'], ['stability', d / 'disc.qd', '--ignore', 'q1']):
+            rc, out, err = run(qdot, *cmd, '--scan', 'w=0:1.5', '--format', 'json')
+            cr = json.loads(out)['crossings'] if rc == 0 else []
+            report(rc == 0 and len(cr) == 1 and abs(cr[0]['value'] - wc) < 1e-6 and
+                   cr[0]['to_stable'] and cr[0]['marginal'],
+                   '%s --scan: the critical spin 1/sqrt(3)' % cmd[0], '%s %s' % (cr, err))
+        rc, out, err = run(qdot, 'stability', d / 'disc.qd', '--ignore', 'q2')
+        report(rc == 2 and "'q2' is not cyclic" in err, 'stability --ignore of a lean refused',
+               err)
     print('%d failed' % failed)
     return 1 if failed else 0
 
