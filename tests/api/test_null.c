@@ -47,6 +47,7 @@
 #include "qdot/relativity.h"
 #include "qdot/render.h"
 #include "qdot/routh.h"
+#include "qdot/scanplot.h"
 #include "qdot/scatter.h"
 #include "qdot/scene.h"
 #include "qdot/sim.h"
@@ -5258,6 +5259,27 @@ static void null_routh(void **state)
     teardown(&F);
 }
 
+static void null_scanplot(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_conlin_scan_plot */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(NULL, NULL, "q", "q", NULL));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(F.ctx, NULL, "q", "q", NULL));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(F.ctx, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* title NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(F.ctx, NULL, "q", NULL, NULL));
+    reset(&F);
+    teardown(&F);
+}
+
 static void null_scatter(void **state)
 {
     (void)state;
@@ -5817,6 +5839,10 @@ static void null_sim(void **state)
     /* ---- qd_sim_constraint_error */
     /* s NULL */
     assert_true(isnan(qd_sim_constraint_error(NULL, 1)));
+    reset(&F);
+    /* ---- qd_sim_initial_solved */
+    /* s NULL */
+    assert_true(qd_sim_initial_solved(NULL, 1) == 0);
     reset(&F);
     /* ---- qd_sim_columns */
     /* s NULL */
@@ -7402,6 +7428,7 @@ int main(void)
         cmocka_unit_test(null_relativity),
         cmocka_unit_test(null_render),
         cmocka_unit_test(null_routh),
+        cmocka_unit_test(null_scanplot),
         cmocka_unit_test(null_scatter),
         cmocka_unit_test(null_scene),
         cmocka_unit_test(null_sim),
